@@ -1,0 +1,110 @@
+#include "motion/linear_move.h"
+
+#include <limits>
+#include <sstream>
+
+namespace motion {
+
+namespace {
+
+std::string axisMessage(int axis, const char* field, double value, const char* requirement)
+{
+    std::ostringstream msg;
+    msg << "axis " << axis << ": " << field << " = " << value << ' ' << requirement;
+    return msg.str();
+}
+
+/// Length of the line, or a message when the input is unusable.
+bool lineLength(const double* distancesMm, int axisCount, double& lengthMm, std::string& error)
+{
+    if (axisCount < 1 || axisCount > kMaxAxes) {
+        std::ostringstream msg;
+        msg << "axisCount = " << axisCount << " must be in 1.." << kMaxAxes;
+        error = msg.str();
+        return false;
+    }
+    double sumSq = 0.0;
+    for (int i = 0; i < axisCount; ++i) {
+        if (!std::isfinite(distancesMm[i])) {
+            error = axisMessage(i, "distanceMm", distancesMm[i], "must be finite");
+            return false;
+        }
+        sumSq += distancesMm[i] * distancesMm[i];
+    }
+    lengthMm = std::sqrt(sumSq);
+    return true;
+}
+
+}  // namespace
+
+PlanResult<LinearMove<JerkLimitedProfile>> planLinearJerkLimited(const double* distancesMm,
+                                                                 const JerkLimits* limitsPerAxis, int axisCount)
+{
+    using Result = PlanResult<LinearMove<JerkLimitedProfile>>;
+    double lengthMm = 0.0;
+    std::string error;
+    if (!lineLength(distancesMm, axisCount, lengthMm, error))
+        return Result::fail(error);
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    JerkLimits path{inf, inf, inf};
+    for (int i = 0; i < axisCount; ++i) {
+        const JerkLimits& lim = limitsPerAxis[i];
+        // Validated inline (not via validateJerkLimits) so the success path builds no string.
+        if (!(std::isfinite(lim.vMaxMmS) && lim.vMaxMmS > 0.0))
+            return Result::fail(axisMessage(i, "vMaxMmS", lim.vMaxMmS, "must be finite and > 0"));
+        if (!(std::isfinite(lim.aMaxMmS2) && lim.aMaxMmS2 > 0.0))
+            return Result::fail(axisMessage(i, "aMaxMmS2", lim.aMaxMmS2, "must be finite and > 0"));
+        if (!(std::isfinite(lim.jMaxMmS3) && lim.jMaxMmS3 > 0.0))
+            return Result::fail(axisMessage(i, "jMaxMmS3", lim.jMaxMmS3, "must be finite and > 0"));
+        const double share = std::fabs(distancesMm[i]);
+        if (share == 0.0)
+            continue;  // an axis that does not move does not limit the path
+        // lim / (share / L) written as lim·L / share: one division per limit.
+        path.vMaxMmS = std::fmin(path.vMaxMmS, lim.vMaxMmS * lengthMm / share);
+        path.aMaxMmS2 = std::fmin(path.aMaxMmS2, lim.aMaxMmS2 * lengthMm / share);
+        path.jMaxMmS3 = std::fmin(path.jMaxMmS3, lim.jMaxMmS3 * lengthMm / share);
+    }
+    if (lengthMm == 0.0)
+        path = limitsPerAxis[0];  // zero-length move: any valid limits give the empty profile
+    const auto profile = JerkLimitedProfile::plan(lengthMm, path);
+    if (!profile)
+        return Result::fail("path limits are not finite; check the per-axis limits");
+    return Result::ok(LinearMove<JerkLimitedProfile>(*profile, distancesMm, axisCount));
+}
+
+PlanResult<LinearMove<SeedSCurve>> planLinearSeedSCurve(const double* distancesMm, const double* vMaxMmSPerAxis,
+                                                        double accelTimeS, int axisCount)
+{
+    using Result = PlanResult<LinearMove<SeedSCurve>>;
+    double lengthMm = 0.0;
+    std::string error;
+    if (!lineLength(distancesMm, axisCount, lengthMm, error))
+        return Result::fail(error);
+    if (!(std::isfinite(accelTimeS) && accelTimeS > 0.0)) {
+        std::ostringstream msg;
+        msg << "accelTimeS = " << accelTimeS << " must be finite and > 0";
+        return Result::fail(msg.str());
+    }
+    double pathVMaxMmS = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < axisCount; ++i) {
+        const double v = vMaxMmSPerAxis[i];
+        if (!(std::isfinite(v) && v > 0.0))
+            return Result::fail(axisMessage(i, "vMaxMmS", v, "must be finite and > 0"));
+        const double share = std::fabs(distancesMm[i]);
+        if (share > 0.0)
+            pathVMaxMmS = std::fmin(pathVMaxMmS, v * lengthMm / share);
+    }
+    if (lengthMm == 0.0)
+        pathVMaxMmS = vMaxMmSPerAxis[0];
+    const auto profile = SeedSCurve::plan(lengthMm, pathVMaxMmS, accelTimeS);
+    if (!profile)
+        return Result::fail("path speed is not finite; check the per-axis vMaxMmS");
+    return Result::ok(LinearMove<SeedSCurve>(*profile, distancesMm, axisCount));
+}
+
+double contourErrorMm(double thetaRad, double errorXMm, double errorYMm)
+{
+    return -std::sin(thetaRad) * errorXMm + std::cos(thetaRad) * errorYMm;
+}
+
+}  // namespace motion
