@@ -1,0 +1,226 @@
+#pragma once
+// Protocol v1 message types and payloads. Plain C++: shared by the host clients,
+// the simulator firmware and the fuzzer. docs/protocol.md is the byte-level spec.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace proto {
+
+constexpr std::uint8_t kProtocolVersion = 1;
+constexpr std::uint8_t kNoAxis = 0xFF;
+constexpr int kMaxAxes = 8;
+/// Velocity moves stop on the device unless refreshed within this time.
+constexpr std::uint32_t kJogWatchdogMs = 250;
+
+/// Types 0x01–0x1F are queued requests, 0x20–0x3F realtime requests (acted on
+/// the moment they are decoded, ahead of anything queued), 0x80|type their
+/// replies, 0xE0–0xEF device-initiated messages, 0xFF the error reply.
+enum class MsgType : std::uint8_t {
+    Hello = 0x01,
+    Status = 0x02,
+    Home = 0x03,
+    Move = 0x04,
+    JogStep = 0x05,
+    SetZero = 0x06,
+    GetLimits = 0x07,
+    SetLimits = 0x08,
+    Subscribe = 0x09,
+    Reset = 0x0A,
+    JogVelocity = 0x20,
+    Stop = 0x21,
+    EStop = 0x22,
+    Event = 0xE0,
+    TelemetryBatch = 0xE1,
+    Error = 0xFF,
+};
+constexpr std::uint8_t kReplyFlag = 0x80;
+constexpr std::uint8_t replyTypeOf(MsgType t) { return static_cast<std::uint8_t>(static_cast<std::uint8_t>(t) | kReplyFlag); }
+constexpr bool isRequestType(std::uint8_t t) { return t >= 0x01 && t <= 0x3F; }
+constexpr bool isRealtimeType(std::uint8_t t) { return t >= 0x20 && t <= 0x3F; }
+constexpr bool isReplyType(std::uint8_t t) { return t >= 0x81 && t <= 0xBF; }
+
+enum class DeviceKind : std::uint8_t { Analyzer = 1, Stage = 2 };
+enum class AxisUnit : std::uint8_t { Millimetre = 0, Microlitre = 1 };
+
+/// Capability bits in HELLO.
+enum Capability : std::uint32_t {
+    CapHoming = 1u << 0,
+    CapEncoder = 1u << 1,      ///< incremental encoder per axis (measured position)
+    CapGrating = 1u << 2,      ///< linear grating scale per axis (measured position)
+    CapClosedLoopPid = 1u << 3,
+    CapPump = 1u << 4,         ///< plunger pump axis in µL
+    CapTelemetry = 1u << 5,
+    CapJogVelocity = 1u << 6,
+    CapCoupledXyThenZ = 1u << 7,
+};
+
+enum class ErrorCode : std::uint8_t {
+    UnknownCommand = 1,
+    BadPayload = 2,
+    BadAxis = 3,
+    NotHomed = 4,
+    SoftLimit = 5,
+    Busy = 6,
+    EStopActive = 7,
+    OverCapacity = 8,
+    OutOfRange = 9,
+    Fault = 10,
+};
+const char* errorCodeName(ErrorCode c);
+
+enum class EventKind : std::uint8_t {
+    MotionDone = 1,  ///< a move, jog step or homing finished on this axis
+    HomeDone = 2,
+    LimitHit = 3,    ///< a switch stopped the axis
+    Fault = 4,
+    EStop = 5,
+    JogExpired = 6,  ///< velocity move not refreshed in time: stopped by the watchdog
+    Stopped = 7,     ///< a stop request brought the axis to rest
+    LostSteps = 8,   ///< measured position left the commanded one by more than the tolerance
+    Reset = 9,       ///< E-stop/fault latch cleared
+};
+const char* eventKindName(EventKind k);
+
+/// Position units on the wire: nanometres for linear axes, nanolitres for the pump;
+/// speeds in the same unit per second. int32 covers ±2.1 m / ±2.1 L.
+using WireUnits = std::int32_t;
+
+struct AxisInfo {
+    char letter = 'X';
+    AxisUnit unit = AxisUnit::Millimetre;
+    WireUnits travelMin = 0;           ///< hard travel, switches at both ends
+    WireUnits travelMax = 0;
+    std::uint32_t maxSpeed = 0;        ///< per second
+    std::uint32_t resolution = 0;      ///< one count of the measuring system
+};
+
+struct HelloReply {
+    std::uint8_t protocolVersion = kProtocolVersion;
+    DeviceKind kind = DeviceKind::Analyzer;
+    std::uint32_t capabilities = 0;
+    std::uint32_t controlPeriodUs = 0;
+    std::uint32_t maxTelemetryRateHz = 0;
+    std::uint16_t jogWatchdogMs = kJogWatchdogMs;
+    std::uint32_t linkBaud = 0;        ///< the device's idea of its link speed; telemetry capacity follows it
+    std::string model;
+    std::string firmware;
+    std::vector<AxisInfo> axes;
+};
+
+enum AxisFlag : std::uint16_t {
+    AxisHomed = 1u << 0,
+    AxisMoving = 1u << 1,
+    AxisHoming = 1u << 2,
+    AxisHomeSwitch = 1u << 3,
+    AxisLimitSwitch = 1u << 4,
+    AxisFault = 1u << 5,
+    AxisJogging = 1u << 6,
+};
+enum DeviceFlag : std::uint8_t { DeviceEStop = 1u << 0, DeviceFault = 1u << 1 };
+
+struct AxisStatus {
+    WireUnits commanded = 0;
+    WireUnits measured = 0;
+    std::uint16_t flags = 0;
+};
+struct StatusReply {
+    std::uint8_t deviceFlags = 0;
+    std::uint64_t deviceTimeUs = 0;
+    std::vector<AxisStatus> axes;
+};
+
+struct HomeRequest { std::uint8_t axisMask = 0; };          ///< 0 = all axes in the device's order
+struct MoveRequest {
+    bool relative = false;
+    std::uint32_t speed = 0;                               ///< 0 = the axes' default speed
+    std::uint8_t axisMask = 0;
+    std::vector<WireUnits> targets;                        ///< one per set bit, lowest bit first
+};
+struct JogStepRequest { std::uint8_t axis = 0; WireUnits delta = 0; std::uint32_t speed = 0; };
+struct AxisMaskRequest { std::uint8_t axisMask = 0; };      ///< SetZero, Stop (0 = all)
+struct AxisLimits { WireUnits min = 0; WireUnits max = 0; };
+struct LimitsReply { std::vector<AxisLimits> axes; };
+struct SetLimitsRequest { std::uint8_t axis = 0; AxisLimits limits; };
+struct JogVelocityRequest { std::uint8_t axisMask = 0; std::vector<std::int32_t> velocities; };  ///< per second; 0 stops that axis
+
+enum class ChannelKind : std::uint8_t {
+    Commanded = 0,
+    Measured = 1,
+    Velocity = 2,         ///< measured, per second
+    FollowingError = 3,   ///< measured − commanded
+    ControllerOutput = 4, ///< stage PID output, step rate in steps/s
+    Switches = 5,         ///< bit0 home, bit1 limit
+    ContourError = 6,     ///< instrument-wide (axis kNoAxis): XY distance from the commanded path, nm
+};
+struct ChannelRef {
+    std::uint8_t axis = 0;
+    ChannelKind kind = ChannelKind::Commanded;
+    bool operator==(const ChannelRef& o) const { return axis == o.axis && kind == o.kind; }
+};
+struct SubscribeRequest { std::uint32_t rateHz = 0; std::vector<ChannelRef> channels; };  ///< rate 0 = off
+struct SubscribeReply { std::uint32_t rateHz = 0; std::uint16_t samplesPerBatch = 0; };
+
+struct TelemetryBatch {
+    std::uint32_t firstSampleIndex = 0;   ///< counts every sample since subscribe: a gap is a loss
+    std::uint64_t firstSampleTimeUs = 0;  ///< device clock
+    std::uint32_t periodUs = 0;
+    std::vector<ChannelRef> channels;
+    std::uint16_t sampleCount = 0;
+    std::vector<std::int32_t> values;     ///< sampleCount × channels.size(), sample-major
+};
+/// Bytes of a batch payload that are not sample values.
+std::size_t telemetryHeaderBytes(std::size_t channelCount);
+
+struct EventMsg {
+    EventKind kind = EventKind::MotionDone;
+    std::uint8_t axis = kNoAxis;
+    std::uint64_t deviceTimeUs = 0;
+    WireUnits position = 0;
+    std::string text;
+};
+
+struct ErrorReply {
+    ErrorCode code = ErrorCode::BadPayload;
+    std::uint8_t axis = kNoAxis;
+    std::int32_t value = 0;               ///< the limit, capacity or value at fault
+    std::string message;
+};
+
+using Bytes = std::vector<std::uint8_t>;
+
+Bytes encode(const HelloReply&);
+Bytes encode(const StatusReply&);
+Bytes encode(const HomeRequest&);
+Bytes encode(const MoveRequest&);
+Bytes encode(const JogStepRequest&);
+Bytes encode(const AxisMaskRequest&);
+Bytes encode(const LimitsReply&);
+Bytes encode(const SetLimitsRequest&);
+Bytes encode(const JogVelocityRequest&);
+Bytes encode(const SubscribeRequest&);
+Bytes encode(const SubscribeReply&);
+Bytes encode(const TelemetryBatch&);
+Bytes encode(const EventMsg&);
+Bytes encode(const ErrorReply&);
+
+/// Decoders return nullopt unless the payload is exactly one well-formed message.
+std::optional<HelloReply> decodeHelloReply(const Bytes&);
+std::optional<StatusReply> decodeStatusReply(const Bytes&);
+std::optional<HomeRequest> decodeHomeRequest(const Bytes&);
+std::optional<MoveRequest> decodeMoveRequest(const Bytes&);
+std::optional<JogStepRequest> decodeJogStepRequest(const Bytes&);
+std::optional<AxisMaskRequest> decodeAxisMaskRequest(const Bytes&);
+std::optional<LimitsReply> decodeLimitsReply(const Bytes&);
+std::optional<SetLimitsRequest> decodeSetLimitsRequest(const Bytes&);
+std::optional<JogVelocityRequest> decodeJogVelocityRequest(const Bytes&);
+std::optional<SubscribeRequest> decodeSubscribeRequest(const Bytes&);
+std::optional<SubscribeReply> decodeSubscribeReply(const Bytes&);
+std::optional<TelemetryBatch> decodeTelemetryBatch(const Bytes&);
+std::optional<EventMsg> decodeEvent(const Bytes&);
+std::optional<ErrorReply> decodeErrorReply(const Bytes&);
+
+int popcount8(std::uint8_t mask);
+
+} // namespace proto

@@ -1,0 +1,262 @@
+#include "device/sim/firmware.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace sim {
+namespace {
+constexpr double kLinkHeadroom = 0.9;        // telemetry may use 90% of the wire; replies and events get the rest
+constexpr double kBatchLatencyS = 0.02;      // a batch holds at most this much time unless capacity needs more
+}
+
+Firmware::Firmware(const MachineConfig& config, std::uint32_t linkBaud) : m_machine(config), m_linkBaud(linkBaud) {}
+
+void Firmware::receive(const std::uint8_t* data, std::size_t size)
+{
+    m_frames.clear();
+    m_decoder.feed(data, size, m_frames);
+    // Realtime requests act first: a stop or E-stop decoded in the same chunk as
+    // queued requests must not wait behind them.
+    for (const auto& f : m_frames)
+        if (proto::isRealtimeType(f.type))
+            handle(f);
+    for (const auto& f : m_frames)
+        if (!proto::isRealtimeType(f.type))
+            handle(f);
+    flushEvents();
+}
+
+void Firmware::advance(double dtS)
+{
+    m_pendingS += dtS;
+    while (m_pendingS >= SimMachine::kTickS * 0.999999) {
+        m_pendingS -= SimMachine::kTickS;
+        m_machine.tick();
+        ++m_tickCount;
+        sampleTelemetry();
+        flushEvents();
+    }
+}
+
+void Firmware::drainOutput(std::vector<std::uint8_t>& out)
+{
+    out.insert(out.end(), m_out.begin(), m_out.end());
+    m_out.clear();
+}
+
+void Firmware::sendFrame(std::uint8_t type, std::uint16_t seq, const proto::Bytes& payload, std::vector<std::uint8_t>& out)
+{
+    proto::encodeFrame(type, seq, payload.data(), payload.size(), out);
+}
+
+void Firmware::sendError(std::uint16_t seq, const proto::ErrorReply& e, std::vector<std::uint8_t>& out)
+{
+    sendFrame(static_cast<std::uint8_t>(proto::MsgType::Error), seq, proto::encode(e), out);
+}
+
+void Firmware::flushEvents()
+{
+    for (const auto& e : m_machine.takeEvents())
+        sendFrame(static_cast<std::uint8_t>(proto::MsgType::Event), m_eventSeq++, proto::encode(e), m_out);
+}
+
+void Firmware::handle(const proto::Frame& f)
+{
+    if (!proto::isRequestType(f.type))
+        return;  // a device ignores replies and events: only a host sends requests
+    for (const auto& c : m_cache) {
+        if (c.valid && c.seq == f.seq && c.type == f.type && c.payload == f.payload) {
+            ++m_duplicates;
+            m_out.insert(m_out.end(), c.reply.begin(), c.reply.end());
+            return;
+        }
+    }
+    CachedReply& slot = m_cache[m_cacheNext];
+    m_cacheNext = (m_cacheNext + 1) % m_cache.size();
+    slot.valid = true;
+    slot.type = f.type;
+    slot.seq = f.seq;
+    slot.payload = f.payload;
+    slot.reply.clear();
+    ++m_executed;
+    execute(f, slot.reply);
+    m_out.insert(m_out.end(), slot.reply.begin(), slot.reply.end());
+}
+
+void Firmware::execute(const proto::Frame& f, std::vector<std::uint8_t>& reply)
+{
+    using proto::MsgType;
+    const auto type = static_cast<MsgType>(f.type);
+    const std::uint8_t ok = static_cast<std::uint8_t>(f.type | proto::kReplyFlag);
+    auto bad = [&](const char* what) {
+        proto::ErrorReply e;
+        e.code = proto::ErrorCode::BadPayload;
+        e.message = std::string("malformed ") + what + " request";
+        sendError(f.seq, e, reply);
+    };
+    auto answer = [&](const SimMachine::Result& r) {
+        if (r)
+            sendError(f.seq, *r, reply);
+        else
+            sendFrame(ok, f.seq, {}, reply);
+    };
+    switch (type) {
+    case MsgType::Hello:
+        if (!f.payload.empty())
+            return bad("HELLO");
+        sendFrame(ok, f.seq, proto::encode(m_machine.hello(m_linkBaud)), reply);
+        return;
+    case MsgType::Status:
+        if (!f.payload.empty())
+            return bad("STATUS");
+        sendFrame(ok, f.seq, proto::encode(m_machine.status()), reply);
+        return;
+    case MsgType::Home:
+        if (auto r = proto::decodeHomeRequest(f.payload))
+            return answer(m_machine.home(r->axisMask));
+        return bad("HOME");
+    case MsgType::Move:
+        if (auto r = proto::decodeMoveRequest(f.payload))
+            return answer(m_machine.move(*r));
+        return bad("MOVE");
+    case MsgType::JogStep:
+        if (auto r = proto::decodeJogStepRequest(f.payload))
+            return answer(m_machine.jogStep(*r));
+        return bad("JOG_STEP");
+    case MsgType::SetZero:
+        if (auto r = proto::decodeAxisMaskRequest(f.payload))
+            return answer(m_machine.setZero(r->axisMask));
+        return bad("SET_ZERO");
+    case MsgType::GetLimits:
+        if (!f.payload.empty())
+            return bad("GET_LIMITS");
+        sendFrame(ok, f.seq, proto::encode(m_machine.limits()), reply);
+        return;
+    case MsgType::SetLimits:
+        if (auto r = proto::decodeSetLimitsRequest(f.payload))
+            return answer(m_machine.setLimits(*r));
+        return bad("SET_LIMITS");
+    case MsgType::Subscribe:
+        return subscribe(f, reply);
+    case MsgType::Reset:
+        return answer(m_machine.reset());
+    case MsgType::JogVelocity:
+        if (auto r = proto::decodeJogVelocityRequest(f.payload))
+            return answer(m_machine.jogVelocity(*r));
+        return bad("JOG_VELOCITY");
+    case MsgType::Stop:
+        if (auto r = proto::decodeAxisMaskRequest(f.payload))
+            return answer(m_machine.stop(r->axisMask));
+        return bad("STOP");
+    case MsgType::EStop:
+        return answer(m_machine.estop());
+    default: {
+        proto::ErrorReply e;
+        e.code = proto::ErrorCode::UnknownCommand;
+        e.value = f.type;
+        e.message = "unknown request type 0x" + [](unsigned v) {
+            const char* hex = "0123456789ABCDEF";
+            return std::string{hex[(v >> 4) & 15], hex[v & 15]};
+        }(f.type);
+        sendError(f.seq, e, reply);
+    }
+    }
+}
+
+void Firmware::subscribe(const proto::Frame& f, std::vector<std::uint8_t>& reply)
+{
+    const auto req = proto::decodeSubscribeRequest(f.payload);
+    proto::ErrorReply e;
+    if (!req) {
+        e.code = proto::ErrorCode::BadPayload;
+        e.message = "malformed SUBSCRIBE request";
+        return sendError(f.seq, e, reply);
+    }
+    if (req->rateHz == 0 || req->channels.empty()) {
+        m_rateHz = 0;
+        m_channels.clear();
+        sendFrame(static_cast<std::uint8_t>(f.type | proto::kReplyFlag), f.seq, proto::encode(proto::SubscribeReply{}), reply);
+        return;
+    }
+    for (const auto& c : req->channels) {
+        if (!m_machine.channelExists(c)) {
+            e.code = proto::ErrorCode::BadAxis;
+            e.axis = c.axis;
+            e.message = "telemetry channel " + std::to_string(static_cast<int>(c.kind)) + " on axis "
+                + std::to_string(c.axis) + " does not exist on this instrument";
+            return sendError(f.seq, e, reply);
+        }
+    }
+    const std::uint32_t tickRate = static_cast<std::uint32_t>(std::lround(1.0 / SimMachine::kTickS));
+    if (req->rateHz > tickRate) {
+        e.code = proto::ErrorCode::OutOfRange;
+        e.value = static_cast<std::int32_t>(tickRate);
+        e.message = "telemetry rate " + std::to_string(req->rateHz) + " Hz is above the device's " + std::to_string(tickRate)
+            + " Hz sample clock";
+        return sendError(f.seq, e, reply);
+    }
+    const std::size_t ch = req->channels.size();
+    const std::uint32_t ticksPerSample = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(std::lround(double(tickRate) / req->rateHz)));
+    const double rate = double(tickRate) / ticksPerSample;
+    const std::size_t maxFit = (proto::kMaxPayloadBytes - proto::telemetryHeaderBytes(ch)) / (4 * ch);
+    if (maxFit == 0) {
+        e.code = proto::ErrorCode::OutOfRange;
+        e.value = static_cast<std::int32_t>(ch);
+        e.message = "too many telemetry channels for one batch";
+        return sendError(f.seq, e, reply);
+    }
+    // Smallest batch that keeps latency low; grown if the wire needs fewer frames.
+    const double capacity = linkBytesPerSecond() * kLinkHeadroom;
+    auto bytesPerSecond = [&](std::size_t spb) {
+        const double frame = double(proto::wireBytesForPayload(proto::telemetryHeaderBytes(ch) + 4 * ch * spb));
+        return rate / double(spb) * frame;
+    };
+    std::size_t spb = std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(rate * kBatchLatencyS)), 1, maxFit);
+    while (spb < maxFit && bytesPerSecond(spb) > capacity)
+        ++spb;
+    if (bytesPerSecond(spb) > capacity) {
+        const double perSampleFull = double(proto::wireBytesForPayload(proto::telemetryHeaderBytes(ch) + 4 * ch * maxFit)) / double(maxFit);
+        const auto maxRate = static_cast<std::int32_t>(std::floor(capacity / perSampleFull));
+        e.code = proto::ErrorCode::OverCapacity;
+        e.value = maxRate;
+        e.message = std::to_string(static_cast<long>(rate)) + " Hz × " + std::to_string(ch) + " channels needs "
+            + std::to_string(static_cast<long>(bytesPerSecond(spb))) + " B/s but the link carries "
+            + std::to_string(static_cast<long>(capacity)) + " B/s at " + std::to_string(m_linkBaud)
+            + " baud: at most " + std::to_string(maxRate) + " Hz with these channels";
+        return sendError(f.seq, e, reply);
+    }
+    m_channels = req->channels;
+    m_rateHz = static_cast<std::uint32_t>(std::lround(rate));
+    m_ticksPerSample = ticksPerSample;
+    m_samplesPerBatch = static_cast<std::uint16_t>(spb);
+    m_sampleIndex = 0;
+    m_batch = proto::TelemetryBatch{};
+    proto::SubscribeReply r;
+    r.rateHz = m_rateHz;
+    r.samplesPerBatch = m_samplesPerBatch;
+    sendFrame(static_cast<std::uint8_t>(f.type | proto::kReplyFlag), f.seq, proto::encode(r), reply);
+}
+
+void Firmware::sampleTelemetry()
+{
+    if (m_rateHz == 0 || m_tickCount % m_ticksPerSample != 0)
+        return;
+    if (m_batch.sampleCount == 0) {
+        m_batch.firstSampleIndex = m_sampleIndex;
+        m_batch.firstSampleTimeUs = m_machine.timeUs();
+        m_batch.periodUs = static_cast<std::uint32_t>(m_ticksPerSample * 100);
+        m_batch.channels = m_channels;
+        m_batch.values.clear();
+    }
+    for (const auto& c : m_channels)
+        m_batch.values.push_back(m_machine.channelValue(c));
+    ++m_batch.sampleCount;
+    ++m_sampleIndex;
+    if (m_batch.sampleCount >= m_samplesPerBatch) {
+        sendFrame(static_cast<std::uint8_t>(proto::MsgType::TelemetryBatch), m_eventSeq++, proto::encode(m_batch), m_out);
+        m_batch.sampleCount = 0;
+    }
+}
+
+} // namespace sim

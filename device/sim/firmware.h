@@ -1,0 +1,77 @@
+#pragma once
+// The reference firmware's protocol side: decodes frames, answers requests,
+// never executes a retransmitted request twice, streams telemetry batches and
+// events. Plain C++ on a virtual clock: the host decides how fast time runs.
+#include "device/protocol/frame_codec.h"
+#include "device/protocol/messages.h"
+#include "device/sim/sim_machine.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace sim {
+
+class Firmware {
+public:
+    Firmware(const MachineConfig& config, std::uint32_t linkBaud);
+
+    /// Bytes from the host, in any chunking.
+    void receive(const std::uint8_t* data, std::size_t size);
+    /// Runs the machine for `dtS` of virtual time (whole ticks; the remainder carries).
+    void advance(double dtS);
+    /// Moves the bytes the device has sent since the last call to `out`.
+    void drainOutput(std::vector<std::uint8_t>& out);
+
+    SimMachine& machine() { return m_machine; }
+    const SimMachine& machine() const { return m_machine; }
+    const proto::DecoderStats& decoderStats() const { return m_decoder.stats(); }
+    std::uint64_t executedRequests() const { return m_executed; }
+    std::uint64_t duplicateRequests() const { return m_duplicates; }
+    std::uint32_t linkBaud() const { return m_linkBaud; }
+    void setLinkBaud(std::uint32_t baud) { m_linkBaud = baud; }
+
+    /// Bytes per second the link can carry (8N1: ten bit times per byte).
+    double linkBytesPerSecond() const { return m_linkBaud / 10.0; }
+
+private:
+    void handle(const proto::Frame& f);
+    void execute(const proto::Frame& f, std::vector<std::uint8_t>& reply);
+    void sendFrame(std::uint8_t type, std::uint16_t seq, const proto::Bytes& payload, std::vector<std::uint8_t>& out);
+    void sendError(std::uint16_t seq, const proto::ErrorReply& e, std::vector<std::uint8_t>& out);
+    void subscribe(const proto::Frame& f, std::vector<std::uint8_t>& reply);
+    void sampleTelemetry();
+    void flushEvents();
+
+    SimMachine m_machine;
+    std::uint32_t m_linkBaud;
+    proto::FrameDecoder m_decoder;
+    std::vector<proto::Frame> m_frames;
+    std::vector<std::uint8_t> m_out;
+    double m_pendingS = 0;
+    std::uint16_t m_eventSeq = 0;
+    std::uint64_t m_executed = 0, m_duplicates = 0;
+
+    /// Replies to the last requests, so a retransmission (same seq and bytes) is
+    /// answered again without acting twice. Fixed ring: the oldest entry is overwritten.
+    struct CachedReply {
+        bool valid = false;
+        std::uint8_t type = 0;
+        std::uint16_t seq = 0;
+        proto::Bytes payload;
+        std::vector<std::uint8_t> reply;
+    };
+    std::array<CachedReply, 32> m_cache;
+    std::size_t m_cacheNext = 0;
+
+    // Telemetry subscription.
+    std::vector<proto::ChannelRef> m_channels;
+    std::uint32_t m_rateHz = 0;
+    std::uint32_t m_ticksPerSample = 0;
+    std::uint16_t m_samplesPerBatch = 0;
+    std::uint32_t m_sampleIndex = 0;
+    std::uint64_t m_tickCount = 0;
+    proto::TelemetryBatch m_batch;
+};
+
+} // namespace sim

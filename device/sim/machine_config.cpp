@@ -1,0 +1,104 @@
+#include "device/sim/machine_config.h"
+
+namespace sim {
+
+MachineConfig analyzerConfig()
+{
+    MachineConfig m;
+    m.kind = proto::DeviceKind::Analyzer;
+    m.model = "BenchPilot analyzer manipulator (simulated)";
+    m.profile = ProfileKind::SeedSCurve;
+    m.zAfterXy = true;
+    // XY: 8 mm lead, 200 steps × 16 microsteps; encoder 1000 lines × 4 on the same lead.
+    AxisConfig x;
+    x.letter = 'X';
+    x.travel = 200;
+    x.stepSize = 8.0 / 3200;
+    x.resolution = 8.0 / 4000;
+    x.maxSpeed = 100;
+    x.defaultSpeed = 50;   // seed 000 Table 2 runs Y at 50 mm/s
+    x.accelTimeS = 0.1;    // seed 000 Table 2
+    x.maxAccel = 1500;
+    x.physicalMaxAccel = 4000;
+    x.backlash = 0.02;
+    x.leadErrorPerUnit = 1.5e-4;
+    x.switchRepeatability = 0.01;
+    x.startPosition = 57.3;
+    AxisConfig y = x;
+    y.letter = 'Y';
+    y.maxAccel = 2000;
+    y.leadErrorPerUnit = -1.0e-4;
+    y.startPosition = 121.8;
+    AxisConfig z = x;
+    z.letter = 'Z';
+    z.travel = 100;
+    z.stepSize = 4.0 / 3200;
+    z.resolution = 4.0 / 4000;
+    z.maxSpeed = 50;
+    z.defaultSpeed = 30;
+    z.maxAccel = 800;
+    z.physicalMaxAccel = 2500;
+    z.homeFastSpeed = 15;
+    z.backlash = 0.01;
+    z.leadErrorPerUnit = 1.0e-4;
+    z.startPosition = 33.0;
+    // Plunger pump: 1000 µL over 48000 microsteps.
+    AxisConfig p;
+    p.letter = 'P';
+    p.unit = proto::AxisUnit::Microlitre;
+    p.travel = 1000;
+    p.stepSize = 1000.0 / 48000;
+    p.resolution = 0.05;
+    p.maxSpeed = 500;
+    p.defaultSpeed = 100;
+    p.accelTimeS = 0.05;
+    p.maxAccel = 5000;
+    p.physicalMaxAccel = 20000;
+    p.homeFastSpeed = 200;
+    p.homeSlowSpeed = 10;
+    p.homeBackoff = 5;
+    p.homeSwitchAt = -2;
+    p.limitSwitchMargin = 2;
+    p.hardStopMargin = 10;
+    p.startPosition = 250;
+    m.axes = {x, y, z, p};
+    return m;
+}
+
+MachineConfig stageConfig()
+{
+    MachineConfig m;
+    m.kind = proto::DeviceKind::Stage;
+    m.model = "BenchPilot microscope stage (simulated)";
+    m.profile = ProfileKind::JerkLimited;
+    m.closedLoop = true;
+    // 1 mm lead ball screw, 200 steps × 16 microsteps; grating 2 µm pitch counted ×4.
+    AxisConfig x;
+    x.letter = 'X';
+    x.travel = 100;
+    x.stepSize = 1.0 / 3200;
+    x.resolution = 0.0005;
+    x.maxSpeed = 20;
+    x.defaultSpeed = 10;
+    x.maxAccel = 200;
+    x.maxJerk = 4000;
+    x.physicalMaxAccel = 1000;
+    x.homeFastSpeed = 5;
+    x.homeSlowSpeed = 0.5;
+    x.homeBackoff = 0.5;
+    x.backlash = 0.004;
+    x.leadErrorPerUnit = 3.0e-4;
+    // Seed 002's fitted error of the X axis (work point against the grating), µm over mm.
+    x.abbeErrorPolyUm = {1.563, 0.9473, -0.0006};
+    x.switchRepeatability = 0.001;
+    x.startPosition = 41.7;
+    AxisConfig y = x;
+    y.letter = 'Y';
+    y.leadErrorPerUnit = -2.0e-4;
+    y.abbeErrorPolyUm = {1.021, 0.6397, 0.0168};
+    y.startPosition = 63.2;
+    m.axes = {x, y};
+    return m;
+}
+
+} // namespace sim

@@ -1,0 +1,59 @@
+#pragma once
+// Mechanical and control parameters of the simulated instruments. Units: the
+// axis' own unit (mm, or µL for the pump) unless a name says otherwise.
+#include "device/protocol/messages.h"
+
+#include <string>
+#include <vector>
+
+namespace sim {
+
+enum class ProfileKind { SeedSCurve, JerkLimited };
+
+struct AxisConfig {
+    char letter = 'X';
+    proto::AxisUnit unit = proto::AxisUnit::Millimetre;
+    double travel = 100;            ///< soft limits default to [0, travel]
+    double stepSize = 0.0025;       ///< one microstep of the motor, in axis units
+    double resolution = 0.002;      ///< one count of encoder or grating
+    double maxSpeed = 100;          ///< per second
+    double defaultSpeed = 50;
+    double accelTimeS = 0.1;        ///< seed 000 S-curve acceleration phase
+    double maxAccel = 1000;         ///< jerk-limited planner, per s²; also the jog ramp
+    double maxJerk = 20000;         ///< per s³
+    double physicalMaxAccel = 4000; ///< beyond this the motor slips and loses steps
+    double homeFastSpeed = 20;
+    double homeSlowSpeed = 2;
+    double homeBackoff = 1.0;       ///< travel off the switch before the slow re-approach
+    double homeSwitchAt = -0.5;     ///< machine coordinate where the home switch closes (active below)
+    double limitSwitchMargin = 0.5; ///< limit switch closes this far past the travel
+    double hardStopMargin = 3.0;    ///< carriage cannot pass this far beyond either switch
+    double backlash = 0.0;          ///< lost motion on reversal
+    double leadErrorPerUnit = 0.0;  ///< screw lead error, fraction of travel (open-loop axes see it)
+    std::vector<double> abbeErrorPolyUm; ///< error of the work point against the scale, µm, poly in position (mm), c0 first
+    double switchRepeatability = 0.0; ///< ±, added to the latched home position
+    double startPosition = 10;      ///< machine coordinate at power-up
+};
+
+struct PidGains { double kp = 0.25, ki = 0.5, kd = 0.03; };  ///< seed 002's tuned gains
+
+struct MachineConfig {
+    proto::DeviceKind kind = proto::DeviceKind::Analyzer;
+    std::string model;
+    std::vector<AxisConfig> axes;
+    ProfileKind profile = ProfileKind::SeedSCurve;
+    bool closedLoop = false;        ///< stage: grating feedback + incremental PID
+    bool zAfterXy = false;          ///< analyzer: Z starts when the XY move has arrived
+    double controlPeriodS = 0.001;  ///< PID period
+    double driveLagS = 0.002;       ///< carriage follows the screw with this first-order lag (closed loop)
+    double inPositionWindow = 0.002;///< closed loop: |error| below this for settleTimeS means arrived
+    double settleTimeS = 0.01;
+    double lostStepTolerance = 0.05;///< open loop: |encoder − command| above this at rest raises LostSteps
+    PidGains gains;
+    std::uint64_t seed = 12345;     ///< noise is deterministic for a given seed
+};
+
+MachineConfig analyzerConfig();
+MachineConfig stageConfig();
+
+} // namespace sim

@@ -1,0 +1,140 @@
+#include "device/sim/sim_axis.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sim {
+
+SimAxis::SimAxis(const AxisConfig& config, bool closedLoop, std::uint64_t seed)
+    : m_cfg(config), m_closedLoop(closedLoop), m_rng(seed)
+{
+    m_motorSteps = std::llround(config.startPosition / config.stepSize);
+    m_screw = static_cast<double>(m_motorSteps) * config.stepSize;
+    m_carriage = screwToCarriage(m_screw);
+    m_ref = measured();
+    m_prevRefForLoop = m_ref;
+    m_prevMeasured = measured();
+}
+
+void SimAxis::setReference(double position, double velocity)
+{
+    if (m_frozen)
+        return;
+    m_ref = position;
+    m_refVel = velocity;
+}
+
+void SimAxis::freeze()
+{
+    m_frozen = true;
+    m_refVel = 0;
+    m_stepAccumulator = 0;
+}
+
+void SimAxis::holdHere()
+{
+    m_frozen = false;
+    m_ref = m_closedLoop ? measured() : static_cast<double>(m_motorSteps) * m_cfg.stepSize;
+    m_refVel = 0;
+    m_prevRefForLoop = m_ref;
+    m_e1 = m_e2 = 0;
+    m_stepAccumulator = 0;
+}
+
+double SimAxis::screwToCarriage(double screw) const
+{
+    // Lead error grows along the screw; backlash shifts the carriage by half the
+    // lost motion against the last direction of travel.
+    return screw * (1.0 + m_cfg.leadErrorPerUnit) - m_backlashSide * m_cfg.backlash;
+}
+
+double SimAxis::measured() const
+{
+    return std::floor(m_carriage / m_cfg.resolution + 0.5) * m_cfg.resolution;
+}
+
+double SimAxis::workPoint() const
+{
+    double errUm = 0, p = 1;
+    for (double c : m_cfg.abbeErrorPolyUm) {
+        errUm += c * p;
+        p *= m_carriage;
+    }
+    return m_carriage + errUm * 1e-3;
+}
+
+void SimAxis::issueSteps(std::int64_t steps, double dtS)
+{
+    if (steps == 0)
+        return;
+    (void)dtS;
+    m_motorSteps += steps;
+    // Slip: under overload a share of the steps never reaches the nut, and steps
+    // that would push the carriage into a hard stop are lost too.
+    const double load = m_load;
+    const std::int64_t dir = steps > 0 ? 1 : -1;
+    for (std::int64_t i = 0; i < std::abs(steps); ++i) {
+        const double next = m_screw + static_cast<double>(dir) * m_cfg.stepSize;
+        const bool hardStop = next < m_cfg.homeSwitchAt - m_cfg.hardStopMargin
+            || next > m_cfg.travel + m_cfg.limitSwitchMargin + m_cfg.hardStopMargin;
+        const bool slip = load > 1.0 && uniform(0, 1) < 1.0 - 1.0 / load;
+        if (hardStop || slip) {
+            ++m_lostSteps;
+            continue;
+        }
+        m_screw = next;
+    }
+    const double side = dir > 0 ? 0.5 : -0.5;
+    m_backlashSide = side;
+}
+
+void SimAxis::controlStep(const PidGains& g, int ticksPerPeriod)
+{
+    if (!m_closedLoop || m_frozen)
+        return;
+    // Seed 002 eq. 2: Δu = Kp(e_k − e_{k−1}) + Ki·e_k + Kd(e_k − 2e_{k−1} + e_{k−2}),
+    // with Δu the motor travel sent this period on top of the reference's own
+    // advance (feed-forward), so the loop only corrects what the screw got wrong.
+    const double e = m_ref - measured();
+    const double du = g.kp * (e - m_e1) + g.ki * e + g.kd * (e - 2 * m_e1 + m_e2);
+    m_e2 = m_e1;
+    m_e1 = e;
+    const double feedForward = m_ref - m_prevRefForLoop;
+    m_prevRefForLoop = m_ref;
+    m_stepAccumulator += (feedForward + du) / m_cfg.stepSize;
+    m_ticksLeft = ticksPerPeriod < 1 ? 1 : ticksPerPeriod;
+}
+
+void SimAxis::tick(double dtS)
+{
+    std::int64_t steps = 0;
+    if (m_closedLoop) {
+        // Spread the period's steps evenly over its ticks, as a step generator
+        // would; the fraction of a step left at the end carries to the next period.
+        const double want = m_stepAccumulator / (m_ticksLeft > 1 ? m_ticksLeft : 1);
+        if (m_ticksLeft > 1)
+            --m_ticksLeft;
+        steps = static_cast<std::int64_t>(std::trunc(want));
+        m_stepAccumulator -= static_cast<double>(steps);
+        m_outputStepsS = static_cast<double>(steps) / dtS;
+    } else if (!m_frozen) {
+        steps = std::llround(m_ref / m_cfg.stepSize) - m_motorSteps;
+        m_outputStepsS = static_cast<double>(steps) / dtS;
+    }
+    issueSteps(steps, dtS);
+    const double target = screwToCarriage(m_screw);
+    if (m_closedLoop) {
+        // The carriage follows the nut through the coupling and table compliance.
+        const double lagS = 0.002;
+        m_carriage += (target - m_carriage) * std::min(1.0, dtS / lagS);
+    } else {
+        m_carriage = target;
+    }
+    const double meas = measured();
+    // A light low-pass so the velocity channel is not pure quantization noise.
+    const double rawVel = (meas - m_prevMeasured) / dtS;
+    m_measuredVel += (rawVel - m_measuredVel) * std::min(1.0, dtS / 0.005);
+    m_prevMeasured = meas;
+}
+
+} // namespace sim

@@ -1,0 +1,69 @@
+#pragma once
+// One simulated axis: the plant (stepper, screw, carriage, switches, encoder or
+// grating) and, for the stage, its incremental PID loop. Positions here are
+// machine coordinates in axis units; the machine maps them to what the host sees.
+#include "device/sim/machine_config.h"
+
+#include <cstdint>
+#include <random>
+
+namespace sim {
+
+class SimAxis {
+public:
+    SimAxis(const AxisConfig& config, bool closedLoop, std::uint64_t seed);
+
+    const AxisConfig& config() const { return m_cfg; }
+
+    /// The reference the trajectory generator wants now, and its velocity.
+    void setReference(double position, double velocity);
+    double reference() const { return m_ref; }
+    double referenceVelocity() const { return m_refVel; }
+
+    /// Advances the plant by one simulation tick.
+    void tick(double dtS);
+    /// Closed loop only: one PID period (seed 002 eq. 2, incremental form).
+    void controlStep(const PidGains& gains, int ticksPerPeriod);
+    /// Makes the reference equal to where the carriage is, e.g. after a latched stop.
+    void holdHere();
+    /// E-stop: the reference freezes; the motor gets no more steps.
+    void freeze();
+
+    double carriage() const { return m_carriage; }                 ///< true position of the carriage
+    double measured() const;                                       ///< encoder or grating reading
+    double workPoint() const;                                      ///< what an interferometer at the work point reads
+    double followingError() const { return measured() - m_ref; }
+    double measuredVelocity() const { return m_measuredVel; }
+    double controllerOutputStepsS() const { return m_outputStepsS; }
+    bool homeSwitch() const { return m_carriage <= m_cfg.homeSwitchAt; }
+    bool limitSwitch() const { return m_carriage >= m_cfg.travel + m_cfg.limitSwitchMargin; }
+    std::int64_t lostSteps() const { return m_lostSteps; }
+
+    /// Overload factor ≥ 1: above 1 the motor slips and a share 1 − 1/load of steps is lost.
+    void setLoadFactor(double load) { m_load = load < 1 ? 1 : load; }
+    double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(m_rng); }
+
+private:
+    void issueSteps(std::int64_t steps, double dtS);
+    double screwToCarriage(double screw) const;
+
+    AxisConfig m_cfg;
+    bool m_closedLoop;
+    std::mt19937_64 m_rng;
+
+    double m_ref = 0, m_refVel = 0, m_prevRefForLoop = 0;
+    std::int64_t m_motorSteps = 0;  ///< steps the driver has received, from machine zero
+    double m_screw = 0;             ///< nut position: motor position less slipped steps
+    std::int64_t m_lostSteps = 0;
+    double m_backlashSide = 0;      ///< −1/2 … +1/2 of the backlash, follows the last direction
+    double m_carriage = 0;
+    double m_prevMeasured = 0, m_measuredVel = 0;
+    double m_outputStepsS = 0;
+    double m_stepAccumulator = 0;   ///< closed loop: fractional steps carried between periods
+    double m_e1 = 0, m_e2 = 0;      ///< PID: error at k−1, k−2 (axis units)
+    double m_load = 1;
+    int m_ticksLeft = 1;            ///< ticks left in the current PID period
+    bool m_frozen = false;
+};
+
+} // namespace sim

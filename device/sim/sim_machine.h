@@ -1,0 +1,131 @@
+#pragma once
+// The simulated instrument's motion controller: the reference firmware's
+// behaviour (segments, jog with watchdog, homing, switches, E-stop, soft limits)
+// over SimAxis plants, on a virtual clock advanced in fixed ticks.
+#include "device/protocol/messages.h"
+#include "device/sim/machine_config.h"
+#include "device/sim/sim_axis.h"
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace motion {
+class Profile;
+}
+
+namespace sim {
+
+class SimMachine {
+public:
+    static constexpr double kTickS = 100e-6;        ///< simulation tick: 10 kHz
+    static constexpr double kJogWatchdogTripS = 0.200; ///< velocity move not refreshed this long starts to stop
+    static constexpr double kJogStopBudgetS = 0.050;   ///< …and is at rest this much later at the latest
+
+    explicit SimMachine(const MachineConfig& config);
+    ~SimMachine();
+
+    const MachineConfig& config() const { return m_cfg; }
+    proto::HelloReply hello(std::uint32_t linkBaud) const;
+    int axisCount() const { return static_cast<int>(m_axes.size()); }
+    double timeS() const { return static_cast<double>(m_ticks) * kTickS; }
+    std::uint64_t timeUs() const { return m_ticks * 100; }
+
+    /// Runs exactly one tick.
+    void tick();
+
+    using Result = std::optional<proto::ErrorReply>;  ///< nullopt = accepted
+    Result home(std::uint8_t axisMask);
+    Result move(const proto::MoveRequest& request);
+    Result jogStep(const proto::JogStepRequest& request);
+    Result jogVelocity(const proto::JogVelocityRequest& request);
+    Result stop(std::uint8_t axisMask);
+    Result estop();
+    Result reset();
+    Result setZero(std::uint8_t axisMask);
+    Result setLimits(const proto::SetLimitsRequest& request);
+    proto::LimitsReply limits() const;
+    proto::StatusReply status() const;
+
+    /// Value of a telemetry channel now, in wire units.
+    std::int32_t channelValue(const proto::ChannelRef& channel) const;
+    bool channelExists(const proto::ChannelRef& channel) const;
+
+    std::vector<proto::EventMsg> takeEvents();
+
+    // Test and fault-injection hooks: what a bench technician could do to the plant.
+    SimAxis& axis(int i) { return *m_axes[static_cast<std::size_t>(i)].plant; }
+    const SimAxis& axis(int i) const { return *m_axes[static_cast<std::size_t>(i)].plant; }
+    double logicalOffset(int i) const { return m_axes[static_cast<std::size_t>(i)].offset; }
+    bool homed(int i) const { return m_axes[static_cast<std::size_t>(i)].homed; }
+    bool estopActive() const { return m_estop; }
+    void setGains(const PidGains& g) { m_cfg.gains = g; }
+
+private:
+    enum class Mode { Idle, Segment, Jog, Decel, Homing, Settling };
+    enum class HomePhase { SeekFast, BackOff, SeekSlow };
+
+    struct AxisState {
+        std::unique_ptr<SimAxis> plant;
+        Mode mode = Mode::Idle;
+        double v = 0;             ///< reference velocity in velocity modes
+        double vTarget = 0;
+        double accel = 0;         ///< ramp rate in velocity modes
+        double lastRefreshS = 0;
+        bool expired = false;
+        HomePhase phase = HomePhase::SeekFast;
+        double phaseStart = 0;    ///< machine position when the phase began
+        bool homed = false;
+        bool fault = false;
+        double offset = 0;        ///< machine − logical
+        double softMin = 0, softMax = 0;  ///< machine coordinates
+        double settledS = 0;
+        double settleStartS = 0;
+        proto::EventKind doneEvent = proto::EventKind::MotionDone;
+        int segment = -1;         ///< id of the segment this axis follows
+        bool lostReported = false;
+    };
+    struct Segment {
+        int id = 0;
+        int after = -1;           ///< id of a segment that must finish before this starts
+        bool started = false;
+        double t = 0;
+        std::vector<int> axes;
+        std::vector<double> start, dir;  ///< machine coordinates, unit direction
+        std::shared_ptr<const motion::Profile> profile;
+        proto::EventKind doneEvent = proto::EventKind::MotionDone;
+    };
+
+    AxisState& st(int i) { return m_axes[static_cast<std::size_t>(i)]; }
+    const AxisState& st(int i) const { return m_axes[static_cast<std::size_t>(i)]; }
+    double scale(int i) const;  ///< wire units per axis unit
+    proto::ErrorReply error(proto::ErrorCode code, int axis, double value, const std::string& text) const;
+    std::string fmt(int axis, double value) const;
+    Result checkAxes(std::uint8_t mask, bool mustBeIdle) const;
+    Result planSegment(const std::vector<int>& axes, const std::vector<double>& targetsMachine, double speed,
+                       int after, proto::EventKind doneEvent, int* idOut);
+    void finishAxis(int i, proto::EventKind kind, const std::string& text = {});
+    void stopAxisHard(int i);
+    void startHomingStage();
+    void tickSegments();
+    void tickVelocityModes();
+    void tickHoming(int i);
+    void tickSettling(int i);
+    void checkSwitches(int i);
+    void emit(proto::EventKind kind, int axis, const std::string& text = {});
+    double contourErrorMm() const;
+
+    MachineConfig m_cfg;
+    std::vector<AxisState> m_axes;
+    std::vector<Segment> m_segments;
+    std::vector<std::uint8_t> m_homeStages;  ///< masks still to home, in order
+    std::vector<proto::EventMsg> m_events;
+    std::uint64_t m_ticks = 0;
+    int m_nextSegmentId = 1;
+    int m_ticksPerControl = 10;
+    bool m_estop = false;
+    int m_lastXySegment = -1;
+    std::vector<double> m_xyLineStart, m_xyLineDir;  ///< last XY path, for contour error
+};
+
+} // namespace sim
