@@ -86,7 +86,7 @@ proto::HelloReply SimMachine::hello(std::uint32_t linkBaud) const
     return h;
 }
 
-void SimMachine::emit(proto::EventKind kind, int axis, const std::string& text)
+void SimMachine::raiseEvent(proto::EventKind kind, int axis, const std::string& text)
 {
     proto::EventMsg e;
     e.kind = kind;
@@ -146,7 +146,7 @@ SimMachine::Result SimMachine::planSegment(const std::vector<int>& axes, const s
     const double len = std::sqrt(len2);
     if (len < 1e-9) {
         for (int i : axes)
-            emit(doneEvent, i, "already there");
+            raiseEvent(doneEvent, i, "already there");
         if (idOut)
             *idOut = -1;
         return std::nullopt;
@@ -372,7 +372,7 @@ SimMachine::Result SimMachine::stop(std::uint8_t mask)
                                                     if (st(a).segment == g.id) {
                                                         st(a).mode = Mode::Idle;
                                                         st(a).segment = -1;
-                                                        emit(proto::EventKind::Stopped, a, "cancelled before it started");
+                                                        raiseEvent(proto::EventKind::Stopped, a, "cancelled before it started");
                                                     }
                                                 return true;
                                             }
@@ -394,7 +394,7 @@ SimMachine::Result SimMachine::estop()
         s.segment = -1;
         s.v = s.vTarget = 0;
     }
-    emit(proto::EventKind::EStop, -1, "emergency stop: all motion halted");
+    raiseEvent(proto::EventKind::EStop, -1, "emergency stop: all motion halted");
     return std::nullopt;
 }
 
@@ -407,7 +407,7 @@ SimMachine::Result SimMachine::reset()
     }
     for (int i = 0; i < axisCount(); ++i)
         st(i).fault = false;
-    emit(proto::EventKind::Reset, -1, "E-stop and faults cleared");
+    raiseEvent(proto::EventKind::Reset, -1, "E-stop and faults cleared");
     return std::nullopt;
 }
 
@@ -501,12 +501,12 @@ void SimMachine::finishAxis(int i, proto::EventKind kind, const std::string& tex
     s.mode = Mode::Idle;
     s.segment = -1;
     s.v = s.vTarget = 0;
-    emit(kind, i, text);
+    raiseEvent(kind, i, text);
     if (!m_cfg.closedLoop && !s.lostReported) {
         const double err = s.plant->measured() - s.plant->reference();
         if (std::abs(err) > m_cfg.lostStepTolerance) {
             s.lostReported = true;
-            emit(proto::EventKind::LostSteps, i,
+            raiseEvent(proto::EventKind::LostSteps, i,
                  std::string("axis ") + s.plant->config().letter + " encoder is " + fmt(i, err) + " off the command");
         }
     }
@@ -546,10 +546,10 @@ void SimMachine::checkSwitches(int i)
     const auto& c = s.plant->config();
     if (s.plant->homeSwitch() && v < 0) {
         stopAxisHard(i);
-        emit(proto::EventKind::LimitHit, i, std::string("axis ") + c.letter + " hit its home switch");
+        raiseEvent(proto::EventKind::LimitHit, i, std::string("axis ") + c.letter + " hit its home switch");
     } else if (s.plant->limitSwitch() && v > 0) {
         stopAxisHard(i);
-        emit(proto::EventKind::LimitHit, i, std::string("axis ") + c.letter + " hit its limit switch");
+        raiseEvent(proto::EventKind::LimitHit, i, std::string("axis ") + c.letter + " hit its limit switch");
     }
 }
 
@@ -603,7 +603,7 @@ void SimMachine::tickVelocityModes()
             s.expired = true;
             s.vTarget = 0;
             s.accel = std::max(c.maxAccel, std::abs(s.v) / kJogStopBudgetS);
-            emit(proto::EventKind::JogExpired, i, std::string("axis ") + c.letter + " jog not refreshed: stopped");
+            raiseEvent(proto::EventKind::JogExpired, i, std::string("axis ") + c.letter + " jog not refreshed: stopped");
         }
         double target = s.vTarget;
         const double pos = s.plant->reference();
@@ -660,7 +660,7 @@ void SimMachine::tickHoming(int i)
             s.fault = true;
             s.plant->holdHere();
             m_homeStages.clear();
-            emit(proto::EventKind::Fault, i, std::string("axis ") + c.letter + " home switch not found over the whole travel");
+            raiseEvent(proto::EventKind::Fault, i, std::string("axis ") + c.letter + " home switch not found over the whole travel");
         }
         break;
     case HomePhase::BackOff:

@@ -112,7 +112,7 @@ private:
     void tickHoming(int i);
     void tickSettling(int i);
     void checkSwitches(int i);
-    void emit(proto::EventKind kind, int axis, const std::string& text = {});
+    void raiseEvent(proto::EventKind kind, int axis, const std::string& text = {});
     double contourErrorMm() const;
 
     MachineConfig m_cfg;

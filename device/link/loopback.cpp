@@ -1,0 +1,138 @@
+#include "device/link/loopback.h"
+
+#include <algorithm>
+
+namespace dev {
+
+class LoopbackEnd final : public Transport {
+public:
+    LoopbackEnd(LoopbackPair* pair, int side) : Transport(pair), m_pair(pair), m_side(side) {}
+    void open() override
+    {
+        QTimer::singleShot(0, this, [this] {
+            if (m_pair->m_unplugged) {
+                emit failed(tr("the simulated cable is unplugged"));
+                return;
+            }
+            m_open = true;
+            emit opened();
+        });
+    }
+    void close() override { m_open = false; }
+    bool isOpen() const override { return m_open; }
+    void write(const QByteArray& bytes) override
+    {
+        if (m_open && !m_pair->m_unplugged)
+            m_pair->transmit(m_side, bytes, true);
+    }
+    QString describe() const override
+    {
+        return m_pair->m_baud > 0 ? tr("loopback @ %1 baud").arg(m_pair->m_baud) : tr("loopback");
+    }
+    void deliver(const QByteArray& bytes)
+    {
+        if (m_open)
+            emit bytesReceived(bytes);
+    }
+    void drop(const QString& why)
+    {
+        if (!m_open)
+            return;
+        m_open = false;
+        emit lost(why);
+    }
+
+private:
+    LoopbackPair* m_pair;
+    int m_side;
+    bool m_open = false;
+};
+
+LoopbackPair::LoopbackPair(qint32 baud, QObject* parent) : QObject(parent), m_baud(baud)
+{
+    m_ends[0] = new LoopbackEnd(this, 0);
+    m_ends[1] = new LoopbackEnd(this, 1);
+    m_rng[0].seed(1);
+    m_rng[1].seed(2);
+    m_clock.start();
+    m_timer.setSingleShot(true);
+    m_timer.setTimerType(Qt::PreciseTimer);
+    connect(&m_timer, &QTimer::timeout, this, &LoopbackPair::deliverDue);
+}
+
+LoopbackPair::~LoopbackPair() = default;
+
+Transport* LoopbackPair::end(Side side) { return m_ends[side]; }
+
+void LoopbackPair::setFaults(Side from, const LinkFaults& faults)
+{
+    m_faults[from] = faults;
+    m_rng[from].seed(faults.seed);
+}
+
+void LoopbackPair::unplug()
+{
+    m_unplugged = true;
+    m_pending.clear();
+    for (auto* e : m_ends)
+        static_cast<LoopbackEnd*>(e)->drop(tr("the simulated cable was unplugged"));
+}
+
+void LoopbackPair::transmit(int from, const QByteArray& input, bool applyFaults)
+{
+    QByteArray bytes = input;
+    const LinkFaults& f = m_faults[from];
+    auto& rng = m_rng[from];
+    std::uniform_real_distribution<double> u(0, 1);
+    if (applyFaults && f.dropChunkProbability > 0 && u(rng) < f.dropChunkProbability)
+        return;
+    if (applyFaults && f.corruptByteProbability > 0)
+        for (auto& c : bytes)
+            if (u(rng) < f.corruptByteProbability)
+                c = static_cast<char>(c ^ (1 << std::uniform_int_distribution<int>(0, 7)(rng)));
+    m_carried[from] += bytes.size();
+    const qint64 now = m_clock.nsecsElapsed();
+    const qint64 extra = applyFaults ? qint64(f.extraDelayMs) * 1000000 : 0;
+    const int to = 1 - from;
+    if (m_baud <= 0) {
+        m_pending.push_back({now + extra, to, bytes});
+    } else {
+        // Pace in small pieces so a long burst trickles in as it would off a UART.
+        const qint64 byteNs = qint64(10) * 1000000000 / m_baud;
+        qint64 t = std::max(now, m_lineFreeNs[from]);
+        for (int i = 0; i < bytes.size(); i += 32) {
+            const QByteArray piece = bytes.mid(i, 32);
+            t += byteNs * piece.size();
+            m_pending.push_back({t + extra, to, piece});
+        }
+        m_lineFreeNs[from] = t;
+    }
+    std::stable_sort(m_pending.begin(), m_pending.end(), [](const Pending& a, const Pending& b) { return a.dueNs < b.dueNs; });
+    schedule();
+}
+
+void LoopbackPair::schedule()
+{
+    if (m_pending.empty())
+        return;
+    const qint64 waitNs = m_pending.front().dueNs - m_clock.nsecsElapsed();
+    const int ms = waitNs <= 0 ? 0 : static_cast<int>((waitNs + 999999) / 1000000);
+    if (!m_timer.isActive() || m_timer.remainingTime() > ms)
+        m_timer.start(ms);
+}
+
+void LoopbackPair::deliverDue()
+{
+    const qint64 now = m_clock.nsecsElapsed();
+    QByteArray out[2];
+    while (!m_pending.empty() && m_pending.front().dueNs <= now) {
+        out[m_pending.front().to] += m_pending.front().bytes;
+        m_pending.pop_front();
+    }
+    for (int side = 0; side < 2; ++side)
+        if (!out[side].isEmpty())
+            static_cast<LoopbackEnd*>(m_ends[side])->deliver(out[side]);
+    schedule();
+}
+
+} // namespace dev

@@ -1,0 +1,74 @@
+#include "device/link/serial_transport.h"
+
+#include <QSerialPort>
+#include <QSerialPortInfo>
+#include <QTimer>
+
+namespace dev {
+
+SerialTransport::SerialTransport(const QString& portName, qint32 baud, QObject* parent)
+    : Transport(parent), m_port(new QSerialPort(this)), m_name(portName), m_baud(baud)
+{
+    connect(m_port, &QSerialPort::readyRead, this, [this] { emit bytesReceived(m_port->readAll()); });
+    connect(m_port, &QSerialPort::errorOccurred, this, [this](QSerialPort::SerialPortError e) {
+        // ResourceError is what an unplugged adapter or a vanished pty gives.
+        if (e == QSerialPort::ResourceError && m_port->isOpen()) {
+            const QString why = tr("%1: device went away (%2)").arg(m_name, m_port->errorString());
+            m_port->close();
+            emit lost(why);
+        }
+    });
+}
+
+SerialTransport::~SerialTransport() { close(); }
+
+void SerialTransport::open()
+{
+    m_port->setPortName(m_name);
+    m_port->setBaudRate(m_baud);
+    m_port->setDataBits(QSerialPort::Data8);
+    m_port->setParity(QSerialPort::NoParity);
+    m_port->setStopBits(QSerialPort::OneStop);
+    m_port->setFlowControl(QSerialPort::NoFlowControl);
+    if (!m_port->open(QIODevice::ReadWrite)) {
+        const QString why = m_port->error() == QSerialPort::PermissionError
+            ? tr("cannot open %1: it is busy or you lack permission (%2)").arg(m_name, m_port->errorString())
+            : m_port->error() == QSerialPort::DeviceNotFoundError
+                ? tr("cannot open %1: no such port").arg(m_name)
+                : tr("cannot open %1: %2").arg(m_name, m_port->errorString());
+        QTimer::singleShot(0, this, [this, why] { emit failed(why); });
+        return;
+    }
+    m_port->clear();
+    QTimer::singleShot(0, this, [this] { emit opened(); });
+}
+
+void SerialTransport::close()
+{
+    if (m_port->isOpen())
+        m_port->close();
+}
+
+bool SerialTransport::isOpen() const { return m_port->isOpen(); }
+
+void SerialTransport::write(const QByteArray& bytes)
+{
+    if (m_port->isOpen())
+        m_port->write(bytes);
+}
+
+QString SerialTransport::describe() const { return tr("%1 @ %2 baud").arg(m_name).arg(m_baud); }
+
+QList<SerialTransport::PortInfo> SerialTransport::availablePorts()
+{
+    QList<PortInfo> out;
+    for (const QSerialPortInfo& p : QSerialPortInfo::availablePorts()) {
+        QString desc = p.description();
+        if (!p.manufacturer().isEmpty())
+            desc = desc.isEmpty() ? p.manufacturer() : p.manufacturer() + QStringLiteral(" — ") + desc;
+        out.push_back({p.systemLocation(), desc});
+    }
+    return out;
+}
+
+} // namespace dev

@@ -1,0 +1,83 @@
+#include "device/link/simulated_link.h"
+
+namespace dev {
+namespace {
+// A frozen event loop is caught up in one go, so a watchdog still trips at the
+// right virtual time; past this the simulator gives up the lost time instead.
+constexpr double kMaxCatchUpS = 5.0;
+}
+
+SimulatorHost::SimulatorHost(const sim::MachineConfig& config, qint32 linkBaud, Transport* deviceEnd, QObject* parent)
+    : QObject(parent), m_firmware(config, static_cast<std::uint32_t>(linkBaud > 0 ? linkBaud : 921600)), m_end(deviceEnd)
+{
+    connect(m_end, &Transport::bytesReceived, this, [this](const QByteArray& b) {
+        pump();  // bring the clock up to now before acting, so replies carry the right time
+        m_firmware.receive(reinterpret_cast<const std::uint8_t*>(b.constData()), static_cast<std::size_t>(b.size()));
+        flush();
+    });
+    m_timer.setTimerType(Qt::PreciseTimer);
+    m_timer.setInterval(1);
+    connect(&m_timer, &QTimer::timeout, this, &SimulatorHost::pump);
+}
+
+void SimulatorHost::start()
+{
+    m_end->open();
+    m_wall.start();
+    m_lastNs = 0;
+    if (!m_manual)
+        m_timer.start();
+}
+
+void SimulatorHost::setManualClock(bool manual)
+{
+    m_manual = manual;
+    if (manual)
+        m_timer.stop();
+    else if (m_wall.isValid()) {
+        m_lastNs = m_wall.nsecsElapsed();
+        m_timer.start();
+    }
+}
+
+void SimulatorHost::advance(double dtS)
+{
+    m_firmware.advance(dtS);
+    flush();
+}
+
+void SimulatorHost::pump()
+{
+    if (m_manual || !m_wall.isValid())
+        return;
+    const qint64 now = m_wall.nsecsElapsed();
+    double dt = double(now - m_lastNs) * 1e-9 * m_timeScale;
+    m_lastNs = now;
+    if (dt > kMaxCatchUpS)
+        dt = kMaxCatchUpS;
+    if (dt > 0)
+        m_firmware.advance(dt);
+    flush();
+}
+
+void SimulatorHost::flush()
+{
+    m_out.clear();
+    m_firmware.drainOutput(m_out);
+    if (!m_out.empty())
+        m_end->write(QByteArray(reinterpret_cast<const char*>(m_out.data()), static_cast<qsizetype>(m_out.size())));
+}
+
+SimulatedLink::SimulatedLink(proto::DeviceKind kind, qint32 baud, QObject* parent)
+    : SimulatedLink(kind == proto::DeviceKind::Stage ? sim::stageConfig() : sim::analyzerConfig(), baud, parent)
+{
+}
+
+SimulatedLink::SimulatedLink(const sim::MachineConfig& config, qint32 baud, QObject* parent)
+    : QObject(parent), m_pair(new LoopbackPair(baud, this))
+{
+    m_host = new SimulatorHost(config, baud, m_pair->end(LoopbackPair::B), this);
+    m_host->start();
+}
+
+} // namespace dev

@@ -1,0 +1,59 @@
+#pragma once
+// The simulator running in-process: the reference firmware on one end of a
+// loopback pair, the host's transport on the other. Virtual time follows the
+// wall clock (times a scale), so everything a person sees happens in real time.
+#include "device/link/loopback.h"
+#include "device/sim/firmware.h"
+
+#include <QElapsedTimer>
+#include <QTimer>
+
+#include <memory>
+
+namespace dev {
+
+/// Drives a sim::Firmware from the device end of any transport.
+class SimulatorHost : public QObject {
+    Q_OBJECT
+public:
+    SimulatorHost(const sim::MachineConfig& config, qint32 linkBaud, Transport* deviceEnd, QObject* parent = nullptr);
+
+    sim::Firmware& firmware() { return m_firmware; }
+    void setTimeScale(double scale) { m_timeScale = scale; }
+    /// Stops the clock; `advance()` then moves virtual time by hand (deterministic tests).
+    void setManualClock(bool manual);
+    void advance(double dtS);
+    void start();
+
+private:
+    void pump();
+    void flush();
+
+    sim::Firmware m_firmware;
+    Transport* m_end;
+    QTimer m_timer;
+    QElapsedTimer m_wall;
+    qint64 m_lastNs = 0;
+    double m_timeScale = 1.0;
+    bool m_manual = false;
+    std::vector<std::uint8_t> m_out;
+};
+
+/// Loopback pair + simulator host: hand `hostEnd()` to an InstrumentClient.
+class SimulatedLink : public QObject {
+    Q_OBJECT
+public:
+    SimulatedLink(proto::DeviceKind kind, qint32 baud, QObject* parent = nullptr);
+    SimulatedLink(const sim::MachineConfig& config, qint32 baud, QObject* parent = nullptr);
+
+    Transport* hostEnd() { return m_pair->end(LoopbackPair::A); }
+    LoopbackPair& pair() { return *m_pair; }
+    SimulatorHost& host() { return *m_host; }
+    sim::SimMachine& machine() { return m_host->firmware().machine(); }
+
+private:
+    LoopbackPair* m_pair;
+    SimulatorHost* m_host;
+};
+
+} // namespace dev

@@ -1,0 +1,31 @@
+#pragma once
+#include <QByteArray>
+#include <QObject>
+#include <QString>
+
+namespace dev {
+
+/// A byte pipe to an instrument. Opening is asynchronous: `opened()` or
+/// `failed()` follows `open()`. A transport that goes away under load (cable
+/// pulled, simulator gone) emits `lost()` once and is closed afterwards.
+class Transport : public QObject {
+    Q_OBJECT
+public:
+    using QObject::QObject;
+    ~Transport() override = default;
+
+    virtual void open() = 0;
+    virtual void close() = 0;
+    virtual bool isOpen() const = 0;
+    virtual void write(const QByteArray& bytes) = 0;
+    /// What a person would call this link: "/dev/ttyUSB0 @ 115200 baud", "simulated stage".
+    virtual QString describe() const = 0;
+
+signals:
+    void opened();
+    void failed(const QString& reason);
+    void lost(const QString& reason);
+    void bytesReceived(const QByteArray& bytes);
+};
+
+} // namespace dev
