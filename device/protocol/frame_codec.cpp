@@ -42,12 +42,10 @@ void FrameDecoder::feed(const std::uint8_t* data, std::size_t size, std::vector<
     for (std::size_t i = 0; i < size; ++i) {
         const std::uint8_t b = data[i];
         if (b == 0) {
-            if (m_discarding) {
-                m_discarding = false;
-                ++m_stats.droppedBytes;
-            } else {
+            if (m_discarding)
+                m_discarding = false;  // the delimiter is framing, not a dropped byte
+            else
                 finishBlock(out);
-            }
             continue;
         }
         if (m_discarding) {
@@ -70,8 +68,15 @@ void FrameDecoder::finishBlock(std::vector<Frame>& out)
     if (m_block.empty())
         return;  // back-to-back delimiters are idle fill, not an error
     auto body = cobsDecode(m_block.data(), m_block.size());
-    const std::size_t blockBytes = m_block.size() + 1;
+    const std::size_t blockBytes = m_block.size();
     m_block.clear();
+    if (body && body->size() > kMaxBodyBytes) {
+        // A body with zeros in it encodes to size + 1, so up to 1028 bytes fit in
+        // the block limit: the cap must be checked on the decoded body as well.
+        ++m_stats.oversize;
+        m_stats.droppedBytes += blockBytes;
+        return;
+    }
     if (!body || body->size() < kFrameHeaderBytes + kFrameCrcBytes) {
         ++m_stats.malformed;
         m_stats.droppedBytes += blockBytes;

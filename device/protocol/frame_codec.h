@@ -39,8 +39,11 @@ struct DecoderStats {
     std::uint64_t frames = 0;        ///< good frames delivered
     std::uint64_t crcErrors = 0;     ///< well-formed COBS, wrong CRC
     std::uint64_t malformed = 0;     ///< bad COBS or shorter than header + CRC
-    std::uint64_t oversize = 0;      ///< longer than the cap: dropped up to the next delimiter
-    std::uint64_t droppedBytes = 0;  ///< bytes that belonged to no good frame
+    std::uint64_t oversize = 0;      ///< body longer than the cap: dropped up to the next delimiter
+    /// Non-delimiter bytes that belonged to no good frame (garbage, damaged or
+    /// oversize frames). 0x00 delimiters are framing and never counted, so
+    /// garbage between two good frames adds exactly its non-zero byte count.
+    std::uint64_t droppedBytes = 0;
 };
 
 /// Streaming decoder: feed bytes in any chunking, get whole frames. Its buffer is
