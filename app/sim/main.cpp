@@ -1,0 +1,94 @@
+// benchpilot-sim: the reference firmware served on a pseudo-terminal.
+//   benchpilot-sim --instrument analyzer|stage --pty PATH [--time-scale K] [--baud N]
+#include "device/link/simulated_link.h"
+#include "pty_transport.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QSocketNotifier>
+
+#include <csignal>
+#include <cstdio>
+#include <sys/socket.h>
+#include <unistd.h>
+
+namespace {
+int g_signalPipe[2] = {-1, -1};
+void onSignal(int)
+{
+    const char c = 1;
+    [[maybe_unused]] const auto n = ::write(g_signalPipe[1], &c, 1);
+}
+int fail(const QString& message)
+{
+    std::fprintf(stderr, "benchpilot-sim: %s\n", qPrintable(message));
+    return 2;
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("benchpilot-sim"));
+    QCommandLineParser p;
+    p.setApplicationDescription(QCoreApplication::translate("sim", "BenchPilot simulated instrument on a pseudo-terminal."));
+    p.addHelpOption();
+    QCommandLineOption instrument({QStringLiteral("i"), QStringLiteral("instrument")},
+                                  QCoreApplication::translate("sim", "analyzer or stage"), QStringLiteral("kind"));
+    QCommandLineOption ptyPath(QStringLiteral("pty"), QCoreApplication::translate("sim", "symlink to create for the pty"),
+                               QStringLiteral("path"));
+    QCommandLineOption timeScale(QStringLiteral("time-scale"),
+                                 QCoreApplication::translate("sim", "virtual seconds per wall-clock second"),
+                                 QStringLiteral("k"), QStringLiteral("1"));
+    QCommandLineOption baud(QStringLiteral("baud"), QCoreApplication::translate("sim", "link speed the firmware assumes"),
+                            QStringLiteral("n"), QStringLiteral("115200"));
+    p.addOptions({instrument, ptyPath, timeScale, baud});
+    p.process(app);
+
+    const QString kind = p.value(instrument);
+    if (kind != QLatin1String("analyzer") && kind != QLatin1String("stage"))
+        return fail(QCoreApplication::translate("sim", "--instrument must be analyzer or stage (got '%1')").arg(kind));
+    if (p.value(ptyPath).isEmpty())
+        return fail(QCoreApplication::translate("sim", "--pty PATH is required"));
+    bool ok = false;
+    const double scale = p.value(timeScale).toDouble(&ok);
+    if (!ok || scale <= 0 || scale > 1000)
+        return fail(QCoreApplication::translate("sim", "--time-scale must be a number in (0, 1000] (got '%1')").arg(p.value(timeScale)));
+    const int baudRate = p.value(baud).toInt(&ok);
+    if (!ok || baudRate < 1200)
+        return fail(QCoreApplication::translate("sim", "--baud must be at least 1200 (got '%1')").arg(p.value(baud)));
+
+    const QString link = p.value(ptyPath);
+    const QFileInfo existing(link);
+    if (existing.exists() || existing.isSymLink()) {
+        if (!existing.isSymLink())
+            return fail(QCoreApplication::translate("sim", "%1 exists and is not a symlink: refusing to replace it").arg(link));
+        ::unlink(qPrintable(link));
+    }
+
+    simapp::PtyTransport pty;
+    if (!pty.create())
+        return fail(pty.error());
+    if (::symlink(qPrintable(pty.slavePath()), qPrintable(link)) != 0)
+        return fail(QCoreApplication::translate("sim", "cannot create symlink %1: %2").arg(link, QString::fromLocal8Bit(strerror(errno))));
+
+    dev::SimulatorHost host(kind == QLatin1String("stage") ? sim::stageConfig() : sim::analyzerConfig(), baudRate, &pty);
+    host.setTimeScale(scale);
+    host.start();
+
+    if (::socketpair(AF_UNIX, SOCK_STREAM, 0, g_signalPipe) != 0)
+        return fail(QStringLiteral("socketpair failed"));
+    QSocketNotifier sn(g_signalPipe[0], QSocketNotifier::Read);
+    QObject::connect(&sn, &QSocketNotifier::activated, &app, [&] { app.quit(); });
+    std::signal(SIGINT, onSignal);
+    std::signal(SIGTERM, onSignal);
+
+    std::printf("%s -> %s (%s, %d baud, time scale %g)\n", qPrintable(link), qPrintable(pty.slavePath()), qPrintable(kind),
+                baudRate, scale);
+    std::fflush(stdout);
+    const int rc = app.exec();
+    ::unlink(qPrintable(link));
+    pty.close();
+    return rc;
+}
