@@ -16,10 +16,16 @@ public:
     void u32(std::uint32_t v) { raw(v, 4); }
     void u64(std::uint64_t v) { raw(v, 8); }
     void i32(std::int32_t v) { u32(static_cast<std::uint32_t>(v)); }
-    /// Short string: u8 length then bytes, cut at 255 bytes.
+    /// Short string: u8 length then bytes, cut to at most 255 bytes. The cut
+    /// never splits a UTF-8 sequence (messages carry "µL", "×", "…").
     void str(const std::string& s)
     {
-        const std::size_t n = s.size() > 255 ? 255 : s.size();
+        std::size_t n = s.size();
+        if (n > 255) {
+            n = 255;
+            while (n > 0 && (static_cast<unsigned char>(s[n]) & 0xC0) == 0x80)
+                --n;  // s[n] continues a sequence: cut before the sequence starts
+        }
         u8(static_cast<std::uint8_t>(n));
         m_out.insert(m_out.end(), s.begin(), s.begin() + static_cast<std::ptrdiff_t>(n));
     }
