@@ -5,12 +5,13 @@
 
 namespace sim {
 
-SimAxis::SimAxis(const AxisConfig& config, bool closedLoop, std::uint64_t seed)
-    : m_cfg(config), m_closedLoop(closedLoop), m_rng(seed)
+SimAxis::SimAxis(const AxisConfig& config, bool closedLoop, std::uint64_t seed, double driveLagS)
+    : m_cfg(config), m_closedLoop(closedLoop), m_lagS(driveLagS), m_rng(seed)
 {
     m_motorSteps = std::llround(config.startPosition / config.stepSize);
     m_screw = static_cast<double>(m_motorSteps) * config.stepSize;
-    m_carriage = screwToCarriage(m_screw);
+    m_driven = m_screw * (1.0 + m_cfg.leadErrorPerUnit);  // power-up: the play sits centred
+    m_carriage = m_driven;
     m_ref = measured();
     m_prevRefForLoop = m_ref;
     m_prevMeasured = measured();
@@ -41,11 +42,15 @@ void SimAxis::holdHere()
     m_stepAccumulator = 0;
 }
 
-double SimAxis::screwToCarriage(double screw) const
+void SimAxis::takeUpPlay()
 {
-    // Lead error grows along the screw; backlash shifts the carriage by half the
-    // lost motion against the last direction of travel.
-    return screw * (1.0 + m_cfg.leadErrorPerUnit) - m_backlashSide * m_cfg.backlash;
+    // Lead error grows along the screw. The nut sits in a gap of `backlash` in the
+    // carriage: the carriage only moves once the nut presses one side of the gap,
+    // so on reversal the screw first turns through the play with the carriage
+    // standing still (a play operator, never a jump against the motion).
+    const double nominal = m_screw * (1.0 + m_cfg.leadErrorPerUnit);
+    const double half = 0.5 * m_cfg.backlash;
+    m_driven = std::clamp(m_driven, nominal - half, nominal + half);
 }
 
 double SimAxis::measured() const
@@ -84,8 +89,6 @@ void SimAxis::issueSteps(std::int64_t steps, double dtS)
         }
         m_screw = next;
     }
-    const double side = dir > 0 ? 0.5 : -0.5;
-    m_backlashSide = side;
 }
 
 void SimAxis::controlStep(const PidGains& g, int ticksPerPeriod)
@@ -122,13 +125,12 @@ void SimAxis::tick(double dtS)
         m_outputStepsS = static_cast<double>(steps) / dtS;
     }
     issueSteps(steps, dtS);
-    const double target = screwToCarriage(m_screw);
-    if (m_closedLoop) {
-        // The carriage follows the nut through the coupling and table compliance.
-        const double lagS = 0.002;
-        m_carriage += (target - m_carriage) * std::min(1.0, dtS / lagS);
+    takeUpPlay();
+    if (m_closedLoop && m_lagS > 0) {
+        // The table follows the nut through the coupling and its own compliance.
+        m_carriage += (m_driven - m_carriage) * std::min(1.0, dtS / m_lagS);
     } else {
-        m_carriage = target;
+        m_carriage = m_driven;
     }
     const double meas = measured();
     // A light low-pass so the velocity channel is not pure quantization noise.

@@ -11,7 +11,8 @@ namespace sim {
 
 class SimAxis {
 public:
-    SimAxis(const AxisConfig& config, bool closedLoop, std::uint64_t seed);
+    /// `driveLagS`: closed loop only, the table follows the nut with this first-order lag.
+    SimAxis(const AxisConfig& config, bool closedLoop, std::uint64_t seed, double driveLagS = 0.002);
 
     const AxisConfig& config() const { return m_cfg; }
 
@@ -45,17 +46,18 @@ public:
 
 private:
     void issueSteps(std::int64_t steps, double dtS);
-    double screwToCarriage(double screw) const;
+    void takeUpPlay();
 
     AxisConfig m_cfg;
     bool m_closedLoop;
+    double m_lagS;
     std::mt19937_64 m_rng;
 
     double m_ref = 0, m_refVel = 0, m_prevRefForLoop = 0;
     std::int64_t m_motorSteps = 0;  ///< steps the driver has received, from machine zero
     double m_screw = 0;             ///< nut position: motor position less slipped steps
     std::int64_t m_lostSteps = 0;
-    double m_backlashSide = 0;      ///< −1/2 … +1/2 of the backlash, follows the last direction
+    double m_driven = 0;            ///< where the nut has pushed the carriage to, through the play
     double m_carriage = 0;
     double m_prevMeasured = 0, m_measuredVel = 0;
     double m_outputStepsS = 0;

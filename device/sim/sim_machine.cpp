@@ -18,16 +18,33 @@ SimMachine::SimMachine(const MachineConfig& config) : m_cfg(config)
     std::uint64_t seed = config.seed;
     for (const auto& ac : config.axes) {
         AxisState s;
-        s.plant = std::make_unique<SimAxis>(ac, config.closedLoop, seed++);
-        s.offset = s.plant->reference();  // power-up: the counters read zero wherever the axis is
+        s.plant = std::make_unique<SimAxis>(ac, config.closedLoop, seed++, config.driveLagS);
+        s.plant->holdHere();
         s.softMin = 0;
         s.softMax = ac.travel;
-        s.plant->holdHere();
         m_axes.push_back(std::move(s));
+        zeroCounters(axisCount() - 1, 0.0);  // power-up: the counters read zero wherever the axis is
     }
 }
 
 SimMachine::~SimMachine() = default;
+
+double SimMachine::commandedLogical(int i) const { return st(i).plant->reference() - st(i).offset; }
+double SimMachine::measuredLogical(int i) const { return st(i).plant->measured() - st(i).measuredOffset; }
+
+void SimMachine::zeroCounters(int i, double logicalHere)
+{
+    AxisState& s = st(i);
+    s.offset = s.plant->reference() - logicalHere;
+    if (m_cfg.closedLoop) {
+        s.measuredOffset = s.offset;
+        return;
+    }
+    // The encoder counter is loaded with the same value, rounded to whole counts
+    // so it keeps reading multiples of its resolution.
+    const double res = s.plant->config().resolution;
+    s.measuredOffset = s.plant->measured() - std::round(logicalHere / res) * res;
+}
 
 double SimMachine::scale(int i) const
 {
@@ -52,40 +69,6 @@ proto::ErrorReply SimMachine::error(proto::ErrorCode code, int axis, double valu
     return e;
 }
 
-proto::HelloReply SimMachine::hello(std::uint32_t linkBaud) const
-{
-    proto::HelloReply h;
-    h.kind = m_cfg.kind;
-    h.capabilities = proto::CapHoming | proto::CapTelemetry | proto::CapJogVelocity;
-    if (m_cfg.closedLoop)
-        h.capabilities |= proto::CapGrating | proto::CapClosedLoopPid;
-    else
-        h.capabilities |= proto::CapEncoder;
-    if (m_cfg.zAfterXy)
-        h.capabilities |= proto::CapCoupledXyThenZ;
-    for (const auto& a : m_cfg.axes)
-        if (a.unit == proto::AxisUnit::Microlitre)
-            h.capabilities |= proto::CapPump;
-    h.controlPeriodUs = static_cast<std::uint32_t>(std::lround(m_cfg.controlPeriodS * 1e6));
-    h.maxTelemetryRateHz = static_cast<std::uint32_t>(std::lround(1.0 / kTickS));
-    h.jogWatchdogMs = proto::kJogWatchdogMs;
-    h.linkBaud = linkBaud;
-    h.model = m_cfg.model;
-    h.firmware = "benchpilot-sim 1.0";
-    for (int i = 0; i < axisCount(); ++i) {
-        const auto& c = st(i).plant->config();
-        proto::AxisInfo a;
-        a.letter = c.letter;
-        a.unit = c.unit;
-        a.travelMin = 0;
-        a.travelMax = static_cast<std::int32_t>(std::lround(c.travel * scale(i)));
-        a.maxSpeed = static_cast<std::uint32_t>(std::lround(c.maxSpeed * scale(i)));
-        a.resolution = static_cast<std::uint32_t>(std::lround(c.resolution * scale(i)));
-        h.axes.push_back(a);
-    }
-    return h;
-}
-
 void SimMachine::raiseEvent(proto::EventKind kind, int axis, const std::string& text)
 {
     proto::EventMsg e;
@@ -93,7 +76,7 @@ void SimMachine::raiseEvent(proto::EventKind kind, int axis, const std::string& 
     e.axis = axis < 0 ? proto::kNoAxis : static_cast<std::uint8_t>(axis);
     e.deviceTimeUs = timeUs();
     if (axis >= 0)
-        e.position = static_cast<std::int32_t>(std::lround((st(axis).plant->measured() - st(axis).offset) * scale(axis)));
+        e.position = static_cast<std::int32_t>(std::lround(measuredLogical(axis) * scale(axis)));
     e.text = text;
     if (m_events.size() >= kMaxEvents)
         m_events.erase(m_events.begin());
@@ -118,7 +101,7 @@ SimMachine::Result SimMachine::checkAxes(std::uint8_t mask, bool mustBeIdle) con
             continue;
         if (b >= axisCount())
             return error(proto::ErrorCode::BadAxis, -1, b, "axis index " + std::to_string(b) + " does not exist");
-        if (mustBeIdle && st(b).mode != Mode::Idle)
+        if (mustBeIdle && (st(b).mode != Mode::Idle || awaitingHoming(b)))
             return error(proto::ErrorCode::Busy, b, 0,
                          std::string("axis ") + st(b).plant->config().letter + " is still moving");
     }
@@ -183,9 +166,21 @@ SimMachine::Result SimMachine::planSegment(const std::vector<int>& axes, const s
         st(i).doneEvent = doneEvent;
         st(i).lostReported = false;
     }
-    if (m_cfg.closedLoop && axes.size() == 2) {
-        m_xyLineStart = seg.start;
-        m_xyLineDir = seg.dir;
+    if (m_cfg.closedLoop && axisCount() >= 2) {
+        // The contour channel measures against this segment's XY line; an axis the
+        // segment does not move stays where its reference is.
+        m_xyLineStart = {st(0).plant->reference(), st(1).plant->reference()};
+        m_xyLineDir = {0.0, 0.0};
+        for (std::size_t k = 0; k < seg.axes.size(); ++k)
+            if (seg.axes[k] < 2)
+                m_xyLineDir[static_cast<std::size_t>(seg.axes[k])] = seg.dir[k];
+        const double norm = std::hypot(m_xyLineDir[0], m_xyLineDir[1]);
+        if (norm < 1e-12) {
+            m_xyLineDir.clear();
+        } else {
+            m_xyLineDir[0] /= norm;
+            m_xyLineDir[1] /= norm;
+        }
     }
     if (idOut)
         *idOut = seg.id;
@@ -198,8 +193,7 @@ SimMachine::Result SimMachine::move(const proto::MoveRequest& r)
     if (auto e = checkAxes(r.axisMask, true))
         return e;
     std::vector<int> axes;
-    std::vector<double> targets;
-    double speed = 1e300;
+    std::vector<double> targets, speeds;
     std::size_t k = 0;
     for (int b = 0; b < axisCount(); ++b) {
         if (!(r.axisMask & (1u << b)))
@@ -210,12 +204,12 @@ SimMachine::Result SimMachine::move(const proto::MoveRequest& r)
         if (!r.relative && !s.homed)
             return error(proto::ErrorCode::NotHomed, b, value,
                          std::string("axis ") + c.letter + " is not homed: home it before an absolute move");
-        const double logicalNow = s.plant->reference() - s.offset;
+        const double logicalNow = commandedLogical(b);
         const double targetLogical = r.relative ? logicalNow + value : value;
         const double targetMachine = targetLogical + s.offset;
-        if (s.homed && (targetMachine < s.softMin - 1e-9 || targetMachine > s.softMax + 1e-9)) {
-            const bool low = targetMachine < s.softMin;
-            const double lim = (low ? s.softMin : s.softMax) - s.offset;
+        if (s.homed && (targetMachine < softMinMachine(b) - 1e-9 || targetMachine > softMaxMachine(b) + 1e-9)) {
+            const bool low = targetMachine < softMinMachine(b);
+            const double lim = (low ? softMinMachine(b) : softMaxMachine(b)) - s.offset;
             return error(proto::ErrorCode::SoftLimit, b, lim,
                          std::string("axis ") + c.letter + " target " + fmt(b, targetLogical) + " is beyond the "
                              + (low ? "lower" : "upper") + " soft limit " + fmt(b, lim));
@@ -226,44 +220,46 @@ SimMachine::Result SimMachine::move(const proto::MoveRequest& r)
                 return error(proto::ErrorCode::OutOfRange, b, v,
                              std::string("speed ") + fmt(b, v) + "/s is above axis " + c.letter + "'s maximum "
                                  + fmt(b, c.maxSpeed) + "/s");
-            speed = std::min(speed, v);
+            speeds.push_back(v);
         } else {
-            speed = std::min(speed, c.defaultSpeed);
+            speeds.push_back(c.defaultSpeed);
         }
         axes.push_back(b);
         targets.push_back(targetMachine);
     }
     // Analyzer: X and Y move together on a straight line, the pump on its own,
     // and Z only once XY has arrived (the seed's cross-coupled XY, Z following).
+    // Each group runs at its own axes' speed: the XY path is not slowed to Z's or
+    // the pump's default just because they are part of the same request.
     std::vector<int> xy, z, other;
-    std::vector<double> txy, tz, tother;
+    std::vector<double> txy, tz, tother, sother;
+    double vXy = 1e300, vZ = 1e300;
     for (std::size_t n = 0; n < axes.size(); ++n) {
         const char l = st(axes[n]).plant->config().letter;
         if (l == 'X' || l == 'Y') {
             xy.push_back(axes[n]);
             txy.push_back(targets[n]);
+            vXy = std::min(vXy, speeds[n]);
         } else if (l == 'Z' && m_cfg.zAfterXy) {
             z.push_back(axes[n]);
             tz.push_back(targets[n]);
+            vZ = std::min(vZ, speeds[n]);
         } else {
             other.push_back(axes[n]);
             tother.push_back(targets[n]);
+            sother.push_back(speeds[n]);
         }
     }
     int xyId = -1;
     if (!xy.empty())
-        if (auto e = planSegment(xy, txy, speed, -1, proto::EventKind::MotionDone, &xyId))
+        if (auto e = planSegment(xy, txy, vXy, -1, proto::EventKind::MotionDone, &xyId))
             return e;
-    if (!z.empty()) {
-        const double zSpeed = r.speed ? r.speed / scale(z[0]) : st(z[0]).plant->config().defaultSpeed;
-        if (auto e = planSegment(z, tz, zSpeed, xyId, proto::EventKind::MotionDone, nullptr))
+    if (!z.empty())
+        if (auto e = planSegment(z, tz, vZ, xyId, proto::EventKind::MotionDone, nullptr))
             return e;
-    }
-    for (std::size_t n = 0; n < other.size(); ++n) {
-        const double s = r.speed ? r.speed / scale(other[n]) : st(other[n]).plant->config().defaultSpeed;
-        if (auto e = planSegment({other[n]}, {tother[n]}, s, -1, proto::EventKind::MotionDone, nullptr))
+    for (std::size_t n = 0; n < other.size(); ++n)
+        if (auto e = planSegment({other[n]}, {tother[n]}, sother[n], -1, proto::EventKind::MotionDone, nullptr))
             return e;
-    }
     return std::nullopt;
 }
 
@@ -290,7 +286,7 @@ SimMachine::Result SimMachine::jogVelocity(const proto::JogVelocityRequest& r)
         const double v = r.velocities[k++] / scale(b);
         const AxisState& s = st(b);
         const auto& c = s.plant->config();
-        if (s.mode != Mode::Idle && s.mode != Mode::Jog)
+        if ((s.mode != Mode::Idle && s.mode != Mode::Jog && s.mode != Mode::Settling) || awaitingHoming(b))
             return error(proto::ErrorCode::Busy, b, 0, std::string("axis ") + c.letter + " is busy with a move or homing");
         if (std::abs(v) > c.maxSpeed + 1e-9)
             return error(proto::ErrorCode::OutOfRange, b, v,
@@ -303,6 +299,13 @@ SimMachine::Result SimMachine::jogVelocity(const proto::JogVelocityRequest& r)
             continue;
         AxisState& s = st(b);
         const double v = r.velocities[k++] / scale(b);
+        if (s.mode == Mode::Settling) {
+            // Stage: a new jog press right after a release must not be refused while
+            // the loop settles; the earlier motion is reported done first.
+            if (v == 0)
+                continue;
+            finishAxis(b, s.doneEvent);
+        }
         if (s.mode == Mode::Idle) {
             if (v == 0)
                 continue;
@@ -314,6 +317,8 @@ SimMachine::Result SimMachine::jogVelocity(const proto::JogVelocityRequest& r)
         s.accel = s.plant->config().maxAccel;
         s.lastRefreshS = timeS();
         s.expired = false;
+        if (b < 2)
+            m_xyLineDir.clear();  // no path line while jogging: contour error is the XY tracking error
     }
     return std::nullopt;
 }
@@ -322,12 +327,18 @@ SimMachine::Result SimMachine::stop(std::uint8_t mask)
 {
     if (mask == 0)
         mask = 0xFF;
+    // Homing is one sequence: stopping any axis that takes part ends it for all
+    // the stages that have not started yet.
+    bool homingStopped = false;
+    for (std::uint8_t stage : m_homeStages)
+        if (stage & mask)
+            homingStopped = true;
     std::vector<int> segIds;
     for (int i = 0; i < axisCount(); ++i) {
         if (!(mask & (1u << i)))
             continue;
         AxisState& s = st(i);
-        if (s.mode == Mode::Segment)
+        if (s.mode == Mode::Segment && std::find(segIds.begin(), segIds.end(), s.segment) == segIds.end())
             segIds.push_back(s.segment);
         if (s.mode == Mode::Jog || s.mode == Mode::Homing) {
             s.mode = Mode::Decel;
@@ -336,8 +347,10 @@ SimMachine::Result SimMachine::stop(std::uint8_t mask)
             s.accel = s.plant->config().maxAccel;
         }
     }
-    m_homeStages.clear();
-    // Axes of one segment slow down together, so a coupled XY move stops on its line.
+    if (homingStopped)
+        cancelHoming("homing stopped before this axis' turn");
+    // Axes of one segment slow down together, so a coupled XY move stops on its
+    // line. A segment that has not started yet stops at once (v = 0).
     for (int id : segIds) {
         auto it = std::find_if(m_segments.begin(), m_segments.end(), [&](const Segment& g) { return g.id == id; });
         if (it == m_segments.end())
@@ -354,32 +367,33 @@ SimMachine::Result SimMachine::stop(std::uint8_t mask)
         for (int i : it->axes) {
             AxisState& s = st(i);
             s.mode = Mode::Decel;
-            s.v = s.plant->referenceVelocity();
+            s.v = it->started ? s.plant->referenceVelocity() : 0.0;
             s.vTarget = 0;
             s.accel = stopTime > 0 ? std::abs(s.v) / stopTime : 1.0;
             s.segment = -1;
         }
         m_segments.erase(it);
+        // Z waited for this XY move to arrive; it never will.
+        cancelSegmentsAfter(id, "cancelled: the move it waited for was stopped");
     }
-    // Segments still waiting for a stopped one are dropped with it.
-    m_segments.erase(std::remove_if(m_segments.begin(), m_segments.end(),
-                                    [&](const Segment& g) {
-                                        if (g.started)
-                                            return false;
-                                        for (int i : g.axes)
-                                            if (mask & (1u << i)) {
-                                                for (int a : g.axes)
-                                                    if (st(a).segment == g.id) {
-                                                        st(a).mode = Mode::Idle;
-                                                        st(a).segment = -1;
-                                                        raiseEvent(proto::EventKind::Stopped, a, "cancelled before it started");
-                                                    }
-                                                return true;
-                                            }
-                                        return false;
-                                    }),
-                     m_segments.end());
     return std::nullopt;
+}
+
+void SimMachine::cancelSegmentsAfter(int id, const char* why)
+{
+    auto waiting = [&](const Segment& g) { return !g.started && g.after == id; };
+    for (const Segment& g : m_segments) {
+        if (!waiting(g))
+            continue;
+        for (int a : g.axes) {
+            if (st(a).segment != g.id)
+                continue;
+            st(a).mode = Mode::Idle;
+            st(a).segment = -1;
+            raiseEvent(proto::EventKind::Stopped, a, why);
+        }
+    }
+    m_segments.erase(std::remove_if(m_segments.begin(), m_segments.end(), waiting), m_segments.end());
 }
 
 SimMachine::Result SimMachine::estop()
@@ -413,11 +427,13 @@ SimMachine::Result SimMachine::reset()
 
 SimMachine::Result SimMachine::setZero(std::uint8_t mask)
 {
+    if (mask == 0)
+        mask = static_cast<std::uint8_t>((1u << axisCount()) - 1);  // AxisMaskRequest: 0 = all axes
     if (auto e = checkAxes(mask, true))
         return e;
     for (int i = 0; i < axisCount(); ++i)
         if (mask & (1u << i))
-            st(i).offset = st(i).plant->reference();
+            zeroCounters(i, 0.0);
     return std::nullopt;
 }
 
@@ -427,15 +443,18 @@ SimMachine::Result SimMachine::setLimits(const proto::SetLimitsRequest& r)
         return error(proto::ErrorCode::BadAxis, -1, r.axis, "axis index " + std::to_string(r.axis) + " does not exist");
     AxisState& s = st(r.axis);
     const auto& c = s.plant->config();
-    const double lo = r.limits.min / scale(r.axis) + s.offset;
-    const double hi = r.limits.max / scale(r.axis) + s.offset;
+    // Requests are logical; the limits are kept in home coordinates.
+    const double toHome = s.offset - s.homeOffset;
+    const double minLogical = r.limits.min / scale(r.axis), maxLogical = r.limits.max / scale(r.axis);
+    const double lo = minLogical + toHome, hi = maxLogical + toHome;
     if (!(lo < hi))
-        return error(proto::ErrorCode::OutOfRange, r.axis, lo - s.offset,
-                     std::string("axis ") + c.letter + " lower soft limit must be below the upper one");
+        return error(proto::ErrorCode::OutOfRange, r.axis, minLogical,
+                     std::string("axis ") + c.letter + " lower soft limit " + fmt(r.axis, minLogical)
+                         + " must be below the upper one " + fmt(r.axis, maxLogical));
     if (lo < -1e-9 || hi > c.travel + 1e-9)
-        return error(proto::ErrorCode::OutOfRange, r.axis, lo < -1e-9 ? lo - s.offset : hi - s.offset,
-                     std::string("axis ") + c.letter + " soft limits must lie inside the travel " + fmt(r.axis, -s.offset)
-                         + " … " + fmt(r.axis, c.travel - s.offset));
+        return error(proto::ErrorCode::OutOfRange, r.axis, lo < -1e-9 ? minLogical : maxLogical,
+                     std::string("axis ") + c.letter + " soft limits must lie inside the travel " + fmt(r.axis, -toHome)
+                         + " … " + fmt(r.axis, c.travel - toHome));
     s.softMin = lo;
     s.softMax = hi;
     return std::nullopt;
@@ -446,365 +465,12 @@ proto::LimitsReply SimMachine::limits() const
     proto::LimitsReply r;
     for (int i = 0; i < axisCount(); ++i) {
         const AxisState& s = st(i);
-        r.axes.push_back({static_cast<std::int32_t>(std::lround((s.softMin - s.offset) * scale(i))),
-                          static_cast<std::int32_t>(std::lround((s.softMax - s.offset) * scale(i)))});
+        r.axes.push_back({static_cast<std::int32_t>(std::lround((softMinMachine(i) - s.offset) * scale(i))),
+                          static_cast<std::int32_t>(std::lround((softMaxMachine(i) - s.offset) * scale(i)))});
     }
     return r;
 }
 
-SimMachine::Result SimMachine::home(std::uint8_t mask)
-{
-    if (mask == 0)
-        mask = static_cast<std::uint8_t>((1u << axisCount()) - 1);
-    if (auto e = checkAxes(mask, true))
-        return e;
-    m_homeStages.clear();
-    // The analyzer lifts Z clear of the plate before X and Y sweep to their switches.
-    std::uint8_t zMask = 0;
-    for (int i = 0; i < axisCount(); ++i)
-        if ((mask & (1u << i)) && m_cfg.zAfterXy && st(i).plant->config().letter == 'Z')
-            zMask = static_cast<std::uint8_t>(zMask | (1u << i));
-    if (zMask)
-        m_homeStages.push_back(zMask);
-    if (mask & ~zMask)
-        m_homeStages.push_back(static_cast<std::uint8_t>(mask & ~zMask));
-    for (int i = 0; i < axisCount(); ++i)
-        if (mask & (1u << i))
-            st(i).homed = false;
-    startHomingStage();
-    return std::nullopt;
-}
 
-void SimMachine::startHomingStage()
-{
-    if (m_homeStages.empty())
-        return;
-    const std::uint8_t mask = m_homeStages.front();
-    for (int i = 0; i < axisCount(); ++i) {
-        if (!(mask & (1u << i)))
-            continue;
-        AxisState& s = st(i);
-        s.mode = Mode::Homing;
-        s.phase = s.plant->homeSwitch() ? HomePhase::BackOff : HomePhase::SeekFast;
-        s.phaseStart = s.plant->reference();
-        s.v = 0;
-        s.accel = s.plant->config().maxAccel;
-        s.vTarget = s.phase == HomePhase::SeekFast ? -s.plant->config().homeFastSpeed : s.plant->config().homeSlowSpeed * 2;
-    }
-}
-
-// ---- the tick -----------------------------------------------------------------
-
-void SimMachine::finishAxis(int i, proto::EventKind kind, const std::string& text)
-{
-    AxisState& s = st(i);
-    s.mode = Mode::Idle;
-    s.segment = -1;
-    s.v = s.vTarget = 0;
-    raiseEvent(kind, i, text);
-    if (!m_cfg.closedLoop && !s.lostReported) {
-        const double err = s.plant->measured() - s.plant->reference();
-        if (std::abs(err) > m_cfg.lostStepTolerance) {
-            s.lostReported = true;
-            raiseEvent(proto::EventKind::LostSteps, i,
-                 std::string("axis ") + s.plant->config().letter + " encoder is " + fmt(i, err) + " off the command");
-        }
-    }
-}
-
-void SimMachine::stopAxisHard(int i)
-{
-    AxisState& s = st(i);
-    s.plant->holdHere();
-    s.v = s.vTarget = 0;
-    if (s.mode == Mode::Segment) {
-        // The whole coupled segment halts so the other axes do not run on alone.
-        const int id = s.segment;
-        auto it = std::find_if(m_segments.begin(), m_segments.end(), [&](const Segment& g) { return g.id == id; });
-        if (it != m_segments.end()) {
-            for (int a : it->axes)
-                if (a != i) {
-                    st(a).plant->holdHere();
-                    finishAxis(a, proto::EventKind::Stopped, "stopped with its coupled axis");
-                }
-            m_segments.erase(it);
-        }
-        m_segments.erase(std::remove_if(m_segments.begin(), m_segments.end(),
-                                        [&](const Segment& g) { return g.after == id; }),
-                         m_segments.end());
-    }
-    s.mode = Mode::Idle;
-    s.segment = -1;
-}
-
-void SimMachine::checkSwitches(int i)
-{
-    AxisState& s = st(i);
-    if (s.mode == Mode::Homing || s.mode == Mode::Idle)
-        return;
-    const double v = s.plant->referenceVelocity();
-    const auto& c = s.plant->config();
-    if (s.plant->homeSwitch() && v < 0) {
-        stopAxisHard(i);
-        raiseEvent(proto::EventKind::LimitHit, i, std::string("axis ") + c.letter + " hit its home switch");
-    } else if (s.plant->limitSwitch() && v > 0) {
-        stopAxisHard(i);
-        raiseEvent(proto::EventKind::LimitHit, i, std::string("axis ") + c.letter + " hit its limit switch");
-    }
-}
-
-void SimMachine::tickSegments()
-{
-    std::vector<int> finished;
-    for (auto& g : m_segments) {
-        if (!g.started) {
-            const bool waiting = g.after >= 0
-                && std::any_of(m_segments.begin(), m_segments.end(), [&](const Segment& o) { return o.id == g.after; });
-            if (waiting)
-                continue;
-            g.started = true;
-        }
-        g.t += kTickS;
-        const motion::ProfileSample p = g.profile->at(g.t);
-        for (std::size_t k = 0; k < g.axes.size(); ++k)
-            st(g.axes[k]).plant->setReference(g.start[k] + g.dir[k] * p.s, g.dir[k] * p.v);
-        if (g.t >= g.profile->duration())
-            finished.push_back(g.id);
-    }
-    for (int id : finished) {
-        auto it = std::find_if(m_segments.begin(), m_segments.end(), [&](const Segment& g) { return g.id == id; });
-        if (it == m_segments.end())
-            continue;
-        const Segment g = std::move(*it);
-        m_segments.erase(it);
-        for (std::size_t k = 0; k < g.axes.size(); ++k) {
-            const int i = g.axes[k];
-            st(i).plant->setReference(g.start[k] + g.dir[k] * g.profile->distance(), 0);
-            if (m_cfg.closedLoop) {
-                st(i).mode = Mode::Settling;
-                st(i).settleStartS = timeS();
-                st(i).settledS = 0;
-            } else {
-                finishAxis(i, g.doneEvent);
-            }
-        }
-    }
-}
-
-void SimMachine::tickVelocityModes()
-{
-    for (int i = 0; i < axisCount(); ++i) {
-        AxisState& s = st(i);
-        if (s.mode != Mode::Jog && s.mode != Mode::Decel && s.mode != Mode::Homing)
-            continue;
-        const auto& c = s.plant->config();
-        if (s.mode == Mode::Jog && !s.expired && timeS() - s.lastRefreshS > kJogWatchdogTripS) {
-            // The host went quiet (frozen GUI, pulled cable): stop within the budget.
-            s.expired = true;
-            s.vTarget = 0;
-            s.accel = std::max(c.maxAccel, std::abs(s.v) / kJogStopBudgetS);
-            raiseEvent(proto::EventKind::JogExpired, i, std::string("axis ") + c.letter + " jog not refreshed: stopped");
-        }
-        double target = s.vTarget;
-        const double pos = s.plant->reference();
-        if (s.mode == Mode::Jog && s.homed) {
-            // Never coast through a soft limit: the speed is capped by the distance left.
-            const double room = s.v >= 0 ? s.softMax - pos : pos - s.softMin;
-            const double vCap = std::sqrt(2.0 * s.accel * std::max(0.0, room));
-            if (target > 0 && s.v >= 0)
-                target = std::min(target, vCap);
-            if (target < 0 && s.v <= 0)
-                target = std::max(target, -vCap);
-        }
-        const double dv = s.accel * kTickS;
-        if (s.v < target)
-            s.v = std::min(target, s.v + dv);
-        else if (s.v > target)
-            s.v = std::max(target, s.v - dv);
-        double next = pos + s.v * kTickS;
-        if (s.mode == Mode::Jog && s.homed)
-            next = std::clamp(next, s.softMin, s.softMax);
-        s.plant->setReference(next, s.v);
-        if (s.mode == Mode::Homing) {
-            tickHoming(i);
-            continue;
-        }
-        if (s.v == 0 && s.vTarget == 0) {
-            if (m_cfg.closedLoop) {
-                s.doneEvent = s.mode == Mode::Decel ? proto::EventKind::Stopped : proto::EventKind::MotionDone;
-                s.mode = Mode::Settling;
-                s.settleStartS = timeS();
-                s.settledS = 0;
-            } else {
-                finishAxis(i, s.mode == Mode::Decel ? proto::EventKind::Stopped : proto::EventKind::MotionDone);
-            }
-        }
-    }
-}
-
-void SimMachine::tickHoming(int i)
-{
-    AxisState& s = st(i);
-    const auto& c = s.plant->config();
-    const double pos = s.plant->reference();
-    switch (s.phase) {
-    case HomePhase::SeekFast:
-        if (s.plant->homeSwitch()) {
-            s.plant->holdHere();
-            s.v = 0;
-            s.phase = HomePhase::BackOff;
-            s.phaseStart = s.plant->reference();
-            s.vTarget = c.homeSlowSpeed * 2;
-        } else if (s.phaseStart - pos > c.travel + c.limitSwitchMargin + 2 * c.hardStopMargin) {
-            s.mode = Mode::Idle;
-            s.fault = true;
-            s.plant->holdHere();
-            m_homeStages.clear();
-            raiseEvent(proto::EventKind::Fault, i, std::string("axis ") + c.letter + " home switch not found over the whole travel");
-        }
-        break;
-    case HomePhase::BackOff:
-        if (!s.plant->homeSwitch() && pos - s.phaseStart > c.homeBackoff) {
-            s.vTarget = -c.homeSlowSpeed;
-            s.v = 0;
-            s.phase = HomePhase::SeekSlow;
-        }
-        break;
-    case HomePhase::SeekSlow:
-        if (s.plant->homeSwitch()) {
-            s.plant->holdHere();
-            s.v = s.vTarget = 0;
-            // Latch: the switch edge becomes homeSwitchAt in the new coordinates,
-            // give or take the switch's repeatability.
-            const double noise = c.switchRepeatability > 0 ? s.plant->uniform(-c.switchRepeatability, c.switchRepeatability) : 0;
-            s.offset = s.plant->reference() - c.homeSwitchAt + noise;
-            s.homed = true;
-            s.mode = Mode::Idle;
-            planSegment({i}, {s.offset}, c.homeFastSpeed, -1, proto::EventKind::HomeDone, nullptr);
-        }
-        break;
-    }
-}
-
-void SimMachine::tickSettling(int i)
-{
-    AxisState& s = st(i);
-    if (std::abs(s.plant->followingError()) <= m_cfg.inPositionWindow)
-        s.settledS += kTickS;
-    else
-        s.settledS = 0;
-    if (s.settledS >= m_cfg.settleTimeS) {
-        finishAxis(i, s.doneEvent);
-    } else if (timeS() - s.settleStartS > 2.0) {
-        finishAxis(i, s.doneEvent, "arrived outside the in-position window");
-    }
-}
-
-void SimMachine::tick()
-{
-    ++m_ticks;
-    tickSegments();
-    tickVelocityModes();
-    for (int i = 0; i < axisCount(); ++i) {
-        if (m_cfg.closedLoop && m_ticks % static_cast<std::uint64_t>(m_ticksPerControl) == 0)
-            st(i).plant->controlStep(m_cfg.gains, m_ticksPerControl);
-        st(i).plant->tick(kTickS);
-        if (st(i).mode == Mode::Settling)
-            tickSettling(i);
-        checkSwitches(i);
-    }
-    // Homing stages run in order: the next begins when every axis of this one is homed.
-    if (!m_homeStages.empty()) {
-        const std::uint8_t mask = m_homeStages.front();
-        bool done = true;
-        for (int i = 0; i < axisCount(); ++i)
-            if ((mask & (1u << i)) && (st(i).mode != Mode::Idle || !st(i).homed))
-                done = false;
-        if (done) {
-            m_homeStages.erase(m_homeStages.begin());
-            startHomingStage();
-        }
-    }
-}
-
-// ---- readouts -------------------------------------------------------------------
-
-proto::StatusReply SimMachine::status() const
-{
-    proto::StatusReply r;
-    r.deviceFlags = static_cast<std::uint8_t>((m_estop ? proto::DeviceEStop : 0));
-    r.deviceTimeUs = timeUs();
-    for (int i = 0; i < axisCount(); ++i) {
-        const AxisState& s = st(i);
-        proto::AxisStatus a;
-        a.commanded = static_cast<std::int32_t>(std::lround((s.plant->reference() - s.offset) * scale(i)));
-        a.measured = static_cast<std::int32_t>(std::lround((s.plant->measured() - s.offset) * scale(i)));
-        std::uint16_t f = 0;
-        if (s.homed)
-            f |= proto::AxisHomed;
-        if (s.mode != Mode::Idle)
-            f |= proto::AxisMoving;
-        if (s.mode == Mode::Homing || (!m_homeStages.empty() && !s.homed && (m_homeStages.front() & (1u << i))))
-            f |= proto::AxisHoming;
-        if (s.mode == Mode::Jog)
-            f |= proto::AxisJogging;
-        if (s.plant->homeSwitch())
-            f |= proto::AxisHomeSwitch;
-        if (s.plant->limitSwitch())
-            f |= proto::AxisLimitSwitch;
-        if (s.fault) {
-            f |= proto::AxisFault;
-            r.deviceFlags |= proto::DeviceFault;
-        }
-        a.flags = f;
-        r.axes.push_back(a);
-    }
-    // Axes waiting on a later homing stage are part of the homing too.
-    for (std::size_t n = 1; n < m_homeStages.size(); ++n)
-        for (int i = 0; i < axisCount(); ++i)
-            if (m_homeStages[n] & (1u << i))
-                r.axes[static_cast<std::size_t>(i)].flags |= proto::AxisHoming | proto::AxisMoving;
-    return r;
-}
-
-double SimMachine::contourErrorMm() const
-{
-    if (axisCount() < 2)
-        return 0;
-    const double mx = st(0).plant->measured(), my = st(1).plant->measured();
-    if (m_xyLineDir.size() == 2) {
-        // Distance from the last commanded XY line: what a stitched image would see as drift.
-        const double dx = mx - m_xyLineStart[0], dy = my - m_xyLineStart[1];
-        return std::abs(dx * m_xyLineDir[1] - dy * m_xyLineDir[0]);
-    }
-    return std::hypot(mx - st(0).plant->reference(), my - st(1).plant->reference());
-}
-
-bool SimMachine::channelExists(const proto::ChannelRef& c) const
-{
-    if (c.kind == proto::ChannelKind::ContourError)
-        return c.axis == proto::kNoAxis && m_cfg.closedLoop;
-    return c.axis < axisCount();
-}
-
-std::int32_t SimMachine::channelValue(const proto::ChannelRef& c) const
-{
-    if (c.kind == proto::ChannelKind::ContourError)
-        return static_cast<std::int32_t>(std::lround(contourErrorMm() * 1e6));
-    const AxisState& s = st(c.axis);
-    const SimAxis& p = *s.plant;
-    const double k = scale(c.axis);
-    double v = 0;
-    switch (c.kind) {
-    case proto::ChannelKind::Commanded: v = (p.reference() - s.offset) * k; break;
-    case proto::ChannelKind::Measured: v = (p.measured() - s.offset) * k; break;
-    case proto::ChannelKind::Velocity: v = p.measuredVelocity() * k; break;
-    case proto::ChannelKind::FollowingError: v = p.followingError() * k; break;
-    case proto::ChannelKind::ControllerOutput: v = p.controllerOutputStepsS(); break;
-    case proto::ChannelKind::Switches: v = (p.homeSwitch() ? 1 : 0) | (p.limitSwitch() ? 2 : 0); break;
-    case proto::ChannelKind::ContourError: break;
-    }
-    return static_cast<std::int32_t>(std::clamp(std::lround(v), -2147483647L, 2147483647L));
-}
 
 } // namespace sim

@@ -57,6 +57,9 @@ public:
     SimAxis& axis(int i) { return *m_axes[static_cast<std::size_t>(i)].plant; }
     const SimAxis& axis(int i) const { return *m_axes[static_cast<std::size_t>(i)].plant; }
     double logicalOffset(int i) const { return m_axes[static_cast<std::size_t>(i)].offset; }
+    /// Host coordinates (mm or µL): the step counter and the encoder/grating counter.
+    double commandedLogical(int i) const;
+    double measuredLogical(int i) const;
     bool homed(int i) const { return m_axes[static_cast<std::size_t>(i)].homed; }
     bool estopActive() const { return m_estop; }
     void setGains(const PidGains& g) { m_cfg.gains = g; }
@@ -77,8 +80,15 @@ private:
         double phaseStart = 0;    ///< machine position when the phase began
         bool homed = false;
         bool fault = false;
-        double offset = 0;        ///< machine − logical
-        double softMin = 0, softMax = 0;  ///< machine coordinates
+        double offset = 0;        ///< machine − logical, for the reference (step counter)
+        /// Machine − logical for the encoder/grating counter. The stage's grating is
+        /// its reference, so there both are equal; the analyzer's encoder is zeroed
+        /// with the step counter, at which instant lead error and play may differ.
+        double measuredOffset = 0;
+        /// Soft limits in home coordinates (logical as the last homing left them), so
+        /// they stay put on the machine through a set-zero and reset on re-homing.
+        double softMin = 0, softMax = 0;
+        double homeOffset = 0;    ///< machine reference where home coordinates are 0
         double settledS = 0;
         double settleStartS = 0;
         proto::EventKind doneEvent = proto::EventKind::MotionDone;
@@ -102,10 +112,17 @@ private:
     proto::ErrorReply error(proto::ErrorCode code, int axis, double value, const std::string& text) const;
     std::string fmt(int axis, double value) const;
     Result checkAxes(std::uint8_t mask, bool mustBeIdle) const;
+    bool awaitingHoming(int i) const;  ///< in a homing stage that has not started yet
+    double softMinMachine(int i) const { return st(i).homeOffset + st(i).softMin; }
+    double softMaxMachine(int i) const { return st(i).homeOffset + st(i).softMax; }
+    void zeroCounters(int i, double logicalHere);
     Result planSegment(const std::vector<int>& axes, const std::vector<double>& targetsMachine, double speed,
                        int after, proto::EventKind doneEvent, int* idOut);
     void finishAxis(int i, proto::EventKind kind, const std::string& text = {});
     void stopAxisHard(int i);
+    void cancelSegmentsAfter(int id, const char* why);
+    void advanceHomingStages();
+    void cancelHoming(const char* why);
     void startHomingStage();
     void tickSegments();
     void tickVelocityModes();

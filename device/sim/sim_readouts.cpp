@@ -1,0 +1,122 @@
+// What the simulated instrument reports: HELLO, status and telemetry channels,
+// all in logical (host) coordinates and wire units.
+#include "device/sim/sim_machine.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sim {
+
+proto::HelloReply SimMachine::hello(std::uint32_t linkBaud) const
+{
+    proto::HelloReply h;
+    h.kind = m_cfg.kind;
+    h.capabilities = proto::CapHoming | proto::CapTelemetry | proto::CapJogVelocity;
+    if (m_cfg.closedLoop)
+        h.capabilities |= proto::CapGrating | proto::CapClosedLoopPid;
+    else
+        h.capabilities |= proto::CapEncoder;
+    if (m_cfg.zAfterXy)
+        h.capabilities |= proto::CapCoupledXyThenZ;
+    for (const auto& a : m_cfg.axes)
+        if (a.unit == proto::AxisUnit::Microlitre)
+            h.capabilities |= proto::CapPump;
+    h.controlPeriodUs = static_cast<std::uint32_t>(std::lround(m_cfg.controlPeriodS * 1e6));
+    h.maxTelemetryRateHz = static_cast<std::uint32_t>(std::lround(1.0 / kTickS));
+    h.jogWatchdogMs = proto::kJogWatchdogMs;
+    h.linkBaud = linkBaud;
+    h.model = m_cfg.model;
+    h.firmware = "benchpilot-sim 1.0";
+    for (int i = 0; i < axisCount(); ++i) {
+        const auto& c = st(i).plant->config();
+        proto::AxisInfo a;
+        a.letter = c.letter;
+        a.unit = c.unit;
+        a.travelMin = 0;
+        a.travelMax = static_cast<std::int32_t>(std::lround(c.travel * scale(i)));
+        a.maxSpeed = static_cast<std::uint32_t>(std::lround(c.maxSpeed * scale(i)));
+        a.resolution = static_cast<std::uint32_t>(std::lround(c.resolution * scale(i)));
+        h.axes.push_back(a);
+    }
+    return h;
+}
+
+proto::StatusReply SimMachine::status() const
+{
+    proto::StatusReply r;
+    r.deviceFlags = static_cast<std::uint8_t>((m_estop ? proto::DeviceEStop : 0));
+    r.deviceTimeUs = timeUs();
+    for (int i = 0; i < axisCount(); ++i) {
+        const AxisState& s = st(i);
+        proto::AxisStatus a;
+        a.commanded = static_cast<std::int32_t>(std::lround(commandedLogical(i) * scale(i)));
+        a.measured = static_cast<std::int32_t>(std::lround(measuredLogical(i) * scale(i)));
+        std::uint16_t f = 0;
+        if (s.homed)
+            f |= proto::AxisHomed;
+        if (s.mode != Mode::Idle)
+            f |= proto::AxisMoving;
+        if (s.mode == Mode::Homing || (!m_homeStages.empty() && !s.homed && (m_homeStages.front() & (1u << i))))
+            f |= proto::AxisHoming;
+        if (s.mode == Mode::Jog)
+            f |= proto::AxisJogging;
+        if (s.plant->homeSwitch())
+            f |= proto::AxisHomeSwitch;
+        if (s.plant->limitSwitch())
+            f |= proto::AxisLimitSwitch;
+        if (s.fault) {
+            f |= proto::AxisFault;
+            r.deviceFlags |= proto::DeviceFault;
+        }
+        a.flags = f;
+        r.axes.push_back(a);
+    }
+    // Axes waiting on a later homing stage are part of the homing too.
+    for (std::size_t n = 1; n < m_homeStages.size(); ++n)
+        for (int i = 0; i < axisCount(); ++i)
+            if (m_homeStages[n] & (1u << i))
+                r.axes[static_cast<std::size_t>(i)].flags |= proto::AxisHoming | proto::AxisMoving;
+    return r;
+}
+
+double SimMachine::contourErrorMm() const
+{
+    if (axisCount() < 2)
+        return 0;
+    const double mx = st(0).plant->measured(), my = st(1).plant->measured();
+    if (m_xyLineDir.size() == 2) {
+        // Distance from the last commanded XY line: what a stitched image would see as drift.
+        const double dx = mx - m_xyLineStart[0], dy = my - m_xyLineStart[1];
+        return std::abs(dx * m_xyLineDir[1] - dy * m_xyLineDir[0]);
+    }
+    return std::hypot(mx - st(0).plant->reference(), my - st(1).plant->reference());
+}
+
+bool SimMachine::channelExists(const proto::ChannelRef& c) const
+{
+    if (c.kind == proto::ChannelKind::ContourError)
+        return c.axis == proto::kNoAxis && m_cfg.closedLoop;
+    return c.axis < axisCount();
+}
+
+std::int32_t SimMachine::channelValue(const proto::ChannelRef& c) const
+{
+    if (c.kind == proto::ChannelKind::ContourError)
+        return static_cast<std::int32_t>(std::lround(contourErrorMm() * 1e6));
+    const AxisState& s = st(c.axis);
+    const SimAxis& p = *s.plant;
+    const double k = scale(c.axis);
+    double v = 0;
+    switch (c.kind) {
+    case proto::ChannelKind::Commanded: v = commandedLogical(c.axis) * k; break;
+    case proto::ChannelKind::Measured: v = measuredLogical(c.axis) * k; break;
+    case proto::ChannelKind::Velocity: v = p.measuredVelocity() * k; break;
+    case proto::ChannelKind::FollowingError: v = (measuredLogical(c.axis) - commandedLogical(c.axis)) * k; break;
+    case proto::ChannelKind::ControllerOutput: v = p.controllerOutputStepsS(); break;
+    case proto::ChannelKind::Switches: v = (p.homeSwitch() ? 1 : 0) | (p.limitSwitch() ? 2 : 0); break;
+    case proto::ChannelKind::ContourError: break;
+    }
+    return static_cast<std::int32_t>(std::clamp(std::lround(v), -2147483647L, 2147483647L));
+}
+
+} // namespace sim

@@ -1,0 +1,597 @@
+// The simulated analyzer (reference firmware, motion side) driven directly through
+// sim::SimMachine: power-up, homing order, accuracy, soft limits, the coupled XY
+// line with Z following, switches, lost steps, E-stop and stop.
+#include "device/sim/sim_machine.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+namespace {
+
+using proto::ErrorCode;
+using proto::EventKind;
+
+constexpr int kX = 0, kY = 1, kZ = 2, kP = 3;
+constexpr double kNmPerMm = 1e6;
+
+proto::WireUnits nm(double mm) { return static_cast<proto::WireUnits>(std::lround(mm * kNmPerMm)); }
+
+/// Logical positions the host sees, in mm (µL for the pump).
+double measuredMm(const sim::SimMachine& m, int i) { return m.status().axes[static_cast<std::size_t>(i)].measured / 1e6; }
+double commandedMm(const sim::SimMachine& m, int i) { return m.status().axes[static_cast<std::size_t>(i)].commanded / 1e6; }
+double measuredUl(const sim::SimMachine& m) { return m.status().axes[kP].measured / 1e3; }
+bool moving(const sim::SimMachine& m, int i) { return m.status().axes[static_cast<std::size_t>(i)].flags & proto::AxisMoving; }
+bool anyMoving(const sim::SimMachine& m)
+{
+    for (const auto& a : m.status().axes)
+        if (a.flags & proto::AxisMoving)
+            return true;
+    return false;
+}
+
+/// Collects every event the machine emits while the test runs it.
+struct Runner {
+    sim::SimMachine& m;
+    std::vector<proto::EventMsg> events;
+
+    void run(double seconds, const std::function<void()>& eachTick = {})
+    {
+        const auto ticks = static_cast<long>(std::lround(seconds / sim::SimMachine::kTickS));
+        for (long k = 0; k < ticks; ++k) {
+            m.tick();
+            if (eachTick)
+                eachTick();
+            take();
+        }
+    }
+    /// Runs until nothing moves; false if that takes longer than `timeoutS`.
+    bool runUntilIdle(double timeoutS, const std::function<void()>& eachTick = {})
+    {
+        const auto ticks = static_cast<long>(std::lround(timeoutS / sim::SimMachine::kTickS));
+        for (long k = 0; k < ticks; ++k) {
+            m.tick();
+            if (eachTick)
+                eachTick();
+            take();
+            if (k % 10 == 0 && !anyMoving(m))
+                return true;
+        }
+        return !anyMoving(m);
+    }
+    void take()
+    {
+        auto e = m.takeEvents();
+        events.insert(events.end(), e.begin(), e.end());
+    }
+    const proto::EventMsg* find(EventKind kind, int axis) const
+    {
+        for (const auto& e : events)
+            if (e.kind == kind && (axis < 0 || e.axis == axis))
+                return &e;
+        return nullptr;
+    }
+    int count(EventKind kind, int axis = -1) const
+    {
+        return static_cast<int>(std::count_if(events.begin(), events.end(), [&](const proto::EventMsg& e) {
+            return e.kind == kind && (axis < 0 || e.axis == axis);
+        }));
+    }
+};
+
+proto::MoveRequest absMove(std::uint8_t mask, std::vector<double> targetsMm, double speedMmS = 0)
+{
+    proto::MoveRequest r;
+    r.relative = false;
+    r.axisMask = mask;
+    r.speed = static_cast<std::uint32_t>(std::lround(speedMmS * kNmPerMm));
+    for (double t : targetsMm)
+        r.targets.push_back(nm(t));
+    return r;
+}
+proto::MoveRequest relMove(std::uint8_t mask, std::vector<double> deltasMm, double speedMmS = 0)
+{
+    auto r = absMove(mask, std::move(deltasMm), speedMmS);
+    r.relative = true;
+    return r;
+}
+
+constexpr std::uint8_t bit(int i) { return static_cast<std::uint8_t>(1u << i); }
+
+/// An analyzer that has been homed (all axes), with its events discarded.
+struct SimAnalyzerHomed : ::testing::Test {
+    sim::SimMachine m{sim::analyzerConfig()};
+    Runner r{m, {}};
+    void SetUp() override
+    {
+        ASSERT_FALSE(m.home(0));
+        ASSERT_TRUE(r.runUntilIdle(60));
+        for (int i = 0; i < m.axisCount(); ++i)
+            ASSERT_TRUE(m.homed(i)) << "axis " << i;
+        r.events.clear();
+    }
+};
+
+} // namespace
+
+TEST(SimAnalyzer, PowersUpUnhomedWithCountersAtZero)
+{
+    sim::SimMachine m(sim::analyzerConfig());
+    const auto s = m.status();
+    ASSERT_EQ(s.axes.size(), 4u);
+    for (std::size_t i = 0; i < s.axes.size(); ++i) {
+        EXPECT_FALSE(s.axes[i].flags & proto::AxisHomed) << i;
+        EXPECT_FALSE(s.axes[i].flags & proto::AxisMoving) << i;
+        // The step counter reads zero wherever the axis happens to be.
+        EXPECT_EQ(s.axes[i].commanded, 0) << i;
+        // The encoder differs from the step count only by screw lead error and a count.
+        EXPECT_LE(std::abs(s.axes[i].measured), 20000) << i;
+    }
+    EXPECT_EQ(s.deviceFlags, 0);
+}
+
+TEST(SimAnalyzer, AbsoluteMoveUnhomedIsRefusedNamingTheAxis)
+{
+    sim::SimMachine m(sim::analyzerConfig());
+    const auto e = m.move(absMove(bit(kY), {10}));
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, ErrorCode::NotHomed);
+    EXPECT_EQ(e->axis, kY);
+    EXPECT_NE(e->message.find("axis Y"), std::string::npos) << e->message;
+    EXPECT_NE(e->message.find("not homed"), std::string::npos) << e->message;
+    // Refused means nothing moves.
+    Runner r{m, {}};
+    r.run(0.2);
+    EXPECT_EQ(commandedMm(m, kY), 0);
+}
+
+TEST(SimAnalyzer, RelativeMoveIsAllowedUnhomed)
+{
+    sim::SimMachine m(sim::analyzerConfig());
+    Runner r{m, {}};
+    ASSERT_FALSE(m.move(relMove(bit(kX), {5})));
+    EXPECT_TRUE(moving(m, kX));
+    ASSERT_TRUE(r.runUntilIdle(5));
+    EXPECT_NEAR(commandedMm(m, kX), 5.0, 0.003);
+    EXPECT_NEAR(measuredMm(m, kX), 5.0, 0.01);
+    EXPECT_TRUE(r.find(EventKind::MotionDone, kX));
+}
+
+TEST(SimAnalyzer, HomingEndsHomedAtZeroOnEveryAxis)
+{
+    sim::SimMachine m(sim::analyzerConfig());
+    Runner r{m, {}};
+    ASSERT_FALSE(m.home(0));
+    ASSERT_TRUE(r.runUntilIdle(60));
+    const auto s = m.status();
+    for (int i = 0; i < m.axisCount(); ++i) {
+        const auto& a = s.axes[static_cast<std::size_t>(i)];
+        const double resolution = m.hello(0).axes[static_cast<std::size_t>(i)].resolution;
+        EXPECT_TRUE(a.flags & proto::AxisHomed) << i;
+        EXPECT_FALSE(a.flags & (proto::AxisMoving | proto::AxisHoming)) << i;
+        EXPECT_EQ(a.commanded, 0) << i;
+        EXPECT_LE(std::abs(a.measured), 3 * resolution) << "axis " << i << " measured " << a.measured;
+        EXPECT_TRUE(r.find(EventKind::HomeDone, i)) << i;
+    }
+}
+
+TEST(SimAnalyzer, HomesZBeforeXAndY)
+{
+    sim::SimMachine m(sim::analyzerConfig());
+    Runner r{m, {}};
+    const double x0 = commandedMm(m, kX), y0 = commandedMm(m, kY);
+    double xFirstMovedS = -1, yFirstMovedS = -1;
+    ASSERT_FALSE(m.home(0));
+    // While Z homes, X and Y report that they take part in the homing…
+    EXPECT_TRUE(m.status().axes[kX].flags & proto::AxisHoming);
+    ASSERT_TRUE(r.runUntilIdle(60, [&] {
+        if (xFirstMovedS < 0 && commandedMm(m, kX) != x0)
+            xFirstMovedS = m.timeS();
+        if (yFirstMovedS < 0 && commandedMm(m, kY) != y0)
+            yFirstMovedS = m.timeS();
+    }));
+    // …but do not move until Z's HomeDone.
+    const auto* zDone = r.find(EventKind::HomeDone, kZ);
+    const auto* xDone = r.find(EventKind::HomeDone, kX);
+    const auto* yDone = r.find(EventKind::HomeDone, kY);
+    ASSERT_TRUE(zDone && xDone && yDone);
+    ASSERT_GT(xFirstMovedS, 0);
+    ASSERT_GT(yFirstMovedS, 0);
+    EXPECT_GE(xFirstMovedS * 1e6, static_cast<double>(zDone->deviceTimeUs));
+    EXPECT_GE(yFirstMovedS * 1e6, static_cast<double>(zDone->deviceTimeUs));
+    EXPECT_LT(zDone->deviceTimeUs, xDone->deviceTimeUs);
+    EXPECT_LT(zDone->deviceTimeUs, yDone->deviceTimeUs);
+}
+
+TEST(SimAnalyzer, AxesWaitingForTheirHomingStageAreBusy)
+{
+    sim::SimMachine m(sim::analyzerConfig());
+    Runner r{m, {}};
+    ASSERT_FALSE(m.home(0));
+    r.run(0.05);
+    // X waits for Z: a jog or relative move now would fight the homing that follows.
+    const auto e = m.move(relMove(bit(kX), {1}));
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, ErrorCode::Busy);
+    proto::JogVelocityRequest j;
+    j.axisMask = bit(kY);
+    j.velocities = {nm(5)};
+    const auto ej = m.jogVelocity(j);
+    ASSERT_TRUE(ej);
+    EXPECT_EQ(ej->code, ErrorCode::Busy);
+}
+
+TEST_F(SimAnalyzerHomed, MoveAccuracyWithinTableOneTolerance)
+{
+    struct Case {
+        int axis;
+        double target;
+    };
+    // Seed 000 Table 1 allows 0.4 mm; the encoder reads lead error and backlash only.
+    for (const Case c : {Case{kX, 150.0}, Case{kX, 20.5}, Case{kY, 199.0}, Case{kY, 3.25}, Case{kZ, 80.0}, Case{kZ, 7.0}}) {
+        ASSERT_FALSE(m.move(absMove(bit(c.axis), {c.target})));
+        ASSERT_TRUE(r.runUntilIdle(20));
+        EXPECT_NEAR(commandedMm(m, c.axis), c.target, 1e-6);
+        EXPECT_NEAR(measuredMm(m, c.axis), c.target, 0.05) << "axis " << c.axis << " to " << c.target;
+    }
+    EXPECT_EQ(r.count(EventKind::LostSteps), 0);
+}
+
+TEST_F(SimAnalyzerHomed, PumpMovesInMicrolitres)
+{
+    proto::MoveRequest mv;
+    mv.axisMask = bit(kP);
+    mv.targets = {500000};  // nL
+    ASSERT_FALSE(m.move(mv));
+    ASSERT_TRUE(r.runUntilIdle(20));
+    EXPECT_NEAR(measuredUl(m), 500.0, 0.1);
+}
+
+TEST_F(SimAnalyzerHomed, SoftLimitRefusalGivesReasonAndLimit)
+{
+    auto e = m.move(absMove(bit(kX), {200.5}));
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, ErrorCode::SoftLimit);
+    EXPECT_EQ(e->axis, kX);
+    EXPECT_EQ(e->value, nm(200));
+    EXPECT_NE(e->message.find("upper soft limit"), std::string::npos) << e->message;
+    EXPECT_NE(e->message.find("200.000 mm"), std::string::npos) << e->message;
+
+    // A relative move that would end beyond the lower limit is refused the same way.
+    e = m.move(relMove(bit(kZ), {-1}));
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, ErrorCode::SoftLimit);
+    EXPECT_EQ(e->value, 0);
+    EXPECT_NE(e->message.find("lower soft limit"), std::string::npos) << e->message;
+
+    // Refused moves leave nothing moving.
+    EXPECT_FALSE(anyMoving(m));
+}
+
+TEST_F(SimAnalyzerHomed, CoupledXyMoveRunsOnTheSeedLine)
+{
+    // Seed 000: target (30, 40), tan θ = 4/3. Both axes start and end together and
+    // the commanded point stays on the line from the origin.
+    double xStartS = -1, yStartS = -1, xEndS = -1, yEndS = -1, maxOffLineCmd = 0, maxOffLineMeas = 0;
+    ASSERT_FALSE(m.move(absMove(bit(kX) | bit(kY), {30, 40})));
+    ASSERT_TRUE(r.runUntilIdle(10, [&] {
+        const double cx = commandedMm(m, kX), cy = commandedMm(m, kY);
+        const double mx = measuredMm(m, kX), my = measuredMm(m, kY);
+        if (xStartS < 0 && cx != 0)
+            xStartS = m.timeS();
+        if (yStartS < 0 && cy != 0)
+            yStartS = m.timeS();
+        if (xEndS < 0 && std::abs(cx - 30) < 1e-6)
+            xEndS = m.timeS();
+        if (yEndS < 0 && std::abs(cy - 40) < 1e-6)
+            yEndS = m.timeS();
+        // Distance from the line 4x − 3y = 0.
+        maxOffLineCmd = std::max(maxOffLineCmd, std::abs(4 * cx - 3 * cy) / 5);
+        maxOffLineMeas = std::max(maxOffLineMeas, std::abs(4 * mx - 3 * my) / 5);
+    }));
+    EXPECT_NEAR(xStartS, yStartS, 1e-3);
+    EXPECT_NEAR(xEndS, yEndS, 1e-3);
+    EXPECT_LT(maxOffLineCmd, 0.001);  // nm rounding only
+    EXPECT_LT(maxOffLineMeas, 0.03);  // encoder counts, lead error, backlash
+    EXPECT_NEAR(measuredMm(m, kX), 30, 0.05);
+    EXPECT_NEAR(measuredMm(m, kY), 40, 0.05);
+    RecordProperty("xy_line_max_offset_measured_um", std::to_string(maxOffLineMeas * 1e3));
+}
+
+TEST_F(SimAnalyzerHomed, ZStartsOnlyAfterXyArrived)
+{
+    ASSERT_FALSE(m.move(absMove(bit(kX) | bit(kY), {10, 10})));
+    ASSERT_TRUE(r.runUntilIdle(10));
+    r.events.clear();
+    double zStartS = -1, xyArrivedS = -1;
+    ASSERT_FALSE(m.move(absMove(bit(kX) | bit(kY) | bit(kZ), {60, 90, 50})));
+    ASSERT_TRUE(r.runUntilIdle(20, [&] {
+        if (xyArrivedS < 0 && std::abs(commandedMm(m, kX) - 60) < 1e-6 && std::abs(commandedMm(m, kY) - 90) < 1e-6)
+            xyArrivedS = m.timeS();
+        if (zStartS < 0 && commandedMm(m, kZ) != 0)
+            zStartS = m.timeS();
+    }));
+    ASSERT_GT(xyArrivedS, 0);
+    ASSERT_GT(zStartS, 0);
+    EXPECT_GE(zStartS, xyArrivedS);
+    const auto* xDone = r.find(EventKind::MotionDone, kX);
+    const auto* zDone = r.find(EventKind::MotionDone, kZ);
+    ASSERT_TRUE(xDone && zDone);
+    EXPECT_GE(zStartS * 1e6, static_cast<double>(xDone->deviceTimeUs));
+    EXPECT_NEAR(measuredMm(m, kZ), 50, 0.05);
+}
+
+TEST_F(SimAnalyzerHomed, XyRunsAtItsOwnSpeedWhenZIsInTheSameRequest)
+{
+    // Z's slower default (30 mm/s) must not slow the XY path (50 mm/s).
+    double peakXyMmS = 0;
+    ASSERT_FALSE(m.move(absMove(bit(kX) | bit(kY) | bit(kZ), {60, 80, 20})));
+    ASSERT_TRUE(r.runUntilIdle(20, [&] {
+        peakXyMmS = std::max(peakXyMmS, std::hypot(m.axis(kX).referenceVelocity(), m.axis(kY).referenceVelocity()));
+    }));
+    EXPECT_NEAR(peakXyMmS, sim::analyzerConfig().axes[kX].defaultSpeed, 0.5);
+}
+
+TEST(SimAnalyzer, MoveIntoLimitSwitchStopsTheAxisWithLimitHit)
+{
+    sim::SimMachine m(sim::analyzerConfig());
+    Runner r{m, {}};
+    // Unhomed, a relative move may run past the travel: the switch must stop it.
+    ASSERT_FALSE(m.move(relMove(bit(kX), {300})));
+    ASSERT_TRUE(r.runUntilIdle(20));
+    const auto* hit = r.find(EventKind::LimitHit, kX);
+    ASSERT_TRUE(hit);
+    EXPECT_NE(hit->text.find("limit switch"), std::string::npos) << hit->text;
+    EXPECT_TRUE(m.status().axes[kX].flags & proto::AxisLimitSwitch);
+    // Stopped at the switch (200.5 machine), well short of the hard stop.
+    EXPECT_LT(m.axis(kX).carriage(), 200.5 + 0.5);
+    EXPECT_EQ(m.axis(kX).lostSteps(), 0);
+    EXPECT_EQ(r.count(EventKind::MotionDone, kX), 0);
+    // The axis can back off the switch.
+    ASSERT_FALSE(m.move(relMove(bit(kX), {-5})));
+    ASSERT_TRUE(r.runUntilIdle(5));
+    EXPECT_FALSE(m.status().axes[kX].flags & proto::AxisLimitSwitch);
+}
+
+TEST(SimAnalyzer, MoveIntoHomeSwitchStopsTheAxisWithLimitHit)
+{
+    sim::SimMachine m(sim::analyzerConfig());
+    Runner r{m, {}};
+    ASSERT_FALSE(m.move(relMove(bit(kY), {-300})));
+    ASSERT_TRUE(r.runUntilIdle(20));
+    const auto* hit = r.find(EventKind::LimitHit, kY);
+    ASSERT_TRUE(hit);
+    EXPECT_NE(hit->text.find("home switch"), std::string::npos) << hit->text;
+    EXPECT_TRUE(m.status().axes[kY].flags & proto::AxisHomeSwitch);
+    EXPECT_GT(m.axis(kY).carriage(), -0.5 - 0.5);
+}
+
+TEST(SimAnalyzer, LimitHitOnXyCancelsTheZThatWaitedForIt)
+{
+    sim::SimMachine m(sim::analyzerConfig());
+    Runner r{m, {}};
+    ASSERT_FALSE(m.move(relMove(bit(kX) | bit(kZ), {300, 5})));
+    ASSERT_TRUE(r.runUntilIdle(20)) << "Z must not stay busy after its XY move was cut short";
+    EXPECT_TRUE(r.find(EventKind::LimitHit, kX));
+    EXPECT_EQ(commandedMm(m, kZ), 0) << "XY never arrived, so Z must not have moved";
+    // Z takes new commands.
+    EXPECT_FALSE(m.move(relMove(bit(kZ), {1})));
+}
+
+TEST(SimAnalyzer, OverloadLosesStepsAndReportsThem)
+{
+    sim::SimMachine m(sim::analyzerConfig());
+    Runner r{m, {}};
+    m.axis(kX).setLoadFactor(2);
+    ASSERT_FALSE(m.move(relMove(bit(kX), {20})));
+    ASSERT_TRUE(r.runUntilIdle(10));
+    EXPECT_NEAR(commandedMm(m, kX), 20, 0.003);
+    EXPECT_LT(measuredMm(m, kX), 15) << "half the steps should have slipped";
+    EXPECT_GT(m.axis(kX).lostSteps(), 1000);
+    const auto* lost = r.find(EventKind::LostSteps, kX);
+    ASSERT_TRUE(lost);
+    EXPECT_NE(lost->text.find("axis X"), std::string::npos) << lost->text;
+}
+
+TEST(SimAnalyzer, ReversalTakesUpBacklashWithoutJumpingBackwards)
+{
+    sim::SimMachine m(sim::analyzerConfig());
+    Runner r{m, {}};
+    ASSERT_FALSE(m.move(relMove(bit(kX), {10})));
+    ASSERT_TRUE(r.runUntilIdle(5));
+    const double before = m.axis(kX).carriage();
+    double maxCarriage = before;
+    ASSERT_FALSE(m.move(relMove(bit(kX), {-5})));
+    ASSERT_TRUE(r.runUntilIdle(5, [&] { maxCarriage = std::max(maxCarriage, m.axis(kX).carriage()); }));
+    // Reversing, the screw first turns through the play: the carriage must never
+    // move against the commanded direction.
+    EXPECT_LE(maxCarriage, before + 1e-9);
+    // After the play is taken up the carriage is short of the screw by the backlash.
+    const double backlashMm = sim::analyzerConfig().axes[kX].backlash;
+    EXPECT_NEAR(before - m.axis(kX).carriage(), 5 * (1 + 1.5e-4) - backlashMm, 0.003);
+}
+
+TEST_F(SimAnalyzerHomed, EStopHaltsAtOnceAndLatchesUntilReset)
+{
+    ASSERT_FALSE(m.move(absMove(bit(kX) | bit(kY), {150, 150})));
+    r.run(0.5);
+    ASSERT_TRUE(moving(m, kX));
+    ASSERT_FALSE(m.estop());
+    const double xAt = m.axis(kX).reference(), yAt = m.axis(kY).reference();
+    const double carriageAt = m.axis(kX).carriage();
+    EXPECT_TRUE(m.estopActive());
+    EXPECT_TRUE(m.status().deviceFlags & proto::DeviceEStop);
+    r.take();
+    EXPECT_TRUE(r.find(EventKind::EStop, -1));
+    r.run(0.5);
+    // The reference froze at the instant of the E-stop and the carriage stopped with it.
+    EXPECT_EQ(m.axis(kX).reference(), xAt);
+    EXPECT_EQ(m.axis(kY).reference(), yAt);
+    EXPECT_NEAR(m.axis(kX).carriage(), carriageAt, 0.003);
+    EXPECT_FALSE(anyMoving(m));
+
+    for (auto res : {m.move(relMove(bit(kX), {1})), m.home(0), m.jogStep({kX, nm(1), 0})}) {
+        ASSERT_TRUE(res);
+        EXPECT_EQ(res->code, ErrorCode::EStopActive);
+    }
+    proto::JogVelocityRequest j;
+    j.axisMask = bit(kX);
+    j.velocities = {nm(5)};
+    const auto ej = m.jogVelocity(j);
+    ASSERT_TRUE(ej);
+    EXPECT_EQ(ej->code, ErrorCode::EStopActive);
+
+    ASSERT_FALSE(m.reset());
+    EXPECT_FALSE(m.estopActive());
+    r.run(0.01);
+    EXPECT_TRUE(r.find(EventKind::Reset, -1));
+    // Position was kept through the stop: the axes are still homed and may move.
+    EXPECT_TRUE(m.homed(kX));
+    ASSERT_FALSE(m.move(absMove(bit(kX), {100})));
+    ASSERT_TRUE(r.runUntilIdle(10));
+    EXPECT_NEAR(measuredMm(m, kX), 100, 0.05);
+}
+
+TEST_F(SimAnalyzerHomed, StopDeceleratesACoupledMoveOnItsLine)
+{
+    ASSERT_FALSE(m.move(absMove(bit(kX) | bit(kY), {90, 120})));
+    r.run(0.6);
+    ASSERT_TRUE(moving(m, kX));
+    const double vBefore = std::hypot(m.axis(kX).referenceVelocity(), m.axis(kY).referenceVelocity());
+    ASSERT_GT(vBefore, 10);
+    ASSERT_FALSE(m.stop(0));
+    double maxOffLine = 0, maxStep = 0, prevX = commandedMm(m, kX);
+    ASSERT_TRUE(r.runUntilIdle(2, [&] {
+        const double cx = commandedMm(m, kX), cy = commandedMm(m, kY);
+        maxOffLine = std::max(maxOffLine, std::abs(4 * cx - 3 * cy) / 5);  // line through (0,0) and (90,120)
+        maxStep = std::max(maxStep, std::abs(cx - prevX));
+        prevX = cx;
+    }));
+    EXPECT_LT(maxOffLine, 0.001);
+    // Decelerated, not dropped dead: the axis kept moving after the stop, and it
+    // did not reach the target.
+    EXPECT_GT(commandedMm(m, kX), 0);
+    EXPECT_LT(commandedMm(m, kX), 90);
+    EXPECT_TRUE(r.find(EventKind::Stopped, kX));
+    EXPECT_TRUE(r.find(EventKind::Stopped, kY));
+    EXPECT_EQ(r.count(EventKind::MotionDone), 0);
+}
+
+TEST_F(SimAnalyzerHomed, StoppingXyCancelsAWaitingZ)
+{
+    ASSERT_FALSE(m.move(absMove(bit(kX) | bit(kY) | bit(kZ), {100, 100, 50})));
+    r.run(0.3);
+    ASSERT_FALSE(m.stop(bit(kX) | bit(kY)));
+    ASSERT_TRUE(r.runUntilIdle(3));
+    EXPECT_EQ(commandedMm(m, kZ), 0) << "XY never arrived: Z must not start";
+    EXPECT_TRUE(r.find(EventKind::Stopped, kZ));
+}
+
+TEST_F(SimAnalyzerHomed, SetZeroMakesTheCurrentPositionZero)
+{
+    ASSERT_FALSE(m.move(absMove(bit(kX), {50})));
+    ASSERT_TRUE(r.runUntilIdle(5));
+    ASSERT_FALSE(m.setZero(bit(kX)));
+    EXPECT_EQ(commandedMm(m, kX), 0);
+    EXPECT_NEAR(measuredMm(m, kX), 0, 0.01);
+    // The soft limits stay where they are on the machine, so they shift in the new coordinates.
+    const auto l = m.limits();
+    EXPECT_NEAR(l.axes[kX].min, nm(-50), 10);
+    EXPECT_NEAR(l.axes[kX].max, nm(150), 10);
+    ASSERT_FALSE(m.move(absMove(bit(kX), {-20})));
+    ASSERT_TRUE(r.runUntilIdle(5));
+    EXPECT_NEAR(measuredMm(m, kX), -20, 0.05);
+    const auto e = m.move(absMove(bit(kX), {-51}));
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, ErrorCode::SoftLimit);
+}
+
+TEST(SimAnalyzer, SetZeroWithEmptyMaskZeroesEveryAxis)
+{
+    // AxisMaskRequest: 0 = all axes.
+    sim::SimMachine m(sim::analyzerConfig());
+    Runner r{m, {}};
+    ASSERT_FALSE(m.move(relMove(bit(kX) | bit(kY), {3, 4})));
+    ASSERT_TRUE(r.runUntilIdle(5));
+    ASSERT_FALSE(m.setZero(0));
+    EXPECT_EQ(commandedMm(m, kX), 0);
+    EXPECT_EQ(commandedMm(m, kY), 0);
+}
+
+TEST_F(SimAnalyzerHomed, SetAndGetLimitsValidates)
+{
+    proto::SetLimitsRequest q;
+    q.axis = kY;
+    q.limits = {nm(10), nm(150)};
+    ASSERT_FALSE(m.setLimits(q));
+    const auto l = m.limits();
+    ASSERT_EQ(l.axes.size(), 4u);
+    EXPECT_EQ(l.axes[kY].min, nm(10));
+    EXPECT_EQ(l.axes[kY].max, nm(150));
+    EXPECT_EQ(l.axes[kX].max, nm(200));
+    EXPECT_EQ(l.axes[kP].max, 1000000);  // nL
+
+    auto e = m.move(absMove(bit(kY), {160}));
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, ErrorCode::SoftLimit);
+    EXPECT_EQ(e->value, nm(150));
+    EXPECT_NE(e->message.find("150.000 mm"), std::string::npos) << e->message;
+
+    q.limits = {nm(100), nm(50)};  // min above max
+    e = m.setLimits(q);
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, ErrorCode::OutOfRange);
+    EXPECT_NE(e->message.find("axis Y"), std::string::npos);
+
+    q.limits = {nm(-5), nm(50)};  // outside the travel
+    e = m.setLimits(q);
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, ErrorCode::OutOfRange);
+    EXPECT_EQ(e->value, nm(-5));
+
+    q.limits = {nm(0), nm(201)};
+    e = m.setLimits(q);
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->value, nm(201));
+
+    q.axis = 7;
+    e = m.setLimits(q);
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, ErrorCode::BadAxis);
+    // Failed requests changed nothing.
+    EXPECT_EQ(m.limits().axes[kY].max, nm(150));
+}
+
+TEST_F(SimAnalyzerHomed, MoveToItsOwnPositionFinishesAtOnce)
+{
+    const auto e = m.move(absMove(bit(kX), {0}));
+    ASSERT_FALSE(e) << e->message;
+    r.run(0.001);
+    EXPECT_TRUE(r.find(EventKind::MotionDone, kX));
+    EXPECT_FALSE(anyMoving(m));
+}
+
+TEST_F(SimAnalyzerHomed, SpeedAboveTheAxisMaximumIsRefused)
+{
+    const auto e = m.move(absMove(bit(kZ), {10}, 80));
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, ErrorCode::OutOfRange);
+    EXPECT_EQ(e->axis, kZ);
+    EXPECT_NE(e->message.find("axis Z"), std::string::npos) << e->message;
+}
+
+TEST_F(SimAnalyzerHomed, SecondMoveOnABusyAxisIsRefused)
+{
+    ASSERT_FALSE(m.move(absMove(bit(kX), {100})));
+    const auto e = m.move(absMove(bit(kX), {10}));
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, ErrorCode::Busy);
+    // Another axis is free.
+    proto::MoveRequest pump;
+    pump.axisMask = bit(kP);
+    pump.targets = {10000};  // nL
+    const auto ep = m.move(pump);
+    EXPECT_FALSE(ep) << ep->message;
+}
