@@ -310,6 +310,9 @@ void InstrumentClient::onFrame(const proto::Frame& f)
             ev.deviceTimeUs = e->deviceTimeUs;
             ev.text = QString::fromStdString(e->text);
             ev.hostTime = QDateTime::currentDateTime();
+            // Homing moves the coordinate origin, and with it the limits' numbers.
+            if (ev.kind == proto::EventKind::HomeDone)
+                refreshLimits();
             emit eventReceived(ev);
         }
         return;
@@ -427,17 +430,7 @@ void InstrumentClient::onHello(const std::optional<RequestError>& err, const pro
         if (--*remaining == 0 && m_state == LinkState::Identified)
             setState(LinkState::Ready);
     };
-    send(proto::MsgType::GetLimits, {}, [this, oneDone](const auto& e, const auto& p) {
-        if (!e)
-            if (auto l = proto::decodeLimitsReply(p)) {
-                for (int i = 0; i < m_limits.size() && i < int(l->axes.size()); ++i) {
-                    const double k = m_identity.axes[i].wireScale();
-                    m_limits[i] = {l->axes[size_t(i)].min / k, l->axes[size_t(i)].max / k};
-                }
-                emit limitsChanged();
-            }
-        oneDone();
-    });
+    refreshLimits(oneDone);
     m_statusPending = true;
     send(proto::MsgType::Status, {}, [this, oneDone](const auto& e, const auto& p) {
         m_statusPending = false;
@@ -476,6 +469,22 @@ void InstrumentClient::applyStatus(const proto::Bytes& payload)
         r.fault = a.flags & proto::AxisFault;
     }
     emit statusChanged(m_status);
+}
+
+void InstrumentClient::refreshLimits(std::function<void()> then)
+{
+    send(proto::MsgType::GetLimits, {}, [this, then](const auto& e, const auto& p) {
+        if (!e)
+            if (auto l = proto::decodeLimitsReply(p)) {
+                for (int i = 0; i < m_limits.size() && i < int(l->axes.size()); ++i) {
+                    const double k = m_identity.axes[i].wireScale();
+                    m_limits[i] = {l->axes[size_t(i)].min / k, l->axes[size_t(i)].max / k};
+                }
+                emit limitsChanged();
+            }
+        if (then)
+            then();
+    });
 }
 
 void InstrumentClient::pollStatus()
@@ -652,7 +661,12 @@ void InstrumentClient::reset(Callback done)
 
 void InstrumentClient::setZero(quint8 axisMask, Callback done)
 {
-    send(proto::MsgType::SetZero, proto::encode(proto::AxisMaskRequest{axisMask}), wrap(std::move(done), tr("set zero")));
+    auto inner = wrap(std::move(done), tr("set zero"));
+    send(proto::MsgType::SetZero, proto::encode(proto::AxisMaskRequest{axisMask}), [this, inner](const auto& e, const auto& p) {
+        if (!e)
+            refreshLimits();
+        inner(e, p);
+    });
 }
 
 void InstrumentClient::setSoftLimits(int axis, double min, double max, Callback done)

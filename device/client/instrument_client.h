@@ -115,6 +115,7 @@ private:
     void onHello(const std::optional<RequestError>& err, const proto::Bytes& payload);
     void pollStatus();
     void applyStatus(const proto::Bytes& payload);
+    void refreshLimits(std::function<void()> then = {});
     void refreshJogs();
     void linkGone(const QString& why);
     RequestError deviceError(const proto::ErrorReply& e) const;

@@ -1,0 +1,304 @@
+#include "main_window.h"
+
+#include "instrument_session.h"
+#include "widgets/connection_bar.h"
+#include "widgets/event_log.h"
+#include "widgets/jog_screen.h"
+#include "widgets/message_banner.h"
+#if __has_include("widgets/profiles_screen.h")
+#include "widgets/profiles_screen.h"
+#define BP_HAVE_PROFILES_SCREEN 1
+#endif
+
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSettings>
+#include <QShortcut>
+#include <QStackedWidget>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QTimer>
+#include <QVBoxLayout>
+
+namespace app {
+
+MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMainWindow(parent), m_options(options)
+{
+    setWindowTitle(tr("BenchPilot"));
+    m_sessions[0] = new InstrumentSession(proto::DeviceKind::Analyzer, tr("Analyzer"), this);
+    m_sessions[1] = new InstrumentSession(proto::DeviceKind::Stage, tr("Stage"), this);
+
+    auto* central = new QWidget(this);
+    auto* v = new QVBoxLayout(central);
+    v->setContentsMargins(6, 6, 6, 0);
+
+    // Connections on the left, the E-stop on the right: both visible on every screen.
+    auto* top = new QHBoxLayout;
+    auto* bars = new QVBoxLayout;
+    m_bars[0] = new ui::ConnectionBar(tr("Analyzer"), central);
+    m_bars[1] = new ui::ConnectionBar(tr("Stage"), central);
+    bars->addWidget(m_bars[0]);
+    bars->addWidget(m_bars[1]);
+    top->addLayout(bars, 1);
+    m_reset = new QPushButton(tr("Reset E-stop"), central);
+    m_reset->setToolTip(tr("Clear the E-stop latch on both instruments (axes stay where they are)"));
+    m_reset->setMinimumHeight(48);
+    m_reset->setVisible(false);
+    m_estop = new QPushButton(tr("E-STOP\n(Esc)"), central);
+    m_estop->setObjectName(QStringLiteral("estop"));
+    m_estop->setToolTip(tr("Stop all motion on both instruments at once (Esc, from any screen)"));
+    m_estop->setMinimumSize(120, 56);
+    m_estop->setStyleSheet(QStringLiteral("#estop { background:#c62828; color:white; font-weight:bold; font-size:15px;"
+                                          " border:3px solid #7f0000; border-radius:8px; }"
+                                          "#estop:pressed { background:#8e0000; }"));
+    m_estop->setFocusPolicy(Qt::NoFocus);
+    top->addWidget(m_reset);
+    top->addWidget(m_estop);
+    v->addLayout(top);
+
+    m_banner = new ui::MessageBanner(central);
+    v->addWidget(m_banner);
+
+    auto* body = new QHBoxLayout;
+    m_nav = new QListWidget(central);
+    m_nav->setFixedWidth(130);
+    m_nav->setFocusPolicy(Qt::NoFocus);
+    m_stack = new QStackedWidget(central);
+    body->addWidget(m_nav);
+    body->addWidget(m_stack, 1);
+    v->addLayout(body, 1);
+    setCentralWidget(central);
+
+    m_jogTabs = new QTabWidget;
+    for (int i = 0; i < 2; ++i) {
+        m_jog[i] = new ui::JogScreen(m_sessions[i]->client());
+        if (m_options.confirmDialogs)
+            m_jog[i]->setConfirm([this](const QString& q) { return confirm(q); });
+        connect(m_jog[i], &ui::JogScreen::problem, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); });
+        m_jogTabs->addTab(m_jog[i], m_sessions[i]->name());
+    }
+    connect(m_jogTabs, &QTabWidget::currentChanged, this, [this](int i) { m_jog[i]->setFocus(); });
+    addScreen(QStringLiteral("jog"), tr("Jog"), m_jogTabs);
+#ifdef BP_HAVE_PROFILES_SCREEN
+    addScreen(QStringLiteral("profiles"), tr("Profiles"), new ui::ProfilesScreen);
+#endif
+    connect(m_nav, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
+    m_nav->setCurrentRow(0);
+
+    m_log = new ui::EventLog;
+    auto* dock = new QDockWidget(tr("Event log"), this);
+    dock->setObjectName(QStringLiteral("eventLogDock"));
+    dock->setWidget(m_log);
+    dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+    addDockWidget(Qt::BottomDockWidgetArea, dock);
+
+    for (int i = 0; i < 2; ++i) {
+        m_statusLabels[i] = new QLabel(this);
+        statusBar()->addWidget(m_statusLabels[i], 1);
+    }
+    for (int i = 0; i < 2; ++i)
+        wireSession(i, m_bars[i]);
+    auto* statsTimer = new QTimer(this);
+    connect(statsTimer, &QTimer::timeout, this, &MainWindow::updateStatusBar);
+    statsTimer->start(500);
+
+    auto* esc = new QShortcut(QKeySequence(Qt::Key_Escape), this);
+    esc->setContext(Qt::ApplicationShortcut);
+    connect(esc, &QShortcut::activated, this, &MainWindow::emergencyStop);
+    connect(m_estop, &QPushButton::clicked, this, &MainWindow::emergencyStop);
+    connect(m_reset, &QPushButton::clicked, this, &MainWindow::resetEStop);
+    for (int i = 1; i <= 9 && i <= m_nav->count(); ++i) {
+        auto* sc = new QShortcut(QKeySequence(Qt::CTRL | static_cast<Qt::Key>(Qt::Key_0 + i)), this);
+        connect(sc, &QShortcut::activated, this, [this, i] { m_nav->setCurrentRow(i - 1); });
+    }
+
+    resize(1400, 860);
+    ui::ConnectionChoice choices[2];
+    if (m_options.persistSettings)
+        loadSettings();
+    for (int i = 0; i < 2; ++i)
+        choices[i] = m_bars[i]->choice();
+    if (m_options.autoConnect)
+        for (int i = 0; i < 2; ++i)
+            m_sessions[i]->connectTo(choices[i]);
+    updateStatusBar();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::addScreen(const QString& name, const QString& title, QWidget* screen)
+{
+    m_screenNames << name;
+    m_nav->addItem(title);
+    m_stack->addWidget(screen);
+}
+
+QStringList MainWindow::screenNames() const { return m_screenNames; }
+
+bool MainWindow::showScreen(const QString& name)
+{
+    const int i = m_screenNames.indexOf(name);
+    if (i < 0)
+        return false;
+    m_nav->setCurrentRow(i);
+    return true;
+}
+
+void MainWindow::showInstrument(int index) { m_jogTabs->setCurrentIndex(index); }
+
+bool MainWindow::confirm(const QString& question)
+{
+    return QMessageBox::question(this, tr("Confirm move"), question, QMessageBox::Yes | QMessageBox::Cancel,
+                                 QMessageBox::Cancel)
+        == QMessageBox::Yes;
+}
+
+void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
+{
+    InstrumentSession* s = m_sessions[i];
+    dev::InstrumentClient* c = s->client();
+    connect(bar, &ui::ConnectionBar::connectRequested, this, [s](const ui::ConnectionChoice& ch) { s->connectTo(ch); });
+    connect(bar, &ui::ConnectionBar::disconnectRequested, this, [s] { s->disconnectLink(); });
+    auto showState = [this, i, c, bar] {
+        const auto& id = c->identity();
+        const QString who = c->state() == dev::LinkState::Ready || c->state() == dev::LinkState::Identified
+            ? QStringLiteral("%1 · %2 · %3").arg(id.model, id.firmware, c->linkDescription())
+            : c->linkDescription();
+        bar->showState(c->state(), who);
+        updateStatusBar();
+        updateEStopUi();
+        (void)i;
+    };
+    connect(c, &dev::InstrumentClient::stateChanged, this, showState);
+    connect(c, &dev::InstrumentClient::stateChanged, this, [this, s](dev::LinkState st) {
+        if (st == dev::LinkState::Lost)
+            m_banner->show(ui::MessageBanner::Level::Error,
+                           tr("%1: link lost. Motion on the instrument stops by itself; reconnect when the cable is back.").arg(s->name()));
+        m_log->addNote(s->name(), tr("link"), dev::linkStateName(st), st == dev::LinkState::Lost);
+    });
+    connect(c, &dev::InstrumentClient::statusChanged, this, [this] { updateEStopUi(); });
+    connect(c, &dev::InstrumentClient::linkError, this, [this, s](const QString& m) {
+        m_banner->show(ui::MessageBanner::Level::Error, QStringLiteral("%1: %2").arg(s->name(), m));
+        m_log->addNote(s->name(), tr("link error"), m, true);
+    });
+    connect(c, &dev::InstrumentClient::requestFailed, this, [this, s](const dev::RequestError& e) {
+        m_banner->show(ui::MessageBanner::Level::Error, QStringLiteral("%1: %2").arg(s->name(), e.message));
+        m_log->addNote(s->name(), tr("refused"), e.message, true);
+    });
+    connect(c, &dev::InstrumentClient::eventReceived, this, [this, s, c](const dev::DeviceEvent& e) {
+        m_log->addEvent(s->name(), c->identity(), e);
+        if (e.kind == proto::EventKind::LimitHit || e.kind == proto::EventKind::Fault || e.kind == proto::EventKind::LostSteps)
+            m_banner->show(ui::MessageBanner::Level::Warning, QStringLiteral("%1: %2").arg(s->name(), e.text));
+    });
+    showState();
+}
+
+void MainWindow::updateStatusBar()
+{
+    for (int i = 0; i < 2; ++i) {
+        dev::InstrumentClient* c = m_sessions[i]->client();
+        const dev::LinkStats st = c->stats();
+        QString text = QStringLiteral("%1: %2").arg(m_sessions[i]->name(), dev::linkStateName(c->state()));
+        if (c->state() == dev::LinkState::Ready)
+            text += QStringLiteral(" · %1").arg(c->identity().model);
+        const quint64 bad = st.crcErrors + st.malformed + st.oversize;
+        if (bad || st.droppedBytes)
+            text += tr(" · %1 bad frames, %2 bytes skipped").arg(bad).arg(st.droppedBytes);
+        if (st.retransmits || st.timeouts)
+            text += tr(" · %1 retries, %2 timeouts").arg(st.retransmits).arg(st.timeouts);
+        if (st.lostSamples)
+            text += tr(" · %1 samples lost").arg(st.lostSamples);
+        m_statusLabels[i]->setText(text);
+    }
+}
+
+void MainWindow::updateEStopUi()
+{
+    bool latched = false;
+    for (auto* s : m_sessions)
+        latched = latched || (s->client()->isReady() && s->client()->status().estop);
+    m_reset->setVisible(latched);
+}
+
+void MainWindow::emergencyStop()
+{
+    // Both instruments, whichever screen is showing: the operator should not have to think.
+    for (auto* j : m_jog)
+        j->clearFocus();
+    for (auto* s : m_sessions)
+        if (s->client()->isReady())
+            s->client()->estop();
+    m_banner->show(ui::MessageBanner::Level::Error, tr("E-STOP: all motion halted. Check the machine, then press Reset E-stop."));
+}
+
+void MainWindow::resetEStop()
+{
+    for (auto* s : m_sessions)
+        if (s->client()->isReady() && s->client()->status().estop)
+            s->client()->reset();
+    m_banner->show(ui::MessageBanner::Level::Info, tr("E-stop cleared. Re-home the axes if anything was moved by hand."));
+}
+
+void MainWindow::changeEvent(QEvent* event)
+{
+    // A hold whose key-up went to another application must not keep the machine moving.
+    if (event->type() == QEvent::ActivationChange && !isActiveWindow())
+        for (auto* s : m_sessions)
+            s->client()->stopAllJogs();
+    QMainWindow::changeEvent(event);
+}
+
+void MainWindow::loadSettings()
+{
+    QSettings st;
+    restoreGeometry(st.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(st.value(QStringLiteral("window/state")).toByteArray());
+    const char* keys[2] = {"analyzer", "stage"};
+    for (int i = 0; i < 2; ++i) {
+        st.beginGroup(QStringLiteral("connection/%1").arg(QLatin1String(keys[i])));
+        ui::ConnectionChoice c;
+        c.simulator = st.value(QStringLiteral("simulator"), true).toBool();
+        c.port = st.value(QStringLiteral("port")).toString();
+        c.baud = st.value(QStringLiteral("baud"), 115200).toInt();
+        st.endGroup();
+        m_bars[i]->setChoice(c);
+        m_jog[i]->setSpeedFraction(st.value(QStringLiteral("jog/%1/speed").arg(QLatin1String(keys[i])), 0.2).toDouble());
+    }
+    m_nav->setCurrentRow(std::clamp(st.value(QStringLiteral("window/screen"), 0).toInt(), 0, m_nav->count() - 1));
+    m_jogTabs->setCurrentIndex(std::clamp(st.value(QStringLiteral("window/instrument"), 0).toInt(), 0, 1));
+}
+
+void MainWindow::saveSettings()
+{
+    QSettings st;
+    st.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    st.setValue(QStringLiteral("window/state"), saveState());
+    st.setValue(QStringLiteral("window/screen"), m_nav->currentRow());
+    st.setValue(QStringLiteral("window/instrument"), m_jogTabs->currentIndex());
+    const char* keys[2] = {"analyzer", "stage"};
+    for (int i = 0; i < 2; ++i) {
+        const ui::ConnectionChoice c = m_sessions[i]->choice();
+        st.beginGroup(QStringLiteral("connection/%1").arg(QLatin1String(keys[i])));
+        st.setValue(QStringLiteral("simulator"), c.simulator);
+        st.setValue(QStringLiteral("port"), c.port);
+        st.setValue(QStringLiteral("baud"), c.baud);
+        st.endGroup();
+        st.setValue(QStringLiteral("jog/%1/speed").arg(QLatin1String(keys[i])), m_jog[i]->speedFraction());
+    }
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    for (auto* s : m_sessions)
+        s->client()->stopAllJogs();
+    if (m_options.persistSettings)
+        saveSettings();
+    QMainWindow::closeEvent(event);
+}
+
+} // namespace app

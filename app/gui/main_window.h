@@ -1,0 +1,78 @@
+#pragma once
+// The composition root's window: both instruments' connections, the screens,
+// E-stop on every screen, banner, event log and status bar.
+#include <QMainWindow>
+
+class QListWidget;
+class QPushButton;
+class QStackedWidget;
+class QTabWidget;
+class QLabel;
+
+namespace ui {
+class ConnectionBar;
+class EventLog;
+class JogScreen;
+class MessageBanner;
+} // namespace ui
+
+namespace app {
+
+class InstrumentSession;
+
+struct MainWindowOptions {
+    bool persistSettings = true;  ///< false for screenshots and tests: read nothing, write nothing
+    bool confirmDialogs = true;   ///< false in tests: far moves go ahead without asking
+    bool autoConnect = true;      ///< connect both instruments at start
+};
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(const MainWindowOptions& options = {}, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    InstrumentSession* analyzer() { return m_sessions[0]; }
+    InstrumentSession* stage() { return m_sessions[1]; }
+    /// Screen names are the lower-case navigation words: "jog", "profiles", …
+    QStringList screenNames() const;
+    bool showScreen(const QString& name);
+    void showInstrument(int index);  ///< 0 analyzer, 1 stage, on screens that have a choice
+    ui::JogScreen* jogScreen(int index) { return m_jog[index]; }
+    ui::MessageBanner* banner() { return m_banner; }
+    ui::EventLog* eventLog() { return m_log; }
+    QPushButton* estopButton() { return m_estop; }
+
+public slots:
+    void emergencyStop();
+    void resetEStop();
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+    void changeEvent(QEvent* event) override;
+
+private:
+    void addScreen(const QString& name, const QString& title, QWidget* screen);
+    void wireSession(int index, ui::ConnectionBar* bar);
+    void updateStatusBar();
+    void updateEStopUi();
+    void loadSettings();
+    void saveSettings();
+    bool confirm(const QString& question);
+
+    MainWindowOptions m_options;
+    InstrumentSession* m_sessions[2];
+    ui::ConnectionBar* m_bars[2];
+    ui::JogScreen* m_jog[2];
+    QTabWidget* m_jogTabs;
+    QListWidget* m_nav;
+    QStackedWidget* m_stack;
+    QStringList m_screenNames;
+    ui::MessageBanner* m_banner;
+    ui::EventLog* m_log;
+    QPushButton* m_estop;
+    QPushButton* m_reset;
+    QLabel* m_statusLabels[2];
+};
+
+} // namespace app

@@ -1,0 +1,18 @@
+#pragma once
+#include <QString>
+
+namespace app {
+
+struct ScreenshotRequest {
+    QString file;
+    QString screen = QStringLiteral("jog");
+    QString instrument = QStringLiteral("analyzer");
+    int settleMs = 1500;
+    bool homeFirst = false;  ///< home and move the shown instrument so the picture shows a working machine
+};
+
+/// Renders one screen of a fresh main window (simulated instruments, no saved
+/// settings) to a PNG. Returns the process exit code; errors go to stderr.
+int takeScreenshot(const ScreenshotRequest& request);
+
+} // namespace app

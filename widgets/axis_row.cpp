@@ -1,0 +1,201 @@
+#include "widgets/axis_row.h"
+
+#include "widgets/status_lamp.h"
+
+#include <QComboBox>
+#include <QDoubleValidator>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QToolButton>
+
+#include <cmath>
+
+namespace ui {
+namespace {
+QWidget* lampBox(QWidget* parent, StatusLamp* lamp)
+{
+    auto* w = new QWidget(parent);
+    auto* l = new QHBoxLayout(w);
+    l->setContentsMargins(0, 0, 0, 0);
+    l->addStretch();
+    l->addWidget(lamp);
+    l->addStretch();
+    return w;
+}
+} // namespace
+
+QList<double> AxisRow::stepPresets(const dev::AxisDescriptor& d, proto::DeviceKind kind)
+{
+    if (d.unit == proto::AxisUnit::Microlitre)
+        return {0.5, 1, 5, 10, 50, 100};
+    if (kind == proto::DeviceKind::Stage)
+        return {0.001, 0.01, 0.1, 1, 10};
+    return {0.01, 0.1, 1, 10, 50};
+}
+
+AxisRow::AxisRow(int axis, const dev::AxisDescriptor& d, proto::DeviceKind kind, QGridLayout* grid, int row,
+                 QWidget* parent)
+    : QObject(parent), m_axis(axis), m_desc(d)
+{
+    m_decimals = d.resolution > 0 ? std::max(0, static_cast<int>(std::ceil(-std::log10(d.resolution) - 1e-9))) : 3;
+    m_name = new QLabel(QStringLiteral("<b>%1</b>").arg(d.letter), parent);
+    m_name->setToolTip(d.unit == proto::AxisUnit::Microlitre ? tr("Plunger pump, µL") : tr("Axis %1, mm").arg(d.letter));
+    QFont mono(QStringLiteral("DejaVu Sans Mono"));
+    mono.setStyleHint(QFont::Monospace);
+    mono.setPointSizeF(mono.pointSizeF() * 1.15);
+    m_commanded = new QLabel(parent);
+    m_measured = new QLabel(parent);
+    for (QLabel* l : {m_commanded, m_measured}) {
+        l->setFont(mono);
+        l->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        l->setMinimumWidth(110);
+    }
+    m_commanded->setToolTip(tr("Commanded position (%1)").arg(d.unitName()));
+    m_measured->setToolTip(kind == proto::DeviceKind::Stage ? tr("Grating scale reading (%1)").arg(d.unitName())
+                                                            : tr("Encoder reading (%1)").arg(d.unitName()));
+    m_homed = new StatusLamp(tr("Homed"), parent);
+    m_homeSwitch = new StatusLamp(tr("Home switch"), parent);
+    m_limitSwitch = new StatusLamp(tr("Limit switch"), parent);
+    m_moving = new StatusLamp(tr("Moving"), parent);
+
+    m_step = new QComboBox(parent);
+    m_step->setEditable(true);
+    m_step->setToolTip(tr("Step size in %1: pick a preset or type your own").arg(d.unitName()));
+    for (double s : stepPresets(d, kind))
+        m_step->addItem(QString::number(s), s);
+    m_step->setCurrentIndex(std::min(2, m_step->count() - 1));
+    m_step->lineEdit()->setValidator(new QDoubleValidator(0, d.travelMax - d.travelMin, 6, m_step));
+    m_step->setMinimumWidth(80);
+    auto makeTool = [&](const QString& text, const QString& tip) {
+        auto* b = new QToolButton(parent);
+        b->setText(text);
+        b->setToolTip(tip);
+        b->setMinimumWidth(34);
+        return b;
+    };
+    m_stepMinus = makeTool(QStringLiteral("−"), tr("Step %1 down by the step size").arg(d.letter));
+    m_stepPlus = makeTool(QStringLiteral("+"), tr("Step %1 up by the step size").arg(d.letter));
+    m_holdMinus = makeTool(QStringLiteral("◀◀"), tr("Hold to move %1 down; release to stop").arg(d.letter));
+    m_holdPlus = makeTool(QStringLiteral("▶▶"), tr("Hold to move %1 up; release to stop").arg(d.letter));
+    m_home = new QPushButton(tr("Home"), parent);
+    m_home->setToolTip(tr("Seek the home switch and make it zero"));
+    m_zero = new QPushButton(tr("Zero"), parent);
+    m_zero->setToolTip(tr("Make the present position zero"));
+    m_target = new QLineEdit(parent);
+    m_target->setPlaceholderText(tr("target %1").arg(d.unitName()));
+    m_target->setValidator(new QDoubleValidator(-1e6, 1e6, 6, m_target));
+    m_target->setMaximumWidth(100);
+    m_go = new QPushButton(tr("Go"), parent);
+    m_go->setToolTip(tr("Move %1 to the target (absolute; the axis must be homed)").arg(d.letter));
+    m_limits = new QLabel(parent);
+    m_limits->setToolTip(tr("Soft limits: moves beyond them are refused"));
+
+    int c = 0;
+    grid->addWidget(m_name, row, c++);
+    grid->addWidget(m_commanded, row, c++);
+    grid->addWidget(m_measured, row, c++);
+    grid->addWidget(lampBox(parent, m_homed), row, c++);
+    grid->addWidget(lampBox(parent, m_homeSwitch), row, c++);
+    grid->addWidget(lampBox(parent, m_limitSwitch), row, c++);
+    grid->addWidget(lampBox(parent, m_moving), row, c++);
+    auto* stepBox = new QWidget(parent);
+    auto* sl = new QHBoxLayout(stepBox);
+    sl->setContentsMargins(0, 0, 0, 0);
+    sl->addWidget(m_stepMinus);
+    sl->addWidget(m_step);
+    sl->addWidget(m_stepPlus);
+    grid->addWidget(stepBox, row, c++);
+    auto* holdBox = new QWidget(parent);
+    auto* hl = new QHBoxLayout(holdBox);
+    hl->setContentsMargins(0, 0, 0, 0);
+    hl->addWidget(m_holdMinus);
+    hl->addWidget(m_holdPlus);
+    grid->addWidget(holdBox, row, c++);
+    grid->addWidget(m_home, row, c++);
+    grid->addWidget(m_zero, row, c++);
+    auto* goBox = new QWidget(parent);
+    auto* gl = new QHBoxLayout(goBox);
+    gl->setContentsMargins(0, 0, 0, 0);
+    gl->addWidget(m_target);
+    gl->addWidget(m_go);
+    grid->addWidget(goBox, row, c++);
+    grid->addWidget(m_limits, row, c++);
+    m_controls = {m_step, m_stepMinus, m_stepPlus, m_holdMinus, m_holdPlus, m_home, m_zero, m_target, m_go};
+
+    connect(m_stepMinus, &QToolButton::clicked, this, [this] {
+        if (auto s = step())
+            emit stepRequested(m_axis, -*s);
+    });
+    connect(m_stepPlus, &QToolButton::clicked, this, [this] {
+        if (auto s = step())
+            emit stepRequested(m_axis, *s);
+    });
+    connect(m_holdMinus, &QToolButton::pressed, this, [this] { emit holdStarted(m_axis, -1); });
+    connect(m_holdPlus, &QToolButton::pressed, this, [this] { emit holdStarted(m_axis, +1); });
+    connect(m_holdMinus, &QToolButton::released, this, [this] { emit holdEnded(m_axis); });
+    connect(m_holdPlus, &QToolButton::released, this, [this] { emit holdEnded(m_axis); });
+    connect(m_home, &QPushButton::clicked, this, [this] { emit homeRequested(m_axis); });
+    connect(m_zero, &QPushButton::clicked, this, [this] { emit zeroRequested(m_axis); });
+    auto go = [this] {
+        bool ok = false;
+        const double v = QLocale().toDouble(m_target->text(), &ok);
+        const double v2 = ok ? v : m_target->text().toDouble(&ok);
+        if (!ok) {
+            emit problem(tr("Axis %1: '%2' is not a position").arg(m_desc.letter).arg(m_target->text()));
+            return;
+        }
+        emit goToRequested(m_axis, v2);
+    };
+    connect(m_go, &QPushButton::clicked, this, go);
+    connect(m_target, &QLineEdit::returnPressed, this, go);
+}
+
+AxisRow::~AxisRow() = default;
+
+QString AxisRow::format(double v) const { return QString::number(v, 'f', m_decimals); }
+
+std::optional<double> AxisRow::step() const
+{
+    bool ok = false;
+    const QString t = m_step->currentText().trimmed();
+    double s = QLocale().toDouble(t, &ok);
+    if (!ok)
+        s = t.toDouble(&ok);
+    if (!ok || !(s > 0)) {
+        m_step->setStyleSheet(QStringLiteral("QComboBox { background:#fde2e1; }"));
+        emit const_cast<AxisRow*>(this)->problem(tr("Axis %1: step '%2' is not a positive number").arg(m_desc.letter).arg(t));
+        return std::nullopt;
+    }
+    m_step->setStyleSheet(QString());
+    return s;
+}
+
+void AxisRow::showReadout(const dev::AxisReadout& r)
+{
+    m_commanded->setText(format(r.commanded));
+    m_measured->setText(format(r.measured));
+    m_homed->setTone(r.homed ? StatusLamp::Tone::Ok : r.homing ? StatusLamp::Tone::Active : StatusLamp::Tone::Warning);
+    m_homed->setToolTip(r.homed ? tr("Homed") : r.homing ? tr("Homing…") : tr("Not homed: absolute moves are refused"));
+    m_homeSwitch->setTone(r.homeSwitch ? StatusLamp::Tone::Active : StatusLamp::Tone::Off);
+    m_limitSwitch->setTone(r.limitSwitch ? StatusLamp::Tone::Alarm : StatusLamp::Tone::Off);
+    m_moving->setTone(r.fault ? StatusLamp::Tone::Alarm : r.moving ? StatusLamp::Tone::Active : StatusLamp::Tone::Off);
+    m_go->setEnabled(r.homed && m_target->isEnabled());
+    m_go->setToolTip(r.homed ? tr("Move %1 to the target").arg(m_desc.letter)
+                             : tr("Home %1 first: absolute moves need a homed axis").arg(m_desc.letter));
+}
+
+void AxisRow::showLimits(const dev::SoftLimits& l)
+{
+    m_limits->setText(QStringLiteral("%1 … %2 %3").arg(format(l.min), format(l.max), m_desc.unitName()));
+}
+
+void AxisRow::setEnabled(bool enabled)
+{
+    for (QWidget* w : m_controls)
+        w->setEnabled(enabled);
+}
+
+} // namespace ui

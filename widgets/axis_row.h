@@ -1,0 +1,70 @@
+#pragma once
+// One axis on the Jog screen: readouts, lamps and the controls that move it.
+// Lives in its screen's grid so the columns of all axes line up.
+#include "device/client/instrument_types.h"
+
+#include <QObject>
+
+class QComboBox;
+class QGridLayout;
+class QLabel;
+class QLineEdit;
+class QPushButton;
+class QToolButton;
+
+namespace ui {
+
+class StatusLamp;
+
+class AxisRow : public QObject {
+    Q_OBJECT
+public:
+    AxisRow(int axis, const dev::AxisDescriptor& descriptor, proto::DeviceKind kind, QGridLayout* grid, int row,
+            QWidget* parent);
+    ~AxisRow() override;
+
+    int axis() const { return m_axis; }
+    void showReadout(const dev::AxisReadout& readout);
+    void showLimits(const dev::SoftLimits& limits);
+    /// The step the operator picked, in axis units; nullopt (and a red field) when it does not parse.
+    std::optional<double> step() const;
+    int decimals() const { return m_decimals; }
+    void setEnabled(bool enabled);
+    static QList<double> stepPresets(const dev::AxisDescriptor& d, proto::DeviceKind kind);
+
+signals:
+    void stepRequested(int axis, double delta);
+    void holdStarted(int axis, int direction);
+    void holdEnded(int axis);
+    void homeRequested(int axis);
+    void zeroRequested(int axis);
+    void goToRequested(int axis, double target);
+    void problem(const QString& message);
+
+private:
+    QString format(double v) const;
+
+    int m_axis;
+    dev::AxisDescriptor m_desc;
+    int m_decimals;
+    QLabel* m_name;
+    QLabel* m_commanded;
+    QLabel* m_measured;
+    StatusLamp* m_homed;
+    StatusLamp* m_homeSwitch;
+    StatusLamp* m_limitSwitch;
+    StatusLamp* m_moving;
+    QComboBox* m_step;
+    QToolButton* m_stepMinus;
+    QToolButton* m_stepPlus;
+    QToolButton* m_holdMinus;
+    QToolButton* m_holdPlus;
+    QPushButton* m_home;
+    QPushButton* m_zero;
+    QLineEdit* m_target;
+    QPushButton* m_go;
+    QLabel* m_limits;
+    QList<QWidget*> m_controls;
+};
+
+} // namespace ui

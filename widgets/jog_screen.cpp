@@ -1,0 +1,292 @@
+#include "widgets/jog_screen.h"
+
+#include "widgets/axis_row.h"
+
+#include <QAbstractSpinBox>
+#include <QApplication>
+#include <QComboBox>
+#include <QGridLayout>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSlider>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace ui {
+
+JogScreen::JogScreen(dev::InstrumentClient* client, QWidget* parent) : QWidget(parent), m_client(client)
+{
+    setFocusPolicy(Qt::StrongFocus);
+    auto* top = new QVBoxLayout(this);
+    auto* header = new QHBoxLayout;
+    m_title = new QLabel(this);
+    QFont tf = m_title->font();
+    tf.setPointSizeF(tf.pointSizeF() * 1.3);
+    tf.setBold(true);
+    m_title->setFont(tf);
+    m_state = new QLabel(this);
+    header->addWidget(m_title);
+    header->addSpacing(12);
+    header->addWidget(m_state, 1);
+    m_homeAll = new QPushButton(tr("Home all"), this);
+    m_homeAll->setToolTip(tr("Home every axis (the analyzer lifts Z first, then X and Y)"));
+    m_stop = new QPushButton(tr("Stop"), this);
+    m_stop->setToolTip(tr("Decelerate every axis to rest (Space)"));
+    m_stop->setShortcut(QKeySequence(Qt::Key_Space));
+    header->addWidget(m_homeAll);
+    header->addWidget(m_stop);
+    top->addLayout(header);
+
+    auto* speedRow = new QHBoxLayout;
+    speedRow->addWidget(new QLabel(tr("Jog speed"), this));
+    m_speed = new QSlider(Qt::Horizontal, this);
+    m_speed->setRange(1, 100);
+    m_speed->setValue(20);
+    m_speed->setMaximumWidth(260);
+    m_speed->setToolTip(tr("Hold-to-jog speed as a share of each axis' maximum; hold Shift for full speed"));
+    m_speedLabel = new QLabel(this);
+    speedRow->addWidget(m_speed);
+    speedRow->addWidget(m_speedLabel);
+    speedRow->addSpacing(24);
+    auto* keys = new QLabel(tr("Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift fast, Space stop, Esc E-stop"), this);
+    keys->setStyleSheet(QStringLiteral("color:#555;"));
+    speedRow->addWidget(keys);
+    speedRow->addStretch();
+    top->addLayout(speedRow);
+
+    m_gridHost = new QWidget(this);
+    m_grid = new QGridLayout(m_gridHost);
+    m_grid->setHorizontalSpacing(10);
+    top->addWidget(m_gridHost);
+    top->addStretch(1);
+
+    auto updateSpeedLabel = [this] { m_speedLabel->setText(tr("%1 %").arg(m_speed->value())); };
+    updateSpeedLabel();
+    connect(m_speed, &QSlider::valueChanged, this, updateSpeedLabel);
+    connect(m_speed, &QSlider::valueChanged, this, [this] {
+        for (auto it = m_holds.cbegin(); it != m_holds.cend(); ++it)
+            m_client->startJog(it.key(), holdVelocity(it.key(), it.value()));
+    });
+    connect(m_homeAll, &QPushButton::clicked, this, [this] { homeAxes(0); });
+    connect(m_stop, &QPushButton::clicked, this, [this] {
+        endAllHolds();
+        m_client->stop();
+    });
+    connect(m_client, &dev::InstrumentClient::identified, this, &JogScreen::rebuild);
+    connect(m_client, &dev::InstrumentClient::statusChanged, this, &JogScreen::refresh);
+    connect(m_client, &dev::InstrumentClient::limitsChanged, this, &JogScreen::refresh);
+    connect(m_client, &dev::InstrumentClient::stateChanged, this, [this](dev::LinkState s) {
+        if (s != dev::LinkState::Ready)
+            m_holds.clear();  // the client dropped its jogs with the link
+        refresh();
+    });
+    rebuild();
+}
+
+double JogScreen::speedFraction() const { return m_speed->value() / 100.0; }
+
+void JogScreen::setSpeedFraction(double f) { m_speed->setValue(static_cast<int>(std::lround(std::clamp(f, 0.01, 1.0) * 100))); }
+
+void JogScreen::rebuild()
+{
+    endAllHolds();
+    qDeleteAll(m_rows);
+    m_rows.clear();
+    while (QLayoutItem* item = m_grid->takeAt(0)) {
+        delete item->widget();
+        delete item;
+    }
+    const auto& id = m_client->identity();
+    m_title->setText(id.axes.isEmpty() ? tr("No instrument") : id.model);
+    if (id.axes.isEmpty()) {
+        refresh();
+        return;
+    }
+    const QStringList heads = {tr("Axis"), tr("Commanded"), id.kind == proto::DeviceKind::Stage ? tr("Grating") : tr("Encoder"),
+                               tr("Homed"), tr("Home sw"), tr("Limit sw"), tr("Moving"), tr("Step"), tr("Hold"),
+                               QString(), QString(), tr("Go to"), tr("Soft limits")};
+    for (int c = 0; c < heads.size(); ++c) {
+        auto* h = new QLabel(QStringLiteral("<span style='color:#555'>%1</span>").arg(heads[c]), m_gridHost);
+        h->setAlignment(c == 1 || c == 2 ? Qt::AlignRight : Qt::AlignCenter);
+        m_grid->addWidget(h, 0, c);
+    }
+    for (int i = 0; i < id.axes.size(); ++i) {
+        auto* row = new AxisRow(i, id.axes[i], id.kind, m_grid, i + 1, m_gridHost);
+        connect(row, &AxisRow::stepRequested, this, [this](int axis, double delta) {
+            const double v = m_client->identity().axes[axis].maxSpeed * speedFraction();
+            m_client->jogStep(axis, delta, std::max(v, 1e-3));
+        });
+        connect(row, &AxisRow::holdStarted, this, &JogScreen::startHold);
+        connect(row, &AxisRow::holdEnded, this, &JogScreen::endHold);
+        connect(row, &AxisRow::homeRequested, this, [this](int axis) { homeAxes(static_cast<quint8>(1u << axis)); });
+        connect(row, &AxisRow::zeroRequested, this, [this](int axis) { m_client->setZero(static_cast<quint8>(1u << axis)); });
+        connect(row, &AxisRow::goToRequested, this, &JogScreen::goTo);
+        connect(row, &AxisRow::problem, this, &JogScreen::problem);
+        m_rows << row;
+    }
+    m_grid->setColumnStretch(heads.size(), 1);
+    refresh();
+}
+
+void JogScreen::refresh()
+{
+    const bool ready = m_client->isReady();
+    const auto& st = m_client->status();
+    QString state = dev::linkStateName(m_client->state());
+    if (ready && st.estop)
+        state = tr("E-STOP active — press Reset to clear");
+    m_state->setText(state);
+    m_state->setStyleSheet(ready && !st.estop ? QStringLiteral("color:#2e7d32;") : QStringLiteral("color:#b71c1c; font-weight:bold;"));
+    const bool canMove = ready && !st.estop;
+    m_homeAll->setEnabled(canMove);
+    m_stop->setEnabled(ready);
+    for (AxisRow* r : m_rows) {
+        r->setEnabled(canMove);
+        if (r->axis() < st.axes.size())
+            r->showReadout(st.axes[r->axis()]);
+        if (r->axis() < m_client->softLimits().size())
+            r->showLimits(m_client->softLimits()[r->axis()]);
+    }
+}
+
+bool JogScreen::confirm(const QString& question) { return !m_confirm || m_confirm(question); }
+
+double JogScreen::holdVelocity(int axis, int direction) const
+{
+    const double vmax = m_client->identity().axes[axis].maxSpeed;
+    return direction * vmax * (m_fast ? 1.0 : speedFraction());
+}
+
+void JogScreen::startHold(int axis, int direction)
+{
+    if (!m_client->isReady() || axis < 0 || axis >= m_client->identity().axes.size())
+        return;
+    m_holds[axis] = direction;
+    m_client->startJog(axis, holdVelocity(axis, direction));
+}
+
+void JogScreen::endHold(int axis)
+{
+    if (m_holds.remove(axis))
+        m_client->stopJog(axis);
+}
+
+void JogScreen::endAllHolds()
+{
+    const auto axes = m_holds.keys();
+    for (int a : axes)
+        endHold(a);
+}
+
+void JogScreen::homeAxes(quint8 mask)
+{
+    const auto& id = m_client->identity();
+    QString which;
+    for (int i = 0; i < id.axes.size(); ++i)
+        if (mask == 0 || (mask & (1u << i)))
+            which += id.axes[i].letter;
+    const QString order = id.capabilities & proto::CapCoupledXyThenZ && which.contains(QLatin1Char('Z')) && which.size() > 1
+        ? tr(" Z rises to its switch first, then the other axes go to theirs.")
+        : QString();
+    if (!confirm(tr("Home %1 of the %2?%3 Keep hands and labware clear.").arg(which, id.kindName(), order)))
+        return;
+    m_client->home(mask);
+}
+
+void JogScreen::goTo(int axis, double target)
+{
+    const auto& id = m_client->identity();
+    const auto& d = id.axes[axis];
+    const double from = axis < m_client->status().axes.size() ? m_client->status().axes[axis].commanded : 0;
+    const double travel = d.travelMax - d.travelMin;
+    if (std::abs(target - from) > kFarMoveShare * travel
+        && !confirm(tr("Move %1 from %2 to %3 %4? That is %5 %4.")
+                        .arg(d.letter)
+                        .arg(from, 0, 'f', 3)
+                        .arg(target, 0, 'f', 3)
+                        .arg(d.unitName())
+                        .arg(std::abs(target - from), 0, 'f', 3)))
+        return;
+    m_client->move({{axis, target}}, false);
+}
+
+int JogScreen::axisForKey(int key, int* direction) const
+{
+    const auto& id = m_client->identity();
+    QChar letter;
+    switch (key) {
+    case Qt::Key_Left: letter = QLatin1Char('X'); *direction = -1; break;
+    case Qt::Key_Right: letter = QLatin1Char('X'); *direction = +1; break;
+    case Qt::Key_Up: letter = QLatin1Char('Y'); *direction = +1; break;
+    case Qt::Key_Down: letter = QLatin1Char('Y'); *direction = -1; break;
+    case Qt::Key_PageUp: letter = QLatin1Char('Z'); *direction = +1; break;
+    case Qt::Key_PageDown: letter = QLatin1Char('Z'); *direction = -1; break;
+    default: return -1;
+    }
+    return id.axisIndex(letter);
+}
+
+static bool typingFocus()
+{
+    QWidget* f = QApplication::focusWidget();
+    if (!f)
+        return false;
+    if (auto* c = qobject_cast<QComboBox*>(f))
+        return c->isEditable();
+    return qobject_cast<QLineEdit*>(f) || qobject_cast<QAbstractSpinBox*>(f);
+}
+
+void JogScreen::keyPressEvent(QKeyEvent* event)
+{
+    if (event->key() == Qt::Key_Shift) {
+        m_fast = true;
+        for (auto it = m_holds.cbegin(); it != m_holds.cend(); ++it)
+            m_client->startJog(it.key(), holdVelocity(it.key(), it.value()));
+    }
+    int direction = 0;
+    const int axis = axisForKey(event->key(), &direction);
+    if (axis < 0 || typingFocus()) {
+        QWidget::keyPressEvent(event);
+        return;
+    }
+    event->accept();
+    if (event->isAutoRepeat())
+        return;  // the hold is already running; repeats would only re-send it
+    m_fast = event->modifiers() & Qt::ShiftModifier;
+    startHold(axis, direction);
+}
+
+void JogScreen::keyReleaseEvent(QKeyEvent* event)
+{
+    if (event->key() == Qt::Key_Shift) {
+        m_fast = false;
+        for (auto it = m_holds.cbegin(); it != m_holds.cend(); ++it)
+            m_client->startJog(it.key(), holdVelocity(it.key(), it.value()));
+    }
+    int direction = 0;
+    const int axis = axisForKey(event->key(), &direction);
+    if (axis < 0 || event->isAutoRepeat()) {
+        QWidget::keyReleaseEvent(event);
+        return;
+    }
+    event->accept();
+    endHold(axis);
+}
+
+void JogScreen::focusOutEvent(QFocusEvent* event)
+{
+    // A key release that lands in another window never reaches us: stop now.
+    endAllHolds();
+    QWidget::focusOutEvent(event);
+}
+
+void JogScreen::hideEvent(QHideEvent* event)
+{
+    endAllHolds();
+    QWidget::hideEvent(event);
+}
+
+} // namespace ui

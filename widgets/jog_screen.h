@@ -1,0 +1,70 @@
+#pragma once
+// The Jog screen of one instrument: per-axis readouts and lamps, step jog,
+// hold-to-jog (buttons and keys), homing, zero, go-to, soft limits.
+#include "device/client/instrument_client.h"
+
+#include <QWidget>
+
+#include <functional>
+
+class QGridLayout;
+class QLabel;
+class QPushButton;
+class QSlider;
+
+namespace ui {
+
+class AxisRow;
+
+class JogScreen : public QWidget {
+    Q_OBJECT
+public:
+    /// Asked before anything that moves the machine far; true = go ahead. The
+    /// composition root supplies a dialog; without one the answer is yes.
+    using Confirm = std::function<bool(const QString& question)>;
+
+    JogScreen(dev::InstrumentClient* client, QWidget* parent = nullptr);
+    void setConfirm(Confirm confirm) { m_confirm = std::move(confirm); }
+    /// Jog speed as a share of each axis' maximum, 0.01–1.
+    double speedFraction() const;
+    void setSpeedFraction(double f);
+    /// Moves farther than this share of an axis' travel ask for confirmation first.
+    static constexpr double kFarMoveShare = 0.25;
+
+signals:
+    void problem(const QString& message);
+
+protected:
+    void keyPressEvent(QKeyEvent* event) override;
+    void keyReleaseEvent(QKeyEvent* event) override;
+    void focusOutEvent(QFocusEvent* event) override;
+    void hideEvent(QHideEvent* event) override;
+
+private:
+    void rebuild();
+    void refresh();
+    void startHold(int axis, int direction);
+    void endHold(int axis);
+    void endAllHolds();
+    void homeAxes(quint8 mask);
+    void goTo(int axis, double target);
+    int axisForKey(int key, int* direction) const;
+    double holdVelocity(int axis, int direction) const;
+    bool confirm(const QString& question);
+
+    dev::InstrumentClient* m_client;
+    Confirm m_confirm;
+    QLabel* m_title;
+    QLabel* m_state;
+    QPushButton* m_homeAll;
+    QPushButton* m_stop;
+    QSlider* m_speed;
+    QLabel* m_speedLabel;
+    QGridLayout* m_grid;
+    QWidget* m_gridHost;
+    QList<AxisRow*> m_rows;
+    QHash<int, int> m_holds;   ///< axis → direction while a button or key is held
+    bool m_fast = false;       ///< Shift held: full speed
+};
+
+} // namespace ui
