@@ -37,6 +37,18 @@ struct AxisConfig {
 
 struct PidGains { double kp = 0.25, ki = 0.5, kd = 0.03; };  ///< seed 002's tuned gains
 
+/// What the stage's loop does around seed 002's PID.
+struct ClosedLoopTuning {
+    /// An error of at most this many grating counts counts as zero. Integral action
+    /// on a quantized reading through screw backlash otherwise hunts forever (a
+    /// limit cycle of ±1 count every ~45 ms on the stage).
+    double deadbandCounts = 1.0;
+    /// The motor leads the reference by velocity × this, matching the drive lag, so
+    /// the integrator does not have to store the lag (and give it back as overshoot
+    /// when the reference stops).
+    double velocityFeedForwardS = 0.002;
+};
+
 struct MachineConfig {
     proto::DeviceKind kind = proto::DeviceKind::Analyzer;
     std::string model;
@@ -50,6 +62,7 @@ struct MachineConfig {
     double settleTimeS = 0.01;
     double lostStepTolerance = 0.05;///< open loop: |encoder − command| above this at rest raises LostSteps
     PidGains gains;
+    ClosedLoopTuning loop;
     std::uint64_t seed = 12345;     ///< noise is deterministic for a given seed
 };
 

@@ -38,6 +38,7 @@ void SimAxis::holdHere()
     m_ref = m_closedLoop ? measured() : static_cast<double>(m_motorSteps) * m_cfg.stepSize;
     m_refVel = 0;
     m_prevRefForLoop = m_ref;
+    m_prevRefVelForLoop = 0;
     m_e1 = m_e2 = 0;
     m_stepAccumulator = 0;
 }
@@ -91,19 +92,21 @@ void SimAxis::issueSteps(std::int64_t steps, double dtS)
     }
 }
 
-void SimAxis::controlStep(const PidGains& g, int ticksPerPeriod)
+void SimAxis::controlStep(const PidGains& g, int ticksPerPeriod, const ClosedLoopTuning& tuning)
 {
     if (!m_closedLoop || m_frozen)
         return;
     // Seed 002 eq. 2: Δu = Kp(e_k − e_{k−1}) + Ki·e_k + Kd(e_k − 2e_{k−1} + e_{k−2}),
     // with Δu the motor travel sent this period on top of the reference's own
     // advance (feed-forward), so the loop only corrects what the screw got wrong.
-    const double e = m_ref - measured();
+    const double raw = m_ref - measured();
+    const double e = std::abs(raw) <= tuning.deadbandCounts * m_cfg.resolution + 1e-12 ? 0.0 : raw;
     const double du = g.kp * (e - m_e1) + g.ki * e + g.kd * (e - 2 * m_e1 + m_e2);
     m_e2 = m_e1;
     m_e1 = e;
-    const double feedForward = m_ref - m_prevRefForLoop;
+    const double feedForward = (m_ref - m_prevRefForLoop) + tuning.velocityFeedForwardS * (m_refVel - m_prevRefVelForLoop);
     m_prevRefForLoop = m_ref;
+    m_prevRefVelForLoop = m_refVel;
     m_stepAccumulator += (feedForward + du) / m_cfg.stepSize;
     m_ticksLeft = ticksPerPeriod < 1 ? 1 : ticksPerPeriod;
 }

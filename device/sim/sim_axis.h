@@ -23,8 +23,9 @@ public:
 
     /// Advances the plant by one simulation tick.
     void tick(double dtS);
-    /// Closed loop only: one PID period (seed 002 eq. 2, incremental form).
-    void controlStep(const PidGains& gains, int ticksPerPeriod);
+    /// Closed loop only: one PID period (seed 002 eq. 2, incremental form) on top of
+    /// the reference's feed-forward.
+    void controlStep(const PidGains& gains, int ticksPerPeriod, const ClosedLoopTuning& tuning = {});
     /// Makes the reference equal to where the carriage is, e.g. after a latched stop.
     void holdHere();
     /// E-stop: the reference freezes; the motor gets no more steps.
@@ -53,7 +54,7 @@ private:
     double m_lagS;
     std::mt19937_64 m_rng;
 
-    double m_ref = 0, m_refVel = 0, m_prevRefForLoop = 0;
+    double m_ref = 0, m_refVel = 0, m_prevRefForLoop = 0, m_prevRefVelForLoop = 0;
     std::int64_t m_motorSteps = 0;  ///< steps the driver has received, from machine zero
     double m_screw = 0;             ///< nut position: motor position less slipped steps
     std::int64_t m_lostSteps = 0;

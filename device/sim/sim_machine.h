@@ -20,7 +20,10 @@ class SimMachine {
 public:
     static constexpr double kTickS = 100e-6;        ///< simulation tick: 10 kHz
     static constexpr double kJogWatchdogTripS = 0.200; ///< velocity move not refreshed this long starts to stop
-    static constexpr double kJogStopBudgetS = 0.050;   ///< …and is at rest this much later at the latest
+    /// …and its reference is at rest this much later at the latest. The 250 ms
+    /// promise (HELLO's jogWatchdogMs) also covers the stage's settling after the
+    /// reference stops, so the ramp does not take the whole remaining 50 ms.
+    static constexpr double kJogStopBudgetS = 0.030;
 
     explicit SimMachine(const MachineConfig& config);
     ~SimMachine();

@@ -129,11 +129,14 @@ void SimMachine::tickVelocityModes()
         const double pos = s.plant->reference();
         if (s.mode == Mode::Jog && s.homed) {
             // Never coast through a soft limit: the speed is capped by the distance left.
-            const double room = s.v >= 0 ? softMaxMachine(i) - pos : pos - softMinMachine(i);
+            // Room ahead in the direction of travel, or of the request when at rest:
+            // an axis parked on a limit must still be able to jog away from it.
+            const bool up = s.v != 0 ? s.v > 0 : target > 0;
+            const double room = up ? softMaxMachine(i) - pos : pos - softMinMachine(i);
             const double vCap = std::sqrt(2.0 * s.accel * std::max(0.0, room));
-            if (target > 0 && s.v >= 0)
+            if (target > 0 && up)
                 target = std::min(target, vCap);
-            if (target < 0 && s.v <= 0)
+            if (target < 0 && !up)
                 target = std::max(target, -vCap);
         }
         const double dv = s.accel * kTickS;
@@ -183,7 +186,7 @@ void SimMachine::tick()
     tickVelocityModes();
     for (int i = 0; i < axisCount(); ++i) {
         if (m_cfg.closedLoop && m_ticks % static_cast<std::uint64_t>(m_ticksPerControl) == 0)
-            st(i).plant->controlStep(m_cfg.gains, m_ticksPerControl);
+            st(i).plant->controlStep(m_cfg.gains, m_ticksPerControl, m_cfg.loop);
         st(i).plant->tick(kTickS);
         if (st(i).mode == Mode::Settling)
             tickSettling(i);
