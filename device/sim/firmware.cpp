@@ -63,8 +63,17 @@ void Firmware::flushEvents()
 
 void Firmware::handle(const proto::Frame& f)
 {
-    if (!proto::isRequestType(f.type))
-        return;  // a device ignores replies and events: only a host sends requests
+    if (f.type >= 0x80)
+        return;  // replies, events and errors: only a device sends those, a device ignores them
+    const bool hello = f.type == static_cast<std::uint8_t>(proto::MsgType::Hello);
+    if (hello && !(m_lastQueued.valid && m_lastQueued.seq == f.seq && m_lastQueued.payload == f.payload)) {
+        // A HELLO that is not a repeat of the last queued request starts a new
+        // session: a host that restarted numbers its requests afresh, and its
+        // first move must not be taken for a retransmission of the previous
+        // session's move with the same seq and bytes.
+        for (auto& c : m_cache)
+            c.valid = false;
+    }
     for (const auto& c : m_cache) {
         if (c.valid && c.seq == f.seq && c.type == f.type && c.payload == f.payload) {
             ++m_duplicates;
@@ -79,6 +88,8 @@ void Firmware::handle(const proto::Frame& f)
     slot.seq = f.seq;
     slot.payload = f.payload;
     slot.reply.clear();
+    if (!proto::isRealtimeType(f.type))
+        m_lastQueued = slot;
     ++m_executed;
     execute(f, slot.reply);
     m_out.insert(m_out.end(), slot.reply.begin(), slot.reply.end());

@@ -63,6 +63,7 @@ private:
     };
     std::array<CachedReply, 32> m_cache;
     std::size_t m_cacheNext = 0;
+    CachedReply m_lastQueued;  ///< key of the latest queued request (reply not kept): tells a repeated HELLO from a new session
 
     // Telemetry subscription.
     std::vector<proto::ChannelRef> m_channels;

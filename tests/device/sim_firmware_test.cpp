@@ -1,0 +1,505 @@
+// The reference firmware's protocol side, driven through encoded frames exactly
+// as a host would: HELLO, replies and typed errors, retransmissions, corrupted
+// frames, realtime-first handling and telemetry batches.
+#include "device/protocol/frame_codec.h"
+#include "device/protocol/messages.h"
+#include "device/sim/firmware.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace {
+
+using proto::ErrorCode;
+using proto::MsgType;
+
+constexpr std::uint8_t bit(int i) { return static_cast<std::uint8_t>(1u << i); }
+proto::WireUnits nm(double mm) { return static_cast<proto::WireUnits>(std::lround(mm * 1e6)); }
+
+/// A host at the other end of the wire: encodes requests, feeds the firmware,
+/// decodes whatever comes back.
+struct Host {
+    sim::Firmware fw;
+    std::uint16_t nextSeq = 1000;  ///< helpers' own requests; tests pick small seqs by hand
+    proto::FrameDecoder decoder;
+    std::vector<proto::Frame> replies;  ///< replies and error replies, in arrival order
+    std::vector<proto::EventMsg> events;
+    std::vector<proto::TelemetryBatch> batches;
+
+    explicit Host(const sim::MachineConfig& cfg, std::uint32_t baud = 115200) : fw(cfg, baud) {}
+
+    std::vector<std::uint8_t> frame(MsgType type, const proto::Bytes& payload, std::uint16_t seq)
+    {
+        std::vector<std::uint8_t> wire;
+        EXPECT_TRUE(proto::encodeFrame(static_cast<std::uint8_t>(type), seq, payload.data(), payload.size(), wire));
+        return wire;
+    }
+    std::uint16_t send(MsgType type, const proto::Bytes& payload = {})
+    {
+        const std::uint16_t seq = nextSeq++;
+        const auto wire = frame(type, payload, seq);
+        fw.receive(wire.data(), wire.size());
+        pump();
+        return seq;
+    }
+    void sendRaw(const std::vector<std::uint8_t>& wire)
+    {
+        fw.receive(wire.data(), wire.size());
+        pump();
+    }
+    void advance(double seconds)
+    {
+        // In 10 ms slices, as a host event loop would.
+        for (double t = 0; t < seconds - 1e-9; t += 0.01) {
+            fw.advance(std::min(0.01, seconds - t));
+            pump();
+        }
+    }
+    void pump()
+    {
+        std::vector<std::uint8_t> out;
+        fw.drainOutput(out);
+        std::vector<proto::Frame> frames;
+        decoder.feed(out.data(), out.size(), frames);
+        for (auto& f : frames) {
+            if (f.type == static_cast<std::uint8_t>(MsgType::Event)) {
+                auto e = proto::decodeEvent(f.payload);
+                ASSERT_TRUE(e);
+                events.push_back(*e);
+            } else if (f.type == static_cast<std::uint8_t>(MsgType::TelemetryBatch)) {
+                auto b = proto::decodeTelemetryBatch(f.payload);
+                ASSERT_TRUE(b);
+                batches.push_back(*b);
+            } else {
+                replies.push_back(std::move(f));
+            }
+        }
+    }
+    /// The latest reply with this seq (tests reuse sequence numbers on purpose).
+    const proto::Frame* replyTo(std::uint16_t seq) const
+    {
+        for (auto it = replies.rbegin(); it != replies.rend(); ++it)
+            if (it->seq == seq)
+                return &*it;
+        return nullptr;
+    }
+    std::optional<proto::ErrorReply> errorFor(std::uint16_t seq) const
+    {
+        const auto* f = replyTo(seq);
+        if (!f || f->type != static_cast<std::uint8_t>(MsgType::Error))
+            return std::nullopt;
+        return proto::decodeErrorReply(f->payload);
+    }
+    bool okFor(std::uint16_t seq, MsgType type) const
+    {
+        const auto* f = replyTo(seq);
+        return f && f->type == proto::replyTypeOf(type);
+    }
+    proto::StatusReply status()
+    {
+        const auto seq = send(MsgType::Status);
+        const auto* f = replyTo(seq);
+        EXPECT_TRUE(f && f->type == proto::replyTypeOf(MsgType::Status));
+        auto s = f ? proto::decodeStatusReply(f->payload) : std::nullopt;
+        EXPECT_TRUE(s);
+        if (!s || s->axes.empty())
+            return fw.machine().status();  // keep the test running to report the real failure
+        return *s;
+    }
+};
+
+proto::Bytes moveRel(std::uint8_t mask, std::vector<double> mm)
+{
+    proto::MoveRequest r;
+    r.relative = true;
+    r.axisMask = mask;
+    for (double v : mm)
+        r.targets.push_back(nm(v));
+    return proto::encode(r);
+}
+
+} // namespace
+
+TEST(SimFirmware, HelloDescribesTheAnalyzer)
+{
+    Host h(sim::analyzerConfig(), 115200);
+    const auto seq = h.send(MsgType::Hello);
+    ASSERT_TRUE(h.okFor(seq, MsgType::Hello));
+    const auto hello = proto::decodeHelloReply(h.replyTo(seq)->payload);
+    ASSERT_TRUE(hello);
+    EXPECT_EQ(hello->protocolVersion, proto::kProtocolVersion);
+    EXPECT_EQ(hello->kind, proto::DeviceKind::Analyzer);
+    EXPECT_EQ(hello->linkBaud, 115200u);
+    EXPECT_EQ(hello->jogWatchdogMs, 250);
+    EXPECT_EQ(hello->controlPeriodUs, 1000u);
+    EXPECT_GE(hello->maxTelemetryRateHz, 100u);
+    EXPECT_FALSE(hello->model.empty());
+    EXPECT_FALSE(hello->firmware.empty());
+    for (auto cap : {proto::CapHoming, proto::CapEncoder, proto::CapPump, proto::CapTelemetry, proto::CapJogVelocity,
+                     proto::CapCoupledXyThenZ})
+        EXPECT_TRUE(hello->capabilities & cap) << cap;
+    EXPECT_FALSE(hello->capabilities & proto::CapGrating);
+    EXPECT_FALSE(hello->capabilities & proto::CapClosedLoopPid);
+    ASSERT_EQ(hello->axes.size(), 4u);
+    const char letters[] = {'X', 'Y', 'Z', 'P'};
+    const std::int32_t travel[] = {nm(200), nm(200), nm(100), 1000000};
+    for (std::size_t i = 0; i < 4; ++i) {
+        EXPECT_EQ(hello->axes[i].letter, letters[i]);
+        EXPECT_EQ(hello->axes[i].travelMin, 0);
+        EXPECT_EQ(hello->axes[i].travelMax, travel[i]);
+        EXPECT_GT(hello->axes[i].maxSpeed, 0u);
+        EXPECT_GT(hello->axes[i].resolution, 0u);
+    }
+    EXPECT_EQ(hello->axes[3].unit, proto::AxisUnit::Microlitre);
+    EXPECT_EQ(hello->axes[0].unit, proto::AxisUnit::Millimetre);
+    EXPECT_EQ(hello->axes[0].resolution, 2000u);  // 8 mm lead / 4000 counts
+}
+
+TEST(SimFirmware, HelloDescribesTheStage)
+{
+    Host h(sim::stageConfig(), 921600);
+    const auto seq = h.send(MsgType::Hello);
+    const auto hello = proto::decodeHelloReply(h.replyTo(seq)->payload);
+    ASSERT_TRUE(hello);
+    EXPECT_EQ(hello->kind, proto::DeviceKind::Stage);
+    EXPECT_EQ(hello->linkBaud, 921600u);
+    EXPECT_TRUE(hello->capabilities & proto::CapGrating);
+    EXPECT_TRUE(hello->capabilities & proto::CapClosedLoopPid);
+    EXPECT_FALSE(hello->capabilities & proto::CapPump);
+    EXPECT_FALSE(hello->capabilities & proto::CapCoupledXyThenZ);
+    ASSERT_EQ(hello->axes.size(), 2u);
+    EXPECT_EQ(hello->axes[0].resolution, 500u);  // 0.5 µm grating counts
+    EXPECT_EQ(hello->axes[1].travelMax, nm(100));
+}
+
+TEST(SimFirmware, AbsoluteMoveUnhomedIsRefusedOverTheWire)
+{
+    Host h(sim::analyzerConfig());
+    proto::MoveRequest r;
+    r.axisMask = bit(2);
+    r.targets = {nm(10)};
+    const auto seq = h.send(MsgType::Move, proto::encode(r));
+    const auto e = h.errorFor(seq);
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, ErrorCode::NotHomed);
+    EXPECT_EQ(e->axis, 2);
+    EXPECT_NE(e->message.find("axis Z"), std::string::npos) << e->message;
+}
+
+TEST(SimFirmware, RetransmittedRequestIsExecutedOnceAndAnsweredIdentically)
+{
+    Host h(sim::analyzerConfig());
+    const auto wire = h.frame(MsgType::Move, moveRel(bit(0), {5}), 42);
+    h.sendRaw(wire);
+    const auto executed = h.fw.executedRequests();
+    h.advance(0.05);
+    // The reply was lost; the host sends the very same frame again.
+    h.sendRaw(wire);
+    h.sendRaw(wire);
+    EXPECT_EQ(h.fw.executedRequests(), executed);
+    EXPECT_EQ(h.fw.duplicateRequests(), 2u);
+    ASSERT_EQ(std::count_if(h.replies.begin(), h.replies.end(), [](const proto::Frame& f) { return f.seq == 42; }), 3);
+    for (const auto& f : h.replies)
+        if (f.seq == 42) {
+            EXPECT_EQ(f.type, proto::replyTypeOf(MsgType::Move));
+            EXPECT_EQ(f.payload, h.replyTo(42)->payload);
+        }
+    h.advance(2);
+    EXPECT_NEAR(h.status().axes[0].commanded / 1e6, 5.0, 1e-6) << "moved once, not twice";
+}
+
+TEST(SimFirmware, RetransmittedErrorIsAnsweredWithTheSameError)
+{
+    Host h(sim::analyzerConfig());
+    proto::MoveRequest r;
+    r.axisMask = bit(0);
+    r.targets = {nm(10)};
+    const auto wire = h.frame(MsgType::Move, proto::encode(r), 7);
+    h.sendRaw(wire);
+    h.sendRaw(wire);
+    ASSERT_EQ(h.replies.size(), 2u);
+    EXPECT_EQ(h.replies[0].type, static_cast<std::uint8_t>(MsgType::Error));
+    EXPECT_EQ(h.replies[0].payload, h.replies[1].payload);
+}
+
+TEST(SimFirmware, SameSeqWithDifferentPayloadIsANewRequest)
+{
+    Host h(sim::analyzerConfig());
+    h.sendRaw(h.frame(MsgType::Move, moveRel(bit(0), {1}), 9));
+    h.advance(1);
+    h.sendRaw(h.frame(MsgType::Move, moveRel(bit(0), {2}), 9));
+    h.advance(1);
+    EXPECT_EQ(h.fw.duplicateRequests(), 0u);
+    EXPECT_NEAR(h.status().axes[0].commanded / 1e6, 3.0, 1e-6);
+}
+
+TEST(SimFirmware, ANewSessionIsNotMistakenForRetransmissions)
+{
+    // Two CLI runs of `move X=+1 --relative` against one benchpilot-sim: each
+    // starts its sequence numbers afresh with HELLO, so the second run's move
+    // has the same seq and bytes as the first's. It must still move.
+    Host h(sim::analyzerConfig());
+    for (int run = 0; run < 2; ++run) {
+        h.sendRaw(h.frame(MsgType::Hello, {}, 1));
+        h.sendRaw(h.frame(MsgType::Move, moveRel(bit(0), {1}), 2));
+        h.advance(1);
+    }
+    EXPECT_NEAR(h.status().axes[0].commanded / 1e6, 2.0, 1e-6);
+    // A retransmitted HELLO within a session does not forget the session.
+    h.sendRaw(h.frame(MsgType::Move, moveRel(bit(0), {1}), 3));
+    h.sendRaw(h.frame(MsgType::Hello, {}, 4));
+    h.sendRaw(h.frame(MsgType::Hello, {}, 4));
+    h.sendRaw(h.frame(MsgType::Move, moveRel(bit(0), {1}), 3));
+    h.advance(1);
+    EXPECT_NEAR(h.status().axes[0].commanded / 1e6, 3.0, 1e-6);
+}
+
+TEST(SimFirmware, CorruptedRequestIsNeverExecuted)
+{
+    Host h(sim::analyzerConfig());
+    auto wire = h.frame(MsgType::Move, moveRel(bit(0), {5}), 3);
+    // Flip one bit in every position in turn: no variant may move the machine.
+    for (std::size_t i = 1; i + 1 < wire.size(); ++i) {
+        auto bad = wire;
+        bad[i] ^= 0x10;
+        if (bad[i] == 0)
+            continue;  // that would be a delimiter: a truncated frame, tested below
+        h.sendRaw(bad);
+    }
+    auto truncated = wire;
+    truncated.erase(truncated.end() - 3, truncated.end() - 1);
+    h.sendRaw(truncated);
+    EXPECT_EQ(h.fw.executedRequests(), 0u);
+    EXPECT_TRUE(h.replies.empty());
+    EXPECT_GT(h.fw.decoderStats().crcErrors + h.fw.decoderStats().malformed, wire.size() / 2);
+    h.advance(0.5);
+    EXPECT_EQ(h.fw.machine().status().axes[0].commanded, 0);
+    // The link recovers: the good frame after the garbage works.
+    const auto seq = h.send(MsgType::Move, moveRel(bit(0), {5}));
+    EXPECT_TRUE(h.okFor(seq, MsgType::Move));
+}
+
+TEST(SimFirmware, UnknownTypeGetsUnknownCommand)
+{
+    Host h(sim::analyzerConfig());
+    for (std::uint8_t type : {std::uint8_t{0x1E}, std::uint8_t{0x3F}, std::uint8_t{0x00}, std::uint8_t{0x55}}) {
+        std::vector<std::uint8_t> wire;
+        ASSERT_TRUE(proto::encodeFrame(type, 77, nullptr, 0, wire));
+        h.replies.clear();
+        h.sendRaw(wire);
+        ASSERT_EQ(h.replies.size(), 1u) << "type " << int(type);
+        const auto e = proto::decodeErrorReply(h.replies[0].payload);
+        ASSERT_TRUE(e);
+        EXPECT_EQ(h.replies[0].seq, 77);
+        EXPECT_EQ(e->code, ErrorCode::UnknownCommand);
+        EXPECT_EQ(e->value, type);
+    }
+    // A device never answers what only a device sends.
+    std::vector<std::uint8_t> wire;
+    ASSERT_TRUE(proto::encodeFrame(proto::replyTypeOf(MsgType::Hello), 78, nullptr, 0, wire));
+    h.replies.clear();
+    h.sendRaw(wire);
+    EXPECT_TRUE(h.replies.empty());
+}
+
+TEST(SimFirmware, MalformedPayloadGetsBadPayload)
+{
+    Host h(sim::analyzerConfig());
+    const auto seq = h.send(MsgType::Move, proto::Bytes{1, 2, 3});
+    const auto e = h.errorFor(seq);
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, ErrorCode::BadPayload);
+    EXPECT_NE(e->message.find("MOVE"), std::string::npos);
+}
+
+TEST(SimFirmware, SubscriptionAboveLinkCapacityIsRefusedWithTheCapacity)
+{
+    Host h(sim::analyzerConfig(), 9600);
+    proto::SubscribeRequest r;
+    r.rateHz = 1000;
+    for (std::uint8_t a = 0; a < 4; ++a) {
+        r.channels.push_back({a, proto::ChannelKind::Commanded});
+        r.channels.push_back({a, proto::ChannelKind::Measured});
+    }
+    const auto seq = h.send(MsgType::Subscribe, proto::encode(r));
+    const auto e = h.errorFor(seq);
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, ErrorCode::OverCapacity);
+    // 9600 baud 8N1 carries 960 B/s; telemetry may use 90 % of it.
+    EXPECT_NE(e->message.find("864 B/s"), std::string::npos) << e->message;
+    EXPECT_NE(e->message.find("9600 baud"), std::string::npos) << e->message;
+    EXPECT_GT(e->value, 0);
+    EXPECT_LT(e->value, 1000);
+    // The rate the error offers is accepted.
+    r.rateHz = static_cast<std::uint32_t>(e->value);
+    const auto ok = h.send(MsgType::Subscribe, proto::encode(r));
+    EXPECT_TRUE(h.okFor(ok, MsgType::Subscribe)) << (h.errorFor(ok) ? h.errorFor(ok)->message : "");
+}
+
+TEST(SimFirmware, SubscriptionBatchesAreConsecutive)
+{
+    Host h(sim::stageConfig(), 921600);
+    proto::SubscribeRequest r;
+    r.rateHz = 500;
+    r.channels = {{0, proto::ChannelKind::Measured}, {1, proto::ChannelKind::Measured},
+                  {proto::kNoAxis, proto::ChannelKind::ContourError}};
+    const auto seq = h.send(MsgType::Subscribe, proto::encode(r));
+    ASSERT_TRUE(h.okFor(seq, MsgType::Subscribe));
+    const auto reply = proto::decodeSubscribeReply(h.replyTo(seq)->payload);
+    ASSERT_TRUE(reply);
+    EXPECT_EQ(reply->rateHz, 500u);
+    ASSERT_GE(reply->samplesPerBatch, 1);
+    h.advance(1.0);
+    ASSERT_GE(h.batches.size(), 10u);
+    std::uint32_t expectIndex = 0;
+    std::uint64_t expectTimeUs = h.batches[0].firstSampleTimeUs;
+    std::size_t samples = 0;
+    for (const auto& b : h.batches) {
+        EXPECT_EQ(b.firstSampleIndex, expectIndex);
+        EXPECT_EQ(b.firstSampleTimeUs, expectTimeUs);
+        EXPECT_EQ(b.periodUs, 2000u);
+        EXPECT_EQ(b.channels, r.channels);
+        EXPECT_EQ(b.sampleCount, reply->samplesPerBatch);
+        EXPECT_EQ(b.values.size(), b.sampleCount * r.channels.size());
+        expectIndex += b.sampleCount;
+        expectTimeUs += std::uint64_t{b.sampleCount} * b.periodUs;
+        samples += b.sampleCount;
+    }
+    EXPECT_NEAR(static_cast<double>(samples), 500.0, reply->samplesPerBatch + 1.0);
+}
+
+TEST(SimFirmware, TelemetryFollowsAMove)
+{
+    Host h(sim::analyzerConfig());
+    proto::SubscribeRequest r;
+    r.rateHz = 100;
+    r.channels = {{0, proto::ChannelKind::Commanded}, {0, proto::ChannelKind::Switches}};
+    ASSERT_TRUE(h.okFor(h.send(MsgType::Subscribe, proto::encode(r)), MsgType::Subscribe));
+    h.send(MsgType::Move, moveRel(bit(0), {10}));
+    h.advance(1.5);
+    ASSERT_FALSE(h.batches.empty());
+    const auto& last = h.batches.back();
+    EXPECT_EQ(last.values[last.values.size() - 2], nm(10));
+    EXPECT_EQ(last.values.back(), 0);  // no switch
+}
+
+TEST(SimFirmware, UnsubscribeStopsTheBatches)
+{
+    Host h(sim::analyzerConfig());
+    proto::SubscribeRequest r;
+    r.rateHz = 200;
+    r.channels = {{0, proto::ChannelKind::Measured}};
+    h.send(MsgType::Subscribe, proto::encode(r));
+    h.advance(0.5);
+    ASSERT_FALSE(h.batches.empty());
+    h.send(MsgType::Subscribe, proto::encode(proto::SubscribeRequest{}));
+    h.batches.clear();
+    h.advance(0.5);
+    EXPECT_TRUE(h.batches.empty());
+}
+
+TEST(SimFirmware, BadTelemetryChannelIsRefused)
+{
+    Host h(sim::analyzerConfig());
+    proto::SubscribeRequest r;
+    r.rateHz = 100;
+    r.channels = {{5, proto::ChannelKind::Measured}};
+    auto e = h.errorFor(h.send(MsgType::Subscribe, proto::encode(r)));
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, ErrorCode::BadAxis);
+    // The analyzer has no contour channel (it is the stage's stitching drift).
+    r.channels = {{proto::kNoAxis, proto::ChannelKind::ContourError}};
+    e = h.errorFor(h.send(MsgType::Subscribe, proto::encode(r)));
+    ASSERT_TRUE(e);
+    r.rateHz = 20000;
+    r.channels = {{0, proto::ChannelKind::Measured}};
+    e = h.errorFor(h.send(MsgType::Subscribe, proto::encode(r)));
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, ErrorCode::OutOfRange);
+}
+
+TEST(SimFirmware, RealtimeRequestsInTheSameChunkActFirst)
+{
+    Host h(sim::analyzerConfig());
+    // One read from the serial port holds a queued move and, behind it, an E-stop.
+    auto chunk = h.frame(MsgType::Move, moveRel(bit(0), {5}), 20);
+    const auto estop = h.frame(MsgType::EStop, {}, 21);
+    chunk.insert(chunk.end(), estop.begin(), estop.end());
+    h.sendRaw(chunk);
+    ASSERT_EQ(h.replies.size(), 2u);
+    EXPECT_EQ(h.replies[0].seq, 21) << "the E-stop is answered first";
+    EXPECT_EQ(h.replies[0].type, proto::replyTypeOf(MsgType::EStop));
+    const auto e = h.errorFor(20);
+    ASSERT_TRUE(e) << "the move came after the E-stop";
+    EXPECT_EQ(e->code, ErrorCode::EStopActive);
+    h.advance(0.5);
+    EXPECT_EQ(h.fw.machine().status().axes[0].commanded, 0);
+}
+
+TEST(SimFirmware, StopOvertakesAQueuedMoveInTheSameChunk)
+{
+    Host h(sim::analyzerConfig());
+    h.send(MsgType::Move, moveRel(bit(1), {50}));
+    h.advance(0.3);
+    // A stop for Y and a new queued move for X arrive together; the stop acts first.
+    auto chunk = h.frame(MsgType::Move, moveRel(bit(0), {5}), 30);
+    const auto stop = h.frame(MsgType::Stop, proto::encode(proto::AxisMaskRequest{bit(1)}), 31);
+    chunk.insert(chunk.end(), stop.begin(), stop.end());
+    h.replies.clear();
+    h.sendRaw(chunk);
+    ASSERT_EQ(h.replies.size(), 2u);
+    EXPECT_EQ(h.replies[0].seq, 31);
+    EXPECT_EQ(h.replies[1].seq, 30);
+    h.advance(2);
+    EXPECT_LT(h.fw.machine().status().axes[1].commanded, nm(50));
+    EXPECT_EQ(h.fw.machine().status().axes[0].commanded, nm(5));
+}
+
+TEST(SimFirmware, EventsCarryKindAxisAndDeviceTime)
+{
+    Host h(sim::analyzerConfig());
+    h.send(MsgType::Move, moveRel(bit(0), {3}));
+    h.advance(1);
+    ASSERT_EQ(h.events.size(), 1u);
+    EXPECT_EQ(h.events[0].kind, proto::EventKind::MotionDone);
+    EXPECT_EQ(h.events[0].axis, 0);
+    EXPECT_GT(h.events[0].deviceTimeUs, 0u);
+    EXPECT_LT(h.events[0].deviceTimeUs, 1000000u);
+    EXPECT_NEAR(h.events[0].position, nm(3), 12000);  // encoder: the first move takes up half the 20 µm play
+    h.send(MsgType::EStop);
+    ASSERT_EQ(h.events.size(), 2u);
+    EXPECT_EQ(h.events[1].kind, proto::EventKind::EStop);
+    EXPECT_TRUE(h.status().deviceFlags & proto::DeviceEStop);
+    const auto reset = h.send(MsgType::Reset);
+    EXPECT_TRUE(h.okFor(reset, MsgType::Reset));
+    EXPECT_FALSE(h.status().deviceFlags & proto::DeviceEStop);
+}
+
+TEST(SimFirmware, JogOverTheWireStopsWhenRefreshesStop)
+{
+    Host h(sim::stageConfig());
+    proto::JogVelocityRequest j;
+    j.axisMask = bit(0);
+    j.velocities = {nm(10)};
+    for (int n = 0; n < 10; ++n) {  // refreshed at 20 Hz for 0.5 s
+        h.send(MsgType::JogVelocity, proto::encode(j));
+        h.advance(0.05);
+    }
+    // Silence. Within 250 ms of the last refresh the axis is at rest and said so.
+    h.advance(0.25);
+    EXPECT_FALSE(h.status().axes[0].flags & proto::AxisMoving);
+    const bool expired = std::any_of(h.events.begin(), h.events.end(),
+                                     [](const proto::EventMsg& e) { return e.kind == proto::EventKind::JogExpired; });
+    EXPECT_TRUE(expired);
+}
+
+TEST(SimFirmware, AdvanceRunsWholeTicksAndCarriesTheRemainder)
+{
+    Host h(sim::analyzerConfig());
+    for (int i = 0; i < 1000; ++i)
+        h.fw.advance(0.00025);  // 2.5 ticks each
+    EXPECT_EQ(h.fw.machine().timeUs(), 250000u);
+}
