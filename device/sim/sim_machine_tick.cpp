@@ -145,8 +145,14 @@ void SimMachine::tickVelocityModes()
         else if (s.v > target)
             s.v = std::max(target, s.v - dv);
         double next = pos + s.v * kTickS;
-        if (s.mode == Mode::Jog && s.homed)
-            next = std::clamp(next, softMinMachine(i), softMaxMachine(i));
+        if (s.mode == Mode::Jog && s.homed) {
+            // Clamp only ahead of the axis: one parked outside limits set narrower
+            // than where it stands must drive back in, not jump there in one tick.
+            if (s.v > 0)
+                next = std::min(next, std::max(pos, softMaxMachine(i)));
+            else if (s.v < 0)
+                next = std::max(next, std::min(pos, softMinMachine(i)));
+        }
         s.plant->setReference(next, s.v);
         if (s.mode == Mode::Homing) {
             tickHoming(i);

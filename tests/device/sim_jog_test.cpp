@@ -202,6 +202,33 @@ TEST(SimJog, StopsAtTheSoftLimitWhenHomed)
     }
 }
 
+TEST(SimJog, FromOutsideNarrowedLimitsDrivesBackInWithoutJumping)
+{
+    sim::SimMachine m(sim::analyzerConfig());
+    ASSERT_FALSE(m.home(bit(0)));
+    ASSERT_TRUE(runUntilIdle(m, 30));
+    proto::SetLimitsRequest q;
+    q.axis = 0;
+    q.limits = {10000000, 150000000};  // X stands at 0, below the new lower limit
+    ASSERT_FALSE(m.setLimits(q));
+    double maxStepMm = 0, prev = m.axis(0).reference();
+    for (int n = 0; n < 5; ++n) {
+        ASSERT_FALSE(m.jogVelocity(jog(0, 20)));
+        for (long k = 0; k < ticksFor(0.1); ++k) {
+            m.tick();
+            m.takeEvents();
+            maxStepMm = std::max(maxStepMm, std::abs(m.axis(0).reference() - prev));
+            prev = m.axis(0).reference();
+        }
+    }
+    EXPECT_LE(maxStepMm, 20 * sim::SimMachine::kTickS + 1e-9) << "the reference jumped";
+    EXPECT_NEAR(m.status().axes[0].commanded / 1e6, 10.0, 0.5);
+    // Inside now, it cannot jog back out.
+    ASSERT_FALSE(m.jogVelocity(jog(0, -5)));
+    runCollect(m, 0.15);
+    EXPECT_GE(m.status().axes[0].commanded / 1e6, 10.0 - 1e-6);
+}
+
 TEST(SimJog, RunsIntoTheSwitchWhenUnhomed)
 {
     sim::SimMachine m(sim::analyzerConfig());
