@@ -86,8 +86,7 @@ void SimMachine::tickHoming(int i)
             // HomeDone (finishAxis) zeroes the counters there once more.
             const double noise = c.switchRepeatability > 0 ? s.plant->uniform(-c.switchRepeatability, c.switchRepeatability) : 0;
             zeroCounters(i, c.homeSwitchAt - noise);
-            s.homed = true;
-            s.mode = Mode::Idle;
+            s.mode = Mode::Idle;  // homed only once zero is reached (finishAxis, HomeDone)
             planSegment({i}, {s.offset}, c.homeFastSpeed, -1, proto::EventKind::HomeDone, nullptr);
         }
         break;

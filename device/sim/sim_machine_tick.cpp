@@ -19,6 +19,7 @@ void SimMachine::finishAxis(int i, proto::EventKind kind, const std::string& tex
     if (kind == proto::EventKind::HomeDone) {
         zeroCounters(i, commandedLogical(i));  // the encoder agrees with the step counter at home
         s.homeOffset = s.offset;               // soft limits are relative to home
+        s.homed = true;
     }
     raiseEvent(kind, i, text);
     if (!m_cfg.closedLoop && !s.lostReported) {

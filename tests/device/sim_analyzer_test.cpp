@@ -205,6 +205,26 @@ TEST(SimAnalyzer, HomesZBeforeXAndY)
     EXPECT_LT(zDone->deviceTimeUs, yDone->deviceTimeUs);
 }
 
+TEST(SimAnalyzer, ReportsHomedOnlyOnceHomeIsReached)
+{
+    // The homed lamp must not light while the axis is still travelling to zero.
+    sim::SimMachine m(sim::analyzerConfig());
+    Runner r{m, {}};
+    ASSERT_FALSE(m.home(bit(kZ)));
+    bool homedWhileMoving = false;
+    ASSERT_TRUE(r.runUntilIdle(30, [&] {
+        const auto f = m.status().axes[kZ].flags;
+        if ((f & proto::AxisHomed) && (f & proto::AxisMoving))
+            homedWhileMoving = true;
+        if (f & proto::AxisHomed)
+            EXPECT_TRUE(r.find(EventKind::HomeDone, kZ) || (r.take(), r.find(EventKind::HomeDone, kZ)));
+        else
+            EXPECT_TRUE(f & proto::AxisHoming);
+    }));
+    EXPECT_FALSE(homedWhileMoving);
+    EXPECT_TRUE(m.homed(kZ));
+}
+
 TEST(SimAnalyzer, AxesWaitingForTheirHomingStageAreBusy)
 {
     sim::SimMachine m(sim::analyzerConfig());

@@ -144,6 +144,15 @@ INSTANTIATE_TEST_SUITE_P(BothInstruments, SimJogWatchdog,
                                            JogCase{"stage_X", true, 0}, JogCase{"stage_Y", true, 1}),
                          [](const ::testing::TestParamInfo<JogCase>& i) { return std::string(i.param.name); });
 
+TEST(SimJog, WatchdogStopStaysWithinWhatTheMotorsCanDo)
+{
+    // The watchdog's ramp is steeper than a normal stop; it must still be one the
+    // motor can follow without losing steps, from every axis' top speed.
+    for (const auto& cfg : {sim::analyzerConfig(), sim::stageConfig()})
+        for (const auto& a : cfg.axes)
+            EXPECT_LE(a.maxSpeed / sim::SimMachine::kJogStopBudgetS, a.physicalMaxAccel) << cfg.model << " " << a.letter;
+}
+
 TEST(SimJog, KeepsRunningWhileRefreshed)
 {
     sim::SimMachine m(sim::analyzerConfig());
