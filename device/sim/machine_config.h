@@ -60,7 +60,10 @@ struct MachineConfig {
     double driveLagS = 0.002;       ///< carriage follows the screw with this first-order lag (closed loop)
     double inPositionWindow = 0.002;///< closed loop: |error| below this for settleTimeS means arrived
     double settleTimeS = 0.01;
-    double lostStepTolerance = 0.05;///< open loop: |encoder − command| above this at rest raises LostSteps
+    /// Open loop: |encoder − command| above this at rest raises LostSteps. It must
+    /// clear healthy lead error plus backlash (50 µm on the analyzer's X at 199 mm
+    /// after a reversal); 0.1 mm is 2.5 full steps of an 8 mm lead.
+    double lostStepTolerance = 0.1;
     PidGains gains;
     ClosedLoopTuning loop;
     std::uint64_t seed = 12345;     ///< noise is deterministic for a given seed
