@@ -29,6 +29,10 @@ void Firmware::receive(const std::uint8_t* data, std::size_t size)
 
 void Firmware::advance(double dtS)
 {
+    // A NaN would poison the clock for good and stop the machine's time (and its
+    // watchdog) forever; time never runs backwards either.
+    if (!(dtS > 0) || !std::isfinite(dtS))
+        return;
     m_pendingS += dtS;
     while (m_pendingS >= SimMachine::kTickS * 0.999999) {
         m_pendingS -= SimMachine::kTickS;
@@ -265,7 +269,12 @@ void Firmware::sampleTelemetry()
     ++m_batch.sampleCount;
     ++m_sampleIndex;
     if (m_batch.sampleCount >= m_samplesPerBatch) {
-        sendFrame(static_cast<std::uint8_t>(proto::MsgType::TelemetryBatch), m_eventSeq++, proto::encode(m_batch), m_out);
+        // Overflow policy: a host that stops reading loses telemetry, never replies
+        // or events; the gap in firstSampleIndex tells it what it lost.
+        if (m_out.size() < kMaxPendingOutputBytes)
+            sendFrame(static_cast<std::uint8_t>(proto::MsgType::TelemetryBatch), m_eventSeq++, proto::encode(m_batch), m_out);
+        else
+            ++m_droppedBatches;
         m_batch.sampleCount = 0;
     }
 }

@@ -14,6 +14,9 @@ namespace sim {
 
 class Firmware {
 public:
+    /// Output not yet drained beyond which telemetry batches are dropped.
+    static constexpr std::size_t kMaxPendingOutputBytes = 64 * 1024;
+
     Firmware(const MachineConfig& config, std::uint32_t linkBaud);
 
     /// Bytes from the host, in any chunking.
@@ -28,6 +31,7 @@ public:
     const proto::DecoderStats& decoderStats() const { return m_decoder.stats(); }
     std::uint64_t executedRequests() const { return m_executed; }
     std::uint64_t duplicateRequests() const { return m_duplicates; }
+    std::uint64_t droppedTelemetryBatches() const { return m_droppedBatches; }
     std::uint32_t linkBaud() const { return m_linkBaud; }
     void setLinkBaud(std::uint32_t baud) { m_linkBaud = baud; }
 
@@ -50,7 +54,7 @@ private:
     std::vector<std::uint8_t> m_out;
     double m_pendingS = 0;
     std::uint16_t m_eventSeq = 0;
-    std::uint64_t m_executed = 0, m_duplicates = 0;
+    std::uint64_t m_executed = 0, m_duplicates = 0, m_droppedBatches = 0;
 
     /// Replies to the last requests, so a retransmission (same seq and bytes) is
     /// answered again without acting twice. Fixed ring: the oldest entry is overwritten.

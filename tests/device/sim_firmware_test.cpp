@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace {
@@ -494,6 +495,37 @@ TEST(SimFirmware, JogOverTheWireStopsWhenRefreshesStop)
     const bool expired = std::any_of(h.events.begin(), h.events.end(),
                                      [](const proto::EventMsg& e) { return e.kind == proto::EventKind::JogExpired; });
     EXPECT_TRUE(expired);
+}
+
+TEST(SimFirmware, AHostThatStopsReadingLosesTelemetryNotMemory)
+{
+    Host h(sim::stageConfig(), 921600);
+    proto::SubscribeRequest r;
+    r.rateHz = 1000;
+    r.channels = {{0, proto::ChannelKind::Measured}, {1, proto::ChannelKind::Measured}};
+    ASSERT_TRUE(h.okFor(h.send(MsgType::Subscribe, proto::encode(r)), MsgType::Subscribe));
+    h.fw.advance(60.0);  // a minute without draining
+    std::vector<std::uint8_t> out;
+    h.fw.drainOutput(out);
+    EXPECT_LE(out.size(), sim::Firmware::kMaxPendingOutputBytes + 2048);
+    EXPECT_GT(h.fw.droppedTelemetryBatches(), 0u);
+    // Replies still get through, and the next batches show the gap.
+    const auto seq = h.send(MsgType::Status);
+    EXPECT_TRUE(h.okFor(seq, MsgType::Status));
+    h.batches.clear();
+    h.advance(0.1);
+    ASSERT_FALSE(h.batches.empty());
+    EXPECT_GT(h.batches.front().firstSampleIndex, 50000u);
+}
+
+TEST(SimFirmware, NonFiniteOrNegativeTimeIsIgnored)
+{
+    Host h(sim::analyzerConfig());
+    h.fw.advance(std::nan(""));
+    h.fw.advance(-1.0);
+    h.fw.advance(std::numeric_limits<double>::infinity());
+    h.fw.advance(0.01);
+    EXPECT_EQ(h.fw.machine().timeUs(), 10000u);
 }
 
 TEST(SimFirmware, AdvanceRunsWholeTicksAndCarriesTheRemainder)
