@@ -18,6 +18,24 @@ SimulatorHost::SimulatorHost(const sim::MachineConfig& config, qint32 linkBaud, 
     m_timer.setTimerType(Qt::PreciseTimer);
     m_timer.setInterval(1);
     connect(&m_timer, &QTimer::timeout, this, &SimulatorHost::pump);
+    // A device does not go away when its cable is pulled: it keeps running and
+    // answers again once plugged back in. Without this the device end stayed
+    // closed after LoopbackPair::replug() and a reconnecting host met silence.
+    m_reopen.setSingleShot(true);
+    m_reopen.setInterval(50);
+    connect(&m_reopen, &QTimer::timeout, this, [this] {
+        if (!m_end->isOpen())
+            m_end->open();
+    });
+    connect(m_end, &Transport::lost, this, [this] {
+        m_reopening = true;
+        m_reopen.start();
+    });
+    connect(m_end, &Transport::failed, this, [this] {
+        if (m_reopening)
+            m_reopen.start();  // still unplugged: try again shortly
+    });
+    connect(m_end, &Transport::opened, this, [this] { m_reopening = false; });
 }
 
 void SimulatorHost::start()

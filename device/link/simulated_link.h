@@ -32,6 +32,8 @@ private:
     sim::Firmware m_firmware;
     Transport* m_end;
     QTimer m_timer;
+    QTimer m_reopen;          ///< after the link was lost: retries opening until the cable is back
+    bool m_reopening = false;
     QElapsedTimer m_wall;
     qint64 m_lastNs = 0;
     double m_timeScale = 1.0;
