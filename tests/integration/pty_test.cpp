@@ -1,0 +1,250 @@
+// The real serial path: benchpilot-sim serves the reference firmware on a
+// pseudo-terminal, and benchpilot-cli or a SerialTransport opens it like any
+// serial port. The simulator runs at --time-scale 4 to keep homing short.
+#include "device/client/instrument_client.h"
+#include "device/link/serial_transport.h"
+#include "wait.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+#include <csignal>
+
+using namespace itest;
+using dev::LinkState;
+
+namespace {
+
+QString binDir()
+{
+    const QString fromEnv = qEnvironmentVariable("BP_BIN_DIR");
+    if (!fromEnv.isEmpty())
+        return fromEnv;
+    // Run by hand from the build tree: <build>/tests/test_integration next to <build>/app.
+    return QDir(QCoreApplication::applicationDirPath() + QStringLiteral("/../app")).absolutePath();
+}
+
+QString binary(const char* name) { return binDir() + QLatin1Char('/') + QLatin1String(name); }
+
+struct CliRun {
+    bool finished = false;
+    int exitCode = -1;
+    QString out, err;
+    std::string describe() const
+    {
+        return QStringLiteral("exit %1, stdout: %2, stderr: %3").arg(exitCode).arg(out.trimmed(), err.trimmed()).toStdString();
+    }
+};
+
+CliRun runCli(const QStringList& args, int timeoutMs = 60000)
+{
+    QProcess p;
+    p.start(binary("benchpilot-cli"), args);
+    CliRun r;
+    if (!p.waitForStarted(10000)) {
+        r.err = QStringLiteral("could not start %1: %2").arg(binary("benchpilot-cli"), p.errorString());
+        return r;
+    }
+    r.finished = p.waitForFinished(timeoutMs);
+    if (!r.finished) {
+        p.kill();
+        p.waitForFinished(5000);
+    }
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+/// The last line of `text` that parses as a JSON object.
+QJsonObject lastJson(const QString& text)
+{
+    const QStringList lines = text.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    for (auto it = lines.crbegin(); it != lines.crend(); ++it) {
+        const auto doc = QJsonDocument::fromJson(it->toUtf8());
+        if (doc.isObject())
+            return doc.object();
+    }
+    return {};
+}
+
+/// benchpilot-sim on a pty in a private directory; stopped with SIGTERM at the end.
+class PtySimulator {
+public:
+    bool start(const QString& instrument, double timeScale = 4)
+    {
+        if (!m_dir.isValid()) {
+            m_error = QStringLiteral("no temporary directory");
+            return false;
+        }
+        m_link = m_dir.filePath(QStringLiteral("ttyBP"));
+        m_proc.start(binary("benchpilot-sim"), {QStringLiteral("--instrument"), instrument, QStringLiteral("--pty"), m_link,
+                                                 QStringLiteral("--time-scale"), QString::number(timeScale)});
+        if (!m_proc.waitForStarted(10000)) {
+            m_error = QStringLiteral("could not start %1: %2").arg(binary("benchpilot-sim"), m_proc.errorString());
+            return false;
+        }
+        QElapsedTimer t;
+        t.start();
+        while (!m_proc.canReadLine() && t.elapsed() < 10000 && m_proc.state() == QProcess::Running)
+            m_proc.waitForReadyRead(200);
+        if (!m_proc.canReadLine()) {
+            m_error = QStringLiteral("benchpilot-sim printed no line: %1").arg(QString::fromUtf8(m_proc.readAllStandardError()));
+            return false;
+        }
+        m_line = QString::fromUtf8(m_proc.readLine()).trimmed();
+        return true;
+    }
+    ~PtySimulator()
+    {
+        if (m_proc.state() != QProcess::NotRunning) {
+            m_proc.terminate();
+            if (!m_proc.waitForFinished(5000)) {
+                m_proc.kill();
+                m_proc.waitForFinished(5000);
+            }
+        }
+    }
+    QString link() const { return m_link; }
+    QString line() const { return m_line; }
+    QString error() const { return m_error; }
+    QProcess& process() { return m_proc; }
+
+private:
+    QTemporaryDir m_dir;
+    QProcess m_proc;
+    QString m_link, m_line, m_error;
+};
+
+} // namespace
+
+TEST(PtySimulator, PrintsWhereItServesAndRemovesTheSymlinkOnSigint)
+{
+    PtySimulator sim;
+    ASSERT_TRUE(sim.start(QStringLiteral("analyzer"))) << sim.error().toStdString();
+    EXPECT_TRUE(sim.line().startsWith(sim.link() + QStringLiteral(" -> /dev/pts/"))) << sim.line().toStdString();
+    const QFileInfo link(sim.link());
+    ASSERT_TRUE(link.isSymLink());
+    EXPECT_TRUE(link.symLinkTarget().startsWith(QStringLiteral("/dev/pts/"))) << link.symLinkTarget().toStdString();
+
+    ::kill(static_cast<pid_t>(sim.process().processId()), SIGINT);
+    ASSERT_TRUE(sim.process().waitForFinished(5000));
+    EXPECT_EQ(sim.process().exitStatus(), QProcess::NormalExit);
+    EXPECT_EQ(sim.process().exitCode(), 0);
+    EXPECT_FALSE(QFileInfo(sim.link()).isSymLink()) << "the symlink outlived the simulator";
+}
+
+TEST(PtyCli, StatusHomeMoveAndStatusAgainAsJson)
+{
+    PtySimulator sim;
+    ASSERT_TRUE(sim.start(QStringLiteral("stage"))) << sim.error().toStdString();
+    const QStringList port{QStringLiteral("--port"), sim.link()};
+
+    CliRun r = runCli(port + QStringList{QStringLiteral("--json"), QStringLiteral("status")});
+    ASSERT_TRUE(r.finished);
+    ASSERT_EQ(r.exitCode, 0) << r.describe();
+    QJsonObject axes = lastJson(r.out).value(QStringLiteral("axes")).toObject();
+    ASSERT_EQ(axes.keys(), (QStringList{QStringLiteral("X"), QStringLiteral("Y")})) << r.describe();
+    for (const QString& a : axes.keys()) {
+        const QJsonObject o = axes.value(a).toObject();
+        for (const char* key : {"position", "measured"})
+            EXPECT_TRUE(o.value(QLatin1String(key)).isDouble()) << a.toStdString() << "." << key << ": " << r.describe();
+        for (const char* key : {"homed", "moving"})
+            EXPECT_TRUE(o.value(QLatin1String(key)).isBool()) << a.toStdString() << "." << key << ": " << r.describe();
+        EXPECT_FALSE(o.value(QStringLiteral("homed")).toBool());
+    }
+
+    r = runCli(port + QStringList{QStringLiteral("--json"), QStringLiteral("home")});
+    ASSERT_EQ(r.exitCode, 0) << r.describe();
+    axes = lastJson(r.out).value(QStringLiteral("axes")).toObject();
+    EXPECT_TRUE(axes.value(QStringLiteral("X")).toObject().value(QStringLiteral("homed")).toBool()) << r.describe();
+    EXPECT_TRUE(axes.value(QStringLiteral("Y")).toObject().value(QStringLiteral("homed")).toBool()) << r.describe();
+
+    r = runCli(port + QStringList{QStringLiteral("move"), QStringLiteral("X=12.5"), QStringLiteral("Y=30")});
+    ASSERT_EQ(r.exitCode, 0) << r.describe();
+
+    // A separate run, as a script would do it: the device's state as it is now.
+    r = runCli(port + QStringList{QStringLiteral("status"), QStringLiteral("--json")});
+    ASSERT_EQ(r.exitCode, 0) << r.describe();
+    axes = lastJson(r.out).value(QStringLiteral("axes")).toObject();
+    const QJsonObject x = axes.value(QStringLiteral("X")).toObject(), y = axes.value(QStringLiteral("Y")).toObject();
+    EXPECT_NEAR(x.value(QStringLiteral("position")).toDouble(-1), 12.5, 1e-6) << r.describe();
+    EXPECT_NEAR(y.value(QStringLiteral("position")).toDouble(-1), 30.0, 1e-6) << r.describe();
+    EXPECT_NEAR(x.value(QStringLiteral("measured")).toDouble(-1), 12.5, 0.002) << r.describe();
+    EXPECT_NEAR(y.value(QStringLiteral("measured")).toDouble(-1), 30.0, 0.002) << r.describe();
+    EXPECT_TRUE(x.value(QStringLiteral("homed")).toBool());
+    EXPECT_FALSE(x.value(QStringLiteral("moving")).toBool(true));
+    EXPECT_FALSE(y.value(QStringLiteral("moving")).toBool(true));
+}
+
+TEST(PtyCli, AbsoluteMoveBeforeHomingExitsTwoWithTheReason)
+{
+    PtySimulator sim;
+    ASSERT_TRUE(sim.start(QStringLiteral("stage"))) << sim.error().toStdString();
+    const CliRun r = runCli({QStringLiteral("--port"), sim.link(), QStringLiteral("move"), QStringLiteral("X=5")});
+    ASSERT_TRUE(r.finished);
+    EXPECT_EQ(r.exitCode, 2) << r.describe();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("axis X"))) << r.describe();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("not homed"))) << r.describe();
+}
+
+TEST(PtyCli, MissingPortExitsThreeWithTheReason)
+{
+    QTemporaryDir dir;
+    const QString missing = dir.filePath(QStringLiteral("ttyBP_missing"));
+    QElapsedTimer wall;
+    wall.start();
+    const CliRun r = runCli({QStringLiteral("--port"), missing, QStringLiteral("status")}, 20000);
+    ASSERT_TRUE(r.finished) << "benchpilot-cli hung on a missing port";
+    EXPECT_EQ(r.exitCode, 3) << r.describe();
+    EXPECT_TRUE(r.err.contains(missing)) << r.describe();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("no such port"))) << r.describe();
+    EXPECT_TRUE(r.out.isEmpty()) << r.describe();
+    EXPECT_LT(wall.elapsed(), 10000) << "a missing port must not wait for a timeout";
+}
+
+TEST(PtySerial, SimulatorTerminatedDuringMoveIsLinkLostAndItsSymlinkIsGone)
+{
+    PtySimulator sim;
+    ASSERT_TRUE(sim.start(QStringLiteral("stage"))) << sim.error().toStdString();
+    dev::SerialTransport port(sim.link(), 115200);
+    dev::InstrumentClient client;
+    QStringList errors;
+    QObject::connect(&client, &dev::InstrumentClient::linkError, &client, [&](const QString& m) { errors << m; });
+    client.setTransport(&port);
+    client.connectLink();
+    ASSERT_TRUE(waitFor([&] { return client.state() == LinkState::Ready || client.state() == LinkState::Disconnected; }, 5000));
+    ASSERT_EQ(client.state(), LinkState::Ready) << errors.join(QStringLiteral(" | ")).toStdString();
+    EXPECT_EQ(client.identity().kind, proto::DeviceKind::Stage);
+
+    bool accepted = false;
+    client.move({{0, 30.0}}, true, 0, [&](const auto& e) {
+        EXPECT_FALSE(e) << e->message.toStdString();
+        accepted = true;
+    });
+    ASSERT_TRUE(waitFor([&] { return accepted && client.status().axes[0].moving; }, 5000));
+
+    QElapsedTimer wall;
+    wall.start();
+    sim.process().terminate();  // SIGTERM
+    ASSERT_TRUE(waitFor([&] { return client.state() == LinkState::Lost; }, 5000)) << "the client never noticed";
+    EXPECT_LT(wall.elapsed(), 2000);
+    ASSERT_FALSE(errors.isEmpty());
+    EXPECT_TRUE(errors.last().contains(QStringLiteral("link lost"))) << errors.last().toStdString();
+
+    // The event loop above may already have seen it exit.
+    ASSERT_TRUE(sim.process().state() == QProcess::NotRunning || sim.process().waitForFinished(5000));
+    EXPECT_EQ(sim.process().exitStatus(), QProcess::NormalExit);
+    EXPECT_EQ(sim.process().exitCode(), 0);
+    EXPECT_FALSE(QFileInfo(sim.link()).isSymLink()) << "SIGTERM must remove the symlink";
+    EXPECT_FALSE(QFileInfo::exists(sim.link()));
+    client.setTransport(nullptr);
+}
