@@ -8,9 +8,9 @@
 // fuzz_codec-failure.bin. With -DBP_LIBFUZZER and clang -fsanitize=fuzzer the same
 // checks run as LLVMFuzzerTestOneInput; codec, simulator and motion are plain C++,
 // so from the repository root:
-//   clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -DBP_LIBFUZZER -I. \
-//     -isystem /usr/include/eigen3 tests/fuzz/fuzz_codec.cpp device/protocol/*.cpp \
-//     device/sim/*.cpp motion/*.cpp -o fuzz_codec_lf
+//   clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -DBP_LIBFUZZER -I.
+//     -isystem /usr/include/eigen3 tests/fuzz/fuzz_codec.cpp device/protocol/*.cpp
+//     device/sim/*.cpp motion/*.cpp -o fuzz_codec_lf          (one command line)
 //   ./fuzz_codec_lf -max_len=4096 CORPUS_DIR
 //
 // Invariants checked on every input:
