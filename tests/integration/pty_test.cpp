@@ -211,6 +211,42 @@ TEST(PtyCli, MissingPortExitsThreeWithTheReason)
     EXPECT_LT(wall.elapsed(), 10000) << "a missing port must not wait for a timeout";
 }
 
+TEST(PtyCli, BusyPortExitsThreeSayingItIsBusy)
+{
+    PtySimulator sim;
+    ASSERT_TRUE(sim.start(QStringLiteral("stage"))) << sim.error().toStdString();
+    // Another program (here: this one) has the port open.
+    dev::SerialTransport holder(sim.link(), 115200);
+    bool opened = false;
+    QObject::connect(&holder, &dev::Transport::opened, &holder, [&] { opened = true; });
+    holder.open();
+    ASSERT_TRUE(waitFor([&] { return opened; }, 3000));
+
+    const CliRun r = runCli({QStringLiteral("--port"), sim.link(), QStringLiteral("status")}, 20000);
+    ASSERT_TRUE(r.finished) << "benchpilot-cli hung on a busy port";
+    EXPECT_EQ(r.exitCode, 3) << r.describe();
+    EXPECT_TRUE(r.err.contains(sim.link())) << r.describe();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("busy"))) << r.describe();
+    holder.close();
+}
+
+TEST(PtyCli, FrozenDeviceExitsThreeWithNoAnswerInsteadOfHanging)
+{
+    PtySimulator sim;
+    ASSERT_TRUE(sim.start(QStringLiteral("analyzer"))) << sim.error().toStdString();
+    const auto pid = static_cast<pid_t>(sim.process().processId());
+    ::kill(pid, SIGSTOP);  // powered, port open, firmware hung
+    QElapsedTimer wall;
+    wall.start();
+    const CliRun r = runCli({QStringLiteral("--port"), sim.link(), QStringLiteral("status")}, 20000);
+    const qint64 ms = wall.elapsed();
+    ::kill(pid, SIGCONT);
+    ASSERT_TRUE(r.finished) << "benchpilot-cli hung on a silent device";
+    EXPECT_EQ(r.exitCode, 3) << r.describe();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("no answer"))) << r.describe();
+    EXPECT_LT(ms, 10000) << "the CLI must give up after the client's reply timeouts";
+}
+
 TEST(PtySerial, SimulatorTerminatedDuringMoveIsLinkLostAndItsSymlinkIsGone)
 {
     PtySimulator sim;
