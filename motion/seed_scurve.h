@@ -14,6 +14,9 @@
 //
 // Peak acceleration is A·t2²/4 = 1.5·vPeak/t2 at t2/2; peak |jerk| is B = 6·vPeak/t2² at the
 // start and end of each ramp (jerk steps there, acceleration and velocity never do).
+// Seed Table 2's "maximum acceleration" (1500 / 2000 mm/s² for 37.5 / 50 mm/s in 0.1 s) equals
+// 4·vMax/t2, which eq. 1 never reaches (562.5 / 750 mm/s²): eq. 1 is right, the column is a
+// machine limit the curve stays under (test Table2PeakAccelerationStaysUnderTheTablesMaximum).
 
 #include "motion/profile.h"
 
