@@ -1,9 +1,6 @@
 // benchpilot-cli: scripts the instruments and the motion library.
 #include "cli_session.h"
-#if __has_include("motion_commands.h")
 #include "motion_commands.h"
-#define BP_HAVE_MOTION_COMMANDS 1
-#endif
 
 #include <QCoreApplication>
 #include <QTextStream>
@@ -88,10 +85,8 @@ int main(int argc, char** argv)
     }
     if (command.isEmpty())
         return usage(QStringLiteral("no command given"));
-#ifdef BP_HAVE_MOTION_COMMANDS
     if (auto rc = cli::runMotionCommand(command, rest, out, err))
         return *rc;
-#endif
     if (!opt.sim.isEmpty() && !opt.port.isEmpty())
         return usage(QStringLiteral("give either --sim or --port, not both"));
     if (opt.sim.isEmpty() && opt.port.isEmpty())

@@ -5,10 +5,7 @@
 #include "widgets/event_log.h"
 #include "widgets/jog_screen.h"
 #include "widgets/message_banner.h"
-#if __has_include("widgets/profiles_screen.h")
 #include "widgets/profiles_screen.h"
-#define BP_HAVE_PROFILES_SCREEN 1
-#endif
 
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -84,9 +81,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     }
     connect(m_jogTabs, &QTabWidget::currentChanged, this, [this](int i) { m_jog[i]->setFocus(); });
     addScreen(QStringLiteral("jog"), tr("Jog"), m_jogTabs);
-#ifdef BP_HAVE_PROFILES_SCREEN
     addScreen(QStringLiteral("profiles"), tr("Profiles"), new ui::ProfilesScreen);
-#endif
     connect(m_nav, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
     m_nav->setCurrentRow(0);
 
