@@ -16,7 +16,10 @@ constexpr std::uint32_t kJogWatchdogMs = 250;
 
 /// Types 0x01–0x1F are queued requests, 0x20–0x3F realtime requests (acted on
 /// the moment they are decoded, ahead of anything queued), 0x80|type their
-/// replies, 0xE0–0xEF device-initiated messages, 0xFF the error reply.
+/// replies, 0xE0–0xEF device-initiated messages, 0xFF the error reply. A device
+/// answers every type below 0x80, undefined ones with ERROR UnknownCommand;
+/// 0x40–0x7F stay undefined because their reply types would collide with
+/// 0xC0–0xFF. See docs/protocol.md.
 enum class MsgType : std::uint8_t {
     Hello = 0x01,
     Status = 0x02,
