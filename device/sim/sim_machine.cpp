@@ -190,6 +190,10 @@ SimMachine::Result SimMachine::planSegment(const std::vector<int>& axes, const s
 
 SimMachine::Result SimMachine::move(const proto::MoveRequest& r)
 {
+    // The decoder guarantees one target per axis; a caller in-process may not.
+    if (r.axisMask == 0 || r.targets.size() != static_cast<std::size_t>(proto::popcount8(r.axisMask)))
+        return error(proto::ErrorCode::BadPayload, -1, static_cast<double>(r.targets.size()),
+                     "a move needs at least one axis and exactly one target per axis in its mask");
     if (auto e = checkAxes(r.axisMask, true))
         return e;
     std::vector<int> axes;
@@ -277,6 +281,9 @@ SimMachine::Result SimMachine::jogStep(const proto::JogStepRequest& r)
 
 SimMachine::Result SimMachine::jogVelocity(const proto::JogVelocityRequest& r)
 {
+    if (r.axisMask == 0 || r.velocities.size() != static_cast<std::size_t>(proto::popcount8(r.axisMask)))
+        return error(proto::ErrorCode::BadPayload, -1, static_cast<double>(r.velocities.size()),
+                     "a jog needs at least one axis and exactly one velocity per axis in its mask");
     if (auto e = checkAxes(r.axisMask, false))
         return e;
     std::size_t k = 0;

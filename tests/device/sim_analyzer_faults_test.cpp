@@ -295,3 +295,24 @@ TEST(SimAnalyzerFaults, RunsAreDeterministicForAFixedSeed)
     EXPECT_EQ(runOnce(7), runOnce(7));
     EXPECT_NE(runOnce(7), runOnce(8));
 }
+
+TEST(SimAnalyzerFaults, InProcessCallersCannotReadPastTheTargets)
+{
+    // SimMachine is called directly by in-process hosts, without the decoder's checks.
+    sim::SimMachine m(sim::analyzerConfig());
+    proto::MoveRequest mv;
+    mv.relative = true;
+    mv.axisMask = bit(kX) | bit(kY);
+    mv.targets = {nm(1)};
+    auto e = m.move(mv);
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, ErrorCode::BadPayload);
+    mv.axisMask = 0;
+    mv.targets = {};
+    EXPECT_TRUE(m.move(mv));
+    proto::JogVelocityRequest j;
+    j.axisMask = bit(kZ);
+    e = m.jogVelocity(j);
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, ErrorCode::BadPayload);
+}
