@@ -29,6 +29,31 @@ ChannelStore::ChannelStore(std::size_t capacity)
     m_runs.reserve(16);
 }
 
+ChannelStore::ChannelStore(const ChannelStore& other, std::size_t capacity) : ChannelStore(capacity)
+{
+    m_outOfOrder = other.m_outOfOrder;
+    if (other.m_count == 0)
+        return;
+    const std::size_t n = std::min(other.m_count, m_capacity);
+    const std::uint64_t firstSeq = other.m_nextSeq - n;
+    std::size_t slot = (other.oldestSlot() + (other.m_count - n)) % other.m_capacity;
+    // Run by run, each cut at the other ring's seam: periods and times carry over.
+    for (std::size_t r = other.runOf(firstSeq); r < other.m_runs.size(); ++r) {
+        const Run& run = other.m_runs[r];
+        std::uint64_t k = firstSeq > run.firstSeq ? firstSeq - run.firstSeq : 0;
+        while (k < run.count) {
+            const std::size_t chunk = static_cast<std::size_t>(
+                std::min<std::uint64_t>(run.count - k, other.m_capacity - slot));
+            if (run.count == 1)
+                append(run.t0S, other.m_values[slot]);
+            else
+                appendRun(run.timeAt(k), run.periodS, other.m_values.get() + slot, chunk);
+            k += chunk;
+            slot = (slot + chunk) % other.m_capacity;
+        }
+    }
+}
+
 std::size_t ChannelStore::capacity() const { return m_capacity; }
 std::size_t ChannelStore::size() const { return m_count; }
 std::uint64_t ChannelStore::outOfOrderDropped() const { return m_outOfOrder; }

@@ -32,6 +32,9 @@ public:
     /// `capacity` samples at most; when full the oldest sample is overwritten
     /// (the stated overflow policy: the window slides, nothing else is lost).
     explicit ChannelStore(std::size_t capacity);
+    /// A store of `capacity` holding the newest samples of `other` (as many as fit),
+    /// times kept as they were: for resizing when the window or the rate changes.
+    ChannelStore(const ChannelStore& other, std::size_t capacity);
 
     std::size_t capacity() const;
     std::size_t size() const;

@@ -350,6 +350,37 @@ TEST(TelemetryStore, DecimationEqualsBruteForceOnRandomStreams)
     EXPECT_GT(decimations, 300);
 }
 
+TEST(TelemetryStore, ResizedCopyKeepsTheNewestSamplesAndTheirTimes)
+{
+    // A wrapped ring with runs of two rates and a gap, copied bigger and smaller.
+    ChannelStore s(1000);
+    const auto a = ramp(1500), b = ramp(300, 5000);
+    s.appendRun(3.0, 0.001, a.data(), a.size());
+    s.appendRun(10.0, 0.0005, b.data(), b.size());
+    s.append(11.0, -1);
+    ASSERT_EQ(s.size(), 1000u);
+    for (const std::size_t cap : {5000u, 1000u, 301u, 7u}) {
+        const ChannelStore c(s, cap);
+        ASSERT_EQ(c.capacity(), cap);
+        ASSERT_EQ(c.size(), std::min<std::size_t>(cap, 1000));
+        const std::size_t skip = s.size() - c.size();
+        for (std::size_t i = 0; i < c.size(); ++i) {
+            ASSERT_NEAR(c.at(i).tS, s.at(skip + i).tS, 1e-12) << "capacity " << cap << " i " << i;
+            ASSERT_EQ(c.at(i).value, s.at(skip + i).value);
+        }
+        std::vector<MinMax> got(37);
+        c.decimate(c.firstTime(), 11.5, 37, got.data());
+        const auto want = bruteDecimate(c, c.firstTime(), 11.5, 37);
+        for (std::size_t k = 0; k < got.size(); ++k) {
+            ASSERT_EQ(got[k].empty(), want[k].empty());
+            if (!want[k].empty()) {
+                EXPECT_EQ(got[k].min, want[k].min);
+                EXPECT_EQ(got[k].max, want[k].max);
+            }
+        }
+    }
+}
+
 TEST(TelemetryStore, PeriodicStreamMemoryStaysPut)
 {
     // An hour-long periodic stream through a small ring: no per-batch growth.
