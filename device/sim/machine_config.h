@@ -21,7 +21,10 @@ struct AxisConfig {
     double accelTimeS = 0.1;        ///< seed 000 S-curve acceleration phase
     double maxAccel = 1000;         ///< jerk-limited planner, per s²; also the jog ramp
     double maxJerk = 20000;         ///< per s³
-    double physicalMaxAccel = 4000; ///< beyond this the motor slips and loses steps
+    /// Per s²: the motor's pull-out limit. Every ramp the firmware plans (the jog
+    /// watchdog's steep stop included, see its test) stays below it; the plant
+    /// models slip from overload (SimAxis::setLoadFactor), not from acceleration.
+    double physicalMaxAccel = 4000;
     double homeFastSpeed = 20;
     double homeSlowSpeed = 2;
     double homeBackoff = 1.0;       ///< travel off the switch before the slow re-approach
