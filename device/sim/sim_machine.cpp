@@ -450,6 +450,11 @@ SimMachine::Result SimMachine::setLimits(const proto::SetLimitsRequest& r)
         return error(proto::ErrorCode::BadAxis, -1, r.axis, "axis index " + std::to_string(r.axis) + " does not exist");
     AxisState& s = st(r.axis);
     const auto& c = s.plant->config();
+    // Limits live in home coordinates; before homing the axis' coordinates are
+    // wherever it was powered up, so a limit given in them would land anywhere.
+    if (!s.homed)
+        return error(proto::ErrorCode::NotHomed, r.axis, r.limits.min / scale(r.axis),
+                     std::string("axis ") + c.letter + " is not homed: soft limits are set in homed coordinates");
     // Requests are logical; the limits are kept in home coordinates.
     const double toHome = s.offset - s.homeOffset;
     const double minLogical = r.limits.min / scale(r.axis), maxLogical = r.limits.max / scale(r.axis);
@@ -472,8 +477,11 @@ proto::LimitsReply SimMachine::limits() const
     proto::LimitsReply r;
     for (int i = 0; i < axisCount(); ++i) {
         const AxisState& s = st(i);
-        r.axes.push_back({static_cast<std::int32_t>(std::lround((softMinMachine(i) - s.offset) * scale(i))),
-                          static_cast<std::int32_t>(std::lround((softMaxMachine(i) - s.offset) * scale(i)))});
+        // Unhomed, the firmware cannot place its limits in the power-up coordinates:
+        // it reports them as configured, in the coordinates homing will establish.
+        const double shift = s.homed ? s.offset - s.homeOffset : 0.0;
+        r.axes.push_back({static_cast<std::int32_t>(std::lround((s.softMin - shift) * scale(i))),
+                          static_cast<std::int32_t>(std::lround((s.softMax - shift) * scale(i)))});
     }
     return r;
 }

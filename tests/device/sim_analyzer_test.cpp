@@ -447,6 +447,25 @@ TEST_F(SimAnalyzerHomed, SetAndGetLimitsValidates)
     EXPECT_EQ(m.limits().axes[kY].max, nm(150));
 }
 
+TEST(SimAnalyzer, SoftLimitsBeforeHomingAreTheConfiguredOnesAndCannotBeSet)
+{
+    // Unhomed coordinates are wherever the axis was at power-up: limits given or
+    // shown in them would mean nothing.
+    sim::SimMachine m(sim::analyzerConfig());
+    const auto l = m.limits();
+    ASSERT_EQ(l.axes.size(), 4u);
+    EXPECT_EQ(l.axes[kX].min, 0);
+    EXPECT_EQ(l.axes[kX].max, nm(200));
+    EXPECT_EQ(l.axes[kZ].max, nm(100));
+    proto::SetLimitsRequest q;
+    q.axis = kZ;
+    q.limits = {nm(5), nm(50)};
+    const auto e = m.setLimits(q);
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, ErrorCode::NotHomed);
+    EXPECT_NE(e->message.find("axis Z"), std::string::npos) << e->message;
+}
+
 TEST_F(SimAnalyzerHomed, MoveToItsOwnPositionFinishesAtOnce)
 {
     const auto e = m.move(absMove(bit(kX), {0}));
