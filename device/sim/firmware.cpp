@@ -212,7 +212,10 @@ void Firmware::subscribe(const proto::Frame& f, std::vector<std::uint8_t>& reply
         return sendError(f.seq, e, reply);
     }
     const std::size_t ch = req->channels.size();
-    const std::uint32_t ticksPerSample = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(std::lround(double(tickRate) / req->rateHz)));
+    // The sample clock divides the tick rate. Round the period up so a subscription
+    // never runs faster than asked (300 Hz gives 294 Hz, not 303 Hz, and 6000 Hz
+    // gives 5000 Hz, not 10000 Hz): a rate the link was said to carry must fit.
+    const std::uint32_t ticksPerSample = (tickRate + req->rateHz - 1) / req->rateHz;
     const double rate = double(tickRate) / ticksPerSample;
     const std::size_t maxFit = (proto::kMaxPayloadBytes - proto::telemetryHeaderBytes(ch)) / (4 * ch);
     if (maxFit == 0) {
@@ -232,7 +235,10 @@ void Firmware::subscribe(const proto::Frame& f, std::vector<std::uint8_t>& reply
         ++spb;
     if (bytesPerSecond(spb) > capacity) {
         const double perSampleFull = double(proto::wireBytesForPayload(proto::telemetryHeaderBytes(ch) + 4 * ch * maxFit)) / double(maxFit);
-        const auto maxRate = static_cast<std::int32_t>(std::floor(capacity / perSampleFull));
+        // The fastest achievable rate (tick rate / whole ticks) that fits, floored:
+        // asking for it again is accepted.
+        const double minTicks = std::ceil(double(tickRate) * perSampleFull / capacity);
+        const auto maxRate = static_cast<std::int32_t>(std::floor(double(tickRate) / std::max(1.0, minTicks)));
         e.code = proto::ErrorCode::OverCapacity;
         e.value = maxRate;
         e.message = std::to_string(static_cast<long>(rate)) + " Hz × " + std::to_string(ch) + " channels needs "

@@ -340,6 +340,50 @@ TEST(SimFirmware, SubscriptionAboveLinkCapacityIsRefusedWithTheCapacity)
     EXPECT_TRUE(h.okFor(ok, MsgType::Subscribe)) << (h.errorFor(ok) ? h.errorFor(ok)->message : "");
 }
 
+TEST(SimFirmware, TheRateOfferedInACapacityRefusalIsAlwaysAccepted)
+{
+    // A host that retries at the offered rate must not be refused again, whatever
+    // the baud rate and channel count.
+    for (std::uint32_t baud : {1200u, 9600u, 19200u, 38400u, 57600u, 115200u, 230400u, 921600u}) {
+        for (std::size_t channels = 1; channels <= 8; ++channels) {
+            Host h(sim::analyzerConfig(), baud);
+            proto::SubscribeRequest r;
+            r.rateHz = 10000;
+            for (std::size_t c = 0; c < channels; ++c)
+                r.channels.push_back({static_cast<std::uint8_t>(c % 4), static_cast<proto::ChannelKind>(c / 4)});
+            const auto e = h.errorFor(h.send(MsgType::Subscribe, proto::encode(r)));
+            if (!e)
+                continue;  // the link carries the full rate
+            ASSERT_EQ(e->code, ErrorCode::OverCapacity);
+            if (e->value <= 0)
+                continue;  // not even 1 Hz fits: nothing to retry
+            r.rateHz = static_cast<std::uint32_t>(e->value);
+            const auto seq = h.send(MsgType::Subscribe, proto::encode(r));
+            EXPECT_TRUE(h.okFor(seq, MsgType::Subscribe))
+                << baud << " baud, " << channels << " channels, offered " << e->value << " Hz: "
+                << (h.errorFor(seq) ? h.errorFor(seq)->message : "");
+        }
+    }
+}
+
+TEST(SimFirmware, ASubscriptionNeverRunsFasterThanAsked)
+{
+    // The sample clock divides 10 kHz; a rate in between is served by the next
+    // slower one, never the next faster (which the link might not carry).
+    for (std::uint32_t asked : {6000u, 3001u, 300u, 7u}) {
+        Host h(sim::stageConfig(), 4000000);
+        proto::SubscribeRequest r;
+        r.rateHz = asked;
+        r.channels = {{0, proto::ChannelKind::Measured}};
+        const auto seq = h.send(MsgType::Subscribe, proto::encode(r));
+        ASSERT_TRUE(h.okFor(seq, MsgType::Subscribe)) << asked;
+        const auto reply = proto::decodeSubscribeReply(h.replyTo(seq)->payload);
+        ASSERT_TRUE(reply);
+        EXPECT_LE(reply->rateHz, asked);
+        EXPECT_GE(reply->rateHz, asked * 0.5);
+    }
+}
+
 TEST(SimFirmware, SubscriptionBatchesAreConsecutive)
 {
     Host h(sim::stageConfig(), 921600);
