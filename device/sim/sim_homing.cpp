@@ -14,7 +14,10 @@ SimMachine::Result SimMachine::home(std::uint8_t mask)
         mask = static_cast<std::uint8_t>((1u << axisCount()) - 1);
     if (auto e = checkAxes(mask, true))
         return e;
-    m_homeStages.clear();
+    // One homing sequence at a time: a second one would drop the stages of the
+    // first that have not started yet.
+    if (!m_homeStages.empty())
+        return error(proto::ErrorCode::Busy, -1, 0, "a homing sequence is still running");
     // The analyzer lifts Z clear of the plate before X and Y sweep to their switches.
     std::uint8_t zMask = 0;
     for (int i = 0; i < axisCount(); ++i)
@@ -109,10 +112,19 @@ void SimMachine::advanceHomingStages()
     if (m_homeStages.empty())
         return;
     const std::uint8_t mask = m_homeStages.front();
-    for (int i = 0; i < axisCount(); ++i)
-        if ((mask & (1u << i)) && (st(i).mode != Mode::Idle || !st(i).homed))
+    bool allHomed = true;
+    for (int i = 0; i < axisCount(); ++i) {
+        if (!(mask & (1u << i)))
+            continue;
+        if (st(i).mode != Mode::Idle)
             return;
+        allHomed = allHomed && st(i).homed;
+    }
     m_homeStages.erase(m_homeStages.begin());
+    // An axis of this stage came to rest unhomed (stopped by a switch, say): the
+    // later stages must not run, nor stay pending and block every later homing.
+    if (!allHomed)
+        cancelHoming("homing cancelled: an axis homed before this one did not reach home");
     startHomingStage();
 }
 

@@ -316,3 +316,32 @@ TEST(SimAnalyzerFaults, InProcessCallersCannotReadPastTheTargets)
     ASSERT_TRUE(e);
     EXPECT_EQ(e->code, ErrorCode::BadPayload);
 }
+
+TEST(SimAnalyzerFaults, AStalledAxisThatNeverFindsItsSwitchFaultsAndEndsTheHoming)
+{
+    // Z stalls (nearly every step slips): it cannot reach its home switch. The
+    // homing must end with a fault naming Z, X/Y/P must not start, and a later
+    // homing must not be refused as "still running".
+    sim::SimMachine m(sim::analyzerConfig());
+    Runner r{m, {}};
+    m.axis(kZ).setLoadFactor(1000);
+    ASSERT_FALSE(m.home(0));
+    ASSERT_TRUE(r.runUntilIdle(60));
+    const auto* fault = r.find(EventKind::Fault, kZ);
+    ASSERT_TRUE(fault);
+    EXPECT_NE(fault->text.find("axis Z"), std::string::npos) << fault->text;
+    EXPECT_TRUE(m.status().axes[kZ].flags & proto::AxisFault);
+    EXPECT_TRUE(m.status().deviceFlags & proto::DeviceFault);
+    for (int i : {kX, kY, kP}) {
+        EXPECT_FALSE(m.homed(i));
+        EXPECT_EQ(commandedMm(m, i), 0) << "axis " << i << " moved although Z never homed";
+        EXPECT_TRUE(r.find(EventKind::Stopped, i)) << "axis " << i << " was not told its homing is off";
+    }
+    m.axis(kZ).setLoadFactor(1);
+    ASSERT_FALSE(m.reset());
+    EXPECT_FALSE(m.status().deviceFlags & proto::DeviceFault);
+    ASSERT_FALSE(m.home(0));
+    ASSERT_TRUE(r.runUntilIdle(60));
+    for (int i = 0; i < 4; ++i)
+        EXPECT_TRUE(m.homed(i)) << i;
+}

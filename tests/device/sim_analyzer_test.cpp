@@ -205,6 +205,21 @@ TEST(SimAnalyzer, HomesZBeforeXAndY)
     EXPECT_LT(zDone->deviceTimeUs, yDone->deviceTimeUs);
 }
 
+TEST(SimAnalyzer, ASecondHomingDoesNotDropTheFirstOnesWaitingAxes)
+{
+    sim::SimMachine m(sim::analyzerConfig());
+    Runner r{m, {}};
+    ASSERT_FALSE(m.home(bit(kX) | bit(kZ)));  // Z now, X after it
+    r.run(0.05);
+    const auto e = m.home(bit(kP));
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, ErrorCode::Busy);
+    ASSERT_TRUE(r.runUntilIdle(60));
+    EXPECT_TRUE(m.homed(kZ));
+    EXPECT_TRUE(m.homed(kX));
+    EXPECT_FALSE(m.home(bit(kP)));
+}
+
 TEST(SimAnalyzer, ReportsHomedOnlyOnceHomeIsReached)
 {
     // The homed lamp must not light while the axis is still travelling to zero.
