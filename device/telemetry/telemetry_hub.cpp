@@ -651,6 +651,7 @@ bool TelemetryHub::startRecording(const QString& csvPath, const QVector<ChannelK
     if (!rec->file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text))
         return fail(tr("cannot write %1: %2").arg(QDir::toNativeSeparators(csvPath), rec->file.errorString()));
     rec->columns = columns;
+    rec->buffer.reserve(kRecordFlushBytes + 4096);
     QByteArray header = "time_s,instrument";
     for (const auto& k : columns) {
         const QString unit = channelUnit(k);
@@ -740,7 +741,7 @@ void TelemetryHub::flushRecording()
         failRecording(r.file.errorString());
         return;
     }
-    r.buffer.clear();  // keeps its allocation: no growth from one flush to the next
+    r.buffer.resize(0);  // keeps its allocation (clear() would free it): no churn from one flush to the next
 }
 
 void TelemetryHub::failRecording(const QString& why)
