@@ -70,7 +70,9 @@ void Firmware::handle(const proto::Frame& f)
     if (f.type >= 0x80)
         return;  // replies, events and errors: only a device sends those, a device ignores them
     const bool hello = f.type == static_cast<std::uint8_t>(proto::MsgType::Hello);
-    if (hello && !(m_lastQueued.valid && m_lastQueued.seq == f.seq && m_lastQueued.payload == f.payload)) {
+    const bool repeatOfLast = m_lastQueued.valid && m_lastQueued.type == f.type && m_lastQueued.seq == f.seq
+        && m_lastQueued.payload == f.payload;
+    if (hello && !repeatOfLast) {
         // A HELLO that is not a repeat of the last queued request starts a new
         // session: a host that restarted numbers its requests afresh, and its
         // first move must not be taken for a retransmission of the previous

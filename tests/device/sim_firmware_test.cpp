@@ -209,6 +209,10 @@ TEST(SimFirmware, RetransmittedRequestIsExecutedOnceAndAnsweredIdentically)
             EXPECT_EQ(f.payload, h.replyTo(42)->payload);
         }
     h.advance(2);
+    // A late retransmission, after the move finished, must not move again either.
+    h.sendRaw(wire);
+    h.advance(2);
+    EXPECT_EQ(h.fw.executedRequests(), executed);
     EXPECT_NEAR(h.status().axes[0].commanded / 1e6, 5.0, 1e-6) << "moved once, not twice";
 }
 
@@ -249,13 +253,24 @@ TEST(SimFirmware, ANewSessionIsNotMistakenForRetransmissions)
         h.advance(1);
     }
     EXPECT_NEAR(h.status().axes[0].commanded / 1e6, 2.0, 1e-6);
-    // A retransmitted HELLO within a session does not forget the session.
-    h.sendRaw(h.frame(MsgType::Move, moveRel(bit(0), {1}), 3));
-    h.sendRaw(h.frame(MsgType::Hello, {}, 4));
-    h.sendRaw(h.frame(MsgType::Hello, {}, 4));
-    h.sendRaw(h.frame(MsgType::Move, moveRel(bit(0), {1}), 3));
+    // The last session ended on a STATUS with the seq the new HELLO has: still a new session.
+    h.sendRaw(h.frame(MsgType::Status, {}, 1));
+    h.sendRaw(h.frame(MsgType::Hello, {}, 1));
+    h.sendRaw(h.frame(MsgType::Move, moveRel(bit(0), {1}), 2));
     h.advance(1);
     EXPECT_NEAR(h.status().axes[0].commanded / 1e6, 3.0, 1e-6);
+    // A retransmitted HELLO is a retransmission like any other: answered from the
+    // cache. Retransmissions within the new session are still caught (the move
+    // has finished first, so a second execution could not hide behind Busy).
+    const auto duplicates = h.fw.duplicateRequests();
+    h.sendRaw(h.frame(MsgType::Hello, {}, 4));
+    h.sendRaw(h.frame(MsgType::Hello, {}, 4));
+    EXPECT_EQ(h.fw.duplicateRequests(), duplicates + 1);
+    h.sendRaw(h.frame(MsgType::Move, moveRel(bit(0), {1}), 5));
+    h.advance(1);
+    h.sendRaw(h.frame(MsgType::Move, moveRel(bit(0), {1}), 5));
+    h.advance(1);
+    EXPECT_NEAR(h.status().axes[0].commanded / 1e6, 4.0, 1e-6);
 }
 
 TEST(SimFirmware, CorruptedRequestIsNeverExecuted)
