@@ -1,6 +1,7 @@
 #include "widgets/jog_screen.h"
 
 #include "widgets/axis_row.h"
+#include "widgets/live_strip.h"
 
 #include <QAbstractSpinBox>
 #include <QApplication>
@@ -61,6 +62,9 @@ JogScreen::JogScreen(dev::InstrumentClient* client, QWidget* parent) : QWidget(p
     m_grid = new QGridLayout(m_gridHost);
     m_grid->setHorizontalSpacing(10);
     top->addWidget(m_gridHost);
+    m_strip = new LiveStrip(this);
+    m_strip->setVisible(false);
+    top->addWidget(m_strip, 3);
     top->addStretch(1);
 
     auto updateSpeedLabel = [this] { m_speedLabel->setText(tr("%1 %").arg(m_speed->value())); };
@@ -84,6 +88,12 @@ JogScreen::JogScreen(dev::InstrumentClient* client, QWidget* parent) : QWidget(p
         refresh();
     });
     rebuild();
+}
+
+void JogScreen::setTelemetry(tele::TelemetryHub* hub, int instrument)
+{
+    m_strip->setTelemetry(hub, instrument);
+    m_strip->setVisible(hub != nullptr);
 }
 
 double JogScreen::speedFraction() const { return m_speed->value() / 100.0; }
@@ -116,6 +126,7 @@ void JogScreen::rebuild()
     for (int i = 0; i < id.axes.size(); ++i) {
         auto* row = new AxisRow(i, id.axes[i], id.kind, m_grid, i + 1, m_gridHost);
         connect(row, &AxisRow::stepRequested, this, [this](int axis, double delta) {
+            m_strip->setAxis(axis);
             const double v = m_client->identity().axes[axis].maxSpeed * speedFraction();
             m_client->jogStep(axis, delta, std::max(v, 1e-3));
         });
@@ -128,6 +139,10 @@ void JogScreen::rebuild()
         m_rows << row;
     }
     m_grid->setColumnStretch(heads.size(), 1);
+    QStringList letters;
+    for (const auto& a : id.axes)
+        letters << QString(a.letter);
+    m_strip->setAxes(letters);
     refresh();
 }
 
@@ -165,6 +180,7 @@ void JogScreen::startHold(int axis, int direction)
     if (!m_client->isReady() || axis < 0 || axis >= m_client->identity().axes.size())
         return;
     m_holds[axis] = direction;
+    m_strip->setAxis(axis);
     m_client->startJog(axis, holdVelocity(axis, direction));
 }
 

@@ -12,9 +12,14 @@ class QLabel;
 class QPushButton;
 class QSlider;
 
+namespace tele {
+class TelemetryHub;
+}
+
 namespace ui {
 
 class AxisRow;
+class LiveStrip;
 
 class JogScreen : public QWidget {
     Q_OBJECT
@@ -30,6 +35,8 @@ public:
     void setSpeedFraction(double f);
     /// Moves farther than this share of an axis' travel ask for confirmation first.
     static constexpr double kFarMoveShare = 0.25;
+    /// Shows the live position / following-error strip of the axis last jogged.
+    void setTelemetry(tele::TelemetryHub* hub, int instrument);
 
 signals:
     void problem(const QString& message);
@@ -63,6 +70,7 @@ private:
     QGridLayout* m_grid;
     QWidget* m_gridHost;
     QList<AxisRow*> m_rows;
+    LiveStrip* m_strip;        ///< hidden until setTelemetry()
     QHash<int, int> m_holds;   ///< axis → direction while a button or key is held
     bool m_fast = false;       ///< Shift held: full speed
 };

@@ -1,5 +1,5 @@
 // benchpilot: the operator and test-bench GUI.
-//   benchpilot [--screenshot FILE --screen NAME [--sim analyzer|stage] [--settle-ms N]]
+//   benchpilot [--screenshot FILE --screen NAME [--sim analyzer|stage] [--settle-ms N] [--home-first] [--exercise]]
 #include "main_window.h"
 #include "screenshot.h"
 
@@ -25,7 +25,9 @@ int main(int argc, char** argv)
                               QStringLiteral("ms"), QStringLiteral("1500"));
     QCommandLineOption script(QStringLiteral("home-first"),
                               QApplication::translate("main", "screenshot: home the shown instrument and move it before the picture"));
-    p.addOptions({shot, screen, sim, settle, script});
+    QCommandLineOption exercise(QStringLiteral("exercise"),
+                                QApplication::translate("main", "screenshot: jog and move the shown instrument so live plots show motion"));
+    p.addOptions({shot, screen, sim, settle, script, exercise});
     p.process(app);
 
     if (p.isSet(shot)) {
@@ -35,6 +37,7 @@ int main(int argc, char** argv)
         r.instrument = p.value(sim);
         r.settleMs = p.value(settle).toInt();
         r.homeFirst = p.isSet(script);
+        r.exercise = p.isSet(exercise);
         return app::takeScreenshot(r);
     }
     app::MainWindow w;

@@ -1,14 +1,17 @@
 #include "main_window.h"
 
 #include "instrument_session.h"
+#include "device/telemetry/telemetry_hub.h"
 #include "widgets/connection_bar.h"
 #include "widgets/event_log.h"
 #include "widgets/jog_screen.h"
 #include "widgets/message_banner.h"
+#include "widgets/plots_screen.h"
 #include "widgets/profiles_screen.h"
 
 #include <QCloseEvent>
 #include <QDockWidget>
+#include <QFileDialog>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
@@ -17,6 +20,7 @@
 #include <QSettings>
 #include <QShortcut>
 #include <QStackedWidget>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTimer>
@@ -29,6 +33,9 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     setWindowTitle(tr("BenchPilot"));
     m_sessions[0] = new InstrumentSession(proto::DeviceKind::Analyzer, tr("Analyzer"), this);
     m_sessions[1] = new InstrumentSession(proto::DeviceKind::Stage, tr("Stage"), this);
+    m_hub = new tele::TelemetryHub(this);
+    for (int i = 0; i < 2; ++i)
+        m_hub->addInstrument(i, m_sessions[i]->name(), m_sessions[i]->client());
 
     auto* central = new QWidget(this);
     auto* v = new QVBoxLayout(central);
@@ -77,10 +84,17 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
         if (m_options.confirmDialogs)
             m_jog[i]->setConfirm([this](const QString& q) { return confirm(q); });
         connect(m_jog[i], &ui::JogScreen::problem, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); });
+        m_jog[i]->setTelemetry(m_hub, i);
         m_jogTabs->addTab(m_jog[i], m_sessions[i]->name());
     }
     connect(m_jogTabs, &QTabWidget::currentChanged, this, [this](int i) { m_jog[i]->setFocus(); });
     addScreen(QStringLiteral("jog"), tr("Jog"), m_jogTabs);
+    m_plots = new ui::PlotsScreen(m_hub);
+    m_plots->setFileChooser([this](const QString& title, const QString& filter) {
+        return QFileDialog::getSaveFileName(this, title, QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation), filter);
+    });
+    connect(m_plots, &ui::PlotsScreen::problem, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); });
+    addScreen(QStringLiteral("plots"), tr("Plots"), m_plots);
     addScreen(QStringLiteral("profiles"), tr("Profiles"), new ui::ProfilesScreen);
     connect(m_nav, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
     m_nav->setCurrentRow(0);

@@ -9,11 +9,16 @@ class QStackedWidget;
 class QTabWidget;
 class QLabel;
 
+namespace tele {
+class TelemetryHub;
+}
+
 namespace ui {
 class ConnectionBar;
 class EventLog;
 class JogScreen;
 class MessageBanner;
+class PlotsScreen;
 } // namespace ui
 
 namespace app {
@@ -39,6 +44,8 @@ public:
     bool showScreen(const QString& name);
     void showInstrument(int index);  ///< 0 analyzer, 1 stage, on screens that have a choice
     ui::JogScreen* jogScreen(int index) { return m_jog[index]; }
+    ui::PlotsScreen* plotsScreen() { return m_plots; }
+    tele::TelemetryHub* telemetry() { return m_hub; }
     ui::MessageBanner* banner() { return m_banner; }
     ui::EventLog* eventLog() { return m_log; }
     QPushButton* estopButton() { return m_estop; }
@@ -62,6 +69,8 @@ private:
 
     MainWindowOptions m_options;
     InstrumentSession* m_sessions[2];
+    tele::TelemetryHub* m_hub;  ///< every instrument's telemetry, for the plots
+    ui::PlotsScreen* m_plots;
     ui::ConnectionBar* m_bars[2];
     ui::JogScreen* m_jog[2];
     QTabWidget* m_jogTabs;

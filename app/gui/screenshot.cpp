@@ -62,6 +62,22 @@ int takeScreenshot(const ScreenshotRequest& r)
         spin(300);
         spinUntil([&] { return !s->client()->status().anyMoving(); }, 30000);
     }
+    if (r.exercise) {
+        // A jog of X, then a diagonal and a move back in X: the plots and the XY path
+        // show a jog and a move, commanded against measured.
+        dev::InstrumentClient* c = s->client();
+        const auto& x = c->identity().axes[0];
+        const auto& y = c->identity().axes[1];
+        c->startJog(0, 0.5 * x.maxSpeed);
+        spin(1000);
+        c->stopJog(0);
+        spin(400);
+        c->move({{0, 0.08 * (x.travelMax - x.travelMin)}, {1, 0.12 * (y.travelMax - y.travelMin)}}, true);
+        spin(300);
+        spinUntil([&] { return !c->status().anyMoving(); }, 10000);
+        c->move({{0, -0.1 * (x.travelMax - x.travelMin)}}, true);
+        spin(300);
+    }
     spin(r.settleMs);
     if (!w.grab().save(r.file)) {
         std::fprintf(stderr, "benchpilot: cannot write %s\n", qPrintable(r.file));

@@ -9,6 +9,7 @@ struct ScreenshotRequest {
     QString instrument = QStringLiteral("analyzer");
     int settleMs = 1500;
     bool homeFirst = false;  ///< home and move the shown instrument so the picture shows a working machine
+    bool exercise = false;   ///< jog, then move the shown instrument, so live plots show motion
 };
 
 /// Renders one screen of a fresh main window (simulated instruments, no saved
