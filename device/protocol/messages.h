@@ -11,7 +11,8 @@ namespace proto {
 constexpr std::uint8_t kProtocolVersion = 1;
 constexpr std::uint8_t kNoAxis = 0xFF;
 constexpr int kMaxAxes = 8;
-/// Velocity moves stop on the device unless refreshed within this time.
+/// A velocity move not refreshed is at rest this long after its last refresh
+/// (the device trips at 200 ms and brakes hard; see docs/protocol.md).
 constexpr std::uint32_t kJogWatchdogMs = 250;
 
 /// Types 0x01–0x1F are queued requests, 0x20–0x3F realtime requests (acted on
@@ -137,7 +138,7 @@ struct StatusReply {
 struct HomeRequest { std::uint8_t axisMask = 0; };          ///< 0 = all axes in the device's order
 struct MoveRequest {
     bool relative = false;
-    std::uint32_t speed = 0;                               ///< 0 = the axes' default speed
+    std::uint32_t speed = 0;                               ///< in the lowest axis' unit per second; 0 = the axes' default speed
     std::uint8_t axisMask = 0;
     std::vector<WireUnits> targets;                        ///< one per set bit, lowest bit first
 };

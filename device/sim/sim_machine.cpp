@@ -199,6 +199,10 @@ SimMachine::Result SimMachine::move(const proto::MoveRequest& r)
     std::vector<int> axes;
     std::vector<double> targets, speeds;
     std::size_t k = 0;
+    proto::AxisUnit speedUnit = proto::AxisUnit::Millimetre;
+    for (int b = axisCount() - 1; b >= 0; --b)
+        if (r.axisMask & (1u << b))
+            speedUnit = st(b).plant->config().unit;
     for (int b = 0; b < axisCount(); ++b) {
         if (!(r.axisMask & (1u << b)))
             continue;
@@ -218,7 +222,10 @@ SimMachine::Result SimMachine::move(const proto::MoveRequest& r)
                          std::string("axis ") + c.letter + " target " + fmt(b, targetLogical) + " is beyond the "
                              + (low ? "lower" : "upper") + " soft limit " + fmt(b, lim));
         }
-        if (r.speed != 0) {
+        // One speed, one unit: it is in the unit of the first axis named (mm/s for
+        // a move with any linear axis); axes in another unit (the pump beside X)
+        // run at their own default speed rather than at a number meant for mm.
+        if (r.speed != 0 && c.unit == speedUnit) {
             const double v = r.speed / scale(b);
             if (v > c.maxSpeed + 1e-9)
                 return error(proto::ErrorCode::OutOfRange, b, v,
