@@ -186,6 +186,8 @@ void InstrumentClient::transmit(Request& r)
     ++r.attempts;
     if (r.attempts > 1)
         ++m_stats.retransmits;
+    else
+        r.firstSentMs = nowMs();
     r.deadlineMs = nowMs() + kReplyTimeoutMs;
     if (m_transport)
         m_transport->write(r.wire);
@@ -243,13 +245,20 @@ void InstrumentClient::checkTimeouts()
             it = m_realtime.erase(it);
         }
     }
+    // Nothing at all came back while a request was tried kAttempts times: the
+    // device is gone, not merely unlucky with one request. Waiting for a second
+    // request to time out too would report it only after ~1.9 s or later.
+    bool silent = false;
+    for (const auto& r : expired)
+        silent = silent || m_lastFrameMs < r.firstSentMs;
     for (auto& r : expired) {
         ++m_stats.timeouts;
         ++m_consecutiveTimeouts;
         const RequestError e = timeoutError(r);
         complete(std::move(r), e, {});
     }
-    if (!expired.empty() && (m_state == LinkState::Ready || m_state == LinkState::Identified) && m_consecutiveTimeouts >= 2)
+    if (!expired.empty() && (m_state == LinkState::Ready || m_state == LinkState::Identified)
+        && (silent || m_consecutiveTimeouts >= 2))
         linkGone(tr("the device stopped answering"));
     pumpQueue();
 }
@@ -282,6 +291,8 @@ void InstrumentClient::onBytes(const QByteArray& bytes)
 {
     m_frames.clear();
     m_decoder.feed(reinterpret_cast<const std::uint8_t*>(bytes.constData()), static_cast<std::size_t>(bytes.size()), m_frames);
+    if (!m_frames.empty())
+        m_lastFrameMs = nowMs();  // garbage alone does not show the device is alive
     for (const auto& f : m_frames)
         onFrame(f);
 }

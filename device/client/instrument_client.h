@@ -98,6 +98,7 @@ private:
         std::uint16_t seq = 0;
         QByteArray wire;
         int attempts = 0;
+        qint64 firstSentMs = 0;
         qint64 deadlineMs = 0;
         RawDone done;
         bool realtime = false;
@@ -138,6 +139,7 @@ private:
     QElapsedTimer m_clock;
     bool m_statusPending = false;
     int m_consecutiveTimeouts = 0;
+    qint64 m_lastFrameMs = -1;            ///< when a good frame (reply, event, telemetry) last arrived
     QHash<int, double> m_jogs;            ///< axis → velocity (axis units/s) while held
     QVector<proto::ChannelRef> m_channels;
     int m_rateHz = 0;
