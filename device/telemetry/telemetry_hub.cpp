@@ -350,12 +350,21 @@ void TelemetryHub::subscribe(int index, const QVector<proto::ChannelRef>& channe
                 && (err->code == proto::ErrorCode::OverCapacity || err->code == proto::ErrorCode::OutOfRange);
             const int stated = static_cast<int>(err->value);
             if (overCapacity && stated > 0 && attempt < kMaxFallbacks && i->client) {
-                // The device says what it can carry; its sample clock divides down to
-                // whole ticks, so ask for the nearest rate at or below that.
-                int next = stated;
+                // The device states the fastest rate it carries, floored to whole Hz.
+                // Its sample clock divides into whole ticks and serves a request with
+                // the next rate not faster than asked: asking for the floored number
+                // itself would get one tick slower (588 Hz = 10 kHz / 17 is stated;
+                // asking 588 gets 10 kHz / 18 = 556 Hz). So first ask for just above
+                // the tick rate that was meant (589 Hz), and if that is refused, the
+                // stated number as it is, then lower.
                 const auto clock = static_cast<int>(i->client->identity().maxTelemetryRateHz);
-                if (clock > 0)
-                    next = clock / ((clock + stated - 1) / stated);
+                int next = stated;
+                if (attempt == 0 && clock >= stated) {
+                    const int ticks = clock / stated;
+                    next = (clock + ticks - 1) / ticks;
+                }
+                if (next >= rateHz)
+                    next = attempt == 0 ? stated : rateHz - 1;
                 next = std::max(1, std::min(next, rateHz - 1));
                 self->subscribe(index, channels, next, wantedHz, attempt + 1,
                                 err->code == proto::ErrorCode::OverCapacity ? Limit::Link : Limit::SampleClock, stated);
