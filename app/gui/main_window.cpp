@@ -138,7 +138,14 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     updateStatusBar();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    // The sessions are the first children to go; a client that reports "disconnected"
+    // while its session is destroyed must not reach updateStatusBar(), which reads the
+    // other, possibly already destroyed, session.
+    for (auto* s : m_sessions)
+        s->client()->disconnect(this);
+}
 
 void MainWindow::addScreen(const QString& name, const QString& title, QWidget* screen)
 {
