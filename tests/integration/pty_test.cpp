@@ -185,6 +185,23 @@ TEST(PtyCli, StatusHomeMoveAndStatusAgainAsJson)
     EXPECT_FALSE(y.value(QStringLiteral("moving")).toBool(true));
 }
 
+TEST(PtyCli, JogRunsForItsSecondsThenStopsAndWaits)
+{
+    // Real time: at --time-scale K the CLI's 50 ms refreshes are 50·K ms apart on
+    // the device's clock, and from K = 4 on they no longer beat its 200 ms watchdog.
+    PtySimulator sim;
+    ASSERT_TRUE(sim.start(QStringLiteral("stage"), 1)) << sim.error().toStdString();
+    const CliRun r = runCli({QStringLiteral("--port"), sim.link(), QStringLiteral("--json"), QStringLiteral("jog"),
+                             QStringLiteral("X"), QStringLiteral("4"), QStringLiteral("1")});
+    ASSERT_TRUE(r.finished);
+    ASSERT_EQ(r.exitCode, 0) << r.describe();
+    const QJsonObject x = lastJson(r.out).value(QStringLiteral("axes")).toObject().value(QStringLiteral("X")).toObject();
+    // 1 s at 4 mm/s, give or take the start-up and the ramps.
+    EXPECT_GT(x.value(QStringLiteral("position")).toDouble(), 2.5) << r.describe();
+    EXPECT_LT(x.value(QStringLiteral("position")).toDouble(), 6.0) << r.describe();
+    EXPECT_FALSE(x.value(QStringLiteral("moving")).toBool(true)) << r.describe();
+}
+
 TEST(PtyCli, AbsoluteMoveBeforeHomingExitsTwoWithTheReason)
 {
     PtySimulator sim;
