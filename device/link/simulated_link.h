@@ -19,6 +19,10 @@ public:
     SimulatorHost(const sim::MachineConfig& config, qint32 linkBaud, Transport* deviceEnd, QObject* parent = nullptr);
 
     sim::Firmware& firmware() { return m_firmware; }
+    /// Virtual seconds per wall-clock second. The firmware budgets telemetry per
+    /// virtual second of its link, so over a baud-paced LoopbackPair a scale
+    /// above 1 sends more than the wire carries and replies queue behind samples:
+    /// speed the clock up only over an unpaced pair (baud 0) or a pty.
     void setTimeScale(double scale) { m_timeScale = scale; }
     /// Stops the clock; `advance()` then moves virtual time by hand (deterministic tests).
     void setManualClock(bool manual);
