@@ -228,6 +228,18 @@ TEST(ClientOverLoopback, MoveBeyondSoftLimitIsRefusedWithReasonAndLimit)
     const std::size_t mark = s.events.size();
     EXPECT_FALSE(s.call([&](auto cb) { s.client.move({{x, 59.5}}, false, 20.0, cb); }));
     EXPECT_TRUE(s.waitEvent(K::MotionDone, x, mark));
+    s.link.host().setTimeScale(1);
+    ASSERT_TRUE(s.waitStill());
+
+    // Zeroing here moves the origin: the limits read 59.5 mm lower, and are enforced so.
+    ASSERT_FALSE(s.call([&](auto cb) { s.client.setZero(quint8(1u << x), cb); }));
+    ASSERT_TRUE(waitFor([&] { return std::abs(s.client.softLimits()[x].max - 0.5) < 1e-6; }, 3000))
+        << "limits shown after zeroing: " << s.client.softLimits()[x].min << " … " << s.client.softLimits()[x].max;
+    EXPECT_NEAR(s.client.softLimits()[x].min, -54.5, 1e-6);
+    err = s.call([&](auto cb) { s.client.move({{x, 1.0}}, false, 0, cb); });
+    ASSERT_TRUE(err);
+    EXPECT_EQ(err->code, proto::ErrorCode::SoftLimit);
+    EXPECT_NEAR(err->value, 0.5, 1e-6);
 }
 
 TEST(ClientOverLoopback, HoldToJogMovesWhileHeldAndStopsOnRelease)
