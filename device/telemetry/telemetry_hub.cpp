@@ -457,13 +457,15 @@ ChannelStore* TelemetryHub::storeFor(Instrument& in, const proto::ChannelRef& re
 void TelemetryHub::resizeStores()
 {
     for (auto& [index, in] : m_instruments) {
+        trim(in);
         for (auto& [ref, c] : in.stores) {
             const std::size_t need = capacityFor(c.periodS);
             const std::size_t cap = c.store->capacity();
-            if (cap < need || cap > 2 * need)
+            // Shrinking keeps the newest samples: not while paused, when the frozen
+            // range is the oldest part. Resuming shrinks.
+            if (cap < need || (!m_paused && cap > 2 * need))
                 reallocate(c, need);
         }
-        trim(in);
         in.dirty = true;
     }
     emitDirty();
@@ -505,15 +507,10 @@ void TelemetryHub::setPaused(bool paused)
     if (paused == m_paused)
         return;
     m_paused = paused;
-    for (auto& [index, in] : m_instruments) {
+    for (auto& [index, in] : m_instruments)
         in.pausedAtS = paused ? in.latestS : kNaN;
-        if (!paused) {
-            trim(in);
-            in.dirty = true;
-        }
-    }
     if (!paused)
-        emitDirty();
+        resizeStores();  // back to the live window; gives back memory a window change kept
 }
 
 double TelemetryHub::pausedAtS(int index) const

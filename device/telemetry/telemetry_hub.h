@@ -125,7 +125,8 @@ signals:
     /// New samples for the instrument: at most once per event-loop turn.
     void dataArrived(int instrument);
     /// The device now streams at rateHz (0: off). note says why the rate is lower
-    /// than wanted, e.g. "rate limited to 303 Hz by the 115200-baud link".
+    /// than wanted, e.g. "rate limited to 588 Hz by the 115200-baud link (it carries
+    /// at most 588 Hz with 4 channels)"; empty when the wanted rate was granted.
     void subscriptionChanged(int instrument, int rateHz, const QString& note);
     /// A sentence for the status bar or event log.
     void problem(const QString& message);

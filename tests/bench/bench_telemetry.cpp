@@ -402,9 +402,12 @@ void BM_LinkTenMinutesNoLoss(benchmark::State& state)
         spin(50);
         rate = rig.rateHz;
         received = double(rig.hub.samplesReceived(1) - received0);
-        // Whole batches only: the last one is still being filled on the device.
-        const double perBatch = std::ceil(rate * 0.02);
-        expected = rate * durationS;
+        // The reply's rate is rounded to whole Hz; the device samples at clock / ticks.
+        const double clock = rig.client.identity().maxTelemetryRateHz;
+        const double exactRate = clock > 0 ? clock / std::round(clock / rate) : rate;
+        expected = std::floor(exactRate * durationS);
+        // Whole batches only arrive: the last one is still being filled on the device.
+        const double perBatch = std::ceil(rate * 0.1);
         lost = double(rig.hub.lostSamples(1));
         clientLost = double(rig.client.stats().lostSamples);
         utilisation = double(rig.link.pair().bytesCarried(dev::LoopbackPair::B) - carried0) / (baud / 10.0 * durationS);

@@ -481,12 +481,22 @@ TEST_F(TelemetryHubTest, PauseFreezesTheViewWhileCollectionAndRecordingGoOn)
     EXPECT_DOUBLE_EQ(f.hub.latestTimeS(1), 12.799);
     EXPECT_EQ(f.hub.recordedRows(), 12'800u) << "the recording got every sample";
 
+    // A wider window while paused gives room; narrowing it again must not throw the
+    // frozen range (the oldest part) away to keep newer samples.
+    f.hub.setWindowS(5.0);
+    f.feedStage(12.8, 6.0);
+    EXPECT_EQ(frozenSamples(), 1001u);
+    f.hub.setWindowS(1.0);
+    EXPECT_EQ(frozenSamples(), 1001u);
+    EXPECT_DOUBLE_EQ(f.hub.store(f.stageX)->lastTime(), 18.799);
+
     f.hub.setPaused(false);
     EXPECT_TRUE(std::isnan(f.hub.pausedAtS(1)));
-    f.feedStage(12.8, 0.5);
+    f.feedStage(18.8, 0.5);
     st = f.hub.store(f.stageX);
-    EXPECT_GE(st->firstTime(), 13.299 - 1.0 - 1e-9) << "back to the live window";
-    EXPECT_DOUBLE_EQ(st->lastTime(), 13.299);
+    EXPECT_NEAR(st->firstTime(), 19.299 - 1.0, 1e-9) << "back to the live window";
+    EXPECT_DOUBLE_EQ(st->lastTime(), 19.299);
+    EXPECT_LE(st->capacity(), std::size_t(2 * 1000 + 1024 + 1)) << "and its memory";
     f.hub.stopRecording();
 }
 
