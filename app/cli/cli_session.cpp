@@ -50,7 +50,8 @@ CliSession::CliSession(const LinkOptions& options, QTextStream& out, QTextStream
         using K = proto::EventKind;
         if (e.kind == K::LimitHit || e.kind == K::Fault || e.kind == K::EStop || e.kind == K::LostSteps
             || e.kind == K::JogExpired)
-            m_motionErrors << e.text;
+            if (!m_motionErrors.contains(e.text))  // one line per distinct problem, however often it repeats
+                m_motionErrors << e.text;
     });
 }
 

@@ -39,7 +39,7 @@ int main(int argc, char** argv)
     QCommandLineOption ptyPath(QStringLiteral("pty"), QCoreApplication::translate("sim", "symlink to create for the pty"),
                                QStringLiteral("path"));
     QCommandLineOption timeScale(QStringLiteral("time-scale"),
-                                 QCoreApplication::translate("sim", "virtual seconds per wall-clock second"),
+                                 QCoreApplication::translate("sim", "virtual seconds per wall-clock second; above 3 a host refreshing jogs every 50 ms trips the 200 ms jog watchdog"),
                                  QStringLiteral("k"), QStringLiteral("1"));
     QCommandLineOption baud(QStringLiteral("baud"), QCoreApplication::translate("sim", "link speed the firmware assumes"),
                             QStringLiteral("n"), QStringLiteral("115200"));

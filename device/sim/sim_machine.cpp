@@ -37,6 +37,10 @@ void SimMachine::zeroCounters(int i, double logicalHere)
     AxisState& s = st(i);
     s.offset = s.plant->reference() - logicalHere;
     if (m_cfg.closedLoop) {
+        // The servo compares command and grating in one frame, so they share the
+        // offset; a grating counter only holds whole counts, so zero is one too.
+        const double res = s.plant->config().resolution;
+        s.offset = std::round(s.offset / res) * res;
         s.measuredOffset = s.offset;
         return;
     }

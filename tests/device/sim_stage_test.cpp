@@ -215,7 +215,7 @@ TEST_F(SimStageHomed, PidFollowsAStepResponseWithoutRunningAway)
 
 namespace {
 /// Grating counts the reading wanders over during `seconds` after a settled move.
-double wanderAfterMoveUm(sim::MachineConfig cfg, double seconds)
+double wanderAfterMoveUm(sim::MachineConfig cfg, double seconds, double targetMm = 35.25)
 {
     sim::SimMachine m(cfg);
     Runner r{m, {}};
@@ -224,7 +224,7 @@ double wanderAfterMoveUm(sim::MachineConfig cfg, double seconds)
     // Out and back so the last approach reverses through the screw's backlash.
     EXPECT_FALSE(m.move(absMove(bit(kX), {60})));
     EXPECT_TRUE(r.runUntilIdle(30));
-    EXPECT_FALSE(m.move(absMove(bit(kX), {35.25})));
+    EXPECT_FALSE(m.move(absMove(bit(kX), {targetMm})));
     EXPECT_TRUE(r.runUntilIdle(30));
     r.run(0.1);
     double lo = 1e9, hi = -1e9;
@@ -248,7 +248,9 @@ TEST(SimStage, WithoutTheDeadbandTheIntegratorHuntsThroughTheBacklash)
     // quantized grating and 4 µm of backlash settle into a limit cycle.
     auto cfg = sim::stageConfig();
     cfg.loop.deadbandCounts = 0;
-    EXPECT_GE(wanderAfterMoveUm(cfg, 2.0), 0.5);
+    // A target between two grating counts: the loop can never null the error.
+    EXPECT_GE(wanderAfterMoveUm(cfg, 2.0, 35.25025), 0.5);
+    EXPECT_EQ(wanderAfterMoveUm(sim::stageConfig(), 2.0, 35.25025), 0.0);
 }
 
 TEST_F(SimStageHomed, WorkPointShowsSeedTwoUncompensatedErrorAt90mm)
