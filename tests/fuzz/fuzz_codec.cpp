@@ -404,7 +404,7 @@ struct FirmwareChecker {
     std::uint16_t nextDeviceSeq = 0;
     std::uint64_t executed = 0, duplicates = 0;
     ReplyCacheModel cache;
-    std::optional<Frame> lastQueued;  ///< seq and payload of the last executed queued request
+    std::optional<Frame> lastQueued;  ///< type, seq and payload of the last executed queued request
 
     /// Checks a device-initiated frame (event or telemetry batch).
     void deviceFrame(const Frame& f)
@@ -511,7 +511,8 @@ struct FirmwareChecker {
             const Frame& req = *order[next++];
             CHECK(rep.seq == req.seq, "reply seq %u to request seq %u", unsigned{rep.seq}, unsigned{req.seq});
             if (req.type == static_cast<std::uint8_t>(MsgType::Hello)
-                && !(lastQueued && lastQueued->seq == req.seq && lastQueued->payload == req.payload))
+                && !(lastQueued && lastQueued->type == req.type && lastQueued->seq == req.seq
+                     && lastQueued->payload == req.payload))
                 cache.clear();
             if (CachedModel* c = cache.find(req)) {
                 ++duplicates;
