@@ -55,7 +55,7 @@ PlotPanel::PlotPanel(QCustomPlot* plot, QCPMarginGroup* margins, QObject* parent
     leftAxis()->setNumberFormat(QStringLiteral("gb"));
     rightAxis()->setNumberFormat(QStringLiteral("gb"));
     for (QCPAxis* a : {timeAxis(), leftAxis(), rightAxis()}) {
-        a->grid()->setPen(QPen(QColor(0xdd, 0xdd, 0xdd), 0, Qt::DotLine));
+        a->grid()->setPen(QPen(QColor(0xe6, 0xe6, 0xe6), 0));  // solid: dotted pens cost a dash pattern per frame
         QFont f = a->labelFont();
         f.setPointSizeF(f.pointSizeF() * 0.9);
         a->setLabelFont(f);
@@ -180,7 +180,9 @@ void PlotPanel::setTimeLabelsVisible(bool visible, const QString& title)
 
 void PlotPanel::setHighlighted(bool on)
 {
-    m_rect->setBackground(on ? QBrush(QColor(0xf3, 0xf7, 0xff)) : QBrush(Qt::white));
+    // Only the chosen plot gets a fill: the others show the plot's own white background
+    // and cost nothing to paint.
+    m_rect->setBackground(on ? QBrush(QColor(0xf3, 0xf7, 0xff)) : QBrush(Qt::NoBrush));
 }
 
 void PlotPanel::refresh(const PlotDataSource& source, double x0S, double x1S, const double anchorS[2], int columns)

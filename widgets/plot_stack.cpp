@@ -89,6 +89,7 @@ void PlotStack::watchRanges(PlotPanel* p)
 
 void PlotStack::relabel()
 {
+    m_layoutDirty = true;
     for (int i = 0; i < m_panels.size(); ++i) {
         m_panels[i]->setTimeLabelsVisible(i == m_panels.size() - 1, m_timeTitle);
         m_panels[i]->setHighlighted(i == m_highlighted && m_panels.size() > 1);
@@ -112,6 +113,7 @@ bool PlotStack::addChannel(int panel, const tele::ChannelKey& key)
     PlotPanel* p = m_panels.value(panel);
     if (!p || !m_source || !p->addChannel(key, m_source->channelName(key), m_source->channelUnit(key)))
         return false;
+    m_layoutDirty = true;  // a right-hand axis may have appeared
     emit layoutChanged();
     return true;
 }
@@ -121,6 +123,7 @@ bool PlotStack::removeChannel(int panel, const tele::ChannelKey& key)
     PlotPanel* p = m_panels.value(panel);
     if (!p || !p->removeChannel(key))
         return false;
+    m_layoutDirty = true;
     emit layoutChanged();
     return true;
 }
@@ -160,8 +163,11 @@ int PlotStack::columns() const { return m_panels.first()->rect()->width(); }
 void PlotStack::redraw()
 {
     ++m_programmatic;
-    // Lay out first so the columns asked of the stores match the pixels drawn.
-    updateLayout();
+    // Lay out first (when something changed) so the columns asked of the stores match the pixels drawn.
+    if (m_layoutDirty || columns() <= 1) {
+        updateLayout();
+        m_layoutDirty = false;
+    }
     const int cols = columns();
     const QCPRange r = timeRange();
     for (PlotPanel* p : std::as_const(m_panels)) {
@@ -181,6 +187,12 @@ void PlotStack::wheelEvent(QWheelEvent* event)
     if (i >= 0)
         m_panels[i]->rect()->setRangeZoom(event->modifiers() & Qt::ControlModifier ? Qt::Vertical : Qt::Horizontal);
     QCustomPlot::wheelEvent(event);
+}
+
+void PlotStack::resizeEvent(QResizeEvent* event)
+{
+    m_layoutDirty = true;
+    QCustomPlot::resizeEvent(event);
 }
 
 void PlotStack::mousePressEvent(QMouseEvent* event)

@@ -71,6 +71,7 @@ signals:
 protected:
     void wheelEvent(QWheelEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
     void relabel();
@@ -82,6 +83,11 @@ private:
     double m_anchorS[2];
     bool m_autoScale = true;
     int m_programmatic = 0;  ///< > 0 while the stack itself sets ranges
+    /// The plotting area may have changed size (resize, plots or channels added or
+    /// removed): lay out before asking the stores for columns. Otherwise the last
+    /// frame's width is used; a margin that grows with a tick label is at most a few
+    /// columns off for one frame.
+    bool m_layoutDirty = true;
     int m_highlighted = -1;
     QString m_timeTitle;
 };
