@@ -73,7 +73,7 @@ void PlotCursors::rebuild()
         }
         PlotPanel* top = m_stack->panel(0);
         auto* label = new QCPItemText(m_stack);
-        label->setText(c == 0 ? QStringLiteral("A") : QStringLiteral("B"));
+        label->setText(c == 0 ? tr("A") : tr("B"));
         label->setColor(Qt::white);
         label->setBrush(kCursorColour[c]);
         label->setPadding(QMargins(3, 1, 3, 1));

@@ -27,8 +27,7 @@ XyView::XyView(const PlotDataSource* source, QWidget* parent) : QCustomPlot(pare
     QFont lf = legend->font();
     lf.setPointSizeF(lf.pointSizeF() * 0.85);
     legend->setFont(lf);
-    legend->setBrush(QColor(255, 255, 255, 210));
-    axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+    legend->setBorderPen(Qt::NoPen);
     for (QCPAxis* a : {xAxis, yAxis}) {
         a->grid()->setPen(QPen(QColor(0xdd, 0xdd, 0xdd), 0, Qt::DotLine));
         a->setNumberFormat(QStringLiteral("gb"));
@@ -37,6 +36,14 @@ XyView::XyView(const PlotDataSource* source, QWidget* parent) : QCustomPlot(pare
     QFont tf = font();
     tf.setBold(true);
     plotLayout()->addElement(0, 0, new QCPTextElement(this, tr("XY path"), tf));
+    // The legend in a row of its own under the title: inside the axes it would hide
+    // whichever corner the path happens to run through.
+    axisRect()->insetLayout()->take(legend);
+    plotLayout()->insertRow(1);
+    plotLayout()->addElement(1, 0, legend);
+    legend->setFillOrder(QCPLegend::foColumnsFirst);
+    plotLayout()->setRowStretchFactor(1, 0.001);
+    plotLayout()->setRowSpacing(0);
     setInstrument(1);
 }
 
