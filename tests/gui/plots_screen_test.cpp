@@ -210,6 +210,16 @@ TEST_F(PlotsScreenTest, ZoomingTheTimeAxisWithTheWheelPausesTheView)
     EXPECT_LT(stack->timeRange().size(), before.size()) << "zoomed in";
     EXPECT_TRUE(screen->isPaused()) << "a view the user moved stays where they put it";
     EXPECT_EQ(stack->panel(1)->timeAxis()->range().lower, stack->timeRange().lower) << "one time axis for all plots";
+
+    // Ctrl+wheel zooms the values of that plot, and auto-scale lets go of them.
+    ASSERT_TRUE(stack->autoScaleValues());
+    const QCPRange values = stack->panel(0)->leftAxis()->range();
+    QWheelEvent ctrl(QPointF(at), QPointF(stack->mapToGlobal(at)), QPoint(), QPoint(0, 120), Qt::NoButton,
+                     Qt::ControlModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(stack, &ctrl);
+    EXPECT_LT(stack->panel(0)->leftAxis()->range().size(), values.size());
+    EXPECT_FALSE(stack->autoScaleValues());
+    EXPECT_EQ(stack->timeRange().size(), stack->panel(1)->timeAxis()->range().size()) << "time untouched by Ctrl+wheel";
 }
 
 TEST_F(PlotsScreenTest, WindowChoiceSetsTheTimeRangeAndTheHubsWindow)
