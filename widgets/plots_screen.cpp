@@ -5,6 +5,7 @@
 #include "widgets/plot_export.h"
 #include "widgets/plot_panel.h"
 #include "widgets/plot_stack.h"
+#include "widgets/plot_toolbar.h"
 #include "widgets/xy_view.h"
 
 #include <QComboBox>
@@ -26,14 +27,6 @@ const QString kConsumerPlots = QStringLiteral("plots");
 const QString kConsumerXy = QStringLiteral("plots-xy");
 /// A stream silent for longer than this has stopped: its "now" moves on with host time.
 constexpr qint64 kStaleMs = 1000;
-
-QPushButton* toggle(const QString& text, const QString& tip, QWidget* parent)
-{
-    auto* b = new QPushButton(text, parent);
-    b->setCheckable(true);
-    b->setToolTip(tip);
-    return b;
-}
 } // namespace
 
 PlotsScreen::PlotsScreen(tele::TelemetryHub* hub, QWidget* parent) : QWidget(parent), m_hub(hub), m_source(hub)
@@ -142,72 +135,37 @@ PlotsScreen::~PlotsScreen()
 
 void PlotsScreen::buildToolbar(QHBoxLayout* bar)
 {
-    bar->addWidget(new QLabel(tr("Window"), this));
-    m_window = new QComboBox(this);
-    m_window->setObjectName(QStringLiteral("windowChooser"));
-    m_window->setToolTip(tr("How much history the plots keep and show (1 s to 10 min)"));
-    const std::pair<double, QString> windows[] = {
-        {1, tr("1 s")},    {2, tr("2 s")},    {5, tr("5 s")},    {10, tr("10 s")},   {30, tr("30 s")},
-        {60, tr("1 min")}, {120, tr("2 min")}, {300, tr("5 min")}, {600, tr("10 min")}};
-    for (const auto& [s, text] : windows)
-        m_window->addItem(text, s);
-    bar->addWidget(m_window);
+    auto* tools = new PlotToolbar(kDefaultRateHz, kRawCsvLimitSamples, this);
+    bar->addWidget(tools);
+    m_window = tools->window;
+    m_rate = tools->rate;
+    m_pause = tools->pause;
+    m_autoY = tools->autoY;
+    m_cursorsButton = tools->cursors;
+    m_xyButton = tools->xy;
+    m_addPlot = tools->addPlot;
+    m_removePlot = tools->removePlot;
+    m_record = tools->record;
+    m_exportCsv = tools->exportCsv;
+    m_exportPng = tools->exportPng;
+    m_exportPdf = tools->exportPdf;
     connect(m_window, qOverload<int>(&QComboBox::activated), this, [this](int i) { setWindowS(m_window->itemData(i).toDouble()); });
-
-    bar->addWidget(new QLabel(tr("Rate"), this));
-    m_rate = new QComboBox(this);
-    m_rate->setObjectName(QStringLiteral("rateChooser"));
-    m_rate->setToolTip(tr("Sample rate asked of the instruments; the link may carry less (see the status line)"));
-    for (int hz : {50, 100, 200, 500, 1000, 2000, 5000, 10000})
-        m_rate->addItem(hz >= 1000 ? tr("%1 kHz").arg(hz / 1000) : tr("%1 Hz").arg(hz), hz);
-    m_rate->setCurrentIndex(m_rate->findData(kDefaultRateHz));
-    bar->addWidget(m_rate);
     connect(m_rate, qOverload<int>(&QComboBox::activated), this, [this] { updateWanted(); });
-
-    m_pause = toggle(tr("Pause"), tr("Freeze the view; the instruments keep streaming and recording goes on"), this);
-    m_pause->setObjectName(QStringLiteral("pauseButton"));
     connect(m_pause, &QPushButton::toggled, this, &PlotsScreen::setPaused);
-    m_autoY = toggle(tr("Auto Y"), tr("Fit each plot's value axes to what is visible (dragging or Ctrl+wheel on a plot turns it off)"), this);
-    m_autoY->setChecked(true);
     connect(m_autoY, &QPushButton::toggled, this, &PlotsScreen::setAutoScaleY);
-    m_cursorsButton = toggle(tr("Cursors"), tr("Two time cursors A and B with Δt and Δy; drag them along the time axis"), this);
     connect(m_cursorsButton, &QPushButton::toggled, this, &PlotsScreen::setCursorsVisible);
-    m_xyButton = toggle(tr("XY"), tr("Show the stage's XY path, commanded against measured"), this);
-    m_xyButton->setChecked(true);
     connect(m_xyButton, &QPushButton::toggled, this, &PlotsScreen::setXyVisible);
-    m_addPlot = new QPushButton(tr("+ Plot"), this);
-    m_addPlot->setToolTip(tr("Add a plot below the others"));
     connect(m_addPlot, &QPushButton::clicked, this, [this] { addPlot(); });
-    m_removePlot = new QPushButton(tr("− Plot"), this);
-    m_removePlot->setToolTip(tr("Remove the plot chosen in the channel list"));
     connect(m_removePlot, &QPushButton::clicked, this, [this] { removePlot(m_picker->currentPlot()); });
-    for (QPushButton* b : {m_pause, m_autoY, m_cursorsButton, m_xyButton, m_addPlot, m_removePlot})
-        bar->addWidget(b);
-    bar->addStretch(1);
-
-    m_record = toggle(tr("Record…"), tr("Stream every plotted channel to a CSV file until stopped"), this);
-    m_record->setObjectName(QStringLiteral("recordButton"));
     connect(m_record, &QPushButton::clicked, this, [this](bool on) {
         if (on)
             startRecording();
         else
             stopRecording();
     });
-    m_exportCsv = new QPushButton(tr("CSV…"), this);
-    m_exportCsv->setToolTip(tr("Export the visible range as CSV: the raw samples (decimated per pixel column above %1 samples)")
-                                .arg(kRawCsvLimitSamples));
     connect(m_exportCsv, &QPushButton::clicked, this, [this] { exportCsv(); });
-    m_exportPng = new QPushButton(tr("PNG…"), this);
-    m_exportPng->setToolTip(tr("Export the plots as a picture"));
     connect(m_exportPng, &QPushButton::clicked, this, [this] { exportPng(); });
-    m_exportPdf = new QPushButton(tr("PDF…"), this);
-    m_exportPdf->setToolTip(tr("Export the plots as a vector PDF"));
     connect(m_exportPdf, &QPushButton::clicked, this, [this] { exportPdf(); });
-    bar->addWidget(m_record);
-    bar->addSpacing(8);
-    bar->addWidget(new QLabel(tr("Export"), this));
-    for (QPushButton* b : {m_exportCsv, m_exportPng, m_exportPdf})
-        bar->addWidget(b);
 }
 
 int PlotsScreen::plotCount() const { return m_stack->panelCount(); }
@@ -304,6 +262,7 @@ void PlotsScreen::setPaused(bool paused)
         m_pause->setChecked(paused);
     }
     m_pause->setText(paused ? tr("Resume") : tr("Pause"));
+    updateWanted();
     updateStatus();
     scheduleRedraw();
 }
@@ -348,8 +307,9 @@ void PlotsScreen::updateWanted()
 {
     if (!m_hub)
         return;
-    m_hub->setWanted(kConsumerPlots, m_stack->allChannels(), rateHz());
-    m_hub->setWanted(kConsumerXy, m_xyButton->isChecked() ? m_xy->channels() : QVector<tele::ChannelKey>{}, rateHz());
+    const bool wanted = isVisible() || m_paused;
+    m_hub->setWanted(kConsumerPlots, wanted ? m_stack->allChannels() : QVector<tele::ChannelKey>{}, rateHz());
+    m_hub->setWanted(kConsumerXy, wanted && m_xyButton->isChecked() ? m_xy->channels() : QVector<tele::ChannelKey>{}, rateHz());
 }
 
 void PlotsScreen::refreshPicker()
@@ -430,7 +390,14 @@ void PlotsScreen::redraw()
 void PlotsScreen::showEvent(QShowEvent* event)
 {
     QWidget::showEvent(event);
+    updateWanted();
     scheduleRedraw();
+}
+
+void PlotsScreen::hideEvent(QHideEvent* event)
+{
+    QWidget::hideEvent(event);
+    updateWanted();
 }
 
 void PlotsScreen::updateStatus()

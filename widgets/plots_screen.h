@@ -4,7 +4,10 @@
 // the stage, recording to CSV and export of the view (CSV, PNG, PDF).
 //
 // Data comes from the telemetry hub; the screen only says what it wants
-// (setWanted) and reads the stores when it draws. Drawing is coalesced on a
+// (setWanted) and reads the stores when it draws. It wants its channels while it
+// is shown or paused (a paused view must keep its data), not while another screen
+// is up: a 115 200-baud link carries about 2 500 values a second, and a hidden
+// plot should not take them from the screen in front. Recording collects its own. Drawing is coalesced on a
 // single-shot timer (at most one frame per kFrameMs, never per packet, none
 // while hidden or paused).
 #include "widgets/plot_source.h"
@@ -83,6 +86,7 @@ signals:
 
 protected:
     void showEvent(QShowEvent* event) override;
+    void hideEvent(QHideEvent* event) override;
 
 private:
     void buildToolbar(QHBoxLayout* bar);

@@ -222,6 +222,24 @@ TEST_F(PlotsScreenTest, ZoomingTheTimeAxisWithTheWheelPausesTheView)
     EXPECT_EQ(stack->timeRange().size(), stack->panel(1)->timeAxis()->range().size()) << "time untouched by Ctrl+wheel";
 }
 
+TEST_F(PlotsScreenTest, HiddenPlotsLetGoOfTheLinkUnlessPaused)
+{
+    const tele::ChannelKey following = key(1, 0, ChannelKind::FollowingError);  // only the plots want it
+    ASSERT_TRUE(waitFor([&] { return hub->store(following) != nullptr; }, 3000));
+    w->showScreen(QStringLiteral("profiles"));
+    EXPECT_TRUE(waitFor([&] { return hub->store(following) == nullptr; }, 3000)) << "nobody looks: not collected";
+    w->showScreen(QStringLiteral("plots"));
+    ASSERT_TRUE(waitFor([&] { return hub->store(following) != nullptr; }, 3000)) << "shown again: collected again";
+
+    ASSERT_TRUE(streaming());
+    screen->setPaused(true);
+    w->showScreen(QStringLiteral("profiles"));
+    pump(300);
+    EXPECT_NE(hub->store(following), nullptr) << "a paused view keeps its data while another screen is up";
+    screen->setPaused(false);
+    EXPECT_TRUE(waitFor([&] { return hub->store(following) == nullptr; }, 3000));
+}
+
 TEST_F(PlotsScreenTest, WindowChoiceSetsTheTimeRangeAndTheHubsWindow)
 {
     screen->setWindowS(60);
