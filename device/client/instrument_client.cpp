@@ -717,7 +717,9 @@ void InstrumentClient::subscribe(const QVector<proto::ChannelRef>& channels, int
             m_channels = reply.rateHz ? channels : QVector<proto::ChannelRef>{};
             m_rateHz = static_cast<int>(reply.rateHz);
             m_haveSampleIndex = false;  // a new subscription restarts the device's sample counter
-        } else {
+        } else if (!done) {
+            // A caller with its own handler (the telemetry hub falls back to the
+            // stated capacity) decides whether a person needs to hear about it.
             RequestError err = *e;
             err.message = tr("telemetry: %1").arg(err.message);
             emit requestFailed(err);

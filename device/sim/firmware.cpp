@@ -8,6 +8,7 @@ namespace sim {
 namespace {
 constexpr double kLinkHeadroom = 0.9;        // telemetry may use 90% of the wire; replies and events get the rest
 constexpr double kBatchLatencyS = 0.02;      // a batch holds at most this much time unless capacity needs more
+constexpr double kBusyLinkBatchS = 0.1;      // longest a batch may hold when the link is the limit
 }
 
 Firmware::Firmware(const MachineConfig& config, std::uint32_t linkBaud) : m_machine(config), m_linkBaud(linkBaud) {}
@@ -233,14 +234,24 @@ void Firmware::subscribe(const proto::Frame& f, std::vector<std::uint8_t>& reply
         return rate / double(spb) * frame;
     };
     std::size_t spb = std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(rate * kBatchLatencyS)), 1, maxFit);
+    const std::size_t latencySpb = spb;
     while (spb < maxFit && bytesPerSecond(spb) > capacity)
         ++spb;
+    if (spb > latencySpb) {
+        // The wire is the bottleneck: spend what latency allows (100 ms) on fewer,
+        // fuller frames, so framing overhead does not eat the link's margin.
+        spb = std::max(spb, std::min(maxFit, static_cast<std::size_t>(std::floor(rate * kBusyLinkBatchS))));
+    }
     if (bytesPerSecond(spb) > capacity) {
         const double perSampleFull = double(proto::wireBytesForPayload(proto::telemetryHeaderBytes(ch) + 4 * ch * maxFit)) / double(maxFit);
-        // The fastest achievable rate (tick rate / whole ticks) that fits, floored:
-        // asking for it again is accepted.
-        const double minTicks = std::ceil(double(tickRate) * perSampleFull / capacity);
-        const auto maxRate = static_cast<std::int32_t>(std::floor(double(tickRate) / std::max(1.0, minTicks)));
+        // The fastest achievable rate (tick rate / whole ticks) that fits, as whole
+        // Hz that get exactly that sample period when asked for again: rounded up
+        // where that still maps to it (588.2 Hz → 589), else down (accepted, one
+        // period slower) where periods are too close together for whole Hz.
+        const double minTicks = std::max(1.0, std::ceil(double(tickRate) * perSampleFull / capacity));
+        auto maxRate = static_cast<std::int32_t>(std::ceil(double(tickRate) / minTicks));
+        if (std::ceil(double(tickRate) / maxRate) < minTicks)
+            maxRate = static_cast<std::int32_t>(std::floor(double(tickRate) / minTicks));
         e.code = proto::ErrorCode::OverCapacity;
         e.value = maxRate;
         e.message = std::to_string(static_cast<long>(rate)) + " Hz × " + std::to_string(ch) + " channels needs "
