@@ -1,6 +1,6 @@
 // A grating counter holds whole counts: after homing, every reading the host
 // sees is a multiple of 0.5 µm, at rest and on the move.
-#include "device/sim/sim_machine.h"
+#include "sim_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -8,13 +8,9 @@
 
 namespace {
 
-bool anyMoving(const sim::SimMachine& m)
-{
-    for (const auto& a : m.status().axes)
-        if (a.flags & proto::AxisMoving)
-            return true;
-    return false;
-}
+using simtest::anyMoving;
+using simtest::bit;
+
 
 TEST(SimGratingCounts, HomedReadingsAreWholeCounts)
 {

@@ -1,7 +1,7 @@
 // Velocity jog on both simulated instruments: it runs while refreshed, the
 // device watchdog brings it to rest within 250 ms of the last refresh when the
 // host goes quiet, it stops at soft limits once homed and at switches before.
-#include "device/sim/sim_machine.h"
+#include "sim_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -12,10 +12,12 @@
 
 namespace {
 
+using simtest::anyMoving;
+using simtest::bit;
+
 using proto::ErrorCode;
 using proto::EventKind;
 
-constexpr std::uint8_t bit(int i) { return static_cast<std::uint8_t>(1u << i); }
 long ticksFor(double s) { return static_cast<long>(std::lround(s / sim::SimMachine::kTickS)); }
 
 proto::JogVelocityRequest jog(int axis, double velocityPerS, double wireScale = 1e6)
@@ -26,13 +28,6 @@ proto::JogVelocityRequest jog(int axis, double velocityPerS, double wireScale = 
     return r;
 }
 
-bool anyMoving(const sim::SimMachine& m)
-{
-    for (const auto& a : m.status().axes)
-        if (a.flags & proto::AxisMoving)
-            return true;
-    return false;
-}
 
 std::vector<proto::EventMsg> runCollect(sim::SimMachine& m, double seconds)
 {

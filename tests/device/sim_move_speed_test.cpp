@@ -1,6 +1,6 @@
 // A MOVE carries one speed. It is in the unit of the first axis named, so a move
 // of X together with the pump is not refused for asking the pump 50 000 µL/s.
-#include "device/sim/sim_machine.h"
+#include "sim_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -8,13 +8,9 @@
 
 namespace {
 
-bool anyMoving(const sim::SimMachine& m)
-{
-    for (const auto& a : m.status().axes)
-        if (a.flags & proto::AxisMoving)
-            return true;
-    return false;
-}
+using simtest::anyMoving;
+using simtest::bit;
+
 
 void runUntilIdle(sim::SimMachine& m, double timeoutS)
 {

@@ -1,7 +1,7 @@
 // The simulated microscope stage driven directly through sim::SimMachine:
 // grating feedback with seed 002's incremental PID, homing, accuracy after
 // settling, the uncompensated work-point error of seed 002's fit, switches.
-#include "device/sim/sim_machine.h"
+#include "sim_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -12,74 +12,14 @@
 
 namespace {
 
+using namespace simtest;
+
 using proto::ErrorCode;
 using proto::EventKind;
 
 constexpr int kX = 0, kY = 1;
 constexpr double kGratingMm = 0.0005;
 
-proto::WireUnits nm(double mm) { return static_cast<proto::WireUnits>(std::lround(mm * 1e6)); }
-double measuredMm(const sim::SimMachine& m, int i) { return m.status().axes[static_cast<std::size_t>(i)].measured / 1e6; }
-double commandedMm(const sim::SimMachine& m, int i) { return m.status().axes[static_cast<std::size_t>(i)].commanded / 1e6; }
-bool anyMoving(const sim::SimMachine& m)
-{
-    for (const auto& a : m.status().axes)
-        if (a.flags & proto::AxisMoving)
-            return true;
-    return false;
-}
-constexpr std::uint8_t bit(int i) { return static_cast<std::uint8_t>(1u << i); }
-
-struct Runner {
-    sim::SimMachine& m;
-    std::vector<proto::EventMsg> events;
-
-    void run(double seconds, const std::function<void()>& eachTick = {})
-    {
-        const auto ticks = static_cast<long>(std::lround(seconds / sim::SimMachine::kTickS));
-        for (long k = 0; k < ticks; ++k) {
-            m.tick();
-            if (eachTick)
-                eachTick();
-            take();
-        }
-    }
-    bool runUntilIdle(double timeoutS, const std::function<void()>& eachTick = {})
-    {
-        const auto ticks = static_cast<long>(std::lround(timeoutS / sim::SimMachine::kTickS));
-        for (long k = 0; k < ticks; ++k) {
-            m.tick();
-            if (eachTick)
-                eachTick();
-            take();
-            if (k % 10 == 0 && !anyMoving(m))
-                return true;
-        }
-        return !anyMoving(m);
-    }
-    void take()
-    {
-        auto e = m.takeEvents();
-        events.insert(events.end(), e.begin(), e.end());
-    }
-    const proto::EventMsg* find(EventKind kind, int axis) const
-    {
-        for (const auto& e : events)
-            if (e.kind == kind && (axis < 0 || e.axis == axis))
-                return &e;
-        return nullptr;
-    }
-};
-
-proto::MoveRequest absMove(std::uint8_t mask, std::vector<double> targetsMm, double speedMmS = 0)
-{
-    proto::MoveRequest r;
-    r.axisMask = mask;
-    r.speed = static_cast<std::uint32_t>(std::lround(speedMmS * 1e6));
-    for (double t : targetsMm)
-        r.targets.push_back(nm(t));
-    return r;
-}
 
 /// Seed 002's fitted error of the X axis, µm at x mm.
 double seedXErrorUm(double xMm) { return -0.0006 * xMm * xMm + 0.9473 * xMm + 1.563; }
