@@ -21,18 +21,7 @@ constexpr int kX = 0, kY = 1, kZ = 2, kP = 3;
 
 
 /// An analyzer that has been homed (all axes), with its events discarded.
-struct SimAnalyzerHomedFaults : ::testing::Test {
-    sim::SimMachine m{sim::analyzerConfig()};
-    Runner r{m, {}};
-    void SetUp() override
-    {
-        ASSERT_FALSE(m.home(0));
-        ASSERT_TRUE(r.runUntilIdle(60));
-        for (int i = 0; i < m.axisCount(); ++i)
-            ASSERT_TRUE(m.homed(i)) << "axis " << i;
-        r.events.clear();
-    }
-};
+struct SimAnalyzerHomedFaults : HomedMachine<sim::analyzerConfig> {};
 
 } // namespace
 

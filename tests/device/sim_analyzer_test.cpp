@@ -23,18 +23,7 @@ double measuredUl(const sim::SimMachine& m) { return m.status().axes[kP].measure
 
 
 /// An analyzer that has been homed (all axes), with its events discarded.
-struct SimAnalyzerHomed : ::testing::Test {
-    sim::SimMachine m{sim::analyzerConfig()};
-    Runner r{m, {}};
-    void SetUp() override
-    {
-        ASSERT_FALSE(m.home(0));
-        ASSERT_TRUE(r.runUntilIdle(60));
-        for (int i = 0; i < m.axisCount(); ++i)
-            ASSERT_TRUE(m.homed(i)) << "axis " << i;
-        r.events.clear();
-    }
-};
+struct SimAnalyzerHomed : HomedMachine<sim::analyzerConfig> {};
 
 } // namespace
 

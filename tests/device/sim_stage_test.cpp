@@ -24,18 +24,7 @@ constexpr double kGratingMm = 0.0005;
 /// Seed 002's fitted error of the X axis, µm at x mm.
 double seedXErrorUm(double xMm) { return -0.0006 * xMm * xMm + 0.9473 * xMm + 1.563; }
 
-struct SimStageHomed : ::testing::Test {
-    sim::SimMachine m{sim::stageConfig()};
-    Runner r{m, {}};
-    void SetUp() override
-    {
-        ASSERT_FALSE(m.home(0));
-        ASSERT_TRUE(r.runUntilIdle(60));
-        ASSERT_TRUE(m.homed(kX));
-        ASSERT_TRUE(m.homed(kY));
-        r.events.clear();
-    }
-};
+struct SimStageHomed : HomedMachine<sim::stageConfig> {};
 
 } // namespace
 

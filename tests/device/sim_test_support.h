@@ -3,6 +3,8 @@
 // the machine and keeps its events, and move requests in millimetres.
 #include "device/sim/sim_machine.h"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -92,5 +94,20 @@ inline proto::MoveRequest relMove(std::uint8_t mask, std::vector<double> deltasM
     r.relative = true;
     return r;
 }
+
+/// A machine homed on every axis, its events discarded: where most tests start.
+template <sim::MachineConfig (*Config)()>
+struct HomedMachine : ::testing::Test {
+    sim::SimMachine m{Config()};
+    Runner r{m, {}};
+    void SetUp() override
+    {
+        ASSERT_FALSE(m.home(0));
+        ASSERT_TRUE(r.runUntilIdle(60));
+        for (int i = 0; i < m.axisCount(); ++i)
+            ASSERT_TRUE(m.homed(i)) << "axis " << i;
+        r.events.clear();
+    }
+};
 
 } // namespace simtest
