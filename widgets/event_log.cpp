@@ -21,7 +21,8 @@ QString kindText(proto::EventKind k)
     case proto::EventKind::LostSteps: return EventLog::tr("lost steps");
     case proto::EventKind::Reset: return EventLog::tr("reset");
     }
-    return EventLog::tr("event");
+    // A kind this build does not know (a newer device): by number, so it can be looked up.
+    return EventLog::tr("event %1").arg(static_cast<int>(k));
 }
 } // namespace
 

@@ -528,6 +528,22 @@ InstrumentClient::RawDone InstrumentClient::wrap(Callback done, const QString& w
     };
 }
 
+void InstrumentClient::request(proto::MsgType type, const proto::Bytes& payload, ReplyCallback done, const QString& what)
+{
+    send(type, payload, [this, done = std::move(done), what](const std::optional<RequestError>& e, const proto::Bytes& reply) {
+        if (e) {
+            RequestError err = *e;
+            if (!what.isEmpty() && err.kind == RequestError::Kind::Device)
+                err.message = tr("%1 refused: %2").arg(what, err.message);
+            emit requestFailed(err);
+            if (done)
+                done(err, reply);
+        } else if (done) {
+            done(std::nullopt, reply);
+        }
+    });
+}
+
 static std::optional<RequestError> invalid(const QString& why)
 {
     RequestError e;

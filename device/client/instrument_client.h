@@ -79,6 +79,13 @@ public:
     /// Converts a wire value of a channel to axis units (mm, µL, per second, …).
     double toAxisUnits(const proto::ChannelRef& channel, std::int32_t value) const;
 
+    /// Any request of the protocol, with its reply payload handed back: how the job
+    /// clients (tuning, paths, …) talk to the device without this class growing a
+    /// method per message. A device refusal is also emitted as requestFailed, its
+    /// message prefixed with `what` ("set gains refused: …") when `what` is given.
+    using ReplyCallback = std::function<void(const std::optional<RequestError>&, const proto::Bytes& payload)>;
+    void request(proto::MsgType type, const proto::Bytes& payload, ReplyCallback done, const QString& what = {});
+
 signals:
     void stateChanged(dev::LinkState state);
     void identified(const dev::DeviceIdentity& identity);

@@ -418,7 +418,7 @@ std::optional<EventMsg> decodeEvent(const Bytes& p)
     ByteReader r(p);
     EventMsg m;
     const std::uint8_t k = r.u8();
-    if (k < 1 || k > static_cast<std::uint8_t>(EventKind::Reset))
+    if (k < 1 || k > kMaxEventKind)
         return std::nullopt;
     m.kind = static_cast<EventKind>(k);
     m.axis = r.u8();
@@ -433,7 +433,7 @@ std::optional<ErrorReply> decodeErrorReply(const Bytes& p)
     ByteReader r(p);
     ErrorReply m;
     const std::uint8_t c = r.u8();
-    if (c < 1 || c > static_cast<std::uint8_t>(ErrorCode::Fault))
+    if (c < 1 || c > kMaxErrorCode)
         return std::nullopt;
     m.code = static_cast<ErrorCode>(c);
     m.axis = r.u8();

@@ -32,9 +32,12 @@ enum class MsgType : std::uint8_t {
     SetLimits = 0x08,
     Subscribe = 0x09,
     Reset = 0x0A,
+    // 0x0B–0x0F: PID gains and step tests (tuning); 0x10–0x14: queued LINE/ARC
+    // paths; 0x15–0x17: plates and recipes; 0x18–0x1A: stitching scans.
     JogVelocity = 0x20,
     Stop = 0x21,
     EStop = 0x22,
+    // 0x23: tuning; 0x24–0x26: paths (feed hold, resume, …).
     Event = 0xE0,
     TelemetryBatch = 0xE1,
     Error = 0xFF,
@@ -58,6 +61,7 @@ enum Capability : std::uint32_t {
     CapTelemetry = 1u << 5,
     CapJogVelocity = 1u << 6,
     CapCoupledXyThenZ = 1u << 7,
+    // Bits 8–9: tuning (gains, step test); 10–11: path queue; 12: plates; 13: scans.
 };
 
 enum class ErrorCode : std::uint8_t {
@@ -71,7 +75,10 @@ enum class ErrorCode : std::uint8_t {
     OverCapacity = 8,
     OutOfRange = 9,
     Fault = 10,
+    // 11–14: tuning; 15–18: path queue; 19–20: plates; 21–22: scans.
 };
+/// Codes up to this decode, so an older host still shows a newer device's refusal.
+constexpr std::uint8_t kMaxErrorCode = 0x7F;
 const char* errorCodeName(ErrorCode c);
 
 enum class EventKind : std::uint8_t {
@@ -84,7 +91,10 @@ enum class EventKind : std::uint8_t {
     Stopped = 7,     ///< a stop request brought the axis to rest
     LostSteps = 8,   ///< measured position left the commanded one by more than the tolerance
     Reset = 9,       ///< E-stop/fault latch cleared
+    // 10–19: tuning; 20–29: path queue; 30–34: plates; 35–39: scans.
 };
+/// Kinds up to this decode, so an older host still logs a newer device's events.
+constexpr std::uint8_t kMaxEventKind = 0x7F;
 const char* eventKindName(EventKind k);
 
 /// Position units on the wire: nanometres for linear axes, nanolitres for the pump;
@@ -157,6 +167,7 @@ enum class ChannelKind : std::uint8_t {
     ControllerOutput = 4, ///< stage PID output, step rate in steps/s
     Switches = 5,         ///< bit0 home, bit1 limit
     ContourError = 6,     ///< instrument-wide (axis kNoAxis): XY distance from the commanded path, nm
+    // 7–9: tuning; 10–12: path queue; 13: plates; 14: scans.
 };
 struct ChannelRef {
     std::uint8_t axis = 0;

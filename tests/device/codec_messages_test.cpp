@@ -431,13 +431,17 @@ TEST(CodecMessages, DecodersRejectUnknownEnumValuesAndCounts)
     EXPECT_TRUE(decodeTelemetryBatch(tb));
     EXPECT_FALSE(decodeTelemetryBatch(with(tb, 18, 7)));
 
+    // Event kinds and error codes a host does not know yet still decode (an older
+    // host logs a newer device's events and shows its refusals); 0 and 0x80+ do not.
     const Bytes ev = encode(EventMsg{});
     EXPECT_FALSE(decodeEvent(with(ev, 0, 0)));
-    EXPECT_FALSE(decodeEvent(with(ev, 0, 10)));
+    EXPECT_TRUE(decodeEvent(with(ev, 0, 0x7F)));
+    EXPECT_FALSE(decodeEvent(with(ev, 0, 0x80)));
     EXPECT_FALSE(decodeEvent(with(ev, 0, 0xFF)));
     const Bytes er = encode(ErrorReply{});
     EXPECT_FALSE(decodeErrorReply(with(er, 0, 0)));
-    EXPECT_FALSE(decodeErrorReply(with(er, 0, 11)));
+    EXPECT_TRUE(decodeErrorReply(with(er, 0, 0x7F)));
+    EXPECT_FALSE(decodeErrorReply(with(er, 0, 0x80)));
 
     // A string length that points past the end.
     Bytes badStr = encode(ErrorReply{ErrorCode::Busy, 0, 0, "abc"});

@@ -10,7 +10,7 @@
 // checks run as LLVMFuzzerTestOneInput; codec, simulator and motion are plain C++,
 // so from the repository root:
 //   clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -DBP_LIBFUZZER -I.
-//     -isystem /usr/include/eigen3 tests/fuzz/fuzz_codec.cpp device/protocol/*.cpp
+//     -isystem /usr/include/eigen3 tests/fuzz/codec/fuzz_codec.cpp device/protocol/*.cpp
 //     device/sim/*.cpp motion/*.cpp -o fuzz_codec_lf          (one command line)
 //   ./fuzz_codec_lf -max_len=4096 CORPUS_DIR
 //
