@@ -43,6 +43,17 @@ void SimAxis::holdHere()
     m_stepAccumulator = 0;
 }
 
+void SimAxis::stopAtMeasured()
+{
+    holdHere();
+    if (!m_closedLoop)
+        return;
+    // The nut position that puts the carriage at the grating's reading.
+    const double screwTarget = measured() / (1.0 + m_cfg.leadErrorPerUnit);
+    m_stepAccumulator = std::round((screwTarget - static_cast<double>(m_motorSteps) * m_cfg.stepSize) / m_cfg.stepSize);
+    m_ticksLeft = 1;
+}
+
 void SimAxis::takeUpPlay()
 {
     // Lead error grows along the screw. The nut sits in a gap of `backlash` in the
@@ -104,11 +115,33 @@ void SimAxis::controlStep(const PidGains& g, int ticksPerPeriod, const ClosedLoo
     const double du = g.kp * (e - m_e1) + g.ki * e + g.kd * (e - 2 * m_e1 + m_e2);
     m_e2 = m_e1;
     m_e1 = e;
+    m_u += du;
     const double feedForward = (m_ref - m_prevRefForLoop) + tuning.velocityFeedForwardS * (m_refVel - m_prevRefVelForLoop);
     m_prevRefForLoop = m_ref;
     m_prevRefVelForLoop = m_refVel;
     m_stepAccumulator += (feedForward + du) / m_cfg.stepSize;
     m_ticksLeft = ticksPerPeriod < 1 ? 1 : ticksPerPeriod;
+}
+
+void SimAxis::applyCorrection(double du, int ticksPerPeriod)
+{
+    if (!m_closedLoop || m_frozen)
+        return;
+    m_prevRefForLoop = m_ref;
+    m_prevRefVelForLoop = m_refVel;
+    m_u += du;
+    m_stepAccumulator += du / m_cfg.stepSize;
+    m_ticksLeft = ticksPerPeriod < 1 ? 1 : ticksPerPeriod;
+}
+
+void SimAxis::resumeLoop(const ClosedLoopTuning& tuning)
+{
+    // Eq. 2 differences errors: an error history from before the test would
+    // look like a jump and kick the derivative term.
+    const double raw = m_ref - measured();
+    m_e1 = m_e2 = std::abs(raw) <= tuning.deadbandCounts * m_cfg.resolution + 1e-12 ? 0.0 : raw;
+    m_prevRefForLoop = m_ref;
+    m_prevRefVelForLoop = m_refVel;
 }
 
 void SimAxis::tick(double dtS)

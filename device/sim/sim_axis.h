@@ -26,8 +26,19 @@ public:
     /// Closed loop only: one PID period (seed 002 eq. 2, incremental form) on top of
     /// the reference's feed-forward.
     void controlStep(const PidGains& gains, int ticksPerPeriod, const ClosedLoopTuning& tuning = {});
+    /// Closed loop, a tuning test in force: this period's correction Δu comes from
+    /// the test instead of the PID, and the reference (the test's setpoint) is not fed forward.
+    void applyCorrection(double du, int ticksPerPeriod);
+    /// Closed loop: the PID takes over again from the present error, without a kick.
+    void resumeLoop(const ClosedLoopTuning& tuning = {});
+    /// The controller output u: the running sum of every period's Δu since power-up.
+    double controllerU() const { return m_u; }
     /// Makes the reference equal to where the carriage is, e.g. after a latched stop.
     void holdHere();
+    /// Closed loop: holdHere, and the motor is sent back at once to where the
+    /// grating reads, instead of letting the table follow a motor that a wild
+    /// test drove far ahead of it: the safe stop after a trip.
+    void stopAtMeasured();
     /// E-stop: the reference freezes; the motor gets no more steps.
     void freeze();
 
@@ -64,6 +75,7 @@ private:
     double m_outputStepsS = 0;
     double m_stepAccumulator = 0;   ///< closed loop: fractional steps carried between periods
     double m_e1 = 0, m_e2 = 0;      ///< PID: error at k−1, k−2 (axis units)
+    double m_u = 0;                 ///< controller output, running sum of Δu (axis units)
     double m_load = 1;
     int m_ticksLeft = 1;            ///< ticks left in the current PID period
     bool m_frozen = false;
