@@ -145,7 +145,8 @@ double Experiment::control(double y)
         m_pid.step(e);
         m_u = m_pid.output();
         if (m_step.settleBand > 0) {
-            m_settledS = std::abs(raw) <= m_step.settleBand ? m_settledS + m_periodS : 0;
+            // (A reading exactly on the band's edge is inside: positions are whole counts.)
+            m_settledS = std::abs(raw) <= m_step.settleBand * (1 + 1e-9) + 1e-12 ? m_settledS + m_periodS : 0;
             if (m_settledS >= m_step.settleHoldS - 1e-12)
                 m_reason = EndReason::Settled;
         }
