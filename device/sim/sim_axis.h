@@ -11,8 +11,9 @@ namespace sim {
 
 class SimAxis {
 public:
-    /// `driveLagS`: closed loop only, the table follows the nut with this first-order lag.
-    SimAxis(const AxisConfig& config, bool closedLoop, std::uint64_t seed, double driveLagS = 0.002);
+    /// `driveLagS`: closed loop only, the table follows the nut with this first-order lag;
+    /// `rotorLagS`: closed loop only, the screw follows the motor's steps with this one.
+    SimAxis(const AxisConfig& config, bool closedLoop, std::uint64_t seed, double driveLagS = 0.002, double rotorLagS = 0);
 
     const AxisConfig& config() const { return m_cfg; }
 
@@ -63,11 +64,15 @@ private:
     AxisConfig m_cfg;
     bool m_closedLoop;
     double m_lagS;
+    double m_rotorLagS;
     std::mt19937_64 m_rng;
 
     double m_ref = 0, m_refVel = 0, m_prevRefForLoop = 0, m_prevRefVelForLoop = 0;
+    double m_prevDvForLoop = 0;     ///< last period's change of the reference velocity (acceleration feed-forward)
+    double m_tickS = 1e-4;          ///< the simulation tick, as tick() was last given it
     std::int64_t m_motorSteps = 0;  ///< steps the driver has received, from machine zero
     double m_screw = 0;             ///< nut position: motor position less slipped steps
+    double m_rotor = 0;             ///< closed loop: where the rotor has turned the screw to (lags m_screw)
     std::int64_t m_lostSteps = 0;
     double m_driven = 0;            ///< where the nut has pushed the carriage to, through the play
     double m_carriage = 0;

@@ -20,7 +20,7 @@ SimMachine::SimMachine(const MachineConfig& config) : m_cfg(config)
     std::uint64_t seed = config.seed;
     for (const auto& ac : config.axes) {
         AxisState s;
-        s.plant = std::make_unique<SimAxis>(ac, config.closedLoop, seed++, config.driveLagS);
+        s.plant = std::make_unique<SimAxis>(ac, config.closedLoop, seed++, config.driveLagS, config.rotorLagS);
         s.plant->holdHere();
         s.softMin = 0;
         s.softMax = ac.travel;

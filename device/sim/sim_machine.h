@@ -25,7 +25,7 @@ public:
     /// …and its reference is at rest this much later at the latest. The 250 ms
     /// promise (HELLO's jogWatchdogMs) also covers the stage's settling after the
     /// reference stops, so the ramp does not take the whole remaining 50 ms.
-    static constexpr double kJogStopBudgetS = 0.030;
+    static constexpr double kJogStopBudgetS = 0.025;
 
     explicit SimMachine(const MachineConfig& config);
     ~SimMachine();

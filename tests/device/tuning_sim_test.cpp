@@ -54,7 +54,7 @@ struct TuningStage : HomedMachine<sim::stageConfig> {
         proto::StepTestRequest s;
         s.axis = kX;
         s.step = nm(mm);
-        s.settleBand = nm(0.0005);
+        s.settleBand = nm(0.001);  // two grating counts: the loop's deadband is one
         s.settleHoldMs = 20;
         s.envelope = {static_cast<std::uint32_t>(nm(3 * std::abs(mm))), static_cast<std::uint32_t>(nm(2 * std::abs(mm))), 2000};
         s.trialGains = trial;
@@ -119,7 +119,7 @@ TEST_F(TuningStage, StepTestSettlesUnderTheOperatorsGainsAndIsCaptured)
     const auto* ended = r.find(proto::kEvTestEnded, kX);
     ASSERT_NE(ended, nullptr);
     EXPECT_NE(ended->text.find("settled"), std::string::npos) << ended->text;
-    EXPECT_NEAR(measuredMm(m, kX), 50.02, 0.0005);
+    EXPECT_NEAR(measuredMm(m, kX), 50.02, 0.001);
     EXPECT_NEAR(commandedMm(m, kX), 50.02, 1e-9);  // it stays on the step it settled on
     const auto c = capture();
     EXPECT_EQ(c.kind, 1);
@@ -129,7 +129,7 @@ TEST_F(TuningStage, StepTestSettlesUnderTheOperatorsGainsAndIsCaptured)
     EXPECT_EQ(c.gains, (proto::WireGains{0.25f, 0.5f, 0.03f}));
     ASSERT_GT(c.total, 20u);
     EXPECT_EQ(c.samples.front().setpoint, nm(50.02));
-    EXPECT_NEAR(c.samples.back().measured, nm(50.02), 500);
+    EXPECT_NEAR(c.samples.back().measured, nm(50.02), 1000);
 }
 
 TEST_F(TuningStage, TrialGainsAreUsedForTheTestOnlyAndTheEnvelopeStopsTheAxis)
