@@ -274,3 +274,17 @@ TEST_F(TuningStage, ALongTestKeepsAllOfItsCaptureAtAHalvedRate)
     EXPECT_EQ(c.periodUs, 2000u);
     EXPECT_NEAR(c.total, 10000u, 2u);
 }
+
+TEST_F(TuningStage, NewGainsTakeOverBetweenTwoPeriodsWithoutABump)
+{
+    // At rest the PID's output u holds the screw's lead error (all of it in the
+    // integral): a positional PID switched to twice the ki would jump by u.
+    run(0.2);
+    const double u0 = m.axis(kX).controllerU();
+    ASSERT_GT(std::abs(u0), 0.005) << "the loop holds next to nothing: the test would show nothing";
+    ASSERT_FALSE(t().setGains({kX, 0, {0.5f, 1.0f, 0.06f}}));
+    double worst = 0;
+    run(0.2, [&] { worst = std::max(worst, std::abs(m.axis(kX).controllerU() - u0)); });
+    EXPECT_LT(worst, 0.001) << "the output moved at the switch";
+    EXPECT_NEAR(measuredMm(m, kX), 50, 0.001);
+}
