@@ -16,6 +16,7 @@ InstrumentTarget::InstrumentTarget(TuningClient* tuning, int axis, const QString
         // The end event never came (lost on a noisy link): end it and read what there is.
         m_tuning->abortTests(static_cast<quint8>(1u << m_axis));
         m_running = false;
+        emit testRunning(false);
         fetch();
     });
     connect(tuning, &TuningClient::testEnded, this, [this](int endedAxis, proto::EventKind, const QString&) {
@@ -23,7 +24,10 @@ InstrumentTarget::InstrumentTarget(TuningClient* tuning, int axis, const QString
             return;
         m_running = false;
         m_deadline.stop();
-        fetch();
+        emit testRunning(false);
+        // Read on the next turn: whoever watched live telemetry has let go of it by
+        // then, and the capture does not queue behind a link full of samples.
+        QMetaObject::invokeMethod(this, &InstrumentTarget::fetch, Qt::QueuedConnection);
     });
     InstrumentClient* c = tuning->client();
     connect(c, &InstrumentClient::stateChanged, this, [this](LinkState s) {
@@ -34,6 +38,8 @@ InstrumentTarget::InstrumentTarget(TuningClient* tuning, int axis, const QString
         out.error = tr("the link to %1 was lost; the device ends the test by itself within 0.5 s and holds the axis "
                        "under the gains it had before")
                         .arg(m_name);
+        if (m_running)
+            emit testRunning(false);
         m_running = false;
         m_deadline.stop();
         finish(out);
@@ -102,6 +108,7 @@ void InstrumentTarget::started(const std::optional<RequestError>& e, double maxS
         return;
     }
     m_running = true;
+    emit testRunning(true);
     m_deadline.start(static_cast<int>(std::ceil(maxS * 1000)) + 3000);
 }
 

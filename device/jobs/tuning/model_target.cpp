@@ -13,6 +13,12 @@ ModelTarget::ModelTarget(const PlantSpec& plant, QObject* parent) : TuningTarget
 
 QString ModelTarget::describe() const { return QString::fromStdString(m_spec.text()); }
 
+QString ModelTarget::cannotTune() const
+{
+    const std::string why = whyNoUltimateGain(m_spec);
+    return why.empty() ? QString() : tr("%1: %2").arg(describe(), QString::fromStdString(why));
+}
+
 void ModelTarget::runStep(const StepSpec& spec, bool trial, double swing, Done done)
 {
     deliver(Experiment::stepTest(spec, 0, 0, m_spec.periodS), true, trial ? trialEarlyStop(swing) : EarlyStop{}, std::move(done));

@@ -51,6 +51,8 @@ bool TuningRunner::startZn(TuningTarget* target, const ZnOptions& o)
     QString problem;
     if (!target || !target->ready())
         problem = tr("the target is not ready (connect the instrument first)");
+    else if (!target->cannotTune().isEmpty())
+        problem = target->cannotTune();
     else if (!(o.envelope.maxExcursion > 0 && o.envelope.maxFollowingError > 0 && o.envelope.maxDurationS > 0))
         problem = tr("every envelope limit must be above 0");
     else if (o.method == TuningMethod::UltimateGain && !(std::abs(o.step) > 0 && std::abs(o.step) < o.trialShare * o.envelope.maxExcursion
@@ -77,6 +79,7 @@ bool TuningRunner::startZn(TuningTarget* target, const ZnOptions& o)
     m_result.target = target->describe().toStdString();
     m_result.method = o.method == TuningMethod::Relay ? "relay" : "ultimate-gain";
     m_result.controlPeriodS = target->controlPeriodS();
+    m_result.unit = target->unit().toStdString();
     m_result.envelope = o.envelope;
     m_swing = std::max(2 * target->noiseFloor(), 1e-6 * std::abs(o.step));
     if (o.method == TuningMethod::UltimateGain) {
@@ -405,6 +408,7 @@ void TuningRunner::runVerification()
     if (device) {
         s.settleBand = m_options.settleBand;
         s.settleHoldS = 0.05;
+        s.runS = std::min(1.0, 0.9 * m_options.envelope.maxDurationS);  // a completed test, not a tripped one, if it hunts
     } else {
         s.runS = std::min(m_options.envelope.maxDurationS * 0.99, 30 * m_result.tuS);  // the whole response, for its metrics
     }

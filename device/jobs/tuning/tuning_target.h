@@ -31,6 +31,9 @@ public:
     virtual motion::control::InputModel inputModel() const = 0;
     virtual double noiseFloor() const = 0;         ///< smallest meaningful change of the output (a grating count)
     virtual bool ready() const = 0;                ///< can run now
+    /// Why the Z-N methods cannot work on this target at all (a model plant whose
+    /// phase never reaches −180°); empty when they can.
+    virtual QString cannotTune() const { return {}; }
     /// A step test; a model starts it from rest, a device from where the axis stands.
     /// `trial`: a P-only trial of the ultimate-gain search, which a target may end
     /// as soon as it has shown enough cycles (`swing`: its noise floor for extrema).
@@ -43,6 +46,9 @@ public:
 signals:
     /// Progress inside one run (a device's capture being read), 0–1.
     void runProgress(double fraction, const QString& what);
+    /// A device test started / ended on the device (live telemetry is worth having
+    /// only in between; after it the link is better left to reading the capture).
+    void testRunning(bool running);
 };
 
 } // namespace dev

@@ -15,6 +15,7 @@ namespace motion::control {
 struct TuningResult {
     std::string target;          ///< "Stage X", or a plant spec ("fopdt:K=2,tau=0.5,L=0.1")
     std::string method;          ///< "ultimate-gain" or "relay"
+    std::string unit;            ///< of positions and outputs ("mm"); "" for a model plant
     double controlPeriodS = 0;   ///< T of the loop the gains are for
     double ku = 0;
     double tuS = 0;
