@@ -18,7 +18,7 @@ Record runExperiment(PlantSim& plant, Experiment x, const EarlyStop& earlyStop, 
             break;
         plant.step(u);
         if (earlyStop && x.running() && earlyStop(r))
-            x.abort(EndReason::Stopped);
+            x.abort(EndReason::Completed);
     }
     if (x.running())
         x.abort(EndReason::Duration);

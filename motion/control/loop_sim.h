@@ -10,7 +10,8 @@
 namespace motion::control {
 
 /// Called after every period with the record so far; returning true ends the
-/// experiment there (EndReason::Stopped): how a tuner stops a trial early.
+/// experiment there (EndReason::Completed: it ran what it needed): how a tuner
+/// stops a trial that has shown enough.
 using EarlyStop = std::function<bool(const Record& soFar)>;
 
 /// Runs `experiment` on `plant` (which starts wherever it is) until it ends;

@@ -136,8 +136,8 @@ std::string whyNoUltimateGain(const PlantSpec& p)
         return {};
     if (p.kind == PlantSpec::Kind::Fopdt)
         return "a first-order plant without dead time never lags by 180°: P control cannot make it oscillate, so it has no finite ultimate gain";
-    return "a lag of order " + std::to_string(p.order) + " lags by at most " + std::to_string(90 * p.order)
-        + "°, never 180°: P control cannot make it oscillate, so it has no finite ultimate gain";
+    return "a lag of order " + std::to_string(p.order) + " lags less than " + std::to_string(90 * p.order)
+        + "° at every frequency, never 180°: P control cannot make it oscillate, so it has no finite ultimate gain";
 }
 
 std::optional<UltimatePoint> ultimatePoint(const PlantSpec& p)
