@@ -98,6 +98,10 @@ void ResponsePlot::addRun(const motion::control::Record& r, const QString& legen
         m_showS = std::max(m_showS, showS);
         m_plot->xAxis->setRange(0, m_showS);
     }
+    // A little room above and below, so extremes are not drawn on the frame.
+    m_plot->yAxis->scaleRange(1.1, m_plot->yAxis->range().center());
+    if (m_mode == Mode::Oscillation)
+        m_plot->yAxis2->scaleRange(1.1, m_plot->yAxis2->range().center());
     m_plot->replot();
 }
 

@@ -99,7 +99,9 @@ TuningScreen::TuningScreen(tele::TelemetryHub* hub, QWidget* parent) : QWidget(p
     connect(m_runner, &dev::TuningRunner::message, this, [this](const QString& m) { say(m, true); });
     connect(m_runner, &dev::TuningRunner::finished, this, &TuningScreen::onFinished);
     connect(m_runner, &dev::TuningRunner::recordArrived, this, [this](const Record& r, const QString& label, int kind) {
-        if (kind < 3)
+        // The trials and the relay's own cycle; forced runs are points on a frequency
+        // response, not something to watch.
+        if (kind < 2)
             m_zn->showRun(r, label);
     });
     connect(m_runner, &dev::TuningRunner::stepTestDone, this, [this](const Record& r, const StepMetrics& m, const QString& label) {

@@ -24,6 +24,13 @@ namespace ui {
 using motion::control::TuningMethod;
 
 namespace {
+// The rules' names live in motion/ (no Qt); listed here so lupdate finds them for tr().
+[[maybe_unused]] const char* const kRuleNames[] = {
+    QT_TRANSLATE_NOOP("ui::ZnPanel", "Ziegler–Nichols P"),        QT_TRANSLATE_NOOP("ui::ZnPanel", "Ziegler–Nichols PI"),
+    QT_TRANSLATE_NOOP("ui::ZnPanel", "Ziegler–Nichols PID"),      QT_TRANSLATE_NOOP("ui::ZnPanel", "Tyreus–Luyben PI"),
+    QT_TRANSLATE_NOOP("ui::ZnPanel", "Tyreus–Luyben PID"),        QT_TRANSLATE_NOOP("ui::ZnPanel", "Pessen integral rule PID"),
+    QT_TRANSLATE_NOOP("ui::ZnPanel", "Z-N \"some overshoot\" PID"), QT_TRANSLATE_NOOP("ui::ZnPanel", "Z-N \"no overshoot\" PID"),
+};
 QString num(double v) { return QString::number(v, 'g', 4); }
 QString period(double s) { return s < 1 ? ZnPanel::tr("%1 ms").arg(num(s * 1000)) : ZnPanel::tr("%1 s").arg(num(s)); }
 } // namespace
