@@ -90,12 +90,7 @@ void TuningClient::getGains(int axis, GainsDone done)
 void TuningClient::setGains(int axis, const DiscreteGains& gains, bool keep, Callback done)
 {
     proto::SetGainsRequest r{static_cast<std::uint8_t>(axis), static_cast<std::uint8_t>(keep ? proto::kSetGainsSave : 0), toWire(gains)};
-    m_client->request(proto::kSetGains, proto::encode(r),
-                      [done](const std::optional<RequestError>& e, const proto::Bytes&) {
-                          if (done)
-                              done(e);
-                      },
-                      tr("set gains"));
+    send(proto::kSetGains, proto::encode(r), std::move(done), tr("set gains"));
 }
 
 void TuningClient::startStepTest(const StepTestParams& p, Callback done)
@@ -116,12 +111,7 @@ void TuningClient::startStepTest(const StepTestParams& p, Callback done)
     r.envelope = toWire(p.envelope, k);
     if (p.trialGains)
         r.trialGains = toWire(*p.trialGains);
-    m_client->request(proto::kStepTest, proto::encode(r),
-                      [done](const std::optional<RequestError>& e, const proto::Bytes&) {
-                          if (done)
-                              done(e);
-                      },
-                      tr("step test"));
+    send(proto::kStepTest, proto::encode(r), std::move(done), tr("step test"));
 }
 
 void TuningClient::startRelayTest(const RelayTestParams& p, Callback done)
@@ -134,22 +124,23 @@ void TuningClient::startRelayTest(const RelayTestParams& p, Callback done)
     r.forcedPeriodUs = toU32(p.forcedPeriodS * 1e6);
     r.cycles = static_cast<std::uint16_t>(std::clamp(p.cycles, 0, 65535));
     r.envelope = toWire(p.envelope, k);
-    m_client->request(proto::kRelayTest, proto::encode(r),
-                      [done](const std::optional<RequestError>& e, const proto::Bytes&) {
-                          if (done)
-                              done(e);
-                      },
-                      tr("relay test"));
+    send(proto::kRelayTest, proto::encode(r), std::move(done), tr("relay test"));
 }
 
 void TuningClient::abortTests(quint8 axisMask, Callback done)
 {
-    m_client->request(proto::kTestAbort, proto::encode(proto::AbortRequest{axisMask}),
-                      [done](const std::optional<RequestError>& e, const proto::Bytes&) {
-                          if (done)
-                              done(e);
-                      },
-                      tr("abort test"));
+    send(proto::kTestAbort, proto::encode(proto::AbortRequest{axisMask}), std::move(done), tr("abort test"));
+}
+
+void TuningClient::send(proto::MsgType type, const proto::Bytes& payload, Callback done, const QString& what)
+{
+    m_client->request(
+        type, payload,
+        [done](const std::optional<RequestError>& e, const proto::Bytes&) {
+            if (done)
+                done(e);
+        },
+        what);
 }
 
 void TuningClient::fetchCapture(int axis, CaptureDone done, Progress progress)

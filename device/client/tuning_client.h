@@ -87,6 +87,8 @@ signals:
 
 private:
     void fetchChunk(int axis, std::shared_ptr<TestCapture> into, quint32 first, CaptureDone done, Progress progress);
+    /// A request whose reply has no payload.
+    void send(proto::MsgType type, const proto::Bytes& payload, Callback done, const QString& what);
     double scale(int axis) const;
 
     QPointer<InstrumentClient> m_client;

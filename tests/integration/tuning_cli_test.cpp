@@ -1,35 +1,15 @@
 // benchpilot-cli tune, step-test and gains, called in-process: the JSON shapes
 // the issue gives, Ku/Tu against the closed form, and refusals that say why.
-#include "app/cli/command.h"
+#include "cli_in_process.h"
 #include "motion/control/plant.h"
 
 #include <gtest/gtest.h>
 
-#include <QJsonDocument>
-#include <QJsonObject>
-
 #include <cmath>
 
 namespace {
-
-struct Run {
-    std::optional<int> code;
-    QString out, err;
-    QJsonObject json() const { return QJsonDocument::fromJson(out.toUtf8()).object(); }
-};
-
-Run run(const QStringList& args)
-{
-    Run r;
-    QTextStream out(&r.out), err(&r.err);
-    r.code = cli::runCli(args, out, err);
-    out.flush();
-    err.flush();
-    return r;
-}
-
-QStringList words(const char* text) { return QString::fromUtf8(text).split(QLatin1Char(' '), Qt::SkipEmptyParts); }
-
+itest::CliResult run(const QStringList& args) { return itest::runCliInProcess(args); }
+QStringList words(const char* text) { return itest::splitWords(text); }
 } // namespace
 
 TEST(TuningCli, TunePrintsKuTuAndTheRulesInTheIssuesShape)

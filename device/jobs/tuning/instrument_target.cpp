@@ -69,13 +69,7 @@ void InstrumentTarget::runStep(const StepSpec& spec, bool, double, Done done)
     p.runS = spec.runS;
     p.envelope = spec.envelope;
     p.trialGains = spec.gains;
-    m_done = std::move(done);
-    QPointer<InstrumentTarget> self(this);
-    const double maxS = spec.envelope.maxDurationS;
-    m_tuning->startStepTest(p, [self, maxS](const std::optional<RequestError>& e) {
-        if (self)
-            self->started(e, maxS, self->m_done);
-    });
+    launch(spec.envelope.maxDurationS, std::move(done), [this, p](TuningClient::Callback cb) { m_tuning->startStepTest(p, cb); });
 }
 
 void InstrumentTarget::runRelay(const RelaySpec& spec, bool, Done done)
@@ -87,16 +81,20 @@ void InstrumentTarget::runRelay(const RelaySpec& spec, bool, Done done)
     p.forcedPeriodS = spec.forcedPeriodS;
     p.cycles = spec.cycles;
     p.envelope = spec.envelope;
+    launch(spec.envelope.maxDurationS, std::move(done), [this, p](TuningClient::Callback cb) { m_tuning->startRelayTest(p, cb); });
+}
+
+void InstrumentTarget::launch(double maxS, Done done, const std::function<void(TuningClient::Callback)>& send)
+{
     m_done = std::move(done);
     QPointer<InstrumentTarget> self(this);
-    const double maxS = spec.envelope.maxDurationS;
-    m_tuning->startRelayTest(p, [self, maxS](const std::optional<RequestError>& e) {
+    send([self, maxS](const std::optional<RequestError>& e) {
         if (self)
-            self->started(e, maxS, self->m_done);
+            self->started(e, maxS);
     });
 }
 
-void InstrumentTarget::started(const std::optional<RequestError>& e, double maxS, Done)
+void InstrumentTarget::started(const std::optional<RequestError>& e, double maxS)
 {
     if (!m_done)
         return;  // the link went away meanwhile: already reported

@@ -33,7 +33,9 @@ public:
     void setControlPeriodS(double t) { m_periodS = t; }
 
 private:
-    void started(const std::optional<RequestError>& e, double maxS, Done done);
+    /// Sends the test with `send` and waits for the device's end of it.
+    void launch(double maxS, Done done, const std::function<void(TuningClient::Callback)>& send);
+    void started(const std::optional<RequestError>& e, double maxS);
     void finish(const RunOutcome& out);
     void fetch();
 

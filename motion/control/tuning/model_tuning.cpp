@@ -1,4 +1,5 @@
 #include "motion/control/tuning/model_tuning.h"
+#include "motion/control/tuning/short_number.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,12 +10,7 @@ namespace motion::control {
 namespace {
 constexpr int kEnoughExtrema = 14;  ///< about six cycle-over-cycle ratios
 
-std::string num(double v)
-{
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.4g", v);
-    return buf;
-}
+std::string num(double v) { return shortNumber(v); }
 
 /// Streaming version of findExtrema's rule, plus the checkpoints of the quiet test.
 struct Monitor {

@@ -1,4 +1,5 @@
 #include "motion/control/tuning/relay_autotune.h"
+#include "motion/control/tuning/short_number.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,12 +9,7 @@ namespace motion::control {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-std::string num(double v)
-{
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.4g", v);
-    return buf;
-}
+std::string num(double v) { return shortNumber(v); }
 } // namespace
 
 RelayAutotune::RelayAutotune(const RelayAutotuneOptions& o) : m_options(o)

@@ -1,4 +1,5 @@
 #include "motion/control/tuning/ultimate_gain.h"
+#include "motion/control/tuning/short_number.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,12 +10,7 @@ namespace motion::control {
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-std::string num(double v)
-{
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.4g", v);
-    return buf;
-}
+std::string num(double v) { return shortNumber(v); }
 } // namespace
 
 UltimateGainSearch::UltimateGainSearch(const UltimateGainOptions& options) : m_options(options)
