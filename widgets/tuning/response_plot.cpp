@@ -10,6 +10,8 @@ const QColor kColours[] = {QColor(31, 119, 180), QColor(214, 39, 40), QColor(44,
                            QColor(255, 127, 14), QColor(23, 190, 207), QColor(140, 86, 75), QColor(227, 119, 194)};
 }
 
+QColor ResponsePlot::colour(int run) { return kColours[run % 8]; }
+
 ResponsePlot::ResponsePlot(Mode mode, QWidget* parent) : QWidget(parent), m_mode(mode)
 {
     auto* v = new QVBoxLayout(this);
@@ -73,7 +75,7 @@ void ResponsePlot::addRun(const motion::control::Record& r, const QString& legen
         sp << (r.setpoint[i] - r.startPosition) * k;
         u << (r.output[i] - r.startOutput) * k;
     }
-    const QColor c = kColours[m_runs % 8];
+    const QColor c = colour(m_runs);
     QCPGraph* setpoint = m_plot->addGraph();
     setpoint->setData(t, sp, true);
     setpoint->setPen(QPen(c, 1, Qt::DashLine));

@@ -5,6 +5,7 @@
 // start, in µm for a mm target (in the plant's unit for a model).
 #include "motion/control/experiment.h"
 
+#include <QColor>
 #include <QString>
 #include <QWidget>
 
@@ -27,6 +28,8 @@ public:
     /// Oscillation mode, live: the newest samples (times in s from the run's start).
     void setLive(const QVector<double>& tS, const QVector<double>& measured, const QVector<double>& output, const QString& title);
     void clear();
+    /// The colour of the i-th run, for tables that name runs beside the plot.
+    static QColor colour(int run);
     int runCount() const { return m_runs; }
     QCustomPlot* plot() const { return m_plot; }
 

@@ -45,15 +45,17 @@ StepTestPanel::StepTestPanel(QWidget* parent) : QWidget(parent)
     row->addStretch(1);
     v->addLayout(row);
 
-    auto* split = new QSplitter(Qt::Vertical, this);
+    // The metrics beside the plot: one column per run (its number in the run's
+    // colour, its gains in the tooltip), one row per metric.
+    auto* split = new QSplitter(Qt::Horizontal, this);
     m_plot = new ResponsePlot(ResponsePlot::Mode::Overlay, split);
-    m_table = new QTableWidget(0, 9, split);
+    m_table = new QTableWidget(8, 0, split);
     m_table->setObjectName(QStringLiteral("stepMetrics"));
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_table->verticalHeader()->setVisible(false);
     m_table->setWordWrap(false);
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    m_table->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_table->setMaximumWidth(440);  // the plot keeps the room; many runs scroll
     split->addWidget(m_plot);
     split->addWidget(m_table);
     split->setStretchFactor(0, 3);
@@ -63,7 +65,7 @@ StepTestPanel::StepTestPanel(QWidget* parent) : QWidget(parent)
     connect(m_run, &QPushButton::clicked, this, [this] { emit runRequested(step()); });
     connect(m_clear, &QPushButton::clicked, this, [this] {
         m_plot->clear();
-        m_table->setRowCount(0);
+        m_table->setColumnCount(0);
     });
     setUnit(QStringLiteral("mm"));
 }
@@ -78,9 +80,9 @@ void StepTestPanel::setUnit(const QString& unit)
         m_size->setValue(mm ? 20 : 1);
     m_plot->setUnit(unit);
     const QString u = mm ? tr("µm") : tr("units");
-    m_table->setHorizontalHeaderLabels({tr("Run"), tr("Rise 10–90 % [ms]"), tr("Overshoot [%]"), tr("Settling 2 % [ms]"),
-                                        tr("Steady error [%1]").arg(u), tr("IAE [%1·s]").arg(u), tr("ISE [(%1)²·s]").arg(u),
-                                        tr("Peak output [%1]").arg(u), mm ? tr("Inside ±5 µm from [ms]") : tr("Ended")});
+    m_table->setVerticalHeaderLabels({tr("Rise 10–90 % [ms]"), tr("Overshoot [%]"), tr("Settling 2 % [ms]"),
+                                      tr("Steady error [%1]").arg(u), tr("IAE [%1·s]").arg(u), tr("ISE [(%1)²·s]").arg(u),
+                                      tr("Peak output [%1]").arg(u), mm ? tr("Inside ±5 µm from [ms]") : tr("Ended")});
 }
 
 double StepTestPanel::step() const
@@ -95,7 +97,7 @@ void StepTestPanel::setStep(double magnitude, bool positive)
     m_direction->setCurrentIndex(positive ? 0 : 1);
 }
 
-int StepTestPanel::runs() const { return m_table->rowCount(); }
+int StepTestPanel::runs() const { return m_table->columnCount(); }
 
 void StepTestPanel::addResult(const motion::control::Record& r, const motion::control::StepMetrics& m, const QString& legend)
 {
@@ -106,10 +108,13 @@ void StepTestPanel::addResult(const motion::control::Record& r, const motion::co
     const bool mm = m_unit == QLatin1String("mm");
     const double k = mm ? 1000.0 : 1.0;
     const double in5 = mm ? motion::control::settledInsideS(r, 0.005) : 0;
-    const int row = m_table->rowCount();
-    m_table->insertRow(row);
-    const QString cells[9] = {legend,
-                              num(m.riseTimeS * 1000),
+    const int col = m_table->columnCount();
+    m_table->insertColumn(col);
+    auto* head = new QTableWidgetItem(QString::number(col + 1));
+    head->setForeground(ResponsePlot::colour(col));
+    head->setToolTip(legend);
+    m_table->setHorizontalHeaderItem(col, head);
+    const QString cells[8] = {num(m.riseTimeS * 1000),
                               num(m.overshootPct),
                               num(m.settlingTimeS * 1000),
                               num(m.steadyStateError * k),
@@ -117,12 +122,13 @@ void StepTestPanel::addResult(const motion::control::Record& r, const motion::co
                               num(m.ise * k * k),
                               num(m.peakOutput * k),
                               mm ? (std::isnan(in5) ? tr("never") : num(in5 * 1000)) : QString::fromLatin1(motion::control::endReasonName(r.reason))};
-    for (int c = 0; c < 9; ++c) {
-        auto* item = new QTableWidgetItem(cells[c]);
+    for (int row = 0; row < 8; ++row) {
+        auto* item = new QTableWidgetItem(cells[row]);
         item->setToolTip(legend);
-        m_table->setItem(row, c, item);
+        item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        m_table->setItem(row, col, item);
     }
-    m_table->scrollToBottom();
+    m_table->scrollToItem(m_table->item(0, col));
 }
 
 void StepTestPanel::setBusy(bool busy)
