@@ -150,3 +150,15 @@ TEST_F(TuningScreenTest, AssistantOnAModelFillsTheRulesAndUseTheseAppliesARow)
     EXPECT_FALSE(t->loadResults(tmp.filePath(QStringLiteral("none.tuning.json"))));
     EXPECT_TRUE(t->statusText().contains(QStringLiteral("none.tuning.json"))) << t->statusText().toStdString();
 }
+
+TEST_F(TuningScreenTest, EscapeInAGainFieldStillStopsEverything)
+{
+    ASSERT_TRUE(waitFor([&] { return t->targetNames().contains(QStringLiteral("Stage X")); }, 3000));
+    ASSERT_TRUE(t->selectTarget(QStringLiteral("Stage X")));
+    auto* kp = t->gains()->findChild<QLineEdit*>(QStringLiteral("kpEdit"));
+    ASSERT_NE(kp, nullptr);
+    w->activateWindow();
+    kp->setFocus();
+    QTest::keyClick(kp, Qt::Key_Escape);
+    EXPECT_TRUE(waitFor([&] { return stage().estopActive(); }, 3000)) << "the tuning screen swallowed Esc";
+}

@@ -68,11 +68,23 @@ struct Errors {
 
 } // namespace
 
-TEST(TuningAccuracy, BothMethodsFindKuAndTuWithinFivePercentOverManyPlants)
+/// 50 plants in 10 shards of 5: each shard stays well inside a test's time
+/// limit even unoptimised under the sanitizers, and every build tests them all.
+constexpr int kShards = 10;
+const std::vector<PlantSpec>& plants()
 {
-    const auto plants = population(30, 20, 20240607);
+    static const std::vector<PlantSpec> all = population(30, 20, 20240607);
+    return all;
+}
+
+class TuningAccuracy : public ::testing::TestWithParam<int> {};
+
+TEST_P(TuningAccuracy, BothMethodsFindKuAndTuWithinFivePercentOverManyPlants)
+{
+    const std::size_t per = plants().size() / kShards;
     Errors ug, relay, classic;
-    for (const auto& p : plants) {
+    for (std::size_t i = static_cast<std::size_t>(GetParam()) * per; i < static_cast<std::size_t>(GetParam() + 1) * per; ++i) {
+        const PlantSpec& p = plants()[i];
         const auto want = ultimatePoint(p);
         ASSERT_TRUE(want) << p.text();
         for (TuningMethod m : {TuningMethod::UltimateGain, TuningMethod::Relay}) {
@@ -93,8 +105,10 @@ TEST(TuningAccuracy, BothMethodsFindKuAndTuWithinFivePercentOverManyPlants)
             }
         }
     }
-    std::printf("over %zu plants: max |error| Ku / Tu — ultimate gain %.2f %% / %.2f %%, relay refined %.2f %% / %.2f %%, "
+    std::printf("plants %zu–%zu: max |error| Ku / Tu — ultimate gain %.2f %% / %.2f %%, relay refined %.2f %% / %.2f %%, "
                 "relay classic DF %.1f %% / %.1f %%\n",
-                plants.size(), 100 * ug.maxKu(), 100 * ug.maxTu(), 100 * relay.maxKu(), 100 * relay.maxTu(),
-                100 * classic.maxKu(), 100 * classic.maxTu());
+                GetParam() * per, (GetParam() + 1) * per - 1, 100 * ug.maxKu(), 100 * ug.maxTu(), 100 * relay.maxKu(),
+                100 * relay.maxTu(), 100 * classic.maxKu(), 100 * classic.maxTu());
 }
+
+INSTANTIATE_TEST_SUITE_P(Shards, TuningAccuracy, ::testing::Range(0, kShards));
