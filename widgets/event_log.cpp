@@ -1,5 +1,7 @@
 #include "widgets/event_log.h"
 
+#include "device/protocol/messages_tuning.h"
+
 #include <QHeaderView>
 #include <cmath>
 #include <QTableWidget>
@@ -21,6 +23,14 @@ QString kindText(proto::EventKind k)
     case proto::EventKind::LostSteps: return EventLog::tr("lost steps");
     case proto::EventKind::Reset: return EventLog::tr("reset");
     }
+    if (k == proto::kEvTestEnded)
+        return EventLog::tr("test ended");
+    if (k == proto::kEvTestTripped)
+        return EventLog::tr("test tripped");
+    if (k == proto::kEvTestAborted)
+        return EventLog::tr("test aborted");
+    if (k == proto::kEvGainsChanged)
+        return EventLog::tr("gains changed");
     // A kind this build does not know (a newer device): by number, so it can be looked up.
     return EventLog::tr("event %1").arg(static_cast<int>(k));
 }

@@ -8,6 +8,7 @@
 #include "widgets/message_banner.h"
 #include "widgets/plots_screen.h"
 #include "widgets/profiles_screen.h"
+#include "widgets/tuning/tuning_screen.h"
 
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -96,6 +97,20 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     connect(m_plots, &ui::PlotsScreen::problem, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); });
     addScreen(QStringLiteral("plots"), tr("Plots"), m_plots);
     addScreen(QStringLiteral("profiles"), tr("Profiles"), new ui::ProfilesScreen);
+    m_tuning = new ui::TuningScreen(m_hub);
+    for (int i = 0; i < 2; ++i)
+        m_tuning->addInstrument(i, m_sessions[i]->name(), m_sessions[i]->client());
+    m_tuning->setFileChooser([this](const QString& title, const QString& filter, bool save) {
+        const QString dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+        return save ? QFileDialog::getSaveFileName(this, title, dir, filter) : QFileDialog::getOpenFileName(this, title, dir, filter);
+    });
+    if (m_options.confirmDialogs)
+        m_tuning->setConfirm([this](const QString& q) {
+            return QMessageBox::question(this, tr("Apply gains"), q, QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
+                == QMessageBox::Yes;
+        });
+    connect(m_tuning, &ui::TuningScreen::problem, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); });
+    addScreen(QStringLiteral("tuning"), tr("Tuning"), m_tuning);
     connect(m_nav, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
     m_nav->setCurrentRow(0);
 
@@ -287,6 +302,7 @@ void MainWindow::loadSettings()
     }
     m_nav->setCurrentRow(std::clamp(st.value(QStringLiteral("window/screen"), 0).toInt(), 0, m_nav->count() - 1));
     m_jogTabs->setCurrentIndex(std::clamp(st.value(QStringLiteral("window/instrument"), 0).toInt(), 0, 1));
+    m_tuning->restoreState(st.value(QStringLiteral("tuning/state")).toMap());
 }
 
 void MainWindow::saveSettings()
@@ -296,6 +312,7 @@ void MainWindow::saveSettings()
     st.setValue(QStringLiteral("window/state"), saveState());
     st.setValue(QStringLiteral("window/screen"), m_nav->currentRow());
     st.setValue(QStringLiteral("window/instrument"), m_jogTabs->currentIndex());
+    st.setValue(QStringLiteral("tuning/state"), m_tuning->saveState());
     const char* keys[2] = {"analyzer", "stage"};
     for (int i = 0; i < 2; ++i) {
         const ui::ConnectionChoice c = m_sessions[i]->choice();

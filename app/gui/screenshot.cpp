@@ -2,6 +2,9 @@
 
 #include "instrument_session.h"
 #include "main_window.h"
+#include "widgets/tuning/step_test_panel.h"
+#include "widgets/tuning/tuning_screen.h"
+#include "widgets/tuning/zn_panel.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>
@@ -77,6 +80,33 @@ int takeScreenshot(const ScreenshotRequest& r)
         spinUntil([&] { return !c->status().anyMoving(); }, 10000);
         c->move({{0, -0.1 * (x.travelMax - x.travelMin)}}, true);
         spin(300);
+    }
+    if (r.tune) {
+        // The stage's X: a step test under the seed's gains, the relay assistant
+        // (its verification adds the Z-N PID step beside it), the assistant shown.
+        ui::TuningScreen* t = w.tuningScreen();
+        InstrumentSession* stage = w.stage();
+        if (!stage->client()->status().axes.value(0).homed) {
+            stage->client()->home(0);
+            spin(300);
+            spinUntil([&] { return !stage->client()->status().anyMoving(); }, 30000);
+        }
+        stage->client()->move({{0, 50}}, false);
+        spin(300);
+        spinUntil([&] { return !stage->client()->status().anyMoving(); }, 10000);
+        w.showScreen(QStringLiteral("tuning"));
+        spinUntil([&] { return t->targetNames().contains(QStringLiteral("Stage X")); }, 5000);
+        t->selectTarget(QStringLiteral("Stage X"));
+        spin(300);
+        t->runStepTest();
+        spinUntil([&] { return !t->runner()->busy(); }, 10000);
+        auto zn = t->assistant()->options();
+        zn.method = motion::control::TuningMethod::Relay;
+        t->assistant()->setOptions(zn);
+        t->startAssistant();
+        spinUntil([&] { return !t->runner()->busy(); }, 30000);
+        t->tabs()->setCurrentWidget(qEnvironmentVariableIsSet("BP_SHOT_STEP_TAB") ? static_cast<QWidget*>(t->stepTests())
+                                                                                  : static_cast<QWidget*>(t->assistant()));
     }
     spin(r.settleMs);
     if (!w.grab().save(r.file)) {

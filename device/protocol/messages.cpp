@@ -221,7 +221,7 @@ std::optional<T> finish(const ByteReader& r, T&& value)
         return std::nullopt;
     return std::optional<T>(std::forward<T>(value));
 }
-bool knownChannel(std::uint8_t k) { return k <= static_cast<std::uint8_t>(ChannelKind::ContourError); }
+bool knownChannel(std::uint8_t k) { return k <= static_cast<std::uint8_t>(ChannelKind::ControllerU); }
 } // namespace
 
 std::optional<HelloReply> decodeHelloReply(const Bytes& p)

@@ -167,7 +167,8 @@ enum class ChannelKind : std::uint8_t {
     ControllerOutput = 4, ///< stage PID output, step rate in steps/s
     Switches = 5,         ///< bit0 home, bit1 limit
     ContourError = 6,     ///< instrument-wide (axis kNoAxis): XY distance from the commanded path, nm
-    // 7–9: tuning; 10–12: path queue; 13: plates; 14: scans.
+    ControllerU = 7,      ///< tuning: the loop's controller output u (eq. 2's running sum), nm of motor correction
+    // 8–9: tuning; 10–12: path queue; 13: plates; 14: scans.
 };
 struct ChannelRef {
     std::uint8_t axis = 0;

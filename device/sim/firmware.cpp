@@ -1,5 +1,7 @@
 #include "device/sim/firmware.h"
 
+#include "device/sim/sim_tuning.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -17,6 +19,8 @@ void Firmware::receive(const std::uint8_t* data, std::size_t size)
 {
     m_frames.clear();
     m_decoder.feed(data, size, m_frames);
+    if (!m_frames.empty())
+        m_machine.tuning().hostHeard();  // feeds the tuning tests' host-silence watchdog
     // Realtime requests act first: a stop or E-stop decoded in the same chunk as
     // queued requests must not wait behind them.
     for (const auto& f : m_frames)
@@ -80,6 +84,8 @@ void Firmware::handle(const proto::Frame& f)
         // session's move with the same seq and bytes.
         for (auto& c : m_cache)
             c.valid = false;
+        // The host that started a test is gone; a new one has not asked for it.
+        m_machine.tuning().abort(0, motion::control::EndReason::Stopped);
     }
     for (const auto& c : m_cache) {
         if (c.valid && c.seq == f.seq && c.type == f.type && c.payload == f.payload) {
@@ -170,6 +176,8 @@ void Firmware::execute(const proto::Frame& f, std::vector<std::uint8_t>& reply)
     case MsgType::EStop:
         return answer(m_machine.estop());
     default: {
+        if (executeTuning(f, reply))
+            return;
         proto::ErrorReply e;
         e.code = proto::ErrorCode::UnknownCommand;
         e.value = f.type;

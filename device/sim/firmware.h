@@ -44,6 +44,8 @@ private:
     void sendFrame(std::uint8_t type, std::uint16_t seq, const proto::Bytes& payload, std::vector<std::uint8_t>& out);
     void sendError(std::uint16_t seq, const proto::ErrorReply& e, std::vector<std::uint8_t>& out);
     void subscribe(const proto::Frame& f, std::vector<std::uint8_t>& reply);
+    /// Tuning requests (firmware_tuning.cpp); false if `f` is not one.
+    bool executeTuning(const proto::Frame& f, std::vector<std::uint8_t>& reply);
     void sampleTelemetry();
     void flushEvents();
 

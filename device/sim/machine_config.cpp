@@ -72,6 +72,13 @@ MachineConfig stageConfig()
     m.model = "BenchPilot microscope stage (simulated)";
     m.profile = ProfileKind::JerkLimited;
     m.closedLoop = true;
+    // The rotor lags its steps by 0.8 ms before the screw turns; the table lags the
+    // nut by 2 ms (driveLagS). With the rotor alone modelled as instant, the loop's
+    // ultimate period was about three control periods, where no continuous-time
+    // tuning rule (Ziegler–Nichols included) holds; see docs/tuning.md.
+    m.rotorLagS = 0.0008;
+    m.loop.velocityFeedForwardS = m.driveLagS + m.rotorLagS;
+    m.loop.accelFeedForwardS2 = m.driveLagS * m.rotorLagS;
     // 1 mm lead ball screw, 200 steps × 16 microsteps; grating 2 µm pitch counted ×4.
     AxisConfig x;
     x.letter = 'X';

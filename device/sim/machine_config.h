@@ -46,10 +46,13 @@ struct ClosedLoopTuning {
     /// on a quantized reading through screw backlash otherwise hunts forever (a
     /// limit cycle of ±1 count every ~45 ms on the stage).
     double deadbandCounts = 1.0;
-    /// The motor leads the reference by velocity × this, matching the drive lag, so
-    /// the integrator does not have to store the lag (and give it back as overshoot
-    /// when the reference stops).
+    /// The motor leads the reference by velocity × this, matching the lags of the
+    /// rotor and the drive, so the integrator does not have to store the lag (and
+    /// give it back as overshoot when the reference stops).
     double velocityFeedForwardS = 0.002;
+    /// …and by the acceleration's change × this (τ_rotor·τ_drive), so the second
+    /// lag does not leave a following error to clean up after every ramp.
+    double accelFeedForwardS2 = 0.0;
 };
 
 struct MachineConfig {
@@ -61,6 +64,9 @@ struct MachineConfig {
     bool zAfterXy = false;          ///< analyzer: Z starts when the XY move has arrived
     double controlPeriodS = 0.001;  ///< PID period
     double driveLagS = 0.002;       ///< carriage follows the screw with this first-order lag (closed loop)
+    /// Closed loop: the motor's rotor (torque build-up, coupling) follows its
+    /// steps with this first-order lag before the screw turns. 0: at once.
+    double rotorLagS = 0.0;
     double inPositionWindow = 0.002;///< closed loop: |error| below this for settleTimeS means arrived
     double settleTimeS = 0.01;
     /// Open loop: |encoder − command| above this at rest raises LostSteps. It must

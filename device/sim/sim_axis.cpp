@@ -5,11 +5,12 @@
 
 namespace sim {
 
-SimAxis::SimAxis(const AxisConfig& config, bool closedLoop, std::uint64_t seed, double driveLagS)
-    : m_cfg(config), m_closedLoop(closedLoop), m_lagS(driveLagS), m_rng(seed)
+SimAxis::SimAxis(const AxisConfig& config, bool closedLoop, std::uint64_t seed, double driveLagS, double rotorLagS)
+    : m_cfg(config), m_closedLoop(closedLoop), m_lagS(driveLagS), m_rotorLagS(rotorLagS), m_rng(seed)
 {
     m_motorSteps = std::llround(config.startPosition / config.stepSize);
     m_screw = static_cast<double>(m_motorSteps) * config.stepSize;
+    m_rotor = m_screw;
     m_driven = m_screw * (1.0 + m_cfg.leadErrorPerUnit);  // power-up: the play sits centred
     m_carriage = m_driven;
     m_ref = measured();
@@ -39,8 +40,20 @@ void SimAxis::holdHere()
     m_refVel = 0;
     m_prevRefForLoop = m_ref;
     m_prevRefVelForLoop = 0;
+    m_prevDvForLoop = 0;
     m_e1 = m_e2 = 0;
     m_stepAccumulator = 0;
+}
+
+void SimAxis::stopAtMeasured()
+{
+    holdHere();
+    if (!m_closedLoop)
+        return;
+    // The nut position that puts the carriage at the grating's reading.
+    const double screwTarget = measured() / (1.0 + m_cfg.leadErrorPerUnit);
+    m_stepAccumulator = std::round((screwTarget - static_cast<double>(m_motorSteps) * m_cfg.stepSize) / m_cfg.stepSize);
+    m_ticksLeft = 1;
 }
 
 void SimAxis::takeUpPlay()
@@ -49,7 +62,7 @@ void SimAxis::takeUpPlay()
     // carriage: the carriage only moves once the nut presses one side of the gap,
     // so on reversal the screw first turns through the play with the carriage
     // standing still (a play operator, never a jump against the motion).
-    const double nominal = m_screw * (1.0 + m_cfg.leadErrorPerUnit);
+    const double nominal = m_rotor * (1.0 + m_cfg.leadErrorPerUnit);
     const double half = 0.5 * m_cfg.backlash;
     m_driven = std::clamp(m_driven, nominal - half, nominal + half);
 }
@@ -104,15 +117,46 @@ void SimAxis::controlStep(const PidGains& g, int ticksPerPeriod, const ClosedLoo
     const double du = g.kp * (e - m_e1) + g.ki * e + g.kd * (e - 2 * m_e1 + m_e2);
     m_e2 = m_e1;
     m_e1 = e;
-    const double feedForward = (m_ref - m_prevRefForLoop) + tuning.velocityFeedForwardS * (m_refVel - m_prevRefVelForLoop);
+    m_u += du;
+    // Two lags in series (rotor, table) are undone by τ1+τ2 on the velocity's
+    // change and τ1·τ2 on the acceleration's change.
+    const double dv = m_refVel - m_prevRefVelForLoop;
+    const double periodS = std::max(1, ticksPerPeriod) * m_tickS;
+    const double feedForward = (m_ref - m_prevRefForLoop) + tuning.velocityFeedForwardS * dv
+        + tuning.accelFeedForwardS2 * (dv - m_prevDvForLoop) / periodS;
+    m_prevDvForLoop = dv;
     m_prevRefForLoop = m_ref;
     m_prevRefVelForLoop = m_refVel;
     m_stepAccumulator += (feedForward + du) / m_cfg.stepSize;
     m_ticksLeft = ticksPerPeriod < 1 ? 1 : ticksPerPeriod;
 }
 
+void SimAxis::applyCorrection(double du, int ticksPerPeriod)
+{
+    if (!m_closedLoop || m_frozen)
+        return;
+    m_prevRefForLoop = m_ref;
+    m_prevRefVelForLoop = m_refVel;
+    m_prevDvForLoop = 0;
+    m_u += du;
+    m_stepAccumulator += du / m_cfg.stepSize;
+    m_ticksLeft = ticksPerPeriod < 1 ? 1 : ticksPerPeriod;
+}
+
+void SimAxis::resumeLoop(const ClosedLoopTuning& tuning)
+{
+    // Eq. 2 differences errors: an error history from before the test would
+    // look like a jump and kick the derivative term.
+    const double raw = m_ref - measured();
+    m_e1 = m_e2 = std::abs(raw) <= tuning.deadbandCounts * m_cfg.resolution + 1e-12 ? 0.0 : raw;
+    m_prevRefForLoop = m_ref;
+    m_prevRefVelForLoop = m_refVel;
+    m_prevDvForLoop = 0;
+}
+
 void SimAxis::tick(double dtS)
 {
+    m_tickS = dtS;
     std::int64_t steps = 0;
     if (m_closedLoop) {
         // Spread the period's steps evenly over its ticks, as a step generator
@@ -128,6 +172,10 @@ void SimAxis::tick(double dtS)
         m_outputStepsS = static_cast<double>(steps) / dtS;
     }
     issueSteps(steps, dtS);
+    if (m_closedLoop && m_rotorLagS > 0)
+        m_rotor += (m_screw - m_rotor) * std::min(1.0, dtS / m_rotorLagS);
+    else
+        m_rotor = m_screw;
     takeUpPlay();
     if (m_closedLoop && m_lagS > 0) {
         // The table follows the nut through the coupling and its own compliance.

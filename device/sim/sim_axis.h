@@ -11,8 +11,9 @@ namespace sim {
 
 class SimAxis {
 public:
-    /// `driveLagS`: closed loop only, the table follows the nut with this first-order lag.
-    SimAxis(const AxisConfig& config, bool closedLoop, std::uint64_t seed, double driveLagS = 0.002);
+    /// `driveLagS`: closed loop only, the table follows the nut with this first-order lag;
+    /// `rotorLagS`: closed loop only, the screw follows the motor's steps with this one.
+    SimAxis(const AxisConfig& config, bool closedLoop, std::uint64_t seed, double driveLagS = 0.002, double rotorLagS = 0);
 
     const AxisConfig& config() const { return m_cfg; }
 
@@ -26,8 +27,19 @@ public:
     /// Closed loop only: one PID period (seed 002 eq. 2, incremental form) on top of
     /// the reference's feed-forward.
     void controlStep(const PidGains& gains, int ticksPerPeriod, const ClosedLoopTuning& tuning = {});
+    /// Closed loop, a tuning test in force: this period's correction Δu comes from
+    /// the test instead of the PID, and the reference (the test's setpoint) is not fed forward.
+    void applyCorrection(double du, int ticksPerPeriod);
+    /// Closed loop: the PID takes over again from the present error, without a kick.
+    void resumeLoop(const ClosedLoopTuning& tuning = {});
+    /// The controller output u: the running sum of every period's Δu since power-up.
+    double controllerU() const { return m_u; }
     /// Makes the reference equal to where the carriage is, e.g. after a latched stop.
     void holdHere();
+    /// Closed loop: holdHere, and the motor is sent back at once to where the
+    /// grating reads, instead of letting the table follow a motor that a wild
+    /// test drove far ahead of it: the safe stop after a trip.
+    void stopAtMeasured();
     /// E-stop: the reference freezes; the motor gets no more steps.
     void freeze();
 
@@ -52,11 +64,15 @@ private:
     AxisConfig m_cfg;
     bool m_closedLoop;
     double m_lagS;
+    double m_rotorLagS;
     std::mt19937_64 m_rng;
 
     double m_ref = 0, m_refVel = 0, m_prevRefForLoop = 0, m_prevRefVelForLoop = 0;
+    double m_prevDvForLoop = 0;     ///< last period's change of the reference velocity (acceleration feed-forward)
+    double m_tickS = 1e-4;          ///< the simulation tick, as tick() was last given it
     std::int64_t m_motorSteps = 0;  ///< steps the driver has received, from machine zero
     double m_screw = 0;             ///< nut position: motor position less slipped steps
+    double m_rotor = 0;             ///< closed loop: where the rotor has turned the screw to (lags m_screw)
     std::int64_t m_lostSteps = 0;
     double m_driven = 0;            ///< where the nut has pushed the carriage to, through the play
     double m_carriage = 0;
@@ -64,6 +80,7 @@ private:
     double m_outputStepsS = 0;
     double m_stepAccumulator = 0;   ///< closed loop: fractional steps carried between periods
     double m_e1 = 0, m_e2 = 0;      ///< PID: error at k−1, k−2 (axis units)
+    double m_u = 0;                 ///< controller output, running sum of Δu (axis units)
     double m_load = 1;
     int m_ticksLeft = 1;            ///< ticks left in the current PID period
     bool m_frozen = false;

@@ -1,5 +1,7 @@
 #include "device/sim/sim_machine.h"
 
+#include "device/sim/sim_tuning.h"
+
 #include "motion/jerk_limited.h"
 #include "motion/seed_scurve.h"
 
@@ -18,16 +20,19 @@ SimMachine::SimMachine(const MachineConfig& config) : m_cfg(config)
     std::uint64_t seed = config.seed;
     for (const auto& ac : config.axes) {
         AxisState s;
-        s.plant = std::make_unique<SimAxis>(ac, config.closedLoop, seed++, config.driveLagS);
+        s.plant = std::make_unique<SimAxis>(ac, config.closedLoop, seed++, config.driveLagS, config.rotorLagS);
         s.plant->holdHere();
         s.softMin = 0;
         s.softMax = ac.travel;
         m_axes.push_back(std::move(s));
         zeroCounters(axisCount() - 1, 0.0);  // power-up: the counters read zero wherever the axis is
     }
+    m_tuning = std::make_unique<SimTuning>(*this);
 }
 
 SimMachine::~SimMachine() = default;
+
+void SimMachine::setGains(const PidGains& g) { m_tuning->setAllGains(g); }
 
 double SimMachine::commandedLogical(int i) const { return st(i).plant->reference() - st(i).offset; }
 double SimMachine::measuredLogical(int i) const { return st(i).plant->measured() - st(i).measuredOffset; }
@@ -345,6 +350,7 @@ SimMachine::Result SimMachine::stop(std::uint8_t mask)
 {
     if (mask == 0)
         mask = 0xFF;
+    m_tuning->abort(mask, motion::control::EndReason::Stopped);  // a test on these axes ends: the axis holds
     // Homing is one sequence: stopping any axis that takes part ends it for all
     // the stages that have not started yet.
     bool homingStopped = false;
@@ -416,6 +422,7 @@ void SimMachine::cancelSegmentsAfter(int id, const char* why)
 
 SimMachine::Result SimMachine::estop()
 {
+    m_tuning->abort(0xFF, motion::control::EndReason::EStop);
     m_estop = true;
     m_segments.clear();
     m_homeStages.clear();

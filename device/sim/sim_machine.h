@@ -16,6 +16,8 @@ class Profile;
 
 namespace sim {
 
+class SimTuning;
+
 class SimMachine {
 public:
     static constexpr double kTickS = 100e-6;        ///< simulation tick: 10 kHz
@@ -23,7 +25,7 @@ public:
     /// …and its reference is at rest this much later at the latest. The 250 ms
     /// promise (HELLO's jogWatchdogMs) also covers the stage's settling after the
     /// reference stops, so the ramp does not take the whole remaining 50 ms.
-    static constexpr double kJogStopBudgetS = 0.030;
+    static constexpr double kJogStopBudgetS = 0.025;
 
     explicit SimMachine(const MachineConfig& config);
     ~SimMachine();
@@ -65,10 +67,15 @@ public:
     double measuredLogical(int i) const;
     bool homed(int i) const { return m_axes[static_cast<std::size_t>(i)].homed; }
     bool estopActive() const { return m_estop; }
-    void setGains(const PidGains& g) { m_cfg.gains = g; }
+    /// Every closed-loop axis' operator gains (seed 002's per-period form).
+    void setGains(const PidGains& g);
+    /// Gains and tuning tests of the closed-loop axes (sim_tuning.h).
+    SimTuning& tuning() { return *m_tuning; }
+    const SimTuning& tuning() const { return *m_tuning; }
 
 private:
-    enum class Mode { Idle, Segment, Jog, Decel, Homing, Settling };
+    friend class SimTuning;
+    enum class Mode { Idle, Segment, Jog, Decel, Homing, Settling, Tuning };
     enum class HomePhase { SeekFast, BackOff, SeekSlow };
 
     struct AxisState {
@@ -146,6 +153,7 @@ private:
     bool m_estop = false;
     int m_lastXySegment = -1;
     std::vector<double> m_xyLineStart, m_xyLineDir;  ///< last XY path, for contour error
+    std::unique_ptr<SimTuning> m_tuning;
 };
 
 } // namespace sim

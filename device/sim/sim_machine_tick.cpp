@@ -3,6 +3,8 @@
 // checks settling and switches.
 #include "device/sim/sim_machine.h"
 
+#include "device/sim/sim_tuning.h"
+
 #include "motion/profile.h"
 
 #include <algorithm>
@@ -192,14 +194,16 @@ void SimMachine::tick()
     tickSegments();
     tickVelocityModes();
     for (int i = 0; i < axisCount(); ++i) {
-        if (m_cfg.closedLoop && m_ticks % static_cast<std::uint64_t>(m_ticksPerControl) == 0)
-            st(i).plant->controlStep(m_cfg.gains, m_ticksPerControl, m_cfg.loop);
+        if (m_cfg.closedLoop && m_ticks % static_cast<std::uint64_t>(m_ticksPerControl) == 0
+            && !m_tuning->controlStep(i, m_ticksPerControl))  // a tuning test, or the PID with the axis' gains
+            st(i).plant->controlStep(m_tuning->gains(i), m_ticksPerControl, m_cfg.loop);
         st(i).plant->tick(kTickS);
         if (st(i).mode == Mode::Settling)
             tickSettling(i);
         checkSwitches(i);
     }
     advanceHomingStages();
+    m_tuning->tick();
 }
 
 } // namespace sim

@@ -2,6 +2,8 @@
 // all in logical (host) coordinates and wire units.
 #include "device/sim/sim_machine.h"
 
+#include "device/protocol/messages_tuning.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -13,7 +15,7 @@ proto::HelloReply SimMachine::hello(std::uint32_t linkBaud) const
     h.kind = m_cfg.kind;
     h.capabilities = proto::CapHoming | proto::CapTelemetry | proto::CapJogVelocity;
     if (m_cfg.closedLoop)
-        h.capabilities |= proto::CapGrating | proto::CapClosedLoopPid;
+        h.capabilities |= proto::CapGrating | proto::CapClosedLoopPid | proto::CapGains | proto::CapExperiments;
     else
         h.capabilities |= proto::CapEncoder;
     if (m_cfg.zAfterXy)
@@ -96,6 +98,8 @@ bool SimMachine::channelExists(const proto::ChannelRef& c) const
 {
     if (c.kind == proto::ChannelKind::ContourError)
         return c.axis == proto::kNoAxis && m_cfg.closedLoop;
+    if (c.kind == proto::ChannelKind::ControllerU)
+        return c.axis < axisCount() && m_cfg.closedLoop;
     return c.axis < axisCount();
 }
 
@@ -115,6 +119,7 @@ std::int32_t SimMachine::channelValue(const proto::ChannelRef& c) const
     case proto::ChannelKind::ControllerOutput: v = p.controllerOutputStepsS(); break;
     case proto::ChannelKind::Switches: v = (p.homeSwitch() ? 1 : 0) | (p.limitSwitch() ? 2 : 0); break;
     case proto::ChannelKind::ContourError: break;
+    case proto::ChannelKind::ControllerU: v = p.controllerU() * k; break;
     }
     return static_cast<std::int32_t>(std::clamp(std::lround(v), -2147483647L, 2147483647L));
 }

@@ -1,5 +1,7 @@
 #include "device/telemetry/telemetry_hub.h"
 
+#include "device/protocol/messages_tuning.h"
+
 #include <QDir>
 #include <QVarLengthArray>
 
@@ -35,6 +37,7 @@ QString kindWord(proto::ChannelKind k)
     case proto::ChannelKind::ControllerOutput: return TelemetryHub::tr("controller output");
     case proto::ChannelKind::Switches: return TelemetryHub::tr("switches");
     case proto::ChannelKind::ContourError: return TelemetryHub::tr("contour error");
+    case proto::ChannelKind::ControllerU: return TelemetryHub::tr("controller output u");
     }
     return {};
 }
@@ -172,6 +175,8 @@ QVector<ChannelKey> TelemetryHub::availableChannels(int index) const
                 continue;
             out.push_back(ChannelKey{index, {axis, k}});
         }
+        if (id.capabilities & proto::CapGains)  // tuning: the PID's own output
+            out.push_back(ChannelKey{index, {axis, K::ControllerU}});
     }
     if (pid)
         out.push_back(ChannelKey{index, {proto::kNoAxis, K::ContourError}});
@@ -203,7 +208,8 @@ QString TelemetryHub::channelUnit(const ChannelKey& key) const
     case proto::ChannelKind::FollowingError: return microlitre ? QStringLiteral("nL") : QStringLiteral("µm");
     case proto::ChannelKind::ControllerOutput: return QStringLiteral("steps/s");
     case proto::ChannelKind::Switches: return QString();
-    case proto::ChannelKind::ContourError: return QStringLiteral("µm");
+    case proto::ChannelKind::ContourError:
+    case proto::ChannelKind::ControllerU: return QStringLiteral("µm");
     }
     return {};
 }
@@ -213,7 +219,8 @@ double TelemetryHub::unitFactor(const ChannelKey& key) const
     // toAxisUnits() gives mm (µL); errors are a thousand times smaller than travel.
     switch (key.ref.kind) {
     case proto::ChannelKind::FollowingError:
-    case proto::ChannelKind::ContourError: return 1000.0;
+    case proto::ChannelKind::ContourError:
+    case proto::ChannelKind::ControllerU: return 1000.0;
     default: return 1.0;
     }
 }

@@ -8,6 +8,7 @@
 #include "device/protocol/crc16.h"
 #include "device/protocol/frame_codec.h"
 #include "device/protocol/messages.h"
+#include "tuning_doc_examples.h"
 
 #include <gtest/gtest.h>
 
@@ -115,6 +116,8 @@ std::vector<Example> examples()
     tb.sampleCount = 2;
     tb.values = {nm(12.5), nm(40.0005), 1, nm(12.5005), nm(40), 0};
     ex.push_back({"telemetry-batch", t(MsgType::TelemetryBatch), 2, encode(tb)});
+    for (auto& [name, type, seq, payload] : tuningdoc::examples())
+        ex.push_back({name, type, seq, payload});
     return ex;
 }
 

@@ -424,12 +424,12 @@ TEST(CodecMessages, DecodersRejectUnknownEnumValuesAndCounts)
 
     const Bytes sub = encode(SubscribeRequest{100, {{0, ChannelKind::ContourError}}});
     EXPECT_TRUE(decodeSubscribeRequest(sub));
-    EXPECT_FALSE(decodeSubscribeRequest(with(sub, 6, 7)));  // channel kind
+    EXPECT_FALSE(decodeSubscribeRequest(with(sub, 6, 0xEE)));  // channel kind
     TelemetryBatch t;
     t.channels = {{0, ChannelKind::Measured}};
     const Bytes tb = encode(t);
     EXPECT_TRUE(decodeTelemetryBatch(tb));
-    EXPECT_FALSE(decodeTelemetryBatch(with(tb, 18, 7)));
+    EXPECT_FALSE(decodeTelemetryBatch(with(tb, 18, 0xEE)));
 
     // Event kinds and error codes a host does not know yet still decode (an older
     // host logs a newer device's events and shows its refusals); 0 and 0x80+ do not.

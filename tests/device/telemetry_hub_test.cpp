@@ -202,7 +202,7 @@ TEST_F(TelemetryHubTest, StoresHoldTheDevicesSamplesAtItsTimesInAxisUnits)
     EXPECT_EQ(s.hub.channelName(contour), QStringLiteral("Stage contour error"));
     EXPECT_EQ(s.hub.channelUnit(contour), QStringLiteral("µm"));
     const auto available = s.hub.availableChannels(s.index);
-    EXPECT_EQ(available.size(), 2 * 6 + 1);  // X and Y with PID output, plus contour error
+    EXPECT_EQ(available.size(), 2 * 7 + 1);  // X and Y with PID output and controller output u, plus contour error
     EXPECT_TRUE(available.contains(contour));
 
     s.hub.setWanted(QStringLiteral("plot"), {measured, error, contour}, 1000);

@@ -35,12 +35,14 @@
 #include "device/protocol/crc16.h"
 #include "device/protocol/frame_codec.h"
 #include "device/protocol/messages.h"
+#include "device/protocol/messages_tuning.h"
 #include "device/sim/firmware.h"
 #include "device/sim/machine_config.h"
 
 #include <algorithm>
 #include <array>
 #include <cinttypes>
+#include <cmath>
 #include <cstdarg>
 #include <cstdint>
 #include <cstdio>
@@ -193,6 +195,14 @@ void checkAllDecoders(const Bytes& p)
     checkDecoder(p, &proto::decodeTelemetryBatch, "decodeTelemetryBatch");
     checkDecoder(p, &proto::decodeEvent, "decodeEvent");
     checkDecoder(p, &proto::decodeErrorReply, "decodeErrorReply");
+    checkDecoder(p, &proto::decodeAxisRequest, "decodeAxisRequest");
+    checkDecoder(p, &proto::decodeGainsReply, "decodeGainsReply");
+    checkDecoder(p, &proto::decodeSetGainsRequest, "decodeSetGainsRequest");
+    checkDecoder(p, &proto::decodeStepTestRequest, "decodeStepTestRequest");
+    checkDecoder(p, &proto::decodeRelayTestRequest, "decodeRelayTestRequest");
+    checkDecoder(p, &proto::decodeCaptureRequest, "decodeCaptureRequest");
+    checkDecoder(p, &proto::decodeCaptureReply, "decodeCaptureReply");
+    checkDecoder(p, &proto::decodeAbortRequest, "decodeAbortRequest");
     const auto move = proto::decodeMoveRequest(p);
     if (move)
         CHECK(static_cast<int>(move->targets.size()) == proto::popcount8(move->axisMask), "MOVE target count != axes");
@@ -337,7 +347,7 @@ private:
 
 bool knownRequest(std::uint8_t t)
 {
-    return (t >= 0x01 && t <= 0x0A) || (t >= 0x20 && t <= 0x22);
+    return (t >= 0x01 && t <= 0x0A) || (t >= 0x20 && t <= 0x22) || proto::tuningTypeName(t) != nullptr;
 }
 
 struct FirmwareChecker {
@@ -424,6 +434,19 @@ struct FirmwareChecker {
             break;
         }
         default:
+            if (req.type == static_cast<std::uint8_t>(proto::kGetGains)) {
+                const auto g = proto::decodeGainsReply(rep.payload);
+                CHECK(g && g->axis < axes && g->controlPeriodUs > 0, "GET_GAINS reply wrong");
+                CHECK(std::isfinite(g->gains.kp) && g->gains.kp >= 0 && std::isfinite(g->gains.ki) && g->gains.ki >= 0
+                          && std::isfinite(g->gains.kd) && g->gains.kd >= 0,
+                      "the device holds gains it should have refused");
+                break;
+            }
+            if (req.type == static_cast<std::uint8_t>(proto::kGetCapture)) {
+                const auto c = proto::decodeCaptureReply(rep.payload);
+                CHECK(c && c->axis < axes && c->first + c->samples.size() <= c->total, "GET_CAPTURE reply wrong");
+                break;
+            }
             CHECK(rep.payload.empty(), "reply to 0x%02X has a %zu-byte payload", unsigned{req.type}, rep.payload.size());
             break;
         }

@@ -7,12 +7,14 @@
 #include "device/protocol/cobs.h"
 #include "device/protocol/crc16.h"
 #include "device/protocol/messages.h"
+#include "device/protocol/messages_tuning.h"
 
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <string>
 
 namespace {
@@ -69,6 +71,26 @@ std::vector<proto::ChannelRef> randChannels(Rng& r)
     return ch;
 }
 
+proto::WireGains randGains(Rng& r)
+{
+    auto one = [&]() -> float {
+        switch (r.below(8)) {
+        case 0: return std::numeric_limits<float>::quiet_NaN();
+        case 1: return r.chance(50) ? std::numeric_limits<float>::infinity() : -std::numeric_limits<float>::infinity();
+        case 2: return -static_cast<float>(r.below(100)) / 10.0f;
+        case 3: return 1e9f;
+        default: return static_cast<float>(r.below(10000)) / 1000.0f;
+        }
+    };
+    return {one(), one(), one()};
+}
+
+proto::WireEnvelope randEnvelope(Rng& r)
+{
+    auto lim = [&]() { return static_cast<std::uint32_t>(r.chance(80) ? r.range(0, 200000) : r.next()); };
+    return {lim(), lim(), static_cast<std::uint32_t>(r.chance(80) ? r.range(0, 3000) : r.next())};
+}
+
 Bytes validPayload(Rng& r, std::uint8_t type)
 {
     using namespace proto;
@@ -106,6 +128,58 @@ Bytes validPayload(Rng& r, std::uint8_t type)
         for (int i = 0; i < popcount8(j.axisMask); ++i)
             j.velocities.push_back(r.chance(70) ? static_cast<std::int32_t>(r.range(-20000000, 20000000)) : randPosition(r));
         return encode(j);
+    }
+    case 0x0B: return encode(AxisRequest{static_cast<std::uint8_t>(r.below(r.chance(90) ? 2 : 256))});
+    case 0x0C: return encode(SetGainsRequest{static_cast<std::uint8_t>(r.below(3)), static_cast<std::uint8_t>(r.below(2)), randGains(r)});
+    case 0x0D: {
+        StepTestRequest s;
+        s.axis = static_cast<std::uint8_t>(r.below(r.chance(90) ? 2 : 4));
+        s.step = r.chance(80) ? static_cast<std::int32_t>(r.range(-50000, 50000)) : randPosition(r);
+        s.settleBand = static_cast<std::uint32_t>(r.range(0, 5000));
+        s.settleHoldMs = static_cast<std::uint16_t>(r.below(100));
+        s.runMs = static_cast<std::uint32_t>(r.chance(50) ? r.range(0, 500) : r.next());
+        s.envelope = randEnvelope(r);
+        if (r.chance(50))
+            s.trialGains = randGains(r);
+        return encode(s);
+    }
+    case 0x0E: {
+        RelayTestRequest q;
+        q.axis = static_cast<std::uint8_t>(r.below(r.chance(90) ? 2 : 4));
+        q.amplitude = static_cast<std::uint32_t>(r.chance(80) ? r.range(0, 50000) : r.next());
+        q.hysteresis = static_cast<std::uint32_t>(r.range(0, 5000));
+        q.forcedPeriodUs = static_cast<std::uint32_t>(r.chance(50) ? 0 : r.range(0, 20000));
+        q.cycles = static_cast<std::uint16_t>(r.below(r.chance(80) ? 30 : 65536));
+        q.envelope = randEnvelope(r);
+        return encode(q);
+    }
+    case 0x0F: return encode(CaptureRequest{static_cast<std::uint8_t>(r.below(3)), static_cast<std::uint32_t>(r.chance(70) ? r.below(200) : r.next()),
+                                            static_cast<std::uint16_t>(r.below(r.chance(80) ? 100 : 65536))});
+    case 0x23: return encode(AbortRequest{randMask(r)});
+    case 0x8B: {
+        GainsReply g;
+        g.axis = r.byte();
+        g.controlPeriodUs = static_cast<std::uint32_t>(r.next());
+        g.gains = randGains(r);
+        g.saved = randGains(r);
+        g.flags = static_cast<std::uint8_t>(r.below(2));
+        g.limits = randGains(r);
+        return encode(g);
+    }
+    case 0x8F: {
+        CaptureReply c;
+        c.axis = r.byte();
+        c.kind = static_cast<std::uint8_t>(r.below(3));
+        c.reason = static_cast<std::uint8_t>(r.below(10));
+        c.testId = static_cast<std::uint32_t>(r.next());
+        c.periodUs = static_cast<std::uint32_t>(r.next());
+        c.total = static_cast<std::uint32_t>(r.next());
+        c.startPosition = randPosition(r);
+        c.gains = randGains(r);
+        c.samples.resize(r.below(r.chance(5) ? 81 : 6));
+        for (auto& s : c.samples)
+            s = {randPosition(r), randPosition(r), randPosition(r)};
+        return encode(c);
     }
     case 0x81: {
         HelloReply h;
@@ -205,10 +279,11 @@ std::uint8_t randType(Rng& r)
     // Weighted: E-STOP latches every later motion request into an error, so it
     // and RESET are rare; motion requests are common.
     static const std::uint8_t kRequests[] = {0x01, 0x02, 0x02, 0x03, 0x04, 0x04, 0x04, 0x05, 0x05, 0x06, 0x07,
-                                             0x08, 0x08, 0x09, 0x09, 0x20, 0x20, 0x20, 0x21, 0x21};
+                                             0x08, 0x08, 0x09, 0x09, 0x20, 0x20, 0x20, 0x21, 0x21,
+                                             0x0B, 0x0C, 0x0C, 0x0D, 0x0D, 0x0E, 0x0E, 0x0F, 0x23};
     if (r.chance(2))
         return r.chance(50) ? 0x22 : 0x0A;
-    static const std::uint8_t kOthers[] = {0x81, 0x82, 0x87, 0x89, 0xA0, 0xE0, 0xE1, 0xFF, 0x0B, 0x1F, 0x23, 0x3F, 0x40, 0x00};
+    static const std::uint8_t kOthers[] = {0x81, 0x82, 0x87, 0x89, 0x8B, 0x8F, 0xA0, 0xE0, 0xE1, 0xFF, 0x10, 0x1F, 0x24, 0x3F, 0x40, 0x00};
     if (r.chance(75))
         return kRequests[r.below(sizeof kRequests)];
     if (r.chance(85))

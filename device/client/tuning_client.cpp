@@ -1,0 +1,198 @@
+#include "device/client/tuning_client.h"
+
+#include "device/protocol/messages_tuning.h"
+
+#include <cmath>
+#include <memory>
+
+namespace dev {
+namespace {
+using motion::control::DiscreteGains;
+
+proto::WireGains toWire(const DiscreteGains& g)
+{
+    return {static_cast<float>(g.kp), static_cast<float>(g.ki), static_cast<float>(g.kd)};
+}
+DiscreteGains fromWire(const proto::WireGains& g) { return {g.kp, g.ki, g.kd}; }
+
+std::uint32_t toU32(double v)
+{
+    if (!(v > 0))
+        return 0;
+    return v >= 4294967295.0 ? 4294967295u : static_cast<std::uint32_t>(std::llround(v));
+}
+
+proto::WireEnvelope toWire(const motion::control::Envelope& e, double scale)
+{
+    return {toU32(e.maxExcursion * scale), toU32(e.maxFollowingError * scale), toU32(e.maxDurationS * 1000)};
+}
+
+RequestError invalid(const QString& why)
+{
+    RequestError e;
+    e.kind = RequestError::Kind::Invalid;
+    e.message = why;
+    return e;
+}
+} // namespace
+
+TuningClient::TuningClient(InstrumentClient* client, QObject* parent) : QObject(parent), m_client(client)
+{
+    connect(client, &InstrumentClient::eventReceived, this, [this](const DeviceEvent& e) {
+        if (e.kind == proto::kEvTestEnded || e.kind == proto::kEvTestTripped || e.kind == proto::kEvTestAborted)
+            emit testEnded(e.axis, e.kind, e.text);
+        else if (e.kind == proto::kEvGainsChanged)
+            emit gainsChanged(e.axis, e.text);
+    });
+}
+
+bool TuningClient::hasGains() const { return m_client && (m_client->identity().capabilities & proto::CapGains); }
+bool TuningClient::hasTests() const { return m_client && (m_client->identity().capabilities & proto::CapExperiments); }
+
+QVector<int> TuningClient::tunableAxes() const
+{
+    QVector<int> out;
+    if (!hasGains() || !(m_client->identity().capabilities & proto::CapClosedLoopPid))
+        return out;
+    for (int i = 0; i < m_client->identity().axes.size(); ++i)
+        out.push_back(i);
+    return out;
+}
+
+double TuningClient::scale(int axis) const
+{
+    const auto& axes = m_client->identity().axes;
+    return axis >= 0 && axis < axes.size() ? axes[axis].wireScale() : 1e6;
+}
+
+void TuningClient::getGains(int axis, GainsDone done)
+{
+    m_client->request(
+        proto::kGetGains, proto::encode(proto::AxisRequest{static_cast<std::uint8_t>(axis)}),
+        [done](const std::optional<RequestError>& e, const proto::Bytes& payload) {
+            AxisGains g;
+            if (e)
+                return done(e, g);
+            const auto r = proto::decodeGainsReply(payload);
+            if (!r)
+                return done(invalid(tr("the device answered GET_GAINS with something unreadable")), g);
+            g.axis = r->axis;
+            g.controlPeriodS = r->controlPeriodUs * 1e-6;
+            g.gains = fromWire(r->gains);
+            g.saved = fromWire(r->saved);
+            g.limits = fromWire(r->limits);
+            g.testRunning = r->flags & proto::kGainsTestRunning;
+            done(std::nullopt, g);
+        },
+        tr("get gains"));
+}
+
+void TuningClient::setGains(int axis, const DiscreteGains& gains, bool keep, Callback done)
+{
+    proto::SetGainsRequest r{static_cast<std::uint8_t>(axis), static_cast<std::uint8_t>(keep ? proto::kSetGainsSave : 0), toWire(gains)};
+    send(proto::kSetGains, proto::encode(r), std::move(done), tr("set gains"));
+}
+
+void TuningClient::startStepTest(const StepTestParams& p, Callback done)
+{
+    const double k = scale(p.axis);
+    proto::StepTestRequest r;
+    r.axis = static_cast<std::uint8_t>(p.axis);
+    const double step = std::llround(p.stepMm * k);
+    if (!std::isfinite(p.stepMm) || std::abs(step) > 2147483647.0) {
+        if (done)
+            done(invalid(tr("step %1 mm is not a usable step size").arg(p.stepMm)));
+        return;
+    }
+    r.step = static_cast<std::int32_t>(step);
+    r.settleBand = toU32(p.settleBandMm * k);
+    r.settleHoldMs = static_cast<std::uint16_t>(std::min(65535.0, std::max(0.0, std::round(p.settleHoldS * 1000))));
+    r.runMs = toU32(p.runS * 1000);
+    r.envelope = toWire(p.envelope, k);
+    if (p.trialGains)
+        r.trialGains = toWire(*p.trialGains);
+    send(proto::kStepTest, proto::encode(r), std::move(done), tr("step test"));
+}
+
+void TuningClient::startRelayTest(const RelayTestParams& p, Callback done)
+{
+    const double k = scale(p.axis);
+    proto::RelayTestRequest r;
+    r.axis = static_cast<std::uint8_t>(p.axis);
+    r.amplitude = toU32(p.amplitudeMm * k);
+    r.hysteresis = toU32(p.hysteresisMm * k);
+    r.forcedPeriodUs = toU32(p.forcedPeriodS * 1e6);
+    r.cycles = static_cast<std::uint16_t>(std::clamp(p.cycles, 0, 65535));
+    r.envelope = toWire(p.envelope, k);
+    send(proto::kRelayTest, proto::encode(r), std::move(done), tr("relay test"));
+}
+
+void TuningClient::abortTests(quint8 axisMask, Callback done)
+{
+    send(proto::kTestAbort, proto::encode(proto::AbortRequest{axisMask}), std::move(done), tr("abort test"));
+}
+
+void TuningClient::send(proto::MsgType type, const proto::Bytes& payload, Callback done, const QString& what)
+{
+    m_client->request(
+        type, payload,
+        [done](const std::optional<RequestError>& e, const proto::Bytes&) {
+            if (done)
+                done(e);
+        },
+        what);
+}
+
+void TuningClient::fetchCapture(int axis, CaptureDone done, Progress progress)
+{
+    auto into = std::make_shared<TestCapture>();
+    into->axis = axis;
+    fetchChunk(axis, into, 0, std::move(done), std::move(progress));
+}
+
+void TuningClient::fetchChunk(int axis, std::shared_ptr<TestCapture> into, quint32 first, CaptureDone done, Progress progress)
+{
+    const proto::CaptureRequest q{static_cast<std::uint8_t>(axis), first, proto::kMaxCaptureSamplesPerReply};
+    QPointer<TuningClient> self(this);
+    m_client->request(
+        proto::kGetCapture, proto::encode(q),
+        [self, axis, into, first, done, progress](const std::optional<RequestError>& e, const proto::Bytes& payload) {
+            if (!self)
+                return;
+            if (e)
+                return done(e, *into);
+            const auto c = proto::decodeCaptureReply(payload);
+            if (!c)
+                return done(invalid(tr("the device answered GET_CAPTURE with something unreadable")), *into);
+            if (first > 0 && c->testId != into->testId)
+                return done(invalid(tr("a new test replaced the capture while it was being read")), *into);
+            const double k = self->scale(axis);
+            auto& r = into->record;
+            if (first == 0) {
+                into->kind = c->kind;
+                into->testId = c->testId;
+                into->gains = fromWire(c->gains);
+                r.periodS = c->periodUs * 1e-6;
+                r.startPosition = c->startPosition / k;
+                r.startOutput = 0;
+                r.reason = static_cast<motion::control::EndReason>(c->reason);
+                const bool duration = r.reason == motion::control::EndReason::Duration;
+                r.tripValue = duration ? c->tripValue / 1000.0 : c->tripValue / k;
+                r.tripLimit = duration ? c->tripLimit / 1000.0 : c->tripLimit / k;
+                r.setpoint.reserve(c->total);
+                r.measured.reserve(c->total);
+                r.output.reserve(c->total);
+            }
+            for (const auto& s : c->samples)
+                r.append(s.setpoint / k, s.measured / k, s.output / k);
+            const quint32 next = first + static_cast<quint32>(c->samples.size());
+            if (progress)
+                progress(static_cast<int>(next), static_cast<int>(c->total));
+            if (next >= c->total || c->samples.empty())
+                return done(std::nullopt, *into);
+            self->fetchChunk(axis, into, next, done, progress);
+        },
+        tr("read capture"));
+}
+
+} // namespace dev

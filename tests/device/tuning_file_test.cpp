@@ -1,0 +1,154 @@
+// Tuning results as files (docs/tuning_results.md): round trips, every problem
+// of a bad file at once with its position and field, the examples, atomic saves.
+#include "device/files/tuning_file.h"
+#include "motion/control/tuning/tuning_rules.h"
+
+#include <QDir>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+using motion::control::TuningResult;
+
+namespace {
+
+TuningResult relayResult()
+{
+    TuningResult r;
+    r.target = "Stage X";
+    r.unit = "mm";
+    r.method = "relay";
+    r.controlPeriodS = 0.001;
+    r.ku = 4.27;
+    r.tuS = 0.0052;
+    r.kuDescribing = 3.68;
+    r.tuRelayS = 0.006;
+    r.refined = true;
+    r.runs = 3;
+    r.envelope = {0.05, 0.05, 2};
+    r.relayAmplitude = 0.02;
+    r.hysteresis = 0.001;
+    r.points = {{1047.2, 0.256, -171.5}, {1256.6, 0.196, -193.2}};
+    TuningResult::Verification v;
+    v.rule = "zn-pid";
+    v.gains = {2.56, 0.98, 1.66};
+    v.metrics.riseTimeS = 0.0021;
+    v.metrics.overshootPct = 64;
+    v.metrics.settlingTimeS = std::nan("");  // never inside 2 % before the end: written as null
+    v.metrics.iae = 3e-5;
+    v.settledInside5umS = 0.027;
+    v.outcome = "settled";
+    r.verification = v;
+    r.createdUtc = "2024-06-07T10:00:00Z";
+    return r;
+}
+
+std::string sourceDir()
+{
+    std::string here = __FILE__;
+    return here.substr(0, here.size() - std::string("tests/device/tuning_file_test.cpp").size());
+}
+
+} // namespace
+
+TEST(TuningFile, WritesAndReadsBackTheSameDocument)
+{
+    const TuningResult r = relayResult();
+    const std::string text = files::tuningToJson(r);
+    EXPECT_NE(text.find("\"schema\": \"benchpilot.tuning\""), std::string::npos);
+    EXPECT_NE(text.find("\"zn-pid\""), std::string::npos);  // the rules table, for readers
+    const auto back = files::tuningFromJson(text, "x.tuning.json");
+    ASSERT_TRUE(back.result) << back.problems;
+    EXPECT_EQ(back.result->target, "Stage X");
+    EXPECT_DOUBLE_EQ(back.result->ku, 4.27);
+    ASSERT_TRUE(back.result->kuDescribing);
+    EXPECT_DOUBLE_EQ(*back.result->kuDescribing, 3.68);
+    ASSERT_EQ(back.result->points.size(), 2u);
+    ASSERT_TRUE(back.result->verification);
+    EXPECT_TRUE(std::isnan(back.result->verification->metrics.settlingTimeS));
+    EXPECT_DOUBLE_EQ(back.result->verification->gains.kd, 1.66);
+    EXPECT_EQ(files::tuningToJson(*back.result), text);
+
+    TuningResult ug;
+    ug.target = "fopdt:K=2,tau=0.5,L=0.1";
+    ug.method = "ultimate-gain";
+    ug.controlPeriodS = 1e-4;
+    ug.ku = 9.1;
+    ug.tuS = 1.3;
+    ug.step = 1;
+    ug.envelope = {3, 3, 600};
+    ug.trials = {{0.1, 0, 0, "no oscillation"}, {8.2, 0.73, 1.29, "decays"}, {9.1, 0.99, 1.3, "sustained"}};
+    const auto ugBack = files::tuningFromJson(files::tuningToJson(ug), "m.tuning.json");
+    ASSERT_TRUE(ugBack.result) << ugBack.problems;
+    EXPECT_EQ(ugBack.result->trials.size(), 3u);
+    EXPECT_EQ(files::tuningToJson(*ugBack.result), files::tuningToJson(ug));
+}
+
+TEST(TuningFile, ABadFileIsRefusedWithEveryProblemAndWhereItIs)
+{
+    const std::string text = R"({
+  "schema": "benchpilot.tuning",
+  "version": 1,
+  "target": "Stage X",
+  "method": "relay",
+  "control_period_s": 0.001,
+  "ku": -4,
+  "tu_s": 0.005,
+  "envelope": {"max_excursion": 0.05, "max_following_error": 0.05},
+  "relay": {"amplitude": 0.02, "hysteresis": 0.001, "points": [{"omega_rad_s": 1, "gain": 1, "phase": -180}]},
+  "verification": {"rule": "zn-ppp", "gains": {"kp": 1, "ki": 0, "kd": -1}},
+  "kuu": 1
+}
+)";
+    const auto r = files::tuningFromJson(text, "bad.tuning.json");
+    EXPECT_FALSE(r.result);
+    const std::string& p = r.problems;
+    EXPECT_NE(p.find("bad.tuning.json:7:9: ku: must be"), std::string::npos) << p;
+    EXPECT_NE(p.find("envelope.max_duration_s: is missing"), std::string::npos) << p;
+    EXPECT_NE(p.find("relay.points[0].phase_deg: is missing"), std::string::npos) << p;
+    EXPECT_NE(p.find("relay.points[0].phase"), std::string::npos) << p;
+    EXPECT_NE(p.find("\"zn-ppp\" is not a rule"), std::string::npos) << p;
+    EXPECT_NE(p.find("verification.gains.kd"), std::string::npos) << p;
+    EXPECT_NE(p.find("kuu"), std::string::npos) << p;
+    EXPECT_GE(std::count(p.begin(), p.end(), '\n'), 7);
+
+    const auto newer = files::tuningFromJson(R"({"schema": "benchpilot.tuning", "version": 2})", "n.json");
+    EXPECT_NE(newer.problems.find("written by a newer BenchPilot"), std::string::npos) << newer.problems;
+    const auto other = files::tuningFromJson(R"({"schema": "benchpilot.recipe", "version": 1})", "o.json");
+    EXPECT_NE(other.problems.find("expected \"benchpilot.tuning\""), std::string::npos) << other.problems;
+    const auto broken = files::tuningFromJson("{\"schema\": ", "b.json");
+    EXPECT_NE(broken.problems.find("b.json:1:"), std::string::npos) << broken.problems;
+}
+
+TEST(TuningFile, TheExamplesLoad)
+{
+    const QDir dir(QString::fromStdString(sourceDir() + "resources/examples"));
+    const QStringList names = dir.entryList({QStringLiteral("*.tuning.json")}, QDir::Files);
+    ASSERT_GE(names.size(), 2) << "resources/examples should hold real tuning results";
+    for (const QString& n : names) {
+        QString error;
+        const auto r = files::loadTuningFile(dir.filePath(n), &error);
+        ASSERT_TRUE(r) << n.toStdString() << ": " << error.toStdString();
+        EXPECT_GT(r->ku, 0);
+        EXPECT_GT(r->tuS, 0);
+    }
+}
+
+TEST(TuningFile, SavesAtomicallyAndLoadsBack)
+{
+    QTemporaryDir tmp;
+    ASSERT_TRUE(tmp.isValid());
+    const QString path = tmp.filePath(QStringLiteral("stage.tuning.json"));
+    QString error;
+    ASSERT_TRUE(files::saveTuningFile(path, relayResult(), &error)) << error.toStdString();
+    const auto r = files::loadTuningFile(path, &error);
+    ASSERT_TRUE(r) << error.toStdString();
+    EXPECT_EQ(r->method, "relay");
+    EXPECT_FALSE(files::saveTuningFile(tmp.filePath(QStringLiteral("no/such/dir/x.json")), relayResult(), &error));
+    EXPECT_FALSE(error.isEmpty());
+    EXPECT_FALSE(files::loadTuningFile(tmp.filePath(QStringLiteral("missing.json")), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("missing.json"))) << error.toStdString();
+}

@@ -1,0 +1,44 @@
+// Fuzz target "tuning": the reader of tuning results (docs/tuning_results.md).
+// Invariants: it never crashes; a refusal says where; an accepted document
+// writes out, reads back and writes out to the same text.
+#include "fuzz_files.h"
+
+#include "device/files/tuning_file.h"
+
+namespace {
+
+std::vector<std::string> seeds()
+{
+    std::vector<std::string> s = fuzzfiles::exampleFiles(".tuning.json");
+    motion::control::TuningResult r;
+    r.target = "fopdt:K=1,tau=1,L=0.1";
+    r.method = "ultimate-gain";
+    r.controlPeriodS = 1e-4;
+    r.ku = 16;
+    r.tuS = 0.38;
+    r.step = 1;
+    r.envelope = {3, 3, 600};
+    r.trials = {{0.1, 0, 0, "no oscillation"}, {16, 1.0, 0.38, "sustained"}};
+    s.push_back(files::tuningToJson(r));
+    return s;
+}
+
+void check(std::string_view input)
+{
+    const files::TuningRead r = files::tuningFromJson(input, "fuzz.tuning.json");
+    if (!r.result) {
+        if (r.problems.rfind("fuzz.tuning.json:", 0) != 0)
+            fuzzfiles::fail("a refusal that does not say where: " + r.problems);
+        return;
+    }
+    const std::string once = files::tuningToJson(*r.result);
+    const files::TuningRead again = files::tuningFromJson(once, "again.json");
+    if (!again.result)
+        fuzzfiles::fail("a written document does not read back: " + again.problems);
+    if (files::tuningToJson(*again.result) != once)
+        fuzzfiles::fail("write → read → write changed the document");
+}
+
+} // namespace
+
+BP_FUZZ_FILE_TARGET({"tuning", seeds, check});
