@@ -1,5 +1,7 @@
 #include "device/sim/firmware.h"
 
+#include "device/sim/path_queue.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -17,6 +19,8 @@ void Firmware::receive(const std::uint8_t* data, std::size_t size)
 {
     m_frames.clear();
     m_decoder.feed(data, size, m_frames);
+    if (!m_frames.empty())
+        m_lastHostFrameS = m_machine.timeS();
     // Realtime requests act first: a stop or E-stop decoded in the same chunk as
     // queued requests must not wait behind them.
     for (const auto& f : m_frames)
@@ -39,6 +43,7 @@ void Firmware::advance(double dtS)
         m_pendingS -= SimMachine::kTickS;
         m_machine.tick();
         ++m_tickCount;
+        checkHostSilence();
         sampleTelemetry();
         flushEvents();
     }
@@ -80,6 +85,7 @@ void Firmware::handle(const proto::Frame& f)
         // session's move with the same seq and bytes.
         for (auto& c : m_cache)
             c.valid = false;
+        m_machine.paths().sessionStarted();
     }
     for (const auto& c : m_cache) {
         if (c.valid && c.seq == f.seq && c.type == f.type && c.payload == f.payload) {
@@ -169,6 +175,13 @@ void Firmware::execute(const proto::Frame& f, std::vector<std::uint8_t>& reply)
         return bad("STOP");
     case MsgType::EStop:
         return answer(m_machine.estop());
+    case MsgType::PathBegin:
+    case MsgType::PathAppend:
+    case MsgType::PathStatus:
+    case MsgType::PathHold:
+    case MsgType::PathResume:
+    case MsgType::PathClear:
+        return executePath(f, reply);
     default: {
         proto::ErrorReply e;
         e.code = proto::ErrorCode::UnknownCommand;

@@ -46,6 +46,9 @@ private:
     void subscribe(const proto::Frame& f, std::vector<std::uint8_t>& reply);
     void sampleTelemetry();
     void flushEvents();
+    // Path queue (firmware_path.cpp): its requests, and the feed hold when the host goes quiet.
+    void executePath(const proto::Frame& f, std::vector<std::uint8_t>& reply);
+    void checkHostSilence();
 
     SimMachine m_machine;
     std::uint32_t m_linkBaud;
@@ -55,6 +58,7 @@ private:
     double m_pendingS = 0;
     std::uint16_t m_eventSeq = 0;
     std::uint64_t m_executed = 0, m_duplicates = 0, m_droppedBatches = 0;
+    double m_lastHostFrameS = 0;  ///< machine time of the last good frame from the host
 
     /// Replies to the last requests, so a retransmission (same seq and bytes) is
     /// answered again without acting twice. Fixed ring: the oldest entry is overwritten.

@@ -1,5 +1,6 @@
 #include "device/sim/sim_machine.h"
 
+#include "device/sim/path_queue.h"
 #include "motion/jerk_limited.h"
 #include "motion/seed_scurve.h"
 
@@ -25,6 +26,7 @@ SimMachine::SimMachine(const MachineConfig& config) : m_cfg(config)
         m_axes.push_back(std::move(s));
         zeroCounters(axisCount() - 1, 0.0);  // power-up: the counters read zero wherever the axis is
     }
+    m_path = std::make_unique<PathQueue>(*this);
 }
 
 SimMachine::~SimMachine() = default;
@@ -345,6 +347,8 @@ SimMachine::Result SimMachine::stop(std::uint8_t mask)
 {
     if (mask == 0)
         mask = 0xFF;
+    if (m_path->active() && (mask & m_path->axisMask()))
+        m_path->stop();  // slows down along the path, not off it
     // Homing is one sequence: stopping any axis that takes part ends it for all
     // the stages that have not started yet.
     bool homingStopped = false;
@@ -417,6 +421,7 @@ void SimMachine::cancelSegmentsAfter(int id, const char* why)
 SimMachine::Result SimMachine::estop()
 {
     m_estop = true;
+    m_path->abortNow(proto::PathReason::EStop, "E-stop");
     m_segments.clear();
     m_homeStages.clear();
     for (int i = 0; i < axisCount(); ++i) {

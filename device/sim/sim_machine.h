@@ -16,6 +16,8 @@ class Profile;
 
 namespace sim {
 
+class PathQueue;
+
 class SimMachine {
 public:
     static constexpr double kTickS = 100e-6;        ///< simulation tick: 10 kHz
@@ -66,9 +68,13 @@ public:
     bool homed(int i) const { return m_axes[static_cast<std::size_t>(i)].homed; }
     bool estopActive() const { return m_estop; }
     void setGains(const PidGains& g) { m_cfg.gains = g; }
+    /// The queued LINE/ARC path (device/sim/path_queue.h).
+    PathQueue& paths() { return *m_path; }
+    const PathQueue& paths() const { return *m_path; }
 
 private:
-    enum class Mode { Idle, Segment, Jog, Decel, Homing, Settling };
+    friend class PathQueue;  // drives the axes it has reserved (Mode::Path) through the same state
+    enum class Mode { Idle, Segment, Jog, Decel, Homing, Settling, Path };
     enum class HomePhase { SeekFast, BackOff, SeekSlow };
 
     struct AxisState {
@@ -146,6 +152,7 @@ private:
     bool m_estop = false;
     int m_lastXySegment = -1;
     std::vector<double> m_xyLineStart, m_xyLineDir;  ///< last XY path, for contour error
+    std::unique_ptr<PathQueue> m_path;
 };
 
 } // namespace sim

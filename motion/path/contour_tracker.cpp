@@ -24,8 +24,10 @@ double ContourTracker::startOfMm(std::size_t segment) const
 
 void ContourTracker::seek(std::size_t segment)
 {
-    if (!m_path.empty())
+    if (!m_path.empty()) {
         m_cursor = std::min(segment, m_path.size() - 1);
+        m_lastPathMm = m_starts[m_cursor];
+    }
 }
 
 ContourSample ContourTracker::add(Vec2 measured)
@@ -34,12 +36,12 @@ ContourSample ContourTracker::add(Vec2 measured)
     if (m_path.empty())
         return best;
     const std::size_t lo = m_cursor >= kBehind ? m_cursor - kBehind : 0;
-    const std::size_t hi = std::min(m_path.size() - 1, m_cursor + kAhead);
     double bestAbs = 1e300;
-    for (std::size_t k = lo; k <= hi; ++k) {
+    for (std::size_t k = lo; k < m_path.size() && (k <= m_cursor + 1 || m_starts[k] <= m_lastPathMm + kAheadMm); ++k) {
         const Nearest n = nearestOn(m_path[k], measured);
-        // Ties (a point at a shared end) go to the later segment: the walk is moving on.
-        if (std::fabs(n.distanceMm) <= bestAbs) {
+        // Ties go to the earlier segment: a closed path's last segment ends where its first
+        // begins, and a point there has only just arrived, not gone all the way round.
+        if (std::fabs(n.distanceMm) < bestAbs) {
             bestAbs = std::fabs(n.distanceMm);
             best.segment = k;
             best.errorMm = n.distanceMm;
@@ -48,6 +50,7 @@ ContourSample ContourTracker::add(Vec2 measured)
     }
     // The cursor follows the walk forward only, never back past where it has been judged.
     m_cursor = std::max(m_cursor, best.segment);
+    m_lastPathMm = std::max(m_lastPathMm, best.pathMm);
     if (best.segment >= m_firstCounted) {
         ++m_summary.samples;
         m_sumSq += best.errorMm * best.errorMm;

@@ -7,9 +7,11 @@
 // the corner. Measured against the true lines and circles, not the step grid, and against the
 // whole path, so a lagging point near a junction is judged against the segment it is still on.
 //
-// Points arrive in time order. The tracker keeps a cursor on the path and searches a few segments
-// around it, so a path that comes back near itself (a raster, a spiral) is never judged against a
-// later pass, and the cost per point does not grow with the path.
+// Points arrive in time order. The tracker keeps a cursor on the path and searches only the
+// segment before it and those that begin within kAheadMm of where the last point was judged, so
+// a path that comes back near itself or crosses itself (a raster, a spiral, a lead-in that cuts
+// through the circle it leads to) is never judged against a later pass, and the cost per point
+// does not grow with the path.
 
 #include "motion/path/path_geometry.h"
 
@@ -48,15 +50,18 @@ public:
     double totalMm() const { return m_starts.empty() ? 0.0 : m_starts.back(); }
     const std::vector<Segment>& path() const { return m_path; }
 
-    /// How many segments behind / ahead of the cursor are searched.
+    /// Segments behind the cursor that are searched (a point lagging at a junction).
     static constexpr std::size_t kBehind = 1;
-    static constexpr std::size_t kAhead = 4;
+    /// Segments that begin at most this far along the path past the last judged point are
+    /// searched: far more than a machine moves between two telemetry samples.
+    static constexpr double kAheadMm = 5.0;
 
 private:
     std::vector<Segment> m_path;
     std::vector<double> m_starts;  ///< m_path.size() + 1 cumulative lengths
     std::size_t m_firstCounted;
     std::size_t m_cursor = 0;
+    double m_lastPathMm = 0;
     double m_sumSq = 0;
     mutable ContourSummary m_summary;
 };

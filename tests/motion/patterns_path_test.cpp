@@ -258,15 +258,16 @@ TEST(PatternsContourTracker, JudgesAgainstThePathNotTheLastLine)
 TEST(PatternsContourTracker, ARasterIsNeverJudgedAgainstALaterPass)
 {
     // Serpentine lines 0.1 mm apart: a point 0.06 mm off its own line is nearer the next pass,
-    // but the cursor only looks a few segments ahead of where the walk is.
+    // but the tracker only looks a little way ahead of where the walk is.
     const std::vector<Segment> path = {line({0, 0}, {10, 0}), line({10, 0}, {10, 0.1}), line({10, 0.1}, {0, 0.1})};
     ContourTracker t(path, 0);
+    t.add({1, 0});
     const ContourSample s = t.add({2, 0.06});
-    EXPECT_EQ(s.segment, 2u);  // nearest is the third pass — allowed, it is within the window
-    ContourTracker lagging(path);
-    lagging.add({1, 0});
-    lagging.add({5, 0});
-    EXPECT_EQ(lagging.cursor(), 0u);
+    EXPECT_EQ(s.segment, 0u);
+    EXPECT_NEAR(s.errorMm, 0.06, 1e-12);
+    EXPECT_NEAR(t.add({8, 0.06}).errorMm, 0.06, 1e-12);   // the turn is in reach now, the pass back is not
+    EXPECT_EQ(t.add({10.003, 0.05}).segment, 1u);
+    EXPECT_EQ(t.add({5, 0.1}).segment, 2u);
 }
 
 TEST(PatternsContourTracker, LeadInIsTrackedButNotCounted)

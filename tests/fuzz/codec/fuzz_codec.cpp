@@ -35,6 +35,7 @@
 #include "device/protocol/crc16.h"
 #include "device/protocol/frame_codec.h"
 #include "device/protocol/messages.h"
+#include "device/protocol/messages_path.h"
 #include "device/sim/firmware.h"
 #include "device/sim/machine_config.h"
 
@@ -193,6 +194,11 @@ void checkAllDecoders(const Bytes& p)
     checkDecoder(p, &proto::decodeTelemetryBatch, "decodeTelemetryBatch");
     checkDecoder(p, &proto::decodeEvent, "decodeEvent");
     checkDecoder(p, &proto::decodeErrorReply, "decodeErrorReply");
+    checkDecoder(p, &proto::decodePathBeginRequest, "decodePathBeginRequest");
+    checkDecoder(p, &proto::decodePathAppendRequest, "decodePathAppendRequest");
+    checkDecoder(p, &proto::decodePathStatusReply, "decodePathStatusReply");
+    if (const auto a = proto::decodePathAppendRequest(p))
+        CHECK(!a->segments.empty() && a->segments.size() <= std::size_t(proto::kMaxPathSegmentsPerAppend), "PATH_APPEND segment count");
     const auto move = proto::decodeMoveRequest(p);
     if (move)
         CHECK(static_cast<int>(move->targets.size()) == proto::popcount8(move->axisMask), "MOVE target count != axes");
@@ -337,7 +343,7 @@ private:
 
 bool knownRequest(std::uint8_t t)
 {
-    return (t >= 0x01 && t <= 0x0A) || (t >= 0x20 && t <= 0x22);
+    return (t >= 0x01 && t <= 0x0A) || (t >= 0x20 && t <= 0x22) || (t >= 0x10 && t <= 0x12) || (t >= 0x24 && t <= 0x26);
 }
 
 struct FirmwareChecker {
@@ -415,6 +421,14 @@ struct FirmwareChecker {
             CHECK(l && static_cast<int>(l->axes.size()) == axes, "GET_LIMITS reply wrong");
             for (const auto& a : l->axes)
                 CHECK(a.min < a.max, "soft limits out of order");
+            break;
+        }
+        case MsgType::PathBegin:
+        case MsgType::PathAppend:
+        case MsgType::PathStatus: {
+            const auto st = proto::decodePathStatusReply(rep.payload);
+            CHECK(st.has_value(), "path reply to 0x%02X does not decode", unsigned{req.type});
+            CHECK(st->freeSlots <= st->capacity && st->executingIndex <= st->nextIndex, "path status inconsistent");
             break;
         }
         case MsgType::Subscribe: {
