@@ -83,6 +83,8 @@ Bytes encode(const PathStatusReply& m)
     w.u32(m.speed);
     w.u16(m.underruns);
     w.u8(static_cast<std::uint8_t>(m.reason));
+    w.u32(m.accel);
+    w.u32(m.junctionDeviation);
     return b;
 }
 
@@ -151,6 +153,8 @@ std::optional<PathStatusReply> decodePathStatusReply(const Bytes& p)
     if (reason > static_cast<std::uint8_t>(PathReason::Cleared))
         return std::nullopt;
     m.reason = static_cast<PathReason>(reason);
+    m.accel = r.u32();
+    m.junctionDeviation = r.u32();
     if (!r.done() || m.freeSlots > m.capacity)
         return std::nullopt;
     return m;

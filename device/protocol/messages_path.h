@@ -80,6 +80,8 @@ struct PathStatusReply {
     std::uint32_t speed = 0;             ///< commanded path speed now, nm/s
     std::uint16_t underruns = 0;         ///< times the queue ran dry in this path
     PathReason reason = PathReason::None;
+    std::uint32_t accel = 0;             ///< path acceleration in effect (or the default when idle), nm/s²
+    std::uint32_t junctionDeviation = 0; ///< nm, likewise: with accel, what a host needs to time a path
 };
 
 Bytes encode(const PathBeginRequest&);

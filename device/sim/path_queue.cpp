@@ -37,7 +37,7 @@ PathQueue::PathQueue(SimMachine& machine) : m(machine)
         const auto& cy = m.st(m_y).plant->config();
         m_stepMm = std::min(cx.stepSize, cy.stepSize);
         m_maxSpeedMmS = std::min(cx.maxSpeed, cy.maxSpeed);
-        m_accelMmS2 = kDefaultAccelShare * std::min(cx.maxAccel, cy.maxAccel);
+        m_accelMmS2 = m_defaultAccelMmS2 = kDefaultAccelShare * std::min(cx.maxAccel, cy.maxAccel);
     }
 }
 
@@ -285,6 +285,8 @@ proto::PathStatusReply PathQueue::status() const
     s.speed = static_cast<std::uint32_t>(std::lround(m_speedMmS * 1e6));
     s.underruns = m_underruns;
     s.reason = m_reason;
+    s.accel = static_cast<std::uint32_t>(std::lround(m_accelMmS2 * 1e6));
+    s.junctionDeviation = static_cast<std::uint32_t>(std::lround(m_junctionMm * 1e6));
     return s;
 }
 
@@ -399,6 +401,8 @@ void PathQueue::endPath(PathState state, PathReason why, const std::string& text
     m_abortAtRest = false;
     m_state = state;
     m_reason = why;
+    m_accelMmS2 = m_defaultAccelMmS2;  // what the next path gets unless it asks otherwise
+    m_junctionMm = kDefaultJunctionDeviationMm;
     reserveAxes(false);
     if (state == PathState::Done)
         event(proto::EventKind::PathDone, at, text);

@@ -143,6 +143,7 @@ private:
     motion::GridPoint m_tailGrid;
     motion::path::Vec2 m_tailTangent{1, 0};
     bool m_tailStops = true;             ///< the last queued segment ends at rest (path start, Z move)
+    double m_defaultAccelMmS2 = 100;
     double m_accelMmS2 = 100, m_junctionMm = kDefaultJunctionDeviationMm, m_maxSpeedMmS = 10;
     double m_speedMmS = 0;
     double m_exitMmS = 0;                ///< planned exit speed of the running segment

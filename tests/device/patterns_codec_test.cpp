@@ -91,14 +91,16 @@ TEST(PatternsCodec, AppendDecoderIsStrict)
 
 TEST(PatternsCodec, StatusReplyRoundTripAndLimits)
 {
-    PathStatusReply s{PathState::Held, 32, 5, 40, 12, 2000000, 3, PathReason::HostSilent};
+    PathStatusReply s{PathState::Held, 32, 5, 40, 12, 2000000, 3, PathReason::HostSilent, 100000000, 10000};
     const Bytes b = encode(s);
-    ASSERT_EQ(b.size(), 18u);
+    ASSERT_EQ(b.size(), 26u);
     const auto d = decodePathStatusReply(b);
     ASSERT_TRUE(d);
     EXPECT_EQ(d->state, PathState::Held);
     EXPECT_EQ(d->reason, PathReason::HostSilent);
     EXPECT_EQ(d->executingIndex, 12u);
+    EXPECT_EQ(d->accel, 100000000u);
+    EXPECT_EQ(d->junctionDeviation, 10000u);
     EXPECT_EQ(encode(*d), b);
     EXPECT_FALSE(decodePathStatusReply(with(b, 0, 8)));    // state
     EXPECT_FALSE(decodePathStatusReply(with(b, 17, 8)));   // reason

@@ -151,6 +151,8 @@ Bytes validPayload(Rng& r, std::uint8_t type)
         s.speed = randSpeed(r);
         s.underruns = static_cast<std::uint16_t>(r.next());
         s.reason = static_cast<PathReason>(r.below(8));
+        s.accel = randSpeed(r);
+        s.junctionDeviation = randSpeed(r);
         return encode(s);
     }
     case 0x81: {
