@@ -24,6 +24,7 @@ class PlotsScreen;
 namespace app {
 
 class InstrumentSession;
+class MotionScreens;
 
 struct MainWindowOptions {
     bool persistSettings = true;  ///< false for screenshots and tests: read nothing, write nothing
@@ -45,6 +46,8 @@ public:
     void showInstrument(int index);  ///< 0 analyzer, 1 stage, on screens that have a choice
     ui::JogScreen* jogScreen(int index) { return m_jog[index]; }
     ui::PlotsScreen* plotsScreen() { return m_plots; }
+    /// The Joystick and Patterns screens (motion_screens.h).
+    MotionScreens* motionScreens() { return m_motion; }
     tele::TelemetryHub* telemetry() { return m_hub; }
     ui::MessageBanner* banner() { return m_banner; }
     ui::EventLog* eventLog() { return m_log; }
@@ -74,6 +77,7 @@ private:
     ui::ConnectionBar* m_bars[2];
     ui::JogScreen* m_jog[2];
     QTabWidget* m_jogTabs;
+    MotionScreens* m_motion;
     QListWidget* m_nav;
     QStackedWidget* m_stack;
     QStringList m_screenNames;

@@ -36,6 +36,8 @@ public:
     /// Steps until the walk has come `fraction` (0…1) of the way; 1 walks to the end. Returns the
     /// number of steps taken. Progress never runs backwards: a smaller fraction takes no step.
     std::int64_t advanceTo(double fraction);
+    /// One step, whatever the progress (a preview draws every point); not when done().
+    void step();
     GridPoint position() const { return m_pos; }
     bool done() const;
     std::int64_t stepsTaken() const { return m_steps; }
@@ -44,8 +46,6 @@ public:
 
 private:
     GridWalker() = default;
-    void step();
-    double arcAngleNow() const;
 
     GridPoint m_pos;
     GridPoint m_from, m_to;
