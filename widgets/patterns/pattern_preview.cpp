@@ -62,7 +62,7 @@ void PatternPreview::keepScale()
         return;
     m_adjusting = true;
     // Equal mm per pixel: a circle looks round and a to-scale picture stays to scale.
-    xAxis->setScaleRatio(yAxis, 1.0);
+    yAxis->setScaleRatio(xAxis, 1.0);
     updateWalk();
     m_adjusting = false;
 }
