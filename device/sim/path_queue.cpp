@@ -39,6 +39,8 @@ PathQueue::PathQueue(SimMachine& machine) : m(machine)
         m_maxSpeedMmS = std::min(cx.maxSpeed, cy.maxSpeed);
         m_accelMmS2 = m_defaultAccelMmS2 = kDefaultAccelShare * std::min(cx.maxAccel, cy.maxAccel);
     }
+    if (!m.m_cfg.closedLoop)
+        m_crossCouplingGain = kDefaultCrossCouplingGain;
 }
 
 PathQueue::~PathQueue() = default;
@@ -135,6 +137,7 @@ PathQueue::Result PathQueue::begin(const proto::PathBeginRequest& r)
     m_nextIndex = m_executing = r.firstIndex;
     m_underruns = 0;
     m_speedMmS = m_exitMmS = 0;
+    m_crossCorrectionMm = 0;
     m_reason = PathReason::None;
     m_originX = m.st(m_x).plant->reference();
     m_originY = m.st(m_y).plant->reference();

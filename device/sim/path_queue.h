@@ -47,6 +47,10 @@ public:
     /// Default path acceleration as a share of the slower of X and Y's maxAccel: the rest is
     /// margin for the centripetal part on arcs and for the stage's loop.
     static constexpr double kDefaultAccelShare = 0.5;
+    /// Open loop (the analyzer): share of the encoders' cross-track error corrected per tick
+    /// (seed 000's cross-coupled XY). Closed loop (the stage): 0, its PID already holds each axis.
+    static constexpr double kDefaultCrossCouplingGain = 0.05;
+    static constexpr double kMaxCrossCorrectionMm = 0.2;  ///< never steer further than this off the walk
 
     explicit PathQueue(SimMachine& machine);
     ~PathQueue();
@@ -77,6 +81,9 @@ public:
     double accelMmS2() const { return m_accelMmS2; }
     std::uint8_t axisMask() const;
     proto::PathState state() const { return m_state; }
+    /// 0 switches the cross-coupled correction off (for comparison in tests and the benchmark).
+    void setCrossCouplingGain(double perTick) { m_crossCouplingGain = perTick; }
+    double crossCouplingGain() const { return m_crossCouplingGain; }
     /// Signed distance of a measured machine XY point from the geometric path near where the
     /// path is now (current and previous segment), mm; nullopt when no segment is running.
     std::optional<double> contourErrorMm(double measuredX, double measuredY) const;
@@ -147,6 +154,8 @@ private:
     double m_accelMmS2 = 100, m_junctionMm = kDefaultJunctionDeviationMm, m_maxSpeedMmS = 10;
     double m_speedMmS = 0;
     double m_exitMmS = 0;                ///< planned exit speed of the running segment
+    double m_crossCouplingGain = 0;      ///< per tick; set in the constructor for open-loop machines
+    double m_crossCorrectionMm = 0;      ///< the cross-coupled correction now, along the left normal
 };
 
 } // namespace sim

@@ -79,8 +79,23 @@ void PathQueue::setReferences()
 {
     const motion::GridPoint p = m_cur->walker->position();
     const motion::path::Vec2 t = motion::path::tangentAt(m_cur->seg.geo, m_cur->sMm);
-    m.st(m_x).plant->setReference(gridToMachine(m_x, p.x), m_speedMmS * t.x);
-    m.st(m_y).plant->setReference(gridToMachine(m_y, p.y), m_speedMmS * t.y);
+    if (m_crossCouplingGain > 0) {
+        // Seed 000's cross-coupled control on the open-loop analyzer: the encoders show how far
+        // the carriage is off the path across it (lead error, play); the correction moves both
+        // motors together along the path's normal until it is back, leaving the along-track
+        // position to the walk. A count of dead-band keeps quantization from hunting.
+        SimAxis& ax = *m.st(m_x).plant;
+        SimAxis& ay = *m.st(m_y).plant;
+        if (const auto e = contourErrorMm(ax.measured(), ay.measured())) {
+            const double count = std::max(ax.config().resolution, ay.config().resolution);
+            if (std::fabs(*e) > count)
+                m_crossCorrectionMm = std::clamp(m_crossCorrectionMm - m_crossCouplingGain * *e, -kMaxCrossCorrectionMm,
+                                                 kMaxCrossCorrectionMm);
+        }
+    }
+    const motion::path::Vec2 n{-t.y, t.x};  // left of travel
+    m.st(m_x).plant->setReference(gridToMachine(m_x, p.x) + m_crossCorrectionMm * n.x, m_speedMmS * t.x);
+    m.st(m_y).plant->setReference(gridToMachine(m_y, p.y) + m_crossCorrectionMm * n.y, m_speedMmS * t.y);
 }
 
 void PathQueue::startZ()
