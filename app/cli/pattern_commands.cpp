@@ -58,7 +58,7 @@ QList<QCommandLineOption> patternOptions()
             option("turns", "spiral: whole or half turns", "N"),
             option("spacing", "raster: distance between passes, mm", "MM"),
             option("along", "raster: passes run along x or y", "AXIS"),
-            option("z", "analyzer: Z height to work at (reached after XY, seed 000), mm", "MM")};
+            option("z-height", "analyzer: Z height to work at (reached after XY, seed 000), mm", "MM")};
 }
 
 bool point(Invocation& inv, const char* name, motion::path::Vec2& into)
@@ -156,9 +156,9 @@ std::optional<motion::plans::Pattern> patternFrom(Invocation& inv)
         break;
     case S::Line: break;
     }
-    if (ok && inv.isSet(QStringLiteral("z"))) {
+    if (ok && inv.isSet(QStringLiteral("z-height"))) {
         double z = 0;
-        ok = inv.number(QStringLiteral("z"), z);
+        ok = inv.number(QStringLiteral("z-height"), z);
         p.zMm = z;
     }
     if (!ok)
