@@ -8,6 +8,7 @@
 #include "device/protocol/crc16.h"
 #include "device/protocol/frame_codec.h"
 #include "device/protocol/messages.h"
+#include "device/protocol/messages_path.h"
 
 #include <gtest/gtest.h>
 
@@ -115,6 +116,43 @@ std::vector<Example> examples()
     tb.sampleCount = 2;
     tb.values = {nm(12.5), nm(40.0005), 1, nm(12.5005), nm(40), 0};
     ex.push_back({"telemetry-batch", t(MsgType::TelemetryBatch), 2, encode(tb)});
+
+    // Path queue (docs/protocol.md, "Path queue"): a quarter circle and a line on the stage.
+    ex.push_back({"path-begin-request", t(MsgType::PathBegin), 20, encode(PathBeginRequest{0, 0, 0})});
+    PathStatusReply filling{PathState::Filling, 32, 32, 0, 0, 0, 0, PathReason::None, static_cast<std::uint32_t>(nm(100)), 10000};
+    ex.push_back({"path-begin-reply", replyTypeOf(MsgType::PathBegin), 20, encode(filling)});
+    PathAppendRequest app;
+    app.firstIndex = 0;
+    app.flags = PathAppendStart | PathAppendLast;
+    PathSegmentWire quarter;
+    quarter.kind = PathSegmentKind::ArcCcw;
+    quarter.feed = static_cast<std::uint32_t>(nm(2));
+    quarter.x = nm(50);
+    quarter.y = nm(55);
+    quarter.cx = nm(50);
+    quarter.cy = nm(50);
+    PathSegmentWire back;
+    back.kind = PathSegmentKind::Line;
+    back.feed = static_cast<std::uint32_t>(nm(2));
+    back.x = nm(40);
+    back.y = nm(55);
+    app.segments = {quarter, back};
+    ex.push_back({"path-append-request", t(MsgType::PathAppend), 21, encode(app)});
+    PathStatusReply running{PathState::Running, 32, 31, 2, 0, 0, 0, PathReason::None, static_cast<std::uint32_t>(nm(100)), 10000};
+    ex.push_back({"path-append-reply", replyTypeOf(MsgType::PathAppend), 21, encode(running)});
+    ErrorReply outside;
+    outside.code = ErrorCode::SoftLimit;
+    outside.axis = 0;
+    outside.value = nm(100);
+    outside.message = "segment 7 (LINE) reaches X = 101.000 mm";
+    ex.push_back({"path-append-soft-limit", t(MsgType::Error), 22, encode(outside)});
+    ex.push_back({"path-hold", t(MsgType::PathHold), 23, {}});
+    EventMsg done0;
+    done0.kind = EventKind::PathSegmentDone;
+    done0.axis = kNoAxis;
+    done0.deviceTimeUs = 4000000;
+    done0.position = 0;
+    ex.push_back({"event-path-segment-done", t(MsgType::Event), 5, encode(done0)});
     return ex;
 }
 
