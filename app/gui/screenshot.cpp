@@ -78,11 +78,11 @@ int takeScreenshot(const ScreenshotRequest& r)
     } else if (r.exercise && r.screen == QLatin1String("joystick")) {
         // The stick pushed round a loop: the trail on the travel view.
         ui::JoystickScreen* j = w.motionScreens()->joystick(index);
-        const double v = j->settings().maxSpeedMmS;
-        for (int k = 0; k < 40; ++k) {
-            const double a = k * 6.2832 / 40;
+        const double v = 0.4 * s->client()->identity().axes[0].maxSpeed;
+        for (int k = 0; k < 60; ++k) {
+            const double a = k * 6.2832 / 60;
             j->driver()->setVelocities({{0, v * std::cos(a)}, {1, v * std::sin(a)}});
-            spin(60);
+            spin(50);
         }
         j->driver()->stop();
         spin(500);

@@ -114,6 +114,11 @@ JoystickScreen::JoystickScreen(dev::InstrumentClient* client, QWidget* parent)
     connect(m_client, &dev::InstrumentClient::identified, this, &JoystickScreen::rebuild);
     connect(m_client, &dev::InstrumentClient::statusChanged, this, &JoystickScreen::refresh);
     connect(m_client, &dev::InstrumentClient::limitsChanged, this, &JoystickScreen::refresh);
+    connect(m_client, &dev::InstrumentClient::eventReceived, this, [this](const dev::DeviceEvent& e) {
+        // Homing sets the coordinates' origin: a trail drawn in the old ones means nothing now.
+        if (e.kind == proto::EventKind::HomeDone)
+            m_travel->clearTrail();
+    });
     connect(m_client, &dev::InstrumentClient::stateChanged, this, [this](dev::LinkState s) {
         if (s != dev::LinkState::Ready)
             stopAll();
