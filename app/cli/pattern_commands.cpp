@@ -187,11 +187,19 @@ motion::path::PathLimits simLimits(const QString& instrument)
     return l;
 }
 
+/// The options-only check and the pattern both subcommands start from; nullopt after a usage message.
+std::optional<motion::plans::Pattern> commandPattern(Invocation& inv)
+{
+    if (!inv.arguments().isEmpty()) {
+        inv.usage(tr("takes options only (got '%1')").arg(inv.arguments().join(QLatin1Char(' '))));
+        return std::nullopt;
+    }
+    return patternFrom(inv);
+}
+
 int plan(Invocation& inv)
 {
-    if (!inv.arguments().isEmpty())
-        return inv.usage(tr("takes options only (got '%1')").arg(inv.arguments().join(QLatin1Char(' '))));
-    const auto p = patternFrom(inv);
+    const auto p = commandPattern(inv);
     if (!p)
         return Usage;
     const auto path = motion::plans::plan(*p);
@@ -245,9 +253,7 @@ int plan(Invocation& inv)
 
 int run(Invocation& inv)
 {
-    if (!inv.arguments().isEmpty())
-        return inv.usage(tr("takes options only (got '%1')").arg(inv.arguments().join(QLatin1Char(' '))));
-    const auto p = patternFrom(inv);
+    const auto p = commandPattern(inv);
     if (!p)
         return Usage;
     const auto path = motion::plans::plan(*p);

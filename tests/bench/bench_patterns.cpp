@@ -21,6 +21,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -106,6 +107,22 @@ RunResult runPath(sim::SimMachine& m, const std::vector<Segment>& path)
     return out;
 }
 
+/// Runs `path` once per iteration on a freshly homed machine (homing not timed); `tweak` sees the machine first.
+RunResult runHomed(benchmark::State& state, const sim::MachineConfig& cfg, const std::vector<Segment>& path,
+                   const std::function<void(sim::SimMachine&)>& tweak = {})
+{
+    RunResult r;
+    for (auto _ : state) {
+        state.PauseTiming();
+        auto m = homed(cfg);
+        if (tweak)
+            tweak(*m);
+        state.ResumeTiming();
+        r = runPath(*m, path);
+    }
+    return r;
+}
+
 void report(benchmark::State& state, const RunResult& r, double unitScale, const char* unit)
 {
     state.counters[std::string("max_contour_") + unit] = r.everyTick.maxAbsMm * unitScale;
@@ -122,14 +139,7 @@ void BM_StageCircle10mmAt2mmS(benchmark::State& state)
     motion::plans::Pattern p;  // the defaults: a 10 mm circle at 2 mm/s round (50, 50)
     p.shape = motion::plans::PatternShape::Circle;
     p.feedMmS = 2;
-    const auto path = motion::plans::plan(p);
-    RunResult r;
-    for (auto _ : state) {
-        state.PauseTiming();
-        auto m = homed(sim::stageConfig());
-        state.ResumeTiming();
-        r = runPath(*m, path);
-    }
+    const RunResult r = runHomed(state, sim::stageConfig(), motion::plans::plan(p));
     report(state, r, 1e3, "um");
 }
 BENCHMARK(BM_StageCircle10mmAt2mmS)->Unit(benchmark::kMillisecond)->Iterations(1);
@@ -143,15 +153,10 @@ void BM_AnalyzerLineSeed000_50mm(benchmark::State& state)
     p.feedMmS = 50;
     const auto path = motion::plans::plan(p);
     const bool coupled = state.range(0) != 0;
-    RunResult r;
-    for (auto _ : state) {
-        state.PauseTiming();
-        auto m = homed(sim::analyzerConfig());
+    const RunResult r = runHomed(state, sim::analyzerConfig(), path, [&](sim::SimMachine& m) {
         if (!coupled)
-            m->paths().setCrossCouplingGain(0);
-        state.ResumeTiming();
-        r = runPath(*m, path);
-    }
+            m.paths().setCrossCouplingGain(0);
+    });
     report(state, r, 1.0, "mm");
     state.counters["cross_coupled"] = coupled ? 1 : 0;
 }
@@ -171,13 +176,7 @@ void BM_ShallowJunctionsNeverStop(benchmark::State& state)
     for (std::size_t k = 1; k < path.size(); ++k)
         maxDeflectionDeg = std::max(maxDeflectionDeg, motion::path::deflectionRad(motion::path::endTangent(path[k - 1]),
                                                                                    motion::path::startTangent(path[k])) * 180 / 3.14159265358979);
-    RunResult r;
-    for (auto _ : state) {
-        state.PauseTiming();
-        auto m = homed(sim::stageConfig());
-        state.ResumeTiming();
-        r = runPath(*m, path);
-    }
+    const RunResult r = runHomed(state, sim::stageConfig(), path);
     report(state, r, 1e3, "um");
     state.counters["segments"] = static_cast<double>(path.size());
     state.counters["largest_junction_deg"] = maxDeflectionDeg;
