@@ -15,6 +15,7 @@
 #include "widgets/patterns/pattern_form.h"
 #include "widgets/patterns/pattern_preview.h"
 #include "widgets/patterns/pattern_screen.h"
+#include "widgets/plot_panel.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -227,4 +228,22 @@ TEST_F(MotionScreensTest, ARunFromTheScreenEndsWithItsContourSummaryAndExportsCs
     const QByteArray csv = in.readAll();
     EXPECT_TRUE(csv.startsWith("time_s,commanded_x_mm"));
     EXPECT_EQ(csv.count('\n'), static_cast<qsizetype>(p->runner()->samples().size()) + 1);
+}
+
+TEST(PlotPanelLegend, RemovingAChannelTakesItOutOfThePanelsOwnLegend)
+{
+    // Found when the Jog screen's strip rebuilt its channels while the Patterns screen made
+    // start-up slower: the panel's legend kept an item of a deleted graph and the next
+    // layout crashed.
+    QCustomPlot plot;
+    auto* margins = new QCPMarginGroup(&plot);
+    ui::PlotPanel panel(&plot, margins);
+    const tele::ChannelKey a{0, {0, proto::ChannelKind::Measured}}, b{0, {1, proto::ChannelKind::Measured}};
+    ASSERT_TRUE(panel.addChannel(a, QStringLiteral("A"), QStringLiteral("mm")));
+    ASSERT_TRUE(panel.addChannel(b, QStringLiteral("B"), QStringLiteral("mm")));
+    EXPECT_EQ(panel.legend()->itemCount(), 2);
+    ASSERT_TRUE(panel.removeChannel(a));
+    EXPECT_EQ(panel.legend()->itemCount(), 1);
+    plot.resize(400, 300);
+    plot.replot();  // lays the legend out: with a stale item this read freed memory
 }
