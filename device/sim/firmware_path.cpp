@@ -63,7 +63,7 @@ void Firmware::checkHostSilence()
     if (!q.moving() || q.state() == proto::PathState::Holding)
         return;
     // BenchPilot polls STATUS every 50 ms: a second without any frame is a host that is gone.
-    if (m_machine.timeS() - m_lastHostFrameS > proto::kPathHostSilenceMs / 1000.0)
+    if (m_machine.timeS() - m_lastHostFrameS > m_hostSilenceLimitS)
         q.hold(proto::PathReason::HostSilent);
 }
 

@@ -82,14 +82,14 @@ struct Wire {
         const auto b = send(MsgType::PathBegin, proto::encode(proto::PathBeginRequest{}));
         ASSERT_EQ(reply(b).type, 0x90);
     }
-    std::uint16_t appendLine(std::uint32_t index, double x, double y, std::uint8_t flags)
+    std::uint16_t appendLine(std::uint32_t index, double x, double y, std::uint8_t flags, double feed = 10)
     {
         proto::PathAppendRequest a;
         a.firstIndex = index;
         a.flags = flags;
         motion::path::Segment s;
         s.end = {x, y};
-        s.feedMmS = 10;
+        s.feedMmS = feed;
         a.segments = {dev::toWire(s)};
         return send(MsgType::PathAppend, proto::encode(a));
     }
@@ -186,4 +186,19 @@ TEST(PatternsFirmwarePath, ClearOvertakesQueuedRequestsAndStopsOnThePath)
     EXPECT_NEAR(x, y, 1e-3);  // stopped on the diagonal it was running along
     const auto again = w.appendLine(1, 10, 10, 0);
     EXPECT_EQ(w.reply(again).type, 0xFF);
+}
+
+TEST(PatternsFirmwarePath, ASpedUpSimulatorJudgesHostSilenceOnTheHostsClock)
+{
+    // At ten times real time the host's 50 ms polls are 0.5 s of device time, and one second of
+    // the host's silence is ten of the device's: a path must not be held for the clock's speed.
+    Wire w;
+    w.fw.setHostSilenceLimitS(10.0);
+    w.homeAndBegin();
+    w.appendLine(0, 90, 0, proto::PathAppendStart | proto::PathAppendLast, 5);
+    w.advance(0.5, true);
+    w.advance(5.0, false);
+    EXPECT_EQ(w.fw.machine().paths().state(), proto::PathState::Running);
+    w.advance(6.0, false);
+    EXPECT_EQ(w.fw.machine().paths().state(), proto::PathState::Held);
 }
