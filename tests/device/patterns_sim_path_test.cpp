@@ -1,5 +1,6 @@
 // The simulator's path queue: contour following on both instruments, look-ahead through shallow
 // junctions, flow control, soft limits per segment, and every way a path can end early.
+#include "motion/plans/pattern.h"
 #include "patterns_path_support.h"
 
 #include <gtest/gtest.h>
@@ -294,4 +295,21 @@ TEST_F(AnalyzerPath, ARectangleRoundAPlateWithTheCorrectionStaysStableAtItsCorne
     ASSERT_TRUE(run.run(30, [&] { tracker.add(measuredXy(m)); }));
     EXPECT_LT(tracker.summary().maxAbsMm, 0.05);  // play reverses at every corner
     EXPECT_EQ(r.count(proto::EventKind::LostSteps), 0);
+}
+
+TEST_F(StagePath, AHostThatKeepsTheQueueToppedUpNeverLetsItRunDry)
+{
+    // 41 raster segments through a 32-slot queue, topped up every 10 ms as the runner does.
+    motion::plans::Pattern p;
+    p.shape = motion::plans::PatternShape::Raster;
+    p.feedMmS = 20;
+    p.raster.spacingMm = 1;
+    PathRun run{m, r, motion::plans::plan(p)};
+    ASSERT_EQ(run.path.size(), 41u);
+    ASSERT_FALSE(m.move(simtest::absMove(simtest::bit(0) | simtest::bit(1), {30, 30})));
+    ASSERT_TRUE(r.runUntilIdle(30));
+    ASSERT_FALSE(run.begin());
+    ASSERT_TRUE(run.run(120));
+    EXPECT_EQ(r.count(proto::EventKind::PathUnderrun), 0);
+    EXPECT_EQ(r.count(proto::EventKind::PathSegmentDone), 41);
 }
