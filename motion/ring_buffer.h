@@ -48,6 +48,21 @@ public:
         return item;
     }
 
+    /// CONSUMER side: the i-th oldest item (0 = the next tryPop() would return), or nullptr when
+    /// fewer are queued. For a consumer that plans over what is queued before taking it (the
+    /// device's path queue looks ahead over every queued segment); the producer never writes a
+    /// slot between tail and head, so reading them races with nothing.
+    const T* peek(std::size_t i) const
+    {
+        const std::size_t tail = m_tail.load(std::memory_order_relaxed);
+        const std::size_t head = m_head.load(std::memory_order_acquire);
+        if (i >= (head + N - tail) % N)
+            return nullptr;
+        return &m_slots[(tail + i) % N];
+    }
+    /// CONSUMER side: forgets everything queued (tail catches up with head).
+    void clear() { m_tail.store(m_head.load(std::memory_order_acquire), std::memory_order_release); }
+
     /// Exact only when called from one side while the other is idle; otherwise a snapshot.
     std::size_t size() const
     {

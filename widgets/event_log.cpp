@@ -22,6 +22,12 @@ QString kindText(proto::EventKind k)
     case proto::EventKind::Stopped: return EventLog::tr("stopped");
     case proto::EventKind::LostSteps: return EventLog::tr("lost steps");
     case proto::EventKind::Reset: return EventLog::tr("reset");
+    case proto::EventKind::PathStarted: return EventLog::tr("path started");
+    case proto::EventKind::PathSegmentDone: return EventLog::tr("path segment done");
+    case proto::EventKind::PathUnderrun: return EventLog::tr("path underrun");
+    case proto::EventKind::PathDone: return EventLog::tr("path done");
+    case proto::EventKind::PathHeld: return EventLog::tr("path held");
+    case proto::EventKind::PathAborted: return EventLog::tr("path aborted");
     }
     if (k == proto::kEvTestEnded)
         return EventLog::tr("test ended");
@@ -79,6 +85,10 @@ void EventLog::append(const QStringList& cells, const QColor& color)
 
 void EventLog::addEvent(const QString& instrument, const dev::DeviceIdentity& id, const dev::DeviceEvent& e)
 {
+    // A path reports every segment it completes: the Patterns screen shows that as progress;
+    // in the log it would bury everything else.
+    if (e.kind == proto::EventKind::PathSegmentDone)
+        return;
     const QString axis = e.axis >= 0 && e.axis < id.axes.size() ? QString(id.axes[e.axis].letter) : QString();
     QColor color;
     switch (e.kind) {
@@ -86,7 +96,9 @@ void EventLog::addEvent(const QString& instrument, const dev::DeviceIdentity& id
     case proto::EventKind::Fault:
     case proto::EventKind::EStop:
     case proto::EventKind::LostSteps: color = QColor(0xB7, 0x1C, 0x1C); break;
-    case proto::EventKind::JogExpired: color = QColor(0x9A, 0x67, 0x00); break;
+    case proto::EventKind::JogExpired:
+    case proto::EventKind::PathUnderrun:
+    case proto::EventKind::PathAborted: color = QColor(0x9A, 0x67, 0x00); break;
     default: break;
     }
     QString details = e.text;
@@ -94,6 +106,11 @@ void EventLog::addEvent(const QString& instrument, const dev::DeviceIdentity& id
     {
         const double shown = std::round(e.position * 1000) / 1000;
         const QString at = tr("at %1 %2").arg(shown == 0 ? 0.0 : shown, 0, 'f', 3).arg(id.axes[e.axis].unitName());
+        details = e.text.isEmpty() ? at : QStringLiteral("%1 (%2)").arg(e.text, at);
+    }
+    else if (e.kind >= proto::EventKind::PathStarted && e.kind <= proto::EventKind::PathAborted)
+    {
+        const QString at = tr("segment %1").arg(static_cast<qint64>(e.position));
         details = e.text.isEmpty() ? at : QStringLiteral("%1 (%2)").arg(e.text, at);
     }
     append({e.hostTime.time().toString(QStringLiteral("HH:mm:ss.zzz")), instrument, axis,

@@ -85,8 +85,10 @@ PlotPanel::PlotPanel(QCustomPlot* plot, QCPMarginGroup* margins, QObject* parent
 
 PlotPanel::~PlotPanel()
 {
-    for (const Line& l : std::as_const(m_lines))
+    for (const Line& l : std::as_const(m_lines)) {
+        l.graph->removeFromLegend(m_legend);
         m_plot->removeGraph(l.graph);
+    }
 }
 
 QCPAxis* PlotPanel::timeAxis() const { return m_rect->axis(QCPAxis::atBottom); }
@@ -147,7 +149,10 @@ bool PlotPanel::removeChannel(const tele::ChannelKey& key)
     const int i = indexOf(key);
     if (i < 0)
         return false;
-    m_plot->removeGraph(m_lines[i].graph);  // also takes it out of the legend
+    // removeGraph() only takes a graph out of the plot's own legend: this panel's legend
+    // would keep an item pointing at the deleted graph and crash the next layout.
+    m_lines[i].graph->removeFromLegend(m_legend);
+    m_plot->removeGraph(m_lines[i].graph);
     m_lines.removeAt(i);
     m_extent.removeAt(i);
     relayoutAxes();

@@ -11,6 +11,7 @@ const std::vector<Command>& commands()
         addDeviceCommands(l);
         addMotionCommands(l);
         addTuningCommands(l);
+        addPatternCommands(l);
         addCompletionCommand(l);  // last: it lists the others
         return l;
     }();

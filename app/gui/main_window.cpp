@@ -1,12 +1,14 @@
 #include "main_window.h"
 
 #include "instrument_session.h"
+#include "motion_screens.h"
 #include "device/telemetry/telemetry_hub.h"
 #include "widgets/connection_bar.h"
 #include "widgets/event_log.h"
 #include "widgets/jog_screen.h"
 #include "widgets/message_banner.h"
 #include "widgets/plots_screen.h"
+#include "widgets/patterns/pattern_screen.h"
 #include "widgets/profiles_screen.h"
 #include "widgets/tuning/tuning_screen.h"
 
@@ -111,6 +113,20 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
         });
     connect(m_tuning, &ui::TuningScreen::problem, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); });
     addScreen(QStringLiteral("tuning"), tr("Tuning"), m_tuning);
+    {
+        MotionScreens::Hooks hooks;
+        if (m_options.confirmDialogs) {
+            hooks.confirm = [this](const QString& q) { return confirm(q); };
+            hooks.chooseFile = [this](const QString& title, const QString& filter, bool save) {
+                const QString dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+                return save ? QFileDialog::getSaveFileName(this, title, dir, filter) : QFileDialog::getOpenFileName(this, title, dir, filter);
+            };
+        }
+        hooks.warn = [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); };
+        m_motion = new MotionScreens(m_sessions, m_hub, hooks, this);
+        addScreen(QStringLiteral("joystick"), tr("Joystick"), m_motion->joystickTabs());
+        addScreen(QStringLiteral("patterns"), tr("Patterns"), m_motion->patterns());
+    }
     connect(m_nav, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
     m_nav->setCurrentRow(0);
 
@@ -180,7 +196,11 @@ bool MainWindow::showScreen(const QString& name)
     return true;
 }
 
-void MainWindow::showInstrument(int index) { m_jogTabs->setCurrentIndex(index); }
+void MainWindow::showInstrument(int index)
+{
+    m_jogTabs->setCurrentIndex(index);
+    m_motion->showInstrument(index);
+}
 
 bool MainWindow::confirm(const QString& question)
 {
@@ -261,6 +281,7 @@ void MainWindow::emergencyStop()
     // Both instruments, whichever screen is showing: the operator should not have to think.
     for (auto* j : m_jog)
         j->clearFocus();
+    m_motion->stopSticks();
     for (auto* s : m_sessions)
         if (s->client()->isReady())
             s->client()->estop();
@@ -300,6 +321,7 @@ void MainWindow::loadSettings()
         m_bars[i]->setChoice(c);
         m_jog[i]->setSpeedFraction(st.value(QStringLiteral("jog/%1/speed").arg(QLatin1String(keys[i])), 0.2).toDouble());
     }
+    m_motion->load(st);
     m_nav->setCurrentRow(std::clamp(st.value(QStringLiteral("window/screen"), 0).toInt(), 0, m_nav->count() - 1));
     m_jogTabs->setCurrentIndex(std::clamp(st.value(QStringLiteral("window/instrument"), 0).toInt(), 0, 1));
     m_tuning->restoreState(st.value(QStringLiteral("tuning/state")).toMap());
@@ -313,6 +335,7 @@ void MainWindow::saveSettings()
     st.setValue(QStringLiteral("window/screen"), m_nav->currentRow());
     st.setValue(QStringLiteral("window/instrument"), m_jogTabs->currentIndex());
     st.setValue(QStringLiteral("tuning/state"), m_tuning->saveState());
+    m_motion->save(st);
     const char* keys[2] = {"analyzer", "stage"};
     for (int i = 0; i < 2; ++i) {
         const ui::ConnectionChoice c = m_sessions[i]->choice();

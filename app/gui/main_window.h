@@ -25,6 +25,7 @@ class TuningScreen;
 namespace app {
 
 class InstrumentSession;
+class MotionScreens;
 
 struct MainWindowOptions {
     bool persistSettings = true;  ///< false for screenshots and tests: read nothing, write nothing
@@ -47,6 +48,8 @@ public:
     ui::JogScreen* jogScreen(int index) { return m_jog[index]; }
     ui::PlotsScreen* plotsScreen() { return m_plots; }
     ui::TuningScreen* tuningScreen() { return m_tuning; }
+    /// The Joystick and Patterns screens (motion_screens.h).
+    MotionScreens* motionScreens() { return m_motion; }
     tele::TelemetryHub* telemetry() { return m_hub; }
     ui::MessageBanner* banner() { return m_banner; }
     ui::EventLog* eventLog() { return m_log; }
@@ -77,6 +80,7 @@ private:
     ui::ConnectionBar* m_bars[2];
     ui::JogScreen* m_jog[2];
     QTabWidget* m_jogTabs;
+    MotionScreens* m_motion;
     QListWidget* m_nav;
     QStackedWidget* m_stack;
     QStringList m_screenNames;

@@ -5,11 +5,17 @@
 #include "widgets/tuning/step_test_panel.h"
 #include "widgets/tuning/tuning_screen.h"
 #include "widgets/tuning/zn_panel.h"
+#include "motion_screens.h"
+#include "device/client/joystick_driver.h"
+#include "device/jobs/pattern_runner.h"
+#include "widgets/joystick/joystick_screen.h"
+#include "widgets/patterns/pattern_screen.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>
 #include <QTimer>
 
+#include <cmath>
 #include <cstdio>
 
 namespace app {
@@ -65,7 +71,25 @@ int takeScreenshot(const ScreenshotRequest& r)
         spin(300);
         spinUntil([&] { return !s->client()->status().anyMoving(); }, 30000);
     }
-    if (r.exercise) {
+    if (r.exercise && r.screen == QLatin1String("patterns")) {
+        // The screen's pattern run to the end: the overlay, the contour plot and the summary.
+        ui::PatternScreen* p = w.motionScreens()->patterns();
+        p->setInstrument(index);
+        spin(300);
+        if (p->run())
+            spinUntil([&] { return !p->runner()->busy(); }, 120000);
+    } else if (r.exercise && r.screen == QLatin1String("joystick")) {
+        // The stick pushed round a loop: the trail on the travel view.
+        ui::JoystickScreen* j = w.motionScreens()->joystick(index);
+        const double v = 0.4 * s->client()->identity().axes[0].maxSpeed;
+        for (int k = 0; k < 60; ++k) {
+            const double a = k * 6.2832 / 60;
+            j->driver()->setVelocities({{0, v * std::cos(a)}, {1, v * std::sin(a)}});
+            spin(50);
+        }
+        j->driver()->stop();
+        spin(500);
+    } else if (r.exercise) {
         // A jog of X, then a diagonal and a move back in X: the plots and the XY path
         // show a jog and a move, commanded against measured.
         dev::InstrumentClient* c = s->client();

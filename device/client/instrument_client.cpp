@@ -317,7 +317,9 @@ void InstrumentClient::onFrame(const proto::Frame& f)
             DeviceEvent ev;
             ev.kind = e->kind;
             ev.axis = e->axis == proto::kNoAxis ? -1 : e->axis;
-            ev.position = (ev.axis >= 0 && ev.axis < m_identity.axes.size()) ? e->position / m_identity.axes[ev.axis].wireScale() : 0;
+            // Instrument-wide events keep the number as sent (path events carry a segment index there).
+            ev.position = (ev.axis >= 0 && ev.axis < m_identity.axes.size()) ? e->position / m_identity.axes[ev.axis].wireScale()
+                                                                              : e->position;
             ev.deviceTimeUs = e->deviceTimeUs;
             ev.text = QString::fromStdString(e->text);
             ev.hostTime = QDateTime::currentDateTime();

@@ -59,7 +59,7 @@ struct SoftLimits {
 struct DeviceEvent {
     proto::EventKind kind = proto::EventKind::MotionDone;
     int axis = -1;            ///< −1: the whole instrument
-    double position = 0;      ///< axis units
+    double position = 0;      ///< axis units; for an instrument-wide event the number as sent (path events: the segment index)
     quint64 deviceTimeUs = 0;
     QString text;
     QDateTime hostTime;

@@ -3,11 +3,13 @@
 // loopback pair, the host's transport on the other. Virtual time follows the
 // wall clock (times a scale), so everything a person sees happens in real time.
 #include "device/link/loopback.h"
+#include "device/protocol/messages_path.h"
 #include "device/sim/firmware.h"
 
 #include <QElapsedTimer>
 #include <QTimer>
 
+#include <algorithm>
 #include <memory>
 
 namespace dev {
@@ -23,7 +25,12 @@ public:
     /// virtual second of its link, so over a baud-paced LoopbackPair a scale
     /// above 1 sends more than the wire carries and replies queue behind samples:
     /// speed the clock up only over an unpaced pair (baud 0) or a pty.
-    void setTimeScale(double scale) { m_timeScale = scale; }
+    void setTimeScale(double scale)
+    {
+        m_timeScale = scale;
+        // A quiet host is judged on its own clock: 1 s of wall time is `scale` s here.
+        m_firmware.setHostSilenceLimitS(proto::kPathHostSilenceMs / 1000.0 * std::max(1.0, scale));
+    }
     /// Stops the clock; `advance()` then moves virtual time by hand (deterministic tests).
     void setManualClock(bool manual);
     void advance(double dtS);

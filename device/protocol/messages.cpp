@@ -26,6 +26,10 @@ const char* errorCodeName(ErrorCode c)
     case ErrorCode::OverCapacity: return "over link capacity";
     case ErrorCode::OutOfRange: return "out of range";
     case ErrorCode::Fault: return "fault";
+    case ErrorCode::PathQueueFull: return "path queue full";
+    case ErrorCode::PathSequence: return "path segment out of sequence";
+    case ErrorCode::PathGeometry: return "bad path segment";
+    case ErrorCode::PathState: return "no path to add to";
     }
     return "unknown error";
 }
@@ -42,6 +46,12 @@ const char* eventKindName(EventKind k)
     case EventKind::Stopped: return "stopped";
     case EventKind::LostSteps: return "lost steps";
     case EventKind::Reset: return "reset";
+    case EventKind::PathStarted: return "path started";
+    case EventKind::PathSegmentDone: return "path segment done";
+    case EventKind::PathUnderrun: return "path underrun";
+    case EventKind::PathDone: return "path done";
+    case EventKind::PathHeld: return "path held";
+    case EventKind::PathAborted: return "path aborted";
     }
     return "unknown event";
 }

@@ -34,10 +34,16 @@ enum class MsgType : std::uint8_t {
     Reset = 0x0A,
     // 0x0B–0x0F: PID gains and step tests (tuning); 0x10–0x14: queued LINE/ARC
     // paths; 0x15–0x17: plates and recipes; 0x18–0x1A: stitching scans.
+    PathBegin = 0x10,   ///< messages_path.h
+    PathAppend = 0x11,
+    PathStatus = 0x12,
     JogVelocity = 0x20,
     Stop = 0x21,
     EStop = 0x22,
     // 0x23: tuning; 0x24–0x26: paths (feed hold, resume, …).
+    PathHold = 0x24,
+    PathResume = 0x25,
+    PathClear = 0x26,
     Event = 0xE0,
     TelemetryBatch = 0xE1,
     Error = 0xFF,
@@ -62,6 +68,8 @@ enum Capability : std::uint32_t {
     CapJogVelocity = 1u << 6,
     CapCoupledXyThenZ = 1u << 7,
     // Bits 8–9: tuning (gains, step test); 10–11: path queue; 12: plates; 13: scans.
+    CapPathQueue = 1u << 10,   ///< PATH_BEGIN/APPEND/STATUS, feed hold/resume/clear (messages_path.h)
+    CapPathZFollow = 1u << 11, ///< path segments may carry a Z target, run after their XY part (seed 000)
 };
 
 enum class ErrorCode : std::uint8_t {
@@ -76,6 +84,10 @@ enum class ErrorCode : std::uint8_t {
     OutOfRange = 9,
     Fault = 10,
     // 11–14: tuning; 15–18: path queue; 19–20: plates; 21–22: scans.
+    PathQueueFull = 15,  ///< value = free slots
+    PathSequence = 16,   ///< value = the segment index the device expects next
+    PathGeometry = 17,   ///< value = the index of the segment at fault
+    PathState = 18,      ///< no path begun, or the path already ended / was aborted
 };
 /// Codes up to this decode, so an older host still shows a newer device's refusal.
 constexpr std::uint8_t kMaxErrorCode = 0x7F;
@@ -92,6 +104,13 @@ enum class EventKind : std::uint8_t {
     LostSteps = 8,   ///< measured position left the commanded one by more than the tolerance
     Reset = 9,       ///< E-stop/fault latch cleared
     // 10–19: tuning; 20–29: path queue; 30–34: plates; 35–39: scans.
+    // Path events: axis 0xFF, position = the segment index they are about.
+    PathStarted = 20,     ///< execution began at this segment
+    PathSegmentDone = 21, ///< this segment was completed
+    PathUnderrun = 22,    ///< the queue ran dry before the path's last segment: at rest after this one
+    PathDone = 23,        ///< the path's last segment was completed, at rest
+    PathHeld = 24,        ///< feed hold reached rest on this segment (text says who held it)
+    PathAborted = 25,     ///< the path ended early; this segment was not completed (text says why)
 };
 /// Kinds up to this decode, so an older host still logs a newer device's events.
 constexpr std::uint8_t kMaxEventKind = 0x7F;

@@ -1,6 +1,7 @@
 #include "device/sim/firmware.h"
 
 #include "device/sim/sim_tuning.h"
+#include "device/sim/path_queue.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,6 +22,7 @@ void Firmware::receive(const std::uint8_t* data, std::size_t size)
     m_decoder.feed(data, size, m_frames);
     if (!m_frames.empty())
         m_machine.tuning().hostHeard();  // feeds the tuning tests' host-silence watchdog
+        m_lastHostFrameS = m_machine.timeS();
     // Realtime requests act first: a stop or E-stop decoded in the same chunk as
     // queued requests must not wait behind them.
     for (const auto& f : m_frames)
@@ -43,6 +45,7 @@ void Firmware::advance(double dtS)
         m_pendingS -= SimMachine::kTickS;
         m_machine.tick();
         ++m_tickCount;
+        checkHostSilence();
         sampleTelemetry();
         flushEvents();
     }
@@ -86,6 +89,7 @@ void Firmware::handle(const proto::Frame& f)
             c.valid = false;
         // The host that started a test is gone; a new one has not asked for it.
         m_machine.tuning().abort(0, motion::control::EndReason::Stopped);
+        m_machine.paths().sessionStarted();
     }
     for (const auto& c : m_cache) {
         if (c.valid && c.seq == f.seq && c.type == f.type && c.payload == f.payload) {
@@ -175,6 +179,13 @@ void Firmware::execute(const proto::Frame& f, std::vector<std::uint8_t>& reply)
         return bad("STOP");
     case MsgType::EStop:
         return answer(m_machine.estop());
+    case MsgType::PathBegin:
+    case MsgType::PathAppend:
+    case MsgType::PathStatus:
+    case MsgType::PathHold:
+    case MsgType::PathResume:
+    case MsgType::PathClear:
+        return executePath(f, reply);
     default: {
         if (executeTuning(f, reply))
             return;

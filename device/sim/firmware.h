@@ -4,6 +4,7 @@
 // events. Plain C++ on a virtual clock: the host decides how fast time runs.
 #include "device/protocol/frame_codec.h"
 #include "device/protocol/messages.h"
+#include "device/protocol/messages_path.h"
 #include "device/sim/sim_machine.h"
 
 #include <array>
@@ -34,6 +35,10 @@ public:
     std::uint64_t droppedTelemetryBatches() const { return m_droppedBatches; }
     std::uint32_t linkBaud() const { return m_linkBaud; }
     void setLinkBaud(std::uint32_t baud) { m_linkBaud = baud; }
+    /// Device time without any frame from the host after which a moving path is held
+    /// (proto::kPathHostSilenceMs). A simulator run K times faster than the wall clock judges
+    /// the host by the host's clock: K times the limit (SimulatorHost::setTimeScale does that).
+    void setHostSilenceLimitS(double seconds) { m_hostSilenceLimitS = seconds; }
 
     /// Bytes per second the link can carry (8N1: ten bit times per byte).
     double linkBytesPerSecond() const { return m_linkBaud / 10.0; }
@@ -48,6 +53,9 @@ private:
     bool executeTuning(const proto::Frame& f, std::vector<std::uint8_t>& reply);
     void sampleTelemetry();
     void flushEvents();
+    // Path queue (firmware_path.cpp): its requests, and the feed hold when the host goes quiet.
+    void executePath(const proto::Frame& f, std::vector<std::uint8_t>& reply);
+    void checkHostSilence();
 
     SimMachine m_machine;
     std::uint32_t m_linkBaud;
@@ -57,6 +65,8 @@ private:
     double m_pendingS = 0;
     std::uint16_t m_eventSeq = 0;
     std::uint64_t m_executed = 0, m_duplicates = 0, m_droppedBatches = 0;
+    double m_lastHostFrameS = 0;  ///< machine time of the last good frame from the host
+    double m_hostSilenceLimitS = proto::kPathHostSilenceMs / 1000.0;
 
     /// Replies to the last requests, so a retransmission (same seq and bytes) is
     /// answered again without acting twice. Fixed ring: the oldest entry is overwritten.

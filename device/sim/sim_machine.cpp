@@ -2,6 +2,7 @@
 
 #include "device/sim/sim_tuning.h"
 
+#include "device/sim/path_queue.h"
 #include "motion/jerk_limited.h"
 #include "motion/seed_scurve.h"
 
@@ -28,6 +29,7 @@ SimMachine::SimMachine(const MachineConfig& config) : m_cfg(config)
         zeroCounters(axisCount() - 1, 0.0);  // power-up: the counters read zero wherever the axis is
     }
     m_tuning = std::make_unique<SimTuning>(*this);
+    m_path = std::make_unique<PathQueue>(*this);
 }
 
 SimMachine::~SimMachine() = default;
@@ -351,6 +353,8 @@ SimMachine::Result SimMachine::stop(std::uint8_t mask)
     if (mask == 0)
         mask = 0xFF;
     m_tuning->abort(mask, motion::control::EndReason::Stopped);  // a test on these axes ends: the axis holds
+    if (m_path->active() && (mask & m_path->axisMask()))
+        m_path->stop();  // slows down along the path, not off it
     // Homing is one sequence: stopping any axis that takes part ends it for all
     // the stages that have not started yet.
     bool homingStopped = false;
@@ -424,6 +428,7 @@ SimMachine::Result SimMachine::estop()
 {
     m_tuning->abort(0xFF, motion::control::EndReason::EStop);
     m_estop = true;
+    m_path->abortNow(proto::PathReason::EStop, "E-stop");
     m_segments.clear();
     m_homeStages.clear();
     for (int i = 0; i < axisCount(); ++i) {

@@ -17,6 +17,7 @@ class Profile;
 namespace sim {
 
 class SimTuning;
+class PathQueue;
 
 class SimMachine {
 public:
@@ -72,10 +73,14 @@ public:
     /// Gains and tuning tests of the closed-loop axes (sim_tuning.h).
     SimTuning& tuning() { return *m_tuning; }
     const SimTuning& tuning() const { return *m_tuning; }
+    /// The queued LINE/ARC path (device/sim/path_queue.h).
+    PathQueue& paths() { return *m_path; }
+    const PathQueue& paths() const { return *m_path; }
 
 private:
     friend class SimTuning;
-    enum class Mode { Idle, Segment, Jog, Decel, Homing, Settling, Tuning };
+    friend class PathQueue;  // drives the axes it has reserved (Mode::Path) through the same state
+    enum class Mode { Idle, Segment, Jog, Decel, Homing, Settling, Tuning, Path };
     enum class HomePhase { SeekFast, BackOff, SeekSlow };
 
     struct AxisState {
@@ -154,6 +159,7 @@ private:
     int m_lastXySegment = -1;
     std::vector<double> m_xyLineStart, m_xyLineDir;  ///< last XY path, for contour error
     std::unique_ptr<SimTuning> m_tuning;
+    std::unique_ptr<PathQueue> m_path;
 };
 
 } // namespace sim

@@ -5,6 +5,7 @@
 
 #include "device/sim/sim_tuning.h"
 
+#include "device/sim/path_queue.h"
 #include "motion/profile.h"
 
 #include <algorithm>
@@ -39,6 +40,8 @@ void SimMachine::stopAxisHard(int i)
     AxisState& s = st(i);
     s.plant->holdHere();
     s.v = s.vTarget = 0;
+    if (s.mode == Mode::Path)
+        m_path->abortNow(proto::PathReason::LimitSwitch, std::string("axis ") + s.plant->config().letter + " hit a switch");
     if (s.mode == Mode::Segment) {
         // The whole coupled segment halts so the other axes do not run on alone.
         const int id = s.segment;
@@ -191,6 +194,7 @@ void SimMachine::tickSettling(int i)
 void SimMachine::tick()
 {
     ++m_ticks;
+    m_path->tick();
     tickSegments();
     tickVelocityModes();
     for (int i = 0; i < axisCount(); ++i) {

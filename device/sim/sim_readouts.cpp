@@ -3,6 +3,7 @@
 #include "device/sim/sim_machine.h"
 
 #include "device/protocol/messages_tuning.h"
+#include "device/sim/path_queue.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,13 +14,13 @@ proto::HelloReply SimMachine::hello(std::uint32_t linkBaud) const
 {
     proto::HelloReply h;
     h.kind = m_cfg.kind;
-    h.capabilities = proto::CapHoming | proto::CapTelemetry | proto::CapJogVelocity;
+    h.capabilities = proto::CapHoming | proto::CapTelemetry | proto::CapJogVelocity | proto::CapPathQueue;
     if (m_cfg.closedLoop)
         h.capabilities |= proto::CapGrating | proto::CapClosedLoopPid | proto::CapGains | proto::CapExperiments;
     else
         h.capabilities |= proto::CapEncoder;
     if (m_cfg.zAfterXy)
-        h.capabilities |= proto::CapCoupledXyThenZ;
+        h.capabilities |= proto::CapCoupledXyThenZ | proto::CapPathZFollow;
     for (const auto& a : m_cfg.axes)
         if (a.unit == proto::AxisUnit::Microlitre)
             h.capabilities |= proto::CapPump;
@@ -56,8 +57,8 @@ proto::StatusReply SimMachine::status() const
         std::uint16_t f = 0;
         if (s.homed)
             f |= proto::AxisHomed;
-        if (s.mode != Mode::Idle)
-            f |= proto::AxisMoving;
+        if (s.mode != Mode::Idle && (s.mode != Mode::Path || m_path->moving()))
+            f |= proto::AxisMoving;  // a queued path at rest reserves its axes but moves nothing
         if (s.mode == Mode::Homing || (!m_homeStages.empty() && !s.homed && (m_homeStages.front() & (1u << i))))
             f |= proto::AxisHoming;
         if (s.mode == Mode::Jog)
@@ -86,6 +87,9 @@ double SimMachine::contourErrorMm() const
     if (axisCount() < 2)
         return 0;
     const double mx = st(0).plant->measured(), my = st(1).plant->measured();
+    if (m_path->active())
+        if (const auto e = m_path->contourErrorMm(mx, my))
+            return std::abs(*e);  // against the queued path's lines and arcs
     if (m_xyLineDir.size() == 2) {
         // Distance from the last commanded XY line: what a stitched image would see as drift.
         const double dx = mx - m_xyLineStart[0], dy = my - m_xyLineStart[1];

@@ -9,6 +9,7 @@
 #include "device/protocol/frame_codec.h"
 #include "device/protocol/messages.h"
 #include "tuning_doc_examples.h"
+#include "device/protocol/messages_path.h"
 
 #include <gtest/gtest.h>
 
@@ -118,6 +119,43 @@ std::vector<Example> examples()
     ex.push_back({"telemetry-batch", t(MsgType::TelemetryBatch), 2, encode(tb)});
     for (auto& [name, type, seq, payload] : tuningdoc::examples())
         ex.push_back({name, type, seq, payload});
+
+    // Path queue (docs/protocol.md, "Path queue"): a quarter circle and a line on the stage.
+    ex.push_back({"path-begin-request", t(MsgType::PathBegin), 20, encode(PathBeginRequest{0, 0, 0})});
+    PathStatusReply filling{PathState::Filling, 32, 32, 0, 0, 0, 0, PathReason::None, static_cast<std::uint32_t>(nm(100)), 10000};
+    ex.push_back({"path-begin-reply", replyTypeOf(MsgType::PathBegin), 20, encode(filling)});
+    PathAppendRequest app;
+    app.firstIndex = 0;
+    app.flags = PathAppendStart | PathAppendLast;
+    PathSegmentWire quarter;
+    quarter.kind = PathSegmentKind::ArcCcw;
+    quarter.feed = static_cast<std::uint32_t>(nm(2));
+    quarter.x = nm(50);
+    quarter.y = nm(55);
+    quarter.cx = nm(50);
+    quarter.cy = nm(50);
+    PathSegmentWire back;
+    back.kind = PathSegmentKind::Line;
+    back.feed = static_cast<std::uint32_t>(nm(2));
+    back.x = nm(40);
+    back.y = nm(55);
+    app.segments = {quarter, back};
+    ex.push_back({"path-append-request", t(MsgType::PathAppend), 21, encode(app)});
+    PathStatusReply running{PathState::Running, 32, 31, 2, 0, 0, 0, PathReason::None, static_cast<std::uint32_t>(nm(100)), 10000};
+    ex.push_back({"path-append-reply", replyTypeOf(MsgType::PathAppend), 21, encode(running)});
+    ErrorReply outside;
+    outside.code = ErrorCode::SoftLimit;
+    outside.axis = 0;
+    outside.value = nm(100);
+    outside.message = "segment 7 (LINE) reaches X = 101.000 mm";
+    ex.push_back({"path-append-soft-limit", t(MsgType::Error), 22, encode(outside)});
+    ex.push_back({"path-hold", t(MsgType::PathHold), 23, {}});
+    EventMsg done0;
+    done0.kind = EventKind::PathSegmentDone;
+    done0.axis = kNoAxis;
+    done0.deviceTimeUs = 4000000;
+    done0.position = 0;
+    ex.push_back({"event-path-segment-done", t(MsgType::Event), 5, encode(done0)});
     return ex;
 }
 

@@ -36,6 +36,7 @@
 #include "device/protocol/frame_codec.h"
 #include "device/protocol/messages.h"
 #include "device/protocol/messages_tuning.h"
+#include "device/protocol/messages_path.h"
 #include "device/sim/firmware.h"
 #include "device/sim/machine_config.h"
 
@@ -203,6 +204,11 @@ void checkAllDecoders(const Bytes& p)
     checkDecoder(p, &proto::decodeCaptureRequest, "decodeCaptureRequest");
     checkDecoder(p, &proto::decodeCaptureReply, "decodeCaptureReply");
     checkDecoder(p, &proto::decodeAbortRequest, "decodeAbortRequest");
+    checkDecoder(p, &proto::decodePathBeginRequest, "decodePathBeginRequest");
+    checkDecoder(p, &proto::decodePathAppendRequest, "decodePathAppendRequest");
+    checkDecoder(p, &proto::decodePathStatusReply, "decodePathStatusReply");
+    if (const auto a = proto::decodePathAppendRequest(p))
+        CHECK(!a->segments.empty() && a->segments.size() <= std::size_t(proto::kMaxPathSegmentsPerAppend), "PATH_APPEND segment count");
     const auto move = proto::decodeMoveRequest(p);
     if (move)
         CHECK(static_cast<int>(move->targets.size()) == proto::popcount8(move->axisMask), "MOVE target count != axes");
@@ -347,7 +353,8 @@ private:
 
 bool knownRequest(std::uint8_t t)
 {
-    return (t >= 0x01 && t <= 0x0A) || (t >= 0x20 && t <= 0x22) || proto::tuningTypeName(t) != nullptr;
+    return (t >= 0x01 && t <= 0x0A) || (t >= 0x20 && t <= 0x22) || proto::tuningTypeName(t) != nullptr
+        || (t >= 0x10 && t <= 0x12) || (t >= 0x24 && t <= 0x26);
 }
 
 struct FirmwareChecker {
@@ -425,6 +432,14 @@ struct FirmwareChecker {
             CHECK(l && static_cast<int>(l->axes.size()) == axes, "GET_LIMITS reply wrong");
             for (const auto& a : l->axes)
                 CHECK(a.min < a.max, "soft limits out of order");
+            break;
+        }
+        case MsgType::PathBegin:
+        case MsgType::PathAppend:
+        case MsgType::PathStatus: {
+            const auto st = proto::decodePathStatusReply(rep.payload);
+            CHECK(st.has_value(), "path reply to 0x%02X does not decode", unsigned{req.type});
+            CHECK(st->freeSlots <= st->capacity && st->executingIndex <= st->nextIndex, "path status inconsistent");
             break;
         }
         case MsgType::Subscribe: {

@@ -8,6 +8,7 @@
 #include "device/protocol/crc16.h"
 #include "device/protocol/messages.h"
 #include "device/protocol/messages_tuning.h"
+#include "device/protocol/messages_path.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -89,6 +90,31 @@ proto::WireEnvelope randEnvelope(Rng& r)
 {
     auto lim = [&]() { return static_cast<std::uint32_t>(r.chance(80) ? r.range(0, 200000) : r.next()); };
     return {lim(), lim(), static_cast<std::uint32_t>(r.chance(80) ? r.range(0, 3000) : r.next())};
+}
+
+/// Segments near the machine's start positions (so some are accepted once homed), some arcs
+/// with ends on their circle, some nonsense.
+proto::PathAppendRequest randPathAppend(Rng& r)
+{
+    using namespace proto;
+    PathAppendRequest a;
+    a.firstIndex = r.chance(80) ? static_cast<std::uint32_t>(r.below(40)) : static_cast<std::uint32_t>(r.next());
+    a.flags = static_cast<std::uint8_t>(r.below(4));
+    a.segments.resize(1 + r.below(r.chance(10) ? kMaxPathSegmentsPerAppend : 4));
+    for (auto& s : a.segments) {
+        s.kind = static_cast<PathSegmentKind>(1 + r.below(3));
+        s.feed = r.chance(80) ? static_cast<std::uint32_t>(r.range(1, 20000000)) : randSpeed(r);
+        const std::int32_t cx = static_cast<std::int32_t>(r.range(5000000, 95000000));
+        const std::int32_t cy = static_cast<std::int32_t>(r.range(5000000, 95000000));
+        const std::int32_t rad = static_cast<std::int32_t>(r.range(0, 5000000));
+        s.cx = r.chance(90) ? cx : randPosition(r);
+        s.cy = r.chance(90) ? cy : randPosition(r);
+        s.x = r.chance(50) ? cx + rad : randPosition(r);
+        s.y = r.chance(50) ? cy : randPosition(r);
+        s.hasZ = r.chance(10);
+        s.z = randPosition(r);
+    }
+    return a;
 }
 
 Bytes validPayload(Rng& r, std::uint8_t type)
@@ -181,6 +207,28 @@ Bytes validPayload(Rng& r, std::uint8_t type)
             s = {randPosition(r), randPosition(r), randPosition(r)};
         return encode(c);
     }
+    case 0x10: {
+        PathBeginRequest b;
+        b.firstIndex = r.chance(80) ? 0 : static_cast<std::uint32_t>(r.next());
+        b.junctionDeviation = r.chance(70) ? 0 : static_cast<std::uint32_t>(r.range(0, 2000000));
+        b.accel = r.chance(70) ? 0 : static_cast<std::uint32_t>(r.next());
+        return encode(b);
+    }
+    case 0x11: return encode(randPathAppend(r));
+    case 0x92: {
+        PathStatusReply s;
+        s.state = static_cast<PathState>(r.below(8));
+        s.capacity = static_cast<std::uint8_t>(r.below(64));
+        s.freeSlots = static_cast<std::uint8_t>(r.below(s.capacity + 1u));
+        s.nextIndex = static_cast<std::uint32_t>(r.next());
+        s.executingIndex = static_cast<std::uint32_t>(r.next());
+        s.speed = randSpeed(r);
+        s.underruns = static_cast<std::uint16_t>(r.next());
+        s.reason = static_cast<PathReason>(r.below(8));
+        s.accel = randSpeed(r);
+        s.junctionDeviation = randSpeed(r);
+        return encode(s);
+    }
     case 0x81: {
         HelloReply h;
         h.kind = r.chance(50) ? DeviceKind::Analyzer : DeviceKind::Stage;
@@ -212,7 +260,7 @@ Bytes validPayload(Rng& r, std::uint8_t type)
     case 0x89: return encode(SubscribeReply{static_cast<std::uint32_t>(r.next()), static_cast<std::uint16_t>(r.next())});
     case 0xE0: {
         EventMsg e;
-        e.kind = static_cast<EventKind>(1 + r.below(9));
+        e.kind = static_cast<EventKind>(r.chance(80) ? 1 + r.below(9) : 20 + r.below(6));
         e.axis = r.byte();
         e.deviceTimeUs = r.next();
         e.position = randPosition(r);
@@ -280,10 +328,11 @@ std::uint8_t randType(Rng& r)
     // and RESET are rare; motion requests are common.
     static const std::uint8_t kRequests[] = {0x01, 0x02, 0x02, 0x03, 0x04, 0x04, 0x04, 0x05, 0x05, 0x06, 0x07,
                                              0x08, 0x08, 0x09, 0x09, 0x20, 0x20, 0x20, 0x21, 0x21,
-                                             0x0B, 0x0C, 0x0C, 0x0D, 0x0D, 0x0E, 0x0E, 0x0F, 0x23};
+                                             0x0B, 0x0C, 0x0C, 0x0D, 0x0D, 0x0E, 0x0E, 0x0F, 0x23,
+                                             0x10, 0x11, 0x11, 0x11, 0x12, 0x24, 0x25, 0x26};
     if (r.chance(2))
         return r.chance(50) ? 0x22 : 0x0A;
-    static const std::uint8_t kOthers[] = {0x81, 0x82, 0x87, 0x89, 0x8B, 0x8F, 0xA0, 0xE0, 0xE1, 0xFF, 0x10, 0x1F, 0x24, 0x3F, 0x40, 0x00};
+    static const std::uint8_t kOthers[] = {0x81, 0x82, 0x87, 0x89, 0x8B, 0x8F, 0x92, 0xA0, 0xE0, 0xE1, 0xFF, 0x1F, 0x3F, 0x40, 0x00};
     if (r.chance(75))
         return kRequests[r.below(sizeof kRequests)];
     if (r.chance(85))

@@ -1,0 +1,491 @@
+#include "device/jobs/pattern_runner.h"
+
+#include "motion/path/junction_planner.h"
+#include "motion/plans/pattern.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+
+namespace jobs {
+
+using motion::path::Segment;
+using motion::path::Vec2;
+
+namespace {
+QString mm(double v) { return QString::number(v, 'f', 3); }
+}
+
+QString PatternRunner::stateText(State s)
+{
+    switch (s) {
+    case State::Idle: return tr("ready");
+    case State::Approaching: return tr("moving to the start");
+    case State::Running: return tr("running");
+    case State::Paused: return tr("paused");
+    case State::Done: return tr("done");
+    case State::Aborted: return tr("aborted");
+    case State::Interrupted: return tr("interrupted");
+    case State::Failed: return tr("refused");
+    }
+    return {};
+}
+
+PatternRunner::PatternRunner(dev::InstrumentClient* client, dev::PathClient* paths, QObject* parent)
+    : QObject(parent), m_client(client), m_paths(paths)
+{
+    qRegisterMetaType<jobs::PatternRunner::State>();
+    qRegisterMetaType<jobs::PatternRunSummary>();
+    m_poll.setInterval(100);
+    connect(&m_poll, &QTimer::timeout, this, [this] {
+        if (m_state != State::Running || m_appendInFlight || !m_paths)
+            return;
+        m_paths->queryStatus([this](const auto& e, const dev::PathQueueState& s) {
+            if (!e && m_state == State::Running && !m_appendInFlight) {
+                m_free = s.freeSlots;
+                m_done = std::max(m_done, static_cast<std::size_t>(s.executingIndex));
+                pump();
+            }
+        });
+    });
+    connect(client, &dev::InstrumentClient::statusChanged, this, &PatternRunner::onStatus);
+    connect(client, &dev::InstrumentClient::stateChanged, this, &PatternRunner::onLinkState);
+    connect(paths, &dev::PathClient::startedAt, this, [this](quint64 us) {
+        if (busy() && m_t0S < 0)
+            m_t0S = us / 1e6;
+    });
+    connect(paths, &dev::PathClient::segmentDone, this, [this](quint32 index) {
+        if (m_state != State::Running && m_state != State::Paused)
+            return;
+        m_done = std::max(m_done, static_cast<std::size_t>(index) + 1);
+        ++m_free;  // an estimate until the next answer says exactly
+        emit progress(m_done, m_path.size());
+        pump();
+    });
+    connect(paths, &dev::PathClient::underrun, this, [this](quint32) {
+        if (m_state != State::Running)
+            return;
+        ++m_underruns;
+        if (!m_underrunSaid)
+            emit message(tr("The instrument ran out of queued segments and waited for more: the link is slower than the pattern."),
+                         true);
+        m_underrunSaid = true;
+    });
+    connect(paths, &dev::PathClient::finished, this, [this](quint32, quint64 us) {
+        if (m_state != State::Running && m_state != State::Paused)
+            return;
+        m_done = m_path.size();
+        m_endS = us / 1e6;
+        m_poll.stop();
+        emit progress(m_done, m_path.size());
+        setState(State::Done);
+        const PatternRunSummary s = summary();
+        emit message(tr("Pattern done in %1 s: contour error max %2 µm, RMS %3 µm.")
+                         .arg(s.durationS, 0, 'f', 2)
+                         .arg(s.maxContourMm * 1e3, 0, 'f', 2)
+                         .arg(s.rmsContourMm * 1e3, 0, 'f', 2),
+                     false);
+        emit finished(s);
+    });
+    connect(paths, &dev::PathClient::held, this, [this](quint32, const QString&) {
+        if (m_state != State::Running)
+            return;
+        setState(State::Paused);
+        if (!m_pauseAsked)
+            m_paths->queryStatus([this](const auto&, const dev::PathQueueState& s) {
+                emit message(tr("The instrument paused the pattern: %1. Press Resume to go on.").arg(dev::pathReasonText(s.reason)), true);
+            });
+        m_pauseAsked = false;
+    });
+    connect(paths, &dev::PathClient::aborted, this, [this](quint32 index, const QString&) {
+        if (!busy())
+            return;
+        m_done = std::max(m_done, static_cast<std::size_t>(index));
+        if (m_abortAsked) {
+            m_poll.stop();
+            setState(State::Aborted);
+            emit message(tr("Pattern aborted at segment %1 of %2.").arg(index).arg(m_path.size()), false);
+            emit finished(summary());
+            return;
+        }
+        m_paths->queryStatus([this, index](const auto&, const dev::PathQueueState& s) {
+            interrupt(tr("The instrument stopped the pattern at segment %1 (%2). Press Resume to continue from there.")
+                          .arg(index)
+                          .arg(dev::pathReasonText(s.reason)));
+        });
+        setState(State::Interrupted);
+    });
+}
+
+// ---- checks ------------------------------------------------------------------------
+
+Vec2 PatternRunner::machineXy() const
+{
+    const auto& st = m_client->status();
+    if (st.axes.size() < 2)
+        return {};
+    return {st.axes[0].commanded, st.axes[1].commanded};
+}
+
+QStringList PatternRunner::preflight(const std::vector<Segment>& path, const Options& options) const
+{
+    QStringList out;
+    if (!m_client || !m_paths || !m_paths->available()) {
+        out << tr("The instrument is not connected or cannot run paths.");
+        return out;
+    }
+    const auto& id = m_client->identity();
+    const auto& st = m_client->status();
+    if (path.empty())
+        out << tr("The pattern has no segments.");
+    if (st.estop)
+        out << tr("The E-stop is active: reset it first.");
+    if (st.anyMoving())
+        out << tr("The instrument is still moving: wait until it is at rest.");
+    for (int i = 0; i < 2 && i < st.axes.size(); ++i)
+        if (!st.axes[i].homed)
+            out << tr("Axis %1 is not homed: home it first.").arg(id.axes[i].letter);
+    const int z = id.axisIndex(QLatin1Char('Z'));
+    if (options.zMm) {
+        if (z < 0 || !(id.capabilities & proto::CapCoupledXyThenZ)) {
+            out << tr("This instrument has no Z axis to work at a height.");
+        } else {
+            if (!st.axes[z].homed)
+                out << tr("Axis Z is not homed: home it first.");
+            const auto& lim = m_client->softLimits()[z];
+            if (*options.zMm < lim.min || *options.zMm > lim.max)
+                out << tr("Z %1 mm is outside its soft limits %2 … %3 mm.").arg(mm(*options.zMm), mm(lim.min), mm(lim.max));
+        }
+    }
+    const double vmax = m_paths->limits().maxSpeedMmS;
+    for (std::size_t k = 0; k < path.size(); ++k)
+        if (path[k].feedMmS > vmax + 1e-9) {
+            out << tr("Segment %1: feed %2 mm/s is above the instrument's %3 mm/s.").arg(k).arg(path[k].feedMmS).arg(vmax);
+            break;
+        }
+    if (m_client->softLimits().size() >= 2 && !path.empty()) {
+        const auto& lx = m_client->softLimits()[0];
+        const auto& ly = m_client->softLimits()[1];
+        if (auto v = motion::plans::outsideLimits(path, {lx.min, ly.min, lx.max, ly.max}))
+            out << tr("The pattern leaves the soft limits: %1.").arg(QString::fromStdString(v->message));
+    }
+    return out;
+}
+
+double PatternRunner::approachDistanceMm(const std::vector<Segment>& path) const
+{
+    return path.empty() || !m_client ? 0.0 : motion::path::norm(path.front().start - machineXy());
+}
+
+double PatternRunner::estimatedS(const std::vector<Segment>& path) const
+{
+    return m_paths ? motion::plans::estimatedTimeS(path, m_paths->limits()) : 0.0;
+}
+
+// ---- run ---------------------------------------------------------------------------
+
+void PatternRunner::setState(State s)
+{
+    if (m_state == s)
+        return;
+    m_state = s;
+    emit stateChanged(s);
+}
+
+void PatternRunner::fail(const QString& why)
+{
+    m_poll.stop();
+    m_arrived = nullptr;
+    setState(State::Failed);
+    emit message(why, true);
+}
+
+void PatternRunner::interrupt(const QString& why)
+{
+    m_poll.stop();
+    m_arrived = nullptr;
+    m_appendInFlight = false;
+    setState(State::Interrupted);
+    emit message(why, true);
+}
+
+bool PatternRunner::start(std::vector<Segment> path, const Options& options)
+{
+    if (busy())
+        return false;
+    const QStringList problems = preflight(path, options);
+    if (!problems.isEmpty()) {
+        fail(problems.join(QLatin1Char(' ')));
+        return false;
+    }
+    m_path = std::move(path);
+    m_options = options;
+    // Estimated time left from the start of each segment, for the ETA.
+    const auto est = motion::path::estimatePath(m_path, m_paths->limits());
+    m_remainingS.assign(m_path.size() + 1, 0.0);
+    for (std::size_t k = m_path.size(); k-- > 0;)
+        m_remainingS[k] = m_remainingS[k + 1] + motion::path::blockDurationS(est.blocks[k], m_paths->limits().accelMmS2);
+    m_tracker.emplace(m_path);
+    m_samples.clear();
+    m_thin = 1;
+    m_seen = 0;
+    m_sent = m_done = 0;
+    m_underruns = 0;
+    m_underrunSaid = false;
+    m_t0S = m_endS = -1;
+    m_pauseAsked = m_abortAsked = false;
+    emit progress(0, m_path.size());
+    approach(m_path.front().start, options.zMm.has_value(), [this] { beginAt(0, std::nullopt); });
+    return true;
+}
+
+void PatternRunner::approach(Vec2 to, bool withZ, std::function<void()> then)
+{
+    setState(State::Approaching);
+    if (motion::path::norm(to - machineXy()) < 1e-6 && !withZ) {
+        then();
+        return;
+    }
+    QVector<QPair<int, double>> targets = {{0, to.x}, {1, to.y}};
+    const int z = m_client->identity().axisIndex(QLatin1Char('Z'));
+    if (withZ && z >= 0)
+        targets.push_back({z, *m_options.zMm});
+    m_approachTo = to;
+    m_approachPolls = 0;
+    m_client->move(targets, false, m_options.approachSpeedMmS, [this, then](const std::optional<dev::RequestError>& e) {
+        if (m_state != State::Approaching)
+            return;
+        if (e)
+            return fail(tr("Cannot move to the pattern's start: %1").arg(e->message));
+        m_arrived = then;  // onStatus() goes on once the machine is at rest there
+    });
+}
+
+void PatternRunner::onStatus()
+{
+    if (m_state != State::Approaching || !m_arrived)
+        return;
+    // The move's reply comes before the axes report moving: wait two polls before judging rest.
+    if (++m_approachPolls < 3 || m_client->status().anyMoving())
+        return;
+    auto then = std::move(m_arrived);
+    m_arrived = nullptr;
+    if (motion::path::norm(m_approachTo - machineXy()) > 1e-3)
+        return interrupt(tr("The move to the pattern's start was stopped before it arrived. Press Resume to try again."));
+    then();
+}
+
+void PatternRunner::beginAt(std::size_t index, std::optional<Vec2> from)
+{
+    if (!m_paths)
+        return;
+    m_paths->begin(static_cast<quint32>(index), [this, index, from](const auto& e, const dev::PathQueueState& s) {
+        if (m_state != State::Approaching && m_state != State::Running)
+            return;
+        if (e)
+            return fail(tr("The instrument refused the pattern: %1").arg(e->message));
+        m_sent = index;
+        m_done = index;
+        m_firstFrom = from;
+        m_free = s.freeSlots;
+        setState(State::Running);
+        m_poll.start();
+        pump();
+    });
+}
+
+void PatternRunner::pump()
+{
+    if (m_state != State::Running || m_appendInFlight || !m_paths || m_sent >= m_path.size())
+        return;
+    const std::size_t remaining = m_path.size() - m_sent;
+    const std::size_t room = static_cast<std::size_t>(std::max(0, std::min(m_free, m_paths->maxSegmentsPerAppend())));
+    const std::size_t n = std::min(room, remaining);
+    // Few large appends rather than many small ones: wait for a handful of free slots unless the
+    // queue is running low or this is the end of the path.
+    const std::size_t queued = m_sent - m_done;
+    if (n == 0 || (n < std::min<std::size_t>(8, remaining) && queued > 4))
+        return;
+    std::vector<Segment> batch(m_path.begin() + static_cast<std::ptrdiff_t>(m_sent),
+                               m_path.begin() + static_cast<std::ptrdiff_t>(m_sent + n));
+    if (m_firstFrom) {
+        batch.front().start = *m_firstFrom;  // a restart: the segment goes on from where the machine stopped
+        m_firstFrom.reset();
+    }
+    m_appendInFlight = true;
+    const bool last = m_sent + n == m_path.size();
+    m_paths->append(static_cast<quint32>(m_sent), batch, true, last,
+                    [this, n](const auto& e, const dev::PathQueueState& s) { onReply(e, s, n); });
+}
+
+void PatternRunner::onReply(const std::optional<dev::RequestError>& e, const dev::PathQueueState& s, std::size_t asked)
+{
+    m_appendInFlight = false;
+    if (m_state != State::Running && m_state != State::Paused)
+        return;
+    if (!e) {
+        m_sent += asked;
+        m_free = s.freeSlots;
+        m_done = std::max(m_done, static_cast<std::size_t>(s.executingIndex));
+        pump();
+        return;
+    }
+    if (e->kind == dev::RequestError::Kind::Device && e->code == proto::ErrorCode::PathQueueFull) {
+        m_free = static_cast<int>(e->value);  // wait for segments to complete
+        return;
+    }
+    if (e->kind == dev::RequestError::Kind::Device && e->code == proto::ErrorCode::PathSequence) {
+        // An answer was lost and the device already has these: go on from where it is.
+        m_sent = std::clamp<std::size_t>(static_cast<std::size_t>(e->value), m_done, m_path.size());
+        pump();
+        return;
+    }
+    if (e->kind == dev::RequestError::Kind::Device) {
+        m_paths->clear();
+        return fail(tr("The instrument refused the pattern: %1").arg(e->message));
+    }
+    // Link trouble: the link handler says what happened.
+}
+
+void PatternRunner::onLinkState(dev::LinkState s)
+{
+    if (s == dev::LinkState::Ready || s == dev::LinkState::Connecting || s == dev::LinkState::Identified)
+        return;
+    if (!busy())
+        return;
+    interrupt(tr("The link to the instrument was lost at segment %1 of %2. The instrument holds the path by itself within a "
+                 "second. Reconnect, then press Resume to continue from segment %1.")
+                  .arg(m_done)
+                  .arg(m_path.size()));
+}
+
+void PatternRunner::pause()
+{
+    if (m_state == State::Running && m_paths) {
+        m_pauseAsked = true;
+        m_paths->hold();
+    } else if (m_state == State::Approaching && m_client) {
+        m_client->stop(0b11);
+    }
+}
+
+void PatternRunner::resume()
+{
+    if (!m_paths || !m_client)
+        return;
+    if (m_state == State::Paused) {
+        m_paths->resume([this](const auto& e) {
+            if (!e && m_state == State::Paused) {
+                setState(State::Running);
+                pump();
+            }
+        });
+        return;
+    }
+    if (m_state != State::Interrupted || m_path.empty())
+        return;
+    if (!m_paths->available())
+        return emit message(tr("Reconnect the instrument first."), true);
+    m_paths->queryStatus([this](const auto& e, const dev::PathQueueState& s) {
+        if (e || m_state != State::Interrupted)
+            return;
+        if (s.state == proto::PathState::Held || s.state == proto::PathState::Holding) {
+            // Same path still on the device (the link came back before the device gave it up).
+            m_sent = std::max<std::size_t>(m_done, s.nextIndex);
+            m_free = s.freeSlots;
+            setState(State::Paused);
+            resume();
+            return;
+        }
+        const std::size_t k = std::min(m_path.size() - 1, std::max(m_done, static_cast<std::size_t>(s.executingIndex)));
+        m_done = k;
+        const QStringList problems = preflight({m_path.begin() + static_cast<std::ptrdiff_t>(k), m_path.end()}, m_options);
+        if (!problems.isEmpty())
+            return interrupt(problems.join(QLatin1Char(' ')));
+        m_abortAsked = m_pauseAsked = false;
+        const Vec2 here = machineXy();
+        const auto near = motion::path::nearestOn(m_path[k], here);
+        const bool onIt = std::fabs(near.distanceMm) < kOnPathMm && near.alongMm < motion::path::lengthMm(m_path[k]);
+        emit message(tr("Continuing from segment %1.").arg(k), false);
+        m_tracker->seek(k);
+        setState(State::Approaching);
+        if (onIt)
+            beginAt(k, here);
+        else
+            approach(m_path[k].start, m_options.zMm.has_value(), [this, k] { beginAt(k, std::nullopt); });
+    });
+}
+
+void PatternRunner::abort()
+{
+    if (m_state == State::Approaching) {
+        m_arrived = nullptr;
+        if (m_client)
+            m_client->stop(0);
+        setState(State::Aborted);
+        emit finished(summary());
+        return;
+    }
+    if ((m_state == State::Running || m_state == State::Paused) && m_paths) {
+        m_abortAsked = true;
+        m_paths->clear();
+        return;
+    }
+    if (m_state == State::Interrupted) {
+        setState(State::Aborted);
+        emit finished(summary());
+    }
+}
+
+// ---- measurement -------------------------------------------------------------------
+
+void PatternRunner::addSample(double deviceTimeS, Vec2 commanded, Vec2 measured)
+{
+    // Judged only while the path itself runs (from its first start to its end); the approach
+    // is a positioning move, not part of the pattern.
+    if (!m_tracker || m_t0S < 0 || deviceTimeS < m_t0S || (m_endS >= 0 && deviceTimeS > m_endS))
+        return;
+    if (m_state != State::Running && m_state != State::Paused && m_state != State::Done)
+        return;
+    const motion::path::ContourSample c = m_tracker->add(measured);
+    PatternRunSample s{deviceTimeS - m_t0S, commanded, measured, c.pathMm, c.errorMm, c.segment};
+    if (m_seen++ % m_thin == 0) {
+        if (m_samples.size() >= kMaxStoredSamples) {
+            // Bounded: halve the stored resolution, keep the whole run.
+            std::vector<PatternRunSample> kept;
+            kept.reserve(m_samples.size() / 2 + 1);
+            for (std::size_t i = 0; i < m_samples.size(); i += 2)
+                kept.push_back(m_samples[i]);
+            m_samples.swap(kept);
+            m_thin *= 2;
+        }
+        m_samples.push_back(s);
+    }
+    emit sampleAdded(s);
+}
+
+double PatternRunner::pathDoneMm() const { return m_tracker ? m_tracker->startOfMm(m_done) : 0.0; }
+
+double PatternRunner::remainingS() const
+{
+    return m_done < m_remainingS.size() ? m_remainingS[m_done] : 0.0;
+}
+
+PatternRunSummary PatternRunner::summary() const
+{
+    PatternRunSummary s;
+    if (m_tracker) {
+        const auto& t = m_tracker->summary();
+        s.samples = t.samples;
+        s.maxContourMm = t.maxAbsMm;
+        s.rmsContourMm = t.rmsMm;
+        s.maxAtPathMm = t.atPathMm;
+    }
+    s.durationS = m_t0S >= 0 && m_endS >= m_t0S ? m_endS - m_t0S : 0.0;
+    s.underruns = m_underruns;
+    s.complete = m_state == State::Done;
+    return s;
+}
+
+} // namespace jobs

@@ -1,0 +1,313 @@
+#include "widgets/joystick/joystick_screen.h"
+
+#include "device/client/joystick_driver.h"
+#include "widgets/joystick/joystick_pad.h"
+#include "widgets/joystick/travel_view.h"
+
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QPushButton>
+#include <QSlider>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ui {
+
+JoystickScreen::JoystickScreen(dev::InstrumentClient* client, QWidget* parent)
+    : QWidget(parent), m_client(client), m_driver(new dev::JoystickDriver(client, this))
+{
+    setFocusPolicy(Qt::StrongFocus);
+    auto* top = new QVBoxLayout(this);
+    auto* header = new QHBoxLayout;
+    m_title = new QLabel(this);
+    QFont tf = m_title->font();
+    tf.setPointSizeF(tf.pointSizeF() * 1.3);
+    tf.setBold(true);
+    m_title->setFont(tf);
+    m_state = new QLabel(this);
+    header->addWidget(m_title);
+    header->addSpacing(12);
+    header->addWidget(m_state, 1);
+    top->addLayout(header);
+
+    auto* body = new QHBoxLayout;
+    auto* left = new QVBoxLayout;
+    auto* sticks = new QHBoxLayout;
+    m_pad = new JoystickPad(this);
+    m_pad->setFocusPolicy(Qt::NoFocus);
+    sticks->addWidget(m_pad, 1);
+    auto* zBox = new QVBoxLayout;
+    m_z = new QSlider(Qt::Vertical, this);
+    m_z->setObjectName(QStringLiteral("joystickZ"));
+    m_z->setRange(-100, 100);
+    m_z->setValue(0);
+    m_z->setFocusPolicy(Qt::NoFocus);
+    m_z->setToolTip(tr("Z: push up or down; it springs back to the centre (stop) when let go"));
+    m_zLabel = new QLabel(tr("Z"), this);
+    m_zLabel->setAlignment(Qt::AlignCenter);
+    zBox->addWidget(m_zLabel);
+    zBox->addWidget(m_z, 1, Qt::AlignHCenter);
+    sticks->addLayout(zBox);
+    left->addLayout(sticks, 1);
+
+    auto* settings = new QGroupBox(tr("Response"), this);
+    auto* form = new QFormLayout(settings);
+    m_maxSpeed = new QDoubleSpinBox(settings);
+    m_maxSpeed->setRange(0.01, 1000);
+    m_maxSpeed->setDecimals(2);
+    m_maxSpeed->setSuffix(tr(" mm/s"));
+    m_maxSpeed->setToolTip(tr("Speed at full deflection (each axis is also held to its own maximum)"));
+    m_deadband = new QSpinBox(settings);
+    m_deadband->setRange(0, 50);
+    m_deadband->setSuffix(tr(" %"));
+    m_deadband->setToolTip(tr("Deflection around the centre that does nothing"));
+    m_expo = new QDoubleSpinBox(settings);
+    m_expo->setRange(0, 1);
+    m_expo->setSingleStep(0.1);
+    m_expo->setDecimals(2);
+    m_expo->setToolTip(tr("0: speed grows linearly with deflection; 1: cubically (finer near the centre)"));
+    form->addRow(tr("Max speed"), m_maxSpeed);
+    form->addRow(tr("Dead-band"), m_deadband);
+    form->addRow(tr("Expo"), m_expo);
+    left->addWidget(settings);
+    m_readout = new QLabel(this);
+    m_readout->setTextFormat(Qt::RichText);
+    m_readout->setObjectName(QStringLiteral("joystickReadout"));
+    m_speed = new QLabel(this);
+    left->addWidget(m_readout);
+    left->addWidget(m_speed);
+    auto* hint = new QLabel(tr("Drag the knob; let go to stop. Arrow keys push the stick to the rim, PgUp/PgDn move Z. "
+                               "Esc: E-stop."),
+                            this);
+    hint->setWordWrap(true);
+    hint->setStyleSheet(QStringLiteral("color:#555;"));
+    left->addWidget(hint);
+    body->addLayout(left, 2);
+
+    auto* right = new QVBoxLayout;
+    m_travel = new TravelView(this);
+    right->addWidget(m_travel, 1);
+    auto* clear = new QPushButton(tr("Clear trail"), this);
+    clear->setFocusPolicy(Qt::NoFocus);
+    right->addWidget(clear, 0, Qt::AlignRight);
+    body->addLayout(right, 3);
+    top->addLayout(body, 1);
+
+    setSettings(JoystickSettings{});
+    connect(m_pad, &JoystickPad::deflectionChanged, this, &JoystickScreen::apply);
+    connect(m_z, &QSlider::valueChanged, this, &JoystickScreen::apply);
+    connect(m_z, &QSlider::sliderReleased, this, [this] { m_z->setValue(0); });
+    connect(clear, &QPushButton::clicked, m_travel, &TravelView::clearTrail);
+    for (auto* box : {static_cast<QAbstractSpinBox*>(m_maxSpeed), static_cast<QAbstractSpinBox*>(m_deadband),
+                      static_cast<QAbstractSpinBox*>(m_expo)})
+        connect(box, &QAbstractSpinBox::editingFinished, this, [this] {
+            m_pad->setDeadband(m_deadband->value() / 100.0);
+            apply();
+        });
+    connect(m_client, &dev::InstrumentClient::identified, this, &JoystickScreen::rebuild);
+    connect(m_client, &dev::InstrumentClient::statusChanged, this, &JoystickScreen::refresh);
+    connect(m_client, &dev::InstrumentClient::limitsChanged, this, &JoystickScreen::refresh);
+    connect(m_client, &dev::InstrumentClient::eventReceived, this, [this](const dev::DeviceEvent& e) {
+        // Homing sets the coordinates' origin: a trail drawn in the old ones means nothing now.
+        if (e.kind == proto::EventKind::HomeDone)
+            m_travel->clearTrail();
+    });
+    connect(m_client, &dev::InstrumentClient::stateChanged, this, [this](dev::LinkState s) {
+        if (s != dev::LinkState::Ready)
+            stopAll();
+        refresh();
+    });
+    rebuild();
+}
+
+JoystickScreen::~JoystickScreen() { stopAll(); }
+
+JoystickSettings JoystickScreen::settings() const
+{
+    JoystickSettings s;
+    s.maxSpeedMmS = m_maxSpeed->value();
+    s.shaping.deadband = m_deadband->value() / 100.0;
+    s.shaping.expo = m_expo->value();
+    return s;
+}
+
+void JoystickScreen::setSettings(const JoystickSettings& s)
+{
+    m_maxSpeed->setValue(s.maxSpeedMmS);
+    m_deadband->setValue(static_cast<int>(std::lround(s.shaping.deadband * 100)));
+    m_expo->setValue(s.shaping.expo);
+    m_pad->setDeadband(s.shaping.deadband);
+}
+
+void JoystickScreen::rebuild()
+{
+    stopAll();
+    const auto& id = m_client->identity();
+    m_title->setText(id.axes.isEmpty() ? tr("No instrument") : tr("%1 — joystick").arg(id.model));
+    m_zAxis = id.axisIndex(QLatin1Char('Z'));
+    m_z->setVisible(m_zAxis >= 0);
+    m_zLabel->setVisible(m_zAxis >= 0);
+    if (id.axes.size() >= 2) {
+        double vmax = std::min(id.axes[0].maxSpeed, id.axes[1].maxSpeed);
+        m_maxSpeed->setMaximum(vmax);
+    }
+    refresh();
+}
+
+void JoystickScreen::refresh()
+{
+    const bool ready = m_client->isReady();
+    const auto& st = m_client->status();
+    const auto& id = m_client->identity();
+    QString state = dev::linkStateName(m_client->state());
+    if (ready && st.estop)
+        state = tr("E-STOP active — press Reset to clear");
+    m_state->setText(state);
+    m_state->setStyleSheet(ready && !st.estop ? QStringLiteral("color:#2e7d32;") : QStringLiteral("color:#b71c1c; font-weight:bold;"));
+    const bool canMove = ready && !st.estop;
+    if (!canMove && (m_pad->dragging() || m_z->value() != 0)) {
+        m_pad->release();
+        m_z->setValue(0);
+    }
+    m_pad->setEnabled(canMove);
+    m_z->setEnabled(canMove);
+    if (id.axes.size() < 2 || st.axes.size() < 2)
+        return;
+    QString rows;
+    for (int i = 0; i < id.axes.size() && i < st.axes.size(); ++i) {
+        if (id.axes[i].unit != proto::AxisUnit::Millimetre)
+            continue;
+        rows += tr("<tr><td><b>%1</b></td><td align=right>%2</td><td align=right>%3</td><td>%4</td></tr>")
+                    .arg(id.axes[i].letter)
+                    .arg(st.axes[i].commanded, 0, 'f', 3)
+                    .arg(st.axes[i].measured, 0, 'f', 3)
+                    .arg(st.axes[i].homed ? QString() : tr("not homed"));
+    }
+    m_readout->setText(tr("<table cellspacing=6><tr><td></td><td>commanded</td><td>%1</td><td></td></tr>%2</table>")
+                           .arg(id.kind == proto::DeviceKind::Stage ? tr("grating") : tr("encoder"), rows));
+    const auto& lim = m_client->softLimits();
+    QRectF soft(id.axes[0].travelMin, id.axes[1].travelMin, id.axes[0].travelMax - id.axes[0].travelMin,
+                id.axes[1].travelMax - id.axes[1].travelMin);
+    if (lim.size() >= 2)
+        soft = QRectF(QPointF(lim[0].min, lim[1].min), QPointF(lim[0].max, lim[1].max));
+    m_travel->setTravel(QRectF(id.axes[0].travelMin, id.axes[1].travelMin, id.axes[0].travelMax - id.axes[0].travelMin,
+                               id.axes[1].travelMax - id.axes[1].travelMin),
+                        soft);
+    m_travel->addPosition({st.axes[0].measured, st.axes[1].measured}, {st.axes[0].commanded, st.axes[1].commanded});
+}
+
+motion::path::Vec2 JoystickScreen::keyDeflection() const
+{
+    motion::path::Vec2 d{0, 0};
+    if (m_keys.contains(Qt::Key_Right))
+        d.x += 1;
+    if (m_keys.contains(Qt::Key_Left))
+        d.x -= 1;
+    if (m_keys.contains(Qt::Key_Up))
+        d.y += 1;
+    if (m_keys.contains(Qt::Key_Down))
+        d.y -= 1;
+    return d;
+}
+
+double JoystickScreen::keyZ() const
+{
+    return (m_keys.contains(Qt::Key_PageUp) ? 1.0 : 0.0) - (m_keys.contains(Qt::Key_PageDown) ? 1.0 : 0.0);
+}
+
+void JoystickScreen::apply()
+{
+    const auto& id = m_client->identity();
+    if (id.axes.size() < 2)
+        return;
+    const JoystickSettings s = settings();
+    motion::path::Vec2 d{m_pad->deflection().x(), m_pad->deflection().y()};
+    const motion::path::Vec2 keys = keyDeflection();
+    if (!m_pad->dragging() && (keys.x != 0 || keys.y != 0)) {
+        d = keys;
+        m_pad->showDeflection(QPointF(d.x, d.y) / std::max(1.0, std::hypot(d.x, d.y)));
+    } else if (!m_pad->dragging()) {
+        m_pad->showDeflection({});
+    }
+    const motion::path::Vec2 v = motion::jog::shapeStick(d, s.shaping);
+    std::map<int, double> wish = {{0, v.x * s.maxSpeedMmS}, {1, v.y * s.maxSpeedMmS}};
+    if (m_zAxis >= 0) {
+        const double zIn = keyZ() != 0 ? keyZ() : m_z->value() / 100.0;
+        wish[m_zAxis] = motion::jog::shapeAxis(zIn, s.shaping) * std::min(s.maxSpeedMmS, id.axes[m_zAxis].maxSpeed);
+    }
+    m_driver->setVelocities(wish);
+    m_speed->setText(tr("Commanded speed: %1 mm/s").arg(std::hypot(wish[0], wish[1]), 0, 'f', 2));
+}
+
+void JoystickScreen::stopAll()
+{
+    m_keys.clear();
+    if (m_pad->dragging() || !m_pad->deflection().isNull())
+        m_pad->release();
+    if (m_z->value() != 0) {
+        const QSignalBlocker block(m_z);
+        m_z->setValue(0);
+    }
+    m_driver->stop();
+    m_speed->setText(tr("Commanded speed: 0.00 mm/s"));
+}
+
+static bool stickKey(int key)
+{
+    return key == Qt::Key_Left || key == Qt::Key_Right || key == Qt::Key_Up || key == Qt::Key_Down
+        || key == Qt::Key_PageUp || key == Qt::Key_PageDown;
+}
+
+void JoystickScreen::keyPressEvent(QKeyEvent* event)
+{
+    if (!stickKey(event->key())) {
+        QWidget::keyPressEvent(event);  // Esc goes on to the window's E-stop
+        return;
+    }
+    event->accept();
+    if (event->isAutoRepeat() || !m_pad->isEnabled())
+        return;
+    m_keys.insert(event->key());
+    apply();
+}
+
+void JoystickScreen::keyReleaseEvent(QKeyEvent* event)
+{
+    if (!stickKey(event->key()) || event->isAutoRepeat()) {
+        QWidget::keyReleaseEvent(event);
+        return;
+    }
+    event->accept();
+    m_keys.remove(event->key());
+    apply();
+}
+
+void JoystickScreen::focusOutEvent(QFocusEvent* event)
+{
+    // A key release that lands in another window never reaches us; a drag keeps the mouse.
+    if (!m_pad->dragging())
+        stopAll();
+    QWidget::focusOutEvent(event);
+}
+
+void JoystickScreen::hideEvent(QHideEvent* event)
+{
+    stopAll();
+    QWidget::hideEvent(event);
+}
+
+void JoystickScreen::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::ActivationChange && !isActiveWindow())
+        stopAll();
+    QWidget::changeEvent(event);
+}
+
+} // namespace ui

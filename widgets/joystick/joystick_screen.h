@@ -1,0 +1,82 @@
+#pragma once
+// The Joystick screen of one instrument: drag a knob to move X and Y together at a speed that
+// grows with the deflection (dead-band, expo, maximum speed adjustable), a spring-back slider
+// for Z on the analyzer, arrow keys as a stick pushed to the rim, live positions and the XY
+// travel to scale with the trail. Motion stops on release, focus loss, hiding, link loss and
+// E-stop; the device's jog watchdog is the last line of defence.
+#include "device/client/instrument_client.h"
+#include "motion/jog/joystick_curve.h"
+
+#include <QSet>
+#include <QWidget>
+
+class QDoubleSpinBox;
+class QLabel;
+class QSlider;
+class QSpinBox;
+
+namespace dev {
+class JoystickDriver;
+}
+
+namespace ui {
+
+class JoystickPad;
+class TravelView;
+
+struct JoystickSettings {
+    double maxSpeedMmS = 5;
+    motion::jog::StickShaping shaping;
+};
+
+class JoystickScreen : public QWidget {
+    Q_OBJECT
+public:
+    explicit JoystickScreen(dev::InstrumentClient* client, QWidget* parent = nullptr);
+    ~JoystickScreen() override;
+
+    JoystickSettings settings() const;
+    void setSettings(const JoystickSettings& s);
+
+    JoystickPad* pad() const { return m_pad; }
+    TravelView* travel() const { return m_travel; }
+    QSlider* zSlider() const { return m_z; }
+    dev::JoystickDriver* driver() const { return m_driver; }
+    /// Every axis to zero now (release, focus loss, hide…).
+    void stopAll();
+
+signals:
+    void problem(const QString& message);
+
+protected:
+    void keyPressEvent(QKeyEvent* event) override;
+    void keyReleaseEvent(QKeyEvent* event) override;
+    void focusOutEvent(QFocusEvent* event) override;
+    void hideEvent(QHideEvent* event) override;
+    void changeEvent(QEvent* event) override;
+
+private:
+    void rebuild();
+    void refresh();
+    void apply();
+    motion::path::Vec2 keyDeflection() const;
+    double keyZ() const;
+
+    dev::InstrumentClient* m_client;
+    dev::JoystickDriver* m_driver;
+    QLabel* m_title;
+    QLabel* m_state;
+    JoystickPad* m_pad;
+    QSlider* m_z;
+    QLabel* m_zLabel;
+    QDoubleSpinBox* m_maxSpeed;
+    QSpinBox* m_deadband;
+    QDoubleSpinBox* m_expo;
+    QLabel* m_readout;
+    QLabel* m_speed;
+    TravelView* m_travel;
+    QSet<int> m_keys;  ///< arrow and page keys held
+    int m_zAxis = -1;
+};
+
+} // namespace ui

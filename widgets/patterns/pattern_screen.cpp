@@ -1,0 +1,508 @@
+#include "widgets/patterns/pattern_screen.h"
+
+#include "device/files/pattern_file.h"
+#include "device/files/pattern_run_csv.h"
+#include "device/telemetry/telemetry_hub.h"
+#include "widgets/patterns/contour_plot.h"
+#include "widgets/patterns/pattern_form.h"
+#include "widgets/patterns/pattern_preview.h"
+
+#include <QComboBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSplitter>
+#include <QStandardPaths>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace ui {
+
+using jobs::PatternRunner;
+
+namespace {
+QString duration(double s)
+{
+    if (!(s >= 0) || !std::isfinite(s))
+        return QStringLiteral("—");
+    if (s < 60)
+        return PatternScreen::tr("%1 s").arg(s, 0, 'f', 1);
+    return PatternScreen::tr("%1 min %2 s").arg(static_cast<int>(s) / 60).arg(static_cast<int>(s) % 60);
+}
+} // namespace
+
+PatternScreen::PatternScreen(QVector<PatternInstrument> instruments, tele::TelemetryHub* hub, QWidget* parent)
+    : QWidget(parent), m_instruments(std::move(instruments)), m_hub(hub)
+{
+    auto* h = new QHBoxLayout(this);
+    auto* leftHost = new QWidget(this);
+    auto* left = new QVBoxLayout(leftHost);
+    left->setContentsMargins(0, 0, 6, 0);
+    auto* instRow = new QHBoxLayout;
+    instRow->addWidget(new QLabel(tr("Instrument"), leftHost));
+    m_instrumentBox = new QComboBox(leftHost);
+    for (const auto& in : m_instruments)
+        m_instrumentBox->addItem(in.name);
+    instRow->addWidget(m_instrumentBox, 1);
+    left->addLayout(instRow);
+    m_form = new PatternForm(leftHost);
+    left->addWidget(m_form);
+    m_estimate = new QLabel(leftHost);
+    m_estimate->setObjectName(QStringLiteral("patternEstimate"));
+    left->addWidget(m_estimate);
+
+    auto* buttons = new QHBoxLayout;
+    m_run = new QPushButton(tr("Run"), leftHost);
+    m_run->setToolTip(tr("Move to the pattern's start, then run it (F5)"));
+    m_run->setShortcut(QKeySequence(Qt::Key_F5));
+    m_pause = new QPushButton(tr("Pause"), leftHost);
+    m_pause->setToolTip(tr("Slow down along the path and hold; press again to go on (F6)"));
+    m_pause->setShortcut(QKeySequence(Qt::Key_F6));
+    m_abort = new QPushButton(tr("Abort"), leftHost);
+    m_abort->setToolTip(tr("Slow down along the path and give the rest up (F8)"));
+    m_abort->setShortcut(QKeySequence(Qt::Key_F8));
+    for (QPushButton* b : {m_run, m_pause, m_abort}) {
+        b->setMinimumHeight(34);
+        buttons->addWidget(b);
+    }
+    left->addLayout(buttons);
+    m_progress = new QProgressBar(leftHost);
+    m_progress->setFormat(tr("%v / %m segments"));
+    left->addWidget(m_progress);
+    m_status = new QLabel(leftHost);
+    m_status->setObjectName(QStringLiteral("patternStatus"));
+    m_status->setWordWrap(true);
+    left->addWidget(m_status);
+    m_summary = new QLabel(leftHost);
+    m_summary->setObjectName(QStringLiteral("patternSummary"));
+    m_summary->setWordWrap(true);
+    m_summary->setTextFormat(Qt::RichText);
+    left->addWidget(m_summary);
+    auto* files = new QHBoxLayout;
+    auto* load = new QPushButton(tr("Load…"), leftHost);
+    auto* save = new QPushButton(tr("Save…"), leftHost);
+    m_export = new QPushButton(tr("Export run…"), leftHost);
+    m_export->setToolTip(tr("The last run's samples as CSV: commanded and measured XY, path distance, contour error"));
+    files->addWidget(load);
+    files->addWidget(save);
+    files->addWidget(m_export);
+    left->addLayout(files);
+    left->addStretch(1);
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(leftHost);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setMinimumWidth(360);
+    scroll->setMaximumWidth(440);
+    h->addWidget(scroll);
+
+    auto* rightHost = new QWidget(this);
+    auto* right = new QVBoxLayout(rightHost);
+    right->setContentsMargins(0, 0, 0, 0);
+    auto* viewRow = new QHBoxLayout;
+    auto* fit = new QPushButton(tr("Fit"), rightHost);
+    fit->setToolTip(tr("Show the whole pattern (wheel: zoom, drag: pan)"));
+    viewRow->addWidget(fit);
+    viewRow->addSpacing(12);
+    viewRow->addWidget(new QLabel(tr("Interpolation step"), rightHost));
+    m_step = new QDoubleSpinBox(rightHost);
+    m_step->setRange(0.0001, 1);
+    m_step->setDecimals(4);
+    m_step->setSuffix(tr(" mm"));
+    m_step->setToolTip(tr("Grid of the point-by-point walk drawn when zoomed in (the instrument's resolution by default)"));
+    viewRow->addWidget(m_step);
+    viewRow->addWidget(new QLabel(tr("zoom in to see the steps"), rightHost));
+    viewRow->addStretch(1);
+    right->addLayout(viewRow);
+    auto* split = new QSplitter(Qt::Vertical, rightHost);
+    m_preview = new PatternPreview(split);
+    m_contour = new ContourPlot(split);
+    split->addWidget(m_preview);
+    split->addWidget(m_contour);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 1);
+    right->addWidget(split, 1);
+    h->addWidget(rightHost, 1);
+
+    m_replan.setSingleShot(true);
+    m_replan.setInterval(80);
+    connect(&m_replan, &QTimer::timeout, this, &PatternScreen::replan);
+    m_redraw.setInterval(100);
+    connect(&m_redraw, &QTimer::timeout, this, [this] {
+        m_preview->replot(QCustomPlot::rpQueuedReplot);
+        m_contour->refresh();
+    });
+    connect(m_form, &PatternForm::changed, &m_replan, qOverload<>(&QTimer::start));
+    connect(m_instrumentBox, &QComboBox::currentIndexChanged, this, &PatternScreen::setInstrument);
+    connect(fit, &QPushButton::clicked, m_preview, &PatternPreview::fit);
+    connect(m_step, &QDoubleSpinBox::valueChanged, m_preview, &PatternPreview::setStepMm);
+    connect(m_run, &QPushButton::clicked, this, [this] { run(); });
+    connect(m_pause, &QPushButton::clicked, this, &PatternScreen::pauseOrResume);
+    connect(m_abort, &QPushButton::clicked, this, &PatternScreen::abort);
+    auto choose = [this](const QString& title, const QString& filter, bool saving) {
+        if (m_chooser)
+            return m_chooser(title, filter, saving);
+        const QString dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation) + QStringLiteral("/BenchPilot");
+        QDir().mkpath(dir);
+        return saving ? dir + QStringLiteral("/pattern-run.csv") : QString();
+    };
+    connect(load, &QPushButton::clicked, this, [this, choose] {
+        const QString f = choose(tr("Load pattern"), tr("Patterns (*.pattern.json)"), false);
+        QString error;
+        if (!f.isEmpty() && !loadPattern(f, &error))
+            emit problem(error);
+    });
+    connect(save, &QPushButton::clicked, this, [this, choose] {
+        QString f = choose(tr("Save pattern"), tr("Patterns (*.pattern.json)"), true);
+        if (f.isEmpty())
+            return;
+        if (!f.endsWith(QLatin1String(".pattern.json")))
+            f += QStringLiteral(".pattern.json");
+        QString error;
+        if (!savePattern(f, &error))
+            emit problem(error);
+    });
+    connect(m_export, &QPushButton::clicked, this, [this, choose] {
+        const QString f = choose(tr("Export run"), tr("CSV (*.csv)"), true);
+        QString error;
+        if (!f.isEmpty() && !exportRun(f, &error))
+            emit problem(error);
+    });
+
+    for (int i = 0; i < m_instruments.size(); ++i) {
+        const PatternInstrument& in = m_instruments[i];
+        connect(in.client, &dev::InstrumentClient::identified, this, [this, i] {
+            if (i == m_current)
+                setInstrument(i);
+        });
+        connect(in.client, &dev::InstrumentClient::limitsChanged, this, [this, i] {
+            if (i == m_current)
+                refreshLimits();
+        });
+        connect(in.client, &dev::InstrumentClient::stateChanged, this, [this, i](dev::LinkState s) {
+            if (i != m_current)
+                return;
+            if (s == dev::LinkState::Ready)
+                cur().paths->refreshLimits([this](const auto&) { replan(); });
+            updateButtons();
+        });
+        connect(in.client, &dev::InstrumentClient::statusChanged, this, [this, i](const dev::InstrumentStatus& st) {
+            if (i != m_current || st.axes.size() < 2)
+                return;
+            m_preview->setMachinePosition({st.axes[0].measured, st.axes[1].measured});
+            if (!cur().runner->busy())
+                m_preview->replot(QCustomPlot::rpQueuedReplot);
+            updateButtons();
+        });
+        PatternRunner* r = in.runner;
+        connect(r, &PatternRunner::stateChanged, this, [this, i](PatternRunner::State s) {
+            if (i == m_runOn)
+                onRunnerState(s);
+        });
+        connect(r, &PatternRunner::progress, this, [this, i](std::size_t d, std::size_t t) {
+            if (i == m_runOn)
+                onProgress(d, t);
+        });
+        connect(r, &PatternRunner::message, this, [this, i](const QString& text, bool isProblem) {
+            if (i != m_runOn)
+                return;
+            m_status->setText(text);
+            if (isProblem)
+                emit problem(QStringLiteral("%1: %2").arg(m_instruments[i].name, text));
+        });
+        connect(r, &PatternRunner::sampleAdded, this, [this, i](const jobs::PatternRunSample& s) {
+            if (i != m_runOn)
+                return;
+            m_preview->addRunPoint(s.commanded, s.measured);
+            m_contour->addSample(s.pathMm, s.contourMm);
+        });
+        connect(r, &PatternRunner::finished, this, [this, i](const jobs::PatternRunSummary& s) {
+            if (i != m_runOn)
+                return;
+            m_summary->setText(tr("<b>Contour error</b> max %1 µm (at %2 mm), RMS %3 µm · <b>time</b> %4 · %5 samples%6")
+                                   .arg(s.maxContourMm * 1e3, 0, 'f', 2)
+                                   .arg(s.maxAtPathMm, 0, 'f', 2)
+                                   .arg(s.rmsContourMm * 1e3, 0, 'f', 2)
+                                   .arg(duration(s.durationS))
+                                   .arg(s.samples)
+                                   .arg(s.complete ? QString() : tr(" · <b>incomplete</b>")));
+            m_redraw.stop();
+            m_preview->replot(QCustomPlot::rpQueuedReplot);
+            m_contour->refresh();
+            wantTelemetry(false);
+        });
+    }
+    if (m_hub)
+        connect(m_hub, &tele::TelemetryHub::dataArrived, this, &PatternScreen::onData);
+    setInstrument(0);
+    m_form->setPattern(motion::plans::Pattern{});
+    replan();
+    updateButtons();
+}
+
+PatternScreen::~PatternScreen()
+{
+    if (m_hub)
+        m_hub->setWanted(QStringLiteral("patterns"), {}, 0);
+}
+
+jobs::PatternRunner* PatternScreen::runner() const { return cur().runner; }
+QString PatternScreen::statusText() const { return m_status->text(); }
+QString PatternScreen::summaryText() const { return m_summary->text(); }
+motion::plans::Pattern PatternScreen::pattern() const { return m_form->pattern(); }
+
+void PatternScreen::setPattern(const motion::plans::Pattern& p)
+{
+    m_form->setPattern(p);
+    replan();
+    m_preview->fit();
+}
+
+void PatternScreen::setInstrument(int index)
+{
+    if (index < 0 || index >= m_instruments.size())
+        return;
+    m_current = index;
+    if (m_instrumentBox->currentIndex() != index) {
+        const QSignalBlocker block(m_instrumentBox);
+        m_instrumentBox->setCurrentIndex(index);
+    }
+    const auto& id = cur().client->identity();
+    m_form->setZAvailable(id.capabilities & proto::CapCoupledXyThenZ);
+    if (!id.axes.isEmpty())
+        m_step->setValue(id.axes[0].resolution > 0 ? id.axes[0].resolution : 0.001);
+    refreshLimits();
+    replan();
+    updateButtons();
+}
+
+void PatternScreen::refreshLimits()
+{
+    const auto& id = cur().client->identity();
+    if (id.axes.size() < 2)
+        return;
+    const motion::path::Box travel{id.axes[0].travelMin, id.axes[1].travelMin, id.axes[0].travelMax, id.axes[1].travelMax};
+    motion::path::Box soft = travel;
+    const auto& lim = cur().client->softLimits();
+    if (lim.size() >= 2)
+        soft = {lim[0].min, lim[1].min, lim[0].max, lim[1].max};
+    m_preview->setLimits(travel, soft);
+    replan();
+}
+
+void PatternScreen::replan()
+{
+    const motion::plans::Pattern p = m_form->pattern();
+    m_path = motion::plans::plan(p);
+    const bool fitNow = m_preview->path().empty() && !m_path.empty();
+    m_preview->setPath(m_path);
+    if (fitNow)
+        m_preview->fit();
+    if (m_path.empty()) {
+        m_estimate->setText(tr("The pattern has problems (see above)."));
+        updateButtons();
+        return;
+    }
+    const double len = motion::path::pathLengthMm(m_path);
+    QString text = tr("%1 segments, %2 mm; estimated %3 at %4 mm/s")
+                       .arg(m_path.size())
+                       .arg(len, 0, 'f', 2)
+                       .arg(duration(cur().runner->estimatedS(m_path)))
+                       .arg(p.feedMmS);
+    const auto& lim = cur().client->softLimits();
+    if (lim.size() >= 2) {
+        if (auto v = motion::plans::outsideLimits(m_path, {lim[0].min, lim[1].min, lim[0].max, lim[1].max}))
+            text += QStringLiteral("<br><span style='color:#b71c1c'>%1</span>")
+                        .arg(tr("Leaves the soft limits: %1").arg(QString::fromStdString(v->message)));
+    }
+    m_estimate->setText(text);
+    updateButtons();
+}
+
+void PatternScreen::updateButtons()
+{
+    PatternRunner* r = cur().runner;
+    const bool mine = m_runOn == m_current;
+    const auto st = r->state();
+    const bool busy = r->busy();
+    m_run->setEnabled(!busy && !m_path.empty() && cur().paths->available() && !cur().client->status().estop);
+    m_pause->setEnabled(mine && (st == PatternRunner::State::Running || st == PatternRunner::State::Paused
+                                 || st == PatternRunner::State::Interrupted || st == PatternRunner::State::Approaching));
+    m_pause->setText(mine && (st == PatternRunner::State::Paused || st == PatternRunner::State::Interrupted)
+                         ? (st == PatternRunner::State::Interrupted ? tr("Continue") : tr("Resume"))
+                         : tr("Pause"));
+    m_abort->setEnabled(mine && (busy || st == PatternRunner::State::Interrupted));
+    m_export->setEnabled(m_runOn >= 0 && !m_instruments[m_runOn].runner->samples().empty());
+    m_instrumentBox->setEnabled(!busy);
+}
+
+bool PatternScreen::run()
+{
+    PatternRunner* r = cur().runner;
+    if (r->busy() || m_path.empty())
+        return false;
+    jobs::PatternRunner::Options o;
+    o.zMm = m_form->pattern().zMm;
+    const QStringList problems = r->preflight(m_path, o);
+    if (!problems.isEmpty()) {
+        m_status->setText(problems.join(QLatin1Char('\n')));
+        emit problem(QStringLiteral("%1: %2").arg(cur().name, problems.join(QLatin1Char(' '))));
+        return false;
+    }
+    const auto& id = cur().client->identity();
+    const double travel = std::max(id.axes[0].travelMax - id.axes[0].travelMin, id.axes[1].travelMax - id.axes[1].travelMin);
+    const double far = r->approachDistanceMm(m_path);
+    if (far > kFarMoveShare * travel) {
+        const auto start = m_path.front().start;
+        if (!confirm(tr("Move %1 %2 mm to the pattern's start (%3, %4) and run %5 segments (%6 mm)?")
+                         .arg(cur().name)
+                         .arg(far, 0, 'f', 1)
+                         .arg(start.x, 0, 'f', 3)
+                         .arg(start.y, 0, 'f', 3)
+                         .arg(m_path.size())
+                         .arg(motion::path::pathLengthMm(m_path), 0, 'f', 1)))
+            return false;
+    }
+    m_runOn = m_current;
+    m_preview->clearRun();
+    m_contour->clear();
+    m_contour->setPathLength(motion::path::pathLengthMm(m_path));
+    m_summary->clear();
+    m_lastSampleS = -1;
+    wantTelemetry(true);
+    m_redraw.start();
+    if (!r->start(m_path, o)) {
+        wantTelemetry(false);
+        m_redraw.stop();
+        return false;
+    }
+    updateButtons();
+    return true;
+}
+
+void PatternScreen::pauseOrResume()
+{
+    if (m_runOn < 0)
+        return;
+    PatternRunner* r = m_instruments[m_runOn].runner;
+    if (r->state() == PatternRunner::State::Paused || r->state() == PatternRunner::State::Interrupted) {
+        wantTelemetry(true);
+        m_redraw.start();
+        r->resume();
+    } else {
+        r->pause();
+    }
+}
+
+void PatternScreen::abort()
+{
+    if (m_runOn >= 0)
+        m_instruments[m_runOn].runner->abort();
+}
+
+void PatternScreen::onRunnerState(PatternRunner::State s)
+{
+    QString text = PatternRunner::stateText(s);
+    if (s == PatternRunner::State::Approaching)
+        text = tr("Moving to the start…");
+    if (s != PatternRunner::State::Interrupted && s != PatternRunner::State::Failed)
+        m_status->setText(text.left(1).toUpper() + text.mid(1));
+    updateButtons();
+}
+
+void PatternScreen::onProgress(std::size_t done, std::size_t total)
+{
+    m_progress->setMaximum(static_cast<int>(total));
+    m_progress->setValue(static_cast<int>(done));
+    const PatternRunner* r = m_instruments[m_runOn].runner;
+    if (r->state() == PatternRunner::State::Running)
+        m_status->setText(tr("Running: segment %1 of %2, %3 mm done, about %4 left")
+                              .arg(done)
+                              .arg(total)
+                              .arg(r->pathDoneMm(), 0, 'f', 1)
+                              .arg(duration(r->remainingS())));
+}
+
+void PatternScreen::wantTelemetry(bool want)
+{
+    if (!m_hub)
+        return;
+    if (!want || m_runOn < 0) {
+        m_hub->setWanted(QStringLiteral("patterns"), {}, 0);
+        return;
+    }
+    const int i = m_instruments[m_runOn].hubIndex;
+    QVector<tele::ChannelKey> keys;
+    for (std::uint8_t axis : {std::uint8_t(0), std::uint8_t(1)})
+        for (auto kind : {proto::ChannelKind::Commanded, proto::ChannelKind::Measured})
+            keys << tele::ChannelKey{i, {axis, kind}};
+    m_hub->setWanted(QStringLiteral("patterns"), keys, kTelemetryHz);
+}
+
+void PatternScreen::onData(int hubIndex)
+{
+    if (m_runOn < 0 || !m_hub || hubIndex != m_instruments[m_runOn].hubIndex)
+        return;
+    auto store = [&](std::uint8_t axis, proto::ChannelKind k) { return m_hub->store({hubIndex, {axis, k}}); };
+    const tele::ChannelStore* xm = store(0, proto::ChannelKind::Measured);
+    const tele::ChannelStore* ym = store(1, proto::ChannelKind::Measured);
+    const tele::ChannelStore* xc = store(0, proto::ChannelKind::Commanded);
+    const tele::ChannelStore* yc = store(1, proto::ChannelKind::Commanded);
+    if (!xm || !ym || !xc || !yc || xm->empty())
+        return;
+    PatternRunner* r = m_instruments[m_runOn].runner;
+    // Every sample newer than the last one handed on; the four channels share their sample times.
+    for (std::size_t k = m_lastSampleS < 0 ? 0 : xm->lowerBound(m_lastSampleS + 1e-7); k < xm->size(); ++k) {
+        const tele::Sample x = xm->at(k);
+        const auto y = ym->nearest(x.tS), cx = xc->nearest(x.tS), cy = yc->nearest(x.tS);
+        if (!y || !cx || !cy)
+            continue;
+        r->addSample(x.tS, {cx->value, cy->value}, {x.value, y->value});
+        m_lastSampleS = x.tS;
+    }
+}
+
+bool PatternScreen::exportRun(const QString& path, QString* error)
+{
+    if (m_runOn < 0 || m_instruments[m_runOn].runner->samples().empty()) {
+        if (error)
+            *error = tr("There is no run to export yet.");
+        return false;
+    }
+    return files::savePatternRunCsv(path, m_instruments[m_runOn].runner->samples(), error);
+}
+
+bool PatternScreen::savePattern(const QString& path, QString* error)
+{
+    return files::savePatternFile(path, m_form->pattern(), error);
+}
+
+bool PatternScreen::loadPattern(const QString& path, QString* error)
+{
+    motion::plans::Pattern p;
+    if (!files::loadPatternFile(path, &p, error))
+        return false;
+    setPattern(p);
+    return true;
+}
+
+void PatternScreen::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    QTimer::singleShot(0, m_preview, &PatternPreview::fit);
+}
+
+void PatternScreen::hideEvent(QHideEvent* event)
+{
+    // A running pattern keeps its telemetry (its contour must be judged); an idle screen lets go.
+    if (m_runOn < 0 || !m_instruments[m_runOn].runner->busy())
+        wantTelemetry(false);
+    QWidget::hideEvent(event);
+}
+
+} // namespace ui
