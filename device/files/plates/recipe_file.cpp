@@ -73,6 +73,7 @@ plates::Step readStep(const Value& v, const std::string& path, jsonio::Problems&
     if (type && !t) {
         problems.add(*v.find("type"), o.pathOf("type"), "unknown step type \"" + type->substr(0, 40) + "\"; the types are " + plates::stepTypeList());
         s.type = StepType::Wait;  // a harmless stand-in keeps the later steps' indices
+        s.seconds = 0;
         return s;
     }
     if (!t) {
@@ -182,8 +183,8 @@ RecipeRead parseRecipe(std::string_view text)
         for (std::size_t k = 0; k < n; ++k)
             rec.steps.push_back(readStep(steps->items()[k], jsonio::childPath("steps", k), r.problems));
     }
-    if (r.problems.empty())
-        r.recipe = std::move(rec);
+    r.wellFormed = r.problems.empty();
+    r.recipe = std::move(rec);
     return r;
 }
 

@@ -18,8 +18,12 @@ constexpr const char* kRecipeSchema = "benchpilot.recipe";
 constexpr int kRecipeVersion = 1;
 
 struct RecipeRead {
-    std::optional<plates::Recipe> recipe;  ///< when the form was right (the meaning may still be wrong)
-    jsonio::Problems problems;             ///< the form's problems
+    /// As much of the recipe as could be read, whenever the document is a
+    /// recipe: planning it finds the meaning's problems beside the form's. An
+    /// unreadable step stands in as a zero-second wait, so indices stay right.
+    std::optional<plates::Recipe> recipe;
+    bool wellFormed = false;               ///< the form had no problem: `recipe` is exactly the file
+    jsonio::Problems problems;             ///< the form's problems (and, after placeProblems, the plan's)
     std::optional<jsonio::Value> root;     ///< the parsed document, for placing later problems
 };
 

@@ -73,7 +73,7 @@ LoadedRecipe loadRecipe(const QString& path, const plates::Deck& deck, const std
         out.messages = formatProblems(read.problems, name, &out.errorCount);
         return out;
     }
-    out.readable = true;
+    out.readable = read.wellFormed;
     out.recipe = *read.recipe;
     QStringList labwareMessages;
     const int labwareErrors = resolveLabware(out.recipe, QFileInfo(path).absolutePath(), out.context, &labwareMessages);

@@ -18,7 +18,7 @@ struct LoadedRecipe {
     plates::PlanContext context;
     plates::RecipePlan plan;      ///< from the machine's start (0, 0, 0, 0) unless re-planned
     QStringList messages;         ///< "FILE:LINE:COL: PATH: MESSAGE", errors and warnings, files in order
-    bool readable = false;        ///< the recipe's form was right
+    bool readable = false;        ///< the recipe's form was right: `recipe` is the file
     int errorCount = 0;
     bool ok() const { return readable && errorCount == 0; }
 };

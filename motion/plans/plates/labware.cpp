@@ -138,7 +138,8 @@ Problems validateLabware(const Labware& lw)
             out.push_back({at, "well " + name + " is outside the " + std::to_string(lw.rows) + " × " + std::to_string(lw.columns) + " grid"});
         if (!seen.insert(w.id).second)
             out.push_back({at, "well " + name + " is defined twice"});
-        const double r = w.shape == WellShape::Circular ? w.diameterMm / 2 : std::max(w.sizeXMm, w.sizeYMm) / 2;
+        const double rx = w.shape == WellShape::Circular ? w.diameterMm / 2 : w.sizeXMm / 2;
+        const double ry = w.shape == WellShape::Circular ? w.diameterMm / 2 : w.sizeYMm / 2;
         if (w.shape == WellShape::Circular ? bad(w.diameterMm) : (bad(w.sizeXMm) || bad(w.sizeYMm)))
             out.push_back({at, "well " + name + " needs a size above 0"});
         if (bad(w.depthMm) || !std::isfinite(w.bottomZMm) || w.bottomZMm < 0 || w.bottomZMm + w.depthMm > lw.heightMm + 1e-6)
@@ -146,8 +147,8 @@ Problems validateLabware(const Labware& lw)
                                    + " mm) must be above 0 and at most the plate's height " + formatMm(lw.heightMm) + " mm"});
         if (bad(w.volumeUl))
             out.push_back({at, "well " + name + " needs a volume above 0 µL"});
-        if (!std::isfinite(w.xMm) || !std::isfinite(w.yMm) || w.xMm - r < -1e-9 || w.yMm - r < -1e-9
-            || w.xMm + r > lw.lengthMm + 1e-9 || w.yMm + r > lw.widthMm + 1e-9)
+        if (!std::isfinite(w.xMm) || !std::isfinite(w.yMm) || w.xMm - rx < -1e-9 || w.yMm - ry < -1e-9
+            || w.xMm + rx > lw.lengthMm + 1e-9 || w.yMm + ry > lw.widthMm + 1e-9)
             out.push_back({at, "well " + name + " at (" + formatMm(w.xMm) + ", " + formatMm(w.yMm) + ") mm does not fit on the "
                                    + formatMm(lw.lengthMm) + " × " + formatMm(lw.widthMm) + " mm footprint"});
         if (out.size() > 50) {

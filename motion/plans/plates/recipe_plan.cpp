@@ -193,6 +193,14 @@ private:
 
     const RecipePlate* resolvePlate(const std::string& name, const std::string& path)
     {
+        const RecipePlate* p = findPlate(name, path);
+        if (p && (!m_c.labware.count(p->labware) || !m_c.deck.slot(p->slot)))
+            return nullptr;  // already reported with the plate
+        return p;
+    }
+
+    const RecipePlate* findPlate(const std::string& name, const std::string& path)
+    {
         if (name.empty()) {
             if (m_r.plates.size() == 1)
                 return &m_r.plates.front();
@@ -212,10 +220,7 @@ private:
             for (const auto& q : m_r.plates)
                 list += (list.empty() ? "" : ", ") + std::string("\"") + q.name + "\"";
             error(path, "unknown plate \"" + name + "\"" + (list.empty() ? ": the recipe has no plates" : "; the recipe's plates are " + list));
-            return nullptr;
         }
-        if (!m_c.labware.count(p->labware) || !m_c.deck.slot(p->slot))
-            return nullptr;  // already reported with the plate
         return p;
     }
 
