@@ -15,7 +15,6 @@ using platefiles::OpState;
 
 namespace {
 constexpr double kSameMm = 1e-6;
-constexpr double kPlungerToleranceUl = 0.05;  ///< two counts of the pump's encoder
 
 bool active(RunState s) { return s == RunState::Running || s == RunState::Pausing || s == RunState::Aborting; }
 bool closed(OpState s) { return s == OpState::Done || s == OpState::Skipped; }
@@ -310,6 +309,7 @@ void RecipeRunner::sendMove(const MachineMove& m)
         if (!logLine(std::move(v)))
             return;
         m_pumpLogged = true;
+        m_pumpStartUl = m_pumpUl;
         m_opStates[static_cast<std::size_t>(m_op)] = OpState::Interrupted;  // until "done"
     }
     m_inFlight = m;
@@ -344,6 +344,10 @@ void RecipeRunner::sendMove(const MachineMove& m)
     m_client->move(targets, relative, m.speed, [this, serial](const std::optional<dev::RequestError>& err) {
         if (serial != m_moveSerial || !m_inFlight)
             return;
+        if (err && err->kind != dev::RequestError::Kind::Device && err->kind != dev::RequestError::Kind::Invalid) {
+            stopRun(linkLostMessage());
+            return;
+        }
         if (err) {
             stopRun(tr("the analyzer refused a move of %1: %2")
                         .arg(QString::fromStdString(m_plan.ops[static_cast<std::size_t>(m_op)].label()), err->message));
@@ -478,10 +482,15 @@ void RecipeRunner::onLinkState(dev::LinkState s)
         return;
     }
     if (s != dev::LinkState::Ready && active(m_state))
-        stopRun(tr("the link to the analyzer was lost during %1: the run stopped (the analyzer completes the move it had). "
-                   "Reconnect, then Resume")
-                    .arg(m_op >= 0 && m_op < static_cast<int>(m_plan.ops.size()) ? QString::fromStdString(m_plan.ops[static_cast<std::size_t>(m_op)].label())
-                                                                                   : tr("the run")));
+        stopRun(linkLostMessage());
+}
+
+QString RecipeRunner::linkLostMessage() const
+{
+    return tr("the link to the analyzer was lost during %1: the run stopped (the analyzer completes the move it had). "
+              "Reconnect, then Resume")
+        .arg(m_op >= 0 && m_op < static_cast<int>(m_plan.ops.size()) ? QString::fromStdString(m_plan.ops[static_cast<std::size_t>(m_op)].label())
+                                                                       : tr("the run"));
 }
 
 void RecipeRunner::stopRun(const QString& reason)

@@ -109,9 +109,11 @@ private:
     void onLinkState(dev::LinkState s);
     void onMoveTimeout();
     void stopRun(const QString& reason);
+    QString linkLostMessage() const;
     void finishOp();
     bool logLine(jsonio::Value line);
     bool decideInterrupted(int op, const InterruptedDecider& decide, bool* redo, QString* error);
+    bool applyDecision(int op, bool redo);
     int nextOpenOp(int from) const;
     int axis(char letter) const;
     double plungerNow() const;
@@ -135,6 +137,8 @@ private:
     bool m_knowXy = false, m_knowZ = false;
     double m_x = 0, m_y = 0, m_z = 0;
     double m_pumpUl = 0;       ///< plunger (µL), from the status at (re)start plus our moves
+    double m_pumpStartUl = 0;  ///< plunger when the op's "pump" line was written
+    std::optional<platefiles::RunLogState> m_logState;  ///< the log being resumed, while deciding
     QTimer m_moveTimer, m_dwellTimer;
     QElapsedTimer m_clock;
     double m_elapsedBeforeS = 0;    ///< running time of earlier stretches
