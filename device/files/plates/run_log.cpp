@@ -68,9 +68,16 @@ RunLogState readRunLog(std::string_view text)
             o.refuseUnknown({"event", "op", "time", "kind", "step", "plate", "well", "station", "volume_ul", "p_ul", "reason"});
             o.string("time", false);
             const bool perOp = *event == "start" || *event == "pump" || *event == "done" || *event == "skip" || *event == "redo";
-            std::optional<long long> op;
-            if (perOp)
-                op = o.integer("op", true, 0, st.opCount > 0 ? st.opCount - 1 : 0);
+            long long opIndex = -1;
+            if (perOp) {
+                opIndex = o.integer("op", true, 0, 1000000).value_or(-1);
+                if (opIndex >= 0 && static_cast<std::size_t>(opIndex) >= st.ops.size()) {
+                    local.add(*v.find("op"), "op", "op " + std::to_string(opIndex) + " is beyond the " + std::to_string(st.ops.size())
+                                                       + " ops of the header");
+                    opIndex = -1;
+                }
+            }
+            const std::string opText = std::to_string(opIndex);
             const auto pUl = o.number("p_ul", false, -1e9, 1e9);
             if (*event == "resume") {
                 ++st.runs;
@@ -79,12 +86,12 @@ RunLogState readRunLog(std::string_view text)
                 st.lastStop = o.string("reason", false).value_or("");
             } else if (*event == "finished") {
                 st.finished = true;
-            } else if (op && local.empty()) {
-                OpRecord& r = st.ops[static_cast<std::size_t>(*op)];
+            } else if (opIndex >= 0 && local.empty()) {
+                OpRecord& r = st.ops[static_cast<std::size_t>(opIndex)];
                 const bool closed = r.state == OpState::Done || r.state == OpState::Skipped;
                 if (*event == "start") {
                     if (closed)
-                        local.add(v, "op", "op " + std::to_string(*op) + " starts again after it was done: the log is not trustworthy");
+                        local.add(v, "op", "op " + opText + " starts again after it was done: the log is not trustworthy");
                     r.state = OpState::Started;
                     r.kind = o.string("kind", false).value_or("");
                     r.plate = o.string("plate", false).value_or("");
@@ -97,19 +104,19 @@ RunLogState readRunLog(std::string_view text)
                     ++r.starts;
                 } else if (*event == "pump") {
                     if (r.state != OpState::Started)
-                        local.add(v, "op", "a pump line for op " + std::to_string(*op) + ", which has not started");
+                        local.add(v, "op", "a pump line for op " + opText + ", which has not started");
                     r.state = OpState::Interrupted;
                     r.pumpStartUl = pUl;
                 } else if (*event == "done") {
                     if (r.state != OpState::Started && r.state != OpState::Interrupted)
-                        local.add(v, "op", "op " + std::to_string(*op) + " is done but was not under way");
+                        local.add(v, "op", "op " + opText + " is done but was not under way");
                     r.state = OpState::Done;
                     r.pumpEndUl = pUl;
                     if (pUl)
                         st.lastPumpUl = pUl;
                 } else if (*event == "skip") {
                     if (r.state != OpState::Interrupted)
-                        local.add(v, "op", "only an interrupted op can be skipped (op " + std::to_string(*op) + ")");
+                        local.add(v, "op", "only an interrupted op can be skipped (op " + opText + ")");
                     r.state = OpState::Skipped;
                     o.string("reason", false);
                     if (pUl)

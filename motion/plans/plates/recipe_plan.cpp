@@ -87,6 +87,9 @@ double remainingTimeS(const RecipePlan& plan, int fromOp)
 namespace {
 
 constexpr double kEps = 1e-9;
+/// Slowest speed a recipe may ask for (mm/s or µL/s): slower is a typo, and the
+/// wire's whole nanometres per second cannot carry much less.
+constexpr double kMinSpeed = 0.1;
 
 /// A place the tip visits, resolved to machine coordinates.
 struct Place {
@@ -166,11 +169,11 @@ private:
             error("steps", "a recipe needs at least one step");
         if (m_r.travelSpeedMmS) {
             const double vmax = std::min(d.x.maxSpeed, d.y.maxSpeed);
-            if (!(*m_r.travelSpeedMmS > 0) || *m_r.travelSpeedMmS > vmax)
-                error("travel_speed_mm_s", "must be more than 0 and at most " + formatMm(vmax) + " mm/s (got " + formatMm(*m_r.travelSpeedMmS) + ")");
+            if (!(*m_r.travelSpeedMmS >= kMinSpeed) || *m_r.travelSpeedMmS > vmax)
+                error("travel_speed_mm_s", "must be from " + formatMm(kMinSpeed) + " to " + formatMm(vmax) + " mm/s (got " + formatMm(*m_r.travelSpeedMmS) + ")");
         }
-        if (m_r.zSpeedMmS && (!(*m_r.zSpeedMmS > 0) || *m_r.zSpeedMmS > d.z.maxSpeed))
-            error("z_speed_mm_s", "must be more than 0 and at most " + formatMm(d.z.maxSpeed) + " mm/s (got " + formatMm(*m_r.zSpeedMmS) + ")");
+        if (m_r.zSpeedMmS && (!(*m_r.zSpeedMmS >= kMinSpeed) || *m_r.zSpeedMmS > d.z.maxSpeed))
+            error("z_speed_mm_s", "must be from " + formatMm(kMinSpeed) + " to " + formatMm(d.z.maxSpeed) + " mm/s (got " + formatMm(*m_r.zSpeedMmS) + ")");
     }
 
     /// The tip must clear the plate's top at its safe height and stay above the
@@ -401,8 +404,8 @@ private:
     {
         if (!s.speedUlS)
             return 0;
-        if (!(*s.speedUlS > 0) || *s.speedUlS > m_c.deck.p.maxSpeed) {
-            error(fieldPath(path, "speed_ul_s"), "must be more than 0 and at most " + formatMm(m_c.deck.p.maxSpeed) + " µL/s (got "
+        if (!(*s.speedUlS >= kMinSpeed) || *s.speedUlS > m_c.deck.p.maxSpeed) {
+            error(fieldPath(path, "speed_ul_s"), "must be from " + formatMm(kMinSpeed) + " to " + formatMm(m_c.deck.p.maxSpeed) + " µL/s (got "
                                                     + formatMm(*s.speedUlS) + ")");
             return 0;
         }
