@@ -1,5 +1,5 @@
 // benchpilot: the operator and test-bench GUI.
-//   benchpilot [--screenshot FILE --screen NAME [--sim analyzer|stage] [--settle-ms N] [--home-first] [--exercise]]
+//   benchpilot [--screenshot FILE --screen NAME [--sim analyzer|stage] [--settle-ms N] [--home-first] [--exercise] [--recipe FILE]]
 #include "main_window.h"
 #include "screenshot.h"
 
@@ -30,7 +30,10 @@ int main(int argc, char** argv)
                               QApplication::translate("main", "screenshot: home the shown instrument and move it before the picture"));
     QCommandLineOption exercise(QStringLiteral("exercise"),
                                 QApplication::translate("main", "screenshot: jog and move the shown instrument so live plots show motion"));
-    p.addOptions({shot, screen, sim, settle, script, exercise});
+    QCommandLineOption recipe(QStringLiteral("recipe"),
+                              QApplication::translate("main", "screenshot: open this recipe on the Plates screen, home the analyzer and run it"),
+                              QStringLiteral("file"));
+    p.addOptions({shot, screen, sim, settle, script, exercise, recipe});
     QCoreApplication::setOrganizationName(QStringLiteral("BenchPilot"));
     QCoreApplication::setApplicationName(QStringLiteral("benchpilot"));
     QCoreApplication::setApplicationVersion(QStringLiteral(BP_VERSION));
@@ -66,6 +69,7 @@ int main(int argc, char** argv)
         r.settleMs = p.value(settle).toInt();
         r.homeFirst = p.isSet(script);
         r.exercise = p.isSet(exercise);
+        r.recipe = p.value(recipe);
         return app::takeScreenshot(r);
     }
     app::MainWindow w;

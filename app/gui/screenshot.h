@@ -10,6 +10,7 @@ struct ScreenshotRequest {
     int settleMs = 1500;
     bool homeFirst = false;  ///< home and move the shown instrument so the picture shows a working machine
     bool exercise = false;   ///< jog, then move the shown instrument, so live plots show motion
+    QString recipe;          ///< plates: open this recipe, home the analyzer and run it while settling
 };
 
 /// Renders one screen of a fresh main window (simulated instruments, no saved
