@@ -1,9 +1,9 @@
 #include "plates_wiring.h"
 
 #include "main_window.h"
+#include "device/files/plates/plate_paths.h"
 #include "widgets/plates/plates_screen.h"
 
-#include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
@@ -14,8 +14,6 @@
 namespace app {
 
 namespace {
-QString dataDir() { return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation); }
-
 jobs::InterruptedChoice askAboutInterrupted(QWidget* window, const jobs::InterruptedOp& op)
 {
     QMessageBox box(QMessageBox::Warning, QObject::tr("A well was interrupted"),
@@ -52,8 +50,9 @@ void wirePlatesScreen(ui::PlatesScreen* screen, QWidget* window, const MainWindo
     }
     if (!options.persistSettings)
         return;
-    screen->setRunLogDirectory(QDir(dataDir()).filePath(QStringLiteral("runs")));
-    screen->setCalibrationFile(QDir(dataDir()).filePath(QStringLiteral("analyzer.calibration.json")));
+    // The same places as benchpilot-cli's defaults: both see one calibration.
+    screen->setRunLogDirectory(platefiles::defaultRunLogDirectory());
+    screen->setCalibrationFile(platefiles::defaultCalibrationPath());
     const QString last = QSettings().value(QStringLiteral("plates/recipe")).toString();
     if (!last.isEmpty() && QFileInfo::exists(last))
         screen->openRecipe(last);

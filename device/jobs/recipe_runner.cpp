@@ -209,6 +209,7 @@ bool RecipeRunner::start(const QString& logPath, QString* error)
     head.set("recipe", m_recipeName.toStdString());
     head.set("fingerprint", plates::fingerprintHex(m_plan.fingerprint));
     head.set("ops", static_cast<int>(m_plan.ops.size()));
+    head.set("p_ul", plungerNow());
     if (!m_log.write(head)) {
         *error = m_log.lastError();
         m_log.close();

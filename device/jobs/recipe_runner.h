@@ -72,8 +72,13 @@ public:
 
     /// A new run, logged to `logPath` (a new file).
     bool start(const QString& logPath, QString* error);
-    /// Continues the run `logPath` records (same recipe: same fingerprint).
+    /// Continues the run `logPath` records (same recipe: same fingerprint). Plan
+    /// it from where the run began: resumeStart() says where that was.
     bool resumeFromLog(const QString& logPath, const InterruptedDecider& decide, QString* error);
+    /// The state to plan a resumed run from: the machine as it stands, with the
+    /// plunger where the logged run began (the plan's syringe accounting is the
+    /// original run's). Falls back to the plunger now when the log does not say.
+    static plates::StartState resumeStart(const QString& logPath, const dev::InstrumentClient& client);
     /// After a pause or a stop; `decide` is asked when the op under way had moved liquid.
     bool resume(const InterruptedDecider& decide, QString* error);
     void pause();

@@ -18,6 +18,23 @@ bool closed(OpState s) { return s == OpState::Done || s == OpState::Skipped; }
 QString ul(double v) { return QString::number(v, 'f', 2); }
 } // namespace
 
+plates::StartState RecipeRunner::resumeStart(const QString& logPath, const dev::InstrumentClient& client)
+{
+    plates::StartState s;
+    const auto& a = client.status().axes;
+    const auto& id = client.identity();
+    const int ix = id.axisIndex(QLatin1Char('X')), iy = id.axisIndex(QLatin1Char('Y')), iz = id.axisIndex(QLatin1Char('Z')),
+              ip = id.axisIndex(QLatin1Char('P'));
+    if (ix >= 0 && iy >= 0 && iz >= 0 && ip >= 0 && std::max({ix, iy, iz, ip}) < a.size())
+        s = {a[ix].commanded, a[iy].commanded, a[iz].commanded, a[ip].commanded};
+    std::string text;
+    QString error;
+    if (files::readText(logPath, &text, &error))
+        if (const auto p = platefiles::readRunLog(text).startPumpUl)
+            s.pumpUl = *p;
+    return s;
+}
+
 RunProgress RecipeRunner::progress() const
 {
     RunProgress p;

@@ -65,7 +65,7 @@ TEST_F(PlateResume, TheOperatorSkipsAWellInterruptedMidAspirateAndNoWellIsDoneTw
     dieMidAspirate();
     RecipeRunner second(&s.client);
     QString error;
-    ASSERT_TRUE(second.setPlan(planFor(slowRecipe(), s.client), QStringLiteral("slow"), &error));
+    ASSERT_TRUE(second.setPlan(planForResume(slowRecipe(), s.client, logPath), QStringLiteral("slow"), &error));
     std::vector<InterruptedOp> asked;
     ASSERT_TRUE(second.resumeFromLog(
                     logPath,
@@ -98,7 +98,7 @@ TEST_F(PlateResume, RedoDoesTheInterruptedWellAgain)
     dieMidAspirate();
     RecipeRunner second(&s.client);
     QString error;
-    ASSERT_TRUE(second.setPlan(planFor(slowRecipe(), s.client), QStringLiteral("slow"), &error));
+    ASSERT_TRUE(second.setPlan(planForResume(slowRecipe(), s.client, logPath), QStringLiteral("slow"), &error));
     ASSERT_TRUE(second.resumeFromLog(logPath, [](const InterruptedOp&) { return InterruptedChoice::Redo; }, &error))
         << error.toStdString();
     ASSERT_TRUE(waitFor([&] { return second.state() == RunState::Finished; }, 60000));
@@ -115,7 +115,7 @@ TEST_F(PlateResume, WithoutADecisionNothingResumesAndTheLogIsUntouched)
     const LogCounts before = countLog(logPath);
     RecipeRunner second(&s.client);
     QString error;
-    ASSERT_TRUE(second.setPlan(planFor(slowRecipe(), s.client), QStringLiteral("slow"), &error));
+    ASSERT_TRUE(second.setPlan(planForResume(slowRecipe(), s.client, logPath), QStringLiteral("slow"), &error));
     EXPECT_FALSE(second.resumeFromLog(logPath, {}, &error));
     EXPECT_TRUE(error.contains(QStringLiteral("aspirate 10 µL from samples A3 was interrupted after liquid started to move")))
         << error.toStdString();
@@ -145,7 +145,7 @@ TEST_F(PlateResume, ALogThatDoesNotFitIsRefused)
     EXPECT_TRUE(error.contains(QStringLiteral("the log of another recipe"))) << error.toStdString();
     // The right recipe, but someone moved the plunger since.
     RecipeRunner same(&s.client);
-    ASSERT_TRUE(same.setPlan(planFor(samplingRecipe("A1:A3"), s.client), QStringLiteral("short"), &error));
+    ASSERT_TRUE(same.setPlan(planForResume(samplingRecipe("A1:A3"), s.client, logPath), QStringLiteral("short"), &error));
     ASSERT_FALSE(s.call([&](auto cb) { s.client.move({{3, 5}}, true, 0, cb); }));
     ASSERT_TRUE(s.waitStill());
     EXPECT_FALSE(same.resumeFromLog(logPath, {}, &error));
@@ -157,7 +157,7 @@ TEST_F(PlateResume, ALogThatDoesNotFitIsRefused)
     ASSERT_TRUE(waitFor([&] { return same.state() == RunState::Finished; }, 30000));
     // A finished log has nothing left.
     RecipeRunner third(&s.client);
-    ASSERT_TRUE(third.setPlan(planFor(samplingRecipe("A1:A3"), s.client), QStringLiteral("short"), &error));
+    ASSERT_TRUE(third.setPlan(planForResume(samplingRecipe("A1:A3"), s.client, logPath), QStringLiteral("short"), &error));
     EXPECT_FALSE(third.resumeFromLog(logPath, {}, &error));
     EXPECT_TRUE(error.contains(QStringLiteral("finished"))) << error.toStdString();
 }

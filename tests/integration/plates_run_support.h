@@ -48,6 +48,13 @@ inline plates::RecipePlan planFor(const plates::Recipe& r, const dev::Instrument
     return plates::planRecipe(r, builtinContext(), s);
 }
 
+/// A resumed run's plan: from where the logged run began (its plunger), so the
+/// syringe's accounting is the original run's.
+inline plates::RecipePlan planForResume(const plates::Recipe& r, const dev::InstrumentClient& client, const QString& log)
+{
+    return plates::planRecipe(r, builtinContext(), jobs::RecipeRunner::resumeStart(log, client));
+}
+
 /// Per op: how many "start" and "done" lines the log has.
 struct LogCounts {
     std::map<int, int> starts, dones, pumps, skips;

@@ -173,7 +173,7 @@ TEST_F(PlateRun, AbortStopsAtOnceThenLiftsTheTipAndTheLogResumes)
 
     // A later run continues from the log: the third well begins again, the first two are not touched.
     RecipeRunner again(&s.client);
-    ASSERT_TRUE(again.setPlan(planFor(samplingRecipe("A1:A6"), s.client), QStringLiteral("row"), &error));
+    ASSERT_TRUE(again.setPlan(planForResume(samplingRecipe("A1:A6"), s.client, logPath), QStringLiteral("row"), &error));
     bool asked = false;
     ASSERT_TRUE(again.resumeFromLog(logPath, [&](const jobs::InterruptedOp&) { asked = true; return jobs::InterruptedChoice::Skip; }, &error))
         << error.toStdString();

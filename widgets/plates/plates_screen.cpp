@@ -449,12 +449,9 @@ void PlatesScreen::resumeFromLog()
     const QString path = m_choose ? m_choose(tr("Resume from run log"), tr("Run logs (*.run.jsonl *.jsonl)"), false) : QString();
     if (path.isEmpty())
         return;
-    const auto& st = m_client->status();
-    plates::StartState start;
-    if (st.axes.size() >= 4)
-        start = {st.axes[0].commanded, st.axes[1].commanded, st.axes[2].commanded, st.axes[3].commanded};
     QStringList ignored;
-    const plates::RecipePlan plan = plates::planRecipe(m_editor->recipe(), context(&ignored), start);
+    const plates::RecipePlan plan =
+        plates::planRecipe(m_editor->recipe(), context(&ignored), jobs::RecipeRunner::resumeStart(path, *m_client));
     QString error;
     if (!m_runner->setPlan(plan, QString::fromStdString(m_editor->recipe().name), &error) || !m_runner->resumeFromLog(path, m_decide, &error)) {
         emit problem(error);

@@ -6,13 +6,20 @@
 #include <QDir>
 #include <QFileInfo>
 
+#include <algorithm>
+
 namespace platefiles {
 
 QStringList formatProblems(const jsonio::Problems& problems, const QString& fileName, int* errors)
 {
     QStringList out;
     const std::string name = fileName.toStdString();
-    for (const jsonio::Problem& p : problems.list()) {
+    // In the order of the file, as a person reads it.
+    std::vector<jsonio::Problem> sorted = problems.list();
+    std::stable_sort(sorted.begin(), sorted.end(), [](const jsonio::Problem& a, const jsonio::Problem& b) {
+        return a.position.line != b.position.line ? a.position.line < b.position.line : a.position.column < b.position.column;
+    });
+    for (const jsonio::Problem& p : sorted) {
         jsonio::Problems one;
         one.add(p.position, p.path, p.message);
         out << QString::fromStdString(one.format(name)).trimmed();

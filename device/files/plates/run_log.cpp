@@ -55,7 +55,8 @@ RunLogState readRunLog(std::string_view text)
             if (header)
                 local.add(v, "event", "a second run header: one log holds one run and its resumptions");
             jsonio::checkSchema(v, kRunLogSchema, kRunLogVersion, local);
-            o.refuseUnknown({"schema", "version", "event", "recipe", "fingerprint", "ops", "time"});
+            o.refuseUnknown({"schema", "version", "event", "recipe", "fingerprint", "ops", "p_ul", "time"});
+            st.startPumpUl = o.number("p_ul", false, -1e9, 1e9);
             st.recipe = o.string("recipe", false).value_or("");
             st.fingerprint = o.string("fingerprint", true).value_or("");
             st.opCount = static_cast<int>(o.integer("ops", true, 0, 1000000).value_or(0));

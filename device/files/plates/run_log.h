@@ -3,7 +3,7 @@
 // lines, appended and synced to disk before the machine is told to do what a
 // line announces, so after a crash, a pulled cable or SIGKILL the log says
 // exactly how far the run got:
-//   run     header: recipe, plan fingerprint, number of ops
+//   run     header: recipe, plan fingerprint, number of ops, plunger at the start
 //   start   an op (a well visit) begins: the tip is about to move there
 //   pump    its first plunger move is about to be sent (liquid may move from here on)
 //   done    the op finished; the tip is back up
@@ -42,6 +42,9 @@ struct OpRecord {
 struct RunLogState {
     std::string recipe, fingerprint;
     int opCount = 0;
+    /// The plunger when the run began: a resumed run is planned from it, so its
+    /// plan (and the syringe's accounting) is the original run's.
+    std::optional<double> startPumpUl;
     std::vector<OpRecord> ops;
     bool finished = false;
     int runs = 0;                  ///< the header and each resume
