@@ -257,7 +257,8 @@ plates::PlanContext PlatesScreen::context(QStringList* messages) const
 void PlatesScreen::revalidate()
 {
     QStringList labwareMessages;
-    const plates::PlanContext c = context(&labwareMessages);
+    m_context = context(&labwareMessages);
+    const plates::PlanContext& c = m_context;
     m_plan = plates::planRecipe(m_editor->recipe(), c);
     QStringList errors = labwareMessages, warnings;
     QList<int> steps;
@@ -324,8 +325,7 @@ void PlatesScreen::refreshMap()
 {
     const std::string name = m_plate->currentText().toStdString();
     const plates::RecipePlate* p = m_editor->recipe().plate(name);
-    QStringList ignored;
-    const plates::PlanContext c = context(&ignored);
+    const plates::PlanContext& c = m_context;
     const auto lw = p ? c.labware.find(p->labware) : c.labware.end();
     if (!p || lw == c.labware.end()) {
         if (!m_map->labware().wells.empty())
@@ -412,8 +412,7 @@ bool PlatesScreen::runRecipe()
     plates::StartState start;
     if (st.axes.size() >= 4)
         start = {st.axes[0].commanded, st.axes[1].commanded, st.axes[2].commanded, st.axes[3].commanded};
-    QStringList ignored;
-    const plates::RecipePlan plan = plates::planRecipe(m_editor->recipe(), context(&ignored), start);
+    const plates::RecipePlan plan = plates::planRecipe(m_editor->recipe(), m_context, start);
     QString error;
     const QString name = QString::fromStdString(m_editor->recipe().name.empty() ? "recipe" : m_editor->recipe().name);
     if (!m_runner->setPlan(plan, name, &error)) {
@@ -449,9 +448,7 @@ void PlatesScreen::resumeFromLog()
     const QString path = m_choose ? m_choose(tr("Resume from run log"), tr("Run logs (*.run.jsonl *.jsonl)"), false) : QString();
     if (path.isEmpty())
         return;
-    QStringList ignored;
-    const plates::RecipePlan plan =
-        plates::planRecipe(m_editor->recipe(), context(&ignored), jobs::RecipeRunner::resumeStart(path, *m_client));
+    const plates::RecipePlan plan = plates::planRecipe(m_editor->recipe(), m_context, jobs::RecipeRunner::resumeStart(path, *m_client));
     QString error;
     if (!m_runner->setPlan(plan, QString::fromStdString(m_editor->recipe().name), &error) || !m_runner->resumeFromLog(path, m_decide, &error)) {
         emit problem(error);

@@ -84,6 +84,7 @@ private:
     std::vector<plates::SlotCalibration> m_calibrations;
     QString m_calibrationFile, m_logDir;
     plates::RecipePlan m_plan;
+    plates::PlanContext m_context;  ///< of the last validation: labware files are read once per change, not per well
     bool m_planOk = false;
     PlateMap* m_map;
     QComboBox* m_plate;
