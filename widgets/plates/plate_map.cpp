@@ -44,6 +44,14 @@ void PlateMap::setLabware(const plates::Labware& labware, const QString& title)
     update();
 }
 
+void PlateMap::setTitle(const QString& title)
+{
+    if (title == m_title)
+        return;
+    m_title = title;
+    update();
+}
+
 void PlateMap::setTransform(const plates::PlateTransform& t, bool calibrated)
 {
     m_transform = t;

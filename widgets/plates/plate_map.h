@@ -25,6 +25,9 @@ public:
     /// The plate to draw (copied); an empty labware draws nothing.
     void setLabware(const plates::Labware& labware, const QString& title);
     const plates::Labware& labware() const { return m_labware; }
+    /// The line under the plate ("assay in slot 1: 96-well plate, 360 µL").
+    void setTitle(const QString& title);
+    QString title() const { return m_title; }
     /// Plate frame → machine XY, for the hover text.
     void setTransform(const plates::PlateTransform& t, bool calibrated);
     /// States and the recipe's volumes per well (µL: + dispensed, − aspirated).

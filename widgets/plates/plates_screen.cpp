@@ -332,9 +332,11 @@ void PlatesScreen::refreshMap()
             m_map->setLabware({}, QString());
         return;
     }
+    const QString title = tr("%1 in slot %2: %3")
+                              .arg(QString::fromStdString(p->name), QString::fromStdString(p->slot), QString::fromStdString(lw->second.displayName));
     if (m_map->labware().id != lw->second.id || m_map->labware().wells.size() != lw->second.wells.size())
-        m_map->setLabware(lw->second, tr("%1 in slot %2: %3").arg(QString::fromStdString(p->name), QString::fromStdString(p->slot),
-                                                                   QString::fromStdString(lw->second.displayName)));
+        m_map->setLabware(lw->second, title);
+    m_map->setTitle(title);
     m_map->setTransform(c.transform(p->slot), c.calibration.count(p->slot) > 0);
     QMap<QString, PlateMap::WellState> states;
     QMap<QString, double> volumes;
