@@ -83,12 +83,8 @@ int plan(Invocation& inv)
     if (int rc = loadSetup(inv, &setup))
         return rc;
     const platefiles::LoadedRecipe& l = setup.loaded;
-    if (!l.ok()) {
-        for (const QString& m : l.messages)
-            inv.err() << m << "\n";
-        inv.err().flush();
-        return Usage;
-    }
+    if (!l.ok())
+        return reportInvalid(inv, l);
     const plates::RecipePlan& p = l.plan;
     if (inv.json()) {
         QJsonArray ops, wells;

@@ -92,9 +92,7 @@ int runRecipe(Invocation& inv)
         return rc;
     const platefiles::LoadedRecipe& l = setup.loaded;
     if (!l.ok()) {
-        for (const QString& m : l.messages)
-            inv.err() << m << "\n";
-        inv.err().flush();
+        reportInvalid(inv, l);
         return inv.usage(tr("%1 does not validate: nothing moved").arg(l.path));
     }
     QString logPath;

@@ -54,4 +54,12 @@ int loadSetup(Invocation& inv, RecipeSetup* setup)
     return 0;
 }
 
+int reportInvalid(Invocation& inv, const platefiles::LoadedRecipe& loaded)
+{
+    for (const QString& m : loaded.messages)
+        inv.err() << m << "\n";
+    inv.err().flush();
+    return Usage;
+}
+
 } // namespace cli

@@ -21,6 +21,9 @@ QList<QCommandLineOption> recipeSetupOptions();
 /// loaded: the caller decides).
 int loadSetup(Invocation& inv, RecipeSetup* setup);
 
+/// Prints every problem of a recipe that does not validate on stderr; returns Usage.
+int reportInvalid(Invocation& inv, const platefiles::LoadedRecipe& loaded);
+
 /// recipe run (recipe_run.cpp).
 int runRecipe(Invocation& inv);
 

@@ -92,6 +92,18 @@ protected:
             30000));
     }
 
+    /// The operator's jogging, done as a move: the tip over `m` and still.
+    bool moveTo(const plates::PointMm& m)
+    {
+        analyzer()->move({{0, m.x}, {1, m.y}}, false);
+        return waitFor(
+            [&] {
+                const auto& a = analyzer()->status().axes;
+                return std::abs(a[0].commanded - m.x) < 1e-6 && std::abs(a[1].commanded - m.y) < 1e-6 && !a[0].moving && !a[1].moving;
+            },
+            10000);
+    }
+
     QTemporaryDir dir;
     std::unique_ptr<app::MainWindow> w;
     ui::PlatesScreen* screen = nullptr;
@@ -236,14 +248,7 @@ TEST_F(PlatesScreenTest, TheCalibrationWizardTeachesASlotAndItIsKept)
     const plates::Labware lw = *plates::findBuiltinLabware("sbs-96");
     const auto pts = plates::teachWells(lw);
     for (int i = 0; i < 3; ++i) {
-        const plates::PointMm m = truth.apply(pts[static_cast<std::size_t>(i)].plateMm);
-        analyzer()->move({{0, m.x}, {1, m.y}}, false);
-        ASSERT_TRUE(waitFor(
-            [&] {
-                const auto& a = analyzer()->status().axes;
-                return std::abs(a[0].commanded - m.x) < 1e-6 && std::abs(a[1].commanded - m.y) < 1e-6 && !a[0].moving && !a[1].moving;
-            },
-            10000));
+        ASSERT_TRUE(moveTo(truth.apply(pts[static_cast<std::size_t>(i)].plateMm)));
         cal->recordPoint(i);
     }
     ASSERT_TRUE(cal->fit());
@@ -271,13 +276,7 @@ TEST_F(PlatesScreenTest, TheCalibrationWizardTeachesASlotAndItIsKept)
         plates::PointMm m = plates::PlateTransform::make(8, 106, 0).apply(pts[static_cast<std::size_t>(i)].plateMm);
         if (i == 1)
             m.x += 1.0;
-        analyzer()->move({{0, m.x}, {1, m.y}}, false);
-        ASSERT_TRUE(waitFor(
-            [&] {
-                const auto& a = analyzer()->status().axes;
-                return std::abs(a[0].commanded - m.x) < 1e-6 && std::abs(a[1].commanded - m.y) < 1e-6 && !a[0].moving && !a[1].moving;
-            },
-            10000));
+        ASSERT_TRUE(moveTo(m));
         cal->recordPoint(i);
     }
     ASSERT_TRUE(cal->fit());

@@ -20,17 +20,6 @@ QString example(const char* name) { return QStringLiteral(BP_SOURCE_DIR "/resour
 
 ProgramRun cli(const QStringList& args, int timeoutMs = 60000) { return runProgram(binary("benchpilot-cli"), args, timeoutMs); }
 
-QJsonObject lastJsonLine(const QString& text)
-{
-    const QStringList lines = text.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
-    for (auto it = lines.crbegin(); it != lines.crend(); ++it) {
-        const auto doc = QJsonDocument::fromJson(it->toUtf8());
-        if (doc.isObject())
-            return doc.object();
-    }
-    return {};
-}
-
 } // namespace
 
 TEST(PlateCli, ValidateListsEveryErrorAndExitsOne)
@@ -74,7 +63,7 @@ TEST(PlateCli, PlanGivesEachMoveAndTheTotalTimeWithoutMoving)
     const ProgramRun r = cli({QStringLiteral("recipe"), QStringLiteral("plan"), example("sampling-96.recipe.json"), QStringLiteral("--json"),
                               QStringLiteral("--calibration"), QStringLiteral("none")});
     ASSERT_EQ(r.exitCode, 0) << r.describe();
-    const QJsonObject plan = lastJsonLine(r.out);
+    const QJsonObject plan = lastJson(r.out);
     const QJsonArray ops = plan.value(QStringLiteral("ops")).toArray();
     ASSERT_EQ(ops.size(), 96);
     const QJsonObject b1 = ops.at(12).toObject();
@@ -148,7 +137,7 @@ TEST(PlateCli, KilledPartWayAndResumedFromItsLogEveryWellIsDoneOnce)
                                QStringLiteral("--interrupted=skip"), QStringLiteral("--json"), QStringLiteral("--calibration"), QStringLiteral("none")},
             120000);
     ASSERT_EQ(r.exitCode, 0) << r.describe();
-    EXPECT_EQ(lastJsonLine(r.out).value(QStringLiteral("event")).toString(), QStringLiteral("finished")) << r.describe();
+    EXPECT_EQ(lastJson(r.out).value(QStringLiteral("event")).toString(), QStringLiteral("finished")) << r.describe();
 
     const LogCounts after = countLog(log);
     EXPECT_EQ(after.resumes, 1);
@@ -168,7 +157,7 @@ TEST(PlateCli, KilledPartWayAndResumedFromItsLogEveryWellIsDoneOnce)
     // The plunger holds every well's 10 µL, once.
     r = cli(port + QStringList{QStringLiteral("--json"), QStringLiteral("status")});
     ASSERT_EQ(r.exitCode, 0) << r.describe();
-    const QJsonObject p = lastJsonLine(r.out).value(QStringLiteral("axes")).toObject().value(QStringLiteral("P")).toObject();
+    const QJsonObject p = lastJson(r.out).value(QStringLiteral("axes")).toObject().value(QStringLiteral("P")).toObject();
     EXPECT_NEAR(p.value(QStringLiteral("position")).toDouble(), 960.0, 1e-6) << r.describe();
 
     // The same log again: nothing left.
@@ -219,6 +208,6 @@ TEST(PlateCli, AnInterruptedWellNeedsTheOperatorsWord)
             60000);
     ASSERT_EQ(r.exitCode, 0) << r.describe();
     r = cli(port + QStringList{QStringLiteral("--json"), QStringLiteral("status")});
-    const QJsonObject p = lastJsonLine(r.out).value(QStringLiteral("axes")).toObject().value(QStringLiteral("P")).toObject();
+    const QJsonObject p = lastJson(r.out).value(QStringLiteral("axes")).toObject().value(QStringLiteral("P")).toObject();
     EXPECT_NEAR(p.value(QStringLiteral("position")).toDouble(), 100.0, 1e-6) << "four wells of 20 µL and A2 once more";
 }

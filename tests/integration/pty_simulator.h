@@ -5,10 +5,24 @@
 #include "programs.h"
 
 #include <QElapsedTimer>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QTemporaryDir>
 
 namespace itest {
+
+/// The last line of a program's output that parses as a JSON object (--json prints one per line).
+inline QJsonObject lastJson(const QString& text)
+{
+    const QStringList lines = text.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    for (auto it = lines.crbegin(); it != lines.crend(); ++it) {
+        const auto doc = QJsonDocument::fromJson(it->toUtf8());
+        if (doc.isObject())
+            return doc.object();
+    }
+    return {};
+}
 
 /// benchpilot-sim on a pty in a private directory; stopped with SIGTERM at the end.
 class PtySimulator {

@@ -29,18 +29,6 @@ using CliRun = ProgramRun;
 
 CliRun runCli(const QStringList& args, int timeoutMs = 60000) { return runProgram(binary("benchpilot-cli"), args, timeoutMs); }
 
-/// The last line of `text` that parses as a JSON object.
-QJsonObject lastJson(const QString& text)
-{
-    const QStringList lines = text.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
-    for (auto it = lines.crbegin(); it != lines.crend(); ++it) {
-        const auto doc = QJsonDocument::fromJson(it->toUtf8());
-        if (doc.isObject())
-            return doc.object();
-    }
-    return {};
-}
-
 } // namespace
 
 TEST(PtySimulator, PrintsWhereItServesAndRemovesTheSymlinkOnSigint)

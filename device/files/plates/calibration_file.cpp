@@ -1,5 +1,7 @@
 #include "device/files/plates/calibration_file.h"
 
+#include "device/files/plates/json_path.h"
+
 #include <set>
 
 namespace platefiles {
@@ -10,12 +12,10 @@ using jsonio::Value;
 CalibrationRead parseCalibration(std::string_view text)
 {
     CalibrationRead r;
-    const jsonio::ParseResult parsed = jsonio::parse(text);
-    if (!parsed) {
-        r.problems.add(parsed.error.position, "", parsed.error.message);
+    const std::optional<Value> parsed = parseOrReport(text, r.problems);
+    if (!parsed)
         return r;
-    }
-    const Value& root = *parsed.value;
+    const Value& root = *parsed;
     if (!jsonio::checkSchema(root, kCalibrationSchema, kCalibrationVersion, r.problems))
         return r;
     ObjectReader o(root, "", r.problems);

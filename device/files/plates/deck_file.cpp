@@ -39,12 +39,10 @@ Value axisJson(const plates::AxisMotion& a)
 DeckRead parseDeck(std::string_view text)
 {
     DeckRead r;
-    const jsonio::ParseResult parsed = jsonio::parse(text);
-    if (!parsed) {
-        r.problems.add(parsed.error.position, "", parsed.error.message);
+    const std::optional<Value> parsed = parseOrReport(text, r.problems);
+    if (!parsed)
         return r;
-    }
-    const Value& root = *parsed.value;
+    const Value& root = *parsed;
     if (!jsonio::checkSchema(root, kDeckSchema, kDeckVersion, r.problems))
         return r;
     ObjectReader o(root, "", r.problems);

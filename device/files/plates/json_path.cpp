@@ -5,6 +5,14 @@
 
 namespace platefiles {
 
+std::optional<jsonio::Value> parseOrReport(std::string_view text, jsonio::Problems& problems)
+{
+    jsonio::ParseResult parsed = jsonio::parse(text);
+    if (!parsed)
+        problems.add(parsed.error.position, "", parsed.error.message);
+    return std::move(parsed.value);
+}
+
 jsonio::Position positionOfPath(const jsonio::Value& root, std::string_view path)
 {
     const jsonio::Value* at = &root;

@@ -222,12 +222,10 @@ std::optional<Labware> readOpentronsLabware(const Value& root, jsonio::Problems&
 LabwareRead parseLabware(std::string_view text)
 {
     LabwareRead r;
-    const jsonio::ParseResult parsed = jsonio::parse(text);
-    if (!parsed) {
-        r.problems.add(parsed.error.position, "", parsed.error.message);
+    const std::optional<Value> parsed = parseOrReport(text, r.problems);
+    if (!parsed)
         return r;
-    }
-    const Value& root = *parsed.value;
+    const Value& root = *parsed;
     std::optional<Labware> lw;
     if (root.isObject() && root.find("schemaVersion") && !root.find("schema")) {
         r.opentrons = true;

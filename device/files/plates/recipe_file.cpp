@@ -145,12 +145,9 @@ bool isLabwareFile(const std::string& reference)
 RecipeRead parseRecipe(std::string_view text)
 {
     RecipeRead r;
-    jsonio::ParseResult parsed = jsonio::parse(text);
-    if (!parsed) {
-        r.problems.add(parsed.error.position, "", parsed.error.message);
+    r.root = parseOrReport(text, r.problems);
+    if (!r.root)
         return r;
-    }
-    r.root = std::move(parsed.value);
     const Value& root = *r.root;
     if (!jsonio::checkSchema(root, kRecipeSchema, kRecipeVersion, r.problems))
         return r;
