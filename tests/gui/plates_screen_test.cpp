@@ -252,6 +252,9 @@ TEST_F(PlatesScreenTest, TheCalibrationWizardTeachesASlotAndItIsKept)
         cal->recordPoint(i);
     }
     ASSERT_TRUE(cal->fit());
+    // Editing the recipe meanwhile does not throw the taught points away.
+    screen->recipeEditor()->edit(QStringLiteral("rename"), [](plates::Recipe& r) { r.name = "renamed"; });
+    ASSERT_TRUE(cal->fit());
     EXPECT_NEAR(cal->fit()->rotationDeg, 0.3, 0.01);
     EXPECT_LT(cal->fit()->maxResidualMm, 0.01);
     ASSERT_TRUE(button(cal, QObject::tr("Save calibration"))->isEnabled());

@@ -114,9 +114,17 @@ void CalibrationPanel::setDeck(const plates::Deck& deck)
 
 void CalibrationPanel::setSlotLabware(const std::map<std::string, plates::Labware>& bySlot, const std::map<std::string, double>& safeZBySlot)
 {
+    // Every edit of the recipe comes here: keep the points taught so far unless
+    // what stands in the slot being taught has changed.
+    const std::string slot = slotId().toStdString();
+    const auto before = m_bySlot.find(slot);
+    const auto after = bySlot.find(slot);
+    const bool same = (before == m_bySlot.end()) == (after == bySlot.end())
+        && (before == m_bySlot.end() || (before->second.id == after->second.id && before->second.wells.size() == after->second.wells.size()));
     m_bySlot = bySlot;
     m_safeZ = safeZBySlot;
-    rebuild();
+    if (!same || m_points.empty())
+        rebuild();
 }
 
 void CalibrationPanel::setCalibrations(const std::vector<plates::SlotCalibration>& calibrations)
