@@ -208,9 +208,12 @@ TEST_F(PlateRun, APulledCableStopsTheRunWhichResumesAfterReconnecting)
     bool asked = false;
     ASSERT_TRUE(runner.resume(
                     [&](const jobs::InterruptedOp& op) {
+                        // As an operator would: the evidence says whether the
+                        // plunger move left before the cable went.
                         asked = true;
                         seen = op;
-                        return jobs::InterruptedChoice::Skip;
+                        return op.evidence.contains(QStringLiteral("no liquid moved")) ? jobs::InterruptedChoice::Redo
+                                                                                        : jobs::InterruptedChoice::Skip;
                     },
                     &error))
         << error.toStdString();
