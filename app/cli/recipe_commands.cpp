@@ -8,7 +8,7 @@
 #include "command.h"
 #include "recipe_setup.h"
 
-#include "device/files/plates/recipe_loader.h"
+#include "device/files/recipes/recipe_loader.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

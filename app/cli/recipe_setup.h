@@ -3,7 +3,7 @@
 // calibration, and loading a recipe with them.
 #include "command.h"
 
-#include "device/files/plates/recipe_loader.h"
+#include "device/files/recipes/recipe_loader.h"
 
 namespace cli {
 

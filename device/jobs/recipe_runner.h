@@ -2,7 +2,7 @@
 // Runs a planned recipe on the analyzer, one op (well visit) at a time, each a
 // short sequence of MOVE requests: the next is sent when the device's
 // MotionDone events for the previous one have arrived (no polling). Every op is
-// written to the run log (device/files/plates/run_log.h) before the machine is
+// written to the run log (device/files/recipes/run_log.h) before the machine is
 // told to do it, so a run survives anything that kills it:
 //   * pause: after the current op, with the tip up;
 //   * abort: STOP at once, then Z up to the safe height once everything is still;
@@ -12,9 +12,9 @@
 //   * a crash or SIGKILL: resumeFromLog() continues from the log, never doing a
 //     completed op twice, and asks the operator about one interrupted mid-dispense.
 #include "device/client/instrument_client.h"
-#include "device/files/plates/run_log.h"
-#include "device/files/plates/run_log_writer.h"
-#include "motion/plans/plates/recipe_plan.h"
+#include "device/files/recipes/run_log.h"
+#include "device/files/recipes/run_log_writer.h"
+#include "motion/plans/recipes/recipe_plan.h"
 
 #include <QElapsedTimer>
 #include <QObject>

@@ -8,10 +8,10 @@
 // plan_ms / read_ms / paint_ms (this thread's CPU per iteration, which the
 // shared build machine does not inflate), log_lines, fits_per_s.
 #include "device/files/plates/deck_file.h"
-#include "device/files/plates/recipe_file.h"
-#include "device/files/plates/run_log.h"
+#include "device/files/recipes/recipe_file.h"
+#include "device/files/recipes/run_log.h"
 #include "motion/plans/plates/calibration.h"
-#include "motion/plans/plates/recipe_plan.h"
+#include "motion/plans/recipes/recipe_plan.h"
 #include "widgets/plates/plate_map.h"
 
 #include <benchmark/benchmark.h>

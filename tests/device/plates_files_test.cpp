@@ -2,8 +2,8 @@
 // the examples load; what is written reads back the same.
 #include "device/files/plates/calibration_file.h"
 #include "device/files/plates/labware_file.h"
-#include "device/files/plates/recipe_file.h"
-#include "device/files/plates/recipe_loader.h"
+#include "device/files/recipes/recipe_file.h"
+#include "device/files/recipes/recipe_loader.h"
 #include "plates_support.h"
 
 #include <QTemporaryDir>

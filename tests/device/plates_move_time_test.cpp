@@ -4,7 +4,7 @@
 #include "device/files/plates/deck_file.h"
 #include "device/sim/machine_config.h"
 #include "device/sim/sim_machine.h"
-#include "motion/plans/plates/move_time.h"
+#include "motion/plans/recipes/move_time.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The run log: what a resume trusts. Each op's state from its lines, a torn last
 // line after a crash, and the lines that make a log untrustworthy.
-#include "device/files/plates/run_log.h"
-#include "device/files/plates/run_log_writer.h"
+#include "device/files/recipes/run_log.h"
+#include "device/files/recipes/run_log_writer.h"
 #include "device/files/text_file.h"
 
 #include <QTemporaryDir>

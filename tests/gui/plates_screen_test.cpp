@@ -3,7 +3,7 @@
 // and teach a slot.
 #include "app/gui/instrument_session.h"
 #include "app/gui/main_window.h"
-#include "device/files/plates/recipe_file.h"
+#include "device/files/recipes/recipe_file.h"
 #include "device/files/text_file.h"
 #include "device/link/simulated_link.h"
 #include "gui_wait.h"

@@ -2,7 +2,7 @@
 // Running recipes on the in-process simulated analyzer: a homed session with a
 // sped-up clock, plans from where the machine stands, and what the run log says.
 #include "device/files/plates/deck_file.h"
-#include "device/files/plates/run_log.h"
+#include "device/files/recipes/run_log.h"
 #include "device/files/text_file.h"
 #include "device/jobs/recipe_runner.h"
 #include "sim_session.h"

@@ -1,6 +1,6 @@
 // Planning a recipe: the moves per well, the syringe's capacity, and every
 // error the issue names, found in one pass.
-#include "motion/plans/plates/move_time.h"
+#include "motion/plans/recipes/move_time.h"
 #include "motion/seed_scurve.h"
 #include "plates_support.h"
 

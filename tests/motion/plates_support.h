@@ -1,7 +1,7 @@
 #pragma once
 // A deck like resources/machines/analyzer.deck.json, built in code (test_motion
 // links the motion library alone), and a one-plate recipe to vary.
-#include "motion/plans/plates/recipe_plan.h"
+#include "motion/plans/recipes/recipe_plan.h"
 
 namespace platestest {
 

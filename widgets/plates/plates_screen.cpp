@@ -3,7 +3,7 @@
 #include "device/files/plates/calibration_file.h"
 #include "device/files/plates/deck_file.h"
 #include "device/files/plates/labware_file.h"
-#include "device/files/plates/recipe_loader.h"
+#include "device/files/recipes/recipe_loader.h"
 #include "device/files/text_file.h"
 #include "widgets/plates/calibration_panel.h"
 #include "widgets/plates/plate_map.h"

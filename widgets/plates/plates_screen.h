@@ -6,7 +6,7 @@
 #include "device/client/instrument_client.h"
 #include "device/jobs/recipe_runner.h"
 #include "motion/plans/plates/calibration.h"
-#include "motion/plans/plates/recipe_plan.h"
+#include "motion/plans/recipes/recipe_plan.h"
 
 #include <QWidget>
 

@@ -4,7 +4,7 @@
 // finds, each leading to its step. Every change is one undoable command on a
 // QUndoStack (Ctrl+Z / Ctrl+Shift+Z); typing into one field merges into one.
 #include "motion/plans/plates/deck.h"
-#include "motion/plans/plates/recipe.h"
+#include "motion/plans/recipes/recipe.h"
 
 #include <QWidget>
 

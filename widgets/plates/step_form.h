@@ -2,7 +2,7 @@
 // The form of one recipe step: the fields its type takes (docs/recipes.md), the
 // others hidden. Every change is reported as the whole edited step and the
 // field that changed, so the editor can make it one undoable command.
-#include "motion/plans/plates/recipe.h"
+#include "motion/plans/recipes/recipe.h"
 
 #include <QWidget>
 

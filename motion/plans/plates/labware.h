@@ -7,7 +7,7 @@
 // drawn and how ANSI/SLAS 1-2004…4-2004 give well positions ("A1 is 14.38 mm
 // from the left edge and 11.24 mm from the top edge"). Opentrons definitions
 // put the origin at the front-left corner with y growing toward the back:
-// y_ours = yDimension − y_opentrons (see device/files/plates/opentrons_labware.h).
+// y_ours = yDimension − y_opentrons (see device/files/plates/labware_file.h).
 #include "motion/plans/plates/problem.h"
 #include "motion/plans/plates/wells.h"
 

@@ -8,8 +8,8 @@
 #include "device/files/plates/calibration_file.h"
 #include "device/files/plates/deck_file.h"
 #include "device/files/plates/labware_file.h"
-#include "device/files/plates/recipe_file.h"
-#include "device/files/plates/run_log.h"
+#include "device/files/recipes/recipe_file.h"
+#include "device/files/recipes/run_log.h"
 
 #include <cmath>
 

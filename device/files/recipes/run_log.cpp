@@ -1,4 +1,4 @@
-#include "device/files/plates/run_log.h"
+#include "device/files/recipes/run_log.h"
 
 namespace platefiles {
 

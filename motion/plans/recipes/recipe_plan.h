@@ -10,7 +10,7 @@
 #include "motion/plans/plates/deck.h"
 #include "motion/plans/plates/labware.h"
 #include "motion/plans/plates/problem.h"
-#include "motion/plans/plates/recipe.h"
+#include "motion/plans/recipes/recipe.h"
 
 #include <cstdint>
 #include <map>

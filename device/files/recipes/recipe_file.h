@@ -1,12 +1,12 @@
 #pragma once
 // Recipes on disk (benchpilot.recipe, docs/recipes.md). The reader checks the
 // form (types, fields each step type takes, unknown fields); the plan
-// (motion/plans/plates/recipe_plan.h) checks the meaning (wells, volumes,
+// (motion/plans/recipes/recipe_plan.h) checks the meaning (wells, volumes,
 // capacity, plates). placeProblems() puts the plan's problems at their line and
 // column, so `recipe validate` lists every error of both kinds at once.
 #include "device/files/json_fields.h"
-#include "motion/plans/plates/recipe.h"
-#include "motion/plans/plates/recipe_plan.h"
+#include "motion/plans/recipes/recipe.h"
+#include "motion/plans/recipes/recipe_plan.h"
 
 #include <optional>
 #include <string>

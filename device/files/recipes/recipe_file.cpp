@@ -1,4 +1,4 @@
-#include "device/files/plates/recipe_file.h"
+#include "device/files/recipes/recipe_file.h"
 
 #include "device/files/plates/json_path.h"
 

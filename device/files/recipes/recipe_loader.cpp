@@ -1,4 +1,4 @@
-#include "device/files/plates/recipe_loader.h"
+#include "device/files/recipes/recipe_loader.h"
 
 #include "device/files/plates/labware_file.h"
 #include "device/files/text_file.h"

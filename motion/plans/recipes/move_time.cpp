@@ -1,4 +1,4 @@
-#include "motion/plans/plates/move_time.h"
+#include "motion/plans/recipes/move_time.h"
 
 #include "motion/seed_scurve.h"
 

@@ -1,4 +1,4 @@
-#include "device/files/plates/run_log_writer.h"
+#include "device/files/recipes/run_log_writer.h"
 
 #include <QDateTime>
 #include <QFile>

@@ -1,4 +1,4 @@
-#include "motion/plans/plates/recipe.h"
+#include "motion/plans/recipes/recipe.h"
 
 namespace plates {
 namespace {

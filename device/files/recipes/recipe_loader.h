@@ -2,7 +2,7 @@
 // A recipe file and everything it needs to run: the labware it names (built in
 // or files beside it), the deck, the slots' calibration. What `recipe validate`,
 // `recipe plan`, `recipe run` and the Plates screen all open a recipe with.
-#include "device/files/plates/recipe_file.h"
+#include "device/files/recipes/recipe_file.h"
 #include "motion/plans/plates/calibration.h"
 
 #include <QString>
