@@ -2,8 +2,8 @@
 // A dispensing recipe as a plain data model: the plates it uses (which labware
 // in which deck slot, at what heights) and its steps. The JSON form is in
 // docs/recipes.md; device/files/recipes/recipe_file.h reads and writes it.
-// validateRecipe() (recipe_check.h) finds every problem; planRecipe()
-// (recipe_plan.h) turns a valid recipe into the moves a run makes.
+// planRecipe() (recipe_plan.h) finds every problem and, in the same pass,
+// turns the recipe into the moves a run makes.
 #include <optional>
 #include <string>
 #include <vector>
