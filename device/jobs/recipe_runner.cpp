@@ -3,6 +3,7 @@
 #include "device/files/text_file.h"
 
 #include <QFileInfo>
+#include <QPointer>
 
 #include <algorithm>
 #include <cmath>
@@ -300,8 +301,17 @@ void RecipeRunner::nextMove()
     finishOp();
 }
 
-void RecipeRunner::sendMove(const MachineMove& m)
+void RecipeRunner::sendMove(const MachineMove& planned)
 {
+    MachineMove m = planned;
+    if (m.kind == MoveKind::Raise && !m_knowZ) {
+        // Where Z is has not been commanded by this run yet (a start, a resume):
+        // a raise goes no lower than the status says the tip is. Should the
+        // status be a poll behind, the tip still ends at or above the safe height.
+        const int iz = axis('Z');
+        if (iz >= 0 && iz < m_client->status().axes.size())
+            m.zMm = std::min(m.zMm, m_client->status().axes[iz].commanded);
+    }
     if (m.kind == MoveKind::Pump && !m_pumpLogged) {
         jsonio::Value v = jsonio::Value::object();
         v.set("event", "pump");
@@ -341,9 +351,13 @@ void RecipeRunner::sendMove(const MachineMove& m)
     m_waitMask = 0;
     for (const auto& t : targets)
         m_waitMask = static_cast<quint8>(m_waitMask | (1u << t.first));
+    m_moveSentUs = m_client->status().deviceTimeUs;
     m_moveTimer.start(static_cast<int>(std::lround(m.durationS * kMoveTimeFactor * 1000)) + kMoveGraceMs);
-    m_client->move(targets, relative, m.speed, [this, serial](const std::optional<dev::RequestError>& err) {
-        if (serial != m_moveSerial || !m_inFlight)
+    // The client keeps the callback until the device answers, which may be after
+    // this runner is gone (a window closed mid-run): it must not reach a dead runner.
+    const QPointer<RecipeRunner> self(this);
+    m_client->move(targets, relative, m.speed, [this, self, serial](const std::optional<dev::RequestError>& err) {
+        if (!self || serial != m_moveSerial || !m_inFlight)
             return;
         if (err && err->kind != dev::RequestError::Kind::Device && err->kind != dev::RequestError::Kind::Invalid) {
             stopRun(linkLostMessage());
@@ -450,6 +464,13 @@ void RecipeRunner::onMoveTimeout()
 {
     if (!m_inFlight || m_inFlight->kind == MoveKind::Dwell)
         return;
+    // The budget is counted on the device's clock (the status carries it), so a
+    // simulator running slower or faster than the wall clock is judged by its own time.
+    const double budgetUs = (m_inFlight->durationS * kMoveTimeFactor + kMoveGraceMs / 1000.0) * 1e6;
+    if (m_client->isReady() && static_cast<double>(m_client->status().deviceTimeUs - std::min(m_moveSentUs, m_client->status().deviceTimeUs)) < budgetUs) {
+        m_moveTimer.start(500);
+        return;
+    }
     // A MotionDone can be lost on a noisy link (events are not retransmitted):
     // the status, polled anyway, says whether the move arrived.
     const auto& st = m_client->status();
@@ -534,8 +555,9 @@ void RecipeRunner::abort()
     }
     setState(RunState::Aborting);
     // Stop at once; once everything is still, lift the tip out of the well.
-    m_client->stop(0, [this, serial](const std::optional<dev::RequestError>&) {
-        if (serial != m_moveSerial || m_state != RunState::Aborting)
+    const QPointer<RecipeRunner> self(this);
+    m_client->stop(0, [this, self, serial](const std::optional<dev::RequestError>&) {
+        if (!self || serial != m_moveSerial || m_state != RunState::Aborting)
             return;
         auto fresh = std::make_shared<int>(0);
         auto conn = std::make_shared<QMetaObject::Connection>();

@@ -89,7 +89,8 @@ public:
     const std::vector<platefiles::OpState>& opStates() const { return m_opStates; }
     QString logPath() const { return m_log.path(); }
     /// The run's per-move watchdog: a MotionDone lost on the link is noticed after
-    /// the move's planned time × this + kMoveGraceMs, and the status decides.
+    /// the move's planned time × this + kMoveGraceMs on the device's clock, and
+    /// the status decides whether the move arrived.
     static constexpr double kMoveTimeFactor = 3.0;
     static constexpr int kMoveGraceMs = 3000;
 
@@ -108,7 +109,7 @@ private:
     void setState(RunState s);
     void beginRunning();
     void nextMove();
-    void sendMove(const plates::MachineMove& m);
+    void sendMove(const plates::MachineMove& planned);
     void moveArrived();
     void onEvent(const dev::DeviceEvent& e);
     void onLinkState(dev::LinkState s);
@@ -145,6 +146,7 @@ private:
     double m_pumpStartUl = 0;  ///< plunger when the op's "pump" line was written
     std::optional<platefiles::RunLogState> m_logState;  ///< the log being resumed, while deciding
     QTimer m_moveTimer, m_dwellTimer;
+    quint64 m_moveSentUs = 0;  ///< device clock when the move in flight was sent
     QElapsedTimer m_clock;
     double m_elapsedBeforeS = 0;    ///< running time of earlier stretches
     double m_plannedDoneS = 0;      ///< planned time of ops closed in this session

@@ -124,6 +124,45 @@ TEST_F(PlateRun, NothingMovesUntilTheRecipeValidatesAndTheMachineIsReady)
     EXPECT_FALSE(QFileInfo::exists(logPath));
 }
 
+TEST_F(PlateRun, TheTipIsNeverLoweredBeforeItIsOverItsWell)
+{
+    // The tip starts high (Z 10, above any plate's safe height) over the front
+    // slot. The first "raise" of the run must not bring it down to the recipe's
+    // safe height there: only the lowering into A1 may go below Z 10.
+    ASSERT_FALSE(s.call([&](auto cb) { s.client.move({{0, 60}, {1, 150}, {2, 10}}, false, 0, cb); }));
+    ASSERT_TRUE(s.waitStill());
+    struct Sent {
+        quint8 mask;
+        std::vector<double> targets;
+    };
+    std::vector<Sent> sent;
+    s.tap.beforeWrite = [&](const QByteArray& bytes) {
+        for (const auto& f : framesIn(bytes))
+            if (f.type == static_cast<std::uint8_t>(proto::MsgType::Move))
+                if (const auto m = proto::decodeMoveRequest(f.payload)) {
+                    Sent x{m->axisMask, {}};
+                    for (auto t : m->targets)
+                        x.targets.push_back(t / 1e6);
+                    sent.push_back(x);
+                }
+    };
+    QString error;
+    ASSERT_TRUE(runner.setPlan(planFor(samplingRecipe("A1"), s.client), QStringLiteral("one"), &error));
+    ASSERT_TRUE(runner.start(logPath, &error)) << error.toStdString();
+    ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Finished; }, 20000));
+    s.tap.beforeWrite = nullptr;
+    const quint8 z = 1u << 2, xy = 0b11;
+    bool overWell = false;
+    for (const Sent& m : sent) {
+        if (m.mask == xy && std::abs(m.targets[0] - 22.38) < 1e-3 && std::abs(m.targets[1] - 19.24) < 1e-3)
+            overWell = true;
+        if (m.mask == z && m.targets[0] > 10 + 1e-6) {
+            EXPECT_TRUE(overWell) << "Z sent to " << m.targets[0] << " before the tip was over A1";
+        }
+    }
+    EXPECT_TRUE(overWell);
+}
+
 TEST_F(PlateRun, PauseWaitsForTheWellUnderWayThenResumeFinishes)
 {
     QString error;

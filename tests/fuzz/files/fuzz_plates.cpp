@@ -34,7 +34,7 @@ std::vector<std::string> recipeSeeds()
     std::vector<std::string> s = fuzzfiles::exampleFiles(".recipe.json");
     s.push_back(R"({"schema":"benchpilot.recipe","version":1,"name":"all",
 "plates":[{"name":"a","slot":"1","labware":"sbs-384","safe_z_mm":55,"depth_z_mm":70},{"name":"b","slot":"2","labware":"sbs-6","safe_z_mm":50,"depth_z_mm":70}],
-"steps":[{"type":"dispense","plate":"a","wells":["A1:P24"],"volume_ul":100,"source":{"plate":"b","well":"A1"},"touch_off_mm":1},
+"steps":[{"type":"dispense","plate":"a","wells":["A1:C4","P24"],"volume_ul":100,"source":{"plate":"b","well":"A1"},"touch_off_mm":1},
 {"type":"mix","plate":"b","wells":"row A","volume_ul":300,"cycles":2},{"type":"air_gap","volume_ul":5},
 {"type":"aspirate","station":"wash","volume_ul":50},{"type":"dispense","station":"waste","volume_ul":40},
 {"type":"touch_off","plate":"a","wells":"column 3","offset_mm":1.5},{"type":"wait","seconds":0.5},
