@@ -107,7 +107,7 @@ TEST(PlateCli, RunRefusesAnInvalidRecipeBeforeConnecting)
 TEST(PlateCli, KilledPartWayAndResumedFromItsLogEveryWellIsDoneOnce)
 {
     PtySimulator sim;
-    ASSERT_TRUE(sim.start(QStringLiteral("analyzer"), 20)) << sim.error().toStdString();
+    ASSERT_TRUE(sim.start(QStringLiteral("analyzer"), kRunTimeScale)) << sim.error().toStdString();
     const QStringList port{QStringLiteral("--port"), sim.link()};
     ProgramRun r = cli(port + QStringList{QStringLiteral("home")});
     ASSERT_EQ(r.exitCode, 0) << r.describe();

@@ -208,7 +208,7 @@ TEST(PlateRunLink, AMotionDoneLostOnTheLinkIsMadeGoodByTheStatus)
     client.setTransport(pair.end(dev::LoopbackPair::A));
     client.connectLink();
     ASSERT_TRUE(waitFor([&] { return client.isReady(); }, 5000));
-    host.setTimeScale(20);
+    host.setTimeScale(kRunTimeScale);
     bool homed = false;
     client.home(0, [&](const auto&) {});
     homed = waitFor(
