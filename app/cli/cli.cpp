@@ -208,7 +208,7 @@ int runCli(const QStringList& rawArgs, QTextStream& out, QTextStream& err)
         return fail(QStringLiteral("benchpilot-cli"), tr("no command given"), topHelp());
     }
     if (top.isSet(helpOption())) {  // "benchpilot-cli --help move" means "move --help"
-        rest.append(QStringLiteral("--help"));  // after any subcommand: "--help pattern plan" is "pattern plan --help"
+        rest.append(QStringLiteral("--help"));  // after any subcommand: "--help recipe run" is "recipe run --help"
     }
     LinkOptions link;
     if (!readLinkOptions(top, link, err, QStringLiteral("benchpilot-cli")))

@@ -87,7 +87,9 @@ bool CliSession::connectDevice()
         transport = serial;
     }
     QString linkError;
-    connect(m_client, &dev::InstrumentClient::linkError, this, [&linkError](const QString& m) {
+    // Only while connecting: the lambda holds a reference to this frame's string
+    // (ASan caught a later link error writing into the dead frame).
+    const auto watch = connect(m_client, &dev::InstrumentClient::linkError, this, [&linkError](const QString& m) {
         if (linkError.isEmpty())
             linkError = m;
     });
@@ -99,6 +101,7 @@ bool CliSession::connectDevice()
             return s == dev::LinkState::Ready || s == dev::LinkState::Disconnected || s == dev::LinkState::Lost;
         },
         kConnectTimeoutMs);
+    disconnect(watch);
     if (finished && m_client->state() == dev::LinkState::Ready)
         return true;
     report(QCoreApplication::translate("cli", "cannot connect to %1: %2")

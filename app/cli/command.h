@@ -104,6 +104,7 @@ void addDeviceCommands(std::vector<Command>& list);
 void addMotionCommands(std::vector<Command>& list);
 void addTuningCommands(std::vector<Command>& list);
 void addPatternCommands(std::vector<Command>& list);
+void addRecipeCommands(std::vector<Command>& list);
 void addCompletionCommand(std::vector<Command>& list);
 
 /// The help texts, also used by the completion script.

@@ -12,6 +12,7 @@ const std::vector<Command>& commands()
         addMotionCommands(l);
         addTuningCommands(l);
         addPatternCommands(l);
+        addRecipeCommands(l);
         addCompletionCommand(l);  // last: it lists the others
         return l;
     }();

@@ -1,5 +1,5 @@
 // benchpilot: the operator and test-bench GUI.
-//   benchpilot [--screenshot FILE --screen NAME [--sim analyzer|stage] [--settle-ms N] [--home-first] [--exercise] [--tune]]
+//   benchpilot [--screenshot FILE --screen NAME [--sim analyzer|stage] [--settle-ms N] [--home-first] [--exercise] [--tune] [--recipe FILE]]
 #include "main_window.h"
 #include "screenshot.h"
 
@@ -32,7 +32,10 @@ int main(int argc, char** argv)
                                 QApplication::translate("main", "screenshot: jog and move the shown instrument so live plots show motion"));
     QCommandLineOption tune(QStringLiteral("tune"),
                             QApplication::translate("main", "screenshot: tune the stage's X axis (relay, then a step test) on the tuning screen"));
-    p.addOptions({shot, screen, sim, settle, script, exercise, tune});
+    QCommandLineOption recipe(QStringLiteral("recipe"),
+                              QApplication::translate("main", "screenshot: open this recipe on the Plates screen, home the analyzer and run it"),
+                              QStringLiteral("file"));
+    p.addOptions({shot, screen, sim, settle, script, exercise, tune, recipe});
     QCoreApplication::setOrganizationName(QStringLiteral("BenchPilot"));
     QCoreApplication::setApplicationName(QStringLiteral("benchpilot"));
     QCoreApplication::setApplicationVersion(QStringLiteral(BP_VERSION));
@@ -69,6 +72,7 @@ int main(int argc, char** argv)
         r.homeFirst = p.isSet(script);
         r.exercise = p.isSet(exercise);
         r.tune = p.isSet(tune);
+        r.recipe = p.value(recipe);
         return app::takeScreenshot(r);
     }
     app::MainWindow w;

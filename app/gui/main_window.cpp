@@ -2,11 +2,13 @@
 
 #include "instrument_session.h"
 #include "motion_screens.h"
+#include "plates_wiring.h"
 #include "device/telemetry/telemetry_hub.h"
 #include "widgets/connection_bar.h"
 #include "widgets/event_log.h"
 #include "widgets/jog_screen.h"
 #include "widgets/message_banner.h"
+#include "widgets/plates/plates_screen.h"
 #include "widgets/plots_screen.h"
 #include "widgets/patterns/pattern_screen.h"
 #include "widgets/profiles_screen.h"
@@ -127,6 +129,11 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
         addScreen(QStringLiteral("joystick"), tr("Joystick"), m_motion->joystickTabs());
         addScreen(QStringLiteral("patterns"), tr("Patterns"), m_motion->patterns());
     }
+    m_plates = new ui::PlatesScreen(m_sessions[0]->client());
+    connect(m_plates, &ui::PlatesScreen::problem, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); });
+    connect(m_plates, &ui::PlatesScreen::note, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Info, m); });
+    wirePlatesScreen(m_plates, this, m_options);
+    addScreen(QStringLiteral("plates"), tr("Plates"), m_plates);
     connect(m_nav, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
     m_nav->setCurrentRow(0);
 
@@ -354,6 +361,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
         s->client()->stopAllJogs();
     if (m_options.persistSettings)
         saveSettings();
+    savePlatesSettings(m_plates, m_options);
     QMainWindow::closeEvent(event);
 }
 

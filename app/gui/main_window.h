@@ -20,6 +20,7 @@ class JogScreen;
 class MessageBanner;
 class PlotsScreen;
 class TuningScreen;
+class PlatesScreen;
 } // namespace ui
 
 namespace app {
@@ -50,6 +51,7 @@ public:
     ui::TuningScreen* tuningScreen() { return m_tuning; }
     /// The Joystick and Patterns screens (motion_screens.h).
     MotionScreens* motionScreens() { return m_motion; }
+    ui::PlatesScreen* platesScreen() { return m_plates; }
     tele::TelemetryHub* telemetry() { return m_hub; }
     ui::MessageBanner* banner() { return m_banner; }
     ui::EventLog* eventLog() { return m_log; }
@@ -77,6 +79,7 @@ private:
     tele::TelemetryHub* m_hub;  ///< every instrument's telemetry, for the plots
     ui::PlotsScreen* m_plots;
     ui::TuningScreen* m_tuning;
+    ui::PlatesScreen* m_plates;
     ui::ConnectionBar* m_bars[2];
     ui::JogScreen* m_jog[2];
     QTabWidget* m_jogTabs;

@@ -10,6 +10,8 @@
 #include "device/jobs/pattern_runner.h"
 #include "widgets/joystick/joystick_screen.h"
 #include "widgets/patterns/pattern_screen.h"
+#include "device/link/simulated_link.h"
+#include "widgets/plates/plates_screen.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>
@@ -131,6 +133,32 @@ int takeScreenshot(const ScreenshotRequest& r)
         spinUntil([&] { return !t->runner()->busy(); }, 30000);
         t->tabs()->setCurrentWidget(qEnvironmentVariableIsSet("BP_SHOT_STEP_TAB") ? static_cast<QWidget*>(t->stepTests())
                                                                                   : static_cast<QWidget*>(t->assistant()));
+    }
+    if (!r.recipe.isEmpty()) {
+        // The Plates screen at work: the recipe open, the analyzer homed (on an
+        // unpaced link with a faster clock, to be quick) and part-way through it.
+        ui::PlatesScreen* plates = w.platesScreen();
+        if (!plates->openRecipe(r.recipe)) {
+            std::fprintf(stderr, "benchpilot: cannot open %s\n", qPrintable(r.recipe));
+            return 2;
+        }
+        ui::ConnectionChoice fast;
+        fast.simulator = true;
+        fast.baud = 0;
+        w.analyzer()->connectTo(fast);
+        dev::InstrumentClient* c = w.analyzer()->client();
+        if (!spinUntil([&] { return c->isReady(); }, 5000))
+            return 3;
+        auto* link = qobject_cast<dev::SimulatedLink*>(w.analyzer()->link());
+        if (link)
+            link->host().setTimeScale(20);
+        c->home(0);
+        spin(300);
+        spinUntil([&] { return !c->status().anyMoving(); }, 30000);
+        if (link)
+            link->host().setTimeScale(4);
+        if (!plates->runRecipe())
+            return 2;
     }
     spin(r.settleMs);
     if (!w.grab().save(r.file)) {

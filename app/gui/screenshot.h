@@ -11,6 +11,7 @@ struct ScreenshotRequest {
     bool homeFirst = false;  ///< home and move the shown instrument so the picture shows a working machine
     bool exercise = false;   ///< jog, then move the shown instrument, so live plots show motion
     bool tune = false;       ///< tuning screen: home the stage, tune X with the relay, run a step test
+    QString recipe;          ///< plates: open this recipe, home the analyzer and run it while settling
 };
 
 /// Renders one screen of a fresh main window (simulated instruments, no saved

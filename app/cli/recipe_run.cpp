@@ -1,0 +1,224 @@
+// benchpilot-cli recipe run: a recipe on the analyzer through jobs::RecipeRunner,
+// a line per well, resumable from its run log. Ctrl+C (or SIGTERM) aborts
+// cleanly: the machine stops, the tip rises, the log says where it stopped.
+#include "cli_session.h"
+#include "recipe_setup.h"
+
+#include "device/jobs/recipe_runner.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QRegularExpression>
+#include <QSocketNotifier>
+
+#include <csignal>
+#include <cmath>
+#include <sys/socket.h>
+#include <unistd.h>
+
+namespace cli {
+namespace {
+
+QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+
+int g_signalPipe[2] = {-1, -1};
+void onSignal(int)
+{
+    const char c = 1;
+    [[maybe_unused]] const auto n = ::write(g_signalPipe[1], &c, 1);
+}
+
+/// SIGINT / SIGTERM call `abort` on the event loop while alive.
+class AbortOnSignal {
+public:
+    explicit AbortOnSignal(const std::function<void()>& abort)
+    {
+        if (::socketpair(AF_UNIX, SOCK_STREAM, 0, g_signalPipe) != 0)
+            return;
+        m_notifier = std::make_unique<QSocketNotifier>(g_signalPipe[0], QSocketNotifier::Read);
+        QObject::connect(m_notifier.get(), &QSocketNotifier::activated, m_notifier.get(), [abort] {
+            char c;
+            [[maybe_unused]] const auto n = ::read(g_signalPipe[0], &c, 1);
+            abort();
+        });
+        m_oldInt = std::signal(SIGINT, onSignal);
+        m_oldTerm = std::signal(SIGTERM, onSignal);
+    }
+    ~AbortOnSignal()
+    {
+        if (!m_notifier)
+            return;
+        std::signal(SIGINT, m_oldInt);
+        std::signal(SIGTERM, m_oldTerm);
+        m_notifier.reset();
+        ::close(g_signalPipe[0]);
+        ::close(g_signalPipe[1]);
+        g_signalPipe[0] = g_signalPipe[1] = -1;
+    }
+
+private:
+    std::unique_ptr<QSocketNotifier> m_notifier;
+    void (*m_oldInt)(int) = SIG_DFL;
+    void (*m_oldTerm)(int) = SIG_DFL;
+};
+
+QString clock(double s)
+{
+    const long t = std::lround(std::max(0.0, s));
+    return QStringLiteral("%1:%2").arg(t / 60).arg(t % 60, 2, 10, QLatin1Char('0'));
+}
+
+void jsonLine(QTextStream& out, const QJsonObject& o)
+{
+    out << QJsonDocument(o).toJson(QJsonDocument::Compact) << "\n";
+    out.flush();
+}
+
+} // namespace
+
+int runRecipe(Invocation& inv)
+{
+    const bool resuming = inv.isSet(QStringLiteral("resume"));
+    if (resuming && inv.isSet(QStringLiteral("log")))
+        return inv.usage(tr("give --log for a new run or --resume for one to continue, not both"));
+    const QString interrupted = inv.value(QStringLiteral("interrupted"));
+    if (!interrupted.isEmpty() && interrupted != QLatin1String("skip") && interrupted != QLatin1String("redo"))
+        return inv.usage(tr("--interrupted must be skip or redo (got '%1')").arg(interrupted));
+    RecipeSetup setup;
+    if (int rc = loadSetup(inv, &setup))
+        return rc;
+    const platefiles::LoadedRecipe& l = setup.loaded;
+    if (!l.ok()) {
+        reportInvalid(inv, l);
+        return inv.usage(tr("%1 does not validate: nothing moved").arg(l.path));
+    }
+    QString logPath;
+    if (resuming) {
+        logPath = inv.value(QStringLiteral("resume"));
+        if (!QFileInfo::exists(logPath))
+            return inv.usage(tr("no run log %1 to resume").arg(logPath));
+    } else if (inv.isSet(QStringLiteral("log"))) {
+        logPath = inv.value(QStringLiteral("log"));
+    } else {
+        QString stem = QFileInfo(l.path).fileName();
+        stem.remove(QRegularExpression(QStringLiteral("(\\.recipe)?\\.json$")));
+        logPath = QStringLiteral("%1-%2.run.jsonl").arg(stem, QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")));
+    }
+    if (!resuming && QFileInfo::exists(logPath))
+        return inv.usage(tr("%1 exists: a run log is never overwritten (continue it with --resume, or name another with --log)").arg(logPath));
+
+    CliSession* s = inv.session();
+    if (!s)
+        return LinkTrouble;
+    dev::InstrumentClient* c = s->client();
+    if (inv.isSet(QStringLiteral("home"))) {
+        if (int rc = s->request([&](auto cb) { c->home(0, cb); }, tr("home")))
+            return rc;
+        if (int rc = s->waitUntilStill(tr("home")))
+            return rc;
+    }
+    // After a killed run the analyzer may still finish the move it had: wait for
+    // two fresh status polls that show it still.
+    int fresh = 0;
+    auto conn = QObject::connect(c, &dev::InstrumentClient::statusChanged, s, [&fresh] { ++fresh; });
+    spinUntil([&] { return c->state() != dev::LinkState::Ready || (fresh >= 2 && !c->status().anyMoving()); }, 30000);
+    QObject::disconnect(conn);
+
+    plates::StartState start;
+    const auto& axes = c->status().axes;
+    if (axes.size() >= 4)
+        start = {axes[0].commanded, axes[1].commanded, axes[2].commanded, axes[3].commanded};
+    if (resuming)
+        start = jobs::RecipeRunner::resumeStart(logPath, *c);
+    const plates::RecipePlan plan = plates::planRecipe(l.recipe, l.context, start);
+    jobs::RecipeRunner runner(c);
+    QString error;
+    const QString name = QString::fromStdString(l.recipe.name.empty() ? QFileInfo(l.path).fileName().toStdString() : l.recipe.name);
+    if (!runner.setPlan(plan, name, &error))
+        return inv.refused(error);
+
+    QTextStream& out = inv.out();
+    QObject::connect(&runner, &jobs::RecipeRunner::message, &runner, [&](const QString& text, bool problem) {
+        if (inv.json())
+            jsonLine(out, QJsonObject{{QStringLiteral("event"), problem ? QStringLiteral("problem") : QStringLiteral("note")},
+                                      {QStringLiteral("text"), text}});
+        else
+            (problem ? inv.err() : out) << text << "\n";
+        inv.err().flush();
+        out.flush();
+    });
+    QObject::connect(&runner, &jobs::RecipeRunner::opFinished, &runner, [&](int op) {
+        const jobs::RunProgress p = runner.progress();
+        const plates::PlanOp& o = plan.ops[static_cast<std::size_t>(op)];
+        if (inv.json()) {
+            QJsonObject line{{QStringLiteral("event"), QStringLiteral("done")},
+                             {QStringLiteral("op"), op},
+                             {QStringLiteral("kind"), QString::fromLatin1(plates::stepTypeName(o.type))},
+                             {QStringLiteral("volume_ul"), o.volumeUl},
+                             {QStringLiteral("ops_done"), p.opsDone},
+                             {QStringLiteral("ops"), p.opsTotal},
+                             {QStringLiteral("elapsed_s"), p.elapsedS},
+                             {QStringLiteral("eta_s"), p.etaS}};
+            if (!o.well.empty()) {
+                line.insert(QStringLiteral("plate"), QString::fromStdString(o.plate));
+                line.insert(QStringLiteral("well"), QString::fromStdString(o.well));
+            }
+            jsonLine(out, line);
+        } else {
+            out << QStringLiteral("[%1/%2] %3 · %4 elapsed · ETA %5\n")
+                       .arg(p.opsDone, QString::number(p.opsTotal).size())
+                       .arg(p.opsTotal)
+                       .arg(QString::fromStdString(o.label()), clock(p.elapsedS), clock(p.etaS));
+            out.flush();
+        }
+    });
+
+    bool needDecision = false;
+    const jobs::InterruptedDecider decide = [&](const jobs::InterruptedOp& op) {
+        inv.report(tr("%1 was interrupted after its plunger move was sent: %2").arg(op.label, op.evidence));
+        if (interrupted == QLatin1String("skip"))
+            return jobs::InterruptedChoice::Skip;
+        if (interrupted == QLatin1String("redo"))
+            return jobs::InterruptedChoice::Redo;
+        needDecision = true;
+        return jobs::InterruptedChoice::Cancel;
+    };
+    AbortOnSignal onSignal([&runner, &inv] {
+        inv.report(tr("interrupted: aborting (the tip rises, the log can resume)"));
+        runner.abort();
+    });
+    const bool started = resuming ? runner.resumeFromLog(logPath, decide, &error) : runner.start(logPath, &error);
+    if (!started) {
+        if (needDecision)
+            return inv.usage(tr("not resumed: say --interrupted=skip (count the well as done) or --interrupted=redo (do it again)"));
+        return inv.refused(error);
+    }
+    if (!inv.json())
+        out << tr("log: %1").arg(logPath) << "\n";
+    out.flush();
+    spinUntil([&] { return runner.state() == jobs::RunState::Finished || runner.state() == jobs::RunState::Stopped; }, INT32_MAX);
+    const jobs::RunProgress p = runner.progress();
+    const bool finished = runner.state() == jobs::RunState::Finished;
+    if (inv.json())
+        jsonLine(out, QJsonObject{{QStringLiteral("event"), finished ? QStringLiteral("finished") : QStringLiteral("stopped")},
+                                  {QStringLiteral("ops_done"), p.opsDone},
+                                  {QStringLiteral("ops"), p.opsTotal},
+                                  {QStringLiteral("elapsed_s"), p.elapsedS},
+                                  {QStringLiteral("log"), logPath}});
+    if (finished) {
+        if (!inv.json())
+            out << tr("finished: %1 of %2 wells in %3").arg(p.opsDone).arg(p.opsTotal).arg(clock(p.elapsedS)) << "\n";
+        out.flush();
+        return Ok;
+    }
+    inv.report(tr("stopped after %1 of %2 wells; continue with: benchpilot-cli recipe run %3 --resume %4")
+                   .arg(p.opsDone)
+                   .arg(p.opsTotal)
+                   .arg(l.path, logPath));
+    return c->state() == dev::LinkState::Ready ? Refused : LinkTrouble;
+}
+
+} // namespace cli

@@ -1,0 +1,65 @@
+#include "recipe_setup.h"
+
+#include "device/files/plates/calibration_file.h"
+#include "device/files/plates/deck_file.h"
+#include "device/files/plates/plate_paths.h"
+#include "device/files/text_file.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+
+namespace cli {
+namespace {
+QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+} // namespace
+
+QList<QCommandLineOption> recipeSetupOptions()
+{
+    return {QCommandLineOption(QStringLiteral("deck"), tr("the deck definition (default: the built-in analyzer deck)"), QStringLiteral("FILE")),
+            QCommandLineOption(QStringLiteral("calibration"),
+                               tr("slot calibration (default: the one the GUI keeps, %1); \"none\" for the nominal slots")
+                                   .arg(platefiles::defaultCalibrationPath()),
+                               QStringLiteral("FILE"))};
+}
+
+int loadSetup(Invocation& inv, RecipeSetup* setup)
+{
+    const QStringList args = inv.arguments();
+    if (args.size() != 1)
+        return inv.usage(tr("name one recipe file"));
+    std::string text;
+    QString error;
+    if (inv.isSet(QStringLiteral("deck"))) {
+        const QString deckPath = inv.value(QStringLiteral("deck"));
+        if (!files::readText(deckPath, &text, &error))
+            return inv.usage(error);
+        const platefiles::DeckRead d = platefiles::parseDeck(text);
+        if (!d.deck)
+            return inv.usage(QString::fromStdString(d.problems.format(QFileInfo(deckPath).fileName().toStdString())).trimmed());
+        setup->deck = *d.deck;
+    } else {
+        setup->deck = platefiles::builtinDeck();
+    }
+    const QString cal = inv.isSet(QStringLiteral("calibration")) ? inv.value(QStringLiteral("calibration")) : platefiles::defaultCalibrationPath();
+    if (cal != QLatin1String("none") && (inv.isSet(QStringLiteral("calibration")) || QFileInfo::exists(cal))) {
+        if (!files::readText(cal, &text, &error))
+            return inv.usage(error);
+        const platefiles::CalibrationRead c = platefiles::parseCalibration(text);
+        if (!c.ok())
+            return inv.usage(QString::fromStdString(c.problems.format(QFileInfo(cal).fileName().toStdString())).trimmed());
+        setup->calibration = c.calibrations;
+        setup->calibrationPath = cal;
+    }
+    setup->loaded = platefiles::loadRecipe(args.front(), setup->deck, setup->calibration);
+    return 0;
+}
+
+int reportInvalid(Invocation& inv, const platefiles::LoadedRecipe& loaded)
+{
+    for (const QString& m : loaded.messages)
+        inv.err() << m << "\n";
+    inv.err().flush();
+    return Usage;
+}
+
+} // namespace cli

@@ -1,0 +1,67 @@
+#include "plates_wiring.h"
+
+#include "main_window.h"
+#include "device/files/plates/plate_paths.h"
+#include "widgets/plates/plates_screen.h"
+
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
+
+namespace app {
+
+namespace {
+jobs::InterruptedChoice askAboutInterrupted(QWidget* window, const jobs::InterruptedOp& op)
+{
+    QMessageBox box(QMessageBox::Warning, QObject::tr("A well was interrupted"),
+                    QObject::tr("The run stopped during \"%1\", after its plunger move had been sent.\n\n%2.\n\n"
+                                "Skip counts the well as done; Do again repeats it in full.")
+                        .arg(op.label, op.evidence),
+                    QMessageBox::NoButton, window);
+    auto* skip = box.addButton(QObject::tr("Skip"), QMessageBox::AcceptRole);
+    auto* redo = box.addButton(QObject::tr("Do again"), QMessageBox::DestructiveRole);
+    box.addButton(QMessageBox::Cancel);
+    box.exec();
+    if (box.clickedButton() == skip)
+        return jobs::InterruptedChoice::Skip;
+    if (box.clickedButton() == redo)
+        return jobs::InterruptedChoice::Redo;
+    return jobs::InterruptedChoice::Cancel;
+}
+} // namespace
+
+void wirePlatesScreen(ui::PlatesScreen* screen, QWidget* window, const MainWindowOptions& options)
+{
+    screen->setFileChooser([window, screen](const QString& title, const QString& filter, bool save) {
+        const QString dir = screen->recipePath().isEmpty() ? QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation)
+                                                            : QFileInfo(screen->recipePath()).absolutePath();
+        return save ? QFileDialog::getSaveFileName(window, title, dir, filter) : QFileDialog::getOpenFileName(window, title, dir, filter);
+    });
+    if (options.confirmDialogs) {
+        screen->setConfirm([window](const QString& q) {
+            return QMessageBox::question(window, QObject::tr("Confirm"), q, QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
+                == QMessageBox::Yes;
+        });
+        // Asked only from the Resume buttons (never from a device signal).
+        screen->setInterruptedDecider([window](const jobs::InterruptedOp& op) { return askAboutInterrupted(window, op); });
+    }
+    if (!options.persistSettings)
+        return;
+    // The same places as benchpilot-cli's defaults: both see one calibration.
+    screen->setRunLogDirectory(platefiles::defaultRunLogDirectory());
+    screen->setCalibrationFile(platefiles::defaultCalibrationPath());
+    const QString last = QSettings().value(QStringLiteral("plates/recipe")).toString();
+    if (!last.isEmpty() && QFileInfo::exists(last))
+        screen->openRecipe(last);
+}
+
+void savePlatesSettings(ui::PlatesScreen* screen, const MainWindowOptions& options)
+{
+    if (options.persistSettings && !screen->recipePath().isEmpty())
+        QSettings().setValue(QStringLiteral("plates/recipe"), screen->recipePath());
+}
+
+} // namespace app

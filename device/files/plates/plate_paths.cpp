@@ -1,0 +1,16 @@
+#include "device/files/plates/plate_paths.h"
+
+#include <QDir>
+#include <QStandardPaths>
+
+namespace platefiles {
+
+namespace {
+QString base() { return QDir(QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation)).filePath(QStringLiteral("BenchPilot")); }
+} // namespace
+
+QString defaultCalibrationPath() { return QDir(base()).filePath(QStringLiteral("analyzer.calibration.json")); }
+
+QString defaultRunLogDirectory() { return QDir(base()).filePath(QStringLiteral("runs")); }
+
+} // namespace platefiles

@@ -1,0 +1,39 @@
+#pragma once
+// A recipe file and everything it needs to run: the labware it names (built in
+// or files beside it), the deck, the slots' calibration. What `recipe validate`,
+// `recipe plan`, `recipe run` and the Plates screen all open a recipe with.
+#include "device/files/recipes/recipe_file.h"
+#include "motion/plans/plates/calibration.h"
+
+#include <QString>
+#include <QStringList>
+
+#include <vector>
+
+namespace platefiles {
+
+struct LoadedRecipe {
+    QString path;
+    plates::Recipe recipe;
+    plates::PlanContext context;
+    plates::RecipePlan plan;      ///< from the machine's start (0, 0, 0, 0) unless re-planned
+    QStringList messages;         ///< "FILE:LINE:COL: PATH: MESSAGE", errors and warnings, files in order
+    bool readable = false;        ///< the recipe's form was right: `recipe` is the file
+    int errorCount = 0;
+    bool ok() const { return readable && errorCount == 0; }
+};
+
+/// Reads `path`, the labware files it names, and plans it on `deck` with the
+/// `calibration` it finds for its slots. Never throws; everything wrong is in
+/// `messages` (a file that cannot be read included).
+LoadedRecipe loadRecipe(const QString& path, const plates::Deck& deck, const std::vector<plates::SlotCalibration>& calibration);
+
+/// Fills `context.labware` for the plates of `recipe`: built-in ids, and labware
+/// files (ours or Opentrons) relative to `baseDir`. Problems go to `messages`;
+/// returns how many errors.
+int resolveLabware(const plates::Recipe& recipe, const QString& baseDir, plates::PlanContext& context, QStringList* messages);
+
+/// Formats problems as lines "FILE:LINE:COL: PATH: MESSAGE"; counts the errors (not warnings).
+QStringList formatProblems(const jsonio::Problems& problems, const QString& fileName, int* errors);
+
+} // namespace platefiles

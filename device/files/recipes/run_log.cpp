@@ -1,0 +1,141 @@
+#include "device/files/recipes/run_log.h"
+
+namespace platefiles {
+
+using jsonio::ObjectReader;
+using jsonio::Value;
+
+int RunLogState::doneCount() const
+{
+    int n = 0;
+    for (const OpRecord& r : ops)
+        n += r.state == OpState::Done || r.state == OpState::Skipped;
+    return n;
+}
+
+int RunLogState::firstOpenOp() const
+{
+    for (std::size_t i = 0; i < ops.size(); ++i)
+        if (ops[i].state != OpState::Done && ops[i].state != OpState::Skipped)
+            return static_cast<int>(i);
+    return opCount;
+}
+
+RunLogState readRunLog(std::string_view text)
+{
+    RunLogState st;
+    int lineNo = 0;
+    std::size_t from = 0;
+    bool header = false;
+    while (from < text.size()) {
+        std::size_t end = text.find('\n', from);
+        const bool last = end == std::string_view::npos;
+        if (last)
+            end = text.size();
+        const std::string_view line = text.substr(from, end - from);
+        from = end + 1;
+        ++lineNo;
+        if (line.empty())
+            continue;
+        auto at = [&](const jsonio::Position& p) { return jsonio::Position{lineNo, p.column}; };
+        jsonio::ParseResult parsed = jsonio::parse(line);
+        if (!parsed) {
+            if (last) {
+                st.tornTail = true;  // written up to a crash: the line never completed
+                break;
+            }
+            st.problems.add(at(parsed.error.position), "", parsed.error.message);
+            continue;
+        }
+        const Value& v = *parsed.value;
+        jsonio::Problems local;
+        ObjectReader o(v, "", local);
+        const auto event = o.oneOf("event", true, {"run", "resume", "start", "pump", "done", "skip", "redo", "stop", "finished"});
+        if (event && *event == "run") {
+            if (header)
+                local.add(v, "event", "a second run header: one log holds one run and its resumptions");
+            jsonio::checkSchema(v, kRunLogSchema, kRunLogVersion, local);
+            o.refuseUnknown({"schema", "version", "event", "recipe", "fingerprint", "ops", "p_ul", "time"});
+            st.startPumpUl = o.number("p_ul", false, -1e9, 1e9);
+            st.recipe = o.string("recipe", false).value_or("");
+            st.fingerprint = o.string("fingerprint", true).value_or("");
+            st.opCount = static_cast<int>(o.integer("ops", true, 0, 1000000).value_or(0));
+            st.ops.assign(static_cast<std::size_t>(st.opCount), OpRecord{});
+            header = true;
+            ++st.runs;
+        } else if (event && !header) {
+            local.add(v, "event", "the log must begin with its \"run\" header");
+        } else if (event) {
+            o.refuseUnknown({"event", "op", "time", "kind", "step", "plate", "well", "station", "volume_ul", "p_ul", "reason"});
+            o.string("time", false);
+            const bool perOp = *event == "start" || *event == "pump" || *event == "done" || *event == "skip" || *event == "redo";
+            long long opIndex = -1;
+            if (perOp) {
+                opIndex = o.integer("op", true, 0, 1000000).value_or(-1);
+                if (opIndex >= 0 && static_cast<std::size_t>(opIndex) >= st.ops.size()) {
+                    local.add(*v.find("op"), "op", "op " + std::to_string(opIndex) + " is beyond the " + std::to_string(st.ops.size())
+                                                       + " ops of the header");
+                    opIndex = -1;
+                }
+            }
+            const std::string opText = std::to_string(opIndex);
+            const auto pUl = o.number("p_ul", false, -1e9, 1e9);
+            if (*event == "resume") {
+                ++st.runs;
+                st.finished = false;
+            } else if (*event == "stop") {
+                st.lastStop = o.string("reason", false).value_or("");
+            } else if (*event == "finished") {
+                st.finished = true;
+            } else if (opIndex >= 0 && local.empty()) {
+                OpRecord& r = st.ops[static_cast<std::size_t>(opIndex)];
+                const bool closed = r.state == OpState::Done || r.state == OpState::Skipped;
+                if (*event == "start") {
+                    if (closed)
+                        local.add(v, "op", "op " + opText + " starts again after it was done: the log is not trustworthy");
+                    r.state = OpState::Started;
+                    r.kind = o.string("kind", false).value_or("");
+                    r.plate = o.string("plate", false).value_or("");
+                    r.well = o.string("well", false).value_or("");
+                    r.station = o.string("station", false).value_or("");
+                    r.volumeUl = o.number("volume_ul", false, -1e9, 1e9).value_or(0);
+                    o.integer("step", false, 0, 1000000);
+                    r.pumpStartUl.reset();
+                    r.pumpEndUl.reset();
+                    ++r.starts;
+                } else if (*event == "pump") {
+                    if (r.state != OpState::Started)
+                        local.add(v, "op", "a pump line for op " + opText + ", which has not started");
+                    r.state = OpState::Interrupted;
+                    r.pumpStartUl = pUl;
+                } else if (*event == "done") {
+                    if (r.state != OpState::Started && r.state != OpState::Interrupted)
+                        local.add(v, "op", "op " + opText + " is done but was not under way");
+                    r.state = OpState::Done;
+                    r.pumpEndUl = pUl;
+                    if (pUl)
+                        st.lastPumpUl = pUl;
+                } else if (*event == "skip") {
+                    if (r.state != OpState::Interrupted)
+                        local.add(v, "op", "only an interrupted op can be skipped (op " + opText + ")");
+                    r.state = OpState::Skipped;
+                    o.string("reason", false);
+                    if (pUl)
+                        st.lastPumpUl = pUl;
+                } else {  // redo: informational; the next start line begins it again
+                    o.string("reason", false);
+                }
+                r.line = lineNo;
+            }
+        }
+        for (const jsonio::Problem& p : local.list())
+            st.problems.add(at(p.position), p.path, p.message);
+        if (st.problems.size() > 100)
+            break;
+    }
+    if (!header && st.problems.empty())
+        st.problems.add(jsonio::Position{1, 1}, "", text.empty() ? "the log is empty" : "the log has no \"run\" header");
+    return st;
+}
+
+} // namespace platefiles

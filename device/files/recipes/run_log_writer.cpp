@@ -1,0 +1,67 @@
+#include "device/files/recipes/run_log_writer.h"
+
+#include <QDateTime>
+#include <QFile>
+
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <unistd.h>
+
+namespace platefiles {
+
+RunLogWriter::~RunLogWriter() { close(); }
+
+bool RunLogWriter::open(const QString& path, int flags, QString* error)
+{
+    close();
+    const QByteArray name = QFile::encodeName(path);
+    m_fd = ::open(name.constData(), flags | O_WRONLY | O_APPEND | O_CLOEXEC, 0644);
+    if (m_fd < 0) {
+        m_error = QStringLiteral("cannot open the run log %1: %2").arg(path, QString::fromLocal8Bit(std::strerror(errno)));
+        if (error)
+            *error = m_error;
+        return false;
+    }
+    m_path = path;
+    return true;
+}
+
+bool RunLogWriter::create(const QString& path, QString* error) { return open(path, O_CREAT | O_EXCL, error); }
+
+bool RunLogWriter::append(const QString& path, QString* error) { return open(path, 0, error); }
+
+void RunLogWriter::close()
+{
+    if (m_fd >= 0)
+        ::close(m_fd);
+    m_fd = -1;
+}
+
+bool RunLogWriter::write(jsonio::Value line)
+{
+    if (m_fd < 0) {
+        m_error = QStringLiteral("the run log is not open");
+        return false;
+    }
+    line.set("time", QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs).toStdString());
+    const std::string text = jsonio::write(line, false) + "\n";
+    std::size_t done = 0;
+    while (done < text.size()) {
+        const ssize_t n = ::write(m_fd, text.data() + done, text.size() - done);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0) {
+            m_error = QStringLiteral("cannot write the run log %1: %2").arg(m_path, QString::fromLocal8Bit(std::strerror(errno)));
+            return false;
+        }
+        done += static_cast<std::size_t>(n);
+    }
+    if (::fsync(m_fd) != 0) {
+        m_error = QStringLiteral("cannot sync the run log %1 to disk: %2").arg(m_path, QString::fromLocal8Bit(std::strerror(errno)));
+        return false;
+    }
+    return true;
+}
+
+} // namespace platefiles

@@ -1,0 +1,39 @@
+#pragma once
+// Appends run-log lines (run_log.h) and makes each durable before returning:
+// write, then fsync. A recipe run writes a line before it commands what the
+// line announces, so whatever the log says happened may have; whatever it does
+// not say did not.
+#include "device/files/json.h"
+
+#include <QString>
+
+namespace platefiles {
+
+class RunLogWriter {
+public:
+    RunLogWriter() = default;
+    ~RunLogWriter();
+    RunLogWriter(const RunLogWriter&) = delete;
+    RunLogWriter& operator=(const RunLogWriter&) = delete;
+
+    /// A new log: refuses to overwrite an existing file (a log is a record).
+    bool create(const QString& path, QString* error);
+    /// An existing log, to continue it.
+    bool append(const QString& path, QString* error);
+    void close();
+    bool isOpen() const { return m_fd >= 0; }
+    QString path() const { return m_path; }
+    QString lastError() const { return m_error; }
+
+    /// One JSON object as one line; the time ("time") is added here. False (and
+    /// lastError()) when the disk refused: a run must stop then.
+    bool write(jsonio::Value line);
+
+private:
+    bool open(const QString& path, int flags, QString* error);
+    int m_fd = -1;
+    QString m_path;
+    QString m_error;
+};
+
+} // namespace platefiles

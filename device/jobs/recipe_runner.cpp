@@ -1,0 +1,598 @@
+#include "device/jobs/recipe_runner.h"
+
+#include "device/files/text_file.h"
+
+#include <QFileInfo>
+#include <QPointer>
+
+#include <algorithm>
+#include <cmath>
+
+namespace jobs {
+
+using plates::MachineMove;
+using plates::MoveKind;
+using platefiles::OpState;
+
+namespace {
+constexpr double kSameMm = 1e-6;
+
+bool active(RunState s) { return s == RunState::Running || s == RunState::Pausing || s == RunState::Aborting; }
+bool closed(OpState s) { return s == OpState::Done || s == OpState::Skipped; }
+QString mm(double v) { return QString::number(v, 'f', 2); }
+} // namespace
+
+QString runStateName(RunState s)
+{
+    switch (s) {
+    case RunState::Idle: return RecipeRunner::tr("idle");
+    case RunState::Running: return RecipeRunner::tr("running");
+    case RunState::Pausing: return RecipeRunner::tr("pausing after this well");
+    case RunState::Paused: return RecipeRunner::tr("paused");
+    case RunState::Aborting: return RecipeRunner::tr("aborting");
+    case RunState::Stopped: return RecipeRunner::tr("stopped");
+    case RunState::Finished: return RecipeRunner::tr("finished");
+    }
+    return {};
+}
+
+RecipeRunner::RecipeRunner(dev::InstrumentClient* client, QObject* parent) : QObject(parent), m_client(client)
+{
+    qRegisterMetaType<jobs::RunState>();
+    m_moveTimer.setSingleShot(true);
+    m_dwellTimer.setSingleShot(true);
+    connect(&m_moveTimer, &QTimer::timeout, this, &RecipeRunner::onMoveTimeout);
+    connect(&m_dwellTimer, &QTimer::timeout, this, [this] {
+        if (m_inFlight && m_inFlight->kind == MoveKind::Dwell)
+            moveArrived();
+    });
+    m_events = connect(client, &dev::InstrumentClient::eventReceived, this, &RecipeRunner::onEvent);
+    m_link = connect(client, &dev::InstrumentClient::stateChanged, this, &RecipeRunner::onLinkState);
+}
+
+RecipeRunner::~RecipeRunner()
+{
+    disconnect(m_events);
+    disconnect(m_link);
+}
+
+int RecipeRunner::axis(char letter) const { return m_client->identity().axisIndex(QChar::fromLatin1(letter)); }
+
+double RecipeRunner::plungerNow() const
+{
+    const int p = axis('P');
+    return p >= 0 && p < m_client->status().axes.size() ? m_client->status().axes[p].commanded : 0.0;
+}
+
+bool RecipeRunner::setPlan(const plates::RecipePlan& plan, const QString& recipeName, QString* error)
+{
+    if (active(m_state) || m_state == RunState::Paused) {
+        *error = tr("a run is under way: abort it before changing the recipe");
+        return false;
+    }
+    if (!plan.ok()) {
+        for (const auto& p : plan.problems)
+            if (!p.warning) {
+                *error = tr("the recipe does not validate: %1: %2").arg(QString::fromStdString(p.path), QString::fromStdString(p.message));
+                break;
+            }
+        return false;
+    }
+    m_plan = plan;
+    m_recipeName = recipeName;
+    m_opStates.assign(plan.ops.size(), OpState::NotStarted);
+    m_op = -1;
+    m_log.close();
+    setState(RunState::Idle);
+    emit progressChanged();
+    return true;
+}
+
+bool RecipeRunner::checkMachine(QString* error) const
+{
+    if (!m_client->isReady()) {
+        *error = tr("the analyzer is not connected");
+        return false;
+    }
+    const auto& id = m_client->identity();
+    if (id.kind != proto::DeviceKind::Analyzer || axis('X') < 0 || axis('Y') < 0 || axis('Z') < 0 || axis('P') < 0) {
+        *error = tr("recipes run on the analyzer (axes X, Y, Z and the pump P); this is the %1").arg(id.kindName());
+        return false;
+    }
+    const auto& st = m_client->status();
+    if (st.estop) {
+        *error = tr("the E-stop is latched: reset it before running");
+        return false;
+    }
+    for (char c : {'X', 'Y', 'Z', 'P'}) {
+        const int i = axis(c);
+        if (i >= st.axes.size() || !st.axes[i].homed) {
+            *error = tr("axis %1 is not homed: home the analyzer first (a recipe moves to absolute positions)").arg(QLatin1Char(c));
+            return false;
+        }
+    }
+    if (st.anyMoving()) {
+        *error = tr("the analyzer is still moving: wait until it is still");
+        return false;
+    }
+    return true;
+}
+
+bool RecipeRunner::preflight(QString* error) const
+{
+    // Every target of the ops still to do against the device's soft limits, so a
+    // run never stops half-way on a refusal it could have foreseen.
+    const auto& limits = m_client->softLimits();
+    const int ix = axis('X'), iy = axis('Y'), iz = axis('Z'), ip = axis('P');
+    if (limits.size() <= std::max({ix, iy, iz, ip}))
+        return true;  // not known yet: the device still refuses what is out of range
+    auto outside = [&](int a, double v) { return v < limits[a].min - 1e-6 || v > limits[a].max + 1e-6; };
+    auto range = [&](int a) { return QStringLiteral("%1–%2").arg(mm(limits[a].min), mm(limits[a].max)); };
+    double p = plungerNow(), pMin = p, pMax = p;
+    for (std::size_t k = static_cast<std::size_t>(std::max(0, nextOpenOp(0))); k < m_plan.ops.size(); ++k) {
+        const plates::PlanOp& op = m_plan.ops[k];
+        if (closed(m_opStates[k]))
+            continue;
+        const QString what = QString::fromStdString(op.label());
+        for (const MachineMove& m : op.moves) {
+            if ((m.kind == MoveKind::Travel || m.kind == MoveKind::Touch) && (outside(ix, m.xMm) || outside(iy, m.yMm))) {
+                *error = tr("%1: (%2, %3) mm is beyond the soft limits X %4, Y %5 mm").arg(what, mm(m.xMm), mm(m.yMm), range(ix), range(iy));
+                return false;
+            }
+            if ((m.kind == MoveKind::Raise || m.kind == MoveKind::Lower) && outside(iz, m.zMm)) {
+                *error = tr("%1: Z %2 mm is beyond the soft limits %3 mm").arg(what, mm(m.zMm), range(iz));
+                return false;
+            }
+            if (m.kind == MoveKind::Pump) {
+                p += m.pumpDeltaUl;
+                pMin = std::min(pMin, p);
+                pMax = std::max(pMax, p);
+            }
+        }
+    }
+    if (outside(ip, pMin) || outside(ip, pMax)) {
+        *error = tr("the plunger would travel %1–%2 µL (it is at %3 µL), beyond its limits %4 µL: %5")
+                     .arg(mm(pMin), mm(pMax), mm(plungerNow()), range(ip),
+                          pMax > limits[ip].max ? tr("empty the syringe first") : tr("the recipe dispenses more than it aspirates"));
+        return false;
+    }
+    return true;
+}
+
+void RecipeRunner::setState(RunState s)
+{
+    if (s == m_state)
+        return;
+    if (active(m_state) && !active(s))
+        m_elapsedBeforeS += m_clock.elapsed() / 1000.0;
+    if (!active(m_state) && active(s))
+        m_clock.restart();
+    m_state = s;
+    emit stateChanged(s);
+    emit progressChanged();
+}
+
+bool RecipeRunner::logLine(jsonio::Value line)
+{
+    if (m_log.write(std::move(line)))
+        return true;
+    const QString why = m_log.lastError();
+    m_log.close();
+    stopRun(tr("%1: the run stopped, since what it does could no longer be recorded").arg(why));
+    return false;
+}
+
+int RecipeRunner::nextOpenOp(int from) const
+{
+    for (int i = std::max(0, from); i < static_cast<int>(m_opStates.size()); ++i)
+        if (!closed(m_opStates[static_cast<std::size_t>(i)]))
+            return i;
+    return static_cast<int>(m_opStates.size());
+}
+
+bool RecipeRunner::start(const QString& logPath, QString* error)
+{
+    if (active(m_state) || m_state == RunState::Paused) {
+        *error = tr("a run is already under way");
+        return false;
+    }
+    if (m_plan.ops.empty()) {
+        *error = tr("no recipe to run");
+        return false;
+    }
+    m_opStates.assign(m_plan.ops.size(), OpState::NotStarted);
+    if (!checkMachine(error) || !preflight(error))
+        return false;
+    if (!m_log.create(logPath, error))
+        return false;
+    jsonio::Value head = jsonio::schemaObject(platefiles::kRunLogSchema, platefiles::kRunLogVersion);
+    head.set("event", "run");
+    head.set("recipe", m_recipeName.toStdString());
+    head.set("fingerprint", plates::fingerprintHex(m_plan.fingerprint));
+    head.set("ops", static_cast<int>(m_plan.ops.size()));
+    head.set("p_ul", plungerNow());
+    if (!m_log.write(head)) {
+        *error = m_log.lastError();
+        m_log.close();
+        return false;
+    }
+    m_elapsedBeforeS = 0;
+    m_op = 0;
+    m_move = 0;
+    m_pumpLogged = false;
+    m_knowXy = m_knowZ = false;
+    m_pumpUl = plungerNow();
+    emit message(tr("running %1: %2 wells, about %3 s; log %4")
+                     .arg(m_recipeName)
+                     .arg(m_plan.ops.size())
+                     .arg(std::lround(m_plan.totalTimeS))
+                     .arg(QFileInfo(logPath).fileName()),
+                 false);
+    beginRunning();
+    return true;
+}
+
+void RecipeRunner::beginRunning()
+{
+    m_pauseAsked = false;
+    m_plannedDoneS = 0;
+    m_sessionStartS = m_elapsedBeforeS;
+    setState(RunState::Running);
+    QTimer::singleShot(0, this, &RecipeRunner::nextMove);
+}
+
+void RecipeRunner::pause()
+{
+    if (m_state != RunState::Running)
+        return;
+    m_pauseAsked = true;
+    setState(RunState::Pausing);
+}
+
+void RecipeRunner::nextMove()
+{
+    if (m_state != RunState::Running && m_state != RunState::Pausing)
+        return;
+    if (m_inFlight)
+        return;
+    if (m_op >= static_cast<int>(m_plan.ops.size())) {
+        jsonio::Value v = jsonio::Value::object();
+        v.set("event", "finished");
+        logLine(std::move(v));
+        m_log.close();
+        setState(RunState::Finished);
+        emit message(tr("%1 finished: %2 wells").arg(m_recipeName).arg(m_plan.ops.size()), false);
+        emit finished(true);
+        return;
+    }
+    const plates::PlanOp& op = m_plan.ops[static_cast<std::size_t>(m_op)];
+    if (m_move == 0 && m_opStates[static_cast<std::size_t>(m_op)] == OpState::NotStarted) {
+        jsonio::Value v = jsonio::Value::object();
+        v.set("event", "start");
+        v.set("op", m_op);
+        v.set("step", op.step);
+        v.set("kind", plates::stepTypeName(op.type));
+        if (!op.plate.empty())
+            v.set("plate", op.plate);
+        if (!op.well.empty())
+            v.set("well", op.well);
+        if (!op.station.empty())
+            v.set("station", op.station);
+        v.set("volume_ul", op.volumeUl);
+        if (!logLine(std::move(v)))
+            return;
+        m_opStates[static_cast<std::size_t>(m_op)] = OpState::Started;
+        emit opStarted(m_op);
+        emit progressChanged();
+    }
+    while (m_move < static_cast<int>(op.moves.size())) {
+        const MachineMove& m = op.moves[static_cast<std::size_t>(m_move)];
+        const bool skip = (m.kind == MoveKind::Raise && m_knowZ && m_z <= m.zMm + kSameMm)
+            || (m.kind == MoveKind::Lower && m_knowZ && std::abs(m_z - m.zMm) < kSameMm)
+            || ((m.kind == MoveKind::Travel || m.kind == MoveKind::Touch) && m_knowXy && std::abs(m_x - m.xMm) < kSameMm
+                && std::abs(m_y - m.yMm) < kSameMm)
+            || (m.kind == MoveKind::Dwell && m.seconds <= 0);
+        if (!skip) {
+            sendMove(m);
+            return;
+        }
+        ++m_move;
+    }
+    finishOp();
+}
+
+void RecipeRunner::sendMove(const MachineMove& planned)
+{
+    MachineMove m = planned;
+    if (m.kind == MoveKind::Raise && !m_knowZ) {
+        // Where Z is has not been commanded by this run yet (a start, a resume):
+        // a raise goes no lower than the status says the tip is. Should the
+        // status be a poll behind, the tip still ends at or above the safe height.
+        const int iz = axis('Z');
+        if (iz >= 0 && iz < m_client->status().axes.size())
+            m.zMm = std::min(m.zMm, m_client->status().axes[iz].commanded);
+    }
+    if (m.kind == MoveKind::Pump && !m_pumpLogged) {
+        jsonio::Value v = jsonio::Value::object();
+        v.set("event", "pump");
+        v.set("op", m_op);
+        v.set("p_ul", m_pumpUl);
+        if (!logLine(std::move(v)))
+            return;
+        m_pumpLogged = true;
+        m_pumpStartUl = m_pumpUl;
+        m_opStates[static_cast<std::size_t>(m_op)] = OpState::Interrupted;  // until "done"
+    }
+    m_inFlight = m;
+    m_replied = false;
+    const int serial = ++m_moveSerial;
+    if (m.kind == MoveKind::Dwell) {
+        m_dwellTimer.start(static_cast<int>(std::lround(m.seconds * 1000)));
+        return;
+    }
+    QVector<QPair<int, double>> targets;
+    bool relative = false;
+    switch (m.kind) {
+    case MoveKind::Raise:
+    case MoveKind::Lower:
+        targets = {{axis('Z'), m.zMm}};
+        break;
+    case MoveKind::Travel:
+    case MoveKind::Touch:
+        targets = {{axis('X'), m.xMm}, {axis('Y'), m.yMm}};
+        break;
+    case MoveKind::Pump:
+        targets = {{axis('P'), m.pumpDeltaUl}};
+        relative = true;
+        break;
+    case MoveKind::Dwell:
+        break;
+    }
+    m_waitMask = 0;
+    for (const auto& t : targets)
+        m_waitMask = static_cast<quint8>(m_waitMask | (1u << t.first));
+    m_moveSentUs = m_client->status().deviceTimeUs;
+    m_moveTimer.start(static_cast<int>(std::lround(m.durationS * kMoveTimeFactor * 1000)) + kMoveGraceMs);
+    // The client keeps the callback until the device answers, which may be after
+    // this runner is gone (a window closed mid-run): it must not reach a dead runner.
+    const QPointer<RecipeRunner> self(this);
+    m_client->move(targets, relative, m.speed, [this, self, serial](const std::optional<dev::RequestError>& err) {
+        if (!self || serial != m_moveSerial || !m_inFlight)
+            return;
+        if (err && err->kind != dev::RequestError::Kind::Device && err->kind != dev::RequestError::Kind::Invalid) {
+            stopRun(linkLostMessage());
+            return;
+        }
+        if (err) {
+            stopRun(tr("the analyzer refused a move of %1: %2")
+                        .arg(QString::fromStdString(m_plan.ops[static_cast<std::size_t>(m_op)].label()), err->message));
+            return;
+        }
+        m_replied = true;
+        if (m_waitMask == 0)
+            moveArrived();
+    });
+}
+
+void RecipeRunner::moveArrived()
+{
+    m_moveTimer.stop();
+    const MachineMove m = *m_inFlight;
+    m_inFlight.reset();
+    m_waitMask = 0;
+    switch (m.kind) {
+    case MoveKind::Raise:
+    case MoveKind::Lower:
+        m_z = m.zMm;
+        m_knowZ = true;
+        break;
+    case MoveKind::Travel:
+    case MoveKind::Touch:
+        m_x = m.xMm;
+        m_y = m.yMm;
+        m_knowXy = true;
+        break;
+    case MoveKind::Pump:
+        m_pumpUl += m.pumpDeltaUl;
+        break;
+    case MoveKind::Dwell:
+        break;
+    }
+    if (m_state == RunState::Aborting) {
+        setState(RunState::Stopped);
+        emit message(tr("aborted; the tip is up at Z %1 mm").arg(mm(m_z)), true);
+        emit finished(false);
+        return;
+    }
+    ++m_move;
+    nextMove();
+}
+
+void RecipeRunner::finishOp()
+{
+    const plates::PlanOp& op = m_plan.ops[static_cast<std::size_t>(m_op)];
+    jsonio::Value v = jsonio::Value::object();
+    v.set("event", "done");
+    v.set("op", m_op);
+    v.set("p_ul", m_pumpUl);
+    if (!logLine(std::move(v)))
+        return;
+    m_opStates[static_cast<std::size_t>(m_op)] = OpState::Done;
+    m_plannedDoneS += op.durationS;
+    emit opFinished(m_op);
+    m_op = nextOpenOp(m_op + 1);
+    m_move = 0;
+    m_pumpLogged = false;
+    emit progressChanged();
+    if (m_pauseAsked && m_op < static_cast<int>(m_plan.ops.size())) {
+        setState(RunState::Paused);
+        emit message(tr("paused after %1; Resume continues with the next well").arg(QString::fromStdString(op.label())), false);
+        return;
+    }
+    nextMove();
+}
+
+void RecipeRunner::onEvent(const dev::DeviceEvent& e)
+{
+    if (!active(m_state))
+        return;
+    using K = proto::EventKind;
+    if (e.kind == K::EStop) {
+        stopRun(tr("E-stop: the run stopped at %1. Reset the E-stop, check the machine, then Resume")
+                    .arg(m_op >= 0 && m_op < static_cast<int>(m_plan.ops.size()) ? QString::fromStdString(m_plan.ops[static_cast<std::size_t>(m_op)].label())
+                                                                                   : QString()));
+        return;
+    }
+    if (e.kind == K::LostSteps || e.kind == K::Fault) {
+        stopRun(tr("%1: the run stopped; re-home before resuming").arg(e.text));
+        return;
+    }
+    if (!m_inFlight || e.axis < 0 || !(m_waitMask & (1u << e.axis)))
+        return;
+    if (e.kind == K::MotionDone) {
+        m_waitMask = static_cast<quint8>(m_waitMask & ~(1u << e.axis));
+        if (m_waitMask == 0 && m_replied)
+            moveArrived();
+    } else if (e.kind == K::Stopped || e.kind == K::LimitHit || e.kind == K::JogExpired) {
+        if (m_state == RunState::Aborting)
+            return;
+        stopRun(tr("%1 during %2").arg(e.text, QString::fromStdString(m_plan.ops[static_cast<std::size_t>(m_op)].label())));
+    }
+}
+
+void RecipeRunner::onMoveTimeout()
+{
+    if (!m_inFlight || m_inFlight->kind == MoveKind::Dwell)
+        return;
+    // The budget is counted on the device's clock (the status carries it), so a
+    // simulator running slower or faster than the wall clock is judged by its own time.
+    const double budgetUs = (m_inFlight->durationS * kMoveTimeFactor + kMoveGraceMs / 1000.0) * 1e6;
+    if (m_client->isReady() && static_cast<double>(m_client->status().deviceTimeUs - std::min(m_moveSentUs, m_client->status().deviceTimeUs)) < budgetUs) {
+        m_moveTimer.start(500);
+        return;
+    }
+    // A MotionDone can be lost on a noisy link (events are not retransmitted):
+    // the status, polled anyway, says whether the move arrived.
+    const auto& st = m_client->status();
+    const MachineMove& m = *m_inFlight;
+    bool arrived = m_replied && m_client->isReady() && !st.anyMoving();
+    auto at = [&](char c, double v) {
+        const int i = axis(c);
+        return i >= 0 && i < st.axes.size() && std::abs(st.axes[i].commanded - v) < 1e-3;
+    };
+    if (m.kind == MoveKind::Raise || m.kind == MoveKind::Lower)
+        arrived = arrived && at('Z', m.zMm);
+    else if (m.kind == MoveKind::Pump)
+        arrived = arrived && at('P', m_pumpUl + m.pumpDeltaUl);
+    else
+        arrived = arrived && at('X', m.xMm) && at('Y', m.yMm);
+    if (arrived) {
+        emit message(tr("no MotionDone arrived for a %1 move, but the status shows it completed: going on").arg(QLatin1String(plates::moveKindName(m.kind))),
+                     false);
+        moveArrived();
+        return;
+    }
+    stopRun(tr("the analyzer did not finish a %1 move of %2 in time").arg(QLatin1String(plates::moveKindName(m.kind)),
+                                                                         QString::fromStdString(m_plan.ops[static_cast<std::size_t>(m_op)].label())));
+}
+
+void RecipeRunner::onLinkState(dev::LinkState s)
+{
+    if (s == dev::LinkState::Ready && m_state == RunState::Stopped && m_op >= 0 && m_op < static_cast<int>(m_plan.ops.size())) {
+        emit message(tr("the analyzer is back: Resume continues with %1").arg(QString::fromStdString(m_plan.ops[static_cast<std::size_t>(m_op)].label())),
+                     false);
+        return;
+    }
+    if (s != dev::LinkState::Ready && active(m_state))
+        stopRun(linkLostMessage());
+}
+
+QString RecipeRunner::linkLostMessage() const
+{
+    return tr("the link to the analyzer was lost during %1: the run stopped (the analyzer completes the move it had). "
+              "Reconnect, then Resume")
+        .arg(m_op >= 0 && m_op < static_cast<int>(m_plan.ops.size()) ? QString::fromStdString(m_plan.ops[static_cast<std::size_t>(m_op)].label())
+                                                                       : tr("the run"));
+}
+
+void RecipeRunner::stopRun(const QString& reason)
+{
+    m_moveTimer.stop();
+    m_dwellTimer.stop();
+    m_inFlight.reset();
+    m_waitMask = 0;
+    ++m_moveSerial;
+    if (m_log.isOpen()) {
+        jsonio::Value v = jsonio::Value::object();
+        v.set("event", "stop");
+        v.set("reason", reason.toStdString());
+        if (!m_log.write(v))
+            m_log.close();
+    }
+    setState(RunState::Stopped);
+    emit message(reason, true);
+    emit finished(false);
+}
+
+void RecipeRunner::abort()
+{
+    if (m_state == RunState::Paused) {
+        stopRun(tr("aborted by the operator while paused"));
+        return;
+    }
+    if (m_state != RunState::Running && m_state != RunState::Pausing)
+        return;
+    m_moveTimer.stop();
+    m_dwellTimer.stop();
+    m_inFlight.reset();
+    m_waitMask = 0;
+    const int serial = ++m_moveSerial;
+    if (m_log.isOpen()) {
+        jsonio::Value v = jsonio::Value::object();
+        v.set("event", "stop");
+        v.set("reason", "aborted by the operator");
+        m_log.write(v);
+    }
+    setState(RunState::Aborting);
+    // Stop at once; once everything is still, lift the tip out of the well.
+    const QPointer<RecipeRunner> self(this);
+    m_client->stop(0, [this, self, serial](const std::optional<dev::RequestError>&) {
+        if (!self || serial != m_moveSerial || m_state != RunState::Aborting)
+            return;
+        auto fresh = std::make_shared<int>(0);
+        auto conn = std::make_shared<QMetaObject::Connection>();
+        *conn = connect(m_client, &dev::InstrumentClient::statusChanged, this, [this, serial, fresh, conn](const dev::InstrumentStatus& st) {
+            if (serial != m_moveSerial || m_state != RunState::Aborting) {
+                disconnect(*conn);
+                return;
+            }
+            if (++*fresh < 2 || st.anyMoving())
+                return;
+            disconnect(*conn);
+            const int iz = axis('Z');
+            const double safe = m_op >= 0 && m_op < static_cast<int>(m_plan.ops.size()) ? m_plan.ops[static_cast<std::size_t>(m_op)].safeZMm : 0.0;
+            if (st.estop || iz < 0 || iz >= st.axes.size() || !st.axes[iz].homed) {
+                setState(RunState::Stopped);
+                emit message(tr("aborted; the tip could not be raised (E-stop or Z not homed)"), true);
+                emit finished(false);
+                return;
+            }
+            m_z = st.axes[iz].commanded;
+            m_knowZ = false;
+            m_knowXy = false;
+            if (m_z <= safe + kSameMm) {
+                setState(RunState::Stopped);
+                emit message(tr("aborted; the tip is up at Z %1 mm").arg(mm(m_z)), true);
+                emit finished(false);
+                return;
+            }
+            MachineMove up;
+            up.kind = MoveKind::Raise;
+            up.zMm = safe;
+            up.durationS = 2;
+            sendMove(up);
+        });
+    });
+}
+
+} // namespace jobs

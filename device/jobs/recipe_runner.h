@@ -1,0 +1,159 @@
+#pragma once
+// Runs a planned recipe on the analyzer, one op (well visit) at a time, each a
+// short sequence of MOVE requests: the next is sent when the device's
+// MotionDone events for the previous one have arrived (no polling). Every op is
+// written to the run log (device/files/recipes/run_log.h) before the machine is
+// told to do it, so a run survives anything that kills it:
+//   * pause: after the current op, with the tip up;
+//   * abort: STOP at once, then Z up to the safe height once everything is still;
+//   * link lost, E-stop, a refusal: it stops and says so; resume() continues
+//     once the link is back (the op under way is begun again when no liquid had
+//     moved, or the operator decides when it had);
+//   * a crash or SIGKILL: resumeFromLog() continues from the log, never doing a
+//     completed op twice, and asks the operator about one interrupted mid-dispense.
+#include "device/client/instrument_client.h"
+#include "device/files/recipes/run_log.h"
+#include "device/files/recipes/run_log_writer.h"
+#include "motion/plans/recipes/recipe_plan.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace jobs {
+
+enum class RunState {
+    Idle,      ///< nothing under way (never started, or finished)
+    Running,
+    Pausing,   ///< finishing the current op, then Paused
+    Paused,
+    Aborting,  ///< stopping, then raising Z
+    Stopped,   ///< aborted, link lost, refused: resume() or resumeFromLog() can continue
+    Finished,
+};
+QString runStateName(RunState s);
+
+/// What the operator is asked about an op that was interrupted after its
+/// plunger move had been sent.
+struct InterruptedOp {
+    int op = 0;
+    QString label;                       ///< "dispense 10 µL into samples B3"
+    std::optional<double> pumpStartUl;   ///< plunger when the pump move was sent
+    double plannedDeltaUl = 0;           ///< what the op's pump moves add up to
+    std::optional<double> plungerNowUl;  ///< where it is now
+    QString evidence;                    ///< a sentence: "the plunger is where the dispense would leave it"
+};
+enum class InterruptedChoice { Skip, Redo, Cancel };
+using InterruptedDecider = std::function<InterruptedChoice(const InterruptedOp&)>;
+
+struct RunProgress {
+    int opsDone = 0, opsTotal = 0;
+    int currentOp = -1;
+    QString currentWhere;   ///< "samples B3"
+    QString currentLabel;
+    double elapsedS = 0;    ///< running time (pauses excluded)
+    double etaS = 0;        ///< remaining, from the profiles scaled by how the run is going
+    double fraction = 0;    ///< of the planned time
+};
+
+class RecipeRunner : public QObject {
+    Q_OBJECT
+public:
+    explicit RecipeRunner(dev::InstrumentClient* client, QObject* parent = nullptr);
+    ~RecipeRunner() override;
+
+    /// The plan to run (planRecipe's result; refused when it has errors).
+    bool setPlan(const plates::RecipePlan& plan, const QString& recipeName, QString* error);
+    const plates::RecipePlan& plan() const { return m_plan; }
+
+    /// A new run, logged to `logPath` (a new file).
+    bool start(const QString& logPath, QString* error);
+    /// Continues the run `logPath` records (same recipe: same fingerprint). Plan
+    /// it from where the run began: resumeStart() says where that was.
+    bool resumeFromLog(const QString& logPath, const InterruptedDecider& decide, QString* error);
+    /// The state to plan a resumed run from: the machine as it stands, with the
+    /// plunger where the logged run began (the plan's syringe accounting is the
+    /// original run's). Falls back to the plunger now when the log does not say.
+    static plates::StartState resumeStart(const QString& logPath, const dev::InstrumentClient& client);
+    /// After a pause or a stop; `decide` is asked when the op under way had moved liquid.
+    bool resume(const InterruptedDecider& decide, QString* error);
+    void pause();
+    void abort();
+
+    RunState state() const { return m_state; }
+    RunProgress progress() const;
+    const std::vector<platefiles::OpState>& opStates() const { return m_opStates; }
+    QString logPath() const { return m_log.path(); }
+    /// The run's per-move watchdog: a MotionDone lost on the link is noticed after
+    /// the move's planned time × this + kMoveGraceMs on the device's clock, and
+    /// the status decides whether the move arrived.
+    static constexpr double kMoveTimeFactor = 3.0;
+    static constexpr int kMoveGraceMs = 3000;
+
+signals:
+    void stateChanged(jobs::RunState state);
+    void progressChanged();
+    void opStarted(int op);
+    void opFinished(int op);
+    /// A sentence for the operator; `problem` for what stopped the run.
+    void message(const QString& text, bool problem);
+    void finished(bool completed);
+
+private:
+    bool checkMachine(QString* error) const;
+    bool preflight(QString* error) const;
+    void setState(RunState s);
+    void beginRunning();
+    void nextMove();
+    void sendMove(const plates::MachineMove& planned);
+    void moveArrived();
+    void onEvent(const dev::DeviceEvent& e);
+    void onLinkState(dev::LinkState s);
+    void onMoveTimeout();
+    void stopRun(const QString& reason);
+    QString linkLostMessage() const;
+    void finishOp();
+    bool logLine(jsonio::Value line);
+    bool decideInterrupted(int op, const InterruptedDecider& decide, bool* redo, QString* error);
+    bool applyDecision(int op, bool redo);
+    int nextOpenOp(int from) const;
+    int axis(char letter) const;
+    double plungerNow() const;
+
+    dev::InstrumentClient* m_client;
+    plates::RecipePlan m_plan;
+    QString m_recipeName;
+    platefiles::RunLogWriter m_log;
+    std::vector<platefiles::OpState> m_opStates;
+    RunState m_state = RunState::Idle;
+    int m_op = -1;             ///< op under way
+    int m_move = 0;            ///< next move of it
+    bool m_pumpLogged = false; ///< the op's "pump" line is written
+    bool m_pauseAsked = false;
+    // The move in flight: which axes' MotionDone we wait for, and its reply.
+    quint8 m_waitMask = 0;
+    bool m_replied = false;
+    int m_moveSerial = 0;      ///< callbacks of an abandoned move are ignored
+    std::optional<plates::MachineMove> m_inFlight;
+    // What we last commanded (valid once commanded since the (re)start).
+    bool m_knowXy = false, m_knowZ = false;
+    double m_x = 0, m_y = 0, m_z = 0;
+    double m_pumpUl = 0;       ///< plunger (µL), from the status at (re)start plus our moves
+    double m_pumpStartUl = 0;  ///< plunger when the op's "pump" line was written
+    std::optional<platefiles::RunLogState> m_logState;  ///< the log being resumed, while deciding
+    QTimer m_moveTimer, m_dwellTimer;
+    quint64 m_moveSentUs = 0;  ///< device clock when the move in flight was sent
+    QElapsedTimer m_clock;
+    double m_elapsedBeforeS = 0;    ///< running time of earlier stretches
+    double m_plannedDoneS = 0;      ///< planned time of ops closed in this session
+    double m_sessionStartS = 0;     ///< running time when this session's first op began
+    QMetaObject::Connection m_events, m_link;
+};
+
+} // namespace jobs
+
+Q_DECLARE_METATYPE(jobs::RunState)

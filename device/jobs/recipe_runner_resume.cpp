@@ -1,0 +1,264 @@
+// RecipeRunner: continuing a run that stopped (resume) or that a crash left in
+// its log (resumeFromLog), and the progress a screen shows.
+#include "device/files/text_file.h"
+#include "device/jobs/recipe_runner.h"
+
+#include <QFileInfo>
+
+#include <algorithm>
+#include <cmath>
+
+namespace jobs {
+
+using platefiles::OpState;
+
+namespace {
+constexpr double kPlungerToleranceUl = 0.05;  ///< a count of the pump's encoder
+bool closed(OpState s) { return s == OpState::Done || s == OpState::Skipped; }
+QString ul(double v) { return QString::number(v, 'f', 2); }
+} // namespace
+
+plates::StartState RecipeRunner::resumeStart(const QString& logPath, const dev::InstrumentClient& client)
+{
+    plates::StartState s;
+    const auto& a = client.status().axes;
+    const auto& id = client.identity();
+    const int ix = id.axisIndex(QLatin1Char('X')), iy = id.axisIndex(QLatin1Char('Y')), iz = id.axisIndex(QLatin1Char('Z')),
+              ip = id.axisIndex(QLatin1Char('P'));
+    if (ix >= 0 && iy >= 0 && iz >= 0 && ip >= 0 && std::max({ix, iy, iz, ip}) < a.size())
+        s = {a[ix].commanded, a[iy].commanded, a[iz].commanded, a[ip].commanded};
+    std::string text;
+    QString error;
+    if (files::readText(logPath, &text, &error))
+        if (const auto p = platefiles::readRunLog(text).startPumpUl)
+            s.pumpUl = *p;
+    return s;
+}
+
+RunProgress RecipeRunner::progress() const
+{
+    RunProgress p;
+    p.opsTotal = static_cast<int>(m_plan.ops.size());
+    double plannedClosed = 0, remaining = 0;
+    for (std::size_t i = 0; i < m_plan.ops.size() && i < m_opStates.size(); ++i) {
+        if (closed(m_opStates[i])) {
+            ++p.opsDone;
+            plannedClosed += m_plan.ops[i].durationS;
+        } else {
+            remaining += m_plan.ops[i].durationS;
+        }
+    }
+    const bool running = m_state == RunState::Running || m_state == RunState::Pausing || m_state == RunState::Aborting;
+    p.elapsedS = m_elapsedBeforeS + (running ? m_clock.elapsed() / 1000.0 : 0.0);
+    if (m_op >= 0 && m_op < p.opsTotal && m_state != RunState::Finished) {
+        const plates::PlanOp& op = m_plan.ops[static_cast<std::size_t>(m_op)];
+        p.currentOp = m_op;
+        p.currentWhere = QString::fromStdString(op.where());
+        p.currentLabel = QString::fromStdString(op.label());
+    }
+    // The profiles' estimate, scaled by how this stretch of the run compares to
+    // it (the link's turnaround, a slower machine), once there is enough to judge.
+    double ratio = 1;
+    const double sessionS = p.elapsedS - m_sessionStartS;
+    if (m_plannedDoneS > 2.0 && sessionS > 0)
+        ratio = std::clamp(sessionS / m_plannedDoneS, 0.5, 4.0);
+    p.etaS = remaining * ratio;
+    p.fraction = m_plan.totalTimeS > 0 ? plannedClosed / m_plan.totalTimeS : (p.opsTotal ? double(p.opsDone) / p.opsTotal : 0);
+    return p;
+}
+
+bool RecipeRunner::decideInterrupted(int op, const InterruptedDecider& decide, bool* redo, QString* error)
+{
+    const plates::PlanOp& plan = m_plan.ops[static_cast<std::size_t>(op)];
+    InterruptedOp q;
+    q.op = op;
+    q.label = QString::fromStdString(plan.label());
+    q.plannedDeltaUl = plan.pumpNetUl;
+    q.plungerNowUl = plungerNow();
+    if (op == m_op && m_pumpLogged)
+        q.pumpStartUl = m_pumpStartUl;
+    else if (m_logState && static_cast<std::size_t>(op) < m_logState->ops.size())
+        q.pumpStartUl = m_logState->ops[static_cast<std::size_t>(op)].pumpStartUl;
+    if (q.pumpStartUl && std::abs(plan.pumpNetUl) > kPlungerToleranceUl) {
+        const double end = *q.pumpStartUl + plan.pumpNetUl;
+        if (std::abs(*q.plungerNowUl - end) <= kPlungerToleranceUl)
+            q.evidence = tr("the plunger is at %1 µL, where this step leaves it: its liquid most likely moved in full").arg(ul(end));
+        else if (std::abs(*q.plungerNowUl - *q.pumpStartUl) <= kPlungerToleranceUl)
+            q.evidence = tr("the plunger is at %1 µL, where it was before the pump move: no liquid moved").arg(ul(*q.pumpStartUl));
+        else
+            q.evidence = tr("the plunger is at %1 µL, between %2 (before) and %3 µL (after): part of the volume moved")
+                             .arg(ul(*q.plungerNowUl), ul(*q.pumpStartUl), ul(end));
+    } else {
+        q.evidence = tr("a %1 ends where it starts: the plunger cannot tell how far it got").arg(QLatin1String(plates::stepTypeName(plan.type)));
+    }
+    if (!decide) {
+        *error = tr("%1 was interrupted after liquid started to move (%2): say whether to skip it or do it again")
+                     .arg(q.label, q.evidence);
+        return false;
+    }
+    const InterruptedChoice c = decide(q);
+    if (c == InterruptedChoice::Cancel) {
+        *error = tr("not resumed: %1 was interrupted and no decision was made").arg(q.label);
+        return false;
+    }
+    *redo = c == InterruptedChoice::Redo;
+    return true;
+}
+
+/// Writes the operator's decision about `op` and sets it up to be skipped or begun again.
+bool RecipeRunner::applyDecision(int op, bool redo)
+{
+    jsonio::Value v = jsonio::Value::object();
+    v.set("event", redo ? "redo" : "skip");
+    v.set("op", op);
+    v.set("p_ul", plungerNow());
+    v.set("reason", redo ? "operator: interrupted mid-dispense, do it again" : "operator: interrupted mid-dispense, count as done");
+    if (!m_log.write(v))
+        return false;
+    m_opStates[static_cast<std::size_t>(op)] = redo ? OpState::NotStarted : OpState::Skipped;
+    emit message(redo ? tr("%1 will be done again").arg(QString::fromStdString(m_plan.ops[static_cast<std::size_t>(op)].label()))
+                      : tr("%1 counts as done (skipped on resume)").arg(QString::fromStdString(m_plan.ops[static_cast<std::size_t>(op)].label())),
+                 false);
+    return true;
+}
+
+bool RecipeRunner::resume(const InterruptedDecider& decide, QString* error)
+{
+    if (m_state == RunState::Paused) {
+        if (!checkMachine(error) || !preflight(error))
+            return false;
+        m_knowXy = m_knowZ = false;
+        beginRunning();
+        return true;
+    }
+    if (m_state != RunState::Stopped || m_op < 0 || m_op >= static_cast<int>(m_plan.ops.size())) {
+        *error = tr("nothing to resume");
+        return false;
+    }
+    if (!m_log.isOpen()) {
+        *error = tr("the run log is closed: resume from the log file instead");
+        return false;
+    }
+    if (!checkMachine(error))
+        return false;
+    bool redo = true;
+    if (m_pumpLogged && !decideInterrupted(m_op, decide, &redo, error))
+        return false;
+    if (!preflight(error))
+        return false;
+    jsonio::Value v = jsonio::Value::object();
+    v.set("event", "resume");
+    if (!m_log.write(v)) {
+        *error = m_log.lastError();
+        return false;
+    }
+    if (m_pumpLogged) {
+        if (!applyDecision(m_op, redo)) {
+            *error = m_log.lastError();
+            return false;
+        }
+    } else {
+        m_opStates[static_cast<std::size_t>(m_op)] = OpState::NotStarted;  // nothing moved: begin it again
+    }
+    m_op = nextOpenOp(m_op);
+    m_move = 0;
+    m_pumpLogged = false;
+    m_knowXy = m_knowZ = false;
+    m_pumpUl = plungerNow();
+    emit progressChanged();
+    beginRunning();
+    return true;
+}
+
+bool RecipeRunner::resumeFromLog(const QString& logPath, const InterruptedDecider& decide, QString* error)
+{
+    if (m_state == RunState::Running || m_state == RunState::Pausing || m_state == RunState::Aborting || m_state == RunState::Paused) {
+        *error = tr("a run is under way");
+        return false;
+    }
+    std::string text;
+    if (!files::readText(logPath, &text, error))
+        return false;
+    platefiles::RunLogState st = platefiles::readRunLog(text);
+    const QString name = QFileInfo(logPath).fileName();
+    if (!st.problems.empty()) {
+        *error = tr("%1 cannot be trusted to resume from:\n%2").arg(name, QString::fromStdString(st.problems.format(name.toStdString())).trimmed());
+        return false;
+    }
+    if (st.fingerprint != plates::fingerprintHex(m_plan.fingerprint) || st.opCount != static_cast<int>(m_plan.ops.size())) {
+        *error = tr("%1 is the log of another recipe, or of this one before it changed (%2 ops, plan %3; this recipe: %4 ops, plan %5)")
+                     .arg(name)
+                     .arg(st.opCount)
+                     .arg(QString::fromStdString(st.fingerprint))
+                     .arg(m_plan.ops.size())
+                     .arg(QString::fromStdString(plates::fingerprintHex(m_plan.fingerprint)));
+        return false;
+    }
+    if (st.finished) {
+        *error = tr("the run in %1 finished: nothing to resume").arg(name);
+        return false;
+    }
+    if (!checkMachine(error))
+        return false;
+    std::vector<int> interrupted;
+    for (std::size_t i = 0; i < st.ops.size(); ++i)
+        if (st.ops[i].state == OpState::Interrupted)
+            interrupted.push_back(static_cast<int>(i));
+    // With nothing interrupted, the plunger must be where the last completed op
+    // left it; otherwise the syringe's content is not what the log says.
+    if (interrupted.empty() && st.lastPumpUl && std::abs(*st.lastPumpUl - plungerNow()) > kPlungerToleranceUl) {
+        *error = tr("the plunger is at %1 µL but the log's last completed well left it at %2 µL: the syringe was moved (or the analyzer "
+                    "restarted) since the run stopped, so what it holds is unknown. Start a new run.")
+                     .arg(ul(plungerNow()), ul(*st.lastPumpUl));
+        return false;
+    }
+    m_opStates.assign(m_plan.ops.size(), OpState::NotStarted);
+    for (std::size_t i = 0; i < st.ops.size(); ++i)
+        if (closed(st.ops[i].state))
+            m_opStates[i] = st.ops[i].state;
+    if (!preflight(error))
+        return false;
+    m_logState = std::move(st);
+    std::vector<std::pair<int, bool>> decisions;
+    for (int op : interrupted) {
+        bool redo = true;
+        if (!decideInterrupted(op, decide, &redo, error)) {
+            m_logState.reset();
+            return false;
+        }
+        decisions.push_back({op, redo});
+    }
+    m_logState.reset();
+    if (!m_log.append(logPath, error))
+        return false;
+    jsonio::Value v = jsonio::Value::object();
+    v.set("event", "resume");
+    if (!m_log.write(v)) {
+        *error = m_log.lastError();
+        return false;
+    }
+    for (const auto& [op, redo] : decisions)
+        if (!applyDecision(op, redo)) {
+            *error = m_log.lastError();
+            return false;
+        }
+    const int started = std::count_if(m_opStates.begin(), m_opStates.end(), closed);
+    m_elapsedBeforeS = 0;
+    m_op = nextOpenOp(0);
+    m_move = 0;
+    m_pumpLogged = false;
+    m_knowXy = m_knowZ = false;
+    m_pumpUl = plungerNow();
+    emit message(tr("resuming %1 from %2: %3 of %4 wells already done, continuing with %5")
+                     .arg(m_recipeName, name)
+                     .arg(started)
+                     .arg(m_plan.ops.size())
+                     .arg(m_op < static_cast<int>(m_plan.ops.size()) ? QString::fromStdString(m_plan.ops[static_cast<std::size_t>(m_op)].label())
+                                                                      : tr("the end")),
+                 false);
+    emit progressChanged();
+    beginRunning();
+    return true;
+}
+
+} // namespace jobs

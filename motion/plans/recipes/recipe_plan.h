@@ -1,0 +1,98 @@
+#pragma once
+// From a recipe to the moves a run makes, with the same pass finding every
+// problem (validation is planning that collects problems: the checks and the
+// moves can never disagree). Each planned op is one visit — one well, one
+// station, one air gap or one wait — and is the unit the run log records.
+//
+// Per well the tip goes: up to the travel height (Raise), across (Travel, X and
+// Y together), down (Lower), the plunger (Pump, relative), up (Raise). Times
+// come from move_time.h, the firmware's own profile planning.
+#include "motion/plans/plates/deck.h"
+#include "motion/plans/plates/labware.h"
+#include "motion/plans/plates/problem.h"
+#include "motion/plans/recipes/recipe.h"
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace plates {
+
+struct PlanContext {
+    Deck deck;
+    /// Labware by the reference recipe plates use: built-in ids and files.
+    std::map<std::string, Labware> labware;
+    /// Fitted transforms by slot id; a slot without one uses its nominal place.
+    std::map<std::string, PlateTransform> calibration;
+    double syringeUl = 0;  ///< 0 = the deck's
+    PlateTransform transform(const std::string& slotId) const;
+    double capacityUl() const { return syringeUl > 0 ? syringeUl : deck.syringeUl; }
+};
+
+/// Where the machine is when the run starts (or resumes).
+struct StartState {
+    double xMm = 0, yMm = 0, zMm = 0, pumpUl = 0;
+};
+
+enum class MoveKind { Raise, Travel, Lower, Pump, Touch, Dwell };
+const char* moveKindName(MoveKind k);  ///< "raise", "travel", "lower", "pump", "touch", "dwell"
+
+struct MachineMove {
+    MoveKind kind = MoveKind::Dwell;
+    double xMm = 0, yMm = 0;   ///< Travel, Touch: XY target
+    double zMm = 0;            ///< Raise, Lower: Z target
+    double pumpDeltaUl = 0;    ///< Pump: + draws in, − pushes out
+    double speed = 0;          ///< axis units per second; 0 = the device's default
+    double seconds = 0;        ///< Dwell
+    double durationS = 0;      ///< planned, with the link's per-move overhead
+};
+
+struct PlanOp {
+    int index = 0;
+    int step = 0;              ///< the recipe step it comes from
+    StepType type = StepType::Dispense;
+    std::string plate, well;   ///< a well on a plate …
+    std::string station;       ///< … or a deck station
+    int round = 0;             ///< transfer round (1, 2, …) of a dispense with a source; 0 otherwise
+    double volumeUl = 0;       ///< the step's volume here (per well, per stroke, air gap)
+    double pumpNetUl = 0;      ///< net plunger change: + aspirate / air gap, − dispense, 0 mix / wash
+    PointMm at;                ///< machine XY
+    double safeZMm = 0, depthZMm = 0;
+    std::vector<MachineMove> moves;
+    double durationS = 0;
+    double startS = 0;         ///< planned start, from the run's start
+    bool pumps() const;        ///< has a plunger move (liquid may have moved once it started)
+    std::string where() const; ///< "samples B3", "station wash", "" (air gap, wait)
+    std::string label() const; ///< "dispense 10 µL into samples B3"
+};
+
+struct WellTotal {
+    std::string plate, well;
+    double dispensedUl = 0, aspiratedUl = 0;
+    int visits = 0;
+};
+
+struct RecipePlan {
+    std::vector<PlanOp> ops;
+    Problems problems;
+    double totalTimeS = 0;
+    double pumpStartUl = 0, pumpEndUl = 0;
+    double totalDispensedUl = 0, totalAspiratedUl = 0;
+    std::vector<WellTotal> wells;   ///< in order of first visit
+    /// The ops' identity (type, place, volumes) — not their coordinates, so a run
+    /// may resume after the plate was re-taught — for matching a run log to its recipe.
+    std::uint64_t fingerprint = 0;
+    bool ok() const { return !hasErrors(problems); }
+    const WellTotal* total(const std::string& plate, const std::string& well) const;
+};
+
+RecipePlan planRecipe(const Recipe& recipe, const PlanContext& context, const StartState& start = {});
+
+/// 16 hex digits.
+std::string fingerprintHex(std::uint64_t fingerprint);
+
+/// Seconds of the ops from `fromOp` on (for an ETA).
+double remainingTimeS(const RecipePlan& plan, int fromOp);
+
+} // namespace plates

@@ -1,0 +1,303 @@
+// The recipe's steps, one by one: where the tip goes for each type, what the
+// plunger does, and what the syringe can hold (see recipe_planner.h).
+#include "motion/plans/recipes/recipe_planner.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace plates::planning {
+
+bool Planner::checkVolume(const Step& s, const std::string& path, bool capacityBound)
+{
+    if (!std::isfinite(s.volumeUl) || s.volumeUl <= 0) {
+        error(fieldPath(path, "volume_ul"), "must be more than 0 µL (got " + formatMm(s.volumeUl) + ")");
+        return false;
+    }
+    if (capacityBound && s.volumeUl > m_cap + kEps) {
+        error(fieldPath(path, "volume_ul"), "volume over capacity: " + volumeText(s.volumeUl) + " is more than the syringe holds ("
+                                               + volumeText(m_cap) + ")");
+        return false;
+    }
+    return true;
+}
+
+double Planner::pumpSpeed(const Step& s, const std::string& path)
+{
+    if (!s.speedUlS)
+        return 0;
+    if (!(*s.speedUlS >= kMinSpeed) || *s.speedUlS > m_c.deck.p.maxSpeed) {
+        error(fieldPath(path, "speed_ul_s"), "must be from " + formatMm(kMinSpeed) + " to " + formatMm(m_c.deck.p.maxSpeed) + " µL/s (got "
+                                                + formatMm(*s.speedUlS) + ")");
+        return 0;
+    }
+    return *s.speedUlS;
+}
+
+bool Planner::roomFor(double delta, const std::string& path, bool* reported)
+{
+    const double after = m_p + delta;
+    if (after <= m_cap + 1e-6 && after >= -1e-6)
+        return true;
+    if (!*reported) {
+        *reported = true;
+        if (after > m_cap)
+            error(path, "volume over capacity: the syringe would hold " + volumeText(after) + ", more than its " + volumeText(m_cap)
+                            + (m_p > 1e-6 ? " (it holds " + volumeText(m_p) + " at this point)" : ""));
+        else
+            error(path, "the plunger would pass its empty end (" + volumeText(after) + ")");
+    }
+    return false;
+}
+
+void Planner::aspirateAt(int step, const Place& pl, double vol, double speed, const std::string& volPath, bool* reported)
+{
+    roomFor(vol, volPath, reported);
+    PlanOp& op = newOp(step, StepType::Aspirate, &pl, vol);
+    goInto(op, pl);
+    pump(op, vol, speed);
+    raiseTo(op, m_safeZ);
+    m_liquid += vol;
+    if (!pl.well.empty()) {
+        WellTotal& t = totalOf(pl);
+        t.aspiratedUl += vol;
+        ++t.visits;
+    }
+    m_plan.totalAspiratedUl += vol;
+}
+
+void Planner::dispenseAt(int step, const Place& pl, double vol, double speed, double touchMm)
+{
+    PlanOp& op = newOp(step, StepType::Dispense, &pl, vol);
+    goInto(op, pl);
+    // A trailing air gap sits at the tip: it leaves first, with this dispense.
+    pump(op, -(vol + m_air), speed);
+    m_air = 0;
+    if (touchMm > 0) {
+        const PointMm dir = pl.transform.applyVector({touchMm, 0});
+        travelTo(op, {pl.at.x + dir.x, pl.at.y + dir.y}, MoveKind::Touch);
+        travelTo(op, pl.at, MoveKind::Touch);
+    }
+    raiseTo(op, m_safeZ);
+    m_liquid -= vol;
+    if (!pl.well.empty()) {
+        WellTotal& t = totalOf(pl);
+        t.dispensedUl += vol;
+        ++t.visits;
+    }
+    m_plan.totalDispensedUl += vol;
+}
+
+void Planner::planStep(int i)
+{
+    const Step& s = m_r.steps[static_cast<std::size_t>(i)];
+    const std::string path = indexPath("steps", static_cast<std::size_t>(i));
+    const double speed = pumpSpeed(s, path);
+    bool reported = false;
+    switch (s.type) {
+    case StepType::Aspirate:
+    case StepType::Dispense: {
+        const bool asp = s.type == StepType::Aspirate;
+        if (!s.station.empty() && !s.wells.empty()) {
+            error(fieldPath(path, "station"), "give either wells or a station, not both");
+            return;
+        }
+        if (s.station.empty() && s.wells.empty()) {
+            error(fieldPath(path, "wells"), std::string("is missing: say which wells to ") + (asp ? "aspirate from" : "dispense into")
+                                                + " (or a station)");
+            return;
+        }
+        const bool volOk = checkVolume(s, path, true);
+        std::vector<Place> places;
+        if (!s.station.empty()) {
+            Place pl;
+            if (stationPlace(s.station, fieldPath(path, "station"), &pl))
+                places.push_back(pl);
+        } else {
+            places = wellPlaces(s, path);
+        }
+        if (!volOk)
+            return;
+        for (const Place& pl : places)
+            if (pl.w && s.volumeUl > pl.w->volumeUl + kEps) {
+                error(fieldPath(path, "volume_ul"), volumeText(s.volumeUl) + (asp ? " is more than a " : " does not fit a ")
+                                                       + volumeText(pl.w->volumeUl) + " well of plate \"" + pl.plate + "\"");
+                return;
+            }
+        if (asp) {
+            if (!s.source.empty())
+                error(fieldPath(path, "source"), "only a dispense takes a source");
+            for (const Place& pl : places)
+                aspirateAt(i, pl, s.volumeUl, speed, fieldPath(path, "volume_ul"), &reported);
+            return;
+        }
+        if (s.offsetMm < 0 || !std::isfinite(s.offsetMm))
+            error(fieldPath(path, "touch_off_mm"), "must be 0 or more (got " + formatMm(s.offsetMm) + ")");
+        for (const Place& pl : places)
+            if (pl.w && s.offsetMm > pl.w->innerRadiusMm() + kEps) {
+                error(fieldPath(path, "touch_off_mm"), formatMm(s.offsetMm) + " mm is past the wall of a well "
+                                                          + formatMm(2 * pl.w->innerRadiusMm()) + " mm wide");
+                break;
+            }
+        if (!s.source.empty())
+            planTransfer(i, s, path, places, speed);
+        else
+            for (const Place& pl : places) {
+                if (m_liquid < s.volumeUl - 1e-6 && !reported) {
+                    reported = true;
+                    error(path, "dispensing " + volumeText(s.volumeUl) + " needs that much liquid in the syringe; it holds "
+                                    + volumeText(std::max(0.0, m_liquid)) + " here: aspirate first, or give the step a \"source\"");
+                }
+                dispenseAt(i, pl, s.volumeUl, speed, std::max(0.0, s.offsetMm));
+            }
+        return;
+    }
+    case StepType::Mix: {
+        checkCycles(s, path);
+        const bool ok = checkVolume(s, path, true);
+        const std::vector<Place> places = wellPlaces(s, path);
+        if (!ok)
+            return;
+        roomFor(s.volumeUl, fieldPath(path, "volume_ul"), &reported);
+        for (const Place& pl : places) {
+            if (pl.w && s.volumeUl > pl.w->volumeUl + kEps) {
+                error(fieldPath(path, "volume_ul"), "mixing " + volumeText(s.volumeUl) + " in a " + volumeText(pl.w->volumeUl) + " well");
+                return;
+            }
+            PlanOp& op = newOp(i, StepType::Mix, &pl, s.volumeUl);
+            goInto(op, pl);
+            for (int c = 0; c < std::clamp(s.cycles, 1, kMaxCycles); ++c) {
+                pump(op, s.volumeUl, speed);
+                pump(op, -s.volumeUl, speed);
+            }
+            raiseTo(op, m_safeZ);
+            ++totalOf(pl).visits;
+        }
+        return;
+    }
+    case StepType::Wash: {
+        checkCycles(s, path);
+        const bool ok = checkVolume(s, path, true);
+        Place pl;
+        if (s.station.empty()) {
+            error(fieldPath(path, "station"), "is missing: say which station washes the tip");
+            return;
+        }
+        if (!stationPlace(s.station, fieldPath(path, "station"), &pl) || !ok)
+            return;
+        roomFor(s.volumeUl, fieldPath(path, "volume_ul"), &reported);
+        PlanOp& op = newOp(i, StepType::Wash, &pl, s.volumeUl);
+        goInto(op, pl);
+        for (int c = 0; c < std::clamp(s.cycles, 1, kMaxCycles); ++c) {
+            pump(op, s.volumeUl, speed);
+            pump(op, -s.volumeUl, speed);
+        }
+        raiseTo(op, m_safeZ);
+        return;
+    }
+    case StepType::AirGap: {
+        if (!checkVolume(s, path, true))
+            return;
+        roomFor(s.volumeUl, fieldPath(path, "volume_ul"), &reported);
+        PlanOp& op = newOp(i, StepType::AirGap, nullptr, s.volumeUl);
+        // Air is drawn with the tip out of the liquid: at the travel height.
+        raiseTo(op, m_safeZ < 1e300 ? m_safeZ : m_z);
+        pump(op, s.volumeUl, speed);
+        m_air += s.volumeUl;
+        return;
+    }
+    case StepType::Wait: {
+        if (!std::isfinite(s.seconds) || s.seconds < 0 || s.seconds > kMaxWaitS) {
+            error(fieldPath(path, "seconds"), "must be from 0 to " + formatMm(kMaxWaitS) + " s (got " + formatMm(s.seconds) + ")");
+            return;
+        }
+        PlanOp& op = newOp(i, StepType::Wait, nullptr, 0);
+        MachineMove m;
+        m.kind = MoveKind::Dwell;
+        m.seconds = s.seconds;
+        m.durationS = s.seconds;
+        op.moves.push_back(m);
+        return;
+    }
+    case StepType::TouchOff: {
+        const std::vector<Place> places = wellPlaces(s, path);
+        if (!(s.offsetMm > 0) || !std::isfinite(s.offsetMm)) {
+            error(fieldPath(path, "offset_mm"), "must be more than 0 mm (got " + formatMm(s.offsetMm) + ")");
+            return;
+        }
+        for (const Place& pl : places) {
+            if (pl.w && s.offsetMm > pl.w->innerRadiusMm() + kEps) {
+                error(fieldPath(path, "offset_mm"), formatMm(s.offsetMm) + " mm is past the wall of a well " + formatMm(2 * pl.w->innerRadiusMm())
+                                                       + " mm wide");
+                return;
+            }
+            PlanOp& op = newOp(i, StepType::TouchOff, &pl, 0);
+            goInto(op, pl);
+            const PointMm dir = pl.transform.applyVector({s.offsetMm, 0});
+            travelTo(op, {pl.at.x + dir.x, pl.at.y + dir.y}, MoveKind::Touch);
+            travelTo(op, pl.at, MoveKind::Touch);
+            raiseTo(op, m_safeZ);
+        }
+        return;
+    }
+    }
+}
+
+void Planner::checkCycles(const Step& s, const std::string& path)
+{
+    if (s.cycles < 1 || s.cycles > kMaxCycles)
+        error(fieldPath(path, "cycles"), "must be from 1 to " + std::to_string(kMaxCycles) + " (got " + std::to_string(s.cycles) + ")");
+}
+
+void Planner::planTransfer(int i, const Step& s, const std::string& path, const std::vector<Place>& targets, double speed)
+{
+    const std::string srcPath = fieldPath(path, "source");
+    Place src;
+    if (!s.source.station.empty()) {
+        if (!s.source.well.empty()) {
+            error(srcPath, "give either a well or a station, not both");
+            return;
+        }
+        if (!stationPlace(s.source.station, fieldPath(srcPath, "station"), &src))
+            return;
+    } else {
+        const RecipePlate* p = resolvePlate(s.source.plate, fieldPath(srcPath, "plate"));
+        if (!p)
+            return;
+        const Labware& lw = m_c.labware.at(p->labware);
+        const Well* w = lw.wellNamed(s.source.well);
+        if (!w) {
+            error(fieldPath(srcPath, "well"), "unknown well \"" + s.source.well + "\" on a " + lw.describe());
+            return;
+        }
+        src = wellPlace(*p, *w);
+        if (!reachable(src.at)) {
+            error(fieldPath(srcPath, "well"), "the source is outside the analyzer's travel");
+            return;
+        }
+    }
+    const double room = m_cap - m_p - m_air;
+    const int perRound = static_cast<int>(std::floor((room + 1e-6) / s.volumeUl));
+    if (perRound < 1) {
+        error(fieldPath(path, "volume_ul"), "volume over capacity: " + volumeText(s.volumeUl) + " per well, but the syringe has room for "
+                                               + volumeText(std::max(0.0, room)) + " here (" + volumeText(m_cap) + " in all)");
+        return;
+    }
+    bool reported = false;
+    for (std::size_t k = 0; k < targets.size(); k += static_cast<std::size_t>(perRound)) {
+        const std::size_t n = std::min(targets.size() - k, static_cast<std::size_t>(perRound));
+        const double vol = s.volumeUl * static_cast<double>(n);
+        const int round = static_cast<int>(k / static_cast<std::size_t>(perRound)) + 1;
+        if (src.w && vol > src.w->volumeUl + kEps && !reported) {
+            reported = true;
+            warning(srcPath, "a round draws " + volumeText(vol) + " from a " + volumeText(src.w->volumeUl) + " well");
+        }
+        aspirateAt(i, src, vol, speed, fieldPath(path, "volume_ul"), &reported);
+        m_plan.ops.back().round = round;
+        for (std::size_t j = k; j < k + n; ++j) {
+            dispenseAt(i, targets[j], s.volumeUl, speed, std::max(0.0, s.offsetMm));
+            m_plan.ops.back().round = round;
+        }
+    }
+}
+
+} // namespace plates::planning

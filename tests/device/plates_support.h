@@ -1,0 +1,25 @@
+#pragma once
+// Reading the examples and the built-in deck in device tests.
+#include "device/files/plates/deck_file.h"
+
+#include <QDir>
+#include <QFile>
+
+#include <string>
+
+namespace platestest {
+
+inline QString examplePath(const char* name) { return QStringLiteral(BP_SOURCE_DIR "/resources/examples/") + QLatin1String(name); }
+
+inline std::string readExample(const char* name)
+{
+    QFile f(examplePath(name));
+    if (!f.open(QIODevice::ReadOnly))
+        return {};
+    return f.readAll().toStdString();
+}
+
+/// Messages of a problem list, one per line, for assertions.
+inline std::string text(const jsonio::Problems& p) { return p.format("f.json"); }
+
+} // namespace platestest

@@ -1,0 +1,288 @@
+// The Plates screen driven as a person would: drag across wells, make a step of
+// them, run it on the simulated analyzer; hover, edit with undo, save and open,
+// and teach a slot.
+#include "app/gui/instrument_session.h"
+#include "app/gui/main_window.h"
+#include "device/files/recipes/recipe_file.h"
+#include "device/files/text_file.h"
+#include "device/link/simulated_link.h"
+#include "gui_wait.h"
+#include "widgets/plates/calibration_panel.h"
+#include "widgets/plates/plate_map.h"
+#include "widgets/plates/plates_screen.h"
+#include "widgets/plates/recipe_editor.h"
+#include "widgets/plates/run_panel.h"
+
+#include <QDoubleSpinBox>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QMouseEvent>
+#include <QPushButton>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QToolButton>
+#include <QUndoStack>
+
+#include <gtest/gtest.h>
+
+using guitest::pump;
+using guitest::waitFor;
+
+namespace {
+
+QPushButton* button(QWidget* root, const QString& text)
+{
+    for (auto* b : root->findChildren<QPushButton*>())
+        if (b->text() == text)
+            return b;
+    return nullptr;
+}
+
+void mouse(QWidget* w, QEvent::Type type, const QPointF& at, Qt::MouseButtons held)
+{
+    const Qt::MouseButton b = type == QEvent::MouseMove ? Qt::NoButton : Qt::LeftButton;
+    QMouseEvent e(type, at, w->mapToGlobal(at), b, held, Qt::NoModifier);
+    QApplication::sendEvent(w, &e);
+}
+
+/// Presses beside the first well, drags past the last and lets go.
+void dragAcross(ui::PlateMap* map, const plates::WellId& from, const plates::WellId& to)
+{
+    const QPointF a = map->wellCenter(from) - QPointF(4, 4), b = map->wellCenter(to) + QPointF(4, 4);
+    mouse(map, QEvent::MouseButtonPress, a, Qt::LeftButton);
+    for (int k = 1; k <= 10; ++k)
+        mouse(map, QEvent::MouseMove, a + (b - a) * k / 10.0, Qt::LeftButton);
+    mouse(map, QEvent::MouseButtonRelease, b, Qt::NoButton);
+}
+
+class PlatesScreenTest : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        app::MainWindowOptions o;
+        o.persistSettings = false;
+        o.confirmDialogs = false;
+        w = std::make_unique<app::MainWindow>(o);
+        w->resize(1500, 950);
+        w->show();
+        ASSERT_TRUE(waitFor([&] { return analyzer()->isReady(); }, 5000));
+        ASSERT_TRUE(w->showScreen(QStringLiteral("plates")));
+        screen = w->platesScreen();
+        ASSERT_NE(screen, nullptr);
+        screen->setRunLogDirectory(dir.path());
+        pump(50);
+    }
+    dev::InstrumentClient* analyzer() { return w->analyzer()->client(); }
+    /// An unpaced simulator with a fast clock, homed: runs take seconds, not minutes.
+    void fastHomedAnalyzer()
+    {
+        ui::ConnectionChoice c;
+        c.baud = 0;
+        w->analyzer()->connectTo(c);
+        ASSERT_TRUE(waitFor([&] { return analyzer()->isReady(); }, 5000));
+        auto* link = qobject_cast<dev::SimulatedLink*>(w->analyzer()->link());
+        ASSERT_NE(link, nullptr);
+        link->host().setTimeScale(20);
+        analyzer()->home(0);
+        ASSERT_TRUE(waitFor(
+            [&] {
+                const auto& a = analyzer()->status().axes;
+                return a.size() == 4 && std::all_of(a.begin(), a.end(), [](const auto& x) { return x.homed && !x.moving; });
+            },
+            30000));
+    }
+
+    /// The operator's jogging, done as a move: the tip over `m` and still.
+    bool moveTo(const plates::PointMm& m)
+    {
+        analyzer()->move({{0, m.x}, {1, m.y}}, false);
+        return waitFor(
+            [&] {
+                const auto& a = analyzer()->status().axes;
+                return std::abs(a[0].commanded - m.x) < 1e-6 && std::abs(a[1].commanded - m.y) < 1e-6 && !a[0].moving && !a[1].moving;
+            },
+            10000);
+    }
+
+    QTemporaryDir dir;
+    std::unique_ptr<app::MainWindow> w;
+    ui::PlatesScreen* screen = nullptr;
+};
+
+} // namespace
+
+TEST_F(PlatesScreenTest, DragSelectsWellsAndTheirStepRunsOnTheSimulator)
+{
+    fastHomedAnalyzer();
+    ui::PlateMap* map = screen->plateMap();
+    dragAcross(map, {0, 0}, {1, 2});  // A1 … B3
+    std::set<plates::WellId> want = {{0, 0}, {0, 1}, {0, 2}, {1, 0}, {1, 1}, {1, 2}};
+    EXPECT_EQ(map->selection(), want);
+    QPushButton* aspirate = button(screen, QObject::tr("Aspirate from these"));
+    ASSERT_NE(aspirate, nullptr);
+    ASSERT_TRUE(aspirate->isEnabled());
+    QTest::mouseClick(aspirate, Qt::LeftButton);
+    const plates::Recipe& r = screen->recipeEditor()->recipe();
+    ASSERT_EQ(r.steps.size(), 1u);
+    EXPECT_EQ(r.steps[0].type, plates::StepType::Aspirate);
+    EXPECT_EQ(r.steps[0].wells, (std::vector<std::string>{"A1:B3"}));
+    EXPECT_TRUE(screen->plan().ok());
+    EXPECT_EQ(screen->plan().ops.size(), 6u);
+
+    QPushButton* run = button(screen->runPanel(), QObject::tr("Run"));
+    ASSERT_NE(run, nullptr);
+    ASSERT_TRUE(run->isEnabled());
+    QTest::mouseClick(run, Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Finished; }, 30000))
+        << jobs::runStateName(screen->runner()->state()).toStdString();
+    ASSERT_TRUE(waitFor([&] { return !analyzer()->status().anyMoving(); }, 5000));
+    pump(200);
+    EXPECT_NEAR(analyzer()->status().axes[3].commanded, 60, 1e-6) << "six wells of 10 µL";
+    // The map shows every selected well done, and the rest unused.
+    map->clearSelection();
+    const QImage img = map->grab().toImage();
+    auto colorAt = [&](const plates::WellId& id) { return QColor(img.pixel(map->wellCenter(id).toPoint())); };
+    for (const auto& id : want)
+        EXPECT_EQ(colorAt(id), ui::PlateMap::colorOf(ui::PlateMap::WellState::Done)) << plates::wellName(id);
+    EXPECT_EQ(colorAt({7, 11}), ui::PlateMap::colorOf(ui::PlateMap::WellState::Unused));
+    // The run log is where the screen said.
+    EXPECT_FALSE(screen->runner()->logPath().isEmpty());
+    EXPECT_TRUE(screen->runner()->logPath().startsWith(dir.path()));
+}
+
+TEST_F(PlatesScreenTest, ClickAndCtrlClickAndHoverShowCoordinatesAndVolume)
+{
+    ui::PlateMap* map = screen->plateMap();
+    const QPointF b3 = map->wellCenter({1, 2});
+    mouse(map, QEvent::MouseButtonPress, b3, Qt::LeftButton);
+    mouse(map, QEvent::MouseButtonRelease, b3, Qt::NoButton);
+    EXPECT_EQ(map->selection(), (std::set<plates::WellId>{{1, 2}}));
+    QTest::mouseClick(button(screen, QObject::tr("Dispense into these")), Qt::LeftButton);
+    mouse(map, QEvent::MouseMove, b3, Qt::NoButton);
+    const QString text = map->hoverText();
+    // B3 of an SBS 96 plate: 14.38 + 2·9, 11.24 + 9 mm; slot 1's corner at (8, 8).
+    EXPECT_TRUE(text.startsWith(QStringLiteral("B3 · plate (32.38, 20.24) mm · machine (40.38, 28.24) mm"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("10 µL dispensed"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("not calibrated"))) << text.toStdString();
+    // A dispense with nothing in the syringe does not validate: Run is off, the problem says why.
+    EXPECT_FALSE(screen->plan().ok());
+    EXPECT_FALSE(button(screen->runPanel(), QObject::tr("Run"))->isEnabled());
+}
+
+TEST_F(PlatesScreenTest, StepEditsUndoRedoSaveAndOpen)
+{
+    ui::PlateMap* map = screen->plateMap();
+    dragAcross(map, {2, 0}, {2, 11});  // row C
+    QTest::mouseClick(button(screen, QObject::tr("Aspirate from these")), Qt::LeftButton);
+    ui::RecipeEditor* ed = screen->recipeEditor();
+    ASSERT_EQ(ed->recipe().steps.size(), 1u);
+    EXPECT_EQ(ed->recipe().steps[0].wells, (std::vector<std::string>{"C1:C12"}));
+    // The form's volume field: typed, one undoable change.
+    QDoubleSpinBox* volume = nullptr;
+    for (auto* s : ed->findChildren<QDoubleSpinBox*>())
+        if (s->suffix() == QStringLiteral(" µL") && s->isVisible())
+            volume = s;
+    ASSERT_NE(volume, nullptr);
+    volume->setValue(25);
+    volume->setValue(30);
+    EXPECT_DOUBLE_EQ(ed->recipe().steps[0].volumeUl, 30);
+    ed->undoStack()->undo();
+    EXPECT_DOUBLE_EQ(ed->recipe().steps[0].volumeUl, 10) << "both changes of the field were one command";
+    EXPECT_DOUBLE_EQ(volume->value(), 10);
+    ed->undoStack()->redo();
+    EXPECT_DOUBLE_EQ(ed->recipe().steps[0].volumeUl, 30);
+    // An unknown well in the wells field: the problem names it and Run is off.
+    QLineEdit* wells = nullptr;
+    for (auto* l : ed->findChildren<QLineEdit*>())
+        if (l->placeholderText().startsWith(QStringLiteral("A1:H1")))
+            wells = l;
+    ASSERT_NE(wells, nullptr);
+    wells->setText(QStringLiteral("C1:C12, I13"));
+    emit wells->editingFinished();
+    EXPECT_FALSE(screen->plan().ok());
+    bool named = false;
+    for (auto* list : ed->findChildren<QListWidget*>())
+        for (int i = 0; i < list->count(); ++i)
+            named = named || list->item(i)->text().contains(QStringLiteral("unknown well \"I13\" on a 96-well plate"));
+    EXPECT_TRUE(named);
+    EXPECT_FALSE(button(screen->runPanel(), QObject::tr("Run"))->isEnabled());
+    ed->undoStack()->undo();
+    EXPECT_TRUE(screen->plan().ok());
+
+    // Save (the file chooser is the app's; here it answers with a path) and open again.
+    const QString path = dir.filePath(QStringLiteral("row-c.recipe.json"));
+    screen->setFileChooser([&](const QString&, const QString&, bool) { return path; });
+    QToolButton* save = nullptr;
+    for (auto* b : ed->findChildren<QToolButton*>())
+        if (b->text() == QObject::tr("Save"))
+            save = b;
+    ASSERT_NE(save, nullptr);
+    EXPECT_EQ(save->shortcut(), QKeySequence(QKeySequence::Save));
+    QTest::mouseClick(save, Qt::LeftButton);
+    ASSERT_TRUE(QFileInfo::exists(path));
+    EXPECT_FALSE(ed->isModified());
+    std::string text;
+    QString error;
+    ASSERT_TRUE(files::readText(path, &text, &error));
+    const auto read = platefiles::parseRecipe(text);
+    ASSERT_TRUE(read.wellFormed);
+    EXPECT_DOUBLE_EQ(read.recipe->steps[0].volumeUl, 30);
+    screen->newRecipe();
+    EXPECT_TRUE(ed->recipe().steps.empty());
+    ASSERT_TRUE(screen->openRecipe(path));
+    EXPECT_EQ(ed->recipe().steps.size(), 1u);
+    EXPECT_EQ(screen->recipePath(), path);
+}
+
+TEST_F(PlatesScreenTest, TheCalibrationWizardTeachesASlotAndItIsKept)
+{
+    fastHomedAnalyzer();
+    const QString file = dir.filePath(QStringLiteral("calibration.json"));
+    screen->setCalibrationFile(file);
+    screen->showTab(QStringLiteral("calibrate"));
+    ui::CalibrationPanel* cal = screen->calibrationPanel();
+    cal->setSlot(QStringLiteral("1"));
+    // The plate sits 0.6 mm right and 0.4 mm back of nominal, turned 0.3°: the
+    // operator jogs the tip over each teach well and records it.
+    const plates::PlateTransform truth = plates::PlateTransform::make(8.6, 7.6, 0.3);
+    const plates::Labware lw = *plates::findBuiltinLabware("sbs-96");
+    const auto pts = plates::teachWells(lw);
+    for (int i = 0; i < 3; ++i) {
+        ASSERT_TRUE(moveTo(truth.apply(pts[static_cast<std::size_t>(i)].plateMm)));
+        cal->recordPoint(i);
+    }
+    ASSERT_TRUE(cal->fit());
+    // Editing the recipe meanwhile does not throw the taught points away.
+    screen->recipeEditor()->edit(QStringLiteral("rename"), [](plates::Recipe& r) { r.name = "renamed"; });
+    ASSERT_TRUE(cal->fit());
+    EXPECT_NEAR(cal->fit()->rotationDeg, 0.3, 0.01);
+    EXPECT_LT(cal->fit()->maxResidualMm, 0.01);
+    ASSERT_TRUE(button(cal, QObject::tr("Save calibration"))->isEnabled());
+    QTest::mouseClick(button(cal, QObject::tr("Save calibration")), Qt::LeftButton);
+    ASSERT_EQ(cal->calibrations().size(), 1u);
+    ASSERT_TRUE(QFileInfo::exists(file)) << "kept between runs";
+    // The recipe now goes to the taught wells.
+    dragAcross(screen->plateMap(), {0, 0}, {0, 0});
+    QTest::mouseClick(button(screen, QObject::tr("Aspirate from these")), Qt::LeftButton);
+    ASSERT_FALSE(screen->plan().ops.empty());
+    const plates::PointMm a1 = truth.apply(pts[0].plateMm);
+    EXPECT_NEAR(screen->plan().ops[0].at.x, a1.x, 0.01);
+    EXPECT_NEAR(screen->plan().ops[0].at.y, a1.y, 0.01);
+    // A fresh screen (the next session) reads it back.
+    ui::PlatesScreen next(analyzer());
+    next.setCalibrationFile(file);
+    EXPECT_EQ(next.calibrationPanel()->calibrations().size(), 1u);
+
+    // A well taught a millimetre off: the residual shows it and a warning says so.
+    cal->setSlot(QStringLiteral("2"));
+    for (int i = 0; i < 3; ++i) {
+        plates::PointMm m = plates::PlateTransform::make(8, 106, 0).apply(pts[static_cast<std::size_t>(i)].plateMm);
+        if (i == 1)
+            m.x += 1.0;
+        ASSERT_TRUE(moveTo(m));
+        cal->recordPoint(i);
+    }
+    ASSERT_TRUE(cal->fit());
+    EXPECT_GT(cal->fit()->maxResidualMm, plates::kResidualWarnMm);
+    ASSERT_FALSE(cal->fit()->warnings.empty());
+}

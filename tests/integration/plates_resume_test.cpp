@@ -1,0 +1,248 @@
+// A run that died (the program killed, the runner gone) continues from its log:
+// completed wells are never done again, a well interrupted after its plunger
+// move was sent is put to the operator, and a log that does not fit is refused.
+#include "plates_run_support.h"
+
+#include "device/protocol/frame_codec.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+using namespace itest;
+using namespace platestest;
+using jobs::InterruptedChoice;
+using jobs::InterruptedOp;
+using jobs::RecipeRunner;
+using jobs::RunState;
+
+namespace {
+
+/// 10 µL a well at 5 µL/s: each aspirate takes two seconds, time to die in.
+plates::Recipe slowRecipe() { return samplingRecipe("A1:A6", 10, 5.0); }
+
+class PlateResume : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        ASSERT_TRUE(s.connect());
+        ASSERT_TRUE(s.homeAll());
+        s.link.host().setTimeScale(5);
+        logPath = dir.filePath(QStringLiteral("run.jsonl"));
+    }
+
+    /// Starts the slow recipe and kills its runner while the third well's plunger moves.
+    void dieMidAspirate()
+    {
+        auto first = std::make_unique<RecipeRunner>(&s.client);
+        QString error;
+        ASSERT_TRUE(first->setPlan(planFor(slowRecipe(), s.client), QStringLiteral("slow"), &error));
+        ASSERT_TRUE(first->start(logPath, &error)) << error.toStdString();
+        ASSERT_TRUE(waitFor(
+            [&] {
+                const LogCounts c = countLog(logPath);
+                return c.pumps.count(2) && !c.dones.count(2);
+            },
+            30000));
+        first.reset();  // as if the program died: no stop line, the analyzer finishes its move
+        ASSERT_TRUE(s.waitStill());
+        const auto st = readLog(logPath);
+        ASSERT_EQ(st.ops[2].state, platefiles::OpState::Interrupted);
+        ASSERT_EQ(st.doneCount(), 2);
+    }
+
+    double p() const { return s.readout('P').commanded; }
+
+    SimSession s{proto::DeviceKind::Analyzer, kUnpaced};
+    QTemporaryDir dir;
+    QString logPath;
+};
+
+} // namespace
+
+TEST_F(PlateResume, TheOperatorSkipsAWellInterruptedMidAspirateAndNoWellIsDoneTwice)
+{
+    dieMidAspirate();
+    RecipeRunner second(&s.client);
+    QString error;
+    ASSERT_TRUE(second.setPlan(planForResume(slowRecipe(), s.client, logPath), QStringLiteral("slow"), &error));
+    std::vector<InterruptedOp> asked;
+    ASSERT_TRUE(second.resumeFromLog(
+                    logPath,
+                    [&](const InterruptedOp& op) {
+                        asked.push_back(op);
+                        return InterruptedChoice::Skip;
+                    },
+                    &error))
+        << error.toStdString();
+    ASSERT_EQ(asked.size(), 1u);
+    EXPECT_EQ(asked[0].op, 2);
+    EXPECT_EQ(asked[0].label, QStringLiteral("aspirate 10 µL from samples A3"));
+    ASSERT_TRUE(asked[0].pumpStartUl);
+    EXPECT_DOUBLE_EQ(*asked[0].pumpStartUl, 20);
+    // The device finished the move the dead program had sent: the evidence says so.
+    EXPECT_TRUE(asked[0].evidence.contains(QStringLiteral("moved in full"))) << asked[0].evidence.toStdString();
+    ASSERT_TRUE(waitFor([&] { return second.state() == RunState::Finished; }, 60000));
+    ASSERT_TRUE(s.waitStill());
+    const LogCounts c = countLog(logPath);
+    for (int i = 0; i < 6; ++i) {
+        EXPECT_EQ(c.starts.at(i), 1) << "op " << i << " was never begun twice";
+        EXPECT_EQ(c.dones.count(i) + c.skips.count(i), 1u) << "op " << i;
+    }
+    EXPECT_EQ(c.skips.count(2), 1u);
+    EXPECT_NEAR(p(), 60, 1e-6) << "six wells of 10 µL, none twice";
+}
+
+TEST_F(PlateResume, RedoDoesTheInterruptedWellAgain)
+{
+    dieMidAspirate();
+    RecipeRunner second(&s.client);
+    QString error;
+    ASSERT_TRUE(second.setPlan(planForResume(slowRecipe(), s.client, logPath), QStringLiteral("slow"), &error));
+    ASSERT_TRUE(second.resumeFromLog(logPath, [](const InterruptedOp&) { return InterruptedChoice::Redo; }, &error))
+        << error.toStdString();
+    ASSERT_TRUE(waitFor([&] { return second.state() == RunState::Finished; }, 60000));
+    ASSERT_TRUE(s.waitStill());
+    const LogCounts c = countLog(logPath);
+    EXPECT_EQ(c.starts.at(2), 2);
+    EXPECT_EQ(c.dones.at(2), 1);
+    EXPECT_NEAR(p(), 70, 1e-6) << "the operator chose to draw from A3 again";
+}
+
+TEST_F(PlateResume, WithoutADecisionNothingResumesAndTheLogIsUntouched)
+{
+    dieMidAspirate();
+    const LogCounts before = countLog(logPath);
+    RecipeRunner second(&s.client);
+    QString error;
+    ASSERT_TRUE(second.setPlan(planForResume(slowRecipe(), s.client, logPath), QStringLiteral("slow"), &error));
+    EXPECT_FALSE(second.resumeFromLog(logPath, {}, &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("aspirate 10 µL from samples A3 was interrupted after liquid started to move")))
+        << error.toStdString();
+    EXPECT_FALSE(second.resumeFromLog(logPath, [](const InterruptedOp&) { return InterruptedChoice::Cancel; }, &error));
+    EXPECT_EQ(second.state(), RunState::Idle);
+    const LogCounts after = countLog(logPath);
+    EXPECT_EQ(after.resumes, before.resumes);
+    EXPECT_EQ(after.starts, before.starts);
+}
+
+TEST_F(PlateResume, ALogThatDoesNotFitIsRefused)
+{
+    QString error;
+    {
+        RecipeRunner first(&s.client);
+        ASSERT_TRUE(first.setPlan(planFor(samplingRecipe("A1:A3"), s.client), QStringLiteral("short"), &error));
+        ASSERT_TRUE(first.start(logPath, &error));
+        ASSERT_TRUE(waitFor([&] { return first.progress().opsDone >= 1; }, 20000));
+        first.abort();
+        ASSERT_TRUE(waitFor([&] { return first.state() == RunState::Stopped; }, 10000));
+    }
+    ASSERT_TRUE(s.waitStill());
+    // Another recipe.
+    RecipeRunner other(&s.client);
+    ASSERT_TRUE(other.setPlan(planFor(samplingRecipe("A1:A3", 12), s.client), QStringLiteral("other"), &error));
+    EXPECT_FALSE(other.resumeFromLog(logPath, {}, &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("the log of another recipe"))) << error.toStdString();
+    // The right recipe, but someone moved the plunger since.
+    RecipeRunner same(&s.client);
+    ASSERT_TRUE(same.setPlan(planForResume(samplingRecipe("A1:A3"), s.client, logPath), QStringLiteral("short"), &error));
+    ASSERT_FALSE(s.call([&](auto cb) { s.client.move({{3, 5}}, true, 0, cb); }));
+    ASSERT_TRUE(s.waitStill());
+    EXPECT_FALSE(same.resumeFromLog(logPath, {}, &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("the syringe was moved"))) << error.toStdString();
+    // Put back: it resumes.
+    ASSERT_FALSE(s.call([&](auto cb) { s.client.move({{3, -5}}, true, 0, cb); }));
+    ASSERT_TRUE(s.waitStill());
+    ASSERT_TRUE(same.resumeFromLog(logPath, {}, &error)) << error.toStdString();
+    ASSERT_TRUE(waitFor([&] { return same.state() == RunState::Finished; }, 30000));
+    // A finished log has nothing left.
+    RecipeRunner third(&s.client);
+    ASSERT_TRUE(third.setPlan(planForResume(samplingRecipe("A1:A3"), s.client, logPath), QStringLiteral("short"), &error));
+    EXPECT_FALSE(third.resumeFromLog(logPath, {}, &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("finished"))) << error.toStdString();
+}
+
+namespace {
+
+/// The device end of the link with a filter: frames for which `drop` says yes never reach the host.
+class FilterTransport final : public dev::Transport {
+public:
+    explicit FilterTransport(dev::Transport* inner) : m_inner(inner)
+    {
+        connect(inner, &dev::Transport::opened, this, &dev::Transport::opened);
+        connect(inner, &dev::Transport::failed, this, &dev::Transport::failed);
+        connect(inner, &dev::Transport::lost, this, &dev::Transport::lost);
+        connect(inner, &dev::Transport::bytesReceived, this, &dev::Transport::bytesReceived);
+    }
+    void open() override { m_inner->open(); }
+    void close() override { m_inner->close(); }
+    bool isOpen() const override { return m_inner->isOpen(); }
+    QString describe() const override { return m_inner->describe(); }
+    void write(const QByteArray& bytes) override
+    {
+        std::vector<proto::Frame> frames;
+        m_decoder.feed(reinterpret_cast<const std::uint8_t*>(bytes.constData()), static_cast<std::size_t>(bytes.size()), frames);
+        std::vector<std::uint8_t> out;
+        for (const auto& f : frames)
+            if (!drop || !drop(f))
+                proto::encodeFrame(f.type, f.seq, f.payload.data(), f.payload.size(), out);
+        if (!out.empty())
+            m_inner->write(QByteArray(reinterpret_cast<const char*>(out.data()), static_cast<int>(out.size())));
+    }
+    std::function<bool(const proto::Frame&)> drop;
+
+private:
+    dev::Transport* m_inner;
+    proto::FrameDecoder m_decoder;
+};
+
+} // namespace
+
+TEST(PlateRunLink, AMotionDoneLostOnTheLinkIsMadeGoodByTheStatus)
+{
+    dev::LoopbackPair pair(0);
+    FilterTransport deviceEnd(pair.end(dev::LoopbackPair::B));
+    dev::SimulatorHost host(sim::analyzerConfig(), 0, &deviceEnd);
+    host.start();
+    dev::InstrumentClient client;
+    client.setTransport(pair.end(dev::LoopbackPair::A));
+    client.connectLink();
+    ASSERT_TRUE(waitFor([&] { return client.isReady(); }, 5000));
+    host.setTimeScale(kRunTimeScale);
+    bool homed = false;
+    client.home(0, [&](const auto&) {});
+    homed = waitFor(
+        [&] {
+            for (const auto& a : client.status().axes)
+                if (!a.homed || a.moving)
+                    return false;
+            return client.status().axes.size() == 4;
+        },
+        20000);
+    ASSERT_TRUE(homed);
+    // From now on the first MotionDone of Z never arrives.
+    int dropped = 0;
+    deviceEnd.drop = [&](const proto::Frame& f) {
+        if (f.type != static_cast<std::uint8_t>(proto::MsgType::Event) || dropped > 0)
+            return false;
+        const auto e = proto::decodeEvent(f.payload);
+        if (e && e->kind == proto::EventKind::MotionDone && e->axis == 2) {
+            ++dropped;
+            return true;
+        }
+        return false;
+    };
+    RecipeRunner runner(&client);
+    QStringList notes;
+    QObject::connect(&runner, &RecipeRunner::message, &runner, [&](const QString& m, bool) { notes << m; });
+    QTemporaryDir dir;
+    QString error;
+    ASSERT_TRUE(runner.setPlan(planFor(samplingRecipe("A1:A2"), client), QStringLiteral("two"), &error));
+    ASSERT_TRUE(runner.start(dir.filePath(QStringLiteral("run.jsonl")), &error)) << error.toStdString();
+    ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Finished || runner.state() == RunState::Stopped; },
+                        RecipeRunner::kMoveGraceMs + 20000));
+    EXPECT_EQ(dropped, 1);
+    EXPECT_EQ(runner.state(), RunState::Finished) << notes.join(QLatin1Char('\n')).toStdString();
+    EXPECT_TRUE(notes.join(QLatin1Char('\n')).contains(QStringLiteral("the status shows it completed"))) << notes.join(QLatin1Char('\n')).toStdString();
+    client.setTransport(nullptr);
+}

@@ -1,0 +1,78 @@
+#pragma once
+// The calibration wizard of a deck slot: for each of its three teach wells
+// (A1, the end of row A, the start of the last row) go near it, put the tip over
+// its centre with the jog pad, and record; the fit (motion/plans/plates/
+// calibration.h) shows rotation, scale and each point's residual, warns past
+// 0.2 mm, and is kept per slot when saved.
+#include "device/client/instrument_client.h"
+#include "motion/plans/plates/calibration.h"
+#include "motion/plans/plates/deck.h"
+
+#include <QWidget>
+
+#include <functional>
+#include <map>
+
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QTableWidget;
+
+namespace ui {
+
+class JogPad;
+
+class CalibrationPanel : public QWidget {
+    Q_OBJECT
+public:
+    using Confirm = std::function<bool(const QString& question)>;
+
+    explicit CalibrationPanel(dev::InstrumentClient* client, QWidget* parent = nullptr);
+    void setConfirm(Confirm confirm) { m_confirm = std::move(confirm); }
+    void setDeck(const plates::Deck& deck);
+    /// What sits in each slot (from the recipe) and the Z to travel at there.
+    void setSlotLabware(const std::map<std::string, plates::Labware>& bySlot, const std::map<std::string, double>& safeZBySlot);
+    void setCalibrations(const std::vector<plates::SlotCalibration>& calibrations);
+    const std::vector<plates::SlotCalibration>& calibrations() const { return m_calibrations; }
+
+    QString slotId() const;
+    void setSlot(const QString& id);
+    /// Records the tip's position as teach point `index` (0–2), as the button does.
+    void recordPoint(int index);
+    /// The fit of the points taught so far (empty before three).
+    const std::optional<plates::CalibrationFit>& fit() const { return m_fit; }
+    /// Keeps the fit for the slot (as "Save calibration" does); false without a fit.
+    bool saveSlot();
+
+signals:
+    void calibrationsChanged();
+    void problem(const QString& message);
+
+private:
+    void rebuild();
+    void refit();
+    void goTo(int index);
+    const plates::Labware* labware() const;
+    plates::PlateTransform currentTransform() const;
+
+    dev::InstrumentClient* m_client;
+    Confirm m_confirm;
+    plates::Deck m_deck;
+    std::map<std::string, plates::Labware> m_bySlot;
+    std::map<std::string, double> m_safeZ;
+    std::vector<plates::SlotCalibration> m_calibrations;
+    std::vector<plates::TeachPoint> m_points;
+    std::vector<bool> m_recorded;
+    std::optional<plates::CalibrationFit> m_fit;
+    QComboBox* m_slot;
+    QComboBox* m_model;
+    QLabel* m_status;
+    QTableWidget* m_table;
+    JogPad* m_pad;
+    QLabel* m_result;
+    QLabel* m_warnings;
+    QPushButton* m_save;
+    QPushButton* m_forget;
+};
+
+} // namespace ui

@@ -1,0 +1,494 @@
+#include "widgets/plates/plates_screen.h"
+
+#include "device/files/plates/calibration_file.h"
+#include "device/files/plates/deck_file.h"
+#include "device/files/plates/labware_file.h"
+#include "device/files/recipes/recipe_loader.h"
+#include "device/files/text_file.h"
+#include "widgets/plates/calibration_panel.h"
+#include "widgets/plates/plate_map.h"
+#include "widgets/plates/recipe_editor.h"
+#include "widgets/plates/run_panel.h"
+
+#include <QComboBox>
+#include <QDateTime>
+#include <QDir>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QSplitter>
+#include <QTabWidget>
+#include <QVBoxLayout>
+
+namespace ui {
+
+namespace {
+QLabel* legendChip(PlateMap::WellState s, const QString& text, QWidget* parent)
+{
+    auto* l = new QLabel(QStringLiteral("<span style='background:%1; border:1px solid #777;'>&nbsp;&nbsp;&nbsp;&nbsp;</span> %2")
+                             .arg(PlateMap::colorOf(s).name(), text),
+                         parent);
+    return l;
+}
+} // namespace
+
+PlatesScreen::PlatesScreen(dev::InstrumentClient* analyzer, QWidget* parent)
+    : QWidget(parent), m_client(analyzer), m_runner(new jobs::RecipeRunner(analyzer, this)), m_deck(platefiles::builtinDeck())
+{
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    auto* left = new QWidget(split);
+    auto* lv = new QVBoxLayout(left);
+    auto* pick = new QHBoxLayout;
+    pick->addWidget(new QLabel(tr("Plate"), left));
+    m_plate = new QComboBox(left);
+    pick->addWidget(m_plate, 1);
+    lv->addLayout(pick);
+    m_map = new PlateMap(left);
+    lv->addWidget(m_map, 1);
+    auto* legend = new QHBoxLayout;
+    legend->addWidget(legendChip(PlateMap::WellState::Unused, tr("unused"), left));
+    legend->addWidget(legendChip(PlateMap::WellState::Planned, tr("planned"), left));
+    legend->addWidget(legendChip(PlateMap::WellState::Current, tr("current"), left));
+    legend->addWidget(legendChip(PlateMap::WellState::Done, tr("done"), left));
+    legend->addWidget(legendChip(PlateMap::WellState::Error, tr("error"), left));
+    legend->addStretch();
+    lv->addLayout(legend);
+    m_hover = new QLabel(left);
+    m_hover->setMinimumHeight(m_hover->fontMetrics().height() * 2);
+    m_hover->setWordWrap(true);
+    m_hover->setStyleSheet(QStringLiteral("color:#333;"));
+    lv->addWidget(m_hover);
+    m_selection = new QLabel(left);
+    lv->addWidget(m_selection);
+    auto* selBar = new QHBoxLayout;
+    m_useSelection = new QPushButton(tr("Use for this step"), left);
+    m_useSelection->setToolTip(tr("Set the selected step's wells (and plate) to the selection"));
+    m_aspirateSel = new QPushButton(tr("Aspirate from these"), left);
+    m_dispenseSel = new QPushButton(tr("Dispense into these"), left);
+    auto* clear = new QPushButton(tr("Clear"), left);
+    for (auto* b : {m_useSelection, m_aspirateSel, m_dispenseSel, clear})
+        selBar->addWidget(b);
+    selBar->addStretch();
+    lv->addLayout(selBar);
+
+    m_tabs = new QTabWidget(split);
+    m_editor = new RecipeEditor(m_tabs);
+    m_calibration = new CalibrationPanel(analyzer, m_tabs);
+    m_run = new RunPanel(m_runner, m_tabs);
+    m_tabs->addTab(m_editor, tr("Recipe"));
+    m_tabs->addTab(m_calibration, tr("Calibrate"));
+    m_tabs->addTab(m_run, tr("Run"));
+    split->addWidget(left);
+    split->addWidget(m_tabs);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 2);
+    auto* v = new QVBoxLayout(this);
+    v->setContentsMargins(0, 0, 0, 0);
+    v->addWidget(split);
+
+    m_editor->setDeck(m_deck);
+    m_calibration->setDeck(m_deck);
+
+    connect(m_plate, qOverload<int>(&QComboBox::activated), this, [this] { refreshMap(); });
+    connect(m_map, &PlateMap::hovered, this, [this](const QString& t) { m_hover->setText(t); });
+    connect(m_map, &PlateMap::selectionChanged, this, [this] {
+        const auto specs = plates::describeWells(std::vector<plates::WellId>(m_map->selection().begin(), m_map->selection().end()));
+        QStringList parts;
+        for (const auto& s : specs)
+            parts << QString::fromStdString(s);
+        m_selection->setText(m_map->selection().empty() ? tr("Click a well or drag across wells to select them (Ctrl adds).")
+                                                        : tr("%1 wells selected: %2").arg(m_map->selection().size()).arg(parts.join(QStringLiteral(", "))));
+        const bool any = !m_map->selection().empty();
+        m_useSelection->setEnabled(any && m_editor->currentStep() >= 0);
+        m_aspirateSel->setEnabled(any);
+        m_dispenseSel->setEnabled(any);
+    });
+    connect(m_useSelection, &QPushButton::clicked, this, [this] { selectionToStep(0); });
+    connect(m_aspirateSel, &QPushButton::clicked, this, [this] { selectionToStep(1); });
+    connect(m_dispenseSel, &QPushButton::clicked, this, [this] { selectionToStep(2); });
+    connect(clear, &QPushButton::clicked, m_map, &PlateMap::clearSelection);
+    connect(m_editor, &RecipeEditor::recipeChanged, this, &PlatesScreen::revalidate);
+    connect(m_editor, &RecipeEditor::currentStepChanged, this, [this] { emit m_map->selectionChanged(); });
+    connect(m_editor, &RecipeEditor::newRequested, this, [this] {
+        if (m_editor->isModified() && m_confirm && !m_confirm(tr("Discard the changes to this recipe?")))
+            return;
+        newRecipe();
+    });
+    connect(m_editor, &RecipeEditor::openRequested, this, [this] {
+        if (m_editor->isModified() && m_confirm && !m_confirm(tr("Discard the changes to this recipe?")))
+            return;
+        const QString path = m_choose ? m_choose(tr("Open recipe"), tr("Recipes (*.recipe.json *.json)"), false) : QString();
+        if (!path.isEmpty())
+            openRecipe(path);
+    });
+    auto saveAs = [this] {
+        const QString path = m_choose ? m_choose(tr("Save recipe"), tr("Recipes (*.recipe.json)"), true) : QString();
+        if (!path.isEmpty())
+            saveRecipe(path);
+    };
+    connect(m_editor, &RecipeEditor::saveRequested, this, [this, saveAs] {
+        if (m_editor->path().isEmpty())
+            saveAs();
+        else
+            saveRecipe(m_editor->path());
+    });
+    connect(m_editor, &RecipeEditor::saveAsRequested, this, saveAs);
+    connect(m_editor, &RecipeEditor::importLabwareRequested, this, &PlatesScreen::importLabware);
+    connect(m_calibration, &CalibrationPanel::calibrationsChanged, this, [this] {
+        m_calibrations = m_calibration->calibrations();
+        saveCalibrations();
+        revalidate();
+    });
+    connect(m_calibration, &CalibrationPanel::problem, this, &PlatesScreen::problem);
+    connect(m_run, &RunPanel::runRequested, this, [this] { runRecipe(); });
+    connect(m_run, &RunPanel::resumeFromLogRequested, this, &PlatesScreen::resumeFromLog);
+    connect(m_run, &RunPanel::problem, this, &PlatesScreen::problem);
+    connect(m_runner, &jobs::RecipeRunner::progressChanged, this, &PlatesScreen::refreshMap);
+    connect(m_runner, &jobs::RecipeRunner::message, this, [this](const QString& text, bool isProblem) {
+        if (isProblem)
+            emit problem(text);
+        else
+            emit note(text);
+    });
+    m_logDir = QDir::tempPath();
+    newRecipe();
+}
+
+void PlatesScreen::setConfirm(Confirm c)
+{
+    m_confirm = c;
+    m_calibration->setConfirm(std::move(c));
+}
+
+void PlatesScreen::setInterruptedDecider(jobs::InterruptedDecider d)
+{
+    m_decide = d;
+    m_run->setInterruptedDecider(std::move(d));
+}
+
+void PlatesScreen::setCalibrationFile(const QString& path)
+{
+    m_calibrationFile = path;
+    m_calibrations.clear();
+    std::string text;
+    QString error;
+    if (QFileInfo::exists(path)) {
+        if (!files::readText(path, &text, &error)) {
+            emit problem(error);
+        } else {
+            const platefiles::CalibrationRead r = platefiles::parseCalibration(text);
+            if (!r.ok())
+                emit problem(tr("the slot calibration %1 cannot be read; the slots use their nominal places:\n%2")
+                                 .arg(path, QString::fromStdString(r.problems.format(QFileInfo(path).fileName().toStdString())).trimmed()));
+            else
+                m_calibrations = r.calibrations;
+        }
+    }
+    m_calibration->setCalibrations(m_calibrations);
+    revalidate();
+}
+
+void PlatesScreen::saveCalibrations()
+{
+    if (m_calibrationFile.isEmpty())
+        return;
+    QDir().mkpath(QFileInfo(m_calibrationFile).absolutePath());
+    QString error;
+    if (!files::writeAtomically(m_calibrationFile, platefiles::writeCalibration(m_deck.id, m_calibrations), &error))
+        emit problem(error);
+    else
+        emit note(tr("slot calibration saved to %1").arg(m_calibrationFile));
+}
+
+void PlatesScreen::newRecipe()
+{
+    plates::Recipe r;
+    r.name = tr("new recipe").toStdString();
+    r.plates = {{"samples", m_deck.plateSlots.empty() ? "1" : m_deck.plateSlots.front().id, "sbs-96", 55, 70}};
+    m_editor->setRecipe(r, QString());
+    refreshPlateChoices();
+}
+
+QString PlatesScreen::recipePath() const { return m_editor->path(); }
+
+QString PlatesScreen::baseDir() const
+{
+    return m_editor->path().isEmpty() ? QDir::currentPath() : QFileInfo(m_editor->path()).absolutePath();
+}
+
+bool PlatesScreen::openRecipe(const QString& path)
+{
+    const platefiles::LoadedRecipe l = platefiles::loadRecipe(path, m_deck, m_calibrations);
+    if (!l.readable) {
+        emit problem(tr("%1 cannot be opened:\n%2").arg(QFileInfo(path).fileName(), l.messages.join(QLatin1Char('\n'))));
+        return false;
+    }
+    m_editor->setRecipe(l.recipe, path);
+    refreshPlateChoices();
+    emit note(tr("opened %1").arg(path));
+    emit recipePathChanged(path);
+    return true;
+}
+
+bool PlatesScreen::saveRecipe(const QString& path)
+{
+    QString error;
+    if (!files::writeAtomically(path, platefiles::writeRecipe(m_editor->recipe()), &error)) {
+        emit problem(error);
+        return false;
+    }
+    m_editor->markSaved(path);
+    emit note(tr("saved %1").arg(path));
+    emit recipePathChanged(path);
+    return true;
+}
+
+plates::PlanContext PlatesScreen::context(QStringList* messages) const
+{
+    plates::PlanContext c;
+    c.deck = m_deck;
+    c.calibration = platefiles::calibrationTransforms(m_calibrations);
+    platefiles::resolveLabware(m_editor->recipe(), baseDir(), c, messages);
+    return c;
+}
+
+void PlatesScreen::revalidate()
+{
+    QStringList labwareMessages;
+    m_context = context(&labwareMessages);
+    const plates::PlanContext& c = m_context;
+    m_plan = plates::planRecipe(m_editor->recipe(), c);
+    QStringList errors = labwareMessages, warnings;
+    QList<int> steps;
+    for (int i = 0; i < labwareMessages.size(); ++i)
+        steps << -1;
+    for (const auto& p : m_plan.problems) {
+        const QString line = QStringLiteral("%1: %2").arg(QString::fromStdString(p.path), QString::fromStdString(p.message));
+        (p.warning ? warnings : errors) << line;
+        int step = -1;
+        if (p.path.rfind("steps[", 0) == 0)
+            step = QString::fromStdString(p.path.substr(6)).section(QLatin1Char(']'), 0, 0).toInt();
+        if (!p.warning)
+            steps << step;
+    }
+    for (const auto& p : m_plan.problems)
+        if (p.warning)
+            steps << -1;
+    m_editor->showProblems(errors, warnings, steps);
+    m_planOk = errors.isEmpty() && m_plan.ok() && !m_plan.ops.empty();
+    m_run->setPlan(m_plan, m_planOk, errors.isEmpty() ? (m_plan.ops.empty() ? tr("the recipe has no steps") : QString()) : errors.first());
+    refreshPlateChoices();
+
+    // The calibration wizard teaches on what the recipe puts in each slot.
+    std::map<std::string, plates::Labware> bySlot;
+    std::map<std::string, double> safeZ;
+    for (const auto& p : m_editor->recipe().plates) {
+        const auto lw = c.labware.find(p.labware);
+        if (lw != c.labware.end()) {
+            bySlot[p.slot] = lw->second;
+            safeZ[p.slot] = p.safeZMm;
+        }
+    }
+    m_calibration->setSlotLabware(bySlot, safeZ);
+}
+
+void PlatesScreen::refreshPlateChoices()
+{
+    const QString keep = m_plate->currentText();
+    m_plate->clear();
+    for (const auto& p : m_editor->recipe().plates)
+        m_plate->addItem(QString::fromStdString(p.name));
+    const int i = m_plate->findText(keep);
+    m_plate->setCurrentIndex(i >= 0 ? i : 0);
+    refreshMap();
+}
+
+void PlatesScreen::showPlate(const QString& plateName)
+{
+    const int i = m_plate->findText(plateName);
+    if (i >= 0) {
+        m_plate->setCurrentIndex(i);
+        refreshMap();
+    }
+}
+
+void PlatesScreen::showTab(const QString& name)
+{
+    const QStringList tabs = {QStringLiteral("recipe"), QStringLiteral("calibrate"), QStringLiteral("run")};
+    if (tabs.contains(name))
+        m_tabs->setCurrentIndex(tabs.indexOf(name));
+}
+
+void PlatesScreen::refreshMap()
+{
+    const std::string name = m_plate->currentText().toStdString();
+    const plates::RecipePlate* p = m_editor->recipe().plate(name);
+    const plates::PlanContext& c = m_context;
+    const auto lw = p ? c.labware.find(p->labware) : c.labware.end();
+    if (!p || lw == c.labware.end()) {
+        if (!m_map->labware().wells.empty())
+            m_map->setLabware({}, QString());
+        return;
+    }
+    const QString title = tr("%1 in slot %2: %3")
+                              .arg(QString::fromStdString(p->name), QString::fromStdString(p->slot), QString::fromStdString(lw->second.displayName));
+    if (m_map->labware().id != lw->second.id || m_map->labware().wells.size() != lw->second.wells.size())
+        m_map->setLabware(lw->second, title);
+    m_map->setTitle(title);
+    m_map->setTransform(c.transform(p->slot), c.calibration.count(p->slot) > 0);
+    QMap<QString, PlateMap::WellState> states;
+    QMap<QString, double> volumes;
+    for (const auto& w : m_plan.wells)
+        if (w.plate == name)
+            volumes[QString::fromStdString(w.well)] = w.dispensedUl - w.aspiratedUl;
+    const auto& opStates = m_runner->opStates();
+    const bool sameRun = opStates.size() == m_plan.ops.size() && m_runner->plan().fingerprint == m_plan.fingerprint;
+    const jobs::RunProgress pr = m_runner->progress();
+    for (const auto& op : m_plan.ops) {
+        if (op.plate != name || op.well.empty())
+            continue;
+        const QString well = QString::fromStdString(op.well);
+        PlateMap::WellState st = PlateMap::WellState::Planned;
+        if (sameRun) {
+            const auto s = opStates[static_cast<std::size_t>(op.index)];
+            if (s == platefiles::OpState::Done || s == platefiles::OpState::Skipped)
+                st = PlateMap::WellState::Done;
+            if (op.index == pr.currentOp && m_runner->state() != jobs::RunState::Idle && m_runner->state() != jobs::RunState::Finished)
+                st = m_runner->state() == jobs::RunState::Stopped ? PlateMap::WellState::Error : PlateMap::WellState::Current;
+        }
+        // A well visited several times shows its least finished visit.
+        const auto prev = states.constFind(well);
+        if (prev == states.constEnd() || *prev == PlateMap::WellState::Done || st == PlateMap::WellState::Current || st == PlateMap::WellState::Error)
+            states[well] = st;
+    }
+    m_map->setWellStates(states);
+    m_map->setVolumes(volumes);
+}
+
+void PlatesScreen::selectionToStep(int mode)
+{
+    std::vector<plates::WellId> wells(m_map->selection().begin(), m_map->selection().end());
+    if (wells.empty())
+        return;
+    const std::vector<std::string> specs = {[&] {
+        std::string joined;
+        for (const auto& s : plates::describeWells(wells))
+            joined += (joined.empty() ? "" : ", ") + s;
+        return joined;
+    }()};
+    const std::string plate = m_editor->recipe().plates.size() > 1 ? m_plate->currentText().toStdString() : std::string();
+    if (mode == 0) {
+        const int i = m_editor->currentStep();
+        if (i < 0)
+            return;
+        m_editor->edit(tr("use the selection in step %1").arg(i + 1), [i, specs, plate](plates::Recipe& r) {
+            auto& s = r.steps[static_cast<std::size_t>(i)];
+            s.wells = specs;
+            s.station.clear();
+            if (!plate.empty())
+                s.plate = plate;
+        });
+        return;
+    }
+    plates::Step s;
+    s.type = mode == 1 ? plates::StepType::Aspirate : plates::StepType::Dispense;
+    s.wells = specs;
+    s.plate = plate;
+    s.volumeUl = 10;
+    const int at = m_editor->currentStep() + 1;
+    m_editor->edit(mode == 1 ? tr("aspirate from the selection") : tr("dispense into the selection"), [at, s](plates::Recipe& r) {
+        r.steps.insert(r.steps.begin() + std::min<std::size_t>(static_cast<std::size_t>(at), r.steps.size()), s);
+    });
+    m_editor->setCurrentStep(at);
+}
+
+bool PlatesScreen::runRecipe()
+{
+    if (!m_planOk) {
+        emit problem(tr("the recipe does not validate: see its problems"));
+        return false;
+    }
+    const auto& st = m_client->status();
+    plates::StartState start;
+    if (st.axes.size() >= 4)
+        start = {st.axes[0].commanded, st.axes[1].commanded, st.axes[2].commanded, st.axes[3].commanded};
+    const plates::RecipePlan plan = plates::planRecipe(m_editor->recipe(), m_context, start);
+    QString error;
+    const QString name = QString::fromStdString(m_editor->recipe().name.empty() ? "recipe" : m_editor->recipe().name);
+    if (!m_runner->setPlan(plan, name, &error)) {
+        emit problem(error);
+        return false;
+    }
+    double deepest = 0;
+    for (const auto& p : m_editor->recipe().plates)
+        deepest = std::max(deepest, p.depthZMm);
+    if (m_confirm
+        && !m_confirm(tr("Run \"%1\": %2 wells, about %3. The tip goes down to Z %4 mm; the analyzer moves on its own until the end "
+                         "(Pause, Abort, or Esc for the E-stop). Start?")
+                          .arg(name)
+                          .arg(plan.ops.size())
+                          .arg(RunPanel::duration(plan.totalTimeS))
+                          .arg(deepest)))
+        return false;
+    QString safe = name;
+    safe.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9_.-]+")), QStringLiteral("-"));
+    QDir().mkpath(m_logDir);
+    const QString log = QDir(m_logDir).filePath(
+        QStringLiteral("%1-%2.run.jsonl").arg(safe, QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss-zzz"))));
+    if (!m_runner->start(log, &error)) {
+        emit problem(error);
+        return false;
+    }
+    showTab(QStringLiteral("run"));
+    return true;
+}
+
+void PlatesScreen::resumeFromLog()
+{
+    const QString path = m_choose ? m_choose(tr("Resume from run log"), tr("Run logs (*.run.jsonl *.jsonl)"), false) : QString();
+    if (path.isEmpty())
+        return;
+    const plates::RecipePlan plan = plates::planRecipe(m_editor->recipe(), m_context, jobs::RecipeRunner::resumeStart(path, *m_client));
+    QString error;
+    if (!m_runner->setPlan(plan, QString::fromStdString(m_editor->recipe().name), &error) || !m_runner->resumeFromLog(path, m_decide, &error)) {
+        emit problem(error);
+        return;
+    }
+    showTab(QStringLiteral("run"));
+}
+
+void PlatesScreen::importLabware()
+{
+    const QString from = m_choose ? m_choose(tr("Import labware"), tr("Labware definitions (*.json)"), false) : QString();
+    if (from.isEmpty())
+        return;
+    std::string text;
+    QString error;
+    if (!files::readText(from, &text, &error)) {
+        emit problem(error);
+        return;
+    }
+    const platefiles::LabwareRead r = platefiles::parseLabware(text);
+    if (!r.labware) {
+        emit problem(tr("%1 is not a plate definition BenchPilot can use:\n%2")
+                         .arg(QFileInfo(from).fileName(), QString::fromStdString(r.problems.format(QFileInfo(from).fileName().toStdString())).trimmed()));
+        return;
+    }
+    const QString to = QDir(baseDir()).filePath(QString::fromStdString(r.labware->id) + QStringLiteral(".labware.json"));
+    if (!files::writeAtomically(to, platefiles::writeLabware(*r.labware), &error)) {
+        emit problem(error);
+        return;
+    }
+    const std::string ref = m_editor->path().isEmpty() ? to.toStdString() : QFileInfo(to).fileName().toStdString();
+    const std::string plate = m_plate->currentText().toStdString();
+    m_editor->edit(tr("use imported labware %1").arg(QString::fromStdString(r.labware->id)), [plate, ref](plates::Recipe& rec) {
+        for (auto& p : rec.plates)
+            if (p.name == plate)
+                p.labware = ref;
+    });
+    emit note(tr("imported %1 (%2 wells) as %3").arg(QString::fromStdString(r.labware->displayName)).arg(r.labware->wells.size()).arg(to));
+}
+
+} // namespace ui

@@ -1,0 +1,79 @@
+#pragma once
+// The recipe editor: the plates the recipe uses (slot, labware, heights), its
+// steps as a list with a form for the one selected, and the problems the plan
+// finds, each leading to its step. Every change is one undoable command on a
+// QUndoStack (Ctrl+Z / Ctrl+Shift+Z); typing into one field merges into one.
+#include "motion/plans/plates/deck.h"
+#include "motion/plans/recipes/recipe.h"
+
+#include <QWidget>
+
+#include <functional>
+
+class QLineEdit;
+class QListWidget;
+class QTableWidget;
+class QToolButton;
+class QUndoStack;
+
+namespace ui {
+
+class StepForm;
+
+class RecipeEditor : public QWidget {
+    Q_OBJECT
+public:
+    explicit RecipeEditor(QWidget* parent = nullptr);
+
+    void setDeck(const plates::Deck& deck);
+    /// Replaces the recipe (after New or Open): the undo history starts afresh.
+    void setRecipe(const plates::Recipe& recipe, const QString& path);
+    const plates::Recipe& recipe() const { return m_recipe; }
+    QString path() const { return m_path; }
+    bool isModified() const;
+    void markSaved(const QString& path);
+    QUndoStack* undoStack() const { return m_undo; }
+
+    int currentStep() const;
+    void setCurrentStep(int index);
+    /// Shows the plan's problems; selecting one goes to its step.
+    void showProblems(const QStringList& errors, const QStringList& warnings, const QList<int>& steps);
+
+    /// Changes the recipe as one undoable command named `text`. Consecutive
+    /// commands with the same non-negative `mergeId` merge into one.
+    void edit(const QString& text, const std::function<void(plates::Recipe&)>& change, int mergeId = -1);
+    /// Called by the undo commands: shows `r` without making a command.
+    void apply(const plates::Recipe& r);
+
+    /// A one-line summary of a step for the list: "2. dispense 50 µL · assay row A ← reagents A1".
+    static QString stepSummary(const plates::Step& s, int index);
+
+signals:
+    void recipeChanged();
+    void currentStepChanged(int index);
+    void newRequested();
+    void openRequested();
+    void saveRequested();
+    void saveAsRequested();
+    void importLabwareRequested();
+
+private:
+    void refreshPlates();
+    void refreshSteps();
+    void addStep(plates::StepType type);
+    void moveStep(int delta);
+
+    plates::Recipe m_recipe;
+    plates::Deck m_deck;
+    QString m_path;
+    QUndoStack* m_undo;
+    bool m_updating = false;
+    QLineEdit* m_name;
+    QTableWidget* m_plates;
+    QListWidget* m_steps;
+    StepForm* m_form;
+    QListWidget* m_problems;
+    QList<int> m_problemSteps;
+};
+
+} // namespace ui

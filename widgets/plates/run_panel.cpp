@@ -1,0 +1,173 @@
+#include "widgets/plates/run_panel.h"
+
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QListWidget>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QTime>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace ui {
+
+using jobs::RunState;
+
+QString RunPanel::duration(double seconds)
+{
+    const long s = std::lround(std::max(0.0, seconds));
+    if (s < 60)
+        return tr("%1 s").arg(s);
+    if (s < 3600)
+        return tr("%1 min %2 s").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'));
+    return tr("%1 h %2 min").arg(s / 3600).arg((s % 3600) / 60, 2, 10, QLatin1Char('0'));
+}
+
+RunPanel::RunPanel(jobs::RecipeRunner* runner, QWidget* parent) : QWidget(parent), m_runner(runner)
+{
+    auto* v = new QVBoxLayout(this);
+    auto* controls = new QHBoxLayout;
+    m_run = new QPushButton(tr("Run"), this);
+    m_run->setToolTip(tr("Run the recipe from its first well, logging every well (F5)"));
+    m_run->setShortcut(QKeySequence(Qt::Key_F5));
+    m_pause = new QPushButton(tr("Pause"), this);
+    m_pause->setToolTip(tr("Stop after the well under way, with the tip up"));
+    m_resume = new QPushButton(tr("Resume"), this);
+    m_resume->setToolTip(tr("Continue a paused or stopped run"));
+    m_abort = new QPushButton(tr("Abort"), this);
+    m_abort->setToolTip(tr("Stop at once, then raise the tip; the log can resume it later"));
+    m_abort->setStyleSheet(QStringLiteral("QPushButton:enabled { color:#b71c1c; font-weight:bold; }"));
+    m_fromLog = new QPushButton(tr("Resume from log…"), this);
+    m_fromLog->setToolTip(tr("Continue a run that ended early (a crash, a pulled cable) from its run log: wells already done are not done again"));
+    for (auto* b : {m_run, m_pause, m_resume, m_abort})
+        controls->addWidget(b);
+    controls->addStretch();
+    controls->addWidget(m_fromLog);
+    v->addLayout(controls);
+
+    m_progress = new QProgressBar(this);
+    m_progress->setRange(0, 1000);
+    m_progress->setTextVisible(true);
+    v->addWidget(m_progress);
+    m_state = new QLabel(this);
+    m_current = new QLabel(this);
+    m_times = new QLabel(this);
+    v->addWidget(m_state);
+    v->addWidget(m_current);
+    v->addWidget(m_times);
+
+    auto* planBox = new QGroupBox(tr("Plan (dry run: nothing moves)"), this);
+    auto* pv = new QVBoxLayout(planBox);
+    m_summary = new QLabel(planBox);
+    m_summary->setWordWrap(true);
+    pv->addWidget(m_summary);
+    m_table = new QTableWidget(0, 8, planBox);
+    m_table->setHorizontalHeaderLabels({tr("#"), tr("Step"), tr("What"), tr("Where"), tr("X (mm)"), tr("Y (mm)"), tr("Plunger (µL)"), tr("Starts at")});
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->verticalHeader()->setVisible(false);
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    pv->addWidget(m_table);
+    v->addWidget(planBox, 3);
+
+    m_messages = new QListWidget(this);
+    m_messages->setMaximumHeight(100);
+    m_messages->setWordWrap(true);
+    v->addWidget(m_messages, 1);
+
+    connect(m_run, &QPushButton::clicked, this, &RunPanel::runRequested);
+    connect(m_fromLog, &QPushButton::clicked, this, &RunPanel::resumeFromLogRequested);
+    connect(m_pause, &QPushButton::clicked, m_runner, &jobs::RecipeRunner::pause);
+    connect(m_abort, &QPushButton::clicked, m_runner, &jobs::RecipeRunner::abort);
+    connect(m_resume, &QPushButton::clicked, this, [this] {
+        QString error;
+        if (!m_runner->resume(m_decide, &error))
+            emit problem(error);
+    });
+    connect(m_runner, &jobs::RecipeRunner::stateChanged, this, &RunPanel::refresh);
+    connect(m_runner, &jobs::RecipeRunner::progressChanged, this, &RunPanel::refresh);
+    connect(m_runner, &jobs::RecipeRunner::message, this, [this](const QString& text, bool problemText) {
+        auto* item = new QListWidgetItem(QStringLiteral("%1  %2").arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), text), m_messages);
+        if (problemText)
+            item->setForeground(QColor(0xc6, 0x28, 0x28));
+        m_messages->scrollToBottom();
+        while (m_messages->count() > 200)
+            delete m_messages->takeItem(0);
+    });
+    // Elapsed time and ETA tick between wells too.
+    auto* tick = new QTimer(this);
+    tick->setInterval(500);
+    connect(tick, &QTimer::timeout, this, [this] {
+        if (isVisible() && m_runner->state() == RunState::Running)
+            refresh();
+    });
+    tick->start();
+    refresh();
+}
+
+void RunPanel::setPlan(const plates::RecipePlan& plan, bool runnable, const QString& why)
+{
+    m_runnable = runnable;
+    int wells = 0;
+    for (const auto& w : plan.wells)
+        wells += w.visits > 0;
+    m_summary->setText(runnable ? tr("%1 ops over %2 wells · %3 µL dispensed, %4 µL aspirated · plunger %5 → %6 µL · about %7")
+                                      .arg(plan.ops.size())
+                                      .arg(wells)
+                                      .arg(plan.totalDispensedUl, 0, 'g', 6)
+                                      .arg(plan.totalAspiratedUl, 0, 'g', 6)
+                                      .arg(plan.pumpStartUl, 0, 'g', 6)
+                                      .arg(plan.pumpEndUl, 0, 'g', 6)
+                                      .arg(duration(plan.totalTimeS))
+                                : tr("Not runnable: %1").arg(why));
+    const int rows = std::min(static_cast<int>(plan.ops.size()), kMaxPlanRows);
+    m_table->setUpdatesEnabled(false);
+    m_table->setRowCount(rows);
+    for (int r = 0; r < rows; ++r) {
+        const plates::PlanOp& op = plan.ops[static_cast<std::size_t>(r)];
+        const QStringList cells = {QString::number(op.index + 1),
+                                   QString::number(op.step + 1),
+                                   QString::fromStdString(op.label()),
+                                   QString::fromStdString(op.where()),
+                                   QString::number(op.at.x, 'f', 2),
+                                   QString::number(op.at.y, 'f', 2),
+                                   op.pumpNetUl == 0 ? QStringLiteral("0") : QString::number(op.pumpNetUl, 'f', 2),
+                                   duration(op.startS)};
+        for (int c = 0; c < cells.size(); ++c) {
+            auto* item = m_table->item(r, c);
+            if (!item)
+                m_table->setItem(r, c, item = new QTableWidgetItem);
+            item->setText(cells[c]);
+        }
+    }
+    m_table->setUpdatesEnabled(true);
+    refresh();
+}
+
+void RunPanel::refresh()
+{
+    const RunState s = m_runner->state();
+    const jobs::RunProgress p = m_runner->progress();
+    const bool busy = s == RunState::Running || s == RunState::Pausing || s == RunState::Aborting;
+    m_run->setEnabled(m_runnable && !busy && s != RunState::Paused);
+    m_fromLog->setEnabled(m_runnable && !busy && s != RunState::Paused);
+    m_pause->setEnabled(s == RunState::Running);
+    m_resume->setEnabled(s == RunState::Paused || (s == RunState::Stopped && !m_runner->logPath().isEmpty()));
+    m_abort->setEnabled(s == RunState::Running || s == RunState::Pausing || s == RunState::Paused);
+    m_progress->setValue(static_cast<int>(std::lround(p.fraction * 1000)));
+    m_progress->setFormat(tr("%1 of %2 wells").arg(p.opsDone).arg(p.opsTotal));
+    m_state->setText(tr("State: %1").arg(jobs::runStateName(s)));
+    m_current->setText(p.currentOp >= 0 && s != RunState::Idle ? tr("Current: %1").arg(p.currentLabel) : tr("Current: —"));
+    m_times->setText(s == RunState::Idle ? QString()
+                                         : tr("Elapsed %1 · ETA %2").arg(duration(p.elapsedS), s == RunState::Finished ? tr("done") : duration(p.etaS)));
+    if (p.currentOp >= 0 && p.currentOp < m_table->rowCount() && busy)
+        m_table->selectRow(p.currentOp);
+}
+
+} // namespace ui

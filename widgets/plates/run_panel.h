@@ -1,0 +1,55 @@
+#pragma once
+// Running a recipe: the plan (the dry run: every well with its place, plunger
+// move and time, the totals), Run / Pause / Resume / Abort, progress with the
+// current well, elapsed time and ETA, and what the run said along the way.
+#include "device/jobs/recipe_runner.h"
+
+#include <QWidget>
+
+class QLabel;
+class QListWidget;
+class QProgressBar;
+class QPushButton;
+class QTableWidget;
+
+namespace ui {
+
+class RunPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit RunPanel(jobs::RecipeRunner* runner, QWidget* parent = nullptr);
+    void setInterruptedDecider(jobs::InterruptedDecider decide) { m_decide = std::move(decide); }
+    /// The plan to show; `runnable` false (with `why`) disables Run.
+    void setPlan(const plates::RecipePlan& plan, bool runnable, const QString& why);
+
+    /// "2 min 53 s", "48 s", "1 h 05 min".
+    static QString duration(double seconds);
+    /// Rows of the plan table at most (the totals cover every well).
+    static constexpr int kMaxPlanRows = 5000;
+
+signals:
+    void runRequested();
+    void resumeFromLogRequested();
+    void problem(const QString& message);
+
+private:
+    void refresh();
+
+    jobs::RecipeRunner* m_runner;
+    jobs::InterruptedDecider m_decide;
+    bool m_runnable = false;
+    QLabel* m_summary;
+    QTableWidget* m_table;
+    QPushButton* m_run;
+    QPushButton* m_pause;
+    QPushButton* m_resume;
+    QPushButton* m_abort;
+    QPushButton* m_fromLog;
+    QProgressBar* m_progress;
+    QLabel* m_current;
+    QLabel* m_times;
+    QLabel* m_state;
+    QListWidget* m_messages;
+};
+
+} // namespace ui
