@@ -165,6 +165,28 @@ Rect tileField(const ScanLayout& layout, const Tile& tile)
     return rectFromCentre(tile.centre, layout.grid.fieldWidthMm, layout.grid.fieldHeightMm);
 }
 
+std::uint64_t layoutFingerprint(const ScanPlan& plan, const ScanLayout& layout)
+{
+    // FNV-1a over whole numbers, so the same tiles give the same value on any machine.
+    std::uint64_t h = 1469598103934665603ull;
+    auto mix = [&h](std::int64_t v) {
+        for (int b = 0; b < 8; ++b) {
+            h ^= static_cast<std::uint64_t>(v >> (8 * b)) & 0xFFu;
+            h *= 1099511628211ull;
+        }
+    };
+    mix(static_cast<std::int64_t>(layout.tiles.size()));
+    for (const Tile& t : layout.tiles) {
+        const Point2 c = commandedTarget(plan, t.centre);
+        mix(t.index);
+        mix(t.row);
+        mix(t.col);
+        mix(std::llround(c.xMm * 1e6));
+        mix(std::llround(c.yMm * 1e6));
+    }
+    return h;
+}
+
 double pathLengthMm(const ScanLayout& layout)
 {
     double sum = 0;

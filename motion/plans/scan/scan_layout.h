@@ -14,6 +14,7 @@
 // positive area (an exact clip, so a field holding the whole polygon is kept too).
 #include "motion/plans/scan/scan_plan.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace motion::scan {
@@ -58,6 +59,11 @@ Point2 overtravelPoint(const ScanLayout& layout, const ScanPlan& plan, Point2 ti
 
 /// Field rectangle of a tile at its planned centre.
 Rect tileField(const ScanLayout& layout, const Tile& tile);
+
+/// Identifies the tiles a run visits: their order, grid places and commanded
+/// positions (to the nanometre). A run log made under one fingerprint is only
+/// resumed under the same one, so a changed plan never mixes into an old run.
+std::uint64_t layoutFingerprint(const ScanPlan& plan, const ScanLayout& layout);
 
 /// Sum of straight-line distances between consecutive waypoints, mm.
 double pathLengthMm(const ScanLayout& layout);
