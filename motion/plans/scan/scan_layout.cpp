@@ -181,8 +181,9 @@ std::uint64_t layoutFingerprint(const ScanPlan& plan, const ScanLayout& layout)
         mix(t.index);
         mix(t.row);
         mix(t.col);
-        mix(std::llround(c.xMm * 1e6));
-        mix(std::llround(c.yMm * 1e6));
+        auto nm = [](double mm) { return std::isfinite(mm) && std::fabs(mm) < 1e9 ? std::llround(mm * 1e6) : -1; };
+        mix(nm(c.xMm));
+        mix(nm(c.yMm));
     }
     return h;
 }
