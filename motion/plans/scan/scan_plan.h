@@ -85,7 +85,7 @@ struct ScanPlan {
     StartCorner start = StartCorner::TopLeft;
     Approach approach;
     double speedMmS = 10;       ///< path speed of the moves between tiles
-    double settleS = 0.1;       ///< expected wait after a move until the grating sits within tolerance
+    double settleS = 0.02;      ///< expected wait after a move's profile until the tile is taken (the simulated stage: ~11 ms)
     double exposureS = 0.05;    ///< camera exposure: the stage dwells this long at each tile
     double toleranceUm = 1.0;   ///< a tile is taken once the grating is this close to its target
     double settleTimeoutS = 2;  ///< a tile that has not settled by then pauses the run
