@@ -1,6 +1,8 @@
 #pragma once
-// benchpilot-cli's device side: connects to one instrument, runs one command,
-// waits until the machine is still, and prints the result as text or JSON.
+// benchpilot-cli's device side: connects to one instrument and offers what the
+// device commands share: send a request and wait for its answer, wait until the
+// machine is still, print the status as text or JSON.
+#include "command.h"
 #include "device/client/instrument_client.h"
 
 #include <QObject>
@@ -8,55 +10,45 @@
 #include <QTextStream>
 
 #include <functional>
-#include <memory>
 
 namespace cli {
-
-struct LinkOptions {
-    QString sim;          ///< "analyzer" or "stage" when simulated in-process
-    QString port;         ///< serial port path otherwise
-    qint32 baud = 115200;
-    bool json = false;
-    double timeoutS = 120;///< longest wait for motion to finish
-};
-
-/// Exit codes: 0 ok, 1 usage, 2 refused by the device or failed motion, 3 link trouble.
-enum ExitCode { Ok = 0, Usage = 1, Refused = 2, LinkTrouble = 3 };
 
 class CliSession : public QObject {
     Q_OBJECT
 public:
-    CliSession(const LinkOptions& options, QTextStream& out, QTextStream& err);
+    /// `prefix` starts every message on stderr ("benchpilot-cli home").
+    CliSession(const LinkOptions& options, const QString& prefix, QTextStream& out, QTextStream& err);
     ~CliSession() override;
 
-    /// Runs `command args…` to completion (spins its own event loop) and returns the exit code.
-    int run(const QString& command, const QStringList& args);
-
-private:
+    /// Opens the link and waits until the device is ready; false after saying why.
     bool connectDevice();
-    int cmdInfo();
-    int cmdStatus();
-    int cmdHome(const QStringList& args);
-    int cmdMove(const QStringList& args);
-    int cmdJog(const QStringList& args);
-    int cmdStop();
-    int cmdEStop();
-    int cmdReset();
-    int cmdZero(const QStringList& args);
-    int cmdLimits(const QStringList& args);
+    dev::InstrumentClient* client() { return m_client; }
+    const LinkOptions& options() const { return m_opt; }
+    /// The in-process simulator's link when that is what is connected, else nullptr.
+    QObject* link() const { return m_link; }
+
     /// Sends one request and waits for its answer; prints a refusal. Returns an exit code.
     int request(const std::function<void(dev::InstrumentClient::Callback)>& send, const QString& what);
+    /// Waits until no axis moves (or the timeout, then stops the machine); prints the status.
     int waitUntilStill(const QString& what);
+    /// Axis letters ("XY", "X,Z") to a mask; false after a usage message.
     bool parseAxes(const QString& text, quint8* mask);
     void printStatus();
-    int usage(const QString& message);
+    void report(const QString& message);
+    /// Limit hits, faults and the like seen since the last call.
+    QStringList takeMotionErrors();
 
+private:
     LinkOptions m_opt;
+    QString m_prefix;
     QTextStream& m_out;
     QTextStream& m_err;
     dev::InstrumentClient* m_client;
     QObject* m_link = nullptr;    ///< owns the transport (simulated link or serial port)
     QStringList m_motionErrors;   ///< limit hits and faults seen while waiting
 };
+
+/// Runs the event loop until `done` returns true or `timeoutMs` passes; false on timeout.
+bool spinUntil(const std::function<bool()>& done, int timeoutMs);
 
 } // namespace cli

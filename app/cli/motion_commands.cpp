@@ -1,4 +1,4 @@
-#include "motion_commands.h"
+#include "command.h"
 
 #include "motion/any_profile.h"
 #include "motion/blocks.h"
@@ -7,6 +7,7 @@
 #include "motion/interpolation.h"
 #include "motion/step_timing.h"
 
+#include <QCoreApplication>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -22,100 +23,7 @@ namespace cli {
 namespace {
 
 constexpr int kExitUsage = 1;
-constexpr int kExitRefused = 2;
 constexpr std::int64_t kMaxPoints = 2000000;  ///< keeps a typo in --step from printing gigabytes
-
-/// Options of one command: every option takes one value; --joint may repeat.
-class Options {
-public:
-    Options(QString command, QTextStream& err) : m_command(std::move(command)), m_err(err) {}
-
-    bool parse(const QStringList& args, const QSet<QString>& allowed)
-    {
-        for (int i = 0; i < args.size(); ++i) {
-            const QString& name = args[i];
-            if (!name.startsWith(QLatin1String("--")) || !allowed.contains(name))
-                return fail(QStringLiteral("unknown option '%1' (options: %2)").arg(name, sortedNames(allowed)));
-            if (i + 1 >= args.size())
-                return fail(QStringLiteral("%1 needs a value").arg(name));
-            m_values.insert(name, args[++i]);
-        }
-        return true;
-    }
-
-    bool has(const QString& name) const { return m_values.contains(name); }
-    QString text(const QString& name, const QString& fallback = {}) const { return m_values.value(name, fallback); }
-    QStringList all(const QString& name) const
-    {
-        QStringList v = m_values.values(name);
-        std::reverse(v.begin(), v.end());  // QMultiMap returns the latest first
-        return v;
-    }
-
-    /// A number; `fallback` when absent and not required. Reports the option and value on error.
-    bool number(const QString& name, double& value, std::optional<double> fallback = std::nullopt)
-    {
-        if (!has(name)) {
-            if (!fallback)
-                return fail(QStringLiteral("%1 is required").arg(name));
-            value = *fallback;
-            return true;
-        }
-        bool ok = false;
-        value = text(name).toDouble(&ok);
-        if (!ok || !std::isfinite(value))
-            return fail(QStringLiteral("%1 '%2' is not a number").arg(name, text(name)));
-        return true;
-    }
-
-    /// Comma-separated numbers ("30,40"), exactly `count` of them when count > 0.
-    bool numbers(const QString& name, QVector<double>& values, int count = 0)
-    {
-        if (!has(name))
-            return fail(QStringLiteral("%1 is required").arg(name));
-        values.clear();
-        for (const QString& part : text(name).split(QLatin1Char(','))) {
-            bool ok = false;
-            const double v = part.trimmed().toDouble(&ok);
-            if (!ok || !std::isfinite(v))
-                return fail(QStringLiteral("%1 '%2': '%3' is not a number").arg(name, text(name), part));
-            values << v;
-        }
-        if (count > 0 && values.size() != count)
-            return fail(QStringLiteral("%1 '%2' needs %3 comma-separated numbers").arg(name, text(name)).arg(count));
-        return true;
-    }
-
-    int usage(const QString& message)
-    {
-        fail(message);
-        return kExitUsage;
-    }
-    int refused(const QString& message)
-    {
-        fail(message);
-        return kExitRefused;
-    }
-
-    bool fail(const QString& message)
-    {
-        m_err << "benchpilot-cli " << m_command << ": " << message << "\n";
-        m_err.flush();
-        return false;
-    }
-
-private:
-    static QString sortedNames(const QSet<QString>& names)
-    {
-        QStringList l(names.begin(), names.end());
-        l.sort();
-        return l.join(QLatin1Char(' '));
-    }
-
-    QString m_command;
-    QTextStream& m_err;
-    QMultiMap<QString, QString> m_values;
-};
 
 /// The option a person typed for a motion-library field, so refusals name what they can change.
 QString optionForField(const std::string& message)
@@ -145,39 +53,36 @@ QJsonArray samplesJson(const std::vector<motion::ProfileSample>& samples)
 }
 
 /// --kind and the limits shared by `profile` and `steptable`.
-bool readRequest(Options& o, motion::ProfileRequest& r)
+bool readRequest(Invocation& o, motion::ProfileRequest& r)
 {
-    const QString kindName = o.text(QStringLiteral("--kind"), QStringLiteral("jerk-limited"));
+    const QString kindName = o.value(QStringLiteral("kind"));
     const auto kind = motion::profileKindFromName(kindName.toStdString());
-    if (!kind)
-        return o.usage(QStringLiteral("--kind '%1' is not one of seed-scurve, trapezoid, exponential, jerk-limited").arg(kindName));
+    if (!kind) {
+        o.usage(QStringLiteral("--kind '%1' is not one of seed-scurve, trapezoid, exponential, jerk-limited").arg(kindName));
+        return false;
+    }
     r.kind = *kind;
-    return o.number(QStringLiteral("--vmax"), r.vMaxMmS) && o.number(QStringLiteral("--amax"), r.aMaxMmS2, 0.0)
-           && o.number(QStringLiteral("--jmax"), r.jMaxMmS3, 0.0) && o.number(QStringLiteral("--accel-time"), r.accelTimeS, 0.0)
-           && o.number(QStringLiteral("--start-speed"), r.startSpeedMmS, 0.0)
-           && o.number(QStringLiteral("--plateau"), r.plateauMm, 0.0);
+    return o.number(QStringLiteral("vmax"), r.vMaxMmS) && o.number(QStringLiteral("amax"), r.aMaxMmS2, 0.0)
+           && o.number(QStringLiteral("jmax"), r.jMaxMmS3, 0.0) && o.number(QStringLiteral("accel-time"), r.accelTimeS, 0.0)
+           && o.number(QStringLiteral("start-speed"), r.startSpeedMmS, 0.0)
+           && o.number(QStringLiteral("plateau"), r.plateauMm, 0.0);
 }
 
-const QSet<QString> kRequestOptions = {QStringLiteral("--kind"), QStringLiteral("--distance"), QStringLiteral("--vmax"),
-                                       QStringLiteral("--amax"), QStringLiteral("--jmax"), QStringLiteral("--accel-time"),
-                                       QStringLiteral("--start-speed"), QStringLiteral("--plateau")};
 
-int runProfile(const QStringList& args, QTextStream& out, QTextStream& err)
+int runProfile(Invocation& o)
 {
-    Options o(QStringLiteral("profile"), err);
-    QSet<QString> allowed = kRequestOptions;
-    allowed << QStringLiteral("--dt");
+    QTextStream& out = o.out();
     motion::ProfileRequest request;
     QVector<double> distances;
     double dt = 0;
-    if (!o.parse(args, allowed) || !readRequest(o, request) || !o.numbers(QStringLiteral("--distance"), distances)
-        || !o.number(QStringLiteral("--dt"), dt, 0.01))
+    if (!readRequest(o, request) || !o.numbers(QStringLiteral("distance"), distances)
+        || !o.number(QStringLiteral("dt"), dt, 0.01))
         return kExitUsage;
     if (dt <= 0)
-        return o.usage(QStringLiteral("--dt '%1' must be > 0").arg(o.text(QStringLiteral("--dt"))));
+        return o.usage(QStringLiteral("--dt '%1' must be > 0").arg(o.value(QStringLiteral("dt"))));
     if (distances.size() > motion::kMaxAxes)
         return o.usage(QStringLiteral("--distance '%1' has %2 axes; at most %3")
-                          .arg(o.text(QStringLiteral("--distance"))).arg(distances.size()).arg(motion::kMaxAxes));
+                          .arg(o.value(QStringLiteral("distance"))).arg(distances.size()).arg(motion::kMaxAxes));
     QJsonObject json{{"kind", QString::fromLatin1(motion::profileKindName(request.kind))}};
     if (distances.size() == 1) {
         const auto profile = motion::planProfile(distances[0], request);
@@ -185,7 +90,7 @@ int runProfile(const QStringList& args, QTextStream& out, QTextStream& err)
             return o.usage(optionForField(profile.error) + QString::fromStdString(profile.error));
         const auto samples = motion::sampleProfile(*profile, dt);
         if (samples.empty())
-            return o.usage(QStringLiteral("--dt '%1' gives too many samples for a %2 s move").arg(o.text(QStringLiteral("--dt"))).arg(profile->duration()));
+            return o.usage(QStringLiteral("--dt '%1' gives too many samples for a %2 s move").arg(o.value(QStringLiteral("dt"))).arg(profile->duration()));
         json.insert("duration", profile->duration());
         json.insert("distance", profile->distance());
         json.insert("samples", samplesJson(samples));
@@ -195,7 +100,7 @@ int runProfile(const QStringList& args, QTextStream& out, QTextStream& err)
             return o.usage(optionForField(move.error) + QString::fromStdString(move.error));
         const double T = move->duration();
         if (T / dt > 1e6)
-            return o.usage(QStringLiteral("--dt '%1' gives too many samples for a %2 s move").arg(o.text(QStringLiteral("--dt"))).arg(T));
+            return o.usage(QStringLiteral("--dt '%1' gives too many samples for a %2 s move").arg(o.value(QStringLiteral("dt"))).arg(T));
         QJsonArray axes;
         for (int i = 0; i < move->axisCount(); ++i) {
             std::vector<motion::ProfileSample> samples;
@@ -219,29 +124,24 @@ QJsonArray pointsJson(const std::vector<motion::GridPoint>& grid, double step, d
     return points;
 }
 
-int runInterpolate(const QStringList& args, QTextStream& out, QTextStream& err)
+int runInterpolate(Invocation& o)
 {
-    Options o(QStringLiteral("interpolate"), err);
-    if (!o.parse(args, {QStringLiteral("--shape"), QStringLiteral("--from"), QStringLiteral("--to"), QStringLiteral("--start"),
-                        QStringLiteral("--center"), QStringLiteral("--dir"), QStringLiteral("--step"),
-                        QStringLiteral("--amplitude"), QStringLiteral("--wavelength"), QStringLiteral("--length"),
-                        QStringLiteral("--tolerance")}))
-        return kExitUsage;
-    const QString shape = o.text(QStringLiteral("--shape"));
+    QTextStream& out = o.out();
+    const QString shape = o.value(QStringLiteral("shape"));
     double step = 0;
-    if (!o.number(QStringLiteral("--step"), step, shape == QLatin1String("sine") || shape == QLatin1String("cosine") ? std::optional(0.001) : std::nullopt))
+    if (!o.number(QStringLiteral("step"), step, shape == QLatin1String("sine") || shape == QLatin1String("cosine") ? std::optional(0.001) : std::nullopt))
         return kExitUsage;
     if (!(step > 0))
-        return o.usage(QStringLiteral("--step '%1' must be > 0").arg(o.text(QStringLiteral("--step"))));
+        return o.usage(QStringLiteral("--step '%1' must be > 0").arg(o.value(QStringLiteral("step"))));
     const auto tooMany = [&](double steps) {
-        return o.usage(QStringLiteral("--step '%1' gives %2 steps; at most %3").arg(o.text(QStringLiteral("--step"))).arg(steps, 0, 'f', 0).arg(kMaxPoints));
+        return o.usage(QStringLiteral("--step '%1' gives %2 steps; at most %3").arg(o.value(QStringLiteral("step"))).arg(steps, 0, 'f', 0).arg(kMaxPoints));
     };
     QJsonObject json{{"shape", shape}, {"step", step}};
     std::vector<motion::GridPoint> grid;
     double maxErrorMm = 0, x0 = 0, y0 = 0;
     if (shape == QLatin1String("line")) {
         QVector<double> from{0, 0}, to;
-        if ((o.has(QStringLiteral("--from")) && !o.numbers(QStringLiteral("--from"), from, 2)) || !o.numbers(QStringLiteral("--to"), to, 2))
+        if ((o.isSet(QStringLiteral("from")) && !o.numbers(QStringLiteral("from"), from, 2)) || !o.numbers(QStringLiteral("to"), to, 2))
             return kExitUsage;
         const double xe = std::round((to[0] - from[0]) / step), ye = std::round((to[1] - from[1]) / step);
         if (std::fabs(xe) + std::fabs(ye) > kMaxPoints)
@@ -255,10 +155,10 @@ int runInterpolate(const QStringList& args, QTextStream& out, QTextStream& err)
                 maxErrorMm = std::max(maxErrorMm, std::fabs(double(p.x) * ye - double(p.y) * xe) / len * step);
     } else if (shape == QLatin1String("arc")) {
         QVector<double> start, center, to;
-        if (!o.numbers(QStringLiteral("--start"), start, 2) || !o.numbers(QStringLiteral("--center"), center, 2)
-            || !o.numbers(QStringLiteral("--to"), to, 2))
+        if (!o.numbers(QStringLiteral("start"), start, 2) || !o.numbers(QStringLiteral("center"), center, 2)
+            || !o.numbers(QStringLiteral("to"), to, 2))
             return kExitUsage;
-        const QString dir = o.text(QStringLiteral("--dir"));
+        const QString dir = o.value(QStringLiteral("dir"));
         if (dir != QLatin1String("cw") && dir != QLatin1String("ccw"))
             return o.usage(QStringLiteral("--dir '%1' must be cw or ccw").arg(dir));
         const motion::GridPoint s{std::llround((start[0] - center[0]) / step), std::llround((start[1] - center[1]) / step)};
@@ -270,9 +170,9 @@ int runInterpolate(const QStringList& args, QTextStream& out, QTextStream& err)
         if (!pts)
             return o.usage(QStringLiteral("--to '%1' is %2 mm from the circle through --start '%3' around --center '%4' "
                                          "(at most half a step, radius at least two steps)")
-                              .arg(o.text(QStringLiteral("--to")))
+                              .arg(o.value(QStringLiteral("to")))
                               .arg(std::fabs(std::hypot(double(e.x), double(e.y)) - r) * step)
-                              .arg(o.text(QStringLiteral("--start")), o.text(QStringLiteral("--center"))));
+                              .arg(o.value(QStringLiteral("start")), o.value(QStringLiteral("center"))));
         grid = *pts;
         x0 = center[0];
         y0 = center[1];
@@ -280,19 +180,19 @@ int runInterpolate(const QStringList& args, QTextStream& out, QTextStream& err)
             maxErrorMm = std::max(maxErrorMm, std::fabs(std::hypot(double(p.x), double(p.y)) - r) * step);
     } else if (shape == QLatin1String("sine") || shape == QLatin1String("cosine")) {
         double amplitude = 0, wavelength = 0, length = 0, tolerance = 0;
-        if (!o.number(QStringLiteral("--amplitude"), amplitude) || !o.number(QStringLiteral("--wavelength"), wavelength)
-            || !o.number(QStringLiteral("--length"), length) || !o.number(QStringLiteral("--tolerance"), tolerance))
+        if (!o.number(QStringLiteral("amplitude"), amplitude) || !o.number(QStringLiteral("wavelength"), wavelength)
+            || !o.number(QStringLiteral("length"), length) || !o.number(QStringLiteral("tolerance"), tolerance))
             return kExitUsage;
         for (const auto& [name, v] : {std::pair{QStringLiteral("--wavelength"), wavelength}, std::pair{QStringLiteral("--length"), length},
                                       std::pair{QStringLiteral("--tolerance"), tolerance}})
             if (!(v > 0))
-                return o.usage(QStringLiteral("%1 '%2' must be > 0").arg(name, o.text(name)));
+                return o.usage(QStringLiteral("%1 '%2' must be > 0").arg(name, o.value(name.mid(2))));
         if ((length + 2 * std::fabs(amplitude) * length / wavelength * 4) / step > kMaxPoints)
             return tooMany((length + 8 * std::fabs(amplitude) * length / wavelength) / step);
         const bool cosine = shape == QLatin1String("cosine");
         const auto chords = motion::sineChords(amplitude, wavelength, length, tolerance, cosine);
         if (chords.size() > std::size_t(kMaxPoints))
-            return o.usage(QStringLiteral("--tolerance '%1' needs %2 chords").arg(o.text(QStringLiteral("--tolerance"))).arg(chords.size()));
+            return o.usage(QStringLiteral("--tolerance '%1' needs %2 chords").arg(o.value(QStringLiteral("tolerance"))).arg(chords.size()));
         grid = motion::interpolatePolyline(chords, step);
         std::vector<motion::PointMm> mm;
         mm.reserve(grid.size());
@@ -330,19 +230,14 @@ QJsonObject tableJson(const motion::StepTable& t, double clockHz)
                        {"entries", entries}};
 }
 
-int runStepTable(const QStringList& args, QTextStream& out, QTextStream& err)
+int runStepTable(Invocation& o)
 {
-    Options o(QStringLiteral("steptable"), err);
-    QSet<QString> allowed = kRequestOptions;
-    allowed << QStringLiteral("--step") << QStringLiteral("--clock-hz") << QStringLiteral("--interrupt-us")
-            << QStringLiteral("--min-rate") << QStringLiteral("--max-rate") << QStringLiteral("--total-steps")
-            << QStringLiteral("--start-rate") << QStringLiteral("--top-rate") << QStringLiteral("--accel")
-            << QStringLiteral("--decel") << QStringLiteral("--plateau-steps");
+    QTextStream& out = o.out();
     motion::StepTimerConfig timer;
     double interruptUs = 50;
-    if (!o.parse(args, allowed) || !o.number(QStringLiteral("--clock-hz"), timer.clockHz, 72e6)
-        || !o.number(QStringLiteral("--interrupt-us"), interruptUs, 50.0) || !o.number(QStringLiteral("--min-rate"), timer.minRateHz, 80.0)
-        || !o.number(QStringLiteral("--max-rate"), timer.maxRateHz, 20000.0))
+    if (!o.number(QStringLiteral("clock-hz"), timer.clockHz, 72e6)
+        || !o.number(QStringLiteral("interrupt-us"), interruptUs, 50.0) || !o.number(QStringLiteral("min-rate"), timer.minRateHz, 80.0)
+        || !o.number(QStringLiteral("max-rate"), timer.maxRateHz, 20000.0))
         return kExitUsage;
     timer.interruptPeriodS = interruptUs * 1e-6;
     if (!(timer.clockHz > 0) || !(interruptUs > 0) || !(timer.minRateHz > 0) || !(timer.maxRateHz >= timer.minRateHz))
@@ -350,23 +245,23 @@ int runStepTable(const QStringList& args, QTextStream& out, QTextStream& err)
     timer.firstMatchTicks = std::uint32_t(std::llround(timer.interruptPeriodS * timer.clockHz / 2));
     std::vector<double> instants;
     QJsonObject extra;
-    if (o.has(QStringLiteral("--total-steps"))) {
+    if (o.isSet(QStringLiteral("total-steps"))) {
         // Seed 001's own move, in steps, with its v += a·t0 iteration.
         motion::Seed001Move m;
         double total = 0, plateau = 0;
-        if (!o.number(QStringLiteral("--total-steps"), total) || !o.number(QStringLiteral("--start-rate"), m.startRateHz)
-            || !o.number(QStringLiteral("--top-rate"), m.topRateHz) || !o.number(QStringLiteral("--accel"), m.accelHzS)
-            || !o.number(QStringLiteral("--decel"), m.decelHzS, m.accelHzS) || !o.number(QStringLiteral("--plateau-steps"), plateau, 0.0))
+        if (!o.number(QStringLiteral("total-steps"), total) || !o.number(QStringLiteral("start-rate"), m.startRateHz)
+            || !o.number(QStringLiteral("top-rate"), m.topRateHz) || !o.number(QStringLiteral("accel"), m.accelHzS)
+            || !o.number(QStringLiteral("decel"), m.decelHzS, m.accelHzS) || !o.number(QStringLiteral("plateau-steps"), plateau, 0.0))
             return kExitUsage;
         m.totalSteps = std::llround(total);
         m.plateauSteps = std::llround(plateau);
         if (m.totalSteps < 1 || m.totalSteps > kMaxPoints)
-            return o.usage(QStringLiteral("--total-steps '%1' must be 1 … %2").arg(o.text(QStringLiteral("--total-steps"))).arg(kMaxPoints));
+            return o.usage(QStringLiteral("--total-steps '%1' must be 1 … %2").arg(o.value(QStringLiteral("total-steps"))).arg(kMaxPoints));
         const auto profile = motion::seed001Profile(m);
         if (!profile || !(m.startRateHz > 0))
             return o.usage(QStringLiteral("--start-rate '%1' --top-rate '%2' --accel '%3' --decel '%4' --plateau-steps '%5': need 0 < start <= top, accel/decel > 0, plateau >= 0")
-                              .arg(o.text(QStringLiteral("--start-rate")), o.text(QStringLiteral("--top-rate")), o.text(QStringLiteral("--accel")),
-                                   o.text(QStringLiteral("--decel")), o.text(QStringLiteral("--plateau-steps"))));
+                              .arg(o.value(QStringLiteral("start-rate")), o.value(QStringLiteral("top-rate")), o.value(QStringLiteral("accel")),
+                                   o.value(QStringLiteral("decel")), o.value(QStringLiteral("plateau-steps"))));
         instants = motion::seed001StepInstantsS(m);
         const auto exact = motion::stepInstantsS(*profile, 1.0);
         extra.insert("exact_duration", exact.empty() ? 0.0 : exact.back());
@@ -374,10 +269,10 @@ int runStepTable(const QStringList& args, QTextStream& out, QTextStream& err)
     } else {
         motion::ProfileRequest request;
         double distance = 0, stepMm = 0;
-        if (!readRequest(o, request) || !o.number(QStringLiteral("--distance"), distance) || !o.number(QStringLiteral("--step"), stepMm))
+        if (!readRequest(o, request) || !o.number(QStringLiteral("distance"), distance) || !o.number(QStringLiteral("step"), stepMm))
             return kExitUsage;
         if (!(stepMm > 0) || std::fabs(distance) / stepMm > kMaxPoints)
-            return o.usage(QStringLiteral("--step '%1' must be > 0 and give at most %2 steps").arg(o.text(QStringLiteral("--step"))).arg(kMaxPoints));
+            return o.usage(QStringLiteral("--step '%1' must be > 0 and give at most %2 steps").arg(o.value(QStringLiteral("step"))).arg(kMaxPoints));
         const auto profile = motion::planProfile(distance, request);
         if (!profile)
             return o.usage(optionForField(profile.error) + QString::fromStdString(profile.error));
@@ -392,13 +287,13 @@ int runStepTable(const QStringList& args, QTextStream& out, QTextStream& err)
     return 0;
 }
 
-int runBlocks(const QStringList& args, QTextStream& out, QTextStream& err)
+int runBlocks(Invocation& o)
 {
-    Options o(QStringLiteral("blocks"), err);
+    QTextStream& out = o.out();
     double vMax = 0;
-    if (!o.parse(args, {QStringLiteral("--joint"), QStringLiteral("--vmax")}) || !o.number(QStringLiteral("--vmax"), vMax, 32767.0))
+    if (!o.number(QStringLiteral("vmax"), vMax, 32767.0))
         return kExitUsage;
-    const QStringList joints = o.all(QStringLiteral("--joint"));
+    const QStringList joints = o.values(QStringLiteral("joint"));
     if (joints.isEmpty())
         return o.usage(QStringLiteral("--joint is required: S:V2:t0_ms,S:V2:t0_ms,… per joint, repeat for more joints"));
     if (joints.size() > motion::kMaxCanJoints)
@@ -439,19 +334,71 @@ int runBlocks(const QStringList& args, QTextStream& out, QTextStream& err)
     return 0;
 }
 
-}  // namespace
-
-std::optional<int> runMotionCommand(const QString& command, const QStringList& args, QTextStream& out, QTextStream& err)
+/// Motion-library commands take options only.
+std::function<int(Invocation&)> optionsOnly(int (*run)(Invocation&))
 {
-    if (command == QLatin1String("profile"))
-        return runProfile(args, out, err);
-    if (command == QLatin1String("interpolate"))
-        return runInterpolate(args, out, err);
-    if (command == QLatin1String("steptable"))
-        return runStepTable(args, out, err);
-    if (command == QLatin1String("blocks"))
-        return runBlocks(args, out, err);
-    return std::nullopt;
+    return [run](Invocation& inv) {
+        if (!inv.arguments().isEmpty())
+            return inv.usage(QStringLiteral("takes options only (got '%1')").arg(inv.arguments().join(QLatin1Char(' '))));
+        return run(inv);
+    };
 }
 
-}  // namespace cli
+QCommandLineOption opt(const char* name, const char* description, const char* valueName = "X", const char* fallback = nullptr)
+{
+    QCommandLineOption o(QString::fromLatin1(name), QCoreApplication::translate("cli", description), QString::fromLatin1(valueName));
+    if (fallback)
+        o.setDefaultValue(QString::fromLatin1(fallback));
+    return o;
+}
+
+QList<QCommandLineOption> profileLimits()
+{
+    return {opt("kind", "seed-scurve, trapezoid, exponential or jerk-limited", "KIND", "jerk-limited"),
+            opt("distance", "move length in mm; comma-separated for a synchronized multi-axis move", "MM"),
+            opt("vmax", "maximum speed, mm/s", "V"),
+            opt("amax", "maximum acceleration, mm/s² (trapezoid, exponential, jerk-limited)", "A"),
+            opt("jmax", "maximum jerk, mm/s³ (jerk-limited)", "J"),
+            opt("accel-time", "seed 000 acceleration time, s (seed-scurve)", "S"),
+            opt("start-speed", "start/stop speed, mm/s (trapezoid, exponential)", "V"),
+            opt("plateau", "seed 001 start and end plateau, mm (trapezoid)", "MM")};
+}
+
+} // namespace
+
+void addMotionCommands(std::vector<Command>& list)
+{
+    auto tr = [](const char* t) { return QCoreApplication::translate("cli", t); };
+    QList<QCommandLineOption> profile = profileLimits();
+    profile << opt("dt", "sample period of the output, s", "S", "0.01");
+    list.push_back({QStringLiteral("profile"), tr("plan a motion profile and print s, v, a, j samples (JSON)"), {},
+                    tr("See docs/motion.md for the profiles and the seeds they come from."), profile, optionsOnly(runProfile), {}});
+    list.push_back({QStringLiteral("interpolate"), tr("point-by-point line or arc, or sine/cosine by chords (JSON)"), {},
+                    tr("line: --to X,Y [--from X,Y]; arc: --start, --center, --to, --dir cw|ccw; "
+                       "sine|cosine: --amplitude, --wavelength, --length, --tolerance. All need --step (mm)."),
+                    {opt("shape", "line, arc, sine or cosine", "SHAPE"), opt("from", "line start, mm", "X,Y"),
+                     opt("to", "line or arc end, mm", "X,Y"), opt("start", "arc start, mm", "X,Y"),
+                     opt("center", "arc centre, mm", "X,Y"), opt("dir", "arc direction: cw or ccw", "DIR"),
+                     opt("step", "one step of the machine, mm", "MM"), opt("amplitude", "sine/cosine amplitude, mm", "MM"),
+                     opt("wavelength", "sine/cosine wavelength, mm", "MM"), opt("length", "sine/cosine length along X, mm", "MM"),
+                     opt("tolerance", "largest chord deviation from the curve, mm", "MM")},
+                    optionsOnly(runInterpolate), {}});
+    QList<QCommandLineOption> steps = profileLimits();
+    steps << opt("step", "one step of the motor, mm", "MM") << opt("clock-hz", "timer clock, Hz", "HZ", "72000000")
+          << opt("interrupt-us", "interrupt period, µs", "US", "50") << opt("min-rate", "slowest step rate, Hz", "HZ", "80")
+          << opt("max-rate", "fastest step rate, Hz", "HZ", "20000")
+          << opt("total-steps", "seed 001's own move: total steps (with --start-rate, --top-rate, --accel)", "N")
+          << opt("start-rate", "seed 001: start step rate, Hz", "HZ") << opt("top-rate", "seed 001: top step rate, Hz", "HZ")
+          << opt("accel", "seed 001: acceleration, Hz/s", "HZ_S") << opt("decel", "seed 001: deceleration, Hz/s (default: --accel)", "HZ_S")
+          << opt("plateau-steps", "seed 001: start and end plateau, steps", "N");
+    list.push_back({QStringLiteral("steptable"), tr("seed 001 step-period table of a profile or of seed 001's own move (JSON)"), {},
+                    tr("Whole interrupt periods plus a remainder per step, with the zero-match correction."), steps,
+                    optionsOnly(runStepTable), {}});
+    list.push_back({QStringLiteral("blocks"), tr("plan seed 004 blocks per joint and pack them into CAN frames (JSON)"), {},
+                    tr("--joint S:V2:t0_ms,S:V2:t0_ms,… once per joint."),
+                    {opt("joint", "one joint's blocks S:V2:t0_ms,…; repeat for more joints", "BLOCKS"),
+                     opt("vmax", "largest speed, steps/s", "V", "32767")},
+                    optionsOnly(runBlocks), {}});
+}
+
+} // namespace cli

@@ -6,17 +6,20 @@
 #include <QApplication>
 #include <QCommandLineParser>
 
+#include <cstdio>
+
 int main(int argc, char** argv)
 {
-    QApplication app(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("BenchPilot"));
-    QApplication::setApplicationName(QStringLiteral("BenchPilot"));
+    QStringList args;
+    for (int i = 0; i < argc; ++i)
+        args << QString::fromLocal8Bit(argv[i]);
     QCommandLineParser p;
     p.setApplicationDescription(QApplication::translate("main", "BenchPilot operator and test-bench application."));
     p.addHelpOption();
+    p.addVersionOption();
     QCommandLineOption shot(QStringLiteral("screenshot"), QApplication::translate("main", "render a screen to a PNG and exit"),
                             QStringLiteral("file"));
-    QCommandLineOption screen(QStringLiteral("screen"), QApplication::translate("main", "screen to show: jog, profiles, …"),
+    QCommandLineOption screen(QStringLiteral("screen"), QApplication::translate("main", "screen to show: jog, plots, profiles, …"),
                               QStringLiteral("name"), QStringLiteral("jog"));
     QCommandLineOption sim(QStringLiteral("sim"), QApplication::translate("main", "instrument to show: analyzer or stage"),
                            QStringLiteral("kind"), QStringLiteral("analyzer"));
@@ -28,8 +31,33 @@ int main(int argc, char** argv)
     QCommandLineOption exercise(QStringLiteral("exercise"),
                                 QApplication::translate("main", "screenshot: jog and move the shown instrument so live plots show motion"));
     p.addOptions({shot, screen, sim, settle, script, exercise});
-    p.process(app);
+    QCoreApplication::setOrganizationName(QStringLiteral("BenchPilot"));
+    QCoreApplication::setApplicationName(QStringLiteral("benchpilot"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(BP_VERSION));
+    // Help and version answer before QApplication exists, so they work on a machine
+    // without a display (over ssh, in a build script). Everything else is parsed
+    // after QApplication has taken its own options (-platform, -style, …) out.
+    for (const QString& a : args.mid(1)) {
+        if (a == QLatin1String("--"))
+            break;
+        if (a == QLatin1String("-h") || a == QLatin1String("--help") || a == QLatin1String("-?")) {
+            std::fputs(qPrintable(p.helpText().replace(QLatin1String("<executable_name>"), QLatin1String("benchpilot"))), stdout);
+            return 0;
+        }
+        if (a == QLatin1String("-v") || a == QLatin1String("--version")) {
+            std::printf("benchpilot %s\n", BP_VERSION);
+            return 0;
+        }
+    }
 
+    QApplication app(argc, argv);
+    // Settings stay where earlier versions kept them.
+    QApplication::setApplicationName(QStringLiteral("BenchPilot"));
+    p.process(app);  // prints a wrong option and exits 1
+    if (!p.positionalArguments().isEmpty()) {
+        std::fprintf(stderr, "benchpilot: unexpected argument '%s'\ntry 'benchpilot --help'\n", qPrintable(p.positionalArguments().first()));
+        return 1;
+    }
     if (p.isSet(shot)) {
         app::ScreenshotRequest r;
         r.file = p.value(shot);

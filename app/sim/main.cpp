@@ -31,9 +31,11 @@ int main(int argc, char** argv)
 {
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("benchpilot-sim"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(BP_VERSION));
     QCommandLineParser p;
     p.setApplicationDescription(QCoreApplication::translate("sim", "BenchPilot simulated instrument on a pseudo-terminal."));
     p.addHelpOption();
+    p.addVersionOption();
     QCommandLineOption instrument({QStringLiteral("i"), QStringLiteral("instrument")},
                                   QCoreApplication::translate("sim", "analyzer or stage"), QStringLiteral("kind"));
     QCommandLineOption ptyPath(QStringLiteral("pty"), QCoreApplication::translate("sim", "symlink to create for the pty"),

@@ -153,11 +153,9 @@ std::string hex(const Bytes& b)
 
 std::string docPath()
 {
-    std::string here = __FILE__;
-    const std::string tail = "tests/device/codec_doc_examples_test.cpp";
-    if (here.size() >= tail.size() && here.compare(here.size() - tail.size(), tail.size(), tail) == 0)
-        return here.substr(0, here.size() - tail.size()) + "docs/protocol.md";
-    return "docs/protocol.md";
+    // From the build's idea of the source tree, not __FILE__: a compiler cache may
+    // rewrite __FILE__ to a path relative to some other directory.
+    return std::string(BP_SOURCE_DIR) + "/docs/protocol.md";
 }
 
 /// Blocks of the document: "body:NAME" / "wire:NAME" → the bytes of the fenced block after the marker.

@@ -53,11 +53,18 @@ Bytes handFrame(const Bytes& body)
 
 Bytes bodyWithCrc(std::uint8_t type, std::uint16_t seq, const Bytes& payload)
 {
-    Bytes body{type, static_cast<std::uint8_t>(seq & 0xFF), static_cast<std::uint8_t>(seq >> 8)};
-    body.insert(body.end(), payload.begin(), payload.end());
-    const std::uint16_t crc = proto::crc16Ccitt(body.data(), body.size());
-    body.push_back(static_cast<std::uint8_t>(crc & 0xFF));
-    body.push_back(static_cast<std::uint8_t>(crc >> 8));
+    // Sized once and filled in place: growing a small vector here (a braced list
+    // then insert(), or push_back after reserve) trips GCC 12's -Warray-bounds and
+    // -Wfree-nonheap-object false positives at -O3, which stopped Release builds.
+    const std::size_t n = 3 + payload.size();
+    Bytes body(n + 2);
+    body[0] = type;
+    body[1] = static_cast<std::uint8_t>(seq & 0xFF);
+    body[2] = static_cast<std::uint8_t>(seq >> 8);
+    std::copy(payload.begin(), payload.end(), body.begin() + 3);
+    const std::uint16_t crc = proto::crc16Ccitt(body.data(), n);
+    body[n] = static_cast<std::uint8_t>(crc & 0xFF);
+    body[n + 1] = static_cast<std::uint8_t>(crc >> 8);
     return body;
 }
 

@@ -3,6 +3,7 @@
 // serial port. The simulator runs at --time-scale 4 to keep homing short.
 #include "device/client/instrument_client.h"
 #include "device/link/serial_transport.h"
+#include "programs.h"
 #include "wait.h"
 
 #include <QCoreApplication>
@@ -23,46 +24,9 @@ using dev::LinkState;
 
 namespace {
 
-QString binDir()
-{
-    const QString fromEnv = qEnvironmentVariable("BP_BIN_DIR");
-    if (!fromEnv.isEmpty())
-        return fromEnv;
-    // Run by hand from the build tree: <build>/tests/test_integration next to <build>/app.
-    return QDir(QCoreApplication::applicationDirPath() + QStringLiteral("/../app")).absolutePath();
-}
+using CliRun = ProgramRun;
 
-QString binary(const char* name) { return binDir() + QLatin1Char('/') + QLatin1String(name); }
-
-struct CliRun {
-    bool finished = false;
-    int exitCode = -1;
-    QString out, err;
-    std::string describe() const
-    {
-        return QStringLiteral("exit %1, stdout: %2, stderr: %3").arg(exitCode).arg(out.trimmed(), err.trimmed()).toStdString();
-    }
-};
-
-CliRun runCli(const QStringList& args, int timeoutMs = 60000)
-{
-    QProcess p;
-    p.start(binary("benchpilot-cli"), args);
-    CliRun r;
-    if (!p.waitForStarted(10000)) {
-        r.err = QStringLiteral("could not start %1: %2").arg(binary("benchpilot-cli"), p.errorString());
-        return r;
-    }
-    r.finished = p.waitForFinished(timeoutMs);
-    if (!r.finished) {
-        p.kill();
-        p.waitForFinished(5000);
-    }
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
-}
+CliRun runCli(const QStringList& args, int timeoutMs = 60000) { return runProgram(binary("benchpilot-cli"), args, timeoutMs); }
 
 /// The last line of `text` that parses as a JSON object.
 QJsonObject lastJson(const QString& text)

@@ -1,0 +1,266 @@
+// benchpilot-cli's command line: global options, command and subcommand
+// dispatch, --help at every level, --version. Options are parsed by
+// QCommandLineParser, so '--opt value' and '--opt=value' both work.
+#include "cli_session.h"
+#include "command.h"
+
+#include <QCoreApplication>
+
+namespace cli {
+namespace {
+
+QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+
+const QCommandLineOption& helpOption()
+{
+    static const QCommandLineOption o(QStringList{QStringLiteral("h"), QStringLiteral("help")}, tr("show this help"));
+    return o;
+}
+
+const QCommandLineOption& versionOption()
+{
+    static const QCommandLineOption o(QStringLiteral("version"), tr("show the program's version"));
+    return o;
+}
+
+QString optionNames(const QCommandLineOption& o)
+{
+    QStringList names;
+    for (const QString& n : o.names())
+        names << (n.size() == 1 ? QStringLiteral("-") : QStringLiteral("--")) + n;
+    QString s = names.join(QStringLiteral(", "));
+    if (!o.valueName().isEmpty())
+        s += QLatin1Char(' ') + o.valueName();
+    return s;
+}
+
+QString optionTable(const QList<QCommandLineOption>& options)
+{
+    int width = 0;
+    for (const auto& o : options)
+        width = std::max(width, int(optionNames(o).size()));
+    QString s;
+    for (const auto& o : options) {
+        QString line = QStringLiteral("  %1  %2").arg(optionNames(o), -width).arg(o.description());
+        if (!o.defaultValues().isEmpty())
+            line += tr(" (default: %1)").arg(o.defaultValues().join(QLatin1Char(',')));
+        s += line + QLatin1Char('\n');
+    }
+    return s;
+}
+
+QString commandTable(const std::vector<Command>& list)
+{
+    int width = 0;
+    for (const auto& c : list)
+        width = std::max(width, int(c.name.size()));
+    QString s;
+    for (const auto& c : list)
+        s += QStringLiteral("  %1  %2\n").arg(c.name, -width).arg(c.summary);
+    return s;
+}
+
+const Command* find(const std::vector<Command>& list, const QString& name)
+{
+    for (const auto& c : list)
+        if (c.name == name)
+            return &c;
+    return nullptr;
+}
+
+QStringList names(const std::vector<Command>& list)
+{
+    QStringList n;
+    for (const auto& c : list)
+        n << c.name;
+    return n;
+}
+
+/// Reads the global options a parser saw into `link`; false after a usage message.
+bool readLinkOptions(const QCommandLineParser& p, LinkOptions& link, QTextStream& err, const QString& who)
+{
+    auto fail = [&](const QString& m) {
+        err << who << ": " << m << "\n";
+        err.flush();
+        return false;
+    };
+    if (p.isSet(QStringLiteral("json")))
+        link.json = true;
+    if (p.isSet(QStringLiteral("sim"))) {
+        const QString v = p.value(QStringLiteral("sim"));
+        if (v != QLatin1String("analyzer") && v != QLatin1String("stage"))
+            return fail(tr("--sim needs 'analyzer' or 'stage' (got '%1')").arg(v));
+        link.sim = v;
+    }
+    if (p.isSet(QStringLiteral("port"))) {
+        link.port = unmarkNegative(p.value(QStringLiteral("port")));
+        if (link.port.isEmpty())
+            return fail(tr("--port needs a path"));
+    }
+    if (p.isSet(QStringLiteral("baud"))) {
+        bool ok = false;
+        link.baud = p.value(QStringLiteral("baud")).toInt(&ok);
+        if (!ok || link.baud < 1200)
+            return fail(tr("--baud needs a rate of at least 1200 (got '%1')").arg(unmarkNegative(p.value(QStringLiteral("baud")))));
+    }
+    if (p.isSet(QStringLiteral("timeout"))) {
+        bool ok = false;
+        link.timeoutS = unmarkNegative(p.value(QStringLiteral("timeout"))).toDouble(&ok);
+        if (!ok || !(link.timeoutS > 0))
+            return fail(tr("--timeout needs a positive number of seconds (got '%1')").arg(unmarkNegative(p.value(QStringLiteral("timeout")))));
+    }
+    return true;
+}
+
+/// QCommandLineParser's "Unknown option 'x'." said as this CLI says things, with the choices.
+QString parseError(const QCommandLineParser& p, const QList<QCommandLineOption>& known)
+{
+    const QStringList unknown = p.unknownOptionNames();
+    if (unknown.isEmpty())
+        return p.errorText();
+    QStringList shown, choices;
+    for (const QString& n : unknown)
+        shown << (n.size() == 1 ? QStringLiteral("-") : QStringLiteral("--")) + n;
+    for (const auto& o : known)
+        choices << QStringLiteral("--") + o.names().constLast();
+    return tr("unknown option %1 (options: %2)").arg(QLatin1Char('\'') + shown.join(QStringLiteral("', '")) + QLatin1Char('\''),
+                                                   choices.join(QLatin1Char(' ')));
+}
+
+} // namespace
+
+QList<QCommandLineOption> globalOptions()
+{
+    return {QCommandLineOption(QStringLiteral("sim"), tr("the in-process simulator: analyzer or stage (default: analyzer)"), QStringLiteral("KIND")),
+            QCommandLineOption(QStringLiteral("port"), tr("a serial port, or the pty of benchpilot-sim"), QStringLiteral("PATH")),
+            QCommandLineOption(QStringLiteral("baud"), tr("link speed (default: 115200)"), QStringLiteral("N")),
+            QCommandLineOption(QStringLiteral("json"), tr("print JSON instead of text")),
+            QCommandLineOption(QStringLiteral("timeout"), tr("longest wait for motion to finish, s (default: 120)"), QStringLiteral("S"))};
+}
+
+QString topHelp()
+{
+    QList<QCommandLineOption> global = globalOptions();
+    global << helpOption() << versionOption();
+    return tr("usage: benchpilot-cli [GLOBAL OPTIONS] COMMAND [OPTIONS] [ARGUMENTS]\n\n"
+              "Scripts BenchPilot's instruments (the in-process simulators, benchpilot-sim's pty, or a\n"
+              "serial port) and its motion library.\n\n"
+              "Commands:\n")
+        + commandTable(commands())
+        + tr("\nGlobal options (before or after the command):\n") + optionTable(global)
+        + tr("\n'benchpilot-cli COMMAND --help' shows a command's options. Options take their value as\n"
+             "'--opt value' or '--opt=value'.\n"
+             "Exit codes: 0 ok, 1 usage, 2 refused or motion failed, 3 link trouble.\n"
+             "Bash completion: source <(benchpilot-cli completion bash)\n");
+}
+
+QString commandHelp(const QString& path, const Command& c)
+{
+    QString s;
+    if (!c.subcommands.empty()) {
+        s = tr("usage: benchpilot-cli %1 SUBCOMMAND [OPTIONS] [ARGUMENTS]\n\n%2\n\nSubcommands:\n").arg(path, c.summary)
+            + commandTable(c.subcommands);
+        if (!c.description.isEmpty())
+            s += QLatin1Char('\n') + c.description + QLatin1Char('\n');
+        return s + tr("\n'benchpilot-cli %1 SUBCOMMAND --help' shows a subcommand's options.\n").arg(path);
+    }
+    s = tr("usage: benchpilot-cli %1%2%3\n\n%4\n")
+            .arg(path, c.options.isEmpty() ? QString() : tr(" [OPTIONS]"),
+                 c.arguments.isEmpty() ? QString() : QLatin1Char(' ') + c.arguments, c.summary);
+    if (!c.description.isEmpty())
+        s += QLatin1Char('\n') + c.description + QLatin1Char('\n');
+    if (!c.options.isEmpty())
+        s += tr("\nOptions:\n") + optionTable(c.options);
+    return s + tr("\nGlobal options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benchpilot-cli --help).\n");
+}
+
+int runCli(const QStringList& rawArgs, QTextStream& out, QTextStream& err)
+{
+    QStringList args{QStringLiteral("benchpilot-cli")};  // QCommandLineParser skips the program name
+    for (const QString& a : rawArgs)
+        args << markNegative(a);
+
+    auto fail = [&](const QString& who, const QString& message, const QString& helpHint) {
+        err << who << ": " << message << "\n" << helpHint;
+        err.flush();
+        return int(Usage);
+    };
+
+    QCommandLineParser top;
+    top.setOptionsAfterPositionalArgumentsMode(QCommandLineParser::ParseAsPositionalArguments);
+    top.addOptions(globalOptions());
+    top.addOption(helpOption());
+    top.addOption(versionOption());
+    if (!top.parse(args))
+        return fail(QStringLiteral("benchpilot-cli"), parseError(top, globalOptions()), tr("try 'benchpilot-cli --help'\n"));
+    if (top.isSet(versionOption())) {
+        out << "benchpilot-cli " << BP_VERSION << "\n";
+        out.flush();
+        return Ok;
+    }
+    QStringList rest = top.positionalArguments();
+    if (rest.isEmpty()) {
+        if (top.isSet(helpOption())) {
+            out << topHelp();
+            out.flush();
+            return Ok;
+        }
+        return fail(QStringLiteral("benchpilot-cli"), tr("no command given"), topHelp());
+    }
+    if (top.isSet(helpOption())) {  // "benchpilot-cli --help move" means "move --help"
+        rest.insert(1, QStringLiteral("--help"));
+    }
+    LinkOptions link;
+    if (!readLinkOptions(top, link, err, QStringLiteral("benchpilot-cli")))
+        return Usage;
+
+    // Walk down to the command (or subcommand) the words name.
+    const std::vector<Command>* level = &commands();
+    QString path;
+    const Command* cmd = nullptr;
+    for (;;) {
+        const QString word = rest.isEmpty() ? QString() : rest.takeFirst();
+        const Command* next = find(*level, word);
+        if (!next) {
+            if (!cmd)
+                return fail(QStringLiteral("benchpilot-cli"),
+                            tr("unknown command '%1' (commands: %2)").arg(word, names(*level).join(QStringLiteral(", "))),
+                            tr("try 'benchpilot-cli --help'\n"));
+            if (word == QLatin1String("-h") || word == QLatin1String("--help")) {
+                out << commandHelp(path, *cmd);
+                out.flush();
+                return Ok;
+            }
+            return fail(QStringLiteral("benchpilot-cli ") + path,
+                        word.isEmpty() ? tr("which one? (%1)").arg(names(*level).join(QStringLiteral(", ")))
+                                       : tr("unknown subcommand '%1' (%2)").arg(word, names(*level).join(QStringLiteral(", "))),
+                        commandHelp(path, *cmd));
+        }
+        cmd = next;
+        path = path.isEmpty() ? cmd->name : path + QLatin1Char(' ') + cmd->name;
+        if (cmd->subcommands.empty())
+            break;
+        level = &cmd->subcommands;
+    }
+
+    QCommandLineParser p;
+    p.addOptions(globalOptions());
+    p.addOption(helpOption());
+    p.addOptions(cmd->options);
+    const QString who = QStringLiteral("benchpilot-cli ") + path;
+    if (!p.parse(QStringList{args.first()} + rest))
+        return fail(who, parseError(p, cmd->options + globalOptions()), tr("try 'benchpilot-cli %1 --help'\n").arg(path));
+    if (p.isSet(helpOption())) {
+        out << commandHelp(path, *cmd);
+        out.flush();
+        return Ok;
+    }
+    if (!readLinkOptions(p, link, err, who))
+        return Usage;
+    if (!link.sim.isEmpty() && !link.port.isEmpty())
+        return fail(who, tr("give either --sim or --port, not both"), QString());
+    Invocation inv(path, p, link, out, err);
+    return cmd->run(inv);
+}
+
+} // namespace cli

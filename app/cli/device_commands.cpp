@@ -1,0 +1,284 @@
+// benchpilot-cli's instrument commands: info, status, home, move, jog, stop,
+// estop, reset, zero, limits. Each connects, acts, waits until the machine is
+// still where that is the point, and prints the result as text or JSON.
+#include "cli_session.h"
+#include "command.h"
+
+#include <QCoreApplication>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <cmath>
+
+namespace cli {
+namespace {
+
+QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+
+/// Commands that take no words after their options.
+bool noArguments(Invocation& inv)
+{
+    if (inv.arguments().isEmpty())
+        return true;
+    inv.usage(tr("takes no arguments (got '%1')").arg(inv.arguments().join(QLatin1Char(' '))));
+    return false;
+}
+
+int info(Invocation& inv)
+{
+    if (!noArguments(inv))
+        return Usage;
+    CliSession* s = inv.session();
+    if (!s)
+        return LinkTrouble;
+    const auto& id = s->client()->identity();
+    if (inv.json()) {
+        QJsonArray axes;
+        for (const auto& a : id.axes)
+            axes.append(QJsonObject{{QStringLiteral("axis"), QString(a.letter)},
+                                    {QStringLiteral("unit"), a.unitName()},
+                                    {QStringLiteral("travel_min"), a.travelMin},
+                                    {QStringLiteral("travel_max"), a.travelMax},
+                                    {QStringLiteral("max_speed"), a.maxSpeed},
+                                    {QStringLiteral("resolution"), a.resolution}});
+        inv.out() << QJsonDocument(QJsonObject{{QStringLiteral("instrument"), id.kindName()},
+                                               {QStringLiteral("model"), id.model},
+                                               {QStringLiteral("firmware"), id.firmware},
+                                               {QStringLiteral("protocol"), id.protocolVersion},
+                                               {QStringLiteral("capabilities"), static_cast<qint64>(id.capabilities)},
+                                               {QStringLiteral("link_baud"), static_cast<qint64>(id.linkBaud)},
+                                               {QStringLiteral("axes"), axes}})
+                         .toJson(QJsonDocument::Compact)
+                  << "\n";
+    } else {
+        inv.out() << id.model << " (" << id.kindName() << "), firmware " << id.firmware << ", protocol " << id.protocolVersion
+                  << "\n  link: " << s->client()->linkDescription() << "\n";
+        for (const auto& a : id.axes)
+            inv.out() << "  " << a.letter << ": " << a.travelMin << " … " << a.travelMax << " " << a.unitName() << ", max "
+                      << a.maxSpeed << " " << a.unitName() << "/s, resolution " << a.resolution << " " << a.unitName() << "\n";
+    }
+    inv.out().flush();
+    return Ok;
+}
+
+int status(Invocation& inv)
+{
+    if (!noArguments(inv))
+        return Usage;
+    CliSession* s = inv.session();
+    if (!s)
+        return LinkTrouble;
+    // The status that arrived while connecting is current: print it as is.
+    s->printStatus();
+    return Ok;
+}
+
+int home(Invocation& inv)
+{
+    CliSession* s = inv.session();
+    if (!s)
+        return LinkTrouble;
+    quint8 mask = 0;
+    if (!s->parseAxes(inv.arguments().join(QString()), &mask))
+        return Usage;
+    if (int rc = s->request([&](auto cb) { s->client()->home(mask, cb); }, tr("home")))
+        return rc;
+    return s->waitUntilStill(tr("home"));
+}
+
+int move(Invocation& inv)
+{
+    double speed = 0;
+    if (!inv.number(QStringLiteral("speed"), speed, 0.0))
+        return Usage;
+    if (inv.isSet(QStringLiteral("speed")) && !(speed > 0))
+        return inv.usage(tr("--speed needs a positive number"));
+    const QStringList words = inv.arguments();
+    if (words.isEmpty())
+        return inv.usage(tr("give at least one AXIS=VALUE"));
+    for (const QString& a : words)
+        if (a.indexOf(QLatin1Char('=')) != 1)
+            return inv.usage(tr("expected AXIS=VALUE, got '%1'").arg(a));
+    CliSession* s = inv.session();
+    if (!s)
+        return LinkTrouble;
+    const auto& id = s->client()->identity();
+    QVector<QPair<int, double>> targets;
+    for (const QString& a : words) {
+        const int axis = id.axisIndex(a[0]);
+        if (axis < 0)
+            return inv.usage(tr("axis '%1' does not exist on the %2").arg(a[0]).arg(id.kindName()));
+        bool ok = false;
+        const double v = a.mid(2).toDouble(&ok);
+        if (!ok || !std::isfinite(v))
+            return inv.usage(tr("'%1' is not a number for axis %2").arg(a.mid(2)).arg(a[0]));
+        targets.push_back({axis, v});
+    }
+    const bool relative = inv.isSet(QStringLiteral("relative"));
+    if (int rc = s->request([&](auto cb) { s->client()->move(targets, relative, speed, cb); }, tr("move")))
+        return rc;
+    return s->waitUntilStill(tr("move"));
+}
+
+int jog(Invocation& inv)
+{
+    const QStringList words = inv.arguments();
+    if (words.size() != 3)
+        return inv.usage(tr("expected AXIS VELOCITY SECONDS"));
+    bool ok1 = false, ok2 = false;
+    const double v = words[1].toDouble(&ok1);
+    const double seconds = words[2].toDouble(&ok2);
+    if (!ok1 || !std::isfinite(v))
+        return inv.usage(tr("velocity '%1' is not a number").arg(words[1]));
+    if (!ok2 || seconds <= 0 || seconds > 600)
+        return inv.usage(tr("seconds must be in (0, 600]"));
+    CliSession* s = inv.session();
+    if (!s)
+        return LinkTrouble;
+    const auto& id = s->client()->identity();
+    const int axis = words[0].size() == 1 ? id.axisIndex(words[0][0]) : -1;
+    if (axis < 0)
+        return inv.usage(tr("axis '%1' does not exist on the %2").arg(words[0]).arg(id.kindName()));
+    if (std::abs(v) > id.axes[axis].maxSpeed)
+        return inv.usage(tr("velocity must be within ±%1 %2/s").arg(id.axes[axis].maxSpeed).arg(id.axes[axis].unitName()));
+    QString refused;
+    dev::InstrumentClient* c = s->client();
+    auto conn = QObject::connect(c, &dev::InstrumentClient::requestFailed, s, [&](const dev::RequestError& e) { refused = e.message; });
+    c->startJog(axis, v);
+    spinUntil([&] { return !refused.isEmpty() || c->state() != dev::LinkState::Ready; }, static_cast<int>(seconds * 1000));
+    c->stopJog(axis);
+    QObject::disconnect(conn);
+    if (!refused.isEmpty())
+        return inv.refused(refused);
+    return s->waitUntilStill(tr("jog"));
+}
+
+int stop(Invocation& inv)
+{
+    if (!noArguments(inv))
+        return Usage;
+    CliSession* s = inv.session();
+    if (!s)
+        return LinkTrouble;
+    if (int rc = s->request([&](auto cb) { s->client()->stop(0, cb); }, tr("stop")))
+        return rc;
+    return s->waitUntilStill(tr("stop"));
+}
+
+/// Lets a status poll arrive after a request whose effect is immediate, then prints it.
+int settleAndPrint(CliSession* s)
+{
+    spinUntil([] { return false; }, 150);
+    s->printStatus();
+    return Ok;
+}
+
+int estop(Invocation& inv)
+{
+    if (!noArguments(inv))
+        return Usage;
+    CliSession* s = inv.session();
+    if (!s)
+        return LinkTrouble;
+    if (int rc = s->request([&](auto cb) { s->client()->estop(cb); }, tr("estop")))
+        return rc;
+    s->takeMotionErrors();  // the E-stop event is the point here, not a failure
+    return settleAndPrint(s);
+}
+
+int reset(Invocation& inv)
+{
+    if (!noArguments(inv))
+        return Usage;
+    CliSession* s = inv.session();
+    if (!s)
+        return LinkTrouble;
+    if (int rc = s->request([&](auto cb) { s->client()->reset(cb); }, tr("reset")))
+        return rc;
+    return settleAndPrint(s);
+}
+
+int zero(Invocation& inv)
+{
+    if (inv.arguments().isEmpty())
+        return inv.usage(tr("name the axes to zero, e.g. 'zero XY'"));
+    CliSession* s = inv.session();
+    if (!s)
+        return LinkTrouble;
+    quint8 mask = 0;
+    if (!s->parseAxes(inv.arguments().join(QString()), &mask))
+        return Usage;
+    if (int rc = s->request([&](auto cb) { s->client()->setZero(mask, cb); }, tr("zero")))
+        return rc;
+    return settleAndPrint(s);
+}
+
+int limits(Invocation& inv)
+{
+    struct Change {
+        QString text;
+        double lo, hi;
+    };
+    QVector<Change> changes;
+    for (const QString& a : inv.arguments()) {
+        // AXIS=MIN:MAX
+        const int eq = a.indexOf(QLatin1Char('='));
+        const int colon = a.indexOf(QLatin1Char(':'));
+        bool ok1 = false, ok2 = false;
+        const double lo = colon > eq ? a.mid(eq + 1, colon - eq - 1).toDouble(&ok1) : 0;
+        const double hi = colon > eq ? a.mid(colon + 1).toDouble(&ok2) : 0;
+        if (eq != 1 || !ok1 || !ok2)
+            return inv.usage(tr("expected AXIS=MIN:MAX, got '%1'").arg(a));
+        changes.push_back({a, lo, hi});
+    }
+    CliSession* s = inv.session();
+    if (!s)
+        return LinkTrouble;
+    const auto& id = s->client()->identity();
+    for (const Change& c : changes) {
+        const int axis = id.axisIndex(c.text[0]);
+        if (axis < 0)
+            return inv.usage(tr("axis '%1' does not exist on the %2").arg(c.text[0]).arg(id.kindName()));
+        if (int rc = s->request([&](auto cb) { s->client()->setSoftLimits(axis, c.lo, c.hi, cb); }, tr("limits")))
+            return rc;
+    }
+    const auto& lim = s->client()->softLimits();
+    if (inv.json()) {
+        QJsonObject o;
+        for (int i = 0; i < id.axes.size() && i < lim.size(); ++i)
+            o.insert(QString(id.axes[i].letter), QJsonArray{lim[i].min, lim[i].max});
+        inv.out() << QJsonDocument(QJsonObject{{QStringLiteral("soft_limits"), o}}).toJson(QJsonDocument::Compact) << "\n";
+    } else {
+        for (int i = 0; i < id.axes.size() && i < lim.size(); ++i)
+            inv.out() << "  " << id.axes[i].letter << ": " << lim[i].min << " … " << lim[i].max << " " << id.axes[i].unitName() << "\n";
+    }
+    inv.out().flush();
+    return Ok;
+}
+
+} // namespace
+
+void addDeviceCommands(std::vector<Command>& list)
+{
+    const QCommandLineOption relative(QStringLiteral("relative"), tr("targets are distances from where the axes are"));
+    const QCommandLineOption speed(QStringLiteral("speed"), tr("path speed in the unit of the first axis named, per second"),
+                                   QStringLiteral("V"));
+    list.push_back({QStringLiteral("info"), tr("device identity, axes, travel, resolution"), {}, {}, {}, info, {}});
+    list.push_back({QStringLiteral("status"), tr("positions (commanded and measured), homed, moving, switches"), {}, {}, {}, status, {}});
+    list.push_back({QStringLiteral("home"), tr("home the axes (all when none given), wait until done"), QStringLiteral("[AXES]"),
+                    tr("The analyzer lifts Z first. AXES are letters, e.g. 'XY'."), {}, home, {}});
+    list.push_back({QStringLiteral("move"), tr("move and wait until done (mm, µL for P)"), QStringLiteral("AXIS=VALUE..."),
+                    tr("Absolute moves need homed axes; targets beyond the soft limits are refused by the device."),
+                    {relative, speed}, move, {}});
+    list.push_back({QStringLiteral("jog"), tr("velocity jog for SECONDS, then stop and wait until still"),
+                    QStringLiteral("AXIS VELOCITY SECONDS"),
+                    tr("The jog is refreshed while it runs; if this program dies the device stops the axis by itself."), {}, jog, {}});
+    list.push_back({QStringLiteral("stop"), tr("decelerate all axes to rest"), {}, {}, {}, stop, {}});
+    list.push_back({QStringLiteral("estop"), tr("halt at once and latch the E-stop"), {}, {}, {}, estop, {}});
+    list.push_back({QStringLiteral("reset"), tr("clear the E-stop latch"), {}, {}, {}, reset, {}});
+    list.push_back({QStringLiteral("zero"), tr("make the current position zero"), QStringLiteral("AXES"), {}, {}, zero, {}});
+    list.push_back({QStringLiteral("limits"), tr("show or set soft limits"), QStringLiteral("[AXIS=MIN:MAX...]"), {}, {}, limits, {}});
+}
+
+} // namespace cli

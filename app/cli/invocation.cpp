@@ -1,0 +1,136 @@
+#include "cli_session.h"
+#include "command.h"
+
+#include <QCoreApplication>
+
+#include <cmath>
+
+namespace cli {
+
+namespace {
+/// Marks a word the parser must not take for an option; see unmarkNegative().
+const QChar kNegativeMark(0x1F);
+} // namespace
+
+QString unmarkNegative(const QString& word)
+{
+    return word.startsWith(kNegativeMark) ? word.mid(1) : word;
+}
+
+QString markNegative(const QString& word)
+{
+    // "-5", "-0.5", "-.5", "-1e3": a number, never an option name.
+    if (word.size() >= 2 && word[0] == QLatin1Char('-') && (word[1].isDigit() || (word[1] == QLatin1Char('.') && word.size() > 2)))
+        return kNegativeMark + word;
+    return word;
+}
+
+Invocation::Invocation(QString path, QCommandLineParser& parser, LinkOptions link, QTextStream& out, QTextStream& err)
+    : m_path(std::move(path)), m_parser(parser), m_link(std::move(link)), m_out(out), m_err(err)
+{
+}
+
+Invocation::~Invocation() = default;
+
+bool Invocation::isSet(const QString& option) const { return m_parser.isSet(option); }
+QString Invocation::value(const QString& option) const { return unmarkNegative(m_parser.value(option)); }
+
+QStringList Invocation::values(const QString& option) const
+{
+    QStringList v = m_parser.values(option);
+    for (QString& s : v)
+        s = unmarkNegative(s);
+    return v;
+}
+
+QStringList Invocation::arguments() const
+{
+    QStringList words = m_parser.positionalArguments();
+    for (QString& s : words)
+        s = unmarkNegative(s);
+    return words;
+}
+
+void Invocation::report(const QString& message)
+{
+    m_err << "benchpilot-cli " << m_path << ": " << message << "\n";
+    m_err.flush();
+}
+
+int Invocation::usage(const QString& message)
+{
+    report(message);
+    return Usage;
+}
+
+int Invocation::refused(const QString& message)
+{
+    report(message);
+    return Refused;
+}
+
+int Invocation::linkTrouble(const QString& message)
+{
+    report(message);
+    return LinkTrouble;
+}
+
+bool Invocation::number(const QString& option, double& value, std::optional<double> fallback)
+{
+    if (!isSet(option)) {
+        if (!fallback) {
+            report(QCoreApplication::translate("cli", "--%1 is required").arg(option));
+            return false;
+        }
+        value = *fallback;
+        return true;
+    }
+    bool ok = false;
+    value = this->value(option).toDouble(&ok);
+    if (!ok || !std::isfinite(value)) {
+        report(QCoreApplication::translate("cli", "--%1 '%2' is not a number").arg(option, this->value(option)));
+        return false;
+    }
+    return true;
+}
+
+bool Invocation::numbers(const QString& option, QVector<double>& values, int count)
+{
+    if (!isSet(option)) {
+        report(QCoreApplication::translate("cli", "--%1 is required").arg(option));
+        return false;
+    }
+    values.clear();
+    const QString text = value(option);
+    for (const QString& part : text.split(QLatin1Char(','))) {
+        bool ok = false;
+        const double v = part.trimmed().toDouble(&ok);
+        if (!ok || !std::isfinite(v)) {
+            report(QCoreApplication::translate("cli", "--%1 '%2': '%3' is not a number").arg(option, text, part));
+            return false;
+        }
+        values << v;
+    }
+    if (count > 0 && values.size() != count) {
+        report(QCoreApplication::translate("cli", "--%1 '%2' needs %3 comma-separated numbers").arg(option, text).arg(count));
+        return false;
+    }
+    return true;
+}
+
+CliSession* Invocation::session()
+{
+    if (m_session)
+        return m_session.get();
+    LinkOptions o = m_link;  // runCli has refused --sim with --port
+    if (o.sim.isEmpty() && o.port.isEmpty())
+        o.sim = QStringLiteral("analyzer");
+    m_session = std::make_unique<CliSession>(o, QStringLiteral("benchpilot-cli ") + m_path, m_out, m_err);
+    if (!m_session->connectDevice()) {
+        m_session.reset();
+        return nullptr;
+    }
+    return m_session.get();
+}
+
+} // namespace cli
