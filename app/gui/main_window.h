@@ -19,6 +19,7 @@ class EventLog;
 class JogScreen;
 class MessageBanner;
 class PlotsScreen;
+class ScanScreen;
 } // namespace ui
 
 namespace app {
@@ -45,6 +46,7 @@ public:
     void showInstrument(int index);  ///< 0 analyzer, 1 stage, on screens that have a choice
     ui::JogScreen* jogScreen(int index) { return m_jog[index]; }
     ui::PlotsScreen* plotsScreen() { return m_plots; }
+    ui::ScanScreen* scanScreen() { return m_scan; }
     tele::TelemetryHub* telemetry() { return m_hub; }
     ui::MessageBanner* banner() { return m_banner; }
     ui::EventLog* eventLog() { return m_log; }
@@ -71,6 +73,7 @@ private:
     InstrumentSession* m_sessions[2];
     tele::TelemetryHub* m_hub;  ///< every instrument's telemetry, for the plots
     ui::PlotsScreen* m_plots;
+    ui::ScanScreen* m_scan;
     ui::ConnectionBar* m_bars[2];
     ui::JogScreen* m_jog[2];
     QTabWidget* m_jogTabs;

@@ -274,7 +274,17 @@ bool ScanRunner::start(QString* error)
     for (int t = 0; t < totalTiles(); ++t)
         if (m_taken[static_cast<std::size_t>(t)])
             lastTaken = t;
-    m_sessionEstimateFromS = lastTaken >= 0 ? m_estimate.tileDoneS[static_cast<std::size_t>(lastTaken)] : 0.0;
+    // The estimate starts at the first tile; this session starts wherever the stage
+    // stands, so the move there counts towards the time left and the pace.
+    const auto& st = m_client->status();
+    const Point2 from = st.axes.size() >= 2 ? Point2{st.axes[0].commanded, st.axes[1].commanded} : Point2{};
+    const Point2 firstTarget = m_extraApproach ? *m_extraApproach
+                                               : (m_pathIndex < static_cast<int>(m_layout.path.size()) ? commanded(m_pathIndex) : from);
+    m_leadInS = motion::scan::moveTimeS(from, firstTarget, m_plan.speedMmS, stageModelOf(m_client->identity(), m_client->softLimits()));
+    if (m_extraApproach && m_pathIndex < static_cast<int>(m_layout.path.size()))
+        m_leadInS += motion::scan::moveTimeS(*m_extraApproach, commanded(m_pathIndex), m_plan.speedMmS,
+                                             stageModelOf(m_client->identity(), m_client->softLimits()));
+    m_sessionEstimateFromS = (lastTaken >= 0 ? m_estimate.tileDoneS[static_cast<std::size_t>(lastTaken)] : 0.0) - m_leadInS;
     setState(State::Running);
     nextWaypoint();
     return true;
@@ -314,7 +324,9 @@ double ScanRunner::etaS() const
             lastTaken = t;
             break;
         }
-    const double remaining = m_estimate.totalS - (lastTaken >= 0 ? m_estimate.tileDoneS[static_cast<std::size_t>(lastTaken)] : 0.0);
+    double remaining = m_estimate.totalS - (lastTaken >= 0 ? m_estimate.tileDoneS[static_cast<std::size_t>(lastTaken)] : 0.0);
+    if (isActive() && m_takenCount == m_sessionFirstTaken)
+        remaining += m_leadInS;  // still on the way to the first tile of this session
     // Once a few tiles of this session are done, the run's own pace corrects the estimate.
     if (isActive() && m_takenCount - m_sessionFirstTaken >= 3 && lastTaken >= 0) {
         const double estimated = m_estimate.tileDoneS[static_cast<std::size_t>(lastTaken)] - m_sessionEstimateFromS;

@@ -128,7 +128,8 @@ private:
     QTimer m_exposure, m_settleTimeout;
     QElapsedTimer m_session;             ///< wall time since this start or resume
     int m_sessionFirstTaken = 0;
-    double m_sessionEstimateFromS = 0;   ///< the estimate's clock when this session began
+    double m_sessionEstimateFromS = 0;   ///< the estimate's clock when this session began, less the lead-in
+    double m_leadInS = 0;                ///< estimated move from where the stage stood to the session's first waypoint
     QList<QMetaObject::Connection> m_clientConnections;
 };
 
