@@ -102,6 +102,7 @@ int runCli(const QStringList& args, QTextStream& out, QTextStream& err);
 /// Registration lists, one per area (commands.cpp calls each in order).
 void addDeviceCommands(std::vector<Command>& list);
 void addMotionCommands(std::vector<Command>& list);
+void addScanCommands(std::vector<Command>& list);
 void addCompletionCommand(std::vector<Command>& list);
 
 /// The help texts, also used by the completion script.

@@ -10,6 +10,7 @@ const std::vector<Command>& commands()
         std::vector<Command> l;
         addDeviceCommands(l);
         addMotionCommands(l);
+        addScanCommands(l);
         addCompletionCommand(l);  // last: it lists the others
         return l;
     }();

@@ -201,8 +201,13 @@ std::vector<PlanProblem> validate(const ScanPlan& plan)
     Checker c(out);
     checkRegion(plan.region, c);
     checkCamera(plan.camera, c);
-    c.range("overlap[0]", plan.overlapX, 0, kMaxOverlap);
-    c.range("overlap[1]", plan.overlapY, 0, kMaxOverlap);
+    // Overlap is a share of the field: at 100 % the next tile would not move on.
+    for (int axis = 0; axis < 2; ++axis) {
+        const double o = axis == 0 ? plan.overlapX : plan.overlapY;
+        if (!(std::isfinite(o) && o >= 0 && o <= kMaxOverlap))
+            c.add(axis == 0 ? "overlap[0]" : "overlap[1]",
+                  "must be from 0 to 0.9, a share of the field up to 90 % (got " + num(o) + (std::isfinite(o) ? " = " + num(o * 100) + " %)" : ")"));
+    }
     if (plan.approach.unidirectional)
         c.positive("approach.overtravel_mm", plan.approach.overtravelMm, 10, " mm");
     c.range("motion.speed_mm_s", plan.speedMmS, 0.01, 1000, " mm/s");
