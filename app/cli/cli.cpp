@@ -208,7 +208,8 @@ int runCli(const QStringList& rawArgs, QTextStream& out, QTextStream& err)
         return fail(QStringLiteral("benchpilot-cli"), tr("no command given"), topHelp());
     }
     if (top.isSet(helpOption())) {  // "benchpilot-cli --help move" means "move --help"
-        rest.insert(1, QStringLiteral("--help"));
+        // After all the words, so "--help scan plan" reaches the subcommand.
+        rest.append(QStringLiteral("--help"));
     }
     LinkOptions link;
     if (!readLinkOptions(top, link, err, QStringLiteral("benchpilot-cli")))
