@@ -193,6 +193,12 @@ int scanPlan(Invocation& inv)
         QString error;
         if (!scanfile::loadPlan(inv.arguments().front(), &p, &error))
             return inv.usage(error);
+        if (inv.isSet(QStringLiteral("pixel-um"))) {
+            if (p.camera.source == FieldSource::Sensor)
+                return inv.usage(tr("--pixel-um: the plan's camera gives the pixel size (sensor pixel / magnification)"));
+            if (!inv.number(QStringLiteral("pixel-um"), p.camera.samplePixelUm))
+                return Usage;
+        }
     } else if (!planFromOptions(inv, p)) {
         return Usage;
     }
@@ -338,7 +344,7 @@ void addScanCommands(std::vector<Command>& list)
         opt("size", "region size, mm (with --centre)", "w,h"),
         opt("polygon", "region by its outline's corners, mm", "x,y;x,y;…"),
         opt("fov", "camera field at the sample, mm", "w,h"),
-        opt("pixel-um", "one pixel at the sample, µm (with --fov; TileConfiguration is in pixels)", "P"),
+        opt("pixel-um", "one pixel at the sample, µm (with --fov or a plan file; TileConfiguration is in pixels; plans default to 0.65)", "P"),
         opt("sensor", "camera sensor in pixels (with --sensor-um and --mag, instead of --fov)", "W,H"),
         opt("sensor-um", "sensor pixel pitch, µm", "P"),
         opt("mag", "magnification", "M"),

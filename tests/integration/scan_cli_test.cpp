@@ -57,6 +57,19 @@ TEST(ScanCli, PlanPrintsAPlanFileThatRunsAsIs)
     EXPECT_EQ(plan.plan->start, motion::scan::StartCorner::BottomRight);
     EXPECT_EQ(plan.plan->overlapX, 0.2);
     EXPECT_EQ(plan.plan->overlapY, 0.1);
+    // The printed plan is a plan file: it prints again from the file, in any format.
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("p.scan.json"));
+    QString error;
+    ASSERT_TRUE(files::writeAtomically(file, r.out.toStdString(), &error));
+    const CliOutput again = scanCli(QStringLiteral("scan plan %1 --format tileconfig --pixel-um 0.5").arg(file));
+    ASSERT_EQ(again.code, 0) << again.err.toStdString();
+    const auto fiji = scanread::readTileConfiguration(again.out.toStdString());
+    ASSERT_TRUE(fiji.error.empty()) << fiji.error;
+    EXPECT_TRUE(again.out.contains(QStringLiteral("0.5 µm each")));
+    const CliOutput both = scanCli(QStringLiteral("scan plan %1 --roi 1,1,2,2").arg(file));
+    EXPECT_EQ(both.code, 1);
+    EXPECT_TRUE(both.err.contains(QStringLiteral("not both (--roi)"))) << both.err.toStdString();
     const CliOutput s = scanCli(QStringLiteral("scan plan --roi 10,10,20,15 --fov 1.2,1 --overlap 0.2 --format summary"));
     ASSERT_EQ(s.code, 0) << s.err.toStdString();
     const QJsonObject j = QJsonDocument::fromJson(s.out.toUtf8()).object();
