@@ -30,15 +30,6 @@ using jobs::ScanRunner;
 
 QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
 
-QCommandLineOption opt(const char* name, const char* description, const char* valueName = nullptr, const char* fallback = nullptr)
-{
-    QCommandLineOption o(QString::fromLatin1(name), QCoreApplication::translate("cli", description),
-                         valueName ? QString::fromLatin1(valueName) : QString());
-    if (fallback)
-        o.setDefaultValue(QString::fromLatin1(fallback));
-    return o;
-}
-
 /// The option a person typed for a plan field, so a refusal names what to change.
 QString optionFor(const std::string& field, bool fromSensor)
 {
@@ -339,31 +330,31 @@ int scanRun(Invocation& inv)
 void addScanCommands(std::vector<Command>& list)
 {
     const QList<QCommandLineOption> planOptions = {
-        opt("roi", "region by two corners, mm", "x0,y0,x1,y1"),
-        opt("centre", "region by its centre, mm (with --size)", "x,y"),
-        opt("size", "region size, mm (with --centre)", "w,h"),
-        opt("polygon", "region by its outline's corners, mm", "x,y;x,y;…"),
-        opt("fov", "camera field at the sample, mm", "w,h"),
-        opt("pixel-um", "one pixel at the sample, µm (with --fov or a plan file; TileConfiguration is in pixels; plans default to 0.65)", "P"),
-        opt("sensor", "camera sensor in pixels (with --sensor-um and --mag, instead of --fov)", "W,H"),
-        opt("sensor-um", "sensor pixel pitch, µm", "P"),
-        opt("mag", "magnification", "M"),
-        opt("rotation", "camera rotation against stage +X, degrees", "DEG"),
-        opt("overlap", "overlap as a share of the field, 0 to 0.9, per axis", "o[,o]"),
-        opt("order", "snake-rows, rows, snake-cols or cols", "ORDER", "snake-rows"),
-        opt("start", "top-left, top-right, bottom-left or bottom-right", "CORNER", "top-left"),
-        opt("unidirectional", "approach every tile from the same side (backlash)"),
-        opt("overtravel", "overtravel of the unidirectional approach, mm", "MM"),
-        opt("speed", "speed of the moves between tiles, mm/s", "V"),
-        opt("settle", "expected settling per tile for the estimate, s", "S"),
-        opt("exposure", "exposure (dwell) per tile, s", "S"),
-        opt("tolerance-um", "a tile is taken once the grating is this close, µm", "UM"),
-        opt("compensate", "apply seed 002's positioning error curves to the targets"),
-        opt("name", "the scan's name", "NAME"),
-        opt("pattern", "tile file names, e.g. tile_{i:03}.tif", "PATTERN"),
-        opt("first-index", "number of the first tile in file names", "N"),
-        opt("mm-stage", "Micro-Manager's XY stage device label", "LABEL"),
-        opt("format", "json (the plan file), summary, tileconfig (Fiji), mmpos (Micro-Manager) or csv", "FORMAT", "json"),
+        option("roi", "region by two corners, mm", "x0,y0,x1,y1"),
+        option("centre", "region by its centre, mm (with --size)", "x,y"),
+        option("size", "region size, mm (with --centre)", "w,h"),
+        option("polygon", "region by its outline's corners, mm", "x,y;x,y;…"),
+        option("fov", "camera field at the sample, mm", "w,h"),
+        option("pixel-um", "one pixel at the sample, µm (with --fov or a plan file; TileConfiguration is in pixels; plans default to 0.65)", "P"),
+        option("sensor", "camera sensor in pixels (with --sensor-um and --mag, instead of --fov)", "W,H"),
+        option("sensor-um", "sensor pixel pitch, µm", "P"),
+        option("mag", "magnification", "M"),
+        option("rotation", "camera rotation against stage +X, degrees", "DEG"),
+        option("overlap", "overlap as a share of the field, 0 to 0.9, per axis", "o[,o]"),
+        option("order", "snake-rows, rows, snake-cols or cols", "ORDER", "snake-rows"),
+        option("start", "top-left, top-right, bottom-left or bottom-right", "CORNER", "top-left"),
+        option("unidirectional", "approach every tile from the same side (backlash)"),
+        option("overtravel", "overtravel of the unidirectional approach, mm", "MM"),
+        option("speed", "speed of the moves between tiles, mm/s", "V"),
+        option("settle", "expected settling per tile for the estimate, s", "S"),
+        option("exposure", "exposure (dwell) per tile, s", "S"),
+        option("tolerance-um", "a tile is taken once the grating is this close, µm", "UM"),
+        option("compensate", "apply seed 002's positioning error curves to the targets"),
+        option("name", "the scan's name", "NAME"),
+        option("pattern", "tile file names, e.g. tile_{i:03}.tif", "PATTERN"),
+        option("first-index", "number of the first tile in file names", "N"),
+        option("mm-stage", "Micro-Manager's XY stage device label", "LABEL"),
+        option("format", "json (the plan file), summary, tileconfig (Fiji), mmpos (Micro-Manager) or csv", "FORMAT", "json"),
     };
     Command plan{QStringLiteral("plan"), tr("plan a stitching scan and print it (plan file, summary, Fiji, Micro-Manager or CSV)"),
                  tr("[PLAN.json]"),
@@ -374,9 +365,9 @@ void addScanCommands(std::vector<Command>& list)
                 tr("PLAN.json"),
                 tr("Needs the stage (--sim stage or --port) homed (--home does it). The run log and TileConfiguration.txt, "
                    "positions.pos and scan.csv go to --out; a run stopped part-way continues at its next tile when run again."),
-                {opt("out", "folder for the run log and the exports (default: PLAN-run)", "DIR"),
-                 opt("home", "home the stage first"), opt("restart", "start over even if the folder holds a run (kept aside)"),
-                 opt("yes", "run a scan that takes longer than a minute without asking")},
+                {option("out", "folder for the run log and the exports (default: PLAN-run)", "DIR"),
+                 option("home", "home the stage first"), option("restart", "start over even if the folder holds a run (kept aside)"),
+                 option("yes", "run a scan that takes longer than a minute without asking")},
                 scanRun, {}};
     list.push_back({QStringLiteral("scan"), tr("stitching scans on the stage: plan, run"), {},
                     tr("See docs/scan.md for the grid rule, the plan file and the exports."), {}, {}, {plan, run}});
