@@ -395,7 +395,14 @@ void ScanRunner::onMoveAccepted(const std::optional<dev::RequestError>& error)
 {
     if (!error || m_phase != Phase::Moving)
         return;
-    stopWith(tr("The stage refused the move to %1: %2").arg(tileName(currentTile()), error->message), false);
+    // A move lost with the link is the link's story, whichever signal comes first.
+    if (error->kind == dev::RequestError::Kind::LinkDown || error->kind == dev::RequestError::Kind::Timeout || !m_client->isReady())
+        stopWith(tr("The link to the stage was lost at %1 (%2). Nothing more moves from here; reconnect, then Resume to "
+                    "continue at that tile.")
+                     .arg(tileName(currentTile()), error->message),
+                 false);
+    else
+        stopWith(tr("The stage refused the move to %1: %2").arg(tileName(currentTile()), error->message), false);
 }
 
 void ScanRunner::onEvent(const dev::DeviceEvent& e)

@@ -198,8 +198,18 @@ TEST(ScanRun, ALostLinkStopsTheRunAndItContinuesAfterReconnecting)
     QObject::connect(r.get(), &ScanRunner::problem, [&](const QString& m) { problems << m; });
     ASSERT_TRUE(r->start(&error)) << error.toStdString();
     ASSERT_TRUE(waitFor([&] { return r->takenTiles() >= 2; }, 20000));
-    s.session.link.pair().unplug();
+    // The cable comes out with a MOVE on the wire: the request is lost with the link,
+    // and the run says so (not "refused") whichever the client reports first.
+    bool pulled = false;
+    s.session.tap.afterWrite = [&](const QByteArray& bytes) {
+        if (!pulled && containsFrame(bytes, proto::MsgType::Move)) {
+            pulled = true;
+            QTimer::singleShot(0, [&] { s.session.link.pair().unplug(); });
+        }
+    };
     ASSERT_TRUE(waitState(*r, ScanRunner::State::Stopped, 5000));
+    s.session.tap.afterWrite = nullptr;
+    EXPECT_TRUE(pulled);
     ASSERT_FALSE(problems.isEmpty());
     EXPECT_TRUE(problems.last().contains(QStringLiteral("link to the stage was lost"))) << problems.last().toStdString();
     EXPECT_FALSE(r->start(&error)) << "no resume without a link";
