@@ -70,7 +70,8 @@ ScanScreen::ScanScreen(dev::InstrumentClient* stage, QWidget* parent)
     auto* right = new QWidget;
     auto* rv = new QVBoxLayout(right);
     rv->setContentsMargins(0, 0, 0, 0);
-    rv->addWidget(buildFileRow());
+    m_fileRow = buildFileRow();
+    rv->addWidget(m_fileRow);
     m_form = new ScanPlanForm;
     auto* scroll = new QScrollArea;
     scroll->setWidget(m_form);
@@ -367,6 +368,7 @@ void ScanScreen::updateRunUi()
     const bool active = m_runner->isActive();
     const bool resumable = st == ScanRunner::State::Paused || st == ScanRunner::State::Stopped;
     m_form->setEnabled(!active);
+    m_fileRow->setEnabled(!active);  // the plan that runs stays the plan on screen
     m_folder->setEnabled(!active);
     m_map->setDrawingEnabled(!active);
     m_runButton->setText(resumable && m_runner->takenTiles() > 0 ? tr("Resume") : tr("Run"));

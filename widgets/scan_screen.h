@@ -75,7 +75,7 @@ signals:
 
 private:
     QWidget* buildRunPanel();
-    QWidget* buildFileRow();
+    QWidget* buildFileRow();  ///< New, Open, Save: held back while a scan runs
     void scheduleReplan();
     void replan();
     void updateRunUi();
@@ -92,6 +92,7 @@ private:
     QLabel* m_summary;
     QLabel* m_problems;
     QLabel* m_pointer;
+    QWidget* m_fileRow;
     QLineEdit* m_folder;
     QPushButton *m_runButton, *m_pauseButton, *m_abortButton, *m_exportButton;
     QProgressBar* m_progress;
