@@ -186,9 +186,11 @@ TEST_F(ScanScreenTest, RunsOnTheStageWithProgressAndExports)
     ASSERT_TRUE(screen->run());
     EXPECT_FALSE(child<QPushButton>("scanRun")->isEnabled()) << "no second run while one is going";
     EXPECT_FALSE(screen->form()->isEnabled()) << "the plan is locked while it runs";
-    for (auto* b : screen->findChildren<QPushButton*>())
-        if (b->text() == QStringLiteral("Open plan…") || b->text() == QStringLiteral("New"))
+    for (auto* b : screen->findChildren<QPushButton*>()) {
+        if (b->text() == QStringLiteral("Open plan…") || b->text() == QStringLiteral("New")) {
             EXPECT_FALSE(b->isEnabled()) << "no other plan opens over a running one";
+        }
+    }
     ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::ScanRunner::State::Finished; }, 30000));
     auto* progress = child<QProgressBar>("scanProgress");
     EXPECT_EQ(progress->value(), 12);
