@@ -99,12 +99,18 @@ QString unmarkNegative(const QString& word);
 /// completion. Returns the exit code.
 int runCli(const QStringList& args, QTextStream& out, QTextStream& err);
 
+/// An option for a command's list: no `valueName` makes a flag, `fallback` is its
+/// default; the description is translated in the "cli" context.
+QCommandLineOption option(const char* name, const char* description, const char* valueName = nullptr,
+                          const char* fallback = nullptr);
+
 /// Registration lists, one per area (commands.cpp calls each in order).
 void addDeviceCommands(std::vector<Command>& list);
 void addMotionCommands(std::vector<Command>& list);
 void addTuningCommands(std::vector<Command>& list);
 void addPatternCommands(std::vector<Command>& list);
 void addRecipeCommands(std::vector<Command>& list);
+void addScanCommands(std::vector<Command>& list);
 void addCompletionCommand(std::vector<Command>& list);
 
 /// The help texts, also used by the completion script.

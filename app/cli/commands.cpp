@@ -13,6 +13,7 @@ const std::vector<Command>& commands()
         addTuningCommands(l);
         addPatternCommands(l);
         addRecipeCommands(l);
+        addScanCommands(l);
         addCompletionCommand(l);  // last: it lists the others
         return l;
     }();

@@ -133,4 +133,13 @@ CliSession* Invocation::session()
     return m_session.get();
 }
 
+QCommandLineOption option(const char* name, const char* description, const char* valueName, const char* fallback)
+{
+    QCommandLineOption o(QString::fromLatin1(name), QCoreApplication::translate("cli", description),
+                         valueName ? QString::fromLatin1(valueName) : QString());
+    if (fallback)
+        o.setDefaultValue(QString::fromLatin1(fallback));
+    return o;
+}
+
 } // namespace cli

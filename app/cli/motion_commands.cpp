@@ -346,10 +346,7 @@ std::function<int(Invocation&)> optionsOnly(int (*run)(Invocation&))
 
 QCommandLineOption opt(const char* name, const char* description, const char* valueName = "X", const char* fallback = nullptr)
 {
-    QCommandLineOption o(QString::fromLatin1(name), QCoreApplication::translate("cli", description), QString::fromLatin1(valueName));
-    if (fallback)
-        o.setDefaultValue(QString::fromLatin1(fallback));
-    return o;
+    return option(name, description, valueName, fallback);
 }
 
 QList<QCommandLineOption> profileLimits()

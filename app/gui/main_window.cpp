@@ -13,6 +13,7 @@
 #include "widgets/patterns/pattern_screen.h"
 #include "widgets/profiles_screen.h"
 #include "widgets/tuning/tuning_screen.h"
+#include "widgets/scan_screen.h"
 
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -134,6 +135,20 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     connect(m_plates, &ui::PlatesScreen::note, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Info, m); });
     wirePlatesScreen(m_plates, this, m_options);
     addScreen(QStringLiteral("plates"), tr("Plates"), m_plates);
+    m_scan = new ui::ScanScreen(m_sessions[1]->client());
+    m_scan->setFileChooser([this](ui::ScanScreen::FileAction a, const QString& title, const QString& filter) {
+        const QString docs = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+        if (a == ui::ScanScreen::FileAction::Open)
+            return QFileDialog::getOpenFileName(this, title, docs, filter);
+        if (a == ui::ScanScreen::FileAction::Save)
+            return QFileDialog::getSaveFileName(this, title, docs, filter);
+        return QFileDialog::getExistingDirectory(this, title, filter.isEmpty() ? docs : filter);
+    });
+    if (m_options.confirmDialogs)
+        m_scan->setConfirm([this](const QString& q) { return confirm(q); });
+    connect(m_scan, &ui::ScanScreen::problem, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); });
+    connect(m_scan, &ui::ScanScreen::notice, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Info, m); });
+    addScreen(QStringLiteral("scan"), tr("Scan"), m_scan);
     connect(m_nav, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
     m_nav->setCurrentRow(0);
 
@@ -330,6 +345,12 @@ void MainWindow::loadSettings()
     }
     m_motion->load(st);
     m_nav->setCurrentRow(std::clamp(st.value(QStringLiteral("window/screen"), 0).toInt(), 0, m_nav->count() - 1));
+    QString scanError;
+    const QString scanPlan = st.value(QStringLiteral("scan/plan")).toString();
+    if (!scanPlan.isEmpty() && !m_scan->setPlanText(scanPlan, &scanError))
+        m_log->addNote(tr("Scan"), tr("settings"), tr("the last scan plan did not load: %1").arg(scanError), true);
+    if (st.contains(QStringLiteral("scan/folder")))
+        m_scan->setOutputFolder(st.value(QStringLiteral("scan/folder")).toString());
     m_jogTabs->setCurrentIndex(std::clamp(st.value(QStringLiteral("window/instrument"), 0).toInt(), 0, 1));
     m_tuning->restoreState(st.value(QStringLiteral("tuning/state")).toMap());
 }
@@ -343,6 +364,8 @@ void MainWindow::saveSettings()
     st.setValue(QStringLiteral("window/instrument"), m_jogTabs->currentIndex());
     st.setValue(QStringLiteral("tuning/state"), m_tuning->saveState());
     m_motion->save(st);
+    st.setValue(QStringLiteral("scan/plan"), m_scan->planText());
+    st.setValue(QStringLiteral("scan/folder"), m_scan->outputFolder());
     const char* keys[2] = {"analyzer", "stage"};
     for (int i = 0; i < 2; ++i) {
         const ui::ConnectionChoice c = m_sessions[i]->choice();

@@ -21,6 +21,7 @@ class MessageBanner;
 class PlotsScreen;
 class TuningScreen;
 class PlatesScreen;
+class ScanScreen;
 } // namespace ui
 
 namespace app {
@@ -52,6 +53,7 @@ public:
     /// The Joystick and Patterns screens (motion_screens.h).
     MotionScreens* motionScreens() { return m_motion; }
     ui::PlatesScreen* platesScreen() { return m_plates; }
+    ui::ScanScreen* scanScreen() { return m_scan; }
     tele::TelemetryHub* telemetry() { return m_hub; }
     ui::MessageBanner* banner() { return m_banner; }
     ui::EventLog* eventLog() { return m_log; }
@@ -80,6 +82,7 @@ private:
     ui::PlotsScreen* m_plots;
     ui::TuningScreen* m_tuning;
     ui::PlatesScreen* m_plates;
+    ui::ScanScreen* m_scan;
     ui::ConnectionBar* m_bars[2];
     ui::JogScreen* m_jog[2];
     QTabWidget* m_jogTabs;

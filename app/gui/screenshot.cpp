@@ -12,8 +12,10 @@
 #include "widgets/patterns/pattern_screen.h"
 #include "device/link/simulated_link.h"
 #include "widgets/plates/plates_screen.h"
+#include "screenshot_scan.h"
 
 #include <QElapsedTimer>
+#include <QTemporaryDir>
 #include <QEventLoop>
 #include <QTimer>
 
@@ -62,7 +64,14 @@ int takeScreenshot(const ScreenshotRequest& r)
         std::fprintf(stderr, "benchpilot: the simulated instruments did not become ready\n");
         return 3;
     }
-    if (r.homeFirst) {
+    // The Scan screen shows a scan at work instead of the generic motion below.
+    const bool scan = r.screen == QLatin1String("scan");
+    QTemporaryDir scratch;
+    if (scan && (r.homeFirst || r.exercise) && !showScanAtWork(w, scratch.path())) {
+        std::fprintf(stderr, "benchpilot: the scan did not get going on the simulated stage\n");
+        return 3;
+    }
+    if (r.homeFirst && !scan) {
         s->client()->home(0);
         spin(300);
         spinUntil([&] { return !s->client()->status().anyMoving(); }, 30000);
@@ -91,7 +100,7 @@ int takeScreenshot(const ScreenshotRequest& r)
         }
         j->driver()->stop();
         spin(500);
-    } else if (r.exercise) {
+    } else if (r.exercise && !scan) {
         // A jog of X, then a diagonal and a move back in X: the plots and the XY path
         // show a jog and a move, commanded against measured.
         dev::InstrumentClient* c = s->client();

@@ -1,0 +1,376 @@
+// benchpilot-cli's stitching scan commands (issue 10):
+//   scan plan  --roi x0,y0,x1,y1 --fov w,h --overlap o[,o] --order … [--format …]
+//              prints the plan file, a summary, or the tile positions as Fiji,
+//              Micro-Manager or CSV read them;
+//   scan run   PLAN.json [--out DIR] on --sim stage or --port: runs the scan,
+//              continues a run stopped part-way, writes the exports with the
+//              measured positions. See docs/scan.md.
+#include "cli_session.h"
+#include "command.h"
+
+#include "device/files/scan_exports.h"
+#include "device/files/scan_plan_file.h"
+#include "device/jobs/scan_runner.h"
+#include "motion/plans/scan/scan_estimate.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <cmath>
+
+namespace cli {
+namespace {
+
+using namespace motion::scan;
+using jobs::ScanRunner;
+
+QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+
+/// The option a person typed for a plan field, so a refusal names what to change.
+QString optionFor(const std::string& field, bool fromSensor)
+{
+    static const std::pair<const char*, const char*> kFields[] = {
+        {"region.corners_mm", "--roi"},        {"region.centre_mm", "--centre"},      {"region.size_mm", "--size"},
+        {"region.vertices_mm", "--polygon"},   {"camera.sensor_pixel_um", "--sensor-um"}, {"camera.magnification", "--mag"},
+        {"camera.pixel_um", "--pixel-um"},     {"camera.rotation_deg", "--rotation"}, {"overlap", "--overlap"},
+        {"approach.overtravel_mm", "--overtravel"}, {"motion.speed_mm_s", "--speed"}, {"timing.settle_s", "--settle"},
+        {"timing.exposure_s", "--exposure"},   {"timing.tolerance_um", "--tolerance-um"}, {"export.file_pattern", "--pattern"},
+        {"export.first_index", "--first-index"}, {"export.mm_xy_stage", "--mm-stage"}, {"compensation", "--compensate"}};
+    if (field.rfind("camera.field_mm", 0) == 0 || field.rfind("camera.sensor_px", 0) == 0)
+        return fromSensor ? QStringLiteral("--sensor") : QStringLiteral("--fov");
+    for (const auto& [prefix, option] : kFields)
+        if (field.rfind(prefix, 0) == 0)
+            return QString::fromLatin1(option);
+    return QString::fromStdString(field);
+}
+
+/// "1,2,3" → exactly `count` numbers (or 1..count when `upTo`), reported against --option.
+bool readNumbers(Invocation& inv, const char* option, int count, QVector<double>& out, bool upTo = false)
+{
+    if (!inv.numbers(QString::fromLatin1(option), out, upTo ? 0 : count))
+        return false;
+    if (upTo && (out.isEmpty() || out.size() > count)) {
+        inv.report(tr("--%1 '%2' needs 1 to %3 comma-separated numbers").arg(QLatin1String(option), inv.value(QLatin1String(option))).arg(count));
+        return false;
+    }
+    return true;
+}
+
+bool readNumber(Invocation& inv, const char* option, double& value)
+{
+    return !inv.isSet(QString::fromLatin1(option)) || inv.number(QString::fromLatin1(option), value);
+}
+
+/// The plan the options describe; false after saying what is wrong.
+bool planFromOptions(Invocation& inv, ScanPlan& p)
+{
+    auto set = [&](const char* o) { return inv.isSet(QString::fromLatin1(o)); };
+    const int regions = int(set("roi")) + int(set("centre") || set("size")) + int(set("polygon"));
+    if (regions != 1) {
+        inv.usage(regions == 0 ? tr("give the region: --roi x0,y0,x1,y1, --centre x,y with --size w,h, or --polygon 'x,y;x,y;…'")
+                               : tr("give one region: --roi, --centre/--size or --polygon"));
+        return false;
+    }
+    QVector<double> v;
+    if (set("roi")) {
+        if (!readNumbers(inv, "roi", 4, v))
+            return false;
+        p.region.kind = RegionKind::Corners;
+        p.region.cornerA = {v[0], v[1]};
+        p.region.cornerB = {v[2], v[3]};
+    } else if (set("polygon")) {
+        p.region.kind = RegionKind::Polygon;
+        for (const QString& corner : inv.value(QStringLiteral("polygon")).split(QLatin1Char(';'), Qt::SkipEmptyParts)) {
+            const QStringList xy = corner.split(QLatin1Char(','));
+            bool okX = false, okY = false;
+            const double x = xy.size() == 2 ? xy[0].trimmed().toDouble(&okX) : 0, y = xy.size() == 2 ? xy[1].trimmed().toDouble(&okY) : 0;
+            if (!okX || !okY) {
+                inv.usage(tr("--polygon: corner '%1' is not x,y in mm").arg(corner.trimmed()));
+                return false;
+            }
+            p.region.vertices.push_back({x, y});
+        }
+    } else {
+        QVector<double> c, s;
+        if (!readNumbers(inv, "centre", 2, c) || !readNumbers(inv, "size", 2, s))
+            return false;
+        p.region.kind = RegionKind::CentreSize;
+        p.region.centre = {c[0], c[1]};
+        p.region.widthMm = s[0];
+        p.region.heightMm = s[1];
+    }
+    if (set("fov") == set("sensor")) {
+        inv.usage(tr("give the camera field: --fov w,h in mm, or --sensor W,H px with --sensor-um and --mag"));
+        return false;
+    }
+    if (set("fov")) {
+        if (!readNumbers(inv, "fov", 2, v))
+            return false;
+        p.camera.source = FieldSource::Direct;
+        p.camera.fieldWidthMm = v[0];
+        p.camera.fieldHeightMm = v[1];
+        if (!readNumber(inv, "pixel-um", p.camera.samplePixelUm))
+            return false;
+    } else {
+        if (!readNumbers(inv, "sensor", 2, v))
+            return false;
+        if (v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]) || v[0] < 1 || v[1] < 1 || v[0] > 1e5 || v[1] > 1e5) {
+            inv.usage(tr("--sensor '%1' must be two whole pixel counts").arg(inv.value(QStringLiteral("sensor"))));
+            return false;
+        }
+        p.camera.source = FieldSource::Sensor;
+        p.camera.sensorWidthPx = static_cast<int>(v[0]);
+        p.camera.sensorHeightPx = static_cast<int>(v[1]);
+        if (!inv.number(QStringLiteral("sensor-um"), p.camera.sensorPixelUm) || !inv.number(QStringLiteral("mag"), p.camera.magnification))
+            return false;
+    }
+    if (!readNumber(inv, "rotation", p.camera.rotationDeg))
+        return false;
+    if (set("overlap")) {
+        if (!readNumbers(inv, "overlap", 2, v, true))
+            return false;
+        p.overlapX = v[0];
+        p.overlapY = v.size() > 1 ? v[1] : v[0];
+    }
+    const QString order = inv.value(QStringLiteral("order"));
+    const auto o = orderFromName(order.toStdString());
+    if (!o) {
+        inv.usage(tr("--order '%1' is not one of snake-rows, rows, snake-cols, cols").arg(order));
+        return false;
+    }
+    p.order = *o;
+    const QString start = inv.value(QStringLiteral("start"));
+    const auto c = startCornerFromName(start.toStdString());
+    if (!c) {
+        inv.usage(tr("--start '%1' is not one of top-left, top-right, bottom-left, bottom-right").arg(start));
+        return false;
+    }
+    p.start = *c;
+    p.approach.unidirectional = set("unidirectional");
+    p.compensation.enabled = set("compensate");
+    double firstIndex = p.naming.firstIndex;
+    if (!readNumber(inv, "overtravel", p.approach.overtravelMm) || !readNumber(inv, "speed", p.speedMmS)
+        || !readNumber(inv, "settle", p.settleS) || !readNumber(inv, "exposure", p.exposureS)
+        || !readNumber(inv, "tolerance-um", p.toleranceUm) || !readNumber(inv, "first-index", firstIndex))
+        return false;
+    p.naming.firstIndex = static_cast<int>(std::clamp(firstIndex, -1.0, 2e6));
+    if (set("name"))
+        p.name = inv.value(QStringLiteral("name")).toStdString();
+    if (set("pattern"))
+        p.naming.filePattern = inv.value(QStringLiteral("pattern")).toStdString();
+    if (set("mm-stage"))
+        p.naming.mmXyStage = inv.value(QStringLiteral("mm-stage")).toStdString();
+    return true;
+}
+
+int scanPlan(Invocation& inv)
+{
+    const QString format = inv.value(QStringLiteral("format"));
+    static const QStringList kFormats = {QStringLiteral("json"), QStringLiteral("summary"), QStringLiteral("tileconfig"),
+                                         QStringLiteral("mmpos"), QStringLiteral("csv")};
+    if (!kFormats.contains(format))
+        return inv.usage(tr("--format '%1' is not one of json, summary, tileconfig, mmpos, csv").arg(format));
+    ScanPlan p;
+    if (inv.arguments().size() > 1)
+        return inv.usage(tr("takes at most one plan file (got '%1')").arg(inv.arguments().join(QLatin1Char(' '))));
+    if (inv.arguments().size() == 1) {
+        for (const char* o : {"roi", "centre", "size", "polygon", "fov", "sensor", "overlap"})
+            if (inv.isSet(QString::fromLatin1(o)))
+                return inv.usage(tr("give a plan file or the plan's options, not both (--%1)").arg(QLatin1String(o)));
+        QString error;
+        if (!scanfile::loadPlan(inv.arguments().front(), &p, &error))
+            return inv.usage(error);
+        if (inv.isSet(QStringLiteral("pixel-um"))) {
+            if (p.camera.source == FieldSource::Sensor)
+                return inv.usage(tr("--pixel-um: the plan's camera gives the pixel size (sensor pixel / magnification)"));
+            if (!inv.number(QStringLiteral("pixel-um"), p.camera.samplePixelUm))
+                return Usage;
+        }
+    } else if (!planFromOptions(inv, p)) {
+        return Usage;
+    }
+    // Checked against the standard (simulated) 100 × 100 mm stage; `scan run` checks the connected one.
+    const auto problems = validate(p, StageModel{});
+    if (!problems.empty()) {
+        // Every problem once, each naming the option to change (X and Y of --overlap may say the same).
+        QStringList lines;
+        for (const auto& pr : problems) {
+            const QString line = optionFor(pr.field, p.camera.source == FieldSource::Sensor) + QStringLiteral(": ")
+                + QString::fromStdString(pr.message);
+            if (!lines.contains(line))
+                lines << line;
+        }
+        for (const QString& line : lines)
+            inv.report(line);
+        return Usage;
+    }
+    if (format == QLatin1String("tileconfig") && p.camera.source == FieldSource::Direct && !inv.isSet(QStringLiteral("pixel-um"))
+        && inv.arguments().isEmpty())
+        return inv.usage(tr("--format tileconfig gives pixels: add --pixel-um (one pixel at the sample, µm)"));
+    const ScanLayout layout = layoutScan(p);
+    QTextStream& out = inv.out();
+    if (format == QLatin1String("json")) {
+        out << QString::fromStdString(scanfile::writePlan(p));
+    } else if (format == QLatin1String("summary")) {
+        const ScanEstimate e = estimateScan(p, layout, StageModel{});
+        out << QJsonDocument(QJsonObject{{QStringLiteral("tiles"), static_cast<int>(layout.tiles.size())},
+                                         {QStringLiteral("columns"), layout.grid.columns},
+                                         {QStringLiteral("rows"), layout.grid.rows},
+                                         {QStringLiteral("field_mm"), QJsonArray{layout.grid.fieldWidthMm, layout.grid.fieldHeightMm}},
+                                         {QStringLiteral("step_mm"), QJsonArray{layout.grid.stepXMm, layout.grid.stepYMm}},
+                                         {QStringLiteral("moves"), e.moves},
+                                         {QStringLiteral("travel_mm"), e.travelMm},
+                                         {QStringLiteral("estimate_s"), e.totalS},
+                                         {QStringLiteral("moves_s"), e.moveS},
+                                         {QStringLiteral("settle_s"), e.settleS},
+                                         {QStringLiteral("exposure_s"), e.exposureS}})
+                   .toJson(QJsonDocument::Compact)
+            << "\n";
+    } else {
+        const auto records = scanfile::plannedRecords(p, layout);
+        const std::string text = format == QLatin1String("tileconfig") ? scanfile::tileConfiguration(p, records)
+            : format == QLatin1String("mmpos")                         ? scanfile::microManagerPositions(p, layout)
+                                                                       : scanfile::scanCsv(p, layout, records);
+        out << QString::fromStdString(text);
+    }
+    out.flush();
+    return Ok;
+}
+
+int scanRun(Invocation& inv)
+{
+    if (inv.arguments().size() != 1)
+        return inv.usage(tr("needs one plan file: scan run PLAN.json [--out DIR]"));
+    const QString planPath = inv.arguments().front();
+    ScanPlan plan;
+    QString error;
+    if (!scanfile::loadPlan(planPath, &plan, &error))
+        return inv.usage(error);
+    const QString folder = inv.isSet(QStringLiteral("out"))
+        ? inv.value(QStringLiteral("out"))
+        : QFileInfo(planPath).completeBaseName().section(QLatin1Char('.'), 0, 0) + QStringLiteral("-run");
+    CliSession* s = inv.session();
+    if (!s)
+        return LinkTrouble;
+    dev::InstrumentClient* client = s->client();
+    if (client->identity().kind != proto::DeviceKind::Stage)
+        return inv.refused(tr("scans run on the microscope stage; this is the %1 (use --sim stage or --port)").arg(client->identity().kindName()));
+    if (inv.isSet(QStringLiteral("home"))) {
+        if (const int rc = s->request([&](auto cb) { client->home(0, cb); }, tr("home")))
+            return rc;
+        auto homed = [&] {
+            const auto& st = client->status();
+            return st.axes.size() >= 2 && st.axes[0].homed && st.axes[1].homed && !st.anyMoving();
+        };
+        if (!spinUntil([&] { return homed() || !client->isReady(); }, static_cast<int>(inv.link().timeoutS * 1000)) || !homed())
+            return inv.refused(tr("homing did not finish"));
+    }
+    ScanRunner runner(client);
+    if (!runner.prepare(plan, folder, inv.isSet(QStringLiteral("restart")), &error))
+        return error.contains(QLatin1String("different scan")) ? inv.usage(error + tr(" (--restart starts over)")) : inv.refused(error);
+    QTextStream& out = inv.out();
+    if (runner.state() == ScanRunner::State::Finished) {
+        QStringList written;
+        if (!runner.writeExports(&written, &error))
+            return inv.refused(error);
+        out << tr("Every tile of this scan is already taken in %1; exports written again. --restart takes them anew.\n").arg(folder);
+        out.flush();
+        return Ok;
+    }
+    const QStringList blockers = runner.preflight();
+    if (!blockers.isEmpty())
+        return inv.refused(blockers.join(QStringLiteral("; ")) + (inv.isSet(QStringLiteral("home")) ? QString() : tr(" (--home homes the stage first)")));
+    const double eta = runner.etaS();
+    if (eta > 60 && !inv.isSet(QStringLiteral("yes")))
+        return inv.usage(tr("this scan takes about %1 min on the stage; add --yes to run it").arg(std::ceil(eta / 60)));
+    if (runner.takenTiles() > 0)
+        out << tr("Continuing at tile %1 of %2 (the run log in %3 has the first %4).\n")
+                   .arg(runner.takenTiles() + 1).arg(runner.totalTiles()).arg(folder).arg(runner.takenTiles());
+    QString stopReason;
+    QStringList exports;
+    QObject::connect(&runner, &ScanRunner::problem, [&](const QString& m) { stopReason = m; });
+    QObject::connect(&runner, &ScanRunner::finished, [&](const QStringList& e) { exports = e; });
+    QObject::connect(&runner, &ScanRunner::tileTaken, [&](int tile) {
+        const auto& r = runner.records()[static_cast<std::size_t>(tile)];
+        if (inv.json())
+            out << QJsonDocument(QJsonObject{{QStringLiteral("tile"), tile + 1},
+                                             {QStringLiteral("file"), QString::fromStdString(r.label)},
+                                             {QStringLiteral("planned_mm"), QJsonArray{r.plannedMm[0], r.plannedMm[1]}},
+                                             {QStringLiteral("measured_mm"), QJsonArray{r.measuredMm[0], r.measuredMm[1]}},
+                                             {QStringLiteral("device_time_us"), static_cast<qint64>(r.deviceTimeUs)}})
+                       .toJson(QJsonDocument::Compact)
+                << "\n";
+        else
+            out << tr("tile %1/%2 %3 at %4, %5 mm (%6 s to settle)\n")
+                       .arg(tile + 1).arg(runner.totalTiles()).arg(QString::fromStdString(r.label))
+                       .arg(r.measuredMm[0], 0, 'f', 4).arg(r.measuredMm[1], 0, 'f', 4).arg(r.settleS, 0, 'f', 3);
+        out.flush();
+    });
+    if (!runner.start(&error))
+        return inv.refused(error);
+    spinUntil([&] { return !runner.isActive(); }, std::numeric_limits<int>::max());
+    if (runner.state() != ScanRunner::State::Finished) {
+        const bool link = !client->isReady();
+        const QString again = tr(" Run the same command again to continue.");
+        return link ? inv.linkTrouble(stopReason + again) : inv.refused(stopReason + again);
+    }
+    if (!stopReason.isEmpty())
+        return inv.refused(stopReason);
+    out << tr("%1 tiles taken; wrote %2\n").arg(runner.totalTiles()).arg(exports.join(QStringLiteral(", ")));
+    out.flush();
+    return Ok;
+}
+
+} // namespace
+
+void addScanCommands(std::vector<Command>& list)
+{
+    const QList<QCommandLineOption> planOptions = {
+        option("roi", "region by two corners, mm", "x0,y0,x1,y1"),
+        option("centre", "region by its centre, mm (with --size)", "x,y"),
+        option("size", "region size, mm (with --centre)", "w,h"),
+        option("polygon", "region by its outline's corners, mm", "x,y;x,y;…"),
+        option("fov", "camera field at the sample, mm", "w,h"),
+        option("pixel-um", "one pixel at the sample, µm (with --fov or a plan file; TileConfiguration is in pixels; plans default to 0.65)", "P"),
+        option("sensor", "camera sensor in pixels (with --sensor-um and --mag, instead of --fov)", "W,H"),
+        option("sensor-um", "sensor pixel pitch, µm", "P"),
+        option("mag", "magnification", "M"),
+        option("rotation", "camera rotation against stage +X, degrees", "DEG"),
+        option("overlap", "overlap as a share of the field, 0 to 0.9, per axis", "o[,o]"),
+        option("order", "snake-rows, rows, snake-cols or cols", "ORDER", "snake-rows"),
+        option("start", "top-left, top-right, bottom-left or bottom-right", "CORNER", "top-left"),
+        option("unidirectional", "approach every tile from the same side (backlash)"),
+        option("overtravel", "overtravel of the unidirectional approach, mm", "MM"),
+        option("speed", "speed of the moves between tiles, mm/s", "V"),
+        option("settle", "expected settling per tile for the estimate, s", "S"),
+        option("exposure", "exposure (dwell) per tile, s", "S"),
+        option("tolerance-um", "a tile is taken once the grating is this close, µm", "UM"),
+        option("compensate", "apply seed 002's positioning error curves to the targets"),
+        option("name", "the scan's name", "NAME"),
+        option("pattern", "tile file names, e.g. tile_{i:03}.tif", "PATTERN"),
+        option("first-index", "number of the first tile in file names", "N"),
+        option("mm-stage", "Micro-Manager's XY stage device label", "LABEL"),
+        option("format", "json (the plan file), summary, tileconfig (Fiji), mmpos (Micro-Manager) or csv", "FORMAT", "json"),
+    };
+    Command plan{QStringLiteral("plan"), tr("plan a stitching scan and print it (plan file, summary, Fiji, Micro-Manager or CSV)"),
+                 tr("[PLAN.json]"),
+                 tr("The tile grid steps by exactly field × (1 − overlap), centred on the region: n = max(1, ceil((W − F)/(F(1 − o))) + 1) "
+                    "per axis. Checked against the standard 100 × 100 mm stage. With PLAN.json, prints that plan in --format."),
+                 planOptions, scanPlan, {}};
+    Command run{QStringLiteral("run"), tr("run a scan plan on the stage, continue a stopped run, write the exports"),
+                tr("PLAN.json"),
+                tr("Needs the stage (--sim stage or --port) homed (--home does it). The run log and TileConfiguration.txt, "
+                   "positions.pos and scan.csv go to --out; a run stopped part-way continues at its next tile when run again."),
+                {option("out", "folder for the run log and the exports (default: PLAN-run)", "DIR"),
+                 option("home", "home the stage first"), option("restart", "start over even if the folder holds a run (kept aside)"),
+                 option("yes", "run a scan that takes longer than a minute without asking")},
+                scanRun, {}};
+    list.push_back({QStringLiteral("scan"), tr("stitching scans on the stage: plan, run"), {},
+                    tr("See docs/scan.md for the grid rule, the plan file and the exports."), {}, {}, {plan, run}});
+}
+
+} // namespace cli

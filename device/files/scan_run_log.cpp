@@ -1,0 +1,155 @@
+#include "device/files/scan_run_log.h"
+
+#include <cinttypes>
+#include <cstdio>
+#include <cstdlib>
+
+namespace scanfile {
+
+using jsonio::ObjectReader;
+using jsonio::Value;
+
+std::string fingerprintText(std::uint64_t fingerprint)
+{
+    char buf[24];
+    std::snprintf(buf, sizeof buf, "%016" PRIx64, fingerprint);
+    return buf;
+}
+
+std::string runLogHeader(const std::string& planName, std::uint64_t fingerprint, int tiles)
+{
+    Value v = jsonio::schemaObject(kRunLogSchema, kRunLogVersion);
+    v.set("plan", Value(planName));
+    v.set("fingerprint", Value(fingerprintText(fingerprint)));
+    v.set("tiles", Value(tiles));
+    return jsonio::write(v, false) + "\n";
+}
+
+namespace {
+
+Value list(const std::vector<double>& xs)
+{
+    Value v = Value::array();
+    for (double x : xs)
+        v.push(x);
+    return v;
+}
+
+std::optional<std::vector<double>> readAxes(ObjectReader& o, std::string_view key)
+{
+    const Value* v = o.get(key, Value::Type::Array, true);
+    if (!v)
+        return std::nullopt;
+    std::vector<double> out;
+    for (const Value& item : v->items()) {
+        if (!item.isNumber()) {
+            o.problems().add(item, o.pathOf(key), "must hold numbers (mm)");
+            return std::nullopt;
+        }
+        out.push_back(item.asNumber());
+    }
+    if (out.size() != 2) {
+        o.problems().add(*v, o.pathOf(key), "must hold two positions, X and Y (mm)");
+        return std::nullopt;
+    }
+    return out;
+}
+
+/// Problems of one line, moved to where the line stands in the file.
+void addShifted(jsonio::Problems& into, const jsonio::Problems& line, int lineNo)
+{
+    for (const auto& p : line.list())
+        into.add(jsonio::Position{lineNo, p.position.column}, p.path, p.message);
+}
+
+} // namespace
+
+std::string runLogLine(const motion::PositionRecord& r)
+{
+    Value v = Value::object();
+    v.set("tile", Value(r.target));
+    v.set("label", Value(r.label));
+    v.set("planned_mm", list(r.plannedMm));
+    v.set("commanded_mm", list(r.commandedMm));
+    v.set("measured_mm", list(r.measuredMm));
+    v.set("device_time_us", Value(static_cast<double>(r.deviceTimeUs)));
+    v.set("settle_s", Value(r.settleS));
+    return jsonio::write(v, false) + "\n";
+}
+
+RunLogReadResult parseRunLog(std::string_view text)
+{
+    RunLogReadResult out;
+    RunLog log;
+    std::size_t at = 0;
+    int lineNo = 0;
+    bool header = false;
+    while (at < text.size()) {
+        const std::size_t nl = text.find('\n', at);
+        const bool complete = nl != std::string_view::npos;
+        const std::string_view line = text.substr(at, complete ? nl - at : std::string_view::npos);
+        at = complete ? nl + 1 : text.size();
+        ++lineNo;
+        if (line.find_first_not_of(" \t\r") == std::string_view::npos)
+            continue;
+        const jsonio::ParseResult parsed = jsonio::parse(line);
+        if (!parsed) {
+            if (!complete && header) {
+                log.tornTail = true;  // the write a crash interrupted: that tile is simply not taken
+                break;
+            }
+            out.problems.add(jsonio::Position{lineNo, parsed.error.position.column}, "", parsed.error.message);
+            break;
+        }
+        jsonio::Problems lp;
+        if (!header) {
+            if (jsonio::checkSchema(*parsed.value, kRunLogSchema, kRunLogVersion, lp)) {
+                ObjectReader o(*parsed.value, "", lp);
+                o.refuseUnknown({"schema", "version", "plan", "fingerprint", "tiles"});
+                const auto name = o.string("plan", true);
+                const auto fp = o.string("fingerprint", true);
+                const auto tiles = o.integer("tiles", true, 1, 1000000000);
+                if (fp && (fp->size() != 16 || fp->find_first_not_of("0123456789abcdef") != std::string::npos))
+                    lp.add(*parsed.value->find("fingerprint"), "fingerprint", "must be 16 lower-case hex digits");
+                else if (name && fp && tiles) {
+                    log.planName = *name;
+                    log.fingerprint = std::strtoull(fp->c_str(), nullptr, 16);
+                    log.tiles = static_cast<int>(*tiles);
+                }
+            }
+            addShifted(out.problems, lp, lineNo);
+            if (!out.problems.empty())
+                return out;
+            header = true;
+            continue;
+        }
+        ObjectReader o(*parsed.value, "", lp);
+        o.refuseUnknown({"tile", "label", "planned_mm", "commanded_mm", "measured_mm", "device_time_us", "settle_s"});
+        motion::PositionRecord r;
+        const auto tile = o.integer("tile", true, 0, log.tiles - 1);
+        const auto label = o.string("label", true);
+        const auto planned = readAxes(o, "planned_mm");
+        const auto commanded = readAxes(o, "commanded_mm");
+        const auto measured = readAxes(o, "measured_mm");
+        const auto time = o.number("device_time_us", true, 0, 9007199254740992.0);
+        const auto settle = o.number("settle_s", true, 0, 1e6);
+        if (tile && label && planned && commanded && measured && time && settle) {
+            r.target = static_cast<int>(*tile);
+            r.label = *label;
+            r.plannedMm = *planned;
+            r.commandedMm = *commanded;
+            r.measuredMm = *measured;
+            r.deviceTimeUs = static_cast<std::uint64_t>(*time);
+            r.settleS = *settle;
+            log.records.push_back(std::move(r));
+        }
+        addShifted(out.problems, lp, lineNo);
+    }
+    if (!header && out.problems.empty())
+        out.problems.add(jsonio::Position{1, 1}, "", "the run log is empty: it has no header line");
+    if (out.problems.empty())
+        out.log = std::move(log);
+    return out;
+}
+
+} // namespace scanfile

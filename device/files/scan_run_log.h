@@ -1,0 +1,47 @@
+#pragma once
+// The run log of a stitching scan: a JSON Lines journal that survives a crash,
+// a pulled cable or a closed window, so a run resumes at its next tile.
+//   line 1:  {"schema": "benchpilot.scan-run", "version": 1, "plan": NAME,
+//             "fingerprint": HEX, "tiles": N}
+//   then one line per tile taken, in the order taken:
+//            {"tile": K, "label": …, "planned_mm": [x, y], "commanded_mm": […],
+//             "measured_mm": […], "device_time_us": T, "settle_s": S}
+// A line is appended (and flushed) once the tile's exposure has ended. A whole
+// file is never rewritten, so a crash can only tear the last line: a last line
+// without its newline that does not parse is dropped, anything else wrong is an
+// error with its line and column. Plain C++ (fuzzed); docs/scan.md.
+#include "device/files/json_fields.h"
+#include "motion/records/position_record.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace scanfile {
+
+constexpr const char* kRunLogSchema = "benchpilot.scan-run";
+constexpr int kRunLogVersion = 1;
+constexpr const char* kRunLogFile = "scan-run.jsonl";
+
+struct RunLog {
+    std::string planName;
+    std::uint64_t fingerprint = 0;
+    int tiles = 0;
+    std::vector<motion::PositionRecord> records;  ///< in the order taken
+    bool tornTail = false;                        ///< a last line cut short by a crash was dropped
+};
+
+struct RunLogReadResult {
+    std::optional<RunLog> log;
+    jsonio::Problems problems;
+};
+
+std::string runLogHeader(const std::string& planName, std::uint64_t fingerprint, int tiles);
+std::string runLogLine(const motion::PositionRecord& record);
+RunLogReadResult parseRunLog(std::string_view text);
+
+std::string fingerprintText(std::uint64_t fingerprint);  ///< 16 hex digits
+
+} // namespace scanfile

@@ -1,0 +1,539 @@
+#include "device/jobs/scan_runner.h"
+
+#include "device/files/scan_exports.h"
+#include "device/files/scan_run_log.h"
+#include "device/files/text_file.h"
+#include "device/sim/machine_config.h"
+
+#include <QDateTime>
+#include <QDir>
+#include <QFileInfo>
+
+#include <algorithm>
+#include <cmath>
+
+namespace jobs {
+
+using motion::scan::Point2;
+
+namespace {
+constexpr unsigned kBothAxes = 0x3;
+} // namespace
+
+ScanRunner::ScanRunner(dev::InstrumentClient* client, QObject* parent) : QObject(parent), m_client(client)
+{
+    qRegisterMetaType<jobs::ScanRunner::State>();
+    m_exposure.setSingleShot(true);
+    m_exposure.setTimerType(Qt::PreciseTimer);
+    connect(&m_exposure, &QTimer::timeout, this, &ScanRunner::onExposureEnd);
+    m_settleTimeout.setSingleShot(true);
+    connect(&m_settleTimeout, &QTimer::timeout, this, [this] {
+        if (m_phase != Phase::Settling)
+            return;
+        stopWith(tr("%1 did not settle within %2 µm in %3 s (X off by %4 µm, Y by %5 µm); the run is stopped: "
+                    "check the stage, then Resume to try this tile again")
+                     .arg(tileName(m_layout.path[static_cast<std::size_t>(m_pathIndex)].tile))
+                     .arg(m_plan.toleranceUm)
+                     .arg(m_plan.settleTimeoutS)
+                     .arg(m_lastOffUm[0], 0, 'f', 2)
+                     .arg(m_lastOffUm[1], 0, 'f', 2),
+                 false);
+    });
+    m_clientConnections << connect(m_client, &dev::InstrumentClient::eventReceived, this, &ScanRunner::onEvent);
+    m_clientConnections << connect(m_client, &dev::InstrumentClient::statusChanged, this, [this](const dev::InstrumentStatus& s) {
+        if (m_phase != Phase::Settling || s.axes.size() < 2)
+            return;
+        checkSettled({s.axes[0].measured, s.axes[1].measured}, s.deviceTimeUs);
+    });
+    m_clientConnections << connect(m_client, &dev::InstrumentClient::stateChanged, this, [this](dev::LinkState st) {
+        if (st != dev::LinkState::Ready && isActive())
+            stopWith(tr("The link to the stage was lost at %1. Nothing more moves from here; reconnect, then Resume to "
+                        "continue at that tile.")
+                         .arg(tileName(currentTile())),
+                     false);
+    });
+}
+
+ScanRunner::~ScanRunner()
+{
+    for (const auto& c : m_clientConnections)
+        disconnect(c);
+}
+
+motion::scan::StageModel ScanRunner::stageModelOf(const dev::DeviceIdentity& identity, const QVector<dev::SoftLimits>& limits)
+{
+    motion::scan::StageModel m;
+    const sim::MachineConfig firmware = sim::stageConfig();
+    for (int i = 0; i < 2; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        if (k < firmware.axes.size()) {
+            m.maxAccelMmS2[i] = firmware.axes[k].maxAccel;
+            m.maxJerkMmS3[i] = firmware.axes[k].maxJerk;
+        }
+        if (i < identity.axes.size() && identity.axes[i].maxSpeed > 0)
+            m.maxSpeedMmS[i] = identity.axes[i].maxSpeed;
+    }
+    if (identity.axes.size() >= 2) {
+        m.travel = {identity.axes[0].travelMin, identity.axes[1].travelMin, identity.axes[0].travelMax, identity.axes[1].travelMax};
+        if (limits.size() >= 2)  // the soft limits narrow the travel
+            m.travel = {std::max(m.travel.x0Mm, limits[0].min), std::max(m.travel.y0Mm, limits[1].min),
+                        std::min(m.travel.x1Mm, limits[0].max), std::min(m.travel.y1Mm, limits[1].max)};
+    }
+    return m;
+}
+
+QString ScanRunner::logPath() const { return QDir(m_folder).filePath(QString::fromLatin1(scanfile::kRunLogFile)); }
+
+QString ScanRunner::tileName(int tile) const
+{
+    if (tile < 0 || tile >= totalTiles())
+        return tr("the start");
+    return tr("tile %1 of %2 (%3)").arg(tile + 1).arg(totalTiles()).arg(QString::fromStdString(m_records[static_cast<std::size_t>(tile)].label));
+}
+
+QString ScanRunner::stateName(State s)
+{
+    switch (s) {
+    case State::Idle: return tr("ready");
+    case State::Running: return tr("running");
+    case State::Pausing: return tr("pausing after this tile");
+    case State::Paused: return tr("paused");
+    case State::Stopped: return tr("stopped");
+    case State::Finished: return tr("finished");
+    }
+    return {};
+}
+
+void ScanRunner::setState(State s)
+{
+    if (m_state == s)
+        return;
+    m_state = s;
+    emit stateChanged(s);
+}
+
+bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& folder, bool restart, QString* error)
+{
+    if (isActive()) {
+        *error = tr("A scan is running: stop it before preparing another.");
+        return false;
+    }
+    const auto problems = motion::scan::validate(plan);
+    if (!problems.empty()) {
+        *error = QString::fromStdString(problems.front().field + ": " + problems.front().message);
+        return false;
+    }
+    if (!QDir().mkpath(folder)) {
+        *error = tr("Cannot make the folder %1.").arg(folder);
+        return false;
+    }
+    m_log.close();
+    m_prepared = false;
+    m_plan = plan;
+    m_folder = folder;
+    m_layout = motion::scan::layoutScan(plan);
+    m_records = scanfile::plannedRecords(plan, m_layout);
+    m_taken.assign(m_layout.tiles.size(), 0);
+    m_takenCount = 0;
+    m_phase = Phase::None;
+    const std::uint64_t fingerprint = motion::scan::layoutFingerprint(plan, m_layout);
+
+    bool fresh = true;
+    if (QFileInfo::exists(logPath())) {
+        std::string text;
+        if (!files::readText(logPath(), &text, error))
+            return false;
+        const auto log = scanfile::parseRunLog(text);
+        if (!log.log) {
+            *error = tr("The run log in this folder is damaged; it is left as it is:\n%1")
+                         .arg(QString::fromStdString(log.problems.format(scanfile::kRunLogFile)).trimmed());
+            return false;
+        }
+        if (log.log->fingerprint == fingerprint && !restart) {
+            fresh = false;
+            for (const auto& r : log.log->records) {
+                const auto k = static_cast<std::size_t>(r.target);
+                if (k >= m_records.size())
+                    continue;
+                m_records[k].measuredMm = r.measuredMm;
+                m_records[k].deviceTimeUs = r.deviceTimeUs;
+                m_records[k].settleS = r.settleS;
+                if (!m_taken[k]) {
+                    m_taken[k] = 1;
+                    ++m_takenCount;
+                }
+            }
+            // A line torn by a crash would sit in front of the next one: write the
+            // log out again without it (atomically, so this cannot lose it either).
+            if (log.log->tornTail) {
+                std::string clean = scanfile::runLogHeader(m_plan.name, fingerprint, totalTiles());
+                for (const auto& r : log.log->records)
+                    clean += scanfile::runLogLine(r);
+                if (!files::writeAtomically(logPath(), clean, error))
+                    return false;
+            }
+        } else if (!restart) {
+            *error = tr("This folder holds the run log of a different scan (%1 of %2 tiles taken). Choose another folder, "
+                        "or start over to keep that log aside and begin a new one.")
+                         .arg(log.log->records.size())
+                         .arg(log.log->tiles);
+            return false;
+        } else {
+            // Nothing is thrown away: the old log moves aside under its time.
+            const QString aside = QDir(m_folder).filePath(
+                QStringLiteral("scan-run.%1.jsonl").arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"))));
+            if (!QFile::rename(logPath(), aside)) {
+                *error = tr("Cannot move the old run log aside to %1.").arg(aside);
+                return false;
+            }
+        }
+    }
+    if (fresh && !files::writeAtomically(logPath(), scanfile::runLogHeader(m_plan.name, fingerprint, totalTiles()), error))
+        return false;
+    m_estimate = motion::scan::estimateScan(m_plan, m_layout, stageModelOf(m_client->identity(), m_client->softLimits()));
+    m_prepared = true;
+    setState(m_takenCount == totalTiles() ? State::Finished : State::Idle);
+    emit progress(m_takenCount, totalTiles(), etaS());
+    return true;
+}
+
+Point2 ScanRunner::commanded(int pathIndex) const
+{
+    return motion::scan::commandedTarget(m_plan, m_layout.path[static_cast<std::size_t>(pathIndex)].target);
+}
+
+QStringList ScanRunner::preflight() const
+{
+    QStringList out;
+    if (!m_prepared) {
+        out << tr("No scan is prepared.");
+        return out;
+    }
+    if (!m_client->isReady()) {
+        out << tr("The stage is not connected.");
+        return out;
+    }
+    const auto& id = m_client->identity();
+    if (id.kind != proto::DeviceKind::Stage || id.axes.size() < 2) {
+        out << tr("Scans run on the microscope stage; this instrument is a %1.").arg(id.kindName());
+        return out;
+    }
+    const auto& st = m_client->status();
+    if (st.estop)
+        out << tr("The E-stop is latched: reset it first.");
+    if (st.axes.size() >= 2 && (!st.axes[0].homed || !st.axes[1].homed))
+        out << tr("Home the stage first: a scan moves to absolute positions.");
+    // The whole plan against the device's travel and soft limits, before anything moves.
+    for (const auto& p : motion::scan::validate(m_plan, stageModelOf(id, m_client->softLimits())))
+        out << QString::fromStdString(p.field + ": " + p.message);
+    return out;
+}
+
+int ScanRunner::waypointToResumeAt() const
+{
+    for (std::size_t k = 0; k < m_layout.path.size(); ++k) {
+        const int tile = m_layout.path[k].tile;
+        if (tile < 0 || m_taken[static_cast<std::size_t>(tile)])
+            continue;
+        // Come in through the tile's own overtravel point when it has one.
+        if (k > 0 && m_layout.path[k - 1].tile < 0)
+            return static_cast<int>(k - 1);
+        return static_cast<int>(k);
+    }
+    return static_cast<int>(m_layout.path.size());
+}
+
+bool ScanRunner::start(QString* error)
+{
+    if (isActive()) {
+        *error = tr("The scan is already running.");
+        return false;
+    }
+    const QStringList blockers = preflight();
+    if (!blockers.isEmpty()) {
+        *error = blockers.join(QLatin1Char('\n'));
+        return false;
+    }
+    if (!openLog(error))
+        return false;
+    m_pathIndex = waypointToResumeAt();
+    m_extraApproach.reset();
+    // Where the stage was left is unknown after a stop: a unidirectional plan comes
+    // in to its next tile from the overtravel point whether or not the path has one there.
+    if (m_plan.approach.unidirectional && m_pathIndex < static_cast<int>(m_layout.path.size())
+        && m_layout.path[static_cast<std::size_t>(m_pathIndex)].tile >= 0) {
+        const Point2 over = motion::scan::overtravelPoint(m_layout, m_plan, m_layout.path[static_cast<std::size_t>(m_pathIndex)].target);
+        m_extraApproach = motion::scan::commandedTarget(m_plan, over);
+        const auto limits = stageModelOf(m_client->identity(), m_client->softLimits()).travel;
+        if (!limits.contains(*m_extraApproach))
+            m_extraApproach.reset();  // at the edge of travel: the direct move is the best there is
+    }
+    m_session.start();
+    m_sessionFirstTaken = m_takenCount;
+    int lastTaken = -1;
+    for (int t = 0; t < totalTiles(); ++t)
+        if (m_taken[static_cast<std::size_t>(t)])
+            lastTaken = t;
+    // The estimate starts at the first tile; this session starts wherever the stage
+    // stands, so the move there counts towards the time left and the pace.
+    const auto& st = m_client->status();
+    const Point2 from = st.axes.size() >= 2 ? Point2{st.axes[0].commanded, st.axes[1].commanded} : Point2{};
+    const Point2 firstTarget = m_extraApproach ? *m_extraApproach
+                                               : (m_pathIndex < static_cast<int>(m_layout.path.size()) ? commanded(m_pathIndex) : from);
+    m_leadInS = motion::scan::moveTimeS(from, firstTarget, m_plan.speedMmS, stageModelOf(m_client->identity(), m_client->softLimits()));
+    if (m_extraApproach && m_pathIndex < static_cast<int>(m_layout.path.size()))
+        m_leadInS += motion::scan::moveTimeS(*m_extraApproach, commanded(m_pathIndex), m_plan.speedMmS,
+                                             stageModelOf(m_client->identity(), m_client->softLimits()));
+    m_sessionEstimateFromS = (lastTaken >= 0 ? m_estimate.tileDoneS[static_cast<std::size_t>(lastTaken)] : 0.0) - m_leadInS;
+    setState(State::Running);
+    nextWaypoint();
+    return true;
+}
+
+void ScanRunner::pause()
+{
+    if (m_state == State::Running)
+        setState(State::Pausing);
+}
+
+void ScanRunner::abort()
+{
+    if (!isActive())
+        return;
+    stopWith(tr("Aborted at %1. The tiles taken so far are kept; Resume continues at that tile.").arg(tileName(currentTile())), true);
+}
+
+int ScanRunner::currentTile() const
+{
+    if (m_pathIndex < 0 || m_pathIndex >= static_cast<int>(m_layout.path.size()))
+        return -1;
+    // An overtravel point belongs to the tile after it.
+    for (std::size_t k = static_cast<std::size_t>(m_pathIndex); k < m_layout.path.size(); ++k)
+        if (m_layout.path[k].tile >= 0)
+            return m_layout.path[k].tile;
+    return -1;
+}
+
+double ScanRunner::etaS() const
+{
+    if (m_layout.tiles.empty())
+        return 0;
+    int lastTaken = -1;
+    for (int t = totalTiles() - 1; t >= 0; --t)
+        if (m_taken[static_cast<std::size_t>(t)]) {
+            lastTaken = t;
+            break;
+        }
+    double remaining = m_estimate.totalS - (lastTaken >= 0 ? m_estimate.tileDoneS[static_cast<std::size_t>(lastTaken)] : 0.0);
+    if (isActive() && m_takenCount == m_sessionFirstTaken)
+        remaining += m_leadInS;  // still on the way to the first tile of this session
+    // Once a few tiles of this session are done, the run's own pace corrects the estimate.
+    if (isActive() && m_takenCount - m_sessionFirstTaken >= 3 && lastTaken >= 0) {
+        const double estimated = m_estimate.tileDoneS[static_cast<std::size_t>(lastTaken)] - m_sessionEstimateFromS;
+        const double actual = static_cast<double>(m_session.elapsed()) * 1e-3;
+        if (estimated > 0.5)
+            return remaining * std::clamp(actual / estimated, 0.2, 5.0);
+    }
+    return remaining;
+}
+
+bool ScanRunner::openLog(QString* error)
+{
+    if (m_log.isOpen())
+        return true;
+    m_log.setFileName(logPath());
+    if (!m_log.open(QIODevice::WriteOnly | QIODevice::Append)) {
+        *error = tr("Cannot open the run log %1: %2").arg(logPath(), m_log.errorString());
+        return false;
+    }
+    return true;
+}
+
+bool ScanRunner::appendLog(const std::string& line, QString* error)
+{
+    // One write and a flush per tile: a crash of the program loses nothing taken.
+    if (m_log.write(line.data(), static_cast<qint64>(line.size())) != static_cast<qint64>(line.size()) || !m_log.flush()) {
+        *error = tr("Cannot write the run log %1: %2").arg(logPath(), m_log.errorString());
+        return false;
+    }
+    return true;
+}
+
+void ScanRunner::nextWaypoint()
+{
+    if (m_state == State::Pausing) {
+        m_phase = Phase::None;
+        setState(State::Paused);
+        return;
+    }
+    if (m_state != State::Running)
+        return;
+    if (m_pathIndex >= static_cast<int>(m_layout.path.size())) {
+        m_phase = Phase::None;
+        m_log.close();
+        QStringList written;
+        QString error;
+        if (!writeExports(&written, &error))
+            emit problem(tr("Every tile is taken, but the exports could not be written: %1").arg(error));
+        setState(State::Finished);
+        emit progress(m_takenCount, totalTiles(), 0);
+        emit finished(written);
+        return;
+    }
+    m_onExtra = m_extraApproach.has_value();
+    const Point2 target = m_onExtra ? *m_extraApproach : commanded(m_pathIndex);
+    m_phase = Phase::Moving;
+    m_waitingAxes = kBothAxes;
+    m_motionDoneUs = 0;
+    // Listening for MotionDone starts before the request goes out: a move of zero
+    // length reports done at once.
+    m_client->move({{0, target.xMm}, {1, target.yMm}}, false, m_plan.speedMmS,
+                   [this](const std::optional<dev::RequestError>& e) { onMoveAccepted(e); });
+}
+
+void ScanRunner::onMoveAccepted(const std::optional<dev::RequestError>& error)
+{
+    if (!error || m_phase != Phase::Moving)
+        return;
+    // A move lost with the link is the link's story, whichever signal comes first.
+    if (error->kind == dev::RequestError::Kind::LinkDown || error->kind == dev::RequestError::Kind::Timeout || !m_client->isReady())
+        stopWith(tr("The link to the stage was lost at %1 (%2). Nothing more moves from here; reconnect, then Resume to "
+                    "continue at that tile.")
+                     .arg(tileName(currentTile()), error->message),
+                 false);
+    else
+        stopWith(tr("The stage refused the move to %1: %2").arg(tileName(currentTile()), error->message), false);
+}
+
+void ScanRunner::onEvent(const dev::DeviceEvent& e)
+{
+    if (m_phase == Phase::None)
+        return;
+    using proto::EventKind;
+    switch (e.kind) {
+    case EventKind::MotionDone:
+        if (m_phase != Phase::Moving || e.axis < 0 || e.axis > 1)
+            return;
+        m_waitingAxes &= ~(1u << e.axis);
+        m_motionDoneUs = std::max<quint64>(m_motionDoneUs, e.deviceTimeUs);
+        if (m_waitingAxes)
+            return;
+        if (m_onExtra) {
+            m_extraApproach.reset();
+            m_onExtra = false;
+            nextWaypoint();
+            return;
+        }
+        if (m_layout.path[static_cast<std::size_t>(m_pathIndex)].tile < 0) {
+            ++m_pathIndex;  // an overtravel point: on to its tile
+            nextWaypoint();
+            return;
+        }
+        m_phase = Phase::Settling;
+        m_lastOffUm[0] = m_lastOffUm[1] = NAN;
+        m_settleTimeout.start(static_cast<int>(std::lround(m_plan.settleTimeoutS * 1000)));
+        requestStatus();
+        return;
+    case EventKind::EStop:
+        stopWith(tr("E-stop at %1: the run is stopped. Reset the E-stop and Resume to continue at that tile.").arg(tileName(currentTile())), false);
+        return;
+    case EventKind::Stopped:
+    case EventKind::LimitHit:
+    case EventKind::Fault:
+    case EventKind::LostSteps:
+        if (e.axis <= 1)
+            stopWith(tr("The stage reported \"%1\" at %2: the run is stopped. Resume continues at that tile.")
+                         .arg(e.text.isEmpty() ? QString::fromLatin1(proto::eventKindName(e.kind)) : e.text, tileName(currentTile())),
+                     false);
+        return;
+    default:
+        return;
+    }
+}
+
+void ScanRunner::requestStatus()
+{
+    // An immediate reading rather than the next 50 ms poll: the tile is taken the
+    // moment the grating says so. If it is not there yet, the polls that follow
+    // (statusChanged) are checked until it is, or the settle timeout says why not.
+    m_client->request(proto::MsgType::Status, {}, [this](const std::optional<dev::RequestError>& e, const proto::Bytes& payload) {
+        if (e || m_phase != Phase::Settling)
+            return;
+        const auto s = proto::decodeStatusReply(payload);
+        const auto& axes = m_client->identity().axes;
+        if (!s || s->axes.size() < 2 || axes.size() < 2)
+            return;
+        checkSettled({s->axes[0].measured / axes[0].wireScale(), s->axes[1].measured / axes[1].wireScale()}, s->deviceTimeUs);
+    });
+}
+
+void ScanRunner::checkSettled(const std::vector<double>& measuredMm, quint64 deviceTimeUs)
+{
+    if (m_phase != Phase::Settling)
+        return;
+    const Point2 target = commanded(m_pathIndex);
+    m_lastOffUm[0] = (measuredMm[0] - target.xMm) * 1e3;
+    m_lastOffUm[1] = (measuredMm[1] - target.yMm) * 1e3;
+    if (std::fabs(m_lastOffUm[0]) > m_plan.toleranceUm || std::fabs(m_lastOffUm[1]) > m_plan.toleranceUm)
+        return;
+    if (deviceTimeUs < m_motionDoneUs)
+        return;  // a reading older than the move's end says nothing about the tile
+    m_settleTimeout.stop();
+    m_phase = Phase::Exposing;
+    m_triggerMm = measuredMm;
+    m_triggerUs = deviceTimeUs;
+    const int tile = m_layout.path[static_cast<std::size_t>(m_pathIndex)].tile;
+    emit triggered(tile, deviceTimeUs);
+    m_exposure.start(static_cast<int>(std::lround(m_plan.exposureS * 1000)));
+}
+
+void ScanRunner::onExposureEnd()
+{
+    if (m_phase != Phase::Exposing)
+        return;
+    const int tile = m_layout.path[static_cast<std::size_t>(m_pathIndex)].tile;
+    motion::PositionRecord& r = m_records[static_cast<std::size_t>(tile)];
+    r.measuredMm = m_triggerMm;
+    r.deviceTimeUs = m_triggerUs;
+    r.settleS = m_triggerUs > m_motionDoneUs ? static_cast<double>(m_triggerUs - m_motionDoneUs) * 1e-6 : 0.0;
+    QString error;
+    if (!appendLog(scanfile::runLogLine(r), &error)) {
+        r.measuredMm.clear();
+        stopWith(error + tr(" The run is stopped so that no tile goes unrecorded."), false);
+        return;
+    }
+    if (!m_taken[static_cast<std::size_t>(tile)]) {
+        m_taken[static_cast<std::size_t>(tile)] = 1;
+        ++m_takenCount;
+    }
+    m_phase = Phase::None;
+    ++m_pathIndex;
+    emit tileTaken(tile);
+    emit progress(m_takenCount, totalTiles(), etaS());
+    nextWaypoint();
+}
+
+void ScanRunner::stopWith(const QString& message, bool stopStage)
+{
+    m_exposure.stop();
+    m_settleTimeout.stop();
+    m_phase = Phase::None;
+    m_extraApproach.reset();
+    m_onExtra = false;
+    if (stopStage && m_client->isReady())
+        m_client->stop(0);
+    setState(State::Stopped);
+    emit problem(message);
+    emit progress(m_takenCount, totalTiles(), etaS());
+}
+
+bool ScanRunner::writeExports(QStringList* written, QString* error) const
+{
+    if (!m_prepared) {
+        *error = tr("No scan is prepared.");
+        return false;
+    }
+    return scanfile::writeExports(m_folder, m_plan, m_layout, m_records, written, error);
+}
+
+} // namespace jobs

@@ -1,0 +1,138 @@
+#pragma once
+// Runs a stitching scan on the stage: for each tile it moves, waits for the
+// device's MotionDone, then for the grating to read within the plan's tolerance
+// of the target (on the status replies, not a busy loop), takes the position and
+// device time at that moment as the trigger, dwells for the exposure, and logs
+// the tile. Pause waits for the tile in progress; Abort stops the stage at once.
+// A run that stopped for any reason (abort, E-stop, a refused move, a lost link,
+// a crash of the program) continues from its run log at the next tile.
+//
+// It needs no protocol of its own: MOVE, the MotionDone event and STATUS (grating
+// positions with the device's clock) carry everything (docs/scan.md).
+#include "device/client/instrument_client.h"
+#include "motion/plans/scan/scan_estimate.h"
+#include "motion/records/position_record.h"
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <QObject>
+#include <QTimer>
+
+#include <optional>
+#include <vector>
+
+namespace jobs {
+
+class ScanRunner : public QObject {
+    Q_OBJECT
+public:
+    enum class State {
+        Idle,      ///< nothing prepared, or prepared and not started
+        Running,
+        Pausing,   ///< Pause pressed: the tile in progress finishes first
+        Paused,
+        Stopped,   ///< aborted or interrupted (see the problem message); Resume continues
+        Finished,
+    };
+
+    explicit ScanRunner(dev::InstrumentClient* client, QObject* parent = nullptr);
+    ~ScanRunner() override;
+
+    /// The stage as the plan must fit it: travel within the device's soft limits,
+    /// top speed from HELLO, acceleration and jerk from the reference firmware's
+    /// planner (HELLO does not carry them).
+    static motion::scan::StageModel stageModelOf(const dev::DeviceIdentity& identity, const QVector<dev::SoftLimits>& limits);
+
+    /// Takes the plan and the folder its run log and exports go to. A run log there
+    /// of the same tiles is continued; one of other tiles is refused unless
+    /// `restart`, which keeps it under another name and starts afresh.
+    bool prepare(const motion::scan::ScanPlan& plan, const QString& folder, bool restart, QString* error);
+
+    /// What keeps the prepared run from starting now, one sentence each; empty = ready.
+    QStringList preflight() const;
+    /// Starts, or resumes after a pause or a stop, at the first tile not yet taken.
+    bool start(QString* error);
+    void pause();
+    void abort();
+
+    State state() const { return m_state; }
+    bool isActive() const { return m_state == State::Running || m_state == State::Pausing; }
+    const motion::scan::ScanPlan& plan() const { return m_plan; }
+    const motion::scan::ScanLayout& layout() const { return m_layout; }
+    const motion::scan::ScanEstimate& estimate() const { return m_estimate; }
+    /// One per tile in visiting order; measured once the tile is taken.
+    const std::vector<motion::PositionRecord>& records() const { return m_records; }
+    int takenTiles() const { return m_takenCount; }
+    int totalTiles() const { return static_cast<int>(m_layout.tiles.size()); }
+    bool isTaken(int tile) const { return tile >= 0 && tile < totalTiles() && m_taken[static_cast<std::size_t>(tile)]; }
+    /// The tile being worked on (moving, settling, exposing), or −1.
+    int currentTile() const;
+    /// Seconds left: the estimate for the tiles not taken, scaled by how this run has kept to it.
+    double etaS() const;
+    QString folder() const { return m_folder; }
+    QString logPath() const;
+    /// Writes TileConfiguration.txt, positions.pos and scan.csv into the folder.
+    bool writeExports(QStringList* written, QString* error) const;
+
+    static QString stateName(State s);
+
+signals:
+    void stateChanged(jobs::ScanRunner::State state);
+    void progress(int taken, int total, double etaS);
+    /// The stage sits within tolerance at `tile`: where a camera would be triggered.
+    void triggered(int tile, quint64 deviceTimeUs);
+    void tileTaken(int tile);
+    /// Why the run stopped or would not start, in a sentence.
+    void problem(const QString& message);
+    /// Every tile taken; `exports` are the files written.
+    void finished(const QStringList& exports);
+
+private:
+    enum class Phase { None, Moving, Settling, Exposing };
+
+    void setState(State s);
+    void nextWaypoint();
+    void onMoveAccepted(const std::optional<dev::RequestError>& error);
+    void onEvent(const dev::DeviceEvent& e);
+    void requestStatus();
+    void checkSettled(const std::vector<double>& measuredMm, quint64 deviceTimeUs);
+    void onExposureEnd();
+    void stopWith(const QString& message, bool stopStage);
+    bool openLog(QString* error);
+    bool appendLog(const std::string& line, QString* error);
+    int waypointToResumeAt() const;
+    motion::scan::Point2 commanded(int pathIndex) const;
+    QString tileName(int tile) const;
+
+    dev::InstrumentClient* m_client;
+    motion::scan::ScanPlan m_plan;
+    motion::scan::ScanLayout m_layout;
+    motion::scan::ScanEstimate m_estimate;
+    std::vector<motion::PositionRecord> m_records;
+    std::vector<char> m_taken;
+    int m_takenCount = 0;
+    QString m_folder;
+    QFile m_log;
+    bool m_prepared = false;
+
+    State m_state = State::Idle;
+    Phase m_phase = Phase::None;
+    int m_pathIndex = 0;                 ///< the waypoint being worked on
+    std::optional<motion::scan::Point2> m_extraApproach;  ///< resume: an overtravel point not in the path
+    bool m_onExtra = false;              ///< the move in progress goes to m_extraApproach
+    unsigned m_waitingAxes = 0;          ///< bit per axis still owing MotionDone
+    quint64 m_motionDoneUs = 0;          ///< device time of the last MotionDone of this move
+    std::vector<double> m_triggerMm;
+    quint64 m_triggerUs = 0;
+    double m_lastOffUm[2] = {0, 0};      ///< how far from the target the last status read, for messages
+    QTimer m_exposure, m_settleTimeout;
+    QElapsedTimer m_session;             ///< wall time since this start or resume
+    int m_sessionFirstTaken = 0;
+    double m_sessionEstimateFromS = 0;   ///< the estimate's clock when this session began, less the lead-in
+    double m_leadInS = 0;                ///< estimated move from where the stage stood to the session's first waypoint
+    QList<QMetaObject::Connection> m_clientConnections;
+};
+
+} // namespace jobs
+
+Q_DECLARE_METATYPE(jobs::ScanRunner::State)

@@ -1,0 +1,219 @@
+// The Scan screen driven as a person would: typing and drawing the region, the
+// tile count and time that follow, problems shown and Run held back, plans saved
+// and opened, a run on the simulated stage with progress and exports, Esc.
+#include "app/gui/instrument_session.h"
+#include "app/gui/main_window.h"
+#include "device/files/scan_exports.h"
+#include "device/jobs/scan_runner.h"
+#include "device/link/simulated_link.h"
+#include "gui_wait.h"
+#include "widgets/scan_plan_form.h"
+#include "widgets/scan_screen.h"
+#include "widgets/scan_stage_map.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QLabel>
+#include <QLineEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+using guitest::pump;
+using guitest::waitFor;
+using namespace motion::scan;
+
+namespace {
+
+class ScanScreenTest : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        app::MainWindowOptions o;
+        o.persistSettings = false;
+        o.confirmDialogs = false;
+        w = std::make_unique<app::MainWindow>(o);
+        w->resize(1500, 950);
+        w->show();
+        ASSERT_TRUE(w->showScreen(QStringLiteral("scan")));
+        ASSERT_TRUE(waitFor([&] { return w->stage()->client()->isReady(); }, 5000));
+        screen = w->scanScreen();
+        ASSERT_NE(screen, nullptr);
+    }
+    template <class T>
+    T* child(const char* name) { return screen->findChild<T*>(QLatin1String(name)); }
+    void setSpin(const char* name, double v)
+    {
+        auto* s = child<QDoubleSpinBox>(name);
+        ASSERT_NE(s, nullptr) << name;
+        s->setValue(v);
+    }
+    void settle() { pump(80); }  // the screen replans on a short timer
+    QString summary() { return child<QLabel>("scanSummary")->text(); }
+
+    std::unique_ptr<app::MainWindow> w;
+    ui::ScanScreen* screen = nullptr;
+};
+
+} // namespace
+
+TEST_F(ScanScreenTest, TypedRegionAndFieldGiveTheTileCountAndTime)
+{
+    child<QComboBox>("scanFovFrom")->setCurrentIndex(1);  // field size
+    setSpin("scanFieldW", 1.0);
+    setSpin("scanFieldH", 1.0);
+    setSpin("scanOverlapX", 10);
+    setSpin("scanOverlapY", 10);
+    setSpin("scanX0", 20);
+    setSpin("scanY0", 20);
+    setSpin("scanX1", 30);  // (10 − 1)/0.9 = 10 steps: 11 columns
+    setSpin("scanY1", 24.6);  // (4.6 − 1)/0.9 = 4: 5 rows
+    settle();
+    EXPECT_TRUE(summary().startsWith(QStringLiteral("55 tiles (11 × 5)"))) << summary().toStdString();
+    EXPECT_TRUE(summary().contains(QStringLiteral("step 0.900 × 0.900 mm"))) << summary().toStdString();
+    EXPECT_EQ(screen->layout().tiles.size(), 55u);
+    EXPECT_GT(screen->estimate().totalS, 55 * (0.02 + 0.05));
+    EXPECT_TRUE(child<QPushButton>("scanRun")->isEnabled());
+}
+
+TEST_F(ScanScreenTest, ProblemsAreShownAndRunIsHeldBack)
+{
+    setSpin("scanX1", child<QDoubleSpinBox>("scanX0")->value());  // zero width
+    settle();
+    EXPECT_TRUE(screen->problemsText().contains(QStringLiteral("zero size"))) << screen->problemsText().toStdString();
+    EXPECT_FALSE(child<QPushButton>("scanRun")->isEnabled());
+    EXPECT_TRUE(screen->layout().tiles.empty());
+    setSpin("scanX0", 90);
+    setSpin("scanX1", 120);  // beyond the travel
+    settle();
+    EXPECT_TRUE(screen->problemsText().contains(QStringLiteral("beyond the stage's travel"))) << screen->problemsText().toStdString();
+    QStringList problems;
+    QObject::connect(screen, &ui::ScanScreen::problem, [&](const QString& m) { problems << m; });
+    EXPECT_FALSE(screen->run());
+    ASSERT_FALSE(problems.isEmpty());
+}
+
+TEST_F(ScanScreenTest, DraggingOnTheMapDrawsTheRegion)
+{
+    ui::ScanStageMap* map = screen->map();
+    map->fitStage();
+    const QPoint a = map->toWidget({30, 60}).toPoint(), b = map->toWidget({50, 40}).toPoint();
+    QTest::mousePress(map, Qt::LeftButton, Qt::NoModifier, a);
+    QTest::mouseMove(map, (a + b) / 2);
+    QTest::mouseMove(map, b);
+    QTest::mouseRelease(map, Qt::LeftButton, Qt::NoModifier, b);
+    settle();
+    const ScanPlan p = screen->plan();
+    ASSERT_EQ(p.region.kind, RegionKind::Corners);
+    const Rect r = regionBounds(p.region);
+    const double pxMm = 1.0 / (map->toWidget({1, 0}).x() - map->toWidget({0, 0}).x());
+    EXPECT_NEAR(r.x0Mm, 30, 2 * pxMm);
+    EXPECT_NEAR(r.x1Mm, 50, 2 * pxMm);
+    EXPECT_NEAR(r.y0Mm, 40, 2 * pxMm);
+    EXPECT_NEAR(r.y1Mm, 60, 2 * pxMm);
+    EXPECT_FALSE(screen->layout().tiles.empty());
+}
+
+TEST_F(ScanScreenTest, ClickingCornersDrawsAPolygon)
+{
+    child<QComboBox>("scanRegionKind")->setCurrentIndex(2);
+    ui::ScanStageMap* map = screen->map();
+    ASSERT_EQ(map->drawMode(), ui::ScanStageMap::DrawMode::Polygon);
+    map->fitStage();
+    for (Point2 c : {Point2{20, 20}, Point2{60, 25}, Point2{45, 70}})
+        QTest::mouseClick(map, Qt::LeftButton, Qt::NoModifier, map->toWidget(c).toPoint());
+    QTest::mouseDClick(map, Qt::LeftButton, Qt::NoModifier, map->toWidget({45, 70}).toPoint());
+    settle();
+    const ScanPlan p = screen->plan();
+    ASSERT_EQ(p.region.kind, RegionKind::Polygon);
+    ASSERT_EQ(p.region.vertices.size(), 3u) << "the double-click closes without adding a corner twice";
+    EXPECT_NEAR(p.region.vertices[1].xMm, 60, 0.5);
+    EXPECT_TRUE(child<QLineEdit>("scanVertices")->text().contains(QLatin1String(";")));
+    EXPECT_TRUE(summary().contains(QStringLiteral("in the outline"))) << summary().toStdString();
+}
+
+TEST_F(ScanScreenTest, PlansAreSavedAndOpened)
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("mine.scan.json"));
+    screen->setFileChooser([&](ui::ScanScreen::FileAction, const QString&, const QString&) { return path; });
+    setSpin("scanOverlapX", 33);
+    child<QComboBox>("scanOrder")->setCurrentIndex(3);  // column by column
+    settle();
+    ASSERT_TRUE(screen->savePlan(path));
+    screen->setPlan(ScanPlan{});
+    EXPECT_NE(screen->plan().order, ScanOrder::Columns);
+    ASSERT_TRUE(screen->openPlan(path));
+    EXPECT_EQ(screen->plan().order, ScanOrder::Columns);
+    EXPECT_NEAR(screen->plan().overlapX, 0.33, 1e-9);
+    QFile bad(dir.filePath(QStringLiteral("bad.scan.json")));
+    ASSERT_TRUE(bad.open(QIODevice::WriteOnly));
+    bad.write("{\"schema\": \"benchpilot.scan-plan\", \"version\": 1, \"overlap\": 2}");
+    bad.close();
+    QStringList problems;
+    QObject::connect(screen, &ui::ScanScreen::problem, [&](const QString& m) { problems << m; });
+    EXPECT_FALSE(screen->openPlan(bad.fileName()));
+    ASSERT_FALSE(problems.isEmpty());
+    EXPECT_TRUE(problems.last().contains(QStringLiteral("bad.scan.json:1:"))) << problems.last().toStdString();
+    EXPECT_EQ(screen->plan().order, ScanOrder::Columns) << "a bad file leaves the plan as it was";
+}
+
+TEST_F(ScanScreenTest, RunsOnTheStageWithProgressAndExports)
+{
+    dev::InstrumentClient* stage = w->stage()->client();
+    auto* link = qobject_cast<dev::SimulatedLink*>(w->stage()->link());
+    ASSERT_NE(link, nullptr);
+    link->host().setTimeScale(20);  // homing crosses the stage at search speed
+    stage->home(0);
+    ASSERT_TRUE(waitFor([&] { return stage->status().axes.size() >= 2 && stage->status().axes[0].homed && stage->status().axes[1].homed
+                                     && !stage->status().anyMoving(); }, 20000));
+    link->host().setTimeScale(1);
+    QTemporaryDir dir;
+    ScanPlan p;
+    p.region.cornerA = {1, 1};
+    p.region.cornerB = {4.7, 3.8};  // 4 × 3 fields of 1 mm, near home
+    p.camera.source = FieldSource::Direct;
+    p.camera.fieldWidthMm = p.camera.fieldHeightMm = 1;
+    p.exposureS = 0.01;
+    screen->setPlan(p);
+    screen->setOutputFolder(dir.path());
+    int asked = 0;
+    screen->setConfirm([&](const QString&) { return ++asked, true; });
+    ASSERT_TRUE(screen->run());
+    EXPECT_FALSE(child<QPushButton>("scanRun")->isEnabled()) << "no second run while one is going";
+    EXPECT_FALSE(screen->form()->isEnabled()) << "the plan is locked while it runs";
+    for (auto* b : screen->findChildren<QPushButton*>()) {
+        if (b->text() == QStringLiteral("Open plan…") || b->text() == QStringLiteral("New")) {
+            EXPECT_FALSE(b->isEnabled()) << "no other plan opens over a running one";
+        }
+    }
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::ScanRunner::State::Finished; }, 30000));
+    auto* progress = child<QProgressBar>("scanProgress");
+    EXPECT_EQ(progress->value(), 12);
+    EXPECT_EQ(progress->maximum(), 12);
+    EXPECT_EQ(asked, 0) << "a run of a few seconds goes without asking";
+    for (const char* f : {scanfile::kTileConfigFile, scanfile::kPositionsFile, scanfile::kCsvFile})
+        EXPECT_TRUE(QFile::exists(QDir(dir.path()).filePath(QLatin1String(f)))) << f;
+    EXPECT_TRUE(screen->form()->isEnabled());
+}
+
+TEST_F(ScanScreenTest, EscapeOnTheMapIsStillTheEStop)
+{
+    dev::InstrumentClient* stage = w->stage()->client();
+    screen->map()->setFocus();
+    QTest::keyClick(screen->map(), Qt::Key_Escape);
+    ASSERT_TRUE(waitFor([&] { return stage->status().estop; }, 3000));
+    w->resetEStop();
+    ASSERT_TRUE(waitFor([&] { return !stage->status().estop; }, 3000));
+}
+
+TEST_F(ScanScreenTest, DurationsReadLikeAPersonWouldSayThem)
+{
+    EXPECT_EQ(ui::ScanScreen::duration(4.24), QStringLiteral("4.2 s"));
+    EXPECT_EQ(ui::ScanScreen::duration(75), QStringLiteral("1 min 15 s"));
+    EXPECT_EQ(ui::ScanScreen::duration(3 * 3600 + 125), QStringLiteral("3 h 02 min"));
+}

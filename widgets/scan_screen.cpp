@@ -1,0 +1,502 @@
+#include "widgets/scan_screen.h"
+
+#include "device/files/scan_exports.h"
+#include "device/files/scan_plan_file.h"
+#include "device/jobs/scan_runner.h"
+#include "widgets/scan_plan_form.h"
+#include "widgets/scan_stage_map.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSplitter>
+#include <QStandardPaths>
+#include <QTimer>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace ui {
+
+using namespace motion::scan;
+using jobs::ScanRunner;
+
+ScanScreen::ScanScreen(dev::InstrumentClient* stage, QWidget* parent)
+    : QWidget(parent), m_stage(stage), m_runner(new ScanRunner(stage, this))
+{
+    auto* v = new QVBoxLayout(this);
+    m_summary = new QLabel;
+    m_summary->setObjectName(QStringLiteral("scanSummary"));
+    m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    QFont big = m_summary->font();
+    big.setPointSizeF(big.pointSizeF() + 1.5);
+    big.setBold(true);
+    m_summary->setFont(big);
+    v->addWidget(m_summary);
+    m_problems = new QLabel;
+    m_problems->setObjectName(QStringLiteral("scanProblems"));
+    m_problems->setWordWrap(true);
+    m_problems->setStyleSheet(QStringLiteral("color: #b71c1c;"));
+    v->addWidget(m_problems);
+
+    auto* split = new QSplitter(Qt::Horizontal);
+    auto* left = new QWidget;
+    auto* lv = new QVBoxLayout(left);
+    lv->setContentsMargins(0, 0, 0, 0);
+    m_map = new ScanStageMap;
+    lv->addWidget(m_map, 1);
+    auto* mapBar = new QHBoxLayout;
+    auto* fitStage = new QToolButton;
+    fitStage->setText(tr("Whole stage"));
+    fitStage->setToolTip(tr("Show the whole travel"));
+    auto* fitPlan = new QToolButton;
+    fitPlan->setText(tr("Zoom to scan"));
+    fitPlan->setToolTip(tr("Show the scan's tiles"));
+    connect(fitStage, &QToolButton::clicked, m_map, &ScanStageMap::fitStage);
+    connect(fitPlan, &QToolButton::clicked, m_map, &ScanStageMap::fitPlan);
+    m_pointer = new QLabel;
+    mapBar->addWidget(fitStage);
+    mapBar->addWidget(fitPlan);
+    mapBar->addWidget(m_pointer, 1);
+    lv->addLayout(mapBar);
+    split->addWidget(left);
+
+    auto* right = new QWidget;
+    auto* rv = new QVBoxLayout(right);
+    rv->setContentsMargins(0, 0, 0, 0);
+    m_fileRow = buildFileRow();
+    rv->addWidget(m_fileRow);
+    m_form = new ScanPlanForm;
+    auto* scroll = new QScrollArea;
+    scroll->setWidget(m_form);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    rv->addWidget(scroll, 1);
+    rv->addWidget(buildRunPanel());
+    right->setMinimumWidth(400);
+    split->addWidget(right);
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 0);
+    split->setSizes({900, 440});
+    v->addWidget(split, 1);
+
+    m_replanTimer = new QTimer(this);
+    m_replanTimer->setSingleShot(true);
+    m_replanTimer->setInterval(30);  // coalesce a burst of edits into one plan
+    connect(m_replanTimer, &QTimer::timeout, this, &ScanScreen::replan);
+    connect(m_form, &ScanPlanForm::planChanged, this, &ScanScreen::scheduleReplan);
+    connect(m_form, &ScanPlanForm::regionKindChanged, this, [this](RegionKind k) {
+        m_map->setDrawMode(k == RegionKind::Polygon ? ScanStageMap::DrawMode::Polygon : ScanStageMap::DrawMode::Rectangle);
+    });
+    connect(m_map, &ScanStageMap::rectangleDrawn, this, [this](const Rect& r) {
+        ScanPlan p = plan();
+        if (p.region.kind == RegionKind::CentreSize) {
+            p.region.centre = r.centre();
+            p.region.widthMm = r.widthMm();
+            p.region.heightMm = r.heightMm();
+        } else {
+            p.region.kind = RegionKind::Corners;
+            p.region.cornerA = {r.x0Mm, r.y0Mm};
+            p.region.cornerB = {r.x1Mm, r.y1Mm};
+        }
+        m_form->setPlan(p);
+    });
+    connect(m_map, &ScanStageMap::polygonDrawn, this, [this](const std::vector<Point2>& vs) {
+        ScanPlan p = plan();
+        p.region.kind = RegionKind::Polygon;
+        p.region.vertices = vs;
+        m_form->setPlan(p);
+    });
+    connect(m_map, &ScanStageMap::pointerMoved, this, [this](const std::optional<Point2>& at) {
+        m_pointer->setText(at ? tr("X %1  Y %2 mm").arg(at->xMm, 0, 'f', 3).arg(at->yMm, 0, 'f', 3) : QString());
+    });
+
+    connect(m_runner, &ScanRunner::stateChanged, this, &ScanScreen::updateRunUi);
+    connect(m_runner, &ScanRunner::progress, this, &ScanScreen::updateRunUi);
+    connect(m_runner, &ScanRunner::tileTaken, this, [this](int tile) {
+        if (tile >= 0 && static_cast<std::size_t>(tile) < m_taken.size())
+            m_taken[static_cast<std::size_t>(tile)] = 1;
+        m_map->setProgress(m_taken, m_runner->isActive() ? m_runner->currentTile() : -1);
+    });
+    connect(m_runner, &ScanRunner::triggered, this, [this](int tile, quint64) { m_map->setProgress(m_taken, tile); });
+    connect(m_runner, &ScanRunner::problem, this, &ScanScreen::problem);
+    connect(m_runner, &ScanRunner::finished, this, [this](const QStringList& exports) {
+        emit notice(tr("Scan finished: %1 tiles taken. Exports written to %2.").arg(m_runner->totalTiles()).arg(m_runner->folder()));
+        (void)exports;
+    });
+    connect(m_stage, &dev::InstrumentClient::statusChanged, this, &ScanScreen::onStatus);
+    connect(m_stage, &dev::InstrumentClient::identified, this, &ScanScreen::onStageIdentity);
+    connect(m_stage, &dev::InstrumentClient::limitsChanged, this, &ScanScreen::onStageIdentity);
+    connect(m_stage, &dev::InstrumentClient::stateChanged, this, &ScanScreen::updateRunUi);
+
+    setOutputFolder(QDir(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation))
+                        .filePath(QStringLiteral("BenchPilot scans/scan")));
+    m_form->setPlan(ScanPlan{});
+    replan();
+    m_map->fitStage();
+}
+
+ScanScreen::~ScanScreen() = default;
+
+QWidget* ScanScreen::buildFileRow()
+{
+    auto* w = new QWidget;
+    auto* h = new QHBoxLayout(w);
+    h->setContentsMargins(0, 0, 0, 0);
+    auto* fresh = new QPushButton(tr("New"));
+    fresh->setToolTip(tr("Start from the default plan"));
+    auto* open = new QPushButton(tr("Open plan…"));
+    open->setShortcut(QKeySequence::Open);
+    open->setToolTip(tr("Open a scan plan file (%1)").arg(QKeySequence(QKeySequence::Open).toString()));
+    auto* save = new QPushButton(tr("Save plan…"));
+    save->setShortcut(QKeySequence::Save);
+    save->setToolTip(tr("Save this plan as a file (%1)").arg(QKeySequence(QKeySequence::Save).toString()));
+    connect(fresh, &QPushButton::clicked, this, [this] { m_form->setPlan(ScanPlan{}); });
+    connect(open, &QPushButton::clicked, this, [this] {
+        const QString path = choose(FileAction::Open, tr("Open scan plan"), tr("Scan plans (*.scan.json *.json)"));
+        if (!path.isEmpty())
+            openPlan(path);
+    });
+    connect(save, &QPushButton::clicked, this, [this] {
+        const QString path = choose(FileAction::Save, tr("Save scan plan"), tr("Scan plans (*.scan.json)"));
+        if (!path.isEmpty())
+            savePlan(path.endsWith(QLatin1String(".json")) ? path : path + QStringLiteral(".scan.json"));
+    });
+    h->addWidget(fresh);
+    h->addWidget(open);
+    h->addWidget(save);
+    h->addStretch(1);
+    return w;
+}
+
+QWidget* ScanScreen::buildRunPanel()
+{
+    auto* w = new QWidget;
+    auto* v = new QVBoxLayout(w);
+    v->setContentsMargins(0, 4, 0, 0);
+    auto* folderRow = new QHBoxLayout;
+    m_folder = new QLineEdit;
+    m_folder->setObjectName(QStringLiteral("scanFolder"));
+    m_folder->setToolTip(tr("The run log and the exports go here; a run stopped part-way continues from its log"));
+    auto* browse = new QToolButton;
+    browse->setText(QStringLiteral("…"));
+    connect(browse, &QToolButton::clicked, this, [this] {
+        const QString dir = choose(FileAction::Folder, tr("Folder for the run log and exports"), m_folder->text());
+        if (!dir.isEmpty())
+            setOutputFolder(dir);
+    });
+    folderRow->addWidget(new QLabel(tr("Output")));
+    folderRow->addWidget(m_folder, 1);
+    folderRow->addWidget(browse);
+    v->addLayout(folderRow);
+    auto* buttons = new QHBoxLayout;
+    m_runButton = new QPushButton(tr("Run"));
+    m_runButton->setObjectName(QStringLiteral("scanRun"));
+    m_runButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    m_pauseButton = new QPushButton(tr("Pause"));
+    m_pauseButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
+    m_pauseButton->setToolTip(tr("Stop after the tile in progress (Ctrl+P)"));
+    m_abortButton = new QPushButton(tr("Abort"));
+    m_abortButton->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_A));
+    m_abortButton->setToolTip(tr("Stop the stage now; the tiles taken are kept and Resume continues (Ctrl+Shift+A)"));
+    m_exportButton = new QPushButton(tr("Export"));
+    m_exportButton->setToolTip(tr("Write TileConfiguration.txt (Fiji), positions.pos (Micro-Manager) and scan.csv to the output folder"));
+    connect(m_runButton, &QPushButton::clicked, this, [this] { run(); });
+    connect(m_pauseButton, &QPushButton::clicked, this, &ScanScreen::pause);
+    connect(m_abortButton, &QPushButton::clicked, this, &ScanScreen::abort);
+    connect(m_exportButton, &QPushButton::clicked, this, [this] { exportFiles(); });
+    for (QPushButton* b : {m_runButton, m_pauseButton, m_abortButton, m_exportButton})
+        buttons->addWidget(b);
+    v->addLayout(buttons);
+    m_progress = new QProgressBar;
+    m_progress->setObjectName(QStringLiteral("scanProgress"));
+    m_progress->setFormat(tr("%v of %m tiles"));
+    v->addWidget(m_progress);
+    m_runState = new QLabel;
+    m_runState->setObjectName(QStringLiteral("scanRunState"));
+    m_runState->setWordWrap(true);
+    v->addWidget(m_runState);
+    return w;
+}
+
+ScanPlan ScanScreen::plan() const { return m_form->plan(); }
+QString ScanScreen::planText() const { return QString::fromStdString(scanfile::writePlan(plan())); }
+
+bool ScanScreen::setPlanText(const QString& text, QString* error)
+{
+    const auto r = scanfile::parsePlan(text.toStdString());
+    if (!r.plan) {
+        *error = QString::fromStdString(r.problems.format("plan")).trimmed();
+        return false;
+    }
+    setPlan(*r.plan);
+    return true;
+}
+
+void ScanScreen::setPlan(const ScanPlan& p)
+{
+    m_form->setPlan(p);
+    replan();
+    m_map->fitPlan();
+}
+
+QString ScanScreen::outputFolder() const { return m_folder->text(); }
+void ScanScreen::setOutputFolder(const QString& folder) { m_folder->setText(folder); }
+
+bool ScanScreen::openPlan(const QString& path)
+{
+    ScanPlan p;
+    QString error;
+    if (!scanfile::loadPlan(path, &p, &error)) {
+        emit problem(tr("Cannot open the plan:\n%1").arg(error));
+        return false;
+    }
+    setPlan(p);
+    // Each plan keeps its run next to it unless a folder was chosen on purpose.
+    const QFileInfo fi(path);
+    setOutputFolder(fi.dir().filePath(fi.completeBaseName().section(QLatin1Char('.'), 0, 0) + QStringLiteral("-run")));
+    emit notice(tr("Opened %1: %2 tiles.").arg(fi.fileName()).arg(m_layout.tiles.size()));
+    return true;
+}
+
+bool ScanScreen::savePlan(const QString& path)
+{
+    QString error;
+    if (!scanfile::savePlan(path, plan(), &error)) {
+        emit problem(error);
+        return false;
+    }
+    emit notice(tr("Saved the plan to %1.").arg(path));
+    return true;
+}
+
+StageModel ScanScreen::stageModel() const
+{
+    if (m_stage->isReady() && m_stage->identity().kind == proto::DeviceKind::Stage)
+        return ScanRunner::stageModelOf(m_stage->identity(), m_stage->softLimits());
+    return StageModel{};
+}
+
+void ScanScreen::onStageIdentity()
+{
+    if (!m_stage->isReady() || m_stage->identity().kind != proto::DeviceKind::Stage)
+        return;
+    const auto& a = m_stage->identity().axes;
+    if (a.size() >= 2)
+        m_map->setTravel({a[0].travelMin, a[1].travelMin, a[0].travelMax, a[1].travelMax});
+    const auto& l = m_stage->softLimits();
+    m_map->setSoftLimits(l.size() >= 2 ? std::optional<Rect>(Rect{l[0].min, l[1].min, l[0].max, l[1].max}) : std::nullopt);
+    scheduleReplan();
+}
+
+void ScanScreen::onStatus(const dev::InstrumentStatus& s)
+{
+    if (s.axes.size() >= 2 && s.axes[0].homed && s.axes[1].homed)
+        m_map->setStagePosition(Point2{s.axes[0].measured, s.axes[1].measured});
+    else
+        m_map->setStagePosition(std::nullopt);
+}
+
+void ScanScreen::scheduleReplan() { m_replanTimer->start(); }
+
+void ScanScreen::replan()
+{
+    const ScanPlan p = plan();
+    auto problems = validate(p, stageModel());
+    QStringList lines;
+    if (!m_form->polygonError().isEmpty())
+        lines << tr("Polygon: %1").arg(m_form->polygonError());
+    for (const auto& pr : problems)
+        lines << QString::fromStdString(pr.field + ": " + pr.message);
+    m_valid = lines.isEmpty();
+    m_layout = m_valid ? layoutScan(p) : ScanLayout{};
+    m_estimate = m_valid ? estimateScan(p, m_layout, stageModel()) : ScanEstimate{};
+    m_problems->setText(lines.join(QLatin1Char('\n')));
+    m_problems->setVisible(!lines.isEmpty());
+    m_map->setPlan(p, m_layout);
+    // A run of this very plan keeps showing its progress.
+    m_taken.assign(m_layout.tiles.size(), 0);
+    if (m_valid && m_preparedFingerprint == layoutFingerprint(p, m_layout))
+        for (int t = 0; t < static_cast<int>(m_taken.size()); ++t)
+            m_taken[static_cast<std::size_t>(t)] = m_runner->isTaken(t);
+    m_map->setProgress(m_taken, m_runner->isActive() ? m_runner->currentTile() : -1);
+    m_summary->setText(summaryText());
+    updateRunUi();
+}
+
+QString ScanScreen::duration(double s)
+{
+    if (!(s >= 0) || !std::isfinite(s))
+        return QStringLiteral("–");
+    const long total = std::lround(s);
+    if (total >= 3600)
+        return tr("%1 h %2 min").arg(total / 3600).arg((total % 3600) / 60, 2, 10, QLatin1Char('0'));
+    if (total >= 60)
+        return tr("%1 min %2 s").arg(total / 60).arg(total % 60, 2, 10, QLatin1Char('0'));
+    return tr("%1 s").arg(s < 10 ? QString::number(s, 'f', 1) : QString::number(total));
+}
+
+QString ScanScreen::summaryText() const
+{
+    if (!m_valid)
+        return tr("No tiles: fix the plan below");
+    const auto& g = m_layout.grid;
+    const QString grid = static_cast<int>(m_layout.tiles.size()) == g.columns * g.rows
+        ? tr("%1 × %2").arg(g.columns).arg(g.rows)
+        : tr("%1 of %2 × %3 in the outline").arg(m_layout.tiles.size()).arg(g.columns).arg(g.rows);
+    return tr("%1 tiles (%2) · step %3 × %4 mm · about %5 (moves %6, settle %7, exposure %8) · travel %9 mm")
+        .arg(m_layout.tiles.size())
+        .arg(grid)
+        .arg(g.stepXMm, 0, 'f', 3)
+        .arg(g.stepYMm, 0, 'f', 3)
+        .arg(duration(m_estimate.totalS), duration(m_estimate.moveS), duration(m_estimate.settleS), duration(m_estimate.exposureS))
+        .arg(m_estimate.travelMm, 0, 'f', 1);
+}
+
+QString ScanScreen::problemsText() const { return m_problems->text(); }
+
+void ScanScreen::updateRunUi()
+{
+    const auto st = m_runner->state();
+    const bool active = m_runner->isActive();
+    const bool resumable = st == ScanRunner::State::Paused || st == ScanRunner::State::Stopped;
+    m_form->setEnabled(!active);
+    m_fileRow->setEnabled(!active);  // the plan that runs stays the plan on screen
+    m_folder->setEnabled(!active);
+    m_map->setDrawingEnabled(!active);
+    m_runButton->setText(resumable && m_runner->takenTiles() > 0 ? tr("Resume") : tr("Run"));
+    m_runButton->setToolTip(tr("Run the scan on the stage, or continue it at the next tile (Ctrl+R)"));
+    m_runButton->setEnabled(!active && m_valid && m_stage->isReady());
+    m_pauseButton->setEnabled(st == ScanRunner::State::Running);
+    m_abortButton->setEnabled(active);
+    m_exportButton->setEnabled(m_valid && !active);
+    const int total = m_runner->totalTiles() > 0 ? m_runner->totalTiles() : static_cast<int>(m_layout.tiles.size());
+    m_progress->setRange(0, std::max(1, total));
+    m_progress->setValue(m_runner->totalTiles() > 0 ? m_runner->takenTiles() : 0);
+    QString text;
+    if (!m_stage->isReady())
+        text = tr("The stage is not connected.");
+    else if (m_runner->totalTiles() == 0)
+        text = tr("Ready. The run log and exports go to the output folder.");
+    else if (active)
+        text = tr("%1 · tile %2 of %3 · about %4 left")
+                   .arg(ScanRunner::stateName(st))
+                   .arg(m_runner->currentTile() + 1)
+                   .arg(m_runner->totalTiles())
+                   .arg(duration(m_runner->etaS()));
+    else
+        text = tr("%1 · %2 of %3 tiles taken").arg(ScanRunner::stateName(st)).arg(m_runner->takenTiles()).arg(m_runner->totalTiles());
+    m_runState->setText(text);
+}
+
+bool ScanScreen::confirm(const QString& question) { return !m_confirm || m_confirm(question); }
+
+QString ScanScreen::choose(FileAction action, const QString& title, const QString& filter)
+{
+    return m_chooser ? m_chooser(action, title, filter) : QString();
+}
+
+bool ScanScreen::run()
+{
+    if (m_runner->isActive())
+        return false;
+    replan();
+    if (!m_valid) {
+        emit problem(tr("The plan has problems: %1").arg(m_problems->text()));
+        return false;
+    }
+    const ScanPlan p = plan();
+    const QString folder = outputFolder().trimmed();
+    if (folder.isEmpty()) {
+        emit problem(tr("Choose an output folder for the run log and the exports."));
+        return false;
+    }
+    const std::uint64_t fingerprint = layoutFingerprint(p, m_layout);
+    const bool sameRun = m_preparedFingerprint == fingerprint && m_preparedFolder == folder && m_runner->totalTiles() > 0;
+    if (!sameRun || m_runner->state() == ScanRunner::State::Finished) {
+        QString error;
+        if (!m_runner->prepare(p, folder, false, &error)) {
+            if (!error.contains(QLatin1String("different scan"))
+                || !confirm(tr("%1\n\nStart this scan anew in that folder? The old run log is kept under another name.").arg(error))) {
+                emit problem(error);
+                return false;
+            }
+            if (!m_runner->prepare(p, folder, true, &error)) {
+                emit problem(error);
+                return false;
+            }
+        }
+        if (m_runner->state() == ScanRunner::State::Finished) {
+            if (!confirm(tr("Every tile of this scan is already taken in %1. Take them all again? The old run log is kept "
+                            "under another name.").arg(folder)))
+                return false;
+            QString again;
+            if (!m_runner->prepare(p, folder, true, &again)) {
+                emit problem(again);
+                return false;
+            }
+        }
+        m_preparedFingerprint = fingerprint;
+        m_preparedFolder = folder;
+        replan();
+    }
+    const QStringList blockers = m_runner->preflight();
+    if (!blockers.isEmpty()) {
+        emit problem(tr("The scan cannot start: %1").arg(blockers.join(QStringLiteral("; "))));
+        return false;
+    }
+    const int taken = m_runner->takenTiles();
+    const double left = m_runner->etaS();
+    if (left > kConfirmLongerThanS
+        && !confirm(taken > 0 ? tr("Continue the scan at tile %1 of %2? About %3 are left.").arg(taken + 1).arg(m_runner->totalTiles()).arg(duration(left))
+                              : tr("Run %1 tiles on the stage? It takes about %2, starting with a move to (%3, %4) mm.")
+                                    .arg(m_runner->totalTiles())
+                                    .arg(duration(left))
+                                    .arg(m_layout.path.front().target.xMm, 0, 'f', 2)
+                                    .arg(m_layout.path.front().target.yMm, 0, 'f', 2)))
+        return false;
+    QString error;
+    if (!m_runner->start(&error)) {
+        emit problem(error);
+        return false;
+    }
+    if (taken > 0)
+        emit notice(tr("Continuing at tile %1 of %2 (the run log has the first %3).").arg(taken + 1).arg(m_runner->totalTiles()).arg(taken));
+    return true;
+}
+
+void ScanScreen::pause() { m_runner->pause(); }
+void ScanScreen::abort() { m_runner->abort(); }
+
+bool ScanScreen::exportFiles()
+{
+    replan();
+    if (!m_valid) {
+        emit problem(tr("The plan has problems: nothing to export."));
+        return false;
+    }
+    const ScanPlan p = plan();
+    QStringList written;
+    QString error;
+    // The run's measured positions when this plan ran into this folder, else the planned ones.
+    const bool measured = m_preparedFingerprint == layoutFingerprint(p, m_layout) && m_preparedFolder == outputFolder()
+        && m_runner->takenTiles() > 0;
+    const bool ok = measured ? m_runner->writeExports(&written, &error)
+                             : scanfile::writeExports(outputFolder(), p, m_layout, scanfile::plannedRecords(p, m_layout), &written, &error);
+    if (!ok) {
+        emit problem(tr("Export failed: %1").arg(error));
+        return false;
+    }
+    emit notice(measured ? tr("Exported %1 tiles with the positions measured so far to %2.").arg(m_layout.tiles.size()).arg(outputFolder())
+                         : tr("Exported %1 planned tile positions to %2.").arg(m_layout.tiles.size()).arg(outputFolder()));
+    return true;
+}
+
+} // namespace ui

@@ -1,0 +1,111 @@
+#pragma once
+// The Scan screen: plan a stitching scan on a to-scale map of the stage (draw or
+// type the region), see the tiles in order, the path, the tile count and the time
+// it takes; save and open plans; run, pause, resume and abort it on the stage with
+// progress and time left; export the tile positions for Fiji and Micro-Manager.
+#include "device/client/instrument_client.h"
+#include "motion/plans/scan/scan_estimate.h"
+
+#include <QWidget>
+
+#include <functional>
+#include <memory>
+
+class QLabel;
+class QLineEdit;
+class QProgressBar;
+class QPushButton;
+class QTimer;
+
+namespace jobs {
+class ScanRunner;
+}
+
+namespace ui {
+
+class ScanPlanForm;
+class ScanStageMap;
+
+class ScanScreen : public QWidget {
+    Q_OBJECT
+public:
+    enum class FileAction { Open, Save, Folder };
+    /// Asks for a file or folder; "" = cancelled. The composition root supplies dialogs.
+    using FileChooser = std::function<QString(FileAction action, const QString& title, const QString& filter)>;
+    /// Asked before a long run or before setting an old run aside; true = go ahead.
+    using Confirm = std::function<bool(const QString& question)>;
+    /// Runs longer than this ask first.
+    static constexpr double kConfirmLongerThanS = 60;
+
+    explicit ScanScreen(dev::InstrumentClient* stage, QWidget* parent = nullptr);
+    ~ScanScreen() override;
+    void setFileChooser(FileChooser chooser) { m_chooser = std::move(chooser); }
+    void setConfirm(Confirm confirm) { m_confirm = std::move(confirm); }
+
+    /// The plan as typed, and the plan file's text (kept between runs by the app).
+    motion::scan::ScanPlan plan() const;
+    QString planText() const;
+    bool setPlanText(const QString& text, QString* error);
+    void setPlan(const motion::scan::ScanPlan& plan);
+    QString outputFolder() const;
+    void setOutputFolder(const QString& folder);
+
+    bool openPlan(const QString& path);
+    bool savePlan(const QString& path);
+    /// Runs, or resumes, the scan; false (with a problem signal) when it cannot start.
+    bool run();
+    void pause();
+    void abort();
+    bool exportFiles();
+
+    jobs::ScanRunner* runner() const { return m_runner; }
+    ScanStageMap* map() const { return m_map; }
+    ScanPlanForm* form() const { return m_form; }
+    const motion::scan::ScanLayout& layout() const { return m_layout; }
+    const motion::scan::ScanEstimate& estimate() const { return m_estimate; }
+    /// "42 tiles (7 × 6) …" as shown, and the plan's problems ("" when valid).
+    QString summaryText() const;
+    QString problemsText() const;
+
+    static QString duration(double seconds);
+
+signals:
+    void problem(const QString& message);
+    void notice(const QString& message);
+
+private:
+    QWidget* buildRunPanel();
+    QWidget* buildFileRow();  ///< New, Open, Save: held back while a scan runs
+    void scheduleReplan();
+    void replan();
+    void updateRunUi();
+    void onStatus(const dev::InstrumentStatus& status);
+    void onStageIdentity();
+    motion::scan::StageModel stageModel() const;
+    bool confirm(const QString& question);
+    QString choose(FileAction action, const QString& title, const QString& filter);
+
+    dev::InstrumentClient* m_stage;
+    jobs::ScanRunner* m_runner;
+    ScanStageMap* m_map;
+    ScanPlanForm* m_form;
+    QLabel* m_summary;
+    QLabel* m_problems;
+    QLabel* m_pointer;
+    QWidget* m_fileRow;
+    QLineEdit* m_folder;
+    QPushButton *m_runButton, *m_pauseButton, *m_abortButton, *m_exportButton;
+    QProgressBar* m_progress;
+    QLabel* m_runState;
+    QTimer* m_replanTimer;
+    FileChooser m_chooser;
+    Confirm m_confirm;
+    motion::scan::ScanLayout m_layout;
+    motion::scan::ScanEstimate m_estimate;
+    bool m_valid = false;
+    std::vector<char> m_taken;
+    std::uint64_t m_preparedFingerprint = 0;
+    QString m_preparedFolder;
+};
+
+} // namespace ui
