@@ -20,9 +20,10 @@ void Firmware::receive(const std::uint8_t* data, std::size_t size)
 {
     m_frames.clear();
     m_decoder.feed(data, size, m_frames);
-    if (!m_frames.empty())
+    if (!m_frames.empty()) {
         m_machine.tuning().hostHeard();  // feeds the tuning tests' host-silence watchdog
-        m_lastHostFrameS = m_machine.timeS();
+        m_lastHostFrameS = m_machine.timeS();  // and the path queue's
+    }
     // Realtime requests act first: a stop or E-stop decoded in the same chunk as
     // queued requests must not wait behind them.
     for (const auto& f : m_frames)
