@@ -76,6 +76,24 @@ TEST(TuningOscillation, RatioAndPeriodOfADampedSineDenseAndSparse)
     }
 }
 
+TEST(TuningOscillation, ARelayCycleOfAFractionalNumberOfSamplesIsStable)
+{
+    // What the simulated stage does under a relay: a cycle 5.5 control periods
+    // long, sampled, so successive periods alternate by half a sample or more.
+    const double T = 1e-3, P = 5.5 * T, d = 0.02;
+    Record r;
+    r.periodS = T;
+    for (int k = 0; k < 200; ++k) {
+        const double ph = 2 * kPi * k * T / P + 0.3;
+        const double y = 0.01 * (std::sin(ph) + 0.3 * std::sin(3 * ph));
+        r.append(0, y, std::cos(ph) > 0 ? d : -d);
+    }
+    const auto a = analyzeRelay(r, d, 1e-4, InputModel::Sampled);
+    ASSERT_TRUE(a.ok) << a.problem;
+    EXPECT_NEAR(a.periodS, P, 0.005 * P);
+    EXPECT_EQ(a.cycles % 2, 0) << "an odd number of alternating cycles biases the period";
+}
+
 TEST(TuningOscillation, ForcedSquareWaveMeasuresTheExactFrequencyResponse)
 {
     const PlantSpec p{PlantSpec::Kind::Lag, 1.3, 0.05, 0, 4, 1e-4};

@@ -254,9 +254,16 @@ RelayAnalysis analyzeRelay(const Record& r, double d, double eps, InputModel inp
         a.problem = "the relay chattered at the loop rate (it switched every period): raise the hysteresis above the noise on the output";
         return a;
     }
+    // The relay switches only at a sample, so a limit cycle that is not a whole number
+    // of samples long alternates (the stage: 5.15, 5.85, 5.15, … samples). Each
+    // crossing may move by up to a sample; an even number of cycles averages the
+    // alternation out exactly.
+    const double tolerance = std::max(0.02 * lastP, 1.0);
     std::size_t firstStable = periods.size() - 1;
-    while (firstStable > 0 && std::abs(periods[firstStable - 1] - lastP) <= 0.02 * lastP && periods.size() - firstStable < 8)
+    while (firstStable > 0 && std::abs(periods[firstStable - 1] - lastP) <= tolerance && periods.size() - firstStable < 8)
         --firstStable;
+    if ((periods.size() - firstStable) % 2 == 1 && periods.size() - firstStable > 2)
+        ++firstStable;
     const std::size_t cycles = periods.size() - firstStable;
     if (cycles < 2) {
         a.problem = "the relay oscillation did not settle into stable cycles";
