@@ -1,0 +1,190 @@
+// InstrumentClient, part 4 of 4: the commands a person gives: home, move, jog
+// (steps and held velocity jogs with their refresh), stop, E-stop, reset, set
+// zero and soft limits. Each checks its arguments before anything is sent.
+#include "device/client/instrument_client.h"
+
+#include <cmath>
+
+namespace dev {
+namespace {
+std::int32_t toWire(double v, double scale) { return static_cast<std::int32_t>(std::llround(v * scale)); }
+} // namespace
+
+// ---- commands -------------------------------------------------------------------
+
+static std::optional<RequestError> invalid(const QString& why)
+{
+    RequestError e;
+    e.kind = RequestError::Kind::Invalid;
+    e.message = why;
+    return e;
+}
+
+void InstrumentClient::home(quint8 axisMask, Callback done)
+{
+    send(proto::MsgType::Home, proto::encode(proto::HomeRequest{axisMask}), wrap(std::move(done), tr("home")));
+}
+
+void InstrumentClient::move(const QVector<QPair<int, double>>& targets, bool relative, double speed, Callback done)
+{
+    auto refuse = [&](const QString& why) {
+        const auto e = invalid(why);
+        emit requestFailed(*e);
+        if (done)
+            done(e);
+    };
+    if (targets.isEmpty())
+        return refuse(tr("move: no axis given"));
+    proto::MoveRequest m;
+    m.relative = relative;
+    QMap<int, double> byAxis;
+    for (const auto& [axis, value] : targets) {
+        if (axis < 0 || axis >= m_identity.axes.size())
+            return refuse(tr("move: axis %1 does not exist on this instrument").arg(axis));
+        if (!std::isfinite(value))
+            return refuse(tr("move: axis %1 target is not a number").arg(m_identity.axes[axis].letter));
+        if (byAxis.contains(axis))
+            return refuse(tr("move: axis %1 named twice").arg(m_identity.axes[axis].letter));
+        byAxis[axis] = value;
+    }
+    if (!std::isfinite(speed) || speed < 0)
+        return refuse(tr("move: speed must be a positive number"));
+    for (auto it = byAxis.cbegin(); it != byAxis.cend(); ++it) {
+        m.axisMask = static_cast<std::uint8_t>(m.axisMask | (1u << it.key()));
+        m.targets.push_back(toWire(it.value(), m_identity.axes[it.key()].wireScale()));
+    }
+    m.speed = static_cast<std::uint32_t>(std::llround(speed * m_identity.axes[byAxis.firstKey()].wireScale()));
+    send(proto::MsgType::Move, proto::encode(m), wrap(std::move(done), tr("move")));
+}
+
+void InstrumentClient::jogStep(int axis, double delta, double speed, Callback done)
+{
+    if (axis < 0 || axis >= m_identity.axes.size() || !std::isfinite(delta) || !std::isfinite(speed) || speed < 0) {
+        const auto e = invalid(tr("jog step: bad axis, step or speed"));
+        emit requestFailed(*e);
+        if (done)
+            done(e);
+        return;
+    }
+    const double k = m_identity.axes[axis].wireScale();
+    proto::JogStepRequest r;
+    r.axis = static_cast<std::uint8_t>(axis);
+    r.delta = toWire(delta, k);
+    r.speed = static_cast<std::uint32_t>(std::llround(speed * k));
+    send(proto::MsgType::JogStep, proto::encode(r), wrap(std::move(done), tr("jog step")));
+}
+
+void InstrumentClient::startJog(int axis, double velocity)
+{
+    if (axis < 0 || axis >= m_identity.axes.size() || !std::isfinite(velocity))
+        return;
+    m_jogs[axis] = velocity;
+    refreshJogs();
+    if (!m_jogTimer.isActive())
+        m_jogTimer.start();
+}
+
+void InstrumentClient::stopJog(int axis)
+{
+    if (!m_jogs.contains(axis))
+        return;
+    m_jogs.remove(axis);
+    if (m_jogs.isEmpty())
+        m_jogTimer.stop();
+    if (axis < 0 || axis >= m_identity.axes.size())
+        return;
+    proto::JogVelocityRequest r;
+    r.axisMask = static_cast<std::uint8_t>(1u << axis);
+    r.velocities = {0};
+    send(proto::MsgType::JogVelocity, proto::encode(r), wrap({}, tr("jog")));
+}
+
+void InstrumentClient::stopAllJogs()
+{
+    const auto axes = m_jogs.keys();
+    for (int a : axes)
+        stopJog(a);
+}
+
+void InstrumentClient::refreshJogs()
+{
+    if (m_jogs.isEmpty() || m_state != LinkState::Ready)
+        return;
+    proto::JogVelocityRequest r;
+    for (int axis = 0; axis < m_identity.axes.size(); ++axis) {
+        if (!m_jogs.contains(axis))
+            continue;
+        r.axisMask = static_cast<std::uint8_t>(r.axisMask | (1u << axis));
+        r.velocities.push_back(toWire(m_jogs[axis], m_identity.axes[axis].wireScale()));
+    }
+    send(proto::MsgType::JogVelocity, proto::encode(r), [this, mask = r.axisMask](const auto& e, const auto&) {
+        if (!e || e->kind != RequestError::Kind::Device)
+            return;
+        // A refused jog (busy, E-stop, too fast) ends the hold: say so once.
+        for (int axis = 0; axis < 8; ++axis)
+            if (mask & (1u << axis))
+                m_jogs.remove(axis);
+        if (m_jogs.isEmpty())
+            m_jogTimer.stop();
+        RequestError err = *e;
+        err.message = tr("jog refused: %1").arg(err.message);
+        emit requestFailed(err);
+    });
+}
+
+void InstrumentClient::stop(quint8 axisMask, Callback done)
+{
+    for (int a = 0; a < 8; ++a)
+        if (axisMask == 0 || (axisMask & (1u << a)))
+            m_jogs.remove(a);
+    if (m_jogs.isEmpty())
+        m_jogTimer.stop();
+    send(proto::MsgType::Stop, proto::encode(proto::AxisMaskRequest{axisMask}), wrap(std::move(done), tr("stop")));
+}
+
+void InstrumentClient::estop(Callback done)
+{
+    m_jogs.clear();
+    m_jogTimer.stop();
+    send(proto::MsgType::EStop, {}, wrap(std::move(done), tr("E-stop")));
+}
+
+void InstrumentClient::reset(Callback done)
+{
+    send(proto::MsgType::Reset, {}, wrap(std::move(done), tr("reset")));
+}
+
+void InstrumentClient::setZero(quint8 axisMask, Callback done)
+{
+    auto inner = wrap(std::move(done), tr("set zero"));
+    send(proto::MsgType::SetZero, proto::encode(proto::AxisMaskRequest{axisMask}), [this, inner](const auto& e, const auto& p) {
+        if (!e)
+            refreshLimits();
+        inner(e, p);
+    });
+}
+
+void InstrumentClient::setSoftLimits(int axis, double min, double max, Callback done)
+{
+    if (axis < 0 || axis >= m_identity.axes.size() || !std::isfinite(min) || !std::isfinite(max)) {
+        const auto e = invalid(tr("soft limits: bad axis or value"));
+        emit requestFailed(*e);
+        if (done)
+            done(e);
+        return;
+    }
+    const double k = m_identity.axes[axis].wireScale();
+    proto::SetLimitsRequest r;
+    r.axis = static_cast<std::uint8_t>(axis);
+    r.limits = {toWire(min, k), toWire(max, k)};
+    auto inner = wrap(std::move(done), tr("soft limits"));
+    send(proto::MsgType::SetLimits, proto::encode(r), [this, axis, min, max, inner](const auto& e, const auto& p) {
+        if (!e && axis < m_limits.size()) {
+            m_limits[axis] = {min, max};
+            emit limitsChanged();
+        }
+        inner(e, p);
+    });
+}
+
+} // namespace dev

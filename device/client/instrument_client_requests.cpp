@@ -1,0 +1,300 @@
+// InstrumentClient, part 2 of 4: the request machinery. Sequence numbers, the
+// one-in-flight queue beside the realtime requests that overtake it, per-attempt
+// timeouts with retransmission, and matching incoming frames to the requests
+// they answer (events and telemetry are handed on as signals). The other parts:
+// instrument_client.cpp (connection, handshake), instrument_client_status.cpp,
+// instrument_client_commands.cpp.
+#include "device/client/instrument_client.h"
+
+namespace dev {
+namespace {
+QString typeName(proto::MsgType t)
+{
+    switch (t) {
+    case proto::MsgType::Hello: return QStringLiteral("HELLO");
+    case proto::MsgType::Status: return QStringLiteral("STATUS");
+    case proto::MsgType::Home: return QStringLiteral("HOME");
+    case proto::MsgType::Move: return QStringLiteral("MOVE");
+    case proto::MsgType::JogStep: return QStringLiteral("JOG_STEP");
+    case proto::MsgType::SetZero: return QStringLiteral("SET_ZERO");
+    case proto::MsgType::GetLimits: return QStringLiteral("GET_LIMITS");
+    case proto::MsgType::SetLimits: return QStringLiteral("SET_LIMITS");
+    case proto::MsgType::Subscribe: return QStringLiteral("SUBSCRIBE");
+    case proto::MsgType::Reset: return QStringLiteral("RESET");
+    case proto::MsgType::JogVelocity: return QStringLiteral("JOG_VELOCITY");
+    case proto::MsgType::Stop: return QStringLiteral("STOP");
+    case proto::MsgType::EStop: return QStringLiteral("ESTOP");
+    default: return QStringLiteral("0x%1").arg(static_cast<int>(t), 2, 16, QLatin1Char('0'));
+    }
+}
+} // namespace
+
+// ---- requests -------------------------------------------------------------------
+
+void InstrumentClient::send(proto::MsgType type, const proto::Bytes& payload, RawDone done)
+{
+    Request r;
+    r.type = type;
+    r.realtime = proto::isRealtimeType(static_cast<std::uint8_t>(type));
+    r.done = std::move(done);
+    if (!m_transport || !m_transport->isOpen()) {
+        RequestError e;
+        e.kind = RequestError::Kind::LinkDown;
+        e.message = tr("%1 not sent: the instrument is not connected").arg(typeName(type));
+        if (r.done)
+            r.done(e, {});
+        return;
+    }
+    r.seq = m_nextSeq++;
+    if (m_nextSeq == 0)
+        m_nextSeq = 1;
+    std::vector<std::uint8_t> wire;
+    proto::encodeFrame(static_cast<std::uint8_t>(type), r.seq, payload.data(), payload.size(), wire);
+    r.wire = QByteArray(reinterpret_cast<const char*>(wire.data()), static_cast<qsizetype>(wire.size()));
+    if (r.realtime) {
+        // Realtime requests overtake anything queued: they go out at once.
+        transmit(r);
+        m_realtime.emplace(r.seq, std::move(r));
+        return;
+    }
+    m_queue.push_back(std::move(r));
+    pumpQueue();
+}
+
+void InstrumentClient::transmit(Request& r)
+{
+    ++r.attempts;
+    if (r.attempts > 1)
+        ++m_stats.retransmits;
+    else
+        r.firstSentMs = nowMs();
+    r.deadlineMs = nowMs() + kReplyTimeoutMs;
+    if (m_transport)
+        m_transport->write(r.wire);
+}
+
+void InstrumentClient::pumpQueue()
+{
+    if (m_inFlight || m_queue.empty())
+        return;
+    m_inFlight = true;
+    transmit(m_queue.front());
+}
+
+void InstrumentClient::complete(Request r, const std::optional<RequestError>& err, const proto::Bytes& payload)
+{
+    if (!err || err->kind != RequestError::Kind::Timeout)
+        m_consecutiveTimeouts = 0;
+    if (r.done)
+        r.done(err, payload);
+}
+
+void InstrumentClient::checkTimeouts()
+{
+    const qint64 now = nowMs();
+    auto timeoutError = [](const Request& r) {
+        RequestError e;
+        e.kind = RequestError::Kind::Timeout;
+        e.message = tr("no reply to %1 after %2 attempts (%3 s): the device is not answering")
+                        .arg(typeName(r.type))
+                        .arg(kAttempts)
+                        .arg(kAttempts * kReplyTimeoutMs / 1000.0, 0, 'f', 1);
+        return e;
+    };
+    std::vector<Request> expired;
+    if (m_inFlight && !m_queue.empty() && m_queue.front().deadlineMs <= now) {
+        Request& r = m_queue.front();
+        if (r.attempts < kAttempts) {
+            transmit(r);  // same seq, same bytes: the device answers a repeat from its cache
+        } else {
+            expired.push_back(std::move(r));
+            m_queue.pop_front();
+            m_inFlight = false;
+        }
+    }
+    for (auto it = m_realtime.begin(); it != m_realtime.end();) {
+        if (it->second.deadlineMs > now) {
+            ++it;
+            continue;
+        }
+        if (it->second.attempts < kAttempts) {
+            transmit(it->second);
+            ++it;
+        } else {
+            expired.push_back(std::move(it->second));
+            it = m_realtime.erase(it);
+        }
+    }
+    // Nothing at all came back while a request was tried kAttempts times: the
+    // device is gone, not merely unlucky with one request. Waiting for a second
+    // request to time out too would report it only after ~1.9 s or later.
+    bool silent = false;
+    for (const auto& r : expired)
+        silent = silent || m_lastFrameMs < r.firstSentMs;
+    for (auto& r : expired) {
+        ++m_stats.timeouts;
+        ++m_consecutiveTimeouts;
+        const RequestError e = timeoutError(r);
+        complete(std::move(r), e, {});
+    }
+    if (!expired.empty() && (m_state == LinkState::Ready || m_state == LinkState::Identified)
+        && (silent || m_consecutiveTimeouts >= 2))
+        linkGone(tr("the device stopped answering"));
+    pumpQueue();
+}
+
+void InstrumentClient::failAll(RequestError::Kind kind, const QString& why)
+{
+    std::deque<Request> queue;
+    queue.swap(m_queue);
+    std::map<std::uint16_t, Request> rt;
+    rt.swap(m_realtime);
+    m_inFlight = false;
+    m_statusPending = false;
+    RequestError e;
+    e.kind = kind;
+    for (auto& r : queue) {
+        e.message = tr("%1 abandoned: %2").arg(typeName(r.type), why);
+        if (r.done)
+            r.done(e, {});
+    }
+    for (auto& [seq, r] : rt) {
+        e.message = tr("%1 abandoned: %2").arg(typeName(r.type), why);
+        if (r.done)
+            r.done(e, {});
+    }
+}
+
+// ---- incoming -------------------------------------------------------------------
+
+void InstrumentClient::onBytes(const QByteArray& bytes)
+{
+    m_frames.clear();
+    m_decoder.feed(reinterpret_cast<const std::uint8_t*>(bytes.constData()), static_cast<std::size_t>(bytes.size()), m_frames);
+    if (!m_frames.empty())
+        m_lastFrameMs = nowMs();  // garbage alone does not show the device is alive
+    for (const auto& f : m_frames)
+        onFrame(f);
+}
+
+RequestError InstrumentClient::deviceError(const proto::ErrorReply& e) const
+{
+    RequestError r;
+    r.kind = RequestError::Kind::Device;
+    r.code = e.code;
+    r.axis = e.axis == proto::kNoAxis ? -1 : e.axis;
+    r.value = (r.axis >= 0 && r.axis < m_identity.axes.size()) ? e.value / m_identity.axes[r.axis].wireScale() : e.value;
+    r.message = QString::fromStdString(e.message);
+    if (r.message.isEmpty())
+        r.message = QString::fromLatin1(proto::errorCodeName(e.code));
+    return r;
+}
+
+void InstrumentClient::onFrame(const proto::Frame& f)
+{
+    if (f.type == static_cast<std::uint8_t>(proto::MsgType::Event)) {
+        if (auto e = proto::decodeEvent(f.payload)) {
+            DeviceEvent ev;
+            ev.kind = e->kind;
+            ev.axis = e->axis == proto::kNoAxis ? -1 : e->axis;
+            // Instrument-wide events keep the number as sent (path events carry a segment index there).
+            ev.position = (ev.axis >= 0 && ev.axis < m_identity.axes.size()) ? e->position / m_identity.axes[ev.axis].wireScale()
+                                                                              : e->position;
+            ev.deviceTimeUs = e->deviceTimeUs;
+            ev.text = QString::fromStdString(e->text);
+            ev.hostTime = QDateTime::currentDateTime();
+            // Homing moves the coordinate origin, and with it the limits' numbers.
+            if (ev.kind == proto::EventKind::HomeDone)
+                refreshLimits();
+            emit eventReceived(ev);
+        }
+        return;
+    }
+    if (f.type == static_cast<std::uint8_t>(proto::MsgType::TelemetryBatch)) {
+        auto b = proto::decodeTelemetryBatch(f.payload);
+        if (!b)
+            return;
+        ++m_stats.telemetryBatches;
+        m_stats.telemetrySamples += b->sampleCount;
+        // The sample counter runs on across batches: a jump is samples the wire lost.
+        if (m_haveSampleIndex && b->firstSampleIndex != m_nextSampleIndex) {
+            const std::uint32_t gap = b->firstSampleIndex - m_nextSampleIndex;
+            if (gap < 0x80000000u) {
+                m_stats.lostSamples += gap;
+                emit samplesLost(m_stats.lostSamples);
+            }
+        }
+        m_haveSampleIndex = true;
+        m_nextSampleIndex = b->firstSampleIndex + b->sampleCount;
+        emit telemetryReceived(*b);
+        return;
+    }
+    const bool isError = f.type == static_cast<std::uint8_t>(proto::MsgType::Error);
+    if (!isError && !proto::isReplyType(f.type))
+        return;
+    auto matches = [&](const Request& r) {
+        return r.seq == f.seq && (isError || f.type == proto::replyTypeOf(r.type));
+    };
+    Request r;
+    if (m_inFlight && !m_queue.empty() && matches(m_queue.front())) {
+        r = std::move(m_queue.front());
+        m_queue.pop_front();
+        m_inFlight = false;
+    } else if (auto it = m_realtime.find(f.seq); it != m_realtime.end() && matches(it->second)) {
+        r = std::move(it->second);
+        m_realtime.erase(it);
+    } else {
+        ++m_stats.lateReplies;  // an answer to a retransmission we already had, or to a forgotten request
+        return;
+    }
+    if (isError) {
+        const auto e = proto::decodeErrorReply(f.payload);
+        RequestError err;
+        if (e) {
+            err = deviceError(*e);
+        } else {
+            err.kind = RequestError::Kind::Device;
+            err.message = tr("%1 refused with an unreadable error").arg(typeName(r.type));
+        }
+        complete(std::move(r), err, {});
+    } else {
+        complete(std::move(r), std::nullopt, f.payload);
+    }
+    pumpQueue();
+}
+
+// ---- replies handed to callers ---------------------------------------------------
+
+InstrumentClient::RawDone InstrumentClient::wrap(Callback done, const QString& what)
+{
+    return [this, done = std::move(done), what](const std::optional<RequestError>& e, const proto::Bytes&) {
+        if (e) {
+            RequestError err = *e;
+            if (!what.isEmpty() && err.kind == RequestError::Kind::Device)
+                err.message = tr("%1 refused: %2").arg(what, err.message);
+            emit requestFailed(err);
+            if (done)
+                done(err);
+        } else if (done) {
+            done(std::nullopt);
+        }
+    };
+}
+
+void InstrumentClient::request(proto::MsgType type, const proto::Bytes& payload, ReplyCallback done, const QString& what)
+{
+    send(type, payload, [this, done = std::move(done), what](const std::optional<RequestError>& e, const proto::Bytes& reply) {
+        if (e) {
+            RequestError err = *e;
+            if (!what.isEmpty() && err.kind == RequestError::Kind::Device)
+                err.message = tr("%1 refused: %2").arg(what, err.message);
+            emit requestFailed(err);
+            if (done)
+                done(err, reply);
+        } else if (done) {
+            done(std::nullopt, reply);
+        }
+    });
+}
+
+} // namespace dev

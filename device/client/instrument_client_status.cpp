@@ -1,0 +1,102 @@
+// InstrumentClient, part 3 of 4: what the client keeps up to date about the
+// device: the status poll, the soft limits and the telemetry subscription, and
+// the conversion of telemetry values to axis units.
+#include "device/client/instrument_client.h"
+
+namespace dev {
+
+void InstrumentClient::applyStatus(const proto::Bytes& payload)
+{
+    const auto s = proto::decodeStatusReply(payload);
+    if (!s || int(s->axes.size()) != m_identity.axes.size())
+        return;
+    m_status.estop = s->deviceFlags & proto::DeviceEStop;
+    m_status.fault = s->deviceFlags & proto::DeviceFault;
+    m_status.deviceTimeUs = s->deviceTimeUs;
+    for (int i = 0; i < m_status.axes.size(); ++i) {
+        const auto& a = s->axes[size_t(i)];
+        const double k = m_identity.axes[i].wireScale();
+        auto& r = m_status.axes[i];
+        r.commanded = a.commanded / k;
+        r.measured = a.measured / k;
+        r.homed = a.flags & proto::AxisHomed;
+        r.moving = a.flags & proto::AxisMoving;
+        r.homing = a.flags & proto::AxisHoming;
+        r.jogging = a.flags & proto::AxisJogging;
+        r.homeSwitch = a.flags & proto::AxisHomeSwitch;
+        r.limitSwitch = a.flags & proto::AxisLimitSwitch;
+        r.fault = a.flags & proto::AxisFault;
+    }
+    emit statusChanged(m_status);
+}
+
+void InstrumentClient::refreshLimits(std::function<void()> then)
+{
+    send(proto::MsgType::GetLimits, {}, [this, then](const auto& e, const auto& p) {
+        if (!e)
+            if (auto l = proto::decodeLimitsReply(p)) {
+                for (int i = 0; i < m_limits.size() && i < int(l->axes.size()); ++i) {
+                    const double k = m_identity.axes[i].wireScale();
+                    m_limits[i] = {l->axes[size_t(i)].min / k, l->axes[size_t(i)].max / k};
+                }
+                emit limitsChanged();
+            }
+        if (then)
+            then();
+    });
+}
+
+void InstrumentClient::pollStatus()
+{
+    if (m_statusPending || m_state != LinkState::Ready)
+        return;
+    m_statusPending = true;
+    send(proto::MsgType::Status, {}, [this](const auto& e, const auto& p) {
+        m_statusPending = false;
+        if (!e)
+            applyStatus(p);
+    });
+}
+
+void InstrumentClient::subscribe(const QVector<proto::ChannelRef>& channels, int rateHz,
+                                 std::function<void(const std::optional<RequestError>&, const proto::SubscribeReply&)> done)
+{
+    proto::SubscribeRequest r;
+    r.rateHz = static_cast<std::uint32_t>(std::max(0, rateHz));
+    r.channels.assign(channels.begin(), channels.end());
+    send(proto::MsgType::Subscribe, proto::encode(r), [this, channels, done](const auto& e, const auto& p) {
+        proto::SubscribeReply reply;
+        if (!e) {
+            if (auto d = proto::decodeSubscribeReply(p))
+                reply = *d;
+            m_channels = reply.rateHz ? channels : QVector<proto::ChannelRef>{};
+            m_rateHz = static_cast<int>(reply.rateHz);
+            m_haveSampleIndex = false;  // a new subscription restarts the device's sample counter
+        } else if (!done) {
+            // A caller with its own handler (the telemetry hub falls back to the
+            // stated capacity) decides whether a person needs to hear about it.
+            RequestError err = *e;
+            err.message = tr("telemetry: %1").arg(err.message);
+            emit requestFailed(err);
+        }
+        if (done)
+            done(e, reply);
+    });
+}
+
+double InstrumentClient::toAxisUnits(const proto::ChannelRef& c, std::int32_t value) const
+{
+    switch (c.kind) {
+    case proto::ChannelKind::Switches:
+    case proto::ChannelKind::ControllerOutput:
+        return value;
+    case proto::ChannelKind::ContourError:
+        return value / 1e6;
+    default:
+        if (c.axis < m_identity.axes.size())
+            return value / m_identity.axes[c.axis].wireScale();
+        return value;
+    }
+}
+
+} // namespace dev

@@ -1,0 +1,231 @@
+// TelemetryHub: consumers' wants and the subscription that serves them. The
+// union of what is wanted per instrument is subscribed at the highest wanted
+// rate; a rate the device refuses as over capacity is retried lower, and the
+// outcome is reported with a sentence saying what limited it.
+#include "device/telemetry/telemetry_hub.h"
+#include "device/telemetry/telemetry_hub_detail.h"
+
+#include <algorithm>
+
+namespace tele {
+namespace {
+/// Attempts at a lower rate after the device refused one as over capacity.
+constexpr int kMaxFallbacks = 4;
+
+bool refLess(const proto::ChannelRef& a, const proto::ChannelRef& b)
+{
+    return a.axis != b.axis ? a.axis < b.axis : a.kind < b.kind;
+}
+} // namespace
+
+// ---- wants and subscriptions ---------------------------------------------------------
+
+void TelemetryHub::setWanted(const QString& consumer, const QVector<ChannelKey>& channels, int rateHz)
+{
+    if (consumer.isEmpty())
+        return;
+    if (channels.isEmpty()) {
+        m_wants.remove(consumer);
+    } else {
+        Want w;
+        w.channels = channels;
+        w.rateHz = rateHz > 0 ? rateHz : kDefaultRateHz;
+        m_wants.insert(consumer, w);
+    }
+    recomputeCollected();
+    scheduleApply();
+}
+
+int TelemetryHub::subscribedRateHz(int index) const
+{
+    const Instrument* in = instrument(index);
+    return in ? in->subscribedRateHz : 0;
+}
+
+void TelemetryHub::recomputeCollected()
+{
+    for (auto& [index, in] : m_instruments) {
+        QVector<proto::ChannelRef> refs;
+        auto add = [&refs, idx = index](const QVector<ChannelKey>& keys) {
+            for (const auto& k : keys)
+                if (k.instrument == idx && std::find(refs.begin(), refs.end(), k.ref) == refs.end())
+                    refs.push_back(k.ref);
+        };
+        for (auto it = m_wants.cbegin(); it != m_wants.cend(); ++it)
+            add(it->channels);
+        if (m_record)
+            add(m_record->columns);
+        std::sort(refs.begin(), refs.end(), refLess);
+        in.collected = refs;
+    }
+}
+
+void TelemetryHub::unionFor(int index, QVector<proto::ChannelRef>& channels, int& rateHz) const
+{
+    const Instrument* in = instrument(index);
+    channels.clear();
+    rateHz = 0;
+    if (!in)
+        return;
+    const QVector<ChannelKey> available = availableChannels(index);
+    for (const auto& ref : in->collected)
+        if (available.contains(ChannelKey{index, ref}))
+            channels.push_back(ref);
+    for (auto it = m_wants.cbegin(); it != m_wants.cend(); ++it) {
+        if (it.key() == kRecordingConsumer)
+            continue;
+        for (const auto& k : it->channels)
+            if (k.instrument == index) {
+                rateHz = std::max(rateHz, it->rateHz);
+                break;
+            }
+    }
+    if (channels.isEmpty())
+        rateHz = 0;
+    else if (rateHz == 0)
+        rateHz = kDefaultRateHz;  // only the recorder wants this instrument
+}
+
+void TelemetryHub::scheduleApply()
+{
+    if (m_applyScheduled)
+        return;
+    m_applyScheduled = true;
+    QMetaObject::invokeMethod(this, &TelemetryHub::applyWants, Qt::QueuedConnection);
+}
+
+void TelemetryHub::applyWants()
+{
+    m_applyScheduled = false;
+    for (auto& [index, in] : m_instruments) {
+        dropUnwantedStores(index);
+        if (!in.client || !in.client->isReady())
+            continue;  // applied when the client becomes Ready
+        if (in.subscribeInFlight) {
+            in.reapplyAfterReply = true;
+            continue;
+        }
+        QVector<proto::ChannelRef> channels;
+        int rateHz = 0;
+        unionFor(index, channels, rateHz);
+        if (channels == in.desired && rateHz == in.desiredRateHz)
+            continue;
+        in.desired = channels;
+        in.desiredRateHz = rateHz;
+        int ask = rateHz;
+        Limit limit = Limit::None;
+        const auto clock = static_cast<int>(in.client->identity().maxTelemetryRateHz);
+        if (clock > 0 && ask > clock) {
+            ask = clock;
+            limit = Limit::SampleClock;
+        }
+        subscribe(index, channels, ask, rateHz, 0, limit, clock);
+    }
+}
+
+void TelemetryHub::subscribe(int index, const QVector<proto::ChannelRef>& channels, int rateHz, int wantedHz, int attempt,
+                             Limit limit, int statedHz)
+{
+    Instrument* in = instrument(index);
+    if (!in || !in->client)
+        return;
+    in->subscribeInFlight = true;
+    QPointer<TelemetryHub> self(this);
+    in->client->subscribe(channels, rateHz, [self, index, channels, rateHz, wantedHz, attempt, limit, statedHz](
+                                                const std::optional<dev::RequestError>& err, const proto::SubscribeReply& reply) {
+        if (!self)
+            return;
+        Instrument* i = self->instrument(index);
+        if (!i)
+            return;
+        i->subscribeInFlight = false;
+        auto reapply = [&] {
+            if (i->reapplyAfterReply) {
+                i->reapplyAfterReply = false;
+                self->scheduleApply();
+            }
+        };
+        if (err) {
+            const bool overCapacity = err->kind == dev::RequestError::Kind::Device
+                && (err->code == proto::ErrorCode::OverCapacity || err->code == proto::ErrorCode::OutOfRange);
+            const int stated = static_cast<int>(err->value);
+            if (overCapacity && stated > 0 && attempt < kMaxFallbacks && i->client) {
+                // The device states the fastest rate it carries, floored to whole Hz.
+                // Its sample clock divides into whole ticks and serves a request with
+                // the next rate not faster than asked: asking for the floored number
+                // itself would get one tick slower (588 Hz = 10 kHz / 17 is stated;
+                // asking 588 gets 10 kHz / 18 = 556 Hz). So first ask for just above
+                // the tick rate that was meant (589 Hz), and if that is refused, the
+                // stated number as it is, then lower.
+                const auto clock = static_cast<int>(i->client->identity().maxTelemetryRateHz);
+                int next = stated;
+                if (attempt == 0 && clock >= stated) {
+                    const int ticks = clock / stated;
+                    next = (clock + ticks - 1) / ticks;
+                }
+                if (next >= rateHz)
+                    next = attempt == 0 ? stated : rateHz - 1;
+                next = std::max(1, std::min(next, rateHz - 1));
+                self->subscribe(index, channels, next, wantedHz, attempt + 1,
+                                err->code == proto::ErrorCode::OverCapacity ? Limit::Link : Limit::SampleClock, stated);
+                return;
+            }
+            if (err->kind != dev::RequestError::Kind::LinkDown)
+                emit self->problem(tr("%1 telemetry not subscribed: %2").arg(i->name, err->message));
+            // Left as is until the wants change or the link comes back.
+            reapply();
+            return;
+        }
+        i->subscribed = reply.rateHz ? channels : QVector<proto::ChannelRef>{};
+        i->subscribedRateHz = static_cast<int>(reply.rateHz);
+        i->haveSampleIndex = false;  // a new subscription restarts the device's sample counter
+        QString note;
+        const int got = static_cast<int>(reply.rateHz);
+        if (got > 0 && got < wantedHz) {
+            if (limit == Limit::Link)
+                note = tr("rate limited to %1 Hz by the %2-baud link (it carries at most %3 Hz with %4 channels)")
+                           .arg(got)
+                           .arg(i->client ? i->client->identity().linkBaud : 0)
+                           .arg(statedHz)
+                           .arg(channels.size());
+            else if (limit == Limit::SampleClock)
+                note = tr("rate limited to %1 Hz by the device's %2 Hz sample clock").arg(got).arg(statedHz);
+        }
+        if (got > 0 && note.isEmpty() && got != wantedHz)
+            note = tr("the device streams at %1 Hz, the nearest its sample clock makes").arg(got);
+        emit self->subscriptionChanged(index, got, note);
+        reapply();
+    });
+}
+
+void TelemetryHub::onStateChanged(int index, dev::LinkState state)
+{
+    Instrument* in = instrument(index);
+    if (!in)
+        return;
+    in->haveSampleIndex = false;
+    in->desired.clear();
+    in->desiredRateHz = -1;  // the device forgot: apply again on Ready
+    const bool wasStreaming = in->subscribedRateHz > 0;
+    in->subscribed.clear();
+    in->subscribedRateHz = 0;
+    if (state == dev::LinkState::Ready)
+        scheduleApply();
+    else if (wasStreaming)
+        emit subscriptionChanged(index, 0, dev::linkStateName(state));
+}
+
+void TelemetryHub::dropUnwantedStores(int index)
+{
+    Instrument* in = instrument(index);
+    if (!in)
+        return;
+    for (auto it = in->stores.begin(); it != in->stores.end();) {
+        if (std::find(in->collected.begin(), in->collected.end(), it->first) == in->collected.end())
+            it = in->stores.erase(it);
+        else
+            ++it;
+    }
+}
+
+} // namespace tele
