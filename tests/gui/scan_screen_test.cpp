@@ -7,9 +7,9 @@
 #include "device/jobs/scan_runner.h"
 #include "device/link/simulated_link.h"
 #include "gui_wait.h"
-#include "widgets/scan_plan_form.h"
-#include "widgets/scan_screen.h"
-#include "widgets/scan_stage_map.h"
+#include "widgets/scan/scan_plan_form.h"
+#include "widgets/scan/scan_screen.h"
+#include "widgets/scan/scan_stage_map.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

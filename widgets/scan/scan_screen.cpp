@@ -1,10 +1,10 @@
-#include "widgets/scan_screen.h"
+#include "widgets/scan/scan_screen.h"
 
 #include "device/files/scan_exports.h"
 #include "device/files/scan_plan_file.h"
 #include "device/jobs/scan_runner.h"
-#include "widgets/scan_plan_form.h"
-#include "widgets/scan_stage_map.h"
+#include "widgets/scan/scan_plan_form.h"
+#include "widgets/scan/scan_stage_map.h"
 
 #include <QDir>
 #include <QFileInfo>
