@@ -112,8 +112,11 @@ void ScanRunner::setState(State s)
     emit stateChanged(s);
 }
 
-bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& folder, bool restart, QString* error)
+bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& folder, bool restart, QString* error, Refusal* why)
 {
+    Refusal unused;
+    Refusal& reason = why ? *why : unused;
+    reason = Refusal::Other;  // every early return below is "something else"
     if (isActive()) {
         *error = tr("A scan is running: stop it before preparing another.");
         return false;
@@ -173,6 +176,7 @@ bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& fold
                     return false;
             }
         } else if (!restart) {
+            reason = Refusal::OtherScansLog;
             *error = tr("This folder holds the run log of a different scan (%1 of %2 tiles taken). Choose another folder, "
                         "or start over to keep that log aside and begin a new one.")
                          .arg(log.log->records.size())
@@ -192,6 +196,7 @@ bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& fold
         return false;
     m_estimate = motion::scan::estimateScan(m_plan, m_layout, stageModelOf(m_client->identity(), m_client->softLimits()));
     m_prepared = true;
+    reason = Refusal::None;
     setState(m_takenCount == totalTiles() ? State::Finished : State::Idle);
     emit progress(m_takenCount, totalTiles(), etaS());
     return true;

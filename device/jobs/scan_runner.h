@@ -43,10 +43,19 @@ public:
     /// planner (HELLO does not carry them).
     static motion::scan::StageModel stageModelOf(const dev::DeviceIdentity& identity, const QVector<dev::SoftLimits>& limits);
 
+    /// Why prepare() said no, for callers that offer a way out: they branch on
+    /// this, never on the (translated) message.
+    enum class Refusal {
+        None,
+        OtherScansLog,  ///< the folder holds the run log of another plan: `restart` keeps it aside and begins anew
+        Other,          ///< anything else (a bad plan, a folder that cannot be made or read, a running scan)
+    };
+
     /// Takes the plan and the folder its run log and exports go to. A run log there
     /// of the same tiles is continued; one of other tiles is refused unless
     /// `restart`, which keeps it under another name and starts afresh.
-    bool prepare(const motion::scan::ScanPlan& plan, const QString& folder, bool restart, QString* error);
+    bool prepare(const motion::scan::ScanPlan& plan, const QString& folder, bool restart, QString* error,
+                 Refusal* why = nullptr);
 
     /// What keeps the prepared run from starting now, one sentence each; empty = ready.
     QStringList preflight() const;

@@ -261,7 +261,9 @@ TEST(ScanRun, AnotherPlansLogIsNeverOverwritten)
     ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error.toStdString();
     ScanPlan other = smallPlan();
     other.overlapX = 0.3;
-    EXPECT_FALSE(r->prepare(other, s.dir.path(), false, &error));
+    ScanRunner::Refusal why = ScanRunner::Refusal::None;
+    EXPECT_FALSE(r->prepare(other, s.dir.path(), false, &error, &why));
+    EXPECT_EQ(why, ScanRunner::Refusal::OtherScansLog) << "what the GUI and the CLI offer a restart on";
     EXPECT_TRUE(error.contains(QStringLiteral("different scan"))) << error.toStdString();
     ASSERT_TRUE(r->prepare(other, s.dir.path(), true, &error)) << error.toStdString();
     const QStringList logs = QDir(s.dir.path()).entryList({QStringLiteral("scan-run*.jsonl")});
