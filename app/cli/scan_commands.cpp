@@ -270,8 +270,9 @@ int scanRun(Invocation& inv)
             return inv.refused(tr("homing did not finish"));
     }
     ScanRunner runner(client);
-    if (!runner.prepare(plan, folder, inv.isSet(QStringLiteral("restart")), &error))
-        return error.contains(QLatin1String("different scan")) ? inv.usage(error + tr(" (--restart starts over)")) : inv.refused(error);
+    ScanRunner::Refusal why = ScanRunner::Refusal::None;
+    if (!runner.prepare(plan, folder, inv.isSet(QStringLiteral("restart")), &error, &why))
+        return why == ScanRunner::Refusal::OtherScansLog ? inv.usage(error + tr(" (--restart starts over)")) : inv.refused(error);
     QTextStream& out = inv.out();
     if (runner.state() == ScanRunner::State::Finished) {
         QStringList written;

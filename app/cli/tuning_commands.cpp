@@ -9,6 +9,7 @@
 #include "device/jobs/tuning/instrument_target.h"
 #include "device/jobs/tuning/model_target.h"
 #include "device/jobs/tuning/tuning_runner.h"
+#include "device/jobs/tuning/tuning_words.h"
 #include "device/link/simulated_link.h"
 #include "motion/control/tuning/tuning_rules.h"
 
@@ -258,7 +259,7 @@ int tune(Invocation& inv)
         if (r.verification)
             inv.out() << tr("  verified with %1: overshoot %2 %, %3\n")
                              .arg(QString::fromStdString(r.verification->rule), num(r.verification->metrics.overshootPct),
-                                  QString::fromStdString(r.verification->outcome));
+                                  dev::outcomeText(r.verification->outcome));
     }
     inv.out().flush();
     return Ok;
@@ -342,7 +343,7 @@ int stepTest(Invocation& inv)
     } else {
         const QString u = t.target->unit();
         inv.out() << t.target->describe() << tr(": step %1 %2 with ").arg(num(size), u) << describeGains(s.gains, T) << " — "
-                  << QString::fromLatin1(endReasonName(record.reason)) << "\n"
+                  << dev::endReasonText(record.reason) << "\n"
                   << tr("  rise 10–90 %: %1 s, overshoot %2 %, settling (2 %): %3 s\n").arg(num(m.riseTimeS), num(m.overshootPct), num(m.settlingTimeS))
                   << tr("  steady-state error %1 %4, IAE %2 %4·s, ISE %3 %4²·s, peak output %5 %4\n")
                          .arg(num(m.steadyStateError), num(m.iae), num(m.ise), u, num(m.peakOutput));

@@ -13,7 +13,7 @@
 #include "widgets/patterns/pattern_screen.h"
 #include "widgets/profiles_screen.h"
 #include "widgets/tuning/tuning_screen.h"
-#include "widgets/scan_screen.h"
+#include "widgets/scan/scan_screen.h"
 
 #include <QCloseEvent>
 #include <QDockWidget>

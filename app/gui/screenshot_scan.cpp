@@ -6,8 +6,8 @@
 #include "instrument_session.h"
 #include "main_window.h"
 #include "device/jobs/scan_runner.h"
-#include "widgets/scan_screen.h"
-#include "widgets/scan_stage_map.h"
+#include "widgets/scan/scan_screen.h"
+#include "widgets/scan/scan_stage_map.h"
 
 #include <QDir>
 #include <QElapsedTimer>

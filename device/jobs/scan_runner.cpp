@@ -112,8 +112,11 @@ void ScanRunner::setState(State s)
     emit stateChanged(s);
 }
 
-bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& folder, bool restart, QString* error)
+bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& folder, bool restart, QString* error, Refusal* why)
 {
+    Refusal unused;
+    Refusal& reason = why ? *why : unused;
+    reason = Refusal::Other;  // every early return below is "something else"
     if (isActive()) {
         *error = tr("A scan is running: stop it before preparing another.");
         return false;
@@ -173,6 +176,7 @@ bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& fold
                     return false;
             }
         } else if (!restart) {
+            reason = Refusal::OtherScansLog;
             *error = tr("This folder holds the run log of a different scan (%1 of %2 tiles taken). Choose another folder, "
                         "or start over to keep that log aside and begin a new one.")
                          .arg(log.log->records.size())
@@ -192,6 +196,7 @@ bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& fold
         return false;
     m_estimate = motion::scan::estimateScan(m_plan, m_layout, stageModelOf(m_client->identity(), m_client->softLimits()));
     m_prepared = true;
+    reason = Refusal::None;
     setState(m_takenCount == totalTiles() ? State::Finished : State::Idle);
     emit progress(m_takenCount, totalTiles(), etaS());
     return true;
@@ -268,14 +273,10 @@ bool ScanRunner::start(QString* error)
         if (!limits.contains(*m_extraApproach))
             m_extraApproach.reset();  // at the edge of travel: the direct move is the best there is
     }
-    m_session.start();
     m_sessionFirstTaken = m_takenCount;
-    int lastTaken = -1;
-    for (int t = 0; t < totalTiles(); ++t)
-        if (m_taken[static_cast<std::size_t>(t)])
-            lastTaken = t;
+    m_sessionFirstTile = -1;
     // The estimate starts at the first tile; this session starts wherever the stage
-    // stands, so the move there counts towards the time left and the pace.
+    // stands, so the move there counts towards the time left.
     const auto& st = m_client->status();
     const Point2 from = st.axes.size() >= 2 ? Point2{st.axes[0].commanded, st.axes[1].commanded} : Point2{};
     const Point2 firstTarget = m_extraApproach ? *m_extraApproach
@@ -284,7 +285,6 @@ bool ScanRunner::start(QString* error)
     if (m_extraApproach && m_pathIndex < static_cast<int>(m_layout.path.size()))
         m_leadInS += motion::scan::moveTimeS(*m_extraApproach, commanded(m_pathIndex), m_plan.speedMmS,
                                              stageModelOf(m_client->identity(), m_client->softLimits()));
-    m_sessionEstimateFromS = (lastTaken >= 0 ? m_estimate.tileDoneS[static_cast<std::size_t>(lastTaken)] : 0.0) - m_leadInS;
     setState(State::Running);
     nextWaypoint();
     return true;
@@ -327,12 +327,16 @@ double ScanRunner::etaS() const
     double remaining = m_estimate.totalS - (lastTaken >= 0 ? m_estimate.tileDoneS[static_cast<std::size_t>(lastTaken)] : 0.0);
     if (isActive() && m_takenCount == m_sessionFirstTaken)
         remaining += m_leadInS;  // still on the way to the first tile of this session
-    // Once a few tiles of this session are done, the run's own pace corrects the estimate.
-    if (isActive() && m_takenCount - m_sessionFirstTaken >= 3 && lastTaken >= 0) {
-        const double estimated = m_estimate.tileDoneS[static_cast<std::size_t>(lastTaken)] - m_sessionEstimateFromS;
-        const double actual = static_cast<double>(m_session.elapsed()) * 1e-3;
-        if (estimated > 0.5)
-            return remaining * std::clamp(actual / estimated, 0.2, 5.0);
+    // Once a few tiles of this session are taken, the run's own pace corrects the
+    // estimate: trigger to trigger on the device's clock against the estimate for
+    // the same stretch. The exposures at both ends cancel out, and neither a busy
+    // host nor a simulator on a sped-up or stepped clock skews it.
+    if (isActive() && m_sessionFirstTile >= 0 && lastTaken > m_sessionFirstTile && m_takenCount - m_sessionFirstTaken >= 3) {
+        const auto first = static_cast<std::size_t>(m_sessionFirstTile), last = static_cast<std::size_t>(lastTaken);
+        const double estimated = m_estimate.tileDoneS[last] - m_estimate.tileDoneS[first];
+        const quint64 fromUs = m_records[first].deviceTimeUs, toUs = m_records[last].deviceTimeUs;
+        if (estimated > 0.5 && toUs > fromUs)
+            return remaining * std::clamp(static_cast<double>(toUs - fromUs) * 1e-6 / estimated, 0.2, 5.0);
     }
     return remaining;
 }
@@ -506,6 +510,8 @@ void ScanRunner::onExposureEnd()
         m_taken[static_cast<std::size_t>(tile)] = 1;
         ++m_takenCount;
     }
+    if (m_sessionFirstTile < 0)
+        m_sessionFirstTile = tile;
     m_phase = Phase::None;
     ++m_pathIndex;
     emit tileTaken(tile);

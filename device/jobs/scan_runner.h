@@ -13,7 +13,6 @@
 #include "motion/plans/scan/scan_estimate.h"
 #include "motion/records/position_record.h"
 
-#include <QElapsedTimer>
 #include <QFile>
 #include <QObject>
 #include <QTimer>
@@ -43,10 +42,19 @@ public:
     /// planner (HELLO does not carry them).
     static motion::scan::StageModel stageModelOf(const dev::DeviceIdentity& identity, const QVector<dev::SoftLimits>& limits);
 
+    /// Why prepare() said no, for callers that offer a way out: they branch on
+    /// this, never on the (translated) message.
+    enum class Refusal {
+        None,
+        OtherScansLog,  ///< the folder holds the run log of another plan: `restart` keeps it aside and begins anew
+        Other,          ///< anything else (a bad plan, a folder that cannot be made or read, a running scan)
+    };
+
     /// Takes the plan and the folder its run log and exports go to. A run log there
     /// of the same tiles is continued; one of other tiles is refused unless
     /// `restart`, which keeps it under another name and starts afresh.
-    bool prepare(const motion::scan::ScanPlan& plan, const QString& folder, bool restart, QString* error);
+    bool prepare(const motion::scan::ScanPlan& plan, const QString& folder, bool restart, QString* error,
+                 Refusal* why = nullptr);
 
     /// What keeps the prepared run from starting now, one sentence each; empty = ready.
     QStringList preflight() const;
@@ -67,7 +75,8 @@ public:
     bool isTaken(int tile) const { return tile >= 0 && tile < totalTiles() && m_taken[static_cast<std::size_t>(tile)]; }
     /// The tile being worked on (moving, settling, exposing), or −1.
     int currentTile() const;
-    /// Seconds left: the estimate for the tiles not taken, scaled by how this run has kept to it.
+    /// Seconds left: the estimate for the tiles not taken, scaled by how this run has
+    /// kept to it on the device's clock.
     double etaS() const;
     QString folder() const { return m_folder; }
     QString logPath() const;
@@ -126,9 +135,8 @@ private:
     quint64 m_triggerUs = 0;
     double m_lastOffUm[2] = {0, 0};      ///< how far from the target the last status read, for messages
     QTimer m_exposure, m_settleTimeout;
-    QElapsedTimer m_session;             ///< wall time since this start or resume
-    int m_sessionFirstTaken = 0;
-    double m_sessionEstimateFromS = 0;   ///< the estimate's clock when this session began, less the lead-in
+    int m_sessionFirstTaken = 0;         ///< tiles taken when this start or resume began
+    int m_sessionFirstTile = -1;         ///< the first tile this session took, or −1
     double m_leadInS = 0;                ///< estimated move from where the stage stood to the session's first waypoint
     QList<QMetaObject::Connection> m_clientConnections;
 };

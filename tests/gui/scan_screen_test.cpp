@@ -7,11 +7,13 @@
 #include "device/jobs/scan_runner.h"
 #include "device/link/simulated_link.h"
 #include "gui_wait.h"
-#include "widgets/scan_plan_form.h"
-#include "widgets/scan_screen.h"
-#include "widgets/scan_stage_map.h"
+#include "../device/pseudo_translation.h"
+#include "widgets/scan/scan_plan_form.h"
+#include "widgets/scan/scan_screen.h"
+#include "widgets/scan/scan_stage_map.h"
 
 #include <QComboBox>
+#include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QLabel>
@@ -199,6 +201,50 @@ TEST_F(ScanScreenTest, RunsOnTheStageWithProgressAndExports)
     for (const char* f : {scanfile::kTileConfigFile, scanfile::kPositionsFile, scanfile::kCsvFile})
         EXPECT_TRUE(QFile::exists(QDir(dir.path()).filePath(QLatin1String(f)))) << f;
     EXPECT_TRUE(screen->form()->isEnabled());
+}
+
+TEST_F(ScanScreenTest, AnotherPlansRunLogOffersAFreshStartInAnyLanguage)
+{
+    QTemporaryDir dir;
+    ScanPlan p;
+    p.region.cornerA = {1, 1};
+    p.region.cornerB = {3, 3};
+    p.camera.source = FieldSource::Direct;
+    p.camera.fieldWidthMm = p.camera.fieldHeightMm = 1;
+    screen->setPlan(p);
+    screen->setOutputFolder(dir.path());
+    QStringList asked, problems;
+    bool answer = false;
+    screen->setConfirm([&](const QString& q) {
+        asked << q;
+        return answer;
+    });
+    QObject::connect(screen, &ui::ScanScreen::problem, [&](const QString& m) { problems << m; });
+    EXPECT_FALSE(screen->run()) << "the stage is not homed; the run log of this plan is in the folder now";
+    EXPECT_TRUE(asked.isEmpty());
+    auto logs = [&] { return QDir(dir.path()).entryList({QStringLiteral("scan-run*.jsonl")}).size(); };
+    ASSERT_EQ(logs(), 1);
+
+    // Another plan, same folder, the runner's messages translated.
+    const i18ntest::PseudoTranslation translated({QStringLiteral("jobs::ScanRunner")});
+    p.overlapX = 0.3;
+    screen->setPlan(p);
+    settle();
+    problems.clear();
+    EXPECT_FALSE(screen->run());
+    ASSERT_EQ(asked.size(), 1) << "a fresh start is offered: " << problems.join(QLatin1Char(' ')).toStdString();
+    EXPECT_TRUE(asked[0].contains(QStringLiteral("Start this scan anew"))) << asked[0].toStdString();
+    EXPECT_TRUE(asked[0].contains(QStringLiteral("dífférént scán"))) << "with the translated reason: " << asked[0].toStdString();
+    ASSERT_FALSE(problems.isEmpty()) << "declined: the reason is shown";
+    EXPECT_EQ(logs(), 1) << "declined: the other plan's log is left alone";
+
+    answer = true;
+    problems.clear();
+    EXPECT_FALSE(screen->run()) << "accepted, then held back by the unhomed stage";
+    EXPECT_EQ(asked.size(), 2);
+    EXPECT_EQ(logs(), 2) << "the old log is kept under another name";
+    ASSERT_FALSE(problems.isEmpty());
+    EXPECT_TRUE(problems.last().contains(QStringLiteral("cannot start"))) << problems.last().toStdString();
 }
 
 TEST_F(ScanScreenTest, EscapeOnTheMapIsStillTheEStop)

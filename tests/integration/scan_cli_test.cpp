@@ -10,8 +10,10 @@
 #include "pty_simulator.h"
 
 #include "../device/scan_format_readers.h"
+#include "../device/pseudo_translation.h"
 
 #include <QDir>
+#include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
@@ -149,6 +151,34 @@ TEST(ScanCli, RunRefusesTheAnalyzerAndAnUnhomedStage)
     EXPECT_TRUE(unhomed.err.contains(QStringLiteral("Home the stage first"))) << unhomed.err.toStdString();
     const CliOutput missing = scanCli(QStringLiteral("--sim stage scan run %1").arg(dir.filePath(QStringLiteral("none.scan.json"))));
     EXPECT_EQ(missing.code, 1);
+}
+
+TEST(ScanCli, AnotherPlansRunLogAsksForRestartInAnyLanguage)
+{
+    QTemporaryDir dir;
+    const QString planA = dir.filePath(QStringLiteral("a.scan.json")), planB = dir.filePath(QStringLiteral("b.scan.json"));
+    const QString out = dir.filePath(QStringLiteral("out"));
+    QString error;
+    const CliOutput a = scanCli(QStringLiteral("scan plan --roi 40,60,42,62 --fov 1,1"));
+    const CliOutput b = scanCli(QStringLiteral("scan plan --roi 40,60,42,62 --fov 1,1 --overlap 0.3"));
+    ASSERT_EQ(a.code, 0);
+    ASSERT_EQ(b.code, 0);
+    ASSERT_TRUE(files::writeAtomically(planA, a.out.toStdString(), &error));
+    ASSERT_TRUE(files::writeAtomically(planB, b.out.toStdString(), &error));
+    // Plan A's run log goes into the folder (the unhomed stage then refuses to move).
+    EXPECT_EQ(scanCli(QStringLiteral("--sim stage scan run %1 --out %2").arg(planA, out)).code, 2);
+    ASSERT_TRUE(QFile::exists(QDir(out).filePath(QLatin1String(scanfile::kRunLogFile))));
+
+    // The runner's messages translated: the hint must not depend on their English words.
+    const i18ntest::PseudoTranslation translated({QStringLiteral("jobs::ScanRunner")});
+    const CliOutput other = scanCli(QStringLiteral("--sim stage scan run %1 --out %2").arg(planB, out));
+    EXPECT_EQ(other.code, 1) << "a usage problem: the command line decides";
+    EXPECT_TRUE(other.err.contains(QStringLiteral("--restart starts over"))) << other.err.toStdString();
+    EXPECT_TRUE(other.err.contains(QStringLiteral("dífférént scán"))) << "the translated reason is shown: " << other.err.toStdString();
+    const CliOutput restart = scanCli(QStringLiteral("--sim stage scan run %1 --out %2 --restart").arg(planB, out));
+    EXPECT_EQ(restart.code, 2) << "past the run log, stopped by the unhomed stage: " << restart.err.toStdString();
+    EXPECT_FALSE(restart.err.contains(QStringLiteral("--restart"))) << restart.err.toStdString();
+    EXPECT_EQ(QDir(out).entryList({QStringLiteral("scan-run*.jsonl")}).size(), 2) << "plan A's log is kept aside";
 }
 
 TEST(ScanCli, RunWritesTheExportsWithMeasuredPositionsAndContinuesAfterACrash)

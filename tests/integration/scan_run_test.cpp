@@ -252,6 +252,63 @@ TEST(ScanRun, ARunLogOutlivesTheProgram)
     EXPECT_EQ(logLines(second->logPath()), 9);
 }
 
+TEST(ScanRun, TimeLeftFallsTileByTileAndKeepsToThePlansEstimate)
+{
+    StageScan s;
+    ASSERT_TRUE(s.ready()) << s.session.linkErrors.join(QLatin1Char(' ')).toStdString();
+    auto r = s.runner();
+    QString error;
+    ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error.toStdString();
+    EXPECT_DOUBLE_EQ(r->etaS(), r->estimate().totalS) << "before the start: the whole plan";
+    // The device's clock is stepped by hand: 10 ms a step while the stage moves and
+    // settles, exactly the exposure while the (host-timed) exposure runs. Device
+    // time then follows the run, however slowly this machine gets through it.
+    auto& host = s.session.link.host();
+    host.setManualClock(true);
+    bool exposing = false;
+    double owedS = 0;
+    QObject::connect(r.get(), &ScanRunner::triggered, [&](int, quint64) {
+        exposing = true;
+        owedS += smallPlan().exposureS;
+    });
+    struct Seen {
+        int tile;
+        double etaS, planLeftS;
+    };
+    std::vector<Seen> seen;
+    QObject::connect(r.get(), &ScanRunner::tileTaken, [&](int tile) {
+        exposing = false;
+        seen.push_back({tile, r->etaS(), r->estimate().totalS - r->estimate().tileDoneS[static_cast<std::size_t>(tile)]});
+    });
+    ASSERT_TRUE(r->start(&error)) << error.toStdString();
+    const double withLeadIn = r->etaS();
+    EXPECT_GT(withLeadIn, r->estimate().totalS) << "the move to the first tile counts too";
+    ASSERT_TRUE(waitFor(
+        [&] {
+            if (owedS > 0) {
+                host.advance(owedS);
+                owedS = 0;
+            } else if (!exposing) {
+                host.advance(0.01);
+            }
+            return r->state() == ScanRunner::State::Finished || r->state() == ScanRunner::State::Stopped;
+        },
+        60000));
+    ASSERT_EQ(r->state(), ScanRunner::State::Finished);
+    ASSERT_EQ(seen.size(), 9u);
+    double before = withLeadIn;
+    for (const Seen& t : seen) {
+        EXPECT_LT(t.etaS, before) << "tile " << t.tile << ": the time left falls with every tile taken";
+        before = t.etaS;
+    }
+    EXPECT_DOUBLE_EQ(seen.back().etaS, 0.0);
+    // Mid-run, with the pace of this run applied (three tiles and more), the time
+    // left stays near the plan's estimate for the tiles not yet taken.
+    for (std::size_t k = 3; k + 1 < seen.size(); ++k)
+        EXPECT_NEAR(seen[k].etaS, seen[k].planLeftS, 0.15 * seen[k].planLeftS)
+            << "after tile " << seen[k].tile << " (plan: " << seen[k].planLeftS << " s)";
+}
+
 TEST(ScanRun, AnotherPlansLogIsNeverOverwritten)
 {
     StageScan s;
@@ -261,7 +318,9 @@ TEST(ScanRun, AnotherPlansLogIsNeverOverwritten)
     ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error.toStdString();
     ScanPlan other = smallPlan();
     other.overlapX = 0.3;
-    EXPECT_FALSE(r->prepare(other, s.dir.path(), false, &error));
+    ScanRunner::Refusal why = ScanRunner::Refusal::None;
+    EXPECT_FALSE(r->prepare(other, s.dir.path(), false, &error, &why));
+    EXPECT_EQ(why, ScanRunner::Refusal::OtherScansLog) << "what the GUI and the CLI offer a restart on";
     EXPECT_TRUE(error.contains(QStringLiteral("different scan"))) << error.toStdString();
     ASSERT_TRUE(r->prepare(other, s.dir.path(), true, &error)) << error.toStdString();
     const QStringList logs = QDir(s.dir.path()).entryList({QStringLiteral("scan-run*.jsonl")});

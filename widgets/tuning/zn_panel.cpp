@@ -1,5 +1,6 @@
 #include "widgets/tuning/zn_panel.h"
 
+#include "device/jobs/tuning/tuning_words.h"
 #include "motion/control/tuning/tuning_rules.h"
 #include "widgets/tuning/gains_panel.h"
 #include "widgets/tuning/response_plot.h"
@@ -30,6 +31,13 @@ namespace {
     QT_TRANSLATE_NOOP("ui::ZnPanel", "Ziegler–Nichols PID"),      QT_TRANSLATE_NOOP("ui::ZnPanel", "Tyreus–Luyben PI"),
     QT_TRANSLATE_NOOP("ui::ZnPanel", "Tyreus–Luyben PID"),        QT_TRANSLATE_NOOP("ui::ZnPanel", "Pessen integral rule PID"),
     QT_TRANSLATE_NOOP("ui::ZnPanel", "Z-N \"some overshoot\" PID"), QT_TRANSLATE_NOOP("ui::ZnPanel", "Z-N \"no overshoot\" PID"),
+};
+// And where each comes from (motion::control::tuningRules(), in the same order).
+[[maybe_unused]] const char* const kRuleSources[] = {
+    QT_TRANSLATE_NOOP("ui::ZnPanel", "seed 002 Table 1 (Ziegler & Nichols 1942)"),
+    QT_TRANSLATE_NOOP("ui::ZnPanel", "Tyreus & Luyben 1992, Ind. Eng. Chem. Res. 31:2625"),
+    QT_TRANSLATE_NOOP("ui::ZnPanel", "Pessen 1994, J. Dyn. Syst. Meas. Control 116:553"),
+    QT_TRANSLATE_NOOP("ui::ZnPanel", "Z-N variant as tabulated by Microstar Laboratories"),
 };
 QString num(double v) { return QString::number(v, 'g', 4); }
 QString period(double s) { return s < 1 ? ZnPanel::tr("%1 ms").arg(num(s * 1000)) : ZnPanel::tr("%1 s").arg(num(s)); }
@@ -242,8 +250,9 @@ void ZnPanel::showResult(const motion::control::TuningResult& r)
                          r.refined ? tr("refined above from the measured phase crossover") : tr("not refined"));
     if (r.verification) {
         const auto& v = *r.verification;
+        const auto* rule = motion::control::findRule(v.rule);
         text += tr("<br>Verification with %1: overshoot %2 %, %3")
-                    .arg(QString::fromStdString(v.rule), num(v.metrics.overshootPct), QString::fromStdString(v.outcome));
+                    .arg(rule ? tr(rule->name) : QString::fromStdString(v.rule), num(v.metrics.overshootPct), dev::outcomeText(v.outcome));
         if (r.unit == "mm")
             text += v.settledInside5umS >= 0 ? tr(", inside seed 002's ±5 µm from %1 ms").arg(num(v.settledInside5umS * 1000))
                                              : tr(", <b>never inside ±5 µm</b>");
@@ -256,7 +265,7 @@ void ZnPanel::showResult(const motion::control::TuningResult& r)
         const int row = m_rules->rowCount();
         m_rules->insertRow(row);
         const QString cells[8] = {tr(rule.name), num(c.kp), num(c.kiPerS), num(c.kdS), num(d.kp), num(d.ki), num(d.kd),
-                                  QString::fromLatin1(rule.source)};
+                                  tr(rule.source)};
         for (int col = 0; col < 8; ++col)
             m_rules->setItem(row, col, new QTableWidgetItem(cells[col]));
         auto* use = new QPushButton(tr("Use these"), m_rules);

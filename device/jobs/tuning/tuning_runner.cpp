@@ -1,5 +1,6 @@
 #include "device/jobs/tuning/tuning_runner.h"
 
+#include "device/jobs/tuning/tuning_words.h"
 #include "motion/control/tuning/tuning_rules.h"
 
 #include <QDateTime>
@@ -320,8 +321,8 @@ void TuningRunner::onRun(const RunOutcome& out, int kind, const QString& label)
         emit progress(1, m_verifying ? tr("verified") : tr("step test done"));
         emit finished(true, m_verifying ? tr("Ku = %1, Tu = %2 s; verification step test with %3 gains: %4")
                                               .arg(num(m_result.ku), num(m_result.tuS), QString::fromStdString(m_options.verifyRule),
-                                                   QString::fromLatin1(endReasonName(out.record.reason)))
-                                        : tr("%1: %2").arg(label, QString::fromLatin1(endReasonName(out.record.reason))));
+                                                   endReasonText(out.record.reason))
+                                        : tr("%1: %2").arg(label, endReasonText(out.record.reason)));
         return;
     }
     if (m_abortRequested) {

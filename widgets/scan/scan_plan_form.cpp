@@ -1,4 +1,4 @@
-#include "widgets/scan_plan_form.h"
+#include "widgets/scan/scan_plan_form.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -1,4 +1,4 @@
-#include "widgets/scan_stage_map.h"
+#include "widgets/scan/scan_stage_map.h"
 
 #include <QKeyEvent>
 #include <QMouseEvent>

@@ -1,10 +1,10 @@
-#include "widgets/scan_screen.h"
+#include "widgets/scan/scan_screen.h"
 
 #include "device/files/scan_exports.h"
 #include "device/files/scan_plan_file.h"
 #include "device/jobs/scan_runner.h"
-#include "widgets/scan_plan_form.h"
-#include "widgets/scan_stage_map.h"
+#include "widgets/scan/scan_plan_form.h"
+#include "widgets/scan/scan_stage_map.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -422,8 +422,9 @@ bool ScanScreen::run()
     const bool sameRun = m_preparedFingerprint == fingerprint && m_preparedFolder == folder && m_runner->totalTiles() > 0;
     if (!sameRun || m_runner->state() == ScanRunner::State::Finished) {
         QString error;
-        if (!m_runner->prepare(p, folder, false, &error)) {
-            if (!error.contains(QLatin1String("different scan"))
+        ScanRunner::Refusal why = ScanRunner::Refusal::None;
+        if (!m_runner->prepare(p, folder, false, &error, &why)) {
+            if (why != ScanRunner::Refusal::OtherScansLog
                 || !confirm(tr("%1\n\nStart this scan anew in that folder? The old run log is kept under another name.").arg(error))) {
                 emit problem(error);
                 return false;

@@ -1,0 +1,59 @@
+// What the tuning screens show from motion/'s plain keys (how a run ended, a
+// trial's outcome, where a rule comes from) reaches the person translated: with
+// a stand-in translation installed, none of it is left in English.
+#include "device/jobs/tuning/tuning_words.h"
+#include "motion/control/tuning/tuning_result.h"
+#include "motion/control/tuning/tuning_rules.h"
+#include "widgets/tuning/zn_panel.h"
+
+#include "../device/pseudo_translation.h"
+
+#include <QTableWidget>
+
+#include <gtest/gtest.h>
+
+using motion::control::EndReason;
+using motion::control::TuningResult;
+
+TEST(TuningTranslation, OutcomesAndEndReasonsAreTranslatedByKey)
+{
+    const i18ntest::PseudoTranslation translated({QStringLiteral("dev::TuningWords")});
+    EXPECT_EQ(dev::outcomeText("decays"), QStringLiteral("décáys"));
+    EXPECT_EQ(dev::outcomeText("sustained"), QStringLiteral("sústáínéd"));
+    EXPECT_EQ(dev::outcomeText("hit the envelope"), QStringLiteral("hít thé énvélópé"));
+    EXPECT_EQ(dev::endReasonText(EndReason::Excursion), QStringLiteral("máx éxcúrsíón crósséd"));
+    EXPECT_EQ(dev::outcomeText(motion::control::endReasonName(EndReason::Settled)), QStringLiteral("séttléd"))
+        << "a verification stores its end reason's name";
+}
+
+TEST(TuningTranslation, TheZnPanelShowsTheVerificationAndTheRuleSourcesTranslated)
+{
+    TuningResult r;
+    r.target = "Stage X";
+    r.method = "relay";
+    r.controlPeriodS = 0.001;
+    r.ku = 2;
+    r.tuS = 0.5;
+    r.runs = 3;
+    TuningResult::Verification v;
+    v.rule = "zn-pid";
+    v.outcome = motion::control::endReasonName(EndReason::Settled);
+    r.verification = v;
+
+    const i18ntest::PseudoTranslation translated({QStringLiteral("dev::TuningWords"), QStringLiteral("ui::ZnPanel")});
+    ui::ZnPanel panel;
+    panel.showResult(r);
+    const QString text = panel.resultText();
+    EXPECT_TRUE(text.contains(QStringLiteral("séttléd"))) << text.toStdString();
+    EXPECT_FALSE(text.contains(QStringLiteral("settled"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("Zíéglér–Níchóls PÍD"))) << "the rule by its (translated) name, not its id: " << text.toStdString();
+    QTableWidget* rules = panel.rulesTable();
+    const auto& all = motion::control::tuningRules();
+    ASSERT_EQ(rules->rowCount(), static_cast<int>(all.size()));
+    for (int row = 0; row < rules->rowCount(); ++row) {
+        const QString source = rules->item(row, 7)->text();
+        EXPECT_NE(source, QString::fromUtf8(all[static_cast<std::size_t>(row)].source)) << "row " << row << " is still in English";
+        EXPECT_FALSE(source.isEmpty());
+    }
+    EXPECT_EQ(rules->item(0, 7)->text(), QStringLiteral("sééd 002 Táblé 1 (Zíéglér & Níchóls 1942)"));
+}
