@@ -25,13 +25,6 @@ namespace {
 
 QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
 
-QCommandLineOption option(const char* name, const char* description, const char* valueName = nullptr)
-{
-    if (!valueName)
-        return QCommandLineOption(QString::fromLatin1(name), QCoreApplication::translate("cli", description));
-    return QCommandLineOption(QString::fromLatin1(name), QCoreApplication::translate("cli", description), QString::fromLatin1(valueName));
-}
-
 QList<QCommandLineOption> patternOptions()
 {
     return {option("shape", "line, rectangle, circle, arc, sine, cosine, spiral or raster", "SHAPE"),
