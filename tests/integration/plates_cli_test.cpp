@@ -239,3 +239,55 @@ TEST(PlateCli, AnInterruptedWellNeedsTheOperatorsWord)
     const QJsonObject p = lastJson(r.out).value(QStringLiteral("axes")).toObject().value(QStringLiteral("P")).toObject();
     EXPECT_NEAR(p.value(QStringLiteral("position")).toDouble(), p0 + 60.0, 1e-6) << "A2 once more in full, then A3 and A4";
 }
+
+TEST(PlateCli, OnTheInProcessSimulatorHomeThenRunDispensesEndToEnd)
+{
+    // Every --sim command starts a fresh simulator at real time, so the recipe
+    // is short: draw 30 µL, dispense 10 into three wells with a touch-off,
+    // wash. --home makes the fresh machine runnable.
+    QTemporaryDir dir;
+    const QString recipe = dir.filePath(QStringLiteral("short.recipe.json"));
+    QFile f(recipe);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write(R"({"schema": "benchpilot.recipe", "version": 1, "name": "short",
+  "plates": [{"name": "samples", "slot": "1", "labware": "sbs-96", "safe_z_mm": 55, "depth_z_mm": 70}],
+  "steps": [{"type": "aspirate", "wells": "A1", "volume_ul": 30},
+            {"type": "dispense", "wells": "B1:B3", "volume_ul": 10, "touch_off_mm": 1},
+            {"type": "wash", "station": "wash", "volume_ul": 20}]})");
+    f.close();
+    const QString log = dir.filePath(QStringLiteral("short.run.jsonl"));
+    const QStringList run{QStringLiteral("--sim"), QStringLiteral("analyzer"), QStringLiteral("--json"), QStringLiteral("recipe"), QStringLiteral("run"),
+                          recipe, QStringLiteral("--log"), log, QStringLiteral("--calibration=none")};
+
+    // Without --home a fresh simulator is refused before anything moves.
+    ProgramRun r = cli(run);
+    EXPECT_NE(r.exitCode, 0) << r.describe();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("home the analyzer first"))) << r.describe();
+    EXPECT_FALSE(QFileInfo::exists(log)) << "no log for a run that never began";
+
+    r = cli(run + QStringList{QStringLiteral("--home")}, 120000);
+    ASSERT_EQ(r.exitCode, 0) << r.describe();
+    const QJsonObject last = lastJson(r.out);
+    EXPECT_EQ(last.value(QStringLiteral("event")).toString(), QStringLiteral("finished")) << r.describe();
+    EXPECT_EQ(last.value(QStringLiteral("ops_done")).toInt(), 5);
+    QStringList dispensed;
+    for (const QString& line : r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
+        const QJsonObject o = QJsonDocument::fromJson(line.toUtf8()).object();
+        if (o.value(QStringLiteral("event")) == QStringLiteral("done") && o.value(QStringLiteral("kind")) == QStringLiteral("dispense"))
+            dispensed << o.value(QStringLiteral("well")).toString();
+    }
+    EXPECT_EQ(dispensed, (QStringList{QStringLiteral("B1"), QStringLiteral("B2"), QStringLiteral("B3")})) << r.describe();
+    const LogCounts c = countLog(log);
+    for (int i = 0; i < 5; ++i) {
+        EXPECT_EQ(c.dones.count(i) ? c.dones.at(i) : 0, 1) << "op " << i;
+        EXPECT_EQ(c.pumps.count(i) ? c.pumps.at(i) : 0, 1) << "op " << i;
+    }
+    EXPECT_EQ(c.finished, 1);
+    // The log's plunger: 30 µL drawn, 10 out per well, the wash nets nothing.
+    const auto st = readLog(log);
+    ASSERT_EQ(st.ops.size(), 5u);
+    ASSERT_TRUE(st.ops[3].pumpEndUl);
+    EXPECT_NEAR(*st.ops[3].pumpEndUl, 0, 1e-6);
+    ASSERT_TRUE(st.lastPumpUl);
+    EXPECT_NEAR(*st.lastPumpUl, 0, 1e-6);
+}
