@@ -18,6 +18,16 @@ namespace {
 
 QString example(const char* name) { return QStringLiteral(BP_SOURCE_DIR "/resources/examples/") + QLatin1String(name); }
 
+/// Writes `text` to `name` in `dir`; its path, or "" when it could not be written.
+QString writeFile(const QTemporaryDir& dir, const char* name, const char* text)
+{
+    const QString path = dir.filePath(QString::fromUtf8(name));
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly) || f.write(text) < 0)
+        return {};
+    return path;
+}
+
 ProgramRun cli(const QStringList& args, int timeoutMs = 60000) { return runProgram(binary("benchpilot-cli"), args, timeoutMs); }
 
 } // namespace
@@ -25,10 +35,7 @@ ProgramRun cli(const QStringList& args, int timeoutMs = 60000) { return runProgr
 TEST(PlateCli, ValidateListsEveryErrorAndExitsOne)
 {
     QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("bad.recipe.json"));
-    QFile f(path);
-    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-    f.write(R"({
+    const QString path = writeFile(dir, "bad.recipe.json", R"({
   "schema": "benchpilot.recipe",
   "version": 1,
   "name": "bad",
@@ -41,7 +48,7 @@ TEST(PlateCli, ValidateListsEveryErrorAndExitsOne)
   ]
 }
 )");
-    f.close();
+    ASSERT_FALSE(path.isEmpty());
     const ProgramRun r = cli({QStringLiteral("recipe"), QStringLiteral("validate"), path, QStringLiteral("--calibration"), QStringLiteral("none")});
     ASSERT_TRUE(r.finished);
     EXPECT_EQ(r.exitCode, 1) << r.describe();
@@ -88,13 +95,10 @@ TEST(PlateCli, PlanGivesEachMoveAndTheTotalTimeWithoutMoving)
 TEST(PlateCli, RunRefusesAnInvalidRecipeBeforeConnecting)
 {
     QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("bad.recipe.json"));
-    QFile f(path);
-    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-    f.write(R"({"schema": "benchpilot.recipe", "version": 1, "name": "b",
+    const QString path = writeFile(dir, "bad.recipe.json", R"({"schema": "benchpilot.recipe", "version": 1, "name": "b",
   "plates": [{"name": "p", "slot": "1", "labware": "sbs-96", "safe_z_mm": 55, "depth_z_mm": 70}],
   "steps": [{"type": "aspirate", "wells": "A1", "volume_ul": -1}]})");
-    f.close();
+    ASSERT_FALSE(path.isEmpty());
     // A port that does not exist: the refusal comes before any attempt to open it.
     const ProgramRun r = cli({QStringLiteral("--port"), dir.filePath(QStringLiteral("nowhere")), QStringLiteral("recipe"), QStringLiteral("run"), path,
                               QStringLiteral("--calibration=none")});
@@ -191,13 +195,10 @@ TEST(PlateCli, AnInterruptedWellNeedsTheOperatorsWord)
     ASSERT_EQ(cli(port + QStringList{QStringLiteral("home")}).exitCode, 0);
     QTemporaryDir dir;
     // A slow aspirate (5 µL/s) so the kill lands while the plunger moves.
-    const QString recipe = dir.filePath(QStringLiteral("slow.recipe.json"));
-    QFile f(recipe);
-    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-    f.write(R"({"schema": "benchpilot.recipe", "version": 1, "name": "slow",
+    const QString recipe = writeFile(dir, "slow.recipe.json", R"({"schema": "benchpilot.recipe", "version": 1, "name": "slow",
   "plates": [{"name": "samples", "slot": "1", "labware": "sbs-96", "safe_z_mm": 55, "depth_z_mm": 70}],
   "steps": [{"type": "aspirate", "wells": "A1:A4", "volume_ul": 20, "speed_ul_s": 5}]})");
-    f.close();
+    ASSERT_FALSE(recipe.isEmpty());
     const QString log = dir.filePath(QStringLiteral("slow.run.jsonl"));
     QProcess first;
     first.start(binary("benchpilot-cli"), port + QStringList{QStringLiteral("recipe"), QStringLiteral("run"), recipe, QStringLiteral("--log"), log,
@@ -246,15 +247,12 @@ TEST(PlateCli, OnTheInProcessSimulatorHomeThenRunDispensesEndToEnd)
     // is short: draw 30 µL, dispense 10 into three wells with a touch-off,
     // wash. --home makes the fresh machine runnable.
     QTemporaryDir dir;
-    const QString recipe = dir.filePath(QStringLiteral("short.recipe.json"));
-    QFile f(recipe);
-    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-    f.write(R"({"schema": "benchpilot.recipe", "version": 1, "name": "short",
+    const QString recipe = writeFile(dir, "short.recipe.json", R"({"schema": "benchpilot.recipe", "version": 1, "name": "short",
   "plates": [{"name": "samples", "slot": "1", "labware": "sbs-96", "safe_z_mm": 55, "depth_z_mm": 70}],
   "steps": [{"type": "aspirate", "wells": "A1", "volume_ul": 30},
             {"type": "dispense", "wells": "B1:B3", "volume_ul": 10, "touch_off_mm": 1},
             {"type": "wash", "station": "wash", "volume_ul": 20}]})");
-    f.close();
+    ASSERT_FALSE(recipe.isEmpty());
     const QString log = dir.filePath(QStringLiteral("short.run.jsonl"));
     const QStringList run{QStringLiteral("--sim"), QStringLiteral("analyzer"), QStringLiteral("--json"), QStringLiteral("recipe"), QStringLiteral("run"),
                           recipe, QStringLiteral("--log"), log, QStringLiteral("--calibration=none")};
