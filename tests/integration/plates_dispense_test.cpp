@@ -339,3 +339,51 @@ TEST_F(PlateDispense, KilledWhileThePlungerDispensesTheOperatorCountsTheWellAndI
     EXPECT_EQ(countLog(logPath).skips.count(target), 1u);
     EXPECT_NEAR(p(), 0, 1e-6) << "the skipped well's 150 µL went out once, by the first run";
 }
+
+TEST_F(PlateDispense, ACablePulledMidDispenseResumesInTheSameRunWithoutFillingTheWellAgain)
+{
+    const plates::RecipePlan pl = plan();
+    const int target = secondRoundOp(pl, 3);
+    ASSERT_GT(target, 0);
+    RecipeRunner runner(&s.client);
+    int current = -1;
+    QObject::connect(&runner, &RecipeRunner::opStarted, &runner, [&](int i) { current = i; });
+    // The cable goes while the target well's plunger moves (the device has the
+    // move, and finishes it on its own). The clock runs at real time for that
+    // well so the status sees the plunger moving.
+    QObject::connect(&runner, &RecipeRunner::opStarted, &runner, [&](int i) {
+        if (i == target)
+            s.link.host().setTimeScale(1);
+    });
+    bool pumpSent = false;
+    onMove = [&](const SentMove& m) { pumpSent = pumpSent || (current == target && m.mask == kP && m.targets[0] < 0); };
+    QString error;
+    ASSERT_TRUE(runner.setPlan(pl, QStringLiteral("transfer"), &error));
+    ASSERT_TRUE(runner.start(logPath, &error)) << error.toStdString();
+    ASSERT_TRUE(waitFor([&] { return (pumpSent && s.readout('P').moving) || runner.state() != RunState::Running; }, timeoutMs(pl)));
+    ASSERT_EQ(runner.state(), RunState::Running);
+    s.link.pair().unplug();
+    ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Stopped; }, 5000));
+    onMove = nullptr;
+    spin(1500);  // the analyzer finishes the move it had
+    s.link.pair().replug();
+    ASSERT_TRUE(s.connect());
+    ASSERT_TRUE(s.waitStill());
+    s.link.host().setTimeScale(kRunTimeScale);
+    std::vector<InterruptedOp> asked;
+    ASSERT_TRUE(runner.resume(
+                    [&](const InterruptedOp& q) {
+                        asked.push_back(q);
+                        return q.evidence.contains(QStringLiteral("moved in full")) ? InterruptedChoice::Skip : InterruptedChoice::Cancel;
+                    },
+                    &error))
+        << error.toStdString();
+    ASSERT_EQ(asked.size(), 1u);
+    EXPECT_EQ(asked[0].op, target);
+    EXPECT_TRUE(asked[0].evidence.contains(QStringLiteral("moved in full"))) << asked[0].evidence.toStdString();
+    ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Finished || runner.state() == RunState::Stopped; }, timeoutMs(pl)));
+    ASSERT_EQ(runner.state(), RunState::Finished);
+    ASSERT_TRUE(s.waitStill());
+    expectEachDispenseOnce(pl);
+    EXPECT_NEAR(p(), 0, 1e-6);
+}
