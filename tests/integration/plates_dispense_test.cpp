@@ -117,6 +117,16 @@ int secondRoundOp(const plates::RecipePlan& pl, int nth)
     return -1;
 }
 
+/// An operator who reads the evidence (and `asked` records what was asked):
+/// the liquid went in, so the well counts as done; anything else, no decision.
+jobs::InterruptedDecider skipWhenMovedInFull(std::vector<InterruptedOp>* asked)
+{
+    return [asked](const InterruptedOp& q) {
+        asked->push_back(q);
+        return q.evidence.contains(QStringLiteral("moved in full")) ? InterruptedChoice::Skip : InterruptedChoice::Cancel;
+    };
+}
+
 } // namespace
 
 TEST_F(PlateDispense, TheReagentTransferExampleRunsToTheEndWithTheTipUpWheneverItTravels)
@@ -319,15 +329,7 @@ TEST_F(PlateDispense, KilledWhileThePlungerDispensesTheOperatorCountsTheWellAndI
     RecipeRunner second(&s.client);
     ASSERT_TRUE(second.setPlan(resumePlan(), QStringLiteral("transfer"), &error)) << error.toStdString();
     std::vector<InterruptedOp> asked;
-    ASSERT_TRUE(second.resumeFromLog(
-                    logPath,
-                    [&](const InterruptedOp& q) {
-                        asked.push_back(q);
-                        // As an operator reading the evidence: the liquid went in, count it.
-                        return q.evidence.contains(QStringLiteral("moved in full")) ? InterruptedChoice::Skip : InterruptedChoice::Cancel;
-                    },
-                    &error))
-        << error.toStdString();
+    ASSERT_TRUE(second.resumeFromLog(logPath, skipWhenMovedInFull(&asked), &error)) << error.toStdString();
     ASSERT_EQ(asked.size(), 1u);
     EXPECT_EQ(asked[0].op, target);
     EXPECT_EQ(asked[0].label, QString::fromStdString(pl.ops[static_cast<std::size_t>(target)].label()));
@@ -371,13 +373,7 @@ TEST_F(PlateDispense, ACablePulledMidDispenseResumesInTheSameRunWithoutFillingTh
     ASSERT_TRUE(s.waitStill());
     s.link.host().setTimeScale(kRunTimeScale);
     std::vector<InterruptedOp> asked;
-    ASSERT_TRUE(runner.resume(
-                    [&](const InterruptedOp& q) {
-                        asked.push_back(q);
-                        return q.evidence.contains(QStringLiteral("moved in full")) ? InterruptedChoice::Skip : InterruptedChoice::Cancel;
-                    },
-                    &error))
-        << error.toStdString();
+    ASSERT_TRUE(runner.resume(skipWhenMovedInFull(&asked), &error)) << error.toStdString();
     ASSERT_EQ(asked.size(), 1u);
     EXPECT_EQ(asked[0].op, target);
     EXPECT_TRUE(asked[0].evidence.contains(QStringLiteral("moved in full"))) << asked[0].evidence.toStdString();
