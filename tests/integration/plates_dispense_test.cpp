@@ -1,9 +1,10 @@
 // The dispensing side of a run on the simulated analyzer, with the shipped
 // reagent-transfer example: dispenses into many wells from a source in syringe
 // rounds, a touch-off after each well, mixing, washing, an air gap, a wait and
-// a touch-off step. Run to the end, aborted part-way through a multi-well
-// dispense and resumed, and killed mid-dispense and resumed: no target well is
-// ever dispensed into twice, and the plunger ends where the volumes say.
+// a touch-off step. Run to the end; aborted part-way through a multi-well
+// dispense and resumed from the log; killed, or its cable pulled, while a
+// dispense's plunger moves and resumed: no target well is ever dispensed into
+// twice, and the plunger ends where the volumes say.
 #include "device/files/recipes/recipe_loader.h"
 #include "plates_run_support.h"
 
