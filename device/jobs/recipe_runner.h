@@ -22,6 +22,7 @@
 
 #include <functional>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace jobs {
@@ -120,6 +121,8 @@ private:
     bool logLine(jsonio::Value line);
     bool decideInterrupted(int op, const InterruptedDecider& decide, bool* redo, QString* error);
     bool applyDecision(int op, bool redo);
+    /// preflight() as the run will be once the operator's (op, redo) decisions apply.
+    bool preflightDecided(const std::vector<std::pair<int, bool>>& decisions, QString* error);
     int nextOpenOp(int from) const;
     int axis(char letter) const;
     double plungerNow() const;

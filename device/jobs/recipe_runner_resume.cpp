@@ -106,6 +106,20 @@ bool RecipeRunner::decideInterrupted(int op, const InterruptedDecider& decide, b
 }
 
 /// Writes the operator's decision about `op` and sets it up to be skipped or begun again.
+bool RecipeRunner::preflightDecided(const std::vector<std::pair<int, bool>>& decisions, QString* error)
+{
+    // The plunger already stands after a skipped op's pump move (the analyzer
+    // finished it): counting that move again made a dispense that was skipped
+    // look like one more dispense than the syringe holds, and the resume was
+    // refused. A redone op's move is still ahead.
+    const std::vector<OpState> before = m_opStates;
+    for (const auto& [op, redo] : decisions)
+        m_opStates[static_cast<std::size_t>(op)] = redo ? OpState::NotStarted : OpState::Skipped;
+    const bool ok = preflight(error);
+    m_opStates = before;
+    return ok;
+}
+
 bool RecipeRunner::applyDecision(int op, bool redo)
 {
     jsonio::Value v = jsonio::Value::object();
@@ -144,7 +158,7 @@ bool RecipeRunner::resume(const InterruptedDecider& decide, QString* error)
     bool redo = true;
     if (m_pumpLogged && !decideInterrupted(m_op, decide, &redo, error))
         return false;
-    if (!preflight(error))
+    if (!preflightDecided(m_pumpLogged ? std::vector<std::pair<int, bool>>{{m_op, redo}} : std::vector<std::pair<int, bool>>{}, error))
         return false;
     jsonio::Value v = jsonio::Value::object();
     v.set("event", "resume");
@@ -216,8 +230,6 @@ bool RecipeRunner::resumeFromLog(const QString& logPath, const InterruptedDecide
     for (std::size_t i = 0; i < st.ops.size(); ++i)
         if (closed(st.ops[i].state))
             m_opStates[i] = st.ops[i].state;
-    if (!preflight(error))
-        return false;
     m_logState = std::move(st);
     std::vector<std::pair<int, bool>> decisions;
     for (int op : interrupted) {
@@ -229,6 +241,8 @@ bool RecipeRunner::resumeFromLog(const QString& logPath, const InterruptedDecide
         decisions.push_back({op, redo});
     }
     m_logState.reset();
+    if (!preflightDecided(decisions, error))
+        return false;
     if (!m_log.append(logPath, error))
         return false;
     jsonio::Value v = jsonio::Value::object();

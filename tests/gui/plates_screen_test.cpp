@@ -13,11 +13,13 @@
 #include "widgets/plates/recipe_editor.h"
 #include "widgets/plates/run_panel.h"
 
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMouseEvent>
 #include <QPushButton>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolButton>
@@ -285,4 +287,32 @@ TEST_F(PlatesScreenTest, TheCalibrationWizardTeachesASlotAndItIsKept)
     ASSERT_TRUE(cal->fit());
     EXPECT_GT(cal->fit()->maxResidualMm, plates::kResidualWarnMm);
     ASSERT_FALSE(cal->fit()->warnings.empty());
+}
+
+TEST_F(PlatesScreenTest, StepTypesAndPlannedOpsShowReadableNamesNotFileIds)
+{
+    ui::PlateMap* map = screen->plateMap();
+    dragAcross(map, {0, 0}, {0, 1});  // A1, A2
+    QTest::mouseClick(button(screen, QObject::tr("Aspirate from these")), Qt::LeftButton);
+    // The step form's type list: "Air gap", not the file's "air_gap"; the id is the item's data.
+    QComboBox* type = nullptr;
+    for (auto* c : screen->recipeEditor()->findChildren<QComboBox*>())
+        if (c->count() == plates::kStepTypeCount)
+            type = c;
+    ASSERT_NE(type, nullptr);
+    const int airGap = type->findData(static_cast<int>(plates::StepType::AirGap));
+    ASSERT_GE(airGap, 0);
+    EXPECT_EQ(type->itemText(airGap), QStringLiteral("Air gap"));
+    EXPECT_EQ(type->itemText(type->findData(static_cast<int>(plates::StepType::TouchOff))), QStringLiteral("Touch off"));
+    EXPECT_EQ(type->currentText(), QStringLiteral("Aspirate"));
+    for (int i = 0; i < type->count(); ++i)
+        EXPECT_FALSE(type->itemText(i).contains(QLatin1Char('_'))) << type->itemText(i).toStdString();
+    // The plan table names each op in words.
+    QTableWidget* table = screen->runPanel()->findChild<QTableWidget*>();
+    ASSERT_NE(table, nullptr);
+    ASSERT_GE(table->rowCount(), 2);
+    QStringList cells;
+    for (int c = 0; c < table->columnCount(); ++c)
+        cells << (table->item(1, c) ? table->item(1, c)->text() : QString());
+    EXPECT_TRUE(cells.contains(QStringLiteral("Aspirate 10 µL from samples A2"))) << cells.join(QLatin1String(" | ")).toStdString();
 }

@@ -18,6 +18,16 @@ namespace {
 
 QString example(const char* name) { return QStringLiteral(BP_SOURCE_DIR "/resources/examples/") + QLatin1String(name); }
 
+/// Writes `text` to `name` in `dir`; its path, or "" when it could not be written.
+QString writeFile(const QTemporaryDir& dir, const char* name, const char* text)
+{
+    const QString path = dir.filePath(QString::fromUtf8(name));
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly) || f.write(text) < 0)
+        return {};
+    return path;
+}
+
 ProgramRun cli(const QStringList& args, int timeoutMs = 60000) { return runProgram(binary("benchpilot-cli"), args, timeoutMs); }
 
 } // namespace
@@ -25,10 +35,7 @@ ProgramRun cli(const QStringList& args, int timeoutMs = 60000) { return runProgr
 TEST(PlateCli, ValidateListsEveryErrorAndExitsOne)
 {
     QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("bad.recipe.json"));
-    QFile f(path);
-    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-    f.write(R"({
+    const QString path = writeFile(dir, "bad.recipe.json", R"({
   "schema": "benchpilot.recipe",
   "version": 1,
   "name": "bad",
@@ -41,7 +48,7 @@ TEST(PlateCli, ValidateListsEveryErrorAndExitsOne)
   ]
 }
 )");
-    f.close();
+    ASSERT_FALSE(path.isEmpty());
     const ProgramRun r = cli({QStringLiteral("recipe"), QStringLiteral("validate"), path, QStringLiteral("--calibration"), QStringLiteral("none")});
     ASSERT_TRUE(r.finished);
     EXPECT_EQ(r.exitCode, 1) << r.describe();
@@ -88,13 +95,10 @@ TEST(PlateCli, PlanGivesEachMoveAndTheTotalTimeWithoutMoving)
 TEST(PlateCli, RunRefusesAnInvalidRecipeBeforeConnecting)
 {
     QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("bad.recipe.json"));
-    QFile f(path);
-    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-    f.write(R"({"schema": "benchpilot.recipe", "version": 1, "name": "b",
+    const QString path = writeFile(dir, "bad.recipe.json", R"({"schema": "benchpilot.recipe", "version": 1, "name": "b",
   "plates": [{"name": "p", "slot": "1", "labware": "sbs-96", "safe_z_mm": 55, "depth_z_mm": 70}],
   "steps": [{"type": "aspirate", "wells": "A1", "volume_ul": -1}]})");
-    f.close();
+    ASSERT_FALSE(path.isEmpty());
     // A port that does not exist: the refusal comes before any attempt to open it.
     const ProgramRun r = cli({QStringLiteral("--port"), dir.filePath(QStringLiteral("nowhere")), QStringLiteral("recipe"), QStringLiteral("run"), path,
                               QStringLiteral("--calibration=none")});
@@ -191,13 +195,10 @@ TEST(PlateCli, AnInterruptedWellNeedsTheOperatorsWord)
     ASSERT_EQ(cli(port + QStringList{QStringLiteral("home")}).exitCode, 0);
     QTemporaryDir dir;
     // A slow aspirate (5 µL/s) so the kill lands while the plunger moves.
-    const QString recipe = dir.filePath(QStringLiteral("slow.recipe.json"));
-    QFile f(recipe);
-    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-    f.write(R"({"schema": "benchpilot.recipe", "version": 1, "name": "slow",
+    const QString recipe = writeFile(dir, "slow.recipe.json", R"({"schema": "benchpilot.recipe", "version": 1, "name": "slow",
   "plates": [{"name": "samples", "slot": "1", "labware": "sbs-96", "safe_z_mm": 55, "depth_z_mm": 70}],
   "steps": [{"type": "aspirate", "wells": "A1:A4", "volume_ul": 20, "speed_ul_s": 5}]})");
-    f.close();
+    ASSERT_FALSE(recipe.isEmpty());
     const QString log = dir.filePath(QStringLiteral("slow.run.jsonl"));
     QProcess first;
     first.start(binary("benchpilot-cli"), port + QStringList{QStringLiteral("recipe"), QStringLiteral("run"), recipe, QStringLiteral("--log"), log,
@@ -238,4 +239,53 @@ TEST(PlateCli, AnInterruptedWellNeedsTheOperatorsWord)
     r = cli(port + QStringList{QStringLiteral("--json"), QStringLiteral("status")});
     const QJsonObject p = lastJson(r.out).value(QStringLiteral("axes")).toObject().value(QStringLiteral("P")).toObject();
     EXPECT_NEAR(p.value(QStringLiteral("position")).toDouble(), p0 + 60.0, 1e-6) << "A2 once more in full, then A3 and A4";
+}
+
+TEST(PlateCli, OnTheInProcessSimulatorHomeThenRunDispensesEndToEnd)
+{
+    // Every --sim command starts a fresh simulator at real time, so the recipe
+    // is short: draw 30 µL, dispense 10 into three wells with a touch-off,
+    // wash. --home makes the fresh machine runnable.
+    QTemporaryDir dir;
+    const QString recipe = writeFile(dir, "short.recipe.json", R"({"schema": "benchpilot.recipe", "version": 1, "name": "short",
+  "plates": [{"name": "samples", "slot": "1", "labware": "sbs-96", "safe_z_mm": 55, "depth_z_mm": 70}],
+  "steps": [{"type": "aspirate", "wells": "A1", "volume_ul": 30},
+            {"type": "dispense", "wells": "B1:B3", "volume_ul": 10, "touch_off_mm": 1},
+            {"type": "wash", "station": "wash", "volume_ul": 20}]})");
+    ASSERT_FALSE(recipe.isEmpty());
+    const QString log = dir.filePath(QStringLiteral("short.run.jsonl"));
+    const QStringList run{QStringLiteral("--sim"), QStringLiteral("analyzer"), QStringLiteral("--json"), QStringLiteral("recipe"), QStringLiteral("run"),
+                          recipe, QStringLiteral("--log"), log, QStringLiteral("--calibration=none")};
+
+    // Without --home a fresh simulator is refused before anything moves.
+    ProgramRun r = cli(run);
+    EXPECT_NE(r.exitCode, 0) << r.describe();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("home the analyzer first"))) << r.describe();
+    EXPECT_FALSE(QFileInfo::exists(log)) << "no log for a run that never began";
+
+    r = cli(run + QStringList{QStringLiteral("--home")}, 120000);
+    ASSERT_EQ(r.exitCode, 0) << r.describe();
+    const QJsonObject last = lastJson(r.out);
+    EXPECT_EQ(last.value(QStringLiteral("event")).toString(), QStringLiteral("finished")) << r.describe();
+    EXPECT_EQ(last.value(QStringLiteral("ops_done")).toInt(), 5);
+    QStringList dispensed;
+    for (const QString& line : r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
+        const QJsonObject o = QJsonDocument::fromJson(line.toUtf8()).object();
+        if (o.value(QStringLiteral("event")) == QStringLiteral("done") && o.value(QStringLiteral("kind")) == QStringLiteral("dispense"))
+            dispensed << o.value(QStringLiteral("well")).toString();
+    }
+    EXPECT_EQ(dispensed, (QStringList{QStringLiteral("B1"), QStringLiteral("B2"), QStringLiteral("B3")})) << r.describe();
+    const LogCounts c = countLog(log);
+    for (int i = 0; i < 5; ++i) {
+        EXPECT_EQ(c.dones.count(i) ? c.dones.at(i) : 0, 1) << "op " << i;
+        EXPECT_EQ(c.pumps.count(i) ? c.pumps.at(i) : 0, 1) << "op " << i;
+    }
+    EXPECT_EQ(c.finished, 1);
+    // The log's plunger: 30 µL drawn, 10 out per well, the wash nets nothing.
+    const auto st = readLog(log);
+    ASSERT_EQ(st.ops.size(), 5u);
+    ASSERT_TRUE(st.ops[3].pumpEndUl);
+    EXPECT_NEAR(*st.ops[3].pumpEndUl, 0, 1e-6);
+    ASSERT_TRUE(st.lastPumpUl);
+    EXPECT_NEAR(*st.lastPumpUl, 0, 1e-6);
 }

@@ -1,4 +1,5 @@
 #include "widgets/plates/recipe_editor.h"
+#include "widgets/plates/step_texts.h"
 
 #include "widgets/plates/step_form.h"
 
@@ -121,7 +122,7 @@ RecipeEditor::RecipeEditor(QWidget* parent) : QWidget(parent), m_undo(new QUndoS
     auto* menu = new QMenu(add);
     for (int i = 0; i < plates::kStepTypeCount; ++i) {
         const auto t = static_cast<plates::StepType>(i);
-        menu->addAction(QString::fromLatin1(plates::stepTypeName(t)), this, [this, t] { addStep(t); });
+        menu->addAction(stepTypeTitle(t), this, [this, t] { addStep(t); });
     }
     add->setMenu(menu);
     auto* dup = new QPushButton(tr("Duplicate"), stepsBox);
@@ -287,7 +288,7 @@ QString RecipeEditor::stepSummary(const plates::Step& s, int index)
         where = tr("station %1").arg(QString::fromStdString(s.station));
     else if (!s.wells.empty())
         where = (s.plate.empty() ? QString() : QString::fromStdString(s.plate) + QLatin1Char(' ')) + StepForm::wellsText(s.wells);
-    QString text = QStringLiteral("%1. %2").arg(index + 1).arg(QString::fromLatin1(plates::stepTypeName(s.type)));
+    QString text = QStringLiteral("%1. %2").arg(index + 1).arg(stepTypeTitle(s.type));
     switch (s.type) {
     case plates::StepType::Wait: text += tr(" %1 s").arg(s.seconds); break;
     case plates::StepType::TouchOff: text += tr(" %1 mm").arg(s.offsetMm); break;
@@ -430,7 +431,7 @@ void RecipeEditor::addStep(plates::StepType type)
     case plates::StepType::Wait: s.seconds = 5; break;
     case plates::StepType::TouchOff: s.offsetMm = 1.5; s.wells = {"A1"}; break;
     }
-    edit(tr("add a %1 step").arg(QString::fromLatin1(plates::stepTypeName(type))),
+    edit(tr("add step: %1").arg(stepTypeTitle(type)),
          [at, s](plates::Recipe& r) { r.steps.insert(r.steps.begin() + std::min<std::size_t>(static_cast<std::size_t>(at), r.steps.size()), s); });
     setCurrentStep(at);
 }

@@ -1,4 +1,5 @@
 #include "widgets/plates/run_panel.h"
+#include "widgets/plates/step_texts.h"
 
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -133,7 +134,7 @@ void RunPanel::setPlan(const plates::RecipePlan& plan, bool runnable, const QStr
         const plates::PlanOp& op = plan.ops[static_cast<std::size_t>(r)];
         const QStringList cells = {QString::number(op.index + 1),
                                    QString::number(op.step + 1),
-                                   QString::fromStdString(op.label()),
+                                   opTitle(op),
                                    QString::fromStdString(op.where()),
                                    QString::number(op.at.x, 'f', 2),
                                    QString::number(op.at.y, 'f', 2),

@@ -1,4 +1,5 @@
 #include "widgets/plates/step_form.h"
+#include "widgets/plates/step_texts.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -54,7 +55,7 @@ void StepForm::build()
     m_form->setFieldGrowthPolicy(QFormLayout::ExpandingFieldsGrow);
     m_type = new QComboBox(this);
     for (int i = 0; i < plates::kStepTypeCount; ++i)
-        m_type->addItem(QString::fromLatin1(plates::stepTypeName(static_cast<StepType>(i))), i);
+        m_type->addItem(stepTypeTitle(static_cast<StepType>(i)), i);  // the id is the item data
     m_plate = new QComboBox(this);
     m_wells = new QLineEdit(this);
     m_wells->setPlaceholderText(tr("A1:H1, row B, column 3, all, or a list: A1, C4"));
