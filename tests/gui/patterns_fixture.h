@@ -35,6 +35,15 @@ protected:
     dev::InstrumentClient* stage() { return w->stage()->client(); }
     dev::SimulatedLink* stageLink() { return qobject_cast<dev::SimulatedLink*>(w->stage()->link()); }
     ui::JoystickScreen* joystick(int i) { return w->motionScreens()->joystick(i); }
+    /// The stage's Joystick screen on show with its knob ready to grab (nullptr if it never is).
+    ui::JoystickScreen* showStageJoystick()
+    {
+        if (!w->showScreen(QStringLiteral("joystick")))
+            return nullptr;
+        w->showInstrument(1);
+        ui::JoystickScreen* j = joystick(1);
+        return waitFor([&] { return j->pad()->isVisible() && j->pad()->isEnabled(); }, 2000) ? j : nullptr;
+    }
     /// Mouse position on the pad for a deflection (x right, y up).
     static QPoint at(ui::JoystickPad* pad, double dx, double dy)
     {

@@ -24,10 +24,11 @@ protected:
     /// the machine.
     ui::JoystickScreen* holdDiagonal()
     {
-        EXPECT_TRUE(w->showScreen(QStringLiteral("joystick")));
-        w->showInstrument(1);
-        ui::JoystickScreen* j = joystick(1);
-        EXPECT_TRUE(waitFor([&] { return j->pad()->isVisible() && j->pad()->isEnabled(); }, 2000));
+        ui::JoystickScreen* j = showStageJoystick();
+        if (!j) {
+            ADD_FAILURE() << "the Joystick screen never became ready";
+            return nullptr;
+        }
         drag(j->pad(), 0.7, 0.7);
         EXPECT_TRUE(waitFor([&] { return machineMoving(0) && machineMoving(1); }, 3000)) << "both axes must move";
         return j;
@@ -38,6 +39,7 @@ protected:
     void expectHidingStopsTheMachine(const std::function<void()>& hide)
     {
         ui::JoystickScreen* j = holdDiagonal();
+        ASSERT_NE(j, nullptr);
         dev::SimulatedLink* link = stageLink();
         link->host().setManualClock(true);
         const quint64 frames = j->driver()->framesSent();
@@ -81,6 +83,7 @@ TEST_F(JoystickStops, HidingTheWindowMidDragStopsBothAxes)
 TEST_F(JoystickStops, APulledCableStopsTheAxesAndTheStickStaysDeadAfterReconnecting)
 {
     ui::JoystickScreen* j = holdDiagonal();
+    ASSERT_NE(j, nullptr);
     ui::JoystickPad* pad = j->pad();
     dev::SimulatedLink* link = stageLink();
     link->pair().unplug();
@@ -121,11 +124,9 @@ TEST_F(JoystickStops, APulledCableStopsTheAxesAndTheStickStaysDeadAfterReconnect
 
 TEST_F(JoystickStops, FullDeflectionRunsAtTheMaximumSpeedAndChangingItChangesTheSpeed)
 {
-    ASSERT_TRUE(w->showScreen(QStringLiteral("joystick")));
-    w->showInstrument(1);
-    ui::JoystickScreen* j = joystick(1);
+    ui::JoystickScreen* j = showStageJoystick();
+    ASSERT_NE(j, nullptr);
     ui::JoystickPad* pad = j->pad();
-    ASSERT_TRUE(waitFor([&] { return pad->isVisible() && pad->isEnabled(); }, 2000));
     auto* maxSpeed = j->findChild<QDoubleSpinBox*>(QStringLiteral("joystickMaxSpeed"));
     auto* speedLabel = j->findChild<QLabel*>(QStringLiteral("joystickSpeed"));
     ASSERT_NE(maxSpeed, nullptr);

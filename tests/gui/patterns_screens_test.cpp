@@ -32,14 +32,11 @@ using guitest::MotionScreensTest;
 using guitest::pump;
 using guitest::waitFor;
 
-
 TEST_F(MotionScreensTest, DraggingTheKnobMovesBothAxesAndLettingGoStopsThem)
 {
-    ASSERT_TRUE(w->showScreen(QStringLiteral("joystick")));
-    w->showInstrument(1);
-    ui::JoystickScreen* j = joystick(1);
+    ui::JoystickScreen* j = showStageJoystick();
+    ASSERT_NE(j, nullptr);
     ui::JoystickPad* pad = j->pad();
-    ASSERT_TRUE(waitFor([&] { return pad->isVisible() && pad->isEnabled(); }, 2000));
     const double x0 = stage()->status().axes[0].commanded, y0 = stage()->status().axes[1].commanded;
     drag(pad, 0.7, 0.7);  // out to the upper right
     EXPECT_GT(pad->deflection().x(), 0.6);
