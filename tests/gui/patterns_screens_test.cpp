@@ -8,6 +8,7 @@
 #include "device/files/pattern_file.h"
 #include "device/jobs/pattern_runner.h"
 #include "gui_wait.h"
+#include "patterns_fixture.h"
 #include "widgets/joystick/joystick_pad.h"
 #include "widgets/joystick/joystick_screen.h"
 #include "widgets/joystick/travel_view.h"
@@ -27,50 +28,17 @@
 
 #include <cmath>
 
+using guitest::MotionScreensTest;
 using guitest::pump;
 using guitest::waitFor;
 
-namespace {
-
-class MotionScreensTest : public ::testing::Test {
-protected:
-    void SetUp() override
-    {
-        app::MainWindowOptions o;
-        o.persistSettings = false;
-        o.confirmDialogs = false;
-        w = std::make_unique<app::MainWindow>(o);
-        w->resize(1500, 900);
-        w->show();
-        ASSERT_TRUE(waitFor([&] { return w->analyzer()->client()->isReady() && w->stage()->client()->isReady(); }, 5000));
-    }
-    dev::InstrumentClient* stage() { return w->stage()->client(); }
-    ui::JoystickScreen* joystick(int i) { return w->motionScreens()->joystick(i); }
-    /// Mouse position on the pad for a deflection (x right, y up).
-    static QPoint at(ui::JoystickPad* pad, double dx, double dy)
-    {
-        const double r = std::min(pad->width(), pad->height()) / 2.0 - 18;
-        return QPoint(static_cast<int>(pad->width() / 2.0 + dx * r), static_cast<int>(pad->height() / 2.0 - dy * r));
-    }
-    std::unique_ptr<app::MainWindow> w;
-};
-
-}  // namespace
-
 TEST_F(MotionScreensTest, DraggingTheKnobMovesBothAxesAndLettingGoStopsThem)
 {
-    ASSERT_TRUE(w->showScreen(QStringLiteral("joystick")));
-    w->showInstrument(1);
-    ui::JoystickScreen* j = joystick(1);
+    ui::JoystickScreen* j = showStageJoystick();
+    ASSERT_NE(j, nullptr);
     ui::JoystickPad* pad = j->pad();
-    ASSERT_TRUE(waitFor([&] { return pad->isVisible() && pad->isEnabled(); }, 2000));
     const double x0 = stage()->status().axes[0].commanded, y0 = stage()->status().axes[1].commanded;
-    QTest::mousePress(pad, Qt::LeftButton, {}, at(pad, 0, 0));
-    // Out to the upper right in small steps, as a hand would.
-    for (int k = 1; k <= 10; ++k) {
-        QTest::mouseMove(pad, at(pad, 0.07 * k, 0.07 * k));
-        pump(15);
-    }
+    drag(pad, 0.7, 0.7);  // out to the upper right
     EXPECT_GT(pad->deflection().x(), 0.6);
     EXPECT_GT(pad->deflection().y(), 0.6);
     ASSERT_TRUE(waitFor([&] {
@@ -193,15 +161,7 @@ TEST_F(MotionScreensTest, SaveAndLoadKeepThePattern)
 TEST_F(MotionScreensTest, ARunFromTheScreenEndsWithItsContourSummaryAndExportsCsv)
 {
     // Home the stage with its clock sped up, then run a short line at real time.
-    auto* link = qobject_cast<dev::SimulatedLink*>(w->stage()->link());
-    ASSERT_NE(link, nullptr);
-    link->host().setTimeScale(20);
-    stage()->home(0);
-    ASSERT_TRUE(waitFor([&] {
-        const auto& a = stage()->status().axes;
-        return a.size() == 2 && a[0].homed && a[1].homed && !a[0].moving && !a[1].moving;
-    }, 20000));
-    link->host().setTimeScale(1);
+    ASSERT_TRUE(homeStage());
     ASSERT_TRUE(w->showScreen(QStringLiteral("patterns")));
     ui::PatternScreen* p = w->motionScreens()->patterns();
     p->setInstrument(1);

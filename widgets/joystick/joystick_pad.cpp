@@ -98,8 +98,8 @@ void JoystickPad::paintEvent(QPaintEvent*)
     p.setBrush(QColor(0xdd, 0xe3, 0xea));
     p.drawEllipse(c, r * m_deadband, r * m_deadband);
     p.setPen(QColor(0x70, 0x70, 0x70));
-    p.drawText(QRectF(c.x() + r - 14, c.y() - 20, 30, 16), Qt::AlignCenter, QStringLiteral("+X"));
-    p.drawText(QRectF(c.x() - 15, c.y() - r - 2, 30, 16), Qt::AlignCenter, QStringLiteral("+Y"));
+    p.drawText(QRectF(c.x() + r - 14, c.y() - 20, 30, 16), Qt::AlignCenter, tr("+X", "joystick direction"));
+    p.drawText(QRectF(c.x() - 15, c.y() - r - 2, 30, 16), Qt::AlignCenter, tr("+Y", "joystick direction"));
     const QPointF knob(c.x() + m_deflection.x() * r, c.y() - m_deflection.y() * r);
     if (!m_deflection.isNull()) {
         p.setPen(QPen(QColor(0x1f, 0x77, 0xb4, 160), 3));

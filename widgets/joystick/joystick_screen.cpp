@@ -60,6 +60,7 @@ JoystickScreen::JoystickScreen(dev::InstrumentClient* client, QWidget* parent)
     auto* settings = new QGroupBox(tr("Response"), this);
     auto* form = new QFormLayout(settings);
     m_maxSpeed = new QDoubleSpinBox(settings);
+    m_maxSpeed->setObjectName(QStringLiteral("joystickMaxSpeed"));
     m_maxSpeed->setRange(0.01, 1000);
     m_maxSpeed->setDecimals(2);
     m_maxSpeed->setSuffix(tr(" mm/s"));
@@ -81,6 +82,7 @@ JoystickScreen::JoystickScreen(dev::InstrumentClient* client, QWidget* parent)
     m_readout->setTextFormat(Qt::RichText);
     m_readout->setObjectName(QStringLiteral("joystickReadout"));
     m_speed = new QLabel(this);
+    m_speed->setObjectName(QStringLiteral("joystickSpeed"));
     left->addWidget(m_readout);
     left->addWidget(m_speed);
     auto* hint = new QLabel(tr("Drag the knob; let go to stop. Arrow keys push the stick to the rim, PgUp/PgDn move Z. "

@@ -131,9 +131,9 @@ QWidget* PatternForm::pointRow(const QString& name, const QString& tip)
     auto* w = new QWidget(this);
     auto* h = new QHBoxLayout(w);
     h->setContentsMargins(0, 0, 0, 0);
-    h->addWidget(new QLabel(QStringLiteral("X"), w));
+    h->addWidget(new QLabel(tr("X", "axis"), w));
     h->addWidget(number(name + QStringLiteral(".x"), -10000, 10000, 3, tr(" mm"), tip), 1);
-    h->addWidget(new QLabel(QStringLiteral("Y"), w));
+    h->addWidget(new QLabel(tr("Y", "axis"), w));
     h->addWidget(number(name + QStringLiteral(".y"), -10000, 10000, 3, tr(" mm"), tip), 1);
     return w;
 }

@@ -333,9 +333,15 @@ void PatternScreen::updateButtons()
     m_run->setEnabled(!busy && !m_path.empty() && cur().paths->available() && !cur().client->status().estop);
     m_pause->setEnabled(mine && (st == PatternRunner::State::Running || st == PatternRunner::State::Paused
                                  || st == PatternRunner::State::Interrupted || st == PatternRunner::State::Approaching));
-    m_pause->setText(mine && (st == PatternRunner::State::Paused || st == PatternRunner::State::Interrupted)
-                         ? (st == PatternRunner::State::Interrupted ? tr("Continue") : tr("Resume"))
-                         : tr("Pause"));
+    const QString pauseText = mine && (st == PatternRunner::State::Paused || st == PatternRunner::State::Interrupted)
+                                  ? (st == PatternRunner::State::Interrupted ? tr("Continue") : tr("Resume"))
+                                  : tr("Pause");
+    if (m_pause->text() != pauseText) {
+        m_pause->setText(pauseText);
+        // QAbstractButton::setText() replaces the shortcut with the new text's mnemonic (none):
+        // without this F6 died at the first pause and could neither resume nor pause again.
+        m_pause->setShortcut(QKeySequence(Qt::Key_F6));
+    }
     m_abort->setEnabled(mine && (busy || st == PatternRunner::State::Interrupted));
     m_export->setEnabled(m_runOn >= 0 && !m_instruments[m_runOn].runner->samples().empty());
     m_instrumentBox->setEnabled(!busy);
