@@ -18,6 +18,7 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScrollArea>
 #include <QSplitter>
 #include <QTabWidget>
 #include <QVBoxLayout>
@@ -77,9 +78,18 @@ PlatesScreen::PlatesScreen(dev::InstrumentClient* analyzer, QWidget* parent)
     m_editor = new RecipeEditor(m_tabs);
     m_calibration = new CalibrationPanel(analyzer, m_tabs);
     m_run = new RunPanel(m_runner, m_tabs);
-    m_tabs->addTab(m_editor, tr("Recipe"));
-    m_tabs->addTab(m_calibration, tr("Calibrate"));
-    m_tabs->addTab(m_run, tr("Run"));
+    // Each tab scrolls rather than making the window taller than a laptop's display
+    // (the editor's step form alone is taller than some screens leave room for).
+    auto scrolled = [this](QWidget* page) {
+        auto* area = new QScrollArea(m_tabs);
+        area->setWidgetResizable(true);
+        area->setFrameShape(QFrame::NoFrame);
+        area->setWidget(page);
+        return area;
+    };
+    m_tabs->addTab(scrolled(m_editor), tr("Recipe"));
+    m_tabs->addTab(scrolled(m_calibration), tr("Calibrate"));
+    m_tabs->addTab(scrolled(m_run), tr("Run"));
     split->addWidget(left);
     split->addWidget(m_tabs);
     split->setStretchFactor(0, 3);
