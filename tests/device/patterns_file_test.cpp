@@ -15,19 +15,9 @@ using motion::plans::PatternShape;
 
 namespace {
 
-/// resources/examples/ of the source tree: beside this file's tree, or above the directory the
-/// test runs in (ccache may compile with relative paths, and CTest runs in the build tree).
-std::string examplesDir()
-{
-    const std::string here = __FILE__;
-    QStringList candidates = {QString::fromStdString(here.substr(0, here.rfind("tests/device/")))};
-    for (QDir d = QDir::current(); !d.isRoot(); d.cdUp())
-        candidates << d.absolutePath() + QLatin1Char('/');
-    for (const QString& c : candidates)
-        if (QDir(c + QStringLiteral("resources/examples")).exists())
-            return (c + QStringLiteral("resources/examples/")).toStdString();
-    return "resources/examples/";
-}
+/// resources/examples/ of the source tree, as the build knows it (a compiler cache
+/// may make __FILE__ relative to another directory than the one the test runs in).
+std::string examplesDir() { return std::string(BP_SOURCE_DIR) + "/resources/examples/"; }
 
 std::string slurp(const std::string& path)
 {

@@ -46,11 +46,9 @@ TuningResult relayResult()
     return r;
 }
 
-std::string sourceDir()
-{
-    std::string here = __FILE__;
-    return here.substr(0, here.size() - std::string("tests/device/tuning_file_test.cpp").size());
-}
+// From the build's idea of the source tree: a compiler cache may make __FILE__
+// relative to another directory than the one the test runs in.
+std::string sourceDir() { return std::string(BP_SOURCE_DIR) + "/"; }
 
 } // namespace
 
