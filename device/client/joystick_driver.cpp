@@ -1,5 +1,7 @@
 #include "device/client/joystick_driver.h"
 
+#include <QPointer>
+
 #include <algorithm>
 #include <cmath>
 
@@ -173,8 +175,9 @@ void JoystickDriver::sendNow()
     m_lastSendMs = m_clock.elapsed();
     m_timer.stop();  // whatever was due is covered by this frame
     ++m_frames;
-    m_client->request(proto::MsgType::JogVelocity, proto::encode(r), [this](const std::optional<RequestError>& e, const proto::Bytes&) {
-        if (!e || e->kind != RequestError::Kind::Device)
+    const QPointer<JoystickDriver> self(this);  // the reply may come after the screen is gone
+    m_client->request(proto::MsgType::JogVelocity, proto::encode(r), [this, self](const std::optional<RequestError>& e, const proto::Bytes&) {
+        if (!self || !e || e->kind != RequestError::Kind::Device)
             return;
         // The client has reported the refusal (requestFailed); the stick stays dead until
         // it is back at the centre.

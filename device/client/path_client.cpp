@@ -3,6 +3,7 @@
 #include "device/client/path_wire.h"
 
 #include <QCoreApplication>
+#include <QPointer>
 
 #include <algorithm>
 
@@ -88,7 +89,11 @@ PathQueueState ProtocolPathClient::fromWire(const proto::PathStatusReply& s)
 
 InstrumentClient::ReplyCallback ProtocolPathClient::statusReply(Reply done)
 {
-    return [this, done = std::move(done)](const std::optional<RequestError>& e, const proto::Bytes& payload) {
+    // The reply may come after this client is gone (a run dropped mid-request).
+    const QPointer<ProtocolPathClient> self(this);
+    return [this, self, done = std::move(done)](const std::optional<RequestError>& e, const proto::Bytes& payload) {
+        if (!self)
+            return;
         if (e) {
             if (done)
                 done(e, m_last);

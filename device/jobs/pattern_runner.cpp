@@ -4,6 +4,7 @@
 #include "motion/plans/pattern.h"
 
 #include <QCoreApplication>
+#include <QPointer>
 
 #include <algorithm>
 #include <cmath>
@@ -253,8 +254,11 @@ void PatternRunner::approach(Vec2 to, bool withZ, std::function<void()> then)
         targets.push_back({z, *m_options.zMm});
     m_approachTo = to;
     m_approachPolls = 0;
-    m_client->move(targets, false, m_options.approachSpeedMmS, [this, then](const std::optional<dev::RequestError>& e) {
-        if (m_state != State::Approaching)
+    // The client keeps a callback until the device answers, which may be after this
+    // object is gone (a window closed, a run dropped): it must not reach a dead one.
+    const QPointer<PatternRunner> self(this);
+    m_client->move(targets, false, m_options.approachSpeedMmS, [this, self, then](const std::optional<dev::RequestError>& e) {
+        if (!self || m_state != State::Approaching)
             return;
         if (e)
             return fail(tr("Cannot move to the pattern's start: %1").arg(e->message));

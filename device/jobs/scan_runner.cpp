@@ -8,6 +8,7 @@
 #include <QDateTime>
 #include <QDir>
 #include <QFileInfo>
+#include <QPointer>
 
 #include <algorithm>
 #include <cmath>
@@ -391,8 +392,13 @@ void ScanRunner::nextWaypoint()
     m_motionDoneUs = 0;
     // Listening for MotionDone starts before the request goes out: a move of zero
     // length reports done at once.
-    m_client->move({{0, target.xMm}, {1, target.yMm}}, false, m_plan.speedMmS,
-                   [this](const std::optional<dev::RequestError>& e) { onMoveAccepted(e); });
+    // The client keeps a callback until the device answers, which may be after this
+    // object is gone (a window closed, a run dropped): it must not reach a dead one.
+    const QPointer<ScanRunner> self(this);
+    m_client->move({{0, target.xMm}, {1, target.yMm}}, false, m_plan.speedMmS, [self](const std::optional<dev::RequestError>& e) {
+        if (self)
+            self->onMoveAccepted(e);
+    });
 }
 
 void ScanRunner::onMoveAccepted(const std::optional<dev::RequestError>& error)
@@ -460,8 +466,9 @@ void ScanRunner::requestStatus()
     // An immediate reading rather than the next 50 ms poll: the tile is taken the
     // moment the grating says so. If it is not there yet, the polls that follow
     // (statusChanged) are checked until it is, or the settle timeout says why not.
-    m_client->request(proto::MsgType::Status, {}, [this](const std::optional<dev::RequestError>& e, const proto::Bytes& payload) {
-        if (e || m_phase != Phase::Settling)
+    const QPointer<ScanRunner> self(this);
+    m_client->request(proto::MsgType::Status, {}, [this, self](const std::optional<dev::RequestError>& e, const proto::Bytes& payload) {
+        if (!self || e || m_phase != Phase::Settling)
             return;
         const auto s = proto::decodeStatusReply(payload);
         const auto& axes = m_client->identity().axes;

@@ -105,6 +105,19 @@ TEST(PatternsRunner, ARasterLongerThanTheQueueIsStreamedWithFlowControl)
     EXPECT_LT(rig.runner.summary().maxContourMm, 0.005);
 }
 
+TEST(PatternsRunner, ARunnerGoneWithItsApproachMoveInFlightIsNeverCalledBack)
+{
+    // A screen closed right after Run: the device's answer to the move towards the
+    // pattern's start must not reach the runner that sent it.
+    RunnerRig rig(proto::DeviceKind::Stage);
+    {
+        PatternRunner gone(&rig.s.client, &rig.paths);
+        ASSERT_TRUE(gone.start(planOf(PatternShape::Circle, 2.0), {}));
+    }
+    ASSERT_TRUE(rig.s.waitStill());
+    EXPECT_TRUE(rig.s.client.isReady());
+}
+
 TEST(PatternsRunner, APatternOutsideTheSoftLimitsIsRefusedBeforeAnythingMoves)
 {
     RunnerRig rig(proto::DeviceKind::Stage);

@@ -224,6 +224,23 @@ TEST(ScanRun, ALostLinkStopsTheRunAndItContinuesAfterReconnecting)
         EXPECT_TRUE(rec.measured()) << rec.label;
 }
 
+TEST(ScanRun, ARunnerGoneWithItsFirstMoveInFlightIsNeverCalledBack)
+{
+    // The client keeps a request's callback until the device answers; a window
+    // closed right after Run must not have the answer reach the runner it held
+    // (under the sanitizers this was a use after free).
+    StageScan s;
+    ASSERT_TRUE(s.ready());
+    QString error;
+    {
+        auto r = s.runner();
+        ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error.toStdString();
+        ASSERT_TRUE(r->start(&error)) << error.toStdString();
+    }
+    ASSERT_TRUE(s.session.waitStill());
+    EXPECT_TRUE(s.session.client.isReady()) << "the link is still there for the next runner";
+}
+
 TEST(ScanRun, ARunLogOutlivesTheProgram)
 {
     StageScan s;
