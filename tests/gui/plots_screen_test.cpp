@@ -85,11 +85,11 @@ protected:
     }
     dev::InstrumentClient* stage() { return w->stage()->client(); }
     /// Waits until the stage's X has measured samples drawn in plot 1.
-    bool streaming()
+    bool streaming(int points = 10)
     {
         return waitFor([&] {
             const QCPGraph* g = screen->stack()->panel(0)->graph(stageXMeasured);
-            return g && g->dataCount() > 10;
+            return g && g->dataCount() > points;
         }, 5000);
     }
 
@@ -261,7 +261,7 @@ TEST_F(PlotsScreenTest, ExportAndRecordThroughTheInjectedFileChooser)
         asked << title;
         return next;
     });
-    ASSERT_TRUE(streaming());
+    ASSERT_TRUE(streaming(30)) << "enough in view for the export's rows, however slow the machine";
     screen->setPaused(true);
 
     next = dir.filePath(QStringLiteral("view.csv"));
