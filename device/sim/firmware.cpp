@@ -113,17 +113,20 @@ void Firmware::handle(const proto::Frame& f)
     m_out.insert(m_out.end(), slot.reply.begin(), slot.reply.end());
 }
 
+void Firmware::sendMalformed(std::uint16_t seq, const char* what, std::vector<std::uint8_t>& out)
+{
+    proto::ErrorReply e;
+    e.code = proto::ErrorCode::BadPayload;
+    e.message = std::string("malformed ") + what + " request";
+    sendError(seq, e, out);
+}
+
 void Firmware::execute(const proto::Frame& f, std::vector<std::uint8_t>& reply)
 {
     using proto::MsgType;
     const auto type = static_cast<MsgType>(f.type);
     const std::uint8_t ok = static_cast<std::uint8_t>(f.type | proto::kReplyFlag);
-    auto bad = [&](const char* what) {
-        proto::ErrorReply e;
-        e.code = proto::ErrorCode::BadPayload;
-        e.message = std::string("malformed ") + what + " request";
-        sendError(f.seq, e, reply);
-    };
+    auto bad = [&](const char* what) { sendMalformed(f.seq, what, reply); };
     auto answer = [&](const SimMachine::Result& r) {
         if (r)
             sendError(f.seq, *r, reply);

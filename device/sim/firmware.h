@@ -48,6 +48,7 @@ private:
     void execute(const proto::Frame& f, std::vector<std::uint8_t>& reply);
     void sendFrame(std::uint8_t type, std::uint16_t seq, const proto::Bytes& payload, std::vector<std::uint8_t>& out);
     void sendError(std::uint16_t seq, const proto::ErrorReply& e, std::vector<std::uint8_t>& out);
+    void sendMalformed(std::uint16_t seq, const char* what, std::vector<std::uint8_t>& out);  ///< BadPayload
     void subscribe(const proto::Frame& f, std::vector<std::uint8_t>& reply);
     /// Tuning requests (firmware_tuning.cpp); false if `f` is not one.
     bool executeTuning(const proto::Frame& f, std::vector<std::uint8_t>& reply);

@@ -12,12 +12,7 @@ void Firmware::executePath(const proto::Frame& f, std::vector<std::uint8_t>& rep
     using proto::MsgType;
     PathQueue& q = m_machine.paths();
     const std::uint8_t ok = static_cast<std::uint8_t>(f.type | proto::kReplyFlag);
-    auto bad = [&](const char* what) {
-        proto::ErrorReply e;
-        e.code = proto::ErrorCode::BadPayload;
-        e.message = std::string("malformed ") + what + " request";
-        sendError(f.seq, e, reply);
-    };
+    auto bad = [&](const char* what) { sendMalformed(f.seq, what, reply); };
     // BEGIN, APPEND and STATUS answer with the queue's state: the host's flow control.
     auto withStatus = [&](const PathQueue::Result& r) {
         if (r)
