@@ -227,6 +227,29 @@ TEST(PlateFiles, OurLabwareFormatReadsBothGridAndWellLists)
     }
 }
 
+TEST(PlateFiles, EveryLabwareExampleLoadsAndTheFormatKeepsIt)
+{
+    const QStringList names = QDir(examplePath("")).entryList({QStringLiteral("*.labware.json")}, QDir::Files);
+    ASSERT_GE(names.size(), 2) << "a plate and a reservoir";
+    for (const QString& name : names) {
+        const LabwareRead r = parseLabware(readExample(name.toUtf8().constData()));
+        ASSERT_TRUE(r.labware) << name.toStdString() << ": " << text(r.problems);
+        EXPECT_FALSE(r.opentrons);
+        const LabwareRead back = parseLabware(writeLabware(*r.labware));
+        ASSERT_TRUE(back.labware) << name.toStdString();
+        EXPECT_EQ(writeLabware(*back.labware), writeLabware(*r.labware)) << name.toStdString();
+    }
+    // The PCR plate: the SBS 96 grid (A1 14.38 mm from the left, 11.24 mm from the top, 9 mm pitch).
+    const LabwareRead pcr = parseLabware(readExample("pcr-plate-96.labware.json"));
+    ASSERT_TRUE(pcr.labware) << text(pcr.problems);
+    EXPECT_EQ(pcr.labware->wells.size(), 96u);
+    const plates::Well* h12 = pcr.labware->wellNamed("H12");
+    ASSERT_TRUE(h12);
+    EXPECT_NEAR(h12->xMm, 14.38 + 11 * 9, 1e-9);
+    EXPECT_NEAR(h12->yMm, 11.24 + 7 * 9, 1e-9);
+    EXPECT_DOUBLE_EQ(h12->volumeUl, 200);
+}
+
 TEST(PlateFiles, CalibrationIsKeptPerSlotAndRefittedOnReading)
 {
     const CalibrationRead r = parseCalibration(readExample("analyzer.calibration.json"));
