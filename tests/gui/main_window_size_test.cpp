@@ -1,27 +1,15 @@
 // The main window must fit the screens it is used on: lab PCs and laptops at
 // 1366 × 768 are common, and a window taller than the screen hides its own
 // status bar and the bottom of the screen's controls.
-#include "app/gui/main_window.h"
+#include "gui_window.h"
 
 #include <QLayout>
 
 #include <gtest/gtest.h>
 
-namespace {
-
-app::MainWindowOptions testOptions()
-{
-    app::MainWindowOptions o;
-    o.persistSettings = false;
-    o.confirmDialogs = false;
-    return o;
-}
-
-} // namespace
-
 TEST(MainWindowSize, EveryScreenFitsA1366x768Display)
 {
-    app::MainWindow w(testOptions());
+    app::MainWindow w(guitest::testWindowOptions());
     w.show();
     const QStringList names = w.screenNames();
     ASSERT_GE(names.size(), 8) << "jog, plots, profiles, tuning, joystick, patterns, plates, scan";

@@ -7,6 +7,7 @@
 #include "app/gui/motion_screens.h"
 #include "device/link/simulated_link.h"
 #include "gui_wait.h"
+#include "gui_window.h"
 #include "widgets/joystick/joystick_pad.h"
 #include "widgets/joystick/joystick_screen.h"
 
@@ -24,13 +25,8 @@ class MotionScreensTest : public ::testing::Test {
 protected:
     void SetUp() override
     {
-        app::MainWindowOptions o;
-        o.persistSettings = false;
-        o.confirmDialogs = false;
-        w = std::make_unique<app::MainWindow>(o);
-        w->resize(1500, 900);
-        w->show();
-        ASSERT_TRUE(waitFor([&] { return w->analyzer()->client()->isReady() && w->stage()->client()->isReady(); }, 5000));
+        w = guitest::openReadyWindow({1500, 900});
+        ASSERT_TRUE(w) << "the simulated instruments did not become ready";
     }
     dev::InstrumentClient* stage() { return w->stage()->client(); }
     dev::SimulatedLink* stageLink() { return qobject_cast<dev::SimulatedLink*>(w->stage()->link()); }

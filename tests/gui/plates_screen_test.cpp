@@ -7,6 +7,7 @@
 #include "device/files/text_file.h"
 #include "device/link/simulated_link.h"
 #include "gui_wait.h"
+#include "gui_window.h"
 #include "widgets/plates/calibration_panel.h"
 #include "widgets/plates/plate_map.h"
 #include "widgets/plates/plates_screen.h"
@@ -61,13 +62,8 @@ class PlatesScreenTest : public ::testing::Test {
 protected:
     void SetUp() override
     {
-        app::MainWindowOptions o;
-        o.persistSettings = false;
-        o.confirmDialogs = false;
-        w = std::make_unique<app::MainWindow>(o);
-        w->resize(1500, 950);
-        w->show();
-        ASSERT_TRUE(waitFor([&] { return analyzer()->isReady(); }, 5000));
+        w = guitest::openReadyWindow({1500, 950});
+        ASSERT_TRUE(w) << "the simulated instruments did not become ready";
         ASSERT_TRUE(w->showScreen(QStringLiteral("plates")));
         screen = w->platesScreen();
         ASSERT_NE(screen, nullptr);

@@ -6,6 +6,7 @@
 #include "device/link/simulated_link.h"
 #include "device/sim/sim_tuning.h"
 #include "gui_wait.h"
+#include "gui_window.h"
 #include "widgets/tuning/gains_panel.h"
 #include "widgets/tuning/response_plot.h"
 #include "widgets/tuning/step_test_panel.h"
@@ -29,13 +30,8 @@ class TuningScreenTest : public ::testing::Test {
 protected:
     void SetUp() override
     {
-        app::MainWindowOptions o;
-        o.persistSettings = false;
-        o.confirmDialogs = false;
-        w = std::make_unique<app::MainWindow>(o);
-        w->resize(1500, 950);
-        w->show();
-        ASSERT_TRUE(waitFor([&] { return w->analyzer()->client()->isReady() && w->stage()->client()->isReady(); }, 5000));
+        w = guitest::openReadyWindow({1500, 950});
+        ASSERT_TRUE(w) << "the simulated instruments did not become ready";
         ASSERT_TRUE(w->showScreen(QStringLiteral("tuning")));
         t = w->tuningScreen();
         ASSERT_NE(t, nullptr);

@@ -1,0 +1,33 @@
+#pragma once
+// The main window as the GUI tests drive it: on the in-process simulators, with
+// no saved settings read or written and no dialogs.
+#include "app/gui/instrument_session.h"
+#include "app/gui/main_window.h"
+#include "gui_wait.h"
+
+#include <QSize>
+
+#include <memory>
+
+namespace guitest {
+
+inline app::MainWindowOptions testWindowOptions()
+{
+    app::MainWindowOptions o;
+    o.persistSettings = false;
+    o.confirmDialogs = false;
+    return o;
+}
+
+/// Shown at `size` with both instruments' links ready; nullptr if they never are.
+inline std::unique_ptr<app::MainWindow> openReadyWindow(QSize size)
+{
+    auto w = std::make_unique<app::MainWindow>(testWindowOptions());
+    w->resize(size);
+    w->show();
+    if (!waitFor([&] { return w->analyzer()->client()->isReady() && w->stage()->client()->isReady(); }, 5000))
+        return nullptr;
+    return w;
+}
+
+} // namespace guitest
