@@ -125,6 +125,7 @@ void InstrumentProxy::setJogVelocities(const std::map<int, double>& velocities, 
         m_backend->setJogVelocities(velocities, std::move(done));
 }
 
+// With no backend nothing moves; the BenchPilot pace keeps a caller's timer sensible meanwhile.
 int InstrumentProxy::jogRefreshMs() const { return m_backend ? m_backend->jogRefreshMs() : 50; }
 
 void InstrumentProxy::stop(quint8 axisMask, Callback done)
