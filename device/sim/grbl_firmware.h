@@ -21,6 +21,7 @@
 #include "device/sim/grbl_sim_gcode.h"
 #include "device/sim/grbl_sim_motion.h"
 #include "device/sim/grbl_sim_settings.h"
+#include "device/sim/serial_device.h"
 #include "device/sim/sim_machine.h"
 
 #include <cstdint>
@@ -30,7 +31,7 @@
 
 namespace sim {
 
-class GrblFirmware {
+class GrblFirmware : public SerialDevice {
 public:
     enum class Dialect { Grbl, GrblHal };
     enum class State { Idle, Run, Hold, Jog, Alarm, Home };
@@ -45,11 +46,11 @@ public:
     GrblFirmware(const MachineConfig& config, Dialect dialect = Dialect::Grbl);
 
     /// Bytes from the host, in any chunking.
-    void receive(const std::uint8_t* data, std::size_t size);
+    void receive(const std::uint8_t* data, std::size_t size) override;
     /// Runs the machine for `dtS` of virtual time (whole ticks; the remainder carries).
-    void advance(double dtS);
+    void advance(double dtS) override;
     /// Moves the bytes the device has sent since the last call to `out`.
-    void drainOutput(std::vector<std::uint8_t>& out);
+    void drainOutput(std::vector<std::uint8_t>& out) override;
 
     SimMachine& machine() { return m_machine; }
     const SimMachine& machine() const { return m_machine; }
