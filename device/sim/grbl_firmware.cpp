@@ -269,7 +269,8 @@ void GrblFirmware::tick()
     m_machine.takeEvents();  // the GRBL personality reports through its own lines
     if (!checkHardLimits()) {
         continuePending();
-        if (m_state == State::Run && !m_motion.moving() && !m_pending.active)
+        // A dwell or a coolant change waiting for the planner to empty is not motion: Idle.
+        if (m_state == State::Run && !m_motion.moving() && (!m_pending.active || m_pending.points.empty()))
             m_state = State::Idle;
         if (m_state == State::Jog && !m_motion.moving())
             m_state = State::Idle;
