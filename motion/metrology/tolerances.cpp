@@ -1,5 +1,7 @@
 #include "motion/metrology/tolerances.h"
 
+#include <cmath>
+
 namespace motion::metrology {
 
 AxisTolerances analyzerTolerances(char axis)
@@ -53,7 +55,7 @@ void validateTolerances(const AxisTolerances& t, const std::string& path, Proble
         if (!v)
             return;
         const std::string p = fieldPath(path, key);
-        if (checkRange(out, p, *v, 0, 1000, msg::Unit::Mm) && !(*v > 0))
+        if (checkRange(out, p, *v, -INFINITY, 1000, msg::Unit::Mm) && !(*v > 0))
             out.push_back({p, msg::make("accuracy.value_not_positive", {msg::real("value", *v, msg::Unit::Mm)}), false});
     };
     check("a_mm", t.aMm);
