@@ -120,10 +120,32 @@ Problems validate(const CompensationModel& m)
                 out.push_back({indexPath("polynomial.coefficients_um", i), msg::make("accuracy.value_not_finite"), false});
         const bool from = checkRange(out, "polynomial.valid_from_mm", m.validFromMm, -1e6, 1e6, msg::Unit::Mm);
         const bool to = checkRange(out, "polynomial.valid_to_mm", m.validToMm, -1e6, 1e6, msg::Unit::Mm);
-        if (from && to && !(m.validToMm > m.validFromMm))
-            out.push_back({"polynomial.valid_to_mm", msg::make("compensation.range_empty",
-                                                               {msg::real("from", m.validFromMm, msg::Unit::Mm), msg::real("to", m.validToMm, msg::Unit::Mm)}),
+        if (from && to && !(m.validToMm - m.validFromMm >= 2 * kMinTableSpacingMm))
+            out.push_back({"polynomial.valid_to_mm", msg::make("compensation.range_too_short",
+                                                               {msg::real("from", m.validFromMm, msg::Unit::Mm), msg::real("to", m.validToMm, msg::Unit::Mm),
+                                                                msg::real("min", 2 * kMinTableSpacingMm, msg::Unit::Mm)}),
                            false});
+        else if (from && to && !hasErrors(out)) {
+            // A curve a device can apply: bounded and gentle over the range it is used on.
+            for (int i = 0; i <= 100; ++i) {
+                const double x = m.validFromMm + (m.validToMm - m.validFromMm) * i / 100;
+                const double e = m.polynomial.errorUm(x), slope = m.polynomial.slopeUmPerMm(x);
+                if (!(std::fabs(e) <= kMaxCorrectionUm)) {
+                    out.push_back({"polynomial.coefficients_um", msg::make("compensation.curve_too_large",
+                                                                           {msg::real("position", x, msg::Unit::Mm), msg::real("value", e, msg::Unit::Um),
+                                                                            msg::real("max", kMaxCorrectionUm, msg::Unit::Um)}),
+                                   false});
+                    break;
+                }
+                if (!(std::fabs(slope) <= kMaxSlopeUmPerMm)) {
+                    out.push_back({"polynomial.coefficients_um", msg::make("compensation.curve_too_steep",
+                                                                           {msg::real("position", x, msg::Unit::Mm), msg::real("value", slope),
+                                                                            msg::real("max", kMaxSlopeUmPerMm)}),
+                                   false});
+                    break;
+                }
+            }
+        }
     } else {
         const auto n = static_cast<long long>(m.table.size());
         if (n < 2)
@@ -136,11 +158,20 @@ Problems validate(const CompensationModel& m)
             const std::string path = indexPath("table.points", i);
             const TablePoint& p = m.table[i];
             if (checkRange(out, fieldPath(path, "nominal_mm"), p.nominalMm, -1e6, 1e6, msg::Unit::Mm) && i > 0
-                && std::isfinite(m.table[i - 1].nominalMm) && !(p.nominalMm > m.table[i - 1].nominalMm))
-                out.push_back({fieldPath(path, "nominal_mm"),
-                               msg::make("compensation.nominals_not_increasing",
-                                         {msg::real("value", p.nominalMm, msg::Unit::Mm), msg::real("previous", m.table[i - 1].nominalMm, msg::Unit::Mm)}),
-                               false});
+                && std::isfinite(m.table[i - 1].nominalMm)) {
+                const double previous = m.table[i - 1].nominalMm;
+                if (!(p.nominalMm > previous))
+                    out.push_back({fieldPath(path, "nominal_mm"),
+                                   msg::make("compensation.nominals_not_increasing",
+                                             {msg::real("value", p.nominalMm, msg::Unit::Mm), msg::real("previous", previous, msg::Unit::Mm)}),
+                                   false});
+                else if (p.nominalMm - previous < kMinTableSpacingMm * (1 - 1e-9))
+                    out.push_back({fieldPath(path, "nominal_mm"),
+                                   msg::make("compensation.nominals_too_close",
+                                             {msg::real("value", p.nominalMm, msg::Unit::Mm), msg::real("previous", previous, msg::Unit::Mm),
+                                              msg::real("min", kMinTableSpacingMm, msg::Unit::Mm)}),
+                                   false});
+            }
             checkRange(out, fieldPath(path, m.perDirection ? "correction_up_um" : "correction_um"), p.correctionUpUm, -kMaxCorrectionUm,
                        kMaxCorrectionUm, msg::Unit::Um);
             if (m.perDirection)

@@ -196,7 +196,7 @@ Evaluation summarize(std::vector<TargetStatistics> targets, bool bidirectional)
     double hiDown = -INFINITY, loDown = INFINITY, hiMeanDown = -INFINITY, loMeanDown = INFINITY;
     double hiMean = -INFINITY, loMean = INFINITY, rUp = 0, rDown = 0, r = 0, b = 0, bSum = 0;
     for (TargetStatistics& t : targets) {
-        out.cycles = std::max({out.cycles, t.nUp, t.nDown});
+        out.cycles = std::max(out.cycles, t.nUp);
         t.rUpMm = 4 * t.sUpMm;
         hiUp = std::max(hiUp, t.meanUpMm + 2 * t.sUpMm);
         loUp = std::min(loUp, t.meanUpMm - 2 * t.sUpMm);
@@ -213,6 +213,7 @@ Evaluation summarize(std::vector<TargetStatistics> targets, bool bidirectional)
             t.rMm.reset();
             continue;
         }
+        out.cycles = std::max(out.cycles, t.nDown);
         const double md = *t.meanDownMm, sd = *t.sDownMm;
         t.meanMm = (t.meanUpMm + md) / 2;
         t.reversalMm = t.meanUpMm - md;

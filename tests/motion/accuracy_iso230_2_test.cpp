@@ -180,6 +180,9 @@ TEST(Iso230_2, SummaryFromTheTableGivesTheSameFigures)
     EXPECT_EQ(*s.figures.rMm, *e.figures.rMm);
     EXPECT_EQ(*s.figures.bMeanMm, *e.figures.bMeanMm);
     EXPECT_EQ(s.cycles, 3);
+    // A unidirectional summary ignores ↓ counts a table may still carry (found by fuzzing).
+    primary[0].nDown = 96;
+    EXPECT_EQ(summarize(primary, false).cycles, 3);
     std::swap(primary[0], primary[1]);
     EXPECT_TRUE(hasProblem(summarize(primary, true), "accuracy.targets_not_increasing", "targets[1].target_mm"));
 }

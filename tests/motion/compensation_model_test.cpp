@@ -117,8 +117,15 @@ TEST(CompensationModel, RefusesWhatADeviceCouldNotApply)
     CompensationModel m = polynomialModel("X", motion::ErrorPolynomial{{1, 2, 3, 4, 5, 6, 7}}, 10, 10, 0);
     Problems ps = validate(m);
     EXPECT_TRUE(has(ps, "compensation.too_many_coefficients", "polynomial.coefficients_um"));
-    EXPECT_TRUE(has(ps, "compensation.range_empty", "polynomial.valid_to_mm"));
+    EXPECT_TRUE(has(ps, "compensation.range_too_short", "polynomial.valid_to_mm"));
+    // Finite coefficients, but a curve no device could follow (found by fuzzing the file reader).
+    m = polynomialModel("X", motion::ErrorPolynomial{{0, 0, -1e308}}, 0, 100, 0);
+    EXPECT_TRUE(has(validate(m), "compensation.curve_too_large", "polynomial.coefficients_um"));
+    m = polynomialModel("X", motion::ErrorPolynomial{{0, 150}}, 0, 10, 0);
+    EXPECT_TRUE(has(validate(m), "compensation.curve_too_steep", "polynomial.coefficients_um")) << "a 15 % scale error";
     m.kind = CompensationModel::Kind::Table;
+    m.table = {{0, 0, 0}, {0.0004, 0, 0}};
+    EXPECT_TRUE(has(validate(m), "compensation.nominals_too_close", "table.points[1].nominal_mm")) << "LinuxCNC's nanometres could not keep them apart";
     m.table = {{0, 1, 1}, {0, 2, 2}, {5, std::nan(""), 0}};
     m.perDirection = true;
     m.backlashUm = 3;
