@@ -119,8 +119,10 @@ TEST(CompensationModel, RefusesWhatADeviceCouldNotApply)
     EXPECT_TRUE(has(ps, "compensation.too_many_coefficients", "polynomial.coefficients_um"));
     EXPECT_TRUE(has(ps, "compensation.range_too_short", "polynomial.valid_to_mm"));
     // Finite coefficients, but a curve no device could follow (found by fuzzing the file reader).
-    m = polynomialModel("X", motion::ErrorPolynomial{{0, 0, -1e308}}, 0, 100, 0);
+    m = polynomialModel("X", motion::ErrorPolynomial{{0, 0, -1e300}}, 0, 100, 0);
     EXPECT_TRUE(has(validate(m), "compensation.curve_too_large", "polynomial.coefficients_um"));
+    m = polynomialModel("X", motion::ErrorPolynomial{{0, 0, -1e308}}, 0, 100, 0);
+    EXPECT_TRUE(hasErrors(validate(m))) << "its slope overflows to NaN";
     m = polynomialModel("X", motion::ErrorPolynomial{{0, 150}}, 0, 10, 0);
     EXPECT_TRUE(has(validate(m), "compensation.curve_too_steep", "polynomial.coefficients_um")) << "a 15 % scale error";
     m.kind = CompensationModel::Kind::Table;
