@@ -21,13 +21,16 @@ bool finite(const XyPoint& p)
     return std::isfinite(p.xMm) && std::isfinite(p.yMm);
 }
 
-void checkInside(Problems& out, const std::string& path, double v, const AxisLimits& l, const char* axis, const char* below, const char* above)
+/// `what` names the number as the axis test's messages do: "value" for a target,
+/// "position" for an overrun point.
+void checkInside(Problems& out, const std::string& path, double v, const AxisLimits& l, const char* axis, const char* below, const char* above,
+                 const char* what)
 {
     if (l.minMm && v < *l.minMm)
-        out.push_back({path, msg::make(below, {msg::verbatim("axis", axis), msg::real("value", v, msg::Unit::Mm), msg::real("limit", *l.minMm, msg::Unit::Mm)}),
+        out.push_back({path, msg::make(below, {msg::real(what, v, msg::Unit::Mm), msg::real("limit", *l.minMm, msg::Unit::Mm), msg::verbatim("axis", axis)}),
                        false});
     if (l.maxMm && v > *l.maxMm)
-        out.push_back({path, msg::make(above, {msg::verbatim("axis", axis), msg::real("value", v, msg::Unit::Mm), msg::real("limit", *l.maxMm, msg::Unit::Mm)}),
+        out.push_back({path, msg::make(above, {msg::real(what, v, msg::Unit::Mm), msg::real("limit", *l.maxMm, msg::Unit::Mm), msg::verbatim("axis", axis)}),
                        false});
 }
 
@@ -107,13 +110,13 @@ Problems validate(const XyLineTest& t, const XyLimits& limits)
                                                {msg::real("value", along(o, theta, points[i]), msg::Unit::Mm),
                                                 msg::real("previous", along(o, theta, points[i - 1]), msg::Unit::Mm)}),
                                false});
-            checkInside(out, fieldPath(path, "x_mm"), points[i].xMm, limits.x, "X", "accuracy.target_below_limit", "accuracy.target_above_limit");
-            checkInside(out, fieldPath(path, "y_mm"), points[i].yMm, limits.y, "Y", "accuracy.target_below_limit", "accuracy.target_above_limit");
+            checkInside(out, fieldPath(path, "x_mm"), points[i].xMm, limits.x, "X", "accuracy.target_below_limit", "accuracy.target_above_limit", "value");
+            checkInside(out, fieldPath(path, "y_mm"), points[i].yMm, limits.y, "Y", "accuracy.target_below_limit", "accuracy.target_above_limit", "value");
         }
         if (checkRange(out, "overrun_mm", t.overrunMm, 0, 1000, msg::Unit::Mm)) {
             const XyPoint before{o.xMm - t.overrunMm * std::cos(theta), o.yMm - t.overrunMm * std::sin(theta)};
-            checkInside(out, "overrun_mm", before.xMm, limits.x, "X", "accuracy.overrun_below_limit", "accuracy.overrun_above_limit");
-            checkInside(out, "overrun_mm", before.yMm, limits.y, "Y", "accuracy.overrun_below_limit", "accuracy.overrun_above_limit");
+            checkInside(out, "overrun_mm", before.xMm, limits.x, "X", "accuracy.overrun_below_limit", "accuracy.overrun_above_limit", "position");
+            checkInside(out, "overrun_mm", before.yMm, limits.y, "Y", "accuracy.overrun_below_limit", "accuracy.overrun_above_limit", "position");
         }
     }
 
