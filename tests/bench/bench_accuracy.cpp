@@ -8,9 +8,9 @@
 // CSV read + evaluated (us_per_csv_analysis) and an ISO 230-4 circular test of
 // 2 × 720 samples (us_per_circle).
 #include "device/files/accuracy/readings_csv.h"
-#include "motion/metrology/circular_test.h"
-#include "motion/metrology/iso230_2.h"
-#include "motion/metrology/polynomial_fit.h"
+#include "motion/metrology/contour/circular_test.h"
+#include "motion/metrology/linear/iso230_2.h"
+#include "motion/metrology/compensation/polynomial_fit.h"
 
 #include <benchmark/benchmark.h>
 

@@ -4,8 +4,8 @@
 // writers make of the interferometer readings example; a test compares them, and
 // BP_REGENERATE_EXAMPLES=1 writes them again after a deliberate format change.
 #include "device/files/accuracy/accuracy_result_file.h"
-#include "device/files/accuracy/compensation_exports.h"
-#include "device/files/accuracy/compensation_file.h"
+#include "device/files/accuracy/compensation/compensation_exports.h"
+#include "device/files/accuracy/compensation/compensation_file.h"
 #include "device/files/accuracy/error_curve_csv.h"
 #include "device/files/accuracy/readings_csv.h"
 

@@ -4,7 +4,7 @@
 #include "accuracy_examples.h"
 #include "device/files/accuracy/accuracy_test_file.h"
 #include "device/files/accuracy/csv_table.h"
-#include "motion/metrology/run_sequence.h"
+#include "motion/metrology/linear/run_sequence.h"
 
 #include <QDir>
 #include <QFile>

@@ -2,7 +2,7 @@
 // (squareness/scale) error gives G = twice its amplitude whatever the centre
 // offset, a reversal step between the directions gives H, and the polar plot
 // magnifies the deviation about the least-squares circle.
-#include "motion/metrology/circular_test.h"
+#include "motion/metrology/contour/circular_test.h"
 
 #include <gtest/gtest.h>
 

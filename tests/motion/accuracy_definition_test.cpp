@@ -1,9 +1,9 @@
 // Axis test definitions (ISO 230-2's standard test): the targets a grid gives,
 // the irregular spacing that keeps periodic errors out of phase, the validator's
 // refusals and warnings, and the order of the stops a runner visits.
-#include "motion/metrology/axis_test.h"
-#include "motion/metrology/run_sequence.h"
-#include "motion/metrology/xy_line_test.h"
+#include "motion/metrology/linear/axis_test.h"
+#include "motion/metrology/linear/run_sequence.h"
+#include "motion/metrology/contour/xy_line_test.h"
 
 #include <gtest/gtest.h>
 

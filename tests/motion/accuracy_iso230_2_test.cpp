@@ -2,8 +2,8 @@
 // (docs/accuracy.md shows the same table): every figure to 1e-9 mm, the mirror
 // image of a data set (only B̄ changes sign), a data set whose R comes from
 // 2s↑ + 2s↓ + |B| rather than from 4s, a unidirectional test, and the refusals.
-#include "motion/metrology/iso230_2.h"
-#include "motion/metrology/tolerances.h"
+#include "motion/metrology/linear/iso230_2.h"
+#include "motion/metrology/linear/tolerances.h"
 
 #include <gtest/gtest.h>
 

@@ -17,9 +17,9 @@
 // Our copy of the seed lost the last column of Tables 4–6 (Y at 200 mm, Table 5's
 // fifth point, Z at 100 mm) in text extraction; those tables are checked on the
 // columns that survive, which already give the printed summary figures.
-#include "motion/metrology/iso230_2.h"
-#include "motion/metrology/tolerances.h"
-#include "motion/metrology/xy_line_test.h"
+#include "motion/metrology/linear/iso230_2.h"
+#include "motion/metrology/linear/tolerances.h"
+#include "motion/metrology/contour/xy_line_test.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // exactly, readings generated from the seed's printed polynomials plus noise give
 // the polynomials back, and the automatic order choice picks what the seed picked.
 // Also what the seed's own SSE and R² say about its choice for X.
-#include "motion/metrology/polynomial_fit.h"
+#include "motion/metrology/compensation/polynomial_fit.h"
 
 #include <gtest/gtest.h>
 

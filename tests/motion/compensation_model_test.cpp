@@ -1,8 +1,8 @@
 // The compensation a device applies: a model maps the position a person asks for
 // to the one commanded. Checked against a simulated axis with a known error curve
 // and backlash: with the model's command the axis stops on the target.
-#include "motion/metrology/compensation_model.h"
-#include "motion/metrology/iso230_2.h"
+#include "motion/metrology/compensation/compensation_model.h"
+#include "motion/metrology/linear/iso230_2.h"
 
 #include <gtest/gtest.h>
 

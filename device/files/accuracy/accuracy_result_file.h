@@ -10,8 +10,8 @@
 // standard deviations): it recomputes everything else and refuses a file whose
 // figures disagree with its own table by more than a nanometre.
 #include "device/files/accuracy/file_problem.h"
-#include "motion/metrology/iso230_2.h"
-#include "motion/metrology/tolerances.h"
+#include "motion/metrology/linear/iso230_2.h"
+#include "motion/metrology/linear/tolerances.h"
 
 #include <QString>
 

@@ -7,9 +7,9 @@
 // with line, column and field; warnings (fewer than ISO's 5 cycles) do not refuse
 // the file. Writing is atomic.
 #include "device/files/accuracy/file_problem.h"
-#include "motion/metrology/axis_test.h"
-#include "motion/metrology/circular_test.h"
-#include "motion/metrology/xy_line_test.h"
+#include "motion/metrology/linear/axis_test.h"
+#include "motion/metrology/contour/circular_test.h"
+#include "motion/metrology/contour/xy_line_test.h"
 
 #include <QString>
 

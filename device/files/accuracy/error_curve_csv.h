@@ -5,8 +5,8 @@
 // the readings CSV. The writer gives the mean deviations x̄i of an evaluation, with
 // the per-direction means beside them.
 #include "device/files/accuracy/file_problem.h"
-#include "motion/metrology/iso230_2.h"
-#include "motion/metrology/polynomial_fit.h"
+#include "motion/metrology/linear/iso230_2.h"
+#include "motion/metrology/compensation/polynomial_fit.h"
 
 #include <string>
 #include <string_view>

@@ -10,7 +10,7 @@
 // suffix: _mm, _um (or _µm), _nm, _m, _in. direction is up or down (a
 // unidirectional test has only up); cycle is a whole number from 1.
 #include "device/files/accuracy/file_problem.h"
-#include "motion/metrology/iso230_2.h"
+#include "motion/metrology/linear/iso230_2.h"
 #include "motion/metrology/readings.h"
 
 #include <QString>

@@ -5,7 +5,7 @@
 #include "fuzz_files.h"
 
 #include "device/files/accuracy/accuracy_test_file.h"
-#include "motion/metrology/run_sequence.h"
+#include "motion/metrology/linear/run_sequence.h"
 
 namespace {
 

@@ -4,8 +4,8 @@
 // reads back as a valid table.
 #include "fuzz_files.h"
 
-#include "device/files/accuracy/compensation_exports.h"
-#include "device/files/accuracy/compensation_file.h"
+#include "device/files/accuracy/compensation/compensation_exports.h"
+#include "device/files/accuracy/compensation/compensation_file.h"
 
 namespace {
 

@@ -4,7 +4,7 @@
 // nanometre the format keeps.
 #include "fuzz_files.h"
 
-#include "device/files/accuracy/compensation_exports.h"
+#include "device/files/accuracy/compensation/compensation_exports.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "motion/metrology/polynomial_fit.h"
+#include "motion/metrology/compensation/polynomial_fit.h"
 
 #include <Eigen/Dense>
 

@@ -6,7 +6,7 @@
 // before each cycle and reads ↑ only. The overrun makes the final move to every
 // target come from the side the reading is filed under, so the reversal of the
 // drive (backlash) happens outside the measured targets.
-#include "motion/metrology/axis_test.h"
+#include "motion/metrology/linear/axis_test.h"
 #include "motion/metrology/readings.h"
 
 #include <cstddef>

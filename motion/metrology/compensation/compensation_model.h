@@ -19,7 +19,7 @@
 // Backlash b is the lost motion on a reversal: b = −B̄ (ISO 230-2's mean reversal
 // value is x̄↑ − x̄↓, negative when the axis stops short coming from below).
 #include "motion/calibration/error_polynomial.h"
-#include "motion/metrology/iso230_2.h"
+#include "motion/metrology/linear/iso230_2.h"
 #include "motion/metrology/problem.h"
 #include "motion/metrology/readings.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 // Pass or fail: an axis's limits on the ISO 230-2 figures, and the verdict of an
 // evaluation against them. Seed 000's Table 1 gives the analyzer's limits.
-#include "motion/metrology/iso230_2.h"
+#include "motion/metrology/linear/iso230_2.h"
 #include "motion/metrology/problem.h"
 
 #include <optional>

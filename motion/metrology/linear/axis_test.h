@@ -4,7 +4,7 @@
 // reading is taken. Plain data with a validator that reports every problem at
 // once; runSequence() (run_sequence.h) turns it into the stops a runner visits.
 #include "motion/metrology/problem.h"
-#include "motion/metrology/tolerances.h"
+#include "motion/metrology/linear/tolerances.h"
 
 #include <optional>
 #include <string>

@@ -1,4 +1,4 @@
-#include "motion/metrology/axis_test.h"
+#include "motion/metrology/linear/axis_test.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "motion/metrology/run_sequence.h"
+#include "motion/metrology/linear/run_sequence.h"
 
 #include <cmath>
 #include <string>

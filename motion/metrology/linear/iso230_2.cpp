@@ -1,4 +1,4 @@
-#include "motion/metrology/iso230_2.h"
+#include "motion/metrology/linear/iso230_2.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,8 +6,8 @@
 // direction), plus the backlash. How a fit was chosen travels beside it for the
 // record; the reader validates the model as a device would.
 #include "device/files/accuracy/file_problem.h"
-#include "motion/metrology/compensation_model.h"
-#include "motion/metrology/polynomial_fit.h"
+#include "motion/metrology/compensation/compensation_model.h"
+#include "motion/metrology/compensation/polynomial_fit.h"
 
 #include <QString>
 

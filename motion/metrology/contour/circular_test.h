@@ -16,7 +16,7 @@
 // The evaluated revolution is 360°; the runner adds a lead arc before and after
 // (feed-in/feed-out, not evaluated) so the axes are at feed when it starts.
 #include "motion/metrology/problem.h"
-#include "motion/metrology/xy_line_test.h"
+#include "motion/metrology/contour/xy_line_test.h"
 
 #include <optional>
 #include <string>

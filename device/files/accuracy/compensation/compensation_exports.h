@@ -17,7 +17,7 @@
 // A polynomial is sampled at the nominals given (by default 41 evenly over the
 // range it was fitted on); a table at its own points.
 #include "device/files/accuracy/file_problem.h"
-#include "motion/metrology/compensation_model.h"
+#include "motion/metrology/compensation/compensation_model.h"
 
 #include <QString>
 

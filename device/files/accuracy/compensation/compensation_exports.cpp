@@ -1,4 +1,4 @@
-#include "device/files/accuracy/compensation_exports.h"
+#include "device/files/accuracy/compensation/compensation_exports.h"
 
 #include "device/files/accuracy/csv_table.h"
 #include "device/files/text_file.h"

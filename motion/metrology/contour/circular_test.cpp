@@ -1,4 +1,4 @@
-#include "motion/metrology/circular_test.h"
+#include "motion/metrology/contour/circular_test.h"
 
 #include <Eigen/Dense>
 

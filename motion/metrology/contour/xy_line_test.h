@@ -10,8 +10,8 @@
 // Table 5 follows the perpendicular formula (tests/motion/accuracy_seed000_test.cpp).
 // The seed's stops are approached from the start of the line only, so the test is
 // unidirectional: the ISO 230-2 figures reported are the ↑ ones.
-#include "motion/metrology/axis_test.h"
-#include "motion/metrology/iso230_2.h"
+#include "motion/metrology/linear/axis_test.h"
+#include "motion/metrology/linear/iso230_2.h"
 #include "motion/metrology/problem.h"
 
 #include <optional>

@@ -1,4 +1,4 @@
-#include "motion/metrology/compensation_model.h"
+#include "motion/metrology/compensation/compensation_model.h"
 
 #include <algorithm>
 #include <cmath>

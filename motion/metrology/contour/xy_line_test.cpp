@@ -1,4 +1,4 @@
-#include "motion/metrology/xy_line_test.h"
+#include "motion/metrology/contour/xy_line_test.h"
 
 #include <cmath>
 

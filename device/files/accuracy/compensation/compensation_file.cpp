@@ -1,4 +1,4 @@
-#include "device/files/accuracy/compensation_file.h"
+#include "device/files/accuracy/compensation/compensation_file.h"
 
 #include "device/files/accuracy/load_text.h"
 #include "device/files/text_file.h"

@@ -1,4 +1,4 @@
-#include "motion/metrology/tolerances.h"
+#include "motion/metrology/linear/tolerances.h"
 
 #include <cmath>
 
