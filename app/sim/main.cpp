@@ -1,6 +1,10 @@
 // benchpilot-sim: the reference firmware served on a pseudo-terminal.
-//   benchpilot-sim --instrument analyzer|stage --pty PATH [--time-scale K] [--baud N]
+//   benchpilot-sim --instrument analyzer|stage --pty PATH [--protocol benchpilot|grbl|grblhal]
+//                  [--time-scale K] [--baud N]
+// --protocol chooses what the firmware speaks over the same machine model: the BenchPilot
+// protocol, or the GRBL 1.1 / grblHAL personality (docs/grbl.md).
 #include "device/link/simulated_link.h"
+#include "device/sim/grbl_firmware.h"
 #include "pty_transport.h"
 
 #include <QCommandLineParser>
@@ -9,6 +13,7 @@
 #include <QSocketNotifier>
 
 #include <csignal>
+#include <memory>
 #include <cstdio>
 #include <sys/socket.h>
 #include <unistd.h>
@@ -45,12 +50,18 @@ int main(int argc, char** argv)
                                  QStringLiteral("k"), QStringLiteral("1"));
     QCommandLineOption baud(QStringLiteral("baud"), QCoreApplication::translate("sim", "link speed the firmware assumes"),
                             QStringLiteral("n"), QStringLiteral("115200"));
-    p.addOptions({instrument, ptyPath, timeScale, baud});
+    QCommandLineOption protocol(QStringLiteral("protocol"),
+                                QCoreApplication::translate("sim", "benchpilot, grbl or grblhal"), QStringLiteral("name"),
+                                QStringLiteral("benchpilot"));
+    p.addOptions({instrument, ptyPath, protocol, timeScale, baud});
     p.process(app);
 
     const QString kind = p.value(instrument);
     if (kind != QLatin1String("analyzer") && kind != QLatin1String("stage"))
         return fail(QCoreApplication::translate("sim", "--instrument must be analyzer or stage (got '%1')").arg(kind));
+    const QString proto = p.value(protocol);
+    if (proto != QLatin1String("benchpilot") && proto != QLatin1String("grbl") && proto != QLatin1String("grblhal"))
+        return fail(QCoreApplication::translate("sim", "--protocol must be benchpilot, grbl or grblhal (got '%1')").arg(proto));
     if (p.value(ptyPath).isEmpty())
         return fail(QCoreApplication::translate("sim", "--pty PATH is required"));
     bool ok = false;
@@ -75,9 +86,17 @@ int main(int argc, char** argv)
     if (::symlink(qPrintable(pty.slavePath()), qPrintable(link)) != 0)
         return fail(QCoreApplication::translate("sim", "cannot create symlink %1: %2").arg(link, QString::fromLocal8Bit(strerror(errno))));
 
-    dev::SimulatorHost host(kind == QLatin1String("stage") ? sim::stageConfig() : sim::analyzerConfig(), baudRate, &pty);
-    host.setTimeScale(scale);
-    host.start();
+    const sim::MachineConfig machine = kind == QLatin1String("stage") ? sim::stageConfig() : sim::analyzerConfig();
+    std::unique_ptr<dev::SimulatorHost> host;
+    if (proto == QLatin1String("benchpilot"))
+        host = std::make_unique<dev::SimulatorHost>(machine, baudRate, &pty);
+    else
+        host = std::make_unique<dev::SimulatorHost>(
+            std::make_unique<sim::GrblFirmware>(machine, proto == QLatin1String("grbl") ? sim::GrblFirmware::Dialect::Grbl
+                                                                                        : sim::GrblFirmware::Dialect::GrblHal),
+            &pty);
+    host->setTimeScale(scale);
+    host->start();
 
     if (::socketpair(AF_UNIX, SOCK_STREAM, 0, g_signalPipe) != 0)
         return fail(QStringLiteral("socketpair failed"));
@@ -86,8 +105,8 @@ int main(int argc, char** argv)
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);
 
-    std::printf("%s -> %s (%s, %d baud, time scale %g)\n", qPrintable(link), qPrintable(pty.slavePath()), qPrintable(kind),
-                baudRate, scale);
+    std::printf("%s -> %s (%s, %s, %d baud, time scale %g)\n", qPrintable(link), qPrintable(pty.slavePath()), qPrintable(kind),
+                qPrintable(proto), baudRate, scale);
     std::fflush(stdout);
     const int rc = app.exec();
     ::unlink(qPrintable(link));

@@ -8,11 +8,18 @@ constexpr double kMaxCatchUpS = 5.0;
 }
 
 SimulatorHost::SimulatorHost(const sim::MachineConfig& config, qint32 linkBaud, Transport* deviceEnd, QObject* parent)
-    : QObject(parent), m_firmware(config, static_cast<std::uint32_t>(linkBaud > 0 ? linkBaud : 921600)), m_end(deviceEnd)
+    : SimulatorHost(std::make_unique<sim::Firmware>(config, static_cast<std::uint32_t>(linkBaud > 0 ? linkBaud : 921600)),
+                    deviceEnd, parent)
+{
+    m_firmware = static_cast<sim::Firmware*>(m_device.get());
+}
+
+SimulatorHost::SimulatorHost(std::unique_ptr<sim::SerialDevice> device, Transport* deviceEnd, QObject* parent)
+    : QObject(parent), m_device(std::move(device)), m_end(deviceEnd)
 {
     connect(m_end, &Transport::bytesReceived, this, [this](const QByteArray& b) {
         pump();  // bring the clock up to now before acting, so replies carry the right time
-        m_firmware.receive(reinterpret_cast<const std::uint8_t*>(b.constData()), static_cast<std::size_t>(b.size()));
+        m_device->receive(reinterpret_cast<const std::uint8_t*>(b.constData()), static_cast<std::size_t>(b.size()));
         flush();
     });
     m_timer.setTimerType(Qt::PreciseTimer);
@@ -60,7 +67,7 @@ void SimulatorHost::setManualClock(bool manual)
 
 void SimulatorHost::advance(double dtS)
 {
-    m_firmware.advance(dtS);
+    m_device->advance(dtS);
     flush();
 }
 
@@ -74,14 +81,14 @@ void SimulatorHost::pump()
     if (dt > kMaxCatchUpS)
         dt = kMaxCatchUpS;
     if (dt > 0)
-        m_firmware.advance(dt);
+        m_device->advance(dt);
     flush();
 }
 
 void SimulatorHost::flush()
 {
     m_out.clear();
-    m_firmware.drainOutput(m_out);
+    m_device->drainOutput(m_out);
     if (!m_out.empty())
         m_end->write(QByteArray(reinterpret_cast<const char*>(m_out.data()), static_cast<qsizetype>(m_out.size())));
 }

@@ -5,6 +5,7 @@
 #include "device/link/loopback.h"
 #include "device/protocol/messages_path.h"
 #include "device/sim/firmware.h"
+#include "device/sim/serial_device.h"
 
 #include <QElapsedTimer>
 #include <QTimer>
@@ -14,13 +15,17 @@
 
 namespace dev {
 
-/// Drives a sim::Firmware from the device end of any transport.
+/// Drives a simulated device (the BenchPilot firmware, or any sim::SerialDevice such as the
+/// GRBL personality) from the device end of any transport.
 class SimulatorHost : public QObject {
     Q_OBJECT
 public:
     SimulatorHost(const sim::MachineConfig& config, qint32 linkBaud, Transport* deviceEnd, QObject* parent = nullptr);
+    SimulatorHost(std::unique_ptr<sim::SerialDevice> device, Transport* deviceEnd, QObject* parent = nullptr);
 
-    sim::Firmware& firmware() { return m_firmware; }
+    /// The BenchPilot firmware; only for a host made with a MachineConfig.
+    sim::Firmware& firmware() { return *m_firmware; }
+    sim::SerialDevice& device() { return *m_device; }
     /// Virtual seconds per wall-clock second. The firmware budgets telemetry per
     /// virtual second of its link, so over a baud-paced LoopbackPair a scale
     /// above 1 sends more than the wire carries and replies queue behind samples:
@@ -29,7 +34,8 @@ public:
     {
         m_timeScale = scale;
         // A quiet host is judged on its own clock: 1 s of wall time is `scale` s here.
-        m_firmware.setHostSilenceLimitS(proto::kPathHostSilenceMs / 1000.0 * std::max(1.0, scale));
+        if (m_firmware)
+            m_firmware->setHostSilenceLimitS(proto::kPathHostSilenceMs / 1000.0 * std::max(1.0, scale));
     }
     /// Stops the clock; `advance()` then moves virtual time by hand (deterministic tests).
     void setManualClock(bool manual);
@@ -40,7 +46,8 @@ private:
     void pump();
     void flush();
 
-    sim::Firmware m_firmware;
+    std::unique_ptr<sim::SerialDevice> m_device;
+    sim::Firmware* m_firmware = nullptr;  ///< m_device, when it is the BenchPilot firmware
     Transport* m_end;
     QTimer m_timer;
     QTimer m_reopen;          ///< after the link was lost: retries opening until the cable is back

@@ -5,6 +5,7 @@
 #include "device/protocol/frame_codec.h"
 #include "device/protocol/messages.h"
 #include "device/protocol/messages_path.h"
+#include "device/sim/serial_device.h"
 #include "device/sim/sim_machine.h"
 
 #include <array>
@@ -13,7 +14,7 @@
 
 namespace sim {
 
-class Firmware {
+class Firmware : public SerialDevice {
 public:
     /// Output not yet drained beyond which telemetry batches are dropped.
     static constexpr std::size_t kMaxPendingOutputBytes = 64 * 1024;
@@ -21,11 +22,11 @@ public:
     Firmware(const MachineConfig& config, std::uint32_t linkBaud);
 
     /// Bytes from the host, in any chunking.
-    void receive(const std::uint8_t* data, std::size_t size);
+    void receive(const std::uint8_t* data, std::size_t size) override;
     /// Runs the machine for `dtS` of virtual time (whole ticks; the remainder carries).
-    void advance(double dtS);
+    void advance(double dtS) override;
     /// Moves the bytes the device has sent since the last call to `out`.
-    void drainOutput(std::vector<std::uint8_t>& out);
+    void drainOutput(std::vector<std::uint8_t>& out) override;
 
     SimMachine& machine() { return m_machine; }
     const SimMachine& machine() const { return m_machine; }

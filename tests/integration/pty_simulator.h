@@ -27,15 +27,17 @@ inline QJsonObject lastJson(const QString& text)
 /// benchpilot-sim on a pty in a private directory; stopped with SIGTERM at the end.
 class PtySimulator {
 public:
-    bool start(const QString& instrument, double timeScale = 4)
+    /// `extraArgs`: more options for benchpilot-sim (e.g. --protocol grbl).
+    bool start(const QString& instrument, double timeScale = 4, const QStringList& extraArgs = {})
     {
         if (!m_dir.isValid()) {
             m_error = QStringLiteral("no temporary directory");
             return false;
         }
         m_link = m_dir.filePath(QStringLiteral("ttyBP"));
-        m_proc.start(binary("benchpilot-sim"), {QStringLiteral("--instrument"), instrument, QStringLiteral("--pty"), m_link,
-                                                 QStringLiteral("--time-scale"), QString::number(timeScale)});
+        m_proc.start(binary("benchpilot-sim"), QStringList{QStringLiteral("--instrument"), instrument, QStringLiteral("--pty"),
+                                                           m_link, QStringLiteral("--time-scale"), QString::number(timeScale)}
+                                                   + extraArgs);
         if (!m_proc.waitForStarted(10000)) {
             m_error = QStringLiteral("could not start %1: %2").arg(binary("benchpilot-sim"), m_proc.errorString());
             return false;

@@ -1,0 +1,15 @@
+#pragma once
+// Reading a whole file for the accuracy readers: its text, or file.unreadable
+// naming it. The readers then name problems by the file's name, not its path.
+#include "device/files/accuracy/file_problem.h"
+
+#include <QString>
+
+#include <optional>
+#include <string>
+
+namespace accuracyfiles {
+
+std::optional<std::string> loadText(const QString& path, std::string& fileName, FileProblems& out);
+
+} // namespace accuracyfiles
