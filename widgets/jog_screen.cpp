@@ -18,7 +18,7 @@
 
 namespace ui {
 
-JogScreen::JogScreen(dev::InstrumentClient* client, QWidget* parent) : QWidget(parent), m_client(client)
+JogScreen::JogScreen(dev::Instrument* client, QWidget* parent) : QWidget(parent), m_client(client)
 {
     setFocusPolicy(Qt::StrongFocus);
     auto* top = new QVBoxLayout(this);
@@ -79,10 +79,10 @@ JogScreen::JogScreen(dev::InstrumentClient* client, QWidget* parent) : QWidget(p
         endAllHolds();
         m_client->stop();
     });
-    connect(m_client, &dev::InstrumentClient::identified, this, &JogScreen::rebuild);
-    connect(m_client, &dev::InstrumentClient::statusChanged, this, &JogScreen::refresh);
-    connect(m_client, &dev::InstrumentClient::limitsChanged, this, &JogScreen::refresh);
-    connect(m_client, &dev::InstrumentClient::stateChanged, this, [this](dev::LinkState s) {
+    connect(m_client, &dev::Instrument::identified, this, &JogScreen::rebuild);
+    connect(m_client, &dev::Instrument::statusChanged, this, &JogScreen::refresh);
+    connect(m_client, &dev::Instrument::limitsChanged, this, &JogScreen::refresh);
+    connect(m_client, &dev::Instrument::stateChanged, this, [this](dev::LinkState s) {
         if (s != dev::LinkState::Ready)
             m_holds.clear();  // the client dropped its jogs with the link
         refresh();
@@ -204,7 +204,7 @@ void JogScreen::homeAxes(quint8 mask)
     for (int i = 0; i < id.axes.size(); ++i)
         if (mask == 0 || (mask & (1u << i)))
             which += id.axes[i].letter;
-    const QString order = id.capabilities & proto::CapCoupledXyThenZ && which.contains(QLatin1Char('Z')) && which.size() > 1
+    const QString order = m_client->capabilities().testFlag(dev::Capability::CoupledXyThenZ) && which.contains(QLatin1Char('Z')) && which.size() > 1
         ? tr(" Z rises to its switch first, then the other axes go to theirs.")
         : QString();
     if (!confirm(tr("Home %1 of the %2?%3 Keep hands and labware clear.").arg(which, id.kindName(), order)))

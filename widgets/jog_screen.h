@@ -1,7 +1,7 @@
 #pragma once
 // The Jog screen of one instrument: per-axis readouts and lamps, step jog,
 // hold-to-jog (buttons and keys), homing, zero, go-to, soft limits.
-#include "device/client/instrument_client.h"
+#include "device/client/instrument.h"
 
 #include <QWidget>
 
@@ -28,7 +28,7 @@ public:
     /// composition root supplies a dialog; without one the answer is yes.
     using Confirm = std::function<bool(const QString& question)>;
 
-    JogScreen(dev::InstrumentClient* client, QWidget* parent = nullptr);
+    JogScreen(dev::Instrument* client, QWidget* parent = nullptr);
     void setConfirm(Confirm confirm) { m_confirm = std::move(confirm); }
     /// Jog speed as a share of each axis' maximum, 0.01–1.
     double speedFraction() const;
@@ -59,7 +59,7 @@ private:
     double holdVelocity(int axis, int direction) const;
     bool confirm(const QString& question);
 
-    dev::InstrumentClient* m_client;
+    dev::Instrument* m_client;
     Confirm m_confirm;
     QLabel* m_title;
     QLabel* m_state;

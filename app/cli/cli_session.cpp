@@ -1,5 +1,6 @@
 #include "cli_session.h"
 
+#include "device/backends/benchpilot/benchpilot_client.h"
 #include "device/link/serial_transport.h"
 #include "device/link/simulated_link.h"
 
@@ -44,9 +45,9 @@ bool spinUntil(const std::function<bool()>& done, int timeoutMs)
 }
 
 CliSession::CliSession(const LinkOptions& options, const QString& prefix, QTextStream& out, QTextStream& err)
-    : m_opt(options), m_prefix(prefix), m_out(out), m_err(err), m_client(new dev::InstrumentClient(this))
+    : m_opt(options), m_prefix(prefix), m_out(out), m_err(err), m_client(new dev::InstrumentProxy(this))
 {
-    connect(m_client, &dev::InstrumentClient::eventReceived, this, [this](const dev::DeviceEvent& e) {
+    connect(m_client, &dev::Instrument::eventReceived, this, [this](const dev::DeviceEvent& e) {
         using K = proto::EventKind;
         if (e.kind == K::LimitHit || e.kind == K::Fault || e.kind == K::EStop || e.kind == K::LostSteps
             || e.kind == K::JogExpired)
@@ -57,7 +58,8 @@ CliSession::CliSession(const LinkOptions& options, const QString& prefix, QTextS
 
 CliSession::~CliSession()
 {
-    m_client->setTransport(nullptr);
+    if (m_benchPilot)
+        m_benchPilot->setTransport(nullptr);
 }
 
 void CliSession::report(const QString& message)
@@ -89,11 +91,15 @@ bool CliSession::connectDevice()
     QString linkError;
     // Only while connecting: the lambda holds a reference to this frame's string
     // (ASan caught a later link error writing into the dead frame).
-    const auto watch = connect(m_client, &dev::InstrumentClient::linkError, this, [&linkError](const QString& m) {
+    const auto watch = connect(m_client, &dev::Instrument::linkError, this, [&linkError](const QString& m) {
         if (linkError.isEmpty())
             linkError = m;
     });
-    m_client->setTransport(transport);
+    // Every port speaks the BenchPilot protocol today; a port that answers with a GRBL
+    // banner gets its backend here, behind the same proxy (issue 19).
+    m_benchPilot = new dev::BenchPilotClient;
+    m_client->setBackend(m_benchPilot);
+    m_benchPilot->setTransport(transport);
     m_client->connectLink();
     const bool finished = spinUntil(
         [this] {
@@ -133,7 +139,7 @@ bool CliSession::parseAxes(const QString& text, quint8* mask)
     return true;
 }
 
-int CliSession::request(const std::function<void(dev::InstrumentClient::Callback)>& send, const QString& what)
+int CliSession::request(const std::function<void(dev::Instrument::Callback)>& send, const QString& what)
 {
     bool done = false;
     std::optional<dev::RequestError> error;
@@ -157,7 +163,7 @@ int CliSession::waitUntilStill(const QString& what)
 {
     // Two fresh status polls after the request was accepted, so "not moving" is news, not history.
     int fresh = 0;
-    auto c = connect(m_client, &dev::InstrumentClient::statusChanged, this, [&fresh] { ++fresh; });
+    auto c = connect(m_client, &dev::Instrument::statusChanged, this, [&fresh] { ++fresh; });
     const bool still = spinUntil(
         [&] {
             return m_client->state() != dev::LinkState::Ready || (fresh >= 2 && !m_client->status().anyMoving());

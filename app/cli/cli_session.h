@@ -3,13 +3,18 @@
 // device commands share: send a request and wait for its answer, wait until the
 // machine is still, print the status as text or JSON.
 #include "command.h"
-#include "device/client/instrument_client.h"
+#include "device/client/instrument_proxy.h"
 
 #include <QObject>
+#include <QPointer>
 #include <QStringList>
 #include <QTextStream>
 
 #include <functional>
+
+namespace dev {
+class BenchPilotClient;
+}
 
 namespace cli {
 
@@ -22,13 +27,14 @@ public:
 
     /// Opens the link and waits until the device is ready; false after saying why.
     bool connectDevice();
-    dev::InstrumentClient* client() { return m_client; }
+    /// The instrument, whichever backend the connection speaks (a proxy in front of it).
+    dev::Instrument* instrument() { return m_client; }
     const LinkOptions& options() const { return m_opt; }
     /// The in-process simulator's link when that is what is connected, else nullptr.
     QObject* link() const { return m_link; }
 
     /// Sends one request and waits for its answer; prints a refusal. Returns an exit code.
-    int request(const std::function<void(dev::InstrumentClient::Callback)>& send, const QString& what);
+    int request(const std::function<void(dev::Instrument::Callback)>& send, const QString& what);
     /// Waits until no axis moves (or the timeout, then stops the machine); prints the status.
     int waitUntilStill(const QString& what);
     /// Axis letters ("XY", "X,Z") to a mask; false after a usage message.
@@ -43,7 +49,8 @@ private:
     QString m_prefix;
     QTextStream& m_out;
     QTextStream& m_err;
-    dev::InstrumentClient* m_client;
+    dev::InstrumentProxy* m_client;
+    QPointer<dev::BenchPilotClient> m_benchPilot;  ///< the backend, owned by the proxy
     QObject* m_link = nullptr;    ///< owns the transport (simulated link or serial port)
     QStringList m_motionErrors;   ///< limit hits and faults seen while waiting
 };

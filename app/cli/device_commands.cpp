@@ -25,6 +25,18 @@ bool noArguments(Invocation& inv)
     return false;
 }
 
+/// The planner's profile as `info --json` names it; "unstated" when the device gave no limits.
+QString profileName(proto::MotionProfile p)
+{
+    switch (p) {
+    case proto::MotionProfile::Unstated: return QStringLiteral("unstated");
+    case proto::MotionProfile::Trapezoid: return QStringLiteral("trapezoid");
+    case proto::MotionProfile::JerkLimited: return QStringLiteral("jerk-limited");
+    case proto::MotionProfile::SeedSCurve: return QStringLiteral("seed-s-curve");
+    }
+    return QStringLiteral("unstated");
+}
+
 int info(Invocation& inv)
 {
     if (!noArguments(inv))
@@ -32,31 +44,53 @@ int info(Invocation& inv)
     CliSession* s = inv.session();
     if (!s)
         return LinkTrouble;
-    const auto& id = s->client()->identity();
+    const auto& id = s->instrument()->identity();
     if (inv.json()) {
         QJsonArray axes;
-        for (const auto& a : id.axes)
-            axes.append(QJsonObject{{QStringLiteral("axis"), QString(a.letter)},
-                                    {QStringLiteral("unit"), a.unitName()},
-                                    {QStringLiteral("travel_min"), a.travelMin},
-                                    {QStringLiteral("travel_max"), a.travelMax},
-                                    {QStringLiteral("max_speed"), a.maxSpeed},
-                                    {QStringLiteral("resolution"), a.resolution}});
+        for (const auto& a : id.axes) {
+            QJsonObject o{{QStringLiteral("axis"), QString(a.letter)},
+                          {QStringLiteral("unit"), a.unitName()},
+                          {QStringLiteral("travel_min"), a.travelMin},
+                          {QStringLiteral("travel_max"), a.travelMax},
+                          {QStringLiteral("max_speed"), a.maxSpeed},
+                          {QStringLiteral("resolution"), a.resolution}};
+            if (id.reportsMotionLimits()) {  // per second², per second³ (0: jerk not limited), per second
+                o[QStringLiteral("max_accel")] = a.maxAccel;
+                o[QStringLiteral("max_jerk")] = a.maxJerk;
+                o[QStringLiteral("default_speed")] = a.defaultSpeed;
+            }
+            axes.append(o);
+        }
+        QJsonArray features;
+        const dev::Capabilities can = s->instrument()->capabilities();
+        for (dev::Capability c : dev::allCapabilities())
+            if (can.testFlag(c))
+                features.append(QString::fromStdString(dev::capabilityKey(c)));
         inv.out() << QJsonDocument(QJsonObject{{QStringLiteral("instrument"), id.kindName()},
                                                {QStringLiteral("model"), id.model},
                                                {QStringLiteral("firmware"), id.firmware},
+                                               {QStringLiteral("family"), id.family},
                                                {QStringLiteral("protocol"), id.protocolVersion},
-                                               {QStringLiteral("capabilities"), static_cast<qint64>(id.capabilities)},
+                                               {QStringLiteral("capabilities"), static_cast<qint64>(id.protocolCapabilities)},
+                                               {QStringLiteral("features"), features},
+                                               {QStringLiteral("motion_profile"), profileName(id.motionProfile)},
                                                {QStringLiteral("link_baud"), static_cast<qint64>(id.linkBaud)},
                                                {QStringLiteral("axes"), axes}})
                          .toJson(QJsonDocument::Compact)
                   << "\n";
     } else {
-        inv.out() << id.model << " (" << id.kindName() << "), firmware " << id.firmware << ", protocol " << id.protocolVersion
-                  << "\n  link: " << s->client()->linkDescription() << "\n";
-        for (const auto& a : id.axes)
+        inv.out() << id.model << " (" << id.kindName() << "), firmware " << id.firmware << ", " << id.family
+                  << "\n  link: " << s->instrument()->linkDescription() << "\n";
+        for (const auto& a : id.axes) {
             inv.out() << "  " << a.letter << ": " << a.travelMin << " … " << a.travelMax << " " << a.unitName() << ", max "
-                      << a.maxSpeed << " " << a.unitName() << "/s, resolution " << a.resolution << " " << a.unitName() << "\n";
+                      << a.maxSpeed << " " << a.unitName() << "/s, resolution " << a.resolution << " " << a.unitName();
+            if (id.reportsMotionLimits())
+                inv.out() << ", " << a.maxAccel << " " << a.unitName() << "/s²"
+                          << (a.maxJerk > 0 ? QStringLiteral(", %1 %2/s³").arg(a.maxJerk).arg(a.unitName()) : QString());
+            inv.out() << "\n";
+        }
+        if (!id.reportsMotionLimits())
+            inv.out() << "  " << tr("planner limits: not reported (estimates assume the reference machine's)") << "\n";
     }
     inv.out().flush();
     return Ok;
@@ -82,7 +116,7 @@ int home(Invocation& inv)
     quint8 mask = 0;
     if (!s->parseAxes(inv.arguments().join(QString()), &mask))
         return Usage;
-    if (int rc = s->request([&](auto cb) { s->client()->home(mask, cb); }, tr("home")))
+    if (int rc = s->request([&](auto cb) { s->instrument()->home(mask, cb); }, tr("home")))
         return rc;
     return s->waitUntilStill(tr("home"));
 }
@@ -103,7 +137,7 @@ int move(Invocation& inv)
     CliSession* s = inv.session();
     if (!s)
         return LinkTrouble;
-    const auto& id = s->client()->identity();
+    const auto& id = s->instrument()->identity();
     QVector<QPair<int, double>> targets;
     for (const QString& a : words) {
         const int axis = id.axisIndex(a[0]);
@@ -116,7 +150,7 @@ int move(Invocation& inv)
         targets.push_back({axis, v});
     }
     const bool relative = inv.isSet(QStringLiteral("relative"));
-    if (int rc = s->request([&](auto cb) { s->client()->move(targets, relative, speed, cb); }, tr("move")))
+    if (int rc = s->request([&](auto cb) { s->instrument()->move(targets, relative, speed, cb); }, tr("move")))
         return rc;
     return s->waitUntilStill(tr("move"));
 }
@@ -136,15 +170,15 @@ int jog(Invocation& inv)
     CliSession* s = inv.session();
     if (!s)
         return LinkTrouble;
-    const auto& id = s->client()->identity();
+    const auto& id = s->instrument()->identity();
     const int axis = words[0].size() == 1 ? id.axisIndex(words[0][0]) : -1;
     if (axis < 0)
         return inv.usage(tr("axis '%1' does not exist on the %2").arg(words[0]).arg(id.kindName()));
     if (std::abs(v) > id.axes[axis].maxSpeed)
         return inv.usage(tr("velocity must be within ±%1 %2/s").arg(id.axes[axis].maxSpeed).arg(id.axes[axis].unitName()));
     QString refused;
-    dev::InstrumentClient* c = s->client();
-    auto conn = QObject::connect(c, &dev::InstrumentClient::requestFailed, s, [&](const dev::RequestError& e) { refused = e.message; });
+    dev::Instrument* c = s->instrument();
+    auto conn = QObject::connect(c, &dev::Instrument::requestFailed, s, [&](const dev::RequestError& e) { refused = e.message; });
     c->startJog(axis, v);
     spinUntil([&] { return !refused.isEmpty() || c->state() != dev::LinkState::Ready; }, static_cast<int>(seconds * 1000));
     c->stopJog(axis);
@@ -161,7 +195,7 @@ int stop(Invocation& inv)
     CliSession* s = inv.session();
     if (!s)
         return LinkTrouble;
-    if (int rc = s->request([&](auto cb) { s->client()->stop(0, cb); }, tr("stop")))
+    if (int rc = s->request([&](auto cb) { s->instrument()->stop(0, cb); }, tr("stop")))
         return rc;
     return s->waitUntilStill(tr("stop"));
 }
@@ -181,7 +215,7 @@ int estop(Invocation& inv)
     CliSession* s = inv.session();
     if (!s)
         return LinkTrouble;
-    if (int rc = s->request([&](auto cb) { s->client()->estop(cb); }, tr("estop")))
+    if (int rc = s->request([&](auto cb) { s->instrument()->estop(cb); }, tr("estop")))
         return rc;
     s->takeMotionErrors();  // the E-stop event is the point here, not a failure
     return settleAndPrint(s);
@@ -194,7 +228,7 @@ int reset(Invocation& inv)
     CliSession* s = inv.session();
     if (!s)
         return LinkTrouble;
-    if (int rc = s->request([&](auto cb) { s->client()->reset(cb); }, tr("reset")))
+    if (int rc = s->request([&](auto cb) { s->instrument()->reset(cb); }, tr("reset")))
         return rc;
     return settleAndPrint(s);
 }
@@ -209,7 +243,7 @@ int zero(Invocation& inv)
     quint8 mask = 0;
     if (!s->parseAxes(inv.arguments().join(QString()), &mask))
         return Usage;
-    if (int rc = s->request([&](auto cb) { s->client()->setZero(mask, cb); }, tr("zero")))
+    if (int rc = s->request([&](auto cb) { s->instrument()->setZero(mask, cb); }, tr("zero")))
         return rc;
     return settleAndPrint(s);
 }
@@ -235,15 +269,15 @@ int limits(Invocation& inv)
     CliSession* s = inv.session();
     if (!s)
         return LinkTrouble;
-    const auto& id = s->client()->identity();
+    const auto& id = s->instrument()->identity();
     for (const Change& c : changes) {
         const int axis = id.axisIndex(c.text[0]);
         if (axis < 0)
             return inv.usage(tr("axis '%1' does not exist on the %2").arg(c.text[0]).arg(id.kindName()));
-        if (int rc = s->request([&](auto cb) { s->client()->setSoftLimits(axis, c.lo, c.hi, cb); }, tr("limits")))
+        if (int rc = s->request([&](auto cb) { s->instrument()->setSoftLimits(axis, c.lo, c.hi, cb); }, tr("limits")))
             return rc;
     }
-    const auto& lim = s->client()->softLimits();
+    const auto& lim = s->instrument()->softLimits();
     if (inv.json()) {
         QJsonObject o;
         for (int i = 0; i < id.axes.size() && i < lim.size(); ++i)

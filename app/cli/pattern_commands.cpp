@@ -253,7 +253,7 @@ int run(Invocation& inv)
     CliSession* s = inv.session();
     if (!s)
         return LinkTrouble;
-    dev::InstrumentClient* c = s->client();
+    dev::Instrument* c = s->instrument();
     if (inv.isSet(QStringLiteral("home-first"))) {
         if (int rc = s->request([&](auto cb) { c->home(0, cb); }, tr("home")))
             return rc;
@@ -266,17 +266,19 @@ int run(Invocation& inv)
         if (!homed || c->state() != dev::LinkState::Ready)
             return inv.refused(tr("homing did not finish"));
     }
-    dev::ProtocolPathClient paths(c);
-    jobs::PatternRunner runner(c, &paths);
+    dev::PathClient* paths = c->paths();
+    if (!paths || !c->capabilities().testFlag(dev::Capability::PathQueue))
+        return inv.refused(tr("the %1 (%2) has no path queue to run patterns on").arg(c->identity().kindName(), c->identity().family));
+    jobs::PatternRunner runner(c);
     bool limits = false;
-    paths.refreshLimits([&](const auto&) { limits = true; });
+    paths->refreshLimits([&](const auto&) { limits = true; });
     spinUntil([&] { return limits; }, 3000);
     QStringList problems;
     QObject::connect(&runner, &jobs::PatternRunner::message, &runner, [&](const QString& m, bool problem) {
         if (problem)
             problems << m;
     });
-    QObject::connect(c, &dev::InstrumentClient::telemetryReceived, &runner,
+    QObject::connect(c, &dev::Instrument::telemetryReceived, &runner,
                      [&](const proto::TelemetryBatch& b) { jobs::feedBatch(runner, *c, b); });
     c->subscribe(jobs::patternChannels(), 250);
     jobs::PatternRunner::Options o;

@@ -4,6 +4,7 @@
 #include "cli_session.h"
 #include "recipe_setup.h"
 
+#include "device/jobs/machine_model.h"
 #include "device/jobs/recipe_runner.h"
 
 #include <QCoreApplication>
@@ -113,7 +114,7 @@ int runRecipe(Invocation& inv)
     CliSession* s = inv.session();
     if (!s)
         return LinkTrouble;
-    dev::InstrumentClient* c = s->client();
+    dev::Instrument* c = s->instrument();
     if (inv.isSet(QStringLiteral("home"))) {
         if (int rc = s->request([&](auto cb) { c->home(0, cb); }, tr("home")))
             return rc;
@@ -123,7 +124,7 @@ int runRecipe(Invocation& inv)
     // After a killed run the analyzer may still finish the move it had: wait for
     // two fresh status polls that show it still.
     int fresh = 0;
-    auto conn = QObject::connect(c, &dev::InstrumentClient::statusChanged, s, [&fresh] { ++fresh; });
+    auto conn = QObject::connect(c, &dev::Instrument::statusChanged, s, [&fresh] { ++fresh; });
     spinUntil([&] { return c->state() != dev::LinkState::Ready || (fresh >= 2 && !c->status().anyMoving()); }, 30000);
     QObject::disconnect(conn);
 
@@ -133,7 +134,10 @@ int runRecipe(Invocation& inv)
         start = {axes[0].commanded, axes[1].commanded, axes[2].commanded, axes[3].commanded};
     if (resuming)
         start = jobs::RecipeRunner::resumeStart(logPath, *c);
-    const plates::RecipePlan plan = plates::planRecipe(l.recipe, l.context, start);
+    // Times (the ETA) follow the analyzer's own planner limits when it reports them.
+    plates::PlanContext context = l.context;
+    context.deck = jobs::deckWithDeviceMotion(context.deck, c->identity());
+    const plates::RecipePlan plan = plates::planRecipe(l.recipe, context, start);
     jobs::RecipeRunner runner(c);
     QString error;
     const QString name = QString::fromStdString(l.recipe.name.empty() ? QFileInfo(l.path).fileName().toStdString() : l.recipe.name);

@@ -256,7 +256,7 @@ int scanRun(Invocation& inv)
     CliSession* s = inv.session();
     if (!s)
         return LinkTrouble;
-    dev::InstrumentClient* client = s->client();
+    dev::Instrument* client = s->instrument();
     if (client->identity().kind != proto::DeviceKind::Stage)
         return inv.refused(tr("scans run on the microscope stage; this is the %1 (use --sim stage or --port)").arg(client->identity().kindName()));
     if (inv.isSet(QStringLiteral("home"))) {

@@ -80,7 +80,7 @@ struct Target {
 int homeAndCentre(Invocation& inv, CliSession* s, int axis)
 {
     auto* sim = qobject_cast<dev::SimulatedLink*>(s->link());
-    dev::InstrumentClient* c = s->client();
+    dev::Instrument* c = s->instrument();
     if (sim) {
         // The clock runs 20× for homing: no telemetry, or the paced link would overflow.
         c->subscribe({}, 0);
@@ -114,9 +114,9 @@ int openInstrument(Invocation& inv, Target& t)
     if (!s)
         return LinkTrouble;
     t.session = s;
-    t.tuning = new dev::TuningClient(s->client(), s);
-    if (!t.tuning->hasGains())
-        return inv.refused(tr("the %1 has no PID gains to tune (it runs open loop)").arg(s->client()->identity().kindName()));
+    t.tuning = s->instrument()->tuning();
+    if (!t.tuning || !t.tuning->hasGains())
+        return inv.refused(tr("the %1 has no PID gains to tune (it runs open loop)").arg(s->instrument()->identity().kindName()));
     return Ok;
 }
 
@@ -140,13 +140,13 @@ int openTarget(Invocation& inv, Target& t, bool needsAxis)
     CliSession* s = t.session;
     if (!needsAxis)
         return Ok;
-    t.axis = s->client()->identity().axisIndex(letter[0].toUpper());
+    t.axis = s->instrument()->identity().axisIndex(letter[0].toUpper());
     if (t.axis < 0)
-        return inv.usage(tr("axis '%1' does not exist on the %2").arg(letter, s->client()->identity().kindName()));
+        return inv.usage(tr("axis '%1' does not exist on the %2").arg(letter, s->instrument()->identity().kindName()));
     if (inv.isSet(QStringLiteral("home")) || qobject_cast<dev::SimulatedLink*>(s->link()))
         if (int rc = homeAndCentre(inv, s, t.axis))
             return rc;
-    auto target = std::make_unique<dev::InstrumentTarget>(t.tuning, t.axis, s->client()->identity().kindName());
+    auto target = std::make_unique<dev::InstrumentTarget>(t.tuning, t.axis, s->instrument()->identity().kindName());
     // The loop period comes with the gains.
     bool read = false;
     std::optional<dev::RequestError> err;
@@ -360,7 +360,7 @@ int gains(Invocation& inv)
     Target t;
     if (int rc = openInstrument(inv, t))
         return rc;
-    dev::InstrumentClient* c = t.session->client();
+    dev::Instrument* c = t.session->instrument();
     const auto& id = c->identity();
     const bool perPeriod = inv.isSet(QStringLiteral("per-period"));
     auto read = [&](int axis, dev::AxisGains& out) -> std::optional<dev::RequestError> {

@@ -1,24 +1,40 @@
 #include "instrument_session.h"
 
+#include "device/backends/benchpilot/benchpilot_client.h"
 #include "device/link/serial_transport.h"
 #include "device/link/simulated_link.h"
 
 namespace app {
 
 InstrumentSession::InstrumentSession(proto::DeviceKind kind, const QString& name, QObject* parent)
-    : QObject(parent), m_kind(kind), m_name(name), m_client(new dev::InstrumentClient(this))
+    : QObject(parent), m_kind(kind), m_name(name), m_proxy(new dev::InstrumentProxy(this))
 {
 }
 
-InstrumentSession::~InstrumentSession() { m_client->setTransport(nullptr); }
+InstrumentSession::~InstrumentSession()
+{
+    if (m_benchPilot)
+        m_benchPilot->setTransport(nullptr);
+}
 
 void InstrumentSession::disconnectLink()
 {
-    m_client->disconnectLink();
-    m_client->setTransport(nullptr);
+    m_proxy->disconnectLink();
+    if (m_benchPilot)
+        m_benchPilot->setTransport(nullptr);
     if (m_link)
         m_link->deleteLater();
     m_link = nullptr;
+}
+
+dev::BenchPilotClient* InstrumentSession::benchPilotOn(dev::Transport* transport)
+{
+    if (!m_benchPilot) {
+        m_benchPilot = new dev::BenchPilotClient;
+        m_proxy->setBackend(m_benchPilot);
+    }
+    m_benchPilot->setTransport(transport);
+    return m_benchPilot;
 }
 
 void InstrumentSession::connectTo(const ui::ConnectionChoice& choice)
@@ -35,8 +51,7 @@ void InstrumentSession::connectTo(const ui::ConnectionChoice& choice)
         transport = serial;
         m_link = serial;
     }
-    m_client->setTransport(transport);
-    m_client->connectLink();
+    benchPilotOn(transport)->connectLink();
 }
 
 } // namespace app

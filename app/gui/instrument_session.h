@@ -1,11 +1,24 @@
 #pragma once
-// One instrument as the application holds it: its client and whatever link it
-// is on now (simulator or serial port). Switching links never restarts the app.
-#include "device/client/instrument_client.h"
+// One instrument as the application holds it: a dev::InstrumentProxy that screens,
+// runners and the telemetry hub keep for the whole run, the backend the present
+// connection speaks behind it, and whatever link it is on now (simulator or serial
+// port). Switching links never restarts the app and never hands screens a new object.
+//
+// connectTo() picks the backend for the connection. Today every connection speaks the
+// BenchPilot protocol, so the backend is made once and kept across reconnections (a
+// pattern run interrupted by a pulled cable resumes on the same path queue). A port
+// that turns out to speak GRBL (its banner, issue 19) gets a GRBL backend here, handed
+// to the same proxy: the screens see a new identity, never a new pointer.
+#include "device/client/instrument_proxy.h"
 #include "widgets/connection_bar.h"
 
 #include <QObject>
 #include <QPointer>
+
+namespace dev {
+class BenchPilotClient;
+class Transport;
+}
 
 namespace app {
 
@@ -15,7 +28,8 @@ public:
     InstrumentSession(proto::DeviceKind kind, const QString& name, QObject* parent = nullptr);
     ~InstrumentSession() override;
 
-    dev::InstrumentClient* client() { return m_client; }
+    /// The one instrument of this session, whichever backend drives it.
+    dev::Instrument* instrument() { return m_proxy; }
     proto::DeviceKind kind() const { return m_kind; }
     QString name() const { return m_name; }
     ui::ConnectionChoice choice() const { return m_choice; }
@@ -26,9 +40,13 @@ public:
     QObject* link() const { return m_link; }
 
 private:
+    /// The BenchPilot backend on `transport`, made once and kept.
+    dev::BenchPilotClient* benchPilotOn(dev::Transport* transport);
+
     proto::DeviceKind m_kind;
     QString m_name;
-    dev::InstrumentClient* m_client;
+    dev::InstrumentProxy* m_proxy;
+    QPointer<dev::BenchPilotClient> m_benchPilot;
     QPointer<QObject> m_link;
     ui::ConnectionChoice m_choice;
 };

@@ -41,7 +41,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     m_sessions[1] = new InstrumentSession(proto::DeviceKind::Stage, tr("Stage"), this);
     m_hub = new tele::TelemetryHub(this);
     for (int i = 0; i < 2; ++i)
-        m_hub->addInstrument(i, m_sessions[i]->name(), m_sessions[i]->client());
+        m_hub->addInstrument(i, m_sessions[i]->name(), m_sessions[i]->instrument());
 
     auto* central = new QWidget(this);
     auto* v = new QVBoxLayout(central);
@@ -86,7 +86,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
 
     m_jogTabs = new QTabWidget;
     for (int i = 0; i < 2; ++i) {
-        m_jog[i] = new ui::JogScreen(m_sessions[i]->client());
+        m_jog[i] = new ui::JogScreen(m_sessions[i]->instrument());
         if (m_options.confirmDialogs)
             m_jog[i]->setConfirm([this](const QString& q) { return confirm(q); });
         connect(m_jog[i], &ui::JogScreen::problem, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); });
@@ -104,7 +104,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     addScreen(QStringLiteral("profiles"), tr("Profiles"), new ui::ProfilesScreen);
     m_tuning = new ui::TuningScreen(m_hub);
     for (int i = 0; i < 2; ++i)
-        m_tuning->addInstrument(i, m_sessions[i]->name(), m_sessions[i]->client());
+        m_tuning->addInstrument(i, m_sessions[i]->name(), m_sessions[i]->instrument());
     m_tuning->setFileChooser([this](const QString& title, const QString& filter, bool save) {
         const QString dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
         return save ? QFileDialog::getSaveFileName(this, title, dir, filter) : QFileDialog::getOpenFileName(this, title, dir, filter);
@@ -130,12 +130,12 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
         addScreen(QStringLiteral("joystick"), tr("Joystick"), m_motion->joystickTabs());
         addScreen(QStringLiteral("patterns"), tr("Patterns"), m_motion->patterns());
     }
-    m_plates = new ui::PlatesScreen(m_sessions[0]->client());
+    m_plates = new ui::PlatesScreen(m_sessions[0]->instrument());
     connect(m_plates, &ui::PlatesScreen::problem, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); });
     connect(m_plates, &ui::PlatesScreen::note, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Info, m); });
     wirePlatesScreen(m_plates, this, m_options);
     addScreen(QStringLiteral("plates"), tr("Plates"), m_plates);
-    m_scan = new ui::ScanScreen(m_sessions[1]->client());
+    m_scan = new ui::ScanScreen(m_sessions[1]->instrument());
     m_scan->setFileChooser([this](ui::ScanScreen::FileAction a, const QString& title, const QString& filter) {
         const QString docs = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
         if (a == ui::ScanScreen::FileAction::Open)
@@ -197,7 +197,7 @@ MainWindow::~MainWindow()
     // while its session is destroyed must not reach updateStatusBar(), which reads the
     // other, possibly already destroyed, session.
     for (auto* s : m_sessions)
-        s->client()->disconnect(this);
+        s->instrument()->disconnect(this);
 }
 
 void MainWindow::addScreen(const QString& name, const QString& title, QWidget* screen)
@@ -234,7 +234,7 @@ bool MainWindow::confirm(const QString& question)
 void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
 {
     InstrumentSession* s = m_sessions[i];
-    dev::InstrumentClient* c = s->client();
+    dev::Instrument* c = s->instrument();
     connect(bar, &ui::ConnectionBar::connectRequested, this, [s](const ui::ConnectionChoice& ch) { s->connectTo(ch); });
     connect(bar, &ui::ConnectionBar::disconnectRequested, this, [s] { s->disconnectLink(); });
     auto showState = [this, i, c, bar] {
@@ -247,23 +247,23 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
         updateEStopUi();
         (void)i;
     };
-    connect(c, &dev::InstrumentClient::stateChanged, this, showState);
-    connect(c, &dev::InstrumentClient::stateChanged, this, [this, s](dev::LinkState st) {
+    connect(c, &dev::Instrument::stateChanged, this, showState);
+    connect(c, &dev::Instrument::stateChanged, this, [this, s](dev::LinkState st) {
         if (st == dev::LinkState::Lost)
             m_banner->show(ui::MessageBanner::Level::Error,
                            tr("%1: link lost. Motion on the instrument stops by itself; reconnect when the cable is back.").arg(s->name()));
         m_log->addNote(s->name(), tr("link"), dev::linkStateName(st), st == dev::LinkState::Lost);
     });
-    connect(c, &dev::InstrumentClient::statusChanged, this, [this] { updateEStopUi(); });
-    connect(c, &dev::InstrumentClient::linkError, this, [this, s](const QString& m) {
+    connect(c, &dev::Instrument::statusChanged, this, [this] { updateEStopUi(); });
+    connect(c, &dev::Instrument::linkError, this, [this, s](const QString& m) {
         m_banner->show(ui::MessageBanner::Level::Error, QStringLiteral("%1: %2").arg(s->name(), m));
         m_log->addNote(s->name(), tr("link error"), m, true);
     });
-    connect(c, &dev::InstrumentClient::requestFailed, this, [this, s](const dev::RequestError& e) {
+    connect(c, &dev::Instrument::requestFailed, this, [this, s](const dev::RequestError& e) {
         m_banner->show(ui::MessageBanner::Level::Error, QStringLiteral("%1: %2").arg(s->name(), e.message));
         m_log->addNote(s->name(), tr("refused"), e.message, true);
     });
-    connect(c, &dev::InstrumentClient::eventReceived, this, [this, s, c](const dev::DeviceEvent& e) {
+    connect(c, &dev::Instrument::eventReceived, this, [this, s, c](const dev::DeviceEvent& e) {
         m_log->addEvent(s->name(), c->identity(), e);
         if (e.kind == proto::EventKind::LimitHit || e.kind == proto::EventKind::Fault || e.kind == proto::EventKind::LostSteps)
             m_banner->show(ui::MessageBanner::Level::Warning, QStringLiteral("%1: %2").arg(s->name(), e.text));
@@ -274,7 +274,7 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
 void MainWindow::updateStatusBar()
 {
     for (int i = 0; i < 2; ++i) {
-        dev::InstrumentClient* c = m_sessions[i]->client();
+        dev::Instrument* c = m_sessions[i]->instrument();
         const dev::LinkStats st = c->stats();
         QString text = QStringLiteral("%1: %2").arg(m_sessions[i]->name(), dev::linkStateName(c->state()));
         if (c->state() == dev::LinkState::Ready)
@@ -294,7 +294,7 @@ void MainWindow::updateEStopUi()
 {
     bool latched = false;
     for (auto* s : m_sessions)
-        latched = latched || (s->client()->isReady() && s->client()->status().estop);
+        latched = latched || (s->instrument()->isReady() && s->instrument()->status().estop);
     m_reset->setVisible(latched);
 }
 
@@ -305,16 +305,16 @@ void MainWindow::emergencyStop()
         j->clearFocus();
     m_motion->stopSticks();
     for (auto* s : m_sessions)
-        if (s->client()->isReady())
-            s->client()->estop();
+        if (s->instrument()->isReady())
+            s->instrument()->estop();
     m_banner->show(ui::MessageBanner::Level::Error, tr("E-STOP: all motion halted. Check the machine, then press Reset E-stop."));
 }
 
 void MainWindow::resetEStop()
 {
     for (auto* s : m_sessions)
-        if (s->client()->isReady() && s->client()->status().estop)
-            s->client()->reset();
+        if (s->instrument()->isReady() && s->instrument()->status().estop)
+            s->instrument()->reset();
     m_banner->show(ui::MessageBanner::Level::Info, tr("E-stop cleared. Re-home the axes if anything was moved by hand."));
 }
 
@@ -323,7 +323,7 @@ void MainWindow::changeEvent(QEvent* event)
     // A hold whose key-up went to another application must not keep the machine moving.
     if (event->type() == QEvent::ActivationChange && !isActiveWindow())
         for (auto* s : m_sessions)
-            s->client()->stopAllJogs();
+            s->instrument()->stopAllJogs();
     QMainWindow::changeEvent(event);
 }
 
@@ -381,7 +381,7 @@ void MainWindow::saveSettings()
 void MainWindow::closeEvent(QCloseEvent* event)
 {
     for (auto* s : m_sessions)
-        s->client()->stopAllJogs();
+        s->instrument()->stopAllJogs();
     if (m_options.persistSettings)
         saveSettings();
     savePlatesSettings(m_plates, m_options);

@@ -1,7 +1,6 @@
 #include "motion_screens.h"
 
 #include "instrument_session.h"
-#include "device/client/path_client.h"
 #include "device/files/pattern_file.h"
 #include "device/jobs/pattern_runner.h"
 #include "widgets/joystick/joystick_screen.h"
@@ -22,14 +21,13 @@ MotionScreens::MotionScreens(InstrumentSession* const sessions[2], tele::Telemet
     m_joyTabs = new QTabWidget;
     QVector<ui::PatternInstrument> instruments;
     for (int i = 0; i < 2; ++i) {
-        dev::InstrumentClient* c = sessions[i]->client();
+        dev::Instrument* c = sessions[i]->instrument();
         m_joystick[i] = new ui::JoystickScreen(c);
         if (hooks.warn)
             connect(m_joystick[i], &ui::JoystickScreen::problem, this, hooks.warn);
         m_joyTabs->addTab(m_joystick[i], sessions[i]->name());
-        m_paths[i] = new dev::ProtocolPathClient(c, this);
-        m_runners[i] = new jobs::PatternRunner(c, m_paths[i], this);
-        instruments.push_back({sessions[i]->name(), c, m_paths[i], m_runners[i], i});
+        m_runners[i] = new jobs::PatternRunner(c, this);
+        instruments.push_back({sessions[i]->name(), c, m_runners[i], i});
     }
     connect(m_joyTabs, &QTabWidget::currentChanged, this, [this](int i) { m_joystick[i]->setFocus(); });
     m_patterns = new ui::PatternScreen(instruments, hub);

@@ -1,7 +1,7 @@
 #pragma once
 // The Joystick and Patterns screens as the main window holds them: a joystick tab per
-// instrument, one Patterns screen over both, and what they run on — a path client and a
-// pattern runner per instrument — with their settings kept between runs.
+// instrument, one Patterns screen over both, and what they run on — a pattern runner per
+// instrument, streaming through its paths() — with their settings kept between runs.
 #include <QObject>
 
 #include <functional>
@@ -10,9 +10,6 @@ class QSettings;
 class QTabWidget;
 class QWidget;
 
-namespace dev {
-class ProtocolPathClient;
-}
 namespace jobs {
 class PatternRunner;
 }
@@ -53,7 +50,6 @@ public:
 private:
     QTabWidget* m_joyTabs;
     ui::JoystickScreen* m_joystick[2];
-    dev::ProtocolPathClient* m_paths[2];
     jobs::PatternRunner* m_runners[2];
     ui::PatternScreen* m_patterns;
 };

@@ -60,7 +60,7 @@ int takeScreenshot(const ScreenshotRequest& r)
     w.resize(1600, 1000);
     w.show();
     InstrumentSession* s = index ? w.stage() : w.analyzer();
-    if (!spinUntil([&] { return w.analyzer()->client()->isReady() && w.stage()->client()->isReady(); }, 5000)) {
+    if (!spinUntil([&] { return w.analyzer()->instrument()->isReady() && w.stage()->instrument()->isReady(); }, 5000)) {
         std::fprintf(stderr, "benchpilot: the simulated instruments did not become ready\n");
         return 3;
     }
@@ -72,15 +72,15 @@ int takeScreenshot(const ScreenshotRequest& r)
         return 3;
     }
     if (r.homeFirst && !scan) {
-        s->client()->home(0);
+        s->instrument()->home(0);
         spin(300);
-        spinUntil([&] { return !s->client()->status().anyMoving(); }, 30000);
+        spinUntil([&] { return !s->instrument()->status().anyMoving(); }, 30000);
         if (index == 0)
-            s->client()->move({{0, 30}, {1, 40}}, false);
+            s->instrument()->move({{0, 30}, {1, 40}}, false);
         else
-            s->client()->move({{0, 12.5}, {1, 30}}, false);
+            s->instrument()->move({{0, 12.5}, {1, 30}}, false);
         spin(300);
-        spinUntil([&] { return !s->client()->status().anyMoving(); }, 30000);
+        spinUntil([&] { return !s->instrument()->status().anyMoving(); }, 30000);
     }
     if (r.exercise && r.screen == QLatin1String("patterns")) {
         // The screen's pattern run to the end: the overlay, the contour plot and the summary.
@@ -92,7 +92,7 @@ int takeScreenshot(const ScreenshotRequest& r)
     } else if (r.exercise && r.screen == QLatin1String("joystick")) {
         // The stick pushed round a loop: the trail on the travel view.
         ui::JoystickScreen* j = w.motionScreens()->joystick(index);
-        const double v = 0.4 * s->client()->identity().axes[0].maxSpeed;
+        const double v = 0.4 * s->instrument()->identity().axes[0].maxSpeed;
         for (int k = 0; k < 60; ++k) {
             const double a = k * 6.2832 / 60;
             j->driver()->setVelocities({{0, v * std::cos(a)}, {1, v * std::sin(a)}});
@@ -103,7 +103,7 @@ int takeScreenshot(const ScreenshotRequest& r)
     } else if (r.exercise && !scan) {
         // A jog of X, then a diagonal and a move back in X: the plots and the XY path
         // show a jog and a move, commanded against measured.
-        dev::InstrumentClient* c = s->client();
+        dev::Instrument* c = s->instrument();
         const auto& x = c->identity().axes[0];
         const auto& y = c->identity().axes[1];
         c->startJog(0, 0.5 * x.maxSpeed);
@@ -121,14 +121,14 @@ int takeScreenshot(const ScreenshotRequest& r)
         // (its verification adds the Z-N PID step beside it), the assistant shown.
         ui::TuningScreen* t = w.tuningScreen();
         InstrumentSession* stage = w.stage();
-        if (!stage->client()->status().axes.value(0).homed) {
-            stage->client()->home(0);
+        if (!stage->instrument()->status().axes.value(0).homed) {
+            stage->instrument()->home(0);
             spin(300);
-            spinUntil([&] { return !stage->client()->status().anyMoving(); }, 30000);
+            spinUntil([&] { return !stage->instrument()->status().anyMoving(); }, 30000);
         }
-        stage->client()->move({{0, 50}}, false);
+        stage->instrument()->move({{0, 50}}, false);
         spin(300);
-        spinUntil([&] { return !stage->client()->status().anyMoving(); }, 10000);
+        spinUntil([&] { return !stage->instrument()->status().anyMoving(); }, 10000);
         w.showScreen(QStringLiteral("tuning"));
         spinUntil([&] { return t->targetNames().contains(QStringLiteral("Stage X")); }, 5000);
         t->selectTarget(QStringLiteral("Stage X"));
@@ -155,7 +155,7 @@ int takeScreenshot(const ScreenshotRequest& r)
         fast.simulator = true;
         fast.baud = 0;
         w.analyzer()->connectTo(fast);
-        dev::InstrumentClient* c = w.analyzer()->client();
+        dev::Instrument* c = w.analyzer()->instrument();
         if (!spinUntil([&] { return c->isReady(); }, 5000))
             return 3;
         auto* link = qobject_cast<dev::SimulatedLink*>(w.analyzer()->link());

@@ -34,7 +34,7 @@ bool showScanAtWork(MainWindow& w, const QString& scratchFolder)
 {
     using namespace motion::scan;
     ui::ScanScreen* screen = w.scanScreen();
-    dev::InstrumentClient* stage = w.stage()->client();
+    dev::Instrument* stage = w.stage()->instrument();
     ScanPlan p;
     p.name = QObject::tr("Tissue section, 2.5x overview").toStdString();
     p.region.kind = RegionKind::Polygon;

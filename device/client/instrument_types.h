@@ -1,5 +1,8 @@
 #pragma once
-// What a client knows about its instrument, in the axes' own units (mm, µL).
+// What any backend knows about its instrument, in the axes' own units (mm, µL).
+// The vocabulary (device kinds, axis units, event kinds, motion profiles) is the
+// BenchPilot protocol's, which every backend maps its device into.
+#include "device/client/request_error.h"
 #include "device/protocol/messages.h"
 
 #include <QDateTime>
@@ -18,8 +21,15 @@ struct AxisDescriptor {
     QChar letter;
     proto::AxisUnit unit = proto::AxisUnit::Millimetre;
     double travelMin = 0, travelMax = 0;  ///< axis units
-    double maxSpeed = 0;                  ///< axis units per second
+    double maxSpeed = 0;                  ///< axis units per second: the planner's velocity limit
     double resolution = 0;                ///< one count of the measuring system
+    // The planner's other limits, as the device reported them (HELLO's motion-limits
+    // block, GRBL's $$); 0 where it did not (DeviceIdentity::motionProfile says whether
+    // it reported any).
+    double maxAccel = 0;                  ///< axis units per s²
+    double maxJerk = 0;                   ///< axis units per s³; 0: not limited, or not reported
+    double defaultSpeed = 0;              ///< axis units per second: a move without a speed runs at this
+    double minAccelTimeS = 0;             ///< seed 000 S-curve: the shortest acceleration phase
     /// Wire units (nm or nL) per axis unit.
     double wireScale() const { return unit == proto::AxisUnit::Microlitre ? 1e3 : 1e6; }
     QString unitName() const;             ///< "mm" or "µL"
@@ -27,15 +37,24 @@ struct AxisDescriptor {
 
 struct DeviceIdentity {
     proto::DeviceKind kind = proto::DeviceKind::Analyzer;
+    /// The firmware family and the protocol it speaks, as a person reads it:
+    /// "BenchPilot protocol 1", later "Grbl 1.1h", "grblHAL 1.1f".
+    QString family;
     int protocolVersion = 0;
-    std::uint32_t capabilities = 0;
+    /// The BenchPilot protocol's HELLO capability bits as sent (0 from other backends).
+    /// What the host may do is Instrument::capabilities(), the same on every backend.
+    std::uint32_t protocolCapabilities = 0;
     QString model, firmware;
     QVector<AxisDescriptor> axes;
+    /// How the planner shapes a move; Unstated when the device gave no motion limits
+    /// (a protocol 1.0 device): then the axes' maxAccel and friends are 0.
+    proto::MotionProfile motionProfile = proto::MotionProfile::Unstated;
     std::uint32_t linkBaud = 0;
     std::uint32_t maxTelemetryRateHz = 0;
-    int jogWatchdogMs = 0;
+    int jogWatchdogMs = 0;                ///< a velocity jog not renewed is at rest this long after (0: the device has no watchdog)
     int axisIndex(QChar letter) const;
     QString kindName() const;
+    bool reportsMotionLimits() const { return motionProfile != proto::MotionProfile::Unstated; }
 };
 
 struct AxisReadout {
@@ -65,14 +84,12 @@ struct DeviceEvent {
     QDateTime hostTime;
 };
 
-/// Why a request did not succeed.
-struct RequestError {
-    enum class Kind { Device, Timeout, LinkDown, Invalid };
-    Kind kind = Kind::Device;
-    proto::ErrorCode code = proto::ErrorCode::BadPayload;  ///< for Kind::Device
-    int axis = -1;
-    double value = 0;         ///< axis units where an axis is named, else as sent
-    QString message;          ///< whole sentence for a person
+/// How the link has fared, for the status bar. A backend fills what applies to it
+/// (a line protocol has no CRC errors; the counters it cannot know stay 0).
+struct LinkStats {
+    quint64 framesIn = 0, crcErrors = 0, malformed = 0, oversize = 0, droppedBytes = 0;
+    quint64 retransmits = 0, timeouts = 0, lateReplies = 0;
+    quint64 telemetryBatches = 0, telemetrySamples = 0, lostSamples = 0;
 };
 
 } // namespace dev
@@ -80,4 +97,3 @@ struct RequestError {
 Q_DECLARE_METATYPE(dev::LinkState)
 Q_DECLARE_METATYPE(dev::InstrumentStatus)
 Q_DECLARE_METATYPE(dev::DeviceEvent)
-Q_DECLARE_METATYPE(dev::RequestError)

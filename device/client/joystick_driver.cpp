@@ -7,18 +7,18 @@
 
 namespace dev {
 
-JoystickDriver::JoystickDriver(InstrumentClient* client, QObject* parent) : QObject(parent), m_client(client)
+JoystickDriver::JoystickDriver(Instrument* client, QObject* parent) : QObject(parent), m_client(client)
 {
     m_clock.start();
     m_timer.setSingleShot(true);
     m_timer.setTimerType(Qt::PreciseTimer);
     connect(&m_timer, &QTimer::timeout, this, &JoystickDriver::onTimer);
-    connect(client, &InstrumentClient::stateChanged, this, [this](LinkState s) {
+    connect(client, &Instrument::stateChanged, this, [this](LinkState s) {
         // Lost mid-drag: the device's watchdog stops the axes; the stick must be let go first.
         if (s != LinkState::Ready && (active() || !m_sent.empty()))
             blockAll();
     });
-    connect(client, &InstrumentClient::statusChanged, this, [this](const InstrumentStatus& st) {
+    connect(client, &Instrument::statusChanged, this, [this](const InstrumentStatus& st) {
         if (st.estop && active())
             blockAll();
     });
@@ -126,7 +126,7 @@ void JoystickDriver::scheduleNext()
         return;
     }
     const qint64 now = m_clock.elapsed();
-    const qint64 due = differs() ? m_lastSendMs + kMinIntervalMs : m_lastSendMs + kKeepAliveMs;
+    const qint64 due = differs() ? m_lastSendMs + kMinIntervalMs : m_lastSendMs + keepAliveMs();
     const int wait = static_cast<int>(std::max<qint64>(0, due - now));
     if (!m_timer.isActive() || m_timer.remainingTime() > wait)
         m_timer.start(wait);
@@ -144,12 +144,12 @@ void JoystickDriver::onTimer()
         sendNow();
 }
 
+int JoystickDriver::keepAliveMs() const { return m_client ? m_client->jogRefreshMs() : 50; }
+
 void JoystickDriver::sendNow()
 {
     if (!m_client)
         return;
-    const auto& axes = m_client->identity().axes;
-    proto::JogVelocityRequest r;
     std::map<int, double> sending;
     for (const auto& [axis, v] : m_wanted) {
         const auto it = m_sent.find(axis);
@@ -159,10 +159,6 @@ void JoystickDriver::sendNow()
     }
     if (sending.empty())
         return;
-    for (const auto& [axis, v] : sending) {
-        r.axisMask = static_cast<std::uint8_t>(r.axisMask | (1u << axis));
-        r.velocities.push_back(static_cast<std::int32_t>(std::llround(v * axes[axis].wireScale())));
-    }
     for (const auto& [axis, v] : sending) {
         if (v == 0)
             m_sent.erase(axis);
@@ -176,11 +172,11 @@ void JoystickDriver::sendNow()
     m_timer.stop();  // whatever was due is covered by this frame
     ++m_frames;
     const QPointer<JoystickDriver> self(this);  // the reply may come after the screen is gone
-    m_client->request(proto::MsgType::JogVelocity, proto::encode(r), [this, self](const std::optional<RequestError>& e, const proto::Bytes&) {
+    m_client->setJogVelocities(sending, [this, self](const std::optional<RequestError>& e) {
         if (!self || !e || e->kind != RequestError::Kind::Device)
             return;
-        // The client has reported the refusal (requestFailed); the stick stays dead until
-        // it is back at the centre.
+        // The instrument has reported the refusal (requestFailed); the stick stays dead
+        // until it is back at the centre.
         blockAll();
     });
     scheduleNext();

@@ -1,10 +1,12 @@
 #pragma once
 // The host's side of a device path queue, as an interface a runner streams through: begin a
 // path, append LINE/ARC segments as the queue has room (every answer says how much), hold,
-// resume, clear, and hear when segments complete. ProtocolPathClient speaks BenchPilot's
-// PATH_* messages; a GRBL backend would implement the same calls with G1/G2/G3 lines, its
-// planner-buffer count for the free slots and its status reports for the executing line.
-#include "device/client/instrument_client.h"
+// resume, clear, and hear when segments complete. An Instrument hands out its PathClient
+// (Instrument::paths()). The BenchPilot backend's speaks PATH_* messages
+// (device/backends/benchpilot/protocol_path_client.h); a GRBL backend implements the same
+// calls with G1/G2/G3 lines, its planner-buffer count for the free slots and its status
+// reports for the executing line.
+#include "device/client/request_error.h"
 #include "device/protocol/messages_path.h"
 #include "motion/path/junction_planner.h"
 #include "motion/path/path_geometry.h"
@@ -72,37 +74,6 @@ signals:
     void aborted(quint32 index, const QString& why);
     /// Device time of PATH_STARTED, for timing the run on the device's clock.
     void startedAt(quint64 deviceTimeUs);
-};
-
-/// BenchPilot protocol v1: PATH_BEGIN / PATH_APPEND / PATH_STATUS, PATH_HOLD / RESUME / CLEAR,
-/// path events (docs/protocol.md, "Path queue"), all through InstrumentClient::request.
-class ProtocolPathClient : public PathClient {
-    Q_OBJECT
-public:
-    explicit ProtocolPathClient(InstrumentClient* client, QObject* parent = nullptr);
-
-    bool available() const override;
-    int maxSegmentsPerAppend() const override { return proto::kMaxPathSegmentsPerAppend; }
-    motion::path::PathLimits limits() const override;
-    void refreshLimits(Callback done = {}) override;
-    void begin(quint32 firstIndex, Reply done) override;
-    void append(quint32 firstIndex, const std::vector<motion::path::Segment>& segments, bool start, bool last,
-                Reply done) override;
-    void queryStatus(Reply done) override;
-    void hold(Callback done = {}) override;
-    void resume(Callback done = {}) override;
-    void clear(Callback done = {}) override;
-
-    InstrumentClient* instrument() const { return m_client; }
-
-private:
-    void onEvent(const DeviceEvent& e);
-    InstrumentClient::ReplyCallback statusReply(Reply done);
-    static PathQueueState fromWire(const proto::PathStatusReply& s);
-
-    QPointer<InstrumentClient> m_client;
-    PathQueueState m_last;
-    bool m_haveLimits = false;
 };
 
 } // namespace dev

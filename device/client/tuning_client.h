@@ -1,9 +1,11 @@
 #pragma once
 // The tuning side of one instrument (issue 7), in axis units: PID gains of the
 // closed-loop axes, step and relay tests that run on the device, the device's
-// capture of a test, and the realtime abort. Built on
-// InstrumentClient::request(); widgets and runners use this, never the protocol.
-#include "device/client/instrument_client.h"
+// capture of a test, and the realtime abort. A BenchPilot-protocol feature, reached
+// as Instrument::tuning() (nullptr on a backend without it, such as GRBL); the
+// backend's implementation is device/backends/benchpilot/protocol_tuning_client.h.
+// Widgets and runners use this, never the protocol.
+#include "device/client/instrument.h"
 #include "motion/control/experiment.h"
 #include "motion/control/gains.h"
 
@@ -55,30 +57,31 @@ struct RelayTestParams {
 class TuningClient : public QObject {
     Q_OBJECT
 public:
-    explicit TuningClient(InstrumentClient* client, QObject* parent = nullptr);
-    InstrumentClient* client() const { return m_client; }
+    explicit TuningClient(Instrument* instrument, QObject* parent = nullptr) : QObject(parent), m_instrument(instrument) {}
+    /// The instrument these gains and tests belong to (its link state, identity, axes).
+    Instrument* instrument() const { return m_instrument; }
 
-    /// The device has gains (capability 8) / runs tests (capability 9).
-    bool hasGains() const;
-    bool hasTests() const;
-    /// Axes whose gains can be tuned: every axis of a closed-loop instrument with capability 8.
-    QVector<int> tunableAxes() const;
+    /// The device has gains / runs tests.
+    virtual bool hasGains() const = 0;
+    virtual bool hasTests() const = 0;
+    /// Axes whose gains can be tuned: every axis of a closed-loop instrument with gains.
+    virtual QVector<int> tunableAxes() const = 0;
 
-    using Callback = InstrumentClient::Callback;
+    using Callback = Instrument::Callback;
     using GainsDone = std::function<void(const std::optional<RequestError>&, const AxisGains&)>;
     using CaptureDone = std::function<void(const std::optional<RequestError>&, const TestCapture&)>;
     using Progress = std::function<void(int received, int total)>;
 
-    void getGains(int axis, GainsDone done);
+    virtual void getGains(int axis, GainsDone done) = 0;
     /// Refused (with the device's reason) if a gain is NaN, infinite, negative or
     /// above the device's limit; the previous set then stays in force.
-    void setGains(int axis, const motion::control::DiscreteGains& gains, bool keepForPowerUp, Callback done = {});
-    void startStepTest(const StepTestParams& p, Callback done = {});
-    void startRelayTest(const RelayTestParams& p, Callback done = {});
+    virtual void setGains(int axis, const motion::control::DiscreteGains& gains, bool keepForPowerUp, Callback done = {}) = 0;
+    virtual void startStepTest(const StepTestParams& p, Callback done = {}) = 0;
+    virtual void startRelayTest(const RelayTestParams& p, Callback done = {}) = 0;
     /// Realtime: ends the tests on these axes (0 = all); the axes stop where they are.
-    void abortTests(quint8 axisMask = 0, Callback done = {});
-    /// The whole capture of the axis' last test, fetched in chunks of 80 samples.
-    void fetchCapture(int axis, CaptureDone done, Progress progress = {});
+    virtual void abortTests(quint8 axisMask = 0, Callback done = {}) = 0;
+    /// The whole capture of the axis' last test.
+    virtual void fetchCapture(int axis, CaptureDone done, Progress progress = {}) = 0;
 
 signals:
     /// A test ended on the device (event TestEnded, TestTripped or TestAborted); text says how.
@@ -86,12 +89,7 @@ signals:
     void gainsChanged(int axis, const QString& text);
 
 private:
-    void fetchChunk(int axis, std::shared_ptr<TestCapture> into, quint32 first, CaptureDone done, Progress progress);
-    /// A request whose reply has no payload.
-    void send(proto::MsgType type, const proto::Bytes& payload, Callback done, const QString& what);
-    double scale(int axis) const;
-
-    QPointer<InstrumentClient> m_client;
+    QPointer<Instrument> m_instrument;
 };
 
 } // namespace dev

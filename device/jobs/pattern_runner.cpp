@@ -33,8 +33,7 @@ QString PatternRunner::stateText(State s)
     return {};
 }
 
-PatternRunner::PatternRunner(dev::InstrumentClient* client, dev::PathClient* paths, QObject* parent)
-    : QObject(parent), m_client(client), m_paths(paths)
+PatternRunner::PatternRunner(dev::Instrument* client, QObject* parent) : QObject(parent), m_client(client)
 {
     qRegisterMetaType<jobs::PatternRunner::State>();
     qRegisterMetaType<jobs::PatternRunSummary>();
@@ -50,13 +49,32 @@ PatternRunner::PatternRunner(dev::InstrumentClient* client, dev::PathClient* pat
             }
         });
     });
-    connect(client, &dev::InstrumentClient::statusChanged, this, &PatternRunner::onStatus);
-    connect(client, &dev::InstrumentClient::stateChanged, this, &PatternRunner::onLinkState);
-    connect(paths, &dev::PathClient::startedAt, this, [this](quint64 us) {
+    connect(client, &dev::Instrument::statusChanged, this, &PatternRunner::onStatus);
+    connect(client, &dev::Instrument::stateChanged, this, &PatternRunner::onLinkState);
+    connect(client, &dev::Instrument::partsReplaced, this, &PatternRunner::attachPaths);
+    attachPaths();
+}
+
+void PatternRunner::attachPaths()
+{
+    dev::PathClient* paths = m_client ? m_client->paths() : nullptr;
+    if (paths == m_paths && (paths || m_pathConnections.isEmpty()))
+        return;
+    for (const auto& c : m_pathConnections)
+        disconnect(c);
+    m_pathConnections.clear();
+    // Another backend took over (a reconnection that found another protocol): whatever
+    // ran on the old one's queue is over.
+    if (busy())
+        interrupt(tr("The instrument was replaced by another connection."));
+    m_paths = paths;
+    if (!paths)
+        return;
+    m_pathConnections << connect(paths, &dev::PathClient::startedAt, this, [this](quint64 us) {
         if (busy() && m_t0S < 0)
             m_t0S = us / 1e6;
     });
-    connect(paths, &dev::PathClient::segmentDone, this, [this](quint32 index) {
+    m_pathConnections << connect(paths, &dev::PathClient::segmentDone, this, [this](quint32 index) {
         if (m_state != State::Running && m_state != State::Paused)
             return;
         m_done = std::max(m_done, static_cast<std::size_t>(index) + 1);
@@ -64,7 +82,7 @@ PatternRunner::PatternRunner(dev::InstrumentClient* client, dev::PathClient* pat
         emit progress(m_done, m_path.size());
         pump();
     });
-    connect(paths, &dev::PathClient::underrun, this, [this](quint32) {
+    m_pathConnections << connect(paths, &dev::PathClient::underrun, this, [this](quint32) {
         if (m_state != State::Running)
             return;
         ++m_underruns;
@@ -73,7 +91,7 @@ PatternRunner::PatternRunner(dev::InstrumentClient* client, dev::PathClient* pat
                          true);
         m_underrunSaid = true;
     });
-    connect(paths, &dev::PathClient::finished, this, [this](quint32, quint64 us) {
+    m_pathConnections << connect(paths, &dev::PathClient::finished, this, [this](quint32, quint64 us) {
         if (m_state != State::Running && m_state != State::Paused)
             return;
         m_done = m_path.size();
@@ -89,7 +107,7 @@ PatternRunner::PatternRunner(dev::InstrumentClient* client, dev::PathClient* pat
                      false);
         emit finished(s);
     });
-    connect(paths, &dev::PathClient::held, this, [this](quint32, const QString&) {
+    m_pathConnections << connect(paths, &dev::PathClient::held, this, [this](quint32, const QString&) {
         if (m_state != State::Running)
             return;
         setState(State::Paused);
@@ -99,7 +117,7 @@ PatternRunner::PatternRunner(dev::InstrumentClient* client, dev::PathClient* pat
             });
         m_pauseAsked = false;
     });
-    connect(paths, &dev::PathClient::aborted, this, [this](quint32 index, const QString&) {
+    m_pathConnections << connect(paths, &dev::PathClient::aborted, this, [this](quint32 index, const QString&) {
         if (!busy())
             return;
         m_done = std::max(m_done, static_cast<std::size_t>(index));
@@ -149,7 +167,7 @@ QStringList PatternRunner::preflight(const std::vector<Segment>& path, const Opt
             out << tr("Axis %1 is not homed: home it first.").arg(id.axes[i].letter);
     const int z = id.axisIndex(QLatin1Char('Z'));
     if (options.zMm) {
-        if (z < 0 || !(id.capabilities & proto::CapCoupledXyThenZ)) {
+        if (z < 0 || !m_client->capabilities().testFlag(dev::Capability::CoupledXyThenZ)) {
             out << tr("This instrument has no Z axis to work at a height.");
         } else {
             if (!st.axes[z].homed)

@@ -9,7 +9,7 @@
 // leaves the run Interrupted at the first segment not completed: the runner says so, and
 // resume() continues from there once the instrument is back — on the path where the machine
 // stopped, or after moving back to that segment's start if it was moved away meanwhile.
-#include "device/client/instrument_client.h"
+#include "device/client/instrument.h"
 #include "device/client/path_client.h"
 #include "motion/path/contour_tracker.h"
 
@@ -54,7 +54,9 @@ public:
     /// A restart continues on the path from where the machine stands if it is this close to it.
     static constexpr double kOnPathMm = 0.005;
 
-    PatternRunner(dev::InstrumentClient* client, dev::PathClient* paths, QObject* parent = nullptr);
+    /// Streams through the instrument's paths(), fetched again whenever the instrument's
+    /// parts are replaced; an instrument without a path queue refuses every run.
+    explicit PatternRunner(dev::Instrument* client, QObject* parent = nullptr);
 
     /// Everything that keeps this path from running now; empty when it can.
     QStringList preflight(const std::vector<motion::path::Segment>& path, const Options& options) const;
@@ -104,9 +106,10 @@ private:
     void pump();
     void onReply(const std::optional<dev::RequestError>& e, const dev::PathQueueState& s, std::size_t asked);
     void onLinkState(dev::LinkState s);
+    void attachPaths();
     motion::path::Vec2 machineXy() const;
 
-    QPointer<dev::InstrumentClient> m_client;
+    QPointer<dev::Instrument> m_client;
     QPointer<dev::PathClient> m_paths;
     State m_state = State::Idle;
     std::vector<motion::path::Segment> m_path;
@@ -132,6 +135,7 @@ private:
     int m_approachPolls = 0;
     QTimer m_poll;                      ///< status polls while the queue is full (events may be lost)
     QList<QMetaObject::Connection> m_connections;
+    QList<QMetaObject::Connection> m_pathConnections;  ///< to m_paths' signals
 };
 
 } // namespace jobs

@@ -8,7 +8,7 @@ QVector<proto::ChannelRef> patternChannels()
             {1, proto::ChannelKind::Commanded}, {1, proto::ChannelKind::Measured}};
 }
 
-int feedBatch(PatternRunner& runner, const dev::InstrumentClient& client, const proto::TelemetryBatch& batch)
+int feedBatch(PatternRunner& runner, const dev::Instrument& client, const proto::TelemetryBatch& batch)
 {
     const auto wanted = patternChannels();
     int column[4] = {-1, -1, -1, -1};

@@ -36,7 +36,7 @@ QString runStateName(RunState s)
     return {};
 }
 
-RecipeRunner::RecipeRunner(dev::InstrumentClient* client, QObject* parent) : QObject(parent), m_client(client)
+RecipeRunner::RecipeRunner(dev::Instrument* client, QObject* parent) : QObject(parent), m_client(client)
 {
     qRegisterMetaType<jobs::RunState>();
     m_moveTimer.setSingleShot(true);
@@ -46,8 +46,8 @@ RecipeRunner::RecipeRunner(dev::InstrumentClient* client, QObject* parent) : QOb
         if (m_inFlight && m_inFlight->kind == MoveKind::Dwell)
             moveArrived();
     });
-    m_events = connect(client, &dev::InstrumentClient::eventReceived, this, &RecipeRunner::onEvent);
-    m_link = connect(client, &dev::InstrumentClient::stateChanged, this, &RecipeRunner::onLinkState);
+    m_events = connect(client, &dev::Instrument::eventReceived, this, &RecipeRunner::onEvent);
+    m_link = connect(client, &dev::Instrument::stateChanged, this, &RecipeRunner::onLinkState);
 }
 
 RecipeRunner::~RecipeRunner()
@@ -561,7 +561,7 @@ void RecipeRunner::abort()
             return;
         auto fresh = std::make_shared<int>(0);
         auto conn = std::make_shared<QMetaObject::Connection>();
-        *conn = connect(m_client, &dev::InstrumentClient::statusChanged, this, [this, serial, fresh, conn](const dev::InstrumentStatus& st) {
+        *conn = connect(m_client, &dev::Instrument::statusChanged, this, [this, serial, fresh, conn](const dev::InstrumentStatus& st) {
             if (serial != m_moveSerial || m_state != RunState::Aborting) {
                 disconnect(*conn);
                 return;

@@ -11,7 +11,7 @@
 //     moved, or the operator decides when it had);
 //   * a crash or SIGKILL: resumeFromLog() continues from the log, never doing a
 //     completed op twice, and asks the operator about one interrupted mid-dispense.
-#include "device/client/instrument_client.h"
+#include "device/client/instrument.h"
 #include "device/files/recipes/run_log.h"
 #include "device/files/recipes/run_log_writer.h"
 #include "motion/plans/recipes/recipe_plan.h"
@@ -64,7 +64,7 @@ struct RunProgress {
 class RecipeRunner : public QObject {
     Q_OBJECT
 public:
-    explicit RecipeRunner(dev::InstrumentClient* client, QObject* parent = nullptr);
+    explicit RecipeRunner(dev::Instrument* client, QObject* parent = nullptr);
     ~RecipeRunner() override;
 
     /// The plan to run (planRecipe's result; refused when it has errors).
@@ -79,7 +79,7 @@ public:
     /// The state to plan a resumed run from: the machine as it stands, with the
     /// plunger where the logged run began (the plan's syringe accounting is the
     /// original run's). Falls back to the plunger now when the log does not say.
-    static plates::StartState resumeStart(const QString& logPath, const dev::InstrumentClient& client);
+    static plates::StartState resumeStart(const QString& logPath, const dev::Instrument& client);
     /// After a pause or a stop; `decide` is asked when the op under way had moved liquid.
     bool resume(const InterruptedDecider& decide, QString* error);
     void pause();
@@ -127,7 +127,7 @@ private:
     int axis(char letter) const;
     double plungerNow() const;
 
-    dev::InstrumentClient* m_client;
+    dev::Instrument* m_client;
     plates::RecipePlan m_plan;
     QString m_recipeName;
     platefiles::RunLogWriter m_log;

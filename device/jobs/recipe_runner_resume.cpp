@@ -18,7 +18,7 @@ bool closed(OpState s) { return s == OpState::Done || s == OpState::Skipped; }
 QString ul(double v) { return QString::number(v, 'f', 2); }
 } // namespace
 
-plates::StartState RecipeRunner::resumeStart(const QString& logPath, const dev::InstrumentClient& client)
+plates::StartState RecipeRunner::resumeStart(const QString& logPath, const dev::Instrument& client)
 {
     plates::StartState s;
     const auto& a = client.status().axes;

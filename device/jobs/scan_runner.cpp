@@ -3,7 +3,7 @@
 #include "device/files/scan_exports.h"
 #include "device/files/scan_run_log.h"
 #include "device/files/text_file.h"
-#include "device/sim/machine_config.h"
+#include "device/jobs/machine_model.h"
 
 #include <QDateTime>
 #include <QDir>
@@ -21,7 +21,7 @@ namespace {
 constexpr unsigned kBothAxes = 0x3;
 } // namespace
 
-ScanRunner::ScanRunner(dev::InstrumentClient* client, QObject* parent) : QObject(parent), m_client(client)
+ScanRunner::ScanRunner(dev::Instrument* client, QObject* parent) : QObject(parent), m_client(client)
 {
     qRegisterMetaType<jobs::ScanRunner::State>();
     m_exposure.setSingleShot(true);
@@ -40,13 +40,13 @@ ScanRunner::ScanRunner(dev::InstrumentClient* client, QObject* parent) : QObject
                      .arg(m_lastOffUm[1], 0, 'f', 2),
                  false);
     });
-    m_clientConnections << connect(m_client, &dev::InstrumentClient::eventReceived, this, &ScanRunner::onEvent);
-    m_clientConnections << connect(m_client, &dev::InstrumentClient::statusChanged, this, [this](const dev::InstrumentStatus& s) {
+    m_clientConnections << connect(m_client, &dev::Instrument::eventReceived, this, &ScanRunner::onEvent);
+    m_clientConnections << connect(m_client, &dev::Instrument::statusChanged, this, [this](const dev::InstrumentStatus& s) {
         if (m_phase != Phase::Settling || s.axes.size() < 2)
             return;
         checkSettled({s.axes[0].measured, s.axes[1].measured}, s.deviceTimeUs);
     });
-    m_clientConnections << connect(m_client, &dev::InstrumentClient::stateChanged, this, [this](dev::LinkState st) {
+    m_clientConnections << connect(m_client, &dev::Instrument::stateChanged, this, [this](dev::LinkState st) {
         if (st != dev::LinkState::Ready && isActive())
             stopWith(tr("The link to the stage was lost at %1. Nothing more moves from here; reconnect, then Resume to "
                         "continue at that tile.")
@@ -59,28 +59,6 @@ ScanRunner::~ScanRunner()
 {
     for (const auto& c : m_clientConnections)
         disconnect(c);
-}
-
-motion::scan::StageModel ScanRunner::stageModelOf(const dev::DeviceIdentity& identity, const QVector<dev::SoftLimits>& limits)
-{
-    motion::scan::StageModel m;
-    const sim::MachineConfig firmware = sim::stageConfig();
-    for (int i = 0; i < 2; ++i) {
-        const auto k = static_cast<std::size_t>(i);
-        if (k < firmware.axes.size()) {
-            m.maxAccelMmS2[i] = firmware.axes[k].maxAccel;
-            m.maxJerkMmS3[i] = firmware.axes[k].maxJerk;
-        }
-        if (i < identity.axes.size() && identity.axes[i].maxSpeed > 0)
-            m.maxSpeedMmS[i] = identity.axes[i].maxSpeed;
-    }
-    if (identity.axes.size() >= 2) {
-        m.travel = {identity.axes[0].travelMin, identity.axes[1].travelMin, identity.axes[0].travelMax, identity.axes[1].travelMax};
-        if (limits.size() >= 2)  // the soft limits narrow the travel
-            m.travel = {std::max(m.travel.x0Mm, limits[0].min), std::max(m.travel.y0Mm, limits[1].min),
-                        std::min(m.travel.x1Mm, limits[0].max), std::min(m.travel.y1Mm, limits[1].max)};
-    }
-    return m;
 }
 
 QString ScanRunner::logPath() const { return QDir(m_folder).filePath(QString::fromLatin1(scanfile::kRunLogFile)); }
@@ -467,14 +445,10 @@ void ScanRunner::requestStatus()
     // moment the grating says so. If it is not there yet, the polls that follow
     // (statusChanged) are checked until it is, or the settle timeout says why not.
     const QPointer<ScanRunner> self(this);
-    m_client->request(proto::MsgType::Status, {}, [this, self](const std::optional<dev::RequestError>& e, const proto::Bytes& payload) {
-        if (!self || e || m_phase != Phase::Settling)
+    m_client->readStatus([this, self](const std::optional<dev::RequestError>& e, const dev::InstrumentStatus& s) {
+        if (!self || e || m_phase != Phase::Settling || s.axes.size() < 2)
             return;
-        const auto s = proto::decodeStatusReply(payload);
-        const auto& axes = m_client->identity().axes;
-        if (!s || s->axes.size() < 2 || axes.size() < 2)
-            return;
-        checkSettled({s->axes[0].measured / axes[0].wireScale(), s->axes[1].measured / axes[1].wireScale()}, s->deviceTimeUs);
+        checkSettled({s.axes[0].measured, s.axes[1].measured}, s.deviceTimeUs);
     });
 }
 
@@ -495,6 +469,10 @@ void ScanRunner::checkSettled(const std::vector<double>& measuredMm, quint64 dev
     m_triggerUs = deviceTimeUs;
     const int tile = m_layout.path[static_cast<std::size_t>(m_pathIndex)].tile;
     emit triggered(tile, deviceTimeUs);
+    // A camera on the instrument's trigger output sees the output held for the exposure:
+    // its rising edge starts an edge-triggered camera, its length times a level-triggered one.
+    if (m_client->can(dev::Capability::TriggerOutput))
+        m_client->pulseTrigger(m_plan.exposureS);
     m_exposure.start(static_cast<int>(std::lround(m_plan.exposureS * 1000)));
 }
 

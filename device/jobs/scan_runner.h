@@ -7,9 +7,11 @@
 // A run that stopped for any reason (abort, E-stop, a refused move, a lost link,
 // a crash of the program) continues from its run log at the next tile.
 //
-// It needs no protocol of its own: MOVE, the MotionDone event and STATUS (grating
-// positions with the device's clock) carry everything (docs/scan.md).
-#include "device/client/instrument_client.h"
+// It needs no protocol of its own: a move, the MotionDone event and a status reading
+// (grating positions with the device's clock) carry everything (docs/scan.md), so it
+// runs on any dev::Instrument. Estimates use the limits the device reported
+// (jobs::stageModelOf).
+#include "device/client/instrument.h"
 #include "motion/plans/scan/scan_estimate.h"
 #include "motion/records/position_record.h"
 
@@ -34,13 +36,8 @@ public:
         Finished,
     };
 
-    explicit ScanRunner(dev::InstrumentClient* client, QObject* parent = nullptr);
+    explicit ScanRunner(dev::Instrument* client, QObject* parent = nullptr);
     ~ScanRunner() override;
-
-    /// The stage as the plan must fit it: travel within the device's soft limits,
-    /// top speed from HELLO, acceleration and jerk from the reference firmware's
-    /// planner (HELLO does not carry them).
-    static motion::scan::StageModel stageModelOf(const dev::DeviceIdentity& identity, const QVector<dev::SoftLimits>& limits);
 
     /// Why prepare() said no, for callers that offer a way out: they branch on
     /// this, never on the (translated) message.
@@ -113,7 +110,7 @@ private:
     motion::scan::Point2 commanded(int pathIndex) const;
     QString tileName(int tile) const;
 
-    dev::InstrumentClient* m_client;
+    dev::Instrument* m_client;
     motion::scan::ScanPlan m_plan;
     motion::scan::ScanLayout m_layout;
     motion::scan::ScanEstimate m_estimate;

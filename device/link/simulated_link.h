@@ -59,7 +59,7 @@ private:
     std::vector<std::uint8_t> m_out;
 };
 
-/// Loopback pair + simulator host: hand `hostEnd()` to an InstrumentClient.
+/// Loopback pair + simulator host: hand `hostEnd()` to a BenchPilotClient.
 class SimulatedLink : public QObject {
     Q_OBJECT
 public:

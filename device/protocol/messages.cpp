@@ -82,8 +82,32 @@ Bytes encode(const HelloReply& m)
         w.u32(a.maxSpeed);
         w.u32(a.resolution);
     }
+    if (!m.motionLimits && m.otherBlocks.empty())
+        return b;
+    // Extension blocks: a count, then (id, length, body) each in increasing id order, so
+    // a host skips the ones it does not know. The limits block has one entry per axis.
+    w.u8(static_cast<std::uint8_t>((m.motionLimits ? 1 : 0) + m.otherBlocks.size()));
+    if (m.motionLimits) {
+        w.u8(kHelloBlockMotionLimits);
+        w.u16(static_cast<std::uint16_t>(1 + 16 * m.motionLimits->axes.size()));
+        w.u8(static_cast<std::uint8_t>(m.motionLimits->profile));
+        for (const auto& l : m.motionLimits->axes) {
+            w.u32(l.maxAccel);
+            w.u32(l.maxJerk);
+            w.u32(l.defaultSpeed);
+            w.u32(l.minAccelTimeUs);
+        }
+    }
+    for (const auto& o : m.otherBlocks) {
+        w.u8(o.id);
+        w.u16(static_cast<std::uint16_t>(o.body.size()));
+        for (auto byte : o.body)
+            w.u8(byte);
+    }
     return b;
 }
+
+Bytes encode(const HelloRequest& m) { return Bytes{m.flags}; }
 
 Bytes encode(const StatusReply& m)
 {
@@ -231,6 +255,47 @@ std::optional<T> finish(const ByteReader& r, T&& value)
         return std::nullopt;
     return std::optional<T>(std::forward<T>(value));
 }
+/// The extension blocks after HELLO's axes (docs/protocol.md, "HELLO"). A device that
+/// sends them sends at least one; a block of an id this host does not know is skipped.
+bool readHelloBlocks(ByteReader& r, HelloReply& m)
+{
+    const int blocks = r.u8();
+    if (blocks == 0)
+        return false;
+    int lastId = 0;
+    for (int b = 0; b < blocks && r.ok(); ++b) {
+        const std::uint8_t id = r.u8();
+        const std::size_t length = r.u16();
+        if (!r.ok() || length > r.remaining() || id <= lastId)
+            return false;  // short, or ids not strictly increasing
+        lastId = id;
+        if (id != kHelloBlockMotionLimits) {
+            HelloBlock other{id, {}};
+            for (std::size_t k = 0; k < length; ++k)
+                other.body.push_back(r.u8());
+            m.otherBlocks.push_back(std::move(other));
+            continue;
+        }
+        if (length != 1 + 16 * m.axes.size())
+            return false;  // not one entry per axis
+        MotionLimits l;
+        const std::uint8_t profile = r.u8();
+        if (profile > static_cast<std::uint8_t>(MotionProfile::SeedSCurve))
+            return false;
+        l.profile = static_cast<MotionProfile>(profile);
+        for (std::size_t i = 0; i < m.axes.size(); ++i) {
+            AxisMotionLimits a;
+            a.maxAccel = r.u32();
+            a.maxJerk = r.u32();
+            a.defaultSpeed = r.u32();
+            a.minAccelTimeUs = r.u32();
+            l.axes.push_back(a);
+        }
+        m.motionLimits = std::move(l);
+    }
+    return r.ok();
+}
+
 bool knownChannel(std::uint8_t k) { return k <= static_cast<std::uint8_t>(ChannelKind::ControllerU); }
 } // namespace
 
@@ -266,7 +331,18 @@ std::optional<HelloReply> decodeHelloReply(const Bytes& p)
         a.resolution = r.u32();
         m.axes.push_back(a);
     }
+    if (r.ok() && r.remaining() > 0 && !readHelloBlocks(r, m))
+        return std::nullopt;
     return finish(r, std::move(m));
+}
+
+std::optional<HelloRequest> decodeHelloRequest(const Bytes& p)
+{
+    if (p.empty())
+        return HelloRequest{};
+    if (p.size() != 1)
+        return std::nullopt;
+    return HelloRequest{p[0]};
 }
 
 std::optional<StatusReply> decodeStatusReply(const Bytes& p)

@@ -129,6 +129,42 @@ struct AxisInfo {
     std::uint32_t resolution = 0;      ///< one count of the measuring system
 };
 
+/// HELLO's request payload: empty from a host of protocol 1.0, one flags byte from a
+/// host that reads the reply's extension blocks (docs/protocol.md, "HELLO").
+enum HelloFlag : std::uint8_t {
+    HelloReadsExtensions = 1u << 0,  ///< append the extension blocks to the reply
+};
+struct HelloRequest { std::uint8_t flags = 0; };
+
+/// How the device's planner shapes a rest-to-rest move, so a host can time one the way
+/// the device will run it.
+enum class MotionProfile : std::uint8_t {
+    Unstated = 0,
+    Trapezoid = 1,    ///< acceleration-limited, jerk not limited (GRBL's planner)
+    JerkLimited = 2,  ///< time-optimal 7-segment (motion/jerk_limited.h)
+    SeedSCurve = 3,   ///< seed 000's S-curve, its acceleration phase stretched until 1.5·v/t2 ≤ the acceleration limit
+};
+/// One axis' planner limits. Rates of change in thousandths of the axis unit (µm or nL)
+/// per s² and per s³: nanometres would overflow a u32 at 4.3 m/s² and 4.3 m/s³.
+struct AxisMotionLimits {
+    std::uint32_t maxAccel = 0;        ///< µm/s² (nL/s² on the pump)
+    std::uint32_t maxJerk = 0;         ///< µm/s³ (nL/s³); 0: the planner does not limit jerk
+    std::uint32_t defaultSpeed = 0;    ///< wire units per second: what a MOVE with speed 0 runs at
+    std::uint32_t minAccelTimeUs = 0;  ///< SeedSCurve: the shortest acceleration phase t2; 0 for the other profiles
+};
+/// Extension block 1 of the HELLO reply: the planner's limits, one entry per axis.
+struct MotionLimits {
+    MotionProfile profile = MotionProfile::Unstated;
+    std::vector<AxisMotionLimits> axes;
+};
+constexpr std::uint8_t kHelloBlockMotionLimits = 1;
+/// An extension block this host does not read, kept as it came.
+struct HelloBlock {
+    std::uint8_t id = 0;
+    std::vector<std::uint8_t> body;
+    bool operator==(const HelloBlock& o) const { return id == o.id && body == o.body; }
+};
+
 struct HelloReply {
     std::uint8_t protocolVersion = kProtocolVersion;
     DeviceKind kind = DeviceKind::Analyzer;
@@ -140,6 +176,10 @@ struct HelloReply {
     std::string model;
     std::string firmware;
     std::vector<AxisInfo> axes;
+    /// Sent only to a host whose HELLO asked for extension blocks: the reply to an empty
+    /// HELLO is byte for byte what protocol 1.0 defined, so an older host reads it.
+    std::optional<MotionLimits> motionLimits;
+    std::vector<HelloBlock> otherBlocks;  ///< blocks of ids above 1, in increasing id order
 };
 
 enum AxisFlag : std::uint16_t {
@@ -225,6 +265,7 @@ struct ErrorReply {
 
 using Bytes = std::vector<std::uint8_t>;
 
+Bytes encode(const HelloRequest&);
 Bytes encode(const HelloReply&);
 Bytes encode(const StatusReply&);
 Bytes encode(const HomeRequest&);
@@ -241,6 +282,10 @@ Bytes encode(const EventMsg&);
 Bytes encode(const ErrorReply&);
 
 /// Decoders return nullopt unless the payload is exactly one well-formed message.
+/// An empty payload (a 1.0 host) decodes as flags 0.
+std::optional<HelloRequest> decodeHelloRequest(const Bytes&);
+/// Reads the reply with or without extension blocks (ids strictly increasing); blocks of
+/// an id it does not know land in otherBlocks.
 std::optional<HelloReply> decodeHelloReply(const Bytes&);
 std::optional<StatusReply> decodeStatusReply(const Bytes&);
 std::optional<HomeRequest> decodeHomeRequest(const Bytes&);

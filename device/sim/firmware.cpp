@@ -134,11 +134,18 @@ void Firmware::execute(const proto::Frame& f, std::vector<std::uint8_t>& reply)
             sendFrame(ok, f.seq, {}, reply);
     };
     switch (type) {
-    case MsgType::Hello:
-        if (!f.payload.empty())
+    case MsgType::Hello: {
+        // Protocol 1.0 firmware knew no HELLO payload and refused one; a host that asks
+        // for the extension blocks then asks again without (docs/protocol.md, "HELLO").
+        const auto r = proto::decodeHelloRequest(f.payload);
+        if (!r || (!m_helloExtensions && !f.payload.empty()))
             return bad("HELLO");
-        sendFrame(ok, f.seq, proto::encode(m_machine.hello(m_linkBaud)), reply);
+        proto::HelloReply h = m_machine.hello(m_linkBaud);
+        if (r->flags & proto::HelloReadsExtensions)
+            h.motionLimits = m_machine.motionLimits();
+        sendFrame(ok, f.seq, proto::encode(h), reply);
         return;
+    }
     case MsgType::Status:
         if (!f.payload.empty())
             return bad("STATUS");

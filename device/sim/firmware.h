@@ -40,6 +40,9 @@ public:
     /// (proto::kPathHostSilenceMs). A simulator run K times faster than the wall clock judges
     /// the host by the host's clock: K times the limit (SimulatorHost::setTimeScale does that).
     void setHostSilenceLimitS(double seconds) { m_hostSilenceLimitS = seconds; }
+    /// false: answer HELLO as protocol 1.0 firmware did, refusing a HELLO with a payload
+    /// and never sending extension blocks (for trying a host against older firmware).
+    void setHelloExtensions(bool on) { m_helloExtensions = on; }
 
     /// Bytes per second the link can carry (8N1: ten bit times per byte).
     double linkBytesPerSecond() const { return m_linkBaud / 10.0; }
@@ -69,6 +72,7 @@ private:
     std::uint64_t m_executed = 0, m_duplicates = 0, m_droppedBatches = 0;
     double m_lastHostFrameS = 0;  ///< machine time of the last good frame from the host
     double m_hostSilenceLimitS = proto::kPathHostSilenceMs / 1000.0;
+    bool m_helloExtensions = true;
 
     /// Replies to the last requests, so a retransmission (same seq and bytes) is
     /// answered again without acting twice. Fixed ring: the oldest entry is overwritten.

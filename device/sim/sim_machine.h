@@ -33,6 +33,9 @@ public:
 
     const MachineConfig& config() const { return m_cfg; }
     proto::HelloReply hello(std::uint32_t linkBaud) const;
+    /// The planner's limits as HELLO's extension block states them: the numbers
+    /// planSegment() works to, so a host times a move the way it will run.
+    proto::MotionLimits motionLimits() const;
     int axisCount() const { return static_cast<int>(m_axes.size()); }
     double timeS() const { return static_cast<double>(m_ticks) * kTickS; }
     std::uint64_t timeUs() const { return m_ticks * 100; }

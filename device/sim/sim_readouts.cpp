@@ -44,6 +44,34 @@ proto::HelloReply SimMachine::hello(std::uint32_t linkBaud) const
     return h;
 }
 
+proto::MotionLimits SimMachine::motionLimits() const
+{
+    proto::MotionLimits l;
+    const bool seed = m_cfg.profile == ProfileKind::SeedSCurve;
+    l.profile = seed ? proto::MotionProfile::SeedSCurve : proto::MotionProfile::JerkLimited;
+    auto u32 = [](double v) { return static_cast<std::uint32_t>(std::clamp(std::llround(v), 0LL, 4294967295LL)); };
+    for (int i = 0; i < axisCount(); ++i) {
+        const AxisConfig& c = st(i).plant->config();
+        proto::AxisMotionLimits a;
+        // Thousandths of the axis unit: µm/s² (nL/s² on the pump).
+        a.maxAccel = u32(c.maxAccel * 1e3);
+        if (seed) {
+            // The seed's curve has jerk 6·v/t2² at its start, with t2 = max(accelTimeS,
+            // 1.5·v/maxAccel) and v ≤ maxSpeed: largest at v = 2·maxAccel·accelTimeS/3,
+            // where it is 4·maxAccel/accelTimeS. The planner bounds jerk only through t2,
+            // so this is the most it ever commands, not a parameter it plans with.
+            const double vPeak = std::min(c.maxSpeed, 2.0 * c.maxAccel * c.accelTimeS / 3.0);
+            a.maxJerk = u32(6.0 * vPeak / (c.accelTimeS * c.accelTimeS) * 1e3);
+            a.minAccelTimeUs = u32(c.accelTimeS * 1e6);
+        } else {
+            a.maxJerk = u32(c.maxJerk * 1e3);
+        }
+        a.defaultSpeed = u32(c.defaultSpeed * scale(i));
+        l.axes.push_back(a);
+    }
+    return l;
+}
+
 proto::StatusReply SimMachine::status() const
 {
     proto::StatusReply r;

@@ -65,7 +65,7 @@ const TelemetryHub::Instrument* TelemetryHub::instrument(int index) const
     return it == m_instruments.end() ? nullptr : &it->second;
 }
 
-void TelemetryHub::addInstrument(int index, const QString& name, dev::InstrumentClient* client)
+void TelemetryHub::addInstrument(int index, const QString& name, dev::Instrument* client)
 {
     if (Instrument* old = instrument(index))
         for (const auto& c : old->connections)
@@ -75,9 +75,9 @@ void TelemetryHub::addInstrument(int index, const QString& name, dev::Instrument
     in.name = name;
     in.client = client;
     if (client) {
-        in.connections << connect(client, &dev::InstrumentClient::stateChanged, this,
+        in.connections << connect(client, &dev::Instrument::stateChanged, this,
                                   [this, index](dev::LinkState s) { onStateChanged(index, s); });
-        in.connections << connect(client, &dev::InstrumentClient::telemetryReceived, this,
+        in.connections << connect(client, &dev::Instrument::telemetryReceived, this,
                                   [this, index](const proto::TelemetryBatch& b) { onBatch(index, b); });
         in.connections << connect(client, &QObject::destroyed, this, [this, index] {
             if (Instrument* i = instrument(index))
@@ -112,7 +112,8 @@ QVector<ChannelKey> TelemetryHub::availableChannels(int index) const
     if (!in || !in->client)
         return out;
     const dev::DeviceIdentity& id = in->client->identity();
-    const bool pid = id.capabilities & proto::CapClosedLoopPid;
+    const dev::Capabilities can = in->client->capabilities();
+    const bool pid = can.testFlag(dev::Capability::ClosedLoop);
     using K = proto::ChannelKind;
     for (int a = 0; a < id.axes.size(); ++a) {
         const auto axis = static_cast<std::uint8_t>(a);
@@ -121,7 +122,7 @@ QVector<ChannelKey> TelemetryHub::availableChannels(int index) const
                 continue;
             out.push_back(ChannelKey{index, {axis, k}});
         }
-        if (id.capabilities & proto::CapGains)  // tuning: the PID's own output
+        if (can.testFlag(dev::Capability::PidGains))  // tuning: the PID's own output
             out.push_back(ChannelKey{index, {axis, K::ControllerU}});
     }
     if (pid)

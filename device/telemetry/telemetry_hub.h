@@ -9,7 +9,7 @@
 // call store() when they draw and must not keep the pointer past the current
 // event-loop turn: a store is replaced when its rate or the window changes and
 // deleted when nobody wants its channel any more.
-#include "device/client/instrument_client.h"
+#include "device/client/instrument.h"
 #include "device/telemetry/channel_store.h"
 
 #include <QFile>
@@ -56,7 +56,7 @@ public:
 
     /// The hub owns the client's telemetry subscription from now on (replacing the
     /// client's default one when the client is, or becomes, Ready). Not owned.
-    void addInstrument(int instrument, const QString& name, dev::InstrumentClient* client);
+    void addInstrument(int instrument, const QString& name, dev::Instrument* client);
     QVector<int> instruments() const;
     QString instrumentName(int instrument) const;
 
@@ -144,7 +144,7 @@ private:
     };
     struct Instrument {
         QString name;
-        QPointer<dev::InstrumentClient> client;
+        QPointer<dev::Instrument> client;
         QList<QMetaObject::Connection> connections;
         std::map<proto::ChannelRef, Collected, ChannelRefLess> stores;
         /// Channels someone wants now (sorted); batches' other channels are ignored.

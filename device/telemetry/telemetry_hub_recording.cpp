@@ -122,7 +122,7 @@ void TelemetryHub::writeRecordRows(int index, const proto::TelemetryBatch& batch
         return;
     const Instrument* in = instrument(index);
     const QByteArray who = csvCell(in ? in->name : QString::number(index));
-    dev::InstrumentClient* client = in ? in->client.data() : nullptr;
+    dev::Instrument* client = in ? in->client.data() : nullptr;
     for (std::size_t k = 0; k < batch.sampleCount; ++k) {
         appendTimeUs(r.buffer, batch.firstSampleTimeUs + k * batch.periodUs);
         r.buffer += ',';

@@ -171,7 +171,7 @@ void TelemetryHub::onBatch(int index, const proto::TelemetryBatch& batch)
         in.pausedAtS = in.latestS;  // paused before any data: freeze on the first batch
     trim(in);
 
-    dev::InstrumentClient* client = in.client;
+    dev::Instrument* client = in.client;
     std::size_t heldBack = 0;
     m_scratch.resize(n);
     for (std::size_t c = 0; c < nc; ++c) {

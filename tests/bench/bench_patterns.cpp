@@ -9,7 +9,7 @@
 // geometric path with the same ContourTracker the Patterns screen uses. Also reported: the
 // same figures from 250 Hz samples (what the screen sees through telemetry), duration and
 // underruns. Costs: look-ahead re-plan over a full queue, point-by-point walk, contour judging.
-#include "device/client/path_wire.h"
+#include "device/backends/benchpilot/path_wire.h"
 #include "device/sim/path_queue.h"
 #include "device/sim/sim_machine.h"
 #include "motion/path/contour_tracker.h"

@@ -15,7 +15,7 @@
 //
 // BP_BENCH_SHORT=1 (CTest) shrinks sizes and durations to prove the program works;
 // each benchmark's label says what it ran. Full numbers come from a run by hand.
-#include "device/client/instrument_client.h"
+#include "device/backends/benchpilot/benchpilot_client.h"
 #include "device/link/simulated_link.h"
 #include "device/protocol/frame_codec.h"
 #include "device/telemetry/channel_store.h"
@@ -120,7 +120,7 @@ struct Rig {
         return waitFor([this] { return rateHz > 0; }, 10000);
     }
     dev::SimulatedLink link;
-    dev::InstrumentClient client;
+    dev::BenchPilotClient client;
     tele::TelemetryHub hub;
     int rateHz = 0;
     QString note;
@@ -348,7 +348,7 @@ void BM_LinkPayloadShare(benchmark::State& state)
         qint64 wire = 0, payload = 0;
         QObject::connect(rig.link.hostEnd(), &dev::Transport::bytesReceived, &rig.hub,
                          [&wire](const QByteArray& b) { wire += b.size(); });
-        QObject::connect(&rig.client, &dev::InstrumentClient::telemetryReceived, &rig.hub,
+        QObject::connect(&rig.client, &dev::BenchPilotClient::telemetryReceived, &rig.hub,
                          [&payload](const proto::TelemetryBatch& b) { payload += qint64(b.values.size()) * 4; });
         const qint64 carried0 = rig.link.pair().bytesCarried(dev::LoopbackPair::B);
         QElapsedTimer t;

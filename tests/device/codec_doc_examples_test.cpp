@@ -56,6 +56,12 @@ std::vector<Example> examples()
     h.axes = {{'X', AxisUnit::Millimetre, 0, nm(100), static_cast<std::uint32_t>(nm(20)), 500},
               {'Y', AxisUnit::Millimetre, 0, nm(100), static_cast<std::uint32_t>(nm(20)), 500}};
     ex.push_back({"hello-reply", replyTypeOf(MsgType::Hello), 1, encode(h)});
+    // The same stage to a host that reads the extension blocks: its planner's limits,
+    // 200 mm/s² and 4000 mm/s³ per axis, 10 mm/s when a MOVE names no speed.
+    ex.push_back({"hello-request-extended", t(MsgType::Hello), 1, encode(HelloRequest{HelloReadsExtensions})});
+    h.motionLimits = MotionLimits{MotionProfile::JerkLimited, {{200000, 4000000, static_cast<std::uint32_t>(nm(10)), 0},
+                                                               {200000, 4000000, static_cast<std::uint32_t>(nm(10)), 0}}};
+    ex.push_back({"hello-reply-extended", replyTypeOf(MsgType::Hello), 1, encode(h)});
 
     ex.push_back({"status-request", t(MsgType::Status), 2, {}});
     StatusReply s;

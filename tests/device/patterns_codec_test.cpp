@@ -1,5 +1,5 @@
 // Path queue messages (messages_path.h): layouts, round trips, strict decoding.
-#include "device/client/path_wire.h"
+#include "device/backends/benchpilot/path_wire.h"
 #include "device/protocol/messages_path.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // The path queue through the firmware's wire: replies carry the fill state, realtime hold and
 // clear overtake queued requests, a silent host gets a feed hold, a new session ends the path.
-#include "device/client/path_wire.h"
+#include "device/backends/benchpilot/path_wire.h"
 #include "device/protocol/frame_codec.h"
 #include "device/protocol/messages_path.h"
 #include "device/sim/firmware.h"

@@ -2,7 +2,7 @@
 // What the path-queue tests share: building paths in mm, queuing them on a homed simulated
 // machine in flow-controlled appends (as the host does), and running it while the contour
 // tracker judges every tick's measured position against the geometric path.
-#include "device/client/path_wire.h"
+#include "device/backends/benchpilot/path_wire.h"
 #include "device/sim/path_queue.h"
 #include "motion/path/contour_tracker.h"
 #include "sim_test_support.h"

@@ -4,7 +4,7 @@
 // the link cannot carry falls back to the capacity the device states, the union of
 // every consumer's wants is what is subscribed, again after a reconnect. With
 // hand-made batches: losses, the window, pause, recording to CSV.
-#include "device/client/instrument_client.h"
+#include "device/backends/benchpilot/benchpilot_client.h"
 #include "device/link/simulated_link.h"
 #include "device/telemetry/telemetry_hub.h"
 
@@ -72,9 +72,9 @@ struct SimRig {
         link.host().setManualClock(true);
         link.host().firmware().setLinkBaud(deviceBaud);
         client.setTransport(link.hostEnd());
-        QObject::connect(&client, &dev::InstrumentClient::telemetryReceived, &client,
+        QObject::connect(&client, &dev::BenchPilotClient::telemetryReceived, &client,
                          [this](const proto::TelemetryBatch& b) { batches.push_back(b); });
-        QObject::connect(&client, &dev::InstrumentClient::requestFailed, &client,
+        QObject::connect(&client, &dev::BenchPilotClient::requestFailed, &client,
                          [this](const dev::RequestError& e) { failures.push_back(e); });
         QObject::connect(&hub, &TelemetryHub::subscriptionChanged, &hub, [this](int i, int rate, const QString& note) {
             changes.push_back({i, rate, note});
@@ -110,7 +110,7 @@ struct SimRig {
         QString note;
     };
     dev::SimulatedLink link;
-    dev::InstrumentClient client;
+    dev::BenchPilotClient client;
     TelemetryHub hub;
     int index;
     std::vector<proto::TelemetryBatch> batches;
@@ -156,7 +156,7 @@ struct FakeRig {
             nextIndex += 100;
         }
     }
-    dev::InstrumentClient analyzer, stage;
+    dev::BenchPilotClient analyzer, stage;
     TelemetryHub hub;
     std::uint32_t nextIndex = 0;
     std::vector<int> arrived;

@@ -25,7 +25,7 @@ inline std::unique_ptr<app::MainWindow> openReadyWindow(QSize size)
     auto w = std::make_unique<app::MainWindow>(testWindowOptions());
     w->resize(size);
     w->show();
-    if (!waitFor([&] { return w->analyzer()->client()->isReady() && w->stage()->client()->isReady(); }, 5000))
+    if (!waitFor([&] { return w->analyzer()->instrument()->isReady() && w->stage()->instrument()->isReady(); }, 5000))
         return nullptr;
     return w;
 }

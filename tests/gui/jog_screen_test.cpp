@@ -54,9 +54,9 @@ protected:
         w = std::make_unique<app::MainWindow>(testOptions());
         w->resize(1500, 900);
         w->show();
-        ASSERT_TRUE(waitFor([&] { return w->analyzer()->client()->isReady() && w->stage()->client()->isReady(); }, 5000));
+        ASSERT_TRUE(waitFor([&] { return w->analyzer()->instrument()->isReady() && w->stage()->instrument()->isReady(); }, 5000));
     }
-    dev::InstrumentClient* analyzer() { return w->analyzer()->client(); }
+    dev::Instrument* analyzer() { return w->analyzer()->instrument(); }
     std::unique_ptr<app::MainWindow> w;
 };
 
@@ -144,8 +144,8 @@ TEST_F(JogScreenTest, GoToIsOnlyOfferedOnHomedAxes)
     ASSERT_EQ(gos.size(), 2);
     pump(200);
     EXPECT_FALSE(gos[0]->isEnabled()) << "absolute move offered on an unhomed axis";
-    w->stage()->client()->home(0);
-    ASSERT_TRUE(waitFor([&] { return w->stage()->client()->status().axes[0].homed && w->stage()->client()->status().axes[1].homed; }, 30000));
+    w->stage()->instrument()->home(0);
+    ASSERT_TRUE(waitFor([&] { return w->stage()->instrument()->status().axes[0].homed && w->stage()->instrument()->status().axes[1].homed; }, 30000));
     pump(200);
     EXPECT_TRUE(gos[0]->isEnabled());
 }

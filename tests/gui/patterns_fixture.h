@@ -28,7 +28,7 @@ protected:
         w = guitest::openReadyWindow({1500, 900});
         ASSERT_TRUE(w) << "the simulated instruments did not become ready";
     }
-    dev::InstrumentClient* stage() { return w->stage()->client(); }
+    dev::Instrument* stage() { return w->stage()->instrument(); }
     dev::SimulatedLink* stageLink() { return qobject_cast<dev::SimulatedLink*>(w->stage()->link()); }
     ui::JoystickScreen* joystick(int i) { return w->motionScreens()->joystick(i); }
     /// The stage's Joystick screen on show with its knob ready to grab (nullptr if it never is).

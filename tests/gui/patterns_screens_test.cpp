@@ -80,7 +80,7 @@ TEST_F(MotionScreensTest, TheZSliderSpringsBackAndStopsZ)
     QSlider* z = j->zSlider();
     ASSERT_TRUE(waitFor([&] { return z->isVisible() && z->isEnabled(); }, 2000));
     EXPECT_FALSE(joystick(1)->zSlider()->isVisibleTo(joystick(1)));  // the stage has no Z
-    dev::InstrumentClient* an = w->analyzer()->client();
+    dev::Instrument* an = w->analyzer()->instrument();
     const int zi = an->identity().axisIndex(QLatin1Char('Z'));
     const double z0 = an->status().axes[zi].commanded;
     z->setSliderDown(true);

@@ -70,7 +70,7 @@ protected:
         screen->setRunLogDirectory(dir.path());
         pump(50);
     }
-    dev::InstrumentClient* analyzer() { return w->analyzer()->client(); }
+    dev::Instrument* analyzer() { return w->analyzer()->instrument(); }
     /// An unpaced simulator with a fast clock, homed: runs take seconds, not minutes.
     void fastHomedAnalyzer()
     {

@@ -36,7 +36,7 @@ TEST(PlotsLiveStrip, ShowsTheAxisLastJoggedWhileTheJogScreenIsShown)
     w.showScreen(QStringLiteral("jog"));
     w.showInstrument(1);
     w.show();
-    ASSERT_TRUE(waitFor([&] { return w.analyzer()->client()->isReady() && w.stage()->client()->isReady(); }, 5000));
+    ASSERT_TRUE(waitFor([&] { return w.analyzer()->instrument()->isReady() && w.stage()->instrument()->isReady(); }, 5000));
     ui::LiveStrip* strip = w.jogScreen(1)->findChild<ui::LiveStrip*>();
     ASSERT_NE(strip, nullptr);
     ASSERT_TRUE(strip->isVisible());

@@ -76,14 +76,14 @@ protected:
         w->resize(1500, 950);
         ASSERT_TRUE(w->showScreen(QStringLiteral("plots")));
         w->show();
-        ASSERT_TRUE(waitFor([&] { return w->analyzer()->client()->isReady() && w->stage()->client()->isReady(); }, 5000));
+        ASSERT_TRUE(waitFor([&] { return w->analyzer()->instrument()->isReady() && w->stage()->instrument()->isReady(); }, 5000));
         screen = w->plotsScreen();
         ASSERT_NE(screen, nullptr);
         hub = w->telemetry();
         // The default plots fill in once the stage says what it has.
         ASSERT_TRUE(waitFor([&] { return screen->stack()->panel(0)->hasChannel(stageXMeasured); }, 3000));
     }
-    dev::InstrumentClient* stage() { return w->stage()->client(); }
+    dev::Instrument* stage() { return w->stage()->instrument(); }
     /// Waits until the stage's X has measured samples drawn in plot 1.
     bool streaming(int points = 10)
     {

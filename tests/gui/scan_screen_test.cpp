@@ -42,7 +42,7 @@ protected:
         w->resize(1500, 950);
         w->show();
         ASSERT_TRUE(w->showScreen(QStringLiteral("scan")));
-        ASSERT_TRUE(waitFor([&] { return w->stage()->client()->isReady(); }, 5000));
+        ASSERT_TRUE(waitFor([&] { return w->stage()->instrument()->isReady(); }, 5000));
         screen = w->scanScreen();
         ASSERT_NE(screen, nullptr);
     }
@@ -166,7 +166,7 @@ TEST_F(ScanScreenTest, PlansAreSavedAndOpened)
 
 TEST_F(ScanScreenTest, RunsOnTheStageWithProgressAndExports)
 {
-    dev::InstrumentClient* stage = w->stage()->client();
+    dev::Instrument* stage = w->stage()->instrument();
     auto* link = qobject_cast<dev::SimulatedLink*>(w->stage()->link());
     ASSERT_NE(link, nullptr);
     link->host().setTimeScale(20);  // homing crosses the stage at search speed
@@ -249,7 +249,7 @@ TEST_F(ScanScreenTest, AnotherPlansRunLogOffersAFreshStartInAnyLanguage)
 
 TEST_F(ScanScreenTest, EscapeOnTheMapIsStillTheEStop)
 {
-    dev::InstrumentClient* stage = w->stage()->client();
+    dev::Instrument* stage = w->stage()->instrument();
     screen->map()->setFocus();
     QTest::keyClick(screen->map(), Qt::Key_Escape);
     ASSERT_TRUE(waitFor([&] { return stage->status().estop; }, 3000));

@@ -95,7 +95,7 @@ TEST_F(TuningScreenTest, GainsApplyRevertAndKeepAHistoryOnTheStage)
 
 TEST_F(TuningScreenTest, AStepTestOnTheStageAddsAResponseAndItsMetrics)
 {
-    auto* s = w->stage()->client();
+    auto* s = w->stage()->instrument();
     s->home(0);
     pump(300);
     ASSERT_TRUE(waitFor([&] { return !s->status().anyMoving() && s->status().axes[0].homed; }, 40000));

@@ -1,4 +1,4 @@
-// InstrumentClient + in-process simulator over a loopback pair at 115200 baud:
+// BenchPilotClient + in-process simulator over a loopback pair at 115200 baud:
 // what an operator sees when connecting, homing, moving, jogging, hitting a
 // switch or the E-stop, and being refused.
 #include "sim_session.h"
@@ -31,8 +31,8 @@ std::string text(const QStringList& l) { return l.join(QStringLiteral(" | ")).to
 TEST(ClientOverLoopback, AnalyzerConnectsThroughIdentifiedToReadyWithItsIdentity)
 {
     SimSession s(proto::DeviceKind::Analyzer);
-    QSignalSpy states(&s.client, &dev::InstrumentClient::stateChanged);
-    QSignalSpy identified(&s.client, &dev::InstrumentClient::identified);
+    QSignalSpy states(&s.client, &dev::BenchPilotClient::stateChanged);
+    QSignalSpy identified(&s.client, &dev::BenchPilotClient::identified);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
 
     std::vector<LinkState> seen;
@@ -47,8 +47,11 @@ TEST(ClientOverLoopback, AnalyzerConnectsThroughIdentifiedToReadyWithItsIdentity
     EXPECT_FALSE(id.model.isEmpty());
     EXPECT_EQ(letters(id), QStringLiteral("XYZP"));
     EXPECT_EQ(id.jogWatchdogMs, 250);
-    EXPECT_TRUE(id.capabilities & proto::CapEncoder);
-    EXPECT_TRUE(id.capabilities & proto::CapPump);
+    EXPECT_TRUE(id.protocolCapabilities & proto::CapEncoder);
+    EXPECT_TRUE(id.protocolCapabilities & proto::CapPump);
+    EXPECT_TRUE(s.client.capabilities().testFlag(dev::Capability::MeasuredPosition));
+    EXPECT_TRUE(s.client.capabilities().testFlag(dev::Capability::Pump));
+    EXPECT_FALSE(s.client.capabilities().testFlag(dev::Capability::PidGains));
     EXPECT_DOUBLE_EQ(id.axes[0].travelMax, 200.0);
     EXPECT_DOUBLE_EQ(id.axes[2].travelMax, 100.0);
     EXPECT_EQ(id.axes[3].unit, proto::AxisUnit::Microlitre);
@@ -73,7 +76,8 @@ TEST(ClientOverLoopback, StageIdentifiesWithGratingAxesXY)
     const auto& id = s.client.identity();
     EXPECT_EQ(id.kind, proto::DeviceKind::Stage);
     EXPECT_EQ(letters(id), QStringLiteral("XY"));
-    EXPECT_TRUE(id.capabilities & proto::CapGrating);
+    EXPECT_TRUE(id.protocolCapabilities & proto::CapGrating);
+    EXPECT_TRUE(s.client.capabilities().testFlag(dev::Capability::PidGains));
     EXPECT_DOUBLE_EQ(id.axes[0].travelMax, 100.0);
     EXPECT_NEAR(id.axes[0].resolution, 0.0005, 1e-9);
 }

@@ -51,7 +51,7 @@ TEST_P(JogWatchdog, JogWhoseRefreshesStopIsAtRestWithin250msOfTheLastRefresh)
     });
     ASSERT_TRUE(waitFor([&] { return subscribed; }, 3000));
     std::vector<Sample> samples;
-    QObject::connect(&s.client, &dev::InstrumentClient::telemetryReceived, &s.client, [&](const proto::TelemetryBatch& b) {
+    QObject::connect(&s.client, &dev::BenchPilotClient::telemetryReceived, &s.client, [&](const proto::TelemetryBatch& b) {
         const std::size_t n = b.channels.size();
         if (n != 2)
             return;

@@ -58,7 +58,7 @@ TEST(LinkFaults, GarbageFromTheDeviceIsCountedAndSkippedWithoutReconnecting)
 {
     SimSession s(proto::DeviceKind::Analyzer);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
-    QSignalSpy states(&s.client, &dev::InstrumentClient::stateChanged);
+    QSignalSpy states(&s.client, &dev::BenchPilotClient::stateChanged);
     const dev::LinkStats before = s.client.stats();
 
     std::mt19937 rng(20240601);
@@ -220,9 +220,9 @@ TEST(LinkFaults, DeviceThatNeverAnswersGivesALinkErrorWithinTwoSeconds)
 {
     LoopbackPair pair(itest::kLinkBaud);
     pair.end(LoopbackPair::B)->open();  // a device is there, powered, and mute
-    dev::InstrumentClient client;
+    dev::BenchPilotClient client;
     QStringList errors;
-    QObject::connect(&client, &dev::InstrumentClient::linkError, &client, [&](const QString& m) { errors << m; });
+    QObject::connect(&client, &dev::BenchPilotClient::linkError, &client, [&](const QString& m) { errors << m; });
     client.setTransport(pair.end(LoopbackPair::A));
 
     QElapsedTimer wall;
@@ -295,7 +295,7 @@ TEST(LinkFaults, UnplugDuringMoveIsLinkLostAndReplugReconnects)
     ASSERT_FALSE(s.call([&](auto cb) { s.client.move({{x, 40.0}}, true, 0, cb); }));
     ASSERT_TRUE(waitFor([&] { return s.link.machine().commandedLogical(x) > start + 2.0; }, 5000));
 
-    QSignalSpy states(&s.client, &dev::InstrumentClient::stateChanged);
+    QSignalSpy states(&s.client, &dev::BenchPilotClient::stateChanged);
     s.link.pair().unplug();
     ASSERT_TRUE(waitFor([&] { return s.client.state() == LinkState::Lost; }, 2000));
     ASSERT_FALSE(s.linkErrors.isEmpty());
@@ -329,9 +329,9 @@ TEST(LinkFaults, UnplugDuringMoveIsLinkLostAndReplugReconnects)
 TEST(LinkFaults, SerialPortThatDoesNotExistFailsAtOnceWithAClearMessage)
 {
     dev::SerialTransport port(QStringLiteral("/dev/ttyBP_nonexistent"), 115200);
-    dev::InstrumentClient client;
+    dev::BenchPilotClient client;
     QStringList errors;
-    QObject::connect(&client, &dev::InstrumentClient::linkError, &client, [&](const QString& m) { errors << m; });
+    QObject::connect(&client, &dev::BenchPilotClient::linkError, &client, [&](const QString& m) { errors << m; });
     QSignalSpy failed(&port, &dev::Transport::failed);
     client.setTransport(&port);
 
@@ -361,7 +361,7 @@ TEST(LinkFaults, ASecondSessionSeesTheDeviceAsItIsNotAsTheLastSessionLeftIt)
     ASSERT_TRUE(s.waitEvent(K::MotionDone, x, mark));
     s.client.disconnectLink();
 
-    dev::InstrumentClient second;
+    dev::BenchPilotClient second;
     second.setTransport(&s.tap);
     second.connectLink();
     ASSERT_TRUE(waitFor([&] { return second.state() == LinkState::Ready; }, 5000));

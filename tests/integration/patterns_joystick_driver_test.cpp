@@ -80,7 +80,7 @@ TEST(PatternsJoystickDriver, HoldingStillOnlyKeepsTheWatchdogFed)
         itest::spin(2);
     }
     const int keepAlive = r.jogFrames - before;
-    EXPECT_LE(keepAlive, 1000 / dev::JoystickDriver::kKeepAliveMs + 2);
+    EXPECT_LE(keepAlive, 1000 / dev::BenchPilotClient::kJogRefreshMs + 2);
     EXPECT_GE(keepAlive, 5);
     EXPECT_TRUE(r.s.link.machine().status().axes[0].flags & proto::AxisJogging);
     r.stick.stop();

@@ -25,13 +25,13 @@ namespace {
 /// client's own telemetry (the default subscription carries commanded and measured X, Y).
 struct RunnerRig {
     SimSession s;
-    dev::ProtocolPathClient paths{&s.client};
-    PatternRunner runner{&s.client, &paths};
+    dev::PathClient& paths = *s.client.paths();
+    PatternRunner runner{&s.client};
     QStringList messages;
 
     explicit RunnerRig(proto::DeviceKind kind, double timeScale = 8) : s(kind, itest::kUnpaced)
     {
-        QObject::connect(&s.client, &dev::InstrumentClient::telemetryReceived, &runner,
+        QObject::connect(&s.client, &dev::BenchPilotClient::telemetryReceived, &runner,
                          [this](const proto::TelemetryBatch& b) { jobs::feedBatch(runner, s.client, b); });
         QObject::connect(&runner, &PatternRunner::message, &runner, [this](const QString& m, bool) { messages << m; });
         EXPECT_TRUE(s.connect());
@@ -111,7 +111,7 @@ TEST(PatternsRunner, ARunnerGoneWithItsApproachMoveInFlightIsNeverCalledBack)
     // pattern's start must not reach the runner that sent it.
     RunnerRig rig(proto::DeviceKind::Stage);
     {
-        PatternRunner gone(&rig.s.client, &rig.paths);
+        PatternRunner gone(&rig.s.client);
         ASSERT_TRUE(gone.start(planOf(PatternShape::Circle, 2.0), {}));
     }
     ASSERT_TRUE(rig.s.waitStill());

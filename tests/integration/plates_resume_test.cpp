@@ -204,7 +204,7 @@ TEST(PlateRunLink, AMotionDoneLostOnTheLinkIsMadeGoodByTheStatus)
     FilterTransport deviceEnd(pair.end(dev::LoopbackPair::B));
     dev::SimulatorHost host(sim::analyzerConfig(), 0, &deviceEnd);
     host.start();
-    dev::InstrumentClient client;
+    dev::BenchPilotClient client;
     client.setTransport(pair.end(dev::LoopbackPair::A));
     client.connectLink();
     ASSERT_TRUE(waitFor([&] { return client.isReady(); }, 5000));

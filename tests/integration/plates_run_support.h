@@ -45,7 +45,7 @@ inline plates::PlanContext builtinContext()
     return c;
 }
 
-inline plates::RecipePlan planFor(const plates::Recipe& r, const dev::InstrumentClient& client)
+inline plates::RecipePlan planFor(const plates::Recipe& r, const dev::BenchPilotClient& client)
 {
     plates::StartState s;
     const auto& a = client.status().axes;
@@ -56,7 +56,7 @@ inline plates::RecipePlan planFor(const plates::Recipe& r, const dev::Instrument
 
 /// A resumed run's plan: from where the logged run began (its plunger), so the
 /// syringe's accounting is the original run's.
-inline plates::RecipePlan planForResume(const plates::Recipe& r, const dev::InstrumentClient& client, const QString& log)
+inline plates::RecipePlan planForResume(const plates::Recipe& r, const dev::BenchPilotClient& client, const QString& log)
 {
     return plates::planRecipe(r, builtinContext(), jobs::RecipeRunner::resumeStart(log, client));
 }

@@ -1,7 +1,7 @@
 // The real serial path: benchpilot-sim serves the reference firmware on a
 // pseudo-terminal, and benchpilot-cli or a SerialTransport opens it like any
 // serial port. The simulator runs at --time-scale 4 to keep homing short.
-#include "device/client/instrument_client.h"
+#include "device/backends/benchpilot/benchpilot_client.h"
 #include "device/link/serial_transport.h"
 #include "programs.h"
 #include "pty_simulator.h"
@@ -174,9 +174,9 @@ TEST(PtySerial, SimulatorTerminatedDuringMoveIsLinkLostAndItsSymlinkIsGone)
     PtySimulator sim;
     ASSERT_TRUE(sim.start(QStringLiteral("stage"))) << sim.error().toStdString();
     dev::SerialTransport port(sim.link(), 115200);
-    dev::InstrumentClient client;
+    dev::BenchPilotClient client;
     QStringList errors;
-    QObject::connect(&client, &dev::InstrumentClient::linkError, &client, [&](const QString& m) { errors << m; });
+    QObject::connect(&client, &dev::BenchPilotClient::linkError, &client, [&](const QString& m) { errors << m; });
     client.setTransport(&port);
     client.connectLink();
     ASSERT_TRUE(waitFor([&] { return client.state() == LinkState::Ready || client.state() == LinkState::Disconnected; }, 5000));

@@ -1,8 +1,8 @@
 #pragma once
-// An InstrumentClient connected to the in-process simulator over a loopback
+// An BenchPilotClient connected to the in-process simulator over a loopback
 // pair, with what a test needs to watch it: every event, link error and
 // refusal the client reported, and helpers that wait on the real event loop.
-#include "device/client/instrument_client.h"
+#include "device/backends/benchpilot/benchpilot_client.h"
 #include "device/link/simulated_link.h"
 #include "tap_transport.h"
 #include "wait.h"
@@ -26,13 +26,13 @@ public:
     explicit SimSession(proto::DeviceKind kind, qint32 baud = kLinkBaud)
         : link(kind, baud), tap(link.hostEnd())
     {
-        QObject::connect(&client, &dev::InstrumentClient::eventReceived, &client,
+        QObject::connect(&client, &dev::BenchPilotClient::eventReceived, &client,
                          [this](const dev::DeviceEvent& e) { events.push_back(e); });
-        QObject::connect(&client, &dev::InstrumentClient::linkError, &client,
+        QObject::connect(&client, &dev::BenchPilotClient::linkError, &client,
                          [this](const QString& m) { linkErrors << m; });
-        QObject::connect(&client, &dev::InstrumentClient::requestFailed, &client,
+        QObject::connect(&client, &dev::BenchPilotClient::requestFailed, &client,
                          [this](const dev::RequestError& e) { failures.push_back(e); });
-        QObject::connect(&client, &dev::InstrumentClient::statusChanged, &client, [this] { ++statusCount; });
+        QObject::connect(&client, &dev::BenchPilotClient::statusChanged, &client, [this] { ++statusCount; });
         client.setTransport(&tap);
     }
     ~SimSession() { client.setTransport(nullptr); }
@@ -51,7 +51,7 @@ public:
 
     /// Sends one request through `send` and waits for its answer; nullopt means accepted.
     /// A request the client never answers is a test failure (and reported as a Timeout).
-    std::optional<dev::RequestError> call(const std::function<void(dev::InstrumentClient::Callback)>& send,
+    std::optional<dev::RequestError> call(const std::function<void(dev::BenchPilotClient::Callback)>& send,
                                           int timeoutMs = 5000)
     {
         bool done = false;
@@ -132,7 +132,7 @@ public:
 
     dev::SimulatedLink link;
     TapTransport tap;
-    dev::InstrumentClient client;
+    dev::BenchPilotClient client;
     std::vector<dev::DeviceEvent> events;
     QStringList linkErrors;
     std::vector<dev::RequestError> failures;

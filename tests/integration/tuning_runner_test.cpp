@@ -23,7 +23,7 @@ namespace {
 
 struct StageTuning {
     SimSession s{proto::DeviceKind::Stage, kUnpaced};  // homing runs on a sped-up clock
-    dev::TuningClient tuning{&s.client};
+    dev::TuningClient& tuning = *s.client.tuning();
     int x = 0;
     std::unique_ptr<dev::InstrumentTarget> target;
     TuningRunner runner;

@@ -20,7 +20,7 @@
 
 namespace ui {
 
-JoystickScreen::JoystickScreen(dev::InstrumentClient* client, QWidget* parent)
+JoystickScreen::JoystickScreen(dev::Instrument* client, QWidget* parent)
     : QWidget(parent), m_client(client), m_driver(new dev::JoystickDriver(client, this))
 {
     setFocusPolicy(Qt::StrongFocus);
@@ -113,15 +113,15 @@ JoystickScreen::JoystickScreen(dev::InstrumentClient* client, QWidget* parent)
             m_pad->setDeadband(m_deadband->value() / 100.0);
             apply();
         });
-    connect(m_client, &dev::InstrumentClient::identified, this, &JoystickScreen::rebuild);
-    connect(m_client, &dev::InstrumentClient::statusChanged, this, &JoystickScreen::refresh);
-    connect(m_client, &dev::InstrumentClient::limitsChanged, this, &JoystickScreen::refresh);
-    connect(m_client, &dev::InstrumentClient::eventReceived, this, [this](const dev::DeviceEvent& e) {
+    connect(m_client, &dev::Instrument::identified, this, &JoystickScreen::rebuild);
+    connect(m_client, &dev::Instrument::statusChanged, this, &JoystickScreen::refresh);
+    connect(m_client, &dev::Instrument::limitsChanged, this, &JoystickScreen::refresh);
+    connect(m_client, &dev::Instrument::eventReceived, this, [this](const dev::DeviceEvent& e) {
         // Homing sets the coordinates' origin: a trail drawn in the old ones means nothing now.
         if (e.kind == proto::EventKind::HomeDone)
             m_travel->clearTrail();
     });
-    connect(m_client, &dev::InstrumentClient::stateChanged, this, [this](dev::LinkState s) {
+    connect(m_client, &dev::Instrument::stateChanged, this, [this](dev::LinkState s) {
         if (s != dev::LinkState::Ready)
             stopAll();
         refresh();

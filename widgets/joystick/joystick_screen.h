@@ -4,7 +4,7 @@
 // for Z on the analyzer, arrow keys as a stick pushed to the rim, live positions and the XY
 // travel to scale with the trail. Motion stops on release, focus loss, hiding, link loss and
 // E-stop; the device's jog watchdog is the last line of defence.
-#include "device/client/instrument_client.h"
+#include "device/client/instrument.h"
 #include "motion/jog/joystick_curve.h"
 
 #include <QSet>
@@ -32,7 +32,7 @@ struct JoystickSettings {
 class JoystickScreen : public QWidget {
     Q_OBJECT
 public:
-    explicit JoystickScreen(dev::InstrumentClient* client, QWidget* parent = nullptr);
+    explicit JoystickScreen(dev::Instrument* client, QWidget* parent = nullptr);
     ~JoystickScreen() override;
 
     JoystickSettings settings() const;
@@ -62,7 +62,7 @@ private:
     motion::path::Vec2 keyDeflection() const;
     double keyZ() const;
 
-    dev::InstrumentClient* m_client;
+    dev::Instrument* m_client;
     dev::JoystickDriver* m_driver;
     QLabel* m_title;
     QLabel* m_state;

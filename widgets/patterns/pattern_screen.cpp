@@ -1,5 +1,7 @@
 #include "widgets/patterns/pattern_screen.h"
 
+#include "widgets/capability_text.h"
+
 #include "device/files/pattern_file.h"
 #include "device/files/pattern_run_csv.h"
 #include "device/telemetry/telemetry_hub.h"
@@ -176,22 +178,22 @@ PatternScreen::PatternScreen(QVector<PatternInstrument> instruments, tele::Telem
 
     for (int i = 0; i < m_instruments.size(); ++i) {
         const PatternInstrument& in = m_instruments[i];
-        connect(in.client, &dev::InstrumentClient::identified, this, [this, i] {
+        connect(in.client, &dev::Instrument::identified, this, [this, i] {
             if (i == m_current)
                 setInstrument(i);
         });
-        connect(in.client, &dev::InstrumentClient::limitsChanged, this, [this, i] {
+        connect(in.client, &dev::Instrument::limitsChanged, this, [this, i] {
             if (i == m_current)
                 refreshLimits();
         });
-        connect(in.client, &dev::InstrumentClient::stateChanged, this, [this, i](dev::LinkState s) {
+        connect(in.client, &dev::Instrument::stateChanged, this, [this, i](dev::LinkState s) {
             if (i != m_current)
                 return;
-            if (s == dev::LinkState::Ready)
-                cur().paths->refreshLimits([this](const auto&) { replan(); });
+            if (dev::PathClient* paths = cur().client->paths(); paths && s == dev::LinkState::Ready)
+                paths->refreshLimits([this](const auto&) { replan(); });
             updateButtons();
         });
-        connect(in.client, &dev::InstrumentClient::statusChanged, this, [this, i](const dev::InstrumentStatus& st) {
+        connect(in.client, &dev::Instrument::statusChanged, this, [this, i](const dev::InstrumentStatus& st) {
             if (i != m_current || st.axes.size() < 2)
                 return;
             m_preview->setMachinePosition({st.axes[0].measured, st.axes[1].measured});
@@ -273,7 +275,7 @@ void PatternScreen::setInstrument(int index)
         m_instrumentBox->setCurrentIndex(index);
     }
     const auto& id = cur().client->identity();
-    m_form->setZAvailable(id.capabilities & proto::CapCoupledXyThenZ);
+    m_form->setZAvailable(cur().client->capabilities().testFlag(dev::Capability::CoupledXyThenZ));
     if (!id.axes.isEmpty())
         m_step->setValue(id.axes[0].resolution > 0 ? id.axes[0].resolution : 0.001);
     refreshLimits();
@@ -330,7 +332,13 @@ void PatternScreen::updateButtons()
     const bool mine = m_runOn == m_current;
     const auto st = r->state();
     const bool busy = r->busy();
-    m_run->setEnabled(!busy && !m_path.empty() && cur().paths->available() && !cur().client->status().estop);
+    // Disabled with its reason when the instrument cannot run paths at all (not connected,
+    // or a device without a path queue).
+    const msg::Message why = cur().client->whyNot(dev::Capability::PathQueue);
+    const dev::PathClient* paths = cur().client->paths();
+    const bool canRun = why.empty() && paths && paths->available();
+    m_run->setEnabled(!busy && !m_path.empty() && canRun && !cur().client->status().estop);
+    m_run->setToolTip(why.empty() ? tr("Move to the pattern's start, then run it (F5)") : capabilityText(why));
     m_pause->setEnabled(mine && (st == PatternRunner::State::Running || st == PatternRunner::State::Paused
                                  || st == PatternRunner::State::Interrupted || st == PatternRunner::State::Approaching));
     const QString pauseText = mine && (st == PatternRunner::State::Paused || st == PatternRunner::State::Interrupted)

@@ -7,7 +7,7 @@
 //
 // Telemetry comes from the shared hub: the screen wants X and Y, commanded and measured, of the
 // running instrument while a run goes, and hands every new sample to the runner.
-#include "device/client/instrument_client.h"
+#include "device/client/instrument.h"
 #include "device/client/path_client.h"
 #include "device/jobs/pattern_runner.h"
 #include "motion/plans/pattern.h"
@@ -36,8 +36,7 @@ class PatternPreview;
 
 struct PatternInstrument {
     QString name;
-    dev::InstrumentClient* client = nullptr;
-    dev::PathClient* paths = nullptr;
+    dev::Instrument* client = nullptr;  ///< its paths() run the patterns
     jobs::PatternRunner* runner = nullptr;
     int hubIndex = 0;  ///< the instrument's index in the telemetry hub
 };

@@ -24,7 +24,7 @@ QString mm(double v) { return QString::number(v, 'f', 2); }
 constexpr double kFarMm = 50;
 } // namespace
 
-CalibrationPanel::CalibrationPanel(dev::InstrumentClient* client, QWidget* parent) : QWidget(parent), m_client(client)
+CalibrationPanel::CalibrationPanel(dev::Instrument* client, QWidget* parent) : QWidget(parent), m_client(client)
 {
     auto* v = new QVBoxLayout(this);
     auto* top = new QHBoxLayout;
@@ -93,7 +93,7 @@ CalibrationPanel::CalibrationPanel(dev::InstrumentClient* client, QWidget* paren
             emit calibrationsChanged();
         rebuild();
     });
-    connect(m_client, &dev::InstrumentClient::statusChanged, this, [this] {
+    connect(m_client, &dev::Instrument::statusChanged, this, [this] {
         const bool ready = m_client->isReady();
         for (int r = 0; r < m_table->rowCount(); ++r)
             for (int c : {4, 5})
@@ -223,7 +223,7 @@ void CalibrationPanel::goTo(int index)
     // XY only once Z is up: its MotionDone (also sent at once when Z is already
     // there) releases the XY move, so the tip never crosses the plate low.
     auto conn = std::make_shared<QMetaObject::Connection>();
-    *conn = connect(m_client, &dev::InstrumentClient::eventReceived, this, [this, ix, iy, iz, at, conn](const dev::DeviceEvent& e) {
+    *conn = connect(m_client, &dev::Instrument::eventReceived, this, [this, ix, iy, iz, at, conn](const dev::DeviceEvent& e) {
         if (e.axis != iz)
             return;
         disconnect(*conn);

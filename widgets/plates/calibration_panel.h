@@ -4,7 +4,7 @@
 // its centre with the jog pad, and record; the fit (motion/plans/plates/
 // calibration.h) shows rotation, scale and each point's residual, warns past
 // 0.2 mm, and is kept per slot when saved.
-#include "device/client/instrument_client.h"
+#include "device/client/instrument.h"
 #include "motion/plans/plates/calibration.h"
 #include "motion/plans/plates/deck.h"
 
@@ -27,7 +27,7 @@ class CalibrationPanel : public QWidget {
 public:
     using Confirm = std::function<bool(const QString& question)>;
 
-    explicit CalibrationPanel(dev::InstrumentClient* client, QWidget* parent = nullptr);
+    explicit CalibrationPanel(dev::Instrument* client, QWidget* parent = nullptr);
     void setConfirm(Confirm confirm) { m_confirm = std::move(confirm); }
     void setDeck(const plates::Deck& deck);
     /// What sits in each slot (from the recipe) and the Z to travel at there.
@@ -55,7 +55,7 @@ private:
     const plates::Labware* labware() const;
     plates::PlateTransform currentTransform() const;
 
-    dev::InstrumentClient* m_client;
+    dev::Instrument* m_client;
     Confirm m_confirm;
     plates::Deck m_deck;
     std::map<std::string, plates::Labware> m_bySlot;

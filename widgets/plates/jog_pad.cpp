@@ -10,7 +10,7 @@
 
 namespace ui {
 
-JogPad::JogPad(dev::InstrumentClient* client, QWidget* parent) : QWidget(parent), m_client(client)
+JogPad::JogPad(dev::Instrument* client, QWidget* parent) : QWidget(parent), m_client(client)
 {
     auto* g = new QGridLayout(this);
     g->setContentsMargins(0, 0, 0, 0);

@@ -3,7 +3,7 @@
 // click to step by the chosen distance. X left/right, Y back/front (machine Y
 // grows toward the operator), Z up/down. Releasing, hiding or losing the link
 // stops the motion (the device's jog watchdog does too).
-#include "device/client/instrument_client.h"
+#include "device/client/instrument.h"
 
 #include <QWidget>
 
@@ -16,7 +16,7 @@ namespace ui {
 class JogPad : public QWidget {
     Q_OBJECT
 public:
-    explicit JogPad(dev::InstrumentClient* client, QWidget* parent = nullptr);
+    explicit JogPad(dev::Instrument* client, QWidget* parent = nullptr);
     /// mm for a click, or 0 for hold-to-move.
     double stepMm() const;
     void setStepMm(double mm);
@@ -30,7 +30,7 @@ private:
     void release(char axis);
     double speed(char axis) const;
 
-    dev::InstrumentClient* m_client;
+    dev::Instrument* m_client;
     QComboBox* m_step;
     QSlider* m_speed;
 };

@@ -1,5 +1,7 @@
 #include "widgets/plates/plates_screen.h"
 
+#include "device/jobs/machine_model.h"
+
 #include "device/files/plates/calibration_file.h"
 #include "device/files/plates/deck_file.h"
 #include "device/files/plates/labware_file.h"
@@ -35,7 +37,7 @@ QLabel* legendChip(PlateMap::WellState s, const QString& text, QWidget* parent)
 }
 } // namespace
 
-PlatesScreen::PlatesScreen(dev::InstrumentClient* analyzer, QWidget* parent)
+PlatesScreen::PlatesScreen(dev::Instrument* analyzer, QWidget* parent)
     : QWidget(parent), m_client(analyzer), m_runner(new jobs::RecipeRunner(analyzer, this)), m_deck(platefiles::builtinDeck())
 {
     auto* split = new QSplitter(Qt::Horizontal, this);
@@ -152,6 +154,11 @@ PlatesScreen::PlatesScreen(dev::InstrumentClient* analyzer, QWidget* parent)
         revalidate();
     });
     connect(m_calibration, &CalibrationPanel::problem, this, &PlatesScreen::problem);
+    // The plan's times follow the analyzer's reported limits (jobs::deckWithDeviceMotion).
+    connect(m_client, &dev::Instrument::identified, this, [this] {
+        if (m_runner->state() == jobs::RunState::Idle || m_runner->state() == jobs::RunState::Finished)
+            revalidate();
+    });
     connect(m_run, &RunPanel::runRequested, this, [this] { runRecipe(); });
     connect(m_run, &RunPanel::resumeFromLogRequested, this, &PlatesScreen::resumeFromLog);
     connect(m_run, &RunPanel::problem, this, &PlatesScreen::problem);
@@ -258,7 +265,8 @@ bool PlatesScreen::saveRecipe(const QString& path)
 plates::PlanContext PlatesScreen::context(QStringList* messages) const
 {
     plates::PlanContext c;
-    c.deck = m_deck;
+    // Times follow the analyzer's own planner limits once it has reported them.
+    c.deck = jobs::deckWithDeviceMotion(m_deck, m_client->identity());
     c.calibration = platefiles::calibrationTransforms(m_calibrations);
     platefiles::resolveLabware(m_editor->recipe(), baseDir(), c, messages);
     return c;

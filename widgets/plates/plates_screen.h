@@ -3,7 +3,7 @@
 // plates, the recipe editor, the calibration wizard and the run controls, on
 // the analyzer. Dialogs (files, confirmations, the decision about a well
 // interrupted mid-dispense) come in as callbacks from app/.
-#include "device/client/instrument_client.h"
+#include "device/client/instrument.h"
 #include "device/jobs/recipe_runner.h"
 #include "motion/plans/plates/calibration.h"
 #include "motion/plans/recipes/recipe_plan.h"
@@ -31,7 +31,7 @@ public:
     /// Asks for a file: `save` true for a name to write. "" = cancelled.
     using FileChooser = std::function<QString(const QString& title, const QString& filter, bool save)>;
 
-    explicit PlatesScreen(dev::InstrumentClient* analyzer, QWidget* parent = nullptr);
+    explicit PlatesScreen(dev::Instrument* analyzer, QWidget* parent = nullptr);
 
     void setConfirm(Confirm c);
     void setFileChooser(FileChooser f) { m_choose = std::move(f); }
@@ -75,7 +75,7 @@ private:
     plates::PlanContext context(QStringList* messages) const;
     QString baseDir() const;
 
-    dev::InstrumentClient* m_client;
+    dev::Instrument* m_client;
     jobs::RecipeRunner* m_runner;
     Confirm m_confirm;
     FileChooser m_choose;

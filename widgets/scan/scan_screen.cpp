@@ -2,6 +2,7 @@
 
 #include "device/files/scan_exports.h"
 #include "device/files/scan_plan_file.h"
+#include "device/jobs/machine_model.h"
 #include "device/jobs/scan_runner.h"
 #include "widgets/scan/scan_plan_form.h"
 #include "widgets/scan/scan_stage_map.h"
@@ -27,7 +28,7 @@ namespace ui {
 using namespace motion::scan;
 using jobs::ScanRunner;
 
-ScanScreen::ScanScreen(dev::InstrumentClient* stage, QWidget* parent)
+ScanScreen::ScanScreen(dev::Instrument* stage, QWidget* parent)
     : QWidget(parent), m_stage(stage), m_runner(new ScanRunner(stage, this))
 {
     auto* v = new QVBoxLayout(this);
@@ -131,10 +132,10 @@ ScanScreen::ScanScreen(dev::InstrumentClient* stage, QWidget* parent)
         emit notice(tr("Scan finished: %1 tiles taken. Exports written to %2.").arg(m_runner->totalTiles()).arg(m_runner->folder()));
         (void)exports;
     });
-    connect(m_stage, &dev::InstrumentClient::statusChanged, this, &ScanScreen::onStatus);
-    connect(m_stage, &dev::InstrumentClient::identified, this, &ScanScreen::onStageIdentity);
-    connect(m_stage, &dev::InstrumentClient::limitsChanged, this, &ScanScreen::onStageIdentity);
-    connect(m_stage, &dev::InstrumentClient::stateChanged, this, &ScanScreen::updateRunUi);
+    connect(m_stage, &dev::Instrument::statusChanged, this, &ScanScreen::onStatus);
+    connect(m_stage, &dev::Instrument::identified, this, &ScanScreen::onStageIdentity);
+    connect(m_stage, &dev::Instrument::limitsChanged, this, &ScanScreen::onStageIdentity);
+    connect(m_stage, &dev::Instrument::stateChanged, this, &ScanScreen::updateRunUi);
 
     setOutputFolder(QDir(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation))
                         .filePath(QStringLiteral("BenchPilot scans/scan")));
@@ -280,7 +281,7 @@ bool ScanScreen::savePlan(const QString& path)
 StageModel ScanScreen::stageModel() const
 {
     if (m_stage->isReady() && m_stage->identity().kind == proto::DeviceKind::Stage)
-        return ScanRunner::stageModelOf(m_stage->identity(), m_stage->softLimits());
+        return jobs::stageModelOf(m_stage->identity(), m_stage->softLimits());
     return StageModel{};
 }
 

@@ -3,7 +3,7 @@
 // type the region), see the tiles in order, the path, the tile count and the time
 // it takes; save and open plans; run, pause, resume and abort it on the stage with
 // progress and time left; export the tile positions for Fiji and Micro-Manager.
-#include "device/client/instrument_client.h"
+#include "device/client/instrument.h"
 #include "motion/plans/scan/scan_estimate.h"
 
 #include <QWidget>
@@ -37,7 +37,7 @@ public:
     /// Runs longer than this ask first.
     static constexpr double kConfirmLongerThanS = 60;
 
-    explicit ScanScreen(dev::InstrumentClient* stage, QWidget* parent = nullptr);
+    explicit ScanScreen(dev::Instrument* stage, QWidget* parent = nullptr);
     ~ScanScreen() override;
     void setFileChooser(FileChooser chooser) { m_chooser = std::move(chooser); }
     void setConfirm(Confirm confirm) { m_confirm = std::move(confirm); }
@@ -85,7 +85,7 @@ private:
     bool confirm(const QString& question);
     QString choose(FileAction action, const QString& title, const QString& filter);
 
-    dev::InstrumentClient* m_stage;
+    dev::Instrument* m_stage;
     jobs::ScanRunner* m_runner;
     ScanStageMap* m_map;
     ScanPlanForm* m_form;

@@ -49,6 +49,10 @@ TuningScreen::TuningScreen(tele::TelemetryHub* hub, QWidget* parent) : QWidget(p
     m_plantError = new QLabel(this);
     m_plantError->setStyleSheet(QStringLiteral("color: #b00020;"));
     top->addWidget(m_plantError);
+    m_unavailable = new QLabel(this);
+    m_unavailable->setObjectName(QStringLiteral("tuningUnavailable"));
+    m_unavailable->setStyleSheet(QStringLiteral("color: #555;"));
+    m_unavailable->hide();
     top->addStretch(1);
     m_live = new QLabel(this);
     m_live->setStyleSheet(QStringLiteral("color: #555;"));
@@ -59,6 +63,7 @@ TuningScreen::TuningScreen(tele::TelemetryHub* hub, QWidget* parent) : QWidget(p
     top->addWidget(m_open);
     top->addWidget(m_save);
     v->addLayout(top);
+    v->addWidget(m_unavailable);
 
     auto* split = new QSplitter(Qt::Horizontal, this);
     m_gains = new GainsPanel(split);
@@ -164,98 +169,6 @@ TuningScreen::~TuningScreen()
         m_hub->setWanted(QLatin1String(kLiveConsumer), {}, 0);
 }
 
-void TuningScreen::addInstrument(int index, const QString& name, dev::InstrumentClient* client)
-{
-    Instrument in;
-    in.index = index;
-    in.name = name;
-    in.client = client;
-    in.tuning = new dev::TuningClient(client, this);
-    m_instruments.push_back(in);
-    connect(client, &dev::InstrumentClient::stateChanged, this, [this](dev::LinkState) {
-        rebuildTargets();
-        refreshReady();
-    });
-    connect(in.tuning, &dev::TuningClient::gainsChanged, this, [this, client](int axis, const QString&) {
-        const Choice* c = choice();
-        if (!c || c->instrument < 0 || m_instruments[c->instrument].client != client || c->axis != axis)
-            return;
-        if (m_ownGainChanges > 0) {
-            --m_ownGainChanges;  // our own Apply, already shown
-            return;
-        }
-        if (!m_runner->busy())
-            readGains();  // someone else (the CLI, a script) changed them: show what is in force
-    });
-    rebuildTargets();
-}
-
-QStringList TuningScreen::targetNames() const
-{
-    QStringList out;
-    for (const auto& c : m_choices)
-        out << c.name;
-    return out;
-}
-
-const TuningScreen::Choice* TuningScreen::choice() const
-{
-    const int i = m_target->currentIndex();
-    return i >= 0 && i < m_choices.size() ? &m_choices[i] : nullptr;
-}
-
-TuningScreen::Instrument* TuningScreen::instrumentOf(const Choice& c)
-{
-    return c.instrument >= 0 && c.instrument < m_instruments.size() ? &m_instruments[c.instrument] : nullptr;
-}
-
-QString TuningScreen::currentTarget() const { return choice() ? choice()->name : QString(); }
-
-void TuningScreen::rebuildTargets()
-{
-    QList<Choice> next;
-    for (int i = 0; i < m_instruments.size(); ++i) {
-        const Instrument& in = m_instruments[i];
-        // An instrument once identified stays a choice while its link is down:
-        // an interrupted job must be able to resume on the same target.
-        if (!in.client || in.client->identity().axes.isEmpty())
-            continue;
-        for (int axis : in.tuning->tunableAxes())
-            next.push_back({QStringLiteral("%1 %2").arg(in.name, QString(in.client->identity().axes[axis].letter)), i, axis});
-    }
-    next.push_back({tr("Model plant"), -1, -1});
-    bool same = next.size() == m_choices.size();
-    for (int i = 0; same && i < next.size(); ++i)
-        same = next[i].name == m_choices[i].name;
-    if (same)
-        return;
-    if (m_runner->busy())
-        return;  // the target list settles once the run has ended
-    const QString was = currentTarget();
-    m_choices = next;
-    QSignalBlocker block(m_target);
-    m_target->clear();
-    for (const auto& c : m_choices)
-        m_target->addItem(c.name);
-    const int keep = m_target->findText(was);
-    m_target->setCurrentIndex(keep >= 0 ? keep : 0);
-    if (keep < 0 || was.isEmpty() || m_targetObj == nullptr)
-        onTargetChosen();
-    else if (const Choice* c = choice(); c && c->instrument >= 0 && m_instruments[c->instrument].client->isReady())
-        readGains();  // back after a lost link: show what is in force now
-}
-
-bool TuningScreen::selectTarget(const QString& name)
-{
-    const int i = m_target->findText(name);
-    if (i < 0 || m_runner->busy())
-        return false;
-    if (i == m_target->currentIndex())
-        return true;
-    m_target->setCurrentIndex(i);
-    return true;
-}
-
 bool TuningScreen::setModelPlant(const QString& spec, QString* error)
 {
     const auto p = parsePlant(spec.toStdString());
@@ -317,7 +230,7 @@ void TuningScreen::readGains()
 {
     const Choice* c = choice();
     Instrument* in = c ? instrumentOf(*c) : nullptr;
-    if (!in)
+    if (!in || !in->tuning)
         return;
     const QString name = c->name;
     const int axis = c->axis;
@@ -354,6 +267,8 @@ void TuningScreen::applyGains(const DiscreteGains& g, bool save, const QString& 
         return;
     }
     Instrument* in = instrumentOf(*c);
+    if (!in || !in->tuning)
+        return;
     QPointer<TuningScreen> self(this);
     const QString name = c->name;
     ++m_ownGainChanges;

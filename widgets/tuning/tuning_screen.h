@@ -44,7 +44,9 @@ public:
 
     explicit TuningScreen(tele::TelemetryHub* hub, QWidget* parent = nullptr);
     ~TuningScreen() override;
-    void addInstrument(int index, const QString& name, dev::InstrumentClient* client);
+    /// Its closed-loop axes become targets through its tuning(); an instrument without
+    /// gains to tune says why under the target list.
+    void addInstrument(int index, const QString& name, dev::Instrument* client);
     void setFileChooser(FileChooser chooser) { m_chooser = std::move(chooser); }
     void setConfirm(Confirm confirm) { m_confirm = std::move(confirm); }
 
@@ -88,8 +90,9 @@ private:
     struct Instrument {
         int index = 0;
         QString name;
-        QPointer<dev::InstrumentClient> client;
-        dev::TuningClient* tuning = nullptr;
+        QPointer<dev::Instrument> client;
+        QPointer<dev::TuningClient> tuning;  ///< client->tuning(), fetched again when its parts are replaced
+        QMetaObject::Connection gainsWatch;
     };
     struct Choice {
         QString name;
@@ -98,6 +101,7 @@ private:
     };
 
     void rebuildTargets();
+    void watchTuning(int instrument);
     void onTargetChosen();
     void readGains();
     void applyGains(const motion::control::DiscreteGains& g, bool save, const QString& source);
@@ -118,6 +122,7 @@ private:
     QComboBox* m_target;
     QLineEdit* m_plant;
     QLabel* m_plantError;
+    QLabel* m_unavailable;  ///< why an identified instrument offers no target
     QLabel* m_live;
     QTabWidget* m_tabs;
     GainsPanel* m_gains;

@@ -29,8 +29,8 @@ InstrumentTarget::InstrumentTarget(TuningClient* tuning, int axis, const QString
         // then, and the capture does not queue behind a link full of samples.
         QMetaObject::invokeMethod(this, &InstrumentTarget::fetch, Qt::QueuedConnection);
     });
-    InstrumentClient* c = tuning->client();
-    connect(c, &InstrumentClient::stateChanged, this, [this](LinkState s) {
+    Instrument* c = tuning->instrument();
+    connect(c, &Instrument::stateChanged, this, [this](LinkState s) {
         if (!m_done || s == LinkState::Ready)
             return;
         RunOutcome out;
@@ -53,11 +53,11 @@ QString InstrumentTarget::describe() const { return m_name; }
 
 double InstrumentTarget::noiseFloor() const
 {
-    const auto& axes = m_tuning->client()->identity().axes;
+    const auto& axes = m_tuning->instrument()->identity().axes;
     return m_axis >= 0 && m_axis < axes.size() ? axes[m_axis].resolution : 0.0005;
 }
 
-bool InstrumentTarget::ready() const { return m_tuning && m_tuning->client()->isReady() && !m_done; }
+bool InstrumentTarget::ready() const { return m_tuning && m_tuning->instrument() && m_tuning->instrument()->isReady() && !m_done; }
 
 void InstrumentTarget::runStep(const StepSpec& spec, bool, double, Done done)
 {

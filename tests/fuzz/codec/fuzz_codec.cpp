@@ -419,7 +419,9 @@ struct FirmwareChecker {
             CHECK(h && h->kind == kind && static_cast<int>(h->axes.size()) == axes
                       && h->protocolVersion == proto::kProtocolVersion,
                   "HELLO reply wrong");
-            CHECK(req.payload.empty(), "HELLO with a payload was accepted");
+            CHECK(req.payload.size() <= 1, "HELLO with a payload of more than its flags byte was accepted");
+            CHECK(h->motionLimits.has_value() == (req.payload.size() == 1 && (req.payload[0] & proto::HelloReadsExtensions)),
+                  "HELLO's extension blocks do not follow the request's flags");
             break;
         }
         case MsgType::Status: {

@@ -239,6 +239,15 @@ Bytes validPayload(Rng& r, std::uint8_t type)
         for (auto& a : h.axes)
             a = {static_cast<char>('X' + r.below(4)), r.chance(80) ? AxisUnit::Millimetre : AxisUnit::Microlitre, randPosition(r),
                  randPosition(r), randSpeed(r), randSpeed(r)};
+        if (r.chance(50)) {  // a host that asked for the extension blocks
+            MotionLimits l;
+            l.profile = static_cast<MotionProfile>(r.below(4));
+            for (std::size_t i = 0; i < h.axes.size(); ++i)
+                l.axes.push_back({randSpeed(r), randSpeed(r), randSpeed(r), randSpeed(r)});
+            h.motionLimits = l;
+            if (r.chance(20))
+                h.otherBlocks.push_back({static_cast<std::uint8_t>(2 + r.below(200)), {1, 2, 3}});
+        }
         return encode(h);
     }
     case 0x82: {

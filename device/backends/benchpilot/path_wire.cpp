@@ -1,4 +1,4 @@
-#include "device/client/path_wire.h"
+#include "device/backends/benchpilot/path_wire.h"
 
 #include <cmath>
 

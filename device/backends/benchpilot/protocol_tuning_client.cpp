@@ -1,4 +1,6 @@
-#include "device/client/tuning_client.h"
+#include "device/backends/benchpilot/protocol_tuning_client.h"
+
+#include "device/backends/benchpilot/benchpilot_client.h"
 
 #include "device/protocol/messages_tuning.h"
 
@@ -36,9 +38,9 @@ RequestError invalid(const QString& why)
 }
 } // namespace
 
-TuningClient::TuningClient(InstrumentClient* client, QObject* parent) : QObject(parent), m_client(client)
+ProtocolTuningClient::ProtocolTuningClient(BenchPilotClient* client, QObject* parent) : TuningClient(client, parent), m_client(client)
 {
-    connect(client, &InstrumentClient::eventReceived, this, [this](const DeviceEvent& e) {
+    connect(client, &BenchPilotClient::eventReceived, this, [this](const DeviceEvent& e) {
         if (e.kind == proto::kEvTestEnded || e.kind == proto::kEvTestTripped || e.kind == proto::kEvTestAborted)
             emit testEnded(e.axis, e.kind, e.text);
         else if (e.kind == proto::kEvGainsChanged)
@@ -46,26 +48,26 @@ TuningClient::TuningClient(InstrumentClient* client, QObject* parent) : QObject(
     });
 }
 
-bool TuningClient::hasGains() const { return m_client && (m_client->identity().capabilities & proto::CapGains); }
-bool TuningClient::hasTests() const { return m_client && (m_client->identity().capabilities & proto::CapExperiments); }
+bool ProtocolTuningClient::hasGains() const { return m_client && m_client->hasProtocolCapability(proto::CapGains); }
+bool ProtocolTuningClient::hasTests() const { return m_client && m_client->hasProtocolCapability(proto::CapExperiments); }
 
-QVector<int> TuningClient::tunableAxes() const
+QVector<int> ProtocolTuningClient::tunableAxes() const
 {
     QVector<int> out;
-    if (!hasGains() || !(m_client->identity().capabilities & proto::CapClosedLoopPid))
+    if (!hasGains() || !m_client->hasProtocolCapability(proto::CapClosedLoopPid))
         return out;
     for (int i = 0; i < m_client->identity().axes.size(); ++i)
         out.push_back(i);
     return out;
 }
 
-double TuningClient::scale(int axis) const
+double ProtocolTuningClient::scale(int axis) const
 {
     const auto& axes = m_client->identity().axes;
     return axis >= 0 && axis < axes.size() ? axes[axis].wireScale() : 1e6;
 }
 
-void TuningClient::getGains(int axis, GainsDone done)
+void ProtocolTuningClient::getGains(int axis, GainsDone done)
 {
     m_client->request(
         proto::kGetGains, proto::encode(proto::AxisRequest{static_cast<std::uint8_t>(axis)}),
@@ -87,13 +89,13 @@ void TuningClient::getGains(int axis, GainsDone done)
         tr("get gains"));
 }
 
-void TuningClient::setGains(int axis, const DiscreteGains& gains, bool keep, Callback done)
+void ProtocolTuningClient::setGains(int axis, const DiscreteGains& gains, bool keep, Callback done)
 {
     proto::SetGainsRequest r{static_cast<std::uint8_t>(axis), static_cast<std::uint8_t>(keep ? proto::kSetGainsSave : 0), toWire(gains)};
     send(proto::kSetGains, proto::encode(r), std::move(done), tr("set gains"));
 }
 
-void TuningClient::startStepTest(const StepTestParams& p, Callback done)
+void ProtocolTuningClient::startStepTest(const StepTestParams& p, Callback done)
 {
     const double k = scale(p.axis);
     proto::StepTestRequest r;
@@ -114,7 +116,7 @@ void TuningClient::startStepTest(const StepTestParams& p, Callback done)
     send(proto::kStepTest, proto::encode(r), std::move(done), tr("step test"));
 }
 
-void TuningClient::startRelayTest(const RelayTestParams& p, Callback done)
+void ProtocolTuningClient::startRelayTest(const RelayTestParams& p, Callback done)
 {
     const double k = scale(p.axis);
     proto::RelayTestRequest r;
@@ -127,12 +129,12 @@ void TuningClient::startRelayTest(const RelayTestParams& p, Callback done)
     send(proto::kRelayTest, proto::encode(r), std::move(done), tr("relay test"));
 }
 
-void TuningClient::abortTests(quint8 axisMask, Callback done)
+void ProtocolTuningClient::abortTests(quint8 axisMask, Callback done)
 {
     send(proto::kTestAbort, proto::encode(proto::AbortRequest{axisMask}), std::move(done), tr("abort test"));
 }
 
-void TuningClient::send(proto::MsgType type, const proto::Bytes& payload, Callback done, const QString& what)
+void ProtocolTuningClient::send(proto::MsgType type, const proto::Bytes& payload, Callback done, const QString& what)
 {
     m_client->request(
         type, payload,
@@ -143,17 +145,17 @@ void TuningClient::send(proto::MsgType type, const proto::Bytes& payload, Callba
         what);
 }
 
-void TuningClient::fetchCapture(int axis, CaptureDone done, Progress progress)
+void ProtocolTuningClient::fetchCapture(int axis, CaptureDone done, Progress progress)
 {
     auto into = std::make_shared<TestCapture>();
     into->axis = axis;
     fetchChunk(axis, into, 0, std::move(done), std::move(progress));
 }
 
-void TuningClient::fetchChunk(int axis, std::shared_ptr<TestCapture> into, quint32 first, CaptureDone done, Progress progress)
+void ProtocolTuningClient::fetchChunk(int axis, std::shared_ptr<TestCapture> into, quint32 first, CaptureDone done, Progress progress)
 {
     const proto::CaptureRequest q{static_cast<std::uint8_t>(axis), first, proto::kMaxCaptureSamplesPerReply};
-    QPointer<TuningClient> self(this);
+    QPointer<ProtocolTuningClient> self(this);
     m_client->request(
         proto::kGetCapture, proto::encode(q),
         [self, axis, into, first, done, progress](const std::optional<RequestError>& e, const proto::Bytes& payload) {

@@ -1,10 +1,10 @@
-// InstrumentClient, part 2 of 4: the request machinery. Sequence numbers, the
+// BenchPilotClient, part 2 of 5: the request machinery. Sequence numbers, the
 // one-in-flight queue beside the realtime requests that overtake it, per-attempt
 // timeouts with retransmission, and matching incoming frames to the requests
 // they answer (events and telemetry are handed on as signals). The other parts:
-// instrument_client.cpp (connection, handshake), instrument_client_status.cpp,
-// instrument_client_commands.cpp.
-#include "device/client/instrument_client.h"
+// benchpilot_client.cpp (connection, handshake), benchpilot_client_status.cpp,
+// benchpilot_client_commands.cpp.
+#include "device/backends/benchpilot/benchpilot_client.h"
 
 namespace dev {
 namespace {
@@ -31,7 +31,7 @@ QString typeName(proto::MsgType t)
 
 // ---- requests -------------------------------------------------------------------
 
-void InstrumentClient::send(proto::MsgType type, const proto::Bytes& payload, RawDone done)
+void BenchPilotClient::send(proto::MsgType type, const proto::Bytes& payload, RawDone done)
 {
     Request r;
     r.type = type;
@@ -61,7 +61,7 @@ void InstrumentClient::send(proto::MsgType type, const proto::Bytes& payload, Ra
     pumpQueue();
 }
 
-void InstrumentClient::transmit(Request& r)
+void BenchPilotClient::transmit(Request& r)
 {
     ++r.attempts;
     if (r.attempts > 1)
@@ -73,7 +73,7 @@ void InstrumentClient::transmit(Request& r)
         m_transport->write(r.wire);
 }
 
-void InstrumentClient::pumpQueue()
+void BenchPilotClient::pumpQueue()
 {
     if (m_inFlight || m_queue.empty())
         return;
@@ -81,7 +81,7 @@ void InstrumentClient::pumpQueue()
     transmit(m_queue.front());
 }
 
-void InstrumentClient::complete(Request r, const std::optional<RequestError>& err, const proto::Bytes& payload)
+void BenchPilotClient::complete(Request r, const std::optional<RequestError>& err, const proto::Bytes& payload)
 {
     if (!err || err->kind != RequestError::Kind::Timeout)
         m_consecutiveTimeouts = 0;
@@ -89,7 +89,7 @@ void InstrumentClient::complete(Request r, const std::optional<RequestError>& er
         r.done(err, payload);
 }
 
-void InstrumentClient::checkTimeouts()
+void BenchPilotClient::checkTimeouts()
 {
     const qint64 now = nowMs();
     auto timeoutError = [](const Request& r) {
@@ -143,7 +143,7 @@ void InstrumentClient::checkTimeouts()
     pumpQueue();
 }
 
-void InstrumentClient::failAll(RequestError::Kind kind, const QString& why)
+void BenchPilotClient::failAll(RequestError::Kind kind, const QString& why)
 {
     std::deque<Request> queue;
     queue.swap(m_queue);
@@ -167,7 +167,7 @@ void InstrumentClient::failAll(RequestError::Kind kind, const QString& why)
 
 // ---- incoming -------------------------------------------------------------------
 
-void InstrumentClient::onBytes(const QByteArray& bytes)
+void BenchPilotClient::onBytes(const QByteArray& bytes)
 {
     m_frames.clear();
     m_decoder.feed(reinterpret_cast<const std::uint8_t*>(bytes.constData()), static_cast<std::size_t>(bytes.size()), m_frames);
@@ -177,7 +177,7 @@ void InstrumentClient::onBytes(const QByteArray& bytes)
         onFrame(f);
 }
 
-RequestError InstrumentClient::deviceError(const proto::ErrorReply& e) const
+RequestError BenchPilotClient::deviceError(const proto::ErrorReply& e) const
 {
     RequestError r;
     r.kind = RequestError::Kind::Device;
@@ -190,7 +190,7 @@ RequestError InstrumentClient::deviceError(const proto::ErrorReply& e) const
     return r;
 }
 
-void InstrumentClient::onFrame(const proto::Frame& f)
+void BenchPilotClient::onFrame(const proto::Frame& f)
 {
     if (f.type == static_cast<std::uint8_t>(proto::MsgType::Event)) {
         if (auto e = proto::decodeEvent(f.payload)) {
@@ -265,7 +265,7 @@ void InstrumentClient::onFrame(const proto::Frame& f)
 
 // ---- replies handed to callers ---------------------------------------------------
 
-InstrumentClient::RawDone InstrumentClient::wrap(Callback done, const QString& what)
+BenchPilotClient::RawDone BenchPilotClient::wrap(Callback done, const QString& what)
 {
     return [this, done = std::move(done), what](const std::optional<RequestError>& e, const proto::Bytes&) {
         if (e) {
@@ -281,7 +281,7 @@ InstrumentClient::RawDone InstrumentClient::wrap(Callback done, const QString& w
     };
 }
 
-void InstrumentClient::request(proto::MsgType type, const proto::Bytes& payload, ReplyCallback done, const QString& what)
+void BenchPilotClient::request(proto::MsgType type, const proto::Bytes& payload, ReplyCallback done, const QString& what)
 {
     send(type, payload, [this, done = std::move(done), what](const std::optional<RequestError>& e, const proto::Bytes& reply) {
         if (e) {

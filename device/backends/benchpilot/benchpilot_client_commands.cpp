@@ -1,7 +1,7 @@
-// InstrumentClient, part 4 of 4: the commands a person gives: home, move, jog
+// BenchPilotClient, part 4 of 5: the commands a person gives: home, move, jog
 // (steps and held velocity jogs with their refresh), stop, E-stop, reset, set
 // zero and soft limits. Each checks its arguments before anything is sent.
-#include "device/client/instrument_client.h"
+#include "device/backends/benchpilot/benchpilot_client.h"
 
 #include <cmath>
 
@@ -20,12 +20,12 @@ static std::optional<RequestError> invalid(const QString& why)
     return e;
 }
 
-void InstrumentClient::home(quint8 axisMask, Callback done)
+void BenchPilotClient::home(quint8 axisMask, Callback done)
 {
     send(proto::MsgType::Home, proto::encode(proto::HomeRequest{axisMask}), wrap(std::move(done), tr("home")));
 }
 
-void InstrumentClient::move(const QVector<QPair<int, double>>& targets, bool relative, double speed, Callback done)
+void BenchPilotClient::move(const QVector<QPair<int, double>>& targets, bool relative, double speed, Callback done)
 {
     auto refuse = [&](const QString& why) {
         const auto e = invalid(why);
@@ -57,7 +57,7 @@ void InstrumentClient::move(const QVector<QPair<int, double>>& targets, bool rel
     send(proto::MsgType::Move, proto::encode(m), wrap(std::move(done), tr("move")));
 }
 
-void InstrumentClient::jogStep(int axis, double delta, double speed, Callback done)
+void BenchPilotClient::jogStep(int axis, double delta, double speed, Callback done)
 {
     if (axis < 0 || axis >= m_identity.axes.size() || !std::isfinite(delta) || !std::isfinite(speed) || speed < 0) {
         const auto e = invalid(tr("jog step: bad axis, step or speed"));
@@ -74,7 +74,7 @@ void InstrumentClient::jogStep(int axis, double delta, double speed, Callback do
     send(proto::MsgType::JogStep, proto::encode(r), wrap(std::move(done), tr("jog step")));
 }
 
-void InstrumentClient::startJog(int axis, double velocity)
+void BenchPilotClient::startJog(int axis, double velocity)
 {
     if (axis < 0 || axis >= m_identity.axes.size() || !std::isfinite(velocity))
         return;
@@ -84,7 +84,7 @@ void InstrumentClient::startJog(int axis, double velocity)
         m_jogTimer.start();
 }
 
-void InstrumentClient::stopJog(int axis)
+void BenchPilotClient::stopJog(int axis)
 {
     if (!m_jogs.contains(axis))
         return;
@@ -99,14 +99,14 @@ void InstrumentClient::stopJog(int axis)
     send(proto::MsgType::JogVelocity, proto::encode(r), wrap({}, tr("jog")));
 }
 
-void InstrumentClient::stopAllJogs()
+void BenchPilotClient::stopAllJogs()
 {
     const auto axes = m_jogs.keys();
     for (int a : axes)
         stopJog(a);
 }
 
-void InstrumentClient::refreshJogs()
+void BenchPilotClient::refreshJogs()
 {
     if (m_jogs.isEmpty() || m_state != LinkState::Ready)
         return;
@@ -132,7 +132,26 @@ void InstrumentClient::refreshJogs()
     });
 }
 
-void InstrumentClient::stop(quint8 axisMask, Callback done)
+void BenchPilotClient::setJogVelocities(const std::map<int, double>& velocities, Callback done)
+{
+    proto::JogVelocityRequest r;
+    for (const auto& [axis, v] : velocities) {  // ascending axes: the order the mask lists them in
+        if (axis < 0 || axis >= m_identity.axes.size() || !std::isfinite(v)) {
+            refuse(done, RequestError::Kind::Invalid, tr("jog: bad axis or velocity"));
+            return;
+        }
+        r.axisMask = static_cast<std::uint8_t>(r.axisMask | (1u << axis));
+        r.velocities.push_back(toWire(v, m_identity.axes[axis].wireScale()));
+    }
+    if (r.axisMask == 0) {
+        if (done)
+            done(std::nullopt);
+        return;
+    }
+    send(proto::MsgType::JogVelocity, proto::encode(r), wrap(std::move(done), tr("jog")));
+}
+
+void BenchPilotClient::stop(quint8 axisMask, Callback done)
 {
     for (int a = 0; a < 8; ++a)
         if (axisMask == 0 || (axisMask & (1u << a)))
@@ -142,19 +161,19 @@ void InstrumentClient::stop(quint8 axisMask, Callback done)
     send(proto::MsgType::Stop, proto::encode(proto::AxisMaskRequest{axisMask}), wrap(std::move(done), tr("stop")));
 }
 
-void InstrumentClient::estop(Callback done)
+void BenchPilotClient::estop(Callback done)
 {
     m_jogs.clear();
     m_jogTimer.stop();
     send(proto::MsgType::EStop, {}, wrap(std::move(done), tr("E-stop")));
 }
 
-void InstrumentClient::reset(Callback done)
+void BenchPilotClient::reset(Callback done)
 {
     send(proto::MsgType::Reset, {}, wrap(std::move(done), tr("reset")));
 }
 
-void InstrumentClient::setZero(quint8 axisMask, Callback done)
+void BenchPilotClient::setZero(quint8 axisMask, Callback done)
 {
     auto inner = wrap(std::move(done), tr("set zero"));
     send(proto::MsgType::SetZero, proto::encode(proto::AxisMaskRequest{axisMask}), [this, inner](const auto& e, const auto& p) {
@@ -164,7 +183,7 @@ void InstrumentClient::setZero(quint8 axisMask, Callback done)
     });
 }
 
-void InstrumentClient::setSoftLimits(int axis, double min, double max, Callback done)
+void BenchPilotClient::setSoftLimits(int axis, double min, double max, Callback done)
 {
     if (axis < 0 || axis >= m_identity.axes.size() || !std::isfinite(min) || !std::isfinite(max)) {
         const auto e = invalid(tr("soft limits: bad axis or value"));

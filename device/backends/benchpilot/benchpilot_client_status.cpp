@@ -1,11 +1,11 @@
-// InstrumentClient, part 3 of 4: what the client keeps up to date about the
+// BenchPilotClient, part 3 of 5: what the client keeps up to date about the
 // device: the status poll, the soft limits and the telemetry subscription, and
 // the conversion of telemetry values to axis units.
-#include "device/client/instrument_client.h"
+#include "device/backends/benchpilot/benchpilot_client.h"
 
 namespace dev {
 
-void InstrumentClient::applyStatus(const proto::Bytes& payload)
+void BenchPilotClient::applyStatus(const proto::Bytes& payload)
 {
     const auto s = proto::decodeStatusReply(payload);
     if (!s || int(s->axes.size()) != m_identity.axes.size())
@@ -30,7 +30,7 @@ void InstrumentClient::applyStatus(const proto::Bytes& payload)
     emit statusChanged(m_status);
 }
 
-void InstrumentClient::refreshLimits(std::function<void()> then)
+void BenchPilotClient::refreshLimits(std::function<void()> then)
 {
     send(proto::MsgType::GetLimits, {}, [this, then](const auto& e, const auto& p) {
         if (!e)
@@ -46,7 +46,7 @@ void InstrumentClient::refreshLimits(std::function<void()> then)
     });
 }
 
-void InstrumentClient::pollStatus()
+void BenchPilotClient::pollStatus()
 {
     if (m_statusPending || m_state != LinkState::Ready)
         return;
@@ -58,8 +58,8 @@ void InstrumentClient::pollStatus()
     });
 }
 
-void InstrumentClient::subscribe(const QVector<proto::ChannelRef>& channels, int rateHz,
-                                 std::function<void(const std::optional<RequestError>&, const proto::SubscribeReply&)> done)
+void BenchPilotClient::subscribe(const QVector<proto::ChannelRef>& channels, int rateHz,
+                                 SubscribeCallback done)
 {
     proto::SubscribeRequest r;
     r.rateHz = static_cast<std::uint32_t>(std::max(0, rateHz));
@@ -84,7 +84,7 @@ void InstrumentClient::subscribe(const QVector<proto::ChannelRef>& channels, int
     });
 }
 
-double InstrumentClient::toAxisUnits(const proto::ChannelRef& c, std::int32_t value) const
+double BenchPilotClient::toAxisUnits(const proto::ChannelRef& c, std::int32_t value) const
 {
     switch (c.kind) {
     case proto::ChannelKind::Switches:

@@ -1,31 +1,33 @@
-// InstrumentClient, part 1 of 4: construction, the connection state machine
+// BenchPilotClient, part 1 of 5: construction, the connection state machine
 // (connect, disconnect, link lost) and the HELLO handshake that identifies the
 // device and brings the link to Ready. The request machinery is in
-// instrument_client_requests.cpp, status/limits/telemetry upkeep in
-// instrument_client_status.cpp, the commands in instrument_client_commands.cpp.
-#include "device/client/instrument_client.h"
+// benchpilot_client_requests.cpp, status/limits/telemetry upkeep in
+// benchpilot_client_status.cpp, the commands in benchpilot_client_commands.cpp,
+// capabilities, the parts and the rest of dev::Instrument in
+// benchpilot_client_instrument.cpp.
+#include "device/backends/benchpilot/benchpilot_client.h"
+
+#include "device/backends/benchpilot/protocol_path_client.h"
+#include "device/backends/benchpilot/protocol_tuning_client.h"
 
 #include <QCoreApplication>
 
 namespace dev {
 
-InstrumentClient::InstrumentClient(QObject* parent) : QObject(parent)
+BenchPilotClient::BenchPilotClient(QObject* parent)
+    : Instrument(parent), m_paths(new ProtocolPathClient(this, this)), m_tuning(new ProtocolTuningClient(this, this))
 {
-    qRegisterMetaType<dev::LinkState>();
-    qRegisterMetaType<dev::InstrumentStatus>();
-    qRegisterMetaType<dev::DeviceEvent>();
-    qRegisterMetaType<dev::RequestError>();
     m_clock.start();
     m_timeoutTimer.setInterval(20);
-    connect(&m_timeoutTimer, &QTimer::timeout, this, &InstrumentClient::checkTimeouts);
+    connect(&m_timeoutTimer, &QTimer::timeout, this, &BenchPilotClient::checkTimeouts);
     m_statusTimer.setInterval(kStatusPollMs);
-    connect(&m_statusTimer, &QTimer::timeout, this, &InstrumentClient::pollStatus);
+    connect(&m_statusTimer, &QTimer::timeout, this, &BenchPilotClient::pollStatus);
     m_jogTimer.setInterval(kJogRefreshMs);
     m_jogTimer.setTimerType(Qt::PreciseTimer);
-    connect(&m_jogTimer, &QTimer::timeout, this, &InstrumentClient::refreshJogs);
+    connect(&m_jogTimer, &QTimer::timeout, this, &BenchPilotClient::refreshJogs);
 }
 
-InstrumentClient::~InstrumentClient()
+BenchPilotClient::~BenchPilotClient()
 {
     // Queued callbacks may refer to widgets already gone: drop them silently.
     m_queue.clear();
@@ -35,9 +37,9 @@ InstrumentClient::~InstrumentClient()
             disconnect(c);
 }
 
-qint64 InstrumentClient::nowMs() const { return m_clock.elapsed(); }
+qint64 BenchPilotClient::nowMs() const { return m_clock.elapsed(); }
 
-void InstrumentClient::setTransport(Transport* transport)
+void BenchPilotClient::setTransport(Transport* transport)
 {
     if (m_transport) {
         disconnectLink();
@@ -48,13 +50,13 @@ void InstrumentClient::setTransport(Transport* transport)
     m_transport = transport;
     if (!transport)
         return;
-    m_transportConnections << connect(transport, &Transport::bytesReceived, this, &InstrumentClient::onBytes);
+    m_transportConnections << connect(transport, &Transport::bytesReceived, this, &BenchPilotClient::onBytes);
     m_transportConnections << connect(transport, &Transport::opened, this, [this] {
         if (m_state != LinkState::Connecting)
             return;
         m_decoder.reset();
         m_timeoutTimer.start();
-        send(proto::MsgType::Hello, {}, [this](const auto& err, const auto& payload) { onHello(err, payload); });
+        sayHello(true);
     });
     m_transportConnections << connect(transport, &Transport::failed, this, [this](const QString& why) {
         if (m_state != LinkState::Connecting)
@@ -65,9 +67,9 @@ void InstrumentClient::setTransport(Transport* transport)
     m_transportConnections << connect(transport, &Transport::lost, this, [this](const QString& why) { linkGone(why); });
 }
 
-QString InstrumentClient::linkDescription() const { return m_transport ? m_transport->describe() : tr("no link"); }
+QString BenchPilotClient::linkDescription() const { return m_transport ? m_transport->describe() : tr("no link"); }
 
-void InstrumentClient::setState(LinkState s)
+void BenchPilotClient::setState(LinkState s)
 {
     if (m_state == s)
         return;
@@ -79,7 +81,7 @@ void InstrumentClient::setState(LinkState s)
     emit stateChanged(s);
 }
 
-void InstrumentClient::connectLink()
+void BenchPilotClient::connectLink()
 {
     if (!m_transport) {
         emit linkError(tr("no connection chosen"));
@@ -92,7 +94,7 @@ void InstrumentClient::connectLink()
     m_transport->open();
 }
 
-void InstrumentClient::disconnectLink()
+void BenchPilotClient::disconnectLink()
 {
     stopAllJogs();
     failAll(RequestError::Kind::LinkDown, tr("disconnected"));
@@ -103,7 +105,7 @@ void InstrumentClient::disconnectLink()
     setState(LinkState::Disconnected);
 }
 
-void InstrumentClient::linkGone(const QString& why)
+void BenchPilotClient::linkGone(const QString& why)
 {
     if (m_state == LinkState::Disconnected || m_state == LinkState::Lost)
         return;
@@ -117,7 +119,7 @@ void InstrumentClient::linkGone(const QString& why)
     setState(LinkState::Lost);
 }
 
-LinkStats InstrumentClient::stats() const
+LinkStats BenchPilotClient::stats() const
 {
     LinkStats s = m_stats;
     const auto& d = m_decoder.stats();
@@ -131,7 +133,14 @@ LinkStats InstrumentClient::stats() const
 
 // ---- handshake ------------------------------------------------------------------
 
-void InstrumentClient::onHello(const std::optional<RequestError>& err, const proto::Bytes& payload)
+void BenchPilotClient::sayHello(bool readsExtensions)
+{
+    const proto::Bytes payload = readsExtensions ? proto::encode(proto::HelloRequest{proto::HelloReadsExtensions}) : proto::Bytes{};
+    send(proto::MsgType::Hello, payload,
+         [this, readsExtensions](const auto& err, const auto& reply) { onHello(err, reply, readsExtensions); });
+}
+
+void BenchPilotClient::onHello(const std::optional<RequestError>& err, const proto::Bytes& payload, bool askedExtensions)
 {
     if (m_state != LinkState::Connecting)
         return;
@@ -142,6 +151,12 @@ void InstrumentClient::onHello(const std::optional<RequestError>& err, const pro
             m_transport->close();
         setState(LinkState::Disconnected);
     };
+    if (err && askedExtensions && err->kind == RequestError::Kind::Device && err->code == proto::ErrorCode::BadPayload) {
+        // Protocol 1.0 firmware knows no HELLO payload: ask it the way it understands,
+        // and time moves without its limits (docs/protocol.md, "HELLO").
+        sayHello(false);
+        return;
+    }
     if (err) {
         fail(err->kind == RequestError::Kind::Timeout
                  ? tr("no answer from %1: check power, cable and baud rate").arg(linkDescription())
@@ -161,23 +176,36 @@ void InstrumentClient::onHello(const std::optional<RequestError>& err, const pro
     }
     DeviceIdentity id;
     id.kind = h->kind;
+    id.family = QStringLiteral("BenchPilot protocol %1").arg(h->protocolVersion);
     id.protocolVersion = h->protocolVersion;
-    id.capabilities = h->capabilities;
+    id.protocolCapabilities = h->capabilities;
     id.model = QString::fromStdString(h->model);
     id.firmware = QString::fromStdString(h->firmware);
     id.linkBaud = h->linkBaud;
     id.maxTelemetryRateHz = h->maxTelemetryRateHz;
     id.jogWatchdogMs = h->jogWatchdogMs;
-    for (const auto& a : h->axes) {
+    for (std::size_t i = 0; i < h->axes.size(); ++i) {
+        const auto& a = h->axes[i];
         AxisDescriptor d;
         d.letter = QChar(a.letter);
         d.unit = a.unit;
-        d.travelMin = a.travelMin / d.wireScale();
-        d.travelMax = a.travelMax / d.wireScale();
-        d.maxSpeed = a.maxSpeed / d.wireScale();
-        d.resolution = a.resolution / d.wireScale();
+        const double k = d.wireScale();
+        d.travelMin = a.travelMin / k;
+        d.travelMax = a.travelMax / k;
+        d.maxSpeed = a.maxSpeed / k;
+        d.resolution = a.resolution / k;
+        if (h->motionLimits) {
+            // Rates of change come in thousandths of the axis unit (µm, nL), speeds in wire units.
+            const auto& l = h->motionLimits->axes[i];
+            d.maxAccel = l.maxAccel / 1e3;
+            d.maxJerk = l.maxJerk / 1e3;
+            d.defaultSpeed = l.defaultSpeed / k;
+            d.minAccelTimeS = l.minAccelTimeUs / 1e6;
+        }
         id.axes.push_back(d);
     }
+    if (h->motionLimits)
+        id.motionProfile = h->motionLimits->profile;
     m_identity = id;
     m_status = InstrumentStatus{};
     m_status.axes.resize(id.axes.size());

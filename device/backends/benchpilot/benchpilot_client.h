@@ -1,0 +1,153 @@
+#pragma once
+// The BenchPilot protocol backend (docs/protocol.md): one instrument over any byte
+// transport. Connection state machine, sequence-numbered requests with timeouts and
+// retransmission, realtime requests that overtake the queue, jog refreshes, the status
+// poll and the telemetry stream, all behind dev::Instrument. Its parts: the device's
+// path queue (ProtocolPathClient) and its tuning (ProtocolTuningClient), both built on
+// request().
+//
+// Only app/ and tests name this class; screens and runners see dev::Instrument.
+#include "device/client/instrument.h"
+#include "device/link/transport.h"
+#include "device/protocol/frame_codec.h"
+
+#include <QElapsedTimer>
+#include <QHash>
+#include <QPointer>
+#include <QTimer>
+
+#include <deque>
+#include <map>
+
+namespace dev {
+
+class ProtocolPathClient;
+class ProtocolTuningClient;
+
+class BenchPilotClient : public Instrument {
+    Q_OBJECT
+public:
+    /// Per-attempt reply timeout and attempts: a silent device is reported within
+    /// kAttempts × kReplyTimeoutMs (under 2 s).
+    static constexpr int kReplyTimeoutMs = 300;
+    static constexpr int kAttempts = 3;
+    static constexpr int kStatusPollMs = 50;
+    static constexpr int kJogRefreshMs = 50;   ///< 20 Hz, four refreshes per device watchdog period
+    static constexpr int kDefaultTelemetryHz = 100;
+
+    explicit BenchPilotClient(QObject* parent = nullptr);
+    ~BenchPilotClient() override;
+
+    /// Not owned. Replacing the transport disconnects the old one first.
+    void setTransport(Transport* transport);
+    Transport* transport() const { return m_transport; }
+
+    // dev::Instrument
+    void connectLink() override;
+    void disconnectLink() override;
+    LinkState state() const override { return m_state; }
+    LinkStats stats() const override;
+    QString linkDescription() const override;
+    const DeviceIdentity& identity() const override { return m_identity; }
+    const InstrumentStatus& status() const override { return m_status; }
+    const QVector<SoftLimits>& softLimits() const override { return m_limits; }
+    Capabilities capabilities() const override;
+    void home(quint8 axisMask, Callback done = {}) override;
+    void move(const QVector<QPair<int, double>>& targets, bool relative, double speed = 0, Callback done = {}) override;
+    void jogStep(int axis, double delta, double speed = 0, Callback done = {}) override;
+    void startJog(int axis, double velocity) override;
+    void stopJog(int axis) override;
+    void stopAllJogs() override;
+    bool isJogging(int axis) const override { return m_jogs.contains(axis); }
+    void setJogVelocities(const std::map<int, double>& velocities, Callback done = {}) override;
+    int jogRefreshMs() const override { return kJogRefreshMs; }
+    void stop(quint8 axisMask = 0, Callback done = {}) override;
+    void estop(Callback done = {}) override;
+    void reset(Callback done = {}) override;
+    void setZero(quint8 axisMask, Callback done = {}) override;
+    void setSoftLimits(int axis, double min, double max, Callback done = {}) override;
+    void readStatus(StatusCallback done) override;
+    void dwell(double seconds, Callback done) override;
+    void pulseTrigger(double widthS, Callback done = {}) override;
+    void subscribe(const QVector<proto::ChannelRef>& channels, int rateHz, SubscribeCallback done = {}) override;
+    const QVector<proto::ChannelRef>& subscribedChannels() const override { return m_channels; }
+    int subscribedRateHz() const override { return m_rateHz; }
+    double toAxisUnits(const proto::ChannelRef& channel, std::int32_t value) const override;
+    PathClient* paths() override;
+    TuningClient* tuning() override;
+
+    /// Any request of the protocol, with its reply payload handed back: how the parts
+    /// (tuning, paths) talk to the device without this class growing a method per message.
+    /// A device refusal is also emitted as requestFailed, its message prefixed with `what`
+    /// ("set gains refused: …") when `what` is given.
+    using ReplyCallback = std::function<void(const std::optional<RequestError>&, const proto::Bytes& payload)>;
+    void request(proto::MsgType type, const proto::Bytes& payload, ReplyCallback done, const QString& what = {});
+    /// The HELLO capability bits (docs/protocol.md), for the parts.
+    bool hasProtocolCapability(std::uint32_t bits) const { return (m_identity.protocolCapabilities & bits) == bits; }
+
+protected:
+    msg::Message missingReason(Capability c) const override;
+
+private:
+    using RawDone = std::function<void(const std::optional<RequestError>&, const proto::Bytes& payload)>;
+    struct Request {
+        proto::MsgType type;
+        std::uint16_t seq = 0;
+        QByteArray wire;
+        int attempts = 0;
+        qint64 firstSentMs = 0;
+        qint64 deadlineMs = 0;
+        RawDone done;
+        bool realtime = false;
+    };
+
+    void setState(LinkState s);
+    void send(proto::MsgType type, const proto::Bytes& payload, RawDone done);
+    void transmit(Request& r);
+    void pumpQueue();
+    void onBytes(const QByteArray& bytes);
+    void onFrame(const proto::Frame& f);
+    void complete(Request r, const std::optional<RequestError>& err, const proto::Bytes& payload);
+    void checkTimeouts();
+    void failAll(RequestError::Kind kind, const QString& why);
+    void sayHello(bool readsExtensions);
+    void onHello(const std::optional<RequestError>& err, const proto::Bytes& payload, bool askedExtensions);
+    void pollStatus();
+    void applyStatus(const proto::Bytes& payload);
+    void refreshLimits(std::function<void()> then = {});
+    void refreshJogs();
+    /// Calls `then` once a status reading shows every axis at rest (polling until it does).
+    void whenStill(Callback then);
+    void linkGone(const QString& why);
+    RequestError deviceError(const proto::ErrorReply& e) const;
+    RawDone wrap(Callback done, const QString& what);
+    qint64 nowMs() const;
+
+    QPointer<Transport> m_transport;
+    QList<QMetaObject::Connection> m_transportConnections;
+    LinkState m_state = LinkState::Disconnected;
+    DeviceIdentity m_identity;
+    InstrumentStatus m_status;
+    QVector<SoftLimits> m_limits;
+    proto::FrameDecoder m_decoder;
+    std::vector<proto::Frame> m_frames;
+    std::uint16_t m_nextSeq = 1;
+    std::deque<Request> m_queue;          ///< queued requests, front is in flight when m_inFlight
+    bool m_inFlight = false;
+    std::map<std::uint16_t, Request> m_realtime;  ///< realtime requests awaiting replies, by seq
+    QTimer m_timeoutTimer, m_statusTimer, m_jogTimer;
+    QElapsedTimer m_clock;
+    bool m_statusPending = false;
+    int m_consecutiveTimeouts = 0;
+    qint64 m_lastFrameMs = -1;            ///< when a good frame (reply, event, telemetry) last arrived
+    QHash<int, double> m_jogs;            ///< axis → velocity (axis units/s) while held
+    QVector<proto::ChannelRef> m_channels;
+    int m_rateHz = 0;
+    std::uint32_t m_nextSampleIndex = 0;
+    bool m_haveSampleIndex = false;
+    LinkStats m_stats;
+    ProtocolPathClient* m_paths;
+    ProtocolTuningClient* m_tuning;
+};
+
+} // namespace dev

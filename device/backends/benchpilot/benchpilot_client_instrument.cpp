@@ -1,0 +1,137 @@
+// BenchPilotClient, part 5 of 5: the rest of dev::Instrument over protocol 1 — the
+// capabilities HELLO's bits mean, why one is missing, a status reading on demand,
+// the host-timed dwell, the trigger output it does not have, and its parts.
+#include "device/backends/benchpilot/benchpilot_client.h"
+
+#include "device/backends/benchpilot/protocol_path_client.h"
+#include "device/backends/benchpilot/protocol_tuning_client.h"
+#include "device/protocol/messages_tuning.h"
+
+#include <QPointer>
+
+#include <cmath>
+
+namespace dev {
+
+Capabilities BenchPilotClient::capabilities() const
+{
+    if (m_identity.axes.isEmpty())
+        return {};
+    // SET_ZERO and SET_LIMITS are part of every protocol 1 device.
+    Capabilities c = Capability::SetZero | Capability::SoftLimits;
+    const struct {
+        std::uint32_t bits;
+        Capability capability;
+    } map[] = {
+        {proto::CapHoming, Capability::Homing},
+        {proto::CapEncoder, Capability::MeasuredPosition},
+        {proto::CapGrating, Capability::MeasuredPosition},
+        {proto::CapClosedLoopPid, Capability::ClosedLoop},
+        {proto::CapTelemetry, Capability::Telemetry},
+        {proto::CapJogVelocity, Capability::VelocityJog},
+        {proto::CapPathQueue, Capability::PathQueue},
+        {proto::CapPathZFollow, Capability::PathZFollow},
+        {proto::CapCoupledXyThenZ, Capability::CoupledXyThenZ},
+        {proto::CapGains, Capability::PidGains},
+        {proto::CapExperiments, Capability::TuningTests},
+        {proto::CapPump, Capability::Pump},
+    };
+    for (const auto& m : map)
+        if (hasProtocolCapability(m.bits))
+            c |= m.capability;
+    // The jog watchdog stops a velocity move the host no longer renews, and the path
+    // queue holds when the host goes quiet (docs/protocol.md).
+    if (hasProtocolCapability(proto::CapJogVelocity) && m_identity.jogWatchdogMs > 0)
+        c |= Capability::StopsOnHostLoss;
+    if (m_identity.reportsMotionLimits())
+        c |= Capability::MachineLimits;
+    return c;
+}
+
+msg::Message BenchPilotClient::missingReason(Capability c) const
+{
+    msg::Message m = Instrument::missingReason(c);
+    const char* because = nullptr;
+    switch (c) {
+    case Capability::PidGains:
+    case Capability::TuningTests:
+    case Capability::ClosedLoop:
+        if (!hasProtocolCapability(proto::CapClosedLoopPid))
+            because = "capability.because.open_loop";  // steppers without a position loop: nothing to tune
+        break;
+    case Capability::MachineLimits:
+        because = "capability.because.older_firmware";  // a protocol 1.0 device: HELLO without the limits block
+        break;
+    case Capability::TriggerOutput:
+        because = "capability.because.not_in_protocol";
+        break;
+    default: break;
+    }
+    if (because)
+        m.args.push_back(msg::term("because", because));
+    return m;
+}
+
+void BenchPilotClient::readStatus(StatusCallback done)
+{
+    const QPointer<BenchPilotClient> self(this);
+    send(proto::MsgType::Status, {}, [self, done = std::move(done)](const std::optional<RequestError>& e, const proto::Bytes& p) {
+        if (!self)
+            return;
+        if (!e)
+            self->applyStatus(p);
+        if (done)
+            done(e, self->m_status);
+    });
+}
+
+void BenchPilotClient::whenStill(Callback then)
+{
+    const QPointer<BenchPilotClient> self(this);
+    readStatus([self, then = std::move(then)](const std::optional<RequestError>& e, const InstrumentStatus& st) {
+        if (!self)
+            return;
+        if (e)
+            return then(e);
+        if (!st.anyMoving())
+            return then(std::nullopt);
+        QTimer::singleShot(kStatusPollMs, self, [self, then] { self->whenStill(then); });
+    });
+}
+
+void BenchPilotClient::dwell(double seconds, Callback done)
+{
+    if (!std::isfinite(seconds) || seconds < 0) {
+        refuse(done, RequestError::Kind::Invalid, tr("dwell: %1 s is not a time to wait").arg(seconds));
+        return;
+    }
+    // Protocol 1 has no dwell of its own: the host waits for the motion to end, then the time.
+    const QPointer<BenchPilotClient> self(this);
+    whenStill([self, seconds, done](const std::optional<RequestError>& e) {
+        if (e) {
+            if (done)
+                done(e);
+            return;
+        }
+        QTimer::singleShot(static_cast<int>(std::lround(seconds * 1000)), self, [self, done] {
+            if (!done)
+                return;
+            if (self->isReady())
+                return done(std::nullopt);
+            RequestError lost;
+            lost.kind = RequestError::Kind::LinkDown;
+            lost.message = tr("dwell abandoned: the link went down");
+            done(lost);
+        });
+    });
+}
+
+void BenchPilotClient::pulseTrigger(double, Callback done)
+{
+    refuse(done, RequestError::Kind::Invalid, tr("this instrument has no trigger output (protocol 1 has none)"));
+}
+
+PathClient* BenchPilotClient::paths() { return m_paths; }
+TuningClient* BenchPilotClient::tuning() { return m_tuning; }
+
+} // namespace dev

@@ -1,0 +1,24 @@
+#pragma once
+// Why a request to an instrument did not succeed: the device refused it, it timed
+// out, the link went down, or the host found it invalid before sending. Every
+// backend reports its failures in this one shape.
+#include "device/protocol/messages.h"
+
+#include <QMetaType>
+#include <QString>
+
+namespace dev {
+
+/// Why a request did not succeed.
+struct RequestError {
+    enum class Kind { Device, Timeout, LinkDown, Invalid };
+    Kind kind = Kind::Device;
+    proto::ErrorCode code = proto::ErrorCode::BadPayload;  ///< for Kind::Device
+    int axis = -1;
+    double value = 0;         ///< axis units where an axis is named, else as sent
+    QString message;          ///< whole sentence for a person
+};
+
+} // namespace dev
+
+Q_DECLARE_METATYPE(dev::RequestError)

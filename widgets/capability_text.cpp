@@ -1,0 +1,89 @@
+#include "widgets/capability_text.h"
+
+#include "device/client/capabilities.h"
+
+#include <QCoreApplication>
+
+namespace ui {
+namespace {
+
+/// The words, with tr() in one translation context (lupdate reads Class::tr calls).
+class CapabilityWords {
+    Q_DECLARE_TR_FUNCTIONS(ui::CapabilityText)
+public:
+    static QString instrumentWord(const std::string& term);
+    static QString lacking(dev::Capability c);
+    static QString becauseWords(const std::string& term);
+    static QString text(const msg::Message& reason);
+};
+
+QString CapabilityWords::instrumentWord(const std::string& term)
+{
+    if (term == "instrument.stage")
+        return tr("stage");
+    if (term == "instrument.analyzer")
+        return tr("analyzer");
+    return QString::fromStdString(term);
+}
+
+/// What the instrument lacks, as the object of "has no …".
+QString CapabilityWords::lacking(dev::Capability c)
+{
+    using C = dev::Capability;
+    switch (c) {
+    case C::Homing: return tr("homing switches");
+    case C::SetZero: return tr("way to set an axis' zero");
+    case C::MeasuredPosition: return tr("encoder or grating readings");
+    case C::ClosedLoop: return tr("closed position loop");
+    case C::Telemetry: return tr("telemetry stream");
+    case C::VelocityJog: return tr("continuous jog");
+    case C::StopsOnHostLoss: return tr("way to stop by itself when BenchPilot goes quiet");
+    case C::PathQueue: return tr("path queue to run patterns on");
+    case C::PathZFollow: return tr("Z axis that follows a path");
+    case C::CoupledXyThenZ: return tr("Z axis that waits for X and Y");
+    case C::SoftLimits: return tr("soft limits of its own");
+    case C::PidGains: return tr("PID gains to tune");
+    case C::TuningTests: return tr("step or relay tests");
+    case C::Pump: return tr("plunger pump");
+    case C::TriggerOutput: return tr("trigger output for a camera");
+    case C::MachineLimits: return tr("report of its acceleration and jerk limits");
+    }
+    return {};
+}
+
+QString CapabilityWords::becauseWords(const std::string& term)
+{
+    if (term == "capability.because.open_loop")
+        return tr("it runs open loop");
+    if (term == "capability.because.older_firmware")
+        return tr("its firmware predates them; estimates assume the reference machine's");
+    if (term == "capability.because.not_in_protocol")
+        return tr("its protocol has none");
+    return QString::fromStdString(term);
+}
+
+QString CapabilityWords::text(const msg::Message& reason)
+{
+    if (reason.empty())
+        return {};
+    const QString instrument = reason.arg("instrument") ? instrumentWord(reason.text("instrument")) : QString();
+    if (reason.id == dev::kNotConnectedId)
+        return instrument.isEmpty() ? tr("The instrument is not connected.")
+                                    : tr("The %1 is not connected.").arg(instrument);
+    for (dev::Capability c : dev::allCapabilities()) {
+        if (reason.id != dev::missingId(c))
+            continue;
+        const QString family = QString::fromStdString(reason.text("family"));
+        const QString who = family.isEmpty() ? tr("The %1").arg(instrument) : tr("The %1 (%2)").arg(instrument, family);
+        if (!reason.arg("because"))
+            return tr("%1 has no %2.").arg(who, lacking(c));
+        return tr("%1 has no %2: %3.").arg(who, lacking(c), becauseWords(reason.text("because")));
+    }
+    return QString::fromStdString(reason.id);
+}
+
+} // namespace
+
+QString capabilityText(const msg::Message& reason) { return CapabilityWords::text(reason); }
+
+} // namespace ui
