@@ -1,6 +1,6 @@
 #include "widgets/patterns/pattern_screen.h"
 
-#include "widgets/capability_text.h"
+#include "widgets/wording/wording.h"
 
 #include "device/files/pattern_file.h"
 #include "device/files/pattern_run_csv.h"
@@ -338,7 +338,7 @@ void PatternScreen::updateButtons()
     const dev::PathClient* paths = cur().client->paths();
     const bool canRun = why.empty() && paths && paths->available();
     m_run->setEnabled(!busy && !m_path.empty() && canRun && !cur().client->status().estop);
-    m_run->setToolTip(why.empty() ? tr("Move to the pattern's start, then run it (F5)") : capabilityText(why));
+    m_run->setToolTip(why.empty() ? tr("Move to the pattern's start, then run it (F5)") : words::text(why));
     m_pause->setEnabled(mine && (st == PatternRunner::State::Running || st == PatternRunner::State::Paused
                                  || st == PatternRunner::State::Interrupted || st == PatternRunner::State::Approaching));
     const QString pauseText = mine && (st == PatternRunner::State::Paused || st == PatternRunner::State::Interrupted)

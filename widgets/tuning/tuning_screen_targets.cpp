@@ -3,7 +3,7 @@
 #include "widgets/tuning/tuning_screen.h"
 
 #include "device/jobs/tuning/tuning_runner.h"
-#include "widgets/capability_text.h"
+#include "widgets/wording/wording.h"
 
 #include <QComboBox>
 #include <QLabel>
@@ -82,7 +82,7 @@ void TuningScreen::rebuildTargets()
         if (!in.client || in.client->identity().axes.isEmpty())
             continue;
         if (!in.client->capabilities().testFlag(dev::Capability::PidGains))
-            unavailable << QStringLiteral("%1: %2").arg(in.name, ui::capabilityText(in.client->whyNot(dev::Capability::PidGains)));
+            unavailable << QStringLiteral("%1: %2").arg(in.name, words::text(in.client->whyNot(dev::Capability::PidGains)));
         if (!in.tuning)
             continue;
         for (int axis : in.tuning->tunableAxes())

@@ -1,30 +1,23 @@
-#include "widgets/capability_text.h"
+// Words for dev::Instrument::whyNot (ids capability.*) and the instrument terms:
+// what a disabled control's tooltip or a screen's note says.
+#include "widgets/wording/areas.h"
+#include "widgets/wording/wording.h"
 
 #include "device/client/capabilities.h"
 
 #include <QCoreApplication>
 
-namespace ui {
+namespace words::areas {
 namespace {
 
 /// The words, with tr() in one translation context (lupdate reads Class::tr calls).
 class CapabilityWords {
-    Q_DECLARE_TR_FUNCTIONS(ui::CapabilityText)
+    Q_DECLARE_TR_FUNCTIONS(words::CapabilityWords)
 public:
-    static QString instrumentWord(const std::string& term);
     static QString lacking(dev::Capability c);
-    static QString becauseWords(const std::string& term);
+    static QString term(const std::string& id);
     static QString text(const msg::Message& reason);
 };
-
-QString CapabilityWords::instrumentWord(const std::string& term)
-{
-    if (term == "instrument.stage")
-        return tr("stage");
-    if (term == "instrument.analyzer")
-        return tr("analyzer");
-    return QString::fromStdString(term);
-}
 
 /// What the instrument lacks, as the object of "has no …".
 QString CapabilityWords::lacking(dev::Capability c)
@@ -51,39 +44,42 @@ QString CapabilityWords::lacking(dev::Capability c)
     return {};
 }
 
-QString CapabilityWords::becauseWords(const std::string& term)
+QString CapabilityWords::term(const std::string& id)
 {
-    if (term == "capability.because.open_loop")
+    if (id == "instrument.stage")
+        return tr("stage");
+    if (id == "instrument.analyzer")
+        return tr("analyzer");
+    if (id == "capability.because.open_loop")
         return tr("it runs open loop");
-    if (term == "capability.because.older_firmware")
+    if (id == "capability.because.older_firmware")
         return tr("its firmware predates them; estimates assume the reference machine's");
-    if (term == "capability.because.not_in_protocol")
+    if (id == "capability.because.not_in_protocol")
         return tr("its protocol has none");
-    return QString::fromStdString(term);
+    return {};
 }
 
 QString CapabilityWords::text(const msg::Message& reason)
 {
-    if (reason.empty())
-        return {};
-    const QString instrument = reason.arg("instrument") ? instrumentWord(reason.text("instrument")) : QString();
+    const QString instrument = words::arg(reason, "instrument");
     if (reason.id == dev::kNotConnectedId)
         return instrument.isEmpty() ? tr("The instrument is not connected.")
                                     : tr("The %1 is not connected.").arg(instrument);
     for (dev::Capability c : dev::allCapabilities()) {
         if (reason.id != dev::missingId(c))
             continue;
-        const QString family = QString::fromStdString(reason.text("family"));
+        const QString family = words::arg(reason, "family");
         const QString who = family.isEmpty() ? tr("The %1").arg(instrument) : tr("The %1 (%2)").arg(instrument, family);
         if (!reason.arg("because"))
             return tr("%1 has no %2.").arg(who, lacking(c));
-        return tr("%1 has no %2: %3.").arg(who, lacking(c), becauseWords(reason.text("because")));
+        return tr("%1 has no %2: %3.").arg(who, lacking(c), words::arg(reason, "because"));
     }
-    return QString::fromStdString(reason.id);
+    return {};
 }
 
 } // namespace
 
-QString capabilityText(const msg::Message& reason) { return CapabilityWords::text(reason); }
+QString capability(const msg::Message& m) { return CapabilityWords::text(m); }
+QString capabilityTerm(const std::string& id) { return CapabilityWords::term(id); }
 
-} // namespace ui
+} // namespace words::areas

@@ -1,0 +1,51 @@
+// The wording layer turns structured messages into sentences: numbers in the
+// locale with their unit's precision, terms and nested messages worded, and an
+// unknown id kept readable rather than lost.
+#include "widgets/wording/wording.h"
+
+#include "device/client/capabilities.h"
+
+#include <QLocale>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+struct LocaleGuard {
+    QLocale saved;
+    explicit LocaleGuard(const QLocale& l) { QLocale::setDefault(l); }
+    ~LocaleGuard() { QLocale::setDefault(saved); }
+};
+
+TEST(Wording, NumbersCarryTheirUnitsPrecision)
+{
+    LocaleGuard c(QLocale::c());
+    EXPECT_EQ(words::number(12.34567, msg::Unit::Mm), QStringLiteral("12.346 mm"));
+    EXPECT_EQ(words::number(1.25, msg::Unit::Um), QStringLiteral("1.2 µm"));
+    EXPECT_EQ(words::number(90, msg::Unit::Deg), QStringLiteral("90.0°"));
+    // Below the unit's last digit a value keeps its significant digits.
+    EXPECT_EQ(words::number(0.0004, msg::Unit::Mm), QStringLiteral("0.0004 mm"));
+}
+
+TEST(Wording, NumbersFollowTheLocale)
+{
+    LocaleGuard de(QLocale(QLocale::German, QLocale::Germany));
+    EXPECT_EQ(words::number(1234.5, msg::Unit::Mm), QStringLiteral("1.234,500 mm"));
+}
+
+TEST(Wording, ACapabilityReasonIsASentenceWithItsInstrument)
+{
+    const msg::Message m = msg::make(dev::missingId(dev::Capability::PidGains),
+        {msg::term("instrument", "instrument.analyzer"), msg::verbatim("family", "Grbl 1.1h"),
+         msg::term("because", "capability.because.open_loop")});
+    EXPECT_EQ(words::text(m), QStringLiteral("The analyzer (Grbl 1.1h) has no PID gains to tune: it runs open loop."));
+}
+
+TEST(Wording, AnUnknownIdIsShownWithItsArgumentsNotDropped)
+{
+    const msg::Message m = msg::make("nowhere.unknown", {msg::real("value", 2, msg::Unit::Mm)});
+    EXPECT_EQ(words::text(m), QStringLiteral("nowhere.unknown{value=2 mm}"));
+    EXPECT_EQ(words::term("nowhere.term"), QStringLiteral("nowhere.term"));
+}
+
+} // namespace

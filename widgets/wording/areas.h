@@ -1,0 +1,17 @@
+#pragma once
+// One function per area, each answering the ids under its prefix (a null QString
+// for an id it does not know). wording.cpp dispatches on the prefix; an area adds
+// its file and one line to the table there, nothing else.
+#include "motion/message.h"
+
+#include <QString>
+
+namespace words::areas {
+
+// Sentences: the id starts with the area's prefix.
+QString capability(const msg::Message& m);  ///< "capability."
+
+// Terms: a null QString for a term id the area does not know.
+QString capabilityTerm(const std::string& id);  ///< "instrument.", "capability.because."
+
+} // namespace words::areas

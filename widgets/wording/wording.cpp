@@ -1,0 +1,155 @@
+#include "widgets/wording/wording.h"
+
+#include "widgets/wording/areas.h"
+
+#include <QLocale>
+
+#include <cmath>
+#include <utility>
+
+namespace words {
+namespace {
+
+using SentenceFn = QString (*)(const msg::Message&);
+using TermFn = QString (*)(const std::string&);
+
+/// Which area words which ids. Longest prefix first where prefixes nest.
+const std::pair<const char*, SentenceFn> kSentences[] = {
+    {"capability.", &areas::capability},
+};
+
+const TermFn kTerms[] = {
+    &areas::capabilityTerm,
+};
+
+bool startsWith(const std::string& s, const char* prefix)
+{
+    return s.rfind(prefix, 0) == 0;
+}
+
+/// Digits after the decimal point that suit a unit: what an operator reads on the
+/// instrument (µm on a stage, 0.001 mm on the analyzer), not what a double holds.
+int decimalsOf(msg::Unit u)
+{
+    using U = msg::Unit;
+    switch (u) {
+    case U::Count: return 0;
+    case U::Mm: return 3;
+    case U::Um: return 1;
+    case U::Nm: return 0;
+    case U::MmPerS: return 2;
+    case U::MmPerS2: return 0;
+    case U::MmPerS3: return 0;
+    case U::MmPerMin: return 0;
+    case U::Ul: return 1;
+    case U::UlPerS: return 1;
+    case U::S: return 2;
+    case U::Ms: return 1;
+    case U::Us: return 0;
+    case U::Hz: return 1;
+    case U::Percent: return 1;
+    case U::Deg: return 1;
+    case U::Rad: return 3;
+    case U::PerS: return 1;
+    case U::Baud: return 0;
+    case U::Byte: return 0;
+    case U::None: break;
+    }
+    // No unit: as many digits as make the value readable, up to six significant.
+    return -1;
+}
+
+} // namespace
+
+QString unitSymbol(msg::Unit unit)
+{
+    using U = msg::Unit;
+    switch (unit) {
+    case U::None:
+    case U::Count: return {};
+    case U::Mm: return QStringLiteral(" mm");
+    case U::Um: return QStringLiteral(" µm");
+    case U::Nm: return QStringLiteral(" nm");
+    case U::MmPerS: return QStringLiteral(" mm/s");
+    case U::MmPerS2: return QStringLiteral(" mm/s²");
+    case U::MmPerS3: return QStringLiteral(" mm/s³");
+    case U::MmPerMin: return QStringLiteral(" mm/min");
+    case U::Ul: return QStringLiteral(" µL");
+    case U::UlPerS: return QStringLiteral(" µL/s");
+    case U::S: return QStringLiteral(" s");
+    case U::Ms: return QStringLiteral(" ms");
+    case U::Us: return QStringLiteral(" µs");
+    case U::Hz: return QStringLiteral(" Hz");
+    case U::Percent: return QStringLiteral(" %");
+    case U::Deg: return QStringLiteral("°");
+    case U::Rad: return QStringLiteral(" rad");
+    case U::PerS: return QStringLiteral(" 1/s");
+    case U::Baud: return QStringLiteral(" Bd");
+    case U::Byte: return QStringLiteral(" B");
+    }
+    return {};
+}
+
+QString number(double v, msg::Unit unit)
+{
+    if (!std::isfinite(v))
+        return QString::number(v) + unitSymbol(unit);
+    const QLocale locale;
+    const int decimals = decimalsOf(unit);
+    QString digits;
+    if (decimals < 0) {
+        digits = locale.toString(v, 'g', 6);
+    } else {
+        // A value too small for the unit's precision keeps its significant digits,
+        // so "0.0004 mm" never reads as "0.000 mm".
+        const double smallest = std::pow(10.0, -decimals);
+        digits = (v != 0 && std::fabs(v) < smallest) ? locale.toString(v, 'g', 3) : locale.toString(v, 'f', decimals);
+    }
+    return digits + unitSymbol(unit);
+}
+
+QString value(const msg::Arg& a)
+{
+    struct Visit {
+        const msg::Arg& arg;
+        QString operator()(std::monostate) const { return {}; }
+        QString operator()(long long v) const { return QLocale().toString(v) + unitSymbol(arg.unit); }
+        QString operator()(double v) const { return number(v, arg.unit); }
+        QString operator()(const msg::Verbatim& v) const { return QString::fromStdString(v.text); }
+        QString operator()(const msg::Term& t) const { return term(t.id); }
+        QString operator()(const std::shared_ptr<const msg::Message>& m) const { return m ? text(*m) : QString(); }
+    };
+    return std::visit(Visit{a}, a.value);
+}
+
+QString arg(const msg::Message& m, const std::string& name)
+{
+    const msg::Arg* a = m.arg(name);
+    return a ? value(*a) : QString();
+}
+
+QString term(const std::string& id)
+{
+    for (TermFn fn : kTerms) {
+        const QString t = fn(id);
+        if (!t.isNull())
+            return t;
+    }
+    return QString::fromStdString(id);
+}
+
+QString text(const msg::Message& m)
+{
+    if (m.empty())
+        return {};
+    for (const auto& [prefix, fn] : kSentences) {
+        if (!startsWith(m.id, prefix))
+            continue;
+        const QString t = fn(m);
+        if (!t.isNull())
+            return t;
+    }
+    return QString::fromStdString(msg::debugString(m));
+}
+
+} // namespace words
