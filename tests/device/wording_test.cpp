@@ -5,6 +5,7 @@
 
 #include "device/client/capabilities.h"
 
+#include <QJsonObject>
 #include <QLocale>
 
 #include <gtest/gtest.h>
@@ -46,6 +47,25 @@ TEST(Wording, AnUnknownIdIsShownWithItsArgumentsNotDropped)
     const msg::Message m = msg::make("nowhere.unknown", {msg::real("value", 2, msg::Unit::Mm)});
     EXPECT_EQ(words::text(m), QStringLiteral("nowhere.unknown{value=2 mm}"));
     EXPECT_EQ(words::term("nowhere.term"), QStringLiteral("nowhere.term"));
+}
+
+} // namespace
+
+namespace {
+
+TEST(Wording, JsonKeepsTheIdTypedArgumentsUnitsAndEnglish)
+{
+    const msg::Message m = msg::make(dev::kNotConnectedId, {msg::term("instrument", "instrument.stage"),
+                                                            msg::real("value", 2.5, msg::Unit::Mm),
+                                                            msg::integer("count", 3)});
+    const QJsonObject o = words::toJson(m);
+    EXPECT_EQ(o.value("id").toString(), QStringLiteral("capability.not_connected"));
+    EXPECT_EQ(o.value("args").toObject().value("instrument").toString(), QStringLiteral("instrument.stage"));
+    EXPECT_DOUBLE_EQ(o.value("args").toObject().value("value").toDouble(), 2.5);
+    EXPECT_EQ(o.value("args").toObject().value("count").toInteger(), 3);
+    EXPECT_EQ(o.value("units").toObject().value("value").toString(), QStringLiteral("mm"));
+    EXPECT_FALSE(o.value("units").toObject().contains("count"));
+    EXPECT_EQ(o.value("message").toString(), QStringLiteral("The stage is not connected."));
 }
 
 } // namespace

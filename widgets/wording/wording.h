@@ -33,3 +33,23 @@ QString unitSymbol(msg::Unit unit);
 QString term(const std::string& id);
 
 } // namespace words
+
+class QJsonObject;
+
+namespace words {
+
+/// A message as JSON for the CLI's --json output and the scripting API, the same
+/// in every language: {"id": "...", "args": {"value": 2.5, "axis": "X", "reason":
+/// "direction.up", "cause": {nested message}}, "units": {"value": "mm"},
+/// "message": "the English sentence"}. "units" holds only arguments that have one;
+/// a Term argument is its id. "message" is English whatever language is shown
+/// (englishText()), so scripts can log it and key on "id".
+QJsonObject toJson(const msg::Message& m);
+
+/// The sentence in English (the source text) even while a translation is shown.
+QString englishText(const msg::Message& m);
+
+/// The unit's symbol for JSON, without the leading space: "mm", "µm", "" for none.
+QString unitKey(msg::Unit unit);
+
+} // namespace words

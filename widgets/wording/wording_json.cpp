@@ -1,0 +1,45 @@
+#include "widgets/wording/wording.h"
+
+#include <QJsonObject>
+#include <QJsonValue>
+
+namespace words {
+
+QString unitKey(msg::Unit unit) { return unitSymbol(unit).trimmed(); }
+
+QString englishText(const msg::Message& m)
+{
+    // The CLI installs no translator with --json; the GUI's translator learns to
+    // step aside here when the translation lands (issue 17), so the API's JSON
+    // stays English like the CLI's.
+    return text(m);
+}
+
+QJsonObject toJson(const msg::Message& m)
+{
+    QJsonObject args, units;
+    for (const msg::Arg& a : m.args) {
+        const QString name = QString::fromStdString(a.name);
+        QJsonValue v;
+        if (auto* i = std::get_if<long long>(&a.value))
+            v = static_cast<qint64>(*i);
+        else if (auto* d = std::get_if<double>(&a.value))
+            v = *d;
+        else if (auto* t = std::get_if<msg::Verbatim>(&a.value))
+            v = QString::fromStdString(t->text);
+        else if (auto* t = std::get_if<msg::Term>(&a.value))
+            v = QString::fromStdString(t->id);
+        else if (auto* n = std::get_if<std::shared_ptr<const msg::Message>>(&a.value); n && *n)
+            v = toJson(**n);
+        args.insert(name, v);
+        if (!unitKey(a.unit).isEmpty())
+            units.insert(name, unitKey(a.unit));
+    }
+    QJsonObject o{{QStringLiteral("id"), QString::fromStdString(m.id)}, {QStringLiteral("args"), args}};
+    if (!units.isEmpty())
+        o.insert(QStringLiteral("units"), units);
+    o.insert(QStringLiteral("message"), englishText(m));
+    return o;
+}
+
+} // namespace words
