@@ -25,8 +25,8 @@ QJsonObject toJson(const msg::Message& m)
             v = static_cast<qint64>(*i);
         else if (auto* d = std::get_if<double>(&a.value))
             v = *d;
-        else if (auto* t = std::get_if<msg::Verbatim>(&a.value))
-            v = QString::fromStdString(t->text);
+        else if (auto* s = std::get_if<msg::Verbatim>(&a.value))
+            v = QString::fromStdString(s->text);
         else if (auto* t = std::get_if<msg::Term>(&a.value))
             v = QString::fromStdString(t->id);
         else if (auto* n = std::get_if<std::shared_ptr<const msg::Message>>(&a.value); n && *n)
