@@ -22,7 +22,9 @@ TEST(Wording, NumbersCarryTheirUnitsPrecision)
 {
     LocaleGuard c(QLocale::c());
     EXPECT_EQ(words::number(12.34567, msg::Unit::Mm), QStringLiteral("12.346 mm"));
-    EXPECT_EQ(words::number(1.25, msg::Unit::Um), QStringLiteral("1.2 µm"));
+    // Not a tie (1.25 is exact in binary and Qt rounds a tie away from zero).
+    EXPECT_EQ(words::number(1.234, msg::Unit::Um), QStringLiteral("1.2 µm"));
+    EXPECT_EQ(words::number(1.27, msg::Unit::Um), QStringLiteral("1.3 µm"));
     EXPECT_EQ(words::number(90, msg::Unit::Deg), QStringLiteral("90.0°"));
     // Below the unit's last digit a value keeps its significant digits.
     EXPECT_EQ(words::number(0.0004, msg::Unit::Mm), QStringLiteral("0.0004 mm"));
