@@ -1,13 +1,10 @@
 #include "motion/chords.h"
+#include "motion/numbers.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace motion {
-
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
 
 std::vector<PointMm> functionChords(const std::function<double(double)>& f, double x0, double x1,
                                     double maxAbsSecondDerivative, double toleranceMm)

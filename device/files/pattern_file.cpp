@@ -16,7 +16,7 @@ using motion::path::Vec2;
 
 namespace {
 
-constexpr double kAny = std::numeric_limits<double>::max();
+constexpr double kPatternAny = std::numeric_limits<double>::max();
 
 /// Fields each shape has, beyond the common ones.
 std::vector<std::string_view> shapeFields(PatternShape s)
@@ -38,7 +38,7 @@ struct Reader {
     ObjectReader& o;
     void num(std::string_view key, bool required, double& into)
     {
-        if (auto v = o.number(key, required, -kAny, kAny))
+        if (auto v = o.number(key, required, -kPatternAny, kPatternAny))
             into = *v;
     }
     void point(std::string_view key, Vec2& into)
@@ -91,7 +91,7 @@ PatternReadResult parsePattern(std::string_view text)
         p.shape = *motion::plans::shapeFromName(*shapeWord);
     Reader r{o};
     r.num("feed_mm_s", true, p.feedMmS);
-    if (auto z = o.number("z_mm", false, -kAny, kAny))
+    if (auto z = o.number("z_mm", false, -kPatternAny, kPatternAny))
         p.zMm = *z;
     if (shapeWord) {
         for (auto f : shapeFields(p.shape))

@@ -17,7 +17,7 @@ using motion::scan::ScanPlan;
 
 namespace {
 
-constexpr double kAny = 1e300;  // ranges are the plan validator's job; the reader checks types
+constexpr double kScanAny = 1e300;  // ranges are the plan validator's job; the reader checks types
 
 /// An array of exactly `n` numbers; each whole when `whole`.
 std::optional<std::vector<double>> readNumbers(const Value& v, const std::string& path, std::size_t n, bool whole, Problems& p)
@@ -135,9 +135,9 @@ void readCamera(const Value& v, ScanPlan& plan, Problems& p)
             c.sensorWidthPx = static_cast<int>(std::fmax(-1e9, std::fmin(1e9, (*px)[0])));
             c.sensorHeightPx = static_cast<int>(std::fmax(-1e9, std::fmin(1e9, (*px)[1])));
         }
-        if (const auto um = o.number("sensor_pixel_um", true, -kAny, kAny))
+        if (const auto um = o.number("sensor_pixel_um", true, -kScanAny, kScanAny))
             c.sensorPixelUm = *um;
-        if (const auto m = o.number("magnification", true, -kAny, kAny))
+        if (const auto m = o.number("magnification", true, -kScanAny, kScanAny))
             c.magnification = *m;
     } else if (from) {
         c.source = FieldSource::Direct;
@@ -146,10 +146,10 @@ void readCamera(const Value& v, ScanPlan& plan, Problems& p)
             c.fieldWidthMm = (*f)[0];
             c.fieldHeightMm = (*f)[1];
         }
-        if (const auto um = o.number("pixel_um", false, -kAny, kAny))
+        if (const auto um = o.number("pixel_um", false, -kScanAny, kScanAny))
             c.samplePixelUm = *um;
     }
-    if (const auto r = o.number("rotation_deg", false, -kAny, kAny))
+    if (const auto r = o.number("rotation_deg", false, -kScanAny, kScanAny))
         c.rotationDeg = *r;
     if (const auto y = o.oneOf("image_y", false, {"stage-minus-y", "stage-plus-y"}))
         c.imageY = *y == "stage-plus-y" ? motion::scan::ImageY::StagePlusY : motion::scan::ImageY::StageMinusY;
@@ -177,25 +177,25 @@ void readRest(ObjectReader& root, ScanPlan& plan, Problems& p)
         o.refuseUnknown({"unidirectional", "overtravel_mm"});
         if (const auto u = o.boolean("unidirectional", false))
             plan.approach.unidirectional = *u;
-        if (const auto d = o.number("overtravel_mm", false, -kAny, kAny))
+        if (const auto d = o.number("overtravel_mm", false, -kScanAny, kScanAny))
             plan.approach.overtravelMm = *d;
     }
     if (const Value* m = root.get("motion", Value::Type::Object, false)) {
         ObjectReader o(*m, "motion", p);
         o.refuseUnknown({"speed_mm_s"});
-        if (const auto s = o.number("speed_mm_s", false, -kAny, kAny))
+        if (const auto s = o.number("speed_mm_s", false, -kScanAny, kScanAny))
             plan.speedMmS = *s;
     }
     if (const Value* t = root.get("timing", Value::Type::Object, false)) {
         ObjectReader o(*t, "timing", p);
         o.refuseUnknown({"settle_s", "exposure_s", "tolerance_um", "settle_timeout_s"});
-        if (const auto v = o.number("settle_s", false, -kAny, kAny))
+        if (const auto v = o.number("settle_s", false, -kScanAny, kScanAny))
             plan.settleS = *v;
-        if (const auto v = o.number("exposure_s", false, -kAny, kAny))
+        if (const auto v = o.number("exposure_s", false, -kScanAny, kScanAny))
             plan.exposureS = *v;
-        if (const auto v = o.number("tolerance_um", false, -kAny, kAny))
+        if (const auto v = o.number("tolerance_um", false, -kScanAny, kScanAny))
             plan.toleranceUm = *v;
-        if (const auto v = o.number("settle_timeout_s", false, -kAny, kAny))
+        if (const auto v = o.number("settle_timeout_s", false, -kScanAny, kScanAny))
             plan.settleTimeoutS = *v;
     }
     if (const Value* c = root.get("compensation", Value::Type::Object, false)) {

@@ -15,7 +15,7 @@ using motion::path::Segment;
 using motion::path::Vec2;
 
 namespace {
-QString mm(double v) { return QString::number(v, 'f', 3); }
+QString mm3(double v) { return QString::number(v, 'f', 3); }
 }
 
 QString PatternRunner::stateText(State s)
@@ -174,7 +174,7 @@ QStringList PatternRunner::preflight(const std::vector<Segment>& path, const Opt
                 out << tr("Axis Z is not homed: home it first.");
             const auto& lim = m_client->softLimits()[z];
             if (*options.zMm < lim.min || *options.zMm > lim.max)
-                out << tr("Z %1 mm is outside its soft limits %2 … %3 mm.").arg(mm(*options.zMm), mm(lim.min), mm(lim.max));
+                out << tr("Z %1 mm is outside its soft limits %2 … %3 mm.").arg(mm3(*options.zMm), mm3(lim.min), mm3(lim.max));
         }
     }
     const double vmax = m_paths->limits().maxSpeedMmS;

@@ -18,7 +18,6 @@ namespace {
 constexpr double kSameMm = 1e-6;
 
 bool active(RunState s) { return s == RunState::Running || s == RunState::Pausing || s == RunState::Aborting; }
-bool closed(OpState s) { return s == OpState::Done || s == OpState::Skipped; }
 QString mm(double v) { return QString::number(v, 'f', 2); }
 } // namespace
 
@@ -131,7 +130,7 @@ bool RecipeRunner::preflight(QString* error) const
     double p = plungerNow(), pMin = p, pMax = p;
     for (std::size_t k = static_cast<std::size_t>(std::max(0, nextOpenOp(0))); k < m_plan.ops.size(); ++k) {
         const plates::PlanOp& op = m_plan.ops[k];
-        if (closed(m_opStates[k]))
+        if (platefiles::isClosed(m_opStates[k]))
             continue;
         const QString what = QString::fromStdString(op.label());
         for (const MachineMove& m : op.moves) {
@@ -185,7 +184,7 @@ bool RecipeRunner::logLine(jsonio::Value line)
 int RecipeRunner::nextOpenOp(int from) const
 {
     for (int i = std::max(0, from); i < static_cast<int>(m_opStates.size()); ++i)
-        if (!closed(m_opStates[static_cast<std::size_t>(i)]))
+        if (!platefiles::isClosed(m_opStates[static_cast<std::size_t>(i)]))
             return i;
     return static_cast<int>(m_opStates.size());
 }

@@ -14,7 +14,6 @@ using platefiles::OpState;
 
 namespace {
 constexpr double kPlungerToleranceUl = 0.05;  ///< a count of the pump's encoder
-bool closed(OpState s) { return s == OpState::Done || s == OpState::Skipped; }
 QString ul(double v) { return QString::number(v, 'f', 2); }
 } // namespace
 
@@ -41,7 +40,7 @@ RunProgress RecipeRunner::progress() const
     p.opsTotal = static_cast<int>(m_plan.ops.size());
     double plannedClosed = 0, remaining = 0;
     for (std::size_t i = 0; i < m_plan.ops.size() && i < m_opStates.size(); ++i) {
-        if (closed(m_opStates[i])) {
+        if (platefiles::isClosed(m_opStates[i])) {
             ++p.opsDone;
             plannedClosed += m_plan.ops[i].durationS;
         } else {
@@ -228,7 +227,7 @@ bool RecipeRunner::resumeFromLog(const QString& logPath, const InterruptedDecide
     }
     m_opStates.assign(m_plan.ops.size(), OpState::NotStarted);
     for (std::size_t i = 0; i < st.ops.size(); ++i)
-        if (closed(st.ops[i].state))
+        if (platefiles::isClosed(st.ops[i].state))
             m_opStates[i] = st.ops[i].state;
     m_logState = std::move(st);
     std::vector<std::pair<int, bool>> decisions;
@@ -256,7 +255,7 @@ bool RecipeRunner::resumeFromLog(const QString& logPath, const InterruptedDecide
             *error = m_log.lastError();
             return false;
         }
-    const int started = std::count_if(m_opStates.begin(), m_opStates.end(), closed);
+    const int started = std::count_if(m_opStates.begin(), m_opStates.end(), platefiles::isClosed);
     m_elapsedBeforeS = 0;
     m_op = nextOpenOp(0);
     m_move = 0;

@@ -2,7 +2,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace proto {
@@ -84,5 +86,15 @@ private:
     std::size_t m_pos = 0;
     bool m_ok = true;
 };
+
+/// A decoded message when its reader used every byte of the payload, else nothing:
+/// a payload longer than its type is malformed, not padded.
+template <typename T>
+std::optional<T> finish(const ByteReader& r, T&& value)
+{
+    if (!r.done())
+        return std::nullopt;
+    return std::optional<T>(std::forward<T>(value));
+}
 
 } // namespace proto

@@ -248,13 +248,6 @@ Bytes encode(const ErrorReply& m)
 // ---- decoders ---------------------------------------------------------------
 
 namespace {
-template <typename T>
-std::optional<T> finish(const ByteReader& r, T&& value)
-{
-    if (!r.done())
-        return std::nullopt;
-    return std::optional<T>(std::forward<T>(value));
-}
 /// The extension blocks after HELLO's axes (docs/protocol.md, "HELLO"). A device that
 /// sends them sends at least one; a block of an id this host does not know is skipped.
 bool readHelloBlocks(ByteReader& r, HelloReply& m)

@@ -53,13 +53,6 @@ WireEnvelope getEnvelope(ByteReader& r)
     return e;
 }
 
-template <typename T>
-std::optional<T> finish(const ByteReader& r, T&& value)
-{
-    if (!r.done())
-        return std::nullopt;
-    return std::optional<T>(std::forward<T>(value));
-}
 
 } // namespace
 

@@ -2,6 +2,7 @@
 // with one ok or error:N — at once, or when what the line waits for is done (room in the
 // planner, the motion before a G4 or an M8, the end of homing).
 #include "device/sim/grbl_firmware.h"
+#include "motion/numbers.h"
 
 #include "device/backends/grbl/grbl_protocol.h"
 
@@ -14,7 +15,7 @@ namespace err = grbl::err;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using motion::kPi;
 
 std::string upper(std::string s)
 {

@@ -1,4 +1,5 @@
 #include "motion/control/plant.h"
+#include "motion/numbers.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,8 +8,6 @@
 
 namespace motion::control {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 std::string trim(std::string_view s)
 {

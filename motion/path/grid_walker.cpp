@@ -1,4 +1,5 @@
 #include "motion/path/grid_walker.h"
+#include "motion/numbers.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -6,7 +7,6 @@
 namespace motion::path {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 double radiusOf(GridPoint p, GridPoint c) { return std::hypot(static_cast<double>(p.x - c.x), static_cast<double>(p.y - c.y)); }
 double angleOf(GridPoint p, GridPoint c) { return std::atan2(static_cast<double>(p.y - c.y), static_cast<double>(p.x - c.x)); }

@@ -1,4 +1,5 @@
 #include "motion/path/path_geometry.h"
+#include "motion/numbers.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +7,6 @@
 namespace motion::path {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoPi = 2 * kPi;
 /// End points closer than this are the same point (a full circle): well below a nanometre,
 /// the wire's resolution.

@@ -1,5 +1,6 @@
 // plan(): the segments of each pattern shape.
 #include "motion/plans/pattern.h"
+#include "motion/numbers.h"
 
 #include "motion/chords.h"
 
@@ -12,7 +13,6 @@ using motion::path::SegmentKind;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 double rad(double deg) { return deg * kPi / 180.0; }
 Vec2 polar(Vec2 c, double r, double angleRad) { return {c.x + r * std::cos(angleRad), c.y + r * std::sin(angleRad)}; }
 

@@ -2,6 +2,7 @@
 // (squareness/scale) error gives G = twice its amplitude whatever the centre
 // offset, a reversal step between the directions gives H, and the polar plot
 // magnifies the deviation about the least-squares circle.
+#include "motion/numbers.h"
 #include "motion/metrology/contour/circular_test.h"
 
 #include <gtest/gtest.h>
@@ -13,7 +14,7 @@ using namespace motion::metrology;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using motion::kPi;
 
 /// Samples of r(θ) = R + dr(θ) about (cx, cy); CW runs go the other way round.
 CircularRun path(Rotation rot, double cx, double cy, double radius, double lobeMm, double stepMm, int samples = 360)

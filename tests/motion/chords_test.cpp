@@ -1,4 +1,5 @@
 // Seed 002 sine/cosine by chords.
+#include "motion/numbers.h"
 #include "motion/chords.h"
 
 #include <gtest/gtest.h>
@@ -8,7 +9,7 @@
 using namespace motion;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using motion::kPi;
 }
 
 TEST(Chords, ChordCountFollowsTheTolerance)

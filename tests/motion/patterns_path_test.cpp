@@ -1,5 +1,6 @@
 // Path geometry, look-ahead junction planning, point-by-point walking and the contour measure
 // (motion/path/): what the device's path queue and the pattern screen are built on.
+#include "motion/numbers.h"
 #include "motion/path/contour_tracker.h"
 #include "motion/path/grid_walker.h"
 #include "motion/path/junction_planner.h"
@@ -15,7 +16,7 @@
 using namespace motion::path;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using motion::kPi;
 
 Segment line(Vec2 a, Vec2 b, double feed = 10)
 {

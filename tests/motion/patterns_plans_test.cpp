@@ -1,5 +1,6 @@
 // Pattern shapes (motion/plans/pattern.h): parameters, validation, the segments they plan,
 // limits and estimated time.
+#include "motion/numbers.h"
 #include "motion/chords.h"
 #include "motion/plans/pattern.h"
 
@@ -11,7 +12,7 @@ using namespace motion::plans;
 using motion::path::Segment;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using motion::kPi;
 
 Pattern of(PatternShape s)
 {

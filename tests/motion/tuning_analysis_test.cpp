@@ -1,5 +1,6 @@
 // Step metrics, oscillation growth and period, exact frequency points, and the
 // tuners' behaviour at their edges: envelopes, plants without an ultimate gain.
+#include "motion/numbers.h"
 #include "motion/control/loop_sim.h"
 #include "motion/control/tuning/model_tuning.h"
 #include "motion/control/tuning/oscillation.h"
@@ -12,7 +13,7 @@
 using namespace motion::control;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using motion::kPi;
 
 Record recordOf(double periodS, int n, double y0, double sp, const std::function<double(double)>& y)
 {

@@ -1,5 +1,6 @@
 // Model plants: parsing with errors that name the field, the exact simulation
 // against closed-form step responses, and the analytic phase crossover.
+#include "motion/numbers.h"
 #include "motion/control/plant.h"
 
 #include <gtest/gtest.h>
@@ -9,7 +10,7 @@
 using namespace motion::control;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using motion::kPi;
 
 PlantSpec parseOk(const char* text)
 {

@@ -18,7 +18,7 @@ using motion::control::ContinuousGains;
 using motion::control::DiscreteGains;
 
 namespace {
-QString num(double v) { return QString::number(v, 'g', 5); }
+QString gainText(double v) { return QString::number(v, 'g', 5); }
 
 QString seconds(double s)
 {
@@ -27,17 +27,17 @@ QString seconds(double s)
     if (s == 0)
         return QStringLiteral("0");
     if (std::abs(s) < 1e-3)
-        return QStringLiteral("%1 µs").arg(num(s * 1e6));
+        return QStringLiteral("%1 µs").arg(gainText(s * 1e6));
     if (std::abs(s) < 1)
-        return QStringLiteral("%1 ms").arg(num(s * 1e3));
-    return QStringLiteral("%1 s").arg(num(s));
+        return QStringLiteral("%1 ms").arg(gainText(s * 1e3));
+    return QStringLiteral("%1 s").arg(gainText(s));
 }
 } // namespace
 
 QString describeGains(const DiscreteGains& g, double periodS)
 {
     const ContinuousGains c = motion::control::toContinuous(g, periodS);
-    return GainsPanel::tr("Kp %1 · Ki %2 /s · Kd %3").arg(num(c.kp), num(c.kiPerS), seconds(c.kdS));
+    return GainsPanel::tr("Kp %1 · Ki %2 /s · Kd %3").arg(gainText(c.kp), gainText(c.kiPerS), seconds(c.kdS));
 }
 
 GainsPanel::GainsPanel(QWidget* parent) : QWidget(parent)
@@ -180,9 +180,9 @@ void GainsPanel::showEdited()
     for (int i = 0; i < 3; ++i)
         m_edit[i]->setStyleSheet(g ? QString() : QStringLiteral("background: #fdd;"));
     if (g) {
-        m_discrete[0]->setText(tr("kp = %1").arg(num(g->kp)));
-        m_discrete[1]->setText(tr("ki = %1").arg(num(g->ki)));
-        m_discrete[2]->setText(tr("kd = %1").arg(num(g->kd)));
+        m_discrete[0]->setText(tr("kp = %1").arg(gainText(g->kp)));
+        m_discrete[1]->setText(tr("ki = %1").arg(gainText(g->ki)));
+        m_discrete[2]->setText(tr("kd = %1").arg(gainText(g->kd)));
         const ContinuousGains c = motion::control::toContinuous(*g, m_periodS);
         auto near = [](double a, double b) { return std::abs(a - b) <= 1e-5 * std::max(std::abs(a), std::abs(b)) + 1e-300; };
         const bool changed = !(near(g->kp, m_inForce.kp) && near(g->ki, m_inForce.ki) && near(g->kd, m_inForce.kd));
@@ -210,7 +210,7 @@ void GainsPanel::addHistory(const QString& source, const DiscreteGains& g)
     const ContinuousGains c = motion::control::toContinuous(g, m_periodS);
     const int row = m_table->rowCount();
     m_table->insertRow(row);
-    const QString cells[5] = {m_history.back().time.toString(QStringLiteral("HH:mm:ss")), source, num(c.kp), num(c.kiPerS), num(c.kdS)};
+    const QString cells[5] = {m_history.back().time.toString(QStringLiteral("HH:mm:ss")), source, gainText(c.kp), gainText(c.kiPerS), gainText(c.kdS)};
     for (int col = 0; col < 5; ++col)
         m_table->setItem(row, col, new QTableWidgetItem(cells[col]));
     m_table->scrollToBottom();

@@ -19,7 +19,7 @@
 namespace ui {
 
 namespace {
-QString num(double v, int digits = 3) { return std::isfinite(v) ? QString::number(v, 'g', digits) : QStringLiteral("—"); }
+QString metricText(double v, int digits = 3) { return std::isfinite(v) ? QString::number(v, 'g', digits) : QStringLiteral("—"); }
 } // namespace
 
 StepTestPanel::StepTestPanel(QWidget* parent) : QWidget(parent)
@@ -115,14 +115,14 @@ void StepTestPanel::addResult(const motion::control::Record& r, const motion::co
     head->setForeground(ResponsePlot::colour(col));
     head->setToolTip(legend);
     m_table->setHorizontalHeaderItem(col, head);
-    const QString cells[8] = {num(m.riseTimeS * 1000),
-                              num(m.overshootPct),
-                              num(m.settlingTimeS * 1000),
-                              num(m.steadyStateError * k),
-                              num(m.iae * k),
-                              num(m.ise * k * k),
-                              num(m.peakOutput * k),
-                              mm ? (std::isnan(in5) ? tr("never") : num(in5 * 1000)) : dev::endReasonText(r.reason)};
+    const QString cells[8] = {metricText(m.riseTimeS * 1000),
+                              metricText(m.overshootPct),
+                              metricText(m.settlingTimeS * 1000),
+                              metricText(m.steadyStateError * k),
+                              metricText(m.iae * k),
+                              metricText(m.ise * k * k),
+                              metricText(m.peakOutput * k),
+                              mm ? (std::isnan(in5) ? tr("never") : metricText(in5 * 1000)) : dev::endReasonText(r.reason)};
     for (int row = 0; row < 8; ++row) {
         auto* item = new QTableWidgetItem(cells[row]);
         item->setToolTip(legend);

@@ -39,8 +39,8 @@ namespace {
     QT_TRANSLATE_NOOP("ui::ZnPanel", "Pessen 1994, J. Dyn. Syst. Meas. Control 116:553"),
     QT_TRANSLATE_NOOP("ui::ZnPanel", "Z-N variant as tabulated by Microstar Laboratories"),
 };
-QString num(double v) { return QString::number(v, 'g', 4); }
-QString period(double s) { return s < 1 ? ZnPanel::tr("%1 ms").arg(num(s * 1000)) : ZnPanel::tr("%1 s").arg(num(s)); }
+QString ruleNumber(double v) { return QString::number(v, 'g', 4); }
+QString period(double s) { return s < 1 ? ZnPanel::tr("%1 ms").arg(ruleNumber(s * 1000)) : ZnPanel::tr("%1 s").arg(ruleNumber(s)); }
 } // namespace
 
 QDoubleSpinBox* ZnPanel::spin(const QString& objectName, double min, double max, int decimals, double value)
@@ -241,20 +241,20 @@ void ZnPanel::showResult(const motion::control::TuningResult& r)
 {
     m_shown = r;
     QString text = tr("<b>Ku = %1, Tu = %2</b> (%3 on %4, %5 runs)")
-                       .arg(num(r.ku), period(r.tuS), r.method == "relay" ? tr("relay") : tr("ultimate gain"),
+                       .arg(ruleNumber(r.ku), period(r.tuS), r.method == "relay" ? tr("relay") : tr("ultimate gain"),
                             QString::fromStdString(r.target))
                        .arg(r.runs);
     if (r.kuDescribing)
         text += tr("<br>Classic describing function: Ku = %1, Tu = %2 — %3")
-                    .arg(num(*r.kuDescribing), period(r.tuRelayS.value_or(0)),
+                    .arg(ruleNumber(*r.kuDescribing), period(r.tuRelayS.value_or(0)),
                          r.refined ? tr("refined above from the measured phase crossover") : tr("not refined"));
     if (r.verification) {
         const auto& v = *r.verification;
         const auto* rule = motion::control::findRule(v.rule);
         text += tr("<br>Verification with %1: overshoot %2 %, %3")
-                    .arg(rule ? tr(rule->name) : QString::fromStdString(v.rule), num(v.metrics.overshootPct), dev::outcomeText(v.outcome));
+                    .arg(rule ? tr(rule->name) : QString::fromStdString(v.rule), ruleNumber(v.metrics.overshootPct), dev::outcomeText(v.outcome));
         if (r.unit == "mm")
-            text += v.settledInside5umS >= 0 ? tr(", inside seed 002's ±5 µm from %1 ms").arg(num(v.settledInside5umS * 1000))
+            text += v.settledInside5umS >= 0 ? tr(", inside seed 002's ±5 µm from %1 ms").arg(ruleNumber(v.settledInside5umS * 1000))
                                              : tr(", <b>never inside ±5 µm</b>");
     }
     m_result->setText(text);
@@ -264,7 +264,7 @@ void ZnPanel::showResult(const motion::control::TuningResult& r)
         const auto d = motion::control::toDiscrete(c, r.controlPeriodS);
         const int row = m_rules->rowCount();
         m_rules->insertRow(row);
-        const QString cells[8] = {tr(rule.name), num(c.kp), num(c.kiPerS), num(c.kdS), num(d.kp), num(d.ki), num(d.kd),
+        const QString cells[8] = {tr(rule.name), ruleNumber(c.kp), ruleNumber(c.kiPerS), ruleNumber(c.kdS), ruleNumber(d.kp), ruleNumber(d.ki), ruleNumber(d.kd),
                                   tr(rule.source)};
         for (int col = 0; col < 8; ++col)
             m_rules->setItem(row, col, new QTableWidgetItem(cells[col]));

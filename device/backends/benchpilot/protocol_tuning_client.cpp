@@ -29,7 +29,7 @@ proto::WireEnvelope toWire(const motion::control::Envelope& e, double scale)
     return {toU32(e.maxExcursion * scale), toU32(e.maxFollowingError * scale), toU32(e.maxDurationS * 1000)};
 }
 
-RequestError invalid(const QString& why)
+RequestError tuningInvalid(const QString& why)
 {
     RequestError e;
     e.kind = RequestError::Kind::Invalid;
@@ -77,7 +77,7 @@ void ProtocolTuningClient::getGains(int axis, GainsDone done)
                 return done(e, g);
             const auto r = proto::decodeGainsReply(payload);
             if (!r)
-                return done(invalid(tr("the device answered GET_GAINS with something unreadable")), g);
+                return done(tuningInvalid(tr("the device answered GET_GAINS with something unreadable")), g);
             g.axis = r->axis;
             g.controlPeriodS = r->controlPeriodUs * 1e-6;
             g.gains = fromWire(r->gains);
@@ -103,7 +103,7 @@ void ProtocolTuningClient::startStepTest(const StepTestParams& p, Callback done)
     const double step = std::llround(p.stepMm * k);
     if (!std::isfinite(p.stepMm) || std::abs(step) > 2147483647.0) {
         if (done)
-            done(invalid(tr("step %1 mm is not a usable step size").arg(p.stepMm)));
+            done(tuningInvalid(tr("step %1 mm is not a usable step size").arg(p.stepMm)));
         return;
     }
     r.step = static_cast<std::int32_t>(step);
@@ -165,9 +165,9 @@ void ProtocolTuningClient::fetchChunk(int axis, std::shared_ptr<TestCapture> int
                 return done(e, *into);
             const auto c = proto::decodeCaptureReply(payload);
             if (!c)
-                return done(invalid(tr("the device answered GET_CAPTURE with something unreadable")), *into);
+                return done(tuningInvalid(tr("the device answered GET_CAPTURE with something unreadable")), *into);
             if (first > 0 && c->testId != into->testId)
-                return done(invalid(tr("a new test replaced the capture while it was being read")), *into);
+                return done(tuningInvalid(tr("a new test replaced the capture while it was being read")), *into);
             const double k = self->scale(axis);
             auto& r = into->record;
             if (first == 0) {

@@ -1,4 +1,5 @@
 #include "device/backends/grbl/grbl_gcode.h"
+#include "motion/numbers.h"
 
 #include <cmath>
 #include <cstdio>
@@ -31,7 +32,7 @@ namespace {
 
 constexpr double kMaxAbsMm = 1e6;        ///< 1 km: anything larger is a unit mistake, and GRBL's float loses µm
 constexpr double kMaxFeedMmMin = 1e6;
-constexpr double kPi = 3.14159265358979323846;
+using motion::kPi;
 
 GcodeLine refuse(msg::Message why)
 {

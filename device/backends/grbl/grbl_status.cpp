@@ -21,7 +21,7 @@ StatusParse refuse(std::string_view payload, const char* reason)
     return p;
 }
 
-std::optional<int> smallInt(std::string_view s)
+std::optional<int> subStateNumber(std::string_view s)
 {
     const auto v = parseNumber(s);
     if (!v || *v < -1e9 || *v > 1e9 || *v != static_cast<double>(static_cast<long>(*v)))
@@ -72,7 +72,7 @@ StatusParse parseStatusReport(std::string_view payload)
             if (r.state == MachineState::Unknown)
                 return refuse(whole, "grbl.status.unknown_state");
             if (colon != std::string_view::npos) {
-                const auto sub = smallInt(field.substr(colon + 1));
+                const auto sub = subStateNumber(field.substr(colon + 1));
                 if (!sub || *sub < 0)
                     return refuse(whole, "grbl.status.bad_substate");
                 r.subState = *sub;

@@ -13,7 +13,7 @@ using namespace motion::metrology;
 
 namespace {
 
-constexpr double kAny = 1e12;
+constexpr double kResultAny = 1e12;
 
 Value orNull(const std::optional<double>& v)
 {
@@ -145,22 +145,22 @@ AccuracyResultRead accuracyResultFromJson(std::string_view text, std::string_vie
         for (std::size_t i = 0; i < list->items().size(); ++i) {
             ObjectReader to(list->items()[i], jsonio::childPath("targets", i), p);
             TargetStatistics t;
-            const auto target = to.number("target_mm", true, -kAny, kAny);
+            const auto target = to.number("target_mm", true, -kResultAny, kResultAny);
             const auto nUp = to.integer("n_up", true, 0, 1000000);
-            const auto meanUp = to.number("mean_up_mm", true, -kAny, kAny);
-            const auto sUp = to.number("s_up_mm", true, 0, kAny);
+            const auto meanUp = to.number("mean_up_mm", true, -kResultAny, kResultAny);
+            const auto sUp = to.number("s_up_mm", true, 0, kResultAny);
             const auto nDown = to.integer("n_down", false, 0, 1000000);
             // A unidirectional table writes null for the ↓ columns.
             auto optional = [&](const char* key, double min) -> std::optional<double> {
                 const Value* v = to.value().find(key);
                 if (!v || v->isNull())
                     return std::nullopt;
-                return to.number(key, false, min, kAny);
+                return to.number(key, false, min, kResultAny);
             };
-            t.meanDownMm = optional("mean_down_mm", -kAny);
+            t.meanDownMm = optional("mean_down_mm", -kResultAny);
             t.sDownMm = optional("s_down_mm", 0);
             for (const char* derived : {"mean_mm", "reversal_mm", "r_up_mm", "r_down_mm", "r_mm"})
-                optional(derived, -kAny);  // recomputed, not read; only their type is checked
+                optional(derived, -kResultAny);  // recomputed, not read; only their type is checked
             to.refuseUnknown({"target_mm", "n_up", "n_down", "mean_up_mm", "s_up_mm", "mean_down_mm", "s_down_mm", "mean_mm", "reversal_mm", "r_up_mm",
                               "r_down_mm", "r_mm"});
             if (bidirectional && (!t.meanDownMm || !t.sDownMm))
@@ -177,11 +177,11 @@ AccuracyResultRead accuracyResultFromJson(std::string_view text, std::string_vie
     }
     if (const Value* tol = o.get("tolerances", Value::Type::Object, false)) {
         ObjectReader to(*tol, "tolerances", p);
-        r.tolerances.aMm = to.number("a_mm", false, -kAny, kAny);
-        r.tolerances.rMm = to.number("r_mm", false, -kAny, kAny);
-        r.tolerances.eMm = to.number("e_mm", false, -kAny, kAny);
-        r.tolerances.mMm = to.number("m_mm", false, -kAny, kAny);
-        r.tolerances.bMm = to.number("b_mm", false, -kAny, kAny);
+        r.tolerances.aMm = to.number("a_mm", false, -kResultAny, kResultAny);
+        r.tolerances.rMm = to.number("r_mm", false, -kResultAny, kResultAny);
+        r.tolerances.eMm = to.number("e_mm", false, -kResultAny, kResultAny);
+        r.tolerances.mMm = to.number("m_mm", false, -kResultAny, kResultAny);
+        r.tolerances.bMm = to.number("b_mm", false, -kResultAny, kResultAny);
         to.refuseUnknown({"a_mm", "r_mm", "e_mm", "m_mm", "b_mm"});
     }
     o.get("verdicts", Value::Type::Array, false);  // recomputed from the figures and tolerances

@@ -12,7 +12,7 @@ using namespace motion::metrology;
 namespace {
 
 // Wide bounds here: the reader takes any number, the test's validator says what is wrong with it.
-constexpr double kAny = 1e12;
+constexpr double kTestAny = 1e12;
 constexpr long long kAnyCount = 1000000000;
 
 Value point(const XyPoint& p)
@@ -45,7 +45,7 @@ Value tolerancesValue(const AxisTolerances& t)
 std::optional<XyPoint> readPoint(const Value& v, const std::string& path, jsonio::Problems& p)
 {
     ObjectReader o(v, path, p);
-    const auto x = o.number("x_mm", true, -kAny, kAny), y = o.number("y_mm", true, -kAny, kAny);
+    const auto x = o.number("x_mm", true, -kTestAny, kTestAny), y = o.number("y_mm", true, -kTestAny, kTestAny);
     o.refuseUnknown({"x_mm", "y_mm"});
     if (!x || !y)
         return std::nullopt;
@@ -58,11 +58,11 @@ void readSettle(ObjectReader& o, SettleRule& s)
     if (!v)
         return;
     ObjectReader so(*v, "settle", o.problems());
-    if (auto x = so.number("tolerance_um", false, -kAny, kAny))
+    if (auto x = so.number("tolerance_um", false, -kTestAny, kTestAny))
         s.toleranceUm = *x;
-    if (auto x = so.number("window_s", false, -kAny, kAny))
+    if (auto x = so.number("window_s", false, -kTestAny, kTestAny))
         s.windowS = *x;
-    if (auto x = so.number("timeout_s", false, -kAny, kAny))
+    if (auto x = so.number("timeout_s", false, -kTestAny, kTestAny))
         s.timeoutS = *x;
     so.refuseUnknown({"tolerance_um", "window_s", "timeout_s"});
 }
@@ -73,11 +73,11 @@ void readTolerances(ObjectReader& o, const char* key, AxisTolerances& t)
     if (!v)
         return;
     ObjectReader to(*v, key, o.problems());
-    t.aMm = to.number("a_mm", false, -kAny, kAny);
-    t.rMm = to.number("r_mm", false, -kAny, kAny);
-    t.eMm = to.number("e_mm", false, -kAny, kAny);
-    t.mMm = to.number("m_mm", false, -kAny, kAny);
-    t.bMm = to.number("b_mm", false, -kAny, kAny);
+    t.aMm = to.number("a_mm", false, -kTestAny, kTestAny);
+    t.rMm = to.number("r_mm", false, -kTestAny, kTestAny);
+    t.eMm = to.number("e_mm", false, -kTestAny, kTestAny);
+    t.mMm = to.number("m_mm", false, -kTestAny, kTestAny);
+    t.bMm = to.number("b_mm", false, -kTestAny, kTestAny);
     to.refuseUnknown({"a_mm", "r_mm", "e_mm", "m_mm", "b_mm"});
 }
 
@@ -86,11 +86,11 @@ void readMotion(ObjectReader& o, T& t)
 {
     if (auto x = o.integer("cycles", false, -kAnyCount, kAnyCount))
         t.cycles = static_cast<int>(*x);
-    if (auto x = o.number("overrun_mm", false, -kAny, kAny))
+    if (auto x = o.number("overrun_mm", false, -kTestAny, kTestAny))
         t.overrunMm = *x;
-    if (auto x = o.number("feed_mm_s", false, -kAny, kAny))
+    if (auto x = o.number("feed_mm_s", false, -kTestAny, kTestAny))
         t.feedMmS = *x;
-    if (auto x = o.number("dwell_s", false, -kAny, kAny))
+    if (auto x = o.number("dwell_s", false, -kTestAny, kTestAny))
         t.dwellS = *x;
     readSettle(o, t.settle);
 }
@@ -112,9 +112,9 @@ AxisTest readAxis(ObjectReader& o)
     if (const Value* g = o.get("grid", Value::Type::Object, false)) {
         ObjectReader go(*g, "grid", o.problems());
         TargetGrid grid;
-        if (auto x = go.number("start_mm", true, -kAny, kAny))
+        if (auto x = go.number("start_mm", true, -kTestAny, kTestAny))
             grid.startMm = *x;
-        if (auto x = go.number("end_mm", true, -kAny, kAny))
+        if (auto x = go.number("end_mm", true, -kTestAny, kTestAny))
             grid.endMm = *x;
         if (auto x = go.integer("count", true, -kAnyCount, kAnyCount))
             grid.count = static_cast<int>(*x);
@@ -160,9 +160,9 @@ CircularTest readCircle(ObjectReader& o)
     if (const Value* v = o.get("centre_mm", Value::Type::Object, true))
         if (auto p = readPoint(*v, "centre_mm", o.problems()))
             t.centreMm = *p;
-    if (auto x = o.number("radius_mm", true, -kAny, kAny))
+    if (auto x = o.number("radius_mm", true, -kTestAny, kTestAny))
         t.radiusMm = *x;
-    if (auto x = o.number("feed_mm_s", false, -kAny, kAny))
+    if (auto x = o.number("feed_mm_s", false, -kTestAny, kTestAny))
         t.feedMmS = *x;
     if (const Value* list = o.get("directions", Value::Type::Array, false)) {
         t.clockwise = t.counterClockwise = false;
@@ -176,14 +176,14 @@ CircularTest readCircle(ObjectReader& o)
                 o.problems().add(item, jsonio::childPath("directions", i), "must be \"cw\" or \"ccw\"");
         }
     }
-    if (auto x = o.number("lead_arc_deg", false, -kAny, kAny))
+    if (auto x = o.number("lead_arc_deg", false, -kTestAny, kTestAny))
         t.leadArcDeg = *x;
     if (auto x = o.integer("samples_per_revolution", false, -kAnyCount, kAnyCount))
         t.samplesPerRevolution = static_cast<int>(*x);
     if (const Value* v = o.get("tolerances", Value::Type::Object, false)) {
         ObjectReader to(*v, "tolerances", o.problems());
-        t.maxGMm = to.number("g_mm", false, -kAny, kAny);
-        t.maxHMm = to.number("h_mm", false, -kAny, kAny);
+        t.maxGMm = to.number("g_mm", false, -kTestAny, kTestAny);
+        t.maxHMm = to.number("h_mm", false, -kTestAny, kTestAny);
         to.refuseUnknown({"g_mm", "h_mm"});
     }
     o.refuseUnknown({"schema", "version", "kind", "name", "axes", "centre_mm", "radius_mm", "feed_mm_s", "directions", "lead_arc_deg",

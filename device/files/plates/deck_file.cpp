@@ -8,7 +8,7 @@ using jsonio::ObjectReader;
 using jsonio::Value;
 
 namespace {
-constexpr double kBig = 1e6;
+constexpr double kDeckBig = 1e6;
 
 void readAxis(const Value& axes, const char* letter, plates::AxisMotion& a, jsonio::Problems& problems)
 {
@@ -19,8 +19,8 @@ void readAxis(const Value& axes, const char* letter, plates::AxisMotion& a, json
     }
     ObjectReader o(*v, jsonio::childPath("axes", letter), problems);
     o.refuseUnknown({"max_speed", "default_speed", "accel_time_s", "max_accel"});
-    a.maxSpeed = o.number("max_speed", true, 0, kBig).value_or(0);
-    a.defaultSpeed = o.number("default_speed", true, 0, kBig).value_or(0);
+    a.maxSpeed = o.number("max_speed", true, 0, kDeckBig).value_or(0);
+    a.defaultSpeed = o.number("default_speed", true, 0, kDeckBig).value_or(0);
     a.accelTimeS = o.number("accel_time_s", true, 0, 100).value_or(0);
     a.maxAccel = o.number("max_accel", true, 0, 1e9).value_or(0);
 }
@@ -51,10 +51,10 @@ DeckRead parseDeck(std::string_view text)
     plates::Deck d;
     d.id = o.string("id", true).value_or("");
     d.name = o.string("name", false).value_or("");
-    d.travelXMm = o.number("travel_x_mm", true, 0, kBig).value_or(0);
-    d.travelYMm = o.number("travel_y_mm", true, 0, kBig).value_or(0);
-    d.travelZMm = o.number("travel_z_mm", true, 0, kBig).value_or(0);
-    d.tableZMm = o.number("table_z_mm", true, 0, kBig).value_or(0);
+    d.travelXMm = o.number("travel_x_mm", true, 0, kDeckBig).value_or(0);
+    d.travelYMm = o.number("travel_y_mm", true, 0, kDeckBig).value_or(0);
+    d.travelZMm = o.number("travel_z_mm", true, 0, kDeckBig).value_or(0);
+    d.tableZMm = o.number("table_z_mm", true, 0, kDeckBig).value_or(0);
     d.syringeUl = o.number("syringe_ul", true, 0, 1e9).value_or(0);
     d.moveOverheadS = o.number("move_overhead_s", false, 0, 1).value_or(d.moveOverheadS);
     if (const Value* axes = o.get("axes", Value::Type::Object, true)) {
@@ -72,8 +72,8 @@ DeckRead parseDeck(std::string_view text)
             plates::Slot slot;
             slot.id = s.string("id", true).value_or("");
             slot.name = s.string("name", false).value_or("");
-            slot.originXMm = s.number("origin_x_mm", true, -kBig, kBig).value_or(0);
-            slot.originYMm = s.number("origin_y_mm", true, -kBig, kBig).value_or(0);
+            slot.originXMm = s.number("origin_x_mm", true, -kDeckBig, kDeckBig).value_or(0);
+            slot.originYMm = s.number("origin_y_mm", true, -kDeckBig, kDeckBig).value_or(0);
             slot.rotationDeg = s.number("rotation_deg", false, -360, 360).value_or(0);
             d.plateSlots.push_back(slot);
         }
@@ -87,10 +87,10 @@ DeckRead parseDeck(std::string_view text)
             plates::Station st;
             st.id = s.string("id", true).value_or("");
             st.name = s.string("name", false).value_or("");
-            st.xMm = s.number("x_mm", true, -kBig, kBig).value_or(0);
-            st.yMm = s.number("y_mm", true, -kBig, kBig).value_or(0);
-            st.safeZMm = s.number("safe_z_mm", true, -kBig, kBig).value_or(0);
-            st.depthZMm = s.number("depth_z_mm", true, -kBig, kBig).value_or(0);
+            st.xMm = s.number("x_mm", true, -kDeckBig, kDeckBig).value_or(0);
+            st.yMm = s.number("y_mm", true, -kDeckBig, kDeckBig).value_or(0);
+            st.safeZMm = s.number("safe_z_mm", true, -kDeckBig, kDeckBig).value_or(0);
+            st.depthZMm = s.number("depth_z_mm", true, -kDeckBig, kDeckBig).value_or(0);
             d.stations.push_back(st);
         }
     }

@@ -14,7 +14,7 @@ using plates::WellShape;
 
 namespace {
 
-constexpr double kBig = 1e6;
+constexpr double kLabwareBig = 1e6;
 
 /// The model validator's problems, placed in the document.
 void addModelProblems(const Value& root, const plates::Problems& found, jsonio::Problems& out)
@@ -35,18 +35,18 @@ std::optional<WellShape> readShape(ObjectReader& o, const char* key)
 bool readWellSize(ObjectReader& o, Well& w)
 {
     const auto shape = readShape(o, "shape");
-    const auto depth = o.number("depth_mm", true, 0, kBig);
-    const auto bottom = o.number("bottom_z_mm", false, 0, kBig);
+    const auto depth = o.number("depth_mm", true, 0, kLabwareBig);
+    const auto bottom = o.number("bottom_z_mm", false, 0, kLabwareBig);
     const auto volume = o.number("volume_ul", true, 0, 1e9);
     bool ok = shape && depth && volume && (bottom || !o.value().find("bottom_z_mm"));
     if (shape)
         w.shape = *shape;
     if (w.shape == WellShape::Circular) {
-        const auto d = o.number("diameter_mm", true, 0, kBig);
+        const auto d = o.number("diameter_mm", true, 0, kLabwareBig);
         ok = ok && d;
         w.diameterMm = d.value_or(0);
     } else {
-        const auto x = o.number("size_x_mm", true, 0, kBig), y = o.number("size_y_mm", true, 0, kBig);
+        const auto x = o.number("size_x_mm", true, 0, kLabwareBig), y = o.number("size_y_mm", true, 0, kLabwareBig);
         ok = ok && x && y;
         w.sizeXMm = x.value_or(0);
         w.sizeYMm = y.value_or(0);
@@ -66,9 +66,9 @@ std::optional<Labware> readOurs(const Value& root, jsonio::Problems& problems)
     lw.id = o.string("id", true).value_or("");
     lw.displayName = o.string("name", false).value_or(lw.id);
     lw.brand = o.string("brand", false).value_or("");
-    lw.lengthMm = o.number("length_mm", false, 0, kBig).value_or(plates::kSbsLengthMm);
-    lw.widthMm = o.number("width_mm", false, 0, kBig).value_or(plates::kSbsWidthMm);
-    lw.heightMm = o.number("height_mm", true, 0, kBig).value_or(0);
+    lw.lengthMm = o.number("length_mm", false, 0, kLabwareBig).value_or(plates::kSbsLengthMm);
+    lw.widthMm = o.number("width_mm", false, 0, kLabwareBig).value_or(plates::kSbsWidthMm);
+    lw.heightMm = o.number("height_mm", true, 0, kLabwareBig).value_or(0);
     lw.rows = static_cast<int>(o.integer("rows", true, 1, plates::kMaxRows).value_or(0));
     lw.columns = static_cast<int>(o.integer("columns", true, 1, plates::kMaxColumns).value_or(0));
     const Value* grid = o.get("grid", Value::Type::Object, false);
@@ -82,10 +82,10 @@ std::optional<Labware> readOurs(const Value& root, jsonio::Problems& problems)
         g.refuseUnknown({"a1_x_mm", "a1_y_mm", "pitch_x_mm", "pitch_y_mm", "shape", "diameter_mm", "size_x_mm", "size_y_mm",
                          "depth_mm", "bottom_z_mm", "volume_ul"});
         plates::GridSpec s;
-        s.a1XMm = g.number("a1_x_mm", true, -kBig, kBig).value_or(0);
-        s.a1YMm = g.number("a1_y_mm", true, -kBig, kBig).value_or(0);
-        s.pitchXMm = g.number("pitch_x_mm", lw.columns > 1, 0, kBig).value_or(0);
-        s.pitchYMm = g.number("pitch_y_mm", lw.rows > 1, 0, kBig).value_or(0);
+        s.a1XMm = g.number("a1_x_mm", true, -kLabwareBig, kLabwareBig).value_or(0);
+        s.a1YMm = g.number("a1_y_mm", true, -kLabwareBig, kLabwareBig).value_or(0);
+        s.pitchXMm = g.number("pitch_x_mm", lw.columns > 1, 0, kLabwareBig).value_or(0);
+        s.pitchYMm = g.number("pitch_y_mm", lw.rows > 1, 0, kLabwareBig).value_or(0);
         Well w;
         if (readWellSize(g, w) && lw.rows > 0 && lw.columns > 0) {
             s.rows = lw.rows;
@@ -109,7 +109,7 @@ std::optional<Labware> readOurs(const Value& root, jsonio::Problems& problems)
             const auto id = name ? plates::parseWellName(*name) : std::nullopt;
             if (name && !id)
                 problems.add(*wells->items()[k].find("well"), wr.pathOf("well"), "\"" + name->substr(0, 20) + "\" is not a well name like \"A1\"");
-            const auto x = wr.number("x_mm", true, -kBig, kBig), y = wr.number("y_mm", true, -kBig, kBig);
+            const auto x = wr.number("x_mm", true, -kLabwareBig, kLabwareBig), y = wr.number("y_mm", true, -kLabwareBig, kLabwareBig);
             if (readWellSize(wr, w) && id && x && y) {
                 w.id = *id;
                 w.xMm = *x;
@@ -157,10 +157,10 @@ std::optional<Labware> readOpentronsLabware(const Value& root, jsonio::Problems&
     double yDim = 0;
     if (const Value* dims = o.get("dimensions", Value::Type::Object, true)) {
         ObjectReader d(*dims, "dimensions", problems);
-        lw.lengthMm = d.number("xDimension", true, 0, kBig).value_or(0);
-        yDim = d.number("yDimension", true, 0, kBig).value_or(0);
+        lw.lengthMm = d.number("xDimension", true, 0, kLabwareBig).value_or(0);
+        yDim = d.number("yDimension", true, 0, kLabwareBig).value_or(0);
         lw.widthMm = yDim;
-        lw.heightMm = d.number("zDimension", true, 0, kBig).value_or(0);
+        lw.heightMm = d.number("zDimension", true, 0, kLabwareBig).value_or(0);
     }
     // The grid is the ordering: one array per column, wells front to back in it.
     if (const Value* ordering = o.get("ordering", Value::Type::Array, true)) {
@@ -193,15 +193,15 @@ std::optional<Labware> readOpentronsLabware(const Value& root, jsonio::Problems&
             Well well;
             well.id = *id;
             const auto shape = w.oneOf("shape", true, {"circular", "rectangular"});
-            const auto x = w.number("x", true, -kBig, kBig), y = w.number("y", true, -kBig, kBig), z = w.number("z", true, -kBig, kBig);
-            const auto depth = w.number("depth", true, 0, kBig);
+            const auto x = w.number("x", true, -kLabwareBig, kLabwareBig), y = w.number("y", true, -kLabwareBig, kLabwareBig), z = w.number("z", true, -kLabwareBig, kLabwareBig);
+            const auto depth = w.number("depth", true, 0, kLabwareBig);
             const auto volume = w.number("totalLiquidVolume", true, 0, 1e9);
             if (shape && *shape == "rectangular") {
                 well.shape = WellShape::Rectangular;
-                well.sizeXMm = w.number("xDimension", true, 0, kBig).value_or(0);
-                well.sizeYMm = w.number("yDimension", true, 0, kBig).value_or(0);
+                well.sizeXMm = w.number("xDimension", true, 0, kLabwareBig).value_or(0);
+                well.sizeYMm = w.number("yDimension", true, 0, kLabwareBig).value_or(0);
             } else if (shape) {
-                well.diameterMm = w.number("diameter", true, 0, kBig).value_or(0);
+                well.diameterMm = w.number("diameter", true, 0, kLabwareBig).value_or(0);
             }
             if (x && y && z && depth && volume) {
                 well.xMm = *x;

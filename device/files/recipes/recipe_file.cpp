@@ -12,7 +12,7 @@ using plates::StepType;
 
 namespace {
 
-constexpr double kBig = 1e9;
+constexpr double kRecipeBig = 1e9;
 
 /// The fields each step type takes besides "type" and "note".
 std::vector<std::string_view> fieldsOf(StepType t)
@@ -104,17 +104,17 @@ plates::Step readStep(const Value& v, const std::string& path, jsonio::Problems&
     if (takes(*t, "station"))
         s.station = o.string("station", false).value_or("");
     if (takes(*t, "volume_ul"))
-        s.volumeUl = o.number("volume_ul", true, -kBig, kBig).value_or(0);
+        s.volumeUl = o.number("volume_ul", true, -kRecipeBig, kRecipeBig).value_or(0);
     if (takes(*t, "speed_ul_s") && v.find("speed_ul_s"))
-        s.speedUlS = o.number("speed_ul_s", false, -kBig, kBig);
+        s.speedUlS = o.number("speed_ul_s", false, -kRecipeBig, kRecipeBig);
     if (takes(*t, "cycles"))
         s.cycles = static_cast<int>(o.integer("cycles", false, -1000000, 1000000).value_or(1));
     if (takes(*t, "seconds"))
-        s.seconds = o.number("seconds", true, -kBig, kBig).value_or(0);
+        s.seconds = o.number("seconds", true, -kRecipeBig, kRecipeBig).value_or(0);
     if (*t == StepType::TouchOff)
-        s.offsetMm = o.number("offset_mm", true, -kBig, kBig).value_or(0);
+        s.offsetMm = o.number("offset_mm", true, -kRecipeBig, kRecipeBig).value_or(0);
     if (*t == StepType::Dispense)
-        s.offsetMm = o.number("touch_off_mm", false, -kBig, kBig).value_or(0);
+        s.offsetMm = o.number("touch_off_mm", false, -kRecipeBig, kRecipeBig).value_or(0);
     if (takes(*t, "source"))
         if (const Value* src = o.get("source", Value::Type::Object, false)) {
             ObjectReader so(*src, o.pathOf("source"), problems);
@@ -157,9 +157,9 @@ RecipeRead parseRecipe(std::string_view text)
     rec.name = o.string("name", false).value_or("");
     rec.description = o.string("description", false).value_or("");
     if (root.find("travel_speed_mm_s"))
-        rec.travelSpeedMmS = o.number("travel_speed_mm_s", false, -kBig, kBig);
+        rec.travelSpeedMmS = o.number("travel_speed_mm_s", false, -kRecipeBig, kRecipeBig);
     if (root.find("z_speed_mm_s"))
-        rec.zSpeedMmS = o.number("z_speed_mm_s", false, -kBig, kBig);
+        rec.zSpeedMmS = o.number("z_speed_mm_s", false, -kRecipeBig, kRecipeBig);
     if (const Value* plates = o.get("plates", Value::Type::Array, true)) {
         for (std::size_t k = 0; k < plates->items().size() && k < 64; ++k) {
             ObjectReader p(plates->items()[k], jsonio::childPath("plates", k), r.problems);
@@ -168,8 +168,8 @@ RecipeRead parseRecipe(std::string_view text)
             rp.name = p.string("name", true).value_or("");
             rp.slot = p.string("slot", true).value_or("");
             rp.labware = p.string("labware", true).value_or("");
-            rp.safeZMm = p.number("safe_z_mm", true, -kBig, kBig).value_or(0);
-            rp.depthZMm = p.number("depth_z_mm", true, -kBig, kBig).value_or(0);
+            rp.safeZMm = p.number("safe_z_mm", true, -kRecipeBig, kRecipeBig).value_or(0);
+            rp.depthZMm = p.number("depth_z_mm", true, -kRecipeBig, kRecipeBig).value_or(0);
             rec.plates.push_back(rp);
         }
         if (plates->items().size() > 64)

@@ -28,6 +28,8 @@ constexpr const char* kRunLogSchema = "benchpilot.run-log";
 constexpr int kRunLogVersion = 1;
 
 enum class OpState { NotStarted, Started, Interrupted, Done, Skipped };
+/// Done or skipped: nothing more is owed to this op.
+inline bool isClosed(OpState s) { return s == OpState::Done || s == OpState::Skipped; }
 
 struct OpRecord {
     OpState state = OpState::NotStarted;

@@ -1,4 +1,5 @@
 #include "device/jobs/tuning/tuning_runner.h"
+#include "motion/numbers.h"
 
 #include "device/jobs/tuning/tuning_words.h"
 #include "motion/control/tuning/tuning_rules.h"
@@ -12,7 +13,7 @@ namespace dev {
 using namespace motion::control;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using motion::kPi;
 QString num(double v) { return QString::number(v, 'g', 4); }
 } // namespace
 

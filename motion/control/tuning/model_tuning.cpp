@@ -10,7 +10,6 @@ namespace motion::control {
 namespace {
 constexpr int kEnoughExtrema = 14;  ///< about six cycle-over-cycle ratios
 
-std::string num(double v) { return shortNumber(v); }
 
 /// Streaming version of findExtrema's rule, plus the checkpoints of the quiet test.
 struct Monitor {
@@ -114,7 +113,7 @@ ModelTuning tuneModel(const PlantSpec& plant, const ModelTuningOptions& o, const
             if (progress) {
                 const auto& t = search.trials().back();
                 progress(static_cast<int>(out.runs.size()),
-                         "Kp = " + num(*kp) + (t.oscillation.oscillating ? ": cycle ratio " + num(t.oscillation.ratio) : ": no oscillation"));
+                         "Kp = " + shortNumber(*kp) + (t.oscillation.oscillating ? ": cycle ratio " + shortNumber(t.oscillation.ratio) : ": no oscillation"));
             }
         }
         out.trials = search.trials();
@@ -144,7 +143,7 @@ ModelTuning tuneModel(const PlantSpec& plant, const ModelTuningOptions& o, const
         tuner.report(r);
         out.runs.push_back(std::move(r));
         if (progress)
-            progress(static_cast<int>(out.runs.size()), s.forcedPeriodS > 0 ? "forced run at period " + num(s.forcedPeriodS) + " s" : "relay run");
+            progress(static_cast<int>(out.runs.size()), s.forcedPeriodS > 0 ? "forced run at period " + shortNumber(s.forcedPeriodS) + " s" : "relay run");
     }
     if (!tuner.result()) {
         out.error = tuner.failure();

@@ -1,4 +1,5 @@
 #include "motion/control/tuning/oscillation.h"
+#include "motion/numbers.h"
 
 #include <Eigen/Dense>
 
@@ -7,7 +8,6 @@
 
 namespace motion::control {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kMinSamplesPerCycle = 12;
 
 Extremum makeExtremum(const std::vector<double>& y, double periodS, std::size_t i, bool maximum)

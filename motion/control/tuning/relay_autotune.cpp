@@ -1,16 +1,13 @@
 #include "motion/control/tuning/relay_autotune.h"
+
 #include "motion/control/tuning/short_number.h"
+#include "motion/numbers.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 namespace motion::control {
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-
-std::string num(double v) { return shortNumber(v); }
-} // namespace
 
 RelayAutotune::RelayAutotune(const RelayAutotuneOptions& o) : m_options(o)
 {
@@ -150,7 +147,7 @@ void RelayAutotune::planForced()
     }
     if (forcedRuns >= m_options.maxForcedRuns) {
         m_failure = "the refinement found no point lagging " + std::string(less ? "more" : "less") + " than 180° between ω = "
-            + num(m_minOmega) + " and " + num(m_maxOmega) + " rad/s"
+            + shortNumber(m_minOmega) + " and " + shortNumber(m_maxOmega) + " rad/s"
             + (less ? ": the phase may never reach −180° (no finite ultimate gain)" : "") + "; the classic relay estimate is reported";
         m_result = m_work;
         m_next.reset();

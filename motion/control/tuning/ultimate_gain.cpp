@@ -10,7 +10,6 @@ namespace motion::control {
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-std::string num(double v) { return shortNumber(v); }
 } // namespace
 
 UltimateGainSearch::UltimateGainSearch(const UltimateGainOptions& options) : m_options(options)
@@ -18,7 +17,7 @@ UltimateGainSearch::UltimateGainSearch(const UltimateGainOptions& options) : m_o
     if (std::isfinite(options.startKp) && options.startKp > 0 && options.startKp <= options.kpMax)
         m_next = options.startKp;
     else
-        m_failure = "the first trial gain must be above 0 and at most the largest gain " + num(options.kpMax);
+        m_failure = "the first trial gain must be above 0 and at most the largest gain " + shortNumber(options.kpMax);
 }
 
 UltimateTrial UltimateGainSearch::analyzeTrial(double kp, const Record& trial, double swing)
@@ -117,7 +116,7 @@ void UltimateGainSearch::decide()
     if (static_cast<int>(m_trials.size()) >= m_options.maxTrials) {
         m_failure = "no Kp with a sustained oscillation after " + std::to_string(m_trials.size()) + " trials";
         if (nearest)
-            m_failure += " (nearest: Kp = " + num(nearest->kp) + ", cycle ratio " + num(nearest->oscillation.ratio) + ")";
+            m_failure += " (nearest: Kp = " + shortNumber(nearest->kp) + ", cycle ratio " + shortNumber(nearest->oscillation.ratio) + ")";
         m_next.reset();
         return;
     }
@@ -155,7 +154,7 @@ void UltimateGainSearch::decide()
     (void)last;
     if (next > m_options.kpMax) {
         if (!above) {
-            m_failure = "no sustained oscillation up to Kp = " + num(m_options.kpMax)
+            m_failure = "no sustained oscillation up to Kp = " + shortNumber(m_options.kpMax)
                 + ": the loop decays at every gain tried, so it may have no finite ultimate gain (its phase may never reach −180°)";
             m_next.reset();
             return;
@@ -164,7 +163,7 @@ void UltimateGainSearch::decide()
     }
     for (const auto& t : m_trials)
         if (!t.inconclusive && std::abs(t.kp - next) <= 1e-9 * next) {
-            m_failure = "the search stalled at Kp = " + num(next);
+            m_failure = "the search stalled at Kp = " + shortNumber(next);
             m_next.reset();
             return;
         }

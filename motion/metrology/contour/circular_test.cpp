@@ -1,4 +1,5 @@
 #include "motion/metrology/contour/circular_test.h"
+#include "motion/numbers.h"
 
 #include <Eigen/Dense>
 
@@ -9,7 +10,6 @@ namespace motion::metrology {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr std::size_t kMinSamples = 8;
 
 double wrap(double a)

@@ -1,4 +1,5 @@
 #include "motion/plans/plates/calibration.h"
+#include "motion/numbers.h"
 
 #include <Eigen/Dense>
 
@@ -7,7 +8,7 @@
 
 namespace plates {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using motion::kPi;
 }
 
 const char* fitModelName(FitModel m) { return m == FitModel::Similarity ? "similarity" : "scaled-axes"; }

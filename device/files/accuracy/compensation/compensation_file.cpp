@@ -11,7 +11,7 @@ using motion::metrology::CompensationModel;
 using motion::metrology::TablePoint;
 
 namespace {
-constexpr double kAny = 1e12;
+constexpr double kCompensationAny = 1e12;
 } // namespace
 
 std::string compensationToJson(const CompensationFile& c)
@@ -96,9 +96,9 @@ CompensationRead compensationFromJson(std::string_view text, std::string_view fi
                     else
                         p.add(k, jsonio::childPath("polynomial.coefficients_um", i), std::string("must be number, not ") + jsonio::typeName(k.type()));
                 }
-            if (auto v = po.number("valid_from_mm", true, -kAny, kAny))
+            if (auto v = po.number("valid_from_mm", true, -kCompensationAny, kCompensationAny))
                 m.validFromMm = *v;
-            if (auto v = po.number("valid_to_mm", true, -kAny, kAny))
+            if (auto v = po.number("valid_to_mm", true, -kCompensationAny, kCompensationAny))
                 m.validToMm = *v;
             po.refuseUnknown({"coefficients_um", "valid_from_mm", "valid_to_mm"});
         }
@@ -111,14 +111,14 @@ CompensationRead compensationFromJson(std::string_view text, std::string_view fi
                 for (std::size_t i = 0; i < list->items().size(); ++i) {
                     ObjectReader po(list->items()[i], jsonio::childPath("table.points", i), p);
                     TablePoint tp;
-                    const auto nominal = po.number("nominal_mm", true, -kAny, kAny);
+                    const auto nominal = po.number("nominal_mm", true, -kCompensationAny, kCompensationAny);
                     std::optional<double> up, down;
                     if (m.perDirection) {
-                        up = po.number("correction_up_um", true, -kAny, kAny);
-                        down = po.number("correction_down_um", true, -kAny, kAny);
+                        up = po.number("correction_up_um", true, -kCompensationAny, kCompensationAny);
+                        down = po.number("correction_down_um", true, -kCompensationAny, kCompensationAny);
                         po.refuseUnknown({"nominal_mm", "correction_up_um", "correction_down_um"});
                     } else {
-                        up = down = po.number("correction_um", true, -kAny, kAny);
+                        up = down = po.number("correction_um", true, -kCompensationAny, kCompensationAny);
                         po.refuseUnknown({"nominal_mm", "correction_um"});
                     }
                     if (nominal && up && down)
@@ -127,15 +127,15 @@ CompensationRead compensationFromJson(std::string_view text, std::string_view fi
             to.refuseUnknown({"per_direction", "points"});
         }
     }
-    if (auto v = o.number("backlash_um", false, -kAny, kAny))
+    if (auto v = o.number("backlash_um", false, -kCompensationAny, kCompensationAny))
         m.backlashUm = *v;
     if (const Value* f = o.get("fit", Value::Type::Object, false)) {
         ObjectReader fo(*f, "fit", p);
         FitRecord r;
         const auto order = fo.integer("order", true, 1, motion::metrology::kMaxFitOrder);
-        const auto sse = fo.number("sse_um2", true, 0, kAny);
-        const auto r2 = fo.number("r2", true, -kAny, 1);
-        const auto adj = fo.number("adjusted_r2", true, -kAny, 1);
+        const auto sse = fo.number("sse_um2", true, 0, kCompensationAny);
+        const auto r2 = fo.number("r2", true, -kCompensationAny, 1);
+        const auto adj = fo.number("adjusted_r2", true, -kCompensationAny, 1);
         const auto points = fo.integer("points", true, 0, 100000000);
         const auto by = fo.oneOf("chosen_by", true, {"adjusted-r2", "operator"});
         fo.refuseUnknown({"order", "sse_um2", "r2", "adjusted_r2", "points", "chosen_by"});
