@@ -316,8 +316,9 @@ void GrblFirmware::readLines()
                 executeLine(line);
             return;
         }
-        // GRBL's line buffer holds 79 characters after its pre-parser drops spaces.
-        if (c == ' ' || c == '\t')
+        // GRBL's line buffer holds 79 characters after its pre-parser drops spaces and every other
+        // control character (protocol.c: "c <= ' '").
+        if (static_cast<unsigned char>(c) <= ' ')
             continue;
         if (m_line.size() >= grbl::kMaxLineChars)
             m_lineOverflow = true;

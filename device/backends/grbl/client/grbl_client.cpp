@@ -256,15 +256,15 @@ void GrblClient::checkLink()
 {
     const qint64 now = m_clock.elapsed();
     if (m_phase == Phase::Syncing) {
-        if (m_syncAttempts < 2 && now - m_syncSentMs > kResyncMs && m_transport) {
+        if (m_syncAttempts < 2 && now - m_syncSentMs > std::min(kResyncMs, m_connectTimeoutMs / 2) && m_transport) {
             // A board that resets when its port opens (an Arduino's DTR) ate the first line
             // while its bootloader ran: say it again.
             ++m_syncAttempts;
             m_syncSentMs = now;
             writeSync();
         }
-        if (now - m_connectStartMs > kConnectMs) {
-            const double s = kConnectMs / 1000.0;
+        if (now - m_connectStartMs > m_connectTimeoutMs) {
+            const double s = m_connectTimeoutMs / 1000.0;
             if (m_bytesIn == 0)
                 failConnect(tr("no answer from %1 within %2 s: check power, cable and baud rate (GRBL boards usually "
                                "run at 115200 Bd)")
@@ -285,7 +285,7 @@ void GrblClient::checkLink()
         return;
     }
     if (m_phase == Phase::Identifying) {
-        if (now - m_lastRxMs > kConnectMs)
+        if (now - m_lastRxMs > m_connectTimeoutMs)
             failConnect(tr("%1 stopped answering while it was being identified ($I, $$, $#)").arg(linkDescription()));
         return;
     }
@@ -443,8 +443,7 @@ void GrblClient::onLine(const grbl::LineReader::Line& raw)
         note(msg::make("grbl.device_line", {msg::verbatim("line", raw.text.substr(0, 120))}));
         return;
     case grbl::LineKind::Probe:
-        note(msg::make("grbl.device_line", {msg::verbatim("line", raw.text.substr(0, 120))}));
-        return;
+        return;  // the last line of every $# answer; this host does not probe
     default:
         return;  // help, echo, startup blocks: nothing to act on
     }

@@ -72,6 +72,9 @@ public:
     explicit GrblClient(const files::MachineProfile& profile, bool lenient = false, QObject* parent = nullptr);
     ~GrblClient() override;
 
+    /// How long a connection may take before it is refused (kConnectMs unless a test is in a hurry).
+    void setConnectTimeoutMs(int ms) { m_connectTimeoutMs = ms; }
+
     /// Not owned. Replacing the transport disconnects the old one first. A transport that is
     /// already open (a protocol probe opened it) is used as it is: no second open.
     void setTransport(Transport* transport);
@@ -235,6 +238,7 @@ private:
     quint64 m_bytesIn = 0, m_garbageLines = 0, m_unknownLines = 0, m_resets = 0;
     qint64 m_lastRxMs = -1, m_connectStartMs = 0, m_syncSentMs = 0;
     int m_syncAttempts = 0;
+    int m_connectTimeoutMs = kConnectMs;
     bool m_syncSawParserState = false;
     bool m_sawGrblLine = false;
 
