@@ -69,6 +69,12 @@ JogScreen::JogScreen(dev::Instrument* client, QWidget* parent) : QWidget(parent)
     speedRow->addWidget(keys);
     speedRow->addStretch();
     top->addLayout(speedRow);
+    // A device that cannot stop by itself when BenchPilot goes away (GRBL) says so, with the bound.
+    m_hostLossNote = new QLabel(this);
+    m_hostLossNote->setWordWrap(true);
+    m_hostLossNote->setStyleSheet(QStringLiteral("color:#8a4b00;"));
+    m_hostLossNote->setVisible(false);
+    top->addWidget(m_hostLossNote);
 
     m_gridHost = new QWidget(this);
     m_grid = new QGridLayout(m_gridHost);
@@ -188,6 +194,11 @@ void JogScreen::refresh()
                           && m_client->capabilities().testFlag(dev::Capability::SetZero));
     m_setHome->setEnabled(canMove && !st.anyMoving() && !st.positionLost);
     m_unlock->setVisible(ready && st.positionLost);
+    const bool noWatchdog = ready && m_client->capabilities().testFlag(dev::Capability::VelocityJog)
+                            && !m_client->capabilities().testFlag(dev::Capability::StopsOnHostLoss);
+    m_hostLossNote->setVisible(noWatchdog);
+    if (noWatchdog)
+        m_hostLossNote->setText(words::text(m_client->whyNot(dev::Capability::StopsOnHostLoss)));
     m_stop->setEnabled(ready);
     for (AxisRow* r : m_rows) {
         r->setEnabled(canMove);

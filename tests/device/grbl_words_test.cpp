@@ -85,7 +85,8 @@ TEST(GrblWords, TheReasonsForWhatGrblCannotDoAreSentences)
                                      {msg::term("instrument", "instrument.stage"), msg::verbatim("family", "Grbl 1.1h"),
                                       msg::term("because", "capability.because.grbl_no_watchdog")});
     EXPECT_EQ(words::text(m), QStringLiteral("The stage (Grbl 1.1h) has no way to stop by itself when BenchPilot goes quiet: GRBL "
-                                             "cannot notice that BenchPilot went away; a jog queued ahead runs out within 250 ms."));
+                                             "cannot notice that BenchPilot went away; what is queued ahead of a jog runs out within "
+                                             "the machine profile's stop budget (250 ms unless it says otherwise)."));
 }
 
 } // namespace

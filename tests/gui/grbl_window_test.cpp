@@ -7,6 +7,7 @@
 #include "widgets/jog_screen.h"
 #include "widgets/message_banner.h"
 
+#include <QLabel>
 #include <QPushButton>
 
 #include <gtest/gtest.h>
@@ -43,6 +44,11 @@ TEST(GrblWindow, TheStageOnAGrblPortDetectsItUnlocksAndSaysWhatAnEStopCosts)
     ASSERT_NE(unlock, nullptr);
     ASSERT_TRUE(guitest::waitFor([&] { return unlock->isVisible(); }, 3000));
     EXPECT_FALSE(button(jog, QStringLiteral("Set home here…"))->isVisible());
+    // What a lost link costs, said where jogs are started.
+    bool said = false;
+    for (auto* l : jog->findChildren<QLabel*>())
+        said = said || (l->isVisible() && l->text().contains(QStringLiteral("stop budget")));
+    EXPECT_TRUE(said);
     if (!qEnvironmentVariableIsEmpty("BP_SHOT_DIR"))
         w.grab().save(qEnvironmentVariable("BP_SHOT_DIR") + QStringLiteral("/grbl-jog-stage-alarm.png"));
     unlock->click();  // no dialogs in tests: the operator's yes

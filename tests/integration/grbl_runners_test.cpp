@@ -3,6 +3,7 @@
 // streamed without ever overflowing GRBL's 127-byte receive buffer (the simulator's own
 // accounting), a raster longer than the path window runs with flow control, a scan triggers a
 // grblHAL digital output once per tile, and a recipe moves the plunger on GRBL's A axis.
+#include "device/client/joystick_driver.h"
 #include "device/jobs/pattern_runner.h"
 #include "device/jobs/pattern_telemetry.h"
 #include "device/jobs/scan_runner.h"
@@ -199,4 +200,28 @@ TEST(GrblRunners, ARecipeMovesThePlungerOnTheProfilesAxis)
     EXPECT_NEAR(s.readout('P').commanded - p0, 40.0, 1e-3);
     // 1 µL per GRBL "mm" on A in the default wiring: the controller's A moved 40 mm.
     EXPECT_NEAR(s.firmware().machinePositionMm()[3], s.readout('P').commanded, 1e-3);
+}
+
+TEST(GrblRunners, TheJoystickDriverMovesXyTogetherAndStopsWithinTheBudgetOfItsRelease)
+{
+    GrblSession s;
+    ASSERT_TRUE(s.connect());
+    ASSERT_TRUE(s.homeAll());
+    ASSERT_FALSE(s.call([&](auto cb) { s.client.move({{0, 30}, {1, 30}}, false, 20, cb); }));
+    ASSERT_TRUE(s.waitStill());
+    dev::JoystickDriver stick(&s.client);
+    EXPECT_EQ(stick.keepAliveMs(), s.client.jogRefreshMs());
+    stick.setVelocities({{0, 8}, {1, 6}});  // a diagonal at 10 mm/s
+    ASSERT_TRUE(waitFor([&] { return s.firmware().machinePositionMm()[0] > 33; }, 10000));
+    const std::size_t cancels = s.firmware().jogCancelTimesS().size();
+    stick.stop();
+    ASSERT_TRUE(waitFor([&] { return s.firmware().jogCancelTimesS().size() > cancels; }, 5000));
+    const double releasedAt = s.firmware().jogCancelTimesS()[cancels];
+    ASSERT_TRUE(s.waitStill());
+    itest::spin(300);
+    ASSERT_TRUE(s.waitStill());
+    const auto& pos = s.firmware().machinePositionMm();
+    // Both axes went the stick's way, in its proportion (the ahead queue is one direction).
+    EXPECT_NEAR((pos[1] - 30) / (pos[0] - 30), 6.0 / 8.0, 0.02);
+    EXPECT_LE(s.firmware().lastMotionEndAtS() - releasedAt + s.client.profile().jog.linkLatencyS, 0.25);
 }

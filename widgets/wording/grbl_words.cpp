@@ -98,7 +98,8 @@ QString GrblWords::term(const std::string& id)
     if (id == "capability.because.grbl_open_loop")
         return tr("GRBL drives its steppers open loop, with no encoder to read and no loop to tune");
     if (id == "capability.because.grbl_no_watchdog")
-        return tr("GRBL cannot notice that BenchPilot went away; a jog queued ahead runs out within 250 ms");
+        return tr("GRBL cannot notice that BenchPilot went away; what is queued ahead of a jog runs out within the machine "
+                  "profile's stop budget (250 ms unless it says otherwise)");
     if (id == "capability.because.grbl_machine_travel")
         return tr("GRBL enforces only its machine travel ($130–$132)");
     if (id == "capability.because.grbl_xy_plane")
