@@ -1,4 +1,4 @@
-// GrblClient, part 4: the commands a person gives, as GRBL lines and realtime bytes. Each checks
+// GrblClient, part 5: the commands a person gives, as GRBL lines and realtime bytes. Each checks
 // its arguments (and what the host knows: an established position, the machine travel) before
 // anything is sent; a refusal from the controller comes back with its documented meaning and
 // the line it answers.

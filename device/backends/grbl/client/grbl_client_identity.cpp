@@ -1,4 +1,4 @@
-// GrblClient, part 2: what the controller is, as an instrument. The machine profile's wiring
+// GrblClient, part 3: what the controller is, as an instrument. The machine profile's wiring
 // (instrument axis → GRBL axis, the pump's µL per mm), the limits $$ gave, the machine space
 // that follows from homing and $23, the work offset, and the capabilities with their reasons.
 #include "device/backends/grbl/client/grbl_client.h"

@@ -1,4 +1,4 @@
-// GrblClient, part 5: continuous jog and the joystick (the jogging document's method, with the
+// GrblClient, part 6: continuous jog and the joystick (the jogging document's method, with the
 // promises of grbl_jog.h). Held axes (startJog) and the joystick's velocities (setJogVelocities)
 // add up to one velocity vector over GRBL's axes; while it is not zero, short $J segments are
 // kept a little ahead of the machine — topped up on a timer and on every jog line's ok — and a

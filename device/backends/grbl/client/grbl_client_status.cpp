@@ -1,4 +1,4 @@
-// GrblClient, part 3: what the client keeps up to date — the '?' poll, each status report
+// GrblClient, part 4: what the client keeps up to date — the '?' poll, each status report
 // turned into the instrument's status, the events GRBL never sends (MotionDone, Stopped) told
 // from the reports, alarms, the $# offsets, readStatus() and the telemetry made of reports.
 #include "device/backends/grbl/client/grbl_client.h"
