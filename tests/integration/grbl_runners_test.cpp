@@ -225,3 +225,31 @@ TEST(GrblRunners, TheJoystickDriverMovesXyTogetherAndStopsWithinTheBudgetOfItsRe
     EXPECT_NEAR((pos[1] - 30) / (pos[0] - 30), 6.0 / 8.0, 0.02);
     EXPECT_LE(s.firmware().lastMotionEndAtS() - releasedAt + s.client.profile().jog.linkLatencyS, 0.25);
 }
+
+TEST(GrblRunners, ABoardResetMidJobInterruptsThePatternAndSaysWhatWasLost)
+{
+    PatternRig r({});
+    ASSERT_TRUE(r.ready());
+    motion::plans::Pattern p;
+    p.shape = motion::plans::PatternShape::Circle;
+    ASSERT_TRUE(r.runner.start(planOf(p), {}));
+    ASSERT_TRUE(waitFor([&] { return r.runner.state() == jobs::PatternRunner::State::Running && r.s.firmware().machinePositionMm()[1] > 50.5; },
+                        20000));
+    // The board resets by itself (a brown-out, a watchdog): nobody here sent the 0x18.
+    const std::uint8_t reset = grbl::rt::kSoftReset;
+    r.s.firmware().receive(&reset, 1);
+    ASSERT_TRUE(waitFor([&] { return !r.runner.busy(); }, 10000)) << jobs::PatternRunner::stateText(r.runner.state()).toStdString();
+    EXPECT_EQ(r.runner.state(), jobs::PatternRunner::State::Interrupted);
+    EXPECT_FALSE(r.runner.summary().complete);
+    // Said, and the position is no longer trusted: the controller reports ALARM:3.
+    ASSERT_TRUE(waitFor([&] { return r.s.client.status().positionLost; }, 5000));
+    EXPECT_FALSE(r.s.readout('X').homed);
+    bool alarm = false, reset3 = false;
+    for (const auto& e : r.s.events) {
+        alarm = alarm || (e.detail.id == "grbl.alarm" && e.detail.integer("code") == 3);
+        reset3 = reset3 || e.detail.id == "grbl.controller_reset";
+    }
+    EXPECT_TRUE(alarm);
+    EXPECT_TRUE(reset3);
+    EXPECT_TRUE(r.s.client.isReady());  // the link itself is fine
+}
