@@ -1,6 +1,9 @@
 #pragma once
-// Where one instrument's connection is chosen: the simulator or any serial port
-// the system lists, with a baud rate; switched at run time.
+// Where one instrument's connection is chosen: the simulator, a serial port the system lists,
+// or any path typed in (the pty of benchpilot-sim, a symlink in /dev/serial/by-id); a baud rate
+// (115200 by default, what GRBL boards use); and the machine profile that says how a GRBL
+// controller is wired to the instrument (docs/grbl.md). Switched at run time; the protocol a
+// port speaks is detected when it connects (a BenchPilot HELLO or a GRBL banner).
 #include "device/client/instrument_types.h"
 
 #include <QWidget>
@@ -8,6 +11,7 @@
 class QComboBox;
 class QLabel;
 class QPushButton;
+class QToolButton;
 
 namespace ui {
 
@@ -15,9 +19,13 @@ class StatusLamp;
 
 struct ConnectionChoice {
     bool simulator = true;
-    QString port;          ///< when not simulated
+    QString port;          ///< when not simulated: a listed port or a typed path
     qint32 baud = 115200;
-    bool operator==(const ConnectionChoice& o) const { return simulator == o.simulator && port == o.port && baud == o.baud; }
+    QString profile;       ///< machine profile file; empty: the default wiring (and detect the protocol)
+    bool operator==(const ConnectionChoice& o) const
+    {
+        return simulator == o.simulator && port == o.port && baud == o.baud && profile == o.profile;
+    }
 };
 
 class ConnectionBar : public QWidget {
@@ -27,6 +35,12 @@ public:
     ConnectionChoice choice() const;
     void setChoice(const ConnectionChoice& c);
     void showState(dev::LinkState state, const QString& identity);
+    /// A note beside the lamp while the session works on something the link state does not
+    /// say (detecting the protocol on a port); empty clears it.
+    void showActivity(const QString& text);
+    /// Offers a machine profile file in the list (and chooses it when `choose`).
+    void addProfile(const QString& path, bool choose = true);
+    QStringList profiles() const;
     static QList<qint32> baudRates();
 
 public slots:
@@ -35,15 +49,33 @@ public slots:
 signals:
     void connectRequested(const ui::ConnectionChoice& choice);
     void disconnectRequested();
+    /// "Open a profile file…" was chosen: the composition root shows the file dialog and
+    /// calls addProfile() with the answer.
+    void profileFileRequested();
+
+protected:
+    void changeEvent(QEvent* event) override;
 
 private:
+    void retranslateUi();
+    void updateTexts();
+    int openProfileIndex() const;
+
+    QString m_titleText;
     QLabel* m_title;
     StatusLamp* m_lamp;
     QComboBox* m_source;
+    QToolButton* m_refresh;
     QComboBox* m_baud;
+    QComboBox* m_profile;
     QPushButton* m_connect;
     QLabel* m_identity;
     dev::LinkState m_state = dev::LinkState::Disconnected;
+    QString m_identityText, m_activity;
+    int m_lastProfile = 0;
+    bool m_returnQueued = false;
 };
 
 } // namespace ui
+
+Q_DECLARE_METATYPE(ui::ConnectionChoice)

@@ -2,6 +2,7 @@
 
 #include "widgets/axis_row.h"
 #include "widgets/live_strip.h"
+#include "widgets/wording/wording.h"
 
 #include <QAbstractSpinBox>
 #include <QApplication>
@@ -37,6 +38,17 @@ JogScreen::JogScreen(dev::Instrument* client, QWidget* parent) : QWidget(parent)
     m_stop = new QPushButton(tr("Stop"), this);
     m_stop->setToolTip(tr("Decelerate every axis to rest (Space)"));
     m_stop->setShortcut(QKeySequence(Qt::Key_Space));
+    // Where homing is not possible (a GRBL controller with $22=0) the operator may take the present
+    // position as home; after an alarm that lost the position, unlock on the operator's word.
+    m_setHome = new QPushButton(tr("Set home here…"), this);
+    m_setHome->setToolTip(tr("Take the present position as home for every axis (the controller cannot home): absolute moves "
+                             "count from here"));
+    m_setHome->setVisible(false);
+    m_unlock = new QPushButton(tr("Unlock…"), this);
+    m_unlock->setToolTip(tr("The controller lost track of its position: take the position it believes as true (or home it)"));
+    m_unlock->setVisible(false);
+    header->addWidget(m_setHome);
+    header->addWidget(m_unlock);
     header->addWidget(m_homeAll);
     header->addWidget(m_stop);
     top->addLayout(header);
@@ -57,6 +69,12 @@ JogScreen::JogScreen(dev::Instrument* client, QWidget* parent) : QWidget(parent)
     speedRow->addWidget(keys);
     speedRow->addStretch();
     top->addLayout(speedRow);
+    // A device that cannot stop by itself when BenchPilot goes away (GRBL) says so, with the bound.
+    m_hostLossNote = new QLabel(this);
+    m_hostLossNote->setWordWrap(true);
+    m_hostLossNote->setStyleSheet(QStringLiteral("color:#8a4b00;"));
+    m_hostLossNote->setVisible(false);
+    top->addWidget(m_hostLossNote);
 
     m_gridHost = new QWidget(this);
     m_grid = new QGridLayout(m_gridHost);
@@ -75,6 +93,18 @@ JogScreen::JogScreen(dev::Instrument* client, QWidget* parent) : QWidget(parent)
             m_client->startJog(it.key(), holdVelocity(it.key(), it.value()));
     });
     connect(m_homeAll, &QPushButton::clicked, this, [this] { homeAxes(0); });
+    connect(m_setHome, &QPushButton::clicked, this, [this] {
+        if (confirm(tr("Take the present position as home for every axis of the %1? Absolute moves then count from here: do so "
+                       "only when you know where the machine stands.")
+                        .arg(m_client->identity().kindName())))
+            m_client->setZero(0);
+    });
+    connect(m_unlock, &QPushButton::clicked, this, [this] {
+        if (confirm(tr("Unlock the %1? Its controller lost track of its position; unlocking takes the position it believes as "
+                       "true. Home it as soon as you can.")
+                        .arg(m_client->identity().kindName())))
+            m_client->unlock();
+    });
     connect(m_stop, &QPushButton::clicked, this, [this] {
         endAllHolds();
         m_client->stop();
@@ -156,7 +186,19 @@ void JogScreen::refresh()
     m_state->setText(state);
     m_state->setStyleSheet(ready && !st.estop ? QStringLiteral("color:#2e7d32;") : QStringLiteral("color:#b71c1c; font-weight:bold;"));
     const bool canMove = ready && !st.estop;
-    m_homeAll->setEnabled(canMove);
+    const bool canHome = m_client->can(dev::Capability::Homing);
+    m_homeAll->setEnabled(canMove && canHome);
+    m_homeAll->setToolTip(canHome || !ready ? tr("Home every axis (the analyzer lifts Z first, then X and Y)")
+                                            : words::text(m_client->whyNot(dev::Capability::Homing)));
+    m_setHome->setVisible(ready && !m_client->capabilities().testFlag(dev::Capability::Homing)
+                          && m_client->capabilities().testFlag(dev::Capability::SetZero));
+    m_setHome->setEnabled(canMove && !st.anyMoving() && !st.positionLost);
+    m_unlock->setVisible(ready && st.positionLost);
+    const bool noWatchdog = ready && m_client->capabilities().testFlag(dev::Capability::VelocityJog)
+                            && !m_client->capabilities().testFlag(dev::Capability::StopsOnHostLoss);
+    m_hostLossNote->setVisible(noWatchdog);
+    if (noWatchdog)
+        m_hostLossNote->setText(words::text(m_client->whyNot(dev::Capability::StopsOnHostLoss)));
     m_stop->setEnabled(ready);
     for (AxisRow* r : m_rows) {
         r->setEnabled(canMove);

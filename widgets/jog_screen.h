@@ -64,6 +64,9 @@ private:
     QLabel* m_title;
     QLabel* m_state;
     QPushButton* m_homeAll;
+    QPushButton* m_setHome;    ///< shown where the instrument cannot home but can take a position as home
+    QPushButton* m_unlock;     ///< shown while the controller does not trust its position
+    QLabel* m_hostLossNote;    ///< what a lost link costs on a device without a jog watchdog
     QPushButton* m_stop;
     QSlider* m_speed;
     QLabel* m_speedLabel;

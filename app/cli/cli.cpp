@@ -4,6 +4,8 @@
 #include "cli_session.h"
 #include "command.h"
 
+#include "device/files/machine_profile_file.h"
+
 #include <QCoreApplication>
 
 namespace cli {
@@ -97,6 +99,21 @@ bool readLinkOptions(const QCommandLineParser& p, LinkOptions& link, QTextStream
         if (link.port.isEmpty())
             return fail(tr("--port needs a path"));
     }
+    if (p.isSet(QStringLiteral("instrument"))) {
+        const QString v = p.value(QStringLiteral("instrument"));
+        if (v != QLatin1String("analyzer") && v != QLatin1String("stage"))
+            return fail(tr("--instrument needs 'analyzer' or 'stage' (got '%1')").arg(v));
+        link.instrument = v;
+    }
+    if (p.isSet(QStringLiteral("profile"))) {
+        link.profile = unmarkNegative(p.value(QStringLiteral("profile")));
+        files::MachineProfile profile;
+        QString error;
+        if (link.profile.isEmpty())
+            return fail(tr("--profile needs a machine profile file"));
+        if (!files::loadMachineProfileFile(link.profile, &profile, &error))
+            return fail(tr("--profile: %1").arg(error));
+    }
     if (p.isSet(QStringLiteral("baud"))) {
         bool ok = false;
         link.baud = p.value(QStringLiteral("baud")).toInt(&ok);
@@ -134,6 +151,12 @@ QList<QCommandLineOption> globalOptions()
     return {QCommandLineOption(QStringLiteral("sim"), tr("the in-process simulator: analyzer or stage (default: analyzer)"), QStringLiteral("KIND")),
             QCommandLineOption(QStringLiteral("port"), tr("a serial port, or the pty of benchpilot-sim"), QStringLiteral("PATH")),
             QCommandLineOption(QStringLiteral("baud"), tr("link speed (default: 115200)"), QStringLiteral("N")),
+            QCommandLineOption(QStringLiteral("instrument"),
+                               tr("with --port: which instrument it is, analyzer or stage (default: what the device says; "
+                                  "a GRBL controller: the profile's, else the analyzer)"),
+                               QStringLiteral("KIND")),
+            QCommandLineOption(QStringLiteral("profile"),
+                               tr("with --port: the machine profile of a GRBL controller (docs/grbl.md)"), QStringLiteral("FILE")),
             QCommandLineOption(QStringLiteral("json"), tr("print JSON instead of text")),
             QCommandLineOption(QStringLiteral("timeout"), tr("longest wait for motion to finish, s (default: 120)"), QStringLiteral("S"))};
 }
@@ -144,7 +167,7 @@ QString topHelp()
     global << helpOption() << versionOption();
     return tr("usage: benchpilot-cli [GLOBAL OPTIONS] COMMAND [OPTIONS] [ARGUMENTS]\n\n"
               "Scripts BenchPilot's instruments (the in-process simulators, benchpilot-sim's pty, or a\n"
-              "serial port) and its motion library.\n\n"
+              "serial port: BenchPilot firmware, or a GRBL 1.1 / grblHAL controller) and its motion library.\n\n"
               "Commands:\n")
         + commandTable(commands())
         + tr("\nGlobal options (before or after the command):\n") + optionTable(global)
@@ -171,7 +194,8 @@ QString commandHelp(const QString& path, const Command& c)
         s += QLatin1Char('\n') + c.description + QLatin1Char('\n');
     if (!c.options.isEmpty())
         s += tr("\nOptions:\n") + optionTable(c.options);
-    return s + tr("\nGlobal options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benchpilot-cli --help).\n");
+    return s + tr("\nGlobal options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile FILE, --json, --timeout S (see "
+                  "benchpilot-cli --help).\n");
 }
 
 int runCli(const QStringList& rawArgs, QTextStream& out, QTextStream& err)
@@ -259,6 +283,8 @@ int runCli(const QStringList& rawArgs, QTextStream& out, QTextStream& err)
         return Usage;
     if (!link.sim.isEmpty() && !link.port.isEmpty())
         return fail(who, tr("give either --sim or --port, not both"), QString());
+    if (link.port.isEmpty() && (!link.instrument.isEmpty() || !link.profile.isEmpty()))
+        return fail(who, tr("--instrument and --profile go with --port (--sim names its instrument itself)"), QString());
     Invocation inv(path, p, link, out, err);
     return cmd->run(inv);
 }

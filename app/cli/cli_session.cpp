@@ -16,6 +16,7 @@
 namespace cli {
 namespace {
 constexpr int kConnectTimeoutMs = 5000;
+constexpr int kGrblConnectTimeoutMs = 9000;
 
 QString num(double v) { return QString::number(v, 'f', 4); }
 } // namespace
@@ -77,17 +78,6 @@ QStringList CliSession::takeMotionErrors()
 
 bool CliSession::connectDevice()
 {
-    dev::Transport* transport = nullptr;
-    if (!m_opt.sim.isEmpty()) {
-        auto* link = new dev::SimulatedLink(m_opt.sim == QLatin1String("stage") ? proto::DeviceKind::Stage : proto::DeviceKind::Analyzer,
-                                            m_opt.baud, this);
-        m_link = link;
-        transport = link->hostEnd();
-    } else {
-        auto* serial = new dev::SerialTransport(m_opt.port, m_opt.baud, this);
-        m_link = serial;
-        transport = serial;
-    }
     QString linkError;
     // Only while connecting: the lambda holds a reference to this frame's string
     // (ASan caught a later link error writing into the dead frame).
@@ -95,18 +85,30 @@ bool CliSession::connectDevice()
         if (linkError.isEmpty())
             linkError = m;
     });
-    // Every port speaks the BenchPilot protocol today; a port that answers with a GRBL
-    // banner gets its backend here, behind the same proxy (issue 19).
-    m_benchPilot = new dev::BenchPilotClient;
-    m_client->setBackend(m_benchPilot);
-    m_benchPilot->setTransport(transport);
+    if (!m_opt.sim.isEmpty()) {
+        auto* link = new dev::SimulatedLink(m_opt.sim == QLatin1String("stage") ? proto::DeviceKind::Stage : proto::DeviceKind::Analyzer,
+                                            m_opt.baud, this);
+        m_link = link;
+        m_benchPilot = new dev::BenchPilotClient;
+        m_client->setBackend(m_benchPilot);
+        m_benchPilot->setTransport(link->hostEnd());
+    } else {
+        auto* serial = new dev::SerialTransport(m_opt.port, m_opt.baud, this);
+        m_link = serial;
+        if (!choosePortBackend(serial)) {
+            disconnect(watch);
+            return false;
+        }
+    }
     m_client->connectLink();
+    // A GRBL controller answers within its own connect timeout, after its identification ($I, $$, $#).
+    const bool grbl = m_client->backend() != m_benchPilot;
     const bool finished = spinUntil(
         [this] {
             const auto s = m_client->state();
             return s == dev::LinkState::Ready || s == dev::LinkState::Disconnected || s == dev::LinkState::Lost;
         },
-        kConnectTimeoutMs);
+        grbl ? kGrblConnectTimeoutMs : kConnectTimeoutMs);
     disconnect(watch);
     if (finished && m_client->state() == dev::LinkState::Ready)
         return true;
@@ -214,6 +216,9 @@ void CliSession::printStatus()
         m_out << QJsonDocument(root).toJson(QJsonDocument::Compact) << "\n";
     } else {
         m_out << QStringLiteral("%1%2\n").arg(id.kindName(), st.estop ? QStringLiteral("  [E-STOP]") : QString());
+        if (st.positionLost)
+            m_out << "  " << QCoreApplication::translate("cli", "[ALARM] the controller does not trust its position: home, or `unlock` on your word")
+                  << "\n";
         for (int i = 0; i < id.axes.size() && i < st.axes.size(); ++i) {
             const auto& a = st.axes[i];
             m_out << QStringLiteral("  %1  cmd %2  meas %3 %4  %5%6%7%8\n")

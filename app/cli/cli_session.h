@@ -14,6 +14,7 @@
 
 namespace dev {
 class BenchPilotClient;
+class Transport;
 }
 
 namespace cli {
@@ -45,6 +46,10 @@ public:
     QStringList takeMotionErrors();
 
 private:
+    /// cli_session_port.cpp: the backend for a port — the profile's protocol, or the one a
+    /// probe hears (a BenchPilot HELLO or a GRBL banner); false after saying why.
+    bool choosePortBackend(dev::Transport* transport);
+
     LinkOptions m_opt;
     QString m_prefix;
     QTextStream& m_out;

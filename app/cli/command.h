@@ -24,6 +24,8 @@ enum ExitCode { Ok = 0, Usage = 1, Refused = 2, LinkTrouble = 3 };
 struct LinkOptions {
     QString sim;           ///< "analyzer" or "stage" when simulated in-process
     QString port;          ///< serial port path otherwise
+    QString instrument;    ///< with --port: "analyzer" or "stage" (else from HELLO, the profile, or the analyzer)
+    QString profile;       ///< with --port: a machine profile file (docs/grbl.md)
     qint32 baud = 115200;
     bool json = false;
     double timeoutS = 120; ///< longest wait for motion to finish
@@ -116,7 +118,7 @@ void addCompletionCommand(std::vector<Command>& list);
 /// The help texts, also used by the completion script.
 QString topHelp();
 QString commandHelp(const QString& path, const Command& c);
-/// The options every command accepts (--sim, --port, --baud, --json, --timeout).
+/// The options every command accepts (--sim, --port, --baud, --instrument, --profile, --json, --timeout).
 QList<QCommandLineOption> globalOptions();
 
 } // namespace cli

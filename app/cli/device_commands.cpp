@@ -1,5 +1,5 @@
 // benchpilot-cli's instrument commands: info, status, home, move, jog, stop,
-// estop, reset, zero, limits. Each connects, acts, waits until the machine is
+// estop, reset, zero, unlock, limits. Each connects, acts, waits until the machine is
 // still where that is the point, and prints the result as text or JSON.
 #include "cli_session.h"
 #include "command.h"
@@ -248,6 +248,25 @@ int zero(Invocation& inv)
     return settleAndPrint(s);
 }
 
+int unlock(Invocation& inv)
+{
+    if (!noArguments(inv))
+        return Usage;
+    CliSession* s = inv.session();
+    if (!s)
+        return LinkTrouble;
+    if (!s->instrument()->status().positionLost) {
+        s->report(tr("nothing to unlock: the instrument trusts its position"));
+        s->printStatus();
+        return Ok;
+    }
+    // The operator's word, said out loud: the controller's own idea of where it is becomes the truth.
+    s->report(tr("unlocking: the position the controller believes is taken as true; home the axes when you can"));
+    if (int rc = s->request([&](auto cb) { s->instrument()->unlock(cb); }, tr("unlock")))
+        return rc;
+    return settleAndPrint(s);
+}
+
 int limits(Invocation& inv)
 {
     struct Change {
@@ -311,7 +330,15 @@ void addDeviceCommands(std::vector<Command>& list)
     list.push_back({QStringLiteral("stop"), tr("decelerate all axes to rest"), {}, {}, {}, stop, {}});
     list.push_back({QStringLiteral("estop"), tr("halt at once and latch the E-stop"), {}, {}, {}, estop, {}});
     list.push_back({QStringLiteral("reset"), tr("clear the E-stop latch"), {}, {}, {}, reset, {}});
-    list.push_back({QStringLiteral("zero"), tr("make the current position zero"), QStringLiteral("AXES"), {}, {}, zero, {}});
+    list.push_back({QStringLiteral("zero"), tr("make the current position zero"), QStringLiteral("AXES"),
+                    tr("On a GRBL controller without homing ($22=0) this takes the present position as home, on your word: "
+                       "absolute moves are allowed after it."),
+                    {}, zero, {}});
+    list.push_back({QStringLiteral("unlock"), tr("accept the position a controller believes after an alarm (GRBL's $X)"), {},
+                    tr("After an alarm that lost the position (a reset while moving, an E-stop, a hard limit) a GRBL controller "
+                       "refuses motion until it is homed or unlocked. Unlocking takes its idea of the position as true: home "
+                       "when you can."),
+                    {}, unlock, {}});
     list.push_back({QStringLiteral("limits"), tr("show or set soft limits"), QStringLiteral("[AXIS=MIN:MAX...]"), {}, {}, limits, {}});
 }
 

@@ -308,18 +308,20 @@ int run(Invocation& inv)
                              {QStringLiteral("max_contour_at_mm"), sum.maxAtPathMm},
                              {QStringLiteral("duration_s"), sum.durationS},
                              {QStringLiteral("samples"), static_cast<qint64>(sum.samples)},
+                             {QStringLiteral("sample_rate_hz"), c->subscribedRateHz()},
                              {QStringLiteral("underruns"), sum.underruns}};
     if (inv.json())
         inv.out() << QJsonDocument(result).toJson(QJsonDocument::Compact) << "\n";
     else
-        inv.out() << tr("%1 on the %2: %3 of %4 segments in %5 s; contour error max %6 µm, RMS %7 µm (%8 samples)\n")
+        inv.out() << tr("%1 on the %2: %3 of %4 segments in %5 s; contour error max %6 µm, RMS %7 µm (%8 samples at %9 Hz)\n")
                          .arg(QString::fromLatin1(motion::plans::shapeName(p->shape)), c->identity().kindName())
                          .arg(runner.segmentsDone())
                          .arg(path.size())
                          .arg(sum.durationS, 0, 'f', 2)
                          .arg(sum.maxContourMm * 1e3, 0, 'f', 2)
                          .arg(sum.rmsContourMm * 1e3, 0, 'f', 2)
-                         .arg(sum.samples);
+                         .arg(sum.samples)
+                         .arg(c->subscribedRateHz());
     inv.out().flush();
     if (!sum.complete)
         return inv.refused(problems.isEmpty() ? tr("the pattern did not complete") : problems.last());

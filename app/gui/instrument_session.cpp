@@ -1,6 +1,7 @@
 #include "instrument_session.h"
 
 #include "device/backends/benchpilot/benchpilot_client.h"
+#include "device/backends/grbl/client/grbl_client.h"
 #include "device/link/serial_transport.h"
 #include "device/link/simulated_link.h"
 
@@ -13,15 +14,21 @@ InstrumentSession::InstrumentSession(proto::DeviceKind kind, const QString& name
 
 InstrumentSession::~InstrumentSession()
 {
+    stopProbe();
     if (m_benchPilot)
         m_benchPilot->setTransport(nullptr);
+    if (m_grbl)
+        m_grbl->setTransport(nullptr);
 }
 
 void InstrumentSession::disconnectLink()
 {
+    stopProbe();
     m_proxy->disconnectLink();
     if (m_benchPilot)
         m_benchPilot->setTransport(nullptr);
+    if (m_grbl)
+        m_grbl->setTransport(nullptr);
     if (m_link)
         m_link->deleteLater();
     m_link = nullptr;
@@ -29,7 +36,7 @@ void InstrumentSession::disconnectLink()
 
 dev::BenchPilotClient* InstrumentSession::benchPilotOn(dev::Transport* transport)
 {
-    if (!m_benchPilot) {
+    if (!m_benchPilot || m_proxy->backend() != m_benchPilot) {  // none yet, or a GRBL backend took over
         m_benchPilot = new dev::BenchPilotClient;
         m_proxy->setBackend(m_benchPilot);
     }
@@ -41,17 +48,15 @@ void InstrumentSession::connectTo(const ui::ConnectionChoice& choice)
 {
     disconnectLink();
     m_choice = choice;
-    dev::Transport* transport = nullptr;
     if (choice.simulator) {
         auto* sim = new dev::SimulatedLink(m_kind, choice.baud, this);
-        transport = sim->hostEnd();
         m_link = sim;
-    } else {
-        auto* serial = new dev::SerialTransport(choice.port, choice.baud, this);
-        transport = serial;
-        m_link = serial;
+        benchPilotOn(sim->hostEnd())->connectLink();
+        return;
     }
-    benchPilotOn(transport)->connectLink();
+    auto* serial = new dev::SerialTransport(choice.port, choice.baud, this);
+    m_link = serial;
+    connectPort(serial, choice);
 }
 
 } // namespace app

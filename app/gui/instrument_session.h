@@ -4,11 +4,13 @@
 // connection speaks behind it, and whatever link it is on now (simulator or serial
 // port). Switching links never restarts the app and never hands screens a new object.
 //
-// connectTo() picks the backend for the connection. Today every connection speaks the
-// BenchPilot protocol, so the backend is made once and kept across reconnections (a
-// pattern run interrupted by a pulled cable resumes on the same path queue). A port
-// that turns out to speak GRBL (its banner, issue 19) gets a GRBL backend here, handed
-// to the same proxy: the screens see a new identity, never a new pointer.
+// connectTo() picks the backend for the connection. The simulator speaks the BenchPilot
+// protocol, whose backend is made once and kept across reconnections (a pattern run
+// interrupted by a pulled cable resumes on the same path queue). A port is first asked
+// which protocol it speaks (dev::ProtocolProbe: a BenchPilot HELLO or a GRBL banner), unless
+// the machine profile says; one that speaks GRBL gets a GRBL backend wired by the profile
+// (instrument_session_port.cpp), handed to the same proxy: the screens see a new identity,
+// never a new pointer.
 #include "device/client/instrument_proxy.h"
 #include "widgets/connection_bar.h"
 
@@ -17,6 +19,8 @@
 
 namespace dev {
 class BenchPilotClient;
+class GrblClient;
+class ProtocolProbe;
 class Transport;
 }
 
@@ -39,14 +43,27 @@ public:
     /// The in-process simulator's link, when that is what is connected (for tests and benches).
     QObject* link() const { return m_link; }
 
+signals:
+    /// Asking a port which protocol it speaks (a few seconds at most); `what` for people.
+    void detecting(const QString& what);
+    /// The connection could not be made before any backend took it (a profile that does not
+    /// load, a port that answers neither protocol); a sentence.
+    void connectFailed(const QString& why);
+
 private:
     /// The BenchPilot backend on `transport`, made once and kept.
     dev::BenchPilotClient* benchPilotOn(dev::Transport* transport);
+    // instrument_session_port.cpp: a serial port (or a typed path), its protocol and backend.
+    void connectPort(dev::Transport* transport, const ui::ConnectionChoice& choice);
+    dev::GrblClient* grblOn(dev::Transport* transport, const ui::ConnectionChoice& choice);
+    void stopProbe();
 
     proto::DeviceKind m_kind;
     QString m_name;
     dev::InstrumentProxy* m_proxy;
     QPointer<dev::BenchPilotClient> m_benchPilot;
+    QPointer<dev::GrblClient> m_grbl;
+    QPointer<dev::ProtocolProbe> m_probe;
     QPointer<QObject> m_link;
     ui::ConnectionChoice m_choice;
 };

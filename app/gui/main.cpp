@@ -1,12 +1,45 @@
 // benchpilot: the operator and test-bench GUI.
-//   benchpilot [--screenshot FILE --screen NAME [--sim analyzer|stage] [--settle-ms N] [--home-first] [--exercise] [--tune] [--recipe FILE]]
+//   benchpilot [--sim analyzer|stage] [--port PATH [--instrument analyzer|stage] [--profile FILE] [--baud N]]
+//   benchpilot --screenshot FILE --screen NAME [--sim analyzer|stage] [--settle-ms N] [--home-first] [--exercise] [--tune] [--recipe FILE]
 #include "main_window.h"
 #include "screenshot.h"
 
+#include "device/backends/protocol_probe.h"
+#include "device/files/machine_profile_file.h"
+#include "device/link/serial_transport.h"
+
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QEventLoop>
+#include <QTimer>
 
 #include <cstdio>
+
+namespace {
+
+/// Which instrument a port is, when nobody said: a BenchPilot device tells in its HELLO; a GRBL
+/// controller does not (the analyzer then, as the CLI takes it). Errors are the connection's to
+/// tell later; here they only leave the analyzer.
+proto::DeviceKind detectInstrument(const QString& port, qint32 baud)
+{
+    dev::SerialTransport transport(port, baud);
+    dev::ProtocolProbe probe(&transport);
+    QEventLoop loop;
+    QObject::connect(&probe, &dev::ProtocolProbe::finished, &loop, &QEventLoop::quit);
+    QTimer::singleShot(dev::ProtocolProbe::kTotalMs + 2000, &loop, &QEventLoop::quit);
+    probe.start();
+    if (!probe.done())
+        loop.exec();
+    transport.close();
+    const dev::ProbeResult& r = probe.result();
+    if (r.protocol == dev::ProbeResult::Protocol::None)
+        std::fprintf(stderr, "benchpilot: %s\n", qPrintable(r.error));
+    return r.kindKnown ? r.kind : proto::DeviceKind::Analyzer;
+}
+
+int kindIndex(proto::DeviceKind k) { return k == proto::DeviceKind::Stage ? 1 : 0; }
+
+} // namespace
 
 int main(int argc, char** argv)
 {
@@ -21,8 +54,23 @@ int main(int argc, char** argv)
                             QStringLiteral("file"));
     QCommandLineOption screen(QStringLiteral("screen"), QApplication::translate("main", "screen to show: jog, plots, profiles, …"),
                               QStringLiteral("name"), QStringLiteral("jog"));
-    QCommandLineOption sim(QStringLiteral("sim"), QApplication::translate("main", "instrument to show: analyzer or stage"),
+    QCommandLineOption sim(QStringLiteral("sim"),
+                           QApplication::translate("main", "connect this instrument to its in-process simulator and show it "
+                                                           "(analyzer or stage; also the instrument a screenshot shows)"),
                            QStringLiteral("kind"), QStringLiteral("analyzer"));
+    QCommandLineOption port(QStringLiteral("port"),
+                            QApplication::translate("main", "connect to this serial port or path (e.g. benchpilot-sim's pty); the "
+                                                            "protocol is detected: BenchPilot or GRBL"),
+                            QStringLiteral("path"));
+    QCommandLineOption instrument(QStringLiteral("instrument"),
+                                  QApplication::translate("main", "with --port: which instrument it is, analyzer or stage (default: what "
+                                                                  "the device says; a GRBL controller: the profile's, else the analyzer)"),
+                                  QStringLiteral("kind"));
+    QCommandLineOption profile(QStringLiteral("profile"),
+                               QApplication::translate("main", "with --port: the machine profile of a GRBL controller (docs/grbl.md)"),
+                               QStringLiteral("file"));
+    QCommandLineOption baud(QStringLiteral("baud"), QApplication::translate("main", "with --port: the link speed"), QStringLiteral("N"),
+                            QStringLiteral("115200"));
     QCommandLineOption settle(QStringLiteral("settle-ms"),
                               QApplication::translate("main", "screenshot: how long the simulators run first"),
                               QStringLiteral("ms"), QStringLiteral("1500"));
@@ -35,7 +83,7 @@ int main(int argc, char** argv)
     QCommandLineOption recipe(QStringLiteral("recipe"),
                               QApplication::translate("main", "screenshot: open this recipe on the Plates screen, home the analyzer and run it"),
                               QStringLiteral("file"));
-    p.addOptions({shot, screen, sim, settle, script, exercise, tune, recipe});
+    p.addOptions({sim, port, instrument, profile, baud, shot, screen, settle, script, exercise, tune, recipe});
     QCoreApplication::setOrganizationName(QStringLiteral("BenchPilot"));
     QCoreApplication::setApplicationName(QStringLiteral("benchpilot"));
     QCoreApplication::setApplicationVersion(QStringLiteral(BP_VERSION));
@@ -75,7 +123,59 @@ int main(int argc, char** argv)
         r.recipe = p.value(recipe);
         return app::takeScreenshot(r);
     }
-    app::MainWindow w;
+    // --sim and --port say what to connect this time (over what was remembered).
+    app::MainWindowOptions options;
+    auto fail = [](const QString& m) {
+        std::fprintf(stderr, "benchpilot: %s\ntry 'benchpilot --help'\n", qPrintable(m));
+        return 1;
+    };
+    auto kindOf = [](const QString& v) -> std::optional<proto::DeviceKind> {
+        if (v == QLatin1String("analyzer"))
+            return proto::DeviceKind::Analyzer;
+        if (v == QLatin1String("stage"))
+            return proto::DeviceKind::Stage;
+        return std::nullopt;
+    };
+    if ((p.isSet(instrument) || p.isSet(profile)) && !p.isSet(port))
+        return fail(QApplication::translate("main", "--instrument and --profile go with --port"));
+    if (p.isSet(sim)) {
+        const auto k = kindOf(p.value(sim));
+        if (!k)
+            return fail(QApplication::translate("main", "--sim needs 'analyzer' or 'stage' (got '%1')").arg(p.value(sim)));
+        ui::ConnectionChoice c;
+        options.connection[kindIndex(*k)] = c;
+        options.showInstrument = kindIndex(*k);
+    }
+    if (p.isSet(port)) {
+        bool ok = false;
+        const qint32 rate = p.value(baud).toInt(&ok);
+        if (!ok || rate < 1200)
+            return fail(QApplication::translate("main", "--baud needs a rate of at least 1200 (got '%1')").arg(p.value(baud)));
+        std::optional<proto::DeviceKind> k;
+        if (p.isSet(instrument) && !(k = kindOf(p.value(instrument))))
+            return fail(QApplication::translate("main", "--instrument needs 'analyzer' or 'stage' (got '%1')").arg(p.value(instrument)));
+        if (p.isSet(profile)) {
+            files::MachineProfile mp;
+            QString error;
+            if (!files::loadMachineProfileFile(p.value(profile), &mp, &error))
+                return fail(QApplication::translate("main", "--profile: %1").arg(error));
+            if (k && *k != mp.instrument)
+                return fail(QApplication::translate("main", "--profile is for the other instrument than --instrument names"));
+            k = mp.instrument;
+        }
+        if (!k)
+            k = detectInstrument(p.value(port), rate);
+        if (options.connection[kindIndex(*k)] && p.isSet(sim))
+            return fail(QApplication::translate("main", "--sim and --port name the same instrument"));
+        ui::ConnectionChoice c;
+        c.simulator = false;
+        c.port = p.value(port);
+        c.baud = rate;
+        c.profile = p.value(profile);
+        options.connection[kindIndex(*k)] = c;
+        options.showInstrument = kindIndex(*k);
+    }
+    app::MainWindow w(options);
     w.show();
     return app.exec();
 }

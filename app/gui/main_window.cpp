@@ -14,6 +14,7 @@
 #include "widgets/profiles_screen.h"
 #include "widgets/tuning/tuning_screen.h"
 #include "widgets/scan/scan_screen.h"
+#include "widgets/wording/wording.h"
 
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -183,8 +184,13 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     ui::ConnectionChoice choices[2];
     if (m_options.persistSettings)
         loadSettings();
-    for (int i = 0; i < 2; ++i)
+    for (int i = 0; i < 2; ++i) {
+        if (m_options.connection[i])
+            m_bars[i]->setChoice(*m_options.connection[i]);
         choices[i] = m_bars[i]->choice();
+    }
+    if (m_options.showInstrument >= 0)
+        showInstrument(m_options.showInstrument);
     if (m_options.autoConnect)
         for (int i = 0; i < 2; ++i)
             m_sessions[i]->connectTo(choices[i]);
@@ -236,7 +242,38 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
     InstrumentSession* s = m_sessions[i];
     dev::Instrument* c = s->instrument();
     connect(bar, &ui::ConnectionBar::connectRequested, this, [s](const ui::ConnectionChoice& ch) { s->connectTo(ch); });
-    connect(bar, &ui::ConnectionBar::disconnectRequested, this, [s] { s->disconnectLink(); });
+    connect(bar, &ui::ConnectionBar::disconnectRequested, this, [s, bar] {
+        bar->showActivity({});
+        s->disconnectLink();
+    });
+    // A port is asked which protocol it speaks before a backend takes it (a few seconds at most).
+    connect(s, &InstrumentSession::detecting, bar, &ui::ConnectionBar::showActivity);
+    connect(s, &InstrumentSession::connectFailed, this, [this, s, bar](const QString& why) {
+        bar->showActivity({});
+        bar->showState(dev::LinkState::Disconnected, s->instrument()->linkDescription());
+        m_banner->show(ui::MessageBanner::Level::Error, QStringLiteral("%1: %2").arg(s->name(), why));
+        m_log->addNote(s->name(), tr("link error"), why, true);
+    });
+    connect(bar, &ui::ConnectionBar::profileFileRequested, this, [this, bar] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Machine profile"),
+                                                          QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation),
+                                                          tr("Machine profiles (*.machine.json);;All files (*)"));
+        if (!path.isEmpty())
+            bar->addProfile(path);
+    });
+    connect(c, &dev::Instrument::stateChanged, bar, [bar] { bar->showActivity({}); });
+    // A controller's own messages and the lines a backend did not understand: logged, never banners.
+    connect(c, &dev::Instrument::noted, this, [this, s](const msg::Message& m) { m_log->addNote(s->name(), tr("device"), words::text(m)); });
+    // A controller that no longer trusts its position (GRBL's alarm after an E-stop or a reset in
+    // motion): say so once, and what to do.
+    connect(c, &dev::Instrument::statusChanged, this, [this, s, i](const dev::InstrumentStatus& st) {
+        if (st.positionLost && !m_positionLostShown[i])
+            m_banner->show(ui::MessageBanner::Level::Error,
+                           tr("%1: the controller no longer trusts its position (an alarm, an E-stop or a reset while it was "
+                              "moving). Home it, or Unlock on the Jog screen to take the position it believes.")
+                               .arg(s->name()));
+        m_positionLostShown[i] = st.positionLost;
+    });
     auto showState = [this, i, c, bar] {
         const auto& id = c->identity();
         const QString who = c->state() == dev::LinkState::Ready || c->state() == dev::LinkState::Identified
@@ -260,7 +297,9 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
         m_log->addNote(s->name(), tr("link error"), m, true);
     });
     connect(c, &dev::Instrument::requestFailed, this, [this, s](const dev::RequestError& e) {
-        m_banner->show(ui::MessageBanner::Level::Error, QStringLiteral("%1: %2").arg(s->name(), e.message));
+        // A refusal with its structured form (a GRBL error:N with its meaning) is worded here.
+        const QString text = e.detail.empty() ? e.message : words::text(e.detail);
+        m_banner->show(ui::MessageBanner::Level::Error, QStringLiteral("%1: %2").arg(s->name(), text));
         m_log->addNote(s->name(), tr("refused"), e.message, true);
     });
     connect(c, &dev::Instrument::eventReceived, this, [this, s, c](const dev::DeviceEvent& e) {
@@ -307,7 +346,14 @@ void MainWindow::emergencyStop()
     for (auto* s : m_sessions)
         if (s->instrument()->isReady())
             s->instrument()->estop();
-    m_banner->show(ui::MessageBanner::Level::Error, tr("E-STOP: all motion halted. Check the machine, then press Reset E-stop."));
+    // A GRBL controller stops with a soft reset: one that was moving loses its position.
+    bool positionAtRisk = false;
+    for (auto* s : m_sessions)
+        positionAtRisk = positionAtRisk || (s->instrument()->isReady() && !s->instrument()->capabilities().testFlag(dev::Capability::StopsOnHostLoss));
+    m_banner->show(ui::MessageBanner::Level::Error,
+                   positionAtRisk ? tr("E-STOP: all motion halted. A GRBL controller that was moving has lost its position: home "
+                                       "it (or unlock it on your word) before absolute moves. Check the machine, then press Reset E-stop.")
+                                  : tr("E-STOP: all motion halted. Check the machine, then press Reset E-stop."));
 }
 
 void MainWindow::resetEStop()
@@ -339,6 +385,9 @@ void MainWindow::loadSettings()
         c.simulator = st.value(QStringLiteral("simulator"), true).toBool();
         c.port = st.value(QStringLiteral("port")).toString();
         c.baud = st.value(QStringLiteral("baud"), 115200).toInt();
+        c.profile = st.value(QStringLiteral("profile")).toString();
+        for (const QString& path : st.value(QStringLiteral("profiles")).toStringList())
+            m_bars[i]->addProfile(path, false);
         st.endGroup();
         m_bars[i]->setChoice(c);
         m_jog[i]->setSpeedFraction(st.value(QStringLiteral("jog/%1/speed").arg(QLatin1String(keys[i])), 0.2).toDouble());
@@ -373,6 +422,8 @@ void MainWindow::saveSettings()
         st.setValue(QStringLiteral("simulator"), c.simulator);
         st.setValue(QStringLiteral("port"), c.port);
         st.setValue(QStringLiteral("baud"), c.baud);
+        st.setValue(QStringLiteral("profile"), c.profile);
+        st.setValue(QStringLiteral("profiles"), m_bars[i]->profiles());
         st.endGroup();
         st.setValue(QStringLiteral("jog/%1/speed").arg(QLatin1String(keys[i])), m_jog[i]->speedFraction());
     }

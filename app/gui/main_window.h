@@ -1,7 +1,11 @@
 #pragma once
 // The composition root's window: both instruments' connections, the screens,
 // E-stop on every screen, banner, event log and status bar.
+#include "widgets/connection_bar.h"
+
 #include <QMainWindow>
+
+#include <optional>
 
 class QListWidget;
 class QPushButton;
@@ -14,7 +18,6 @@ class TelemetryHub;
 }
 
 namespace ui {
-class ConnectionBar;
 class EventLog;
 class JogScreen;
 class MessageBanner;
@@ -33,6 +36,9 @@ struct MainWindowOptions {
     bool persistSettings = true;  ///< false for screenshots and tests: read nothing, write nothing
     bool confirmDialogs = true;   ///< false in tests: far moves go ahead without asking
     bool autoConnect = true;      ///< connect both instruments at start
+    /// Connections given on the command line (--sim, --port), over what was remembered.
+    std::optional<ui::ConnectionChoice> connection[2];
+    int showInstrument = -1;      ///< 0 analyzer, 1 stage: the instrument the command line named
 };
 
 class MainWindow : public QMainWindow {
@@ -95,6 +101,7 @@ private:
     QPushButton* m_estop;
     QPushButton* m_reset;
     QLabel* m_statusLabels[2];
+    bool m_positionLostShown[2] = {false, false};
 };
 
 } // namespace app

@@ -88,13 +88,15 @@ int main(int argc, char** argv)
 
     const sim::MachineConfig machine = kind == QLatin1String("stage") ? sim::stageConfig() : sim::analyzerConfig();
     std::unique_ptr<dev::SimulatorHost> host;
-    if (proto == QLatin1String("benchpilot"))
+    const sim::GrblFirmware* grbl = nullptr;
+    if (proto == QLatin1String("benchpilot")) {
         host = std::make_unique<dev::SimulatorHost>(machine, baudRate, &pty);
-    else
-        host = std::make_unique<dev::SimulatorHost>(
-            std::make_unique<sim::GrblFirmware>(machine, proto == QLatin1String("grbl") ? sim::GrblFirmware::Dialect::Grbl
-                                                                                        : sim::GrblFirmware::Dialect::GrblHal),
-            &pty);
+    } else {
+        auto fw = std::make_unique<sim::GrblFirmware>(machine, proto == QLatin1String("grbl") ? sim::GrblFirmware::Dialect::Grbl
+                                                                                               : sim::GrblFirmware::Dialect::GrblHal);
+        grbl = fw.get();
+        host = std::make_unique<dev::SimulatorHost>(std::move(fw), &pty);
+    }
     host->setTimeScale(scale);
     host->start();
 
@@ -109,6 +111,13 @@ int main(int argc, char** argv)
                 qPrintable(proto), baudRate, scale);
     std::fflush(stdout);
     const int rc = app.exec();
+    if (grbl) {
+        // The receive buffer's accounting, for the host that streamed to it (and its tests): a host
+        // that counts characters never has a byte dropped.
+        std::printf("receive buffer: %llu bytes lost, at most %zu of %zu bytes held\n",
+                    static_cast<unsigned long long>(grbl->lostRxBytes()), grbl->maxRxBytesQueued(), grbl->rxBufferBytes());
+        std::fflush(stdout);
+    }
     ::unlink(qPrintable(link));
     pty.close();
     return rc;

@@ -37,6 +37,11 @@ msg::Message Instrument::missingReason(Capability c) const
                                     msg::verbatim("family", id.family.toStdString())});
 }
 
+void Instrument::unlock(Callback done)
+{
+    refuse(done, RequestError::Kind::Invalid, tr("this instrument has no alarm lock to release: home it instead"));
+}
+
 void Instrument::refuse(const Callback& done, RequestError::Kind kind, const QString& message)
 {
     RequestError e;

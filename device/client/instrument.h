@@ -89,6 +89,10 @@ public:
     virtual void estop(Callback done = {}) = 0;                       ///< realtime; latches until reset()
     virtual void reset(Callback done = {}) = 0;
     virtual void setZero(quint8 axisMask, Callback done = {}) = 0;
+    /// Accepts the position the device believes it is at after it lost track of it
+    /// (status().positionLost: GRBL's `$X` after an alarm), on the operator's word; the GUI
+    /// and the CLI ask first. Refused by a device that never locks itself this way.
+    virtual void unlock(Callback done = {});
     virtual void setSoftLimits(int axis, double min, double max, Callback done = {}) = 0;
     /// One status reading taken now (not the next poll), also applied to status().
     virtual void readStatus(StatusCallback done) = 0;
@@ -121,6 +125,9 @@ signals:
     void linkError(const QString& message);
     void requestFailed(const dev::RequestError& error);
     void samplesLost(quint64 totalLost);
+    /// Something worth a line in the event log that changes no state: a controller's own
+    /// message ([MSG:…] on GRBL), a line the backend does not know (logged, never fatal).
+    void noted(const msg::Message& note);
     /// paths() and tuning() now return other objects (see the contract above).
     void partsReplaced();
 

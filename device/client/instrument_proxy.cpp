@@ -32,6 +32,7 @@ void InstrumentProxy::setBackend(Instrument* backend)
         m_forwards << connect(backend, &Instrument::linkError, this, &Instrument::linkError);
         m_forwards << connect(backend, &Instrument::requestFailed, this, &Instrument::requestFailed);
         m_forwards << connect(backend, &Instrument::samplesLost, this, &Instrument::samplesLost);
+        m_forwards << connect(backend, &Instrument::noted, this, &Instrument::noted);
         m_forwards << connect(backend, &Instrument::partsReplaced, this, &Instrument::partsReplaced);
     }
     // Screens learn of the new backend the way they learn of any change on a link.
@@ -150,6 +151,12 @@ void InstrumentProxy::setZero(quint8 axisMask, Callback done)
 {
     if (!noBackend(done))
         m_backend->setZero(axisMask, std::move(done));
+}
+
+void InstrumentProxy::unlock(Callback done)
+{
+    if (!noBackend(done))
+        m_backend->unlock(std::move(done));
 }
 
 void InstrumentProxy::setSoftLimits(int axis, double min, double max, Callback done)

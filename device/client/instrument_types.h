@@ -66,6 +66,10 @@ struct AxisReadout {
 
 struct InstrumentStatus {
     bool estop = false, fault = false;
+    /// The device no longer trusts its position and refuses motion until it is homed, or
+    /// unlocked on the operator's word (Instrument::unlock): GRBL's Alarm after a reset in
+    /// motion, a hard limit or a power-up with homing enabled.
+    bool positionLost = false;
     quint64 deviceTimeUs = 0;
     QVector<AxisReadout> axes;
     bool anyMoving() const;
@@ -82,6 +86,7 @@ struct DeviceEvent {
     quint64 deviceTimeUs = 0;
     QString text;
     QDateTime hostTime;
+    msg::Message detail;      ///< structured form of `text` where the backend has one (GRBL: grbl.alarm{code})
 };
 
 /// How the link has fared, for the status bar. A backend fills what applies to it

@@ -100,10 +100,14 @@ void PatternRunner::attachPaths()
         emit progress(m_done, m_path.size());
         setState(State::Done);
         const PatternRunSummary s = summary();
-        emit message(tr("Pattern done in %1 s: contour error max %2 µm, RMS %3 µm.")
+        // The contour error is only as fine as its samples: say how many, and at what rate
+        // (a GRBL controller's status reports, 5–10 Hz, against a BenchPilot device's telemetry).
+        emit message(tr("Pattern done in %1 s: contour error max %2 µm, RMS %3 µm (%4 samples at %5 Hz).")
                          .arg(s.durationS, 0, 'f', 2)
                          .arg(s.maxContourMm * 1e3, 0, 'f', 2)
-                         .arg(s.rmsContourMm * 1e3, 0, 'f', 2),
+                         .arg(s.rmsContourMm * 1e3, 0, 'f', 2)
+                         .arg(s.samples)
+                         .arg(m_client ? m_client->subscribedRateHz() : 0),
                      false);
         emit finished(s);
     });

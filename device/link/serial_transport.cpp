@@ -24,6 +24,12 @@ SerialTransport::~SerialTransport() { close(); }
 
 void SerialTransport::open()
 {
+    if (m_port->isOpen()) {
+        // Already open (a protocol probe opened it for the backend that follows): reopening
+        // would reset a board that resets on DTR, and lose what it said. Say opened again.
+        QTimer::singleShot(0, this, [this] { emit opened(); });
+        return;
+    }
     m_port->setPortName(m_name);
     m_port->setBaudRate(m_baud);
     m_port->setDataBits(QSerialPort::Data8);

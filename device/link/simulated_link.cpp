@@ -105,4 +105,11 @@ SimulatedLink::SimulatedLink(const sim::MachineConfig& config, qint32 baud, QObj
     m_host->start();
 }
 
+SimulatedLink::SimulatedLink(std::unique_ptr<sim::SerialDevice> device, qint32 baud, QObject* parent)
+    : QObject(parent), m_pair(new LoopbackPair(baud, this))
+{
+    m_host = new SimulatorHost(std::move(device), m_pair->end(LoopbackPair::B), this);
+    m_host->start();
+}
+
 } // namespace dev

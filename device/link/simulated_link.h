@@ -65,10 +65,13 @@ class SimulatedLink : public QObject {
 public:
     SimulatedLink(proto::DeviceKind kind, qint32 baud, QObject* parent = nullptr);
     SimulatedLink(const sim::MachineConfig& config, qint32 baud, QObject* parent = nullptr);
+    /// Any simulated device on the device end: the GRBL personality (sim::GrblFirmware).
+    SimulatedLink(std::unique_ptr<sim::SerialDevice> device, qint32 baud, QObject* parent = nullptr);
 
     Transport* hostEnd() { return m_pair->end(LoopbackPair::A); }
     LoopbackPair& pair() { return *m_pair; }
     SimulatorHost& host() { return *m_host; }
+    /// The BenchPilot firmware's machine; only for a link made with a kind or a MachineConfig.
     sim::SimMachine& machine() { return m_host->firmware().machine(); }
 
 private:

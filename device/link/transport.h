@@ -6,8 +6,9 @@
 namespace dev {
 
 /// A byte pipe to an instrument. Opening is asynchronous: `opened()` or
-/// `failed()` follows `open()`. A transport that goes away under load (cable
-/// pulled, simulator gone) emits `lost()` once and is closed afterwards.
+/// `failed()` follows `open()`; open() on an open transport just says `opened()`
+/// again. A transport that goes away under load (cable pulled, simulator gone)
+/// emits `lost()` once and is closed afterwards.
 class Transport : public QObject {
     Q_OBJECT
 public:

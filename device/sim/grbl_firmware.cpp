@@ -33,6 +33,7 @@ GrblFirmware::GrblFirmware(const MachineConfig& config, Dialect dialect)
       m_settings(config, m_axes),
       m_motion(m_axes, dialect == Dialect::Grbl ? grbl::kGrblDefaultPlannerBlocks : 35),
       m_origin(static_cast<std::size_t>(m_axes), 0.0),
+      m_workOffset(static_cast<std::size_t>(m_axes), 0.0),
       m_rxSize(dialect == Dialect::Grbl ? grbl::kGrblDefaultRxBufferBytes : grbl::kGrblHalDefaultRxBufferBytes)
 {
     // Power-up: GRBL's step counters start at 0 wherever the axes stand.
@@ -80,6 +81,7 @@ void GrblFirmware::receive(const std::uint8_t* data, std::size_t size)
             continue;
         }
         m_rx.push_back(static_cast<char>(b));
+        m_maxRx = std::max(m_maxRx, m_rx.size());
     }
 }
 
@@ -111,6 +113,9 @@ void GrblFirmware::realtime(std::uint8_t b)
         }
         break;
     case grbl::rt::kJogCancel:
+        if (m_jogCancelsS.size() >= 64)
+            m_jogCancelsS.erase(m_jogCancelsS.begin());
+        m_jogCancelsS.push_back(m_machine.timeS());
         if (m_state == State::Jog && !m_jogCancel) {
             m_jogCancel = true;
             m_motion.hold();
@@ -265,6 +270,12 @@ void GrblFirmware::tick()
         }
     }
     applyPosition();
+    const bool moving = m_motion.moving();
+    if (m_wasMoving && !moving) {
+        m_lastMotionEndS = m_machine.timeS();
+        ++m_motionEnds;
+    }
+    m_wasMoving = moving;
     m_machine.tick();
     m_machine.takeEvents();  // the GRBL personality reports through its own lines
     if (!checkHardLimits()) {
@@ -285,8 +296,11 @@ void GrblFirmware::tick()
 void GrblFirmware::readLines()
 {
     // One line per tick (100 µs) at most: GRBL parses a line in about a millisecond, so this is
-    // a faster GRBL, not a different one. A line waits while the one before it is not done.
-    if (m_critical || m_pending.active)
+    // a faster GRBL, not a different one. A line waits while the one before it is not done,
+    // and while a feed hold or a jog cancel suspends GRBL's main loop (protocol_exec_rt_suspend):
+    // a line that arrives then is read once the machine is Idle again (or resumed) — so a jog
+    // line still in the buffer when 0x85 arrives runs after the cancel, as on real GRBL.
+    if (m_critical || m_pending.active || m_state == State::Hold || m_jogCancel)
         return;
     while (!m_rx.empty()) {
         const char c = m_rx.front();
@@ -302,8 +316,9 @@ void GrblFirmware::readLines()
                 executeLine(line);
             return;
         }
-        // GRBL's line buffer holds 79 characters after its pre-parser drops spaces.
-        if (c == ' ' || c == '\t')
+        // GRBL's line buffer holds 79 characters after its pre-parser drops spaces and every other
+        // control character (protocol.c: "c <= ' '").
+        if (static_cast<unsigned char>(c) <= ' ')
             continue;
         if (m_line.size() >= grbl::kMaxLineChars)
             m_lineOverflow = true;

@@ -60,8 +60,18 @@ public:
     int alarmCode() const { return m_alarm; }
     /// GRBL machine position (MPos) in mm, one per GRBL axis.
     const std::vector<double>& machinePositionMm() const { return m_motion.positionMm(); }
+    /// The G54 work offset (WCO): work position = machine position − offset.
+    const std::vector<double>& workOffsetMm() const { return m_workOffset; }
     const std::string& axisLetters() const { return m_letters; }
     const std::vector<OutputEvent>& outputEvents() const { return m_outputs; }
+    /// For tests that time a stop on the simulator's clock: when a 0x85 (jog cancel) last
+    /// arrived (−1: never), when the motion last came to rest, and how many times it did.
+    double lastJogCancelAtS() const { return m_jogCancelsS.empty() ? -1 : m_jogCancelsS.back(); }
+    const std::vector<double>& jogCancelTimesS() const { return m_jogCancelsS; }
+    /// The most bytes the receive buffer ever held (for tests of the host's character counting).
+    std::size_t maxRxBytesQueued() const { return m_maxRx; }
+    double lastMotionEndAtS() const { return m_lastMotionEndS; }
+    int motionEnds() const { return m_motionEnds; }
     std::size_t rxBufferBytes() const { return m_rxSize; }
     std::size_t rxBytesQueued() const { return m_rx.size(); }
     std::uint64_t lostRxBytes() const { return m_lostRx; }
@@ -103,6 +113,7 @@ private:
     GrblMotion m_motion;
     GrblModalState m_modal;
     std::vector<double> m_origin;  ///< SimMachine reference (machine coordinates) where MPos is 0
+    std::vector<double> m_workOffset;  ///< G54 (G10 L2/L20), mm per axis; kept through resets like GRBL's EEPROM copy
 
     State m_state = State::Idle;
     int m_alarm = 0;
@@ -138,6 +149,11 @@ private:
     std::string m_out;
     std::vector<OutputEvent> m_outputs;
     int m_reportCount = 0;         ///< WCO in the first report after a reset and every 10th
+    std::vector<double> m_jogCancelsS;  ///< bounded: the last 64
+    double m_lastMotionEndS = -1;
+    std::size_t m_maxRx = 0;
+    int m_motionEnds = 0;
+    bool m_wasMoving = false;
 };
 
 } // namespace sim

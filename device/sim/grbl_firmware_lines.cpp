@@ -155,7 +155,7 @@ int GrblFirmware::jogLine(const std::string& command)
 {
     if (m_state != State::Idle && m_state != State::Jog)
         return err::kIdleError;
-    GrblParse p = parseGrblJog(command, m_modal, m_motion.plannedEndMm(), m_letters);
+    GrblParse p = parseGrblJog(command, m_modal, m_motion.plannedEndMm(), m_letters, m_workOffset);
     if (p.error)
         return p.error;
     // A jog beyond the travel is refused, not alarmed: the document's rule for jogs.
@@ -173,10 +173,16 @@ int GrblFirmware::jogLine(const std::string& command)
 int GrblFirmware::gcodeLine(const std::string& line)
 {
     GrblModalState modal = m_modal;
-    GrblParse p = parseGrblLine(line, modal, m_motion.plannedEndMm(), m_letters, m_dialect == Dialect::GrblHal);
+    GrblParse p = parseGrblLine(line, modal, m_motion.plannedEndMm(), m_letters, m_dialect == Dialect::GrblHal, m_workOffset);
     if (p.error)
         return p.error;
     const GrblBlock& b = p.block;
+    if (b.kind == GrblBlock::Kind::SetWorkOffset) {
+        m_modal = modal;
+        m_workOffset = b.targetMm;
+        m_reportCount = 0;  // GRBL reports a changed WCO in the next status report
+        return 0;
+    }
     std::vector<std::vector<double>> points;
     if (b.kind == GrblBlock::Kind::Line)
         points = {b.targetMm};

@@ -42,7 +42,10 @@ void GrblFirmware::statusReport()
     if (m_state == State::Home)
         for (int i = 0; i < m_machine.axisCount(); ++i)
             pos[static_cast<std::size_t>(i)] = m_machine.axis(i).reference() - m_origin[static_cast<std::size_t>(i)];
-    // WCO is always 0 here (no G10/G92), so WPos = MPos.
+    // WPos = MPos − WCO (G54 only: no G92, no tool length offset here).
+    if (!m_settings.reportMachinePosition())
+        for (std::size_t i = 0; i < pos.size() && i < m_workOffset.size(); ++i)
+            pos[i] -= m_workOffset[i];
     r += m_settings.reportMachinePosition() ? "|MPos:" : "|WPos:";
     r += numbers(pos);
     if (m_settings.reportBuffers())
@@ -61,7 +64,7 @@ void GrblFirmware::statusReport()
     // never beside WCO, as the interface document describes.
     const int n = m_reportCount++;
     if (n % 10 == 0) {
-        r += "|WCO:" + numbers(std::vector<double>(static_cast<std::size_t>(m_axes), 0.0));
+        r += "|WCO:" + numbers(m_workOffset);
     } else if (n % 10 == 1) {
         r += "|Ov:100,100,100";
         bool flood = false;
@@ -102,7 +105,8 @@ void GrblFirmware::parserState()
 void GrblFirmware::parameters()
 {
     const std::string zero = numbers(std::vector<double>(static_cast<std::size_t>(m_axes), 0.0));
-    for (const char* g : {"G54", "G55", "G56", "G57", "G58", "G59", "G28", "G30", "G92"})
+    send("[G54:" + numbers(m_workOffset) + "]");
+    for (const char* g : {"G55", "G56", "G57", "G58", "G59", "G28", "G30", "G92"})
         send(std::string("[") + g + ":" + zero + "]");
     send("[TLO:0.000]");
     send("[PRB:" + zero + ":0]");

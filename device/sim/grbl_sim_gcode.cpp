@@ -94,10 +94,10 @@ bool take(Words& w, char letter, double& out)
     return true;
 }
 
-/// Reads the axis words of `letters` into `target` (absolute or relative to `from`, in mm).
-/// False when none was given.
+/// Reads the axis words of `letters` into `target` (absolute work coordinates shifted by the
+/// work offset into machine coordinates, or relative to `from`, in mm). False when none was given.
 bool axisTarget(Words& w, std::string_view letters, bool relative, bool inches, const std::vector<double>& from,
-                std::vector<double>& target)
+                const std::vector<double>& offset, std::vector<double>& target)
 {
     target = from;
     bool any = false;
@@ -105,7 +105,7 @@ bool axisTarget(Words& w, std::string_view letters, bool relative, bool inches, 
     for (std::size_t i = 0; i < letters.size() && i < target.size(); ++i) {
         double v = 0;
         if (take(w, letters[i], v)) {
-            target[i] = relative ? from[i] + v * k : v * k;
+            target[i] = relative ? from[i] + v * k : v * k + (i < offset.size() ? offset[i] : 0.0);
             any = true;
         }
     }
@@ -123,7 +123,7 @@ bool hasAxisWord(const Words& w, std::string_view letters)
 } // namespace
 
 GrblParse parseGrblLine(std::string_view line, GrblModalState& state, const std::vector<double>& pos,
-                        std::string_view axisLetters, bool grblHal)
+                        std::string_view axisLetters, bool grblHal, const std::vector<double>& workOffset)
 {
     GrblParse r;
     std::vector<Word> ws;
@@ -133,14 +133,15 @@ GrblParse parseGrblLine(std::string_view line, GrblModalState& state, const std:
     if ((r.error = collect(ws, w)))
         return r;
     for (const auto& [letter, value] : w.values)
-        if (axisLetters.find(letter) == std::string_view::npos && std::string_view("FIJNPRS").find(letter) == std::string_view::npos)
+        if (axisLetters.find(letter) == std::string_view::npos && std::string_view("FIJLNPRS").find(letter) == std::string_view::npos)
             return r.error = err::kUnsupportedCommand, r;
     GrblModalState next = state;
     GrblBlock& b = r.block;
     int motion = -1;
-    bool dwell = false;
+    bool dwell = false, setOffset = false;
     for (const int g : w.g) {
         switch (g) {
+        case 100: setOffset = true; break;
         case 0: case 10: case 20: case 30:
             if (motion >= 0)
                 return r.error = err::kModalGroupViolation, r;
@@ -193,7 +194,28 @@ GrblParse parseGrblLine(std::string_view line, GrblModalState& state, const std:
     if (b.machineCoordinates && next.motion > 1)
         return r.error = 30, r;
 
-    if (dwell) {
+    if (setOffset) {
+        // G10 L2 P<n>: the offset itself; G10 L20 P<n>: the offset that makes the present
+        // position read the given values. P0 is the active system, P1 G54: the only one here.
+        double l = 0, pNumber = 0;
+        if (motion >= 0 || dwell)
+            return r.error = err::kAxisCommandConflict, r;
+        if (!take(w, 'L', l) || !take(w, 'P', pNumber))
+            return r.error = err::kValueWordMissing, r;
+        if (pNumber != std::floor(pNumber) || pNumber < 0)
+            return r.error = err::kCommandValueNotInteger, r;
+        if ((l != 2 && l != 20) || pNumber > 1)
+            return r.error = err::kUnsupportedCommand, r;  // G55–G59 and L1: not simulated
+        b.kind = GrblBlock::Kind::SetWorkOffset;
+        b.targetMm = workOffset;
+        b.targetMm.resize(pos.size(), 0.0);
+        const double k = next.inches ? grbl::kMmPerInch : 1.0;
+        for (std::size_t i = 0; i < axisLetters.size() && i < pos.size(); ++i) {
+            double word = 0;
+            if (take(w, axisLetters[i], word))
+                b.targetMm[i] = l == 2 ? word * k : pos[i] - word * k;
+        }
+    } else if (dwell) {
         if (motion >= 0 || hasAxisWord(w, axisLetters))
             return r.error = err::kAxisCommandConflict, r;
         if (!take(w, 'P', v))
@@ -206,7 +228,8 @@ GrblParse parseGrblLine(std::string_view line, GrblModalState& state, const std:
         if (next.motion >= 2 && !w.values.count('X') && !w.values.count('Y'))
             return r.error = 32, r;
         const bool relative = next.relative && !b.machineCoordinates;
-        axisTarget(w, axisLetters, relative, next.inches, pos, b.targetMm);
+        axisTarget(w, axisLetters, relative, next.inches, pos, b.machineCoordinates ? std::vector<double>{} : workOffset,
+                   b.targetMm);
         b.feedMmMin = next.feedMmMin;
         if (next.motion == 0) {
             b.kind = GrblBlock::Kind::Line;
@@ -247,7 +270,7 @@ GrblParse parseGrblLine(std::string_view line, GrblModalState& state, const std:
 }
 
 GrblParse parseGrblJog(std::string_view command, const GrblModalState& state, const std::vector<double>& pos,
-                       std::string_view axisLetters)
+                       std::string_view axisLetters, const std::vector<double>& workOffset)
 {
     GrblParse r;
     std::vector<Word> ws;
@@ -280,7 +303,7 @@ GrblParse parseGrblJog(std::string_view command, const GrblModalState& state, co
         return r.error = err::kNegativeValue, r;
     take(w, 'N', n);
     GrblBlock& b = r.block;
-    if (!axisTarget(w, axisLetters, relative && !machine, inches, pos, b.targetMm))
+    if (!axisTarget(w, axisLetters, relative && !machine, inches, pos, machine ? std::vector<double>{} : workOffset, b.targetMm))
         return r.error = err::kNoAxisWords, r;
     b.kind = GrblBlock::Kind::Line;
     b.feedMmMin = inches ? f * grbl::kMmPerInch : f;

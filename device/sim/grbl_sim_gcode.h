@@ -3,6 +3,7 @@
 // needs, with GRBL 1.1's modal state and its error codes for what it refuses.
 //   motion   G0 G1 G2 G3 (centre form I J; the R form is refused), G4 P<seconds>
 //   modes    G17 G20 G21 G53 G54 G90 G91 G94; F in units per minute
+//   offsets  G10 L2 / L20 with P0 or P1: the G54 work offset (the only coordinate system here)
 //   outputs  M8 M9 (coolant), M62–M65 P<n> (grblHAL only), M3 M5 accepted and ignored
 //   words    N (line number), S accepted
 // Everything else is error:20, as on a GRBL built without it. Positions come out in mm
@@ -23,11 +24,11 @@ struct GrblModalState {
 };
 
 struct GrblBlock {
-    enum class Kind { None, Line, Arc, Dwell, Output };
+    enum class Kind { None, Line, Arc, Dwell, Output, SetWorkOffset };
     Kind kind = Kind::None;
     bool rapid = false;
     bool machineCoordinates = false;   ///< G53
-    std::vector<double> targetMm;      ///< absolute work = machine coordinates (WCO is 0), one per axis
+    std::vector<double> targetMm;      ///< absolute machine coordinates, one per axis (SetWorkOffset: the new G54 offset)
     bool clockwise = false;            ///< G2
     double centreMm[2] = {0, 0};       ///< absolute XY centre of an arc
     double feedMmMin = 0;
@@ -48,14 +49,16 @@ struct GrblParse {
 };
 
 /// Parses one line (without '\n') against `state`, updating it only when the line is
-/// accepted. `positionMm`: where the previous motion ends, per axis. `axisLetters` e.g. "XYZA".
+/// accepted. `positionMm`: where the previous motion ends, per axis, in machine coordinates.
+/// `workOffsetMm`: the G54 offset (work = machine − offset); empty means none. `axisLetters`
+/// e.g. "XYZA".
 GrblParse parseGrblLine(std::string_view line, GrblModalState& state, const std::vector<double>& positionMm,
-                        std::string_view axisLetters, bool grblHal);
+                        std::string_view axisLetters, bool grblHal, const std::vector<double>& workOffsetMm = {});
 
 /// "$J=" jogs: `command` is what follows '='. G20/G21/G90/G91/G53 apply to this line only;
 /// anything but them, axis words, F and N is error:16; F is required (error:22).
 GrblParse parseGrblJog(std::string_view command, const GrblModalState& state, const std::vector<double>& positionMm,
-                       std::string_view axisLetters);
+                       std::string_view axisLetters, const std::vector<double>& workOffsetMm = {});
 
 /// Line after GRBL's pre-parser: spaces and comments "(…)" and ";…" removed, letters upper case.
 std::string grblCleanLine(std::string_view line);

@@ -10,8 +10,10 @@ namespace words::areas {
 
 // Sentences: the id starts with the area's prefix.
 QString capability(const msg::Message& m);  ///< "capability."
+QString grblText(const msg::Message& m);    ///< "grbl." (the GRBL backend, docs/grbl.md)
 
 // Terms: a null QString for a term id the area does not know.
 QString capabilityTerm(const std::string& id);  ///< "instrument.", "capability.because."
+QString grblTerm(const std::string& id);        ///< "capability.because.grbl_*", "capability.because.no_*_in_profile", "grbl.status."
 
 } // namespace words::areas

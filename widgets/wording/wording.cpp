@@ -16,10 +16,12 @@ using TermFn = QString (*)(const std::string&);
 /// Which area words which ids. Longest prefix first where prefixes nest.
 const std::pair<const char*, SentenceFn> kSentences[] = {
     {"capability.", &areas::capability},
+    {"grbl.", &areas::grblText},
 };
 
 const TermFn kTerms[] = {
     &areas::capabilityTerm,
+    &areas::grblTerm,
 };
 
 bool startsWith(const std::string& s, const char* prefix)

@@ -87,7 +87,8 @@ std::pair<double, double> jogLimitsAlong(const std::vector<double>& unit, const 
     return {v, acc};
 }
 
-ContinuousJog::ContinuousJog(const JogPlan& plan, std::string axes, std::vector<double> unit) : m_plan(plan)
+namespace {
+std::string segmentLineOf(const JogPlan& plan, const std::string& axes, const std::vector<double>& unit)
 {
     double norm = 0;
     for (const double u : unit)
@@ -97,8 +98,21 @@ ContinuousJog::ContinuousJog(const JogPlan& plan, std::string axes, std::vector<
     for (std::size_t i = 0; i < axes.size() && i < unit.size() && norm > 0; ++i)
         if (std::fabs(unit[i]) > 1e-12)
             deltas.push_back({axes[i], unit[i] / norm * plan.segmentMm});
-    if (plan.feasible)
-        m_line = jogLine(deltas, plan.feedMmMin).text;  // empty when refused: the jog then sends nothing
+    return plan.feasible ? jogLine(deltas, plan.feedMmMin).text : std::string();  // empty when refused: nothing is sent
+}
+} // namespace
+
+ContinuousJog::ContinuousJog(const JogPlan& plan, std::string axes, std::vector<double> unit)
+    : m_plan(plan), m_line(segmentLineOf(plan, axes, unit))
+{
+}
+
+void ContinuousJog::retarget(const JogPlan& plan, const std::string& axes, const std::vector<double>& unit)
+{
+    m_plan = plan;
+    m_line = segmentLineOf(plan, axes, unit);
+    if (m_line.empty())
+        m_active = false;
 }
 
 std::vector<std::string> ContinuousJog::start(double nowS)

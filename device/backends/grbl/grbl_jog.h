@@ -72,6 +72,7 @@ class ContinuousJog {
 public:
     /// `axes`: axis letters; `unit`: the direction, one component per letter (normalised here).
     ContinuousJog(const JogPlan& plan, std::string axes, std::vector<double> unit);
+    const JogPlan& plan() const { return m_plan; }
 
     /// First lines, at the press.
     std::vector<std::string> start(double nowS);
@@ -79,6 +80,10 @@ public:
     std::vector<std::string> tick(double nowS);
     /// The release: the byte to send at once (0x85). Nothing more is sent afterwards.
     std::uint8_t stop();
+    /// A new direction or speed while held (a joystick moving): later lines go the new way, at
+    /// the new plan's speed and length; what is already queued runs out first (at most the old
+    /// plan's aheadMax), so the change lands within the stop budget without a cancel.
+    void retarget(const JogPlan& plan, const std::string& axes, const std::vector<double>& unit);
 
     bool active() const { return m_active; }
     /// Motion still queued ahead of the machine (the host's estimate), seconds at jog speed.

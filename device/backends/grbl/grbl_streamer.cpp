@@ -68,6 +68,20 @@ std::optional<Streamer::Ack> Streamer::acknowledge(bool ok, int errorCode)
     return Ack{std::move(e.line), e.tag, ok, ok ? 0 : errorCode};
 }
 
+std::vector<std::uint64_t> Streamer::removeQueued(const std::function<bool(std::uint64_t tag)>& drop)
+{
+    std::vector<std::uint64_t> removed;
+    std::deque<Entry> kept;
+    for (auto& e : m_queue) {
+        if (drop(e.tag))
+            removed.push_back(e.tag);
+        else
+            kept.push_back(std::move(e));
+    }
+    m_queue.swap(kept);
+    return removed;
+}
+
 std::vector<Streamer::Ack> Streamer::softReset(bool dropQueue)
 {
     std::vector<Ack> lost;

@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -60,6 +61,9 @@ public:
     /// After an error: start sending again / forget what is still queued.
     void resume() { m_stopped = false; }
     void clearQueue() { m_queue.clear(); }
+    /// Forgets the queued (not yet written) lines whose tag `drop` picks; returns their tags.
+    /// Lines in flight stay: the device has them. (A jog cancel drops the segments not sent.)
+    std::vector<std::uint64_t> removeQueued(const std::function<bool(std::uint64_t tag)>& drop);
     void setStopOnError(bool stop) { m_stopOnError = stop; }
 
     bool stopped() const { return m_stopped; }

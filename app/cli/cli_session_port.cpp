@@ -1,0 +1,77 @@
+// CliSession on a serial port (or benchpilot-sim's pty): which protocol the port speaks — the
+// machine profile says, or a probe asks (dev::ProtocolProbe) — and the backend that speaks it
+// behind the session's proxy: the BenchPilot client, or the GRBL client wired by --profile (or
+// the default wiring of --instrument).
+#include "cli_session.h"
+
+#include "device/backends/benchpilot/benchpilot_client.h"
+#include "device/backends/grbl/client/grbl_client.h"
+#include "device/backends/protocol_probe.h"
+#include "device/files/machine_profile_file.h"
+
+#include <QCoreApplication>
+
+namespace cli {
+
+namespace {
+QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+QString kindWord(proto::DeviceKind k) { return k == proto::DeviceKind::Stage ? tr("stage") : tr("analyzer"); }
+} // namespace
+
+bool CliSession::choosePortBackend(dev::Transport* transport)
+{
+    std::optional<files::MachineProfile> profile;
+    if (!m_opt.profile.isEmpty()) {
+        files::MachineProfile p;
+        QString error;
+        if (!files::loadMachineProfileFile(m_opt.profile, &p, &error)) {
+            report(tr("--profile: %1").arg(error));
+            return false;
+        }
+        profile = p;
+    }
+    std::optional<proto::DeviceKind> asked;
+    if (!m_opt.instrument.isEmpty())
+        asked = m_opt.instrument == QLatin1String("stage") ? proto::DeviceKind::Stage : proto::DeviceKind::Analyzer;
+    if (asked && profile && profile->instrument != *asked) {
+        report(tr("--profile %1 is for the %2, but --instrument says %3").arg(m_opt.profile, kindWord(profile->instrument), kindWord(*asked)));
+        return false;
+    }
+    auto protocol = profile ? profile->protocol : files::MachineProfile::Protocol::Auto;
+    dev::ProbeResult found;
+    if (protocol == files::MachineProfile::Protocol::Auto) {
+        dev::ProtocolProbe probe(transport);
+        probe.start();
+        spinUntil([&probe] { return probe.done(); }, dev::ProtocolProbe::kTotalMs + 2000);
+        if (!probe.done()) {
+            report(tr("cannot connect to %1: the protocol could not be detected").arg(transport->describe()));
+            return false;
+        }
+        found = probe.result();
+        if (found.protocol == dev::ProbeResult::Protocol::None) {
+            report(tr("cannot connect to %1: %2").arg(transport->describe(), found.error));
+            return false;
+        }
+        protocol = found.protocol == dev::ProbeResult::Protocol::Grbl ? files::MachineProfile::Protocol::Grbl
+                                                                      : files::MachineProfile::Protocol::BenchPilot;
+    }
+    if (protocol == files::MachineProfile::Protocol::BenchPilot) {
+        if (asked && found.kindKnown && found.kind != *asked) {
+            transport->close();
+            report(tr("%1 is a %2, not the %3 --instrument names").arg(transport->describe(), kindWord(found.kind), kindWord(*asked)));
+            return false;
+        }
+        m_benchPilot = new dev::BenchPilotClient;
+        m_client->setBackend(m_benchPilot);
+        m_benchPilot->setTransport(transport);
+        return true;
+    }
+    // GRBL names no instrument: the profile's, else --instrument's, else the analyzer.
+    const proto::DeviceKind kind = profile ? profile->instrument : asked.value_or(proto::DeviceKind::Analyzer);
+    auto* grbl = new dev::GrblClient(profile ? *profile : files::defaultProfile(kind), !profile.has_value());
+    m_client->setBackend(grbl);
+    grbl->setTransport(transport);
+    return true;
+}
+
+} // namespace cli

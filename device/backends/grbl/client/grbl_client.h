@@ -1,0 +1,317 @@
+#pragma once
+// The GRBL backend (docs/grbl.md): a GRBL 1.1 or grblHAL controller behind dev::Instrument,
+// over any byte transport. What it keeps:
+//  - Connection: a sync ("\n" then $G: the answer after its [GC:] line marks where this host's
+//    conversation begins, whatever was left in the buffers), then $I (firmware, planner blocks,
+//    receive buffer), $$ (rates, accelerations, travel, homing, inches) and $# (the G54 work
+//    offset); Ready after the first status report. A board that is still booting (an Arduino
+//    resets when its port opens) is given a second sync; one that never answers, or sends only
+//    bytes that are not GRBL lines, is refused within kConnectMs with a sentence that says so.
+//  - Status: '?' at the machine profile's rate (one query outstanding at a time), every field
+//    of the report read (grbl_status.h); positions in the instrument's work coordinates (G54),
+//    the pump's µL from its axis' mm. No byte for kSilenceMs while polling (homing and a
+//    critical alarm excepted, when GRBL does not answer) means the link is lost.
+//  - Lines: character counting against the receive buffer $I reported (grbl_streamer.h); realtime
+//    bytes outside the count; lines that write EEPROM (G10) sent alone. Every error:N and
+//    ALARM:N becomes a RequestError / DeviceEvent carrying grbl.error{code, line} /
+//    grbl.alarm{code} with its documented meaning; [MSG:], [GC:], [PRB:] and unknown lines are
+//    noted (Instrument::noted), never fatal.
+//  - Motion: absolute moves in G54 work coordinates (the analyzer's Z after X and Y), refused by
+//    the host beyond the machine travel (GRBL would answer with ALARM:2 and need a reset);
+//    MotionDone once the lines are acknowledged and a status report asked for afterwards shows
+//    Idle. Step jogs as $J=G91 G21 …; continuous jogs and the joystick as short $J segments kept
+//    a little ahead (grbl_jog.h), cancelled with 0x85 on release — and once more after a jog line
+//    that was still in GRBL's buffer when the cancel came, which GRBL runs after the cancel.
+//  - Homing with $H; where homing is disabled ($22=0, error:5), setZero() takes the present
+//    position as home (G10 L20 P1) on the operator's word. An alarm that loses the position
+//    (reset in motion, hard limit, homing failure) needs homing or unlock() ($X).
+//  - stop(): 0x85 for a jog; otherwise a feed hold, and once GRBL holds at rest (Hold:0) a soft
+//    reset that forgets the queue but keeps the position. estop(): feed hold and soft reset at
+//    once: GRBL stops dead and, if it was moving, loses its position (ALARM:3).
+//
+// Device time: GRBL has no clock; status().deviceTimeUs is the host's monotonic clock at the
+// arrival of the report.
+//
+// Only app/ and tests name this class; screens and runners see dev::Instrument.
+#include "device/backends/grbl/grbl_build_info.h"
+#include "device/backends/grbl/grbl_jog.h"
+#include "device/backends/grbl/grbl_lines.h"
+#include "device/backends/grbl/grbl_settings.h"
+#include "device/backends/grbl/grbl_status.h"
+#include "device/backends/grbl/grbl_streamer.h"
+#include "device/client/instrument.h"
+#include "device/files/machine_profile_file.h"
+#include "device/link/transport.h"
+
+#include <QElapsedTimer>
+#include <QHash>
+#include <QPointer>
+#include <QTimer>
+
+#include <deque>
+#include <functional>
+#include <map>
+#include <set>
+#include <optional>
+
+namespace dev {
+
+class GrblPathClient;
+
+class GrblClient : public Instrument {
+    Q_OBJECT
+public:
+    static constexpr int kConnectMs = 5000;   ///< no GRBL line within this: the connection fails
+    static constexpr int kResyncMs = 2000;    ///< a first sync unanswered (a board still booting): once more
+    static constexpr int kSilenceMs = 2500;   ///< no byte for this long while polling: the link is lost
+    static constexpr int kQueryRetryMs = 1000;  ///< a '?' unanswered this long is sent again
+    static constexpr int kStopMs = 5000;      ///< a stop or reset not confirmed within this is reported
+
+    /// `profile`: the wiring (docs/grbl.md). `lenient`: the profile is the default one, so a
+    /// pump axis the controller lacks is dropped rather than refused.
+    explicit GrblClient(const files::MachineProfile& profile, bool lenient = false, QObject* parent = nullptr);
+    ~GrblClient() override;
+
+    /// How long a connection may take before it is refused (kConnectMs unless a test is in a hurry).
+    void setConnectTimeoutMs(int ms) { m_connectTimeoutMs = ms; }
+
+    /// Not owned. Replacing the transport disconnects the old one first. A transport that is
+    /// already open (a protocol probe opened it) is used as it is: no second open.
+    void setTransport(Transport* transport);
+    Transport* transport() const { return m_transport; }
+    const files::MachineProfile& profile() const { return m_profile; }
+
+    // What the controller said about itself.
+    grbl::Firmware firmware() const { return m_firmware; }
+    const grbl::BuildInfo& buildInfo() const { return m_build; }
+    const grbl::Settings& settings() const { return m_settings; }
+    const grbl::MachineLimits& machineLimits() const { return m_limits; }
+    grbl::MachineState machineState() const { return m_tracker.state(); }
+    int alarmCode() const { return m_alarm; }
+    double pollHz() const { return m_profile.statusPollHz; }
+    /// The jog plan for a continuous jog of one axis at `speed` (axis units/s): what the GUI
+    /// quotes for the release stop and the overrun of a lost host.
+    grbl::JogPlan jogPlan(int axis, double speed) const;
+
+    // dev::Instrument
+    void connectLink() override;
+    void disconnectLink() override;
+    LinkState state() const override { return m_state; }
+    LinkStats stats() const override;
+    QString linkDescription() const override;
+    const DeviceIdentity& identity() const override { return m_identity; }
+    const InstrumentStatus& status() const override { return m_status; }
+    const QVector<SoftLimits>& softLimits() const override { return m_softLimits; }
+    Capabilities capabilities() const override;
+    void home(quint8 axisMask, Callback done = {}) override;
+    void move(const QVector<QPair<int, double>>& targets, bool relative, double speed = 0, Callback done = {}) override;
+    void jogStep(int axis, double delta, double speed = 0, Callback done = {}) override;
+    void startJog(int axis, double velocity) override;
+    void stopJog(int axis) override;
+    void stopAllJogs() override;
+    bool isJogging(int axis) const override;
+    void setJogVelocities(const std::map<int, double>& velocities, Callback done = {}) override;
+    int jogRefreshMs() const override;
+    void stop(quint8 axisMask = 0, Callback done = {}) override;
+    void estop(Callback done = {}) override;
+    void reset(Callback done = {}) override;
+    void setZero(quint8 axisMask, Callback done = {}) override;
+    void unlock(Callback done = {}) override;
+    void setSoftLimits(int axis, double min, double max, Callback done = {}) override;
+    void readStatus(StatusCallback done) override;
+    void dwell(double seconds, Callback done) override;
+    void pulseTrigger(double widthS, Callback done = {}) override;
+    void subscribe(const QVector<proto::ChannelRef>& channels, int rateHz, SubscribeCallback done = {}) override;
+    const QVector<proto::ChannelRef>& subscribedChannels() const override { return m_channels; }
+    int subscribedRateHz() const override { return m_rateHz; }
+    double toAxisUnits(const proto::ChannelRef& channel, std::int32_t value) const override;
+    PathClient* paths() override;
+    TuningClient* tuning() override { return nullptr; }
+
+    // ---- for the parts (GrblPathClient) ----------------------------------------------------
+    /// What became of one line: acknowledged (ack->ok, or error:N), or lost (nullopt) to a
+    /// reset or a dropped link.
+    using LineDone = std::function<void(const std::optional<grbl::Streamer::Ack>& ack)>;
+    /// Queues a line; false (and nothing queued) when the streamer refuses it (too long, a
+    /// control byte) or the link is not ready.
+    bool sendLine(const std::string& line, LineDone done);
+    void sendRealtime(std::uint8_t byte);
+    /// Feed hold, then once GRBL holds at rest a soft reset that flushes every queued line and
+    /// keeps the position; `done` when the controller is back (its banner), or with an error.
+    void holdThenFlush(Callback done);
+    /// Instrument position of GRBL's axes `gx` (mm), from the last report.
+    double instrumentValue(int axis, const std::vector<double>& workMm) const;
+    int grblIndexOf(int axis) const;
+    /// The controller's letter for instrument axis `axis` ('X', 'A', …); 0 when unmapped.
+    char grblLetterOf(int axis) const;
+    std::optional<double> feedMmMin() const { return m_tracker.feedMmMin(); }
+    const std::vector<double>& workPositionMm() const { return m_workMm; }
+    /// True when the streamer holds no line in flight or queued.
+    bool linesIdle() const;
+    quint64 nowUs() const;
+    /// A sentence for a person about a GRBL error answering `line` (also carried as detail).
+    static RequestError errorOf(int code, const std::string& line, const QString& what);
+
+signals:
+    /// A status report was applied (after statusChanged): for the parts.
+    void reportApplied(quint64 querySentUs);
+    /// The controller reset (its banner): everything queued was lost. `expected`: this host asked.
+    void controllerReset(bool expected);
+    /// ALARM:N arrived.
+    void alarmRaised(int code);
+
+protected:
+    msg::Message missingReason(Capability c) const override;
+
+private:
+    enum class Phase { Closed, Syncing, Identifying, Ready };
+    struct PendingLine {
+        LineDone done;
+        bool alone = false;  ///< writes EEPROM: nothing else in flight while it is
+    };
+
+    // grbl_client.cpp: link, handshake, lines.
+    void setState(LinkState s);
+    void onOpened();
+    void writeSync();
+    void onBytes(const QByteArray& bytes);
+    void onLine(const grbl::LineReader::Line& line);
+    void onAck(bool ok, int code);
+    void onBanner(const grbl::Banner& banner);
+    void onAlarm(int code);
+    void onDeviceMessage(const std::string& text);
+    void checkLink();
+    void startIdentify();
+    void finishIdentify();
+    void failConnect(const QString& why);
+    void linkGone(const QString& why);
+    void failAllLines(const QString& why);
+    /// The line's tag, or 0 when it cannot be sent.
+    std::uint64_t queueLine(const std::string& line, LineDone done, bool alone = false);
+    void pump();
+    void softReset(bool expected);
+    void note(msg::Message m);
+    // grbl_client_identity.cpp: identity, capabilities, coordinates.
+    bool buildIdentity(QString* why);
+    void updateTravel();
+    std::string axisLettersOfController() const;
+    double scaleOf(int axis) const;
+    // grbl_client_status.cpp: polling, status, events, telemetry.
+    void poll();
+    void sendQuery();
+    void onStatusReport(const grbl::StatusReport& r);
+    void applyParameters(const grbl::Line& l);
+    void emitEvent(proto::EventKind kind, int axis, double position, const QString& text = {}, msg::Message detail = {});
+    void settleMotion(quint64 askedUs, grbl::MachineState state);
+    void emitTelemetry(const std::vector<double>& workMm);
+    // grbl_client_commands.cpp: helpers.
+    void sendMotionLines(const std::vector<std::string>& lines, quint8 axes, const QString& what, Callback done);
+    bool established(int axis) const { return (m_established >> axis) & 1u; }
+    std::optional<RequestError> checkTarget(int axis, double target) const;
+    void finishStop(const std::optional<RequestError>& e);
+    // grbl_client_jog.cpp: continuous jog.
+    void updateJog();
+    void topUpJog();
+    void cancelJog();
+    void sendJogLines(const std::vector<std::string>& lines);
+    std::map<int, double> wantedJogVelocities() const;
+
+    files::MachineProfile m_profile;
+    bool m_lenient;
+    QPointer<Transport> m_transport;
+    QList<QMetaObject::Connection> m_transportConnections;
+    LinkState m_state = LinkState::Disconnected;
+    Phase m_phase = Phase::Closed;
+    QElapsedTimer m_clock;
+    QTimer m_pollTimer, m_linkTimer, m_jogTimer;
+
+    // The line protocol.
+    grbl::LineReader m_reader;
+    grbl::Streamer m_streamer;
+    std::deque<std::pair<std::string, std::uint64_t>> m_backlog;  ///< lines waiting for the streamer (behind an EEPROM line)
+    std::map<std::uint64_t, PendingLine> m_pending;               ///< by streamer tag
+    std::uint64_t m_nextTag = 1;
+    bool m_aloneInFlight = false;
+    bool m_modalReady = false;   ///< "G54 G17 G94" sent since the last reset
+    QString m_lostReason;        ///< why lines in flight were lost, for the commands that owned them
+    int m_expectedBanners = 0;   ///< soft resets this host sent whose banner has not come yet
+    quint64 m_bytesIn = 0, m_garbageLines = 0, m_unknownLines = 0, m_resets = 0;
+    qint64 m_lastRxMs = -1, m_connectStartMs = 0, m_syncSentMs = 0;
+    int m_syncAttempts = 0;
+    int m_connectTimeoutMs = kConnectMs;
+    bool m_syncSawParserState = false;
+    bool m_sawGrblLine = false;
+
+    // What the controller is.
+    grbl::Firmware m_firmware = grbl::Firmware::Unknown;
+    std::string m_bannerVersion;
+    grbl::BuildInfo m_build;
+    grbl::Settings m_settings;
+    grbl::MachineLimits m_limits;
+    std::vector<double> m_g54Mm, m_g92Mm;
+    double m_tloMm = 0;
+    bool m_haveParameters = false;
+    DeviceIdentity m_identity;
+    struct AxisMap {
+        int grbl = -1;       ///< index into the controller's axes
+        double scale = 1;    ///< instrument units per GRBL mm (µL per mm for the pump)
+    };
+    QVector<AxisMap> m_map;  ///< per instrument axis
+    QVector<SoftLimits> m_softLimits;
+
+    // State.
+    grbl::StatusTracker m_tracker;
+    InstrumentStatus m_status;
+    std::vector<double> m_machineMm, m_workMm, m_wcoMm;
+    int m_alarm = 0;
+    bool m_critical = false;     ///< hard or soft limit alarm: GRBL hears nothing but a reset
+    bool m_homing = false;
+    bool m_estopLatched = false;
+    quint32 m_established = 0;   ///< instrument axes whose position is trusted (homed, unlocked, set here)
+    /// Send times of the '?' not answered yet, oldest first (a report answers the oldest: when
+    /// GRBL folds two queries into one report, later reports are dated conservatively early).
+    std::deque<quint64> m_querySent;
+    bool m_queryAgain = false;
+    bool m_firstReport = true;
+    struct StatusWaiter {
+        quint64 sinceUs;
+        StatusCallback done;
+    };
+    std::vector<StatusWaiter> m_statusWaiters;
+
+    // Motion the host commanded, for MotionDone / Stopped.
+    quint32 m_motionAxes = 0;      ///< instrument axes owing MotionDone
+    int m_motionLinesOpen = 0;     ///< their lines not yet acknowledged
+    quint64 m_motionAckUs = 0;     ///< when the last of them was acknowledged
+    std::vector<double> m_lastReportWork;
+    quint64 m_lastReportUs = 0;
+    // A stop in progress: feed hold, waiting for Hold:0, then the reset.
+    bool m_stopping = false;
+    bool m_stopResetSent = false;
+    quint64 m_stopAskedUs = 0;          ///< when the feed hold went out: reports asked later judge the hold
+    qint64 m_stopStartMs = 0;
+    std::vector<Callback> m_stopDone;
+    std::vector<Callback> m_resetDone;  ///< reset()/estop() waiting for the banner
+
+    // Continuous jog.
+    QHash<int, double> m_heldJogs;        ///< startJog: axis → velocity
+    std::map<int, double> m_stickJogs;    ///< setJogVelocities: axis → velocity
+    qint64 m_stickDeadlineMs = 0;
+    std::optional<grbl::ContinuousJog> m_jog;
+    std::vector<double> m_jogVelocityMmS; ///< per GRBL axis, the vector m_jog runs
+    int m_jogLinesOpen = 0;               ///< jog lines queued or in flight
+    std::set<std::uint64_t> m_jogTags;    ///< their tags
+    bool m_jogCancelling = false;
+    int m_jogLinesAtCancel = 0;           ///< jog lines unacknowledged when 0x85 went out
+    quint64 m_jogCancelSentUs = 0;
+    bool m_jogRefusedSaid = false;
+
+    // Telemetry from status reports.
+    QVector<proto::ChannelRef> m_channels;
+    int m_rateHz = 0;
+    std::uint32_t m_sampleIndex = 0;
+
+    GrblPathClient* m_paths;
+};
+
+} // namespace dev

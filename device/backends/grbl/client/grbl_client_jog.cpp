@@ -1,0 +1,251 @@
+// GrblClient, part 6: continuous jog and the joystick (the jogging document's method, with the
+// promises of grbl_jog.h). Held axes (startJog) and the joystick's velocities (setJogVelocities)
+// add up to one velocity vector over GRBL's axes; while it is not zero, short $J segments are
+// kept a little ahead of the machine — topped up on a timer and on every jog line's ok — and a
+// change of direction or speed changes the segments that follow. On release, 0x85 at once.
+//
+// A $J line that was still in GRBL's serial buffer when 0x85 arrived is read after the cancel
+// (GRBL's main loop is suspended while it decelerates) and starts a new jog. So the client
+// counts jog lines not yet acknowledged at the cancel, and when the last of them is answered,
+// sends 0x85 once more: the leftover is at most a few short segments, stopped within the budget.
+#include "device/backends/grbl/client/grbl_client.h"
+
+#include "device/backends/grbl/grbl_gcode.h"
+
+#include <QPointer>
+
+#include <cmath>
+
+namespace dev {
+
+namespace {
+/// The joystick's velocities stand this many refresh periods without renewal.
+constexpr int kStickRenewalPeriods = 4;
+} // namespace
+
+int GrblClient::jogRefreshMs() const { return std::max(5, static_cast<int>(std::lround(m_profile.jog.refreshS * 1000))); }
+
+bool GrblClient::isJogging(int axis) const
+{
+    if (m_heldJogs.contains(axis))
+        return true;
+    const auto it = m_stickJogs.find(axis);
+    return it != m_stickJogs.end() && it->second != 0;
+}
+
+void GrblClient::startJog(int axis, double velocity)
+{
+    if (axis < 0 || axis >= m_identity.axes.size() || !std::isfinite(velocity) || !isReady())
+        return;
+    m_jogRefusedSaid = false;
+    m_heldJogs[axis] = velocity;
+    updateJog();
+}
+
+void GrblClient::stopJog(int axis)
+{
+    if (!m_heldJogs.remove(axis))
+        return;
+    updateJog();
+}
+
+void GrblClient::stopAllJogs()
+{
+    if (m_heldJogs.isEmpty() && m_stickJogs.empty() && !m_jog)
+        return;
+    m_heldJogs.clear();
+    m_stickJogs.clear();
+    updateJog();
+}
+
+void GrblClient::setJogVelocities(const std::map<int, double>& velocities, Callback done)
+{
+    for (const auto& [axis, v] : velocities)
+        if (axis < 0 || axis >= m_identity.axes.size() || !std::isfinite(v)) {
+            refuse(done, RequestError::Kind::Invalid, tr("jog: bad axis or velocity"));
+            return;
+        }
+    if (!isReady()) {
+        refuse(done, RequestError::Kind::LinkDown, tr("jog not sent: the instrument is not connected"));
+        return;
+    }
+    for (const auto& [axis, v] : velocities) {
+        if (v == 0)
+            m_stickJogs.erase(axis);
+        else
+            m_stickJogs[axis] = v;
+    }
+    if (!m_stickJogs.empty())
+        m_jogRefusedSaid = false;
+    m_stickDeadlineMs = m_clock.elapsed() + kStickRenewalPeriods * jogRefreshMs();
+    updateJog();
+    if (done)
+        done(std::nullopt);
+}
+
+std::map<int, double> GrblClient::wantedJogVelocities() const
+{
+    std::map<int, double> v(m_stickJogs.begin(), m_stickJogs.end());
+    for (auto it = m_heldJogs.cbegin(); it != m_heldJogs.cend(); ++it)
+        v[it.key()] = it.value();
+    return v;
+}
+
+void GrblClient::updateJog()
+{
+    if (m_phase != Phase::Ready)
+        return;
+    // The wanted velocity per GRBL axis, mm/s.
+    std::vector<double> vMmS(m_limits.axes.size(), 0.0);
+    for (const auto& [axis, v] : wantedJogVelocities()) {
+        const int g = grblIndexOf(axis);
+        if (g >= 0 && g < static_cast<int>(vMmS.size()))
+            vMmS[static_cast<std::size_t>(g)] = v / scaleOf(axis);
+    }
+    double speed = 0;
+    for (const double v : vMmS)
+        speed += v * v;
+    speed = std::sqrt(speed);
+    if (speed == 0) {
+        if (m_jog)
+            cancelJog();
+        if (!m_jogCancelling)
+            m_jogTimer.stop();
+        return;
+    }
+    if (m_jogCancelling)
+        return;  // starts once the cancel has run out (onStatusReport calls back)
+    if (m_jog && m_jogVelocityMmS == vMmS)
+        return;
+    // Along the jog direction: the slowest axis' rate and acceleration bound the jog's.
+    std::vector<double> rates, accels;
+    for (const auto& l : m_limits.axes) {
+        rates.push_back(l.maxRateMmS);
+        accels.push_back(l.accelMmS2);
+    }
+    const auto [vmax, amax] = grbl::jogLimitsAlong(vMmS, rates, accels);
+    grbl::JogPlanInput in;
+    in.speedMmS = speed;
+    in.maxRateMmS = vmax;
+    in.accelMmS2 = amax;
+    in.plannerBlocks = m_build.plannerBlocksOrDefault();
+    in.refreshPeriodS = m_profile.jog.refreshS;
+    in.linkLatencyS = m_profile.jog.linkLatencyS;
+    in.stopBudgetS = m_profile.jog.stopBudgetS;
+    const grbl::JogPlan plan = grbl::planContinuousJog(in);
+    if (!plan.feasible) {
+        m_heldJogs.clear();
+        m_stickJogs.clear();
+        RequestError e;
+        e.kind = RequestError::Kind::Invalid;
+        e.message = tr("jog refused: even a creeping jog could not stop within %1 s with this link and refresh").arg(in.stopBudgetS);
+        e.detail = plan.problem;
+        emit requestFailed(e);
+        return;
+    }
+    std::vector<double> unit(vMmS);
+    for (double& u : unit)
+        u /= speed;
+    const std::string letters = axisLettersOfController();
+    if (plan.speedLimited)
+        note(msg::make("grbl.jog.speed_limited", {msg::real("asked", speed, msg::Unit::MmPerS), msg::real("speed", plan.speedMmS, msg::Unit::MmPerS),
+                                                  msg::real("budget", in.stopBudgetS, msg::Unit::S)}));
+    m_jogVelocityMmS = vMmS;
+    if (m_jog && m_jog->active()) {
+        m_jog->retarget(plan, letters, unit);
+        topUpJog();
+        return;
+    }
+    m_jog.emplace(plan, letters, unit);
+    sendJogLines(m_jog->start(m_clock.elapsed() / 1000.0));
+    m_jogTimer.start();
+}
+
+void GrblClient::topUpJog()
+{
+    if (!m_stickJogs.empty() && m_clock.elapsed() > m_stickDeadlineMs) {
+        m_stickJogs.clear();
+        updateJog();
+        return;
+    }
+    if (!m_jog || !m_jog->active() || m_jogCancelling)
+        return;
+    sendJogLines(m_jog->tick(m_clock.elapsed() / 1000.0));
+}
+
+void GrblClient::sendJogLines(const std::vector<std::string>& lines)
+{
+    const QPointer<GrblClient> self(this);
+    for (const auto& line : lines) {
+        ++m_jogLinesOpen;
+        auto tagHolder = std::make_shared<std::uint64_t>(0);
+        const std::uint64_t tag = queueLine(line, [self, tagHolder](const std::optional<grbl::Streamer::Ack>& a) {
+            if (!self)
+                return;
+            self->m_jogTags.erase(*tagHolder);
+            self->m_jogLinesOpen = std::max(0, self->m_jogLinesOpen - 1);
+            if (a && !a->ok) {
+                // error:15 at the travel's end, error:8 while something else runs: the hold ends
+                // here, said once.
+                const bool say = !self->m_jogRefusedSaid;
+                self->m_jogRefusedSaid = true;
+                self->m_heldJogs.clear();
+                self->m_stickJogs.clear();
+                if (self->m_jog)
+                    self->cancelJog();
+                if (say)
+                    emit self->requestFailed(errorOf(a->errorCode, a->line, tr("jog")));
+            }
+            if (self->m_jogCancelling) {
+                // The last jog line that was in flight at the cancel: if GRBL read it after the
+                // cancel it is jogging again — cancel once more.
+                if (self->m_jogLinesAtCancel > 0 && self->m_jogLinesOpen == 0) {
+                    self->m_jogLinesAtCancel = 0;
+                    self->m_jogCancelSentUs = self->nowUs();
+                    self->sendRealtime(grbl::rt::kJogCancel);
+                    self->sendQuery();
+                }
+                return;
+            }
+            if (a && a->ok)
+                self->topUpJog();  // GRBL planned a segment: room for the next
+        });
+        if (!tag) {
+            --m_jogLinesOpen;
+            break;
+        }
+        *tagHolder = tag;
+        m_jogTags.insert(tag);
+    }
+}
+
+void GrblClient::cancelJog()
+{
+    if (m_jog)
+        m_jog->stop();
+    m_jog.reset();
+    m_jogVelocityMmS.clear();
+    // Segments not written yet are dropped here; those already in GRBL's buffer are counted.
+    auto isJog = [this](std::uint64_t tag) { return m_jogTags.count(tag) != 0; };
+    std::vector<std::uint64_t> dropped = m_streamer.removeQueued(isJog);
+    for (auto it = m_backlog.begin(); it != m_backlog.end();) {
+        if (isJog(it->second)) {
+            dropped.push_back(it->second);
+            it = m_backlog.erase(it);
+        } else {
+            ++it;
+        }
+    }
+    for (const std::uint64_t tag : dropped) {
+        m_pending.erase(tag);
+        m_jogTags.erase(tag);
+    }
+    m_jogLinesOpen = static_cast<int>(m_jogTags.size());
+    m_jogCancelling = true;
+    m_jogLinesAtCancel = m_jogLinesOpen;
+    m_jogCancelSentUs = nowUs();
+    sendRealtime(grbl::rt::kJogCancel);
+    sendQuery();
+}
+
+} // namespace dev

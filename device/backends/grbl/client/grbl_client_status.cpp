@@ -1,0 +1,297 @@
+// GrblClient, part 4: what the client keeps up to date — the '?' poll, each status report
+// turned into the instrument's status, the events GRBL never sends (MotionDone, Stopped) told
+// from the reports, alarms, the $# offsets, readStatus() and the telemetry made of reports.
+#include "device/backends/grbl/client/grbl_client.h"
+
+#include "device/backends/grbl/grbl_codes.h"
+
+#include <QCoreApplication>
+
+#include <cmath>
+
+namespace dev {
+
+namespace {
+constexpr std::size_t kMaxQueriesOutstanding = 3;
+}
+
+void GrblClient::poll()
+{
+    if (m_phase != Phase::Ready)
+        return;
+    if (m_querySent.empty()) {
+        sendQuery();
+        return;
+    }
+    // An unanswered '?' (an EEPROM write stalled the serial interrupt, or GRBL is homing) is
+    // asked again; the silence check decides when enough is enough.
+    if (nowUs() - m_querySent.back() > static_cast<quint64>(kQueryRetryMs) * 1000 && m_querySent.size() < kMaxQueriesOutstanding)
+        sendQuery();
+}
+
+void GrblClient::sendQuery()
+{
+    if (m_querySent.size() >= kMaxQueriesOutstanding)
+        m_querySent.pop_front();
+    m_querySent.push_back(nowUs());
+    sendRealtime(grbl::rt::kStatusQuery);
+}
+
+void GrblClient::readStatus(StatusCallback done)
+{
+    if (m_phase != Phase::Ready) {
+        RequestError e;
+        e.kind = RequestError::Kind::LinkDown;
+        e.message = tr("status not read: the instrument is not connected");
+        if (done)
+            done(e, m_status);
+        return;
+    }
+    const quint64 since = nowUs();
+    m_statusWaiters.push_back({since, std::move(done)});
+    if (m_querySent.empty())
+        sendQuery();
+    else
+        m_queryAgain = true;  // the query in flight was asked before this call: ask once more
+}
+
+void GrblClient::applyParameters(const grbl::Line& l)
+{
+    // $# answers: [G54:x,y,z] … [G92:x,y,z] [TLO:z] (report units: inches with $13=1).
+    const double k = m_tracker.reportInches() ? grbl::kMmPerInch : 1.0;
+    auto vec = [&](std::vector<double>& into) {
+        if (const auto v = grbl::parseNumberList(l.payload, grbl::kMaxStatusAxes)) {
+            into = *v;
+            for (double& x : into)
+                x *= k;
+        }
+    };
+    if (l.tag == "G54")
+        vec(m_g54Mm);
+    else if (l.tag == "G92")
+        vec(m_g92Mm);
+    else if (l.tag == "TLO") {
+        if (const auto v = grbl::parseNumber(l.payload))
+            m_tloMm = *v * k;
+        // TLO is the last line of the offsets: the work offset is known now.
+        m_haveParameters = true;
+        if (!m_tracker.haveWorkOffset()) {
+            m_wcoMm = m_g54Mm;
+            for (std::size_t i = 0; i < m_wcoMm.size() && i < m_g92Mm.size(); ++i)
+                m_wcoMm[i] += m_g92Mm[i];
+            if (m_wcoMm.size() > 2)
+                m_wcoMm[2] += m_tloMm;
+        }
+        if (!m_map.isEmpty())
+            updateTravel();
+    }
+}
+
+void GrblClient::emitEvent(proto::EventKind kind, int axis, double position, const QString& text, msg::Message detail)
+{
+    DeviceEvent e;
+    e.kind = kind;
+    e.axis = axis;
+    e.position = position;
+    e.deviceTimeUs = nowUs();
+    e.text = text;
+    e.hostTime = QDateTime::currentDateTime();
+    e.detail = std::move(detail);
+    emit eventReceived(e);
+}
+
+void GrblClient::onStatusReport(const grbl::StatusReport& r)
+{
+    const quint64 askedUs = m_querySent.empty() ? 0 : m_querySent.front();
+    if (!m_querySent.empty())
+        m_querySent.pop_front();
+    if (!m_tracker.update(r))
+        return;
+    // Work and machine position: from the report and the last WCO (the report's own, or $#'s).
+    if (m_tracker.haveWorkOffset())
+        m_wcoMm = m_tracker.workOffsetMm();
+    std::vector<double> pos = r.position;
+    const double k = m_tracker.reportInches() ? grbl::kMmPerInch : 1.0;
+    for (double& x : pos)
+        x *= k;
+    m_wcoMm.resize(pos.size(), 0.0);
+    m_machineMm = pos;
+    m_workMm = pos;
+    for (std::size_t i = 0; i < pos.size(); ++i) {
+        if (r.positionIsMachine)
+            m_workMm[i] = pos[i] - m_wcoMm[i];
+        else
+            m_machineMm[i] = pos[i] + m_wcoMm[i];
+    }
+    const grbl::MachineState st = r.state;
+    if (m_firstReport) {
+        // What can be trusted at connection: a controller with homing that is not in alarm was
+        // homed (or unlocked) before; without homing nothing says where home is.
+        m_firstReport = false;
+        m_established = (st != grbl::MachineState::Alarm && m_limits.homingEnabled) ? (1u << m_map.size()) - 1 : 0;
+        updateTravel();
+    }
+    if (st != grbl::MachineState::Alarm)
+        m_critical = false;
+    const bool active = st == grbl::MachineState::Run || st == grbl::MachineState::Jog || st == grbl::MachineState::Home
+                        || (st == grbl::MachineState::Hold && r.subState != 0);
+    const quint64 now = nowUs();
+    m_status.deviceTimeUs = now;
+    m_status.estop = m_estopLatched;
+    m_status.positionLost = st == grbl::MachineState::Alarm;
+    m_status.fault = st == grbl::MachineState::Alarm;
+    const std::string letters = axisLettersOfController();
+    for (int i = 0; i < m_status.axes.size(); ++i) {
+        AxisReadout& a = m_status.axes[i];
+        const int g = grblIndexOf(i);
+        const double v = instrumentValue(i, m_workMm);
+        const bool changed = g < static_cast<int>(m_lastReportWork.size())
+                             && std::fabs(m_lastReportWork[static_cast<std::size_t>(g)] - m_workMm[static_cast<std::size_t>(g)]) > 1e-6;
+        a.commanded = v;
+        a.measured = v;  // GRBL reports its step count: there is no separate measurement
+        a.homed = established(i) && st != grbl::MachineState::Alarm;
+        a.homing = st == grbl::MachineState::Home;
+        a.moving = active && (changed || (m_motionAxes >> i) & 1u || isJogging(i) || st == grbl::MachineState::Home);
+        a.jogging = st == grbl::MachineState::Jog && (changed || isJogging(i));
+        a.limitSwitch = g >= 0 && g < static_cast<int>(letters.size()) && r.pinTriggered(letters[static_cast<std::size_t>(g)]);
+        a.homeSwitch = false;  // GRBL has one limit pin per axis: it cannot tell home from limit
+        a.fault = st == grbl::MachineState::Alarm;
+    }
+    if (m_state == LinkState::Identified)
+        setState(LinkState::Ready);
+    emit statusChanged(m_status);
+
+    // A stop waits for the hold to reach rest, then flushes the queue with a reset.
+    if (m_stopping && !m_stopResetSent && askedUs >= m_stopAskedUs
+        && ((st == grbl::MachineState::Hold && r.subState == 0) || st == grbl::MachineState::Idle)) {
+        m_stopResetSent = true;
+        softReset(true);
+    }
+    settleMotion(askedUs, st);
+    if (m_jogCancelling && m_jogLinesOpen == 0 && askedUs > m_jogCancelSentUs && st != grbl::MachineState::Jog) {
+        m_jogCancelling = false;
+        updateJog();  // a jog asked for while the cancel ran starts now
+    }
+    auto waiters = std::move(m_statusWaiters);
+    m_statusWaiters.clear();
+    for (auto& w : waiters) {
+        if (w.sinceUs <= askedUs) {
+            if (w.done)
+                w.done(std::nullopt, m_status);
+        } else {
+            m_statusWaiters.push_back(std::move(w));
+        }
+    }
+    emitTelemetry(m_workMm);
+    m_lastReportWork = m_workMm;
+    m_lastReportUs = now;
+    emit reportApplied(askedUs);
+    if (m_queryAgain || !m_statusWaiters.empty()) {
+        m_queryAgain = false;
+        if (m_querySent.empty())
+            sendQuery();
+    }
+}
+
+void GrblClient::settleMotion(quint64 askedUs, grbl::MachineState st)
+{
+    // GRBL says nothing when a move ends. A report asked for after the last line of the move was
+    // acknowledged (so GRBL had started the cycle: it auto-starts once its serial buffer is empty)
+    // that shows Idle means every axis of it has arrived.
+    if (!m_motionAxes || m_motionLinesOpen > 0 || m_stopping || askedUs <= m_motionAckUs || st != grbl::MachineState::Idle)
+        return;
+    const quint32 axes = m_motionAxes;
+    m_motionAxes = 0;
+    for (int i = 0; i < m_status.axes.size(); ++i)
+        if ((axes >> i) & 1u)
+            emitEvent(proto::EventKind::MotionDone, i, m_status.axes[i].commanded);
+}
+
+void GrblClient::onAlarm(int code)
+{
+    m_alarm = code;
+    // Positions survive a soft-limit alarm and a failed probe; every other alarm (a hard limit, a
+    // reset in motion, a failed homing, grblHAL's E-stop) leaves them untrusted.
+    if (code != grbl::alarm::kSoftLimit && code != grbl::alarm::kProbeFailInitial && code != grbl::alarm::kProbeFailContact)
+        m_established = 0;
+    if (code == grbl::alarm::kHardLimit || code == grbl::alarm::kSoftLimit)
+        m_critical = true;
+    m_homing = false;
+    const auto* meaning = grbl::alarmMeaning(code);
+    const QString text = tr("ALARM:%1 — %2")
+                             .arg(code)
+                             .arg(meaning ? QCoreApplication::translate("grbl", meaning->text) : tr("an alarm this BenchPilot does not know"));
+    proto::EventKind kind = proto::EventKind::Fault;
+    if (code == grbl::alarm::kHardLimit || code == grbl::alarm::kSoftLimit)
+        kind = proto::EventKind::LimitHit;
+    else if (code == grbl::alarm::kGrblHalEStop)
+        kind = proto::EventKind::EStop;
+    // A hard limit names its axis by the pin that tripped, when the last report showed one.
+    int axis = -1;
+    if (kind == proto::EventKind::LimitHit)
+        for (int i = 0; i < m_status.axes.size() && axis < 0; ++i)
+            if (m_status.axes[i].limitSwitch)
+                axis = i;
+    m_motionAxes = 0;
+    m_jog.reset();
+    m_heldJogs.clear();
+    m_stickJogs.clear();
+    emitEvent(kind, axis, axis >= 0 ? m_status.axes[axis].commanded : 0, text, grbl::alarmMessage(code));
+    emit alarmRaised(code);
+    sendQuery();
+}
+
+void GrblClient::subscribe(const QVector<proto::ChannelRef>& channels, int rateHz, SubscribeCallback done)
+{
+    // Telemetry is the status reports: one sample each, at the poll rate at most.
+    proto::SubscribeReply reply;
+    if (m_phase != Phase::Ready) {
+        RequestError e;
+        e.kind = RequestError::Kind::LinkDown;
+        e.message = tr("telemetry: the instrument is not connected");
+        if (done)
+            done(e, reply);
+        return;
+    }
+    m_rateHz = rateHz <= 0 ? 0 : static_cast<int>(std::lround(std::min<double>(rateHz, m_profile.statusPollHz)));
+    m_channels = m_rateHz ? channels : QVector<proto::ChannelRef>{};
+    reply.rateHz = static_cast<std::uint32_t>(m_rateHz);
+    reply.samplesPerBatch = 1;
+    if (done)
+        done(std::nullopt, reply);
+}
+
+void GrblClient::emitTelemetry(const std::vector<double>& workMm)
+{
+    if (!m_rateHz || m_channels.isEmpty())
+        return;
+    proto::TelemetryBatch b;
+    b.firstSampleIndex = m_sampleIndex++;
+    b.firstSampleTimeUs = m_status.deviceTimeUs;
+    b.periodUs = static_cast<std::uint32_t>(std::lround(1e6 / m_profile.statusPollHz));
+    b.sampleCount = 1;
+    const double dtS = m_lastReportUs > 0 && m_status.deviceTimeUs > m_lastReportUs ? (m_status.deviceTimeUs - m_lastReportUs) / 1e6 : 0;
+    for (const auto& c : m_channels) {
+        if (c.axis >= m_identity.axes.size())
+            continue;
+        const int i = c.axis;
+        const double k = m_identity.axes[i].wireScale();
+        double v = 0;
+        switch (c.kind) {
+        case proto::ChannelKind::Commanded:
+        case proto::ChannelKind::Measured: v = instrumentValue(i, workMm) * k; break;
+        case proto::ChannelKind::Velocity:
+            v = dtS > 0 ? (instrumentValue(i, workMm) - instrumentValue(i, m_lastReportWork)) / dtS * k : 0;
+            break;
+        case proto::ChannelKind::Switches: v = m_status.axes[i].limitSwitch ? 2 : 0; break;
+        default: continue;  // no following error, controller output or contour on GRBL: left out, not faked
+        }
+        b.channels.push_back(c);
+        b.values.push_back(static_cast<std::int32_t>(std::llround(std::clamp(v, -2.1e9, 2.1e9))));
+    }
+    if (b.channels.empty())
+        return;
+    emit telemetryReceived(b);
+}
+
+} // namespace dev

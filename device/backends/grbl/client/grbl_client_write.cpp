@@ -1,0 +1,131 @@
+// GrblClient, part 2: writing. Lines go through a backlog (an EEPROM write waits there until
+// nothing else is in flight, and nothing follows it until it is answered) into the
+// character-counting streamer; realtime bytes go out ahead of any line; a soft reset empties
+// both and answers every line in flight as lost. And the sentence a GRBL refusal becomes.
+#include "device/backends/grbl/client/grbl_client.h"
+
+#include "device/backends/grbl/grbl_codes.h"
+
+#include <QCoreApplication>
+
+namespace dev {
+
+// ---- writing ------------------------------------------------------------------------------
+
+std::uint64_t GrblClient::queueLine(const std::string& line, LineDone done, bool alone)
+{
+    if (!m_transport || !m_transport->isOpen() || m_phase == Phase::Closed)
+        return 0;
+    if (line.empty() || line.size() > grbl::kMaxLineChars || line.size() + 1 > m_streamer.capacityBytes())
+        return 0;
+    for (const char c : line) {
+        const auto b = static_cast<std::uint8_t>(c);
+        if (b < 0x20 || grbl::rt::isRealtime(b))
+            return 0;
+    }
+    // Motion lines rely on the modal state this host set (G54 work coordinates, XY plane, feed
+    // per minute); a reset or another program may have changed it.
+    if (!m_modalReady && (line[0] == 'G' || line[0] == 'M')) {
+        m_modalReady = true;
+        const std::uint64_t tag = m_nextTag++;
+        m_backlog.emplace_back("G54 G17 G94", tag);
+        m_pending[tag] = PendingLine{[this](const std::optional<grbl::Streamer::Ack>& a) {
+                                         if (!a || !a->ok)
+                                             m_modalReady = false;
+                                     },
+                                     false};
+    }
+    const std::uint64_t tag = m_nextTag++;
+    m_backlog.emplace_back(line, tag);
+    m_pending[tag] = PendingLine{std::move(done), alone};
+    pump();
+    return tag;
+}
+
+bool GrblClient::sendLine(const std::string& line, LineDone done)
+{
+    if (m_phase != Phase::Ready)
+        return false;
+    return queueLine(line, std::move(done)) != 0;
+}
+
+void GrblClient::sendRealtime(std::uint8_t byte)
+{
+    if (!m_streamer.enqueueRealtime(byte))
+        return;
+    pump();
+}
+
+bool GrblClient::linesIdle() const { return m_backlog.empty() && m_streamer.idle(); }
+
+void GrblClient::pump()
+{
+    if (!m_transport || !m_transport->isOpen())
+        return;
+    while (!m_backlog.empty() && !m_aloneInFlight) {
+        const auto& [line, tag] = m_backlog.front();
+        const auto it = m_pending.find(tag);
+        const bool alone = it != m_pending.end() && it->second.alone;
+        if (alone && !(m_streamer.inFlightLines() == 0 && m_streamer.queuedLines() == 0))
+            break;  // an EEPROM write goes out only when nothing else is in flight
+        m_streamer.enqueue(line, tag);
+        m_backlog.pop_front();
+        if (alone)
+            m_aloneInFlight = true;
+    }
+    const std::string out = m_streamer.takeOutput();
+    if (!out.empty())
+        m_transport->write(QByteArray(out.data(), static_cast<qsizetype>(out.size())));
+}
+
+void GrblClient::softReset(bool expected)
+{
+    if (!m_transport || !m_transport->isOpen())
+        return;
+    // Realtime bytes still waiting (a feed hold) go first, then the reset itself.
+    std::string out = m_streamer.takeOutput();
+    out.push_back(static_cast<char>(grbl::rt::kSoftReset));
+    m_transport->write(QByteArray(out.data(), static_cast<qsizetype>(out.size())));
+    m_streamer.softReset(true);
+    m_backlog.clear();
+    m_aloneInFlight = false;
+    m_reader.clear();
+    m_modalReady = false;
+    if (expected)
+        ++m_expectedBanners;
+    m_lostReason = tr("a reset flushed it");
+    auto pending = std::move(m_pending);
+    m_pending.clear();
+    m_motionLinesOpen = 0;
+    m_jogLinesOpen = 0;
+    m_jogTags.clear();
+    for (auto& [tag, p] : pending)
+        if (p.done)
+            p.done(std::nullopt);
+}
+
+// ---- refusals as sentences ----------------------------------------------------------------
+
+RequestError GrblClient::errorOf(int code, const std::string& line, const QString& what)
+{
+    RequestError e;
+    e.kind = RequestError::Kind::Device;
+    switch (code) {
+    case grbl::err::kTravelExceeded: e.code = proto::ErrorCode::SoftLimit; break;
+    case grbl::err::kIdleError:
+    case grbl::err::kSystemGcLock: e.code = proto::ErrorCode::Busy; break;
+    case grbl::err::kHomingDisabled: e.code = proto::ErrorCode::UnknownCommand; break;
+    default: e.code = proto::ErrorCode::BadPayload; break;
+    }
+    const auto* meaning = grbl::errorMeaning(code);
+    const QString text = meaning ? QCoreApplication::translate("grbl", meaning->text)
+                                 : QCoreApplication::translate("dev::GrblClient", "a code this BenchPilot does not know");
+    e.message = QCoreApplication::translate("dev::GrblClient", "%1 refused by the controller: error:%2, %3 (line \"%4\")")
+                    .arg(what)
+                    .arg(code)
+                    .arg(text, QString::fromStdString(line));
+    e.detail = grbl::errorMessage(code, line);
+    return e;
+}
+
+} // namespace dev

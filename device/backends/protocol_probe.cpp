@@ -1,0 +1,173 @@
+#include "device/backends/protocol_probe.h"
+
+#include "device/backends/grbl/grbl_protocol.h"
+
+namespace dev {
+
+namespace {
+
+bool grblActsOn(std::uint8_t b) { return grbl::rt::isRealtime(b) || b == '\n' || b == '\r'; }
+
+} // namespace
+
+QByteArray ProtocolProbe::safeHello(std::uint16_t* seqOut)
+{
+    const proto::Bytes payload = proto::encode(proto::HelloRequest{proto::HelloReadsExtensions});
+    // Sequence numbers far from the ones a client starts with (1, 2, …), so a device's
+    // retransmission cache never mistakes the client's first HELLO for this one.
+    for (std::uint32_t seq = 0x2000; seq < 0x10000; ++seq) {
+        std::vector<std::uint8_t> wire;
+        proto::encodeFrame(static_cast<std::uint8_t>(proto::MsgType::Hello), static_cast<std::uint16_t>(seq), payload.data(),
+                           payload.size(), wire);
+        bool clean = true;
+        for (const std::uint8_t b : wire)
+            clean = clean && !grblActsOn(b);
+        if (!clean)
+            continue;
+        if (seqOut)
+            *seqOut = static_cast<std::uint16_t>(seq);
+        return QByteArray(reinterpret_cast<const char*>(wire.data()), static_cast<qsizetype>(wire.size()));
+    }
+    return {};  // never: most sequence numbers give a clean frame (tested)
+}
+
+ProtocolProbe::ProtocolProbe(Transport* transport, QObject* parent) : QObject(parent), m_transport(transport)
+{
+    qRegisterMetaType<dev::ProbeResult>();
+    m_timer.setInterval(20);
+    connect(&m_timer, &QTimer::timeout, this, &ProtocolProbe::tick);
+}
+
+ProtocolProbe::~ProtocolProbe()
+{
+    for (const auto& c : m_connections)
+        disconnect(c);
+}
+
+void ProtocolProbe::start()
+{
+    if (m_started)
+        return;
+    m_started = true;
+    if (!m_transport) {
+        ProbeResult r;
+        r.error = tr("no connection chosen");
+        QTimer::singleShot(0, this, [this, r] { finish(r); });
+        return;
+    }
+    m_connections << connect(m_transport, &Transport::bytesReceived, this, &ProtocolProbe::onBytes);
+    m_connections << connect(m_transport, &Transport::failed, this, [this](const QString& why) {
+        ProbeResult r;
+        r.error = why;
+        finish(r);
+    });
+    m_connections << connect(m_transport, &Transport::lost, this, [this](const QString& why) {
+        ProbeResult r;
+        r.error = why;
+        finish(r);
+    });
+    if (m_transport->isOpen()) {
+        QTimer::singleShot(0, this, &ProtocolProbe::begin);
+    } else {
+        m_connections << connect(m_transport, &Transport::opened, this, &ProtocolProbe::begin);
+        m_transport->open();
+    }
+}
+
+void ProtocolProbe::begin()
+{
+    if (m_done || !m_transport)
+        return;
+    m_clock.start();
+    m_lastQueryMs = 0;
+    m_transport->write(QByteArray(1, static_cast<char>(grbl::rt::kStatusQuery)));
+    m_timer.start();
+}
+
+void ProtocolProbe::tick()
+{
+    if (m_done || !m_transport)
+        return;
+    const qint64 now = m_clock.elapsed();
+    if (now >= kTotalMs) {
+        ProbeResult r;
+        r.error = m_bytes == 0 ? tr("no answer from %1 within %2 s, neither to a GRBL status query nor to a BenchPilot HELLO: "
+                                    "check power, cable and baud rate")
+                                     .arg(m_transport->describe())
+                                     .arg(kTotalMs / 1000.0)
+                               : tr("%1 sent %2 bytes within %3 s that are neither GRBL lines nor BenchPilot frames: a wrong "
+                                    "baud rate, or another kind of device")
+                                     .arg(m_transport->describe())
+                                     .arg(m_bytes)
+                                     .arg(kTotalMs / 1000.0);
+        m_transport->close();
+        finish(r);
+        return;
+    }
+    if (now >= kGrblFirstMs && (m_lastHelloMs < 0 || now - m_lastHelloMs >= kRepeatMs)) {
+        m_lastHelloMs = now;
+        m_transport->write(safeHello(&m_helloSeq));
+    }
+    if (now - m_lastQueryMs >= kRepeatMs) {
+        m_lastQueryMs = now;
+        m_transport->write(QByteArray(1, static_cast<char>(grbl::rt::kStatusQuery)));
+    }
+}
+
+void ProtocolProbe::onBytes(const QByteArray& bytes)
+{
+    if (m_done)
+        return;
+    m_bytes += static_cast<quint64>(bytes.size());
+    std::vector<grbl::LineReader::Line> lines;
+    m_lines.feed(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())), lines);
+    for (const auto& l : lines) {
+        const grbl::Line c = grbl::classifyLine(l.text);
+        using K = grbl::LineKind;
+        if (c.kind == K::Banner || c.kind == K::Status || c.kind == K::Ok || c.kind == K::Error || c.kind == K::Alarm
+            || c.kind == K::Message) {
+            ProbeResult r;
+            r.protocol = ProbeResult::Protocol::Grbl;
+            if (const auto b = grbl::parseBanner(l.text))
+                r.found = QStringLiteral("%1 %2").arg(b->firmware == grbl::Firmware::GrblHal ? QStringLiteral("grblHAL") : QStringLiteral("Grbl"),
+                                                      QString::fromStdString(b->version));
+            else
+                r.found = tr("a GRBL controller");
+            finish(r);
+            return;
+        }
+    }
+    std::vector<proto::Frame> frames;
+    m_frames.feed(reinterpret_cast<const std::uint8_t*>(bytes.constData()), static_cast<std::size_t>(bytes.size()), frames);
+    for (const auto& f : frames) {
+        if (f.type != proto::replyTypeOf(proto::MsgType::Hello) || f.seq != m_helloSeq)
+            continue;
+        const auto h = proto::decodeHelloReply(f.payload);
+        if (!h)
+            continue;
+        ProbeResult r;
+        r.protocol = ProbeResult::Protocol::BenchPilot;
+        r.kindKnown = true;
+        r.kind = h->kind;
+        r.found = tr("BenchPilot protocol %1 (%2)")
+                      .arg(h->protocolVersion)
+                      .arg(h->kind == proto::DeviceKind::Stage ? tr("stage") : tr("analyzer"));
+        finish(r);
+        return;
+    }
+}
+
+void ProtocolProbe::finish(ProbeResult r)
+{
+    if (m_done)
+        return;
+    m_done = true;
+    m_timer.stop();
+    for (const auto& c : m_connections)
+        disconnect(c);
+    m_connections.clear();
+    m_result = std::move(r);
+    emit finished(m_result);
+}
+
+} // namespace dev

@@ -1,0 +1,44 @@
+// Fuzz target "machine_profile": the machine profile reader. Invariants: never crashes; an
+// accepted text passes validate() and writes out to a text that reads back to the same text;
+// a refusal names a place inside the text.
+#include "fuzz_files.h"
+
+#include "device/files/machine_profile_file.h"
+
+#include <algorithm>
+
+namespace {
+
+std::vector<std::string> seeds()
+{
+    std::vector<std::string> s = fuzzfiles::exampleFiles(".machine.json");
+    s.push_back(files::writeMachineProfile(files::defaultProfile(proto::DeviceKind::Analyzer)));
+    s.push_back(files::writeMachineProfile(files::defaultProfile(proto::DeviceKind::Stage)));
+    return s;
+}
+
+void check(std::string_view input)
+{
+    const auto r = files::parseMachineProfile(input);
+    if (!r.profile) {
+        if (r.problems.empty())
+            fuzzfiles::fail("a refusal without a problem");
+        const long lines = 1 + std::count(input.begin(), input.end(), '\n');
+        for (const auto& p : r.problems.list())
+            if (p.position.line < 1 || p.position.line > lines || p.message.empty())
+                fuzzfiles::fail("a problem outside the text or without a message: " + p.message);
+        return;
+    }
+    if (!files::validate(*r.profile).empty())
+        fuzzfiles::fail("an accepted profile breaks its own rules");
+    const std::string once = files::writeMachineProfile(*r.profile);
+    const auto again = files::parseMachineProfile(once);
+    if (!again.profile)
+        fuzzfiles::fail("a written profile does not read back: " + again.problems.format("w"));
+    if (files::writeMachineProfile(*again.profile) != once)
+        fuzzfiles::fail("write → read → write changed the profile");
+}
+
+} // namespace
+
+BP_FUZZ_FILE_TARGET({"machine_profile", seeds, check});

@@ -1,0 +1,117 @@
+#pragma once
+// A GrblClient connected to the simulator's GRBL personality in-process (an unpaced loopback
+// pair), with what a test needs to watch it: events, refusals, notes, link errors, and helpers
+// that wait on the real event loop. The simulator's clock follows the wall clock times a scale.
+#include "device/backends/grbl/client/grbl_client.h"
+#include "device/link/simulated_link.h"
+#include "device/sim/grbl_firmware.h"
+#include "device/sim/machine_config.h"
+#include "wait.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace itest {
+
+struct GrblSessionOptions {
+    proto::DeviceKind kind = proto::DeviceKind::Stage;
+    bool grblHal = false;
+    std::optional<files::MachineProfile> profile;  ///< the default wiring when empty
+    qint32 baud = 0;                               ///< 0: unpaced
+};
+
+class GrblSession {
+public:
+    explicit GrblSession(const GrblSessionOptions& o = {})
+        : link(std::make_unique<sim::GrblFirmware>(o.kind == proto::DeviceKind::Stage ? sim::stageConfig() : sim::analyzerConfig(),
+                                                    o.grblHal ? sim::GrblFirmware::Dialect::GrblHal : sim::GrblFirmware::Dialect::Grbl),
+               o.baud),
+          client(o.profile ? *o.profile : files::defaultProfile(o.kind), !o.profile.has_value())
+    {
+        QObject::connect(&client, &dev::Instrument::eventReceived, &client, [this](const dev::DeviceEvent& e) { events.push_back(e); });
+        QObject::connect(&client, &dev::Instrument::linkError, &client, [this](const QString& m) { linkErrors << m; });
+        QObject::connect(&client, &dev::Instrument::requestFailed, &client, [this](const dev::RequestError& e) { failures.push_back(e); });
+        QObject::connect(&client, &dev::Instrument::noted, &client, [this](const msg::Message& m) { notes.push_back(m); });
+        QObject::connect(&client, &dev::Instrument::statusChanged, &client, [this] { ++statusCount; });
+        client.setTransport(link.hostEnd());
+    }
+    ~GrblSession() { client.setTransport(nullptr); }
+
+    sim::GrblFirmware& firmware() { return static_cast<sim::GrblFirmware&>(link.host().device()); }
+    double simTimeS() { return firmware().machine().timeS(); }
+
+    bool connect(int timeoutMs = 8000)
+    {
+        client.connectLink();
+        waitFor([this] { return client.state() == dev::LinkState::Ready || client.state() == dev::LinkState::Disconnected; }, timeoutMs);
+        return client.state() == dev::LinkState::Ready;
+    }
+
+    int axis(char letter) const { return client.identity().axisIndex(QChar::fromLatin1(letter)); }
+    const dev::AxisReadout& readout(char letter) const { return client.status().axes[axis(letter)]; }
+
+    std::optional<dev::RequestError> call(const std::function<void(dev::Instrument::Callback)>& send, int timeoutMs = 8000)
+    {
+        bool done = false;
+        std::optional<dev::RequestError> result;
+        send([&done, &result](const std::optional<dev::RequestError>& e) {
+            result = e;
+            done = true;
+        });
+        if (!waitFor([&done] { return done; }, timeoutMs)) {
+            ADD_FAILURE() << "the client never completed the request";
+            dev::RequestError e;
+            e.kind = dev::RequestError::Kind::Timeout;
+            return e;
+        }
+        return result;
+    }
+
+    /// Two fresh status reports with nothing moving.
+    bool waitStill(int timeoutMs = 15000)
+    {
+        const int from = statusCount;
+        return waitFor([this, from] { return client.isReady() && statusCount >= from + 2 && !client.status().anyMoving(); }, timeoutMs);
+    }
+
+    int findEvent(proto::EventKind kind, int axisIndex = -2, std::size_t from = 0) const
+    {
+        for (std::size_t i = from; i < events.size(); ++i)
+            if (events[i].kind == kind && (axisIndex < -1 || events[i].axis == axisIndex))
+                return static_cast<int>(i);
+        return -1;
+    }
+    bool waitEvent(proto::EventKind kind, int axisIndex = -2, std::size_t from = 0, int timeoutMs = 10000)
+    {
+        return waitFor([&] { return findEvent(kind, axisIndex, from) >= 0; }, timeoutMs);
+    }
+
+    /// $H with the simulator's clock sped up, then the clock back at real time.
+    bool homeAll(double timeScale = 20)
+    {
+        link.host().setTimeScale(timeScale);
+        const std::size_t from = events.size();
+        const auto err = call([this](auto cb) { client.home(0, cb); });
+        if (err) {
+            ADD_FAILURE() << "home refused: " << err->message.toStdString();
+            link.host().setTimeScale(1);
+            return false;
+        }
+        const bool ok = waitEvent(proto::EventKind::HomeDone, -2, from, 30000);
+        link.host().setTimeScale(1);
+        return ok && waitStill();
+    }
+
+    dev::SimulatedLink link;
+    dev::GrblClient client;
+    std::vector<dev::DeviceEvent> events;
+    QStringList linkErrors;
+    std::vector<dev::RequestError> failures;
+    std::vector<msg::Message> notes;
+    int statusCount = 0;
+};
+
+} // namespace itest

@@ -1,0 +1,88 @@
+// Which protocol a port speaks: a BenchPilot device answers the probe's HELLO and says which
+// instrument it is; a GRBL controller answers its '?'; a silent port is told within seconds.
+// The probe's HELLO holds no byte GRBL acts on, so sending it to a GRBL controller that did not
+// answer in time (still booting) costs one error, and moves nothing.
+#include "device/backends/grbl/grbl_lines.h"
+#include "device/backends/grbl/grbl_protocol.h"
+#include "device/backends/protocol_probe.h"
+#include "device/link/loopback.h"
+#include "device/link/simulated_link.h"
+#include "device/sim/grbl_firmware.h"
+#include "wait.h"
+
+#include <gtest/gtest.h>
+
+using itest::waitFor;
+
+namespace {
+
+dev::ProbeResult probeOn(dev::Transport* t, int timeoutMs = 8000)
+{
+    dev::ProtocolProbe probe(t);
+    probe.start();
+    EXPECT_TRUE(waitFor([&] { return probe.done(); }, timeoutMs));
+    return probe.result();
+}
+
+TEST(ProtocolProbe, ItsHelloHoldsNoByteGrblActsOn)
+{
+    std::uint16_t seq = 0;
+    const QByteArray hello = dev::ProtocolProbe::safeHello(&seq);
+    ASSERT_FALSE(hello.isEmpty());
+    EXPECT_GE(seq, 0x2000);
+    for (const char c : hello) {
+        const auto b = static_cast<std::uint8_t>(c);
+        EXPECT_FALSE(grbl::rt::isRealtime(b)) << int(b);
+        EXPECT_NE(b, '\n');
+        EXPECT_NE(b, '\r');
+    }
+    // Fed to GRBL ahead of a line end, it is one line (its control bytes dropped, as GRBL's
+    // pre-parser does): one answer, ok or an error, and nothing moves.
+    sim::GrblFirmware fw(sim::stageConfig());
+    fw.receive(reinterpret_cast<const std::uint8_t*>("$X\n"), 3);
+    fw.advance(0.01);
+    std::vector<std::uint8_t> out;
+    fw.drainOutput(out);
+    out.clear();
+    fw.receive(reinterpret_cast<const std::uint8_t*>(hello.constData()), static_cast<std::size_t>(hello.size()));
+    fw.receive(reinterpret_cast<const std::uint8_t*>("\n$G\n"), 4);
+    fw.advance(0.05);
+    fw.drainOutput(out);
+    grbl::LineReader reader;
+    std::vector<grbl::LineReader::Line> lines;
+    reader.feed(std::string_view(reinterpret_cast<const char*>(out.data()), out.size()), lines);
+    ASSERT_EQ(lines.size(), 3u);
+    const auto first = grbl::classifyLine(lines[0].text).kind;
+    EXPECT_TRUE(first == grbl::LineKind::Error || first == grbl::LineKind::Ok) << lines[0].text;
+    EXPECT_EQ(grbl::classifyLine(lines[1].text).kind, grbl::LineKind::ParserState);
+    EXPECT_EQ(lines[2].text, "ok");
+    EXPECT_EQ(fw.state(), sim::GrblFirmware::State::Idle);
+}
+
+TEST(ProtocolProbe, TellsBenchPilotFromGrblAndSilence)
+{
+    {
+        dev::SimulatedLink link(proto::DeviceKind::Stage, 0);
+        const dev::ProbeResult r = probeOn(link.hostEnd());
+        EXPECT_EQ(r.protocol, dev::ProbeResult::Protocol::BenchPilot);
+        EXPECT_TRUE(r.kindKnown);
+        EXPECT_EQ(r.kind, proto::DeviceKind::Stage);
+        EXPECT_TRUE(link.hostEnd()->isOpen());  // left open for the backend
+    }
+    for (const auto dialect : {sim::GrblFirmware::Dialect::Grbl, sim::GrblFirmware::Dialect::GrblHal}) {
+        dev::SimulatedLink link(std::make_unique<sim::GrblFirmware>(sim::analyzerConfig(), dialect), 0);
+        const dev::ProbeResult r = probeOn(link.hostEnd());
+        EXPECT_EQ(r.protocol, dev::ProbeResult::Protocol::Grbl);
+        EXPECT_FALSE(r.kindKnown);
+    }
+    {
+        dev::LoopbackPair pair(0);
+        pair.end(dev::LoopbackPair::B)->open();  // something there, saying nothing
+        const dev::ProbeResult r = probeOn(pair.end(dev::LoopbackPair::A));
+        EXPECT_EQ(r.protocol, dev::ProbeResult::Protocol::None);
+        EXPECT_TRUE(r.error.contains(QStringLiteral("no answer"))) << r.error.toStdString();
+        EXPECT_FALSE(pair.end(dev::LoopbackPair::A)->isOpen());
+    }
+}
+
+} // namespace
