@@ -276,8 +276,12 @@ void ApiServer::callFinished(CommandCall* call)
     emit clientsChanged();
 }
 
-const ServedInstrument* ApiServer::resolveInstrument(const QString& kind, QString* why) const
+const ServedInstrument* ApiServer::resolveInstrument(const QString& kind, QString* why, bool* callersFault) const
 {
+    bool fault = false;
+    if (!callersFault)
+        callersFault = &fault;
+    *callersFault = false;
     if (!kind.isEmpty()) {
         for (const auto& s : m_instruments)
             if (s.key == kind) {
@@ -288,6 +292,7 @@ const ServedInstrument* ApiServer::resolveInstrument(const QString& kind, QStrin
                 return &s;
             }
         *why = tr("the GUI has no instrument '%1'").arg(kind);
+        *callersFault = true;
         return nullptr;
     }
     const ServedInstrument* only = nullptr;
@@ -301,6 +306,7 @@ const ServedInstrument* ApiServer::resolveInstrument(const QString& kind, QStrin
         return only;
     *why = ready == 0 ? tr("no instrument is connected in the GUI")
                       : tr("the analyzer and the stage are both connected: say which with --sim analyzer|stage");
+    *callersFault = ready > 1;
     return nullptr;
 }
 

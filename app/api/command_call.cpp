@@ -110,8 +110,9 @@ void CommandCall::answer()
     if (!m_client || m_id.isUndefined())
         return;
     if (m_style == Style::CliRun) {
-        // Not in control is a refusal for a shell script: the CLI's exit code 2.
-        const int code = m_notInControl ? int(cli::Refused) : m_exit;
+        // Not in control is a refusal for a shell script (the CLI's exit code 2); an
+        // instrument the words must name is a usage error (1).
+        const int code = m_notInControl ? int(cli::Refused) : m_badInstrument ? int(cli::Usage) : m_exit;
         m_client->send(resultLine(m_id, QJsonObject{{QStringLiteral("exit_code"), code}}));
         return;
     }
@@ -129,7 +130,7 @@ void CommandCall::answer()
         code = code::kNotInControl;
     } else if (m_interrupted) {
         code = code::kCancelled;
-    } else if (m_exit == cli::Usage) {
+    } else if (m_exit == cli::Usage || m_badInstrument) {
         code = code::kInvalidParams;
     } else if (m_exit == cli::LinkTrouble) {
         code = code::kLinkTrouble;
@@ -212,7 +213,7 @@ std::unique_ptr<cli::CliSession> CommandCall::openSession(cli::Invocation& inv)
         return nullptr;
     }
     QString why;
-    const ServedInstrument* served = m_server.resolveInstrument(link.sim, &why);
+    const ServedInstrument* served = m_server.resolveInstrument(link.sim, &why, &m_badInstrument);
     if (!served) {
         inv.report(why);
         return nullptr;

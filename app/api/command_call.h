@@ -99,6 +99,7 @@ private:
     QString m_instrumentKey;
     bool m_tookControl = false;       ///< it needed the lease and had it
     bool m_notInControl = false;
+    bool m_badInstrument = false;     ///< the words named no instrument the GUI has (or none when two are connected)
     QString m_notInControlWhy;
     bool m_interrupted = false;
     QString m_jobId;

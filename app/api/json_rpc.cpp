@@ -24,9 +24,15 @@ Request readRequest(const QByteArray& line)
 {
     QJsonParseError pe;
     const QJsonDocument doc = QJsonDocument::fromJson(line, &pe);
-    if (pe.error != QJsonParseError::NoError)
+    if (pe.error != QJsonParseError::NoError) {
+        // Qt reads only an object or an array at the top: a bare "42" is JSON all the same.
+        QJsonParseError wrapped;
+        QJsonDocument::fromJson('[' + line + ']', &wrapped);
+        if (wrapped.error == QJsonParseError::NoError)
+            return invalid(QJsonValue::Null, code::kInvalidRequest, tr("a request is a JSON object"));
         return invalid(QJsonValue::Null, code::kParseError,
                        tr("parse error at byte %1: %2").arg(pe.offset).arg(pe.errorString()));
+    }
     if (doc.isArray())
         return invalid(QJsonValue::Null, code::kInvalidRequest, tr("batches are not supported: send one request per line"));
     if (!doc.isObject())
