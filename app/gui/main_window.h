@@ -1,8 +1,11 @@
 #pragma once
 // The composition root's window: both instruments' connections, the screens,
-// E-stop on every screen, banner, event log and status bar.
+// E-stop on every screen, banner, event log and status bar, and the scripting API.
+#include "api_wiring.h"
+
 #include <QMainWindow>
 
+class QDockWidget;
 class QListWidget;
 class QPushButton;
 class QStackedWidget;
@@ -33,6 +36,7 @@ struct MainWindowOptions {
     bool persistSettings = true;  ///< false for screenshots and tests: read nothing, write nothing
     bool confirmDialogs = true;   ///< false in tests: far moves go ahead without asking
     bool autoConnect = true;      ///< connect both instruments at start
+    ApiOptions api;               ///< the scripting API (docs/api.md); no socket path: none
 };
 
 class MainWindow : public QMainWindow {
@@ -58,6 +62,8 @@ public:
     ui::MessageBanner* banner() { return m_banner; }
     ui::EventLog* eventLog() { return m_log; }
     QPushButton* estopButton() { return m_estop; }
+    /// The scripting API's wiring (its server is null when no API was asked for).
+    ApiWiring* api() { return m_api; }
 
 public slots:
     void emergencyStop();
@@ -69,6 +75,7 @@ protected:
 
 private:
     void addScreen(const QString& name, const QString& title, QWidget* screen);
+    void wireApi(QDockWidget* logDock);
     void wireSession(int index, ui::ConnectionBar* bar);
     void updateStatusBar();
     void updateEStopUi();
@@ -78,6 +85,7 @@ private:
 
     MainWindowOptions m_options;
     InstrumentSession* m_sessions[2];
+    ApiWiring* m_api;
     tele::TelemetryHub* m_hub;  ///< every instrument's telemetry, for the plots
     ui::PlotsScreen* m_plots;
     ui::TuningScreen* m_tuning;
