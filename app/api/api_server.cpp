@@ -12,6 +12,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
+#include <QJsonDocument>
 #include <QLocalServer>
 #include <QLocalSocket>
 
@@ -231,10 +232,12 @@ void ApiServer::handle(ApiClient* client, const Request& r)
         return;
     }
     const QStringList args = m->path.split(QLatin1Char(' ')) + QStringList{QStringLiteral("--json")} + words;
-    startCall(client, r,
-              std::make_unique<CommandCall>(*this, client, r.kind == Request::Kind::Call ? r.id : QJsonValue(QJsonValue::Undefined),
-                                            CommandCall::Style::Method, m, args,
-                                            r.params.value(QStringLiteral("lease")).toString()));
+    auto call = std::make_unique<CommandCall>(*this, client, r.kind == Request::Kind::Call ? r.id : QJsonValue(QJsonValue::Undefined),
+                                              CommandCall::Style::Method, m, args, r.params.value(QStringLiteral("lease")).toString());
+    QJsonObject shown = r.params;
+    shown.remove(QStringLiteral("lease"));
+    call->setDescription(QStringLiteral("%1 %2").arg(m->method, QString::fromUtf8(QJsonDocument(shown).toJson(QJsonDocument::Compact))));
+    startCall(client, r, std::move(call));
 }
 
 void ApiServer::startCall(ApiClient* client, const Request& r, std::unique_ptr<CommandCall> call)
@@ -578,9 +581,10 @@ void ApiServer::handleBuiltin(ApiClient* client, const Request& r, bool* handled
             answerError(client, r, code::kTooManyCalls, tr("%1 calls are already running for this client").arg(kMaxCallsPerClient));
             return;
         }
-        startCall(client, r,
-                  std::make_unique<CommandCall>(*this, client, r.kind == Request::Kind::Call ? r.id : QJsonValue(QJsonValue::Undefined),
-                                                CommandCall::Style::CliRun, nullptr, args, QString()));
+        auto call = std::make_unique<CommandCall>(*this, client, r.kind == Request::Kind::Call ? r.id : QJsonValue(QJsonValue::Undefined),
+                                                  CommandCall::Style::CliRun, nullptr, args, QString());
+        call->setDescription(QStringLiteral("benchpilot-cli %1").arg(args.join(QLatin1Char(' '))));
+        startCall(client, r, std::move(call));
     } else {
         *handled = false;
     }

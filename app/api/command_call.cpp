@@ -117,11 +117,20 @@ void CommandCall::answer()
         return;
     }
     if (m_exit == cli::Ok) {
+        // The last object printed, unless the command ended with a sentence after it
+        // (scan run's "144 tiles taken; wrote …"): then that text, the objects having
+        // gone out as progress.
+        const QString trailing = m_outText.mid(m_outAtLastObject).trimmed();
         QJsonValue result;
-        if (!m_objects.isEmpty())
+        if (!m_objects.isEmpty() && trailing.isEmpty()) {
             result = m_objects.last();
-        else
-            result = QJsonObject{{QStringLiteral("text"), m_outText}};
+        } else {
+            if (m_progressSent < m_objects.size())
+                m_client->send(notificationLine(QStringLiteral("call.progress"),
+                                                QJsonObject{{QStringLiteral("call"), m_id}, {QStringLiteral("data"), m_objects.last()}}),
+                               ApiClient::Priority::Update);
+            result = QJsonObject{{QStringLiteral("text"), m_objects.isEmpty() ? m_outText : trailing}};
+        }
         m_client->send(resultLine(m_id, result));
         return;
     }
@@ -230,14 +239,8 @@ std::unique_ptr<cli::CliSession> CommandCall::openSession(cli::Invocation& inv)
             return nullptr;
         }
         m_tookControl = true;
-        QString what = methodName();
-        if (m_method) {
-            QStringList words = m_args.mid(m_method->path.count(QLatin1Char(' ')) + 1);
-            words.removeAll(QStringLiteral("--json"));
-            words.removeAll(QStringLiteral("--"));
-            what += QLatin1Char(' ') + words.join(QLatin1Char(' '));
-        }
-        m_server.logActivity(m_clientName, QStringLiteral("call"), tr("%1 on the %2").arg(what.trimmed(), served->key), false);
+        m_server.logActivity(m_clientName, QStringLiteral("call"),
+                             tr("%1 on the %2").arg(m_description.isEmpty() ? methodName() : m_description, served->key), false);
         m_jobId = m_server.jobs().add(m_method ? m_method->method : methodName(), served->key, m_clientName, true);
     }
     auto session = std::make_unique<cli::CliSession>(inv, served->instrument.data());
@@ -261,6 +264,7 @@ std::unique_ptr<cli::CliSession> CommandCall::openSession(cli::Invocation& inv)
 void CommandCall::printedJson(const QJsonObject& object)
 {
     m_objects.append(object);
+    m_outAtLastObject = static_cast<int>(m_outText.size());
     if (!m_jobId.isEmpty())
         m_server.jobs().setProgress(m_jobId, object);
 }

@@ -58,6 +58,8 @@ public:
     QString methodName() const;
     QString instrumentKey() const { return m_instrumentKey; }
     bool tookControl() const { return m_tookControl; }
+    /// How the event log shows the call: "device.move {"targets":{"X":10}}".
+    void setDescription(const QString& text) { m_description = text; }
 
     // cli::InvocationHost
     std::unique_ptr<cli::CliSession> openSession(cli::Invocation& inv) override;
@@ -86,6 +88,7 @@ private:
     const CommandMethod* m_method;
     QStringList m_args;
     QString m_leaseToken;
+    QString m_description;
     cli::Fiber m_fiber;
 
     // What the command did.
@@ -96,6 +99,7 @@ private:
     QStringList m_reports;
     QJsonArray m_objects;             ///< every object it printed
     int m_progressSent = 0;           ///< of those, sent as call.progress
+    int m_outAtLastObject = 0;        ///< where stdout stood when the last object was printed
     QString m_instrumentKey;
     bool m_tookControl = false;       ///< it needed the lease and had it
     bool m_notInControl = false;

@@ -176,7 +176,11 @@ public:
     void printJson(const QJsonObject& object);
     /// Hands the host the object behind text the command printed in a format of its own
     /// (scan plan prints the plan file itself), without printing it again.
-    void offerJson(const QJsonObject& object) { m_host.printedJson(object); }
+    void offerJson(const QJsonObject& object)
+    {
+        m_out.flush();
+        m_host.printedJson(object);
+    }
 
     int usage(const QString& message);        ///< prints it, returns Usage
     int refused(const QString& message);      ///< prints it, returns Refused
