@@ -116,7 +116,10 @@ ApiPanel::ApiPanel(api::ApiServer* server, QWidget* parent) : QWidget(parent), m
     m_jobs = new QTableWidget(0, 5, this);
     for (QTableWidget* t : {m_clients, m_jobs}) {
         t->verticalHeader()->hide();
-        t->horizontalHeader()->setStretchLastSection(true);
+        t->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+        t->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+        t->horizontalHeader()->setStretchLastSection(false);
+        t->setWordWrap(false);
         t->setEditTriggers(QAbstractItemView::NoEditTriggers);
         t->setSelectionBehavior(QAbstractItemView::SelectRows);
         t->setSelectionMode(QAbstractItemView::SingleSelection);

@@ -26,6 +26,7 @@
 #include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSettings>
 #include <QShortcut>
 #include <QStackedWidget>
@@ -78,9 +79,15 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     v->addLayout(top);
 
     m_banner = new ui::MessageBanner(central);
-    v->addWidget(m_banner);
-    if (m_api->strip())
-        v->addWidget(m_api->strip());
+    if (m_api->strip()) {
+        // Who has control shares the banner's row: no extra height on a 768-pixel screen.
+        auto* row = new QHBoxLayout;
+        row->addWidget(m_banner, 1);
+        row->addWidget(m_api->strip(), 1);
+        v->addLayout(row);
+    } else {
+        v->addWidget(m_banner);
+    }
 
     auto* body = new QHBoxLayout;
     m_nav = new QListWidget(central);
@@ -231,13 +238,25 @@ void MainWindow::wireApi(QDockWidget* logDock)
         });
     auto* dock = new QDockWidget(tr("Scripting API"), this);
     dock->setObjectName(QStringLiteral("apiDock"));
-    dock->setWidget(m_api->panel());
+    auto* scroll = new QScrollArea(dock);  // a short dock area still shows it, scrolling
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(m_api->panel());
+    dock->setWidget(scroll);
     dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
     addDockWidget(Qt::BottomDockWidgetArea, dock);
     tabifyDockWidget(logDock, dock);
     logDock->raise();
+    dock->hide();  // until asked for (the status bar's API button): no tab bar's height meanwhile
+    dock->setFeatures(dock->features() | QDockWidget::DockWidgetClosable);
     statusBar()->addPermanentWidget(m_api->statusButton());
     connect(m_api, &ApiWiring::showPanelRequested, this, [dock] {
+        // Floating the first time: the window below keeps its height on a 768-pixel screen.
+        if (!dock->isVisible() && !dock->property("shownOnce").toBool()) {
+            dock->setProperty("shownOnce", true);
+            dock->setFloating(true);
+            dock->resize(560, 360);
+        }
         dock->show();
         dock->raise();
     });
