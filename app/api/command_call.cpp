@@ -163,8 +163,8 @@ void CommandCall::answer()
         for (const QString& line : m_errText.split(QLatin1Char('\n'), Qt::SkipEmptyParts))
             if (line.startsWith(QLatin1String("benchpilot-cli")) && line.contains(QLatin1String(": ")))
                 messages << reword(line.section(QStringLiteral(": "), 1));
-    if (m_notInControl)
-        messages << m_notInControlWhy;
+    if (m_notInControl && (messages.isEmpty() || messages.last() != reword(m_notInControlWhy)))
+        messages << reword(m_notInControlWhy);
     QString message = messages.isEmpty() ? QString() : messages.last();
     if (message.isEmpty()) {
         // Text the command wrote on stderr (recipe validate lists problems there).
@@ -172,7 +172,8 @@ void CommandCall::answer()
         if (message.isEmpty())
             message = tr("failed with exit code %1").arg(m_exit);
     }
-    QJsonObject data{{QStringLiteral("exit_code"), m_exit}};
+    // Not in control is a refusal (the CLI's exit code 2), whatever the command made of it.
+    QJsonObject data{{QStringLiteral("exit_code"), m_notInControl ? int(cli::Refused) : m_exit}};
     if (messages.size() > 1)
         data.insert(QStringLiteral("messages"), QJsonArray::fromStringList(messages));
     if (!m_objects.isEmpty())

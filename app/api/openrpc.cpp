@@ -129,7 +129,7 @@ QJsonObject openRpcDocument(const QVector<CommandMethod>& methods)
     for (const CommandMethod& m : methods) {
         QJsonArray params;
         for (const MethodParam& p : methodParams(m)) {
-            QJsonObject o = param(p.name, paramSchema(p.type, p.choices), p.description, p.required);
+            QJsonObject o = param(p.name, paramSchema(p.type, p.choices), apiWording(m, p.description), p.required);
             if (!p.defaultValue.isEmpty())
                 o.insert(QStringLiteral("x-default"), p.defaultValue);
             if (!p.option.isEmpty() && !p.common)
@@ -137,7 +137,8 @@ QJsonObject openRpcDocument(const QVector<CommandMethod>& methods)
             params.append(o);
         }
         const cli::ApiSpec& spec = m.command->api;
-        QJsonObject o = method(m.method, m.command->summary, params, accessName(spec.access, spec.readsWithoutArguments), m.command->description);
+        QJsonObject o = method(m.method, m.command->summary, params, accessName(spec.access, spec.readsWithoutArguments),
+                               apiWording(m, m.command->description));
         o.insert(QStringLiteral("x-cli"), QStringLiteral("benchpilot-cli %1").arg(m.path));
         if (!spec.example.isEmpty()) {
             QJsonArray exampleParams;

@@ -368,7 +368,7 @@ void addDeviceCommands(std::vector<Command>& list)
                         withStage({{QStringLiteral("axes"), QStringLiteral("XY")}}))});
     ApiSpec limitsApi = api("device.limits", Access::Control,
                             {{QStringLiteral("limits"), ParamType::AxisRanges, tr("axis → [min, max] to set; shows them when left out"), false, {}, {}}},
-                            withStage({{QStringLiteral("limits"), QJsonObject{{QStringLiteral("X"), QJsonArray{5, 95}}}}}));
+                            withStage({{QStringLiteral("limits"), QJsonObject{{QStringLiteral("X"), QJsonArray{0, 50}}}}}));
     limitsApi.readsWithoutArguments = true;
     list.push_back({QStringLiteral("limits"), tr("show or set soft limits"), QStringLiteral("[AXIS=MIN:MAX...]"), {}, {}, limits, {}, limitsApi});
 }

@@ -370,7 +370,7 @@ void addPatternCommands(std::vector<Command>& list)
     runCmd.api.params = patternParams();
     runCmd.api.example = QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")}, {QStringLiteral("shape"), QStringLiteral("circle")},
                                      {QStringLiteral("radius"), 1}, {QStringLiteral("center"), QJsonArray{50, 50}},
-                                     {QStringLiteral("feed"), 5}, {QStringLiteral("home_first"), true}};
+                                     {QStringLiteral("feed"), 5}};
     pattern.subcommands = {planCmd, runCmd};
     list.push_back(pattern);
 }

@@ -197,6 +197,8 @@ void addRecipeCommands(std::vector<Command>& list)
                                       ApiParam interrupted = optionParam("interrupted", ParamType::Text);
                                       interrupted.choices = QStringList{QStringLiteral("skip"), QStringLiteral("redo")};
                                       a.params << interrupted;
+                                      a.example.insert(QStringLiteral("file"), QStringLiteral("resources/examples/api-two-wells.recipe.json"));
+                                      a.example.insert(QStringLiteral("log"), QStringLiteral("two-wells.run.jsonl"));
                                       a.example.insert(QStringLiteral("instrument"), QStringLiteral("analyzer"));
                                       a.example.insert(QStringLiteral("home"), true);
                                       return a;

@@ -367,7 +367,7 @@ void addScanCommands(std::vector<Command>& list)
     for (const char* number : {"pixel-um", "sensor-um", "mag", "rotation", "overtravel", "speed", "settle", "exposure", "tolerance-um"})
         plan.api.params << optionParam(number, ParamType::Number);
     plan.api.params << optionParam("first-index", ParamType::Integer);
-    plan.api.example = QJsonObject{{QStringLiteral("roi"), QJsonArray{20, 30, 23, 32}}, {QStringLiteral("fov"), QJsonArray{1.33, 1.33}},
+    plan.api.example = QJsonObject{{QStringLiteral("roi"), QJsonArray{40, 40, 42.5, 41}}, {QStringLiteral("fov"), QJsonArray{1.33, 1.33}},
                                    {QStringLiteral("overlap"), QJsonArray{0.1}}, {QStringLiteral("format"), QStringLiteral("summary")}};
     Command run{QStringLiteral("run"), tr("run a scan plan on the stage, continue a stopped run, write the exports"),
                 tr("PLAN.json"),
@@ -380,7 +380,7 @@ void addScanCommands(std::vector<Command>& list)
     run.api.access = Access::Control;
     run.api.params = {{QStringLiteral("plan"), ParamType::File, tr("the scan plan file"), true, {}, {}}, optionParam("out", ParamType::File)};
     run.api.example = QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")}, {QStringLiteral("plan"), QStringLiteral("slide.scan.json")},
-                                  {QStringLiteral("out"), QStringLiteral("slide-run")}, {QStringLiteral("home"), true}};
+                                  {QStringLiteral("out"), QStringLiteral("slide-run")}};
     list.push_back({QStringLiteral("scan"), tr("stitching scans on the stage: plan, run"), {},
                     tr("See docs/scan.md for the grid rule, the plan file and the exports."), {}, {}, {plan, run}});
 }

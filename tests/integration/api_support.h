@@ -24,7 +24,7 @@ namespace itest {
 
 /// One simulated instrument behind a proxy, as app/gui/instrument_session holds it.
 struct ServedSim {
-    explicit ServedSim(proto::DeviceKind kind) : link(kind, 115200)
+    explicit ServedSim(proto::DeviceKind kind, qint32 baud = 115200) : link(kind, baud)
     {
         backend = new dev::BenchPilotClient;
         proxy.setBackend(backend);
@@ -42,11 +42,12 @@ struct ServedSim {
 
 class ApiFixture {
 public:
-    explicit ApiFixture(bool withAnalyzer = true)
-        : stage(proto::DeviceKind::Stage)
+    /// `baud` 0: links without pacing, for a simulator whose clock is sped up.
+    explicit ApiFixture(bool withAnalyzer = true, qint32 baud = 115200)
+        : stage(proto::DeviceKind::Stage, baud)
     {
         if (withAnalyzer)
-            analyzer = std::make_unique<ServedSim>(proto::DeviceKind::Analyzer);
+            analyzer = std::make_unique<ServedSim>(proto::DeviceKind::Analyzer, baud);
         QVector<api::ServedInstrument> served;
         if (analyzer) {
             hub.addInstrument(0, QStringLiteral("Analyzer"), &analyzer->proxy);
