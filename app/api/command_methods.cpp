@@ -159,7 +159,9 @@ bool toWords(const CommandMethod& m, const QJsonObject& params, QStringList* wor
             for (const auto& p : known)
                 if (p.name != QLatin1String("lease"))
                     names << p.name;
-            return fail(it.key(), names.isEmpty() ? tr("unknown parameter (this method takes none)")
+            // An empty name still needs a field the client can read.
+            return fail(it.key().isEmpty() ? QStringLiteral("\"\"") : it.key(),
+                        names.isEmpty() ? tr("unknown parameter (this method takes none)")
                                                   : tr("unknown parameter (parameters: %1)").arg(names.join(QStringLiteral(", "))));
         }
     }

@@ -65,6 +65,12 @@ TEST(ApiProtocol, AnUnknownMethodAndBadParamsSayWhatIsWrongAndWhere)
     EXPECT_EQ(ApiTestClient::errorCode(a), api::code::kInvalidParams);
     EXPECT_TRUE(ApiTestClient::errorMessage(a).contains(QStringLiteral("instrument"))) << "names the parameters it takes";
 
+    // A parameter with an empty name is named all the same (fuzz_api found it unnamed).
+    a = c.call(QStringLiteral("device.status"), QJsonObject{{QString(), 1}});
+    EXPECT_EQ(ApiTestClient::errorCode(a), api::code::kInvalidParams);
+    EXPECT_EQ(a.value(QStringLiteral("error")).toObject().value(QStringLiteral("data")).toObject().value(QStringLiteral("field")).toString(),
+              QStringLiteral("\"\""));
+
     // A command's own check, worded with the JSON names, not the CLI's options.
     a = c.call(QStringLiteral("motion.profile"),
                QJsonObject{{QStringLiteral("kind"), QStringLiteral("warp")}, {QStringLiteral("distance"), 10}, {QStringLiteral("vmax"), 5}});
