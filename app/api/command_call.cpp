@@ -244,6 +244,9 @@ std::unique_ptr<cli::CliSession> CommandCall::openSession(cli::Invocation& inv)
                              tr("%1 on the %2").arg(m_description.isEmpty() ? methodName() : m_description, served->key), false);
         m_jobId = m_server.jobs().add(m_method ? m_method->method : methodName(), served->key, m_clientName, true);
     }
+    if (spec.access == cli::Access::Safety)  // stop and E-stop change things too: in the log, never gated
+        m_server.logActivity(m_clientName, QStringLiteral("call"),
+                             tr("%1 on the %2").arg(m_description.isEmpty() ? methodName() : m_description, served->key), false);
     auto session = std::make_unique<cli::CliSession>(inv, served->instrument.data());
     const QString consumer = QStringLiteral("api call %1 of client %2").arg(reinterpret_cast<quintptr>(this)).arg(m_clientId);
     const ServedInstrument copy = *served;

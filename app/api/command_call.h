@@ -67,6 +67,7 @@ public:
     void reported(const QString& message) override { m_reports << message; }
     std::shared_ptr<void> onInterrupt(std::function<void()> interrupt) override;
     std::shared_ptr<void> onLostControl(std::function<void()> lost) override;
+    std::shared_ptr<void> onAbort(std::function<void()> abort) override { return onInterrupt(std::move(abort)); }
     QString resolvePath(const QString& path) const override;
     bool canHoldJog() const override { return m_style == Style::Method; }
     void holdJog(cli::CliSession& session, int axis, double velocity) override;

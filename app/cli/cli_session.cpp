@@ -184,6 +184,9 @@ int CliSession::request(const std::function<void(dev::Instrument::Callback)>& se
 
 int CliSession::waitUntilStill(const QString& what)
 {
+    // Asked to stop (the API's call.cancel or the GUI's Abort): the machine decelerates
+    // and the wait ends as the motion does.
+    const auto abortHook = m_inv.host().onAbort([this] { m_client->stop(); });
     // Two fresh status polls after the request was accepted, so "not moving" is news, not history.
     int fresh = 0;
     auto c = connect(m_client, &dev::Instrument::statusChanged, this, [&fresh] { ++fresh; });

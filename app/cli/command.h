@@ -119,6 +119,14 @@ public:
     /// A path as the person who typed it meant it (the API resolves a relative one
     /// against its client's working directory).
     virtual QString resolvePath(const QString& path) const { return path; }
+    /// Arranges for `abort` to run when someone asks the job to stop without ending the
+    /// program (the API's call.cancel, the operator's Abort in the GUI's API panel) for as
+    /// long as the guard lives. The CLI has none (Ctrl+C is onInterrupt): nullptr.
+    virtual std::shared_ptr<void> onAbort(std::function<void()> abort)
+    {
+        (void)abort;
+        return nullptr;
+    }
     /// Arranges for `lost` to run when the caller loses control of the instrument (the
     /// API's lease ends: taken back, connection closed, heartbeats stopped) for as long
     /// as the guard lives: velocity motion stops then, as when a jog key is released.

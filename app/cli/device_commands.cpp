@@ -195,6 +195,7 @@ int jog(Invocation& inv)
     }
     // The caller losing control (the API's lease) stops the jog, as releasing a jog key does.
     const auto lost = inv.host().onLostControl([c, axis] { c->stopJog(axis); });
+    const auto abortHook = inv.host().onAbort([c, axis] { c->stopJog(axis); });
     c->startJog(axis, v);
     spinUntil([&] { return !refused.isEmpty() || c->state() != dev::LinkState::Ready || !c->isJogging(axis); },
               static_cast<int>(seconds * 1000));

@@ -289,6 +289,7 @@ int run(Invocation& inv)
             why += tr(" (every --sim command starts a fresh simulator: add --home-first)");
         return inv.refused(why);
     }
+    const auto abortHook = inv.host().onAbort([&runner] { runner.abort(); });  // the API's cancel
     const bool finished = spinUntil([&] { return !runner.busy(); }, static_cast<int>(inv.link().timeoutS * 1000));
     if (!finished) {
         runner.abort();

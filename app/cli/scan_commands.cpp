@@ -311,6 +311,7 @@ int scanRun(Invocation& inv)
     });
     if (!runner.start(&error))
         return inv.refused(error);
+    const auto abortHook = inv.host().onAbort([&runner] { runner.abort(); });  // the API's cancel; the log can continue
     spinUntil([&] { return !runner.isActive(); }, std::numeric_limits<int>::max());
     if (runner.state() != ScanRunner::State::Finished) {
         const bool link = !client->isReady();

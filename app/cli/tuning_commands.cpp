@@ -185,6 +185,7 @@ int runToEnd(Invocation& inv, dev::TuningRunner& runner, const std::function<boo
     QObject::connect(&runner, &dev::TuningRunner::message, &runner, [&](const QString& m) { inv.report(m); });
     if (!start())
         return inv.refused(message.isEmpty() ? tr("could not start") : message);
+    const auto abortHook = inv.host().onAbort([&runner] { runner.abort(); });  // the API's cancel: the axis stops under its gains
     if (!spinUntil([&] { return done || runner.state() == dev::TuningRunner::State::Interrupted; }, static_cast<int>(timeoutS * 1000))) {
         runner.abort();
         spinUntil([&] { return done; }, 3000);
