@@ -197,7 +197,7 @@ void BM_StatusRoundTrip(benchmark::State& state)
     serverThread->wait();
     delete serverThread;
 }
-BENCHMARK(BM_StatusRoundTrip)->UseManualTime()->Unit(benchmark::kMicrosecond)->Iterations(shortMode() ? 200 : 5000);
+BENCHMARK(BM_StatusRoundTrip)->UseManualTime()->Unit(benchmark::kMicrosecond)->Iterations(shortMode() ? 100 : 5000);
 
 // ---- plot redraw while clients subscribe --------------------------------------------------
 
@@ -355,7 +355,7 @@ void BM_PlotRedrawWithClients(benchmark::State& state)
 }
 
 // 60 s of frames at 60 Hz in the full run; a second in CTest's short run.
-const int kFrames = shortMode() ? 60 : 3600;
+const int kFrames = shortMode() ? 30 : 3600;
 
 } // namespace
 
