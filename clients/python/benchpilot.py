@@ -205,7 +205,7 @@ class Lease:
                 return
             try:
                 self._client.notify("control.heartbeat", lease=self.token)
-            except OSError:
+            except (ApiError, OSError):
                 return
 
     def release(self):
@@ -269,8 +269,11 @@ class Client:
     # ---- plumbing -------------------------------------------------------------------
     def _send(self, message):
         data = (json.dumps(message, separators=(",", ":")) + "\n").encode()
-        with self._write_lock:
-            self._sock.sendall(data)
+        try:
+            with self._write_lock:
+                self._sock.sendall(data)
+        except OSError as e:
+            raise ConnectionLost("the connection to BenchPilot closed (%s)" % e) from None
 
     def _read(self):
         buffer = b""
@@ -334,7 +337,14 @@ class Client:
         cid = next(self._ids)
         pending = _Pending(progress)
         self._pending[cid] = pending
-        self._send({"jsonrpc": "2.0", "id": cid, "method": method, "params": params})
+        if self._closed.is_set():  # closed while registering: the reader will not answer it
+            self._pending.pop(cid, None)
+            raise ConnectionLost()
+        try:
+            self._send({"jsonrpc": "2.0", "id": cid, "method": method, "params": params})
+        except ConnectionLost:
+            self._pending.pop(cid, None)
+            raise
         if not pending.event.wait(timeout):
             self._pending.pop(cid, None)
             raise TimeoutError("%s: no answer within %s s" % (method, timeout))
