@@ -11,8 +11,11 @@
 //   50 Hz and the stage jogs back and forth. N = 0 is the baseline: p95 must not move
 //   beyond noise with N = 10. Each client checks every message: the sequence gap to the
 //   previous one minus one must equal its `coalesced` ("misses no more than its
-//   coalescing says"). Counters: p50_ms, p95_ms (redraw), msgs_per_client_s,
-//   coalesced_per_client, unexplained_gaps (must be 0), dropped_total, run_s.
+//   coalescing says"). Counters: p50_ms, p95_ms (redraw wall time), frame_cpu_ms_mean
+//   (this thread's CPU per redraw: what the frame costs when others share the machine),
+//   serve_cpu_share (this thread's CPU outside the frames, per second of run: the
+//   server's and the simulators' work), msgs_per_client_s, coalesced_per_client,
+//   unexplained_gaps (must be 0), dropped_total, run_s.
 //   The full run lasts 60 s (3600 frames at 60 Hz); BP_BENCH_SHORT=1 runs 1 s.
 #include "app/api/api_server.h"
 #include "device/backends/benchpilot/benchpilot_client.h"
@@ -45,6 +48,7 @@
 #include <vector>
 
 #include <poll.h>
+#include <time.h>
 #include <sys/socket.h>
 #include <sys/un.h>
 #include <unistd.h>
@@ -52,6 +56,14 @@
 namespace {
 
 bool shortMode() { return qEnvironmentVariableIntValue("BP_BENCH_SHORT") == 1; }
+
+/// CPU time of this thread (ms): on a shared machine, wall time also counts others' work.
+double threadCpuMs()
+{
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) * 1e3 + double(ts.tv_nsec) * 1e-6;
+}
 
 /// The GUI's side: both simulated instruments behind proxies, the hub, the API server.
 struct Bench {
@@ -323,13 +335,18 @@ void BM_PlotRedrawWithClients(benchmark::State& state)
     QElapsedTimer run;
     run.start();
     std::vector<double> ms;
+    double frameCpu = 0, serveCpu = 0;
     for (auto _ : state) {
         // A frame interval of event loop (the server's work happens here), then the frame.
+        const double cpu0 = threadCpuMs();
         QElapsedTimer gap;
         gap.start();
         while (gap.elapsed() < 16)
             QCoreApplication::processEvents(QEventLoop::AllEvents, 2);
+        const double cpu1 = threadCpuMs();
         const double f = plots.frame();
+        frameCpu += threadCpuMs() - cpu1;
+        serveCpu += cpu1 - cpu0;
         ms.push_back(f);
         state.SetIterationTime(f * 1e-3);
     }
@@ -346,6 +363,8 @@ void BM_PlotRedrawWithClients(benchmark::State& state)
     }
     subs.clear();
     state.counters["run_s"] = runS;
+    state.counters["frame_cpu_ms_mean"] = ms.empty() ? 0 : frameCpu / double(ms.size());
+    state.counters["serve_cpu_share"] = serveCpu * 1e-3 / runS;
     if (clients > 0) {
         state.counters["msgs_per_client_s"] = double(messages) / clients / runS;
         state.counters["coalesced_per_client"] = double(coalesced) / clients;
