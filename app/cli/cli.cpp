@@ -148,7 +148,7 @@ QString parseError(const QCommandLineParser& p, const QList<QCommandLineOption>&
 
 QList<QCommandLineOption> globalOptions()
 {
-    return {QCommandLineOption(QStringLiteral("sim"), tr("the in-process simulator: analyzer or stage (default: analyzer)"), QStringLiteral("KIND")),
+    return {QCommandLineOption(QStringLiteral("sim"), tr("the in-process simulator: analyzer or stage (default: analyzer); with --attach, which of the GUI's instruments"), QStringLiteral("KIND")),
             QCommandLineOption(QStringLiteral("port"), tr("a serial port, or the pty of benchpilot-sim"), QStringLiteral("PATH")),
             QCommandLineOption(QStringLiteral("baud"), tr("link speed (default: 115200)"), QStringLiteral("N")),
             QCommandLineOption(QStringLiteral("instrument"),
@@ -158,7 +158,10 @@ QList<QCommandLineOption> globalOptions()
             QCommandLineOption(QStringLiteral("profile"),
                                tr("with --port: the machine profile of a GRBL controller (docs/grbl.md)"), QStringLiteral("FILE")),
             QCommandLineOption(QStringLiteral("json"), tr("print JSON instead of text")),
-            QCommandLineOption(QStringLiteral("timeout"), tr("longest wait for motion to finish, s (default: 120)"), QStringLiteral("S"))};
+            QCommandLineOption(QStringLiteral("timeout"), tr("longest wait for motion to finish, s (default: 120)"), QStringLiteral("S")),
+            QCommandLineOption(QStringLiteral("attach"), tr("run the command through the running BenchPilot GUI (its instruments, its control lease)")),
+            QCommandLineOption(QStringLiteral("api-socket"), tr("with --attach: the GUI's API socket (default: $XDG_RUNTIME_DIR/benchpilot/api.sock)"),
+                               QStringLiteral("PATH"))};
 }
 
 QString topHelp()
@@ -198,8 +201,110 @@ QString commandHelp(const QString& path, const Command& c)
                   "benchpilot-cli --help).\n");
 }
 
+namespace {
+
+/// The command the positional words name, walking down subcommands; `rest` keeps the
+/// words after it. Returns nullptr with `level`/`parent` saying where the walk stopped.
+struct Walk {
+    const Command* cmd = nullptr;      ///< the last command the words named
+    const std::vector<Command>* level = nullptr;
+    QString path;
+    QString stopWord;                  ///< the word that named nothing (when the walk stopped early)
+    bool complete = false;             ///< cmd is a leaf (runnable) command
+};
+
+Walk walk(QStringList& rest)
+{
+    Walk w;
+    w.level = &commands();
+    for (;;) {
+        const QString word = rest.isEmpty() ? QString() : rest.takeFirst();
+        const Command* next = find(*w.level, word);
+        if (!next) {
+            w.stopWord = word;
+            return w;
+        }
+        w.cmd = next;
+        w.path = w.path.isEmpty() ? next->name : w.path + QLatin1Char(' ') + next->name;
+        if (next->subcommands.empty()) {
+            w.complete = true;
+            return w;
+        }
+        w.level = &next->subcommands;
+    }
+}
+
+} // namespace
+
+const Command* findCommand(const QStringList& rawArgs, QString* path)
+{
+    QStringList args{QStringLiteral("benchpilot-cli")};
+    for (const QString& a : rawArgs)
+        args << markNegative(a);
+    QCommandLineParser top;
+    top.setOptionsAfterPositionalArgumentsMode(QCommandLineParser::ParseAsPositionalArguments);
+    top.addOptions(globalOptions());
+    top.addOption(helpOption());
+    top.addOption(versionOption());
+    if (!top.parse(args))
+        return nullptr;
+    QStringList rest = top.positionalArguments();
+    const Walk w = walk(rest);
+    if (!w.complete)
+        return nullptr;
+    if (path)
+        *path = w.path;
+    return w.cmd;
+}
+
+QString methodName(const QString& path, const Command& c)
+{
+    if (!c.api.method.isEmpty())
+        return c.api.method;
+    QString m = path;
+    m.replace(QLatin1Char(' '), QLatin1Char('.'));
+    m.replace(QLatin1Char('-'), QLatin1Char('_'));
+    return m;
+}
+
 int runCli(const QStringList& rawArgs, QTextStream& out, QTextStream& err)
 {
+    // --attach [--api-socket PATH], before or after the command: the same words go to
+    // the running GUI, which runs them and sends back the output and the exit code.
+    QStringList words;
+    bool attach = false;
+    QString socketPath;
+    for (int i = 0; i < rawArgs.size(); ++i) {
+        const QString& a = rawArgs[i];
+        if (a == QLatin1String("--")) {
+            words += rawArgs.mid(i);
+            break;
+        }
+        if (a == QLatin1String("--attach")) {
+            attach = true;
+        } else if (a == QLatin1String("--api-socket") && i + 1 < rawArgs.size()) {
+            socketPath = rawArgs[++i];
+        } else if (a.startsWith(QLatin1String("--api-socket="))) {
+            socketPath = a.mid(13);
+        } else {
+            words << a;
+        }
+    }
+    if (!socketPath.isEmpty() && !attach) {
+        err << "benchpilot-cli: " << tr("--api-socket goes with --attach") << "\n";
+        err.flush();
+        return Usage;
+    }
+    if (attach)
+        return runAttached(words, socketPath, out, err);
+    const std::unique_ptr<InvocationHost> host = makeLocalHost();
+    return runCommandLine(words, out, err, *host);
+}
+
+int runCommandLine(const QStringList& rawArgs, QTextStream& out, QTextStream& err, InvocationHost& host, const Command** ran)
+{
+    if (ran)
+        *ran = nullptr;
     QStringList args{QStringLiteral("benchpilot-cli")};  // QCommandLineParser skips the program name
     for (const QString& a : rawArgs)
         args << markNegative(a);
@@ -239,33 +344,25 @@ int runCli(const QStringList& rawArgs, QTextStream& out, QTextStream& err)
         return Usage;
 
     // Walk down to the command (or subcommand) the words name.
-    const std::vector<Command>* level = &commands();
-    QString path;
-    const Command* cmd = nullptr;
-    for (;;) {
-        const QString word = rest.isEmpty() ? QString() : rest.takeFirst();
-        const Command* next = find(*level, word);
-        if (!next) {
-            if (!cmd)
-                return fail(QStringLiteral("benchpilot-cli"),
-                            tr("unknown command '%1' (commands: %2)").arg(word, names(*level).join(QStringLiteral(", "))),
-                            tr("try 'benchpilot-cli --help'\n"));
-            if (word == QLatin1String("-h") || word == QLatin1String("--help")) {
-                out << commandHelp(path, *cmd);
-                out.flush();
-                return Ok;
-            }
-            return fail(QStringLiteral("benchpilot-cli ") + path,
-                        word.isEmpty() ? tr("which one? (%1)").arg(names(*level).join(QStringLiteral(", ")))
-                                       : tr("unknown subcommand '%1' (%2)").arg(word, names(*level).join(QStringLiteral(", "))),
-                        commandHelp(path, *cmd));
+    const Walk w = walk(rest);
+    if (!w.complete) {
+        const QString& word = w.stopWord;
+        if (!w.cmd)
+            return fail(QStringLiteral("benchpilot-cli"),
+                        tr("unknown command '%1' (commands: %2)").arg(word, names(*w.level).join(QStringLiteral(", "))),
+                        tr("try 'benchpilot-cli --help'\n"));
+        if (word == QLatin1String("-h") || word == QLatin1String("--help")) {
+            out << commandHelp(w.path, *w.cmd);
+            out.flush();
+            return Ok;
         }
-        cmd = next;
-        path = path.isEmpty() ? cmd->name : path + QLatin1Char(' ') + cmd->name;
-        if (cmd->subcommands.empty())
-            break;
-        level = &cmd->subcommands;
+        return fail(QStringLiteral("benchpilot-cli ") + w.path,
+                    word.isEmpty() ? tr("which one? (%1)").arg(names(*w.level).join(QStringLiteral(", ")))
+                                   : tr("unknown subcommand '%1' (%2)").arg(word, names(*w.level).join(QStringLiteral(", "))),
+                    commandHelp(w.path, *w.cmd));
     }
+    const Command* cmd = w.cmd;
+    const QString& path = w.path;
 
     QCommandLineParser p;
     p.addOptions(globalOptions());
@@ -281,11 +378,15 @@ int runCli(const QStringList& rawArgs, QTextStream& out, QTextStream& err)
     }
     if (!readLinkOptions(p, link, err, who))
         return Usage;
+    if (top.isSet(QStringLiteral("attach")) || p.isSet(QStringLiteral("attach")))
+        return fail(who, tr("--attach is already in effect here"), QString());
     if (!link.sim.isEmpty() && !link.port.isEmpty())
         return fail(who, tr("give either --sim or --port, not both"), QString());
     if (link.port.isEmpty() && (!link.instrument.isEmpty() || !link.profile.isEmpty()))
         return fail(who, tr("--instrument and --profile go with --port (--sim names its instrument itself)"), QString());
-    Invocation inv(path, p, link, out, err);
+    if (ran)
+        *ran = cmd;
+    Invocation inv(path, p, link, out, err, host);
     return cmd->run(inv);
 }
 

@@ -1,4 +1,5 @@
 #include "cli_session.h"
+#include "fiber.h"
 
 #include "device/backends/benchpilot/benchpilot_client.h"
 #include "device/link/serial_transport.h"
@@ -23,6 +24,8 @@ QString num(double v) { return QString::number(v, 'f', 4); }
 
 bool spinUntil(const std::function<bool()>& done, int timeoutMs)
 {
+    if (Fiber* fiber = Fiber::current())
+        return fiber->waitUntil(done, timeoutMs);
     QEventLoop loop;
     QTimer tick;
     tick.setInterval(5);
@@ -45,8 +48,19 @@ bool spinUntil(const std::function<bool()>& done, int timeoutMs)
     return !timedOut;
 }
 
-CliSession::CliSession(const LinkOptions& options, const QString& prefix, QTextStream& out, QTextStream& err)
-    : m_opt(options), m_prefix(prefix), m_out(out), m_err(err), m_client(new dev::InstrumentProxy(this))
+CliSession::CliSession(Invocation& inv, const LinkOptions& options)
+    : m_inv(inv), m_opt(options), m_client(nullptr), m_ownProxy(new dev::InstrumentProxy(this))
+{
+    m_client = m_ownProxy;
+    watchMotionErrors();
+}
+
+CliSession::CliSession(Invocation& inv, dev::Instrument* instrument) : m_inv(inv), m_opt(inv.link()), m_client(instrument)
+{
+    watchMotionErrors();
+}
+
+void CliSession::watchMotionErrors()
 {
     connect(m_client, &dev::Instrument::eventReceived, this, [this](const dev::DeviceEvent& e) {
         using K = proto::EventKind;
@@ -59,15 +73,22 @@ CliSession::CliSession(const LinkOptions& options, const QString& prefix, QTextS
 
 CliSession::~CliSession()
 {
+    if (m_wantedTelemetry && m_telemetryWish)
+        m_telemetryWish({}, 0);
     if (m_benchPilot)
         m_benchPilot->setTransport(nullptr);
 }
 
-void CliSession::report(const QString& message)
+void CliSession::wantTelemetry(const QVector<proto::ChannelRef>& channels, int rateHz)
 {
-    m_err << m_prefix << ": " << message << "\n";
-    m_err.flush();
+    m_wantedTelemetry = !channels.isEmpty();
+    if (m_telemetryWish)
+        m_telemetryWish(channels, rateHz);
+    else
+        m_client->subscribe(channels, rateHz);
 }
+
+void CliSession::report(const QString& message) { m_inv.report(message); }
 
 QStringList CliSession::takeMotionErrors()
 {
@@ -90,7 +111,7 @@ bool CliSession::connectDevice()
                                             m_opt.baud, this);
         m_link = link;
         m_benchPilot = new dev::BenchPilotClient;
-        m_client->setBackend(m_benchPilot);
+        m_ownProxy->setBackend(m_benchPilot);
         m_benchPilot->setTransport(link->hostEnd());
     } else {
         auto* serial = new dev::SerialTransport(m_opt.port, m_opt.baud, this);
@@ -102,7 +123,7 @@ bool CliSession::connectDevice()
     }
     m_client->connectLink();
     // A GRBL controller answers within its own connect timeout, after its identification ($I, $$, $#).
-    const bool grbl = m_client->backend() != m_benchPilot;
+    const bool grbl = m_ownProxy->backend() != m_benchPilot;
     const bool finished = spinUntil(
         [this] {
             const auto s = m_client->state();
@@ -155,6 +176,8 @@ int CliSession::request(const std::function<void(dev::Instrument::Callback)>& se
         return LinkTrouble;
     }
     if (error) {
+        if (error->kind == dev::RequestError::Kind::Device)
+            m_lastRefusal = error;
         report(error->message);
         return error->kind == dev::RequestError::Kind::Device || error->kind == dev::RequestError::Kind::Invalid ? Refused : LinkTrouble;
     }
@@ -163,6 +186,9 @@ int CliSession::request(const std::function<void(dev::Instrument::Callback)>& se
 
 int CliSession::waitUntilStill(const QString& what)
 {
+    // Asked to stop (the API's call.cancel or the GUI's Abort): the machine decelerates
+    // and the wait ends as the motion does.
+    const auto abortHook = m_inv.host().onAbort([this] { m_client->stop(); });
     // Two fresh status polls after the request was accepted, so "not moving" is news, not history.
     int fresh = 0;
     auto c = connect(m_client, &dev::Instrument::statusChanged, this, [&fresh] { ++fresh; });
@@ -213,15 +239,18 @@ void CliSession::printStatus()
                          {QStringLiteral("estop"), st.estop},
                          {QStringLiteral("fault"), st.fault},
                          {QStringLiteral("axes"), axes}};
-        m_out << QJsonDocument(root).toJson(QJsonDocument::Compact) << "\n";
-    } else {
-        m_out << QStringLiteral("%1%2\n").arg(id.kindName(), st.estop ? QStringLiteral("  [E-STOP]") : QString());
+        m_inv.printJson(root);
+        return;
+    }
+    {
+        QTextStream& out = m_inv.out();
+        out << QStringLiteral("%1%2\n").arg(id.kindName(), st.estop ? QStringLiteral("  [E-STOP]") : QString());
         if (st.positionLost)
-            m_out << "  " << QCoreApplication::translate("cli", "[ALARM] the controller does not trust its position: home, or `unlock` on your word")
-                  << "\n";
+            out << "  " << QCoreApplication::translate("cli", "[ALARM] the controller does not trust its position: home, or `unlock` on your word")
+                << "\n";
         for (int i = 0; i < id.axes.size() && i < st.axes.size(); ++i) {
             const auto& a = st.axes[i];
-            m_out << QStringLiteral("  %1  cmd %2  meas %3 %4  %5%6%7%8\n")
+            out << QStringLiteral("  %1  cmd %2  meas %3 %4  %5%6%7%8\n")
                          .arg(id.axes[i].letter)
                          .arg(num(a.commanded), 10)
                          .arg(num(a.measured), 10)
@@ -231,8 +260,8 @@ void CliSession::printStatus()
                          .arg(a.homeSwitch ? QStringLiteral(" home-switch") : QString())
                          .arg(a.limitSwitch ? QStringLiteral(" limit-switch") : QString());
         }
+        out.flush();
     }
-    m_out.flush();
 }
 
 } // namespace cli

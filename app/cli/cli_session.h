@@ -11,6 +11,7 @@
 #include <QTextStream>
 
 #include <functional>
+#include <optional>
 
 namespace dev {
 class BenchPilotClient;
@@ -22,8 +23,11 @@ namespace cli {
 class CliSession : public QObject {
     Q_OBJECT
 public:
-    /// `prefix` starts every message on stderr ("benchpilot-cli home").
-    CliSession(const LinkOptions& options, const QString& prefix, QTextStream& out, QTextStream& err);
+    /// A link of its own, to the instrument `options` name (benchpilot-cli's process).
+    CliSession(Invocation& inv, const LinkOptions& options);
+    /// An instrument someone else holds and keeps connected (the GUI's, for the API):
+    /// connectDevice() is not needed, and the session never disconnects it.
+    CliSession(Invocation& inv, dev::Instrument* instrument);
     ~CliSession() override;
 
     /// Opens the link and waits until the device is ready; false after saying why.
@@ -31,7 +35,8 @@ public:
     /// The instrument, whichever backend the connection speaks (a proxy in front of it).
     dev::Instrument* instrument() { return m_client; }
     const LinkOptions& options() const { return m_opt; }
-    /// The in-process simulator's link when that is what is connected, else nullptr.
+    /// The in-process simulator's link when that is what is connected, else nullptr
+    /// (always nullptr for an instrument the GUI holds: its clock is not ours to change).
     QObject* link() const { return m_link; }
 
     /// Sends one request and waits for its answer; prints a refusal. Returns an exit code.
@@ -44,23 +49,39 @@ public:
     void report(const QString& message);
     /// Limit hits, faults and the like seen since the last call.
     QStringList takeMotionErrors();
+    /// The device's last refusal seen through request() (the API names its code).
+    const std::optional<dev::RequestError>& lastRefusal() const { return m_lastRefusal; }
+    void noteRefusal(const dev::RequestError& e) { m_lastRefusal = e; }
+
+    /// Telemetry a job needs (channels at rateHz; empty withdraws). By default the
+    /// instrument's subscription is replaced; inside the GUI the host routes it
+    /// through the telemetry hub, so the plots keep what they show.
+    using TelemetryWish = std::function<void(const QVector<proto::ChannelRef>& channels, int rateHz)>;
+    void wantTelemetry(const QVector<proto::ChannelRef>& channels, int rateHz);
+    void setTelemetryWish(TelemetryWish wish) { m_telemetryWish = std::move(wish); }
 
 private:
     /// cli_session_port.cpp: the backend for a port — the profile's protocol, or the one a
     /// probe hears (a BenchPilot HELLO or a GRBL banner); false after saying why.
     bool choosePortBackend(dev::Transport* transport);
 
+    void watchMotionErrors();
+
+    Invocation& m_inv;
     LinkOptions m_opt;
-    QString m_prefix;
-    QTextStream& m_out;
-    QTextStream& m_err;
-    dev::InstrumentProxy* m_client;
+    dev::Instrument* m_client;
+    dev::InstrumentProxy* m_ownProxy = nullptr;  ///< set when the session made the connection
     QPointer<dev::BenchPilotClient> m_benchPilot;  ///< the backend, owned by the proxy
     QObject* m_link = nullptr;    ///< owns the transport (simulated link or serial port)
     QStringList m_motionErrors;   ///< limit hits and faults seen while waiting
+    std::optional<dev::RequestError> m_lastRefusal;
+    TelemetryWish m_telemetryWish;
+    bool m_wantedTelemetry = false;
 };
 
 /// Runs the event loop until `done` returns true or `timeoutMs` passes; false on timeout.
+/// On a Fiber (a command the API runs inside the GUI) it suspends the command instead
+/// of nesting an event loop (fiber.h); the commands never need to know.
 bool spinUntil(const std::function<bool()>& done, int timeoutMs);
 
 } // namespace cli

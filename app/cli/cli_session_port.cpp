@@ -62,14 +62,14 @@ bool CliSession::choosePortBackend(dev::Transport* transport)
             return false;
         }
         m_benchPilot = new dev::BenchPilotClient;
-        m_client->setBackend(m_benchPilot);
+        m_ownProxy->setBackend(m_benchPilot);
         m_benchPilot->setTransport(transport);
         return true;
     }
     // GRBL names no instrument: the profile's, else --instrument's, else the analyzer.
     const proto::DeviceKind kind = profile ? profile->instrument : asked.value_or(proto::DeviceKind::Analyzer);
     auto* grbl = new dev::GrblClient(profile ? *profile : files::defaultProfile(kind), !profile.has_value());
-    m_client->setBackend(grbl);
+    m_ownProxy->setBackend(grbl);
     grbl->setTransport(transport);
     return true;
 }

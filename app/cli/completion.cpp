@@ -85,7 +85,11 @@ void addCompletionCommand(std::vector<Command>& list)
 {
     list.push_back({QStringLiteral("completion"), QCoreApplication::translate("cli", "print a bash completion script"),
                     QStringLiteral("bash"), QCoreApplication::translate("cli", "Use: source <(benchpilot-cli completion bash)"),
-                    {}, run, {}});
+                    {}, run, {}, [] {
+                        ApiSpec a;
+                        a.offered = false;  // a shell's business, not a script's
+                        return a;
+                    }()});
 }
 
 } // namespace cli

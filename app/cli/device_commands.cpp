@@ -66,18 +66,16 @@ int info(Invocation& inv)
         for (dev::Capability c : dev::allCapabilities())
             if (can.testFlag(c))
                 features.append(QString::fromStdString(dev::capabilityKey(c)));
-        inv.out() << QJsonDocument(QJsonObject{{QStringLiteral("instrument"), id.kindName()},
-                                               {QStringLiteral("model"), id.model},
-                                               {QStringLiteral("firmware"), id.firmware},
-                                               {QStringLiteral("family"), id.family},
-                                               {QStringLiteral("protocol"), id.protocolVersion},
-                                               {QStringLiteral("capabilities"), static_cast<qint64>(id.protocolCapabilities)},
-                                               {QStringLiteral("features"), features},
-                                               {QStringLiteral("motion_profile"), profileName(id.motionProfile)},
-                                               {QStringLiteral("link_baud"), static_cast<qint64>(id.linkBaud)},
-                                               {QStringLiteral("axes"), axes}})
-                         .toJson(QJsonDocument::Compact)
-                  << "\n";
+        inv.printJson(QJsonObject{{QStringLiteral("instrument"), id.kindName()},
+                                  {QStringLiteral("model"), id.model},
+                                  {QStringLiteral("firmware"), id.firmware},
+                                  {QStringLiteral("family"), id.family},
+                                  {QStringLiteral("protocol"), id.protocolVersion},
+                                  {QStringLiteral("capabilities"), static_cast<qint64>(id.protocolCapabilities)},
+                                  {QStringLiteral("features"), features},
+                                  {QStringLiteral("motion_profile"), profileName(id.motionProfile)},
+                                  {QStringLiteral("link_baud"), static_cast<qint64>(id.linkBaud)},
+                                  {QStringLiteral("axes"), axes}});
     } else {
         inv.out() << id.model << " (" << id.kindName() << "), firmware " << id.firmware << ", " << id.family
                   << "\n  link: " << s->instrument()->linkDescription() << "\n";
@@ -158,14 +156,17 @@ int move(Invocation& inv)
 int jog(Invocation& inv)
 {
     const QStringList words = inv.arguments();
-    if (words.size() != 3)
+    // Without SECONDS only where a caller can hold a jog open (the API): it runs until
+    // device.stop or until that caller loses control.
+    const bool held = words.size() == 2 && inv.host().canHoldJog();
+    if (words.size() != 3 && !held)
         return inv.usage(tr("expected AXIS VELOCITY SECONDS"));
     bool ok1 = false, ok2 = false;
     const double v = words[1].toDouble(&ok1);
-    const double seconds = words[2].toDouble(&ok2);
+    const double seconds = held ? 0 : words[2].toDouble(&ok2);
     if (!ok1 || !std::isfinite(v))
         return inv.usage(tr("velocity '%1' is not a number").arg(words[1]));
-    if (!ok2 || seconds <= 0 || seconds > 600)
+    if (!held && (!ok2 || seconds <= 0 || seconds > 600))
         return inv.usage(tr("seconds must be in (0, 600]"));
     CliSession* s = inv.session();
     if (!s)
@@ -178,9 +179,26 @@ int jog(Invocation& inv)
         return inv.usage(tr("velocity must be within ±%1 %2/s").arg(id.axes[axis].maxSpeed).arg(id.axes[axis].unitName()));
     QString refused;
     dev::Instrument* c = s->instrument();
-    auto conn = QObject::connect(c, &dev::Instrument::requestFailed, s, [&](const dev::RequestError& e) { refused = e.message; });
+    auto conn = QObject::connect(c, &dev::Instrument::requestFailed, s, [&](const dev::RequestError& e) {
+        refused = e.message;
+        s->noteRefusal(e);
+    });
+    if (held) {
+        inv.host().holdJog(*s, axis, v);
+        // The device's answer (a refusal: not homed past a limit, E-stop) comes within a poll or two.
+        spinUntil([&] { return !refused.isEmpty() || c->state() != dev::LinkState::Ready; }, 150);
+        QObject::disconnect(conn);
+        if (!refused.isEmpty())
+            return inv.refused(refused);
+        s->printStatus();
+        return Ok;
+    }
+    // The caller losing control (the API's lease) stops the jog, as releasing a jog key does.
+    const auto lost = inv.host().onLostControl([c, axis] { c->stopJog(axis); });
+    const auto abortHook = inv.host().onAbort([c, axis] { c->stopJog(axis); });
     c->startJog(axis, v);
-    spinUntil([&] { return !refused.isEmpty() || c->state() != dev::LinkState::Ready; }, static_cast<int>(seconds * 1000));
+    spinUntil([&] { return !refused.isEmpty() || c->state() != dev::LinkState::Ready || !c->isJogging(axis); },
+              static_cast<int>(seconds * 1000));
     c->stopJog(axis);
     QObject::disconnect(conn);
     if (!refused.isEmpty())
@@ -301,7 +319,7 @@ int limits(Invocation& inv)
         QJsonObject o;
         for (int i = 0; i < id.axes.size() && i < lim.size(); ++i)
             o.insert(QString(id.axes[i].letter), QJsonArray{lim[i].min, lim[i].max});
-        inv.out() << QJsonDocument(QJsonObject{{QStringLiteral("soft_limits"), o}}).toJson(QJsonDocument::Compact) << "\n";
+        inv.printJson(QJsonObject{{QStringLiteral("soft_limits"), o}});
     } else {
         for (int i = 0; i < id.axes.size() && i < lim.size(); ++i)
             inv.out() << "  " << id.axes[i].letter << ": " << lim[i].min << " … " << lim[i].max << " " << id.axes[i].unitName() << "\n";
@@ -317,29 +335,70 @@ void addDeviceCommands(std::vector<Command>& list)
     const QCommandLineOption relative(QStringLiteral("relative"), tr("targets are distances from where the axes are"));
     const QCommandLineOption speed(QStringLiteral("speed"), tr("path speed in the unit of the first axis named, per second"),
                                    QStringLiteral("V"));
-    list.push_back({QStringLiteral("info"), tr("device identity, axes, travel, resolution"), {}, {}, {}, info, {}});
-    list.push_back({QStringLiteral("status"), tr("positions (commanded and measured), homed, moving, switches"), {}, {}, {}, status, {}});
+    auto api = [](const char* method, Access access, QList<ApiParam> params = {}, QJsonObject example = {}) {
+        ApiSpec a;
+        a.method = QString::fromLatin1(method);
+        a.access = access;
+        a.params = std::move(params);
+        a.example = std::move(example);
+        return a;
+    };
+    const QJsonObject stage{{QStringLiteral("instrument"), QStringLiteral("stage")}};
+    auto withStage = [&stage](std::initializer_list<std::pair<QString, QJsonValue>> more) {
+        QJsonObject o = stage;
+        for (const auto& [k, v] : more)
+            o.insert(k, v);
+        return o;
+    };
+    list.push_back({QStringLiteral("info"), tr("device identity, axes, travel, resolution"), {}, {}, {}, info, {},
+                    api("device.info", Access::Read, {}, stage)});
+    list.push_back({QStringLiteral("status"), tr("positions (commanded and measured), homed, moving, switches"), {}, {}, {}, status, {},
+                    api("device.status", Access::Read, {}, stage)});
     list.push_back({QStringLiteral("home"), tr("home the axes (all when none given), wait until done"), QStringLiteral("[AXES]"),
-                    tr("The analyzer lifts Z first. AXES are letters, e.g. 'XY'."), {}, home, {}});
+                    tr("The analyzer lifts Z first. AXES are letters, e.g. 'XY'."), {}, home, {},
+                    api("device.home", Access::Control,
+                        {{QStringLiteral("axes"), ParamType::Axes, tr("the axes to home, e.g. \"XY\"; all when left out"), false, {}, {}}},
+                        withStage({{QStringLiteral("axes"), QStringLiteral("X")}}))});
     list.push_back({QStringLiteral("move"), tr("move and wait until done (mm, µL for P)"), QStringLiteral("AXIS=VALUE..."),
                     tr("Absolute moves need homed axes; targets beyond the soft limits are refused by the device."),
-                    {relative, speed}, move, {}});
+                    {relative, speed}, move, {},
+                    api("device.move", Access::Control,
+                        {{QStringLiteral("targets"), ParamType::AxisValues, tr("axis → target, e.g. {\"X\": 10, \"Y\": 5}"), true, {}, {}},
+                         {QStringLiteral("speed"), ParamType::Number, {}, false, QStringLiteral("speed"), {}}},
+                        withStage({{QStringLiteral("targets"), QJsonObject{{QStringLiteral("X"), 10}, {QStringLiteral("Y"), 5}}},
+                                   {QStringLiteral("relative"), true}}))});
     list.push_back({QStringLiteral("jog"), tr("velocity jog for SECONDS, then stop and wait until still"),
                     QStringLiteral("AXIS VELOCITY SECONDS"),
-                    tr("The jog is refreshed while it runs; if this program dies the device stops the axis by itself."), {}, jog, {}});
-    list.push_back({QStringLiteral("stop"), tr("decelerate all axes to rest"), {}, {}, {}, stop, {}});
-    list.push_back({QStringLiteral("estop"), tr("halt at once and latch the E-stop"), {}, {}, {}, estop, {}});
-    list.push_back({QStringLiteral("reset"), tr("clear the E-stop latch"), {}, {}, {}, reset, {}});
+                    tr("The jog is refreshed while it runs; if this program dies the device stops the axis by itself."), {}, jog, {},
+                    api("device.jog", Access::Control,
+                        {{QStringLiteral("axis"), ParamType::Axis, tr("the axis letter"), true, {}, {}},
+                         {QStringLiteral("velocity"), ParamType::Number, tr("axis units per second, signed"), true, {}, {}},
+                         {QStringLiteral("seconds"), ParamType::Number,
+                          tr("jog this long, then stop and wait until still; without it the jog runs until device.stop, "
+                             "or until the lease or the connection ends"),
+                          false, {}, {}}},
+                        withStage({{QStringLiteral("axis"), QStringLiteral("X")}, {QStringLiteral("velocity"), 2}, {QStringLiteral("seconds"), 0.5}}))});
+    list.push_back({QStringLiteral("stop"), tr("decelerate all axes to rest"), {}, {}, {}, stop, {}, api("device.stop", Access::Safety, {}, stage)});
+    list.push_back({QStringLiteral("estop"), tr("halt at once and latch the E-stop"), {}, {}, {}, estop, {},
+                    api("device.estop", Access::Safety, {}, stage)});
+    list.push_back({QStringLiteral("reset"), tr("clear the E-stop latch"), {}, {}, {}, reset, {}, api("device.reset", Access::Control, {}, stage)});
     list.push_back({QStringLiteral("zero"), tr("make the current position zero"), QStringLiteral("AXES"),
                     tr("On a GRBL controller without homing ($22=0) this takes the present position as home, on your word: "
                        "absolute moves are allowed after it."),
-                    {}, zero, {}});
+                    {}, zero, {},
+                    api("device.zero", Access::Control,
+                        {{QStringLiteral("axes"), ParamType::Axes, tr("the axes to zero, e.g. \"XY\""), true, {}, {}}},
+                        withStage({{QStringLiteral("axes"), QStringLiteral("XY")}}))});
     list.push_back({QStringLiteral("unlock"), tr("accept the position a controller believes after an alarm (GRBL's $X)"), {},
                     tr("After an alarm that lost the position (a reset while moving, an E-stop, a hard limit) a GRBL controller "
                        "refuses motion until it is homed or unlocked. Unlocking takes its idea of the position as true: home "
                        "when you can."),
-                    {}, unlock, {}});
-    list.push_back({QStringLiteral("limits"), tr("show or set soft limits"), QStringLiteral("[AXIS=MIN:MAX...]"), {}, {}, limits, {}});
+                    {}, unlock, {}, api("device.unlock", Access::Control, {}, stage)});
+    ApiSpec limitsApi = api("device.limits", Access::Control,
+                            {{QStringLiteral("limits"), ParamType::AxisRanges, tr("axis → [min, max] to set; shows them when left out"), false, {}, {}}},
+                            withStage({{QStringLiteral("limits"), QJsonObject{{QStringLiteral("X"), QJsonArray{0, 50}}}}}));
+    limitsApi.readsWithoutArguments = true;
+    list.push_back({QStringLiteral("limits"), tr("show or set soft limits"), QStringLiteral("[AXIS=MIN:MAX...]"), {}, {}, limits, {}, limitsApi});
 }
 
 } // namespace cli

@@ -2,6 +2,7 @@
 #include "command.h"
 
 #include <QCoreApplication>
+#include <QJsonDocument>
 
 #include <cmath>
 
@@ -25,8 +26,9 @@ QString markNegative(const QString& word)
     return word;
 }
 
-Invocation::Invocation(QString path, QCommandLineParser& parser, LinkOptions link, QTextStream& out, QTextStream& err)
-    : m_path(std::move(path)), m_parser(parser), m_link(std::move(link)), m_out(out), m_err(err)
+Invocation::Invocation(QString path, QCommandLineParser& parser, LinkOptions link, QTextStream& out, QTextStream& err,
+                       InvocationHost& host)
+    : m_path(std::move(path)), m_parser(parser), m_link(std::move(link)), m_out(out), m_err(err), m_host(host)
 {
 }
 
@@ -53,8 +55,17 @@ QStringList Invocation::arguments() const
 
 void Invocation::report(const QString& message)
 {
+    m_reports << message;
+    m_host.reported(message);
     m_err << "benchpilot-cli " << m_path << ": " << message << "\n";
     m_err.flush();
+}
+
+void Invocation::printJson(const QJsonObject& object)
+{
+    m_out << QJsonDocument(object).toJson(QJsonDocument::Compact) << "\n";
+    m_out.flush();
+    m_host.printedJson(object);
 }
 
 int Invocation::usage(const QString& message)
@@ -120,17 +131,16 @@ bool Invocation::numbers(const QString& option, QVector<double>& values, int cou
 
 CliSession* Invocation::session()
 {
-    if (m_session)
-        return m_session.get();
-    LinkOptions o = m_link;  // runCli has refused --sim with --port
-    if (o.sim.isEmpty() && o.port.isEmpty())
-        o.sim = QStringLiteral("analyzer");
-    m_session = std::make_unique<CliSession>(o, QStringLiteral("benchpilot-cli ") + m_path, m_out, m_err);
-    if (!m_session->connectDevice()) {
-        m_session.reset();
-        return nullptr;
-    }
+    if (!m_session)
+        m_session = m_host.openSession(*this);
     return m_session.get();
+}
+
+ApiParam optionParam(const char* option, ParamType type, bool required)
+{
+    QString name = QString::fromLatin1(option);
+    name.replace(QLatin1Char('-'), QLatin1Char('_'));
+    return ApiParam{name, type, {}, required, QString::fromLatin1(option), {}};
 }
 
 QCommandLineOption option(const char* name, const char* description, const char* valueName, const char* fallback)

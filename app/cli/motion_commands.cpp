@@ -38,12 +38,6 @@ QString optionForField(const std::string& message)
     return {};
 }
 
-void printJson(QTextStream& out, const QJsonObject& object)
-{
-    out << QJsonDocument(object).toJson(QJsonDocument::Compact) << "\n";
-    out.flush();
-}
-
 QJsonArray samplesJson(const std::vector<motion::ProfileSample>& samples)
 {
     QJsonArray a;
@@ -71,7 +65,6 @@ bool readRequest(Invocation& o, motion::ProfileRequest& r)
 
 int runProfile(Invocation& o)
 {
-    QTextStream& out = o.out();
     motion::ProfileRequest request;
     QVector<double> distances;
     double dt = 0;
@@ -112,7 +105,7 @@ int runProfile(Invocation& o)
         json.insert("duration", T);
         json.insert("axes", axes);
     }
-    printJson(out, json);
+    o.printJson(json);
     return 0;
 }
 
@@ -126,7 +119,6 @@ QJsonArray pointsJson(const std::vector<motion::GridPoint>& grid, double step, d
 
 int runInterpolate(Invocation& o)
 {
-    QTextStream& out = o.out();
     const QString shape = o.value(QStringLiteral("shape"));
     double step = 0;
     if (!o.number(QStringLiteral("step"), step, shape == QLatin1String("sine") || shape == QLatin1String("cosine") ? std::optional(0.001) : std::nullopt))
@@ -208,7 +200,7 @@ int runInterpolate(Invocation& o)
     json.insert("steps", qint64(grid.size()) - 1);
     json.insert("max_contour_error", maxErrorMm);
     json.insert("points", pointsJson(grid, step, x0, y0));
-    printJson(out, json);
+    o.printJson(json);
     return 0;
 }
 
@@ -232,7 +224,6 @@ QJsonObject tableJson(const motion::StepTable& t, double clockHz)
 
 int runStepTable(Invocation& o)
 {
-    QTextStream& out = o.out();
     motion::StepTimerConfig timer;
     double interruptUs = 50;
     if (!o.number(QStringLiteral("clock-hz"), timer.clockHz, 72e6)
@@ -283,13 +274,12 @@ int runStepTable(Invocation& o)
     QJsonObject json = tableJson(motion::buildStepTable(instants, timer), timer.clockHz);
     for (auto it = extra.begin(); it != extra.end(); ++it)
         json.insert(it.key(), it.value());
-    printJson(out, json);
+    o.printJson(json);
     return 0;
 }
 
 int runBlocks(Invocation& o)
 {
-    QTextStream& out = o.out();
     double vMax = 0;
     if (!o.number(QStringLiteral("vmax"), vMax, 32767.0))
         return kExitUsage;
@@ -330,7 +320,7 @@ int runBlocks(Invocation& o)
     QJsonArray frames;
     for (const auto& f : motion::interleaveBlockFrames(blocks))
         frames.append(QString::fromStdString(motion::canFrameToHex(f)));
-    printJson(out, QJsonObject{{"joints", jointsJson}, {"frames", frames}});
+    o.printJson(QJsonObject{{"joints", jointsJson}, {"frames", frames}});
     return 0;
 }
 
@@ -368,8 +358,23 @@ void addMotionCommands(std::vector<Command>& list)
     auto tr = [](const char* t) { return QCoreApplication::translate("cli", t); };
     QList<QCommandLineOption> profile = profileLimits();
     profile << opt("dt", "sample period of the output, s", "S", "0.01");
+    auto compute = [](const char* method, QList<ApiParam> params, QJsonObject example) {
+        ApiSpec a;
+        a.method = QString::fromLatin1(method);
+        a.access = Access::Compute;
+        a.params = std::move(params);
+        a.example = std::move(example);
+        return a;
+    };
+    auto number = [](const char* name) { return optionParam(name, ParamType::Number); };
+    auto numbers = [](const char* name) { return optionParam(name, ParamType::Numbers); };
+    const QList<ApiParam> limitParams{numbers("distance"), number("vmax"), number("amax"), number("jmax"), number("accel-time"),
+                                      number("start-speed"), number("plateau")};
     list.push_back({QStringLiteral("profile"), tr("plan a motion profile and print s, v, a, j samples (JSON)"), {},
-                    tr("See docs/motion.md for the profiles and the seeds they come from."), profile, optionsOnly(runProfile), {}});
+                    tr("See docs/motion.md for the profiles and the seeds they come from."), profile, optionsOnly(runProfile), {},
+                    compute("motion.profile", limitParams + QList<ApiParam>{number("dt")},
+                            QJsonObject{{QStringLiteral("kind"), QStringLiteral("trapezoid")}, {QStringLiteral("distance"), QJsonArray{2}},
+                                        {QStringLiteral("vmax"), 10}, {QStringLiteral("amax"), 100}, {QStringLiteral("dt"), 0.1}})});
     list.push_back({QStringLiteral("interpolate"), tr("point-by-point line or arc, or sine/cosine by chords (JSON)"), {},
                     tr("line: --to X,Y [--from X,Y]; arc: --start, --center, --to, --dir cw|ccw; "
                        "sine|cosine: --amplitude, --wavelength, --length, --tolerance. All need --step (mm)."),
@@ -379,7 +384,12 @@ void addMotionCommands(std::vector<Command>& list)
                      opt("step", "one step of the machine, mm", "MM"), opt("amplitude", "sine/cosine amplitude, mm", "MM"),
                      opt("wavelength", "sine/cosine wavelength, mm", "MM"), opt("length", "sine/cosine length along X, mm", "MM"),
                      opt("tolerance", "largest chord deviation from the curve, mm", "MM")},
-                    optionsOnly(runInterpolate), {}});
+                    optionsOnly(runInterpolate), {},
+                    compute("motion.interpolate",
+                            {numbers("from"), numbers("to"), numbers("start"), numbers("center"), number("step"), number("amplitude"),
+                             number("wavelength"), number("length"), number("tolerance")},
+                            QJsonObject{{QStringLiteral("shape"), QStringLiteral("line")}, {QStringLiteral("to"), QJsonArray{0.5, 0.25}},
+                                        {QStringLiteral("step"), 0.1}})});
     QList<QCommandLineOption> steps = profileLimits();
     steps << opt("step", "one step of the motor, mm", "MM") << opt("clock-hz", "timer clock, Hz", "HZ", "72000000")
           << opt("interrupt-us", "interrupt period, µs", "US", "50") << opt("min-rate", "slowest step rate, Hz", "HZ", "80")
@@ -390,12 +400,24 @@ void addMotionCommands(std::vector<Command>& list)
           << opt("plateau-steps", "seed 001: start and end plateau, steps", "N");
     list.push_back({QStringLiteral("steptable"), tr("seed 001 step-period table of a profile or of seed 001's own move (JSON)"), {},
                     tr("Whole interrupt periods plus a remainder per step, with the zero-match correction."), steps,
-                    optionsOnly(runStepTable), {}});
+                    optionsOnly(runStepTable), {},
+                    compute("motion.steptable",
+                            limitParams + QList<ApiParam>{number("step"), number("clock-hz"), number("interrupt-us"), number("min-rate"),
+                                                          number("max-rate"), number("total-steps"), number("start-rate"), number("top-rate"),
+                                                          number("accel"), number("decel"), number("plateau-steps")},
+                            QJsonObject{{QStringLiteral("total_steps"), 20}, {QStringLiteral("start_rate"), 500}, {QStringLiteral("top_rate"), 2000},
+                                        {QStringLiteral("accel"), 100000}})});
     list.push_back({QStringLiteral("blocks"), tr("plan seed 004 blocks per joint and pack them into CAN frames (JSON)"), {},
                     tr("--joint S:V2:t0_ms,S:V2:t0_ms,… once per joint."),
                     {opt("joint", "one joint's blocks S:V2:t0_ms,…; repeat for more joints", "BLOCKS"),
                      opt("vmax", "largest speed, steps/s", "V", "32767")},
-                    optionsOnly(runBlocks), {}});
+                    optionsOnly(runBlocks), {},
+                    compute("motion.blocks",
+                            {{QStringLiteral("joint"), ParamType::Text,
+                              tr("one joint's blocks \"S:V2:t0_ms,…\"; an array of such strings for several joints"), true,
+                              QStringLiteral("joint"), {}},
+                             number("vmax")},
+                            QJsonObject{{QStringLiteral("joint"), QJsonArray{QStringLiteral("100:200:500")}}})});
 }
 
 } // namespace cli

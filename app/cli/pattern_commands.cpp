@@ -92,7 +92,7 @@ std::optional<motion::plans::Pattern> patternFrom(Invocation& inv)
     motion::plans::Pattern p;
     if (inv.isSet(QStringLiteral("file"))) {
         QString error;
-        if (!files::loadPatternFile(inv.value(QStringLiteral("file")), &p, &error)) {
+        if (!files::loadPatternFile(inv.path(inv.value(QStringLiteral("file"))), &p, &error)) {
             inv.usage(error.trimmed());
             return std::nullopt;
         }
@@ -223,7 +223,7 @@ int plan(Invocation& inv)
                              {QStringLiteral("timed_for"), instrument},
                              {QStringLiteral("bounds_mm"), QJsonArray{box.minX, box.minY, box.maxX, box.maxY}}};
     if (inv.json()) {
-        inv.out() << QJsonDocument(result).toJson(QJsonDocument::Compact) << "\n";
+        inv.printJson(result);
     } else {
         inv.out() << tr("%1: %2 segments, %3 mm, about %4 s on the %5 simulator's limits\n")
                          .arg(QString::fromLatin1(motion::plans::shapeName(p->shape)))
@@ -280,15 +280,16 @@ int run(Invocation& inv)
     });
     QObject::connect(c, &dev::Instrument::telemetryReceived, &runner,
                      [&](const proto::TelemetryBatch& b) { jobs::feedBatch(runner, *c, b); });
-    c->subscribe(jobs::patternChannels(), 250);
+    s->wantTelemetry(jobs::patternChannels(), 250);
     jobs::PatternRunner::Options o;
     o.zMm = p->zMm;
     if (!runner.start(path, o)) {
         QString why = problems.join(QLatin1Char(' '));
-        if (!inv.link().sim.isEmpty() && why.contains(QStringLiteral("not homed")))
+        if (!inv.link().sim.isEmpty() && !inv.host().insideGui() && why.contains(QStringLiteral("not homed")))
             why += tr(" (every --sim command starts a fresh simulator: add --home-first)");
         return inv.refused(why);
     }
+    const auto abortHook = inv.host().onAbort([&runner] { runner.abort(); });  // the API's cancel
     const bool finished = spinUntil([&] { return !runner.busy(); }, static_cast<int>(inv.link().timeoutS * 1000));
     if (!finished) {
         runner.abort();
@@ -311,7 +312,7 @@ int run(Invocation& inv)
                              {QStringLiteral("sample_rate_hz"), c->subscribedRateHz()},
                              {QStringLiteral("underruns"), sum.underruns}};
     if (inv.json())
-        inv.out() << QJsonDocument(result).toJson(QJsonDocument::Compact) << "\n";
+        inv.printJson(result);
     else
         inv.out() << tr("%1 on the %2: %3 of %4 segments in %5 s; contour error max %6 µm, RMS %7 µm (%8 samples at %9 Hz)\n")
                          .arg(QString::fromLatin1(motion::plans::shapeName(p->shape)), c->identity().kindName())
@@ -330,6 +331,24 @@ int run(Invocation& inv)
 
 } // namespace
 
+/// The pattern options with their JSON types (points are [x, y], lengths numbers).
+QList<ApiParam> patternParams()
+{
+    QList<ApiParam> p;
+    for (const char* point : {"from", "to", "corner", "center", "origin"})
+        p << optionParam(point, ParamType::Numbers);
+    for (const char* number : {"feed", "width", "height", "radius", "start-deg", "sweep-deg", "amplitude", "wavelength", "length",
+                               "angle-deg", "tolerance", "start-radius", "pitch", "turns", "spacing", "z-height"})
+        p << optionParam(number, ParamType::Number);
+    ApiParam file = optionParam("file", ParamType::File);
+    p << file;
+    ApiParam shape = optionParam("shape", ParamType::Text);
+    shape.choices = QStringList{QStringLiteral("line"), QStringLiteral("rectangle"), QStringLiteral("circle"), QStringLiteral("arc"),
+                                QStringLiteral("sine"), QStringLiteral("cosine"), QStringLiteral("spiral"), QStringLiteral("raster")};
+    p << shape;
+    return p;
+}
+
 void addPatternCommands(std::vector<Command>& list)
 {
     Command pattern;
@@ -339,12 +358,22 @@ void addPatternCommands(std::vector<Command>& list)
                              "--file reads a *.pattern.json; shape options then change it.");
     Command planCmd{QStringLiteral("plan"), tr("print the segments, length and estimated time without moving"), {},
                     tr("Timed on the limits of the simulator --sim names (the stage when none)."), patternOptions(), plan, {}};
+    planCmd.api.access = Access::Compute;
+    planCmd.api.instrumentParam = true;
+    planCmd.api.params = patternParams();
+    planCmd.api.example = QJsonObject{{QStringLiteral("shape"), QStringLiteral("circle")}, {QStringLiteral("radius"), 2},
+                                      {QStringLiteral("center"), QJsonArray{50, 50}}, {QStringLiteral("feed"), 5}};
     QList<QCommandLineOption> runOptions = patternOptions();
     runOptions << option("home-first", "home every axis before the run (a fresh --sim simulator is not homed)");
     Command runCmd{QStringLiteral("run"), tr("run the pattern on the instrument; print max and RMS contour error (µm) and duration"), {},
                    tr("Moves to the pattern's start (XY, then Z on the analyzer), streams the segments into the device's path "
                       "queue and judges the measured XY from telemetry against the path. Exit 2 if it is refused or does not complete."),
                    runOptions, run, {}};
+    runCmd.api.access = Access::Control;
+    runCmd.api.params = patternParams();
+    runCmd.api.example = QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")}, {QStringLiteral("shape"), QStringLiteral("circle")},
+                                     {QStringLiteral("radius"), 1}, {QStringLiteral("center"), QJsonArray{50, 50}},
+                                     {QStringLiteral("feed"), 5}};
     pattern.subcommands = {planCmd, runCmd};
     list.push_back(pattern);
 }

@@ -56,14 +56,12 @@ int validate(Invocation& inv)
         QJsonArray errors, warnings;
         for (const QString& m : l.messages)
             (m.contains(QStringLiteral(": warning: ")) ? warnings : errors).append(m);
-        inv.out() << QJsonDocument(QJsonObject{{QStringLiteral("file"), l.path},
-                                               {QStringLiteral("ok"), l.ok()},
-                                               {QStringLiteral("errors"), errors},
-                                               {QStringLiteral("warnings"), warnings},
-                                               {QStringLiteral("ops"), static_cast<int>(l.plan.ops.size())},
-                                               {QStringLiteral("total_time_s"), l.plan.totalTimeS}})
-                         .toJson(QJsonDocument::Compact)
-                  << "\n";
+        inv.printJson(QJsonObject{{QStringLiteral("file"), l.path},
+                                  {QStringLiteral("ok"), l.ok()},
+                                  {QStringLiteral("errors"), errors},
+                                  {QStringLiteral("warnings"), warnings},
+                                  {QStringLiteral("ops"), static_cast<int>(l.plan.ops.size())},
+                                  {QStringLiteral("total_time_s"), l.plan.totalTimeS}});
     } else {
         for (const QString& m : l.messages)
             (m.contains(QStringLiteral(": warning: ")) ? inv.out() : inv.err()) << m << "\n";
@@ -123,18 +121,16 @@ int plan(Invocation& inv)
         QJsonArray warnings;
         for (const auto& m : l.messages)
             warnings.append(m);
-        inv.out() << QJsonDocument(QJsonObject{{QStringLiteral("recipe"), QString::fromStdString(l.recipe.name)},
-                                               {QStringLiteral("fingerprint"), QString::fromStdString(plates::fingerprintHex(p.fingerprint))},
-                                               {QStringLiteral("total_time_s"), r6(p.totalTimeS)},
-                                               {QStringLiteral("dispensed_ul"), r6(p.totalDispensedUl)},
-                                               {QStringLiteral("aspirated_ul"), r6(p.totalAspiratedUl)},
-                                               {QStringLiteral("pump_start_ul"), r6(p.pumpStartUl)},
-                                               {QStringLiteral("pump_end_ul"), r6(p.pumpEndUl)},
-                                               {QStringLiteral("warnings"), warnings},
-                                               {QStringLiteral("ops"), ops},
-                                               {QStringLiteral("wells"), wells}})
-                         .toJson(QJsonDocument::Compact)
-                  << "\n";
+        inv.printJson(QJsonObject{{QStringLiteral("recipe"), QString::fromStdString(l.recipe.name)},
+                                  {QStringLiteral("fingerprint"), QString::fromStdString(plates::fingerprintHex(p.fingerprint))},
+                                  {QStringLiteral("total_time_s"), r6(p.totalTimeS)},
+                                  {QStringLiteral("dispensed_ul"), r6(p.totalDispensedUl)},
+                                  {QStringLiteral("aspirated_ul"), r6(p.totalAspiratedUl)},
+                                  {QStringLiteral("pump_start_ul"), r6(p.pumpStartUl)},
+                                  {QStringLiteral("pump_end_ul"), r6(p.pumpEndUl)},
+                                  {QStringLiteral("warnings"), warnings},
+                                  {QStringLiteral("ops"), ops},
+                                  {QStringLiteral("wells"), wells}});
     } else {
         for (const auto& m : l.messages)
             inv.out() << m << "\n";
@@ -165,14 +161,24 @@ int plan(Invocation& inv)
 void addRecipeCommands(std::vector<Command>& list)
 {
     const QList<QCommandLineOption> setupOptions = recipeSetupOptions();
+    auto api = [&](const char* method, Access access) {
+        ApiSpec a;
+        a.method = QString::fromLatin1(method);
+        a.access = access;
+        a.params = {{QStringLiteral("file"), ParamType::File, tr("the recipe file"), true, {}, {}},
+                    optionParam("deck", ParamType::File), optionParam("calibration", ParamType::Text)};
+        a.example = QJsonObject{{QStringLiteral("file"), QStringLiteral("resources/examples/reagent-transfer.recipe.json")},
+                                {QStringLiteral("calibration"), QStringLiteral("none")}};
+        return a;
+    };
     Command recipe{QStringLiteral("recipe"), tr("validate, plan and run dispensing recipes on the analyzer (docs/recipes.md)"), {}, {}, {}, {}, {}};
     recipe.subcommands.push_back({QStringLiteral("validate"), tr("check a recipe: every problem with its line, column and field"),
                                   QStringLiteral("FILE"),
                                   tr("Exit 0 when the recipe can run (warnings allowed), 1 with every error otherwise. Nothing moves."),
-                                  setupOptions, validate, {}});
+                                  setupOptions, validate, {}, api("recipe.validate", Access::Compute)});
     recipe.subcommands.push_back({QStringLiteral("plan"), tr("the dry run: each op and move with well, x, y, z, volume, and the total time"),
                                   QStringLiteral("FILE"), tr("Planned from the machine at home (0, 0, 0) with an empty syringe. Nothing moves."),
-                                  setupOptions, plan, {}});
+                                  setupOptions, plan, {}, api("recipe.plan", Access::Compute)});
     QList<QCommandLineOption> runOptions = setupOptions;
     runOptions << QCommandLineOption(QStringLiteral("log"), tr("the run log to write (a new file; default RECIPE-DATE.run.jsonl here)"),
                                      QStringLiteral("RUN.jsonl"))
@@ -185,7 +191,18 @@ void addRecipeCommands(std::vector<Command>& list)
     recipe.subcommands.push_back({QStringLiteral("run"), tr("run a recipe, logging every well so it can be resumed"), QStringLiteral("FILE"),
                                   tr("Prints a line per well (one JSON object with --json). Ctrl+C aborts: the tip rises and the log "
                                      "can resume. Exit 2 when the device refuses or the run stops, 3 when the link is lost."),
-                                  runOptions, runRecipe, {}});
+                                  runOptions, runRecipe, {}, [&] {
+                                      ApiSpec a = api("recipe.run", Access::Control);
+                                      a.params << optionParam("log", ParamType::File) << optionParam("resume", ParamType::File);
+                                      ApiParam interrupted = optionParam("interrupted", ParamType::Text);
+                                      interrupted.choices = QStringList{QStringLiteral("skip"), QStringLiteral("redo")};
+                                      a.params << interrupted;
+                                      a.example.insert(QStringLiteral("file"), QStringLiteral("resources/examples/api-two-wells.recipe.json"));
+                                      a.example.insert(QStringLiteral("log"), QStringLiteral("two-wells.run.jsonl"));
+                                      a.example.insert(QStringLiteral("instrument"), QStringLiteral("analyzer"));
+                                      a.example.insert(QStringLiteral("home"), true);
+                                      return a;
+                                  }()});
     list.push_back(std::move(recipe));
 }
 

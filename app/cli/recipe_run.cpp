@@ -1,6 +1,7 @@
 // benchpilot-cli recipe run: a recipe on the analyzer through jobs::RecipeRunner,
-// a line per well, resumable from its run log. Ctrl+C (or SIGTERM) aborts
-// cleanly: the machine stops, the tip rises, the log says where it stopped.
+// a line per well, resumable from its run log. Ctrl+C (or SIGTERM; call.cancel
+// through the API) aborts cleanly: the machine stops, the tip rises, the log says
+// where it stopped.
 #include "cli_session.h"
 #include "recipe_setup.h"
 
@@ -13,58 +14,13 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QRegularExpression>
-#include <QSocketNotifier>
 
-#include <csignal>
 #include <cmath>
-#include <sys/socket.h>
-#include <unistd.h>
 
 namespace cli {
 namespace {
 
 QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
-
-int g_signalPipe[2] = {-1, -1};
-void onSignal(int)
-{
-    const char c = 1;
-    [[maybe_unused]] const auto n = ::write(g_signalPipe[1], &c, 1);
-}
-
-/// SIGINT / SIGTERM call `abort` on the event loop while alive.
-class AbortOnSignal {
-public:
-    explicit AbortOnSignal(const std::function<void()>& abort)
-    {
-        if (::socketpair(AF_UNIX, SOCK_STREAM, 0, g_signalPipe) != 0)
-            return;
-        m_notifier = std::make_unique<QSocketNotifier>(g_signalPipe[0], QSocketNotifier::Read);
-        QObject::connect(m_notifier.get(), &QSocketNotifier::activated, m_notifier.get(), [abort] {
-            char c;
-            [[maybe_unused]] const auto n = ::read(g_signalPipe[0], &c, 1);
-            abort();
-        });
-        m_oldInt = std::signal(SIGINT, onSignal);
-        m_oldTerm = std::signal(SIGTERM, onSignal);
-    }
-    ~AbortOnSignal()
-    {
-        if (!m_notifier)
-            return;
-        std::signal(SIGINT, m_oldInt);
-        std::signal(SIGTERM, m_oldTerm);
-        m_notifier.reset();
-        ::close(g_signalPipe[0]);
-        ::close(g_signalPipe[1]);
-        g_signalPipe[0] = g_signalPipe[1] = -1;
-    }
-
-private:
-    std::unique_ptr<QSocketNotifier> m_notifier;
-    void (*m_oldInt)(int) = SIG_DFL;
-    void (*m_oldTerm)(int) = SIG_DFL;
-};
 
 QString clock(double s)
 {
@@ -72,11 +28,6 @@ QString clock(double s)
     return QStringLiteral("%1:%2").arg(t / 60).arg(t % 60, 2, 10, QLatin1Char('0'));
 }
 
-void jsonLine(QTextStream& out, const QJsonObject& o)
-{
-    out << QJsonDocument(o).toJson(QJsonDocument::Compact) << "\n";
-    out.flush();
-}
 
 } // namespace
 
@@ -98,15 +49,15 @@ int runRecipe(Invocation& inv)
     }
     QString logPath;
     if (resuming) {
-        logPath = inv.value(QStringLiteral("resume"));
+        logPath = inv.path(inv.value(QStringLiteral("resume")));
         if (!QFileInfo::exists(logPath))
             return inv.usage(tr("no run log %1 to resume").arg(logPath));
     } else if (inv.isSet(QStringLiteral("log"))) {
-        logPath = inv.value(QStringLiteral("log"));
+        logPath = inv.path(inv.value(QStringLiteral("log")));
     } else {
         QString stem = QFileInfo(l.path).fileName();
         stem.remove(QRegularExpression(QStringLiteral("(\\.recipe)?\\.json$")));
-        logPath = QStringLiteral("%1-%2.run.jsonl").arg(stem, QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")));
+        logPath = inv.path(QStringLiteral("%1-%2.run.jsonl").arg(stem, QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"))));
     }
     if (!resuming && QFileInfo::exists(logPath))
         return inv.usage(tr("%1 exists: a run log is never overwritten (continue it with --resume, or name another with --log)").arg(logPath));
@@ -147,7 +98,7 @@ int runRecipe(Invocation& inv)
     QTextStream& out = inv.out();
     QObject::connect(&runner, &jobs::RecipeRunner::message, &runner, [&](const QString& text, bool problem) {
         if (inv.json())
-            jsonLine(out, QJsonObject{{QStringLiteral("event"), problem ? QStringLiteral("problem") : QStringLiteral("note")},
+            inv.printJson(QJsonObject{{QStringLiteral("event"), problem ? QStringLiteral("problem") : QStringLiteral("note")},
                                       {QStringLiteral("text"), text}});
         else
             (problem ? inv.err() : out) << text << "\n";
@@ -170,7 +121,7 @@ int runRecipe(Invocation& inv)
                 line.insert(QStringLiteral("plate"), QString::fromStdString(o.plate));
                 line.insert(QStringLiteral("well"), QString::fromStdString(o.well));
             }
-            jsonLine(out, line);
+            inv.printJson(line);
         } else {
             out << QStringLiteral("[%1/%2] %3 · %4 elapsed · ETA %5\n")
                        .arg(p.opsDone, QString::number(p.opsTotal).size())
@@ -190,7 +141,8 @@ int runRecipe(Invocation& inv)
         needDecision = true;
         return jobs::InterruptedChoice::Cancel;
     };
-    AbortOnSignal onSignal([&runner, &inv] {
+    // Ctrl+C here, a cancelled call through the GUI's API.
+    const auto interrupt = inv.host().onInterrupt([&runner, &inv] {
         inv.report(tr("interrupted: aborting (the tip rises, the log can resume)"));
         runner.abort();
     });
@@ -207,7 +159,7 @@ int runRecipe(Invocation& inv)
     const jobs::RunProgress p = runner.progress();
     const bool finished = runner.state() == jobs::RunState::Finished;
     if (inv.json())
-        jsonLine(out, QJsonObject{{QStringLiteral("event"), finished ? QStringLiteral("finished") : QStringLiteral("stopped")},
+        inv.printJson(QJsonObject{{QStringLiteral("event"), finished ? QStringLiteral("finished") : QStringLiteral("stopped")},
                                   {QStringLiteral("ops_done"), p.opsDone},
                                   {QStringLiteral("ops"), p.opsTotal},
                                   {QStringLiteral("elapsed_s"), p.elapsedS},

@@ -30,7 +30,7 @@ int loadSetup(Invocation& inv, RecipeSetup* setup)
     std::string text;
     QString error;
     if (inv.isSet(QStringLiteral("deck"))) {
-        const QString deckPath = inv.value(QStringLiteral("deck"));
+        const QString deckPath = inv.path(inv.value(QStringLiteral("deck")));
         if (!files::readText(deckPath, &text, &error))
             return inv.usage(error);
         const platefiles::DeckRead d = platefiles::parseDeck(text);
@@ -40,8 +40,9 @@ int loadSetup(Invocation& inv, RecipeSetup* setup)
     } else {
         setup->deck = platefiles::builtinDeck();
     }
-    const QString cal = inv.isSet(QStringLiteral("calibration")) ? inv.value(QStringLiteral("calibration")) : platefiles::defaultCalibrationPath();
-    if (cal != QLatin1String("none") && (inv.isSet(QStringLiteral("calibration")) || QFileInfo::exists(cal))) {
+    const QString cal = inv.isSet(QStringLiteral("calibration")) ? inv.path(inv.value(QStringLiteral("calibration")))
+                                                                 : platefiles::defaultCalibrationPath();
+    if (inv.value(QStringLiteral("calibration")) != QLatin1String("none") && (inv.isSet(QStringLiteral("calibration")) || QFileInfo::exists(cal))) {
         if (!files::readText(cal, &text, &error))
             return inv.usage(error);
         const platefiles::CalibrationRead c = platefiles::parseCalibration(text);
@@ -50,7 +51,7 @@ int loadSetup(Invocation& inv, RecipeSetup* setup)
         setup->calibration = c.calibrations;
         setup->calibrationPath = cal;
     }
-    setup->loaded = platefiles::loadRecipe(args.front(), setup->deck, setup->calibration);
+    setup->loaded = platefiles::loadRecipe(inv.path(args.front()), setup->deck, setup->calibration);
     return 0;
 }
 

@@ -182,7 +182,7 @@ int scanPlan(Invocation& inv)
             if (inv.isSet(QString::fromLatin1(o)))
                 return inv.usage(tr("give a plan file or the plan's options, not both (--%1)").arg(QLatin1String(o)));
         QString error;
-        if (!scanfile::loadPlan(inv.arguments().front(), &p, &error))
+        if (!scanfile::loadPlan(inv.path(inv.arguments().front()), &p, &error))
             return inv.usage(error);
         if (inv.isSet(QStringLiteral("pixel-um"))) {
             if (p.camera.source == FieldSource::Sensor)
@@ -214,10 +214,12 @@ int scanPlan(Invocation& inv)
     const ScanLayout layout = layoutScan(p);
     QTextStream& out = inv.out();
     if (format == QLatin1String("json")) {
-        out << QString::fromStdString(scanfile::writePlan(p));
+        const std::string text = scanfile::writePlan(p);
+        out << QString::fromStdString(text);
+        inv.offerJson(QJsonDocument::fromJson(QByteArray::fromStdString(text)).object());
     } else if (format == QLatin1String("summary")) {
         const ScanEstimate e = estimateScan(p, layout, StageModel{});
-        out << QJsonDocument(QJsonObject{{QStringLiteral("tiles"), static_cast<int>(layout.tiles.size())},
+        inv.printJson(QJsonObject{{QStringLiteral("tiles"), static_cast<int>(layout.tiles.size())},
                                          {QStringLiteral("columns"), layout.grid.columns},
                                          {QStringLiteral("rows"), layout.grid.rows},
                                          {QStringLiteral("field_mm"), QJsonArray{layout.grid.fieldWidthMm, layout.grid.fieldHeightMm}},
@@ -227,9 +229,7 @@ int scanPlan(Invocation& inv)
                                          {QStringLiteral("estimate_s"), e.totalS},
                                          {QStringLiteral("moves_s"), e.moveS},
                                          {QStringLiteral("settle_s"), e.settleS},
-                                         {QStringLiteral("exposure_s"), e.exposureS}})
-                   .toJson(QJsonDocument::Compact)
-            << "\n";
+                                         {QStringLiteral("exposure_s"), e.exposureS}});
     } else {
         const auto records = scanfile::plannedRecords(p, layout);
         const std::string text = format == QLatin1String("tileconfig") ? scanfile::tileConfiguration(p, records)
@@ -245,14 +245,14 @@ int scanRun(Invocation& inv)
 {
     if (inv.arguments().size() != 1)
         return inv.usage(tr("needs one plan file: scan run PLAN.json [--out DIR]"));
-    const QString planPath = inv.arguments().front();
+    const QString planPath = inv.path(inv.arguments().front());
     ScanPlan plan;
     QString error;
     if (!scanfile::loadPlan(planPath, &plan, &error))
         return inv.usage(error);
-    const QString folder = inv.isSet(QStringLiteral("out"))
+    const QString folder = inv.path(inv.isSet(QStringLiteral("out"))
         ? inv.value(QStringLiteral("out"))
-        : QFileInfo(planPath).completeBaseName().section(QLatin1Char('.'), 0, 0) + QStringLiteral("-run");
+        : QFileInfo(inv.arguments().front()).completeBaseName().section(QLatin1Char('.'), 0, 0) + QStringLiteral("-run"));
     CliSession* s = inv.session();
     if (!s)
         return LinkTrouble;
@@ -298,13 +298,11 @@ int scanRun(Invocation& inv)
     QObject::connect(&runner, &ScanRunner::tileTaken, [&](int tile) {
         const auto& r = runner.records()[static_cast<std::size_t>(tile)];
         if (inv.json())
-            out << QJsonDocument(QJsonObject{{QStringLiteral("tile"), tile + 1},
-                                             {QStringLiteral("file"), QString::fromStdString(r.label)},
-                                             {QStringLiteral("planned_mm"), QJsonArray{r.plannedMm[0], r.plannedMm[1]}},
-                                             {QStringLiteral("measured_mm"), QJsonArray{r.measuredMm[0], r.measuredMm[1]}},
-                                             {QStringLiteral("device_time_us"), static_cast<qint64>(r.deviceTimeUs)}})
-                       .toJson(QJsonDocument::Compact)
-                << "\n";
+            inv.printJson(QJsonObject{{QStringLiteral("tile"), tile + 1},
+                                      {QStringLiteral("file"), QString::fromStdString(r.label)},
+                                      {QStringLiteral("planned_mm"), QJsonArray{r.plannedMm[0], r.plannedMm[1]}},
+                                      {QStringLiteral("measured_mm"), QJsonArray{r.measuredMm[0], r.measuredMm[1]}},
+                                      {QStringLiteral("device_time_us"), static_cast<qint64>(r.deviceTimeUs)}});
         else
             out << tr("tile %1/%2 %3 at %4, %5 mm (%6 s to settle)\n")
                        .arg(tile + 1).arg(runner.totalTiles()).arg(QString::fromStdString(r.label))
@@ -313,6 +311,7 @@ int scanRun(Invocation& inv)
     });
     if (!runner.start(&error))
         return inv.refused(error);
+    const auto abortHook = inv.host().onAbort([&runner] { runner.abort(); });  // the API's cancel; the log can continue
     spinUntil([&] { return !runner.isActive(); }, std::numeric_limits<int>::max());
     if (runner.state() != ScanRunner::State::Finished) {
         const bool link = !client->isReady();
@@ -362,6 +361,15 @@ void addScanCommands(std::vector<Command>& list)
                  tr("The tile grid steps by exactly field × (1 − overlap), centred on the region: n = max(1, ceil((W − F)/(F(1 − o))) + 1) "
                     "per axis. Checked against the standard 100 × 100 mm stage. With PLAN.json, prints that plan in --format."),
                  planOptions, scanPlan, {}};
+    plan.api.access = Access::Compute;
+    plan.api.params = {{QStringLiteral("plan"), ParamType::File, tr("a plan file to print in another format (instead of the plan's options)"), false, {}, {}}};
+    for (const char* numbers : {"roi", "centre", "size", "fov", "sensor", "overlap"})
+        plan.api.params << optionParam(numbers, ParamType::Numbers);
+    for (const char* number : {"pixel-um", "sensor-um", "mag", "rotation", "overtravel", "speed", "settle", "exposure", "tolerance-um"})
+        plan.api.params << optionParam(number, ParamType::Number);
+    plan.api.params << optionParam("first-index", ParamType::Integer);
+    plan.api.example = QJsonObject{{QStringLiteral("roi"), QJsonArray{40, 40, 42.5, 41}}, {QStringLiteral("fov"), QJsonArray{1.33, 1.33}},
+                                   {QStringLiteral("overlap"), QJsonArray{0.1}}, {QStringLiteral("format"), QStringLiteral("summary")}};
     Command run{QStringLiteral("run"), tr("run a scan plan on the stage, continue a stopped run, write the exports"),
                 tr("PLAN.json"),
                 tr("Needs the stage (--sim stage or --port) homed (--home does it). The run log and TileConfiguration.txt, "
@@ -370,6 +378,10 @@ void addScanCommands(std::vector<Command>& list)
                  option("home", "home the stage first"), option("restart", "start over even if the folder holds a run (kept aside)"),
                  option("yes", "run a scan that takes longer than a minute without asking")},
                 scanRun, {}};
+    run.api.access = Access::Control;
+    run.api.params = {{QStringLiteral("plan"), ParamType::File, tr("the scan plan file"), true, {}, {}}, optionParam("out", ParamType::File)};
+    run.api.example = QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")}, {QStringLiteral("plan"), QStringLiteral("slide.scan.json")},
+                                  {QStringLiteral("out"), QStringLiteral("slide-run")}};
     list.push_back({QStringLiteral("scan"), tr("stitching scans on the stage: plan, run"), {},
                     tr("See docs/scan.md for the grid rule, the plan file and the exports."), {}, {}, {plan, run}});
 }

@@ -14,6 +14,7 @@
 #include "motion/control/tuning/tuning_rules.h"
 
 #include <QCoreApplication>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 
@@ -108,7 +109,7 @@ int homeAndCentre(Invocation& inv, CliSession* s, int axis)
 /// The instrument of the global options, with its tuning client.
 int openInstrument(Invocation& inv, Target& t)
 {
-    if (inv.link().sim.isEmpty() && inv.link().port.isEmpty())
+    if (inv.link().sim.isEmpty() && inv.link().port.isEmpty() && !inv.host().insideGui())
         return inv.usage(tr("give --sim stage or --port PATH"));
     CliSession* s = inv.session();
     if (!s)
@@ -184,6 +185,7 @@ int runToEnd(Invocation& inv, dev::TuningRunner& runner, const std::function<boo
     QObject::connect(&runner, &dev::TuningRunner::message, &runner, [&](const QString& m) { inv.report(m); });
     if (!start())
         return inv.refused(message.isEmpty() ? tr("could not start") : message);
+    const auto abortHook = inv.host().onAbort([&runner] { runner.abort(); });  // the API's cancel: the axis stops under its gains
     if (!spinUntil([&] { return done || runner.state() == dev::TuningRunner::State::Interrupted; }, static_cast<int>(timeoutS * 1000))) {
         runner.abort();
         spinUntil([&] { return done; }, 3000);
@@ -231,7 +233,7 @@ int tune(Invocation& inv)
     const TuningResult& r = runner.result();
     if (inv.isSet(QStringLiteral("save"))) {
         QString error;
-        if (!files::saveTuningFile(inv.value(QStringLiteral("save")), r, &error))
+        if (!files::saveTuningFile(inv.path(inv.value(QStringLiteral("save"))), r, &error))
             return inv.refused(error);
     }
     if (inv.json()) {
@@ -239,9 +241,7 @@ int tune(Invocation& inv)
         for (const auto& rule : tuningRules())
             rules[QLatin1String(rule.id)] =
                 continuousJson(toDiscrete(applyRule(rule, r.ku, r.tuS), r.controlPeriodS), r.controlPeriodS, rule.tiPerTu > 0, rule.tdPerTu > 0);
-        inv.out() << QJsonDocument(QJsonObject{{QStringLiteral("Ku"), r.ku}, {QStringLiteral("Tu"), r.tuS}, {QStringLiteral("rules"), rules}})
-                         .toJson(QJsonDocument::Compact)
-                  << "\n";
+        inv.printJson(QJsonObject{{QStringLiteral("Ku"), r.ku}, {QStringLiteral("Tu"), r.tuS}, {QStringLiteral("rules"), rules}});
     } else {
         inv.out() << QString::fromStdString(r.target) << ": Ku = " << num(r.ku) << ", Tu = " << num(r.tuS) << " s ("
                   << (o.method == TuningMethod::Relay ? tr("relay") : tr("ultimate gain")) << ", " << r.runs << tr(" runs") << ")\n";
@@ -339,7 +339,7 @@ int stepTest(Invocation& inv)
                       {QStringLiteral("unit"), t.target->unit()}};
         if (mm)
             o[QStringLiteral("settled_inside_5um_s")] = opt(in5);
-        inv.out() << QJsonDocument(o).toJson(QJsonDocument::Compact) << "\n";
+        inv.printJson(o);
     } else {
         const QString u = t.target->unit();
         inv.out() << t.target->describe() << tr(": step %1 %2 with ").arg(num(size), u) << describeGains(s.gains, T) << " — "
@@ -411,7 +411,7 @@ int gains(Invocation& inv)
         }
     }
     if (inv.json())
-        inv.out() << QJsonDocument(QJsonObject{{QStringLiteral("axes"), axes}}).toJson(QJsonDocument::Compact) << "\n";
+        inv.printJson(QJsonObject{{QStringLiteral("axes"), axes}});
     inv.out().flush();
     return Ok;
 }
@@ -428,6 +428,18 @@ void addTuningCommands(std::vector<Command>& list)
     const QCommandLineOption following(QStringLiteral("max-following-error"), tr("envelope: the largest |setpoint − position|"), QStringLiteral("F"));
     const QCommandLineOption duration(QStringLiteral("max-duration"), tr("envelope: the longest a test may run, s"), QStringLiteral("S"));
     const QCommandLineOption perPeriod(QStringLiteral("per-period"), tr("gains are eq. 2's per-period kp,ki,kd, not Kp, Ki [1/s], Kd [s]"));
+    const QList<ApiParam> envelopeParams{optionParam("max-excursion", ParamType::Number), optionParam("max-following-error", ParamType::Number),
+                                         optionParam("max-duration", ParamType::Number), optionParam("axis", ParamType::Axis)};
+    auto tuningApi = [&](const char* method, QList<ApiParam> params, QJsonObject example) {
+        ApiSpec a;
+        a.method = QString::fromLatin1(method);
+        a.access = Access::Control;
+        a.params = envelopeParams + params;
+        a.example = std::move(example);
+        return a;
+    };
+    ApiParam methodParam = optionParam("method", ParamType::Text);
+    methodParam.choices = QStringList{QStringLiteral("zn"), QStringLiteral("relay")};
     list.push_back({QStringLiteral("tune"), tr("find Ku and Tu (Ziegler–Nichols) and print the tuning rules"), {},
                     tr("--method zn raises Kp trial by trial (P only) until the oscillation neither grows nor decays; "
                        "--method relay runs Åström and Hägglund's relay, then refines to the measured phase crossover. "
@@ -440,17 +452,34 @@ void addTuningCommands(std::vector<Command>& list)
                      QCommandLineOption(QStringLiteral("verify"), tr("run a step test with this rule's gains afterwards (zn-pid, tl-pi, …)"), QStringLiteral("RULE")),
                      QCommandLineOption(QStringLiteral("save"), tr("write the results to a .tuning.json file"), QStringLiteral("FILE")), excursion,
                      following, duration},
-                    tune, {}});
+                    tune, {},
+                    tuningApi("tuning.tune",
+                              {methodParam, optionParam("relay-amplitude", ParamType::Number), optionParam("hysteresis", ParamType::Number),
+                               optionParam("step", ParamType::Number), optionParam("save", ParamType::File)},
+                              QJsonObject{{QStringLiteral("method"), QStringLiteral("relay")},
+                                          {QStringLiteral("plant"), QStringLiteral("fopdt:K=2,tau=0.5,L=0.1")},
+                                          {QStringLiteral("relay_amplitude"), 0.15}})});
     list.push_back({QStringLiteral("step-test"), tr("a step on one axis under given (or the axis' own) gains; print its metrics"), {},
                     tr("--size in mm (signed: the direction). --gains Kp,Ki,Kd are tried for this test only: the axis' own gains stay."),
                     {QCommandLineOption(QStringLiteral("size"), tr("step size, mm (plant units); negative steps down"), QStringLiteral("MM")),
                      QCommandLineOption(QStringLiteral("gains"), tr("Kp,Ki,Kd for this test (Ki in 1/s, Kd in s)"), QStringLiteral("Kp,Ki,Kd")), perPeriod,
                      plant, axis, home, excursion, following, duration},
-                    stepTest, {}});
+                    stepTest, {},
+                    tuningApi("tuning.step_test", {optionParam("size", ParamType::Number), optionParam("gains", ParamType::Numbers)},
+                              QJsonObject{{QStringLiteral("plant"), QStringLiteral("fopdt:K=2,tau=0.5,L=0.1")}, {QStringLiteral("size"), 1},
+                                          {QStringLiteral("gains"), QJsonArray{1.2, 2.5, 0.05}}})});
     list.push_back({QStringLiteral("gains"), tr("show or set the PID gains of the closed-loop axes"), QStringLiteral("[AXIS=Kp,Ki,Kd...]"),
                     tr("Kp, Ki in 1/s, Kd in s (per period with --per-period). The device refuses NaN, negative and absurd "
                        "values with its reason and keeps the gains it had."),
-                    {perPeriod, QCommandLineOption(QStringLiteral("save"), tr("also keep them as the device's power-up gains"))}, gains, {}});
+                    {perPeriod, QCommandLineOption(QStringLiteral("save"), tr("also keep them as the device's power-up gains"))}, gains, {}, [] {
+                        ApiSpec a;
+                        a.method = QStringLiteral("tuning.gains");
+                        a.access = Access::Control;
+                        a.readsWithoutArguments = true;
+                        a.params = {{QStringLiteral("gains"), ParamType::AxisValues, tr("axis → [Kp, Ki, Kd] to set; shows them when left out"), false, {}, {}}};
+                        a.example = QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")}};
+                        return a;
+                    }()});
 }
 
 } // namespace cli

@@ -1,8 +1,10 @@
 // benchpilot: the operator and test-bench GUI.
 //   benchpilot [--sim analyzer|stage] [--port PATH [--instrument analyzer|stage] [--profile FILE] [--baud N]]
+//   benchpilot [--api-socket PATH | --no-api] [--api-websocket PORT [--api-token-file FILE] [--api-allow-origin URL]...]
 //   benchpilot --screenshot FILE --screen NAME [--sim analyzer|stage] [--settle-ms N] [--home-first] [--exercise] [--tune] [--recipe FILE]
 #include "main_window.h"
 #include "screenshot.h"
+#include "app/cli/command.h"
 
 #include "device/backends/protocol_probe.h"
 #include "device/files/machine_profile_file.h"
@@ -83,7 +85,21 @@ int main(int argc, char** argv)
     QCommandLineOption recipe(QStringLiteral("recipe"),
                               QApplication::translate("main", "screenshot: open this recipe on the Plates screen, home the analyzer and run it"),
                               QStringLiteral("file"));
-    p.addOptions({sim, port, instrument, profile, baud, shot, screen, settle, script, exercise, tune, recipe});
+    QCommandLineOption apiSocket(QStringLiteral("api-socket"),
+                                 QApplication::translate("main", "where the scripting API listens (default: %1)").arg(cli::defaultApiSocketPath()),
+                                 QStringLiteral("path"));
+    QCommandLineOption noApi(QStringLiteral("no-api"), QApplication::translate("main", "do not start the scripting API"));
+    QCommandLineOption apiWebSocket(QStringLiteral("api-websocket"),
+                                    QApplication::translate("main", "also serve the API as a WebSocket on 127.0.0.1:port (off by default)"),
+                                    QStringLiteral("port"));
+    QCommandLineOption apiToken(QStringLiteral("api-token-file"),
+                                QApplication::translate("main", "the WebSocket's token file, 0600 (default: api.token beside the socket)"),
+                                QStringLiteral("file"));
+    QCommandLineOption apiOrigin(QStringLiteral("api-allow-origin"),
+                                 QApplication::translate("main", "a browser Origin the WebSocket accepts (repeat for more; none by default)"),
+                                 QStringLiteral("url"));
+    p.addOptions({sim, port, instrument, profile, baud, shot, screen, settle, script, exercise, tune, recipe,
+                  apiSocket, noApi, apiWebSocket, apiToken, apiOrigin});
     QCoreApplication::setOrganizationName(QStringLiteral("BenchPilot"));
     QCoreApplication::setApplicationName(QStringLiteral("benchpilot"));
     QCoreApplication::setApplicationVersion(QStringLiteral(BP_VERSION));
@@ -174,6 +190,20 @@ int main(int argc, char** argv)
         c.profile = p.value(profile);
         options.connection[kindIndex(*k)] = c;
         options.showInstrument = kindIndex(*k);
+    }
+    if (!p.isSet(noApi)) {
+        options.api.socketPath = p.isSet(apiSocket) ? p.value(apiSocket) : cli::defaultApiSocketPath();
+        if (p.isSet(apiWebSocket)) {
+            bool ok = false;
+            const uint wsPort = p.value(apiWebSocket).toUInt(&ok);
+            if (!ok || wsPort == 0 || wsPort > 65535) {
+                std::fprintf(stderr, "benchpilot: --api-websocket needs a port (1-65535), got '%s'\n", qPrintable(p.value(apiWebSocket)));
+                return 1;
+            }
+            options.api.webSocketPort = static_cast<quint16>(wsPort);
+        }
+        options.api.tokenFile = p.value(apiToken);
+        options.api.allowedOrigins = p.values(apiOrigin);
     }
     app::MainWindow w(options);
     w.show();

@@ -3,6 +3,9 @@
 #include "instrument_session.h"
 #include "motion_screens.h"
 #include "plates_wiring.h"
+#include "api_panel.h"
+#include "app/api/api_server.h"
+#include "device/jobs/pattern_runner.h"
 #include "device/telemetry/telemetry_hub.h"
 #include "widgets/connection_bar.h"
 #include "widgets/event_log.h"
@@ -24,6 +27,7 @@
 #include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSettings>
 #include <QShortcut>
 #include <QStackedWidget>
@@ -43,6 +47,9 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     m_hub = new tele::TelemetryHub(this);
     for (int i = 0; i < 2; ++i)
         m_hub->addInstrument(i, m_sessions[i]->name(), m_sessions[i]->instrument());
+    // The screens drive the instruments through the API's gate: while a script holds
+    // control their motion asks first (api_wiring.h).
+    m_api = new ApiWiring(m_sessions, m_hub, m_options.api, this);
 
     auto* central = new QWidget(this);
     auto* v = new QVBoxLayout(central);
@@ -73,7 +80,15 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     v->addLayout(top);
 
     m_banner = new ui::MessageBanner(central);
-    v->addWidget(m_banner);
+    if (m_api->strip()) {
+        // Who has control shares the banner's row: no extra height on a 768-pixel screen.
+        auto* row = new QHBoxLayout;
+        row->addWidget(m_banner, 1);
+        row->addWidget(m_api->strip(), 1);
+        v->addLayout(row);
+    } else {
+        v->addWidget(m_banner);
+    }
 
     auto* body = new QHBoxLayout;
     m_nav = new QListWidget(central);
@@ -87,7 +102,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
 
     m_jogTabs = new QTabWidget;
     for (int i = 0; i < 2; ++i) {
-        m_jog[i] = new ui::JogScreen(m_sessions[i]->instrument());
+        m_jog[i] = new ui::JogScreen(m_api->screenInstrument(i));
         if (m_options.confirmDialogs)
             m_jog[i]->setConfirm([this](const QString& q) { return confirm(q); });
         connect(m_jog[i], &ui::JogScreen::problem, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); });
@@ -105,7 +120,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     addScreen(QStringLiteral("profiles"), tr("Profiles"), new ui::ProfilesScreen);
     m_tuning = new ui::TuningScreen(m_hub);
     for (int i = 0; i < 2; ++i)
-        m_tuning->addInstrument(i, m_sessions[i]->name(), m_sessions[i]->instrument());
+        m_tuning->addInstrument(i, m_sessions[i]->name(), m_api->screenInstrument(i));
     m_tuning->setFileChooser([this](const QString& title, const QString& filter, bool save) {
         const QString dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
         return save ? QFileDialog::getSaveFileName(this, title, dir, filter) : QFileDialog::getOpenFileName(this, title, dir, filter);
@@ -127,16 +142,17 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
             };
         }
         hooks.warn = [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); };
+        hooks.instrument = [this](int i) { return m_api->screenInstrument(i); };
         m_motion = new MotionScreens(m_sessions, m_hub, hooks, this);
         addScreen(QStringLiteral("joystick"), tr("Joystick"), m_motion->joystickTabs());
         addScreen(QStringLiteral("patterns"), tr("Patterns"), m_motion->patterns());
     }
-    m_plates = new ui::PlatesScreen(m_sessions[0]->instrument());
+    m_plates = new ui::PlatesScreen(m_api->screenInstrument(0));
     connect(m_plates, &ui::PlatesScreen::problem, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); });
     connect(m_plates, &ui::PlatesScreen::note, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Info, m); });
     wirePlatesScreen(m_plates, this, m_options);
     addScreen(QStringLiteral("plates"), tr("Plates"), m_plates);
-    m_scan = new ui::ScanScreen(m_sessions[1]->instrument());
+    m_scan = new ui::ScanScreen(m_api->screenInstrument(1));
     m_scan->setFileChooser([this](ui::ScanScreen::FileAction a, const QString& title, const QString& filter) {
         const QString docs = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
         if (a == ui::ScanScreen::FileAction::Open)
@@ -159,6 +175,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     dock->setWidget(m_log);
     dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
     addDockWidget(Qt::BottomDockWidgetArea, dock);
+    wireApi(dock);
 
     for (int i = 0; i < 2; ++i) {
         m_statusLabels[i] = new QLabel(this);
@@ -199,11 +216,60 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
 
 MainWindow::~MainWindow()
 {
+    // The API's calls end (their commands run to their ends) while the instruments live.
+    delete m_api;
+    m_api = nullptr;
     // The sessions are the first children to go; a client that reports "disconnected"
     // while its session is destroyed must not reach updateStatusBar(), which reads the
     // other, possibly already destroyed, session.
     for (auto* s : m_sessions)
         s->instrument()->disconnect(this);
+}
+
+void MainWindow::wireApi(QDockWidget* logDock)
+{
+    if (!m_api->startError().isEmpty())
+        m_banner->show(ui::MessageBanner::Level::Warning, m_api->startError());
+    if (!m_api->server())
+        return;
+    jobs::PatternRunner* const patterns[2] = {m_motion->runner(0), m_motion->runner(1)};
+    m_api->watchRunners(m_plates->runner(), m_scan->runner(), patterns, m_tuning->runner());
+    if (m_options.confirmDialogs)
+        m_api->setAsk([this](const QString& q) {
+            QMessageBox box(QMessageBox::Question, tr("A script has control"), q, QMessageBox::Cancel, this);
+            auto* take = box.addButton(tr("Take back"), QMessageBox::AcceptRole);
+            box.setDefaultButton(QMessageBox::Cancel);
+            box.exec();
+            return box.clickedButton() == take;
+        });
+    auto* dock = new QDockWidget(tr("Scripting API"), this);
+    dock->setObjectName(QStringLiteral("apiDock"));
+    auto* scroll = new QScrollArea(dock);  // a short dock area still shows it, scrolling
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(m_api->panel());
+    dock->setWidget(scroll);
+    dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+    addDockWidget(Qt::BottomDockWidgetArea, dock);
+    tabifyDockWidget(logDock, dock);
+    logDock->raise();
+    dock->hide();  // until asked for (the status bar's API button): no tab bar's height meanwhile
+    dock->setFeatures(dock->features() | QDockWidget::DockWidgetClosable);
+    statusBar()->addPermanentWidget(m_api->statusButton());
+    connect(m_api, &ApiWiring::showPanelRequested, this, [dock] {
+        // Floating the first time: the window below keeps its height on a 768-pixel screen.
+        if (!dock->isVisible() && !dock->property("shownOnce").toBool()) {
+            dock->setProperty("shownOnce", true);
+            dock->setFloating(true);
+            dock->resize(560, 360);
+        }
+        dock->show();
+        dock->raise();
+    });
+    connect(m_api, &ApiWiring::note, this, [this](const QString& client, const QString& text, bool problem) {
+        m_log->addNote(tr("API"), client.isEmpty() ? tr("server") : client, text, problem);
+    });
+    connect(m_api, &ApiWiring::handedOver, this, [this](const QString& text) { m_banner->show(ui::MessageBanner::Level::Info, text); });
 }
 
 void MainWindow::addScreen(const QString& name, const QString& title, QWidget* screen)

@@ -1,12 +1,14 @@
 #pragma once
 // The composition root's window: both instruments' connections, the screens,
-// E-stop on every screen, banner, event log and status bar.
+// E-stop on every screen, banner, event log and status bar, and the scripting API.
+#include "api_wiring.h"
 #include "widgets/connection_bar.h"
 
 #include <QMainWindow>
 
 #include <optional>
 
+class QDockWidget;
 class QListWidget;
 class QPushButton;
 class QStackedWidget;
@@ -39,6 +41,7 @@ struct MainWindowOptions {
     /// Connections given on the command line (--sim, --port), over what was remembered.
     std::optional<ui::ConnectionChoice> connection[2];
     int showInstrument = -1;      ///< 0 analyzer, 1 stage: the instrument the command line named
+    ApiOptions api;               ///< the scripting API (docs/api.md); no socket path: none
 };
 
 class MainWindow : public QMainWindow {
@@ -64,6 +67,8 @@ public:
     ui::MessageBanner* banner() { return m_banner; }
     ui::EventLog* eventLog() { return m_log; }
     QPushButton* estopButton() { return m_estop; }
+    /// The scripting API's wiring (its server is null when no API was asked for).
+    ApiWiring* api() { return m_api; }
 
 public slots:
     void emergencyStop();
@@ -75,6 +80,7 @@ protected:
 
 private:
     void addScreen(const QString& name, const QString& title, QWidget* screen);
+    void wireApi(QDockWidget* logDock);
     void wireSession(int index, ui::ConnectionBar* bar);
     void updateStatusBar();
     void updateEStopUi();
@@ -84,6 +90,7 @@ private:
 
     MainWindowOptions m_options;
     InstrumentSession* m_sessions[2];
+    ApiWiring* m_api;
     tele::TelemetryHub* m_hub;  ///< every instrument's telemetry, for the plots
     ui::PlotsScreen* m_plots;
     ui::TuningScreen* m_tuning;

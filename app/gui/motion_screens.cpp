@@ -21,7 +21,7 @@ MotionScreens::MotionScreens(InstrumentSession* const sessions[2], tele::Telemet
     m_joyTabs = new QTabWidget;
     QVector<ui::PatternInstrument> instruments;
     for (int i = 0; i < 2; ++i) {
-        dev::Instrument* c = sessions[i]->instrument();
+        dev::Instrument* c = hooks.instrument ? hooks.instrument(i) : sessions[i]->instrument();
         m_joystick[i] = new ui::JoystickScreen(c);
         if (hooks.warn)
             connect(m_joystick[i], &ui::JoystickScreen::problem, this, hooks.warn);

@@ -10,6 +10,9 @@ class QSettings;
 class QTabWidget;
 class QWidget;
 
+namespace dev {
+class Instrument;
+}
 namespace jobs {
 class PatternRunner;
 }
@@ -32,6 +35,8 @@ public:
         std::function<bool(const QString& question)> confirm;  ///< empty: go ahead without asking
         std::function<void(const QString& message)> warn;      ///< a banner
         std::function<QString(const QString& title, const QString& filter, bool save)> chooseFile;  ///< empty: defaults
+        /// The instrument the screens drive (gated while a script has control, api_wiring.h); empty: the session's.
+        std::function<dev::Instrument*(int index)> instrument;
     };
 
     MotionScreens(InstrumentSession* const sessions[2], tele::TelemetryHub* hub, const Hooks& hooks, QObject* parent = nullptr);

@@ -1,0 +1,173 @@
+// The operator and a script on one simulated stage (docs/api.md, "Control"): while the
+// script holds control the window says who and since when with Take back, the
+// operator's motion controls do not interleave with it, and Take back stops the
+// script within one call. The window still fits 1366 × 768 with the strip showing.
+#include "gui_window.h"
+
+#include "app/api/api_server.h"
+#include "app/api/json_rpc.h"
+#include "app/gui/api_panel.h"
+#include "widgets/event_log.h"
+
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLayout>
+#include <QLocalSocket>
+#include <QPushButton>
+#include <QToolButton>
+#include <QTableWidget>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+/// A script on the window's API socket.
+class Script {
+public:
+    explicit Script(const QString& path)
+    {
+        m_socket.connectToServer(path);
+        guitest::waitFor([this] { return m_socket.state() == QLocalSocket::ConnectedState; }, 5000);
+    }
+    QJsonObject call(const QString& method, const QJsonObject& params = {})
+    {
+        const int id = m_next++;
+        m_socket.write(QJsonDocument(QJsonObject{{QStringLiteral("jsonrpc"), QStringLiteral("2.0")}, {QStringLiteral("id"), id},
+                                                 {QStringLiteral("method"), method}, {QStringLiteral("params"), params}})
+                           .toJson(QJsonDocument::Compact)
+                       + '\n');
+        m_socket.flush();
+        QJsonObject answer;
+        guitest::waitFor([&] {
+            m_buffer += m_socket.readAll();
+            for (int nl = m_buffer.indexOf('\n'); nl >= 0; nl = m_buffer.indexOf('\n')) {
+                const QJsonObject o = QJsonDocument::fromJson(m_buffer.left(nl)).object();
+                m_buffer.remove(0, nl + 1);
+                if (o.value(QStringLiteral("id")).toInt() == id)
+                    answer = o;
+            }
+            return !answer.isEmpty();
+        }, 20000);
+        return answer;
+    }
+    void heartbeat(const QString& lease)
+    {
+        m_socket.write(QJsonDocument(QJsonObject{{QStringLiteral("jsonrpc"), QStringLiteral("2.0")},
+                                                 {QStringLiteral("method"), QStringLiteral("control.heartbeat")},
+                                                 {QStringLiteral("params"), QJsonObject{{QStringLiteral("lease"), lease}}}})
+                           .toJson(QJsonDocument::Compact)
+                       + '\n');
+    }
+
+private:
+    QLocalSocket m_socket;
+    QByteArray m_buffer;
+    int m_next = 1;
+};
+
+int errorCode(const QJsonObject& a) { return a.value(QStringLiteral("error")).toObject().value(QStringLiteral("code")).toInt(); }
+
+TEST(ApiTakeBack, TheWindowSaysWhoHasControlAndTakeBackStopsTheScriptWithinOneCall)
+{
+    QTemporaryDir dir;
+    app::MainWindowOptions options = guitest::testWindowOptions();
+    options.api.socketPath = dir.filePath(QStringLiteral("api.sock"));
+    app::MainWindow w(options);
+    w.resize(1366, 740);
+    w.show();
+    ASSERT_TRUE(guitest::waitFor([&] { return w.analyzer()->instrument()->isReady() && w.stage()->instrument()->isReady(); }, 5000));
+    ASSERT_NE(w.api()->server(), nullptr) << w.api()->startError().toStdString();
+    app::ApiControlStrip* strip = w.api()->strip();
+    ASSERT_NE(strip, nullptr);
+    EXPECT_FALSE(strip->isVisible()) << "nothing to say while the operator has control";
+
+    Script script(options.api.socketPath);
+    const QJsonObject acquired = script.call(QStringLiteral("control.acquire"), QJsonObject{{QStringLiteral("client"), QStringLiteral("plate-then-image")}});
+    const QString lease = acquired.value(QStringLiteral("result")).toObject().value(QStringLiteral("lease")).toString();
+    ASSERT_FALSE(lease.isEmpty());
+    QTimer beat;
+    QObject::connect(&beat, &QTimer::timeout, [&] { script.heartbeat(lease); });
+    beat.start(100);
+    EXPECT_TRUE(strip->isVisible());
+    EXPECT_TRUE(strip->text().contains(QStringLiteral("plate-then-image"))) << strip->text().toStdString();
+    EXPECT_TRUE(strip->text().contains(QStringLiteral("since"))) << strip->text().toStdString();
+    // It fits with the strip showing: the strip shares the banner's row and adds neither
+    // height nor width to the window (tests/gui/main_window_size_test.cpp checks the rest).
+    w.layout()->activate();
+    const QSize withStrip = w.minimumSizeHint();
+    strip->hide();
+    w.layout()->activate();
+    const QSize without = w.minimumSizeHint();
+    strip->show();
+    w.layout()->activate();
+    EXPECT_LE(withStrip.height(), without.height()) << "the strip adds no height";
+    EXPECT_LE(withStrip.width(), without.width()) << "the strip adds no width";
+    if (qEnvironmentVariableIsSet("BP_API_SHOT")) {
+        w.api()->statusButton()->click();
+        guitest::pump(300);
+        w.grab().save(qEnvironmentVariable("BP_API_SHOT"));
+        w.api()->panel()->window()->grab().save(qEnvironmentVariable("BP_API_SHOT") + QStringLiteral(".panel.png"));
+    }
+    std::fprintf(stderr, "minimum with the strip %dx%d, without %dx%d\n", withStrip.width(), withStrip.height(), without.width(), without.height());
+    // The panel lists the client as in control.
+    bool listed = false;
+    QTableWidget* clients = w.api()->panel()->clientsTable();
+    for (int r = 0; r < clients->rowCount(); ++r)
+        listed = listed || clients->item(r, 0)->text().contains(QStringLiteral("in control"));
+    EXPECT_TRUE(listed);
+
+    // The script jogs X; the operator's own jog does not interleave with it.
+    const QJsonObject jog = script.call(QStringLiteral("device.jog"), QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")},
+                                                                                   {QStringLiteral("axis"), QStringLiteral("X")},
+                                                                                   {QStringLiteral("velocity"), 2},
+                                                                                   {QStringLiteral("lease"), lease}});
+    ASSERT_TRUE(jog.contains(QStringLiteral("result"))) << QJsonDocument(jog).toJson().toStdString();
+    dev::Instrument* screens = w.api()->screenInstrument(1);
+    std::optional<dev::RequestError> refused;
+    bool answered = false;
+    screens->jogStep(1, 1.0, 0, [&](const std::optional<dev::RequestError>& e) {
+        refused = e;
+        answered = true;
+    });
+    ASSERT_TRUE(answered);
+    ASSERT_TRUE(refused.has_value()) << "the operator's controls ask first while a script has control";
+    EXPECT_TRUE(refused->message.contains(QStringLiteral("plate-then-image")));
+    ASSERT_TRUE(guitest::waitFor([&] { return w.stage()->instrument()->status().axes.value(0).moving; }, 5000));
+
+    // Take back: the jog stops at once, the script's next call is refused.
+    strip->takeBackButton()->click();
+    EXPECT_FALSE(w.stage()->instrument()->isJogging(0));
+    EXPECT_FALSE(strip->isVisible());
+    const QJsonObject next = script.call(QStringLiteral("device.jog"), QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")},
+                                                                                    {QStringLiteral("axis"), QStringLiteral("X")},
+                                                                                    {QStringLiteral("velocity"), 2},
+                                                                                    {QStringLiteral("lease"), lease}});
+    EXPECT_EQ(errorCode(next), api::code::kNotInControl);
+    EXPECT_TRUE(guitest::waitFor([&] { return !w.stage()->instrument()->status().axes.value(0).moving; }, 5000));
+    // And the operator's controls act again.
+    answered = false;
+    refused.reset();
+    screens->jogStep(0, 0.1, 0, [&](const std::optional<dev::RequestError>& e) {
+        refused = e;
+        answered = true;
+    });
+    EXPECT_TRUE(guitest::waitFor([&] { return answered; }, 5000));
+    EXPECT_FALSE(refused.has_value()) << (refused ? refused->message.toStdString() : std::string());
+    // The event log has the script's calls with its name.
+    bool logged = false;
+    for (int r = 0; r < w.eventLog()->rowCount(); ++r)
+        logged = logged || (w.eventLog()->rowText(r).contains(QStringLiteral("plate-then-image")) && w.eventLog()->rowText(r).contains(QStringLiteral("device.jog")));
+    EXPECT_TRUE(logged);
+}
+
+TEST(ApiTakeBack, NoApiWasAskedForNoneRuns)
+{
+    app::MainWindow w(guitest::testWindowOptions());
+    EXPECT_EQ(w.api()->server(), nullptr);
+    EXPECT_EQ(w.api()->strip(), nullptr);
+    // The screens' instruments pass everything through.
+    EXPECT_NE(w.api()->screenInstrument(0), nullptr);
+}
+
+} // namespace
