@@ -10,8 +10,14 @@ namespace words::areas {
 
 // Sentences: the id starts with the area's prefix.
 QString capability(const msg::Message& m);  ///< "capability."
+// The accuracy bench (accuracy_words.cpp).
+QString accuracy(const msg::Message& m);      ///< "accuracy."
+QString compensation(const msg::Message& m);  ///< "compensation."
+QString fileProblem(const msg::Message& m);   ///< "file."
+QString gauge(const msg::Message& m);         ///< "gauge."
 
 // Terms: a null QString for a term id the area does not know.
 QString capabilityTerm(const std::string& id);  ///< "instrument.", "capability.because."
+QString accuracyTerm(const std::string& id);    ///< "direction.", "rotation."
 
 } // namespace words::areas

@@ -16,10 +16,15 @@ using TermFn = QString (*)(const std::string&);
 /// Which area words which ids. Longest prefix first where prefixes nest.
 const std::pair<const char*, SentenceFn> kSentences[] = {
     {"capability.", &areas::capability},
+    {"accuracy.", &areas::accuracy},
+    {"compensation.", &areas::compensation},
+    {"file.", &areas::fileProblem},
+    {"gauge.", &areas::gauge},
 };
 
 const TermFn kTerms[] = {
     &areas::capabilityTerm,
+    &areas::accuracyTerm,
 };
 
 bool startsWith(const std::string& s, const char* prefix)
