@@ -165,6 +165,10 @@ public:
     QTextStream& out() { return m_out; }
     QTextStream& err() { return m_err; }
     const LinkOptions& link() const { return m_link; }
+    /// Before session(): the in-process simulator's link is not paced like a UART. A
+    /// simulator clock sped up over a paced link sends more than the wire carries in
+    /// wall time (SimulatorHost::setTimeScale); commands that speed it up ask for this.
+    void unpaceSimulatedLink() { m_link.baud = m_link.sim.isEmpty() ? m_link.baud : 0; }
     bool json() const { return m_link.json; }
     InvocationHost& host() { return m_host; }
 
@@ -258,6 +262,8 @@ void addTuningCommands(std::vector<Command>& list);
 void addPatternCommands(std::vector<Command>& list);
 void addRecipeCommands(std::vector<Command>& list);
 void addScanCommands(std::vector<Command>& list);
+void addAccuracyCommands(std::vector<Command>& list);
+void addCompensationCommands(std::vector<Command>& list);
 void addCompletionCommand(std::vector<Command>& list);
 
 /// The help texts, also used by the completion script.

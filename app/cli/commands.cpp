@@ -14,6 +14,8 @@ const std::vector<Command>& commands()
         addPatternCommands(l);
         addRecipeCommands(l);
         addScanCommands(l);
+        addAccuracyCommands(l);
+        addCompensationCommands(l);
         addCompletionCommand(l);  // last: it lists the others
         return l;
     }();

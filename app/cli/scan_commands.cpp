@@ -349,7 +349,7 @@ void addScanCommands(std::vector<Command>& list)
         option("settle", "expected settling per tile for the estimate, s", "S"),
         option("exposure", "exposure (dwell) per tile, s", "S"),
         option("tolerance-um", "a tile is taken once the grating is this close, µm", "UM"),
-        option("compensate", "apply seed 002's positioning error curves to the targets"),
+        option("compensate", "run with the stage's own error compensation (it must be enabled on X and Y)"),
         option("name", "the scan's name", "NAME"),
         option("pattern", "tile file names, e.g. tile_{i:03}.tif", "PATTERN"),
         option("first-index", "number of the first tile in file names", "N"),

@@ -1,10 +1,15 @@
 // benchpilot-sim: the reference firmware served on a pseudo-terminal.
 //   benchpilot-sim --instrument analyzer|stage --pty PATH [--protocol benchpilot|grbl|grblhal]
 //                  [--time-scale K] [--baud N]
+//                  [--gauge PATH --gauge-axis X [--gauge-resolution MM] [--gauge-noise MM]]
 // --protocol chooses what the firmware speaks over the same machine model: the BenchPilot
 // protocol, or the GRBL 1.1 / grblHAL personality (docs/grbl.md).
+// --gauge serves a simulated length gauge on a second pty: it answers "?" + CR with the
+// true position of one axis' work point (docs/accuracy.md, "Gauge dialect"), which the
+// instrument's own encoder or grating does not see.
 #include "device/link/simulated_link.h"
 #include "device/sim/grbl_firmware.h"
+#include "device/sim/sim_gauge.h"
 #include "pty_transport.h"
 
 #include <QCommandLineParser>
@@ -53,7 +58,19 @@ int main(int argc, char** argv)
     QCommandLineOption protocol(QStringLiteral("protocol"),
                                 QCoreApplication::translate("sim", "benchpilot, grbl or grblhal"), QStringLiteral("name"),
                                 QStringLiteral("benchpilot"));
-    p.addOptions({instrument, ptyPath, protocol, timeScale, baud});
+    QCommandLineOption gaugePath(QStringLiteral("gauge"),
+                                 QCoreApplication::translate("sim", "symlink to create for a simulated gauge's pty"),
+                                 QStringLiteral("path"));
+    QCommandLineOption gaugeAxis(QStringLiteral("gauge-axis"),
+                                 QCoreApplication::translate("sim", "the axis whose work point the gauge reads"),
+                                 QStringLiteral("letter"), QStringLiteral("X"));
+    QCommandLineOption gaugeResolution(QStringLiteral("gauge-resolution"),
+                                       QCoreApplication::translate("sim", "the gauge's last digit in mm"), QStringLiteral("mm"),
+                                       QStringLiteral("0.0001"));
+    QCommandLineOption gaugeNoise(QStringLiteral("gauge-noise"),
+                                  QCoreApplication::translate("sim", "standard deviation of the gauge's noise in mm"),
+                                  QStringLiteral("mm"), QStringLiteral("0.0001"));
+    p.addOptions({instrument, ptyPath, protocol, timeScale, baud, gaugePath, gaugeAxis, gaugeResolution, gaugeNoise});
     p.process(app);
 
     const QString kind = p.value(instrument);
@@ -72,33 +89,80 @@ int main(int argc, char** argv)
     if (!ok || baudRate < 1200)
         return fail(QCoreApplication::translate("sim", "--baud must be at least 1200 (got '%1')").arg(p.value(baud)));
 
-    const QString link = p.value(ptyPath);
-    const QFileInfo existing(link);
-    if (existing.exists() || existing.isSymLink()) {
-        if (!existing.isSymLink())
-            return fail(QCoreApplication::translate("sim", "%1 exists and is not a symlink: refusing to replace it").arg(link));
-        ::unlink(qPrintable(link));
+    const sim::MachineConfig machine = kind == QLatin1String("stage") ? sim::stageConfig() : sim::analyzerConfig();
+    const QString gaugeLink = p.value(gaugePath);
+    int gaugeAxisIndex = -1;
+    sim::GaugeConfig gaugeConfig;
+    if (!gaugeLink.isEmpty()) {
+        const QString letter = p.value(gaugeAxis).trimmed().toUpper();
+        for (std::size_t i = 0; i < machine.axes.size(); ++i)
+            if (letter.size() == 1 && machine.axes[i].letter == letter.at(0).toLatin1())
+                gaugeAxisIndex = static_cast<int>(i);
+        if (gaugeAxisIndex < 0)
+            return fail(QCoreApplication::translate("sim", "--gauge-axis: the %1 has no axis '%2'").arg(kind, p.value(gaugeAxis)));
+        gaugeConfig.resolutionMm = p.value(gaugeResolution).toDouble(&ok);
+        if (!ok || !(gaugeConfig.resolutionMm >= 1e-6 && gaugeConfig.resolutionMm <= 0.1))
+            return fail(QCoreApplication::translate("sim", "--gauge-resolution must be from 0.000001 to 0.1 mm (got '%1')")
+                            .arg(p.value(gaugeResolution)));
+        gaugeConfig.noiseMm = p.value(gaugeNoise).toDouble(&ok);
+        if (!ok || !(gaugeConfig.noiseMm >= 0 && gaugeConfig.noiseMm <= 1))
+            return fail(QCoreApplication::translate("sim", "--gauge-noise must be from 0 to 1 mm (got '%1')").arg(p.value(gaugeNoise)));
+        if (gaugeLink == p.value(ptyPath))
+            return fail(QCoreApplication::translate("sim", "--gauge needs a path of its own, not the instrument's"));
     }
 
+    auto claimLink = [](const QString& path) -> QString {
+        const QFileInfo existing(path);
+        if (existing.exists() || existing.isSymLink()) {
+            if (!existing.isSymLink())
+                return QCoreApplication::translate("sim", "%1 exists and is not a symlink: refusing to replace it").arg(path);
+            ::unlink(qPrintable(path));
+        }
+        return {};
+    };
+    const QString link = p.value(ptyPath);
+    if (const QString why = claimLink(link); !why.isEmpty())
+        return fail(why);
     simapp::PtyTransport pty;
     if (!pty.create())
         return fail(pty.error());
     if (::symlink(qPrintable(pty.slavePath()), qPrintable(link)) != 0)
         return fail(QCoreApplication::translate("sim", "cannot create symlink %1: %2").arg(link, QString::fromLocal8Bit(strerror(errno))));
 
-    const sim::MachineConfig machine = kind == QLatin1String("stage") ? sim::stageConfig() : sim::analyzerConfig();
     std::unique_ptr<dev::SimulatorHost> host;
     const sim::GrblFirmware* grbl = nullptr;
+    sim::SimMachine* simMachine = nullptr;
     if (proto == QLatin1String("benchpilot")) {
         host = std::make_unique<dev::SimulatorHost>(machine, baudRate, &pty);
+        simMachine = &host->firmware().machine();
     } else {
         auto fw = std::make_unique<sim::GrblFirmware>(machine, proto == QLatin1String("grbl") ? sim::GrblFirmware::Dialect::Grbl
                                                                                                : sim::GrblFirmware::Dialect::GrblHal);
         grbl = fw.get();
+        simMachine = &fw->machine();
         host = std::make_unique<dev::SimulatorHost>(std::move(fw), &pty);
     }
     host->setTimeScale(scale);
     host->start();
+
+    // The gauge: a second pty whose device end answers from the same machine.
+    simapp::PtyTransport gaugePty;
+    std::unique_ptr<dev::SimulatorHost> gaugeHost;
+    if (!gaugeLink.isEmpty()) {
+        if (const QString why = claimLink(gaugeLink); !why.isEmpty())
+            return fail(why);
+        if (!gaugePty.create())
+            return fail(gaugePty.error());
+        if (::symlink(qPrintable(gaugePty.slavePath()), qPrintable(gaugeLink)) != 0)
+            return fail(QCoreApplication::translate("sim", "cannot create symlink %1: %2")
+                            .arg(gaugeLink, QString::fromLocal8Bit(strerror(errno))));
+        gaugeHost = std::make_unique<dev::SimulatorHost>(
+            std::make_unique<sim::SimGauge>([simMachine, gaugeAxisIndex] { return simMachine->workPointLogical(gaugeAxisIndex); },
+                                            gaugeConfig),
+            &gaugePty);
+        gaugeHost->setManualClock(true);  // it answers when asked; nothing to run between requests
+        gaugeHost->start();
+    }
 
     if (::socketpair(AF_UNIX, SOCK_STREAM, 0, g_signalPipe) != 0)
         return fail(QStringLiteral("socketpair failed"));
@@ -109,6 +173,10 @@ int main(int argc, char** argv)
 
     std::printf("%s -> %s (%s, %s, %d baud, time scale %g)\n", qPrintable(link), qPrintable(pty.slavePath()), qPrintable(kind),
                 qPrintable(proto), baudRate, scale);
+    if (gaugeHost)
+        std::printf("gauge %s -> %s (axis %c, resolution %g mm, noise %g mm)\n", qPrintable(gaugeLink),
+                    qPrintable(gaugePty.slavePath()), machine.axes[static_cast<std::size_t>(gaugeAxisIndex)].letter,
+                    gaugeConfig.resolutionMm, gaugeConfig.noiseMm);
     std::fflush(stdout);
     const int rc = app.exec();
     if (grbl) {
@@ -120,5 +188,9 @@ int main(int argc, char** argv)
     }
     ::unlink(qPrintable(link));
     pty.close();
+    if (gaugeHost) {
+        ::unlink(qPrintable(gaugeLink));
+        gaugePty.close();
+    }
     return rc;
 }

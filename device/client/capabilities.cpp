@@ -2,13 +2,14 @@
 
 namespace dev {
 
-const std::array<Capability, 16>& allCapabilities()
+const std::array<Capability, 17>& allCapabilities()
 {
-    static const std::array<Capability, 16> all = {
+    static const std::array<Capability, 17> all = {
         Capability::Homing,        Capability::SetZero,       Capability::MeasuredPosition, Capability::ClosedLoop,
         Capability::Telemetry,     Capability::VelocityJog,   Capability::StopsOnHostLoss,  Capability::PathQueue,
         Capability::PathZFollow,   Capability::CoupledXyThenZ, Capability::SoftLimits,      Capability::PidGains,
         Capability::TuningTests,   Capability::Pump,          Capability::TriggerOutput,    Capability::MachineLimits,
+        Capability::Compensation,
     };
     return all;
 }
@@ -32,6 +33,7 @@ std::string capabilityKey(Capability c)
     case Capability::Pump: return "pump";
     case Capability::TriggerOutput: return "trigger_output";
     case Capability::MachineLimits: return "machine_limits";
+    case Capability::Compensation: return "compensation";
     }
     return "unknown";
 }

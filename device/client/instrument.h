@@ -20,7 +20,7 @@
 //  - status() is kept fresh by the backend (BenchPilot polls every 50 ms; GRBL polls `?`),
 //    statusChanged follows each update; readStatus() asks for one reading now.
 //  - Capabilities gate features; whyNot() says why one is unavailable, as a msg::Message.
-//  - paths() and tuning() are parts a backend may not have (nullptr). A backend's parts
+//  - paths(), tuning() and compensation() are parts a backend may not have (nullptr). A backend's parts
 //    live as long as it does; an InstrumentProxy emits partsReplaced() when it switches to
 //    another backend, after which the pointers fetched before are gone: fetch them when a
 //    job starts, not once for ever.
@@ -35,6 +35,7 @@
 
 namespace dev {
 
+class CompensationClient;
 class PathClient;
 class TuningClient;
 
@@ -113,6 +114,9 @@ public:
     // ---- parts a backend may not have ---------------------------------------------------
     virtual PathClient* paths() = 0;     ///< line/arc streaming; nullptr when the backend has none
     virtual TuningClient* tuning() = 0;  ///< PID gains and tests; nullptr when the backend has none
+    /// Axis error compensation kept on the device; nullptr when the backend has none (the
+    /// default, so a backend without it need not say so: Capability::Compensation does).
+    virtual CompensationClient* compensation() { return nullptr; }
 
 signals:
     void stateChanged(dev::LinkState state);
@@ -128,7 +132,7 @@ signals:
     /// Something worth a line in the event log that changes no state: a controller's own
     /// message ([MSG:…] on GRBL), a line the backend does not know (logged, never fatal).
     void noted(const msg::Message& note);
-    /// paths() and tuning() now return other objects (see the contract above).
+    /// paths(), tuning() and compensation() now return other objects (see the contract above).
     void partsReplaced();
 
 protected:

@@ -211,5 +211,6 @@ double InstrumentProxy::toAxisUnits(const proto::ChannelRef& channel, std::int32
 
 PathClient* InstrumentProxy::paths() { return m_backend ? m_backend->paths() : nullptr; }
 TuningClient* InstrumentProxy::tuning() { return m_backend ? m_backend->tuning() : nullptr; }
+CompensationClient* InstrumentProxy::compensation() { return m_backend ? m_backend->compensation() : nullptr; }
 
 } // namespace dev

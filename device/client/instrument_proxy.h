@@ -70,6 +70,7 @@ public:
     double toAxisUnits(const proto::ChannelRef& channel, std::int32_t value) const override;
     PathClient* paths() override;
     TuningClient* tuning() override;
+    CompensationClient* compensation() override;
 
 protected:
     msg::Message missingReason(Capability c) const override;

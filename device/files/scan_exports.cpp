@@ -4,7 +4,6 @@
 #include "device/files/json_fields.h"
 #include "device/files/position_csv.h"
 #include "device/files/text_file.h"
-#include "motion/calibration/error_polynomial.h"
 #include "motion/plans/scan/scan_naming.h"
 
 #include <QCoreApplication>
@@ -43,12 +42,10 @@ Point2 stitchPosition(const ScanPlan& plan, const PositionRecord& r)
 {
     if (!r.measured() || r.measuredMm.size() < 2)
         return {r.plannedMm.at(0), r.plannedMm.at(1)};
-    Point2 p{r.measuredMm[0], r.measuredMm[1]};
-    if (plan.compensation.enabled) {
-        p.xMm += motion::ErrorPolynomial{plan.compensation.xPolyUm}.errorUm(p.xMm) * 1e-3;
-        p.yMm += motion::ErrorPolynomial{plan.compensation.yPolyUm}.errorUm(p.yMm) * 1e-3;
-    }
-    return p;
+    // A compensated stage reports its grating in the nominal frame (the device takes its
+    // correction off): the reading is where the work point was.
+    (void)plan;
+    return {r.measuredMm[0], r.measuredMm[1]};
 }
 
 Point2 stageToPixels(const motion::scan::Camera& camera, Point2 stageMm)

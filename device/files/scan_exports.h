@@ -23,8 +23,8 @@ namespace scanfile {
 std::vector<motion::PositionRecord> plannedRecords(const motion::scan::ScanPlan& plan, const motion::scan::ScanLayout& layout);
 
 /// Where the stitcher should put a tile, in stage mm: the grating's reading at the
-/// trigger (moved to the work point by the plan's error curves when compensation
-/// is on, as the stage then trusts them), or the planned position before it is taken.
+/// trigger (a compensated stage reports it at the work point already), or the planned
+/// position before it is taken.
 motion::scan::Point2 stitchPosition(const motion::scan::ScanPlan& plan, const motion::PositionRecord& record);
 
 /// Stage millimetres → image pixels of the mosaic (the camera's rotation and y sense).

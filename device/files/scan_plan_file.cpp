@@ -203,10 +203,11 @@ void readRest(ObjectReader& root, ScanPlan& plan, Problems& p)
         o.refuseUnknown({"enabled", "x_error_poly_um", "y_error_poly_um"});
         if (const auto e = o.boolean("enabled", false))
             plan.compensation.enabled = *e;
-        if (const auto x = polyMember(o, "x_error_poly_um"))
-            plan.compensation.xPolyUm = *x;
-        if (const auto y = polyMember(o, "y_error_poly_um"))
-            plan.compensation.yPolyUm = *y;
+        // Plans from before the device kept its own compensation carried seed 002's
+        // curves here; they are read (and checked) but no longer used: the stage's
+        // own compensation is (docs/scan.md, "Compensation").
+        (void)polyMember(o, "x_error_poly_um");
+        (void)polyMember(o, "y_error_poly_um");
     }
     if (const Value* e = root.get("export", Value::Type::Object, false)) {
         ObjectReader o(*e, "export", p);
@@ -225,14 +226,6 @@ Value numberPair(double a, double b)
     Value v = Value::array();
     v.push(a);
     v.push(b);
-    return v;
-}
-
-Value numberList(const std::vector<double>& xs)
-{
-    Value v = Value::array();
-    for (double x : xs)
-        v.push(x);
     return v;
 }
 
@@ -363,8 +356,6 @@ Value planToJson(const ScanPlan& plan)
     root.set("timing", std::move(timing));
     Value comp = Value::object();
     comp.set("enabled", Value(plan.compensation.enabled));
-    comp.set("x_error_poly_um", numberList(plan.compensation.xPolyUm));
-    comp.set("y_error_poly_um", numberList(plan.compensation.yPolyUm));
     root.set("compensation", std::move(comp));
     Value ex = Value::object();
     ex.set("file_pattern", Value(plan.naming.filePattern));

@@ -1,5 +1,7 @@
 #include "device/jobs/scan_runner.h"
 
+#include "device/client/compensation_client.h"
+
 #include "device/files/scan_exports.h"
 #include "device/files/scan_run_log.h"
 #include "device/files/text_file.h"
@@ -59,6 +61,30 @@ ScanRunner::~ScanRunner()
 {
     for (const auto& c : m_clientConnections)
         disconnect(c);
+}
+
+void ScanRunner::refreshCompensation()
+{
+    m_compEnabled[0].reset();
+    m_compEnabled[1].reset();
+    if (!m_plan.compensation.enabled || !m_client)
+        return;
+    dev::CompensationClient* comp = m_client->compensation();
+    if (!comp || !m_client->can(dev::Capability::Compensation))
+        return;
+    if (m_compWatched != comp) {
+        m_compWatched = comp;
+        connect(comp, &dev::CompensationClient::changed, this, [this](int axis, const QString&) {
+            if (axis == 0 || axis == 1)
+                refreshCompensation();
+        });
+    }
+    const QPointer<ScanRunner> self(this);
+    for (int axis = 0; axis < 2; ++axis)
+        comp->read(axis, [self, axis](const std::optional<dev::RequestError>& e, const dev::AxisCompensation& c) {
+            if (self && !e)
+                self->m_compEnabled[axis] = c.model.has_value() && c.enabled;
+        });
 }
 
 QString ScanRunner::logPath() const { return QDir(m_folder).filePath(QString::fromLatin1(scanfile::kRunLogFile)); }
@@ -175,6 +201,7 @@ bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& fold
         return false;
     m_estimate = motion::scan::estimateScan(m_plan, m_layout, stageModelOf(m_client->identity(), m_client->softLimits()));
     m_prepared = true;
+    refreshCompensation();
     reason = Refusal::None;
     setState(m_takenCount == totalTiles() ? State::Finished : State::Idle);
     emit progress(m_takenCount, totalTiles(), etaS());
@@ -207,6 +234,21 @@ QStringList ScanRunner::preflight() const
         out << tr("The E-stop is latched: reset it first.");
     if (st.axes.size() >= 2 && (!st.axes[0].homed || !st.axes[1].homed))
         out << tr("Home the stage first: a scan moves to absolute positions.");
+    if (m_plan.compensation.enabled) {
+        // The plan trusts the stage to move each target by its own correction.
+        if (!m_client->can(dev::Capability::Compensation) || !m_client->compensation())
+            out << tr("The plan runs with the stage's own compensation, but this stage keeps none: run without it.");
+        else
+            for (int axis = 0; axis < 2; ++axis) {
+                const QString letter = axis == 0 ? QStringLiteral("X") : QStringLiteral("Y");
+                if (!m_compEnabled[axis])
+                    out << tr("Reading whether the stage's compensation of %1 is enabled…").arg(letter);
+                else if (!*m_compEnabled[axis])
+                    out << tr("The plan runs with the stage's own compensation, but it is not enabled on %1: enable it "
+                              "(Calibration screen, or compensation enable --axis %1), or run without it.")
+                               .arg(letter);
+            }
+    }
     // The whole plan against the device's travel and soft limits, before anything moves.
     for (const auto& p : motion::scan::validate(m_plan, stageModelOf(id, m_client->softLimits())))
         out << QString::fromStdString(p.field + ": " + p.message);

@@ -17,6 +17,7 @@
 
 #include <QFile>
 #include <QObject>
+#include <QPointer>
 #include <QTimer>
 
 #include <optional>
@@ -104,6 +105,9 @@ private:
     void checkSettled(const std::vector<double>& measuredMm, quint64 deviceTimeUs);
     void onExposureEnd();
     void stopWith(const QString& message, bool stopStage);
+    /// A plan that runs with the stage's own compensation: reads whether X and Y have it
+    /// enabled (again whenever the device says it changed), for preflight().
+    void refreshCompensation();
     bool openLog(QString* error);
     bool appendLog(const std::string& line, QString* error);
     int waypointToResumeAt() const;
@@ -136,6 +140,8 @@ private:
     int m_sessionFirstTile = -1;         ///< the first tile this session took, or −1
     double m_leadInS = 0;                ///< estimated move from where the stage stood to the session's first waypoint
     QList<QMetaObject::Connection> m_clientConnections;
+    std::optional<bool> m_compEnabled[2];    ///< X, Y: the device's compensation enabled; empty until read
+    QPointer<QObject> m_compWatched;         ///< the compensation part whose changes are followed
 };
 
 } // namespace jobs

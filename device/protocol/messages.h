@@ -33,7 +33,8 @@ enum class MsgType : std::uint8_t {
     Subscribe = 0x09,
     Reset = 0x0A,
     // 0x0B–0x0F: PID gains and step tests (tuning); 0x10–0x14: queued LINE/ARC
-    // paths; 0x15–0x17: plates and recipes; 0x18–0x1A: stitching scans.
+    // paths; 0x15–0x17: plates and recipes; 0x18–0x1A: stitching scans;
+    // 0x1B–0x1D: axis error compensation (messages_compensation.h).
     PathBegin = 0x10,   ///< messages_path.h
     PathAppend = 0x11,
     PathStatus = 0x12,
@@ -67,7 +68,8 @@ enum Capability : std::uint32_t {
     CapTelemetry = 1u << 5,
     CapJogVelocity = 1u << 6,
     CapCoupledXyThenZ = 1u << 7,
-    // Bits 8–9: tuning (gains, step test); 10–11: path queue; 12: plates; 13: scans.
+    // Bits 8–9: tuning (gains, step test); 10–11: path queue; 12: plates; 13: scans;
+    // 14: compensation.
     CapPathQueue = 1u << 10,   ///< PATH_BEGIN/APPEND/STATUS, feed hold/resume/clear (messages_path.h)
     CapPathZFollow = 1u << 11, ///< path segments may carry a Z target, run after their XY part (seed 000)
 };
@@ -83,7 +85,7 @@ enum class ErrorCode : std::uint8_t {
     OverCapacity = 8,
     OutOfRange = 9,
     Fault = 10,
-    // 11–14: tuning; 15–18: path queue; 19–20: plates; 21–22: scans.
+    // 11–14: tuning; 15–18: path queue; 19–20: plates; 21–22: scans; 23–25: compensation.
     PathQueueFull = 15,  ///< value = free slots
     PathSequence = 16,   ///< value = the segment index the device expects next
     PathGeometry = 17,   ///< value = the index of the segment at fault
@@ -103,7 +105,7 @@ enum class EventKind : std::uint8_t {
     Stopped = 7,     ///< a stop request brought the axis to rest
     LostSteps = 8,   ///< measured position left the commanded one by more than the tolerance
     Reset = 9,       ///< E-stop/fault latch cleared
-    // 10–19: tuning; 20–29: path queue; 30–34: plates; 35–39: scans.
+    // 10–19: tuning; 20–29: path queue; 30–34: plates; 35–39: scans; 40–44: compensation.
     // Path events: axis 0xFF, position = the segment index they are about.
     PathStarted = 20,     ///< execution began at this segment
     PathSegmentDone = 21, ///< this segment was completed

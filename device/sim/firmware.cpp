@@ -14,7 +14,10 @@ constexpr double kBatchLatencyS = 0.02;      // a batch holds at most this much 
 constexpr double kBusyLinkBatchS = 0.1;      // longest a batch may hold when the link is the limit
 }
 
-Firmware::Firmware(const MachineConfig& config, std::uint32_t linkBaud) : m_machine(config), m_linkBaud(linkBaud) {}
+Firmware::Firmware(const MachineConfig& config, std::uint32_t linkBaud, const NonVolatile& powerUp)
+    : m_machine(config, powerUp), m_linkBaud(linkBaud)
+{
+}
 
 void Firmware::receive(const std::uint8_t* data, std::size_t size)
 {
@@ -198,7 +201,7 @@ void Firmware::execute(const proto::Frame& f, std::vector<std::uint8_t>& reply)
     case MsgType::PathClear:
         return executePath(f, reply);
     default: {
-        if (executeTuning(f, reply))
+        if (executeTuning(f, reply) || executeCompensation(f, reply))
             return;
         proto::ErrorReply e;
         e.code = proto::ErrorCode::UnknownCommand;

@@ -19,7 +19,8 @@ public:
     /// Output not yet drained beyond which telemetry batches are dropped.
     static constexpr std::size_t kMaxPendingOutputBytes = 64 * 1024;
 
-    Firmware(const MachineConfig& config, std::uint32_t linkBaud);
+    /// `powerUp`: the flash the device powers up with (saved compensations).
+    Firmware(const MachineConfig& config, std::uint32_t linkBaud, const NonVolatile& powerUp = {});
 
     /// Bytes from the host, in any chunking.
     void receive(const std::uint8_t* data, std::size_t size) override;
@@ -56,6 +57,8 @@ private:
     void subscribe(const proto::Frame& f, std::vector<std::uint8_t>& reply);
     /// Tuning requests (firmware_tuning.cpp); false if `f` is not one.
     bool executeTuning(const proto::Frame& f, std::vector<std::uint8_t>& reply);
+    /// Compensation requests (firmware_compensation.cpp); false if `f` is not one.
+    bool executeCompensation(const proto::Frame& f, std::vector<std::uint8_t>& reply);
     void sampleTelemetry();
     void flushEvents();
     // Path queue (firmware_path.cpp): its requests, and the feed hold when the host goes quiet.

@@ -22,6 +22,9 @@ MachineConfig analyzerConfig()
     x.physicalMaxAccel = 4000;
     x.backlash = 0.02;
     x.leadErrorPerUnit = 1.5e-4;
+    // No periodic pitch error on the analyzer's screws: its lead error is their whole
+    // pitch error (the encoder reads the carriage, so the readback sees it as a gauge
+    // would). The stage's screw has the ripple.
     x.switchRepeatability = 0.01;
     x.startPosition = 57.3;
     AxisConfig y = x;
@@ -95,6 +98,12 @@ MachineConfig stageConfig()
     x.homeBackoff = 0.5;
     x.backlash = 0.004;
     x.leadErrorPerUnit = 3.0e-4;
+    // A ground screw's ripple once per turn: the grating loop takes it out.
+    x.pitchErrorAmplitude = 0.002;
+    x.pitchErrorPeriod = 1.0;
+    // The grating itself: +5 µm per metre (0.5 µm over the travel); the loop puts
+    // the carriage short by as much, which only a reference at the work point sees.
+    x.scaleErrorPerUnit = 5e-6;
     // Seed 002's fitted error of the X axis (work point against the grating), µm over mm.
     x.abbeErrorPolyUm = {1.563, 0.9473, -0.0006};
     x.switchRepeatability = 0.001;
@@ -102,6 +111,7 @@ MachineConfig stageConfig()
     AxisConfig y = x;
     y.letter = 'Y';
     y.leadErrorPerUnit = -2.0e-4;
+    y.scaleErrorPerUnit = -4e-6;
     y.abbeErrorPolyUm = {1.021, 0.6397, 0.0168};
     y.startPosition = 63.2;
     m.axes = {x, y};

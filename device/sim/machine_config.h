@@ -33,7 +33,20 @@ struct AxisConfig {
     double hardStopMargin = 3.0;    ///< carriage cannot pass this far beyond either switch
     double backlash = 0.0;          ///< lost motion on reversal
     double leadErrorPerUnit = 0.0;  ///< screw lead error, fraction of travel (open-loop axes see it)
-    std::vector<double> abbeErrorPolyUm; ///< error of the work point against the scale, µm, poly in position (mm), c0 first
+    /// Periodic pitch error of the screw: the nut is ahead of its nominal place by
+    /// amplitude · sin(2π · screw / period); one period per turn of the screw (its lead).
+    /// The stage's grating loop hides it; the analyzer's carriage carries it.
+    double pitchErrorAmplitude = 0.0;
+    double pitchErrorPeriod = 0.0;  ///< screw travel per period (the lead); 0: no pitch error
+    /// The encoder or grating reads carriage × (1 + this): a scale that is itself
+    /// slightly long or short (a grating's accuracy class, ±µm per metre). A loop
+    /// closed on that reading puts the carriage off by the same share.
+    double scaleErrorPerUnit = 0.0;
+    /// The work point against the carriage where the scale reads it, µm, a polynomial
+    /// in the carriage position (mm), c0 first: the Abbe error of a work point that
+    /// sits off the scale's line (seed 002: the grating runs along the stage's edge,
+    /// the sample sits in the middle) times the guides' pitch and yaw along travel.
+    std::vector<double> abbeErrorPolyUm;
     double switchRepeatability = 0.0; ///< ±, added to the latched home position
     double startPosition = 10;      ///< machine coordinate at power-up
 };

@@ -86,7 +86,7 @@ void PathQueue::setReferences()
         // position to the walk. A count of dead-band keeps quantization from hunting.
         SimAxis& ax = *m.st(m_x).plant;
         SimAxis& ay = *m.st(m_y).plant;
-        if (const auto e = contourErrorMm(ax.measured(), ay.measured())) {
+        if (const auto e = contourErrorMm(ax.reportedMeasured(), ay.reportedMeasured())) {
             const double count = std::max(ax.config().resolution, ay.config().resolution);
             if (std::fabs(*e) > count)
                 m_crossCorrectionMm = std::clamp(m_crossCorrectionMm - m_crossCouplingGain * *e, -kMaxCrossCorrectionMm,

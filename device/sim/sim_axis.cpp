@@ -11,19 +11,60 @@ SimAxis::SimAxis(const AxisConfig& config, bool closedLoop, std::uint64_t seed, 
     m_motorSteps = std::llround(config.startPosition / config.stepSize);
     m_screw = static_cast<double>(m_motorSteps) * config.stepSize;
     m_rotor = m_screw;
-    m_driven = m_screw * (1.0 + m_cfg.leadErrorPerUnit);  // power-up: the play sits centred
+    m_driven = nutPosition(m_screw);  // power-up: the play sits centred
     m_carriage = m_driven;
     m_ref = measured();
-    m_prevRefForLoop = m_ref;
+    m_drive = m_ref;
+    m_prevRefForLoop = m_drive;
     m_prevMeasured = measured();
+}
+
+double SimAxis::correctionAt(double nominal) const
+{
+    if (!m_comp)
+        return 0;
+    const double home = nominal - m_compHome;
+    return m_comp->commandMm(home, m_approach) - home;
+}
+
+void SimAxis::updateDrive() { m_drive = m_ref + correctionAt(m_ref); }
+
+double SimAxis::nominalForDrive(double drive) const
+{
+    // n + k(n) = drive; k changes by far less than n (its slope is below 0.1), so the
+    // fixed-point iteration converges by an order of magnitude a step.
+    double n = drive - (m_drive - m_ref);
+    for (int i = 0; i < 8; ++i)
+        n = drive - correctionAt(n);
+    return n;
+}
+
+void SimAxis::setCompensation(const motion::metrology::CompensationModel* model, double homeMachine)
+{
+    const double drive = m_drive;
+    if (model)
+        m_comp = *model;
+    else
+        m_comp.reset();
+    m_compHome = homeMachine;
+    m_ref = nominalForDrive(drive);
+    updateDrive();
+    m_drive = drive;  // exactly: the axis does not move
 }
 
 void SimAxis::setReference(double position, double velocity)
 {
     if (m_frozen)
         return;
+    // The approach side follows the reference's motion: its velocity, or for a
+    // setpoint that jumps (a tuning step) the jump.
+    if (velocity > 1e-12 || (velocity == 0 && position > m_ref + 1e-9))
+        m_approach = motion::metrology::Direction::Up;
+    else if (velocity < -1e-12 || (velocity == 0 && position < m_ref - 1e-9))
+        m_approach = motion::metrology::Direction::Down;
     m_ref = position;
     m_refVel = velocity;
+    updateDrive();
 }
 
 void SimAxis::freeze()
@@ -36,9 +77,10 @@ void SimAxis::freeze()
 void SimAxis::holdHere()
 {
     m_frozen = false;
-    m_ref = m_closedLoop ? measured() : static_cast<double>(m_motorSteps) * m_cfg.stepSize;
+    m_ref = nominalForDrive(m_closedLoop ? measured() : static_cast<double>(m_motorSteps) * m_cfg.stepSize);
+    updateDrive();
     m_refVel = 0;
-    m_prevRefForLoop = m_ref;
+    m_prevRefForLoop = m_drive;
     m_prevRefVelForLoop = 0;
     m_prevDvForLoop = 0;
     m_e1 = m_e2 = 0;
@@ -50,8 +92,9 @@ void SimAxis::stopAtMeasured()
     holdHere();
     if (!m_closedLoop)
         return;
-    // The nut position that puts the carriage at the grating's reading.
-    const double screwTarget = measured() / (1.0 + m_cfg.leadErrorPerUnit);
+    // The screw position that puts the carriage at the grating's reading (the pitch
+    // error's ripple is left to the loop: it is a few µm).
+    const double screwTarget = measured() / (1.0 + m_cfg.scaleErrorPerUnit) / (1.0 + m_cfg.leadErrorPerUnit);
     m_stepAccumulator = std::round((screwTarget - static_cast<double>(m_motorSteps) * m_cfg.stepSize) / m_cfg.stepSize);
     m_ticksLeft = 1;
 }
@@ -62,14 +105,22 @@ void SimAxis::takeUpPlay()
     // carriage: the carriage only moves once the nut presses one side of the gap,
     // so on reversal the screw first turns through the play with the carriage
     // standing still (a play operator, never a jump against the motion).
-    const double nominal = m_rotor * (1.0 + m_cfg.leadErrorPerUnit);
+    const double nominal = nutPosition(m_rotor);
     const double half = 0.5 * m_cfg.backlash;
     m_driven = std::clamp(m_driven, nominal - half, nominal + half);
 }
 
+double SimAxis::nutPosition(double screw) const
+{
+    double nut = screw * (1.0 + m_cfg.leadErrorPerUnit);
+    if (m_cfg.pitchErrorPeriod > 0)
+        nut += m_cfg.pitchErrorAmplitude * std::sin(6.283185307179586 * screw / m_cfg.pitchErrorPeriod);
+    return nut;
+}
+
 double SimAxis::measured() const
 {
-    return std::floor(m_carriage / m_cfg.resolution + 0.5) * m_cfg.resolution;
+    return std::floor(m_carriage * (1.0 + m_cfg.scaleErrorPerUnit) / m_cfg.resolution + 0.5) * m_cfg.resolution;
 }
 
 double SimAxis::workPoint() const
@@ -112,7 +163,7 @@ void SimAxis::controlStep(const PidGains& g, int ticksPerPeriod, const ClosedLoo
     // Seed 002 eq. 2: Δu = Kp(e_k − e_{k−1}) + Ki·e_k + Kd(e_k − 2e_{k−1} + e_{k−2}),
     // with Δu the motor travel sent this period on top of the reference's own
     // advance (feed-forward), so the loop only corrects what the screw got wrong.
-    const double raw = m_ref - measured();
+    const double raw = m_drive - measured();
     const double e = std::abs(raw) <= tuning.deadbandCounts * m_cfg.resolution + 1e-12 ? 0.0 : raw;
     const double du = g.kp * (e - m_e1) + g.ki * e + g.kd * (e - 2 * m_e1 + m_e2);
     m_e2 = m_e1;
@@ -122,10 +173,10 @@ void SimAxis::controlStep(const PidGains& g, int ticksPerPeriod, const ClosedLoo
     // change and τ1·τ2 on the acceleration's change.
     const double dv = m_refVel - m_prevRefVelForLoop;
     const double periodS = std::max(1, ticksPerPeriod) * m_tickS;
-    const double feedForward = (m_ref - m_prevRefForLoop) + tuning.velocityFeedForwardS * dv
+    const double feedForward = (m_drive - m_prevRefForLoop) + tuning.velocityFeedForwardS * dv
         + tuning.accelFeedForwardS2 * (dv - m_prevDvForLoop) / periodS;
     m_prevDvForLoop = dv;
-    m_prevRefForLoop = m_ref;
+    m_prevRefForLoop = m_drive;
     m_prevRefVelForLoop = m_refVel;
     m_stepAccumulator += (feedForward + du) / m_cfg.stepSize;
     m_ticksLeft = ticksPerPeriod < 1 ? 1 : ticksPerPeriod;
@@ -135,7 +186,7 @@ void SimAxis::applyCorrection(double du, int ticksPerPeriod)
 {
     if (!m_closedLoop || m_frozen)
         return;
-    m_prevRefForLoop = m_ref;
+    m_prevRefForLoop = m_drive;
     m_prevRefVelForLoop = m_refVel;
     m_prevDvForLoop = 0;
     m_u += du;
@@ -147,9 +198,9 @@ void SimAxis::resumeLoop(const ClosedLoopTuning& tuning)
 {
     // Eq. 2 differences errors: an error history from before the test would
     // look like a jump and kick the derivative term.
-    const double raw = m_ref - measured();
+    const double raw = m_drive - measured();
     m_e1 = m_e2 = std::abs(raw) <= tuning.deadbandCounts * m_cfg.resolution + 1e-12 ? 0.0 : raw;
-    m_prevRefForLoop = m_ref;
+    m_prevRefForLoop = m_drive;
     m_prevRefVelForLoop = m_refVel;
     m_prevDvForLoop = 0;
 }
@@ -168,7 +219,7 @@ void SimAxis::tick(double dtS)
         m_stepAccumulator -= static_cast<double>(steps);
         m_outputStepsS = static_cast<double>(steps) / dtS;
     } else if (!m_frozen) {
-        steps = std::llround(m_ref / m_cfg.stepSize) - m_motorSteps;
+        steps = std::llround(m_drive / m_cfg.stepSize) - m_motorSteps;
         m_outputStepsS = static_cast<double>(steps) / dtS;
     }
     issueSteps(steps, dtS);

@@ -3,8 +3,10 @@
 // grating) and, for the stage, its incremental PID loop. Positions here are
 // machine coordinates in axis units; the machine maps them to what the host sees.
 #include "device/sim/machine_config.h"
+#include "motion/metrology/compensation/compensation_model.h"
 
 #include <cstdint>
+#include <optional>
 #include <random>
 
 namespace sim {
@@ -17,9 +19,23 @@ public:
 
     const AxisConfig& config() const { return m_cfg; }
 
-    /// The reference the trajectory generator wants now, and its velocity.
+    /// The reference the trajectory generator wants now, and its velocity. With a
+    /// compensation attached this is the nominal position; the drive follows it plus
+    /// the correction (driveReference()).
     void setReference(double position, double velocity);
     double reference() const { return m_ref; }
+    /// Where the motor (open loop) or the position loop (closed loop) is sent: the
+    /// reference plus the compensation's correction at it, for the side it is
+    /// approached from (seed 002: every position command has the error at that
+    /// position taken off; here on every tick, so paths and jogs are compensated too).
+    double driveReference() const { return m_drive; }
+
+    /// Attaches an error compensation (positions in home coordinates: machine
+    /// position − `homeMachine`), or detaches it (nullptr). The drive does not move:
+    /// the nominal reference is shifted instead, so enabling or disabling never
+    /// jerks the axis; the next move goes to the compensated place.
+    void setCompensation(const motion::metrology::CompensationModel* model, double homeMachine);
+    bool compensated() const { return m_comp.has_value(); }
     double referenceVelocity() const { return m_refVel; }
 
     /// Advances the plant by one simulation tick.
@@ -43,10 +59,19 @@ public:
     /// E-stop: the reference freezes; the motor gets no more steps.
     void freeze();
 
+    // Three positions, as on a real machine: where the carriage truly is (at the
+    // scale's line), what the encoder or grating reads of it (quantized, with the
+    // scale's own error), and where the work point is (the carriage plus the Abbe
+    // error): what a gauge or an interferometer at the work point measures.
     double carriage() const { return m_carriage; }                 ///< true position of the carriage
     double measured() const;                                       ///< encoder or grating reading
-    double workPoint() const;                                      ///< what an interferometer at the work point reads
-    double followingError() const { return measured() - m_ref; }
+    double workPoint() const;                                      ///< what a gauge or interferometer at the work point reads
+    /// The reading reported to the host, in the nominal frame the reference is in: on a
+    /// closed loop the grating less the correction in force (the device's best idea of
+    /// the work point; a compensated stage at rest reads its nominal target). An open
+    /// loop's encoder on the carriage already reads where the carriage is: as it is.
+    double reportedMeasured() const { return m_closedLoop ? measured() - (m_drive - m_ref) : measured(); }
+    double followingError() const { return reportedMeasured() - m_ref; }
     double measuredVelocity() const { return m_measuredVel; }
     double controllerOutputStepsS() const { return m_outputStepsS; }
     bool homeSwitch() const { return m_carriage <= m_cfg.homeSwitchAt; }
@@ -58,8 +83,15 @@ public:
     double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(m_rng); }
 
 private:
+    /// Where the nut pushes for a screw position: lead error and the pitch error's ripple.
+    double nutPosition(double screw) const;
     void issueSteps(std::int64_t steps, double dtS);
     void takeUpPlay();
+    /// m_drive from m_ref and the approach direction.
+    void updateDrive();
+    /// The nominal reference whose drive reference is `drive` (the correction inverted).
+    double nominalForDrive(double drive) const;
+    double correctionAt(double nominal) const;
 
     AxisConfig m_cfg;
     bool m_closedLoop;
@@ -68,6 +100,10 @@ private:
     std::mt19937_64 m_rng;
 
     double m_ref = 0, m_refVel = 0, m_prevRefForLoop = 0, m_prevRefVelForLoop = 0;
+    double m_drive = 0;             ///< m_ref plus the compensation's correction (m_prevRefForLoop tracks this)
+    std::optional<motion::metrology::CompensationModel> m_comp;
+    double m_compHome = 0;          ///< machine position of home coordinate 0
+    motion::metrology::Direction m_approach = motion::metrology::Direction::Up;  ///< the side the reference last moved towards
     double m_prevDvForLoop = 0;     ///< last period's change of the reference velocity (acceleration feed-forward)
     double m_tickS = 1e-4;          ///< the simulation tick, as tick() was last given it
     std::int64_t m_motorSteps = 0;  ///< steps the driver has received, from machine zero

@@ -15,7 +15,7 @@ namespace {
 constexpr std::uint16_t kMaxEvents = 256;  // bounded: oldest events are dropped first
 }
 
-SimMachine::SimMachine(const MachineConfig& config) : m_cfg(config)
+SimMachine::SimMachine(const MachineConfig& config, const NonVolatile& powerUp) : m_cfg(config)
 {
     m_ticksPerControl = std::max(1, static_cast<int>(std::lround(config.controlPeriodS / kTickS)));
     std::uint64_t seed = config.seed;
@@ -30,6 +30,7 @@ SimMachine::SimMachine(const MachineConfig& config) : m_cfg(config)
     }
     m_tuning = std::make_unique<SimTuning>(*this);
     m_path = std::make_unique<PathQueue>(*this);
+    m_comp = std::make_unique<SimCompensation>(*this, powerUp);
 }
 
 SimMachine::~SimMachine() = default;
@@ -37,7 +38,8 @@ SimMachine::~SimMachine() = default;
 void SimMachine::setGains(const PidGains& g) { m_tuning->setAllGains(g); }
 
 double SimMachine::commandedLogical(int i) const { return st(i).plant->reference() - st(i).offset; }
-double SimMachine::measuredLogical(int i) const { return st(i).plant->measured() - st(i).measuredOffset; }
+double SimMachine::measuredLogical(int i) const { return st(i).plant->reportedMeasured() - st(i).measuredOffset; }
+double SimMachine::workPointLogical(int i) const { return st(i).plant->workPoint() - st(i).measuredOffset; }
 
 void SimMachine::zeroCounters(int i, double logicalHere)
 {

@@ -5,6 +5,7 @@
 #include "device/protocol/messages.h"
 #include "device/sim/machine_config.h"
 #include "device/sim/sim_axis.h"
+#include "device/sim/sim_compensation.h"
 
 #include <memory>
 #include <optional>
@@ -28,7 +29,8 @@ public:
     /// reference stops, so the ramp does not take the whole remaining 50 ms.
     static constexpr double kJogStopBudgetS = 0.025;
 
-    explicit SimMachine(const MachineConfig& config);
+    /// `powerUp`: what the last power cycle left in the flash (saved compensations).
+    explicit SimMachine(const MachineConfig& config, const NonVolatile& powerUp = {});
     ~SimMachine();
 
     const MachineConfig& config() const { return m_cfg; }
@@ -69,6 +71,12 @@ public:
     /// Host coordinates (mm or µL): the step counter and the encoder/grating counter.
     double commandedLogical(int i) const;
     double measuredLogical(int i) const;
+    /// Where the work point truly is, in host coordinates: the work point less the
+    /// machine position where the readback reads 0. What a gauge or interferometer at
+    /// the work point reads whose zero is that machine position (at it, the gauge reads
+    /// the Abbe error there, not 0). The readback sees neither the scale's error nor the
+    /// Abbe error; this does.
+    double workPointLogical(int i) const;
     bool homed(int i) const { return m_axes[static_cast<std::size_t>(i)].homed; }
     bool estopActive() const { return m_estop; }
     /// Every closed-loop axis' operator gains (seed 002's per-period form).
@@ -79,10 +87,14 @@ public:
     /// The queued LINE/ARC path (device/sim/path_queue.h).
     PathQueue& paths() { return *m_path; }
     const PathQueue& paths() const { return *m_path; }
+    /// Axis error compensation (device/sim/sim_compensation.h).
+    SimCompensation& compensation() { return *m_comp; }
+    const SimCompensation& compensation() const { return *m_comp; }
 
 private:
     friend class SimTuning;
     friend class PathQueue;  // drives the axes it has reserved (Mode::Path) through the same state
+    friend class SimCompensation;  // attaches compensations to homed axes at rest
     enum class Mode { Idle, Segment, Jog, Decel, Homing, Settling, Tuning, Path };
     enum class HomePhase { SeekFast, BackOff, SeekSlow };
 
@@ -163,6 +175,7 @@ private:
     std::vector<double> m_xyLineStart, m_xyLineDir;  ///< last XY path, for contour error
     std::unique_ptr<SimTuning> m_tuning;
     std::unique_ptr<PathQueue> m_path;
+    std::unique_ptr<SimCompensation> m_comp;
 };
 
 } // namespace sim

@@ -3,6 +3,7 @@
 // checks settling and switches.
 #include "device/sim/sim_machine.h"
 
+#include "device/sim/sim_compensation.h"
 #include "device/sim/sim_tuning.h"
 
 #include "device/sim/path_queue.h"
@@ -194,6 +195,7 @@ void SimMachine::tickSettling(int i)
 void SimMachine::tick()
 {
     ++m_ticks;
+    m_comp->reconcile();  // a compensation takes effect once its axis is homed and at rest
     m_path->tick();
     tickSegments();
     tickVelocityModes();

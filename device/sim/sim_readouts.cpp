@@ -2,6 +2,7 @@
 // all in logical (host) coordinates and wire units.
 #include "device/sim/sim_machine.h"
 
+#include "device/protocol/messages_compensation.h"
 #include "device/protocol/messages_tuning.h"
 #include "device/sim/path_queue.h"
 
@@ -14,7 +15,7 @@ proto::HelloReply SimMachine::hello(std::uint32_t linkBaud) const
 {
     proto::HelloReply h;
     h.kind = m_cfg.kind;
-    h.capabilities = proto::CapHoming | proto::CapTelemetry | proto::CapJogVelocity | proto::CapPathQueue;
+    h.capabilities = proto::CapHoming | proto::CapTelemetry | proto::CapJogVelocity | proto::CapPathQueue | proto::CapCompensation;
     if (m_cfg.closedLoop)
         h.capabilities |= proto::CapGrating | proto::CapClosedLoopPid | proto::CapGains | proto::CapExperiments;
     else
@@ -114,7 +115,7 @@ double SimMachine::contourErrorMm() const
 {
     if (axisCount() < 2)
         return 0;
-    const double mx = st(0).plant->measured(), my = st(1).plant->measured();
+    const double mx = st(0).plant->reportedMeasured(), my = st(1).plant->reportedMeasured();
     if (m_path->active())
         if (const auto e = m_path->contourErrorMm(mx, my))
             return std::abs(*e);  // against the queued path's lines and arcs

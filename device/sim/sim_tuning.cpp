@@ -228,7 +228,7 @@ bool SimTuning::controlStep(int axis, int ticksPerPeriod)
     auto& s = m_m.st(axis);
     if (s.mode != SimMachine::Mode::Tuning)
         a.test->abort(EndReason::Fault);  // a switch or a fault took the axis
-    const double u = a.test->control(s.plant->measured());
+    const double u = a.test->control(s.plant->reportedMeasured());
     s.plant->applyCorrection(u - a.lastU, ticksPerPeriod);
     s.plant->setReference(a.test->setpoint(), 0);
     a.lastU = u;
@@ -255,7 +255,7 @@ void SimTuning::record(int axis)
         c.periodS *= 2;
     }
     const auto& s = m_m.st(axis);
-    c.samples.push_back({nm(a.test->setpoint() - s.offset), nm(s.plant->measured() - s.measuredOffset), nm(a.test->output())});
+    c.samples.push_back({nm(a.test->setpoint() - s.offset), nm(s.plant->reportedMeasured() - s.measuredOffset), nm(a.test->output())});
 }
 
 void SimTuning::end(int axis)

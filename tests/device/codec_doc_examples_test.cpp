@@ -8,6 +8,7 @@
 #include "device/protocol/crc16.h"
 #include "device/protocol/frame_codec.h"
 #include "device/protocol/messages.h"
+#include "compensation_doc_examples.h"
 #include "tuning_doc_examples.h"
 #include "device/protocol/messages_path.h"
 
@@ -124,6 +125,8 @@ std::vector<Example> examples()
     tb.values = {nm(12.5), nm(40.0005), 1, nm(12.5005), nm(40), 0};
     ex.push_back({"telemetry-batch", t(MsgType::TelemetryBatch), 2, encode(tb)});
     for (auto& [name, type, seq, payload] : tuningdoc::examples())
+        ex.push_back({name, type, seq, payload});
+    for (auto& [name, type, seq, payload] : compensationdoc::examples())
         ex.push_back({name, type, seq, payload});
 
     // Path queue (docs/protocol.md, "Path queue"): a quarter circle and a line on the stage.

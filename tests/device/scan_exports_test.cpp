@@ -169,7 +169,7 @@ TEST(ScanExports, CsvHasPlannedAndMeasuredPositions)
     EXPECT_EQ(rows[1][col("device_time_us")], "123456789");
     EXPECT_EQ(rows[2][col("measured_x_mm")], "") << "a tile not yet taken has no measurement";
     EXPECT_EQ(rows[4][col("row")], "1");
-    // With compensation on, the stitching position is the work point: back on the plan.
+    // A compensated stage reports its grating at the work point: the reading is where the tile is.
     EXPECT_NEAR(std::stod(rows[1][col("stitch_x_mm")]), l.tiles[0].centre.xMm, 0.001);
 }
 

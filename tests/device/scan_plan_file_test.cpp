@@ -48,7 +48,6 @@ ScanPlan unusualPlan()
     p.toleranceUm = 0.75;
     p.settleTimeoutS = 3;
     p.compensation.enabled = true;
-    p.compensation.xPolyUm = {1, 2};
     p.naming = {"img-{row}-{col}.png", 0, "XY"};
     return p;
 }
@@ -68,7 +67,7 @@ TEST(ScanPlanFile, EveryFieldRoundTrips)
     EXPECT_EQ(r.plan->camera.imageY, ImageY::StagePlusY);
     EXPECT_EQ(r.plan->order, ScanOrder::SnakeColumns);
     EXPECT_EQ(r.plan->start, StartCorner::BottomRight);
-    EXPECT_EQ(r.plan->compensation.xPolyUm, (std::vector<double>{1, 2}));
+    EXPECT_TRUE(r.plan->compensation.enabled);
     EXPECT_EQ(r.plan->naming.mmXyStage, "XY");
     EXPECT_EQ(layoutFingerprint(*r.plan, layoutScan(*r.plan)), layoutFingerprint(p, layoutScan(p)));
 }
@@ -169,5 +168,22 @@ TEST(ScanPlanFile, FingerprintFollowsTheTilesNotTheName)
     EXPECT_NE(layoutFingerprint(p, layoutScan(p)), a);
     p.overlapX = 0.1;
     p.compensation.enabled = true;
-    EXPECT_NE(layoutFingerprint(p, layoutScan(p)), a) << "compensation changes what is commanded";
+    EXPECT_NE(layoutFingerprint(p, layoutScan(p)), a) << "the stage's compensation changes where the work point lands";
+}
+
+TEST(ScanPlanFile, SeedTwosCurvesInAnOlderPlanAreReadAndNoLongerUsed)
+{
+    // Before the stage kept its own compensation (issue 18), plans carried seed 002's
+    // curves; such a file still opens, and the plan asks for the device's compensation.
+    ScanPlan p;
+    p.compensation.enabled = true;
+    std::string text = scanfile::writePlan(p);
+    const std::string key = "\"enabled\": true";
+    const auto at = text.find(key);
+    ASSERT_NE(at, std::string::npos) << text;
+    text.insert(at + key.size(), ",\n    \"x_error_poly_um\": [1.563, 0.9473, -0.0006],\n    \"y_error_poly_um\": [1.021, 0.6397, 0.0168]");
+    const auto r = scanfile::parsePlan(text);
+    ASSERT_TRUE(r.plan) << r.problems.format("old.scan.json");
+    EXPECT_TRUE(r.plan->compensation.enabled);
+    EXPECT_EQ(scanfile::writePlan(*r.plan).find("error_poly"), std::string::npos) << "written without them";
 }

@@ -182,7 +182,7 @@ TEST(ScanPlan, NamesOfOrdersAndCornersRoundTrip)
     EXPECT_FALSE(orderFromName("zigzag"));
 }
 
-TEST(ScanPlan, VanishingSpeedAndWildCurvesAreRefused)
+TEST(ScanPlan, AVanishingSpeedIsRefused)
 {
     // Found by fuzz_files: a speed of 1e-320 mm/s passed "above 0" and made the
     // estimate infinite.
@@ -191,9 +191,5 @@ TEST(ScanPlan, VanishingSpeedAndWildCurvesAreRefused)
     EXPECT_NE(problemAt(validate(p), "motion.speed_mm_s").find("from 0.01 to 1000"), std::string::npos);
     p.speedMmS = 10;
     p.compensation.enabled = true;
-    p.compensation.yPolyUm = {0, 0, 0, 0, 0, 1e3};  // 1e3·y⁵ µm
-    EXPECT_NE(problemAt(validate(p), "compensation.y_error_poly_um").find("not one to compensate"), std::string::npos)
-        << all(validate(p));
-    p.compensation.enabled = false;
-    EXPECT_TRUE(validate(p).empty()) << "a curve that is not used is not checked for size";
+    EXPECT_TRUE(validate(p).empty()) << "the device's compensation is checked when the run starts" << all(validate(p));
 }

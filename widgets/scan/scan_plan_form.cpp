@@ -286,10 +286,11 @@ QWidget* ScanPlanForm::runGroup()
     m_settleTimeout = number(QStringLiteral("scanSettleTimeout"), 0.01, 600, 2, 2, tr(" s"),
                              tr("A tile not settled by then stops the run with the reason"));
     form->addRow(tr("Settle timeout"), m_settleTimeout);
-    m_compensate = new QCheckBox(tr("Compensate seed 002's error curves"));
+    m_compensate = new QCheckBox(tr("Use the stage's own compensation"));
     m_compensate->setObjectName(QStringLiteral("scanCompensate"));
-    m_compensate->setToolTip(tr("Moves each target so the work point lands on it: X −0.0006x² + 0.9473x + 1.563 µm, "
-                                "Y 0.0168y² + 0.6397y + 1.021 µm"));
+    m_compensate->setToolTip(tr("Runs only when the stage has its error compensation enabled on X and Y: the stage "
+                                "moves each target so the work point lands on it. Measure and upload it on the "
+                                "Calibration screen."));
     connect(m_compensate, &QCheckBox::toggled, this, &ScanPlanForm::changed);
     form->addRow(m_compensate);
     return group(tr("Run"), form);
@@ -367,8 +368,6 @@ ScanPlan ScanPlanForm::plan() const
     p.toleranceUm = m_tolerance->value();
     p.settleTimeoutS = m_settleTimeout->value();
     p.compensation.enabled = m_compensate->isChecked();
-    p.compensation.xPolyUm = m_xPoly;
-    p.compensation.yPolyUm = m_yPoly;
     p.naming.filePattern = m_pattern->text().toStdString();
     p.naming.firstIndex = m_firstIndex->value();
     p.naming.mmXyStage = m_mmStage->text().toStdString();
@@ -414,8 +413,6 @@ void ScanPlanForm::setPlan(const ScanPlan& p)
     m_tolerance->setValue(p.toleranceUm);
     m_settleTimeout->setValue(p.settleTimeoutS);
     m_compensate->setChecked(p.compensation.enabled);
-    m_xPoly = p.compensation.xPolyUm;
-    m_yPoly = p.compensation.yPolyUm;
     m_pattern->setText(QString::fromStdString(p.naming.filePattern));
     m_firstIndex->setValue(p.naming.firstIndex);
     m_mmStage->setText(QString::fromStdString(p.naming.mmXyStage));

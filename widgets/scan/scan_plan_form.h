@@ -73,7 +73,6 @@ private:
     // Export
     QLineEdit *m_pattern, *m_mmStage;
     QSpinBox* m_firstIndex;
-    std::vector<double> m_xPoly, m_yPoly;  ///< kept as loaded: the form does not edit the curves
 };
 
 } // namespace ui

@@ -12,8 +12,15 @@ namespace words::areas {
 QString capability(const msg::Message& m);  ///< "capability."
 QString grblText(const msg::Message& m);    ///< "grbl." (the GRBL backend, docs/grbl.md)
 
+// The accuracy bench (accuracy_words.cpp).
+QString accuracy(const msg::Message& m);      ///< "accuracy."
+QString compensation(const msg::Message& m);  ///< "compensation."
+QString fileProblem(const msg::Message& m);   ///< "file."
+QString gauge(const msg::Message& m);         ///< "gauge."
+
 // Terms: a null QString for a term id the area does not know.
 QString capabilityTerm(const std::string& id);  ///< "instrument.", "capability.because."
 QString grblTerm(const std::string& id);        ///< "capability.because.grbl_*", "capability.because.no_*_in_profile", "grbl.status."
+QString accuracyTerm(const std::string& id);    ///< "direction.", "rotation."
 
 } // namespace words::areas

@@ -40,6 +40,7 @@ QString CapabilityWords::lacking(dev::Capability c)
     case C::Pump: return tr("plunger pump");
     case C::TriggerOutput: return tr("trigger output for a camera");
     case C::MachineLimits: return tr("report of its acceleration and jerk limits");
+    case C::Compensation: return tr("error compensation of its own");
     }
     return {};
 }

@@ -17,11 +17,16 @@ using TermFn = QString (*)(const std::string&);
 const std::pair<const char*, SentenceFn> kSentences[] = {
     {"capability.", &areas::capability},
     {"grbl.", &areas::grblText},
+    {"accuracy.", &areas::accuracy},
+    {"compensation.", &areas::compensation},
+    {"file.", &areas::fileProblem},
+    {"gauge.", &areas::gauge},
 };
 
 const TermFn kTerms[] = {
     &areas::capabilityTerm,
     &areas::grblTerm,
+    &areas::accuracyTerm,
 };
 
 bool startsWith(const std::string& s, const char* prefix)

@@ -8,6 +8,7 @@
 #include "device/backends/benchpilot/benchpilot_client.h"
 
 #include "device/backends/benchpilot/protocol_path_client.h"
+#include "device/backends/benchpilot/protocol_compensation_client.h"
 #include "device/backends/benchpilot/protocol_tuning_client.h"
 
 #include <QCoreApplication>
@@ -15,7 +16,8 @@
 namespace dev {
 
 BenchPilotClient::BenchPilotClient(QObject* parent)
-    : Instrument(parent), m_paths(new ProtocolPathClient(this, this)), m_tuning(new ProtocolTuningClient(this, this))
+    : Instrument(parent), m_paths(new ProtocolPathClient(this, this)), m_tuning(new ProtocolTuningClient(this, this)),
+      m_compensation(new ProtocolCompensationClient(this, this))
 {
     m_clock.start();
     m_timeoutTimer.setInterval(20);

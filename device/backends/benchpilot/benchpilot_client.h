@@ -3,8 +3,8 @@
 // transport. Connection state machine, sequence-numbered requests with timeouts and
 // retransmission, realtime requests that overtake the queue, jog refreshes, the status
 // poll and the telemetry stream, all behind dev::Instrument. Its parts: the device's
-// path queue (ProtocolPathClient) and its tuning (ProtocolTuningClient), both built on
-// request().
+// path queue (ProtocolPathClient), its tuning (ProtocolTuningClient) and its axis error
+// compensation (ProtocolCompensationClient), all built on request().
 //
 // Only app/ and tests name this class; screens and runners see dev::Instrument.
 #include "device/client/instrument.h"
@@ -21,6 +21,7 @@
 
 namespace dev {
 
+class ProtocolCompensationClient;
 class ProtocolPathClient;
 class ProtocolTuningClient;
 
@@ -75,6 +76,7 @@ public:
     double toAxisUnits(const proto::ChannelRef& channel, std::int32_t value) const override;
     PathClient* paths() override;
     TuningClient* tuning() override;
+    CompensationClient* compensation() override;
 
     /// Any request of the protocol, with its reply payload handed back: how the parts
     /// (tuning, paths) talk to the device without this class growing a method per message.
@@ -148,6 +150,7 @@ private:
     LinkStats m_stats;
     ProtocolPathClient* m_paths;
     ProtocolTuningClient* m_tuning;
+    ProtocolCompensationClient* m_compensation;
 };
 
 } // namespace dev

@@ -3,8 +3,10 @@
 // the host-timed dwell, the trigger output it does not have, and its parts.
 #include "device/backends/benchpilot/benchpilot_client.h"
 
+#include "device/backends/benchpilot/protocol_compensation_client.h"
 #include "device/backends/benchpilot/protocol_path_client.h"
 #include "device/backends/benchpilot/protocol_tuning_client.h"
+#include "device/protocol/messages_compensation.h"
 #include "device/protocol/messages_tuning.h"
 
 #include <QPointer>
@@ -35,6 +37,7 @@ Capabilities BenchPilotClient::capabilities() const
         {proto::CapGains, Capability::PidGains},
         {proto::CapExperiments, Capability::TuningTests},
         {proto::CapPump, Capability::Pump},
+        {proto::CapCompensation, Capability::Compensation},
     };
     for (const auto& m : map)
         if (hasProtocolCapability(m.bits))
@@ -62,6 +65,7 @@ msg::Message BenchPilotClient::missingReason(Capability c) const
     case Capability::MachineLimits:
         because = "capability.because.older_firmware";  // a protocol 1.0 device: HELLO without the limits block
         break;
+
     case Capability::TriggerOutput:
         because = "capability.because.not_in_protocol";
         break;
@@ -133,5 +137,6 @@ void BenchPilotClient::pulseTrigger(double, Callback done)
 
 PathClient* BenchPilotClient::paths() { return m_paths; }
 TuningClient* BenchPilotClient::tuning() { return m_tuning; }
+CompensationClient* BenchPilotClient::compensation() { return m_compensation; }
 
 } // namespace dev

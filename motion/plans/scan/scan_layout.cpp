@@ -176,6 +176,10 @@ std::uint64_t layoutFingerprint(const ScanPlan& plan, const ScanLayout& layout)
         }
     };
     mix(static_cast<std::int64_t>(layout.tiles.size()));
+    // With the stage's own compensation the work point lands elsewhere for the same
+    // commands: a run of one is not continued as the other.
+    if (plan.compensation.enabled)
+        mix(-18);
     for (const Tile& t : layout.tiles) {
         const Point2 c = commandedTarget(plan, t.centre);
         mix(t.index);

@@ -1,6 +1,5 @@
 #include "motion/plans/scan/scan_plan.h"
 
-#include "motion/calibration/error_polynomial.h"
 #include "motion/plans/scan/scan_layout.h"
 #include "motion/plans/scan/scan_naming.h"
 
@@ -41,10 +40,8 @@ double pixelAtSampleUm(const Camera& c)
 
 Point2 commandedTarget(const ScanPlan& plan, Point2 planned)
 {
-    if (!plan.compensation.enabled)
-        return planned;
-    return {compensatedCommandMm(ErrorPolynomial{plan.compensation.xPolyUm}, planned.xMm),
-            compensatedCommandMm(ErrorPolynomial{plan.compensation.yPolyUm}, planned.yMm)};
+    (void)plan;  // the device applies its own compensation to what it is sent
+    return planned;
 }
 
 const char* orderName(ScanOrder o)
@@ -186,13 +183,6 @@ void checkCamera(const Camera& cam, Checker& c)
     c.range("camera.rotation_deg", cam.rotationDeg, -180, 180, "°");
 }
 
-bool wellFormedPoly(const std::vector<double>& poly)
-{
-    if (poly.empty() || poly.size() > 6)
-        return false;
-    return std::all_of(poly.begin(), poly.end(), [](double v) { return std::isfinite(v) && std::fabs(v) < 1e6; });
-}
-
 } // namespace
 
 std::vector<PlanProblem> validate(const ScanPlan& plan)
@@ -215,26 +205,6 @@ std::vector<PlanProblem> validate(const ScanPlan& plan)
     c.range("timing.exposure_s", plan.exposureS, 0, 3600, " s");
     c.range("timing.tolerance_um", plan.toleranceUm, 0.1, 1000, " µm");
     c.positive("timing.settle_timeout_s", plan.settleTimeoutS, 600, " s");
-    if (!wellFormedPoly(plan.compensation.xPolyUm))
-        c.add("compensation.x_error_poly_um", "must hold 1 to 6 finite coefficients, constant term first");
-    if (!wellFormedPoly(plan.compensation.yPolyUm))
-        c.add("compensation.y_error_poly_um", "must hold 1 to 6 finite coefficients, constant term first");
-    if (plan.compensation.enabled && out.empty()) {
-        // A curve that moves a target by a millimetre is not a positioning error
-        // (seed 002's reach 0.23 mm at the end of travel); sample it over the region.
-        const Rect r = regionBounds(plan.region);
-        for (int k = 0; k <= 64; ++k) {
-            const double fx = r.x0Mm + r.widthMm() * k / 64.0, fy = r.y0Mm + r.heightMm() * k / 64.0;
-            const double ex = ErrorPolynomial{plan.compensation.xPolyUm}.errorUm(fx);
-            const double ey = ErrorPolynomial{plan.compensation.yPolyUm}.errorUm(fy);
-            if (!(std::fabs(ex) < 1000 && std::fabs(ey) < 1000)) {
-                c.add(std::fabs(ex) < 1000 ? "compensation.y_error_poly_um" : "compensation.x_error_poly_um",
-                      "the curve reaches " + num(std::fabs(ex) < 1000 ? ey : ex) + " µm over the region; a positioning error "
-                          "above 1000 µm is not one to compensate");
-                break;
-            }
-        }
-    }
     if (auto why = checkFilePattern(plan.naming.filePattern))
         c.add("export.file_pattern", *why);
     c.range("export.first_index", plan.naming.firstIndex, 0, 1e6);
@@ -278,8 +248,8 @@ std::vector<PlanProblem> validate(const ScanPlan& plan, const StageModel& stage)
         c.add("motion.speed_mm_s", "must be at most the stage's top speed " + num(vMax) + " mm/s (got " + num(plan.speedMmS) + ")");
     if (!out.empty())
         return out;
-    // Every point the stage is sent to (overtravel points, compensated targets) must
-    // be inside the travel, not only the region: name the first one that is not.
+    // Every point the stage is sent to (overtravel points and tiles) must be inside the
+    // travel, not only the region: name the first one that is not.
     const ScanLayout layout = layoutScan(plan);
     for (std::size_t k = 0; k < layout.path.size(); ++k) {
         const Waypoint& wp = layout.path[k];
@@ -289,7 +259,7 @@ std::vector<PlanProblem> validate(const ScanPlan& plan, const StageModel& stage)
         // An overtravel point always comes right before its tile.
         const int tile = wp.tile >= 0 ? wp.tile : (k + 1 < layout.path.size() ? layout.path[k + 1].tile : 0);
         const std::string what = (wp.tile >= 0 ? "tile " : "the overtravel point before tile ") + std::to_string(tile + 1);
-        c.add(wp.tile >= 0 ? "compensation" : "approach.overtravel_mm",
+        c.add(wp.tile >= 0 ? regionPath : "approach.overtravel_mm",
               what + " (" + num(p.xMm) + ", " + num(p.yMm) + ") mm lies outside the stage's travel X " + num(t.x0Mm) + " … "
                   + num(t.x1Mm) + ", Y " + num(t.y0Mm) + " … " + num(t.y1Mm) + " mm; move the region inward");
         break;

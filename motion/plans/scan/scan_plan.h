@@ -59,12 +59,13 @@ struct Approach {
     double overtravelMm = 0.2;  ///< how far before the tile the overtravel point lies
 };
 
-/// Seed 002's positioning error polynomials (work point minus command, µm over mm),
-/// applied to the targets when enabled so the work point lands on the planned one.
+/// The stage's own error compensation (issue 18): with `enabled` the scan runs only
+/// when the device has compensation enabled on X and Y (the runner checks), and the
+/// device moves every target by its correction so the work point lands on the planned
+/// position. The plan carries no error curve of its own: measure one on the
+/// Calibration screen (or `accuracy run`), fit it and upload it to the device.
 struct Compensation {
     bool enabled = false;
-    std::vector<double> xPolyUm{1.563, 0.9473, -0.0006};  ///< c0 first: seed 002's X fit
-    std::vector<double> yPolyUm{1.021, 0.6397, 0.0168};   ///< c0 first: seed 002's Y fit
 };
 
 /// How the exports name tiles and devices.
@@ -122,8 +123,8 @@ std::vector<PlanProblem> validate(const ScanPlan& plan);
 /// it, the speed within its limits.
 std::vector<PlanProblem> validate(const ScanPlan& plan, const StageModel& stage);
 
-/// The position to command for a planned one: the plan's compensation applied
-/// when enabled (each axis by its own curve), else the planned position itself.
+/// The position to command for a planned one: the planned position itself. With the
+/// device's compensation the device moves it by the correction; the host never does.
 Point2 commandedTarget(const ScanPlan& plan, Point2 planned);
 
 const char* orderName(ScanOrder o);         ///< "rows", "cols", "snake-rows", "snake-cols"

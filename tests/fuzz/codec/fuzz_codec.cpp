@@ -35,6 +35,7 @@
 #include "device/protocol/crc16.h"
 #include "device/protocol/frame_codec.h"
 #include "device/protocol/messages.h"
+#include "device/protocol/messages_compensation.h"
 #include "device/protocol/messages_tuning.h"
 #include "device/protocol/messages_path.h"
 #include "device/sim/firmware.h"
@@ -207,6 +208,11 @@ void checkAllDecoders(const Bytes& p)
     checkDecoder(p, &proto::decodePathBeginRequest, "decodePathBeginRequest");
     checkDecoder(p, &proto::decodePathAppendRequest, "decodePathAppendRequest");
     checkDecoder(p, &proto::decodePathStatusReply, "decodePathStatusReply");
+    checkDecoder(p, &proto::decodeCompUploadRequest, "decodeCompUploadRequest");
+    checkDecoder(p, &proto::decodeCompUploadReply, "decodeCompUploadReply");
+    checkDecoder(p, &proto::decodeCompGetRequest, "decodeCompGetRequest");
+    checkDecoder(p, &proto::decodeCompGetReply, "decodeCompGetReply");
+    checkDecoder(p, &proto::decodeCompEnableRequest, "decodeCompEnableRequest");
     if (const auto a = proto::decodePathAppendRequest(p))
         CHECK(!a->segments.empty() && a->segments.size() <= std::size_t(proto::kMaxPathSegmentsPerAppend), "PATH_APPEND segment count");
     const auto move = proto::decodeMoveRequest(p);
@@ -354,7 +360,7 @@ private:
 bool knownRequest(std::uint8_t t)
 {
     return (t >= 0x01 && t <= 0x0A) || (t >= 0x20 && t <= 0x22) || proto::tuningTypeName(t) != nullptr
-        || (t >= 0x10 && t <= 0x12) || (t >= 0x24 && t <= 0x26);
+        || (t >= 0x10 && t <= 0x12) || (t >= 0x24 && t <= 0x26) || proto::compensationTypeName(t) != nullptr;
 }
 
 struct FirmwareChecker {

@@ -1,0 +1,149 @@
+#include "accuracy_cli.h"
+
+#include "widgets/wording/wording.h"
+
+#include <QCoreApplication>
+#include <QJsonDocument>
+
+#include <cmath>
+
+namespace cli {
+namespace {
+QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+} // namespace
+
+double nm6(double v) { return std::round(v * 1e6) / 1e6; }
+
+QJsonObject messageJson(const msg::Message& m) { return words::toJson(m); }
+
+QJsonObject problemJson(const accuracyfiles::FileProblem& p)
+{
+    QJsonObject o = words::toJson(p.message);
+    o.insert(QStringLiteral("file"), QString::fromStdString(p.file));
+    o.insert(QStringLiteral("line"), p.line);
+    o.insert(QStringLiteral("column"), p.column);
+    o.insert(QStringLiteral("field"), QString::fromStdString(p.path));
+    if (p.warning)
+        o.insert(QStringLiteral("warning"), true);
+    return o;
+}
+
+QJsonObject problemJson(const motion::metrology::Problem& p)
+{
+    QJsonObject o = words::toJson(p.message);
+    o.insert(QStringLiteral("field"), QString::fromStdString(p.path));
+    if (p.warning)
+        o.insert(QStringLiteral("warning"), true);
+    return o;
+}
+
+void printJson(Invocation& inv, const QJsonObject& o)
+{
+    inv.out() << QJsonDocument(o).toJson(QJsonDocument::Compact) << "\n";
+    inv.out().flush();
+}
+
+bool reportProblems(Invocation& inv, const accuracyfiles::FileProblems& problems)
+{
+    const bool errors = accuracyfiles::hasErrors(problems);
+    if (inv.json()) {
+        if (!errors)
+            return false;  // warnings travel with the result
+        QJsonArray list;
+        for (const auto& p : problems)
+            list.append(problemJson(p));
+        printJson(inv, QJsonObject{{QStringLiteral("ok"), false}, {QStringLiteral("problems"), list}});
+        return true;
+    }
+    for (const auto& p : problems) {
+        QString where = QString::fromStdString(p.file);
+        if (p.line > 0)
+            where += QStringLiteral(":%1:%2").arg(p.line).arg(p.column);
+        if (!p.path.empty())
+            where += QStringLiteral(": ") + QString::fromStdString(p.path);
+        (p.warning ? inv.out() : inv.err()) << where << ": " << (p.warning ? tr("warning: ") : QString()) << words::text(p.message) << "\n";
+    }
+    inv.out().flush();
+    inv.err().flush();
+    return errors;
+}
+
+bool reportProblems(Invocation& inv, const motion::metrology::Problems& problems,
+                    const std::vector<std::pair<QString, QString>>& optionNames)
+{
+    const bool errors = motion::metrology::hasErrors(problems);
+    auto optionOf = [&](const std::string& path) {
+        const QString p = QString::fromStdString(path);
+        for (const auto& [field, option] : optionNames)
+            if (p == field || p.startsWith(field + QLatin1Char('.')) || p.startsWith(field + QLatin1Char('[')))
+                return option;
+        return p;
+    };
+    if (inv.json()) {
+        if (!errors)
+            return false;
+        QJsonArray list;
+        for (const auto& p : problems) {
+            QJsonObject o = problemJson(p);
+            if (!optionNames.empty())
+                o.insert(QStringLiteral("option"), optionOf(p.path));
+            list.append(o);
+        }
+        printJson(inv, QJsonObject{{QStringLiteral("ok"), false}, {QStringLiteral("problems"), list}});
+        return true;
+    }
+    for (const auto& p : problems) {
+        const QString where = optionOf(p.path);
+        QString line = words::text(p.message);
+        if (!where.isEmpty())
+            line = where + QStringLiteral(": ") + line;
+        if (p.warning)
+            inv.out() << tr("warning: ") << line << "\n";
+        else
+            inv.report(line);
+    }
+    inv.out().flush();
+    return errors;
+}
+
+int reportFailure(Invocation& inv, const msg::Message& m, int exitCode)
+{
+    if (inv.json())
+        printJson(inv, QJsonObject{{QStringLiteral("ok"), false}, {QStringLiteral("error"), words::toJson(m)}});
+    else
+        inv.report(words::text(m));
+    return exitCode;
+}
+
+QJsonObject resultJson(const accuracyfiles::AccuracyResult& r)
+{
+    return QJsonDocument::fromJson(QByteArray::fromStdString(accuracyfiles::accuracyResultToJson(r))).object();
+}
+
+void printFiguresText(Invocation& inv, const accuracyfiles::AccuracyResult& r)
+{
+    const auto& f = r.evaluation.figures;
+    auto um = [](std::optional<double> v) { return v ? QString::number(*v * 1e3, 'f', 2) : QStringLiteral("—"); };
+    QTextStream& o = inv.out();
+    o << tr("Axis %1, %2, %3 cycles, %4 targets (ISO 230-2, µm)")
+             .arg(QString::fromStdString(r.axis), r.evaluation.bidirectional ? tr("bidirectional") : tr("unidirectional"))
+             .arg(r.evaluation.cycles)
+             .arg(r.evaluation.targets.size())
+      << "\n";
+    o << QStringLiteral("  A %1   A↑ %2   A↓ %3\n").arg(um(f.aMm), um(f.aUpMm), um(f.aDownMm));
+    o << QStringLiteral("  R %1   R↑ %2   R↓ %3\n").arg(um(f.rMm), um(f.rUpMm), um(f.rDownMm));
+    o << QStringLiteral("  E %1   E↑ %2   E↓ %3\n").arg(um(f.eMm), um(f.eUpMm), um(f.eDownMm));
+    o << QStringLiteral("  M %1   B %2   B̄ %3\n").arg(um(f.mMm), um(f.bMm), um(f.bMeanMm));
+    if (!r.tolerances.empty()) {
+        const auto verdicts = motion::metrology::judge(r.evaluation, r.tolerances);
+        for (const auto& v : verdicts)
+            o << QStringLiteral("  %1 %2 µm ≤ %3 µm: %4\n")
+                     .arg(QString::fromStdString(v.figure))
+                     .arg(v.valueMm * 1e3, 0, 'f', 2)
+                     .arg(v.limitMm * 1e3, 0, 'f', 2)
+                     .arg(v.pass ? tr("pass") : tr("FAIL"));
+    }
+    o.flush();
+}
+
+} // namespace cli

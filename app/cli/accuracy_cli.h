@@ -1,0 +1,38 @@
+#pragma once
+// What the accuracy and compensation commands share: problems printed as
+// "FILE:LINE:COL: FIELD: message" or as JSON ({id, args, units, message} plus file,
+// line, column, field), a result document as JSON, and one JSON line of output.
+#include "command.h"
+#include "device/files/accuracy/accuracy_result_file.h"
+#include "device/files/accuracy/file_problem.h"
+#include "motion/metrology/problem.h"
+
+#include <QJsonArray>
+#include <QJsonObject>
+
+namespace cli {
+
+QJsonObject problemJson(const accuracyfiles::FileProblem& p);
+QJsonObject problemJson(const motion::metrology::Problem& p);
+QJsonObject messageJson(const msg::Message& m);
+
+/// Prints every problem (text: errors on stderr, warnings on stdout; JSON: one object
+/// {"ok": false|true, "problems": [...]} when any is an error). True when any is an error.
+bool reportProblems(Invocation& inv, const accuracyfiles::FileProblems& problems);
+/// The same for a data model's problems; `optionNames` maps a field path's start to the
+/// command-line option that set it ("cycles" → "--cycles").
+bool reportProblems(Invocation& inv, const motion::metrology::Problems& problems,
+                    const std::vector<std::pair<QString, QString>>& optionNames = {});
+/// One message as the command's failure: text on stderr or {"ok": false, "error": {...}}.
+int reportFailure(Invocation& inv, const msg::Message& m, int exitCode);
+
+/// A result file's document as JSON (figures, targets, tolerances, verdicts, pass).
+QJsonObject resultJson(const accuracyfiles::AccuracyResult& r);
+void printJson(Invocation& inv, const QJsonObject& o);
+/// A number rounded to the nanometre (mm) for JSON.
+double nm6(double v);
+
+/// The figures as a small text table for a person.
+void printFiguresText(Invocation& inv, const accuracyfiles::AccuracyResult& r);
+
+} // namespace cli

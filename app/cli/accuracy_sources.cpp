@@ -1,0 +1,158 @@
+#include "accuracy_sources.h"
+
+#include "cli_session.h"
+#include "device/jobs/accuracy/gauge_source.h"
+#include "device/jobs/accuracy/interferometer_source.h"
+#include "device/jobs/accuracy/manual_source.h"
+#include "device/jobs/accuracy/readback_source.h"
+#include "device/link/gauge_dialect.h"
+#include "device/link/serial_transport.h"
+#include "device/link/simulated_gauge.h"
+#include "device/link/simulated_link.h"
+#include "widgets/wording/wording.h"
+
+#include <QCoreApplication>
+#include <QRegularExpression>
+#include <QSocketNotifier>
+
+#include <cmath>
+#include <unistd.h>
+
+namespace cli {
+namespace {
+QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+
+/// A typed reading: a number, with an optional unit (mm when none).
+std::optional<double> parseTyped(const QString& word)
+{
+    const QString w = word.trimmed();
+    if (w.isEmpty())
+        return std::nullopt;
+    // With a unit: the gauge dialect's rules; without: millimetres.
+    const auto a = gaugewire::parseAnswer(w.toStdString(), "stdin");
+    if (a.valueMm)
+        return a.valueMm;
+    bool ok = false;
+    const double v = w.toDouble(&ok);  // QString::toDouble reads the C locale's '.'
+    if (ok && std::isfinite(v))
+        return v;
+    return std::nullopt;
+}
+} // namespace
+
+jobs::ReadingSource* makeSource(Invocation& inv, CliSession& session, const QString& spec, int axis, QObject* owner)
+{
+    if (spec == QLatin1String("readback"))
+        return new jobs::ReadbackSource(session.instrument(), owner);
+    if (spec == QLatin1String("manual"))
+        return new jobs::ManualSource(owner);
+    if (spec == QLatin1String("interferometer"))
+        return new jobs::InterferometerSource(owner);
+    if (!spec.startsWith(QLatin1String("gauge:")) || spec.size() <= 6) {
+        inv.usage(tr("--source '%1': readback, gauge:PATH, manual or interferometer").arg(spec));
+        return nullptr;
+    }
+    const QString port = spec.mid(6);
+    double timeoutS = 1;
+    if (!inv.number(QStringLiteral("gauge-timeout"), timeoutS, 1.0))
+        return nullptr;
+    if (!(timeoutS > 0 && timeoutS <= 60)) {
+        inv.usage(tr("--gauge-timeout must be from 0 to 60 s"));
+        return nullptr;
+    }
+    jobs::GaugeSource* source = nullptr;
+    if (port == QLatin1String("sim")) {
+        auto* link = qobject_cast<dev::SimulatedLink*>(session.link());
+        if (!link) {
+            inv.usage(tr("--source gauge:sim reads the in-process simulator's gauge: use it with --sim"));
+            return nullptr;
+        }
+        auto* gauge = new dev::SimulatedGauge(link->machine(), axis, {}, owner);
+        source = new jobs::GaugeSource(gauge->hostEnd(), tr("simulated gauge"), owner);
+    } else {
+        double baud = 9600;
+        if (!inv.number(QStringLiteral("gauge-baud"), baud, 9600.0))
+            return nullptr;
+        auto* serial = new dev::SerialTransport(port, static_cast<qint32>(baud), owner);
+        source = new jobs::GaugeSource(serial, port, owner);
+    }
+    source->link().setTimeoutMs(static_cast<int>(std::lround(timeoutS * 1000)));
+    return source;
+}
+
+void attachStdinPrompter(Invocation& inv, jobs::ReadingSource* source, const std::function<void()>& onQuit)
+{
+    auto* manual = qobject_cast<jobs::ManualSource*>(source);
+    if (!manual)
+        return;
+    struct Stdin {
+        QByteArray buffer;
+        bool closed = false;
+        QSocketNotifier* notifier = nullptr;
+    };
+    auto in = std::make_shared<Stdin>();
+    in->notifier = new QSocketNotifier(STDIN_FILENO, QSocketNotifier::Read, manual);
+    QTextStream* err = &inv.err();
+    auto prompt = [err](const jobs::StopContext& s) {
+        QString what;
+        for (std::size_t n = 0; n < s.letters.size(); ++n)
+            what += QStringLiteral("%1 %2 mm  ").arg(s.letters[n]).arg(s.targetsMm[n], 0, 'f', 3);
+        *err << tr("reading %1 of %2: %3%4, cycle %5; type the reading in mm (q aborts): ")
+                    .arg(s.index + 1)
+                    .arg(s.total)
+                    .arg(what, words::term(motion::metrology::directionTermId(s.direction)))
+                    .arg(s.cycle);
+        err->flush();
+    };
+    // Lines typed ahead (or piped in) wait in the buffer for the stop they belong to.
+    auto process = [manual, in, err, prompt, onQuit] {
+        while (manual->waiting()) {
+            const int nl = in->buffer.indexOf('\n');
+            if (nl < 0) {
+                if (in->closed) {
+                    onQuit();  // stdin ended: nobody will type the rest
+                    return;
+                }
+                return;
+            }
+            const QString line = QString::fromUtf8(in->buffer.left(nl)).trimmed();
+            in->buffer.remove(0, nl + 1);
+            if (line.isEmpty())
+                continue;
+            if (line == QLatin1String("q") || line == QLatin1String("quit") || line == QLatin1String("abort")) {
+                onQuit();
+                return;
+            }
+            std::vector<double> values;
+            bool ok = true;
+            for (const QString& word : line.split(QRegularExpression(QStringLiteral("[\\s;]+(?=[+\\-0-9.])")), Qt::SkipEmptyParts)) {
+                if (const auto v = parseTyped(word))
+                    values.push_back(*v);
+                else
+                    ok = false;
+            }
+            const jobs::StopContext stop = *manual->waiting();
+            if (!ok || !manual->provide(values)) {
+                *err << tr("'%1' is not a reading here; ").arg(line);
+                prompt(stop);
+            }
+        }
+    };
+    QObject::connect(manual, &jobs::ManualSource::entryWanted, manual, [prompt, process](const jobs::StopContext& s) {
+        prompt(s);
+        process();
+    });
+    QObject::connect(in->notifier, &QSocketNotifier::activated, manual, [in, process] {
+        char chunk[256];
+        const ssize_t n = ::read(STDIN_FILENO, chunk, sizeof chunk);
+        if (n <= 0) {
+            in->closed = true;
+            in->notifier->setEnabled(false);
+        } else {
+            in->buffer.append(chunk, static_cast<int>(n));
+        }
+        process();
+    });
+}
+
+} // namespace cli

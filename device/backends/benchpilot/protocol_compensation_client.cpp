@@ -1,0 +1,226 @@
+#include "device/backends/benchpilot/protocol_compensation_client.h"
+
+#include "device/backends/benchpilot/benchpilot_client.h"
+#include "device/protocol/messages_compensation.h"
+
+#include <cmath>
+
+namespace dev {
+
+using motion::metrology::CompensationModel;
+
+namespace {
+
+RequestError invalid(const QString& why)
+{
+    RequestError e;
+    e.kind = RequestError::Kind::Invalid;
+    e.message = why;
+    return e;
+}
+
+std::int32_t nm(double mm) { return static_cast<std::int32_t>(std::llround(mm * 1e6)); }
+std::int32_t nmFromUm(double um) { return static_cast<std::int32_t>(std::llround(um * 1e3)); }
+
+} // namespace
+
+/// An upload in progress: the parts still to send.
+struct ProtocolCompensationClient::Upload {
+    int axis = 0;
+    proto::CompUploadRequest header;
+    std::vector<proto::CompPoint> points;
+    std::size_t next = 0;
+    Callback done;
+    Progress progress;
+};
+
+ProtocolCompensationClient::ProtocolCompensationClient(BenchPilotClient* client, QObject* parent)
+    : CompensationClient(client, parent), m_client(client)
+{
+    connect(client, &BenchPilotClient::eventReceived, this, [this](const DeviceEvent& e) {
+        if (e.kind == proto::kEvCompChanged)
+            emit changed(e.axis, e.text);
+    });
+}
+
+QVector<int> ProtocolCompensationClient::compensableAxes() const
+{
+    QVector<int> out;
+    if (!m_client || !m_client->hasProtocolCapability(proto::CapCompensation))
+        return out;
+    const auto& axes = m_client->identity().axes;
+    for (int i = 0; i < axes.size(); ++i)
+        if (axes[i].unit == proto::AxisUnit::Millimetre)
+            out.push_back(i);
+    return out;
+}
+
+bool ProtocolCompensationClient::checkAxis(int axis, const Callback& done)
+{
+    if (m_client && compensableAxes().contains(axis))
+        return true;
+    if (done)
+        done(invalid(m_client && m_client->hasProtocolCapability(proto::CapCompensation)
+                         ? tr("axis %1 cannot carry a compensation").arg(axis)
+                         : tr("this instrument keeps no compensation of its own")));
+    return false;
+}
+
+void ProtocolCompensationClient::upload(int axis, const CompensationModel& model, Callback done, Progress progress)
+{
+    if (!checkAxis(axis, done))
+        return;
+    CompensationModel m = model;
+    m.axis = QString(m_client->identity().axes[axis].letter).toStdString();
+    for (const auto& p : motion::metrology::validate(m))
+        if (!p.warning) {
+            if (done)
+                done(invalid(tr("the compensation cannot be applied (%1): %2")
+                                 .arg(QString::fromStdString(p.path), QString::fromStdString(msg::debugString(p.message)))));
+            return;
+        }
+    auto u = std::make_shared<Upload>();
+    u->axis = axis;
+    u->done = std::move(done);
+    u->progress = std::move(progress);
+    proto::CompUploadRequest& h = u->header;
+    h.axis = static_cast<std::uint8_t>(axis);
+    h.backlash = m.perDirection ? 0 : nmFromUm(m.backlashUm);
+    if (m.kind == CompensationModel::Kind::Polynomial) {
+        h.kind = proto::CompKind::Polynomial;
+        h.coefficients = m.polynomial.coefficientsUm;
+        h.total = static_cast<std::uint16_t>(h.coefficients.size());
+        h.validFrom = nm(m.validFromMm);
+        h.validTo = nm(m.validToMm);
+    } else {
+        h.kind = m.perDirection ? proto::CompKind::TablePerDirection : proto::CompKind::Table;
+        for (const auto& p : m.table)
+            u->points.push_back({nm(p.nominalMm), nmFromUm(p.correctionUpUm), nmFromUm(m.perDirection ? p.correctionDownUm : p.correctionUpUm)});
+        h.total = static_cast<std::uint16_t>(u->points.size());
+    }
+    sendPart(u);
+}
+
+void ProtocolCompensationClient::sendPart(std::shared_ptr<Upload> u)
+{
+    proto::CompUploadRequest r = u->header;
+    r.first = static_cast<std::uint16_t>(u->next);
+    if (r.kind != proto::CompKind::Polynomial) {
+        const std::size_t count = std::min<std::size_t>(proto::kMaxCompPointsPerFrame, u->points.size() - u->next);
+        r.points.assign(u->points.begin() + static_cast<std::ptrdiff_t>(u->next),
+                        u->points.begin() + static_cast<std::ptrdiff_t>(u->next + count));
+    }
+    const QPointer<ProtocolCompensationClient> self(this);
+    m_client->request(
+        proto::kCompUpload, proto::encode(r),
+        [self, u](const std::optional<RequestError>& e, const proto::Bytes& payload) {
+            if (!self)
+                return;
+            if (e) {
+                if (u->done)
+                    u->done(e);
+                return;
+            }
+            const auto reply = proto::decodeCompUploadReply(payload);
+            if (!reply) {
+                if (u->done)
+                    u->done(invalid(tr("the device answered COMP_UPLOAD with something unreadable")));
+                return;
+            }
+            u->next = reply->received;
+            if (u->progress)
+                u->progress(reply->received, u->header.total);
+            if (reply->installed) {
+                if (u->done)
+                    u->done(std::nullopt);
+                return;
+            }
+            if (u->header.kind == proto::CompKind::Polynomial || u->next >= u->points.size()) {
+                if (u->done)
+                    u->done(invalid(tr("the device took every part of the compensation but did not install it")));
+                return;
+            }
+            self->sendPart(u);
+        },
+        tr("upload compensation"));
+}
+
+void ProtocolCompensationClient::read(int axis, ReadDone done)
+{
+    if (!checkAxis(axis, [&done, axis](const std::optional<RequestError>& e) {
+            AxisCompensation c;
+            c.axis = axis;
+            done(e, c);
+        }))
+        return;
+    auto into = std::make_shared<AxisCompensation>();
+    into->axis = axis;
+    readPart(into, 0, std::move(done));
+}
+
+void ProtocolCompensationClient::readPart(std::shared_ptr<AxisCompensation> into, int first, ReadDone done)
+{
+    const int axis = into->axis;
+    const proto::CompGetRequest q{static_cast<std::uint8_t>(axis), static_cast<std::uint16_t>(first), proto::kMaxCompPointsPerFrame};
+    const QPointer<ProtocolCompensationClient> self(this);
+    m_client->request(
+        proto::kCompGet, proto::encode(q),
+        [self, into, first, done](const std::optional<RequestError>& e, const proto::Bytes& payload) {
+            if (!self)
+                return;
+            if (e)
+                return done(e, *into);
+            const auto r = proto::decodeCompGetReply(payload);
+            if (!r || r->axis != into->axis)
+                return done(invalid(tr("the device answered COMP_GET with something unreadable")), *into);
+            into->enabled = r->flags & proto::CompEnabled;
+            into->applied = r->flags & proto::CompApplied;
+            into->saved = r->flags & proto::CompSaved;
+            if (r->kind == proto::CompKind::None) {
+                into->model.reset();
+                return done(std::nullopt, *into);
+            }
+            if (first == 0) {
+                CompensationModel m;
+                m.axis = QString(self->m_client->identity().axes[into->axis].letter).toStdString();
+                m.backlashUm = r->backlash / 1e3;
+                if (r->kind == proto::CompKind::Polynomial) {
+                    m.kind = CompensationModel::Kind::Polynomial;
+                    m.polynomial.coefficientsUm = r->coefficients;
+                    m.validFromMm = r->validFrom / 1e6;
+                    m.validToMm = r->validTo / 1e6;
+                } else {
+                    m.kind = CompensationModel::Kind::Table;
+                    m.perDirection = r->kind == proto::CompKind::TablePerDirection;
+                }
+                into->model = m;
+            }
+            if (r->kind == proto::CompKind::Polynomial)
+                return done(std::nullopt, *into);
+            for (const auto& p : r->points)
+                into->model->table.push_back({p.nominal / 1e6, p.correctionUp / 1e3, p.correctionDown / 1e3});
+            const int next = first + static_cast<int>(r->points.size());
+            if (next >= r->total || r->points.empty())
+                return done(std::nullopt, *into);
+            self->readPart(into, next, done);
+        },
+        tr("read compensation"));
+}
+
+void ProtocolCompensationClient::setEnabled(int axis, bool enabled, bool keepForPowerUp, Callback done)
+{
+    if (!checkAxis(axis, done))
+        return;
+    proto::CompEnableRequest r;
+    r.axisMask = static_cast<std::uint8_t>(1u << axis);
+    r.flags = static_cast<std::uint8_t>((enabled ? proto::CompEnableOn : 0) | (keepForPowerUp ? proto::CompEnableSave : 0));
+    m_client->request(
+        proto::kCompEnable, proto::encode(r),
+        [done](const std::optional<RequestError>& e, const proto::Bytes&) {
+            if (done)
+                done(e);
+        },
+        enabled ? tr("enable compensation") : tr("disable compensation"));
+}
+
+} // namespace dev

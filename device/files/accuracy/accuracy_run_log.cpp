@@ -1,0 +1,191 @@
+#include "device/files/accuracy/accuracy_run_log.h"
+
+#include <cinttypes>
+#include <cstdio>
+#include <cstdlib>
+
+namespace accuracyfiles {
+
+using jsonio::ObjectReader;
+using jsonio::Value;
+
+namespace {
+
+Value list(const std::vector<double>& xs)
+{
+    Value v = Value::array();
+    for (double x : xs)
+        v.push(x);
+    return v;
+}
+
+std::optional<std::vector<double>> readPositions(ObjectReader& o, std::string_view key, bool nullAllowed, bool& wasNull)
+{
+    wasNull = false;
+    const Value* raw = o.value().find(key);
+    if (nullAllowed && raw && raw->type() == Value::Type::Null) {
+        wasNull = true;
+        return std::vector<double>{};
+    }
+    const Value* v = o.get(key, Value::Type::Array, true);
+    if (!v)
+        return std::nullopt;
+    std::vector<double> out;
+    for (const Value& item : v->items()) {
+        if (!item.isNumber()) {
+            o.problems().add(item, o.pathOf(key), "must hold numbers (mm)");
+            return std::nullopt;
+        }
+        out.push_back(item.asNumber());
+    }
+    if (out.empty() || out.size() > 2) {
+        o.problems().add(*v, o.pathOf(key), "must hold one position per axis read, one or two (mm)");
+        return std::nullopt;
+    }
+    return out;
+}
+
+void addShifted(jsonio::Problems& into, const jsonio::Problems& line, int lineNo)
+{
+    for (const auto& p : line.list())
+        into.add(jsonio::Position{lineNo, p.position.column}, p.path, p.message);
+}
+
+} // namespace
+
+std::uint64_t fingerprintOf(std::string_view text)
+{
+    std::uint64_t h = 14695981039346656037ull;
+    for (char c : text) {
+        h ^= static_cast<unsigned char>(c);
+        h *= 1099511628211ull;
+    }
+    return h;
+}
+
+std::string fingerprintText(std::uint64_t fingerprint)
+{
+    char buf[24];
+    std::snprintf(buf, sizeof buf, "%016" PRIx64, fingerprint);
+    return buf;
+}
+
+std::string runLogHeader(const RunLogHeader& h)
+{
+    Value v = jsonio::schemaObject(kRunLogSchema, kRunLogVersion);
+    v.set("test", Value(h.test));
+    v.set("kind", Value(h.kind));
+    v.set("fingerprint", Value(fingerprintText(h.fingerprint)));
+    v.set("stops", Value(h.stops));
+    v.set("source", Value(h.source));
+    return jsonio::write(v, false) + "\n";
+}
+
+std::string runLogLine(const RunLogEntry& e)
+{
+    Value v = Value::object();
+    v.set("stop", Value(e.stop));
+    v.set("cycle", Value(e.cycle));
+    v.set("direction", Value(motion::metrology::directionName(e.direction)));
+    v.set("target_mm", list(e.targetMm));
+    v.set("measured_mm", e.measuredMm ? list(*e.measuredMm) : Value(nullptr));
+    v.set("settled", Value(e.settled));
+    v.set("device_time_us", Value(static_cast<double>(e.deviceTimeUs)));
+    v.set("time_s", Value(e.timeS));
+    return jsonio::write(v, false) + "\n";
+}
+
+RunLogRead parseRunLog(std::string_view text)
+{
+    RunLogRead out;
+    RunLog log;
+    std::size_t at = 0;
+    int lineNo = 0;
+    bool header = false;
+    while (at < text.size()) {
+        const std::size_t nl = text.find('\n', at);
+        const bool complete = nl != std::string_view::npos;
+        const std::string_view line = text.substr(at, complete ? nl - at : std::string_view::npos);
+        at = complete ? nl + 1 : text.size();
+        ++lineNo;
+        if (line.find_first_not_of(" \t\r") == std::string_view::npos)
+            continue;
+        const jsonio::ParseResult parsed = jsonio::parse(line);
+        if (!parsed) {
+            if (!complete && header) {
+                log.tornTail = true;  // the write a crash interrupted: that stop is simply not read
+                break;
+            }
+            out.problems.add(jsonio::Position{lineNo, parsed.error.position.column}, "", parsed.error.message);
+            break;
+        }
+        jsonio::Problems lp;
+        if (!header) {
+            if (jsonio::checkSchema(*parsed.value, kRunLogSchema, kRunLogVersion, lp)) {
+                ObjectReader o(*parsed.value, "", lp);
+                o.refuseUnknown({"schema", "version", "test", "kind", "fingerprint", "stops", "source"});
+                const auto name = o.string("test", true);
+                const auto kind = o.oneOf("kind", true, {"axis", "xy-line"});
+                const auto fp = o.string("fingerprint", true);
+                const auto stops = o.integer("stops", true, 1, 1000000);
+                const auto source = o.string("source", true);
+                if (fp && (fp->size() != 16 || fp->find_first_not_of("0123456789abcdef") != std::string::npos))
+                    lp.add(*parsed.value->find("fingerprint"), "fingerprint", "must be 16 lower-case hex digits");
+                else if (name && kind && fp && stops && source) {
+                    log.header.test = *name;
+                    log.header.kind = *kind;
+                    log.header.fingerprint = std::strtoull(fp->c_str(), nullptr, 16);
+                    log.header.stops = static_cast<int>(*stops);
+                    log.header.source = *source;
+                }
+            }
+            addShifted(out.problems, lp, lineNo);
+            if (!out.problems.empty())
+                return out;
+            header = true;
+            continue;
+        }
+        ObjectReader o(*parsed.value, "", lp);
+        o.refuseUnknown({"stop", "cycle", "direction", "target_mm", "measured_mm", "settled", "device_time_us", "time_s"});
+        RunLogEntry e;
+        const auto stop = o.integer("stop", true, 0, log.header.stops - 1);
+        const auto cycle = o.integer("cycle", true, 1, 1000000);
+        const auto direction = o.oneOf("direction", true, {"up", "down"});
+        bool targetNull = false, measuredNull = false;
+        const auto target = readPositions(o, "target_mm", false, targetNull);
+        const auto measured = readPositions(o, "measured_mm", true, measuredNull);
+        const auto settled = o.boolean("settled", true);
+        const auto time = o.number("device_time_us", true, 0, 9007199254740992.0);
+        const auto seconds = o.number("time_s", true, 0, 1e9);
+        if (stop && cycle && direction && target && measured && settled && time && seconds) {
+            if (*stop != static_cast<long long>(log.entries.size()))
+                lp.add(*parsed.value->find("stop"), "stop",
+                       "is " + std::to_string(*stop) + " where the run's next stop is " + std::to_string(log.entries.size())
+                           + ": a log's stops come in order, each once");
+            else if (!measuredNull && measured->size() != target->size())
+                lp.add(*parsed.value->find("measured_mm"), "measured_mm", "must hold as many positions as target_mm");
+            else {
+                e.stop = static_cast<int>(*stop);
+                e.cycle = static_cast<int>(*cycle);
+                e.direction = *direction == "up" ? motion::metrology::Direction::Up : motion::metrology::Direction::Down;
+                e.targetMm = *target;
+                if (!measuredNull)
+                    e.measuredMm = *measured;
+                e.settled = *settled;
+                e.deviceTimeUs = static_cast<std::uint64_t>(*time);
+                e.timeS = *seconds;
+                log.entries.push_back(std::move(e));
+            }
+        }
+        addShifted(out.problems, lp, lineNo);
+        if (!out.problems.empty())
+            return out;
+    }
+    if (!header && out.problems.empty())
+        out.problems.add(jsonio::Position{1, 1}, "", "the run log is empty: it has no header line");
+    if (out.problems.empty())
+        out.log = std::move(log);
+    return out;
+}
+
+} // namespace accuracyfiles

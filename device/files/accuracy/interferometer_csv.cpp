@@ -1,0 +1,282 @@
+#include "device/files/accuracy/interferometer_csv.h"
+
+#include "device/files/accuracy/csv_table.h"
+#include "device/files/accuracy/load_text.h"
+#include "device/files/text_file.h"
+
+#include <charconv>
+#include <cmath>
+
+namespace accuracyfiles {
+
+using motion::metrology::Direction;
+using motion::metrology::Reading;
+
+namespace {
+
+/// A target in an export is the stop's when it is this close (interferometer
+/// software echoes the targets it was given, rounded to its display).
+constexpr double kTargetMatchMm = 0.001;
+
+std::optional<int> wholeNumber(const std::string& text)
+{
+    int n = 0;
+    const auto r = std::from_chars(text.data(), text.data() + text.size(), n);
+    if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size())
+        return std::nullopt;
+    return n;
+}
+
+/// A length column that may be absent: its index (−1 none), or −2 after a problem.
+LengthColumn optionalLength(const CsvRow& header, const std::string& stem, std::string_view file, FileProblems& out)
+{
+    FileProblems scratch;
+    const LengthColumn c = findLengthColumn(header, stem, stem + "_mm", file, scratch);
+    if (c.index == -2)
+        out.insert(out.end(), scratch.begin(), scratch.end());
+    return c;
+}
+
+std::optional<Direction> exportDirection(const std::string& text)
+{
+    const std::string t = asciiLower(text);
+    if (t == "up" || t == "forward" || t == "fwd" || t == "+")
+        return Direction::Up;
+    if (t == "down" || t == "backward" || t == "bwd" || t == "-")
+        return Direction::Down;
+    return std::nullopt;
+}
+
+msg::Arg directionArg(const char* name, Direction d) { return msg::term(name, motion::metrology::directionTermId(d)); }
+
+} // namespace
+
+std::string targetSequenceCsv(const std::vector<SequenceStop>& stops)
+{
+    std::string out = "index,target_mm,direction,cycle,time_s,settled\r\n";
+    for (const SequenceStop& s : stops)
+        out += std::to_string(s.index) + "," + csvNumber(s.targetMm) + "," + motion::metrology::directionName(s.direction) + ","
+            + std::to_string(s.cycle) + "," + csvNumber(std::round(s.timeS * 1e3) / 1e3) + "," + (s.settled ? "yes" : "no") + "\r\n";
+    return out;
+}
+
+SequenceRead targetSequenceFromCsv(std::string_view text, std::string_view fileName)
+{
+    SequenceRead out;
+    const std::string file(fileName);
+    CsvTable table = parseCsv(text, fileName);
+    out.problems = table.problems;
+    if (hasErrors(out.problems))
+        return out;
+    if (table.rows.size() < 2) {
+        out.problems.push_back({file, table.rows.empty() ? 0 : table.rows.front().line, 0, "", msg::make("accuracy.csv.no_readings"), false});
+        return out;
+    }
+    const CsvRow& header = table.rows.front();
+    if (looksSemicolonSeparated(header)) {
+        out.problems.push_back({file, header.line, 1, "", msg::make("file.csv.semicolons"), false});
+        return out;
+    }
+    const int index = findRequiredColumn(header, "index", fileName, out.problems);
+    const LengthColumn target = findLengthColumn(header, "target", "target_mm", fileName, out.problems);
+    const int direction = findRequiredColumn(header, "direction", fileName, out.problems);
+    const int cycle = findRequiredColumn(header, "cycle", fileName, out.problems);
+    const int time = findColumn(header, "time_s");
+    const int settled = findColumn(header, "settled");
+    if (hasErrors(out.problems))
+        return out;
+    for (std::size_t r = 1; r < table.rows.size(); ++r) {
+        const CsvRow& row = table.rows[r];
+        if (row.cells.size() != header.cells.size()) {
+            out.problems.push_back({file, row.line, 1, "",
+                                    msg::make("accuracy.csv.wrong_cell_count", {msg::integer("count", static_cast<long long>(row.cells.size())),
+                                                                                msg::integer("expected", static_cast<long long>(header.cells.size()))}),
+                                    false});
+            continue;
+        }
+        SequenceStop s;
+        const CsvCell& ic = row.cells[static_cast<std::size_t>(index)];
+        const auto n = wholeNumber(ic.text);
+        if (!n || *n != static_cast<int>(r)) {
+            out.problems.push_back({file, row.line, ic.column, "index",
+                                    msg::make("accuracy.import.index_out_of_order", {msg::verbatim("text", ic.text), msg::integer("expected", static_cast<long long>(r))}),
+                                    false});
+            continue;
+        }
+        s.index = *n;
+        const CsvCell& tc = row.cells[static_cast<std::size_t>(target.index)];
+        const auto t = parseNumber(tc.text);
+        if (!t || !std::isfinite(*t * target.toMm)) {
+            out.problems.push_back({file, row.line, tc.column, header.cells[static_cast<std::size_t>(target.index)].text,
+                                    t ? msg::make("accuracy.value_not_finite") : msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", tc.text)}), false});
+            continue;
+        }
+        s.targetMm = *t * target.toMm;
+        const CsvCell& dc = row.cells[static_cast<std::size_t>(direction)];
+        const auto d = motion::metrology::directionFromName(asciiLower(dc.text));
+        if (!d) {
+            out.problems.push_back({file, row.line, dc.column, "direction", msg::make("accuracy.csv.unknown_direction", {msg::verbatim("text", dc.text)}), false});
+            continue;
+        }
+        s.direction = *d;
+        const CsvCell& cc = row.cells[static_cast<std::size_t>(cycle)];
+        const auto c = wholeNumber(cc.text);
+        if (!c || *c < 1) {
+            out.problems.push_back({file, row.line, cc.column, "cycle", msg::make("accuracy.csv.not_a_cycle", {msg::verbatim("text", cc.text)}), false});
+            continue;
+        }
+        s.cycle = *c;
+        if (time >= 0)
+            if (const auto v = parseNumber(row.cells[static_cast<std::size_t>(time)].text); v && std::isfinite(*v))
+                s.timeS = *v;
+        if (settled >= 0)
+            s.settled = asciiLower(row.cells[static_cast<std::size_t>(settled)].text) != "no";
+        out.stops.push_back(s);
+    }
+    if (hasErrors(out.problems))
+        out.stops.clear();
+    return out;
+}
+
+InterferometerImport importInterferometerCsv(std::string_view exportText, std::string_view fileName, const std::vector<SequenceStop>& sequence)
+{
+    InterferometerImport out;
+    const std::string file(fileName);
+    CsvTable table = parseCsv(exportText, fileName);
+    out.problems = table.problems;
+    if (hasErrors(out.problems))
+        return out;
+    if (table.rows.empty()) {
+        out.problems.push_back({file, 0, 0, "", msg::make("accuracy.csv.no_readings"), false});
+        return out;
+    }
+    const CsvRow& header = table.rows.front();
+    if (looksSemicolonSeparated(header)) {
+        out.problems.push_back({file, header.line, 1, "", msg::make("file.csv.semicolons"), false});
+        return out;
+    }
+    // The value: a position or a deviation, exactly one of them.
+    LengthColumn value;
+    bool isDeviation = false;
+    std::string valueName;
+    for (const char* stem : {"measured", "position", "reading", "deviation", "error"}) {
+        const LengthColumn c = optionalLength(header, stem, fileName, out.problems);
+        if (c.index == -2)
+            return out;
+        if (c.index < 0)
+            continue;
+        if (value.index >= 0) {
+            out.problems.push_back({file, header.line, header.cells[static_cast<std::size_t>(c.index)].column,
+                                    header.cells[static_cast<std::size_t>(c.index)].text,
+                                    msg::make("accuracy.csv.duplicate_column", {msg::verbatim("column", header.cells[static_cast<std::size_t>(c.index)].text)}), false});
+            return out;
+        }
+        value = c;
+        valueName = header.cells[static_cast<std::size_t>(c.index)].text;
+        isDeviation = std::string(stem) == "deviation" || std::string(stem) == "error";
+    }
+    if (value.index < 0) {
+        out.problems.push_back({file, header.line, 1, "", msg::make("accuracy.csv.missing_column", {msg::verbatim("column", "measured_mm")}), false});
+        return out;
+    }
+    const LengthColumn target = optionalLength(header, "target", fileName, out.problems);
+    if (target.index == -2)
+        return out;
+    const int direction = findColumn(header, "direction");
+
+    const std::size_t rows = table.rows.size() - 1;
+    if (rows != sequence.size()) {
+        const int line = rows == 0 ? header.line : table.rows.back().line;
+        out.problems.push_back({file, line, 1, "",
+                                msg::make("accuracy.import.count_differs", {msg::integer("count", static_cast<long long>(rows)),
+                                                                            msg::integer("expected", static_cast<long long>(sequence.size()))}),
+                                false});
+        return out;
+    }
+    for (std::size_t k = 0; k < rows; ++k) {
+        const CsvRow& row = table.rows[k + 1];
+        const SequenceStop& stop = sequence[k];
+        if (row.cells.size() != header.cells.size()) {
+            out.problems.push_back({file, row.line, 1, "",
+                                    msg::make("accuracy.csv.wrong_cell_count", {msg::integer("count", static_cast<long long>(row.cells.size())),
+                                                                                msg::integer("expected", static_cast<long long>(header.cells.size()))}),
+                                    false});
+            continue;
+        }
+        const CsvCell& vc = row.cells[static_cast<std::size_t>(value.index)];
+        const auto v = parseNumber(vc.text);
+        if (!v) {
+            out.problems.push_back({file, row.line, vc.column, valueName, msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", vc.text)}), false});
+            continue;
+        }
+        if (!std::isfinite(*v * value.toMm)) {
+            out.problems.push_back({file, row.line, vc.column, valueName, msg::make("accuracy.value_not_finite"), false});
+            continue;
+        }
+        if (direction >= 0) {
+            const CsvCell& dc = row.cells[static_cast<std::size_t>(direction)];
+            const auto d = exportDirection(dc.text);
+            if (!d) {
+                out.problems.push_back({file, row.line, dc.column, "direction", msg::make("accuracy.csv.unknown_direction", {msg::verbatim("text", dc.text)}), false});
+                continue;
+            }
+            if (*d != stop.direction) {
+                out.problems.push_back({file, row.line, dc.column, "direction",
+                                        msg::make("accuracy.import.direction_differs",
+                                                  {msg::integer("index", stop.index), directionArg("direction", *d),
+                                                   directionArg("expected", stop.direction), msg::real("target", stop.targetMm, msg::Unit::Mm)}),
+                                        false});
+                continue;
+            }
+        }
+        if (target.index >= 0) {
+            const CsvCell& tc = row.cells[static_cast<std::size_t>(target.index)];
+            const auto t = parseNumber(tc.text);
+            if (!t || !std::isfinite(*t * target.toMm)) {
+                out.problems.push_back({file, row.line, tc.column, header.cells[static_cast<std::size_t>(target.index)].text,
+                                        t ? msg::make("accuracy.value_not_finite") : msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", tc.text)}), false});
+                continue;
+            }
+            if (std::fabs(*t * target.toMm - stop.targetMm) > kTargetMatchMm) {
+                out.problems.push_back({file, row.line, tc.column, header.cells[static_cast<std::size_t>(target.index)].text,
+                                        msg::make("accuracy.import.target_differs",
+                                                  {msg::integer("index", stop.index), msg::real("target", *t * target.toMm, msg::Unit::Mm),
+                                                   msg::real("expected", stop.targetMm, msg::Unit::Mm)}),
+                                        false});
+                continue;
+            }
+        }
+        Reading r;
+        r.targetMm = stop.targetMm;
+        r.direction = stop.direction;
+        r.cycle = stop.cycle;
+        r.measuredMm = isDeviation ? stop.targetMm + *v * value.toMm : *v * value.toMm;
+        out.readings.push_back(r);
+    }
+    if (hasErrors(out.problems))
+        out.readings.clear();
+    return out;
+}
+
+SequenceRead loadTargetSequence(const QString& path)
+{
+    SequenceRead out;
+    std::string name;
+    const auto text = loadText(path, name, out.problems);
+    return text ? targetSequenceFromCsv(*text, name) : out;
+}
+
+bool saveTargetSequence(const QString& path, const std::vector<SequenceStop>& stops, QString* error)
+{
+    return files::writeAtomically(path, targetSequenceCsv(stops), error);
+}
+
+InterferometerImport loadInterferometerExport(const QString& path, const std::vector<SequenceStop>& sequence)
+{
+    InterferometerImport out;
+    std::string name;
+    const auto text = loadText(path, name, out.problems);
+    return text ? importInterferometerCsv(*text, name, sequence) : out;
+}
+
+} // namespace accuracyfiles

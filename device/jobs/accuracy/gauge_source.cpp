@@ -1,0 +1,34 @@
+#include "device/jobs/accuracy/gauge_source.h"
+
+namespace jobs {
+
+GaugeSource::GaugeSource(dev::Transport* transport, const QString& port, QObject* parent)
+    : ReadingSource(parent), m_transport(transport), m_link(new dev::GaugeLink(transport, port, this))
+{
+}
+
+QString GaugeSource::describe() const { return tr("gauge on %1").arg(m_link->port()); }
+
+void GaugeSource::open(OpenDone done) { m_link->open(std::move(done)); }
+
+void GaugeSource::close() { m_link->close(); }
+
+void GaugeSource::take(const StopContext& stop, TakeDone done)
+{
+    if (stop.axes.size() != 1) {
+        done({{}, false, msg::make("accuracy.run.gauge_one_axis", {msg::verbatim("port", m_link->port().toStdString())})});
+        return;
+    }
+    m_link->read([done](std::optional<double> valueMm, const msg::Message& problem) {
+        TakeResult r;
+        if (valueMm)
+            r.valuesMm.push_back(*valueMm);
+        else
+            r.problem = problem;
+        done(r);
+    });
+}
+
+void GaugeSource::cancel() { m_link->cancel(); }
+
+} // namespace jobs

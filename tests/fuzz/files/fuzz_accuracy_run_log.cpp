@@ -1,0 +1,70 @@
+// Fuzz targets "accuracy-run-log" and "gauge-answer": the accuracy run's journal and a
+// gauge's answer line. Invariants: no crash; a log accepted has its stops in order,
+// each once, and writes back line for line; a gauge value is finite.
+#include "fuzz_files.h"
+
+#include "device/files/accuracy/accuracy_run_log.h"
+#include "device/link/gauge_dialect.h"
+
+#include <cmath>
+
+namespace {
+
+std::string seedLog()
+{
+    accuracyfiles::RunLogHeader h;
+    h.test = "stage-x";
+    h.kind = "axis";
+    h.fingerprint = 0x0123456789abcdefull;
+    h.stops = 4;
+    h.source = "gauge";
+    std::string text = accuracyfiles::runLogHeader(h);
+    for (int k = 0; k < 3; ++k) {
+        accuracyfiles::RunLogEntry e;
+        e.stop = k;
+        e.cycle = 1;
+        e.direction = k < 2 ? motion::metrology::Direction::Up : motion::metrology::Direction::Down;
+        e.targetMm = {10.0 * (k + 1)};
+        if (k != 1)
+            e.measuredMm = std::vector<double>{10.0 * (k + 1) + 0.001};
+        e.deviceTimeUs = 1000000u * static_cast<unsigned>(k + 1);
+        e.timeS = k + 1;
+        text += accuracyfiles::runLogLine(e);
+    }
+    return text;
+}
+
+void checkLog(std::string_view input)
+{
+    const auto r = accuracyfiles::parseRunLog(input);
+    if (!r.log)
+        return;
+    for (std::size_t k = 0; k < r.log->entries.size(); ++k) {
+        const auto& e = r.log->entries[k];
+        if (e.stop != static_cast<int>(k))
+            fuzzfiles::fail("a log accepted with a stop out of order or twice");
+        if (e.measuredMm && e.measuredMm->size() != e.targetMm.size())
+            fuzzfiles::fail("a reading without a value per axis");
+        const std::string line = accuracyfiles::runLogLine(e);
+        const auto again = accuracyfiles::parseRunLog(accuracyfiles::runLogHeader(r.log->header) + line);
+        if (!again.log || again.log->entries.size() != 1 || accuracyfiles::runLogLine(again.log->entries[0]) != line)
+            fuzzfiles::fail("a log line that does not read back as written");
+    }
+}
+
+void checkGauge(std::string_view input)
+{
+    const auto a = gaugewire::parseAnswer(input, "fuzz");
+    if (a.valueMm && !std::isfinite(*a.valueMm))
+        fuzzfiles::fail("a gauge value that is not finite");
+    if (!a.valueMm && a.problem.id.empty())
+        fuzzfiles::fail("a refused answer without a reason");
+    if (gaugewire::printable(input).size() > 80 * 4 + 3)
+        fuzzfiles::fail("printable() longer than its cut");
+}
+
+} // namespace
+
+BP_FUZZ_FILE_TARGET({"accuracy-run-log", [] { return std::vector<std::string>{seedLog()}; }, checkLog});
+BP_FUZZ_FILE_TARGET({"gauge-answer",
+                     [] { return std::vector<std::string>{"+012.3456 mm", "-0.5 \xC2\xB5m", "12.3in", "Err 7"}; }, checkGauge});

@@ -1,0 +1,50 @@
+#pragma once
+// The accuracy bench's report (issue 18): one PDF per test with its set-up, the
+// figures table with pass/fail, the ISO-style plot (mean ± 2s per direction against
+// the target, reversal visible), the deviations of every reading, the compensation
+// fit with its order table and residuals when there is one, and the before/after
+// comparison when a compensated run follows an uncompensated one. The circular test's
+// report has its figures and the polar plot with the error magnified.
+//
+// Qt Gui only (QPdfWriter, QPainter), like the wording layer is Qt Core only, so the
+// CLI writes the same PDF as the GUI. It needs a QGuiApplication (the CLI makes an
+// offscreen one); canRender() says whether there is one.
+#include "device/files/accuracy/accuracy_result_file.h"
+#include "motion/metrology/compensation/polynomial_fit.h"
+#include "motion/metrology/contour/circular_test.h"
+#include "motion/metrology/linear/axis_test.h"
+
+#include <QString>
+
+#include <optional>
+#include <vector>
+
+namespace report {
+
+struct AxisReportInput {
+    QString title;                                   ///< "Positioning accuracy, stage X"
+    QString instrument;                              ///< model, family
+    QString source;                                  ///< where the readings came from, for people
+    std::optional<motion::metrology::AxisTest> test; ///< the set-up, when known
+    accuracyfiles::AccuracyResult result;
+    std::vector<motion::metrology::Reading> readings;
+    std::optional<accuracyfiles::AccuracyResult> before;  ///< the same test without compensation
+    std::optional<motion::metrology::FitTable> fit;       ///< the compensation fitted to these readings
+    QString created;                                 ///< date and time, as the reader's locale writes them
+};
+
+struct CircleReportInput {
+    QString title;
+    QString instrument;
+    motion::metrology::CircularTest test;
+    motion::metrology::CircularEvaluation evaluation;
+    QString created;
+};
+
+/// A QGuiApplication exists (QPainter needs one for its fonts).
+bool canRender();
+/// Written all or nothing (a temporary file renamed at the end).
+bool writeAxisReport(const QString& pdfPath, const AxisReportInput& in, QString* error);
+bool writeCircleReport(const QString& pdfPath, const CircleReportInput& in, QString* error);
+
+} // namespace report
