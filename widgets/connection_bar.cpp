@@ -3,6 +3,8 @@
 #include "device/link/serial_transport.h"
 #include "widgets/status_lamp.h"
 
+#include "widgets/wording/wording.h"
+
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -99,12 +101,12 @@ void ConnectionBar::showState(dev::LinkState state, const QString& identity)
     case dev::LinkState::Ready: m_lamp->setTone(T::Ok); break;
     case dev::LinkState::Lost: m_lamp->setTone(T::Alarm); break;
     }
-    m_lamp->setToolTip(dev::linkStateName(state));
+    m_lamp->setToolTip(words::term(dev::linkStateTerm(state)));
     const bool idle = state == dev::LinkState::Disconnected || state == dev::LinkState::Lost;
     m_connect->setText(idle ? tr("Connect") : tr("Disconnect"));
     m_source->setEnabled(idle);
     m_baud->setEnabled(idle);
-    m_identity->setText(QStringLiteral("%1 — %2").arg(dev::linkStateName(state), identity));
+    m_identity->setText(QStringLiteral("%1 — %2").arg(words::term(dev::linkStateTerm(state)), identity));
 }
 
 } // namespace ui

@@ -4,6 +4,8 @@
 #include "cli_session.h"
 #include "command.h"
 
+#include "widgets/wording/translators.h"
+
 #include <QCoreApplication>
 
 namespace cli {
@@ -135,7 +137,9 @@ QList<QCommandLineOption> globalOptions()
             QCommandLineOption(QStringLiteral("port"), tr("a serial port, or the pty of benchpilot-sim"), QStringLiteral("PATH")),
             QCommandLineOption(QStringLiteral("baud"), tr("link speed (default: 115200)"), QStringLiteral("N")),
             QCommandLineOption(QStringLiteral("json"), tr("print JSON instead of text")),
-            QCommandLineOption(QStringLiteral("timeout"), tr("longest wait for motion to finish, s (default: 120)"), QStringLiteral("S"))};
+            QCommandLineOption(QStringLiteral("timeout"), tr("longest wait for motion to finish, s (default: 120)"), QStringLiteral("S")),
+            QCommandLineOption(QStringLiteral("lang"), tr("language of the text for people: en (default), zh_CN, or system (follows LANG); --json never changes"),
+                               QStringLiteral("LANG"))};
 }
 
 QString topHelp()
@@ -176,6 +180,24 @@ QString commandHelp(const QString& path, const Command& c)
 
 int runCli(const QStringList& rawArgs, QTextStream& out, QTextStream& err)
 {
+    // The language first, wherever it stands, so that every later word (usage
+    // errors included) is in it. English unless asked: scripts parse this output.
+    words::Translators translators;
+    for (int i = 0; i < rawArgs.size(); ++i) {
+        const QString& a = rawArgs[i];
+        QString language;
+        if (a == QLatin1String("--lang") && i + 1 < rawArgs.size())
+            language = rawArgs[i + 1];
+        else if (a.startsWith(QLatin1String("--lang=")))
+            language = a.mid(7);
+        else
+            continue;
+        if (!translators.setLanguage(language)) {
+            err << "benchpilot-cli: " << tr("--lang needs en, zh_CN or system (got '%1')").arg(language) << "\n";
+            err.flush();
+            return Usage;
+        }
+    }
     QStringList args{QStringLiteral("benchpilot-cli")};  // QCommandLineParser skips the program name
     for (const QString& a : rawArgs)
         args << markNegative(a);

@@ -1,5 +1,7 @@
 #include "cli_session.h"
 
+#include "widgets/wording/wording.h"
+
 #include "device/backends/benchpilot/benchpilot_client.h"
 #include "device/link/serial_transport.h"
 #include "device/link/simulated_link.h"
@@ -91,9 +93,9 @@ bool CliSession::connectDevice()
     QString linkError;
     // Only while connecting: the lambda holds a reference to this frame's string
     // (ASan caught a later link error writing into the dead frame).
-    const auto watch = connect(m_client, &dev::Instrument::linkError, this, [&linkError](const QString& m) {
+    const auto watch = connect(m_client, &dev::Instrument::linkError, this, [&linkError](const msg::Message& m) {
         if (linkError.isEmpty())
-            linkError = m;
+            linkError = words::text(m);
     });
     // Every port speaks the BenchPilot protocol today; a port that answers with a GRBL
     // banner gets its backend here, behind the same proxy (issue 19).
@@ -126,7 +128,7 @@ bool CliSession::parseAxes(const QString& text, quint8* mask)
             continue;
         const int i = id.axisIndex(c);
         if (i < 0) {
-            report(QCoreApplication::translate("cli", "axis '%1' does not exist on the %2 (axes: %3)").arg(c).arg(id.kindName()).arg([&] {
+            report(QCoreApplication::translate("cli", "axis '%1' does not exist on the %2 (axes: %3)").arg(c).arg(words::term(dev::instrumentTerm(id.kind))).arg([&] {
                 QString s;
                 for (const auto& a : id.axes)
                     s += a.letter;
@@ -153,7 +155,7 @@ int CliSession::request(const std::function<void(dev::Instrument::Callback)>& se
         return LinkTrouble;
     }
     if (error) {
-        report(error->message);
+        report(words::text(error->message));
         return error->kind == dev::RequestError::Kind::Device || error->kind == dev::RequestError::Kind::Invalid ? Refused : LinkTrouble;
     }
     return Ok;
@@ -213,7 +215,7 @@ void CliSession::printStatus()
                          {QStringLiteral("axes"), axes}};
         m_out << QJsonDocument(root).toJson(QJsonDocument::Compact) << "\n";
     } else {
-        m_out << QStringLiteral("%1%2\n").arg(id.kindName(), st.estop ? QStringLiteral("  [E-STOP]") : QString());
+        m_out << QStringLiteral("%1%2\n").arg(words::term(dev::instrumentTerm(id.kind)), st.estop ? QStringLiteral("  [E-STOP]") : QString());
         for (int i = 0; i < id.axes.size() && i < st.axes.size(); ++i) {
             const auto& a = st.axes[i];
             m_out << QStringLiteral("  %1  cmd %2  meas %3 %4  %5%6%7%8\n")

@@ -1,10 +1,13 @@
 // benchpilot: the operator and test-bench GUI.
-//   benchpilot [--screenshot FILE --screen NAME [--sim analyzer|stage] [--settle-ms N] [--home-first] [--exercise] [--tune] [--recipe FILE]]
+//   benchpilot [--lang system|en|zh_CN] [--screenshot FILE --screen NAME [--sim analyzer|stage] [--settle-ms N] [--home-first] [--exercise] [--tune] [--recipe FILE]]
 #include "main_window.h"
 #include "screenshot.h"
 
+#include "widgets/wording/translators.h"
+
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QSettings>
 
 #include <cstdio>
 
@@ -35,7 +38,10 @@ int main(int argc, char** argv)
     QCommandLineOption recipe(QStringLiteral("recipe"),
                               QApplication::translate("main", "screenshot: open this recipe on the Plates screen, home the analyzer and run it"),
                               QStringLiteral("file"));
-    p.addOptions({shot, screen, sim, settle, script, exercise, tune, recipe});
+    QCommandLineOption lang(QStringLiteral("lang"),
+                            QApplication::translate("main", "language of the screens: system, en or zh_CN (default: the Language menu's choice)"),
+                            QStringLiteral("language"));
+    p.addOptions({shot, screen, sim, settle, script, exercise, tune, recipe, lang});
     QCoreApplication::setOrganizationName(QStringLiteral("BenchPilot"));
     QCoreApplication::setApplicationName(QStringLiteral("benchpilot"));
     QCoreApplication::setApplicationVersion(QStringLiteral(BP_VERSION));
@@ -63,6 +69,13 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "benchpilot: unexpected argument '%s'\ntry 'benchpilot --help'\n", qPrintable(p.positionalArguments().first()));
         return 1;
     }
+    // Before any window exists, so the first texts are already in the language.
+    words::Translators translators;
+    const QString language = p.isSet(lang) ? p.value(lang) : QSettings().value(QStringLiteral("language"), QStringLiteral("system")).toString();
+    if (!translators.setLanguage(language) && p.isSet(lang)) {
+        std::fprintf(stderr, "benchpilot: --lang '%s': no such language (system, en, zh_CN)\n", qPrintable(language));
+        return 1;
+    }
     if (p.isSet(shot)) {
         app::ScreenshotRequest r;
         r.file = p.value(shot);
@@ -75,7 +88,9 @@ int main(int argc, char** argv)
         r.recipe = p.value(recipe);
         return app::takeScreenshot(r);
     }
-    app::MainWindow w;
+    app::MainWindowOptions options;
+    options.translators = &translators;
+    app::MainWindow w(options);
     w.show();
     return app.exec();
 }

@@ -24,6 +24,13 @@ class PlatesScreen;
 class ScanScreen;
 } // namespace ui
 
+namespace words {
+class Translators;
+}
+class QActionGroup;
+class QDockWidget;
+class QMenu;
+
 namespace app {
 
 class InstrumentSession;
@@ -33,6 +40,9 @@ struct MainWindowOptions {
     bool persistSettings = true;  ///< false for screenshots and tests: read nothing, write nothing
     bool confirmDialogs = true;   ///< false in tests: far moves go ahead without asking
     bool autoConnect = true;      ///< connect both instruments at start
+    /// The program's translators (main.cpp owns them); the Language menu switches
+    /// them. nullptr: the window has no Language menu (tests that do not switch).
+    words::Translators* translators = nullptr;
 };
 
 class MainWindow : public QMainWindow {
@@ -68,6 +78,12 @@ protected:
     void changeEvent(QEvent* event) override;
 
 private:
+    /// The window's own texts (title, navigation, E-stop, docks, menus); the screens
+    /// reword themselves on the same LanguageChange.
+    void retranslateUi();
+    /// Installs `language` ("system", "en", "zh_CN") at once and keeps it for the next start.
+    void setLanguage(const QString& language);
+    void buildLanguageMenu();
     void addScreen(const QString& name, const QString& title, QWidget* screen);
     void wireSession(int index, ui::ConnectionBar* bar);
     void updateStatusBar();
@@ -95,6 +111,11 @@ private:
     QPushButton* m_estop;
     QPushButton* m_reset;
     QLabel* m_statusLabels[2];
+    QDockWidget* m_logDock = nullptr;
+    QMenu* m_settingsMenu = nullptr;
+    QMenu* m_languageMenu = nullptr;
+    QActionGroup* m_languages = nullptr;
+    QString m_languageSetting = QStringLiteral("system");
 };
 
 } // namespace app

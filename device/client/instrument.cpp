@@ -37,7 +37,7 @@ msg::Message Instrument::missingReason(Capability c) const
                                     msg::verbatim("family", id.family.toStdString())});
 }
 
-void Instrument::refuse(const Callback& done, RequestError::Kind kind, const QString& message)
+void Instrument::refuse(const Callback& done, RequestError::Kind kind, const msg::Message& message)
 {
     RequestError e;
     e.kind = kind;

@@ -3,6 +3,7 @@
 // out, the link went down, or the host found it invalid before sending. Every
 // backend reports its failures in this one shape.
 #include "device/protocol/messages.h"
+#include "motion/message.h"
 
 #include <QMetaType>
 #include <QString>
@@ -16,9 +17,10 @@ struct RequestError {
     proto::ErrorCode code = proto::ErrorCode::BadPayload;  ///< for Kind::Device
     int axis = -1;
     double value = 0;         ///< axis units where an axis is named, else as sent
-    QString message;          ///< whole sentence for a person
+    msg::Message message;     ///< request.*, device.refused, link.*: worded by words::text (docs/wording.md)
 };
 
 } // namespace dev
 
 Q_DECLARE_METATYPE(dev::RequestError)
+Q_DECLARE_METATYPE(msg::Message)

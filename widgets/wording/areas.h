@@ -8,10 +8,28 @@
 
 namespace words::areas {
 
-// Sentences: the id starts with the area's prefix.
+// Sentences: the id starts with one of the area's prefixes.
 QString capability(const msg::Message& m);  ///< "capability."
+QString accuracy(const msg::Message& m);    ///< "accuracy.", "compensation."
+QString device(const msg::Message& m);      ///< "request.", "link.", "device.", "telemetry."
+QString file(const msg::Message& m);        ///< "file."
+QString grbl(const msg::Message& m);        ///< "grbl."
+QString pattern(const msg::Message& m);     ///< "pattern."
+QString plate(const msg::Message& m);       ///< "plate."
+QString profile(const msg::Message& m);     ///< "profile."
+QString recipe(const msg::Message& m);      ///< "recipe."
+QString scan(const msg::Message& m);        ///< "scan."
+QString tuning(const msg::Message& m);      ///< "tuning."
 
 // Terms: a null QString for a term id the area does not know.
 QString capabilityTerm(const std::string& id);  ///< "instrument.", "capability.because."
+QString accuracyTerm(const std::string& id);    ///< "direction.", "rotation."
+QString deviceTerm(const std::string& id);      ///< "request.", "device.error.", "device.event.", "path.", "link.state."
+QString fileTerm(const std::string& id);        ///< "json.type."
+QString grblTerm(const std::string& id);        ///< "grbl.status."
+QString patternTerm(const std::string& id);     ///< "segment.", "pattern.state."
+QString recipeTerm(const std::string& id);      ///< "recipe.state.", "recipe.move.", "recipe.step."
+QString scanTerm(const std::string& id);        ///< "scan.state."
+QString tuningTerm(const std::string& id);      ///< "tuning.state.", "tuning.end.", "tuning.outcome.", "tuning.rule."
 
 } // namespace words::areas

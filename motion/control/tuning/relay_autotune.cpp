@@ -9,7 +9,6 @@ namespace motion::control {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-std::string num(double v) { return shortNumber(v); }
 } // namespace
 
 RelayAutotune::RelayAutotune(const RelayAutotuneOptions& o) : m_options(o)
@@ -39,9 +38,9 @@ void RelayAutotune::report(const Record& run)
     if (m_forcedSamples == 0) {
         const RelayAnalysis a = analyzeRelay(run, m_options.amplitude, m_options.hysteresis, m_options.input);
         if (!a.ok) {
-            m_failure = a.problem;
-            if (!endedNormally(run.reason))
-                m_failure += std::string(" (the run ended: ") + endReasonName(run.reason) + ")";
+            m_failure = endedNormally(run.reason)
+                ? a.problem
+                : msg::make("tuning.relay.failed_run_ended", {msg::nested("cause", a.problem), msg::term("reason", endReasonTerm(run.reason))});
             m_next.reset();
             return;
         }
@@ -67,8 +66,7 @@ void RelayAutotune::report(const Record& run)
         return;
     }
     if (!endedNormally(run.reason)) {
-        m_failure = std::string("a refinement run ended early (") + endReasonName(run.reason)
-            + "): the classic relay estimate is reported";
+        m_failure = msg::make("tuning.relay.refinement_ended", {msg::term("reason", endReasonTerm(run.reason))});
         m_result = m_work;
         m_next.reset();
         return;
@@ -149,9 +147,8 @@ void RelayAutotune::planForced()
         }
     }
     if (forcedRuns >= m_options.maxForcedRuns) {
-        m_failure = "the refinement found no point lagging " + std::string(less ? "more" : "less") + " than 180° between ω = "
-            + num(m_minOmega) + " and " + num(m_maxOmega) + " rad/s"
-            + (less ? ": the phase may never reach −180° (no finite ultimate gain)" : "") + "; the classic relay estimate is reported";
+        m_failure = msg::make(less ? "tuning.relay.no_point_lagging_more" : "tuning.relay.no_point_lagging_less",
+                              {msg::real("from", m_minOmega), msg::real("to", m_maxOmega)});
         m_result = m_work;
         m_next.reset();
         return;
@@ -189,7 +186,7 @@ void RelayAutotune::planForced()
             if (less && more)
                 finishWith(*less, more);
             else {
-                m_failure = "the refinement reached the loop's Nyquist limit: the classic relay estimate is reported";
+                m_failure = msg::make("tuning.relay.nyquist");
                 m_result = m_work;
                 m_next.reset();
             }
