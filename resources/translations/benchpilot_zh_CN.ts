@@ -99,120 +99,121 @@ Skip counts the well as done; Do again repeats it in full.</source>
     <name>app::MainWindow</name>
     <message>
         <source>BenchPilot</source>
-        <translation type="unfinished"></translation>
+        <translation>BenchPilot</translation>
     </message>
     <message>
         <source>Analyzer</source>
-        <translation type="unfinished"></translation>
+        <translation>分析仪</translation>
     </message>
     <message>
         <source>Stage</source>
-        <translation type="unfinished"></translation>
+        <translation>载物台</translation>
     </message>
     <message>
         <source>Reset E-stop</source>
-        <translation type="unfinished"></translation>
+        <translation>急停复位</translation>
     </message>
     <message>
         <source>Clear the E-stop latch on both instruments (axes stay where they are)</source>
-        <translation type="unfinished"></translation>
+        <translation>解除两台仪器的急停锁定（各轴保持原位）</translation>
     </message>
     <message>
         <source>E-STOP
 (Esc)</source>
-        <translation type="unfinished"></translation>
+        <translation>急停
+(Esc)</translation>
     </message>
     <message>
         <source>Stop all motion on both instruments at once (Esc, from any screen)</source>
-        <translation type="unfinished"></translation>
+        <translation>立即停止两台仪器的所有运动（在任何界面按 Esc）</translation>
     </message>
     <message>
         <source>Jog</source>
-        <translation type="unfinished"></translation>
+        <translation>点动</translation>
     </message>
     <message>
         <source>Plots</source>
-        <translation type="unfinished"></translation>
+        <translation>曲线</translation>
     </message>
     <message>
         <source>Profiles</source>
-        <translation type="unfinished"></translation>
+        <translation>速度曲线</translation>
     </message>
     <message>
         <source>Apply gains</source>
-        <translation type="unfinished"></translation>
+        <translation>应用增益</translation>
     </message>
     <message>
         <source>Tuning</source>
-        <translation type="unfinished"></translation>
+        <translation>整定</translation>
     </message>
     <message>
         <source>Joystick</source>
-        <translation type="unfinished"></translation>
+        <translation>摇杆</translation>
     </message>
     <message>
         <source>Patterns</source>
-        <translation type="unfinished"></translation>
+        <translation>图形</translation>
     </message>
     <message>
         <source>Plates</source>
-        <translation type="unfinished"></translation>
+        <translation>孔板</translation>
     </message>
     <message>
         <source>Scan</source>
-        <translation type="unfinished"></translation>
+        <translation>扫描</translation>
     </message>
     <message>
         <source>Event log</source>
-        <translation type="unfinished"></translation>
+        <translation>事件日志</translation>
     </message>
     <message>
         <source>Confirm move</source>
-        <translation type="unfinished"></translation>
+        <translation>确认移动</translation>
     </message>
     <message>
         <source>%1: link lost. Motion on the instrument stops by itself; reconnect when the cable is back.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：连接中断。仪器上的运动会自行停止；线缆恢复后请重新连接。</translation>
     </message>
     <message>
         <source> · %1 bad frames, %2 bytes skipped</source>
-        <translation type="unfinished"></translation>
+        <translation> · %1 个错误帧，跳过 %2 字节</translation>
     </message>
     <message>
         <source> · %1 retries, %2 timeouts</source>
-        <translation type="unfinished"></translation>
+        <translation> · %1 次重发，%2 次超时</translation>
     </message>
     <message>
         <source> · %1 samples lost</source>
-        <translation type="unfinished"></translation>
+        <translation> · 丢失 %1 个采样</translation>
     </message>
     <message>
         <source>E-STOP: all motion halted. Check the machine, then press Reset E-stop.</source>
-        <translation type="unfinished"></translation>
+        <translation>急停：所有运动已停止。请检查设备，然后按“急停复位”。</translation>
     </message>
     <message>
         <source>E-stop cleared. Re-home the axes if anything was moved by hand.</source>
-        <translation type="unfinished"></translation>
+        <translation>急停已解除。若有部件被手动移动过，请重新回零。</translation>
     </message>
     <message>
         <source>&amp;Settings</source>
-        <translation type="unfinished"></translation>
+        <translation>设置(&amp;S)</translation>
     </message>
     <message>
         <source>&amp;Language</source>
-        <translation type="unfinished"></translation>
+        <translation>语言(&amp;L)</translation>
     </message>
     <message>
         <source>System default</source>
-        <translation type="unfinished"></translation>
+        <translation>跟随系统</translation>
     </message>
     <message>
         <source>settings</source>
-        <translation type="unfinished"></translation>
+        <translation>设置</translation>
     </message>
     <message>
         <source>the last scan plan did not load: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>上次的扫描计划未能载入：%1</translation>
     </message>
 </context>
 <context>
@@ -1148,51 +1149,51 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     <name>dev::BenchPilotClient</name>
     <message>
         <source>no link</source>
-        <translation type="unfinished"></translation>
+        <translation>无连接</translation>
     </message>
 </context>
 <context>
     <name>dev::InstrumentProxy</name>
     <message>
         <source>no link</source>
-        <translation type="unfinished"></translation>
+        <translation>无连接</translation>
     </message>
 </context>
 <context>
     <name>dev::LoopbackEnd</name>
     <message>
         <source>loopback @ %1 baud</source>
-        <translation type="unfinished"></translation>
+        <translation>回环 @ %1 波特</translation>
     </message>
     <message>
         <source>loopback</source>
-        <translation type="unfinished"></translation>
+        <translation>回环</translation>
     </message>
 </context>
 <context>
     <name>dev::SerialTransport</name>
     <message>
         <source>%1 @ %2 baud</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 @ %2 波特</translation>
     </message>
 </context>
 <context>
     <name>files</name>
     <message>
         <source>cannot open %1: %2</source>
-        <translation type="unfinished">无法打开 %1：%2</translation>
+        <translation>无法打开 %1：%2</translation>
     </message>
     <message>
         <source>%1 is %2 MiB, more than the %3 MiB a BenchPilot file may be</source>
-        <translation type="unfinished">%1 大小为 %2 MiB，超过 BenchPilot 文件上限 %3 MiB</translation>
+        <translation>%1 大小为 %2 MiB，超过 BenchPilot 文件上限 %3 MiB</translation>
     </message>
     <message>
         <source>cannot read %1: %2</source>
-        <translation type="unfinished">无法读取 %1：%2</translation>
+        <translation>无法读取 %1：%2</translation>
     </message>
     <message>
         <source>cannot write %1: %2</source>
-        <translation type="unfinished">无法写入 %1：%2</translation>
+        <translation>无法写入 %1：%2</translation>
     </message>
 </context>
 <context>
@@ -1594,43 +1595,43 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     <name>main</name>
     <message>
         <source>BenchPilot operator and test-bench application.</source>
-        <translation type="unfinished"></translation>
+        <translation>BenchPilot 操作与测试台应用程序。</translation>
     </message>
     <message>
         <source>render a screen to a PNG and exit</source>
-        <translation type="unfinished"></translation>
+        <translation>把一个界面渲染为 PNG 后退出</translation>
     </message>
     <message>
         <source>screen to show: jog, plots, profiles, …</source>
-        <translation type="unfinished"></translation>
+        <translation>要显示的界面：jog、plots、profiles……</translation>
     </message>
     <message>
         <source>instrument to show: analyzer or stage</source>
-        <translation type="unfinished"></translation>
+        <translation>要显示的仪器：analyzer 或 stage</translation>
     </message>
     <message>
         <source>screenshot: how long the simulators run first</source>
-        <translation type="unfinished"></translation>
+        <translation>截图：仿真器先运行多长时间</translation>
     </message>
     <message>
         <source>screenshot: home the shown instrument and move it before the picture</source>
-        <translation type="unfinished"></translation>
+        <translation>截图：截图前让所示仪器回零并移动</translation>
     </message>
     <message>
         <source>screenshot: jog and move the shown instrument so live plots show motion</source>
-        <translation type="unfinished"></translation>
+        <translation>截图：点动并移动所示仪器，使实时曲线显示运动</translation>
     </message>
     <message>
         <source>screenshot: tune the stage&apos;s X axis (relay, then a step test) on the tuning screen</source>
-        <translation type="unfinished"></translation>
+        <translation>截图：在整定界面整定载物台 X 轴（继电试验，然后阶跃测试）</translation>
     </message>
     <message>
         <source>screenshot: open this recipe on the Plates screen, home the analyzer and run it</source>
-        <translation type="unfinished"></translation>
+        <translation>截图：在孔板界面打开该方案，让分析仪回零并运行</translation>
     </message>
     <message>
         <source>language of the screens: system, en or zh_CN (default: the Language menu&apos;s choice)</source>
-        <translation type="unfinished"></translation>
+        <translation>界面语言：system、en 或 zh_CN（默认：“语言”菜单中的选择）</translation>
     </message>
 </context>
 <context>
@@ -1703,166 +1704,166 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     <name>tele::TelemetryHub</name>
     <message>
         <source>commanded</source>
-        <translation type="unfinished"></translation>
+        <translation>指令位置</translation>
     </message>
     <message>
         <source>measured</source>
-        <translation type="unfinished"></translation>
+        <translation>实测位置</translation>
     </message>
     <message>
         <source>velocity</source>
-        <translation type="unfinished"></translation>
+        <translation>速度</translation>
     </message>
     <message>
         <source>following error</source>
-        <translation type="unfinished"></translation>
+        <translation>跟随误差</translation>
     </message>
     <message>
         <source>controller output</source>
-        <translation type="unfinished"></translation>
+        <translation>控制器输出</translation>
     </message>
     <message>
         <source>switches</source>
-        <translation type="unfinished"></translation>
+        <translation>开关</translation>
     </message>
     <message>
         <source>contour error</source>
-        <translation type="unfinished"></translation>
+        <translation>轮廓误差</translation>
     </message>
     <message>
         <source>controller output u</source>
-        <translation type="unfinished"></translation>
+        <translation>控制器输出 u</translation>
     </message>
     <message>
         <source>Instrument %1</source>
-        <translation type="unfinished"></translation>
+        <translation>仪器 %1</translation>
     </message>
     <message>
         <source>%1 %2</source>
-        <translation type="unfinished">%1 %2</translation>
+        <translation>%1 %2</translation>
     </message>
     <message>
         <source>%1 %2 %3</source>
-        <translation type="unfinished">%1 %2 %3</translation>
+        <translation>%1 %2 %3</translation>
     </message>
     <message>
         <source>%1 [%2]</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 [%2]</translation>
     </message>
 </context>
 <context>
     <name>ui::AxisRow</name>
     <message>
         <source>Plunger pump, µL</source>
-        <translation type="unfinished"></translation>
+        <translation>柱塞泵，µL</translation>
     </message>
     <message>
         <source>Axis %1, mm</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 轴，mm</translation>
     </message>
     <message>
         <source>Commanded position (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>指令位置（%1）</translation>
     </message>
     <message>
         <source>Grating scale reading (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>光栅尺读数（%1）</translation>
     </message>
     <message>
         <source>Encoder reading (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>编码器读数（%1）</translation>
     </message>
     <message>
         <source>Homed</source>
-        <translation type="unfinished"></translation>
+        <translation>已回零</translation>
     </message>
     <message>
         <source>Home switch</source>
-        <translation type="unfinished"></translation>
+        <translation>零位开关</translation>
     </message>
     <message>
         <source>Limit switch</source>
-        <translation type="unfinished"></translation>
+        <translation>限位开关</translation>
     </message>
     <message>
         <source>Moving</source>
-        <translation type="unfinished"></translation>
+        <translation>运动中</translation>
     </message>
     <message>
         <source>Step size in %1: pick a preset or type your own</source>
-        <translation type="unfinished"></translation>
+        <translation>步长（%1）：选择预设值或自行输入</translation>
     </message>
     <message>
         <source>Step %1 down by the step size</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 按步长负向步进</translation>
     </message>
     <message>
         <source>Step %1 up by the step size</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 按步长正向步进</translation>
     </message>
     <message>
         <source>Hold to move %1 down; release to stop</source>
-        <translation type="unfinished"></translation>
+        <translation>按住使 %1 负向移动；松开即停</translation>
     </message>
     <message>
         <source>Hold to move %1 up; release to stop</source>
-        <translation type="unfinished"></translation>
+        <translation>按住使 %1 正向移动；松开即停</translation>
     </message>
     <message>
         <source>Home</source>
-        <translation type="unfinished"></translation>
+        <translation>回零</translation>
     </message>
     <message>
         <source>Seek the home switch and make it zero</source>
-        <translation type="unfinished"></translation>
+        <translation>寻找零位开关并将其设为零点</translation>
     </message>
     <message>
         <source>Zero</source>
-        <translation type="unfinished"></translation>
+        <translation>设零</translation>
     </message>
     <message>
         <source>Make the present position zero</source>
-        <translation type="unfinished"></translation>
+        <translation>把当前位置设为零点</translation>
     </message>
     <message>
         <source>target %1</source>
-        <translation type="unfinished"></translation>
+        <translation>目标 %1</translation>
     </message>
     <message>
         <source>Go</source>
-        <translation type="unfinished"></translation>
+        <translation>移动</translation>
     </message>
     <message>
         <source>Move %1 to the target (absolute; the axis must be homed)</source>
-        <translation type="unfinished"></translation>
+        <translation>把 %1 移到目标（绝对位置；该轴须已回零）</translation>
     </message>
     <message>
         <source>Soft limits: moves beyond them are refused</source>
-        <translation type="unfinished"></translation>
+        <translation>软限位：超出的移动会被拒绝</translation>
     </message>
     <message>
         <source>Axis %1: &apos;%2&apos; is not a position</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 轴：“%2”不是位置</translation>
     </message>
     <message>
         <source>Axis %1: step &apos;%2&apos; is not a positive number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 轴：步长“%2”不是正数</translation>
     </message>
     <message>
         <source>Homing…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在回零…</translation>
     </message>
     <message>
         <source>Not homed: absolute moves are refused</source>
-        <translation type="unfinished"></translation>
+        <translation>未回零：绝对移动会被拒绝</translation>
     </message>
     <message>
         <source>Move %1 to the target</source>
-        <translation type="unfinished"></translation>
+        <translation>把 %1 移到目标</translation>
     </message>
     <message>
         <source>Home %1 first: absolute moves need a homed axis</source>
-        <translation type="unfinished"></translation>
+        <translation>请先让 %1 回零：绝对移动需要已回零的轴</translation>
     </message>
 </context>
 <context>
@@ -1909,7 +1910,7 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     </message>
     <message>
         <source>Jog</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">点动</translation>
     </message>
     <message>
         <source>Save calibration</source>
@@ -2007,42 +2008,42 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     <name>ui::ConnectionBar</name>
     <message>
         <source>Link state</source>
-        <translation type="unfinished"></translation>
+        <translation>连接状态</translation>
     </message>
     <message>
         <source>The simulated instrument, or a serial port</source>
-        <translation type="unfinished"></translation>
+        <translation>仿真仪器或串口</translation>
     </message>
     <message>
         <source>Look for serial ports again</source>
-        <translation type="unfinished"></translation>
+        <translation>重新查找串口</translation>
     </message>
     <message>
         <source>Baud rate (8N1)</source>
-        <translation type="unfinished"></translation>
+        <translation>波特率（8N1）</translation>
     </message>
     <message>
         <source>Connect</source>
-        <translation type="unfinished"></translation>
+        <translation>连接</translation>
     </message>
     <message>
         <source>Simulator</source>
-        <translation type="unfinished"></translation>
+        <translation>仿真器</translation>
     </message>
     <message>
         <source>%1 (not found)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（未找到）</translation>
     </message>
     <message>
         <source>Disconnect</source>
-        <translation type="unfinished"></translation>
+        <translation>断开</translation>
     </message>
 </context>
 <context>
     <name>ui::ContourPlot</name>
     <message>
         <source>contour error</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">轮廓误差</translation>
     </message>
     <message>
         <source>largest</source>
@@ -2077,7 +2078,7 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     </message>
     <message>
         <source>Time (s)</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">时间 (s)</translation>
     </message>
     <message>
         <source>%1 (%2)</source>
@@ -2092,43 +2093,43 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     <name>ui::EventLog</name>
     <message>
         <source>Time</source>
-        <translation type="unfinished"></translation>
+        <translation>时间</translation>
     </message>
     <message>
         <source>Instrument</source>
-        <translation type="unfinished"></translation>
+        <translation>仪器</translation>
     </message>
     <message>
         <source>Axis</source>
-        <translation type="unfinished"></translation>
+        <translation>轴</translation>
     </message>
     <message>
         <source>Event</source>
-        <translation type="unfinished"></translation>
+        <translation>事件</translation>
     </message>
     <message>
         <source>Details</source>
-        <translation type="unfinished"></translation>
+        <translation>详情</translation>
     </message>
     <message>
         <source>Stage</source>
-        <translation type="unfinished"></translation>
+        <translation>载物台</translation>
     </message>
     <message>
         <source>Analyzer</source>
-        <translation type="unfinished"></translation>
+        <translation>分析仪</translation>
     </message>
     <message>
         <source>event %1</source>
-        <translation type="unfinished"></translation>
+        <translation>事件 %1</translation>
     </message>
     <message>
         <source>segment %1</source>
-        <translation type="unfinished"></translation>
+        <translation>第 %1 段</translation>
     </message>
     <message>
         <source>at %1 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>位于 %1 %2</translation>
     </message>
 </context>
 <context>
@@ -2203,7 +2204,7 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     </message>
     <message>
         <source>Time</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">时间</translation>
     </message>
     <message>
         <source>Source</source>
@@ -2262,312 +2263,312 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     <name>ui::JogPad</name>
     <message>
         <source>▲ back</source>
-        <translation type="unfinished"></translation>
+        <translation>▲ 后</translation>
     </message>
     <message>
         <source>Y toward the back</source>
-        <translation type="unfinished"></translation>
+        <translation>Y 向后</translation>
     </message>
     <message>
         <source>◀ X−</source>
-        <translation type="unfinished"></translation>
+        <translation>◀ X−</translation>
     </message>
     <message>
         <source>X to the left</source>
-        <translation type="unfinished"></translation>
+        <translation>X 向左</translation>
     </message>
     <message>
         <source>X+ ▶</source>
-        <translation type="unfinished"></translation>
+        <translation>X+ ▶</translation>
     </message>
     <message>
         <source>X to the right</source>
-        <translation type="unfinished"></translation>
+        <translation>X 向右</translation>
     </message>
     <message>
         <source>▼ front</source>
-        <translation type="unfinished"></translation>
+        <translation>▼ 前</translation>
     </message>
     <message>
         <source>Y toward the front</source>
-        <translation type="unfinished"></translation>
+        <translation>Y 向前</translation>
     </message>
     <message>
         <source>Z up</source>
-        <translation type="unfinished"></translation>
+        <translation>Z 上</translation>
     </message>
     <message>
         <source>Raise the tip</source>
-        <translation type="unfinished"></translation>
+        <translation>抬起加样针</translation>
     </message>
     <message>
         <source>Z down</source>
-        <translation type="unfinished"></translation>
+        <translation>Z 下</translation>
     </message>
     <message>
         <source>Lower the tip</source>
-        <translation type="unfinished"></translation>
+        <translation>降下加样针</translation>
     </message>
     <message>
         <source>hold to move</source>
-        <translation type="unfinished"></translation>
+        <translation>按住移动</translation>
     </message>
     <message>
         <source>step %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>步长 %1 mm</translation>
     </message>
     <message>
         <source>Hold a button to move while it is pressed, or choose a step for each click</source>
-        <translation type="unfinished"></translation>
+        <translation>按住按钮持续移动，或选择每次点击的步长</translation>
     </message>
     <message>
         <source>Speed as a share of each axis&apos; maximum (slow for teaching)</source>
-        <translation type="unfinished"></translation>
+        <translation>速度占各轴最大速度的比例（示教时用慢速）</translation>
     </message>
     <message>
         <source>speed</source>
-        <translation type="unfinished"></translation>
+        <translation>速度</translation>
     </message>
 </context>
 <context>
     <name>ui::JogScreen</name>
     <message>
         <source>Home all</source>
-        <translation type="unfinished"></translation>
+        <translation>全部回零</translation>
     </message>
     <message>
         <source>Home every axis (the analyzer lifts Z first, then X and Y)</source>
-        <translation type="unfinished"></translation>
+        <translation>所有轴回零（分析仪先抬起 Z，再回 X 和 Y）</translation>
     </message>
     <message>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>停止</translation>
     </message>
     <message>
         <source>Decelerate every axis to rest (Space)</source>
-        <translation type="unfinished"></translation>
+        <translation>所有轴减速至停止（空格键）</translation>
     </message>
     <message>
         <source>Jog speed</source>
-        <translation type="unfinished"></translation>
+        <translation>点动速度</translation>
     </message>
     <message>
         <source>Hold-to-jog speed as a share of each axis&apos; maximum; hold Shift for full speed</source>
-        <translation type="unfinished"></translation>
+        <translation>按住点动的速度占各轴最大速度的比例；按住 Shift 为全速</translation>
     </message>
     <message>
         <source>Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift fast, Space stop, Esc E-stop</source>
-        <translation type="unfinished"></translation>
+        <translation>按键：←/→ X，↑/↓ Y，PgUp/PgDn Z，Shift 快速，空格停止，Esc 急停</translation>
     </message>
     <message>
         <source>%1 %</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %</translation>
     </message>
     <message>
         <source>No instrument</source>
-        <translation type="unfinished"></translation>
+        <translation>无仪器</translation>
     </message>
     <message>
         <source>Axis</source>
-        <translation type="unfinished"></translation>
+        <translation>轴</translation>
     </message>
     <message>
         <source>Commanded</source>
-        <translation type="unfinished"></translation>
+        <translation>指令位置</translation>
     </message>
     <message>
         <source>Grating</source>
-        <translation type="unfinished"></translation>
+        <translation>光栅尺</translation>
     </message>
     <message>
         <source>Encoder</source>
-        <translation type="unfinished"></translation>
+        <translation>编码器</translation>
     </message>
     <message>
         <source>Homed</source>
-        <translation type="unfinished"></translation>
+        <translation>已回零</translation>
     </message>
     <message>
         <source>Home sw</source>
-        <translation type="unfinished"></translation>
+        <translation>零位开关</translation>
     </message>
     <message>
         <source>Limit sw</source>
-        <translation type="unfinished"></translation>
+        <translation>限位开关</translation>
     </message>
     <message>
         <source>Moving</source>
-        <translation type="unfinished"></translation>
+        <translation>运动中</translation>
     </message>
     <message>
         <source>Step</source>
-        <translation type="unfinished"></translation>
+        <translation>步进</translation>
     </message>
     <message>
         <source>Hold</source>
-        <translation type="unfinished"></translation>
+        <translation>按住</translation>
     </message>
     <message>
         <source>Go to</source>
-        <translation type="unfinished"></translation>
+        <translation>移到</translation>
     </message>
     <message>
         <source>Soft limits</source>
-        <translation type="unfinished"></translation>
+        <translation>软限位</translation>
     </message>
     <message>
         <source>E-STOP active — press Reset to clear</source>
-        <translation type="unfinished"></translation>
+        <translation>急停已触发 — 按“复位”解除</translation>
     </message>
     <message>
         <source> Z rises to its switch first, then the other axes go to theirs.</source>
-        <translation type="unfinished"></translation>
+        <translation> Z 先升到其开关，其他轴再回到各自的开关。</translation>
     </message>
     <message>
         <source>Home %1 of the %2?%3 Keep hands and labware clear.</source>
-        <translation type="unfinished"></translation>
+        <translation>让%2的 %1 回零？%3请让手和器皿远离。</translation>
     </message>
     <message>
         <source>Move %1 from %2 to %3 %4? That is %5 %4.</source>
-        <translation type="unfinished"></translation>
+        <translation>把 %1 从 %2 移到 %3 %4？移动距离 %5 %4。</translation>
     </message>
 </context>
 <context>
     <name>ui::JoystickPad</name>
     <message>
         <source>Drag the knob: speed grows with the distance from the centre. Let go to stop.</source>
-        <translation type="unfinished"></translation>
+        <translation>拖动旋钮：速度随离中心的距离增大。松开即停。</translation>
     </message>
     <message>
         <source>+X</source>
         <comment>joystick direction</comment>
-        <translation type="unfinished"></translation>
+        <translation>+X</translation>
     </message>
     <message>
         <source>+Y</source>
         <comment>joystick direction</comment>
-        <translation type="unfinished"></translation>
+        <translation>+Y</translation>
     </message>
 </context>
 <context>
     <name>ui::JoystickScreen</name>
     <message>
         <source>Z: push up or down; it springs back to the centre (stop) when let go</source>
-        <translation type="unfinished"></translation>
+        <translation>Z：向上或向下推；松开后弹回中心（停止）</translation>
     </message>
     <message>
         <source>Z</source>
-        <translation type="unfinished"></translation>
+        <translation>Z</translation>
     </message>
     <message>
         <source>Response</source>
-        <translation type="unfinished"></translation>
+        <translation>响应</translation>
     </message>
     <message>
         <source> mm/s</source>
-        <translation type="unfinished"></translation>
+        <translation> mm/s</translation>
     </message>
     <message>
         <source>Speed at full deflection (each axis is also held to its own maximum)</source>
-        <translation type="unfinished"></translation>
+        <translation>满偏转时的速度（各轴也受自身最大值限制）</translation>
     </message>
     <message>
         <source> %</source>
-        <translation type="unfinished"></translation>
+        <translation> %</translation>
     </message>
     <message>
         <source>Deflection around the centre that does nothing</source>
-        <translation type="unfinished"></translation>
+        <translation>中心附近不起作用的偏转范围</translation>
     </message>
     <message>
         <source>0: speed grows linearly with deflection; 1: cubically (finer near the centre)</source>
-        <translation type="unfinished"></translation>
+        <translation>0：速度随偏转线性增大；1：按三次方增大（中心附近更精细）</translation>
     </message>
     <message>
         <source>Max speed</source>
-        <translation type="unfinished"></translation>
+        <translation>最大速度</translation>
     </message>
     <message>
         <source>Dead-band</source>
-        <translation type="unfinished"></translation>
+        <translation>死区</translation>
     </message>
     <message>
         <source>Expo</source>
-        <translation type="unfinished"></translation>
+        <translation>指数</translation>
     </message>
     <message>
         <source>Drag the knob; let go to stop. Arrow keys push the stick to the rim, PgUp/PgDn move Z. Esc: E-stop.</source>
-        <translation type="unfinished"></translation>
+        <translation>拖动旋钮，松开即停。方向键把摇杆推到边缘，PgUp/PgDn 移动 Z。Esc：急停。</translation>
     </message>
     <message>
         <source>Clear trail</source>
-        <translation type="unfinished"></translation>
+        <translation>清除轨迹</translation>
     </message>
     <message>
         <source>No instrument</source>
-        <translation type="unfinished"></translation>
+        <translation>无仪器</translation>
     </message>
     <message>
         <source>%1 — joystick</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 — 摇杆</translation>
     </message>
     <message>
         <source>E-STOP active — press Reset to clear</source>
-        <translation type="unfinished"></translation>
+        <translation>急停已触发 — 按“复位”解除</translation>
     </message>
     <message>
         <source>&lt;tr&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td align=right&gt;%2&lt;/td&gt;&lt;td align=right&gt;%3&lt;/td&gt;&lt;td&gt;%4&lt;/td&gt;&lt;/tr&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;tr&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td align=right&gt;%2&lt;/td&gt;&lt;td align=right&gt;%3&lt;/td&gt;&lt;td&gt;%4&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
     <message>
         <source>not homed</source>
-        <translation type="unfinished"></translation>
+        <translation>未回零</translation>
     </message>
     <message>
         <source>&lt;table cellspacing=6&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;commanded&lt;/td&gt;&lt;td&gt;%1&lt;/td&gt;&lt;td&gt;&lt;/td&gt;&lt;/tr&gt;%2&lt;/table&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;table cellspacing=6&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;指令&lt;/td&gt;&lt;td&gt;%1&lt;/td&gt;&lt;td&gt;&lt;/td&gt;&lt;/tr&gt;%2&lt;/table&gt;</translation>
     </message>
     <message>
         <source>grating</source>
-        <translation type="unfinished"></translation>
+        <translation>光栅尺</translation>
     </message>
     <message>
         <source>encoder</source>
-        <translation type="unfinished"></translation>
+        <translation>编码器</translation>
     </message>
     <message>
         <source>Commanded speed: %1 mm/s</source>
-        <translation type="unfinished"></translation>
+        <translation>指令速度：%1 mm/s</translation>
     </message>
     <message>
         <source>Commanded speed: 0.00 mm/s</source>
-        <translation type="unfinished"></translation>
+        <translation>指令速度：0.00 mm/s</translation>
     </message>
 </context>
 <context>
     <name>ui::LiveStrip</name>
     <message>
         <source>Live: position and following error of axis</source>
-        <translation type="unfinished"></translation>
+        <translation>实时：该轴的位置与跟随误差</translation>
     </message>
     <message>
         <source>The axis plotted below; jogging an axis also chooses it</source>
-        <translation type="unfinished"></translation>
+        <translation>下方绘制的轴；点动某轴也会选中它</translation>
     </message>
     <message>
         <source>Time (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>时间 (s)</translation>
     </message>
     <message>
         <source>Plots screen paused: this strip stops once that pause has filled its window</source>
-        <translation type="unfinished"></translation>
+        <translation>曲线界面已暂停：暂停填满其窗口后本条也会停止</translation>
     </message>
 </context>
 <context>
     <name>ui::MessageBanner</name>
     <message>
         <source>Dismiss</source>
-        <translation type="unfinished"></translation>
+        <translation>关闭</translation>
     </message>
 </context>
 <context>
@@ -2610,7 +2611,7 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     </message>
     <message>
         <source> mm/s</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished"> mm/s</translation>
     </message>
     <message>
         <source>Path speed (feed): how fast the pattern is run along its length</source>
@@ -2642,17 +2643,17 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     </message>
     <message>
         <source>Z</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">Z</translation>
     </message>
     <message>
         <source>X</source>
         <comment>axis</comment>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">X</translation>
     </message>
     <message>
         <source>Y</source>
         <comment>axis</comment>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">Y</translation>
     </message>
     <message>
         <source> °</source>
@@ -2815,11 +2816,11 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     </message>
     <message>
         <source>commanded</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">指令位置</translation>
     </message>
     <message>
         <source>measured</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">实测位置</translation>
     </message>
     <message>
         <source>start</source>
@@ -2850,7 +2851,7 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     </message>
     <message>
         <source>Instrument</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">仪器</translation>
     </message>
     <message>
         <source>Run</source>
@@ -3542,7 +3543,7 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     </message>
     <message>
         <source> mm/s</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished"> mm/s</translation>
     </message>
     <message>
         <source>Cruise speed the move may not exceed</source>
@@ -3869,7 +3870,7 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     </message>
     <message>
         <source>warning: %1</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">警告：%1</translation>
     </message>
     <message>
         <source>The recipe validates.</source>
@@ -3892,7 +3893,7 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     </message>
     <message>
         <source>controller output u</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">控制器输出 u</translation>
     </message>
     <message>
         <source>controller output u [%1]</source>
@@ -3963,7 +3964,7 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     </message>
     <message>
         <source>Step</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">步进</translation>
     </message>
     <message>
         <source>What</source>
@@ -4230,7 +4231,7 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     </message>
     <message>
         <source> %</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished"> %</translation>
     </message>
     <message>
         <source>Share of the field neighbours overlap in X (0–90 %)</source>
@@ -4306,7 +4307,7 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     </message>
     <message>
         <source> mm/s</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished"> mm/s</translation>
     </message>
     <message>
         <source>Path speed of the moves between tiles</source>
@@ -4631,7 +4632,7 @@ Start this scan anew in that folder? The old run log is kept under another name.
     </message>
     <message>
         <source>%1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">%1 mm</translation>
     </message>
     <message>
         <source>X →   Y ↑</source>
@@ -4754,7 +4755,7 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     <name>ui::StepTestPanel</name>
     <message>
         <source>Step</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">步进</translation>
     </message>
     <message>
         <source>positive</source>
@@ -4833,11 +4834,11 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     <name>ui::TravelView</name>
     <message>
         <source>%1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 mm</translation>
     </message>
     <message>
         <source>XY travel to scale · dashed: soft limits</source>
-        <translation type="unfinished"></translation>
+        <translation>XY 行程（按比例）· 虚线：软限位</translation>
     </message>
 </context>
 <context>
@@ -4964,35 +4965,35 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     <name>ui::XyView</name>
     <message>
         <source>measured</source>
-        <translation type="unfinished"></translation>
+        <translation>实测</translation>
     </message>
     <message>
         <source>commanded</source>
-        <translation type="unfinished"></translation>
+        <translation>指令</translation>
     </message>
     <message>
         <source>now</source>
-        <translation type="unfinished"></translation>
+        <translation>当前</translation>
     </message>
     <message>
         <source>XY path</source>
-        <translation type="unfinished"></translation>
+        <translation>XY 路径</translation>
     </message>
     <message>
         <source>X</source>
-        <translation type="unfinished"></translation>
+        <translation>X</translation>
     </message>
     <message>
         <source>X (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>X (%1)</translation>
     </message>
     <message>
         <source>Y</source>
-        <translation type="unfinished"></translation>
+        <translation>Y</translation>
     </message>
     <message>
         <source>Y (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Y (%1)</translation>
     </message>
 </context>
 <context>
@@ -5556,111 +5557,111 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     <name>words::CapabilityWords</name>
     <message>
         <source>homing switches</source>
-        <translation type="unfinished"></translation>
+        <translation>零位开关</translation>
     </message>
     <message>
         <source>way to set an axis&apos; zero</source>
-        <translation type="unfinished"></translation>
+        <translation>设定轴零点的功能</translation>
     </message>
     <message>
         <source>encoder or grating readings</source>
-        <translation type="unfinished"></translation>
+        <translation>编码器或光栅尺读数</translation>
     </message>
     <message>
         <source>closed position loop</source>
-        <translation type="unfinished"></translation>
+        <translation>位置闭环</translation>
     </message>
     <message>
         <source>telemetry stream</source>
-        <translation type="unfinished"></translation>
+        <translation>遥测数据流</translation>
     </message>
     <message>
         <source>continuous jog</source>
-        <translation type="unfinished"></translation>
+        <translation>连续点动</translation>
     </message>
     <message>
         <source>way to stop by itself when BenchPilot goes quiet</source>
-        <translation type="unfinished"></translation>
+        <translation>BenchPilot 无响应时自行停止的功能</translation>
     </message>
     <message>
         <source>path queue to run patterns on</source>
-        <translation type="unfinished"></translation>
+        <translation>运行图形用的路径队列</translation>
     </message>
     <message>
         <source>Z axis that follows a path</source>
-        <translation type="unfinished"></translation>
+        <translation>跟随路径的 Z 轴</translation>
     </message>
     <message>
         <source>Z axis that waits for X and Y</source>
-        <translation type="unfinished"></translation>
+        <translation>等待 X、Y 到位的 Z 轴</translation>
     </message>
     <message>
         <source>soft limits of its own</source>
-        <translation type="unfinished"></translation>
+        <translation>自身的软限位</translation>
     </message>
     <message>
         <source>PID gains to tune</source>
-        <translation type="unfinished"></translation>
+        <translation>可整定的 PID 增益</translation>
     </message>
     <message>
         <source>step or relay tests</source>
-        <translation type="unfinished"></translation>
+        <translation>阶跃或继电测试</translation>
     </message>
     <message>
         <source>plunger pump</source>
-        <translation type="unfinished"></translation>
+        <translation>柱塞泵</translation>
     </message>
     <message>
         <source>trigger output for a camera</source>
-        <translation type="unfinished"></translation>
+        <translation>相机触发输出</translation>
     </message>
     <message>
         <source>report of its acceleration and jerk limits</source>
-        <translation type="unfinished"></translation>
+        <translation>加速度与加加速度限值的报告</translation>
     </message>
     <message>
         <source>stage</source>
-        <translation type="unfinished"></translation>
+        <translation>载物台</translation>
     </message>
     <message>
         <source>analyzer</source>
-        <translation type="unfinished"></translation>
+        <translation>分析仪</translation>
     </message>
     <message>
         <source>it runs open loop</source>
-        <translation type="unfinished"></translation>
+        <translation>它以开环运行</translation>
     </message>
     <message>
         <source>its firmware predates them; estimates assume the reference machine&apos;s</source>
-        <translation type="unfinished"></translation>
+        <translation>其固件早于该功能；估算按参考机器的数值</translation>
     </message>
     <message>
         <source>its protocol has none</source>
-        <translation type="unfinished"></translation>
+        <translation>其协议不支持</translation>
     </message>
     <message>
         <source>The instrument is not connected.</source>
-        <translation type="unfinished"></translation>
+        <translation>仪器未连接。</translation>
     </message>
     <message>
         <source>The %1 is not connected.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1未连接。</translation>
     </message>
     <message>
         <source>The %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1</translation>
     </message>
     <message>
         <source>The %1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（%2）</translation>
     </message>
     <message>
         <source>%1 has no %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1没有%2。</translation>
     </message>
     <message>
         <source>%1 has no %2: %3.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1没有%2：%3。</translation>
     </message>
 </context>
 <context>
@@ -6315,7 +6316,7 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     <name>words::FileWords</name>
     <message>
         <source>warning: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>警告：%1</translation>
     </message>
     <message>
         <source>cannot read %1: %2</source>

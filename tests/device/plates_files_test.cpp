@@ -1,5 +1,6 @@
 // The plate and recipe files: every problem with its line, column and field;
 // the examples load; what is written reads back the same.
+#include "device/english_words.h"
 #include "device/files/plates/calibration_file.h"
 #include "device/files/plates/labware_file.h"
 #include "device/files/recipes/recipe_file.h"
@@ -32,7 +33,7 @@ std::string validate(const std::string& recipe)
     RecipeRead r = parseRecipe(recipe);
     if (r.recipe)
         placeProblems(r, plates::planRecipe(*r.recipe, builtinContext()).problems);
-    return r.problems.format("plate.recipe.json");
+    return i18ntest::englishFormat(r.problems, "plate.recipe.json");
 }
 
 const char* kHead = "{\n  \"schema\": \"benchpilot.recipe\",\n  \"version\": 1,\n  \"name\": \"t\",\n"
@@ -116,7 +117,7 @@ TEST(PlateFiles, TheExamplesLoadAndValidate)
     const plates::Deck deck = builtinDeck();
     for (const char* name : {"sampling-96.recipe.json", "reagent-transfer.recipe.json"}) {
         const LoadedRecipe l = loadRecipe(examplePath(name), deck, {});
-        EXPECT_TRUE(l.ok()) << name << ": " << l.messages.join(QLatin1Char('\n')).toStdString();
+        EXPECT_TRUE(l.ok()) << name << ": " << i18ntest::englishFormat(l.problems);
         EXPECT_FALSE(l.plan.ops.empty());
     }
     const LoadedRecipe s = loadRecipe(examplePath("sampling-96.recipe.json"), deck, {});
@@ -149,7 +150,7 @@ TEST(PlateFiles, AMissingLabwareFileIsReported)
     f.close();
     const LoadedRecipe l = loadRecipe(path, builtinDeck(), {});
     EXPECT_FALSE(l.ok());
-    EXPECT_TRUE(l.messages.join(QLatin1Char('\n')).contains(QStringLiteral("nowhere.labware.json"))) << l.messages.join(QLatin1Char('\n')).toStdString();
+    EXPECT_NE(i18ntest::englishFormat(l.problems).find("nowhere.labware.json"), std::string::npos) << i18ntest::englishFormat(l.problems);
 }
 
 TEST(PlateFiles, AnOpentronsDefinitionTurnsIntoOurFrame)

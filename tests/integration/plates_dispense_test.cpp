@@ -5,6 +5,7 @@
 // dispense and resumed from the log; killed, or its cable pulled, while a
 // dispense's plunger moves and resumed: no target well is ever dispensed into
 // twice, and the plunger ends where the volumes say.
+#include "device/english_words.h"
 #include "device/files/recipes/recipe_loader.h"
 #include "plates_run_support.h"
 
@@ -170,7 +171,7 @@ TEST_F(PlateDispense, TheReagentTransferExampleRunsToTheEndWithTheTipUpWheneverI
     expectEachDispenseOnce(pl);
     const auto st = readLog(logPath);
     EXPECT_TRUE(st.finished);
-    EXPECT_TRUE(st.problems.empty()) << st.problems.format("log");
+    EXPECT_TRUE(st.problems.empty()) << i18ntest::englishFormat(st.problems, "log");
     std::multiset<std::string> dispensed;
     for (std::size_t i = 0; i < st.ops.size(); ++i)
         if (pl.ops[i].type == plates::StepType::Dispense)
