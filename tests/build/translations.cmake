@@ -6,6 +6,7 @@
 #    PENDING (the screens whose words phase 2 of issue 17 translates; shrink the
 #    list as they are done, never grow it).
 # Called as: cmake -DSRC=<source dir> -DWORK=<scratch dir> -DLUPDATE=<lupdate> -P translations.cmake
+cmake_minimum_required(VERSION 3.25)
 set(TS_DIR ${SRC}/resources/translations)
 file(REMOVE_RECURSE ${WORK}/ts)
 file(MAKE_DIRECTORY ${WORK}/ts)
@@ -36,9 +37,11 @@ set(PENDING
   ui::RecipeEditor ui::ResponsePlot ui::RunPanel ui::ScanPlanForm ui::ScanScreen ui::ScanStageMap ui::StepForm
   ui::StepTestPanel ui::TuningScreen ui::ZnPanel)
 file(READ ${TS_DIR}/benchpilot_zh_CN.ts zh)
-# One list element per <context>: the text's own ';' would split a CMake list, so
-# it is set aside first.
+# One list element per <context>: the text's own ';' (and brackets, which CMake
+# treats as quoting inside a list) are set aside first.
 string(REPLACE ";" "<semicolon>" zh "${zh}")
+string(REPLACE "[" "<open>" zh "${zh}")
+string(REPLACE "]" "<close>" zh "${zh}")
 string(REPLACE "<context>" ";<context>" contexts "${zh}")
 set(bad)
 foreach(c IN LISTS contexts)
