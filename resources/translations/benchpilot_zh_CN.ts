@@ -1200,395 +1200,395 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     <name>grbl</name>
     <message>
         <source>A G-code word has no letter: every word is a letter followed by a value.</source>
-        <translation type="unfinished"></translation>
+        <translation>G 代码字缺少字母：每个字都是一个字母后跟数值。</translation>
     </message>
     <message>
         <source>A number is missing or is not written as a valid number.</source>
-        <translation type="unfinished"></translation>
+        <translation>缺少数值，或数值格式无效。</translation>
     </message>
     <message>
         <source>The &apos;$&apos; system command is not recognized or not supported.</source>
-        <translation type="unfinished"></translation>
+        <translation>无法识别或不支持该“$”系统命令。</translation>
     </message>
     <message>
         <source>A negative value was given where only a positive one is allowed.</source>
-        <translation type="unfinished"></translation>
+        <translation>在只允许正值的地方给出了负值。</translation>
     </message>
     <message>
         <source>Homing is not enabled in the controller&apos;s settings.</source>
-        <translation type="unfinished"></translation>
+        <translation>控制器设置中未启用回零。</translation>
     </message>
     <message>
         <source>The step pulse time is shorter than the controller allows.</source>
-        <translation type="unfinished"></translation>
+        <translation>步进脉冲时间短于控制器允许的最小值。</translation>
     </message>
     <message>
         <source>Reading the stored settings failed; the controller restored its defaults.</source>
-        <translation type="unfinished"></translation>
+        <translation>读取已存设置失败；控制器已恢复默认值。</translation>
     </message>
     <message>
         <source>This &apos;$&apos; command is only accepted while the controller is idle.</source>
-        <translation type="unfinished"></translation>
+        <translation>该“$”命令只能在控制器空闲时执行。</translation>
     </message>
     <message>
         <source>G-code is locked out while the controller is in alarm or jogging.</source>
-        <translation type="unfinished"></translation>
+        <translation>控制器处于报警或点动状态时锁定 G 代码。</translation>
     </message>
     <message>
         <source>Soft limits cannot be enabled unless homing is enabled too.</source>
-        <translation type="unfinished"></translation>
+        <translation>未启用回零时不能启用软限位。</translation>
     </message>
     <message>
         <source>The line is longer than the controller accepts; it was not executed.</source>
-        <translation type="unfinished"></translation>
+        <translation>该行超过控制器允许的长度，未执行。</translation>
     </message>
     <message>
         <source>This setting would make the step rate exceed what the controller supports.</source>
-        <translation type="unfinished"></translation>
+        <translation>该设置会使步进频率超过控制器所能支持的范围。</translation>
     </message>
     <message>
         <source>The safety door is open; the controller entered its door state.</source>
-        <translation type="unfinished"></translation>
+        <translation>安全门已打开；控制器进入安全门状态。</translation>
     </message>
     <message>
         <source>The build info or startup line is too long to be stored.</source>
-        <translation type="unfinished"></translation>
+        <translation>版本信息或启动行太长，无法保存。</translation>
     </message>
     <message>
         <source>The jog target lies beyond the machine travel; the jog was ignored.</source>
-        <translation type="unfinished"></translation>
+        <translation>点动目标超出机床行程；该点动被忽略。</translation>
     </message>
     <message>
         <source>The jog command has no &apos;=&apos; or contains G-code that jogging does not allow.</source>
-        <translation type="unfinished"></translation>
+        <translation>点动命令缺少“=”，或含有点动不允许的 G 代码。</translation>
     </message>
     <message>
         <source>Laser mode needs a PWM spindle output.</source>
-        <translation type="unfinished"></translation>
+        <translation>激光模式需要 PWM 主轴输出。</translation>
     </message>
     <message>
         <source>The controller is being reset.</source>
-        <translation type="unfinished"></translation>
+        <translation>控制器正在复位。</translation>
     </message>
     <message>
         <source>A value that must be above zero was zero or negative.</source>
-        <translation type="unfinished"></translation>
+        <translation>必须大于零的数值为零或负值。</translation>
     </message>
     <message>
         <source>The block contains a G-code command that is not supported or not valid.</source>
-        <translation type="unfinished"></translation>
+        <translation>程序段含有不支持或无效的 G 代码命令。</translation>
     </message>
     <message>
         <source>The block contains two commands of the same modal group.</source>
-        <translation type="unfinished"></translation>
+        <translation>程序段含有同一模态组的两个命令。</translation>
     </message>
     <message>
         <source>No feed rate has been set for this move.</source>
-        <translation type="unfinished"></translation>
+        <translation>该移动未设置进给速度。</translation>
     </message>
     <message>
         <source>This G-code command needs a whole-number value.</source>
-        <translation type="unfinished"></translation>
+        <translation>该 G 代码命令需要整数值。</translation>
     </message>
     <message>
         <source>Two commands in the block both need the axis words.</source>
-        <translation type="unfinished"></translation>
+        <translation>程序段中有两个命令都需要轴字。</translation>
     </message>
     <message>
         <source>A G-code word appears twice in the block.</source>
-        <translation type="unfinished"></translation>
+        <translation>程序段中某个 G 代码字出现了两次。</translation>
     </message>
     <message>
         <source>The command needs axis words, and the block has none.</source>
-        <translation type="unfinished"></translation>
+        <translation>该命令需要轴字，但程序段中没有。</translation>
     </message>
     <message>
         <source>The line number (N) is outside the valid range.</source>
-        <translation type="unfinished"></translation>
+        <translation>行号（N）超出有效范围。</translation>
     </message>
     <message>
         <source>The command is missing a required P or L value.</source>
-        <translation type="unfinished"></translation>
+        <translation>该命令缺少必需的 P 或 L 值。</translation>
     </message>
     <message>
         <source>The work coordinate systems G59.1, G59.2 and G59.3 are not supported.</source>
-        <translation type="unfinished"></translation>
+        <translation>不支持工件坐标系 G59.1、G59.2 和 G59.3。</translation>
     </message>
     <message>
         <source>G53 is only allowed with G0 or G1 motion.</source>
-        <translation type="unfinished"></translation>
+        <translation>G53 只能与 G0 或 G1 运动一起使用。</translation>
     </message>
     <message>
         <source>The block has axis words that no command uses.</source>
-        <translation type="unfinished"></translation>
+        <translation>程序段中有未被任何命令使用的轴字。</translation>
     </message>
     <message>
         <source>The arc has no axis words in the selected plane.</source>
-        <translation type="unfinished"></translation>
+        <translation>圆弧在所选平面内没有轴字。</translation>
     </message>
     <message>
         <source>The motion target is invalid (an impossible arc, or a probe target equal to the current position).</source>
-        <translation type="unfinished"></translation>
+        <translation>运动目标无效（无法实现的圆弧，或探测目标等于当前位置）。</translation>
     </message>
     <message>
         <source>The arc&apos;s radius form gives no valid geometry; use the centre (I J) form or split the arc.</source>
-        <translation type="unfinished"></translation>
+        <translation>圆弧的半径格式得不到有效几何；请使用圆心（I J）格式或拆分圆弧。</translation>
     </message>
     <message>
         <source>The arc in centre form has no I/J/K offset in the selected plane.</source>
-        <translation type="unfinished"></translation>
+        <translation>圆心格式的圆弧在所选平面内没有 I/J/K 偏移。</translation>
     </message>
     <message>
         <source>The block has value words that no command uses.</source>
-        <translation type="unfinished"></translation>
+        <translation>程序段中有未被任何命令使用的数值字。</translation>
     </message>
     <message>
         <source>G43.1 dynamic tool length offset was given for an axis other than the configured one.</source>
-        <translation type="unfinished"></translation>
+        <translation>G43.1 动态刀具长度补偿用在了配置轴以外的轴上。</translation>
     </message>
     <message>
         <source>The tool number is above the largest supported.</source>
-        <translation type="unfinished"></translation>
+        <translation>刀具号超过支持的最大值。</translation>
     </message>
     <message>
         <source>A value is out of range.</source>
-        <translation type="unfinished"></translation>
+        <translation>数值超出范围。</translation>
     </message>
     <message>
         <source>This G-code command is not allowed while a tool change is pending.</source>
-        <translation type="unfinished"></translation>
+        <translation>换刀待处理时不允许该 G 代码命令。</translation>
     </message>
     <message>
         <source>The spindle is not running, but the motion needs it (constant surface speed or spindle sync).</source>
-        <translation type="unfinished"></translation>
+        <translation>主轴未运转，但该运动需要主轴（恒线速或主轴同步）。</translation>
     </message>
     <message>
         <source>Threading needs the ZX plane.</source>
-        <translation type="unfinished"></translation>
+        <translation>螺纹加工需要 ZX 平面。</translation>
     </message>
     <message>
         <source>The maximum feed rate is exceeded.</source>
-        <translation type="unfinished"></translation>
+        <translation>超过最大进给速度。</translation>
     </message>
     <message>
         <source>The spindle speed is out of range.</source>
-        <translation type="unfinished"></translation>
+        <translation>主轴转速超出范围。</translation>
     </message>
     <message>
         <source>A limit switch is engaged: only homing is allowed.</source>
-        <translation type="unfinished"></translation>
+        <translation>限位开关已触发：只允许回零。</translation>
     </message>
     <message>
         <source>The machine must be homed before it can continue.</source>
-        <translation type="unfinished"></translation>
+        <translation>设备必须先回零才能继续。</translation>
     </message>
     <message>
         <source>The current tool is not set (tool changer).</source>
-        <translation type="unfinished"></translation>
+        <translation>未设置当前刀具（换刀装置）。</translation>
     </message>
     <message>
         <source>Two value words conflict.</source>
-        <translation type="unfinished"></translation>
+        <translation>两个数值字相互冲突。</translation>
     </message>
     <message>
         <source>The power-on self test failed; a hard reset is needed.</source>
-        <translation type="unfinished"></translation>
+        <translation>上电自检失败；需要硬复位。</translation>
     </message>
     <message>
         <source>The emergency stop is active.</source>
-        <translation type="unfinished"></translation>
+        <translation>急停已触发。</translation>
     </message>
     <message>
         <source>A motor driver reports a fault.</source>
-        <translation type="unfinished"></translation>
+        <translation>电机驱动器报告故障。</translation>
     </message>
     <message>
         <source>The setting value is out of range.</source>
-        <translation type="unfinished"></translation>
+        <translation>设置值超出范围。</translation>
     </message>
     <message>
         <source>This setting is not available on this controller.</source>
-        <translation type="unfinished"></translation>
+        <translation>该控制器没有此设置。</translation>
     </message>
     <message>
         <source>The retract position is below the drilling depth.</source>
-        <translation type="unfinished"></translation>
+        <translation>回退位置低于钻孔深度。</translation>
     </message>
     <message>
         <source>Two auto-squared axes cannot be homed at the same time.</source>
-        <translation type="unfinished"></translation>
+        <translation>两个自动找正的轴不能同时回零。</translation>
     </message>
     <message>
         <source>The coordinate system is locked.</source>
-        <translation type="unfinished"></translation>
+        <translation>坐标系已锁定。</translation>
     </message>
     <message>
         <source>An unexpected file demarcation was found.</source>
-        <translation type="unfinished"></translation>
+        <translation>发现意外的文件分界符。</translation>
     </message>
     <message>
         <source>The auxiliary port is not available.</source>
-        <translation type="unfinished"></translation>
+        <translation>辅助端口不可用。</translation>
     </message>
     <message>
         <source>The SD card could not be mounted.</source>
-        <translation type="unfinished"></translation>
+        <translation>无法挂载 SD 卡。</translation>
     </message>
     <message>
         <source>Reading a file failed.</source>
-        <translation type="unfinished"></translation>
+        <translation>读取文件失败。</translation>
     </message>
     <message>
         <source>A directory could not be opened.</source>
-        <translation type="unfinished"></translation>
+        <translation>无法打开目录。</translation>
     </message>
     <message>
         <source>The directory was not found.</source>
-        <translation type="unfinished"></translation>
+        <translation>未找到目录。</translation>
     </message>
     <message>
         <source>The SD card is not mounted.</source>
-        <translation type="unfinished"></translation>
+        <translation>SD 卡未挂载。</translation>
     </message>
     <message>
         <source>The file system is not mounted.</source>
-        <translation type="unfinished"></translation>
+        <translation>文件系统未挂载。</translation>
     </message>
     <message>
         <source>The file system is read-only.</source>
-        <translation type="unfinished"></translation>
+        <translation>文件系统为只读。</translation>
     </message>
     <message>
         <source>Bluetooth could not be started.</source>
-        <translation type="unfinished"></translation>
+        <translation>无法启动蓝牙。</translation>
     </message>
     <message>
         <source>An expression contains an unknown operation.</source>
-        <translation type="unfinished"></translation>
+        <translation>表达式含有未知运算。</translation>
     </message>
     <message>
         <source>An expression divides by zero.</source>
-        <translation type="unfinished"></translation>
+        <translation>表达式除以零。</translation>
     </message>
     <message>
         <source>An expression argument is too large or too small.</source>
-        <translation type="unfinished"></translation>
+        <translation>表达式参数过大或过小。</translation>
     </message>
     <message>
         <source>An expression argument is not valid for its operation.</source>
-        <translation type="unfinished"></translation>
+        <translation>表达式参数对其运算无效。</translation>
     </message>
     <message>
         <source>An expression is not valid.</source>
-        <translation type="unfinished"></translation>
+        <translation>表达式无效。</translation>
     </message>
     <message>
         <source>An expression gave no number (NaN or infinity).</source>
-        <translation type="unfinished"></translation>
+        <translation>表达式没有得到数值（NaN 或无穷大）。</translation>
     </message>
     <message>
         <source>Authentication is required.</source>
-        <translation type="unfinished"></translation>
+        <translation>需要身份验证。</translation>
     </message>
     <message>
         <source>Access is denied.</source>
-        <translation type="unfinished"></translation>
+        <translation>访问被拒绝。</translation>
     </message>
     <message>
         <source>Not allowed while a critical event is active.</source>
-        <translation type="unfinished"></translation>
+        <translation>存在关键事件时不允许此操作。</translation>
     </message>
     <message>
         <source>Flow statements are only allowed in a macro from the file system.</source>
-        <translation type="unfinished"></translation>
+        <translation>流程语句只允许出现在文件系统中的宏里。</translation>
     </message>
     <message>
         <source>The flow statement is unknown.</source>
-        <translation type="unfinished"></translation>
+        <translation>未知的流程语句。</translation>
     </message>
     <message>
         <source>A flow statement overflowed the stack.</source>
-        <translation type="unfinished"></translation>
+        <translation>流程语句导致栈溢出。</translation>
     </message>
     <message>
         <source>A flow statement ran out of memory.</source>
-        <translation type="unfinished"></translation>
+        <translation>流程语句耗尽了内存。</translation>
     </message>
     <message>
         <source>The file could not be opened.</source>
-        <translation type="unfinished"></translation>
+        <translation>无法打开文件。</translation>
     </message>
     <message>
         <source>A user-defined error occurred.</source>
-        <translation type="unfinished"></translation>
+        <translation>发生用户定义的错误。</translation>
     </message>
     <message>
         <source>A hard limit switch was hit. The sudden halt has probably lost the position: home again.</source>
-        <translation type="unfinished"></translation>
+        <translation>触发了硬限位开关。突然停止很可能丢失了位置：请重新回零。</translation>
     </message>
     <message>
         <source>A motion target lies beyond the machine travel (soft limit). The position was kept; the alarm may be unlocked.</source>
-        <translation type="unfinished"></translation>
+        <translation>运动目标超出机床行程（软限位）。位置已保留；可以解除报警。</translation>
     </message>
     <message>
         <source>Reset while moving. The position is probably lost: home again.</source>
-        <translation type="unfinished"></translation>
+        <translation>运动中被复位。位置很可能已丢失：请重新回零。</translation>
     </message>
     <message>
         <source>Probe failed: the probe was not in the expected state before the probing cycle began.</source>
-        <translation type="unfinished"></translation>
+        <translation>探测失败：探测循环开始前探针不在预期状态。</translation>
     </message>
     <message>
         <source>Probe failed: the probe did not touch within the programmed travel.</source>
-        <translation type="unfinished"></translation>
+        <translation>探测失败：在编程行程内探针未接触。</translation>
     </message>
     <message>
         <source>Homing failed: the homing cycle was reset.</source>
-        <translation type="unfinished"></translation>
+        <translation>回零失败：回零循环被复位。</translation>
     </message>
     <message>
         <source>Homing failed: the safety door was opened during homing.</source>
-        <translation type="unfinished"></translation>
+        <translation>回零失败：回零期间安全门被打开。</translation>
     </message>
     <message>
         <source>Homing failed: pulling off did not clear the limit switch. Increase the pull-off distance or check the wiring.</source>
-        <translation type="unfinished"></translation>
+        <translation>回零失败：回退后限位开关仍未释放。请加大回退距离或检查接线。</translation>
     </message>
     <message>
         <source>Homing failed: no limit switch was found within the search distance. Check the maximum travel, the pull-off and the wiring.</source>
-        <translation type="unfinished"></translation>
+        <translation>回零失败：在搜索距离内未找到限位开关。请检查最大行程、回退距离和接线。</translation>
     </message>
     <message>
         <source>The emergency stop is asserted: clear it and reset.</source>
-        <translation type="unfinished"></translation>
+        <translation>急停信号有效：请解除后复位。</translation>
     </message>
     <message>
         <source>Homing is required: run homing ($H) to continue.</source>
-        <translation type="unfinished"></translation>
+        <translation>需要回零：请执行回零（$H）后继续。</translation>
     </message>
     <message>
         <source>A limit switch is engaged: clear it before continuing.</source>
-        <translation type="unfinished"></translation>
+        <translation>限位开关已触发：请先解除再继续。</translation>
     </message>
     <message>
         <source>The probe protection was triggered: clear it before continuing.</source>
-        <translation type="unfinished"></translation>
+        <translation>探针保护已触发：请先解除再继续。</translation>
     </message>
     <message>
         <source>The spindle did not reach its speed in time: clear before continuing.</source>
-        <translation type="unfinished"></translation>
+        <translation>主轴未能按时达到转速：请先解除再继续。</translation>
     </message>
     <message>
         <source>Homing failed: the second switch of an auto-squared axis was not found within the search distance.</source>
-        <translation type="unfinished"></translation>
+        <translation>回零失败：在搜索距离内未找到自动找正轴的第二个开关。</translation>
     </message>
     <message>
         <source>The power-on self test failed.</source>
-        <translation type="unfinished"></translation>
+        <translation>上电自检失败。</translation>
     </message>
     <message>
         <source>Homing failed: the homing configuration is not valid.</source>
-        <translation type="unfinished"></translation>
+        <translation>回零失败：回零配置无效。</translation>
     </message>
 </context>
 <context>

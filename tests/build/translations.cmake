@@ -31,7 +31,7 @@ foreach(ts benchpilot_zh_CN.ts benchpilot_en.ts)
 endforeach()
 
 set(PENDING
-  QObject StepTexts cli grbl sim simapp::PtyTransport ui::CalibrationPanel ui::ChannelPicker ui::ContourPlot
+  QObject StepTexts cli sim simapp::PtyTransport ui::CalibrationPanel ui::ChannelPicker ui::ContourPlot
   ui::CursorReadout ui::GainsPanel ui::PatternForm ui::PatternPreview ui::PatternScreen ui::PlateMap
   ui::PlatesScreen ui::PlotCursors ui::PlotStack ui::PlotToolbar ui::PlotsScreen ui::ProfilesScreen
   ui::RecipeEditor ui::ResponsePlot ui::RunPanel ui::ScanPlanForm ui::ScanScreen ui::ScanStageMap ui::StepForm
