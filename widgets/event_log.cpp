@@ -107,6 +107,8 @@ void EventLog::append(Entry e)
 
 void EventLog::addEvent(proto::DeviceKind instrument, const dev::DeviceIdentity& id, const dev::DeviceEvent& event)
 {
+    if (event.kind == proto::EventKind::PathSegmentDone)
+        return;  // not logged (below): the entry before it is another event's
     addEvent(QString(), id, event);
     if (!m_entries.empty() && m_entries.back().event && m_entries.back().instrumentText.isEmpty()) {
         m_entries.back().instrument = instrument;
