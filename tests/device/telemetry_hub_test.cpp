@@ -76,10 +76,11 @@ struct SimRig {
                          [this](const proto::TelemetryBatch& b) { batches.push_back(b); });
         QObject::connect(&client, &dev::BenchPilotClient::requestFailed, &client,
                          [this](const dev::RequestError& e) { failures.push_back(e); });
-        QObject::connect(&hub, &TelemetryHub::subscriptionChanged, &hub, [this](int i, int rate, const QString& note) {
+        QObject::connect(&hub, &TelemetryHub::subscriptionChanged, &hub, [this](int i, int rate, const msg::Message& message) {
+            const QString note = QString::fromStdString(message.empty() ? std::string() : msg::debugString(message));
             changes.push_back({i, rate, note});
         });
-        QObject::connect(&hub, &TelemetryHub::problem, &hub, [this](const QString& m) { problems << m; });
+        QObject::connect(&hub, &TelemetryHub::problem, &hub, [this](const msg::Message& m) { problems << QString::fromStdString(msg::debugString(m)); });
         hub.addInstrument(index, name, &client);
     }
     ~SimRig() { client.setTransport(nullptr); }
@@ -126,7 +127,7 @@ struct FakeRig {
         hub.addInstrument(0, QStringLiteral("Analyzer"), &analyzer);
         hub.addInstrument(1, QStringLiteral("Stage"), &stage);
         QObject::connect(&hub, &TelemetryHub::dataArrived, &hub, [this](int i) { arrived.push_back(i); });
-        QObject::connect(&hub, &TelemetryHub::problem, &hub, [this](const QString& m) { problems << m; });
+        QObject::connect(&hub, &TelemetryHub::problem, &hub, [this](const msg::Message& m) { problems << QString::fromStdString(msg::debugString(m)); });
     }
     /// n samples of `channels` from sample index `first`, value = f(sample index, channel).
     static proto::TelemetryBatch batch(std::uint32_t first, std::uint64_t t0Us, std::uint32_t periodUs,

@@ -107,7 +107,7 @@ TEST(ClientOverLoopback, AnalyzerHomesZFirstThenMovesOnTargetWithinEncoderTolera
     const std::size_t mark = s.events.size();
     s.link.host().setTimeScale(5);
     const auto err = s.call([&](auto cb) { s.client.move({{x, 120.5}, {y, 80.25}, {z, 40.0}, {p, 500.0}}, false, 0, cb); });
-    ASSERT_FALSE(err) << err->message.toStdString();
+    ASSERT_FALSE(err) << msg::debugString(err->message);
     for (int i : {x, y, z, p})
         ASSERT_TRUE(s.waitEvent(K::MotionDone, i, mark)) << "no MotionDone on axis " << i;
     s.link.host().setTimeScale(1);
@@ -142,7 +142,7 @@ TEST(ClientOverLoopback, StageMovesOnTargetWithinTwoMicronsOfTheGrating)
         const std::size_t mark = s.events.size();
         s.link.host().setTimeScale(10);
         const auto err = s.call([&](auto cb) { s.client.move({{x, t.x}, {y, t.y}}, false, 20.0, cb); });
-        ASSERT_FALSE(err) << err->message.toStdString();
+        ASSERT_FALSE(err) << msg::debugString(err->message);
         ASSERT_TRUE(s.waitEvent(K::MotionDone, x, mark));
         ASSERT_TRUE(s.waitEvent(K::MotionDone, y, mark));
         s.link.host().setTimeScale(1);
@@ -169,8 +169,8 @@ TEST(ClientOverLoopback, AbsoluteMoveOnUnhomedAxisIsRefusedNamingTheAxis)
     EXPECT_EQ(err->kind, RequestError::Kind::Device);
     EXPECT_EQ(err->code, proto::ErrorCode::NotHomed);
     EXPECT_EQ(err->axis, y);
-    EXPECT_TRUE(err->message.contains(QStringLiteral("axis Y"))) << err->message.toStdString();
-    EXPECT_TRUE(err->message.contains(QStringLiteral("not homed"))) << err->message.toStdString();
+    EXPECT_TRUE(err->message.contains(QStringLiteral("axis Y"))) << msg::debugString(err->message);
+    EXPECT_TRUE(err->message.contains(QStringLiteral("not homed"))) << msg::debugString(err->message);
     // A status bar listening to requestFailed hears the same reason.
     ASSERT_FALSE(s.failures.empty());
     EXPECT_EQ(s.failures.back().code, proto::ErrorCode::NotHomed);
@@ -202,14 +202,14 @@ TEST(ClientOverLoopback, MoveBeyondSoftLimitIsRefusedWithReasonAndLimit)
     EXPECT_EQ(err->code, proto::ErrorCode::SoftLimit);
     EXPECT_EQ(err->axis, x);
     EXPECT_NEAR(err->value, 60.0, 1e-6);
-    EXPECT_TRUE(err->message.contains(QStringLiteral("upper soft limit"))) << err->message.toStdString();
-    EXPECT_TRUE(err->message.contains(QStringLiteral("60.000"))) << err->message.toStdString();
+    EXPECT_TRUE(err->message.contains(QStringLiteral("upper soft limit"))) << msg::debugString(err->message);
+    EXPECT_TRUE(err->message.contains(QStringLiteral("60.000"))) << msg::debugString(err->message);
 
     err = s.call([&](auto cb) { s.client.move({{x, 2.0}}, false, 0, cb); });
     ASSERT_TRUE(err);
     EXPECT_EQ(err->code, proto::ErrorCode::SoftLimit);
     EXPECT_NEAR(err->value, 5.0, 1e-6);
-    EXPECT_TRUE(err->message.contains(QStringLiteral("lower soft limit"))) << err->message.toStdString();
+    EXPECT_TRUE(err->message.contains(QStringLiteral("lower soft limit"))) << msg::debugString(err->message);
 
     // Relative moves are checked against the same limits.
     err = s.call([&](auto cb) { s.client.move({{x, 61.0}}, true, 0, cb); });
@@ -294,7 +294,7 @@ TEST(ClientOverLoopback, UnhomedRelativeMoveIntoTheLimitSwitchStopsWithLimitHit)
 
     s.link.host().setTimeScale(10);
     const auto err = s.call([&](auto cb) { s.client.move({{x, 250.0}}, true, 0, cb); });
-    ASSERT_FALSE(err) << err->message.toStdString();
+    ASSERT_FALSE(err) << msg::debugString(err->message);
     ASSERT_TRUE(s.waitEvent(K::LimitHit, x)) << "no LimitHit on X";
     s.link.host().setTimeScale(1);
     const auto& hit = s.events[std::size_t(s.findEvent(K::LimitHit, x))];
@@ -326,7 +326,7 @@ TEST(ClientOverLoopback, EStopDuringMoveHaltsAndRefusesMovesUntilReset)
     ASSERT_TRUE(waitFor([&] { return s.link.machine().commandedLogical(x) > start + 5.0; }, 5000));
     const std::size_t mark = s.events.size();
     const auto err = s.call([&](auto cb) { s.client.estop(cb); });
-    ASSERT_FALSE(err) << err->message.toStdString();
+    ASSERT_FALSE(err) << msg::debugString(err->message);
     ASSERT_TRUE(s.waitEvent(K::EStop, -1, mark));
     ASSERT_TRUE(waitFor([&] { return s.client.status().estop && !s.readout('X').moving; }, 3000));
 

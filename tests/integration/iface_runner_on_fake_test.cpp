@@ -55,7 +55,7 @@ TEST(IfaceRunnerOnFake, AScanRunsToTheEndOnABackendWithoutAProtocol)
     ASSERT_EQ(runner.totalTiles(), 4);
     ASSERT_TRUE(runner.start(&error)) << error.toStdString();
     ASSERT_TRUE(waitFor([&] { return runner.state() == ScanRunner::State::Finished; }, 10000))
-        << ScanRunner::stateName(runner.state()).toStdString();
+        << ScanRunner::stateTerm(runner.state());
 
     EXPECT_EQ(runner.takenTiles(), 4);
     EXPECT_EQ(fake.moves.size(), 4u);  // one move per tile, no overtravel in this plan

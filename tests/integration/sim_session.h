@@ -29,7 +29,7 @@ public:
         QObject::connect(&client, &dev::BenchPilotClient::eventReceived, &client,
                          [this](const dev::DeviceEvent& e) { events.push_back(e); });
         QObject::connect(&client, &dev::BenchPilotClient::linkError, &client,
-                         [this](const QString& m) { linkErrors << m; });
+                         [this](const msg::Message& m) { linkErrors << QString::fromStdString(msg::debugString(m)); });
         QObject::connect(&client, &dev::BenchPilotClient::requestFailed, &client,
                          [this](const dev::RequestError& e) { failures.push_back(e); });
         QObject::connect(&client, &dev::BenchPilotClient::statusChanged, &client, [this] { ++statusCount; });
@@ -112,7 +112,7 @@ public:
         link.host().setTimeScale(timeScale);
         const auto err = call([this](auto cb) { client.home(0, cb); });
         if (err) {
-            ADD_FAILURE() << "home refused: " << err->message.toStdString();
+            ADD_FAILURE() << "home refused: " << msg::debugString(err->message);
             link.host().setTimeScale(1);
             return false;
         }

@@ -42,7 +42,7 @@ struct StageTuning {
             return false;
         x = s.axis('X');
         if (const auto e = s.call([&](auto cb) { s.client.move({{x, 50.0}}, false, 0, cb); })) {
-            ADD_FAILURE() << "move refused: " << e->message.toStdString();
+            ADD_FAILURE() << "move refused: " << msg::debugString(e->message);
             return false;
         }
         if (!s.waitStill()) {
@@ -181,8 +181,8 @@ TEST(TuningFaults, BadGainsAreRefusedAndThePreviousOnesStay)
         const auto e = t.s.call([&](auto cb) { t.tuning.setGains(t.x, bad, false, cb); });
         ASSERT_TRUE(e);
         EXPECT_EQ(e->code, proto::kErrBadGains);
-        EXPECT_TRUE(e->message.contains(QStringLiteral("set gains refused"))) << e->message.toStdString();
-        EXPECT_TRUE(e->message.contains(QStringLiteral("the previous ones stay"))) << e->message.toStdString();
+        EXPECT_TRUE(e->message.contains(QStringLiteral("set gains refused"))) << msg::debugString(e->message);
+        EXPECT_TRUE(e->message.contains(QStringLiteral("the previous ones stay"))) << msg::debugString(e->message);
     }
     bool read = false;
     t.tuning.getGains(t.x, [&](const auto& e, const dev::AxisGains& g) {

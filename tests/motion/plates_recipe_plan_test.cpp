@@ -190,7 +190,7 @@ TEST(PlateRecipePlan, ATransferBiggerThanTheSyringeSplitsIntoRounds)
     EXPECT_DOUBLE_EQ(plan.total("reservoir", "A1")->aspiratedUl, 2400);
     // One well more than the syringe: refused, however it is split.
     r.steps[0].volumeUl = 1001;
-    EXPECT_NE(problemAt(planRecipe(r, context()), "steps[0].volume_ul").message.id.find("recipe.transfer_no_room"), std::string::npos);
+    EXPECT_EQ(problemAt(planRecipe(r, context()), "steps[0].volume_ul").message.id, "recipe.volume_over_capacity");
 }
 
 TEST(PlateRecipePlan, DispensingNeedsLiquidInTheSyringe)

@@ -1,5 +1,6 @@
 // What the scan plan's validator refuses, and how it says so: each problem names
 // the plan field (which the file reader and the CLI turn into a line or an option).
+#include "motion/message_print.h"
 #include "motion/plans/scan/scan_layout.h"
 #include "motion/plans/scan/scan_naming.h"
 
@@ -170,7 +171,7 @@ TEST(ScanNaming, PatternsFijiCouldNotReadAreRefused)
     EXPECT_TRUE(checkFilePattern(""));
     EXPECT_FALSE(checkFilePattern("tile_{row}_{col}.tif"));
     const auto m = checkFilePattern("tile_{x}.tif");
-    EXPECT_NE(m->find("unknown placeholder {x}"), std::string::npos) << *m;
+    EXPECT_EQ(msg::debugString(*m), "scan.naming.unknown_placeholder{placeholder=\"{x}\"}");
 }
 
 TEST(ScanPlan, NamesOfOrdersAndCornersRoundTrip)
@@ -188,11 +189,11 @@ TEST(ScanPlan, VanishingSpeedAndWildCurvesAreRefused)
     // estimate infinite.
     ScanPlan p;
     p.speedMmS = 1e-320;
-    EXPECT_NE(problemAt(validate(p), "motion.speed_mm_s").find("from 0.01 to 1000"), std::string::npos);
+    EXPECT_NE(problemAt(validate(p), "motion.speed_mm_s").find("min=0.01 mm/s, max=1000 mm/s"), std::string::npos);
     p.speedMmS = 10;
     p.compensation.enabled = true;
     p.compensation.yPolyUm = {0, 0, 0, 0, 0, 1e3};  // 1e3·y⁵ µm
-    EXPECT_NE(problemAt(validate(p), "compensation.y_error_poly_um").find("not one to compensate"), std::string::npos)
+    EXPECT_NE(problemAt(validate(p), "compensation.y_error_poly_um").find("scan.compensation.curve_too_large"), std::string::npos)
         << all(validate(p));
     p.compensation.enabled = false;
     EXPECT_TRUE(validate(p).empty()) << "a curve that is not used is not checked for size";

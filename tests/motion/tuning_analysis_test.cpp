@@ -181,7 +181,7 @@ TEST(TuningModel, UltimateGainSearchGivesUpAtKpMaxOnALoopThatNeverOscillates)
         ASSERT_LT(++trials, 40) << "the search loops";
     }
     EXPECT_FALSE(search.result());
-    EXPECT_NE(search.failure().find("no sustained oscillation up to Kp = 50"), std::string::npos) << search.failure();
+    EXPECT_EQ(msg::debugString(search.failure()), "tuning.ultimate.decays_up_to{kp=50}") << search.failure();
 }
 
 TEST(TuningModel, RelayReportsTheClassicEstimateBesideTheRefinedOne)
