@@ -7977,6 +7977,21 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
             <numerusform>%1 已完成：%Ln 个孔</numerusform>
         </translation>
     </message>
+    <message>
+        <source>aborted by the operator</source>
+        <comment>recipe.run.aborted</comment>
+        <translation>由操作员中止</translation>
+    </message>
+    <message>
+        <source>the operator chose to do the interrupted op again</source>
+        <comment>recipe.run.operator_redo</comment>
+        <translation>操作员选择重做被中断的操作</translation>
+    </message>
+    <message>
+        <source>the operator counted the interrupted op as done</source>
+        <comment>recipe.run.operator_skip</comment>
+        <translation>操作员将被中断的操作视为已完成</translation>
+    </message>
 </context>
 <context>
     <name>words::ScanWords</name>

@@ -113,7 +113,7 @@ TEST(ScanPlanFile, PlanRulesPointAtTheirField)
                              "}\n";
     const std::string e = errors(text);
     EXPECT_NE(e.find("plan.scan.json:4:49: region.corners_mm: the region has zero size"), std::string::npos) << e;
-    EXPECT_NE(e.find("plan.scan.json:6:20: overlap[1]: must be from 0 to 0.9, a share of the field up to 90 % (got 1.2 = 120 %)"), std::string::npos) << e;
+    EXPECT_NE(e.find("plan.scan.json:6:20: overlap[1]: must be from 0 to 0.9, a share of the field (got 1.2)"), std::string::npos) << e;
     EXPECT_NE(e.find("plan.scan.json:7:30: export.file_pattern: must not contain ';'"), std::string::npos) << e;
 }
 
@@ -157,7 +157,7 @@ TEST(ScanPlanFile, SavesAtomicallyAndLoadsBack)
     f.write("{\"schema\": \"benchpilot.scan-plan\", \"version\": 1, \"region\": {}}");
     f.close();
     EXPECT_FALSE(scanfile::loadPlan(path, &back, &problems));
-    EXPECT_TRUE(error.startsWith(QStringLiteral("p.scan.json:1:"))) << error.toStdString();
+    EXPECT_EQ(i18ntest::englishFormat(problems, "p.scan.json").rfind("p.scan.json:1:", 0), 0u) << i18ntest::englishFormat(problems, "p.scan.json");
 }
 
 TEST(ScanPlanFile, FingerprintFollowsTheTilesNotTheName)

@@ -4,6 +4,7 @@
 // the link cannot carry falls back to the capacity the device states, the union of
 // every consumer's wants is what is subscribed, again after a reconnect. With
 // hand-made batches: losses, the window, pause, recording to CSV.
+#include "device/english_words.h"
 #include "device/backends/benchpilot/benchpilot_client.h"
 #include "device/link/simulated_link.h"
 #include "device/telemetry/telemetry_hub.h"
@@ -356,8 +357,8 @@ TEST_F(TelemetryHubTest, RecordsTheDevicesSamplesToCsvAndReadsBack)
     const QString path = dir.filePath(QStringLiteral("x.csv"));
     const QVector<ChannelKey> columns{s.key(0, ChannelKind::Measured), s.key(0, ChannelKind::FollowingError),
                                       s.key(0, ChannelKind::Switches)};
-    QString error;
-    ASSERT_TRUE(s.hub.startRecording(path, columns, &error)) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(s.hub.startRecording(path, columns, &error)) << error;
     EXPECT_TRUE(s.hub.recording());
     EXPECT_EQ(s.hub.recordingPath(), path);
     // Recording alone collects its channels, at the default rate.
@@ -456,8 +457,8 @@ TEST_F(TelemetryHubTest, PauseFreezesTheViewWhileCollectionAndRecordingGoOn)
 {
     FakeRig f;
     QTemporaryDir dir;
-    QString error;
-    ASSERT_TRUE(f.hub.startRecording(dir.filePath(QStringLiteral("p.csv")), {f.stageX}, &error)) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(f.hub.startRecording(dir.filePath(QStringLiteral("p.csv")), {f.stageX}, &error)) << error;
     f.hub.setWindowS(1.0);
     f.hub.setWanted(QStringLiteral("plot"), {f.stageX}, 1000);
     f.feedStage(0, 2.0);
@@ -528,8 +529,8 @@ TEST_F(TelemetryHubTest, RecordingSpansInstrumentsWithOneRowPerDeviceSample)
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("both.csv"));
     const ChannelKey analyzerZ{0, ref(2, ChannelKind::Commanded)};
-    QString error;
-    ASSERT_TRUE(f.hub.startRecording(path, {f.stageX, analyzerZ}, &error)) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(f.hub.startRecording(path, {f.stageX, analyzerZ}, &error)) << error;
     const std::vector<ChannelRef> z{ref(2, ChannelKind::Commanded)};
     emit f.analyzer.telemetryReceived(FakeRig::batch(0, 5'000'000, 10'000, z, 2, [](std::uint32_t i, std::size_t) {
         return std::int32_t(-7 - i);
@@ -548,16 +549,16 @@ TEST_F(TelemetryHubTest, RecordingSpansInstrumentsWithOneRowPerDeviceSample)
 TEST_F(TelemetryHubTest, RecordingRefusesWhatItCannotDoWithAReason)
 {
     FakeRig f;
-    QString error;
+    msg::Message error;
     EXPECT_FALSE(f.hub.startRecording(QStringLiteral("/nonexistent-dir/x.csv"), {f.stageX}, &error));
-    EXPECT_TRUE(error.contains(QStringLiteral("/nonexistent-dir/x.csv"))) << error.toStdString();
+    EXPECT_TRUE(QString::fromStdString(i18ntest::english(error)).contains(QStringLiteral("/nonexistent-dir/x.csv"))) << error;
     EXPECT_FALSE(f.hub.recording());
     EXPECT_FALSE(f.hub.startRecording(QStringLiteral("/tmp/never.csv"), {}, &error));
-    EXPECT_TRUE(error.contains(QStringLiteral("nothing to record"))) << error.toStdString();
+    EXPECT_TRUE(QString::fromStdString(i18ntest::english(error)).contains(QStringLiteral("nothing to record"))) << error;
     QTemporaryDir dir;
     ASSERT_TRUE(f.hub.startRecording(dir.filePath(QStringLiteral("a.csv")), {f.stageX}, &error));
     EXPECT_FALSE(f.hub.startRecording(dir.filePath(QStringLiteral("b.csv")), {f.stageX}, &error));
-    EXPECT_TRUE(error.contains(QStringLiteral("already recording"))) << error.toStdString();
+    EXPECT_TRUE(QString::fromStdString(i18ntest::english(error)).contains(QStringLiteral("already recording"))) << error;
 }
 
 } // namespace

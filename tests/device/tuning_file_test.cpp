@@ -60,7 +60,7 @@ TEST(TuningFile, WritesAndReadsBackTheSameDocument)
     EXPECT_NE(text.find("\"schema\": \"benchpilot.tuning\""), std::string::npos);
     EXPECT_NE(text.find("\"zn-pid\""), std::string::npos);  // the rules table, for readers
     const auto back = files::tuningFromJson(text);
-    ASSERT_TRUE(back.result) << back.problems;
+    ASSERT_TRUE(back.result) << i18ntest::englishFormat(back.problems, "x.tuning.json");
     EXPECT_EQ(back.result->target, "Stage X");
     EXPECT_DOUBLE_EQ(back.result->ku, 4.27);
     ASSERT_TRUE(back.result->kuDescribing);
@@ -81,7 +81,7 @@ TEST(TuningFile, WritesAndReadsBackTheSameDocument)
     ug.envelope = {3, 3, 600};
     ug.trials = {{0.1, 0, 0, "no oscillation"}, {8.2, 0.73, 1.29, "decays"}, {9.1, 0.99, 1.3, "sustained"}};
     const auto ugBack = files::tuningFromJson(files::tuningToJson(ug));
-    ASSERT_TRUE(ugBack.result) << ugBack.problems;
+    ASSERT_TRUE(ugBack.result) << i18ntest::englishFormat(ugBack.problems, "m.tuning.json");
     EXPECT_EQ(ugBack.result->trials.size(), 3u);
     EXPECT_EQ(files::tuningToJson(*ugBack.result), files::tuningToJson(ug));
 }

@@ -23,6 +23,8 @@ const QSet<QString> kNotIds = {
     QStringLiteral("capability.no_"),               QStringLiteral("capability.because."),
     QStringLiteral("tuning.rule."),                 QStringLiteral("recipe.step."),
     QStringLiteral("pattern.value_above"),  // an example in message.h's comment
+    QStringLiteral("direction.circle"),     // a field path of the accuracy files
+    QStringLiteral("scan.csv"),             // a file name
 };
 
 QStringList idLiterals()

@@ -54,7 +54,7 @@ TEST(PlateCli, ValidateListsEveryErrorAndExitsOne)
     ASSERT_TRUE(r.finished);
     EXPECT_EQ(r.exitCode, 1) << r.describe();
     const QStringList expected = {
-        QStringLiteral("bad.recipe.json:7:54: steps[0].volume_ul: volume over capacity: 1200 µL is more than the syringe holds (1000 µL)"),
+        QStringLiteral("bad.recipe.json:7:54: steps[0].volume_ul: volume over capacity: 1200.0 µL is more than the syringe holds (1000.0 µL)"),
         QStringLiteral("bad.recipe.json:8:14: steps[1].type: unknown step type \"pipette\""),
         QStringLiteral("bad.recipe.json:9:35: steps[2].plate: unknown plate \"reagents\"; the recipe's plates are \"samples\""),
         QStringLiteral("bad.recipe.json:10:35: steps[3].wells: unknown well \"I13\" on a 96-well plate"),
