@@ -81,7 +81,7 @@ TEST(PatternsFile, AllProblemsAtOnceWithLineColumnAndField)
                              "}\n";
     EXPECT_EQ(problemsOf(text),
               "p.pattern.json:5:16: feed_mm_s: must be a number, not a string\n"
-              "p.pattern.json:6:16: center_mm: must be two numbers [x, y]\n"
+              "p.pattern.json:6:16: center_mm: must be an array of 2 numbers\n"
               "p.pattern.json:1:1: radius_mm: is missing\n"
               "p.pattern.json:8:16: direction: \"left\" is not one of \"ccw\", \"cw\"\n"
               "p.pattern.json:7:3: radius: unknown field; did you mean \"radius_mm\"?\n");
@@ -91,7 +91,7 @@ TEST(PatternsFile, ThePatternsOwnRulesArePlacedAtTheirField)
 {
     const std::string text = "{\"schema\": \"benchpilot.pattern\", \"version\": 1, \"shape\": \"spiral\", \"feed_mm_s\": 4,\n"
                              " \"center_mm\": [50, 50], \"start_radius_mm\": 1, \"pitch_mm\": 0, \"turns\": 2.2}\n";
-    EXPECT_EQ(problemsOf(text), "p.pattern.json:2:59: pitch_mm: must be above 0 (got 0)\n"
+    EXPECT_EQ(problemsOf(text), "p.pattern.json:2:59: pitch_mm: must be above 0.000 mm (got 0.000 mm)\n"
                                 "p.pattern.json:2:71: turns: must be a whole or half number of turns (got 2.2)\n");
 }
 

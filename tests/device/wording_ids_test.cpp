@@ -83,9 +83,10 @@ TEST(WordingIds, APatternsProblemsAreSentencesWithTheirNumbers)
     QStringList lines;
     for (const auto& q : motion::plans::validate(p))
         lines << QString::fromStdString(q.field) + QStringLiteral(": ") + words::englishText(q.message);
-    EXPECT_EQ(lines, (QStringList{QStringLiteral("feed_mm_s: must be from 0.00 mm/s to 1000.00 mm/s (got 0.00 mm/s)"),
+    const QStringList expected{QStringLiteral("feed_mm_s: must be from 0.001 mm/s to 1000.00 mm/s (got 0.00 mm/s)"),
                                   QStringLiteral("pitch_mm: must be above 0.000 mm (got -1.000 mm)"),
-                                  QStringLiteral("turns: must be a whole or half number of turns (got 2.3)")}));
+                                  QStringLiteral("turns: must be a whole or half number of turns (got 2.3)")};
+    EXPECT_EQ(lines.join(QLatin1Char('\n')).toStdString(), expected.join(QLatin1Char('\n')).toStdString());
 }
 
 TEST(WordingIds, EveryProblemOfABadRecipeAndScanPlanIsWorded)
