@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+#include <string>
 
 namespace motion {
 
@@ -10,11 +10,11 @@ namespace {
 
 bool positive(double x) { return std::isfinite(x) && x > 0.0; }
 
-std::string fieldMessage(const char* field, double value, const char* requirement, const char* kind)
+/// "{field} = {value} must be finite and > 0 for {kind}": the field is the request's
+/// member name, which the CLI maps back to its option.
+msg::Message fieldMessage(const char* field, double value, const char* id, const char* kind)
 {
-    std::ostringstream msg;
-    msg << field << " = " << value << ' ' << requirement << " for " << kind;
-    return msg.str();
+    return msg::make(id, {msg::verbatim("field", field), msg::real("value", value), msg::verbatim("kind", kind)});
 }
 
 }  // namespace
@@ -59,27 +59,25 @@ PlanResult<AnyProfile> planProfile(double distanceMm, const ProfileRequest& r)
     using Result = PlanResult<AnyProfile>;
     const char* kind = profileKindName(r.kind);
     if (!std::isfinite(distanceMm)) {
-        std::ostringstream msg;
-        msg << "distanceMm = " << distanceMm << " must be finite";
-        return Result::fail(msg.str());
+        return Result::fail(msg::make("profile.not_finite", {msg::verbatim("field", "distanceMm"), msg::real("value", distanceMm)}));
     }
     if (!positive(r.vMaxMmS))
-        return Result::fail(fieldMessage("vMaxMmS", r.vMaxMmS, "must be finite and > 0", kind));
+        return Result::fail(fieldMessage("vMaxMmS", r.vMaxMmS, "profile.not_positive", kind));
     switch (r.kind) {
     case ProfileKind::SeedSCurve: {
         if (!positive(r.accelTimeS))
-            return Result::fail(fieldMessage("accelTimeS", r.accelTimeS, "must be finite and > 0", kind));
+            return Result::fail(fieldMessage("accelTimeS", r.accelTimeS, "profile.not_positive", kind));
         return Result::ok(AnyProfile(*SeedSCurve::plan(distanceMm, r.vMaxMmS, r.accelTimeS)));
     }
     case ProfileKind::Trapezoid: {
         if (!positive(r.aMaxMmS2))
-            return Result::fail(fieldMessage("aMaxMmS2", r.aMaxMmS2, "must be finite and > 0", kind));
+            return Result::fail(fieldMessage("aMaxMmS2", r.aMaxMmS2, "profile.not_positive", kind));
         if (!std::isfinite(r.startSpeedMmS) || r.startSpeedMmS < 0.0 || r.startSpeedMmS > r.vMaxMmS)
-            return Result::fail(fieldMessage("startSpeedMmS", r.startSpeedMmS, "must be in 0 … vMaxMmS", kind));
+            return Result::fail(fieldMessage("startSpeedMmS", r.startSpeedMmS, "profile.start_speed_above_max", kind));
         if (!std::isfinite(r.plateauMm) || r.plateauMm < 0.0)
-            return Result::fail(fieldMessage("plateauMm", r.plateauMm, "must be finite and >= 0", kind));
+            return Result::fail(fieldMessage("plateauMm", r.plateauMm, "profile.negative", kind));
         if (r.plateauMm > 0.0 && r.startSpeedMmS == 0.0)
-            return Result::fail(fieldMessage("startSpeedMmS", r.startSpeedMmS, "must be > 0 when plateauMm > 0", kind));
+            return Result::fail(fieldMessage("startSpeedMmS", r.startSpeedMmS, "profile.start_speed_for_plateau", kind));
         TrapezoidParams p;
         p.startSpeedMmS = r.startSpeedMmS;
         p.topSpeedMmS = r.vMaxMmS;
@@ -90,35 +88,31 @@ PlanResult<AnyProfile> planProfile(double distanceMm, const ProfileRequest& r)
     }
     case ProfileKind::Exponential: {
         if (!positive(r.accelTimeS))
-            return Result::fail(fieldMessage("accelTimeS", r.accelTimeS, "must be finite and > 0", kind));
+            return Result::fail(fieldMessage("accelTimeS", r.accelTimeS, "profile.not_positive", kind));
         return Result::ok(AnyProfile(*ExponentialProfile::plan(distanceMm, r.vMaxMmS, r.accelTimeS / 3.0, r.accelTimeS)));
     }
     case ProfileKind::JerkLimited: {
         if (!positive(r.aMaxMmS2))
-            return Result::fail(fieldMessage("aMaxMmS2", r.aMaxMmS2, "must be finite and > 0", kind));
+            return Result::fail(fieldMessage("aMaxMmS2", r.aMaxMmS2, "profile.not_positive", kind));
         if (!positive(r.jMaxMmS3))
-            return Result::fail(fieldMessage("jMaxMmS3", r.jMaxMmS3, "must be finite and > 0", kind));
+            return Result::fail(fieldMessage("jMaxMmS3", r.jMaxMmS3, "profile.not_positive", kind));
         return Result::ok(AnyProfile(*JerkLimitedProfile::plan(distanceMm, {r.vMaxMmS, r.aMaxMmS2, r.jMaxMmS3})));
     }
     }
-    return Result::fail("unknown profile kind");
+    return Result::fail(msg::make("profile.unknown_kind"));
 }
 
 PlanResult<LinearMove<AnyProfile>> planSynchronized(const double* distancesMm, int axisCount, const ProfileRequest& r)
 {
     using Result = PlanResult<LinearMove<AnyProfile>>;
     if (axisCount < 1 || axisCount > kMaxAxes) {
-        std::ostringstream msg;
-        msg << "axisCount = " << axisCount << " must be in 1.." << kMaxAxes;
-        return Result::fail(msg.str());
+        return Result::fail(msg::make("profile.axis_count", {msg::integer("count", axisCount), msg::integer("max", kMaxAxes)}));
     }
     double sumSq = 0.0, largest = 0.0;
     for (int i = 0; i < axisCount; ++i) {
-        if (!std::isfinite(distancesMm[i])) {
-            std::ostringstream msg;
-            msg << "axis " << i << ": distanceMm = " << distancesMm[i] << " must be finite";
-            return Result::fail(msg.str());
-        }
+        if (!std::isfinite(distancesMm[i]))
+            return Result::fail(msg::make("profile.axis_not_finite", {msg::verbatim("field", "distanceMm"), msg::real("value", distancesMm[i]),
+                                                                      msg::integer("axis", i, msg::Unit::None)}));
         sumSq += distancesMm[i] * distancesMm[i];
         largest = std::max(largest, std::fabs(distancesMm[i]));
     }

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 namespace motion {
 
@@ -18,15 +17,11 @@ struct RawBlock {  // a block before its shape is chosen; speeds signed
     double durationS;
 };
 
-std::string where(int joint, int index)
-{
-    std::ostringstream msg;
-    msg << "joint " << joint << " block " << index << ": ";
-    return msg.str();
-}
+msg::Arg jointArg(int joint) { return msg::integer("joint", joint, msg::Unit::None); }
+msg::Arg blockArg(int index) { return msg::integer("block", index, msg::Unit::None); }
 
 /// Chooses the shape of a block that does not change direction.
-bool shapeBlock(const RawBlock& raw, BlockPlan& plan, std::string& error, int joint)
+bool shapeBlock(const RawBlock& raw, BlockPlan& plan, msg::Message& error, int joint)
 {
     const double w1 = std::fabs(raw.v1), w2 = std::fabs(raw.v2), t0 = raw.durationS;
     const double D = std::fabs(raw.steps);
@@ -41,11 +36,10 @@ bool shapeBlock(const RawBlock& raw, BlockPlan& plan, std::string& error, int jo
     const double lo = std::min(w1, w2) * t0, hi = std::max(w1, w2) * t0;
     const bool wrongWay = raw.steps != 0.0 && (raw.steps < 0.0) != (plan.direction < 0);
     if (wrongWay || D < lo - kReachToleranceSteps || D > hi + kReachToleranceSteps) {
-        std::ostringstream msg;
-        msg << where(joint, raw.sourceIndex) << "S = " << raw.steps << " microsteps is not reachable from V1 = " << raw.v1
-            << " to V2 = " << raw.v2 << " microsteps/s in t0 = " << t0 * 1000.0 << " ms (reachable "
-            << (plan.direction < 0 ? -hi : lo) << " … " << (plan.direction < 0 ? -lo : hi) << ")";
-        error = msg.str();
+        error = msg::make("profile.block_unreachable",
+                          {jointArg(joint), blockArg(raw.sourceIndex), msg::real("steps", raw.steps), msg::real("v1", raw.v1),
+                           msg::real("v2", raw.v2), msg::real("t0", t0 * 1000.0, msg::Unit::Ms), msg::real("from", plan.direction < 0 ? -hi : lo),
+                           msg::real("to", plan.direction < 0 ? -lo : hi)});
         return false;
     }
     const double Dc = std::clamp(D, lo, hi);
@@ -96,13 +90,12 @@ PlanResult<JointPlan> planJointBlocks(const std::vector<Block>& blocks, double m
         const Block& b = blocks[i];
         const int index = static_cast<int>(i);
         if (b.durationMs == 0) {
-            return Result::fail(where(joint, index) + "t0 = 0 ms must be > 0");
+            return Result::fail(msg::make("profile.block_zero_duration", {jointArg(joint), blockArg(index)}));
         }
         if (std::fabs(static_cast<double>(b.endSpeed)) > maxSpeedStepsS) {
-            std::ostringstream msg;
-            msg << where(joint, index) << "|V2| = " << std::abs(static_cast<int>(b.endSpeed))
-                << " microsteps/s exceeds vMax = " << maxSpeedStepsS;
-            return Result::fail(msg.str());
+            return Result::fail(msg::make("profile.block_too_fast", {jointArg(joint), blockArg(index),
+                                                                     msg::real("v2", std::abs(static_cast<double>(b.endSpeed))),
+                                                                     msg::real("max", maxSpeedStepsS)}));
         }
         const double v2 = b.endSpeed, t0 = b.durationMs / 1000.0;
         std::vector<RawBlock> parts;
@@ -118,7 +111,7 @@ PlanResult<JointPlan> planJointBlocks(const std::vector<Block>& blocks, double m
         }
         for (const RawBlock& raw : parts) {
             BlockPlan plan;
-            std::string error;
+            msg::Message error;
             if (!shapeBlock(raw, plan, error, joint))
                 return Result::fail(error);
             out.blocks.push_back(plan);

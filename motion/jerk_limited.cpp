@@ -1,7 +1,7 @@
 #include "motion/jerk_limited.h"
 
 #include <cmath>
-#include <sstream>
+#include <vector>
 
 namespace motion {
 
@@ -40,7 +40,7 @@ HalfState accelHalf(double tau, double J, double Tj, double Ta)
 
 }  // namespace
 
-std::optional<std::string> validateJerkLimits(const JerkLimits& limits, int axis)
+std::optional<msg::Message> validateJerkLimits(const JerkLimits& limits, int axis)
 {
     const struct {
         const char* name;
@@ -48,11 +48,10 @@ std::optional<std::string> validateJerkLimits(const JerkLimits& limits, int axis
     } fields[] = {{"vMaxMmS", limits.vMaxMmS}, {"aMaxMmS2", limits.aMaxMmS2}, {"jMaxMmS3", limits.jMaxMmS3}};
     for (const auto& f : fields) {
         if (!positiveFinite(f.value)) {
-            std::ostringstream msg;
-            if (axis >= 0)
-                msg << "axis " << axis << ": ";
-            msg << f.name << " = " << f.value << " must be finite and > 0";
-            return msg.str();
+            if (axis < 0)
+                return msg::make("profile.not_positive_plain", {msg::verbatim("field", f.name), msg::real("value", f.value)});
+            return msg::make("profile.axis_not_positive", {msg::verbatim("field", f.name), msg::real("value", f.value),
+                                                           msg::integer("axis", axis, msg::Unit::None)});
         }
     }
     return std::nullopt;

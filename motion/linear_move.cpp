@@ -1,32 +1,27 @@
 #include "motion/linear_move.h"
 
 #include <limits>
-#include <sstream>
 
 namespace motion {
 
 namespace {
 
-std::string axisMessage(int axis, const char* field, double value, const char* requirement)
+msg::Message axisMessage(int axis, const char* field, double value, const char* id)
 {
-    std::ostringstream msg;
-    msg << "axis " << axis << ": " << field << " = " << value << ' ' << requirement;
-    return msg.str();
+    return msg::make(id, {msg::verbatim("field", field), msg::real("value", value), msg::integer("axis", axis, msg::Unit::None)});
 }
 
 /// Length of the line, or a message when the input is unusable.
-bool lineLength(const double* distancesMm, int axisCount, double& lengthMm, std::string& error)
+bool lineLength(const double* distancesMm, int axisCount, double& lengthMm, msg::Message& error)
 {
     if (axisCount < 1 || axisCount > kMaxAxes) {
-        std::ostringstream msg;
-        msg << "axisCount = " << axisCount << " must be in 1.." << kMaxAxes;
-        error = msg.str();
+        error = msg::make("profile.axis_count", {msg::integer("count", axisCount), msg::integer("max", kMaxAxes)});
         return false;
     }
     double sumSq = 0.0;
     for (int i = 0; i < axisCount; ++i) {
         if (!std::isfinite(distancesMm[i])) {
-            error = axisMessage(i, "distanceMm", distancesMm[i], "must be finite");
+            error = axisMessage(i, "distanceMm", distancesMm[i], "profile.axis_not_finite");
             return false;
         }
         sumSq += distancesMm[i] * distancesMm[i];
@@ -42,20 +37,20 @@ PlanResult<LinearMove<JerkLimitedProfile>> planLinearJerkLimited(const double* d
 {
     using Result = PlanResult<LinearMove<JerkLimitedProfile>>;
     double lengthMm = 0.0;
-    std::string error;
+    msg::Message error;
     if (!lineLength(distancesMm, axisCount, lengthMm, error))
         return Result::fail(error);
     constexpr double inf = std::numeric_limits<double>::infinity();
     JerkLimits path{inf, inf, inf};
     for (int i = 0; i < axisCount; ++i) {
         const JerkLimits& lim = limitsPerAxis[i];
-        // Validated inline (not via validateJerkLimits) so the success path builds no string.
+        // Validated inline (not via validateJerkLimits) so the success path builds no message.
         if (!(std::isfinite(lim.vMaxMmS) && lim.vMaxMmS > 0.0))
-            return Result::fail(axisMessage(i, "vMaxMmS", lim.vMaxMmS, "must be finite and > 0"));
+            return Result::fail(axisMessage(i, "vMaxMmS", lim.vMaxMmS, "profile.axis_not_positive"));
         if (!(std::isfinite(lim.aMaxMmS2) && lim.aMaxMmS2 > 0.0))
-            return Result::fail(axisMessage(i, "aMaxMmS2", lim.aMaxMmS2, "must be finite and > 0"));
+            return Result::fail(axisMessage(i, "aMaxMmS2", lim.aMaxMmS2, "profile.axis_not_positive"));
         if (!(std::isfinite(lim.jMaxMmS3) && lim.jMaxMmS3 > 0.0))
-            return Result::fail(axisMessage(i, "jMaxMmS3", lim.jMaxMmS3, "must be finite and > 0"));
+            return Result::fail(axisMessage(i, "jMaxMmS3", lim.jMaxMmS3, "profile.axis_not_positive"));
         const double share = std::fabs(distancesMm[i]);
         if (share == 0.0)
             continue;  // an axis that does not move does not limit the path
@@ -68,7 +63,7 @@ PlanResult<LinearMove<JerkLimitedProfile>> planLinearJerkLimited(const double* d
         path = limitsPerAxis[0];  // zero-length move: any valid limits give the empty profile
     const auto profile = JerkLimitedProfile::plan(lengthMm, path);
     if (!profile)
-        return Result::fail("path limits are not finite; check the per-axis limits");
+        return Result::fail(msg::make("profile.path_limits_not_finite"));
     return Result::ok(LinearMove<JerkLimitedProfile>(*profile, distancesMm, axisCount));
 }
 
@@ -77,19 +72,16 @@ PlanResult<LinearMove<SeedSCurve>> planLinearSeedSCurve(const double* distancesM
 {
     using Result = PlanResult<LinearMove<SeedSCurve>>;
     double lengthMm = 0.0;
-    std::string error;
+    msg::Message error;
     if (!lineLength(distancesMm, axisCount, lengthMm, error))
         return Result::fail(error);
-    if (!(std::isfinite(accelTimeS) && accelTimeS > 0.0)) {
-        std::ostringstream msg;
-        msg << "accelTimeS = " << accelTimeS << " must be finite and > 0";
-        return Result::fail(msg.str());
-    }
+    if (!(std::isfinite(accelTimeS) && accelTimeS > 0.0))
+        return Result::fail(msg::make("profile.not_positive_plain", {msg::verbatim("field", "accelTimeS"), msg::real("value", accelTimeS)}));
     double pathVMaxMmS = std::numeric_limits<double>::infinity();
     for (int i = 0; i < axisCount; ++i) {
         const double v = vMaxMmSPerAxis[i];
         if (!(std::isfinite(v) && v > 0.0))
-            return Result::fail(axisMessage(i, "vMaxMmS", v, "must be finite and > 0"));
+            return Result::fail(axisMessage(i, "vMaxMmS", v, "profile.axis_not_positive"));
         const double share = std::fabs(distancesMm[i]);
         if (share > 0.0)
             pathVMaxMmS = std::fmin(pathVMaxMmS, v * lengthMm / share);
@@ -98,7 +90,7 @@ PlanResult<LinearMove<SeedSCurve>> planLinearSeedSCurve(const double* distancesM
         pathVMaxMmS = vMaxMmSPerAxis[0];
     const auto profile = SeedSCurve::plan(lengthMm, pathVMaxMmS, accelTimeS);
     if (!profile)
-        return Result::fail("path speed is not finite; check the per-axis vMaxMmS");
+        return Result::fail(msg::make("profile.path_speed_not_finite"));
     return Result::ok(LinearMove<SeedSCurve>(*profile, distancesMm, axisCount));
 }
 

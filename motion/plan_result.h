@@ -1,7 +1,9 @@
 #pragma once
 // Planning outcome in the style of ruckig: a value, or a message that names the field, the axis
-// and the value at fault ("axis 1: aMaxMmS2 = -3 must be finite and > 0"). The message string is
-// only filled on failure, so a successful plan does not touch the heap.
+// and the value at fault (profile.not_positive {field: "aMaxMmS2", value: -3, axis: 1}). The
+// message is only filled on failure, so a successful plan does not touch the heap.
+
+#include "motion/message.h"
 
 #include <optional>
 #include <string>
@@ -12,10 +14,10 @@ namespace motion {
 template <class T>
 struct PlanResult {
     std::optional<T> value;
-    std::string error;  ///< empty on success
+    msg::Message error;  ///< empty on success (profile.*, tuning.plant.*: docs/wording.md)
 
     static PlanResult ok(T v) { return PlanResult{std::optional<T>(std::move(v)), {}}; }
-    static PlanResult fail(std::string message) { return PlanResult{std::nullopt, std::move(message)}; }
+    static PlanResult fail(msg::Message message) { return PlanResult{std::nullopt, std::move(message)}; }
     explicit operator bool() const { return value.has_value(); }
     const T& operator*() const { return *value; }
     const T* operator->() const { return &*value; }

@@ -3,6 +3,8 @@
 #include "device/link/serial_transport.h"
 #include "widgets/status_lamp.h"
 
+#include "widgets/wording/wording.h"
+
 #include <QComboBox>
 #include <QEvent>
 #include <QFileInfo>
@@ -130,7 +132,7 @@ void ConnectionBar::updateTexts()
                                    "output, status rate). Default wiring: each axis on the GRBL axis of its letter, the "
                                    "analyzer's pump on A at 1 µL per mm, no trigger")
                               : tr("Machine profile %1").arg(profile));
-    m_identity->setText(m_activity.isEmpty() ? QStringLiteral("%1 — %2").arg(dev::linkStateName(m_state), m_identityText) : m_activity);
+    m_identity->setText(m_activity.isEmpty() ? QStringLiteral("%1 — %2").arg(words::term(dev::linkStateTerm(m_state)), m_identityText) : m_activity);
     m_identity->setToolTip(m_identity->text());
 }
 
@@ -225,7 +227,7 @@ void ConnectionBar::showState(dev::LinkState state, const QString& identity)
     case dev::LinkState::Ready: m_lamp->setTone(T::Ok); break;
     case dev::LinkState::Lost: m_lamp->setTone(T::Alarm); break;
     }
-    m_lamp->setToolTip(dev::linkStateName(state));
+    m_lamp->setToolTip(words::term(dev::linkStateTerm(state)));
     const bool idle = state == dev::LinkState::Disconnected || state == dev::LinkState::Lost;
     m_source->setEnabled(idle);
     m_baud->setEnabled(idle);

@@ -1,53 +1,22 @@
 #include "widgets/event_log.h"
 
-#include "device/protocol/messages_tuning.h"
+#include "device/client/instrument.h"
+#include "widgets/wording/wording.h"
 
+#include <QEvent>
 #include <QHeaderView>
-#include <cmath>
 #include <QTableWidget>
-#include <QTime>
 #include <QVBoxLayout>
 
+#include <cmath>
+
 namespace ui {
-namespace {
-QString kindText(proto::EventKind k)
-{
-    switch (k) {
-    case proto::EventKind::MotionDone: return EventLog::tr("motion done");
-    case proto::EventKind::HomeDone: return EventLog::tr("home done");
-    case proto::EventKind::LimitHit: return EventLog::tr("limit hit");
-    case proto::EventKind::Fault: return EventLog::tr("fault");
-    case proto::EventKind::EStop: return EventLog::tr("E-stop");
-    case proto::EventKind::JogExpired: return EventLog::tr("jog expired");
-    case proto::EventKind::Stopped: return EventLog::tr("stopped");
-    case proto::EventKind::LostSteps: return EventLog::tr("lost steps");
-    case proto::EventKind::Reset: return EventLog::tr("reset");
-    case proto::EventKind::PathStarted: return EventLog::tr("path started");
-    case proto::EventKind::PathSegmentDone: return EventLog::tr("path segment done");
-    case proto::EventKind::PathUnderrun: return EventLog::tr("path underrun");
-    case proto::EventKind::PathDone: return EventLog::tr("path done");
-    case proto::EventKind::PathHeld: return EventLog::tr("path held");
-    case proto::EventKind::PathAborted: return EventLog::tr("path aborted");
-    }
-    if (k == proto::kEvTestEnded)
-        return EventLog::tr("test ended");
-    if (k == proto::kEvTestTripped)
-        return EventLog::tr("test tripped");
-    if (k == proto::kEvTestAborted)
-        return EventLog::tr("test aborted");
-    if (k == proto::kEvGainsChanged)
-        return EventLog::tr("gains changed");
-    // A kind this build does not know (a newer device): by number, so it can be looked up.
-    return EventLog::tr("event %1").arg(static_cast<int>(k));
-}
-} // namespace
 
 EventLog::EventLog(QWidget* parent) : QWidget(parent), m_table(new QTableWidget(0, 5, this))
 {
     auto* l = new QVBoxLayout(this);
     l->setContentsMargins(0, 0, 0, 0);
     l->addWidget(m_table);
-    m_table->setHorizontalHeaderLabels({tr("Time"), tr("Instrument"), tr("Axis"), tr("Event"), tr("Details")});
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->verticalHeader()->setVisible(false);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -56,6 +25,21 @@ EventLog::EventLog(QWidget* parent) : QWidget(parent), m_table(new QTableWidget(
     m_table->setColumnWidth(1, 80);
     m_table->setColumnWidth(2, 40);
     m_table->setColumnWidth(3, 110);
+    retranslateUi();
+}
+
+void EventLog::changeEvent(QEvent* e)
+{
+    if (e->type() == QEvent::LanguageChange)
+        retranslateUi();
+    QWidget::changeEvent(e);
+}
+
+void EventLog::retranslateUi()
+{
+    m_table->setHorizontalHeaderLabels({tr("Time"), tr("Instrument"), tr("Axis"), tr("Event"), tr("Details")});
+    for (int row = 0; row < static_cast<int>(m_entries.size()); ++row)
+        show(row, m_entries[static_cast<std::size_t>(row)]);
 }
 
 int EventLog::rowCount() const { return m_table->rowCount(); }
@@ -68,60 +52,134 @@ QString EventLog::rowText(int row) const
     return cells.join(QStringLiteral(" | "));
 }
 
-void EventLog::append(const QStringList& cells, const QColor& color)
+QStringList EventLog::cellsOf(const Entry& e) const
 {
-    if (m_table->rowCount() >= kMaxRows)
+    QString instrument = e.instrumentText;
+    if (e.instrument)
+        instrument = *e.instrument == proto::DeviceKind::Stage ? tr("Stage") : tr("Analyzer");
+    QString kind = e.kindText, details = e.noteText;
+    if (e.event) {
+        const std::string term = proto::eventKindTerm(*e.event);
+        // A kind this build does not know (a newer device): by number, so it can be looked up.
+        kind = term == "device.event.unknown" ? tr("event %1").arg(static_cast<int>(*e.event)) : words::term(term);
+        details = e.deviceText;
+        if (e.position) {
+            const QString at = e.segment ? tr("segment %1").arg(static_cast<qint64>(*e.position))
+                                         : tr("at %1 %2").arg(QLocale().toString(*e.position, 'f', 3), e.unit);
+            details = e.deviceText.isEmpty() ? at : QStringLiteral("%1 (%2)").arg(e.deviceText, at);
+        }
+    } else {
+        if (!e.kindTerm.empty())
+            kind = words::term(e.kindTerm);
+        if (!e.note.empty())
+            details = words::text(e.note);
+    }
+    return {QLocale().toString(e.time, QStringLiteral("HH:mm:ss.zzz")), instrument, e.axis, kind, details};
+}
+
+void EventLog::show(int row, const Entry& e)
+{
+    const QStringList cells = cellsOf(e);
+    for (int c = 0; c < cells.size(); ++c) {
+        QTableWidgetItem* item = m_table->item(row, c);
+        if (!item) {
+            item = new QTableWidgetItem;
+            if (e.color.isValid())
+                item->setForeground(e.color);
+            m_table->setItem(row, c, item);
+        }
+        item->setText(cells[c]);
+    }
+}
+
+void EventLog::append(Entry e)
+{
+    if (m_table->rowCount() >= kMaxRows) {
         m_table->removeRow(0);
+        m_entries.pop_front();
+    }
     const int row = m_table->rowCount();
     m_table->insertRow(row);
-    for (int c = 0; c < cells.size(); ++c) {
-        auto* item = new QTableWidgetItem(cells[c]);
-        if (color.isValid())
-            item->setForeground(color);
-        m_table->setItem(row, c, item);
-    }
+    m_entries.push_back(std::move(e));
+    show(row, m_entries.back());
     m_table->scrollToBottom();
 }
 
-void EventLog::addEvent(const QString& instrument, const dev::DeviceIdentity& id, const dev::DeviceEvent& e)
+void EventLog::addEvent(proto::DeviceKind instrument, const dev::DeviceIdentity& id, const dev::DeviceEvent& event)
+{
+    if (event.kind == proto::EventKind::PathSegmentDone)
+        return;  // not logged (below): the entry before it is another event's
+    addEvent(QString(), id, event);
+    if (!m_entries.empty() && m_entries.back().event && m_entries.back().instrumentText.isEmpty()) {
+        m_entries.back().instrument = instrument;
+        show(m_table->rowCount() - 1, m_entries.back());
+    }
+}
+
+void EventLog::addEvent(const QString& instrument, const dev::DeviceIdentity& id, const dev::DeviceEvent& ev)
 {
     // A path reports every segment it completes: the Patterns screen shows that as progress;
     // in the log it would bury everything else.
-    if (e.kind == proto::EventKind::PathSegmentDone)
+    if (ev.kind == proto::EventKind::PathSegmentDone)
         return;
-    const QString axis = e.axis >= 0 && e.axis < id.axes.size() ? QString(id.axes[e.axis].letter) : QString();
-    QColor color;
-    switch (e.kind) {
+    Entry e;
+    e.time = ev.hostTime.time();
+    e.instrumentText = instrument;
+    e.axis = ev.axis >= 0 && ev.axis < id.axes.size() ? QString(id.axes[ev.axis].letter) : QString();
+    switch (ev.kind) {
     case proto::EventKind::LimitHit:
     case proto::EventKind::Fault:
     case proto::EventKind::EStop:
-    case proto::EventKind::LostSteps: color = QColor(0xB7, 0x1C, 0x1C); break;
+    case proto::EventKind::LostSteps: e.color = QColor(0xB7, 0x1C, 0x1C); break;
     case proto::EventKind::JogExpired:
     case proto::EventKind::PathUnderrun:
-    case proto::EventKind::PathAborted: color = QColor(0x9A, 0x67, 0x00); break;
+    case proto::EventKind::PathAborted: e.color = QColor(0x9A, 0x67, 0x00); break;
     default: break;
     }
-    QString details = e.text;
-    if (e.axis >= 0 && e.axis < id.axes.size())
-    {
-        const double shown = std::round(e.position * 1000) / 1000;
-        const QString at = tr("at %1 %2").arg(shown == 0 ? 0.0 : shown, 0, 'f', 3).arg(id.axes[e.axis].unitName());
-        details = e.text.isEmpty() ? at : QStringLiteral("%1 (%2)").arg(e.text, at);
+    e.event = ev.kind;
+    e.deviceText = ev.text;
+    if (ev.axis >= 0 && ev.axis < id.axes.size()) {
+        const double shown = std::round(ev.position * 1000) / 1000;
+        e.position = shown == 0 ? 0.0 : shown;
+        e.unit = id.axes[ev.axis].unitName();
+    } else if (ev.kind >= proto::EventKind::PathStarted && ev.kind <= proto::EventKind::PathAborted) {
+        e.position = ev.position;
+        e.segment = true;
     }
-    else if (e.kind >= proto::EventKind::PathStarted && e.kind <= proto::EventKind::PathAborted)
-    {
-        const QString at = tr("segment %1").arg(static_cast<qint64>(e.position));
-        details = e.text.isEmpty() ? at : QStringLiteral("%1 (%2)").arg(e.text, at);
-    }
-    append({e.hostTime.time().toString(QStringLiteral("HH:mm:ss.zzz")), instrument, axis,
-            kindText(e.kind), details},
-           color);
+    append(std::move(e));
+}
+
+void EventLog::addNote(proto::DeviceKind instrument, const std::string& kindTerm, const msg::Message& text, bool isError)
+{
+    Entry e;
+    e.time = QTime::currentTime();
+    e.instrument = instrument;
+    e.kindTerm = kindTerm;
+    e.note = text;
+    e.color = isError ? QColor(0xB7, 0x1C, 0x1C) : QColor();
+    append(std::move(e));
+}
+
+void EventLog::addNote(const QString& instrument, const std::string& kindTerm, const msg::Message& text, bool isError)
+{
+    Entry e;
+    e.time = QTime::currentTime();
+    e.instrumentText = instrument;
+    e.kindTerm = kindTerm;
+    e.note = text;
+    e.color = isError ? QColor(0xB7, 0x1C, 0x1C) : QColor();
+    append(std::move(e));
 }
 
 void EventLog::addNote(const QString& instrument, const QString& kind, const QString& text, bool isError)
 {
-    append({QTime::currentTime().toString(QStringLiteral("HH:mm:ss.zzz")), instrument, QString(), kind, text},
-           isError ? QColor(0xB7, 0x1C, 0x1C) : QColor());
+    Entry e;
+    e.time = QTime::currentTime();
+    e.instrumentText = instrument;
+    e.kindText = kind;
+    e.noteText = text;
+    e.color = isError ? QColor(0xB7, 0x1C, 0x1C) : QColor();
+    append(std::move(e));
 }
 
 } // namespace ui

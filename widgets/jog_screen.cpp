@@ -4,6 +4,8 @@
 #include "widgets/live_strip.h"
 #include "widgets/wording/wording.h"
 
+#include "widgets/wording/wording.h"
+
 #include <QAbstractSpinBox>
 #include <QApplication>
 #include <QComboBox>
@@ -180,7 +182,7 @@ void JogScreen::refresh()
 {
     const bool ready = m_client->isReady();
     const auto& st = m_client->status();
-    QString state = dev::linkStateName(m_client->state());
+    QString state = words::term(dev::linkStateTerm(m_client->state()));
     if (ready && st.estop)
         state = tr("E-STOP active — press Reset to clear");
     m_state->setText(state);
@@ -249,7 +251,7 @@ void JogScreen::homeAxes(quint8 mask)
     const QString order = m_client->capabilities().testFlag(dev::Capability::CoupledXyThenZ) && which.contains(QLatin1Char('Z')) && which.size() > 1
         ? tr(" Z rises to its switch first, then the other axes go to theirs.")
         : QString();
-    if (!confirm(tr("Home %1 of the %2?%3 Keep hands and labware clear.").arg(which, id.kindName(), order)))
+    if (!confirm(tr("Home %1 of the %2?%3 Keep hands and labware clear.").arg(which, words::term(dev::instrumentTerm(id.kind)), order)))
         return;
     m_client->home(mask);
 }

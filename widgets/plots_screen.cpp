@@ -8,6 +8,8 @@
 #include "widgets/plot_toolbar.h"
 #include "widgets/xy_view.h"
 
+#include "widgets/wording/wording.h"
+
 #include <QComboBox>
 #include <QDateTime>
 #include <QDir>
@@ -112,12 +114,12 @@ PlotsScreen::PlotsScreen(tele::TelemetryHub* hub, QWidget* parent) : QWidget(par
             if (!m_paused)
                 scheduleRedraw();
         });
-        connect(m_hub, &tele::TelemetryHub::subscriptionChanged, this, [this](int instrument, int rateHz, const QString& note) {
+        connect(m_hub, &tele::TelemetryHub::subscriptionChanged, this, [this](int instrument, int rateHz, const msg::Message& note) {
             m_rates[instrument] = rateHz;
             m_notes[instrument] = note;
             updateStatus();
         });
-        connect(m_hub, &tele::TelemetryHub::problem, this, [this](const QString& m) { tell(m, true); });
+        connect(m_hub, &tele::TelemetryHub::problem, this, [this](const msg::Message& m) { tell(words::text(m), true); });
     }
     setWindowS(kDefaultWindowS);
     refreshPicker();
@@ -419,7 +421,7 @@ QString PlotsScreen::statusText() const
         s += lost ? tr(" · <span style='color:#b71c1c'><b>%1 lost</b></span>").arg(lost) : tr(" · 0 lost");
         if (m_hub->heldBackSamples(i))
             s += tr(" · %1 not kept while paused").arg(m_hub->heldBackSamples(i));
-        const QString note = m_notes.value(i);
+        const QString note = words::text(m_notes.value(i));
         if (!note.isEmpty())
             s += QStringLiteral(" · <i>%1</i>").arg(note.toHtmlEscaped());
         parts << s;
@@ -521,10 +523,10 @@ bool PlotsScreen::startRecording(const QString& path)
         return false;
     }
     QDir().mkpath(QFileInfo(file).absolutePath());
-    QString error;
+    msg::Message error;
     if (!m_hub->startRecording(file, channels, &error)) {
         setButton(false);
-        tell(error, true);
+        tell(words::text(error), true);
         return false;
     }
     setButton(true);

@@ -10,6 +10,7 @@
 // plot should not take them from the screen in front. Recording collects its own. Drawing is coalesced on a
 // single-shot timer (at most one frame per kFrameMs, never per packet, none
 // while hidden or paused).
+#include "motion/message.h"
 #include "widgets/plot_source.h"
 
 #include <QElapsedTimer>
@@ -129,7 +130,7 @@ private:
     bool m_paused = false;
     bool m_defaultsApplied[2] = {false, false};
     QElapsedTimer m_arrival[2];  ///< host time of the last batch per instrument
-    QHash<int, QString> m_notes;  ///< subscription notes per instrument
+    QHash<int, msg::Message> m_notes;  ///< subscription notes per instrument (worded when shown)
     QHash<int, int> m_rates;      ///< streamed rate per instrument
     QString m_lastMessage;
     int m_frames = 0;

@@ -5,6 +5,7 @@
 #include "command.h"
 
 #include "device/files/machine_profile_file.h"
+#include "widgets/wording/translators.h"
 
 #include <QCoreApplication>
 
@@ -161,7 +162,9 @@ QList<QCommandLineOption> globalOptions()
             QCommandLineOption(QStringLiteral("timeout"), tr("longest wait for motion to finish, s (default: 120)"), QStringLiteral("S")),
             QCommandLineOption(QStringLiteral("attach"), tr("run the command through the running BenchPilot GUI (its instruments, its control lease)")),
             QCommandLineOption(QStringLiteral("api-socket"), tr("with --attach: the GUI's API socket (default: $XDG_RUNTIME_DIR/benchpilot/api.sock)"),
-                               QStringLiteral("PATH"))};
+                               QStringLiteral("PATH")),
+            QCommandLineOption(QStringLiteral("lang"), tr("language of the text for people: en (default), zh_CN, or system (follows LANG); --json never changes"),
+                               QStringLiteral("LANG"))};
 }
 
 QString topHelp()
@@ -269,15 +272,33 @@ QString methodName(const QString& path, const Command& c)
 
 int runCli(const QStringList& rawArgs, QTextStream& out, QTextStream& err)
 {
-    // --attach [--api-socket PATH], before or after the command: the same words go to
+    // The language first, wherever it stands, so that every later word (usage
+    // errors included) is in it. English unless asked: scripts parse this output.
+    words::Translators translators;
+    for (int i = 0; i < rawArgs.size(); ++i) {
+        const QString& a = rawArgs[i];
+        QString language;
+        if (a == QLatin1String("--lang") && i + 1 < rawArgs.size())
+            language = rawArgs[i + 1];
+        else if (a.startsWith(QLatin1String("--lang=")))
+            language = a.mid(7);
+        else
+            continue;
+        if (!translators.setLanguage(language)) {
+            err << "benchpilot-cli: " << tr("--lang needs en, zh_CN or system (got '%1')").arg(language) << "\n";
+            err.flush();
+            return Usage;
+        }
+    }
+    // --attach [--api-socket PATH], before or after the command: the same commandWords go to
     // the running GUI, which runs them and sends back the output and the exit code.
-    QStringList words;
+    QStringList commandWords;
     bool attach = false;
     QString socketPath;
     for (int i = 0; i < rawArgs.size(); ++i) {
         const QString& a = rawArgs[i];
         if (a == QLatin1String("--")) {
-            words += rawArgs.mid(i);
+            commandWords += rawArgs.mid(i);
             break;
         }
         if (a == QLatin1String("--attach")) {
@@ -287,7 +308,7 @@ int runCli(const QStringList& rawArgs, QTextStream& out, QTextStream& err)
         } else if (a.startsWith(QLatin1String("--api-socket="))) {
             socketPath = a.mid(13);
         } else {
-            words << a;
+            commandWords << a;
         }
     }
     if (!socketPath.isEmpty() && !attach) {
@@ -296,9 +317,9 @@ int runCli(const QStringList& rawArgs, QTextStream& out, QTextStream& err)
         return Usage;
     }
     if (attach)
-        return runAttached(words, socketPath, out, err);
+        return runAttached(commandWords, socketPath, out, err);
     const std::unique_ptr<InvocationHost> host = makeLocalHost();
-    return runCommandLine(words, out, err, *host);
+    return runCommandLine(commandWords, out, err, *host);
 }
 
 int runCommandLine(const QStringList& rawArgs, QTextStream& out, QTextStream& err, InvocationHost& host, const Command** ran)

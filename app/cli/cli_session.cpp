@@ -1,6 +1,8 @@
 #include "cli_session.h"
 #include "fiber.h"
 
+#include "widgets/wording/wording.h"
+
 #include "device/backends/benchpilot/benchpilot_client.h"
 #include "device/link/serial_transport.h"
 #include "device/link/simulated_link.h"
@@ -102,9 +104,9 @@ bool CliSession::connectDevice()
     QString linkError;
     // Only while connecting: the lambda holds a reference to this frame's string
     // (ASan caught a later link error writing into the dead frame).
-    const auto watch = connect(m_client, &dev::Instrument::linkError, this, [&linkError](const QString& m) {
+    const auto watch = connect(m_client, &dev::Instrument::linkError, this, [&linkError](const msg::Message& m) {
         if (linkError.isEmpty())
-            linkError = m;
+            linkError = words::text(m);
     });
     if (!m_opt.sim.isEmpty()) {
         auto* link = new dev::SimulatedLink(m_opt.sim == QLatin1String("stage") ? proto::DeviceKind::Stage : proto::DeviceKind::Analyzer,
@@ -149,7 +151,7 @@ bool CliSession::parseAxes(const QString& text, quint8* mask)
             continue;
         const int i = id.axisIndex(c);
         if (i < 0) {
-            report(QCoreApplication::translate("cli", "axis '%1' does not exist on the %2 (axes: %3)").arg(c).arg(id.kindName()).arg([&] {
+            report(QCoreApplication::translate("cli", "axis '%1' does not exist on the %2 (axes: %3)").arg(c).arg(words::term(dev::instrumentTerm(id.kind))).arg([&] {
                 QString s;
                 for (const auto& a : id.axes)
                     s += a.letter;
@@ -178,7 +180,7 @@ int CliSession::request(const std::function<void(dev::Instrument::Callback)>& se
     if (error) {
         if (error->kind == dev::RequestError::Kind::Device)
             m_lastRefusal = error;
-        report(error->message);
+        report(words::text(error->message));
         return error->kind == dev::RequestError::Kind::Device || error->kind == dev::RequestError::Kind::Invalid ? Refused : LinkTrouble;
     }
     return Ok;
@@ -244,7 +246,7 @@ void CliSession::printStatus()
     }
     {
         QTextStream& out = m_inv.out();
-        out << QStringLiteral("%1%2\n").arg(id.kindName(), st.estop ? QStringLiteral("  [E-STOP]") : QString());
+        out << QStringLiteral("%1%2\n").arg(words::term(dev::instrumentTerm(id.kind)), st.estop ? QStringLiteral("  [E-STOP]") : QString());
         if (st.positionLost)
             out << "  " << QCoreApplication::translate("cli", "[ALARM] the controller does not trust its position: home, or `unlock` on your word")
                 << "\n";

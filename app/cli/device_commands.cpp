@@ -3,6 +3,7 @@
 // still where that is the point, and prints the result as text or JSON.
 #include "cli_session.h"
 #include "command.h"
+#include "widgets/wording/wording.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -140,7 +141,7 @@ int move(Invocation& inv)
     for (const QString& a : words) {
         const int axis = id.axisIndex(a[0]);
         if (axis < 0)
-            return inv.usage(tr("axis '%1' does not exist on the %2").arg(a[0]).arg(id.kindName()));
+            return inv.usage(tr("axis '%1' does not exist on the %2").arg(a[0]).arg(::words::term(dev::instrumentTerm(id.kind))));
         bool ok = false;
         const double v = a.mid(2).toDouble(&ok);
         if (!ok || !std::isfinite(v))
@@ -174,13 +175,13 @@ int jog(Invocation& inv)
     const auto& id = s->instrument()->identity();
     const int axis = words[0].size() == 1 ? id.axisIndex(words[0][0]) : -1;
     if (axis < 0)
-        return inv.usage(tr("axis '%1' does not exist on the %2").arg(words[0]).arg(id.kindName()));
+        return inv.usage(tr("axis '%1' does not exist on the %2").arg(words[0]).arg(::words::term(dev::instrumentTerm(id.kind))));
     if (std::abs(v) > id.axes[axis].maxSpeed)
         return inv.usage(tr("velocity must be within ±%1 %2/s").arg(id.axes[axis].maxSpeed).arg(id.axes[axis].unitName()));
     QString refused;
     dev::Instrument* c = s->instrument();
     auto conn = QObject::connect(c, &dev::Instrument::requestFailed, s, [&](const dev::RequestError& e) {
-        refused = e.message;
+        refused = ::words::text(e.message);
         s->noteRefusal(e);
     });
     if (held) {
@@ -310,7 +311,7 @@ int limits(Invocation& inv)
     for (const Change& c : changes) {
         const int axis = id.axisIndex(c.text[0]);
         if (axis < 0)
-            return inv.usage(tr("axis '%1' does not exist on the %2").arg(c.text[0]).arg(id.kindName()));
+            return inv.usage(tr("axis '%1' does not exist on the %2").arg(c.text[0]).arg(::words::term(dev::instrumentTerm(id.kind))));
         if (int rc = s->request([&](auto cb) { s->instrument()->setSoftLimits(axis, c.lo, c.hi, cb); }, tr("limits")))
             return rc;
     }

@@ -7,6 +7,8 @@
 #include "motion/interpolation.h"
 #include "motion/step_timing.h"
 
+#include "widgets/wording/wording.h"
+
 #include <QCoreApplication>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -26,8 +28,10 @@ constexpr int kExitUsage = 1;
 constexpr std::int64_t kMaxPoints = 2000000;  ///< keeps a typo in --step from printing gigabytes
 
 /// The option a person typed for a motion-library field, so refusals name what they can change.
-QString optionForField(const std::string& message)
+/// The option a planning message is about, from its `field` argument.
+QString optionForField(const msg::Message& m)
 {
+    const std::string message = m.text("field");
     static const std::pair<const char*, const char*> kFields[] = {
         {"vMaxMmS", "--vmax"},     {"aMaxMmS2", "--amax"},     {"jMaxMmS3", "--jmax"},
         {"accelTimeS", "--accel-time"}, {"startSpeedMmS", "--start-speed"}, {"plateauMm", "--plateau"},
@@ -80,7 +84,7 @@ int runProfile(Invocation& o)
     if (distances.size() == 1) {
         const auto profile = motion::planProfile(distances[0], request);
         if (!profile)
-            return o.usage(optionForField(profile.error) + QString::fromStdString(profile.error));
+            return o.usage(optionForField(profile.error) + words::text(profile.error));
         const auto samples = motion::sampleProfile(*profile, dt);
         if (samples.empty())
             return o.usage(QStringLiteral("--dt '%1' gives too many samples for a %2 s move").arg(o.value(QStringLiteral("dt"))).arg(profile->duration()));
@@ -90,7 +94,7 @@ int runProfile(Invocation& o)
     } else {
         const auto move = motion::planSynchronized(distances.constData(), int(distances.size()), request);
         if (!move)
-            return o.usage(optionForField(move.error) + QString::fromStdString(move.error));
+            return o.usage(optionForField(move.error) + words::text(move.error));
         const double T = move->duration();
         if (T / dt > 1e6)
             return o.usage(QStringLiteral("--dt '%1' gives too many samples for a %2 s move").arg(o.value(QStringLiteral("dt"))).arg(T));
@@ -266,7 +270,7 @@ int runStepTable(Invocation& o)
             return o.usage(QStringLiteral("--step '%1' must be > 0 and give at most %2 steps").arg(o.value(QStringLiteral("step"))).arg(kMaxPoints));
         const auto profile = motion::planProfile(distance, request);
         if (!profile)
-            return o.usage(optionForField(profile.error) + QString::fromStdString(profile.error));
+            return o.usage(optionForField(profile.error) + words::text(profile.error));
         instants = motion::stepInstantsS(*profile, stepMm);
         extra.insert("kind", QString::fromLatin1(motion::profileKindName(request.kind)));
         extra.insert("duration", profile->duration());
@@ -307,7 +311,7 @@ int runBlocks(Invocation& o)
         }
         const auto plan = motion::planJointBlocks(list, vMax, j);
         if (!plan)
-            return o.refused(QStringLiteral("--joint '%1': %2").arg(joints[j], QString::fromStdString(plan.error)));
+            return o.refused(QStringLiteral("--joint '%1': %2").arg(joints[j], words::text(plan.error)));
         QJsonArray planned;
         for (const auto& p : plan->blocks)
             planned.append(QJsonObject{{"source", p.sourceIndex}, {"steps", qint64(p.steps) * p.direction},

@@ -12,6 +12,9 @@
 #include "device/sim/path_queue.h"
 #include "motion/plans/pattern.h"
 
+#include "widgets/wording/wording.h"
+
+#include <QFileInfo>
 #include <QCoreApplication>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -91,9 +94,9 @@ std::optional<motion::plans::Pattern> patternFrom(Invocation& inv)
 {
     motion::plans::Pattern p;
     if (inv.isSet(QStringLiteral("file"))) {
-        QString error;
-        if (!files::loadPatternFile(inv.path(inv.value(QStringLiteral("file"))), &p, &error)) {
-            inv.usage(error.trimmed());
+        jsonio::Problems problems;
+        if (!files::loadPatternFile(inv.path(inv.value(QStringLiteral("file"))), &p, &problems)) {
+            inv.usage(words::fileProblems(problems, QFileInfo(inv.value(QStringLiteral("file"))).fileName()).join(QLatin1Char('\n')));
             return std::nullopt;
         }
     } else if (!inv.isSet(QStringLiteral("shape"))) {
@@ -160,7 +163,7 @@ std::optional<motion::plans::Pattern> patternFrom(Invocation& inv)
     if (!problems.empty()) {
         QStringList lines;
         for (const auto& q : problems)
-            lines << QStringLiteral("%1: %2").arg(QString::fromStdString(q.field), QString::fromStdString(q.message));
+            lines << QStringLiteral("%1: %2").arg(QString::fromStdString(q.field), words::text(q.message));
         inv.usage(lines.join(QStringLiteral("; ")));
         return std::nullopt;
     }
@@ -268,15 +271,15 @@ int run(Invocation& inv)
     }
     dev::PathClient* paths = c->paths();
     if (!paths || !c->capabilities().testFlag(dev::Capability::PathQueue))
-        return inv.refused(tr("the %1 (%2) has no path queue to run patterns on").arg(c->identity().kindName(), c->identity().family));
+        return inv.refused(words::text(c->whyNot(dev::Capability::PathQueue)));
     jobs::PatternRunner runner(c);
     bool limits = false;
     paths->refreshLimits([&](const auto&) { limits = true; });
     spinUntil([&] { return limits; }, 3000);
-    QStringList problems;
-    QObject::connect(&runner, &jobs::PatternRunner::message, &runner, [&](const QString& m, bool problem) {
+    std::vector<msg::Message> problems;
+    QObject::connect(&runner, &jobs::PatternRunner::message, &runner, [&](const msg::Message& m, bool problem) {
         if (problem)
-            problems << m;
+            problems.push_back(m);
     });
     QObject::connect(c, &dev::Instrument::telemetryReceived, &runner,
                      [&](const proto::TelemetryBatch& b) { jobs::feedBatch(runner, *c, b); });
@@ -284,10 +287,15 @@ int run(Invocation& inv)
     jobs::PatternRunner::Options o;
     o.zMm = p->zMm;
     if (!runner.start(path, o)) {
-        QString why = problems.join(QLatin1Char(' '));
-        if (!inv.link().sim.isEmpty() && !inv.host().insideGui() && why.contains(QStringLiteral("not homed")))
-            why += tr(" (every --sim command starts a fresh simulator: add --home-first)");
-        return inv.refused(why);
+        QStringList why;
+        bool notHomed = false;
+        for (const msg::Message& m : problems) {
+            why << words::text(m);
+            notHomed = notHomed || m.id == "pattern.run.not_homed";
+        }
+        if (!inv.link().sim.isEmpty() && !inv.host().insideGui() && notHomed)
+            why << tr("(every --sim command starts a fresh simulator: add --home-first)");
+        return inv.refused(why.join(QLatin1Char(' ')));
     }
     const auto abortHook = inv.host().onAbort([&runner] { runner.abort(); });  // the API's cancel
     const bool finished = spinUntil([&] { return !runner.busy(); }, static_cast<int>(inv.link().timeoutS * 1000));
@@ -299,7 +307,7 @@ int run(Invocation& inv)
     const auto sum = runner.summary();
     const QJsonObject result{{QStringLiteral("shape"), QString::fromLatin1(motion::plans::shapeName(p->shape))},
                              {QStringLiteral("instrument"), c->identity().kindName()},
-                             {QStringLiteral("state"), jobs::PatternRunner::stateText(runner.state())},
+                             {QStringLiteral("state"), words::englishTerm(jobs::PatternRunner::stateTerm(runner.state()))},
                              {QStringLiteral("complete"), sum.complete},
                              {QStringLiteral("segments"), static_cast<qint64>(path.size())},
                              {QStringLiteral("segments_done"), static_cast<qint64>(runner.segmentsDone())},
@@ -315,7 +323,7 @@ int run(Invocation& inv)
         inv.printJson(result);
     else
         inv.out() << tr("%1 on the %2: %3 of %4 segments in %5 s; contour error max %6 µm, RMS %7 µm (%8 samples at %9 Hz)\n")
-                         .arg(QString::fromLatin1(motion::plans::shapeName(p->shape)), c->identity().kindName())
+                         .arg(QString::fromLatin1(motion::plans::shapeName(p->shape)), words::term(dev::instrumentTerm(c->identity().kind)))
                          .arg(runner.segmentsDone())
                          .arg(path.size())
                          .arg(sum.durationS, 0, 'f', 2)
@@ -325,7 +333,7 @@ int run(Invocation& inv)
                          .arg(c->subscribedRateHz());
     inv.out().flush();
     if (!sum.complete)
-        return inv.refused(problems.isEmpty() ? tr("the pattern did not complete") : problems.last());
+        return inv.refused(problems.empty() ? tr("the pattern did not complete") : words::text(problems.back()));
     return Ok;
 }
 

@@ -10,6 +10,8 @@
 
 #include "device/files/recipes/recipe_loader.h"
 
+#include "widgets/wording/wording.h"
+
 #include <QCoreApplication>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -54,17 +56,17 @@ int validate(Invocation& inv)
     const platefiles::LoadedRecipe& l = setup.loaded;
     if (inv.json()) {
         QJsonArray errors, warnings;
-        for (const QString& m : l.messages)
-            (m.contains(QStringLiteral(": warning: ")) ? warnings : errors).append(m);
+        for (const jsonio::FileProblem& p : l.problems)
+            (p.problem.warning ? warnings : errors).append(words::toJson(p));
         inv.printJson(QJsonObject{{QStringLiteral("file"), l.path},
-                                  {QStringLiteral("ok"), l.ok()},
-                                  {QStringLiteral("errors"), errors},
-                                  {QStringLiteral("warnings"), warnings},
-                                  {QStringLiteral("ops"), static_cast<int>(l.plan.ops.size())},
-                                  {QStringLiteral("total_time_s"), l.plan.totalTimeS}});
+                                               {QStringLiteral("ok"), l.ok()},
+                                               {QStringLiteral("errors"), errors},
+                                               {QStringLiteral("warnings"), warnings},
+                                               {QStringLiteral("ops"), static_cast<int>(l.plan.ops.size())},
+                                               {QStringLiteral("total_time_s"), l.plan.totalTimeS}});
     } else {
-        for (const QString& m : l.messages)
-            (m.contains(QStringLiteral(": warning: ")) ? inv.out() : inv.err()) << m << "\n";
+        for (const jsonio::FileProblem& p : l.problems)
+            (p.problem.warning ? inv.out() : inv.err()) << words::fileProblem(QString::fromStdString(p.file), p.problem) << "\n";
         if (l.ok())
             inv.out() << tr("%1: valid: %2 ops, about %3 s").arg(l.path).arg(l.plan.ops.size()).arg(std::lround(l.plan.totalTimeS)) << "\n";
         else
@@ -119,25 +121,25 @@ int plan(Invocation& inv)
                                      {QStringLiteral("aspirated_ul"), r6(w.aspiratedUl)},
                                      {QStringLiteral("visits"), w.visits}});
         QJsonArray warnings;
-        for (const auto& m : l.messages)
-            warnings.append(m);
+        for (const jsonio::FileProblem& m : l.problems)
+            warnings.append(words::toJson(m));
         inv.printJson(QJsonObject{{QStringLiteral("recipe"), QString::fromStdString(l.recipe.name)},
-                                  {QStringLiteral("fingerprint"), QString::fromStdString(plates::fingerprintHex(p.fingerprint))},
-                                  {QStringLiteral("total_time_s"), r6(p.totalTimeS)},
-                                  {QStringLiteral("dispensed_ul"), r6(p.totalDispensedUl)},
-                                  {QStringLiteral("aspirated_ul"), r6(p.totalAspiratedUl)},
-                                  {QStringLiteral("pump_start_ul"), r6(p.pumpStartUl)},
-                                  {QStringLiteral("pump_end_ul"), r6(p.pumpEndUl)},
-                                  {QStringLiteral("warnings"), warnings},
-                                  {QStringLiteral("ops"), ops},
-                                  {QStringLiteral("wells"), wells}});
+                                               {QStringLiteral("fingerprint"), QString::fromStdString(plates::fingerprintHex(p.fingerprint))},
+                                               {QStringLiteral("total_time_s"), r6(p.totalTimeS)},
+                                               {QStringLiteral("dispensed_ul"), r6(p.totalDispensedUl)},
+                                               {QStringLiteral("aspirated_ul"), r6(p.totalAspiratedUl)},
+                                               {QStringLiteral("pump_start_ul"), r6(p.pumpStartUl)},
+                                               {QStringLiteral("pump_end_ul"), r6(p.pumpEndUl)},
+                                               {QStringLiteral("warnings"), warnings},
+                                               {QStringLiteral("ops"), ops},
+                                               {QStringLiteral("wells"), wells}});
     } else {
-        for (const auto& m : l.messages)
+        for (const QString& m : words::fileProblems(l.problems))
             inv.out() << m << "\n";
         for (const auto& op : p.ops)
             inv.out() << QStringLiteral("%1  %2  (%3, %4) mm  Z %5  pump %6 µL  at %7 s\n")
                              .arg(op.index + 1, 5)
-                             .arg(QString::fromStdString(op.label()), -44)
+                             .arg(words::text(op.label()), -44)
                              .arg(op.at.x, 7, 'f', 2)
                              .arg(op.at.y, 7, 'f', 2)
                              .arg(op.well.empty() && op.station.empty() ? QStringLiteral("     —") : QString::number(op.depthZMm, 'f', 2).rightJustified(6))

@@ -7,6 +7,7 @@
 
 #include "device/jobs/machine_model.h"
 #include "device/jobs/recipe_runner.h"
+#include "widgets/wording/wording.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -90,18 +91,18 @@ int runRecipe(Invocation& inv)
     context.deck = jobs::deckWithDeviceMotion(context.deck, c->identity());
     const plates::RecipePlan plan = plates::planRecipe(l.recipe, context, start);
     jobs::RecipeRunner runner(c);
-    QString error;
+    msg::Message error;
     const QString name = QString::fromStdString(l.recipe.name.empty() ? QFileInfo(l.path).fileName().toStdString() : l.recipe.name);
     if (!runner.setPlan(plan, name, &error))
-        return inv.refused(error);
+        return inv.refused(words::text(error));
 
     QTextStream& out = inv.out();
-    QObject::connect(&runner, &jobs::RecipeRunner::message, &runner, [&](const QString& text, bool problem) {
+    QObject::connect(&runner, &jobs::RecipeRunner::message, &runner, [&](const msg::Message& text, bool problem) {
         if (inv.json())
             inv.printJson(QJsonObject{{QStringLiteral("event"), problem ? QStringLiteral("problem") : QStringLiteral("note")},
-                                      {QStringLiteral("text"), text}});
+                                      {QStringLiteral("text"), words::toJson(text)}});
         else
-            (problem ? inv.err() : out) << text << "\n";
+            (problem ? inv.err() : out) << words::text(text) << "\n";
         inv.err().flush();
         out.flush();
     });
@@ -126,14 +127,14 @@ int runRecipe(Invocation& inv)
             out << QStringLiteral("[%1/%2] %3 · %4 elapsed · ETA %5\n")
                        .arg(p.opsDone, QString::number(p.opsTotal).size())
                        .arg(p.opsTotal)
-                       .arg(QString::fromStdString(o.label()), clock(p.elapsedS), clock(p.etaS));
+                       .arg(words::text(o.label()), clock(p.elapsedS), clock(p.etaS));
             out.flush();
         }
     });
 
     bool needDecision = false;
     const jobs::InterruptedDecider decide = [&](const jobs::InterruptedOp& op) {
-        inv.report(tr("%1 was interrupted after its plunger move was sent: %2").arg(op.label, op.evidence));
+        inv.report(tr("%1 was interrupted after its plunger move was sent: %2").arg(words::text(op.label), words::text(op.evidence)));
         if (interrupted == QLatin1String("skip"))
             return jobs::InterruptedChoice::Skip;
         if (interrupted == QLatin1String("redo"))
@@ -150,7 +151,7 @@ int runRecipe(Invocation& inv)
     if (!started) {
         if (needDecision)
             return inv.usage(tr("not resumed: say --interrupted=skip (count the well as done) or --interrupted=redo (do it again)"));
-        return inv.refused(error);
+        return inv.refused(words::text(error));
     }
     if (!inv.json())
         out << tr("log: %1").arg(logPath) << "\n";

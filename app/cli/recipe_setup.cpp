@@ -5,6 +5,8 @@
 #include "device/files/plates/plate_paths.h"
 #include "device/files/text_file.h"
 
+#include "widgets/wording/wording.h"
+
 #include <QCoreApplication>
 #include <QFileInfo>
 
@@ -28,14 +30,14 @@ int loadSetup(Invocation& inv, RecipeSetup* setup)
     if (args.size() != 1)
         return inv.usage(tr("name one recipe file"));
     std::string text;
-    QString error;
+    msg::Message error;
     if (inv.isSet(QStringLiteral("deck"))) {
         const QString deckPath = inv.path(inv.value(QStringLiteral("deck")));
         if (!files::readText(deckPath, &text, &error))
-            return inv.usage(error);
+            return inv.usage(words::text(error));
         const platefiles::DeckRead d = platefiles::parseDeck(text);
         if (!d.deck)
-            return inv.usage(QString::fromStdString(d.problems.format(QFileInfo(deckPath).fileName().toStdString())).trimmed());
+            return inv.usage(words::fileProblems(d.problems, QFileInfo(deckPath).fileName()).join(QLatin1Char('\n')));
         setup->deck = *d.deck;
     } else {
         setup->deck = platefiles::builtinDeck();
@@ -44,10 +46,10 @@ int loadSetup(Invocation& inv, RecipeSetup* setup)
                                                                  : platefiles::defaultCalibrationPath();
     if (inv.value(QStringLiteral("calibration")) != QLatin1String("none") && (inv.isSet(QStringLiteral("calibration")) || QFileInfo::exists(cal))) {
         if (!files::readText(cal, &text, &error))
-            return inv.usage(error);
+            return inv.usage(words::text(error));
         const platefiles::CalibrationRead c = platefiles::parseCalibration(text);
         if (!c.ok())
-            return inv.usage(QString::fromStdString(c.problems.format(QFileInfo(cal).fileName().toStdString())).trimmed());
+            return inv.usage(words::fileProblems(c.problems, QFileInfo(cal).fileName()).join(QLatin1Char('\n')));
         setup->calibration = c.calibrations;
         setup->calibrationPath = cal;
     }
@@ -57,7 +59,7 @@ int loadSetup(Invocation& inv, RecipeSetup* setup)
 
 int reportInvalid(Invocation& inv, const platefiles::LoadedRecipe& loaded)
 {
-    for (const QString& m : loaded.messages)
+    for (const QString& m : words::fileProblems(loaded.problems))
         inv.err() << m << "\n";
     inv.err().flush();
     return Usage;

@@ -13,6 +13,8 @@
 #include "device/jobs/scan_runner.h"
 #include "motion/plans/scan/scan_estimate.h"
 
+#include "widgets/wording/wording.h"
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
@@ -181,9 +183,10 @@ int scanPlan(Invocation& inv)
         for (const char* o : {"roi", "centre", "size", "polygon", "fov", "sensor", "overlap"})
             if (inv.isSet(QString::fromLatin1(o)))
                 return inv.usage(tr("give a plan file or the plan's options, not both (--%1)").arg(QLatin1String(o)));
-        QString error;
-        if (!scanfile::loadPlan(inv.path(inv.arguments().front()), &p, &error))
-            return inv.usage(error);
+        jsonio::Problems problems;
+        const QString planFile = inv.path(inv.arguments().front());
+        if (!scanfile::loadPlan(planFile, &p, &problems))
+            return inv.usage(words::fileProblems(problems, QFileInfo(planFile).fileName()).join(QLatin1Char('\n')));
         if (inv.isSet(QStringLiteral("pixel-um"))) {
             if (p.camera.source == FieldSource::Sensor)
                 return inv.usage(tr("--pixel-um: the plan's camera gives the pixel size (sensor pixel / magnification)"));
@@ -200,7 +203,7 @@ int scanPlan(Invocation& inv)
         QStringList lines;
         for (const auto& pr : problems) {
             const QString line = optionFor(pr.field, p.camera.source == FieldSource::Sensor) + QStringLiteral(": ")
-                + QString::fromStdString(pr.message);
+                + words::text(pr.message);
             if (!lines.contains(line))
                 lines << line;
         }
@@ -247,9 +250,10 @@ int scanRun(Invocation& inv)
         return inv.usage(tr("needs one plan file: scan run PLAN.json [--out DIR]"));
     const QString planPath = inv.path(inv.arguments().front());
     ScanPlan plan;
-    QString error;
-    if (!scanfile::loadPlan(planPath, &plan, &error))
-        return inv.usage(error);
+    jsonio::Problems problems;
+    if (!scanfile::loadPlan(planPath, &plan, &problems))
+        return inv.usage(words::fileProblems(problems, QFileInfo(planPath).fileName()).join(QLatin1Char('\n')));
+    msg::Message error;
     const QString folder = inv.path(inv.isSet(QStringLiteral("out"))
         ? inv.value(QStringLiteral("out"))
         : QFileInfo(inv.arguments().front()).completeBaseName().section(QLatin1Char('.'), 0, 0) + QStringLiteral("-run"));
@@ -258,7 +262,7 @@ int scanRun(Invocation& inv)
         return LinkTrouble;
     dev::Instrument* client = s->instrument();
     if (client->identity().kind != proto::DeviceKind::Stage)
-        return inv.refused(tr("scans run on the microscope stage; this is the %1 (use --sim stage or --port)").arg(client->identity().kindName()));
+        return inv.refused(tr("scans run on the microscope stage; this is the %1 (use --sim stage or --port)").arg(words::term(dev::instrumentTerm(client->identity().kind))));
     if (inv.isSet(QStringLiteral("home"))) {
         if (const int rc = s->request([&](auto cb) { client->home(0, cb); }, tr("home")))
             return rc;
@@ -272,17 +276,19 @@ int scanRun(Invocation& inv)
     ScanRunner runner(client);
     ScanRunner::Refusal why = ScanRunner::Refusal::None;
     if (!runner.prepare(plan, folder, inv.isSet(QStringLiteral("restart")), &error, &why))
-        return why == ScanRunner::Refusal::OtherScansLog ? inv.usage(error + tr(" (--restart starts over)")) : inv.refused(error);
+        return why == ScanRunner::Refusal::OtherScansLog ? inv.usage(words::text(error) + tr(" (--restart starts over)")) : inv.refused(words::text(error));
     QTextStream& out = inv.out();
     if (runner.state() == ScanRunner::State::Finished) {
         QStringList written;
         if (!runner.writeExports(&written, &error))
-            return inv.refused(error);
+            return inv.refused(words::text(error));
         out << tr("Every tile of this scan is already taken in %1; exports written again. --restart takes them anew.\n").arg(folder);
         out.flush();
         return Ok;
     }
-    const QStringList blockers = runner.preflight();
+    QStringList blockers;
+    for (const msg::Message& m : runner.preflight())
+        blockers << words::text(m);
     if (!blockers.isEmpty())
         return inv.refused(blockers.join(QStringLiteral("; ")) + (inv.isSet(QStringLiteral("home")) ? QString() : tr(" (--home homes the stage first)")));
     const double eta = runner.etaS();
@@ -293,7 +299,7 @@ int scanRun(Invocation& inv)
                    .arg(runner.takenTiles() + 1).arg(runner.totalTiles()).arg(folder).arg(runner.takenTiles());
     QString stopReason;
     QStringList exports;
-    QObject::connect(&runner, &ScanRunner::problem, [&](const QString& m) { stopReason = m; });
+    QObject::connect(&runner, &ScanRunner::problem, [&](const msg::Message& m) { stopReason = words::text(m); });
     QObject::connect(&runner, &ScanRunner::finished, [&](const QStringList& e) { exports = e; });
     QObject::connect(&runner, &ScanRunner::tileTaken, [&](int tile) {
         const auto& r = runner.records()[static_cast<std::size_t>(tile)];
@@ -310,7 +316,7 @@ int scanRun(Invocation& inv)
         out.flush();
     });
     if (!runner.start(&error))
-        return inv.refused(error);
+        return inv.refused(words::text(error));
     const auto abortHook = inv.host().onAbort([&runner] { runner.abort(); });  // the API's cancel; the log can continue
     spinUntil([&] { return !runner.isActive(); }, std::numeric_limits<int>::max());
     if (runner.state() != ScanRunner::State::Finished) {

@@ -9,7 +9,7 @@
 #include "device/jobs/tuning/instrument_target.h"
 #include "device/jobs/tuning/model_target.h"
 #include "device/jobs/tuning/tuning_runner.h"
-#include "device/jobs/tuning/tuning_words.h"
+#include "widgets/wording/wording.h"
 #include "device/link/simulated_link.h"
 #include "motion/control/tuning/tuning_rules.h"
 
@@ -117,7 +117,7 @@ int openInstrument(Invocation& inv, Target& t)
     t.session = s;
     t.tuning = s->instrument()->tuning();
     if (!t.tuning || !t.tuning->hasGains())
-        return inv.refused(tr("the %1 has no PID gains to tune (it runs open loop)").arg(s->instrument()->identity().kindName()));
+        return inv.refused(words::text(s->instrument()->whyNot(dev::Capability::PidGains)));
     return Ok;
 }
 
@@ -129,7 +129,7 @@ int openTarget(Invocation& inv, Target& t, bool needsAxis)
             return inv.usage(tr("give either --plant or an instrument (--sim/--port with --axis), not both"));
         const auto p = parsePlant(inv.value(QStringLiteral("plant")).toStdString());
         if (!p)
-            return inv.usage(tr("--plant: %1").arg(QString::fromStdString(p.error)));
+            return inv.usage(tr("--plant: %1").arg(words::text(p.error)));
         t.target = std::make_unique<dev::ModelTarget>(*p);
         return Ok;
     }
@@ -143,7 +143,7 @@ int openTarget(Invocation& inv, Target& t, bool needsAxis)
         return Ok;
     t.axis = s->instrument()->identity().axisIndex(letter[0].toUpper());
     if (t.axis < 0)
-        return inv.usage(tr("axis '%1' does not exist on the %2").arg(letter, s->instrument()->identity().kindName()));
+        return inv.usage(tr("axis '%1' does not exist on the %2").arg(letter, words::term(dev::instrumentTerm(s->instrument()->identity().kind))));
     if (inv.isSet(QStringLiteral("home")) || qobject_cast<dev::SimulatedLink*>(s->link()))
         if (int rc = homeAndCentre(inv, s, t.axis))
             return rc;
@@ -159,7 +159,7 @@ int openTarget(Invocation& inv, Target& t, bool needsAxis)
     });
     spinUntil([&] { return read; }, 5000);
     if (err)
-        return err->kind == dev::RequestError::Kind::Device ? inv.refused(err->message) : inv.linkTrouble(err->message);
+        return err->kind == dev::RequestError::Kind::Device ? inv.refused(words::text(err->message)) : inv.linkTrouble(words::text(err->message));
     t.target = std::move(target);
     return Ok;
 }
@@ -177,12 +177,12 @@ int runToEnd(Invocation& inv, dev::TuningRunner& runner, const std::function<boo
 {
     bool done = false, ok = false;
     QString message;
-    QObject::connect(&runner, &dev::TuningRunner::finished, &runner, [&](bool good, const QString& m) {
+    QObject::connect(&runner, &dev::TuningRunner::finished, &runner, [&](bool good, const msg::Message& m) {
         done = true;
         ok = good;
-        message = m;
+        message = words::text(m);
     });
-    QObject::connect(&runner, &dev::TuningRunner::message, &runner, [&](const QString& m) { inv.report(m); });
+    QObject::connect(&runner, &dev::TuningRunner::message, &runner, [&](const msg::Message& m) { inv.report(words::text(m)); });
     if (!start())
         return inv.refused(message.isEmpty() ? tr("could not start") : message);
     const auto abortHook = inv.host().onAbort([&runner] { runner.abort(); });  // the API's cancel: the axis stops under its gains
@@ -232,9 +232,9 @@ int tune(Invocation& inv)
         return rc;
     const TuningResult& r = runner.result();
     if (inv.isSet(QStringLiteral("save"))) {
-        QString error;
+        msg::Message error;
         if (!files::saveTuningFile(inv.path(inv.value(QStringLiteral("save"))), r, &error))
-            return inv.refused(error);
+            return inv.refused(words::text(error));
     }
     if (inv.json()) {
         QJsonObject rules;
@@ -259,7 +259,7 @@ int tune(Invocation& inv)
         if (r.verification)
             inv.out() << tr("  verified with %1: overshoot %2 %, %3\n")
                              .arg(QString::fromStdString(r.verification->rule), num(r.verification->metrics.overshootPct),
-                                  dev::outcomeText(r.verification->outcome));
+                                  words::tuningOutcome(r.verification->outcome));
     }
     inv.out().flush();
     return Ok;
@@ -301,7 +301,7 @@ int stepTest(Invocation& inv)
         });
         spinUntil([&] { return read; }, 5000);
         if (err)
-            return inv.refused(err->message);
+            return inv.refused(words::text(err->message));
     } else {
         return inv.usage(tr("a model plant has no gains of its own: give --gains Kp,Ki,Kd"));
     }
@@ -315,11 +315,11 @@ int stepTest(Invocation& inv)
     dev::TuningRunner runner;
     Record record;
     StepMetrics m;
-    QObject::connect(&runner, &dev::TuningRunner::stepTestDone, &runner, [&](const Record& r, const StepMetrics& mm, const QString&) {
+    QObject::connect(&runner, &dev::TuningRunner::stepTestDone, &runner, [&](const Record& r, const StepMetrics& mm, const msg::Message&) {
         record = r;
         m = mm;
     });
-    if (int rc = runToEnd(inv, runner, [&] { return runner.startStepTest(t.target.get(), s, tr("step test")); }, inv.link().timeoutS))
+    if (int rc = runToEnd(inv, runner, [&] { return runner.startStepTest(t.target.get(), s, msg::make("tuning.label.step_test")); }, inv.link().timeoutS))
         return rc;
     const bool mm = t.target->unit() == QLatin1String("mm");
     const double in5 = mm ? settledInsideS(record, 0.005) : std::nan("");
@@ -343,7 +343,7 @@ int stepTest(Invocation& inv)
     } else {
         const QString u = t.target->unit();
         inv.out() << t.target->describe() << tr(": step %1 %2 with ").arg(num(size), u) << describeGains(s.gains, T) << " — "
-                  << dev::endReasonText(record.reason) << "\n"
+                  << words::term(endReasonTerm(record.reason)) << "\n"
                   << tr("  rise 10–90 %: %1 s, overshoot %2 %, settling (2 %): %3 s\n").arg(num(m.riseTimeS), num(m.overshootPct), num(m.settlingTimeS))
                   << tr("  steady-state error %1 %4, IAE %2 %4·s, ISE %3 %4²·s, peak output %5 %4\n")
                          .arg(num(m.steadyStateError), num(m.iae), num(m.ise), u, num(m.peakOutput));
@@ -382,7 +382,7 @@ int gains(Invocation& inv)
             return inv.usage(tr("expected AXIS=Kp,Ki,Kd with a closed-loop axis, got '%1'").arg(a));
         dev::AxisGains now;
         if (const auto e = read(axis, now))
-            return inv.refused(e->message);
+            return inv.refused(words::text(e->message));
         QString why;
         const auto g = parseGains(a.mid(2), now.controlPeriodS, perPeriod, &why);
         if (!g)
@@ -394,7 +394,7 @@ int gains(Invocation& inv)
     for (int axis : t.tuning->tunableAxes()) {
         dev::AxisGains g;
         if (const auto e = read(axis, g))
-            return inv.refused(e->message);
+            return inv.refused(words::text(e->message));
         const QString letter(id.axes[axis].letter);
         if (inv.json()) {
             QJsonObject o = continuousJson(g.gains, g.controlPeriodS);

@@ -1,7 +1,7 @@
 // benchpilot: the operator and test-bench GUI.
-//   benchpilot [--sim analyzer|stage] [--port PATH [--instrument analyzer|stage] [--profile FILE] [--baud N]]
+//   benchpilot [--lang system|en|zh_CN] [--sim analyzer|stage] [--port PATH [--instrument analyzer|stage] [--profile FILE] [--baud N]]
 //   benchpilot [--api-socket PATH | --no-api] [--api-websocket PORT [--api-token-file FILE] [--api-allow-origin URL]...]
-//   benchpilot --screenshot FILE --screen NAME [--sim analyzer|stage] [--settle-ms N] [--home-first] [--exercise] [--tune] [--recipe FILE]
+//   benchpilot [--lang …] --screenshot FILE --screen NAME [--sim analyzer|stage] [--settle-ms N] [--home-first] [--exercise] [--tune] [--recipe FILE]
 #include "main_window.h"
 #include "screenshot.h"
 #include "app/cli/command.h"
@@ -10,9 +10,12 @@
 #include "device/files/machine_profile_file.h"
 #include "device/link/serial_transport.h"
 
+#include "widgets/wording/translators.h"
+
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QEventLoop>
+#include <QSettings>
 #include <QTimer>
 
 #include <cstdio>
@@ -98,7 +101,10 @@ int main(int argc, char** argv)
     QCommandLineOption apiOrigin(QStringLiteral("api-allow-origin"),
                                  QApplication::translate("main", "a browser Origin the WebSocket accepts (repeat for more; none by default)"),
                                  QStringLiteral("url"));
-    p.addOptions({sim, port, instrument, profile, baud, shot, screen, settle, script, exercise, tune, recipe,
+    QCommandLineOption lang(QStringLiteral("lang"),
+                            QApplication::translate("main", "language of the screens: system, en or zh_CN (default: the Language menu's choice)"),
+                            QStringLiteral("language"));
+    p.addOptions({sim, port, instrument, profile, baud, shot, screen, settle, script, exercise, tune, recipe, lang,
                   apiSocket, noApi, apiWebSocket, apiToken, apiOrigin});
     QCoreApplication::setOrganizationName(QStringLiteral("BenchPilot"));
     QCoreApplication::setApplicationName(QStringLiteral("benchpilot"));
@@ -127,6 +133,13 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "benchpilot: unexpected argument '%s'\ntry 'benchpilot --help'\n", qPrintable(p.positionalArguments().first()));
         return 1;
     }
+    // Before any window exists, so the first texts are already in the language.
+    words::Translators translators;
+    const QString language = p.isSet(lang) ? p.value(lang) : QSettings().value(QStringLiteral("language"), QStringLiteral("system")).toString();
+    if (!translators.setLanguage(language) && p.isSet(lang)) {
+        std::fprintf(stderr, "benchpilot: --lang '%s': no such language (system, en, zh_CN)\n", qPrintable(language));
+        return 1;
+    }
     if (p.isSet(shot)) {
         app::ScreenshotRequest r;
         r.file = p.value(shot);
@@ -141,6 +154,7 @@ int main(int argc, char** argv)
     }
     // --sim and --port say what to connect this time (over what was remembered).
     app::MainWindowOptions options;
+    options.translators = &translators;
     auto fail = [](const QString& m) {
         std::fprintf(stderr, "benchpilot: %s\ntry 'benchpilot --help'\n", qPrintable(m));
         return 1;

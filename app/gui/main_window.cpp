@@ -19,6 +19,11 @@
 #include "widgets/scan/scan_screen.h"
 #include "widgets/wording/wording.h"
 
+#include "widgets/wording/wording.h"
+
+#include "widgets/wording/translators.h"
+
+#include <QActionGroup>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileDialog>
@@ -28,6 +33,8 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QMenu>
+#include <QMenuBar>
 #include <QSettings>
 #include <QShortcut>
 #include <QStackedWidget>
@@ -170,7 +177,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     m_nav->setCurrentRow(0);
 
     m_log = new ui::EventLog;
-    auto* dock = new QDockWidget(tr("Event log"), this);
+    auto* dock = m_logDock = new QDockWidget(tr("Event log"), this);
     dock->setObjectName(QStringLiteral("eventLogDock"));
     dock->setWidget(m_log);
     dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
@@ -196,6 +203,10 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
         auto* sc = new QShortcut(QKeySequence(Qt::CTRL | static_cast<Qt::Key>(Qt::Key_0 + i)), this);
         connect(sc, &QShortcut::activated, this, [this, i] { m_nav->setCurrentRow(i - 1); });
     }
+
+    if (m_options.translators)
+        buildLanguageMenu();
+    retranslateUi();
 
     resize(1400, 860);
     ui::ConnectionChoice choices[2];
@@ -355,21 +366,20 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
         if (st == dev::LinkState::Lost)
             m_banner->show(ui::MessageBanner::Level::Error,
                            tr("%1: link lost. Motion on the instrument stops by itself; reconnect when the cable is back.").arg(s->name()));
-        m_log->addNote(s->name(), tr("link"), dev::linkStateName(st), st == dev::LinkState::Lost);
+        m_log->addNote(s->kind(), "log.kind.link", msg::make("telemetry.link_state", {msg::term("state", dev::linkStateTerm(st))}),
+                       st == dev::LinkState::Lost);
     });
     connect(c, &dev::Instrument::statusChanged, this, [this] { updateEStopUi(); });
-    connect(c, &dev::Instrument::linkError, this, [this, s](const QString& m) {
-        m_banner->show(ui::MessageBanner::Level::Error, QStringLiteral("%1: %2").arg(s->name(), m));
-        m_log->addNote(s->name(), tr("link error"), m, true);
+    connect(c, &dev::Instrument::linkError, this, [this, s](const msg::Message& m) {
+        m_banner->show(ui::MessageBanner::Level::Error, QStringLiteral("%1: %2").arg(s->name(), words::text(m)));
+        m_log->addNote(s->kind(), "log.kind.link_error", m, true);
     });
     connect(c, &dev::Instrument::requestFailed, this, [this, s](const dev::RequestError& e) {
-        // A refusal with its structured form (a GRBL error:N with its meaning) is worded here.
-        const QString text = e.detail.empty() ? e.message : words::text(e.detail);
-        m_banner->show(ui::MessageBanner::Level::Error, QStringLiteral("%1: %2").arg(s->name(), text));
-        m_log->addNote(s->name(), tr("refused"), e.message, true);
+        m_banner->show(ui::MessageBanner::Level::Error, QStringLiteral("%1: %2").arg(s->name(), words::text(e.message)));
+        m_log->addNote(s->kind(), "log.kind.refused", e.message, true);
     });
     connect(c, &dev::Instrument::eventReceived, this, [this, s, c](const dev::DeviceEvent& e) {
-        m_log->addEvent(s->name(), c->identity(), e);
+        m_log->addEvent(s->kind(), c->identity(), e);
         if (e.kind == proto::EventKind::LimitHit || e.kind == proto::EventKind::Fault || e.kind == proto::EventKind::LostSteps)
             m_banner->show(ui::MessageBanner::Level::Warning, QStringLiteral("%1: %2").arg(s->name(), e.text));
     });
@@ -381,7 +391,7 @@ void MainWindow::updateStatusBar()
     for (int i = 0; i < 2; ++i) {
         dev::Instrument* c = m_sessions[i]->instrument();
         const dev::LinkStats st = c->stats();
-        QString text = QStringLiteral("%1: %2").arg(m_sessions[i]->name(), dev::linkStateName(c->state()));
+        QString text = QStringLiteral("%1: %2").arg(m_sessions[i]->name(), words::term(dev::linkStateTerm(c->state())));
         if (c->state() == dev::LinkState::Ready)
             text += QStringLiteral(" · %1").arg(c->identity().model);
         const quint64 bad = st.crcErrors + st.malformed + st.oversize;
@@ -430,8 +440,76 @@ void MainWindow::resetEStop()
     m_banner->show(ui::MessageBanner::Level::Info, tr("E-stop cleared. Re-home the axes if anything was moved by hand."));
 }
 
+void MainWindow::buildLanguageMenu()
+{
+    m_settingsMenu = menuBar()->addMenu(QString());
+    m_languageMenu = m_settingsMenu->addMenu(QString());
+    m_languages = new QActionGroup(this);
+    // The languages are named in their own words, so a person who cannot read the
+    // current one still finds theirs.
+    const std::pair<QString, QString> entries[] = {{QStringLiteral("system"), QString()},
+                                                   {QStringLiteral("en"), QStringLiteral("English")},
+                                                   {QStringLiteral("zh_CN"), QStringLiteral("简体中文")}};
+    for (const auto& [code, name] : entries) {
+        QAction* a = m_languageMenu->addAction(name);
+        a->setData(code);
+        a->setCheckable(true);
+        m_languages->addAction(a);
+        connect(a, &QAction::triggered, this, [this, code = code] { setLanguage(code); });
+    }
+    QSettings st;
+    m_languageSetting = m_options.persistSettings ? st.value(QStringLiteral("language"), QStringLiteral("system")).toString()
+                                                  : m_options.translators->language();
+}
+
+void MainWindow::setLanguage(const QString& language)
+{
+    m_languageSetting = language;
+    if (m_options.persistSettings)
+        QSettings().setValue(QStringLiteral("language"), language);
+    if (m_options.translators)
+        m_options.translators->setLanguage(language);  // LanguageChange reaches every widget
+    retranslateUi();
+}
+
+void MainWindow::retranslateUi()
+{
+    setWindowTitle(tr("BenchPilot"));
+    const std::pair<const char*, QString> titles[] = {
+        {"jog", tr("Jog")},         {"plots", tr("Plots")},         {"profiles", tr("Profiles")},
+        {"tuning", tr("Tuning")},   {"joystick", tr("Joystick")},   {"patterns", tr("Patterns")},
+        {"plates", tr("Plates")},   {"scan", tr("Scan")},
+    };
+    for (int i = 0; i < m_screenNames.size() && i < m_nav->count(); ++i)
+        for (const auto& [name, title] : titles)
+            if (m_screenNames[i] == QLatin1String(name))
+                m_nav->item(i)->setText(title);
+    if (m_jogTabs && m_jogTabs->count() >= 2) {
+        m_jogTabs->setTabText(0, tr("Analyzer"));
+        m_jogTabs->setTabText(1, tr("Stage"));
+    }
+    m_reset->setText(tr("Reset E-stop"));
+    m_reset->setToolTip(tr("Clear the E-stop latch on both instruments (axes stay where they are)"));
+    m_estop->setText(tr("E-STOP\n(Esc)"));
+    m_estop->setToolTip(tr("Stop all motion on both instruments at once (Esc, from any screen)"));
+    if (m_logDock)
+        m_logDock->setWindowTitle(tr("Event log"));
+    if (m_settingsMenu) {
+        m_settingsMenu->setTitle(tr("&Settings"));
+        m_languageMenu->setTitle(tr("&Language"));
+        for (QAction* a : m_languages->actions()) {
+            if (a->data().toString() == QLatin1String("system"))
+                a->setText(tr("System default"));
+            a->setChecked(a->data().toString() == m_languageSetting);
+        }
+    }
+    updateStatusBar();
+}
+
 void MainWindow::changeEvent(QEvent* event)
 {
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
     // A hold whose key-up went to another application must not keep the machine moving.
     if (event->type() == QEvent::ActivationChange && !isActiveWindow())
         for (auto* s : m_sessions)

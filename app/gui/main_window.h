@@ -29,6 +29,13 @@ class PlatesScreen;
 class ScanScreen;
 } // namespace ui
 
+namespace words {
+class Translators;
+}
+class QActionGroup;
+class QDockWidget;
+class QMenu;
+
 namespace app {
 
 class InstrumentSession;
@@ -42,6 +49,9 @@ struct MainWindowOptions {
     std::optional<ui::ConnectionChoice> connection[2];
     int showInstrument = -1;      ///< 0 analyzer, 1 stage: the instrument the command line named
     ApiOptions api;               ///< the scripting API (docs/api.md); no socket path: none
+    /// The program's translators (main.cpp owns them); the Language menu switches
+    /// them. nullptr: the window has no Language menu (tests that do not switch).
+    words::Translators* translators = nullptr;
 };
 
 class MainWindow : public QMainWindow {
@@ -79,6 +89,12 @@ protected:
     void changeEvent(QEvent* event) override;
 
 private:
+    /// The window's own texts (title, navigation, E-stop, docks, menus); the screens
+    /// reword themselves on the same LanguageChange.
+    void retranslateUi();
+    /// Installs `language` ("system", "en", "zh_CN") at once and keeps it for the next start.
+    void setLanguage(const QString& language);
+    void buildLanguageMenu();
     void addScreen(const QString& name, const QString& title, QWidget* screen);
     void wireApi(QDockWidget* logDock);
     void wireSession(int index, ui::ConnectionBar* bar);
@@ -109,6 +125,11 @@ private:
     QPushButton* m_reset;
     QLabel* m_statusLabels[2];
     bool m_positionLostShown[2] = {false, false};
+    QDockWidget* m_logDock = nullptr;
+    QMenu* m_settingsMenu = nullptr;
+    QMenu* m_languageMenu = nullptr;
+    QActionGroup* m_languages = nullptr;
+    QString m_languageSetting = QStringLiteral("system");
 };
 
 } // namespace app

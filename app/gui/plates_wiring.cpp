@@ -4,6 +4,8 @@
 #include "device/files/plates/plate_paths.h"
 #include "widgets/plates/plates_screen.h"
 
+#include "widgets/wording/wording.h"
+
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
@@ -19,7 +21,7 @@ jobs::InterruptedChoice askAboutInterrupted(QWidget* window, const jobs::Interru
     QMessageBox box(QMessageBox::Warning, QObject::tr("A well was interrupted"),
                     QObject::tr("The run stopped during \"%1\", after its plunger move had been sent.\n\n%2.\n\n"
                                 "Skip counts the well as done; Do again repeats it in full.")
-                        .arg(op.label, op.evidence),
+                        .arg(words::text(op.label), words::text(op.evidence)),
                     QMessageBox::NoButton, window);
     auto* skip = box.addButton(QObject::tr("Skip"), QMessageBox::AcceptRole);
     auto* redo = box.addButton(QObject::tr("Do again"), QMessageBox::DestructiveRole);

@@ -56,7 +56,7 @@ void PtyTransport::open()
         if (m_master >= 0)
             emit opened();
         else
-            emit failed(m_error);
+            emit failed(msg::make("link.cannot_open", {msg::verbatim("port", "pty"), msg::verbatim("detail", m_error.toStdString())}));
     });
 }
 

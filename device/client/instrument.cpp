@@ -39,10 +39,10 @@ msg::Message Instrument::missingReason(Capability c) const
 
 void Instrument::unlock(Callback done)
 {
-    refuse(done, RequestError::Kind::Invalid, tr("this instrument has no alarm lock to release: home it instead"));
+    refuse(done, RequestError::Kind::Invalid, msg::make("request.no_alarm_lock"));
 }
 
-void Instrument::refuse(const Callback& done, RequestError::Kind kind, const QString& message)
+void Instrument::refuse(const Callback& done, RequestError::Kind kind, const msg::Message& message)
 {
     RequestError e;
     e.kind = kind;

@@ -126,7 +126,7 @@ signals:
     void eventReceived(const dev::DeviceEvent& event);
     void telemetryReceived(const proto::TelemetryBatch& batch);
     /// Something went wrong on the link or with a request; for a status bar or log.
-    void linkError(const QString& message);
+    void linkError(const msg::Message& message);
     void requestFailed(const dev::RequestError& error);
     void samplesLost(quint64 totalLost);
     /// Something worth a line in the event log that changes no state: a controller's own
@@ -142,7 +142,7 @@ protected:
     virtual msg::Message missingReason(Capability c) const;
     /// For backends: a refusal of `what` before anything is sent (bad axis, a missing
     /// capability), reported like a device's refusal.
-    void refuse(const Callback& done, RequestError::Kind kind, const QString& message);
+    void refuse(const Callback& done, RequestError::Kind kind, const msg::Message& message);
 };
 
 /// The term that names an instrument kind in messages: "instrument.analyzer", "instrument.stage".

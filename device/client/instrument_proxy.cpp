@@ -50,7 +50,7 @@ bool InstrumentProxy::noBackend(const Callback& done)
 {
     if (m_backend)
         return false;
-    refuse(done, RequestError::Kind::LinkDown, tr("the instrument is not connected"));
+    refuse(done, RequestError::Kind::LinkDown, msg::make("request.instrument_not_connected"));
     return true;
 }
 
@@ -59,7 +59,7 @@ void InstrumentProxy::connectLink()
     if (m_backend)
         m_backend->connectLink();
     else
-        emit linkError(tr("no connection chosen"));
+        emit linkError(msg::make("link.no_connection_chosen"));
 }
 
 void InstrumentProxy::disconnectLink()

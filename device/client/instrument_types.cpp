@@ -1,19 +1,17 @@
 #include "device/client/instrument_types.h"
 
-#include <QCoreApplication>
-
 namespace dev {
 
-QString linkStateName(LinkState s)
+const char* linkStateTerm(LinkState s)
 {
     switch (s) {
-    case LinkState::Disconnected: return QCoreApplication::translate("dev", "disconnected");
-    case LinkState::Connecting: return QCoreApplication::translate("dev", "connecting");
-    case LinkState::Identified: return QCoreApplication::translate("dev", "identified");
-    case LinkState::Ready: return QCoreApplication::translate("dev", "ready");
-    case LinkState::Lost: return QCoreApplication::translate("dev", "link lost");
+    case LinkState::Disconnected: return "link.state.disconnected";
+    case LinkState::Connecting: return "link.state.connecting";
+    case LinkState::Identified: return "link.state.identified";
+    case LinkState::Ready: return "link.state.ready";
+    case LinkState::Lost: return "link.state.lost";
     }
-    return {};
+    return "link.state.disconnected";
 }
 
 QString AxisDescriptor::unitName() const
@@ -31,8 +29,7 @@ int DeviceIdentity::axisIndex(QChar letter) const
 
 QString DeviceIdentity::kindName() const
 {
-    return kind == proto::DeviceKind::Stage ? QCoreApplication::translate("dev", "stage")
-                                            : QCoreApplication::translate("dev", "analyzer");
+    return kind == proto::DeviceKind::Stage ? QStringLiteral("stage") : QStringLiteral("analyzer");
 }
 
 bool InstrumentStatus::anyMoving() const

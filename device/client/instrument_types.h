@@ -15,7 +15,8 @@
 namespace dev {
 
 enum class LinkState { Disconnected, Connecting, Identified, Ready, Lost };
-QString linkStateName(LinkState s);
+/// The state's term for people ("link.state.ready"; words::linkState words it).
+const char* linkStateTerm(LinkState s);
 
 struct AxisDescriptor {
     QChar letter;
@@ -53,6 +54,8 @@ struct DeviceIdentity {
     std::uint32_t maxTelemetryRateHz = 0;
     int jogWatchdogMs = 0;                ///< a velocity jog not renewed is at rest this long after (0: the device has no watchdog)
     int axisIndex(QChar letter) const;
+    /// "stage" or "analyzer": the key in JSON and logs, the same in every language.
+    /// People read words::term(dev::instrumentTerm(kind)).
     QString kindName() const;
     bool reportsMotionLimits() const { return motionProfile != proto::MotionProfile::Unstated; }
 };

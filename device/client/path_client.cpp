@@ -1,38 +1,35 @@
 #include "device/client/path_client.h"
 
-#include <QCoreApplication>
-
 namespace dev {
 
-QString pathStateText(proto::PathState s)
+const char* pathStateTerm(proto::PathState s)
 {
     switch (s) {
-    case proto::PathState::Idle: return QCoreApplication::translate("dev::PathClient", "idle");
-    case proto::PathState::Filling: return QCoreApplication::translate("dev::PathClient", "filling");
-    case proto::PathState::Running: return QCoreApplication::translate("dev::PathClient", "running");
-    case proto::PathState::Starved: return QCoreApplication::translate("dev::PathClient", "waiting for segments");
-    case proto::PathState::Holding: return QCoreApplication::translate("dev::PathClient", "holding");
-    case proto::PathState::Held: return QCoreApplication::translate("dev::PathClient", "held");
-    case proto::PathState::Done: return QCoreApplication::translate("dev::PathClient", "done");
-    case proto::PathState::Aborted: return QCoreApplication::translate("dev::PathClient", "aborted");
+    case proto::PathState::Idle: return "path.state.idle";
+    case proto::PathState::Filling: return "path.state.filling";
+    case proto::PathState::Running: return "path.state.running";
+    case proto::PathState::Starved: return "path.state.starved";
+    case proto::PathState::Holding: return "path.state.holding";
+    case proto::PathState::Held: return "path.state.held";
+    case proto::PathState::Done: return "path.state.done";
+    case proto::PathState::Aborted: return "path.state.aborted";
     }
-    return {};
+    return "path.state.idle";
 }
 
-QString pathReasonText(proto::PathReason r)
+const char* pathReasonTerm(proto::PathReason r)
 {
     switch (r) {
-    case proto::PathReason::None: return {};
-    case proto::PathReason::HostHold: return QCoreApplication::translate("dev::PathClient", "paused from BenchPilot");
-    case proto::PathReason::HostSilent:
-        return QCoreApplication::translate("dev::PathClient", "the instrument heard nothing from BenchPilot for a second");
-    case proto::PathReason::Stop: return QCoreApplication::translate("dev::PathClient", "a stop");
-    case proto::PathReason::EStop: return QCoreApplication::translate("dev::PathClient", "the E-stop");
-    case proto::PathReason::LimitSwitch: return QCoreApplication::translate("dev::PathClient", "a limit switch");
-    case proto::PathReason::NewSession: return QCoreApplication::translate("dev::PathClient", "a new connection to the instrument");
-    case proto::PathReason::Cleared: return QCoreApplication::translate("dev::PathClient", "abort");
+    case proto::PathReason::None: return "path.reason.none";
+    case proto::PathReason::HostHold: return "path.reason.host_hold";
+    case proto::PathReason::HostSilent: return "path.reason.host_silent";
+    case proto::PathReason::Stop: return "path.reason.stop";
+    case proto::PathReason::EStop: return "path.reason.estop";
+    case proto::PathReason::LimitSwitch: return "path.reason.limit_switch";
+    case proto::PathReason::NewSession: return "path.reason.new_session";
+    case proto::PathReason::Cleared: return "path.reason.cleared";
     }
-    return {};
+    return "path.reason.none";
 }
 
 } // namespace dev

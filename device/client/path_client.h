@@ -33,8 +33,9 @@ struct PathQueueState {
     double accelMmS2 = 0;
     double junctionDeviationMm = 0;
 };
-QString pathStateText(proto::PathState s);    ///< for people, through tr()
-QString pathReasonText(proto::PathReason r);  ///< "the host went silent", …
+/// Terms for people (words::term): "path.state.running", "path.reason.host_silent", …
+const char* pathStateTerm(proto::PathState s);
+const char* pathReasonTerm(proto::PathReason r);
 
 class PathClient : public QObject {
     Q_OBJECT

@@ -17,13 +17,10 @@ struct RequestError {
     proto::ErrorCode code = proto::ErrorCode::BadPayload;  ///< for Kind::Device
     int axis = -1;
     double value = 0;         ///< axis units where an axis is named, else as sent
-    QString message;          ///< whole sentence for a person
-    /// The same refusal as structured data, when the backend has it (a GRBL error:N names its
-    /// code and the line it answers: grbl.error{code, line}); the app words it with
-    /// words::text() and the CLI's JSON carries it. Empty from backends that give only `message`.
-    msg::Message detail;
+    msg::Message message;     ///< request.*, device.refused, link.*: worded by words::text (docs/wording.md)
 };
 
 } // namespace dev
 
 Q_DECLARE_METATYPE(dev::RequestError)
+Q_DECLARE_METATYPE(msg::Message)

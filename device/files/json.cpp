@@ -61,6 +61,19 @@ const char* typeName(Value::Type t)
     return "?";
 }
 
+const char* typeTerm(Value::Type t)
+{
+    switch (t) {
+    case Value::Type::Null: return "json.type.null";
+    case Value::Type::Bool: return "json.type.bool";
+    case Value::Type::Number: return "json.type.number";
+    case Value::Type::String: return "json.type.string";
+    case Value::Type::Array: return "json.type.array";
+    case Value::Type::Object: return "json.type.object";
+    }
+    return "json.type.null";
+}
+
 namespace {
 
 class Parser {
@@ -71,7 +84,7 @@ public:
     {
         ParseResult r;
         if (m_s.size() > kMaxTextBytes) {
-            r.error = {"the text is larger than " + std::to_string(kMaxTextBytes / (1024 * 1024)) + " MiB", {}};
+            r.error = {msg::make("file.json.too_large", {msg::integer("max", static_cast<long long>(kMaxTextBytes / (1024 * 1024)), msg::Unit::None)}), {}};
             return r;
         }
         if (m_s.size() >= 3 && std::memcmp(m_s.data(), "\xEF\xBB\xBF", 3) == 0)
@@ -82,7 +95,7 @@ public:
             return fail();
         skipSpace();
         if (m_i != m_s.size()) {
-            error("unexpected text after the end of the document");
+            error(msg::make("file.json.text_after_end"));
             return fail();
         }
         r.value = std::move(v);
@@ -97,8 +110,8 @@ private:
         return r;
     }
 
-    bool error(std::string message) { return errorAt(std::move(message), here()); }
-    bool errorAt(std::string message, Position p)
+    bool error(msg::Message message) { return errorAt(std::move(message), here()); }
+    bool errorAt(msg::Message message, Position p)
     {
         if (!m_failed) {
             m_failed = true;
@@ -129,14 +142,16 @@ private:
         }
     }
 
-    static std::string describe(char c)
+    /// What stood where something else was expected, as the `found` argument.
+    static msg::Arg describe(char c)
     {
         if (c == '\0')
-            return "the end of the text";
+            return msg::nested("found", msg::make("file.json.found_end"));
         if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F)
-            return "a byte 0x" + hex(static_cast<unsigned char>(c));
-        return std::string("'") + c + "'";
+            return msg::nested("found", msg::make("file.json.found_byte", {msg::verbatim("byte", "0x" + hex(static_cast<unsigned char>(c)))}));
+        return msg::nested("found", msg::make("file.json.found_char", {msg::verbatim("char", std::string(1, c))}));
     }
+    static msg::Message expected(const char* id, char c) { return msg::make(id, {describe(c)}); }
     static std::string hex(unsigned v)
     {
         const char* d = "0123456789ABCDEF";
@@ -146,7 +161,7 @@ private:
     bool parseValue(Value& out, int depth)
     {
         if (depth > kMaxDepth)
-            return error("nested deeper than " + std::to_string(kMaxDepth) + " levels");
+            return error(msg::make("file.json.too_deep", {msg::integer("max", kMaxDepth, msg::Unit::None)}));
         const Position start = here();
         bool ok = false;
         switch (peek()) {
@@ -166,9 +181,9 @@ private:
             if (peek() == '-' || (peek() >= '0' && peek() <= '9'))
                 ok = parseNumber(out);
             else if (peek() == '/')
-                return error("comments are not allowed in JSON");
+                return error(msg::make("file.json.comment"));
             else
-                return error("expected a value, found " + describe(peek()));
+                return error(expected("file.json.expected_value", peek()));
         }
         if (ok)
             out.setPosition(start);
@@ -179,7 +194,7 @@ private:
     {
         const std::size_t n = std::strlen(word);
         if (m_s.substr(m_i, n) != word)
-            return error("expected a value, found " + describe(peek()));
+            return error(expected("file.json.expected_value", peek()));
         m_i += n;
         return true;
     }
@@ -192,17 +207,17 @@ private:
         if (peek() == '0') {
             ++m_i;
             if (peek() >= '0' && peek() <= '9')
-                return error("a number may not have leading zeros");
+                return error(msg::make("file.json.leading_zero"));
         } else if (peek() >= '1' && peek() <= '9') {
             while (peek() >= '0' && peek() <= '9')
                 ++m_i;
         } else {
-            return error("expected a digit, found " + describe(peek()));
+            return error(expected("file.json.expected_digit", peek()));
         }
         if (peek() == '.') {
             ++m_i;
             if (!(peek() >= '0' && peek() <= '9'))
-                return error("expected a digit after the decimal point, found " + describe(peek()));
+                return error(expected("file.json.expected_fraction_digit", peek()));
             while (peek() >= '0' && peek() <= '9')
                 ++m_i;
         }
@@ -211,7 +226,7 @@ private:
             if (peek() == '+' || peek() == '-')
                 ++m_i;
             if (!(peek() >= '0' && peek() <= '9'))
-                return error("expected a digit in the exponent, found " + describe(peek()));
+                return error(expected("file.json.expected_exponent_digit", peek()));
             while (peek() >= '0' && peek() <= '9')
                 ++m_i;
         }
@@ -220,11 +235,11 @@ private:
         const auto [ptr, ec] = std::from_chars(m_s.data() + start, m_s.data() + m_i, v);
         if (ec == std::errc::result_out_of_range || !std::isfinite(v)) {
             m_i = start;
-            return error("the number is too large for a double");
+            return error(msg::make("file.json.number_too_large"));
         }
         if (ec != std::errc() || ptr != m_s.data() + m_i) {
             m_i = start;
-            return error("malformed number");
+            return error(msg::make("file.json.malformed_number"));
         }
         out = Value(v);
         return true;
@@ -243,7 +258,7 @@ private:
             else if (c >= 'A' && c <= 'F')
                 d = static_cast<unsigned>(c - 'A' + 10);
             else
-                return error("expected four hex digits after \\u");
+                return error(msg::make("file.json.bad_unicode_escape"));
             out = out * 16 + d;
             ++m_i;
         }
@@ -283,18 +298,18 @@ private:
         } else if (b0 >= 0xF0 && b0 <= 0xF4) {
             n = 3; cp = b0 & 0x07u; min = 0x10000;
         } else {
-            return error("invalid UTF-8 byte 0x" + hex(b0));
+            return error(msg::make("file.json.invalid_utf8_byte", {msg::verbatim("byte", "0x" + hex(b0))}));
         }
         if (m_i + static_cast<std::size_t>(n) >= m_s.size())
-            return error("truncated UTF-8 character");
+            return error(msg::make("file.json.truncated_utf8"));
         for (int k = 1; k <= n; ++k) {
             const auto b = static_cast<unsigned char>(m_s[m_i + static_cast<std::size_t>(k)]);
             if ((b & 0xC0) != 0x80)
-                return error("invalid UTF-8 sequence");
+                return error(msg::make("file.json.invalid_utf8"));
             cp = (cp << 6) | (b & 0x3Fu);
         }
         if (cp < min || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF))
-            return error("invalid UTF-8 sequence");
+            return error(msg::make("file.json.invalid_utf8"));
         s.append(m_s.data() + m_i, static_cast<std::size_t>(n) + 1);
         m_i += static_cast<std::size_t>(n) + 1;
         m_continuations += static_cast<std::size_t>(n);
@@ -306,15 +321,14 @@ private:
         ++m_i;  // opening quote
         for (;;) {
             if (atEnd())
-                return error("unterminated string");
+                return error(msg::make("file.json.unterminated_string"));
             const char c = m_s[m_i];
             if (c == '"') {
                 ++m_i;
                 return true;
             }
             if (static_cast<unsigned char>(c) < 0x20)
-                return error(c == '\n' ? "unterminated string (a line break inside quotes)"
-                                       : "a control character inside a string must be escaped");
+                return error(msg::make(c == '\n' ? "file.json.line_break_in_string" : "file.json.control_character"));
             if (static_cast<unsigned char>(c) >= 0x80) {
                 if (!copyUtf8(out))
                     return false;
@@ -344,22 +358,22 @@ private:
                 if (cp >= 0xD800 && cp <= 0xDBFF) {
                     unsigned lo = 0;
                     if (peek() != '\\' || m_s.substr(m_i, 2) != "\\u")
-                        return error("a \\u escape of a high surrogate must be followed by a low surrogate");
+                        return error(msg::make("file.json.lone_high_surrogate"));
                     m_i += 2;
                     if (!hex4(lo))
                         return false;
                     if (lo < 0xDC00 || lo > 0xDFFF)
-                        return error("a \\u escape of a high surrogate must be followed by a low surrogate");
+                        return error(msg::make("file.json.lone_high_surrogate"));
                     cp = 0x10000 + ((cp - 0xD800) << 10) + (lo - 0xDC00);
                 } else if (cp >= 0xDC00 && cp <= 0xDFFF) {
-                    return error("a lone low surrogate in a \\u escape");
+                    return error(msg::make("file.json.lone_low_surrogate"));
                 }
                 appendUtf8(out, cp);
                 break;
             }
             default:
                 --m_i;
-                return error("unknown escape \\" + describe(e));
+                return error(msg::make("file.json.unknown_escape", {describe(e)}));
             }
         }
     }
@@ -384,14 +398,14 @@ private:
                 ++m_i;
                 skipSpace();
                 if (peek() == ']')
-                    return error("a trailing comma before ']' is not allowed");
+                    return error(msg::make("file.json.trailing_comma", {msg::verbatim("bracket", "]")}));
                 continue;
             }
             if (peek() == ']') {
                 ++m_i;
                 return true;
             }
-            return error("expected ',' or ']' in an array, found " + describe(peek()));
+            return error(expected("file.json.expected_array_comma", peek()));
         }
     }
 
@@ -408,15 +422,15 @@ private:
         for (;;) {
             skipSpace();
             if (peek() != '"')
-                return error(peek() == '}' ? "a trailing comma before '}' is not allowed"
-                                           : "expected a quoted member name, found " + describe(peek()));
+                return error(peek() == '}' ? msg::make("file.json.trailing_comma", {msg::verbatim("bracket", "}")})
+                                           : expected("file.json.expected_member_name", peek()));
             Member m;
             m.keyPosition = here();
             if (!parseString(m.key))
                 return false;
             skipSpace();
             if (peek() != ':')
-                return error("expected ':' after the member name \"" + m.key + "\", found " + describe(peek()));
+                return error(msg::make("file.json.expected_colon", {msg::verbatim("member", m.key.substr(0, 60)), describe(peek())}));
             ++m_i;
             skipSpace();
             if (!parseValue(m.value, depth + 1))
@@ -431,7 +445,7 @@ private:
                 ++m_i;
                 break;
             }
-            return error("expected ',' or '}' in an object, found " + describe(peek()));
+            return error(expected("file.json.expected_object_comma", peek()));
         }
         // Duplicate keys: which one a reader keeps is undefined in JSON, so neither is.
         std::vector<std::size_t> order(members.size());
@@ -441,7 +455,7 @@ private:
         for (std::size_t k = 1; k < order.size(); ++k)
             if (members[order[k]].key == members[order[k - 1]].key) {
                 const std::size_t second = std::max(order[k], order[k - 1]);
-                return errorAt("the member \"" + members[second].key + "\" appears twice", members[second].keyPosition);
+                return errorAt(msg::make("file.json.duplicate_member", {msg::verbatim("member", members[second].key.substr(0, 60))}), members[second].keyPosition);
             }
         out.members() = std::move(members);
         return true;

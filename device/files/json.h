@@ -2,7 +2,10 @@
 // A strict JSON reader and writer (RFC 8259) that remembers where every value
 // stood in its text, so the readers of the files people keep (recipes, plates,
 // patterns, scan plans, tuning results) can name the file, line and column of
-// the field at fault. Plain C++ with no Qt, so it can be fuzzed like the codec.
+// the field at fault. Plain C++ with no Qt, so it can be fuzzed like the codec;
+// its problems are messages (file.json.*), worded where the language is known.
+#include "motion/message.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -81,7 +84,8 @@ struct Member {
     Position keyPosition;
 };
 
-const char* typeName(Value::Type t);
+const char* typeName(Value::Type t);  ///< "a number": for logs and tests
+const char* typeTerm(Value::Type t);  ///< "json.type.number": for people (words::term)
 
 /// Nesting deeper than this is refused (a reader's stack stays bounded on any input).
 constexpr int kMaxDepth = 128;
@@ -89,7 +93,7 @@ constexpr int kMaxDepth = 128;
 constexpr std::size_t kMaxTextBytes = 64u * 1024 * 1024;
 
 struct ParseError {
-    std::string message;
+    msg::Message message;  ///< file.json.* (docs/wording.md; worded in widgets/wording/file_words.cpp)
     Position position;
 };
 

@@ -6,9 +6,17 @@
 
 namespace jsonio {
 
-void Problems::add(Position at, std::string path, std::string message)
+void Problems::add(Position at, std::string path, msg::Message message, bool warning)
 {
-    m_list.push_back(Problem{at, std::move(path), std::move(message)});
+    m_list.push_back(Problem{at, std::move(path), std::move(message), warning});
+}
+
+bool Problems::hasErrors() const
+{
+    for (const Problem& p : m_list)
+        if (!p.warning)
+            return true;
+    return false;
 }
 
 std::string Problems::format(std::string_view fileName) const
@@ -18,7 +26,38 @@ std::string Problems::format(std::string_view fileName) const
         out += std::string(fileName) + ":" + std::to_string(p.position.line) + ":" + std::to_string(p.position.column) + ": ";
         if (!p.path.empty())
             out += p.path + ": ";
-        out += p.message + "\n";
+        if (p.warning)
+            out += "warning: ";
+        out += msg::debugString(p.message) + "\n";
+    }
+    return out;
+}
+
+void appendSorted(FileProblems& out, const Problems& found, const std::string& file)
+{
+    std::vector<Problem> sorted = found.list();
+    std::stable_sort(sorted.begin(), sorted.end(), [](const Problem& a, const Problem& b) {
+        return a.position.line != b.position.line ? a.position.line < b.position.line : a.position.column < b.position.column;
+    });
+    for (Problem& p : sorted)
+        out.push_back({file, std::move(p)});
+}
+
+int errorCount(const FileProblems& problems)
+{
+    int n = 0;
+    for (const FileProblem& p : problems)
+        n += p.problem.warning ? 0 : 1;
+    return n;
+}
+
+std::string debugFormat(const FileProblems& problems)
+{
+    std::string out;
+    for (const FileProblem& p : problems) {
+        Problems one;
+        one.add(p.problem.position, p.problem.path, p.problem.message, p.problem.warning);
+        out += one.format(p.file);
     }
     return out;
 }
@@ -35,6 +74,20 @@ std::string childPath(std::string_view parent, std::size_t index)
     return std::string(parent) + "[" + std::to_string(index) + "]";
 }
 
+msg::Message wrongType(Value::Type expected, Value::Type actual)
+{
+    return msg::make("file.json.wrong_type", {msg::term("expected", typeTerm(expected)), msg::term("actual", typeTerm(actual))});
+}
+
+msg::Message outOfRange(double value, double min, double max)
+{
+    if (min > -1e300 && max < 1e300)
+        return msg::make("file.json.out_of_range", {msg::real("value", value), msg::real("min", min), msg::real("max", max)});
+    if (min > -1e300)
+        return msg::make("file.json.below_min", {msg::real("value", value), msg::real("min", min)});
+    return msg::make("file.json.above_max", {msg::real("value", value), msg::real("max", max)});
+}
+
 std::string formatNumber(double v)
 {
     char buf[32];
@@ -46,7 +99,7 @@ ObjectReader::ObjectReader(const Value& object, std::string path, Problems& prob
     : m_obj(object), m_path(std::move(path)), m_problems(problems), m_valid(object.isObject())
 {
     if (!m_valid)
-        m_problems.add(object, m_path, std::string("must be an object, not ") + typeName(object.type()));
+        m_problems.add(object, m_path, wrongType(Value::Type::Object, object.type()));
 }
 
 const Value* ObjectReader::get(std::string_view key, Value::Type type, bool required)
@@ -56,12 +109,11 @@ const Value* ObjectReader::get(std::string_view key, Value::Type type, bool requ
     const Value* v = m_obj.find(key);
     if (!v) {
         if (required)
-            m_problems.add(m_obj, pathOf(key), "is missing");
+            m_problems.add(m_obj, pathOf(key), msg::make("file.json.missing"));
         return nullptr;
     }
     if (v->type() != type) {
-        m_problems.add(*v, pathOf(key),
-                       std::string("must be ") + typeName(type) + ", not " + typeName(v->type()));
+        m_problems.add(*v, pathOf(key), wrongType(type, v->type()));
         return nullptr;
     }
     return v;
@@ -74,14 +126,7 @@ std::optional<double> ObjectReader::number(std::string_view key, bool required, 
         return std::nullopt;
     const double x = v->asNumber();
     if (x < min || x > max) {
-        std::string range;
-        if (min > -1e300 && max < 1e300)
-            range = "must be from " + formatNumber(min) + " to " + formatNumber(max);
-        else if (min > -1e300)
-            range = "must be at least " + formatNumber(min);
-        else
-            range = "must be at most " + formatNumber(max);
-        m_problems.add(*v, pathOf(key), range + " (got " + formatNumber(x) + ")");
+        m_problems.add(*v, pathOf(key), outOfRange(x, min, max));
         return std::nullopt;
     }
     return x;
@@ -94,12 +139,11 @@ std::optional<long long> ObjectReader::integer(std::string_view key, bool requir
         return std::nullopt;
     const double x = v->asNumber();
     if (std::floor(x) != x) {
-        m_problems.add(*v, pathOf(key), "must be a whole number (got " + formatNumber(x) + ")");
+        m_problems.add(*v, pathOf(key), msg::make("file.json.not_whole", {msg::real("value", x)}));
         return std::nullopt;
     }
     if (x < static_cast<double>(min) || x > static_cast<double>(max)) {
-        m_problems.add(*v, pathOf(key),
-                       "must be from " + std::to_string(min) + " to " + std::to_string(max) + " (got " + formatNumber(x) + ")");
+        m_problems.add(*v, pathOf(key), outOfRange(x, static_cast<double>(min), static_cast<double>(max)));
         return std::nullopt;
     }
     return static_cast<long long>(x);
@@ -132,7 +176,7 @@ std::optional<std::string> ObjectReader::oneOf(std::string_view key, bool requir
     std::string list;
     for (std::string_view a : allowed)
         list += (list.empty() ? "" : ", ") + std::string("\"") + std::string(a) + "\"";
-    m_problems.add(*v, pathOf(key), "\"" + v->asString() + "\" is not one of " + list);
+    m_problems.add(*v, pathOf(key), msg::make("file.json.not_one_of", {msg::verbatim("value", v->asString().substr(0, 60)), msg::verbatim("allowed", list)}));
     return std::nullopt;
 }
 
@@ -180,35 +224,34 @@ void ObjectReader::refuseUnknown(const std::vector<std::string_view>& known)
             }
         }
         m_problems.add(m.keyPosition, pathOf(m.key),
-                       "unknown field" + (best.empty() ? std::string() : "; did you mean \"" + std::string(best) + "\"?"));
+                       best.empty() ? msg::make("file.json.unknown_field")
+                                    : msg::make("file.json.unknown_field_suggest", {msg::verbatim("suggestion", std::string(best))}));
     }
 }
 
 std::optional<int> checkSchema(const Value& root, std::string_view name, int newestVersion, Problems& problems)
 {
     if (!root.isObject()) {
-        problems.add(root, "", std::string("the document must be an object, not ") + typeName(root.type()));
+        problems.add(root, "", msg::make("file.json.document_not_object", {msg::term("actual", typeTerm(root.type()))}));
         return std::nullopt;
     }
     const Value* schema = root.find("schema");
     if (!schema || !schema->isString()) {
-        problems.add(schema ? *schema : root, "schema",
-                     "must name the file's kind: \"schema\": \"" + std::string(name) + "\"");
+        problems.add(schema ? *schema : root, "schema", msg::make("file.json.schema_missing", {msg::verbatim("schema", std::string(name))}));
         return std::nullopt;
     }
     if (schema->asString() != name) {
-        problems.add(*schema, "schema", "is \"" + schema->asString() + "\", expected \"" + std::string(name) + "\"");
+        problems.add(*schema, "schema", msg::make("file.json.schema_wrong", {msg::verbatim("value", schema->asString().substr(0, 60)), msg::verbatim("schema", std::string(name))}));
         return std::nullopt;
     }
     const Value* version = root.find("version");
     if (!version || !version->isNumber() || std::floor(version->asNumber()) != version->asNumber() || version->asNumber() < 1) {
-        problems.add(version ? *version : root, "version", "must be a whole number from 1");
+        problems.add(version ? *version : root, "version", msg::make("file.json.version_invalid"));
         return std::nullopt;
     }
     if (version->asNumber() > newestVersion) {
-        problems.add(*version, "version",
-                     "is " + formatNumber(version->asNumber()) + ": written by a newer BenchPilot (this one reads up to "
-                         + std::to_string(newestVersion) + ")");
+        problems.add(*version, "version", msg::make("file.json.version_newer", {msg::real("value", version->asNumber()),
+                                                                         msg::integer("newest", newestVersion, msg::Unit::None)}));
         return std::nullopt;
     }
     return static_cast<int>(version->asNumber());

@@ -14,24 +14,45 @@
 namespace jsonio {
 
 struct Problem {
-    Position position;
+    Position position;    ///< line 0: the file as a whole (it cannot be read)
     std::string path;     ///< "" for the document as a whole
-    std::string message;  ///< a sentence fragment without the location: "must be at least 0 (got -5)"
+    msg::Message message; ///< what is wrong, without the location (file.json.*, or the model's own ids)
+    bool warning = false; ///< a warning does not refuse the file
 };
 
 class Problems {
 public:
-    void add(Position at, std::string path, std::string message);
-    void add(const Value& at, std::string path, std::string message) { add(at.position(), std::move(path), std::move(message)); }
+    void add(Position at, std::string path, msg::Message message, bool warning = false);
+    void add(const Value& at, std::string path, msg::Message message, bool warning = false)
+    {
+        add(at.position(), std::move(path), std::move(message), warning);
+    }
     bool empty() const { return m_list.empty(); }
     std::size_t size() const { return m_list.size(); }
+    bool hasErrors() const;
+    /// The file as a whole could not be read (file.cannot_open, …): line 0, no field.
+    void addFileProblem(msg::Message message) { add(Position{0, 0}, "", std::move(message)); }
     const std::vector<Problem>& list() const { return m_list; }
-    /// One line per problem: "FILE:LINE:COLUMN: PATH: MESSAGE".
+    /// One line per problem: "FILE:LINE:COLUMN: PATH: id{args}" — for logs, fuzzers and
+    /// test failures. People read words::fileProblems (widgets/wording/wording.h).
     std::string format(std::string_view fileName) const;
 
 private:
     std::vector<Problem> m_list;
 };
+
+/// A problem of a named file, for lists that span several files (a recipe and the
+/// labware files it names).
+struct FileProblem {
+    std::string file;  ///< the name a person knows it by ("sampling-96.recipe.json")
+    Problem problem;
+};
+using FileProblems = std::vector<FileProblem>;
+/// Every problem of `found`, in the order of the file (line, then column), under `file`.
+void appendSorted(FileProblems& out, const Problems& found, const std::string& file);
+int errorCount(const FileProblems& problems);
+/// "FILE:LINE:COLUMN: PATH: id{args}", one a line: for logs and test failures.
+std::string debugFormat(const FileProblems& problems);
 
 /// "steps" + 3 → "steps[3]"; "steps[3]" + "volume_ul" → "steps[3].volume_ul".
 std::string childPath(std::string_view parent, std::string_view key);
@@ -80,7 +101,12 @@ std::optional<int> checkSchema(const Value& root, std::string_view name, int new
 /// Starts an object with the header, for writers.
 Value schemaObject(std::string_view name, int version);
 
-/// A number for messages: up to 6 significant digits, no trailing zeros.
+/// file.json.wrong_type {expected, actual} (terms json.type.*).
+msg::Message wrongType(Value::Type expected, Value::Type actual);
+/// file.json.out_of_range {value, min, max}, or below_min / above_max when one side is open.
+msg::Message outOfRange(double value, double min, double max);
+
+/// A number for logs: up to 6 significant digits, no trailing zeros.
 std::string formatNumber(double v);
 
 } // namespace jsonio

@@ -48,7 +48,7 @@ struct Reader {
             return;
         const auto& items = v->items();
         if (items.size() != 2 || !items[0].isNumber() || !items[1].isNumber()) {
-            o.problems().add(*v, o.pathOf(key), "must be two numbers [x, y]");
+            o.problems().add(*v, o.pathOf(key), msg::make("file.json.array_of_numbers", {msg::integer("count", 2)}));
             return;
         }
         into = {items[0].asNumber(), items[1].asNumber()};
@@ -221,15 +221,19 @@ std::string writePattern(const Pattern& p)
     return jsonio::write(v);
 }
 
-bool loadPatternFile(const QString& path, Pattern* pattern, QString* error)
+bool loadPatternFile(const QString& path, Pattern* pattern, jsonio::Problems* problems)
 {
     std::string text;
-    if (!readText(path, &text, error))
+    msg::Message error;
+    if (!readText(path, &text, &error)) {
+        if (problems)
+            problems->addFileProblem(error);
         return false;
+    }
     PatternReadResult r = parsePattern(text);
     if (!r.pattern) {
-        if (error)
-            *error = QString::fromStdString(r.problems.format(QFileInfo(path).fileName().toStdString()));
+        if (problems)
+            *problems = std::move(r.problems);
         return false;
     }
     if (pattern)
@@ -237,7 +241,7 @@ bool loadPatternFile(const QString& path, Pattern* pattern, QString* error)
     return true;
 }
 
-bool savePatternFile(const QString& path, const Pattern& pattern, QString* error)
+bool savePatternFile(const QString& path, const Pattern& pattern, msg::Message* error)
 {
     return writeAtomically(path, writePattern(pattern), error);
 }

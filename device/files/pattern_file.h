@@ -29,8 +29,8 @@ PatternReadResult parsePattern(std::string_view text);
 /// of its shape (only those).
 std::string writePattern(const motion::plans::Pattern& pattern);
 
-/// False with every problem in *error, one per line, prefixed with the file's name.
-bool loadPatternFile(const QString& path, motion::plans::Pattern* pattern, QString* error);
-bool savePatternFile(const QString& path, const motion::plans::Pattern& pattern, QString* error);
+/// False with every problem in *problems (words::fileProblems words them with the file's name).
+bool loadPatternFile(const QString& path, motion::plans::Pattern* pattern, jsonio::Problems* problems);
+bool savePatternFile(const QString& path, const motion::plans::Pattern& pattern, msg::Message* error);
 
 } // namespace files

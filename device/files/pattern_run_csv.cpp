@@ -31,7 +31,7 @@ std::string patternRunCsv(const std::vector<jobs::PatternRunSample>& samples)
     return out;
 }
 
-bool savePatternRunCsv(const QString& path, const std::vector<jobs::PatternRunSample>& samples, QString* error)
+bool savePatternRunCsv(const QString& path, const std::vector<jobs::PatternRunSample>& samples, msg::Message* error)
 {
     return writeAtomically(path, patternRunCsv(samples), error);
 }

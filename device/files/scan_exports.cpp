@@ -156,10 +156,10 @@ std::string scanCsv(const ScanPlan& plan, const ScanLayout& layout, const std::v
 }
 
 bool writeExports(const QString& folder, const ScanPlan& plan, const ScanLayout& layout,
-                  const std::vector<PositionRecord>& records, QStringList* written, QString* error)
+                  const std::vector<PositionRecord>& records, QStringList* written, msg::Message* error)
 {
     if (!QDir().mkpath(folder)) {
-        *error = QCoreApplication::translate("scanfile", "Cannot make the folder %1.").arg(folder);
+        *error = msg::make("file.cannot_make_folder", {msg::verbatim("folder", folder.toStdString())});
         return false;
     }
     const QDir dir(folder);

@@ -10,6 +10,8 @@
 #include "motion/plans/scan/scan_layout.h"
 #include "motion/records/position_record.h"
 
+#include "motion/message.h"
+
 #include <QString>
 #include <QStringList>
 
@@ -42,6 +44,6 @@ constexpr const char* kCsvFile = "scan.csv";
 
 /// Writes the three exports into `folder` (made if missing). `written` gets their paths.
 bool writeExports(const QString& folder, const motion::scan::ScanPlan& plan, const motion::scan::ScanLayout& layout,
-                  const std::vector<motion::PositionRecord>& records, QStringList* written, QString* error);
+                  const std::vector<motion::PositionRecord>& records, QStringList* written, msg::Message* error);
 
 } // namespace scanfile

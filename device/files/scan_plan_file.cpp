@@ -23,18 +23,18 @@ constexpr double kScanAny = 1e300;  // ranges are the plan validator's job; the 
 std::optional<std::vector<double>> readNumbers(const Value& v, const std::string& path, std::size_t n, bool whole, Problems& p)
 {
     if (!v.isArray() || v.items().size() != n) {
-        p.add(v, path, "must be an array of " + std::to_string(n) + " numbers");
+        p.add(v, path, msg::make("file.json.array_of_numbers", {msg::integer("count", static_cast<long long>(n))}));
         return std::nullopt;
     }
     std::vector<double> out;
     for (std::size_t i = 0; i < n; ++i) {
         const Value& item = v.items()[i];
         if (!item.isNumber()) {
-            p.add(item, jsonio::childPath(path, i), std::string("must be a number, not ") + jsonio::typeName(item.type()));
+            p.add(item, jsonio::childPath(path, i), jsonio::wrongType(Value::Type::Number, item.type()));
             return std::nullopt;
         }
         if (whole && std::floor(item.asNumber()) != item.asNumber()) {
-            p.add(item, jsonio::childPath(path, i), "must be a whole number (got " + jsonio::formatNumber(item.asNumber()) + ")");
+            p.add(item, jsonio::childPath(path, i), msg::make("file.json.not_whole", {msg::real("value", item.asNumber())}));
             return std::nullopt;
         }
         out.push_back(item.asNumber());
@@ -68,7 +68,7 @@ std::optional<std::vector<double>> polyMember(ObjectReader& o, std::string_view 
     for (std::size_t i = 0; i < v->items().size(); ++i) {
         const Value& item = v->items()[i];
         if (!item.isNumber()) {
-            o.problems().add(item, jsonio::childPath(o.pathOf(key), i), "must be a number");
+            o.problems().add(item, jsonio::childPath(o.pathOf(key), i), jsonio::wrongType(Value::Type::Number, item.type()));
             return std::nullopt;
         }
         out.push_back(item.asNumber());
@@ -91,7 +91,7 @@ void readRegion(const Value& v, ScanPlan& plan, Problems& p)
         if (!corners)
             return;
         if (corners->items().size() != 2) {
-            p.add(*corners, "region.corners_mm", "must hold two opposite corners [[x, y], [x, y]]");
+            p.add(*corners, "region.corners_mm", msg::make("scan.file.two_corners"));
             return;
         }
         const auto a = readPoint(corners->items()[0], "region.corners_mm[0]", p);
@@ -367,21 +367,24 @@ Value planToJson(const ScanPlan& plan)
 
 std::string writePlan(const ScanPlan& plan) { return jsonio::write(planToJson(plan)) + "\n"; }
 
-bool loadPlan(const QString& path, ScanPlan* plan, QString* error)
+bool loadPlan(const QString& path, ScanPlan* plan, jsonio::Problems* problems)
 {
     std::string text;
-    if (!files::readText(path, &text, error))
+    msg::Message error;
+    if (!files::readText(path, &text, &error)) {
+        problems->addFileProblem(error);
         return false;
+    }
     PlanReadResult r = parsePlan(text);
     if (!r.plan) {
-        *error = QString::fromStdString(r.problems.format(QFileInfo(path).fileName().toStdString())).trimmed();
+        *problems = std::move(r.problems);
         return false;
     }
     *plan = std::move(*r.plan);
     return true;
 }
 
-bool savePlan(const QString& path, const ScanPlan& plan, QString* error)
+bool savePlan(const QString& path, const ScanPlan& plan, msg::Message* error)
 {
     return files::writeAtomically(path, writePlan(plan), error);
 }

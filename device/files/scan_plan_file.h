@@ -31,8 +31,9 @@ std::string writePlan(const motion::scan::ScanPlan& plan);
 /// the nearest enclosing value that is there (a field left to its default).
 jsonio::Position locate(const jsonio::Value& root, const std::string& path);
 
-/// False with every problem ("FILE:LINE:COL: field: message" lines) in `error`.
-bool loadPlan(const QString& path, motion::scan::ScanPlan* plan, QString* error);
-bool savePlan(const QString& path, const motion::scan::ScanPlan& plan, QString* error);
+/// False with every problem in `problems` (words::fileProblems words them, with the
+/// file, line and column).
+bool loadPlan(const QString& path, motion::scan::ScanPlan* plan, jsonio::Problems* problems);
+bool savePlan(const QString& path, const motion::scan::ScanPlan& plan, msg::Message* error);
 
 } // namespace scanfile

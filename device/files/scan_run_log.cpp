@@ -43,13 +43,13 @@ std::optional<std::vector<double>> readAxes(ObjectReader& o, std::string_view ke
     std::vector<double> out;
     for (const Value& item : v->items()) {
         if (!item.isNumber()) {
-            o.problems().add(item, o.pathOf(key), "must hold numbers (mm)");
+            o.problems().add(item, o.pathOf(key), jsonio::wrongType(jsonio::Value::Type::Number, item.type()));
             return std::nullopt;
         }
         out.push_back(item.asNumber());
     }
     if (out.size() != 2) {
-        o.problems().add(*v, o.pathOf(key), "must hold two positions, X and Y (mm)");
+        o.problems().add(*v, o.pathOf(key), msg::make("file.json.array_of_numbers", {msg::integer("count", 2)}));
         return std::nullopt;
     }
     return out;
@@ -110,7 +110,7 @@ RunLogReadResult parseRunLog(std::string_view text)
                 const auto fp = o.string("fingerprint", true);
                 const auto tiles = o.integer("tiles", true, 1, 1000000000);
                 if (fp && (fp->size() != 16 || fp->find_first_not_of("0123456789abcdef") != std::string::npos))
-                    lp.add(*parsed.value->find("fingerprint"), "fingerprint", "must be 16 lower-case hex digits");
+                    lp.add(*parsed.value->find("fingerprint"), "fingerprint", msg::make("file.log.bad_fingerprint"));
                 else if (name && fp && tiles) {
                     log.planName = *name;
                     log.fingerprint = std::strtoull(fp->c_str(), nullptr, 16);
@@ -146,7 +146,7 @@ RunLogReadResult parseRunLog(std::string_view text)
         addShifted(out.problems, lp, lineNo);
     }
     if (!header && out.problems.empty())
-        out.problems.add(jsonio::Position{1, 1}, "", "the run log is empty: it has no header line");
+        out.problems.add(jsonio::Position{1, 1}, "", msg::make("file.log.empty"));
     if (out.problems.empty())
         out.log = std::move(log);
     return out;

@@ -50,4 +50,54 @@ bool writeAtomically(const QString& path, const std::string& text, QString* erro
     return true;
 }
 
+namespace {
+msg::Message fileProblem(const char* id, const QString& path, const QString& detail)
+{
+    return msg::make(id, {msg::verbatim("file", path.toStdString()), msg::verbatim("detail", detail.toStdString())});
+}
+} // namespace
+
+bool readText(const QString& path, std::string* text, msg::Message* error, qint64 maxBytes)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) {
+        if (error)
+            *error = fileProblem("file.cannot_open", path, f.errorString());
+        return false;
+    }
+    if (f.size() > maxBytes) {
+        if (error)
+            *error = msg::make("file.too_large", {msg::verbatim("file", path.toStdString()),
+                                                  msg::real("size", f.size() / (1024.0 * 1024.0)),
+                                                  msg::integer("max", maxBytes / (1024 * 1024), msg::Unit::None)});
+        return false;
+    }
+    const QByteArray bytes = f.readAll();
+    if (f.error() != QFileDevice::NoError) {
+        if (error)
+            *error = fileProblem("file.cannot_read", path, f.errorString());
+        return false;
+    }
+    text->assign(bytes.constData(), static_cast<std::size_t>(bytes.size()));
+    return true;
+}
+
+bool writeAtomically(const QString& path, const std::string& text, msg::Message* error)
+{
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly)) {
+        if (error)
+            *error = fileProblem("file.cannot_write", path, f.errorString());
+        return false;
+    }
+    const qint64 n = static_cast<qint64>(text.size());
+    if (f.write(text.data(), n) != n || !f.commit()) {
+        if (error)
+            *error = fileProblem("file.cannot_write", path, f.errorString());
+        f.cancelWriting();
+        return false;
+    }
+    return true;
+}
+
 } // namespace files

@@ -123,19 +123,18 @@ std::string tuningToJson(const TuningResult& r)
     return jsonio::write(root);
 }
 
-TuningRead tuningFromJson(std::string_view text, std::string_view fileName)
+TuningRead tuningFromJson(std::string_view text)
 {
     TuningRead out;
     const jsonio::ParseResult parsed = jsonio::parse(text);
     if (!parsed) {
-        out.problems = std::string(fileName) + ":" + std::to_string(parsed.error.position.line) + ":"
-            + std::to_string(parsed.error.position.column) + ": " + parsed.error.message + "\n";
+        out.problems.add(parsed.error.position, "", parsed.error.message);
         return out;
     }
     Problems p;
     const Value& root = *parsed.value;
     if (!jsonio::checkSchema(root, kTuningSchema, kTuningVersion, p)) {
-        out.problems = p.format(fileName);
+        out.problems = std::move(p);
         return out;
     }
     TuningResult r;
@@ -169,9 +168,9 @@ TuningRead tuningFromJson(std::string_view text, std::string_view fileName)
     const Value* relay = o.get("relay", Value::Type::Object, false);
     const Value* ug = o.get("ultimate_gain", Value::Type::Object, false);
     if (r.method == "relay" && !relay)
-        p.add(root, "relay", "is missing (method is \"relay\")");
+        p.add(root, "relay", msg::make("tuning.file.missing_for_method", {msg::verbatim("method", "relay")}));
     if (r.method == "ultimate-gain" && !ug)
-        p.add(root, "ultimate_gain", "is missing (method is \"ultimate-gain\")");
+        p.add(root, "ultimate_gain", msg::make("tuning.file.missing_for_method", {msg::verbatim("method", "ultimate-gain")}));
     if (relay) {
         ObjectReader rr(*relay, "relay", p);
         if (auto v = rr.number("amplitude", true, 0, kBig))
@@ -218,7 +217,7 @@ TuningRead tuningFromJson(std::string_view text, std::string_view fileName)
         TuningResult::Verification v;
         const auto rule = vo.string("rule", true);
         if (rule && !motion::control::findRule(*rule))
-            p.add(*vo.value().find("rule"), "verification.rule", "\"" + *rule + "\" is not a rule BenchPilot knows");
+            p.add(*vo.value().find("rule"), "verification.rule", msg::make("tuning.file.unknown_rule", {msg::verbatim("rule", rule->substr(0, 40))}));
         if (rule)
             v.rule = *rule;
         if (const Value* g = vo.get("gains", Value::Type::Object, true))
@@ -254,26 +253,30 @@ TuningRead tuningFromJson(std::string_view text, std::string_view fileName)
     o.refuseUnknown({"schema", "version", "target", "unit", "method", "created_utc", "control_period_s", "ku", "tu_s", "runs",
                      "envelope", "relay", "ultimate_gain", "rules", "verification", "note"});
     if (!p.empty()) {
-        out.problems = p.format(fileName);
+        out.problems = std::move(p);
         return out;
     }
     out.result = r;
     return out;
 }
 
-bool saveTuningFile(const QString& path, const TuningResult& result, QString* error)
+bool saveTuningFile(const QString& path, const TuningResult& result, msg::Message* error)
 {
     return writeAtomically(path, tuningToJson(result), error);
 }
 
-std::optional<TuningResult> loadTuningFile(const QString& path, QString* error)
+std::optional<TuningResult> loadTuningFile(const QString& path, jsonio::Problems* problems)
 {
     std::string text;
-    if (!readText(path, &text, error))
+    msg::Message error;
+    if (!readText(path, &text, &error)) {
+        if (problems)
+            problems->addFileProblem(error);
         return std::nullopt;
-    const TuningRead r = tuningFromJson(text, QFileInfo(path).fileName().toStdString());
-    if (!r.result && error)
-        *error = QString::fromStdString(r.problems).trimmed();
+    }
+    TuningRead r = tuningFromJson(text);
+    if (!r.result && problems)
+        *problems = std::move(r.problems);
     return r.result;
 }
 

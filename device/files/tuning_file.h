@@ -2,6 +2,7 @@
 // Tuning results as files people keep: schema "benchpilot.tuning", version 1
 // (docs/tuning_results.md). Reading reports every problem at once with line,
 // column and field path; writing is atomic.
+#include "device/files/json_fields.h"
 #include "motion/control/tuning/tuning_result.h"
 
 #include <QString>
@@ -21,12 +22,12 @@ std::string tuningToJson(const motion::control::TuningResult& result);
 
 struct TuningRead {
     std::optional<motion::control::TuningResult> result;
-    std::string problems;  ///< one line per problem ("FILE:LINE:COLUMN: PATH: MESSAGE"); empty when read
+    jsonio::Problems problems;  ///< empty when read; problems.format(file) for logs, words::fileProblems for people
 };
 /// Plain C++: what the fuzzer drives.
-TuningRead tuningFromJson(std::string_view text, std::string_view fileName);
+TuningRead tuningFromJson(std::string_view text);
 
-bool saveTuningFile(const QString& path, const motion::control::TuningResult& result, QString* error);
-std::optional<motion::control::TuningResult> loadTuningFile(const QString& path, QString* error);
+bool saveTuningFile(const QString& path, const motion::control::TuningResult& result, msg::Message* error);
+std::optional<motion::control::TuningResult> loadTuningFile(const QString& path, jsonio::Problems* problems);
 
 } // namespace files

@@ -15,22 +15,23 @@ using motion::path::Segment;
 using motion::path::Vec2;
 
 namespace {
-QString mm3(double v) { return QString::number(v, 'f', 3); }
+msg::Arg patternMm(const char* name, double v) { return msg::real(name, v, msg::Unit::Mm); }
+msg::Arg patternCount(const char* name, std::size_t v) { return msg::integer(name, static_cast<long long>(v), msg::Unit::None); }
 }
 
-QString PatternRunner::stateText(State s)
+const char* PatternRunner::stateTerm(State s)
 {
     switch (s) {
-    case State::Idle: return tr("ready");
-    case State::Approaching: return tr("moving to the start");
-    case State::Running: return tr("running");
-    case State::Paused: return tr("paused");
-    case State::Done: return tr("done");
-    case State::Aborted: return tr("aborted");
-    case State::Interrupted: return tr("interrupted");
-    case State::Failed: return tr("refused");
+    case State::Idle: return "pattern.state.idle";
+    case State::Approaching: return "pattern.state.approaching";
+    case State::Running: return "pattern.state.running";
+    case State::Paused: return "pattern.state.paused";
+    case State::Done: return "pattern.state.done";
+    case State::Aborted: return "pattern.state.aborted";
+    case State::Interrupted: return "pattern.state.interrupted";
+    case State::Failed: return "pattern.state.failed";
     }
-    return {};
+    return "pattern.state.idle";
 }
 
 PatternRunner::PatternRunner(dev::Instrument* client, QObject* parent) : QObject(parent), m_client(client)
@@ -66,7 +67,7 @@ void PatternRunner::attachPaths()
     // Another backend took over (a reconnection that found another protocol): whatever
     // ran on the old one's queue is over.
     if (busy())
-        interrupt(tr("The instrument was replaced by another connection."));
+        interrupt(msg::make("pattern.run.replaced"));
     m_paths = paths;
     if (!paths)
         return;
@@ -87,8 +88,7 @@ void PatternRunner::attachPaths()
             return;
         ++m_underruns;
         if (!m_underrunSaid)
-            emit message(tr("The instrument ran out of queued segments and waited for more: the link is slower than the pattern."),
-                         true);
+            emit message(msg::make("pattern.run.underrun"), true);
         m_underrunSaid = true;
     });
     m_pathConnections << connect(paths, &dev::PathClient::finished, this, [this](quint32, quint64 us) {
@@ -100,14 +100,13 @@ void PatternRunner::attachPaths()
         emit progress(m_done, m_path.size());
         setState(State::Done);
         const PatternRunSummary s = summary();
-        // The contour error is only as fine as its samples: say how many, and at what rate
-        // (a GRBL controller's status reports, 5–10 Hz, against a BenchPilot device's telemetry).
-        emit message(tr("Pattern done in %1 s: contour error max %2 µm, RMS %3 µm (%4 samples at %5 Hz).")
-                         .arg(s.durationS, 0, 'f', 2)
-                         .arg(s.maxContourMm * 1e3, 0, 'f', 2)
-                         .arg(s.rmsContourMm * 1e3, 0, 'f', 2)
-                         .arg(s.samples)
-                         .arg(m_client ? m_client->subscribedRateHz() : 0),
+        emit message(msg::make("pattern.run.done", {msg::real("duration", s.durationS, msg::Unit::S),
+                                                    msg::real("max", s.maxContourMm * 1e3, msg::Unit::Um),
+                                                    msg::real("rms", s.rmsContourMm * 1e3, msg::Unit::Um),
+                                                    // The contour error is only as fine as its samples: how many, and at what
+                                                    // rate (a GRBL controller's status reports against a BenchPilot telemetry).
+                                                    patternCount("samples", static_cast<std::size_t>(s.samples)),
+                                                    msg::integer("rate", m_client ? m_client->subscribedRateHz() : 0, msg::Unit::Hz)}),
                      false);
         emit finished(s);
     });
@@ -117,7 +116,7 @@ void PatternRunner::attachPaths()
         setState(State::Paused);
         if (!m_pauseAsked)
             m_paths->queryStatus([this](const auto&, const dev::PathQueueState& s) {
-                emit message(tr("The instrument paused the pattern: %1. Press Resume to go on.").arg(dev::pathReasonText(s.reason)), true);
+                emit message(msg::make("pattern.run.held", {msg::term("reason", dev::pathReasonTerm(s.reason))}), true);
             });
         m_pauseAsked = false;
     });
@@ -128,14 +127,13 @@ void PatternRunner::attachPaths()
         if (m_abortAsked) {
             m_poll.stop();
             setState(State::Aborted);
-            emit message(tr("Pattern aborted at segment %1 of %2.").arg(index).arg(m_path.size()), false);
+            emit message(msg::make("pattern.run.aborted", {patternCount("segment", index), patternCount("total", m_path.size())}), false);
             emit finished(summary());
             return;
         }
         m_paths->queryStatus([this, index](const auto&, const dev::PathQueueState& s) {
-            interrupt(tr("The instrument stopped the pattern at segment %1 (%2). Press Resume to continue from there.")
-                          .arg(index)
-                          .arg(dev::pathReasonText(s.reason)));
+            interrupt(msg::make("pattern.run.stopped_by_instrument",
+                                {patternCount("segment", index), msg::term("reason", dev::pathReasonTerm(s.reason))}));
         });
         setState(State::Interrupted);
     });
@@ -151,47 +149,48 @@ Vec2 PatternRunner::machineXy() const
     return {st.axes[0].commanded, st.axes[1].commanded};
 }
 
-QStringList PatternRunner::preflight(const std::vector<Segment>& path, const Options& options) const
+std::vector<msg::Message> PatternRunner::preflight(const std::vector<Segment>& path, const Options& options) const
 {
-    QStringList out;
+    std::vector<msg::Message> out;
     if (!m_client || !m_paths || !m_paths->available()) {
-        out << tr("The instrument is not connected or cannot run paths.");
+        out.push_back(msg::make("pattern.run.no_path_queue"));
         return out;
     }
     const auto& id = m_client->identity();
     const auto& st = m_client->status();
     if (path.empty())
-        out << tr("The pattern has no segments.");
+        out.push_back(msg::make("pattern.run.no_segments"));
     if (st.estop)
-        out << tr("The E-stop is active: reset it first.");
+        out.push_back(msg::make("pattern.run.estop_active"));
     if (st.anyMoving())
-        out << tr("The instrument is still moving: wait until it is at rest.");
+        out.push_back(msg::make("pattern.run.still_moving"));
     for (int i = 0; i < 2 && i < st.axes.size(); ++i)
         if (!st.axes[i].homed)
-            out << tr("Axis %1 is not homed: home it first.").arg(id.axes[i].letter);
+            out.push_back(msg::make("pattern.run.not_homed", {msg::verbatim("axis", QString(id.axes[i].letter).toStdString())}));
     const int z = id.axisIndex(QLatin1Char('Z'));
     if (options.zMm) {
         if (z < 0 || !m_client->capabilities().testFlag(dev::Capability::CoupledXyThenZ)) {
-            out << tr("This instrument has no Z axis to work at a height.");
+            out.push_back(msg::make("pattern.run.no_z"));
         } else {
             if (!st.axes[z].homed)
-                out << tr("Axis Z is not homed: home it first.");
+                out.push_back(msg::make("pattern.run.not_homed", {msg::verbatim("axis", "Z")}));
             const auto& lim = m_client->softLimits()[z];
             if (*options.zMm < lim.min || *options.zMm > lim.max)
-                out << tr("Z %1 mm is outside its soft limits %2 … %3 mm.").arg(mm3(*options.zMm), mm3(lim.min), mm3(lim.max));
+                out.push_back(msg::make("pattern.run.z_outside_limits", {patternMm("value", *options.zMm), patternMm("min", lim.min), patternMm("max", lim.max)}));
         }
     }
     const double vmax = m_paths->limits().maxSpeedMmS;
     for (std::size_t k = 0; k < path.size(); ++k)
         if (path[k].feedMmS > vmax + 1e-9) {
-            out << tr("Segment %1: feed %2 mm/s is above the instrument's %3 mm/s.").arg(k).arg(path[k].feedMmS).arg(vmax);
+            out.push_back(msg::make("pattern.run.feed_too_high", {patternCount("segment", k), msg::real("feed", path[k].feedMmS, msg::Unit::MmPerS),
+                                                                  msg::real("max", vmax, msg::Unit::MmPerS)}));
             break;
         }
     if (m_client->softLimits().size() >= 2 && !path.empty()) {
         const auto& lx = m_client->softLimits()[0];
         const auto& ly = m_client->softLimits()[1];
         if (auto v = motion::plans::outsideLimits(path, {lx.min, ly.min, lx.max, ly.max}))
-            out << tr("The pattern leaves the soft limits: %1.").arg(QString::fromStdString(v->message));
+            out.push_back(v->message);
     }
     return out;
 }
@@ -216,30 +215,36 @@ void PatternRunner::setState(State s)
     emit stateChanged(s);
 }
 
-void PatternRunner::fail(const QString& why)
+void PatternRunner::fail(const msg::Message& why) { fail(std::vector<msg::Message>{why}); }
+
+void PatternRunner::fail(const std::vector<msg::Message>& why)
 {
     m_poll.stop();
     m_arrived = nullptr;
     setState(State::Failed);
-    emit message(why, true);
+    for (const msg::Message& m : why)
+        emit message(m, true);
 }
 
-void PatternRunner::interrupt(const QString& why)
+void PatternRunner::interrupt(const msg::Message& why) { interrupt(std::vector<msg::Message>{why}); }
+
+void PatternRunner::interrupt(const std::vector<msg::Message>& why)
 {
     m_poll.stop();
     m_arrived = nullptr;
     m_appendInFlight = false;
     setState(State::Interrupted);
-    emit message(why, true);
+    for (const msg::Message& m : why)
+        emit message(m, true);
 }
 
 bool PatternRunner::start(std::vector<Segment> path, const Options& options)
 {
     if (busy())
         return false;
-    const QStringList problems = preflight(path, options);
-    if (!problems.isEmpty()) {
-        fail(problems.join(QLatin1Char(' ')));
+    const std::vector<msg::Message> problems = preflight(path, options);
+    if (!problems.empty()) {
+        fail(problems);
         return false;
     }
     m_path = std::move(path);
@@ -283,7 +288,7 @@ void PatternRunner::approach(Vec2 to, bool withZ, std::function<void()> then)
         if (!self || m_state != State::Approaching)
             return;
         if (e)
-            return fail(tr("Cannot move to the pattern's start: %1").arg(e->message));
+            return fail(msg::make("pattern.run.approach_refused", {msg::nested("cause", e->message)}));
         m_arrived = then;  // onStatus() goes on once the machine is at rest there
     });
 }
@@ -298,7 +303,7 @@ void PatternRunner::onStatus()
     auto then = std::move(m_arrived);
     m_arrived = nullptr;
     if (motion::path::norm(m_approachTo - machineXy()) > 1e-3)
-        return interrupt(tr("The move to the pattern's start was stopped before it arrived. Press Resume to try again."));
+        return interrupt(msg::make("pattern.run.approach_stopped"));
     then();
 }
 
@@ -310,7 +315,7 @@ void PatternRunner::beginAt(std::size_t index, std::optional<Vec2> from)
         if (m_state != State::Approaching && m_state != State::Running)
             return;
         if (e)
-            return fail(tr("The instrument refused the pattern: %1").arg(e->message));
+            return fail(msg::make("pattern.run.refused", {msg::nested("cause", e->message)}));
         m_sent = index;
         m_done = index;
         m_firstFrom = from;
@@ -369,7 +374,7 @@ void PatternRunner::onReply(const std::optional<dev::RequestError>& e, const dev
     }
     if (e->kind == dev::RequestError::Kind::Device) {
         m_paths->clear();
-        return fail(tr("The instrument refused the pattern: %1").arg(e->message));
+        return fail(msg::make("pattern.run.refused", {msg::nested("cause", e->message)}));
     }
     // Link trouble: the link handler says what happened.
 }
@@ -380,10 +385,7 @@ void PatternRunner::onLinkState(dev::LinkState s)
         return;
     if (!busy())
         return;
-    interrupt(tr("The link to the instrument was lost at segment %1 of %2. The instrument holds the path by itself within a "
-                 "second. Reconnect, then press Resume to continue from segment %1.")
-                  .arg(m_done)
-                  .arg(m_path.size()));
+    interrupt(msg::make("pattern.run.link_lost", {patternCount("segment", m_done), patternCount("total", m_path.size())}));
 }
 
 void PatternRunner::pause()
@@ -412,7 +414,7 @@ void PatternRunner::resume()
     if (m_state != State::Interrupted || m_path.empty())
         return;
     if (!m_paths->available())
-        return emit message(tr("Reconnect the instrument first."), true);
+        return emit message(msg::make("pattern.run.reconnect_first"), true);
     m_paths->queryStatus([this](const auto& e, const dev::PathQueueState& s) {
         if (e || m_state != State::Interrupted)
             return;
@@ -426,14 +428,14 @@ void PatternRunner::resume()
         }
         const std::size_t k = std::min(m_path.size() - 1, std::max(m_done, static_cast<std::size_t>(s.executingIndex)));
         m_done = k;
-        const QStringList problems = preflight({m_path.begin() + static_cast<std::ptrdiff_t>(k), m_path.end()}, m_options);
-        if (!problems.isEmpty())
-            return interrupt(problems.join(QLatin1Char(' ')));
+        const std::vector<msg::Message> problems = preflight({m_path.begin() + static_cast<std::ptrdiff_t>(k), m_path.end()}, m_options);
+        if (!problems.empty())
+            return interrupt(problems);
         m_abortAsked = m_pauseAsked = false;
         const Vec2 here = machineXy();
         const auto near = motion::path::nearestOn(m_path[k], here);
         const bool onIt = std::fabs(near.distanceMm) < kOnPathMm && near.alongMm < motion::path::lengthMm(m_path[k]);
-        emit message(tr("Continuing from segment %1.").arg(k), false);
+        emit message(msg::make("pattern.run.continuing", {patternCount("segment", k)}), false);
         m_tracker->seek(k);
         setState(State::Approaching);
         if (onIt)

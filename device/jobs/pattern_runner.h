@@ -43,7 +43,8 @@ class PatternRunner : public QObject {
     Q_OBJECT
 public:
     enum class State { Idle, Approaching, Running, Paused, Done, Aborted, Interrupted, Failed };
-    static QString stateText(State s);
+    /// The state's term for people ("pattern.state.running"), worded by words::term.
+    static const char* stateTerm(State s);
 
     struct Options {
         double approachSpeedMmS = 0;   ///< 0: the instrument's default speed
@@ -58,8 +59,8 @@ public:
     /// parts are replaced; an instrument without a path queue refuses every run.
     explicit PatternRunner(dev::Instrument* client, QObject* parent = nullptr);
 
-    /// Everything that keeps this path from running now; empty when it can.
-    QStringList preflight(const std::vector<motion::path::Segment>& path, const Options& options) const;
+    /// Everything that keeps this path from running now (pattern.run.*); empty when it can.
+    std::vector<msg::Message> preflight(const std::vector<motion::path::Segment>& path, const Options& options) const;
     /// How far the machine moves to reach the path's start (for a far-move confirmation).
     double approachDistanceMm(const std::vector<motion::path::Segment>& path) const;
     /// Estimated time of the path itself under the instrument's path limits.
@@ -91,15 +92,18 @@ public:
 signals:
     void stateChanged(jobs::PatternRunner::State state);
     void progress(std::size_t done, std::size_t total);
-    /// A sentence for a banner, a log or stderr; `problem` when something went wrong.
-    void message(const QString& text, bool problem);
+    /// A message for a banner, a log or stderr (pattern.run.*, worded by words::text);
+    /// `problem` when something went wrong.
+    void message(const msg::Message& text, bool problem);
     void finished(const jobs::PatternRunSummary& summary);
     void sampleAdded(const jobs::PatternRunSample& sample);
 
 private:
     void setState(State s);
-    void fail(const QString& why);
-    void interrupt(const QString& why);
+    void fail(const msg::Message& why);
+    void fail(const std::vector<msg::Message>& why);
+    void interrupt(const msg::Message& why);
+    void interrupt(const std::vector<msg::Message>& why);
     void approach(motion::path::Vec2 to, bool withZ, std::function<void()> then);
     void onStatus();
     void beginAt(std::size_t index, std::optional<motion::path::Vec2> from);

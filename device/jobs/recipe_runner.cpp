@@ -17,22 +17,42 @@ using platefiles::OpState;
 namespace {
 constexpr double kSameMm = 1e-6;
 
+const char* moveTerm(MoveKind k)
+{
+    switch (k) {
+    case MoveKind::Raise: return "recipe.move.raise";
+    case MoveKind::Travel: return "recipe.move.travel";
+    case MoveKind::Lower: return "recipe.move.lower";
+    case MoveKind::Pump: return "recipe.move.pump";
+    case MoveKind::Touch: return "recipe.move.touch";
+    case MoveKind::Dwell: return "recipe.move.dwell";
+    }
+    return "recipe.move.travel";
+}
+
 bool active(RunState s) { return s == RunState::Running || s == RunState::Pausing || s == RunState::Aborting; }
-QString mm(double v) { return QString::number(v, 'f', 2); }
+msg::Arg recipeMm(std::string name, double v) { return msg::real(std::move(name), v, msg::Unit::Mm); }
+msg::Arg recipeUl(std::string name, double v) { return msg::real(std::move(name), v, msg::Unit::Ul); }
 } // namespace
 
-QString runStateName(RunState s)
+const char* runStateTerm(RunState s)
 {
     switch (s) {
-    case RunState::Idle: return RecipeRunner::tr("idle");
-    case RunState::Running: return RecipeRunner::tr("running");
-    case RunState::Pausing: return RecipeRunner::tr("pausing after this well");
-    case RunState::Paused: return RecipeRunner::tr("paused");
-    case RunState::Aborting: return RecipeRunner::tr("aborting");
-    case RunState::Stopped: return RecipeRunner::tr("stopped");
-    case RunState::Finished: return RecipeRunner::tr("finished");
+    case RunState::Idle: return "recipe.state.idle";
+    case RunState::Running: return "recipe.state.running";
+    case RunState::Pausing: return "recipe.state.pausing";
+    case RunState::Paused: return "recipe.state.paused";
+    case RunState::Aborting: return "recipe.state.aborting";
+    case RunState::Stopped: return "recipe.state.stopped";
+    case RunState::Finished: return "recipe.state.finished";
     }
-    return {};
+    return "recipe.state.idle";
+}
+
+msg::Arg RecipeRunner::opArg(int op) const
+{
+    return msg::nested("op", op >= 0 && op < static_cast<int>(m_plan.ops.size()) ? m_plan.ops[static_cast<std::size_t>(op)].label()
+                                                                              : msg::make("recipe.run.the_run"));
 }
 
 RecipeRunner::RecipeRunner(dev::Instrument* client, QObject* parent) : QObject(parent), m_client(client)
@@ -63,16 +83,16 @@ double RecipeRunner::plungerNow() const
     return p >= 0 && p < m_client->status().axes.size() ? m_client->status().axes[p].commanded : 0.0;
 }
 
-bool RecipeRunner::setPlan(const plates::RecipePlan& plan, const QString& recipeName, QString* error)
+bool RecipeRunner::setPlan(const plates::RecipePlan& plan, const QString& recipeName, msg::Message* error)
 {
     if (active(m_state) || m_state == RunState::Paused) {
-        *error = tr("a run is under way: abort it before changing the recipe");
+        *error = msg::make("recipe.run.busy_changing");
         return false;
     }
     if (!plan.ok()) {
         for (const auto& p : plan.problems)
             if (!p.warning) {
-                *error = tr("the recipe does not validate: %1: %2").arg(QString::fromStdString(p.path), QString::fromStdString(p.message));
+                *error = msg::make("recipe.run.does_not_validate", {msg::verbatim("field", p.path), msg::nested("cause", p.message)});
                 break;
             }
         return false;
@@ -87,37 +107,37 @@ bool RecipeRunner::setPlan(const plates::RecipePlan& plan, const QString& recipe
     return true;
 }
 
-bool RecipeRunner::checkMachine(QString* error) const
+bool RecipeRunner::checkMachine(msg::Message* error) const
 {
     if (!m_client->isReady()) {
-        *error = tr("the analyzer is not connected");
+        *error = msg::make("recipe.run.not_connected");
         return false;
     }
     const auto& id = m_client->identity();
     if (id.kind != proto::DeviceKind::Analyzer || axis('X') < 0 || axis('Y') < 0 || axis('Z') < 0 || axis('P') < 0) {
-        *error = tr("recipes run on the analyzer (axes X, Y, Z and the pump P); this is the %1").arg(id.kindName());
+        *error = msg::make("recipe.run.not_an_analyzer", {msg::term("instrument", dev::instrumentTerm(id.kind))});
         return false;
     }
     const auto& st = m_client->status();
     if (st.estop) {
-        *error = tr("the E-stop is latched: reset it before running");
+        *error = msg::make("recipe.run.estop_latched");
         return false;
     }
     for (char c : {'X', 'Y', 'Z', 'P'}) {
         const int i = axis(c);
         if (i >= st.axes.size() || !st.axes[i].homed) {
-            *error = tr("axis %1 is not homed: home the analyzer first (a recipe moves to absolute positions)").arg(QLatin1Char(c));
+            *error = msg::make("recipe.run.not_homed", {msg::verbatim("axis", std::string(1, c))});
             return false;
         }
     }
     if (st.anyMoving()) {
-        *error = tr("the analyzer is still moving: wait until it is still");
+        *error = msg::make("recipe.run.still_moving");
         return false;
     }
     return true;
 }
 
-bool RecipeRunner::preflight(QString* error) const
+bool RecipeRunner::preflight(msg::Message* error) const
 {
     // Every target of the ops still to do against the device's soft limits, so a
     // run never stops half-way on a refusal it could have foreseen.
@@ -126,20 +146,21 @@ bool RecipeRunner::preflight(QString* error) const
     if (limits.size() <= std::max({ix, iy, iz, ip}))
         return true;  // not known yet: the device still refuses what is out of range
     auto outside = [&](int a, double v) { return v < limits[a].min - 1e-6 || v > limits[a].max + 1e-6; };
-    auto range = [&](int a) { return QStringLiteral("%1–%2").arg(mm(limits[a].min), mm(limits[a].max)); };
+
     double p = plungerNow(), pMin = p, pMax = p;
     for (std::size_t k = static_cast<std::size_t>(std::max(0, nextOpenOp(0))); k < m_plan.ops.size(); ++k) {
         const plates::PlanOp& op = m_plan.ops[k];
         if (platefiles::isClosed(m_opStates[k]))
             continue;
-        const QString what = QString::fromStdString(op.label());
+        const msg::Arg what = msg::nested("op", op.label());
         for (const MachineMove& m : op.moves) {
             if ((m.kind == MoveKind::Travel || m.kind == MoveKind::Touch) && (outside(ix, m.xMm) || outside(iy, m.yMm))) {
-                *error = tr("%1: (%2, %3) mm is beyond the soft limits X %4, Y %5 mm").arg(what, mm(m.xMm), mm(m.yMm), range(ix), range(iy));
+                *error = msg::make("recipe.run.xy_beyond_limits", {what, recipeMm("x", m.xMm), recipeMm("y", m.yMm), recipeMm("x_min", limits[ix].min),
+                                                                   recipeMm("x_max", limits[ix].max), recipeMm("y_min", limits[iy].min), recipeMm("y_max", limits[iy].max)});
                 return false;
             }
             if ((m.kind == MoveKind::Raise || m.kind == MoveKind::Lower) && outside(iz, m.zMm)) {
-                *error = tr("%1: Z %2 mm is beyond the soft limits %3 mm").arg(what, mm(m.zMm), range(iz));
+                *error = msg::make("recipe.run.z_beyond_limits", {what, recipeMm("z", m.zMm), recipeMm("min", limits[iz].min), recipeMm("max", limits[iz].max)});
                 return false;
             }
             if (m.kind == MoveKind::Pump) {
@@ -150,9 +171,8 @@ bool RecipeRunner::preflight(QString* error) const
         }
     }
     if (outside(ip, pMin) || outside(ip, pMax)) {
-        *error = tr("the plunger would travel %1–%2 µL (it is at %3 µL), beyond its limits %4 µL: %5")
-                     .arg(mm(pMin), mm(pMax), mm(plungerNow()), range(ip),
-                          pMax > limits[ip].max ? tr("empty the syringe first") : tr("the recipe dispenses more than it aspirates"));
+        *error = msg::make(pMax > limits[ip].max ? "recipe.run.plunger_beyond_limits_full" : "recipe.run.plunger_beyond_limits_empty",
+                           {recipeUl("from", pMin), recipeUl("to", pMax), recipeUl("now", plungerNow()), recipeUl("min", limits[ip].min), recipeUl("max", limits[ip].max)});
         return false;
     }
     return true;
@@ -175,9 +195,9 @@ bool RecipeRunner::logLine(jsonio::Value line)
 {
     if (m_log.write(std::move(line)))
         return true;
-    const QString why = m_log.lastError();
+    const msg::Message why = m_log.lastError();
     m_log.close();
-    stopRun(tr("%1: the run stopped, since what it does could no longer be recorded").arg(why));
+    stopRun(msg::make("recipe.run.log_failed", {msg::nested("cause", why)}));
     return false;
 }
 
@@ -189,14 +209,14 @@ int RecipeRunner::nextOpenOp(int from) const
     return static_cast<int>(m_opStates.size());
 }
 
-bool RecipeRunner::start(const QString& logPath, QString* error)
+bool RecipeRunner::start(const QString& logPath, msg::Message* error)
 {
     if (active(m_state) || m_state == RunState::Paused) {
-        *error = tr("a run is already under way");
+        *error = msg::make("recipe.run.already_running");
         return false;
     }
     if (m_plan.ops.empty()) {
-        *error = tr("no recipe to run");
+        *error = msg::make("recipe.run.no_recipe");
         return false;
     }
     m_opStates.assign(m_plan.ops.size(), OpState::NotStarted);
@@ -221,11 +241,10 @@ bool RecipeRunner::start(const QString& logPath, QString* error)
     m_pumpLogged = false;
     m_knowXy = m_knowZ = false;
     m_pumpUl = plungerNow();
-    emit message(tr("running %1: %2 wells, about %3 s; log %4")
-                     .arg(m_recipeName)
-                     .arg(m_plan.ops.size())
-                     .arg(std::lround(m_plan.totalTimeS))
-                     .arg(QFileInfo(logPath).fileName()),
+    emit message(msg::make("recipe.run.started", {msg::verbatim("recipe", m_recipeName.toStdString()),
+                                                  msg::integer("wells", static_cast<long long>(m_plan.ops.size())),
+                                                  msg::real("time", std::round(m_plan.totalTimeS), msg::Unit::S),
+                                                  msg::verbatim("log", QFileInfo(logPath).fileName().toStdString())}),
                  false);
     beginRunning();
     return true;
@@ -260,7 +279,9 @@ void RecipeRunner::nextMove()
         logLine(std::move(v));
         m_log.close();
         setState(RunState::Finished);
-        emit message(tr("%1 finished: %2 wells").arg(m_recipeName).arg(m_plan.ops.size()), false);
+        emit message(msg::make("recipe.run.finished", {msg::verbatim("recipe", m_recipeName.toStdString()),
+                                                       msg::integer("wells", static_cast<long long>(m_plan.ops.size()))}),
+                     false);
         emit finished(true);
         return;
     }
@@ -363,8 +384,7 @@ void RecipeRunner::sendMove(const MachineMove& planned)
             return;
         }
         if (err) {
-            stopRun(tr("the analyzer refused a move of %1: %2")
-                        .arg(QString::fromStdString(m_plan.ops[static_cast<std::size_t>(m_op)].label()), err->message));
+            stopRun(msg::make("recipe.run.move_refused", {opArg(m_op), msg::nested("cause", err->message)}));
             return;
         }
         m_replied = true;
@@ -399,7 +419,7 @@ void RecipeRunner::moveArrived()
     }
     if (m_state == RunState::Aborting) {
         setState(RunState::Stopped);
-        emit message(tr("aborted; the tip is up at Z %1 mm").arg(mm(m_z)), true);
+        emit message(msg::make("recipe.run.aborted_tip_up", {recipeMm("z", m_z)}), true);
         emit finished(false);
         return;
     }
@@ -425,7 +445,7 @@ void RecipeRunner::finishOp()
     emit progressChanged();
     if (m_pauseAsked && m_op < static_cast<int>(m_plan.ops.size())) {
         setState(RunState::Paused);
-        emit message(tr("paused after %1; Resume continues with the next well").arg(QString::fromStdString(op.label())), false);
+        emit message(msg::make("recipe.run.paused_after", {msg::nested("op", op.label())}), false);
         return;
     }
     nextMove();
@@ -437,13 +457,11 @@ void RecipeRunner::onEvent(const dev::DeviceEvent& e)
         return;
     using K = proto::EventKind;
     if (e.kind == K::EStop) {
-        stopRun(tr("E-stop: the run stopped at %1. Reset the E-stop, check the machine, then Resume")
-                    .arg(m_op >= 0 && m_op < static_cast<int>(m_plan.ops.size()) ? QString::fromStdString(m_plan.ops[static_cast<std::size_t>(m_op)].label())
-                                                                                   : QString()));
+        stopRun(msg::make("recipe.run.estop", {opArg(m_op)}));
         return;
     }
     if (e.kind == K::LostSteps || e.kind == K::Fault) {
-        stopRun(tr("%1: the run stopped; re-home before resuming").arg(e.text));
+        stopRun(msg::make("recipe.run.fault", {msg::term("event", proto::eventKindTerm(e.kind)), msg::verbatim("detail", e.text.toStdString())}));
         return;
     }
     if (!m_inFlight || e.axis < 0 || !(m_waitMask & (1u << e.axis)))
@@ -455,7 +473,8 @@ void RecipeRunner::onEvent(const dev::DeviceEvent& e)
     } else if (e.kind == K::Stopped || e.kind == K::LimitHit || e.kind == K::JogExpired) {
         if (m_state == RunState::Aborting)
             return;
-        stopRun(tr("%1 during %2").arg(e.text, QString::fromStdString(m_plan.ops[static_cast<std::size_t>(m_op)].label())));
+        stopRun(msg::make("recipe.run.event_during", {msg::term("event", proto::eventKindTerm(e.kind)), msg::verbatim("detail", e.text.toStdString()),
+                                                      opArg(m_op)}));
     }
 }
 
@@ -486,35 +505,29 @@ void RecipeRunner::onMoveTimeout()
     else
         arrived = arrived && at('X', m.xMm) && at('Y', m.yMm);
     if (arrived) {
-        emit message(tr("no MotionDone arrived for a %1 move, but the status shows it completed: going on").arg(QLatin1String(plates::moveKindName(m.kind))),
-                     false);
+        emit message(msg::make("recipe.run.motion_done_lost", {msg::term("move", moveTerm(m.kind))}), false);
         moveArrived();
         return;
     }
-    stopRun(tr("the analyzer did not finish a %1 move of %2 in time").arg(QLatin1String(plates::moveKindName(m.kind)),
-                                                                         QString::fromStdString(m_plan.ops[static_cast<std::size_t>(m_op)].label())));
+    stopRun(msg::make("recipe.run.move_timeout", {msg::term("move", moveTerm(m.kind)), opArg(m_op)}));
 }
 
 void RecipeRunner::onLinkState(dev::LinkState s)
 {
     if (s == dev::LinkState::Ready && m_state == RunState::Stopped && m_op >= 0 && m_op < static_cast<int>(m_plan.ops.size())) {
-        emit message(tr("the analyzer is back: Resume continues with %1").arg(QString::fromStdString(m_plan.ops[static_cast<std::size_t>(m_op)].label())),
-                     false);
+        emit message(msg::make("recipe.run.back", {opArg(m_op)}), false);
         return;
     }
     if (s != dev::LinkState::Ready && active(m_state))
         stopRun(linkLostMessage());
 }
 
-QString RecipeRunner::linkLostMessage() const
+msg::Message RecipeRunner::linkLostMessage() const
 {
-    return tr("the link to the analyzer was lost during %1: the run stopped (the analyzer completes the move it had). "
-              "Reconnect, then Resume")
-        .arg(m_op >= 0 && m_op < static_cast<int>(m_plan.ops.size()) ? QString::fromStdString(m_plan.ops[static_cast<std::size_t>(m_op)].label())
-                                                                       : tr("the run"));
+    return msg::make("recipe.run.link_lost", {opArg(m_op)});
 }
 
-void RecipeRunner::stopRun(const QString& reason)
+void RecipeRunner::stopRun(const msg::Message& reason)
 {
     m_moveTimer.stop();
     m_dwellTimer.stop();
@@ -524,7 +537,7 @@ void RecipeRunner::stopRun(const QString& reason)
     if (m_log.isOpen()) {
         jsonio::Value v = jsonio::Value::object();
         v.set("event", "stop");
-        v.set("reason", reason.toStdString());
+        v.set("reason", reason.id);  // the id: a log is read in any language
         if (!m_log.write(v))
             m_log.close();
     }
@@ -536,7 +549,7 @@ void RecipeRunner::stopRun(const QString& reason)
 void RecipeRunner::abort()
 {
     if (m_state == RunState::Paused) {
-        stopRun(tr("aborted by the operator while paused"));
+        stopRun(msg::make("recipe.run.aborted_while_paused"));
         return;
     }
     if (m_state != RunState::Running && m_state != RunState::Pausing)
@@ -549,7 +562,7 @@ void RecipeRunner::abort()
     if (m_log.isOpen()) {
         jsonio::Value v = jsonio::Value::object();
         v.set("event", "stop");
-        v.set("reason", "aborted by the operator");
+        v.set("reason", "recipe.run.aborted");
         m_log.write(v);
     }
     setState(RunState::Aborting);
@@ -572,7 +585,7 @@ void RecipeRunner::abort()
             const double safe = m_op >= 0 && m_op < static_cast<int>(m_plan.ops.size()) ? m_plan.ops[static_cast<std::size_t>(m_op)].safeZMm : 0.0;
             if (st.estop || iz < 0 || iz >= st.axes.size() || !st.axes[iz].homed) {
                 setState(RunState::Stopped);
-                emit message(tr("aborted; the tip could not be raised (E-stop or Z not homed)"), true);
+                emit message(msg::make("recipe.run.aborted_tip_down"), true);
                 emit finished(false);
                 return;
             }
@@ -581,7 +594,7 @@ void RecipeRunner::abort()
             m_knowXy = false;
             if (m_z <= safe + kSameMm) {
                 setState(RunState::Stopped);
-                emit message(tr("aborted; the tip is up at Z %1 mm").arg(mm(m_z)), true);
+                emit message(msg::make("recipe.run.aborted_tip_up", {recipeMm("z", m_z)}), true);
                 emit finished(false);
                 return;
             }

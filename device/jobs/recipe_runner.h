@@ -36,17 +36,18 @@ enum class RunState {
     Stopped,   ///< aborted, link lost, refused: resume() or resumeFromLog() can continue
     Finished,
 };
-QString runStateName(RunState s);
+/// The state's term for people ("recipe.state.running"), worded by words::term.
+const char* runStateTerm(RunState s);
 
 /// What the operator is asked about an op that was interrupted after its
 /// plunger move had been sent.
 struct InterruptedOp {
     int op = 0;
-    QString label;                       ///< "dispense 10 µL into samples B3"
+    msg::Message label;                  ///< recipe.op.*: "dispense 10 µL into samples B3"
     std::optional<double> pumpStartUl;   ///< plunger when the pump move was sent
     double plannedDeltaUl = 0;           ///< what the op's pump moves add up to
     std::optional<double> plungerNowUl;  ///< where it is now
-    QString evidence;                    ///< a sentence: "the plunger is where the dispense would leave it"
+    msg::Message evidence;               ///< recipe.evidence.*: "the plunger is where the dispense would leave it"
 };
 enum class InterruptedChoice { Skip, Redo, Cancel };
 using InterruptedDecider = std::function<InterruptedChoice(const InterruptedOp&)>;
@@ -54,8 +55,8 @@ using InterruptedDecider = std::function<InterruptedChoice(const InterruptedOp&)
 struct RunProgress {
     int opsDone = 0, opsTotal = 0;
     int currentOp = -1;
-    QString currentWhere;   ///< "samples B3"
-    QString currentLabel;
+    msg::Message currentWhere;  ///< recipe.where.*: "samples B3"
+    msg::Message currentLabel;  ///< recipe.op.*
     double elapsedS = 0;    ///< running time (pauses excluded)
     double etaS = 0;        ///< remaining, from the profiles scaled by how the run is going
     double fraction = 0;    ///< of the planned time
@@ -68,20 +69,20 @@ public:
     ~RecipeRunner() override;
 
     /// The plan to run (planRecipe's result; refused when it has errors).
-    bool setPlan(const plates::RecipePlan& plan, const QString& recipeName, QString* error);
+    bool setPlan(const plates::RecipePlan& plan, const QString& recipeName, msg::Message* error);
     const plates::RecipePlan& plan() const { return m_plan; }
 
     /// A new run, logged to `logPath` (a new file).
-    bool start(const QString& logPath, QString* error);
+    bool start(const QString& logPath, msg::Message* error);
     /// Continues the run `logPath` records (same recipe: same fingerprint). Plan
     /// it from where the run began: resumeStart() says where that was.
-    bool resumeFromLog(const QString& logPath, const InterruptedDecider& decide, QString* error);
+    bool resumeFromLog(const QString& logPath, const InterruptedDecider& decide, msg::Message* error);
     /// The state to plan a resumed run from: the machine as it stands, with the
     /// plunger where the logged run began (the plan's syringe accounting is the
     /// original run's). Falls back to the plunger now when the log does not say.
     static plates::StartState resumeStart(const QString& logPath, const dev::Instrument& client);
     /// After a pause or a stop; `decide` is asked when the op under way had moved liquid.
-    bool resume(const InterruptedDecider& decide, QString* error);
+    bool resume(const InterruptedDecider& decide, msg::Message* error);
     void pause();
     void abort();
 
@@ -100,13 +101,14 @@ signals:
     void progressChanged();
     void opStarted(int op);
     void opFinished(int op);
-    /// A sentence for the operator; `problem` for what stopped the run.
-    void message(const QString& text, bool problem);
+    /// A message for the operator (recipe.run.*, worded by words::text); `problem` for
+    /// what stopped the run.
+    void message(const msg::Message& text, bool problem);
     void finished(bool completed);
 
 private:
-    bool checkMachine(QString* error) const;
-    bool preflight(QString* error) const;
+    bool checkMachine(msg::Message* error) const;
+    bool preflight(msg::Message* error) const;
     void setState(RunState s);
     void beginRunning();
     void nextMove();
@@ -115,14 +117,16 @@ private:
     void onEvent(const dev::DeviceEvent& e);
     void onLinkState(dev::LinkState s);
     void onMoveTimeout();
-    void stopRun(const QString& reason);
-    QString linkLostMessage() const;
+    void stopRun(const msg::Message& reason);
+    msg::Message linkLostMessage() const;
+    /// The op's label as the `op` argument ("the run" when none is under way).
+    msg::Arg opArg(int op) const;
     void finishOp();
     bool logLine(jsonio::Value line);
-    bool decideInterrupted(int op, const InterruptedDecider& decide, bool* redo, QString* error);
+    bool decideInterrupted(int op, const InterruptedDecider& decide, bool* redo, msg::Message* error);
     bool applyDecision(int op, bool redo);
     /// preflight() as the run will be once the operator's (op, redo) decisions apply.
-    bool preflightDecided(const std::vector<std::pair<int, bool>>& decisions, QString* error);
+    bool preflightDecided(const std::vector<std::pair<int, bool>>& decisions, msg::Message* error);
     int nextOpenOp(int from) const;
     int axis(char letter) const;
     double plungerNow() const;

@@ -14,7 +14,7 @@ using platefiles::OpState;
 
 namespace {
 constexpr double kPlungerToleranceUl = 0.05;  ///< a count of the pump's encoder
-QString ul(double v) { return QString::number(v, 'f', 2); }
+msg::Arg resumeUl(std::string name, double v) { return msg::real(std::move(name), v, msg::Unit::Ul); }
 } // namespace
 
 plates::StartState RecipeRunner::resumeStart(const QString& logPath, const dev::Instrument& client)
@@ -27,7 +27,7 @@ plates::StartState RecipeRunner::resumeStart(const QString& logPath, const dev::
     if (ix >= 0 && iy >= 0 && iz >= 0 && ip >= 0 && std::max({ix, iy, iz, ip}) < a.size())
         s = {a[ix].commanded, a[iy].commanded, a[iz].commanded, a[ip].commanded};
     std::string text;
-    QString error;
+    msg::Message error;
     if (files::readText(logPath, &text, &error))
         if (const auto p = platefiles::readRunLog(text).startPumpUl)
             s.pumpUl = *p;
@@ -52,8 +52,8 @@ RunProgress RecipeRunner::progress() const
     if (m_op >= 0 && m_op < p.opsTotal && m_state != RunState::Finished) {
         const plates::PlanOp& op = m_plan.ops[static_cast<std::size_t>(m_op)];
         p.currentOp = m_op;
-        p.currentWhere = QString::fromStdString(op.where());
-        p.currentLabel = QString::fromStdString(op.label());
+        p.currentWhere = op.where();
+        p.currentLabel = op.label();
     }
     // The profiles' estimate, scaled by how this stretch of the run compares to
     // it (the link's turnaround, a slower machine), once there is enough to judge.
@@ -66,12 +66,12 @@ RunProgress RecipeRunner::progress() const
     return p;
 }
 
-bool RecipeRunner::decideInterrupted(int op, const InterruptedDecider& decide, bool* redo, QString* error)
+bool RecipeRunner::decideInterrupted(int op, const InterruptedDecider& decide, bool* redo, msg::Message* error)
 {
     const plates::PlanOp& plan = m_plan.ops[static_cast<std::size_t>(op)];
     InterruptedOp q;
     q.op = op;
-    q.label = QString::fromStdString(plan.label());
+    q.label = plan.label();
     q.plannedDeltaUl = plan.pumpNetUl;
     q.plungerNowUl = plungerNow();
     if (op == m_op && m_pumpLogged)
@@ -81,23 +81,21 @@ bool RecipeRunner::decideInterrupted(int op, const InterruptedDecider& decide, b
     if (q.pumpStartUl && std::abs(plan.pumpNetUl) > kPlungerToleranceUl) {
         const double end = *q.pumpStartUl + plan.pumpNetUl;
         if (std::abs(*q.plungerNowUl - end) <= kPlungerToleranceUl)
-            q.evidence = tr("the plunger is at %1 µL, where this step leaves it: its liquid most likely moved in full").arg(ul(end));
+            q.evidence = msg::make("recipe.evidence.moved_in_full", {resumeUl("plunger", end)});
         else if (std::abs(*q.plungerNowUl - *q.pumpStartUl) <= kPlungerToleranceUl)
-            q.evidence = tr("the plunger is at %1 µL, where it was before the pump move: no liquid moved").arg(ul(*q.pumpStartUl));
+            q.evidence = msg::make("recipe.evidence.nothing_moved", {resumeUl("plunger", *q.pumpStartUl)});
         else
-            q.evidence = tr("the plunger is at %1 µL, between %2 (before) and %3 µL (after): part of the volume moved")
-                             .arg(ul(*q.plungerNowUl), ul(*q.pumpStartUl), ul(end));
+            q.evidence = msg::make("recipe.evidence.part_moved", {resumeUl("plunger", *q.plungerNowUl), resumeUl("before", *q.pumpStartUl), resumeUl("after", end)});
     } else {
-        q.evidence = tr("a %1 ends where it starts: the plunger cannot tell how far it got").arg(QLatin1String(plates::stepTypeName(plan.type)));
+        q.evidence = msg::make("recipe.evidence.cannot_tell", {msg::term("step", std::string("recipe.step.") + plates::stepTypeName(plan.type))});
     }
     if (!decide) {
-        *error = tr("%1 was interrupted after liquid started to move (%2): say whether to skip it or do it again")
-                     .arg(q.label, q.evidence);
+        *error = msg::make("recipe.run.interrupted_needs_decision", {msg::nested("op", q.label), msg::nested("evidence", q.evidence)});
         return false;
     }
     const InterruptedChoice c = decide(q);
     if (c == InterruptedChoice::Cancel) {
-        *error = tr("not resumed: %1 was interrupted and no decision was made").arg(q.label);
+        *error = msg::make("recipe.run.not_resumed_no_decision", {msg::nested("op", q.label)});
         return false;
     }
     *redo = c == InterruptedChoice::Redo;
@@ -105,7 +103,7 @@ bool RecipeRunner::decideInterrupted(int op, const InterruptedDecider& decide, b
 }
 
 /// Writes the operator's decision about `op` and sets it up to be skipped or begun again.
-bool RecipeRunner::preflightDecided(const std::vector<std::pair<int, bool>>& decisions, QString* error)
+bool RecipeRunner::preflightDecided(const std::vector<std::pair<int, bool>>& decisions, msg::Message* error)
 {
     // The plunger already stands after a skipped op's pump move (the analyzer
     // finished it): counting that move again made a dispense that was skipped
@@ -125,17 +123,15 @@ bool RecipeRunner::applyDecision(int op, bool redo)
     v.set("event", redo ? "redo" : "skip");
     v.set("op", op);
     v.set("p_ul", plungerNow());
-    v.set("reason", redo ? "operator: interrupted mid-dispense, do it again" : "operator: interrupted mid-dispense, count as done");
+    v.set("reason", redo ? "recipe.run.operator_redo" : "recipe.run.operator_skip");
     if (!m_log.write(v))
         return false;
     m_opStates[static_cast<std::size_t>(op)] = redo ? OpState::NotStarted : OpState::Skipped;
-    emit message(redo ? tr("%1 will be done again").arg(QString::fromStdString(m_plan.ops[static_cast<std::size_t>(op)].label()))
-                      : tr("%1 counts as done (skipped on resume)").arg(QString::fromStdString(m_plan.ops[static_cast<std::size_t>(op)].label())),
-                 false);
+    emit message(msg::make(redo ? "recipe.run.will_redo" : "recipe.run.counts_as_done", {opArg(op)}), false);
     return true;
 }
 
-bool RecipeRunner::resume(const InterruptedDecider& decide, QString* error)
+bool RecipeRunner::resume(const InterruptedDecider& decide, msg::Message* error)
 {
     if (m_state == RunState::Paused) {
         if (!checkMachine(error) || !preflight(error))
@@ -145,11 +141,11 @@ bool RecipeRunner::resume(const InterruptedDecider& decide, QString* error)
         return true;
     }
     if (m_state != RunState::Stopped || m_op < 0 || m_op >= static_cast<int>(m_plan.ops.size())) {
-        *error = tr("nothing to resume");
+        *error = msg::make("recipe.run.nothing_to_resume");
         return false;
     }
     if (!m_log.isOpen()) {
-        *error = tr("the run log is closed: resume from the log file instead");
+        *error = msg::make("recipe.run.log_closed");
         return false;
     }
     if (!checkMachine(error))
@@ -183,10 +179,10 @@ bool RecipeRunner::resume(const InterruptedDecider& decide, QString* error)
     return true;
 }
 
-bool RecipeRunner::resumeFromLog(const QString& logPath, const InterruptedDecider& decide, QString* error)
+bool RecipeRunner::resumeFromLog(const QString& logPath, const InterruptedDecider& decide, msg::Message* error)
 {
     if (m_state == RunState::Running || m_state == RunState::Pausing || m_state == RunState::Aborting || m_state == RunState::Paused) {
-        *error = tr("a run is under way");
+        *error = msg::make("recipe.run.already_running");
         return false;
     }
     std::string text;
@@ -194,21 +190,22 @@ bool RecipeRunner::resumeFromLog(const QString& logPath, const InterruptedDecide
         return false;
     platefiles::RunLogState st = platefiles::readRunLog(text);
     const QString name = QFileInfo(logPath).fileName();
+    const msg::Arg logArg = msg::verbatim("log", name.toStdString());
     if (!st.problems.empty()) {
-        *error = tr("%1 cannot be trusted to resume from:\n%2").arg(name, QString::fromStdString(st.problems.format(name.toStdString())).trimmed());
+        // The first problem says why; the log itself is left as it is for a person to read.
+        const jsonio::Problem& first = st.problems.list().front();
+        *error = msg::make("recipe.run.log_untrusted", {logArg, msg::integer("line", first.position.line, msg::Unit::None),
+                                                        msg::nested("cause", first.message)});
         return false;
     }
     if (st.fingerprint != plates::fingerprintHex(m_plan.fingerprint) || st.opCount != static_cast<int>(m_plan.ops.size())) {
-        *error = tr("%1 is the log of another recipe, or of this one before it changed (%2 ops, plan %3; this recipe: %4 ops, plan %5)")
-                     .arg(name)
-                     .arg(st.opCount)
-                     .arg(QString::fromStdString(st.fingerprint))
-                     .arg(m_plan.ops.size())
-                     .arg(QString::fromStdString(plates::fingerprintHex(m_plan.fingerprint)));
+        *error = msg::make("recipe.run.log_of_other_recipe", {logArg, msg::integer("log_ops", st.opCount), msg::verbatim("log_plan", st.fingerprint),
+                                                              msg::integer("ops", static_cast<long long>(m_plan.ops.size())),
+                                                              msg::verbatim("plan", plates::fingerprintHex(m_plan.fingerprint))});
         return false;
     }
     if (st.finished) {
-        *error = tr("the run in %1 finished: nothing to resume").arg(name);
+        *error = msg::make("recipe.run.log_finished", {logArg});
         return false;
     }
     if (!checkMachine(error))
@@ -220,9 +217,7 @@ bool RecipeRunner::resumeFromLog(const QString& logPath, const InterruptedDecide
     // With nothing interrupted, the plunger must be where the last completed op
     // left it; otherwise the syringe's content is not what the log says.
     if (interrupted.empty() && st.lastPumpUl && std::abs(*st.lastPumpUl - plungerNow()) > kPlungerToleranceUl) {
-        *error = tr("the plunger is at %1 µL but the log's last completed well left it at %2 µL: the syringe was moved (or the analyzer "
-                    "restarted) since the run stopped, so what it holds is unknown. Start a new run.")
-                     .arg(ul(plungerNow()), ul(*st.lastPumpUl));
+        *error = msg::make("recipe.run.plunger_moved", {resumeUl("plunger", plungerNow()), resumeUl("logged", *st.lastPumpUl)});
         return false;
     }
     m_opStates.assign(m_plan.ops.size(), OpState::NotStarted);
@@ -262,12 +257,10 @@ bool RecipeRunner::resumeFromLog(const QString& logPath, const InterruptedDecide
     m_pumpLogged = false;
     m_knowXy = m_knowZ = false;
     m_pumpUl = plungerNow();
-    emit message(tr("resuming %1 from %2: %3 of %4 wells already done, continuing with %5")
-                     .arg(m_recipeName, name)
-                     .arg(started)
-                     .arg(m_plan.ops.size())
-                     .arg(m_op < static_cast<int>(m_plan.ops.size()) ? QString::fromStdString(m_plan.ops[static_cast<std::size_t>(m_op)].label())
-                                                                      : tr("the end")),
+    emit message(msg::make("recipe.run.resuming", {msg::verbatim("recipe", m_recipeName.toStdString()), logArg,
+                                                   msg::integer("done", started), msg::integer("wells", static_cast<long long>(m_plan.ops.size())),
+                                                   m_op < static_cast<int>(m_plan.ops.size()) ? opArg(m_op)
+                                                                                              : msg::nested("op", msg::make("recipe.run.the_end"))}),
                  false);
     emit progressChanged();
     beginRunning();

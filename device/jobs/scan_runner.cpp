@@ -33,13 +33,11 @@ ScanRunner::ScanRunner(dev::Instrument* client, QObject* parent) : QObject(paren
     connect(&m_settleTimeout, &QTimer::timeout, this, [this] {
         if (m_phase != Phase::Settling)
             return;
-        stopWith(tr("%1 did not settle within %2 µm in %3 s (X off by %4 µm, Y by %5 µm); the run is stopped: "
-                    "check the stage, then Resume to try this tile again")
-                     .arg(tileName(m_layout.path[static_cast<std::size_t>(m_pathIndex)].tile))
-                     .arg(m_plan.toleranceUm)
-                     .arg(m_plan.settleTimeoutS)
-                     .arg(m_lastOffUm[0], 0, 'f', 2)
-                     .arg(m_lastOffUm[1], 0, 'f', 2),
+        stopWith(msg::make("scan.run.not_settled", {tileArg(m_layout.path[static_cast<std::size_t>(m_pathIndex)].tile),
+                                                     msg::real("tolerance", m_plan.toleranceUm, msg::Unit::Um),
+                                                     msg::real("timeout", m_plan.settleTimeoutS, msg::Unit::S),
+                                                     msg::real("off_x", m_lastOffUm[0], msg::Unit::Um),
+                                                     msg::real("off_y", m_lastOffUm[1], msg::Unit::Um)}),
                  false);
     });
     m_clientConnections << connect(m_client, &dev::Instrument::eventReceived, this, &ScanRunner::onEvent);
@@ -50,10 +48,7 @@ ScanRunner::ScanRunner(dev::Instrument* client, QObject* parent) : QObject(paren
     });
     m_clientConnections << connect(m_client, &dev::Instrument::stateChanged, this, [this](dev::LinkState st) {
         if (st != dev::LinkState::Ready && isActive())
-            stopWith(tr("The link to the stage was lost at %1. Nothing more moves from here; reconnect, then Resume to "
-                        "continue at that tile.")
-                         .arg(tileName(currentTile())),
-                     false);
+            stopWith(msg::make("scan.run.link_lost", {tileArg(currentTile())}), false);
     });
 }
 
@@ -89,24 +84,25 @@ void ScanRunner::refreshCompensation()
 
 QString ScanRunner::logPath() const { return QDir(m_folder).filePath(QString::fromLatin1(scanfile::kRunLogFile)); }
 
-QString ScanRunner::tileName(int tile) const
+msg::Arg ScanRunner::tileArg(int tile) const
 {
     if (tile < 0 || tile >= totalTiles())
-        return tr("the start");
-    return tr("tile %1 of %2 (%3)").arg(tile + 1).arg(totalTiles()).arg(QString::fromStdString(m_records[static_cast<std::size_t>(tile)].label));
+        return msg::nested("tile", msg::make("scan.run.the_start"));
+    return msg::nested("tile", msg::make("scan.run.tile", {msg::integer("tile", tile + 1, msg::Unit::None), msg::integer("total", totalTiles()),
+                                                           msg::verbatim("label", m_records[static_cast<std::size_t>(tile)].label)}));
 }
 
-QString ScanRunner::stateName(State s)
+const char* ScanRunner::stateTerm(State s)
 {
     switch (s) {
-    case State::Idle: return tr("ready");
-    case State::Running: return tr("running");
-    case State::Pausing: return tr("pausing after this tile");
-    case State::Paused: return tr("paused");
-    case State::Stopped: return tr("stopped");
-    case State::Finished: return tr("finished");
+    case State::Idle: return "scan.state.idle";
+    case State::Running: return "scan.state.running";
+    case State::Pausing: return "scan.state.pausing";
+    case State::Paused: return "scan.state.paused";
+    case State::Stopped: return "scan.state.stopped";
+    case State::Finished: return "scan.state.finished";
     }
-    return {};
+    return "scan.state.idle";
 }
 
 void ScanRunner::setState(State s)
@@ -117,22 +113,22 @@ void ScanRunner::setState(State s)
     emit stateChanged(s);
 }
 
-bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& folder, bool restart, QString* error, Refusal* why)
+bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& folder, bool restart, msg::Message* error, Refusal* why)
 {
     Refusal unused;
     Refusal& reason = why ? *why : unused;
     reason = Refusal::Other;  // every early return below is "something else"
     if (isActive()) {
-        *error = tr("A scan is running: stop it before preparing another.");
+        *error = msg::make("scan.run.busy_preparing");
         return false;
     }
     const auto problems = motion::scan::validate(plan);
     if (!problems.empty()) {
-        *error = QString::fromStdString(problems.front().field + ": " + problems.front().message);
+        *error = msg::make("scan.run.plan_problem", {msg::verbatim("field", problems.front().field), msg::nested("cause", problems.front().message)});
         return false;
     }
     if (!QDir().mkpath(folder)) {
-        *error = tr("Cannot make the folder %1.").arg(folder);
+        *error = msg::make("file.cannot_make_folder", {msg::verbatim("folder", folder.toStdString())});
         return false;
     }
     m_log.close();
@@ -153,8 +149,10 @@ bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& fold
             return false;
         const auto log = scanfile::parseRunLog(text);
         if (!log.log) {
-            *error = tr("The run log in this folder is damaged; it is left as it is:\n%1")
-                         .arg(QString::fromStdString(log.problems.format(scanfile::kRunLogFile)).trimmed());
+            const jsonio::Problem& first = log.problems.list().front();
+            *error = msg::make("scan.run.log_damaged", {msg::verbatim("log", scanfile::kRunLogFile),
+                                                        msg::integer("line", first.position.line, msg::Unit::None),
+                                                        msg::nested("cause", first.message)});
             return false;
         }
         if (log.log->fingerprint == fingerprint && !restart) {
@@ -182,17 +180,15 @@ bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& fold
             }
         } else if (!restart) {
             reason = Refusal::OtherScansLog;
-            *error = tr("This folder holds the run log of a different scan (%1 of %2 tiles taken). Choose another folder, "
-                        "or start over to keep that log aside and begin a new one.")
-                         .arg(log.log->records.size())
-                         .arg(log.log->tiles);
+            *error = msg::make("scan.run.other_scans_log", {msg::integer("taken", static_cast<long long>(log.log->records.size())),
+                                                            msg::integer("tiles", log.log->tiles)});
             return false;
         } else {
             // Nothing is thrown away: the old log moves aside under its time.
             const QString aside = QDir(m_folder).filePath(
                 QStringLiteral("scan-run.%1.jsonl").arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"))));
             if (!QFile::rename(logPath(), aside)) {
-                *error = tr("Cannot move the old run log aside to %1.").arg(aside);
+                *error = msg::make("scan.run.cannot_move_log", {msg::verbatim("file", aside.toStdString())});
                 return false;
             }
         }
@@ -213,45 +209,43 @@ Point2 ScanRunner::commanded(int pathIndex) const
     return motion::scan::commandedTarget(m_plan, m_layout.path[static_cast<std::size_t>(pathIndex)].target);
 }
 
-QStringList ScanRunner::preflight() const
+std::vector<msg::Message> ScanRunner::preflight() const
 {
-    QStringList out;
+    std::vector<msg::Message> out;
     if (!m_prepared) {
-        out << tr("No scan is prepared.");
+        out.push_back(msg::make("scan.run.not_prepared"));
         return out;
     }
     if (!m_client->isReady()) {
-        out << tr("The stage is not connected.");
+        out.push_back(msg::make("scan.run.not_connected"));
         return out;
     }
     const auto& id = m_client->identity();
     if (id.kind != proto::DeviceKind::Stage || id.axes.size() < 2) {
-        out << tr("Scans run on the microscope stage; this instrument is a %1.").arg(id.kindName());
+        out.push_back(msg::make("scan.run.not_a_stage", {msg::term("instrument", dev::instrumentTerm(id.kind))}));
         return out;
     }
     const auto& st = m_client->status();
     if (st.estop)
-        out << tr("The E-stop is latched: reset it first.");
+        out.push_back(msg::make("scan.run.estop_latched"));
     if (st.axes.size() >= 2 && (!st.axes[0].homed || !st.axes[1].homed))
-        out << tr("Home the stage first: a scan moves to absolute positions.");
+        out.push_back(msg::make("scan.run.not_homed"));
     if (m_plan.compensation.enabled) {
         // The plan trusts the stage to move each target by its own correction.
         if (!m_client->can(dev::Capability::Compensation) || !m_client->compensation())
-            out << tr("The plan runs with the stage's own compensation, but this stage keeps none: run without it.");
+            out.push_back(msg::make("scan.run.no_compensation_on_stage"));
         else
             for (int axis = 0; axis < 2; ++axis) {
-                const QString letter = axis == 0 ? QStringLiteral("X") : QStringLiteral("Y");
+                const msg::Arg letter = msg::verbatim("axis", axis == 0 ? "X" : "Y");
                 if (!m_compEnabled[axis])
-                    out << tr("Reading whether the stage's compensation of %1 is enabled…").arg(letter);
+                    out.push_back(msg::make("scan.run.compensation_being_read", {letter}));
                 else if (!*m_compEnabled[axis])
-                    out << tr("The plan runs with the stage's own compensation, but it is not enabled on %1: enable it "
-                              "(Calibration screen, or compensation enable --axis %1), or run without it.")
-                               .arg(letter);
+                    out.push_back(msg::make("scan.run.compensation_not_enabled", {letter}));
             }
     }
     // The whole plan against the device's travel and soft limits, before anything moves.
     for (const auto& p : motion::scan::validate(m_plan, stageModelOf(id, m_client->softLimits())))
-        out << QString::fromStdString(p.field + ": " + p.message);
+        out.push_back(msg::make("scan.run.plan_problem", {msg::verbatim("field", p.field), msg::nested("cause", p.message)}));
     return out;
 }
 
@@ -269,15 +263,15 @@ int ScanRunner::waypointToResumeAt() const
     return static_cast<int>(m_layout.path.size());
 }
 
-bool ScanRunner::start(QString* error)
+bool ScanRunner::start(msg::Message* error)
 {
     if (isActive()) {
-        *error = tr("The scan is already running.");
+        *error = msg::make("scan.run.already_running");
         return false;
     }
-    const QStringList blockers = preflight();
-    if (!blockers.isEmpty()) {
-        *error = blockers.join(QLatin1Char('\n'));
+    const std::vector<msg::Message> blockers = preflight();
+    if (!blockers.empty()) {
+        *error = blockers.front();
         return false;
     }
     if (!openLog(error))
@@ -321,7 +315,7 @@ void ScanRunner::abort()
 {
     if (!isActive())
         return;
-    stopWith(tr("Aborted at %1. The tiles taken so far are kept; Resume continues at that tile.").arg(tileName(currentTile())), true);
+    stopWith(msg::make("scan.run.aborted", {tileArg(currentTile())}), true);
 }
 
 int ScanRunner::currentTile() const
@@ -362,23 +356,23 @@ double ScanRunner::etaS() const
     return remaining;
 }
 
-bool ScanRunner::openLog(QString* error)
+bool ScanRunner::openLog(msg::Message* error)
 {
     if (m_log.isOpen())
         return true;
     m_log.setFileName(logPath());
     if (!m_log.open(QIODevice::WriteOnly | QIODevice::Append)) {
-        *error = tr("Cannot open the run log %1: %2").arg(logPath(), m_log.errorString());
+        *error = msg::make("file.log.cannot_open", {msg::verbatim("file", logPath().toStdString()), msg::verbatim("detail", m_log.errorString().toStdString())});
         return false;
     }
     return true;
 }
 
-bool ScanRunner::appendLog(const std::string& line, QString* error)
+bool ScanRunner::appendLog(const std::string& line, msg::Message* error)
 {
     // One write and a flush per tile: a crash of the program loses nothing taken.
     if (m_log.write(line.data(), static_cast<qint64>(line.size())) != static_cast<qint64>(line.size()) || !m_log.flush()) {
-        *error = tr("Cannot write the run log %1: %2").arg(logPath(), m_log.errorString());
+        *error = msg::make("file.log.cannot_write", {msg::verbatim("file", logPath().toStdString()), msg::verbatim("detail", m_log.errorString().toStdString())});
         return false;
     }
     return true;
@@ -397,9 +391,9 @@ void ScanRunner::nextWaypoint()
         m_phase = Phase::None;
         m_log.close();
         QStringList written;
-        QString error;
+        msg::Message error;
         if (!writeExports(&written, &error))
-            emit problem(tr("Every tile is taken, but the exports could not be written: %1").arg(error));
+            emit problem(msg::make("scan.run.exports_failed", {msg::nested("cause", error)}));
         setState(State::Finished);
         emit progress(m_takenCount, totalTiles(), 0);
         emit finished(written);
@@ -427,12 +421,9 @@ void ScanRunner::onMoveAccepted(const std::optional<dev::RequestError>& error)
         return;
     // A move lost with the link is the link's story, whichever signal comes first.
     if (error->kind == dev::RequestError::Kind::LinkDown || error->kind == dev::RequestError::Kind::Timeout || !m_client->isReady())
-        stopWith(tr("The link to the stage was lost at %1 (%2). Nothing more moves from here; reconnect, then Resume to "
-                    "continue at that tile.")
-                     .arg(tileName(currentTile()), error->message),
-                 false);
+        stopWith(msg::make("scan.run.link_lost_cause", {tileArg(currentTile()), msg::nested("cause", error->message)}), false);
     else
-        stopWith(tr("The stage refused the move to %1: %2").arg(tileName(currentTile()), error->message), false);
+        stopWith(msg::make("scan.run.move_refused", {tileArg(currentTile()), msg::nested("cause", error->message)}), false);
 }
 
 void ScanRunner::onEvent(const dev::DeviceEvent& e)
@@ -465,15 +456,15 @@ void ScanRunner::onEvent(const dev::DeviceEvent& e)
         requestStatus();
         return;
     case EventKind::EStop:
-        stopWith(tr("E-stop at %1: the run is stopped. Reset the E-stop and Resume to continue at that tile.").arg(tileName(currentTile())), false);
+        stopWith(msg::make("scan.run.estop", {tileArg(currentTile())}), false);
         return;
     case EventKind::Stopped:
     case EventKind::LimitHit:
     case EventKind::Fault:
     case EventKind::LostSteps:
         if (e.axis <= 1)
-            stopWith(tr("The stage reported \"%1\" at %2: the run is stopped. Resume continues at that tile.")
-                         .arg(e.text.isEmpty() ? QString::fromLatin1(proto::eventKindName(e.kind)) : e.text, tileName(currentTile())),
+            stopWith(msg::make("scan.run.stage_event", {msg::term("event", proto::eventKindTerm(e.kind)), msg::verbatim("detail", e.text.toStdString()),
+                                                        tileArg(currentTile())}),
                      false);
         return;
     default:
@@ -527,10 +518,10 @@ void ScanRunner::onExposureEnd()
     r.measuredMm = m_triggerMm;
     r.deviceTimeUs = m_triggerUs;
     r.settleS = m_triggerUs > m_motionDoneUs ? static_cast<double>(m_triggerUs - m_motionDoneUs) * 1e-6 : 0.0;
-    QString error;
+    msg::Message error;
     if (!appendLog(scanfile::runLogLine(r), &error)) {
         r.measuredMm.clear();
-        stopWith(error + tr(" The run is stopped so that no tile goes unrecorded."), false);
+        stopWith(msg::make("scan.run.log_failed", {msg::nested("cause", error)}), false);
         return;
     }
     if (!m_taken[static_cast<std::size_t>(tile)]) {
@@ -546,7 +537,7 @@ void ScanRunner::onExposureEnd()
     nextWaypoint();
 }
 
-void ScanRunner::stopWith(const QString& message, bool stopStage)
+void ScanRunner::stopWith(const msg::Message& message, bool stopStage)
 {
     m_exposure.stop();
     m_settleTimeout.stop();
@@ -560,10 +551,10 @@ void ScanRunner::stopWith(const QString& message, bool stopStage)
     emit progress(m_takenCount, totalTiles(), etaS());
 }
 
-bool ScanRunner::writeExports(QStringList* written, QString* error) const
+bool ScanRunner::writeExports(QStringList* written, msg::Message* error) const
 {
     if (!m_prepared) {
-        *error = tr("No scan is prepared.");
+        *error = msg::make("scan.run.not_prepared");
         return false;
     }
     return scanfile::writeExports(m_folder, m_plan, m_layout, m_records, written, error);

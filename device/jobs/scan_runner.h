@@ -51,13 +51,13 @@ public:
     /// Takes the plan and the folder its run log and exports go to. A run log there
     /// of the same tiles is continued; one of other tiles is refused unless
     /// `restart`, which keeps it under another name and starts afresh.
-    bool prepare(const motion::scan::ScanPlan& plan, const QString& folder, bool restart, QString* error,
+    bool prepare(const motion::scan::ScanPlan& plan, const QString& folder, bool restart, msg::Message* error,
                  Refusal* why = nullptr);
 
-    /// What keeps the prepared run from starting now, one sentence each; empty = ready.
-    QStringList preflight() const;
+    /// What keeps the prepared run from starting now, one message each (scan.run.*); empty = ready.
+    std::vector<msg::Message> preflight() const;
     /// Starts, or resumes after a pause or a stop, at the first tile not yet taken.
-    bool start(QString* error);
+    bool start(msg::Message* error);
     void pause();
     void abort();
 
@@ -79,9 +79,10 @@ public:
     QString folder() const { return m_folder; }
     QString logPath() const;
     /// Writes TileConfiguration.txt, positions.pos and scan.csv into the folder.
-    bool writeExports(QStringList* written, QString* error) const;
+    bool writeExports(QStringList* written, msg::Message* error) const;
 
-    static QString stateName(State s);
+    /// The state's term for people ("scan.state.running"), worded by words::term.
+    static const char* stateTerm(State s);
 
 signals:
     void stateChanged(jobs::ScanRunner::State state);
@@ -89,8 +90,8 @@ signals:
     /// The stage sits within tolerance at `tile`: where a camera would be triggered.
     void triggered(int tile, quint64 deviceTimeUs);
     void tileTaken(int tile);
-    /// Why the run stopped or would not start, in a sentence.
-    void problem(const QString& message);
+    /// Why the run stopped or would not start (scan.run.*, worded by words::text).
+    void problem(const msg::Message& message);
     /// Every tile taken; `exports` are the files written.
     void finished(const QStringList& exports);
 
@@ -104,15 +105,16 @@ private:
     void requestStatus();
     void checkSettled(const std::vector<double>& measuredMm, quint64 deviceTimeUs);
     void onExposureEnd();
-    void stopWith(const QString& message, bool stopStage);
+    void stopWith(const msg::Message& message, bool stopStage);
     /// A plan that runs with the stage's own compensation: reads whether X and Y have it
     /// enabled (again whenever the device says it changed), for preflight().
     void refreshCompensation();
-    bool openLog(QString* error);
-    bool appendLog(const std::string& line, QString* error);
+    bool openLog(msg::Message* error);
+    bool appendLog(const std::string& line, msg::Message* error);
     int waypointToResumeAt() const;
     motion::scan::Point2 commanded(int pathIndex) const;
-    QString tileName(int tile) const;
+    /// The `tile` argument: scan.run.tile {tile, total, label}, or scan.run.the_start.
+    msg::Arg tileArg(int tile) const;
 
     dev::Instrument* m_client;
     motion::scan::ScanPlan m_plan;

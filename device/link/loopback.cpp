@@ -11,7 +11,7 @@ public:
     {
         QTimer::singleShot(0, this, [this] {
             if (m_pair->m_unplugged) {
-                emit failed(tr("the simulated cable is unplugged"));
+                emit failed(msg::make("link.cable_unplugged"));
                 return;
             }
             m_open = true;
@@ -34,7 +34,7 @@ public:
         if (m_open)
             emit bytesReceived(bytes);
     }
-    void drop(const QString& why)
+    void drop(const msg::Message& why)
     {
         if (!m_open)
             return;
@@ -75,7 +75,7 @@ void LoopbackPair::unplug()
     m_unplugged = true;
     m_pending.clear();
     for (auto* e : m_ends)
-        static_cast<LoopbackEnd*>(e)->drop(tr("the simulated cable was unplugged"));
+        static_cast<LoopbackEnd*>(e)->drop(msg::make("link.cable_pulled"));
 }
 
 void LoopbackPair::transmit(int from, const QByteArray& input, bool applyFaults)

@@ -13,7 +13,8 @@ SerialTransport::SerialTransport(const QString& portName, qint32 baud, QObject* 
     connect(m_port, &QSerialPort::errorOccurred, this, [this](QSerialPort::SerialPortError e) {
         // ResourceError is what an unplugged adapter or a vanished pty gives.
         if (e == QSerialPort::ResourceError && m_port->isOpen()) {
-            const QString why = tr("%1: device went away (%2)").arg(m_name, m_port->errorString());
+            const msg::Message why = msg::make("link.port_went_away", {msg::verbatim("port", m_name.toStdString()),
+                                                                       msg::verbatim("detail", m_port->errorString().toStdString())});
             m_port->close();
             emit lost(why);
         }
@@ -37,11 +38,12 @@ void SerialTransport::open()
     m_port->setStopBits(QSerialPort::OneStop);
     m_port->setFlowControl(QSerialPort::NoFlowControl);
     if (!m_port->open(QIODevice::ReadWrite)) {
-        const QString why = m_port->error() == QSerialPort::PermissionError
-            ? tr("cannot open %1: it is busy or you lack permission (%2)").arg(m_name, m_port->errorString())
-            : m_port->error() == QSerialPort::DeviceNotFoundError
-                ? tr("cannot open %1: no such port").arg(m_name)
-                : tr("cannot open %1: %2").arg(m_name, m_port->errorString());
+        // QSerialPort's errorString() is Qt's own text (translated by Qt's catalogue).
+        const char* id = m_port->error() == QSerialPort::PermissionError      ? "link.port_busy"
+                         : m_port->error() == QSerialPort::DeviceNotFoundError ? "link.no_such_port"
+                                                                               : "link.cannot_open";
+        const msg::Message why = msg::make(id, {msg::verbatim("port", m_name.toStdString()),
+                                                msg::verbatim("detail", m_port->errorString().toStdString())});
         QTimer::singleShot(0, this, [this, why] { emit failed(why); });
         return;
     }

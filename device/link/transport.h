@@ -1,5 +1,8 @@
 #pragma once
+#include "motion/message.h"
+
 #include <QByteArray>
+
 #include <QObject>
 #include <QString>
 
@@ -24,8 +27,8 @@ public:
 
 signals:
     void opened();
-    void failed(const QString& reason);
-    void lost(const QString& reason);
+    void failed(const msg::Message& reason);  ///< link.* (docs/wording.md)
+    void lost(const msg::Message& reason);
     void bytesReceived(const QByteArray& bytes);
 };
 

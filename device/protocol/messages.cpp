@@ -34,6 +34,57 @@ const char* errorCodeName(ErrorCode c)
     return "unknown error";
 }
 
+const char* errorCodeTerm(ErrorCode c)
+{
+    switch (static_cast<int>(c)) {
+    case 1: return "device.error.unknown_command";
+    case 2: return "device.error.bad_payload";
+    case 3: return "device.error.bad_axis";
+    case 4: return "device.error.not_homed";
+    case 5: return "device.error.soft_limit";
+    case 6: return "device.error.busy";
+    case 7: return "device.error.estop_active";
+    case 8: return "device.error.over_capacity";
+    case 9: return "device.error.out_of_range";
+    case 10: return "device.error.fault";
+    case 11: return "device.error.bad_gains";
+    case 12: return "device.error.test_active";
+    case 13: return "device.error.not_closed_loop";
+    case 14: return "device.error.no_capture";
+    case 15: return "device.error.path_queue_full";
+    case 16: return "device.error.path_sequence";
+    case 17: return "device.error.path_geometry";
+    case 18: return "device.error.path_state";
+    }
+    return "device.error.unknown";
+}
+
+const char* eventKindTerm(EventKind k)
+{
+    switch (static_cast<int>(k)) {
+    case 1: return "device.event.motion_done";
+    case 2: return "device.event.home_done";
+    case 3: return "device.event.limit_hit";
+    case 4: return "device.event.fault";
+    case 5: return "device.event.estop";
+    case 6: return "device.event.jog_expired";
+    case 7: return "device.event.stopped";
+    case 8: return "device.event.lost_steps";
+    case 9: return "device.event.reset";
+    case 10: return "device.event.test_ended";
+    case 11: return "device.event.test_tripped";
+    case 12: return "device.event.test_aborted";
+    case 13: return "device.event.gains_changed";
+    case 20: return "device.event.path_started";
+    case 21: return "device.event.path_segment_done";
+    case 22: return "device.event.path_underrun";
+    case 23: return "device.event.path_done";
+    case 24: return "device.event.path_held";
+    case 25: return "device.event.path_aborted";
+    }
+    return "device.event.unknown";
+}
+
 const char* eventKindName(EventKind k)
 {
     switch (k) {

@@ -93,7 +93,11 @@ enum class ErrorCode : std::uint8_t {
 };
 /// Codes up to this decode, so an older host still shows a newer device's refusal.
 constexpr std::uint8_t kMaxErrorCode = 0x7F;
-const char* errorCodeName(ErrorCode c);
+const char* errorCodeName(ErrorCode c);  ///< for logs and tests: "soft limit"
+/// The term a person reads for a code ("device.error.soft_limit"; tuning codes
+/// included), worded by words::term; "device.error.unknown" for a code this host
+/// does not know.
+const char* errorCodeTerm(ErrorCode c);
 
 enum class EventKind : std::uint8_t {
     MotionDone = 1,  ///< a move, jog step or homing finished on this axis
@@ -116,7 +120,9 @@ enum class EventKind : std::uint8_t {
 };
 /// Kinds up to this decode, so an older host still logs a newer device's events.
 constexpr std::uint8_t kMaxEventKind = 0x7F;
-const char* eventKindName(EventKind k);
+const char* eventKindName(EventKind k);  ///< for logs and tests: "limit hit"
+/// "device.event.limit_hit", …; "device.event.unknown" for a newer kind.
+const char* eventKindTerm(EventKind k);
 
 /// Position units on the wire: nanometres for linear axes, nanolitres for the pump;
 /// speeds in the same unit per second. int32 covers ±2.1 m / ±2.1 L.

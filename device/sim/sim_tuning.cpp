@@ -86,7 +86,7 @@ SimTuning::Result SimTuning::setGains(const proto::SetGainsRequest& r)
     if (!problems.empty()) {
         std::vector<std::string> msgs;
         for (const auto& p : problems)
-            msgs.push_back(p.message);
+            msgs.push_back(motion::control::wireText(p));
         proto::ErrorReply e = m_m.error(proto::kErrBadGains, -1, problems.front().index,
                                         std::string("axis ") + letter + " gains refused, the previous ones stay: " + join(msgs));
         e.axis = r.axis;
@@ -156,7 +156,7 @@ SimTuning::Result SimTuning::stepTest(const proto::StepTestRequest& r)
         if (!problems.empty()) {
             std::vector<std::string> msgs;
             for (const auto& p : problems)
-                msgs.push_back(p.message);
+                msgs.push_back(motion::control::wireText(p));
             proto::ErrorReply e = m_m.error(proto::kErrBadGains, -1, problems.front().index,
                                             std::string("axis ") + letter + " trial gains refused: " + join(msgs));
             e.axis = r.axis;

@@ -113,7 +113,7 @@ public:
     /// collected for as long as the recording runs (at the rate others want, or
     /// kDefaultRateHz). Returns false with a sentence in *error if the file cannot
     /// be written, nothing is to be recorded, or a recording already runs.
-    bool startRecording(const QString& csvPath, const QVector<ChannelKey>& channels, QString* error);
+    bool startRecording(const QString& csvPath, const QVector<ChannelKey>& channels, msg::Message* error);
     void stopRecording();
     bool recording() const { return m_record != nullptr; }
     QString recordingPath() const;
@@ -127,9 +127,9 @@ signals:
     /// The device now streams at rateHz (0: off). note says why the rate is lower
     /// than wanted, e.g. "rate limited to 588 Hz by the 115200-baud link (it carries
     /// at most 588 Hz with 4 channels)"; empty when the wanted rate was granted.
-    void subscriptionChanged(int instrument, int rateHz, const QString& note);
+    void subscriptionChanged(int instrument, int rateHz, const msg::Message& note);
     /// A sentence for the status bar or event log.
-    void problem(const QString& message);
+    void problem(const msg::Message& message);
 
 private:
     struct ChannelRefLess {

@@ -43,25 +43,29 @@ void appendTimeUs(QByteArray& out, std::uint64_t us)
 
 // ---- recording ------------------------------------------------------------------
 
-bool TelemetryHub::startRecording(const QString& csvPath, const QVector<ChannelKey>& channels, QString* error)
+bool TelemetryHub::startRecording(const QString& csvPath, const QVector<ChannelKey>& channels, msg::Message* error)
 {
-    auto fail = [error](const QString& why) {
+    auto fail = [error](const msg::Message& why) {
         if (error)
             *error = why;
         return false;
     };
     if (m_record)
-        return fail(tr("already recording to %1").arg(QDir::toNativeSeparators(m_record->file.fileName())));
+        return fail(msg::make("telemetry.already_recording", {msg::verbatim("file", QDir::toNativeSeparators(m_record->file.fileName()).toStdString())}));
     QVector<ChannelKey> columns;
     for (const auto& k : channels)
         if (instrument(k.instrument) && !columns.contains(k))
             columns.push_back(k);
     if (columns.isEmpty())
-        return fail(tr("nothing to record: choose at least one channel of a connected instrument"));
+        return fail(msg::make("telemetry.nothing_to_record"));
     auto rec = std::make_unique<Recording>();
     rec->file.setFileName(csvPath);
+    const auto cannotWrite = [&] {
+        return msg::make("file.cannot_write", {msg::verbatim("file", QDir::toNativeSeparators(csvPath).toStdString()),
+                                               msg::verbatim("detail", rec->file.errorString().toStdString())});
+    };
     if (!rec->file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text))
-        return fail(tr("cannot write %1: %2").arg(QDir::toNativeSeparators(csvPath), rec->file.errorString()));
+        return fail(cannotWrite());
     rec->columns = columns;
     rec->buffer.reserve(kRecordFlushBytes + 4096);
     QByteArray header = "time_s,instrument";
@@ -71,7 +75,7 @@ bool TelemetryHub::startRecording(const QString& csvPath, const QVector<ChannelK
     }
     header += '\n';
     if (rec->file.write(header) != header.size() || !rec->file.flush())
-        return fail(tr("cannot write %1: %2").arg(QDir::toNativeSeparators(csvPath), rec->file.errorString()));
+        return fail(cannotWrite());
     m_record = std::move(rec);
     m_flushTimer.start();
     recomputeCollected();
@@ -165,7 +169,7 @@ void TelemetryHub::failRecording(const QString& why)
     m_wants.remove(kRecordingConsumer);
     recomputeCollected();
     scheduleApply();
-    emit problem(tr("recording to %1 stopped: %2").arg(path, why));
+    emit problem(msg::make("telemetry.recording_stopped", {msg::verbatim("file", path.toStdString()), msg::verbatim("detail", why.toStdString())}));
 }
 
 } // namespace tele

@@ -163,7 +163,7 @@ void TelemetryHub::onBatch(int index, const proto::TelemetryBatch& batch)
         in.latestS = kNaN;
         if (m_paused)
             in.pausedAtS = kNaN;
-        emit problem(tr("%1: the device clock started again; its plots start afresh").arg(in.name));
+        emit problem(msg::make("telemetry.clock_restarted", {msg::verbatim("instrument", in.name.toStdString())}));
     }
     if (std::isnan(in.latestS) || tLast > in.latestS)
         in.latestS = tLast;

@@ -171,7 +171,7 @@ void TelemetryHub::subscribe(int index, const QVector<proto::ChannelRef>& channe
                 return;
             }
             if (err->kind != dev::RequestError::Kind::LinkDown)
-                emit self->problem(tr("%1 telemetry not subscribed: %2").arg(i->name, err->message));
+                emit self->problem(msg::make("telemetry.not_subscribed", {msg::verbatim("instrument", i->name.toStdString()), msg::nested("cause", err->message)}));
             // Left as is until the wants change or the link comes back.
             reapply();
             return;
@@ -179,20 +179,19 @@ void TelemetryHub::subscribe(int index, const QVector<proto::ChannelRef>& channe
         i->subscribed = reply.rateHz ? channels : QVector<proto::ChannelRef>{};
         i->subscribedRateHz = static_cast<int>(reply.rateHz);
         i->haveSampleIndex = false;  // a new subscription restarts the device's sample counter
-        QString note;
+        msg::Message note;
         const int got = static_cast<int>(reply.rateHz);
         if (got > 0 && got < wantedHz) {
             if (limit == Limit::Link)
-                note = tr("rate limited to %1 Hz by the %2-baud link (it carries at most %3 Hz with %4 channels)")
-                           .arg(got)
-                           .arg(i->client ? i->client->identity().linkBaud : 0)
-                           .arg(statedHz)
-                           .arg(channels.size());
+                note = msg::make("telemetry.rate_link_limited",
+                                 {msg::integer("rate", got, msg::Unit::Hz),
+                                  msg::integer("baud", i->client ? i->client->identity().linkBaud : 0, msg::Unit::Baud),
+                                  msg::integer("max", statedHz, msg::Unit::Hz), msg::integer("channels", channels.size())});
             else if (limit == Limit::SampleClock)
-                note = tr("rate limited to %1 Hz by the device's %2 Hz sample clock").arg(got).arg(statedHz);
+                note = msg::make("telemetry.rate_clock_limited", {msg::integer("rate", got, msg::Unit::Hz), msg::integer("clock", statedHz, msg::Unit::Hz)});
         }
-        if (got > 0 && note.isEmpty() && got != wantedHz)
-            note = tr("the device streams at %1 Hz, the nearest its sample clock makes").arg(got);
+        if (got > 0 && note.empty() && got != wantedHz)
+            note = msg::make("telemetry.rate_nearest", {msg::integer("rate", got, msg::Unit::Hz)});
         emit self->subscriptionChanged(index, got, note);
         reapply();
     });
@@ -212,7 +211,7 @@ void TelemetryHub::onStateChanged(int index, dev::LinkState state)
     if (state == dev::LinkState::Ready)
         scheduleApply();
     else if (wasStreaming)
-        emit subscriptionChanged(index, 0, dev::linkStateName(state));
+        emit subscriptionChanged(index, 0, msg::make("telemetry.link_state", {msg::term("state", dev::linkStateTerm(state))}));
 }
 
 void TelemetryHub::dropUnwantedStores(int index)

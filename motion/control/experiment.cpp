@@ -23,6 +23,23 @@ const char* endReasonName(EndReason r)
     return "unknown";
 }
 
+const char* endReasonTerm(EndReason r)
+{
+    switch (r) {
+    case EndReason::Running: return "tuning.end.running";
+    case EndReason::Settled: return "tuning.end.settled";
+    case EndReason::Completed: return "tuning.end.completed";
+    case EndReason::Excursion: return "tuning.end.excursion";
+    case EndReason::FollowingError: return "tuning.end.following_error";
+    case EndReason::Duration: return "tuning.end.duration";
+    case EndReason::Stopped: return "tuning.end.stopped";
+    case EndReason::EStop: return "tuning.end.estop";
+    case EndReason::HostSilent: return "tuning.end.host_silent";
+    case EndReason::Fault: return "tuning.end.fault";
+    }
+    return "tuning.end.unknown";
+}
+
 namespace {
 bool positive(double v) { return std::isfinite(v) && v > 0; }
 std::string fmt(const char* f, double v)
@@ -48,7 +65,7 @@ std::vector<std::string> checkStepSpec(const StepSpec& s)
     if (!std::isfinite(s.step) || s.step == 0)
         out.push_back(fmt("step = %g must be a non-zero number", s.step));
     for (const auto& p : checkGains(s.gains, GainLimits{1e300, 1e300, 1e300}))
-        out.push_back(p.message);
+        out.push_back(wireText(p));
     if (!std::isfinite(s.settleBand) || s.settleBand < 0)
         out.push_back(fmt("settle band = %g must not be negative", s.settleBand));
     if (!std::isfinite(s.settleHoldS) || s.settleHoldS < 0)

@@ -31,18 +31,31 @@ std::vector<GainProblem> checkGains(const DiscreteGains& g, const GainLimits& li
     const double maxima[3] = {limits.kpMax, limits.kiMax, limits.kdMax};
     for (int i = 0; i < 3; ++i) {
         const double v = values[i];
-        char buf[160];
+        const char* id = nullptr;
         if (!std::isfinite(v))
-            std::snprintf(buf, sizeof buf, "%s is %s: a gain must be a finite number", names[i], std::isnan(v) ? "NaN" : "infinite");
+            id = "tuning.gain_not_finite";
         else if (v < 0)
-            std::snprintf(buf, sizeof buf, "%s = %g must not be negative", names[i], v);
+            id = "tuning.gain_negative";
         else if (v > maxima[i])
-            std::snprintf(buf, sizeof buf, "%s = %g is above the largest accepted %g per control period", names[i], v, maxima[i]);
+            id = "tuning.gain_above_limit";
         else
             continue;
-        out.push_back({i, names[i], v, buf});
+        out.push_back({i, names[i], v, maxima[i],
+                       msg::make(id, {msg::verbatim("gain", names[i]), msg::real("value", v), msg::real("max", maxima[i])})});
     }
     return out;
+}
+
+std::string wireText(const GainProblem& p)
+{
+    char buf[160];
+    if (!std::isfinite(p.value))
+        std::snprintf(buf, sizeof buf, "%s is %s: a gain must be a finite number", p.field.c_str(), std::isnan(p.value) ? "NaN" : "infinite");
+    else if (p.value < 0)
+        std::snprintf(buf, sizeof buf, "%s = %g must not be negative", p.field.c_str(), p.value);
+    else
+        std::snprintf(buf, sizeof buf, "%s = %g is above the largest accepted %g per control period", p.field.c_str(), p.value, p.limit);
+    return buf;
 }
 
 } // namespace motion::control

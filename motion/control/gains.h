@@ -8,6 +8,8 @@
 // Continuous (on screens, in CLI JSON): u(t) = Kp·e + Ki·∫e dt + Kd·de/dt with
 // Ki in 1/s and Kd in s. Eq. 2 is the backward-difference discretisation of it:
 //   ki = Ki·T, kd = Kd/T  ⇔  Ki = ki/T, Kd = kd·T;  Ti = Kp/Ki, Td = Kd/Kp.
+#include "motion/message.h"
+
 #include <string>
 #include <vector>
 
@@ -49,8 +51,13 @@ struct GainProblem {
     int index = 0;           ///< 0 kp, 1 ki, 2 kd
     std::string field;       ///< "kp", "ki", "kd"
     double value = 0;
-    std::string message;     ///< "kd = -0.1 must not be negative"
+    double limit = 0;        ///< the largest accepted, for gain_above_limit
+    msg::Message message;    ///< tuning.gain_not_finite / gain_negative / gain_above_limit {gain, value, max}
 };
+
+/// The refusal as the reference firmware words it on the wire ("kd = -0.1 must not be
+/// negative"): device/sim's text. The host words `message` in the operator's language.
+std::string wireText(const GainProblem& p);
 
 /// Every gain that is not finite, negative or above its limit; empty when the set is fine.
 std::vector<GainProblem> checkGains(const DiscreteGains& g, const GainLimits& limits = {});

@@ -44,7 +44,7 @@ struct UltimatePoint {
 /// such a loop has no finite ultimate gain.
 std::optional<UltimatePoint> ultimatePoint(const PlantSpec& p);
 /// A sentence saying why a plant has no finite ultimate gain (empty if it has one).
-std::string whyNoUltimateGain(const PlantSpec& p);
+msg::Message whyNoUltimateGain(const PlantSpec& p);
 
 /// Fixed-step, exact simulation of the plant for an input held constant over
 /// each control period (zero-order hold). Sample convention: y_k is the output

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace motion::plans {
 
@@ -13,38 +12,44 @@ using motion::path::Segment;
 
 namespace {
 
-std::string num(double v)
-{
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
+using msg::Unit;
 
 struct Checker {
     std::vector<PatternProblem>& out;
     void finite(const char* field, double v)
     {
         if (!std::isfinite(v))
-            out.push_back({field, "must be a number"});
+            out.push_back({field, msg::make("pattern.not_a_number")});
     }
     void point(const char* field, Vec2 v)
     {
         if (!std::isfinite(v.x) || !std::isfinite(v.y))
-            out.push_back({field, "must be two numbers [x, y]"});
+            out.push_back({field, msg::make("pattern.not_a_point")});
     }
-    void above(const char* field, double v, double lo)
+    void above(const char* field, double v, double lo, Unit unit)
     {
         if (!std::isfinite(v) || !(v > lo))
-            out.push_back({field, "must be above " + num(lo) + " (got " + num(v) + ")"});
+            out.push_back({field, msg::make("pattern.not_above", {msg::real("value", v, unit), msg::real("min", lo, unit)})});
     }
-    void within(const char* field, double v, double lo, double hi)
+    void within(const char* field, double v, double lo, double hi, Unit unit)
     {
         if (!std::isfinite(v) || v < lo || v > hi)
-            out.push_back({field, "must be from " + num(lo) + " to " + num(hi) + " (got " + num(v) + ")"});
+            out.push_back({field, msg::make("pattern.out_of_range",
+                                            {msg::real("value", v, unit), msg::real("min", lo, unit), msg::real("max", hi, unit)})});
     }
 };
 
 }  // namespace
+
+const char* segmentKindTerm(motion::path::SegmentKind k)
+{
+    switch (k) {
+    case motion::path::SegmentKind::Line: return "segment.line";
+    case motion::path::SegmentKind::ArcCw: return "segment.arc_cw";
+    case motion::path::SegmentKind::ArcCcw: return "segment.arc_ccw";
+    }
+    return "segment.line";
+}
 
 const char* shapeName(PatternShape s)
 {
@@ -73,7 +78,7 @@ std::vector<PatternProblem> validate(const Pattern& p)
 {
     std::vector<PatternProblem> out;
     Checker c{out};
-    c.within("feed_mm_s", p.feedMmS, 1e-3, 1000);
+    c.within("feed_mm_s", p.feedMmS, 1e-3, 1000, Unit::MmPerS);
     if (p.zMm)
         c.finite("z_mm", *p.zMm);
     switch (p.shape) {
@@ -81,65 +86,67 @@ std::vector<PatternProblem> validate(const Pattern& p)
         c.point("start_mm", p.line.startMm);
         c.point("end_mm", p.line.endMm);
         if (motion::path::norm(p.line.endMm - p.line.startMm) < 1e-6)
-            out.push_back({"end_mm", "must differ from start_mm: the line has no length"});
+            out.push_back({"end_mm", msg::make("pattern.line_has_no_length")});
         break;
     case PatternShape::Rectangle:
         c.point("corner_mm", p.rectangle.cornerMm);
-        c.above("width_mm", p.rectangle.widthMm, 0);
-        c.above("height_mm", p.rectangle.heightMm, 0);
+        c.above("width_mm", p.rectangle.widthMm, 0, Unit::Mm);
+        c.above("height_mm", p.rectangle.heightMm, 0, Unit::Mm);
         break;
     case PatternShape::Circle:
         c.point("center_mm", p.circle.centerMm);
-        c.above("radius_mm", p.circle.radiusMm, 0);
+        c.above("radius_mm", p.circle.radiusMm, 0, Unit::Mm);
         c.finite("start_deg", p.circle.startDeg);
         break;
     case PatternShape::Arc:
         c.point("center_mm", p.arc.centerMm);
-        c.above("radius_mm", p.arc.radiusMm, 0);
+        c.above("radius_mm", p.arc.radiusMm, 0, Unit::Mm);
         c.finite("start_deg", p.arc.startDeg);
-        c.within("sweep_deg", p.arc.sweepDeg, 1e-6, 360);
+        c.within("sweep_deg", p.arc.sweepDeg, 1e-6, 360, Unit::Deg);
         break;
     case PatternShape::Sine:
     case PatternShape::Cosine: {
         const WaveParams& w = p.wave;
         c.point("origin_mm", w.originMm);
-        c.above("amplitude_mm", w.amplitudeMm, 0);
-        c.above("wavelength_mm", w.wavelengthMm, 0);
-        c.above("length_mm", w.lengthMm, 0);
+        c.above("amplitude_mm", w.amplitudeMm, 0, Unit::Mm);
+        c.above("wavelength_mm", w.wavelengthMm, 0, Unit::Mm);
+        c.above("length_mm", w.lengthMm, 0, Unit::Mm);
         c.finite("angle_deg", w.angleDeg);
-        c.within("tolerance_mm", w.toleranceMm, 1e-5, 1);
+        c.within("tolerance_mm", w.toleranceMm, 1e-5, 1, Unit::Mm);
         if (out.empty()) {
             // Chord width from the tolerance (motion/chords.h): h = √(8·tol / (A·k²)).
             const double k = 2 * 3.14159265358979323846 / w.wavelengthMm;
             const double h = std::sqrt(8 * w.toleranceMm / (w.amplitudeMm * k * k));
             if (w.lengthMm / h > static_cast<double>(kMaxSegments))
-                out.push_back({"tolerance_mm", "gives " + num(std::ceil(w.lengthMm / h)) + " chords, more than "
-                                                   + num(static_cast<double>(kMaxSegments)) + ": loosen it or shorten the wave"});
+                out.push_back({"tolerance_mm", msg::make("pattern.too_many_chords",
+                                                          {msg::real("count", std::ceil(w.lengthMm / h), Unit::Count),
+                                                           msg::integer("max", static_cast<long long>(kMaxSegments))})});
         }
         break;
     }
     case PatternShape::Spiral: {
         const SpiralParams& s = p.spiral;
         c.point("center_mm", s.centerMm);
-        c.above("start_radius_mm", s.startRadiusMm, 0);
-        c.above("pitch_mm", s.pitchMm, 0);
-        c.within("turns", s.turns, 0.5, 1000);
+        c.above("start_radius_mm", s.startRadiusMm, 0, Unit::Mm);
+        c.above("pitch_mm", s.pitchMm, 0, Unit::Mm);
+        c.within("turns", s.turns, 0.5, 1000, Unit::None);
         c.finite("start_deg", s.startDeg);
         if (std::isfinite(s.turns) && std::fabs(s.turns * 2 - std::round(s.turns * 2)) > 1e-9)
-            out.push_back({"turns", "must be a whole or half number of turns (got " + num(s.turns) + ")"});
+            out.push_back({"turns", msg::make("pattern.not_half_turns", {msg::real("value", s.turns)})});
         break;
     }
     case PatternShape::Raster: {
         const RasterParams& r = p.raster;
         c.point("corner_mm", r.cornerMm);
-        c.above("width_mm", r.widthMm, 0);
-        c.above("height_mm", r.heightMm, 0);
-        c.above("spacing_mm", r.spacingMm, 0);
+        c.above("width_mm", r.widthMm, 0, Unit::Mm);
+        c.above("height_mm", r.heightMm, 0, Unit::Mm);
+        c.above("spacing_mm", r.spacingMm, 0, Unit::Mm);
         if (out.empty()) {
             const double across = r.alongY ? r.widthMm : r.heightMm;
             const double passes = std::floor(across / r.spacingMm + 1e-9) + 1;
             if (2 * passes - 1 > static_cast<double>(kMaxSegments))
-                out.push_back({"spacing_mm", "gives " + num(passes) + " passes: too many, widen the spacing"});
+                out.push_back({"spacing_mm", msg::make("pattern.too_many_passes", {msg::real("count", passes, Unit::Count),
+                                                                                 msg::integer("max", static_cast<long long>(kMaxSegments / 2))})});
         }
         break;
     }
@@ -185,11 +192,10 @@ std::optional<LimitViolation> outsideLimits(const std::vector<Segment>& path, co
             v.reachesMm = c.reaches;
             v.limitMm = c.limit;
             v.upper = c.upper;
-            char buf[200];
-            std::snprintf(buf, sizeof buf, "segment %zu (%s) reaches %c = %.3f mm, beyond the %s soft limit %.3f mm", k,
-                          motion::path::segmentKindName(path[k].kind), c.axis == 0 ? 'X' : 'Y', c.reaches,
-                          c.upper ? "upper" : "lower", c.limit);
-            v.message = buf;
+            v.message = msg::make(c.upper ? "pattern.segment_above_limit" : "pattern.segment_below_limit",
+                                  {msg::integer("segment", static_cast<long long>(k), Unit::None),
+                                   msg::term("kind", segmentKindTerm(path[k].kind)), msg::verbatim("axis", c.axis == 0 ? "X" : "Y"),
+                                   msg::real("value", c.reaches, Unit::Mm), msg::real("limit", c.limit, Unit::Mm)});
             return v;
         }
     }

@@ -11,6 +11,7 @@
 
 #include "motion/path/junction_planner.h"
 #include "motion/path/path_geometry.h"
+#include "motion/message.h"
 
 #include <optional>
 #include <string>
@@ -26,6 +27,7 @@ constexpr PatternShape kAllShapes[] = {PatternShape::Line,   PatternShape::Recta
                                        PatternShape::Arc,    PatternShape::Sine,      PatternShape::Cosine,
                                        PatternShape::Spiral, PatternShape::Raster};
 const char* shapeName(PatternShape s);  ///< "line", "rectangle", …: the file's and the CLI's word
+const char* segmentKindTerm(motion::path::SegmentKind k);  ///< "segment.line", "segment.arc_cw", "segment.arc_ccw"
 std::optional<PatternShape> shapeFromName(std::string_view name);
 
 struct LineParams {
@@ -96,7 +98,7 @@ struct Pattern {
 
 struct PatternProblem {
     std::string field;                   ///< "radius_mm", "feed_mm_s", …
-    std::string message;                 ///< "must be above 0 (got -2)"
+    msg::Message message;                ///< pattern.not_above {value, min}, … (docs/patterns.md, "Messages")
 };
 
 /// Every problem of the pattern's own numbers (not the instrument's limits: see outsideLimits).
@@ -115,7 +117,7 @@ struct LimitViolation {
     double reachesMm = 0;                ///< the coordinate it reaches
     double limitMm = 0;                  ///< the limit it crosses
     bool upper = false;
-    std::string message;                 ///< "segment 3 (ARC CCW) reaches X = 101.2 mm, beyond the upper soft limit 100 mm"
+    msg::Message message;                ///< pattern.segment_above_limit / _below_limit {segment, kind, axis, value, limit}
 };
 std::optional<LimitViolation> outsideLimits(const std::vector<motion::path::Segment>& path, const motion::path::Box& limits);
 

@@ -1,5 +1,6 @@
 // The JSON reader and writer under every file format: positions for messages,
 // strictness, round trips, and the field reader that collects every problem.
+#include "device/english_words.h"
 #include "device/files/json.h"
 #include "device/files/json_fields.h"
 
@@ -42,43 +43,43 @@ TEST(Json, ValuesKeepTheirLineAndColumn)
 TEST(Json, ErrorsSayWhatAndWhere)
 {
     auto e = errorOf("{\"a\": 1,\n}");
-    EXPECT_NE(e.message.find("trailing comma"), std::string::npos) << e.message;
+    EXPECT_NE(i18ntest::english(e.message).find("trailing comma"), std::string::npos) << e.message;
     EXPECT_EQ(e.position.line, 2);
     EXPECT_EQ(e.position.column, 1);
 
     e = errorOf("[1, 2,]");
-    EXPECT_NE(e.message.find("trailing comma"), std::string::npos);
+    EXPECT_NE(i18ntest::english(e.message).find("trailing comma"), std::string::npos);
 
     e = errorOf("{\"a\": 1, \"b\": 2, \"a\": 3}");
-    EXPECT_NE(e.message.find("\"a\" appears twice"), std::string::npos) << e.message;
+    EXPECT_NE(i18ntest::english(e.message).find("\"a\" appears twice"), std::string::npos) << e.message;
     EXPECT_EQ(e.position.column, 18);
 
     e = errorOf("// note\n{}");
-    EXPECT_NE(e.message.find("comments"), std::string::npos);
+    EXPECT_NE(i18ntest::english(e.message).find("comments"), std::string::npos);
 
     e = errorOf("{\"name\": \"abc\n\"}");
-    EXPECT_NE(e.message.find("unterminated string"), std::string::npos);
+    EXPECT_NE(i18ntest::english(e.message).find("unterminated string"), std::string::npos);
 
     e = errorOf("{\"a\": 01}");
-    EXPECT_NE(e.message.find("leading zeros"), std::string::npos);
+    EXPECT_NE(i18ntest::english(e.message).find("leading zeros"), std::string::npos);
 
     e = errorOf("{\"a\": NaN}");
-    EXPECT_NE(e.message.find("expected a value"), std::string::npos);
+    EXPECT_NE(i18ntest::english(e.message).find("expected a value"), std::string::npos);
 
     e = errorOf("{\"a\": 1e999}");
-    EXPECT_NE(e.message.find("too large"), std::string::npos);
+    EXPECT_NE(i18ntest::english(e.message).find("too large"), std::string::npos);
 
     e = errorOf("{} {}");
-    EXPECT_NE(e.message.find("after the end"), std::string::npos);
+    EXPECT_NE(i18ntest::english(e.message).find("after the end"), std::string::npos);
 
     e = errorOf("\"\xC3\x28\"");
-    EXPECT_NE(e.message.find("UTF-8"), std::string::npos);
+    EXPECT_NE(i18ntest::english(e.message).find("UTF-8"), std::string::npos);
     e = errorOf("\"\xED\xA0\x80\"");  // an encoded surrogate
-    EXPECT_NE(e.message.find("UTF-8"), std::string::npos);
+    EXPECT_NE(i18ntest::english(e.message).find("UTF-8"), std::string::npos);
     e = errorOf("\"\\uD800x\"");
-    EXPECT_NE(e.message.find("surrogate"), std::string::npos);
+    EXPECT_NE(i18ntest::english(e.message).find("surrogate"), std::string::npos);
     e = errorOf("");
-    EXPECT_NE(e.message.find("end of the text"), std::string::npos);
+    EXPECT_NE(i18ntest::english(e.message).find("end of the text"), std::string::npos);
 }
 
 TEST(Json, DeepNestingIsRefusedNotACrash)
@@ -86,7 +87,7 @@ TEST(Json, DeepNestingIsRefusedNotACrash)
     std::string deep(kMaxDepth + 10, '[');
     deep += std::string(kMaxDepth + 10, ']');
     const auto e = errorOf(deep);
-    EXPECT_NE(e.message.find("nested deeper"), std::string::npos);
+    EXPECT_NE(i18ntest::english(e.message).find("nested deeper"), std::string::npos);
     std::string ok(kMaxDepth, '[');
     ok += std::string(kMaxDepth, ']');
     EXPECT_TRUE(parse(ok));
@@ -164,7 +165,7 @@ TEST(JsonFields, EveryProblemIsCollectedWithItsPlace)
     EXPECT_FALSE(o.number("speed", true, 0, 10));
     EXPECT_EQ(o.number("speed_opt", false, 0, 10), std::nullopt);
     o.refuseUnknown({"schema", "version", "volume_ul", "cycles", "mode", "name", "speed"});
-    const std::string text = problems.format("r.json");
+    const std::string text = i18ntest::englishFormat(problems, "r.json");
     EXPECT_NE(text.find("r.json:3:16: volume_ul: must be from 0 to 1000 (got -5)"), std::string::npos) << text;
     EXPECT_NE(text.find("r.json:4:13: cycles: must be a whole number (got 2.5)"), std::string::npos) << text;
     EXPECT_NE(text.find("mode: \"fast\" is not one of \"slow\", \"normal\""), std::string::npos) << text;
@@ -184,8 +185,8 @@ TEST(JsonFields, SchemaHeaderIsChecked)
     EXPECT_FALSE(checkSchema(*parse("{\"schema\": \"benchpilot.x\", \"version\": 0.5}").value, "benchpilot.x", 1, p));
     EXPECT_EQ(checkSchema(*parse("{\"schema\": \"benchpilot.x\", \"version\": 2}").value, "benchpilot.x", 3, p), 2);
     ASSERT_EQ(p.size(), 5u);
-    EXPECT_NE(p.list()[3].message.find("newer BenchPilot"), std::string::npos);
-    EXPECT_NE(p.list()[2].message.find("expected \"benchpilot.x\""), std::string::npos);
+    EXPECT_NE(i18ntest::english(p.list()[3].message).find("newer BenchPilot"), std::string::npos);
+    EXPECT_NE(i18ntest::english(p.list()[2].message).find("expected \"benchpilot.x\""), std::string::npos);
 }
 
 TEST(Json, RandomBytesNeverCrashAndValidTextRoundTrips)

@@ -1,5 +1,6 @@
 // Pattern files (device/files/pattern_file.h): the examples load and plan, files round-trip,
 // every problem is reported at once with its place, writes are atomic.
+#include "device/english_words.h"
 #include "device/files/pattern_file.h"
 
 #include <QDir>
@@ -29,7 +30,7 @@ std::string slurp(const std::string& path)
 
 std::string problemsOf(std::string_view text)
 {
-    return files::parsePattern(text).problems.format("p.pattern.json");
+    return i18ntest::englishFormat(files::parsePattern(text).problems, "p.pattern.json");
 }
 
 }  // namespace
@@ -42,7 +43,7 @@ TEST(PatternsFile, EveryExampleLoadsPlansAndIsWrittenExactlyAsStored)
     for (const QString& n : names) {
         const std::string text = slurp(examplesDir() + n.toStdString());
         const auto r = files::parsePattern(text);
-        ASSERT_TRUE(r.pattern) << n.toStdString() << "\n" << r.problems.format(n.toStdString());
+        ASSERT_TRUE(r.pattern) << n.toStdString() << "\n" << i18ntest::englishFormat(r.problems, n.toStdString());
         EXPECT_FALSE(motion::plans::plan(*r.pattern).empty()) << n.toStdString();
         EXPECT_EQ(files::writePattern(*r.pattern), text) << n.toStdString() << " is not in the writer's form";
     }
@@ -61,7 +62,7 @@ TEST(PatternsFile, EveryShapeRoundTrips)
         p.wave.angleDeg = 12.5;
         const std::string text = files::writePattern(p);
         const auto r = files::parsePattern(text);
-        ASSERT_TRUE(r.pattern) << text << r.problems.format("x");
+        ASSERT_TRUE(r.pattern) << text << i18ntest::englishFormat(r.problems, "x");
         EXPECT_EQ(files::writePattern(*r.pattern), text);
         EXPECT_EQ(motion::plans::plan(*r.pattern).size(), motion::plans::plan(p).size());
     }
@@ -80,7 +81,7 @@ TEST(PatternsFile, AllProblemsAtOnceWithLineColumnAndField)
                              "}\n";
     EXPECT_EQ(problemsOf(text),
               "p.pattern.json:5:16: feed_mm_s: must be a number, not a string\n"
-              "p.pattern.json:6:16: center_mm: must be two numbers [x, y]\n"
+              "p.pattern.json:6:16: center_mm: must be an array of 2 numbers\n"
               "p.pattern.json:1:1: radius_mm: is missing\n"
               "p.pattern.json:8:16: direction: \"left\" is not one of \"ccw\", \"cw\"\n"
               "p.pattern.json:7:3: radius: unknown field; did you mean \"radius_mm\"?\n");
@@ -90,7 +91,7 @@ TEST(PatternsFile, ThePatternsOwnRulesArePlacedAtTheirField)
 {
     const std::string text = "{\"schema\": \"benchpilot.pattern\", \"version\": 1, \"shape\": \"spiral\", \"feed_mm_s\": 4,\n"
                              " \"center_mm\": [50, 50], \"start_radius_mm\": 1, \"pitch_mm\": 0, \"turns\": 2.2}\n";
-    EXPECT_EQ(problemsOf(text), "p.pattern.json:2:59: pitch_mm: must be above 0 (got 0)\n"
+    EXPECT_EQ(problemsOf(text), "p.pattern.json:2:59: pitch_mm: must be above 0.000 mm (got 0.000 mm)\n"
                                 "p.pattern.json:2:71: turns: must be a whole or half number of turns (got 2.2)\n");
 }
 
@@ -113,15 +114,17 @@ TEST(PatternsFile, SaveIsAtomicAndLoadNamesTheFile)
     const QString path = tmp.filePath(QStringLiteral("c.pattern.json"));
     Pattern p;
     p.name = "c";
-    QString error;
-    ASSERT_TRUE(files::savePatternFile(path, p, &error)) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(files::savePatternFile(path, p, &error)) << error;
     Pattern back;
-    ASSERT_TRUE(files::loadPatternFile(path, &back, &error)) << error.toStdString();
+    jsonio::Problems problems;
+    ASSERT_TRUE(files::loadPatternFile(path, &back, &problems)) << i18ntest::englishFormat(problems, "c.pattern.json");
     EXPECT_EQ(back.name, "c");
     EXPECT_EQ(back.circle.radiusMm, p.circle.radiusMm);
     std::ofstream(tmp.filePath(QStringLiteral("bad.pattern.json")).toStdString()) << "{\"schema\": \"benchpilot.pattern\"}";
-    EXPECT_FALSE(files::loadPatternFile(tmp.filePath(QStringLiteral("bad.pattern.json")), &back, &error));
-    EXPECT_TRUE(error.startsWith(QStringLiteral("bad.pattern.json:1:"))) << error.toStdString();
-    EXPECT_FALSE(files::loadPatternFile(tmp.filePath(QStringLiteral("none.pattern.json")), &back, &error));
-    EXPECT_TRUE(error.contains(QStringLiteral("none.pattern.json")));
+    EXPECT_FALSE(files::loadPatternFile(tmp.filePath(QStringLiteral("bad.pattern.json")), &back, &problems));
+    EXPECT_EQ(i18ntest::englishFormat(problems, "bad.pattern.json").rfind("bad.pattern.json:1:", 0), 0u) << i18ntest::englishFormat(problems, "bad.pattern.json");
+    jsonio::Problems none;
+    EXPECT_FALSE(files::loadPatternFile(tmp.filePath(QStringLiteral("none.pattern.json")), &back, &none));
+    EXPECT_NE(i18ntest::englishFormat(none, "x").find("none.pattern.json"), std::string::npos);
 }

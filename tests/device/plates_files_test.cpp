@@ -1,5 +1,6 @@
 // The plate and recipe files: every problem with its line, column and field;
 // the examples load; what is written reads back the same.
+#include "device/english_words.h"
 #include "device/files/plates/calibration_file.h"
 #include "device/files/plates/labware_file.h"
 #include "device/files/recipes/recipe_file.h"
@@ -32,7 +33,7 @@ std::string validate(const std::string& recipe)
     RecipeRead r = parseRecipe(recipe);
     if (r.recipe)
         placeProblems(r, plates::planRecipe(*r.recipe, builtinContext()).problems);
-    return r.problems.format("plate.recipe.json");
+    return i18ntest::englishFormat(r.problems, "plate.recipe.json");
 }
 
 const char* kHead = "{\n  \"schema\": \"benchpilot.recipe\",\n  \"version\": 1,\n  \"name\": \"t\",\n"
@@ -63,7 +64,7 @@ TEST(PlateFiles, UnknownWellVolumeOverCapacityUnknownTypeAndMissingPlateAllAtOnc
         "    {\"type\": \"aspirate\", \"wells\": \"I13\", \"volume_ul\": 5}\n"
         "  ]\n}\n";
     const std::string out = validate(recipe);
-    EXPECT_NE(out.find("plate.recipe.json:7:54: steps[0].volume_ul: volume over capacity: 1200 µL is more than the syringe holds (1000 µL)\n"),
+    EXPECT_NE(out.find("plate.recipe.json:7:54: steps[0].volume_ul: volume over capacity: 1200.0 µL is more than the syringe holds (1000.0 µL)\n"),
               std::string::npos)
         << out;
     EXPECT_NE(out.find("plate.recipe.json:8:14: steps[1].type: unknown step type \"pipette\"; the types are aspirate, dispense, mix, "
@@ -71,7 +72,7 @@ TEST(PlateFiles, UnknownWellVolumeOverCapacityUnknownTypeAndMissingPlateAllAtOnc
               std::string::npos)
         << out;
     EXPECT_NE(out.find("steps[2].plate: unknown plate \"reagents\""), std::string::npos) << out;
-    EXPECT_NE(out.find("steps[3].volume_ul: must be more than 0 µL (got -5)"), std::string::npos) << out;
+    EXPECT_NE(out.find("steps[3].volume_ul: must be more than 0 (got -5.0 µL)"), std::string::npos) << out;
     EXPECT_NE(out.find("steps[4].wells: unknown well \"I13\" on a 96-well plate"), std::string::npos) << out;
     EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 5) << out;
 }
@@ -90,7 +91,7 @@ TEST(PlateFiles, MeaningProblemsCarryTheirPositions)
     EXPECT_NE(out.find("plate.recipe.json:8:35: steps[1].plate: unknown plate \"reagents\"; the recipe's plates are \"samples\"\n"),
               std::string::npos)
         << out;
-    EXPECT_NE(out.find("plate.recipe.json:9:54: steps[2].volume_ul: must be more than 0 µL (got -5)\n"), std::string::npos) << out;
+    EXPECT_NE(out.find("plate.recipe.json:9:54: steps[2].volume_ul: must be more than 0 (got -5.0 µL)\n"), std::string::npos) << out;
     EXPECT_NE(out.find("plate.recipe.json:10:42: steps[3].wells[1]: unknown well \"I13\" on a 96-well plate\n"), std::string::npos) << out;
     EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 4) << out;
 }
@@ -116,7 +117,7 @@ TEST(PlateFiles, TheExamplesLoadAndValidate)
     const plates::Deck deck = builtinDeck();
     for (const char* name : {"sampling-96.recipe.json", "reagent-transfer.recipe.json"}) {
         const LoadedRecipe l = loadRecipe(examplePath(name), deck, {});
-        EXPECT_TRUE(l.ok()) << name << ": " << l.messages.join(QLatin1Char('\n')).toStdString();
+        EXPECT_TRUE(l.ok()) << name << ": " << i18ntest::englishFormat(l.problems);
         EXPECT_FALSE(l.plan.ops.empty());
     }
     const LoadedRecipe s = loadRecipe(examplePath("sampling-96.recipe.json"), deck, {});
@@ -149,7 +150,7 @@ TEST(PlateFiles, AMissingLabwareFileIsReported)
     f.close();
     const LoadedRecipe l = loadRecipe(path, builtinDeck(), {});
     EXPECT_FALSE(l.ok());
-    EXPECT_TRUE(l.messages.join(QLatin1Char('\n')).contains(QStringLiteral("nowhere.labware.json"))) << l.messages.join(QLatin1Char('\n')).toStdString();
+    EXPECT_NE(i18ntest::englishFormat(l.problems).find("nowhere.labware.json"), std::string::npos) << i18ntest::englishFormat(l.problems);
 }
 
 TEST(PlateFiles, AnOpentronsDefinitionTurnsIntoOurFrame)
@@ -198,7 +199,7 @@ TEST(PlateFiles, OpentronsProblemsAreNamed)
     std::string shifted = readExample("deep-well-24.opentrons-labware.json");
     swap(shifted, "\"x\": 113.88, \"y\": 12.24", "\"x\": 125.88, \"y\": 12.24");
     const std::string out2 = text(parseLabware(shifted).problems);
-    EXPECT_NE(out2.find("well D6 at (125.88, 73.24) mm does not fit on the 127.76 × 85.48 mm footprint"), std::string::npos) << out2;
+    EXPECT_NE(out2.find("well D6 at (125.880 mm, 73.240 mm) does not fit on the 127.760 mm × 85.480 mm footprint"), std::string::npos) << out2;
     std::string v1 = readExample("deep-well-24.opentrons-labware.json");
     swap(v1, "\"schemaVersion\": 2", "\"schemaVersion\": 1");
     EXPECT_NE(text(parseLabware(v1).problems).find("only Opentrons labware schema 2 is read"), std::string::npos);

@@ -1,5 +1,6 @@
 // The run log: what a resume trusts. Each op's state from its lines, a torn last
 // line after a crash, and the lines that make a log untrustworthy.
+#include "device/english_words.h"
 #include "device/files/recipes/run_log.h"
 #include "device/files/recipes/run_log_writer.h"
 #include "device/files/text_file.h"
@@ -33,7 +34,7 @@ TEST(PlateRunLog, EachOpsStateComesFromItsLines)
         R"({"event":"start","op":2,"kind":"aspirate","plate":"p","well":"A3","volume_ul":10})",
         R"({"event":"pump","op":2,"p_ul":20})",
     }));
-    ASSERT_TRUE(st.problems.empty()) << st.problems.format("run.jsonl");
+    ASSERT_TRUE(st.problems.empty()) << i18ntest::englishFormat(st.problems, "run.jsonl");
     EXPECT_EQ(st.fingerprint, "00ff");
     EXPECT_EQ(st.opCount, 4);
     EXPECT_EQ(st.ops[0].state, OpState::Done);
@@ -59,7 +60,7 @@ TEST(PlateRunLog, ATornLastLineIsACrashMidWriteNotAnError)
     std::string text = log({R"({"event":"start","op":0,"kind":"aspirate","well":"A1"})", R"({"event":"pump","op":0,"p_ul":0})"});
     text += R"({"event":"done","op":0,"p_)";  // SIGKILL mid-write
     const RunLogState st = readRunLog(text);
-    EXPECT_TRUE(st.problems.empty()) << st.problems.format("run.jsonl");
+    EXPECT_TRUE(st.problems.empty()) << i18ntest::englishFormat(st.problems, "run.jsonl");
     EXPECT_TRUE(st.tornTail);
     EXPECT_EQ(st.ops[0].state, OpState::Interrupted);
 }
@@ -72,8 +73,8 @@ TEST(PlateRunLog, AnOpDoneTwiceMakesTheLogUntrustworthy)
         R"({"event":"start","op":0,"kind":"aspirate","well":"A1"})",
     }));
     ASSERT_FALSE(st.problems.empty());
-    EXPECT_NE(st.problems.format("run.jsonl").find("run.jsonl:4:1: op: op 0 starts again after it was done"), std::string::npos)
-        << st.problems.format("run.jsonl");
+    EXPECT_NE(i18ntest::englishFormat(st.problems, "run.jsonl").find("run.jsonl:4:1: op: op 0 starts again after it was done"), std::string::npos)
+        << i18ntest::englishFormat(st.problems, "run.jsonl");
 }
 
 TEST(PlateRunLog, SkipAndRedoAreTheOperatorsDecisions)
@@ -91,7 +92,7 @@ TEST(PlateRunLog, SkipAndRedoAreTheOperatorsDecisions)
         R"({"event":"redo","op":1,"reason":"operator"})",
         R"({"event":"start","op":1,"kind":"dispense","well":"A2"})",
     }));
-    ASSERT_TRUE(st.problems.empty()) << st.problems.format("run.jsonl");
+    ASSERT_TRUE(st.problems.empty()) << i18ntest::englishFormat(st.problems, "run.jsonl");
     EXPECT_EQ(st.ops[0].state, OpState::Skipped);
     EXPECT_EQ(st.ops[1].state, OpState::Started);
     EXPECT_EQ(st.ops[1].starts, 2);
@@ -115,8 +116,8 @@ TEST(PlateRunLog, TheWriterAppendsSyncedLinesAndNeverOverwrites)
     const QString path = dir.filePath(QStringLiteral("run.jsonl"));
     {
         RunLogWriter w;
-        QString error;
-        ASSERT_TRUE(w.create(path, &error)) << error.toStdString();
+        msg::Message error;
+        ASSERT_TRUE(w.create(path, &error)) << error;
         jsonio::Value head = jsonio::schemaObject(kRunLogSchema, kRunLogVersion);
         head.set("event", "run");
         head.set("fingerprint", "ab");
@@ -128,7 +129,7 @@ TEST(PlateRunLog, TheWriterAppendsSyncedLinesAndNeverOverwrites)
         ASSERT_TRUE(w.write(start));
     }
     RunLogWriter again;
-    QString error;
+    msg::Message error;
     EXPECT_FALSE(again.create(path, &error)) << "a log is a record: never overwritten";
     ASSERT_TRUE(again.append(path, &error));
     jsonio::Value resume = jsonio::Value::object();
@@ -137,7 +138,7 @@ TEST(PlateRunLog, TheWriterAppendsSyncedLinesAndNeverOverwrites)
     std::string text;
     ASSERT_TRUE(files::readText(path, &text, &error));
     const RunLogState st = readRunLog(text);
-    EXPECT_TRUE(st.problems.empty()) << st.problems.format("run.jsonl");
+    EXPECT_TRUE(st.problems.empty()) << i18ntest::englishFormat(st.problems, "run.jsonl");
     EXPECT_EQ(st.ops[0].state, OpState::Started);
     EXPECT_EQ(st.runs, 2);
     EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 3);

@@ -1,5 +1,6 @@
 #pragma once
 // Reading the examples and the built-in deck in device tests.
+#include "device/english_words.h"
 #include "device/files/plates/deck_file.h"
 
 #include <QDir>
@@ -20,6 +21,6 @@ inline std::string readExample(const char* name)
 }
 
 /// Messages of a problem list, one per line, for assertions.
-inline std::string text(const jsonio::Problems& p) { return p.format("f.json"); }
+inline std::string text(const jsonio::Problems& p) { return i18ntest::englishFormat(p, "f.json"); }
 
 } // namespace platestest

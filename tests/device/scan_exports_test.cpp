@@ -1,6 +1,7 @@
 // The scan's exports read back through readers written from the tools' published
 // rules (scan_format_readers.h): Fiji's TileConfiguration, Micro-Manager's
 // position list, and CSV.
+#include "device/english_words.h"
 #include "device/files/scan_exports.h"
 #include "scan_format_readers.h"
 
@@ -179,9 +180,9 @@ TEST(ScanExports, WritesAllThreeFiles)
     const ScanPlan p = plan3x2();
     const ScanLayout l = layoutScan(p);
     QStringList written;
-    QString error;
+    msg::Message error;
     ASSERT_TRUE(scanfile::writeExports(dir.filePath(QStringLiteral("out")), p, l, scanfile::plannedRecords(p, l), &written, &error))
-        << error.toStdString();
+        << error;
     ASSERT_EQ(written.size(), 3);
     for (const QString& f : written) {
         QFile file(f);

@@ -15,6 +15,7 @@
 //    a position list's map holds "StagePositions", each with "DevicePositions"
 //    whose entries name a "Device" and give "Position_um";
 //  - CSV (RFC 4180).
+#include "device/english_words.h"
 #include "device/files/json.h"
 
 #include <cmath>
@@ -221,7 +222,7 @@ inline MmPositionList readMicroManagerPositions(const std::string& text)
     MmPositionList out;
     const auto parsed = jsonio::parse(text);
     if (!parsed) {
-        out.error = "not JSON: " + parsed.error.message;
+        out.error = "not JSON: " + i18ntest::english(parsed.error.message);
         return out;
     }
     const jsonio::Value& doc = *parsed.value;

@@ -1,5 +1,6 @@
 // The scan's run log: what a resumed run reads back, a torn last line after a
 // crash, and a damaged log named by its line.
+#include "device/english_words.h"
 #include "device/files/scan_run_log.h"
 
 #include <gtest/gtest.h>
@@ -27,7 +28,7 @@ TEST(ScanRunLog, RecordsReadBackExactly)
     for (int t : {0, 1, 2, 5})
         text += scanfile::runLogLine(record(t));
     const auto r = scanfile::parseRunLog(text);
-    ASSERT_TRUE(r.log) << r.problems.format("run.jsonl");
+    ASSERT_TRUE(r.log) << i18ntest::englishFormat(r.problems, "run.jsonl");
     EXPECT_EQ(r.log->planName, "Slide \"A\"");
     EXPECT_EQ(r.log->fingerprint, 0x0123456789abcdefull);
     EXPECT_EQ(r.log->tiles, 12);
@@ -49,7 +50,7 @@ TEST(ScanRunLog, ALineTornByACrashIsDropped)
     const std::string next = scanfile::runLogLine(record(1));
     text += next.substr(0, next.size() / 2);  // the process died mid-write
     const auto r = scanfile::parseRunLog(text);
-    ASSERT_TRUE(r.log) << r.problems.format("run.jsonl");
+    ASSERT_TRUE(r.log) << i18ntest::englishFormat(r.problems, "run.jsonl");
     EXPECT_EQ(r.log->records.size(), 1u);
     EXPECT_TRUE(r.log->tornTail);
 }
@@ -60,7 +61,7 @@ TEST(ScanRunLog, DamageInsideTheLogIsAnError)
     text += "{\"tile\": 9, \"label\": \"x\"}\n" + scanfile::runLogLine(record(1));
     const auto r = scanfile::parseRunLog(text);
     EXPECT_FALSE(r.log);
-    const std::string e = r.problems.format("run.jsonl");
+    const std::string e = i18ntest::englishFormat(r.problems, "run.jsonl");
     EXPECT_NE(e.find("run.jsonl:3:10: tile: must be from 0 to 3 (got 9)"), std::string::npos) << e;
     EXPECT_NE(e.find("run.jsonl:3:1: planned_mm: is missing"), std::string::npos) << e;
     EXPECT_FALSE(scanfile::parseRunLog("").log);

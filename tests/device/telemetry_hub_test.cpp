@@ -4,6 +4,7 @@
 // the link cannot carry falls back to the capacity the device states, the union of
 // every consumer's wants is what is subscribed, again after a reconnect. With
 // hand-made batches: losses, the window, pause, recording to CSV.
+#include "device/english_words.h"
 #include "device/backends/benchpilot/benchpilot_client.h"
 #include "device/link/simulated_link.h"
 #include "device/telemetry/telemetry_hub.h"
@@ -76,10 +77,11 @@ struct SimRig {
                          [this](const proto::TelemetryBatch& b) { batches.push_back(b); });
         QObject::connect(&client, &dev::BenchPilotClient::requestFailed, &client,
                          [this](const dev::RequestError& e) { failures.push_back(e); });
-        QObject::connect(&hub, &TelemetryHub::subscriptionChanged, &hub, [this](int i, int rate, const QString& note) {
-            changes.push_back({i, rate, note});
+        QObject::connect(&hub, &TelemetryHub::subscriptionChanged, &hub, [this](int i, int rate, const msg::Message& message) {
+            const QString note = QString::fromStdString(message.empty() ? std::string() : msg::debugString(message));
+            changes.push_back({i, rate, note, message});
         });
-        QObject::connect(&hub, &TelemetryHub::problem, &hub, [this](const QString& m) { problems << m; });
+        QObject::connect(&hub, &TelemetryHub::problem, &hub, [this](const msg::Message& m) { problems << QString::fromStdString(msg::debugString(m)); });
         hub.addInstrument(index, name, &client);
     }
     ~SimRig() { client.setTransport(nullptr); }
@@ -108,6 +110,7 @@ struct SimRig {
     struct Change {
         int instrument, rate;
         QString note;
+        msg::Message message;
     };
     dev::SimulatedLink link;
     dev::BenchPilotClient client;
@@ -126,7 +129,7 @@ struct FakeRig {
         hub.addInstrument(0, QStringLiteral("Analyzer"), &analyzer);
         hub.addInstrument(1, QStringLiteral("Stage"), &stage);
         QObject::connect(&hub, &TelemetryHub::dataArrived, &hub, [this](int i) { arrived.push_back(i); });
-        QObject::connect(&hub, &TelemetryHub::problem, &hub, [this](const QString& m) { problems << m; });
+        QObject::connect(&hub, &TelemetryHub::problem, &hub, [this](const msg::Message& m) { problems << QString::fromStdString(msg::debugString(m)); });
     }
     /// n samples of `channels` from sample index `first`, value = f(sample index, channel).
     static proto::TelemetryBatch batch(std::uint32_t first, std::uint64_t t0Us, std::uint32_t periodUs,
@@ -280,17 +283,16 @@ TEST_F(TelemetryHubTest, RateAboveTheLinksCapacityFallsBackToTheCapacityTheDevic
     int stated = 0;
     for (const auto& f : s.failures)
         EXPECT_NE(f.code, proto::ErrorCode::OverCapacity) << "a handled fallback was reported as a failure";
-    const QRegularExpressionMatch m = QRegularExpression(QStringLiteral("at most (\\d+) Hz")).match(s.changes.back().note);
-    if (m.hasMatch())
-        stated = m.captured(1).toInt();
+    const msg::Message& why = s.changes.back().message;
+    EXPECT_EQ(why.id, "telemetry.rate_link_limited") << s.changes.back().note.toStdString();
+    stated = static_cast<int>(why.number("max"));
     ASSERT_GT(stated, 0) << "the device refused 10 kHz and stated its capacity";
     // The fastest rate the link carries, not one sample-clock tick slower.
     // (the device states whole Hz rounded up, 589 for its 588.2 Hz period).
     EXPECT_GE(rate, stated - 1);
     EXPECT_LE(rate, stated + 1);
-    const QString note = s.changes.back().note;
-    EXPECT_TRUE(note.contains(QStringLiteral("115200-baud link"))) << note.toStdString();
-    EXPECT_TRUE(note.contains(QStringLiteral("%1 Hz").arg(rate))) << note.toStdString();
+    EXPECT_EQ(why.number("baud"), 115200);
+    EXPECT_EQ(why.number("rate"), rate);
 
     // What the device then sends fits the wire and nothing is lost.
     const qint64 before = s.link.pair().bytesCarried(dev::LoopbackPair::B);
@@ -355,8 +357,8 @@ TEST_F(TelemetryHubTest, RecordsTheDevicesSamplesToCsvAndReadsBack)
     const QString path = dir.filePath(QStringLiteral("x.csv"));
     const QVector<ChannelKey> columns{s.key(0, ChannelKind::Measured), s.key(0, ChannelKind::FollowingError),
                                       s.key(0, ChannelKind::Switches)};
-    QString error;
-    ASSERT_TRUE(s.hub.startRecording(path, columns, &error)) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(s.hub.startRecording(path, columns, &error)) << error;
     EXPECT_TRUE(s.hub.recording());
     EXPECT_EQ(s.hub.recordingPath(), path);
     // Recording alone collects its channels, at the default rate.
@@ -455,8 +457,8 @@ TEST_F(TelemetryHubTest, PauseFreezesTheViewWhileCollectionAndRecordingGoOn)
 {
     FakeRig f;
     QTemporaryDir dir;
-    QString error;
-    ASSERT_TRUE(f.hub.startRecording(dir.filePath(QStringLiteral("p.csv")), {f.stageX}, &error)) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(f.hub.startRecording(dir.filePath(QStringLiteral("p.csv")), {f.stageX}, &error)) << error;
     f.hub.setWindowS(1.0);
     f.hub.setWanted(QStringLiteral("plot"), {f.stageX}, 1000);
     f.feedStage(0, 2.0);
@@ -527,8 +529,8 @@ TEST_F(TelemetryHubTest, RecordingSpansInstrumentsWithOneRowPerDeviceSample)
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("both.csv"));
     const ChannelKey analyzerZ{0, ref(2, ChannelKind::Commanded)};
-    QString error;
-    ASSERT_TRUE(f.hub.startRecording(path, {f.stageX, analyzerZ}, &error)) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(f.hub.startRecording(path, {f.stageX, analyzerZ}, &error)) << error;
     const std::vector<ChannelRef> z{ref(2, ChannelKind::Commanded)};
     emit f.analyzer.telemetryReceived(FakeRig::batch(0, 5'000'000, 10'000, z, 2, [](std::uint32_t i, std::size_t) {
         return std::int32_t(-7 - i);
@@ -547,16 +549,16 @@ TEST_F(TelemetryHubTest, RecordingSpansInstrumentsWithOneRowPerDeviceSample)
 TEST_F(TelemetryHubTest, RecordingRefusesWhatItCannotDoWithAReason)
 {
     FakeRig f;
-    QString error;
+    msg::Message error;
     EXPECT_FALSE(f.hub.startRecording(QStringLiteral("/nonexistent-dir/x.csv"), {f.stageX}, &error));
-    EXPECT_TRUE(error.contains(QStringLiteral("/nonexistent-dir/x.csv"))) << error.toStdString();
+    EXPECT_TRUE(QString::fromStdString(i18ntest::english(error)).contains(QStringLiteral("/nonexistent-dir/x.csv"))) << error;
     EXPECT_FALSE(f.hub.recording());
     EXPECT_FALSE(f.hub.startRecording(QStringLiteral("/tmp/never.csv"), {}, &error));
-    EXPECT_TRUE(error.contains(QStringLiteral("nothing to record"))) << error.toStdString();
+    EXPECT_TRUE(QString::fromStdString(i18ntest::english(error)).contains(QStringLiteral("nothing to record"))) << error;
     QTemporaryDir dir;
     ASSERT_TRUE(f.hub.startRecording(dir.filePath(QStringLiteral("a.csv")), {f.stageX}, &error));
     EXPECT_FALSE(f.hub.startRecording(dir.filePath(QStringLiteral("b.csv")), {f.stageX}, &error));
-    EXPECT_TRUE(error.contains(QStringLiteral("already recording"))) << error.toStdString();
+    EXPECT_TRUE(QString::fromStdString(i18ntest::english(error)).contains(QStringLiteral("already recording"))) << error;
 }
 
 } // namespace

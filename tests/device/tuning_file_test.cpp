@@ -1,5 +1,6 @@
 // Tuning results as files (docs/tuning_results.md): round trips, every problem
 // of a bad file at once with its position and field, the examples, atomic saves.
+#include "device/english_words.h"
 #include "device/files/tuning_file.h"
 #include "motion/control/tuning/tuning_rules.h"
 
@@ -58,8 +59,8 @@ TEST(TuningFile, WritesAndReadsBackTheSameDocument)
     const std::string text = files::tuningToJson(r);
     EXPECT_NE(text.find("\"schema\": \"benchpilot.tuning\""), std::string::npos);
     EXPECT_NE(text.find("\"zn-pid\""), std::string::npos);  // the rules table, for readers
-    const auto back = files::tuningFromJson(text, "x.tuning.json");
-    ASSERT_TRUE(back.result) << back.problems;
+    const auto back = files::tuningFromJson(text);
+    ASSERT_TRUE(back.result) << i18ntest::englishFormat(back.problems, "x.tuning.json");
     EXPECT_EQ(back.result->target, "Stage X");
     EXPECT_DOUBLE_EQ(back.result->ku, 4.27);
     ASSERT_TRUE(back.result->kuDescribing);
@@ -79,8 +80,8 @@ TEST(TuningFile, WritesAndReadsBackTheSameDocument)
     ug.step = 1;
     ug.envelope = {3, 3, 600};
     ug.trials = {{0.1, 0, 0, "no oscillation"}, {8.2, 0.73, 1.29, "decays"}, {9.1, 0.99, 1.3, "sustained"}};
-    const auto ugBack = files::tuningFromJson(files::tuningToJson(ug), "m.tuning.json");
-    ASSERT_TRUE(ugBack.result) << ugBack.problems;
+    const auto ugBack = files::tuningFromJson(files::tuningToJson(ug));
+    ASSERT_TRUE(ugBack.result) << i18ntest::englishFormat(ugBack.problems, "m.tuning.json");
     EXPECT_EQ(ugBack.result->trials.size(), 3u);
     EXPECT_EQ(files::tuningToJson(*ugBack.result), files::tuningToJson(ug));
 }
@@ -101,9 +102,9 @@ TEST(TuningFile, ABadFileIsRefusedWithEveryProblemAndWhereItIs)
   "kuu": 1
 }
 )";
-    const auto r = files::tuningFromJson(text, "bad.tuning.json");
+    const auto r = files::tuningFromJson(text);
     EXPECT_FALSE(r.result);
-    const std::string& p = r.problems;
+    const std::string p = i18ntest::englishFormat(r.problems, "bad.tuning.json");
     EXPECT_NE(p.find("bad.tuning.json:7:9: ku: must be"), std::string::npos) << p;
     EXPECT_NE(p.find("envelope.max_duration_s: is missing"), std::string::npos) << p;
     EXPECT_NE(p.find("relay.points[0].phase_deg: is missing"), std::string::npos) << p;
@@ -113,12 +114,12 @@ TEST(TuningFile, ABadFileIsRefusedWithEveryProblemAndWhereItIs)
     EXPECT_NE(p.find("kuu"), std::string::npos) << p;
     EXPECT_GE(std::count(p.begin(), p.end(), '\n'), 7);
 
-    const auto newer = files::tuningFromJson(R"({"schema": "benchpilot.tuning", "version": 2})", "n.json");
-    EXPECT_NE(newer.problems.find("written by a newer BenchPilot"), std::string::npos) << newer.problems;
-    const auto other = files::tuningFromJson(R"({"schema": "benchpilot.recipe", "version": 1})", "o.json");
-    EXPECT_NE(other.problems.find("expected \"benchpilot.tuning\""), std::string::npos) << other.problems;
-    const auto broken = files::tuningFromJson("{\"schema\": ", "b.json");
-    EXPECT_NE(broken.problems.find("b.json:1:"), std::string::npos) << broken.problems;
+    const std::string newer = i18ntest::englishFormat(files::tuningFromJson(R"({"schema": "benchpilot.tuning", "version": 2})").problems, "n.json");
+    EXPECT_NE(newer.find("written by a newer BenchPilot"), std::string::npos) << newer;
+    const std::string other = i18ntest::englishFormat(files::tuningFromJson(R"({"schema": "benchpilot.recipe", "version": 1})").problems, "o.json");
+    EXPECT_NE(other.find("expected \"benchpilot.tuning\""), std::string::npos) << other;
+    const std::string broken = i18ntest::englishFormat(files::tuningFromJson("{\"schema\": ").problems, "b.json");
+    EXPECT_NE(broken.find("b.json:1:"), std::string::npos) << broken;
 }
 
 TEST(TuningFile, TheExamplesLoad)
@@ -127,9 +128,9 @@ TEST(TuningFile, TheExamplesLoad)
     const QStringList names = dir.entryList({QStringLiteral("*.tuning.json")}, QDir::Files);
     ASSERT_GE(names.size(), 2) << "resources/examples should hold real tuning results";
     for (const QString& n : names) {
-        QString error;
-        const auto r = files::loadTuningFile(dir.filePath(n), &error);
-        ASSERT_TRUE(r) << n.toStdString() << ": " << error.toStdString();
+        jsonio::Problems problems;
+        const auto r = files::loadTuningFile(dir.filePath(n), &problems);
+        ASSERT_TRUE(r) << i18ntest::englishFormat(problems, n.toStdString());
         EXPECT_GT(r->ku, 0);
         EXPECT_GT(r->tuS, 0);
     }
@@ -140,13 +141,14 @@ TEST(TuningFile, SavesAtomicallyAndLoadsBack)
     QTemporaryDir tmp;
     ASSERT_TRUE(tmp.isValid());
     const QString path = tmp.filePath(QStringLiteral("stage.tuning.json"));
-    QString error;
-    ASSERT_TRUE(files::saveTuningFile(path, relayResult(), &error)) << error.toStdString();
-    const auto r = files::loadTuningFile(path, &error);
-    ASSERT_TRUE(r) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(files::saveTuningFile(path, relayResult(), &error)) << error;
+    jsonio::Problems problems;
+    const auto r = files::loadTuningFile(path, &problems);
+    ASSERT_TRUE(r) << i18ntest::englishFormat(problems, "stage.tuning.json");
     EXPECT_EQ(r->method, "relay");
     EXPECT_FALSE(files::saveTuningFile(tmp.filePath(QStringLiteral("no/such/dir/x.json")), relayResult(), &error));
-    EXPECT_FALSE(error.isEmpty());
-    EXPECT_FALSE(files::loadTuningFile(tmp.filePath(QStringLiteral("missing.json")), &error));
-    EXPECT_TRUE(error.contains(QStringLiteral("missing.json"))) << error.toStdString();
+    EXPECT_EQ(error.id, "file.cannot_write");
+    EXPECT_FALSE(files::loadTuningFile(tmp.filePath(QStringLiteral("missing.json")), &problems));
+    EXPECT_NE(i18ntest::englishFormat(problems, "x").find("missing.json"), std::string::npos) << i18ntest::englishFormat(problems, "x");
 }

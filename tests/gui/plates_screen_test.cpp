@@ -132,7 +132,7 @@ TEST_F(PlatesScreenTest, DragSelectsWellsAndTheirStepRunsOnTheSimulator)
     ASSERT_TRUE(run->isEnabled());
     QTest::mouseClick(run, Qt::LeftButton);
     ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Finished; }, 30000))
-        << jobs::runStateName(screen->runner()->state()).toStdString();
+        << jobs::runStateTerm(screen->runner()->state());
     ASSERT_TRUE(waitFor([&] { return !analyzer()->status().anyMoving(); }, 5000));
     pump(200);
     EXPECT_NEAR(analyzer()->status().axes[3].commanded, 60, 1e-6) << "six wells of 10 µL";

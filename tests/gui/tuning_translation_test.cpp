@@ -1,7 +1,7 @@
 // What the tuning screens show from motion/'s plain keys (how a run ended, a
 // trial's outcome, where a rule comes from) reaches the person translated: with
 // a stand-in translation installed, none of it is left in English.
-#include "device/jobs/tuning/tuning_words.h"
+#include "widgets/wording/wording.h"
 #include "motion/control/tuning/tuning_result.h"
 #include "motion/control/tuning/tuning_rules.h"
 #include "widgets/tuning/zn_panel.h"
@@ -17,12 +17,12 @@ using motion::control::TuningResult;
 
 TEST(TuningTranslation, OutcomesAndEndReasonsAreTranslatedByKey)
 {
-    const i18ntest::PseudoTranslation translated({QStringLiteral("dev::TuningWords")});
-    EXPECT_EQ(dev::outcomeText("decays"), QStringLiteral("décáys"));
-    EXPECT_EQ(dev::outcomeText("sustained"), QStringLiteral("sústáínéd"));
-    EXPECT_EQ(dev::outcomeText("hit the envelope"), QStringLiteral("hít thé énvélópé"));
-    EXPECT_EQ(dev::endReasonText(EndReason::Excursion), QStringLiteral("máx éxcúrsíón crósséd"));
-    EXPECT_EQ(dev::outcomeText(motion::control::endReasonName(EndReason::Settled)), QStringLiteral("séttléd"))
+    const i18ntest::PseudoTranslation translated({QStringLiteral("words::TuningWords")});
+    EXPECT_EQ(words::tuningOutcome("decays"), QStringLiteral("décáys"));
+    EXPECT_EQ(words::tuningOutcome("sustained"), QStringLiteral("sústáínéd"));
+    EXPECT_EQ(words::tuningOutcome("hit the envelope"), QStringLiteral("hít thé énvélópé"));
+    EXPECT_EQ(words::term(motion::control::endReasonTerm(EndReason::Excursion)), QStringLiteral("máx éxcúrsíón crósséd"));
+    EXPECT_EQ(words::tuningOutcome(motion::control::endReasonName(EndReason::Settled)), QStringLiteral("séttléd"))
         << "a verification stores its end reason's name";
 }
 
@@ -40,7 +40,7 @@ TEST(TuningTranslation, TheZnPanelShowsTheVerificationAndTheRuleSourcesTranslate
     v.outcome = motion::control::endReasonName(EndReason::Settled);
     r.verification = v;
 
-    const i18ntest::PseudoTranslation translated({QStringLiteral("dev::TuningWords"), QStringLiteral("ui::ZnPanel")});
+    const i18ntest::PseudoTranslation translated({QStringLiteral("words::TuningWords"), QStringLiteral("ui::ZnPanel")});
     ui::ZnPanel panel;
     panel.showResult(r);
     const QString text = panel.resultText();

@@ -26,6 +26,16 @@ QString letters(const dev::DeviceIdentity& id)
 
 std::string text(const QStringList& l) { return l.join(QStringLiteral(" | ")).toStdString(); }
 
+/// The device's own refusal inside a client's "ACTION refused: CAUSE": the
+/// device.refused message with its code's term, the axis letter and the
+/// firmware's words ("detail"); empty when the error is not shaped so.
+msg::Message deviceRefusal(const RequestError& e)
+{
+    if (e.message.id != "request.refused")
+        return {};
+    return msg::nested(e.message, "cause");
+}
+
 } // namespace
 
 TEST(ClientOverLoopback, AnalyzerConnectsThroughIdentifiedToReadyWithItsIdentity)
@@ -107,7 +117,7 @@ TEST(ClientOverLoopback, AnalyzerHomesZFirstThenMovesOnTargetWithinEncoderTolera
     const std::size_t mark = s.events.size();
     s.link.host().setTimeScale(5);
     const auto err = s.call([&](auto cb) { s.client.move({{x, 120.5}, {y, 80.25}, {z, 40.0}, {p, 500.0}}, false, 0, cb); });
-    ASSERT_FALSE(err) << err->message.toStdString();
+    ASSERT_FALSE(err) << msg::debugString(err->message);
     for (int i : {x, y, z, p})
         ASSERT_TRUE(s.waitEvent(K::MotionDone, i, mark)) << "no MotionDone on axis " << i;
     s.link.host().setTimeScale(1);
@@ -142,7 +152,7 @@ TEST(ClientOverLoopback, StageMovesOnTargetWithinTwoMicronsOfTheGrating)
         const std::size_t mark = s.events.size();
         s.link.host().setTimeScale(10);
         const auto err = s.call([&](auto cb) { s.client.move({{x, t.x}, {y, t.y}}, false, 20.0, cb); });
-        ASSERT_FALSE(err) << err->message.toStdString();
+        ASSERT_FALSE(err) << msg::debugString(err->message);
         ASSERT_TRUE(s.waitEvent(K::MotionDone, x, mark));
         ASSERT_TRUE(s.waitEvent(K::MotionDone, y, mark));
         s.link.host().setTimeScale(1);
@@ -169,8 +179,12 @@ TEST(ClientOverLoopback, AbsoluteMoveOnUnhomedAxisIsRefusedNamingTheAxis)
     EXPECT_EQ(err->kind, RequestError::Kind::Device);
     EXPECT_EQ(err->code, proto::ErrorCode::NotHomed);
     EXPECT_EQ(err->axis, y);
-    EXPECT_TRUE(err->message.contains(QStringLiteral("axis Y"))) << err->message.toStdString();
-    EXPECT_TRUE(err->message.contains(QStringLiteral("not homed"))) << err->message.toStdString();
+    const msg::Message why = deviceRefusal(*err);
+    EXPECT_EQ(why.id, "device.refused") << err->message;
+    EXPECT_EQ(why.text("code"), "device.error.not_homed") << err->message;
+    EXPECT_EQ(why.text("axis"), "Y") << err->message;
+    EXPECT_NE(why.text("detail").find("axis Y"), std::string::npos) << err->message;
+    EXPECT_NE(why.text("detail").find("not homed"), std::string::npos) << err->message;
     // A status bar listening to requestFailed hears the same reason.
     ASSERT_FALSE(s.failures.empty());
     EXPECT_EQ(s.failures.back().code, proto::ErrorCode::NotHomed);
@@ -182,7 +196,7 @@ TEST(ClientOverLoopback, AbsoluteMoveOnUnhomedAxisIsRefusedNamingTheAxis)
 
     // A relative move is what an unhomed axis may do.
     const auto rel = s.call([&](auto cb) { s.client.move({{y, 2.0}}, true, 0, cb); });
-    EXPECT_FALSE(rel) << rel->message.toStdString();
+    EXPECT_FALSE(rel) << rel->message;
     EXPECT_TRUE(s.waitEvent(K::MotionDone, y));
 }
 
@@ -202,14 +216,16 @@ TEST(ClientOverLoopback, MoveBeyondSoftLimitIsRefusedWithReasonAndLimit)
     EXPECT_EQ(err->code, proto::ErrorCode::SoftLimit);
     EXPECT_EQ(err->axis, x);
     EXPECT_NEAR(err->value, 60.0, 1e-6);
-    EXPECT_TRUE(err->message.contains(QStringLiteral("upper soft limit"))) << err->message.toStdString();
-    EXPECT_TRUE(err->message.contains(QStringLiteral("60.000"))) << err->message.toStdString();
+    EXPECT_EQ(deviceRefusal(*err).text("code"), "device.error.soft_limit") << err->message;
+    EXPECT_EQ(deviceRefusal(*err).text("axis"), "X") << err->message;
+    EXPECT_NE(deviceRefusal(*err).text("detail").find("upper soft limit"), std::string::npos) << err->message;
+    EXPECT_NE(deviceRefusal(*err).text("detail").find("60.000"), std::string::npos) << err->message;
 
     err = s.call([&](auto cb) { s.client.move({{x, 2.0}}, false, 0, cb); });
     ASSERT_TRUE(err);
     EXPECT_EQ(err->code, proto::ErrorCode::SoftLimit);
     EXPECT_NEAR(err->value, 5.0, 1e-6);
-    EXPECT_TRUE(err->message.contains(QStringLiteral("lower soft limit"))) << err->message.toStdString();
+    EXPECT_NE(deviceRefusal(*err).text("detail").find("lower soft limit"), std::string::npos) << err->message;
 
     // Relative moves are checked against the same limits.
     err = s.call([&](auto cb) { s.client.move({{x, 61.0}}, true, 0, cb); });
@@ -294,7 +310,7 @@ TEST(ClientOverLoopback, UnhomedRelativeMoveIntoTheLimitSwitchStopsWithLimitHit)
 
     s.link.host().setTimeScale(10);
     const auto err = s.call([&](auto cb) { s.client.move({{x, 250.0}}, true, 0, cb); });
-    ASSERT_FALSE(err) << err->message.toStdString();
+    ASSERT_FALSE(err) << msg::debugString(err->message);
     ASSERT_TRUE(s.waitEvent(K::LimitHit, x)) << "no LimitHit on X";
     s.link.host().setTimeScale(1);
     const auto& hit = s.events[std::size_t(s.findEvent(K::LimitHit, x))];
@@ -326,7 +342,7 @@ TEST(ClientOverLoopback, EStopDuringMoveHaltsAndRefusesMovesUntilReset)
     ASSERT_TRUE(waitFor([&] { return s.link.machine().commandedLogical(x) > start + 5.0; }, 5000));
     const std::size_t mark = s.events.size();
     const auto err = s.call([&](auto cb) { s.client.estop(cb); });
-    ASSERT_FALSE(err) << err->message.toStdString();
+    ASSERT_FALSE(err) << msg::debugString(err->message);
     ASSERT_TRUE(s.waitEvent(K::EStop, -1, mark));
     ASSERT_TRUE(waitFor([&] { return s.client.status().estop && !s.readout('X').moving; }, 3000));
 
@@ -340,7 +356,7 @@ TEST(ClientOverLoopback, EStopDuringMoveHaltsAndRefusesMovesUntilReset)
     auto refused = s.call([&](auto cb) { s.client.move({{x, 1.0}}, true, 0, cb); });
     ASSERT_TRUE(refused);
     EXPECT_EQ(refused->code, proto::ErrorCode::EStopActive);
-    EXPECT_TRUE(refused->message.contains(QStringLiteral("E-stop"))) << refused->message.toStdString();
+    EXPECT_EQ(deviceRefusal(*refused).text("code"), "device.error.estop_active") << refused->message;
     refused = s.call([&](auto cb) { s.client.home(0, cb); });
     ASSERT_TRUE(refused);
     EXPECT_EQ(refused->code, proto::ErrorCode::EStopActive);

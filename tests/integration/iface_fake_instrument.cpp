@@ -93,7 +93,7 @@ void FakeInstrument::arrive(const std::vector<int>& axes, double seconds, proto:
 void FakeInstrument::home(quint8 axisMask, Callback done)
 {
     if (!isReady())
-        return refuse(done, dev::RequestError::Kind::LinkDown, QStringLiteral("not connected"));
+        return refuse(done, dev::RequestError::Kind::LinkDown, msg::make("request.instrument_not_connected"));
     std::vector<int> axes;
     for (int a = 0; a < m_status.axes.size(); ++a)
         if (axisMask == 0 || (axisMask & (1u << a))) {
@@ -111,13 +111,13 @@ void FakeInstrument::home(quint8 axisMask, Callback done)
 void FakeInstrument::move(const QVector<QPair<int, double>>& targets, bool relative, double speed, Callback done)
 {
     if (!isReady())
-        return refuse(done, dev::RequestError::Kind::LinkDown, QStringLiteral("not connected"));
+        return refuse(done, dev::RequestError::Kind::LinkDown, msg::make("request.instrument_not_connected"));
     moves.push_back(targets);
     std::vector<int> axes;
     double lengthMm = 0;
     for (const auto& [axis, value] : targets) {
         if (axis < 0 || axis >= m_status.axes.size())
-            return refuse(done, dev::RequestError::Kind::Invalid, QStringLiteral("no such axis"));
+            return refuse(done, dev::RequestError::Kind::Invalid, msg::make("request.move_no_such_axis", {msg::integer("index", axis, msg::Unit::None)}));
         auto& r = m_status.axes[axis];
         const double to = relative ? r.commanded + value : value;
         lengthMm = std::hypot(lengthMm, to - r.commanded);
@@ -214,7 +214,7 @@ void FakeInstrument::dwell(double seconds, Callback done)
 void FakeInstrument::pulseTrigger(double widthS, Callback done)
 {
     if (!m_caps.testFlag(dev::Capability::TriggerOutput))
-        return refuse(done, dev::RequestError::Kind::Invalid, QStringLiteral("no trigger output"));
+        return refuse(done, dev::RequestError::Kind::Invalid, msg::make("request.no_trigger_output"));
     triggerWidthsS.push_back(widthS);
     later([done] {
         if (done)

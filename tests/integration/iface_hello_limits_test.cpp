@@ -11,6 +11,7 @@
 #include "device/link/simulated_link.h"
 #include "device/sim/sim_machine.h"
 #include "motion/plans/recipes/move_time.h"
+#include "motion/message_print.h"
 #include "wait.h"
 
 #include <QTemporaryDir>
@@ -99,8 +100,8 @@ TEST(IfaceHelloLimits, AStageThatReportsOtherLimitsGetsOtherScanEstimates)
         p.camera.fieldWidthMm = p.camera.fieldHeightMm = 1.0;
         QTemporaryDir dir;
         jobs::ScanRunner runner(&r.client);
-        QString error;
-        EXPECT_TRUE(runner.prepare(p, dir.path(), false, &error)) << error.toStdString();
+        msg::Message error;
+        EXPECT_TRUE(runner.prepare(p, dir.path(), false, &error)) << error;
         return runner.estimate().moveS;
     };
     sim::MachineConfig slow = sim::stageConfig();

@@ -5,6 +5,7 @@
 #include "device/client/joystick_driver.h"
 #include "device/jobs/scan_runner.h"
 #include "iface_fake_instrument.h"
+#include "motion/message_print.h"
 #include "wait.h"
 
 #include <QTemporaryDir>
@@ -50,12 +51,12 @@ TEST(IfaceRunnerOnFake, AScanRunsToTheEndOnABackendWithoutAProtocol)
     ASSERT_TRUE(connectAndHome(fake));
     QTemporaryDir dir;
     ScanRunner runner(&fake);
-    QString error;
-    ASSERT_TRUE(runner.prepare(fourTiles(), dir.path(), false, &error)) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(runner.prepare(fourTiles(), dir.path(), false, &error)) << error;
     ASSERT_EQ(runner.totalTiles(), 4);
-    ASSERT_TRUE(runner.start(&error)) << error.toStdString();
+    ASSERT_TRUE(runner.start(&error)) << error;
     ASSERT_TRUE(waitFor([&] { return runner.state() == ScanRunner::State::Finished; }, 10000))
-        << ScanRunner::stateName(runner.state()).toStdString();
+        << ScanRunner::stateTerm(runner.state());
 
     EXPECT_EQ(runner.takenTiles(), 4);
     EXPECT_EQ(fake.moves.size(), 4u);  // one move per tile, no overtravel in this plan
@@ -78,7 +79,7 @@ TEST(IfaceRunnerOnFake, WithoutATriggerOutputNoPulseIsAskedFor)
     ASSERT_TRUE(connectAndHome(fake));
     QTemporaryDir dir;
     ScanRunner runner(&fake);
-    QString error;
+    msg::Message error;
     ASSERT_TRUE(runner.prepare(fourTiles(), dir.path(), false, &error));
     ASSERT_TRUE(runner.start(&error));
     ASSERT_TRUE(waitFor([&] { return runner.state() == ScanRunner::State::Finished; }, 10000));
@@ -94,8 +95,8 @@ TEST(IfaceRunnerOnFake, TheScanEstimateFollowsTheLimitsTheDeviceReports)
         EXPECT_TRUE(connectAndHome(fake));
         QTemporaryDir dir;
         ScanRunner runner(&fake);
-        QString error;
-        EXPECT_TRUE(runner.prepare(fourTiles(), dir.path(), false, &error)) << error.toStdString();
+        msg::Message error;
+        EXPECT_TRUE(runner.prepare(fourTiles(), dir.path(), false, &error)) << error;
         return runner.estimate().moveS;
     };
     const double brisk = estimateOn(200, 4000);

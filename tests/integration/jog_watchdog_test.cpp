@@ -46,7 +46,7 @@ TEST_P(JogWatchdog, JogWhoseRefreshesStopIsAtRestWithin250msOfTheLastRefresh)
                                               {static_cast<std::uint8_t>(x), proto::ChannelKind::Measured}};
     bool subscribed = false;
     s.client.subscribe(channels, 1000, [&](const auto& e, const auto&) {
-        EXPECT_FALSE(e) << e->message.toStdString();
+        EXPECT_FALSE(e) << msg::debugString(e->message);
         subscribed = true;
     });
     ASSERT_TRUE(waitFor([&] { return subscribed; }, 3000));

@@ -93,7 +93,7 @@ TEST(LinkFaults, GarbageFromTheDeviceIsCountedAndSkippedWithoutReconnecting)
     const double start = s.link.machine().commandedLogical(x);
     const std::size_t mark = s.events.size();
     const auto err = s.call([&](auto cb) { s.client.move({{x, 1.5}}, true, 0, cb); });
-    ASSERT_FALSE(err) << err->message.toStdString();
+    ASSERT_FALSE(err) << msg::debugString(err->message);
     ASSERT_TRUE(s.waitEvent(K::MotionDone, x, mark));
     EXPECT_NEAR(s.link.machine().commandedLogical(x), start + 1.5, 1e-6);
 }
@@ -152,7 +152,7 @@ TEST(LinkFaults, CorruptedRequestIsNeverExecutedAndItsRetransmissionRunsOnce)
     const std::size_t mark = s.events.size();
 
     const auto err = s.call([&](auto cb) { s.client.move({{x, 5.0}}, true, 0, cb); });
-    ASSERT_FALSE(err) << err->message.toStdString();
+    ASSERT_FALSE(err) << msg::debugString(err->message);
     EXPECT_GE(moveWrites, 2) << "the client must have sent the move again";
     EXPECT_GE(s.client.stats().retransmits - retransmitsBefore, 1u);
     EXPECT_GT(fw.decoderStats().crcErrors + fw.decoderStats().malformed, crcBefore) << "the device saw the damaged frame";
@@ -203,7 +203,7 @@ TEST(LinkFaults, RequestWhoseReplyIsLostIsRetransmittedAndExecutedOnce)
     const std::size_t mark = s.events.size();
 
     const auto err = s.call([&](auto cb) { s.client.move({{x, 5.0}}, true, 0, cb); });
-    ASSERT_FALSE(err) << err->message.toStdString();
+    ASSERT_FALSE(err) << msg::debugString(err->message);
     EXPECT_TRUE(replyDropped);
     EXPECT_GE(s.client.stats().retransmits - retransmitsBefore, 1u);
     EXPECT_GE(fw.duplicateRequests() - dupBefore, 1u) << "the device recognised the repeat";
@@ -222,7 +222,7 @@ TEST(LinkFaults, DeviceThatNeverAnswersGivesALinkErrorWithinTwoSeconds)
     pair.end(LoopbackPair::B)->open();  // a device is there, powered, and mute
     dev::BenchPilotClient client;
     QStringList errors;
-    QObject::connect(&client, &dev::BenchPilotClient::linkError, &client, [&](const QString& m) { errors << m; });
+    QObject::connect(&client, &dev::BenchPilotClient::linkError, &client, [&](const msg::Message& m) { errors << QString::fromStdString(msg::debugString(m)); });
     client.setTransport(pair.end(LoopbackPair::A));
 
     QElapsedTimer wall;
@@ -255,7 +255,8 @@ TEST(LinkFaults, DeviceThatFallsSilentWhileReadyIsReportedLostWithinTwoSeconds)
     // to time out as well would take the report past 2 s.
     EXPECT_EQ(s.client.stats().timeouts - timeoutsBefore, 1u);
     ASSERT_FALSE(s.linkErrors.isEmpty());
-    EXPECT_TRUE(s.linkErrors.last().contains(QStringLiteral("stopped answering"))) << text(s.linkErrors);
+    EXPECT_EQ(s.linkMessages.back().id, "link.lost") << text(s.linkErrors);
+    EXPECT_EQ(msg::nested(s.linkMessages.back(), "cause").id, "link.stopped_answering") << text(s.linkErrors);
 
     // The line comes back: reconnecting works without restarting anything.
     s.link.pair().setFaults(LoopbackPair::B, LinkFaults{});
@@ -299,8 +300,8 @@ TEST(LinkFaults, UnplugDuringMoveIsLinkLostAndReplugReconnects)
     s.link.pair().unplug();
     ASSERT_TRUE(waitFor([&] { return s.client.state() == LinkState::Lost; }, 2000));
     ASSERT_FALSE(s.linkErrors.isEmpty());
-    EXPECT_TRUE(s.linkErrors.last().contains(QStringLiteral("link lost"))) << text(s.linkErrors);
-    EXPECT_TRUE(s.linkErrors.last().contains(QStringLiteral("unplugged"))) << text(s.linkErrors);
+    EXPECT_EQ(s.linkMessages.back().id, "link.lost") << text(s.linkErrors);
+    EXPECT_EQ(msg::nested(s.linkMessages.back(), "cause").id, "link.cable_pulled") << text(s.linkErrors);
     // Requests while lost fail at once with a reason instead of hanging.
     const auto refused = s.call([&](auto cb) { s.client.move({{x, 1.0}}, true, 0, cb); }, 1000);
     ASSERT_TRUE(refused);
@@ -331,7 +332,7 @@ TEST(LinkFaults, SerialPortThatDoesNotExistFailsAtOnceWithAClearMessage)
     dev::SerialTransport port(QStringLiteral("/dev/ttyBP_nonexistent"), 115200);
     dev::BenchPilotClient client;
     QStringList errors;
-    QObject::connect(&client, &dev::BenchPilotClient::linkError, &client, [&](const QString& m) { errors << m; });
+    QObject::connect(&client, &dev::BenchPilotClient::linkError, &client, [&](const msg::Message& m) { errors << QString::fromStdString(msg::debugString(m)); });
     QSignalSpy failed(&port, &dev::Transport::failed);
     client.setTransport(&port);
 

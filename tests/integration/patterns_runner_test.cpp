@@ -27,13 +27,21 @@ struct RunnerRig {
     SimSession s;
     dev::PathClient& paths = *s.client.paths();
     PatternRunner runner{&s.client};
-    QStringList messages;
+    std::vector<msg::Message> messages;
+
+    std::string all() const
+    {
+        std::string out;
+        for (const msg::Message& m : messages)
+            out += msg::debugString(m) + "\n";
+        return out;
+    }
 
     explicit RunnerRig(proto::DeviceKind kind, double timeScale = 8) : s(kind, itest::kUnpaced)
     {
         QObject::connect(&s.client, &dev::BenchPilotClient::telemetryReceived, &runner,
                          [this](const proto::TelemetryBatch& b) { jobs::feedBatch(runner, s.client, b); });
-        QObject::connect(&runner, &PatternRunner::message, &runner, [this](const QString& m, bool) { messages << m; });
+        QObject::connect(&runner, &PatternRunner::message, &runner, [this](const msg::Message& m, bool) { messages.push_back(m); });
         EXPECT_TRUE(s.connect());
         EXPECT_TRUE(s.homeAll());
         s.link.host().setTimeScale(timeScale);
@@ -61,12 +69,13 @@ TEST(PatternsRunner, StageCircleRunsToTheEndWithItsContourMeasured)
 {
     RunnerRig rig(proto::DeviceKind::Stage);
     const auto path = planOf(PatternShape::Circle, 2.0);
-    EXPECT_TRUE(rig.runner.preflight(path, {}).isEmpty()) << rig.runner.preflight(path, {}).join(' ').toStdString();
+    for (const msg::Message& problem : rig.runner.preflight(path, {}))
+        ADD_FAILURE() << "preflight: " << problem;
     EXPECT_NEAR(rig.runner.estimatedS(path), 31.416 / 2 + 0.02, 0.01);
     QSignalSpy finished(&rig.runner, &PatternRunner::finished);
     ASSERT_TRUE(rig.runner.start(path, {}));
-    ASSERT_TRUE(rig.runToEnd(30000)) << rig.messages.join('\n').toStdString();
-    ASSERT_EQ(rig.runner.state(), PatternRunner::State::Done) << rig.messages.join('\n').toStdString();
+    ASSERT_TRUE(rig.runToEnd(30000)) << rig.all();
+    ASSERT_EQ(rig.runner.state(), PatternRunner::State::Done) << rig.all();
     ASSERT_EQ(finished.size(), 1);
     const auto sum = rig.runner.summary();
     EXPECT_TRUE(sum.complete);
@@ -95,8 +104,8 @@ TEST(PatternsRunner, ARasterLongerThanTheQueueIsStreamedWithFlowControl)
     std::vector<std::size_t> progress;
     QObject::connect(&rig.runner, &PatternRunner::progress, &rig.runner, [&](std::size_t d, std::size_t) { progress.push_back(d); });
     ASSERT_TRUE(rig.runner.start(path, {}));
-    ASSERT_TRUE(rig.runToEnd(60000)) << rig.messages.join('\n').toStdString();
-    ASSERT_EQ(rig.runner.state(), PatternRunner::State::Done) << rig.messages.join('\n').toStdString();
+    ASSERT_TRUE(rig.runToEnd(60000)) << rig.all();
+    ASSERT_EQ(rig.runner.state(), PatternRunner::State::Done) << rig.all();
     // Never overrun: no append was refused (the run would have failed), every segment ran once, in
     // order. (Whether the queue also never ran dry depends on how fast this machine runs the
     // sped-up simulator; the device-level test and bench_patterns check that deterministically.)
@@ -128,8 +137,13 @@ TEST(PatternsRunner, APatternOutsideTheSoftLimitsIsRefusedBeforeAnythingMoves)
     const double x0 = rig.s.link.machine().commandedLogical(0);
     EXPECT_FALSE(rig.runner.start(path, {}));
     EXPECT_EQ(rig.runner.state(), PatternRunner::State::Failed);
-    ASSERT_FALSE(rig.messages.isEmpty());
-    EXPECT_TRUE(rig.messages.last().contains(QStringLiteral("segment 0 (ARC CCW) reaches X = 102.000 mm"))) << rig.messages.last().toStdString();
+    ASSERT_FALSE(rig.messages.empty());
+    const msg::Message& why = rig.messages.back();
+    EXPECT_EQ(why.id, "pattern.segment_above_limit") << rig.all();
+    EXPECT_EQ(why.integer("segment", -1), 0) << why;
+    EXPECT_EQ(why.text("kind"), "segment.arc_ccw") << why;
+    EXPECT_EQ(why.text("axis"), "X") << why;
+    EXPECT_NEAR(why.number("value"), 102.0, 1e-6) << why;
     itest::spin(200);
     EXPECT_EQ(rig.s.link.machine().commandedLogical(0), x0);
 }
@@ -148,7 +162,7 @@ TEST(PatternsRunner, PauseHoldsOnThePathAndResumeFinishes)
     EXPECT_EQ(rig.s.link.machine().commandedLogical(0), x);
     rig.runner.resume();
     ASSERT_TRUE(rig.runToEnd(30000));
-    EXPECT_EQ(rig.runner.state(), PatternRunner::State::Done) << rig.messages.join('\n').toStdString();
+    EXPECT_EQ(rig.runner.state(), PatternRunner::State::Done) << rig.all();
     EXPECT_LT(rig.runner.summary().maxContourMm, 0.005);
 }
 
@@ -176,7 +190,8 @@ TEST(PatternsRunner, APulledCableInterruptsAndResumeContinuesFromTheSegmentReach
     ASSERT_TRUE(waitFor([&] { return rig.runner.segmentsDone() >= 20; }, 30000));
     rig.s.link.pair().unplug();
     ASSERT_TRUE(waitFor([&] { return rig.runner.state() == PatternRunner::State::Interrupted; }, 5000));
-    EXPECT_TRUE(rig.messages.last().contains(QStringLiteral("link to the instrument was lost"))) << rig.messages.last().toStdString();
+    ASSERT_FALSE(rig.messages.empty());
+    EXPECT_EQ(rig.messages.back().id, "pattern.run.link_lost") << rig.all();
     // The machine holds the path by itself once it hears nothing for a second.
     ASSERT_TRUE(waitFor([&] { return !rig.s.link.machine().paths().moving(); }, 5000));
     const std::size_t reached = rig.runner.segmentsDone();
@@ -184,9 +199,9 @@ TEST(PatternsRunner, APulledCableInterruptsAndResumeContinuesFromTheSegmentReach
     rig.s.link.pair().replug();
     ASSERT_TRUE(rig.s.connect());
     rig.runner.resume();
-    ASSERT_TRUE(waitFor([&] { return rig.runner.state() != PatternRunner::State::Interrupted; }, 5000)) << rig.messages.join('\n').toStdString();
-    ASSERT_TRUE(rig.runToEnd(60000)) << rig.messages.join('\n').toStdString();
-    EXPECT_EQ(rig.runner.state(), PatternRunner::State::Done) << rig.messages.join('\n').toStdString();
+    ASSERT_TRUE(waitFor([&] { return rig.runner.state() != PatternRunner::State::Interrupted; }, 5000)) << rig.all();
+    ASSERT_TRUE(rig.runToEnd(60000)) << rig.all();
+    EXPECT_EQ(rig.runner.state(), PatternRunner::State::Done) << rig.all();
     EXPECT_EQ(rig.runner.segmentsDone(), path.size());
     EXPECT_NEAR(rig.s.link.machine().commandedLogical(0), path.back().end.x, 1e-3);
     EXPECT_LT(rig.runner.summary().maxContourMm, 0.005);  // the restart went on along the path

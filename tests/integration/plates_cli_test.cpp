@@ -1,6 +1,7 @@
 // benchpilot-cli recipe validate | plan | run, as a script uses them; and the
 // run killed with SIGKILL part-way on a pty simulator (whose machine outlives
 // the CLI), resumed from its log: the remaining wells are done, none twice.
+#include "device/english_words.h"
 #include "plates_run_support.h"
 #include "programs.h"
 #include "pty_simulator.h"
@@ -53,7 +54,7 @@ TEST(PlateCli, ValidateListsEveryErrorAndExitsOne)
     ASSERT_TRUE(r.finished);
     EXPECT_EQ(r.exitCode, 1) << r.describe();
     const QStringList expected = {
-        QStringLiteral("bad.recipe.json:7:54: steps[0].volume_ul: volume over capacity: 1200 µL is more than the syringe holds (1000 µL)"),
+        QStringLiteral("bad.recipe.json:7:54: steps[0].volume_ul: volume over capacity: 1200.0 µL is more than the syringe holds (1000.0 µL)"),
         QStringLiteral("bad.recipe.json:8:14: steps[1].type: unknown step type \"pipette\""),
         QStringLiteral("bad.recipe.json:9:35: steps[2].plate: unknown plate \"reagents\"; the recipe's plates are \"samples\""),
         QStringLiteral("bad.recipe.json:10:35: steps[3].wells: unknown well \"I13\" on a 96-well plate"),
@@ -171,7 +172,7 @@ TEST(PlateCli, KilledPartWayAndResumedFromItsLogEveryWellIsDoneOnce)
         }
     }
     const auto st = readLog(log);
-    EXPECT_TRUE(st.problems.empty()) << st.problems.format("log");
+    EXPECT_TRUE(st.problems.empty()) << i18ntest::englishFormat(st.problems, "log");
     EXPECT_EQ(st.doneCount(), 96);
 
     // The plunger holds every well's 10 µL, once.
@@ -288,4 +289,34 @@ TEST(PlateCli, OnTheInProcessSimulatorHomeThenRunDispensesEndToEnd)
     EXPECT_NEAR(*st.ops[3].pumpEndUl, 0, 1e-6);
     ASSERT_TRUE(st.lastPumpUl);
     EXPECT_NEAR(*st.lastPumpUl, 0, 1e-6);
+}
+
+TEST(PlateCli, ValidateJsonIsTheSameInEveryLanguageAndTheTextFollowsLang)
+{
+    QTemporaryDir dir;
+    const QString path = writeFile(dir, "bad.recipe.json", R"({
+  "schema": "benchpilot.recipe",
+  "version": 1,
+  "plates": [{"name": "samples", "slot": "1", "labware": "sbs-96", "safe_z_mm": 55, "depth_z_mm": 70}],
+  "steps": [{"type": "dispense", "wells": "I13", "volume_ul": 5}]
+}
+)");
+    ASSERT_FALSE(path.isEmpty());
+    const QStringList args = {QStringLiteral("recipe"), QStringLiteral("validate"), path, QStringLiteral("--calibration=none"), QStringLiteral("--json")};
+    const ProgramRun en = cli(args);
+    const ProgramRun zh = cli(QStringList(args) << QStringLiteral("--lang") << QStringLiteral("zh_CN"));
+    ASSERT_EQ(en.exitCode, 1) << en.describe();
+    EXPECT_EQ(zh.out, en.out) << "--json must not change with the language";
+    // A message in JSON: its id, typed arguments and the English sentence, with its place.
+    const QJsonObject e = lastJson(en.out).value(QStringLiteral("errors")).toArray().at(0).toObject();
+    EXPECT_EQ(e.value(QStringLiteral("id")).toString(), QStringLiteral("plate.unknown_well"));
+    EXPECT_EQ(e.value(QStringLiteral("args")).toObject().value(QStringLiteral("wells")).toInt(), 96);
+    EXPECT_EQ(e.value(QStringLiteral("message")).toString(), QStringLiteral("unknown well \"I13\" on a 96-well plate"));
+    EXPECT_EQ(e.value(QStringLiteral("field")).toString(), QStringLiteral("steps[0].wells"));
+    EXPECT_EQ(e.value(QStringLiteral("line")).toInt(), 5);
+    // The text for people: English by default, Chinese when asked.
+    const QStringList text = {QStringLiteral("recipe"), QStringLiteral("validate"), path, QStringLiteral("--calibration=none")};
+    EXPECT_TRUE(cli(text).err.contains(QStringLiteral("unknown well \"I13\" on a 96-well plate")));
+    const ProgramRun chinese = cli(QStringList(text) << QStringLiteral("--lang=zh_CN"));
+    EXPECT_TRUE(chinese.err.contains(QStringLiteral("96 孔板上没有孔 \"I13\""))) << chinese.describe();
 }

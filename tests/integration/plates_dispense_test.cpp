@@ -5,6 +5,7 @@
 // dispense and resumed from the log; killed, or its cable pulled, while a
 // dispense's plunger moves and resumed: no target well is ever dispensed into
 // twice, and the plunger ends where the volumes say.
+#include "device/english_words.h"
 #include "device/files/recipes/recipe_loader.h"
 #include "plates_run_support.h"
 
@@ -42,7 +43,7 @@ protected:
     void SetUp() override
     {
         loaded = platefiles::loadRecipe(examplePath(), platefiles::builtinDeck(), {});
-        ASSERT_TRUE(loaded.ok()) << loaded.messages.join(QLatin1Char('\n')).toStdString();
+        ASSERT_TRUE(loaded.ok()) << i18ntest::englishFormat(loaded.problems);
         ASSERT_TRUE(s.connect()) << s.linkErrors.join(QLatin1Char(' ')).toStdString();
         ASSERT_TRUE(s.homeAll());
         s.link.host().setTimeScale(kRunTimeScale);
@@ -124,7 +125,7 @@ jobs::InterruptedDecider skipWhenMovedInFull(std::vector<InterruptedOp>* asked)
 {
     return [asked](const InterruptedOp& q) {
         asked->push_back(q);
-        return q.evidence.contains(QStringLiteral("moved in full")) ? InterruptedChoice::Skip : InterruptedChoice::Cancel;
+        return q.evidence.id == "recipe.evidence.moved_in_full" ? InterruptedChoice::Skip : InterruptedChoice::Cancel;
     };
 }
 
@@ -145,20 +146,20 @@ TEST_F(PlateDispense, TheReagentTransferExampleRunsToTheEndWithTheTipUpWheneverI
     EXPECT_EQ(rounds, (std::vector<int>{1, 2, 3}));
 
     RecipeRunner runner(&s.client);
-    QStringList problems;
-    QObject::connect(&runner, &RecipeRunner::message, &runner, [&](const QString& m, bool bad) {
+    std::string problems;
+    QObject::connect(&runner, &RecipeRunner::message, &runner, [&](const msg::Message& m, bool bad) {
         if (bad)
-            problems << m;
+            problems += msg::debugString(m) + "\n";
     });
-    QString error;
-    ASSERT_TRUE(runner.setPlan(pl, QStringLiteral("transfer"), &error)) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(runner.setPlan(pl, QStringLiteral("transfer"), &error)) << error;
     const double p0 = p();
     const auto& axes = s.client.status().axes;
     double x = axes[0].commanded, y = axes[1].commanded, z = axes[2].commanded;
     sent.clear();
-    ASSERT_TRUE(runner.start(logPath, &error)) << error.toStdString();
+    ASSERT_TRUE(runner.start(logPath, &error)) << error;
     ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Finished || runner.state() == RunState::Stopped; }, timeoutMs(pl)));
-    ASSERT_EQ(runner.state(), RunState::Finished) << problems.join(QLatin1Char('\n')).toStdString();
+    ASSERT_EQ(runner.state(), RunState::Finished) << problems;
     ASSERT_TRUE(s.waitStill());
 
     // The log: every op once, every dispense well exactly once, in the wells the recipe names.
@@ -170,7 +171,7 @@ TEST_F(PlateDispense, TheReagentTransferExampleRunsToTheEndWithTheTipUpWheneverI
     expectEachDispenseOnce(pl);
     const auto st = readLog(logPath);
     EXPECT_TRUE(st.finished);
-    EXPECT_TRUE(st.problems.empty()) << st.problems.format("log");
+    EXPECT_TRUE(st.problems.empty()) << i18ntest::englishFormat(st.problems, "log");
     std::multiset<std::string> dispensed;
     for (std::size_t i = 0; i < st.ops.size(); ++i)
         if (pl.ops[i].type == plates::StepType::Dispense)
@@ -263,9 +264,9 @@ TEST_F(PlateDispense, AbortedPartWayThroughAMultiWellDispenseTheResumedRunFillsT
             QTimer::singleShot(0, &runner, [&] { runner.abort(); });
         }
     };
-    QString error;
+    msg::Message error;
     ASSERT_TRUE(runner.setPlan(pl, QStringLiteral("transfer"), &error));
-    ASSERT_TRUE(runner.start(logPath, &error)) << error.toStdString();
+    ASSERT_TRUE(runner.start(logPath, &error)) << error;
     ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Stopped || runner.state() == RunState::Finished; }, timeoutMs(pl)));
     ASSERT_EQ(runner.state(), RunState::Stopped);
     ASSERT_TRUE(aborted);
@@ -282,10 +283,10 @@ TEST_F(PlateDispense, AbortedPartWayThroughAMultiWellDispenseTheResumedRunFillsT
     // A new runner (as after restarting the program) continues from the log.
     onMove = nullptr;
     RecipeRunner again(&s.client);
-    ASSERT_TRUE(again.setPlan(resumePlan(), QStringLiteral("transfer"), &error)) << error.toStdString();
+    ASSERT_TRUE(again.setPlan(resumePlan(), QStringLiteral("transfer"), &error)) << error;
     bool asked = false;
     ASSERT_TRUE(again.resumeFromLog(logPath, [&](const InterruptedOp&) { asked = true; return InterruptedChoice::Cancel; }, &error))
-        << error.toStdString();
+        << error;
     EXPECT_FALSE(asked) << "nothing to ask: no liquid had moved";
     ASSERT_TRUE(waitFor([&] { return again.state() == RunState::Finished || again.state() == RunState::Stopped; }, timeoutMs(pl)));
     ASSERT_EQ(again.state(), RunState::Finished);
@@ -317,9 +318,9 @@ TEST_F(PlateDispense, KilledWhileThePlungerDispensesTheOperatorCountsTheWellAndI
             QTimer::singleShot(0, [&] { first.reset(); });
         }
     };
-    QString error;
+    msg::Message error;
     ASSERT_TRUE(first->setPlan(pl, QStringLiteral("transfer"), &error));
-    ASSERT_TRUE(first->start(logPath, &error)) << error.toStdString();
+    ASSERT_TRUE(first->start(logPath, &error)) << error;
     ASSERT_TRUE(waitFor([&] { return !first; }, timeoutMs(pl)));
     onMove = nullptr;
     ASSERT_TRUE(s.waitStill());
@@ -328,12 +329,12 @@ TEST_F(PlateDispense, KilledWhileThePlungerDispensesTheOperatorCountsTheWellAndI
     ASSERT_EQ(st.doneCount(), target);
 
     RecipeRunner second(&s.client);
-    ASSERT_TRUE(second.setPlan(resumePlan(), QStringLiteral("transfer"), &error)) << error.toStdString();
+    ASSERT_TRUE(second.setPlan(resumePlan(), QStringLiteral("transfer"), &error)) << error;
     std::vector<InterruptedOp> asked;
-    ASSERT_TRUE(second.resumeFromLog(logPath, skipWhenMovedInFull(&asked), &error)) << error.toStdString();
+    ASSERT_TRUE(second.resumeFromLog(logPath, skipWhenMovedInFull(&asked), &error)) << error;
     ASSERT_EQ(asked.size(), 1u);
     EXPECT_EQ(asked[0].op, target);
-    EXPECT_EQ(asked[0].label, QString::fromStdString(pl.ops[static_cast<std::size_t>(target)].label()));
+    EXPECT_EQ(asked[0].label, pl.ops[static_cast<std::size_t>(target)].label());
     EXPECT_DOUBLE_EQ(asked[0].plannedDeltaUl, -150);
     ASSERT_TRUE(waitFor([&] { return second.state() == RunState::Finished || second.state() == RunState::Stopped; }, timeoutMs(pl)));
     ASSERT_EQ(second.state(), RunState::Finished);
@@ -360,9 +361,9 @@ TEST_F(PlateDispense, ACablePulledMidDispenseResumesInTheSameRunWithoutFillingTh
     });
     bool pumpSent = false;
     onMove = [&](const SentMove& m) { pumpSent = pumpSent || (current == target && m.mask == kP && m.targets[0] < 0); };
-    QString error;
+    msg::Message error;
     ASSERT_TRUE(runner.setPlan(pl, QStringLiteral("transfer"), &error));
-    ASSERT_TRUE(runner.start(logPath, &error)) << error.toStdString();
+    ASSERT_TRUE(runner.start(logPath, &error)) << error;
     ASSERT_TRUE(waitFor([&] { return (pumpSent && s.readout('P').moving) || runner.state() != RunState::Running; }, timeoutMs(pl)));
     ASSERT_EQ(runner.state(), RunState::Running);
     s.link.pair().unplug();
@@ -374,10 +375,10 @@ TEST_F(PlateDispense, ACablePulledMidDispenseResumesInTheSameRunWithoutFillingTh
     ASSERT_TRUE(s.waitStill());
     s.link.host().setTimeScale(kRunTimeScale);
     std::vector<InterruptedOp> asked;
-    ASSERT_TRUE(runner.resume(skipWhenMovedInFull(&asked), &error)) << error.toStdString();
+    ASSERT_TRUE(runner.resume(skipWhenMovedInFull(&asked), &error)) << error;
     ASSERT_EQ(asked.size(), 1u);
     EXPECT_EQ(asked[0].op, target);
-    EXPECT_TRUE(asked[0].evidence.contains(QStringLiteral("moved in full"))) << asked[0].evidence.toStdString();
+    EXPECT_EQ(asked[0].evidence.id, "recipe.evidence.moved_in_full") << asked[0].evidence;
     ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Finished || runner.state() == RunState::Stopped; }, timeoutMs(pl)));
     ASSERT_EQ(runner.state(), RunState::Finished);
     ASSERT_TRUE(s.waitStill());

@@ -1,12 +1,14 @@
 // A run that died (the program killed, the runner gone) continues from its log:
 // completed wells are never done again, a well interrupted after its plunger
 // move was sent is put to the operator, and a log that does not fit is refused.
+#include "device/english_words.h"
 #include "plates_run_support.h"
 
 #include "device/protocol/frame_codec.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
 
 using namespace itest;
@@ -35,9 +37,9 @@ protected:
     void dieMidAspirate()
     {
         auto first = std::make_unique<RecipeRunner>(&s.client);
-        QString error;
+        msg::Message error;
         ASSERT_TRUE(first->setPlan(planFor(slowRecipe(), s.client), QStringLiteral("slow"), &error));
-        ASSERT_TRUE(first->start(logPath, &error)) << error.toStdString();
+        ASSERT_TRUE(first->start(logPath, &error)) << error;
         ASSERT_TRUE(waitFor(
             [&] {
                 const LogCounts c = countLog(logPath);
@@ -64,7 +66,7 @@ TEST_F(PlateResume, TheOperatorSkipsAWellInterruptedMidAspirateAndNoWellIsDoneTw
 {
     dieMidAspirate();
     RecipeRunner second(&s.client);
-    QString error;
+    msg::Message error;
     ASSERT_TRUE(second.setPlan(planForResume(slowRecipe(), s.client, logPath), QStringLiteral("slow"), &error));
     std::vector<InterruptedOp> asked;
     ASSERT_TRUE(second.resumeFromLog(
@@ -74,14 +76,14 @@ TEST_F(PlateResume, TheOperatorSkipsAWellInterruptedMidAspirateAndNoWellIsDoneTw
                         return InterruptedChoice::Skip;
                     },
                     &error))
-        << error.toStdString();
+        << error;
     ASSERT_EQ(asked.size(), 1u);
     EXPECT_EQ(asked[0].op, 2);
-    EXPECT_EQ(asked[0].label, QStringLiteral("aspirate 10 µL from samples A3"));
+    EXPECT_EQ(i18ntest::english(asked[0].label), "aspirate 10.0 µL from samples A3") << asked[0].label;
     ASSERT_TRUE(asked[0].pumpStartUl);
     EXPECT_DOUBLE_EQ(*asked[0].pumpStartUl, 20);
     // The device finished the move the dead program had sent: the evidence says so.
-    EXPECT_TRUE(asked[0].evidence.contains(QStringLiteral("moved in full"))) << asked[0].evidence.toStdString();
+    EXPECT_EQ(asked[0].evidence.id, "recipe.evidence.moved_in_full") << asked[0].evidence;
     ASSERT_TRUE(waitFor([&] { return second.state() == RunState::Finished; }, 60000));
     ASSERT_TRUE(s.waitStill());
     const LogCounts c = countLog(logPath);
@@ -97,10 +99,10 @@ TEST_F(PlateResume, RedoDoesTheInterruptedWellAgain)
 {
     dieMidAspirate();
     RecipeRunner second(&s.client);
-    QString error;
+    msg::Message error;
     ASSERT_TRUE(second.setPlan(planForResume(slowRecipe(), s.client, logPath), QStringLiteral("slow"), &error));
     ASSERT_TRUE(second.resumeFromLog(logPath, [](const InterruptedOp&) { return InterruptedChoice::Redo; }, &error))
-        << error.toStdString();
+        << error;
     ASSERT_TRUE(waitFor([&] { return second.state() == RunState::Finished; }, 60000));
     ASSERT_TRUE(s.waitStill());
     const LogCounts c = countLog(logPath);
@@ -114,11 +116,11 @@ TEST_F(PlateResume, WithoutADecisionNothingResumesAndTheLogIsUntouched)
     dieMidAspirate();
     const LogCounts before = countLog(logPath);
     RecipeRunner second(&s.client);
-    QString error;
+    msg::Message error;
     ASSERT_TRUE(second.setPlan(planForResume(slowRecipe(), s.client, logPath), QStringLiteral("slow"), &error));
     EXPECT_FALSE(second.resumeFromLog(logPath, {}, &error));
-    EXPECT_TRUE(error.contains(QStringLiteral("aspirate 10 µL from samples A3 was interrupted after liquid started to move")))
-        << error.toStdString();
+    EXPECT_EQ(error.id, "recipe.run.interrupted_needs_decision") << error;
+    EXPECT_EQ(i18ntest::english(msg::nested(error, "op")), "aspirate 10.0 µL from samples A3") << error;
     EXPECT_FALSE(second.resumeFromLog(logPath, [](const InterruptedOp&) { return InterruptedChoice::Cancel; }, &error));
     EXPECT_EQ(second.state(), RunState::Idle);
     const LogCounts after = countLog(logPath);
@@ -128,7 +130,7 @@ TEST_F(PlateResume, WithoutADecisionNothingResumesAndTheLogIsUntouched)
 
 TEST_F(PlateResume, ALogThatDoesNotFitIsRefused)
 {
-    QString error;
+    msg::Message error;
     {
         RecipeRunner first(&s.client);
         ASSERT_TRUE(first.setPlan(planFor(samplingRecipe("A1:A3"), s.client), QStringLiteral("short"), &error));
@@ -142,24 +144,24 @@ TEST_F(PlateResume, ALogThatDoesNotFitIsRefused)
     RecipeRunner other(&s.client);
     ASSERT_TRUE(other.setPlan(planFor(samplingRecipe("A1:A3", 12), s.client), QStringLiteral("other"), &error));
     EXPECT_FALSE(other.resumeFromLog(logPath, {}, &error));
-    EXPECT_TRUE(error.contains(QStringLiteral("the log of another recipe"))) << error.toStdString();
+    EXPECT_EQ(error.id, "recipe.run.log_of_other_recipe") << error;
     // The right recipe, but someone moved the plunger since.
     RecipeRunner same(&s.client);
     ASSERT_TRUE(same.setPlan(planForResume(samplingRecipe("A1:A3"), s.client, logPath), QStringLiteral("short"), &error));
     ASSERT_FALSE(s.call([&](auto cb) { s.client.move({{3, 5}}, true, 0, cb); }));
     ASSERT_TRUE(s.waitStill());
     EXPECT_FALSE(same.resumeFromLog(logPath, {}, &error));
-    EXPECT_TRUE(error.contains(QStringLiteral("the syringe was moved"))) << error.toStdString();
+    EXPECT_EQ(error.id, "recipe.run.plunger_moved") << error;
     // Put back: it resumes.
     ASSERT_FALSE(s.call([&](auto cb) { s.client.move({{3, -5}}, true, 0, cb); }));
     ASSERT_TRUE(s.waitStill());
-    ASSERT_TRUE(same.resumeFromLog(logPath, {}, &error)) << error.toStdString();
+    ASSERT_TRUE(same.resumeFromLog(logPath, {}, &error)) << error;
     ASSERT_TRUE(waitFor([&] { return same.state() == RunState::Finished; }, 30000));
     // A finished log has nothing left.
     RecipeRunner third(&s.client);
     ASSERT_TRUE(third.setPlan(planForResume(samplingRecipe("A1:A3"), s.client, logPath), QStringLiteral("short"), &error));
     EXPECT_FALSE(third.resumeFromLog(logPath, {}, &error));
-    EXPECT_TRUE(error.contains(QStringLiteral("finished"))) << error.toStdString();
+    EXPECT_EQ(error.id, "recipe.run.log_finished") << error;
 }
 
 namespace {
@@ -233,16 +235,23 @@ TEST(PlateRunLink, AMotionDoneLostOnTheLinkIsMadeGoodByTheStatus)
         return false;
     };
     RecipeRunner runner(&client);
-    QStringList notes;
-    QObject::connect(&runner, &RecipeRunner::message, &runner, [&](const QString& m, bool) { notes << m; });
+    std::vector<msg::Message> notes;
+    QObject::connect(&runner, &RecipeRunner::message, &runner, [&](const msg::Message& m, bool) { notes.push_back(m); });
+    auto allNotes = [&] {
+        std::string out;
+        for (const msg::Message& m : notes)
+            out += msg::debugString(m) + "\n";
+        return out;
+    };
     QTemporaryDir dir;
-    QString error;
+    msg::Message error;
     ASSERT_TRUE(runner.setPlan(planFor(samplingRecipe("A1:A2"), client), QStringLiteral("two"), &error));
-    ASSERT_TRUE(runner.start(dir.filePath(QStringLiteral("run.jsonl")), &error)) << error.toStdString();
+    ASSERT_TRUE(runner.start(dir.filePath(QStringLiteral("run.jsonl")), &error)) << error;
     ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Finished || runner.state() == RunState::Stopped; },
                         RecipeRunner::kMoveGraceMs + 20000));
     EXPECT_EQ(dropped, 1);
-    EXPECT_EQ(runner.state(), RunState::Finished) << notes.join(QLatin1Char('\n')).toStdString();
-    EXPECT_TRUE(notes.join(QLatin1Char('\n')).contains(QStringLiteral("the status shows it completed"))) << notes.join(QLatin1Char('\n')).toStdString();
+    EXPECT_EQ(runner.state(), RunState::Finished) << allNotes();
+    EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const msg::Message& m) { return m.id == "recipe.run.motion_done_lost"; }))
+        << allNotes();
     client.setTransport(nullptr);
 }

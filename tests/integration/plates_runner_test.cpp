@@ -21,8 +21,8 @@ protected:
         ASSERT_TRUE(s.homeAll());
         s.link.host().setTimeScale(kRunTimeScale);
         logPath = dir.filePath(QStringLiteral("run.jsonl"));
-        QObject::connect(&runner, &RecipeRunner::message, &runner, [this](const QString& m, bool problem) {
-            (problem ? problems : notes) << m;
+        QObject::connect(&runner, &RecipeRunner::message, &runner, [this](const msg::Message& m, bool problem) {
+            (problem ? problems : notes).push_back(m);
         });
     }
     double p() const { return s.readout('P').commanded; }
@@ -32,7 +32,15 @@ protected:
     RecipeRunner runner{&s.client};
     QTemporaryDir dir;
     QString logPath;
-    QStringList problems, notes;
+    std::vector<msg::Message> problems, notes;
+
+    std::string problemText() const
+    {
+        std::string out;
+        for (const msg::Message& m : problems)
+            out += msg::debugString(m) + "\n";
+        return out;
+    }
 };
 
 } // namespace
@@ -42,11 +50,11 @@ TEST_F(PlateRun, A96WellRecipeRunsToTheEndWithEachWellLoggedOnceAndThePumpAtTheS
     const plates::RecipePlan plan = planFor(samplingRecipe("A1:H12", 10), s.client);
     ASSERT_TRUE(plan.ok());
     ASSERT_EQ(plan.ops.size(), 96u);
-    QString error;
-    ASSERT_TRUE(runner.setPlan(plan, QStringLiteral("sampling"), &error)) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(runner.setPlan(plan, QStringLiteral("sampling"), &error)) << error;
     const double p0 = p();
     const quint64 t0 = s.client.status().deviceTimeUs;
-    ASSERT_TRUE(runner.start(logPath, &error)) << error.toStdString();
+    ASSERT_TRUE(runner.start(logPath, &error)) << error;
     int progressSeen = 0;
     double lastEta = 1e9;
     bool etaFell = false;
@@ -57,7 +65,7 @@ TEST_F(PlateRun, A96WellRecipeRunsToTheEndWithEachWellLoggedOnceAndThePumpAtTheS
         lastEta = pr.etaS;
     });
     ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Finished || runner.state() == RunState::Stopped; }, 120000));
-    ASSERT_EQ(runner.state(), RunState::Finished) << problems.join(QLatin1Char('\n')).toStdString();
+    ASSERT_EQ(runner.state(), RunState::Finished) << problemText();
     ASSERT_TRUE(s.waitStill());
 
     // The log has each well exactly once: started once, done once.
@@ -104,23 +112,27 @@ TEST_F(PlateRun, A96WellRecipeRunsToTheEndWithEachWellLoggedOnceAndThePumpAtTheS
 TEST_F(PlateRun, NothingMovesUntilTheRecipeValidatesAndTheMachineIsReady)
 {
     plates::Recipe bad = samplingRecipe("I13", 10);
-    QString error;
+    msg::Message error;
     EXPECT_FALSE(runner.setPlan(planFor(bad, s.client), QStringLiteral("bad"), &error));
-    EXPECT_TRUE(error.contains(QStringLiteral("unknown well \"I13\" on a 96-well plate"))) << error.toStdString();
+    EXPECT_EQ(error.id, "recipe.run.does_not_validate") << error;
+    const msg::Message cause = msg::nested(error, "cause");
+    EXPECT_EQ(cause.id, "plate.unknown_well") << error;
+    EXPECT_EQ(cause.text("well"), "\"I13\"") << error;
+    EXPECT_EQ(cause.integer("wells"), 96) << error;
     EXPECT_FALSE(runner.start(logPath, &error));
     // An E-stop latched: refused before anything moves, and no log is made.
     ASSERT_TRUE(runner.setPlan(planFor(samplingRecipe("A1:A3"), s.client), QStringLiteral("ok"), &error));
     ASSERT_FALSE(s.call([&](auto cb) { s.client.estop(cb); }));
     ASSERT_TRUE(waitFor([&] { return s.client.status().estop; }, 2000));
     EXPECT_FALSE(runner.start(logPath, &error));
-    EXPECT_TRUE(error.contains(QStringLiteral("E-stop"))) << error.toStdString();
+    EXPECT_EQ(error.id, "recipe.run.estop_latched") << error;
     EXPECT_FALSE(QFileInfo::exists(logPath));
     // A plunger that would pass its end: refused before moving.
     ASSERT_FALSE(s.call([&](auto cb) { s.client.reset(cb); }));
     ASSERT_FALSE(s.call([&](auto cb) { s.client.move({{3, 990}}, false, 0, cb); }));
     ASSERT_TRUE(s.waitStill());
     EXPECT_FALSE(runner.start(logPath, &error));
-    EXPECT_TRUE(error.contains(QStringLiteral("empty the syringe first"))) << error.toStdString();
+    EXPECT_EQ(error.id, "recipe.run.plunger_beyond_limits_full") << error;
     EXPECT_FALSE(QFileInfo::exists(logPath));
 }
 
@@ -146,9 +158,9 @@ TEST_F(PlateRun, TheTipIsNeverLoweredBeforeItIsOverItsWell)
                     sent.push_back(x);
                 }
     };
-    QString error;
+    msg::Message error;
     ASSERT_TRUE(runner.setPlan(planFor(samplingRecipe("A1"), s.client), QStringLiteral("one"), &error));
-    ASSERT_TRUE(runner.start(logPath, &error)) << error.toStdString();
+    ASSERT_TRUE(runner.start(logPath, &error)) << error;
     ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Finished; }, 20000));
     s.tap.beforeWrite = nullptr;
     const quint8 z = 1u << 2, xy = 0b11;
@@ -165,21 +177,21 @@ TEST_F(PlateRun, TheTipIsNeverLoweredBeforeItIsOverItsWell)
 
 TEST_F(PlateRun, PauseWaitsForTheWellUnderWayThenResumeFinishes)
 {
-    QString error;
+    msg::Message error;
     ASSERT_TRUE(runner.setPlan(planFor(samplingRecipe("A1:A8"), s.client), QStringLiteral("row"), &error));
-    ASSERT_TRUE(runner.start(logPath, &error)) << error.toStdString();
+    ASSERT_TRUE(runner.start(logPath, &error)) << error;
     ASSERT_TRUE(waitFor([&] { return runner.progress().opsDone >= 2 && runner.state() == RunState::Running; }, 20000));
     runner.pause();
     EXPECT_EQ(runner.state(), RunState::Pausing);
     ASSERT_TRUE(waitSettled(runner, 20000));
-    ASSERT_EQ(runner.state(), RunState::Paused) << problems.join(QLatin1Char('\n')).toStdString();
+    ASSERT_EQ(runner.state(), RunState::Paused) << problemText();
     const int doneAtPause = runner.progress().opsDone;
     ASSERT_TRUE(s.waitStill());
     EXPECT_LE(z(), 55 + 1e-6) << "paused with the tip up";
     spin(300);
     EXPECT_EQ(runner.progress().opsDone, doneAtPause) << "nothing runs while paused";
-    ASSERT_TRUE(runner.resume({}, &error)) << error.toStdString();
-    ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Finished; }, 30000)) << problems.join(QLatin1Char('\n')).toStdString();
+    ASSERT_TRUE(runner.resume({}, &error)) << error;
+    ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Finished; }, 30000)) << problemText();
     ASSERT_TRUE(s.waitStill());
     const LogCounts c = countLog(logPath);
     for (int i = 0; i < 8; ++i) {
@@ -191,7 +203,7 @@ TEST_F(PlateRun, PauseWaitsForTheWellUnderWayThenResumeFinishes)
 
 TEST_F(PlateRun, AbortStopsAtOnceThenLiftsTheTipAndTheLogResumes)
 {
-    QString error;
+    msg::Message error;
     const plates::RecipePlan plan = planFor(samplingRecipe("A1:A6"), s.client);
     ASSERT_TRUE(runner.setPlan(plan, QStringLiteral("row"), &error));
     s.link.host().setTimeScale(1);  // so the status shows the tip going down
@@ -215,7 +227,7 @@ TEST_F(PlateRun, AbortStopsAtOnceThenLiftsTheTipAndTheLogResumes)
     ASSERT_TRUE(again.setPlan(planForResume(samplingRecipe("A1:A6"), s.client, logPath), QStringLiteral("row"), &error));
     bool asked = false;
     ASSERT_TRUE(again.resumeFromLog(logPath, [&](const jobs::InterruptedOp&) { asked = true; return jobs::InterruptedChoice::Skip; }, &error))
-        << error.toStdString();
+        << error;
     EXPECT_FALSE(asked) << "nothing to ask: no liquid had moved";
     ASSERT_TRUE(waitFor([&] { return again.state() == RunState::Finished; }, 30000));
     ASSERT_TRUE(s.waitStill());
@@ -230,14 +242,14 @@ TEST_F(PlateRun, AbortStopsAtOnceThenLiftsTheTipAndTheLogResumes)
 
 TEST_F(PlateRun, APulledCableStopsTheRunWhichResumesAfterReconnecting)
 {
-    QString error;
+    msg::Message error;
     ASSERT_TRUE(runner.setPlan(planFor(samplingRecipe("A1:A8"), s.client), QStringLiteral("row"), &error));
     ASSERT_TRUE(runner.start(logPath, &error));
     ASSERT_TRUE(waitFor([&] { return runner.progress().opsDone >= 3; }, 20000));
     s.link.pair().unplug();
     ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Stopped; }, 5000));
-    ASSERT_FALSE(problems.isEmpty());
-    EXPECT_TRUE(problems.last().contains(QStringLiteral("link to the analyzer was lost"))) << problems.last().toStdString();
+    ASSERT_FALSE(problems.empty());
+    EXPECT_EQ(problems.back().id, "recipe.run.link_lost") << problemText();
     EXPECT_FALSE(runner.resume({}, &error)) << "not while the link is down";
     spin(500);  // the analyzer finishes the move it had
     s.link.pair().replug();
@@ -251,12 +263,12 @@ TEST_F(PlateRun, APulledCableStopsTheRunWhichResumesAfterReconnecting)
                         // plunger move left before the cable went.
                         asked = true;
                         seen = op;
-                        return op.evidence.contains(QStringLiteral("no liquid moved")) ? jobs::InterruptedChoice::Redo
+                        return op.evidence.id == "recipe.evidence.nothing_moved" ? jobs::InterruptedChoice::Redo
                                                                                         : jobs::InterruptedChoice::Skip;
                     },
                     &error))
-        << error.toStdString();
-    ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Finished; }, 30000)) << problems.join(QLatin1Char('\n')).toStdString();
+        << error;
+    ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Finished; }, 30000)) << problemText();
     ASSERT_TRUE(s.waitStill());
     const LogCounts c = countLog(logPath);
     for (int i = 0; i < 8; ++i)
@@ -264,5 +276,5 @@ TEST_F(PlateRun, APulledCableStopsTheRunWhichResumesAfterReconnecting)
     EXPECT_EQ(c.stops, 1);
     EXPECT_EQ(c.resumes, 1);
     // Whether the cable went mid-aspirate or not, the plunger holds 10 µL per well.
-    EXPECT_NEAR(p(), 80, 1e-6) << (asked ? seen.evidence.toStdString() : std::string("no op was mid-aspirate"));
+    EXPECT_NEAR(p(), 80, 1e-6) << (asked ? msg::debugString(seen.evidence) : std::string("no op was mid-aspirate"));
 }

@@ -176,7 +176,7 @@ TEST(PtySerial, SimulatorTerminatedDuringMoveIsLinkLostAndItsSymlinkIsGone)
     dev::SerialTransport port(sim.link(), 115200);
     dev::BenchPilotClient client;
     QStringList errors;
-    QObject::connect(&client, &dev::BenchPilotClient::linkError, &client, [&](const QString& m) { errors << m; });
+    QObject::connect(&client, &dev::BenchPilotClient::linkError, &client, [&](const msg::Message& m) { errors << QString::fromStdString(msg::debugString(m)); });
     client.setTransport(&port);
     client.connectLink();
     ASSERT_TRUE(waitFor([&] { return client.state() == LinkState::Ready || client.state() == LinkState::Disconnected; }, 5000));
@@ -185,7 +185,7 @@ TEST(PtySerial, SimulatorTerminatedDuringMoveIsLinkLostAndItsSymlinkIsGone)
 
     bool accepted = false;
     client.move({{0, 30.0}}, true, 0, [&](const auto& e) {
-        EXPECT_FALSE(e) << e->message.toStdString();
+        EXPECT_FALSE(e) << msg::debugString(e->message);
         accepted = true;
     });
     ASSERT_TRUE(waitFor([&] { return accepted && client.status().axes[0].moving; }, 5000));

@@ -2,6 +2,7 @@
 // back by the tools' rules, bad input named by its option, and a run on the
 // simulated stage (benchpilot-sim on a pty) that writes the exports with measured
 // positions and continues after a crash.
+#include "device/english_words.h"
 #include "app/cli/command.h"
 #include "device/files/scan_plan_file.h"
 #include "device/files/scan_run_log.h"
@@ -54,7 +55,7 @@ TEST(ScanCli, PlanPrintsAPlanFileThatRunsAsIs)
     const CliOutput r = scanCli(QStringLiteral("scan plan --roi 10,10,20,15 --fov 1.2,1 --overlap 0.2,0.1 --order snake-cols --start bottom-right"));
     ASSERT_EQ(r.code, 0) << r.err.toStdString();
     const auto plan = scanfile::parsePlan(r.out.toStdString());
-    ASSERT_TRUE(plan.plan) << plan.problems.format("stdout");
+    ASSERT_TRUE(plan.plan) << i18ntest::englishFormat(plan.problems, "stdout");
     EXPECT_EQ(plan.plan->order, motion::scan::ScanOrder::SnakeColumns);
     EXPECT_EQ(plan.plan->start, motion::scan::StartCorner::BottomRight);
     EXPECT_EQ(plan.plan->overlapX, 0.2);
@@ -224,6 +225,6 @@ TEST(ScanCli, RunWritesTheExportsWithMeasuredPositionsAndContinuesAfterACrash)
     EXPECT_FALSE(again.out.contains(QStringLiteral("tile 4/9"))) << "tiles already taken are not taken again";
     EXPECT_TRUE(again.out.contains(QStringLiteral("tile 9/9"))) << again.out.toStdString();
     const auto parsed = scanfile::parseRunLog(readFile(logPath));
-    ASSERT_TRUE(parsed.log) << parsed.problems.format("log");
+    ASSERT_TRUE(parsed.log) << i18ntest::englishFormat(parsed.problems, "log");
     EXPECT_EQ(parsed.log->records.size(), 9u);
 }

@@ -66,7 +66,7 @@ bool waitState(ScanRunner& r, ScanRunner::State s, int ms = 30000)
 int logLines(const QString& path)
 {
     std::string text;
-    QString error;
+    msg::Message error;
     if (!files::readText(path, &text, &error))
         return -1;
     return static_cast<int>(std::count(text.begin(), text.end(), '\n')) - 1;  // less the header
@@ -79,17 +79,19 @@ TEST(ScanRun, EveryTileIsTakenWithinTheToleranceAndExported)
     StageScan s;
     ASSERT_TRUE(s.ready()) << s.session.linkErrors.join(QLatin1Char(' ')).toStdString();
     auto r = s.runner();
-    QString error;
-    ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error;
     ASSERT_EQ(r->totalTiles(), 9);
-    QStringList problems, exports;
+    std::vector<msg::Message> problems;
+    QStringList exports;
     std::vector<int> triggered;
-    QObject::connect(r.get(), &ScanRunner::problem, [&](const QString& m) { problems << m; });
+    QObject::connect(r.get(), &ScanRunner::problem, [&](const msg::Message& m) { problems.push_back(m); });
     QObject::connect(r.get(), &ScanRunner::triggered, [&](int tile, quint64) { triggered.push_back(tile); });
     QObject::connect(r.get(), &ScanRunner::finished, [&](const QStringList& e) { exports = e; });
-    ASSERT_TRUE(r->start(&error)) << error.toStdString();
-    ASSERT_TRUE(waitState(*r, ScanRunner::State::Finished)) << problems.join(QLatin1Char(' ')).toStdString();
-    EXPECT_TRUE(problems.isEmpty()) << problems.join(QLatin1Char(' ')).toStdString();
+    ASSERT_TRUE(r->start(&error)) << error;
+    ASSERT_TRUE(waitState(*r, ScanRunner::State::Finished)) << (problems.empty() ? msg::Message{} : problems.back());
+    for (const msg::Message& m : problems)
+        ADD_FAILURE() << "problem: " << m;
     EXPECT_EQ(triggered, (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7, 8}));
     quint64 lastUs = 0;
     for (const auto& rec : r->records()) {
@@ -121,11 +123,11 @@ TEST(ScanRun, NothingMovesBeforeHoming)
     StageScan s;
     ASSERT_TRUE(s.session.connect());
     auto r = s.runner();
-    QString error;
-    ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error;
     const double before = s.session.link.machine().commandedLogical(0);
     EXPECT_FALSE(r->start(&error));
-    EXPECT_TRUE(error.contains(QStringLiteral("Home the stage first"))) << error.toStdString();
+    EXPECT_EQ(error.id, "scan.run.not_homed") << error;
     spin(200);
     EXPECT_EQ(s.session.link.machine().commandedLogical(0), before);
     EXPECT_EQ(r->state(), ScanRunner::State::Idle);
@@ -138,12 +140,15 @@ TEST(ScanRun, TheWholePlanIsCheckedAgainstTheSoftLimitsFirst)
     ASSERT_FALSE(s.session.call([&](auto cb) { s.session.client.setSoftLimits(1, 0, 62, cb); }));
     ASSERT_TRUE(waitFor([&] { return s.session.client.softLimits().size() >= 2 && s.session.client.softLimits()[1].max < 62.5; }, 3000));
     auto r = s.runner();
-    QString error;
-    ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error;
     const double before = s.session.link.machine().commandedLogical(1);
     EXPECT_FALSE(r->start(&error));
-    EXPECT_TRUE(error.contains(QStringLiteral("beyond the stage's travel"))) << error.toStdString();
-    EXPECT_TRUE(error.contains(QStringLiteral("Y 0 … 62"))) << error.toStdString();
+    EXPECT_EQ(error.id, "scan.run.plan_problem") << error;
+    const msg::Message cause = msg::nested(error, "cause");
+    EXPECT_EQ(cause.id, "scan.region_beyond_travel") << error;
+    EXPECT_EQ(cause.number("ty0", -1), 0.0) << error;
+    EXPECT_NEAR(cause.number("ty1"), 62.0, 1e-9) << error;
     spin(200);
     EXPECT_EQ(s.session.link.machine().commandedLogical(1), before);
 }
@@ -153,11 +158,11 @@ TEST(ScanRun, AbortStopsTheStageAndResumeContinuesAtTheNextTile)
     StageScan s;
     ASSERT_TRUE(s.ready());
     auto r = s.runner();
-    QString error;
-    ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error;
     std::vector<int> taken;
     QObject::connect(r.get(), &ScanRunner::tileTaken, [&](int t) { taken.push_back(t); });
-    ASSERT_TRUE(r->start(&error)) << error.toStdString();
+    ASSERT_TRUE(r->start(&error)) << error;
     ASSERT_TRUE(waitFor([&] { return r->takenTiles() >= 3; }, 20000));
     r->abort();
     EXPECT_EQ(r->state(), ScanRunner::State::Stopped);
@@ -165,7 +170,7 @@ TEST(ScanRun, AbortStopsTheStageAndResumeContinuesAtTheNextTile)
     const int atAbort = r->takenTiles();
     spin(300);
     EXPECT_EQ(r->takenTiles(), atAbort) << "nothing is taken after an abort";
-    ASSERT_TRUE(r->start(&error)) << error.toStdString();
+    ASSERT_TRUE(r->start(&error)) << error;
     ASSERT_TRUE(waitState(*r, ScanRunner::State::Finished));
     EXPECT_EQ(taken, (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7, 8})) << "each tile once, in order";
     EXPECT_EQ(logLines(r->logPath()), 9);
@@ -176,16 +181,16 @@ TEST(ScanRun, PauseWaitsForTheTileInProgress)
     StageScan s;
     ASSERT_TRUE(s.ready());
     auto r = s.runner();
-    QString error;
-    ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error.toStdString();
-    ASSERT_TRUE(r->start(&error)) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error;
+    ASSERT_TRUE(r->start(&error)) << error;
     ASSERT_TRUE(waitFor([&] { return r->takenTiles() >= 1; }, 20000));
     r->pause();
     ASSERT_TRUE(waitState(*r, ScanRunner::State::Paused));
     const int atPause = r->takenTiles();
     EXPECT_EQ(r->currentTile(), atPause) << "paused between tiles";
     ASSERT_TRUE(s.session.waitStill());
-    ASSERT_TRUE(r->start(&error)) << error.toStdString();
+    ASSERT_TRUE(r->start(&error)) << error;
     ASSERT_TRUE(waitState(*r, ScanRunner::State::Finished));
     EXPECT_EQ(r->takenTiles(), 9);
 }
@@ -195,11 +200,11 @@ TEST(ScanRun, ALostLinkStopsTheRunAndItContinuesAfterReconnecting)
     StageScan s;
     ASSERT_TRUE(s.ready());
     auto r = s.runner();
-    QString error;
-    ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error.toStdString();
-    QStringList problems;
-    QObject::connect(r.get(), &ScanRunner::problem, [&](const QString& m) { problems << m; });
-    ASSERT_TRUE(r->start(&error)) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error;
+    std::vector<msg::Message> problems;
+    QObject::connect(r.get(), &ScanRunner::problem, [&](const msg::Message& m) { problems.push_back(m); });
+    ASSERT_TRUE(r->start(&error)) << error;
     ASSERT_TRUE(waitFor([&] { return r->takenTiles() >= 2; }, 20000));
     // The cable comes out with a MOVE on the wire: the request is lost with the link,
     // and the run says so (not "refused") whichever the client reports first.
@@ -213,13 +218,13 @@ TEST(ScanRun, ALostLinkStopsTheRunAndItContinuesAfterReconnecting)
     ASSERT_TRUE(waitState(*r, ScanRunner::State::Stopped, 5000));
     s.session.tap.afterWrite = nullptr;
     EXPECT_TRUE(pulled);
-    ASSERT_FALSE(problems.isEmpty());
-    EXPECT_TRUE(problems.last().contains(QStringLiteral("link to the stage was lost"))) << problems.last().toStdString();
+    ASSERT_FALSE(problems.empty());
+    EXPECT_TRUE(problems.back().id == "scan.run.link_lost" || problems.back().id == "scan.run.link_lost_cause") << problems.back();
     EXPECT_FALSE(r->start(&error)) << "no resume without a link";
     s.session.link.pair().replug();
     ASSERT_TRUE(s.session.connect());
     ASSERT_TRUE(s.session.waitStill());
-    ASSERT_TRUE(r->start(&error)) << error.toStdString();
+    ASSERT_TRUE(r->start(&error)) << error;
     ASSERT_TRUE(waitState(*r, ScanRunner::State::Finished));
     EXPECT_EQ(logLines(r->logPath()), 9);
     for (const auto& rec : r->records())
@@ -233,11 +238,11 @@ TEST(ScanRun, ARunnerGoneWithItsFirstMoveInFlightIsNeverCalledBack)
     // (under the sanitizers this was a use after free).
     StageScan s;
     ASSERT_TRUE(s.ready());
-    QString error;
+    msg::Message error;
     {
         auto r = s.runner();
-        ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error.toStdString();
-        ASSERT_TRUE(r->start(&error)) << error.toStdString();
+        ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error;
+        ASSERT_TRUE(r->start(&error)) << error;
     }
     ASSERT_TRUE(s.session.waitStill());
     EXPECT_TRUE(s.session.client.isReady()) << "the link is still there for the next runner";
@@ -247,23 +252,23 @@ TEST(ScanRun, ARunLogOutlivesTheProgram)
 {
     StageScan s;
     ASSERT_TRUE(s.ready());
-    QString error;
+    msg::Message error;
     {
         auto first = s.runner();
-        ASSERT_TRUE(first->prepare(smallPlan(), s.dir.path(), false, &error)) << error.toStdString();
-        ASSERT_TRUE(first->start(&error)) << error.toStdString();
+        ASSERT_TRUE(first->prepare(smallPlan(), s.dir.path(), false, &error)) << error;
+        ASSERT_TRUE(first->start(&error)) << error;
         ASSERT_TRUE(waitFor([&] { return first->takenTiles() >= 4; }, 20000));
         // The program dies here: no abort, no goodbye.
     }
     s.session.client.stop(0);
     ASSERT_TRUE(s.session.waitStill());
     auto second = s.runner();
-    ASSERT_TRUE(second->prepare(smallPlan(), s.dir.path(), false, &error)) << error.toStdString();
+    ASSERT_TRUE(second->prepare(smallPlan(), s.dir.path(), false, &error)) << error;
     const int taken = second->takenTiles();
     EXPECT_GE(taken, 4);
     std::vector<int> now;
     QObject::connect(second.get(), &ScanRunner::tileTaken, [&](int t) { now.push_back(t); });
-    ASSERT_TRUE(second->start(&error)) << error.toStdString();
+    ASSERT_TRUE(second->start(&error)) << error;
     ASSERT_TRUE(waitState(*second, ScanRunner::State::Finished));
     ASSERT_FALSE(now.empty());
     EXPECT_EQ(now.front(), taken) << "the run continues at the next tile";
@@ -276,8 +281,8 @@ TEST(ScanRun, TimeLeftFallsTileByTileAndKeepsToThePlansEstimate)
     StageScan s;
     ASSERT_TRUE(s.ready()) << s.session.linkErrors.join(QLatin1Char(' ')).toStdString();
     auto r = s.runner();
-    QString error;
-    ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error;
     EXPECT_DOUBLE_EQ(r->etaS(), r->estimate().totalS) << "before the start: the whole plan";
     // The device's clock is stepped by hand: 10 ms a step while the stage moves and
     // settles, exactly the exposure while the (host-timed) exposure runs. Device
@@ -299,7 +304,7 @@ TEST(ScanRun, TimeLeftFallsTileByTileAndKeepsToThePlansEstimate)
         exposing = false;
         seen.push_back({tile, r->etaS(), r->estimate().totalS - r->estimate().tileDoneS[static_cast<std::size_t>(tile)]});
     });
-    ASSERT_TRUE(r->start(&error)) << error.toStdString();
+    ASSERT_TRUE(r->start(&error)) << error;
     const double withLeadIn = r->etaS();
     EXPECT_GT(withLeadIn, r->estimate().totalS) << "the move to the first tile counts too";
     ASSERT_TRUE(waitFor(
@@ -332,16 +337,16 @@ TEST(ScanRun, AnotherPlansLogIsNeverOverwritten)
 {
     StageScan s;
     ASSERT_TRUE(s.session.connect());
-    QString error;
+    msg::Message error;
     auto r = s.runner();
-    ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error.toStdString();
+    ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error;
     ScanPlan other = smallPlan();
     other.overlapX = 0.3;
     ScanRunner::Refusal why = ScanRunner::Refusal::None;
     EXPECT_FALSE(r->prepare(other, s.dir.path(), false, &error, &why));
     EXPECT_EQ(why, ScanRunner::Refusal::OtherScansLog) << "what the GUI and the CLI offer a restart on";
-    EXPECT_TRUE(error.contains(QStringLiteral("different scan"))) << error.toStdString();
-    ASSERT_TRUE(r->prepare(other, s.dir.path(), true, &error)) << error.toStdString();
+    EXPECT_EQ(error.id, "scan.run.other_scans_log") << error;
+    ASSERT_TRUE(r->prepare(other, s.dir.path(), true, &error)) << error;
     const QStringList logs = QDir(s.dir.path()).entryList({QStringLiteral("scan-run*.jsonl")});
     EXPECT_EQ(logs.size(), 2) << "the old log is kept aside";
 }
@@ -361,9 +366,10 @@ TEST(ScanRun, TheStagesOwnCompensationPutsTheWorkPointOnThePlan)
         p.compensation.enabled = compensate;
         QTemporaryDir dir;
         auto r = s.runner();
-        QString error;
-        EXPECT_TRUE(r->prepare(p, dir.path(), false, &error)) << error.toStdString();
-        EXPECT_TRUE(waitFor([&] { return r->preflight().isEmpty(); }, 5000)) << r->preflight().join(QLatin1Char('\n')).toStdString();
+        msg::Message error;
+        EXPECT_TRUE(r->prepare(p, dir.path(), false, &error)) << error;
+        EXPECT_TRUE(waitFor([&] { return r->preflight().empty(); }, 5000))
+            << (r->preflight().empty() ? std::string() : msg::debugString(r->preflight().front()));
         double worstUm = 0;
         QObject::connect(r.get(), &ScanRunner::triggered, [&](int tile, quint64) {
             const auto& planned = r->layout().tiles[static_cast<std::size_t>(tile)].centre;
@@ -371,7 +377,7 @@ TEST(ScanRun, TheStagesOwnCompensationPutsTheWorkPointOnThePlan)
             const double wx = m.workPointLogical(0), wy = m.workPointLogical(1);
             worstUm = std::max({worstUm, std::fabs(wx - planned.xMm) * 1e3, std::fabs(wy - planned.yMm) * 1e3});
         });
-        EXPECT_TRUE(r->start(&error)) << error.toStdString();
+        EXPECT_TRUE(r->start(&error)) << error;
         EXPECT_TRUE(waitState(*r, ScanRunner::State::Finished));
         EXPECT_TRUE(s.session.waitStill());
         return worstUm;
@@ -421,10 +427,10 @@ TEST(ScanRun, TheEstimateMatchesTheRunOnTheDevicesClock)
     ASSERT_TRUE(s.session.waitStill());
     s.session.link.host().setTimeScale(1);
     auto r = s.runner();
-    QString error;
-    ASSERT_TRUE(r->prepare(p, s.dir.path(), false, &error)) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(r->prepare(p, s.dir.path(), false, &error)) << error;
     ASSERT_EQ(r->totalTiles(), 10);
-    ASSERT_TRUE(r->start(&error)) << error.toStdString();
+    ASSERT_TRUE(r->start(&error)) << error;
     ASSERT_TRUE(waitState(*r, ScanRunner::State::Finished));
     const auto& recs = r->records();
     const double actualS = static_cast<double>(recs.back().deviceTimeUs - recs.front().deviceTimeUs) * 1e-6 + recs.front().settleS + p.exposureS;

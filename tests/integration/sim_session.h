@@ -4,6 +4,7 @@
 // refusal the client reported, and helpers that wait on the real event loop.
 #include "device/backends/benchpilot/benchpilot_client.h"
 #include "device/link/simulated_link.h"
+#include "motion/message_print.h"
 #include "tap_transport.h"
 #include "wait.h"
 
@@ -29,7 +30,10 @@ public:
         QObject::connect(&client, &dev::BenchPilotClient::eventReceived, &client,
                          [this](const dev::DeviceEvent& e) { events.push_back(e); });
         QObject::connect(&client, &dev::BenchPilotClient::linkError, &client,
-                         [this](const QString& m) { linkErrors << m; });
+                         [this](const msg::Message& m) {
+                             linkMessages.push_back(m);
+                             linkErrors << QString::fromStdString(msg::debugString(m));
+                         });
         QObject::connect(&client, &dev::BenchPilotClient::requestFailed, &client,
                          [this](const dev::RequestError& e) { failures.push_back(e); });
         QObject::connect(&client, &dev::BenchPilotClient::statusChanged, &client, [this] { ++statusCount; });
@@ -64,7 +68,8 @@ public:
             ADD_FAILURE() << "the client never completed the request";
             dev::RequestError e;
             e.kind = dev::RequestError::Kind::Timeout;
-            e.message = QStringLiteral("test: no completion");
+            e.message = msg::make("request.no_reply", {msg::verbatim("request", "the test's request"), msg::integer("attempts", 1),
+                                                       msg::real("seconds", timeoutMs / 1000.0, msg::Unit::S)});
             return e;
         }
         return result;
@@ -112,7 +117,7 @@ public:
         link.host().setTimeScale(timeScale);
         const auto err = call([this](auto cb) { client.home(0, cb); });
         if (err) {
-            ADD_FAILURE() << "home refused: " << err->message.toStdString();
+            ADD_FAILURE() << "home refused: " << msg::debugString(err->message);
             link.host().setTimeScale(1);
             return false;
         }
@@ -134,7 +139,8 @@ public:
     TapTransport tap;
     dev::BenchPilotClient client;
     std::vector<dev::DeviceEvent> events;
-    QStringList linkErrors;
+    std::vector<msg::Message> linkMessages;  ///< every linkError, in order
+    QStringList linkErrors;                  ///< the same as debug strings, for failure output
     std::vector<dev::RequestError> failures;
     int statusCount = 0;
 };

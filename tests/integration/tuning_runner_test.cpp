@@ -28,9 +28,9 @@ struct StageTuning {
     std::unique_ptr<dev::InstrumentTarget> target;
     TuningRunner runner;
     std::vector<motion::control::Record> records;
-    QStringList messages;
+    std::vector<msg::Message> messages;
     bool finished = false, ok = false;
-    QString finalMessage;
+    msg::Message finalMessage;
 
     bool setUp()
     {
@@ -42,7 +42,7 @@ struct StageTuning {
             return false;
         x = s.axis('X');
         if (const auto e = s.call([&](auto cb) { s.client.move({{x, 50.0}}, false, 0, cb); })) {
-            ADD_FAILURE() << "move refused: " << e->message.toStdString();
+            ADD_FAILURE() << "move refused: " << msg::debugString(e->message);
             return false;
         }
         if (!s.waitStill()) {
@@ -51,9 +51,9 @@ struct StageTuning {
         }
         target = std::make_unique<dev::InstrumentTarget>(&tuning, x, QStringLiteral("Stage"));
         QObject::connect(&runner, &TuningRunner::recordArrived, &runner,
-                         [this](const motion::control::Record& r, const QString&, int) { records.push_back(r); });
-        QObject::connect(&runner, &TuningRunner::message, &runner, [this](const QString& m) { messages << m; });
-        QObject::connect(&runner, &TuningRunner::finished, &runner, [this](bool good, const QString& m) {
+                         [this](const motion::control::Record& r, const msg::Message&, int) { records.push_back(r); });
+        QObject::connect(&runner, &TuningRunner::message, &runner, [this](const msg::Message& m) { messages.push_back(m); });
+        QObject::connect(&runner, &TuningRunner::finished, &runner, [this](bool good, const msg::Message& m) {
             finished = true;
             ok = good;
             finalMessage = m;
@@ -91,7 +91,7 @@ TEST_P(TuningOnStage, ZieglerNicholsPidSettlesInsideTheSeedsBandAndTrialsStayInT
     const auto o = t.options(GetParam());
     ASSERT_TRUE(t.runner.startZn(t.target.get(), o));
     ASSERT_TRUE(waitFor([&] { return t.finished; }, 60000)) << "the job did not end";
-    ASSERT_TRUE(t.ok) << t.finalMessage.toStdString();
+    ASSERT_TRUE(t.ok) << t.finalMessage;
     const auto& r = t.runner.result();
     // The stage loop's ultimate point (docs/tuning.md): Ku ≈ 4.2, Tu ≈ 5 ms.
     EXPECT_GT(r.ku, 3.5);
@@ -130,8 +130,8 @@ TEST(TuningFaults, LinkLostMidTestInterruptsTheJobAndTheDeviceHoldsUnderItsGains
     spin(200);
     t.s.link.pair().unplug();
     ASSERT_TRUE(waitFor([&] { return t.runner.state() == TuningRunner::State::Interrupted; }, 3000));
-    ASSERT_FALSE(t.messages.isEmpty());
-    EXPECT_TRUE(t.messages.last().contains(QStringLiteral("link"))) << t.messages.last().toStdString();
+    ASSERT_FALSE(t.messages.empty());
+    EXPECT_EQ(t.messages.back().id, "tuning.run.interrupted") << t.messages.back();
     // The device, on its own, ends the test within 0.5 s of the silence and stops the axis.
     ASSERT_TRUE(waitFor([&] { return !t.s.link.machine().tuning().testRunning(t.x); }, 1500));
     spin(300);
@@ -145,7 +145,8 @@ TEST(TuningFaults, LinkLostMidTestInterruptsTheJobAndTheDeviceHoldsUnderItsGains
     t.runner.abort();
     ASSERT_TRUE(waitFor([&] { return t.finished; }, 5000));
     EXPECT_EQ(t.runner.state(), TuningRunner::State::Aborted);
-    EXPECT_TRUE(t.finalMessage.contains(QStringLiteral("aborted"))) << t.finalMessage.toStdString();
+    // Aborted during the run, or just after it if the run ended before the abort reached it.
+    EXPECT_TRUE(t.finalMessage.id == "tuning.run.aborted_during" || t.finalMessage.id == "tuning.run.aborted_after") << t.finalMessage;
     EXPECT_TRUE(sameGains(t.deviceGains(), before));
 }
 
@@ -164,8 +165,8 @@ TEST(TuningFaults, EStopMidOscillationEndsTheJobAndLeavesTheGains)
     ASSERT_TRUE(waitFor([&] { return t.finished; }, 5000));
     EXPECT_FALSE(t.ok);
     EXPECT_EQ(t.runner.state(), TuningRunner::State::Failed);
-    EXPECT_TRUE(t.finalMessage.contains(QStringLiteral("E-stop"))) << t.finalMessage.toStdString();
-    EXPECT_TRUE(t.finalMessage.contains(QStringLiteral("gains in force are the ones from before"))) << t.finalMessage.toStdString();
+    // "E-stop during …: … the gains in force are the ones from before"
+    EXPECT_EQ(t.finalMessage.id, "tuning.run.estop") << t.finalMessage;
     EXPECT_FALSE(t.s.link.machine().tuning().testRunning(t.x));
     EXPECT_TRUE(sameGains(t.deviceGains(), before));
     EXPECT_GE(t.s.findEvent(proto::kEvTestAborted, t.x), 0);
@@ -181,8 +182,12 @@ TEST(TuningFaults, BadGainsAreRefusedAndThePreviousOnesStay)
         const auto e = t.s.call([&](auto cb) { t.tuning.setGains(t.x, bad, false, cb); });
         ASSERT_TRUE(e);
         EXPECT_EQ(e->code, proto::kErrBadGains);
-        EXPECT_TRUE(e->message.contains(QStringLiteral("set gains refused"))) << e->message.toStdString();
-        EXPECT_TRUE(e->message.contains(QStringLiteral("the previous ones stay"))) << e->message.toStdString();
+        // "set gains refused: gains refused: axis X gains refused, the previous ones stay: …"
+        EXPECT_EQ(e->message.id, "request.refused") << e->message;
+        EXPECT_EQ(e->message.text("action"), "request.set_gains") << e->message;
+        const msg::Message cause = msg::nested(e->message, "cause");
+        EXPECT_EQ(cause.text("code"), "device.error.bad_gains") << e->message;
+        EXPECT_NE(cause.text("detail").find("the previous ones stay"), std::string::npos) << e->message;
     }
     bool read = false;
     t.tuning.getGains(t.x, [&](const auto& e, const dev::AxisGains& g) {

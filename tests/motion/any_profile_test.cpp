@@ -1,4 +1,5 @@
 // Kind selection, synchronised moves of any kind, and the sampler.
+#include "motion/message_print.h"
 #include "motion/any_profile.h"
 
 #include <gtest/gtest.h>
@@ -16,12 +17,13 @@ TEST(AnyProfile, KindsByNameAndMissingFieldsNamed)
     r.kind = ProfileKind::JerkLimited;
     r.vMaxMmS = 100;
     r.aMaxMmS2 = 1000;
-    EXPECT_EQ(planProfile(10, r).error, "jMaxMmS3 = 0 must be finite and > 0 for jerk-limited");
+    EXPECT_EQ(msg::debugString(planProfile(10, r).error), "profile.not_positive{field=\"jMaxMmS3\", value=0, kind=\"jerk-limited\"}");
     r.kind = ProfileKind::SeedSCurve;
-    EXPECT_EQ(planProfile(10, r).error, "accelTimeS = 0 must be finite and > 0 for seed-scurve");
+    EXPECT_EQ(msg::debugString(planProfile(10, r).error), "profile.not_positive{field=\"accelTimeS\", value=0, kind=\"seed-scurve\"}");
     r.kind = ProfileKind::Trapezoid;
     r.plateauMm = 1;
-    EXPECT_EQ(planProfile(10, r).error, "startSpeedMmS = 0 must be > 0 when plateauMm > 0 for trapezoid");
+    EXPECT_EQ(msg::debugString(planProfile(10, r).error),
+              "profile.start_speed_for_plateau{field=\"startSpeedMmS\", value=0, kind=\"trapezoid\"}");
 }
 
 TEST(AnyProfile, EveryKindLandsOnItsDistance)

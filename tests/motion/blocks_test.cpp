@@ -1,5 +1,6 @@
 // Seed 004 blocks: validation, split at a direction change, the per-block plan, and the
 // per-microstep delays (exact square root and the seed's Taylor recurrence).
+#include "motion/message_print.h"
 #include "motion/blocks.h"
 
 #include <gtest/gtest.h>
@@ -66,12 +67,12 @@ TEST(Blocks, EveryShapeOfTheSeed)
 TEST(Blocks, ValidationNamesJointBlockFieldAndValue)
 {
     auto r = planJointBlocks({{10, 100, 0}}, 30000, 2);
-    EXPECT_EQ(r.error, "joint 2 block 0: t0 = 0 ms must be > 0");
+    EXPECT_EQ(msg::debugString(r.error), "profile.block_zero_duration{joint=2, block=0}");
     r = planJointBlocks({{10, 100, 100}, {10, 32000, 100}}, 30000, 2);
-    EXPECT_EQ(r.error, "joint 2 block 1: |V2| = 32000 microsteps/s exceeds vMax = 30000");
+    EXPECT_EQ(msg::debugString(r.error), "profile.block_too_fast{joint=2, block=1, v2=32000, max=30000}");
     r = planJointBlocks({{100, 0, 500}}, 30000, 0);  // rest to rest cannot move in the seed's plan
     EXPECT_FALSE(r);
-    EXPECT_NE(r.error.find("joint 0 block 0: S = 100 microsteps is not reachable"), std::string::npos) << r.error;
+    EXPECT_NE(msg::debugString(r.error).find("profile.block_unreachable{joint=0, block=0, steps=100,"), std::string::npos) << r.error;
     r = planJointBlocks({{-50, 1000, 500}}, 30000, 0);  // speed forward, S backward
     EXPECT_FALSE(r);
 }

@@ -1,5 +1,6 @@
 // Teaching a slot: three wells, a restricted least-squares fit, the residual
 // that shows a bad teach.
+#include "motion/message_print.h"
 #include "motion/plans/plates/calibration.h"
 
 #include <gtest/gtest.h>
@@ -45,7 +46,7 @@ TEST(PlateCalibration, RecoversOffsetRotationAndScaleExactly)
 {
     const Labware lw = *findBuiltinLabware("sbs-96");
     const PlateTransform truth = PlateTransform::make(9.3, 7.1, 0.8, 1.0004, 1.0004);
-    std::string error;
+    msg::Message error;
     const auto fit = fitCalibration(taught(truth, lw), FitModel::Similarity, &error);
     ASSERT_TRUE(fit) << error;
     EXPECT_NEAR(fit->rotationDeg, 0.8, 1e-9);
@@ -65,7 +66,7 @@ TEST(PlateCalibration, ScaledAxesRecoversTwoScales)
 {
     const Labware lw = *findBuiltinLabware("sbs-96");
     const PlateTransform truth = PlateTransform::make(12, 110, -1.5, 1.002, 0.997);
-    std::string error;
+    msg::Message error;
     const auto fit = fitCalibration(taught(truth, lw), FitModel::ScaledAxes, &error);
     ASSERT_TRUE(fit) << error;
     EXPECT_NEAR(fit->scaleX, 1.002, 1e-9);
@@ -84,11 +85,11 @@ TEST(PlateCalibration, TeachingNoiseWithinRepeatabilityGivesNoWarning)
     const Labware lw = *findBuiltinLabware("sbs-96");
     const PlateTransform truth = PlateTransform::make(8.2, 8.4, 0.3);
     for (unsigned seed = 1; seed <= 20; ++seed) {
-        std::string error;
+        msg::Message error;
         const auto fit = fitCalibration(taught(truth, lw, 0.02, seed), FitModel::Similarity, &error);
         ASSERT_TRUE(fit) << error;
         EXPECT_LT(fit->maxResidualMm, kResidualWarnMm) << "seed " << seed;
-        EXPECT_TRUE(fit->warnings.empty()) << fit->warnings.front();
+        EXPECT_TRUE(fit->warnings.empty()) << msg::debugString(fit->warnings.front());
         EXPECT_NEAR(fit->rotationDeg, 0.3, 0.05);
     }
 }
@@ -98,7 +99,7 @@ TEST(PlateCalibration, AWellTaughtOffCentreShowsInItsResidual)
     const Labware lw = *findBuiltinLabware("sbs-96");
     auto pts = taught(PlateTransform::make(8, 8, 0), lw);
     pts[2].machineMm.y += 1.2;  // H1 taught 1.2 mm toward the front
-    std::string error;
+    msg::Message error;
     const auto fit = fitCalibration(pts, FitModel::Similarity, &error);
     ASSERT_TRUE(fit) << error;
     ASSERT_EQ(fit->residualMm.size(), 3u);
@@ -108,9 +109,9 @@ TEST(PlateCalibration, AWellTaughtOffCentreShowsInItsResidual)
     for (double r : fit->residualMm)
         EXPECT_GT(r, 0.05);
     ASSERT_FALSE(fit->warnings.empty());
-    EXPECT_NE(fit->warnings.front().find("the taught wells are up to 0.51 mm off the plate's shape (A1 0.51, A12 0.27, H1 0.43 mm"),
+    EXPECT_NE(msg::debugString(fit->warnings.front()).find("plate.calibration.large_residual{max=0.51 mm, list=\"A1 0.51, A12 0.27, H1 0.43"),
               std::string::npos)
-        << fit->warnings.front();
+        << msg::debugString(fit->warnings.front());
 }
 
 TEST(PlateCalibration, AFullAffineThroughThreePointsWouldHideThatMistake)
@@ -136,7 +137,7 @@ TEST(PlateCalibration, AFullAffineThroughThreePointsWouldHideThatMistake)
         const PointMm m = affine.apply(p.plateMm);
         EXPECT_NEAR(std::hypot(m.x - p.machineMm.x, m.y - p.machineMm.y), 0.0, 1e-9);
     }
-    std::string error;
+    msg::Message error;
     EXPECT_GT(fitCalibration(pts, FitModel::Similarity, &error)->maxResidualMm, kResidualWarnMm);
     // With a scale per axis, a point off along its column is taken up by the Y
     // scale: no residual either. That is why Similarity is the default.
@@ -155,18 +156,18 @@ TEST(PlateCalibration, WarnsAboutTheWrongLabwareAndAPlateNotSeated)
     const auto real = teachWells(lw384);
     for (std::size_t i = 0; i < pts.size(); ++i)
         pts[i].machineMm = {8 + real[i].plateMm.x, 8 + real[i].plateMm.y};
-    std::string error;
+    msg::Message error;
     auto fit = fitCalibration(pts, FitModel::Similarity, &error);
     ASSERT_TRUE(fit);
     bool scaleWarned = false;
     for (const auto& w : fit->warnings)
-        scaleWarned = scaleWarned || w.find("scale") != std::string::npos;
+        scaleWarned = scaleWarned || w.id == "plate.calibration.scale_off";
     EXPECT_TRUE(scaleWarned);
 
     fit = fitCalibration(taught(PlateTransform::make(20, 5, 6), lw96), FitModel::Similarity, &error);
     ASSERT_TRUE(fit);
     ASSERT_EQ(fit->warnings.size(), 1u);
-    EXPECT_NE(fit->warnings[0].find("turned by 6°"), std::string::npos) << fit->warnings[0];
+    EXPECT_EQ(msg::debugString(fit->warnings[0]), "plate.calibration.turned{angle=6°}");
     // Relative to a slot built turned, not to the machine.
     fit = fitCalibration(taught(PlateTransform::make(150, 5, 90), lw96), FitModel::Similarity, &error, 90);
     EXPECT_TRUE(fit->warnings.empty());
@@ -174,13 +175,13 @@ TEST(PlateCalibration, WarnsAboutTheWrongLabwareAndAPlateNotSeated)
 
 TEST(PlateCalibration, RefusesPointsThatCannotFixAFit)
 {
-    std::string error;
+    msg::Message error;
     EXPECT_FALSE(fitCalibration({}, FitModel::Similarity, &error));
     std::vector<TeachPoint> same = {{"A1", {14.38, 11.24}, {20, 20}}, {"A12", {113.38, 11.24}, {20.2, 20}}};
     EXPECT_FALSE(fitCalibration(same, FitModel::Similarity, &error));
-    EXPECT_NE(error.find("less than 1 mm apart"), std::string::npos);
+    EXPECT_EQ(error.id, "plate.calibration.too_close");
     std::vector<TeachPoint> line = {{"A1", {0, 0}, {0, 0}}, {"A6", {50, 0}, {50, 0}}, {"A12", {100, 0}, {100, 0}}};
     EXPECT_TRUE(fitCalibration(line, FitModel::Similarity, &error));
     EXPECT_FALSE(fitCalibration(line, FitModel::ScaledAxes, &error));
-    EXPECT_NE(error.find("one line"), std::string::npos);
+    EXPECT_EQ(error.id, "plate.calibration.on_one_line");
 }

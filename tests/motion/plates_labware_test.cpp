@@ -1,4 +1,5 @@
 // The built-in SBS plates: the positions the standard and the makers publish.
+#include "motion/message_print.h"
 #include "motion/plans/plates/labware.h"
 
 #include <gtest/gtest.h>
@@ -48,7 +49,7 @@ TEST(PlateLabware, EveryBuiltInIsValidAndHoldsNoMoreThanItsWells)
         const Labware& lw = all[i];
         EXPECT_EQ(lw.id, expected[i].first);
         EXPECT_EQ(static_cast<int>(lw.wells.size()), expected[i].second);
-        EXPECT_TRUE(validateLabware(lw).empty()) << lw.id << ": " << validateLabware(lw).front().message;
+        EXPECT_TRUE(validateLabware(lw).empty()) << lw.id << ": " << msg::debugString(validateLabware(lw).front().message);
         const Well& first = lw.wells.front();
         // A well holds at most its cylinder.
         const double cylinderUl = 3.14159265 * first.diameterMm * first.diameterMm / 4 * first.depthMm;
@@ -65,8 +66,9 @@ TEST(PlateLabware, ValidationNamesTheWellAtFault)
     const Problems p = validateLabware(lw);
     ASSERT_EQ(p.size(), 3u);
     EXPECT_EQ(p[0].path, "wells[5]");
-    EXPECT_NE(p[0].message.find("does not fit on the 127.76 × 85.48 mm footprint"), std::string::npos) << p[0].message;
+    EXPECT_NE(msg::debugString(p[0].message).find("length=127.76 mm, width=85.48 mm"), std::string::npos) << msg::debugString(p[0].message);
+    EXPECT_EQ(p[0].message.id, "plate.labware.well_off_footprint");
     EXPECT_EQ(p[1].path, "wells[7]");
     EXPECT_EQ(p[2].path, "wells[9]");
-    EXPECT_NE(p[2].message.find("defined twice"), std::string::npos);
+    EXPECT_EQ(p[2].message.id, "plate.labware.well_twice");
 }

@@ -1,5 +1,6 @@
 // Planning a recipe: the moves per well, the syringe's capacity, and every
 // error the issue names, found in one pass.
+#include "motion/message_print.h"
 #include "motion/plans/recipes/move_time.h"
 #include "motion/seed_scurve.h"
 #include "plates_support.h"
@@ -88,14 +89,14 @@ TEST(PlateRecipePlan, UnknownWellOnA96Plate)
     Recipe r = oneStep(StepType::Dispense, {"I13"}, 10);
     const RecipePlan plan = planRecipe(r, context());
     EXPECT_FALSE(plan.ok());
-    EXPECT_EQ(problemAt(plan, "steps[0].wells").message, "unknown well \"I13\" on a 96-well plate");
+    EXPECT_EQ(msg::debugString(problemAt(plan, "steps[0].wells").message), "plate.unknown_well{well=\"\"I13\"\", wells=96}");
 }
 
 TEST(PlateRecipePlan, VolumeOverCapacityIsRefused)
 {
     const RecipePlan plan = planRecipe(oneStep(StepType::Aspirate, {"A1"}, 1200), context());
-    EXPECT_EQ(problemAt(plan, "steps[0].volume_ul").message,
-              "volume over capacity: 1200 µL is more than the syringe holds (1000 µL)");
+    EXPECT_EQ(msg::debugString(problemAt(plan, "steps[0].volume_ul").message),
+              "recipe.volume_over_capacity{volume=1200 µL, capacity=1000 µL}");
     // Well by well, the syringe fills: the eleventh 100 µL would not fit.
     Recipe r = oneStep(StepType::Aspirate, {"A1:A11"}, 100);
     r.plates[0].labware = "sbs-48";
@@ -103,9 +104,9 @@ TEST(PlateRecipePlan, VolumeOverCapacityIsRefused)
     r.steps[0].wells = {"A1:B3"};
     r.steps[0].volumeUl = 200;
     const RecipePlan fill = planRecipe(r, context());
-    EXPECT_NE(problemAt(fill, "steps[0].volume_ul").message.find("the syringe would hold 1200 µL, more than its 1000 µL"),
+    EXPECT_NE(msg::debugString(problemAt(fill, "steps[0].volume_ul").message).find("volume=1200 µL, capacity=1000 µL"),
               std::string::npos)
-        << problemAt(fill, "steps[0].volume_ul").message;
+        << msg::debugString(problemAt(fill, "steps[0].volume_ul").message);
 }
 
 TEST(PlateRecipePlan, NegativeAndZeroVolumesAreRefused)
@@ -113,7 +114,7 @@ TEST(PlateRecipePlan, NegativeAndZeroVolumesAreRefused)
     for (double v : {-5.0, 0.0, std::nan("")}) {
         const RecipePlan plan = planRecipe(oneStep(StepType::Aspirate, {"A1"}, v), context());
         EXPECT_FALSE(plan.ok());
-        EXPECT_NE(problemAt(plan, "steps[0].volume_ul").message.find("must be more than 0 µL"), std::string::npos) << v;
+        EXPECT_NE(msg::debugString(problemAt(plan, "steps[0].volume_ul").message).find("plate.not_positive"), std::string::npos) << v;
         EXPECT_TRUE(plan.ops.empty()) << "nothing is planned for a step that cannot run";
     }
 }
@@ -123,15 +124,15 @@ TEST(PlateRecipePlan, MissingAndUnknownPlates)
     Recipe r = oneStep(StepType::Aspirate, {"A1"}, 10);
     r.plates.push_back({"reservoir", "2", "sbs-12", 50, 70});
     RecipePlan plan = planRecipe(r, context());
-    EXPECT_EQ(problemAt(plan, "steps[0].plate").message, "missing plate: the recipe has 2 plates (samples, reservoir); say which");
+    EXPECT_EQ(msg::debugString(problemAt(plan, "steps[0].plate").message), "recipe.plate_ambiguous{count=2, plates=\"samples, reservoir\"}");
     r.steps[0].plate = "reagents";
     plan = planRecipe(r, context());
-    EXPECT_EQ(problemAt(plan, "steps[0].plate").message,
-              "unknown plate \"reagents\"; the recipe's plates are \"samples\", \"reservoir\"");
+    EXPECT_EQ(msg::debugString(problemAt(plan, "steps[0].plate").message),
+              "recipe.unknown_plate{plate=\"reagents\", plates=\"\"samples\", \"reservoir\"\"}");
     r.plates.clear();
     r.steps[0].plate.clear();
     plan = planRecipe(r, context());
-    EXPECT_EQ(problemAt(plan, "steps[0].plate").message, "missing plate: the recipe has no plates");
+    EXPECT_EQ(problemAt(plan, "steps[0].plate").message.id, "recipe.no_plates");
 }
 
 TEST(PlateRecipePlan, EveryErrorAtOnce)
@@ -153,10 +154,10 @@ TEST(PlateRecipePlan, EveryErrorAtOnce)
     m.cycles = 0;
     r.steps.push_back(m);
     const RecipePlan plan = planRecipe(r, context());
-    EXPECT_EQ(problemAt(plan, "plates[0].slot").message, "unknown slot \"7\": the deck has slots 1, 2");
-    EXPECT_NE(problemAt(plan, "plates[1].labware").message.find("unknown labware \"sbs-97\""), std::string::npos);
-    EXPECT_NE(problemAt(plan, "steps[1].volume_ul").message.find("must be more than 0"), std::string::npos);
-    EXPECT_NE(problemAt(plan, "steps[2].cycles").message.find("must be from 1 to 100"), std::string::npos);
+    EXPECT_EQ(msg::debugString(problemAt(plan, "plates[0].slot").message), "recipe.unknown_slot{slot=\"7\", slots=\"1, 2\"}");
+    EXPECT_NE(msg::debugString(problemAt(plan, "plates[1].labware").message).find("recipe.unknown_labware{labware=\"sbs-97\""), std::string::npos);
+    EXPECT_NE(problemAt(plan, "steps[1].volume_ul").message.id.find("plate.not_positive"), std::string::npos);
+    EXPECT_NE(msg::debugString(problemAt(plan, "steps[2].cycles").message).find("min=1, max=100"), std::string::npos);
     EXPECT_GE(countErrors(plan), 4);
 }
 
@@ -189,13 +190,13 @@ TEST(PlateRecipePlan, ATransferBiggerThanTheSyringeSplitsIntoRounds)
     EXPECT_DOUBLE_EQ(plan.total("reservoir", "A1")->aspiratedUl, 2400);
     // One well more than the syringe: refused, however it is split.
     r.steps[0].volumeUl = 1001;
-    EXPECT_NE(problemAt(planRecipe(r, context()), "steps[0].volume_ul").message.find("volume over capacity"), std::string::npos);
+    EXPECT_EQ(problemAt(planRecipe(r, context()), "steps[0].volume_ul").message.id, "recipe.volume_over_capacity");
 }
 
 TEST(PlateRecipePlan, DispensingNeedsLiquidInTheSyringe)
 {
     const RecipePlan plan = planRecipe(oneStep(StepType::Dispense, {"A1:A3"}, 10), context());
-    EXPECT_NE(problemAt(plan, "steps[0]").message.find("needs that much liquid in the syringe; it holds 0 µL"), std::string::npos);
+    EXPECT_NE(msg::debugString(problemAt(plan, "steps[0]").message).find("recipe.dispense_without_liquid{"), std::string::npos);
 }
 
 TEST(PlateRecipePlan, AnAirGapLeavesWithTheNextDispense)
@@ -253,23 +254,24 @@ TEST(PlateRecipePlan, MixWashWaitAndTouchOff)
     EXPECT_NEAR(t[3].xMm - t[4].xMm, 2.5, 1e-9);
     // A touch past the wall (a 96 well is 6.86 mm wide) is refused.
     r.steps[3].offsetMm = 4;
-    EXPECT_NE(problemAt(planRecipe(r, context()), "steps[3].offset_mm").message.find("past the wall"), std::string::npos);
+    EXPECT_NE(problemAt(planRecipe(r, context()), "steps[3].offset_mm").message.id.find("recipe.offset_past_wall"), std::string::npos);
     // An unknown station.
     r.steps[1].station = "sink";
-    EXPECT_EQ(problemAt(planRecipe(r, context()), "steps[1].station").message, "unknown station \"sink\" (the deck has wash, waste)");
+    EXPECT_EQ(msg::debugString(problemAt(planRecipe(r, context()), "steps[1].station").message),
+              "recipe.unknown_station{station=\"sink\", stations=\"wash, waste\"}");
 }
 
 TEST(PlateRecipePlan, HeightsAreCheckedAgainstThePlate)
 {
     Recipe r = oneStep(StepType::Aspirate, {"A1"}, 10);
     r.plates[0].safeZMm = 62;  // the 96 plate's top is at 75 − 14.22 = 60.78
-    EXPECT_NE(problemAt(planRecipe(r, context()), "plates[0].safe_z_mm").message.find("is not above the plate"), std::string::npos);
+    EXPECT_NE(problemAt(planRecipe(r, context()), "plates[0].safe_z_mm").message.id.find("recipe.safe_not_above_plate"), std::string::npos);
     r.plates[0].safeZMm = 55;
     r.plates[0].depthZMm = 72;  // the wells' bottoms are at 75 − 3.55 = 71.45
-    EXPECT_NE(problemAt(planRecipe(r, context()), "plates[0].depth_z_mm").message.find("below the bottom of the wells"),
+    EXPECT_NE(problemAt(planRecipe(r, context()), "plates[0].depth_z_mm").message.id.find("recipe.depth_below_bottom"),
               std::string::npos);
     r.plates[0].depthZMm = 50;
-    EXPECT_NE(problemAt(planRecipe(r, context()), "plates[0].depth_z_mm").message.find("must be below the safe height"),
+    EXPECT_NE(problemAt(planRecipe(r, context()), "plates[0].depth_z_mm").message.id.find("recipe.depth_not_below_safe"),
               std::string::npos);
 }
 
@@ -295,7 +297,7 @@ TEST(PlateRecipePlan, AWellOutsideTheTravelIsRefused)
     PlanContext c = context();
     c.calibration["1"] = PlateTransform::make(110, 8, 0);  // taught far right: column 12 at X 223
     const RecipePlan plan = planRecipe(oneStep(StepType::Aspirate, {"A1:A12"}, 5), c);
-    EXPECT_NE(problemAt(plan, "steps[0].wells").message.find("outside the analyzer's travel"), std::string::npos);
+    EXPECT_NE(problemAt(plan, "steps[0].wells").message.id.find("recipe.well_outside_travel"), std::string::npos);
 }
 
 TEST(PlateRecipePlan, The96WellSamplingRecipeEndsWithTheSumOfItsVolumes)

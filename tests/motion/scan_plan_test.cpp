@@ -1,5 +1,6 @@
 // What the scan plan's validator refuses, and how it says so: each problem names
 // the plan field (which the file reader and the CLI turn into a line or an option).
+#include "motion/message_print.h"
 #include "motion/plans/scan/scan_layout.h"
 #include "motion/plans/scan/scan_naming.h"
 
@@ -16,7 +17,7 @@ std::string problemAt(const std::vector<PlanProblem>& problems, const std::strin
 {
     for (const auto& p : problems)
         if (p.field == field)
-            return p.message;
+            return msg::debugString(p.message);
     return {};
 }
 
@@ -24,7 +25,7 @@ std::string all(const std::vector<PlanProblem>& problems)
 {
     std::string s;
     for (const auto& p : problems)
-        s += p.field + ": " + p.message + "\n";
+        s += p.field + ": " + msg::debugString(p.message) + "\n";
     return s;
 }
 
@@ -46,8 +47,8 @@ TEST(ScanPlan, OverlapOfAHundredPercentIsRefused)
     p.overlapX = 1.0;
     p.overlapY = -0.1;
     const auto problems = validate(p);
-    EXPECT_NE(problemAt(problems, "overlap[0]").find("from 0 to 0.9"), std::string::npos) << all(problems);
-    EXPECT_NE(problemAt(problems, "overlap[0]").find("got 1"), std::string::npos);
+    EXPECT_NE(problemAt(problems, "overlap[0]").find("scan.overlap_out_of_range{value=1, max=0.9}"), std::string::npos) << all(problems);
+    EXPECT_NE(problemAt(problems, "overlap[0]").find("value=1"), std::string::npos);
     EXPECT_FALSE(problemAt(problems, "overlap[1]").empty());
     EXPECT_TRUE(layoutScan(p).tiles.empty()) << "an invalid plan has no grid";
 }
@@ -60,7 +61,7 @@ TEST(ScanPlan, FieldLargerThanTheStageIsRefused)
     p.camera.fieldHeightMm = 5;
     const auto problems = validate(p, StageModel{});
     const std::string m = problemAt(problems, "camera.field_mm");
-    EXPECT_NE(m.find("larger than the stage's travel 100 × 100 mm"), std::string::npos) << all(problems);
+    EXPECT_NE(m.find("scan.field_larger_than_travel"), std::string::npos) << all(problems);
 }
 
 TEST(ScanPlan, ZeroSizeRegionsAreRefused)
@@ -68,16 +69,16 @@ TEST(ScanPlan, ZeroSizeRegionsAreRefused)
     ScanPlan p;
     p.region.cornerA = {10, 10};
     p.region.cornerB = {10, 30};
-    EXPECT_NE(problemAt(validate(p), "region.corners_mm").find("zero size"), std::string::npos);
+    EXPECT_NE(problemAt(validate(p), "region.corners_mm").find("scan.region.corners_zero_size"), std::string::npos);
     p.region.kind = RegionKind::CentreSize;
     p.region.widthMm = 5;
     p.region.heightMm = 0;
-    EXPECT_NE(problemAt(validate(p), "region.size_mm").find("zero size"), std::string::npos);
+    EXPECT_NE(problemAt(validate(p), "region.size_mm").find("scan.region.size_zero"), std::string::npos);
     p.region.kind = RegionKind::Polygon;
     p.region.vertices = {{0, 0}, {1, 1}, {2, 2}};
-    EXPECT_NE(problemAt(validate(p), "region.vertices_mm").find("zero area"), std::string::npos);
+    EXPECT_NE(problemAt(validate(p), "region.vertices_mm").find("scan.region.zero_area"), std::string::npos);
     p.region.vertices = {{0, 0}, {1, 1}};
-    EXPECT_NE(problemAt(validate(p), "region.vertices_mm").find("at least 3"), std::string::npos);
+    EXPECT_NE(problemAt(validate(p), "region.vertices_mm").find("scan.region.too_few_vertices"), std::string::npos);
 }
 
 TEST(ScanPlan, CrossedPolygonIsRefused)
@@ -85,7 +86,7 @@ TEST(ScanPlan, CrossedPolygonIsRefused)
     ScanPlan p;
     p.region.kind = RegionKind::Polygon;
     p.region.vertices = {{10, 10}, {20, 20}, {20, 10}, {10, 25}};  // a lopsided bow tie
-    EXPECT_NE(problemAt(validate(p), "region.vertices_mm").find("crosses"), std::string::npos);
+    EXPECT_NE(problemAt(validate(p), "region.vertices_mm").find("scan.region.self_intersecting"), std::string::npos);
     p.region.vertices = {{10, 10}, {20, 10}, {20, 20}, {10, 20}};
     EXPECT_TRUE(validate(p).empty()) << all(validate(p));
     p.region.vertices = {{10, 10}, {20, 10}, {15, 10}, {15, 20}};  // folds back along itself
@@ -99,7 +100,7 @@ TEST(ScanPlan, RegionBeyondTheTravelIsRefused)
     p.region.cornerB = {105, 20};
     EXPECT_TRUE(validate(p).empty()) << "on its own the plan is fine";
     const std::string m = problemAt(validate(p, StageModel{}), "region.corners_mm");
-    EXPECT_NE(m.find("beyond the stage's travel X 0 … 100"), std::string::npos) << m;
+    EXPECT_NE(m.find("scan.region_beyond_travel"), std::string::npos) << m;
 }
 
 TEST(ScanPlan, OvertravelOutsideTheTravelNamesTheTile)
@@ -112,7 +113,7 @@ TEST(ScanPlan, OvertravelOutsideTheTravelNamesTheTile)
     p.approach.unidirectional = true;
     p.approach.overtravelMm = 1.5;  // from the left: X = −0.5
     const std::string m = problemAt(validate(p, StageModel{}), "approach.overtravel_mm");
-    EXPECT_NE(m.find("the overtravel point before tile 1 (-0.5, 12.5) mm lies outside"), std::string::npos) << m;
+    EXPECT_NE(m.find("scan.overtravel_outside_travel{tile=1, x=-0.5 mm, y=12.5 mm"), std::string::npos) << m;
     p.approach.overtravelMm = 0.5;
     EXPECT_TRUE(validate(p, StageModel{}).empty()) << all(validate(p, StageModel{}));
 }
@@ -121,7 +122,7 @@ TEST(ScanPlan, SpeedAboveTheStageIsRefused)
 {
     ScanPlan p;
     p.speedMmS = 25;
-    EXPECT_NE(problemAt(validate(p, StageModel{}), "motion.speed_mm_s").find("top speed 20 mm/s"), std::string::npos);
+    EXPECT_NE(problemAt(validate(p, StageModel{}), "motion.speed_mm_s").find("max=20 mm/s"), std::string::npos);
 }
 
 TEST(ScanPlan, TooManyTilesIsRefusedBeforeAnythingIsBuilt)
@@ -132,7 +133,7 @@ TEST(ScanPlan, TooManyTilesIsRefusedBeforeAnythingIsBuilt)
     p.region.cornerA = {0, 0};
     p.region.cornerB = {100, 100};
     const std::string m = problemAt(validate(p), "camera.field_mm");
-    EXPECT_NE(m.find("tiles (at most 250000)"), std::string::npos) << m;
+    EXPECT_NE(m.find("max=250000"), std::string::npos) << m;
 }
 
 TEST(ScanPlan, EveryProblemIsReportedAtOnce)
@@ -170,7 +171,7 @@ TEST(ScanNaming, PatternsFijiCouldNotReadAreRefused)
     EXPECT_TRUE(checkFilePattern(""));
     EXPECT_FALSE(checkFilePattern("tile_{row}_{col}.tif"));
     const auto m = checkFilePattern("tile_{x}.tif");
-    EXPECT_NE(m->find("unknown placeholder {x}"), std::string::npos) << *m;
+    EXPECT_EQ(msg::debugString(*m), "scan.naming.unknown_placeholder{placeholder=\"{x}\"}");
 }
 
 TEST(ScanPlan, NamesOfOrdersAndCornersRoundTrip)
@@ -188,7 +189,7 @@ TEST(ScanPlan, AVanishingSpeedIsRefused)
     // estimate infinite.
     ScanPlan p;
     p.speedMmS = 1e-320;
-    EXPECT_NE(problemAt(validate(p), "motion.speed_mm_s").find("from 0.01 to 1000"), std::string::npos);
+    EXPECT_NE(problemAt(validate(p), "motion.speed_mm_s").find("min=0.01 mm/s, max=1000 mm/s"), std::string::npos);
     p.speedMmS = 10;
     p.compensation.enabled = true;
     EXPECT_TRUE(validate(p).empty()) << "the device's compensation is checked when the run starts" << all(validate(p));

@@ -1,6 +1,7 @@
 // Both tuning methods against the analytic phase crossover over a wide, seeded
 // population of FOPDT and lag plants (the first "must hold"), and the
 // classic describing-function estimate beside the refined one.
+#include "motion/message_print.h"
 #include "motion/control/tuning/model_tuning.h"
 
 #include <gtest/gtest.h>

@@ -4,6 +4,8 @@
 #include "widgets/joystick/joystick_pad.h"
 #include "widgets/joystick/travel_view.h"
 
+#include "widgets/wording/wording.h"
+
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -168,7 +170,7 @@ void JoystickScreen::refresh()
     const bool ready = m_client->isReady();
     const auto& st = m_client->status();
     const auto& id = m_client->identity();
-    QString state = dev::linkStateName(m_client->state());
+    QString state = words::term(dev::linkStateTerm(m_client->state()));
     if (ready && st.estop)
         state = tr("E-STOP active — press Reset to clear");
     m_state->setText(state);

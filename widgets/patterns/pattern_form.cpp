@@ -1,5 +1,7 @@
 #include "widgets/patterns/pattern_form.h"
 
+#include "widgets/wording/wording.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -318,7 +320,7 @@ void PatternForm::showProblems()
 {
     QStringList lines;
     for (const auto& q : motion::plans::validate(pattern()))
-        lines << QStringLiteral("%1: %2").arg(QString::fromStdString(q.field), QString::fromStdString(q.message));
+        lines << QStringLiteral("%1: %2").arg(QString::fromStdString(q.field), words::text(q.message));
     m_problems->setText(lines.join(QLatin1Char('\n')));
 }
 

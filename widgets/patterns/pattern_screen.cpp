@@ -9,6 +9,7 @@
 #include "widgets/patterns/pattern_form.h"
 #include "widgets/patterns/pattern_preview.h"
 
+#include <QFileInfo>
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
@@ -210,9 +211,10 @@ PatternScreen::PatternScreen(QVector<PatternInstrument> instruments, tele::Telem
             if (i == m_runOn)
                 onProgress(d, t);
         });
-        connect(r, &PatternRunner::message, this, [this, i](const QString& text, bool isProblem) {
+        connect(r, &PatternRunner::message, this, [this, i](const msg::Message& m, bool isProblem) {
             if (i != m_runOn)
                 return;
+            const QString text = words::text(m);
             m_status->setText(text);
             if (isProblem)
                 emit problem(QStringLiteral("%1: %2").arg(m_instruments[i].name, text));
@@ -320,7 +322,7 @@ void PatternScreen::replan()
     if (lim.size() >= 2) {
         if (auto v = motion::plans::outsideLimits(m_path, {lim[0].min, lim[1].min, lim[0].max, lim[1].max}))
             text += QStringLiteral("<br><span style='color:#b71c1c'>%1</span>")
-                        .arg(tr("Leaves the soft limits: %1").arg(QString::fromStdString(v->message)));
+                        .arg(tr("Leaves the soft limits: %1").arg(words::text(v->message)));
     }
     m_estimate->setText(text);
     updateButtons();
@@ -362,7 +364,9 @@ bool PatternScreen::run()
         return false;
     jobs::PatternRunner::Options o;
     o.zMm = m_form->pattern().zMm;
-    const QStringList problems = r->preflight(m_path, o);
+    QStringList problems;
+    for (const msg::Message& m : r->preflight(m_path, o))
+        problems << words::text(m);
     if (!problems.isEmpty()) {
         m_status->setText(problems.join(QLatin1Char('\n')));
         emit problem(QStringLiteral("%1: %2").arg(cur().name, problems.join(QLatin1Char(' '))));
@@ -421,7 +425,7 @@ void PatternScreen::abort()
 
 void PatternScreen::onRunnerState(PatternRunner::State s)
 {
-    QString text = PatternRunner::stateText(s);
+    QString text = words::term(PatternRunner::stateTerm(s));
     if (s == PatternRunner::State::Approaching)
         text = tr("Moving to the start…");
     if (s != PatternRunner::State::Interrupted && s != PatternRunner::State::Failed)
@@ -488,19 +492,33 @@ bool PatternScreen::exportRun(const QString& path, QString* error)
             *error = tr("There is no run to export yet.");
         return false;
     }
-    return files::savePatternRunCsv(path, m_instruments[m_runOn].runner->samples(), error);
+    msg::Message why;
+    if (files::savePatternRunCsv(path, m_instruments[m_runOn].runner->samples(), &why))
+        return true;
+    if (error)
+        *error = words::text(why);
+    return false;
 }
 
 bool PatternScreen::savePattern(const QString& path, QString* error)
 {
-    return files::savePatternFile(path, m_form->pattern(), error);
+    msg::Message why;
+    if (files::savePatternFile(path, m_form->pattern(), &why))
+        return true;
+    if (error)
+        *error = words::text(why);
+    return false;
 }
 
 bool PatternScreen::loadPattern(const QString& path, QString* error)
 {
     motion::plans::Pattern p;
-    if (!files::loadPatternFile(path, &p, error))
+    jsonio::Problems problems;
+    if (!files::loadPatternFile(path, &p, &problems)) {
+        if (error)
+            *error = words::fileProblems(problems, QFileInfo(path).fileName()).join(QLatin1Char('\n'));
         return false;
+    }
     setPattern(p);
     return true;
 }

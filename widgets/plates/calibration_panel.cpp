@@ -2,6 +2,8 @@
 
 #include "widgets/plates/jog_pad.h"
 
+#include "widgets/wording/wording.h"
+
 #include <QComboBox>
 #include <QDateTime>
 #include <QGroupBox>
@@ -266,12 +268,12 @@ void CalibrationPanel::refit()
             return;
     if (m_points.empty())
         return;
-    std::string error;
+    msg::Message error;
     const plates::Slot* slot = m_deck.slot(slotId().toStdString());
     const auto model = static_cast<plates::FitModel>(m_model->currentData().toInt());
     m_fit = plates::fitCalibration(m_points, model, &error, slot ? slot->rotationDeg : 0);
     if (!m_fit) {
-        m_result->setText(tr("No fit: %1").arg(QString::fromStdString(error)));
+        m_result->setText(tr("No fit: %1").arg(words::text(error)));
         return;
     }
     for (int r = 0; r < static_cast<int>(m_points.size()); ++r) {
@@ -289,7 +291,7 @@ void CalibrationPanel::refit()
                           .arg(plates::kResidualWarnMm));
     QStringList w;
     for (const auto& s : m_fit->warnings)
-        w << QString::fromStdString(s);
+        w << words::text(s);
     m_warnings->setText(w.join(QLatin1Char('\n')));
     m_save->setEnabled(true);
 }

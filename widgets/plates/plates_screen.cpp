@@ -12,6 +12,8 @@
 #include "widgets/plates/recipe_editor.h"
 #include "widgets/plates/run_panel.h"
 
+#include "widgets/wording/wording.h"
+
 #include <QComboBox>
 #include <QDateTime>
 #include <QDir>
@@ -163,11 +165,11 @@ PlatesScreen::PlatesScreen(dev::Instrument* analyzer, QWidget* parent)
     connect(m_run, &RunPanel::resumeFromLogRequested, this, &PlatesScreen::resumeFromLog);
     connect(m_run, &RunPanel::problem, this, &PlatesScreen::problem);
     connect(m_runner, &jobs::RecipeRunner::progressChanged, this, &PlatesScreen::refreshMap);
-    connect(m_runner, &jobs::RecipeRunner::message, this, [this](const QString& text, bool isProblem) {
+    connect(m_runner, &jobs::RecipeRunner::message, this, [this](const msg::Message& m, bool isProblem) {
         if (isProblem)
-            emit problem(text);
+            emit problem(words::text(m));
         else
-            emit note(text);
+            emit note(words::text(m));
     });
     m_logDir = QDir::tempPath();
     newRecipe();
@@ -190,15 +192,15 @@ void PlatesScreen::setCalibrationFile(const QString& path)
     m_calibrationFile = path;
     m_calibrations.clear();
     std::string text;
-    QString error;
+    msg::Message error;
     if (QFileInfo::exists(path)) {
         if (!files::readText(path, &text, &error)) {
-            emit problem(error);
+            emit problem(words::text(error));
         } else {
             const platefiles::CalibrationRead r = platefiles::parseCalibration(text);
             if (!r.ok())
                 emit problem(tr("the slot calibration %1 cannot be read; the slots use their nominal places:\n%2")
-                                 .arg(path, QString::fromStdString(r.problems.format(QFileInfo(path).fileName().toStdString())).trimmed()));
+                                 .arg(path, words::fileProblems(r.problems, QFileInfo(path).fileName()).join(QLatin1Char('\n'))));
             else
                 m_calibrations = r.calibrations;
         }
@@ -212,9 +214,9 @@ void PlatesScreen::saveCalibrations()
     if (m_calibrationFile.isEmpty())
         return;
     QDir().mkpath(QFileInfo(m_calibrationFile).absolutePath());
-    QString error;
+    msg::Message error;
     if (!files::writeAtomically(m_calibrationFile, platefiles::writeCalibration(m_deck.id, m_calibrations), &error))
-        emit problem(error);
+        emit problem(words::text(error));
     else
         emit note(tr("slot calibration saved to %1").arg(m_calibrationFile));
 }
@@ -239,7 +241,7 @@ bool PlatesScreen::openRecipe(const QString& path)
 {
     const platefiles::LoadedRecipe l = platefiles::loadRecipe(path, m_deck, m_calibrations);
     if (!l.readable) {
-        emit problem(tr("%1 cannot be opened:\n%2").arg(QFileInfo(path).fileName(), l.messages.join(QLatin1Char('\n'))));
+        emit problem(tr("%1 cannot be opened:\n%2").arg(QFileInfo(path).fileName(), words::fileProblems(l.problems).join(QLatin1Char('\n'))));
         return false;
     }
     m_editor->setRecipe(l.recipe, path);
@@ -251,9 +253,9 @@ bool PlatesScreen::openRecipe(const QString& path)
 
 bool PlatesScreen::saveRecipe(const QString& path)
 {
-    QString error;
+    msg::Message error;
     if (!files::writeAtomically(path, platefiles::writeRecipe(m_editor->recipe()), &error)) {
-        emit problem(error);
+        emit problem(words::text(error));
         return false;
     }
     m_editor->markSaved(path);
@@ -264,11 +266,14 @@ bool PlatesScreen::saveRecipe(const QString& path)
 
 plates::PlanContext PlatesScreen::context(QStringList* messages) const
 {
+    jsonio::FileProblems problems;
     plates::PlanContext c;
     // Times follow the analyzer's own planner limits once it has reported them.
     c.deck = jobs::deckWithDeviceMotion(m_deck, m_client->identity());
     c.calibration = platefiles::calibrationTransforms(m_calibrations);
-    platefiles::resolveLabware(m_editor->recipe(), baseDir(), c, messages);
+    platefiles::resolveLabware(m_editor->recipe(), baseDir(), c, &problems);
+    if (messages)
+        *messages << words::fileProblems(problems);
     return c;
 }
 
@@ -283,7 +288,7 @@ void PlatesScreen::revalidate()
     for (int i = 0; i < labwareMessages.size(); ++i)
         steps << -1;
     for (const auto& p : m_plan.problems) {
-        const QString line = QStringLiteral("%1: %2").arg(QString::fromStdString(p.path), QString::fromStdString(p.message));
+        const QString line = QStringLiteral("%1: %2").arg(QString::fromStdString(p.path), words::text(p.message));
         (p.warning ? warnings : errors) << line;
         int step = -1;
         if (p.path.rfind("steps[", 0) == 0)
@@ -433,10 +438,10 @@ bool PlatesScreen::runRecipe()
     if (st.axes.size() >= 4)
         start = {st.axes[0].commanded, st.axes[1].commanded, st.axes[2].commanded, st.axes[3].commanded};
     const plates::RecipePlan plan = plates::planRecipe(m_editor->recipe(), m_context, start);
-    QString error;
+    msg::Message error;
     const QString name = QString::fromStdString(m_editor->recipe().name.empty() ? "recipe" : m_editor->recipe().name);
     if (!m_runner->setPlan(plan, name, &error)) {
-        emit problem(error);
+        emit problem(words::text(error));
         return false;
     }
     double deepest = 0;
@@ -456,7 +461,7 @@ bool PlatesScreen::runRecipe()
     const QString log = QDir(m_logDir).filePath(
         QStringLiteral("%1-%2.run.jsonl").arg(safe, QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss-zzz"))));
     if (!m_runner->start(log, &error)) {
-        emit problem(error);
+        emit problem(words::text(error));
         return false;
     }
     showTab(QStringLiteral("run"));
@@ -469,9 +474,9 @@ void PlatesScreen::resumeFromLog()
     if (path.isEmpty())
         return;
     const plates::RecipePlan plan = plates::planRecipe(m_editor->recipe(), m_context, jobs::RecipeRunner::resumeStart(path, *m_client));
-    QString error;
+    msg::Message error;
     if (!m_runner->setPlan(plan, QString::fromStdString(m_editor->recipe().name), &error) || !m_runner->resumeFromLog(path, m_decide, &error)) {
-        emit problem(error);
+        emit problem(words::text(error));
         return;
     }
     showTab(QStringLiteral("run"));
@@ -483,20 +488,20 @@ void PlatesScreen::importLabware()
     if (from.isEmpty())
         return;
     std::string text;
-    QString error;
+    msg::Message error;
     if (!files::readText(from, &text, &error)) {
-        emit problem(error);
+        emit problem(words::text(error));
         return;
     }
     const platefiles::LabwareRead r = platefiles::parseLabware(text);
     if (!r.labware) {
         emit problem(tr("%1 is not a plate definition BenchPilot can use:\n%2")
-                         .arg(QFileInfo(from).fileName(), QString::fromStdString(r.problems.format(QFileInfo(from).fileName().toStdString())).trimmed()));
+                         .arg(QFileInfo(from).fileName(), words::fileProblems(r.problems, QFileInfo(from).fileName()).join(QLatin1Char('\n'))));
         return;
     }
     const QString to = QDir(baseDir()).filePath(QString::fromStdString(r.labware->id) + QStringLiteral(".labware.json"));
     if (!files::writeAtomically(to, platefiles::writeLabware(*r.labware), &error)) {
-        emit problem(error);
+        emit problem(words::text(error));
         return;
     }
     const std::string ref = m_editor->path().isEmpty() ? to.toStdString() : QFileInfo(to).fileName().toStdString();

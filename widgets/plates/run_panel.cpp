@@ -1,6 +1,8 @@
 #include "widgets/plates/run_panel.h"
 #include "widgets/plates/step_texts.h"
 
+#include "widgets/wording/wording.h"
+
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -87,14 +89,14 @@ RunPanel::RunPanel(jobs::RecipeRunner* runner, QWidget* parent) : QWidget(parent
     connect(m_pause, &QPushButton::clicked, m_runner, &jobs::RecipeRunner::pause);
     connect(m_abort, &QPushButton::clicked, m_runner, &jobs::RecipeRunner::abort);
     connect(m_resume, &QPushButton::clicked, this, [this] {
-        QString error;
+        msg::Message error;
         if (!m_runner->resume(m_decide, &error))
-            emit problem(error);
+            emit problem(words::text(error));
     });
     connect(m_runner, &jobs::RecipeRunner::stateChanged, this, &RunPanel::refresh);
     connect(m_runner, &jobs::RecipeRunner::progressChanged, this, &RunPanel::refresh);
-    connect(m_runner, &jobs::RecipeRunner::message, this, [this](const QString& text, bool problemText) {
-        auto* item = new QListWidgetItem(QStringLiteral("%1  %2").arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), text), m_messages);
+    connect(m_runner, &jobs::RecipeRunner::message, this, [this](const msg::Message& m, bool problemText) {
+        auto* item = new QListWidgetItem(QStringLiteral("%1  %2").arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), words::text(m)), m_messages);
         if (problemText)
             item->setForeground(QColor(0xc6, 0x28, 0x28));
         m_messages->scrollToBottom();
@@ -135,7 +137,7 @@ void RunPanel::setPlan(const plates::RecipePlan& plan, bool runnable, const QStr
         const QStringList cells = {QString::number(op.index + 1),
                                    QString::number(op.step + 1),
                                    opTitle(op),
-                                   QString::fromStdString(op.where()),
+                                   words::text(op.where()),
                                    QString::number(op.at.x, 'f', 2),
                                    QString::number(op.at.y, 'f', 2),
                                    op.pumpNetUl == 0 ? QStringLiteral("0") : QString::number(op.pumpNetUl, 'f', 2),
@@ -163,8 +165,8 @@ void RunPanel::refresh()
     m_abort->setEnabled(s == RunState::Running || s == RunState::Pausing || s == RunState::Paused);
     m_progress->setValue(static_cast<int>(std::lround(p.fraction * 1000)));
     m_progress->setFormat(tr("%1 of %2 wells").arg(p.opsDone).arg(p.opsTotal));
-    m_state->setText(tr("State: %1").arg(jobs::runStateName(s)));
-    m_current->setText(p.currentOp >= 0 && s != RunState::Idle ? tr("Current: %1").arg(p.currentLabel) : tr("Current: —"));
+    m_state->setText(tr("State: %1").arg(words::term(jobs::runStateTerm(s))));
+    m_current->setText(p.currentOp >= 0 && s != RunState::Idle ? tr("Current: %1").arg(words::text(p.currentLabel)) : tr("Current: —"));
     m_times->setText(s == RunState::Idle ? QString()
                                          : tr("Elapsed %1 · ETA %2").arg(duration(p.elapsedS), s == RunState::Finished ? tr("done") : duration(p.etaS)));
     if (p.currentOp >= 0 && p.currentOp < m_table->rowCount() && busy)

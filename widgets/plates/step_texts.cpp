@@ -1,5 +1,7 @@
 #include "widgets/plates/step_texts.h"
 
+#include "widgets/wording/wording.h"
+
 #include <QCoreApplication>
 
 namespace ui {
@@ -42,7 +44,7 @@ QString opTitle(const plates::PlanOp& op)
     case StepType::Wait: return StepTexts::tr("Wait %1 s").arg(number(op.moves.empty() ? 0 : op.moves.front().seconds));
     case StepType::TouchOff: return StepTexts::tr("Touch off in %1").arg(where);
     }
-    return QString::fromStdString(op.label());
+    return words::text(op.label());
 }
 
 } // namespace ui

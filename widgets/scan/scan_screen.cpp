@@ -7,6 +7,8 @@
 #include "widgets/scan/scan_plan_form.h"
 #include "widgets/scan/scan_stage_map.h"
 
+#include "widgets/wording/wording.h"
+
 #include <QDir>
 #include <QFileInfo>
 #include <QHBoxLayout>
@@ -127,7 +129,7 @@ ScanScreen::ScanScreen(dev::Instrument* stage, QWidget* parent)
         m_map->setProgress(m_taken, m_runner->isActive() ? m_runner->currentTile() : -1);
     });
     connect(m_runner, &ScanRunner::triggered, this, [this](int tile, quint64) { m_map->setProgress(m_taken, tile); });
-    connect(m_runner, &ScanRunner::problem, this, &ScanScreen::problem);
+    connect(m_runner, &ScanRunner::problem, this, [this](const msg::Message& m) { emit problem(words::text(m)); });
     connect(m_runner, &ScanRunner::finished, this, [this](const QStringList& exports) {
         emit notice(tr("Scan finished: %1 tiles taken. Exports written to %2.").arg(m_runner->totalTiles()).arg(m_runner->folder()));
         (void)exports;
@@ -254,9 +256,9 @@ void ScanScreen::setOutputFolder(const QString& folder) { m_folder->setText(fold
 bool ScanScreen::openPlan(const QString& path)
 {
     ScanPlan p;
-    QString error;
-    if (!scanfile::loadPlan(path, &p, &error)) {
-        emit problem(tr("Cannot open the plan:\n%1").arg(error));
+    jsonio::Problems problems;
+    if (!scanfile::loadPlan(path, &p, &problems)) {
+        emit problem(tr("Cannot open the plan:\n%1").arg(words::fileProblems(problems, QFileInfo(path).fileName()).join(QLatin1Char('\n'))));
         return false;
     }
     setPlan(p);
@@ -269,9 +271,9 @@ bool ScanScreen::openPlan(const QString& path)
 
 bool ScanScreen::savePlan(const QString& path)
 {
-    QString error;
+    msg::Message error;
     if (!scanfile::savePlan(path, plan(), &error)) {
-        emit problem(error);
+        emit problem(words::text(error));
         return false;
     }
     emit notice(tr("Saved the plan to %1.").arg(path));
@@ -315,7 +317,7 @@ void ScanScreen::replan()
     if (!m_form->polygonError().isEmpty())
         lines << tr("Polygon: %1").arg(m_form->polygonError());
     for (const auto& pr : problems)
-        lines << QString::fromStdString(pr.field + ": " + pr.message);
+        lines << QStringLiteral("%1: %2").arg(QString::fromStdString(pr.field), words::text(pr.message));
     m_valid = lines.isEmpty();
     m_layout = m_valid ? layoutScan(p) : ScanLayout{};
     m_estimate = m_valid ? estimateScan(p, m_layout, stageModel()) : ScanEstimate{};
@@ -388,12 +390,12 @@ void ScanScreen::updateRunUi()
         text = tr("Ready. The run log and exports go to the output folder.");
     else if (active)
         text = tr("%1 · tile %2 of %3 · about %4 left")
-                   .arg(ScanRunner::stateName(st))
+                   .arg(words::term(ScanRunner::stateTerm(st)))
                    .arg(m_runner->currentTile() + 1)
                    .arg(m_runner->totalTiles())
                    .arg(duration(m_runner->etaS()));
     else
-        text = tr("%1 · %2 of %3 tiles taken").arg(ScanRunner::stateName(st)).arg(m_runner->takenTiles()).arg(m_runner->totalTiles());
+        text = tr("%1 · %2 of %3 tiles taken").arg(words::term(ScanRunner::stateTerm(st))).arg(m_runner->takenTiles()).arg(m_runner->totalTiles());
     m_runState->setText(text);
 }
 
@@ -422,16 +424,16 @@ bool ScanScreen::run()
     const std::uint64_t fingerprint = layoutFingerprint(p, m_layout);
     const bool sameRun = m_preparedFingerprint == fingerprint && m_preparedFolder == folder && m_runner->totalTiles() > 0;
     if (!sameRun || m_runner->state() == ScanRunner::State::Finished) {
-        QString error;
+        msg::Message error;
         ScanRunner::Refusal why = ScanRunner::Refusal::None;
         if (!m_runner->prepare(p, folder, false, &error, &why)) {
             if (why != ScanRunner::Refusal::OtherScansLog
-                || !confirm(tr("%1\n\nStart this scan anew in that folder? The old run log is kept under another name.").arg(error))) {
-                emit problem(error);
+                || !confirm(tr("%1\n\nStart this scan anew in that folder? The old run log is kept under another name.").arg(words::text(error)))) {
+                emit problem(words::text(error));
                 return false;
             }
             if (!m_runner->prepare(p, folder, true, &error)) {
-                emit problem(error);
+                emit problem(words::text(error));
                 return false;
             }
         }
@@ -439,9 +441,9 @@ bool ScanScreen::run()
             if (!confirm(tr("Every tile of this scan is already taken in %1. Take them all again? The old run log is kept "
                             "under another name.").arg(folder)))
                 return false;
-            QString again;
+            msg::Message again;
             if (!m_runner->prepare(p, folder, true, &again)) {
-                emit problem(again);
+                emit problem(words::text(again));
                 return false;
             }
         }
@@ -449,7 +451,9 @@ bool ScanScreen::run()
         m_preparedFolder = folder;
         replan();
     }
-    const QStringList blockers = m_runner->preflight();
+    QStringList blockers;
+    for (const msg::Message& m : m_runner->preflight())
+        blockers << words::text(m);
     if (!blockers.isEmpty()) {
         emit problem(tr("The scan cannot start: %1").arg(blockers.join(QStringLiteral("; "))));
         return false;
@@ -464,9 +468,9 @@ bool ScanScreen::run()
                                     .arg(m_layout.path.front().target.xMm, 0, 'f', 2)
                                     .arg(m_layout.path.front().target.yMm, 0, 'f', 2)))
         return false;
-    QString error;
+    msg::Message error;
     if (!m_runner->start(&error)) {
-        emit problem(error);
+        emit problem(words::text(error));
         return false;
     }
     if (taken > 0)
@@ -486,14 +490,14 @@ bool ScanScreen::exportFiles()
     }
     const ScanPlan p = plan();
     QStringList written;
-    QString error;
+    msg::Message error;
     // The run's measured positions when this plan ran into this folder, else the planned ones.
     const bool measured = m_preparedFingerprint == layoutFingerprint(p, m_layout) && m_preparedFolder == outputFolder()
         && m_runner->takenTiles() > 0;
     const bool ok = measured ? m_runner->writeExports(&written, &error)
                              : scanfile::writeExports(outputFolder(), p, m_layout, scanfile::plannedRecords(p, m_layout), &written, &error);
     if (!ok) {
-        emit problem(tr("Export failed: %1").arg(error));
+        emit problem(tr("Export failed: %1").arg(words::text(error)));
         return false;
     }
     emit notice(measured ? tr("Exported %1 tiles with the positions measured so far to %2.").arg(m_layout.tiles.size()).arg(outputFolder())

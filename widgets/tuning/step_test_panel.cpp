@@ -1,6 +1,6 @@
 #include "widgets/tuning/step_test_panel.h"
 
-#include "device/jobs/tuning/tuning_words.h"
+#include "widgets/wording/wording.h"
 #include "widgets/tuning/response_plot.h"
 
 #include <QComboBox>
@@ -122,7 +122,7 @@ void StepTestPanel::addResult(const motion::control::Record& r, const motion::co
                               metricText(m.iae * k),
                               metricText(m.ise * k * k),
                               metricText(m.peakOutput * k),
-                              mm ? (std::isnan(in5) ? tr("never") : metricText(in5 * 1000)) : dev::endReasonText(r.reason)};
+                              mm ? (std::isnan(in5) ? tr("never") : metricText(in5 * 1000)) : words::term(motion::control::endReasonTerm(r.reason))};
     for (int row = 0; row < 8; ++row) {
         auto* item = new QTableWidgetItem(cells[row]);
         item->setToolTip(legend);

@@ -8,8 +8,11 @@
 #include "widgets/tuning/step_test_panel.h"
 #include "widgets/tuning/zn_panel.h"
 
+#include "widgets/wording/wording.h"
+
 #include <QComboBox>
 #include <QDir>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -97,20 +100,20 @@ TuningScreen::TuningScreen(tele::TelemetryHub* hub, QWidget* parent) : QWidget(p
 
     m_runner = new dev::TuningRunner(this);
     connect(m_runner, &dev::TuningRunner::stateChanged, this, &TuningScreen::onRunnerState);
-    connect(m_runner, &dev::TuningRunner::progress, this, [this](double f, const QString& text) {
+    connect(m_runner, &dev::TuningRunner::progress, this, [this](double f, const msg::Message& text) {
         m_progress->setValue(static_cast<int>(std::lround(1000 * f)));
-        say(text);
+        say(words::text(text));
     });
-    connect(m_runner, &dev::TuningRunner::message, this, [this](const QString& m) { say(m, true); });
-    connect(m_runner, &dev::TuningRunner::finished, this, &TuningScreen::onFinished);
-    connect(m_runner, &dev::TuningRunner::recordArrived, this, [this](const Record& r, const QString& label, int kind) {
+    connect(m_runner, &dev::TuningRunner::message, this, [this](const msg::Message& m) { say(words::text(m), true); });
+    connect(m_runner, &dev::TuningRunner::finished, this, [this](bool ok, const msg::Message& m) { onFinished(ok, words::text(m)); });
+    connect(m_runner, &dev::TuningRunner::recordArrived, this, [this](const Record& r, const msg::Message& label, int kind) {
         // The trials and the relay's own cycle; forced runs are points on a frequency
         // response, not something to watch.
         if (kind < 2)
-            m_zn->showRun(r, label);
+            m_zn->showRun(r, words::text(label));
     });
-    connect(m_runner, &dev::TuningRunner::stepTestDone, this, [this](const Record& r, const StepMetrics& m, const QString& label) {
-        m_steps->addResult(r, m, QStringLiteral("%1 (%2)").arg(label, describeGains(m_runGains, m_gains->periodS())));
+    connect(m_runner, &dev::TuningRunner::stepTestDone, this, [this](const Record& r, const StepMetrics& m, const msg::Message& label) {
+        m_steps->addResult(r, m, QStringLiteral("%1 (%2)").arg(words::text(label), describeGains(m_runGains, m_gains->periodS())));
     });
     connect(m_runner, &dev::TuningRunner::ultimateFound, this, [this](double, double) {
         m_lastResult = m_runner->result();
@@ -150,7 +153,8 @@ TuningScreen::TuningScreen(tele::TelemetryHub* hub, QWidget* parent) : QWidget(p
     m_liveTimer.setInterval(100);
     connect(&m_liveTimer, &QTimer::timeout, this, &TuningScreen::drawLive);
     if (m_hub)
-        connect(m_hub, &tele::TelemetryHub::subscriptionChanged, this, [this](int instrument, int rateHz, const QString& note) {
+        connect(m_hub, &tele::TelemetryHub::subscriptionChanged, this, [this](int instrument, int rateHz, const msg::Message& m) {
+            const QString note = words::text(m);
             const Choice* c = choice();
             if (!c || c->instrument < 0 || m_instruments[c->instrument].index != instrument || !m_liveTimer.isActive())
                 return;
@@ -173,9 +177,9 @@ bool TuningScreen::setModelPlant(const QString& spec, QString* error)
 {
     const auto p = parsePlant(spec.toStdString());
     if (!p) {
-        m_plantError->setText(QString::fromStdString(p.error));
+        m_plantError->setText(words::text(p.error));
         if (error)
-            *error = QString::fromStdString(p.error);
+            *error = words::text(p.error);
         return false;
     }
     m_plantError->clear();
@@ -206,13 +210,13 @@ void TuningScreen::onTargetChosen()
         m_steps->setUnit(QString());
         m_zn->setUnit(QString());
         m_gains->setTarget(QString::fromStdString(m_plantSpec.text()), m_plantSpec.periodS, false, m_modelGains, tr("model defaults"));
-        const std::string why = whyNoUltimateGain(m_plantSpec);
+        const msg::Message why = whyNoUltimateGain(m_plantSpec);
         if (!why.empty())
-            m_zn->clearResult(tr("This plant cannot be tuned by Ziegler–Nichols: %1.").arg(QString::fromStdString(why)));
+            m_zn->clearResult(tr("This plant cannot be tuned by Ziegler–Nichols: %1.").arg(words::text(why)));
     } else {
         Instrument* in = instrumentOf(*c);
         auto target = std::make_unique<dev::InstrumentTarget>(in->tuning, c->axis, in->name);
-        connect(target.get(), &dev::TuningTarget::runProgress, this, [this](double, const QString& what) { say(what); });
+        connect(target.get(), &dev::TuningTarget::runProgress, this, [this](double, const msg::Message& what) { say(words::text(what)); });
         connect(target.get(), &dev::TuningTarget::testRunning, this, [this](bool running) {
             m_deviceTestRunning = running;
             updateLiveWant();
@@ -242,7 +246,7 @@ void TuningScreen::readGains()
         if (!now || now->name != name)
             return;  // another target was chosen meanwhile
         if (e) {
-            self->m_gains->clearTarget(e->message);
+            self->m_gains->clearTarget(words::text(e->message));
             return;
         }
         if (auto* t = dynamic_cast<dev::InstrumentTarget*>(self->m_targetObj.get()))
@@ -278,7 +282,7 @@ void TuningScreen::applyGains(const DiscreteGains& g, bool save, const QString& 
         if (e) {
             --self->m_ownGainChanges;  // refused: no announcement will come
             // The device's own reason ("… the previous ones stay"); the editors keep the rejected set to fix.
-            self->say(e->message, true);
+            self->say(words::text(e->message), true);
             return;
         }
         if (self->currentTarget() == name)
@@ -308,7 +312,7 @@ bool TuningScreen::runStepTest()
         s.runS = std::min(env.maxDurationS * 0.99, m_haveResult ? 30 * m_lastResult.tuS : 20.0);
     }
     m_runGains = s.gains;
-    return m_runner->startStepTest(m_targetObj.get(), s, tr("step %1").arg(m_steps->runs() + 1));
+    return m_runner->startStepTest(m_targetObj.get(), s, msg::make("tuning.label.step", {msg::integer("step", m_steps->runs() + 1, msg::Unit::None)}));
 }
 
 bool TuningScreen::startAssistant()
@@ -437,9 +441,9 @@ bool TuningScreen::saveResults(const QString& given)
         path = m_chooser(tr("Save tuning results"), tr("Tuning results (*.tuning.json)"), true);
     if (path.isEmpty())
         return false;
-    QString error;
+    msg::Message error;
     if (!files::saveTuningFile(path, m_lastResult, &error)) {
-        say(error, true);
+        say(words::text(error), true);
         return false;
     }
     say(tr("tuning results saved to %1").arg(QDir::toNativeSeparators(path)));
@@ -453,10 +457,10 @@ bool TuningScreen::loadResults(const QString& given)
         path = m_chooser(tr("Open tuning results"), tr("Tuning results (*.tuning.json)"), false);
     if (path.isEmpty())
         return false;
-    QString error;
-    const auto r = files::loadTuningFile(path, &error);
+    jsonio::Problems problems;
+    const auto r = files::loadTuningFile(path, &problems);
     if (!r) {
-        say(error, true);
+        say(words::fileProblems(problems, QFileInfo(path).fileName()).join(QLatin1Char('\n')), true);
         return false;
     }
     m_lastResult = *r;

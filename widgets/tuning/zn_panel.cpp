@@ -1,6 +1,6 @@
 #include "widgets/tuning/zn_panel.h"
 
-#include "device/jobs/tuning/tuning_words.h"
+#include "widgets/wording/wording.h"
 #include "motion/control/tuning/tuning_rules.h"
 #include "widgets/tuning/gains_panel.h"
 #include "widgets/tuning/response_plot.h"
@@ -110,7 +110,7 @@ ZnPanel::ZnPanel(QWidget* parent) : QWidget(parent)
     m_verify->setObjectName(QStringLiteral("verifyRule"));
     m_verify->addItem(tr("no verification"), QString());
     for (const auto& r : motion::control::tuningRules())
-        m_verify->addItem(tr(r.name), QString::fromLatin1(r.id));
+        m_verify->addItem(words::term(std::string("tuning.rule.") + r.id), QString::fromLatin1(r.id));
     m_verify->setCurrentIndex(m_verify->findData(QStringLiteral("zn-pid")));
     verifyForm->addRow(tr("Verify with"), m_verify);
     left->addLayout(verifyForm);
@@ -252,7 +252,7 @@ void ZnPanel::showResult(const motion::control::TuningResult& r)
         const auto& v = *r.verification;
         const auto* rule = motion::control::findRule(v.rule);
         text += tr("<br>Verification with %1: overshoot %2 %, %3")
-                    .arg(rule ? tr(rule->name) : QString::fromStdString(v.rule), ruleNumber(v.metrics.overshootPct), dev::outcomeText(v.outcome));
+                    .arg(rule ? words::term(std::string("tuning.rule.") + rule->id) : QString::fromStdString(v.rule), ruleNumber(v.metrics.overshootPct), words::tuningOutcome(v.outcome));
         if (r.unit == "mm")
             text += v.settledInside5umS >= 0 ? tr(", inside seed 002's ±5 µm from %1 ms").arg(ruleNumber(v.settledInside5umS * 1000))
                                              : tr(", <b>never inside ±5 µm</b>");
@@ -264,14 +264,14 @@ void ZnPanel::showResult(const motion::control::TuningResult& r)
         const auto d = motion::control::toDiscrete(c, r.controlPeriodS);
         const int row = m_rules->rowCount();
         m_rules->insertRow(row);
-        const QString cells[8] = {tr(rule.name), ruleNumber(c.kp), ruleNumber(c.kiPerS), ruleNumber(c.kdS), ruleNumber(d.kp), ruleNumber(d.ki), ruleNumber(d.kd),
+        const QString cells[8] = {words::term(std::string("tuning.rule.") + rule.id), ruleNumber(c.kp), ruleNumber(c.kiPerS), ruleNumber(c.kdS), ruleNumber(d.kp), ruleNumber(d.ki), ruleNumber(d.kd),
                                   tr(rule.source)};
         for (int col = 0; col < 8; ++col)
             m_rules->setItem(row, col, new QTableWidgetItem(cells[col]));
         auto* use = new QPushButton(tr("Use these"), m_rules);
         use->setObjectName(QStringLiteral("use_%1").arg(QLatin1String(rule.id)));
         const QString id = QString::fromLatin1(rule.id);
-        const QString source = tr("Z-N %1: %2").arg(r.method == "relay" ? tr("relay") : tr("ultimate gain"), tr(rule.name));
+        const QString source = tr("Z-N %1: %2").arg(r.method == "relay" ? tr("relay") : tr("ultimate gain"), words::term(std::string("tuning.rule.") + rule.id));
         connect(use, &QPushButton::clicked, this, [this, id, d, source] { emit useRule(id, d, source); });
         use->setMaximumHeight(m_rules->verticalHeader()->defaultSectionSize() - 2);
         m_rules->setCellWidget(row, 8, use);

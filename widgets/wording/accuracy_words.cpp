@@ -1,299 +1,97 @@
-// Words for the accuracy bench (issue 18): ids accuracy.*, compensation.*, file.*
-// and gauge.*, and the terms direction.* and rotation.* (docs/accuracy.md, appendix).
+// Words for the accuracy.*, compensation.*, direction.*, rotation.* ids (docs/accuracy.md): one row per id, the
+// English source with %1, %2 … for the arguments named beside it (word_table.h).
 #include "widgets/wording/areas.h"
-#include "widgets/wording/wording.h"
+#include "widgets/wording/word_table.h"
 
 #include <QCoreApplication>
 
 namespace words::areas {
 namespace {
 
-class AccuracyWords {
-    Q_DECLARE_TR_FUNCTIONS(words::AccuracyWords)
-public:
-    static QString accuracy(const msg::Message& m);
-    static QString run(const msg::Message& m);
-    static QString files(const msg::Message& m);
-    static QString compensation(const msg::Message& m);
-    static QString gauge(const msg::Message& m);
-    static QString term(const std::string& id);
+// clang-format off
+const Row kRows[] = {
+    {"accuracy.value_not_finite", QT_TRANSLATE_NOOP3("words::AccuracyWords", "must be a number (not NaN or infinite)", "accuracy.value_not_finite")},
+    {"accuracy.value_below", QT_TRANSLATE_NOOP3("words::AccuracyWords", "is %1, below the least allowed %2", "accuracy.value_below"), "value,min"},
+    {"accuracy.value_above", QT_TRANSLATE_NOOP3("words::AccuracyWords", "is %1, above the most allowed %2", "accuracy.value_above"), "value,max"},
+    {"accuracy.value_not_positive", QT_TRANSLATE_NOOP3("words::AccuracyWords", "must be above 0 (is %1)", "accuracy.value_not_positive"), "value"},
+    {"accuracy.axis_name_invalid", QT_TRANSLATE_NOOP3("words::AccuracyWords", "\"%1\" is not an axis name: one capital letter, such as X", "accuracy.axis_name_invalid"), "axis"},
+    {"accuracy.no_targets", QT_TRANSLATE_NOOP3("words::AccuracyWords", "no targets: give a list of targets or a start, end and count", "accuracy.no_targets")},
+    {"accuracy.targets_and_grid", QT_TRANSLATE_NOOP3("words::AccuracyWords", "give either a list of targets or a grid, not both", "accuracy.targets_and_grid")},
+    {"accuracy.too_few_targets", QT_TRANSLATE_NOOP3("words::AccuracyWords", "%1 targets: a positioning test needs at least %2", "accuracy.too_few_targets"), "count,min"},
+    {"accuracy.fewer_targets_than_iso", QT_TRANSLATE_NOOP3("words::AccuracyWords", "%1 targets: ISO 230-2 recommends at least %2", "accuracy.fewer_targets_than_iso"), "count,recommended"},
+    {"accuracy.targets_not_increasing", QT_TRANSLATE_NOOP3("words::AccuracyWords", "target %1 does not come after %2: targets must increase", "accuracy.targets_not_increasing"), "value,previous"},
+    {"accuracy.target_below_limit", QT_TRANSLATE_NOOP3("words::AccuracyWords", "target %1 is below the soft limit %2", "accuracy.target_below_limit"), "value,limit"},
+    {"accuracy.target_above_limit", QT_TRANSLATE_NOOP3("words::AccuracyWords", "target %1 is above the soft limit %2", "accuracy.target_above_limit"), "value,limit"},
+    {"accuracy.grid_end_not_after_start", QT_TRANSLATE_NOOP3("words::AccuracyWords", "the grid ends at %1, not after its start %2", "accuracy.grid_end_not_after_start"), "end,start"},
+    {"accuracy.grid_spacing_too_small", QT_TRANSLATE_NOOP3("words::AccuracyWords", "targets %1 apart are too close: at least %2", "accuracy.grid_spacing_too_small"), "spacing,min"},
+    {"accuracy.no_overrun", QT_TRANSLATE_NOOP3("words::AccuracyWords", "no overrun: the drive reverses at the end targets, so their readings include the reversal", "accuracy.no_overrun")},
+    {"accuracy.overrun_below_limit", QT_TRANSLATE_NOOP3("words::AccuracyWords", "the overrun goes to %1, below the soft limit %2", "accuracy.overrun_below_limit"), "position,limit"},
+    {"accuracy.overrun_above_limit", QT_TRANSLATE_NOOP3("words::AccuracyWords", "the overrun goes to %1, above the soft limit %2", "accuracy.overrun_above_limit"), "position,limit"},
+    {"accuracy.too_few_cycles", QT_TRANSLATE_NOOP3("words::AccuracyWords", "%1 cycles: at least %2 are needed to see a spread", "accuracy.too_few_cycles"), "count,min"},
+    {"accuracy.fewer_cycles_than_iso", QT_TRANSLATE_NOOP3("words::AccuracyWords", "%1 cycles: ISO 230-2 recommends %2", "accuracy.fewer_cycles_than_iso"), "count,recommended"},
+    {"accuracy.settle_timeout_below_window", QT_TRANSLATE_NOOP3("words::AccuracyWords", "the settle timeout %1 is shorter than its window %2", "accuracy.settle_timeout_below_window"), "timeout,window"},
+    {"accuracy.duplicate_reading", QT_TRANSLATE_NOOP3("words::AccuracyWords", "a second reading at %1 %2 in cycle %3 (the first is reading %4)", "accuracy.duplicate_reading"), "target,direction,cycle,first"},
+    {"accuracy.direction_missing", QT_TRANSLATE_NOOP3("words::AccuracyWords", "no %1 readings at %2, though other targets have them", "accuracy.direction_missing"), "direction,target"},
+    {"accuracy.cycle_counts_differ", QT_TRANSLATE_NOOP3("words::AccuracyWords", "%1 readings at %2 %3, where the others have %4", "accuracy.cycle_counts_differ"), "count,target,direction,expected"},
+    {"accuracy.statistics_incomplete", QT_TRANSLATE_NOOP3("words::AccuracyWords", "the table's row for %1 lacks a mean or a standard deviation", "accuracy.statistics_incomplete"), "target"},
+    {"accuracy.reading_count_wrong", QT_TRANSLATE_NOOP3("words::AccuracyWords", "%1 readings, where the test has %2", "accuracy.reading_count_wrong"), "count,expected"},
+    {"accuracy.reading_not_in_plan", QT_TRANSLATE_NOOP3("words::AccuracyWords", "a reading at %1 %2 in cycle %3, which the test does not have", "accuracy.reading_not_in_plan"), "target,direction,cycle"},
+    {"accuracy.reading_missing", QT_TRANSLATE_NOOP3("words::AccuracyWords", "no reading at %1 %2 in cycle %3", "accuracy.reading_missing"), "target,direction,cycle"},
+    {"accuracy.xy.point_off_line", QT_TRANSLATE_NOOP3("words::AccuracyWords", "this target is %1 off the line through the first and last (at most %2)", "accuracy.xy.point_off_line"), "distance,max"},
+    {"accuracy.xy.no_such_point", QT_TRANSLATE_NOOP3("words::AccuracyWords", "reading for target %1, but the line has %2 targets", "accuracy.xy.no_such_point"), "index,count"},
+    {"accuracy.xy.axis_does_not_move", QT_TRANSLATE_NOOP3("words::AccuracyWords", "%1 does not move along this line: it is not evaluated", "accuracy.xy.axis_does_not_move"), "axis"},
+    {"accuracy.circle.axes_invalid", QT_TRANSLATE_NOOP3("words::AccuracyWords", "\"%1\" is not a plane: two different axis letters, such as XY", "accuracy.circle.axes_invalid"), "axes"},
+    {"accuracy.circle.below_limit", QT_TRANSLATE_NOOP3("words::AccuracyWords", "the circle reaches %1 = %2, below the soft limit %3", "accuracy.circle.below_limit"), "axis,value,limit"},
+    {"accuracy.circle.above_limit", QT_TRANSLATE_NOOP3("words::AccuracyWords", "the circle reaches %1 = %2, above the soft limit %3", "accuracy.circle.above_limit"), "axis,value,limit"},
+    {"accuracy.circle.no_direction", QT_TRANSLATE_NOOP3("words::AccuracyWords", "choose clockwise, counter-clockwise or both", "accuracy.circle.no_direction")},
+    {"accuracy.circle.no_runs", QT_TRANSLATE_NOOP3("words::AccuracyWords", "no circle was sampled", "accuracy.circle.no_runs")},
+    {"accuracy.circle.direction_twice", QT_TRANSLATE_NOOP3("words::AccuracyWords", "two %1 runs: one of each direction", "accuracy.circle.direction_twice"), "rotation"},
+    {"accuracy.circle.too_few_samples", QT_TRANSLATE_NOOP3("words::AccuracyWords", "%1 samples of a circle: at least %2", "accuracy.circle.too_few_samples"), "count,min"},
+    {"accuracy.circle.incomplete_revolution", QT_TRANSLATE_NOOP3("words::AccuracyWords", "the samples leave a gap of %1 in the revolution (at most %2)", "accuracy.circle.incomplete_revolution"), "gap,max"},
+    {"accuracy.circle.no_circle", QT_TRANSLATE_NOOP3("words::AccuracyWords", "the %1 samples do not lie on a circle", "accuracy.circle.no_circle"), "rotation"},
+    {"accuracy.result.figure_disagrees", QT_TRANSLATE_NOOP3("words::AccuracyWords", "%1 is written as %2, but the file's own table gives %3", "accuracy.result.figure_disagrees"), "figure,value,computed"},
+    {"accuracy.result.needs_down_statistics", QT_TRANSLATE_NOOP3("words::AccuracyWords", "needs mean_down_mm and s_down_mm in a bidirectional result", "accuracy.result.needs_down_statistics")},
+    {"accuracy.csv.missing_column", QT_TRANSLATE_NOOP3("words::AccuracyWords", "the header has no %1 column", "accuracy.csv.missing_column"), "column"},
+    {"accuracy.csv.unknown_unit", QT_TRANSLATE_NOOP3("words::AccuracyWords", "cannot read the unit of column %1: use one of %2", "accuracy.csv.unknown_unit"), "column,units"},
+    {"accuracy.csv.duplicate_column", QT_TRANSLATE_NOOP3("words::AccuracyWords", "a second column for the same quantity: %1", "accuracy.csv.duplicate_column"), "column"},
+    {"accuracy.csv.no_readings", QT_TRANSLATE_NOOP3("words::AccuracyWords", "the file has no readings", "accuracy.csv.no_readings")},
+    {"accuracy.csv.wrong_cell_count", QT_TRANSLATE_NOOP3("words::AccuracyWords", "%1 cells where the header has %2", "accuracy.csv.wrong_cell_count"), "count,expected"},
+    {"accuracy.csv.not_a_number", QT_TRANSLATE_NOOP3("words::AccuracyWords", "\"%1\" is not a number", "accuracy.csv.not_a_number"), "text"},
+    {"accuracy.csv.unknown_direction", QT_TRANSLATE_NOOP3("words::AccuracyWords", "\"%1\" is not a direction: up or down", "accuracy.csv.unknown_direction"), "text"},
+    {"accuracy.csv.not_a_cycle", QT_TRANSLATE_NOOP3("words::AccuracyWords", "\"%1\" is not a cycle: a whole number from 1", "accuracy.csv.not_a_cycle"), "text"},
+    {"compensation.too_few_points", QT_TRANSLATE_NOOP3("words::AccuracyWords", "%1 points: a fit needs at least %2 different positions", "compensation.too_few_points"), "count,min"},
+    {"compensation.order_out_of_range", QT_TRANSLATE_NOOP3("words::AccuracyWords", "order %1: choose %2 to %3", "compensation.order_out_of_range"), "order,min,max"},
+    {"compensation.order_needs_more_points", QT_TRANSLATE_NOOP3("words::AccuracyWords", "order %1 needs at least %2 points; there are %3", "compensation.order_needs_more_points"), "order,min,count"},
+    {"compensation.no_coefficients", QT_TRANSLATE_NOOP3("words::AccuracyWords", "the polynomial has no coefficients", "compensation.no_coefficients")},
+    {"compensation.too_many_coefficients", QT_TRANSLATE_NOOP3("words::AccuracyWords", "%1 coefficients: at most %2 (order 5)", "compensation.too_many_coefficients"), "count,max"},
+    {"compensation.range_too_short", QT_TRANSLATE_NOOP3("words::AccuracyWords", "the range %1 to %2 is shorter than %3", "compensation.range_too_short"), "from,to,min"},
+    {"compensation.curve_too_large", QT_TRANSLATE_NOOP3("words::AccuracyWords", "the curve reaches %1 at %2, beyond ±%3", "compensation.curve_too_large"), "value,position,max"},
+    {"compensation.curve_too_steep", QT_TRANSLATE_NOOP3("words::AccuracyWords", "the curve's slope is %1 µm/mm at %2, beyond %3", "compensation.curve_too_steep"), "value,position,max"},
+    {"compensation.too_few_table_points", QT_TRANSLATE_NOOP3("words::AccuracyWords", "%1 table points: at least %2", "compensation.too_few_table_points"), "count,min"},
+    {"compensation.too_many_table_points", QT_TRANSLATE_NOOP3("words::AccuracyWords", "%1 table points: a device keeps at most %2", "compensation.too_many_table_points"), "count,max"},
+    {"compensation.nominals_not_increasing", QT_TRANSLATE_NOOP3("words::AccuracyWords", "nominal %1 does not come after %2", "compensation.nominals_not_increasing"), "value,previous"},
+    {"compensation.nominals_too_close", QT_TRANSLATE_NOOP3("words::AccuracyWords", "nominals %1 and %2 are closer than %3", "compensation.nominals_too_close"), "previous,value,min"},
+    {"compensation.backlash_with_directions", QT_TRANSLATE_NOOP3("words::AccuracyWords", "a backlash of %1 beside per-direction columns: put it in the columns", "compensation.backlash_with_directions"), "value"},
+    {"compensation.linuxcnc.not_a_triplet", QT_TRANSLATE_NOOP3("words::AccuracyWords", "%1 values on a line where LinuxCNC expects three (nominal, forward, reverse); LinuxCNC would stop reading here", "compensation.linuxcnc.not_a_triplet"), "count"},
 };
 
-QString a(const msg::Message& m, const char* name) { return words::arg(m, name); }
-bool has(const msg::Message& m, const char* name) { return m.arg(name) != nullptr; }
-
-QString AccuracyWords::accuracy(const msg::Message& m)
-{
-    const std::string& id = m.id;
-    if (id.rfind("accuracy.run.", 0) == 0)
-        return run(m);
-    if (id.rfind("accuracy.csv.", 0) == 0 || id.rfind("accuracy.import.", 0) == 0)
-        return files(m);
-    if (id == "accuracy.value_not_finite")
-        return tr("must be a number (not NaN or infinite)");
-    if (id == "accuracy.value_below")
-        return tr("is %1, below the least allowed %2").arg(a(m, "value"), a(m, "min"));
-    if (id == "accuracy.value_above")
-        return tr("is %1, above the most allowed %2").arg(a(m, "value"), a(m, "max"));
-    if (id == "accuracy.value_not_positive")
-        return tr("must be above 0 (is %1)").arg(a(m, "value"));
-    if (id == "accuracy.axis_name_invalid")
-        return tr("\"%1\" is not an axis name: one capital letter, such as X").arg(a(m, "axis"));
-    if (id == "accuracy.no_targets")
-        return tr("no targets: give a list of targets or a start, end and count");
-    if (id == "accuracy.targets_and_grid")
-        return tr("give either a list of targets or a grid, not both");
-    if (id == "accuracy.too_few_targets")
-        return tr("%1 targets: a positioning test needs at least %2").arg(a(m, "count"), a(m, "min"));
-    if (id == "accuracy.fewer_targets_than_iso")
-        return tr("%1 targets: ISO 230-2 recommends at least %2").arg(a(m, "count"), a(m, "recommended"));
-    if (id == "accuracy.targets_not_increasing")
-        return tr("target %1 does not come after %2: targets must increase").arg(a(m, "value"), a(m, "previous"));
-    if (id == "accuracy.target_below_limit")
-        return has(m, "axis") ? tr("target %1 of axis %2 is below the soft limit %3").arg(a(m, "value"), a(m, "axis"), a(m, "limit"))
-                              : tr("target %1 is below the soft limit %2").arg(a(m, "value"), a(m, "limit"));
-    if (id == "accuracy.target_above_limit")
-        return has(m, "axis") ? tr("target %1 of axis %2 is above the soft limit %3").arg(a(m, "value"), a(m, "axis"), a(m, "limit"))
-                              : tr("target %1 is above the soft limit %2").arg(a(m, "value"), a(m, "limit"));
-    if (id == "accuracy.grid_end_not_after_start")
-        return tr("the grid ends at %1, not after its start %2").arg(a(m, "end"), a(m, "start"));
-    if (id == "accuracy.grid_spacing_too_small")
-        return tr("targets %1 apart are too close: at least %2").arg(a(m, "spacing"), a(m, "min"));
-    if (id == "accuracy.no_overrun")
-        return tr("no overrun: the drive reverses at the end targets, so their readings include the reversal");
-    if (id == "accuracy.overrun_below_limit")
-        return has(m, "axis") ? tr("the overrun takes axis %1 to %2, below the soft limit %3").arg(a(m, "axis"), a(m, "position"), a(m, "limit"))
-                              : tr("the overrun goes to %1, below the soft limit %2").arg(a(m, "position"), a(m, "limit"));
-    if (id == "accuracy.overrun_above_limit")
-        return has(m, "axis") ? tr("the overrun takes axis %1 to %2, above the soft limit %3").arg(a(m, "axis"), a(m, "position"), a(m, "limit"))
-                              : tr("the overrun goes to %1, above the soft limit %2").arg(a(m, "position"), a(m, "limit"));
-    if (id == "accuracy.too_few_cycles")
-        return has(m, "target") ? tr("%1 cycles at %2 %3: at least %4 are needed to see a spread").arg(a(m, "count"), a(m, "target"), a(m, "direction"), a(m, "min"))
-                                : tr("%1 cycles: at least %2 are needed to see a spread").arg(a(m, "count"), a(m, "min"));
-    if (id == "accuracy.fewer_cycles_than_iso")
-        return tr("%1 cycles: ISO 230-2 recommends %2").arg(a(m, "count"), a(m, "recommended"));
-    if (id == "accuracy.settle_timeout_below_window")
-        return tr("the settle timeout %1 is shorter than its window %2").arg(a(m, "timeout"), a(m, "window"));
-    if (id == "accuracy.duplicate_reading")
-        return tr("a second reading at %1 %2 in cycle %3 (the first is reading %4)").arg(a(m, "target"), a(m, "direction"), a(m, "cycle"), a(m, "first"));
-    if (id == "accuracy.direction_missing")
-        return tr("no %1 readings at %2, though other targets have them").arg(a(m, "direction"), a(m, "target"));
-    if (id == "accuracy.cycle_counts_differ")
-        return tr("%1 readings at %2 %3, where the others have %4").arg(a(m, "count"), a(m, "target"), a(m, "direction"), a(m, "expected"));
-    if (id == "accuracy.statistics_incomplete")
-        return tr("the table's row for %1 lacks a mean or a standard deviation").arg(a(m, "target"));
-    if (id == "accuracy.reading_count_wrong")
-        return tr("%1 readings, where the test has %2").arg(a(m, "count"), a(m, "expected"));
-    if (id == "accuracy.reading_not_in_plan")
-        return tr("a reading at %1 %2 in cycle %3, which the test does not have").arg(a(m, "target"), a(m, "direction"), a(m, "cycle"));
-    if (id == "accuracy.reading_missing")
-        return tr("no reading at %1 %2 in cycle %3").arg(a(m, "target"), a(m, "direction"), a(m, "cycle"));
-    if (id == "accuracy.xy.point_off_line")
-        return tr("this target is %1 off the line through the first and last (at most %2)").arg(a(m, "distance"), a(m, "max"));
-    if (id == "accuracy.xy.no_such_point")
-        return tr("reading for target %1, but the line has %2 targets").arg(a(m, "index"), a(m, "count"));
-    if (id == "accuracy.xy.axis_does_not_move")
-        return tr("%1 does not move along this line: it is not evaluated").arg(a(m, "axis"));
-    if (id == "accuracy.circle.axes_invalid")
-        return tr("\"%1\" is not a plane: two different axis letters, such as XY").arg(a(m, "axes"));
-    if (id == "accuracy.circle.below_limit")
-        return tr("the circle reaches %1 = %2, below the soft limit %3").arg(a(m, "axis"), a(m, "value"), a(m, "limit"));
-    if (id == "accuracy.circle.above_limit")
-        return tr("the circle reaches %1 = %2, above the soft limit %3").arg(a(m, "axis"), a(m, "value"), a(m, "limit"));
-    if (id == "accuracy.circle.no_direction")
-        return tr("choose clockwise, counter-clockwise or both");
-    if (id == "accuracy.circle.no_runs")
-        return tr("no circle was sampled");
-    if (id == "accuracy.circle.direction_twice")
-        return tr("two %1 runs: one of each direction").arg(a(m, "rotation"));
-    if (id == "accuracy.circle.too_few_samples")
-        return tr("%1 samples of a circle: at least %2").arg(a(m, "count"), a(m, "min"));
-    if (id == "accuracy.circle.incomplete_revolution")
-        return tr("the samples leave a gap of %1 in the revolution (at most %2)").arg(a(m, "gap"), a(m, "max"));
-    if (id == "accuracy.circle.no_circle")
-        return tr("the %1 samples do not lie on a circle").arg(a(m, "rotation"));
-    if (id == "accuracy.result.figure_disagrees")
-        return tr("%1 is written as %2, but the file's own table gives %3").arg(a(m, "figure"), a(m, "value"), a(m, "computed"));
-    return {};
-}
-
-QString AccuracyWords::run(const msg::Message& m)
-{
-    const std::string& id = m.id;
-    if (id == "accuracy.run.busy")
-        return tr("A run is in progress: pause or abort it first.");
-    if (id == "accuracy.run.not_connected")
-        return tr("The instrument is not connected.");
-    if (id == "accuracy.run.no_such_axis")
-        return tr("The instrument has no axis %1 for this test.").arg(a(m, "axis"));
-    if (id == "accuracy.run.not_homed")
-        return a(m, "axis").isEmpty() ? tr("The test's axes are not homed: home them first.")
-                                      : tr("Axis %1 is not homed: home it first.").arg(a(m, "axis"));
-    if (id == "accuracy.run.estop")
-        return tr("E-stop is active: the run stopped; reset the E-stop and resume.");
-    if (id == "accuracy.run.no_source")
-        return tr("Choose where the readings come from.");
-    if (id == "accuracy.run.source_axes")
-        return tr("The %1 reads %2 axis at a time; this test reads %3.").arg(a(m, "source"), a(m, "max"), a(m, "count"));
-    if (id == "accuracy.run.gauge_one_axis")
-        return tr("The gauge on %1 reads one axis; this test reads two.").arg(a(m, "port"));
-    if (id == "accuracy.run.folder_failed")
-        return tr("Cannot use the folder %1: %2.").arg(a(m, "folder"), a(m, "detail"));
-    if (id == "accuracy.run.other_log")
-        return tr("%1 holds the run log of another test (%2): choose another folder, or start afresh to keep it aside.")
-            .arg(a(m, "file"), a(m, "test"));
-    if (id == "accuracy.run.log_unreadable")
-        return tr("The run log %1 cannot be continued (line %2): %3.").arg(a(m, "file"), a(m, "line"), a(m, "detail"));
-    if (id == "accuracy.run.log_write_failed")
-        return tr("Cannot write the run log %1: %2. The run stopped; no reading was lost.").arg(a(m, "file"), a(m, "detail"));
-    if (id == "accuracy.run.move_refused")
-        return tr("The instrument refused the move: %1").arg(a(m, "detail"));
-    if (id == "accuracy.run.link_lost")
-        return tr("The link to the instrument was lost: the run stopped. Reconnect and resume: it goes on at the next reading.");
-    if (id == "accuracy.run.aborted")
-        return tr("The run was aborted. Resume goes on at the next reading.");
-    if (id == "accuracy.run.axis_stopped")
-        return tr("Axis %1 stopped (%2): %3. The run stopped.").arg(a(m, "axis"), a(m, "event"), a(m, "detail"));
-    if (id == "accuracy.run.status_failed")
-        return tr("No position reading from the instrument: %1").arg(a(m, "detail"));
-    if (id == "accuracy.run.results_failed")
-        return tr("Cannot write %1: %2").arg(a(m, "file"), a(m, "detail"));
-    if (id == "accuracy.run.not_prepared")
-        return tr("Define or open a test first.");
-    if (id == "accuracy.run.finished_already")
-        return tr("Every reading of this run is taken.");
-    if (id == "accuracy.run.circle_elsewhere")
-        return tr("A circular test runs as a circle, not as stops.");
-    if (id == "accuracy.run.timed_out")
-        return tr("The run took far longer than its estimate and was aborted.");
-    if (id == "accuracy.run.path_aborted")
-        return tr("The circle's path was aborted: %1").arg(a(m, "detail"));
-    return {};
-}
-
-QString AccuracyWords::files(const msg::Message& m)
-{
-    const std::string& id = m.id;
-    if (id == "accuracy.csv.missing_column")
-        return tr("the header has no %1 column").arg(a(m, "column"));
-    if (id == "accuracy.csv.unknown_unit")
-        return tr("cannot read the unit of column %1: use one of %2").arg(a(m, "column"), a(m, "units"));
-    if (id == "accuracy.csv.duplicate_column")
-        return tr("a second column for the same quantity: %1").arg(a(m, "column"));
-    if (id == "accuracy.csv.no_readings")
-        return tr("the file has no readings");
-    if (id == "accuracy.csv.wrong_cell_count")
-        return tr("%1 cells where the header has %2").arg(a(m, "count"), a(m, "expected"));
-    if (id == "accuracy.csv.not_a_number")
-        return tr("\"%1\" is not a number").arg(a(m, "text"));
-    if (id == "accuracy.csv.unknown_direction")
-        return tr("\"%1\" is not a direction: up or down").arg(a(m, "text"));
-    if (id == "accuracy.csv.not_a_cycle")
-        return tr("\"%1\" is not a cycle: a whole number from 1").arg(a(m, "text"));
-    if (id == "accuracy.import.count_differs")
-        return tr("the export has %1 readings, where the run's sequence has %2 stops").arg(a(m, "count"), a(m, "expected"));
-    if (id == "accuracy.import.direction_differs")
-        return tr("reading %1 was taken %2, where the run's stop %1 (at %3) was approached %4")
-            .arg(a(m, "index"), a(m, "direction"), a(m, "target"), a(m, "expected"));
-    if (id == "accuracy.import.target_differs")
-        return tr("reading %1 is for target %2, where the run's stop %1 is at %3").arg(a(m, "index"), a(m, "target"), a(m, "expected"));
-    if (id == "accuracy.import.index_out_of_order")
-        return tr("index \"%1\": the sequence's rows are numbered from 1 in order (expected %2)").arg(a(m, "text"), a(m, "expected"));
-    if (id == "file.unreadable")
-        return tr("cannot read %1: %2").arg(a(m, "file"), a(m, "detail"));
-    if (id == "file.json_syntax")
-        return tr("not valid JSON: %1").arg(a(m, "detail"));
-    if (id == "file.json_field")
-        return a(m, "detail");
-    if (id == "file.csv.unterminated_quote")
-        return tr("a quoted field is not closed");
-    if (id == "file.csv.text_after_quote")
-        return tr("text after a closing quote");
-    if (id == "file.csv.semicolons")
-        return tr("the file is separated by semicolons; BenchPilot reads commas and '.' as the decimal point");
-    return {};
-}
-
-QString AccuracyWords::compensation(const msg::Message& m)
-{
-    const std::string& id = m.id;
-    if (id == "compensation.too_few_points")
-        return tr("%1 points: a fit needs at least %2 different positions").arg(a(m, "count"), a(m, "min"));
-    if (id == "compensation.order_out_of_range")
-        return tr("order %1: choose %2 to %3").arg(a(m, "order"), a(m, "min"), a(m, "max"));
-    if (id == "compensation.order_needs_more_points")
-        return tr("order %1 needs at least %2 points; there are %3").arg(a(m, "order"), a(m, "min"), a(m, "count"));
-    if (id == "compensation.no_coefficients")
-        return tr("the polynomial has no coefficients");
-    if (id == "compensation.too_many_coefficients")
-        return tr("%1 coefficients: at most %2 (order 5)").arg(a(m, "count"), a(m, "max"));
-    if (id == "compensation.range_too_short")
-        return tr("the range %1 to %2 is shorter than %3").arg(a(m, "from"), a(m, "to"), a(m, "min"));
-    if (id == "compensation.curve_too_large")
-        return tr("the curve reaches %1 at %2, beyond ±%3").arg(a(m, "value"), a(m, "position"), a(m, "max"));
-    if (id == "compensation.curve_too_steep")
-        return tr("the curve's slope is %1 µm/mm at %2, beyond %3").arg(a(m, "value"), a(m, "position"), a(m, "max"));
-    if (id == "compensation.too_few_table_points")
-        return tr("%1 table points: at least %2").arg(a(m, "count"), a(m, "min"));
-    if (id == "compensation.too_many_table_points")
-        return tr("%1 table points: a device keeps at most %2").arg(a(m, "count"), a(m, "max"));
-    if (id == "compensation.nominals_not_increasing")
-        return tr("nominal %1 does not come after %2").arg(a(m, "value"), a(m, "previous"));
-    if (id == "compensation.nominals_too_close")
-        return tr("nominals %1 and %2 are closer than %3").arg(a(m, "previous"), a(m, "value"), a(m, "min"));
-    if (id == "compensation.backlash_with_directions")
-        return tr("a backlash of %1 beside per-direction columns: put it in the columns").arg(a(m, "value"));
-    if (id == "compensation.linuxcnc.not_a_triplet")
-        return tr("%1 values on a line where LinuxCNC expects three (nominal, forward, reverse); LinuxCNC would stop reading here")
-            .arg(a(m, "count"));
-    if (id == "compensation.device_refused")
-        return tr("The instrument refused: %1").arg(a(m, "detail"));
-    if (id == "compensation.none_on_device")
-        return tr("The instrument holds no compensation for axis %1.").arg(a(m, "axis"));
-    return {};
-}
-
-QString AccuracyWords::gauge(const msg::Message& m)
-{
-    const std::string& id = m.id;
-    if (id == "gauge.not_a_reading")
-        return tr("The gauge on %1 answered \"%2\", which is not a reading such as +012.3456 mm.").arg(a(m, "port"), a(m, "text"));
-    if (id == "gauge.unknown_unit")
-        return tr("The gauge on %1 answered \"%2\" in a unit BenchPilot does not read (%3); it reads mm, µm and in.")
-            .arg(a(m, "port"), a(m, "text"), a(m, "unit"));
-    if (id == "gauge.no_answer")
-        return has(m, "port") ? tr("The gauge on %1 did not answer within %2, asked twice.").arg(a(m, "port"), a(m, "timeout"))
-                              : tr("The gauge did not answer.");
-    if (id == "gauge.port_failed")
-        return tr("Cannot open the gauge's port %1: %2").arg(a(m, "port"), a(m, "detail"));
-    if (id == "gauge.link_lost")
-        return tr("The gauge's port %1 went away: %2").arg(a(m, "port"), a(m, "detail"));
-    if (id == "gauge.busy")
-        return tr("The gauge on %1 is still answering the last request.").arg(a(m, "port"));
-    if (id == "gauge.not_open")
-        return tr("The gauge's port %1 is not open.").arg(a(m, "port"));
-    return {};
-}
-
-QString AccuracyWords::term(const std::string& id)
-{
-    if (id == "direction.up")
-        return tr("up");
-    if (id == "direction.down")
-        return tr("down");
-    if (id == "rotation.cw")
-        return tr("clockwise");
-    if (id == "rotation.ccw")
-        return tr("counter-clockwise");
-    return {};
-}
+const TermRow kTerms[] = {
+    {"direction.up", QT_TRANSLATE_NOOP3("words::AccuracyWords", "up", "direction.up")},
+    {"direction.down", QT_TRANSLATE_NOOP3("words::AccuracyWords", "down", "direction.down")},
+    {"rotation.cw", QT_TRANSLATE_NOOP3("words::AccuracyWords", "clockwise", "rotation.cw")},
+    {"rotation.ccw", QT_TRANSLATE_NOOP3("words::AccuracyWords", "counter-clockwise", "rotation.ccw")},
+};
+// clang-format on
 
 } // namespace
 
-QString accuracy(const msg::Message& m) { return AccuracyWords::accuracy(m); }
-QString compensation(const msg::Message& m) { return AccuracyWords::compensation(m); }
-QString fileProblem(const msg::Message& m) { return AccuracyWords::files(m); }
-QString gauge(const msg::Message& m) { return AccuracyWords::gauge(m); }
-QString accuracyTerm(const std::string& id) { return AccuracyWords::term(id); }
+QString accuracy(const msg::Message& m)
+{
+    const QString t = fromRows("words::AccuracyWords", kRows, m);
+    if (!t.isNull())
+        return t;
+    return m.id.rfind("compensation.", 0) == 0 ? compensationBench(m) : accuracyBench(m);
+}
+QString accuracyTerm(const std::string& id) { return fromTerms("words::AccuracyWords", kTerms, id); }
 
 } // namespace words::areas

@@ -1,6 +1,7 @@
 #include "widgets/wording/wording.h"
 
 #include "widgets/wording/areas.h"
+#include "widgets/wording/translators.h"
 
 #include <QLocale>
 
@@ -16,17 +17,33 @@ using TermFn = QString (*)(const std::string&);
 /// Which area words which ids. Longest prefix first where prefixes nest.
 const std::pair<const char*, SentenceFn> kSentences[] = {
     {"capability.", &areas::capability},
-    {"grbl.", &areas::grblText},
     {"accuracy.", &areas::accuracy},
-    {"compensation.", &areas::compensation},
-    {"file.", &areas::fileProblem},
+    {"compensation.", &areas::accuracy},
+    {"request.", &areas::device},
+    {"link.", &areas::device},
+    {"device.", &areas::device},
+    {"telemetry.", &areas::device},
+    {"file.", &areas::file},
+    {"grbl.", &areas::grbl},
+    {"pattern.", &areas::pattern},
+    {"plate.", &areas::plate},
+    {"profile.", &areas::profile},
+    {"recipe.", &areas::recipe},
+    {"scan.", &areas::scan},
+    {"tuning.", &areas::tuning},
     {"gauge.", &areas::gauge},
 };
 
 const TermFn kTerms[] = {
     &areas::capabilityTerm,
-    &areas::grblTerm,
     &areas::accuracyTerm,
+    &areas::deviceTerm,
+    &areas::fileTerm,
+    &areas::grblTerm,
+    &areas::patternTerm,
+    &areas::recipeTerm,
+    &areas::scanTerm,
+    &areas::tuningTerm,
 };
 
 bool startsWith(const std::string& s, const char* prefix)
@@ -101,7 +118,7 @@ QString number(double v, msg::Unit unit)
 {
     if (!std::isfinite(v))
         return QString::number(v) + unitSymbol(unit);
-    const QLocale locale;
+    const QLocale locale = englishOnly() ? QLocale::c() : QLocale();
     const int decimals = decimalsOf(unit);
     QString digits;
     if (decimals < 0) {
@@ -120,7 +137,7 @@ QString value(const msg::Arg& a)
     struct Visit {
         const msg::Arg& arg;
         QString operator()(std::monostate) const { return {}; }
-        QString operator()(long long v) const { return QLocale().toString(v) + unitSymbol(arg.unit); }
+        QString operator()(long long v) const { return (englishOnly() ? QLocale::c() : QLocale()).toString(v) + unitSymbol(arg.unit); }
         QString operator()(double v) const { return number(v, arg.unit); }
         QString operator()(const msg::Verbatim& v) const { return QString::fromStdString(v.text); }
         QString operator()(const msg::Term& t) const { return term(t.id); }

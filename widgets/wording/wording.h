@@ -9,6 +9,9 @@
 #include "motion/message.h"
 
 #include <QString>
+#include <QStringList>
+
+#include <vector>
 
 namespace words {
 
@@ -34,6 +37,28 @@ QString term(const std::string& id);
 
 } // namespace words
 
+namespace jsonio {
+struct Problem;
+class Problems;
+struct FileProblem;
+} // namespace jsonio
+
+namespace words {
+
+/// A problem found in a file, for a person: "FILE:LINE:COLUMN: PATH: sentence"
+/// ("FILE: sentence" for the file as a whole; "warning: " before a warning's sentence).
+QString fileProblem(const QString& file, const jsonio::Problem& problem);
+/// Every problem of `problems`, in the order of the file, one line each.
+QStringList fileProblems(const jsonio::Problems& problems, const QString& file);
+QStringList fileProblems(const std::vector<jsonio::FileProblem>& problems);
+
+/// How a tuning result stores a trial's or a verification's outcome ("decays",
+/// "hit the envelope", an end reason's name such as "settled"), for a person; a
+/// key this build does not know comes back as it is.
+QString tuningOutcome(const std::string& key);
+
+} // namespace words
+
 class QJsonObject;
 
 namespace words {
@@ -45,9 +70,15 @@ namespace words {
 /// a Term argument is its id. "message" is English whatever language is shown
 /// (englishText()), so scripts can log it and key on "id".
 QJsonObject toJson(const msg::Message& m);
+/// A problem of a file: toJson of its message with "file" and, where known,
+/// "line", "column" and "field" beside it.
+QJsonObject toJson(const jsonio::FileProblem& p);
 
-/// The sentence in English (the source text) even while a translation is shown.
+/// The sentence in English (the source text, C-locale numbers) even while a
+/// translation is shown.
 QString englishText(const msg::Message& m);
+/// A term in English, for JSON values that are words ("state": "running").
+QString englishTerm(const std::string& id);
 
 /// The unit's symbol for JSON, without the leading space: "mm", "µm", "" for none.
 QString unitKey(msg::Unit unit);

@@ -1,5 +1,8 @@
 #include "widgets/wording/wording.h"
 
+#include "widgets/wording/translators.h"
+#include "device/files/json_fields.h"
+
 #include <QJsonObject>
 #include <QJsonValue>
 
@@ -9,10 +12,16 @@ QString unitKey(msg::Unit unit) { return unitSymbol(unit).trimmed(); }
 
 QString englishText(const msg::Message& m)
 {
-    // The CLI installs no translator with --json; the GUI's translator learns to
-    // step aside here when the translation lands (issue 17), so the API's JSON
-    // stays English like the CLI's.
+    // The translators step aside (translators.h) rather than being removed, so
+    // the screens showing Chinese get no LanguageChange for every JSON line.
+    const EnglishScope english;
     return text(m);
+}
+
+QString englishTerm(const std::string& id)
+{
+    const EnglishScope english;
+    return term(id);
 }
 
 QJsonObject toJson(const msg::Message& m)
@@ -39,6 +48,19 @@ QJsonObject toJson(const msg::Message& m)
     if (!units.isEmpty())
         o.insert(QStringLiteral("units"), units);
     o.insert(QStringLiteral("message"), englishText(m));
+    return o;
+}
+
+QJsonObject toJson(const jsonio::FileProblem& p)
+{
+    QJsonObject o = toJson(p.problem.message);
+    o.insert(QStringLiteral("file"), QString::fromStdString(p.file));
+    if (p.problem.position.line > 0) {
+        o.insert(QStringLiteral("line"), p.problem.position.line);
+        o.insert(QStringLiteral("column"), p.problem.position.column);
+    }
+    if (!p.problem.path.empty())
+        o.insert(QStringLiteral("field"), QString::fromStdString(p.problem.path));
     return o;
 }
 

@@ -60,13 +60,13 @@ void BenchPilotClient::setTransport(Transport* transport)
         m_timeoutTimer.start();
         sayHello(true);
     });
-    m_transportConnections << connect(transport, &Transport::failed, this, [this](const QString& why) {
+    m_transportConnections << connect(transport, &Transport::failed, this, [this](const msg::Message& why) {
         if (m_state != LinkState::Connecting)
             return;
         emit linkError(why);
         setState(LinkState::Disconnected);
     });
-    m_transportConnections << connect(transport, &Transport::lost, this, [this](const QString& why) { linkGone(why); });
+    m_transportConnections << connect(transport, &Transport::lost, this, [this](const msg::Message& why) { linkGone(why); });
 }
 
 QString BenchPilotClient::linkDescription() const { return m_transport ? m_transport->describe() : tr("no link"); }
@@ -86,7 +86,7 @@ void BenchPilotClient::setState(LinkState s)
 void BenchPilotClient::connectLink()
 {
     if (!m_transport) {
-        emit linkError(tr("no connection chosen"));
+        emit linkError(msg::make("link.no_connection_chosen"));
         return;
     }
     if (m_state == LinkState::Connecting || m_state == LinkState::Identified || m_state == LinkState::Ready)
@@ -99,7 +99,7 @@ void BenchPilotClient::connectLink()
 void BenchPilotClient::disconnectLink()
 {
     stopAllJogs();
-    failAll(RequestError::Kind::LinkDown, tr("disconnected"));
+    failAll(RequestError::Kind::LinkDown, msg::make("link.disconnected"));
     m_timeoutTimer.stop();
     m_jogTimer.stop();
     if (m_transport)
@@ -107,7 +107,7 @@ void BenchPilotClient::disconnectLink()
     setState(LinkState::Disconnected);
 }
 
-void BenchPilotClient::linkGone(const QString& why)
+void BenchPilotClient::linkGone(const msg::Message& why)
 {
     if (m_state == LinkState::Disconnected || m_state == LinkState::Lost)
         return;
@@ -117,7 +117,7 @@ void BenchPilotClient::linkGone(const QString& why)
     m_timeoutTimer.stop();
     if (m_transport)
         m_transport->close();
-    emit linkError(tr("link lost: %1").arg(why));
+    emit linkError(msg::make("link.lost", {msg::nested("cause", why)}));
     setState(LinkState::Lost);
 }
 
@@ -146,7 +146,7 @@ void BenchPilotClient::onHello(const std::optional<RequestError>& err, const pro
 {
     if (m_state != LinkState::Connecting)
         return;
-    auto fail = [this](const QString& why) {
+    auto fail = [this](const msg::Message& why) {
         emit linkError(why);
         m_timeoutTimer.stop();
         if (m_transport)
@@ -161,19 +161,18 @@ void BenchPilotClient::onHello(const std::optional<RequestError>& err, const pro
     }
     if (err) {
         fail(err->kind == RequestError::Kind::Timeout
-                 ? tr("no answer from %1: check power, cable and baud rate").arg(linkDescription())
+                 ? msg::make("link.no_answer", {msg::verbatim("link", linkDescription().toStdString())})
                  : err->message);
         return;
     }
     const auto h = proto::decodeHelloReply(payload);
     if (!h) {
-        fail(tr("%1 answered HELLO with something that is not BenchPilot protocol").arg(linkDescription()));
+        fail(msg::make("link.not_benchpilot", {msg::verbatim("link", linkDescription().toStdString())}));
         return;
     }
     if (h->protocolVersion != proto::kProtocolVersion) {
-        fail(tr("the device speaks protocol version %1; this BenchPilot speaks version %2")
-                 .arg(h->protocolVersion)
-                 .arg(proto::kProtocolVersion));
+        fail(msg::make("link.protocol_version", {msg::integer("device", h->protocolVersion, msg::Unit::None),
+                                                 msg::integer("host", proto::kProtocolVersion, msg::Unit::None)}));
         return;
     }
     DeviceIdentity id;

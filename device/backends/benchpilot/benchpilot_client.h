@@ -83,7 +83,7 @@ public:
     /// A device refusal is also emitted as requestFailed, its message prefixed with `what`
     /// ("set gains refused: …") when `what` is given.
     using ReplyCallback = std::function<void(const std::optional<RequestError>&, const proto::Bytes& payload)>;
-    void request(proto::MsgType type, const proto::Bytes& payload, ReplyCallback done, const QString& what = {});
+    void request(proto::MsgType type, const proto::Bytes& payload, ReplyCallback done, const std::string& what = {});
     /// The HELLO capability bits (docs/protocol.md), for the parts.
     bool hasProtocolCapability(std::uint32_t bits) const { return (m_identity.protocolCapabilities & bits) == bits; }
 
@@ -111,7 +111,7 @@ private:
     void onFrame(const proto::Frame& f);
     void complete(Request r, const std::optional<RequestError>& err, const proto::Bytes& payload);
     void checkTimeouts();
-    void failAll(RequestError::Kind kind, const QString& why);
+    void failAll(RequestError::Kind kind, const msg::Message& why);
     void sayHello(bool readsExtensions);
     void onHello(const std::optional<RequestError>& err, const proto::Bytes& payload, bool askedExtensions);
     void pollStatus();
@@ -120,9 +120,9 @@ private:
     void refreshJogs();
     /// Calls `then` once a status reading shows every axis at rest (polling until it does).
     void whenStill(Callback then);
-    void linkGone(const QString& why);
+    void linkGone(const msg::Message& why);
     RequestError deviceError(const proto::ErrorReply& e) const;
-    RawDone wrap(Callback done, const QString& what);
+    RawDone wrap(Callback done, const std::string& what);
     qint64 nowMs() const;
 
     QPointer<Transport> m_transport;

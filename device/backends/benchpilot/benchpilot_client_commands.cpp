@@ -12,7 +12,7 @@ std::int32_t toWire(double v, double scale) { return static_cast<std::int32_t>(s
 
 // ---- commands -------------------------------------------------------------------
 
-static std::optional<RequestError> invalid(const QString& why)
+static std::optional<RequestError> invalid(const msg::Message& why)
 {
     RequestError e;
     e.kind = RequestError::Kind::Invalid;
@@ -22,45 +22,45 @@ static std::optional<RequestError> invalid(const QString& why)
 
 void BenchPilotClient::home(quint8 axisMask, Callback done)
 {
-    send(proto::MsgType::Home, proto::encode(proto::HomeRequest{axisMask}), wrap(std::move(done), tr("home")));
+    send(proto::MsgType::Home, proto::encode(proto::HomeRequest{axisMask}), wrap(std::move(done), "request.home"));
 }
 
 void BenchPilotClient::move(const QVector<QPair<int, double>>& targets, bool relative, double speed, Callback done)
 {
-    auto refuse = [&](const QString& why) {
+    auto refuse = [&](const msg::Message& why) {
         const auto e = invalid(why);
         emit requestFailed(*e);
         if (done)
             done(e);
     };
     if (targets.isEmpty())
-        return refuse(tr("move: no axis given"));
+        return refuse(msg::make("request.move_no_axis"));
     proto::MoveRequest m;
     m.relative = relative;
     QMap<int, double> byAxis;
     for (const auto& [axis, value] : targets) {
         if (axis < 0 || axis >= m_identity.axes.size())
-            return refuse(tr("move: axis %1 does not exist on this instrument").arg(axis));
+            return refuse(msg::make("request.move_no_such_axis", {msg::integer("index", axis, msg::Unit::None)}));
         if (!std::isfinite(value))
-            return refuse(tr("move: axis %1 target is not a number").arg(m_identity.axes[axis].letter));
+            return refuse(msg::make("request.move_target_not_number", {msg::verbatim("axis", QString(m_identity.axes[axis].letter).toStdString())}));
         if (byAxis.contains(axis))
-            return refuse(tr("move: axis %1 named twice").arg(m_identity.axes[axis].letter));
+            return refuse(msg::make("request.move_axis_twice", {msg::verbatim("axis", QString(m_identity.axes[axis].letter).toStdString())}));
         byAxis[axis] = value;
     }
     if (!std::isfinite(speed) || speed < 0)
-        return refuse(tr("move: speed must be a positive number"));
+        return refuse(msg::make("request.move_bad_speed"));
     for (auto it = byAxis.cbegin(); it != byAxis.cend(); ++it) {
         m.axisMask = static_cast<std::uint8_t>(m.axisMask | (1u << it.key()));
         m.targets.push_back(toWire(it.value(), m_identity.axes[it.key()].wireScale()));
     }
     m.speed = static_cast<std::uint32_t>(std::llround(speed * m_identity.axes[byAxis.firstKey()].wireScale()));
-    send(proto::MsgType::Move, proto::encode(m), wrap(std::move(done), tr("move")));
+    send(proto::MsgType::Move, proto::encode(m), wrap(std::move(done), "request.move"));
 }
 
 void BenchPilotClient::jogStep(int axis, double delta, double speed, Callback done)
 {
     if (axis < 0 || axis >= m_identity.axes.size() || !std::isfinite(delta) || !std::isfinite(speed) || speed < 0) {
-        const auto e = invalid(tr("jog step: bad axis, step or speed"));
+        const auto e = invalid(msg::make("request.jog_step_invalid"));
         emit requestFailed(*e);
         if (done)
             done(e);
@@ -71,7 +71,7 @@ void BenchPilotClient::jogStep(int axis, double delta, double speed, Callback do
     r.axis = static_cast<std::uint8_t>(axis);
     r.delta = toWire(delta, k);
     r.speed = static_cast<std::uint32_t>(std::llround(speed * k));
-    send(proto::MsgType::JogStep, proto::encode(r), wrap(std::move(done), tr("jog step")));
+    send(proto::MsgType::JogStep, proto::encode(r), wrap(std::move(done), "request.jog_step"));
 }
 
 void BenchPilotClient::startJog(int axis, double velocity)
@@ -96,7 +96,7 @@ void BenchPilotClient::stopJog(int axis)
     proto::JogVelocityRequest r;
     r.axisMask = static_cast<std::uint8_t>(1u << axis);
     r.velocities = {0};
-    send(proto::MsgType::JogVelocity, proto::encode(r), wrap({}, tr("jog")));
+    send(proto::MsgType::JogVelocity, proto::encode(r), wrap({}, "request.jog"));
 }
 
 void BenchPilotClient::stopAllJogs()
@@ -127,7 +127,7 @@ void BenchPilotClient::refreshJogs()
         if (m_jogs.isEmpty())
             m_jogTimer.stop();
         RequestError err = *e;
-        err.message = tr("jog refused: %1").arg(err.message);
+        err.message = msg::make("request.refused", {msg::term("action", "request.jog"), msg::nested("cause", err.message)});
         emit requestFailed(err);
     });
 }
@@ -137,7 +137,7 @@ void BenchPilotClient::setJogVelocities(const std::map<int, double>& velocities,
     proto::JogVelocityRequest r;
     for (const auto& [axis, v] : velocities) {  // ascending axes: the order the mask lists them in
         if (axis < 0 || axis >= m_identity.axes.size() || !std::isfinite(v)) {
-            refuse(done, RequestError::Kind::Invalid, tr("jog: bad axis or velocity"));
+            refuse(done, RequestError::Kind::Invalid, msg::make("request.jog_invalid"));
             return;
         }
         r.axisMask = static_cast<std::uint8_t>(r.axisMask | (1u << axis));
@@ -148,7 +148,7 @@ void BenchPilotClient::setJogVelocities(const std::map<int, double>& velocities,
             done(std::nullopt);
         return;
     }
-    send(proto::MsgType::JogVelocity, proto::encode(r), wrap(std::move(done), tr("jog")));
+    send(proto::MsgType::JogVelocity, proto::encode(r), wrap(std::move(done), "request.jog"));
 }
 
 void BenchPilotClient::stop(quint8 axisMask, Callback done)
@@ -158,24 +158,24 @@ void BenchPilotClient::stop(quint8 axisMask, Callback done)
             m_jogs.remove(a);
     if (m_jogs.isEmpty())
         m_jogTimer.stop();
-    send(proto::MsgType::Stop, proto::encode(proto::AxisMaskRequest{axisMask}), wrap(std::move(done), tr("stop")));
+    send(proto::MsgType::Stop, proto::encode(proto::AxisMaskRequest{axisMask}), wrap(std::move(done), "request.stop"));
 }
 
 void BenchPilotClient::estop(Callback done)
 {
     m_jogs.clear();
     m_jogTimer.stop();
-    send(proto::MsgType::EStop, {}, wrap(std::move(done), tr("E-stop")));
+    send(proto::MsgType::EStop, {}, wrap(std::move(done), "request.estop"));
 }
 
 void BenchPilotClient::reset(Callback done)
 {
-    send(proto::MsgType::Reset, {}, wrap(std::move(done), tr("reset")));
+    send(proto::MsgType::Reset, {}, wrap(std::move(done), "request.reset"));
 }
 
 void BenchPilotClient::setZero(quint8 axisMask, Callback done)
 {
-    auto inner = wrap(std::move(done), tr("set zero"));
+    auto inner = wrap(std::move(done), "request.set_zero");
     send(proto::MsgType::SetZero, proto::encode(proto::AxisMaskRequest{axisMask}), [this, inner](const auto& e, const auto& p) {
         if (!e)
             refreshLimits();
@@ -186,7 +186,7 @@ void BenchPilotClient::setZero(quint8 axisMask, Callback done)
 void BenchPilotClient::setSoftLimits(int axis, double min, double max, Callback done)
 {
     if (axis < 0 || axis >= m_identity.axes.size() || !std::isfinite(min) || !std::isfinite(max)) {
-        const auto e = invalid(tr("soft limits: bad axis or value"));
+        const auto e = invalid(msg::make("request.soft_limits_invalid"));
         emit requestFailed(*e);
         if (done)
             done(e);
@@ -196,7 +196,7 @@ void BenchPilotClient::setSoftLimits(int axis, double min, double max, Callback 
     proto::SetLimitsRequest r;
     r.axis = static_cast<std::uint8_t>(axis);
     r.limits = {toWire(min, k), toWire(max, k)};
-    auto inner = wrap(std::move(done), tr("soft limits"));
+    auto inner = wrap(std::move(done), "request.soft_limits");
     send(proto::MsgType::SetLimits, proto::encode(r), [this, axis, min, max, inner](const auto& e, const auto& p) {
         if (!e && axis < m_limits.size()) {
             m_limits[axis] = {min, max};

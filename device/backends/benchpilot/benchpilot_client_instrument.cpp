@@ -106,7 +106,7 @@ void BenchPilotClient::whenStill(Callback then)
 void BenchPilotClient::dwell(double seconds, Callback done)
 {
     if (!std::isfinite(seconds) || seconds < 0) {
-        refuse(done, RequestError::Kind::Invalid, tr("dwell: %1 s is not a time to wait").arg(seconds));
+        refuse(done, RequestError::Kind::Invalid, msg::make("request.dwell_invalid", {msg::real("seconds", seconds, msg::Unit::S)}));
         return;
     }
     // Protocol 1 has no dwell of its own: the host waits for the motion to end, then the time.
@@ -124,7 +124,7 @@ void BenchPilotClient::dwell(double seconds, Callback done)
                 return done(std::nullopt);
             RequestError lost;
             lost.kind = RequestError::Kind::LinkDown;
-            lost.message = tr("dwell abandoned: the link went down");
+            lost.message = msg::make("request.dwell_link_down");
             done(lost);
         });
     });
@@ -132,7 +132,7 @@ void BenchPilotClient::dwell(double seconds, Callback done)
 
 void BenchPilotClient::pulseTrigger(double, Callback done)
 {
-    refuse(done, RequestError::Kind::Invalid, tr("this instrument has no trigger output (protocol 1 has none)"));
+    refuse(done, RequestError::Kind::Invalid, msg::make("request.no_trigger_output"));
 }
 
 PathClient* BenchPilotClient::paths() { return m_paths; }

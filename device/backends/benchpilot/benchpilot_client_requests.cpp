@@ -40,7 +40,7 @@ void BenchPilotClient::send(proto::MsgType type, const proto::Bytes& payload, Ra
     if (!m_transport || !m_transport->isOpen()) {
         RequestError e;
         e.kind = RequestError::Kind::LinkDown;
-        e.message = tr("%1 not sent: the instrument is not connected").arg(typeName(type));
+        e.message = msg::make("request.not_sent", {msg::verbatim("request", typeName(type).toStdString())});
         if (r.done)
             r.done(e, {});
         return;
@@ -95,10 +95,9 @@ void BenchPilotClient::checkTimeouts()
     auto timeoutError = [](const Request& r) {
         RequestError e;
         e.kind = RequestError::Kind::Timeout;
-        e.message = tr("no reply to %1 after %2 attempts (%3 s): the device is not answering")
-                        .arg(typeName(r.type))
-                        .arg(kAttempts)
-                        .arg(kAttempts * kReplyTimeoutMs / 1000.0, 0, 'f', 1);
+        e.message = msg::make("request.no_reply", {msg::verbatim("request", typeName(r.type).toStdString()),
+                                                   msg::integer("attempts", kAttempts),
+                                                   msg::real("seconds", kAttempts * kReplyTimeoutMs / 1000.0, msg::Unit::S)});
         return e;
     };
     std::vector<Request> expired;
@@ -139,11 +138,11 @@ void BenchPilotClient::checkTimeouts()
     }
     if (!expired.empty() && (m_state == LinkState::Ready || m_state == LinkState::Identified)
         && (silent || m_consecutiveTimeouts >= 2))
-        linkGone(tr("the device stopped answering"));
+        linkGone(msg::make("link.stopped_answering"));
     pumpQueue();
 }
 
-void BenchPilotClient::failAll(RequestError::Kind kind, const QString& why)
+void BenchPilotClient::failAll(RequestError::Kind kind, const msg::Message& why)
 {
     std::deque<Request> queue;
     queue.swap(m_queue);
@@ -154,12 +153,12 @@ void BenchPilotClient::failAll(RequestError::Kind kind, const QString& why)
     RequestError e;
     e.kind = kind;
     for (auto& r : queue) {
-        e.message = tr("%1 abandoned: %2").arg(typeName(r.type), why);
+        e.message = msg::make("request.abandoned", {msg::verbatim("request", typeName(r.type).toStdString()), msg::nested("cause", why)});
         if (r.done)
             r.done(e, {});
     }
     for (auto& [seq, r] : rt) {
-        e.message = tr("%1 abandoned: %2").arg(typeName(r.type), why);
+        e.message = msg::make("request.abandoned", {msg::verbatim("request", typeName(r.type).toStdString()), msg::nested("cause", why)});
         if (r.done)
             r.done(e, {});
     }
@@ -184,9 +183,12 @@ RequestError BenchPilotClient::deviceError(const proto::ErrorReply& e) const
     r.code = e.code;
     r.axis = e.axis == proto::kNoAxis ? -1 : e.axis;
     r.value = (r.axis >= 0 && r.axis < m_identity.axes.size()) ? e.value / m_identity.axes[r.axis].wireScale() : e.value;
-    r.message = QString::fromStdString(e.message);
-    if (r.message.isEmpty())
-        r.message = QString::fromLatin1(proto::errorCodeName(e.code));
+    // The device's own words (firmware text, English) stay beside the code, which is
+    // what the wording layer words.
+    std::vector<msg::Arg> args{msg::term("code", proto::errorCodeTerm(e.code)), msg::verbatim("detail", e.message)};
+    if (r.axis >= 0 && r.axis < m_identity.axes.size())
+        args.push_back(msg::verbatim("axis", QString(m_identity.axes[r.axis].letter).toStdString()));
+    r.message = msg::make("device.refused", std::move(args));
     return r;
 }
 
@@ -254,7 +256,7 @@ void BenchPilotClient::onFrame(const proto::Frame& f)
             err = deviceError(*e);
         } else {
             err.kind = RequestError::Kind::Device;
-            err.message = tr("%1 refused with an unreadable error").arg(typeName(r.type));
+            err.message = msg::make("request.unreadable_error", {msg::verbatim("request", typeName(r.type).toStdString())});
         }
         complete(std::move(r), err, {});
     } else {
@@ -265,13 +267,13 @@ void BenchPilotClient::onFrame(const proto::Frame& f)
 
 // ---- replies handed to callers ---------------------------------------------------
 
-BenchPilotClient::RawDone BenchPilotClient::wrap(Callback done, const QString& what)
+BenchPilotClient::RawDone BenchPilotClient::wrap(Callback done, const std::string& what)
 {
     return [this, done = std::move(done), what](const std::optional<RequestError>& e, const proto::Bytes&) {
         if (e) {
             RequestError err = *e;
-            if (!what.isEmpty() && err.kind == RequestError::Kind::Device)
-                err.message = tr("%1 refused: %2").arg(what, err.message);
+            if (!what.empty() && err.kind == RequestError::Kind::Device)
+                err.message = msg::make("request.refused", {msg::term("action", what), msg::nested("cause", err.message)});
             emit requestFailed(err);
             if (done)
                 done(err);
@@ -281,13 +283,13 @@ BenchPilotClient::RawDone BenchPilotClient::wrap(Callback done, const QString& w
     };
 }
 
-void BenchPilotClient::request(proto::MsgType type, const proto::Bytes& payload, ReplyCallback done, const QString& what)
+void BenchPilotClient::request(proto::MsgType type, const proto::Bytes& payload, ReplyCallback done, const std::string& what)
 {
     send(type, payload, [this, done = std::move(done), what](const std::optional<RequestError>& e, const proto::Bytes& reply) {
         if (e) {
             RequestError err = *e;
-            if (!what.isEmpty() && err.kind == RequestError::Kind::Device)
-                err.message = tr("%1 refused: %2").arg(what, err.message);
+            if (!what.empty() && err.kind == RequestError::Kind::Device)
+                err.message = msg::make("request.refused", {msg::term("action", what), msg::nested("cause", err.message)});
             emit requestFailed(err);
             if (done)
                 done(err, reply);

@@ -76,7 +76,7 @@ void BenchPilotClient::subscribe(const QVector<proto::ChannelRef>& channels, int
             // A caller with its own handler (the telemetry hub falls back to the
             // stated capacity) decides whether a person needs to hear about it.
             RequestError err = *e;
-            err.message = tr("telemetry: %1").arg(err.message);
+            err.message = msg::make("request.telemetry_refused", {msg::nested("cause", err.message)});
             emit requestFailed(err);
         }
         if (done)

@@ -72,7 +72,7 @@ BenchPilotClient::ReplyCallback ProtocolPathClient::statusReply(Reply done)
         if (!s) {
             RequestError err;
             err.kind = RequestError::Kind::Device;
-            err.message = tr("the instrument answered a path request with something unreadable");
+            err.message = msg::make("request.path_unreadable");
             if (done)
                 done(err, m_last);
             return;
@@ -89,7 +89,7 @@ std::optional<RequestError> notConnected()
 {
     RequestError e;
     e.kind = RequestError::Kind::LinkDown;
-    e.message = QCoreApplication::translate("dev::PathClient", "the instrument is not connected");
+    e.message = msg::make("request.instrument_not_connected");
     return e;
 }
 } // namespace
@@ -100,7 +100,7 @@ void ProtocolPathClient::begin(quint32 firstIndex, Reply done)
         return done(notConnected(), m_last);
     proto::PathBeginRequest r;
     r.firstIndex = firstIndex;
-    m_client->request(proto::MsgType::PathBegin, proto::encode(r), statusReply(std::move(done)), tr("path"));
+    m_client->request(proto::MsgType::PathBegin, proto::encode(r), statusReply(std::move(done)), "request.path");
 }
 
 void ProtocolPathClient::append(quint32 firstIndex, const std::vector<motion::path::Segment>& segments, bool start,
@@ -112,7 +112,7 @@ void ProtocolPathClient::append(quint32 firstIndex, const std::vector<motion::pa
     r.firstIndex = firstIndex;
     r.flags = static_cast<std::uint8_t>((start ? proto::PathAppendStart : 0) | (last ? proto::PathAppendLast : 0));
     r.segments = toWire(segments);
-    m_client->request(proto::MsgType::PathAppend, proto::encode(r), statusReply(std::move(done)), tr("path segments"));
+    m_client->request(proto::MsgType::PathAppend, proto::encode(r), statusReply(std::move(done)), "request.path_segments");
 }
 
 void ProtocolPathClient::queryStatus(Reply done)
@@ -127,21 +127,21 @@ void ProtocolPathClient::hold(Callback done)
 {
     if (!m_client)
         return done ? done(notConnected()) : void();
-    m_client->request(proto::MsgType::PathHold, {}, [done](const auto& e, const auto&) { if (done) done(e); }, tr("pause"));
+    m_client->request(proto::MsgType::PathHold, {}, [done](const auto& e, const auto&) { if (done) done(e); }, "request.pause");
 }
 
 void ProtocolPathClient::resume(Callback done)
 {
     if (!m_client)
         return done ? done(notConnected()) : void();
-    m_client->request(proto::MsgType::PathResume, {}, [done](const auto& e, const auto&) { if (done) done(e); }, tr("resume"));
+    m_client->request(proto::MsgType::PathResume, {}, [done](const auto& e, const auto&) { if (done) done(e); }, "request.resume");
 }
 
 void ProtocolPathClient::clear(Callback done)
 {
     if (!m_client)
         return done ? done(notConnected()) : void();
-    m_client->request(proto::MsgType::PathClear, {}, [done](const auto& e, const auto&) { if (done) done(e); }, tr("abort"));
+    m_client->request(proto::MsgType::PathClear, {}, [done](const auto& e, const auto&) { if (done) done(e); }, "request.abort");
 }
 
 void ProtocolPathClient::onEvent(const DeviceEvent& e)

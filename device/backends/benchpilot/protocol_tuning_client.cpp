@@ -29,7 +29,7 @@ proto::WireEnvelope toWire(const motion::control::Envelope& e, double scale)
     return {toU32(e.maxExcursion * scale), toU32(e.maxFollowingError * scale), toU32(e.maxDurationS * 1000)};
 }
 
-RequestError tuningInvalid(const QString& why)
+RequestError tuningInvalid(const msg::Message& why)
 {
     RequestError e;
     e.kind = RequestError::Kind::Invalid;
@@ -77,7 +77,7 @@ void ProtocolTuningClient::getGains(int axis, GainsDone done)
                 return done(e, g);
             const auto r = proto::decodeGainsReply(payload);
             if (!r)
-                return done(tuningInvalid(tr("the device answered GET_GAINS with something unreadable")), g);
+                return done(tuningInvalid(msg::make("request.gains_unreadable")), g);
             g.axis = r->axis;
             g.controlPeriodS = r->controlPeriodUs * 1e-6;
             g.gains = fromWire(r->gains);
@@ -86,13 +86,13 @@ void ProtocolTuningClient::getGains(int axis, GainsDone done)
             g.testRunning = r->flags & proto::kGainsTestRunning;
             done(std::nullopt, g);
         },
-        tr("get gains"));
+        "request.get_gains");
 }
 
 void ProtocolTuningClient::setGains(int axis, const DiscreteGains& gains, bool keep, Callback done)
 {
     proto::SetGainsRequest r{static_cast<std::uint8_t>(axis), static_cast<std::uint8_t>(keep ? proto::kSetGainsSave : 0), toWire(gains)};
-    send(proto::kSetGains, proto::encode(r), std::move(done), tr("set gains"));
+    send(proto::kSetGains, proto::encode(r), std::move(done), "request.set_gains");
 }
 
 void ProtocolTuningClient::startStepTest(const StepTestParams& p, Callback done)
@@ -103,7 +103,7 @@ void ProtocolTuningClient::startStepTest(const StepTestParams& p, Callback done)
     const double step = std::llround(p.stepMm * k);
     if (!std::isfinite(p.stepMm) || std::abs(step) > 2147483647.0) {
         if (done)
-            done(tuningInvalid(tr("step %1 mm is not a usable step size").arg(p.stepMm)));
+            done(tuningInvalid(msg::make("request.step_size_invalid", {msg::real("step", p.stepMm, msg::Unit::Mm)})));
         return;
     }
     r.step = static_cast<std::int32_t>(step);
@@ -113,7 +113,7 @@ void ProtocolTuningClient::startStepTest(const StepTestParams& p, Callback done)
     r.envelope = toWire(p.envelope, k);
     if (p.trialGains)
         r.trialGains = toWire(*p.trialGains);
-    send(proto::kStepTest, proto::encode(r), std::move(done), tr("step test"));
+    send(proto::kStepTest, proto::encode(r), std::move(done), "request.step_test");
 }
 
 void ProtocolTuningClient::startRelayTest(const RelayTestParams& p, Callback done)
@@ -126,15 +126,15 @@ void ProtocolTuningClient::startRelayTest(const RelayTestParams& p, Callback don
     r.forcedPeriodUs = toU32(p.forcedPeriodS * 1e6);
     r.cycles = static_cast<std::uint16_t>(std::clamp(p.cycles, 0, 65535));
     r.envelope = toWire(p.envelope, k);
-    send(proto::kRelayTest, proto::encode(r), std::move(done), tr("relay test"));
+    send(proto::kRelayTest, proto::encode(r), std::move(done), "request.relay_test");
 }
 
 void ProtocolTuningClient::abortTests(quint8 axisMask, Callback done)
 {
-    send(proto::kTestAbort, proto::encode(proto::AbortRequest{axisMask}), std::move(done), tr("abort test"));
+    send(proto::kTestAbort, proto::encode(proto::AbortRequest{axisMask}), std::move(done), "request.abort_test");
 }
 
-void ProtocolTuningClient::send(proto::MsgType type, const proto::Bytes& payload, Callback done, const QString& what)
+void ProtocolTuningClient::send(proto::MsgType type, const proto::Bytes& payload, Callback done, const std::string& what)
 {
     m_client->request(
         type, payload,
@@ -165,9 +165,9 @@ void ProtocolTuningClient::fetchChunk(int axis, std::shared_ptr<TestCapture> int
                 return done(e, *into);
             const auto c = proto::decodeCaptureReply(payload);
             if (!c)
-                return done(tuningInvalid(tr("the device answered GET_CAPTURE with something unreadable")), *into);
+                return done(tuningInvalid(msg::make("request.capture_unreadable")), *into);
             if (first > 0 && c->testId != into->testId)
-                return done(tuningInvalid(tr("a new test replaced the capture while it was being read")), *into);
+                return done(tuningInvalid(msg::make("request.capture_replaced")), *into);
             const double k = self->scale(axis);
             auto& r = into->record;
             if (first == 0) {
@@ -194,7 +194,7 @@ void ProtocolTuningClient::fetchChunk(int axis, std::shared_ptr<TestCapture> int
                 return done(std::nullopt, *into);
             self->fetchChunk(axis, into, next, done, progress);
         },
-        tr("read capture"));
+        "request.read_capture");
 }
 
 } // namespace dev

@@ -164,7 +164,7 @@ AccuracyResultRead accuracyResultFromJson(std::string_view text, std::string_vie
             to.refuseUnknown({"target_mm", "n_up", "n_down", "mean_up_mm", "s_up_mm", "mean_down_mm", "s_down_mm", "mean_mm", "reversal_mm", "r_up_mm",
                               "r_down_mm", "r_mm"});
             if (bidirectional && (!t.meanDownMm || !t.sDownMm))
-                p.add(list->items()[i], jsonio::childPath("targets", i), "needs mean_down_mm and s_down_mm in a bidirectional result");
+                p.add(list->items()[i], jsonio::childPath("targets", i), msg::make("accuracy.result.needs_down_statistics"));
             if (target && nUp && meanUp && sUp) {
                 t.targetMm = *target;
                 t.nUp = static_cast<int>(*nUp);
@@ -215,7 +215,7 @@ AccuracyResultRead accuracyResultFromJson(std::string_view text, std::string_vie
         const bool written = v && v->isNumber();
         if (v && !v->isNumber() && !v->isNull()) {
             out.problems.push_back({std::string(fileName), at.line, at.column, "figures." + key,
-                                    msg::make("file.json_field", {msg::verbatim("detail", "must be number or null")}), false});
+                                    msg::make("file.json_field", {msg::nested("detail", msg::make("file.json.number_or_null", {msg::term("actual", jsonio::typeTerm(v->type()))}))}), false});
             continue;
         }
         if (written != computed.has_value() || (written && std::fabs(v->asNumber() - *computed) > kFigureAgreementMm))

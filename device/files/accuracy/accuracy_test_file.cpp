@@ -106,7 +106,7 @@ AxisTest readAxis(ObjectReader& o)
             if (item.isNumber())
                 t.targetsMm.push_back(item.asNumber());
             else
-                o.problems().add(item, jsonio::childPath("targets_mm", i), std::string("must be number, not ") + jsonio::typeName(item.type()));
+                o.problems().add(item, jsonio::childPath("targets_mm", i), jsonio::wrongType(Value::Type::Number, item.type()));
         }
     }
     if (const Value* g = o.get("grid", Value::Type::Object, false)) {
@@ -173,7 +173,7 @@ CircularTest readCircle(ObjectReader& o)
             else if (item.isString() && item.asString() == "ccw")
                 t.counterClockwise = true;
             else
-                o.problems().add(item, jsonio::childPath("directions", i), "must be \"cw\" or \"ccw\"");
+                o.problems().add(item, jsonio::childPath("directions", i), msg::make("file.json.not_one_of", {msg::verbatim("value", item.isString() ? item.asString().substr(0, 60) : std::string()), msg::verbatim("allowed", "\"cw\", \"ccw\"")}));
         }
     }
     if (auto x = o.number("lead_arc_deg", false, -kTestAny, kTestAny))

@@ -28,13 +28,13 @@ std::string debugFormat(const FileProblems& problems)
 
 FileProblem fromParseError(const jsonio::ParseError& e, std::string_view file)
 {
-    return {std::string(file), e.position.line, e.position.column, "", msg::make("file.json_syntax", {msg::verbatim("detail", e.message)}), false};
+    return {std::string(file), e.position.line, e.position.column, "", msg::make("file.json_syntax", {msg::nested("detail", e.message)}), false};
 }
 
 void addJsonProblems(const jsonio::Problems& found, std::string_view file, FileProblems& out)
 {
     for (const jsonio::Problem& p : found.list())
-        out.push_back({std::string(file), p.position.line, p.position.column, p.path, msg::make("file.json_field", {msg::verbatim("detail", p.message)}),
+        out.push_back({std::string(file), p.position.line, p.position.column, p.path, msg::make("file.json_field", {msg::nested("detail", p.message)}),
                        false});
 }
 

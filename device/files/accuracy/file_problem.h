@@ -3,11 +3,9 @@
 // the file, line and column, the field (a JSON path or a CSV column name) and a
 // message for a person (an id plus typed arguments; worded in widgets/ or app/).
 //
-// The generic JSON layer (jsonio::ObjectReader) still describes structural
-// problems ("is missing", "must be number, not string") in English fragments;
-// until the wording layer takes it over they travel as the verbatim `detail` of
-// file.json_field and file.json_syntax. Everything the accuracy formats check
-// themselves has its own id.
+// The generic JSON layer's problems (file.json.*: "is missing", "must be a number,
+// not a string") travel as the nested `detail` of file.json_field and
+// file.json_syntax. Everything the accuracy formats check themselves has its own id.
 #include "device/files/json.h"
 #include "device/files/json_fields.h"
 #include "motion/message.h"

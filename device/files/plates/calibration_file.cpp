@@ -38,7 +38,7 @@ CalibrationRead parseCalibration(std::string_view text)
         c.model = model && *model == "scaled-axes" ? plates::FitModel::ScaledAxes : plates::FitModel::Similarity;
         s.get("fit", Value::Type::Object, false);  // written for people; recomputed below
         if (!c.slot.empty() && !seen.insert(c.slot).second)
-            r.problems.add(*list->items()[k].find("slot"), s.pathOf("slot"), "slot \"" + c.slot + "\" is calibrated twice");
+            r.problems.add(*list->items()[k].find("slot"), s.pathOf("slot"), msg::make("plate.file.slot_calibrated_twice", {msg::verbatim("slot", c.slot)}));
         if (const Value* pts = s.get("points", Value::Type::Array, true)) {
             for (std::size_t j = 0; j < pts->items().size() && j < 16; ++j) {
                 ObjectReader p(pts->items()[j], jsonio::childPath(s.pathOf("points"), j), r.problems);
@@ -54,10 +54,10 @@ CalibrationRead parseCalibration(std::string_view text)
         }
         if (r.problems.size() != before)
             continue;
-        std::string error;
+        msg::Message error;
         const auto fit = plates::fitCalibration(c.points, c.model, &error);
         if (!fit) {
-            r.problems.add(list->items()[k], at, "cannot fit the taught points: " + error);
+            r.problems.add(list->items()[k], at, msg::make("plate.file.cannot_fit", {msg::nested("cause", error)}));
             continue;
         }
         c.fit = *fit;

@@ -14,7 +14,7 @@ void readAxis(const Value& axes, const char* letter, plates::AxisMotion& a, json
 {
     const Value* v = axes.find(letter);
     if (!v) {
-        problems.add(axes, jsonio::childPath("axes", letter), "is missing");
+        problems.add(axes, jsonio::childPath("axes", letter), msg::make("file.json.missing"));
         return;
     }
     ObjectReader o(*v, jsonio::childPath("axes", letter), problems);
@@ -78,7 +78,7 @@ DeckRead parseDeck(std::string_view text)
             d.plateSlots.push_back(slot);
         }
         if (list->items().empty())
-            r.problems.add(*list, "slots", "a deck needs at least one slot");
+            r.problems.add(*list, "slots", msg::make("plate.deck.no_slots"));
     }
     if (const Value* stations = o.get("stations", Value::Type::Array, false)) {
         for (std::size_t k = 0; k < stations->items().size() && k < 64; ++k) {

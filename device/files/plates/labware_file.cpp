@@ -20,7 +20,7 @@ constexpr double kLabwareBig = 1e6;
 void addModelProblems(const Value& root, const plates::Problems& found, jsonio::Problems& out)
 {
     for (const plates::Problem& p : found)
-        out.add(positionOfPath(root, p.path), p.path, (p.warning ? "warning: " : "") + p.message);
+        out.add(positionOfPath(root, p.path), p.path, p.message, p.warning);
 }
 
 std::optional<WellShape> readShape(ObjectReader& o, const char* key)
@@ -74,9 +74,9 @@ std::optional<Labware> readOurs(const Value& root, jsonio::Problems& problems)
     const Value* grid = o.get("grid", Value::Type::Object, false);
     const Value* wells = o.get("wells", Value::Type::Array, false);
     if (grid && wells)
-        problems.add(*wells, "wells", "give either \"grid\" or \"wells\", not both");
+        problems.add(*wells, "wells", msg::make("plate.file.grid_and_wells"));
     else if (!grid && !wells && o.valid())
-        problems.add(root, "grid", "is missing: give the wells as a \"grid\" (A1 and pitch) or a list of \"wells\"");
+        problems.add(root, "grid", msg::make("plate.file.no_grid"));
     if (grid) {
         ObjectReader g(*grid, "grid", problems);
         g.refuseUnknown({"a1_x_mm", "a1_y_mm", "pitch_x_mm", "pitch_y_mm", "shape", "diameter_mm", "size_x_mm", "size_y_mm",
@@ -108,7 +108,7 @@ std::optional<Labware> readOurs(const Value& root, jsonio::Problems& problems)
             const auto name = wr.string("well", true);
             const auto id = name ? plates::parseWellName(*name) : std::nullopt;
             if (name && !id)
-                problems.add(*wells->items()[k].find("well"), wr.pathOf("well"), "\"" + name->substr(0, 20) + "\" is not a well name like \"A1\"");
+                problems.add(*wells->items()[k].find("well"), wr.pathOf("well"), msg::make("plate.file.not_a_well_name", {msg::verbatim("text", name->substr(0, 20))}));
             const auto x = wr.number("x_mm", true, -kLabwareBig, kLabwareBig), y = wr.number("y_mm", true, -kLabwareBig, kLabwareBig);
             if (readWellSize(wr, w) && id && x && y) {
                 w.id = *id;
@@ -118,7 +118,7 @@ std::optional<Labware> readOurs(const Value& root, jsonio::Problems& problems)
             }
         }
         if (wells->items().size() > 4096)
-            problems.add(*wells, "wells", "more than 4096 wells");
+            problems.add(*wells, "wells", msg::make("plate.file.too_many_wells", {msg::integer("max", 4096)}));
     }
     if (problems.size() != before)
         return std::nullopt;
@@ -136,13 +136,13 @@ std::optional<Labware> readOpentronsLabware(const Value& root, jsonio::Problems&
         return std::nullopt;
     const auto schemaVersion = o.integer("schemaVersion", true, 0, 1000);
     if (schemaVersion && *schemaVersion != 2)
-        problems.add(*root.find("schemaVersion"), "schemaVersion", "is " + std::to_string(*schemaVersion) + "; only Opentrons labware schema 2 is read");
+        problems.add(*root.find("schemaVersion"), "schemaVersion", msg::make("plate.file.opentrons_schema", {msg::integer("value", *schemaVersion, msg::Unit::None)}));
     Labware lw;
     if (const Value* params = o.get("parameters", Value::Type::Object, true)) {
         ObjectReader p(*params, "parameters", problems);
         lw.id = p.string("loadName", true).value_or("");
         if (p.boolean("isTiprack", false).value_or(false))
-            problems.add(*params->find("isTiprack"), "parameters.isTiprack", "this is a tip rack, not a plate: the analyzer has a fixed tip");
+            problems.add(*params->find("isTiprack"), "parameters.isTiprack", msg::make("plate.file.tip_rack"));
     }
     if (const Value* meta = o.get("metadata", Value::Type::Object, false)) {
         ObjectReader m(*meta, "metadata", problems);
@@ -168,25 +168,26 @@ std::optional<Labware> readOpentronsLabware(const Value& root, jsonio::Problems&
         for (std::size_t c = 0; c < ordering->items().size(); ++c) {
             const Value& col = ordering->items()[c];
             if (!col.isArray()) {
-                problems.add(col, jsonio::childPath("ordering", c), "must be an array of well names");
+                problems.add(col, jsonio::childPath("ordering", c), msg::make("plate.file.ordering_not_names"));
                 continue;
             }
             lw.rows = std::max(lw.rows, static_cast<int>(col.items().size()));
         }
         if (lw.columns > plates::kMaxColumns || lw.rows > plates::kMaxRows)
-            problems.add(*ordering, "ordering", "a grid of " + std::to_string(lw.rows) + " × " + std::to_string(lw.columns) + " is more than "
-                                                    + std::to_string(plates::kMaxRows) + " × " + std::to_string(plates::kMaxColumns));
+            problems.add(*ordering, "ordering", msg::make("plate.labware.grid_size", {msg::integer("max_rows", plates::kMaxRows),
+                                                                                   msg::integer("max_columns", plates::kMaxColumns),
+                                                                                   msg::integer("rows", lw.rows), msg::integer("columns", lw.columns)}));
     }
     if (const Value* wells = o.get("wells", Value::Type::Object, true)) {
         for (const jsonio::Member& m : wells->members()) {
             if (lw.wells.size() >= 4096) {
-                problems.add(*wells, "wells", "more than 4096 wells");
+                problems.add(*wells, "wells", msg::make("plate.file.too_many_wells", {msg::integer("max", 4096)}));
                 break;
             }
             const std::string path = jsonio::childPath("wells", m.key);
             const auto id = plates::parseWellName(m.key);
             if (!id) {
-                problems.add(m.keyPosition, path, "\"" + m.key.substr(0, 20) + "\" is not a well name like \"A1\"");
+                problems.add(m.keyPosition, path, msg::make("plate.file.not_a_well_name", {msg::verbatim("text", m.key.substr(0, 20))}));
                 continue;
             }
             ObjectReader w(m.value, path, problems);

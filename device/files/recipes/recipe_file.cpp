@@ -48,17 +48,15 @@ void readWells(ObjectReader& o, const Value& step, plates::Step& s, jsonio::Prob
         for (std::size_t k = 0; k < w->items().size(); ++k) {
             const Value& item = w->items()[k];
             if (!item.isString()) {
-                problems.add(item, jsonio::childPath(o.pathOf("wells"), k), std::string("must be a string like \"A1\" or \"A1:H1\", not ")
-                                                                             + jsonio::typeName(item.type()));
+                problems.add(item, jsonio::childPath(o.pathOf("wells"), k), msg::make("recipe.file.well_not_string", {msg::term("actual", jsonio::typeTerm(item.type()))}));
                 continue;
             }
             s.wells.push_back(item.asString());
         }
         if (w->items().empty())
-            problems.add(*w, o.pathOf("wells"), "names no wells");
+            problems.add(*w, o.pathOf("wells"), msg::make("plate.wells.none"));
     } else {
-        problems.add(*w, o.pathOf("wells"), std::string("must be a well set (\"A1:H1\", \"row B\", …) or a list of them, not ")
-                                                + jsonio::typeName(w->type()));
+        problems.add(*w, o.pathOf("wells"), msg::make("recipe.file.wells_wrong_type", {msg::term("actual", jsonio::typeTerm(w->type()))}));
     }
 }
 
@@ -71,7 +69,8 @@ plates::Step readStep(const Value& v, const std::string& path, jsonio::Problems&
     const auto type = o.string("type", true);
     const auto t = type ? plates::stepTypeFromName(*type) : std::nullopt;
     if (type && !t) {
-        problems.add(*v.find("type"), o.pathOf("type"), "unknown step type \"" + type->substr(0, 40) + "\"; the types are " + plates::stepTypeList());
+        problems.add(*v.find("type"), o.pathOf("type"), msg::make("recipe.file.unknown_step_type", {msg::verbatim("type", type->substr(0, 40)),
+                                                                                                   msg::verbatim("types", plates::stepTypeList())}));
         s.type = StepType::Wait;  // a harmless stand-in keeps the later steps' indices
         s.seconds = 0;
         return s;
@@ -90,7 +89,7 @@ plates::Step readStep(const Value& v, const std::string& path, jsonio::Problems&
             continue;
         for (int k = 0; k < plates::kStepTypeCount; ++k)
             if (takes(static_cast<StepType>(k), m.key)) {
-                problems.add(m.keyPosition, o.pathOf(m.key), "a " + *type + " step has no \"" + m.key + "\"");
+                problems.add(m.keyPosition, o.pathOf(m.key), msg::make("recipe.file.field_of_other_step", {msg::verbatim("type", *type), msg::verbatim("field", m.key)}));
                 known.push_back(m.key);
                 break;
             }
@@ -123,7 +122,7 @@ plates::Step readStep(const Value& v, const std::string& path, jsonio::Problems&
             s.source.well = so.string("well", false).value_or("");
             s.source.station = so.string("station", false).value_or("");
             if (s.source.empty())
-                problems.add(*src, o.pathOf("source"), "needs a \"well\" (with its \"plate\") or a \"station\"");
+                problems.add(*src, o.pathOf("source"), msg::make("recipe.file.source_empty"));
         }
     return s;
 }
@@ -173,7 +172,7 @@ RecipeRead parseRecipe(std::string_view text)
             rec.plates.push_back(rp);
         }
         if (plates->items().size() > 64)
-            r.problems.add(*plates, "plates", "at most 64 plates");
+            r.problems.add(*plates, "plates", msg::make("recipe.file.too_many_plates", {msg::integer("max", 64)}));
     }
     if (const Value* steps = o.get("steps", Value::Type::Array, true)) {
         const std::size_t n = std::min(steps->items().size(), plates::kMaxSteps + 1);
@@ -195,7 +194,7 @@ void placeProblems(RecipeRead& read, const plates::Problems& problems)
         if (dup)
             continue;
         const jsonio::Position at = read.root ? positionOfPath(*read.root, p.path) : jsonio::Position{};
-        read.problems.add(at, p.path, (p.warning ? "warning: " : "") + p.message);
+        read.problems.add(at, p.path, p.message, p.warning);
     }
 }
 

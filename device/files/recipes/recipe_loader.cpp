@@ -10,26 +10,15 @@
 
 namespace platefiles {
 
-QStringList formatProblems(const jsonio::Problems& problems, const QString& fileName, int* errors)
+namespace {
+/// A file that cannot be read, as a problem of that file.
+jsonio::FileProblem unreadable(const QString& file, const msg::Message& why)
 {
-    QStringList out;
-    const std::string name = fileName.toStdString();
-    // In the order of the file, as a person reads it.
-    std::vector<jsonio::Problem> sorted = problems.list();
-    std::stable_sort(sorted.begin(), sorted.end(), [](const jsonio::Problem& a, const jsonio::Problem& b) {
-        return a.position.line != b.position.line ? a.position.line < b.position.line : a.position.column < b.position.column;
-    });
-    for (const jsonio::Problem& p : sorted) {
-        jsonio::Problems one;
-        one.add(p.position, p.path, p.message);
-        out << QString::fromStdString(one.format(name)).trimmed();
-        if (errors && p.message.rfind("warning: ", 0) != 0)
-            ++*errors;
-    }
-    return out;
+    return {QFileInfo(file).fileName().toStdString(), jsonio::Problem{jsonio::Position{0, 0}, "", why, false}};
 }
+} // namespace
 
-int resolveLabware(const plates::Recipe& recipe, const QString& baseDir, plates::PlanContext& context, QStringList* messages)
+int resolveLabware(const plates::Recipe& recipe, const QString& baseDir, plates::PlanContext& context, jsonio::FileProblems* problems)
 {
     int errors = 0;
     for (const plates::RecipePlate& p : recipe.plates) {
@@ -43,16 +32,19 @@ int resolveLabware(const plates::Recipe& recipe, const QString& baseDir, plates:
             continue;  // the plan reports the unknown id with the recipe's position
         const QString file = QDir(baseDir).filePath(QString::fromStdString(p.labware));
         std::string text;
-        QString error;
+        msg::Message error;
         if (!files::readText(file, &text, &error)) {
-            if (messages)
-                *messages << error;
+            if (problems)
+                problems->push_back(unreadable(file, error));
             ++errors;
             continue;
         }
         const LabwareRead lr = parseLabware(text);
-        if (messages)
-            *messages << formatProblems(lr.problems, QFileInfo(file).fileName(), &errors);
+        jsonio::FileProblems found;
+        jsonio::appendSorted(found, lr.problems, QFileInfo(file).fileName().toStdString());
+        errors += jsonio::errorCount(found);
+        if (problems)
+            problems->insert(problems->end(), found.begin(), found.end());
         if (lr.labware)
             context.labware[p.labware] = *lr.labware;
     }
@@ -68,26 +60,28 @@ LoadedRecipe loadRecipe(const QString& path, const plates::Deck& deck, const std
         if (deck.slot(c.slot))
             out.context.calibration[c.slot] = c.fit.transform;
     std::string text;
-    QString error;
+    msg::Message error;
     if (!files::readText(path, &text, &error)) {
-        out.messages << error;
+        out.problems.push_back(unreadable(path, error));
         out.errorCount = 1;
         return out;
     }
     RecipeRead read = parseRecipe(text);
-    const QString name = QFileInfo(path).fileName();
+    const std::string name = QFileInfo(path).fileName().toStdString();
     if (!read.recipe) {
-        out.messages = formatProblems(read.problems, name, &out.errorCount);
+        jsonio::appendSorted(out.problems, read.problems, name);
+        out.errorCount = jsonio::errorCount(out.problems);
         return out;
     }
     out.readable = read.wellFormed;
     out.recipe = *read.recipe;
-    QStringList labwareMessages;
-    const int labwareErrors = resolveLabware(out.recipe, QFileInfo(path).absolutePath(), out.context, &labwareMessages);
+    jsonio::FileProblems labwareProblems;
+    const int labwareErrors = resolveLabware(out.recipe, QFileInfo(path).absolutePath(), out.context, &labwareProblems);
     out.plan = plates::planRecipe(out.recipe, out.context);
     placeProblems(read, out.plan.problems);
-    out.messages = formatProblems(read.problems, name, &out.errorCount);
-    out.messages << labwareMessages;
+    jsonio::appendSorted(out.problems, read.problems, name);
+    out.errorCount = jsonio::errorCount(out.problems);
+    out.problems.insert(out.problems.end(), labwareProblems.begin(), labwareProblems.end());
     out.errorCount += labwareErrors;
     return out;
 }

@@ -17,7 +17,7 @@ struct LoadedRecipe {
     plates::Recipe recipe;
     plates::PlanContext context;
     plates::RecipePlan plan;      ///< from the machine's start (0, 0, 0, 0) unless re-planned
-    QStringList messages;         ///< "FILE:LINE:COL: PATH: MESSAGE", errors and warnings, files in order
+    jsonio::FileProblems problems; ///< errors and warnings, files in order (words::fileProblems words them)
     bool readable = false;        ///< the recipe's form was right: `recipe` is the file
     int errorCount = 0;
     bool ok() const { return readable && errorCount == 0; }
@@ -25,15 +25,12 @@ struct LoadedRecipe {
 
 /// Reads `path`, the labware files it names, and plans it on `deck` with the
 /// `calibration` it finds for its slots. Never throws; everything wrong is in
-/// `messages` (a file that cannot be read included).
+/// `problems` (a file that cannot be read included).
 LoadedRecipe loadRecipe(const QString& path, const plates::Deck& deck, const std::vector<plates::SlotCalibration>& calibration);
 
 /// Fills `context.labware` for the plates of `recipe`: built-in ids, and labware
-/// files (ours or Opentrons) relative to `baseDir`. Problems go to `messages`;
+/// files (ours or Opentrons) relative to `baseDir`. Problems go to `problems`;
 /// returns how many errors.
-int resolveLabware(const plates::Recipe& recipe, const QString& baseDir, plates::PlanContext& context, QStringList* messages);
-
-/// Formats problems as lines "FILE:LINE:COL: PATH: MESSAGE"; counts the errors (not warnings).
-QStringList formatProblems(const jsonio::Problems& problems, const QString& fileName, int* errors);
+int resolveLabware(const plates::Recipe& recipe, const QString& baseDir, plates::PlanContext& context, jsonio::FileProblems* problems);
 
 } // namespace platefiles

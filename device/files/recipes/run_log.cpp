@@ -53,7 +53,7 @@ RunLogState readRunLog(std::string_view text)
         const auto event = o.oneOf("event", true, {"run", "resume", "start", "pump", "done", "skip", "redo", "stop", "finished"});
         if (event && *event == "run") {
             if (header)
-                local.add(v, "event", "a second run header: one log holds one run and its resumptions");
+                local.add(v, "event", msg::make("file.log.second_header"));
             jsonio::checkSchema(v, kRunLogSchema, kRunLogVersion, local);
             o.refuseUnknown({"schema", "version", "event", "recipe", "fingerprint", "ops", "p_ul", "time"});
             st.startPumpUl = o.number("p_ul", false, -1e9, 1e9);
@@ -64,7 +64,7 @@ RunLogState readRunLog(std::string_view text)
             header = true;
             ++st.runs;
         } else if (event && !header) {
-            local.add(v, "event", "the log must begin with its \"run\" header");
+            local.add(v, "event", msg::make("file.log.no_header_first"));
         } else if (event) {
             o.refuseUnknown({"event", "op", "time", "kind", "step", "plate", "well", "station", "volume_ul", "p_ul", "reason"});
             o.string("time", false);
@@ -73,12 +73,12 @@ RunLogState readRunLog(std::string_view text)
             if (perOp) {
                 opIndex = o.integer("op", true, 0, 1000000).value_or(-1);
                 if (opIndex >= 0 && static_cast<std::size_t>(opIndex) >= st.ops.size()) {
-                    local.add(*v.find("op"), "op", "op " + std::to_string(opIndex) + " is beyond the " + std::to_string(st.ops.size())
-                                                       + " ops of the header");
+                    local.add(*v.find("op"), "op", msg::make("file.log.op_beyond", {msg::integer("op", opIndex, msg::Unit::None),
+                                                                                    msg::integer("count", static_cast<long long>(st.ops.size()))}));
                     opIndex = -1;
                 }
             }
-            const std::string opText = std::to_string(opIndex);
+            const msg::Arg opArg = msg::integer("op", opIndex, msg::Unit::None);
             const auto pUl = o.number("p_ul", false, -1e9, 1e9);
             if (*event == "resume") {
                 ++st.runs;
@@ -92,7 +92,7 @@ RunLogState readRunLog(std::string_view text)
                 const bool closed = r.state == OpState::Done || r.state == OpState::Skipped;
                 if (*event == "start") {
                     if (closed)
-                        local.add(v, "op", "op " + opText + " starts again after it was done: the log is not trustworthy");
+                        local.add(v, "op", msg::make("file.log.op_restarted", {opArg}));
                     r.state = OpState::Started;
                     r.kind = o.string("kind", false).value_or("");
                     r.plate = o.string("plate", false).value_or("");
@@ -105,19 +105,19 @@ RunLogState readRunLog(std::string_view text)
                     ++r.starts;
                 } else if (*event == "pump") {
                     if (r.state != OpState::Started)
-                        local.add(v, "op", "a pump line for op " + opText + ", which has not started");
+                        local.add(v, "op", msg::make("file.log.pump_before_start", {opArg}));
                     r.state = OpState::Interrupted;
                     r.pumpStartUl = pUl;
                 } else if (*event == "done") {
                     if (r.state != OpState::Started && r.state != OpState::Interrupted)
-                        local.add(v, "op", "op " + opText + " is done but was not under way");
+                        local.add(v, "op", msg::make("file.log.done_not_started", {opArg}));
                     r.state = OpState::Done;
                     r.pumpEndUl = pUl;
                     if (pUl)
                         st.lastPumpUl = pUl;
                 } else if (*event == "skip") {
                     if (r.state != OpState::Interrupted)
-                        local.add(v, "op", "only an interrupted op can be skipped (op " + opText + ")");
+                        local.add(v, "op", msg::make("file.log.skip_not_interrupted", {opArg}));
                     r.state = OpState::Skipped;
                     o.string("reason", false);
                     if (pUl)
@@ -134,7 +134,7 @@ RunLogState readRunLog(std::string_view text)
             break;
     }
     if (!header && st.problems.empty())
-        st.problems.add(jsonio::Position{1, 1}, "", text.empty() ? "the log is empty" : "the log has no \"run\" header");
+        st.problems.add(jsonio::Position{1, 1}, "", msg::make(text.empty() ? "file.log.empty" : "file.log.no_header"));
     return st;
 }
 

@@ -12,13 +12,19 @@ namespace platefiles {
 
 RunLogWriter::~RunLogWriter() { close(); }
 
-bool RunLogWriter::open(const QString& path, int flags, QString* error)
+msg::Message RunLogWriter::problem(const char* id) const
+{
+    // strerror: the system's words for what the disk said (English on most systems).
+    return msg::make(id, {msg::verbatim("file", m_path.toStdString()), msg::verbatim("detail", std::strerror(errno))});
+}
+
+bool RunLogWriter::open(const QString& path, int flags, msg::Message* error)
 {
     close();
     const QByteArray name = QFile::encodeName(path);
     m_fd = ::open(name.constData(), flags | O_WRONLY | O_APPEND | O_CLOEXEC, 0644);
     if (m_fd < 0) {
-        m_error = QStringLiteral("cannot open the run log %1: %2").arg(path, QString::fromLocal8Bit(std::strerror(errno)));
+        m_error = msg::make("file.log.cannot_open", {msg::verbatim("file", path.toStdString()), msg::verbatim("detail", std::strerror(errno))});
         if (error)
             *error = m_error;
         return false;
@@ -27,9 +33,9 @@ bool RunLogWriter::open(const QString& path, int flags, QString* error)
     return true;
 }
 
-bool RunLogWriter::create(const QString& path, QString* error) { return open(path, O_CREAT | O_EXCL, error); }
+bool RunLogWriter::create(const QString& path, msg::Message* error) { return open(path, O_CREAT | O_EXCL, error); }
 
-bool RunLogWriter::append(const QString& path, QString* error) { return open(path, 0, error); }
+bool RunLogWriter::append(const QString& path, msg::Message* error) { return open(path, 0, error); }
 
 void RunLogWriter::close()
 {
@@ -41,7 +47,7 @@ void RunLogWriter::close()
 bool RunLogWriter::write(jsonio::Value line)
 {
     if (m_fd < 0) {
-        m_error = QStringLiteral("the run log is not open");
+        m_error = msg::make("file.log.not_open");
         return false;
     }
     line.set("time", QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs).toStdString());
@@ -52,13 +58,13 @@ bool RunLogWriter::write(jsonio::Value line)
         if (n < 0 && errno == EINTR)
             continue;
         if (n <= 0) {
-            m_error = QStringLiteral("cannot write the run log %1: %2").arg(m_path, QString::fromLocal8Bit(std::strerror(errno)));
+            m_error = problem("file.log.cannot_write");
             return false;
         }
         done += static_cast<std::size_t>(n);
     }
     if (::fsync(m_fd) != 0) {
-        m_error = QStringLiteral("cannot sync the run log %1 to disk: %2").arg(m_path, QString::fromLocal8Bit(std::strerror(errno)));
+        m_error = problem("file.log.cannot_sync");
         return false;
     }
     return true;

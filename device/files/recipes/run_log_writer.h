@@ -5,6 +5,8 @@
 // not say did not.
 #include "device/files/json.h"
 
+#include "motion/message.h"
+
 #include <QString>
 
 namespace platefiles {
@@ -17,23 +19,25 @@ public:
     RunLogWriter& operator=(const RunLogWriter&) = delete;
 
     /// A new log: refuses to overwrite an existing file (a log is a record).
-    bool create(const QString& path, QString* error);
+    bool create(const QString& path, msg::Message* error);
     /// An existing log, to continue it.
-    bool append(const QString& path, QString* error);
+    bool append(const QString& path, msg::Message* error);
     void close();
     bool isOpen() const { return m_fd >= 0; }
     QString path() const { return m_path; }
-    QString lastError() const { return m_error; }
+    /// file.log.cannot_open / cannot_write / cannot_sync / not_open {file, detail}.
+    msg::Message lastError() const { return m_error; }
 
     /// One JSON object as one line; the time ("time") is added here. False (and
     /// lastError()) when the disk refused: a run must stop then.
     bool write(jsonio::Value line);
 
 private:
-    bool open(const QString& path, int flags, QString* error);
+    bool open(const QString& path, int flags, msg::Message* error);
+    msg::Message problem(const char* id) const;
     int m_fd = -1;
     QString m_path;
-    QString m_error;
+    msg::Message m_error;
 };
 
 } // namespace platefiles

@@ -210,7 +210,7 @@ void AccuracyRunner::onMoveAccepted(const std::optional<dev::RequestError>& erro
     if (generation != m_generation || !isActive())
         return;
     if (error) {
-        stopWith(msg::make("accuracy.run.move_refused", {msg::verbatim("detail", error->message.toStdString())}), false);
+        stopWith(msg::make("accuracy.run.move_refused", {msg::nested("detail", error->message)}), false);
         return;
     }
     m_moveAccepted = true;
@@ -240,8 +240,7 @@ void AccuracyRunner::onEvent(const dev::DeviceEvent& e)
         || e.kind == proto::EventKind::LostSteps) {
         const QString letter = e.axis < m_instrument->identity().axes.size() ? QString(m_instrument->identity().axes[e.axis].letter) : QString();
         stopWith(msg::make("accuracy.run.axis_stopped", {msg::verbatim("axis", letter.toStdString()),
-                                                         msg::verbatim("event", proto::eventKindName(e.kind)),
-                                                         msg::verbatim("detail", e.text.toStdString())}),
+                                                         msg::term("event", proto::eventKindTerm(e.kind)), eventDetail(e)}),
                  e.kind == proto::EventKind::LostSteps);
     }
 }
@@ -270,7 +269,7 @@ void AccuracyRunner::pollSettle()
         if (!self || generation != self->m_generation || !self->isActive())
             return;
         if (e) {
-            self->stopWith(msg::make("accuracy.run.status_failed", {msg::verbatim("detail", e->message.toStdString())}), false);
+            self->stopWith(msg::make("accuracy.run.status_failed", {msg::nested("detail", e->message)}), false);
             return;
         }
         self->onStatus(s);
@@ -370,7 +369,9 @@ void AccuracyRunner::onReading(const TakeResult& r, bool settled, quint64 device
     e.targetMm = s.targetMm;
     if (!r.deferred) {
         if (r.valuesMm.size() != s.targetMm.size()) {
-            stopWith(msg::make("accuracy.run.status_failed", {msg::verbatim("detail", "a reading without a value per axis")}), false);
+            stopWith(msg::make("accuracy.run.reading_incomplete", {msg::integer("count", static_cast<long long>(r.valuesMm.size())),
+                                                                   msg::integer("expected", static_cast<long long>(s.targetMm.size()))}),
+                     false);
             return;
         }
         e.measuredMm = r.valuesMm;

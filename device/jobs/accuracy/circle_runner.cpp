@@ -44,8 +44,7 @@ CircleRunner::CircleRunner(dev::Instrument* instrument, QObject* parent) : QObje
                 nextRun();
         } else if (e.kind == proto::EventKind::Stopped || e.kind == proto::EventKind::LimitHit || e.kind == proto::EventKind::Fault) {
             stopWith(msg::make("accuracy.run.axis_stopped", {msg::verbatim("axis", e.axis == m_axisX ? "X" : "Y"),
-                                                             msg::verbatim("event", proto::eventKindName(e.kind)),
-                                                             msg::verbatim("detail", e.text.toStdString())}));
+                                                             msg::term("event", proto::eventKindTerm(e.kind)), eventDetail(e)}));
         }
     });
     m_connections << connect(instrument, &dev::Instrument::stateChanged, this, [this](dev::LinkState s) {
@@ -184,7 +183,7 @@ void CircleRunner::beginDirection()
                            if (!self || generation != self->m_generation || !self->isActive())
                                return;
                            if (e) {
-                               self->stopWith(msg::make("accuracy.run.move_refused", {msg::verbatim("detail", e->message.toStdString())}));
+                               self->stopWith(msg::make("accuracy.run.move_refused", {msg::nested("detail", e->message)}));
                                return;
                            }
                            self->m_moveAccepted = true;
@@ -242,7 +241,7 @@ void CircleRunner::nextRun()
         if (!self || generation != self->m_generation || !self->isActive())
             return;
         if (e) {
-            self->stopWith(msg::make("accuracy.run.move_refused", {msg::verbatim("detail", e->message.toStdString())}));
+            self->stopWith(msg::make("accuracy.run.move_refused", {msg::nested("detail", e->message)}));
             return;
         }
         self->m_paths->append(0, path, true, true, [self, generation](const std::optional<dev::RequestError>& e2, const dev::PathQueueState&) {
@@ -257,7 +256,7 @@ void CircleRunner::onPathAppended(const std::optional<dev::RequestError>& e, qui
     if (generation != m_generation || !isActive())
         return;
     if (e) {
-        stopWith(msg::make("accuracy.run.move_refused", {msg::verbatim("detail", e->message.toStdString())}));
+        stopWith(msg::make("accuracy.run.move_refused", {msg::nested("detail", e->message)}));
         return;
     }
     poll();
@@ -273,7 +272,7 @@ void CircleRunner::poll()
         if (!self || generation != self->m_generation || !self->isActive())
             return;
         if (e) {
-            self->stopWith(msg::make("accuracy.run.status_failed", {msg::verbatim("detail", e->message.toStdString())}));
+            self->stopWith(msg::make("accuracy.run.status_failed", {msg::nested("detail", e->message)}));
             return;
         }
         if (self->m_axisX < s.axes.size() && self->m_axisY < s.axes.size())

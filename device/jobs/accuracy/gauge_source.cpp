@@ -7,7 +7,7 @@ GaugeSource::GaugeSource(dev::Transport* transport, const QString& port, QObject
 {
 }
 
-QString GaugeSource::describe() const { return tr("gauge on %1").arg(m_link->port()); }
+msg::Message GaugeSource::describe() const { return msg::make("accuracy.source.gauge", {msg::verbatim("port", m_link->port().toStdString())}); }
 
 void GaugeSource::open(OpenDone done) { m_link->open(std::move(done)); }
 

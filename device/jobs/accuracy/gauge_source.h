@@ -16,7 +16,7 @@ public:
     GaugeSource(dev::Transport* transport, const QString& port, QObject* parent = nullptr);
 
     ReadingKind kind() const override { return ReadingKind::Gauge; }
-    QString describe() const override;
+    msg::Message describe() const override;
     void open(OpenDone done) override;
     void close() override;
     void take(const StopContext& stop, TakeDone done) override;

@@ -14,7 +14,7 @@ public:
     using ReadingSource::ReadingSource;
 
     ReadingKind kind() const override { return ReadingKind::Interferometer; }
-    QString describe() const override { return tr("laser interferometer (imported after the run)"); }
+    msg::Message describe() const override { return msg::make("accuracy.source.interferometer"); }
     void take(const StopContext& stop, TakeDone done) override
     {
         (void)stop;

@@ -15,7 +15,7 @@ public:
     using ReadingSource::ReadingSource;
 
     ReadingKind kind() const override { return ReadingKind::Manual; }
-    QString describe() const override { return tr("manual entry"); }
+    msg::Message describe() const override { return msg::make("accuracy.source.manual"); }
     int maxAxes() const override { return 2; }
     void take(const StopContext& stop, TakeDone done) override;
     void cancel() override;

@@ -4,12 +4,12 @@ namespace jobs {
 
 ReadbackSource::ReadbackSource(dev::Instrument* instrument, QObject* parent) : ReadingSource(parent), m_instrument(instrument) {}
 
-QString ReadbackSource::describe() const
+msg::Message ReadbackSource::describe() const
 {
     if (!m_instrument)
-        return tr("readback");
-    return m_instrument->identity().kind == proto::DeviceKind::Stage ? tr("the stage's grating (readback)")
-                                                                     : tr("the analyzer's encoder (readback)");
+        return msg::make("accuracy.source.readback");
+    return msg::make(m_instrument->identity().kind == proto::DeviceKind::Stage ? "accuracy.source.stage_grating"
+                                                                               : "accuracy.source.analyzer_encoder");
 }
 
 void ReadbackSource::take(const StopContext& stop, TakeDone done)
@@ -25,12 +25,14 @@ void ReadbackSource::take(const StopContext& stop, TakeDone done)
             return;
         TakeResult r;
         if (e) {
-            r.problem = msg::make("accuracy.run.status_failed", {msg::verbatim("detail", e->message.toStdString())});
+            r.problem = msg::make("accuracy.run.status_failed", {msg::nested("detail", e->message)});
             return done(r);
         }
-        for (int axis : stop.axes) {
+        for (std::size_t n = 0; n < stop.axes.size(); ++n) {
+            const int axis = stop.axes[n];
             if (axis < 0 || axis >= s.axes.size()) {
-                r.problem = msg::make("accuracy.run.status_failed", {msg::verbatim("detail", "no such axis")});
+                const std::string letter = n < stop.letters.size() ? QString(stop.letters[n]).toStdString() : std::to_string(axis);
+                r.problem = msg::make("accuracy.run.status_no_axis", {msg::verbatim("axis", letter)});
                 r.valuesMm.clear();
                 return done(r);
             }

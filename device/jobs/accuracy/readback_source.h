@@ -17,7 +17,7 @@ public:
     explicit ReadbackSource(dev::Instrument* instrument, QObject* parent = nullptr);
 
     ReadingKind kind() const override { return ReadingKind::Readback; }
-    QString describe() const override;
+    msg::Message describe() const override;
     int maxAxes() const override { return 8; }
     void take(const StopContext& stop, TakeDone done) override;
     void cancel() override { ++m_generation; }

@@ -1,5 +1,7 @@
 #include "device/jobs/accuracy/reading_source.h"
 
+#include "device/client/instrument_types.h"
+
 namespace jobs {
 
 const char* readingKindName(ReadingKind k)
@@ -11,6 +13,22 @@ const char* readingKindName(ReadingKind k)
     case ReadingKind::Manual: return "manual";
     }
     return "readback";
+}
+
+const char* readingKindTerm(ReadingKind k)
+{
+    switch (k) {
+    case ReadingKind::Readback: return "accuracy.source_kind.readback";
+    case ReadingKind::Gauge: return "accuracy.source_kind.gauge";
+    case ReadingKind::Interferometer: return "accuracy.source_kind.interferometer";
+    case ReadingKind::Manual: return "accuracy.source_kind.manual";
+    }
+    return "accuracy.source_kind.readback";
+}
+
+msg::Arg eventDetail(const dev::DeviceEvent& e)
+{
+    return e.detail.empty() ? msg::verbatim("detail", e.text.toStdString()) : msg::nested("detail", e.detail);
 }
 
 } // namespace jobs

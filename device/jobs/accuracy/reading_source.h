@@ -20,11 +20,21 @@
 #include <functional>
 #include <vector>
 
+namespace dev {
+struct DeviceEvent;
+}
+
 namespace jobs {
 
 enum class ReadingKind { Readback, Gauge, Interferometer, Manual };
 /// "readback", "gauge", "interferometer", "manual": the result file's "reference".
 const char* readingKindName(ReadingKind k);
+/// The term that names the kind for a person: accuracy.source_kind.* (words::term).
+const char* readingKindTerm(ReadingKind k);
+
+/// A device event's "detail" argument: the backend's structured form where it has
+/// one (GRBL's alarms), else the text the device sent, as it sent it.
+msg::Arg eventDetail(const dev::DeviceEvent& e);
 
 /// One stop of a run, as a source needs to know it.
 struct StopContext {
@@ -52,8 +62,9 @@ public:
     ~ReadingSource() override = default;
 
     virtual ReadingKind kind() const = 0;
-    /// For a person and the report: "gauge on /dev/ttyUSB1", "grating (readback)".
-    virtual QString describe() const = 0;
+    /// For a person and the report (accuracy.source.*): "gauge on /dev/ttyUSB1",
+    /// "the stage's grating (readback)".
+    virtual msg::Message describe() const = 0;
     /// How many axes one reading can cover (a gauge reads one).
     virtual int maxAxes() const { return 1; }
 

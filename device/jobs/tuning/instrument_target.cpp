@@ -35,9 +35,7 @@ InstrumentTarget::InstrumentTarget(TuningClient* tuning, int axis, const QString
             return;
         RunOutcome out;
         out.linkLost = true;
-        out.error = tr("the link to %1 was lost; the device ends the test by itself within 0.5 s and holds the axis "
-                       "under the gains it had before")
-                        .arg(m_name);
+        out.error = msg::make("tuning.target.link_lost", {msg::verbatim("target", m_name.toStdString())});
         if (m_running)
             emit testRunning(false);
         m_running = false;
@@ -119,7 +117,7 @@ void InstrumentTarget::abort()
 void InstrumentTarget::fetch()
 {
     QPointer<InstrumentTarget> self(this);
-    emit runProgress(0, tr("reading the device's capture"));
+    emit runProgress(0, msg::make("tuning.target.reading_capture"));
     m_tuning->fetchCapture(
         m_axis,
         [self](const std::optional<RequestError>& e, const TestCapture& c) {
@@ -137,7 +135,8 @@ void InstrumentTarget::fetch()
         },
         [self](int received, int total) {
             if (self && total > 0)
-                emit self->runProgress(double(received) / total, tr("reading the device's capture: %1 of %2 samples").arg(received).arg(total));
+                emit self->runProgress(double(received) / total, msg::make("tuning.target.reading_capture_of", {msg::integer("received", received),
+                                                                                                                msg::integer("total", total)}));
         });
 }
 

@@ -13,10 +13,10 @@ ModelTarget::ModelTarget(const PlantSpec& plant, QObject* parent) : TuningTarget
 
 QString ModelTarget::describe() const { return QString::fromStdString(m_spec.text()); }
 
-QString ModelTarget::cannotTune() const
+msg::Message ModelTarget::cannotTune() const
 {
-    const std::string why = whyNoUltimateGain(m_spec);
-    return why.empty() ? QString() : tr("%1: %2").arg(describe(), QString::fromStdString(why));
+    const msg::Message why = whyNoUltimateGain(m_spec);
+    return why.empty() ? msg::Message() : msg::make("tuning.model.no_ultimate_gain", {msg::verbatim("plant", m_spec.text()), msg::nested("cause", why)});
 }
 
 void ModelTarget::runStep(const StepSpec& spec, bool trial, double swing, Done done)
@@ -40,7 +40,7 @@ void ModelTarget::deliver(Experiment x, bool fromRest, EarlyStop stop, Done done
             return;
         RunOutcome out;
         if (self->m_aborted) {
-            out.error = tr("aborted");
+            out.error = msg::make("tuning.target.aborted");
             return done(out);
         }
         if (fromRest || !self->m_sim)

@@ -1,7 +1,6 @@
 #include "device/jobs/tuning/tuning_runner.h"
 #include "motion/numbers.h"
 
-#include "device/jobs/tuning/tuning_words.h"
 #include "motion/control/tuning/tuning_rules.h"
 
 #include <QDateTime>
@@ -14,20 +13,20 @@ using namespace motion::control;
 
 namespace {
 using motion::kPi;
-QString num(double v) { return QString::number(v, 'g', 4); }
+msg::Arg labelArg(const msg::Message& label) { return msg::nested("run", label); }
 } // namespace
 
-QString stateName(TuningRunner::State s)
+const char* stateTerm(TuningRunner::State s)
 {
     switch (s) {
-    case TuningRunner::State::Idle: return TuningRunner::tr("idle");
-    case TuningRunner::State::Running: return TuningRunner::tr("running");
-    case TuningRunner::State::Interrupted: return TuningRunner::tr("interrupted");
-    case TuningRunner::State::Done: return TuningRunner::tr("done");
-    case TuningRunner::State::Failed: return TuningRunner::tr("failed");
-    case TuningRunner::State::Aborted: return TuningRunner::tr("aborted");
+    case TuningRunner::State::Idle: return "tuning.state.idle";
+    case TuningRunner::State::Running: return "tuning.state.running";
+    case TuningRunner::State::Interrupted: return "tuning.state.interrupted";
+    case TuningRunner::State::Done: return "tuning.state.done";
+    case TuningRunner::State::Failed: return "tuning.state.failed";
+    case TuningRunner::State::Aborted: return "tuning.state.aborted";
     }
-    return {};
+    return "tuning.state.idle";
 }
 
 TuningRunner::TuningRunner(QObject* parent) : QObject(parent) { qRegisterMetaType<dev::TuningRunner::State>(); }
@@ -50,20 +49,19 @@ bool TuningRunner::startZn(TuningTarget* target, const ZnOptions& o)
 {
     if (busy())
         return false;
-    QString problem;
+    msg::Message problem;
     if (!target || !target->ready())
-        problem = tr("the target is not ready (connect the instrument first)");
-    else if (!target->cannotTune().isEmpty())
+        problem = msg::make("tuning.run.target_not_ready");
+    else if (!target->cannotTune().empty())
         problem = target->cannotTune();
     else if (!(o.envelope.maxExcursion > 0 && o.envelope.maxFollowingError > 0 && o.envelope.maxDurationS > 0))
-        problem = tr("every envelope limit must be above 0");
+        problem = msg::make("tuning.run.envelope_not_positive");
     else if (o.method == TuningMethod::UltimateGain && !(std::abs(o.step) > 0 && std::abs(o.step) < o.trialShare * o.envelope.maxExcursion
                                                            && std::abs(o.step) < o.trialShare * o.envelope.maxFollowingError))
-        problem = tr("the trial step must be above 0 and below %1 % of the envelope's excursion and following-error limits")
-                      .arg(std::lround(100 * o.trialShare));
+        problem = msg::make("tuning.run.trial_step_invalid", {msg::real("share", 100 * o.trialShare, msg::Unit::Percent)});
     else if (o.method == TuningMethod::Relay && !(o.relayAmplitude > 0 && o.hysteresis >= 0))
-        problem = tr("the relay amplitude must be above 0 and the hysteresis not negative");
-    if (!problem.isEmpty()) {
+        problem = msg::make("tuning.run.relay_invalid");
+    if (!problem.empty()) {
         emit finished(false, problem);
         return false;
     }
@@ -114,18 +112,19 @@ bool TuningRunner::startZn(TuningTarget* target, const ZnOptions& o)
     return true;
 }
 
-bool TuningRunner::startStepTest(TuningTarget* target, const StepSpec& spec, const QString& label)
+bool TuningRunner::startStepTest(TuningTarget* target, const StepSpec& spec, const msg::Message& label)
 {
     if (busy() || !target || !target->ready()) {
-        emit finished(false, tr("a step test cannot start now: %1").arg(busy() ? tr("another run is in progress") : tr("the target is not ready")));
+        emit finished(false, msg::make(busy() ? "tuning.run.step_busy" : "tuning.run.step_not_ready"));
         return false;
     }
+    // The firmware's own check, in its words (the reference device says the same).
     const auto problems = checkStepSpec(spec);
     if (!problems.empty()) {
-        QStringList p;
-        for (const auto& s : problems)
-            p << QString::fromStdString(s);
-        emit finished(false, tr("step test not started: %1").arg(p.join(QStringLiteral("; "))));
+        std::string joined;
+        for (const auto& p : problems)
+            joined += (joined.empty() ? "" : "; ") + p;
+        emit finished(false, msg::make("tuning.run.step_refused", {msg::verbatim("detail", joined)}));
         return false;
     }
     m_target = target;
@@ -136,7 +135,7 @@ bool TuningRunner::startStepTest(TuningTarget* target, const StepSpec& spec, con
     m_runSeconds = 0;
     setState(State::Running);
     m_pending = [this, spec, label] {
-        reportProgress(tr("step test %1").arg(label));
+        reportProgress(label);
         m_runClock.start();
         m_target->runStep(spec, false, 0, [this, label](const RunOutcome& out) { onRun(out, 3, label); });
     };
@@ -148,7 +147,7 @@ void TuningRunner::abort()
 {
     if (m_state == State::Interrupted) {
         setState(State::Aborted);
-        emit finished(false, tr("aborted while interrupted: nothing is running on the device"));
+        emit finished(false, msg::make("tuning.run.aborted_while_interrupted"));
         return;
     }
     if (!busy())
@@ -164,7 +163,7 @@ bool TuningRunner::resume()
         return false;
     m_abortRequested = false;
     setState(State::Running);
-    emit message(tr("resumed: running the interrupted experiment again"));
+    emit message(msg::make("tuning.run.resumed"));
     m_pending();
     return true;
 }
@@ -183,16 +182,16 @@ int TuningRunner::remainingRunsEstimate() const
     return 1;
 }
 
-void TuningRunner::reportProgress(const QString& what)
+void TuningRunner::reportProgress(const msg::Message& what)
 {
     const int left = remainingRunsEstimate();
     const double fraction = double(m_runsDone) / double(m_runsDone + left);
-    QString text = what;
     if (m_runsDone > 0) {
         const double eta = m_runSeconds / m_runsDone * left;
-        text += tr(" — about %1 s left").arg(std::max(1L, std::lround(eta)));
+        emit progress(fraction, msg::make("tuning.progress.with_eta", {labelArg(what), msg::real("eta", std::max(1L, std::lround(eta)), msg::Unit::S)}));
+        return;
     }
-    emit progress(fraction, text);
+    emit progress(fraction, what);
 }
 
 void TuningRunner::next()
@@ -226,7 +225,7 @@ void TuningRunner::runTrial(double kp)
     s.envelope = trialEnvelope(m_options.envelope, m_options.trialShare);
     s.envelope.maxDurationS = device ? m_options.trialS + 0.2 : m_options.envelope.maxDurationS * 1.01;
     const int n = static_cast<int>(m_search->trials().size()) + 1;
-    const QString label = tr("trial %1: Kp = %2").arg(n).arg(num(kp));
+    const msg::Message label = msg::make("tuning.label.trial", {msg::integer("trial", n, msg::Unit::None), msg::real("kp", kp)});
     const double swing = m_swing * m_search->stepScale();
     m_currentKp = kp;
     m_pending = [this, s, label, swing] {
@@ -245,7 +244,8 @@ void TuningRunner::runRelay(const RelaySpec& spec0)
     // Long enough for the cycles asked, with room to settle; the relay's own period is not known yet.
     s.envelope.maxDurationS = forced ? std::min(m_options.envelope.maxDurationS, s.forcedPeriodS * (s.cycles + 2) * 1.5 + 0.2)
                                      : m_options.envelope.maxDurationS;
-    const QString label = forced ? tr("forced run at %1 s period").arg(num(s.forcedPeriodS)) : tr("relay run");
+    const msg::Message label = forced ? msg::make("tuning.label.forced_run", {msg::real("period", s.forcedPeriodS, msg::Unit::S)})
+                                      : msg::make("tuning.label.relay_run");
     const bool continueRun = forced;
     m_pending = [this, s, label, continueRun, forced] {
         reportProgress(label);
@@ -255,36 +255,32 @@ void TuningRunner::runRelay(const RelaySpec& spec0)
     m_pending();
 }
 
-bool TuningRunner::endedBadly(const Record& r, const QString& label)
+bool TuningRunner::endedBadly(const Record& r, const msg::Message& label)
 {
     switch (r.reason) {
     case EndReason::EStop:
-        fail(tr("E-stop during %1: the device ended the test and halted the axis; the gains in force are the ones "
-                "from before (trial gains only ever lived inside the test)")
-                 .arg(label));
+        fail(msg::make("tuning.run.estop", {labelArg(label)}));
         return true;
     case EndReason::HostSilent:
         setState(State::Interrupted);
-        emit message(tr("%1 ended because the device heard nothing from BenchPilot for 0.5 s; the axis holds under "
-                        "its own gains. Resume when the link is steady.")
-                         .arg(label));
+        emit message(msg::make("tuning.run.host_silent", {labelArg(label)}));
         return true;
     case EndReason::Fault:
-        fail(tr("a fault or a switch ended %1; the axis is stopped").arg(label));
+        fail(msg::make("tuning.run.fault", {labelArg(label)}));
         return true;
     case EndReason::Stopped:
         if (m_abortRequested) {
             setState(State::Aborted);
-            emit finished(false, tr("aborted during %1: the axis is stopped, its gains unchanged").arg(label));
+            emit finished(false, msg::make("tuning.run.aborted_during", {labelArg(label)}));
         } else {
-            fail(tr("%1 was stopped (STOP or TEST_ABORT from elsewhere); the axis is stopped, its gains unchanged").arg(label));
+            fail(msg::make("tuning.run.stopped_elsewhere", {labelArg(label)}));
         }
         return true;
     default: return false;
     }
 }
 
-void TuningRunner::onRun(const RunOutcome& out, int kind, const QString& label)
+void TuningRunner::onRun(const RunOutcome& out, int kind, const msg::Message& label)
 {
     if (m_state != State::Running)
         return;
@@ -292,12 +288,12 @@ void TuningRunner::onRun(const RunOutcome& out, int kind, const QString& label)
     if (!out.ok) {
         if (m_abortRequested) {
             setState(State::Aborted);
-            emit finished(false, tr("aborted during %1: the axis is stopped, its gains unchanged").arg(label));
+            emit finished(false, msg::make("tuning.run.aborted_during", {labelArg(label)}));
         } else if (out.linkLost) {
             setState(State::Interrupted);
-            emit message(tr("%1 interrupted: %2. Reconnect, then Resume to run it again.").arg(label, out.error));
+            emit message(msg::make("tuning.run.interrupted", {labelArg(label), msg::nested("cause", out.error)}));
         } else {
-            fail(tr("%1: %2").arg(label, out.error));
+            fail(msg::make("tuning.run.failed", {labelArg(label), msg::nested("cause", out.error)}));
         }
         return;
     }
@@ -319,30 +315,30 @@ void TuningRunner::onRun(const RunOutcome& out, int kind, const QString& label)
             m_result.verification = v;
         }
         setState(State::Done);
-        emit progress(1, m_verifying ? tr("verified") : tr("step test done"));
-        emit finished(true, m_verifying ? tr("Ku = %1, Tu = %2 s; verification step test with %3 gains: %4")
-                                              .arg(num(m_result.ku), num(m_result.tuS), QString::fromStdString(m_options.verifyRule),
-                                                   endReasonText(out.record.reason))
-                                        : tr("%1: %2").arg(label, endReasonText(out.record.reason)));
+        emit progress(1, msg::make(m_verifying ? "tuning.progress.verified" : "tuning.progress.step_done"));
+        const msg::Arg reason = msg::term("reason", endReasonTerm(out.record.reason));
+        emit finished(true, m_verifying ? msg::make("tuning.run.verified", {msg::real("ku", m_result.ku), msg::real("tu", m_result.tuS, msg::Unit::S),
+                                                                            msg::term("rule", "tuning.rule." + m_options.verifyRule), reason})
+                                        : msg::make("tuning.run.step_done", {labelArg(label), reason}));
         return;
     }
     if (m_abortRequested) {
         setState(State::Aborted);
-        emit finished(false, tr("aborted after %1: nothing runs on the target; the gains in force are unchanged").arg(label));
+        emit finished(false, msg::make("tuning.run.aborted_after", {labelArg(label)}));
         return;
     }
     if (m_search) {
         m_search->report(m_currentKp, out.record);
         const UltimateTrial& t = m_search->trials().back();
         if (t.inconclusive)
-            emit message(tr("%1 hit the envelope before a cycle could be measured: repeating it with half the step").arg(label));
+            emit message(msg::make("tuning.run.repeat_half_step", {labelArg(label)}));
     } else if (m_relay) {
         m_relay->report(out.record);
     }
     next();
 }
 
-void TuningRunner::fail(const QString& why)
+void TuningRunner::fail(const msg::Message& why)
 {
     setState(State::Failed);
     emit finished(false, why);
@@ -369,14 +365,14 @@ void TuningRunner::concludeSearch()
             m_result.trials.push_back(tr);
         }
         if (!m_search->result()) {
-            fail(tr("ultimate-gain search: %1").arg(QString::fromStdString(m_search->failure())));
+            fail(msg::make("tuning.run.ultimate_failed", {msg::nested("cause", m_search->failure())}));
             return;
         }
         m_result.ku = m_search->result()->ku;
         m_result.tuS = m_search->result()->tuS;
     } else if (m_relay) {
         if (!m_relay->result()) {
-            fail(tr("relay autotune: %1").arg(QString::fromStdString(m_relay->failure())));
+            fail(msg::make("tuning.run.relay_failed", {msg::nested("cause", m_relay->failure())}));
             return;
         }
         const RelayResult& r = *m_relay->result();
@@ -388,13 +384,13 @@ void TuningRunner::concludeSearch()
         for (const auto& p : r.points)
             m_result.points.push_back({p.omegaRadS, p.gain(), p.phaseRad() * 180 / kPi});
         if (!m_relay->failure().empty())
-            emit message(QString::fromStdString(m_relay->failure()));
+            emit message(m_relay->failure());
     }
     emit ultimateFound(m_result.ku, m_result.tuS);
     if (m_options.verifyRule.empty() || !findRule(m_options.verifyRule)) {
         setState(State::Done);
-        emit progress(1, tr("done"));
-        emit finished(true, tr("Ku = %1, Tu = %2 s").arg(num(m_result.ku), num(m_result.tuS)));
+        emit progress(1, msg::make("tuning.progress.done"));
+        emit finished(true, msg::make("tuning.run.found", {msg::real("ku", m_result.ku), msg::real("tu", m_result.tuS, msg::Unit::S)}));
         return;
     }
     runVerification();
@@ -416,7 +412,7 @@ void TuningRunner::runVerification()
     }
     s.envelope = m_options.envelope;
     s.envelope.maxFollowingError = std::max(s.envelope.maxFollowingError, 1.5 * std::abs(s.step));
-    const QString label = tr("verification with %1 gains").arg(QString::fromStdString(m_options.verifyRule));
+    const msg::Message label = msg::make("tuning.label.verification", {msg::term("rule", "tuning.rule." + m_options.verifyRule)});
     m_pending = [this, s, label] {
         reportProgress(label);
         m_runClock.start();

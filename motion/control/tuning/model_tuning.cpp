@@ -86,9 +86,9 @@ Envelope trialEnvelope(const Envelope& e, double share)
 ModelTuning tuneModel(const PlantSpec& plant, const ModelTuningOptions& o, const TuningProgress& progress)
 {
     ModelTuning out;
-    const std::string why = whyNoUltimateGain(plant);
+    const msg::Message why = whyNoUltimateGain(plant);
     if (!why.empty()) {
-        out.error = plant.text() + ": " + why;
+        out.error = msg::make("tuning.model.no_ultimate_gain", {msg::verbatim("plant", plant.text()), msg::nested("cause", why)});
         return out;
     }
     const Envelope trialEnv = trialEnvelope(o.envelope, o.trialShare);
@@ -113,7 +113,8 @@ ModelTuning tuneModel(const PlantSpec& plant, const ModelTuningOptions& o, const
             if (progress) {
                 const auto& t = search.trials().back();
                 progress(static_cast<int>(out.runs.size()),
-                         "Kp = " + shortNumber(*kp) + (t.oscillation.oscillating ? ": cycle ratio " + shortNumber(t.oscillation.ratio) : ": no oscillation"));
+                         t.oscillation.oscillating ? msg::make("tuning.progress.trial", {msg::real("kp", *kp), msg::real("ratio", t.oscillation.ratio)})
+                                                   : msg::make("tuning.progress.trial_no_oscillation", {msg::real("kp", *kp)}));
             }
         }
         out.trials = search.trials();
@@ -143,7 +144,9 @@ ModelTuning tuneModel(const PlantSpec& plant, const ModelTuningOptions& o, const
         tuner.report(r);
         out.runs.push_back(std::move(r));
         if (progress)
-            progress(static_cast<int>(out.runs.size()), s.forcedPeriodS > 0 ? "forced run at period " + shortNumber(s.forcedPeriodS) + " s" : "relay run");
+            progress(static_cast<int>(out.runs.size()), s.forcedPeriodS > 0
+                                                            ? msg::make("tuning.progress.forced_run", {msg::real("period", s.forcedPeriodS, msg::Unit::S)})
+                                                            : msg::make("tuning.progress.relay_run"));
     }
     if (!tuner.result()) {
         out.error = tuner.failure();

@@ -3,6 +3,8 @@
 // and the plant's frequency response at its frequency.
 #include "motion/control/experiment.h"
 
+#include "motion/message.h"
+
 #include <complex>
 #include <cstddef>
 #include <string>
@@ -64,7 +66,7 @@ FrequencyPoint fourierPoint(const Record& r, std::size_t first, std::size_t samp
 /// describing-function estimate and the exact first (and third) harmonic point.
 struct RelayAnalysis {
     bool ok = false;
-    std::string problem;        ///< why not, when !ok
+    msg::Message problem;       ///< why not, when !ok (tuning.relay.*)
     double periodS = 0;         ///< Tu estimate
     double amplitude = 0;       ///< a: half the output's peak-to-peak
     double kuDescribing = 0;    ///< 4d / (π·sqrt(a² − ε²))

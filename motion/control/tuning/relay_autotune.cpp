@@ -36,9 +36,9 @@ void RelayAutotune::report(const Record& run)
     if (m_forcedSamples == 0) {
         const RelayAnalysis a = analyzeRelay(run, m_options.amplitude, m_options.hysteresis, m_options.input);
         if (!a.ok) {
-            m_failure = a.problem;
-            if (!endedNormally(run.reason))
-                m_failure += std::string(" (the run ended: ") + endReasonName(run.reason) + ")";
+            m_failure = endedNormally(run.reason)
+                ? a.problem
+                : msg::make("tuning.relay.failed_run_ended", {msg::nested("cause", a.problem), msg::term("reason", endReasonTerm(run.reason))});
             m_next.reset();
             return;
         }
@@ -64,8 +64,7 @@ void RelayAutotune::report(const Record& run)
         return;
     }
     if (!endedNormally(run.reason)) {
-        m_failure = std::string("a refinement run ended early (") + endReasonName(run.reason)
-            + "): the classic relay estimate is reported";
+        m_failure = msg::make("tuning.relay.refinement_ended", {msg::term("reason", endReasonTerm(run.reason))});
         m_result = m_work;
         m_next.reset();
         return;
@@ -146,9 +145,8 @@ void RelayAutotune::planForced()
         }
     }
     if (forcedRuns >= m_options.maxForcedRuns) {
-        m_failure = "the refinement found no point lagging " + std::string(less ? "more" : "less") + " than 180° between ω = "
-            + shortNumber(m_minOmega) + " and " + shortNumber(m_maxOmega) + " rad/s"
-            + (less ? ": the phase may never reach −180° (no finite ultimate gain)" : "") + "; the classic relay estimate is reported";
+        m_failure = msg::make(less ? "tuning.relay.no_point_lagging_more" : "tuning.relay.no_point_lagging_less",
+                              {msg::real("from", m_minOmega), msg::real("to", m_maxOmega)});
         m_result = m_work;
         m_next.reset();
         return;
@@ -186,7 +184,7 @@ void RelayAutotune::planForced()
             if (less && more)
                 finishWith(*less, more);
             else {
-                m_failure = "the refinement reached the loop's Nyquist limit: the classic relay estimate is reported";
+                m_failure = msg::make("tuning.relay.nyquist");
                 m_result = m_work;
                 m_next.reset();
             }

@@ -93,19 +93,19 @@ PlateTransform scaledAxesFit(const std::vector<TeachPoint>& pts, const PlateTran
 
 } // namespace
 
-std::optional<CalibrationFit> fitCalibration(const std::vector<TeachPoint>& pts, FitModel model, std::string* error,
+std::optional<CalibrationFit> fitCalibration(const std::vector<TeachPoint>& pts, FitModel model, msg::Message* error,
                                              double slotRotationDeg)
 {
-    auto fail = [&](const std::string& m) {
+    auto fail = [&](const msg::Message& m) {
         if (error)
             *error = m;
         return std::nullopt;
     };
     if (pts.size() < 2)
-        return fail("teach at least two wells (three to see a residual)");
+        return fail(msg::make("plate.calibration.too_few_wells"));
     for (const auto& t : pts)
         if (!std::isfinite(t.plateMm.x + t.plateMm.y + t.machineMm.x + t.machineMm.y))
-            return fail("well " + t.well + " has no position");
+            return fail(msg::make("plate.calibration.no_position", {textArg("well", t.well)}));
     double spreadPlate = 0, spreadMachine = 0;
     for (std::size_t i = 0; i < pts.size(); ++i)
         for (std::size_t j = 0; j < i; ++j) {
@@ -114,9 +114,9 @@ std::optional<CalibrationFit> fitCalibration(const std::vector<TeachPoint>& pts,
                                      std::hypot(pts[i].machineMm.x - pts[j].machineMm.x, pts[i].machineMm.y - pts[j].machineMm.y));
         }
     if (spreadPlate < 1 || spreadMachine < 1)
-        return fail("the taught wells are less than 1 mm apart: teach wells at the plate's corners");
+        return fail(msg::make("plate.calibration.too_close"));
     if (model == FitModel::ScaledAxes && pts.size() < 3)
-        return fail("a scale per axis needs three taught wells");
+        return fail(msg::make("plate.calibration.scaled_needs_three"));
 
     CalibrationFit fit;
     fit.model = model;
@@ -129,7 +129,7 @@ std::optional<CalibrationFit> fitCalibration(const std::vector<TeachPoint>& pts,
             area = std::max(area, std::abs((pts[i].plateMm.x - a.x) * (pts[i + 1].plateMm.y - a.y)
                                            - (pts[i].plateMm.y - a.y) * (pts[i + 1].plateMm.x - a.x)));
         if (area < 1)
-            return fail("the taught wells lie on one line: a scale per axis needs a row and a column");
+            return fail(msg::make("plate.calibration.on_one_line"));
         fit.transform = scaledAxesFit(pts, fit.transform);
     }
     const PlateTransform& t = fit.transform;
@@ -148,23 +148,23 @@ std::optional<CalibrationFit> fitCalibration(const std::vector<TeachPoint>& pts,
     // Least squares spreads one bad point over all of them, so the warning names
     // every residual rather than blaming the largest.
     if (fit.maxResidualMm > kResidualWarnMm) {
+        // The list is "A1 0.12, H12 0.3" in mm: well names and numbers a person
+        // compares with the table beside the message, the same in every language.
         std::string list;
         for (std::size_t i = 0; i < pts.size(); ++i)
             list += (i ? ", " : "") + pts[i].well + " " + formatMm(std::round(fit.residualMm[i] * 100) / 100);
-        fit.warnings.push_back("the taught wells are up to " + formatMm(std::round(fit.maxResidualMm * 100) / 100)
-                               + " mm off the plate's shape (" + list + " mm; more than " + formatMm(kResidualWarnMm)
-                               + " mm): one was taught off centre or on the wrong well; teach them again");
+        fit.warnings.push_back(msg::make("plate.calibration.large_residual",
+                                         {mmArg("max", std::round(fit.maxResidualMm * 100) / 100), textArg("list", list),
+                                          mmArg("limit", kResidualWarnMm)}));
     }
     for (double s : {fit.scaleX, fit.scaleY})
         if (std::abs(s - 1) > kScaleWarn) {
-            fit.warnings.push_back("the fitted scale is " + formatMm(s) + ": the taught wells are not as far apart as the labware says"
-                                   " (wrong labware, or a well taught on its neighbour)");
+            fit.warnings.push_back(msg::make("plate.calibration.scale_off", {msg::real("scale", s)}));
             break;
         }
     const double turn = std::remainder(fit.rotationDeg - slotRotationDeg, 360.0);
     if (std::abs(turn) > kRotationWarnDeg)
-        fit.warnings.push_back("the plate sits turned by " + formatMm(std::round(turn * 100) / 100)
-                               + "°: is it seated flat in the slot?");
+        fit.warnings.push_back(msg::make("plate.calibration.turned", {msg::real("angle", std::round(turn * 100) / 100, msg::Unit::Deg)}));
     return fit;
 }
 

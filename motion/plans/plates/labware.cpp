@@ -117,42 +117,42 @@ Problems validateLabware(const Labware& lw)
     Problems out;
     auto bad = [](double v) { return !std::isfinite(v) || v <= 0; };
     if (lw.id.empty())
-        out.push_back({"id", "must not be empty"});
+        out.push_back({"id", msg::make("plate.empty")});
     if (bad(lw.lengthMm) || lw.lengthMm > 500)
-        out.push_back({"length_mm", "must be more than 0 and at most 500 mm (got " + formatMm(lw.lengthMm) + ")"});
+        out.push_back({"length_mm", msg::make("plate.size_out_of_range", {mmArg("value", lw.lengthMm), mmArg("max", 500)})});
     if (bad(lw.widthMm) || lw.widthMm > 500)
-        out.push_back({"width_mm", "must be more than 0 and at most 500 mm (got " + formatMm(lw.widthMm) + ")"});
+        out.push_back({"width_mm", msg::make("plate.size_out_of_range", {mmArg("value", lw.widthMm), mmArg("max", 500)})});
     if (bad(lw.heightMm) || lw.heightMm > 200)
-        out.push_back({"height_mm", "must be more than 0 and at most 200 mm (got " + formatMm(lw.heightMm) + ")"});
+        out.push_back({"height_mm", msg::make("plate.size_out_of_range", {mmArg("value", lw.heightMm), mmArg("max", 200)})});
     if (lw.rows < 1 || lw.rows > kMaxRows || lw.columns < 1 || lw.columns > kMaxColumns)
-        out.push_back({"wells", "the grid must have 1–" + std::to_string(kMaxRows) + " rows and 1–" + std::to_string(kMaxColumns)
-                                    + " columns (got " + std::to_string(lw.rows) + " × " + std::to_string(lw.columns) + ")"});
+        out.push_back({"wells", msg::make("plate.labware.grid_size", {msg::integer("max_rows", kMaxRows), msg::integer("max_columns", kMaxColumns),
+                                                                      msg::integer("rows", lw.rows), msg::integer("columns", lw.columns)})});
     if (lw.wells.empty())
-        out.push_back({"wells", "a plate needs at least one well"});
+        out.push_back({"wells", msg::make("plate.labware.no_wells")});
     std::set<WellId> seen;
     for (std::size_t k = 0; k < lw.wells.size(); ++k) {
         const Well& w = lw.wells[k];
         const std::string at = indexPath("wells", k);
         const std::string name = wellName(w.id);
         if (w.id.row >= lw.rows || w.id.column >= lw.columns || w.id.row < 0 || w.id.column < 0)
-            out.push_back({at, "well " + name + " is outside the " + std::to_string(lw.rows) + " × " + std::to_string(lw.columns) + " grid"});
+            out.push_back({at, msg::make("plate.labware.well_outside_grid", {textArg("well", name), msg::integer("rows", lw.rows), msg::integer("columns", lw.columns)})});
         if (!seen.insert(w.id).second)
-            out.push_back({at, "well " + name + " is defined twice"});
+            out.push_back({at, msg::make("plate.labware.well_twice", {textArg("well", name)})});
         const double rx = w.shape == WellShape::Circular ? w.diameterMm / 2 : w.sizeXMm / 2;
         const double ry = w.shape == WellShape::Circular ? w.diameterMm / 2 : w.sizeYMm / 2;
         if (w.shape == WellShape::Circular ? bad(w.diameterMm) : (bad(w.sizeXMm) || bad(w.sizeYMm)))
-            out.push_back({at, "well " + name + " needs a size above 0"});
+            out.push_back({at, msg::make("plate.labware.well_no_size", {textArg("well", name)})});
         if (bad(w.depthMm) || !std::isfinite(w.bottomZMm) || w.bottomZMm < 0 || w.bottomZMm + w.depthMm > lw.heightMm + 1e-6)
-            out.push_back({at, "well " + name + ": its bottom (" + formatMm(w.bottomZMm) + " mm) plus its depth (" + formatMm(w.depthMm)
-                                   + " mm) must be above 0 and at most the plate's height " + formatMm(lw.heightMm) + " mm"});
+            out.push_back({at, msg::make("plate.labware.well_depth", {textArg("well", name), mmArg("bottom", w.bottomZMm), mmArg("depth", w.depthMm),
+                                                                      mmArg("height", lw.heightMm)})});
         if (bad(w.volumeUl))
-            out.push_back({at, "well " + name + " needs a volume above 0 µL"});
+            out.push_back({at, msg::make("plate.labware.well_no_volume", {textArg("well", name)})});
         if (!std::isfinite(w.xMm) || !std::isfinite(w.yMm) || w.xMm - rx < -1e-9 || w.yMm - ry < -1e-9
             || w.xMm + rx > lw.lengthMm + 1e-9 || w.yMm + ry > lw.widthMm + 1e-9)
-            out.push_back({at, "well " + name + " at (" + formatMm(w.xMm) + ", " + formatMm(w.yMm) + ") mm does not fit on the "
-                                   + formatMm(lw.lengthMm) + " × " + formatMm(lw.widthMm) + " mm footprint"});
+            out.push_back({at, msg::make("plate.labware.well_off_footprint", {textArg("well", name), mmArg("x", w.xMm), mmArg("y", w.yMm),
+                                                                              mmArg("length", lw.lengthMm), mmArg("width", lw.widthMm)})});
         if (out.size() > 50) {
-            out.push_back({"wells", "more problems not shown"});
+            out.push_back({"wells", msg::make("plate.more_not_shown")});
             break;
         }
     }

@@ -89,10 +89,11 @@ std::string quoted(const std::string& s)
 }
 
 /// One spec (no commas) → wells, or a problem message.
-bool expandOne(const std::string& spec, const Labware& lw, std::vector<WellId>& out, std::string* error)
+bool expandOne(const std::string& spec, const Labware& lw, std::vector<WellId>& out, msg::Message* error)
 {
+    const msg::Arg plateWells = msg::integer("wells", static_cast<long long>(lw.wells.size()));
     auto unknown = [&](const std::string& name) {
-        *error = "unknown well " + quoted(name) + " on a " + lw.describe();
+        *error = msg::make("plate.unknown_well", {textArg("well", quoted(name)), plateWells});
         return false;
     };
     auto known = [&](const std::string& name, WellId* w) {
@@ -111,11 +112,11 @@ bool expandOne(const std::string& spec, const Labware& lw, std::vector<WellId>& 
     if (startsWithWord(spec, "row", &rest)) {
         WellId w;
         if (!known(rest + "1", &w) || rest.empty() || !std::isalpha(static_cast<unsigned char>(rest.back()))) {
-            *error = "\"row " + rest + "\" needs a row letter, like \"row B\"";
+            *error = msg::make("plate.wells.row_needs_letter", {textArg("text", quoted("row " + rest))});
             return false;
         }
         if (w.row >= lw.rows) {
-            *error = "unknown row " + quoted(rest) + " on a " + lw.describe() + " (rows A–" + rowName(lw.rows - 1) + ")";
+            *error = msg::make("plate.wells.unknown_row", {textArg("row", quoted(rest)), plateWells, textArg("last", rowName(lw.rows - 1))});
             return false;
         }
         for (int c = 0; c < lw.columns; ++c)
@@ -126,11 +127,11 @@ bool expandOne(const std::string& spec, const Labware& lw, std::vector<WellId>& 
     if (startsWithWord(spec, "column", &rest)) {
         WellId w;
         if (!known("A" + rest, &w) || rest.empty() || !std::isdigit(static_cast<unsigned char>(rest[0]))) {
-            *error = "\"column " + rest + "\" needs a column number, like \"column 3\"";
+            *error = msg::make("plate.wells.column_needs_number", {textArg("text", quoted("column " + rest))});
             return false;
         }
         if (w.column >= lw.columns) {
-            *error = "unknown column " + quoted(rest) + " on a " + lw.describe() + " (columns 1–" + std::to_string(lw.columns) + ")";
+            *error = msg::make("plate.wells.unknown_column", {textArg("column", quoted(rest)), plateWells, msg::integer("last", lw.columns, msg::Unit::None)});
             return false;
         }
         for (int r = 0; r < lw.rows; ++r)
@@ -144,7 +145,7 @@ bool expandOne(const std::string& spec, const Labware& lw, std::vector<WellId>& 
         const std::string b = trim(std::string_view(spec).substr(colon + 1));
         WellId wa, wb;
         if (!known(a, &wa) || !known(b, &wb)) {
-            *error = quoted(spec) + " is not a range of two wells, like \"A1:H1\"";
+            *error = msg::make("plate.wells.bad_range", {textArg("text", quoted(spec))});
             return false;
         }
         if (!lw.well(wa))
@@ -166,7 +167,7 @@ bool expandOne(const std::string& spec, const Labware& lw, std::vector<WellId>& 
     }
     WellId w;
     if (!known(spec, &w)) {
-        *error = quoted(spec) + " is not a well (\"A1\"), a range (\"A1:H1\"), \"row B\", \"column 3\" or \"all\"";
+        *error = msg::make("plate.wells.not_a_well_set", {textArg("text", quoted(spec))});
         return false;
     }
     if (!lw.well(w))
@@ -182,7 +183,7 @@ WellSet expandWells(const std::vector<std::string>& specs, const Labware& labwar
     WellSet set;
     std::set<WellId> seen;
     if (specs.empty()) {
-        set.problems.push_back({path, "names no wells"});
+        set.problems.push_back({path, msg::make("plate.wells.none")});
         return set;
     }
     for (std::size_t k = 0; k < specs.size(); ++k) {
@@ -200,21 +201,21 @@ WellSet expandWells(const std::vector<std::string>& specs, const Labware& labwar
                 continue;
             any = true;
             std::vector<WellId> wells;
-            std::string error;
+            msg::Message error;
             if (!expandOne(part, labware, wells, &error)) {
                 set.problems.push_back({at, error});
                 continue;
             }
             for (const WellId& w : wells) {
                 if (!seen.insert(w).second) {
-                    set.problems.push_back({at, "well " + wellName(w) + " is named twice; dose a well twice with two steps"});
+                    set.problems.push_back({at, msg::make("plate.wells.named_twice", {textArg("well", wellName(w))})});
                     continue;
                 }
                 set.wells.push_back(w);
             }
         }
         if (!any)
-            set.problems.push_back({at, "names no wells"});
+            set.problems.push_back({at, msg::make("plate.wells.none")});
     }
     return set;
 }

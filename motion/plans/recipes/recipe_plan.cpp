@@ -38,26 +38,26 @@ bool PlanOp::pumps() const
     return std::any_of(moves.begin(), moves.end(), [](const MachineMove& m) { return m.kind == MoveKind::Pump; });
 }
 
-std::string PlanOp::where() const
+msg::Message PlanOp::where() const
 {
     if (!station.empty())
-        return "station " + station;
+        return msg::make("recipe.where.station", {textArg("station", station)});
     if (!well.empty())
-        return plate + " " + well;
+        return msg::make("recipe.where.well", {textArg("plate", plate), textArg("well", well)});
     return {};
 }
 
-std::string PlanOp::label() const
+msg::Message PlanOp::label() const
 {
-    const std::string v = formatMm(volumeUl) + " µL";
+    const msg::Arg v = ulArg("volume", volumeUl);
     switch (type) {
-    case StepType::Aspirate: return "aspirate " + v + " from " + where();
-    case StepType::Dispense: return "dispense " + v + " into " + where();
-    case StepType::Mix: return "mix " + v + " in " + where();
-    case StepType::Wash: return "wash " + v + " at " + where();
-    case StepType::AirGap: return "air gap " + v;
-    case StepType::Wait: return "wait " + formatMm(moves.empty() ? 0 : moves.front().seconds) + " s";
-    case StepType::TouchOff: return "touch off in " + where();
+    case StepType::Aspirate: return msg::make("recipe.op.aspirate", {v, msg::nested("where", where())});
+    case StepType::Dispense: return msg::make("recipe.op.dispense", {v, msg::nested("where", where())});
+    case StepType::Mix: return msg::make("recipe.op.mix", {v, msg::nested("where", where())});
+    case StepType::Wash: return msg::make("recipe.op.wash", {v, msg::nested("where", where())});
+    case StepType::AirGap: return msg::make("recipe.op.air_gap", {v});
+    case StepType::Wait: return msg::make("recipe.op.wait", {msg::real("seconds", moves.empty() ? 0 : moves.front().seconds, msg::Unit::S)});
+    case StepType::TouchOff: return msg::make("recipe.op.touch_off", {msg::nested("where", where())});
     }
     return {};
 }
@@ -100,7 +100,8 @@ RecipePlan Planner::run()
 {
     checkRecipe();
     if (m_r.steps.size() > kMaxSteps) {
-        error("steps", "a recipe has at most " + std::to_string(kMaxSteps) + " steps (got " + std::to_string(m_r.steps.size()) + ")");
+        error("steps", msg::make("recipe.too_many_steps", {msg::integer("max", static_cast<long long>(kMaxSteps)),
+                                                          msg::integer("count", static_cast<long long>(m_r.steps.size()))}));
         return std::move(m_plan);
     }
     for (std::size_t i = 0; i < m_r.steps.size() && !m_tooMany; ++i)
@@ -117,54 +118,56 @@ void Planner::checkRecipe()
         const RecipePlate& p = m_r.plates[k];
         const std::string at = indexPath("plates", k);
         if (p.name.empty())
-            error(fieldPath(at, "name"), "must not be empty");
+            error(fieldPath(at, "name"), msg::make("plate.empty"));
         else if (!names.insert(p.name).second)
-            error(fieldPath(at, "name"), "plate \"" + p.name + "\" is named twice");
+            error(fieldPath(at, "name"), msg::make("recipe.plate_named_twice", {textArg("plate", p.name)}));
         if (!d.slot(p.slot)) {
             std::string list;
             for (const Slot& s : d.plateSlots)
                 list += (list.empty() ? "" : ", ") + s.id;
-            error(fieldPath(at, "slot"), "unknown slot \"" + p.slot + "\": the deck has slots " + list);
+            error(fieldPath(at, "slot"), msg::make("recipe.unknown_slot", {textArg("slot", p.slot), textArg("slots", list)}));
         } else if (!usedSlots.insert(p.slot).second) {
-            error(fieldPath(at, "slot"), "slot \"" + p.slot + "\" already holds another plate of this recipe");
+            error(fieldPath(at, "slot"), msg::make("recipe.slot_taken", {textArg("slot", p.slot)}));
         }
         if (!m_c.labware.count(p.labware)) {
             std::string list;
             for (const Labware& lw : builtinLabware())
                 list += (list.empty() ? "" : ", ") + lw.id;
-            error(fieldPath(at, "labware"), "unknown labware \"" + p.labware + "\" (built in: " + list + "; or a labware file)");
+            error(fieldPath(at, "labware"), msg::make("recipe.unknown_labware", {textArg("labware", p.labware), textArg("builtin", list)}));
         }
         if (!std::isfinite(p.safeZMm) || p.safeZMm < 0 || p.safeZMm > d.travelZMm)
-            error(fieldPath(at, "safe_z_mm"), "must be from 0 to " + formatMm(d.travelZMm) + " mm (got " + formatMm(p.safeZMm) + ")");
+            error(fieldPath(at, "safe_z_mm"), msg::make("plate.out_of_range", {mmArg("value", p.safeZMm), mmArg("min", 0), mmArg("max", d.travelZMm)}));
         else if (!std::isfinite(p.depthZMm) || p.depthZMm <= p.safeZMm || p.depthZMm > d.travelZMm)
-            error(fieldPath(at, "depth_z_mm"), "must be below the safe height (more than " + formatMm(p.safeZMm) + " mm) and at most "
-                                                  + formatMm(d.travelZMm) + " mm (got " + formatMm(p.depthZMm) + ")");
+            error(fieldPath(at, "depth_z_mm"), msg::make("recipe.depth_not_below_safe", {mmArg("value", p.depthZMm), mmArg("safe", p.safeZMm),
+                                                                                       mmArg("max", d.travelZMm)}));
         else if (const auto lw = m_c.labware.find(p.labware); lw != m_c.labware.end())
             checkHeights(p, lw->second, at);
     }
     if (m_r.steps.empty())
-        error("steps", "a recipe needs at least one step");
+        error("steps", msg::make("recipe.no_steps"));
     if (m_r.travelSpeedMmS) {
         const double vmax = std::min(d.x.maxSpeed, d.y.maxSpeed);
         if (!(*m_r.travelSpeedMmS >= kMinSpeed) || *m_r.travelSpeedMmS > vmax)
-            error("travel_speed_mm_s", "must be from " + formatMm(kMinSpeed) + " to " + formatMm(vmax) + " mm/s (got " + formatMm(*m_r.travelSpeedMmS) + ")");
+            error("travel_speed_mm_s", msg::make("plate.out_of_range", {msg::real("value", *m_r.travelSpeedMmS, msg::Unit::MmPerS),
+                                                                        msg::real("min", kMinSpeed, msg::Unit::MmPerS),
+                                                                        msg::real("max", vmax, msg::Unit::MmPerS)}));
     }
     if (m_r.zSpeedMmS && (!(*m_r.zSpeedMmS >= kMinSpeed) || *m_r.zSpeedMmS > d.z.maxSpeed))
-        error("z_speed_mm_s", "must be from " + formatMm(kMinSpeed) + " to " + formatMm(d.z.maxSpeed) + " mm/s (got " + formatMm(*m_r.zSpeedMmS) + ")");
+        error("z_speed_mm_s", msg::make("plate.out_of_range", {msg::real("value", *m_r.zSpeedMmS, msg::Unit::MmPerS),
+                                                               msg::real("min", kMinSpeed, msg::Unit::MmPerS),
+                                                               msg::real("max", d.z.maxSpeed, msg::Unit::MmPerS)}));
 }
 
 void Planner::checkHeights(const RecipePlate& p, const Labware& lw, const std::string& at)
 {
     const double top = m_c.deck.tableZMm - lw.heightMm;
     if (p.safeZMm > top - 1e-9)
-        error(fieldPath(at, "safe_z_mm"), formatMm(p.safeZMm) + " mm is not above the plate: its top is at Z " + formatMm(top)
-                                             + " mm; the safe height must be smaller");
+        error(fieldPath(at, "safe_z_mm"), msg::make("recipe.safe_not_above_plate", {mmArg("value", p.safeZMm), mmArg("top", top)}));
     double bottom = m_c.deck.tableZMm;
     for (const Well& w : lw.wells)
         bottom = std::min(bottom, m_c.deck.tableZMm - w.bottomZMm);
     if (p.depthZMm > bottom + 1e-9)
-        error(fieldPath(at, "depth_z_mm"), formatMm(p.depthZMm) + " mm is below the bottom of the wells (Z " + formatMm(bottom)
-                                              + " mm): the tip would hit it");
+        error(fieldPath(at, "depth_z_mm"), msg::make("recipe.depth_below_bottom", {mmArg("value", p.depthZMm), mmArg("bottom", bottom)}));
 }
 
 const RecipePlate* Planner::resolvePlate(const std::string& name, const std::string& path)
@@ -181,12 +184,12 @@ const RecipePlate* Planner::findPlate(const std::string& name, const std::string
         if (m_r.plates.size() == 1)
             return &m_r.plates.front();
         if (m_r.plates.empty()) {
-            error(path, "missing plate: the recipe has no plates");
+            error(path, msg::make("recipe.no_plates"));
         } else {
             std::string list;
             for (const auto& p : m_r.plates)
                 list += (list.empty() ? "" : ", ") + p.name;
-            error(path, "missing plate: the recipe has " + std::to_string(m_r.plates.size()) + " plates (" + list + "); say which");
+            error(path, msg::make("recipe.plate_ambiguous", {msg::integer("count", static_cast<long long>(m_r.plates.size())), textArg("plates", list)}));
         }
         return nullptr;
     }
@@ -195,7 +198,8 @@ const RecipePlate* Planner::findPlate(const std::string& name, const std::string
         std::string list;
         for (const auto& q : m_r.plates)
             list += (list.empty() ? "" : ", ") + std::string("\"") + q.name + "\"";
-        error(path, "unknown plate \"" + name + "\"" + (list.empty() ? ": the recipe has no plates" : "; the recipe's plates are " + list));
+        error(path, list.empty() ? msg::make("recipe.unknown_plate_none", {textArg("plate", name)})
+                                 : msg::make("recipe.unknown_plate", {textArg("plate", name), textArg("plates", list)}));
     }
     return p;
 }
@@ -235,9 +239,9 @@ std::vector<Place> Planner::wellPlaces(const Step& s, const std::string& stepPat
         Place pl = wellPlace(*p, *lw.well(id));
         if (!reachable(pl.at) && !outside) {
             outside = true;
-            error(wellsPath, "well " + pl.well + " of plate \"" + p->name + "\" is at (" + formatMm(pl.at.x) + ", " + formatMm(pl.at.y)
-                                 + ") mm, outside the analyzer's travel (0–" + formatMm(m_c.deck.travelXMm) + " × 0–"
-                                 + formatMm(m_c.deck.travelYMm) + " mm): check the slot's calibration");
+            error(wellsPath, msg::make("recipe.well_outside_travel", {textArg("well", pl.well), textArg("plate", p->name), mmArg("x", pl.at.x),
+                                                                      mmArg("y", pl.at.y), mmArg("travel_x", m_c.deck.travelXMm),
+                                                                      mmArg("travel_y", m_c.deck.travelYMm)}));
         }
         out.push_back(std::move(pl));
     }
@@ -251,7 +255,8 @@ bool Planner::stationPlace(const std::string& id, const std::string& path, Place
         std::string list;
         for (const Station& s : m_c.deck.stations)
             list += (list.empty() ? "" : ", ") + s.id;
-        error(path, "unknown station \"" + id + "\"" + (list.empty() ? ": the deck has none" : " (the deck has " + list + ")"));
+        error(path, list.empty() ? msg::make("recipe.unknown_station_none", {textArg("station", id)})
+                                 : msg::make("recipe.unknown_station", {textArg("station", id), textArg("stations", list)}));
         return false;
     }
     pl->station = st->id;
@@ -337,7 +342,7 @@ PlanOp& Planner::newOp(int step, StepType type, const Place* pl, double volume)
     m_plan.ops.push_back(std::move(op));
     if (m_plan.ops.size() > kMaxPlannedOps && !m_tooMany) {
         m_tooMany = true;
-        error("steps", "the recipe visits more than " + std::to_string(kMaxPlannedOps) + " wells; split it into several recipes");
+        error("steps", msg::make("recipe.too_many_ops", {msg::integer("max", static_cast<long long>(kMaxPlannedOps))}));
     }
     return m_plan.ops.back();
 }
@@ -385,8 +390,8 @@ void Planner::finish()
         const auto lw = p ? m_c.labware.find(p->labware) : m_c.labware.end();
         const Well* well = lw != m_c.labware.end() ? lw->second.wellNamed(w.well) : nullptr;
         if (well && w.dispensedUl - w.aspiratedUl > well->volumeUl + kEps)
-            warning("steps", "well " + w.well + " of plate \"" + w.plate + "\" receives " + volumeText(w.dispensedUl - w.aspiratedUl)
-                                 + " in all; it holds " + volumeText(well->volumeUl));
+            warning("steps", msg::make("recipe.well_overfilled", {textArg("well", w.well), textArg("plate", w.plate),
+                                                                  volume("volume", w.dispensedUl - w.aspiratedUl), volume("capacity", well->volumeUl)}));
     }
 }
 

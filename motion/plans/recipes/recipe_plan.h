@@ -63,8 +63,8 @@ struct PlanOp {
     double durationS = 0;
     double startS = 0;         ///< planned start, from the run's start
     bool pumps() const;        ///< has a plunger move (liquid may have moved once it started)
-    std::string where() const; ///< "samples B3", "station wash", "" (air gap, wait)
-    std::string label() const; ///< "dispense 10 µL into samples B3"
+    msg::Message where() const; ///< recipe.where.well {plate, well} "samples B3", recipe.where.station; empty (air gap, wait)
+    msg::Message label() const; ///< recipe.op.dispense {volume, where}: "dispense 10 µL into samples B3"
 };
 
 struct WellTotal {

@@ -10,12 +10,11 @@ namespace plates::planning {
 bool Planner::checkVolume(const Step& s, const std::string& path, bool capacityBound)
 {
     if (!std::isfinite(s.volumeUl) || s.volumeUl <= 0) {
-        error(fieldPath(path, "volume_ul"), "must be more than 0 µL (got " + formatMm(s.volumeUl) + ")");
+        error(fieldPath(path, "volume_ul"), msg::make("plate.not_positive", {ulArg("value", s.volumeUl)}));
         return false;
     }
     if (capacityBound && s.volumeUl > m_cap + kEps) {
-        error(fieldPath(path, "volume_ul"), "volume over capacity: " + volumeText(s.volumeUl) + " is more than the syringe holds ("
-                                               + volumeText(m_cap) + ")");
+        error(fieldPath(path, "volume_ul"), msg::make("recipe.volume_over_capacity", {volume("volume", s.volumeUl), volume("capacity", m_cap)}));
         return false;
     }
     return true;
@@ -26,8 +25,9 @@ double Planner::pumpSpeed(const Step& s, const std::string& path)
     if (!s.speedUlS)
         return 0;
     if (!(*s.speedUlS >= kMinSpeed) || *s.speedUlS > m_c.deck.p.maxSpeed) {
-        error(fieldPath(path, "speed_ul_s"), "must be from " + formatMm(kMinSpeed) + " to " + formatMm(m_c.deck.p.maxSpeed) + " µL/s (got "
-                                                + formatMm(*s.speedUlS) + ")");
+        error(fieldPath(path, "speed_ul_s"), msg::make("plate.out_of_range", {msg::real("value", *s.speedUlS, msg::Unit::UlPerS),
+                                                                              msg::real("min", kMinSpeed, msg::Unit::UlPerS),
+                                                                              msg::real("max", m_c.deck.p.maxSpeed, msg::Unit::UlPerS)}));
         return 0;
     }
     return *s.speedUlS;
@@ -41,10 +41,10 @@ bool Planner::roomFor(double delta, const std::string& path, bool* reported)
     if (!*reported) {
         *reported = true;
         if (after > m_cap)
-            error(path, "volume over capacity: the syringe would hold " + volumeText(after) + ", more than its " + volumeText(m_cap)
-                            + (m_p > 1e-6 ? " (it holds " + volumeText(m_p) + " at this point)" : ""));
+            error(path, m_p > 1e-6 ? msg::make("recipe.syringe_overfull_holding", {volume("volume", after), volume("capacity", m_cap), volume("holding", m_p)})
+                                   : msg::make("recipe.syringe_overfull", {volume("volume", after), volume("capacity", m_cap)}));
         else
-            error(path, "the plunger would pass its empty end (" + volumeText(after) + ")");
+            error(path, msg::make("recipe.plunger_past_empty", {volume("volume", after)}));
     }
     return false;
 }
@@ -98,12 +98,11 @@ void Planner::planStep(int i)
     case StepType::Dispense: {
         const bool asp = s.type == StepType::Aspirate;
         if (!s.station.empty() && !s.wells.empty()) {
-            error(fieldPath(path, "station"), "give either wells or a station, not both");
+            error(fieldPath(path, "station"), msg::make("recipe.wells_and_station"));
             return;
         }
         if (s.station.empty() && s.wells.empty()) {
-            error(fieldPath(path, "wells"), std::string("is missing: say which wells to ") + (asp ? "aspirate from" : "dispense into")
-                                                + " (or a station)");
+            error(fieldPath(path, "wells"), msg::make(asp ? "recipe.wells_missing_aspirate" : "recipe.wells_missing_dispense"));
             return;
         }
         const bool volOk = checkVolume(s, path, true);
@@ -119,23 +118,22 @@ void Planner::planStep(int i)
             return;
         for (const Place& pl : places)
             if (pl.w && s.volumeUl > pl.w->volumeUl + kEps) {
-                error(fieldPath(path, "volume_ul"), volumeText(s.volumeUl) + (asp ? " is more than a " : " does not fit a ")
-                                                       + volumeText(pl.w->volumeUl) + " well of plate \"" + pl.plate + "\"");
+                error(fieldPath(path, "volume_ul"), msg::make(asp ? "recipe.aspirate_over_well" : "recipe.dispense_over_well",
+                                                              {volume("volume", s.volumeUl), volume("capacity", pl.w->volumeUl), textArg("plate", pl.plate)}));
                 return;
             }
         if (asp) {
             if (!s.source.empty())
-                error(fieldPath(path, "source"), "only a dispense takes a source");
+                error(fieldPath(path, "source"), msg::make("recipe.source_only_dispense"));
             for (const Place& pl : places)
                 aspirateAt(i, pl, s.volumeUl, speed, fieldPath(path, "volume_ul"), &reported);
             return;
         }
         if (s.offsetMm < 0 || !std::isfinite(s.offsetMm))
-            error(fieldPath(path, "touch_off_mm"), "must be 0 or more (got " + formatMm(s.offsetMm) + ")");
+            error(fieldPath(path, "touch_off_mm"), msg::make("plate.negative", {mmArg("value", s.offsetMm)}));
         for (const Place& pl : places)
             if (pl.w && s.offsetMm > pl.w->innerRadiusMm() + kEps) {
-                error(fieldPath(path, "touch_off_mm"), formatMm(s.offsetMm) + " mm is past the wall of a well "
-                                                          + formatMm(2 * pl.w->innerRadiusMm()) + " mm wide");
+                error(fieldPath(path, "touch_off_mm"), msg::make("recipe.offset_past_wall", {mmArg("value", s.offsetMm), mmArg("width", 2 * pl.w->innerRadiusMm())}));
                 break;
             }
         if (!s.source.empty())
@@ -144,8 +142,7 @@ void Planner::planStep(int i)
             for (const Place& pl : places) {
                 if (m_liquid < s.volumeUl - 1e-6 && !reported) {
                     reported = true;
-                    error(path, "dispensing " + volumeText(s.volumeUl) + " needs that much liquid in the syringe; it holds "
-                                    + volumeText(std::max(0.0, m_liquid)) + " here: aspirate first, or give the step a \"source\"");
+                    error(path, msg::make("recipe.dispense_without_liquid", {volume("volume", s.volumeUl), volume("holding", std::max(0.0, m_liquid))}));
                 }
                 dispenseAt(i, pl, s.volumeUl, speed, std::max(0.0, s.offsetMm));
             }
@@ -160,7 +157,7 @@ void Planner::planStep(int i)
         roomFor(s.volumeUl, fieldPath(path, "volume_ul"), &reported);
         for (const Place& pl : places) {
             if (pl.w && s.volumeUl > pl.w->volumeUl + kEps) {
-                error(fieldPath(path, "volume_ul"), "mixing " + volumeText(s.volumeUl) + " in a " + volumeText(pl.w->volumeUl) + " well");
+                error(fieldPath(path, "volume_ul"), msg::make("recipe.mix_over_well", {volume("volume", s.volumeUl), volume("capacity", pl.w->volumeUl)}));
                 return;
             }
             PlanOp& op = newOp(i, StepType::Mix, &pl, s.volumeUl);
@@ -179,7 +176,7 @@ void Planner::planStep(int i)
         const bool ok = checkVolume(s, path, true);
         Place pl;
         if (s.station.empty()) {
-            error(fieldPath(path, "station"), "is missing: say which station washes the tip");
+            error(fieldPath(path, "station"), msg::make("recipe.wash_station_missing"));
             return;
         }
         if (!stationPlace(s.station, fieldPath(path, "station"), &pl) || !ok)
@@ -207,7 +204,8 @@ void Planner::planStep(int i)
     }
     case StepType::Wait: {
         if (!std::isfinite(s.seconds) || s.seconds < 0 || s.seconds > kMaxWaitS) {
-            error(fieldPath(path, "seconds"), "must be from 0 to " + formatMm(kMaxWaitS) + " s (got " + formatMm(s.seconds) + ")");
+            error(fieldPath(path, "seconds"), msg::make("plate.out_of_range", {msg::real("value", s.seconds, msg::Unit::S), msg::real("min", 0, msg::Unit::S),
+                                                                           msg::real("max", kMaxWaitS, msg::Unit::S)}));
             return;
         }
         PlanOp& op = newOp(i, StepType::Wait, nullptr, 0);
@@ -221,13 +219,12 @@ void Planner::planStep(int i)
     case StepType::TouchOff: {
         const std::vector<Place> places = wellPlaces(s, path);
         if (!(s.offsetMm > 0) || !std::isfinite(s.offsetMm)) {
-            error(fieldPath(path, "offset_mm"), "must be more than 0 mm (got " + formatMm(s.offsetMm) + ")");
+            error(fieldPath(path, "offset_mm"), msg::make("plate.not_positive", {mmArg("value", s.offsetMm)}));
             return;
         }
         for (const Place& pl : places) {
             if (pl.w && s.offsetMm > pl.w->innerRadiusMm() + kEps) {
-                error(fieldPath(path, "offset_mm"), formatMm(s.offsetMm) + " mm is past the wall of a well " + formatMm(2 * pl.w->innerRadiusMm())
-                                                       + " mm wide");
+                error(fieldPath(path, "offset_mm"), msg::make("recipe.offset_past_wall", {mmArg("value", s.offsetMm), mmArg("width", 2 * pl.w->innerRadiusMm())}));
                 return;
             }
             PlanOp& op = newOp(i, StepType::TouchOff, &pl, 0);
@@ -245,7 +242,7 @@ void Planner::planStep(int i)
 void Planner::checkCycles(const Step& s, const std::string& path)
 {
     if (s.cycles < 1 || s.cycles > kMaxCycles)
-        error(fieldPath(path, "cycles"), "must be from 1 to " + std::to_string(kMaxCycles) + " (got " + std::to_string(s.cycles) + ")");
+        error(fieldPath(path, "cycles"), msg::make("plate.out_of_range", {msg::integer("value", s.cycles), msg::integer("min", 1), msg::integer("max", kMaxCycles)}));
 }
 
 void Planner::planTransfer(int i, const Step& s, const std::string& path, const std::vector<Place>& targets, double speed)
@@ -254,7 +251,7 @@ void Planner::planTransfer(int i, const Step& s, const std::string& path, const 
     Place src;
     if (!s.source.station.empty()) {
         if (!s.source.well.empty()) {
-            error(srcPath, "give either a well or a station, not both");
+            error(srcPath, msg::make("recipe.source_well_and_station"));
             return;
         }
         if (!stationPlace(s.source.station, fieldPath(srcPath, "station"), &src))
@@ -266,20 +263,21 @@ void Planner::planTransfer(int i, const Step& s, const std::string& path, const 
         const Labware& lw = m_c.labware.at(p->labware);
         const Well* w = lw.wellNamed(s.source.well);
         if (!w) {
-            error(fieldPath(srcPath, "well"), "unknown well \"" + s.source.well + "\" on a " + lw.describe());
+            error(fieldPath(srcPath, "well"), msg::make("plate.unknown_well", {textArg("well", "\"" + s.source.well + "\""),
+                                                                                 msg::integer("wells", static_cast<long long>(lw.wells.size()))}));
             return;
         }
         src = wellPlace(*p, *w);
         if (!reachable(src.at)) {
-            error(fieldPath(srcPath, "well"), "the source is outside the analyzer's travel");
+            error(fieldPath(srcPath, "well"), msg::make("recipe.source_outside_travel"));
             return;
         }
     }
     const double room = m_cap - m_p - m_air;
     const int perRound = static_cast<int>(std::floor((room + 1e-6) / s.volumeUl));
     if (perRound < 1) {
-        error(fieldPath(path, "volume_ul"), "volume over capacity: " + volumeText(s.volumeUl) + " per well, but the syringe has room for "
-                                               + volumeText(std::max(0.0, room)) + " here (" + volumeText(m_cap) + " in all)");
+        error(fieldPath(path, "volume_ul"), msg::make("recipe.transfer_no_room", {volume("volume", s.volumeUl), volume("room", std::max(0.0, room)),
+                                                                                  volume("capacity", m_cap)}));
         return;
     }
     bool reported = false;
@@ -289,7 +287,7 @@ void Planner::planTransfer(int i, const Step& s, const std::string& path, const 
         const int round = static_cast<int>(k / static_cast<std::size_t>(perRound)) + 1;
         if (src.w && vol > src.w->volumeUl + kEps && !reported) {
             reported = true;
-            warning(srcPath, "a round draws " + volumeText(vol) + " from a " + volumeText(src.w->volumeUl) + " well");
+            warning(srcPath, msg::make("recipe.round_over_source", {volume("volume", vol), volume("capacity", src.w->volumeUl)}));
         }
         aspirateAt(i, src, vol, speed, fieldPath(path, "volume_ul"), &reported);
         m_plan.ops.back().round = round;

@@ -34,10 +34,10 @@ public:
     RecipePlan run();
 
 private:
-    void error(const std::string& path, const std::string& message) { m_plan.problems.push_back({path, message, false}); }
-    void warning(const std::string& path, const std::string& message) { m_plan.problems.push_back({path, message, true}); }
+    void error(const std::string& path, msg::Message message) { m_plan.problems.push_back({path, std::move(message), false}); }
+    void warning(const std::string& path, msg::Message message) { m_plan.problems.push_back({path, std::move(message), true}); }
 
-    static std::string volumeText(double v) { return formatMm(std::round(v * 1000) / 1000) + " µL"; }
+    static msg::Arg volume(std::string name, double v) { return ulArg(std::move(name), std::round(v * 1000) / 1000); }
 
     // ---- recipe-level checks ---------------------------------------------------
 

@@ -4,6 +4,8 @@
 // line at ';', trims it, and skips lines starting with '#'.
 #include "motion/plans/scan/scan_plan.h"
 
+#include "motion/message.h"
+
 #include <optional>
 #include <string>
 
@@ -11,8 +13,8 @@ namespace motion::scan {
 
 struct Tile;
 
-/// nullopt when the pattern is usable, else why not ("unknown placeholder {x}").
-std::optional<std::string> checkFilePattern(const std::string& pattern);
+/// nullopt when the pattern is usable, else why not (scan.naming.*: "unknown placeholder {x}").
+std::optional<msg::Message> checkFilePattern(const std::string& pattern);
 
 /// The file name of a tile. The pattern must have passed checkFilePattern.
 std::string tileFileName(const ExportNaming& naming, int index, int row, int col);

@@ -84,37 +84,33 @@ std::optional<StartCorner> startCornerFromName(const std::string& name)
 
 namespace {
 
-std::string num(double v)
-{
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
+using msg::Unit;
+msg::Arg mm(std::string name, double v) { return msg::real(std::move(name), v, Unit::Mm); }
 
 class Checker {
 public:
     explicit Checker(std::vector<PlanProblem>& out) : m_out(out) {}
-    void add(std::string field, std::string message) { m_out.push_back({std::move(field), std::move(message)}); }
-    /// Finite and inside [lo, hi]; `what` describes the range in words when it is not plain.
-    bool range(const std::string& field, double v, double lo, double hi, const std::string& unit = {})
+    void add(std::string field, msg::Message message) { m_out.push_back({std::move(field), std::move(message)}); }
+    /// Finite and inside [lo, hi].
+    bool range(const std::string& field, double v, double lo, double hi, Unit unit = Unit::None)
     {
         if (std::isfinite(v) && v >= lo && v <= hi)
             return true;
-        add(field, "must be from " + num(lo) + " to " + num(hi) + unit + " (got " + num(v) + unit + ")");
+        add(field, msg::make("scan.out_of_range", {msg::real("value", v, unit), msg::real("min", lo, unit), msg::real("max", hi, unit)}));
         return false;
     }
-    bool positive(const std::string& field, double v, double hi, const std::string& unit = {})
+    bool positive(const std::string& field, double v, double hi, Unit unit = Unit::None)
     {
         if (std::isfinite(v) && v > 0 && v <= hi)
             return true;
-        add(field, "must be above 0 and at most " + num(hi) + unit + " (got " + num(v) + unit + ")");
+        add(field, msg::make("scan.not_positive_or_above", {msg::real("value", v, unit), msg::real("max", hi, unit)}));
         return false;
     }
     bool finitePoint(const std::string& field, Point2 p)
     {
         if (std::isfinite(p.xMm) && std::isfinite(p.yMm) && std::fabs(p.xMm) < 1e6 && std::fabs(p.yMm) < 1e6)
             return true;
-        add(field, "must be a finite position in mm");
+        add(field, msg::make("scan.not_a_position"));
         return false;
     }
 
@@ -130,24 +126,22 @@ void checkRegion(const Region& r, Checker& c)
             return;
         const Rect b = rectFromCorners(r.cornerA, r.cornerB);
         if (b.widthMm() <= 0 || b.heightMm() <= 0)
-            c.add("region.corners_mm", "the region has zero size (" + num(b.widthMm()) + " × " + num(b.heightMm())
-                                           + " mm): the corners must differ in both X and Y");
+            c.add("region.corners_mm", msg::make("scan.region.corners_zero_size", {mm("width", b.widthMm()), mm("height", b.heightMm())}));
         return;
     }
     case RegionKind::CentreSize:
         c.finitePoint("region.centre_mm", r.centre);
         if (!(std::isfinite(r.widthMm) && std::isfinite(r.heightMm) && r.widthMm > 0 && r.heightMm > 0))
-            c.add("region.size_mm", "the region has zero size (" + num(r.widthMm) + " × " + num(r.heightMm)
-                                        + " mm): width and height must be above 0");
+            c.add("region.size_mm", msg::make("scan.region.size_zero", {mm("width", r.widthMm), mm("height", r.heightMm)}));
         return;
     case RegionKind::Polygon: {
         if (r.vertices.size() < 3) {
-            c.add("region.vertices_mm", "a polygon needs at least 3 vertices (got " + std::to_string(r.vertices.size()) + ")");
+            c.add("region.vertices_mm", msg::make("scan.region.too_few_vertices", {msg::integer("count", static_cast<long long>(r.vertices.size()))}));
             return;
         }
         if (r.vertices.size() > kMaxPolygonVertices) {
-            c.add("region.vertices_mm", "at most " + std::to_string(kMaxPolygonVertices) + " vertices (got "
-                                            + std::to_string(r.vertices.size()) + ")");
+            c.add("region.vertices_mm", msg::make("scan.region.too_many_vertices", {msg::integer("max", static_cast<long long>(kMaxPolygonVertices)),
+                                                                                     msg::integer("count", static_cast<long long>(r.vertices.size()))}));
             return;
         }
         bool finite = true;
@@ -156,11 +150,11 @@ void checkRegion(const Region& r, Checker& c)
         if (!finite)
             return;
         if (std::fabs(signedArea(r.vertices)) <= 0) {
-            c.add("region.vertices_mm", "the polygon has zero area");
+            c.add("region.vertices_mm", msg::make("scan.region.zero_area"));
             return;
         }
         if (selfIntersects(r.vertices))
-            c.add("region.vertices_mm", "the outline crosses or touches itself; draw it without crossings");
+            c.add("region.vertices_mm", msg::make("scan.region.self_intersecting"));
         return;
     }
     }
@@ -169,18 +163,18 @@ void checkRegion(const Region& r, Checker& c)
 void checkCamera(const Camera& cam, Checker& c)
 {
     if (cam.source == FieldSource::Sensor) {
-        c.range("camera.sensor_px[0]", cam.sensorWidthPx, 1, 100000, " px");
-        c.range("camera.sensor_px[1]", cam.sensorHeightPx, 1, 100000, " px");
-        c.positive("camera.sensor_pixel_um", cam.sensorPixelUm, 1000, " µm");
+        c.range("camera.sensor_px[0]", cam.sensorWidthPx, 1, 100000);
+        c.range("camera.sensor_px[1]", cam.sensorHeightPx, 1, 100000);
+        c.positive("camera.sensor_pixel_um", cam.sensorPixelUm, 1000, Unit::Um);
         c.positive("camera.magnification", cam.magnification, 10000);
     } else {
-        c.positive("camera.pixel_um", cam.samplePixelUm, 1000, " µm");
+        c.positive("camera.pixel_um", cam.samplePixelUm, 1000, Unit::Um);
     }
     const std::string fieldPath = cam.source == FieldSource::Sensor ? "camera.sensor_px" : "camera.field_mm";
     const double w = fieldWidthMm(cam), h = fieldHeightMm(cam);
     if (!(std::isfinite(w) && std::isfinite(h) && w >= 1e-3 && h >= 1e-3))
-        c.add(fieldPath, "the field at the sample must be at least 0.001 mm each way (got " + num(w) + " × " + num(h) + " mm)");
-    c.range("camera.rotation_deg", cam.rotationDeg, -180, 180, "°");
+        c.add(fieldPath, msg::make("scan.camera.field_too_small", {mm("min", 1e-3), mm("width", w), mm("height", h)}));
+    c.range("camera.rotation_deg", cam.rotationDeg, -180, 180, Unit::Deg);
 }
 
 } // namespace
@@ -196,20 +190,20 @@ std::vector<PlanProblem> validate(const ScanPlan& plan)
         const double o = axis == 0 ? plan.overlapX : plan.overlapY;
         if (!(std::isfinite(o) && o >= 0 && o <= kMaxOverlap))
             c.add(axis == 0 ? "overlap[0]" : "overlap[1]",
-                  "must be from 0 to 0.9, a share of the field up to 90 % (got " + num(o) + (std::isfinite(o) ? " = " + num(o * 100) + " %)" : ")"));
+                  msg::make("scan.overlap_out_of_range", {msg::real("value", o), msg::real("max", kMaxOverlap)}));
     }
     if (plan.approach.unidirectional)
-        c.positive("approach.overtravel_mm", plan.approach.overtravelMm, 10, " mm");
-    c.range("motion.speed_mm_s", plan.speedMmS, 0.01, 1000, " mm/s");
-    c.range("timing.settle_s", plan.settleS, 0, 60, " s");
-    c.range("timing.exposure_s", plan.exposureS, 0, 3600, " s");
-    c.range("timing.tolerance_um", plan.toleranceUm, 0.1, 1000, " µm");
-    c.positive("timing.settle_timeout_s", plan.settleTimeoutS, 600, " s");
+        c.positive("approach.overtravel_mm", plan.approach.overtravelMm, 10, Unit::Mm);
+    c.range("motion.speed_mm_s", plan.speedMmS, 0.01, 1000, Unit::MmPerS);
+    c.range("timing.settle_s", plan.settleS, 0, 60, Unit::S);
+    c.range("timing.exposure_s", plan.exposureS, 0, 3600, Unit::S);
+    c.range("timing.tolerance_um", plan.toleranceUm, 0.1, 1000, Unit::Um);
+    c.positive("timing.settle_timeout_s", plan.settleTimeoutS, 600, Unit::S);
     if (auto why = checkFilePattern(plan.naming.filePattern))
         c.add("export.file_pattern", *why);
     c.range("export.first_index", plan.naming.firstIndex, 0, 1e6);
     if (plan.naming.mmXyStage.empty() || plan.naming.mmXyStage.find_first_of("\r\n\"") != std::string::npos)
-        c.add("export.mm_xy_stage", "must name Micro-Manager's XY stage device (not empty, one line)");
+        c.add("export.mm_xy_stage", msg::make("scan.export.bad_stage_name"));
     if (!out.empty())
         return out;
     // Only a sane region and field have a tile count worth stating.
@@ -217,10 +211,9 @@ std::vector<PlanProblem> validate(const ScanPlan& plan)
     const long tiles = static_cast<long>(g.columns) * static_cast<long>(g.rows);
     if (g.columns > kMaxTiles || g.rows > kMaxTiles || tiles > kMaxTiles)
         c.add(plan.camera.source == FieldSource::Sensor ? "camera.sensor_px" : "camera.field_mm",
-              "the field is so small for the region that the grid would have "
-                  + (g.columns > kMaxTiles || g.rows > kMaxTiles ? std::string("over ") + std::to_string(kMaxTiles)
-                                                                 : std::to_string(tiles))
-                  + " tiles (at most " + std::to_string(kMaxTiles) + ")");
+              g.columns > kMaxTiles || g.rows > kMaxTiles
+                  ? msg::make("scan.too_many_tiles_over", {msg::integer("max", kMaxTiles)})
+                  : msg::make("scan.too_many_tiles", {msg::integer("count", tiles), msg::integer("max", kMaxTiles)}));
     return out;
 }
 
@@ -232,20 +225,18 @@ std::vector<PlanProblem> validate(const ScanPlan& plan, const StageModel& stage)
     const double w = fieldWidthMm(plan.camera), h = fieldHeightMm(plan.camera);
     if (std::isfinite(w) && std::isfinite(h) && (w > t.widthMm() || h > t.heightMm()))
         c.add(plan.camera.source == FieldSource::Sensor ? "camera.sensor_px" : "camera.field_mm",
-              "the field " + num(w) + " × " + num(h) + " mm is larger than the stage's travel " + num(t.widthMm()) + " × "
-                  + num(t.heightMm()) + " mm");
+              msg::make("scan.field_larger_than_travel", {mm("width", w), mm("height", h), mm("travel_x", t.widthMm()), mm("travel_y", t.heightMm())}));
     const Rect r = regionBounds(plan.region);
     const std::string regionPath = plan.region.kind == RegionKind::Corners
         ? "region.corners_mm"
         : (plan.region.kind == RegionKind::CentreSize ? "region.centre_mm" : "region.vertices_mm");
     if (std::isfinite(r.x0Mm) && std::isfinite(r.x1Mm) && std::isfinite(r.y0Mm) && std::isfinite(r.y1Mm)
         && (r.x0Mm < t.x0Mm - 1e-9 || r.x1Mm > t.x1Mm + 1e-9 || r.y0Mm < t.y0Mm - 1e-9 || r.y1Mm > t.y1Mm + 1e-9))
-        c.add(regionPath, "the region X " + num(r.x0Mm) + " … " + num(r.x1Mm) + ", Y " + num(r.y0Mm) + " … " + num(r.y1Mm)
-                              + " mm reaches beyond the stage's travel X " + num(t.x0Mm) + " … " + num(t.x1Mm) + ", Y "
-                              + num(t.y0Mm) + " … " + num(t.y1Mm) + " mm");
+        c.add(regionPath, msg::make("scan.region_beyond_travel", {mm("x0", r.x0Mm), mm("x1", r.x1Mm), mm("y0", r.y0Mm), mm("y1", r.y1Mm),
+                                                                  mm("tx0", t.x0Mm), mm("tx1", t.x1Mm), mm("ty0", t.y0Mm), mm("ty1", t.y1Mm)}));
     const double vMax = std::min(stage.maxSpeedMmS[0], stage.maxSpeedMmS[1]);
     if (std::isfinite(plan.speedMmS) && plan.speedMmS > vMax + 1e-9)
-        c.add("motion.speed_mm_s", "must be at most the stage's top speed " + num(vMax) + " mm/s (got " + num(plan.speedMmS) + ")");
+        c.add("motion.speed_mm_s", msg::make("scan.speed_above_stage", {msg::real("value", plan.speedMmS, Unit::MmPerS), msg::real("max", vMax, Unit::MmPerS)}));
     if (!out.empty())
         return out;
     // Every point the stage is sent to (overtravel points and tiles) must be inside the
@@ -258,10 +249,10 @@ std::vector<PlanProblem> validate(const ScanPlan& plan, const StageModel& stage)
             continue;
         // An overtravel point always comes right before its tile.
         const int tile = wp.tile >= 0 ? wp.tile : (k + 1 < layout.path.size() ? layout.path[k + 1].tile : 0);
-        const std::string what = (wp.tile >= 0 ? "tile " : "the overtravel point before tile ") + std::to_string(tile + 1);
         c.add(wp.tile >= 0 ? regionPath : "approach.overtravel_mm",
-              what + " (" + num(p.xMm) + ", " + num(p.yMm) + ") mm lies outside the stage's travel X " + num(t.x0Mm) + " … "
-                  + num(t.x1Mm) + ", Y " + num(t.y0Mm) + " … " + num(t.y1Mm) + " mm; move the region inward");
+              msg::make(wp.tile >= 0 ? "scan.tile_outside_travel" : "scan.overtravel_outside_travel",
+                        {msg::integer("tile", tile + 1, Unit::None), mm("x", p.xMm), mm("y", p.yMm), mm("tx0", t.x0Mm), mm("tx1", t.x1Mm),
+                         mm("ty0", t.y0Mm), mm("ty1", t.y1Mm)}));
         break;
     }
     return out;

@@ -4,6 +4,7 @@
 // the timing of a tile. Plain data with a validator that returns every problem at
 // once; the tile grid (scan_layout.h) and the time estimate (scan_estimate.h) are
 // computed from it. The file format is device/files/scan_plan_file.h, docs/scan.md.
+#include "motion/message.h"
 #include "motion/plans/scan/scan_geometry.h"
 
 #include <optional>
@@ -109,7 +110,7 @@ struct StageModel {
 /// and the CLI can name its option.
 struct PlanProblem {
     std::string field;
-    std::string message;
+    msg::Message message;  ///< scan.* (docs/scan.md, "Messages")
 };
 
 /// Limits a plan must respect.

@@ -64,12 +64,12 @@ void GrblClient::setTransport(Transport* transport)
         if (m_state == LinkState::Connecting && m_phase == Phase::Closed)
             onOpened();
     });
-    m_transportConnections << connect(transport, &Transport::failed, this, [this](const QString& why) {
+    m_transportConnections << connect(transport, &Transport::failed, this, [this](const msg::Message& why) {
         if (m_state != LinkState::Connecting)
             return;
         failConnect(why);
     });
-    m_transportConnections << connect(transport, &Transport::lost, this, [this](const QString& why) { linkGone(why); });
+    m_transportConnections << connect(transport, &Transport::lost, this, [this](const msg::Message& why) { linkGone(why); });
 }
 
 QString GrblClient::linkDescription() const { return m_transport ? m_transport->describe() : tr("no link"); }
@@ -102,7 +102,7 @@ void GrblClient::note(msg::Message m) { emit noted(m); }
 void GrblClient::connectLink()
 {
     if (!m_transport) {
-        emit linkError(tr("no connection chosen"));
+        emit linkError(msg::make("link.no_connection_chosen"));
         return;
     }
     if (m_state == LinkState::Connecting || m_state == LinkState::Identified || m_state == LinkState::Ready)
@@ -163,7 +163,7 @@ void GrblClient::writeSync()
     m_transport->write(QByteArray("\n$G\n?", 5));
 }
 
-void GrblClient::failConnect(const QString& why)
+void GrblClient::failConnect(const msg::Message& why)
 {
     m_pollTimer.stop();
     m_linkTimer.stop();
@@ -189,14 +189,14 @@ void GrblClient::disconnectLink()
     m_pollTimer.stop();
     m_linkTimer.stop();
     m_jogTimer.stop();
-    failAllLines(tr("disconnected"));
+    failAllLines(msg::make("link.disconnected"));
     m_phase = Phase::Closed;
     if (m_transport)
         m_transport->close();
     setState(LinkState::Disconnected);
 }
 
-void GrblClient::linkGone(const QString& why)
+void GrblClient::linkGone(const msg::Message& why)
 {
     if (m_state == LinkState::Disconnected || m_state == LinkState::Lost)
         return;
@@ -211,11 +211,11 @@ void GrblClient::linkGone(const QString& why)
     m_phase = Phase::Closed;
     if (m_transport)
         m_transport->close();
-    emit linkError(tr("link lost: %1").arg(why));
+    emit linkError(msg::make("link.lost", {msg::nested("cause", why)}));
     setState(LinkState::Lost);
 }
 
-void GrblClient::failAllLines(const QString& why)
+void GrblClient::failAllLines(const msg::Message& why)
 {
     m_streamer.softReset(true);
     m_backlog.clear();
@@ -228,7 +228,7 @@ void GrblClient::failAllLines(const QString& why)
             p.done(std::nullopt);
     RequestError e;
     e.kind = RequestError::Kind::LinkDown;
-    e.message = tr("abandoned: %1").arg(why);
+    e.message = why;
     auto waiters = std::move(m_statusWaiters);
     m_statusWaiters.clear();
     for (auto& w : waiters)
@@ -264,45 +264,37 @@ void GrblClient::checkLink()
             writeSync();
         }
         if (now - m_connectStartMs > m_connectTimeoutMs) {
-            const double s = m_connectTimeoutMs / 1000.0;
+            const msg::Arg link = msg::verbatim("link", linkDescription().toStdString());
+            const msg::Arg seconds = msg::real("seconds", m_connectTimeoutMs / 1000.0, msg::Unit::S);
             if (m_bytesIn == 0)
-                failConnect(tr("no answer from %1 within %2 s: check power, cable and baud rate (GRBL boards usually "
-                               "run at 115200 Bd)")
-                                .arg(linkDescription())
-                                .arg(s));
+                failConnect(msg::make("grbl.connect.no_answer", {link, seconds}));
             else if (!m_sawGrblLine)
-                failConnect(tr("%1 sent %2 bytes but no GRBL line within %3 s: a wrong baud rate, or not a GRBL "
-                               "controller")
-                                .arg(linkDescription())
-                                .arg(m_bytesIn)
-                                .arg(s));
+                failConnect(msg::make("grbl.connect.no_grbl_line",
+                                      {link, msg::integer("bytes", static_cast<long long>(m_bytesIn), msg::Unit::Byte), seconds}));
             else
-                failConnect(tr("%1 answers like GRBL but never acknowledged a line within %2 s: it may be busy "
-                               "(in a critical alarm it hears nothing but a reset)")
-                                .arg(linkDescription())
-                                .arg(s));
+                failConnect(msg::make("grbl.connect.never_acknowledged", {link, seconds}));
         }
         return;
     }
     if (m_phase == Phase::Identifying) {
         if (now - m_lastRxMs > m_connectTimeoutMs)
-            failConnect(tr("%1 stopped answering while it was being identified ($I, $$, $#)").arg(linkDescription()));
+            failConnect(msg::make("grbl.connect.identify_silent", {msg::verbatim("link", linkDescription().toStdString())}));
         return;
     }
     if (m_phase != Phase::Ready)
         return;
     // GRBL 1.1 does not answer '?' while homing, nor in a critical alarm: silence is expected then.
     if (!m_homing && !m_critical && now - m_lastRxMs > kSilenceMs) {
-        linkGone(m_unknownLines > 0 ? tr("no status report for %1 s (%2 unreadable lines: a wrong baud rate or noise?)")
-                                          .arg(kSilenceMs / 1000.0)
-                                          .arg(m_unknownLines)
-                                    : tr("the controller stopped answering: no status report for %1 s").arg(kSilenceMs / 1000.0));
+        const msg::Arg seconds = msg::real("seconds", kSilenceMs / 1000.0, msg::Unit::S);
+        linkGone(m_unknownLines > 0
+                     ? msg::make("grbl.silent_with_noise", {seconds, msg::integer("count", static_cast<long long>(m_unknownLines))})
+                     : msg::make("grbl.silent", {seconds}));
         return;
     }
     if (m_stopping && now - m_stopStartMs > kStopMs) {
         RequestError e;
         e.kind = RequestError::Kind::Timeout;
-        e.message = tr("stop: the controller did not come to rest and reset within %1 s").arg(kStopMs / 1000.0);
+        e.message = msg::make("grbl.stop_timeout", {msg::real("seconds", kStopMs / 1000.0, msg::Unit::S)});
         finishStop(e);
     }
     if (!m_stickJogs.empty() && now > m_stickDeadlineMs) {
@@ -316,32 +308,29 @@ void GrblClient::startIdentify()
 {
     m_phase = Phase::Identifying;
     const QPointer<GrblClient> self(this);
-    auto fail = [self](const QString& what, const std::optional<grbl::Streamer::Ack>& a) {
+    auto fail = [self](const std::string& command, const std::optional<grbl::Streamer::Ack>& a) {
         if (!self || self->m_phase != Phase::Identifying)
             return;
         if (!a) {
-            self->failConnect(tr("%1 was not answered: %2").arg(what, self->m_lostReason));
+            self->failConnect(msg::make("grbl.identify.not_answered",
+                                        {msg::verbatim("command", command), msg::nested("cause", self->m_lostReason)}));
             return;
         }
-        const auto* meaning = grbl::errorMeaning(a->errorCode);
-        self->failConnect(tr("the controller refused %1 with error:%2 (%3)")
-                              .arg(what)
-                              .arg(a->errorCode)
-                              .arg(meaning ? QCoreApplication::translate("grbl", meaning->text) : tr("an unknown code")));
+        self->failConnect(msg::make("grbl.identify.refused", {msg::verbatim("command", command), msg::integer("code", a->errorCode, msg::Unit::None)}));
     };
     queueLine("$I", [fail](const auto& a) {
         if (!a || !a->ok)
-            fail(QStringLiteral("$I"), a);
+            fail("$I", a);
     });
     queueLine("$$", [fail](const auto& a) {
         if (!a || !a->ok)
-            fail(QStringLiteral("$$"), a);
+            fail("$$", a);
     });
     queueLine("$#", [self, fail](const auto& a) {
         if (!self || self->m_phase != Phase::Identifying)
             return;
         if (!a)
-            return fail(QStringLiteral("$#"), a);
+            return fail("$#", a);
         // An old GRBL without $# still works: its work offset comes in the reports.
         self->finishIdentify();
     });
@@ -349,7 +338,7 @@ void GrblClient::startIdentify()
 
 void GrblClient::finishIdentify()
 {
-    QString why;
+    msg::Message why;
     if (!buildIdentity(&why)) {
         failConnect(why);
         return;
@@ -499,7 +488,7 @@ void GrblClient::onBanner(const grbl::Banner& banner)
             lost.push_back(a.line);
         m_backlog.clear();
         m_aloneInFlight = false;
-        m_lostReason = tr("the controller reset by itself");
+        m_lostReason = msg::make("grbl.reset_by_itself");
         auto pending = std::move(m_pending);
         m_pending.clear();
         m_established = 0;
@@ -514,13 +503,7 @@ void GrblClient::onBanner(const grbl::Banner& banner)
         const msg::Message detail = msg::make(
             "grbl.controller_reset", {msg::integer("lost", static_cast<long long>(lost.size())),
                                       msg::verbatim("first", lost.empty() ? std::string() : lost.front())});
-        emitEvent(proto::EventKind::Fault, -1, 0,
-                  lost.empty() ? tr("the controller reset by itself; its position is no longer trusted")
-                               : tr("the controller reset by itself: %1 lines were lost (the first \"%2\"); its position is "
-                                    "no longer trusted")
-                                     .arg(lost.size())
-                                     .arg(QString::fromStdString(lost.front())),
-                  detail);
+        emitEvent(proto::EventKind::Fault, -1, 0, detail, QString::fromStdString(m_bannerVersion.empty() ? std::string() : "Grbl " + m_bannerVersion));
         for (auto& [tag, p] : pending)
             if (p.done)
                 p.done(std::nullopt);

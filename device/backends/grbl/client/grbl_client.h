@@ -149,8 +149,11 @@ public:
     /// True when the streamer holds no line in flight or queued.
     bool linesIdle() const;
     quint64 nowUs() const;
-    /// A sentence for a person about a GRBL error answering `line` (also carried as detail).
-    static RequestError errorOf(int code, const std::string& line, const QString& what);
+    /// A GRBL error answering `line`: grbl.error{code, line, request} where `request` is the term
+    /// of the command it refused ("request.home").
+    static RequestError errorOf(int code, const std::string& line, const std::string& request);
+    /// The unit an instrument axis' values carry in messages (mm, or µL for the pump).
+    msg::Unit unitOf(int axis) const;
 
 signals:
     /// A status report was applied (after statusChanged): for the parts.
@@ -183,16 +186,16 @@ private:
     void checkLink();
     void startIdentify();
     void finishIdentify();
-    void failConnect(const QString& why);
-    void linkGone(const QString& why);
-    void failAllLines(const QString& why);
+    void failConnect(const msg::Message& why);
+    void linkGone(const msg::Message& why);
+    void failAllLines(const msg::Message& why);
     /// The line's tag, or 0 when it cannot be sent.
     std::uint64_t queueLine(const std::string& line, LineDone done, bool alone = false);
     void pump();
     void softReset(bool expected);
     void note(msg::Message m);
     // grbl_client_identity.cpp: identity, capabilities, coordinates.
-    bool buildIdentity(QString* why);
+    bool buildIdentity(msg::Message* why);
     void updateTravel();
     std::string axisLettersOfController() const;
     double scaleOf(int axis) const;
@@ -201,11 +204,13 @@ private:
     void sendQuery();
     void onStatusReport(const grbl::StatusReport& r);
     void applyParameters(const grbl::Line& l);
-    void emitEvent(proto::EventKind kind, int axis, double position, const QString& text = {}, msg::Message detail = {});
+    /// `detail`: what happened (grbl.*, or empty when the kind says it all); `text`: the line the
+    /// controller sent, where it sent one ("ALARM:1").
+    void emitEvent(proto::EventKind kind, int axis, double position, msg::Message detail = {}, const QString& text = {});
     void settleMotion(quint64 askedUs, grbl::MachineState state);
     void emitTelemetry(const std::vector<double>& workMm);
     // grbl_client_commands.cpp: helpers.
-    void sendMotionLines(const std::vector<std::string>& lines, quint8 axes, const QString& what, Callback done);
+    void sendMotionLines(const std::vector<std::string>& lines, quint8 axes, const std::string& request, Callback done);
     bool established(int axis) const { return (m_established >> axis) & 1u; }
     std::optional<RequestError> checkTarget(int axis, double target) const;
     void finishStop(const std::optional<RequestError>& e);
@@ -233,7 +238,7 @@ private:
     std::uint64_t m_nextTag = 1;
     bool m_aloneInFlight = false;
     bool m_modalReady = false;   ///< "G54 G17 G94" sent since the last reset
-    QString m_lostReason;        ///< why lines in flight were lost, for the commands that owned them
+    msg::Message m_lostReason;   ///< why lines in flight were lost, for the commands that owned them
     int m_expectedBanners = 0;   ///< soft resets this host sent whose banner has not come yet
     quint64 m_bytesIn = 0, m_garbageLines = 0, m_unknownLines = 0, m_resets = 0;
     qint64 m_lastRxMs = -1, m_connectStartMs = 0, m_syncSentMs = 0;

@@ -94,7 +94,7 @@ CompensationRead compensationFromJson(std::string_view text, std::string_view fi
                     if (k.isNumber())
                         m.polynomial.coefficientsUm.push_back(k.asNumber());
                     else
-                        p.add(k, jsonio::childPath("polynomial.coefficients_um", i), std::string("must be number, not ") + jsonio::typeName(k.type()));
+                        p.add(k, jsonio::childPath("polynomial.coefficients_um", i), jsonio::wrongType(Value::Type::Number, k.type()));
                 }
             if (auto v = po.number("valid_from_mm", true, -kCompensationAny, kCompensationAny))
                 m.validFromMm = *v;

@@ -1,0 +1,45 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="en_US">
+<context>
+    <name>words::RecipeWords</name>
+    <message numerus="yes">
+        <source>running %1: %Ln wells, about %2; log %3</source>
+        <comment>recipe.run.started</comment>
+        <translation>
+            <numerusform>running %1: %Ln well, about %2; log %3</numerusform>
+            <numerusform>running %1: %Ln wells, about %2; log %3</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 finished: %Ln wells</source>
+        <comment>recipe.run.finished</comment>
+        <translation>
+            <numerusform>%1 finished: %Ln well</numerusform>
+            <numerusform>%1 finished: %Ln wells</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>words::ScanWords</name>
+    <message numerus="yes">
+        <source>a polygon needs at least 3 vertices (got %Ln)</source>
+        <comment>scan.region.too_few_vertices</comment>
+        <translation>
+            <numerusform>a polygon needs at least 3 vertices (got %Ln)</numerusform>
+            <numerusform>a polygon needs at least 3 vertices (got %Ln)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>words::TuningWords</name>
+    <message numerus="yes">
+        <source>no Kp with a sustained oscillation after %Ln trials</source>
+        <comment>tuning.ultimate.no_sustained</comment>
+        <translation>
+            <numerusform>no Kp with a sustained oscillation after %Ln trial</numerusform>
+            <numerusform>no Kp with a sustained oscillation after %Ln trials</numerusform>
+        </translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,8856 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="zh_CN">
+<context>
+    <name>QObject</name>
+    <message>
+        <source>A well was interrupted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The run stopped during &quot;%1&quot;, after its plunger move had been sent.
+
+%2.
+
+Skip counts the well as done; Do again repeats it in full.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Skip</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Do again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Confirm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tissue section, 2.5x overview</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>StepTexts</name>
+    <message>
+        <source>Aspirate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dispense</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mix</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wash</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Air gap</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wait</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Touch off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>station %1</source>
+        <translation type="unfinished">工位 %1</translation>
+    </message>
+    <message>
+        <source>Aspirate %1 µL from %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dispense %1 µL into %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mix %1 µL in %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wash %1 µL at %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Air gap %1 µL</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wait %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Touch off in %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>app::MainWindow</name>
+    <message>
+        <source>BenchPilot</source>
+        <translation>BenchPilot</translation>
+    </message>
+    <message>
+        <source>Analyzer</source>
+        <translation>分析仪</translation>
+    </message>
+    <message>
+        <source>Stage</source>
+        <translation>载物台</translation>
+    </message>
+    <message>
+        <source>Reset E-stop</source>
+        <translation>急停复位</translation>
+    </message>
+    <message>
+        <source>Clear the E-stop latch on both instruments (axes stay where they are)</source>
+        <translation>解除两台仪器的急停锁定（各轴保持原位）</translation>
+    </message>
+    <message>
+        <source>E-STOP
+(Esc)</source>
+        <translation>急停
+(Esc)</translation>
+    </message>
+    <message>
+        <source>Stop all motion on both instruments at once (Esc, from any screen)</source>
+        <translation>立即停止两台仪器的所有运动（在任何界面按 Esc）</translation>
+    </message>
+    <message>
+        <source>Jog</source>
+        <translation>点动</translation>
+    </message>
+    <message>
+        <source>Plots</source>
+        <translation>曲线</translation>
+    </message>
+    <message>
+        <source>Profiles</source>
+        <translation>速度曲线</translation>
+    </message>
+    <message>
+        <source>Apply gains</source>
+        <translation>应用增益</translation>
+    </message>
+    <message>
+        <source>Tuning</source>
+        <translation>整定</translation>
+    </message>
+    <message>
+        <source>Joystick</source>
+        <translation>摇杆</translation>
+    </message>
+    <message>
+        <source>Patterns</source>
+        <translation>图形</translation>
+    </message>
+    <message>
+        <source>Plates</source>
+        <translation>孔板</translation>
+    </message>
+    <message>
+        <source>Scan</source>
+        <translation>扫描</translation>
+    </message>
+    <message>
+        <source>Event log</source>
+        <translation>事件日志</translation>
+    </message>
+    <message>
+        <source>Confirm move</source>
+        <translation>确认移动</translation>
+    </message>
+    <message>
+        <source>%1: link lost. Motion on the instrument stops by itself; reconnect when the cable is back.</source>
+        <translation>%1：连接中断。仪器上的运动会自行停止；线缆恢复后请重新连接。</translation>
+    </message>
+    <message>
+        <source> · %1 bad frames, %2 bytes skipped</source>
+        <translation> · %1 个错误帧，跳过 %2 字节</translation>
+    </message>
+    <message>
+        <source> · %1 retries, %2 timeouts</source>
+        <translation> · %1 次重发，%2 次超时</translation>
+    </message>
+    <message>
+        <source> · %1 samples lost</source>
+        <translation> · 丢失 %1 个采样</translation>
+    </message>
+    <message>
+        <source>E-STOP: all motion halted. Check the machine, then press Reset E-stop.</source>
+        <translation>急停：所有运动已停止。请检查设备，然后按“急停复位”。</translation>
+    </message>
+    <message>
+        <source>E-stop cleared. Re-home the axes if anything was moved by hand.</source>
+        <translation>急停已解除。若有部件被手动移动过，请重新回零。</translation>
+    </message>
+    <message>
+        <source>&amp;Settings</source>
+        <translation>设置(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>语言(&amp;L)</translation>
+    </message>
+    <message>
+        <source>System default</source>
+        <translation>跟随系统</translation>
+    </message>
+    <message>
+        <source>settings</source>
+        <translation>设置</translation>
+    </message>
+    <message>
+        <source>the last scan plan did not load: %1</source>
+        <translation>上次的扫描计划未能载入：%1</translation>
+    </message>
+</context>
+<context>
+    <name>cli</name>
+    <message>
+        <source>show this help</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>show the program&apos;s version</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (default: %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--sim needs &apos;analyzer&apos; or &apos;stage&apos; (got &apos;%1&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--port needs a path</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--baud needs a rate of at least 1200 (got &apos;%1&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--timeout needs a positive number of seconds (got &apos;%1&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown option %1 (options: %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the in-process simulator: analyzer or stage (default: analyzer)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a serial port, or the pty of benchpilot-sim</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>link speed (default: 115200)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>print JSON instead of text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>longest wait for motion to finish, s (default: 120)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>language of the text for people: en (default), zh_CN, or system (follows LANG); --json never changes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>usage: benchpilot-cli [GLOBAL OPTIONS] COMMAND [OPTIONS] [ARGUMENTS]
+
+Scripts BenchPilot&apos;s instruments (the in-process simulators, benchpilot-sim&apos;s pty, or a
+serial port) and its motion library.
+
+Commands:
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>
+Global options (before or after the command):
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>
+&apos;benchpilot-cli COMMAND --help&apos; shows a command&apos;s options. Options take their value as
+&apos;--opt value&apos; or &apos;--opt=value&apos;.
+Exit codes: 0 ok, 1 usage, 2 refused or motion failed, 3 link trouble.
+Bash completion: source &lt;(benchpilot-cli completion bash)
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>usage: benchpilot-cli %1 SUBCOMMAND [OPTIONS] [ARGUMENTS]
+
+%2
+
+Subcommands:
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>
+&apos;benchpilot-cli %1 SUBCOMMAND --help&apos; shows a subcommand&apos;s options.
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>usage: benchpilot-cli %1%2%3
+
+%4
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> [OPTIONS]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>
+Options:
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>
+Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benchpilot-cli --help).
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--lang needs en, zh_CN or system (got &apos;%1&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>try &apos;benchpilot-cli --help&apos;
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no command given</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown command &apos;%1&apos; (commands: %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>which one? (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown subcommand &apos;%1&apos; (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>try &apos;benchpilot-cli %1 --help&apos;
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give either --sim or --port, not both</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot connect to %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no answer within %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axis &apos;%1&apos; does not exist on the %2 (axes: %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: no answer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: link lost while waiting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: still moving after %2 s; sent stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>only &apos;bash&apos; is supported: source &lt;(benchpilot-cli completion bash)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>print a bash completion script</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use: source &lt;(benchpilot-cli completion bash)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>takes no arguments (got &apos;%1&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>planner limits: not reported (estimates assume the reference machine&apos;s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>home</source>
+        <translation type="unfinished">回零</translation>
+    </message>
+    <message>
+        <source>--speed needs a positive number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give at least one AXIS=VALUE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected AXIS=VALUE, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axis &apos;%1&apos; does not exist on the %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a number for axis %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>move</source>
+        <translation type="unfinished">移动</translation>
+    </message>
+    <message>
+        <source>expected AXIS VELOCITY SECONDS</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>velocity &apos;%1&apos; is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>seconds must be in (0, 600]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>velocity must be within ±%1 %2/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>jog</source>
+        <translation type="unfinished">点动</translation>
+    </message>
+    <message>
+        <source>stop</source>
+        <translation type="unfinished">停止</translation>
+    </message>
+    <message>
+        <source>estop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>name the axes to zero, e.g. &apos;zero XY&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>zero</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected AXIS=MIN:MAX, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>limits</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>targets are distances from where the axes are</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>path speed in the unit of the first axis named, per second</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>device identity, axes, travel, resolution</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>positions (commanded and measured), homed, moving, switches</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>home the axes (all when none given), wait until done</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The analyzer lifts Z first. AXES are letters, e.g. &apos;XY&apos;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>move and wait until done (mm, µL for P)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Absolute moves need homed axes; targets beyond the soft limits are refused by the device.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>velocity jog for SECONDS, then stop and wait until still</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The jog is refreshed while it runs; if this program dies the device stops the axis by itself.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>decelerate all axes to rest</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>halt at once and latch the E-stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>clear the E-stop latch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>make the current position zero</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>show or set soft limits</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--%1 is required</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--%1 &apos;%2&apos; is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--%1 &apos;%2&apos;: &apos;%3&apos; is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--%1 &apos;%2&apos; needs %3 comma-separated numbers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>plan a motion profile and print s, v, a, j samples (JSON)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>See docs/motion.md for the profiles and the seeds they come from.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>point-by-point line or arc, or sine/cosine by chords (JSON)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>line: --to X,Y [--from X,Y]; arc: --start, --center, --to, --dir cw|ccw; sine|cosine: --amplitude, --wavelength, --length, --tolerance. All need --step (mm).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>seed 001 step-period table of a profile or of seed 001&apos;s own move (JSON)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Whole interrupt periods plus a remainder per step, with the zero-match correction.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>plan seed 004 blocks per joint and pack them into CAN frames (JSON)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--joint S:V2:t0_ms,S:V2:t0_ms,… once per joint.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--dir must be cw or ccw (got &apos;%1&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give --shape (line, rectangle, circle, arc, sine, cosine, spiral, raster) or --file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--shape &apos;%1&apos; is not one of line, rectangle, circle, arc, sine, cosine, spiral, raster</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--along must be x or y (got &apos;%1&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>takes options only (got &apos;%1&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 segments, %3 mm, about %4 s on the %5 simulator&apos;s limits
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>homing did not finish</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(every --sim command starts a fresh simulator: add --home-first)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the pattern did not finish within --timeout %1 s: aborted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 on the %2: %3 of %4 segments in %5 s; contour error max %6 µm, RMS %7 µm (%8 samples)
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the pattern did not complete</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>plan a pattern (line, rectangle, circle, arc, sine, cosine, spiral, raster) or run it and measure the contour error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shape options not given keep the pattern&apos;s defaults (docs/patterns.md). --file reads a *.pattern.json; shape options then change it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>print the segments, length and estimated time without moving</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Timed on the limits of the simulator --sim names (the stage when none).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>run the pattern on the instrument; print max and RMS contour error (µm) and duration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Moves to the pattern&apos;s start (XY, then Z on the analyzer), streams the segments into the device&apos;s path queue and judges the measured XY from telemetry against the path. Exit 2 if it is refused or does not complete.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: valid: %2 ops, about %3 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 errors</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 ops · %2 µL dispensed, %3 µL aspirated · plunger %4 → %5 µL · total %6 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>validate, plan and run dispensing recipes on the analyzer (docs/recipes.md)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>check a recipe: every problem with its line, column and field</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exit 0 when the recipe can run (warnings allowed), 1 with every error otherwise. Nothing moves.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the dry run: each op and move with well, x, y, z, volume, and the total time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Planned from the machine at home (0, 0, 0) with an empty syringe. Nothing moves.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the run log to write (a new file; default RECIPE-DATE.run.jsonl here)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>continue the run this log records; wells done are not done again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a well interrupted after its plunger moved: skip (count it done) or redo it; asked for, never guessed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>home the analyzer first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>run a recipe, logging every well so it can be resumed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Prints a line per well (one JSON object with --json). Ctrl+C aborts: the tip rises and the log can resume. Exit 2 when the device refuses or the run stops, 3 when the link is lost.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give --log for a new run or --resume for one to continue, not both</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--interrupted must be skip or redo (got &apos;%1&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 does not validate: nothing moved</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no run log %1 to resume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 exists: a run log is never overwritten (continue it with --resume, or name another with --log)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 was interrupted after its plunger move was sent: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>interrupted: aborting (the tip rises, the log can resume)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not resumed: say --interrupted=skip (count the well as done) or --interrupted=redo (do it again)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>log: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>finished: %1 of %2 wells in %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stopped after %1 of %2 wells; continue with: benchpilot-cli recipe run %3 --resume %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the deck definition (default: the built-in analyzer deck)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>slot calibration (default: the one the GUI keeps, %1); &quot;none&quot; for the nominal slots</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>name one recipe file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--%1 &apos;%2&apos; needs 1 to %3 comma-separated numbers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give the region: --roi x0,y0,x1,y1, --centre x,y with --size w,h, or --polygon &apos;x,y;x,y;…&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give one region: --roi, --centre/--size or --polygon</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--polygon: corner &apos;%1&apos; is not x,y in mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give the camera field: --fov w,h in mm, or --sensor W,H px with --sensor-um and --mag</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--sensor &apos;%1&apos; must be two whole pixel counts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--order &apos;%1&apos; is not one of snake-rows, rows, snake-cols, cols</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--start &apos;%1&apos; is not one of top-left, top-right, bottom-left, bottom-right</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--format &apos;%1&apos; is not one of json, summary, tileconfig, mmpos, csv</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>takes at most one plan file (got &apos;%1&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give a plan file or the plan&apos;s options, not both (--%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--pixel-um: the plan&apos;s camera gives the pixel size (sensor pixel / magnification)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--format tileconfig gives pixels: add --pixel-um (one pixel at the sample, µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>needs one plan file: scan run PLAN.json [--out DIR]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>scans run on the microscope stage; this is the %1 (use --sim stage or --port)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (--restart starts over)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every tile of this scan is already taken in %1; exports written again. --restart takes them anew.
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (--home homes the stage first)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this scan takes about %1 min on the stage; add --yes to run it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Continuing at tile %1 of %2 (the run log in %3 has the first %4).
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tile %1/%2 %3 at %4, %5 mm (%6 s to settle)
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> Run the same command again to continue.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 tiles taken; wrote %2
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>plan a stitching scan and print it (plan file, summary, Fiji, Micro-Manager or CSV)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>[PLAN.json]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The tile grid steps by exactly field × (1 − overlap), centred on the region: n = max(1, ceil((W − F)/(F(1 − o))) + 1) per axis. Checked against the standard 100 × 100 mm stage. With PLAN.json, prints that plan in --format.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>run a scan plan on the stage, continue a stopped run, write the exports</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PLAN.json</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Needs the stage (--sim stage or --port) homed (--home does it). The run log and TileConfiguration.txt, positions.pos and scan.csv go to --out; a run stopped part-way continues at its next tile when run again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stitching scans on the stage: plan, run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>See docs/scan.md for the grid rule, the plan file and the exports.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kp %1, Ki %2 /s, Kd %3 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>gains are three numbers Kp,Ki,Kd (got &apos;%1&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 &apos;%2&apos; is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>homing the axis first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the axis did not come to rest</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give --sim stage or --port PATH</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give either --plant or an instrument (--sim/--port with --axis), not both</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--plant: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give --axis X (a closed-loop axis) or --plant SPEC</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>could not start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no result within %1 s (--timeout): aborted; the axis is stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the link was lost; the device ended the test and holds the axis under its gains</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--method must be zn (ultimate gain) or relay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--verify: no rule &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>relay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ultimate gain</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> runs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>  classic describing function: Ku = %1, Tu = %2 s%3
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (refined above)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>  rule                       Kp          Ki [1/s]    Kd [s]      | per period T = %1 s: kp, ki, kd
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>  verified with %1: overshoot %2 %, %3
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--size must be a non-zero number (mm on an instrument, signed for the direction)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--gains: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a model plant has no gains of its own: give --gains Kp,Ki,Kd</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: step %1 %2 with </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>  rise 10–90 %: %1 s, overshoot %2 %, settling (2 %): %3 s
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>  steady-state error %1 %4, IAE %2 %4·s, ISE %3 %4²·s, peak output %5 %4
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>  never inside seed 002&apos;s ±5 µm band
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>  inside seed 002&apos;s ±5 µm band from %1 s
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected AXIS=Kp,Ki,Kd with a closed-loop axis, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished">%1：%2</translation>
+    </message>
+    <message>
+        <source>set gains</source>
+        <translation type="unfinished">设置增益</translation>
+    </message>
+    <message>
+        <source>  (per period T = %1 s: kp %2, ki %3, kd %4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>; power-up set differs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a model plant instead of an instrument: fopdt:K=..,tau=..,L=.. or lag:K=..,tau=..,n=..</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the instrument&apos;s closed-loop axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>home the axis and move it to mid-travel first (always done on the in-process simulator)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>envelope: the furthest from the start (mm; plant units)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>envelope: the largest |setpoint − position|</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>envelope: the longest a test may run, s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>gains are eq. 2&apos;s per-period kp,ki,kd, not Kp, Ki [1/s], Kd [s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>find Ku and Tu (Ziegler–Nichols) and print the tuning rules</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--method zn raises Kp trial by trial (P only) until the oscillation neither grows nor decays; --method relay runs Åström and Hägglund&apos;s relay, then refines to the measured phase crossover. Trials run inside 60 % of the envelope. Ki and Kd are printed in continuous form (1/s, s).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>zn (ultimate gain) or relay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>relay: d, of the controller output (mm; plant units)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>relay: ε (mm; plant units)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>zn: each trial&apos;s setpoint step (mm; plant units)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>relay: only the classic describing-function estimate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>run a step test with this rule&apos;s gains afterwards (zn-pid, tl-pi, …)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>write the results to a .tuning.json file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a step on one axis under given (or the axis&apos; own) gains; print its metrics</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--size in mm (signed: the direction). --gains Kp,Ki,Kd are tried for this test only: the axis&apos; own gains stay.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>step size, mm (plant units); negative steps down</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kp,Ki,Kd for this test (Ki in 1/s, Kd in s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>show or set the PID gains of the closed-loop axes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kp, Ki in 1/s, Kd in s (per period with --per-period). The device refuses NaN, negative and absurd values with its reason and keeps the gains it had.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>also keep them as the device&apos;s power-up gains</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>dev::BenchPilotClient</name>
+    <message>
+        <source>no link</source>
+        <translation>无连接</translation>
+    </message>
+</context>
+<context>
+    <name>dev::InstrumentProxy</name>
+    <message>
+        <source>no link</source>
+        <translation>无连接</translation>
+    </message>
+</context>
+<context>
+    <name>dev::LoopbackEnd</name>
+    <message>
+        <source>loopback @ %1 baud</source>
+        <translation>回环 @ %1 波特</translation>
+    </message>
+    <message>
+        <source>loopback</source>
+        <translation>回环</translation>
+    </message>
+</context>
+<context>
+    <name>dev::SerialTransport</name>
+    <message>
+        <source>%1 @ %2 baud</source>
+        <translation>%1 @ %2 波特</translation>
+    </message>
+</context>
+<context>
+    <name>files</name>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>无法打开 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 is %2 MiB, more than the %3 MiB a BenchPilot file may be</source>
+        <translation>%1 大小为 %2 MiB，超过 BenchPilot 文件上限 %3 MiB</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>grbl</name>
+    <message>
+        <source>A G-code word has no letter: every word is a letter followed by a value.</source>
+        <translation>G 代码字缺少字母：每个字都是一个字母后跟数值。</translation>
+    </message>
+    <message>
+        <source>A number is missing or is not written as a valid number.</source>
+        <translation>缺少数值，或数值格式无效。</translation>
+    </message>
+    <message>
+        <source>The &apos;$&apos; system command is not recognized or not supported.</source>
+        <translation>无法识别或不支持该“$”系统命令。</translation>
+    </message>
+    <message>
+        <source>A negative value was given where only a positive one is allowed.</source>
+        <translation>在只允许正值的地方给出了负值。</translation>
+    </message>
+    <message>
+        <source>Homing is not enabled in the controller&apos;s settings.</source>
+        <translation>控制器设置中未启用回零。</translation>
+    </message>
+    <message>
+        <source>The step pulse time is shorter than the controller allows.</source>
+        <translation>步进脉冲时间短于控制器允许的最小值。</translation>
+    </message>
+    <message>
+        <source>Reading the stored settings failed; the controller restored its defaults.</source>
+        <translation>读取已存设置失败；控制器已恢复默认值。</translation>
+    </message>
+    <message>
+        <source>This &apos;$&apos; command is only accepted while the controller is idle.</source>
+        <translation>该“$”命令只能在控制器空闲时执行。</translation>
+    </message>
+    <message>
+        <source>G-code is locked out while the controller is in alarm or jogging.</source>
+        <translation>控制器处于报警或点动状态时锁定 G 代码。</translation>
+    </message>
+    <message>
+        <source>Soft limits cannot be enabled unless homing is enabled too.</source>
+        <translation>未启用回零时不能启用软限位。</translation>
+    </message>
+    <message>
+        <source>The line is longer than the controller accepts; it was not executed.</source>
+        <translation>该行超过控制器允许的长度，未执行。</translation>
+    </message>
+    <message>
+        <source>This setting would make the step rate exceed what the controller supports.</source>
+        <translation>该设置会使步进频率超过控制器所能支持的范围。</translation>
+    </message>
+    <message>
+        <source>The safety door is open; the controller entered its door state.</source>
+        <translation>安全门已打开；控制器进入安全门状态。</translation>
+    </message>
+    <message>
+        <source>The build info or startup line is too long to be stored.</source>
+        <translation>版本信息或启动行太长，无法保存。</translation>
+    </message>
+    <message>
+        <source>The jog target lies beyond the machine travel; the jog was ignored.</source>
+        <translation>点动目标超出机床行程；该点动被忽略。</translation>
+    </message>
+    <message>
+        <source>The jog command has no &apos;=&apos; or contains G-code that jogging does not allow.</source>
+        <translation>点动命令缺少“=”，或含有点动不允许的 G 代码。</translation>
+    </message>
+    <message>
+        <source>Laser mode needs a PWM spindle output.</source>
+        <translation>激光模式需要 PWM 主轴输出。</translation>
+    </message>
+    <message>
+        <source>The controller is being reset.</source>
+        <translation>控制器正在复位。</translation>
+    </message>
+    <message>
+        <source>A value that must be above zero was zero or negative.</source>
+        <translation>必须大于零的数值为零或负值。</translation>
+    </message>
+    <message>
+        <source>The block contains a G-code command that is not supported or not valid.</source>
+        <translation>程序段含有不支持或无效的 G 代码命令。</translation>
+    </message>
+    <message>
+        <source>The block contains two commands of the same modal group.</source>
+        <translation>程序段含有同一模态组的两个命令。</translation>
+    </message>
+    <message>
+        <source>No feed rate has been set for this move.</source>
+        <translation>该移动未设置进给速度。</translation>
+    </message>
+    <message>
+        <source>This G-code command needs a whole-number value.</source>
+        <translation>该 G 代码命令需要整数值。</translation>
+    </message>
+    <message>
+        <source>Two commands in the block both need the axis words.</source>
+        <translation>程序段中有两个命令都需要轴字。</translation>
+    </message>
+    <message>
+        <source>A G-code word appears twice in the block.</source>
+        <translation>程序段中某个 G 代码字出现了两次。</translation>
+    </message>
+    <message>
+        <source>The command needs axis words, and the block has none.</source>
+        <translation>该命令需要轴字，但程序段中没有。</translation>
+    </message>
+    <message>
+        <source>The line number (N) is outside the valid range.</source>
+        <translation>行号（N）超出有效范围。</translation>
+    </message>
+    <message>
+        <source>The command is missing a required P or L value.</source>
+        <translation>该命令缺少必需的 P 或 L 值。</translation>
+    </message>
+    <message>
+        <source>The work coordinate systems G59.1, G59.2 and G59.3 are not supported.</source>
+        <translation>不支持工件坐标系 G59.1、G59.2 和 G59.3。</translation>
+    </message>
+    <message>
+        <source>G53 is only allowed with G0 or G1 motion.</source>
+        <translation>G53 只能与 G0 或 G1 运动一起使用。</translation>
+    </message>
+    <message>
+        <source>The block has axis words that no command uses.</source>
+        <translation>程序段中有未被任何命令使用的轴字。</translation>
+    </message>
+    <message>
+        <source>The arc has no axis words in the selected plane.</source>
+        <translation>圆弧在所选平面内没有轴字。</translation>
+    </message>
+    <message>
+        <source>The motion target is invalid (an impossible arc, or a probe target equal to the current position).</source>
+        <translation>运动目标无效（无法实现的圆弧，或探测目标等于当前位置）。</translation>
+    </message>
+    <message>
+        <source>The arc&apos;s radius form gives no valid geometry; use the centre (I J) form or split the arc.</source>
+        <translation>圆弧的半径格式得不到有效几何；请使用圆心（I J）格式或拆分圆弧。</translation>
+    </message>
+    <message>
+        <source>The arc in centre form has no I/J/K offset in the selected plane.</source>
+        <translation>圆心格式的圆弧在所选平面内没有 I/J/K 偏移。</translation>
+    </message>
+    <message>
+        <source>The block has value words that no command uses.</source>
+        <translation>程序段中有未被任何命令使用的数值字。</translation>
+    </message>
+    <message>
+        <source>G43.1 dynamic tool length offset was given for an axis other than the configured one.</source>
+        <translation>G43.1 动态刀具长度补偿用在了配置轴以外的轴上。</translation>
+    </message>
+    <message>
+        <source>The tool number is above the largest supported.</source>
+        <translation>刀具号超过支持的最大值。</translation>
+    </message>
+    <message>
+        <source>A value is out of range.</source>
+        <translation>数值超出范围。</translation>
+    </message>
+    <message>
+        <source>This G-code command is not allowed while a tool change is pending.</source>
+        <translation>换刀待处理时不允许该 G 代码命令。</translation>
+    </message>
+    <message>
+        <source>The spindle is not running, but the motion needs it (constant surface speed or spindle sync).</source>
+        <translation>主轴未运转，但该运动需要主轴（恒线速或主轴同步）。</translation>
+    </message>
+    <message>
+        <source>Threading needs the ZX plane.</source>
+        <translation>螺纹加工需要 ZX 平面。</translation>
+    </message>
+    <message>
+        <source>The maximum feed rate is exceeded.</source>
+        <translation>超过最大进给速度。</translation>
+    </message>
+    <message>
+        <source>The spindle speed is out of range.</source>
+        <translation>主轴转速超出范围。</translation>
+    </message>
+    <message>
+        <source>A limit switch is engaged: only homing is allowed.</source>
+        <translation>限位开关已触发：只允许回零。</translation>
+    </message>
+    <message>
+        <source>The machine must be homed before it can continue.</source>
+        <translation>设备必须先回零才能继续。</translation>
+    </message>
+    <message>
+        <source>The current tool is not set (tool changer).</source>
+        <translation>未设置当前刀具（换刀装置）。</translation>
+    </message>
+    <message>
+        <source>Two value words conflict.</source>
+        <translation>两个数值字相互冲突。</translation>
+    </message>
+    <message>
+        <source>The power-on self test failed; a hard reset is needed.</source>
+        <translation>上电自检失败；需要硬复位。</translation>
+    </message>
+    <message>
+        <source>The emergency stop is active.</source>
+        <translation>急停已触发。</translation>
+    </message>
+    <message>
+        <source>A motor driver reports a fault.</source>
+        <translation>电机驱动器报告故障。</translation>
+    </message>
+    <message>
+        <source>The setting value is out of range.</source>
+        <translation>设置值超出范围。</translation>
+    </message>
+    <message>
+        <source>This setting is not available on this controller.</source>
+        <translation>该控制器没有此设置。</translation>
+    </message>
+    <message>
+        <source>The retract position is below the drilling depth.</source>
+        <translation>回退位置低于钻孔深度。</translation>
+    </message>
+    <message>
+        <source>Two auto-squared axes cannot be homed at the same time.</source>
+        <translation>两个自动找正的轴不能同时回零。</translation>
+    </message>
+    <message>
+        <source>The coordinate system is locked.</source>
+        <translation>坐标系已锁定。</translation>
+    </message>
+    <message>
+        <source>An unexpected file demarcation was found.</source>
+        <translation>发现意外的文件分界符。</translation>
+    </message>
+    <message>
+        <source>The auxiliary port is not available.</source>
+        <translation>辅助端口不可用。</translation>
+    </message>
+    <message>
+        <source>The SD card could not be mounted.</source>
+        <translation>无法挂载 SD 卡。</translation>
+    </message>
+    <message>
+        <source>Reading a file failed.</source>
+        <translation>读取文件失败。</translation>
+    </message>
+    <message>
+        <source>A directory could not be opened.</source>
+        <translation>无法打开目录。</translation>
+    </message>
+    <message>
+        <source>The directory was not found.</source>
+        <translation>未找到目录。</translation>
+    </message>
+    <message>
+        <source>The SD card is not mounted.</source>
+        <translation>SD 卡未挂载。</translation>
+    </message>
+    <message>
+        <source>The file system is not mounted.</source>
+        <translation>文件系统未挂载。</translation>
+    </message>
+    <message>
+        <source>The file system is read-only.</source>
+        <translation>文件系统为只读。</translation>
+    </message>
+    <message>
+        <source>Bluetooth could not be started.</source>
+        <translation>无法启动蓝牙。</translation>
+    </message>
+    <message>
+        <source>An expression contains an unknown operation.</source>
+        <translation>表达式含有未知运算。</translation>
+    </message>
+    <message>
+        <source>An expression divides by zero.</source>
+        <translation>表达式除以零。</translation>
+    </message>
+    <message>
+        <source>An expression argument is too large or too small.</source>
+        <translation>表达式参数过大或过小。</translation>
+    </message>
+    <message>
+        <source>An expression argument is not valid for its operation.</source>
+        <translation>表达式参数对其运算无效。</translation>
+    </message>
+    <message>
+        <source>An expression is not valid.</source>
+        <translation>表达式无效。</translation>
+    </message>
+    <message>
+        <source>An expression gave no number (NaN or infinity).</source>
+        <translation>表达式没有得到数值（NaN 或无穷大）。</translation>
+    </message>
+    <message>
+        <source>Authentication is required.</source>
+        <translation>需要身份验证。</translation>
+    </message>
+    <message>
+        <source>Access is denied.</source>
+        <translation>访问被拒绝。</translation>
+    </message>
+    <message>
+        <source>Not allowed while a critical event is active.</source>
+        <translation>存在关键事件时不允许此操作。</translation>
+    </message>
+    <message>
+        <source>Flow statements are only allowed in a macro from the file system.</source>
+        <translation>流程语句只允许出现在文件系统中的宏里。</translation>
+    </message>
+    <message>
+        <source>The flow statement is unknown.</source>
+        <translation>未知的流程语句。</translation>
+    </message>
+    <message>
+        <source>A flow statement overflowed the stack.</source>
+        <translation>流程语句导致栈溢出。</translation>
+    </message>
+    <message>
+        <source>A flow statement ran out of memory.</source>
+        <translation>流程语句耗尽了内存。</translation>
+    </message>
+    <message>
+        <source>The file could not be opened.</source>
+        <translation>无法打开文件。</translation>
+    </message>
+    <message>
+        <source>A user-defined error occurred.</source>
+        <translation>发生用户定义的错误。</translation>
+    </message>
+    <message>
+        <source>A hard limit switch was hit. The sudden halt has probably lost the position: home again.</source>
+        <translation>触发了硬限位开关。突然停止很可能丢失了位置：请重新回零。</translation>
+    </message>
+    <message>
+        <source>A motion target lies beyond the machine travel (soft limit). The position was kept; the alarm may be unlocked.</source>
+        <translation>运动目标超出机床行程（软限位）。位置已保留；可以解除报警。</translation>
+    </message>
+    <message>
+        <source>Reset while moving. The position is probably lost: home again.</source>
+        <translation>运动中被复位。位置很可能已丢失：请重新回零。</translation>
+    </message>
+    <message>
+        <source>Probe failed: the probe was not in the expected state before the probing cycle began.</source>
+        <translation>探测失败：探测循环开始前探针不在预期状态。</translation>
+    </message>
+    <message>
+        <source>Probe failed: the probe did not touch within the programmed travel.</source>
+        <translation>探测失败：在编程行程内探针未接触。</translation>
+    </message>
+    <message>
+        <source>Homing failed: the homing cycle was reset.</source>
+        <translation>回零失败：回零循环被复位。</translation>
+    </message>
+    <message>
+        <source>Homing failed: the safety door was opened during homing.</source>
+        <translation>回零失败：回零期间安全门被打开。</translation>
+    </message>
+    <message>
+        <source>Homing failed: pulling off did not clear the limit switch. Increase the pull-off distance or check the wiring.</source>
+        <translation>回零失败：回退后限位开关仍未释放。请加大回退距离或检查接线。</translation>
+    </message>
+    <message>
+        <source>Homing failed: no limit switch was found within the search distance. Check the maximum travel, the pull-off and the wiring.</source>
+        <translation>回零失败：在搜索距离内未找到限位开关。请检查最大行程、回退距离和接线。</translation>
+    </message>
+    <message>
+        <source>The emergency stop is asserted: clear it and reset.</source>
+        <translation>急停信号有效：请解除后复位。</translation>
+    </message>
+    <message>
+        <source>Homing is required: run homing ($H) to continue.</source>
+        <translation>需要回零：请执行回零（$H）后继续。</translation>
+    </message>
+    <message>
+        <source>A limit switch is engaged: clear it before continuing.</source>
+        <translation>限位开关已触发：请先解除再继续。</translation>
+    </message>
+    <message>
+        <source>The probe protection was triggered: clear it before continuing.</source>
+        <translation>探针保护已触发：请先解除再继续。</translation>
+    </message>
+    <message>
+        <source>The spindle did not reach its speed in time: clear before continuing.</source>
+        <translation>主轴未能按时达到转速：请先解除再继续。</translation>
+    </message>
+    <message>
+        <source>Homing failed: the second switch of an auto-squared axis was not found within the search distance.</source>
+        <translation>回零失败：在搜索距离内未找到自动找正轴的第二个开关。</translation>
+    </message>
+    <message>
+        <source>The power-on self test failed.</source>
+        <translation>上电自检失败。</translation>
+    </message>
+    <message>
+        <source>Homing failed: the homing configuration is not valid.</source>
+        <translation>回零失败：回零配置无效。</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>BenchPilot operator and test-bench application.</source>
+        <translation>BenchPilot 操作与测试台应用程序。</translation>
+    </message>
+    <message>
+        <source>render a screen to a PNG and exit</source>
+        <translation>把一个界面渲染为 PNG 后退出</translation>
+    </message>
+    <message>
+        <source>screen to show: jog, plots, profiles, …</source>
+        <translation>要显示的界面：jog、plots、profiles……</translation>
+    </message>
+    <message>
+        <source>instrument to show: analyzer or stage</source>
+        <translation>要显示的仪器：analyzer 或 stage</translation>
+    </message>
+    <message>
+        <source>screenshot: how long the simulators run first</source>
+        <translation>截图：仿真器先运行多长时间</translation>
+    </message>
+    <message>
+        <source>screenshot: home the shown instrument and move it before the picture</source>
+        <translation>截图：截图前让所示仪器回零并移动</translation>
+    </message>
+    <message>
+        <source>screenshot: jog and move the shown instrument so live plots show motion</source>
+        <translation>截图：点动并移动所示仪器，使实时曲线显示运动</translation>
+    </message>
+    <message>
+        <source>screenshot: tune the stage&apos;s X axis (relay, then a step test) on the tuning screen</source>
+        <translation>截图：在整定界面整定载物台 X 轴（继电试验，然后阶跃测试）</translation>
+    </message>
+    <message>
+        <source>screenshot: open this recipe on the Plates screen, home the analyzer and run it</source>
+        <translation>截图：在孔板界面打开该方案，让分析仪回零并运行</translation>
+    </message>
+    <message>
+        <source>language of the screens: system, en or zh_CN (default: the Language menu&apos;s choice)</source>
+        <translation>界面语言：system、en 或 zh_CN（默认：“语言”菜单中的选择）</translation>
+    </message>
+</context>
+<context>
+    <name>sim</name>
+    <message>
+        <source>BenchPilot simulated instrument on a pseudo-terminal.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>analyzer or stage</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>symlink to create for the pty</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>virtual seconds per wall-clock second; above 3 a host refreshing jogs every 50 ms trips the 200 ms jog watchdog</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>link speed the firmware assumes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>benchpilot, grbl or grblhal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--instrument must be analyzer or stage (got &apos;%1&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--protocol must be benchpilot, grbl or grblhal (got &apos;%1&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--pty PATH is required</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--time-scale must be a number in (0, 1000] (got &apos;%1&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--baud must be at least 1200 (got &apos;%1&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 exists and is not a symlink: refusing to replace it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot create symlink %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>simapp::PtyTransport</name>
+    <message>
+        <source>cannot create a pseudo-terminal: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot name the pseudo-terminal: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tele::TelemetryHub</name>
+    <message>
+        <source>commanded</source>
+        <translation>指令位置</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>实测位置</translation>
+    </message>
+    <message>
+        <source>velocity</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>following error</source>
+        <translation>跟随误差</translation>
+    </message>
+    <message>
+        <source>controller output</source>
+        <translation>控制器输出</translation>
+    </message>
+    <message>
+        <source>switches</source>
+        <translation>开关</translation>
+    </message>
+    <message>
+        <source>contour error</source>
+        <translation>轮廓误差</translation>
+    </message>
+    <message>
+        <source>controller output u</source>
+        <translation>控制器输出 u</translation>
+    </message>
+    <message>
+        <source>Instrument %1</source>
+        <translation>仪器 %1</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>%1 %2 %3</source>
+        <translation>%1 %2 %3</translation>
+    </message>
+    <message>
+        <source>%1 [%2]</source>
+        <translation>%1 [%2]</translation>
+    </message>
+</context>
+<context>
+    <name>ui::AxisRow</name>
+    <message>
+        <source>Plunger pump, µL</source>
+        <translation>柱塞泵，µL</translation>
+    </message>
+    <message>
+        <source>Axis %1, mm</source>
+        <translation>%1 轴，mm</translation>
+    </message>
+    <message>
+        <source>Commanded position (%1)</source>
+        <translation>指令位置（%1）</translation>
+    </message>
+    <message>
+        <source>Grating scale reading (%1)</source>
+        <translation>光栅尺读数（%1）</translation>
+    </message>
+    <message>
+        <source>Encoder reading (%1)</source>
+        <translation>编码器读数（%1）</translation>
+    </message>
+    <message>
+        <source>Homed</source>
+        <translation>已回零</translation>
+    </message>
+    <message>
+        <source>Home switch</source>
+        <translation>零位开关</translation>
+    </message>
+    <message>
+        <source>Limit switch</source>
+        <translation>限位开关</translation>
+    </message>
+    <message>
+        <source>Moving</source>
+        <translation>运动中</translation>
+    </message>
+    <message>
+        <source>Step size in %1: pick a preset or type your own</source>
+        <translation>步长（%1）：选择预设值或自行输入</translation>
+    </message>
+    <message>
+        <source>Step %1 down by the step size</source>
+        <translation>%1 按步长负向步进</translation>
+    </message>
+    <message>
+        <source>Step %1 up by the step size</source>
+        <translation>%1 按步长正向步进</translation>
+    </message>
+    <message>
+        <source>Hold to move %1 down; release to stop</source>
+        <translation>按住使 %1 负向移动；松开即停</translation>
+    </message>
+    <message>
+        <source>Hold to move %1 up; release to stop</source>
+        <translation>按住使 %1 正向移动；松开即停</translation>
+    </message>
+    <message>
+        <source>Home</source>
+        <translation>回零</translation>
+    </message>
+    <message>
+        <source>Seek the home switch and make it zero</source>
+        <translation>寻找零位开关并将其设为零点</translation>
+    </message>
+    <message>
+        <source>Zero</source>
+        <translation>设零</translation>
+    </message>
+    <message>
+        <source>Make the present position zero</source>
+        <translation>把当前位置设为零点</translation>
+    </message>
+    <message>
+        <source>target %1</source>
+        <translation>目标 %1</translation>
+    </message>
+    <message>
+        <source>Go</source>
+        <translation>移动</translation>
+    </message>
+    <message>
+        <source>Move %1 to the target (absolute; the axis must be homed)</source>
+        <translation>把 %1 移到目标（绝对位置；该轴须已回零）</translation>
+    </message>
+    <message>
+        <source>Soft limits: moves beyond them are refused</source>
+        <translation>软限位：超出的移动会被拒绝</translation>
+    </message>
+    <message>
+        <source>Axis %1: &apos;%2&apos; is not a position</source>
+        <translation>%1 轴：“%2”不是位置</translation>
+    </message>
+    <message>
+        <source>Axis %1: step &apos;%2&apos; is not a positive number</source>
+        <translation>%1 轴：步长“%2”不是正数</translation>
+    </message>
+    <message>
+        <source>Homing…</source>
+        <translation>正在回零…</translation>
+    </message>
+    <message>
+        <source>Not homed: absolute moves are refused</source>
+        <translation>未回零：绝对移动会被拒绝</translation>
+    </message>
+    <message>
+        <source>Move %1 to the target</source>
+        <translation>把 %1 移到目标</translation>
+    </message>
+    <message>
+        <source>Home %1 first: absolute moves need a homed axis</source>
+        <translation>请先让 %1 回零：绝对移动需要已回零的轴</translation>
+    </message>
+</context>
+<context>
+    <name>ui::CalibrationPanel</name>
+    <message>
+        <source>Slot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>offset, rotation, scale</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>offset, rotation, scale per axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Three points fit any affine map exactly, so a restricted model is fitted by least squares: its residual shows a well taught off centre. One scale (the default) leaves two checks; a scale per axis leaves one.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>For each well: &lt;b&gt;Go near&lt;/b&gt; (the tip rises, then moves over the well&apos;s expected place), lower it and centre it with the arrows, then &lt;b&gt;Record&lt;/b&gt;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Well</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Expected (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Taught (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Residual (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Jog</source>
+        <translation type="unfinished">点动</translation>
+    </message>
+    <message>
+        <source>Save calibration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keep this fit for the slot: recipes on it use the taught positions from now on, between runs too</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Forget (use nominal)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Slot %1 is calibrated (%2, taught on %3): largest residual %4 mm. Teach again to replace it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Slot %1 is not calibrated: recipes use its nominal place. Teach it on a %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>—</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Go near</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Raise the tip to the slot&apos;s safe height, then move over where %1 is expected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Record</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Take the tip&apos;s position now as the centre of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Record all three wells to see the fit.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the analyzer is not connected</source>
+        <translation type="unfinished">分析仪未连接</translation>
+    </message>
+    <message>
+        <source>home the analyzer before teaching: the wells&apos; places are absolute</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move the tip over %1 of slot %2 at (%3, %4) mm, %5 mm away? It rises to Z %6 mm first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>home the analyzer before teaching</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No fit: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Offset (%1, %2) mm, rotation %3°, scale %4 × %5; residual largest %6 mm, rms %7 mm (warning above %8 mm).</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::ChannelPicker</name>
+    <message>
+        <source>Channels of</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The plot whose channels are ticked below; clicking a plot also chooses it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Channel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plot %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::ConnectionBar</name>
+    <message>
+        <source>Link state</source>
+        <translation>连接状态</translation>
+    </message>
+    <message>
+        <source>The simulated instrument, or a serial port</source>
+        <translation>仿真仪器或串口</translation>
+    </message>
+    <message>
+        <source>Look for serial ports again</source>
+        <translation>重新查找串口</translation>
+    </message>
+    <message>
+        <source>Baud rate (8N1)</source>
+        <translation>波特率（8N1）</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <source>Simulator</source>
+        <translation>仿真器</translation>
+    </message>
+    <message>
+        <source>%1 (not found)</source>
+        <translation>%1（未找到）</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>断开</translation>
+    </message>
+</context>
+<context>
+    <name>ui::ContourPlot</name>
+    <message>
+        <source>contour error</source>
+        <translation type="unfinished">轮廓误差</translation>
+    </message>
+    <message>
+        <source>largest</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>distance along the path (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>contour error (µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::CursorReadout</name>
+    <message>
+        <source>Channel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Δ (B − A)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation type="unfinished">时间 (s)</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>—</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::EventLog</name>
+    <message>
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <source>Instrument</source>
+        <translation>仪器</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>轴</translation>
+    </message>
+    <message>
+        <source>Event</source>
+        <translation>事件</translation>
+    </message>
+    <message>
+        <source>Details</source>
+        <translation>详情</translation>
+    </message>
+    <message>
+        <source>Stage</source>
+        <translation>载物台</translation>
+    </message>
+    <message>
+        <source>Analyzer</source>
+        <translation>分析仪</translation>
+    </message>
+    <message>
+        <source>event %1</source>
+        <translation>事件 %1</translation>
+    </message>
+    <message>
+        <source>segment %1</source>
+        <translation>第 %1 段</translation>
+    </message>
+    <message>
+        <source>at %1 %2</source>
+        <translation>位于 %1 %2</translation>
+    </message>
+</context>
+<context>
+    <name>ui::GainsPanel</name>
+    <message>
+        <source>Kp %1 · Ki %2 /s · Kd %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>continuous</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>per control period</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ki [1/s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kd [s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Send these gains to the target; they take over between two control periods (bumpless)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Revert</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply again the set that was in force before the last change</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save to device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply these gains and keep them as the device&apos;s power-up gains</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read the gains in force from the device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>edited</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reverted to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Applied gain sets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation type="unfinished">时间</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no target chosen</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PID gains</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PID gains of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shown in continuous form: Kp, Ki in 1/s, Kd in s. Beside them the discrete gains per control period T = %1 that %2 runs (seed 002 eq. 2): ki = Ki·T, kd = Kd/T.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the model&apos;s loop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>kp = %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ki = %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>kd = %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ti = Kp/Ki = %1 · Td = Kd/Kp = %2%3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> · edited, not applied</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>every gain must be a number, 0 or more</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::JogPad</name>
+    <message>
+        <source>▲ back</source>
+        <translation>▲ 后</translation>
+    </message>
+    <message>
+        <source>Y toward the back</source>
+        <translation>Y 向后</translation>
+    </message>
+    <message>
+        <source>◀ X−</source>
+        <translation>◀ X−</translation>
+    </message>
+    <message>
+        <source>X to the left</source>
+        <translation>X 向左</translation>
+    </message>
+    <message>
+        <source>X+ ▶</source>
+        <translation>X+ ▶</translation>
+    </message>
+    <message>
+        <source>X to the right</source>
+        <translation>X 向右</translation>
+    </message>
+    <message>
+        <source>▼ front</source>
+        <translation>▼ 前</translation>
+    </message>
+    <message>
+        <source>Y toward the front</source>
+        <translation>Y 向前</translation>
+    </message>
+    <message>
+        <source>Z up</source>
+        <translation>Z 上</translation>
+    </message>
+    <message>
+        <source>Raise the tip</source>
+        <translation>抬起加样针</translation>
+    </message>
+    <message>
+        <source>Z down</source>
+        <translation>Z 下</translation>
+    </message>
+    <message>
+        <source>Lower the tip</source>
+        <translation>降下加样针</translation>
+    </message>
+    <message>
+        <source>hold to move</source>
+        <translation>按住移动</translation>
+    </message>
+    <message>
+        <source>step %1 mm</source>
+        <translation>步长 %1 mm</translation>
+    </message>
+    <message>
+        <source>Hold a button to move while it is pressed, or choose a step for each click</source>
+        <translation>按住按钮持续移动，或选择每次点击的步长</translation>
+    </message>
+    <message>
+        <source>Speed as a share of each axis&apos; maximum (slow for teaching)</source>
+        <translation>速度占各轴最大速度的比例（示教时用慢速）</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>速度</translation>
+    </message>
+</context>
+<context>
+    <name>ui::JogScreen</name>
+    <message>
+        <source>Home all</source>
+        <translation>全部回零</translation>
+    </message>
+    <message>
+        <source>Home every axis (the analyzer lifts Z first, then X and Y)</source>
+        <translation>所有轴回零（分析仪先抬起 Z，再回 X 和 Y）</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>Decelerate every axis to rest (Space)</source>
+        <translation>所有轴减速至停止（空格键）</translation>
+    </message>
+    <message>
+        <source>Jog speed</source>
+        <translation>点动速度</translation>
+    </message>
+    <message>
+        <source>Hold-to-jog speed as a share of each axis&apos; maximum; hold Shift for full speed</source>
+        <translation>按住点动的速度占各轴最大速度的比例；按住 Shift 为全速</translation>
+    </message>
+    <message>
+        <source>Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift fast, Space stop, Esc E-stop</source>
+        <translation>按键：←/→ X，↑/↓ Y，PgUp/PgDn Z，Shift 快速，空格停止，Esc 急停</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>No instrument</source>
+        <translation>无仪器</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>轴</translation>
+    </message>
+    <message>
+        <source>Commanded</source>
+        <translation>指令位置</translation>
+    </message>
+    <message>
+        <source>Grating</source>
+        <translation>光栅尺</translation>
+    </message>
+    <message>
+        <source>Encoder</source>
+        <translation>编码器</translation>
+    </message>
+    <message>
+        <source>Homed</source>
+        <translation>已回零</translation>
+    </message>
+    <message>
+        <source>Home sw</source>
+        <translation>零位开关</translation>
+    </message>
+    <message>
+        <source>Limit sw</source>
+        <translation>限位开关</translation>
+    </message>
+    <message>
+        <source>Moving</source>
+        <translation>运动中</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>步进</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>按住</translation>
+    </message>
+    <message>
+        <source>Go to</source>
+        <translation>移到</translation>
+    </message>
+    <message>
+        <source>Soft limits</source>
+        <translation>软限位</translation>
+    </message>
+    <message>
+        <source>E-STOP active — press Reset to clear</source>
+        <translation>急停已触发 — 按“复位”解除</translation>
+    </message>
+    <message>
+        <source> Z rises to its switch first, then the other axes go to theirs.</source>
+        <translation> Z 先升到其开关，其他轴再回到各自的开关。</translation>
+    </message>
+    <message>
+        <source>Home %1 of the %2?%3 Keep hands and labware clear.</source>
+        <translation>让%2的 %1 回零？%3请让手和器皿远离。</translation>
+    </message>
+    <message>
+        <source>Move %1 from %2 to %3 %4? That is %5 %4.</source>
+        <translation>把 %1 从 %2 移到 %3 %4？移动距离 %5 %4。</translation>
+    </message>
+</context>
+<context>
+    <name>ui::JoystickPad</name>
+    <message>
+        <source>Drag the knob: speed grows with the distance from the centre. Let go to stop.</source>
+        <translation>拖动旋钮：速度随离中心的距离增大。松开即停。</translation>
+    </message>
+    <message>
+        <source>+X</source>
+        <comment>joystick direction</comment>
+        <translation>+X</translation>
+    </message>
+    <message>
+        <source>+Y</source>
+        <comment>joystick direction</comment>
+        <translation>+Y</translation>
+    </message>
+</context>
+<context>
+    <name>ui::JoystickScreen</name>
+    <message>
+        <source>Z: push up or down; it springs back to the centre (stop) when let go</source>
+        <translation>Z：向上或向下推；松开后弹回中心（停止）</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>Response</source>
+        <translation>响应</translation>
+    </message>
+    <message>
+        <source> mm/s</source>
+        <translation> mm/s</translation>
+    </message>
+    <message>
+        <source>Speed at full deflection (each axis is also held to its own maximum)</source>
+        <translation>满偏转时的速度（各轴也受自身最大值限制）</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source>Deflection around the centre that does nothing</source>
+        <translation>中心附近不起作用的偏转范围</translation>
+    </message>
+    <message>
+        <source>0: speed grows linearly with deflection; 1: cubically (finer near the centre)</source>
+        <translation>0：速度随偏转线性增大；1：按三次方增大（中心附近更精细）</translation>
+    </message>
+    <message>
+        <source>Max speed</source>
+        <translation>最大速度</translation>
+    </message>
+    <message>
+        <source>Dead-band</source>
+        <translation>死区</translation>
+    </message>
+    <message>
+        <source>Expo</source>
+        <translation>指数</translation>
+    </message>
+    <message>
+        <source>Drag the knob; let go to stop. Arrow keys push the stick to the rim, PgUp/PgDn move Z. Esc: E-stop.</source>
+        <translation>拖动旋钮，松开即停。方向键把摇杆推到边缘，PgUp/PgDn 移动 Z。Esc：急停。</translation>
+    </message>
+    <message>
+        <source>Clear trail</source>
+        <translation>清除轨迹</translation>
+    </message>
+    <message>
+        <source>No instrument</source>
+        <translation>无仪器</translation>
+    </message>
+    <message>
+        <source>%1 — joystick</source>
+        <translation>%1 — 摇杆</translation>
+    </message>
+    <message>
+        <source>E-STOP active — press Reset to clear</source>
+        <translation>急停已触发 — 按“复位”解除</translation>
+    </message>
+    <message>
+        <source>&lt;tr&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td align=right&gt;%2&lt;/td&gt;&lt;td align=right&gt;%3&lt;/td&gt;&lt;td&gt;%4&lt;/td&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td align=right&gt;%2&lt;/td&gt;&lt;td align=right&gt;%3&lt;/td&gt;&lt;td&gt;%4&lt;/td&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <source>not homed</source>
+        <translation>未回零</translation>
+    </message>
+    <message>
+        <source>&lt;table cellspacing=6&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;commanded&lt;/td&gt;&lt;td&gt;%1&lt;/td&gt;&lt;td&gt;&lt;/td&gt;&lt;/tr&gt;%2&lt;/table&gt;</source>
+        <translation>&lt;table cellspacing=6&gt;&lt;tr&gt;&lt;td&gt;&lt;/td&gt;&lt;td&gt;指令&lt;/td&gt;&lt;td&gt;%1&lt;/td&gt;&lt;td&gt;&lt;/td&gt;&lt;/tr&gt;%2&lt;/table&gt;</translation>
+    </message>
+    <message>
+        <source>grating</source>
+        <translation>光栅尺</translation>
+    </message>
+    <message>
+        <source>encoder</source>
+        <translation>编码器</translation>
+    </message>
+    <message>
+        <source>Commanded speed: %1 mm/s</source>
+        <translation>指令速度：%1 mm/s</translation>
+    </message>
+    <message>
+        <source>Commanded speed: 0.00 mm/s</source>
+        <translation>指令速度：0.00 mm/s</translation>
+    </message>
+</context>
+<context>
+    <name>ui::LiveStrip</name>
+    <message>
+        <source>Live: position and following error of axis</source>
+        <translation>实时：该轴的位置与跟随误差</translation>
+    </message>
+    <message>
+        <source>The axis plotted below; jogging an axis also chooses it</source>
+        <translation>下方绘制的轴；点动某轴也会选中它</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>时间 (s)</translation>
+    </message>
+    <message>
+        <source>Plots screen paused: this strip stops once that pause has filled its window</source>
+        <translation>曲线界面已暂停：暂停填满其窗口后本条也会停止</translation>
+    </message>
+</context>
+<context>
+    <name>ui::MessageBanner</name>
+    <message>
+        <source>Dismiss</source>
+        <translation>关闭</translation>
+    </message>
+</context>
+<context>
+    <name>ui::PatternForm</name>
+    <message>
+        <source>Line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rectangle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Circle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Arc</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sine (chords)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cosine (chords)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Spiral</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Raster (serpentine)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a name for the saved file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm/s</source>
+        <translation type="unfinished"> mm/s</translation>
+    </message>
+    <message>
+        <source>Path speed (feed): how fast the pattern is run along its length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>work at Z</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z goes to this height once X and Y are at the start (seed 000: Z follows XY)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation type="unfinished">Z</translation>
+    </message>
+    <message>
+        <source>X</source>
+        <comment>axis</comment>
+        <translation type="unfinished">X</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <comment>axis</comment>
+        <translation type="unfinished">Y</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>counter-clockwise</source>
+        <translation type="unfinished">逆时针</translation>
+    </message>
+    <message>
+        <source>clockwise</source>
+        <translation type="unfinished">顺时针</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where the line begins</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>End</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where the line ends</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Corner</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lower-left corner: the run starts and ends here</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Centre</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start angle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>0° is +X, 90° is +Y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sweep</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Origin</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start of the wave&apos;s axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Amplitude</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wavelength</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Along the wave&apos;s axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis angle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Direction of the wave&apos;s axis, 0° = +X</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Chord tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Largest gap between a chord and the curve (seed 002&apos;s equal parts)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start radius</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pitch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Radius gained per turn</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turns</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Whole or half turns</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lower-left corner: the first pass starts here</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pass spacing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>along X</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>along Y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Passes</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::PatternPreview</name>
+    <message>
+        <source>pattern</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>point-by-point steps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>commanded</source>
+        <translation type="unfinished">指令位置</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation type="unfinished">实测位置</translation>
+    </message>
+    <message>
+        <source>start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Y (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::PatternScreen</name>
+    <message>
+        <source>%1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Instrument</source>
+        <translation type="unfinished">仪器</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move to the pattern&apos;s start, then run it (F5)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Slow down along the path and hold; press again to go on (F6)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Slow down along the path and give the rest up (F8)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%v / %m segments</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export run…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The last run&apos;s samples as CSV: commanded and measured XY, path distance, contour error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the whole pattern (wheel: zoom, drag: pan)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Interpolation step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grid of the point-by-point walk drawn when zoomed in (the instrument&apos;s resolution by default)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>zoom in to see the steps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load pattern</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Patterns (*.pattern.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save pattern</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Contour error&lt;/b&gt; max %1 µm (at %2 mm), RMS %3 µm · &lt;b&gt;time&lt;/b&gt; %4 · %5 samples%6</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> · &lt;b&gt;incomplete&lt;/b&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The pattern has problems (see above).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 segments, %2 mm; estimated %3 at %4 mm/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Leaves the soft limits: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move %1 %2 mm to the pattern&apos;s start (%3, %4) and run %5 segments (%6 mm)?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Moving to the start…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Running: segment %1 of %2, %3 mm done, about %4 left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>There is no run to export yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::PlateMap</name>
+    <message>
+        <source>%1 · plate (%2, %3) mm · machine (%4, %5) mm%6</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (nominal: slot not calibrated)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> · %1 µL dispensed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> · %1 µL aspirated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> · visited, no net volume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> · holds %1 µL</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No plate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>  ·  %1 × %2 mm, drawn to scale</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::PlatesScreen</name>
+    <message>
+        <source>Plate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unused</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>planned</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>current</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use for this step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set the selected step&apos;s wells (and plate) to the selection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Aspirate from these</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dispense into these</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Recipe</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Calibrate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Click a well or drag across wells to select them (Ctrl adds).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 wells selected: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Discard the changes to this recipe?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open recipe</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Recipes (*.recipe.json *.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save recipe</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Recipes (*.recipe.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the slot calibration %1 cannot be read; the slots use their nominal places:
+%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>slot calibration saved to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>new recipe</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 cannot be opened:
+%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>opened %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>saved %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the recipe has no steps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 in slot %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>use the selection in step %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>aspirate from the selection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>dispense into the selection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the recipe does not validate: see its problems</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run &quot;%1&quot;: %2 wells, about %3. The tip goes down to Z %4 mm; the analyzer moves on its own until the end (Pause, Abort, or Esc for the E-stop). Start?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Resume from run log</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run logs (*.run.jsonl *.jsonl)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import labware</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Labware definitions (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is not a plate definition BenchPilot can use:
+%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>use imported labware %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>imported %1 (%2 wells) as %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::PlotCursors</name>
+    <message>
+        <source>A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::PlotStack</name>
+    <message>
+        <source>Time (s, 0 = newest sample)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::PlotToolbar</name>
+    <message>
+        <source>Pause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Freeze the view; the instruments keep streaming and recording goes on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Auto Y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit each plot&apos;s value axes to what is visible (dragging or Ctrl+wheel on a plot turns it off)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cursors</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Two time cursors A and B with Δt and Δy; drag them along the time axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>XY</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the stage&apos;s XY path, commanded against measured</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>+ Plot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>− Plot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Record…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stream every plotted channel to a CSV file until stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PNG…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PDF…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Window</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How much history the plots keep and show (1 s to 10 min)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>2 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>5 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>10 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>30 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>1 min</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>2 min</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>5 min</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>10 min</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sample rate asked of the instruments; the link may carry less (see the status line)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 kHz</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add a plot below the others</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove the plot chosen in the channel list</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export the visible range as CSV: the raw samples (decimated per pixel column above %1 samples)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export the plots as a picture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export the plots as a vector PDF</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::PlotsScreen</name>
+    <message>
+        <source>Paused: the time axis was moved. Resume returns to the live view.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;: %2 · %3 samples</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not streaming</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> · &lt;span style=&apos;color:#b71c1c&apos;&gt;&lt;b&gt;%1 lost&lt;/b&gt;&lt;/span&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> · 0 lost</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> · %1 not kept while paused</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;paused&lt;/b&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#b71c1c&apos;&gt;● recording %1 rows to %2&lt;/span&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export the visible range as CSV</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exported the decimated view (%1 rows, min/max per pixel column) to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exported %1 rows of raw samples to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export the plots as PNG</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PNG pictures (*.png)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved the plots to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export the plots as PDF</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PDF documents (*.pdf)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>● Stop recording</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Record…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Record telemetry to CSV</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Recording %1 channels to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Recorded %1 rows to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::ProfilesScreen</name>
+    <message>
+        <source>Match 0 cannot fire: edge moved one tick late, the next step one tick early</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rate outside 80 Hz … 20 kHz: clamped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>clamped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>+1 tick</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ideal period (µs)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Period (ticks)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Whole periods</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Match (ticks)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Motion profiles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Seed S-curve (seed 000)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Trapezoid with plateau steps (seed 001)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exponential (seed 003)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Jerk-limited, time-optimal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shape of the speed change</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Distance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Signed length of the move</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Max velocity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm/s</source>
+        <translation type="unfinished"> mm/s</translation>
+    </message>
+    <message>
+        <source>Cruise speed the move may not exceed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Max acceleration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm/s²</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Acceleration limit (the trapezoid uses it for both ramps)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Max jerk</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm/s³</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How fast the acceleration may change</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Acceleration time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Seed S-curve: ramp duration t2. Exponential: reaches 95 % of the max velocity (3τ)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Speed the motor can jump to from rest (seed 001 start speed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plateau</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Distance run at the start speed before accelerating and after braking (seed 001 plateau steps)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step size</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Travel per (micro)step, for the step-period table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>s (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>v (mm/s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a (mm/s²)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>j (mm/s³)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>t (s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot plan this move: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move time: —</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move time: %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Peak velocity %1 mm/s · peak acceleration %2 mm/s² · peak jerk %3 mm/s³</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 steps: too many for the table (at most %2); use a larger step size.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step periods at %1 MHz, %2 µs interrupt (%3 ticks): %4 steps, table time %5 s vs ideal %6 s (error %7 µs), %8 clamped to 80 Hz … 20 kHz, %9 zero-match corrections.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::RecipeEditor</name>
+    <message>
+        <source>New</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A new recipe with one 96-well plate in slot 1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open a recipe file (Ctrl+O)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the recipe (Ctrl+S)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save as…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the recipe under another name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Undo the last change (Ctrl+Z)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Redo (Ctrl+Shift+Z)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plates on the deck</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Slot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Labware</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Safe Z (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Depth Z (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add plate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove plate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import Opentrons labware…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read an Opentrons labware definition (schema 2), save it as a BenchPilot plate file beside the recipe, and use it for the selected plate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>▲</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>▼</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move the step up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move the step down</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Problems</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>rename the recipe</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>add a plate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>remove plate %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>change %1 of step %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>duplicate step %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>remove step %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>station %1</source>
+        <translation type="unfinished">工位 %1</translation>
+    </message>
+    <message>
+        <source> %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> %1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> %1 µL × %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> %1 µL</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> ← %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>rename a plate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>move a plate to slot %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A built-in plate, or a labware file beside the recipe (NAME.labware.json, or an Opentrons definition)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>change a plate&apos;s labware</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine Z at which the tip clears this plate (Z counts down from home)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine Z the tip goes down to in a well</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>change a safe height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>change a depth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>add step: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>move step %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>warning: %1</source>
+        <translation type="unfinished">警告：%1</translation>
+    </message>
+    <message>
+        <source>The recipe validates.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::ResponsePlot</name>
+    <message>
+        <source>time from the start [s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>output − start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>position − start [%1]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>controller output u</source>
+        <translation type="unfinished">控制器输出 u</translation>
+    </message>
+    <message>
+        <source>controller output u [%1]</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::RunPanel</name>
+    <message>
+        <source>%1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run the recipe from its first well, logging every well (F5)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop after the well under way, with the tip up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Continue a paused or stopped run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop at once, then raise the tip; the log can resume it later</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Resume from log…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Continue a run that ended early (a crash, a pulled cable) from its run log: wells already done are not done again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plan (dry run: nothing moves)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>#</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation type="unfinished">步进</translation>
+    </message>
+    <message>
+        <source>What</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Y (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plunger (µL)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Starts at</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 ops over %2 wells · %3 µL dispensed, %4 µL aspirated · plunger %5 → %6 µL · about %7</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not runnable: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 of %2 wells</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Current: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Current: —</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Elapsed %1 · ETA %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::ScanPlanForm</name>
+    <message>
+        <source>corner %1 (&quot;%2&quot;) is not &quot;x, y&quot; in mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>What the scan is called in its files</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Two corners</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Centre and size</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Polygon</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drag on the map to draw a rectangle; in Polygon mode click its corners and double-click to close</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Region</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>First corner, X</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>First corner, Y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Opposite corner, X</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Opposite corner, Y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Corner X, Y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Opposite X, Y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Centre of the region, X</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Centre of the region, Y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Width of the region (X)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Height of the region (Y)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Centre X, Y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Width, height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>x, y; x, y; x, y …</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The outline&apos;s corners in mm, in order; click them on the map instead</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Corners (x, y mm; …), or click them on the map:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scan and region</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sensor and objective</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Field size</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Field from</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sensor width in pixels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sensor height in pixels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sensor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pixel pitch on the sensor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pixel size</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> ×</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Objective times any relay lens</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Magnification</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Field width at the sample</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Field height at the sample</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Field</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>One pixel at the sample: the exports give positions in pixels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pixel at sample</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The image&apos;s x axis against stage +X, counter-clockwise (a small calibration angle)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Camera rotation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>down the image = stage −Y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>down the image = stage +Y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Which way image rows run on the stage; flip it if the stitched mosaic comes out mirrored</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Image rows</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation type="unfinished"> %</translation>
+    </message>
+    <message>
+        <source>Share of the field neighbours overlap in X (0–90 %)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Share of the field neighbours overlap in Y (0–90 %)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Overlap X, Y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Snake by rows</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Snake by columns</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Row by row</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Column by column</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Order</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Top left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Top right</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bottom left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bottom right</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start corner</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Approach every tile from the same side</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Takes up screw backlash the same way at every tile: a move the other way first goes past the tile by the overtravel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How far before the tile the approach starts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Overtravel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tiles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm/s</source>
+        <translation type="unfinished"> mm/s</translation>
+    </message>
+    <message>
+        <source>Path speed of the moves between tiles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Expected settling per tile, for the time estimate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Settle (estimate)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The stage dwells this long at each tile</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exposure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A tile is taken once the grating reads this close to its target</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A tile not settled by then stops the run with the reason</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Settle timeout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compensate seed 002&apos;s error curves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Moves each target so the work point lands on it: X −0.0006x² + 0.9473x + 1.563 µm, Y 0.0168y² + 0.6397y + 1.021 µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{i} the tile&apos;s number, {row} and {col} its place; {i:03} pads to three digits</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>File names</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>First number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The XY stage&apos;s device label in Micro-Manager (for the .pos position list)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Micro-Manager stage</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Field %1 × %2 mm, %3 µm per pixel at the sample</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::ScanScreen</name>
+    <message>
+        <source>Whole stage</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the whole travel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zoom to scan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the scan&apos;s tiles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X %1  Y %2 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scan finished: %1 tiles taken. Exports written to %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start from the default plan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open plan…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open a scan plan file (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save plan…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save this plan as a file (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open scan plan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scan plans (*.scan.json *.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save scan plan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scan plans (*.scan.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The run log and the exports go here; a run stopped part-way continues from its log</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Folder for the run log and exports</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop after the tile in progress (Ctrl+P)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop the stage now; the tiles taken are kept and Resume continues (Ctrl+Shift+A)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write TileConfiguration.txt (Fiji), positions.pos (Micro-Manager) and scan.csv to the output folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%v of %m tiles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot open the plan:
+%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Opened %1: %2 tiles.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved the plan to %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Polygon: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No tiles: fix the plan below</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 × %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 of %2 × %3 in the outline</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 tiles (%2) · step %3 × %4 mm · about %5 (moves %6, settle %7, exposure %8) · travel %9 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run the scan on the stage, or continue it at the next tile (Ctrl+R)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The stage is not connected.</source>
+        <translation type="unfinished">载物台未连接。</translation>
+    </message>
+    <message>
+        <source>Ready. The run log and exports go to the output folder.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 · tile %2 of %3 · about %4 left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 · %2 of %3 tiles taken</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The plan has problems: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose an output folder for the run log and the exports.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1
+
+Start this scan anew in that folder? The old run log is kept under another name.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every tile of this scan is already taken in %1. Take them all again? The old run log is kept under another name.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The scan cannot start: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Continue the scan at tile %1 of %2? About %3 are left.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run %1 tiles on the stage? It takes about %2, starting with a move to (%3, %4) mm.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Continuing at tile %1 of %2 (the run log has the first %3).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The plan has problems: nothing to export.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exported %1 tiles with the positions measured so far to %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exported %1 planned tile positions to %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::ScanStageMap</name>
+    <message>
+        <source>Stage map</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation type="unfinished">%1 mm</translation>
+    </message>
+    <message>
+        <source>X →   Y ↑</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::StepForm</name>
+    <message>
+        <source>A1:H1, row B, column 3, all, or a list: A1, C4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wells: a well (A1), a range (A1:H1), &quot;row B&quot;, &quot;column 3&quot;, &quot;all&quot;, or several separated by commas.
+Select wells on the plate map and press &quot;Use selection&quot; to fill this in.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> µL</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Per well (aspirate, dispense), per stroke (mix, wash), or the air gap</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>set</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> µL/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Touch-off: how far from the well&apos;s centre toward its +x wall the tip goes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>well</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>plate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>or station</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Refill from here before each round: a transfer bigger than the syringe runs in several rounds</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wells</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Station</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Volume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pump speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cycles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wait</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Touch-off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(the only plate)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Touch-off after each well</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::StepTestPanel</name>
+    <message>
+        <source>Step</source>
+        <translation type="unfinished">步进</translation>
+    </message>
+    <message>
+        <source>positive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>negative</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run step test</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The target steps by this much under the gains in force; the response is added to the plot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>units</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rise 10–90 % [ms]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Overshoot [%]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Settling 2 % [ms]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Steady error [%1]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>IAE [%1·s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ISE [(%1)²·s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Peak output [%1]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Inside ±5 µm from [ms]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ended</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>never</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::TravelView</name>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>XY travel to scale · dashed: soft limits</source>
+        <translation>XY 行程（按比例）· 虚线：软限位</translation>
+    </message>
+</context>
+<context>
+    <name>ui::TuningScreen</name>
+    <message>
+        <source>Tune</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fopdt:K=..,tau=..,L=.. or lag:K=..,tau=..,n=.. (times in s; Ts=.. sets the loop period, 10 kHz unless given)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open results…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save results…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step test</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ziegler–Nichols assistant</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation type="unfinished">空闲</translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run the interrupted experiment again once the link is back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>saved as power-up gains</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply these gains to %1?
+%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>live at %1 Hz%2; the analysis reads the device&apos;s capture at the loop rate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no target</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>model defaults</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This plant cannot be tuned by Ziegler–Nichols: %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading the gains of %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>read from the device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: gains applied (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>running…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot resume yet: the link must be back (connect the instrument) and the same target chosen</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>live: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save tuning results</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tuning results (*.tuning.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tuning results saved to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open tuning results</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>results of %1 loaded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>results of %1 loaded; the rules&apos; gains are for its loop period (%2 ms), applied to %3 as they are</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Model plant</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::XyView</name>
+    <message>
+        <source>measured</source>
+        <translation>实测</translation>
+    </message>
+    <message>
+        <source>commanded</source>
+        <translation>指令</translation>
+    </message>
+    <message>
+        <source>now</source>
+        <translation>当前</translation>
+    </message>
+    <message>
+        <source>XY path</source>
+        <translation>XY 路径</translation>
+    </message>
+    <message>
+        <source>X</source>
+        <translation>X</translation>
+    </message>
+    <message>
+        <source>X (%1)</source>
+        <translation>X (%1)</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <source>Y (%1)</source>
+        <translation>Y (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>ui::ZnPanel</name>
+    <message>
+        <source>Ziegler–Nichols P</source>
+        <translation type="unfinished">Ziegler–Nichols P</translation>
+    </message>
+    <message>
+        <source>Ziegler–Nichols PI</source>
+        <translation type="unfinished">Ziegler–Nichols PI</translation>
+    </message>
+    <message>
+        <source>Ziegler–Nichols PID</source>
+        <translation type="unfinished">Ziegler–Nichols PID</translation>
+    </message>
+    <message>
+        <source>Tyreus–Luyben PI</source>
+        <translation type="unfinished">Tyreus–Luyben PI</translation>
+    </message>
+    <message>
+        <source>Tyreus–Luyben PID</source>
+        <translation type="unfinished">Tyreus–Luyben PID</translation>
+    </message>
+    <message>
+        <source>Pessen integral rule PID</source>
+        <translation type="unfinished">Pessen 积分法则 PID</translation>
+    </message>
+    <message>
+        <source>Z-N &quot;some overshoot&quot; PID</source>
+        <translation type="unfinished">Z-N“少量超调” PID</translation>
+    </message>
+    <message>
+        <source>Z-N &quot;no overshoot&quot; PID</source>
+        <translation type="unfinished">Z-N“无超调” PID</translation>
+    </message>
+    <message>
+        <source>seed 002 Table 1 (Ziegler &amp; Nichols 1942)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tyreus &amp; Luyben 1992, Ind. Eng. Chem. Res. 31:2625</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pessen 1994, J. Dyn. Syst. Meas. Control 116:553</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z-N variant as tabulated by Microstar Laboratories</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ultimate gain (P only, Kp raised)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Relay (Åström–Hägglund)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Max excursion</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Max following error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Max duration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Trial step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>First Kp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Largest Kp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Refine to the phase crossover</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Short forced runs measure the loop at chosen frequencies until two points bracket −180°; without it only the classic describing-function estimate is given</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Amplitude d</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hysteresis ε</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no verification</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Verify with</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Trials run inside 60 % of the envelope. Trial gains live only inside a test: the gains in force change when you press “Use these”.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rule</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ki [1/s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kd [s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>kp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ki / period</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>kd / period</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ku and Tu appear here once a method has run.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Ku = %1, Tu = %2&lt;/b&gt; (%3 on %4, %5 runs)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>relay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ultimate gain</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Classic describing function: Ku = %1, Tu = %2 — %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>refined above from the measured phase crossover</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not refined</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Verification with %1: overshoot %2 %, %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, inside seed 002&apos;s ±5 µm from %1 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, &lt;b&gt;never inside ±5 µm&lt;/b&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use these</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z-N %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>words::AccuracyWords</name>
+    <message>
+        <source>must be a number (not NaN or infinite)</source>
+        <comment>accuracy.value_not_finite</comment>
+        <translation>必须是数字（不能是 NaN 或无穷大）</translation>
+    </message>
+    <message>
+        <source>is %1, below the least allowed %2</source>
+        <comment>accuracy.value_below</comment>
+        <translation>为 %1，低于允许的最小值 %2</translation>
+    </message>
+    <message>
+        <source>is %1, above the most allowed %2</source>
+        <comment>accuracy.value_above</comment>
+        <translation>为 %1，高于允许的最大值 %2</translation>
+    </message>
+    <message>
+        <source>must be above 0 (is %1)</source>
+        <comment>accuracy.value_not_positive</comment>
+        <translation>必须大于 0（当前为 %1）</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not an axis name: one capital letter, such as X</source>
+        <comment>accuracy.axis_name_invalid</comment>
+        <translation>“%1”不是轴名：轴名是一个大写字母，例如 X</translation>
+    </message>
+    <message>
+        <source>no targets: give a list of targets or a start, end and count</source>
+        <comment>accuracy.no_targets</comment>
+        <translation>没有目标位置：请给出目标位置列表，或起点、终点和个数</translation>
+    </message>
+    <message>
+        <source>give either a list of targets or a grid, not both</source>
+        <comment>accuracy.targets_and_grid</comment>
+        <translation>请给出目标位置列表或网格之一，不能同时给出</translation>
+    </message>
+    <message>
+        <source>%1 targets: a positioning test needs at least %2</source>
+        <comment>accuracy.too_few_targets</comment>
+        <translation>%1 个目标位置：定位测试至少需要 %2 个</translation>
+    </message>
+    <message>
+        <source>%1 targets: ISO 230-2 recommends at least %2</source>
+        <comment>accuracy.fewer_targets_than_iso</comment>
+        <translation>%1 个目标位置：ISO 230-2 建议至少 %2 个</translation>
+    </message>
+    <message>
+        <source>target %1 does not come after %2: targets must increase</source>
+        <comment>accuracy.targets_not_increasing</comment>
+        <translation>目标位置 %1 不大于 %2：目标位置必须递增</translation>
+    </message>
+    <message>
+        <source>target %1 is below the soft limit %2</source>
+        <comment>accuracy.target_below_limit</comment>
+        <translation>目标位置 %1 低于软限位 %2</translation>
+    </message>
+    <message>
+        <source>target %1 is above the soft limit %2</source>
+        <comment>accuracy.target_above_limit</comment>
+        <translation>目标位置 %1 高于软限位 %2</translation>
+    </message>
+    <message>
+        <source>the grid ends at %1, not after its start %2</source>
+        <comment>accuracy.grid_end_not_after_start</comment>
+        <translation>网格终点 %1 不在起点 %2 之后</translation>
+    </message>
+    <message>
+        <source>targets %1 apart are too close: at least %2</source>
+        <comment>accuracy.grid_spacing_too_small</comment>
+        <translation>目标位置间距 %1 太小：至少为 %2</translation>
+    </message>
+    <message>
+        <source>no overrun: the drive reverses at the end targets, so their readings include the reversal</source>
+        <comment>accuracy.no_overrun</comment>
+        <translation>没有越程：驱动在两端目标位置处换向，因此这些读数包含了换向误差</translation>
+    </message>
+    <message>
+        <source>the overrun goes to %1, below the soft limit %2</source>
+        <comment>accuracy.overrun_below_limit</comment>
+        <translation>越程到达 %1，低于软限位 %2</translation>
+    </message>
+    <message>
+        <source>the overrun goes to %1, above the soft limit %2</source>
+        <comment>accuracy.overrun_above_limit</comment>
+        <translation>越程到达 %1，高于软限位 %2</translation>
+    </message>
+    <message>
+        <source>%1 cycles: at least %2 are needed to see a spread</source>
+        <comment>accuracy.too_few_cycles</comment>
+        <translation>%1 次循环：至少需要 %2 次才能看出分散</translation>
+    </message>
+    <message>
+        <source>%1 cycles: ISO 230-2 recommends %2</source>
+        <comment>accuracy.fewer_cycles_than_iso</comment>
+        <translation>%1 次循环：ISO 230-2 建议 %2 次</translation>
+    </message>
+    <message>
+        <source>the settle timeout %1 is shorter than its window %2</source>
+        <comment>accuracy.settle_timeout_below_window</comment>
+        <translation>稳定超时 %1 短于其稳定窗口 %2</translation>
+    </message>
+    <message>
+        <source>a second reading at %1 %2 in cycle %3 (the first is reading %4)</source>
+        <comment>accuracy.duplicate_reading</comment>
+        <translation>第 %3 次循环中在 %1 %2 处有第二个读数（第一个是读数 %4）</translation>
+    </message>
+    <message>
+        <source>no %1 readings at %2, though other targets have them</source>
+        <comment>accuracy.direction_missing</comment>
+        <translation>%2 处没有%1读数，但其他目标位置有</translation>
+    </message>
+    <message>
+        <source>%1 readings at %2 %3, where the others have %4</source>
+        <comment>accuracy.cycle_counts_differ</comment>
+        <translation>%2 %3 处有 %1 个读数，而其他位置有 %4 个</translation>
+    </message>
+    <message>
+        <source>the table&apos;s row for %1 lacks a mean or a standard deviation</source>
+        <comment>accuracy.statistics_incomplete</comment>
+        <translation>表中 %1 一行缺少平均值或标准差</translation>
+    </message>
+    <message>
+        <source>%1 readings, where the test has %2</source>
+        <comment>accuracy.reading_count_wrong</comment>
+        <translation>%1 个读数，而测试应有 %2 个</translation>
+    </message>
+    <message>
+        <source>a reading at %1 %2 in cycle %3, which the test does not have</source>
+        <comment>accuracy.reading_not_in_plan</comment>
+        <translation>第 %3 次循环在 %1 %2 处有读数，但测试中没有这一点</translation>
+    </message>
+    <message>
+        <source>no reading at %1 %2 in cycle %3</source>
+        <comment>accuracy.reading_missing</comment>
+        <translation>第 %3 次循环在 %1 %2 处没有读数</translation>
+    </message>
+    <message>
+        <source>this target is %1 off the line through the first and last (at most %2)</source>
+        <comment>accuracy.xy.point_off_line</comment>
+        <translation>该目标位置偏离首末两点连线 %1（最多允许 %2）</translation>
+    </message>
+    <message>
+        <source>reading for target %1, but the line has %2 targets</source>
+        <comment>accuracy.xy.no_such_point</comment>
+        <translation>读数对应目标位置 %1，但该直线只有 %2 个目标位置</translation>
+    </message>
+    <message>
+        <source>%1 does not move along this line: it is not evaluated</source>
+        <comment>accuracy.xy.axis_does_not_move</comment>
+        <translation>%1 轴沿该直线不运动：不予评定</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a plane: two different axis letters, such as XY</source>
+        <comment>accuracy.circle.axes_invalid</comment>
+        <translation>“%1”不是平面：应为两个不同的轴字母，例如 XY</translation>
+    </message>
+    <message>
+        <source>the circle reaches %1 = %2, below the soft limit %3</source>
+        <comment>accuracy.circle.below_limit</comment>
+        <translation>圆到达 %1 = %2，低于软限位 %3</translation>
+    </message>
+    <message>
+        <source>the circle reaches %1 = %2, above the soft limit %3</source>
+        <comment>accuracy.circle.above_limit</comment>
+        <translation>圆到达 %1 = %2，高于软限位 %3</translation>
+    </message>
+    <message>
+        <source>choose clockwise, counter-clockwise or both</source>
+        <comment>accuracy.circle.no_direction</comment>
+        <translation>请选择顺时针、逆时针或两者</translation>
+    </message>
+    <message>
+        <source>no circle was sampled</source>
+        <comment>accuracy.circle.no_runs</comment>
+        <translation>没有采样任何圆</translation>
+    </message>
+    <message>
+        <source>two %1 runs: one of each direction</source>
+        <comment>accuracy.circle.direction_twice</comment>
+        <translation>两次%1运行：每个方向只能一次</translation>
+    </message>
+    <message>
+        <source>%1 samples of a circle: at least %2</source>
+        <comment>accuracy.circle.too_few_samples</comment>
+        <translation>圆上只有 %1 个采样点：至少需要 %2 个</translation>
+    </message>
+    <message>
+        <source>the samples leave a gap of %1 in the revolution (at most %2)</source>
+        <comment>accuracy.circle.incomplete_revolution</comment>
+        <translation>采样点在一周中留有 %1 的空缺（最多允许 %2）</translation>
+    </message>
+    <message>
+        <source>the %1 samples do not lie on a circle</source>
+        <comment>accuracy.circle.no_circle</comment>
+        <translation>%1采样点不在一个圆上</translation>
+    </message>
+    <message>
+        <source>%1 is written as %2, but the file&apos;s own table gives %3</source>
+        <comment>accuracy.result.figure_disagrees</comment>
+        <translation>%1 写的是 %2，但文件自身的表格给出 %3</translation>
+    </message>
+    <message>
+        <source>needs mean_down_mm and s_down_mm in a bidirectional result</source>
+        <comment>accuracy.result.needs_down_statistics</comment>
+        <translation>双向结果需要 mean_down_mm 和 s_down_mm</translation>
+    </message>
+    <message>
+        <source>the header has no %1 column</source>
+        <comment>accuracy.csv.missing_column</comment>
+        <translation>表头中没有 %1 列</translation>
+    </message>
+    <message>
+        <source>cannot read the unit of column %1: use one of %2</source>
+        <comment>accuracy.csv.unknown_unit</comment>
+        <translation>无法识别 %1 列的单位：请使用 %2 之一</translation>
+    </message>
+    <message>
+        <source>a second column for the same quantity: %1</source>
+        <comment>accuracy.csv.duplicate_column</comment>
+        <translation>同一物理量出现了第二列：%1</translation>
+    </message>
+    <message>
+        <source>the file has no readings</source>
+        <comment>accuracy.csv.no_readings</comment>
+        <translation>文件中没有读数</translation>
+    </message>
+    <message>
+        <source>%1 cells where the header has %2</source>
+        <comment>accuracy.csv.wrong_cell_count</comment>
+        <translation>有 %1 个单元格，而表头有 %2 列</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a number</source>
+        <comment>accuracy.csv.not_a_number</comment>
+        <translation>“%1”不是数字</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a direction: up or down</source>
+        <comment>accuracy.csv.unknown_direction</comment>
+        <translation>“%1”不是方向：应为 up 或 down</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a cycle: a whole number from 1</source>
+        <comment>accuracy.csv.not_a_cycle</comment>
+        <translation>“%1”不是循环序号：应为从 1 开始的整数</translation>
+    </message>
+    <message>
+        <source>%1 points: a fit needs at least %2 different positions</source>
+        <comment>compensation.too_few_points</comment>
+        <translation>%1 个点：拟合至少需要 %2 个不同位置</translation>
+    </message>
+    <message>
+        <source>order %1: choose %2 to %3</source>
+        <comment>compensation.order_out_of_range</comment>
+        <translation>阶数 %1：请选择 %2 到 %3</translation>
+    </message>
+    <message>
+        <source>order %1 needs at least %2 points; there are %3</source>
+        <comment>compensation.order_needs_more_points</comment>
+        <translation>%1 阶至少需要 %2 个点；现有 %3 个</translation>
+    </message>
+    <message>
+        <source>the polynomial has no coefficients</source>
+        <comment>compensation.no_coefficients</comment>
+        <translation>多项式没有系数</translation>
+    </message>
+    <message>
+        <source>%1 coefficients: at most %2 (order 5)</source>
+        <comment>compensation.too_many_coefficients</comment>
+        <translation>%1 个系数：最多 %2 个（5 阶）</translation>
+    </message>
+    <message>
+        <source>the range %1 to %2 is shorter than %3</source>
+        <comment>compensation.range_too_short</comment>
+        <translation>范围 %1 到 %2 短于 %3</translation>
+    </message>
+    <message>
+        <source>the curve reaches %1 at %2, beyond ±%3</source>
+        <comment>compensation.curve_too_large</comment>
+        <translation>曲线在 %2 处达到 %1，超出 ±%3</translation>
+    </message>
+    <message>
+        <source>the curve&apos;s slope is %1 µm/mm at %2, beyond %3</source>
+        <comment>compensation.curve_too_steep</comment>
+        <translation>曲线在 %2 处的斜率为 %1 µm/mm，超出 %3</translation>
+    </message>
+    <message>
+        <source>%1 table points: at least %2</source>
+        <comment>compensation.too_few_table_points</comment>
+        <translation>%1 个表格点：至少需要 %2 个</translation>
+    </message>
+    <message>
+        <source>%1 table points: a device keeps at most %2</source>
+        <comment>compensation.too_many_table_points</comment>
+        <translation>%1 个表格点：设备最多保存 %2 个</translation>
+    </message>
+    <message>
+        <source>nominal %1 does not come after %2</source>
+        <comment>compensation.nominals_not_increasing</comment>
+        <translation>名义位置 %1 不大于 %2</translation>
+    </message>
+    <message>
+        <source>nominals %1 and %2 are closer than %3</source>
+        <comment>compensation.nominals_too_close</comment>
+        <translation>名义位置 %1 与 %2 相距小于 %3</translation>
+    </message>
+    <message>
+        <source>a backlash of %1 beside per-direction columns: put it in the columns</source>
+        <comment>compensation.backlash_with_directions</comment>
+        <translation>已有分方向的列，又给出反向间隙 %1：请把它并入各列</translation>
+    </message>
+    <message>
+        <source>%1 values on a line where LinuxCNC expects three (nominal, forward, reverse); LinuxCNC would stop reading here</source>
+        <comment>compensation.linuxcnc.not_a_triplet</comment>
+        <translation>一行有 %1 个数，而 LinuxCNC 要求三个（名义、正向、反向）；LinuxCNC 读到这里会停止</translation>
+    </message>
+    <message>
+        <source>up</source>
+        <comment>direction.up</comment>
+        <translation>正向</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <comment>direction.down</comment>
+        <translation>反向</translation>
+    </message>
+    <message>
+        <source>clockwise</source>
+        <comment>rotation.cw</comment>
+        <translation>顺时针</translation>
+    </message>
+    <message>
+        <source>counter-clockwise</source>
+        <comment>rotation.ccw</comment>
+        <translation>逆时针</translation>
+    </message>
+</context>
+<context>
+    <name>words::CapabilityWords</name>
+    <message>
+        <source>homing switches</source>
+        <translation>零位开关</translation>
+    </message>
+    <message>
+        <source>way to set an axis&apos; zero</source>
+        <translation>设定轴零点的功能</translation>
+    </message>
+    <message>
+        <source>encoder or grating readings</source>
+        <translation>编码器或光栅尺读数</translation>
+    </message>
+    <message>
+        <source>closed position loop</source>
+        <translation>位置闭环</translation>
+    </message>
+    <message>
+        <source>telemetry stream</source>
+        <translation>遥测数据流</translation>
+    </message>
+    <message>
+        <source>continuous jog</source>
+        <translation>连续点动</translation>
+    </message>
+    <message>
+        <source>way to stop by itself when BenchPilot goes quiet</source>
+        <translation>BenchPilot 无响应时自行停止的功能</translation>
+    </message>
+    <message>
+        <source>path queue to run patterns on</source>
+        <translation>运行图形用的路径队列</translation>
+    </message>
+    <message>
+        <source>Z axis that follows a path</source>
+        <translation>跟随路径的 Z 轴</translation>
+    </message>
+    <message>
+        <source>Z axis that waits for X and Y</source>
+        <translation>等待 X、Y 到位的 Z 轴</translation>
+    </message>
+    <message>
+        <source>soft limits of its own</source>
+        <translation>自身的软限位</translation>
+    </message>
+    <message>
+        <source>PID gains to tune</source>
+        <translation>可整定的 PID 增益</translation>
+    </message>
+    <message>
+        <source>step or relay tests</source>
+        <translation>阶跃或继电测试</translation>
+    </message>
+    <message>
+        <source>plunger pump</source>
+        <translation>柱塞泵</translation>
+    </message>
+    <message>
+        <source>trigger output for a camera</source>
+        <translation>相机触发输出</translation>
+    </message>
+    <message>
+        <source>report of its acceleration and jerk limits</source>
+        <translation>加速度与加加速度限值的报告</translation>
+    </message>
+    <message>
+        <source>stage</source>
+        <translation>载物台</translation>
+    </message>
+    <message>
+        <source>analyzer</source>
+        <translation>分析仪</translation>
+    </message>
+    <message>
+        <source>it runs open loop</source>
+        <translation>它以开环运行</translation>
+    </message>
+    <message>
+        <source>its firmware predates them; estimates assume the reference machine&apos;s</source>
+        <translation>其固件早于该功能；估算按参考机器的数值</translation>
+    </message>
+    <message>
+        <source>its protocol has none</source>
+        <translation>其协议不支持</translation>
+    </message>
+    <message>
+        <source>The instrument is not connected.</source>
+        <translation>仪器未连接。</translation>
+    </message>
+    <message>
+        <source>The %1 is not connected.</source>
+        <translation>%1未连接。</translation>
+    </message>
+    <message>
+        <source>The %1</source>
+        <translation>%1</translation>
+    </message>
+    <message>
+        <source>The %1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <source>%1 has no %2.</source>
+        <translation>%1没有%2。</translation>
+    </message>
+    <message>
+        <source>%1 has no %2: %3.</source>
+        <translation>%1没有%2：%3。</translation>
+    </message>
+</context>
+<context>
+    <name>words::DeviceWords</name>
+    <message>
+        <source>%1 not sent: the instrument is not connected</source>
+        <comment>request.not_sent</comment>
+        <translation>%1 未发送：仪器未连接</translation>
+    </message>
+    <message>
+        <source>no reply to %1 after %2 attempts (%3): the device is not answering</source>
+        <comment>request.no_reply</comment>
+        <translation>%1 尝试 %2 次（%3）均无应答：设备没有响应</translation>
+    </message>
+    <message>
+        <source>%1 abandoned: %2</source>
+        <comment>request.abandoned</comment>
+        <translation>%1 已放弃：%2</translation>
+    </message>
+    <message>
+        <source>%1 refused with an unreadable error</source>
+        <comment>request.unreadable_error</comment>
+        <translation>%1 被拒绝，错误信息无法解读</translation>
+    </message>
+    <message>
+        <source>%1 refused: %2</source>
+        <comment>request.refused</comment>
+        <translation>%1被拒绝：%2</translation>
+    </message>
+    <message>
+        <source>the instrument is not connected</source>
+        <comment>request.instrument_not_connected</comment>
+        <translation>仪器未连接</translation>
+    </message>
+    <message>
+        <source>move: no axis given</source>
+        <comment>request.move_no_axis</comment>
+        <translation>移动：未指定轴</translation>
+    </message>
+    <message>
+        <source>move: axis %1 does not exist on this instrument</source>
+        <comment>request.move_no_such_axis</comment>
+        <translation>移动：该仪器没有第 %1 轴</translation>
+    </message>
+    <message>
+        <source>move: axis %1 target is not a number</source>
+        <comment>request.move_target_not_number</comment>
+        <translation>移动：%1 轴的目标不是数字</translation>
+    </message>
+    <message>
+        <source>move: axis %1 named twice</source>
+        <comment>request.move_axis_twice</comment>
+        <translation>移动：%1 轴被指定了两次</translation>
+    </message>
+    <message>
+        <source>move: speed must be a positive number</source>
+        <comment>request.move_bad_speed</comment>
+        <translation>移动：速度必须为正数</translation>
+    </message>
+    <message>
+        <source>jog step: bad axis, step or speed</source>
+        <comment>request.jog_step_invalid</comment>
+        <translation>步进点动：轴、步长或速度无效</translation>
+    </message>
+    <message>
+        <source>jog: bad axis or velocity</source>
+        <comment>request.jog_invalid</comment>
+        <translation>点动：轴或速度无效</translation>
+    </message>
+    <message>
+        <source>soft limits: bad axis or value</source>
+        <comment>request.soft_limits_invalid</comment>
+        <translation>软限位：轴或数值无效</translation>
+    </message>
+    <message>
+        <source>dwell: %1 is not a time to wait</source>
+        <comment>request.dwell_invalid</comment>
+        <translation>暂停：%1 不是有效的等待时间</translation>
+    </message>
+    <message>
+        <source>dwell abandoned: the link went down</source>
+        <comment>request.dwell_link_down</comment>
+        <translation>暂停已放弃：连接已断开</translation>
+    </message>
+    <message>
+        <source>this instrument has no trigger output (protocol 1 has none)</source>
+        <comment>request.no_trigger_output</comment>
+        <translation>该仪器没有触发输出（协议 1 不支持）</translation>
+    </message>
+    <message>
+        <source>telemetry: %1</source>
+        <comment>request.telemetry_refused</comment>
+        <translation>遥测：%1</translation>
+    </message>
+    <message>
+        <source>the instrument answered a path request with something unreadable</source>
+        <comment>request.path_unreadable</comment>
+        <translation>仪器对路径请求的应答无法解读</translation>
+    </message>
+    <message>
+        <source>the device answered GET_GAINS with something unreadable</source>
+        <comment>request.gains_unreadable</comment>
+        <translation>设备对 GET_GAINS 的应答无法解读</translation>
+    </message>
+    <message>
+        <source>step %1 is not a usable step size</source>
+        <comment>request.step_size_invalid</comment>
+        <translation>%1 不是可用的阶跃幅值</translation>
+    </message>
+    <message>
+        <source>the device answered GET_CAPTURE with something unreadable</source>
+        <comment>request.capture_unreadable</comment>
+        <translation>设备对 GET_CAPTURE 的应答无法解读</translation>
+    </message>
+    <message>
+        <source>a new test replaced the capture while it was being read</source>
+        <comment>request.capture_replaced</comment>
+        <translation>读取采集数据时，新的测试覆盖了它</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <comment>device.refused</comment>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>no connection chosen</source>
+        <comment>link.no_connection_chosen</comment>
+        <translation>未选择连接</translation>
+    </message>
+    <message>
+        <source>disconnected</source>
+        <comment>link.disconnected</comment>
+        <translation>已断开连接</translation>
+    </message>
+    <message>
+        <source>link lost: %1</source>
+        <comment>link.lost</comment>
+        <translation>连接中断：%1</translation>
+    </message>
+    <message>
+        <source>no answer from %1: check power, cable and baud rate</source>
+        <comment>link.no_answer</comment>
+        <translation>%1 无应答：请检查电源、线缆和波特率</translation>
+    </message>
+    <message>
+        <source>%1 answered HELLO with something that is not BenchPilot protocol</source>
+        <comment>link.not_benchpilot</comment>
+        <translation>%1 对 HELLO 的应答不是 BenchPilot 协议</translation>
+    </message>
+    <message>
+        <source>the device speaks protocol version %1; this BenchPilot speaks version %2</source>
+        <comment>link.protocol_version</comment>
+        <translation>设备使用协议版本 %1；本 BenchPilot 使用版本 %2</translation>
+    </message>
+    <message>
+        <source>the device stopped answering</source>
+        <comment>link.stopped_answering</comment>
+        <translation>设备停止了响应</translation>
+    </message>
+    <message>
+        <source>the simulated cable is unplugged</source>
+        <comment>link.cable_unplugged</comment>
+        <translation>仿真线缆已拔出</translation>
+    </message>
+    <message>
+        <source>the simulated cable was unplugged</source>
+        <comment>link.cable_pulled</comment>
+        <translation>仿真线缆被拔出</translation>
+    </message>
+    <message>
+        <source>%1: device went away (%2)</source>
+        <comment>link.port_went_away</comment>
+        <translation>%1：设备已断开（%2）</translation>
+    </message>
+    <message>
+        <source>cannot open %1: it is busy or you lack permission (%2)</source>
+        <comment>link.port_busy</comment>
+        <translation>无法打开 %1：端口被占用或没有权限（%2）</translation>
+    </message>
+    <message>
+        <source>cannot open %1: no such port</source>
+        <comment>link.no_such_port</comment>
+        <translation>无法打开 %1：端口不存在</translation>
+    </message>
+    <message>
+        <source>cannot open %1: %2</source>
+        <comment>link.cannot_open</comment>
+        <translation>无法打开 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 telemetry not subscribed: %2</source>
+        <comment>telemetry.not_subscribed</comment>
+        <translation>%1 遥测未能订阅：%2</translation>
+    </message>
+    <message>
+        <source>rate limited to %1 by the %2 link (it carries at most %3 with %4 channels)</source>
+        <comment>telemetry.rate_link_limited</comment>
+        <translation>速率受 %2 链路限制为 %1（%4 个通道时最多 %3）</translation>
+    </message>
+    <message>
+        <source>rate limited to %1 by the device&apos;s %2 sample clock</source>
+        <comment>telemetry.rate_clock_limited</comment>
+        <translation>速率受设备 %2 采样时钟限制为 %1</translation>
+    </message>
+    <message>
+        <source>the device streams at %1, the nearest its sample clock makes</source>
+        <comment>telemetry.rate_nearest</comment>
+        <translation>设备以 %1 发送数据，这是其采样时钟能达到的最接近值</translation>
+    </message>
+    <message>
+        <source>%1</source>
+        <comment>telemetry.link_state</comment>
+        <translation>%1</translation>
+    </message>
+    <message>
+        <source>already recording to %1</source>
+        <comment>telemetry.already_recording</comment>
+        <translation>已在记录到 %1</translation>
+    </message>
+    <message>
+        <source>nothing to record: choose at least one channel of a connected instrument</source>
+        <comment>telemetry.nothing_to_record</comment>
+        <translation>没有可记录的数据：请至少选择一台已连接仪器的一个通道</translation>
+    </message>
+    <message>
+        <source>recording to %1 stopped: %2</source>
+        <comment>telemetry.recording_stopped</comment>
+        <translation>记录到 %1 已停止：%2</translation>
+    </message>
+    <message>
+        <source>%1: the device clock started again; its plots start afresh</source>
+        <comment>telemetry.clock_restarted</comment>
+        <translation>%1：设备时钟已重新开始，其曲线从头绘制</translation>
+    </message>
+    <message>
+        <source>home</source>
+        <comment>request.home</comment>
+        <translation>回零</translation>
+    </message>
+    <message>
+        <source>move</source>
+        <comment>request.move</comment>
+        <translation>移动</translation>
+    </message>
+    <message>
+        <source>jog step</source>
+        <comment>request.jog_step</comment>
+        <translation>步进点动</translation>
+    </message>
+    <message>
+        <source>jog</source>
+        <comment>request.jog</comment>
+        <translation>点动</translation>
+    </message>
+    <message>
+        <source>stop</source>
+        <comment>request.stop</comment>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>E-stop</source>
+        <comment>request.estop</comment>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <source>reset</source>
+        <comment>request.reset</comment>
+        <translation>复位</translation>
+    </message>
+    <message>
+        <source>set zero</source>
+        <comment>request.set_zero</comment>
+        <translation>设零点</translation>
+    </message>
+    <message>
+        <source>soft limits</source>
+        <comment>request.soft_limits</comment>
+        <translation>软限位设置</translation>
+    </message>
+    <message>
+        <source>path</source>
+        <comment>request.path</comment>
+        <translation>路径</translation>
+    </message>
+    <message>
+        <source>path segments</source>
+        <comment>request.path_segments</comment>
+        <translation>路径段</translation>
+    </message>
+    <message>
+        <source>pause</source>
+        <comment>request.pause</comment>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <source>resume</source>
+        <comment>request.resume</comment>
+        <translation>继续</translation>
+    </message>
+    <message>
+        <source>abort</source>
+        <comment>request.abort</comment>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <source>get gains</source>
+        <comment>request.get_gains</comment>
+        <translation>读取增益</translation>
+    </message>
+    <message>
+        <source>set gains</source>
+        <comment>request.set_gains</comment>
+        <translation>设置增益</translation>
+    </message>
+    <message>
+        <source>step test</source>
+        <comment>request.step_test</comment>
+        <translation>阶跃测试</translation>
+    </message>
+    <message>
+        <source>relay test</source>
+        <comment>request.relay_test</comment>
+        <translation>继电测试</translation>
+    </message>
+    <message>
+        <source>abort test</source>
+        <comment>request.abort_test</comment>
+        <translation>中止测试</translation>
+    </message>
+    <message>
+        <source>read capture</source>
+        <comment>request.read_capture</comment>
+        <translation>读取采集数据</translation>
+    </message>
+    <message>
+        <source>unknown command</source>
+        <comment>device.error.unknown_command</comment>
+        <translation>未知命令</translation>
+    </message>
+    <message>
+        <source>bad payload</source>
+        <comment>device.error.bad_payload</comment>
+        <translation>数据内容无效</translation>
+    </message>
+    <message>
+        <source>bad axis</source>
+        <comment>device.error.bad_axis</comment>
+        <translation>轴无效</translation>
+    </message>
+    <message>
+        <source>axis not homed</source>
+        <comment>device.error.not_homed</comment>
+        <translation>轴未回零</translation>
+    </message>
+    <message>
+        <source>soft limit</source>
+        <comment>device.error.soft_limit</comment>
+        <translation>超出软限位</translation>
+    </message>
+    <message>
+        <source>busy</source>
+        <comment>device.error.busy</comment>
+        <translation>设备忙</translation>
+    </message>
+    <message>
+        <source>E-stop active</source>
+        <comment>device.error.estop_active</comment>
+        <translation>急停已触发</translation>
+    </message>
+    <message>
+        <source>over link capacity</source>
+        <comment>device.error.over_capacity</comment>
+        <translation>超出链路容量</translation>
+    </message>
+    <message>
+        <source>out of range</source>
+        <comment>device.error.out_of_range</comment>
+        <translation>超出范围</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <comment>device.error.fault</comment>
+        <translation>故障</translation>
+    </message>
+    <message>
+        <source>gains refused</source>
+        <comment>device.error.bad_gains</comment>
+        <translation>增益被拒绝</translation>
+    </message>
+    <message>
+        <source>a test is running</source>
+        <comment>device.error.test_active</comment>
+        <translation>测试正在进行</translation>
+    </message>
+    <message>
+        <source>no closed loop to tune</source>
+        <comment>device.error.not_closed_loop</comment>
+        <translation>无可整定的闭环</translation>
+    </message>
+    <message>
+        <source>nothing captured</source>
+        <comment>device.error.no_capture</comment>
+        <translation>没有采集数据</translation>
+    </message>
+    <message>
+        <source>path queue full</source>
+        <comment>device.error.path_queue_full</comment>
+        <translation>路径队列已满</translation>
+    </message>
+    <message>
+        <source>path segment out of sequence</source>
+        <comment>device.error.path_sequence</comment>
+        <translation>路径段顺序错误</translation>
+    </message>
+    <message>
+        <source>bad path segment</source>
+        <comment>device.error.path_geometry</comment>
+        <translation>路径段无效</translation>
+    </message>
+    <message>
+        <source>no path to add to</source>
+        <comment>device.error.path_state</comment>
+        <translation>没有可追加的路径</translation>
+    </message>
+    <message>
+        <source>unknown error</source>
+        <comment>device.error.unknown</comment>
+        <translation>未知错误</translation>
+    </message>
+    <message>
+        <source>motion done</source>
+        <comment>device.event.motion_done</comment>
+        <translation>运动完成</translation>
+    </message>
+    <message>
+        <source>home done</source>
+        <comment>device.event.home_done</comment>
+        <translation>回零完成</translation>
+    </message>
+    <message>
+        <source>limit hit</source>
+        <comment>device.event.limit_hit</comment>
+        <translation>触发限位</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <comment>device.event.fault</comment>
+        <translation>故障</translation>
+    </message>
+    <message>
+        <source>E-stop</source>
+        <comment>device.event.estop</comment>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <source>jog expired</source>
+        <comment>device.event.jog_expired</comment>
+        <translation>点动超时停止</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <comment>device.event.stopped</comment>
+        <translation>已停止</translation>
+    </message>
+    <message>
+        <source>lost steps</source>
+        <comment>device.event.lost_steps</comment>
+        <translation>丢步</translation>
+    </message>
+    <message>
+        <source>reset</source>
+        <comment>device.event.reset</comment>
+        <translation>已复位</translation>
+    </message>
+    <message>
+        <source>test ended</source>
+        <comment>device.event.test_ended</comment>
+        <translation>测试结束</translation>
+    </message>
+    <message>
+        <source>test tripped its envelope</source>
+        <comment>device.event.test_tripped</comment>
+        <translation>测试超出安全包络</translation>
+    </message>
+    <message>
+        <source>test aborted</source>
+        <comment>device.event.test_aborted</comment>
+        <translation>测试已中止</translation>
+    </message>
+    <message>
+        <source>gains changed</source>
+        <comment>device.event.gains_changed</comment>
+        <translation>增益已更改</translation>
+    </message>
+    <message>
+        <source>path started</source>
+        <comment>device.event.path_started</comment>
+        <translation>路径开始</translation>
+    </message>
+    <message>
+        <source>path segment done</source>
+        <comment>device.event.path_segment_done</comment>
+        <translation>路径段完成</translation>
+    </message>
+    <message>
+        <source>path underrun</source>
+        <comment>device.event.path_underrun</comment>
+        <translation>路径队列欠载</translation>
+    </message>
+    <message>
+        <source>path done</source>
+        <comment>device.event.path_done</comment>
+        <translation>路径完成</translation>
+    </message>
+    <message>
+        <source>path held</source>
+        <comment>device.event.path_held</comment>
+        <translation>路径已暂停</translation>
+    </message>
+    <message>
+        <source>path aborted</source>
+        <comment>device.event.path_aborted</comment>
+        <translation>路径已中止</translation>
+    </message>
+    <message>
+        <source>unknown event</source>
+        <comment>device.event.unknown</comment>
+        <translation>未知事件</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <comment>path.state.idle</comment>
+        <translation>空闲</translation>
+    </message>
+    <message>
+        <source>filling</source>
+        <comment>path.state.filling</comment>
+        <translation>正在装入</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <comment>path.state.running</comment>
+        <translation>运行中</translation>
+    </message>
+    <message>
+        <source>waiting for segments</source>
+        <comment>path.state.starved</comment>
+        <translation>等待路径段</translation>
+    </message>
+    <message>
+        <source>holding</source>
+        <comment>path.state.holding</comment>
+        <translation>正在暂停</translation>
+    </message>
+    <message>
+        <source>held</source>
+        <comment>path.state.held</comment>
+        <translation>已暂停</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <comment>path.state.done</comment>
+        <translation>已完成</translation>
+    </message>
+    <message>
+        <source>aborted</source>
+        <comment>path.state.aborted</comment>
+        <translation>已中止</translation>
+    </message>
+    <message>
+        <source>no reason given</source>
+        <comment>path.reason.none</comment>
+        <translation>未说明原因</translation>
+    </message>
+    <message>
+        <source>paused from BenchPilot</source>
+        <comment>path.reason.host_hold</comment>
+        <translation>由 BenchPilot 暂停</translation>
+    </message>
+    <message>
+        <source>the instrument heard nothing from BenchPilot for a second</source>
+        <comment>path.reason.host_silent</comment>
+        <translation>仪器一秒内未收到 BenchPilot 的任何消息</translation>
+    </message>
+    <message>
+        <source>a stop</source>
+        <comment>path.reason.stop</comment>
+        <translation>停止命令</translation>
+    </message>
+    <message>
+        <source>the E-stop</source>
+        <comment>path.reason.estop</comment>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <source>a limit switch</source>
+        <comment>path.reason.limit_switch</comment>
+        <translation>限位开关</translation>
+    </message>
+    <message>
+        <source>a new connection to the instrument</source>
+        <comment>path.reason.new_session</comment>
+        <translation>仪器建立了新的连接</translation>
+    </message>
+    <message>
+        <source>abort</source>
+        <comment>path.reason.cleared</comment>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <source>link</source>
+        <comment>log.kind.link</comment>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <source>link error</source>
+        <comment>log.kind.link_error</comment>
+        <translation>连接错误</translation>
+    </message>
+    <message>
+        <source>refused</source>
+        <comment>log.kind.refused</comment>
+        <translation>被拒绝</translation>
+    </message>
+    <message>
+        <source>disconnected</source>
+        <comment>link.state.disconnected</comment>
+        <translation>未连接</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <comment>link.state.connecting</comment>
+        <translation>正在连接</translation>
+    </message>
+    <message>
+        <source>identified</source>
+        <comment>link.state.identified</comment>
+        <translation>已识别</translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <comment>link.state.ready</comment>
+        <translation>就绪</translation>
+    </message>
+    <message>
+        <source>link lost</source>
+        <comment>link.state.lost</comment>
+        <translation>连接中断</translation>
+    </message>
+</context>
+<context>
+    <name>words::FileWords</name>
+    <message>
+        <source>warning: %1</source>
+        <translation>警告：%1</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <comment>file.unreadable</comment>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>cannot open %1: %2</source>
+        <comment>file.cannot_open</comment>
+        <translation>无法打开 %1：%2</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <comment>file.cannot_read</comment>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <comment>file.cannot_write</comment>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 is %2 MiB, more than the %3 MiB a BenchPilot file may be</source>
+        <comment>file.too_large</comment>
+        <translation>%1 大小为 %2 MiB，超过 BenchPilot 文件上限 %3 MiB</translation>
+    </message>
+    <message>
+        <source>cannot make the folder %1</source>
+        <comment>file.cannot_make_folder</comment>
+        <translation>无法创建文件夹 %1</translation>
+    </message>
+    <message>
+        <source>not valid JSON: %1</source>
+        <comment>file.json_syntax</comment>
+        <translation>不是有效的 JSON：%1</translation>
+    </message>
+    <message>
+        <source>%1</source>
+        <comment>file.json_field</comment>
+        <translation>%1</translation>
+    </message>
+    <message>
+        <source>a quoted field is not closed</source>
+        <comment>file.csv.unterminated_quote</comment>
+        <translation>带引号的字段没有闭合</translation>
+    </message>
+    <message>
+        <source>text after a closing quote</source>
+        <comment>file.csv.text_after_quote</comment>
+        <translation>闭合引号之后还有文字</translation>
+    </message>
+    <message>
+        <source>the file is separated by semicolons; BenchPilot reads commas and &apos;.&apos; as the decimal point</source>
+        <comment>file.csv.semicolons</comment>
+        <translation>文件以分号分隔；BenchPilot 读取逗号分隔、以“.”为小数点的文件</translation>
+    </message>
+    <message>
+        <source>the text is larger than %1 MiB</source>
+        <comment>file.json.too_large</comment>
+        <translation>文本超过 %1 MiB</translation>
+    </message>
+    <message>
+        <source>unexpected text after the end of the document</source>
+        <comment>file.json.text_after_end</comment>
+        <translation>文档结束之后还有多余的文字</translation>
+    </message>
+    <message>
+        <source>nested deeper than %1 levels</source>
+        <comment>file.json.too_deep</comment>
+        <translation>嵌套超过 %1 层</translation>
+    </message>
+    <message>
+        <source>comments are not allowed in JSON</source>
+        <comment>file.json.comment</comment>
+        <translation>JSON 中不允许注释</translation>
+    </message>
+    <message>
+        <source>expected a value, found %1</source>
+        <comment>file.json.expected_value</comment>
+        <translation>此处应为一个值，却是%1</translation>
+    </message>
+    <message>
+        <source>a number may not have leading zeros</source>
+        <comment>file.json.leading_zero</comment>
+        <translation>数字不能有前导零</translation>
+    </message>
+    <message>
+        <source>expected a digit, found %1</source>
+        <comment>file.json.expected_digit</comment>
+        <translation>此处应为数字，却是%1</translation>
+    </message>
+    <message>
+        <source>expected a digit after the decimal point, found %1</source>
+        <comment>file.json.expected_fraction_digit</comment>
+        <translation>小数点后应为数字，却是%1</translation>
+    </message>
+    <message>
+        <source>expected a digit in the exponent, found %1</source>
+        <comment>file.json.expected_exponent_digit</comment>
+        <translation>指数中应为数字，却是%1</translation>
+    </message>
+    <message>
+        <source>the number is too large for a double</source>
+        <comment>file.json.number_too_large</comment>
+        <translation>数字太大，超出双精度范围</translation>
+    </message>
+    <message>
+        <source>malformed number</source>
+        <comment>file.json.malformed_number</comment>
+        <translation>数字格式错误</translation>
+    </message>
+    <message>
+        <source>expected four hex digits after \u</source>
+        <comment>file.json.bad_unicode_escape</comment>
+        <translation>\u 之后应为四位十六进制数字</translation>
+    </message>
+    <message>
+        <source>invalid UTF-8 byte %1</source>
+        <comment>file.json.invalid_utf8_byte</comment>
+        <translation>无效的 UTF-8 字节 %1</translation>
+    </message>
+    <message>
+        <source>truncated UTF-8 character</source>
+        <comment>file.json.truncated_utf8</comment>
+        <translation>UTF-8 字符不完整</translation>
+    </message>
+    <message>
+        <source>invalid UTF-8 sequence</source>
+        <comment>file.json.invalid_utf8</comment>
+        <translation>无效的 UTF-8 序列</translation>
+    </message>
+    <message>
+        <source>unterminated string</source>
+        <comment>file.json.unterminated_string</comment>
+        <translation>字符串没有结束引号</translation>
+    </message>
+    <message>
+        <source>unterminated string (a line break inside quotes)</source>
+        <comment>file.json.line_break_in_string</comment>
+        <translation>字符串没有结束引号（引号内有换行）</translation>
+    </message>
+    <message>
+        <source>a control character inside a string must be escaped</source>
+        <comment>file.json.control_character</comment>
+        <translation>字符串中的控制字符必须转义</translation>
+    </message>
+    <message>
+        <source>a \u escape of a high surrogate must be followed by a low surrogate</source>
+        <comment>file.json.lone_high_surrogate</comment>
+        <translation>高代理项的 \u 转义之后必须跟低代理项</translation>
+    </message>
+    <message>
+        <source>a lone low surrogate in a \u escape</source>
+        <comment>file.json.lone_low_surrogate</comment>
+        <translation>\u 转义中出现孤立的低代理项</translation>
+    </message>
+    <message>
+        <source>unknown escape \%1</source>
+        <comment>file.json.unknown_escape</comment>
+        <translation>未知的转义 \%1</translation>
+    </message>
+    <message>
+        <source>a trailing comma before &apos;%1&apos; is not allowed</source>
+        <comment>file.json.trailing_comma</comment>
+        <translation>“%1”之前不允许有多余的逗号</translation>
+    </message>
+    <message>
+        <source>expected &apos;,&apos; or &apos;]&apos; in an array, found %1</source>
+        <comment>file.json.expected_array_comma</comment>
+        <translation>数组中此处应为“,”或“]”，却是%1</translation>
+    </message>
+    <message>
+        <source>expected a quoted member name, found %1</source>
+        <comment>file.json.expected_member_name</comment>
+        <translation>此处应为带引号的成员名，却是%1</translation>
+    </message>
+    <message>
+        <source>expected &apos;:&apos; after the member name &quot;%1&quot;, found %2</source>
+        <comment>file.json.expected_colon</comment>
+        <translation>成员名“%1”之后应为“:”，却是%2</translation>
+    </message>
+    <message>
+        <source>expected &apos;,&apos; or &apos;}&apos; in an object, found %1</source>
+        <comment>file.json.expected_object_comma</comment>
+        <translation>对象中此处应为“,”或“}”，却是%1</translation>
+    </message>
+    <message>
+        <source>the member &quot;%1&quot; appears twice</source>
+        <comment>file.json.duplicate_member</comment>
+        <translation>成员“%1”出现了两次</translation>
+    </message>
+    <message>
+        <source>the end of the text</source>
+        <comment>file.json.found_end</comment>
+        <translation>文本结尾</translation>
+    </message>
+    <message>
+        <source>a byte %1</source>
+        <comment>file.json.found_byte</comment>
+        <translation>字节 %1</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;</source>
+        <comment>file.json.found_char</comment>
+        <translation>“%1”</translation>
+    </message>
+    <message>
+        <source>is missing</source>
+        <comment>file.json.missing</comment>
+        <translation>缺失</translation>
+    </message>
+    <message>
+        <source>must be %1, not %2</source>
+        <comment>file.json.wrong_type</comment>
+        <translation>必须是%1，而不是%2</translation>
+    </message>
+    <message>
+        <source>must be a number or null, not %1</source>
+        <comment>file.json.number_or_null</comment>
+        <translation>必须是数字或 null，而不是%1</translation>
+    </message>
+    <message>
+        <source>must be from %1 to %2 (got %3)</source>
+        <comment>file.json.out_of_range</comment>
+        <translation>必须在 %1 到 %2 之间（当前为 %3）</translation>
+    </message>
+    <message>
+        <source>must be at least %1 (got %2)</source>
+        <comment>file.json.below_min</comment>
+        <translation>必须不小于 %1（当前为 %2）</translation>
+    </message>
+    <message>
+        <source>must be at most %1 (got %2)</source>
+        <comment>file.json.above_max</comment>
+        <translation>必须不大于 %1（当前为 %2）</translation>
+    </message>
+    <message>
+        <source>must be a whole number (got %1)</source>
+        <comment>file.json.not_whole</comment>
+        <translation>必须是整数（当前为 %1）</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not one of %2</source>
+        <comment>file.json.not_one_of</comment>
+        <translation>“%1”不是以下之一：%2</translation>
+    </message>
+    <message>
+        <source>unknown field</source>
+        <comment>file.json.unknown_field</comment>
+        <translation>未知字段</translation>
+    </message>
+    <message>
+        <source>unknown field; did you mean &quot;%1&quot;?</source>
+        <comment>file.json.unknown_field_suggest</comment>
+        <translation>未知字段；是否指“%1”？</translation>
+    </message>
+    <message>
+        <source>must be an array of %1 numbers</source>
+        <comment>file.json.array_of_numbers</comment>
+        <translation>必须是含 %1 个数字的数组</translation>
+    </message>
+    <message>
+        <source>the document must be an object, not %1</source>
+        <comment>file.json.document_not_object</comment>
+        <translation>文档必须是对象，而不是%1</translation>
+    </message>
+    <message>
+        <source>must name the file&apos;s kind: &quot;schema&quot;: &quot;%1&quot;</source>
+        <comment>file.json.schema_missing</comment>
+        <translation>必须注明文件类型：&quot;schema&quot;: &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>is &quot;%1&quot;, expected &quot;%2&quot;</source>
+        <comment>file.json.schema_wrong</comment>
+        <translation>为“%1”，应为“%2”</translation>
+    </message>
+    <message>
+        <source>must be a whole number from 1</source>
+        <comment>file.json.version_invalid</comment>
+        <translation>必须是从 1 开始的整数</translation>
+    </message>
+    <message>
+        <source>is %1: written by a newer BenchPilot (this one reads up to %2)</source>
+        <comment>file.json.version_newer</comment>
+        <translation>为 %1：由更新版本的 BenchPilot 写入（本版本最多读取 %2）</translation>
+    </message>
+    <message>
+        <source>must be 16 lower-case hex digits</source>
+        <comment>file.log.bad_fingerprint</comment>
+        <translation>必须是 16 位小写十六进制数字</translation>
+    </message>
+    <message>
+        <source>the log is empty: it has no header line</source>
+        <comment>file.log.empty</comment>
+        <translation>日志为空：没有表头行</translation>
+    </message>
+    <message>
+        <source>the log has no &quot;run&quot; header</source>
+        <comment>file.log.no_header</comment>
+        <translation>日志没有“run”表头</translation>
+    </message>
+    <message>
+        <source>the log must begin with its &quot;run&quot; header</source>
+        <comment>file.log.no_header_first</comment>
+        <translation>日志必须以“run”表头开始</translation>
+    </message>
+    <message>
+        <source>a second run header: one log holds one run and its resumptions</source>
+        <comment>file.log.second_header</comment>
+        <translation>出现第二个运行表头：一个日志只记录一次运行及其续行</translation>
+    </message>
+    <message>
+        <source>op %1 is beyond the %2 ops of the header</source>
+        <comment>file.log.op_beyond</comment>
+        <translation>操作 %1 超出表头所列的 %2 个操作</translation>
+    </message>
+    <message>
+        <source>op %1 starts again after it was done: the log is not trustworthy</source>
+        <comment>file.log.op_restarted</comment>
+        <translation>操作 %1 完成后又重新开始：该日志不可信</translation>
+    </message>
+    <message>
+        <source>a pump line for op %1, which has not started</source>
+        <comment>file.log.pump_before_start</comment>
+        <translation>操作 %1 尚未开始，却有其泵动作记录</translation>
+    </message>
+    <message>
+        <source>op %1 is done but was not under way</source>
+        <comment>file.log.done_not_started</comment>
+        <translation>操作 %1 标记为完成，但并未在进行中</translation>
+    </message>
+    <message>
+        <source>only an interrupted op can be skipped (op %1)</source>
+        <comment>file.log.skip_not_interrupted</comment>
+        <translation>只有中断的操作才能跳过（操作 %1）</translation>
+    </message>
+    <message>
+        <source>cannot open the run log %1: %2</source>
+        <comment>file.log.cannot_open</comment>
+        <translation>无法打开运行日志 %1：%2</translation>
+    </message>
+    <message>
+        <source>cannot write the run log %1: %2</source>
+        <comment>file.log.cannot_write</comment>
+        <translation>无法写入运行日志 %1：%2</translation>
+    </message>
+    <message>
+        <source>cannot sync the run log %1 to disk: %2</source>
+        <comment>file.log.cannot_sync</comment>
+        <translation>无法将运行日志 %1 同步到磁盘：%2</translation>
+    </message>
+    <message>
+        <source>the run log is not open</source>
+        <comment>file.log.not_open</comment>
+        <translation>运行日志未打开</translation>
+    </message>
+    <message>
+        <source>null</source>
+        <comment>json.type.null</comment>
+        <translation>null</translation>
+    </message>
+    <message>
+        <source>true or false</source>
+        <comment>json.type.bool</comment>
+        <translation>true 或 false</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <comment>json.type.number</comment>
+        <translation>数字</translation>
+    </message>
+    <message>
+        <source>a string</source>
+        <comment>json.type.string</comment>
+        <translation>字符串</translation>
+    </message>
+    <message>
+        <source>an array</source>
+        <comment>json.type.array</comment>
+        <translation>数组</translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <comment>json.type.object</comment>
+        <translation>对象</translation>
+    </message>
+</context>
+<context>
+    <name>words::GrblWords</name>
+    <message>
+        <source>error %1: %2 (answering &quot;%3&quot;)</source>
+        <comment>grbl.error.worded</comment>
+        <translation>错误 %1：%2（对应“%3”）</translation>
+    </message>
+    <message>
+        <source>error %1: %2</source>
+        <comment>grbl.error.worded_no_line</comment>
+        <translation>错误 %1：%2</translation>
+    </message>
+    <message>
+        <source>alarm %1: %2</source>
+        <comment>grbl.alarm.worded</comment>
+        <translation>报警 %1：%2</translation>
+    </message>
+    <message>
+        <source>a code this BenchPilot does not know (see the controller&apos;s documentation)</source>
+        <comment>grbl.error.unknown_code</comment>
+        <translation>本 BenchPilot 不认识的代码（请查阅控制器文档）</translation>
+    </message>
+    <message>
+        <source>a code this BenchPilot does not know (see the controller&apos;s documentation)</source>
+        <comment>grbl.alarm.unknown_code</comment>
+        <translation>本 BenchPilot 不认识的代码（请查阅控制器文档）</translation>
+    </message>
+    <message>
+        <source>a status report that cannot be read (%1): %2</source>
+        <comment>grbl.status.malformed</comment>
+        <translation>无法解读的状态报告（%1）：%2</translation>
+    </message>
+    <message>
+        <source>$%1 (%2) is missing from the settings ($$)</source>
+        <comment>grbl.settings.missing</comment>
+        <translation>设置（$$）中缺少 $%1（%2 轴）</translation>
+    </message>
+    <message>
+        <source>$%1 (%2) is %3: it must be above 0</source>
+        <comment>grbl.settings.invalid</comment>
+        <translation>$%1（%2 轴）为 %3：必须大于 0</translation>
+    </message>
+    <message>
+        <source>$13=1: the controller reports in inches; BenchPilot converts them to mm</source>
+        <comment>grbl.settings.report_inches</comment>
+        <translation>$13=1：控制器以英寸报告；BenchPilot 将其换算为 mm</translation>
+    </message>
+    <message>
+        <source>$20=1 with $22=0: soft limits are on but homing is off, so the limits have no reference</source>
+        <comment>grbl.settings.soft_limits_without_homing</comment>
+        <translation>$20=1 而 $22=0：软限位已开启但回零未开启，限位没有基准</translation>
+    </message>
+    <message>
+        <source>even a creeping jog cannot stop within %1: the link takes %2 and jogs are refreshed every %3</source>
+        <comment>grbl.jog.budget_too_small</comment>
+        <translation>即使极慢的点动也无法在 %1 内停住：链路延迟 %2，点动每 %3 刷新一次</translation>
+    </message>
+    <message>
+        <source>the %1 word is not a finite number</source>
+        <comment>grbl.gcode.not_finite</comment>
+        <translation>%1 字的数值不是有限数</translation>
+    </message>
+    <message>
+        <source>the feed %1 must be above 0</source>
+        <comment>grbl.gcode.bad_feed</comment>
+        <translation>进给速度 %1 必须大于 0</translation>
+    </message>
+    <message>
+        <source>the dwell %1 must be 0 or more</source>
+        <comment>grbl.gcode.bad_dwell</comment>
+        <translation>暂停时间 %1 必须不小于 0</translation>
+    </message>
+    <message>
+        <source>%1 is not an axis GRBL moves</source>
+        <comment>grbl.gcode.bad_axis</comment>
+        <translation>%1 不是 GRBL 控制的轴</translation>
+    </message>
+    <message>
+        <source>a move needs at least one axis</source>
+        <comment>grbl.gcode.no_axes</comment>
+        <translation>一次移动至少需要一个轴</translation>
+    </message>
+    <message>
+        <source>output port %1 is not one GRBL has</source>
+        <comment>grbl.gcode.bad_port</comment>
+        <translation>GRBL 没有输出口 %1</translation>
+    </message>
+    <message>
+        <source>$%1 is not a setting number</source>
+        <comment>grbl.gcode.bad_setting</comment>
+        <translation>$%1 不是设置编号</translation>
+    </message>
+    <message>
+        <source>the line is longer than GRBL accepts (%1): %2</source>
+        <comment>grbl.gcode.too_long</comment>
+        <translation>该行超过 GRBL 允许的长度（%1）：%2</translation>
+    </message>
+    <message>
+        <source>unknown state</source>
+        <comment>grbl.status.unknown_state</comment>
+        <translation>未知状态</translation>
+    </message>
+    <message>
+        <source>bad sub-state</source>
+        <comment>grbl.status.bad_substate</comment>
+        <translation>子状态无效</translation>
+    </message>
+    <message>
+        <source>bad position</source>
+        <comment>grbl.status.bad_position</comment>
+        <translation>位置无效</translation>
+    </message>
+    <message>
+        <source>bad work offset</source>
+        <comment>grbl.status.bad_offset</comment>
+        <translation>工件坐标偏置无效</translation>
+    </message>
+    <message>
+        <source>bad buffer state</source>
+        <comment>grbl.status.bad_buffer</comment>
+        <translation>缓冲区状态无效</translation>
+    </message>
+    <message>
+        <source>bad line number</source>
+        <comment>grbl.status.bad_line_number</comment>
+        <translation>行号无效</translation>
+    </message>
+    <message>
+        <source>bad feed and speed</source>
+        <comment>grbl.status.bad_feed</comment>
+        <translation>进给与转速无效</translation>
+    </message>
+    <message>
+        <source>bad pin state</source>
+        <comment>grbl.status.bad_pins</comment>
+        <translation>引脚状态无效</translation>
+    </message>
+    <message>
+        <source>bad overrides</source>
+        <comment>grbl.status.bad_overrides</comment>
+        <translation>倍率无效</translation>
+    </message>
+    <message>
+        <source>bad accessory state</source>
+        <comment>grbl.status.bad_accessories</comment>
+        <translation>附件状态无效</translation>
+    </message>
+    <message>
+        <source>no position</source>
+        <comment>grbl.status.no_position</comment>
+        <translation>没有位置</translation>
+    </message>
+</context>
+<context>
+    <name>words::PatternWords</name>
+    <message>
+        <source>must be a number</source>
+        <comment>pattern.not_a_number</comment>
+        <translation>必须是数字</translation>
+    </message>
+    <message>
+        <source>must be two numbers [x, y]</source>
+        <comment>pattern.not_a_point</comment>
+        <translation>必须是两个数 [x, y]</translation>
+    </message>
+    <message>
+        <source>must be above %1 (got %2)</source>
+        <comment>pattern.not_above</comment>
+        <translation>必须大于 %1（当前为 %2）</translation>
+    </message>
+    <message>
+        <source>must be from %1 to %2 (got %3)</source>
+        <comment>pattern.out_of_range</comment>
+        <translation>必须在 %1 到 %2 之间（当前为 %3）</translation>
+    </message>
+    <message>
+        <source>must differ from start_mm: the line has no length</source>
+        <comment>pattern.line_has_no_length</comment>
+        <translation>必须与 start_mm 不同：直线长度为零</translation>
+    </message>
+    <message>
+        <source>gives %1 chords, more than %2: loosen it or shorten the wave</source>
+        <comment>pattern.too_many_chords</comment>
+        <translation>将产生 %1 段弦，超过 %2：请放宽容差或缩短波形</translation>
+    </message>
+    <message>
+        <source>must be a whole or half number of turns (got %1)</source>
+        <comment>pattern.not_half_turns</comment>
+        <translation>必须是整圈或半圈（当前为 %1）</translation>
+    </message>
+    <message>
+        <source>gives %1 passes: too many (at most %2), widen the spacing</source>
+        <comment>pattern.too_many_passes</comment>
+        <translation>将产生 %1 道扫描，过多（最多 %2）：请加大间距</translation>
+    </message>
+    <message>
+        <source>segment %1 (%2) reaches %3 = %4, beyond the upper soft limit %5</source>
+        <comment>pattern.segment_above_limit</comment>
+        <translation>第 %1 段（%2）到达 %3 = %4，超出正向软限位 %5</translation>
+    </message>
+    <message>
+        <source>segment %1 (%2) reaches %3 = %4, beyond the lower soft limit %5</source>
+        <comment>pattern.segment_below_limit</comment>
+        <translation>第 %1 段（%2）到达 %3 = %4，超出负向软限位 %5</translation>
+    </message>
+    <message>
+        <source>The instrument was replaced by another connection.</source>
+        <comment>pattern.run.replaced</comment>
+        <translation>仪器已被另一个连接替换。</translation>
+    </message>
+    <message>
+        <source>The instrument ran out of queued segments and waited for more: the link is slower than the pattern.</source>
+        <comment>pattern.run.underrun</comment>
+        <translation>仪器的队列段已用完，只能等待后续段：通信链路跟不上图形的速度。</translation>
+    </message>
+    <message>
+        <source>Pattern done in %1: contour error max %2, RMS %3 (%4 samples at %5).</source>
+        <comment>pattern.run.done</comment>
+        <translation>图形运行完成，用时 %1：轮廓误差最大 %2，均方根 %3（%4 个采样点，采样率 %5）。</translation>
+    </message>
+    <message>
+        <source>The instrument paused the pattern: %1. Press Resume to go on.</source>
+        <comment>pattern.run.held</comment>
+        <translation>仪器暂停了图形：%1。按“继续”接着运行。</translation>
+    </message>
+    <message>
+        <source>Pattern aborted at segment %1 of %2.</source>
+        <comment>pattern.run.aborted</comment>
+        <translation>图形在第 %1 段（共 %2 段）处中止。</translation>
+    </message>
+    <message>
+        <source>The instrument stopped the pattern at segment %1 (%2). Press Resume to continue from there.</source>
+        <comment>pattern.run.stopped_by_instrument</comment>
+        <translation>仪器在第 %1 段停止了图形（%2）。按“继续”从该处接着运行。</translation>
+    </message>
+    <message>
+        <source>The instrument is not connected or cannot run paths.</source>
+        <comment>pattern.run.no_path_queue</comment>
+        <translation>仪器未连接，或不能运行路径。</translation>
+    </message>
+    <message>
+        <source>The pattern has no segments.</source>
+        <comment>pattern.run.no_segments</comment>
+        <translation>图形中没有任何段。</translation>
+    </message>
+    <message>
+        <source>The E-stop is active: reset it first.</source>
+        <comment>pattern.run.estop_active</comment>
+        <translation>急停已触发：请先复位急停。</translation>
+    </message>
+    <message>
+        <source>The instrument is still moving: wait until it is at rest.</source>
+        <comment>pattern.run.still_moving</comment>
+        <translation>仪器仍在运动：请等待其停稳。</translation>
+    </message>
+    <message>
+        <source>Axis %1 is not homed: home it first.</source>
+        <comment>pattern.run.not_homed</comment>
+        <translation>%1 轴尚未回零：请先回零。</translation>
+    </message>
+    <message>
+        <source>This instrument has no Z axis to work at a height.</source>
+        <comment>pattern.run.no_z</comment>
+        <translation>该仪器没有 Z 轴，不能在指定高度上工作。</translation>
+    </message>
+    <message>
+        <source>Z %1 is outside its soft limits %2 … %3.</source>
+        <comment>pattern.run.z_outside_limits</comment>
+        <translation>Z = %1 超出其软限位 %2 … %3。</translation>
+    </message>
+    <message>
+        <source>Segment %1: feed %2 is above the instrument&apos;s %3.</source>
+        <comment>pattern.run.feed_too_high</comment>
+        <translation>第 %1 段：进给速度 %2 超过仪器的最大值 %3。</translation>
+    </message>
+    <message>
+        <source>Cannot move to the pattern&apos;s start: %1</source>
+        <comment>pattern.run.approach_refused</comment>
+        <translation>无法移动到图形起点：%1</translation>
+    </message>
+    <message>
+        <source>The move to the pattern&apos;s start was stopped before it arrived. Press Resume to try again.</source>
+        <comment>pattern.run.approach_stopped</comment>
+        <translation>移动到图形起点的过程在到达前被停止。按“继续”重试。</translation>
+    </message>
+    <message>
+        <source>The instrument refused the pattern: %1</source>
+        <comment>pattern.run.refused</comment>
+        <translation>仪器拒绝了该图形：%1</translation>
+    </message>
+    <message>
+        <source>The link to the instrument was lost at segment %1 of %2. The instrument holds the path by itself within a second. Reconnect, then press Resume to continue from segment %1.</source>
+        <comment>pattern.run.link_lost</comment>
+        <translation>在第 %1 段（共 %2 段）处与仪器的连接中断。仪器会在一秒内自行停住路径。请重新连接，然后按“继续”从第 %1 段接着运行。</translation>
+    </message>
+    <message>
+        <source>Reconnect the instrument first.</source>
+        <comment>pattern.run.reconnect_first</comment>
+        <translation>请先重新连接仪器。</translation>
+    </message>
+    <message>
+        <source>Continuing from segment %1.</source>
+        <comment>pattern.run.continuing</comment>
+        <translation>从第 %1 段继续。</translation>
+    </message>
+    <message>
+        <source>LINE</source>
+        <comment>segment.line</comment>
+        <translation>直线</translation>
+    </message>
+    <message>
+        <source>ARC CW</source>
+        <comment>segment.arc_cw</comment>
+        <translation>顺时针圆弧</translation>
+    </message>
+    <message>
+        <source>ARC CCW</source>
+        <comment>segment.arc_ccw</comment>
+        <translation>逆时针圆弧</translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <comment>pattern.state.idle</comment>
+        <translation>就绪</translation>
+    </message>
+    <message>
+        <source>moving to the start</source>
+        <comment>pattern.state.approaching</comment>
+        <translation>正在移向起点</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <comment>pattern.state.running</comment>
+        <translation>运行中</translation>
+    </message>
+    <message>
+        <source>paused</source>
+        <comment>pattern.state.paused</comment>
+        <translation>已暂停</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <comment>pattern.state.done</comment>
+        <translation>已完成</translation>
+    </message>
+    <message>
+        <source>aborted</source>
+        <comment>pattern.state.aborted</comment>
+        <translation>已中止</translation>
+    </message>
+    <message>
+        <source>interrupted</source>
+        <comment>pattern.state.interrupted</comment>
+        <translation>已中断</translation>
+    </message>
+    <message>
+        <source>refused</source>
+        <comment>pattern.state.failed</comment>
+        <translation>被拒绝</translation>
+    </message>
+</context>
+<context>
+    <name>words::PlateWords</name>
+    <message>
+        <source>must not be empty</source>
+        <comment>plate.empty</comment>
+        <translation>不能为空</translation>
+    </message>
+    <message>
+        <source>must be more than 0 (got %1)</source>
+        <comment>plate.not_positive</comment>
+        <translation>必须大于 0（当前为 %1）</translation>
+    </message>
+    <message>
+        <source>must be 0 or more (got %1)</source>
+        <comment>plate.negative</comment>
+        <translation>必须不小于 0（当前为 %1）</translation>
+    </message>
+    <message>
+        <source>must be from %1 to %2 (got %3)</source>
+        <comment>plate.out_of_range</comment>
+        <translation>必须在 %1 到 %2 之间（当前为 %3）</translation>
+    </message>
+    <message>
+        <source>must be more than 0 and at most %1 (got %2)</source>
+        <comment>plate.size_out_of_range</comment>
+        <translation>必须大于 0 且不大于 %1（当前为 %2）</translation>
+    </message>
+    <message>
+        <source>more problems not shown</source>
+        <comment>plate.more_not_shown</comment>
+        <translation>还有更多问题未列出</translation>
+    </message>
+    <message>
+        <source>unknown well %1 on a %2-well plate</source>
+        <comment>plate.unknown_well</comment>
+        <translation>%2 孔板上没有孔 %1</translation>
+    </message>
+    <message>
+        <source>must be within the Z travel (at most %1, got %2)</source>
+        <comment>plate.deck.table_beyond_travel</comment>
+        <translation>必须在 Z 轴行程之内（不大于 %1，当前为 %2）</translation>
+    </message>
+    <message>
+        <source>must be more than 0 and at most max_speed %1 (got %2)</source>
+        <comment>plate.deck.default_speed_invalid</comment>
+        <translation>必须大于 0 且不大于 max_speed %1（当前为 %2）</translation>
+    </message>
+    <message>
+        <source>slot &quot;%1&quot; is defined twice</source>
+        <comment>plate.deck.slot_twice</comment>
+        <translation>板位“%1”被定义了两次</translation>
+    </message>
+    <message>
+        <source>a plate in slot &quot;%1&quot; would cover X %2–%3, Y %4–%5, outside the travel 0–%6 × 0–%7</source>
+        <comment>plate.deck.slot_outside_travel</comment>
+        <translation>板位“%1”上的孔板将覆盖 X %2–%3、Y %4–%5，超出行程 0–%6 × 0–%7</translation>
+    </message>
+    <message>
+        <source>slot &quot;%1&quot; overlaps slot &quot;%2&quot;</source>
+        <comment>plate.deck.slots_overlap</comment>
+        <translation>板位“%1”与板位“%2”重叠</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is already the id of a slot or station</source>
+        <comment>plate.deck.id_taken</comment>
+        <translation>“%1”已被某个板位或工位使用</translation>
+    </message>
+    <message>
+        <source>station &quot;%1&quot; at (%2, %3) is outside the travel</source>
+        <comment>plate.deck.station_outside_travel</comment>
+        <translation>工位“%1”位于（%2, %3），超出行程</translation>
+    </message>
+    <message>
+        <source>station &quot;%1&quot; needs 0 ≤ safe_z_mm &lt; depth_z_mm ≤ %2</source>
+        <comment>plate.deck.station_heights</comment>
+        <translation>工位“%1”须满足 0 ≤ safe_z_mm &lt; depth_z_mm ≤ %2</translation>
+    </message>
+    <message>
+        <source>a deck needs at least one slot</source>
+        <comment>plate.deck.no_slots</comment>
+        <translation>台面至少需要一个板位</translation>
+    </message>
+    <message>
+        <source>the grid must have 1–%1 rows and 1–%2 columns (got %3 × %4)</source>
+        <comment>plate.labware.grid_size</comment>
+        <translation>网格须有 1–%1 行、1–%2 列（当前为 %3 × %4）</translation>
+    </message>
+    <message>
+        <source>a plate needs at least one well</source>
+        <comment>plate.labware.no_wells</comment>
+        <translation>孔板至少需要一个孔</translation>
+    </message>
+    <message>
+        <source>well %1 is outside the %2 × %3 grid</source>
+        <comment>plate.labware.well_outside_grid</comment>
+        <translation>孔 %1 超出 %2 × %3 网格</translation>
+    </message>
+    <message>
+        <source>well %1 is defined twice</source>
+        <comment>plate.labware.well_twice</comment>
+        <translation>孔 %1 被定义了两次</translation>
+    </message>
+    <message>
+        <source>well %1 needs a size above 0</source>
+        <comment>plate.labware.well_no_size</comment>
+        <translation>孔 %1 的尺寸必须大于 0</translation>
+    </message>
+    <message>
+        <source>well %1: its bottom (%2) plus its depth (%3) must be above 0 and at most the plate&apos;s height %4</source>
+        <comment>plate.labware.well_depth</comment>
+        <translation>孔 %1：孔底高度（%2）加孔深（%3）必须大于 0 且不超过板高 %4</translation>
+    </message>
+    <message>
+        <source>well %1 needs a volume above 0 µL</source>
+        <comment>plate.labware.well_no_volume</comment>
+        <translation>孔 %1 的容积必须大于 0 µL</translation>
+    </message>
+    <message>
+        <source>well %1 at (%2, %3) does not fit on the %4 × %5 footprint</source>
+        <comment>plate.labware.well_off_footprint</comment>
+        <translation>孔 %1 位于（%2, %3），超出 %4 × %5 的板面</translation>
+    </message>
+    <message>
+        <source>names no wells</source>
+        <comment>plate.wells.none</comment>
+        <translation>没有指定任何孔</translation>
+    </message>
+    <message>
+        <source>%1 needs a row letter, like &quot;row B&quot;</source>
+        <comment>plate.wells.row_needs_letter</comment>
+        <translation>%1 需要行字母，例如“row B”</translation>
+    </message>
+    <message>
+        <source>unknown row %1 on a %2-well plate (rows A–%3)</source>
+        <comment>plate.wells.unknown_row</comment>
+        <translation>%2 孔板上没有行 %1（行为 A–%3）</translation>
+    </message>
+    <message>
+        <source>%1 needs a column number, like &quot;column 3&quot;</source>
+        <comment>plate.wells.column_needs_number</comment>
+        <translation>%1 需要列号，例如“column 3”</translation>
+    </message>
+    <message>
+        <source>unknown column %1 on a %2-well plate (columns 1–%3)</source>
+        <comment>plate.wells.unknown_column</comment>
+        <translation>%2 孔板上没有列 %1（列为 1–%3）</translation>
+    </message>
+    <message>
+        <source>%1 is not a range of two wells, like &quot;A1:H1&quot;</source>
+        <comment>plate.wells.bad_range</comment>
+        <translation>%1 不是由两个孔构成的范围，例如“A1:H1”</translation>
+    </message>
+    <message>
+        <source>%1 is not a well (&quot;A1&quot;), a range (&quot;A1:H1&quot;), &quot;row B&quot;, &quot;column 3&quot; or &quot;all&quot;</source>
+        <comment>plate.wells.not_a_well_set</comment>
+        <translation>%1 不是孔（“A1”）、范围（“A1:H1”）、“row B”、“column 3”或“all”</translation>
+    </message>
+    <message>
+        <source>well %1 is named twice; dose a well twice with two steps</source>
+        <comment>plate.wells.named_twice</comment>
+        <translation>孔 %1 被指定了两次；同一孔加样两次请用两个步骤</translation>
+    </message>
+    <message>
+        <source>teach at least two wells (three to see a residual)</source>
+        <comment>plate.calibration.too_few_wells</comment>
+        <translation>请至少示教两个孔（三个孔才能看到残差）</translation>
+    </message>
+    <message>
+        <source>well %1 has no position</source>
+        <comment>plate.calibration.no_position</comment>
+        <translation>孔 %1 没有位置</translation>
+    </message>
+    <message>
+        <source>the taught wells are less than 1 mm apart: teach wells at the plate&apos;s corners</source>
+        <comment>plate.calibration.too_close</comment>
+        <translation>示教的孔相距不到 1 mm：请示教孔板四角的孔</translation>
+    </message>
+    <message>
+        <source>a scale per axis needs three taught wells</source>
+        <comment>plate.calibration.scaled_needs_three</comment>
+        <translation>按轴分别求比例需要示教三个孔</translation>
+    </message>
+    <message>
+        <source>the taught wells lie on one line: a scale per axis needs a row and a column</source>
+        <comment>plate.calibration.on_one_line</comment>
+        <translation>示教的孔在一条直线上：按轴分别求比例需要一行和一列</translation>
+    </message>
+    <message>
+        <source>the taught wells are up to %1 off the plate&apos;s shape (%2 mm; more than %3): one was taught off centre or on the wrong well; teach them again</source>
+        <comment>plate.calibration.large_residual</comment>
+        <translation>示教的孔与孔板形状最多相差 %1（%2 mm；超过 %3）：有孔示教偏离中心或示教错了孔；请重新示教</translation>
+    </message>
+    <message>
+        <source>the fitted scale is %1: the taught wells are not as far apart as the labware says (wrong labware, or a well taught on its neighbour)</source>
+        <comment>plate.calibration.scale_off</comment>
+        <translation>拟合比例为 %1：示教孔之间的距离与耗材定义不符（耗材选错，或示教到了相邻的孔）</translation>
+    </message>
+    <message>
+        <source>the plate sits turned by %1: is it seated flat in the slot?</source>
+        <comment>plate.calibration.turned</comment>
+        <translation>孔板转了 %1：是否平放在板位中？</translation>
+    </message>
+    <message>
+        <source>give either &quot;grid&quot; or &quot;wells&quot;, not both</source>
+        <comment>plate.file.grid_and_wells</comment>
+        <translation>请给出“grid”或“wells”之一，不能同时给出</translation>
+    </message>
+    <message>
+        <source>is missing: give the wells as a &quot;grid&quot; (A1 and pitch) or a list of &quot;wells&quot;</source>
+        <comment>plate.file.no_grid</comment>
+        <translation>缺失：请以“grid”（A1 与孔距）或“wells”列表给出孔</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a well name like &quot;A1&quot;</source>
+        <comment>plate.file.not_a_well_name</comment>
+        <translation>“%1”不是孔名，孔名形如“A1”</translation>
+    </message>
+    <message>
+        <source>more than %1 wells</source>
+        <comment>plate.file.too_many_wells</comment>
+        <translation>孔数超过 %1</translation>
+    </message>
+    <message>
+        <source>is %1; only Opentrons labware schema 2 is read</source>
+        <comment>plate.file.opentrons_schema</comment>
+        <translation>为 %1；只能读取 Opentrons 耗材定义第 2 版</translation>
+    </message>
+    <message>
+        <source>this is a tip rack, not a plate: the analyzer has a fixed tip</source>
+        <comment>plate.file.tip_rack</comment>
+        <translation>这是吸头盒，不是孔板：分析仪使用固定加样针</translation>
+    </message>
+    <message>
+        <source>must be an array of well names</source>
+        <comment>plate.file.ordering_not_names</comment>
+        <translation>必须是孔名数组</translation>
+    </message>
+    <message>
+        <source>slot &quot;%1&quot; is calibrated twice</source>
+        <comment>plate.file.slot_calibrated_twice</comment>
+        <translation>板位“%1”被校准了两次</translation>
+    </message>
+    <message>
+        <source>cannot fit the taught points: %1</source>
+        <comment>plate.file.cannot_fit</comment>
+        <translation>无法拟合示教点：%1</translation>
+    </message>
+</context>
+<context>
+    <name>words::ProfileWords</name>
+    <message>
+        <source>%1 = %2 must be finite</source>
+        <comment>profile.not_finite</comment>
+        <translation>%1 = %2 必须是有限数</translation>
+    </message>
+    <message>
+        <source>axis %1: %2 = %3 must be finite</source>
+        <comment>profile.axis_not_finite</comment>
+        <translation>第 %1 轴：%2 = %3 必须是有限数</translation>
+    </message>
+    <message>
+        <source>%1 = %2 must be finite and above 0 for %3</source>
+        <comment>profile.not_positive</comment>
+        <translation>对 %3，%1 = %2 必须为大于 0 的有限数</translation>
+    </message>
+    <message>
+        <source>%1 = %2 must be finite and above 0</source>
+        <comment>profile.not_positive_plain</comment>
+        <translation>%1 = %2 必须为大于 0 的有限数</translation>
+    </message>
+    <message>
+        <source>axis %1: %2 = %3 must be finite and above 0</source>
+        <comment>profile.axis_not_positive</comment>
+        <translation>第 %1 轴：%2 = %3 必须为大于 0 的有限数</translation>
+    </message>
+    <message>
+        <source>%1 = %2 must be finite and not negative for %3</source>
+        <comment>profile.negative</comment>
+        <translation>对 %3，%1 = %2 必须为非负的有限数</translation>
+    </message>
+    <message>
+        <source>%1 = %2 must be from 0 to vMaxMmS for %3</source>
+        <comment>profile.start_speed_above_max</comment>
+        <translation>对 %3，%1 = %2 必须在 0 到 vMaxMmS 之间</translation>
+    </message>
+    <message>
+        <source>%1 = %2 must be above 0 when plateauMm is above 0 for %3</source>
+        <comment>profile.start_speed_for_plateau</comment>
+        <translation>对 %3，当 plateauMm 大于 0 时 %1 = %2 必须大于 0</translation>
+    </message>
+    <message>
+        <source>unknown profile kind</source>
+        <comment>profile.unknown_kind</comment>
+        <translation>未知的速度曲线类型</translation>
+    </message>
+    <message>
+        <source>%1 axes: a move has 1 to %2</source>
+        <comment>profile.axis_count</comment>
+        <translation>%1 个轴：一次移动只能有 1 到 %2 个轴</translation>
+    </message>
+    <message>
+        <source>path limits are not finite; check the per-axis limits</source>
+        <comment>profile.path_limits_not_finite</comment>
+        <translation>路径限值不是有限数；请检查各轴限值</translation>
+    </message>
+    <message>
+        <source>path speed is not finite; check the per-axis vMaxMmS</source>
+        <comment>profile.path_speed_not_finite</comment>
+        <translation>路径速度不是有限数；请检查各轴的 vMaxMmS</translation>
+    </message>
+    <message>
+        <source>joint %1 block %2: t0 = 0 ms must be above 0</source>
+        <comment>profile.block_zero_duration</comment>
+        <translation>关节 %1 块 %2：t0 = 0 ms，必须大于 0</translation>
+    </message>
+    <message>
+        <source>joint %1 block %2: |V2| = %3 microsteps/s exceeds vMax = %4</source>
+        <comment>profile.block_too_fast</comment>
+        <translation>关节 %1 块 %2：|V2| = %3 微步/s，超过 vMax = %4</translation>
+    </message>
+    <message>
+        <source>joint %1 block %2: S = %3 microsteps is not reachable from V1 = %4 to V2 = %5 microsteps/s in t0 = %6 (reachable %7 … %8)</source>
+        <comment>profile.block_unreachable</comment>
+        <translation>关节 %1 块 %2：在 t0 = %6 内从 V1 = %4 到 V2 = %5 微步/s 无法走完 S = %3 微步（可达 %7 … %8）</translation>
+    </message>
+</context>
+<context>
+    <name>words::RecipeWords</name>
+    <message>
+        <source>a recipe has at most %1 steps (got %2)</source>
+        <comment>recipe.too_many_steps</comment>
+        <translation>一个方案最多 %1 个步骤（当前 %2 个）</translation>
+    </message>
+    <message>
+        <source>plate &quot;%1&quot; is named twice</source>
+        <comment>recipe.plate_named_twice</comment>
+        <translation>孔板名“%1”重复</translation>
+    </message>
+    <message>
+        <source>unknown slot &quot;%1&quot;: the deck has slots %2</source>
+        <comment>recipe.unknown_slot</comment>
+        <translation>未知板位“%1”：台面上的板位有 %2</translation>
+    </message>
+    <message>
+        <source>slot &quot;%1&quot; already holds another plate of this recipe</source>
+        <comment>recipe.slot_taken</comment>
+        <translation>板位“%1”上已放了本方案的另一块孔板</translation>
+    </message>
+    <message>
+        <source>unknown labware &quot;%1&quot; (built in: %2; or a labware file)</source>
+        <comment>recipe.unknown_labware</comment>
+        <translation>未知耗材“%1”（内置：%2；或使用耗材文件）</translation>
+    </message>
+    <message>
+        <source>must be below the safe height (more than %1) and at most %2 (got %3)</source>
+        <comment>recipe.depth_not_below_safe</comment>
+        <translation>必须低于安全高度（大于 %1）且不大于 %2（当前为 %3）</translation>
+    </message>
+    <message>
+        <source>a recipe needs at least one step</source>
+        <comment>recipe.no_steps</comment>
+        <translation>方案至少需要一个步骤</translation>
+    </message>
+    <message>
+        <source>%1 is not above the plate: its top is at Z %2; the safe height must be smaller</source>
+        <comment>recipe.safe_not_above_plate</comment>
+        <translation>%1 不在孔板上方：板顶在 Z %2；安全高度必须更小</translation>
+    </message>
+    <message>
+        <source>%1 is below the bottom of the wells (Z %2): the tip would hit it</source>
+        <comment>recipe.depth_below_bottom</comment>
+        <translation>%1 低于孔底（Z %2）：加样针会碰到孔底</translation>
+    </message>
+    <message>
+        <source>missing plate: the recipe has no plates</source>
+        <comment>recipe.no_plates</comment>
+        <translation>缺少孔板：本方案没有孔板</translation>
+    </message>
+    <message>
+        <source>missing plate: the recipe has %1 plates (%2); say which</source>
+        <comment>recipe.plate_ambiguous</comment>
+        <translation>缺少孔板：本方案有 %1 块孔板（%2）；请指明是哪一块</translation>
+    </message>
+    <message>
+        <source>unknown plate &quot;%1&quot;; the recipe&apos;s plates are %2</source>
+        <comment>recipe.unknown_plate</comment>
+        <translation>未知孔板“%1”；本方案的孔板有 %2</translation>
+    </message>
+    <message>
+        <source>unknown plate &quot;%1&quot;: the recipe has no plates</source>
+        <comment>recipe.unknown_plate_none</comment>
+        <translation>未知孔板“%1”：本方案没有孔板</translation>
+    </message>
+    <message>
+        <source>well %1 of plate &quot;%2&quot; is at (%3, %4), outside the analyzer&apos;s travel (0–%5 × 0–%6): check the slot&apos;s calibration</source>
+        <comment>recipe.well_outside_travel</comment>
+        <translation>孔板“%2”的孔 %1 位于（%3, %4），超出分析仪行程（0–%5 × 0–%6）：请检查板位校准</translation>
+    </message>
+    <message>
+        <source>unknown station &quot;%1&quot; (the deck has %2)</source>
+        <comment>recipe.unknown_station</comment>
+        <translation>未知工位“%1”（台面上的工位有 %2）</translation>
+    </message>
+    <message>
+        <source>unknown station &quot;%1&quot;: the deck has none</source>
+        <comment>recipe.unknown_station_none</comment>
+        <translation>未知工位“%1”：台面上没有工位</translation>
+    </message>
+    <message>
+        <source>the recipe visits more than %1 wells; split it into several recipes</source>
+        <comment>recipe.too_many_ops</comment>
+        <translation>该方案访问的孔超过 %1 个；请拆分成几个方案</translation>
+    </message>
+    <message>
+        <source>well %1 of plate &quot;%2&quot; receives %3 in all; it holds %4</source>
+        <comment>recipe.well_overfilled</comment>
+        <translation>孔板“%2”的孔 %1 总共加入 %3；其容积为 %4</translation>
+    </message>
+    <message>
+        <source>volume over capacity: %1 is more than the syringe holds (%2)</source>
+        <comment>recipe.volume_over_capacity</comment>
+        <translation>超出容量：%1 大于注射器容积（%2）</translation>
+    </message>
+    <message>
+        <source>volume over capacity: the syringe would hold %1, more than its %2</source>
+        <comment>recipe.syringe_overfull</comment>
+        <translation>超出容量：注射器中将有 %1，超过其容积 %2</translation>
+    </message>
+    <message>
+        <source>volume over capacity: the syringe would hold %1, more than its %2 (it holds %3 at this point)</source>
+        <comment>recipe.syringe_overfull_holding</comment>
+        <translation>超出容量：注射器中将有 %1，超过其容积 %2（此时已有 %3）</translation>
+    </message>
+    <message>
+        <source>the plunger would pass its empty end (%1)</source>
+        <comment>recipe.plunger_past_empty</comment>
+        <translation>柱塞将越过排空端（%1）</translation>
+    </message>
+    <message>
+        <source>give either wells or a station, not both</source>
+        <comment>recipe.wells_and_station</comment>
+        <translation>请给出孔或工位之一，不能同时给出</translation>
+    </message>
+    <message>
+        <source>is missing: say which wells to aspirate from (or a station)</source>
+        <comment>recipe.wells_missing_aspirate</comment>
+        <translation>缺失：请指明从哪些孔吸液（或从哪个工位）</translation>
+    </message>
+    <message>
+        <source>is missing: say which wells to dispense into (or a station)</source>
+        <comment>recipe.wells_missing_dispense</comment>
+        <translation>缺失：请指明向哪些孔排液（或向哪个工位）</translation>
+    </message>
+    <message>
+        <source>%1 is more than a %2 well of plate &quot;%3&quot;</source>
+        <comment>recipe.aspirate_over_well</comment>
+        <translation>%1 超过孔板“%3”中 %2 的孔</translation>
+    </message>
+    <message>
+        <source>%1 does not fit a %2 well of plate &quot;%3&quot;</source>
+        <comment>recipe.dispense_over_well</comment>
+        <translation>%1 装不进孔板“%3”中 %2 的孔</translation>
+    </message>
+    <message>
+        <source>only a dispense takes a source</source>
+        <comment>recipe.source_only_dispense</comment>
+        <translation>只有排液步骤才能指定来源</translation>
+    </message>
+    <message>
+        <source>%1 is past the wall of a well %2 wide</source>
+        <comment>recipe.offset_past_wall</comment>
+        <translation>%1 超出了宽 %2 的孔壁</translation>
+    </message>
+    <message>
+        <source>dispensing %1 needs that much liquid in the syringe; it holds %2 here: aspirate first, or give the step a &quot;source&quot;</source>
+        <comment>recipe.dispense_without_liquid</comment>
+        <translation>排液 %1 需要注射器中有这么多液体；此处只有 %2：请先吸液，或为该步骤指定“source”</translation>
+    </message>
+    <message>
+        <source>mixing %1 in a %2 well</source>
+        <comment>recipe.mix_over_well</comment>
+        <translation>在 %2 的孔中混匀 %1</translation>
+    </message>
+    <message>
+        <source>is missing: say which station washes the tip</source>
+        <comment>recipe.wash_station_missing</comment>
+        <translation>缺失：请指明在哪个工位清洗加样针</translation>
+    </message>
+    <message>
+        <source>give either a well or a station, not both</source>
+        <comment>recipe.source_well_and_station</comment>
+        <translation>请给出孔或工位之一，不能同时给出</translation>
+    </message>
+    <message>
+        <source>the source is outside the analyzer&apos;s travel</source>
+        <comment>recipe.source_outside_travel</comment>
+        <translation>来源超出分析仪行程</translation>
+    </message>
+    <message>
+        <source>volume over capacity: %1 per well, but the syringe has room for %2 here (%3 in all)</source>
+        <comment>recipe.transfer_no_room</comment>
+        <translation>超出容量：每孔 %1，但此处注射器只剩 %2 的空间（总容积 %3）</translation>
+    </message>
+    <message>
+        <source>a round draws %1 from a %2 well</source>
+        <comment>recipe.round_over_source</comment>
+        <translation>一轮从 %2 的孔中吸取 %1</translation>
+    </message>
+    <message>
+        <source>must be a string like &quot;A1&quot; or &quot;A1:H1&quot;, not %1</source>
+        <comment>recipe.file.well_not_string</comment>
+        <translation>必须是形如“A1”或“A1:H1”的字符串，而不是%1</translation>
+    </message>
+    <message>
+        <source>must be a well set (&quot;A1:H1&quot;, &quot;row B&quot;, …) or a list of them, not %1</source>
+        <comment>recipe.file.wells_wrong_type</comment>
+        <translation>必须是孔集合（“A1:H1”、“row B”……）或其列表，而不是%1</translation>
+    </message>
+    <message>
+        <source>unknown step type &quot;%1&quot;; the types are %2</source>
+        <comment>recipe.file.unknown_step_type</comment>
+        <translation>未知步骤类型“%1”；可用类型为 %2</translation>
+    </message>
+    <message>
+        <source>a %1 step has no &quot;%2&quot;</source>
+        <comment>recipe.file.field_of_other_step</comment>
+        <translation>%1 步骤没有“%2”</translation>
+    </message>
+    <message>
+        <source>needs a &quot;well&quot; (with its &quot;plate&quot;) or a &quot;station&quot;</source>
+        <comment>recipe.file.source_empty</comment>
+        <translation>需要“well”（及其“plate”）或“station”</translation>
+    </message>
+    <message>
+        <source>at most %1 plates</source>
+        <comment>recipe.file.too_many_plates</comment>
+        <translation>最多 %1 块孔板</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <comment>recipe.where.well</comment>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>station %1</source>
+        <comment>recipe.where.station</comment>
+        <translation>工位 %1</translation>
+    </message>
+    <message>
+        <source>aspirate %1 from %2</source>
+        <comment>recipe.op.aspirate</comment>
+        <translation>从 %2 吸液 %1</translation>
+    </message>
+    <message>
+        <source>dispense %1 into %2</source>
+        <comment>recipe.op.dispense</comment>
+        <translation>向 %2 排液 %1</translation>
+    </message>
+    <message>
+        <source>mix %1 in %2</source>
+        <comment>recipe.op.mix</comment>
+        <translation>在 %2 混匀 %1</translation>
+    </message>
+    <message>
+        <source>wash %1 at %2</source>
+        <comment>recipe.op.wash</comment>
+        <translation>在 %2 清洗 %1</translation>
+    </message>
+    <message>
+        <source>air gap %1</source>
+        <comment>recipe.op.air_gap</comment>
+        <translation>吸入空气间隔 %1</translation>
+    </message>
+    <message>
+        <source>wait %1</source>
+        <comment>recipe.op.wait</comment>
+        <translation>等待 %1</translation>
+    </message>
+    <message>
+        <source>touch off in %1</source>
+        <comment>recipe.op.touch_off</comment>
+        <translation>在 %1 贴壁</translation>
+    </message>
+    <message>
+        <source>the run</source>
+        <comment>recipe.run.the_run</comment>
+        <translation>本次运行</translation>
+    </message>
+    <message>
+        <source>the end</source>
+        <comment>recipe.run.the_end</comment>
+        <translation>结尾</translation>
+    </message>
+    <message>
+        <source>a run is under way: abort it before changing the recipe</source>
+        <comment>recipe.run.busy_changing</comment>
+        <translation>运行正在进行：请先中止，再更改方案</translation>
+    </message>
+    <message>
+        <source>the recipe does not validate: %1: %2</source>
+        <comment>recipe.run.does_not_validate</comment>
+        <translation>方案未通过检查：%1：%2</translation>
+    </message>
+    <message>
+        <source>the analyzer is not connected</source>
+        <comment>recipe.run.not_connected</comment>
+        <translation>分析仪未连接</translation>
+    </message>
+    <message>
+        <source>recipes run on the analyzer (axes X, Y, Z and the pump P); this is the %1</source>
+        <comment>recipe.run.not_an_analyzer</comment>
+        <translation>加样方案只能在分析仪上运行（X、Y、Z 轴和泵 P）；当前仪器是%1</translation>
+    </message>
+    <message>
+        <source>the E-stop is latched: reset it before running</source>
+        <comment>recipe.run.estop_latched</comment>
+        <translation>急停已锁定：请先复位再运行</translation>
+    </message>
+    <message>
+        <source>axis %1 is not homed: home the analyzer first (a recipe moves to absolute positions)</source>
+        <comment>recipe.run.not_homed</comment>
+        <translation>%1 轴尚未回零：请先让分析仪回零（方案要移动到绝对位置）</translation>
+    </message>
+    <message>
+        <source>the analyzer is still moving: wait until it is still</source>
+        <comment>recipe.run.still_moving</comment>
+        <translation>分析仪仍在运动：请等待其停稳</translation>
+    </message>
+    <message>
+        <source>%1: (%2, %3) is beyond the soft limits X %4–%5, Y %6–%7</source>
+        <comment>recipe.run.xy_beyond_limits</comment>
+        <translation>%1：（%2, %3）超出软限位 X %4–%5、Y %6–%7</translation>
+    </message>
+    <message>
+        <source>%1: Z %2 is beyond the soft limits %3–%4</source>
+        <comment>recipe.run.z_beyond_limits</comment>
+        <translation>%1：Z %2 超出软限位 %3–%4</translation>
+    </message>
+    <message>
+        <source>the plunger would travel %1–%2 (it is at %3), beyond its limits %4–%5: empty the syringe first</source>
+        <comment>recipe.run.plunger_beyond_limits_full</comment>
+        <translation>柱塞将运行到 %1–%2（当前在 %3），超出其限位 %4–%5：请先排空注射器</translation>
+    </message>
+    <message>
+        <source>the plunger would travel %1–%2 (it is at %3), beyond its limits %4–%5: the recipe dispenses more than it aspirates</source>
+        <comment>recipe.run.plunger_beyond_limits_empty</comment>
+        <translation>柱塞将运行到 %1–%2（当前在 %3），超出其限位 %4–%5：方案排出的液体多于吸入的</translation>
+    </message>
+    <message>
+        <source>%1: the run stopped, since what it does could no longer be recorded</source>
+        <comment>recipe.run.log_failed</comment>
+        <translation>%1：运行已停止，因为其动作已无法记录</translation>
+    </message>
+    <message>
+        <source>a run is already under way</source>
+        <comment>recipe.run.already_running</comment>
+        <translation>已有运行正在进行</translation>
+    </message>
+    <message>
+        <source>no recipe to run</source>
+        <comment>recipe.run.no_recipe</comment>
+        <translation>没有可运行的方案</translation>
+    </message>
+    <message>
+        <source>the analyzer refused a move of %1: %2</source>
+        <comment>recipe.run.move_refused</comment>
+        <translation>分析仪拒绝了“%1”中的一次移动：%2</translation>
+    </message>
+    <message>
+        <source>aborted; the tip is up at Z %1</source>
+        <comment>recipe.run.aborted_tip_up</comment>
+        <translation>已中止；加样针已抬起到 Z %1</translation>
+    </message>
+    <message>
+        <source>aborted; the tip could not be raised (E-stop or Z not homed)</source>
+        <comment>recipe.run.aborted_tip_down</comment>
+        <translation>已中止；加样针无法抬起（急停或 Z 轴未回零）</translation>
+    </message>
+    <message>
+        <source>aborted by the operator while paused</source>
+        <comment>recipe.run.aborted_while_paused</comment>
+        <translation>暂停期间由操作员中止</translation>
+    </message>
+    <message>
+        <source>paused after %1; Resume continues with the next well</source>
+        <comment>recipe.run.paused_after</comment>
+        <translation>在“%1”之后暂停；按“继续”从下一个孔接着运行</translation>
+    </message>
+    <message>
+        <source>E-stop: the run stopped at %1. Reset the E-stop, check the machine, then Resume</source>
+        <comment>recipe.run.estop</comment>
+        <translation>急停：运行停在“%1”。请复位急停、检查设备，然后按“继续”</translation>
+    </message>
+    <message>
+        <source>%1 (%2): the run stopped; re-home before resuming</source>
+        <comment>recipe.run.fault</comment>
+        <translation>%1（%2）：运行已停止；继续之前请重新回零</translation>
+    </message>
+    <message>
+        <source>%1 (%2) during %3</source>
+        <comment>recipe.run.event_during</comment>
+        <translation>“%3”期间发生%1（%2）</translation>
+    </message>
+    <message>
+        <source>no MotionDone arrived for a %1 move, but the status shows it completed: going on</source>
+        <comment>recipe.run.motion_done_lost</comment>
+        <translation>%1移动没有收到 MotionDone，但状态显示已完成：继续运行</translation>
+    </message>
+    <message>
+        <source>the analyzer did not finish a %1 move of %2 in time</source>
+        <comment>recipe.run.move_timeout</comment>
+        <translation>分析仪未能按时完成“%2”中的%1移动</translation>
+    </message>
+    <message>
+        <source>the analyzer is back: Resume continues with %1</source>
+        <comment>recipe.run.back</comment>
+        <translation>分析仪已恢复连接：按“继续”从“%1”接着运行</translation>
+    </message>
+    <message>
+        <source>the link to the analyzer was lost during %1: the run stopped (the analyzer completes the move it had). Reconnect, then Resume</source>
+        <comment>recipe.run.link_lost</comment>
+        <translation>在“%1”期间与分析仪的连接中断：运行已停止（分析仪会完成正在执行的移动）。请重新连接，然后按“继续”</translation>
+    </message>
+    <message>
+        <source>%1 was interrupted after liquid started to move (%2): say whether to skip it or do it again</source>
+        <comment>recipe.run.interrupted_needs_decision</comment>
+        <translation>“%1”在液体开始移动后被中断（%2）：请决定跳过还是重做</translation>
+    </message>
+    <message>
+        <source>not resumed: %1 was interrupted and no decision was made</source>
+        <comment>recipe.run.not_resumed_no_decision</comment>
+        <translation>未继续：“%1”被中断且未作决定</translation>
+    </message>
+    <message>
+        <source>%1 will be done again</source>
+        <comment>recipe.run.will_redo</comment>
+        <translation>“%1”将重做</translation>
+    </message>
+    <message>
+        <source>%1 counts as done (skipped on resume)</source>
+        <comment>recipe.run.counts_as_done</comment>
+        <translation>“%1”视为已完成（继续时跳过）</translation>
+    </message>
+    <message>
+        <source>nothing to resume</source>
+        <comment>recipe.run.nothing_to_resume</comment>
+        <translation>没有可继续的运行</translation>
+    </message>
+    <message>
+        <source>the run log is closed: resume from the log file instead</source>
+        <comment>recipe.run.log_closed</comment>
+        <translation>运行日志已关闭：请改为从日志文件继续</translation>
+    </message>
+    <message>
+        <source>%1 cannot be trusted to resume from: line %2: %3</source>
+        <comment>recipe.run.log_untrusted</comment>
+        <translation>%1 不可信，不能据此继续：第 %2 行：%3</translation>
+    </message>
+    <message>
+        <source>%1 is the log of another recipe, or of this one before it changed (%2 ops, plan %3; this recipe: %4 ops, plan %5)</source>
+        <comment>recipe.run.log_of_other_recipe</comment>
+        <translation>%1 是另一个方案的日志，或是本方案修改前的日志（%2 个操作，计划 %3；本方案：%4 个操作，计划 %5）</translation>
+    </message>
+    <message>
+        <source>the run in %1 finished: nothing to resume</source>
+        <comment>recipe.run.log_finished</comment>
+        <translation>%1 中的运行已完成：没有可继续的内容</translation>
+    </message>
+    <message>
+        <source>the plunger is at %1 but the log&apos;s last completed well left it at %2: the syringe was moved (or the analyzer restarted) since the run stopped, so what it holds is unknown. Start a new run.</source>
+        <comment>recipe.run.plunger_moved</comment>
+        <translation>柱塞在 %1，但日志中最后完成的孔使其停在 %2：运行停止后注射器被移动过（或分析仪重启过），其中的液量未知。请开始新的运行。</translation>
+    </message>
+    <message>
+        <source>resuming %1 from %2: %3 of %4 wells already done, continuing with %5</source>
+        <comment>recipe.run.resuming</comment>
+        <translation>从 %2 继续 %1：%4 个孔中已完成 %3 个，接着运行“%5”</translation>
+    </message>
+    <message>
+        <source>the plunger is at %1, where this step leaves it: its liquid most likely moved in full</source>
+        <comment>recipe.evidence.moved_in_full</comment>
+        <translation>柱塞在 %1，正是该步骤完成后的位置：液体很可能已全部移动</translation>
+    </message>
+    <message>
+        <source>the plunger is at %1, where it was before the pump move: no liquid moved</source>
+        <comment>recipe.evidence.nothing_moved</comment>
+        <translation>柱塞在 %1，与泵动作之前相同：没有液体移动</translation>
+    </message>
+    <message>
+        <source>the plunger is at %1, between %2 (before) and %3 (after): part of the volume moved</source>
+        <comment>recipe.evidence.part_moved</comment>
+        <translation>柱塞在 %1，介于 %2（之前）与 %3（之后）之间：部分液体已移动</translation>
+    </message>
+    <message>
+        <source>a %1 ends where it starts: the plunger cannot tell how far it got</source>
+        <comment>recipe.evidence.cannot_tell</comment>
+        <translation>%1结束时回到起始位置：无法从柱塞位置判断进行到了哪一步</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <comment>recipe.state.idle</comment>
+        <translation>空闲</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <comment>recipe.state.running</comment>
+        <translation>运行中</translation>
+    </message>
+    <message>
+        <source>pausing after this well</source>
+        <comment>recipe.state.pausing</comment>
+        <translation>本孔完成后暂停</translation>
+    </message>
+    <message>
+        <source>paused</source>
+        <comment>recipe.state.paused</comment>
+        <translation>已暂停</translation>
+    </message>
+    <message>
+        <source>aborting</source>
+        <comment>recipe.state.aborting</comment>
+        <translation>正在中止</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <comment>recipe.state.stopped</comment>
+        <translation>已停止</translation>
+    </message>
+    <message>
+        <source>finished</source>
+        <comment>recipe.state.finished</comment>
+        <translation>已完成</translation>
+    </message>
+    <message>
+        <source>raise</source>
+        <comment>recipe.move.raise</comment>
+        <translation>抬起</translation>
+    </message>
+    <message>
+        <source>travel</source>
+        <comment>recipe.move.travel</comment>
+        <translation>平移</translation>
+    </message>
+    <message>
+        <source>lower</source>
+        <comment>recipe.move.lower</comment>
+        <translation>下降</translation>
+    </message>
+    <message>
+        <source>pump</source>
+        <comment>recipe.move.pump</comment>
+        <translation>泵</translation>
+    </message>
+    <message>
+        <source>touch</source>
+        <comment>recipe.move.touch</comment>
+        <translation>贴壁</translation>
+    </message>
+    <message>
+        <source>dwell</source>
+        <comment>recipe.move.dwell</comment>
+        <translation>停留</translation>
+    </message>
+    <message>
+        <source>aspirate</source>
+        <comment>recipe.step.aspirate</comment>
+        <translation>吸液</translation>
+    </message>
+    <message>
+        <source>dispense</source>
+        <comment>recipe.step.dispense</comment>
+        <translation>排液</translation>
+    </message>
+    <message>
+        <source>mix</source>
+        <comment>recipe.step.mix</comment>
+        <translation>混匀</translation>
+    </message>
+    <message>
+        <source>wash</source>
+        <comment>recipe.step.wash</comment>
+        <translation>清洗</translation>
+    </message>
+    <message>
+        <source>air gap</source>
+        <comment>recipe.step.air_gap</comment>
+        <translation>空气间隔</translation>
+    </message>
+    <message>
+        <source>wait</source>
+        <comment>recipe.step.wait</comment>
+        <translation>等待</translation>
+    </message>
+    <message>
+        <source>touch-off</source>
+        <comment>recipe.step.touch_off</comment>
+        <translation>贴壁</translation>
+    </message>
+    <message numerus="yes">
+        <source>running %1: %Ln wells, about %2; log %3</source>
+        <comment>recipe.run.started</comment>
+        <translation>
+            <numerusform>正在运行 %1：%Ln 个孔，约 %2；日志 %3</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 finished: %Ln wells</source>
+        <comment>recipe.run.finished</comment>
+        <translation>
+            <numerusform>%1 已完成：%Ln 个孔</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>aborted by the operator</source>
+        <comment>recipe.run.aborted</comment>
+        <translation>由操作员中止</translation>
+    </message>
+    <message>
+        <source>the operator chose to do the interrupted op again</source>
+        <comment>recipe.run.operator_redo</comment>
+        <translation>操作员选择重做被中断的操作</translation>
+    </message>
+    <message>
+        <source>the operator counted the interrupted op as done</source>
+        <comment>recipe.run.operator_skip</comment>
+        <translation>操作员将被中断的操作视为已完成</translation>
+    </message>
+</context>
+<context>
+    <name>words::ScanWords</name>
+    <message>
+        <source>must be from %1 to %2 (got %3)</source>
+        <comment>scan.out_of_range</comment>
+        <translation>必须在 %1 到 %2 之间（当前为 %3）</translation>
+    </message>
+    <message>
+        <source>must be above 0 and at most %1 (got %2)</source>
+        <comment>scan.not_positive_or_above</comment>
+        <translation>必须大于 0 且不大于 %1（当前为 %2）</translation>
+    </message>
+    <message>
+        <source>must be a finite position in mm</source>
+        <comment>scan.not_a_position</comment>
+        <translation>必须是以 mm 为单位的有限位置</translation>
+    </message>
+    <message>
+        <source>the region has zero size (%1 × %2): the corners must differ in both X and Y</source>
+        <comment>scan.region.corners_zero_size</comment>
+        <translation>区域大小为零（%1 × %2）：两个角点的 X 和 Y 都必须不同</translation>
+    </message>
+    <message>
+        <source>the region has zero size (%1 × %2): width and height must be above 0</source>
+        <comment>scan.region.size_zero</comment>
+        <translation>区域大小为零（%1 × %2）：宽度和高度都必须大于 0</translation>
+    </message>
+    <message>
+        <source>at most %1 vertices (got %2)</source>
+        <comment>scan.region.too_many_vertices</comment>
+        <translation>最多 %1 个顶点（当前 %2 个）</translation>
+    </message>
+    <message>
+        <source>the polygon has zero area</source>
+        <comment>scan.region.zero_area</comment>
+        <translation>多边形面积为零</translation>
+    </message>
+    <message>
+        <source>the outline crosses or touches itself; draw it without crossings</source>
+        <comment>scan.region.self_intersecting</comment>
+        <translation>轮廓自相交或自相接；请画成无交叉的轮廓</translation>
+    </message>
+    <message>
+        <source>the field at the sample must be at least %1 each way (got %2 × %3)</source>
+        <comment>scan.camera.field_too_small</comment>
+        <translation>样品处的视场每个方向至少为 %1（当前 %2 × %3）</translation>
+    </message>
+    <message>
+        <source>must be from 0 to %1, a share of the field (got %2)</source>
+        <comment>scan.overlap_out_of_range</comment>
+        <translation>必须在 0 到 %1 之间，即占视场的比例（当前为 %2）</translation>
+    </message>
+    <message>
+        <source>must hold 1 to 6 finite coefficients, constant term first</source>
+        <comment>scan.compensation.bad_coefficients</comment>
+        <translation>必须包含 1 到 6 个有限系数，常数项在前</translation>
+    </message>
+    <message>
+        <source>the curve reaches %1 over the region; a positioning error above %2 is not one to compensate</source>
+        <comment>scan.compensation.curve_too_large</comment>
+        <translation>该曲线在区域内达到 %1；超过 %2 的定位误差不属于可补偿的范围</translation>
+    </message>
+    <message>
+        <source>must name Micro-Manager&apos;s XY stage device (not empty, one line)</source>
+        <comment>scan.export.bad_stage_name</comment>
+        <translation>必须填写 Micro-Manager 的 XY 载物台设备名（不能为空，只能一行）</translation>
+    </message>
+    <message>
+        <source>the field is so small for the region that the grid would have %1 tiles (at most %2)</source>
+        <comment>scan.too_many_tiles</comment>
+        <translation>相对于区域而言视场太小，网格将有 %1 个图块（最多 %2 个）</translation>
+    </message>
+    <message>
+        <source>the field is so small for the region that the grid would have over %1 tiles (at most %1)</source>
+        <comment>scan.too_many_tiles_over</comment>
+        <translation>相对于区域而言视场太小，网格将超过 %1 个图块（最多 %1 个）</translation>
+    </message>
+    <message>
+        <source>the field %1 × %2 is larger than the stage&apos;s travel %3 × %4</source>
+        <comment>scan.field_larger_than_travel</comment>
+        <translation>视场 %1 × %2 大于载物台行程 %3 × %4</translation>
+    </message>
+    <message>
+        <source>the region X %1 … %2, Y %3 … %4 reaches beyond the stage&apos;s travel X %5 … %6, Y %7 … %8</source>
+        <comment>scan.region_beyond_travel</comment>
+        <translation>区域 X %1 … %2、Y %3 … %4 超出载物台行程 X %5 … %6、Y %7 … %8</translation>
+    </message>
+    <message>
+        <source>must be at most the stage&apos;s top speed %1 (got %2)</source>
+        <comment>scan.speed_above_stage</comment>
+        <translation>不能超过载物台的最高速度 %1（当前为 %2）</translation>
+    </message>
+    <message>
+        <source>tile %1 (%2, %3) lies outside the stage&apos;s travel X %4 … %5, Y %6 … %7; move the region inward</source>
+        <comment>scan.tile_outside_travel</comment>
+        <translation>图块 %1（%2, %3）位于载物台行程 X %4 … %5、Y %6 … %7 之外；请把区域向内移</translation>
+    </message>
+    <message>
+        <source>the overtravel point before tile %1 (%2, %3) lies outside the stage&apos;s travel X %4 … %5, Y %6 … %7; move the region inward</source>
+        <comment>scan.overtravel_outside_travel</comment>
+        <translation>图块 %1 之前的超程点（%2, %3）位于载物台行程 X %4 … %5、Y %6 … %7 之外；请把区域向内移</translation>
+    </message>
+    <message>
+        <source>must hold two opposite corners [[x, y], [x, y]]</source>
+        <comment>scan.file.two_corners</comment>
+        <translation>必须包含两个对角点 [[x, y], [x, y]]</translation>
+    </message>
+    <message>
+        <source>must not be empty</source>
+        <comment>scan.naming.empty</comment>
+        <translation>不能为空</translation>
+    </message>
+    <message>
+        <source>must not start or end with a space (Fiji trims file names)</source>
+        <comment>scan.naming.edge_space</comment>
+        <translation>首尾不能有空格（Fiji 会去掉文件名首尾的空格）</translation>
+    </message>
+    <message>
+        <source>must not start with &apos;#&apos; (Fiji reads such a line as a comment)</source>
+        <comment>scan.naming.starts_with_hash</comment>
+        <translation>不能以“#”开头（Fiji 会把这样的行当作注释）</translation>
+    </message>
+    <message>
+        <source>must not contain &apos;;&apos; (it separates the fields of a TileConfiguration line)</source>
+        <comment>scan.naming.semicolon</comment>
+        <translation>不能含有“;”（它用于分隔 TileConfiguration 行中的字段）</translation>
+    </message>
+    <message>
+        <source>must be a file name without a folder (&apos;/&apos; or &apos;\&apos;)</source>
+        <comment>scan.naming.folder</comment>
+        <translation>必须是不含文件夹的文件名（不能有“/”或“\”）</translation>
+    </message>
+    <message>
+        <source>must not contain control characters or line breaks</source>
+        <comment>scan.naming.control_character</comment>
+        <translation>不能含有控制字符或换行</translation>
+    </message>
+    <message>
+        <source>&apos;{&apos; at character %1 is never closed</source>
+        <comment>scan.naming.unclosed_brace</comment>
+        <translation>第 %1 个字符处的“{”没有闭合</translation>
+    </message>
+    <message>
+        <source>&apos;}&apos; at character %1 has no &apos;{&apos;</source>
+        <comment>scan.naming.unopened_brace</comment>
+        <translation>第 %1 个字符处的“}”没有对应的“{”</translation>
+    </message>
+    <message>
+        <source>unknown placeholder %1; use {i}, {row} or {col}, optionally padded as {i:03}</source>
+        <comment>scan.naming.unknown_placeholder</comment>
+        <translation>未知的占位符 %1；请使用 {i}、{row} 或 {col}，可补零写作 {i:03}</translation>
+    </message>
+    <message>
+        <source>placeholder %1: the width must look like :03 (a zero and one digit)</source>
+        <comment>scan.naming.bad_width</comment>
+        <translation>占位符 %1：宽度应写作 :03（一个零加一位数字）</translation>
+    </message>
+    <message>
+        <source>must contain {i}, or both {row} and {col}, so every tile gets its own file</source>
+        <comment>scan.naming.no_index</comment>
+        <translation>必须含有 {i}，或同时含有 {row} 和 {col}，使每个图块对应一个文件</translation>
+    </message>
+    <message>
+        <source>tile %1 of %2 (%3)</source>
+        <comment>scan.run.tile</comment>
+        <translation>第 %1 个图块（共 %2 个，%3）</translation>
+    </message>
+    <message>
+        <source>the start</source>
+        <comment>scan.run.the_start</comment>
+        <translation>起点</translation>
+    </message>
+    <message>
+        <source>%1 did not settle within %2 in %3 (X off by %4, Y by %5); the run is stopped: check the stage, then Resume to try this tile again</source>
+        <comment>scan.run.not_settled</comment>
+        <translation>%1 在 %3 内未稳定到 %2 以内（X 偏差 %4，Y 偏差 %5）；扫描已停止：请检查载物台，然后按“继续”重试该图块</translation>
+    </message>
+    <message>
+        <source>The link to the stage was lost at %1. Nothing more moves from here; reconnect, then Resume to continue at that tile.</source>
+        <comment>scan.run.link_lost</comment>
+        <translation>在%1处与载物台的连接中断。此后不会再有任何运动；请重新连接，然后按“继续”从该图块接着扫描。</translation>
+    </message>
+    <message>
+        <source>The link to the stage was lost at %1 (%2). Nothing more moves from here; reconnect, then Resume to continue at that tile.</source>
+        <comment>scan.run.link_lost_cause</comment>
+        <translation>在%1处与载物台的连接中断（%2）。此后不会再有任何运动；请重新连接，然后按“继续”从该图块接着扫描。</translation>
+    </message>
+    <message>
+        <source>A scan is running: stop it before preparing another.</source>
+        <comment>scan.run.busy_preparing</comment>
+        <translation>扫描正在进行：请先停止，再准备新的扫描。</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <comment>scan.run.plan_problem</comment>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>The run log %1 in this folder is damaged at line %2 (%3); it is left as it is.</source>
+        <comment>scan.run.log_damaged</comment>
+        <translation>此文件夹中的运行日志 %1 在第 %2 行损坏（%3）；日志保持原样。</translation>
+    </message>
+    <message>
+        <source>This folder holds the run log of a different scan (%1 of %2 tiles taken). Choose another folder, or start over to keep that log aside and begin a new one.</source>
+        <comment>scan.run.other_scans_log</comment>
+        <translation>此文件夹中是另一次扫描的运行日志（已采集 %1/%2 个图块）。请选择其他文件夹，或重新开始：旧日志将另存，再开始新的日志。</translation>
+    </message>
+    <message>
+        <source>Cannot move the old run log aside to %1.</source>
+        <comment>scan.run.cannot_move_log</comment>
+        <translation>无法把旧运行日志另存为 %1。</translation>
+    </message>
+    <message>
+        <source>No scan is prepared.</source>
+        <comment>scan.run.not_prepared</comment>
+        <translation>尚未准备扫描。</translation>
+    </message>
+    <message>
+        <source>The stage is not connected.</source>
+        <comment>scan.run.not_connected</comment>
+        <translation>载物台未连接。</translation>
+    </message>
+    <message>
+        <source>Scans run on the microscope stage; this instrument is the %1.</source>
+        <comment>scan.run.not_a_stage</comment>
+        <translation>扫描只能在显微镜载物台上运行；当前仪器是%1。</translation>
+    </message>
+    <message>
+        <source>The E-stop is latched: reset it first.</source>
+        <comment>scan.run.estop_latched</comment>
+        <translation>急停已锁定：请先复位。</translation>
+    </message>
+    <message>
+        <source>Home the stage first: a scan moves to absolute positions.</source>
+        <comment>scan.run.not_homed</comment>
+        <translation>请先让载物台回零：扫描要移动到绝对位置。</translation>
+    </message>
+    <message>
+        <source>The scan is already running.</source>
+        <comment>scan.run.already_running</comment>
+        <translation>扫描已在运行。</translation>
+    </message>
+    <message>
+        <source>Aborted at %1. The tiles taken so far are kept; Resume continues at that tile.</source>
+        <comment>scan.run.aborted</comment>
+        <translation>在%1处中止。已采集的图块都会保留；按“继续”从该图块接着扫描。</translation>
+    </message>
+    <message>
+        <source>Every tile is taken, but the exports could not be written: %1</source>
+        <comment>scan.run.exports_failed</comment>
+        <translation>所有图块均已采集，但导出文件无法写入：%1</translation>
+    </message>
+    <message>
+        <source>The stage refused the move to %1: %2</source>
+        <comment>scan.run.move_refused</comment>
+        <translation>载物台拒绝移动到%1：%2</translation>
+    </message>
+    <message>
+        <source>E-stop at %1: the run is stopped. Reset the E-stop and Resume to continue at that tile.</source>
+        <comment>scan.run.estop</comment>
+        <translation>在%1处急停：扫描已停止。复位急停后按“继续”从该图块接着扫描。</translation>
+    </message>
+    <message>
+        <source>The stage reported &quot;%1&quot; (%2) at %3: the run is stopped. Resume continues at that tile.</source>
+        <comment>scan.run.stage_event</comment>
+        <translation>载物台在%3处报告“%1”（%2）：扫描已停止。按“继续”从该图块接着扫描。</translation>
+    </message>
+    <message>
+        <source>%1 The run is stopped so that no tile goes unrecorded.</source>
+        <comment>scan.run.log_failed</comment>
+        <translation>%1 扫描已停止，以免有图块未被记录。</translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <comment>scan.state.idle</comment>
+        <translation>就绪</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <comment>scan.state.running</comment>
+        <translation>运行中</translation>
+    </message>
+    <message>
+        <source>pausing after this tile</source>
+        <comment>scan.state.pausing</comment>
+        <translation>本图块完成后暂停</translation>
+    </message>
+    <message>
+        <source>paused</source>
+        <comment>scan.state.paused</comment>
+        <translation>已暂停</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <comment>scan.state.stopped</comment>
+        <translation>已停止</translation>
+    </message>
+    <message>
+        <source>finished</source>
+        <comment>scan.state.finished</comment>
+        <translation>已完成</translation>
+    </message>
+    <message numerus="yes">
+        <source>a polygon needs at least 3 vertices (got %Ln)</source>
+        <comment>scan.region.too_few_vertices</comment>
+        <translation>
+            <numerusform>多边形至少需要 3 个顶点（当前 %Ln 个）</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>words::TuningWords</name>
+    <message>
+        <source>%1 is %2: a gain must be a finite number</source>
+        <comment>tuning.gain_not_finite</comment>
+        <translation>%1 为 %2：增益必须是有限数</translation>
+    </message>
+    <message>
+        <source>%1 = %2 must not be negative</source>
+        <comment>tuning.gain_negative</comment>
+        <translation>%1 = %2 不能为负</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is above the largest accepted %3 per control period</source>
+        <comment>tuning.gain_above_limit</comment>
+        <translation>%1 = %2 超过每个控制周期允许的最大值 %3</translation>
+    </message>
+    <message>
+        <source>unknown plant kind &apos;%1&apos;: use fopdt:K=..,tau=..,L=.. or lag:K=..,tau=..,n=..</source>
+        <comment>tuning.plant.unknown_kind</comment>
+        <translation>未知的对象类型“%1”：请用 fopdt:K=..,tau=..,L=.. 或 lag:K=..,tau=..,n=..</translation>
+    </message>
+    <message>
+        <source>%1: no fields given (fields: %2)</source>
+        <comment>tuning.plant.no_fields</comment>
+        <translation>%1：没有给出参数（参数：%2）</translation>
+    </message>
+    <message>
+        <source>%1: empty field (fields: %2)</source>
+        <comment>tuning.plant.empty_field</comment>
+        <translation>%1：有空参数（参数：%2）</translation>
+    </message>
+    <message>
+        <source>%1: unknown field &apos;%2&apos; (fields: %3)</source>
+        <comment>tuning.plant.unknown_field</comment>
+        <translation>%1：未知参数“%2”（参数：%3）</translation>
+    </message>
+    <message>
+        <source>%1: %2 has no value (write %2=NUMBER)</source>
+        <comment>tuning.plant.no_value</comment>
+        <translation>%1：%2 没有数值（请写成 %2=数值）</translation>
+    </message>
+    <message>
+        <source>%1: %2 is given twice</source>
+        <comment>tuning.plant.field_twice</comment>
+        <translation>%1：%2 给出了两次</translation>
+    </message>
+    <message>
+        <source>%1: %2 must be a number (got &apos;%3&apos;)</source>
+        <comment>tuning.plant.not_a_number</comment>
+        <translation>%1：%2 必须是数字（当前为“%3”）</translation>
+    </message>
+    <message>
+        <source>%1: %2 is missing (fields: %3)</source>
+        <comment>tuning.plant.field_missing</comment>
+        <translation>%1：缺少 %2（参数：%3）</translation>
+    </message>
+    <message>
+        <source>%1: %2 must be above 0 (got %3)</source>
+        <comment>tuning.plant.not_positive</comment>
+        <translation>%1：%2 必须大于 0（当前为 %3）</translation>
+    </message>
+    <message>
+        <source>%1: %2 must not be negative (got %3)</source>
+        <comment>tuning.plant.negative</comment>
+        <translation>%1：%2 不能为负（当前为 %3）</translation>
+    </message>
+    <message>
+        <source>%1: Ts must be above 0 and at most %2 (got %3)</source>
+        <comment>tuning.plant.period_out_of_range</comment>
+        <translation>%1：Ts 必须大于 0 且不大于 %2（当前为 %3）</translation>
+    </message>
+    <message>
+        <source>%1: tau and L are both 0: that is a pure gain, not a plant to tune</source>
+        <comment>tuning.plant.pure_gain</comment>
+        <translation>%1：tau 和 L 都为 0：这是纯比例环节，不是可整定的对象</translation>
+    </message>
+    <message>
+        <source>%1: L is more than 100000 control periods (L = %2, Ts = %3): use a longer Ts</source>
+        <comment>tuning.plant.delay_too_long</comment>
+        <translation>%1：L 超过 100000 个控制周期（L = %2，Ts = %3）：请用更长的 Ts</translation>
+    </message>
+    <message>
+        <source>%1: n must be a whole number from 1 to 12 (got %2)</source>
+        <comment>tuning.plant.order_invalid</comment>
+        <translation>%1：n 必须是 1 到 12 的整数（当前为 %2）</translation>
+    </message>
+    <message>
+        <source>a first-order plant without dead time never lags by 180°: P control cannot make it oscillate, so it has no finite ultimate gain</source>
+        <comment>tuning.plant.first_order_no_ku</comment>
+        <translation>无纯滞后的一阶对象相位滞后永远达不到 180°：比例控制无法使其振荡，因此不存在有限的临界增益</translation>
+    </message>
+    <message>
+        <source>a lag of order %1 lags less than %2 at every frequency, never 180°: P control cannot make it oscillate, so it has no finite ultimate gain</source>
+        <comment>tuning.plant.lag_no_ku</comment>
+        <translation>%1 阶惯性环节在任何频率下相位滞后都小于 %2，达不到 180°：比例控制无法使其振荡，因此不存在有限的临界增益</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <comment>tuning.model.no_ultimate_gain</comment>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>Kp = %1: cycle ratio %2</source>
+        <comment>tuning.progress.trial</comment>
+        <translation>Kp = %1：周期幅值比 %2</translation>
+    </message>
+    <message>
+        <source>Kp = %1: no oscillation</source>
+        <comment>tuning.progress.trial_no_oscillation</comment>
+        <translation>Kp = %1：未振荡</translation>
+    </message>
+    <message>
+        <source>forced run at period %1</source>
+        <comment>tuning.progress.forced_run</comment>
+        <translation>周期 %1 的强迫振荡试验</translation>
+    </message>
+    <message>
+        <source>relay run</source>
+        <comment>tuning.progress.relay_run</comment>
+        <translation>继电试验</translation>
+    </message>
+    <message>
+        <source>%1 — about %2 left</source>
+        <comment>tuning.progress.with_eta</comment>
+        <translation>%1 — 约剩 %2</translation>
+    </message>
+    <message>
+        <source>verified</source>
+        <comment>tuning.progress.verified</comment>
+        <translation>已验证</translation>
+    </message>
+    <message>
+        <source>step test done</source>
+        <comment>tuning.progress.step_done</comment>
+        <translation>阶跃测试完成</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <comment>tuning.progress.done</comment>
+        <translation>完成</translation>
+    </message>
+    <message>
+        <source>the relay record is too short</source>
+        <comment>tuning.relay.record_too_short</comment>
+        <translation>继电试验记录太短</translation>
+    </message>
+    <message>
+        <source>the relay did not oscillate (fewer than three cycles)</source>
+        <comment>tuning.relay.no_oscillation</comment>
+        <translation>继电试验没有产生振荡（不足三个周期）</translation>
+    </message>
+    <message>
+        <source>the relay chattered at the loop rate (it switched every period): raise the hysteresis above the noise on the output</source>
+        <comment>tuning.relay.chatter</comment>
+        <translation>继电器以控制频率抖动（每个周期都切换）：请把滞环调到高于输出噪声</translation>
+    </message>
+    <message>
+        <source>the relay oscillation did not settle into stable cycles</source>
+        <comment>tuning.relay.unsettled</comment>
+        <translation>继电振荡没有稳定成等幅周期</translation>
+    </message>
+    <message>
+        <source>the oscillation is no larger than the hysteresis: lower the hysteresis or raise the amplitude</source>
+        <comment>tuning.relay.below_hysteresis</comment>
+        <translation>振荡幅值不大于滞环：请减小滞环或增大继电幅值</translation>
+    </message>
+    <message>
+        <source>%1 (the run ended: %2)</source>
+        <comment>tuning.relay.failed_run_ended</comment>
+        <translation>%1（试验结束原因：%2）</translation>
+    </message>
+    <message>
+        <source>a refinement run ended early (%1): the classic relay estimate is reported</source>
+        <comment>tuning.relay.refinement_ended</comment>
+        <translation>一次细化试验提前结束（%1）：给出经典继电法的估计值</translation>
+    </message>
+    <message>
+        <source>the refinement found no point lagging more than 180° between ω = %1 and %2 rad/s: the phase may never reach −180° (no finite ultimate gain); the classic relay estimate is reported</source>
+        <comment>tuning.relay.no_point_lagging_more</comment>
+        <translation>在 ω = %1 到 %2 rad/s 之间，细化没有找到相位滞后超过 180° 的点：相位可能永远达不到 −180°（不存在有限的临界增益）；给出经典继电法的估计值</translation>
+    </message>
+    <message>
+        <source>the refinement found no point lagging less than 180° between ω = %1 and %2 rad/s; the classic relay estimate is reported</source>
+        <comment>tuning.relay.no_point_lagging_less</comment>
+        <translation>在 ω = %1 到 %2 rad/s 之间，细化没有找到相位滞后小于 180° 的点；给出经典继电法的估计值</translation>
+    </message>
+    <message>
+        <source>the refinement reached the loop&apos;s Nyquist limit: the classic relay estimate is reported</source>
+        <comment>tuning.relay.nyquist</comment>
+        <translation>细化已到达控制回路的奈奎斯特频率：给出经典继电法的估计值</translation>
+    </message>
+    <message>
+        <source>the first trial gain %1 must be above 0 and at most the largest gain %2</source>
+        <comment>tuning.ultimate.bad_start_kp</comment>
+        <translation>首次试验增益 %1 必须大于 0 且不大于最大增益 %2</translation>
+    </message>
+    <message>
+        <source>trials keep hitting the envelope before a cycle can be measured: widen the envelope or use a smaller step</source>
+        <comment>tuning.ultimate.envelope_hits</comment>
+        <translation>试验总在测出一个周期之前就超出安全包络：请放宽安全包络或减小阶跃</translation>
+    </message>
+    <message>
+        <source>no Kp with a sustained oscillation after %1 trials (nearest: Kp = %2, cycle ratio %3)</source>
+        <comment>tuning.ultimate.no_sustained_nearest</comment>
+        <translation>经过 %1 次试验，仍未找到产生等幅振荡的 Kp（最接近的：Kp = %2，周期幅值比 %3）</translation>
+    </message>
+    <message>
+        <source>no sustained oscillation up to Kp = %1: the loop decays at every gain tried, so it may have no finite ultimate gain (its phase may never reach −180°)</source>
+        <comment>tuning.ultimate.decays_up_to</comment>
+        <translation>直到 Kp = %1 都没有等幅振荡：所有试过的增益下回路都在衰减，因此可能不存在有限的临界增益（相位可能永远达不到 −180°）</translation>
+    </message>
+    <message>
+        <source>the search stalled at Kp = %1</source>
+        <comment>tuning.ultimate.stalled</comment>
+        <translation>搜索停滞在 Kp = %1</translation>
+    </message>
+    <message>
+        <source>trial %1: Kp = %2</source>
+        <comment>tuning.label.trial</comment>
+        <translation>试验 %1：Kp = %2</translation>
+    </message>
+    <message>
+        <source>forced run at %1 period</source>
+        <comment>tuning.label.forced_run</comment>
+        <translation>周期 %1 的强迫振荡试验</translation>
+    </message>
+    <message>
+        <source>relay run</source>
+        <comment>tuning.label.relay_run</comment>
+        <translation>继电试验</translation>
+    </message>
+    <message>
+        <source>verification with %1 gains</source>
+        <comment>tuning.label.verification</comment>
+        <translation>用 %1 增益验证</translation>
+    </message>
+    <message>
+        <source>step %1</source>
+        <comment>tuning.label.step</comment>
+        <translation>阶跃 %1</translation>
+    </message>
+    <message>
+        <source>step test</source>
+        <comment>tuning.label.step_test</comment>
+        <translation>阶跃测试</translation>
+    </message>
+    <message>
+        <source>the target is not ready (connect the instrument first)</source>
+        <comment>tuning.run.target_not_ready</comment>
+        <translation>对象未就绪（请先连接仪器）</translation>
+    </message>
+    <message>
+        <source>every envelope limit must be above 0</source>
+        <comment>tuning.run.envelope_not_positive</comment>
+        <translation>安全包络的各项限值都必须大于 0</translation>
+    </message>
+    <message>
+        <source>the trial step must be above 0 and below %1 of the envelope&apos;s excursion and following-error limits</source>
+        <comment>tuning.run.trial_step_invalid</comment>
+        <translation>试验阶跃必须大于 0，且小于安全包络中偏移限值和跟随误差限值的 %1</translation>
+    </message>
+    <message>
+        <source>the relay amplitude must be above 0 and the hysteresis not negative</source>
+        <comment>tuning.run.relay_invalid</comment>
+        <translation>继电幅值必须大于 0，滞环不能为负</translation>
+    </message>
+    <message>
+        <source>a step test cannot start now: another run is in progress</source>
+        <comment>tuning.run.step_busy</comment>
+        <translation>现在不能开始阶跃测试：另一项试验正在进行</translation>
+    </message>
+    <message>
+        <source>a step test cannot start now: the target is not ready</source>
+        <comment>tuning.run.step_not_ready</comment>
+        <translation>现在不能开始阶跃测试：对象未就绪</translation>
+    </message>
+    <message>
+        <source>step test not started: %1</source>
+        <comment>tuning.run.step_refused</comment>
+        <translation>阶跃测试未开始：%1</translation>
+    </message>
+    <message>
+        <source>aborted while interrupted: nothing is running on the device</source>
+        <comment>tuning.run.aborted_while_interrupted</comment>
+        <translation>在中断状态下中止：设备上没有正在运行的试验</translation>
+    </message>
+    <message>
+        <source>resumed: running the interrupted experiment again</source>
+        <comment>tuning.run.resumed</comment>
+        <translation>已继续：重新运行被中断的试验</translation>
+    </message>
+    <message>
+        <source>E-stop during %1: the device ended the test and halted the axis; the gains in force are the ones from before (trial gains only ever lived inside the test)</source>
+        <comment>tuning.run.estop</comment>
+        <translation>%1期间急停：设备结束了测试并停住该轴；生效的增益仍是原来的（试验增益只在测试中使用）</translation>
+    </message>
+    <message>
+        <source>%1 ended because the device heard nothing from BenchPilot for 0.5 s; the axis holds under its own gains. Resume when the link is steady.</source>
+        <comment>tuning.run.host_silent</comment>
+        <translation>%1结束：设备 0.5 s 内未收到 BenchPilot 的消息；该轴以自身增益保持。待连接稳定后按“继续”。</translation>
+    </message>
+    <message>
+        <source>a fault or a switch ended %1; the axis is stopped</source>
+        <comment>tuning.run.fault</comment>
+        <translation>故障或开关信号结束了%1；该轴已停止</translation>
+    </message>
+    <message>
+        <source>aborted during %1: the axis is stopped, its gains unchanged</source>
+        <comment>tuning.run.aborted_during</comment>
+        <translation>在%1期间中止：该轴已停止，增益未改变</translation>
+    </message>
+    <message>
+        <source>%1 was stopped (STOP or TEST_ABORT from elsewhere); the axis is stopped, its gains unchanged</source>
+        <comment>tuning.run.stopped_elsewhere</comment>
+        <translation>%1被停止（来自其他地方的 STOP 或 TEST_ABORT）；该轴已停止，增益未改变</translation>
+    </message>
+    <message>
+        <source>%1 interrupted: %2. Reconnect, then Resume to run it again.</source>
+        <comment>tuning.run.interrupted</comment>
+        <translation>%1被中断：%2。请重新连接，然后按“继续”重新运行。</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <comment>tuning.run.failed</comment>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>Ku = %1, Tu = %2; verification step test with %3 gains: %4</source>
+        <comment>tuning.run.verified</comment>
+        <translation>Ku = %1，Tu = %2；用 %3 增益的验证阶跃测试：%4</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <comment>tuning.run.step_done</comment>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>aborted after %1: nothing runs on the target; the gains in force are unchanged</source>
+        <comment>tuning.run.aborted_after</comment>
+        <translation>在%1之后中止：对象上没有正在运行的试验；生效的增益未改变</translation>
+    </message>
+    <message>
+        <source>%1 hit the envelope before a cycle could be measured: repeating it with half the step</source>
+        <comment>tuning.run.repeat_half_step</comment>
+        <translation>%1在测出一个周期之前就超出了安全包络：以一半阶跃重做</translation>
+    </message>
+    <message>
+        <source>ultimate-gain search: %1</source>
+        <comment>tuning.run.ultimate_failed</comment>
+        <translation>临界增益搜索：%1</translation>
+    </message>
+    <message>
+        <source>relay autotune: %1</source>
+        <comment>tuning.run.relay_failed</comment>
+        <translation>继电自整定：%1</translation>
+    </message>
+    <message>
+        <source>Ku = %1, Tu = %2</source>
+        <comment>tuning.run.found</comment>
+        <translation>Ku = %1，Tu = %2</translation>
+    </message>
+    <message>
+        <source>the link to %1 was lost; the device ends the test by itself within 0.5 s and holds the axis under the gains it had before</source>
+        <comment>tuning.target.link_lost</comment>
+        <translation>与%1的连接中断；设备会在 0.5 s 内自行结束测试，并以原有增益保持该轴</translation>
+    </message>
+    <message>
+        <source>reading the device&apos;s capture</source>
+        <comment>tuning.target.reading_capture</comment>
+        <translation>正在读取设备的采集数据</translation>
+    </message>
+    <message>
+        <source>reading the device&apos;s capture: %1 of %2 samples</source>
+        <comment>tuning.target.reading_capture_of</comment>
+        <translation>正在读取设备的采集数据：%1/%2 个采样点</translation>
+    </message>
+    <message>
+        <source>aborted</source>
+        <comment>tuning.target.aborted</comment>
+        <translation>已中止</translation>
+    </message>
+    <message>
+        <source>is missing (method is &quot;%1&quot;)</source>
+        <comment>tuning.file.missing_for_method</comment>
+        <translation>缺失（方法为“%1”）</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a rule BenchPilot knows</source>
+        <comment>tuning.file.unknown_rule</comment>
+        <translation>“%1”不是 BenchPilot 认识的整定规则</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <comment>tuning.state.idle</comment>
+        <translation>空闲</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <comment>tuning.state.running</comment>
+        <translation>运行中</translation>
+    </message>
+    <message>
+        <source>interrupted</source>
+        <comment>tuning.state.interrupted</comment>
+        <translation>已中断</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <comment>tuning.state.done</comment>
+        <translation>已完成</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <comment>tuning.state.failed</comment>
+        <translation>失败</translation>
+    </message>
+    <message>
+        <source>aborted</source>
+        <comment>tuning.state.aborted</comment>
+        <translation>已中止</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <comment>tuning.end.running</comment>
+        <translation>运行中</translation>
+    </message>
+    <message>
+        <source>settled</source>
+        <comment>tuning.end.settled</comment>
+        <translation>已稳定</translation>
+    </message>
+    <message>
+        <source>completed</source>
+        <comment>tuning.end.completed</comment>
+        <translation>已完成</translation>
+    </message>
+    <message>
+        <source>max excursion crossed</source>
+        <comment>tuning.end.excursion</comment>
+        <translation>超出最大偏移</translation>
+    </message>
+    <message>
+        <source>max following error crossed</source>
+        <comment>tuning.end.following_error</comment>
+        <translation>超出最大跟随误差</translation>
+    </message>
+    <message>
+        <source>max duration reached</source>
+        <comment>tuning.end.duration</comment>
+        <translation>达到最长时间</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <comment>tuning.end.stopped</comment>
+        <translation>已停止</translation>
+    </message>
+    <message>
+        <source>E-stop</source>
+        <comment>tuning.end.estop</comment>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <source>host went silent</source>
+        <comment>tuning.end.host_silent</comment>
+        <translation>上位机无响应</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <comment>tuning.end.fault</comment>
+        <translation>故障</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <comment>tuning.end.unknown</comment>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <source>decays</source>
+        <comment>tuning.outcome.decays</comment>
+        <translation>衰减</translation>
+    </message>
+    <message>
+        <source>sustained</source>
+        <comment>tuning.outcome.sustained</comment>
+        <translation>等幅</translation>
+    </message>
+    <message>
+        <source>grows</source>
+        <comment>tuning.outcome.grows</comment>
+        <translation>发散</translation>
+    </message>
+    <message>
+        <source>no oscillation</source>
+        <comment>tuning.outcome.no_oscillation</comment>
+        <translation>未振荡</translation>
+    </message>
+    <message>
+        <source>hit the envelope</source>
+        <comment>tuning.outcome.hit_envelope</comment>
+        <translation>超出安全包络</translation>
+    </message>
+    <message>
+        <source>Ziegler–Nichols P</source>
+        <comment>tuning.rule.zn-p</comment>
+        <translation>Ziegler–Nichols P</translation>
+    </message>
+    <message>
+        <source>Ziegler–Nichols PI</source>
+        <comment>tuning.rule.zn-pi</comment>
+        <translation>Ziegler–Nichols PI</translation>
+    </message>
+    <message>
+        <source>Ziegler–Nichols PID</source>
+        <comment>tuning.rule.zn-pid</comment>
+        <translation>Ziegler–Nichols PID</translation>
+    </message>
+    <message>
+        <source>Tyreus–Luyben PI</source>
+        <comment>tuning.rule.tl-pi</comment>
+        <translation>Tyreus–Luyben PI</translation>
+    </message>
+    <message>
+        <source>Tyreus–Luyben PID</source>
+        <comment>tuning.rule.tl-pid</comment>
+        <translation>Tyreus–Luyben PID</translation>
+    </message>
+    <message>
+        <source>Pessen integral rule PID</source>
+        <comment>tuning.rule.pessen</comment>
+        <translation>Pessen 积分法则 PID</translation>
+    </message>
+    <message>
+        <source>Z-N &quot;some overshoot&quot; PID</source>
+        <comment>tuning.rule.some-overshoot</comment>
+        <translation>Z-N“少量超调” PID</translation>
+    </message>
+    <message>
+        <source>Z-N &quot;no overshoot&quot; PID</source>
+        <comment>tuning.rule.no-overshoot</comment>
+        <translation>Z-N“无超调” PID</translation>
+    </message>
+    <message numerus="yes">
+        <source>no Kp with a sustained oscillation after %Ln trials</source>
+        <comment>tuning.ultimate.no_sustained</comment>
+        <translation>
+            <numerusform>经过 %Ln 次试验，仍未找到产生等幅振荡的 Kp</numerusform>
+        </translation>
+    </message>
+</context>
+</TS>
