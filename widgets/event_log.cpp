@@ -62,11 +62,14 @@ QStringList EventLog::cellsOf(const Entry& e) const
         const std::string term = proto::eventKindTerm(*e.event);
         // A kind this build does not know (a newer device): by number, so it can be looked up.
         kind = term == "device.event.unknown" ? tr("event %1").arg(static_cast<int>(*e.event)) : words::term(term);
-        details = e.deviceText;
+        // What the backend made of it (a GRBL alarm with its meaning) says more than the
+        // device's own words ("ALARM:3"), and is worded in the language of the log.
+        const QString said = e.note.empty() ? e.deviceText : words::text(e.note);
+        details = said;
         if (e.position) {
             const QString at = e.segment ? tr("segment %1").arg(static_cast<qint64>(*e.position))
                                          : tr("at %1 %2").arg(QLocale().toString(*e.position, 'f', 3), e.unit);
-            details = e.deviceText.isEmpty() ? at : QStringLiteral("%1 (%2)").arg(e.deviceText, at);
+            details = said.isEmpty() ? at : QStringLiteral("%1 (%2)").arg(said, at);
         }
     } else {
         if (!e.kindTerm.empty())
@@ -138,6 +141,7 @@ void EventLog::addEvent(const QString& instrument, const dev::DeviceIdentity& id
     }
     e.event = ev.kind;
     e.deviceText = ev.text;
+    e.note = ev.detail;
     if (ev.axis >= 0 && ev.axis < id.axes.size()) {
         const double shown = std::round(ev.position * 1000) / 1000;
         e.position = shown == 0 ? 0.0 : shown;

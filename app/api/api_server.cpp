@@ -6,6 +6,7 @@
 #include "websocket_endpoint.h"
 
 #include "device/telemetry/telemetry_hub.h"
+#include "widgets/wording/wording.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -289,7 +290,7 @@ const ServedInstrument* ApiServer::resolveInstrument(const QString& kind, QStrin
         for (const auto& s : m_instruments)
             if (s.key == kind) {
                 if (!s.instrument || !s.instrument->isReady()) {
-                    *why = tr("the GUI's %1 is not connected (%2)").arg(kind, s.instrument ? dev::linkStateName(s.instrument->state()) : QString());
+                    *why = tr("the GUI's %1 is not connected (%2)").arg(kind, s.instrument ? words::term(dev::linkStateTerm(s.instrument->state())) : QString());
                     return nullptr;
                 }
                 return &s;
@@ -475,7 +476,7 @@ void ApiServer::handleBuiltin(ApiClient* client, const Request& r, bool* handled
         QJsonArray instruments;
         for (const auto& s : m_instruments)
             instruments.append(QJsonObject{{QStringLiteral("instrument"), s.key},
-                                           {QStringLiteral("link"), s.instrument ? dev::linkStateName(s.instrument->state()) : QString()}});
+                                           {QStringLiteral("link"), s.instrument ? QString::fromLatin1(dev::linkStateKey(s.instrument->state())) : QString()}});
         answer(QJsonObject{{QStringLiteral("client_id"), static_cast<qint64>(client->id())},
                            {QStringLiteral("name"), client->name()},
                            {QStringLiteral("server"), QStringLiteral("BenchPilot %1").arg(QStringLiteral(BP_VERSION))},

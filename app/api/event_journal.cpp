@@ -1,6 +1,7 @@
 #include "event_journal.h"
 
 #include "device/client/instrument.h"
+#include "widgets/wording/wording.h"
 
 #include <QCoreApplication>
 
@@ -52,7 +53,7 @@ void EventJournal::watch(const QString& source, dev::Instrument* instrument)
         j.hostTime = QDateTime::currentDateTime();
         j.source = source;
         j.kind = QStringLiteral("link");
-        j.text = dev::linkStateName(st);
+        j.text = QString::fromLatin1(dev::linkStateKey(st));
         j.problem = st == dev::LinkState::Lost;
         add(j);
     });
@@ -61,7 +62,7 @@ void EventJournal::watch(const QString& source, dev::Instrument* instrument)
         j.hostTime = QDateTime::currentDateTime();
         j.source = source;
         j.kind = QStringLiteral("refused");
-        j.text = e.message;
+        j.text = words::englishText(e.message);  // the API speaks English whatever the screens do
         j.problem = true;
         add(j);
     });

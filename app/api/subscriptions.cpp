@@ -97,7 +97,7 @@ Subscriptions::Subscriptions(ApiServer& server, QObject* parent) : QObject(paren
             const auto& id = c->identity();
             const auto& st = c->status();
             Source& src = source(Topic::State, i);
-            QJsonObject v{{QStringLiteral("link"), dev::linkStateName(c->state())}};
+            QJsonObject v{{QStringLiteral("link"), QString::fromLatin1(dev::linkStateKey(c->state()))}};
             if (c->isReady()) {
                 QJsonObject homed, moving, homing, home, limit;
                 for (int a = 0; a < id.axes.size() && a < st.axes.size(); ++a) {

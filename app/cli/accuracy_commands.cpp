@@ -60,10 +60,9 @@ int analyze(Invocation& inv)
         return inv.usage(tr("give one readings CSV"));
     const QString path = inv.arguments().front();
     std::string text, name = QFileInfo(path).fileName().toStdString();
-    QString error;
+    msg::Message error;
     if (!files::readText(path, &text, &error)) {
-        reportProblems(inv, accuracyfiles::FileProblems{{name, 0, 0, "", msg::make("file.unreadable", {msg::verbatim("file", path.toStdString()),
-                                                                                                         msg::verbatim("detail", error.toStdString())}), false}});
+        reportProblems(inv, accuracyfiles::FileProblems{{name, 0, 0, "", error, false}});
         return Usage;
     }
     const auto analyzed = accuracyfiles::analyzeReadingsCsv(text, name);
@@ -78,7 +77,7 @@ int analyze(Invocation& inv)
     r.createdUtc = QDateTime::currentDateTimeUtc().toString(Qt::ISODate).toStdString();
     if (inv.isSet(QStringLiteral("out"))) {
         if (!accuracyfiles::saveAccuracyResultFile(inv.value(QStringLiteral("out")), r, &error))
-            return inv.refused(error);
+            return reportFailure(inv, error, Refused);
     }
     if (inv.json())
         printJson(inv, resultJson(r));
@@ -98,7 +97,7 @@ int importInterferometer(Invocation& inv)
     if (reportProblems(inv, imported.problems))
         return Usage;
     const auto evaluation = motion::metrology::evaluate(imported.readings);
-    QString error;
+    msg::Message error;
     QString out = inv.value(QStringLiteral("out"));
     if (out.isEmpty()) {
         out = inv.value(QStringLiteral("sequence"));
@@ -106,7 +105,7 @@ int importInterferometer(Invocation& inv)
         out += QStringLiteral(".readings.csv");
     }
     if (!accuracyfiles::saveReadingsCsv(out, imported.readings, &error))
-        return inv.refused(error);
+        return reportFailure(inv, error, Refused);
     accuracyfiles::AccuracyResult r;
     r.axis = inv.value(QStringLiteral("axis")).isEmpty() ? "X" : inv.value(QStringLiteral("axis")).toUpper().toStdString();
     r.evaluation = evaluation;

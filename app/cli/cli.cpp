@@ -6,8 +6,10 @@
 
 #include "device/files/machine_profile_file.h"
 #include "widgets/wording/translators.h"
+#include "widgets/wording/wording.h"
 
 #include <QCoreApplication>
+#include <QFileInfo>
 
 namespace cli {
 namespace {
@@ -109,11 +111,11 @@ bool readLinkOptions(const QCommandLineParser& p, LinkOptions& link, QTextStream
     if (p.isSet(QStringLiteral("profile"))) {
         link.profile = unmarkNegative(p.value(QStringLiteral("profile")));
         files::MachineProfile profile;
-        QString error;
+        jsonio::Problems problems;
         if (link.profile.isEmpty())
             return fail(tr("--profile needs a machine profile file"));
-        if (!files::loadMachineProfileFile(link.profile, &profile, &error))
-            return fail(tr("--profile: %1").arg(error));
+        if (!files::loadMachineProfileFile(link.profile, &profile, &problems))
+            return fail(tr("--profile: %1").arg(words::fileProblems(problems, QFileInfo(link.profile).fileName()).join(QLatin1Char('\n'))));
     }
     if (p.isSet(QStringLiteral("baud"))) {
         bool ok = false;

@@ -8,14 +8,15 @@
 #include "device/backends/grbl/client/grbl_client.h"
 #include "device/backends/protocol_probe.h"
 #include "device/files/machine_profile_file.h"
+#include "widgets/wording/wording.h"
 
 #include <QCoreApplication>
+#include <QFileInfo>
 
 namespace cli {
 
 namespace {
-QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
-QString kindWord(proto::DeviceKind k) { return k == proto::DeviceKind::Stage ? tr("stage") : tr("analyzer"); }
+QString kindWord(proto::DeviceKind k) { return words::term(dev::instrumentTerm(k)); }
 } // namespace
 
 bool CliSession::choosePortBackend(dev::Transport* transport)
@@ -23,9 +24,9 @@ bool CliSession::choosePortBackend(dev::Transport* transport)
     std::optional<files::MachineProfile> profile;
     if (!m_opt.profile.isEmpty()) {
         files::MachineProfile p;
-        QString error;
-        if (!files::loadMachineProfileFile(m_opt.profile, &p, &error)) {
-            report(tr("--profile: %1").arg(error));
+        jsonio::Problems problems;
+        if (!files::loadMachineProfileFile(m_opt.profile, &p, &problems)) {
+            report(tr("--profile: %1").arg(words::fileProblems(problems, QFileInfo(m_opt.profile).fileName()).join(QLatin1Char('\n'))));
             return false;
         }
         profile = p;
@@ -49,7 +50,7 @@ bool CliSession::choosePortBackend(dev::Transport* transport)
         }
         found = probe.result();
         if (found.protocol == dev::ProbeResult::Protocol::None) {
-            report(tr("cannot connect to %1: %2").arg(transport->describe(), found.error));
+            report(tr("cannot connect to %1: %2").arg(transport->describe(), words::text(found.error)));
             return false;
         }
         protocol = found.protocol == dev::ProbeResult::Protocol::Grbl ? files::MachineProfile::Protocol::Grbl

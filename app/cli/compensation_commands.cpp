@@ -93,9 +93,9 @@ int fit(Invocation& inv)
     double backlashUm = 0;
     std::optional<motion::metrology::Evaluation> evaluation;
     std::string text;
-    QString error;
+    msg::Message error;
     if (!files::readText(path, &text, &error))
-        return reportFailure(inv, msg::make("file.unreadable", {msg::verbatim("file", path.toStdString()), msg::verbatim("detail", error.toStdString())}), Usage);
+        return reportFailure(inv, error, Usage);
     const std::string name = QFileInfo(path).fileName().toStdString();
     const auto firstChar = text.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
     if (firstChar != std::string::npos && text[firstChar] == '{') {
@@ -144,7 +144,7 @@ int fit(Invocation& inv)
         if (reportProblems(inv, problems))
             return Refused;
         if (!accuracyfiles::saveCompensationFile(inv.value(QStringLiteral("out")), file, &error))
-            return inv.refused(error);
+            return reportFailure(inv, error, Refused);
         files.append(inv.value(QStringLiteral("out")));
     }
     QJsonArray orders;
@@ -219,7 +219,7 @@ int waitRequest(Invocation& inv, const std::function<void(dev::Instrument::Callb
     if (!spinUntil([&] { return done; }, 30000))
         return reportFailure(inv, msg::make("accuracy.run.link_lost"), LinkTrouble);
     if (error) {
-        const msg::Message m = msg::make("compensation.device_refused", {msg::verbatim("detail", error->message.toStdString())});
+        const msg::Message m = msg::make("compensation.device_refused", {msg::nested("detail", error->message)});
         return reportFailure(inv, m, error->kind == dev::RequestError::Kind::LinkDown || error->kind == dev::RequestError::Kind::Timeout ? LinkTrouble : Refused);
     }
     return Ok;
@@ -237,7 +237,7 @@ int readBack(Invocation& inv, dev::CompensationClient* c, int axis, dev::AxisCom
     if (!spinUntil([&] { return done; }, 30000))
         return reportFailure(inv, msg::make("accuracy.run.link_lost"), LinkTrouble);
     if (error)
-        return reportFailure(inv, msg::make("compensation.device_refused", {msg::verbatim("detail", error->message.toStdString())}), Refused);
+        return reportFailure(inv, msg::make("compensation.device_refused", {msg::nested("detail", error->message)}), Refused);
     return Ok;
 }
 
@@ -350,9 +350,9 @@ int exportCompensation(Invocation& inv)
                                                                                      : accuracyfiles::LinuxcncCompType::Corrections);
     }
     if (inv.isSet(QStringLiteral("out"))) {
-        QString error;
+        msg::Message error;
         if (!files::writeAtomically(inv.value(QStringLiteral("out")), text, &error))
-            return inv.refused(error);
+            return reportFailure(inv, error, Refused);
         if (inv.json())
             printJson(inv, QJsonObject{{QStringLiteral("ok"), true}, {QStringLiteral("files"), QJsonArray{inv.value(QStringLiteral("out"))}}});
         return Ok;

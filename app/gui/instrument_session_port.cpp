@@ -7,6 +7,9 @@
 #include "device/backends/grbl/client/grbl_client.h"
 #include "device/backends/protocol_probe.h"
 #include "device/files/machine_profile_file.h"
+#include "widgets/wording/wording.h"
+
+#include <QFileInfo>
 
 namespace app {
 
@@ -43,9 +46,10 @@ void InstrumentSession::connectPort(dev::Transport* transport, const ui::Connect
     auto protocol = files::MachineProfile::Protocol::Auto;
     if (!choice.profile.isEmpty()) {
         files::MachineProfile profile;
-        QString error;
-        if (!files::loadMachineProfileFile(choice.profile, &profile, &error)) {
-            emit connectFailed(tr("The machine profile does not load: %1").arg(error));
+        jsonio::Problems problems;
+        if (!files::loadMachineProfileFile(choice.profile, &profile, &problems)) {
+            emit connectFailed(tr("The machine profile does not load: %1")
+                                   .arg(words::fileProblems(problems, QFileInfo(choice.profile).fileName()).join(QLatin1Char('\n'))));
             return;
         }
         if (profile.instrument != m_kind) {
@@ -84,7 +88,7 @@ void InstrumentSession::connectPort(dev::Transport* transport, const ui::Connect
             grblOn(transport, choice)->connectLink();
             return;
         case dev::ProbeResult::Protocol::None:
-            emit connectFailed(r.error);
+            emit connectFailed(words::text(r.error));
             return;
         }
     });

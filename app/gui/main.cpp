@@ -11,10 +11,12 @@
 #include "device/link/serial_transport.h"
 
 #include "widgets/wording/translators.h"
+#include "widgets/wording/wording.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QEventLoop>
+#include <QFileInfo>
 #include <QSettings>
 #include <QTimer>
 
@@ -38,7 +40,7 @@ proto::DeviceKind detectInstrument(const QString& port, qint32 baud)
     transport.close();
     const dev::ProbeResult& r = probe.result();
     if (r.protocol == dev::ProbeResult::Protocol::None)
-        std::fprintf(stderr, "benchpilot: %s\n", qPrintable(r.error));
+        std::fprintf(stderr, "benchpilot: %s\n", qPrintable(words::text(r.error)));
     return r.kindKnown ? r.kind : proto::DeviceKind::Analyzer;
 }
 
@@ -186,9 +188,10 @@ int main(int argc, char** argv)
             return fail(QApplication::translate("main", "--instrument needs 'analyzer' or 'stage' (got '%1')").arg(p.value(instrument)));
         if (p.isSet(profile)) {
             files::MachineProfile mp;
-            QString error;
-            if (!files::loadMachineProfileFile(p.value(profile), &mp, &error))
-                return fail(QApplication::translate("main", "--profile: %1").arg(error));
+            jsonio::Problems problems;
+            if (!files::loadMachineProfileFile(p.value(profile), &mp, &problems))
+                return fail(QApplication::translate("main", "--profile: %1")
+                                .arg(words::fileProblems(problems, QFileInfo(p.value(profile)).fileName()).join(QLatin1Char('\n'))));
             if (k && *k != mp.instrument)
                 return fail(QApplication::translate("main", "--profile is for the other instrument than --instrument names"));
             k = mp.instrument;

@@ -51,17 +51,17 @@ void ProtocolProbe::start()
     m_started = true;
     if (!m_transport) {
         ProbeResult r;
-        r.error = tr("no connection chosen");
+        r.error = msg::make("link.no_connection_chosen");
         QTimer::singleShot(0, this, [this, r] { finish(r); });
         return;
     }
     m_connections << connect(m_transport, &Transport::bytesReceived, this, &ProtocolProbe::onBytes);
-    m_connections << connect(m_transport, &Transport::failed, this, [this](const QString& why) {
+    m_connections << connect(m_transport, &Transport::failed, this, [this](const msg::Message& why) {
         ProbeResult r;
         r.error = why;
         finish(r);
     });
-    m_connections << connect(m_transport, &Transport::lost, this, [this](const QString& why) {
+    m_connections << connect(m_transport, &Transport::lost, this, [this](const msg::Message& why) {
         ProbeResult r;
         r.error = why;
         finish(r);
@@ -91,15 +91,11 @@ void ProtocolProbe::tick()
     const qint64 now = m_clock.elapsed();
     if (now >= kTotalMs) {
         ProbeResult r;
-        r.error = m_bytes == 0 ? tr("no answer from %1 within %2 s, neither to a GRBL status query nor to a BenchPilot HELLO: "
-                                    "check power, cable and baud rate")
-                                     .arg(m_transport->describe())
-                                     .arg(kTotalMs / 1000.0)
-                               : tr("%1 sent %2 bytes within %3 s that are neither GRBL lines nor BenchPilot frames: a wrong "
-                                    "baud rate, or another kind of device")
-                                     .arg(m_transport->describe())
-                                     .arg(m_bytes)
-                                     .arg(kTotalMs / 1000.0);
+        const msg::Arg link = msg::verbatim("link", m_transport->describe().toStdString());
+        const msg::Arg seconds = msg::real("seconds", kTotalMs / 1000.0, msg::Unit::S);
+        r.error = m_bytes == 0 ? msg::make("grbl.probe.no_answer", {link, seconds})
+                               : msg::make("grbl.probe.unreadable",
+                                           {link, msg::integer("bytes", static_cast<long long>(m_bytes)), seconds});
         m_transport->close();
         finish(r);
         return;
@@ -129,10 +125,10 @@ void ProtocolProbe::onBytes(const QByteArray& bytes)
             ProbeResult r;
             r.protocol = ProbeResult::Protocol::Grbl;
             if (const auto b = grbl::parseBanner(l.text))
-                r.found = QStringLiteral("%1 %2").arg(b->firmware == grbl::Firmware::GrblHal ? QStringLiteral("grblHAL") : QStringLiteral("Grbl"),
-                                                      QString::fromStdString(b->version));
+                r.found = msg::make("grbl.probe.found_grbl", {msg::verbatim("firmware", b->firmware == grbl::Firmware::GrblHal ? "grblHAL" : "Grbl"),
+                                                              msg::verbatim("version", b->version)});
             else
-                r.found = tr("a GRBL controller");
+                r.found = msg::make("grbl.probe.found_grbl_unnamed");
             finish(r);
             return;
         }
@@ -149,9 +145,9 @@ void ProtocolProbe::onBytes(const QByteArray& bytes)
         r.protocol = ProbeResult::Protocol::BenchPilot;
         r.kindKnown = true;
         r.kind = h->kind;
-        r.found = tr("BenchPilot protocol %1 (%2)")
-                      .arg(h->protocolVersion)
-                      .arg(h->kind == proto::DeviceKind::Stage ? tr("stage") : tr("analyzer"));
+        r.found = msg::make("grbl.probe.found_benchpilot", {msg::integer("version", h->protocolVersion, msg::Unit::None),
+                                                             msg::term("instrument", h->kind == proto::DeviceKind::Stage ? "instrument.stage"
+                                                                                                                         : "instrument.analyzer")});
         finish(r);
         return;
     }

@@ -12,13 +12,14 @@
 //      as a realtime command nor a line end (the sequence number is chosen so): a GRBL that
 //      was still booting (an Arduino resets when its port opens) keeps it as the start of a
 //      line, which the GRBL client's first "\n" ends and GRBL answers with one error;
-//   3. '?' and HELLO again now and then until kTotalMs, then a sentence that says what was
+//   3. '?' and HELLO again now and then until kTotalMs, then a message that says what was
 //      (not) heard.
 // The transport is left open for the backend when a protocol answered, closed otherwise.
 #include "device/link/transport.h"
 #include "device/protocol/frame_codec.h"
 #include "device/protocol/messages.h"
 #include "device/backends/grbl/grbl_lines.h"
+#include "motion/message.h"
 
 #include <QElapsedTimer>
 #include <QPointer>
@@ -31,8 +32,11 @@ struct ProbeResult {
     Protocol protocol = Protocol::None;
     bool kindKnown = false;                            ///< a HELLO said which instrument
     proto::DeviceKind kind = proto::DeviceKind::Analyzer;
-    QString found;   ///< for people: "Grbl 1.1h", "grblHAL 1.1f", "BenchPilot protocol 1 (stage)"
-    QString error;   ///< when protocol is None: why, as a sentence
+    /// What answered (grbl.probe.found_grbl{firmware, version}, grbl.probe.found_grbl_unnamed,
+    /// grbl.probe.found_benchpilot{version, instrument}); words::text words it.
+    msg::Message found;
+    /// When protocol is None: why (grbl.probe.no_answer, grbl.probe.unreadable, link.*).
+    msg::Message error;
 };
 
 class ProtocolProbe : public QObject {

@@ -14,6 +14,12 @@ const char* linkStateTerm(LinkState s)
     return "link.state.disconnected";
 }
 
+const char* linkStateKey(LinkState s)
+{
+    // The term's last word: "link.state.ready" → "ready".
+    return linkStateTerm(s) + sizeof("link.state.") - 1;
+}
+
 QString AxisDescriptor::unitName() const
 {
     return unit == proto::AxisUnit::Microlitre ? QStringLiteral("µL") : QStringLiteral("mm");

@@ -17,6 +17,8 @@ namespace dev {
 enum class LinkState { Disconnected, Connecting, Identified, Ready, Lost };
 /// The state's term for people ("link.state.ready"; words::linkState words it).
 const char* linkStateTerm(LinkState s);
+/// The state as a stable key for JSON ("ready", "lost", …): never translated.
+const char* linkStateKey(LinkState s);
 
 struct AxisDescriptor {
     QChar letter;

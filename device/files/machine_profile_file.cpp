@@ -2,7 +2,6 @@
 
 #include "device/files/text_file.h"
 
-#include <QFileInfo>
 
 #include <cmath>
 
@@ -30,7 +29,7 @@ std::optional<char> axisLetter(ObjectReader& o, std::string_view key)
     if (!s)
         return std::nullopt;
     if (s->size() != 1 || !(((*s)[0] >= 'A' && (*s)[0] <= 'Z'))) {
-        o.problems().add(*o.value().find(key), o.pathOf(key), "must be one upper-case axis letter (got \"" + *s + "\")");
+        o.problems().add(*o.value().find(key), o.pathOf(key), msg::make("grbl.profile.axis_letter", {msg::verbatim("text", *s)}));
         return std::nullopt;
     }
     return (*s)[0];
@@ -70,42 +69,44 @@ std::vector<ProfileProblem> validate(const MachineProfile& p)
     for (const auto& a : p.axes)
         have.push_back(a.axis);
     if (have != wanted)
-        out.push_back({"axes", std::string("the ") + (stage ? "stage" : "analyzer") + " has axes " + wanted + " in that order (got \""
-                                   + have + "\")"});
+        out.push_back({"axes", msg::make("grbl.profile.axes_order", {msg::term("instrument", stage ? "instrument.stage" : "instrument.analyzer"),
+                                                                     msg::verbatim("wanted", wanted), msg::verbatim("got", have)})});
     std::string used;
     for (std::size_t i = 0; i < p.axes.size(); ++i) {
         const char g = p.axes[i].grblAxis;
         const std::string field = "axes[" + std::to_string(i) + "].grbl_axis";
         if (!isGrblAxis(g))
-            out.push_back({field, "\"" + letter(g) + "\" is not a GRBL axis (X, Y, Z, A, B, C)"});
+            out.push_back({field, msg::make("grbl.profile.not_grbl_axis", {msg::verbatim("axis", letter(g))})});
         else if (used.find(g) != std::string::npos)
-            out.push_back({field, "GRBL axis " + letter(g) + " is already used"});
+            out.push_back({field, msg::make("grbl.profile.grbl_axis_used", {msg::verbatim("axis", letter(g))})});
         used.push_back(g);
     }
     if (p.pump) {
         if (stage)
-            out.push_back({"pump", "the stage has no pump"});
+            out.push_back({"pump", msg::make("grbl.profile.stage_no_pump")});
         if (!isGrblAxis(p.pump->grblAxis))
-            out.push_back({"pump.grbl_axis", "\"" + letter(p.pump->grblAxis) + "\" is not a GRBL axis (X, Y, Z, A, B, C)"});
+            out.push_back({"pump.grbl_axis", msg::make("grbl.profile.not_grbl_axis", {msg::verbatim("axis", letter(p.pump->grblAxis))})});
         else if (used.find(p.pump->grblAxis) != std::string::npos)
-            out.push_back({"pump.grbl_axis", "GRBL axis " + letter(p.pump->grblAxis) + " already drives another axis"});
+            out.push_back({"pump.grbl_axis", msg::make("grbl.profile.pump_axis_used", {msg::verbatim("axis", letter(p.pump->grblAxis))})});
         if (!(p.pump->ulPerMm > 0) || !(p.pump->ulPerMm <= kMaxUlPerMm))
-            out.push_back({"pump.ul_per_mm", "must be above 0 and at most 1000000 (got " + jsonio::formatNumber(p.pump->ulPerMm) + ")"});
+            out.push_back({"pump.ul_per_mm", msg::make("grbl.profile.ul_per_mm_range", {msg::real("value", p.pump->ulPerMm),
+                                                                                       msg::real("max", kMaxUlPerMm)})});
     }
     if (p.trigger && p.trigger->output == Profile::TriggerOutput::GrblHalDigital && (p.trigger->port < 0 || p.trigger->port > 255))
-        out.push_back({"trigger.port", "must be 0 … 255 (got " + std::to_string(p.trigger->port) + ")"});
+        out.push_back({"trigger.port", jsonio::outOfRange(p.trigger->port, 0, 255)});
     if (!(p.statusPollHz >= kMinPollHz && p.statusPollHz <= kMaxPollHz))
-        out.push_back({"status_poll_hz", "must be 1 … 20 (got " + jsonio::formatNumber(p.statusPollHz) + ")"});
+        out.push_back({"status_poll_hz", jsonio::outOfRange(p.statusPollHz, kMinPollHz, kMaxPollHz)});
     const auto& j = p.jog;
     if (!(j.linkLatencyS >= 0 && j.linkLatencyS <= 0.5))
-        out.push_back({"jog.link_latency_s", "must be 0 … 0.5 (got " + jsonio::formatNumber(j.linkLatencyS) + ")"});
+        out.push_back({"jog.link_latency_s", jsonio::outOfRange(j.linkLatencyS, 0, 0.5)});
     if (!(j.refreshS >= 0.005 && j.refreshS <= 0.5))
-        out.push_back({"jog.refresh_s", "must be 0.005 … 0.5 (got " + jsonio::formatNumber(j.refreshS) + ")"});
+        out.push_back({"jog.refresh_s", jsonio::outOfRange(j.refreshS, 0.005, 0.5)});
     if (!(j.stopBudgetS >= 0.05 && j.stopBudgetS <= 2))
-        out.push_back({"jog.stop_budget_s", "must be 0.05 … 2 (got " + jsonio::formatNumber(j.stopBudgetS) + ")"});
+        out.push_back({"jog.stop_budget_s", jsonio::outOfRange(j.stopBudgetS, 0.05, 2)});
     else if (j.linkLatencyS + j.refreshS + kMinJogSegmentS >= j.stopBudgetS)
-        out.push_back({"jog.stop_budget_s", "must exceed link_latency_s + refresh_s + 0.01 s, or not even a creeping jog can keep it (got "
-                                                + jsonio::formatNumber(j.stopBudgetS) + ")"});
+        out.push_back({"jog.stop_budget_s", msg::make("grbl.profile.stop_budget_too_small",
+                                                      {msg::real("value", j.stopBudgetS, msg::Unit::S),
+                                                       msg::real("least", j.linkLatencyS + j.refreshS + kMinJogSegmentS, msg::Unit::S)})});
     return out;
 }
 
@@ -245,15 +246,19 @@ std::string writeMachineProfile(const MachineProfile& p)
     return jsonio::write(v);
 }
 
-bool loadMachineProfileFile(const QString& path, MachineProfile* profile, QString* error)
+bool loadMachineProfileFile(const QString& path, MachineProfile* profile, jsonio::Problems* problems)
 {
     std::string text;
-    if (!readText(path, &text, error))
+    msg::Message error;
+    if (!readText(path, &text, &error)) {
+        if (problems)
+            problems->addFileProblem(error);
         return false;
+    }
     MachineProfileReadResult r = parseMachineProfile(text);
     if (!r.profile) {
-        if (error)
-            *error = QString::fromStdString(r.problems.format(QFileInfo(path).fileName().toStdString()));
+        if (problems)
+            *problems = std::move(r.problems);
         return false;
     }
     if (profile)
@@ -261,7 +266,7 @@ bool loadMachineProfileFile(const QString& path, MachineProfile* profile, QStrin
     return true;
 }
 
-bool saveMachineProfileFile(const QString& path, const MachineProfile& profile, QString* error)
+bool saveMachineProfileFile(const QString& path, const MachineProfile& profile, msg::Message* error)
 {
     return writeAtomically(path, writeMachineProfile(profile), error);
 }

@@ -4,7 +4,7 @@
 // axis with its µL per mm, the output a camera trigger is wired to, how often to poll status,
 // what to do with inch reports, and the figures the continuous-jog promise rests on. JSON with
 // "schema": "benchpilot.machine-profile", "version": 1. Reading reports every problem at once
-// (file:line:column: field: message). The text functions are plain C++ (fuzzed); the file
+// (each with its line, column and field). The text functions are plain C++ (fuzzed); the file
 // functions add the atomic write and the size-capped read.
 //
 // A connection without a profile gets defaultProfile(kind): the instrument's axes on GRBL's
@@ -77,7 +77,7 @@ MachineProfile defaultProfile(proto::DeviceKind kind);
 /// Rules a profile keeps whatever file it came from; each problem names its field.
 struct ProfileProblem {
     std::string field;
-    std::string message;
+    msg::Message message;  ///< grbl.profile.*, or file.json.out_of_range{value, min, max}
 };
 std::vector<ProfileProblem> validate(const MachineProfile& p);
 
@@ -89,9 +89,9 @@ MachineProfileReadResult parseMachineProfile(std::string_view text);
 /// Two-space indented JSON: the header, then every field.
 std::string writeMachineProfile(const MachineProfile& p);
 
-/// False with every problem in *error, one per line, prefixed with the file's name.
-bool loadMachineProfileFile(const QString& path, MachineProfile* profile, QString* error);
-bool saveMachineProfileFile(const QString& path, const MachineProfile& profile, QString* error);
+/// False with every problem in *problems (words::fileProblems words them with the file's name).
+bool loadMachineProfileFile(const QString& path, MachineProfile* profile, jsonio::Problems* problems);
+bool saveMachineProfileFile(const QString& path, const MachineProfile& profile, msg::Message* error);
 
 const char* protocolName(MachineProfile::Protocol p);  ///< "auto", "benchpilot", "grbl"
 const char* triggerOutputName(MachineProfile::TriggerOutput t);  ///< "grblhal-digital", "coolant-flood"

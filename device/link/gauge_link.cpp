@@ -33,14 +33,13 @@ GaugeLink::GaugeLink(Transport* transport, QString port, QObject* parent)
         if (auto done = std::exchange(m_opening, {}))
             done({});
     });
-    m_connections << connect(m_transport, &Transport::failed, this, [this](const QString& why) {
+    m_connections << connect(m_transport, &Transport::failed, this, [this](const msg::Message& why) {
         if (auto done = std::exchange(m_opening, {}))
-            done(msg::make("gauge.port_failed", {msg::verbatim("port", m_port.toStdString()), msg::verbatim("detail", why.toStdString())}));
+            done(msg::make("gauge.port_failed", {msg::verbatim("port", m_port.toStdString()), msg::nested("detail", why)}));
     });
-    m_connections << connect(m_transport, &Transport::lost, this, [this](const QString& why) {
+    m_connections << connect(m_transport, &Transport::lost, this, [this](const msg::Message& why) {
         if (m_pending)
-            finish(std::nullopt, msg::make("gauge.link_lost", {msg::verbatim("port", m_port.toStdString()),
-                                                              msg::verbatim("detail", why.toStdString())}));
+            finish(std::nullopt, msg::make("gauge.link_lost", {msg::verbatim("port", m_port.toStdString()), msg::nested("detail", why)}));
     });
 }
 
@@ -53,7 +52,7 @@ GaugeLink::~GaugeLink()
 void GaugeLink::open(OpenDone done)
 {
     if (!m_transport) {
-        done(msg::make("gauge.port_failed", {msg::verbatim("port", m_port.toStdString()), msg::verbatim("detail", "no transport")}));
+        done(msg::make("gauge.no_transport", {msg::verbatim("port", m_port.toStdString())}));
         return;
     }
     if (m_transport->isOpen()) {

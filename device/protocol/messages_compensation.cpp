@@ -45,14 +45,6 @@ CompPoint getPoint(ByteReader& r)
     return p;
 }
 
-template <typename T>
-std::optional<T> finish(const ByteReader& r, T&& value)
-{
-    if (!r.done())
-        return std::nullopt;
-    return std::move(value);
-}
-
 } // namespace
 
 Bytes encode(const CompUploadRequest& m)

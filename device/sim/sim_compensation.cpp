@@ -11,8 +11,8 @@ using motion::metrology::CompensationModel;
 
 namespace {
 
-std::int32_t nm(double mm) { return static_cast<std::int32_t>(std::llround(mm * 1e6)); }
-std::int32_t nmFromUm(double um) { return static_cast<std::int32_t>(std::llround(um * 1e3)); }
+std::int32_t compNm(double mm) { return static_cast<std::int32_t>(std::llround(mm * 1e6)); }
+std::int32_t compNmFromUm(double um) { return static_cast<std::int32_t>(std::llround(um * 1e3)); }
 
 std::string kindText(const CompensationModel& m)
 {
@@ -157,13 +157,13 @@ SimCompensation::Result SimCompensation::get(const proto::CompGetRequest& r, pro
     if (!a.model)
         return std::nullopt;
     const CompensationModel& m = *a.model;
-    out.backlash = nmFromUm(m.backlashUm);
+    out.backlash = compNmFromUm(m.backlashUm);
     if (m.kind == CompensationModel::Kind::Polynomial) {
         out.kind = proto::CompKind::Polynomial;
         out.coefficients = m.polynomial.coefficientsUm;
         out.total = static_cast<std::uint16_t>(out.coefficients.size());
-        out.validFrom = nm(m.validFromMm);
-        out.validTo = nm(m.validToMm);
+        out.validFrom = compNm(m.validFromMm);
+        out.validTo = compNm(m.validToMm);
         return std::nullopt;
     }
     out.kind = m.perDirection ? proto::CompKind::TablePerDirection : proto::CompKind::Table;
@@ -173,7 +173,7 @@ SimCompensation::Result SimCompensation::get(const proto::CompGetRequest& r, pro
                                                      r.first < m.table.size() ? m.table.size() - r.first : 0);
     for (std::size_t k = 0; k < count; ++k) {
         const auto& p = m.table[r.first + k];
-        out.points.push_back({nm(p.nominalMm), nmFromUm(p.correctionUpUm), nmFromUm(p.correctionDownUm)});
+        out.points.push_back({compNm(p.nominalMm), compNmFromUm(p.correctionUpUm), compNmFromUm(p.correctionDownUm)});
     }
     return std::nullopt;
 }

@@ -92,7 +92,7 @@ void BM_PlanRecipe384(benchmark::State& state)
         const plates::RecipePlan p = plates::planRecipe(r, c);
         ops = p.ops.size();
         if (!p.ok())
-            state.SkipWithError(p.problems.front().message.c_str());
+            state.SkipWithError(msg::debugString(p.problems.front().message).c_str());
         benchmark::DoNotOptimize(p.totalTimeS);
     }
     state.counters["ops"] = static_cast<double>(ops);
@@ -147,7 +147,7 @@ void BM_CalibrationFit(benchmark::State& state)
     for (auto& p : pts)
         p.machineMm = truth.apply(p.plateMm);
     pts[1].machineMm.x += 0.03;
-    std::string error;
+    msg::Message error;
     for (auto _ : state)
         benchmark::DoNotOptimize(plates::fitCalibration(pts, model, &error));
     state.SetLabel(plates::fitModelName(model));

@@ -102,9 +102,9 @@ struct Rig {
         client.setTransport(link.hostEnd());
         hub.addInstrument(1, QStringLiteral("Stage"), &client);
         QObject::connect(&hub, &tele::TelemetryHub::subscriptionChanged, &hub,
-                         [this](int, int rate, const QString& n) {
+                         [this](int, int rate, const msg::Message& n) {
                              rateHz = rate;
-                             note = n;
+                             note = QString::fromStdString(msg::debugString(n));
                          });
     }
     ~Rig() { client.setTransport(nullptr); }
@@ -230,9 +230,9 @@ void BM_HubMemoryOneHour(benchmark::State& state)
         rig.hub.setWindowS(windowS);
         rig.hub.setWanted(QStringLiteral("bench"), keys(1, kXy), 100);
         if (record) {
-            QString error;
+            msg::Message error;
             if (!rig.hub.startRecording(QStringLiteral("/dev/null"), keys(1, kXy), &error)) {
-                state.SkipWithError(error.toStdString().c_str());
+                state.SkipWithError(msg::debugString(error).c_str());
                 return;
             }
         }

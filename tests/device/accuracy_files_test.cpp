@@ -261,9 +261,9 @@ TEST(AccuracyFiles, WritersLeaveNothingHalfWritten)
 {
     QTemporaryDir dir;
     const QString good = dir.filePath(QStringLiteral("r.csv"));
-    QString error;
+    msg::Message error;
     const auto a = analyzeReadingsCsv(read("analyzer-x-seed000.readings.csv"), "seed.csv");
-    ASSERT_TRUE(saveReadingsCsv(good, a.read.readings, &error)) << error.toStdString();
+    ASSERT_TRUE(saveReadingsCsv(good, a.read.readings, &error)) << msg::debugString(error);
     const ReadingsRead back = loadReadingsCsv(good);
     ASSERT_TRUE(back.ok());
     EXPECT_EQ(back.readings.size(), 25u);
@@ -271,10 +271,12 @@ TEST(AccuracyFiles, WritersLeaveNothingHalfWritten)
     // A directory that is not there: refused, and nothing appears.
     const QString nowhere = dir.filePath(QStringLiteral("missing/r.csv"));
     EXPECT_FALSE(saveReadingsCsv(nowhere, a.read.readings, &error));
-    EXPECT_FALSE(error.isEmpty());
+    EXPECT_EQ(error.id, "file.cannot_write");
+    EXPECT_EQ(error.text("file"), nowhere.toStdString());
     EXPECT_FALSE(QFile::exists(nowhere));
     const ReadingsRead none = loadReadingsCsv(nowhere);
     ASSERT_EQ(none.problems.size(), 1u);
-    EXPECT_EQ(none.problems[0].message.id, "file.unreadable");
+    EXPECT_EQ(none.problems[0].message.id, "file.cannot_open");
+    EXPECT_EQ(none.problems[0].message.text("file"), nowhere.toStdString());
     EXPECT_EQ(none.problems[0].file, "r.csv");
 }

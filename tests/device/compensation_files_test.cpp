@@ -184,14 +184,16 @@ TEST(CompensationFiles, ErrorCurveCsvFeedsTheFit)
 TEST(CompensationFiles, SavedFilesReadBack)
 {
     QTemporaryDir dir;
-    QString error;
+    msg::Message error;
     const CompensationModel m = tableExample();
     const QString json = dir.filePath(QStringLiteral("x.compensation.json")), comp = dir.filePath(QStringLiteral("x.comp"));
-    ASSERT_TRUE(saveCompensationFile(json, {m, std::nullopt, ""}, &error)) << error.toStdString();
+    ASSERT_TRUE(saveCompensationFile(json, {m, std::nullopt, ""}, &error)) << msg::debugString(error);
     ASSERT_TRUE(saveLinuxcncCompensation(comp, m, LinuxcncCompType::ActualPositions, &error));
     ASSERT_TRUE(saveCompensationCsv(dir.filePath(QStringLiteral("x.csv")), m, &error));
     const CompensationRead r = loadCompensationFile(json);
     ASSERT_TRUE(r.compensation) << debugFormat(r.problems);
     EXPECT_EQ(r.compensation->model.table.size(), 11u);
     EXPECT_FALSE(saveCompensationFile(dir.filePath(QStringLiteral("no/such/dir.json")), {m, std::nullopt, ""}, &error));
+    EXPECT_EQ(error.id, "file.cannot_write");
+    EXPECT_NE(error.text("file").find("no/such/dir.json"), std::string::npos);
 }

@@ -1,6 +1,6 @@
 // Every GRBL error and alarm is shown with its documented meaning (and an error with the line it
-// answers); every grbl.* id the backend emits, and every reason it gives for a missing
-// capability, is worded — none falls back to the id.
+// answers); every grbl.* id the backend, the protocol probe and the machine profile reader emit,
+// and every reason it gives for a missing capability, is worded — none falls back to the id.
 #include "widgets/wording/wording.h"
 
 #include "device/backends/grbl/grbl_codes.h"
@@ -8,6 +8,8 @@
 #include "motion/message.h"
 
 #include <QCoreApplication>
+
+#include <algorithm>
 
 #include <gtest/gtest.h>
 
@@ -19,8 +21,11 @@ TEST(GrblWords, EveryErrorAndAlarmIsShownWithItsMeaning)
     const grbl::CodeMeaning* errors = grbl::errorTable(&n);
     ASSERT_GT(n, 50u);
     for (std::size_t i = 0; i < n; ++i) {
-        const QString text = words::text(grbl::errorMessage(errors[i].code, "G1 X5 F600"));
-        EXPECT_TRUE(text.startsWith(QStringLiteral("error:%1 — ").arg(errors[i].code))) << text.toStdString();
+        // As the client reports it: with the request it refused (a term the sentence may leave out).
+        msg::Message m = grbl::errorMessage(errors[i].code, "G1 X5 F600");
+        m.args.push_back(msg::term("request", "request.move"));
+        const QString text = words::text(m);
+        EXPECT_TRUE(text.contains(QString::number(errors[i].code))) << text.toStdString();
         EXPECT_TRUE(text.contains(QString::fromUtf8(errors[i].text))) << text.toStdString();
         EXPECT_TRUE(text.contains(QStringLiteral("\"G1 X5 F600\""))) << text.toStdString();
     }
@@ -28,14 +33,20 @@ TEST(GrblWords, EveryErrorAndAlarmIsShownWithItsMeaning)
     ASSERT_GE(n, 9u);
     for (std::size_t i = 0; i < n; ++i) {
         const QString text = words::text(grbl::alarmMessage(alarms[i].code));
-        EXPECT_EQ(text, QStringLiteral("ALARM:%1 — %2").arg(alarms[i].code).arg(QString::fromUtf8(alarms[i].text)));
+        EXPECT_TRUE(text.contains(QString::number(alarms[i].code))) << text.toStdString();
+        EXPECT_TRUE(text.contains(QString::fromUtf8(alarms[i].text))) << text.toStdString();
     }
     // A code from a newer firmware is still shown, with its number.
-    EXPECT_TRUE(words::text(grbl::errorMessage(250, "")).startsWith(QStringLiteral("error:250 — ")));
+    EXPECT_TRUE(words::text(grbl::errorMessage(250, "")).contains(QStringLiteral("250")));
+    // The handshake's refusal names the command and the code's meaning.
+    EXPECT_EQ(words::text(msg::make("grbl.identify.refused", {msg::verbatim("command", "$$"), msg::integer("code", 9, msg::Unit::None)})),
+              QStringLiteral("the controller refused $$ with error:9 (%1)").arg(QString::fromUtf8(grbl::errorMeaning(9)->text)));
 }
 
 TEST(GrblWords, EveryIdTheBackendEmitsIsWorded)
 {
+    const msg::Arg link = msg::verbatim("link", "/dev/ttyUSB0 at 115200 Bd");
+    const msg::Arg seconds = msg::real("seconds", 5, msg::Unit::S);
     const std::vector<msg::Message> all = {
         msg::make("grbl.status.malformed", {msg::verbatim("line", "<Idle|MPos:x>"), msg::term("reason", "grbl.status.bad_position")}),
         msg::make("grbl.settings.missing", {msg::integer("setting", 110, msg::Unit::None), msg::verbatim("axis", "X")}),
@@ -58,6 +69,56 @@ TEST(GrblWords, EveryIdTheBackendEmitsIsWorded)
         msg::make("grbl.device_line", {msg::verbatim("line", "[GC:G0 G54]")}),
         msg::make("grbl.unknown_line", {msg::verbatim("line", "xyz"), msg::integer("count", 1)}),
         msg::make("grbl.line_too_long", {msg::integer("limit", 1024, msg::Unit::Byte)}),
+        msg::make("grbl.connect.no_answer", {link, seconds}),
+        msg::make("grbl.connect.no_grbl_line", {link, msg::integer("bytes", 37), seconds}),
+        msg::make("grbl.connect.never_acknowledged", {link, seconds}),
+        msg::make("grbl.connect.identify_silent", {link}),
+        msg::make("grbl.identify.not_answered", {msg::verbatim("command", "$I"), msg::nested("cause", msg::make("grbl.reset_flushed"))}),
+        msg::make("grbl.identify.refused", {msg::verbatim("command", "$$"), msg::integer("code", 3, msg::Unit::None)}),
+        msg::make("grbl.identify.no_limits", {msg::nested("problem", msg::make("grbl.settings.missing", {msg::integer("setting", 110, msg::Unit::None),
+                                                                                                          msg::verbatim("axis", "X")})),
+                                              msg::integer("count", 2)}),
+        msg::make("grbl.identify.inches_refused"),
+        msg::make("grbl.identify.axis_missing", {msg::verbatim("axis", "Z"), msg::verbatim("grbl_axis", "Z"), msg::verbatim("axes", "XY")}),
+        msg::make("grbl.identify.pump_axis_missing", {msg::verbatim("grbl_axis", "A"), msg::verbatim("axes", "XYZ")}),
+        msg::make("grbl.silent", {msg::real("seconds", 2.5, msg::Unit::S)}),
+        msg::make("grbl.silent_with_noise", {msg::real("seconds", 2.5, msg::Unit::S), msg::integer("count", 4)}),
+        msg::make("grbl.reset_by_itself"),
+        msg::make("grbl.reset_flushed"),
+        msg::make("grbl.stop_timeout", {msg::real("seconds", 5, msg::Unit::S)}),
+        msg::make("grbl.stop_overtaken_by_estop"),
+        msg::make("grbl.beyond_travel", {msg::verbatim("axis", "X"), msg::real("target", 150, msg::Unit::Mm), msg::real("min", 0, msg::Unit::Mm),
+                                         msg::real("max", 100, msg::Unit::Mm), msg::integer("setting", 130, msg::Unit::None)}),
+        msg::make("grbl.line_not_sent", {msg::term("request", "request.move"), msg::verbatim("line", "G0 X1")}),
+        msg::make("grbl.estop_latched", {msg::term("request", "request.home")}),
+        msg::make("grbl.home_one_or_all", {msg::verbatim("axes", "XY")}),
+        msg::make("grbl.set_zero_while_moving"),
+        msg::make("grbl.set_zero_no_axis"),
+        msg::make("grbl.soft_limits_fixed"),
+        msg::make("grbl.move_in_alarm"),
+        msg::make("grbl.move_not_established", {msg::verbatim("axis", "Y")}),
+        msg::make("grbl.no_trigger_output"),
+        msg::make("grbl.trigger_bad_width", {msg::real("width", -1, msg::Unit::S)}),
+        msg::make("grbl.event.estop"),
+        msg::make("grbl.event.estop_cleared"),
+        msg::make("grbl.path.already_running"),
+        msg::make("grbl.path.not_begun"),
+        msg::make("grbl.path.out_of_sequence", {msg::integer("expected", 4, msg::Unit::None), msg::integer("sent", 6, msg::Unit::None)}),
+        msg::make("grbl.path.window_full", {msg::integer("free", 3)}),
+        msg::make("grbl.path.z_in_path", {msg::integer("segment", 2, msg::Unit::None)}),
+        msg::make("grbl.probe.no_answer", {link, seconds}),
+        msg::make("grbl.probe.unreadable", {link, msg::integer("bytes", 12), seconds}),
+        msg::make("grbl.probe.found_grbl", {msg::verbatim("firmware", "grblHAL"), msg::verbatim("version", "1.1f")}),
+        msg::make("grbl.probe.found_grbl_unnamed"),
+        msg::make("grbl.probe.found_benchpilot", {msg::integer("version", 1, msg::Unit::None), msg::term("instrument", "instrument.stage")}),
+        msg::make("grbl.profile.axis_letter", {msg::verbatim("text", "xy")}),
+        msg::make("grbl.profile.axes_order", {msg::term("instrument", "instrument.stage"), msg::verbatim("wanted", "XY"), msg::verbatim("got", "X")}),
+        msg::make("grbl.profile.not_grbl_axis", {msg::verbatim("axis", "Q")}),
+        msg::make("grbl.profile.grbl_axis_used", {msg::verbatim("axis", "X")}),
+        msg::make("grbl.profile.stage_no_pump"),
+        msg::make("grbl.profile.pump_axis_used", {msg::verbatim("axis", "Z")}),
+        msg::make("grbl.profile.ul_per_mm_range", {msg::real("value", 0), msg::real("max", 1e6)}),
+        msg::make("grbl.profile.stop_budget_too_small", {msg::real("value", 0.25, msg::Unit::S), msg::real("least", 0.31, msg::Unit::S)}),
         msg::make("grbl.controller_reset", {msg::integer("lost", 2), msg::verbatim("first", "G1 X3")}),
         msg::make("grbl.controller_reset", {msg::integer("lost", 0), msg::verbatim("first", "")}),
     };
@@ -65,7 +126,18 @@ TEST(GrblWords, EveryIdTheBackendEmitsIsWorded)
         const QString text = words::text(m);
         EXPECT_FALSE(text.contains(QString::fromStdString(m.id))) << text.toStdString();
         EXPECT_FALSE(text.isEmpty()) << m.id;
+        EXPECT_FALSE(text.contains(QLatin1Char('%'))) << text.toStdString();  // every %N filled
     }
+    // The GRBL engineer's sentences, with their arguments in place.
+    auto byId = [&all](const char* id) {
+        return *std::find_if(all.begin(), all.end(), [id](const msg::Message& m) { return m.id == id; });
+    };
+    EXPECT_EQ(words::text(byId("grbl.beyond_travel")), QStringLiteral("X 150.000 mm is beyond the machine travel 0.000 mm … 100.000 mm (the controller's $130): "
+                                                   "refused before sending, since GRBL would stop with ALARM:2 and need a reset"));
+    EXPECT_EQ(words::text(byId("grbl.line_not_sent")), QStringLiteral("move: the line \"G0 X1\" cannot be sent"));
+    EXPECT_EQ(words::text(byId("grbl.probe.found_benchpilot")), QStringLiteral("BenchPilot protocol 1 (stage)"));
+    for (const char* request : {"grbl.request.unlock", "grbl.request.dwell", "grbl.request.trigger", "grbl.request.status"})
+        EXPECT_NE(words::term(request), QString::fromLatin1(request));
     EXPECT_EQ(words::text(all.back()), QStringLiteral("The controller reset by itself; its position is no longer trusted."));
     for (const char* reason : {"unknown_state", "bad_substate", "bad_position", "bad_offset", "bad_buffer", "bad_line_number",
                                "bad_feed", "bad_pins", "bad_overrides", "bad_accessories", "no_position"}) {

@@ -8,15 +8,27 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
+
 namespace {
 
 using files::MachineProfile;
 
-std::string problemsOf(std::string_view text)
+jsonio::Problems problemsOf(std::string_view text)
 {
     const auto r = files::parseMachineProfile(text);
     EXPECT_FALSE(r.profile.has_value());
-    return r.problems.format("p.machine.json");
+    return r.problems;
+}
+
+/// The problem at `path` with message `id`, or nullopt (the failure prints them all).
+std::optional<jsonio::Problem> find(const jsonio::Problems& problems, const std::string& path, const std::string& id)
+{
+    for (const auto& p : problems.list())
+        if (p.path == path && p.message.id == id)
+            return p;
+    ADD_FAILURE() << "no " << id << " at " << path << " in\n" << problems.format("p.machine.json");
+    return std::nullopt;
 }
 
 std::string withAxes(const std::string& instrument, const std::string& axes, const std::string& extra = {})
@@ -32,8 +44,8 @@ TEST(MachineProfileFile, TheExamplesLoadAndSayWhatTheyWire)
     ASSERT_GE(names.size(), 3);
     for (const QString& n : names) {
         MachineProfile p;
-        QString error;
-        ASSERT_TRUE(files::loadMachineProfileFile(dir.filePath(n), &p, &error)) << error.toStdString();
+        jsonio::Problems problems;
+        ASSERT_TRUE(files::loadMachineProfileFile(dir.filePath(n), &p, &problems)) << problems.format(n.toStdString());
         EXPECT_TRUE(files::validate(p).empty()) << n.toStdString();
     }
     MachineProfile sim;
@@ -59,10 +71,11 @@ TEST(MachineProfileFile, AProfileRoundTripsThroughItsFile)
     p.jog.refreshS = 0.04;
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("bench.machine.json"));
-    QString error;
-    ASSERT_TRUE(files::saveMachineProfileFile(path, p, &error)) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(files::saveMachineProfileFile(path, p, &error)) << msg::debugString(error);
     MachineProfile back;
-    ASSERT_TRUE(files::loadMachineProfileFile(path, &back, &error)) << error.toStdString();
+    jsonio::Problems problems;
+    ASSERT_TRUE(files::loadMachineProfileFile(path, &back, &problems)) << problems.format("bench.machine.json");
     EXPECT_EQ(files::writeMachineProfile(back), files::writeMachineProfile(p));
     EXPECT_EQ(back.trigger->port, 3);
     EXPECT_DOUBLE_EQ(back.pump->ulPerMm, 12.5);
@@ -71,36 +84,68 @@ TEST(MachineProfileFile, AProfileRoundTripsThroughItsFile)
 TEST(MachineProfileFile, MistakesAreReportedWithTheirPlaceAndField)
 {
     // The stage has X and Y; the analyzer X, Y and Z, in that order.
-    EXPECT_NE(problemsOf(withAxes("stage", R"([{"axis": "X", "grbl_axis": "X"}])")).find("axes: the stage has axes XY"), std::string::npos);
+    if (const auto p = find(problemsOf(withAxes("stage", R"([{"axis": "X", "grbl_axis": "X"}])")), "axes", "grbl.profile.axes_order")) {
+        EXPECT_EQ(p->message.text("instrument"), "instrument.stage");
+        EXPECT_EQ(p->message.text("wanted"), "XY");
+        EXPECT_EQ(p->message.text("got"), "X");
+    }
     // A GRBL axis driving two instrument axes.
-    const std::string twice = problemsOf(withAxes("stage", R"([{"axis": "X", "grbl_axis": "X"}, {"axis": "Y", "grbl_axis": "X"}])"));
-    EXPECT_NE(twice.find("axes[1].grbl_axis: GRBL axis X is already used"), std::string::npos) << twice;
-    // A letter GRBL does not have.
-    EXPECT_NE(problemsOf(withAxes("stage", R"([{"axis": "X", "grbl_axis": "Q"}, {"axis": "Y", "grbl_axis": "Y"}])"))
-                  .find("\"Q\" is not a GRBL axis"),
-              std::string::npos);
+    if (const auto p = find(problemsOf(withAxes("stage", R"([{"axis": "X", "grbl_axis": "X"}, {"axis": "Y", "grbl_axis": "X"}])")),
+                             "axes[1].grbl_axis", "grbl.profile.grbl_axis_used")) {
+        EXPECT_EQ(p->message.text("axis"), "X");
+    }
+    // A letter GRBL does not have; a letter that is not one.
+    if (const auto p = find(problemsOf(withAxes("stage", R"([{"axis": "X", "grbl_axis": "Q"}, {"axis": "Y", "grbl_axis": "Y"}])")),
+                             "axes[0].grbl_axis", "grbl.profile.not_grbl_axis")) {
+        EXPECT_EQ(p->message.text("axis"), "Q");
+    }
+    if (const auto p = find(problemsOf(withAxes("stage", R"([{"axis": "x", "grbl_axis": "X"}, {"axis": "Y", "grbl_axis": "Y"}])")),
+                             "axes[0].axis", "grbl.profile.axis_letter")) {
+        EXPECT_EQ(p->message.text("text"), "x");
+    }
     // A pump on the stage, a pump on an axis already used.
     const std::string xy = R"([{"axis": "X", "grbl_axis": "X"}, {"axis": "Y", "grbl_axis": "Y"}])";
-    EXPECT_NE(problemsOf(withAxes("stage", xy, R"(, "pump": {"grbl_axis": "A", "ul_per_mm": 2})")).find("pump: the stage has no pump"),
-              std::string::npos);
+    find(problemsOf(withAxes("stage", xy, R"(, "pump": {"grbl_axis": "A", "ul_per_mm": 2})")), "pump", "grbl.profile.stage_no_pump");
     const std::string xyz = R"([{"axis": "X", "grbl_axis": "X"}, {"axis": "Y", "grbl_axis": "Y"}, {"axis": "Z", "grbl_axis": "Z"}])";
-    EXPECT_NE(problemsOf(withAxes("analyzer", xyz, R"(, "pump": {"grbl_axis": "Z", "ul_per_mm": 2})")).find("already drives another axis"),
-              std::string::npos);
+    if (const auto p = find(problemsOf(withAxes("analyzer", xyz, R"(, "pump": {"grbl_axis": "Z", "ul_per_mm": 2})")), "pump.grbl_axis",
+                             "grbl.profile.pump_axis_used")) {
+        EXPECT_EQ(p->message.text("axis"), "Z");
+    }
     // A jog budget that not even a creeping jog can keep.
-    const std::string budget = problemsOf(withAxes("stage", xy, R"(, "jog": {"link_latency_s": 0.2, "refresh_s": 0.1, "stop_budget_s": 0.25})"));
-    EXPECT_NE(budget.find("jog.stop_budget_s: must exceed"), std::string::npos) << budget;
+    if (const auto p = find(problemsOf(withAxes("stage", xy, R"(, "jog": {"link_latency_s": 0.2, "refresh_s": 0.1, "stop_budget_s": 0.25})")),
+                             "jog.stop_budget_s", "grbl.profile.stop_budget_too_small")) {
+        EXPECT_DOUBLE_EQ(p->message.number("value"), 0.25);
+        EXPECT_NEAR(p->message.number("least"), 0.31, 1e-12);
+    }
     // Out of range, wrong words, unknown fields (with the nearest known name).
-    EXPECT_NE(problemsOf(withAxes("stage", xy, R"(, "status_poll_hz": 50)")).find("status_poll_hz"), std::string::npos);
-    EXPECT_NE(problemsOf(withAxes("stage", xy, R"(, "trigger": {"output": "laser"})")).find("trigger.output"), std::string::npos);
-    const std::string unknown = problemsOf(withAxes("stage", xy, R"(, "status_poll": 5)"));
-    EXPECT_NE(unknown.find("status_poll_hz"), std::string::npos) << unknown;
-    // The place: file, line and column.
-    EXPECT_EQ(problemsOf("{\n  \"schema\": \"benchpilot.machine-profile\",\n  \"version\": 1,\n  \"instrument\": \"mill\",\n  \"axes\": []\n}")
-                  .rfind("p.machine.json:4:", 0),
-              0u);
+    if (const auto p = find(problemsOf(withAxes("stage", xy, R"(, "status_poll_hz": 50)")), "status_poll_hz", "file.json.out_of_range")) {
+        EXPECT_DOUBLE_EQ(p->message.number("value"), 50);
+    }
+    find(problemsOf(withAxes("stage", xy, R"(, "trigger": {"output": "laser"})")), "trigger.output", "file.json.not_one_of");
+    if (const auto p = find(problemsOf(withAxes("stage", xy, R"(, "status_poll": 5)")), "status_poll", "file.json.unknown_field_suggest")) {
+        EXPECT_EQ(p->message.text("suggestion"), "status_poll_hz");
+    }
+    // The place: line and column.
+    const jsonio::Problems mill =
+        problemsOf("{\n  \"schema\": \"benchpilot.machine-profile\",\n  \"version\": 1,\n  \"instrument\": \"mill\",\n  \"axes\": []\n}");
+    if (const auto p = find(mill, "instrument", "file.json.not_one_of")) {
+        EXPECT_EQ(p->position.line, 4);
+        EXPECT_EQ(p->position.column, 17);
+    }
     // Another file's schema, a newer version.
-    EXPECT_NE(problemsOf(R"({"schema": "benchpilot.pattern", "version": 1})").find("benchpilot.machine-profile"), std::string::npos);
-    EXPECT_NE(problemsOf(R"({"schema": "benchpilot.machine-profile", "version": 9})").find("newer"), std::string::npos);
+    if (const auto p = find(problemsOf(R"({"schema": "benchpilot.pattern", "version": 1})"), "schema", "file.json.schema_wrong")) {
+        EXPECT_EQ(p->message.text("schema"), "benchpilot.machine-profile");
+    }
+    find(problemsOf(R"({"schema": "benchpilot.machine-profile", "version": 9})"), "version", "file.json.version_newer");
+}
+
+TEST(MachineProfileFile, AFileThatCannotBeReadSaysSo)
+{
+    jsonio::Problems problems;
+    EXPECT_FALSE(files::loadMachineProfileFile(QStringLiteral("/nonexistent/x.machine.json"), nullptr, &problems));
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_EQ(problems.list().front().position.line, 0);  // the file as a whole
+    EXPECT_FALSE(problems.list().front().message.empty());
 }
 
 TEST(MachineProfileFile, TheDefaultWiringIsValidAndSaysWhere)

@@ -25,13 +25,14 @@ const QSet<QString> kNotIds = {
     QStringLiteral("pattern.value_above"),  // an example in message.h's comment
     QStringLiteral("direction.circle"),     // a field path of the accuracy files
     QStringLiteral("scan.csv"),             // a file name
+    QStringLiteral("link.state."),          // the prefix linkStateKey() strips
 };
 
 QStringList idLiterals()
 {
     static const QRegularExpression id(QStringLiteral(
-        "\"((?:pattern|plate|recipe|scan|profile|tuning|file|request|link|device|telemetry|path|json|segment|grbl|accuracy|"
-        "compensation|direction|rotation|capability|instrument|log)\\.[a-z0-9_.\\-]+)\""));
+        "(?<!api\\()\"((?:pattern|plate|recipe|scan|profile|tuning|file|request|link|device|telemetry|path|json|segment|grbl|accuracy|"
+        "compensation|direction|rotation|capability|instrument|log|gauge)\\.[a-z0-9_.\\-]+)\""));
     QSet<QString> found;
     for (const char* dir : {"motion", "device", "widgets", "app"}) {
         QDirIterator it(QStringLiteral(BP_SOURCE_DIR "/%1").arg(QLatin1String(dir)), {QStringLiteral("*.cpp"), QStringLiteral("*.h")},
@@ -39,8 +40,10 @@ QStringList idLiterals()
         while (it.hasNext()) {
             const QString path = it.next();
             // The simulator is firmware (its words go on the wire); the wording tables hold
-            // the ids themselves.
-            if (path.contains(QLatin1String("/device/sim/")) || path.contains(QLatin1String("/widgets/wording/")))
+            // the ids themselves; the scripting API's literals are method names
+            // ("device.home"), as are the CLI's api("…") specs (the lookbehind above).
+            if (path.contains(QLatin1String("/device/sim/")) || path.contains(QLatin1String("/widgets/wording/"))
+                || path.contains(QLatin1String("/app/api/")))
                 continue;
             QFile f(path);
             if (!f.open(QIODevice::ReadOnly))

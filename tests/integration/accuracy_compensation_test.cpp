@@ -47,7 +47,7 @@ bool call(const std::function<void(dev::Instrument::Callback)>& send)
         done = true;
     });
     waitFor([&] { return done; }, 10000);
-    EXPECT_FALSE(error) << (error ? error->message.toStdString() : "");
+    EXPECT_FALSE(error) << (error ? msg::debugString(error->message) : "");
     return done && !error;
 }
 
@@ -116,7 +116,7 @@ TEST(AccuracyCompensation, TheDeviceKeepsItAcrossAReconnect)
         done = true;
     }, [&](int sent, int) { lastProgress = sent; });
     ASSERT_TRUE(waitFor([&] { return done; }, 10000));
-    ASSERT_FALSE(error) << error->message.toStdString();
+    ASSERT_FALSE(error) << msg::debugString(error->message);
     EXPECT_EQ(lastProgress, 101);
     ASSERT_TRUE(call([&](auto cb) { comp->setEnabled(1, true, false, cb); }));
     // A new session: the client disconnects and connects again (a new HELLO).

@@ -86,16 +86,21 @@ TEST(GrblClient, ASoftLimitIsRefusedClearlyByTheHostAndByGrbl)
     const auto far = s.call([&](auto cb) { s.client.move({{0, 150}}, false, 10, cb); });
     ASSERT_TRUE(far);
     EXPECT_EQ(far->code, proto::ErrorCode::SoftLimit);
-    EXPECT_TRUE(far->message.contains(QStringLiteral("150.000"))) << far->message.toStdString();
-    EXPECT_TRUE(far->message.contains(QStringLiteral("$130"))) << far->message.toStdString();
+    EXPECT_EQ(far->message.id, "grbl.beyond_travel") << far->message;
+    EXPECT_EQ(far->message.text("axis"), "X");
+    EXPECT_DOUBLE_EQ(far->message.number("target"), 150);
+    EXPECT_LT(far->message.number("max"), 150);
+    EXPECT_EQ(far->message.integer("setting"), 130);
+    ASSERT_NE(far->message.arg("target"), nullptr);
+    EXPECT_EQ(far->message.arg("target")->unit, msg::Unit::Mm);
     EXPECT_FALSE(s.client.status().positionLost);
     // A jog step beyond it goes to GRBL, which answers error:15: shown with its meaning and line.
     const auto jog = s.call([&](auto cb) { s.client.jogStep(0, 500, 10, cb); });
     ASSERT_TRUE(jog);
-    EXPECT_EQ(jog->detail.id, "grbl.error");
-    EXPECT_EQ(jog->detail.integer("code"), 15);
-    EXPECT_EQ(jog->detail.text("line"), "$J=G91 G21 X500 F600");
-    EXPECT_TRUE(jog->message.contains(QString::fromLatin1(grbl::errorMeaning(15)->text))) << jog->message.toStdString();
+    EXPECT_EQ(jog->message.id, "grbl.error") << jog->message;
+    EXPECT_EQ(jog->message.integer("code"), 15);
+    EXPECT_EQ(jog->message.text("line"), "$J=G91 G21 X500 F600");
+    EXPECT_EQ(jog->message.text("request"), "request.jog_step");
     EXPECT_FALSE(s.client.status().positionLost);  // a jog refusal is not an alarm
 }
 
@@ -112,7 +117,9 @@ TEST(GrblClient, WithHomingDisabledSetHomeHereAllowsAbsoluteMoves)
     // $H: GRBL's error:5, with its meaning.
     const auto home = s.call([&](auto cb) { s.client.home(0, cb); });
     ASSERT_TRUE(home);
-    EXPECT_EQ(home->detail.integer("code"), 5);
+    EXPECT_EQ(home->message.id, "grbl.error") << home->message;
+    EXPECT_EQ(home->message.integer("code"), 5);
+    EXPECT_EQ(home->message.text("request"), "request.home");
     // Relative moves work; absolute ones wait for the operator's word.
     ASSERT_FALSE(s.call([&](auto cb) { s.client.move({{0, 2}}, true, 10, cb); }));
     ASSERT_TRUE(s.waitStill());
@@ -165,7 +172,9 @@ TEST(GrblClient, EStopLosesThePositionOfAMovingMachineAndRecoveryNeedsItBack)
     ASSERT_TRUE(waitFor([&] { return s.firmware().machinePositionMm()[0] > 30; }, 10000));
     const std::size_t from = s.events.size();
     ASSERT_FALSE(s.call([&](auto cb) { s.client.estop(cb); }));
-    EXPECT_GE(s.findEvent(proto::EventKind::EStop, -1, from), 0);
+    const int estop = s.findEvent(proto::EventKind::EStop, -1, from);
+    ASSERT_GE(estop, 0);
+    EXPECT_EQ(s.events[static_cast<std::size_t>(estop)].detail.id, "grbl.event.estop");
     // ALARM:3: reset while moving; the position is lost.
     ASSERT_TRUE(waitFor([&] { return s.client.status().positionLost && s.client.alarmCode() == grbl::alarm::kAbortCycle; }, 5000));
     EXPECT_TRUE(s.client.status().estop);
@@ -174,12 +183,14 @@ TEST(GrblClient, EStopLosesThePositionOfAMovingMachineAndRecoveryNeedsItBack)
     ASSERT_GE(alarm, 0);
     EXPECT_EQ(s.events[static_cast<std::size_t>(alarm)].detail.id, "grbl.alarm");
     EXPECT_EQ(s.events[static_cast<std::size_t>(alarm)].detail.integer("code"), 3);
+    EXPECT_EQ(s.events[static_cast<std::size_t>(alarm)].text, QStringLiteral("ALARM:3"));  // what the controller said
     // Reset clears the latch; moves still wait for the position.
     ASSERT_FALSE(s.call([&](auto cb) { s.client.reset(cb); }));
     EXPECT_FALSE(s.client.status().estop);
     const auto refused = s.call([&](auto cb) { s.client.move({{0, 10}}, false, 10, cb); });
     ASSERT_TRUE(refused);
     EXPECT_EQ(refused->code, proto::ErrorCode::NotHomed);
+    EXPECT_EQ(refused->message.id, "grbl.move_in_alarm") << refused->message;
     // Recovery: unlock on the operator's word (or home).
     ASSERT_FALSE(s.call([&](auto cb) { s.client.unlock(cb); }));
     ASSERT_TRUE(waitFor([&] { return !s.client.status().positionLost && s.readout('X').homed; }, 5000));

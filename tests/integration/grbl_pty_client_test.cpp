@@ -71,7 +71,7 @@ TEST(GrblPtyClient, DetectsIdentifiesHomesMovesAndStreamsACircleOverARealPort)
         dev::ProtocolProbe probe(&port);
         probe.start();
         ASSERT_TRUE(waitFor([&] { return probe.done(); }, 8000));
-        ASSERT_EQ(probe.result().protocol, dev::ProbeResult::Protocol::Grbl) << probe.result().error.toStdString();
+        ASSERT_EQ(probe.result().protocol, dev::ProbeResult::Protocol::Grbl) << msg::debugString(probe.result().error);
 
         dev::GrblClient client(files::defaultProfile(proto::DeviceKind::Stage), true);
         client.setTransport(&port);  // the probe left it open

@@ -15,6 +15,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 
 using itest::GrblSession;
@@ -27,13 +29,21 @@ namespace {
 struct PatternRig {
     GrblSession s;
     jobs::PatternRunner runner{&s.client};
-    QStringList messages;
+    std::vector<msg::Message> messages;
+
+    std::string all() const
+    {
+        std::string out;
+        for (const msg::Message& m : messages)
+            out += msg::debugString(m) + "\n";
+        return out;
+    }
 
     explicit PatternRig(const GrblSessionOptions& o) : s(o)
     {
         QObject::connect(&s.client, &dev::Instrument::telemetryReceived, &runner,
                          [this](const proto::TelemetryBatch& b) { jobs::feedBatch(runner, s.client, b); });
-        QObject::connect(&runner, &jobs::PatternRunner::message, &runner, [this](const QString& m, bool) { messages << m; });
+        QObject::connect(&runner, &jobs::PatternRunner::message, &runner, [this](const msg::Message& m, bool) { messages.push_back(m); });
     }
     bool ready()
     {
@@ -60,11 +70,11 @@ TEST(GrblRunners, TheTenMillimetreCircleRunsWithoutOverflowingTheReceiveBuffer)
         motion::plans::Pattern p;
         p.shape = motion::plans::PatternShape::Circle;  // 10 mm circle around (50, 50) at 2 mm/s
         const auto path = planOf(p);
-        ASSERT_TRUE(r.runner.start(path, {})) << r.messages.join(QLatin1Char(' ')).toStdString();
+        ASSERT_TRUE(r.runner.start(path, {})) << r.all();
         r.s.link.host().setTimeScale(8);
-        ASSERT_TRUE(waitFor([&] { return !r.runner.busy(); }, 60000)) << jobs::PatternRunner::stateText(r.runner.state()).toStdString();
+        ASSERT_TRUE(waitFor([&] { return !r.runner.busy(); }, 60000)) << jobs::PatternRunner::stateTerm(r.runner.state());
         r.s.link.host().setTimeScale(1);
-        ASSERT_EQ(r.runner.state(), jobs::PatternRunner::State::Done) << r.messages.join(QLatin1Char('\n')).toStdString();
+        ASSERT_EQ(r.runner.state(), jobs::PatternRunner::State::Done) << r.all();
         const auto sum = r.runner.summary();
         EXPECT_TRUE(sum.complete);
         EXPECT_GE(sum.samples, 5u);
@@ -91,11 +101,11 @@ TEST(GrblRunners, ARasterLongerThanThePathWindowIsStreamedWithFlowControl)
     p.raster.spacingMm = 0.2;
     const auto path = planOf(p);
     ASSERT_GT(path.size(), 80u);  // more than the 64 segments the GRBL path window holds
-    ASSERT_TRUE(r.runner.start(path, {})) << r.messages.join(QLatin1Char(' ')).toStdString();
+    ASSERT_TRUE(r.runner.start(path, {})) << r.all();
     r.s.link.host().setTimeScale(8);
     ASSERT_TRUE(waitFor([&] { return !r.runner.busy(); }, 90000));
     r.s.link.host().setTimeScale(1);
-    ASSERT_EQ(r.runner.state(), jobs::PatternRunner::State::Done) << r.messages.join(QLatin1Char('\n')).toStdString();
+    ASSERT_EQ(r.runner.state(), jobs::PatternRunner::State::Done) << r.all();
     EXPECT_EQ(r.runner.segmentsDone(), path.size());
     EXPECT_EQ(r.s.firmware().lostRxBytes(), 0u);
 }
@@ -110,7 +120,10 @@ TEST(GrblRunners, APatternOutsideTheTravelIsRefusedBeforeAnythingMoves)
     p.line.endMm = {120, 50};
     const double x0 = r.s.readout('X').commanded;
     EXPECT_FALSE(r.runner.start(planOf(p), {}));
-    EXPECT_TRUE(r.messages.join(QLatin1Char(' ')).contains(QStringLiteral("soft limits"))) << r.messages.join(QLatin1Char(' ')).toStdString();
+    // Beyond GRBL's machine travel, which are the instrument's soft limits here.
+    const auto beyond = std::find_if(r.messages.begin(), r.messages.end(), [](const msg::Message& m) { return m.id == "pattern.segment_above_limit"; });
+    ASSERT_NE(beyond, r.messages.end()) << r.all();
+    EXPECT_EQ(beyond->text("axis"), "X") << r.all();
     itest::spin(200);
     EXPECT_DOUBLE_EQ(r.s.readout('X').commanded, x0);
 }
@@ -137,11 +150,11 @@ TEST(GrblRunners, AScanTriggersTheProfilesOutputOncePerTile)
     plan.exposureS = 0.02;
     QTemporaryDir dir;
     jobs::ScanRunner runner(&s.client);
-    QString error;
-    ASSERT_TRUE(runner.prepare(plan, dir.path(), false, &error)) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(runner.prepare(plan, dir.path(), false, &error)) << msg::debugString(error);
     ASSERT_EQ(runner.totalTiles(), 4);
     s.link.host().setTimeScale(4);
-    ASSERT_TRUE(runner.start(&error)) << error.toStdString();
+    ASSERT_TRUE(runner.start(&error)) << msg::debugString(error);
     ASSERT_TRUE(waitFor([&] { return runner.state() == jobs::ScanRunner::State::Finished || runner.state() == jobs::ScanRunner::State::Stopped; },
                         60000));
     s.link.host().setTimeScale(1);
@@ -178,20 +191,20 @@ TEST(GrblRunners, ARecipeMovesThePlungerOnTheProfilesAxis)
     const plates::RecipePlan plan = plates::planRecipe(platestest::samplingRecipe("A1:A4", 10), platestest::builtinContext(), start);
     ASSERT_TRUE(plan.ok());
     jobs::RecipeRunner runner(&s.client);
-    QStringList problems;
-    QObject::connect(&runner, &jobs::RecipeRunner::message, &runner, [&](const QString& m, bool problem) {
+    std::string problems;
+    QObject::connect(&runner, &jobs::RecipeRunner::message, &runner, [&](const msg::Message& m, bool problem) {
         if (problem)
-            problems << m;
+            problems += msg::debugString(m) + "\n";
     });
     QTemporaryDir dir;
-    QString error;
-    ASSERT_TRUE(runner.setPlan(plan, QStringLiteral("sampling"), &error)) << error.toStdString();
+    msg::Message error;
+    ASSERT_TRUE(runner.setPlan(plan, QStringLiteral("sampling"), &error)) << msg::debugString(error);
     const double p0 = s.readout('P').commanded;
     s.link.host().setTimeScale(platestest::kRunTimeScale);
-    ASSERT_TRUE(runner.start(dir.filePath(QStringLiteral("run.jsonl")), &error)) << error.toStdString();
+    ASSERT_TRUE(runner.start(dir.filePath(QStringLiteral("run.jsonl")), &error)) << msg::debugString(error);
     ASSERT_TRUE(platestest::waitSettled(runner, 120000));
     s.link.host().setTimeScale(1);
-    ASSERT_EQ(runner.state(), jobs::RunState::Finished) << problems.join(QLatin1Char('\n')).toStdString();
+    ASSERT_EQ(runner.state(), jobs::RunState::Finished) << problems;
     const auto counts = platestest::countLog(dir.filePath(QStringLiteral("run.jsonl")));
     ASSERT_EQ(counts.dones.size(), 4u);
     for (const auto& [op, n] : counts.dones)
@@ -238,7 +251,7 @@ TEST(GrblRunners, ABoardResetMidJobInterruptsThePatternAndSaysWhatWasLost)
     // The board resets by itself (a brown-out, a watchdog): nobody here sent the 0x18.
     const std::uint8_t reset = grbl::rt::kSoftReset;
     r.s.firmware().receive(&reset, 1);
-    ASSERT_TRUE(waitFor([&] { return !r.runner.busy(); }, 10000)) << jobs::PatternRunner::stateText(r.runner.state()).toStdString();
+    ASSERT_TRUE(waitFor([&] { return !r.runner.busy(); }, 10000)) << jobs::PatternRunner::stateTerm(r.runner.state());
     EXPECT_EQ(r.runner.state(), jobs::PatternRunner::State::Interrupted);
     EXPECT_FALSE(r.runner.summary().complete);
     // Said, and the position is no longer trusted: the controller reports ALARM:3.

@@ -6,6 +6,7 @@
 #include "device/link/simulated_link.h"
 #include "device/sim/grbl_firmware.h"
 #include "device/sim/machine_config.h"
+#include "motion/message_print.h"
 #include "wait.h"
 
 #include <gtest/gtest.h>
@@ -32,7 +33,10 @@ public:
           client(o.profile ? *o.profile : files::defaultProfile(o.kind), !o.profile.has_value())
     {
         QObject::connect(&client, &dev::Instrument::eventReceived, &client, [this](const dev::DeviceEvent& e) { events.push_back(e); });
-        QObject::connect(&client, &dev::Instrument::linkError, &client, [this](const QString& m) { linkErrors << m; });
+        QObject::connect(&client, &dev::Instrument::linkError, &client, [this](const msg::Message& m) {
+            linkMessages.push_back(m);
+            linkErrors << QString::fromStdString(msg::debugString(m));
+        });
         QObject::connect(&client, &dev::Instrument::requestFailed, &client, [this](const dev::RequestError& e) { failures.push_back(e); });
         QObject::connect(&client, &dev::Instrument::noted, &client, [this](const msg::Message& m) { notes.push_back(m); });
         QObject::connect(&client, &dev::Instrument::statusChanged, &client, [this] { ++statusCount; });
@@ -96,7 +100,7 @@ public:
         const std::size_t from = events.size();
         const auto err = call([this](auto cb) { client.home(0, cb); });
         if (err) {
-            ADD_FAILURE() << "home refused: " << err->message.toStdString();
+            ADD_FAILURE() << "home refused: " << msg::debugString(err->message);
             link.host().setTimeScale(1);
             return false;
         }
@@ -108,7 +112,8 @@ public:
     dev::SimulatedLink link;
     dev::GrblClient client;
     std::vector<dev::DeviceEvent> events;
-    QStringList linkErrors;
+    std::vector<msg::Message> linkMessages;  ///< every linkError, in order
+    QStringList linkErrors;                  ///< the same as debug strings, for failure output
     std::vector<dev::RequestError> failures;
     std::vector<msg::Message> notes;
     int statusCount = 0;

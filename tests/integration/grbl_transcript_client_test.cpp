@@ -6,6 +6,7 @@
 #include "device/backends/grbl/client/grbl_client.h"
 #include "device/client/path_client.h"
 #include "grbl_script.h"
+#include "motion/message_print.h"
 #include "wait.h"
 
 #include <gtest/gtest.h>
@@ -23,14 +24,14 @@ struct Rig {
     std::vector<dev::DeviceEvent> events;
     std::vector<dev::RequestError> failures;
     std::vector<msg::Message> notes;
-    QStringList linkErrors;
+    std::vector<msg::Message> linkErrors;
 
     explicit Rig(files::MachineProfile profile = files::defaultProfile(proto::DeviceKind::Stage)) : client(profile, true)
     {
         QObject::connect(&client, &dev::Instrument::eventReceived, &client, [this](const dev::DeviceEvent& e) { events.push_back(e); });
         QObject::connect(&client, &dev::Instrument::requestFailed, &client, [this](const dev::RequestError& e) { failures.push_back(e); });
         QObject::connect(&client, &dev::Instrument::noted, &client, [this](const msg::Message& m) { notes.push_back(m); });
-        QObject::connect(&client, &dev::Instrument::linkError, &client, [this](const QString& m) { linkErrors << m; });
+        QObject::connect(&client, &dev::Instrument::linkError, &client, [this](const msg::Message& m) { linkErrors.push_back(m); });
         client.setTransport(&port);
     }
     ~Rig() { client.setTransport(nullptr); }
@@ -62,7 +63,7 @@ struct Rig {
 TEST(GrblTranscriptClient, AReportWithEveryFieldAndUnknownOnesIsRead)
 {
     Rig r;
-    ASSERT_TRUE(r.connect()) << r.linkErrors.join(QLatin1Char(';')).toStdString();
+    ASSERT_TRUE(r.connect()) << (r.linkErrors.empty() ? msg::Message{} : r.linkErrors.front());
     // grblHAL-style extra fields (H:, FW:, WCS:) among the documented ones, in no particular order.
     ASSERT_TRUE(r.report("<Hold:1|WPos:1.000,2.000,0.000|Bf:15,128|Ln:99|FS:600,0|Pn:XZ|WCO:0.500,-1.000,0.000|Ov:100,100,100|"
                          "A:SF|H:0,0|FW:grblHAL|WCS:G54>"));
@@ -103,16 +104,22 @@ TEST(GrblTranscriptClient, AnErrorInTheMiddleOfAJobStopsItAndNamesTheLine)
     paths->begin(0, [&](const auto& e, const auto&) { begun = !e; });
     ASSERT_TRUE(waitFor([&] { return begun; }, 3000));
     std::optional<quint32> abortedAt;
-    QObject::connect(paths, &dev::PathClient::aborted, paths, [&](quint32 i, const QString&) { abortedAt = i; });
+    QString abortedBecause;
+    QObject::connect(paths, &dev::PathClient::aborted, paths, [&](quint32 i, const QString& said) {
+        abortedAt = i;
+        abortedBecause = said;
+    });
     paths->append(0, segs, true, true, [&](const auto& e, const auto&) { appended = !e; });
     ASSERT_TRUE(appended);
     ASSERT_TRUE(waitFor([&] { return abortedAt.has_value(); }, 5000));
     ASSERT_FALSE(r.failures.empty());
     const auto& f = r.failures.back();
-    EXPECT_EQ(f.detail.id, "grbl.error");
-    EXPECT_EQ(f.detail.integer("code"), 33);
-    EXPECT_EQ(f.detail.text("line"), "G90 G21 G1 X5 Y5 F600");  // the second segment's line
-    EXPECT_TRUE(f.message.contains(QStringLiteral("segment 1"))) << f.message.toStdString();
+    EXPECT_EQ(f.message.id, "grbl.error") << f.message;
+    EXPECT_EQ(f.message.integer("code"), 33);
+    EXPECT_EQ(f.message.text("line"), "G90 G21 G1 X5 Y5 F600");  // the second segment's line
+    EXPECT_EQ(f.message.text("request"), "request.path_segments");
+    EXPECT_EQ(f.message.integer("segment", -1), 1);
+    EXPECT_EQ(abortedBecause, QStringLiteral("error:33"));  // what the controller said
     // The job is stopped: a feed hold, then (at rest) a reset that flushes the rest.
     r.port.report = "<Hold:0|MPos:5.000,0.000,0.000|FS:0,0>";
     ASSERT_TRUE(waitFor([&] { return r.port.realtime.find('\x18') != std::string::npos; }, 5000));
@@ -134,7 +141,9 @@ TEST(GrblTranscriptClient, ABannerInTheMiddleOfAStreamIsAResetThatLosesTheLinesI
     r.port.push("\r\nGrbl 1.1h ['$' for help]");
     ASSERT_TRUE(waitFor([&] { return result.has_value(); }, 5000));
     ASSERT_TRUE(result->has_value());
-    EXPECT_TRUE((*result)->message.contains(QStringLiteral("reset"))) << (*result)->message.toStdString();
+    EXPECT_EQ((*result)->message.id, "request.abandoned") << (*result)->message;
+    EXPECT_EQ((*result)->message.text("request"), "request.move");
+    EXPECT_EQ(msg::nested((*result)->message, "cause").id, "grbl.reset_by_itself") << (*result)->message;
     const auto it = std::find_if(r.events.begin(), r.events.end(), [](const auto& e) { return e.detail.id == "grbl.controller_reset"; });
     ASSERT_NE(it, r.events.end());
     EXPECT_EQ(it->detail.integer("lost"), 1);
@@ -180,8 +189,8 @@ TEST(GrblTranscriptClient, InchReportsAreConvertedOrRefusedNeverMisread)
         Rig r(p);
         r.port.settings.replace(r.port.settings.find("$13=0"), 5, "$13=1");
         EXPECT_FALSE(r.connect());
-        ASSERT_FALSE(r.linkErrors.isEmpty());
-        EXPECT_TRUE(r.linkErrors.front().contains(QStringLiteral("$13=1"))) << r.linkErrors.front().toStdString();
+        ASSERT_FALSE(r.linkErrors.empty());
+        EXPECT_EQ(r.linkErrors.front().id, "grbl.identify.inches_refused") << r.linkErrors.front();
     }
 }
 
@@ -190,8 +199,14 @@ TEST(GrblTranscriptClient, SettingsWithoutTheLimitsRefuseTheConnectionSayingWhic
     Rig r;
     r.port.settings.replace(r.port.settings.find("$110=1200.000\r\n"), 15, "");
     EXPECT_FALSE(r.connect());
-    ASSERT_FALSE(r.linkErrors.isEmpty());
-    EXPECT_TRUE(r.linkErrors.front().contains(QStringLiteral("$110"))) << r.linkErrors.front().toStdString();
+    ASSERT_FALSE(r.linkErrors.empty());
+    const msg::Message& why = r.linkErrors.front();
+    EXPECT_EQ(why.id, "grbl.identify.no_limits") << why;
+    EXPECT_EQ(why.integer("count"), 1);
+    EXPECT_EQ(msg::nested(why, "problem").id, "grbl.settings.missing") << why;
+    EXPECT_EQ(msg::nested(why, "problem").integer("setting"), 110);
+    EXPECT_EQ(msg::nested(why, "problem").text("axis"), "X");
+    EXPECT_TRUE(r.hasNote("grbl.settings.missing"));  // every problem is in the event log
 }
 
 TEST(GrblTranscriptClient, ABoardThatNeverAnswersOrAnswersNoiseIsToldWithinSeconds)
@@ -210,9 +225,13 @@ TEST(GrblTranscriptClient, ABoardThatNeverAnswersOrAnswersNoiseIsToldWithinSecon
             r.port.pushRaw(std::string(kNoise, sizeof kNoise - 1));
         }
         ASSERT_TRUE(waitFor([&] { return r.client.state() == dev::LinkState::Disconnected; }, 15000));
-        ASSERT_EQ(r.linkErrors.size(), 1);
-        EXPECT_TRUE(r.linkErrors.front().contains(noise ? QStringLiteral("no GRBL line") : QStringLiteral("no answer")))
-            << r.linkErrors.front().toStdString();
+        ASSERT_EQ(r.linkErrors.size(), 1u);
+        const msg::Message& why = r.linkErrors.front();
+        EXPECT_EQ(why.id, noise ? "grbl.connect.no_grbl_line" : "grbl.connect.no_answer") << why;
+        EXPECT_EQ(why.text("link"), r.client.linkDescription().toStdString());
+        EXPECT_GT(why.number("seconds"), 0);
+        if (noise)
+            EXPECT_GT(why.integer("bytes"), 0);
         // The second sync went out (a board may still be booting after its port opened).
         EXPECT_GE(std::count(r.port.lines.begin(), r.port.lines.end(), std::string()), 2);
     }
@@ -224,8 +243,11 @@ TEST(GrblTranscriptClient, AControllerThatFallsSilentIsALostLink)
     ASSERT_TRUE(r.connect());
     r.port.silent = true;
     ASSERT_TRUE(waitFor([&] { return r.client.state() == dev::LinkState::Lost; }, 10000));
-    ASSERT_FALSE(r.linkErrors.isEmpty());
-    EXPECT_TRUE(r.linkErrors.back().contains(QStringLiteral("no status report"))) << r.linkErrors.back().toStdString();
+    ASSERT_FALSE(r.linkErrors.empty());
+    const msg::Message& why = r.linkErrors.back();
+    EXPECT_EQ(why.id, "link.lost") << why;
+    EXPECT_EQ(msg::nested(why, "cause").id, "grbl.silent") << why;
+    EXPECT_DOUBLE_EQ(msg::nested(why, "cause").number("seconds"), dev::GrblClient::kSilenceMs / 1000.0);
 }
 
 } // namespace

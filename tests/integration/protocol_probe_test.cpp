@@ -67,6 +67,9 @@ TEST(ProtocolProbe, TellsBenchPilotFromGrblAndSilence)
         EXPECT_EQ(r.protocol, dev::ProbeResult::Protocol::BenchPilot);
         EXPECT_TRUE(r.kindKnown);
         EXPECT_EQ(r.kind, proto::DeviceKind::Stage);
+        EXPECT_EQ(r.found.id, "grbl.probe.found_benchpilot");
+        EXPECT_EQ(r.found.text("instrument"), "instrument.stage");
+        EXPECT_GE(r.found.integer("version"), 1);
         EXPECT_TRUE(link.hostEnd()->isOpen());  // left open for the backend
     }
     for (const auto dialect : {sim::GrblFirmware::Dialect::Grbl, sim::GrblFirmware::Dialect::GrblHal}) {
@@ -74,13 +77,17 @@ TEST(ProtocolProbe, TellsBenchPilotFromGrblAndSilence)
         const dev::ProbeResult r = probeOn(link.hostEnd());
         EXPECT_EQ(r.protocol, dev::ProbeResult::Protocol::Grbl);
         EXPECT_FALSE(r.kindKnown);
+        // A status report answers first: GRBL it is, its version comes with the banner later.
+        EXPECT_TRUE(r.found.id == "grbl.probe.found_grbl" || r.found.id == "grbl.probe.found_grbl_unnamed") << msg::debugString(r.found);
     }
     {
         dev::LoopbackPair pair(0);
         pair.end(dev::LoopbackPair::B)->open();  // something there, saying nothing
         const dev::ProbeResult r = probeOn(pair.end(dev::LoopbackPair::A));
         EXPECT_EQ(r.protocol, dev::ProbeResult::Protocol::None);
-        EXPECT_TRUE(r.error.contains(QStringLiteral("no answer"))) << r.error.toStdString();
+        EXPECT_EQ(r.error.id, "grbl.probe.no_answer") << msg::debugString(r.error);
+        EXPECT_EQ(r.error.text("link"), pair.end(dev::LoopbackPair::A)->describe().toStdString());
+        EXPECT_DOUBLE_EQ(r.error.number("seconds"), dev::ProtocolProbe::kTotalMs / 1000.0);
         EXPECT_FALSE(pair.end(dev::LoopbackPair::A)->isOpen());
     }
 }

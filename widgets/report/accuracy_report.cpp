@@ -47,7 +47,7 @@ QString setUpText(const AxisReportInput& in)
 {
     QStringList lines;
     lines << tr("Instrument: %1").arg(in.instrument);
-    lines << tr("Reference: %1").arg(in.source);
+    lines << tr("Reference: %1").arg(words::text(in.source));
     const Evaluation& e = in.result.evaluation;
     QStringList targets;
     for (const auto& t : e.targets)

@@ -24,7 +24,7 @@ namespace report {
 struct AxisReportInput {
     QString title;                                   ///< "Positioning accuracy, stage X"
     QString instrument;                              ///< model, family
-    QString source;                                  ///< where the readings came from, for people
+    msg::Message source;                             ///< where the readings came from (accuracy.source.*)
     std::optional<motion::metrology::AxisTest> test; ///< the set-up, when known
     accuracyfiles::AccuracyResult result;
     std::vector<motion::metrology::Reading> readings;

@@ -17,6 +17,8 @@ public:
     static QString files(const msg::Message& m);
     static QString compensation(const msg::Message& m);
     static QString gauge(const msg::Message& m);
+    static QString source(const msg::Message& m);
+    static QString term(const std::string& id);
 };
 
 QString benchArg(const msg::Message& m, const char* name) { return words::arg(m, name); }
@@ -27,8 +29,10 @@ QString AccuracyBenchWords::accuracy(const msg::Message& m)
     const std::string& id = m.id;
     if (id.rfind("accuracy.run.", 0) == 0)
         return run(m);
-    if (id.rfind("accuracy.csv.", 0) == 0 || id.rfind("accuracy.import.", 0) == 0)
+    if (id.rfind("accuracy.csv.", 0) == 0 || id.rfind("accuracy.import.", 0) == 0 || id.rfind("accuracy.log.", 0) == 0)
         return files(m);
+    if (id.rfind("accuracy.source.", 0) == 0)
+        return source(m);
     if (id == "accuracy.value_not_finite")
         return tr("must be a number (not NaN or infinite)");
     if (id == "accuracy.value_below")
@@ -138,12 +142,14 @@ QString AccuracyBenchWords::run(const msg::Message& m)
     if (id == "accuracy.run.gauge_one_axis")
         return tr("The gauge on %1 reads one axis; this test reads two.").arg(benchArg(m, "port"));
     if (id == "accuracy.run.folder_failed")
-        return tr("Cannot use the folder %1: %2.").arg(benchArg(m, "folder"), benchArg(m, "detail"));
+        return tr("Cannot use the folder %1: cannot create it.").arg(benchArg(m, "folder"));
     if (id == "accuracy.run.other_log")
         return tr("%1 holds the run log of another test (%2): choose another folder, or start afresh to keep it aside.")
             .arg(benchArg(m, "file"), benchArg(m, "test"));
     if (id == "accuracy.run.log_unreadable")
         return tr("The run log %1 cannot be continued (line %2): %3.").arg(benchArg(m, "file"), benchArg(m, "line"), benchArg(m, "detail"));
+    if (id == "accuracy.run.log_not_kept_aside")
+        return tr("Cannot write the run log %1: cannot keep the old log aside as %2.").arg(benchArg(m, "file"), benchArg(m, "aside"));
     if (id == "accuracy.run.log_write_failed")
         return tr("Cannot write the run log %1: %2. The run stopped; no reading was lost.").arg(benchArg(m, "file"), benchArg(m, "detail"));
     if (id == "accuracy.run.move_refused")
@@ -156,6 +162,10 @@ QString AccuracyBenchWords::run(const msg::Message& m)
         return tr("Axis %1 stopped (%2): %3. The run stopped.").arg(benchArg(m, "axis"), benchArg(m, "event"), benchArg(m, "detail"));
     if (id == "accuracy.run.status_failed")
         return tr("No position reading from the instrument: %1").arg(benchArg(m, "detail"));
+    if (id == "accuracy.run.status_no_axis")
+        return tr("No position reading from the instrument: its status has no axis %1.").arg(benchArg(m, "axis"));
+    if (id == "accuracy.run.reading_incomplete")
+        return tr("The reading has %1 values where the test reads %2 axes: the run stopped.").arg(benchArg(m, "count"), benchArg(m, "expected"));
     if (id == "accuracy.run.results_failed")
         return tr("Cannot write %1: %2").arg(benchArg(m, "file"), benchArg(m, "detail"));
     if (id == "accuracy.run.not_prepared")
@@ -199,6 +209,14 @@ QString AccuracyBenchWords::files(const msg::Message& m)
         return tr("reading %1 is for target %2, where the run's stop %1 is at %3").arg(benchArg(m, "index"), benchArg(m, "target"), benchArg(m, "expected"));
     if (id == "accuracy.import.index_out_of_order")
         return tr("index \"%1\": the sequence's rows are numbered from 1 in order (expected %2)").arg(benchArg(m, "text"), benchArg(m, "expected"));
+    if (id == "accuracy.log.positions_not_numbers")
+        return tr("must hold numbers (mm)");
+    if (id == "accuracy.log.positions_count")
+        return tr("must hold one position per axis read, one or two (mm)");
+    if (id == "accuracy.log.stop_out_of_order")
+        return tr("is %1 where the run's next stop is %2: a log's stops come in order, each once").arg(benchArg(m, "stop"), benchArg(m, "expected"));
+    if (id == "accuracy.log.measured_count")
+        return tr("must hold as many positions as target_mm");
     if (id == "file.unreadable")
         return tr("cannot read %1: %2").arg(benchArg(m, "file"), benchArg(m, "detail"));
     if (id == "file.json_syntax")
@@ -246,6 +264,18 @@ QString AccuracyBenchWords::compensation(const msg::Message& m)
     if (id == "compensation.linuxcnc.not_a_triplet")
         return tr("%1 values on a line where LinuxCNC expects three (nominal, forward, reverse); LinuxCNC would stop reading here")
             .arg(benchArg(m, "count"));
+    if (id == "compensation.axis_not_compensable")
+        return tr("axis %1 cannot carry a compensation").arg(benchArg(m, "axis"));
+    if (id == "compensation.not_supported")
+        return tr("this instrument keeps no compensation of its own");
+    if (id == "compensation.model_invalid")
+        return tr("the compensation cannot be applied (%1): %2").arg(benchArg(m, "field"), benchArg(m, "detail"));
+    if (id == "compensation.upload_unreadable")
+        return tr("the device answered COMP_UPLOAD with something unreadable");
+    if (id == "compensation.not_installed")
+        return tr("the device took every part of the compensation but did not install it");
+    if (id == "compensation.read_unreadable")
+        return tr("the device answered COMP_GET with something unreadable");
     if (id == "compensation.device_refused")
         return tr("The instrument refused: %1").arg(benchArg(m, "detail"));
     if (id == "compensation.none_on_device")
@@ -270,8 +300,51 @@ QString AccuracyBenchWords::gauge(const msg::Message& m)
         return tr("The gauge's port %1 went away: %2").arg(benchArg(m, "port"), benchArg(m, "detail"));
     if (id == "gauge.busy")
         return tr("The gauge on %1 is still answering the last request.").arg(benchArg(m, "port"));
+    if (id == "gauge.no_transport")
+        return tr("The gauge on %1 has no port to talk through.").arg(benchArg(m, "port"));
     if (id == "gauge.not_open")
         return tr("The gauge's port %1 is not open.").arg(benchArg(m, "port"));
+    return {};
+}
+
+QString AccuracyBenchWords::source(const msg::Message& m)
+{
+    const std::string& id = m.id;
+    if (id == "accuracy.source.readback")
+        return tr("readback");
+    if (id == "accuracy.source.stage_grating")
+        return tr("the stage's grating (readback)");
+    if (id == "accuracy.source.analyzer_encoder")
+        return tr("the analyzer's encoder (readback)");
+    if (id == "accuracy.source.gauge")
+        return tr("gauge on %1").arg(benchArg(m, "port"));
+    if (id == "accuracy.source.manual")
+        return tr("manual entry");
+    if (id == "accuracy.source.interferometer")
+        return tr("laser interferometer (imported after the run)");
+    return {};
+}
+
+QString AccuracyBenchWords::term(const std::string& id)
+{
+    // What a reading source is, where a sentence names its kind ("The gauge reads 1 axis at a time").
+    if (id == "accuracy.source_kind.readback")
+        return tr("readback");
+    if (id == "accuracy.source_kind.gauge")
+        return tr("gauge");
+    if (id == "accuracy.source_kind.interferometer")
+        return tr("interferometer");
+    if (id == "accuracy.source_kind.manual")
+        return tr("manual entry");
+    // The compensation requests, where a request error names them ("no reply to upload compensation …").
+    if (id == "compensation.request.upload")
+        return tr("upload compensation");
+    if (id == "compensation.request.read")
+        return tr("read compensation");
+    if (id == "compensation.request.enable")
+        return tr("enable compensation");
+    if (id == "compensation.request.disable")
+        return tr("disable compensation");
     return {};
 }
 
@@ -280,5 +353,6 @@ QString AccuracyBenchWords::gauge(const msg::Message& m)
 QString accuracyBench(const msg::Message& m) { return AccuracyBenchWords::accuracy(m); }
 QString compensationBench(const msg::Message& m) { return AccuracyBenchWords::compensation(m); }
 QString gauge(const msg::Message& m) { return AccuracyBenchWords::gauge(m); }
+QString accuracyBenchTerm(const std::string& id) { return AccuracyBenchWords::term(id); }
 
 } // namespace words::areas

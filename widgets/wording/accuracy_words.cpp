@@ -83,15 +83,33 @@ const TermRow kTerms[] = {
 };
 // clang-format on
 
+/// Sentences that say more when the message carries more (an XY line names the axis
+/// of a limit, a result file the target and direction of a short cycle count): the
+/// bench words those forms, the table the plain ones.
+bool hasLongerForm(const msg::Message& m)
+{
+    const std::string& id = m.id;
+    if (id == "accuracy.target_below_limit" || id == "accuracy.target_above_limit" || id == "accuracy.overrun_below_limit"
+        || id == "accuracy.overrun_above_limit")
+        return m.arg("axis") != nullptr;
+    return id == "accuracy.too_few_cycles" && m.arg("target") != nullptr;
+}
+
 } // namespace
 
 QString accuracy(const msg::Message& m)
 {
+    if (hasLongerForm(m))
+        return accuracyBench(m);
     const QString t = fromRows("words::AccuracyWords", kRows, m);
     if (!t.isNull())
         return t;
     return m.id.rfind("compensation.", 0) == 0 ? compensationBench(m) : accuracyBench(m);
 }
-QString accuracyTerm(const std::string& id) { return fromTerms("words::AccuracyWords", kTerms, id); }
+QString accuracyTerm(const std::string& id)
+{
+    const QString t = fromTerms("words::AccuracyWords", kTerms, id);
+    return t.isNull() ? accuracyBenchTerm(id) : t;
+}
 
 } // namespace words::areas

@@ -26,6 +26,7 @@ QString gauge(const msg::Message& m);       ///< "gauge." (accuracy_bench_words.
 // pending (tests/build/translations.cmake): the area's function falls back to these.
 QString accuracyBench(const msg::Message& m);      ///< "accuracy." runs, imports, readings
 QString compensationBench(const msg::Message& m);  ///< "compensation." on the device
+QString accuracyBenchTerm(const std::string& id);  ///< "accuracy.source_kind.", "compensation.request."
 QString grblBackend(const msg::Message& m);        ///< "grbl." of the GRBL client
 QString grblBackendTerm(const std::string& id);    ///< "capability.because.grbl_*", "grbl.status."
 

@@ -15,6 +15,8 @@ namespace {
 const Row kRows[] = {
     {"grbl.error.worded", QT_TRANSLATE_NOOP3("words::GrblWords", "error %1: %2 (answering \"%3\")", "grbl.error.worded"), "code,meaning,line"},
     {"grbl.error.worded_no_line", QT_TRANSLATE_NOOP3("words::GrblWords", "error %1: %2", "grbl.error.worded_no_line"), "code,meaning"},
+    {"grbl.error.refused", QT_TRANSLATE_NOOP3("words::GrblWords", "%1 refused by the controller: error %2: %3 (answering \"%4\")", "grbl.error.refused"), "request,code,meaning,line"},
+    {"grbl.error.refused_no_line", QT_TRANSLATE_NOOP3("words::GrblWords", "%1 refused by the controller: error %2: %3", "grbl.error.refused_no_line"), "request,code,meaning"},
     {"grbl.alarm.worded", QT_TRANSLATE_NOOP3("words::GrblWords", "alarm %1: %2", "grbl.alarm.worded"), "code,meaning"},
     {"grbl.error.unknown_code", QT_TRANSLATE_NOOP3("words::GrblWords", "a code this BenchPilot does not know (see the controller's documentation)", "grbl.error.unknown_code")},
     {"grbl.alarm.unknown_code", QT_TRANSLATE_NOOP3("words::GrblWords", "a code this BenchPilot does not know (see the controller's documentation)", "grbl.alarm.unknown_code")},
@@ -62,7 +64,10 @@ QString codeSentence(const msg::Message& m, const Row* rows, std::size_t count)
     const QString meaning = c ? QCoreApplication::translate("grbl", c->text)
                               : fromRows("words::GrblWords", rows, count, msg::make(error ? "grbl.error.unknown_code" : "grbl.alarm.unknown_code"));
     worded.args.push_back(msg::verbatim("meaning", meaning.toStdString()));
-    worded.id = !error ? "grbl.alarm.worded" : (m.text("line").empty() ? "grbl.error.worded_no_line" : "grbl.error.worded");
+    // An error that answers one of our requests says which (grbl.error{code, line, request}).
+    const char* withRequest = m.text("line").empty() ? "grbl.error.refused_no_line" : "grbl.error.refused";
+    const char* plain = m.text("line").empty() ? "grbl.error.worded_no_line" : "grbl.error.worded";
+    worded.id = !error ? "grbl.alarm.worded" : (m.arg("request") ? withRequest : plain);
     return fromRows("words::GrblWords", rows, count, worded);
 }
 

@@ -11,7 +11,7 @@ using motion::metrology::CompensationModel;
 
 namespace {
 
-RequestError invalid(const QString& why)
+RequestError compensationInvalid(const msg::Message& why)
 {
     RequestError e;
     e.kind = RequestError::Kind::Invalid;
@@ -19,7 +19,7 @@ RequestError invalid(const QString& why)
     return e;
 }
 
-std::int32_t nm(double mm) { return static_cast<std::int32_t>(std::llround(mm * 1e6)); }
+std::int32_t compNm(double mm) { return static_cast<std::int32_t>(std::llround(mm * 1e6)); }
 std::int32_t nmFromUm(double um) { return static_cast<std::int32_t>(std::llround(um * 1e3)); }
 
 } // namespace
@@ -60,9 +60,9 @@ bool ProtocolCompensationClient::checkAxis(int axis, const Callback& done)
     if (m_client && compensableAxes().contains(axis))
         return true;
     if (done)
-        done(invalid(m_client && m_client->hasProtocolCapability(proto::CapCompensation)
-                         ? tr("axis %1 cannot carry a compensation").arg(axis)
-                         : tr("this instrument keeps no compensation of its own")));
+        done(compensationInvalid(m_client && m_client->hasProtocolCapability(proto::CapCompensation)
+                                     ? msg::make("compensation.axis_not_compensable", {msg::integer("axis", axis, msg::Unit::None)})
+                                     : msg::make("compensation.not_supported")));
     return false;
 }
 
@@ -75,8 +75,7 @@ void ProtocolCompensationClient::upload(int axis, const CompensationModel& model
     for (const auto& p : motion::metrology::validate(m))
         if (!p.warning) {
             if (done)
-                done(invalid(tr("the compensation cannot be applied (%1): %2")
-                                 .arg(QString::fromStdString(p.path), QString::fromStdString(msg::debugString(p.message)))));
+                done(compensationInvalid(msg::make("compensation.model_invalid", {msg::verbatim("field", p.path), msg::nested("detail", p.message)})));
             return;
         }
     auto u = std::make_shared<Upload>();
@@ -90,12 +89,12 @@ void ProtocolCompensationClient::upload(int axis, const CompensationModel& model
         h.kind = proto::CompKind::Polynomial;
         h.coefficients = m.polynomial.coefficientsUm;
         h.total = static_cast<std::uint16_t>(h.coefficients.size());
-        h.validFrom = nm(m.validFromMm);
-        h.validTo = nm(m.validToMm);
+        h.validFrom = compNm(m.validFromMm);
+        h.validTo = compNm(m.validToMm);
     } else {
         h.kind = m.perDirection ? proto::CompKind::TablePerDirection : proto::CompKind::Table;
         for (const auto& p : m.table)
-            u->points.push_back({nm(p.nominalMm), nmFromUm(p.correctionUpUm), nmFromUm(m.perDirection ? p.correctionDownUm : p.correctionUpUm)});
+            u->points.push_back({compNm(p.nominalMm), nmFromUm(p.correctionUpUm), nmFromUm(m.perDirection ? p.correctionDownUm : p.correctionUpUm)});
         h.total = static_cast<std::uint16_t>(u->points.size());
     }
     sendPart(u);
@@ -124,7 +123,7 @@ void ProtocolCompensationClient::sendPart(std::shared_ptr<Upload> u)
             const auto reply = proto::decodeCompUploadReply(payload);
             if (!reply) {
                 if (u->done)
-                    u->done(invalid(tr("the device answered COMP_UPLOAD with something unreadable")));
+                    u->done(compensationInvalid(msg::make("compensation.upload_unreadable")));
                 return;
             }
             u->next = reply->received;
@@ -137,12 +136,12 @@ void ProtocolCompensationClient::sendPart(std::shared_ptr<Upload> u)
             }
             if (u->header.kind == proto::CompKind::Polynomial || u->next >= u->points.size()) {
                 if (u->done)
-                    u->done(invalid(tr("the device took every part of the compensation but did not install it")));
+                    u->done(compensationInvalid(msg::make("compensation.not_installed")));
                 return;
             }
             self->sendPart(u);
         },
-        tr("upload compensation"));
+        "compensation.request.upload");
 }
 
 void ProtocolCompensationClient::read(int axis, ReadDone done)
@@ -172,7 +171,7 @@ void ProtocolCompensationClient::readPart(std::shared_ptr<AxisCompensation> into
                 return done(e, *into);
             const auto r = proto::decodeCompGetReply(payload);
             if (!r || r->axis != into->axis)
-                return done(invalid(tr("the device answered COMP_GET with something unreadable")), *into);
+                return done(compensationInvalid(msg::make("compensation.read_unreadable")), *into);
             into->enabled = r->flags & proto::CompEnabled;
             into->applied = r->flags & proto::CompApplied;
             into->saved = r->flags & proto::CompSaved;
@@ -204,7 +203,7 @@ void ProtocolCompensationClient::readPart(std::shared_ptr<AxisCompensation> into
                 return done(std::nullopt, *into);
             self->readPart(into, next, done);
         },
-        tr("read compensation"));
+        "compensation.request.read");
 }
 
 void ProtocolCompensationClient::setEnabled(int axis, bool enabled, bool keepForPowerUp, Callback done)
@@ -220,7 +219,7 @@ void ProtocolCompensationClient::setEnabled(int axis, bool enabled, bool keepFor
             if (done)
                 done(e);
         },
-        enabled ? tr("enable compensation") : tr("disable compensation"));
+        enabled ? "compensation.request.enable" : "compensation.request.disable");
 }
 
 } // namespace dev

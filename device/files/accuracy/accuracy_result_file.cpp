@@ -241,7 +241,7 @@ AccuracyResultRead loadAccuracyResultFile(const QString& path)
     return text ? accuracyResultFromJson(*text, name) : out;
 }
 
-bool saveAccuracyResultFile(const QString& path, const AccuracyResult& result, QString* error)
+bool saveAccuracyResultFile(const QString& path, const AccuracyResult& result, msg::Message* error)
 {
     return files::writeAtomically(path, accuracyResultToJson(result), error);
 }

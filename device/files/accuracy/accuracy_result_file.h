@@ -50,6 +50,6 @@ struct AccuracyResultRead {
 AccuracyResultRead accuracyResultFromJson(std::string_view text, std::string_view fileName);
 
 AccuracyResultRead loadAccuracyResultFile(const QString& path);
-bool saveAccuracyResultFile(const QString& path, const AccuracyResult& result, QString* error);
+bool saveAccuracyResultFile(const QString& path, const AccuracyResult& result, msg::Message* error);
 
 } // namespace accuracyfiles

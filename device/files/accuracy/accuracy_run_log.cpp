@@ -33,13 +33,13 @@ std::optional<std::vector<double>> readPositions(ObjectReader& o, std::string_vi
     std::vector<double> out;
     for (const Value& item : v->items()) {
         if (!item.isNumber()) {
-            o.problems().add(item, o.pathOf(key), "must hold numbers (mm)");
+            o.problems().add(item, o.pathOf(key), msg::make("accuracy.log.positions_not_numbers"));
             return std::nullopt;
         }
         out.push_back(item.asNumber());
     }
     if (out.empty() || out.size() > 2) {
-        o.problems().add(*v, o.pathOf(key), "must hold one position per axis read, one or two (mm)");
+        o.problems().add(*v, o.pathOf(key), msg::make("accuracy.log.positions_count"));
         return std::nullopt;
     }
     return out;
@@ -130,7 +130,7 @@ RunLogRead parseRunLog(std::string_view text)
                 const auto stops = o.integer("stops", true, 1, 1000000);
                 const auto source = o.string("source", true);
                 if (fp && (fp->size() != 16 || fp->find_first_not_of("0123456789abcdef") != std::string::npos))
-                    lp.add(*parsed.value->find("fingerprint"), "fingerprint", "must be 16 lower-case hex digits");
+                    lp.add(*parsed.value->find("fingerprint"), "fingerprint", msg::make("file.log.bad_fingerprint"));
                 else if (name && kind && fp && stops && source) {
                     log.header.test = *name;
                     log.header.kind = *kind;
@@ -160,10 +160,10 @@ RunLogRead parseRunLog(std::string_view text)
         if (stop && cycle && direction && target && measured && settled && time && seconds) {
             if (*stop != static_cast<long long>(log.entries.size()))
                 lp.add(*parsed.value->find("stop"), "stop",
-                       "is " + std::to_string(*stop) + " where the run's next stop is " + std::to_string(log.entries.size())
-                           + ": a log's stops come in order, each once");
+                       msg::make("accuracy.log.stop_out_of_order",
+                                 {msg::integer("stop", *stop), msg::integer("expected", static_cast<long long>(log.entries.size()))}));
             else if (!measuredNull && measured->size() != target->size())
-                lp.add(*parsed.value->find("measured_mm"), "measured_mm", "must hold as many positions as target_mm");
+                lp.add(*parsed.value->find("measured_mm"), "measured_mm", msg::make("accuracy.log.measured_count"));
             else {
                 e.stop = static_cast<int>(*stop);
                 e.cycle = static_cast<int>(*cycle);
@@ -182,7 +182,7 @@ RunLogRead parseRunLog(std::string_view text)
             return out;
     }
     if (!header && out.problems.empty())
-        out.problems.add(jsonio::Position{1, 1}, "", "the run log is empty: it has no header line");
+        out.problems.add(jsonio::Position{1, 1}, "", msg::make("file.log.empty"));
     if (out.problems.empty())
         out.log = std::move(log);
     return out;

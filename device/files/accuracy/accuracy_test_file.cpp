@@ -324,7 +324,7 @@ AccuracyTestRead loadAccuracyTestFile(const QString& path)
     return text ? accuracyTestFromJson(*text, name) : out;
 }
 
-bool saveAccuracyTestFile(const QString& path, const AccuracyTest& test, QString* error)
+bool saveAccuracyTestFile(const QString& path, const AccuracyTest& test, msg::Message* error)
 {
     return files::writeAtomically(path, accuracyTestToJson(test), error);
 }

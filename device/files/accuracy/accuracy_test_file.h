@@ -35,6 +35,6 @@ struct AccuracyTestRead {
 AccuracyTestRead accuracyTestFromJson(std::string_view text, std::string_view fileName);
 
 AccuracyTestRead loadAccuracyTestFile(const QString& path);
-bool saveAccuracyTestFile(const QString& path, const AccuracyTest& test, QString* error);
+bool saveAccuracyTestFile(const QString& path, const AccuracyTest& test, msg::Message* error);
 
 } // namespace accuracyfiles

@@ -266,7 +266,7 @@ SequenceRead loadTargetSequence(const QString& path)
     return text ? targetSequenceFromCsv(*text, name) : out;
 }
 
-bool saveTargetSequence(const QString& path, const std::vector<SequenceStop>& stops, QString* error)
+bool saveTargetSequence(const QString& path, const std::vector<SequenceStop>& stops, msg::Message* error)
 {
     return files::writeAtomically(path, targetSequenceCsv(stops), error);
 }

@@ -61,7 +61,7 @@ InterferometerImport importInterferometerCsv(std::string_view exportText, std::s
                                              const std::vector<SequenceStop>& sequence);
 
 SequenceRead loadTargetSequence(const QString& path);
-bool saveTargetSequence(const QString& path, const std::vector<SequenceStop>& stops, QString* error);
+bool saveTargetSequence(const QString& path, const std::vector<SequenceStop>& stops, msg::Message* error);
 InterferometerImport loadInterferometerExport(const QString& path, const std::vector<SequenceStop>& sequence);
 
 } // namespace accuracyfiles

@@ -10,11 +10,10 @@ std::optional<std::string> loadText(const QString& path, std::string& fileName, 
 {
     fileName = QFileInfo(path).fileName().toStdString();
     std::string text;
-    QString error;
+    msg::Message error;  // file.cannot_open, file.too_large, file.cannot_read {file, detail}
     if (files::readText(path, &text, &error))
         return text;
-    out.push_back({fileName, 0, 0, "",
-                   msg::make("file.unreadable", {msg::verbatim("file", path.toStdString()), msg::verbatim("detail", error.toStdString())}), false});
+    out.push_back({fileName, 0, 0, "", error, false});
     return std::nullopt;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// Reading a whole file for the accuracy readers: its text, or file.unreadable
-// naming it. The readers then name problems by the file's name, not its path.
+// Reading a whole file for the accuracy readers: its text, or the reason it cannot be
+// read (file.cannot_open, file.too_large, file.cannot_read). The readers then name
+// problems by the file's name, not its path.
 #include "device/files/accuracy/file_problem.h"
 
 #include <QString>

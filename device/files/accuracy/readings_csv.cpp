@@ -143,7 +143,7 @@ ReadingsRead loadReadingsCsv(const QString& path)
     return text ? readingsFromCsv(*text, name) : out;
 }
 
-bool saveReadingsCsv(const QString& path, const std::vector<Reading>& readings, QString* error)
+bool saveReadingsCsv(const QString& path, const std::vector<Reading>& readings, msg::Message* error)
 {
     return files::writeAtomically(path, readingsToCsv(readings), error);
 }

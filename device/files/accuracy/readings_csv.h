@@ -54,6 +54,6 @@ std::string readingsToCsv(const std::vector<motion::metrology::Reading>& reading
 
 /// Whole files: read with the file's name in every problem; written all or nothing.
 ReadingsRead loadReadingsCsv(const QString& path);
-bool saveReadingsCsv(const QString& path, const std::vector<motion::metrology::Reading>& readings, QString* error);
+bool saveReadingsCsv(const QString& path, const std::vector<motion::metrology::Reading>& readings, msg::Message* error);
 
 } // namespace accuracyfiles

@@ -139,14 +139,13 @@ bool AccuracyRunner::prepare(const accuracyfiles::AccuracyTest& test, ReadingSou
         return false;
     }
     if (source->maxAxes() < static_cast<int>(axes.size())) {
-        add(problems, msg::make("accuracy.run.source_axes", {msg::verbatim("source", readingKindName(source->kind())),
+        add(problems, msg::make("accuracy.run.source_axes", {msg::term("source", readingKindTerm(source->kind())),
                                                              msg::integer("count", static_cast<long long>(axes.size())),
                                                              msg::integer("max", source->maxAxes())}));
         return false;
     }
     if (!QDir().mkpath(folder)) {
-        add(problems, msg::make("accuracy.run.folder_failed", {msg::verbatim("folder", folder.toStdString()),
-                                                               msg::verbatim("detail", "cannot create it")}));
+        add(problems, msg::make("accuracy.run.folder_failed", {msg::verbatim("folder", folder.toStdString())}));
         return false;
     }
     m_test = test;
@@ -185,10 +184,10 @@ bool AccuracyRunner::openLog(bool restart, Problems* problems)
     const QString path = logPath();
     if (QFileInfo::exists(path)) {
         std::string text;
-        QString error;
+        msg::Message error;
         if (!files::readText(path, &text, &error)) {
             add(problems, msg::make("accuracy.run.log_unreadable", {msg::verbatim("file", path.toStdString()), msg::integer("line", 0),
-                                                                    msg::verbatim("detail", error.toStdString())}));
+                                                                    msg::nested("detail", error)}));
             return false;
         }
         const auto read = accuracyfiles::parseRunLog(text);
@@ -198,7 +197,7 @@ bool AccuracyRunner::openLog(bool restart, Problems* problems)
                 const auto& p = read.problems.list().front();
                 add(problems, msg::make("accuracy.run.log_unreadable", {msg::verbatim("file", path.toStdString()),
                                                                         msg::integer("line", p.position.line),
-                                                                        msg::verbatim("detail", p.message)}));
+                                                                        msg::nested("detail", p.message)}));
             } else {
                 add(problems, msg::make("accuracy.run.other_log", {msg::verbatim("file", path.toStdString()),
                                                                    msg::verbatim("test", read.log->header.test)}));
@@ -214,8 +213,8 @@ bool AccuracyRunner::openLog(bool restart, Problems* problems)
                 if (QFileInfo::exists(aside))
                     continue;
                 if (!QFile::rename(path, aside)) {
-                    add(problems, msg::make("accuracy.run.log_write_failed", {msg::verbatim("file", path.toStdString()),
-                                                                              msg::verbatim("detail", "cannot keep the old log aside")}));
+                    add(problems, msg::make("accuracy.run.log_not_kept_aside", {msg::verbatim("file", path.toStdString()),
+                                                                                msg::verbatim("aside", aside.toStdString())}));
                     return false;
                 }
                 break;
@@ -325,9 +324,9 @@ void AccuracyRunner::writeResults()
 {
     m_results.clear();
     const QString base = basePath();
-    QString error;
+    msg::Message error;
     auto failed = [&](const QString& file) {
-        emit problem(msg::make("accuracy.run.results_failed", {msg::verbatim("file", file.toStdString()), msg::verbatim("detail", error.toStdString())}));
+        emit problem(msg::make("accuracy.run.results_failed", {msg::verbatim("file", file.toStdString()), msg::nested("detail", error)}));
     };
     const QString created = QDateTime::currentDateTimeUtc().toString(Qt::ISODate);
     const std::string reference = m_source ? readingKindName(m_source->kind()) : "";

@@ -253,6 +253,7 @@ int main(int argc, char** argv)
     using namespace fuzzfiles;
     std::uint64_t iterations = 20000, seed = 0xF11E5;
     std::string only;
+    unsigned shard = 0, shards = 1;  // --shard K/N: every N-th target by name, so CTest runs N at once
     std::vector<std::string> files;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -262,8 +263,13 @@ int main(int argc, char** argv)
             seed = std::strtoull(argv[++i], nullptr, 0);
         } else if (a == "--target" && i + 1 < argc) {
             only = argv[++i];
+        } else if (a == "--shard" && i + 1 < argc) {
+            if (std::sscanf(argv[++i], "%u/%u", &shard, &shards) != 2 || shards == 0 || shard >= shards) {
+                std::fprintf(stderr, "fuzz_files: --shard needs K/N with K < N (got %s)\n", argv[i]);
+                return 2;
+            }
         } else if (a == "--help" || a == "-h") {
-            std::printf("usage: fuzz_files [--iterations N] [--seed S] [--target NAME] [FILE...]\ntargets:");
+            std::printf("usage: fuzz_files [--iterations N] [--seed S] [--target NAME | --shard K/N] [FILE...]\ntargets:");
             for (const auto& t : targets())
                 std::printf(" %s", t.name.c_str());
             std::printf("\n");
@@ -279,6 +285,13 @@ int main(int argc, char** argv)
     for (const auto& t : targets())
         if (only.empty() || t.name == only)
             chosen.push_back(&t);
+    std::sort(chosen.begin(), chosen.end(), [](const Target* a, const Target* b) { return a->name < b->name; });
+    if (shards > 1) {
+        std::vector<const Target*> mine;
+        for (std::size_t k = shard; k < chosen.size(); k += shards)
+            mine.push_back(chosen[k]);
+        chosen.swap(mine);
+    }
     if (chosen.empty()) {
         std::fprintf(stderr, "fuzz_files: no target named '%s'\n", only.c_str());
         return 2;

@@ -58,7 +58,7 @@ void check(std::string_view input)
     const std::string once = jsonio::write(*r.value);
     const jsonio::ParseResult again = jsonio::parse(once);
     if (!again)
-        fuzzfiles::fail("written text does not read back: " + again.error.message);
+        fuzzfiles::fail("written text does not read back: " + msg::debugString(again.error.message));
     if (jsonio::write(*again.value) != once)
         fuzzfiles::fail("write → read → write changed the text");
     if (jsonio::write(*again.value, false) != jsonio::write(*r.value, false))

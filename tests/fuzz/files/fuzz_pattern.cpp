@@ -30,7 +30,7 @@ void check(std::string_view input)
         const long lines = 1 + std::count(input.begin(), input.end(), '\n');
         for (const auto& p : r.problems.list())
             if (p.position.line < 1 || p.position.line > lines || p.message.empty())
-                fuzzfiles::fail("a problem outside the text or without a message: " + p.message);
+                fuzzfiles::fail("a problem outside the text or without a message: " + msg::debugString(p.message));
         return;
     }
     if (motion::plans::plan(*r.pattern).empty())

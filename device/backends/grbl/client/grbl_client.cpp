@@ -8,7 +8,6 @@
 #include "device/backends/grbl/client/grbl_path_client.h"
 #include "device/backends/grbl/grbl_codes.h"
 
-#include <QCoreApplication>
 
 #include <cmath>
 
@@ -270,7 +269,7 @@ void GrblClient::checkLink()
                 failConnect(msg::make("grbl.connect.no_answer", {link, seconds}));
             else if (!m_sawGrblLine)
                 failConnect(msg::make("grbl.connect.no_grbl_line",
-                                      {link, msg::integer("bytes", static_cast<long long>(m_bytesIn), msg::Unit::Byte), seconds}));
+                                      {link, msg::integer("bytes", static_cast<long long>(m_bytesIn)), seconds}));
             else
                 failConnect(msg::make("grbl.connect.never_acknowledged", {link, seconds}));
         }
@@ -503,7 +502,7 @@ void GrblClient::onBanner(const grbl::Banner& banner)
         const msg::Message detail = msg::make(
             "grbl.controller_reset", {msg::integer("lost", static_cast<long long>(lost.size())),
                                       msg::verbatim("first", lost.empty() ? std::string() : lost.front())});
-        emitEvent(proto::EventKind::Fault, -1, 0, detail, QString::fromStdString(m_bannerVersion.empty() ? std::string() : "Grbl " + m_bannerVersion));
+        emitEvent(proto::EventKind::Fault, -1, 0, detail);
         for (auto& [tag, p] : pending)
             if (p.done)
                 p.done(std::nullopt);

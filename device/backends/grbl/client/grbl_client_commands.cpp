@@ -19,13 +19,38 @@ constexpr double kTravelToleranceMm = 1e-4;
 /// before it reports the homing as accepted: GRBL answers $H only when homing ends.
 constexpr int kHomeAcceptMs = 500;
 
-RequestError refusal(RequestError::Kind kind, const QString& message, proto::ErrorCode code = proto::ErrorCode::BadPayload)
+RequestError refusal(RequestError::Kind kind, msg::Message message, proto::ErrorCode code = proto::ErrorCode::BadPayload)
 {
     RequestError e;
     e.kind = kind;
     e.code = code;
-    e.message = message;
+    e.message = std::move(message);
     return e;
+}
+
+/// request.not_sent{request}: the link is not up.
+RequestError notSent(const char* request)
+{
+    return refusal(RequestError::Kind::LinkDown, msg::make("request.not_sent", {msg::term("request", request)}));
+}
+
+/// request.abandoned{request, cause}: its lines were lost (a reset, a dropped link).
+msg::Message abandoned(const std::string& request, const msg::Message& cause)
+{
+    return msg::make("request.abandoned", {msg::term("request", request), msg::nested("cause", cause)});
+}
+
+/// grbl.estop_latched{request}.
+RequestError estopLatched(const char* request)
+{
+    return refusal(RequestError::Kind::Device, msg::make("grbl.estop_latched", {msg::term("request", request)}), proto::ErrorCode::EStopActive);
+}
+
+/// A line GRBL would not take (grbl.gcode.*), with the request it was for.
+RequestError notGcode(msg::Message problem, const char* request)
+{
+    problem.args.push_back(msg::term("request", request));
+    return refusal(RequestError::Kind::Invalid, std::move(problem));
 }
 
 } // namespace
@@ -49,19 +74,19 @@ std::optional<RequestError> GrblClient::checkTarget(int axis, double target) con
     if (target >= s.min - tol && target <= s.max + tol)
         return std::nullopt;
     const auto g = grblIndexOf(axis);
-    return refusal(RequestError::Kind::Device,
-                   tr("%1 %2 %3 is beyond the machine travel %4 … %5 %3 (the controller's $%6): refused before sending, "
-                      "since GRBL would stop with ALARM:2 and need a reset")
-                       .arg(m_identity.axes[axis].letter)
-                       .arg(target, 0, 'f', 3)
-                       .arg(m_identity.axes[axis].unitName())
-                       .arg(s.min, 0, 'f', 3)
-                       .arg(s.max, 0, 'f', 3)
-                       .arg(grbl::setting::kMaxTravelMmX + g),
-                   proto::ErrorCode::SoftLimit);
+    const msg::Unit unit = unitOf(axis);
+    RequestError e = refusal(RequestError::Kind::Device,
+                             msg::make("grbl.beyond_travel", {msg::verbatim("axis", QString(m_identity.axes[axis].letter).toStdString()),
+                                                              msg::real("target", target, unit), msg::real("min", s.min, unit),
+                                                              msg::real("max", s.max, unit),
+                                                              msg::integer("setting", grbl::setting::kMaxTravelMmX + g, msg::Unit::None)}),
+                             proto::ErrorCode::SoftLimit);
+    e.axis = axis;
+    e.value = target;
+    return e;
 }
 
-void GrblClient::sendMotionLines(const std::vector<std::string>& lines, quint8 axes, const QString& what, Callback done)
+void GrblClient::sendMotionLines(const std::vector<std::string>& lines, quint8 axes, const std::string& request, Callback done)
 {
     struct Progress {
         std::size_t remaining;
@@ -72,7 +97,7 @@ void GrblClient::sendMotionLines(const std::vector<std::string>& lines, quint8 a
     m_motionAxes |= axes;
     for (const std::string& line : lines) {
         ++m_motionLinesOpen;
-        const bool queued = queueLine(line, [self, progress, what, done](const std::optional<grbl::Streamer::Ack>& a) {
+        const bool queued = queueLine(line, [self, progress, request, done](const std::optional<grbl::Streamer::Ack>& a) {
             if (!self)
                 return;
             self->m_motionLinesOpen = std::max(0, self->m_motionLinesOpen - 1);
@@ -81,9 +106,9 @@ void GrblClient::sendMotionLines(const std::vector<std::string>& lines, quint8 a
                 return;
             if (!a || !a->ok) {
                 progress->finished = true;
-                const RequestError e = a ? errorOf(a->errorCode, a->line, what)
+                const RequestError e = a ? errorOf(a->errorCode, a->line, request)
                                          : refusal(self->isReady() ? RequestError::Kind::Device : RequestError::Kind::LinkDown,
-                                                   tr("%1 abandoned: %2").arg(what, self->m_lostReason));
+                                                   abandoned(request, self->m_lostReason));
                 emit self->requestFailed(e);
                 if (done)
                     done(e);
@@ -99,7 +124,7 @@ void GrblClient::sendMotionLines(const std::vector<std::string>& lines, quint8 a
             --m_motionLinesOpen;
             if (!progress->finished) {
                 progress->finished = true;
-                GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, tr("%1: the line \"%2\" cannot be sent").arg(what, QString::fromStdString(line))));
+                GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("grbl.line_not_sent", {msg::term("request", request), msg::verbatim("line", line)})));
             }
             return;
         }
@@ -111,9 +136,9 @@ void GrblClient::sendMotionLines(const std::vector<std::string>& lines, quint8 a
 void GrblClient::home(quint8 axisMask, Callback done)
 {
     if (!isReady())
-        GRBL_REFUSE(done, refusal(RequestError::Kind::LinkDown, tr("home: the instrument is not connected")));
+        GRBL_REFUSE(done, notSent("request.home"));
     if (m_estopLatched)
-        GRBL_REFUSE(done, refusal(RequestError::Kind::Device, tr("home: the E-stop is latched: reset it first"), proto::ErrorCode::EStopActive));
+        GRBL_REFUSE(done, estopLatched("request.home"));
     // GRBL homes its axes together ($H); a single-axis $HX exists only in some builds.
     const quint32 all = (1u << m_map.size()) - 1;
     std::string line = "$H";
@@ -122,7 +147,7 @@ void GrblClient::home(quint8 axisMask, Callback done)
             if ((axisMask >> i) & 1u)
                 line.push_back(grblLetterOf(i));
         if (line.size() != 3)
-            GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, tr("home: GRBL homes one axis or all of them, not %1").arg(QString::fromStdString(line.substr(2)))));
+            GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("grbl.home_one_or_all", {msg::verbatim("axes", line.substr(2))})));
     }
     struct Answer {
         bool replied = false;
@@ -143,7 +168,7 @@ void GrblClient::home(quint8 axisMask, Callback done)
             return;
         self->m_homing = false;
         if (!a || !a->ok) {
-            const RequestError e = a ? errorOf(a->errorCode, a->line, tr("home")) : refusal(RequestError::Kind::Device, tr("home abandoned: %1").arg(self->m_lostReason));
+            const RequestError e = a ? errorOf(a->errorCode, a->line, "request.home") : refusal(RequestError::Kind::Device, abandoned("request.home", self->m_lostReason));
             emit self->requestFailed(e);
             reply(e);
             return;
@@ -158,7 +183,7 @@ void GrblClient::home(quint8 axisMask, Callback done)
     });
     if (!queued) {
         m_homing = false;
-        GRBL_REFUSE(done, refusal(RequestError::Kind::LinkDown, tr("home: the instrument is not connected")));
+        GRBL_REFUSE(done, notSent("request.home"));
     }
     // No refusal in the first moments means GRBL is homing: say "accepted" as other backends do.
     QTimer::singleShot(kHomeAcceptMs, this, [reply] { reply(std::nullopt); });
@@ -167,7 +192,7 @@ void GrblClient::home(quint8 axisMask, Callback done)
 void GrblClient::unlock(Callback done)
 {
     if (!isReady())
-        GRBL_REFUSE(done, refusal(RequestError::Kind::LinkDown, tr("unlock: the instrument is not connected")));
+        GRBL_REFUSE(done, notSent("grbl.request.unlock"));
     const QPointer<GrblClient> self(this);
     auto sendUnlock = [self, done] {
         if (!self)
@@ -176,7 +201,7 @@ void GrblClient::unlock(Callback done)
             if (!self)
                 return;
             if (!a || !a->ok) {
-                const RequestError e = a ? errorOf(a->errorCode, a->line, tr("unlock")) : refusal(RequestError::Kind::Device, tr("unlock abandoned: %1").arg(self->m_lostReason));
+                const RequestError e = a ? errorOf(a->errorCode, a->line, "grbl.request.unlock") : refusal(RequestError::Kind::Device, abandoned("grbl.request.unlock", self->m_lostReason));
                 emit self->requestFailed(e);
                 if (done)
                     done(e);
@@ -190,7 +215,7 @@ void GrblClient::unlock(Callback done)
                 done(std::nullopt);
         });
         if (!queued && done)
-            done(refusal(RequestError::Kind::LinkDown, tr("unlock: the instrument is not connected")));
+            done(notSent("grbl.request.unlock"));
     };
     if (m_critical) {
         // A limit alarm hears nothing but a reset: reset first, then unlock.
@@ -211,13 +236,13 @@ void GrblClient::unlock(Callback done)
 void GrblClient::setZero(quint8 axisMask, Callback done)
 {
     if (!isReady())
-        GRBL_REFUSE(done, refusal(RequestError::Kind::LinkDown, tr("set zero: the instrument is not connected")));
+        GRBL_REFUSE(done, notSent("request.set_zero"));
     if (m_status.anyMoving() || !linesIdle())
-        GRBL_REFUSE(done, refusal(RequestError::Kind::Device, tr("set zero: wait until the instrument is still"), proto::ErrorCode::Busy));
+        GRBL_REFUSE(done, refusal(RequestError::Kind::Device, msg::make("grbl.set_zero_while_moving"), proto::ErrorCode::Busy));
     const quint32 all = (1u << m_map.size()) - 1;
     const quint32 mask = axisMask == 0 ? all : (axisMask & all);
     if (mask == 0)
-        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, tr("set zero: no such axis")));
+        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("grbl.set_zero_no_axis")));
     // G10 L20 P1: the G54 offset that makes the present position read 0 (written to EEPROM:
     // the line goes alone).
     std::string line = "G10 L20 P1";
@@ -231,7 +256,7 @@ void GrblClient::setZero(quint8 axisMask, Callback done)
             if (!self)
                 return;
             if (!a || !a->ok) {
-                const RequestError e = a ? errorOf(a->errorCode, a->line, tr("set zero")) : refusal(RequestError::Kind::Device, tr("set zero abandoned: %1").arg(self->m_lostReason));
+                const RequestError e = a ? errorOf(a->errorCode, a->line, "request.set_zero") : refusal(RequestError::Kind::Device, abandoned("request.set_zero", self->m_lostReason));
                 emit self->requestFailed(e);
                 if (done)
                     done(e);
@@ -246,14 +271,12 @@ void GrblClient::setZero(quint8 axisMask, Callback done)
         },
         true);
     if (!queued)
-        GRBL_REFUSE(done, refusal(RequestError::Kind::LinkDown, tr("set zero: the instrument is not connected")));
+        GRBL_REFUSE(done, notSent("request.set_zero"));
 }
 
 void GrblClient::setSoftLimits(int, double, double, Callback done)
 {
-    GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid,
-                              tr("GRBL enforces its machine travel ($130–$132) as its soft limits; other limits cannot be set from "
-                                 "here")));
+    GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("grbl.soft_limits_fixed")));
 }
 
 // ---- moves -----------------------------------------------------------------------------------
@@ -261,36 +284,33 @@ void GrblClient::setSoftLimits(int, double, double, Callback done)
 void GrblClient::move(const QVector<QPair<int, double>>& targets, bool relative, double speed, Callback done)
 {
     if (targets.isEmpty())
-        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, tr("move: no axis given")));
+        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("request.move_no_axis")));
     QMap<int, double> byAxis;
     for (const auto& [axis, value] : targets) {
         if (axis < 0 || axis >= m_identity.axes.size())
-            GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, tr("move: axis %1 does not exist on this instrument").arg(axis)));
+            GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("request.move_no_such_axis", {msg::integer("index", axis, msg::Unit::None)})));
+        const msg::Arg letter = msg::verbatim("axis", QString(m_identity.axes[axis].letter).toStdString());
         if (!std::isfinite(value))
-            GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, tr("move: axis %1 target is not a number").arg(m_identity.axes[axis].letter)));
+            GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("request.move_target_not_number", {letter})));
         if (byAxis.contains(axis))
-            GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, tr("move: axis %1 named twice").arg(m_identity.axes[axis].letter)));
+            GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("request.move_axis_twice", {letter})));
         byAxis[axis] = value;
     }
     if (!std::isfinite(speed) || speed < 0)
-        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, tr("move: speed must be a positive number")));
+        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("request.move_bad_speed")));
     if (!isReady())
-        GRBL_REFUSE(done, refusal(RequestError::Kind::LinkDown, tr("move not sent: the instrument is not connected")));
+        GRBL_REFUSE(done, notSent("request.move"));
     if (m_estopLatched)
-        GRBL_REFUSE(done, refusal(RequestError::Kind::Device, tr("move: the E-stop is latched: reset it first"), proto::ErrorCode::EStopActive));
+        GRBL_REFUSE(done, estopLatched("request.move"));
     if (m_status.positionLost)
-        GRBL_REFUSE(done, refusal(RequestError::Kind::Device,
-                                  tr("move: the controller is in alarm (its position is not trusted): home it, or unlock it on your word"),
-                                  proto::ErrorCode::NotHomed));
+        GRBL_REFUSE(done, refusal(RequestError::Kind::Device, msg::make("grbl.move_in_alarm"), proto::ErrorCode::NotHomed));
     std::vector<grbl::AxisValue> xy, z;
     quint8 axes = 0;
     for (auto it = byAxis.cbegin(); it != byAxis.cend(); ++it) {
         const int axis = it.key();
         if (!relative && !established(axis))
             GRBL_REFUSE(done, refusal(RequestError::Kind::Device,
-                                      tr("move: axis %1 has no established position: home it, or take the present position as "
-                                         "home (Set home here, `zero`) first")
-                                          .arg(m_identity.axes[axis].letter),
+                                      msg::make("grbl.move_not_established", {msg::verbatim("axis", QString(m_identity.axes[axis].letter).toStdString())}),
                                       proto::ErrorCode::NotHomed));
         const double target = relative ? m_status.axes[axis].commanded + it.value() : it.value();
         if (auto e = checkTarget(axis, target))
@@ -309,33 +329,27 @@ void GrblClient::move(const QVector<QPair<int, double>>& targets, bool relative,
         if (group->empty())
             continue;
         const grbl::GcodeLine l = grbl::moveLine(speed > 0 ? grbl::Motion::Feed : grbl::Motion::Rapid, relative, *group, feedMmMin);
-        if (!l.ok()) {
-            RequestError e = refusal(RequestError::Kind::Invalid, tr("move: cannot be written as G-code (%1)").arg(QString::fromStdString(msg::debugString(l.problem))));
-            e.detail = l.problem;
-            GRBL_REFUSE(done, e);
-        }
+        if (!l.ok())
+            GRBL_REFUSE(done, notGcode(l.problem, "request.move"));
         lines.push_back(l.text);
     }
-    sendMotionLines(lines, axes, tr("move"), std::move(done));
+    sendMotionLines(lines, axes, "request.move", std::move(done));
 }
 
 void GrblClient::jogStep(int axis, double delta, double speed, Callback done)
 {
     if (axis < 0 || axis >= m_identity.axes.size() || !std::isfinite(delta) || !std::isfinite(speed) || speed < 0)
-        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, tr("jog step: bad axis, step or speed")));
+        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("request.jog_step_invalid")));
     if (!isReady())
-        GRBL_REFUSE(done, refusal(RequestError::Kind::LinkDown, tr("jog step not sent: the instrument is not connected")));
+        GRBL_REFUSE(done, notSent("request.jog_step"));
     if (m_estopLatched)
-        GRBL_REFUSE(done, refusal(RequestError::Kind::Device, tr("jog step: the E-stop is latched: reset it first"), proto::ErrorCode::EStopActive));
+        GRBL_REFUSE(done, estopLatched("request.jog_step"));
     // A step jog's target is left to GRBL: beyond the travel it answers error:15, harmlessly.
     const double v = speed > 0 ? speed : m_identity.axes[axis].maxSpeed / 4;
     const grbl::GcodeLine l = grbl::jogLine({{grblLetterOf(axis), delta / scaleOf(axis)}}, v / scaleOf(axis) * 60);
-    if (!l.ok()) {
-        RequestError e = refusal(RequestError::Kind::Invalid, tr("jog step: cannot be written as G-code (%1)").arg(QString::fromStdString(msg::debugString(l.problem))));
-        e.detail = l.problem;
-        GRBL_REFUSE(done, e);
-    }
-    sendMotionLines({l.text}, static_cast<quint8>(1u << axis), tr("jog step"), std::move(done));
+    if (!l.ok())
+        GRBL_REFUSE(done, notGcode(l.problem, "request.jog_step"));
+    sendMotionLines({l.text}, static_cast<quint8>(1u << axis), "request.jog_step", std::move(done));
 }
 
 // ---- stopping ----------------------------------------------------------------------------------
@@ -343,7 +357,7 @@ void GrblClient::jogStep(int axis, double delta, double speed, Callback done)
 void GrblClient::stop(quint8, Callback done)
 {
     if (!isReady())
-        GRBL_REFUSE(done, refusal(RequestError::Kind::LinkDown, tr("stop not sent: the instrument is not connected")));
+        GRBL_REFUSE(done, notSent("request.stop"));
     // GRBL stops all its axes or none.
     const bool jogging = m_jog.has_value() || m_jogCancelling || !m_heldJogs.isEmpty() || !m_stickJogs.empty()
                          || m_tracker.state() == grbl::MachineState::Jog;
@@ -375,7 +389,7 @@ void GrblClient::holdThenFlush(Callback done)
 {
     if (!isReady()) {
         if (done)
-            done(refusal(RequestError::Kind::LinkDown, tr("the instrument is not connected")));
+            done(refusal(RequestError::Kind::LinkDown, msg::make("request.instrument_not_connected")));
         return;
     }
     m_stopDone.push_back(std::move(done));
@@ -398,7 +412,7 @@ void GrblClient::finishStop(const std::optional<RequestError>& e)
     if (!e)
         for (int i = 0; i < m_status.axes.size(); ++i)
             if ((axes >> i) & 1u)
-                emitEvent(proto::EventKind::Stopped, i, m_status.axes[i].commanded, tr("stopped"));
+                emitEvent(proto::EventKind::Stopped, i, m_status.axes[i].commanded);
     auto waiting = std::move(m_stopDone);
     m_stopDone.clear();
     for (auto& d : waiting)
@@ -409,7 +423,7 @@ void GrblClient::finishStop(const std::optional<RequestError>& e)
 void GrblClient::estop(Callback done)
 {
     if (!m_transport || !m_transport->isOpen() || m_phase != Phase::Ready)
-        GRBL_REFUSE(done, refusal(RequestError::Kind::LinkDown, tr("E-stop not sent: the instrument is not connected")));
+        GRBL_REFUSE(done, notSent("request.estop"));
     // Feed hold and soft reset at once: the steppers stop dead. GRBL keeps its position only if
     // nothing was moving; otherwise it reports ALARM:3 and the position must be re-established.
     m_heldJogs.clear();
@@ -421,23 +435,23 @@ void GrblClient::estop(Callback done)
     m_motionAxes = 0;
     sendRealtime(grbl::rt::kFeedHold);
     if (m_stopping)
-        finishStop(refusal(RequestError::Kind::Device, tr("stop overtaken by the E-stop"), proto::ErrorCode::EStopActive));
+        finishStop(refusal(RequestError::Kind::Device, msg::make("grbl.stop_overtaken_by_estop"), proto::ErrorCode::EStopActive));
     m_resetDone.push_back(std::move(done));
     softReset(true);
     m_status.estop = true;
-    emitEvent(proto::EventKind::EStop, -1, 0, tr("E-stop: feed hold and soft reset; if it was moving, the controller lost its position"));
+    emitEvent(proto::EventKind::EStop, -1, 0, msg::make("grbl.event.estop"));
     emit statusChanged(m_status);
 }
 
 void GrblClient::reset(Callback done)
 {
     if (!isReady())
-        GRBL_REFUSE(done, refusal(RequestError::Kind::LinkDown, tr("reset not sent: the instrument is not connected")));
+        GRBL_REFUSE(done, notSent("request.reset"));
     const bool wasLatched = m_estopLatched;
     m_estopLatched = false;
     m_status.estop = false;
     if (wasLatched)
-        emitEvent(proto::EventKind::Reset, -1, 0, tr("E-stop latch cleared"));
+        emitEvent(proto::EventKind::Reset, -1, 0, msg::make("grbl.event.estop_cleared"));
     emit statusChanged(m_status);
     if (m_critical) {
         // A limit alarm waits for a soft reset; the position lock (Alarm) stays until home or unlock.
@@ -454,7 +468,7 @@ void GrblClient::reset(Callback done)
 void GrblClient::dwell(double seconds, Callback done)
 {
     if (!std::isfinite(seconds) || seconds < 0)
-        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, tr("dwell: %1 s is not a time to wait").arg(seconds)));
+        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("request.dwell_invalid", {msg::real("seconds", seconds, msg::Unit::S)})));
     // G4's ok comes after the motion before it has finished and the time has passed.
     const grbl::GcodeLine l = grbl::dwellLine(std::max(seconds, 0.001));
     const QPointer<GrblClient> self(this);
@@ -463,21 +477,21 @@ void GrblClient::dwell(double seconds, Callback done)
             return;
         if (!a)
             return done(refusal(self->isReady() ? RequestError::Kind::Device : RequestError::Kind::LinkDown,
-                                tr("dwell abandoned: %1").arg(self->m_lostReason)));
-        done(a->ok ? std::nullopt : std::optional<RequestError>(errorOf(a->errorCode, a->line, tr("dwell"))));
+                                abandoned("grbl.request.dwell", self->m_lostReason)));
+        done(a->ok ? std::nullopt : std::optional<RequestError>(errorOf(a->errorCode, a->line, "grbl.request.dwell")));
     });
     if (!queued)
-        GRBL_REFUSE(done, refusal(RequestError::Kind::LinkDown, tr("dwell not sent: the instrument is not connected")));
+        GRBL_REFUSE(done, notSent("grbl.request.dwell"));
 }
 
 void GrblClient::pulseTrigger(double widthS, Callback done)
 {
     if (!m_profile.trigger)
-        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, tr("this instrument has no trigger output: the machine profile names none")));
+        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("grbl.no_trigger_output")));
     if (!std::isfinite(widthS) || widthS < 0)
-        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, tr("trigger: %1 s is not a pulse width").arg(widthS)));
+        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("grbl.trigger_bad_width", {msg::real("width", widthS, msg::Unit::S)})));
     if (!isReady())
-        GRBL_REFUSE(done, refusal(RequestError::Kind::LinkDown, tr("trigger not sent: the instrument is not connected")));
+        GRBL_REFUSE(done, notSent("grbl.request.trigger"));
     // Wait for the motion before to end (G4), switch on, hold for the width, switch off. grblHAL's
     // M64/M65 act when read, and GRBL reads the next line only once a G4 is over.
     const bool coolant = m_profile.trigger->output == files::MachineProfile::TriggerOutput::CoolantFlood;
@@ -494,7 +508,7 @@ void GrblClient::pulseTrigger(double widthS, Callback done)
                 return;
             if (!a || !a->ok) {
                 *failed = true;
-                const RequestError e = a ? errorOf(a->errorCode, a->line, tr("trigger")) : refusal(RequestError::Kind::Device, tr("trigger abandoned: %1").arg(self->m_lostReason));
+                const RequestError e = a ? errorOf(a->errorCode, a->line, "grbl.request.trigger") : refusal(RequestError::Kind::Device, abandoned("grbl.request.trigger", self->m_lostReason));
                 emit self->requestFailed(e);
                 if (done)
                     done(e);
@@ -504,7 +518,7 @@ void GrblClient::pulseTrigger(double widthS, Callback done)
                 done(std::nullopt);
         });
         if (!queued)
-            GRBL_REFUSE(done, refusal(RequestError::Kind::LinkDown, tr("trigger not sent: the instrument is not connected")));
+            GRBL_REFUSE(done, notSent("grbl.request.trigger"));
     }
 }
 

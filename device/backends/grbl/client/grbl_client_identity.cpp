@@ -9,21 +9,6 @@
 
 namespace dev {
 
-namespace {
-
-QString settingProblemText(const msg::Message& m)
-{
-    const QString axis = QString::fromStdString(m.text("axis"));
-    const auto id = m.integer("setting");
-    if (m.id == "grbl.settings.missing")
-        return GrblClient::tr("$%1 (axis %2) is missing").arg(id).arg(axis);
-    if (m.id == "grbl.settings.invalid")
-        return GrblClient::tr("$%1 (axis %2) is %3, which is not above 0").arg(id).arg(axis).arg(m.number("value"));
-    return QString::fromStdString(msg::debugString(m));
-}
-
-} // namespace
-
 std::string GrblClient::axisLettersOfController() const
 {
     if (!m_build.axisLetters.empty())
@@ -38,22 +23,23 @@ std::string GrblClient::axisLettersOfController() const
     return letters;
 }
 
-bool GrblClient::buildIdentity(QString* why)
+bool GrblClient::buildIdentity(msg::Message* why)
 {
     const std::string letters = axisLettersOfController();
     grbl::LimitsRead read = grbl::machineLimits(m_settings, letters);
     if (!read.limits) {
-        QStringList problems;
+        // The refusal names the first problem and how many there are; each one is noted.
         for (const auto& p : read.problems)
-            problems << settingProblemText(p);
-        *why = tr("the controller's settings ($$) do not give its limits: %1").arg(problems.join(QStringLiteral("; ")));
+            note(p);
+        *why = msg::make("grbl.identify.no_limits",
+                         {msg::nested("problem", read.problems.front()),  // machineLimits() has no limits only with problems
+                          msg::integer("count", static_cast<long long>(read.problems.size()))});
         return false;
     }
     m_limits = *read.limits;
     if (m_limits.reportInches) {
         if (m_profile.inchReports == files::MachineProfile::InchReports::Refuse) {
-            *why = tr("the controller reports positions in inches ($13=1) and the machine profile refuses inch reports: set "
-                      "$13=0 on the controller, or \"inch_reports\": \"convert\" in the profile");
+            *why = msg::make("grbl.identify.inches_refused");
             return false;
         }
         m_tracker.setReportInches(true);
@@ -75,10 +61,9 @@ bool GrblClient::buildIdentity(QString* why)
     for (const auto& a : m_profile.axes) {
         const int g = indexOf(a.grblAxis);
         if (g < 0) {
-            *why = tr("the machine profile drives axis %1 with GRBL axis %2, but this controller has axes %3")
-                       .arg(QChar::fromLatin1(a.axis))
-                       .arg(QChar::fromLatin1(a.grblAxis))
-                       .arg(QString::fromStdString(letters));
+            *why = msg::make("grbl.identify.axis_missing", {msg::verbatim("axis", std::string(1, a.axis)),
+                                                             msg::verbatim("grbl_axis", std::string(1, a.grblAxis)),
+                                                             msg::verbatim("axes", letters)});
             return false;
         }
         map.push_back({g, 1.0});
@@ -90,9 +75,8 @@ bool GrblClient::buildIdentity(QString* why)
             map.push_back({g, m_profile.pump->ulPerMm});
             instrumentLetters.push_back('P');
         } else if (!m_lenient) {
-            *why = tr("the machine profile drives the pump with GRBL axis %1, but this controller has axes %2")
-                       .arg(QChar::fromLatin1(m_profile.pump->grblAxis))
-                       .arg(QString::fromStdString(letters));
+            *why = msg::make("grbl.identify.pump_axis_missing", {msg::verbatim("grbl_axis", std::string(1, m_profile.pump->grblAxis)),
+                                                                  msg::verbatim("axes", letters)});
             return false;
         } else {
             m_profile.pump.reset();  // the default wiring: no fourth axis, no pump
@@ -169,6 +153,13 @@ void GrblClient::updateTravel()
 }
 
 double GrblClient::scaleOf(int axis) const { return axis >= 0 && axis < m_map.size() ? m_map[axis].scale : 1.0; }
+
+msg::Unit GrblClient::unitOf(int axis) const
+{
+    if (axis >= 0 && axis < m_identity.axes.size() && m_identity.axes[axis].unit == proto::AxisUnit::Microlitre)
+        return msg::Unit::Ul;
+    return msg::Unit::Mm;
+}
 
 char GrblClient::grblLetterOf(int axis) const
 {

@@ -62,11 +62,11 @@ void GrblClient::setJogVelocities(const std::map<int, double>& velocities, Callb
 {
     for (const auto& [axis, v] : velocities)
         if (axis < 0 || axis >= m_identity.axes.size() || !std::isfinite(v)) {
-            refuse(done, RequestError::Kind::Invalid, tr("jog: bad axis or velocity"));
+            refuse(done, RequestError::Kind::Invalid, msg::make("request.jog_invalid"));
             return;
         }
     if (!isReady()) {
-        refuse(done, RequestError::Kind::LinkDown, tr("jog not sent: the instrument is not connected"));
+        refuse(done, RequestError::Kind::LinkDown, msg::make("request.not_sent", {msg::term("request", "request.jog")}));
         return;
     }
     for (const auto& [axis, v] : velocities) {
@@ -138,8 +138,8 @@ void GrblClient::updateJog()
         m_stickJogs.clear();
         RequestError e;
         e.kind = RequestError::Kind::Invalid;
-        e.message = tr("jog refused: even a creeping jog could not stop within %1 s with this link and refresh").arg(in.stopBudgetS);
-        e.detail = plan.problem;
+        e.message = plan.problem;  // grbl.jog.budget_too_small{budget, latency, refresh}
+        e.message.args.push_back(msg::term("request", "request.jog"));
         emit requestFailed(e);
         return;
     }
@@ -194,7 +194,7 @@ void GrblClient::sendJogLines(const std::vector<std::string>& lines)
                 if (self->m_jog)
                     self->cancelJog();
                 if (say)
-                    emit self->requestFailed(errorOf(a->errorCode, a->line, tr("jog")));
+                    emit self->requestFailed(errorOf(a->errorCode, a->line, "request.jog"));
             }
             if (self->m_jogCancelling) {
                 // The last jog line that was in flight at the cancel: if GRBL read it after the

@@ -5,7 +5,6 @@
 
 #include "device/backends/grbl/grbl_codes.h"
 
-#include <QCoreApplication>
 
 #include <cmath>
 
@@ -42,7 +41,7 @@ void GrblClient::readStatus(StatusCallback done)
     if (m_phase != Phase::Ready) {
         RequestError e;
         e.kind = RequestError::Kind::LinkDown;
-        e.message = tr("status not read: the instrument is not connected");
+        e.message = msg::make("request.not_sent", {msg::term("request", "grbl.request.status")});
         if (done)
             done(e, m_status);
         return;
@@ -87,7 +86,7 @@ void GrblClient::applyParameters(const grbl::Line& l)
     }
 }
 
-void GrblClient::emitEvent(proto::EventKind kind, int axis, double position, const QString& text, msg::Message detail)
+void GrblClient::emitEvent(proto::EventKind kind, int axis, double position, msg::Message detail, const QString& text)
 {
     DeviceEvent e;
     e.kind = kind;
@@ -217,10 +216,6 @@ void GrblClient::onAlarm(int code)
     if (code == grbl::alarm::kHardLimit || code == grbl::alarm::kSoftLimit)
         m_critical = true;
     m_homing = false;
-    const auto* meaning = grbl::alarmMeaning(code);
-    const QString text = tr("ALARM:%1 — %2")
-                             .arg(code)
-                             .arg(meaning ? QCoreApplication::translate("grbl", meaning->text) : tr("an alarm this BenchPilot does not know"));
     proto::EventKind kind = proto::EventKind::Fault;
     if (code == grbl::alarm::kHardLimit || code == grbl::alarm::kSoftLimit)
         kind = proto::EventKind::LimitHit;
@@ -236,7 +231,8 @@ void GrblClient::onAlarm(int code)
     m_jog.reset();
     m_heldJogs.clear();
     m_stickJogs.clear();
-    emitEvent(kind, axis, axis >= 0 ? m_status.axes[axis].commanded : 0, text, grbl::alarmMessage(code));
+    // The event's text is what the controller said; its detail, grbl.alarm{code}, is worded with the meaning.
+    emitEvent(kind, axis, axis >= 0 ? m_status.axes[axis].commanded : 0, grbl::alarmMessage(code), QStringLiteral("ALARM:%1").arg(code));
     emit alarmRaised(code);
     sendQuery();
 }
@@ -248,7 +244,7 @@ void GrblClient::subscribe(const QVector<proto::ChannelRef>& channels, int rateH
     if (m_phase != Phase::Ready) {
         RequestError e;
         e.kind = RequestError::Kind::LinkDown;
-        e.message = tr("telemetry: the instrument is not connected");
+        e.message = msg::make("request.telemetry_refused", {msg::nested("cause", msg::make("request.instrument_not_connected"))});
         if (done)
             done(e, reply);
         return;

@@ -6,7 +6,6 @@
 
 #include "device/backends/grbl/grbl_codes.h"
 
-#include <QCoreApplication>
 
 namespace dev {
 
@@ -93,7 +92,7 @@ void GrblClient::softReset(bool expected)
     m_modalReady = false;
     if (expected)
         ++m_expectedBanners;
-    m_lostReason = tr("a reset flushed it");
+    m_lostReason = msg::make("grbl.reset_flushed");
     auto pending = std::move(m_pending);
     m_pending.clear();
     m_motionLinesOpen = 0;
@@ -104,9 +103,9 @@ void GrblClient::softReset(bool expected)
             p.done(std::nullopt);
 }
 
-// ---- refusals as sentences ----------------------------------------------------------------
+// ---- refusals ----------------------------------------------------------------
 
-RequestError GrblClient::errorOf(int code, const std::string& line, const QString& what)
+RequestError GrblClient::errorOf(int code, const std::string& line, const std::string& request)
 {
     RequestError e;
     e.kind = RequestError::Kind::Device;
@@ -117,14 +116,8 @@ RequestError GrblClient::errorOf(int code, const std::string& line, const QStrin
     case grbl::err::kHomingDisabled: e.code = proto::ErrorCode::UnknownCommand; break;
     default: e.code = proto::ErrorCode::BadPayload; break;
     }
-    const auto* meaning = grbl::errorMeaning(code);
-    const QString text = meaning ? QCoreApplication::translate("grbl", meaning->text)
-                                 : QCoreApplication::translate("dev::GrblClient", "a code this BenchPilot does not know");
-    e.message = QCoreApplication::translate("dev::GrblClient", "%1 refused by the controller: error:%2, %3 (line \"%4\")")
-                    .arg(what)
-                    .arg(code)
-                    .arg(text, QString::fromStdString(line));
-    e.detail = grbl::errorMessage(code, line);
+    e.message = grbl::errorMessage(code, line);
+    e.message.args.push_back(msg::term("request", request));
     return e;
 }
 

@@ -12,13 +12,13 @@ using motion::path::Vec2;
 
 namespace {
 
-std::optional<RequestError> pathError(proto::ErrorCode code, double value, const QString& message)
+std::optional<RequestError> pathError(proto::ErrorCode code, double value, msg::Message message)
 {
     RequestError e;
     e.kind = RequestError::Kind::Device;
     e.code = code;
     e.value = value;
-    e.message = message;
+    e.message = std::move(message);
     return e;
 }
 
@@ -31,7 +31,7 @@ GrblPathClient::GrblPathClient(GrblClient* client, QObject* parent) : PathClient
     connect(client, &GrblClient::alarmRaised, this, &GrblPathClient::onAlarm);
     connect(client, &Instrument::stateChanged, this, [this](LinkState s) {
         if (s != LinkState::Ready && active())
-            abortWith(proto::PathReason::NewSession, tr("the link to the controller was lost"));
+            abortWith(proto::PathReason::NewSession);
     });
 }
 
@@ -85,9 +85,9 @@ PathQueueState GrblPathClient::snapshot() const
 void GrblPathClient::begin(quint32 firstIndex, Reply done)
 {
     if (!available())
-        return done(pathError(proto::ErrorCode::PathState, 0, tr("the instrument is not connected")), snapshot());
+        return done(pathError(proto::ErrorCode::PathState, 0, msg::make("request.instrument_not_connected")), snapshot());
     if (active())
-        return done(pathError(proto::ErrorCode::PathState, m_next, tr("a path is already running")), snapshot());
+        return done(pathError(proto::ErrorCode::PathState, m_next, msg::make("grbl.path.already_running")), snapshot());
     m_state = proto::PathState::Filling;
     m_reason = proto::PathReason::None;
     m_segments.clear();
@@ -104,28 +104,33 @@ void GrblPathClient::begin(quint32 firstIndex, Reply done)
 void GrblPathClient::append(quint32 firstIndex, const std::vector<Segment>& segments, bool start, bool last, Reply done)
 {
     if (!active() || !m_client)
-        return done(pathError(proto::ErrorCode::PathState, m_next, tr("no path begun, or it has ended")), snapshot());
+        return done(pathError(proto::ErrorCode::PathState, m_next, msg::make("grbl.path.not_begun")), snapshot());
     if (firstIndex != m_next)
-        return done(pathError(proto::ErrorCode::PathSequence, m_next, tr("segment %1 expected, %2 sent").arg(m_next).arg(firstIndex)), snapshot());
+        return done(pathError(proto::ErrorCode::PathSequence, m_next,
+                              msg::make("grbl.path.out_of_sequence", {msg::integer("expected", m_next, msg::Unit::None),
+                                                                      msg::integer("sent", firstIndex, msg::Unit::None)})),
+                    snapshot());
     const int free = kCapacity - static_cast<int>(m_next - m_executing);
     if (static_cast<int>(segments.size()) > free)
-        return done(pathError(proto::ErrorCode::PathQueueFull, free, tr("the path window is full")), snapshot());
+        return done(pathError(proto::ErrorCode::PathQueueFull, free, msg::make("grbl.path.window_full", {msg::integer("free", free)})), snapshot());
     // Paths need the instrument's X and Y on GRBL's X and Y (its XY plane, G17): capabilities()
     // says so, and available() is false otherwise.
     std::vector<std::string> lines;
     for (std::size_t k = 0; k < segments.size(); ++k) {
         const Segment& s = segments[k];
         if (s.zMm)
-            return done(pathError(proto::ErrorCode::PathGeometry, firstIndex + k, tr("segment %1 asks Z to follow the path: GRBL cannot").arg(firstIndex + k)), snapshot());
+            return done(pathError(proto::ErrorCode::PathGeometry, firstIndex + k,
+                                  msg::make("grbl.path.z_in_path", {msg::integer("segment", static_cast<long long>(firstIndex + k), msg::Unit::None)})),
+                        snapshot());
         const double feed = s.feedMmS * 60;
         const grbl::GcodeLine l = s.isArc()
                                       ? grbl::arcLine(s.ccw() ? grbl::ArcDirection::CounterClockwise : grbl::ArcDirection::Clockwise, s.end.x,
                                                       s.end.y, s.center.x - s.start.x, s.center.y - s.start.y, feed)
                                       : grbl::moveLine(grbl::Motion::Feed, false, {{'X', s.end.x}, {'Y', s.end.y}}, feed);
         if (!l.ok()) {
-            auto e = pathError(proto::ErrorCode::PathGeometry, firstIndex + k, tr("segment %1 cannot be written as G-code").arg(firstIndex + k));
-            e->detail = l.problem;
-            return done(e, snapshot());
+            msg::Message problem = l.problem;  // grbl.gcode.*, with the segment it was for
+            problem.args.push_back(msg::integer("segment", static_cast<long long>(firstIndex + k), msg::Unit::None));
+            return done(pathError(proto::ErrorCode::PathGeometry, firstIndex + k, std::move(problem)), snapshot());
         }
         lines.push_back(l.text);
     }
@@ -141,14 +146,16 @@ void GrblPathClient::append(quint32 firstIndex, const std::vector<Segment>& segm
             if (!self->active())
                 return;
             if (!a) {
-                self->abortWith(proto::PathReason::NewSession, tr("segment %1 was lost with the controller's queue").arg(index));
+                self->abortWith(proto::PathReason::NewSession);
                 return;
             }
             if (!a->ok) {
                 // An error mid-job stops the job: what GRBL already holds is flushed, and the line is named.
-                const RequestError e = GrblClient::errorOf(a->errorCode, a->line, tr("pattern segment %1").arg(index));
+                RequestError e = GrblClient::errorOf(a->errorCode, a->line, "request.path_segments");
+                e.message.args.push_back(msg::integer("segment", index, msg::Unit::None));
+                e.value = index;
                 emit self->m_client->requestFailed(e);
-                self->abortWith(proto::PathReason::Stop, e.message);
+                self->abortWith(proto::PathReason::Stop, QStringLiteral("error:%1").arg(a->errorCode));
                 self->m_client->holdThenFlush({});
                 return;
             }
@@ -160,8 +167,8 @@ void GrblPathClient::append(quint32 firstIndex, const std::vector<Segment>& segm
         });
         if (!queued) {
             --m_linesOpen;
-            abortWith(proto::PathReason::NewSession, tr("the instrument is not connected"));
-            return done(pathError(proto::ErrorCode::PathState, index, tr("the instrument is not connected")), snapshot());
+            abortWith(proto::PathReason::NewSession);
+            return done(pathError(proto::ErrorCode::PathState, index, msg::make("request.instrument_not_connected")), snapshot());
         }
         m_segments[index] = segments[k];
     }
@@ -213,7 +220,7 @@ void GrblPathClient::clear(Callback done)
     const QPointer<GrblPathClient> self(this);
     m_client->holdThenFlush([self, done](const std::optional<RequestError>& e) {
         if (self && self->active())
-            self->abortWith(proto::PathReason::Cleared, tr("abort"));
+            self->abortWith(proto::PathReason::Cleared);
         if (done)
             done(e);
     });
@@ -258,7 +265,7 @@ void GrblPathClient::onReport(quint64 askedUs)
     if (m_state == proto::PathState::Holding && st == grbl::MachineState::Hold && m_client->status().axes.size() >= 2
         && !m_client->status().axes[0].moving && !m_client->status().axes[1].moving) {
         m_state = proto::PathState::Held;
-        emit held(m_executing, pathReasonText(proto::PathReason::HostHold));
+        emit held(m_executing, QString());
         return;
     }
     if (!settled || m_state == proto::PathState::Holding || m_state == proto::PathState::Held)
@@ -285,8 +292,7 @@ void GrblPathClient::onReset(bool expected)
     if (!active() || m_clearAsked)
         return;
     const bool estop = m_client && m_client->status().estop;
-    abortWith(estop ? proto::PathReason::EStop : expected ? proto::PathReason::Stop : proto::PathReason::NewSession,
-              estop ? tr("the E-stop") : expected ? tr("a stop") : tr("the controller reset by itself"));
+    abortWith(estop ? proto::PathReason::EStop : expected ? proto::PathReason::Stop : proto::PathReason::NewSession);
 }
 
 void GrblPathClient::onAlarm(int code)
@@ -294,17 +300,17 @@ void GrblPathClient::onAlarm(int code)
     if (!active())
         return;
     abortWith(code == grbl::alarm::kHardLimit || code == grbl::alarm::kSoftLimit ? proto::PathReason::LimitSwitch : proto::PathReason::Stop,
-              tr("ALARM:%1").arg(code));
+              QStringLiteral("ALARM:%1").arg(code));
 }
 
-void GrblPathClient::abortWith(proto::PathReason reason, const QString& why)
+void GrblPathClient::abortWith(proto::PathReason reason, const QString& controllerSaid)
 {
     if (!active())
         return;
     m_state = proto::PathState::Aborted;
     m_reason = reason;
     m_segments.clear();
-    emit aborted(m_executing, why);
+    emit aborted(m_executing, controllerSaid);
 }
 
 } // namespace dev

@@ -46,7 +46,9 @@ private:
     void onReport(quint64 askedUs);
     void onReset(bool expected);
     void onAlarm(int code);
-    void abortWith(proto::PathReason reason, const QString& why);
+    /// Why is the reason (snapshot().reason, a path.reason.* term); `controllerSaid` what the
+    /// controller sent, where it caused the abort ("ALARM:1", "error:15"), carried by aborted().
+    void abortWith(proto::PathReason reason, const QString& controllerSaid = {});
     void advanceTo(quint32 index);
 
     QPointer<GrblClient> m_client;

@@ -165,12 +165,12 @@ LinuxcncRead linuxcncFromText(std::string_view text, std::string_view fileName, 
     return out;
 }
 
-bool saveLinuxcncCompensation(const QString& path, const CompensationModel& m, LinuxcncCompType type, QString* error)
+bool saveLinuxcncCompensation(const QString& path, const CompensationModel& m, LinuxcncCompType type, msg::Message* error)
 {
     return files::writeAtomically(path, linuxcncCompensation(m, type), error);
 }
 
-bool saveCompensationCsv(const QString& path, const CompensationModel& m, QString* error)
+bool saveCompensationCsv(const QString& path, const CompensationModel& m, msg::Message* error)
 {
     return files::writeAtomically(path, compensationCsv(m), error);
 }

@@ -49,7 +49,7 @@ struct LinuxcncRead {
 LinuxcncRead linuxcncFromText(std::string_view text, std::string_view fileName, LinuxcncCompType type, const std::string& axis = "X");
 
 /// Written all or nothing.
-bool saveLinuxcncCompensation(const QString& path, const motion::metrology::CompensationModel& m, LinuxcncCompType type, QString* error);
-bool saveCompensationCsv(const QString& path, const motion::metrology::CompensationModel& m, QString* error);
+bool saveLinuxcncCompensation(const QString& path, const motion::metrology::CompensationModel& m, LinuxcncCompType type, msg::Message* error);
+bool saveCompensationCsv(const QString& path, const motion::metrology::CompensationModel& m, msg::Message* error);
 
 } // namespace accuracyfiles

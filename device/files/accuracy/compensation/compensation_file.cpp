@@ -162,7 +162,7 @@ CompensationRead loadCompensationFile(const QString& path)
     return text ? compensationFromJson(*text, name) : out;
 }
 
-bool saveCompensationFile(const QString& path, const CompensationFile& c, QString* error)
+bool saveCompensationFile(const QString& path, const CompensationFile& c, msg::Message* error)
 {
     return files::writeAtomically(path, compensationToJson(c), error);
 }

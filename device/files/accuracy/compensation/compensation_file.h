@@ -46,6 +46,6 @@ struct CompensationRead {
 CompensationRead compensationFromJson(std::string_view text, std::string_view fileName);
 
 CompensationRead loadCompensationFile(const QString& path);
-bool saveCompensationFile(const QString& path, const CompensationFile& c, QString* error);
+bool saveCompensationFile(const QString& path, const CompensationFile& c, msg::Message* error);
 
 } // namespace accuracyfiles
