@@ -17,8 +17,8 @@
 #include "widgets/profiles_screen.h"
 #include "widgets/tuning/tuning_screen.h"
 #include "widgets/scan/scan_screen.h"
-#include "widgets/wording/wording.h"
-
+#include "calibration_wiring.h"
+#include "widgets/calibration/calibration_screen.h"
 #include "widgets/wording/wording.h"
 
 #include "widgets/wording/translators.h"
@@ -173,6 +173,8 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     connect(m_scan, &ui::ScanScreen::problem, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); });
     connect(m_scan, &ui::ScanScreen::notice, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Info, m); });
     addScreen(QStringLiteral("scan"), tr("Scan"), m_scan);
+    m_calibration = makeCalibrationScreen(m_sessions, this, m_banner, m_options);
+    addScreen(QStringLiteral("calibration"), tr("Calibration"), m_calibration);
     connect(m_nav, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
     m_nav->setCurrentRow(0);
 

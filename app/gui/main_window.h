@@ -27,6 +27,7 @@ class PlotsScreen;
 class TuningScreen;
 class PlatesScreen;
 class ScanScreen;
+class CalibrationScreen;
 } // namespace ui
 
 namespace words {
@@ -73,6 +74,7 @@ public:
     MotionScreens* motionScreens() { return m_motion; }
     ui::PlatesScreen* platesScreen() { return m_plates; }
     ui::ScanScreen* scanScreen() { return m_scan; }
+    ui::CalibrationScreen* calibrationScreen() { return m_calibration; }
     tele::TelemetryHub* telemetry() { return m_hub; }
     ui::MessageBanner* banner() { return m_banner; }
     ui::EventLog* eventLog() { return m_log; }
@@ -112,6 +114,7 @@ private:
     ui::TuningScreen* m_tuning;
     ui::PlatesScreen* m_plates;
     ui::ScanScreen* m_scan;
+    ui::CalibrationScreen* m_calibration;
     ui::ConnectionBar* m_bars[2];
     ui::JogScreen* m_jog[2];
     QTabWidget* m_jogTabs;

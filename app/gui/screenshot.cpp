@@ -12,6 +12,7 @@
 #include "widgets/patterns/pattern_screen.h"
 #include "device/link/simulated_link.h"
 #include "widgets/plates/plates_screen.h"
+#include "screenshot_calibration.h"
 #include "screenshot_scan.h"
 
 #include <QElapsedTimer>
@@ -71,7 +72,13 @@ int takeScreenshot(const ScreenshotRequest& r)
         std::fprintf(stderr, "benchpilot: the scan did not get going on the simulated stage\n");
         return 3;
     }
-    if (r.homeFirst && !scan) {
+    // So does the Calibration screen: a test before and after compensation.
+    const bool calibration = r.screen == QLatin1String("calibration");
+    if (calibration && (r.homeFirst || r.exercise) && !showCalibrationAtWork(w, scratch.path())) {
+        std::fprintf(stderr, "benchpilot: the calibration run did not finish on the simulated stage\n");
+        return 3;
+    }
+    if (r.homeFirst && !scan && !calibration) {
         s->instrument()->home(0);
         spin(300);
         spinUntil([&] { return !s->instrument()->status().anyMoving(); }, 30000);
@@ -100,7 +107,7 @@ int takeScreenshot(const ScreenshotRequest& r)
         }
         j->driver()->stop();
         spin(500);
-    } else if (r.exercise && !scan) {
+    } else if (r.exercise && !scan && !calibration) {
         // A jog of X, then a diagonal and a move back in X: the plots and the XY path
         // show a jog and a move, commanded against measured.
         dev::Instrument* c = s->instrument();

@@ -4,6 +4,7 @@
 #include "accuracy_examples.h"
 #include "device/files/accuracy/accuracy_test_file.h"
 #include "device/files/accuracy/csv_table.h"
+#include "device/files/accuracy/interferometer_csv.h"
 #include "motion/metrology/linear/run_sequence.h"
 
 #include <QDir>
@@ -279,4 +280,24 @@ TEST(AccuracyFiles, WritersLeaveNothingHalfWritten)
     EXPECT_EQ(none.problems[0].message.id, "file.cannot_open");
     EXPECT_EQ(none.problems[0].message.text("file"), nowhere.toStdString());
     EXPECT_EQ(none.problems[0].file, "r.csv");
+}
+
+TEST(AccuracyFiles, ATargetSequenceWithABadTimeIsRefusedAtItsCell)
+{
+    // A time that is not a number used to be dropped without a word, so a sequence the
+    // operator edited by hand read back without its times.
+    const std::string head = "index,target_mm,direction,cycle,time_s\r\n";
+    const auto words = targetSequenceFromCsv(head + "1,10,up,1,1.5\r\n2,20,up,1,soon\r\n", "seq.csv");
+    EXPECT_FALSE(words.ok());
+    const auto p = find(words.problems, "accuracy.csv.not_a_number");
+    ASSERT_TRUE(p) << debugFormat(words.problems);
+    EXPECT_EQ(p->line, 3);
+    EXPECT_EQ(p->column, 11);
+    EXPECT_EQ(p->path, "time_s");
+    // Seconds since the run began: negative or beyond 1e9 s is a typo, refused likewise.
+    const auto huge = targetSequenceFromCsv(head + "1,10,up,1,-2\r\n", "seq.csv");
+    EXPECT_FALSE(huge.ok());
+    ASSERT_EQ(huge.problems.size(), 1u) << debugFormat(huge.problems);
+    EXPECT_EQ(huge.problems[0].path, "time_s");
+    EXPECT_EQ(targetSequenceFromCsv(head + "1,10,up,1,2.5\r\n", "seq.csv").stops.at(0).timeS, 2.5);
 }

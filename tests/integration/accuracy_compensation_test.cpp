@@ -28,13 +28,14 @@ accuracyfiles::AccuracyTest stageTest()
     return t;
 }
 
-motion::metrology::Evaluation runTest(AccuracyStage& s, jobs::ReadingSource& source, const QString& folder)
+motion::metrology::Evaluation runTest(AccuracyStage& s, jobs::ReadingSource& source, const QString& folder,
+                                      const accuracyfiles::AccuracyTest& test = stageTest(), int timeoutMs = 120000)
 {
     AccuracyRunner r(&s.session.client);
     motion::metrology::Problems problems;
-    EXPECT_TRUE(r.prepare(stageTest(), &source, folder, false, &problems)) << describe(problems);
+    EXPECT_TRUE(r.prepare(test, &source, folder, false, &problems)) << describe(problems);
     EXPECT_TRUE(r.start());
-    EXPECT_TRUE(waitRunner(r, AccuracyRunner::State::Finished, 120000)) << AccuracyRunner::stateName(r.state());
+    EXPECT_TRUE(waitRunner(r, AccuracyRunner::State::Finished, timeoutMs)) << AccuracyRunner::stateName(r.state());
     return r.evaluation();
 }
 
@@ -94,6 +95,44 @@ TEST(AccuracyCompensation, TheGaugeSeesWhatTheGratingCannotAndCompensationCutsAF
     RecordProperty("A_grating_um", std::to_string(aGrating));
     std::printf("[ figures  ] gauge A %.2f µm R %.2f µm; grating A %.2f µm; compensated A %.2f µm R %.2f µm\n", aBefore, rBefore,
                 aGrating, aAfter, rAfter);
+}
+
+TEST(AccuracyLong, AFullSizeIsoTestOfTheStageBeforeAndAfter)
+{
+    // ISO 230-2 at full size: 21 targets on the irregular grid over 0–100 mm, five cycles
+    // both ways (210 readings a run). Minutes of wall time even at 50×: not in the
+    // default run. BP_LONG_TESTS=1 runs it (docs/accuracy.md, "Measured on the simulated stage").
+    if (qEnvironmentVariableIsEmpty("BP_LONG_TESTS"))
+        GTEST_SKIP() << "a long test: BP_LONG_TESTS=1 runs it";
+    AccuracyStage s;
+    ASSERT_TRUE(s.ready(50));
+    dev::SimulatedGauge gauge(s.session.link.machine(), 0);
+    jobs::GaugeSource source(gauge.hostEnd(), QStringLiteral("simulated gauge"));
+    ASSERT_TRUE(openSource(source));
+    motion::metrology::AxisTest t;
+    t.name = "stage-x-full";
+    t.axis = "X";
+    t.grid = motion::metrology::TargetGrid{1, 99, 21, true};
+    t.cycles = 5;
+    t.feedMmS = 15;
+    t.dwellS = 0.2;
+    t.settle = {1.0, 0.1, 2.0};
+    const auto before = runTest(s, source, QDir(s.dir.path()).filePath(QStringLiteral("before")), t, 900000);
+    ASSERT_TRUE(before.ok());
+    const auto fit = motion::metrology::fitPolynomials(accuracyfiles::fitPointsOf(before));
+    ASSERT_TRUE(fit.chosen());
+    dev::CompensationClient* comp = s.session.client.compensation();
+    ASSERT_TRUE(call([&](auto cb) {
+        comp->upload(0, motion::metrology::polynomialModel("X", fit.chosen()->polynomial, 1, 99, motion::metrology::backlashUmFrom(before)), cb);
+    }));
+    ASSERT_TRUE(call([&](auto cb) { comp->setEnabled(0, true, false, cb); }));
+    const auto after = runTest(s, source, QDir(s.dir.path()).filePath(QStringLiteral("after")), t, 900000);
+    ASSERT_TRUE(after.ok());
+    std::printf("[ figures  ] full size: A %.2f → %.2f µm, R %.2f → %.2f µm, E %.2f → %.2f µm, B %.2f → %.2f µm (order %d)\n",
+                *before.figures.aMm * 1e3, *after.figures.aMm * 1e3, *before.figures.rMm * 1e3, *after.figures.rMm * 1e3,
+                *before.figures.eMm * 1e3, *after.figures.eMm * 1e3, *before.figures.bMm * 1e3, *after.figures.bMm * 1e3,
+                fit.chosen()->order);
+    EXPECT_GE(*before.figures.aMm / *after.figures.aMm, 5.0);
 }
 
 TEST(AccuracyCompensation, TheDeviceKeepsItAcrossAReconnect)

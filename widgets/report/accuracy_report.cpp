@@ -222,10 +222,18 @@ bool renderAxis(const QString& path, const AxisReportInput& in)
         }
         page.table(fit, {1, 1.6, 1.2, 1.4, 0.8}, 7.5);
         if (const auto* c = in.fit->chosen()) {
-            QStringList terms;
-            for (std::size_t k = 0; k < c->polynomial.coefficientsUm.size(); ++k)
-                terms << QStringLiteral("%1·x^%2").arg(QString::number(c->polynomial.coefficientsUm[k], 'g', 6)).arg(k);
-            page.paragraph(tr("e(x) = %1 µm, x in mm").arg(terms.join(QStringLiteral(" + "))), 8);
+            static const char* const kPowers[] = {"", "·x", "·x²", "·x³", "·x⁴", "·x⁵"};
+            QString curve;
+            for (std::size_t k = 0; k < c->polynomial.coefficientsUm.size() && k < 6; ++k) {
+                const double v = c->polynomial.coefficientsUm[k];
+                const QString digits = QLocale().toString(std::fabs(v), 'g', 6) + QString::fromUtf8(kPowers[k]);
+                curve += k == 0 ? (v < 0 ? QStringLiteral("−") : QString()) + digits : (v < 0 ? QStringLiteral(" − ") : QStringLiteral(" + ")) + digits;
+            }
+            page.paragraph(tr("e(x) = %1 µm, x in mm (order %2%3)")
+                               .arg(curve)
+                               .arg(c->order)
+                               .arg(in.fit->chosenByOperator ? tr(", chosen by the operator") : tr(", chosen by adjusted R²")),
+                           8);
             PlotSpec spec;
             spec.xLabel = tr("target (mm)");
             spec.yLabel = tr("residual (µm)");

@@ -175,7 +175,7 @@ void drawPlot(QPainter& p, const QRectF& rect, const PlotSpec& spec)
             p.setPen(Qt::NoPen);
             p.setBrush(s.color);
             for (const QPointF& q : s.points)
-                p.drawEllipse(QPointF(X(q.x()), Y(q.y())), 0.45, 0.45);
+                p.drawEllipse(QPointF(X(q.x()), Y(q.y())), 0.7, 0.7);
             p.setBrush(Qt::NoBrush);
         }
     }

@@ -126,9 +126,21 @@ SequenceRead targetSequenceFromCsv(std::string_view text, std::string_view fileN
             continue;
         }
         s.cycle = *c;
-        if (time >= 0)
-            if (const auto v = parseNumber(row.cells[static_cast<std::size_t>(time)].text); v && std::isfinite(*v))
-                s.timeS = *v;
+        if (time >= 0) {
+            const CsvCell& timeCell = row.cells[static_cast<std::size_t>(time)];
+            const auto v = parseNumber(timeCell.text);
+            if (!v) {
+                out.problems.push_back({file, row.line, timeCell.column, "time_s", msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", timeCell.text)}), false});
+                continue;
+            }
+            // Device seconds since the run began: a run of 30 years is a typo.
+            motion::metrology::Problems range;
+            if (!motion::metrology::checkRange(range, "time_s", *v, 0, 1e9, msg::Unit::S)) {
+                out.problems.push_back({file, row.line, timeCell.column, "time_s", range.front().message, false});
+                continue;
+            }
+            s.timeS = *v;
+        }
         if (settled >= 0)
             s.settled = asciiLower(row.cells[static_cast<std::size_t>(settled)].text) != "no";
         out.stops.push_back(s);

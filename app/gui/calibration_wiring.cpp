@@ -1,0 +1,52 @@
+#include "calibration_wiring.h"
+
+#include "instrument_session.h"
+#include "main_window.h"
+
+#include "device/link/serial_transport.h"
+#include "device/link/simulated_gauge.h"
+#include "device/link/simulated_link.h"
+#include "widgets/calibration/calibration_screen.h"
+#include "widgets/message_banner.h"
+
+#include <QFileDialog>
+#include <QMessageBox>
+#include <QStandardPaths>
+
+namespace app {
+
+ui::CalibrationScreen* makeCalibrationScreen(InstrumentSession* const sessions[2], QWidget* window, ui::MessageBanner* banner,
+                                             const MainWindowOptions& options)
+{
+    auto* screen = new ui::CalibrationScreen({sessions[0]->instrument(), sessions[1]->instrument()}, {sessions[0]->name(), sessions[1]->name()});
+    screen->setFileChooser([window](ui::CalibrationScreen::FileAction a, const QString& title, const QString& filter) {
+        const QString docs = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+        using A = ui::CalibrationScreen::FileAction;
+        if (a == A::OpenTest)
+            return QFileDialog::getOpenFileName(window, title, docs, filter);
+        if (a == A::SaveTest || a == A::SaveCompensation)
+            return QFileDialog::getSaveFileName(window, title, docs, filter);
+        return QFileDialog::getExistingDirectory(window, title, docs);
+    });
+    if (options.confirmDialogs)
+        screen->setConfirm([window](const QString& q) {
+            return QMessageBox::question(window, QObject::tr("Calibration"), q, QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
+                == QMessageBox::Yes;
+        });
+    screen->setGaugeFactory([sessions](int index, const QString& port, int axis, QObject* owner, QString* error) -> dev::Transport* {
+        if (port == QLatin1String("sim")) {
+            auto* link = qobject_cast<dev::SimulatedLink*>(sessions[index]->link());
+            if (!link) {
+                *error = QObject::tr("'sim' is the in-process simulator's gauge: connect the instrument to the simulator first.");
+                return nullptr;
+            }
+            return (new dev::SimulatedGauge(link->machine(), axis, {}, owner))->hostEnd();
+        }
+        return new dev::SerialTransport(port, 9600, owner);
+    });
+    QObject::connect(screen, &ui::CalibrationScreen::problem, banner, [banner](const QString& m) { banner->show(ui::MessageBanner::Level::Warning, m); });
+    QObject::connect(screen, &ui::CalibrationScreen::notice, banner, [banner](const QString& m) { banner->show(ui::MessageBanner::Level::Info, m); });
+    return screen;
+}
+
+} // namespace app

@@ -1,0 +1,200 @@
+// The Calibration screen driven as a person would, on the simulated stage with its
+// clock sped up: a small axis test read by the simulator's gauge at the work point,
+// the deviations arriving on the live plot, the ISO figures and the fit; the fit
+// uploaded and enabled, the test again, and before/after showing the improvement;
+// a manual test answered at its prompt; Run held back with the reason.
+#include "app/gui/instrument_session.h"
+#include "app/gui/main_window.h"
+#include "device/jobs/accuracy/accuracy_runner.h"
+#include "device/link/simulated_link.h"
+#include "gui_window.h"
+#include "widgets/calibration/calibration_screen.h"
+#include "widgets/calibration/deviation_plot.h"
+#include "widgets/calibration/fit_panel.h"
+#include "widgets/calibration/test_form.h"
+
+#include <QDir>
+
+#include <qcustomplot.h>
+#include <QFileInfo>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+using guitest::pump;
+using guitest::waitFor;
+
+namespace {
+
+class CalibrationScreenTest : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        w = guitest::openReadyWindow(QSize(1366, 768));
+        ASSERT_NE(w, nullptr);
+        ASSERT_TRUE(w->showScreen(QStringLiteral("calibration")));
+        screen = w->calibrationScreen();
+        ASSERT_NE(screen, nullptr);
+        screen->setInstrument(1);
+        screen->setOutputFolder(dir.path());
+    }
+    /// The stage homed, its clock sped up.
+    bool homedStage()
+    {
+        // An unpaced link: a clock sped up over a paced one outruns its wire (SimulatorHost::setTimeScale).
+        ui::ConnectionChoice c;
+        c.baud = 0;
+        w->stage()->connectTo(c);
+        dev::Instrument* stage = w->stage()->instrument();
+        if (!waitFor([&] { return stage->isReady(); }, 5000))
+            return false;
+        auto* link = qobject_cast<dev::SimulatedLink*>(w->stage()->link());
+        if (!link)
+            return false;
+        link->host().setTimeScale(20);
+        stage->home(0);
+        const bool ok = waitFor([&] { return stage->status().axes.size() >= 2 && stage->status().axes[0].homed && stage->status().axes[1].homed
+                                             && !stage->status().anyMoving(); },
+                                30000);
+        link->host().setTimeScale(25);
+        return ok;
+    }
+    static motion::metrology::AxisTest smallTest()
+    {
+        motion::metrology::AxisTest t;
+        t.name = "gui-x";
+        t.axis = "X";
+        t.targetsMm = {20, 50, 80};
+        t.cycles = 2;
+        t.feedMmS = 15;
+        t.overrunMm = 0.5;
+        t.dwellS = 0.05;
+        t.settle = {1, 0.05, 2};
+        return t;
+    }
+    template <class T>
+    T* child(const char* name) { return screen->findChild<T*>(QLatin1String(name)); }
+    /// Shown and not clipped away by a scroll area or the window's edge.
+    bool inView(QWidget* widget)
+    {
+        if (!widget || !widget->isVisible() || widget->visibleRegion().isEmpty())
+            return false;
+        const QRect r(widget->mapTo(w.get(), QPoint(0, 0)), widget->size());
+        return w->rect().contains(r);
+    }
+    /// BP_GUI_SHOTS=DIR keeps a picture of the window for a person to look at.
+    void keepPicture(const char* name)
+    {
+        const QString folder = qEnvironmentVariable("BP_GUI_SHOTS");
+        if (!folder.isEmpty())
+            w->grab().save(QDir(folder).filePath(QLatin1String(name)));
+    }
+    bool waitFinished()
+    {
+        return waitFor([&] { return screen->runner() && screen->runner()->state() == jobs::AccuracyRunner::State::Finished; }, 60000);
+    }
+
+    QTemporaryDir dir;
+    std::unique_ptr<app::MainWindow> w;
+    ui::CalibrationScreen* screen = nullptr;
+};
+
+TEST_F(CalibrationScreenTest, RunIsHeldBackWithTheReason)
+{
+    screen->form()->setTest(smallTest());
+    auto* run = child<QPushButton>("calibrationRun");
+    ASSERT_NE(run, nullptr);
+    EXPECT_TRUE(run->isEnabled()) << run->toolTip().toStdString();
+    auto t = smallTest();
+    t.targetsMm = {20, 80, 50};
+    screen->form()->setTest(t);
+    pump(20);
+    EXPECT_FALSE(run->isEnabled());
+    EXPECT_TRUE(run->toolTip().contains(QStringLiteral("targets must increase"))) << run->toolTip().toStdString();
+    EXPECT_TRUE(child<QLabel>("calibrationFormProblems")->isVisible());
+    // Nothing runs, so nothing can be paused, and the disabled buttons say so.
+    EXPECT_FALSE(child<QPushButton>("calibrationPause")->isEnabled());
+    EXPECT_FALSE(child<QPushButton>("calibrationPause")->toolTip().isEmpty());
+    // At 1366 × 768 the whole definition need not fit, but Run and E-STOP are in view.
+    EXPECT_LE(screen->minimumSizeHint().width(), 1366 - 200) << "beside the navigation list";
+    EXPECT_LE(screen->minimumSizeHint().height(), 768 - 300) << "below the connection bars, above the event log";
+    EXPECT_TRUE(inView(run));
+    EXPECT_TRUE(inView(w->findChild<QPushButton*>(QStringLiteral("estop"))));
+    keepPicture("calibration-held-back.png");
+}
+
+TEST_F(CalibrationScreenTest, AGaugeRunThenItsCompensationShowBeforeAndAfter)
+{
+    ASSERT_TRUE(homedStage());
+    screen->form()->setTest(smallTest());
+    screen->setSource(QStringLiteral("gauge"), QStringLiteral("sim"));
+    int liveUpdates = 0;
+    QObject::connect(screen->livePlot(), &QCustomPlot::afterReplot, [&] { ++liveUpdates; });
+    ASSERT_TRUE(screen->run());
+    ASSERT_TRUE(waitFinished());
+    EXPECT_GE(liveUpdates, 4) << "the live plot follows the readings";
+    ASSERT_TRUE(screen->latest());
+    EXPECT_GT(*screen->latest()->evaluation.figures.aMm, 0.04) << "the gauge sees seed 002's curve";
+    EXPECT_TRUE(screen->figuresText().contains(QStringLiteral("A\t"))) << screen->figuresText().toStdString();
+    EXPECT_TRUE(QFileInfo::exists(QDir(dir.path()).filePath(QStringLiteral("gui-x/gui-x.readings.csv"))));
+    // The compensation panel: the fit, uploaded and enabled through the instrument.
+    ui::FitPanel* fit = screen->fitPanel();
+    ASSERT_TRUE(fit->model());
+    auto* upload = fit->findChild<QPushButton*>(QStringLiteral("fitUpload"));
+    auto* enable = fit->findChild<QPushButton*>(QStringLiteral("fitEnable"));
+    ASSERT_TRUE(waitFor([&] { return upload->isEnabled(); }, 5000)) << upload->toolTip().toStdString();
+    upload->click();
+    ASSERT_TRUE(waitFor([&] { return enable->isEnabled(); }, 5000)) << fit->deviceText().toStdString();
+    enable->click();
+    ASSERT_TRUE(waitFor([&] { return fit->deviceText().contains(QStringLiteral("enabled")); }, 5000)) << fit->deviceText().toStdString();
+    // The same test again, in a folder of its own.
+    screen->setOutputFolder(QDir(dir.path()).filePath(QStringLiteral("after")));
+    ASSERT_TRUE(screen->run());
+    ASSERT_TRUE(waitFinished());
+    ASSERT_TRUE(screen->previous());
+    const double before = *screen->previous()->evaluation.figures.aMm, after = *screen->latest()->evaluation.figures.aMm;
+    EXPECT_GE(before / after, 5) << before << " → " << after;
+    auto* table = child<QTableWidget>("calibrationBeforeAfter");
+    ASSERT_GT(table->rowCount(), 3);
+    EXPECT_EQ(table->item(0, 0)->text(), QStringLiteral("A"));
+    EXPECT_TRUE(table->item(0, 3)->text().endsWith(QStringLiteral("×")));
+    EXPECT_TRUE(child<QLabel>("calibrationBeforeAfterNote")->text().contains(QStringLiteral("times better")));
+    screen->tabs()->setCurrentIndex(3);
+    keepPicture("calibration-before-after.png");
+}
+
+TEST_F(CalibrationScreenTest, AManualTestAsksAtEachStopAndTakesWhatIsTyped)
+{
+    ASSERT_TRUE(homedStage());
+    auto t = smallTest();
+    t.targetsMm = {30, 60};
+    screen->form()->setTest(t);
+    screen->setSource(QStringLiteral("manual"));
+    ASSERT_TRUE(screen->run());
+    auto* prompt = child<QLabel>("calibrationManualPrompt");
+    auto* value = child<QLineEdit>("calibrationManualValue");
+    for (int k = 0; k < 8; ++k) {
+        ASSERT_TRUE(waitFor([&] { return prompt->isVisible(); }, 20000)) << "stop " << k;
+        EXPECT_TRUE(prompt->text().contains(QStringLiteral("Reading %1 of 8").arg(k + 1))) << prompt->text().toStdString();
+        if (k == 0) {
+            // Someone at a dial indicator types without scrolling to find the field.
+            EXPECT_TRUE(inView(prompt));
+            EXPECT_TRUE(inView(value));
+            keepPicture("calibration-manual.png");
+        }
+        EXPECT_FALSE(screen->enterManual(QStringLiteral("twelve"))) << "not a reading: asked again";
+        const double target = screen->runner()->stops()[static_cast<std::size_t>(k)].targetMm[0];
+        value->setText(QString::number(target + 0.001 * (k % 3)));
+        QMetaObject::invokeMethod(value, "returnPressed");
+        ASSERT_TRUE(waitFor([&] { return !prompt->isVisible() || screen->runner()->readingsTaken() > k; }, 5000));
+    }
+    ASSERT_TRUE(waitFinished());
+    EXPECT_EQ(screen->latest()->reference, "manual");
+}
+
+} // namespace

@@ -1,0 +1,80 @@
+#pragma once
+// Defining an accuracy test on the Calibration screen: an ISO 230-2 axis test
+// (axis, targets as a grid with ISO's irregular spacing or a list, cycles, one or both
+// directions, overrun, feed, dwell, the settle rule, tolerances), seed 000's linked XY
+// line, or an ISO 230-4 circle. Edits emit changed(); test() gives the definition and
+// problems() what motion/metrology's validators say of it (without the instrument's
+// limits: the run checks those).
+#include "device/files/accuracy/accuracy_test_file.h"
+
+#include <QWidget>
+
+#include <utility>
+#include <vector>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QSpinBox;
+class QStackedWidget;
+
+namespace ui {
+
+class AccuracyTestForm : public QWidget {
+    Q_OBJECT
+public:
+    enum class Kind { Axis = 0, XyLine = 1, Circle = 2 };
+
+    explicit AccuracyTestForm(QWidget* parent = nullptr);
+
+    Kind kind() const;
+    accuracyfiles::AccuracyTest test() const;
+    void setTest(const accuracyfiles::AccuracyTest& test);
+    /// Axis letters the instrument has (the axis combo offers these).
+    void setAxes(const QStringList& letters);
+    motion::metrology::Problems problems() const;
+    /// Read-only while a run uses the definition.
+    void setEditable(bool editable);
+
+signals:
+    void changed();
+
+protected:
+    void changeEvent(QEvent* event) override;
+
+private:
+    void retranslateUi();
+    void fill(const accuracyfiles::AccuracyTest& test);
+    QWidget* buildAxisPage();
+    QWidget* buildXyPage();
+    QWidget* buildCirclePage();
+    QDoubleSpinBox* number(const char* name, double min, double max, double value, int decimals, double step);
+
+    QComboBox* m_kind;
+    QStackedWidget* m_pages;
+    // Axis test.
+    QComboBox* m_axis;
+    QComboBox* m_targetMode;    ///< grid or list
+    QDoubleSpinBox *m_start, *m_end;
+    QSpinBox* m_count;
+    QCheckBox* m_irregular;
+    QLineEdit* m_list;
+    QSpinBox* m_cycles;
+    QCheckBox* m_bidirectional;
+    QDoubleSpinBox *m_overrun, *m_feed, *m_dwell, *m_settleTol, *m_settleWindow, *m_settleTimeout;
+    QDoubleSpinBox *m_tolA, *m_tolR;
+    // XY line.
+    QDoubleSpinBox *m_fromX, *m_fromY, *m_toX, *m_toY, *m_xyFeed;
+    QSpinBox *m_xyCount, *m_xyCycles;
+    // Circle.
+    QDoubleSpinBox *m_cx, *m_cy, *m_radius, *m_circleFeed, *m_lead, *m_tolG;
+    QSpinBox* m_samples;
+    QComboBox* m_directions;
+    std::string m_name;
+    /// Form labels and their source texts (QT_TR_NOOP), re-worded by retranslateUi().
+    std::vector<std::pair<QLabel*, const char*>> m_worded;
+};
+
+} // namespace ui
