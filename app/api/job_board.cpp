@@ -1,5 +1,7 @@
 #include "job_board.h"
 
+#include "widgets/wording/wording.h"
+
 #include "device/jobs/pattern_runner.h"
 #include "device/jobs/recipe_runner.h"
 #include "device/jobs/scan_runner.h"
@@ -134,7 +136,7 @@ void watchRecipeRunner(JobBoard& board, jobs::RecipeRunner* runner, const QStrin
         const jobs::RunProgress p = runner->progress();
         b->setProgress(w->id, QJsonObject{{QStringLiteral("ops_done"), p.opsDone},
                                           {QStringLiteral("ops"), p.opsTotal},
-                                          {QStringLiteral("well"), p.currentWhere},
+                                          {QStringLiteral("well"), words::englishText(p.currentWhere)},
                                           {QStringLiteral("elapsed_s"), p.elapsedS},
                                           {QStringLiteral("eta_s"), p.etaS}});
     });

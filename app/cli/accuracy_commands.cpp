@@ -326,6 +326,10 @@ void addAccuracyCommands(std::vector<Command>& list)
                        option("axis", "the axis the readings are of", "letter", "X")},
                       &importInterferometer, {}};
     accuracy.subcommands = {run, analyzeCmd, circleCmd, importCmd};
+    // Not API methods yet: their parameters and checked examples (docs/api.md) are still to
+    // be written; a half-typed method would take any words. The CLI has them all.
+    for (Command& c : accuracy.subcommands)
+        c.api.offered = false;
     list.push_back(accuracy);
 }
 

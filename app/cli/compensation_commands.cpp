@@ -391,6 +391,8 @@ void addCompensationCommands(std::vector<Command>& list)
           option("out", "write here instead of standard output", "file"), axis},
          &exportCompensation, {}},
     };
+    for (Command& c : comp.subcommands)  // CLI only for now, as the accuracy commands
+        c.api.offered = false;
     list.push_back(comp);
 }
 

@@ -19,6 +19,7 @@ GatedInstrument::GatedInstrument(dev::Instrument* inner, std::function<QString()
     connect(inner, &Instrument::requestFailed, this, &Instrument::requestFailed);
     connect(inner, &Instrument::samplesLost, this, &Instrument::samplesLost);
     connect(inner, &Instrument::partsReplaced, this, &Instrument::partsReplaced);
+    connect(inner, &Instrument::noted, this, &Instrument::noted);
 }
 
 bool GatedInstrument::allowed(const Callback& done)
@@ -26,7 +27,7 @@ bool GatedInstrument::allowed(const Callback& done)
     const QString holder = m_blockedBy ? m_blockedBy() : QString();
     if (holder.isEmpty())
         return true;
-    refuse(done, dev::RequestError::Kind::Invalid, tr("%1 has control of the bench: take it back first").arg(holder));
+    refuse(done, dev::RequestError::Kind::Invalid, msg::make("request.bench_held", {msg::verbatim("holder", holder.toStdString())}));
     // Asked once per refusal burst, from the event loop (never from inside a runner's call).
     if (m_ask && !m_askPending) {
         m_askPending = true;
@@ -74,6 +75,12 @@ void GatedInstrument::setZero(quint8 axisMask, Callback done)
 {
     if (allowed(done))
         m_inner->setZero(axisMask, std::move(done));
+}
+
+void GatedInstrument::unlock(Callback done)
+{
+    if (allowed(done))
+        m_inner->unlock(std::move(done));
 }
 
 void GatedInstrument::setSoftLimits(int axis, double min, double max, Callback done)

@@ -47,6 +47,7 @@ public:
     void estop(Callback done = {}) override { m_inner->estop(std::move(done)); }
     void reset(Callback done = {}) override { m_inner->reset(std::move(done)); }
     void setZero(quint8 axisMask, Callback done = {}) override;
+    void unlock(Callback done = {}) override;
     void setSoftLimits(int axis, double min, double max, Callback done = {}) override;
     void readStatus(StatusCallback done) override { m_inner->readStatus(std::move(done)); }
     void dwell(double seconds, Callback done) override { m_inner->dwell(seconds, std::move(done)); }
@@ -60,6 +61,7 @@ public:
     double toAxisUnits(const proto::ChannelRef& channel, std::int32_t value) const override { return m_inner->toAxisUnits(channel, value); }
     dev::PathClient* paths() override { return m_inner->paths(); }
     dev::TuningClient* tuning() override { return m_inner->tuning(); }
+    dev::CompensationClient* compensation() override { return m_inner->compensation(); }
 
 protected:
     msg::Message missingReason(dev::Capability c) const override { return m_inner->whyNot(c); }

@@ -22,7 +22,7 @@
 namespace app {
 
 namespace {
-bool runUntil(const std::function<bool()>& done, int ms)
+bool calibrationShotUntil(const std::function<bool()>& done, int ms)
 {
     QElapsedTimer t;
     t.start();
@@ -43,13 +43,13 @@ bool showCalibrationAtWork(MainWindow& w, const QString& scratchFolder)
     ui::ConnectionChoice choice;
     choice.baud = 0;
     w.stage()->connectTo(choice);
-    if (!runUntil([&] { return stage->isReady(); }, 5000))
+    if (!calibrationShotUntil([&] { return stage->isReady(); }, 5000))
         return false;
     auto* link = qobject_cast<dev::SimulatedLink*>(w.stage()->link());
     if (!link)
         return false;
     stage->home(0);
-    if (!runUntil([&] { return !stage->status().axes.isEmpty() && stage->status().axes[0].homed && stage->status().axes[1].homed
+    if (!calibrationShotUntil([&] { return !stage->status().axes.isEmpty() && stage->status().axes[0].homed && stage->status().axes[1].homed
                              && !stage->status().anyMoving(); },
                   30000))
         return false;
@@ -70,17 +70,17 @@ bool showCalibrationAtWork(MainWindow& w, const QString& scratchFolder)
     screen->setSource(QStringLiteral("gauge"), QStringLiteral("sim"));
     screen->setOutputFolder(QDir(scratchFolder).filePath(QStringLiteral("accuracy")));
     auto finished = [&] { return screen->runner() && screen->runner()->state() == jobs::AccuracyRunner::State::Finished; };
-    if (!screen->run() || !runUntil(finished, 120000))
+    if (!screen->run() || !calibrationShotUntil(finished, 120000))
         return false;
     // The fit of those readings to the stage, enabled, and the same test again.
     screen->fitPanel()->findChild<QPushButton*>(QStringLiteral("fitUpload"))->click();
-    if (!runUntil([&] { return screen->fitPanel()->findChild<QPushButton*>(QStringLiteral("fitEnable"))->isEnabled(); }, 10000))
+    if (!calibrationShotUntil([&] { return screen->fitPanel()->findChild<QPushButton*>(QStringLiteral("fitEnable"))->isEnabled(); }, 10000))
         return false;
     screen->fitPanel()->findChild<QPushButton*>(QStringLiteral("fitEnable"))->click();
-    if (!runUntil([&] { return screen->fitPanel()->findChild<QPushButton*>(QStringLiteral("fitDisable"))->isEnabled(); }, 10000))
+    if (!calibrationShotUntil([&] { return screen->fitPanel()->findChild<QPushButton*>(QStringLiteral("fitDisable"))->isEnabled(); }, 10000))
         return false;
     screen->setOutputFolder(QDir(scratchFolder).filePath(QStringLiteral("accuracy-after")));
-    if (!screen->run() || !runUntil(finished, 120000))
+    if (!screen->run() || !calibrationShotUntil(finished, 120000))
         return false;
     link->host().setTimeScale(1);
     screen->tabs()->setCurrentIndex(3);

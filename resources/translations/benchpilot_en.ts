@@ -2,6 +2,16 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en_US">
 <context>
+    <name>app::ApiStatusButton</name>
+    <message numerus="yes">
+        <source>API: %n client(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>words::RecipeWords</name>
     <message numerus="yes">
         <source>running %1: %Ln wells, about %2; log %3</source>

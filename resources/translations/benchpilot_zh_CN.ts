@@ -31,6 +31,14 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <source>Tissue section, 2.5x overview</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Calibration</source>
+        <translation>校准</translation>
+    </message>
+    <message>
+        <source>&apos;sim&apos; is the in-process simulator&apos;s gauge: connect the instrument to the simulator first.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>StepTexts</name>
@@ -93,6 +101,667 @@ Skip counts the well as done; Do again repeats it in full.</source>
     <message>
         <source>Touch off in %1</source>
         <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>api</name>
+    <message>
+        <source>expected an array of numbers, got %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected an array of numbers, found %1 in it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>analyzer or stage; may be left out when only one is connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>longest wait for motion to finish, s (default: 120)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the lease from control.acquire (needed only when setting)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the lease from control.acquire</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown parameter (this method takes none)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown parameter (parameters: %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>required</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>given without %1, which comes before it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected true or false, got %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected a number, got %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected a whole number, got %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected one axis letter such as &quot;X&quot;, got %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected axis letters such as &quot;XY&quot; or [&quot;X&quot;, &quot;Y&quot;]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected axis letters such as &quot;XY&quot; or [&quot;X&quot;, &quot;Y&quot;], got %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected an object of axis letters, such as %1, got %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not an axis letter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected [min, max], got %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected a string, a number or an array of either</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected a string, got %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not one of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a request is a JSON object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>parse error at byte %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>batches are not supported: send one request per line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>id: must be a number or a string</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>jsonrpc: must be &quot;2.0&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>method: must be a non-empty string</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>params: give them by name (an object), not by position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>params: must be an object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this document</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>say who is calling (shown in the GUI) and where relative paths start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a name for the GUI and the event log</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the client&apos;s working directory: relative paths in calls start here</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>take the control lease (one holder at a time)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Returns {&quot;lease&quot;: TOKEN}. Send control.heartbeat with it at least every %1 ms (100 ms is a good pace); the operator can take control back at any time.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give the control lease back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>keep the control lease (send as a notification, no id, every 100 ms)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>who holds control, since when</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>live data: positions, state, jobs, log, telemetry</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>topic → options: {&quot;positions&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;max_hz&quot;: 50}, &quot;state&quot;: {}, &quot;jobs&quot;: {}, &quot;log&quot;: {}, &quot;telemetry&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;channels&quot;: [&quot;X.measured&quot;], &quot;rate_hz&quot;: 1000}}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>end a subscription</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the number subscribe answered</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>interrupt a running call of this client, as Ctrl+C interrupts the CLI</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the id of the call</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>run benchpilot-cli&apos;s words as benchpilot-cli --attach does: output as cli.output, then the exit code</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the words after benchpilot-cli</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>where relative paths start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>JSON-RPC 2.0, one object per line; see docs/api.md</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>api::ApiClient</name>
+    <message>
+        <source>pid %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (pid %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>client %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>connection closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>it stopped reading (more than %1 MiB of answers waiting)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>it flooded the server (more than %1 requests waiting)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>api::ApiServer</name>
+    <message>
+        <source>cannot make the folder %1 for the API socket</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the folder %1 for the API socket belongs to another user</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>another BenchPilot is already listening at %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot listen at %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>API listening at %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>API WebSocket listening at %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>too many clients (at most %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>line longer than %1 bytes: skipped to its end</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>connection closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>disconnected: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown method &apos;%1&apos; (rpc.discover lists them)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 calls are already running for this client; wait for one to end</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the GUI&apos;s %1 is not connected (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the GUI has no instrument &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no instrument is connected in the GUI</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the analyzer and the stage are both connected: say which with --sim analyzer|stage</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not in control: the operator runs %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not in control: pass the lease from control.acquire as &quot;lease&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not in control: that lease is not the one this client holds</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not in control: %1 has had control since %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not in control: call control.acquire first (the operator can take control back at any time)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 that %2 started goes on, and is now yours (%3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: unknown parameter (this method takes none)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: unknown parameter (parameters: %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: expected a string</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the operator runs %1: control stays with the GUI until it ends</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has had control since %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>took control</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not in control: this client does not hold that lease (taken back, expired or released)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>subscription: expected the number subscribe answered</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>argv: expected an array of strings (benchpilot-cli&apos;s words)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 calls are already running for this client</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>api::CommandCall</name>
+    <message>
+        <source>%1: done</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished">%1：%2</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation type="unfinished">失败</translation>
+    </message>
+    <message>
+        <source>failed with exit code %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>inside the GUI its own connections are used: --port does not apply (name the instrument with --sim analyzer|stage)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 on the %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>api::Subscriptions</name>
+    <message>
+        <source>unknown parameter (parameters: topics)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected an object of topics, e.g. {&quot;positions&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;max_hz&quot;: 50}}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown topic (topics: positions, state, jobs, log, telemetry)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected an object of options (max_hz, instrument, …), {} for the defaults</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown option (options: %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected a number above 0 and at most %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected one of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>telemetry is not available here (no telemetry hub)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected an array such as [&quot;X.measured&quot;, &quot;X.following_error&quot;]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a channel of the %2 (AXIS.measured, AXIS.commanded, AXIS.velocity, AXIS.following_error, AXIS.controller_output, AXIS.switches, contour_error)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected samples per second, 1 or more</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>api::WebSocketEndpoint</name>
+    <message>
+        <source>the token file %1 can be read by others (chmod 600 it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot read the token file %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the token in %1 is too short (at least 16 characters)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot write the token file %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot listen on 127.0.0.1:%1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>origin not allowed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a token is required (?token=… from the token file)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this BenchPilot was built without Qt WebSockets (install qt6-websockets-dev: ./scripts/setup)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>app::ApiControlStrip</name>
+    <message>
+        <source>Take back</source>
+        <translation>收回控制</translation>
+    </message>
+    <message>
+        <source>End the script&apos;s control now: its next call is refused, its jogs stop; jobs it started go on as yours</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has had control of the bench since %2. Your motion controls ask before they act.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>app::ApiPanel</name>
+    <message>
+        <source>Take back</source>
+        <translation>收回控制</translation>
+    </message>
+    <message>
+        <source>Clients connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Jobs started by scripts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Abort job</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Client</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Transport</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Since</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Calls running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Job</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Instrument</source>
+        <translation type="unfinished">仪器</translation>
+    </message>
+    <message>
+        <source>Owner</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Progress</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Socket: %1 (this user only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>WebSocket: %1 (127.0.0.1 only, token required)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Control: %1, since %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Control: the operator (you)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>End the script&apos;s control now</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No script has control</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (in control)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>you (started by %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Interrupt the selected job as Ctrl+C would (a recipe run raises its tip and can resume)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Select a running job to abort it</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>app::ApiStatusButton</name>
+    <message numerus="yes">
+        <source>API: %n client(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Scripting API on %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>WebSocket: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (%2), since %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Click for the API panel</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>app::ApiWiring</name>
+    <message>
+        <source>Scripting API not started: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scripting API WebSocket not started: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has had control of the bench since %2.
+
+Take control back? The script&apos;s next call is refused and its jogs stop; a job it started goes on as yours. Then do again what you meant to do.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a recipe on the Plates screen</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a scan on the Scan screen</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a pattern on the Patterns screen</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a test on the Tuning screen</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>app::InstrumentSession</name>
+    <message>
+        <source>stage</source>
+        <translation>载物台</translation>
+    </message>
+    <message>
+        <source>analyzer</source>
+        <translation>分析仪</translation>
+    </message>
+    <message>
+        <source>The machine profile does not load: %1</source>
+        <translation>机器配置文件无法加载：%1</translation>
+    </message>
+    <message>
+        <source>The machine profile %1 is for the %2, not the %3.</source>
+        <translation>机器配置文件 %1 适用于%2，而不是%3。</translation>
+    </message>
+    <message>
+        <source>detecting the protocol on %1…</source>
+        <translation>正在检测 %1 上的通信协议…</translation>
+    </message>
+    <message>
+        <source>%1 is a %2, not the %3: connect it in the %2&apos;s bar.</source>
+        <translation>%1 是%2，不是%3：请在%2的连接栏中连接它。</translation>
     </message>
 </context>
 <context>
@@ -215,6 +884,54 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <source>the last scan plan did not load: %1</source>
         <translation>上次的扫描计划未能载入：%1</translation>
     </message>
+    <message>
+        <source>Calibration</source>
+        <translation>校准</translation>
+    </message>
+    <message>
+        <source>A script has control</source>
+        <translation>脚本正在控制</translation>
+    </message>
+    <message>
+        <source>Take back</source>
+        <translation>收回控制</translation>
+    </message>
+    <message>
+        <source>Scripting API</source>
+        <translation>脚本接口</translation>
+    </message>
+    <message>
+        <source>API</source>
+        <translation>API</translation>
+    </message>
+    <message>
+        <source>server</source>
+        <translation>服务器</translation>
+    </message>
+    <message>
+        <source>link error</source>
+        <translation>链路错误</translation>
+    </message>
+    <message>
+        <source>Machine profile</source>
+        <translation>机器配置</translation>
+    </message>
+    <message>
+        <source>Machine profiles (*.machine.json);;All files (*)</source>
+        <translation>机器配置文件 (*.machine.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>device</source>
+        <translation>设备</translation>
+    </message>
+    <message>
+        <source>%1: the controller no longer trusts its position (an alarm, an E-stop or a reset while it was moving). Home it, or Unlock on the Jog screen to take the position it believes.</source>
+        <translation>%1：控制器已不再确信自身位置（运动中发生报警、急停或复位）。请回零，或在点动界面点击“解锁”以采用其认定的位置。</translation>
+    </message>
+    <message>
+        <source>E-STOP: all motion halted. A GRBL controller that was moving has lost its position: home it (or unlock it on your word) before absolute moves. Check the machine, then press Reset E-stop.</source>
+        <translation>急停：所有运动已停止。运动中的 GRBL 控制器已丢失位置：绝对移动前请先回零（或在确认后解锁）。检查设备后按“急停复位”。</translation>
+    </message>
 </context>
 <context>
     <name>cli</name>
@@ -232,7 +949,7 @@ Skip counts the well as done; Do again repeats it in full.</source>
     </message>
     <message>
         <source>--sim needs &apos;analyzer&apos; or &apos;stage&apos; (got &apos;%1&apos;)</source>
-        <translation type="unfinished"></translation>
+        <translation>--sim 需要 &apos;analyzer&apos; 或 &apos;stage&apos;（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>--port needs a path</source>
@@ -240,7 +957,7 @@ Skip counts the well as done; Do again repeats it in full.</source>
     </message>
     <message>
         <source>--baud needs a rate of at least 1200 (got &apos;%1&apos;)</source>
-        <translation type="unfinished"></translation>
+        <translation>--baud 需要不低于 1200 的速率（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>--timeout needs a positive number of seconds (got &apos;%1&apos;)</source>
@@ -248,10 +965,6 @@ Skip counts the well as done; Do again repeats it in full.</source>
     </message>
     <message>
         <source>unknown option %1 (options: %2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the in-process simulator: analyzer or stage (default: analyzer)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -272,16 +985,6 @@ Skip counts the well as done; Do again repeats it in full.</source>
     </message>
     <message>
         <source>language of the text for people: en (default), zh_CN, or system (follows LANG); --json never changes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>usage: benchpilot-cli [GLOBAL OPTIONS] COMMAND [OPTIONS] [ARGUMENTS]
-
-Scripts BenchPilot&apos;s instruments (the in-process simulators, benchpilot-sim&apos;s pty, or a
-serial port) and its motion library.
-
-Commands:
-</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -328,12 +1031,6 @@ Subcommands:
     <message>
         <source>
 Options:
-</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>
-Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benchpilot-cli --help).
 </source>
         <translation type="unfinished"></translation>
     </message>
@@ -634,11 +1331,6 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     </message>
     <message>
         <source>the pattern did not finish within --timeout %1 s: aborted</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 on the %2: %3 of %4 segments in %5 s; contour error max %6 µm, RMS %7 µm (%8 samples)
-</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1144,12 +1836,470 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
         <source>also keep them as the device&apos;s power-up gains</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>warning: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis %1, %2, %3 cycles, %4 targets (ISO 230-2, µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bidirectional</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unidirectional</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pass</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>FAIL</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--%1 must be above 0 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give one readings CSV</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give --sequence TARGETS.csv and the interferometer&apos;s CSV export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>wrote %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is not a circular test</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give --radius R (mm), or --test FILE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--time-scale speeds up the in-process simulator: use it with --sim</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Circular test, radius %1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>G %1: %2 µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>H: %1 µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ISO 230-2 positioning tests, ISO 230-4 circular tests, their analysis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>run a positioning test on an axis and evaluate it (ISO 230-2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Moves through the standard linear cycle, takes a reading at every stop once the axis has settled, and writes the readings CSV, the result JSON and the PDF report into --out. A run that stopped continues from its log there.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ISO 230-2 figures of a readings CSV</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>READINGS.csv</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>run a circular test on X and Y (ISO 230-4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>an interferometer&apos;s CSV export matched to a run&apos;s target sequence</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>EXPORT.csv</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--targets &apos;%1&apos;: START:END:COUNT, such as 10:90:9, or a list such as 10,30,50</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is a circular test: run it with &apos;accuracy circle --test&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give --targets START:END:COUNT (or a list), or --test FILE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--cycles &apos;%1&apos; must be a whole number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--time-scale must be from 0 to 100</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source><byte value="xd"/>%1 of %2 readings, about %3 s left   </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Positioning accuracy of axis %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>contour error: A↑ %1 µm, R↑ %2 µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading %1 of %2: %3%4, cycle %5; type the reading in mm (q aborts): </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a reading here; </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no BenchPilot GUI is running with its API at %1. Start benchpilot (with --api-socket %1 if that is where it should listen), or leave out --attach to open the instrument directly.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot reach the BenchPilot GUI at %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the GUI at %1 does not take the command: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the GUI closed the connection before the command finished</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--instrument needs &apos;analyzer&apos; or &apos;stage&apos; (got &apos;%1&apos;)</source>
+        <translation>--instrument 需要 &apos;analyzer&apos; 或 &apos;stage&apos;（收到 &apos;%1&apos;）</translation>
+    </message>
+    <message>
+        <source>--profile needs a machine profile file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--profile: %1</source>
+        <translation>--profile：%1</translation>
+    </message>
+    <message>
+        <source>the in-process simulator: analyzer or stage (default: analyzer); with --attach, which of the GUI&apos;s instruments</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>with --port: which instrument it is, analyzer or stage (default: what the device says; a GRBL controller: the profile&apos;s, else the analyzer)</source>
+        <translation>与 --port 一起使用：它是哪台仪器，analyzer 或 stage（默认：以设备所报为准；GRBL 控制器：以配置文件为准，否则为分析仪）</translation>
+    </message>
+    <message>
+        <source>with --port: the machine profile of a GRBL controller (docs/grbl.md)</source>
+        <translation>与 --port 一起使用：GRBL 控制器的机器配置文件（docs/grbl.md）</translation>
+    </message>
+    <message>
+        <source>run the command through the running BenchPilot GUI (its instruments, its control lease)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>with --attach: the GUI&apos;s API socket (default: $XDG_RUNTIME_DIR/benchpilot/api.sock)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>usage: benchpilot-cli [GLOBAL OPTIONS] COMMAND [OPTIONS] [ARGUMENTS]
+
+Scripts BenchPilot&apos;s instruments (the in-process simulators, benchpilot-sim&apos;s pty, or a
+serial port: BenchPilot firmware, or a GRBL 1.1 / grblHAL controller) and its motion library.
+
+Commands:
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>
+Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile FILE, --json, --timeout S (see benchpilot-cli --help).
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--api-socket goes with --attach</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--attach is already in effect here</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--instrument and --profile go with --port (--sim names its instrument itself)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>[ALARM] the controller does not trust its position: home, or `unlock` on your word</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give one result JSON or error-curve CSV</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--order &apos;%1&apos;: auto or 1 to 5</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--kind &apos;%1&apos;: polynomial or table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--kind table needs a result JSON: a table is made from each target&apos;s means</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>order  SSE (µm²)        R²         adjusted R²</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>n/a</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>e(x) = %1 µm over %2 … %3 mm; backlash %4 µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axis %1: no compensation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>polynomial of order %1 over %2 … %3 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>table of %1 points%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> per direction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axis %1: %2, backlash %3 µm; %4%5%6</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>enabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>disabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (applied once the axis is homed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, kept for power-up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give one compensation file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--format &apos;%1&apos;: linuxcnc or csv</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--type &apos;%1&apos;: 0 (positions reached) or 1 (corrections)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axis error compensation: fit, keep on the device, export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fit error polynomials of orders 1–5 to a result or an error curve</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>INPUT</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>INPUT is a result JSON of &apos;accuracy run&apos; or &apos;accuracy analyze&apos;, or a CSV with position_mm,error_um. The order is chosen by adjusted R² unless --order names one; --out writes the compensation file.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>send a compensation file to the device (installed disabled)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>FILE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device&apos;s compensation of an axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>enable the device&apos;s compensation of an axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>disable the device&apos;s compensation of an axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a compensation as CSV or a LinuxCNC compensation file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>[FILE]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exports FILE, or the device&apos;s compensation of --axis when no FILE is given. LinuxCNC: --type 0 writes the positions the joint reaches, --type 1 the corrections (COMP_FILE_TYPE).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>nothing to unlock: the instrument trusts its position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unlocking: the position the controller believes is taken as true; home the axes when you can</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unlock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the axes to home, e.g. &quot;XY&quot;; all when left out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axis → target, e.g. {&quot;X&quot;: 10, &quot;Y&quot;: 5}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the axis letter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axis units per second, signed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>jog this long, then stop and wait until still; without it the jog runs until device.stop, or until the lease or the connection ends</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On a GRBL controller without homing ($22=0) this takes the present position as home, on your word: absolute moves are allowed after it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the axes to zero, e.g. &quot;XY&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>accept the position a controller believes after an alarm (GRBL&apos;s $X)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>After an alarm that lost the position (a reset while moving, an E-stop, a hard limit) a GRBL controller refuses motion until it is homed or unlocked. Unlocking takes its idea of the position as true: home when you can.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axis → [min, max] to set; shows them when left out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>one joint&apos;s blocks &quot;S:V2:t0_ms,…&quot;; an array of such strings for several joints</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 on the %2: %3 of %4 segments in %5 s; contour error max %6 µm, RMS %7 µm (%8 samples at %9 Hz)
+</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the recipe file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a plan file to print in another format (instead of the plan&apos;s options)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the scan plan file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axis → [Kp, Ki, Kd] to set; shows them when left out</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>cli::CliSession</name>
+    <message>
+        <source>--profile: %1</source>
+        <translation>--profile：%1</translation>
+    </message>
+    <message>
+        <source>--profile %1 is for the %2, but --instrument says %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot connect to %1: the protocol could not be detected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot connect to %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is a %2, not the %3 --instrument names</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>dev</name>
+    <message>
+        <source>give the axis: --axis X</source>
+        <translation>请指定轴：--axis X</translation>
+    </message>
 </context>
 <context>
     <name>dev::BenchPilotClient</name>
     <message>
         <source>no link</source>
         <translation>无连接</translation>
+    </message>
+</context>
+<context>
+    <name>dev::GrblClient</name>
+    <message>
+        <source>no link</source>
+        <translation>无链路</translation>
+    </message>
+    <message>
+        <source>GRBL controller</source>
+        <translation>GRBL 控制器</translation>
     </message>
 </context>
 <context>
@@ -1592,6 +2742,25 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     </message>
 </context>
 <context>
+    <name>jobs</name>
+    <message>
+        <source>--source &apos;%1&apos;: readback, gauge:PATH, manual or interferometer</source>
+        <translation>--source &apos;%1&apos;：可选 readback、gauge:PATH、manual 或 interferometer</translation>
+    </message>
+    <message>
+        <source>--gauge-timeout must be from 0 to 60 s</source>
+        <translation>--gauge-timeout 必须在 0 到 60 s 之间</translation>
+    </message>
+    <message>
+        <source>--source gauge:sim reads the in-process simulator&apos;s gauge: use it with --sim</source>
+        <translation>--source gauge:sim 读取进程内模拟器的测头：请与 --sim 一起使用</translation>
+    </message>
+    <message>
+        <source>simulated gauge</source>
+        <translation>模拟测头</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
         <source>BenchPilot operator and test-bench application.</source>
@@ -1604,10 +2773,6 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     <message>
         <source>screen to show: jog, plots, profiles, …</source>
         <translation>要显示的界面：jog、plots、profiles……</translation>
-    </message>
-    <message>
-        <source>instrument to show: analyzer or stage</source>
-        <translation>要显示的仪器：analyzer 或 stage</translation>
     </message>
     <message>
         <source>screenshot: how long the simulators run first</source>
@@ -1632,6 +2797,338 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     <message>
         <source>language of the screens: system, en or zh_CN (default: the Language menu&apos;s choice)</source>
         <translation>界面语言：system、en 或 zh_CN（默认：“语言”菜单中的选择）</translation>
+    </message>
+    <message>
+        <source>connect this instrument to its in-process simulator and show it (analyzer or stage; also the instrument a screenshot shows)</source>
+        <translation>将该仪器连接到进程内模拟器并显示（analyzer 或 stage；也是截图显示的仪器）</translation>
+    </message>
+    <message>
+        <source>connect to this serial port or path (e.g. benchpilot-sim&apos;s pty); the protocol is detected: BenchPilot or GRBL</source>
+        <translation>连接到该串口或路径（例如 benchpilot-sim 的 pty）；自动检测协议：BenchPilot 或 GRBL</translation>
+    </message>
+    <message>
+        <source>with --port: which instrument it is, analyzer or stage (default: what the device says; a GRBL controller: the profile&apos;s, else the analyzer)</source>
+        <translation>与 --port 一起使用：它是哪台仪器，analyzer 或 stage（默认：以设备所报为准；GRBL 控制器：以配置文件为准，否则为分析仪）</translation>
+    </message>
+    <message>
+        <source>with --port: the machine profile of a GRBL controller (docs/grbl.md)</source>
+        <translation>与 --port 一起使用：GRBL 控制器的机器配置文件（docs/grbl.md）</translation>
+    </message>
+    <message>
+        <source>with --port: the link speed</source>
+        <translation>与 --port 一起使用：链路速率</translation>
+    </message>
+    <message>
+        <source>where the scripting API listens (default: %1)</source>
+        <translation>脚本接口的监听位置（默认：%1）</translation>
+    </message>
+    <message>
+        <source>do not start the scripting API</source>
+        <translation>不启动脚本接口</translation>
+    </message>
+    <message>
+        <source>also serve the API as a WebSocket on 127.0.0.1:port (off by default)</source>
+        <translation>同时在 127.0.0.1:端口 上以 WebSocket 提供接口（默认关闭）</translation>
+    </message>
+    <message>
+        <source>the WebSocket&apos;s token file, 0600 (default: api.token beside the socket)</source>
+        <translation>WebSocket 的令牌文件，权限 0600（默认：套接字旁的 api.token）</translation>
+    </message>
+    <message>
+        <source>a browser Origin the WebSocket accepts (repeat for more; none by default)</source>
+        <translation>WebSocket 接受的浏览器 Origin（可重复指定；默认不接受任何）</translation>
+    </message>
+    <message>
+        <source>--instrument and --profile go with --port</source>
+        <translation>--instrument 和 --profile 须与 --port 一起使用</translation>
+    </message>
+    <message>
+        <source>--sim needs &apos;analyzer&apos; or &apos;stage&apos; (got &apos;%1&apos;)</source>
+        <translation>--sim 需要 &apos;analyzer&apos; 或 &apos;stage&apos;（收到 &apos;%1&apos;）</translation>
+    </message>
+    <message>
+        <source>--baud needs a rate of at least 1200 (got &apos;%1&apos;)</source>
+        <translation>--baud 需要不低于 1200 的速率（收到 &apos;%1&apos;）</translation>
+    </message>
+    <message>
+        <source>--instrument needs &apos;analyzer&apos; or &apos;stage&apos; (got &apos;%1&apos;)</source>
+        <translation>--instrument 需要 &apos;analyzer&apos; 或 &apos;stage&apos;（收到 &apos;%1&apos;）</translation>
+    </message>
+    <message>
+        <source>--profile: %1</source>
+        <translation>--profile：%1</translation>
+    </message>
+    <message>
+        <source>--profile is for the other instrument than --instrument names</source>
+        <translation>--profile 所指的仪器与 --instrument 不同</translation>
+    </message>
+    <message>
+        <source>--sim and --port name the same instrument</source>
+        <translation>--sim 与 --port 指向同一台仪器</translation>
+    </message>
+</context>
+<context>
+    <name>report</name>
+    <message>
+        <source>Instrument: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reference: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis %1, %2 targets (mm): %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 cycles, %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bidirectional (ISO 230-2 standard linear cycle)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unidirectional (approached from below)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed %1, overrun %2, dwell %3; settled within %4 for %5 (timeout %6)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Readings: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Figure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Before (µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>After (µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Improvement</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Value (µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Limit (µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Verdict</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pass</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>FAIL</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>target (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>deviation (µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mean ↑</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mean ↓</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mean ± 2s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>readings ↑</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>readings ↓</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>BenchPilot accuracy report · %1 · %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Figures before and after compensation (ISO 230-2:2014)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Figures (ISO 230-2:2014)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PASS: every figure judged is within its limit.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>FAIL: a figure is beyond its limit.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No tolerances were given: the figures are not judged.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Deviations: mean ± 2s per direction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Per target (µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Before and after</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mean deviation (µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>before</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>after</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compensation fit of the mean deviations (seed 002&apos;s method)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>order</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SSE (µm²)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>adjusted R²</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>chosen</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not enough points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>e(x) = %1 µm, x in mm (order %2%3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, chosen by the operator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, chosen by adjusted R²</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>residual (µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mean deviation − fit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a PDF needs a graphical application object; none exists in this program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>— clockwise</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>— counter-clockwise</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>radius %1, deviation from the least-squares circle magnified %2×; dashed: the nominal circle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Instrument: %1
+Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolution</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Figures (ISO 230-4, µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>figure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>value (µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>limit (µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>verdict</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>clockwise</source>
+        <translation type="unfinished">顺时针</translation>
+    </message>
+    <message>
+        <source>counter-clockwise</source>
+        <translation type="unfinished">逆时针</translation>
+    </message>
+    <message>
+        <source>G circular deviation, %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>radial deviation, %1: min … max</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>G(b) bidirectional circular deviation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>H circular hysteresis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>BenchPilot circular test · %1 · %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot write %1</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1686,6 +3183,38 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     </message>
     <message>
         <source>cannot create symlink %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>symlink to create for a simulated gauge&apos;s pty</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the axis whose work point the gauge reads</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the gauge&apos;s last digit in mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>standard deviation of the gauge&apos;s noise in mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--gauge-axis: the %1 has no axis &apos;%2&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--gauge-resolution must be from 0.000001 to 0.1 mm (got &apos;%1&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--gauge-noise must be from 0 to 1 mm (got &apos;%1&apos;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--gauge needs a path of its own, not the instrument&apos;s</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1749,6 +3278,185 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     <message>
         <source>%1 [%2]</source>
         <translation>%1 [%2]</translation>
+    </message>
+</context>
+<context>
+    <name>ui::AccuracyTestForm</name>
+    <message>
+        <source>Axis</source>
+        <translation type="unfinished">轴</translation>
+    </message>
+    <message>
+        <source>Targets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>From (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>To (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Count</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Spacing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>List (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cycles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Directions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Overrun (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed (mm/s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dwell (s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Settled within (µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>… for (s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Settle timeout (s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Limit on A (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Limit on R (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>From X (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>From Y (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>To X (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>To Y (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Centre X (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Centre Y (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Radius (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lead arc (°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Samples a turn</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Limit on G (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis test (ISO 230-2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Linked XY line (seed 000)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Circular test (ISO 230-4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>What kind of test to run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>evenly from … to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a list</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ISO 230-2 irregular</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Moves each inner target off the even grid by its own amount, so a periodic error (a screw&apos;s pitch) is not sampled at one phase</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>10, 25.5, 40, …</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>both (↑ and ↓)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unticked: every target approached from below only (ISO&apos;s unidirectional test)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How far past the end targets the axis goes, so every approach comes from its side</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A reading is taken once the readback has stayed this close for the time below</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>0: not judged</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>both</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>counter-clockwise</source>
+        <translation type="unfinished">逆时针</translation>
+    </message>
+    <message>
+        <source>clockwise</source>
+        <translation type="unfinished">顺时针</translation>
     </message>
 </context>
 <context>
@@ -1982,6 +3690,404 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     </message>
 </context>
 <context>
+    <name>ui::CalibrationScreen</name>
+    <message>
+        <source>Name the gauge&apos;s port (or sim for the simulator&apos;s gauge).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>There is no way to open a gauge here.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>simulated gauge</source>
+        <translation>模拟测头</translation>
+    </message>
+    <message>
+        <source>%1
+
+Keep that log aside and start this test afresh?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The test takes about %1 (%2 readings). The axes move on their own until it ends. Run it?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading %1 of %2: %3%4, cycle %5. What does the indicator show?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a reading: type the indicator&apos;s value in mm.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a reading here: type one value per axis, in mm.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every stop is visited. Capture with the interferometer, then import its export against %1 (benchpilot-cli accuracy import).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Linked XY line: contour error A↑ %1 µm, R↑ %2 µm (%3 readings).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The test is done: results in %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>G, %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>radial deviation, %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>G(b)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>H hysteresis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Circular test, radius %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The circular test is done: report %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No axis test has finished yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run an axis test first: its fit is what is saved</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run an axis test first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pass</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>FAIL</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis %1 from %2: no limits given, not judged.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis %1 from %2: PASS.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis %1 from %2: FAIL.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Writes the fitted compensation as a file (*.compensation.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The report of the latest run, written into its folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run the same axis test again after enabling the compensation: the two runs are compared here.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis %1: A %2 µm before, %3 µm after%4.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: %1 times better</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Positioning accuracy of axis %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Report written: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The gauge&apos;s serial port (9600 Bd, 8N1); sim reads the simulator&apos;s gauge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Used when the readings come from a gauge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A circular test samples the readback along the path</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The readback is what the position loop closes on: it cannot see the work point&apos;s error. A gauge or an interferometer at the work point can.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A test is running.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Opening the gauge&apos;s port…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No instrument.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run the test, or go on from where it stopped (Ctrl+R)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop after the reading in progress (Ctrl+P)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing is running.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop the axes now; Run goes on at the next reading later (Ctrl+.)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Circle %1 of %2, about %3 left.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The circular test is done.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading %1 of %2, about %3 left%4.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (pausing after this reading)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paused at reading %1 of %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stopped at reading %1 of %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Done: %1 readings.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Define a test, pick where the readings come from, and run it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Instrument</source>
+        <translation type="unfinished">仪器</translation>
+    </message>
+    <message>
+        <source>Open an accuracy test</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Accuracy tests (*.accuracy-test.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the accuracy test</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>From</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gauge port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Folder for the run&apos;s log, readings and report</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Test</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Readings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The instrument the test runs on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the instrument&apos;s readback</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a gauge on a serial port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>typed at each stop (dial indicator)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>laser interferometer (import afterwards)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>/dev/ttyUSB1, or sim for the simulator&apos;s gauge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading in mm, e.g. 40.0012</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Live</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Results</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compensation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Before / after</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Circle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>figure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>limit (µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>verdict</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>before (µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>after (µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>improvement</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save compensation…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write PDF report</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The test cannot be opened:
+%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Opened %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the compensation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compensations (*.compensation.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>ui::ChannelPicker</name>
     <message>
         <source>Channels of</source>
@@ -2011,16 +4117,8 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
         <translation>连接状态</translation>
     </message>
     <message>
-        <source>The simulated instrument, or a serial port</source>
-        <translation>仿真仪器或串口</translation>
-    </message>
-    <message>
         <source>Look for serial ports again</source>
         <translation>重新查找串口</translation>
-    </message>
-    <message>
-        <source>Baud rate (8N1)</source>
-        <translation>波特率（8N1）</translation>
     </message>
     <message>
         <source>Connect</source>
@@ -2037,6 +4135,38 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     <message>
         <source>Disconnect</source>
         <translation>断开</translation>
+    </message>
+    <message>
+        <source>port or path</source>
+        <translation>端口或路径</translation>
+    </message>
+    <message>
+        <source>Default wiring</source>
+        <translation>默认接线</translation>
+    </message>
+    <message>
+        <source>Open a profile file…</source>
+        <translation>打开配置文件…</translation>
+    </message>
+    <message>
+        <source>Disconnect to change the connection.</source>
+        <translation>断开连接后才能更改连接设置。</translation>
+    </message>
+    <message>
+        <source>The simulated instrument, a serial port, or a path typed in (e.g. the pty benchpilot-sim serves); the protocol is detected when it connects: BenchPilot or GRBL</source>
+        <translation>模拟仪器、串口或手动输入的路径（例如 benchpilot-sim 提供的 pty）；连接时自动检测协议：BenchPilot 或 GRBL</translation>
+    </message>
+    <message>
+        <source>Baud rate (8N1); GRBL boards usually run at 115200</source>
+        <translation>波特率（8N1）；GRBL 控制板通常为 115200</translation>
+    </message>
+    <message>
+        <source>Machine profile: how a GRBL controller is wired to this instrument (axes, pump, trigger output, status rate). Default wiring: each axis on the GRBL axis of its letter, the analyzer&apos;s pump on A at 1 µL per mm, no trigger</source>
+        <translation>机器配置：GRBL 控制器与本仪器的接线方式（轴、泵、触发输出、状态刷新率）。默认接线：各轴接同名 GRBL 轴，分析仪的泵接 A 轴，每 mm 1 µL，无触发输出</translation>
+    </message>
+    <message>
+        <source>Machine profile %1</source>
+        <translation>机器配置 %1</translation>
     </message>
 </context>
 <context>
@@ -2090,6 +4220,37 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     </message>
 </context>
 <context>
+    <name>ui::DeviationPlot</name>
+    <message>
+        <source>target (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>deviation (µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>before (mean)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>↑ mean ± 2s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>↓ mean ± 2s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>↑ readings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>↓ readings</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>ui::EventLog</name>
     <message>
         <source>Time</source>
@@ -2130,6 +4291,157 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     <message>
         <source>at %1 %2</source>
         <translation>位于 %1 %2</translation>
+    </message>
+</context>
+<context>
+    <name>ui::FitPanel</name>
+    <message>
+        <source>Order</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>auto (adjusted R²)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The order chosen by adjusted R² with a significance margin, or the one you pick</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>order</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SSE (µm²)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>R²</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>adjusted R²</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Residuals of the chosen fit: mean deviation − curve (µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>target (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>residual (µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Upload to instrument</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Disable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>keep for power-up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Also saves the compensation and this state in the instrument, so it powers up with it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run an axis test to fit its error curve.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not enough points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Order %1%2: e(x) = %3 µm (x in mm); backlash %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (your choice)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (adjusted R²)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No instrument.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The instrument has no axis %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading the instrument&apos;s compensation of %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The instrument holds no compensation for %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The instrument holds a compensation for %1: %2%3%4.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>enabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>disabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, applied once the axis is homed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, kept for power-up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run an axis test first: the fit of its mean deviations is what is uploaded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sends the chosen fit to the instrument (installed disabled)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Upload a compensation first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The instrument compensates every target from now on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The instrument stops compensating (it keeps the compensation)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The instrument refused the compensation: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compensation of %1 uploaded (disabled until you enable it).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The instrument refused: %1</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2431,6 +4743,30 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     <message>
         <source>Move %1 from %2 to %3 %4? That is %5 %4.</source>
         <translation>把 %1 从 %2 移到 %3 %4？移动距离 %5 %4。</translation>
+    </message>
+    <message>
+        <source>Set home here…</source>
+        <translation>设此处为原点…</translation>
+    </message>
+    <message>
+        <source>Take the present position as home for every axis (the controller cannot home): absolute moves count from here</source>
+        <translation>将当前位置设为各轴原点（控制器无法回零）：绝对移动从此处起算</translation>
+    </message>
+    <message>
+        <source>Unlock…</source>
+        <translation>解锁…</translation>
+    </message>
+    <message>
+        <source>The controller lost track of its position: take the position it believes as true (or home it)</source>
+        <translation>控制器已丢失位置：采用其认定的位置（或回零）</translation>
+    </message>
+    <message>
+        <source>Take the present position as home for every axis of the %1? Absolute moves then count from here: do so only when you know where the machine stands.</source>
+        <translation>将当前位置设为%1各轴的原点？此后绝对移动从此处起算：仅在确知设备所处位置时这样做。</translation>
+    </message>
+    <message>
+        <source>Unlock the %1? Its controller lost track of its position; unlocking takes the position it believes as true. Home it as soon as you can.</source>
+        <translation>解锁%1？其控制器已丢失位置；解锁即采用其认定的位置为准。请尽快回零。</translation>
     </message>
 </context>
 <context>
@@ -3460,6 +5796,29 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     </message>
 </context>
 <context>
+    <name>ui::PolarPlot</name>
+    <message>
+        <source>X about the centre (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Y about the centre (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>counter-clockwise</source>
+        <translation type="unfinished">逆时针</translation>
+    </message>
+    <message>
+        <source>clockwise</source>
+        <translation type="unfinished">顺时针</translation>
+    </message>
+    <message>
+        <source>deviation magnified %1×</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>ui::ProfilesScreen</name>
     <message>
         <source>Match 0 cannot fire: edge moved one tick late, the next step one tick early</source>
@@ -4354,14 +6713,6 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Compensate seed 002&apos;s error curves</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Moves each target so the work point lands on it: X −0.0006x² + 0.9473x + 1.563 µm, Y 0.0168y² + 0.6397y + 1.021 µm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Run</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4391,6 +6742,14 @@ Global options: --sim KIND, --port PATH, --baud N, --json, --timeout S (see benc
     </message>
     <message>
         <source>Field %1 × %2 mm, %3 µm per pixel at the sample</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use the stage&apos;s own compensation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Runs only when the stage has its error compensation enabled on X and Y: the stage moves each target so the work point lands on it. Measure and upload it on the Calibration screen.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -5216,6 +7575,557 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     </message>
 </context>
 <context>
+    <name>words::AccuracyBenchWords</name>
+    <message>
+        <source>must be a number (not NaN or infinite)</source>
+        <translation type="unfinished">必须是数字（不能是 NaN 或无穷大）</translation>
+    </message>
+    <message>
+        <source>is %1, below the least allowed %2</source>
+        <translation type="unfinished">为 %1，低于允许的最小值 %2</translation>
+    </message>
+    <message>
+        <source>is %1, above the most allowed %2</source>
+        <translation type="unfinished">为 %1，高于允许的最大值 %2</translation>
+    </message>
+    <message>
+        <source>must be above 0 (is %1)</source>
+        <translation type="unfinished">必须大于 0（当前为 %1）</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not an axis name: one capital letter, such as X</source>
+        <translation type="unfinished">“%1”不是轴名：轴名是一个大写字母，例如 X</translation>
+    </message>
+    <message>
+        <source>no targets: give a list of targets or a start, end and count</source>
+        <translation type="unfinished">没有目标位置：请给出目标位置列表，或起点、终点和个数</translation>
+    </message>
+    <message>
+        <source>give either a list of targets or a grid, not both</source>
+        <translation type="unfinished">请给出目标位置列表或网格之一，不能同时给出</translation>
+    </message>
+    <message>
+        <source>%1 targets: a positioning test needs at least %2</source>
+        <translation type="unfinished">%1 个目标位置：定位测试至少需要 %2 个</translation>
+    </message>
+    <message>
+        <source>%1 targets: ISO 230-2 recommends at least %2</source>
+        <translation type="unfinished">%1 个目标位置：ISO 230-2 建议至少 %2 个</translation>
+    </message>
+    <message>
+        <source>target %1 does not come after %2: targets must increase</source>
+        <translation type="unfinished">目标位置 %1 不大于 %2：目标位置必须递增</translation>
+    </message>
+    <message>
+        <source>target %1 of axis %2 is below the soft limit %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>target %1 is below the soft limit %2</source>
+        <translation type="unfinished">目标位置 %1 低于软限位 %2</translation>
+    </message>
+    <message>
+        <source>target %1 of axis %2 is above the soft limit %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>target %1 is above the soft limit %2</source>
+        <translation type="unfinished">目标位置 %1 高于软限位 %2</translation>
+    </message>
+    <message>
+        <source>the grid ends at %1, not after its start %2</source>
+        <translation type="unfinished">网格终点 %1 不在起点 %2 之后</translation>
+    </message>
+    <message>
+        <source>targets %1 apart are too close: at least %2</source>
+        <translation type="unfinished">目标位置间距 %1 太小：至少为 %2</translation>
+    </message>
+    <message>
+        <source>no overrun: the drive reverses at the end targets, so their readings include the reversal</source>
+        <translation type="unfinished">没有越程：驱动在两端目标位置处换向，因此这些读数包含了换向误差</translation>
+    </message>
+    <message>
+        <source>the overrun takes axis %1 to %2, below the soft limit %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the overrun goes to %1, below the soft limit %2</source>
+        <translation type="unfinished">越程到达 %1，低于软限位 %2</translation>
+    </message>
+    <message>
+        <source>the overrun takes axis %1 to %2, above the soft limit %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the overrun goes to %1, above the soft limit %2</source>
+        <translation type="unfinished">越程到达 %1，高于软限位 %2</translation>
+    </message>
+    <message>
+        <source>%1 cycles at %2 %3: at least %4 are needed to see a spread</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 cycles: at least %2 are needed to see a spread</source>
+        <translation type="unfinished">%1 次循环：至少需要 %2 次才能看出分散</translation>
+    </message>
+    <message>
+        <source>%1 cycles: ISO 230-2 recommends %2</source>
+        <translation type="unfinished">%1 次循环：ISO 230-2 建议 %2 次</translation>
+    </message>
+    <message>
+        <source>the settle timeout %1 is shorter than its window %2</source>
+        <translation type="unfinished">稳定超时 %1 短于其稳定窗口 %2</translation>
+    </message>
+    <message>
+        <source>a second reading at %1 %2 in cycle %3 (the first is reading %4)</source>
+        <translation type="unfinished">第 %3 次循环中在 %1 %2 处有第二个读数（第一个是读数 %4）</translation>
+    </message>
+    <message>
+        <source>no %1 readings at %2, though other targets have them</source>
+        <translation type="unfinished">%2 处没有%1读数，但其他目标位置有</translation>
+    </message>
+    <message>
+        <source>%1 readings at %2 %3, where the others have %4</source>
+        <translation type="unfinished">%2 %3 处有 %1 个读数，而其他位置有 %4 个</translation>
+    </message>
+    <message>
+        <source>the table&apos;s row for %1 lacks a mean or a standard deviation</source>
+        <translation type="unfinished">表中 %1 一行缺少平均值或标准差</translation>
+    </message>
+    <message>
+        <source>%1 readings, where the test has %2</source>
+        <translation type="unfinished">%1 个读数，而测试应有 %2 个</translation>
+    </message>
+    <message>
+        <source>a reading at %1 %2 in cycle %3, which the test does not have</source>
+        <translation type="unfinished">第 %3 次循环在 %1 %2 处有读数，但测试中没有这一点</translation>
+    </message>
+    <message>
+        <source>no reading at %1 %2 in cycle %3</source>
+        <translation type="unfinished">第 %3 次循环在 %1 %2 处没有读数</translation>
+    </message>
+    <message>
+        <source>this target is %1 off the line through the first and last (at most %2)</source>
+        <translation type="unfinished">该目标位置偏离首末两点连线 %1（最多允许 %2）</translation>
+    </message>
+    <message>
+        <source>reading for target %1, but the line has %2 targets</source>
+        <translation type="unfinished">读数对应目标位置 %1，但该直线只有 %2 个目标位置</translation>
+    </message>
+    <message>
+        <source>%1 does not move along this line: it is not evaluated</source>
+        <translation type="unfinished">%1 轴沿该直线不运动：不予评定</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a plane: two different axis letters, such as XY</source>
+        <translation type="unfinished">“%1”不是平面：应为两个不同的轴字母，例如 XY</translation>
+    </message>
+    <message>
+        <source>the circle reaches %1 = %2, below the soft limit %3</source>
+        <translation type="unfinished">圆到达 %1 = %2，低于软限位 %3</translation>
+    </message>
+    <message>
+        <source>the circle reaches %1 = %2, above the soft limit %3</source>
+        <translation type="unfinished">圆到达 %1 = %2，高于软限位 %3</translation>
+    </message>
+    <message>
+        <source>choose clockwise, counter-clockwise or both</source>
+        <translation type="unfinished">请选择顺时针、逆时针或两者</translation>
+    </message>
+    <message>
+        <source>no circle was sampled</source>
+        <translation type="unfinished">没有采样任何圆</translation>
+    </message>
+    <message>
+        <source>two %1 runs: one of each direction</source>
+        <translation type="unfinished">两次%1运行：每个方向只能一次</translation>
+    </message>
+    <message>
+        <source>%1 samples of a circle: at least %2</source>
+        <translation type="unfinished">圆上只有 %1 个采样点：至少需要 %2 个</translation>
+    </message>
+    <message>
+        <source>the samples leave a gap of %1 in the revolution (at most %2)</source>
+        <translation type="unfinished">采样点在一周中留有 %1 的空缺（最多允许 %2）</translation>
+    </message>
+    <message>
+        <source>the %1 samples do not lie on a circle</source>
+        <translation type="unfinished">%1采样点不在一个圆上</translation>
+    </message>
+    <message>
+        <source>%1 is written as %2, but the file&apos;s own table gives %3</source>
+        <translation type="unfinished">%1 写的是 %2，但文件自身的表格给出 %3</translation>
+    </message>
+    <message>
+        <source>A run is in progress: pause or abort it first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The instrument is not connected.</source>
+        <translation type="unfinished">仪器未连接。</translation>
+    </message>
+    <message>
+        <source>The instrument has no axis %1 for this test.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The test&apos;s axes are not homed: home them first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis %1 is not homed: home it first.</source>
+        <translation type="unfinished">%1 轴尚未回零：请先回零。</translation>
+    </message>
+    <message>
+        <source>E-stop is active: the run stopped; reset the E-stop and resume.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose where the readings come from.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The %1 reads %2 axis at a time; this test reads %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The gauge on %1 reads one axis; this test reads two.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot use the folder %1: cannot create it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 holds the run log of another test (%2): choose another folder, or start afresh to keep it aside.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The run log %1 cannot be continued (line %2): %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot write the run log %1: cannot keep the old log aside as %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot write the run log %1: %2. The run stopped; no reading was lost.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The instrument refused the move: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The link to the instrument was lost: the run stopped. Reconnect and resume: it goes on at the next reading.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The run was aborted. Resume goes on at the next reading.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis %1 stopped (%2): %3. The run stopped.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No position reading from the instrument: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No position reading from the instrument: its status has no axis %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The reading has %1 values where the test reads %2 axes: the run stopped.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Define or open a test first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every reading of this run is taken.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A circular test runs as a circle, not as stops.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The run took far longer than its estimate and was aborted.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The circle&apos;s path was aborted.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The circle&apos;s path was aborted: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the header has no %1 column</source>
+        <translation type="unfinished">表头中没有 %1 列</translation>
+    </message>
+    <message>
+        <source>cannot read the unit of column %1: use one of %2</source>
+        <translation type="unfinished">无法识别 %1 列的单位：请使用 %2 之一</translation>
+    </message>
+    <message>
+        <source>a second column for the same quantity: %1</source>
+        <translation type="unfinished">同一物理量出现了第二列：%1</translation>
+    </message>
+    <message>
+        <source>the file has no readings</source>
+        <translation type="unfinished">文件中没有读数</translation>
+    </message>
+    <message>
+        <source>%1 cells where the header has %2</source>
+        <translation type="unfinished">有 %1 个单元格，而表头有 %2 列</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a number</source>
+        <translation type="unfinished">“%1”不是数字</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a direction: up or down</source>
+        <translation type="unfinished">“%1”不是方向：应为 up 或 down</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a cycle: a whole number from 1</source>
+        <translation type="unfinished">“%1”不是循环序号：应为从 1 开始的整数</translation>
+    </message>
+    <message>
+        <source>the export has %1 readings, where the run&apos;s sequence has %2 stops</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading %1 was taken %2, where the run&apos;s stop %1 (at %3) was approached %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading %1 is for target %2, where the run&apos;s stop %1 is at %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>index &quot;%1&quot;: the sequence&apos;s rows are numbered from 1 in order (expected %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must hold numbers (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must hold one position per axis read, one or two (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>is %1 where the run&apos;s next stop is %2: a log&apos;s stops come in order, each once</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must hold as many positions as target_mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation type="unfinished">无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>not valid JSON: %1</source>
+        <translation type="unfinished">不是有效的 JSON：%1</translation>
+    </message>
+    <message>
+        <source>a quoted field is not closed</source>
+        <translation type="unfinished">带引号的字段没有闭合</translation>
+    </message>
+    <message>
+        <source>text after a closing quote</source>
+        <translation type="unfinished">闭合引号之后还有文字</translation>
+    </message>
+    <message>
+        <source>the file is separated by semicolons; BenchPilot reads commas and &apos;.&apos; as the decimal point</source>
+        <translation type="unfinished">文件以分号分隔；BenchPilot 读取逗号分隔、以“.”为小数点的文件</translation>
+    </message>
+    <message>
+        <source>%1 points: a fit needs at least %2 different positions</source>
+        <translation type="unfinished">%1 个点：拟合至少需要 %2 个不同位置</translation>
+    </message>
+    <message>
+        <source>order %1: choose %2 to %3</source>
+        <translation type="unfinished">阶数 %1：请选择 %2 到 %3</translation>
+    </message>
+    <message>
+        <source>order %1 needs at least %2 points; there are %3</source>
+        <translation type="unfinished">%1 阶至少需要 %2 个点；现有 %3 个</translation>
+    </message>
+    <message>
+        <source>the polynomial has no coefficients</source>
+        <translation type="unfinished">多项式没有系数</translation>
+    </message>
+    <message>
+        <source>%1 coefficients: at most %2 (order 5)</source>
+        <translation type="unfinished">%1 个系数：最多 %2 个（5 阶）</translation>
+    </message>
+    <message>
+        <source>the range %1 to %2 is shorter than %3</source>
+        <translation type="unfinished">范围 %1 到 %2 短于 %3</translation>
+    </message>
+    <message>
+        <source>the curve reaches %1 at %2, beyond ±%3</source>
+        <translation type="unfinished">曲线在 %2 处达到 %1，超出 ±%3</translation>
+    </message>
+    <message>
+        <source>the curve&apos;s slope is %1 µm/mm at %2, beyond %3</source>
+        <translation type="unfinished">曲线在 %2 处的斜率为 %1 µm/mm，超出 %3</translation>
+    </message>
+    <message>
+        <source>%1 table points: at least %2</source>
+        <translation type="unfinished">%1 个表格点：至少需要 %2 个</translation>
+    </message>
+    <message>
+        <source>%1 table points: a device keeps at most %2</source>
+        <translation type="unfinished">%1 个表格点：设备最多保存 %2 个</translation>
+    </message>
+    <message>
+        <source>nominal %1 does not come after %2</source>
+        <translation type="unfinished">名义位置 %1 不大于 %2</translation>
+    </message>
+    <message>
+        <source>nominals %1 and %2 are closer than %3</source>
+        <translation type="unfinished">名义位置 %1 与 %2 相距小于 %3</translation>
+    </message>
+    <message>
+        <source>a backlash of %1 beside per-direction columns: put it in the columns</source>
+        <translation type="unfinished">已有分方向的列，又给出反向间隙 %1：请把它并入各列</translation>
+    </message>
+    <message>
+        <source>%1 values on a line where LinuxCNC expects three (nominal, forward, reverse); LinuxCNC would stop reading here</source>
+        <translation type="unfinished">一行有 %1 个数，而 LinuxCNC 要求三个（名义、正向、反向）；LinuxCNC 读到这里会停止</translation>
+    </message>
+    <message>
+        <source>axis %1 cannot carry a compensation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this instrument keeps no compensation of its own</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the compensation cannot be applied (%1): %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device answered COMP_UPLOAD with something unreadable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device took every part of the compensation but did not install it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device answered COMP_GET with something unreadable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The instrument refused: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The instrument holds no compensation for axis %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The gauge on %1 answered &quot;%2&quot;, which is not a reading such as +012.3456 mm.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The gauge on %1 answered &quot;%2&quot; in a unit BenchPilot does not read (%3); it reads mm, µm and in.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The gauge on %1 did not answer within %2, asked twice.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The gauge did not answer.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot open the gauge&apos;s port %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The gauge&apos;s port %1 went away: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The gauge on %1 is still answering the last request.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The gauge on %1 has no port to talk through.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The gauge&apos;s port %1 is not open.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>readback</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the stage&apos;s grating (readback)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the analyzer&apos;s encoder (readback)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>gauge on %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>manual entry</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>laser interferometer (imported after the run)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>gauge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>interferometer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>upload compensation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>read compensation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>enable compensation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>disable compensation</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>words::AccuracyWords</name>
     <message>
         <source>must be a number (not NaN or infinite)</source>
@@ -5662,6 +8572,10 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     <message>
         <source>%1 has no %2: %3.</source>
         <translation>%1没有%2：%3。</translation>
+    </message>
+    <message>
+        <source>error compensation of its own</source>
+        <translation>自身的误差补偿</translation>
     </message>
 </context>
 <context>
@@ -6311,6 +9225,16 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
         <comment>link.state.lost</comment>
         <translation>连接中断</translation>
     </message>
+    <message>
+        <source>%1 has control of the bench: take it back first</source>
+        <comment>request.bench_held</comment>
+        <translation>%1 正在控制工作台：请先收回控制权</translation>
+    </message>
+    <message>
+        <source>this instrument has no alarm lock to release: home it instead</source>
+        <comment>request.no_alarm_lock</comment>
+        <translation>该仪器没有可解除的报警锁定：请改为回零。</translation>
+    </message>
 </context>
 <context>
     <name>words::FileWords</name>
@@ -6705,6 +9629,324 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     </message>
 </context>
 <context>
+    <name>words::GrblBackendWords</name>
+    <message>
+        <source>no answer from %1 within %2: check power, cable and baud rate (GRBL boards usually run at 115200 Bd)</source>
+        <comment>grbl.connect.no_answer</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 sent %2 bytes but no GRBL line within %3: a wrong baud rate, or not a GRBL controller</source>
+        <comment>grbl.connect.no_grbl_line</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 answers like GRBL but never acknowledged a line within %2: it may be busy (in a critical alarm it hears nothing but a reset)</source>
+        <comment>grbl.connect.never_acknowledged</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 stopped answering while it was being identified ($I, $$, $#)</source>
+        <comment>grbl.connect.identify_silent</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 was not answered: %2</source>
+        <comment>grbl.identify.not_answered</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the controller refused %1 with error:%2 (%3)</source>
+        <comment>grbl.identify.refused</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the controller&apos;s settings ($$) do not give its limits: %1 (%2 problems in all)</source>
+        <comment>grbl.identify.no_limits</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the controller reports positions in inches ($13=1) and the machine profile refuses inch reports: set $13=0 on the controller, or &quot;inch_reports&quot;: &quot;convert&quot; in the profile</source>
+        <comment>grbl.identify.inches_refused</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the machine profile drives axis %1 with GRBL axis %2, but this controller has axes %3</source>
+        <comment>grbl.identify.axis_missing</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the machine profile drives the pump with GRBL axis %1, but this controller has axes %2</source>
+        <comment>grbl.identify.pump_axis_missing</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the controller stopped answering: no status report for %1</source>
+        <comment>grbl.silent</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no status report for %1 (%2 unreadable lines: a wrong baud rate or noise?)</source>
+        <comment>grbl.silent_with_noise</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the controller reset by itself</source>
+        <comment>grbl.reset_by_itself</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a reset flushed it</source>
+        <comment>grbl.reset_flushed</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stop: the controller did not come to rest and reset within %1</source>
+        <comment>grbl.stop_timeout</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stop overtaken by the E-stop</source>
+        <comment>grbl.stop_overtaken_by_estop</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2 is beyond the machine travel %3 … %4 (the controller&apos;s $%5): refused before sending, since GRBL would stop with ALARM:2 and need a reset</source>
+        <comment>grbl.beyond_travel</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the line &quot;%2&quot; cannot be sent</source>
+        <comment>grbl.line_not_sent</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the E-stop is latched: reset it first</source>
+        <comment>grbl.estop_latched</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>home: GRBL homes one axis or all of them, not %1</source>
+        <comment>grbl.home_one_or_all</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>set zero: wait until the instrument is still</source>
+        <comment>grbl.set_zero_while_moving</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>set zero: no such axis</source>
+        <comment>grbl.set_zero_no_axis</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>GRBL enforces its machine travel ($130–$132) as its soft limits; other limits cannot be set from here</source>
+        <comment>grbl.soft_limits_fixed</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>move: the controller is in alarm (its position is not trusted): home it, or unlock it on your word</source>
+        <comment>grbl.move_in_alarm</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>move: axis %1 has no established position: home it, or take the present position as home (Set home here, `zero`) first</source>
+        <comment>grbl.move_not_established</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this instrument has no trigger output: the machine profile names none</source>
+        <comment>grbl.no_trigger_output</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>trigger: %1 is not a pulse width</source>
+        <comment>grbl.trigger_bad_width</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>E-stop: feed hold and soft reset; if it was moving, the controller lost its position</source>
+        <comment>grbl.event.estop</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>E-stop latch cleared</source>
+        <comment>grbl.event.estop_cleared</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a path is already running</source>
+        <comment>grbl.path.already_running</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no path begun, or it has ended</source>
+        <comment>grbl.path.not_begun</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>segment %1 expected, %2 sent</source>
+        <comment>grbl.path.out_of_sequence</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the path window is full (room for %1 more segments)</source>
+        <comment>grbl.path.window_full</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>segment %1 asks Z to follow the path: GRBL cannot</source>
+        <comment>grbl.path.z_in_path</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no answer from %1 within %2, neither to a GRBL status query nor to a BenchPilot HELLO: check power, cable and baud rate</source>
+        <comment>grbl.probe.no_answer</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 sent %2 bytes within %3 that are neither GRBL lines nor BenchPilot frames: a wrong baud rate, or another kind of device</source>
+        <comment>grbl.probe.unreadable</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <comment>grbl.probe.found_grbl</comment>
+        <translation type="unfinished">%1 %2</translation>
+    </message>
+    <message>
+        <source>a GRBL controller</source>
+        <comment>grbl.probe.found_grbl_unnamed</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>BenchPilot protocol %1 (%2)</source>
+        <comment>grbl.probe.found_benchpilot</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be one upper-case axis letter (got &quot;%1&quot;)</source>
+        <comment>grbl.profile.axis_letter</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the %1 has axes %2 in that order (got &quot;%3&quot;)</source>
+        <comment>grbl.profile.axes_order</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a GRBL axis (X, Y, Z, A, B, C)</source>
+        <comment>grbl.profile.not_grbl_axis</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>GRBL axis %1 is already used</source>
+        <comment>grbl.profile.grbl_axis_used</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the stage has no pump</source>
+        <comment>grbl.profile.stage_no_pump</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>GRBL axis %1 already drives another axis</source>
+        <comment>grbl.profile.pump_axis_used</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be above 0 and at most %2 (got %1)</source>
+        <comment>grbl.profile.ul_per_mm_range</comment>
+        <translation type="unfinished">必须大于 0 且不大于 %1（当前为 %2） {0 ?} {2 ?} {1)?}</translation>
+    </message>
+    <message>
+        <source>must exceed link_latency_s + refresh_s + 0.01 s (%2), or not even a creeping jog can keep it (got %1)</source>
+        <comment>grbl.profile.stop_budget_too_small</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unlock</source>
+        <comment>grbl.request.unlock</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>dwell</source>
+        <comment>grbl.request.dwell</comment>
+        <translation type="unfinished">停留</translation>
+    </message>
+    <message>
+        <source>trigger</source>
+        <comment>grbl.request.trigger</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>status</source>
+        <comment>grbl.request.status</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a code this version of BenchPilot does not know</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The jog runs at %1 instead of %2, so that it stops within %3 of a release, and of a lost link.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The controller says: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The controller sent: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A line from the controller was not understood and was ignored (%1 so far): %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The controller sent a line longer than %1; the rest of it was dropped (noise, or a wrong baud rate?).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The controller reset by itself; its position is no longer trusted.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The controller reset by itself: %1 lines were lost (the first &quot;%2&quot;); its position is no longer trusted.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>homing is disabled on the controller ($22=0): take the present position as home instead (Set home here)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>GRBL drives its steppers open loop, with no encoder to read and no loop to tune</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>GRBL cannot notice that BenchPilot went away; what is queued ahead of a jog runs out within the machine profile&apos;s stop budget (250 ms unless it says otherwise)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>GRBL enforces only its machine travel ($130–$132)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>its X and Y are not GRBL&apos;s X and Y, and GRBL draws arcs only in its XY plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the machine profile names no pump axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the machine profile names no trigger output</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>words::GrblWords</name>
     <message>
         <source>error %1: %2 (answering &quot;%3&quot;)</source>
@@ -6855,6 +10097,16 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
         <source>no position</source>
         <comment>grbl.status.no_position</comment>
         <translation>没有位置</translation>
+    </message>
+    <message>
+        <source>%1 refused by the controller: error %2: %3 (answering &quot;%4&quot;)</source>
+        <comment>grbl.error.refused</comment>
+        <translation>%1 被控制器拒绝：错误 %2：%3（应答“%4”）</translation>
+    </message>
+    <message>
+        <source>%1 refused by the controller: error %2: %3</source>
+        <comment>grbl.error.refused_no_line</comment>
+        <translation>%1 被控制器拒绝：错误 %2：%3</translation>
     </message>
 </context>
 <context>
@@ -8301,6 +11553,21 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
         <translation>
             <numerusform>多边形至少需要 3 个顶点（当前 %Ln 个）</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>The plan runs with the stage&apos;s own compensation, but this stage keeps none: run without it.</source>
+        <comment>scan.run.no_compensation_on_stage</comment>
+        <translation>本方案依赖载物台自身的误差补偿，但该载物台没有补偿数据：请不使用补偿运行。</translation>
+    </message>
+    <message>
+        <source>Reading whether the stage&apos;s compensation of %1 is enabled…</source>
+        <comment>scan.run.compensation_being_read</comment>
+        <translation>正在读取载物台 %1 轴的补偿是否已启用…</translation>
+    </message>
+    <message>
+        <source>The plan runs with the stage&apos;s own compensation, but it is not enabled on %1: enable it (Calibration screen, or compensation enable --axis %1), or run without it.</source>
+        <comment>scan.run.compensation_not_enabled</comment>
+        <translation>本方案依赖载物台自身的误差补偿，但 %1 轴未启用补偿：请启用（在“标定”界面，或 compensation enable --axis %1），或不使用补偿运行。</translation>
     </message>
 </context>
 <context>

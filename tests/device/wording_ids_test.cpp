@@ -26,6 +26,9 @@ const QSet<QString> kNotIds = {
     QStringLiteral("direction.circle"),     // a field path of the accuracy files
     QStringLiteral("scan.csv"),             // a file name
     QStringLiteral("link.state."),          // the prefix linkStateKey() strips
+    // API method names the CLI's command table spells out (app/cli, docs/api.md).
+    QStringLiteral("device.move"), QStringLiteral("recipe.run"), QStringLiteral("tuning.gains"),
+    QStringLiteral("tuning.step_test"), QStringLiteral("tuning.tune"),
 };
 
 QStringList idLiterals()

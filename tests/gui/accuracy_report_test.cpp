@@ -60,7 +60,7 @@ TEST(AccuracyReport, APdfOfTwoA4PagesWithTheFiguresAndPlots)
     report::AxisReportInput in;
     in.title = QStringLiteral("Positioning accuracy of axis X");
     in.instrument = QStringLiteral("BenchPilot microscope stage (simulated)");
-    in.source = QStringLiteral("laser interferometer");
+    in.source = msg::make("accuracy.source.interferometer");
     in.result = *result.result;
     in.readings = readings.readings;
     in.fit = motion::metrology::fitPolynomials(accuracyfiles::fitPointsOf(in.result.evaluation));

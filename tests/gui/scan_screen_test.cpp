@@ -226,7 +226,7 @@ TEST_F(ScanScreenTest, AnotherPlansRunLogOffersAFreshStartInAnyLanguage)
     ASSERT_EQ(logs(), 1);
 
     // Another plan, same folder, the runner's messages translated.
-    const i18ntest::PseudoTranslation translated({QStringLiteral("jobs::ScanRunner")});
+    const i18ntest::PseudoTranslation translated({QStringLiteral("words::ScanWords")});
     p.overlapX = 0.3;
     screen->setPlan(p);
     settle();

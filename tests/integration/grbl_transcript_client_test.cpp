@@ -230,8 +230,9 @@ TEST(GrblTranscriptClient, ABoardThatNeverAnswersOrAnswersNoiseIsToldWithinSecon
         EXPECT_EQ(why.id, noise ? "grbl.connect.no_grbl_line" : "grbl.connect.no_answer") << why;
         EXPECT_EQ(why.text("link"), r.client.linkDescription().toStdString());
         EXPECT_GT(why.number("seconds"), 0);
-        if (noise)
+        if (noise) {
             EXPECT_GT(why.integer("bytes"), 0);
+        }
         // The second sync went out (a board may still be booting after its port opened).
         EXPECT_GE(std::count(r.port.lines.begin(), r.port.lines.end(), std::string()), 2);
     }

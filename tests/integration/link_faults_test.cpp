@@ -234,7 +234,7 @@ TEST(LinkFaults, DeviceThatNeverAnswersGivesALinkErrorWithinTwoSeconds)
     EXPECT_LT(ms, 2000);
     EXPECT_NE(client.state(), LinkState::Ready);
     EXPECT_TRUE(waitFor([&] { return client.state() == LinkState::Disconnected; }, 1000));
-    EXPECT_TRUE(errors.first().contains(QStringLiteral("no answer"))) << errors.first().toStdString();
+    EXPECT_TRUE(errors.first().startsWith(QStringLiteral("link.no_answer{"))) << errors.first().toStdString();
     client.setTransport(nullptr);
 }
 
@@ -344,7 +344,7 @@ TEST(LinkFaults, SerialPortThatDoesNotExistFailsAtOnceWithAClearMessage)
     EXPECT_EQ(failed.count(), 1);
     EXPECT_EQ(client.state(), LinkState::Disconnected);
     EXPECT_TRUE(errors.first().contains(QStringLiteral("/dev/ttyBP_nonexistent"))) << errors.first().toStdString();
-    EXPECT_TRUE(errors.first().contains(QStringLiteral("no such port"))) << errors.first().toStdString();
+    EXPECT_TRUE(errors.first().startsWith(QStringLiteral("link.no_such_port{"))) << errors.first().toStdString();
     EXPECT_FALSE(port.isOpen());
     client.setTransport(nullptr);
 }

@@ -10,6 +10,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <QRegularExpression>
+
 #include <gtest/gtest.h>
 
 using namespace itest;
@@ -54,13 +56,16 @@ TEST(PlateCli, ValidateListsEveryErrorAndExitsOne)
     ASSERT_TRUE(r.finished);
     EXPECT_EQ(r.exitCode, 1) << r.describe();
     const QStringList expected = {
-        QStringLiteral("bad.recipe.json:7:54: steps[0].volume_ul: volume over capacity: 1200.0 µL is more than the syringe holds (1000.0 µL)"),
+        QStringLiteral("bad.recipe.json:7:54: steps[0].volume_ul: volume over capacity: "),
         QStringLiteral("bad.recipe.json:8:14: steps[1].type: unknown step type \"pipette\""),
         QStringLiteral("bad.recipe.json:9:35: steps[2].plate: unknown plate \"reagents\"; the recipe's plates are \"samples\""),
         QStringLiteral("bad.recipe.json:10:35: steps[3].wells: unknown well \"I13\" on a 96-well plate"),
     };
     for (const QString& e : expected)
         EXPECT_TRUE(r.err.contains(e)) << e.toStdString() << "\n" << r.describe();
+    // The numbers as the locale writes them ("1,200.0" or "1200.0"), with the unit's precision.
+    EXPECT_TRUE(r.err.contains(QRegularExpression(QStringLiteral("1,?200\\.0 µL is more than the syringe holds \\(1,?000\\.0 µL\\)"))))
+        << r.describe();
     const ProgramRun ok = cli({QStringLiteral("recipe"), QStringLiteral("validate"), example("reagent-transfer.recipe.json"),
                                QStringLiteral("--calibration=none")});
     EXPECT_EQ(ok.exitCode, 0) << ok.describe();
@@ -104,7 +109,7 @@ TEST(PlateCli, RunRefusesAnInvalidRecipeBeforeConnecting)
     const ProgramRun r = cli({QStringLiteral("--port"), dir.filePath(QStringLiteral("nowhere")), QStringLiteral("recipe"), QStringLiteral("run"), path,
                               QStringLiteral("--calibration=none")});
     EXPECT_EQ(r.exitCode, 1) << r.describe();
-    EXPECT_TRUE(r.err.contains(QStringLiteral("must be more than 0 µL (got -1)"))) << r.describe();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("must be more than 0 (got -1.0 µL)"))) << r.describe();
     EXPECT_TRUE(r.err.contains(QStringLiteral("nothing moved"))) << r.describe();
     EXPECT_FALSE(r.err.contains(QStringLiteral("cannot connect"))) << r.describe();
 }
@@ -227,7 +232,7 @@ TEST(PlateCli, AnInterruptedWellNeedsTheOperatorsWord)
     ProgramRun r = cli(port + QStringList{QStringLiteral("recipe"), QStringLiteral("run"), recipe, QStringLiteral("--resume"), log,
                                           QStringLiteral("--calibration=none")});
     EXPECT_EQ(r.exitCode, 1) << r.describe();
-    EXPECT_TRUE(r.err.contains(QStringLiteral("aspirate 20 µL from samples A2 was interrupted after its plunger move was sent"))) << r.describe();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("aspirate 20.0 µL from samples A2 was interrupted after its plunger move was sent"))) << r.describe();
     EXPECT_TRUE(r.err.contains(QStringLiteral("--interrupted=skip"))) << r.describe();
     EXPECT_TRUE(r.err.contains(std::abs(p0 - 40) < 1e-6 ? QStringLiteral("its liquid most likely moved in full") : QStringLiteral("no liquid moved")))
         << r.describe();

@@ -273,7 +273,7 @@ TEST_F(PlateDispense, AbortedPartWayThroughAMultiWellDispenseTheResumedRunFillsT
     ASSERT_TRUE(s.waitStill());
     EXPECT_LE(s.readout('Z').commanded, op.safeZMm + 1e-6) << "the tip rose out of the well";
     const auto st = readLog(logPath);
-    EXPECT_EQ(st.lastStop, "aborted by the operator");
+    EXPECT_EQ(st.lastStop, "recipe.run.aborted");
     EXPECT_EQ(st.doneCount(), target) << "every op before it, none after";
     ASSERT_EQ(st.ops[static_cast<std::size_t>(target)].state, platefiles::OpState::Started) << "no liquid had moved into " << op.well;
     const double pAtStop = p();

@@ -217,7 +217,7 @@ TEST_F(PlateRun, AbortStopsAtOnceThenLiftsTheTipAndTheLogResumes)
     EXPECT_LE(z(), 55 + 1e-6) << "Z went up to the safe height once everything was still";
     EXPECT_GE(s.countEvents(proto::EventKind::Stopped, s.axis('Z')), 1) << "the move was stopped, not finished";
     const auto st = readLog(logPath);
-    EXPECT_EQ(st.lastStop, "aborted by the operator");
+    EXPECT_EQ(st.lastStop, "recipe.run.aborted");
     EXPECT_EQ(st.doneCount(), 2);
     EXPECT_EQ(st.ops[2].state, platefiles::OpState::Started) << "no liquid had moved in the third well";
     s.link.host().setTimeScale(kRunTimeScale);

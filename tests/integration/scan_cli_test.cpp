@@ -111,17 +111,17 @@ TEST(ScanCli, BadInputIsNamedByItsOption)
         const char* expect;
     };
     const Case cases[] = {
-        {"scan plan --roi 10,10,20,15 --fov 1,1 --overlap 1.0", "--overlap: must be from 0 to 0.9, a share of the field up to 90 % (got 1 = 100 %)"},
+        {"scan plan --roi 10,10,20,15 --fov 1,1 --overlap 1.0", "--overlap: must be from 0 to 0.9, a share of the field (got 1)"},
         {"scan plan --roi 10,10,20,15 --fov 1,1 --overlap 1.5,0.1", "--overlap: must be from 0 to 0.9"},
-        {"scan plan --roi 10,10,20,15 --fov 120,1", "--fov: the field 120 × 1 mm is larger than the stage's travel 100 × 100 mm"},
-        {"scan plan --roi 10,10,20,15 --sensor 20000,2000 --sensor-um 6.5 --mag 1", "--sensor: the field 130 × 13 mm is larger"},
-        {"scan plan --roi 10,10,10,15 --fov 1,1", "--roi: the region has zero size (0 × 5 mm)"},
+        {"scan plan --roi 10,10,20,15 --fov 120,1", "--fov: the field 120.000 mm × 1.000 mm is larger than the stage's travel 100.000 mm × 100.000 mm"},
+        {"scan plan --roi 10,10,20,15 --sensor 20000,2000 --sensor-um 6.5 --mag 1", "--sensor: the field 130.000 mm × 13.000 mm is larger"},
+        {"scan plan --roi 10,10,10,15 --fov 1,1", "--roi: the region has zero size (0.000 mm × 5.000 mm)"},
         {"scan plan --centre 50,50 --size 0,4 --fov 1,1", "--size: the region has zero size"},
         {"scan plan --roi 10,10,20,15 --fov 1,1 --order zigzag", "--order 'zigzag' is not one of snake-rows, rows, snake-cols, cols"},
         {"scan plan --roi 10,10,20,15 --fov 1,1 --start middle", "--start 'middle' is not one of top-left"},
         {"scan plan --roi 10,10,20 --fov 1,1", "--roi '10,10,20' needs 4 comma-separated numbers"},
         {"scan plan --roi 10,10,20,15 --fov 1,x", "--fov '1,x': 'x' is not a number"},
-        {"scan plan --roi 90,10,120,15 --fov 1,1", "--roi: the region X 90 … 120, Y 10 … 15 mm reaches beyond the stage's travel"},
+        {"scan plan --roi 90,10,120,15 --fov 1,1", "--roi: the region X 90.000 mm … 120.000 mm, Y 10.000 mm … 15.000 mm reaches beyond the stage's travel"},
         {"scan plan --roi 10,10,20,15 --fov 1,1 --format png", "--format 'png' is not one of"},
         {"scan plan --fov 1,1", "give the region"},
         {"scan plan --roi 10,10,20,15", "give the camera field"},
@@ -171,7 +171,7 @@ TEST(ScanCli, AnotherPlansRunLogAsksForRestartInAnyLanguage)
     ASSERT_TRUE(QFile::exists(QDir(out).filePath(QLatin1String(scanfile::kRunLogFile))));
 
     // The runner's messages translated: the hint must not depend on their English words.
-    const i18ntest::PseudoTranslation translated({QStringLiteral("jobs::ScanRunner")});
+    const i18ntest::PseudoTranslation translated({QStringLiteral("words::ScanWords")});
     const CliOutput other = scanCli(QStringLiteral("--sim stage scan run %1 --out %2").arg(planB, out));
     EXPECT_EQ(other.code, 1) << "a usage problem: the command line decides";
     EXPECT_TRUE(other.err.contains(QStringLiteral("--restart starts over"))) << other.err.toStdString();

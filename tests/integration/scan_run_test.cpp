@@ -390,10 +390,16 @@ TEST(ScanRun, TheStagesOwnCompensationPutsTheWorkPointOnThePlan)
     {
         QTemporaryDir dir;
         auto r = s.runner();
-        QString error;
-        ASSERT_TRUE(r->prepare(p, dir.path(), false, &error)) << error.toStdString();
-        ASSERT_TRUE(waitFor([&] { return !r->preflight().join(QString()).contains(QStringLiteral("Reading")); }, 5000));
-        EXPECT_TRUE(r->preflight().join(QString()).contains(QStringLiteral("not enabled on X"))) << r->preflight().join(QLatin1Char('\n')).toStdString();
+        msg::Message error;
+        ASSERT_TRUE(r->prepare(p, dir.path(), false, &error)) << error;
+        const auto has = [&](const char* id) {
+            for (const msg::Message& m : r->preflight())
+                if (m.id == id)
+                    return true;
+            return false;
+        };
+        ASSERT_TRUE(waitFor([&] { return !has("scan.run.compensation_being_read"); }, 5000));
+        EXPECT_TRUE(has("scan.run.compensation_not_enabled"));
         EXPECT_FALSE(r->start(&error));
     }
     dev::CompensationClient* comp = s.session.client.compensation();

@@ -210,12 +210,12 @@ TEST(TuningModel, TheRunnerTunesAModelPlantLikeTheModelTuner)
     dev::ModelTarget target(*motion::control::parsePlant("fopdt:K=2,tau=0.5,L=0.1"));
     TuningRunner runner;
     bool done = false, ok = false;
-    QObject::connect(&runner, &TuningRunner::finished, &runner, [&](bool good, const QString&) {
+    QObject::connect(&runner, &TuningRunner::finished, &runner, [&](bool good, const msg::Message&) {
         done = true;
         ok = good;
     });
     double lastFraction = 0;
-    QObject::connect(&runner, &TuningRunner::progress, &runner, [&](double f, const QString&) { lastFraction = f; });
+    QObject::connect(&runner, &TuningRunner::progress, &runner, [&](double f, const msg::Message&) { lastFraction = f; });
     TuningRunner::ZnOptions o;
     o.method = TuningMethod::Relay;
     o.envelope = {3, 3, 600};

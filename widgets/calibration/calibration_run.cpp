@@ -357,7 +357,7 @@ void CalibrationScreen::onAxisFinished()
         m_latestTest = *a;
         m_latestReadings = m_runner->readings();
         m_latestBasePath = m_runner->basePath();
-        m_latestSource = m_source ? m_source->describe() : QString::fromStdString(r.reference);
+        m_latestSource = m_source ? m_source->describe() : msg::make("accuracy.source.recorded", {msg::verbatim("reference", r.reference)});
         m_fit->setEvaluation(r.axis, r.evaluation);
         showResult();
         showBeforeAfter();

@@ -408,9 +408,9 @@ bool CalibrationScreen::openTest(const QString& path)
 
 bool CalibrationScreen::saveTest(const QString& path)
 {
-    QString error;
+    msg::Message error;
     if (!accuracyfiles::saveAccuracyTestFile(path, m_form->test(), &error)) {
-        emit problem(error);
+        emit problem(words::text(error));
         return false;
     }
     emit notice(tr("Saved %1.").arg(path));
@@ -430,9 +430,9 @@ void CalibrationScreen::saveCompensation()
     if (const auto* c = m_fit->fit().chosen())
         file.fit = accuracyfiles::FitRecord{c->order, c->sseUm2, c->r2, c->adjustedR2, static_cast<int>(c->points), m_fit->fit().chosenByOperator};
     file.source = m_latest ? m_latest->readingsFile : std::string();
-    QString error;
+    msg::Message error;
     if (!accuracyfiles::saveCompensationFile(path, file, &error))
-        emit problem(error);
+        emit problem(words::text(error));
     else
         emit notice(tr("Saved %1.").arg(path));
 }

@@ -136,7 +136,7 @@ private:
     std::optional<motion::metrology::AxisTest> m_latestTest;
     std::vector<motion::metrology::Reading> m_latestReadings;
     QString m_latestBasePath;  ///< the latest axis run's files without their endings
-    QString m_latestSource;    ///< how its readings were taken, for its report
+    msg::Message m_latestSource;  ///< how its readings were taken, for its report
     bool m_opening = false;    ///< a run waits for its source (a gauge's port) to open
     std::optional<motion::metrology::CircularEvaluation> m_circleResult;
     FileChooser m_chooser;

@@ -280,7 +280,7 @@ void FitPanel::upload()
             return;
         self->m_busy = false;
         if (e)
-            emit self->problem(tr("The instrument refused the compensation: %1").arg(e->message));
+            emit self->problem(tr("The instrument refused the compensation: %1").arg(words::text(e->message)));
         else
             emit self->notice(tr("Compensation of %1 uploaded (disabled until you enable it).").arg(QString::fromStdString(self->m_axis)));
         self->refreshDevice();
@@ -300,7 +300,7 @@ void FitPanel::setEnabledOnDevice(bool on)
             return;
         self->m_busy = false;
         if (e)
-            emit self->problem(tr("The instrument refused: %1").arg(e->message));
+            emit self->problem(tr("The instrument refused: %1").arg(words::text(e->message)));
         self->refreshDevice();
         emit self->deviceChanged();
     });

@@ -177,7 +177,9 @@ QString AccuracyBenchWords::run(const msg::Message& m)
     if (id == "accuracy.run.timed_out")
         return tr("The run took far longer than its estimate and was aborted.");
     if (id == "accuracy.run.path_aborted")
-        return tr("The circle's path was aborted: %1").arg(benchArg(m, "detail"));
+        // The controller's own words when it gave some (ALARM:2), else the plain fact.
+        return m.text("detail").empty() ? tr("The circle's path was aborted.")
+                                        : tr("The circle's path was aborted: %1").arg(benchArg(m, "detail"));
     return {};
 }
 
@@ -320,6 +322,8 @@ QString AccuracyBenchWords::source(const msg::Message& m)
         return tr("gauge on %1").arg(benchArg(m, "port"));
     if (id == "accuracy.source.manual")
         return tr("manual entry");
+    if (id == "accuracy.source.recorded")  // a finished run's own record of its source
+        return tr("as recorded: %1").arg(benchArg(m, "reference"));
     if (id == "accuracy.source.interferometer")
         return tr("laser interferometer (imported after the run)");
     return {};

@@ -10,6 +10,7 @@ namespace {
 
 // clang-format off
 const Row kRows[] = {
+    {"request.bench_held", QT_TRANSLATE_NOOP3("words::DeviceWords", "%1 has control of the bench: take it back first", "request.bench_held"), "holder"},
     {"request.no_alarm_lock", QT_TRANSLATE_NOOP3("words::DeviceWords", "this instrument has no alarm lock to release: home it instead", "request.no_alarm_lock")},
     {"request.not_sent", QT_TRANSLATE_NOOP3("words::DeviceWords", "%1 not sent: the instrument is not connected", "request.not_sent"), "request"},
     {"request.no_reply", QT_TRANSLATE_NOOP3("words::DeviceWords", "no reply to %1 after %2 attempts (%3): the device is not answering", "request.no_reply"), "request,attempts,seconds"},
