@@ -8124,6 +8124,10 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
         <source>disable compensation</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>as recorded: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>words::AccuracyWords</name>
@@ -11567,7 +11571,7 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     <message>
         <source>The plan runs with the stage&apos;s own compensation, but it is not enabled on %1: enable it (Calibration screen, or compensation enable --axis %1), or run without it.</source>
         <comment>scan.run.compensation_not_enabled</comment>
-        <translation>本方案依赖载物台自身的误差补偿，但 %1 轴未启用补偿：请启用（在“标定”界面，或 compensation enable --axis %1），或不使用补偿运行。</translation>
+        <translation>本方案依赖载物台自身的误差补偿，但 %1 轴未启用补偿：请启用（在“校准”界面，或 compensation enable --axis %1），或不使用补偿运行。</translation>
     </message>
 </context>
 <context>
