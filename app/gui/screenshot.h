@@ -1,6 +1,8 @@
 #pragma once
 #include <QString>
 
+#include <functional>
+
 namespace app {
 
 struct ScreenshotRequest {
@@ -17,5 +19,8 @@ struct ScreenshotRequest {
 /// Renders one screen of a fresh main window (simulated instruments, no saved
 /// settings) to a PNG. Returns the process exit code; errors go to stderr.
 int takeScreenshot(const ScreenshotRequest& request);
+
+/// Runs the event loop until `done` holds or `ms` have passed; what `done` says then.
+bool runUntil(const std::function<bool()>& done, int ms);
 
 } // namespace app

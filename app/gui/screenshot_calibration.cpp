@@ -6,6 +6,7 @@
 
 #include "instrument_session.h"
 #include "main_window.h"
+#include "screenshot.h"
 #include "device/jobs/accuracy/accuracy_runner.h"
 #include "device/link/simulated_link.h"
 #include "widgets/calibration/calibration_screen.h"
@@ -21,20 +22,6 @@
 
 namespace app {
 
-namespace {
-bool calibrationShotUntil(const std::function<bool()>& done, int ms)
-{
-    QElapsedTimer t;
-    t.start();
-    while (!done() && t.elapsed() < ms) {
-        QEventLoop loop;
-        QTimer::singleShot(10, &loop, &QEventLoop::quit);
-        loop.exec();
-    }
-    return done();
-}
-} // namespace
-
 bool showCalibrationAtWork(MainWindow& w, const QString& scratchFolder)
 {
     ui::CalibrationScreen* screen = w.calibrationScreen();
@@ -43,13 +30,13 @@ bool showCalibrationAtWork(MainWindow& w, const QString& scratchFolder)
     ui::ConnectionChoice choice;
     choice.baud = 0;
     w.stage()->connectTo(choice);
-    if (!calibrationShotUntil([&] { return stage->isReady(); }, 5000))
+    if (!runUntil([&] { return stage->isReady(); }, 5000))
         return false;
     auto* link = qobject_cast<dev::SimulatedLink*>(w.stage()->link());
     if (!link)
         return false;
     stage->home(0);
-    if (!calibrationShotUntil([&] { return !stage->status().axes.isEmpty() && stage->status().axes[0].homed && stage->status().axes[1].homed
+    if (!runUntil([&] { return !stage->status().axes.isEmpty() && stage->status().axes[0].homed && stage->status().axes[1].homed
                              && !stage->status().anyMoving(); },
                   30000))
         return false;
@@ -70,17 +57,17 @@ bool showCalibrationAtWork(MainWindow& w, const QString& scratchFolder)
     screen->setSource(QStringLiteral("gauge"), QStringLiteral("sim"));
     screen->setOutputFolder(QDir(scratchFolder).filePath(QStringLiteral("accuracy")));
     auto finished = [&] { return screen->runner() && screen->runner()->state() == jobs::AccuracyRunner::State::Finished; };
-    if (!screen->run() || !calibrationShotUntil(finished, 120000))
+    if (!screen->run() || !runUntil(finished, 120000))
         return false;
     // The fit of those readings to the stage, enabled, and the same test again.
     screen->fitPanel()->findChild<QPushButton*>(QStringLiteral("fitUpload"))->click();
-    if (!calibrationShotUntil([&] { return screen->fitPanel()->findChild<QPushButton*>(QStringLiteral("fitEnable"))->isEnabled(); }, 10000))
+    if (!runUntil([&] { return screen->fitPanel()->findChild<QPushButton*>(QStringLiteral("fitEnable"))->isEnabled(); }, 10000))
         return false;
     screen->fitPanel()->findChild<QPushButton*>(QStringLiteral("fitEnable"))->click();
-    if (!calibrationShotUntil([&] { return screen->fitPanel()->findChild<QPushButton*>(QStringLiteral("fitDisable"))->isEnabled(); }, 10000))
+    if (!runUntil([&] { return screen->fitPanel()->findChild<QPushButton*>(QStringLiteral("fitDisable"))->isEnabled(); }, 10000))
         return false;
     screen->setOutputFolder(QDir(scratchFolder).filePath(QStringLiteral("accuracy-after")));
-    if (!screen->run() || !calibrationShotUntil(finished, 120000))
+    if (!screen->run() || !runUntil(finished, 120000))
         return false;
     link->host().setTimeScale(1);
     screen->tabs()->setCurrentIndex(3);

@@ -5,6 +5,7 @@
 
 #include "instrument_session.h"
 #include "main_window.h"
+#include "screenshot.h"
 #include "device/jobs/scan_runner.h"
 #include "widgets/scan/scan_screen.h"
 #include "widgets/scan/scan_stage_map.h"
@@ -16,7 +17,7 @@
 
 namespace app {
 
-namespace {
+/// The screenshot scripts wait on the GUI's own event loop (screenshot.h).
 bool runUntil(const std::function<bool()>& done, int ms)
 {
     QElapsedTimer t;
@@ -28,7 +29,6 @@ bool runUntil(const std::function<bool()>& done, int ms)
     }
     return done();
 }
-} // namespace
 
 bool showScanAtWork(MainWindow& w, const QString& scratchFolder)
 {
