@@ -103,6 +103,8 @@ QVector<MethodParam> methodParams(const CommandMethod& m)
             out.push_back({p.name, p.type, p.description, p.required, {}, p.choices, {}, false});
     for (const QCommandLineOption& o : m.command->options) {
         const QString option = o.names().constLast();
+        if (spec.cliOnly.contains(option))
+            continue;
         MethodParam mp;
         mp.option = option;
         mp.name = jsonName(option);

@@ -39,8 +39,7 @@ QJsonObject problemJson(const motion::metrology::Problem& p)
 
 void printJson(Invocation& inv, const QJsonObject& o)
 {
-    inv.out() << QJsonDocument(o).toJson(QJsonDocument::Compact) << "\n";
-    inv.out().flush();
+    inv.printJson(o);  // the API's result is this object, not its text
 }
 
 bool reportProblems(Invocation& inv, const accuracyfiles::FileProblems& problems)
@@ -144,6 +143,13 @@ void printFiguresText(Invocation& inv, const accuracyfiles::AccuracyResult& r)
                      .arg(v.pass ? tr("pass") : tr("FAIL"));
     }
     o.flush();
+}
+
+QString timeScaleRefusal(Invocation& inv)
+{
+    if (inv.host().insideGui())
+        return tr("--time-scale speeds up benchpilot-cli's own simulator; the GUI's simulators keep their pace");
+    return tr("--time-scale speeds up the in-process simulator: use it with --sim");
 }
 
 } // namespace cli

@@ -32,6 +32,10 @@ void printJson(Invocation& inv, const QJsonObject& o);
 /// A number rounded to the nanometre (mm) for JSON.
 double nm6(double v);
 
+/// Why --time-scale is refused here: it speeds up benchpilot-cli's own simulator only
+/// (the GUI's simulators keep the pace its screens and other clients rely on).
+QString timeScaleRefusal(Invocation& inv);
+
 /// The figures as a small text table for a person.
 void printFiguresText(Invocation& inv, const accuracyfiles::AccuracyResult& r);
 

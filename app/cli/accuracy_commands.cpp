@@ -58,7 +58,7 @@ int analyze(Invocation& inv)
 {
     if (inv.arguments().size() != 1)
         return inv.usage(tr("give one readings CSV"));
-    const QString path = inv.arguments().front();
+    const QString path = inv.path(inv.arguments().front());
     std::string text, name = QFileInfo(path).fileName().toStdString();
     msg::Message error;
     if (!files::readText(path, &text, &error)) {
@@ -76,7 +76,7 @@ int analyze(Invocation& inv)
     r.readingsFile = name;
     r.createdUtc = QDateTime::currentDateTimeUtc().toString(Qt::ISODate).toStdString();
     if (inv.isSet(QStringLiteral("out"))) {
-        if (!accuracyfiles::saveAccuracyResultFile(inv.value(QStringLiteral("out")), r, &error))
+        if (!accuracyfiles::saveAccuracyResultFile(inv.path(inv.value(QStringLiteral("out"))), r, &error))
             return reportFailure(inv, error, Refused);
     }
     if (inv.json())
@@ -90,17 +90,17 @@ int importInterferometer(Invocation& inv)
 {
     if (inv.arguments().size() != 1 || !inv.isSet(QStringLiteral("sequence")))
         return inv.usage(tr("give --sequence TARGETS.csv and the interferometer's CSV export"));
-    const auto sequence = accuracyfiles::loadTargetSequence(inv.value(QStringLiteral("sequence")));
+    const auto sequence = accuracyfiles::loadTargetSequence(inv.path(inv.value(QStringLiteral("sequence"))));
     if (reportProblems(inv, sequence.problems))
         return Usage;
-    const auto imported = accuracyfiles::loadInterferometerExport(inv.arguments().front(), sequence.stops);
+    const auto imported = accuracyfiles::loadInterferometerExport(inv.path(inv.arguments().front()), sequence.stops);
     if (reportProblems(inv, imported.problems))
         return Usage;
     const auto evaluation = motion::metrology::evaluate(imported.readings);
     msg::Message error;
-    QString out = inv.value(QStringLiteral("out"));
-    if (out.isEmpty()) {
-        out = inv.value(QStringLiteral("sequence"));
+    QString out = inv.path(inv.value(QStringLiteral("out")));
+    if (inv.value(QStringLiteral("out")).isEmpty()) {
+        out = inv.path(inv.value(QStringLiteral("sequence")));
         out.replace(QStringLiteral(".targets.csv"), QString());
         out += QStringLiteral(".readings.csv");
     }
@@ -165,7 +165,7 @@ int circle(Invocation& inv)
 {
     motion::metrology::CircularTest t;
     if (inv.isSet(QStringLiteral("test"))) {
-        const auto read = accuracyfiles::loadAccuracyTestFile(inv.value(QStringLiteral("test")));
+        const auto read = accuracyfiles::loadAccuracyTestFile(inv.path(inv.value(QStringLiteral("test"))));
         if (reportProblems(inv, read.problems) || !read.test)
             return Usage;
         const auto* c = std::get_if<motion::metrology::CircularTest>(&*read.test);
@@ -199,8 +199,8 @@ int circle(Invocation& inv)
     double timeScale = 1;
     if (!inv.number(QStringLiteral("time-scale"), timeScale, 1.0))
         return Usage;
-    if (inv.isSet(QStringLiteral("time-scale")) && inv.link().sim.isEmpty())
-        return inv.usage(tr("--time-scale speeds up the in-process simulator: use it with --sim"));
+    if (inv.isSet(QStringLiteral("time-scale")) && (inv.link().sim.isEmpty() || inv.host().insideGui()))
+        return inv.usage(timeScaleRefusal(inv));
     if (timeScale != 1)
         inv.unpaceSimulatedLink();
     const auto staticProblems = motion::metrology::validate(t);
@@ -219,10 +219,8 @@ int circle(Invocation& inv)
         session->parseAxes(QStringLiteral("XY"), &mask);
         if (int rc = session->request([&](auto cb) { instrument->home(mask, cb); }, tr("home")))
             return rc;
-        spinUntil([&] {
-            const auto& s = instrument->status();
-            return s.axes.size() >= 2 && s.axes[0].homed && s.axes[1].homed && !s.anyMoving();
-        }, static_cast<int>(inv.link().timeoutS * 1000));
+        if (!session->waitUntilHomed(mask))
+            return reportFailure(inv, msg::make("accuracy.run.not_homed", {msg::verbatim("axis", "XY")}), Refused);
     }
     jobs::CircleRunner runner(instrument);
     motion::metrology::Problems problems;
@@ -250,7 +248,7 @@ int circle(Invocation& inv)
     QJsonObject o = circleJson(t, e);
     QJsonArray files;
     if (inv.isSet(QStringLiteral("out"))) {
-        const QString dir = inv.value(QStringLiteral("out"));
+        const QString dir = inv.path(inv.value(QStringLiteral("out")));
         QDir().mkpath(dir);
         const QString base = QDir(dir).filePath(QStringLiteral("circle-r%1").arg(t.radiusMm));
         QString error;
@@ -325,11 +323,45 @@ void addAccuracyCommands(std::vector<Command>& list)
                        option("out", "the readings CSV to write (default: beside the sequence)", "file"),
                        option("axis", "the axis the readings are of", "letter", "X")},
                       &importInterferometer, {}};
+    const QList<ApiParam> limits{optionParam("tolerance-a", ParamType::Number), optionParam("tolerance-r", ParamType::Number),
+                                 optionParam("tolerance-e", ParamType::Number), optionParam("tolerance-m", ParamType::Number),
+                                 optionParam("tolerance-b", ParamType::Number)};
+    run.api.access = Access::Control;
+    run.api.cliOnly = QStringList{QStringLiteral("time-scale")};
+    run.api.params = {optionParam("axis", ParamType::Axis),         optionParam("cycles", ParamType::Integer),
+                      optionParam("feed", ParamType::Number),       optionParam("dwell", ParamType::Number),
+                      optionParam("overrun", ParamType::Number),    optionParam("test", ParamType::File),
+                      optionParam("out", ParamType::File),          optionParam("gauge-baud", ParamType::Integer),
+                      optionParam("gauge-timeout", ParamType::Number)};
+    run.api.example = QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")}, {QStringLiteral("axis"), QStringLiteral("X")},
+                                  {QStringLiteral("targets"), QStringLiteral("20:60:5")}, {QStringLiteral("irregular"), true},
+                                  {QStringLiteral("cycles"), 2}, {QStringLiteral("dwell"), 0.1},
+                                  {QStringLiteral("home"), true},
+                                  {QStringLiteral("out"), QStringLiteral("x-run")}};
+    analyzeCmd.api.access = Access::Compute;
+    analyzeCmd.api.params = QList<ApiParam>{{QStringLiteral("readings"), ParamType::File, tr("the readings CSV"), true, {}, {}},
+                                            optionParam("axis", ParamType::Axis), optionParam("out", ParamType::File)}
+                            + limits;
+    analyzeCmd.api.example = QJsonObject{{QStringLiteral("readings"), QStringLiteral("resources/examples/stage-x-interferometer.readings.csv")},
+                                         {QStringLiteral("tolerance_a"), 0.01}};
+    circleCmd.api.access = Access::Control;
+    circleCmd.api.cliOnly = QStringList{QStringLiteral("time-scale")};
+    ApiParam directions = optionParam("directions", ParamType::Text);
+    directions.choices = QStringList{QStringLiteral("cw"), QStringLiteral("ccw"), QStringLiteral("cw,ccw")};
+    circleCmd.api.params = {optionParam("radius", ParamType::Number), optionParam("feed", ParamType::Number),
+                            optionParam("centre", ParamType::Numbers), directions, optionParam("lead", ParamType::Number),
+                            optionParam("samples", ParamType::Integer), optionParam("test", ParamType::File),
+                            optionParam("out", ParamType::File)};
+    circleCmd.api.example = QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")}, {QStringLiteral("radius"), 2},
+                                        {QStringLiteral("feed"), 5}, {QStringLiteral("centre"), QJsonArray{15, 15}}};
+    importCmd.api.access = Access::Compute;
+    importCmd.api.params = {{QStringLiteral("export"), ParamType::File, tr("the interferometer software's CSV export"), true, {}, {}},
+                            optionParam("sequence", ParamType::File, true), optionParam("out", ParamType::File),
+                            optionParam("axis", ParamType::Axis)};
+    importCmd.api.example = QJsonObject{{QStringLiteral("export"), QStringLiteral("resources/examples/stage-x-xl80.interferometer.csv")},
+                                        {QStringLiteral("sequence"), QStringLiteral("resources/examples/stage-x-xl80.targets.csv")},
+                                        {QStringLiteral("out"), QStringLiteral("x-imported.readings.csv")}};
     accuracy.subcommands = {run, analyzeCmd, circleCmd, importCmd};
-    // Not API methods yet: their parameters and checked examples (docs/api.md) are still to
-    // be written; a half-typed method would take any words. The CLI has them all.
-    for (Command& c : accuracy.subcommands)
-        c.api.offered = false;
     list.push_back(accuracy);
 }
 

@@ -69,7 +69,7 @@ bool parseTargets(Invocation& inv, const QString& text, motion::metrology::AxisT
 bool buildTest(Invocation& inv, accuracyfiles::AccuracyTest& out)
 {
     if (inv.isSet(QStringLiteral("test"))) {
-        const auto read = accuracyfiles::loadAccuracyTestFile(inv.value(QStringLiteral("test")));
+        const auto read = accuracyfiles::loadAccuracyTestFile(inv.path(inv.value(QStringLiteral("test"))));
         if (reportProblems(inv, read.problems) || !read.test)
             return false;
         if (std::holds_alternative<motion::metrology::CircularTest>(*read.test)) {
@@ -105,10 +105,10 @@ bool buildTest(Invocation& inv, accuracyfiles::AccuracyTest& out)
     return true;
 }
 
-QString defaultFolder(const accuracyfiles::AccuracyTest& t)
+QString defaultFolder(const Invocation& inv, const accuracyfiles::AccuracyTest& t)
 {
     const std::string name = std::visit([](const auto& x) { return x.name; }, t);
-    return QDir::current().filePath(QString::fromStdString(name.empty() ? "accuracy" : name));
+    return inv.path(QString::fromStdString(name.empty() ? "accuracy" : name));
 }
 
 QJsonArray filesJson(const QStringList& files)
@@ -130,11 +130,11 @@ int runAccuracy(Invocation& inv)
     double timeScale = 1;
     if (!inv.number(QStringLiteral("time-scale"), timeScale, 1.0))
         return Usage;
-    if (inv.isSet(QStringLiteral("time-scale")) && inv.link().sim.isEmpty())
-        return inv.usage(tr("--time-scale speeds up the in-process simulator: use it with --sim"));
+    if (inv.isSet(QStringLiteral("time-scale")) && (inv.link().sim.isEmpty() || inv.host().insideGui()))
+        return inv.usage(timeScaleRefusal(inv));
     if (!(timeScale > 0 && timeScale <= 100))
         return inv.usage(tr("--time-scale must be from 0 to 100"));
-    const QString folder = inv.isSet(QStringLiteral("out")) ? inv.value(QStringLiteral("out")) : defaultFolder(test);
+    const QString folder = inv.isSet(QStringLiteral("out")) ? inv.path(inv.value(QStringLiteral("out"))) : defaultFolder(inv, test);
     if (timeScale != 1)
         inv.unpaceSimulatedLink();
 
@@ -152,13 +152,7 @@ int runAccuracy(Invocation& inv)
             session->parseAxes(QStringLiteral("XY"), &mask);
         if (int rc = session->request([&](auto cb) { instrument->home(mask, cb); }, tr("home")))
             return rc;
-        if (!spinUntil([&] {
-                for (int i = 0; i < instrument->status().axes.size(); ++i)
-                    if ((mask & (1u << i)) && (!instrument->status().axes[i].homed || instrument->status().axes[i].moving))
-                        return false;
-                return true;
-            },
-                       static_cast<int>(inv.link().timeoutS * 1000)))
+        if (!session->waitUntilHomed(mask))
             return reportFailure(inv, msg::make("accuracy.run.not_homed", {msg::verbatim("axis", "")}), Refused);
     }
     int axisIndex = 0;

@@ -44,8 +44,14 @@ jobs::ReadingSource* makeSource(Invocation& inv, CliSession& session, const QStr
 {
     if (spec == QLatin1String("readback"))
         return new jobs::ReadbackSource(session.instrument(), owner);
-    if (spec == QLatin1String("manual"))
+    if (spec == QLatin1String("manual")) {
+        // Readings are typed on standard input; the GUI's has nobody at it.
+        if (inv.host().insideGui()) {
+            inv.usage(tr("--source manual reads what a person types at benchpilot-cli; in the GUI use the Calibration screen"));
+            return nullptr;
+        }
         return new jobs::ManualSource(owner);
+    }
     if (spec == QLatin1String("interferometer"))
         return new jobs::InterferometerSource(owner);
     if (!spec.startsWith(QLatin1String("gauge:")) || spec.size() <= 6) {
@@ -64,7 +70,11 @@ jobs::ReadingSource* makeSource(Invocation& inv, CliSession& session, const QStr
     if (port == QLatin1String("sim")) {
         auto* link = qobject_cast<dev::SimulatedLink*>(session.link());
         if (!link) {
-            inv.usage(tr("--source gauge:sim reads the in-process simulator's gauge: use it with --sim"));
+            // Inside the GUI the session never hands out the GUI's link (its clock and
+            // machine are the screens'); its Calibration screen offers the simulated gauge.
+            inv.usage(inv.host().insideGui() ? tr("--source gauge:sim is benchpilot-cli's own simulator's gauge: inside the GUI give the "
+                                                  "gauge's port, or use the Calibration screen's simulated gauge")
+                                             : tr("--source gauge:sim reads the in-process simulator's gauge: use it with --sim"));
             return nullptr;
         }
         auto* gauge = new dev::SimulatedGauge(link->machine(), axis, {}, owner);

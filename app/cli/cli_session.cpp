@@ -186,6 +186,27 @@ int CliSession::request(const std::function<void(dev::Instrument::Callback)>& se
     return Ok;
 }
 
+bool CliSession::waitUntilHomed(quint8 mask)
+{
+    int fresh = 0;
+    auto c = connect(m_client, &dev::Instrument::statusChanged, this, [&fresh] { ++fresh; });
+    const bool homed = spinUntil(
+        [&] {
+            if (m_client->state() != dev::LinkState::Ready)
+                return true;
+            if (fresh < 2)
+                return false;
+            const auto& axes = m_client->status().axes;
+            for (int i = 0; i < axes.size(); ++i)
+                if ((mask & (1u << i)) && (!axes[i].homed || axes[i].moving))
+                    return false;
+            return !m_client->status().anyMoving();
+        },
+        static_cast<int>(m_opt.timeoutS * 1000));
+    disconnect(c);
+    return homed && m_client->state() == dev::LinkState::Ready;
+}
+
 int CliSession::waitUntilStill(const QString& what)
 {
     // Asked to stop (the API's call.cancel or the GUI's Abort): the machine decelerates

@@ -43,6 +43,10 @@ public:
     int request(const std::function<void(dev::Instrument::Callback)>& send, const QString& what);
     /// Waits until no axis moves (or the timeout, then stops the machine); prints the status.
     int waitUntilStill(const QString& what);
+    /// After a home request was accepted: waits, quietly, until the axes in `mask` are
+    /// homed and at rest in a status read after the request (an axis homed before looks
+    /// done at once in the last one). False on timeout or a lost link.
+    bool waitUntilHomed(quint8 mask);
     /// Axis letters ("XY", "X,Z") to a mask; false after a usage message.
     bool parseAxes(const QString& text, quint8* mask);
     void printStatus();

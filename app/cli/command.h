@@ -85,6 +85,9 @@ struct ApiSpec {
     QList<ApiParam> params;         ///< positional words in order, and options given a type
     QJsonObject example;            ///< params of the example in docs/api.md (checked by a test)
     bool offered = true;            ///< false: not a method (`completion`)
+    /// Options the API does not offer: they act on benchpilot-cli's own process
+    /// (`time-scale` speeds up its own simulator), not on the GUI's instruments.
+    QStringList cliOnly;
 };
 
 struct Command {

@@ -79,7 +79,7 @@ int fit(Invocation& inv)
 {
     if (inv.arguments().size() != 1)
         return inv.usage(tr("give one result JSON or error-curve CSV"));
-    const QString path = inv.arguments().front();
+    const QString path = inv.path(inv.arguments().front());
     std::optional<int> order;
     const QString orderText = inv.value(QStringLiteral("order"));
     if (!orderText.isEmpty() && orderText != QLatin1String("auto")) {
@@ -143,9 +143,10 @@ int fit(Invocation& inv)
         const auto problems = motion::metrology::validate(file.model);
         if (reportProblems(inv, problems))
             return Refused;
-        if (!accuracyfiles::saveCompensationFile(inv.value(QStringLiteral("out")), file, &error))
+        const QString out = inv.path(inv.value(QStringLiteral("out")));
+        if (!accuracyfiles::saveCompensationFile(out, file, &error))
             return reportFailure(inv, error, Refused);
-        files.append(inv.value(QStringLiteral("out")));
+        files.append(out);
     }
     QJsonArray orders;
     for (const auto& f : table.orders)
@@ -269,7 +270,7 @@ int upload(Invocation& inv)
 {
     if (inv.arguments().size() != 1)
         return inv.usage(tr("give one compensation file"));
-    const auto read = accuracyfiles::loadCompensationFile(inv.arguments().front());
+    const auto read = accuracyfiles::loadCompensationFile(inv.path(inv.arguments().front()));
     if (reportProblems(inv, read.problems) || !read.compensation)
         return Usage;
     int axis = -1;
@@ -323,7 +324,7 @@ int exportCompensation(Invocation& inv)
         return inv.usage(tr("--format '%1': linuxcnc or csv").arg(format));
     CompensationModel model;
     if (!inv.arguments().isEmpty()) {
-        const auto read = accuracyfiles::loadCompensationFile(inv.arguments().front());
+        const auto read = accuracyfiles::loadCompensationFile(inv.path(inv.arguments().front()));
         if (reportProblems(inv, read.problems) || !read.compensation)
             return Usage;
         model = read.compensation->model;
@@ -351,10 +352,11 @@ int exportCompensation(Invocation& inv)
     }
     if (inv.isSet(QStringLiteral("out"))) {
         msg::Message error;
-        if (!files::writeAtomically(inv.value(QStringLiteral("out")), text, &error))
+        const QString out = inv.path(inv.value(QStringLiteral("out")));
+        if (!files::writeAtomically(out, text, &error))
             return reportFailure(inv, error, Refused);
         if (inv.json())
-            printJson(inv, QJsonObject{{QStringLiteral("ok"), true}, {QStringLiteral("files"), QJsonArray{inv.value(QStringLiteral("out"))}}});
+            printJson(inv, QJsonObject{{QStringLiteral("ok"), true}, {QStringLiteral("files"), QJsonArray{out}}});
         return Ok;
     }
     inv.out() << QString::fromStdString(text);
@@ -391,8 +393,46 @@ void addCompensationCommands(std::vector<Command>& list)
           option("out", "write here instead of standard output", "file"), axis},
          &exportCompensation, {}},
     };
-    for (Command& c : comp.subcommands)  // CLI only for now, as the accuracy commands
-        c.api.offered = false;
+    const QJsonObject onStageX{{QStringLiteral("instrument"), QStringLiteral("stage")}, {QStringLiteral("axis"), QStringLiteral("X")}};
+    ApiParam order = optionParam("order", ParamType::Text);
+    order.choices = QStringList{QStringLiteral("auto"), QStringLiteral("1"), QStringLiteral("2"), QStringLiteral("3"), QStringLiteral("4"),
+                                QStringLiteral("5")};
+    ApiParam kind = optionParam("kind", ParamType::Text);
+    kind.choices = QStringList{QStringLiteral("polynomial"), QStringLiteral("table")};
+    ApiParam format = optionParam("format", ParamType::Text);
+    format.choices = QStringList{QStringLiteral("linuxcnc"), QStringLiteral("csv")};
+    ApiParam type = optionParam("type", ParamType::Text);
+    type.choices = QStringList{QStringLiteral("0"), QStringLiteral("1")};
+    for (Command& c : comp.subcommands) {
+        ApiSpec& a = c.api;
+        a.params << optionParam("axis", ParamType::Axis);
+        if (c.name == QLatin1String("fit")) {
+            a.access = Access::Compute;
+            a.params.prepend({QStringLiteral("input"), ParamType::File, tr("a result JSON, or a CSV with position_mm,error_um"), true, {}, {}});
+            a.params << order << kind << optionParam("out", ParamType::File);
+            a.example = QJsonObject{{QStringLiteral("input"), QStringLiteral("resources/examples/stage-x-interferometer.accuracy-result.json")},
+                                    {QStringLiteral("order"), QStringLiteral("auto")}, {QStringLiteral("out"), QStringLiteral("x.compensation.json")}};
+        } else if (c.name == QLatin1String("upload")) {
+            a.access = Access::Control;
+            a.params.prepend({QStringLiteral("file"), ParamType::File, tr("the compensation file"), true, {}, {}});
+            a.example = onStageX;
+            a.example.insert(QStringLiteral("file"), QStringLiteral("resources/examples/stage-x-fit.compensation.json"));
+            a.example.insert(QStringLiteral("enable"), true);
+        } else if (c.name == QLatin1String("show")) {
+            a.access = Access::Read;
+            a.example = onStageX;
+        } else if (c.name == QLatin1String("export")) {
+            // Reads the device's compensation when no file is given.
+            a.access = Access::Read;
+            a.params.prepend({QStringLiteral("file"), ParamType::File, tr("a compensation file; the device's when left out"), false, {}, {}});
+            a.params << format << type << optionParam("out", ParamType::File);
+            a.example = onStageX;
+            a.example.insert(QStringLiteral("format"), QStringLiteral("csv"));
+        } else {  // enable, disable
+            a.access = Access::Control;
+            a.example = onStageX;
+        }
+    }
     list.push_back(comp);
 }
 

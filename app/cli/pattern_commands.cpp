@@ -261,12 +261,7 @@ int run(Invocation& inv)
         if (int rc = s->request([&](auto cb) { c->home(0, cb); }, tr("home")))
             return rc;
         // Quietly: the run's result is the one line this command prints.
-        const bool homed = spinUntil([&] {
-            const auto& a = c->status().axes;
-            return c->state() != dev::LinkState::Ready
-                || (!c->status().anyMoving() && std::all_of(a.begin(), a.end(), [](const dev::AxisReadout& r) { return r.homed; }));
-        }, static_cast<int>(inv.link().timeoutS * 1000));
-        if (!homed || c->state() != dev::LinkState::Ready)
+        if (!s->waitUntilHomed(static_cast<quint8>((1u << c->identity().axes.size()) - 1)))
             return inv.refused(tr("homing did not finish"));
     }
     dev::PathClient* paths = c->paths();

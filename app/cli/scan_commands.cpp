@@ -266,11 +266,7 @@ int scanRun(Invocation& inv)
     if (inv.isSet(QStringLiteral("home"))) {
         if (const int rc = s->request([&](auto cb) { client->home(0, cb); }, tr("home")))
             return rc;
-        auto homed = [&] {
-            const auto& st = client->status();
-            return st.axes.size() >= 2 && st.axes[0].homed && st.axes[1].homed && !st.anyMoving();
-        };
-        if (!spinUntil([&] { return homed() || !client->isReady(); }, static_cast<int>(inv.link().timeoutS * 1000)) || !homed())
+        if (!s->waitUntilHomed(0b11))
             return inv.refused(tr("homing did not finish"));
     }
     ScanRunner runner(client);

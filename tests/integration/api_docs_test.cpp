@@ -137,21 +137,25 @@ QVector<Section> generate()
                                                                   {QStringLiteral("method"), m.method}, {QStringLiteral("params"), params}})
                                              .toJson(QJsonDocument::Compact)));
         s.head = h;
-        // Run it: the host's jog renewals are timed in real time, everything else runs 20× faster.
-        const double scale = m.method == QLatin1String("device.jog") ? 1 : 20;
-        f.stage.link.host().setTimeScale(scale);
-        f.analyzer->link.host().setTimeScale(scale);
+        f.stage.link.host().setTimeScale(20);
+        f.analyzer->link.host().setTimeScale(20);
         if (spec.access == cli::Access::Control) {
             // The test's heartbeats share the server's thread: a long computation in an
             // earlier example (a model plant's tuning) can starve them. Take the lease anew.
             lease = ApiTestClient::result(c.call(QStringLiteral("control.acquire"))).value(QStringLiteral("lease")).toString();
             params.insert(QStringLiteral("lease"), lease);
         }
-        if (m.method == QLatin1String("pattern.run") || m.method == QLatin1String("scan.run")) {
+        const bool onStage = m.method.startsWith(QLatin1String("accuracy.")) || m.method.startsWith(QLatin1String("compensation."));
+        if (m.method == QLatin1String("pattern.run") || m.method == QLatin1String("scan.run") || (onStage && spec.access != cli::Access::Compute)) {
             // Their examples run on a homed stage (the page says so): home it first, quietly.
             c.call(QStringLiteral("device.home"), QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")}, {QStringLiteral("lease"), lease}},
                    120000);
         }
+        // Run it: the host's jog renewals are timed in real time, and the circular test samples
+        // the stage's status at its real rate; everything else runs 20× faster.
+        const double scale = m.method == QLatin1String("device.jog") || m.method == QLatin1String("accuracy.circle") ? 1 : 20;
+        f.stage.link.host().setTimeScale(scale);
+        f.analyzer->link.host().setTimeScale(scale);
         QJsonObject answer = c.call(m.method, params, 120000);
         answer.insert(QStringLiteral("id"), 1);  // as the request shown
         if (answer.contains(QStringLiteral("result")))
