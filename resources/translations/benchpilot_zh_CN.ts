@@ -5,7 +5,7 @@
     <name>QObject</name>
     <message>
         <source>A well was interrupted</source>
-        <translation type="unfinished"></translation>
+        <translation>某个孔的加样被中断</translation>
     </message>
     <message>
         <source>The run stopped during &quot;%1&quot;, after its plunger move had been sent.
@@ -13,23 +13,27 @@
 %2.
 
 Skip counts the well as done; Do again repeats it in full.</source>
-        <translation type="unfinished"></translation>
+        <translation>运行在“%1”期间停止，此时其柱塞移动命令已发出。
+
+%2。
+
+“跳过”将该孔计为已完成；“重做”将其完整重做一遍。</translation>
     </message>
     <message>
         <source>Skip</source>
-        <translation type="unfinished"></translation>
+        <translation>跳过</translation>
     </message>
     <message>
         <source>Do again</source>
-        <translation type="unfinished"></translation>
+        <translation>重做</translation>
     </message>
     <message>
         <source>Confirm</source>
-        <translation type="unfinished"></translation>
+        <translation>确认</translation>
     </message>
     <message>
         <source>Tissue section, 2.5x overview</source>
-        <translation type="unfinished"></translation>
+        <translation>组织切片，2.5x 概览</translation>
     </message>
     <message>
         <source>Calibration</source>
@@ -37,536 +41,536 @@ Skip counts the well as done; Do again repeats it in full.</source>
     </message>
     <message>
         <source>&apos;sim&apos; is the in-process simulator&apos;s gauge: connect the instrument to the simulator first.</source>
-        <translation type="unfinished"></translation>
+        <translation>“sim”是进程内仿真器的测头：请先将仪器连接到仿真器。</translation>
     </message>
 </context>
 <context>
     <name>StepTexts</name>
     <message>
         <source>Aspirate</source>
-        <translation type="unfinished"></translation>
+        <translation>吸液</translation>
     </message>
     <message>
         <source>Dispense</source>
-        <translation type="unfinished"></translation>
+        <translation>排液</translation>
     </message>
     <message>
         <source>Mix</source>
-        <translation type="unfinished"></translation>
+        <translation>混匀</translation>
     </message>
     <message>
         <source>Wash</source>
-        <translation type="unfinished"></translation>
+        <translation>清洗</translation>
     </message>
     <message>
         <source>Air gap</source>
-        <translation type="unfinished"></translation>
+        <translation>空气间隔</translation>
     </message>
     <message>
         <source>Wait</source>
-        <translation type="unfinished"></translation>
+        <translation>等待</translation>
     </message>
     <message>
         <source>Touch off</source>
-        <translation type="unfinished"></translation>
+        <translation>贴壁</translation>
     </message>
     <message>
         <source>station %1</source>
-        <translation type="unfinished">工位 %1</translation>
+        <translation>工位 %1</translation>
     </message>
     <message>
         <source>Aspirate %1 µL from %2</source>
-        <translation type="unfinished"></translation>
+        <translation>从 %2 吸液 %1 µL</translation>
     </message>
     <message>
         <source>Dispense %1 µL into %2</source>
-        <translation type="unfinished"></translation>
+        <translation>向 %2 排液 %1 µL</translation>
     </message>
     <message>
         <source>Mix %1 µL in %2</source>
-        <translation type="unfinished"></translation>
+        <translation>在 %2 中混匀 %1 µL</translation>
     </message>
     <message>
         <source>Wash %1 µL at %2</source>
-        <translation type="unfinished"></translation>
+        <translation>在 %2 清洗 %1 µL</translation>
     </message>
     <message>
         <source>Air gap %1 µL</source>
-        <translation type="unfinished"></translation>
+        <translation>空气间隔 %1 µL</translation>
     </message>
     <message>
         <source>Wait %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>等待 %1 s</translation>
     </message>
     <message>
         <source>Touch off in %1</source>
-        <translation type="unfinished"></translation>
+        <translation>在 %1 中贴壁</translation>
     </message>
 </context>
 <context>
     <name>api</name>
     <message>
         <source>expected an array of numbers, got %1</source>
-        <translation type="unfinished"></translation>
+        <translation>应为数字数组，收到 %1</translation>
     </message>
     <message>
         <source>expected an array of numbers, found %1 in it</source>
-        <translation type="unfinished"></translation>
+        <translation>应为数字数组，但其中含有 %1</translation>
     </message>
     <message>
         <source>analyzer or stage; may be left out when only one is connected</source>
-        <translation type="unfinished"></translation>
+        <translation>analyzer 或 stage；只连接了一台仪器时可省略</translation>
     </message>
     <message>
         <source>longest wait for motion to finish, s (default: 120)</source>
-        <translation type="unfinished"></translation>
+        <translation>等待运动结束的最长时间，s（默认：120）</translation>
     </message>
     <message>
         <source>the lease from control.acquire (needed only when setting)</source>
-        <translation type="unfinished"></translation>
+        <translation>control.acquire 返回的控制权令牌（仅在设置时需要）</translation>
     </message>
     <message>
         <source>the lease from control.acquire</source>
-        <translation type="unfinished"></translation>
+        <translation>control.acquire 返回的控制权令牌</translation>
     </message>
     <message>
         <source>unknown parameter (this method takes none)</source>
-        <translation type="unfinished"></translation>
+        <translation>未知参数（此方法不接受参数）</translation>
     </message>
     <message>
         <source>unknown parameter (parameters: %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>未知参数（参数有：%1）</translation>
     </message>
     <message>
         <source>required</source>
-        <translation type="unfinished"></translation>
+        <translation>必需</translation>
     </message>
     <message>
         <source>given without %1, which comes before it</source>
-        <translation type="unfinished"></translation>
+        <translation>给出了该参数，却缺少排在它前面的 %1</translation>
     </message>
     <message>
         <source>expected true or false, got %1</source>
-        <translation type="unfinished"></translation>
+        <translation>应为 true 或 false，收到 %1</translation>
     </message>
     <message>
         <source>expected a number, got %1</source>
-        <translation type="unfinished"></translation>
+        <translation>应为数字，收到 %1</translation>
     </message>
     <message>
         <source>expected a whole number, got %1</source>
-        <translation type="unfinished"></translation>
+        <translation>应为整数，收到 %1</translation>
     </message>
     <message>
         <source>expected one axis letter such as &quot;X&quot;, got %1</source>
-        <translation type="unfinished"></translation>
+        <translation>应为一个轴字母，如 &quot;X&quot;，收到 %1</translation>
     </message>
     <message>
         <source>expected axis letters such as &quot;XY&quot; or [&quot;X&quot;, &quot;Y&quot;]</source>
-        <translation type="unfinished"></translation>
+        <translation>应为轴字母，如 &quot;XY&quot; 或 [&quot;X&quot;, &quot;Y&quot;]</translation>
     </message>
     <message>
         <source>expected axis letters such as &quot;XY&quot; or [&quot;X&quot;, &quot;Y&quot;], got %1</source>
-        <translation type="unfinished"></translation>
+        <translation>应为轴字母，如 &quot;XY&quot; 或 [&quot;X&quot;, &quot;Y&quot;]，收到 %1</translation>
     </message>
     <message>
         <source>expected an object of axis letters, such as %1, got %2</source>
-        <translation type="unfinished"></translation>
+        <translation>应为以轴字母为键的对象，如 %1，收到 %2</translation>
     </message>
     <message>
         <source>not an axis letter</source>
-        <translation type="unfinished"></translation>
+        <translation>不是轴字母</translation>
     </message>
     <message>
         <source>expected [min, max], got %1</source>
-        <translation type="unfinished"></translation>
+        <translation>应为 [min, max]，收到 %1</translation>
     </message>
     <message>
         <source>expected a string, a number or an array of either</source>
-        <translation type="unfinished"></translation>
+        <translation>应为字符串、数字，或由二者之一组成的数组</translation>
     </message>
     <message>
         <source>expected a string, got %1</source>
-        <translation type="unfinished"></translation>
+        <translation>应为字符串，收到 %1</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not one of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; 不在 %2 之中</translation>
     </message>
     <message>
         <source>a request is a JSON object</source>
-        <translation type="unfinished"></translation>
+        <translation>请求必须是一个 JSON 对象</translation>
     </message>
     <message>
         <source>parse error at byte %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>第 %1 字节处解析错误：%2</translation>
     </message>
     <message>
         <source>batches are not supported: send one request per line</source>
-        <translation type="unfinished"></translation>
+        <translation>不支持批量请求：每行发送一个请求</translation>
     </message>
     <message>
         <source>id: must be a number or a string</source>
-        <translation type="unfinished"></translation>
+        <translation>id：必须是数字或字符串</translation>
     </message>
     <message>
         <source>jsonrpc: must be &quot;2.0&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>jsonrpc：必须为 &quot;2.0&quot;</translation>
     </message>
     <message>
         <source>method: must be a non-empty string</source>
-        <translation type="unfinished"></translation>
+        <translation>method：必须是非空字符串</translation>
     </message>
     <message>
         <source>params: give them by name (an object), not by position</source>
-        <translation type="unfinished"></translation>
+        <translation>params：请按名称给出（对象），不要按位置给出</translation>
     </message>
     <message>
         <source>params: must be an object</source>
-        <translation type="unfinished"></translation>
+        <translation>params：必须是对象</translation>
     </message>
     <message>
         <source>this document</source>
-        <translation type="unfinished"></translation>
+        <translation>本文档</translation>
     </message>
     <message>
         <source>say who is calling (shown in the GUI) and where relative paths start</source>
-        <translation type="unfinished"></translation>
+        <translation>说明调用者是谁（显示在图形界面中）以及相对路径的起点</translation>
     </message>
     <message>
         <source>a name for the GUI and the event log</source>
-        <translation type="unfinished"></translation>
+        <translation>在图形界面和事件日志中显示的名称</translation>
     </message>
     <message>
         <source>the client&apos;s working directory: relative paths in calls start here</source>
-        <translation type="unfinished"></translation>
+        <translation>客户端的工作目录：调用中的相对路径以此为起点</translation>
     </message>
     <message>
         <source>take the control lease (one holder at a time)</source>
-        <translation type="unfinished"></translation>
+        <translation>获取控制权（同一时间只有一个持有者）</translation>
     </message>
     <message>
         <source>Returns {&quot;lease&quot;: TOKEN}. Send control.heartbeat with it at least every %1 ms (100 ms is a good pace); the operator can take control back at any time.</source>
-        <translation type="unfinished"></translation>
+        <translation>返回 {&quot;lease&quot;: TOKEN}。请用它至少每 %1 ms 发送一次 control.heartbeat（每 100 ms 一次为宜）；操作员可随时收回控制权。</translation>
     </message>
     <message>
         <source>give the control lease back</source>
-        <translation type="unfinished"></translation>
+        <translation>交还控制权</translation>
     </message>
     <message>
         <source>keep the control lease (send as a notification, no id, every 100 ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>保持控制权（以通知形式发送，不带 id，每 100 ms 一次）</translation>
     </message>
     <message>
         <source>who holds control, since when</source>
-        <translation type="unfinished"></translation>
+        <translation>谁持有控制权，从何时起</translation>
     </message>
     <message>
         <source>live data: positions, state, jobs, log, telemetry</source>
-        <translation type="unfinished"></translation>
+        <translation>实时数据：位置、状态、作业、日志、遥测</translation>
     </message>
     <message>
         <source>topic → options: {&quot;positions&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;max_hz&quot;: 50}, &quot;state&quot;: {}, &quot;jobs&quot;: {}, &quot;log&quot;: {}, &quot;telemetry&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;channels&quot;: [&quot;X.measured&quot;], &quot;rate_hz&quot;: 1000}}</source>
-        <translation type="unfinished"></translation>
+        <translation>主题 → 选项：{&quot;positions&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;max_hz&quot;: 50}, &quot;state&quot;: {}, &quot;jobs&quot;: {}, &quot;log&quot;: {}, &quot;telemetry&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;channels&quot;: [&quot;X.measured&quot;], &quot;rate_hz&quot;: 1000}}</translation>
     </message>
     <message>
         <source>end a subscription</source>
-        <translation type="unfinished"></translation>
+        <translation>结束订阅</translation>
     </message>
     <message>
         <source>the number subscribe answered</source>
-        <translation type="unfinished"></translation>
+        <translation>subscribe 返回的编号</translation>
     </message>
     <message>
         <source>interrupt a running call of this client, as Ctrl+C interrupts the CLI</source>
-        <translation type="unfinished"></translation>
+        <translation>中断本客户端正在运行的调用，如同 Ctrl+C 中断命令行工具</translation>
     </message>
     <message>
         <source>the id of the call</source>
-        <translation type="unfinished"></translation>
+        <translation>该调用的 id</translation>
     </message>
     <message>
         <source>run benchpilot-cli&apos;s words as benchpilot-cli --attach does: output as cli.output, then the exit code</source>
-        <translation type="unfinished"></translation>
+        <translation>像 benchpilot-cli --attach 那样执行 benchpilot-cli 的参数：输出以 cli.output 发送，最后给出退出码</translation>
     </message>
     <message>
         <source>the words after benchpilot-cli</source>
-        <translation type="unfinished"></translation>
+        <translation>benchpilot-cli 之后的参数</translation>
     </message>
     <message>
         <source>where relative paths start</source>
-        <translation type="unfinished"></translation>
+        <translation>相对路径的起点</translation>
     </message>
     <message>
         <source>JSON-RPC 2.0, one object per line; see docs/api.md</source>
-        <translation type="unfinished"></translation>
+        <translation>JSON-RPC 2.0，每行一个对象；参见 docs/api.md</translation>
     </message>
 </context>
 <context>
     <name>api::ApiClient</name>
     <message>
         <source>pid %1</source>
-        <translation type="unfinished"></translation>
+        <translation>进程号 %1</translation>
     </message>
     <message>
         <source>%1 (pid %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（进程号 %2）</translation>
     </message>
     <message>
         <source>client %1</source>
-        <translation type="unfinished"></translation>
+        <translation>客户端 %1</translation>
     </message>
     <message>
         <source>connection closed</source>
-        <translation type="unfinished"></translation>
+        <translation>连接已关闭</translation>
     </message>
     <message>
         <source>it stopped reading (more than %1 MiB of answers waiting)</source>
-        <translation type="unfinished"></translation>
+        <translation>它已停止读取（超过 %1 MiB 的应答在等待）</translation>
     </message>
     <message>
         <source>it flooded the server (more than %1 requests waiting)</source>
-        <translation type="unfinished"></translation>
+        <translation>它发来的请求过多（超过 %1 个请求在等待）</translation>
     </message>
 </context>
 <context>
     <name>api::ApiServer</name>
     <message>
         <source>cannot make the folder %1 for the API socket</source>
-        <translation type="unfinished"></translation>
+        <translation>无法为接口套接字创建文件夹 %1</translation>
     </message>
     <message>
         <source>the folder %1 for the API socket belongs to another user</source>
-        <translation type="unfinished"></translation>
+        <translation>接口套接字所在的文件夹 %1 属于其他用户</translation>
     </message>
     <message>
         <source>another BenchPilot is already listening at %1</source>
-        <translation type="unfinished"></translation>
+        <translation>另一个 BenchPilot 已在 %1 监听</translation>
     </message>
     <message>
         <source>cannot listen at %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>无法在 %1 监听：%2</translation>
     </message>
     <message>
         <source>API listening at %1</source>
-        <translation type="unfinished"></translation>
+        <translation>接口正在 %1 监听</translation>
     </message>
     <message>
         <source>API WebSocket listening at %1</source>
-        <translation type="unfinished"></translation>
+        <translation>接口 WebSocket 正在 %1 监听</translation>
     </message>
     <message>
         <source>too many clients (at most %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>客户端过多（最多 %1 个）</translation>
     </message>
     <message>
         <source>line longer than %1 bytes: skipped to its end</source>
-        <translation type="unfinished"></translation>
+        <translation>行长超过 %1 字节：已跳过该行其余部分</translation>
     </message>
     <message>
         <source>connection closed</source>
-        <translation type="unfinished"></translation>
+        <translation>连接已关闭</translation>
     </message>
     <message>
         <source>disconnected: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>已断开：%1</translation>
     </message>
     <message>
         <source>unknown method &apos;%1&apos; (rpc.discover lists them)</source>
-        <translation type="unfinished"></translation>
+        <translation>未知方法 &apos;%1&apos;（rpc.discover 可列出全部方法）</translation>
     </message>
     <message>
         <source>%1 calls are already running for this client; wait for one to end</source>
-        <translation type="unfinished"></translation>
+        <translation>该客户端已有 %1 个调用在运行；请等待其中一个结束</translation>
     </message>
     <message>
         <source>the GUI&apos;s %1 is not connected (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>图形界面中的 %1 未连接（%2）</translation>
     </message>
     <message>
         <source>the GUI has no instrument &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>图形界面中没有仪器 &apos;%1&apos;</translation>
     </message>
     <message>
         <source>no instrument is connected in the GUI</source>
-        <translation type="unfinished"></translation>
+        <translation>图形界面中没有已连接的仪器</translation>
     </message>
     <message>
         <source>the analyzer and the stage are both connected: say which with --sim analyzer|stage</source>
-        <translation type="unfinished"></translation>
+        <translation>分析仪和载物台都已连接：请用 --sim analyzer|stage 指明是哪一台</translation>
     </message>
     <message>
         <source>not in control: the operator runs %1</source>
-        <translation type="unfinished"></translation>
+        <translation>未持有控制权：操作员正在运行%1</translation>
     </message>
     <message>
         <source>not in control: pass the lease from control.acquire as &quot;lease&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>未持有控制权：请将 control.acquire 返回的控制权令牌作为 &quot;lease&quot; 传入</translation>
     </message>
     <message>
         <source>not in control: that lease is not the one this client holds</source>
-        <translation type="unfinished"></translation>
+        <translation>未持有控制权：该控制权令牌不是本客户端所持有的</translation>
     </message>
     <message>
         <source>not in control: %1 has had control since %2</source>
-        <translation type="unfinished"></translation>
+        <translation>未持有控制权：%1 自 %2 起持有控制权</translation>
     </message>
     <message>
         <source>not in control: call control.acquire first (the operator can take control back at any time)</source>
-        <translation type="unfinished"></translation>
+        <translation>未持有控制权：请先调用 control.acquire（操作员可随时收回控制权）</translation>
     </message>
     <message>
         <source>%1 that %2 started goes on, and is now yours (%3)</source>
-        <translation type="unfinished"></translation>
+        <translation>%2 启动的 %1 继续运行，现在由您控制（%3）</translation>
     </message>
     <message>
         <source>%1: unknown parameter (this method takes none)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：未知参数（此方法不接受参数）</translation>
     </message>
     <message>
         <source>%1: unknown parameter (parameters: %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：未知参数（参数有：%2）</translation>
     </message>
     <message>
         <source>%1: expected a string</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：应为字符串</translation>
     </message>
     <message>
         <source>the operator runs %1: control stays with the GUI until it ends</source>
-        <translation type="unfinished"></translation>
+        <translation>操作员正在运行%1：在其结束前控制权留在图形界面</translation>
     </message>
     <message>
         <source>%1 has had control since %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 自 %2 起持有控制权</translation>
     </message>
     <message>
         <source>took control</source>
-        <translation type="unfinished"></translation>
+        <translation>取得了控制权</translation>
     </message>
     <message>
         <source>not in control: this client does not hold that lease (taken back, expired or released)</source>
-        <translation type="unfinished"></translation>
+        <translation>未持有控制权：本客户端并未持有该控制权令牌（已被收回、已过期或已交还）</translation>
     </message>
     <message>
         <source>subscription: expected the number subscribe answered</source>
-        <translation type="unfinished"></translation>
+        <translation>subscription：应为 subscribe 返回的编号</translation>
     </message>
     <message>
         <source>argv: expected an array of strings (benchpilot-cli&apos;s words)</source>
-        <translation type="unfinished"></translation>
+        <translation>argv：应为字符串数组（benchpilot-cli 的参数）</translation>
     </message>
     <message>
         <source>%1 calls are already running for this client</source>
-        <translation type="unfinished"></translation>
+        <translation>该客户端已有 %1 个调用在运行</translation>
     </message>
 </context>
 <context>
     <name>api::CommandCall</name>
     <message>
         <source>%1: done</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：完成</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished">%1：%2</translation>
+        <translation>%1：%2</translation>
     </message>
     <message>
         <source>failed</source>
-        <translation type="unfinished">失败</translation>
+        <translation>失败</translation>
     </message>
     <message>
         <source>failed with exit code %1</source>
-        <translation type="unfinished"></translation>
+        <translation>失败，退出码 %1</translation>
     </message>
     <message>
         <source>inside the GUI its own connections are used: --port does not apply (name the instrument with --sim analyzer|stage)</source>
-        <translation type="unfinished"></translation>
+        <translation>在图形界面内使用其自身的连接：--port 不适用（请用 --sim analyzer|stage 指定仪器）</translation>
     </message>
     <message>
         <source>%1 on the %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%2 上的 %1</translation>
     </message>
 </context>
 <context>
     <name>api::Subscriptions</name>
     <message>
         <source>unknown parameter (parameters: topics)</source>
-        <translation type="unfinished"></translation>
+        <translation>未知参数（参数有：topics）</translation>
     </message>
     <message>
         <source>expected an object of topics, e.g. {&quot;positions&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;max_hz&quot;: 50}}</source>
-        <translation type="unfinished"></translation>
+        <translation>应为以主题为键的对象，例如 {&quot;positions&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;max_hz&quot;: 50}}</translation>
     </message>
     <message>
         <source>unknown topic (topics: positions, state, jobs, log, telemetry)</source>
-        <translation type="unfinished"></translation>
+        <translation>未知主题（主题有：positions, state, jobs, log, telemetry）</translation>
     </message>
     <message>
         <source>expected an object of options (max_hz, instrument, …), {} for the defaults</source>
-        <translation type="unfinished"></translation>
+        <translation>应为选项对象（max_hz, instrument, …），{} 表示使用默认值</translation>
     </message>
     <message>
         <source>unknown option (options: %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>未知选项（选项有：%1）</translation>
     </message>
     <message>
         <source>expected a number above 0 and at most %1</source>
-        <translation type="unfinished"></translation>
+        <translation>应为大于 0 且不大于 %1 的数</translation>
     </message>
     <message>
         <source>expected one of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>应为 %1 之一</translation>
     </message>
     <message>
         <source>telemetry is not available here (no telemetry hub)</source>
-        <translation type="unfinished"></translation>
+        <translation>此处无法使用遥测（没有遥测中心）</translation>
     </message>
     <message>
         <source>expected an array such as [&quot;X.measured&quot;, &quot;X.following_error&quot;]</source>
-        <translation type="unfinished"></translation>
+        <translation>应为数组，例如 [&quot;X.measured&quot;, &quot;X.following_error&quot;]</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not a channel of the %2 (AXIS.measured, AXIS.commanded, AXIS.velocity, AXIS.following_error, AXIS.controller_output, AXIS.switches, contour_error)</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; 不是 %2 的通道（AXIS.measured, AXIS.commanded, AXIS.velocity, AXIS.following_error, AXIS.controller_output, AXIS.switches, contour_error）</translation>
     </message>
     <message>
         <source>expected samples per second, 1 or more</source>
-        <translation type="unfinished"></translation>
+        <translation>应为每秒采样数，不小于 1</translation>
     </message>
 </context>
 <context>
     <name>api::WebSocketEndpoint</name>
     <message>
         <source>the token file %1 can be read by others (chmod 600 it)</source>
-        <translation type="unfinished"></translation>
+        <translation>令牌文件 %1 可被其他用户读取（请对其执行 chmod 600）</translation>
     </message>
     <message>
         <source>cannot read the token file %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>无法读取令牌文件 %1：%2</translation>
     </message>
     <message>
         <source>the token in %1 is too short (at least 16 characters)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 中的令牌太短（至少 16 个字符）</translation>
     </message>
     <message>
         <source>cannot write the token file %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>无法写入令牌文件 %1：%2</translation>
     </message>
     <message>
         <source>cannot listen on 127.0.0.1:%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>无法在 127.0.0.1:%1 上监听：%2</translation>
     </message>
     <message>
         <source>origin not allowed</source>
-        <translation type="unfinished"></translation>
+        <translation>不允许该来源</translation>
     </message>
     <message>
         <source>a token is required (?token=… from the token file)</source>
-        <translation type="unfinished"></translation>
+        <translation>需要令牌（?token=…，取自令牌文件）</translation>
     </message>
     <message>
         <source>this BenchPilot was built without Qt WebSockets (install qt6-websockets-dev: ./scripts/setup)</source>
-        <translation type="unfinished"></translation>
+        <translation>此 BenchPilot 构建时未包含 Qt WebSockets（请安装 qt6-websockets-dev：./scripts/setup）</translation>
     </message>
 </context>
 <context>
@@ -577,11 +581,11 @@ Skip counts the well as done; Do again repeats it in full.</source>
     </message>
     <message>
         <source>End the script&apos;s control now: its next call is refused, its jogs stop; jobs it started go on as yours</source>
-        <translation type="unfinished"></translation>
+        <translation>立即结束脚本的控制权：其下一个调用将被拒绝，其点动停止；它启动的作业继续运行，改由您控制</translation>
     </message>
     <message>
         <source>%1 has had control of the bench since %2. Your motion controls ask before they act.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 自 %2 起控制工作台。您的运动控件在执行前会先询问。</translation>
     </message>
 </context>
 <context>
@@ -592,149 +596,151 @@ Skip counts the well as done; Do again repeats it in full.</source>
     </message>
     <message>
         <source>Clients connected</source>
-        <translation type="unfinished"></translation>
+        <translation>已连接的客户端</translation>
     </message>
     <message>
         <source>Jobs started by scripts</source>
-        <translation type="unfinished"></translation>
+        <translation>脚本启动的作业</translation>
     </message>
     <message>
         <source>Abort job</source>
-        <translation type="unfinished"></translation>
+        <translation>中止作业</translation>
     </message>
     <message>
         <source>Client</source>
-        <translation type="unfinished"></translation>
+        <translation>客户端</translation>
     </message>
     <message>
         <source>Transport</source>
-        <translation type="unfinished"></translation>
+        <translation>传输方式</translation>
     </message>
     <message>
         <source>Since</source>
-        <translation type="unfinished"></translation>
+        <translation>起始时间</translation>
     </message>
     <message>
         <source>Calls running</source>
-        <translation type="unfinished"></translation>
+        <translation>运行中的调用</translation>
     </message>
     <message>
         <source>Job</source>
-        <translation type="unfinished"></translation>
+        <translation>作业</translation>
     </message>
     <message>
         <source>Instrument</source>
-        <translation type="unfinished">仪器</translation>
+        <translation>仪器</translation>
     </message>
     <message>
         <source>Owner</source>
-        <translation type="unfinished"></translation>
+        <translation>所有者</translation>
     </message>
     <message>
         <source>State</source>
-        <translation type="unfinished"></translation>
+        <translation>状态</translation>
     </message>
     <message>
         <source>Progress</source>
-        <translation type="unfinished"></translation>
+        <translation>进度</translation>
     </message>
     <message>
         <source>Socket: %1 (this user only)</source>
-        <translation type="unfinished"></translation>
+        <translation>套接字：%1（仅限当前用户）</translation>
     </message>
     <message>
         <source>WebSocket: %1 (127.0.0.1 only, token required)</source>
-        <translation type="unfinished"></translation>
+        <translation>WebSocket：%1（仅限 127.0.0.1，需要令牌）</translation>
     </message>
     <message>
         <source>Control: %1, since %2</source>
-        <translation type="unfinished"></translation>
+        <translation>控制权：%1，自 %2 起</translation>
     </message>
     <message>
         <source>Control: the operator (you)</source>
-        <translation type="unfinished"></translation>
+        <translation>控制权：操作员（您）</translation>
     </message>
     <message>
         <source>End the script&apos;s control now</source>
-        <translation type="unfinished"></translation>
+        <translation>立即结束脚本的控制权</translation>
     </message>
     <message>
         <source>No script has control</source>
-        <translation type="unfinished"></translation>
+        <translation>没有脚本持有控制权</translation>
     </message>
     <message>
         <source>%1 (in control)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（持有控制权）</translation>
     </message>
     <message>
         <source>you (started by %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>您（由 %1 启动）</translation>
     </message>
     <message>
         <source>Interrupt the selected job as Ctrl+C would (a recipe run raises its tip and can resume)</source>
-        <translation type="unfinished"></translation>
+        <translation>像 Ctrl+C 那样中断所选作业（方案运行会抬起加样针，之后可继续）</translation>
     </message>
     <message>
         <source>Select a running job to abort it</source>
-        <translation type="unfinished"></translation>
+        <translation>选择一个运行中的作业以中止它</translation>
     </message>
 </context>
 <context>
     <name>app::ApiStatusButton</name>
     <message numerus="yes">
         <source>API: %n client(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>接口：%n 个客户端</numerusform>
         </translation>
     </message>
     <message>
         <source>Scripting API on %1</source>
-        <translation type="unfinished"></translation>
+        <translation>脚本接口位于 %1</translation>
     </message>
     <message>
         <source>WebSocket: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>WebSocket：%1</translation>
     </message>
     <message>
         <source>%1 (%2), since %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（%2），自 %3 起</translation>
     </message>
     <message>
         <source>Click for the API panel</source>
-        <translation type="unfinished"></translation>
+        <translation>点击打开接口面板</translation>
     </message>
 </context>
 <context>
     <name>app::ApiWiring</name>
     <message>
         <source>Scripting API not started: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>脚本接口未启动：%1</translation>
     </message>
     <message>
         <source>Scripting API WebSocket not started: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>脚本接口 WebSocket 未启动：%1</translation>
     </message>
     <message>
         <source>%1 has had control of the bench since %2.
 
 Take control back? The script&apos;s next call is refused and its jogs stop; a job it started goes on as yours. Then do again what you meant to do.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 自 %2 起控制工作台。
+
+收回控制权？脚本的下一个调用将被拒绝，其点动停止；它启动的作业继续运行，改由您控制。然后请重新执行您刚才想做的操作。</translation>
     </message>
     <message>
         <source>a recipe on the Plates screen</source>
-        <translation type="unfinished"></translation>
+        <translation>孔板界面上的加样方案</translation>
     </message>
     <message>
         <source>a scan on the Scan screen</source>
-        <translation type="unfinished"></translation>
+        <translation>扫描界面上的扫描</translation>
     </message>
     <message>
         <source>a pattern on the Patterns screen</source>
-        <translation type="unfinished"></translation>
+        <translation>图形界面上的图形</translation>
     </message>
     <message>
         <source>a test on the Tuning screen</source>
-        <translation type="unfinished"></translation>
+        <translation>整定界面上的测试</translation>
     </message>
 </context>
 <context>
@@ -937,15 +943,15 @@ Take control back? The script&apos;s next call is refused and its jogs stop; a j
     <name>cli</name>
     <message>
         <source>show this help</source>
-        <translation type="unfinished"></translation>
+        <translation>显示本帮助</translation>
     </message>
     <message>
         <source>show the program&apos;s version</source>
-        <translation type="unfinished"></translation>
+        <translation>显示程序版本</translation>
     </message>
     <message>
         <source> (default: %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>（默认：%1）</translation>
     </message>
     <message>
         <source>--sim needs &apos;analyzer&apos; or &apos;stage&apos; (got &apos;%1&apos;)</source>
@@ -953,7 +959,7 @@ Take control back? The script&apos;s next call is refused and its jogs stop; a j
     </message>
     <message>
         <source>--port needs a path</source>
-        <translation type="unfinished"></translation>
+        <translation>--port 需要一个路径</translation>
     </message>
     <message>
         <source>--baud needs a rate of at least 1200 (got &apos;%1&apos;)</source>
@@ -961,37 +967,39 @@ Take control back? The script&apos;s next call is refused and its jogs stop; a j
     </message>
     <message>
         <source>--timeout needs a positive number of seconds (got &apos;%1&apos;)</source>
-        <translation type="unfinished"></translation>
+        <translation>--timeout 需要正的秒数（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>unknown option %1 (options: %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>未知选项 %1（可用选项：%2）</translation>
     </message>
     <message>
         <source>a serial port, or the pty of benchpilot-sim</source>
-        <translation type="unfinished"></translation>
+        <translation>串口，或 benchpilot-sim 的 pty</translation>
     </message>
     <message>
         <source>link speed (default: 115200)</source>
-        <translation type="unfinished"></translation>
+        <translation>链路速率（默认：115200）</translation>
     </message>
     <message>
         <source>print JSON instead of text</source>
-        <translation type="unfinished"></translation>
+        <translation>输出 JSON 而非文本</translation>
     </message>
     <message>
         <source>longest wait for motion to finish, s (default: 120)</source>
-        <translation type="unfinished"></translation>
+        <translation>等待运动结束的最长时间，s（默认：120）</translation>
     </message>
     <message>
         <source>language of the text for people: en (default), zh_CN, or system (follows LANG); --json never changes</source>
-        <translation type="unfinished"></translation>
+        <translation>面向用户的文本语言：en（默认）、zh_CN 或 system（跟随 LANG）；--json 输出始终不变</translation>
     </message>
     <message>
         <source>
 Global options (before or after the command):
 </source>
-        <translation type="unfinished"></translation>
+        <translation>
+全局选项（可放在命令之前或之后）：
+</translation>
     </message>
     <message>
         <source>
@@ -1000,7 +1008,12 @@ Global options (before or after the command):
 Exit codes: 0 ok, 1 usage, 2 refused or motion failed, 3 link trouble.
 Bash completion: source &lt;(benchpilot-cli completion bash)
 </source>
-        <translation type="unfinished"></translation>
+        <translation>
+&apos;benchpilot-cli 命令 --help&apos; 显示该命令的选项。选项的值可写作
+&apos;--opt value&apos; 或 &apos;--opt=value&apos;。
+退出码：0 成功，1 用法错误，2 被拒绝或运动失败，3 连接故障。
+Bash 补全：source &lt;(benchpilot-cli completion bash)
+</translation>
     </message>
     <message>
         <source>usage: benchpilot-cli %1 SUBCOMMAND [OPTIONS] [ARGUMENTS]
@@ -1009,984 +1022,1010 @@ Bash completion: source &lt;(benchpilot-cli completion bash)
 
 Subcommands:
 </source>
-        <translation type="unfinished"></translation>
+        <translation>用法：benchpilot-cli %1 子命令 [选项] [参数]
+
+%2
+
+子命令：
+</translation>
     </message>
     <message>
         <source>
 &apos;benchpilot-cli %1 SUBCOMMAND --help&apos; shows a subcommand&apos;s options.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>
+&apos;benchpilot-cli %1 子命令 --help&apos; 显示该子命令的选项。
+</translation>
     </message>
     <message>
         <source>usage: benchpilot-cli %1%2%3
 
 %4
 </source>
-        <translation type="unfinished"></translation>
+        <translation>用法：benchpilot-cli %1%2%3
+
+%4
+</translation>
     </message>
     <message>
         <source> [OPTIONS]</source>
-        <translation type="unfinished"></translation>
+        <translation> [选项]</translation>
     </message>
     <message>
         <source>
 Options:
 </source>
-        <translation type="unfinished"></translation>
+        <translation>
+选项：
+</translation>
     </message>
     <message>
         <source>--lang needs en, zh_CN or system (got &apos;%1&apos;)</source>
-        <translation type="unfinished"></translation>
+        <translation>--lang 需要 en、zh_CN 或 system（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>try &apos;benchpilot-cli --help&apos;
 </source>
-        <translation type="unfinished"></translation>
+        <translation>请尝试 &apos;benchpilot-cli --help&apos;
+</translation>
     </message>
     <message>
         <source>no command given</source>
-        <translation type="unfinished"></translation>
+        <translation>未给出命令</translation>
     </message>
     <message>
         <source>unknown command &apos;%1&apos; (commands: %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>未知命令 &apos;%1&apos;（可用命令：%2）</translation>
     </message>
     <message>
         <source>which one? (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>是哪一个？（%1）</translation>
     </message>
     <message>
         <source>unknown subcommand &apos;%1&apos; (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>未知子命令 &apos;%1&apos;（%2）</translation>
     </message>
     <message>
         <source>try &apos;benchpilot-cli %1 --help&apos;
 </source>
-        <translation type="unfinished"></translation>
+        <translation>请尝试 &apos;benchpilot-cli %1 --help&apos;
+</translation>
     </message>
     <message>
         <source>give either --sim or --port, not both</source>
-        <translation type="unfinished"></translation>
+        <translation>--sim 和 --port 只能给出其一，不能同时给出</translation>
     </message>
     <message>
         <source>cannot connect to %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>无法连接到 %1：%2</translation>
     </message>
     <message>
         <source>no answer within %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 s 内无应答</translation>
     </message>
     <message>
         <source>axis &apos;%1&apos; does not exist on the %2 (axes: %3)</source>
-        <translation type="unfinished"></translation>
+        <translation>%2上不存在轴 &apos;%1&apos;（可用轴：%3）</translation>
     </message>
     <message>
         <source>%1: no answer</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：无应答</translation>
     </message>
     <message>
         <source>%1: link lost while waiting</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：等待期间连接中断</translation>
     </message>
     <message>
         <source>%1: still moving after %2 s; sent stop</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2 s 后仍在运动；已发送停止命令</translation>
     </message>
     <message>
         <source>only &apos;bash&apos; is supported: source &lt;(benchpilot-cli completion bash)</source>
-        <translation type="unfinished"></translation>
+        <translation>只支持 &apos;bash&apos;：source &lt;(benchpilot-cli completion bash)</translation>
     </message>
     <message>
         <source>print a bash completion script</source>
-        <translation type="unfinished"></translation>
+        <translation>输出 bash 补全脚本</translation>
     </message>
     <message>
         <source>Use: source &lt;(benchpilot-cli completion bash)</source>
-        <translation type="unfinished"></translation>
+        <translation>用法：source &lt;(benchpilot-cli completion bash)</translation>
     </message>
     <message>
         <source>takes no arguments (got &apos;%1&apos;)</source>
-        <translation type="unfinished"></translation>
+        <translation>不接受参数（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>planner limits: not reported (estimates assume the reference machine&apos;s)</source>
-        <translation type="unfinished"></translation>
+        <translation>规划器限值：设备未报告（估算按参考机器的限值）</translation>
     </message>
     <message>
         <source>home</source>
-        <translation type="unfinished">回零</translation>
+        <translation>回零</translation>
     </message>
     <message>
         <source>--speed needs a positive number</source>
-        <translation type="unfinished"></translation>
+        <translation>--speed 需要一个正数</translation>
     </message>
     <message>
         <source>give at least one AXIS=VALUE</source>
-        <translation type="unfinished"></translation>
+        <translation>请至少给出一个 AXIS=VALUE</translation>
     </message>
     <message>
         <source>expected AXIS=VALUE, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>应为 AXIS=VALUE，收到 &apos;%1&apos;</translation>
     </message>
     <message>
         <source>axis &apos;%1&apos; does not exist on the %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%2上不存在轴 &apos;%1&apos;</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not a number for axis %2</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; 不是轴 %2 的有效数值</translation>
     </message>
     <message>
         <source>move</source>
-        <translation type="unfinished">移动</translation>
+        <translation>移动</translation>
     </message>
     <message>
         <source>expected AXIS VELOCITY SECONDS</source>
-        <translation type="unfinished"></translation>
+        <translation>应为 AXIS VELOCITY SECONDS</translation>
     </message>
     <message>
         <source>velocity &apos;%1&apos; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>速度 &apos;%1&apos; 不是数字</translation>
     </message>
     <message>
         <source>seconds must be in (0, 600]</source>
-        <translation type="unfinished"></translation>
+        <translation>秒数必须在 (0, 600] 范围内</translation>
     </message>
     <message>
         <source>velocity must be within ±%1 %2/s</source>
-        <translation type="unfinished"></translation>
+        <translation>速度必须在 ±%1 %2/s 以内</translation>
     </message>
     <message>
         <source>jog</source>
-        <translation type="unfinished">点动</translation>
+        <translation>点动</translation>
     </message>
     <message>
         <source>stop</source>
-        <translation type="unfinished">停止</translation>
+        <translation>停止</translation>
     </message>
     <message>
         <source>estop</source>
-        <translation type="unfinished"></translation>
+        <translation>急停</translation>
     </message>
     <message>
         <source>reset</source>
-        <translation type="unfinished"></translation>
+        <translation>复位</translation>
     </message>
     <message>
         <source>name the axes to zero, e.g. &apos;zero XY&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>请指定要设零点的轴，例如 &apos;zero XY&apos;</translation>
     </message>
     <message>
         <source>zero</source>
-        <translation type="unfinished"></translation>
+        <translation>设零点</translation>
     </message>
     <message>
         <source>expected AXIS=MIN:MAX, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>应为 AXIS=MIN:MAX，收到 &apos;%1&apos;</translation>
     </message>
     <message>
         <source>limits</source>
-        <translation type="unfinished"></translation>
+        <translation>软限位</translation>
     </message>
     <message>
         <source>targets are distances from where the axes are</source>
-        <translation type="unfinished"></translation>
+        <translation>目标是相对各轴当前位置的距离</translation>
     </message>
     <message>
         <source>path speed in the unit of the first axis named, per second</source>
-        <translation type="unfinished"></translation>
+        <translation>路径速度，单位为所列第一个轴的单位每秒</translation>
     </message>
     <message>
         <source>device identity, axes, travel, resolution</source>
-        <translation type="unfinished"></translation>
+        <translation>设备标识、轴、行程、分辨率</translation>
     </message>
     <message>
         <source>positions (commanded and measured), homed, moving, switches</source>
-        <translation type="unfinished"></translation>
+        <translation>位置（指令值和测量值）、是否已回零、是否在运动、开关状态</translation>
     </message>
     <message>
         <source>home the axes (all when none given), wait until done</source>
-        <translation type="unfinished"></translation>
+        <translation>轴回零（未指定时全部回零），并等待完成</translation>
     </message>
     <message>
         <source>The analyzer lifts Z first. AXES are letters, e.g. &apos;XY&apos;.</source>
-        <translation type="unfinished"></translation>
+        <translation>分析仪先抬起 Z 轴。轴用字母表示，例如 &apos;XY&apos;。</translation>
     </message>
     <message>
         <source>move and wait until done (mm, µL for P)</source>
-        <translation type="unfinished"></translation>
+        <translation>移动并等待完成（单位 mm，P 轴为 µL）</translation>
     </message>
     <message>
         <source>Absolute moves need homed axes; targets beyond the soft limits are refused by the device.</source>
-        <translation type="unfinished"></translation>
+        <translation>绝对移动要求轴已回零；超出软限位的目标会被设备拒绝。</translation>
     </message>
     <message>
         <source>velocity jog for SECONDS, then stop and wait until still</source>
-        <translation type="unfinished"></translation>
+        <translation>以给定速度点动指定秒数，然后停止并等待停稳</translation>
     </message>
     <message>
         <source>The jog is refreshed while it runs; if this program dies the device stops the axis by itself.</source>
-        <translation type="unfinished"></translation>
+        <translation>点动运行期间会不断刷新；若本程序意外退出，设备会自行停止该轴。</translation>
     </message>
     <message>
         <source>decelerate all axes to rest</source>
-        <translation type="unfinished"></translation>
+        <translation>所有轴减速至停止</translation>
     </message>
     <message>
         <source>halt at once and latch the E-stop</source>
-        <translation type="unfinished"></translation>
+        <translation>立即停止并锁定急停</translation>
     </message>
     <message>
         <source>clear the E-stop latch</source>
-        <translation type="unfinished"></translation>
+        <translation>解除急停锁定</translation>
     </message>
     <message>
         <source>make the current position zero</source>
-        <translation type="unfinished"></translation>
+        <translation>将当前位置设为零点</translation>
     </message>
     <message>
         <source>show or set soft limits</source>
-        <translation type="unfinished"></translation>
+        <translation>显示或设置软限位</translation>
     </message>
     <message>
         <source>--%1 is required</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1 为必填项</translation>
     </message>
     <message>
         <source>--%1 &apos;%2&apos; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1 &apos;%2&apos; 不是数字</translation>
     </message>
     <message>
         <source>--%1 &apos;%2&apos;: &apos;%3&apos; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1 &apos;%2&apos;：&apos;%3&apos; 不是数字</translation>
     </message>
     <message>
         <source>--%1 &apos;%2&apos; needs %3 comma-separated numbers</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1 &apos;%2&apos; 需要 %3 个以逗号分隔的数</translation>
     </message>
     <message>
         <source>plan a motion profile and print s, v, a, j samples (JSON)</source>
-        <translation type="unfinished"></translation>
+        <translation>规划速度曲线并输出 s、v、a、j 采样（JSON）</translation>
     </message>
     <message>
         <source>See docs/motion.md for the profiles and the seeds they come from.</source>
-        <translation type="unfinished"></translation>
+        <translation>速度曲线及其来源文献见 docs/motion.md。</translation>
     </message>
     <message>
         <source>point-by-point line or arc, or sine/cosine by chords (JSON)</source>
-        <translation type="unfinished"></translation>
+        <translation>逐点比较法直线或圆弧插补，或以弦线逼近正弦/余弦（JSON）</translation>
     </message>
     <message>
         <source>line: --to X,Y [--from X,Y]; arc: --start, --center, --to, --dir cw|ccw; sine|cosine: --amplitude, --wavelength, --length, --tolerance. All need --step (mm).</source>
-        <translation type="unfinished"></translation>
+        <translation>直线：--to X,Y [--from X,Y]；圆弧：--start、--center、--to、--dir cw|ccw；正弦|余弦：--amplitude、--wavelength、--length、--tolerance。都需要 --step（mm）。</translation>
     </message>
     <message>
         <source>seed 001 step-period table of a profile or of seed 001&apos;s own move (JSON)</source>
-        <translation type="unfinished"></translation>
+        <translation>文献 001 的步进周期表：针对某条速度曲线或文献 001 自身的移动（JSON）</translation>
     </message>
     <message>
         <source>Whole interrupt periods plus a remainder per step, with the zero-match correction.</source>
-        <translation type="unfinished"></translation>
+        <translation>每步为整数个中断周期加余数，并含零匹配修正。</translation>
     </message>
     <message>
         <source>plan seed 004 blocks per joint and pack them into CAN frames (JSON)</source>
-        <translation type="unfinished"></translation>
+        <translation>按关节规划文献 004 的块，并打包成 CAN 帧（JSON）</translation>
     </message>
     <message>
         <source>--joint S:V2:t0_ms,S:V2:t0_ms,… once per joint.</source>
-        <translation type="unfinished"></translation>
+        <translation>--joint S:V2:t0_ms,S:V2:t0_ms,…，每个关节给出一次。</translation>
     </message>
     <message>
         <source>--dir must be cw or ccw (got &apos;%1&apos;)</source>
-        <translation type="unfinished"></translation>
+        <translation>--dir 必须为 cw 或 ccw（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>give --shape (line, rectangle, circle, arc, sine, cosine, spiral, raster) or --file</source>
-        <translation type="unfinished"></translation>
+        <translation>请给出 --shape（line, rectangle, circle, arc, sine, cosine, spiral, raster）或 --file</translation>
     </message>
     <message>
         <source>--shape &apos;%1&apos; is not one of line, rectangle, circle, arc, sine, cosine, spiral, raster</source>
-        <translation type="unfinished"></translation>
+        <translation>--shape &apos;%1&apos; 不是 line, rectangle, circle, arc, sine, cosine, spiral, raster 之一</translation>
     </message>
     <message>
         <source>--along must be x or y (got &apos;%1&apos;)</source>
-        <translation type="unfinished"></translation>
+        <translation>--along 必须为 x 或 y（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>takes options only (got &apos;%1&apos;)</source>
-        <translation type="unfinished"></translation>
+        <translation>只接受选项（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>%1: %2 segments, %3 mm, about %4 s on the %5 simulator&apos;s limits
 </source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2 段，%3 mm，按 %5 仿真器的限值约需 %4 s
+</translation>
     </message>
     <message>
         <source>homing did not finish</source>
-        <translation type="unfinished"></translation>
+        <translation>回零未完成</translation>
     </message>
     <message>
         <source>(every --sim command starts a fresh simulator: add --home-first)</source>
-        <translation type="unfinished"></translation>
+        <translation>（每条 --sim 命令都会启动一个新的仿真器：请加上 --home-first）</translation>
     </message>
     <message>
         <source>the pattern did not finish within --timeout %1 s: aborted</source>
-        <translation type="unfinished"></translation>
+        <translation>图形未在 --timeout %1 s 内完成：已中止</translation>
     </message>
     <message>
         <source>the pattern did not complete</source>
-        <translation type="unfinished"></translation>
+        <translation>图形未完成</translation>
     </message>
     <message>
         <source>plan a pattern (line, rectangle, circle, arc, sine, cosine, spiral, raster) or run it and measure the contour error</source>
-        <translation type="unfinished"></translation>
+        <translation>规划图形（line, rectangle, circle, arc, sine, cosine, spiral, raster）或运行它并测量轮廓误差</translation>
     </message>
     <message>
         <source>Shape options not given keep the pattern&apos;s defaults (docs/patterns.md). --file reads a *.pattern.json; shape options then change it.</source>
-        <translation type="unfinished"></translation>
+        <translation>未给出的形状选项沿用图形的默认值（docs/patterns.md）。--file 读取 *.pattern.json，形状选项再对其修改。</translation>
     </message>
     <message>
         <source>print the segments, length and estimated time without moving</source>
-        <translation type="unfinished"></translation>
+        <translation>输出各段、总长和估计时间，不运动</translation>
     </message>
     <message>
         <source>Timed on the limits of the simulator --sim names (the stage when none).</source>
-        <translation type="unfinished"></translation>
+        <translation>按 --sim 所指仿真器的限值计时（未指定时为载物台）。</translation>
     </message>
     <message>
         <source>run the pattern on the instrument; print max and RMS contour error (µm) and duration</source>
-        <translation type="unfinished"></translation>
+        <translation>在仪器上运行图形；输出最大和均方根轮廓误差（µm）及用时</translation>
     </message>
     <message>
         <source>Moves to the pattern&apos;s start (XY, then Z on the analyzer), streams the segments into the device&apos;s path queue and judges the measured XY from telemetry against the path. Exit 2 if it is refused or does not complete.</source>
-        <translation type="unfinished"></translation>
+        <translation>移动到图形起点（先 XY，分析仪上再移 Z），将各段流式送入设备的路径队列，并根据遥测中实测的 XY 相对路径进行评判。被拒绝或未完成时退出码为 2。</translation>
     </message>
     <message>
         <source>%1: valid: %2 ops, about %3 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：有效：%2 个操作，约 %3 s</translation>
     </message>
     <message>
         <source>%1: %2 errors</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2 个错误</translation>
     </message>
     <message>
         <source>%1 ops · %2 µL dispensed, %3 µL aspirated · plunger %4 → %5 µL · total %6 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 个操作 · 排液 %2 µL，吸液 %3 µL · 柱塞 %4 → %5 µL · 总计 %6 s</translation>
     </message>
     <message>
         <source>validate, plan and run dispensing recipes on the analyzer (docs/recipes.md)</source>
-        <translation type="unfinished"></translation>
+        <translation>在分析仪上检查、规划并运行加样方案（docs/recipes.md）</translation>
     </message>
     <message>
         <source>check a recipe: every problem with its line, column and field</source>
-        <translation type="unfinished"></translation>
+        <translation>检查加样方案：列出每个问题及其行、列和字段</translation>
     </message>
     <message>
         <source>Exit 0 when the recipe can run (warnings allowed), 1 with every error otherwise. Nothing moves.</source>
-        <translation type="unfinished"></translation>
+        <translation>方案可运行时（允许有警告）退出码为 0，否则列出所有错误并返回 1。不会有任何运动。</translation>
     </message>
     <message>
         <source>the dry run: each op and move with well, x, y, z, volume, and the total time</source>
-        <translation type="unfinished"></translation>
+        <translation>空运行：列出每个操作和移动的孔、x、y、z、体积以及总时间</translation>
     </message>
     <message>
         <source>Planned from the machine at home (0, 0, 0) with an empty syringe. Nothing moves.</source>
-        <translation type="unfinished"></translation>
+        <translation>按机器位于零位 (0, 0, 0)、注射器为空进行规划。不会有任何运动。</translation>
     </message>
     <message>
         <source>the run log to write (a new file; default RECIPE-DATE.run.jsonl here)</source>
-        <translation type="unfinished"></translation>
+        <translation>要写入的运行日志（新文件；默认为当前目录下的 RECIPE-DATE.run.jsonl）</translation>
     </message>
     <message>
         <source>continue the run this log records; wells done are not done again</source>
-        <translation type="unfinished"></translation>
+        <translation>继续该日志所记录的运行；已完成的孔不会重做</translation>
     </message>
     <message>
         <source>a well interrupted after its plunger moved: skip (count it done) or redo it; asked for, never guessed</source>
-        <translation type="unfinished"></translation>
+        <translation>柱塞已移动后被中断的孔：跳过（计为已完成）或重做；必须明确指定，绝不猜测</translation>
     </message>
     <message>
         <source>home the analyzer first</source>
-        <translation type="unfinished"></translation>
+        <translation>先让分析仪回零</translation>
     </message>
     <message>
         <source>run a recipe, logging every well so it can be resumed</source>
-        <translation type="unfinished"></translation>
+        <translation>运行加样方案，记录每个孔，以便之后继续</translation>
     </message>
     <message>
         <source>Prints a line per well (one JSON object with --json). Ctrl+C aborts: the tip rises and the log can resume. Exit 2 when the device refuses or the run stops, 3 when the link is lost.</source>
-        <translation type="unfinished"></translation>
+        <translation>每个孔输出一行（使用 --json 时为一个 JSON 对象）。Ctrl+C 中止：加样针抬起，之后可按日志继续。设备拒绝或运行停止时退出码为 2，连接中断时为 3。</translation>
     </message>
     <message>
         <source>give --log for a new run or --resume for one to continue, not both</source>
-        <translation type="unfinished"></translation>
+        <translation>新运行请给出 --log，继续运行请给出 --resume，两者不能同时给出</translation>
     </message>
     <message>
         <source>--interrupted must be skip or redo (got &apos;%1&apos;)</source>
-        <translation type="unfinished"></translation>
+        <translation>--interrupted 必须为 skip 或 redo（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>%1 does not validate: nothing moved</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 未通过检查：没有任何运动</translation>
     </message>
     <message>
         <source>no run log %1 to resume</source>
-        <translation type="unfinished"></translation>
+        <translation>没有可继续的运行日志 %1</translation>
     </message>
     <message>
         <source>%1 exists: a run log is never overwritten (continue it with --resume, or name another with --log)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 已存在：运行日志绝不会被覆盖（用 --resume 继续它，或用 --log 指定其他文件名）</translation>
     </message>
     <message>
         <source>%1 was interrupted after its plunger move was sent: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 在其柱塞移动命令发出后被中断：%2</translation>
     </message>
     <message>
         <source>interrupted: aborting (the tip rises, the log can resume)</source>
-        <translation type="unfinished"></translation>
+        <translation>已中断：正在中止（加样针抬起，之后可按日志继续）</translation>
     </message>
     <message>
         <source>not resumed: say --interrupted=skip (count the well as done) or --interrupted=redo (do it again)</source>
-        <translation type="unfinished"></translation>
+        <translation>未继续：请指定 --interrupted=skip（将该孔计为已完成）或 --interrupted=redo（重做该孔）</translation>
     </message>
     <message>
         <source>log: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>日志：%1</translation>
     </message>
     <message>
         <source>finished: %1 of %2 wells in %3</source>
-        <translation type="unfinished"></translation>
+        <translation>已完成：%2 个孔中的 %1 个，用时 %3</translation>
     </message>
     <message>
         <source>stopped after %1 of %2 wells; continue with: benchpilot-cli recipe run %3 --resume %4</source>
-        <translation type="unfinished"></translation>
+        <translation>在 %2 个孔中完成 %1 个后停止；继续请用：benchpilot-cli recipe run %3 --resume %4</translation>
     </message>
     <message>
         <source>the deck definition (default: the built-in analyzer deck)</source>
-        <translation type="unfinished"></translation>
+        <translation>台面定义（默认：内置的分析仪台面）</translation>
     </message>
     <message>
         <source>slot calibration (default: the one the GUI keeps, %1); &quot;none&quot; for the nominal slots</source>
-        <translation type="unfinished"></translation>
+        <translation>板位校准（默认：图形界面保存的校准，%1）；&quot;none&quot; 表示使用名义板位</translation>
     </message>
     <message>
         <source>name one recipe file</source>
-        <translation type="unfinished"></translation>
+        <translation>请指定一个加样方案文件</translation>
     </message>
     <message>
         <source>--%1 &apos;%2&apos; needs 1 to %3 comma-separated numbers</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1 &apos;%2&apos; 需要 1 到 %3 个以逗号分隔的数</translation>
     </message>
     <message>
         <source>give the region: --roi x0,y0,x1,y1, --centre x,y with --size w,h, or --polygon &apos;x,y;x,y;…&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>请给出区域：--roi x0,y0,x1,y1，--centre x,y 加 --size w,h，或 --polygon &apos;x,y;x,y;…&apos;</translation>
     </message>
     <message>
         <source>give one region: --roi, --centre/--size or --polygon</source>
-        <translation type="unfinished"></translation>
+        <translation>只能给出一种区域：--roi、--centre/--size 或 --polygon</translation>
     </message>
     <message>
         <source>--polygon: corner &apos;%1&apos; is not x,y in mm</source>
-        <translation type="unfinished"></translation>
+        <translation>--polygon：角点 &apos;%1&apos; 不是以 mm 为单位的 x,y</translation>
     </message>
     <message>
         <source>give the camera field: --fov w,h in mm, or --sensor W,H px with --sensor-um and --mag</source>
-        <translation type="unfinished"></translation>
+        <translation>请给出相机视场：--fov w,h（mm），或 --sensor W,H（像素）加 --sensor-um 和 --mag</translation>
     </message>
     <message>
         <source>--sensor &apos;%1&apos; must be two whole pixel counts</source>
-        <translation type="unfinished"></translation>
+        <translation>--sensor &apos;%1&apos; 必须是两个整数像素数</translation>
     </message>
     <message>
         <source>--order &apos;%1&apos; is not one of snake-rows, rows, snake-cols, cols</source>
-        <translation type="unfinished"></translation>
+        <translation>--order &apos;%1&apos; 不是 snake-rows, rows, snake-cols, cols 之一</translation>
     </message>
     <message>
         <source>--start &apos;%1&apos; is not one of top-left, top-right, bottom-left, bottom-right</source>
-        <translation type="unfinished"></translation>
+        <translation>--start &apos;%1&apos; 不是 top-left, top-right, bottom-left, bottom-right 之一</translation>
     </message>
     <message>
         <source>--format &apos;%1&apos; is not one of json, summary, tileconfig, mmpos, csv</source>
-        <translation type="unfinished"></translation>
+        <translation>--format &apos;%1&apos; 不是 json, summary, tileconfig, mmpos, csv 之一</translation>
     </message>
     <message>
         <source>takes at most one plan file (got &apos;%1&apos;)</source>
-        <translation type="unfinished"></translation>
+        <translation>最多只接受一个计划文件（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>give a plan file or the plan&apos;s options, not both (--%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>计划文件和计划选项只能给出其一（--%1）</translation>
     </message>
     <message>
         <source>--pixel-um: the plan&apos;s camera gives the pixel size (sensor pixel / magnification)</source>
-        <translation type="unfinished"></translation>
+        <translation>--pixel-um：像素尺寸由计划中的相机给出（传感器像素 / 放大倍数）</translation>
     </message>
     <message>
         <source>--format tileconfig gives pixels: add --pixel-um (one pixel at the sample, µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>--format tileconfig 以像素为单位：请加上 --pixel-um（样品处一个像素的尺寸，µm）</translation>
     </message>
     <message>
         <source>needs one plan file: scan run PLAN.json [--out DIR]</source>
-        <translation type="unfinished"></translation>
+        <translation>需要一个计划文件：scan run PLAN.json [--out DIR]</translation>
     </message>
     <message>
         <source>scans run on the microscope stage; this is the %1 (use --sim stage or --port)</source>
-        <translation type="unfinished"></translation>
+        <translation>扫描只能在显微镜载物台上运行；当前仪器是%1（请用 --sim stage 或 --port）</translation>
     </message>
     <message>
         <source> (--restart starts over)</source>
-        <translation type="unfinished"></translation>
+        <translation>（--restart 重新开始）</translation>
     </message>
     <message>
         <source>Every tile of this scan is already taken in %1; exports written again. --restart takes them anew.
 </source>
-        <translation type="unfinished"></translation>
+        <translation>此扫描的所有图块已在 %1 中采集完毕；导出文件已重新写入。--restart 会重新采集。
+</translation>
     </message>
     <message>
         <source> (--home homes the stage first)</source>
-        <translation type="unfinished"></translation>
+        <translation>（--home 会先让载物台回零）</translation>
     </message>
     <message>
         <source>this scan takes about %1 min on the stage; add --yes to run it</source>
-        <translation type="unfinished"></translation>
+        <translation>此扫描在载物台上约需 %1 min；加上 --yes 才会运行</translation>
     </message>
     <message>
         <source>Continuing at tile %1 of %2 (the run log in %3 has the first %4).
 </source>
-        <translation type="unfinished"></translation>
+        <translation>从第 %1 个图块继续（共 %2 个；%3 中的运行日志已记录前 %4 个）。
+</translation>
     </message>
     <message>
         <source>tile %1/%2 %3 at %4, %5 mm (%6 s to settle)
 </source>
-        <translation type="unfinished"></translation>
+        <translation>图块 %1/%2 %3 位于 %4, %5 mm（稳定用时 %6 s）
+</translation>
     </message>
     <message>
         <source> Run the same command again to continue.</source>
-        <translation type="unfinished"></translation>
+        <translation> 再次运行同一命令即可继续。</translation>
     </message>
     <message>
         <source>%1 tiles taken; wrote %2
 </source>
-        <translation type="unfinished"></translation>
+        <translation>已采集 %1 个图块；已写入 %2
+</translation>
     </message>
     <message>
         <source>plan a stitching scan and print it (plan file, summary, Fiji, Micro-Manager or CSV)</source>
-        <translation type="unfinished"></translation>
+        <translation>规划拼接扫描并输出（计划文件、摘要、Fiji、Micro-Manager 或 CSV）</translation>
     </message>
     <message>
         <source>[PLAN.json]</source>
-        <translation type="unfinished"></translation>
+        <translation>[PLAN.json]</translation>
     </message>
     <message>
         <source>The tile grid steps by exactly field × (1 − overlap), centred on the region: n = max(1, ceil((W − F)/(F(1 − o))) + 1) per axis. Checked against the standard 100 × 100 mm stage. With PLAN.json, prints that plan in --format.</source>
-        <translation type="unfinished"></translation>
+        <translation>图块网格的步距恰为视场 × (1 − 重叠率)，并以区域为中心：每个轴 n = max(1, ceil((W − F)/(F(1 − o))) + 1)。按标准 100 × 100 mm 载物台检查。给出 PLAN.json 时，按 --format 输出该计划。</translation>
     </message>
     <message>
         <source>run a scan plan on the stage, continue a stopped run, write the exports</source>
-        <translation type="unfinished"></translation>
+        <translation>在载物台上运行扫描计划，继续已停止的运行，并写出导出文件</translation>
     </message>
     <message>
         <source>PLAN.json</source>
-        <translation type="unfinished"></translation>
+        <translation>PLAN.json</translation>
     </message>
     <message>
         <source>Needs the stage (--sim stage or --port) homed (--home does it). The run log and TileConfiguration.txt, positions.pos and scan.csv go to --out; a run stopped part-way continues at its next tile when run again.</source>
-        <translation type="unfinished"></translation>
+        <translation>需要已回零（--home 可完成）的载物台（--sim stage 或 --port）。运行日志以及 TileConfiguration.txt、positions.pos 和 scan.csv 写入 --out；中途停止的运行再次运行时会从下一个图块继续。</translation>
     </message>
     <message>
         <source>stitching scans on the stage: plan, run</source>
-        <translation type="unfinished"></translation>
+        <translation>载物台上的拼接扫描：规划、运行</translation>
     </message>
     <message>
         <source>See docs/scan.md for the grid rule, the plan file and the exports.</source>
-        <translation type="unfinished"></translation>
+        <translation>网格规则、计划文件和导出文件见 docs/scan.md。</translation>
     </message>
     <message>
         <source>Kp %1, Ki %2 /s, Kd %3 s</source>
-        <translation type="unfinished"></translation>
+        <translation>Kp %1，Ki %2 /s，Kd %3 s</translation>
     </message>
     <message>
         <source>gains are three numbers Kp,Ki,Kd (got &apos;%1&apos;)</source>
-        <translation type="unfinished"></translation>
+        <translation>增益是三个数 Kp,Ki,Kd（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>%1 &apos;%2&apos; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 &apos;%2&apos; 不是数字</translation>
     </message>
     <message>
         <source>homing the axis first</source>
-        <translation type="unfinished"></translation>
+        <translation>先让该轴回零</translation>
     </message>
     <message>
         <source>the axis did not come to rest</source>
-        <translation type="unfinished"></translation>
+        <translation>该轴未能停稳</translation>
     </message>
     <message>
         <source>give --sim stage or --port PATH</source>
-        <translation type="unfinished"></translation>
+        <translation>请给出 --sim stage 或 --port PATH</translation>
     </message>
     <message>
         <source>give either --plant or an instrument (--sim/--port with --axis), not both</source>
-        <translation type="unfinished"></translation>
+        <translation>--plant 与仪器（--sim/--port 加 --axis）只能给出其一，不能同时给出</translation>
     </message>
     <message>
         <source>--plant: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>--plant：%1</translation>
     </message>
     <message>
         <source>give --axis X (a closed-loop axis) or --plant SPEC</source>
-        <translation type="unfinished"></translation>
+        <translation>请给出 --axis X（闭环轴）或 --plant SPEC</translation>
     </message>
     <message>
         <source>could not start</source>
-        <translation type="unfinished"></translation>
+        <translation>无法开始</translation>
     </message>
     <message>
         <source>no result within %1 s (--timeout): aborted; the axis is stopped</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 s 内没有结果（--timeout）：已中止；该轴已停止</translation>
     </message>
     <message>
         <source>the link was lost; the device ended the test and holds the axis under its gains</source>
-        <translation type="unfinished"></translation>
+        <translation>连接中断；设备已结束测试，并以其增益保持该轴</translation>
     </message>
     <message>
         <source>--method must be zn (ultimate gain) or relay</source>
-        <translation type="unfinished"></translation>
+        <translation>--method 必须为 zn（临界增益）或 relay（继电）</translation>
     </message>
     <message>
         <source>--verify: no rule &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--verify：没有规则 &apos;%1&apos;</translation>
     </message>
     <message>
         <source>relay</source>
-        <translation type="unfinished"></translation>
+        <translation>继电法</translation>
     </message>
     <message>
         <source>ultimate gain</source>
-        <translation type="unfinished"></translation>
+        <translation>临界增益法</translation>
     </message>
     <message>
         <source> runs</source>
-        <translation type="unfinished"></translation>
+        <translation> 次试验</translation>
     </message>
     <message>
         <source>  classic describing function: Ku = %1, Tu = %2 s%3
 </source>
-        <translation type="unfinished"></translation>
+        <translation>  经典描述函数法：Ku = %1，Tu = %2 s%3
+</translation>
     </message>
     <message>
         <source> (refined above)</source>
-        <translation type="unfinished"></translation>
+        <translation>（上方为细化后的结果）</translation>
     </message>
     <message>
         <source>  rule                       Kp          Ki [1/s]    Kd [s]      | per period T = %1 s: kp, ki, kd
 </source>
-        <translation type="unfinished"></translation>
+        <translation>  规则                       Kp          Ki [1/s]    Kd [s]      | 每周期 T = %1 s：kp, ki, kd
+</translation>
     </message>
     <message>
         <source>  verified with %1: overshoot %2 %, %3
 </source>
-        <translation type="unfinished"></translation>
+        <translation>  用 %1 验证：超调量 %2 %，%3
+</translation>
     </message>
     <message>
         <source>--size must be a non-zero number (mm on an instrument, signed for the direction)</source>
-        <translation type="unfinished"></translation>
+        <translation>--size 必须是非零数（在仪器上以 mm 为单位，正负号表示方向）</translation>
     </message>
     <message>
         <source>--gains: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>--gains：%1</translation>
     </message>
     <message>
         <source>a model plant has no gains of its own: give --gains Kp,Ki,Kd</source>
-        <translation type="unfinished"></translation>
+        <translation>模型对象没有自身的增益：请给出 --gains Kp,Ki,Kd</translation>
     </message>
     <message>
         <source>: step %1 %2 with </source>
-        <translation type="unfinished"></translation>
+        <translation>：阶跃 %1 %2，增益 </translation>
     </message>
     <message>
         <source>  rise 10–90 %: %1 s, overshoot %2 %, settling (2 %): %3 s
 </source>
-        <translation type="unfinished"></translation>
+        <translation>  上升时间（10–90 %）：%1 s，超调量 %2 %，调节时间（2 %）：%3 s
+</translation>
     </message>
     <message>
         <source>  steady-state error %1 %4, IAE %2 %4·s, ISE %3 %4²·s, peak output %5 %4
 </source>
-        <translation type="unfinished"></translation>
+        <translation>  稳态误差 %1 %4，IAE %2 %4·s，ISE %3 %4²·s，输出峰值 %5 %4
+</translation>
     </message>
     <message>
         <source>  never inside seed 002&apos;s ±5 µm band
 </source>
-        <translation type="unfinished"></translation>
+        <translation>  始终未进入文献 002 的 ±5 µm 带内
+</translation>
     </message>
     <message>
         <source>  inside seed 002&apos;s ±5 µm band from %1 s
 </source>
-        <translation type="unfinished"></translation>
+        <translation>  自 %1 s 起进入文献 002 的 ±5 µm 带内
+</translation>
     </message>
     <message>
         <source>expected AXIS=Kp,Ki,Kd with a closed-loop axis, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>应为 AXIS=Kp,Ki,Kd，且须为闭环轴，收到 &apos;%1&apos;</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished">%1：%2</translation>
+        <translation>%1：%2</translation>
     </message>
     <message>
         <source>set gains</source>
-        <translation type="unfinished">设置增益</translation>
+        <translation>设置增益</translation>
     </message>
     <message>
         <source>  (per period T = %1 s: kp %2, ki %3, kd %4)</source>
-        <translation type="unfinished"></translation>
+        <translation>  （每周期 T = %1 s：kp %2，ki %3，kd %4）</translation>
     </message>
     <message>
         <source>; power-up set differs</source>
-        <translation type="unfinished"></translation>
+        <translation>；上电增益组与此不同</translation>
     </message>
     <message>
         <source>a model plant instead of an instrument: fopdt:K=..,tau=..,L=.. or lag:K=..,tau=..,n=..</source>
-        <translation type="unfinished"></translation>
+        <translation>用模型对象代替仪器：fopdt:K=..,tau=..,L=.. 或 lag:K=..,tau=..,n=..</translation>
     </message>
     <message>
         <source>the instrument&apos;s closed-loop axis</source>
-        <translation type="unfinished"></translation>
+        <translation>仪器的闭环轴</translation>
     </message>
     <message>
         <source>home the axis and move it to mid-travel first (always done on the in-process simulator)</source>
-        <translation type="unfinished"></translation>
+        <translation>先让该轴回零并移到行程中点（在进程内仿真器上总会执行）</translation>
     </message>
     <message>
         <source>envelope: the furthest from the start (mm; plant units)</source>
-        <translation type="unfinished"></translation>
+        <translation>安全包络：离起点的最大距离（mm；或对象单位）</translation>
     </message>
     <message>
         <source>envelope: the largest |setpoint − position|</source>
-        <translation type="unfinished"></translation>
+        <translation>安全包络：|设定值 − 位置| 的最大值</translation>
     </message>
     <message>
         <source>envelope: the longest a test may run, s</source>
-        <translation type="unfinished"></translation>
+        <translation>安全包络：测试的最长运行时间，s</translation>
     </message>
     <message>
         <source>gains are eq. 2&apos;s per-period kp,ki,kd, not Kp, Ki [1/s], Kd [s]</source>
-        <translation type="unfinished"></translation>
+        <translation>增益为式 2 的每周期 kp,ki,kd，而不是 Kp、Ki [1/s]、Kd [s]</translation>
     </message>
     <message>
         <source>find Ku and Tu (Ziegler–Nichols) and print the tuning rules</source>
-        <translation type="unfinished"></translation>
+        <translation>求 Ku 和 Tu（Ziegler–Nichols）并输出整定规则</translation>
     </message>
     <message>
         <source>--method zn raises Kp trial by trial (P only) until the oscillation neither grows nor decays; --method relay runs Åström and Hägglund&apos;s relay, then refines to the measured phase crossover. Trials run inside 60 % of the envelope. Ki and Kd are printed in continuous form (1/s, s).</source>
-        <translation type="unfinished"></translation>
+        <translation>--method zn 逐次试验提高 Kp（仅比例控制），直到振荡既不发散也不衰减；--method relay 运行 Åström 和 Hägglund 的继电测试，然后细化到实测的相位穿越点。试验在安全包络的 60 % 以内进行。Ki 和 Kd 以连续形式输出（1/s、s）。</translation>
     </message>
     <message>
         <source>zn (ultimate gain) or relay</source>
-        <translation type="unfinished"></translation>
+        <translation>zn（临界增益）或 relay（继电）</translation>
     </message>
     <message>
         <source>relay: d, of the controller output (mm; plant units)</source>
-        <translation type="unfinished"></translation>
+        <translation>relay：继电幅值 d，即控制器输出的幅值（mm；或对象单位）</translation>
     </message>
     <message>
         <source>relay: ε (mm; plant units)</source>
-        <translation type="unfinished"></translation>
+        <translation>relay：滞环 ε（mm；或对象单位）</translation>
     </message>
     <message>
         <source>zn: each trial&apos;s setpoint step (mm; plant units)</source>
-        <translation type="unfinished"></translation>
+        <translation>zn：每次试验的设定值阶跃（mm；或对象单位）</translation>
     </message>
     <message>
         <source>relay: only the classic describing-function estimate</source>
-        <translation type="unfinished"></translation>
+        <translation>relay：仅给出经典描述函数法的估计值</translation>
     </message>
     <message>
         <source>run a step test with this rule&apos;s gains afterwards (zn-pid, tl-pi, …)</source>
-        <translation type="unfinished"></translation>
+        <translation>之后用该规则的增益运行阶跃测试（zn-pid, tl-pi, …）</translation>
     </message>
     <message>
         <source>write the results to a .tuning.json file</source>
-        <translation type="unfinished"></translation>
+        <translation>将结果写入 .tuning.json 文件</translation>
     </message>
     <message>
         <source>a step on one axis under given (or the axis&apos; own) gains; print its metrics</source>
-        <translation type="unfinished"></translation>
+        <translation>在给定增益（或该轴自身增益）下对单轴施加阶跃；输出其指标</translation>
     </message>
     <message>
         <source>--size in mm (signed: the direction). --gains Kp,Ki,Kd are tried for this test only: the axis&apos; own gains stay.</source>
-        <translation type="unfinished"></translation>
+        <translation>--size 以 mm 为单位（正负号表示方向）。--gains Kp,Ki,Kd 只在本次测试中试用：轴自身的增益保持不变。</translation>
     </message>
     <message>
         <source>step size, mm (plant units); negative steps down</source>
-        <translation type="unfinished"></translation>
+        <translation>阶跃大小，mm（或对象单位）；负值表示反向阶跃</translation>
     </message>
     <message>
         <source>Kp,Ki,Kd for this test (Ki in 1/s, Kd in s)</source>
-        <translation type="unfinished"></translation>
+        <translation>本次测试的 Kp,Ki,Kd（Ki 单位 1/s，Kd 单位 s）</translation>
     </message>
     <message>
         <source>show or set the PID gains of the closed-loop axes</source>
-        <translation type="unfinished"></translation>
+        <translation>显示或设置闭环轴的 PID 增益</translation>
     </message>
     <message>
         <source>Kp, Ki in 1/s, Kd in s (per period with --per-period). The device refuses NaN, negative and absurd values with its reason and keeps the gains it had.</source>
-        <translation type="unfinished"></translation>
+        <translation>Kp、Ki（1/s）、Kd（s）（使用 --per-period 时为每周期值）。设备会拒绝 NaN、负值和不合理的值并说明原因，同时保留原有增益。</translation>
     </message>
     <message>
         <source>also keep them as the device&apos;s power-up gains</source>
-        <translation type="unfinished"></translation>
+        <translation>同时保存为设备的上电增益</translation>
     </message>
     <message>
         <source>warning: </source>
-        <translation type="unfinished"></translation>
+        <translation>警告：</translation>
     </message>
     <message>
         <source>Axis %1, %2, %3 cycles, %4 targets (ISO 230-2, µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 轴，%2，%3 个循环，%4 个目标位置（ISO 230-2，µm）</translation>
     </message>
     <message>
         <source>bidirectional</source>
-        <translation type="unfinished"></translation>
+        <translation>双向</translation>
     </message>
     <message>
         <source>unidirectional</source>
-        <translation type="unfinished"></translation>
+        <translation>单向</translation>
     </message>
     <message>
         <source>pass</source>
-        <translation type="unfinished"></translation>
+        <translation>合格</translation>
     </message>
     <message>
         <source>FAIL</source>
-        <translation type="unfinished"></translation>
+        <translation>不合格</translation>
     </message>
     <message>
         <source>--%1 must be above 0 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1 必须大于 0 mm</translation>
     </message>
     <message>
         <source>give one readings CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>请给出一个读数 CSV 文件</translation>
     </message>
     <message>
         <source>give --sequence TARGETS.csv and the interferometer&apos;s CSV export</source>
-        <translation type="unfinished"></translation>
+        <translation>请给出 --sequence TARGETS.csv 和激光干涉仪导出的 CSV 文件</translation>
     </message>
     <message>
         <source>wrote %1</source>
-        <translation type="unfinished"></translation>
+        <translation>已写入 %1</translation>
     </message>
     <message>
         <source>%1 is not a circular test</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 不是圆测试</translation>
     </message>
     <message>
         <source>give --radius R (mm), or --test FILE</source>
-        <translation type="unfinished"></translation>
+        <translation>请给出 --radius R（mm）或 --test FILE</translation>
     </message>
     <message>
         <source>--time-scale speeds up the in-process simulator: use it with --sim</source>
-        <translation type="unfinished"></translation>
+        <translation>--time-scale 用于加速进程内仿真器：请与 --sim 一起使用</translation>
     </message>
     <message>
         <source>Circular test, radius %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>圆测试，半径 %1 mm</translation>
     </message>
     <message>
         <source>G %1: %2 µm</source>
-        <translation type="unfinished"></translation>
+        <translation>G %1：%2 µm</translation>
     </message>
     <message>
         <source>H: %1 µm</source>
-        <translation type="unfinished"></translation>
+        <translation>H：%1 µm</translation>
     </message>
     <message>
         <source>ISO 230-2 positioning tests, ISO 230-4 circular tests, their analysis</source>
-        <translation type="unfinished"></translation>
+        <translation>ISO 230-2 定位测试、ISO 230-4 圆测试及其分析</translation>
     </message>
     <message>
         <source>run a positioning test on an axis and evaluate it (ISO 230-2)</source>
-        <translation type="unfinished"></translation>
+        <translation>在某轴上运行定位测试并评定（ISO 230-2）</translation>
     </message>
     <message>
         <source>Moves through the standard linear cycle, takes a reading at every stop once the axis has settled, and writes the readings CSV, the result JSON and the PDF report into --out. A run that stopped continues from its log there.</source>
-        <translation type="unfinished"></translation>
+        <translation>按标准线性循环移动，在每个停止点待轴稳定后取一个读数，并将读数 CSV、结果 JSON 和 PDF 报告写入 --out。已停止的运行会依据该处的日志继续。</translation>
     </message>
     <message>
         <source>ISO 230-2 figures of a readings CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>由读数 CSV 计算 ISO 230-2 指标</translation>
     </message>
     <message>
         <source>READINGS.csv</source>
-        <translation type="unfinished"></translation>
+        <translation>READINGS.csv</translation>
     </message>
     <message>
         <source>run a circular test on X and Y (ISO 230-4)</source>
-        <translation type="unfinished"></translation>
+        <translation>在 X 和 Y 上运行圆测试（ISO 230-4）</translation>
     </message>
     <message>
         <source>an interferometer&apos;s CSV export matched to a run&apos;s target sequence</source>
-        <translation type="unfinished"></translation>
+        <translation>将激光干涉仪导出的 CSV 与某次运行的目标位置序列相匹配</translation>
     </message>
     <message>
         <source>EXPORT.csv</source>
-        <translation type="unfinished"></translation>
+        <translation>EXPORT.csv</translation>
     </message>
     <message>
         <source>--targets &apos;%1&apos;: START:END:COUNT, such as 10:90:9, or a list such as 10,30,50</source>
-        <translation type="unfinished"></translation>
+        <translation>--targets &apos;%1&apos;：应为 START:END:COUNT，如 10:90:9，或列表，如 10,30,50</translation>
     </message>
     <message>
         <source>%1 is a circular test: run it with &apos;accuracy circle --test&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 是圆测试：请用 &apos;accuracy circle --test&apos; 运行</translation>
     </message>
     <message>
         <source>give --targets START:END:COUNT (or a list), or --test FILE</source>
-        <translation type="unfinished"></translation>
+        <translation>请给出 --targets START:END:COUNT（或列表），或 --test FILE</translation>
     </message>
     <message>
         <source>--cycles &apos;%1&apos; must be a whole number</source>
-        <translation type="unfinished"></translation>
+        <translation>--cycles &apos;%1&apos; 必须是整数</translation>
     </message>
     <message>
         <source>--time-scale must be from 0 to 100</source>
-        <translation type="unfinished"></translation>
+        <translation>--time-scale 必须在 0 到 100 之间</translation>
     </message>
     <message>
         <source><byte value="xd"/>%1 of %2 readings, about %3 s left   </source>
-        <translation type="unfinished"></translation>
+        <translation><byte value="xd"/>已取得 %1/%2 个读数，约剩 %3 s   </translation>
     </message>
     <message>
         <source>Positioning accuracy of axis %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 轴定位精度</translation>
     </message>
     <message>
         <source>contour error: A↑ %1 µm, R↑ %2 µm</source>
-        <translation type="unfinished"></translation>
+        <translation>轮廓误差：A↑ %1 µm，R↑ %2 µm</translation>
     </message>
     <message>
         <source>reading %1 of %2: %3%4, cycle %5; type the reading in mm (q aborts): </source>
-        <translation type="unfinished"></translation>
+        <translation>读数 %1/%2：%3%4，循环 %5；请输入读数，单位 mm（输入 q 中止）：</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not a reading here; </source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; 不是此处有效的读数；</translation>
     </message>
     <message>
         <source>no BenchPilot GUI is running with its API at %1. Start benchpilot (with --api-socket %1 if that is where it should listen), or leave out --attach to open the instrument directly.</source>
-        <translation type="unfinished"></translation>
+        <translation>没有接口位于 %1 的 BenchPilot 图形界面在运行。请启动 benchpilot（若应在该处监听，请加上 --api-socket %1），或去掉 --attach 以直接打开仪器。</translation>
     </message>
     <message>
         <source>cannot reach the BenchPilot GUI at %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>无法连接到位于 %1 的 BenchPilot 图形界面：%2</translation>
     </message>
     <message>
         <source>the GUI at %1 does not take the command: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>位于 %1 的图形界面不接受该命令：%2</translation>
     </message>
     <message>
         <source>the GUI closed the connection before the command finished</source>
-        <translation type="unfinished"></translation>
+        <translation>命令完成前图形界面关闭了连接</translation>
     </message>
     <message>
         <source>--instrument needs &apos;analyzer&apos; or &apos;stage&apos; (got &apos;%1&apos;)</source>
@@ -1994,7 +2033,7 @@ Options:
     </message>
     <message>
         <source>--profile needs a machine profile file</source>
-        <translation type="unfinished"></translation>
+        <translation>--profile 需要一个机器配置文件</translation>
     </message>
     <message>
         <source>--profile: %1</source>
@@ -2002,7 +2041,7 @@ Options:
     </message>
     <message>
         <source>the in-process simulator: analyzer or stage (default: analyzer); with --attach, which of the GUI&apos;s instruments</source>
-        <translation type="unfinished"></translation>
+        <translation>进程内仿真器：analyzer 或 stage（默认：analyzer）；与 --attach 一起使用时，指图形界面中的哪台仪器</translation>
     </message>
     <message>
         <source>with --port: which instrument it is, analyzer or stage (default: what the device says; a GRBL controller: the profile&apos;s, else the analyzer)</source>
@@ -2014,11 +2053,11 @@ Options:
     </message>
     <message>
         <source>run the command through the running BenchPilot GUI (its instruments, its control lease)</source>
-        <translation type="unfinished"></translation>
+        <translation>通过正在运行的 BenchPilot 图形界面执行命令（使用其仪器及其控制权）</translation>
     </message>
     <message>
         <source>with --attach: the GUI&apos;s API socket (default: $XDG_RUNTIME_DIR/benchpilot/api.sock)</source>
-        <translation type="unfinished"></translation>
+        <translation>与 --attach 一起使用：图形界面的接口套接字（默认：$XDG_RUNTIME_DIR/benchpilot/api.sock）</translation>
     </message>
     <message>
         <source>usage: benchpilot-cli [GLOBAL OPTIONS] COMMAND [OPTIONS] [ARGUMENTS]
@@ -2028,230 +2067,263 @@ serial port: BenchPilot firmware, or a GRBL 1.1 / grblHAL controller) and its mo
 
 Commands:
 </source>
-        <translation type="unfinished"></translation>
+        <translation>用法：benchpilot-cli [全局选项] 命令 [选项] [参数]
+
+以脚本方式操作 BenchPilot 的仪器（进程内仿真器、benchpilot-sim 的 pty，或
+串口：BenchPilot 固件，或 GRBL 1.1 / grblHAL 控制器）及其运动库。
+
+命令：
+</translation>
     </message>
     <message>
         <source>
 Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile FILE, --json, --timeout S (see benchpilot-cli --help).
 </source>
-        <translation type="unfinished"></translation>
+        <translation>
+全局选项：--sim KIND, --port PATH, --baud N, --instrument KIND, --profile FILE, --json, --timeout S（参见 benchpilot-cli --help）。
+</translation>
     </message>
     <message>
         <source>--api-socket goes with --attach</source>
-        <translation type="unfinished"></translation>
+        <translation>--api-socket 须与 --attach 一起使用</translation>
     </message>
     <message>
         <source>--attach is already in effect here</source>
-        <translation type="unfinished"></translation>
+        <translation>此处 --attach 已经生效</translation>
     </message>
     <message>
         <source>--instrument and --profile go with --port (--sim names its instrument itself)</source>
-        <translation type="unfinished"></translation>
+        <translation>--instrument 和 --profile 须与 --port 一起使用（--sim 自身已指明仪器）</translation>
     </message>
     <message>
         <source>[ALARM] the controller does not trust its position: home, or `unlock` on your word</source>
-        <translation type="unfinished"></translation>
+        <translation>[报警] 控制器不再确信自身位置：请回零，或在确认后执行 `unlock`</translation>
     </message>
     <message>
         <source>give one result JSON or error-curve CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>请给出一个结果 JSON 或误差曲线 CSV</translation>
     </message>
     <message>
         <source>--order &apos;%1&apos;: auto or 1 to 5</source>
-        <translation type="unfinished"></translation>
+        <translation>--order &apos;%1&apos;：应为 auto 或 1 到 5</translation>
     </message>
     <message>
         <source>--kind &apos;%1&apos;: polynomial or table</source>
-        <translation type="unfinished"></translation>
+        <translation>--kind &apos;%1&apos;：应为 polynomial 或 table</translation>
     </message>
     <message>
         <source>--kind table needs a result JSON: a table is made from each target&apos;s means</source>
-        <translation type="unfinished"></translation>
+        <translation>--kind table 需要结果 JSON：补偿表由各目标位置的平均值生成</translation>
     </message>
     <message>
         <source>order  SSE (µm²)        R²         adjusted R²</source>
-        <translation type="unfinished"></translation>
+        <translation>阶次   SSE (µm²)        R²         调整后 R²</translation>
     </message>
     <message>
         <source>n/a</source>
-        <translation type="unfinished"></translation>
+        <translation>无</translation>
     </message>
     <message>
         <source>e(x) = %1 µm over %2 … %3 mm; backlash %4 µm</source>
-        <translation type="unfinished"></translation>
+        <translation>e(x) = %1 µm，范围 %2 … %3 mm；反向间隙 %4 µm</translation>
     </message>
     <message>
         <source>axis %1: no compensation</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 轴：无补偿</translation>
     </message>
     <message>
         <source>polynomial of order %1 over %2 … %3 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 阶多项式，范围 %2 … %3 mm</translation>
     </message>
     <message>
         <source>table of %1 points%2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 点补偿表%2</translation>
     </message>
     <message>
         <source> per direction</source>
-        <translation type="unfinished"></translation>
+        <translation>（分方向）</translation>
     </message>
     <message>
         <source>axis %1: %2, backlash %3 µm; %4%5%6</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 轴：%2，反向间隙 %3 µm；%4%5%6</translation>
     </message>
     <message>
         <source>enabled</source>
-        <translation type="unfinished"></translation>
+        <translation>已启用</translation>
     </message>
     <message>
         <source>disabled</source>
-        <translation type="unfinished"></translation>
+        <translation>已禁用</translation>
     </message>
     <message>
         <source> (applied once the axis is homed)</source>
-        <translation type="unfinished"></translation>
+        <translation>（轴回零后生效）</translation>
     </message>
     <message>
         <source>, kept for power-up</source>
-        <translation type="unfinished"></translation>
+        <translation>，已保存为上电设置</translation>
     </message>
     <message>
         <source>give one compensation file</source>
-        <translation type="unfinished"></translation>
+        <translation>请给出一个补偿文件</translation>
     </message>
     <message>
         <source>--format &apos;%1&apos;: linuxcnc or csv</source>
-        <translation type="unfinished"></translation>
+        <translation>--format &apos;%1&apos;：应为 linuxcnc 或 csv</translation>
     </message>
     <message>
         <source>--type &apos;%1&apos;: 0 (positions reached) or 1 (corrections)</source>
-        <translation type="unfinished"></translation>
+        <translation>--type &apos;%1&apos;：应为 0（到达的位置）或 1（修正量）</translation>
     </message>
     <message>
         <source>axis error compensation: fit, keep on the device, export</source>
-        <translation type="unfinished"></translation>
+        <translation>轴误差补偿：拟合、保存到设备、导出</translation>
     </message>
     <message>
         <source>fit error polynomials of orders 1–5 to a result or an error curve</source>
-        <translation type="unfinished"></translation>
+        <translation>对结果或误差曲线拟合 1–5 阶误差多项式</translation>
     </message>
     <message>
         <source>INPUT</source>
-        <translation type="unfinished"></translation>
+        <translation>输入</translation>
     </message>
     <message>
         <source>INPUT is a result JSON of &apos;accuracy run&apos; or &apos;accuracy analyze&apos;, or a CSV with position_mm,error_um. The order is chosen by adjusted R² unless --order names one; --out writes the compensation file.</source>
-        <translation type="unfinished"></translation>
+        <translation>输入为 &apos;accuracy run&apos; 或 &apos;accuracy analyze&apos; 的结果 JSON，或含 position_mm,error_um 列的 CSV。除非 --order 指定阶次，否则按调整后 R² 选择阶次；--out 写出补偿文件。</translation>
     </message>
     <message>
         <source>send a compensation file to the device (installed disabled)</source>
-        <translation type="unfinished"></translation>
+        <translation>将补偿文件发送到设备（安装后处于禁用状态）</translation>
     </message>
     <message>
         <source>FILE</source>
-        <translation type="unfinished"></translation>
+        <translation>文件</translation>
     </message>
     <message>
         <source>the device&apos;s compensation of an axis</source>
-        <translation type="unfinished"></translation>
+        <translation>设备上某轴的补偿</translation>
     </message>
     <message>
         <source>enable the device&apos;s compensation of an axis</source>
-        <translation type="unfinished"></translation>
+        <translation>启用设备上某轴的补偿</translation>
     </message>
     <message>
         <source>disable the device&apos;s compensation of an axis</source>
-        <translation type="unfinished"></translation>
+        <translation>禁用设备上某轴的补偿</translation>
     </message>
     <message>
         <source>a compensation as CSV or a LinuxCNC compensation file</source>
-        <translation type="unfinished"></translation>
+        <translation>将补偿导出为 CSV 或 LinuxCNC 补偿文件</translation>
     </message>
     <message>
         <source>[FILE]</source>
-        <translation type="unfinished"></translation>
+        <translation>[文件]</translation>
     </message>
     <message>
         <source>Exports FILE, or the device&apos;s compensation of --axis when no FILE is given. LinuxCNC: --type 0 writes the positions the joint reaches, --type 1 the corrections (COMP_FILE_TYPE).</source>
-        <translation type="unfinished"></translation>
+        <translation>导出给定的文件；未给出文件时，导出设备上 --axis 所指轴的补偿。LinuxCNC：--type 0 写出关节到达的位置，--type 1 写出修正量（COMP_FILE_TYPE）。</translation>
     </message>
     <message>
         <source>nothing to unlock: the instrument trusts its position</source>
-        <translation type="unfinished"></translation>
+        <translation>无需解锁：仪器确信自身位置</translation>
     </message>
     <message>
         <source>unlocking: the position the controller believes is taken as true; home the axes when you can</source>
-        <translation type="unfinished"></translation>
+        <translation>正在解锁：以控制器认定的位置为准；请尽快让各轴回零</translation>
     </message>
     <message>
         <source>unlock</source>
-        <translation type="unfinished"></translation>
+        <translation>解锁</translation>
     </message>
     <message>
         <source>the axes to home, e.g. &quot;XY&quot;; all when left out</source>
-        <translation type="unfinished"></translation>
+        <translation>要回零的轴，例如 &quot;XY&quot;；省略时全部回零</translation>
     </message>
     <message>
         <source>axis → target, e.g. {&quot;X&quot;: 10, &quot;Y&quot;: 5}</source>
-        <translation type="unfinished"></translation>
+        <translation>轴 → 目标位置，例如 {&quot;X&quot;: 10, &quot;Y&quot;: 5}</translation>
     </message>
     <message>
         <source>the axis letter</source>
-        <translation type="unfinished"></translation>
+        <translation>轴字母</translation>
     </message>
     <message>
         <source>axis units per second, signed</source>
-        <translation type="unfinished"></translation>
+        <translation>每秒的轴单位数，带正负号</translation>
     </message>
     <message>
         <source>jog this long, then stop and wait until still; without it the jog runs until device.stop, or until the lease or the connection ends</source>
-        <translation type="unfinished"></translation>
+        <translation>点动这么长时间，然后停止并等待停稳；省略时点动一直进行，直到 device.stop，或控制权或连接结束</translation>
     </message>
     <message>
         <source>On a GRBL controller without homing ($22=0) this takes the present position as home, on your word: absolute moves are allowed after it.</source>
-        <translation type="unfinished"></translation>
+        <translation>在未启用回零（$22=0）的 GRBL 控制器上，这会按您的确认将当前位置作为零位：之后允许绝对移动。</translation>
     </message>
     <message>
         <source>the axes to zero, e.g. &quot;XY&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>要设零点的轴，例如 &quot;XY&quot;</translation>
     </message>
     <message>
         <source>accept the position a controller believes after an alarm (GRBL&apos;s $X)</source>
-        <translation type="unfinished"></translation>
+        <translation>报警后采用控制器认定的位置（GRBL 的 $X）</translation>
     </message>
     <message>
         <source>After an alarm that lost the position (a reset while moving, an E-stop, a hard limit) a GRBL controller refuses motion until it is homed or unlocked. Unlocking takes its idea of the position as true: home when you can.</source>
-        <translation type="unfinished"></translation>
+        <translation>发生丢失位置的报警后（运动中复位、急停、硬限位），GRBL 控制器在回零或解锁前拒绝运动。解锁即以其认定的位置为准：请尽快回零。</translation>
     </message>
     <message>
         <source>axis → [min, max] to set; shows them when left out</source>
-        <translation type="unfinished"></translation>
+        <translation>轴 → 要设置的 [min, max]；省略时显示当前值</translation>
     </message>
     <message>
         <source>one joint&apos;s blocks &quot;S:V2:t0_ms,…&quot;; an array of such strings for several joints</source>
-        <translation type="unfinished"></translation>
+        <translation>一个关节的块 &quot;S:V2:t0_ms,…&quot;；多个关节时为此类字符串组成的数组</translation>
     </message>
     <message>
         <source>%1 on the %2: %3 of %4 segments in %5 s; contour error max %6 µm, RMS %7 µm (%8 samples at %9 Hz)
 </source>
-        <translation type="unfinished"></translation>
+        <translation>%2上的 %1：%5 s 内完成 %3/%4 段；轮廓误差最大 %6 µm，均方根 %7 µm（%8 个采样点，%9 Hz）
+</translation>
     </message>
     <message>
         <source>the recipe file</source>
-        <translation type="unfinished"></translation>
+        <translation>加样方案文件</translation>
     </message>
     <message>
         <source>a plan file to print in another format (instead of the plan&apos;s options)</source>
-        <translation type="unfinished"></translation>
+        <translation>要以另一种格式输出的计划文件（代替计划选项）</translation>
     </message>
     <message>
         <source>the scan plan file</source>
-        <translation type="unfinished"></translation>
+        <translation>扫描计划文件</translation>
     </message>
     <message>
         <source>axis → [Kp, Ki, Kd] to set; shows them when left out</source>
-        <translation type="unfinished"></translation>
+        <translation>轴 → 要设置的 [Kp, Ki, Kd]；省略时显示当前值</translation>
+    </message>
+    <message>
+        <source>--time-scale speeds up benchpilot-cli&apos;s own simulator; the GUI&apos;s simulators keep their pace</source>
+        <translation>--time-scale 只加速 benchpilot-cli 自己的仿真器；图形界面的仿真器保持原有速度</translation>
+    </message>
+    <message>
+        <source>the readings CSV</source>
+        <translation>读数 CSV 文件</translation>
+    </message>
+    <message>
+        <source>the interferometer software&apos;s CSV export</source>
+        <translation>干涉仪软件导出的 CSV 文件</translation>
+    </message>
+    <message>
+        <source>a result JSON, or a CSV with position_mm,error_um</source>
+        <translation>结果 JSON，或含 position_mm,error_um 列的 CSV</translation>
+    </message>
+    <message>
+        <source>the compensation file</source>
+        <translation>补偿文件</translation>
+    </message>
+    <message>
+        <source>a compensation file; the device&apos;s when left out</source>
+        <translation>补偿文件；省略时使用设备上的补偿</translation>
     </message>
 </context>
 <context>
@@ -2262,19 +2334,19 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     </message>
     <message>
         <source>--profile %1 is for the %2, but --instrument says %3</source>
-        <translation type="unfinished"></translation>
+        <translation>--profile %1 适用于%2，但 --instrument 指定的是%3</translation>
     </message>
     <message>
         <source>cannot connect to %1: the protocol could not be detected</source>
-        <translation type="unfinished"></translation>
+        <translation>无法连接到 %1：无法检测通信协议</translation>
     </message>
     <message>
         <source>cannot connect to %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>无法连接到 %1：%2</translation>
     </message>
     <message>
         <source>%1 is a %2, not the %3 --instrument names</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 是%2，不是 --instrument 指定的%3</translation>
     </message>
 </context>
 <context>
@@ -2759,6 +2831,14 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <source>simulated gauge</source>
         <translation>模拟测头</translation>
     </message>
+    <message>
+        <source>--source manual reads what a person types at benchpilot-cli; in the GUI use the Calibration screen</source>
+        <translation>--source manual 读取操作员在 benchpilot-cli 中输入的读数；在图形界面中请使用“校准”界面</translation>
+    </message>
+    <message>
+        <source>--source gauge:sim is benchpilot-cli&apos;s own simulator&apos;s gauge: inside the GUI give the gauge&apos;s port, or use the Calibration screen&apos;s simulated gauge</source>
+        <translation>--source gauge:sim 是 benchpilot-cli 自带仿真器的测头：在图形界面中请给出测头的端口，或使用“校准”界面的模拟测头</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -2871,362 +2951,363 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <name>report</name>
     <message>
         <source>Instrument: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>仪器：%1</translation>
     </message>
     <message>
         <source>Reference: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>测量基准：%1</translation>
     </message>
     <message>
         <source>Axis %1, %2 targets (mm): %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 轴，%2 个目标位置 (mm)：%3</translation>
     </message>
     <message>
         <source>%1 cycles, %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 次循环，%2</translation>
     </message>
     <message>
         <source>bidirectional (ISO 230-2 standard linear cycle)</source>
-        <translation type="unfinished"></translation>
+        <translation>双向（ISO 230-2 标准线性循环）</translation>
     </message>
     <message>
         <source>unidirectional (approached from below)</source>
-        <translation type="unfinished"></translation>
+        <translation>单向（从下方趋近）</translation>
     </message>
     <message>
         <source>Feed %1, overrun %2, dwell %3; settled within %4 for %5 (timeout %6)</source>
-        <translation type="unfinished"></translation>
+        <translation>进给速度 %1，越程 %2，停留 %3；在 %4 以内稳定 %5 后读数（超时 %6）</translation>
     </message>
     <message>
         <source>Readings: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>读数文件：%1</translation>
     </message>
     <message>
         <source>Figure</source>
-        <translation type="unfinished"></translation>
+        <translation>指标</translation>
     </message>
     <message>
         <source>Before (µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>补偿前 (µm)</translation>
     </message>
     <message>
         <source>After (µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>补偿后 (µm)</translation>
     </message>
     <message>
         <source>Improvement</source>
-        <translation type="unfinished"></translation>
+        <translation>改善倍数</translation>
     </message>
     <message>
         <source>Value (µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>数值 (µm)</translation>
     </message>
     <message>
         <source>Limit (µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>限值 (µm)</translation>
     </message>
     <message>
         <source>Verdict</source>
-        <translation type="unfinished"></translation>
+        <translation>判定</translation>
     </message>
     <message>
         <source>pass</source>
-        <translation type="unfinished"></translation>
+        <translation>合格</translation>
     </message>
     <message>
         <source>FAIL</source>
-        <translation type="unfinished"></translation>
+        <translation>不合格</translation>
     </message>
     <message>
         <source>target (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>目标位置 (mm)</translation>
     </message>
     <message>
         <source>deviation (µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>偏差 (µm)</translation>
     </message>
     <message>
         <source>mean ↑</source>
-        <translation type="unfinished"></translation>
+        <translation>平均值 ↑</translation>
     </message>
     <message>
         <source>mean ↓</source>
-        <translation type="unfinished"></translation>
+        <translation>平均值 ↓</translation>
     </message>
     <message>
         <source>mean ± 2s</source>
-        <translation type="unfinished"></translation>
+        <translation>平均值 ± 2s</translation>
     </message>
     <message>
         <source>readings ↑</source>
-        <translation type="unfinished"></translation>
+        <translation>读数 ↑</translation>
     </message>
     <message>
         <source>readings ↓</source>
-        <translation type="unfinished"></translation>
+        <translation>读数 ↓</translation>
     </message>
     <message>
         <source>BenchPilot accuracy report · %1 · %2</source>
-        <translation type="unfinished"></translation>
+        <translation>BenchPilot 精度报告 · %1 · %2</translation>
     </message>
     <message>
         <source>Figures before and after compensation (ISO 230-2:2014)</source>
-        <translation type="unfinished"></translation>
+        <translation>补偿前后的评定指标（ISO 230-2:2014）</translation>
     </message>
     <message>
         <source>Figures (ISO 230-2:2014)</source>
-        <translation type="unfinished"></translation>
+        <translation>评定指标（ISO 230-2:2014）</translation>
     </message>
     <message>
         <source>PASS: every figure judged is within its limit.</source>
-        <translation type="unfinished"></translation>
+        <translation>合格：所有参与评定的指标均在限值以内。</translation>
     </message>
     <message>
         <source>FAIL: a figure is beyond its limit.</source>
-        <translation type="unfinished"></translation>
+        <translation>不合格：有指标超出限值。</translation>
     </message>
     <message>
         <source>No tolerances were given: the figures are not judged.</source>
-        <translation type="unfinished"></translation>
+        <translation>未给出公差：不对指标进行评定。</translation>
     </message>
     <message>
         <source>Deviations: mean ± 2s per direction</source>
-        <translation type="unfinished"></translation>
+        <translation>偏差：各方向的平均值 ± 2s</translation>
     </message>
     <message>
         <source>Per target (µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>各目标位置 (µm)</translation>
     </message>
     <message>
         <source>Before and after</source>
-        <translation type="unfinished"></translation>
+        <translation>补偿前后</translation>
     </message>
     <message>
         <source>mean deviation (µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>平均偏差 (µm)</translation>
     </message>
     <message>
         <source>before</source>
-        <translation type="unfinished"></translation>
+        <translation>补偿前</translation>
     </message>
     <message>
         <source>after</source>
-        <translation type="unfinished"></translation>
+        <translation>补偿后</translation>
     </message>
     <message>
         <source>Compensation fit of the mean deviations (seed 002&apos;s method)</source>
-        <translation type="unfinished"></translation>
+        <translation>平均偏差的补偿拟合（文献 002 的方法）</translation>
     </message>
     <message>
         <source>order</source>
-        <translation type="unfinished"></translation>
+        <translation>阶数</translation>
     </message>
     <message>
         <source>SSE (µm²)</source>
-        <translation type="unfinished"></translation>
+        <translation>残差平方和 (µm²)</translation>
     </message>
     <message>
         <source>adjusted R²</source>
-        <translation type="unfinished"></translation>
+        <translation>调整后 R²</translation>
     </message>
     <message>
         <source>chosen</source>
-        <translation type="unfinished"></translation>
+        <translation>选用</translation>
     </message>
     <message>
         <source>not enough points</source>
-        <translation type="unfinished"></translation>
+        <translation>点数不足</translation>
     </message>
     <message>
         <source>e(x) = %1 µm, x in mm (order %2%3)</source>
-        <translation type="unfinished"></translation>
+        <translation>e(x) = %1 µm，x 单位为 mm（%2 阶%3）</translation>
     </message>
     <message>
         <source>, chosen by the operator</source>
-        <translation type="unfinished"></translation>
+        <translation>，由操作员选定</translation>
     </message>
     <message>
         <source>, chosen by adjusted R²</source>
-        <translation type="unfinished"></translation>
+        <translation>，按调整后 R² 选定</translation>
     </message>
     <message>
         <source>residual (µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>残差 (µm)</translation>
     </message>
     <message>
         <source>mean deviation − fit</source>
-        <translation type="unfinished"></translation>
+        <translation>平均偏差 − 拟合值</translation>
     </message>
     <message>
         <source>a PDF needs a graphical application object; none exists in this program</source>
-        <translation type="unfinished"></translation>
+        <translation>生成 PDF 需要图形应用程序对象，而本程序中没有</translation>
     </message>
     <message>
         <source>— clockwise</source>
-        <translation type="unfinished"></translation>
+        <translation>— 顺时针</translation>
     </message>
     <message>
         <source>— counter-clockwise</source>
-        <translation type="unfinished"></translation>
+        <translation>— 逆时针</translation>
     </message>
     <message>
         <source>radius %1, deviation from the least-squares circle magnified %2×; dashed: the nominal circle</source>
-        <translation type="unfinished"></translation>
+        <translation>半径 %1，相对最小二乘圆的偏差放大 %2×；虚线：名义圆</translation>
     </message>
     <message>
         <source>Instrument: %1
 Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolution</source>
-        <translation type="unfinished"></translation>
+        <translation>仪器：%1
+平面 %2，圆心（%3, %4），半径 %5，进给速度 %6，引入弧 %7；每周 %8 个采样点</translation>
     </message>
     <message>
         <source>Figures (ISO 230-4, µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>评定指标（ISO 230-4，µm）</translation>
     </message>
     <message>
         <source>figure</source>
-        <translation type="unfinished"></translation>
+        <translation>指标</translation>
     </message>
     <message>
         <source>value (µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>数值 (µm)</translation>
     </message>
     <message>
         <source>limit (µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>限值 (µm)</translation>
     </message>
     <message>
         <source>verdict</source>
-        <translation type="unfinished"></translation>
+        <translation>判定</translation>
     </message>
     <message>
         <source>clockwise</source>
-        <translation type="unfinished">顺时针</translation>
+        <translation>顺时针</translation>
     </message>
     <message>
         <source>counter-clockwise</source>
-        <translation type="unfinished">逆时针</translation>
+        <translation>逆时针</translation>
     </message>
     <message>
         <source>G circular deviation, %1</source>
-        <translation type="unfinished"></translation>
+        <translation>G 圆偏差，%1</translation>
     </message>
     <message>
         <source>radial deviation, %1: min … max</source>
-        <translation type="unfinished"></translation>
+        <translation>径向偏差，%1：最小 … 最大</translation>
     </message>
     <message>
         <source>G(b) bidirectional circular deviation</source>
-        <translation type="unfinished"></translation>
+        <translation>G(b) 双向圆偏差</translation>
     </message>
     <message>
         <source>H circular hysteresis</source>
-        <translation type="unfinished"></translation>
+        <translation>H 圆滞后</translation>
     </message>
     <message>
         <source>BenchPilot circular test · %1 · %2</source>
-        <translation type="unfinished"></translation>
+        <translation>BenchPilot 圆测试 · %1 · %2</translation>
     </message>
     <message>
         <source>cannot write %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法写入 %1</translation>
     </message>
 </context>
 <context>
     <name>sim</name>
     <message>
         <source>BenchPilot simulated instrument on a pseudo-terminal.</source>
-        <translation type="unfinished"></translation>
+        <translation>在伪终端上运行的 BenchPilot 模拟仪器。</translation>
     </message>
     <message>
         <source>analyzer or stage</source>
-        <translation type="unfinished"></translation>
+        <translation>analyzer 或 stage</translation>
     </message>
     <message>
         <source>symlink to create for the pty</source>
-        <translation type="unfinished"></translation>
+        <translation>为 pty 创建的符号链接</translation>
     </message>
     <message>
         <source>virtual seconds per wall-clock second; above 3 a host refreshing jogs every 50 ms trips the 200 ms jog watchdog</source>
-        <translation type="unfinished"></translation>
+        <translation>每个真实秒对应的虚拟秒数；超过 3 时，每 50 ms 刷新一次点动的上位机会触发 200 ms 点动看门狗</translation>
     </message>
     <message>
         <source>link speed the firmware assumes</source>
-        <translation type="unfinished"></translation>
+        <translation>固件假定的链路速率</translation>
     </message>
     <message>
         <source>benchpilot, grbl or grblhal</source>
-        <translation type="unfinished"></translation>
+        <translation>benchpilot、grbl 或 grblhal</translation>
     </message>
     <message>
         <source>--instrument must be analyzer or stage (got &apos;%1&apos;)</source>
-        <translation type="unfinished"></translation>
+        <translation>--instrument 必须为 analyzer 或 stage（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>--protocol must be benchpilot, grbl or grblhal (got &apos;%1&apos;)</source>
-        <translation type="unfinished"></translation>
+        <translation>--protocol 必须为 benchpilot、grbl 或 grblhal（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>--pty PATH is required</source>
-        <translation type="unfinished"></translation>
+        <translation>必须给出 --pty PATH</translation>
     </message>
     <message>
         <source>--time-scale must be a number in (0, 1000] (got &apos;%1&apos;)</source>
-        <translation type="unfinished"></translation>
+        <translation>--time-scale 必须是 (0, 1000] 范围内的数（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>--baud must be at least 1200 (got &apos;%1&apos;)</source>
-        <translation type="unfinished"></translation>
+        <translation>--baud 必须不小于 1200（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>%1 exists and is not a symlink: refusing to replace it</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 已存在且不是符号链接：拒绝替换</translation>
     </message>
     <message>
         <source>cannot create symlink %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>无法创建符号链接 %1：%2</translation>
     </message>
     <message>
         <source>symlink to create for a simulated gauge&apos;s pty</source>
-        <translation type="unfinished"></translation>
+        <translation>为模拟测头的 pty 创建的符号链接</translation>
     </message>
     <message>
         <source>the axis whose work point the gauge reads</source>
-        <translation type="unfinished"></translation>
+        <translation>测头读取其工作点的轴</translation>
     </message>
     <message>
         <source>the gauge&apos;s last digit in mm</source>
-        <translation type="unfinished"></translation>
+        <translation>测头的末位分辨率，mm</translation>
     </message>
     <message>
         <source>standard deviation of the gauge&apos;s noise in mm</source>
-        <translation type="unfinished"></translation>
+        <translation>测头噪声的标准差，mm</translation>
     </message>
     <message>
         <source>--gauge-axis: the %1 has no axis &apos;%2&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--gauge-axis：%1 没有轴 &apos;%2&apos;</translation>
     </message>
     <message>
         <source>--gauge-resolution must be from 0.000001 to 0.1 mm (got &apos;%1&apos;)</source>
-        <translation type="unfinished"></translation>
+        <translation>--gauge-resolution 必须在 0.000001 到 0.1 mm 之间（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>--gauge-noise must be from 0 to 1 mm (got &apos;%1&apos;)</source>
-        <translation type="unfinished"></translation>
+        <translation>--gauge-noise 必须在 0 到 1 mm 之间（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>--gauge needs a path of its own, not the instrument&apos;s</source>
-        <translation type="unfinished"></translation>
+        <translation>--gauge 需要自己的路径，不能与仪器的相同</translation>
     </message>
 </context>
 <context>
     <name>simapp::PtyTransport</name>
     <message>
         <source>cannot create a pseudo-terminal: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法创建伪终端：%1</translation>
     </message>
     <message>
         <source>cannot name the pseudo-terminal: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法获取伪终端名称：%1</translation>
     </message>
 </context>
 <context>
@@ -3284,179 +3365,179 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
     <name>ui::AccuracyTestForm</name>
     <message>
         <source>Axis</source>
-        <translation type="unfinished">轴</translation>
+        <translation>轴</translation>
     </message>
     <message>
         <source>Targets</source>
-        <translation type="unfinished"></translation>
+        <translation>目标位置</translation>
     </message>
     <message>
         <source>From (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>起点 (mm)</translation>
     </message>
     <message>
         <source>To (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>终点 (mm)</translation>
     </message>
     <message>
         <source>Count</source>
-        <translation type="unfinished"></translation>
+        <translation>个数</translation>
     </message>
     <message>
         <source>Spacing</source>
-        <translation type="unfinished"></translation>
+        <translation>间距</translation>
     </message>
     <message>
         <source>List (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>列表 (mm)</translation>
     </message>
     <message>
         <source>Cycles</source>
-        <translation type="unfinished"></translation>
+        <translation>循环次数</translation>
     </message>
     <message>
         <source>Directions</source>
-        <translation type="unfinished"></translation>
+        <translation>方向</translation>
     </message>
     <message>
         <source>Overrun (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>越程 (mm)</translation>
     </message>
     <message>
         <source>Feed (mm/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>进给速度 (mm/s)</translation>
     </message>
     <message>
         <source>Dwell (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>停留时间 (s)</translation>
     </message>
     <message>
         <source>Settled within (µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>稳定容差 (µm)</translation>
     </message>
     <message>
         <source>… for (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>… 持续 (s)</translation>
     </message>
     <message>
         <source>Settle timeout (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>稳定超时 (s)</translation>
     </message>
     <message>
         <source>Limit on A (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>A 限值 (mm)</translation>
     </message>
     <message>
         <source>Limit on R (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>R 限值 (mm)</translation>
     </message>
     <message>
         <source>From X (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>起点 X (mm)</translation>
     </message>
     <message>
         <source>From Y (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>起点 Y (mm)</translation>
     </message>
     <message>
         <source>To X (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>终点 X (mm)</translation>
     </message>
     <message>
         <source>To Y (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>终点 Y (mm)</translation>
     </message>
     <message>
         <source>Centre X (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>圆心 X (mm)</translation>
     </message>
     <message>
         <source>Centre Y (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>圆心 Y (mm)</translation>
     </message>
     <message>
         <source>Radius (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>半径 (mm)</translation>
     </message>
     <message>
         <source>Lead arc (°)</source>
-        <translation type="unfinished"></translation>
+        <translation>引入弧 (°)</translation>
     </message>
     <message>
         <source>Samples a turn</source>
-        <translation type="unfinished"></translation>
+        <translation>每周采样数</translation>
     </message>
     <message>
         <source>Limit on G (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>G 限值 (mm)</translation>
     </message>
     <message>
         <source>Axis test (ISO 230-2)</source>
-        <translation type="unfinished"></translation>
+        <translation>单轴测试（ISO 230-2）</translation>
     </message>
     <message>
         <source>Linked XY line (seed 000)</source>
-        <translation type="unfinished"></translation>
+        <translation>XY 联动直线（文献 000）</translation>
     </message>
     <message>
         <source>Circular test (ISO 230-4)</source>
-        <translation type="unfinished"></translation>
+        <translation>圆测试（ISO 230-4）</translation>
     </message>
     <message>
         <source>What kind of test to run</source>
-        <translation type="unfinished"></translation>
+        <translation>要运行的测试类型</translation>
     </message>
     <message>
         <source>evenly from … to</source>
-        <translation type="unfinished"></translation>
+        <translation>从…到…等间距</translation>
     </message>
     <message>
         <source>a list</source>
-        <translation type="unfinished"></translation>
+        <translation>列表</translation>
     </message>
     <message>
         <source>ISO 230-2 irregular</source>
-        <translation type="unfinished"></translation>
+        <translation>ISO 230-2 非等间距</translation>
     </message>
     <message>
         <source>Moves each inner target off the even grid by its own amount, so a periodic error (a screw&apos;s pitch) is not sampled at one phase</source>
-        <translation type="unfinished"></translation>
+        <translation>使每个内部目标位置各自偏离等间距网格一个不同的量，以免周期性误差（如丝杠螺距误差）总在同一相位被采样</translation>
     </message>
     <message>
         <source>10, 25.5, 40, …</source>
-        <translation type="unfinished"></translation>
+        <translation>10, 25.5, 40, …</translation>
     </message>
     <message>
         <source>both (↑ and ↓)</source>
-        <translation type="unfinished"></translation>
+        <translation>双向（↑ 和 ↓）</translation>
     </message>
     <message>
         <source>Unticked: every target approached from below only (ISO&apos;s unidirectional test)</source>
-        <translation type="unfinished"></translation>
+        <translation>不勾选：每个目标位置只从下方趋近（ISO 的单向测试）</translation>
     </message>
     <message>
         <source>How far past the end targets the axis goes, so every approach comes from its side</source>
-        <translation type="unfinished"></translation>
+        <translation>轴越过两端目标位置的距离，使每次趋近都从相应一侧进行</translation>
     </message>
     <message>
         <source>A reading is taken once the readback has stayed this close for the time below</source>
-        <translation type="unfinished"></translation>
+        <translation>位置反馈在下方设定的时间内一直保持在此范围内，才取读数</translation>
     </message>
     <message>
         <source>0: not judged</source>
-        <translation type="unfinished"></translation>
+        <translation>0：不评定</translation>
     </message>
     <message>
         <source>both</source>
-        <translation type="unfinished"></translation>
+        <translation>双向</translation>
     </message>
     <message>
         <source>counter-clockwise</source>
-        <translation type="unfinished">逆时针</translation>
+        <translation>逆时针</translation>
     </message>
     <message>
         <source>clockwise</source>
-        <translation type="unfinished">顺时针</translation>
+        <translation>顺时针</translation>
     </message>
 </context>
 <context>
@@ -3578,126 +3659,126 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
     <name>ui::CalibrationPanel</name>
     <message>
         <source>Slot</source>
-        <translation type="unfinished"></translation>
+        <translation>板位</translation>
     </message>
     <message>
         <source>Fit</source>
-        <translation type="unfinished"></translation>
+        <translation>拟合</translation>
     </message>
     <message>
         <source>offset, rotation, scale</source>
-        <translation type="unfinished"></translation>
+        <translation>平移、旋转、比例</translation>
     </message>
     <message>
         <source>offset, rotation, scale per axis</source>
-        <translation type="unfinished"></translation>
+        <translation>平移、旋转、各轴比例</translation>
     </message>
     <message>
         <source>Three points fit any affine map exactly, so a restricted model is fitted by least squares: its residual shows a well taught off centre. One scale (the default) leaves two checks; a scale per axis leaves one.</source>
-        <translation type="unfinished"></translation>
+        <translation>三个点能精确确定任意仿射变换，因此这里用最小二乘法拟合一个受限模型：其残差能揭示示教时偏离中心的孔。单一比例（默认）留有两个校验量；各轴单独比例则留有一个。</translation>
     </message>
     <message>
         <source>For each well: &lt;b&gt;Go near&lt;/b&gt; (the tip rises, then moves over the well&apos;s expected place), lower it and centre it with the arrows, then &lt;b&gt;Record&lt;/b&gt;.</source>
-        <translation type="unfinished"></translation>
+        <translation>对每个孔：点击&lt;b&gt;移近&lt;/b&gt;（加样针先抬起，再移到该孔预期位置的上方），降下加样针并用方向键对中，然后点击&lt;b&gt;记录&lt;/b&gt;。</translation>
     </message>
     <message>
         <source>Well</source>
-        <translation type="unfinished"></translation>
+        <translation>孔</translation>
     </message>
     <message>
         <source>Expected (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>预期位置 (mm)</translation>
     </message>
     <message>
         <source>Taught (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>示教位置 (mm)</translation>
     </message>
     <message>
         <source>Residual (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>残差 (mm)</translation>
     </message>
     <message>
         <source>Jog</source>
-        <translation type="unfinished">点动</translation>
+        <translation>点动</translation>
     </message>
     <message>
         <source>Save calibration</source>
-        <translation type="unfinished"></translation>
+        <translation>保存校准</translation>
     </message>
     <message>
         <source>Keep this fit for the slot: recipes on it use the taught positions from now on, between runs too</source>
-        <translation type="unfinished"></translation>
+        <translation>为该板位保留此拟合：此后该板位上的方案都使用示教位置，跨次运行也有效</translation>
     </message>
     <message>
         <source>Forget (use nominal)</source>
-        <translation type="unfinished"></translation>
+        <translation>清除（用名义位置）</translation>
     </message>
     <message>
         <source>Slot %1 is calibrated (%2, taught on %3): largest residual %4 mm. Teach again to replace it.</source>
-        <translation type="unfinished"></translation>
+        <translation>板位 %1 已校准（%2，示教于 %3）：最大残差 %4 mm。重新示教即可替换。</translation>
     </message>
     <message>
         <source>Slot %1 is not calibrated: recipes use its nominal place. Teach it on a %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>板位 %1 未校准：方案使用其名义位置。请放上%2进行示教。</translation>
     </message>
     <message>
         <source>—</source>
-        <translation type="unfinished"></translation>
+        <translation>—</translation>
     </message>
     <message>
         <source>Go near</source>
-        <translation type="unfinished"></translation>
+        <translation>移近</translation>
     </message>
     <message>
         <source>Raise the tip to the slot&apos;s safe height, then move over where %1 is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>将加样针抬到该板位的安全高度，再移到 %1 预期位置的上方</translation>
     </message>
     <message>
         <source>Record</source>
-        <translation type="unfinished"></translation>
+        <translation>记录</translation>
     </message>
     <message>
         <source>Take the tip&apos;s position now as the centre of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>将加样针的当前位置记为 %1 的中心</translation>
     </message>
     <message>
         <source>Record all three wells to see the fit.</source>
-        <translation type="unfinished"></translation>
+        <translation>记录全部三个孔后即可看到拟合结果。</translation>
     </message>
     <message>
         <source>the analyzer is not connected</source>
-        <translation type="unfinished">分析仪未连接</translation>
+        <translation>分析仪未连接</translation>
     </message>
     <message>
         <source>home the analyzer before teaching: the wells&apos; places are absolute</source>
-        <translation type="unfinished"></translation>
+        <translation>示教前请先让分析仪回零：孔的位置是绝对坐标</translation>
     </message>
     <message>
         <source>Move the tip over %1 of slot %2 at (%3, %4) mm, %5 mm away? It rises to Z %6 mm first.</source>
-        <translation type="unfinished"></translation>
+        <translation>将加样针移到板位 %2 中 %1 的上方（%3, %4）mm，距离 %5 mm？加样针会先抬到 Z %6 mm。</translation>
     </message>
     <message>
         <source>home the analyzer before teaching</source>
-        <translation type="unfinished"></translation>
+        <translation>示教前请先让分析仪回零</translation>
     </message>
     <message>
         <source>No fit: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法拟合：%1</translation>
     </message>
     <message>
         <source>Offset (%1, %2) mm, rotation %3°, scale %4 × %5; residual largest %6 mm, rms %7 mm (warning above %8 mm).</source>
-        <translation type="unfinished"></translation>
+        <translation>平移（%1, %2）mm，旋转 %3°，比例 %4 × %5；残差最大 %6 mm，均方根 %7 mm（超过 %8 mm 时警告）。</translation>
     </message>
 </context>
 <context>
     <name>ui::CalibrationScreen</name>
     <message>
         <source>Name the gauge&apos;s port (or sim for the simulator&apos;s gauge).</source>
-        <translation type="unfinished"></translation>
+        <translation>请指定测头的端口（仿真器的测头填 sim）。</translation>
     </message>
     <message>
         <source>There is no way to open a gauge here.</source>
-        <translation type="unfinished"></translation>
+        <translation>此处无法打开测头。</translation>
     </message>
     <message>
         <source>simulated gauge</source>
@@ -3707,407 +3788,410 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <source>%1
 
 Keep that log aside and start this test afresh?</source>
-        <translation type="unfinished"></translation>
+        <translation>%1
+
+将该日志另存，并重新开始本测试？</translation>
     </message>
     <message>
         <source>The test takes about %1 (%2 readings). The axes move on their own until it ends. Run it?</source>
-        <translation type="unfinished"></translation>
+        <translation>测试约需 %1（%2 个读数）。测试结束前各轴会自动运动。是否运行？</translation>
     </message>
     <message>
         <source>Reading %1 of %2: %3%4, cycle %5. What does the indicator show?</source>
-        <translation type="unfinished"></translation>
+        <translation>第 %1/%2 个读数：%3%4，第 %5 次循环。千分表显示多少？</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not a reading: type the indicator&apos;s value in mm.</source>
-        <translation type="unfinished"></translation>
+        <translation>“%1”不是读数：请输入千分表的示值，单位 mm。</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not a reading here: type one value per axis, in mm.</source>
-        <translation type="unfinished"></translation>
+        <translation>“%1”在此不是有效读数：请为每个轴输入一个值，单位 mm。</translation>
     </message>
     <message>
         <source>Every stop is visited. Capture with the interferometer, then import its export against %1 (benchpilot-cli accuracy import).</source>
-        <translation type="unfinished"></translation>
+        <translation>所有测点均已走完。请用干涉仪采集，然后对照 %1 导入其导出的数据（benchpilot-cli accuracy import）。</translation>
     </message>
     <message>
         <source>Linked XY line: contour error A↑ %1 µm, R↑ %2 µm (%3 readings).</source>
-        <translation type="unfinished"></translation>
+        <translation>XY 联动直线：轮廓误差 A↑ %1 µm，R↑ %2 µm（%3 个读数）。</translation>
     </message>
     <message>
         <source>The test is done: results in %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>测试完成：结果保存在 %1。</translation>
     </message>
     <message>
         <source>G, %1</source>
-        <translation type="unfinished"></translation>
+        <translation>G，%1</translation>
     </message>
     <message>
         <source>radial deviation, %1</source>
-        <translation type="unfinished"></translation>
+        <translation>径向偏差，%1</translation>
     </message>
     <message>
         <source>G(b)</source>
-        <translation type="unfinished"></translation>
+        <translation>G(b)</translation>
     </message>
     <message>
         <source>H hysteresis</source>
-        <translation type="unfinished"></translation>
+        <translation>H 圆滞后</translation>
     </message>
     <message>
         <source>Circular test, radius %1</source>
-        <translation type="unfinished"></translation>
+        <translation>圆测试，半径 %1</translation>
     </message>
     <message>
         <source>The circular test is done: report %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>圆测试完成：报告见 %1。</translation>
     </message>
     <message>
         <source>No axis test has finished yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>尚无已完成的单轴测试。</translation>
     </message>
     <message>
         <source>Run an axis test first: its fit is what is saved</source>
-        <translation type="unfinished"></translation>
+        <translation>请先运行单轴测试：保存的是它的拟合结果</translation>
     </message>
     <message>
         <source>Run an axis test first</source>
-        <translation type="unfinished"></translation>
+        <translation>请先运行单轴测试</translation>
     </message>
     <message>
         <source>pass</source>
-        <translation type="unfinished"></translation>
+        <translation>合格</translation>
     </message>
     <message>
         <source>FAIL</source>
-        <translation type="unfinished"></translation>
+        <translation>不合格</translation>
     </message>
     <message>
         <source>Axis %1 from %2: no limits given, not judged.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 轴（测量基准：%2）：未给出限值，不评定。</translation>
     </message>
     <message>
         <source>Axis %1 from %2: PASS.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 轴（测量基准：%2）：合格。</translation>
     </message>
     <message>
         <source>Axis %1 from %2: FAIL.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 轴（测量基准：%2）：不合格。</translation>
     </message>
     <message>
         <source>Writes the fitted compensation as a file (*.compensation.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>将拟合得到的补偿写入文件（*.compensation.json）</translation>
     </message>
     <message>
         <source>The report of the latest run, written into its folder</source>
-        <translation type="unfinished"></translation>
+        <translation>最近一次运行的报告，写入其文件夹</translation>
     </message>
     <message>
         <source>Run the same axis test again after enabling the compensation: the two runs are compared here.</source>
-        <translation type="unfinished"></translation>
+        <translation>启用补偿后再运行一次相同的单轴测试：两次运行的结果在此对比。</translation>
     </message>
     <message>
         <source>Axis %1: A %2 µm before, %3 µm after%4.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 轴：A 补偿前 %2 µm，补偿后 %3 µm%4。</translation>
     </message>
     <message>
         <source>: %1 times better</source>
-        <translation type="unfinished"></translation>
+        <translation>，改善倍数 %1</translation>
     </message>
     <message>
         <source>Positioning accuracy of axis %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 轴定位精度</translation>
     </message>
     <message>
         <source>Report written: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>报告已生成：%1</translation>
     </message>
     <message>
         <source>The gauge&apos;s serial port (9600 Bd, 8N1); sim reads the simulator&apos;s gauge</source>
-        <translation type="unfinished"></translation>
+        <translation>测头的串口（9600 Bd，8N1）；填 sim 则读取仿真器的测头</translation>
     </message>
     <message>
         <source>Used when the readings come from a gauge</source>
-        <translation type="unfinished"></translation>
+        <translation>读数来自测头时使用</translation>
     </message>
     <message>
         <source>A circular test samples the readback along the path</source>
-        <translation type="unfinished"></translation>
+        <translation>圆测试沿路径采样位置反馈</translation>
     </message>
     <message>
         <source>The readback is what the position loop closes on: it cannot see the work point&apos;s error. A gauge or an interferometer at the work point can.</source>
-        <translation type="unfinished"></translation>
+        <translation>位置反馈是位置环闭环所依据的量，看不到工作点处的误差；安装在工作点处的测头或干涉仪才能测到。</translation>
     </message>
     <message>
         <source>A test is running.</source>
-        <translation type="unfinished"></translation>
+        <translation>测试正在运行。</translation>
     </message>
     <message>
         <source>Opening the gauge&apos;s port…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在打开测头的端口…</translation>
     </message>
     <message>
         <source>No instrument.</source>
-        <translation type="unfinished"></translation>
+        <translation>没有仪器。</translation>
     </message>
     <message>
         <source>Resume</source>
-        <translation type="unfinished"></translation>
+        <translation>继续</translation>
     </message>
     <message>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>运行</translation>
     </message>
     <message>
         <source>Run the test, or go on from where it stopped (Ctrl+R)</source>
-        <translation type="unfinished"></translation>
+        <translation>运行测试，或从停止处继续（Ctrl+R）</translation>
     </message>
     <message>
         <source>Stop after the reading in progress (Ctrl+P)</source>
-        <translation type="unfinished"></translation>
+        <translation>当前读数完成后暂停（Ctrl+P）</translation>
     </message>
     <message>
         <source>Nothing is running.</source>
-        <translation type="unfinished"></translation>
+        <translation>没有正在运行的测试。</translation>
     </message>
     <message>
         <source>Stop the axes now; Run goes on at the next reading later (Ctrl+.)</source>
-        <translation type="unfinished"></translation>
+        <translation>立即停止各轴；之后按“运行”从下一个读数继续（Ctrl+.）</translation>
     </message>
     <message>
         <source>Circle %1 of %2, about %3 left.</source>
-        <translation type="unfinished"></translation>
+        <translation>第 %1/%2 圈，约剩 %3。</translation>
     </message>
     <message>
         <source>The circular test is done.</source>
-        <translation type="unfinished"></translation>
+        <translation>圆测试完成。</translation>
     </message>
     <message>
         <source>Reading %1 of %2, about %3 left%4.</source>
-        <translation type="unfinished"></translation>
+        <translation>第 %1/%2 个读数，约剩 %3%4。</translation>
     </message>
     <message>
         <source> (pausing after this reading)</source>
-        <translation type="unfinished"></translation>
+        <translation>（本读数完成后暂停）</translation>
     </message>
     <message>
         <source>Paused at reading %1 of %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>已在第 %1/%2 个读数处暂停。</translation>
     </message>
     <message>
         <source>Stopped at reading %1 of %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>已在第 %1/%2 个读数处停止：%3</translation>
     </message>
     <message>
         <source>Done: %1 readings.</source>
-        <translation type="unfinished"></translation>
+        <translation>完成：共 %1 个读数。</translation>
     </message>
     <message>
         <source>Define a test, pick where the readings come from, and run it.</source>
-        <translation type="unfinished"></translation>
+        <translation>定义测试，选择读数来源，然后运行。</translation>
     </message>
     <message>
         <source>Instrument</source>
-        <translation type="unfinished">仪器</translation>
+        <translation>仪器</translation>
     </message>
     <message>
         <source>Open an accuracy test</source>
-        <translation type="unfinished"></translation>
+        <translation>打开精度测试</translation>
     </message>
     <message>
         <source>Accuracy tests (*.accuracy-test.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>精度测试文件 (*.accuracy-test.json)</translation>
     </message>
     <message>
         <source>Save the accuracy test</source>
-        <translation type="unfinished"></translation>
+        <translation>保存精度测试</translation>
     </message>
     <message>
         <source>From</source>
-        <translation type="unfinished"></translation>
+        <translation>读数来源</translation>
     </message>
     <message>
         <source>Gauge port</source>
-        <translation type="unfinished"></translation>
+        <translation>测头端口</translation>
     </message>
     <message>
         <source>Folder for the run&apos;s log, readings and report</source>
-        <translation type="unfinished"></translation>
+        <translation>存放运行日志、读数和报告的文件夹</translation>
     </message>
     <message>
         <source>Folder</source>
-        <translation type="unfinished"></translation>
+        <translation>文件夹</translation>
     </message>
     <message>
         <source>Test</source>
-        <translation type="unfinished"></translation>
+        <translation>测试</translation>
     </message>
     <message>
         <source>Readings</source>
-        <translation type="unfinished"></translation>
+        <translation>读数</translation>
     </message>
     <message>
         <source>The instrument the test runs on</source>
-        <translation type="unfinished"></translation>
+        <translation>运行测试的仪器</translation>
     </message>
     <message>
         <source>Open…</source>
-        <translation type="unfinished"></translation>
+        <translation>打开…</translation>
     </message>
     <message>
         <source>Save…</source>
-        <translation type="unfinished"></translation>
+        <translation>保存…</translation>
     </message>
     <message>
         <source>the instrument&apos;s readback</source>
-        <translation type="unfinished"></translation>
+        <translation>仪器的位置反馈</translation>
     </message>
     <message>
         <source>a gauge on a serial port</source>
-        <translation type="unfinished"></translation>
+        <translation>串口测头</translation>
     </message>
     <message>
         <source>typed at each stop (dial indicator)</source>
-        <translation type="unfinished"></translation>
+        <translation>每个测点手动输入（千分表）</translation>
     </message>
     <message>
         <source>laser interferometer (import afterwards)</source>
-        <translation type="unfinished"></translation>
+        <translation>激光干涉仪（事后导入）</translation>
     </message>
     <message>
         <source>/dev/ttyUSB1, or sim for the simulator&apos;s gauge</source>
-        <translation type="unfinished"></translation>
+        <translation>/dev/ttyUSB1，或填 sim 使用仿真器的测头</translation>
     </message>
     <message>
         <source>Browse…</source>
-        <translation type="unfinished"></translation>
+        <translation>浏览…</translation>
     </message>
     <message>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>暂停</translation>
     </message>
     <message>
         <source>Abort</source>
-        <translation type="unfinished"></translation>
+        <translation>中止</translation>
     </message>
     <message>
         <source>Enter</source>
-        <translation type="unfinished"></translation>
+        <translation>确定</translation>
     </message>
     <message>
         <source>reading in mm, e.g. 40.0012</source>
-        <translation type="unfinished"></translation>
+        <translation>读数，单位 mm，例如 40.0012</translation>
     </message>
     <message>
         <source>Live</source>
-        <translation type="unfinished"></translation>
+        <translation>实时</translation>
     </message>
     <message>
         <source>Results</source>
-        <translation type="unfinished"></translation>
+        <translation>结果</translation>
     </message>
     <message>
         <source>Compensation</source>
-        <translation type="unfinished"></translation>
+        <translation>补偿</translation>
     </message>
     <message>
         <source>Before / after</source>
-        <translation type="unfinished"></translation>
+        <translation>补偿前后</translation>
     </message>
     <message>
         <source>Circle</source>
-        <translation type="unfinished"></translation>
+        <translation>圆测试</translation>
     </message>
     <message>
         <source>figure</source>
-        <translation type="unfinished"></translation>
+        <translation>指标</translation>
     </message>
     <message>
         <source>µm</source>
-        <translation type="unfinished"></translation>
+        <translation>µm</translation>
     </message>
     <message>
         <source>limit (µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>限值 (µm)</translation>
     </message>
     <message>
         <source>verdict</source>
-        <translation type="unfinished"></translation>
+        <translation>判定</translation>
     </message>
     <message>
         <source>before (µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>补偿前 (µm)</translation>
     </message>
     <message>
         <source>after (µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>补偿后 (µm)</translation>
     </message>
     <message>
         <source>improvement</source>
-        <translation type="unfinished"></translation>
+        <translation>改善倍数</translation>
     </message>
     <message>
         <source>Save compensation…</source>
-        <translation type="unfinished"></translation>
+        <translation>保存补偿…</translation>
     </message>
     <message>
         <source>Write PDF report</source>
-        <translation type="unfinished"></translation>
+        <translation>生成 PDF 报告</translation>
     </message>
     <message>
         <source>The test cannot be opened:
 %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法打开该测试：
+%1</translation>
     </message>
     <message>
         <source>Opened %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>已打开 %1。</translation>
     </message>
     <message>
         <source>Saved %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>已保存 %1。</translation>
     </message>
     <message>
         <source>Save the compensation</source>
-        <translation type="unfinished"></translation>
+        <translation>保存补偿</translation>
     </message>
     <message>
         <source>Compensations (*.compensation.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>补偿文件 (*.compensation.json)</translation>
     </message>
     <message>
         <source>%1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 s</translation>
     </message>
     <message>
         <source>%1 min %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 min %2 s</translation>
     </message>
     <message>
         <source>%1 h %2 min</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 h %2 min</translation>
     </message>
 </context>
 <context>
     <name>ui::ChannelPicker</name>
     <message>
         <source>Channels of</source>
-        <translation type="unfinished"></translation>
+        <translation>通道所属</translation>
     </message>
     <message>
         <source>The plot whose channels are ticked below; clicking a plot also chooses it</source>
-        <translation type="unfinished"></translation>
+        <translation>下方勾选的通道所属的曲线图；点击曲线图也可选中它</translation>
     </message>
     <message>
         <source>Channel</source>
-        <translation type="unfinished"></translation>
+        <translation>通道</translation>
     </message>
     <message>
         <source>Unit</source>
-        <translation type="unfinished"></translation>
+        <translation>单位</translation>
     </message>
     <message>
         <source>Plot %1</source>
-        <translation type="unfinished"></translation>
+        <translation>曲线图 %1</translation>
     </message>
 </context>
 <context>
@@ -4173,81 +4257,81 @@ Keep that log aside and start this test afresh?</source>
     <name>ui::ContourPlot</name>
     <message>
         <source>contour error</source>
-        <translation type="unfinished">轮廓误差</translation>
+        <translation>轮廓误差</translation>
     </message>
     <message>
         <source>largest</source>
-        <translation type="unfinished"></translation>
+        <translation>最大值</translation>
     </message>
     <message>
         <source>distance along the path (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>沿路径距离 (mm)</translation>
     </message>
     <message>
         <source>contour error (µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>轮廓误差 (µm)</translation>
     </message>
 </context>
 <context>
     <name>ui::CursorReadout</name>
     <message>
         <source>Channel</source>
-        <translation type="unfinished"></translation>
+        <translation>通道</translation>
     </message>
     <message>
         <source>A</source>
-        <translation type="unfinished"></translation>
+        <translation>A</translation>
     </message>
     <message>
         <source>B</source>
-        <translation type="unfinished"></translation>
+        <translation>B</translation>
     </message>
     <message>
         <source>Δ (B − A)</source>
-        <translation type="unfinished"></translation>
+        <translation>Δ (B − A)</translation>
     </message>
     <message>
         <source>Time (s)</source>
-        <translation type="unfinished">时间 (s)</translation>
+        <translation>时间 (s)</translation>
     </message>
     <message>
         <source>%1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2)</translation>
     </message>
     <message>
         <source>—</source>
-        <translation type="unfinished"></translation>
+        <translation>—</translation>
     </message>
 </context>
 <context>
     <name>ui::DeviationPlot</name>
     <message>
         <source>target (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>目标位置 (mm)</translation>
     </message>
     <message>
         <source>deviation (µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>偏差 (µm)</translation>
     </message>
     <message>
         <source>before (mean)</source>
-        <translation type="unfinished"></translation>
+        <translation>补偿前（平均值）</translation>
     </message>
     <message>
         <source>↑ mean ± 2s</source>
-        <translation type="unfinished"></translation>
+        <translation>↑ 平均值 ± 2s</translation>
     </message>
     <message>
         <source>↓ mean ± 2s</source>
-        <translation type="unfinished"></translation>
+        <translation>↓ 平均值 ± 2s</translation>
     </message>
     <message>
         <source>↑ readings</source>
-        <translation type="unfinished"></translation>
+        <translation>↑ 读数</translation>
     </message>
     <message>
         <source>↓ readings</source>
-        <translation type="unfinished"></translation>
+        <translation>↓ 读数</translation>
     </message>
 </context>
 <context>
@@ -4297,278 +4381,278 @@ Keep that log aside and start this test afresh?</source>
     <name>ui::FitPanel</name>
     <message>
         <source>Order</source>
-        <translation type="unfinished"></translation>
+        <translation>阶数</translation>
     </message>
     <message>
         <source>auto (adjusted R²)</source>
-        <translation type="unfinished"></translation>
+        <translation>自动（调整后 R²）</translation>
     </message>
     <message>
         <source>The order chosen by adjusted R² with a significance margin, or the one you pick</source>
-        <translation type="unfinished"></translation>
+        <translation>按调整后 R² 并留有显著性裕量自动选定的阶数，或您手动选择的阶数</translation>
     </message>
     <message>
         <source>order</source>
-        <translation type="unfinished"></translation>
+        <translation>阶数</translation>
     </message>
     <message>
         <source>SSE (µm²)</source>
-        <translation type="unfinished"></translation>
+        <translation>残差平方和 (µm²)</translation>
     </message>
     <message>
         <source>R²</source>
-        <translation type="unfinished"></translation>
+        <translation>R²</translation>
     </message>
     <message>
         <source>adjusted R²</source>
-        <translation type="unfinished"></translation>
+        <translation>调整后 R²</translation>
     </message>
     <message>
         <source>Residuals of the chosen fit: mean deviation − curve (µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>所选拟合的残差：平均偏差 − 曲线 (µm)</translation>
     </message>
     <message>
         <source>target (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>目标位置 (mm)</translation>
     </message>
     <message>
         <source>residual (µm)</source>
-        <translation type="unfinished"></translation>
+        <translation>残差 (µm)</translation>
     </message>
     <message>
         <source>Upload to instrument</source>
-        <translation type="unfinished"></translation>
+        <translation>上传到仪器</translation>
     </message>
     <message>
         <source>Enable</source>
-        <translation type="unfinished"></translation>
+        <translation>启用</translation>
     </message>
     <message>
         <source>Disable</source>
-        <translation type="unfinished"></translation>
+        <translation>停用</translation>
     </message>
     <message>
         <source>keep for power-up</source>
-        <translation type="unfinished"></translation>
+        <translation>上电保持</translation>
     </message>
     <message>
         <source>Also saves the compensation and this state in the instrument, so it powers up with it</source>
-        <translation type="unfinished"></translation>
+        <translation>同时将补偿及其启用状态保存在仪器中，使仪器上电后即带补偿运行</translation>
     </message>
     <message>
         <source>Run an axis test to fit its error curve.</source>
-        <translation type="unfinished"></translation>
+        <translation>运行单轴测试以拟合其误差曲线。</translation>
     </message>
     <message>
         <source>not enough points</source>
-        <translation type="unfinished"></translation>
+        <translation>点数不足</translation>
     </message>
     <message>
         <source>Order %1%2: e(x) = %3 µm (x in mm); backlash %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 阶%2：e(x) = %3 µm（x 单位为 mm）；反向间隙 %4</translation>
     </message>
     <message>
         <source> (your choice)</source>
-        <translation type="unfinished"></translation>
+        <translation>（手动选择）</translation>
     </message>
     <message>
         <source> (adjusted R²)</source>
-        <translation type="unfinished"></translation>
+        <translation>（按调整后 R²）</translation>
     </message>
     <message>
         <source>No instrument.</source>
-        <translation type="unfinished"></translation>
+        <translation>没有仪器。</translation>
     </message>
     <message>
         <source>The instrument has no axis %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>仪器没有 %1 轴。</translation>
     </message>
     <message>
         <source>Reading the instrument&apos;s compensation of %1…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在读取仪器中 %1 轴的补偿…</translation>
     </message>
     <message>
         <source>The instrument holds no compensation for %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>仪器中没有 %1 轴的补偿。</translation>
     </message>
     <message>
         <source>The instrument holds a compensation for %1: %2%3%4.</source>
-        <translation type="unfinished"></translation>
+        <translation>仪器中存有 %1 轴的补偿：%2%3%4。</translation>
     </message>
     <message>
         <source>enabled</source>
-        <translation type="unfinished"></translation>
+        <translation>已启用</translation>
     </message>
     <message>
         <source>disabled</source>
-        <translation type="unfinished"></translation>
+        <translation>已停用</translation>
     </message>
     <message>
         <source>, applied once the axis is homed</source>
-        <translation type="unfinished"></translation>
+        <translation>，回零后生效</translation>
     </message>
     <message>
         <source>, kept for power-up</source>
-        <translation type="unfinished"></translation>
+        <translation>，上电保持</translation>
     </message>
     <message>
         <source>Run an axis test first: the fit of its mean deviations is what is uploaded</source>
-        <translation type="unfinished"></translation>
+        <translation>请先运行单轴测试：上传的是其平均偏差的拟合结果</translation>
     </message>
     <message>
         <source>Sends the chosen fit to the instrument (installed disabled)</source>
-        <translation type="unfinished"></translation>
+        <translation>将所选拟合发送到仪器（安装后处于停用状态）</translation>
     </message>
     <message>
         <source>Upload a compensation first</source>
-        <translation type="unfinished"></translation>
+        <translation>请先上传补偿</translation>
     </message>
     <message>
         <source>The instrument compensates every target from now on</source>
-        <translation type="unfinished"></translation>
+        <translation>此后仪器对每个目标位置进行补偿</translation>
     </message>
     <message>
         <source>The instrument stops compensating (it keeps the compensation)</source>
-        <translation type="unfinished"></translation>
+        <translation>仪器停止补偿（补偿数据仍保留）</translation>
     </message>
     <message>
         <source>The instrument refused the compensation: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>仪器拒绝了该补偿：%1</translation>
     </message>
     <message>
         <source>Compensation of %1 uploaded (disabled until you enable it).</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 轴的补偿已上传（在您启用之前处于停用状态）。</translation>
     </message>
     <message>
         <source>The instrument refused: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>仪器拒绝：%1</translation>
     </message>
 </context>
 <context>
     <name>ui::GainsPanel</name>
     <message>
         <source>Kp %1 · Ki %2 /s · Kd %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Kp %1 · Ki %2 /s · Kd %3</translation>
     </message>
     <message>
         <source>continuous</source>
-        <translation type="unfinished"></translation>
+        <translation>连续形式</translation>
     </message>
     <message>
         <source>per control period</source>
-        <translation type="unfinished"></translation>
+        <translation>每控制周期</translation>
     </message>
     <message>
         <source>Kp</source>
-        <translation type="unfinished"></translation>
+        <translation>Kp</translation>
     </message>
     <message>
         <source>Ki [1/s]</source>
-        <translation type="unfinished"></translation>
+        <translation>Ki [1/s]</translation>
     </message>
     <message>
         <source>Kd [s]</source>
-        <translation type="unfinished"></translation>
+        <translation>Kd [s]</translation>
     </message>
     <message>
         <source>Apply</source>
-        <translation type="unfinished"></translation>
+        <translation>应用</translation>
     </message>
     <message>
         <source>Send these gains to the target; they take over between two control periods (bumpless)</source>
-        <translation type="unfinished"></translation>
+        <translation>将这些增益发送到对象；在两个控制周期之间接管（无扰切换）</translation>
     </message>
     <message>
         <source>Revert</source>
-        <translation type="unfinished"></translation>
+        <translation>恢复</translation>
     </message>
     <message>
         <source>Apply again the set that was in force before the last change</source>
-        <translation type="unfinished"></translation>
+        <translation>重新应用上次更改前生效的那组增益</translation>
     </message>
     <message>
         <source>Save to device</source>
-        <translation type="unfinished"></translation>
+        <translation>存入设备</translation>
     </message>
     <message>
         <source>Apply these gains and keep them as the device&apos;s power-up gains</source>
-        <translation type="unfinished"></translation>
+        <translation>应用这些增益，并保存为设备的上电增益</translation>
     </message>
     <message>
         <source>Read back</source>
-        <translation type="unfinished"></translation>
+        <translation>回读</translation>
     </message>
     <message>
         <source>Read the gains in force from the device</source>
-        <translation type="unfinished"></translation>
+        <translation>从设备读取当前生效的增益</translation>
     </message>
     <message>
         <source>edited</source>
-        <translation type="unfinished"></translation>
+        <translation>手动编辑</translation>
     </message>
     <message>
         <source>reverted to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>恢复为 %1</translation>
     </message>
     <message>
         <source>Applied gain sets</source>
-        <translation type="unfinished"></translation>
+        <translation>已应用的增益组</translation>
     </message>
     <message>
         <source>Time</source>
-        <translation type="unfinished">时间</translation>
+        <translation>时间</translation>
     </message>
     <message>
         <source>Source</source>
-        <translation type="unfinished"></translation>
+        <translation>来源</translation>
     </message>
     <message>
         <source>no target chosen</source>
-        <translation type="unfinished"></translation>
+        <translation>未选择对象</translation>
     </message>
     <message>
         <source>PID gains</source>
-        <translation type="unfinished"></translation>
+        <translation>PID 增益</translation>
     </message>
     <message>
         <source>PID gains of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 的 PID 增益</translation>
     </message>
     <message>
         <source>Shown in continuous form: Kp, Ki in 1/s, Kd in s. Beside them the discrete gains per control period T = %1 that %2 runs (seed 002 eq. 2): ki = Ki·T, kd = Kd/T.</source>
-        <translation type="unfinished"></translation>
+        <translation>以连续形式显示：Kp，Ki 单位为 1/s，Kd 单位为 s。旁边是%2所用控制周期 T = %1 下的离散增益（文献 002 式 2）：ki = Ki·T，kd = Kd/T。</translation>
     </message>
     <message>
         <source>the device</source>
-        <translation type="unfinished"></translation>
+        <translation>设备</translation>
     </message>
     <message>
         <source>the model&apos;s loop</source>
-        <translation type="unfinished"></translation>
+        <translation>模型的控制回路</translation>
     </message>
     <message>
         <source>kp = %1</source>
-        <translation type="unfinished"></translation>
+        <translation>kp = %1</translation>
     </message>
     <message>
         <source>ki = %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ki = %1</translation>
     </message>
     <message>
         <source>kd = %1</source>
-        <translation type="unfinished"></translation>
+        <translation>kd = %1</translation>
     </message>
     <message>
         <source>Ti = Kp/Ki = %1 · Td = Kd/Kp = %2%3</source>
-        <translation type="unfinished"></translation>
+        <translation>Ti = Kp/Ki = %1 · Td = Kd/Kp = %2%3</translation>
     </message>
     <message>
         <source> · edited, not applied</source>
-        <translation type="unfinished"></translation>
+        <translation> · 已编辑，未应用</translation>
     </message>
     <message>
         <source>every gain must be a number, 0 or more</source>
-        <translation type="unfinished"></translation>
+        <translation>每个增益都必须是不小于 0 的数</translation>
     </message>
 </context>
 <context>
@@ -4911,2282 +4995,2289 @@ Keep that log aside and start this test afresh?</source>
     <name>ui::PatternForm</name>
     <message>
         <source>Line</source>
-        <translation type="unfinished"></translation>
+        <translation>直线</translation>
     </message>
     <message>
         <source>Rectangle</source>
-        <translation type="unfinished"></translation>
+        <translation>矩形</translation>
     </message>
     <message>
         <source>Circle</source>
-        <translation type="unfinished"></translation>
+        <translation>圆</translation>
     </message>
     <message>
         <source>Arc</source>
-        <translation type="unfinished"></translation>
+        <translation>圆弧</translation>
     </message>
     <message>
         <source>Sine (chords)</source>
-        <translation type="unfinished"></translation>
+        <translation>正弦（弦线逼近）</translation>
     </message>
     <message>
         <source>Cosine (chords)</source>
-        <translation type="unfinished"></translation>
+        <translation>余弦（弦线逼近）</translation>
     </message>
     <message>
         <source>Spiral</source>
-        <translation type="unfinished"></translation>
+        <translation>螺旋线</translation>
     </message>
     <message>
         <source>Raster (serpentine)</source>
-        <translation type="unfinished"></translation>
+        <translation>栅格扫描（蛇形）</translation>
     </message>
     <message>
         <source>a name for the saved file</source>
-        <translation type="unfinished"></translation>
+        <translation>保存文件所用的名称</translation>
     </message>
     <message>
         <source> mm/s</source>
-        <translation type="unfinished"> mm/s</translation>
+        <translation> mm/s</translation>
     </message>
     <message>
         <source>Path speed (feed): how fast the pattern is run along its length</source>
-        <translation type="unfinished"></translation>
+        <translation>路径速度（进给速度）：沿图形长度运行的快慢</translation>
     </message>
     <message>
         <source>Name</source>
-        <translation type="unfinished"></translation>
+        <translation>名称</translation>
     </message>
     <message>
         <source>Shape</source>
-        <translation type="unfinished"></translation>
+        <translation>形状</translation>
     </message>
     <message>
         <source>Feed</source>
-        <translation type="unfinished"></translation>
+        <translation>进给速度</translation>
     </message>
     <message>
         <source>work at Z</source>
-        <translation type="unfinished"></translation>
+        <translation>在指定 Z 高度工作</translation>
     </message>
     <message>
         <source>Z goes to this height once X and Y are at the start (seed 000: Z follows XY)</source>
-        <translation type="unfinished"></translation>
+        <translation>X 和 Y 到达起点后，Z 移到此高度（文献 000：Z 跟随 XY）</translation>
     </message>
     <message>
         <source> mm</source>
-        <translation type="unfinished"></translation>
+        <translation> mm</translation>
     </message>
     <message>
         <source>Z</source>
-        <translation type="unfinished">Z</translation>
+        <translation>Z</translation>
     </message>
     <message>
         <source>X</source>
         <comment>axis</comment>
-        <translation type="unfinished">X</translation>
+        <translation>X</translation>
     </message>
     <message>
         <source>Y</source>
         <comment>axis</comment>
-        <translation type="unfinished">Y</translation>
+        <translation>Y</translation>
     </message>
     <message>
         <source> °</source>
-        <translation type="unfinished"></translation>
+        <translation> °</translation>
     </message>
     <message>
         <source>counter-clockwise</source>
-        <translation type="unfinished">逆时针</translation>
+        <translation>逆时针</translation>
     </message>
     <message>
         <source>clockwise</source>
-        <translation type="unfinished">顺时针</translation>
+        <translation>顺时针</translation>
     </message>
     <message>
         <source>Start</source>
-        <translation type="unfinished"></translation>
+        <translation>起点</translation>
     </message>
     <message>
         <source>Where the line begins</source>
-        <translation type="unfinished"></translation>
+        <translation>直线的起始位置</translation>
     </message>
     <message>
         <source>End</source>
-        <translation type="unfinished"></translation>
+        <translation>终点</translation>
     </message>
     <message>
         <source>Where the line ends</source>
-        <translation type="unfinished"></translation>
+        <translation>直线的结束位置</translation>
     </message>
     <message>
         <source>Corner</source>
-        <translation type="unfinished"></translation>
+        <translation>角点</translation>
     </message>
     <message>
         <source>Lower-left corner: the run starts and ends here</source>
-        <translation type="unfinished"></translation>
+        <translation>左下角：从此处开始，也在此处结束</translation>
     </message>
     <message>
         <source>Width</source>
-        <translation type="unfinished"></translation>
+        <translation>宽度</translation>
     </message>
     <message>
         <source>Height</source>
-        <translation type="unfinished"></translation>
+        <translation>高度</translation>
     </message>
     <message>
         <source>Direction</source>
-        <translation type="unfinished"></translation>
+        <translation>方向</translation>
     </message>
     <message>
         <source>Centre</source>
-        <translation type="unfinished"></translation>
+        <translation>圆心</translation>
     </message>
     <message>
         <source>Radius</source>
-        <translation type="unfinished"></translation>
+        <translation>半径</translation>
     </message>
     <message>
         <source>Start angle</source>
-        <translation type="unfinished"></translation>
+        <translation>起始角</translation>
     </message>
     <message>
         <source>0° is +X, 90° is +Y</source>
-        <translation type="unfinished"></translation>
+        <translation>0° 为 +X，90° 为 +Y</translation>
     </message>
     <message>
         <source>Sweep</source>
-        <translation type="unfinished"></translation>
+        <translation>扫过角度</translation>
     </message>
     <message>
         <source>Origin</source>
-        <translation type="unfinished"></translation>
+        <translation>原点</translation>
     </message>
     <message>
         <source>Start of the wave&apos;s axis</source>
-        <translation type="unfinished"></translation>
+        <translation>波形轴线的起点</translation>
     </message>
     <message>
         <source>Amplitude</source>
-        <translation type="unfinished"></translation>
+        <translation>振幅</translation>
     </message>
     <message>
         <source>Wavelength</source>
-        <translation type="unfinished"></translation>
+        <translation>波长</translation>
     </message>
     <message>
         <source>Length</source>
-        <translation type="unfinished"></translation>
+        <translation>长度</translation>
     </message>
     <message>
         <source>Along the wave&apos;s axis</source>
-        <translation type="unfinished"></translation>
+        <translation>沿波形轴线</translation>
     </message>
     <message>
         <source>Axis angle</source>
-        <translation type="unfinished"></translation>
+        <translation>轴线角度</translation>
     </message>
     <message>
         <source>Direction of the wave&apos;s axis, 0° = +X</source>
-        <translation type="unfinished"></translation>
+        <translation>波形轴线的方向，0° = +X</translation>
     </message>
     <message>
         <source>Chord tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>弦线容差</translation>
     </message>
     <message>
         <source>Largest gap between a chord and the curve (seed 002&apos;s equal parts)</source>
-        <translation type="unfinished"></translation>
+        <translation>弦线与曲线之间的最大间隙（文献 002 的等分法）</translation>
     </message>
     <message>
         <source>Start radius</source>
-        <translation type="unfinished"></translation>
+        <translation>起始半径</translation>
     </message>
     <message>
         <source>Pitch</source>
-        <translation type="unfinished"></translation>
+        <translation>螺距</translation>
     </message>
     <message>
         <source>Radius gained per turn</source>
-        <translation type="unfinished"></translation>
+        <translation>每圈增加的半径</translation>
     </message>
     <message>
         <source>Turns</source>
-        <translation type="unfinished"></translation>
+        <translation>圈数</translation>
     </message>
     <message>
         <source>Whole or half turns</source>
-        <translation type="unfinished"></translation>
+        <translation>整圈或半圈</translation>
     </message>
     <message>
         <source>Lower-left corner: the first pass starts here</source>
-        <translation type="unfinished"></translation>
+        <translation>左下角：第一道扫描从此处开始</translation>
     </message>
     <message>
         <source>Pass spacing</source>
-        <translation type="unfinished"></translation>
+        <translation>扫描道间距</translation>
     </message>
     <message>
         <source>along X</source>
-        <translation type="unfinished"></translation>
+        <translation>沿 X</translation>
     </message>
     <message>
         <source>along Y</source>
-        <translation type="unfinished"></translation>
+        <translation>沿 Y</translation>
     </message>
     <message>
         <source>Passes</source>
-        <translation type="unfinished"></translation>
+        <translation>扫描道数</translation>
     </message>
 </context>
 <context>
     <name>ui::PatternPreview</name>
     <message>
         <source>pattern</source>
-        <translation type="unfinished"></translation>
+        <translation>图形</translation>
     </message>
     <message>
         <source>point-by-point steps</source>
-        <translation type="unfinished"></translation>
+        <translation>逐点步进</translation>
     </message>
     <message>
         <source>commanded</source>
-        <translation type="unfinished">指令位置</translation>
+        <translation>指令</translation>
     </message>
     <message>
         <source>measured</source>
-        <translation type="unfinished">实测位置</translation>
+        <translation>实测</translation>
     </message>
     <message>
         <source>start</source>
-        <translation type="unfinished"></translation>
+        <translation>起点</translation>
     </message>
     <message>
         <source>machine</source>
-        <translation type="unfinished"></translation>
+        <translation>机器位置</translation>
     </message>
     <message>
         <source>X (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>X (mm)</translation>
     </message>
     <message>
         <source>Y (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Y (mm)</translation>
     </message>
 </context>
 <context>
     <name>ui::PatternScreen</name>
     <message>
         <source>%1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 s</translation>
     </message>
     <message>
         <source>%1 min %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 min %2 s</translation>
     </message>
     <message>
         <source>Instrument</source>
-        <translation type="unfinished">仪器</translation>
+        <translation>仪器</translation>
     </message>
     <message>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>运行</translation>
     </message>
     <message>
         <source>Move to the pattern&apos;s start, then run it (F5)</source>
-        <translation type="unfinished"></translation>
+        <translation>移动到图形起点，然后运行（F5）</translation>
     </message>
     <message>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>暂停</translation>
     </message>
     <message>
         <source>Slow down along the path and hold; press again to go on (F6)</source>
-        <translation type="unfinished"></translation>
+        <translation>沿路径减速并保持；再按一次继续（F6）</translation>
     </message>
     <message>
         <source>Abort</source>
-        <translation type="unfinished"></translation>
+        <translation>中止</translation>
     </message>
     <message>
         <source>Slow down along the path and give the rest up (F8)</source>
-        <translation type="unfinished"></translation>
+        <translation>沿路径减速并放弃剩余部分（F8）</translation>
     </message>
     <message>
         <source>%v / %m segments</source>
-        <translation type="unfinished"></translation>
+        <translation>%v / %m 段</translation>
     </message>
     <message>
         <source>Load…</source>
-        <translation type="unfinished"></translation>
+        <translation>载入…</translation>
     </message>
     <message>
         <source>Save…</source>
-        <translation type="unfinished"></translation>
+        <translation>保存…</translation>
     </message>
     <message>
         <source>Export run…</source>
-        <translation type="unfinished"></translation>
+        <translation>导出运行数据…</translation>
     </message>
     <message>
         <source>The last run&apos;s samples as CSV: commanded and measured XY, path distance, contour error</source>
-        <translation type="unfinished"></translation>
+        <translation>上次运行的采样数据，CSV 格式：指令与实测 XY、路径距离、轮廓误差</translation>
     </message>
     <message>
         <source>Fit</source>
-        <translation type="unfinished"></translation>
+        <translation>全图</translation>
     </message>
     <message>
         <source>Show the whole pattern (wheel: zoom, drag: pan)</source>
-        <translation type="unfinished"></translation>
+        <translation>显示整个图形（滚轮：缩放，拖动：平移）</translation>
     </message>
     <message>
         <source>Interpolation step</source>
-        <translation type="unfinished"></translation>
+        <translation>插补步距</translation>
     </message>
     <message>
         <source> mm</source>
-        <translation type="unfinished"></translation>
+        <translation> mm</translation>
     </message>
     <message>
         <source>Grid of the point-by-point walk drawn when zoomed in (the instrument&apos;s resolution by default)</source>
-        <translation type="unfinished"></translation>
+        <translation>放大时绘制的逐点插补网格（默认为仪器的分辨率）</translation>
     </message>
     <message>
         <source>zoom in to see the steps</source>
-        <translation type="unfinished"></translation>
+        <translation>放大以查看步进</translation>
     </message>
     <message>
         <source>Load pattern</source>
-        <translation type="unfinished"></translation>
+        <translation>载入图形</translation>
     </message>
     <message>
         <source>Patterns (*.pattern.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>图形 (*.pattern.json)</translation>
     </message>
     <message>
         <source>Save pattern</source>
-        <translation type="unfinished"></translation>
+        <translation>保存图形</translation>
     </message>
     <message>
         <source>Export run</source>
-        <translation type="unfinished"></translation>
+        <translation>导出运行数据</translation>
     </message>
     <message>
         <source>CSV (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV (*.csv)</translation>
     </message>
     <message>
         <source>&lt;b&gt;Contour error&lt;/b&gt; max %1 µm (at %2 mm), RMS %3 µm · &lt;b&gt;time&lt;/b&gt; %4 · %5 samples%6</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;轮廓误差&lt;/b&gt; 最大 %1 µm（位于 %2 mm），均方根 %3 µm · &lt;b&gt;用时&lt;/b&gt; %4 · %5 个采样点%6</translation>
     </message>
     <message>
         <source> · &lt;b&gt;incomplete&lt;/b&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation> · &lt;b&gt;不完整&lt;/b&gt;</translation>
     </message>
     <message>
         <source>The pattern has problems (see above).</source>
-        <translation type="unfinished"></translation>
+        <translation>该图形有问题（见上方）。</translation>
     </message>
     <message>
         <source>%1 segments, %2 mm; estimated %3 at %4 mm/s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 段，%2 mm；以 %4 mm/s 预计用时 %3</translation>
     </message>
     <message>
         <source>Leaves the soft limits: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>超出软限位：%1</translation>
     </message>
     <message>
         <source>Continue</source>
-        <translation type="unfinished"></translation>
+        <translation>继续</translation>
     </message>
     <message>
         <source>Resume</source>
-        <translation type="unfinished"></translation>
+        <translation>继续</translation>
     </message>
     <message>
         <source>Move %1 %2 mm to the pattern&apos;s start (%3, %4) and run %5 segments (%6 mm)?</source>
-        <translation type="unfinished"></translation>
+        <translation>将%1移动 %2 mm 到图形起点（%3, %4），然后运行 %5 段（%6 mm）？</translation>
     </message>
     <message>
         <source>Moving to the start…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在移向起点…</translation>
     </message>
     <message>
         <source>Running: segment %1 of %2, %3 mm done, about %4 left</source>
-        <translation type="unfinished"></translation>
+        <translation>运行中：第 %1 段（共 %2 段），已完成 %3 mm，约剩 %4</translation>
     </message>
     <message>
         <source>There is no run to export yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>还没有可导出的运行数据。</translation>
     </message>
 </context>
 <context>
     <name>ui::PlateMap</name>
     <message>
         <source>%1 · plate (%2, %3) mm · machine (%4, %5) mm%6</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 · 孔板坐标 (%2, %3) mm · 机器坐标 (%4, %5) mm%6</translation>
     </message>
     <message>
         <source> (nominal: slot not calibrated)</source>
-        <translation type="unfinished"></translation>
+        <translation>（名义位置：板位未校准）</translation>
     </message>
     <message>
         <source> · %1 µL dispensed</source>
-        <translation type="unfinished"></translation>
+        <translation> · 已排液 %1 µL</translation>
     </message>
     <message>
         <source> · %1 µL aspirated</source>
-        <translation type="unfinished"></translation>
+        <translation> · 已吸液 %1 µL</translation>
     </message>
     <message>
         <source> · visited, no net volume</source>
-        <translation type="unfinished"></translation>
+        <translation> · 已访问，净液量为零</translation>
     </message>
     <message>
         <source> · holds %1 µL</source>
-        <translation type="unfinished"></translation>
+        <translation> · 容积 %1 µL</translation>
     </message>
     <message>
         <source>No plate</source>
-        <translation type="unfinished"></translation>
+        <translation>无孔板</translation>
     </message>
     <message>
         <source>  ·  %1 × %2 mm, drawn to scale</source>
-        <translation type="unfinished"></translation>
+        <translation>  ·  %1 × %2 mm，按比例绘制</translation>
     </message>
 </context>
 <context>
     <name>ui::PlatesScreen</name>
     <message>
         <source>Plate</source>
-        <translation type="unfinished"></translation>
+        <translation>孔板</translation>
     </message>
     <message>
         <source>unused</source>
-        <translation type="unfinished"></translation>
+        <translation>未使用</translation>
     </message>
     <message>
         <source>planned</source>
-        <translation type="unfinished"></translation>
+        <translation>已计划</translation>
     </message>
     <message>
         <source>current</source>
-        <translation type="unfinished"></translation>
+        <translation>当前</translation>
     </message>
     <message>
         <source>done</source>
-        <translation type="unfinished"></translation>
+        <translation>已完成</translation>
     </message>
     <message>
         <source>error</source>
-        <translation type="unfinished"></translation>
+        <translation>错误</translation>
     </message>
     <message>
         <source>Use for this step</source>
-        <translation type="unfinished"></translation>
+        <translation>用于此步骤</translation>
     </message>
     <message>
         <source>Set the selected step&apos;s wells (and plate) to the selection</source>
-        <translation type="unfinished"></translation>
+        <translation>把所选步骤的孔（及孔板）设为当前选中的孔</translation>
     </message>
     <message>
         <source>Aspirate from these</source>
-        <translation type="unfinished"></translation>
+        <translation>从这些孔吸液</translation>
     </message>
     <message>
         <source>Dispense into these</source>
-        <translation type="unfinished"></translation>
+        <translation>向这些孔排液</translation>
     </message>
     <message>
         <source>Clear</source>
-        <translation type="unfinished"></translation>
+        <translation>清除</translation>
     </message>
     <message>
         <source>Recipe</source>
-        <translation type="unfinished"></translation>
+        <translation>加样方案</translation>
     </message>
     <message>
         <source>Calibrate</source>
-        <translation type="unfinished"></translation>
+        <translation>校准</translation>
     </message>
     <message>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>运行</translation>
     </message>
     <message>
         <source>Click a well or drag across wells to select them (Ctrl adds).</source>
-        <translation type="unfinished"></translation>
+        <translation>点击一个孔或拖动跨过多个孔以选中（按住 Ctrl 追加）。</translation>
     </message>
     <message>
         <source>%1 wells selected: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>已选 %1 个孔：%2</translation>
     </message>
     <message>
         <source>Discard the changes to this recipe?</source>
-        <translation type="unfinished"></translation>
+        <translation>放弃对此加样方案的更改？</translation>
     </message>
     <message>
         <source>Open recipe</source>
-        <translation type="unfinished"></translation>
+        <translation>打开加样方案</translation>
     </message>
     <message>
         <source>Recipes (*.recipe.json *.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>加样方案 (*.recipe.json *.json)</translation>
     </message>
     <message>
         <source>Save recipe</source>
-        <translation type="unfinished"></translation>
+        <translation>保存加样方案</translation>
     </message>
     <message>
         <source>Recipes (*.recipe.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>加样方案 (*.recipe.json)</translation>
     </message>
     <message>
         <source>the slot calibration %1 cannot be read; the slots use their nominal places:
 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>无法读取板位校准 %1；各板位使用名义位置：
+%2</translation>
     </message>
     <message>
         <source>slot calibration saved to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>板位校准已保存到 %1</translation>
     </message>
     <message>
         <source>new recipe</source>
-        <translation type="unfinished"></translation>
+        <translation>新方案</translation>
     </message>
     <message>
         <source>%1 cannot be opened:
 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>无法打开 %1：
+%2</translation>
     </message>
     <message>
         <source>opened %1</source>
-        <translation type="unfinished"></translation>
+        <translation>已打开 %1</translation>
     </message>
     <message>
         <source>saved %1</source>
-        <translation type="unfinished"></translation>
+        <translation>已保存 %1</translation>
     </message>
     <message>
         <source>the recipe has no steps</source>
-        <translation type="unfinished"></translation>
+        <translation>该方案没有步骤</translation>
     </message>
     <message>
         <source>%1 in slot %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1，位于板位 %2：%3</translation>
     </message>
     <message>
         <source>use the selection in step %1</source>
-        <translation type="unfinished"></translation>
+        <translation>在步骤 %1 中使用所选孔</translation>
     </message>
     <message>
         <source>aspirate from the selection</source>
-        <translation type="unfinished"></translation>
+        <translation>从所选孔吸液</translation>
     </message>
     <message>
         <source>dispense into the selection</source>
-        <translation type="unfinished"></translation>
+        <translation>向所选孔排液</translation>
     </message>
     <message>
         <source>the recipe does not validate: see its problems</source>
-        <translation type="unfinished"></translation>
+        <translation>该方案未通过检查：请查看其问题</translation>
     </message>
     <message>
         <source>Run &quot;%1&quot;: %2 wells, about %3. The tip goes down to Z %4 mm; the analyzer moves on its own until the end (Pause, Abort, or Esc for the E-stop). Start?</source>
-        <translation type="unfinished"></translation>
+        <translation>运行“%1”：%2 个孔，约 %3。加样针将下降到 Z %4 mm；分析仪将自行运动直到结束（可按“暂停”“中止”，或按 Esc 急停）。开始？</translation>
     </message>
     <message>
         <source>Resume from run log</source>
-        <translation type="unfinished"></translation>
+        <translation>从运行日志继续</translation>
     </message>
     <message>
         <source>Run logs (*.run.jsonl *.jsonl)</source>
-        <translation type="unfinished"></translation>
+        <translation>运行日志 (*.run.jsonl *.jsonl)</translation>
     </message>
     <message>
         <source>Import labware</source>
-        <translation type="unfinished"></translation>
+        <translation>导入耗材</translation>
     </message>
     <message>
         <source>Labware definitions (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>耗材定义 (*.json)</translation>
     </message>
     <message>
         <source>%1 is not a plate definition BenchPilot can use:
 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 不是 BenchPilot 可用的孔板定义：
+%2</translation>
     </message>
     <message>
         <source>use imported labware %1</source>
-        <translation type="unfinished"></translation>
+        <translation>使用导入的耗材 %1</translation>
     </message>
     <message>
         <source>imported %1 (%2 wells) as %3</source>
-        <translation type="unfinished"></translation>
+        <translation>已将 %1（%2 个孔）导入为 %3</translation>
     </message>
 </context>
 <context>
     <name>ui::PlotCursors</name>
     <message>
         <source>A</source>
-        <translation type="unfinished"></translation>
+        <translation>A</translation>
     </message>
     <message>
         <source>B</source>
-        <translation type="unfinished"></translation>
+        <translation>B</translation>
     </message>
 </context>
 <context>
     <name>ui::PlotStack</name>
     <message>
         <source>Time (s, 0 = newest sample)</source>
-        <translation type="unfinished"></translation>
+        <translation>时间（s，0 = 最新采样）</translation>
     </message>
 </context>
 <context>
     <name>ui::PlotToolbar</name>
     <message>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>暂停</translation>
     </message>
     <message>
         <source>Freeze the view; the instruments keep streaming and recording goes on</source>
-        <translation type="unfinished"></translation>
+        <translation>冻结视图；仪器继续发送数据，记录也继续进行</translation>
     </message>
     <message>
         <source>Auto Y</source>
-        <translation type="unfinished"></translation>
+        <translation>自动 Y</translation>
     </message>
     <message>
         <source>Fit each plot&apos;s value axes to what is visible (dragging or Ctrl+wheel on a plot turns it off)</source>
-        <translation type="unfinished"></translation>
+        <translation>使每个曲线图的数值轴适应可见数据（在曲线图上拖动或按 Ctrl+滚轮会关闭此功能）</translation>
     </message>
     <message>
         <source>Cursors</source>
-        <translation type="unfinished"></translation>
+        <translation>光标</translation>
     </message>
     <message>
         <source>Two time cursors A and B with Δt and Δy; drag them along the time axis</source>
-        <translation type="unfinished"></translation>
+        <translation>两个时间光标 A 和 B，显示 Δt 和 Δy；可沿时间轴拖动</translation>
     </message>
     <message>
         <source>XY</source>
-        <translation type="unfinished"></translation>
+        <translation>XY</translation>
     </message>
     <message>
         <source>Show the stage&apos;s XY path, commanded against measured</source>
-        <translation type="unfinished"></translation>
+        <translation>显示载物台的 XY 路径，指令与实测对比</translation>
     </message>
     <message>
         <source>+ Plot</source>
-        <translation type="unfinished"></translation>
+        <translation>+ 曲线图</translation>
     </message>
     <message>
         <source>− Plot</source>
-        <translation type="unfinished"></translation>
+        <translation>− 曲线图</translation>
     </message>
     <message>
         <source>Record…</source>
-        <translation type="unfinished"></translation>
+        <translation>记录…</translation>
     </message>
     <message>
         <source>Stream every plotted channel to a CSV file until stopped</source>
-        <translation type="unfinished"></translation>
+        <translation>将所有已绘制的通道持续写入 CSV 文件，直到停止</translation>
     </message>
     <message>
         <source>CSV…</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV…</translation>
     </message>
     <message>
         <source>PNG…</source>
-        <translation type="unfinished"></translation>
+        <translation>PNG…</translation>
     </message>
     <message>
         <source>PDF…</source>
-        <translation type="unfinished"></translation>
+        <translation>PDF…</translation>
     </message>
     <message>
         <source>Window</source>
-        <translation type="unfinished"></translation>
+        <translation>时间窗</translation>
     </message>
     <message>
         <source>How much history the plots keep and show (1 s to 10 min)</source>
-        <translation type="unfinished"></translation>
+        <translation>曲线保留并显示的历史长度（1 s 到 10 min）</translation>
     </message>
     <message>
         <source>1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>1 s</translation>
     </message>
     <message>
         <source>2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>2 s</translation>
     </message>
     <message>
         <source>5 s</source>
-        <translation type="unfinished"></translation>
+        <translation>5 s</translation>
     </message>
     <message>
         <source>10 s</source>
-        <translation type="unfinished"></translation>
+        <translation>10 s</translation>
     </message>
     <message>
         <source>30 s</source>
-        <translation type="unfinished"></translation>
+        <translation>30 s</translation>
     </message>
     <message>
         <source>1 min</source>
-        <translation type="unfinished"></translation>
+        <translation>1 min</translation>
     </message>
     <message>
         <source>2 min</source>
-        <translation type="unfinished"></translation>
+        <translation>2 min</translation>
     </message>
     <message>
         <source>5 min</source>
-        <translation type="unfinished"></translation>
+        <translation>5 min</translation>
     </message>
     <message>
         <source>10 min</source>
-        <translation type="unfinished"></translation>
+        <translation>10 min</translation>
     </message>
     <message>
         <source>Rate</source>
-        <translation type="unfinished"></translation>
+        <translation>采样率</translation>
     </message>
     <message>
         <source>Sample rate asked of the instruments; the link may carry less (see the status line)</source>
-        <translation type="unfinished"></translation>
+        <translation>向仪器请求的采样率；链路实际能承载的可能更低（见状态栏）</translation>
     </message>
     <message>
         <source>%1 kHz</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kHz</translation>
     </message>
     <message>
         <source>%1 Hz</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Hz</translation>
     </message>
     <message>
         <source>Add a plot below the others</source>
-        <translation type="unfinished"></translation>
+        <translation>在其他曲线图下方添加一个曲线图</translation>
     </message>
     <message>
         <source>Remove the plot chosen in the channel list</source>
-        <translation type="unfinished"></translation>
+        <translation>移除在通道列表中选中的曲线图</translation>
     </message>
     <message>
         <source>Export the visible range as CSV: the raw samples (decimated per pixel column above %1 samples)</source>
-        <translation type="unfinished"></translation>
+        <translation>将可见范围导出为 CSV：原始采样数据（超过 %1 个采样点时按像素列抽取）</translation>
     </message>
     <message>
         <source>Export the plots as a picture</source>
-        <translation type="unfinished"></translation>
+        <translation>将曲线导出为图片</translation>
     </message>
     <message>
         <source>Export the plots as a vector PDF</source>
-        <translation type="unfinished"></translation>
+        <translation>将曲线导出为矢量 PDF</translation>
     </message>
     <message>
         <source>Export</source>
-        <translation type="unfinished"></translation>
+        <translation>导出</translation>
     </message>
 </context>
 <context>
     <name>ui::PlotsScreen</name>
     <message>
         <source>Paused: the time axis was moved. Resume returns to the live view.</source>
-        <translation type="unfinished"></translation>
+        <translation>已暂停：时间轴被移动过。按“继续”返回实时视图。</translation>
     </message>
     <message>
         <source>Resume</source>
-        <translation type="unfinished"></translation>
+        <translation>继续</translation>
     </message>
     <message>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>暂停</translation>
     </message>
     <message>
         <source>&lt;b&gt;%1&lt;/b&gt;: %2 · %3 samples</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;%1&lt;/b&gt;：%2 · %3 个采样点</translation>
     </message>
     <message>
         <source>%1 Hz</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Hz</translation>
     </message>
     <message>
         <source>not streaming</source>
-        <translation type="unfinished"></translation>
+        <translation>未发送数据</translation>
     </message>
     <message>
         <source> · &lt;span style=&apos;color:#b71c1c&apos;&gt;&lt;b&gt;%1 lost&lt;/b&gt;&lt;/span&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation> · &lt;span style=&apos;color:#b71c1c&apos;&gt;&lt;b&gt;丢失 %1&lt;/b&gt;&lt;/span&gt;</translation>
     </message>
     <message>
         <source> · 0 lost</source>
-        <translation type="unfinished"></translation>
+        <translation> · 丢失 0</translation>
     </message>
     <message>
         <source> · %1 not kept while paused</source>
-        <translation type="unfinished"></translation>
+        <translation> · 暂停期间有 %1 个未保留</translation>
     </message>
     <message>
         <source>&lt;b&gt;paused&lt;/b&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;已暂停&lt;/b&gt;</translation>
     </message>
     <message>
         <source>&lt;span style=&apos;color:#b71c1c&apos;&gt;● recording %1 rows to %2&lt;/span&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;span style=&apos;color:#b71c1c&apos;&gt;● 正在将 %1 行记录到 %2&lt;/span&gt;</translation>
     </message>
     <message>
         <source>Export the visible range as CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>将可见范围导出为 CSV</translation>
     </message>
     <message>
         <source>CSV files (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message>
         <source>Exported the decimated view (%1 rows, min/max per pixel column) to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>已将抽取后的视图（%1 行，每像素列取最小/最大值）导出到 %2</translation>
     </message>
     <message>
         <source>Exported %1 rows of raw samples to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>已将 %1 行原始采样数据导出到 %2</translation>
     </message>
     <message>
         <source>Export the plots as PNG</source>
-        <translation type="unfinished"></translation>
+        <translation>将曲线导出为 PNG</translation>
     </message>
     <message>
         <source>PNG pictures (*.png)</source>
-        <translation type="unfinished"></translation>
+        <translation>PNG 图片 (*.png)</translation>
     </message>
     <message>
         <source>Saved the plots to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>已将曲线保存到 %1</translation>
     </message>
     <message>
         <source>Export the plots as PDF</source>
-        <translation type="unfinished"></translation>
+        <translation>将曲线导出为 PDF</translation>
     </message>
     <message>
         <source>PDF documents (*.pdf)</source>
-        <translation type="unfinished"></translation>
+        <translation>PDF 文档 (*.pdf)</translation>
     </message>
     <message>
         <source>● Stop recording</source>
-        <translation type="unfinished"></translation>
+        <translation>● 停止记录</translation>
     </message>
     <message>
         <source>Record…</source>
-        <translation type="unfinished"></translation>
+        <translation>记录…</translation>
     </message>
     <message>
         <source>Record telemetry to CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>将遥测数据记录为 CSV</translation>
     </message>
     <message>
         <source>Recording %1 channels to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>正在将 %1 个通道记录到 %2</translation>
     </message>
     <message>
         <source>Recorded %1 rows to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>已将 %1 行记录到 %2</translation>
     </message>
 </context>
 <context>
     <name>ui::PolarPlot</name>
     <message>
         <source>X about the centre (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>相对圆心的 X (mm)</translation>
     </message>
     <message>
         <source>Y about the centre (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>相对圆心的 Y (mm)</translation>
     </message>
     <message>
         <source>counter-clockwise</source>
-        <translation type="unfinished">逆时针</translation>
+        <translation>逆时针</translation>
     </message>
     <message>
         <source>clockwise</source>
-        <translation type="unfinished">顺时针</translation>
+        <translation>顺时针</translation>
     </message>
     <message>
         <source>deviation magnified %1×</source>
-        <translation type="unfinished"></translation>
+        <translation>偏差放大 %1×</translation>
     </message>
 </context>
 <context>
     <name>ui::ProfilesScreen</name>
     <message>
         <source>Match 0 cannot fire: edge moved one tick late, the next step one tick early</source>
-        <translation type="unfinished"></translation>
+        <translation>比较值 0 无法触发：该边沿推迟一个计数，下一步提前一个计数</translation>
     </message>
     <message>
         <source>Rate outside 80 Hz … 20 kHz: clamped</source>
-        <translation type="unfinished"></translation>
+        <translation>频率超出 80 Hz … 20 kHz：已限幅</translation>
     </message>
     <message>
         <source>clamped</source>
-        <translation type="unfinished"></translation>
+        <translation>已限幅</translation>
     </message>
     <message>
         <source>+1 tick</source>
-        <translation type="unfinished"></translation>
+        <translation>+1 计数</translation>
     </message>
     <message>
         <source>Ideal period (µs)</source>
-        <translation type="unfinished"></translation>
+        <translation>理想周期 (µs)</translation>
     </message>
     <message>
         <source>Period (ticks)</source>
-        <translation type="unfinished"></translation>
+        <translation>周期（计数）</translation>
     </message>
     <message>
         <source>Whole periods</source>
-        <translation type="unfinished"></translation>
+        <translation>完整周期数</translation>
     </message>
     <message>
         <source>Match (ticks)</source>
-        <translation type="unfinished"></translation>
+        <translation>比较值（计数）</translation>
     </message>
     <message>
         <source>Note</source>
-        <translation type="unfinished"></translation>
+        <translation>备注</translation>
     </message>
     <message>
         <source>Motion profiles</source>
-        <translation type="unfinished"></translation>
+        <translation>速度曲线</translation>
     </message>
     <message>
         <source>Seed S-curve (seed 000)</source>
-        <translation type="unfinished"></translation>
+        <translation>S 型加减速（文献 000）</translation>
     </message>
     <message>
         <source>Trapezoid with plateau steps (seed 001)</source>
-        <translation type="unfinished"></translation>
+        <translation>带平台段的梯形速度曲线（文献 001）</translation>
     </message>
     <message>
         <source>Exponential (seed 003)</source>
-        <translation type="unfinished"></translation>
+        <translation>指数型（文献 003）</translation>
     </message>
     <message>
         <source>Jerk-limited, time-optimal</source>
-        <translation type="unfinished"></translation>
+        <translation>限加加速度的时间最优曲线</translation>
     </message>
     <message>
         <source>Shape of the speed change</source>
-        <translation type="unfinished"></translation>
+        <translation>速度变化的形状</translation>
     </message>
     <message>
         <source>Kind</source>
-        <translation type="unfinished"></translation>
+        <translation>类型</translation>
     </message>
     <message>
         <source>Distance</source>
-        <translation type="unfinished"></translation>
+        <translation>距离</translation>
     </message>
     <message>
         <source> mm</source>
-        <translation type="unfinished"></translation>
+        <translation> mm</translation>
     </message>
     <message>
         <source>Signed length of the move</source>
-        <translation type="unfinished"></translation>
+        <translation>移动的有符号长度</translation>
     </message>
     <message>
         <source>Max velocity</source>
-        <translation type="unfinished"></translation>
+        <translation>最大速度</translation>
     </message>
     <message>
         <source> mm/s</source>
-        <translation type="unfinished"> mm/s</translation>
+        <translation> mm/s</translation>
     </message>
     <message>
         <source>Cruise speed the move may not exceed</source>
-        <translation type="unfinished"></translation>
+        <translation>移动时不得超过的巡航速度</translation>
     </message>
     <message>
         <source>Max acceleration</source>
-        <translation type="unfinished"></translation>
+        <translation>最大加速度</translation>
     </message>
     <message>
         <source> mm/s²</source>
-        <translation type="unfinished"></translation>
+        <translation> mm/s²</translation>
     </message>
     <message>
         <source>Acceleration limit (the trapezoid uses it for both ramps)</source>
-        <translation type="unfinished"></translation>
+        <translation>加速度限值（梯形曲线的加速段和减速段都用它）</translation>
     </message>
     <message>
         <source>Max jerk</source>
-        <translation type="unfinished"></translation>
+        <translation>最大加加速度</translation>
     </message>
     <message>
         <source> mm/s³</source>
-        <translation type="unfinished"></translation>
+        <translation> mm/s³</translation>
     </message>
     <message>
         <source>How fast the acceleration may change</source>
-        <translation type="unfinished"></translation>
+        <translation>加速度允许变化的快慢</translation>
     </message>
     <message>
         <source>Acceleration time</source>
-        <translation type="unfinished"></translation>
+        <translation>加速时间</translation>
     </message>
     <message>
         <source> s</source>
-        <translation type="unfinished"></translation>
+        <translation> s</translation>
     </message>
     <message>
         <source>Seed S-curve: ramp duration t2. Exponential: reaches 95 % of the max velocity (3τ)</source>
-        <translation type="unfinished"></translation>
+        <translation>S 型加减速（文献 000）：加速段时长 t2。指数型：达到最大速度 95 %（3τ）所需的时间</translation>
     </message>
     <message>
         <source>Start speed</source>
-        <translation type="unfinished"></translation>
+        <translation>起始速度</translation>
     </message>
     <message>
         <source>Speed the motor can jump to from rest (seed 001 start speed)</source>
-        <translation type="unfinished"></translation>
+        <translation>电机可从静止直接跳到的速度（文献 001 的起始速度）</translation>
     </message>
     <message>
         <source>Plateau</source>
-        <translation type="unfinished"></translation>
+        <translation>平台段</translation>
     </message>
     <message>
         <source>Distance run at the start speed before accelerating and after braking (seed 001 plateau steps)</source>
-        <translation type="unfinished"></translation>
+        <translation>加速前和制动后以起始速度运行的距离（文献 001 的平台步数）</translation>
     </message>
     <message>
         <source>Step size</source>
-        <translation type="unfinished"></translation>
+        <translation>步距</translation>
     </message>
     <message>
         <source>Travel per (micro)step, for the step-period table</source>
-        <translation type="unfinished"></translation>
+        <translation>每（微）步的行程，用于步进周期表</translation>
     </message>
     <message>
         <source>s (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>s (mm)</translation>
     </message>
     <message>
         <source>v (mm/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>v (mm/s)</translation>
     </message>
     <message>
         <source>a (mm/s²)</source>
-        <translation type="unfinished"></translation>
+        <translation>a (mm/s²)</translation>
     </message>
     <message>
         <source>j (mm/s³)</source>
-        <translation type="unfinished"></translation>
+        <translation>j (mm/s³)</translation>
     </message>
     <message>
         <source>t (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>t (s)</translation>
     </message>
     <message>
         <source>Cannot plan this move: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法规划此移动：%1</translation>
     </message>
     <message>
         <source>Move time: —</source>
-        <translation type="unfinished"></translation>
+        <translation>移动时间：—</translation>
     </message>
     <message>
         <source>Move time: %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>移动时间：%1 s</translation>
     </message>
     <message>
         <source>Peak velocity %1 mm/s · peak acceleration %2 mm/s² · peak jerk %3 mm/s³</source>
-        <translation type="unfinished"></translation>
+        <translation>峰值速度 %1 mm/s · 峰值加速度 %2 mm/s² · 峰值加加速度 %3 mm/s³</translation>
     </message>
     <message>
         <source>%1 steps: too many for the table (at most %2); use a larger step size.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 步：超出表格容量（最多 %2）；请使用更大的步距。</translation>
     </message>
     <message>
         <source>Step periods at %1 MHz, %2 µs interrupt (%3 ticks): %4 steps, table time %5 s vs ideal %6 s (error %7 µs), %8 clamped to 80 Hz … 20 kHz, %9 zero-match corrections.</source>
-        <translation type="unfinished"></translation>
+        <translation>步进周期（%1 MHz 时钟，%2 µs 中断，%3 个计数）：%4 步，表格时间 %5 s，理想时间 %6 s（误差 %7 µs），%8 个被限幅到 80 Hz … 20 kHz，%9 次零比较值修正。</translation>
     </message>
 </context>
 <context>
     <name>ui::RecipeEditor</name>
     <message>
         <source>New</source>
-        <translation type="unfinished"></translation>
+        <translation>新建</translation>
     </message>
     <message>
         <source>A new recipe with one 96-well plate in slot 1</source>
-        <translation type="unfinished"></translation>
+        <translation>新建加样方案，板位 1 放一块 96 孔板</translation>
     </message>
     <message>
         <source>Open…</source>
-        <translation type="unfinished"></translation>
+        <translation>打开…</translation>
     </message>
     <message>
         <source>Open a recipe file (Ctrl+O)</source>
-        <translation type="unfinished"></translation>
+        <translation>打开加样方案文件（Ctrl+O）</translation>
     </message>
     <message>
         <source>Save</source>
-        <translation type="unfinished"></translation>
+        <translation>保存</translation>
     </message>
     <message>
         <source>Save the recipe (Ctrl+S)</source>
-        <translation type="unfinished"></translation>
+        <translation>保存加样方案（Ctrl+S）</translation>
     </message>
     <message>
         <source>Save as…</source>
-        <translation type="unfinished"></translation>
+        <translation>另存为…</translation>
     </message>
     <message>
         <source>Save the recipe under another name</source>
-        <translation type="unfinished"></translation>
+        <translation>以另一个名称保存加样方案</translation>
     </message>
     <message>
         <source>Undo</source>
-        <translation type="unfinished"></translation>
+        <translation>撤销</translation>
     </message>
     <message>
         <source>Undo the last change (Ctrl+Z)</source>
-        <translation type="unfinished"></translation>
+        <translation>撤销上一次更改（Ctrl+Z）</translation>
     </message>
     <message>
         <source>Redo</source>
-        <translation type="unfinished"></translation>
+        <translation>重做</translation>
     </message>
     <message>
         <source>Redo (Ctrl+Shift+Z)</source>
-        <translation type="unfinished"></translation>
+        <translation>重做（Ctrl+Shift+Z）</translation>
     </message>
     <message>
         <source>Name</source>
-        <translation type="unfinished"></translation>
+        <translation>名称</translation>
     </message>
     <message>
         <source>Plates on the deck</source>
-        <translation type="unfinished"></translation>
+        <translation>台面上的孔板</translation>
     </message>
     <message>
         <source>Slot</source>
-        <translation type="unfinished"></translation>
+        <translation>板位</translation>
     </message>
     <message>
         <source>Labware</source>
-        <translation type="unfinished"></translation>
+        <translation>耗材</translation>
     </message>
     <message>
         <source>Safe Z (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>安全 Z (mm)</translation>
     </message>
     <message>
         <source>Depth Z (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>深度 Z (mm)</translation>
     </message>
     <message>
         <source>Add plate</source>
-        <translation type="unfinished"></translation>
+        <translation>添加孔板</translation>
     </message>
     <message>
         <source>Remove plate</source>
-        <translation type="unfinished"></translation>
+        <translation>移除孔板</translation>
     </message>
     <message>
         <source>Import Opentrons labware…</source>
-        <translation type="unfinished"></translation>
+        <translation>导入 Opentrons 耗材…</translation>
     </message>
     <message>
         <source>Read an Opentrons labware definition (schema 2), save it as a BenchPilot plate file beside the recipe, and use it for the selected plate</source>
-        <translation type="unfinished"></translation>
+        <translation>读取 Opentrons 耗材定义（第 2 版），在方案旁保存为 BenchPilot 孔板文件，并用于所选孔板</translation>
     </message>
     <message>
         <source>Steps</source>
-        <translation type="unfinished"></translation>
+        <translation>步骤</translation>
     </message>
     <message>
         <source>Add step</source>
-        <translation type="unfinished"></translation>
+        <translation>添加步骤</translation>
     </message>
     <message>
         <source>Duplicate</source>
-        <translation type="unfinished"></translation>
+        <translation>复制</translation>
     </message>
     <message>
         <source>Remove</source>
-        <translation type="unfinished"></translation>
+        <translation>移除</translation>
     </message>
     <message>
         <source>▲</source>
-        <translation type="unfinished"></translation>
+        <translation>▲</translation>
     </message>
     <message>
         <source>▼</source>
-        <translation type="unfinished"></translation>
+        <translation>▼</translation>
     </message>
     <message>
         <source>Move the step up</source>
-        <translation type="unfinished"></translation>
+        <translation>上移该步骤</translation>
     </message>
     <message>
         <source>Move the step down</source>
-        <translation type="unfinished"></translation>
+        <translation>下移该步骤</translation>
     </message>
     <message>
         <source>Problems</source>
-        <translation type="unfinished"></translation>
+        <translation>问题</translation>
     </message>
     <message>
         <source>rename the recipe</source>
-        <translation type="unfinished"></translation>
+        <translation>重命名方案</translation>
     </message>
     <message>
         <source>add a plate</source>
-        <translation type="unfinished"></translation>
+        <translation>添加孔板</translation>
     </message>
     <message>
         <source>remove plate %1</source>
-        <translation type="unfinished"></translation>
+        <translation>移除孔板 %1</translation>
     </message>
     <message>
         <source>change %1 of step %2</source>
-        <translation type="unfinished"></translation>
+        <translation>更改步骤 %2 的%1</translation>
     </message>
     <message>
         <source>duplicate step %1</source>
-        <translation type="unfinished"></translation>
+        <translation>复制步骤 %1</translation>
     </message>
     <message>
         <source>remove step %1</source>
-        <translation type="unfinished"></translation>
+        <translation>移除步骤 %1</translation>
     </message>
     <message>
         <source>station %1</source>
-        <translation type="unfinished">工位 %1</translation>
+        <translation>工位 %1</translation>
     </message>
     <message>
         <source> %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation> %1 s</translation>
     </message>
     <message>
         <source> %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation> %1 mm</translation>
     </message>
     <message>
         <source> %1 µL × %2</source>
-        <translation type="unfinished"></translation>
+        <translation> %1 µL × %2</translation>
     </message>
     <message>
         <source> %1 µL</source>
-        <translation type="unfinished"></translation>
+        <translation> %1 µL</translation>
     </message>
     <message>
         <source> ← %1</source>
-        <translation type="unfinished"></translation>
+        <translation> ← %1</translation>
     </message>
     <message>
         <source>rename a plate</source>
-        <translation type="unfinished"></translation>
+        <translation>重命名孔板</translation>
     </message>
     <message>
         <source>move a plate to slot %1</source>
-        <translation type="unfinished"></translation>
+        <translation>将孔板移到板位 %1</translation>
     </message>
     <message>
         <source>A built-in plate, or a labware file beside the recipe (NAME.labware.json, or an Opentrons definition)</source>
-        <translation type="unfinished"></translation>
+        <translation>内置孔板，或方案旁的耗材文件（NAME.labware.json 或 Opentrons 耗材定义）</translation>
     </message>
     <message>
         <source>change a plate&apos;s labware</source>
-        <translation type="unfinished"></translation>
+        <translation>更改孔板的耗材</translation>
     </message>
     <message>
         <source>Machine Z at which the tip clears this plate (Z counts down from home)</source>
-        <translation type="unfinished"></translation>
+        <translation>加样针越过此孔板所需的机器 Z 坐标（Z 从零位向下计数）</translation>
     </message>
     <message>
         <source>Machine Z the tip goes down to in a well</source>
-        <translation type="unfinished"></translation>
+        <translation>加样针在孔中下降到的机器 Z 坐标</translation>
     </message>
     <message>
         <source>change a safe height</source>
-        <translation type="unfinished"></translation>
+        <translation>更改安全高度</translation>
     </message>
     <message>
         <source>change a depth</source>
-        <translation type="unfinished"></translation>
+        <translation>更改深度</translation>
     </message>
     <message>
         <source>add step: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>添加步骤：%1</translation>
     </message>
     <message>
         <source>move step %1</source>
-        <translation type="unfinished"></translation>
+        <translation>移动步骤 %1</translation>
     </message>
     <message>
         <source>warning: %1</source>
-        <translation type="unfinished">警告：%1</translation>
+        <translation>警告：%1</translation>
     </message>
     <message>
         <source>The recipe validates.</source>
-        <translation type="unfinished"></translation>
+        <translation>加样方案检查通过。</translation>
     </message>
 </context>
 <context>
     <name>ui::ResponsePlot</name>
     <message>
         <source>time from the start [s]</source>
-        <translation type="unfinished"></translation>
+        <translation>距开始的时间 [s]</translation>
     </message>
     <message>
         <source>output − start</source>
-        <translation type="unfinished"></translation>
+        <translation>输出 − 初始值</translation>
     </message>
     <message>
         <source>position − start [%1]</source>
-        <translation type="unfinished"></translation>
+        <translation>位置 − 初始值 [%1]</translation>
     </message>
     <message>
         <source>controller output u</source>
-        <translation type="unfinished">控制器输出 u</translation>
+        <translation>控制器输出 u</translation>
     </message>
     <message>
         <source>controller output u [%1]</source>
-        <translation type="unfinished"></translation>
+        <translation>控制器输出 u [%1]</translation>
     </message>
 </context>
 <context>
     <name>ui::RunPanel</name>
     <message>
         <source>%1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 s</translation>
     </message>
     <message>
         <source>%1 min %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 min %2 s</translation>
     </message>
     <message>
         <source>%1 h %2 min</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 h %2 min</translation>
     </message>
     <message>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>运行</translation>
     </message>
     <message>
         <source>Run the recipe from its first well, logging every well (F5)</source>
-        <translation type="unfinished"></translation>
+        <translation>从第一个孔开始运行加样方案，记录每个孔（F5）</translation>
     </message>
     <message>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>暂停</translation>
     </message>
     <message>
         <source>Stop after the well under way, with the tip up</source>
-        <translation type="unfinished"></translation>
+        <translation>完成当前孔后停止，加样针抬起</translation>
     </message>
     <message>
         <source>Resume</source>
-        <translation type="unfinished"></translation>
+        <translation>继续</translation>
     </message>
     <message>
         <source>Continue a paused or stopped run</source>
-        <translation type="unfinished"></translation>
+        <translation>继续已暂停或已停止的运行</translation>
     </message>
     <message>
         <source>Abort</source>
-        <translation type="unfinished"></translation>
+        <translation>中止</translation>
     </message>
     <message>
         <source>Stop at once, then raise the tip; the log can resume it later</source>
-        <translation type="unfinished"></translation>
+        <translation>立即停止，然后抬起加样针；之后可从日志继续</translation>
     </message>
     <message>
         <source>Resume from log…</source>
-        <translation type="unfinished"></translation>
+        <translation>从日志继续…</translation>
     </message>
     <message>
         <source>Continue a run that ended early (a crash, a pulled cable) from its run log: wells already done are not done again</source>
-        <translation type="unfinished"></translation>
+        <translation>从运行日志继续提前结束的运行（如程序崩溃、线缆被拔出）：已完成的孔不会重做</translation>
     </message>
     <message>
         <source>Plan (dry run: nothing moves)</source>
-        <translation type="unfinished"></translation>
+        <translation>计划（空运行：不会有任何运动）</translation>
     </message>
     <message>
         <source>#</source>
-        <translation type="unfinished"></translation>
+        <translation>#</translation>
     </message>
     <message>
         <source>Step</source>
-        <translation type="unfinished">步进</translation>
+        <translation>步骤</translation>
     </message>
     <message>
         <source>What</source>
-        <translation type="unfinished"></translation>
+        <translation>动作</translation>
     </message>
     <message>
         <source>Where</source>
-        <translation type="unfinished"></translation>
+        <translation>位置</translation>
     </message>
     <message>
         <source>X (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>X (mm)</translation>
     </message>
     <message>
         <source>Y (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Y (mm)</translation>
     </message>
     <message>
         <source>Plunger (µL)</source>
-        <translation type="unfinished"></translation>
+        <translation>柱塞 (µL)</translation>
     </message>
     <message>
         <source>Starts at</source>
-        <translation type="unfinished"></translation>
+        <translation>开始时间</translation>
     </message>
     <message>
         <source>%1 ops over %2 wells · %3 µL dispensed, %4 µL aspirated · plunger %5 → %6 µL · about %7</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 个操作，涉及 %2 个孔 · 排液 %3 µL，吸液 %4 µL · 柱塞 %5 → %6 µL · 约 %7</translation>
     </message>
     <message>
         <source>Not runnable: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法运行：%1</translation>
     </message>
     <message>
         <source>%1 of %2 wells</source>
-        <translation type="unfinished"></translation>
+        <translation>%1/%2 个孔</translation>
     </message>
     <message>
         <source>State: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>状态：%1</translation>
     </message>
     <message>
         <source>Current: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>当前：%1</translation>
     </message>
     <message>
         <source>Current: —</source>
-        <translation type="unfinished"></translation>
+        <translation>当前：—</translation>
     </message>
     <message>
         <source>Elapsed %1 · ETA %2</source>
-        <translation type="unfinished"></translation>
+        <translation>已用时 %1 · 预计剩余 %2</translation>
     </message>
     <message>
         <source>done</source>
-        <translation type="unfinished"></translation>
+        <translation>已完成</translation>
     </message>
 </context>
 <context>
     <name>ui::ScanPlanForm</name>
     <message>
         <source>corner %1 (&quot;%2&quot;) is not &quot;x, y&quot; in mm</source>
-        <translation type="unfinished"></translation>
+        <translation>角点 %1（“%2”）不是以 mm 为单位的“x, y”</translation>
     </message>
     <message>
         <source>What the scan is called in its files</source>
-        <translation type="unfinished"></translation>
+        <translation>扫描在其文件中使用的名称</translation>
     </message>
     <message>
         <source>Name</source>
-        <translation type="unfinished"></translation>
+        <translation>名称</translation>
     </message>
     <message>
         <source>Two corners</source>
-        <translation type="unfinished"></translation>
+        <translation>两个角点</translation>
     </message>
     <message>
         <source>Centre and size</source>
-        <translation type="unfinished"></translation>
+        <translation>中心与尺寸</translation>
     </message>
     <message>
         <source>Polygon</source>
-        <translation type="unfinished"></translation>
+        <translation>多边形</translation>
     </message>
     <message>
         <source>Drag on the map to draw a rectangle; in Polygon mode click its corners and double-click to close</source>
-        <translation type="unfinished"></translation>
+        <translation>在地图上拖动以绘制矩形；在多边形模式下依次点击各角点，双击闭合</translation>
     </message>
     <message>
         <source>Region</source>
-        <translation type="unfinished"></translation>
+        <translation>区域</translation>
     </message>
     <message>
         <source> mm</source>
-        <translation type="unfinished"></translation>
+        <translation> mm</translation>
     </message>
     <message>
         <source>First corner, X</source>
-        <translation type="unfinished"></translation>
+        <translation>第一个角点 X</translation>
     </message>
     <message>
         <source>First corner, Y</source>
-        <translation type="unfinished"></translation>
+        <translation>第一个角点 Y</translation>
     </message>
     <message>
         <source>Opposite corner, X</source>
-        <translation type="unfinished"></translation>
+        <translation>对角点 X</translation>
     </message>
     <message>
         <source>Opposite corner, Y</source>
-        <translation type="unfinished"></translation>
+        <translation>对角点 Y</translation>
     </message>
     <message>
         <source>Corner X, Y</source>
-        <translation type="unfinished"></translation>
+        <translation>角点 X, Y</translation>
     </message>
     <message>
         <source>Opposite X, Y</source>
-        <translation type="unfinished"></translation>
+        <translation>对角点 X, Y</translation>
     </message>
     <message>
         <source>Centre of the region, X</source>
-        <translation type="unfinished"></translation>
+        <translation>区域中心 X</translation>
     </message>
     <message>
         <source>Centre of the region, Y</source>
-        <translation type="unfinished"></translation>
+        <translation>区域中心 Y</translation>
     </message>
     <message>
         <source>Width of the region (X)</source>
-        <translation type="unfinished"></translation>
+        <translation>区域宽度 (X)</translation>
     </message>
     <message>
         <source>Height of the region (Y)</source>
-        <translation type="unfinished"></translation>
+        <translation>区域高度 (Y)</translation>
     </message>
     <message>
         <source>Centre X, Y</source>
-        <translation type="unfinished"></translation>
+        <translation>中心 X, Y</translation>
     </message>
     <message>
         <source>Width, height</source>
-        <translation type="unfinished"></translation>
+        <translation>宽度, 高度</translation>
     </message>
     <message>
         <source>x, y; x, y; x, y …</source>
-        <translation type="unfinished"></translation>
+        <translation>x, y; x, y; x, y …</translation>
     </message>
     <message>
         <source>The outline&apos;s corners in mm, in order; click them on the map instead</source>
-        <translation type="unfinished"></translation>
+        <translation>轮廓的各角点（mm），按顺序排列；也可在地图上点击</translation>
     </message>
     <message>
         <source>Corners (x, y mm; …), or click them on the map:</source>
-        <translation type="unfinished"></translation>
+        <translation>角点（x, y mm; …），或在地图上点击：</translation>
     </message>
     <message>
         <source>Scan and region</source>
-        <translation type="unfinished"></translation>
+        <translation>扫描与区域</translation>
     </message>
     <message>
         <source>Sensor and objective</source>
-        <translation type="unfinished"></translation>
+        <translation>传感器与物镜</translation>
     </message>
     <message>
         <source>Field size</source>
-        <translation type="unfinished"></translation>
+        <translation>视场尺寸</translation>
     </message>
     <message>
         <source>Field from</source>
-        <translation type="unfinished"></translation>
+        <translation>视场来源</translation>
     </message>
     <message>
         <source> px</source>
-        <translation type="unfinished"></translation>
+        <translation> px</translation>
     </message>
     <message>
         <source>Sensor width in pixels</source>
-        <translation type="unfinished"></translation>
+        <translation>传感器宽度（像素）</translation>
     </message>
     <message>
         <source>Sensor height in pixels</source>
-        <translation type="unfinished"></translation>
+        <translation>传感器高度（像素）</translation>
     </message>
     <message>
         <source>Sensor</source>
-        <translation type="unfinished"></translation>
+        <translation>传感器</translation>
     </message>
     <message>
         <source> µm</source>
-        <translation type="unfinished"></translation>
+        <translation> µm</translation>
     </message>
     <message>
         <source>Pixel pitch on the sensor</source>
-        <translation type="unfinished"></translation>
+        <translation>传感器上的像元尺寸</translation>
     </message>
     <message>
         <source>Pixel size</source>
-        <translation type="unfinished"></translation>
+        <translation>像元尺寸</translation>
     </message>
     <message>
         <source> ×</source>
-        <translation type="unfinished"></translation>
+        <translation> ×</translation>
     </message>
     <message>
         <source>Objective times any relay lens</source>
-        <translation type="unfinished"></translation>
+        <translation>物镜倍率乘以中继镜倍率</translation>
     </message>
     <message>
         <source>Magnification</source>
-        <translation type="unfinished"></translation>
+        <translation>放大倍率</translation>
     </message>
     <message>
         <source>Field width at the sample</source>
-        <translation type="unfinished"></translation>
+        <translation>样品处的视场宽度</translation>
     </message>
     <message>
         <source>Field height at the sample</source>
-        <translation type="unfinished"></translation>
+        <translation>样品处的视场高度</translation>
     </message>
     <message>
         <source>Field</source>
-        <translation type="unfinished"></translation>
+        <translation>视场</translation>
     </message>
     <message>
         <source>One pixel at the sample: the exports give positions in pixels</source>
-        <translation type="unfinished"></translation>
+        <translation>样品处一个像素的尺寸：导出文件以像素给出位置</translation>
     </message>
     <message>
         <source>Pixel at sample</source>
-        <translation type="unfinished"></translation>
+        <translation>样品处像素尺寸</translation>
     </message>
     <message>
         <source>°</source>
-        <translation type="unfinished"></translation>
+        <translation>°</translation>
     </message>
     <message>
         <source>The image&apos;s x axis against stage +X, counter-clockwise (a small calibration angle)</source>
-        <translation type="unfinished"></translation>
+        <translation>图像 x 轴相对载物台 +X 的夹角，逆时针为正（一个小的校准角）</translation>
     </message>
     <message>
         <source>Camera rotation</source>
-        <translation type="unfinished"></translation>
+        <translation>相机旋转角</translation>
     </message>
     <message>
         <source>down the image = stage −Y</source>
-        <translation type="unfinished"></translation>
+        <translation>图像向下 = 载物台 −Y</translation>
     </message>
     <message>
         <source>down the image = stage +Y</source>
-        <translation type="unfinished"></translation>
+        <translation>图像向下 = 载物台 +Y</translation>
     </message>
     <message>
         <source>Which way image rows run on the stage; flip it if the stitched mosaic comes out mirrored</source>
-        <translation type="unfinished"></translation>
+        <translation>图像行在载物台上的走向；若拼接后的图像呈镜像，请切换此项</translation>
     </message>
     <message>
         <source>Image rows</source>
-        <translation type="unfinished"></translation>
+        <translation>图像行方向</translation>
     </message>
     <message>
         <source>Camera</source>
-        <translation type="unfinished"></translation>
+        <translation>相机</translation>
     </message>
     <message>
         <source> %</source>
-        <translation type="unfinished"> %</translation>
+        <translation> %</translation>
     </message>
     <message>
         <source>Share of the field neighbours overlap in X (0–90 %)</source>
-        <translation type="unfinished"></translation>
+        <translation>相邻视场在 X 方向的重叠比例（0–90 %）</translation>
     </message>
     <message>
         <source>Share of the field neighbours overlap in Y (0–90 %)</source>
-        <translation type="unfinished"></translation>
+        <translation>相邻视场在 Y 方向的重叠比例（0–90 %）</translation>
     </message>
     <message>
         <source>Overlap X, Y</source>
-        <translation type="unfinished"></translation>
+        <translation>重叠 X, Y</translation>
     </message>
     <message>
         <source>Snake by rows</source>
-        <translation type="unfinished"></translation>
+        <translation>按行蛇形</translation>
     </message>
     <message>
         <source>Snake by columns</source>
-        <translation type="unfinished"></translation>
+        <translation>按列蛇形</translation>
     </message>
     <message>
         <source>Row by row</source>
-        <translation type="unfinished"></translation>
+        <translation>逐行</translation>
     </message>
     <message>
         <source>Column by column</source>
-        <translation type="unfinished"></translation>
+        <translation>逐列</translation>
     </message>
     <message>
         <source>Order</source>
-        <translation type="unfinished"></translation>
+        <translation>顺序</translation>
     </message>
     <message>
         <source>Top left</source>
-        <translation type="unfinished"></translation>
+        <translation>左上</translation>
     </message>
     <message>
         <source>Top right</source>
-        <translation type="unfinished"></translation>
+        <translation>右上</translation>
     </message>
     <message>
         <source>Bottom left</source>
-        <translation type="unfinished"></translation>
+        <translation>左下</translation>
     </message>
     <message>
         <source>Bottom right</source>
-        <translation type="unfinished"></translation>
+        <translation>右下</translation>
     </message>
     <message>
         <source>Start corner</source>
-        <translation type="unfinished"></translation>
+        <translation>起始角点</translation>
     </message>
     <message>
         <source>Approach every tile from the same side</source>
-        <translation type="unfinished"></translation>
+        <translation>每个图块都从同一侧趋近</translation>
     </message>
     <message>
         <source>Takes up screw backlash the same way at every tile: a move the other way first goes past the tile by the overtravel</source>
-        <translation type="unfinished"></translation>
+        <translation>每个图块都以相同方向消除丝杠反向间隙：反方向的移动会先越过图块一个超程距离</translation>
     </message>
     <message>
         <source>How far before the tile the approach starts</source>
-        <translation type="unfinished"></translation>
+        <translation>趋近从图块之前多远处开始</translation>
     </message>
     <message>
         <source>Overtravel</source>
-        <translation type="unfinished"></translation>
+        <translation>超程</translation>
     </message>
     <message>
         <source>Tiles</source>
-        <translation type="unfinished"></translation>
+        <translation>图块</translation>
     </message>
     <message>
         <source> mm/s</source>
-        <translation type="unfinished"> mm/s</translation>
+        <translation> mm/s</translation>
     </message>
     <message>
         <source>Path speed of the moves between tiles</source>
-        <translation type="unfinished"></translation>
+        <translation>图块之间移动的路径速度</translation>
     </message>
     <message>
         <source>Speed</source>
-        <translation type="unfinished"></translation>
+        <translation>速度</translation>
     </message>
     <message>
         <source> s</source>
-        <translation type="unfinished"></translation>
+        <translation> s</translation>
     </message>
     <message>
         <source>Expected settling per tile, for the time estimate</source>
-        <translation type="unfinished"></translation>
+        <translation>每个图块预计的稳定时间，用于估算用时</translation>
     </message>
     <message>
         <source>Settle (estimate)</source>
-        <translation type="unfinished"></translation>
+        <translation>稳定时间（估计）</translation>
     </message>
     <message>
         <source>The stage dwells this long at each tile</source>
-        <translation type="unfinished"></translation>
+        <translation>载物台在每个图块停留的时间</translation>
     </message>
     <message>
         <source>Exposure</source>
-        <translation type="unfinished"></translation>
+        <translation>曝光</translation>
     </message>
     <message>
         <source>A tile is taken once the grating reads this close to its target</source>
-        <translation type="unfinished"></translation>
+        <translation>光栅尺读数与目标位置相差在此范围内即采集图块</translation>
     </message>
     <message>
         <source>Tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>容差</translation>
     </message>
     <message>
         <source>A tile not settled by then stops the run with the reason</source>
-        <translation type="unfinished"></translation>
+        <translation>到时仍未稳定的图块会使扫描停止，并给出原因</translation>
     </message>
     <message>
         <source>Settle timeout</source>
-        <translation type="unfinished"></translation>
+        <translation>稳定超时</translation>
     </message>
     <message>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>运行</translation>
     </message>
     <message>
         <source>{i} the tile&apos;s number, {row} and {col} its place; {i:03} pads to three digits</source>
-        <translation type="unfinished"></translation>
+        <translation>{i} 为图块序号，{row} 和 {col} 为其行列位置；{i:03} 补零到三位</translation>
     </message>
     <message>
         <source>File names</source>
-        <translation type="unfinished"></translation>
+        <translation>文件名</translation>
     </message>
     <message>
         <source>First number</source>
-        <translation type="unfinished"></translation>
+        <translation>起始序号</translation>
     </message>
     <message>
         <source>The XY stage&apos;s device label in Micro-Manager (for the .pos position list)</source>
-        <translation type="unfinished"></translation>
+        <translation>XY 载物台在 Micro-Manager 中的设备名（用于 .pos 位置列表）</translation>
     </message>
     <message>
         <source>Micro-Manager stage</source>
-        <translation type="unfinished"></translation>
+        <translation>Micro-Manager 载物台</translation>
     </message>
     <message>
         <source>Export</source>
-        <translation type="unfinished"></translation>
+        <translation>导出</translation>
     </message>
     <message>
         <source>Field %1 × %2 mm, %3 µm per pixel at the sample</source>
-        <translation type="unfinished"></translation>
+        <translation>视场 %1 × %2 mm，样品处每像素 %3 µm</translation>
     </message>
     <message>
         <source>Use the stage&apos;s own compensation</source>
-        <translation type="unfinished"></translation>
+        <translation>使用载物台自身的补偿</translation>
     </message>
     <message>
         <source>Runs only when the stage has its error compensation enabled on X and Y: the stage moves each target so the work point lands on it. Measure and upload it on the Calibration screen.</source>
-        <translation type="unfinished"></translation>
+        <translation>仅当载物台的 X 和 Y 都已启用误差补偿时才能运行：载物台会修正每个目标位置，使工作点准确落在目标上。请在“校准”界面测量并上传补偿。</translation>
     </message>
 </context>
 <context>
     <name>ui::ScanScreen</name>
     <message>
         <source>Whole stage</source>
-        <translation type="unfinished"></translation>
+        <translation>整个载物台</translation>
     </message>
     <message>
         <source>Show the whole travel</source>
-        <translation type="unfinished"></translation>
+        <translation>显示整个行程</translation>
     </message>
     <message>
         <source>Zoom to scan</source>
-        <translation type="unfinished"></translation>
+        <translation>缩放到扫描区</translation>
     </message>
     <message>
         <source>Show the scan&apos;s tiles</source>
-        <translation type="unfinished"></translation>
+        <translation>显示扫描的图块</translation>
     </message>
     <message>
         <source>X %1  Y %2 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>X %1  Y %2 mm</translation>
     </message>
     <message>
         <source>Scan finished: %1 tiles taken. Exports written to %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>扫描完成：已采集 %1 个图块。导出文件已写入 %2。</translation>
     </message>
     <message>
         <source>New</source>
-        <translation type="unfinished"></translation>
+        <translation>新建</translation>
     </message>
     <message>
         <source>Start from the default plan</source>
-        <translation type="unfinished"></translation>
+        <translation>从默认计划开始</translation>
     </message>
     <message>
         <source>Open plan…</source>
-        <translation type="unfinished"></translation>
+        <translation>打开计划…</translation>
     </message>
     <message>
         <source>Open a scan plan file (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>打开扫描计划文件（%1）</translation>
     </message>
     <message>
         <source>Save plan…</source>
-        <translation type="unfinished"></translation>
+        <translation>保存计划…</translation>
     </message>
     <message>
         <source>Save this plan as a file (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>将此计划保存为文件（%1）</translation>
     </message>
     <message>
         <source>Open scan plan</source>
-        <translation type="unfinished"></translation>
+        <translation>打开扫描计划</translation>
     </message>
     <message>
         <source>Scan plans (*.scan.json *.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>扫描计划 (*.scan.json *.json)</translation>
     </message>
     <message>
         <source>Save scan plan</source>
-        <translation type="unfinished"></translation>
+        <translation>保存扫描计划</translation>
     </message>
     <message>
         <source>Scan plans (*.scan.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>扫描计划 (*.scan.json)</translation>
     </message>
     <message>
         <source>The run log and the exports go here; a run stopped part-way continues from its log</source>
-        <translation type="unfinished"></translation>
+        <translation>运行日志和导出文件保存在此处；中途停止的扫描可从其日志继续</translation>
     </message>
     <message>
         <source>Folder for the run log and exports</source>
-        <translation type="unfinished"></translation>
+        <translation>存放运行日志和导出文件的文件夹</translation>
     </message>
     <message>
         <source>Output</source>
-        <translation type="unfinished"></translation>
+        <translation>输出</translation>
     </message>
     <message>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>运行</translation>
     </message>
     <message>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>暂停</translation>
     </message>
     <message>
         <source>Stop after the tile in progress (Ctrl+P)</source>
-        <translation type="unfinished"></translation>
+        <translation>完成当前图块后停止（Ctrl+P）</translation>
     </message>
     <message>
         <source>Abort</source>
-        <translation type="unfinished"></translation>
+        <translation>中止</translation>
     </message>
     <message>
         <source>Stop the stage now; the tiles taken are kept and Resume continues (Ctrl+Shift+A)</source>
-        <translation type="unfinished"></translation>
+        <translation>立即停止载物台；已采集的图块会保留，按“继续”可接着扫描（Ctrl+Shift+A）</translation>
     </message>
     <message>
         <source>Export</source>
-        <translation type="unfinished"></translation>
+        <translation>导出</translation>
     </message>
     <message>
         <source>Write TileConfiguration.txt (Fiji), positions.pos (Micro-Manager) and scan.csv to the output folder</source>
-        <translation type="unfinished"></translation>
+        <translation>将 TileConfiguration.txt（Fiji）、positions.pos（Micro-Manager）和 scan.csv 写入输出文件夹</translation>
     </message>
     <message>
         <source>%v of %m tiles</source>
-        <translation type="unfinished"></translation>
+        <translation>%v/%m 个图块</translation>
     </message>
     <message>
         <source>Cannot open the plan:
 %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法打开计划：
+%1</translation>
     </message>
     <message>
         <source>Opened %1: %2 tiles.</source>
-        <translation type="unfinished"></translation>
+        <translation>已打开 %1：%2 个图块。</translation>
     </message>
     <message>
         <source>Saved the plan to %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>计划已保存到 %1。</translation>
     </message>
     <message>
         <source>Polygon: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>多边形：%1</translation>
     </message>
     <message>
         <source>%1 h %2 min</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 h %2 min</translation>
     </message>
     <message>
         <source>%1 min %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 min %2 s</translation>
     </message>
     <message>
         <source>%1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 s</translation>
     </message>
     <message>
         <source>No tiles: fix the plan below</source>
-        <translation type="unfinished"></translation>
+        <translation>没有图块：请修正下方的计划</translation>
     </message>
     <message>
         <source>%1 × %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 × %2</translation>
     </message>
     <message>
         <source>%1 of %2 × %3 in the outline</source>
-        <translation type="unfinished"></translation>
+        <translation>%2 × %3 中有 %1 个位于轮廓内</translation>
     </message>
     <message>
         <source>%1 tiles (%2) · step %3 × %4 mm · about %5 (moves %6, settle %7, exposure %8) · travel %9 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 个图块（%2）· 步距 %3 × %4 mm · 约 %5（移动 %6，稳定 %7，曝光 %8）· 行程 %9 mm</translation>
     </message>
     <message>
         <source>Resume</source>
-        <translation type="unfinished"></translation>
+        <translation>继续</translation>
     </message>
     <message>
         <source>Run the scan on the stage, or continue it at the next tile (Ctrl+R)</source>
-        <translation type="unfinished"></translation>
+        <translation>在载物台上运行扫描，或从下一个图块继续（Ctrl+R）</translation>
     </message>
     <message>
         <source>The stage is not connected.</source>
-        <translation type="unfinished">载物台未连接。</translation>
+        <translation>载物台未连接。</translation>
     </message>
     <message>
         <source>Ready. The run log and exports go to the output folder.</source>
-        <translation type="unfinished"></translation>
+        <translation>就绪。运行日志和导出文件将写入输出文件夹。</translation>
     </message>
     <message>
         <source>%1 · tile %2 of %3 · about %4 left</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 · 第 %2 个图块（共 %3 个）· 约剩 %4</translation>
     </message>
     <message>
         <source>%1 · %2 of %3 tiles taken</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 · 已采集 %2/%3 个图块</translation>
     </message>
     <message>
         <source>The plan has problems: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>该计划有问题：%1</translation>
     </message>
     <message>
         <source>Choose an output folder for the run log and the exports.</source>
-        <translation type="unfinished"></translation>
+        <translation>请为运行日志和导出文件选择一个输出文件夹。</translation>
     </message>
     <message>
         <source>%1
 
 Start this scan anew in that folder? The old run log is kept under another name.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1
+
+在该文件夹中重新开始此扫描？旧的运行日志将以另一个名称保留。</translation>
     </message>
     <message>
         <source>Every tile of this scan is already taken in %1. Take them all again? The old run log is kept under another name.</source>
-        <translation type="unfinished"></translation>
+        <translation>此扫描的所有图块均已在 %1 中采集。全部重新采集？旧的运行日志将以另一个名称保留。</translation>
     </message>
     <message>
         <source>The scan cannot start: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法开始扫描：%1</translation>
     </message>
     <message>
         <source>Continue the scan at tile %1 of %2? About %3 are left.</source>
-        <translation type="unfinished"></translation>
+        <translation>从第 %1 个图块（共 %2 个）继续扫描？约剩 %3。</translation>
     </message>
     <message>
         <source>Run %1 tiles on the stage? It takes about %2, starting with a move to (%3, %4) mm.</source>
-        <translation type="unfinished"></translation>
+        <translation>在载物台上运行 %1 个图块？约需 %2，首先移动到（%3, %4）mm。</translation>
     </message>
     <message>
         <source>Continuing at tile %1 of %2 (the run log has the first %3).</source>
-        <translation type="unfinished"></translation>
+        <translation>从第 %1 个图块（共 %2 个）继续（运行日志中已有前 %3 个）。</translation>
     </message>
     <message>
         <source>The plan has problems: nothing to export.</source>
-        <translation type="unfinished"></translation>
+        <translation>该计划有问题：没有可导出的内容。</translation>
     </message>
     <message>
         <source>Export failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>导出失败：%1</translation>
     </message>
     <message>
         <source>Exported %1 tiles with the positions measured so far to %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>已将 %1 个图块及目前实测的位置导出到 %2。</translation>
     </message>
     <message>
         <source>Exported %1 planned tile positions to %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>已将 %1 个计划图块位置导出到 %2。</translation>
     </message>
 </context>
 <context>
     <name>ui::ScanStageMap</name>
     <message>
         <source>Stage map</source>
-        <translation type="unfinished"></translation>
+        <translation>载物台地图</translation>
     </message>
     <message>
         <source>%1 mm</source>
-        <translation type="unfinished">%1 mm</translation>
+        <translation>%1 mm</translation>
     </message>
     <message>
         <source>X →   Y ↑</source>
-        <translation type="unfinished"></translation>
+        <translation>X →   Y ↑</translation>
     </message>
 </context>
 <context>
     <name>ui::StepForm</name>
     <message>
         <source>A1:H1, row B, column 3, all, or a list: A1, C4</source>
-        <translation type="unfinished"></translation>
+        <translation>A1:H1、row B、column 3、all，或列表：A1, C4</translation>
     </message>
     <message>
         <source>Wells: a well (A1), a range (A1:H1), &quot;row B&quot;, &quot;column 3&quot;, &quot;all&quot;, or several separated by commas.
 Select wells on the plate map and press &quot;Use selection&quot; to fill this in.</source>
-        <translation type="unfinished"></translation>
+        <translation>孔：单个孔（A1）、范围（A1:H1）、“row B”、“column 3”、“all”，或用逗号分隔的多项。
+也可在孔板图上选择孔，然后按“用于此步骤”自动填入。</translation>
     </message>
     <message>
         <source> µL</source>
-        <translation type="unfinished"></translation>
+        <translation> µL</translation>
     </message>
     <message>
         <source>Per well (aspirate, dispense), per stroke (mix, wash), or the air gap</source>
-        <translation type="unfinished"></translation>
+        <translation>每孔（吸液、排液）、每次行程（混匀、清洗）或空气间隔的体积</translation>
     </message>
     <message>
         <source>set</source>
-        <translation type="unfinished"></translation>
+        <translation>指定</translation>
     </message>
     <message>
         <source> µL/s</source>
-        <translation type="unfinished"></translation>
+        <translation> µL/s</translation>
     </message>
     <message>
         <source> s</source>
-        <translation type="unfinished"></translation>
+        <translation> s</translation>
     </message>
     <message>
         <source> mm</source>
-        <translation type="unfinished"></translation>
+        <translation> mm</translation>
     </message>
     <message>
         <source>Touch-off: how far from the well&apos;s centre toward its +x wall the tip goes</source>
-        <translation type="unfinished"></translation>
+        <translation>贴壁：加样针从孔中心向孔的 +x 壁移动的距离</translation>
     </message>
     <message>
         <source>well</source>
-        <translation type="unfinished"></translation>
+        <translation>孔</translation>
     </message>
     <message>
         <source>plate</source>
-        <translation type="unfinished"></translation>
+        <translation>孔板</translation>
     </message>
     <message>
         <source>or station</source>
-        <translation type="unfinished"></translation>
+        <translation>或工位</translation>
     </message>
     <message>
         <source>Refill from here before each round: a transfer bigger than the syringe runs in several rounds</source>
-        <translation type="unfinished"></translation>
+        <translation>每轮之前从此处补液：超过注射器容积的转移分多轮进行</translation>
     </message>
     <message>
         <source>Type</source>
-        <translation type="unfinished"></translation>
+        <translation>类型</translation>
     </message>
     <message>
         <source>Plate</source>
-        <translation type="unfinished"></translation>
+        <translation>孔板</translation>
     </message>
     <message>
         <source>Wells</source>
-        <translation type="unfinished"></translation>
+        <translation>孔</translation>
     </message>
     <message>
         <source>Station</source>
-        <translation type="unfinished"></translation>
+        <translation>工位</translation>
     </message>
     <message>
         <source>Volume</source>
-        <translation type="unfinished"></translation>
+        <translation>体积</translation>
     </message>
     <message>
         <source>Pump speed</source>
-        <translation type="unfinished"></translation>
+        <translation>泵速</translation>
     </message>
     <message>
         <source>Cycles</source>
-        <translation type="unfinished"></translation>
+        <translation>次数</translation>
     </message>
     <message>
         <source>Wait</source>
-        <translation type="unfinished"></translation>
+        <translation>等待</translation>
     </message>
     <message>
         <source>Touch-off</source>
-        <translation type="unfinished"></translation>
+        <translation>贴壁</translation>
     </message>
     <message>
         <source>Source</source>
-        <translation type="unfinished"></translation>
+        <translation>来源</translation>
     </message>
     <message>
         <source>Note</source>
-        <translation type="unfinished"></translation>
+        <translation>备注</translation>
     </message>
     <message>
         <source>(the only plate)</source>
-        <translation type="unfinished"></translation>
+        <translation>（唯一的孔板）</translation>
     </message>
     <message>
         <source>(none)</source>
-        <translation type="unfinished"></translation>
+        <translation>（无）</translation>
     </message>
     <message>
         <source>Touch-off after each well</source>
-        <translation type="unfinished"></translation>
+        <translation>每个孔后贴壁</translation>
     </message>
 </context>
 <context>
     <name>ui::StepTestPanel</name>
     <message>
         <source>Step</source>
-        <translation type="unfinished">步进</translation>
+        <translation>阶跃</translation>
     </message>
     <message>
         <source>positive</source>
-        <translation type="unfinished"></translation>
+        <translation>正向</translation>
     </message>
     <message>
         <source>negative</source>
-        <translation type="unfinished"></translation>
+        <translation>负向</translation>
     </message>
     <message>
         <source>Run step test</source>
-        <translation type="unfinished"></translation>
+        <translation>运行阶跃测试</translation>
     </message>
     <message>
         <source>The target steps by this much under the gains in force; the response is added to the plot</source>
-        <translation type="unfinished"></translation>
+        <translation>目标位置在当前生效的增益下按此幅值阶跃；响应将添加到曲线中</translation>
     </message>
     <message>
         <source>Clear</source>
-        <translation type="unfinished"></translation>
+        <translation>清除</translation>
     </message>
     <message>
         <source> µm</source>
-        <translation type="unfinished"></translation>
+        <translation> µm</translation>
     </message>
     <message>
         <source>µm</source>
-        <translation type="unfinished"></translation>
+        <translation>µm</translation>
     </message>
     <message>
         <source>units</source>
-        <translation type="unfinished"></translation>
+        <translation>单位</translation>
     </message>
     <message>
         <source>Rise 10–90 % [ms]</source>
-        <translation type="unfinished"></translation>
+        <translation>上升时间 10–90 % [ms]</translation>
     </message>
     <message>
         <source>Overshoot [%]</source>
-        <translation type="unfinished"></translation>
+        <translation>超调量 [%]</translation>
     </message>
     <message>
         <source>Settling 2 % [ms]</source>
-        <translation type="unfinished"></translation>
+        <translation>调节时间 2 % [ms]</translation>
     </message>
     <message>
         <source>Steady error [%1]</source>
-        <translation type="unfinished"></translation>
+        <translation>稳态误差 [%1]</translation>
     </message>
     <message>
         <source>IAE [%1·s]</source>
-        <translation type="unfinished"></translation>
+        <translation>IAE [%1·s]</translation>
     </message>
     <message>
         <source>ISE [(%1)²·s]</source>
-        <translation type="unfinished"></translation>
+        <translation>ISE [(%1)²·s]</translation>
     </message>
     <message>
         <source>Peak output [%1]</source>
-        <translation type="unfinished"></translation>
+        <translation>峰值输出 [%1]</translation>
     </message>
     <message>
         <source>Inside ±5 µm from [ms]</source>
-        <translation type="unfinished"></translation>
+        <translation>进入 ±5 µm 的时间 [ms]</translation>
     </message>
     <message>
         <source>Ended</source>
-        <translation type="unfinished"></translation>
+        <translation>结束原因</translation>
     </message>
     <message>
         <source>never</source>
-        <translation type="unfinished"></translation>
+        <translation>从未</translation>
     </message>
 </context>
 <context>
@@ -7204,120 +7295,121 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     <name>ui::TuningScreen</name>
     <message>
         <source>Tune</source>
-        <translation type="unfinished"></translation>
+        <translation>整定</translation>
     </message>
     <message>
         <source>fopdt:K=..,tau=..,L=.. or lag:K=..,tau=..,n=.. (times in s; Ts=.. sets the loop period, 10 kHz unless given)</source>
-        <translation type="unfinished"></translation>
+        <translation>fopdt:K=..,tau=..,L=.. 或 lag:K=..,tau=..,n=..（时间单位为 s；Ts=.. 设定控制周期，未给出时为 10 kHz）</translation>
     </message>
     <message>
         <source>Open results…</source>
-        <translation type="unfinished"></translation>
+        <translation>打开结果…</translation>
     </message>
     <message>
         <source>Save results…</source>
-        <translation type="unfinished"></translation>
+        <translation>保存结果…</translation>
     </message>
     <message>
         <source>Step test</source>
-        <translation type="unfinished"></translation>
+        <translation>阶跃测试</translation>
     </message>
     <message>
         <source>Ziegler–Nichols assistant</source>
-        <translation type="unfinished"></translation>
+        <translation>Ziegler–Nichols 整定助手</translation>
     </message>
     <message>
         <source>idle</source>
-        <translation type="unfinished">空闲</translation>
+        <translation>空闲</translation>
     </message>
     <message>
         <source>Abort</source>
-        <translation type="unfinished"></translation>
+        <translation>中止</translation>
     </message>
     <message>
         <source>Resume</source>
-        <translation type="unfinished"></translation>
+        <translation>继续</translation>
     </message>
     <message>
         <source>Run the interrupted experiment again once the link is back</source>
-        <translation type="unfinished"></translation>
+        <translation>连接恢复后重新运行被中断的试验</translation>
     </message>
     <message>
         <source>saved as power-up gains</source>
-        <translation type="unfinished"></translation>
+        <translation>已保存为上电增益</translation>
     </message>
     <message>
         <source>Apply these gains to %1?
 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>将这些增益应用到%1？
+%2</translation>
     </message>
     <message>
         <source>live at %1 Hz%2; the analysis reads the device&apos;s capture at the loop rate</source>
-        <translation type="unfinished"></translation>
+        <translation>实时 %1 Hz%2；分析读取设备以控制频率采集的数据</translation>
     </message>
     <message>
         <source>no target</source>
-        <translation type="unfinished"></translation>
+        <translation>无对象</translation>
     </message>
     <message>
         <source>model defaults</source>
-        <translation type="unfinished"></translation>
+        <translation>模型默认值</translation>
     </message>
     <message>
         <source>This plant cannot be tuned by Ziegler–Nichols: %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>该对象无法用 Ziegler–Nichols 法整定：%1。</translation>
     </message>
     <message>
         <source>reading the gains of %1…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在读取%1的增益…</translation>
     </message>
     <message>
         <source>read from the device</source>
-        <translation type="unfinished"></translation>
+        <translation>从设备读取</translation>
     </message>
     <message>
         <source>%1: gains applied (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：已应用增益（%2）</translation>
     </message>
     <message>
         <source>running…</source>
-        <translation type="unfinished"></translation>
+        <translation>运行中…</translation>
     </message>
     <message>
         <source>cannot resume yet: the link must be back (connect the instrument) and the same target chosen</source>
-        <translation type="unfinished"></translation>
+        <translation>暂不能继续：须恢复连接（连接仪器）并选择同一对象</translation>
     </message>
     <message>
         <source>live: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>实时：%1</translation>
     </message>
     <message>
         <source>Save tuning results</source>
-        <translation type="unfinished"></translation>
+        <translation>保存整定结果</translation>
     </message>
     <message>
         <source>Tuning results (*.tuning.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>整定结果 (*.tuning.json)</translation>
     </message>
     <message>
         <source>tuning results saved to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>整定结果已保存到 %1</translation>
     </message>
     <message>
         <source>Open tuning results</source>
-        <translation type="unfinished"></translation>
+        <translation>打开整定结果</translation>
     </message>
     <message>
         <source>results of %1 loaded</source>
-        <translation type="unfinished"></translation>
+        <translation>已载入%1的结果</translation>
     </message>
     <message>
         <source>results of %1 loaded; the rules&apos; gains are for its loop period (%2 ms), applied to %3 as they are</source>
-        <translation type="unfinished"></translation>
+        <translation>已载入%1的结果；各规则的增益对应其控制周期（%2 ms），按原值应用到%3</translation>
     </message>
     <message>
         <source>Model plant</source>
-        <translation type="unfinished"></translation>
+        <translation>模型对象</translation>
     </message>
 </context>
 <context>
@@ -7359,774 +7451,774 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     <name>ui::ZnPanel</name>
     <message>
         <source>Ziegler–Nichols P</source>
-        <translation type="unfinished">Ziegler–Nichols P</translation>
+        <translation>Ziegler–Nichols P</translation>
     </message>
     <message>
         <source>Ziegler–Nichols PI</source>
-        <translation type="unfinished">Ziegler–Nichols PI</translation>
+        <translation>Ziegler–Nichols PI</translation>
     </message>
     <message>
         <source>Ziegler–Nichols PID</source>
-        <translation type="unfinished">Ziegler–Nichols PID</translation>
+        <translation>Ziegler–Nichols PID</translation>
     </message>
     <message>
         <source>Tyreus–Luyben PI</source>
-        <translation type="unfinished">Tyreus–Luyben PI</translation>
+        <translation>Tyreus–Luyben PI</translation>
     </message>
     <message>
         <source>Tyreus–Luyben PID</source>
-        <translation type="unfinished">Tyreus–Luyben PID</translation>
+        <translation>Tyreus–Luyben PID</translation>
     </message>
     <message>
         <source>Pessen integral rule PID</source>
-        <translation type="unfinished">Pessen 积分法则 PID</translation>
+        <translation>Pessen 积分法则 PID</translation>
     </message>
     <message>
         <source>Z-N &quot;some overshoot&quot; PID</source>
-        <translation type="unfinished">Z-N“少量超调” PID</translation>
+        <translation>Z-N“少量超调” PID</translation>
     </message>
     <message>
         <source>Z-N &quot;no overshoot&quot; PID</source>
-        <translation type="unfinished">Z-N“无超调” PID</translation>
+        <translation>Z-N“无超调” PID</translation>
     </message>
     <message>
         <source>seed 002 Table 1 (Ziegler &amp; Nichols 1942)</source>
-        <translation type="unfinished"></translation>
+        <translation>文献 002 表 1（Ziegler &amp; Nichols 1942）</translation>
     </message>
     <message>
         <source>Tyreus &amp; Luyben 1992, Ind. Eng. Chem. Res. 31:2625</source>
-        <translation type="unfinished"></translation>
+        <translation>Tyreus &amp; Luyben 1992, Ind. Eng. Chem. Res. 31:2625</translation>
     </message>
     <message>
         <source>Pessen 1994, J. Dyn. Syst. Meas. Control 116:553</source>
-        <translation type="unfinished"></translation>
+        <translation>Pessen 1994, J. Dyn. Syst. Meas. Control 116:553</translation>
     </message>
     <message>
         <source>Z-N variant as tabulated by Microstar Laboratories</source>
-        <translation type="unfinished"></translation>
+        <translation>Microstar Laboratories 列表中的 Z-N 变体</translation>
     </message>
     <message>
         <source>%1 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ms</translation>
     </message>
     <message>
         <source>%1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 s</translation>
     </message>
     <message>
         <source>Ultimate gain (P only, Kp raised)</source>
-        <translation type="unfinished"></translation>
+        <translation>临界增益法（纯比例，逐步增大 Kp）</translation>
     </message>
     <message>
         <source>Relay (Åström–Hägglund)</source>
-        <translation type="unfinished"></translation>
+        <translation>继电法（Åström–Hägglund）</translation>
     </message>
     <message>
         <source>Method</source>
-        <translation type="unfinished"></translation>
+        <translation>方法</translation>
     </message>
     <message>
         <source> s</source>
-        <translation type="unfinished"></translation>
+        <translation> s</translation>
     </message>
     <message>
         <source>Max excursion</source>
-        <translation type="unfinished"></translation>
+        <translation>最大偏移</translation>
     </message>
     <message>
         <source>Max following error</source>
-        <translation type="unfinished"></translation>
+        <translation>最大跟随误差</translation>
     </message>
     <message>
         <source>Max duration</source>
-        <translation type="unfinished"></translation>
+        <translation>最长时间</translation>
     </message>
     <message>
         <source>Trial step</source>
-        <translation type="unfinished"></translation>
+        <translation>试验阶跃</translation>
     </message>
     <message>
         <source>First Kp</source>
-        <translation type="unfinished"></translation>
+        <translation>初始 Kp</translation>
     </message>
     <message>
         <source>Largest Kp</source>
-        <translation type="unfinished"></translation>
+        <translation>最大 Kp</translation>
     </message>
     <message>
         <source>Refine to the phase crossover</source>
-        <translation type="unfinished"></translation>
+        <translation>细化到相位穿越点</translation>
     </message>
     <message>
         <source>Short forced runs measure the loop at chosen frequencies until two points bracket −180°; without it only the classic describing-function estimate is given</source>
-        <translation type="unfinished"></translation>
+        <translation>在选定频率下做若干次短时强迫振荡试验测量回路，直到有两个点夹住 −180°；不勾选则只给出经典描述函数法的估计值</translation>
     </message>
     <message>
         <source>Amplitude d</source>
-        <translation type="unfinished"></translation>
+        <translation>继电幅值 d</translation>
     </message>
     <message>
         <source>Hysteresis ε</source>
-        <translation type="unfinished"></translation>
+        <translation>滞环 ε</translation>
     </message>
     <message>
         <source>no verification</source>
-        <translation type="unfinished"></translation>
+        <translation>不验证</translation>
     </message>
     <message>
         <source>Verify with</source>
-        <translation type="unfinished"></translation>
+        <translation>验证规则</translation>
     </message>
     <message>
         <source>Start</source>
-        <translation type="unfinished"></translation>
+        <translation>开始</translation>
     </message>
     <message>
         <source>Abort</source>
-        <translation type="unfinished"></translation>
+        <translation>中止</translation>
     </message>
     <message>
         <source>Trials run inside 60 % of the envelope. Trial gains live only inside a test: the gains in force change when you press “Use these”.</source>
-        <translation type="unfinished"></translation>
+        <translation>试验在安全包络的 60 % 以内进行。试验增益只在测试中使用：按下“采用”后，生效的增益才会改变。</translation>
     </message>
     <message>
         <source>Rule</source>
-        <translation type="unfinished"></translation>
+        <translation>规则</translation>
     </message>
     <message>
         <source>Kp</source>
-        <translation type="unfinished"></translation>
+        <translation>Kp</translation>
     </message>
     <message>
         <source>Ki [1/s]</source>
-        <translation type="unfinished"></translation>
+        <translation>Ki [1/s]</translation>
     </message>
     <message>
         <source>Kd [s]</source>
-        <translation type="unfinished"></translation>
+        <translation>Kd [s]</translation>
     </message>
     <message>
         <source>kp</source>
-        <translation type="unfinished"></translation>
+        <translation>kp</translation>
     </message>
     <message>
         <source>ki / period</source>
-        <translation type="unfinished"></translation>
+        <translation>ki / 周期</translation>
     </message>
     <message>
         <source>kd / period</source>
-        <translation type="unfinished"></translation>
+        <translation>kd / 周期</translation>
     </message>
     <message>
         <source>Source</source>
-        <translation type="unfinished"></translation>
+        <translation>来源</translation>
     </message>
     <message>
         <source> µm</source>
-        <translation type="unfinished"></translation>
+        <translation> µm</translation>
     </message>
     <message>
         <source>Ku and Tu appear here once a method has run.</source>
-        <translation type="unfinished"></translation>
+        <translation>运行一种方法后，Ku 和 Tu 将显示在此处。</translation>
     </message>
     <message>
         <source>&lt;b&gt;Ku = %1, Tu = %2&lt;/b&gt; (%3 on %4, %5 runs)</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;Ku = %1，Tu = %2&lt;/b&gt;（%4 上的%3，%5 次试验）</translation>
     </message>
     <message>
         <source>relay</source>
-        <translation type="unfinished"></translation>
+        <translation>继电法</translation>
     </message>
     <message>
         <source>ultimate gain</source>
-        <translation type="unfinished"></translation>
+        <translation>临界增益法</translation>
     </message>
     <message>
         <source>&lt;br&gt;Classic describing function: Ku = %1, Tu = %2 — %3</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;br&gt;经典描述函数法：Ku = %1，Tu = %2 — %3</translation>
     </message>
     <message>
         <source>refined above from the measured phase crossover</source>
-        <translation type="unfinished"></translation>
+        <translation>已根据实测相位穿越点在上方细化</translation>
     </message>
     <message>
         <source>not refined</source>
-        <translation type="unfinished"></translation>
+        <translation>未细化</translation>
     </message>
     <message>
         <source>&lt;br&gt;Verification with %1: overshoot %2 %, %3</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;br&gt;用 %1 验证：超调量 %2 %，%3</translation>
     </message>
     <message>
         <source>, inside seed 002&apos;s ±5 µm from %1 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>，在 %1 ms 后进入文献 002 的 ±5 µm 范围</translation>
     </message>
     <message>
         <source>, &lt;b&gt;never inside ±5 µm&lt;/b&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>，&lt;b&gt;从未进入 ±5 µm 范围&lt;/b&gt;</translation>
     </message>
     <message>
         <source>Use these</source>
-        <translation type="unfinished"></translation>
+        <translation>采用</translation>
     </message>
     <message>
         <source>Z-N %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Z-N %1：%2</translation>
     </message>
 </context>
 <context>
     <name>words::AccuracyBenchWords</name>
     <message>
         <source>must be a number (not NaN or infinite)</source>
-        <translation type="unfinished">必须是数字（不能是 NaN 或无穷大）</translation>
+        <translation>必须是数字（不能是 NaN 或无穷大）</translation>
     </message>
     <message>
         <source>is %1, below the least allowed %2</source>
-        <translation type="unfinished">为 %1，低于允许的最小值 %2</translation>
+        <translation>为 %1，低于允许的最小值 %2</translation>
     </message>
     <message>
         <source>is %1, above the most allowed %2</source>
-        <translation type="unfinished">为 %1，高于允许的最大值 %2</translation>
+        <translation>为 %1，高于允许的最大值 %2</translation>
     </message>
     <message>
         <source>must be above 0 (is %1)</source>
-        <translation type="unfinished">必须大于 0（当前为 %1）</translation>
+        <translation>必须大于 0（当前为 %1）</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not an axis name: one capital letter, such as X</source>
-        <translation type="unfinished">“%1”不是轴名：轴名是一个大写字母，例如 X</translation>
+        <translation>“%1”不是轴名：轴名是一个大写字母，例如 X</translation>
     </message>
     <message>
         <source>no targets: give a list of targets or a start, end and count</source>
-        <translation type="unfinished">没有目标位置：请给出目标位置列表，或起点、终点和个数</translation>
+        <translation>没有目标位置：请给出目标位置列表，或起点、终点和个数</translation>
     </message>
     <message>
         <source>give either a list of targets or a grid, not both</source>
-        <translation type="unfinished">请给出目标位置列表或网格之一，不能同时给出</translation>
+        <translation>请给出目标位置列表或网格之一，不能同时给出</translation>
     </message>
     <message>
         <source>%1 targets: a positioning test needs at least %2</source>
-        <translation type="unfinished">%1 个目标位置：定位测试至少需要 %2 个</translation>
+        <translation>%1 个目标位置：定位测试至少需要 %2 个</translation>
     </message>
     <message>
         <source>%1 targets: ISO 230-2 recommends at least %2</source>
-        <translation type="unfinished">%1 个目标位置：ISO 230-2 建议至少 %2 个</translation>
+        <translation>%1 个目标位置：ISO 230-2 建议至少 %2 个</translation>
     </message>
     <message>
         <source>target %1 does not come after %2: targets must increase</source>
-        <translation type="unfinished">目标位置 %1 不大于 %2：目标位置必须递增</translation>
+        <translation>目标位置 %1 不大于 %2：目标位置必须递增</translation>
     </message>
     <message>
         <source>target %1 of axis %2 is below the soft limit %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%2 轴的目标位置 %1 低于软限位 %3</translation>
     </message>
     <message>
         <source>target %1 is below the soft limit %2</source>
-        <translation type="unfinished">目标位置 %1 低于软限位 %2</translation>
+        <translation>目标位置 %1 低于软限位 %2</translation>
     </message>
     <message>
         <source>target %1 of axis %2 is above the soft limit %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%2 轴的目标位置 %1 高于软限位 %3</translation>
     </message>
     <message>
         <source>target %1 is above the soft limit %2</source>
-        <translation type="unfinished">目标位置 %1 高于软限位 %2</translation>
+        <translation>目标位置 %1 高于软限位 %2</translation>
     </message>
     <message>
         <source>the grid ends at %1, not after its start %2</source>
-        <translation type="unfinished">网格终点 %1 不在起点 %2 之后</translation>
+        <translation>网格终点 %1 不在起点 %2 之后</translation>
     </message>
     <message>
         <source>targets %1 apart are too close: at least %2</source>
-        <translation type="unfinished">目标位置间距 %1 太小：至少为 %2</translation>
+        <translation>目标位置间距 %1 太小：至少为 %2</translation>
     </message>
     <message>
         <source>no overrun: the drive reverses at the end targets, so their readings include the reversal</source>
-        <translation type="unfinished">没有越程：驱动在两端目标位置处换向，因此这些读数包含了换向误差</translation>
+        <translation>没有越程：驱动在两端目标位置处换向，因此这些读数包含了换向误差</translation>
     </message>
     <message>
         <source>the overrun takes axis %1 to %2, below the soft limit %3</source>
-        <translation type="unfinished"></translation>
+        <translation>越程使 %1 轴到达 %2，低于软限位 %3</translation>
     </message>
     <message>
         <source>the overrun goes to %1, below the soft limit %2</source>
-        <translation type="unfinished">越程到达 %1，低于软限位 %2</translation>
+        <translation>越程到达 %1，低于软限位 %2</translation>
     </message>
     <message>
         <source>the overrun takes axis %1 to %2, above the soft limit %3</source>
-        <translation type="unfinished"></translation>
+        <translation>越程使 %1 轴到达 %2，高于软限位 %3</translation>
     </message>
     <message>
         <source>the overrun goes to %1, above the soft limit %2</source>
-        <translation type="unfinished">越程到达 %1，高于软限位 %2</translation>
+        <translation>越程到达 %1，高于软限位 %2</translation>
     </message>
     <message>
         <source>%1 cycles at %2 %3: at least %4 are needed to see a spread</source>
-        <translation type="unfinished"></translation>
+        <translation>%2 %3 处 %1 次循环：至少需要 %4 次才能看出分散</translation>
     </message>
     <message>
         <source>%1 cycles: at least %2 are needed to see a spread</source>
-        <translation type="unfinished">%1 次循环：至少需要 %2 次才能看出分散</translation>
+        <translation>%1 次循环：至少需要 %2 次才能看出分散</translation>
     </message>
     <message>
         <source>%1 cycles: ISO 230-2 recommends %2</source>
-        <translation type="unfinished">%1 次循环：ISO 230-2 建议 %2 次</translation>
+        <translation>%1 次循环：ISO 230-2 建议 %2 次</translation>
     </message>
     <message>
         <source>the settle timeout %1 is shorter than its window %2</source>
-        <translation type="unfinished">稳定超时 %1 短于其稳定窗口 %2</translation>
+        <translation>稳定超时 %1 短于其稳定窗口 %2</translation>
     </message>
     <message>
         <source>a second reading at %1 %2 in cycle %3 (the first is reading %4)</source>
-        <translation type="unfinished">第 %3 次循环中在 %1 %2 处有第二个读数（第一个是读数 %4）</translation>
+        <translation>第 %3 次循环中在 %1 %2 处有第二个读数（第一个是读数 %4）</translation>
     </message>
     <message>
         <source>no %1 readings at %2, though other targets have them</source>
-        <translation type="unfinished">%2 处没有%1读数，但其他目标位置有</translation>
+        <translation>%2 处没有%1读数，但其他目标位置有</translation>
     </message>
     <message>
         <source>%1 readings at %2 %3, where the others have %4</source>
-        <translation type="unfinished">%2 %3 处有 %1 个读数，而其他位置有 %4 个</translation>
+        <translation>%2 %3 处有 %1 个读数，而其他位置有 %4 个</translation>
     </message>
     <message>
         <source>the table&apos;s row for %1 lacks a mean or a standard deviation</source>
-        <translation type="unfinished">表中 %1 一行缺少平均值或标准差</translation>
+        <translation>表中 %1 一行缺少平均值或标准差</translation>
     </message>
     <message>
         <source>%1 readings, where the test has %2</source>
-        <translation type="unfinished">%1 个读数，而测试应有 %2 个</translation>
+        <translation>%1 个读数，而测试应有 %2 个</translation>
     </message>
     <message>
         <source>a reading at %1 %2 in cycle %3, which the test does not have</source>
-        <translation type="unfinished">第 %3 次循环在 %1 %2 处有读数，但测试中没有这一点</translation>
+        <translation>第 %3 次循环在 %1 %2 处有读数，但测试中没有这一点</translation>
     </message>
     <message>
         <source>no reading at %1 %2 in cycle %3</source>
-        <translation type="unfinished">第 %3 次循环在 %1 %2 处没有读数</translation>
+        <translation>第 %3 次循环在 %1 %2 处没有读数</translation>
     </message>
     <message>
         <source>this target is %1 off the line through the first and last (at most %2)</source>
-        <translation type="unfinished">该目标位置偏离首末两点连线 %1（最多允许 %2）</translation>
+        <translation>该目标位置偏离首末两点连线 %1（最多允许 %2）</translation>
     </message>
     <message>
         <source>reading for target %1, but the line has %2 targets</source>
-        <translation type="unfinished">读数对应目标位置 %1，但该直线只有 %2 个目标位置</translation>
+        <translation>读数对应目标位置 %1，但该直线只有 %2 个目标位置</translation>
     </message>
     <message>
         <source>%1 does not move along this line: it is not evaluated</source>
-        <translation type="unfinished">%1 轴沿该直线不运动：不予评定</translation>
+        <translation>%1 轴沿该直线不运动：不予评定</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a plane: two different axis letters, such as XY</source>
-        <translation type="unfinished">“%1”不是平面：应为两个不同的轴字母，例如 XY</translation>
+        <translation>“%1”不是平面：应为两个不同的轴字母，例如 XY</translation>
     </message>
     <message>
         <source>the circle reaches %1 = %2, below the soft limit %3</source>
-        <translation type="unfinished">圆到达 %1 = %2，低于软限位 %3</translation>
+        <translation>圆到达 %1 = %2，低于软限位 %3</translation>
     </message>
     <message>
         <source>the circle reaches %1 = %2, above the soft limit %3</source>
-        <translation type="unfinished">圆到达 %1 = %2，高于软限位 %3</translation>
+        <translation>圆到达 %1 = %2，高于软限位 %3</translation>
     </message>
     <message>
         <source>choose clockwise, counter-clockwise or both</source>
-        <translation type="unfinished">请选择顺时针、逆时针或两者</translation>
+        <translation>请选择顺时针、逆时针或两者</translation>
     </message>
     <message>
         <source>no circle was sampled</source>
-        <translation type="unfinished">没有采样任何圆</translation>
+        <translation>没有采样任何圆</translation>
     </message>
     <message>
         <source>two %1 runs: one of each direction</source>
-        <translation type="unfinished">两次%1运行：每个方向只能一次</translation>
+        <translation>两次%1运行：每个方向只能一次</translation>
     </message>
     <message>
         <source>%1 samples of a circle: at least %2</source>
-        <translation type="unfinished">圆上只有 %1 个采样点：至少需要 %2 个</translation>
+        <translation>圆上只有 %1 个采样点：至少需要 %2 个</translation>
     </message>
     <message>
         <source>the samples leave a gap of %1 in the revolution (at most %2)</source>
-        <translation type="unfinished">采样点在一周中留有 %1 的空缺（最多允许 %2）</translation>
+        <translation>采样点在一周中留有 %1 的空缺（最多允许 %2）</translation>
     </message>
     <message>
         <source>the %1 samples do not lie on a circle</source>
-        <translation type="unfinished">%1采样点不在一个圆上</translation>
+        <translation>%1采样点不在一个圆上</translation>
     </message>
     <message>
         <source>%1 is written as %2, but the file&apos;s own table gives %3</source>
-        <translation type="unfinished">%1 写的是 %2，但文件自身的表格给出 %3</translation>
+        <translation>%1 写的是 %2，但文件自身的表格给出 %3</translation>
     </message>
     <message>
         <source>A run is in progress: pause or abort it first.</source>
-        <translation type="unfinished"></translation>
+        <translation>正在运行：请先暂停或中止。</translation>
     </message>
     <message>
         <source>The instrument is not connected.</source>
-        <translation type="unfinished">仪器未连接。</translation>
+        <translation>仪器未连接。</translation>
     </message>
     <message>
         <source>The instrument has no axis %1 for this test.</source>
-        <translation type="unfinished"></translation>
+        <translation>仪器没有本测试所需的 %1 轴。</translation>
     </message>
     <message>
         <source>The test&apos;s axes are not homed: home them first.</source>
-        <translation type="unfinished"></translation>
+        <translation>测试所用的轴尚未回零：请先回零。</translation>
     </message>
     <message>
         <source>Axis %1 is not homed: home it first.</source>
-        <translation type="unfinished">%1 轴尚未回零：请先回零。</translation>
+        <translation>%1 轴尚未回零：请先回零。</translation>
     </message>
     <message>
         <source>E-stop is active: the run stopped; reset the E-stop and resume.</source>
-        <translation type="unfinished"></translation>
+        <translation>急停已触发：运行已停止；请复位急停后继续。</translation>
     </message>
     <message>
         <source>Choose where the readings come from.</source>
-        <translation type="unfinished"></translation>
+        <translation>请选择读数来源。</translation>
     </message>
     <message>
         <source>The %1 reads %2 axis at a time; this test reads %3.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1每次只能读取 %2 个轴；本测试需读取 %3 个。</translation>
     </message>
     <message>
         <source>The gauge on %1 reads one axis; this test reads two.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 上的测头只能读取一个轴；本测试需读取两个。</translation>
     </message>
     <message>
         <source>Cannot use the folder %1: cannot create it.</source>
-        <translation type="unfinished"></translation>
+        <translation>无法使用文件夹 %1：无法创建该文件夹。</translation>
     </message>
     <message>
         <source>%1 holds the run log of another test (%2): choose another folder, or start afresh to keep it aside.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 中是另一项测试（%2）的运行日志：请选择其他文件夹，或重新开始（旧日志将另存）。</translation>
     </message>
     <message>
         <source>The run log %1 cannot be continued (line %2): %3.</source>
-        <translation type="unfinished"></translation>
+        <translation>运行日志 %1 无法续写（第 %2 行）：%3。</translation>
     </message>
     <message>
         <source>Cannot write the run log %1: cannot keep the old log aside as %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>无法写入运行日志 %1：无法将旧日志另存为 %2。</translation>
     </message>
     <message>
         <source>Cannot write the run log %1: %2. The run stopped; no reading was lost.</source>
-        <translation type="unfinished"></translation>
+        <translation>无法写入运行日志 %1：%2。运行已停止；没有丢失任何读数。</translation>
     </message>
     <message>
         <source>The instrument refused the move: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>仪器拒绝了该移动：%1</translation>
     </message>
     <message>
         <source>The link to the instrument was lost: the run stopped. Reconnect and resume: it goes on at the next reading.</source>
-        <translation type="unfinished"></translation>
+        <translation>与仪器的连接中断：运行已停止。请重新连接后继续：将从下一个读数接着运行。</translation>
     </message>
     <message>
         <source>The run was aborted. Resume goes on at the next reading.</source>
-        <translation type="unfinished"></translation>
+        <translation>运行已中止。按“继续”将从下一个读数接着运行。</translation>
     </message>
     <message>
         <source>Axis %1 stopped (%2): %3. The run stopped.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 轴已停止（%2）：%3。运行已停止。</translation>
     </message>
     <message>
         <source>No position reading from the instrument: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>未能从仪器读到位置：%1</translation>
     </message>
     <message>
         <source>No position reading from the instrument: its status has no axis %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>未能从仪器读到位置：其状态中没有 %1 轴。</translation>
     </message>
     <message>
         <source>The reading has %1 values where the test reads %2 axes: the run stopped.</source>
-        <translation type="unfinished"></translation>
+        <translation>读数有 %1 个值，而测试读取 %2 个轴：运行已停止。</translation>
     </message>
     <message>
         <source>Cannot write %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>无法写入 %1：%2</translation>
     </message>
     <message>
         <source>Define or open a test first.</source>
-        <translation type="unfinished"></translation>
+        <translation>请先定义或打开一项测试。</translation>
     </message>
     <message>
         <source>Every reading of this run is taken.</source>
-        <translation type="unfinished"></translation>
+        <translation>本次运行的所有读数均已采集。</translation>
     </message>
     <message>
         <source>A circular test runs as a circle, not as stops.</source>
-        <translation type="unfinished"></translation>
+        <translation>圆测试按整圆运行，而不是逐个测点运行。</translation>
     </message>
     <message>
         <source>The run took far longer than its estimate and was aborted.</source>
-        <translation type="unfinished"></translation>
+        <translation>运行用时远超预估，已被中止。</translation>
     </message>
     <message>
         <source>The circle&apos;s path was aborted.</source>
-        <translation type="unfinished"></translation>
+        <translation>圆的路径已中止。</translation>
     </message>
     <message>
         <source>The circle&apos;s path was aborted: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>圆的路径已中止：%1</translation>
     </message>
     <message>
         <source>the header has no %1 column</source>
-        <translation type="unfinished">表头中没有 %1 列</translation>
+        <translation>表头中没有 %1 列</translation>
     </message>
     <message>
         <source>cannot read the unit of column %1: use one of %2</source>
-        <translation type="unfinished">无法识别 %1 列的单位：请使用 %2 之一</translation>
+        <translation>无法识别 %1 列的单位：请使用 %2 之一</translation>
     </message>
     <message>
         <source>a second column for the same quantity: %1</source>
-        <translation type="unfinished">同一物理量出现了第二列：%1</translation>
+        <translation>同一物理量出现了第二列：%1</translation>
     </message>
     <message>
         <source>the file has no readings</source>
-        <translation type="unfinished">文件中没有读数</translation>
+        <translation>文件中没有读数</translation>
     </message>
     <message>
         <source>%1 cells where the header has %2</source>
-        <translation type="unfinished">有 %1 个单元格，而表头有 %2 列</translation>
+        <translation>有 %1 个单元格，而表头有 %2 列</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a number</source>
-        <translation type="unfinished">“%1”不是数字</translation>
+        <translation>“%1”不是数字</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a direction: up or down</source>
-        <translation type="unfinished">“%1”不是方向：应为 up 或 down</translation>
+        <translation>“%1”不是方向：应为 up 或 down</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a cycle: a whole number from 1</source>
-        <translation type="unfinished">“%1”不是循环序号：应为从 1 开始的整数</translation>
+        <translation>“%1”不是循环序号：应为从 1 开始的整数</translation>
     </message>
     <message>
         <source>the export has %1 readings, where the run&apos;s sequence has %2 stops</source>
-        <translation type="unfinished"></translation>
+        <translation>导出文件有 %1 个读数，而运行序列有 %2 个测点</translation>
     </message>
     <message>
         <source>reading %1 was taken %2, where the run&apos;s stop %1 (at %3) was approached %4</source>
-        <translation type="unfinished"></translation>
+        <translation>读数 %1 为%2趋近，而运行的第 %1 个测点（%3 处）为%4趋近</translation>
     </message>
     <message>
         <source>reading %1 is for target %2, where the run&apos;s stop %1 is at %3</source>
-        <translation type="unfinished"></translation>
+        <translation>读数 %1 对应目标位置 %2，而运行的第 %1 个测点位于 %3</translation>
     </message>
     <message>
         <source>index &quot;%1&quot;: the sequence&apos;s rows are numbered from 1 in order (expected %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>序号“%1”：序列各行应从 1 起按顺序编号（应为 %2）</translation>
     </message>
     <message>
         <source>must hold numbers (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>必须是数值（单位 mm）</translation>
     </message>
     <message>
         <source>must hold one position per axis read, one or two (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>必须为所读的每个轴给出一个位置，共一个或两个（单位 mm）</translation>
     </message>
     <message>
         <source>is %1 where the run&apos;s next stop is %2: a log&apos;s stops come in order, each once</source>
-        <translation type="unfinished"></translation>
+        <translation>为 %1，而运行的下一个测点是 %2：日志中的测点须按顺序出现，且每个只出现一次</translation>
     </message>
     <message>
         <source>must hold as many positions as target_mm</source>
-        <translation type="unfinished"></translation>
+        <translation>位置个数必须与 target_mm 相同</translation>
     </message>
     <message>
         <source>cannot read %1: %2</source>
-        <translation type="unfinished">无法读取 %1：%2</translation>
+        <translation>无法读取 %1：%2</translation>
     </message>
     <message>
         <source>not valid JSON: %1</source>
-        <translation type="unfinished">不是有效的 JSON：%1</translation>
+        <translation>不是有效的 JSON：%1</translation>
     </message>
     <message>
         <source>a quoted field is not closed</source>
-        <translation type="unfinished">带引号的字段没有闭合</translation>
+        <translation>带引号的字段没有闭合</translation>
     </message>
     <message>
         <source>text after a closing quote</source>
-        <translation type="unfinished">闭合引号之后还有文字</translation>
+        <translation>闭合引号之后还有文字</translation>
     </message>
     <message>
         <source>the file is separated by semicolons; BenchPilot reads commas and &apos;.&apos; as the decimal point</source>
-        <translation type="unfinished">文件以分号分隔；BenchPilot 读取逗号分隔、以“.”为小数点的文件</translation>
+        <translation>文件以分号分隔；BenchPilot 读取逗号分隔、以“.”为小数点的文件</translation>
     </message>
     <message>
         <source>%1 points: a fit needs at least %2 different positions</source>
-        <translation type="unfinished">%1 个点：拟合至少需要 %2 个不同位置</translation>
+        <translation>%1 个点：拟合至少需要 %2 个不同位置</translation>
     </message>
     <message>
         <source>order %1: choose %2 to %3</source>
-        <translation type="unfinished">阶数 %1：请选择 %2 到 %3</translation>
+        <translation>阶数 %1：请选择 %2 到 %3</translation>
     </message>
     <message>
         <source>order %1 needs at least %2 points; there are %3</source>
-        <translation type="unfinished">%1 阶至少需要 %2 个点；现有 %3 个</translation>
+        <translation>%1 阶至少需要 %2 个点；现有 %3 个</translation>
     </message>
     <message>
         <source>the polynomial has no coefficients</source>
-        <translation type="unfinished">多项式没有系数</translation>
+        <translation>多项式没有系数</translation>
     </message>
     <message>
         <source>%1 coefficients: at most %2 (order 5)</source>
-        <translation type="unfinished">%1 个系数：最多 %2 个（5 阶）</translation>
+        <translation>%1 个系数：最多 %2 个（5 阶）</translation>
     </message>
     <message>
         <source>the range %1 to %2 is shorter than %3</source>
-        <translation type="unfinished">范围 %1 到 %2 短于 %3</translation>
+        <translation>范围 %1 到 %2 短于 %3</translation>
     </message>
     <message>
         <source>the curve reaches %1 at %2, beyond ±%3</source>
-        <translation type="unfinished">曲线在 %2 处达到 %1，超出 ±%3</translation>
+        <translation>曲线在 %2 处达到 %1，超出 ±%3</translation>
     </message>
     <message>
         <source>the curve&apos;s slope is %1 µm/mm at %2, beyond %3</source>
-        <translation type="unfinished">曲线在 %2 处的斜率为 %1 µm/mm，超出 %3</translation>
+        <translation>曲线在 %2 处的斜率为 %1 µm/mm，超出 %3</translation>
     </message>
     <message>
         <source>%1 table points: at least %2</source>
-        <translation type="unfinished">%1 个表格点：至少需要 %2 个</translation>
+        <translation>%1 个表格点：至少需要 %2 个</translation>
     </message>
     <message>
         <source>%1 table points: a device keeps at most %2</source>
-        <translation type="unfinished">%1 个表格点：设备最多保存 %2 个</translation>
+        <translation>%1 个表格点：设备最多保存 %2 个</translation>
     </message>
     <message>
         <source>nominal %1 does not come after %2</source>
-        <translation type="unfinished">名义位置 %1 不大于 %2</translation>
+        <translation>名义位置 %1 不大于 %2</translation>
     </message>
     <message>
         <source>nominals %1 and %2 are closer than %3</source>
-        <translation type="unfinished">名义位置 %1 与 %2 相距小于 %3</translation>
+        <translation>名义位置 %1 与 %2 相距小于 %3</translation>
     </message>
     <message>
         <source>a backlash of %1 beside per-direction columns: put it in the columns</source>
-        <translation type="unfinished">已有分方向的列，又给出反向间隙 %1：请把它并入各列</translation>
+        <translation>已有分方向的列，又给出反向间隙 %1：请把它并入各列</translation>
     </message>
     <message>
         <source>%1 values on a line where LinuxCNC expects three (nominal, forward, reverse); LinuxCNC would stop reading here</source>
-        <translation type="unfinished">一行有 %1 个数，而 LinuxCNC 要求三个（名义、正向、反向）；LinuxCNC 读到这里会停止</translation>
+        <translation>一行有 %1 个数，而 LinuxCNC 要求三个（名义、正向、反向）；LinuxCNC 读到这里会停止</translation>
     </message>
     <message>
         <source>axis %1 cannot carry a compensation</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 轴不支持补偿</translation>
     </message>
     <message>
         <source>this instrument keeps no compensation of its own</source>
-        <translation type="unfinished"></translation>
+        <translation>该仪器自身不保存补偿</translation>
     </message>
     <message>
         <source>the compensation cannot be applied (%1): %2</source>
-        <translation type="unfinished"></translation>
+        <translation>无法应用该补偿（%1）：%2</translation>
     </message>
     <message>
         <source>the device answered COMP_UPLOAD with something unreadable</source>
-        <translation type="unfinished"></translation>
+        <translation>设备对 COMP_UPLOAD 的应答无法解读</translation>
     </message>
     <message>
         <source>the device took every part of the compensation but did not install it</source>
-        <translation type="unfinished"></translation>
+        <translation>设备接收了补偿的全部数据，但没有安装</translation>
     </message>
     <message>
         <source>the device answered COMP_GET with something unreadable</source>
-        <translation type="unfinished"></translation>
+        <translation>设备对 COMP_GET 的应答无法解读</translation>
     </message>
     <message>
         <source>The instrument refused: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>仪器拒绝：%1</translation>
     </message>
     <message>
         <source>The instrument holds no compensation for axis %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>仪器中没有 %1 轴的补偿。</translation>
     </message>
     <message>
         <source>The gauge on %1 answered &quot;%2&quot;, which is not a reading such as +012.3456 mm.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 上的测头应答“%2”，这不是形如 +012.3456 mm 的读数。</translation>
     </message>
     <message>
         <source>The gauge on %1 answered &quot;%2&quot; in a unit BenchPilot does not read (%3); it reads mm, µm and in.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 上的测头应答“%2”，其单位（%3）BenchPilot 无法识别；可识别的单位为 mm、µm 和 in。</translation>
     </message>
     <message>
         <source>The gauge on %1 did not answer within %2, asked twice.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 上的测头在 %2 内无应答（已询问两次）。</translation>
     </message>
     <message>
         <source>The gauge did not answer.</source>
-        <translation type="unfinished"></translation>
+        <translation>测头无应答。</translation>
     </message>
     <message>
         <source>Cannot open the gauge&apos;s port %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>无法打开测头的端口 %1：%2</translation>
     </message>
     <message>
         <source>The gauge&apos;s port %1 went away: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>测头的端口 %1 已断开：%2</translation>
     </message>
     <message>
         <source>The gauge on %1 is still answering the last request.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 上的测头仍在应答上一个请求。</translation>
     </message>
     <message>
         <source>The gauge on %1 has no port to talk through.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 上的测头没有可用于通信的端口。</translation>
     </message>
     <message>
         <source>The gauge&apos;s port %1 is not open.</source>
-        <translation type="unfinished"></translation>
+        <translation>测头的端口 %1 未打开。</translation>
     </message>
     <message>
         <source>readback</source>
-        <translation type="unfinished"></translation>
+        <translation>位置反馈</translation>
     </message>
     <message>
         <source>the stage&apos;s grating (readback)</source>
-        <translation type="unfinished"></translation>
+        <translation>载物台的光栅尺（位置反馈）</translation>
     </message>
     <message>
         <source>the analyzer&apos;s encoder (readback)</source>
-        <translation type="unfinished"></translation>
+        <translation>分析仪的编码器（位置反馈）</translation>
     </message>
     <message>
         <source>gauge on %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 上的测头</translation>
     </message>
     <message>
         <source>manual entry</source>
-        <translation type="unfinished"></translation>
+        <translation>手动输入</translation>
     </message>
     <message>
         <source>laser interferometer (imported after the run)</source>
-        <translation type="unfinished"></translation>
+        <translation>激光干涉仪（运行后导入）</translation>
     </message>
     <message>
         <source>gauge</source>
-        <translation type="unfinished"></translation>
+        <translation>测头</translation>
     </message>
     <message>
         <source>interferometer</source>
-        <translation type="unfinished"></translation>
+        <translation>干涉仪</translation>
     </message>
     <message>
         <source>upload compensation</source>
-        <translation type="unfinished"></translation>
+        <translation>上传补偿</translation>
     </message>
     <message>
         <source>read compensation</source>
-        <translation type="unfinished"></translation>
+        <translation>读取补偿</translation>
     </message>
     <message>
         <source>enable compensation</source>
-        <translation type="unfinished"></translation>
+        <translation>启用补偿</translation>
     </message>
     <message>
         <source>disable compensation</source>
-        <translation type="unfinished"></translation>
+        <translation>停用补偿</translation>
     </message>
     <message>
         <source>as recorded: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>按记录：%1</translation>
     </message>
 </context>
 <context>
@@ -9637,317 +9729,317 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     <message>
         <source>no answer from %1 within %2: check power, cable and baud rate (GRBL boards usually run at 115200 Bd)</source>
         <comment>grbl.connect.no_answer</comment>
-        <translation type="unfinished"></translation>
+        <translation>%1 在 %2 内无应答：请检查电源、线缆和波特率（GRBL 控制板通常为 115200 Bd）</translation>
     </message>
     <message>
         <source>%1 sent %2 bytes but no GRBL line within %3: a wrong baud rate, or not a GRBL controller</source>
         <comment>grbl.connect.no_grbl_line</comment>
-        <translation type="unfinished"></translation>
+        <translation>%1 在 %3 内发送了 %2 字节，但没有一行 GRBL 消息：可能波特率错误，或不是 GRBL 控制器</translation>
     </message>
     <message>
         <source>%1 answers like GRBL but never acknowledged a line within %2: it may be busy (in a critical alarm it hears nothing but a reset)</source>
         <comment>grbl.connect.never_acknowledged</comment>
-        <translation type="unfinished"></translation>
+        <translation>%1 的应答像 GRBL，但在 %2 内从未确认过任何一行：它可能正忙（处于严重报警时，它只响应复位）</translation>
     </message>
     <message>
         <source>%1 stopped answering while it was being identified ($I, $$, $#)</source>
         <comment>grbl.connect.identify_silent</comment>
-        <translation type="unfinished"></translation>
+        <translation>%1 在识别过程中（$I、$$、$#）停止了应答</translation>
     </message>
     <message>
         <source>%1 was not answered: %2</source>
         <comment>grbl.identify.not_answered</comment>
-        <translation type="unfinished"></translation>
+        <translation>%1 未获应答：%2</translation>
     </message>
     <message>
         <source>the controller refused %1 with error:%2 (%3)</source>
         <comment>grbl.identify.refused</comment>
-        <translation type="unfinished"></translation>
+        <translation>控制器以 error:%2 拒绝了 %1（%3）</translation>
     </message>
     <message>
         <source>the controller&apos;s settings ($$) do not give its limits: %1 (%2 problems in all)</source>
         <comment>grbl.identify.no_limits</comment>
-        <translation type="unfinished"></translation>
+        <translation>控制器的设置（$$）未给出其限值：%1（共 %2 个问题）</translation>
     </message>
     <message>
         <source>the controller reports positions in inches ($13=1) and the machine profile refuses inch reports: set $13=0 on the controller, or &quot;inch_reports&quot;: &quot;convert&quot; in the profile</source>
         <comment>grbl.identify.inches_refused</comment>
-        <translation type="unfinished"></translation>
+        <translation>控制器以英寸报告位置（$13=1），而机器配置不接受英寸报告：请在控制器上设置 $13=0，或在配置文件中设置 &quot;inch_reports&quot;: &quot;convert&quot;</translation>
     </message>
     <message>
         <source>the machine profile drives axis %1 with GRBL axis %2, but this controller has axes %3</source>
         <comment>grbl.identify.axis_missing</comment>
-        <translation type="unfinished"></translation>
+        <translation>机器配置用 GRBL 的 %2 轴驱动 %1 轴，但该控制器只有 %3 轴</translation>
     </message>
     <message>
         <source>the machine profile drives the pump with GRBL axis %1, but this controller has axes %2</source>
         <comment>grbl.identify.pump_axis_missing</comment>
-        <translation type="unfinished"></translation>
+        <translation>机器配置用 GRBL 的 %1 轴驱动泵，但该控制器只有 %2 轴</translation>
     </message>
     <message>
         <source>the controller stopped answering: no status report for %1</source>
         <comment>grbl.silent</comment>
-        <translation type="unfinished"></translation>
+        <translation>控制器停止了应答：%1 内没有状态报告</translation>
     </message>
     <message>
         <source>no status report for %1 (%2 unreadable lines: a wrong baud rate or noise?)</source>
         <comment>grbl.silent_with_noise</comment>
-        <translation type="unfinished"></translation>
+        <translation>%1 内没有状态报告（%2 行无法解读：波特率错误或有干扰？）</translation>
     </message>
     <message>
         <source>the controller reset by itself</source>
         <comment>grbl.reset_by_itself</comment>
-        <translation type="unfinished"></translation>
+        <translation>控制器自行复位了</translation>
     </message>
     <message>
         <source>a reset flushed it</source>
         <comment>grbl.reset_flushed</comment>
-        <translation type="unfinished"></translation>
+        <translation>被复位清除</translation>
     </message>
     <message>
         <source>stop: the controller did not come to rest and reset within %1</source>
         <comment>grbl.stop_timeout</comment>
-        <translation type="unfinished"></translation>
+        <translation>停止：控制器未在 %1 内停稳并复位</translation>
     </message>
     <message>
         <source>stop overtaken by the E-stop</source>
         <comment>grbl.stop_overtaken_by_estop</comment>
-        <translation type="unfinished"></translation>
+        <translation>停止被急停取代</translation>
     </message>
     <message>
         <source>%1 %2 is beyond the machine travel %3 … %4 (the controller&apos;s $%5): refused before sending, since GRBL would stop with ALARM:2 and need a reset</source>
         <comment>grbl.beyond_travel</comment>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2 超出机床行程 %3 … %4（控制器的 $%5）：发送前已拒绝，否则 GRBL 会以 ALARM:2 停机并需要复位</translation>
     </message>
     <message>
         <source>%1: the line &quot;%2&quot; cannot be sent</source>
         <comment>grbl.line_not_sent</comment>
-        <translation type="unfinished"></translation>
+        <translation>%1：无法发送“%2”这一行</translation>
     </message>
     <message>
         <source>%1: the E-stop is latched: reset it first</source>
         <comment>grbl.estop_latched</comment>
-        <translation type="unfinished"></translation>
+        <translation>%1：急停已锁定：请先复位</translation>
     </message>
     <message>
         <source>home: GRBL homes one axis or all of them, not %1</source>
         <comment>grbl.home_one_or_all</comment>
-        <translation type="unfinished"></translation>
+        <translation>回零：GRBL 只能对单个轴或全部轴回零，不能对 %1 回零</translation>
     </message>
     <message>
         <source>set zero: wait until the instrument is still</source>
         <comment>grbl.set_zero_while_moving</comment>
-        <translation type="unfinished"></translation>
+        <translation>设零点：请等仪器静止后再操作</translation>
     </message>
     <message>
         <source>set zero: no such axis</source>
         <comment>grbl.set_zero_no_axis</comment>
-        <translation type="unfinished"></translation>
+        <translation>设零点：没有该轴</translation>
     </message>
     <message>
         <source>GRBL enforces its machine travel ($130–$132) as its soft limits; other limits cannot be set from here</source>
         <comment>grbl.soft_limits_fixed</comment>
-        <translation type="unfinished"></translation>
+        <translation>GRBL 以其机床行程（$130–$132）作为软限位；无法在此设置其他限位</translation>
     </message>
     <message>
         <source>move: the controller is in alarm (its position is not trusted): home it, or unlock it on your word</source>
         <comment>grbl.move_in_alarm</comment>
-        <translation type="unfinished"></translation>
+        <translation>移动：控制器处于报警状态（其位置不可信）：请回零，或在确认后解锁</translation>
     </message>
     <message>
         <source>move: axis %1 has no established position: home it, or take the present position as home (Set home here, `zero`) first</source>
         <comment>grbl.move_not_established</comment>
-        <translation type="unfinished"></translation>
+        <translation>移动：%1 轴尚无确定的位置：请先回零，或将当前位置作为零位（“设此处为原点”，`zero`）</translation>
     </message>
     <message>
         <source>this instrument has no trigger output: the machine profile names none</source>
         <comment>grbl.no_trigger_output</comment>
-        <translation type="unfinished"></translation>
+        <translation>该仪器没有触发输出：机器配置未指定</translation>
     </message>
     <message>
         <source>trigger: %1 is not a pulse width</source>
         <comment>grbl.trigger_bad_width</comment>
-        <translation type="unfinished"></translation>
+        <translation>触发：%1 不是有效的脉冲宽度</translation>
     </message>
     <message>
         <source>E-stop: feed hold and soft reset; if it was moving, the controller lost its position</source>
         <comment>grbl.event.estop</comment>
-        <translation type="unfinished"></translation>
+        <translation>急停：进给保持并软复位；若当时正在运动，控制器已丢失位置</translation>
     </message>
     <message>
         <source>E-stop latch cleared</source>
         <comment>grbl.event.estop_cleared</comment>
-        <translation type="unfinished"></translation>
+        <translation>急停锁定已解除</translation>
     </message>
     <message>
         <source>a path is already running</source>
         <comment>grbl.path.already_running</comment>
-        <translation type="unfinished"></translation>
+        <translation>已有路径正在运行</translation>
     </message>
     <message>
         <source>no path begun, or it has ended</source>
         <comment>grbl.path.not_begun</comment>
-        <translation type="unfinished"></translation>
+        <translation>没有已开始的路径，或路径已结束</translation>
     </message>
     <message>
         <source>segment %1 expected, %2 sent</source>
         <comment>grbl.path.out_of_sequence</comment>
-        <translation type="unfinished"></translation>
+        <translation>应为第 %1 段，实际发送了第 %2 段</translation>
     </message>
     <message>
         <source>the path window is full (room for %1 more segments)</source>
         <comment>grbl.path.window_full</comment>
-        <translation type="unfinished"></translation>
+        <translation>路径窗口已满（还能容纳 %1 段）</translation>
     </message>
     <message>
         <source>segment %1 asks Z to follow the path: GRBL cannot</source>
         <comment>grbl.path.z_in_path</comment>
-        <translation type="unfinished"></translation>
+        <translation>第 %1 段要求 Z 轴随路径运动：GRBL 无法做到</translation>
     </message>
     <message>
         <source>no answer from %1 within %2, neither to a GRBL status query nor to a BenchPilot HELLO: check power, cable and baud rate</source>
         <comment>grbl.probe.no_answer</comment>
-        <translation type="unfinished"></translation>
+        <translation>%1 在 %2 内无应答（对 GRBL 状态查询和 BenchPilot HELLO 均无应答）：请检查电源、线缆和波特率</translation>
     </message>
     <message>
         <source>%1 sent %2 bytes within %3 that are neither GRBL lines nor BenchPilot frames: a wrong baud rate, or another kind of device</source>
         <comment>grbl.probe.unreadable</comment>
-        <translation type="unfinished"></translation>
+        <translation>%1 在 %3 内发送了 %2 字节，既不是 GRBL 消息行，也不是 BenchPilot 帧：可能波特率错误，或是其他类型的设备</translation>
     </message>
     <message>
         <source>%1 %2</source>
         <comment>grbl.probe.found_grbl</comment>
-        <translation type="unfinished">%1 %2</translation>
+        <translation>%1 %2</translation>
     </message>
     <message>
         <source>a GRBL controller</source>
         <comment>grbl.probe.found_grbl_unnamed</comment>
-        <translation type="unfinished"></translation>
+        <translation>GRBL 控制器</translation>
     </message>
     <message>
         <source>BenchPilot protocol %1 (%2)</source>
         <comment>grbl.probe.found_benchpilot</comment>
-        <translation type="unfinished"></translation>
+        <translation>BenchPilot 协议 %1（%2）</translation>
     </message>
     <message>
         <source>must be one upper-case axis letter (got &quot;%1&quot;)</source>
         <comment>grbl.profile.axis_letter</comment>
-        <translation type="unfinished"></translation>
+        <translation>必须是一个大写轴字母（当前为“%1”）</translation>
     </message>
     <message>
         <source>the %1 has axes %2 in that order (got &quot;%3&quot;)</source>
         <comment>grbl.profile.axes_order</comment>
-        <translation type="unfinished"></translation>
+        <translation>%1的轴依次为 %2（当前为“%3”）</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a GRBL axis (X, Y, Z, A, B, C)</source>
         <comment>grbl.profile.not_grbl_axis</comment>
-        <translation type="unfinished"></translation>
+        <translation>“%1”不是 GRBL 轴（X、Y、Z、A、B、C）</translation>
     </message>
     <message>
         <source>GRBL axis %1 is already used</source>
         <comment>grbl.profile.grbl_axis_used</comment>
-        <translation type="unfinished"></translation>
+        <translation>GRBL 的 %1 轴已被占用</translation>
     </message>
     <message>
         <source>the stage has no pump</source>
         <comment>grbl.profile.stage_no_pump</comment>
-        <translation type="unfinished"></translation>
+        <translation>载物台没有泵</translation>
     </message>
     <message>
         <source>GRBL axis %1 already drives another axis</source>
         <comment>grbl.profile.pump_axis_used</comment>
-        <translation type="unfinished"></translation>
+        <translation>GRBL 的 %1 轴已用于驱动另一个轴</translation>
     </message>
     <message>
         <source>must be above 0 and at most %2 (got %1)</source>
         <comment>grbl.profile.ul_per_mm_range</comment>
-        <translation type="unfinished">必须大于 0 且不大于 %1（当前为 %2） {0 ?} {2 ?} {1)?}</translation>
+        <translation>必须大于 0 且不大于 %2（当前为 %1）</translation>
     </message>
     <message>
         <source>must exceed link_latency_s + refresh_s + 0.01 s (%2), or not even a creeping jog can keep it (got %1)</source>
         <comment>grbl.profile.stop_budget_too_small</comment>
-        <translation type="unfinished"></translation>
+        <translation>必须大于 link_latency_s + refresh_s + 0.01 s（%2），否则即使极慢的点动也无法满足（当前为 %1）</translation>
     </message>
     <message>
         <source>unlock</source>
         <comment>grbl.request.unlock</comment>
-        <translation type="unfinished"></translation>
+        <translation>解锁</translation>
     </message>
     <message>
         <source>dwell</source>
         <comment>grbl.request.dwell</comment>
-        <translation type="unfinished">停留</translation>
+        <translation>停留</translation>
     </message>
     <message>
         <source>trigger</source>
         <comment>grbl.request.trigger</comment>
-        <translation type="unfinished"></translation>
+        <translation>触发</translation>
     </message>
     <message>
         <source>status</source>
         <comment>grbl.request.status</comment>
-        <translation type="unfinished"></translation>
+        <translation>状态查询</translation>
     </message>
     <message>
         <source>a code this version of BenchPilot does not know</source>
-        <translation type="unfinished"></translation>
+        <translation>此版本 BenchPilot 不认识的代码</translation>
     </message>
     <message>
         <source>The jog runs at %1 instead of %2, so that it stops within %3 of a release, and of a lost link.</source>
-        <translation type="unfinished"></translation>
+        <translation>点动以 %1 而不是 %2 运行，以便在松开按键或连接中断后 %3 内停住。</translation>
     </message>
     <message>
         <source>The controller says: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>控制器消息：%1</translation>
     </message>
     <message>
         <source>The controller sent: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>控制器发送：%1</translation>
     </message>
     <message>
         <source>A line from the controller was not understood and was ignored (%1 so far): %2</source>
-        <translation type="unfinished"></translation>
+        <translation>控制器发来的一行无法理解，已忽略（迄今共 %1 行）：%2</translation>
     </message>
     <message>
         <source>The controller sent a line longer than %1; the rest of it was dropped (noise, or a wrong baud rate?).</source>
-        <translation type="unfinished"></translation>
+        <translation>控制器发来的一行超过 %1；超出部分已丢弃（有干扰，或波特率错误？）。</translation>
     </message>
     <message>
         <source>The controller reset by itself; its position is no longer trusted.</source>
-        <translation type="unfinished"></translation>
+        <translation>控制器自行复位；其位置已不可信。</translation>
     </message>
     <message>
         <source>The controller reset by itself: %1 lines were lost (the first &quot;%2&quot;); its position is no longer trusted.</source>
-        <translation type="unfinished"></translation>
+        <translation>控制器自行复位：丢失了 %1 行（第一行为“%2”）；其位置已不可信。</translation>
     </message>
     <message>
         <source>homing is disabled on the controller ($22=0): take the present position as home instead (Set home here)</source>
-        <translation type="unfinished"></translation>
+        <translation>控制器上已禁用回零（$22=0）：请改为将当前位置作为零位（“设此处为原点”）</translation>
     </message>
     <message>
         <source>GRBL drives its steppers open loop, with no encoder to read and no loop to tune</source>
-        <translation type="unfinished"></translation>
+        <translation>GRBL 以开环方式驱动步进电机，没有可读取的编码器，也没有可整定的回路</translation>
     </message>
     <message>
         <source>GRBL cannot notice that BenchPilot went away; what is queued ahead of a jog runs out within the machine profile&apos;s stop budget (250 ms unless it says otherwise)</source>
-        <translation type="unfinished"></translation>
+        <translation>GRBL 无法察觉 BenchPilot 已断开；点动之前排队的指令会在机器配置的停止时限内执行完（未另行指定时为 250 ms）</translation>
     </message>
     <message>
         <source>GRBL enforces only its machine travel ($130–$132)</source>
-        <translation type="unfinished"></translation>
+        <translation>GRBL 只限制其机床行程（$130–$132）</translation>
     </message>
     <message>
         <source>its X and Y are not GRBL&apos;s X and Y, and GRBL draws arcs only in its XY plane</source>
-        <translation type="unfinished"></translation>
+        <translation>其 X、Y 轴不是 GRBL 的 X、Y 轴，而 GRBL 只能在其 XY 平面内走圆弧</translation>
     </message>
     <message>
         <source>the machine profile names no pump axis</source>
-        <translation type="unfinished"></translation>
+        <translation>机器配置未指定泵轴</translation>
     </message>
     <message>
         <source>the machine profile names no trigger output</source>
-        <translation type="unfinished"></translation>
+        <translation>机器配置未指定触发输出</translation>
     </message>
 </context>
 <context>
