@@ -577,7 +577,7 @@ Skip counts the well as done; Do again repeats it in full.</source>
     <name>app::ApiControlStrip</name>
     <message>
         <source>Take back</source>
-        <translation>收回控制</translation>
+        <translation>收回控制权</translation>
     </message>
     <message>
         <source>End the script&apos;s control now: its next call is refused, its jogs stop; jobs it started go on as yours</source>
@@ -592,7 +592,7 @@ Skip counts the well as done; Do again repeats it in full.</source>
     <name>app::ApiPanel</name>
     <message>
         <source>Take back</source>
-        <translation>收回控制</translation>
+        <translation>收回控制权</translation>
     </message>
     <message>
         <source>Clients connected</source>
@@ -900,7 +900,7 @@ Take control back? The script&apos;s next call is refused and its jogs stop; a j
     </message>
     <message>
         <source>Take back</source>
-        <translation>收回控制</translation>
+        <translation>收回控制权</translation>
     </message>
     <message>
         <source>Scripting API</source>
@@ -2117,7 +2117,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     </message>
     <message>
         <source>order  SSE (µm²)        R²         adjusted R²</source>
-        <translation>阶次   SSE (µm²)        R²         调整后 R²</translation>
+        <translation>阶数   SSE (µm²)        R²         调整后 R²</translation>
     </message>
     <message>
         <source>n/a</source>
@@ -2189,7 +2189,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     </message>
     <message>
         <source>INPUT is a result JSON of &apos;accuracy run&apos; or &apos;accuracy analyze&apos;, or a CSV with position_mm,error_um. The order is chosen by adjusted R² unless --order names one; --out writes the compensation file.</source>
-        <translation>输入为 &apos;accuracy run&apos; 或 &apos;accuracy analyze&apos; 的结果 JSON，或含 position_mm,error_um 列的 CSV。除非 --order 指定阶次，否则按调整后 R² 选择阶次；--out 写出补偿文件。</translation>
+        <translation>输入为 &apos;accuracy run&apos; 或 &apos;accuracy analyze&apos; 的结果 JSON，或含 position_mm,error_um 列的 CSV。除非 --order 指定阶数，否则按调整后 R² 选择阶数；--out 写出补偿文件。</translation>
     </message>
     <message>
         <source>send a compensation file to the device (installed disabled)</source>
@@ -2825,7 +2825,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     </message>
     <message>
         <source>--source gauge:sim reads the in-process simulator&apos;s gauge: use it with --sim</source>
-        <translation>--source gauge:sim 读取进程内模拟器的测头：请与 --sim 一起使用</translation>
+        <translation>--source gauge:sim 读取进程内仿真器的测头：请与 --sim 一起使用</translation>
     </message>
     <message>
         <source>simulated gauge</source>
@@ -2880,7 +2880,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     </message>
     <message>
         <source>connect this instrument to its in-process simulator and show it (analyzer or stage; also the instrument a screenshot shows)</source>
-        <translation>将该仪器连接到进程内模拟器并显示（analyzer 或 stage；也是截图显示的仪器）</translation>
+        <translation>将该仪器连接到进程内仿真器并显示（analyzer 或 stage；也是截图显示的仪器）</translation>
     </message>
     <message>
         <source>connect to this serial port or path (e.g. benchpilot-sim&apos;s pty); the protocol is detected: BenchPilot or GRBL</source>
@@ -8749,12 +8749,12 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     <message>
         <source>dwell: %1 is not a time to wait</source>
         <comment>request.dwell_invalid</comment>
-        <translation>暂停：%1 不是有效的等待时间</translation>
+        <translation>停留：%1 不是有效的等待时间</translation>
     </message>
     <message>
         <source>dwell abandoned: the link went down</source>
         <comment>request.dwell_link_down</comment>
-        <translation>暂停已放弃：连接已断开</translation>
+        <translation>停留已放弃：连接已断开</translation>
     </message>
     <message>
         <source>this instrument has no trigger output (protocol 1 has none)</source>
@@ -10112,7 +10112,7 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     <message>
         <source>the dwell %1 must be 0 or more</source>
         <comment>grbl.gcode.bad_dwell</comment>
-        <translation>暂停时间 %1 必须不小于 0</translation>
+        <translation>停留时间 %1 必须不小于 0</translation>
     </message>
     <message>
         <source>%1 is not an axis GRBL moves</source>
