@@ -267,21 +267,25 @@ void CliSession::printStatus()
     }
     {
         QTextStream& out = m_inv.out();
-        out << QStringLiteral("%1%2\n").arg(words::term(dev::instrumentTerm(id.kind)), st.estop ? QStringLiteral("  [E-STOP]") : QString());
+        out << QStringLiteral("%1%2\n").arg(words::term(dev::instrumentTerm(id.kind)), st.estop ? QStringLiteral("  [%1]").arg(QCoreApplication::translate("cli", "E-STOP")) : QString());
         if (st.positionLost)
             out << "  " << QCoreApplication::translate("cli", "[ALARM] the controller does not trust its position: home, or `unlock` on your word")
                 << "\n";
         for (int i = 0; i < id.axes.size() && i < st.axes.size(); ++i) {
             const auto& a = st.axes[i];
-            out << QStringLiteral("  %1  cmd %2  meas %3 %4  %5%6%7%8\n")
+            // English stays exactly as it was (people's scripts read it); --lang words it.
+            auto t = [](const char* s) { return QCoreApplication::translate("cli", s); };
+            out << QStringLiteral("  %1  %2 %3  %4 %5 %6  %7%8%9%10\n")
                          .arg(id.axes[i].letter)
+                         .arg(t(QT_TRANSLATE_NOOP("cli", "cmd")))
                          .arg(num(a.commanded), 10)
+                         .arg(t(QT_TRANSLATE_NOOP("cli", "meas")))
                          .arg(num(a.measured), 10)
                          .arg(id.axes[i].unitName(), -2)
-                         .arg(a.homed ? QStringLiteral("homed") : QStringLiteral("NOT HOMED"))
-                         .arg(a.moving ? QStringLiteral(" moving") : QString())
-                         .arg(a.homeSwitch ? QStringLiteral(" home-switch") : QString())
-                         .arg(a.limitSwitch ? QStringLiteral(" limit-switch") : QString());
+                         .arg(a.homed ? t(QT_TRANSLATE_NOOP("cli", "homed")) : t(QT_TRANSLATE_NOOP("cli", "NOT HOMED")))
+                         .arg(a.moving ? QLatin1Char(' ') + t(QT_TRANSLATE_NOOP("cli", "moving")) : QString())
+                         .arg(a.homeSwitch ? QLatin1Char(' ') + t(QT_TRANSLATE_NOOP("cli", "home-switch")) : QString())
+                         .arg(a.limitSwitch ? QLatin1Char(' ') + t(QT_TRANSLATE_NOOP("cli", "limit-switch")) : QString());
         }
         out.flush();
     }

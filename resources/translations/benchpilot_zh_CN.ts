@@ -2325,6 +2325,38 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <source>a compensation file; the device&apos;s when left out</source>
         <translation>补偿文件；省略时使用设备上的补偿</translation>
     </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <source>cmd</source>
+        <translation>指令</translation>
+    </message>
+    <message>
+        <source>meas</source>
+        <translation>实测</translation>
+    </message>
+    <message>
+        <source>homed</source>
+        <translation>已回零</translation>
+    </message>
+    <message>
+        <source>NOT HOMED</source>
+        <translation>未回零</translation>
+    </message>
+    <message>
+        <source>moving</source>
+        <translation>运动中</translation>
+    </message>
+    <message>
+        <source>home-switch</source>
+        <translation>零位开关</translation>
+    </message>
+    <message>
+        <source>limit-switch</source>
+        <translation>限位开关</translation>
+    </message>
 </context>
 <context>
     <name>cli::CliSession</name>
