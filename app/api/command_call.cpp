@@ -14,7 +14,7 @@
 namespace api {
 
 namespace {
-[[maybe_unused]] QString tr(const char* text) { return QCoreApplication::translate("api", text); }
+[[maybe_unused]] QString tr(const char* text) { return QCoreApplication::translate("api::CommandCall", text); }
 
 /// A guard that removes a hook from its map when the command lets go of it.
 std::shared_ptr<void> hookGuard(std::map<int, std::function<void()>>& hooks, int key)

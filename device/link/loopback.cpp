@@ -1,5 +1,7 @@
 #include "device/link/loopback.h"
 
+#include <QCoreApplication>
+
 #include <algorithm>
 
 namespace dev {
@@ -27,7 +29,10 @@ public:
     }
     QString describe() const override
     {
-        return m_pair->m_baud > 0 ? tr("loopback @ %1 baud").arg(m_pair->m_baud) : tr("loopback");
+        // Not a Q_OBJECT: its own tr() would look in Transport's context, not the one
+        // lupdate files these under.
+        return m_pair->m_baud > 0 ? QCoreApplication::translate("dev::LoopbackEnd", "loopback @ %1 baud").arg(m_pair->m_baud)
+                                  : QCoreApplication::translate("dev::LoopbackEnd", "loopback");
     }
     void deliver(const QByteArray& bytes)
     {
