@@ -104,6 +104,12 @@ void ConnectionBar::changeEvent(QEvent* event)
     QWidget::changeEvent(event);
 }
 
+void ConnectionBar::setTitle(const QString& title)
+{
+    m_titleText = title;
+    m_title->setText(QStringLiteral("<b>%1</b>").arg(m_titleText));
+}
+
 void ConnectionBar::retranslateUi()
 {
     m_title->setText(QStringLiteral("<b>%1</b>").arg(m_titleText));

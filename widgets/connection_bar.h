@@ -32,6 +32,8 @@ class ConnectionBar : public QWidget {
     Q_OBJECT
 public:
     ConnectionBar(const QString& title, QWidget* parent = nullptr);
+    /// The instrument's name, worded anew when the language changes.
+    void setTitle(const QString& title);
     ConnectionChoice choice() const;
     void setChoice(const ConnectionChoice& c);
     void showState(dev::LinkState state, const QString& identity);

@@ -14,6 +14,7 @@
 #include "device/client/instrument_proxy.h"
 #include "widgets/connection_bar.h"
 
+#include <QCoreApplication>
 #include <QObject>
 #include <QPointer>
 
@@ -35,7 +36,12 @@ public:
     /// The one instrument of this session, whichever backend drives it.
     dev::Instrument* instrument() { return m_proxy; }
     proto::DeviceKind kind() const { return m_kind; }
-    QString name() const { return m_name; }
+    /// "Analyzer" or "Stage" in the language in force now (not the one at construction).
+    QString name() const
+    {
+        return m_kind == proto::DeviceKind::Stage ? QCoreApplication::translate("app::MainWindow", "Stage")
+                                                  : QCoreApplication::translate("app::MainWindow", "Analyzer");
+    }
     ui::ConnectionChoice choice() const { return m_choice; }
     /// Drops the present link (if any) and connects through the chosen one.
     void connectTo(const ui::ConnectionChoice& choice);

@@ -1,5 +1,7 @@
 #include "main_window.h"
 
+#include "widgets/retranslator.h"
+
 #include "instrument_session.h"
 #include "motion_screens.h"
 #include "plates_wiring.h"
@@ -23,6 +25,7 @@
 
 #include "widgets/wording/translators.h"
 
+#include <QApplication>
 #include <QActionGroup>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -469,8 +472,16 @@ void MainWindow::setLanguage(const QString& language)
     m_languageSetting = language;
     if (m_options.persistSettings)
         QSettings().setValue(QStringLiteral("language"), language);
-    if (m_options.translators)
+    if (m_options.translators) {
+        const QString before = m_options.translators->language();
         m_options.translators->setLanguage(language);  // LanguageChange reaches every widget
+        // Texts the screens set once with tr() are reworded here, after the widgets that
+        // word themselves on LanguageChange have done so (what they keep from before, a
+        // device's description say, is reworded with the rest); the texts screens build
+        // as things change come in the new language by themselves.
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+        ui::Retranslator::retranslate(QApplication::topLevelWidgets(), before, m_options.translators->language());
+    }
     retranslateUi();
 }
 
@@ -486,6 +497,14 @@ void MainWindow::retranslateUi()
         for (const auto& [name, title] : titles)
             if (m_screenNames[i] == QLatin1String(name))
                 m_nav->item(i)->setText(title);
+    m_bars[0]->setTitle(tr("Analyzer"));
+    m_bars[1]->setTitle(tr("Stage"));
+    for (int i = 0; i < 2; ++i) {
+        if (m_hub)
+            m_hub->setInstrumentName(i, m_sessions[i]->name());
+        if (m_tuning)
+            m_tuning->renameInstrument(i, m_sessions[i]->name());
+    }
     if (m_jogTabs && m_jogTabs->count() >= 2) {
         m_jogTabs->setTabText(0, tr("Analyzer"));
         m_jogTabs->setTabText(1, tr("Stage"));

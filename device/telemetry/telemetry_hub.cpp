@@ -97,6 +97,13 @@ QVector<int> TelemetryHub::instruments() const
     return out;
 }
 
+void TelemetryHub::setInstrumentName(int index, const QString& name)
+{
+    const auto it = m_instruments.find(index);
+    if (it != m_instruments.end())
+        it->second.name = name;
+}
+
 QString TelemetryHub::instrumentName(int index) const
 {
     const Instrument* in = instrument(index);

@@ -57,6 +57,8 @@ public:
     /// The hub owns the client's telemetry subscription from now on (replacing the
     /// client's default one when the client is, or becomes, Ready). Not owned.
     void addInstrument(int instrument, const QString& name, dev::Instrument* client);
+    /// Its name in a new language (plots, CSV headers and messages use it from now on).
+    void setInstrumentName(int instrument, const QString& name);
     QVector<int> instruments() const;
     QString instrumentName(int instrument) const;
 

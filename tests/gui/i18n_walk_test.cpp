@@ -9,6 +9,7 @@
 #include "../device/pseudo_translation.h"
 
 #include <QAbstractButton>
+#include <QAction>
 #include <QApplication>
 #include <QComboBox>
 #include <QGroupBox>
@@ -33,8 +34,9 @@ QString withoutData(QString text)
 {
     static const QStringList data = [] {
         QStringList d{QString::fromStdString(sim::analyzerConfig().model), QString::fromStdString(sim::stageConfig().model),
-                      QStringLiteral("benchpilot-sim 1.0"), QStringLiteral("(back)"), QStringLiteral("(front)"),
-                      QStringLiteral("samples"), QStringLiteral("wash"), QStringLiteral("waste"), QStringLiteral("steps:")};
+                      QStringLiteral("benchpilot-sim 1.0"), QStringLiteral("BenchPilot protocol 1"), QStringLiteral("(back)"), QStringLiteral("(front)"),
+                      QStringLiteral("samples"), QStringLiteral("wash"), QStringLiteral("waste"), QStringLiteral("steps:"),
+                      QStringLiteral("steps：")};
         return d;
     }();
     for (const QString& d : data)
@@ -131,6 +133,83 @@ TEST(I18nWalk, InChineseNoScreenShowsAnEnglishWord)
     }
     translators.setLanguage(QStringLiteral("en"));
     EXPECT_TRUE(failures.isEmpty()) << failures.join(QLatin1Char('\n')).toStdString();
+}
+
+/// Visible texts of `root` that contain a Chinese character.
+QStringList chineseOn(QWidget* root)
+{
+    static const QRegularExpression han(QStringLiteral("\\p{Han}"));
+    QStringList out;
+    QList<QWidget*> all = root->findChildren<QWidget*>();
+    all.prepend(root);
+    auto check = [&](const QString& where, const QString& text) {
+        if (text.contains(han))
+            out << QStringLiteral("%1: \"%2\"").arg(where, text.left(80));
+    };
+    for (QWidget* w : all) {
+        if (!w->isVisibleTo(root->window()))
+            continue;
+        const QString name = QString::fromLatin1(w->metaObject()->className());
+        check(name + QStringLiteral(" tooltip"), w->toolTip());
+        if (auto* l = qobject_cast<QLabel*>(w))
+            check(name, l->text());
+        if (auto* b = qobject_cast<QAbstractButton*>(w))
+            check(name, b->text());
+        if (auto* g = qobject_cast<QGroupBox*>(w))
+            check(name, g->title());
+        if (auto* c = qobject_cast<QComboBox*>(w))
+            for (int i = 0; i < c->count(); ++i)
+                if (c->itemText(i) != QStringLiteral("简体中文"))  // a language is named in its own words
+                    check(name, c->itemText(i));
+        if (auto* t = qobject_cast<QTabWidget*>(w))
+            for (int i = 0; i < t->count(); ++i)
+                check(name, t->tabText(i));
+    }
+    return out;
+}
+
+/// Triggers the Language menu's entry for `code`, as the operator would.
+void chooseLanguage(app::MainWindow& w, const QString& code)
+{
+    for (QAction* a : w.findChildren<QAction*>())
+        if (a->data().toString() == code) {
+            a->trigger();
+            break;
+        }
+    QApplication::processEvents();
+}
+
+TEST(I18nWalk, SwitchingLanguageRewordsEveryOpenScreenWithoutARestart)
+{
+    words::Translators translators;
+    ASSERT_TRUE(translators.setLanguage(QStringLiteral("en")));
+    app::MainWindowOptions options = guitest::testWindowOptions();
+    options.translators = &translators;
+    app::MainWindow w(options);
+    w.resize(1366, 768);
+    w.show();
+    for (const QString& screen : w.screenNames()) {  // every screen built and shown in English first
+        ASSERT_TRUE(w.showScreen(screen));
+        QApplication::processEvents();
+    }
+    chooseLanguage(w, QStringLiteral("zh_CN"));
+    QStringList english;
+    for (const QString& screen : w.screenNames()) {
+        ASSERT_TRUE(w.showScreen(screen));
+        QApplication::processEvents();
+        for (const QString& f : englishOn(&w))
+            english << screen + QStringLiteral(": ") + f;
+    }
+    EXPECT_TRUE(english.isEmpty()) << "left in English after switching to Chinese:\n" << english.join(QLatin1Char('\n')).toStdString();
+    chooseLanguage(w, QStringLiteral("en"));
+    QStringList chinese;
+    for (const QString& screen : w.screenNames()) {
+        ASSERT_TRUE(w.showScreen(screen));
+        QApplication::processEvents();
+        for (const QString& f : chineseOn(&w))
+            chinese << screen + QStringLiteral(": ") + f;
+    }
+    EXPECT_TRUE(chinese.isEmpty()) << "left in Chinese after switching back:\n" << chinese.join(QLatin1Char('\n')).toStdString();
 }
 
 TEST(I18nWalk, TheWalkFindsATextThatDidNotGoThroughTranslation)

@@ -47,6 +47,8 @@ public:
     /// Its closed-loop axes become targets through its tuning(); an instrument without
     /// gains to tune says why under the target list.
     void addInstrument(int index, const QString& name, dev::Instrument* client);
+    /// The instrument's name in a new language: the target list is worded anew.
+    void renameInstrument(int index, const QString& name);
     void setFileChooser(FileChooser chooser) { m_chooser = std::move(chooser); }
     void setConfirm(Confirm confirm) { m_confirm = std::move(confirm); }
 

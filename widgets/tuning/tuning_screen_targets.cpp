@@ -10,6 +10,15 @@
 
 namespace ui {
 
+void TuningScreen::renameInstrument(int index, const QString& name)
+{
+    for (Instrument& in : m_instruments)
+        if (in.index == index)
+            in.name = name;
+    rebuildTargets();
+    refreshReady();
+}
+
 void TuningScreen::addInstrument(int index, const QString& name, dev::Instrument* client)
 {
     Instrument in;
