@@ -4535,10 +4535,6 @@ Keep that log aside and start this test afresh?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Shown in continuous form: Kp, Ki in 1/s, Kd in s. Beside them the discrete gains per control period T = %1 that %2 runs (seed 002 eq. 2): ki = Ki·T, kd = Kd/T.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>the device</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4567,7 +4563,15 @@ Keep that log aside and start this test afresh?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>every gain must be a number, 0 or more</source>
+        <source>Shown in continuous form: Kp, Ki in 1/s, Kd in s. Beside them the discrete gains per control period T = %1 that %2 runs: ki = Ki·T, kd = Kd/T.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Incremental PID: Δu = kp·(e_k − e_k−1) + ki·e_k + kd·(e_k − 2e_k−1 + e_k−2); see docs/tuning.md (the stage paper&apos;s eq. 2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 Nothing is sent until it is fixed.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -4905,6 +4909,37 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Dismiss</source>
         <translation>关闭</translation>
+    </message>
+</context>
+<context>
+    <name>ui::NumberField</name>
+    <message>
+        <source>the value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is empty: type a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>“%1” is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 must be a whole number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 must be 0 or more, not %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 must be at least %2, not %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 must be at most %2, not %3</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -5524,6 +5559,14 @@ Keep that log aside and start this test afresh?</source>
     </message>
     <message>
         <source>imported %1 (%2 wells) as %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Held while a run is under way: the recipe that runs stays the recipe on screen</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A run is under way: the recipe and plate map stay as they are until it has finished or been aborted.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -7188,6 +7231,14 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
         <source>never</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>unstable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>did not settle</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>ui::TravelView</name>
@@ -7317,6 +7368,28 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     </message>
     <message>
         <source>Model plant</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ki</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kd</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2 → %3 (%4×)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>These gains are far from the ones %1 runs now:
+%2
+A loop this different may oscillate or run away. Apply them?</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -7518,10 +7591,6 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Source</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source> µm</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7558,10 +7627,6 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>, inside seed 002&apos;s ±5 µm from %1 ms</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>, &lt;b&gt;never inside ±5 µm&lt;/b&gt;</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7571,6 +7636,14 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     </message>
     <message>
         <source>Z-N %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, inside ±5 µm of the target from %1 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Source: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

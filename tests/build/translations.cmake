@@ -35,7 +35,7 @@ set(PENDING
   ui::CursorReadout ui::GainsPanel ui::PatternForm ui::PatternPreview ui::PatternScreen ui::PlateMap
   ui::PlatesScreen ui::PlotCursors ui::PlotStack ui::PlotToolbar ui::PlotsScreen ui::ProfilesScreen
   ui::RecipeEditor ui::ResponsePlot ui::RunPanel ui::ScanPlanForm ui::ScanScreen ui::ScanStageMap ui::StepForm
-  ui::StepTestPanel ui::TuningScreen ui::ZnPanel
+  ui::StepTestPanel ui::TuningScreen ui::ZnPanel ui::NumberField
   # What the GRBL backend, the accuracy bench and the scripting API brought in beside
   # phase 1 (merged at stop 23, worded in English first); phase 2 translates them too.
   words::AccuracyBenchWords words::GrblBackendWords report ui::CalibrationScreen ui::AccuracyTestForm
