@@ -153,6 +153,10 @@ RecipeEditor::RecipeEditor(QWidget* parent) : QWidget(parent), m_undo(new QUndoS
     connect(saveB, &QToolButton::clicked, this, &RecipeEditor::saveRequested);
     connect(saveAsB, &QToolButton::clicked, this, &RecipeEditor::saveAsRequested);
     connect(importB, &QPushButton::clicked, this, &RecipeEditor::importLabwareRequested);
+    for (QAbstractButton* b : std::initializer_list<QAbstractButton*>{newB, openB, importB}) {
+        m_fileButtons << b;
+        m_fileTips << b->toolTip();
+    }
     connect(undoB, &QToolButton::clicked, m_undo, &QUndoStack::undo);
     connect(redoB, &QToolButton::clicked, m_undo, &QUndoStack::redo);
     connect(m_undo, &QUndoStack::canUndoChanged, undoB, &QToolButton::setEnabled);
@@ -459,6 +463,14 @@ void RecipeEditor::showProblems(const QStringList& errors, const QStringList& wa
     }
     if (errors.isEmpty() && warnings.isEmpty())
         new QListWidgetItem(tr("The recipe validates."), m_problems);
+}
+
+void RecipeEditor::setFilesHeld(bool held, const QString& why)
+{
+    for (int i = 0; i < m_fileButtons.size(); ++i) {
+        m_fileButtons[i]->setEnabled(!held);
+        m_fileButtons[i]->setToolTip(held ? why : m_fileTips[i]);
+    }
 }
 
 } // namespace ui

@@ -10,6 +10,7 @@
 
 #include <functional>
 
+class QAbstractButton;
 class QLineEdit;
 class QListWidget;
 class QTableWidget;
@@ -48,6 +49,9 @@ public:
     /// A one-line summary of a step for the list: "2. dispense 50 µL · assay row A ← reagents A1".
     static QString stepSummary(const plates::Step& s, int index);
 
+    /// While held, New, Open… and Import are disabled with `why` as their tooltip.
+    void setFilesHeld(bool held, const QString& why);
+
 signals:
     void recipeChanged();
     void currentStepChanged(int index);
@@ -69,6 +73,8 @@ private:
     QUndoStack* m_undo;
     bool m_updating = false;
     QLineEdit* m_name;
+    QList<QAbstractButton*> m_fileButtons;  ///< New, Open…, Import: what replaces the recipe
+    QStringList m_fileTips;
     QTableWidget* m_plates;
     QListWidget* m_steps;
     StepForm* m_form;

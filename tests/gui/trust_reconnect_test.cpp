@@ -1,0 +1,151 @@
+// Issue 16 item 1: Disconnect → Connect on the in-process simulator finds the
+// same instrument (a powered machine whose cable was out), and a plate run
+// interrupted by Disconnect resumes after Connect with every well done exactly
+// once and the plunger's contents right.
+#include "app/gui/instrument_session.h"
+#include "app/gui/main_window.h"
+#include "device/link/simulated_link.h"
+#include "gui_wait.h"
+#include "gui_window.h"
+#include "widgets/plates/plate_map.h"
+#include "widgets/plates/plates_screen.h"
+#include "widgets/plates/recipe_editor.h"
+#include "widgets/plates/run_panel.h"
+
+#include <QPushButton>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QToolButton>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using guitest::pump;
+using guitest::waitFor;
+
+namespace {
+
+QPushButton* button(QWidget* root, const QString& text)
+{
+    for (auto* b : root->findChildren<QPushButton*>())
+        if (b->text() == text)
+            return b;
+    return nullptr;
+}
+
+class TrustReconnectTest : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        w = guitest::openReadyWindow({1500, 950});
+        ASSERT_TRUE(w) << "the simulated instruments did not become ready";
+        ASSERT_TRUE(w->showScreen(QStringLiteral("plates")));
+        screen = w->platesScreen();
+        screen->setRunLogDirectory(dir.path());
+        choice.baud = 0;  // unpaced, with a fast clock: runs take seconds
+        w->analyzer()->connectTo(choice);
+        ASSERT_TRUE(waitFor([&] { return analyzer()->isReady(); }, 5000));
+        auto* link = qobject_cast<dev::SimulatedLink*>(w->analyzer()->link());
+        ASSERT_NE(link, nullptr);
+        link->host().setTimeScale(20);
+        analyzer()->home(0);
+        ASSERT_TRUE(waitFor([&] { return allHomedAndStill(); }, 30000));
+    }
+    dev::Instrument* analyzer() { return w->analyzer()->instrument(); }
+    bool allHomedAndStill()
+    {
+        const auto& a = analyzer()->status().axes;
+        return a.size() == 4 && std::all_of(a.begin(), a.end(), [](const auto& x) { return x.homed && !x.moving; });
+    }
+    void reconnect()
+    {
+        w->analyzer()->disconnectLink();
+        pump(300);
+        ASSERT_FALSE(analyzer()->isReady());
+        w->analyzer()->connectTo(choice);
+        ASSERT_TRUE(waitFor([&] { return analyzer()->isReady() && analyzer()->status().axes.size() == 4; }, 5000));
+        pump(200);
+    }
+    QTemporaryDir dir;
+    ui::ConnectionChoice choice;
+    std::unique_ptr<app::MainWindow> w;
+    ui::PlatesScreen* screen = nullptr;
+};
+
+} // namespace
+
+TEST_F(TrustReconnectTest, DisconnectThenConnectFindsTheSameSimulatedInstrument)
+{
+    analyzer()->move({{0, 30}, {1, 20}, {3, 120}}, false);
+    ASSERT_TRUE(waitFor([&] { return allHomedAndStill() && std::abs(analyzer()->status().axes[3].commanded - 120) < 1e-6; }, 10000));
+    reconnect();
+    const auto& a = analyzer()->status().axes;
+    for (int i = 0; i < 4; ++i)
+        EXPECT_TRUE(a[static_cast<std::size_t>(i)].homed) << "axis " << i << " lost its homing over a reconnect";
+    EXPECT_NEAR(a[0].commanded, 30, 1e-6);
+    EXPECT_NEAR(a[1].commanded, 20, 1e-6);
+    EXPECT_NEAR(a[3].commanded, 120, 1e-6) << "the plunger's 120 µL are gone";
+}
+
+TEST_F(TrustReconnectTest, APlateRunInterruptedByDisconnectResumesWithEveryWellDoneOnce)
+{
+    ui::PlateMap* map = screen->plateMap();
+    map->setSelection({{0, 0}, {0, 1}, {0, 2}, {1, 0}, {1, 1}, {1, 2}});
+    QPushButton* aspirate = button(screen, QObject::tr("Aspirate from these"));
+    ASSERT_NE(aspirate, nullptr);
+    QTest::mouseClick(aspirate, Qt::LeftButton);
+    ASSERT_EQ(screen->plan().ops.size(), 6u);
+    int decisions = 0;
+    screen->setInterruptedDecider([&](const jobs::InterruptedOp&) {
+        ++decisions;
+        return jobs::InterruptedChoice::Redo;
+    });
+    std::vector<int> finished;
+    QObject::connect(screen->runner(), &jobs::RecipeRunner::opFinished, screen, [&](int op) { finished.push_back(op); });
+    QTest::mouseClick(button(screen->runPanel(), QObject::tr("Run")), Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return finished.size() >= 2; }, 30000)) << jobs::runStateTerm(screen->runner()->state());
+    reconnect();
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Stopped; }, 5000))
+        << jobs::runStateTerm(screen->runner()->state());
+    EXPECT_TRUE(allHomedAndStill());
+    QPushButton* resume = button(screen->runPanel(), QObject::tr("Resume"));
+    ASSERT_NE(resume, nullptr);
+    ASSERT_TRUE(resume->isEnabled());
+    QTest::mouseClick(resume, Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Finished; }, 30000))
+        << jobs::runStateTerm(screen->runner()->state()) << " after " << decisions << " decisions";
+    ASSERT_TRUE(waitFor([&] { return !analyzer()->status().anyMoving(); }, 5000));
+    std::vector<int> sorted = finished;
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_EQ(sorted, (std::vector<int>{0, 1, 2, 3, 4, 5})) << "a well was done twice or not at all";
+    EXPECT_NEAR(analyzer()->status().axes[3].commanded, 60, 1e-6) << "six wells of 10 µL";
+}
+
+// Issue 16 item 5: Open… during a plate run replaced the plate map with "No
+// plate" while the old run went on. A run holds the recipe that runs on screen.
+TEST_F(TrustReconnectTest, OpenDuringAPlateRunKeepsTheRecipeThatRuns)
+{
+    const QString other = dir.filePath(QStringLiteral("empty.recipe.json"));
+    ASSERT_TRUE(screen->saveRecipe(other));  // the recipe before any step: opening it would empty the run's plan
+    screen->plateMap()->setSelection({{0, 0}, {0, 1}, {0, 2}, {1, 0}, {1, 1}, {1, 2}});
+    QTest::mouseClick(button(screen, QObject::tr("Aspirate from these")), Qt::LeftButton);
+    ASSERT_EQ(screen->plan().ops.size(), 6u);
+    QString said;
+    QObject::connect(screen, &ui::PlatesScreen::problem, screen, [&](const QString& m) { said = m; });
+    QTest::mouseClick(button(screen->runPanel(), QObject::tr("Run")), Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Running; }, 5000));
+    QToolButton* open = nullptr;
+    for (auto* b : screen->recipeEditor()->findChildren<QToolButton*>())
+        if (b->text() == QObject::tr("Open…"))
+            open = b;
+    ASSERT_NE(open, nullptr);
+    EXPECT_FALSE(open->isEnabled()) << "Open… offered while a run is under way";
+    EXPECT_FALSE(screen->openRecipe(other));
+    EXPECT_FALSE(said.isEmpty()) << "refused without a word";
+    EXPECT_EQ(screen->plan().ops.size(), 6u) << "the plan on screen is no longer the one that runs";
+    EXPECT_EQ(screen->recipeEditor()->recipe().steps.size(), 1u);
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Finished; }, 30000));
+    EXPECT_TRUE(open->isEnabled());
+    EXPECT_TRUE(screen->openRecipe(other));
+}
