@@ -6278,6 +6278,22 @@ Keep that log aside and start this test afresh?</source>
         <source>The recipe validates.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Slot %1 is not on this deck: choose one of its slots</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (not on this deck)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Safe Z</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Depth Z</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>ui::ResponsePlot</name>

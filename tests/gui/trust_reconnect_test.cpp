@@ -7,6 +7,7 @@
 #include "device/link/simulated_link.h"
 #include "gui_wait.h"
 #include "gui_window.h"
+#include "widgets/common/number_field.h"
 #include "widgets/plates/plate_map.h"
 #include "widgets/plates/plates_screen.h"
 #include "widgets/plates/recipe_editor.h"
@@ -14,6 +15,8 @@
 
 #include <QPushButton>
 #include <QTemporaryDir>
+#include <QComboBox>
+#include <QFile>
 #include <QTest>
 #include <QToolButton>
 
@@ -148,4 +151,38 @@ TEST_F(TrustReconnectTest, OpenDuringAPlateRunKeepsTheRecipeThatRuns)
     ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Finished; }, 30000));
     EXPECT_TRUE(open->isEnabled());
     EXPECT_TRUE(screen->openRecipe(other));
+}
+
+// Issue 16 item 7: the recipe editor clamped a file's safe Z −5 to 0, depth 700
+// to 100 and slot 7 to 1 while Problems listed the originals. The editor shows
+// the file's values, marked invalid, and the recipe keeps them until fixed.
+TEST_F(TrustReconnectTest, TheRecipeEditorShowsAFilesOutOfRangeValuesAsTheyAreMarkedInvalid)
+{
+    const QString path = dir.filePath(QStringLiteral("odd.recipe.json"));
+    QFile f(path);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write(R"({"schema": "benchpilot.recipe", "version": 1, "name": "odd",
+  "plates": [{"name": "samples", "slot": "7", "labware": "sbs-96", "safe_z_mm": -5, "depth_z_mm": 700}],
+  "steps": [{"type": "aspirate", "plate": "samples", "wells": "A1", "volume_ul": 10, "speed_ul_s": 100}]})");
+    f.close();
+    screen->openRecipe(path);
+    ui::RecipeEditor* ed = screen->recipeEditor();
+    ASSERT_EQ(ed->recipe().plates.size(), 1u);
+    QStringList shown;
+    int invalid = 0;
+    for (auto* n : ed->findChildren<ui::NumberField*>()) {
+        shown << n->text();
+        invalid += n->isValid() ? 0 : 1;
+    }
+    EXPECT_TRUE(shown.contains(QStringLiteral("-5"))) << shown.join(QLatin1Char(' ')).toStdString();
+    EXPECT_TRUE(shown.contains(QStringLiteral("700"))) << shown.join(QLatin1Char(' ')).toStdString();
+    EXPECT_EQ(invalid, 2);
+    bool slotShown = false;
+    for (auto* c : ed->findChildren<QComboBox*>())
+        slotShown = slotShown || (c->currentData().toString() == QStringLiteral("7") && !c->toolTip().isEmpty());
+    EXPECT_TRUE(slotShown) << "slot 7 is not shown as the file has it";
+    EXPECT_EQ(ed->recipe().plates[0].slot, "7");
+    EXPECT_EQ(ed->recipe().plates[0].safeZMm, -5);
+    EXPECT_EQ(ed->recipe().plates[0].depthZMm, 700);
+    EXPECT_FALSE(ed->isModified()) << "opening the file changed it";
 }

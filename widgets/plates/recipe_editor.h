@@ -11,6 +11,7 @@
 #include <functional>
 
 class QAbstractButton;
+class QComboBox;
 class QLineEdit;
 class QListWidget;
 class QTableWidget;
@@ -62,6 +63,8 @@ signals:
     void importLabwareRequested();
 
 private:
+    static constexpr int kUnknownSlotRole = Qt::UserRole + 1;  ///< set on a slot item the deck does not have
+    void showSlot(QComboBox* slot, const std::string& id);
     void refreshPlates();
     void refreshSteps();
     void addStep(plates::StepType type);
