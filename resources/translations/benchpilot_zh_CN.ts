@@ -932,6 +932,46 @@ Take control back? The script&apos;s next call is refused and its jogs stop; a j
         <source>E-STOP: all motion halted. A GRBL controller that was moving has lost its position: home it (or unlock it on your word) before absolute moves. Check the machine, then press Reset E-stop.</source>
         <translation>急停：所有运动已停止。运动中的 GRBL 控制器已丢失位置：绝对移动前请先回零（或在确认后解锁）。检查设备后按“急停复位”。</translation>
     </message>
+    <message>
+        <source>a plate run</source>
+        <translation>孔板运行</translation>
+    </message>
+    <message>
+        <source>a scan</source>
+        <translation>扫描</translation>
+    </message>
+    <message>
+        <source>a tuning test</source>
+        <translation>整定测试</translation>
+    </message>
+    <message>
+        <source>a pattern</source>
+        <translation>图形运动</translation>
+    </message>
+    <message>
+        <source>%1 is running %2. Disconnect anyway? The instrument stops the job when the link goes quiet; it can be resumed after you connect again.</source>
+        <translation>%1 正在进行%2。仍要断开连接吗？链路静默后仪器会停止该任务；重新连接后可以继续。</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>、</translation>
+    </message>
+    <message>
+        <source>%1 is running %2</source>
+        <translation>%1 正在进行%2</translation>
+    </message>
+    <message>
+        <source>the recipe has changes that are not saved</source>
+        <translation>加样方案有未保存的修改</translation>
+    </message>
+    <message>
+        <source>Quit BenchPilot? %1.</source>
+        <translation>退出 BenchPilot？%1。</translation>
+    </message>
+    <message>
+        <source>; </source>
+        <translation>；</translation>
+    </message>
 </context>
 <context>
     <name>cli</name>
@@ -6438,6 +6478,10 @@ Keep that log aside and start this test afresh?</source>
     </message>
     <message>
         <source>done</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Abort the run? The analyzer stops at once and raises the tip; the wells not done yet stay undone (the run log can resume them later).</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

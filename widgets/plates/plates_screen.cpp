@@ -185,6 +185,7 @@ PlatesScreen::PlatesScreen(dev::Instrument* analyzer, QWidget* parent)
 void PlatesScreen::setConfirm(Confirm c)
 {
     m_confirm = c;
+    m_run->setConfirm(c);
     m_calibration->setConfirm(std::move(c));
 }
 
