@@ -11381,6 +11381,16 @@ A loop this different may oscillate or run away. Apply them?</source>
         <comment>recipe.run.operator_skip</comment>
         <translation>操作员将被中断的操作视为已完成</translation>
     </message>
+    <message>
+        <source>this is not the instrument the run was on (%1; now %2): resume it on that one, or start the run again</source>
+        <comment>recipe.resume.other_instrument</comment>
+        <translation>这不是运行所在的仪器（%1；现在是 %2）：请在原仪器上继续，或重新开始运行</translation>
+    </message>
+    <message>
+        <source>found the same instrument (%1), homed, with the plunger at %2 as the run left it</source>
+        <comment>recipe.resume.found</comment>
+        <translation>找到同一台仪器（%1），已回零，柱塞在 %2，与运行停止时一致</translation>
+    </message>
 </context>
 <context>
     <name>words::ScanWords</name>

@@ -115,7 +115,11 @@ TEST_F(TrustReconnectTest, APlateRunInterruptedByDisconnectResumesWithEveryWellD
     QPushButton* resume = button(screen->runPanel(), QObject::tr("Resume"));
     ASSERT_NE(resume, nullptr);
     ASSERT_TRUE(resume->isEnabled());
+    QStringList notes;
+    QObject::connect(screen, &ui::PlatesScreen::note, screen, [&](const QString& m) { notes << m; });
     QTest::mouseClick(resume, Qt::LeftButton);
+    EXPECT_TRUE(notes.join(QLatin1Char('\n')).contains(QStringLiteral("found the same instrument")))
+        << "the resume does not say what it found: " << notes.join(QLatin1Char('\n')).toStdString();
     ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Finished; }, 30000))
         << jobs::runStateTerm(screen->runner()->state()) << " after " << decisions << " decisions";
     ASSERT_TRUE(waitFor([&] { return !analyzer()->status().anyMoving(); }, 5000));
@@ -185,4 +189,32 @@ TEST_F(TrustReconnectTest, TheRecipeEditorShowsAFilesOutOfRangeValuesAsTheyAreMa
     EXPECT_EQ(ed->recipe().plates[0].safeZMm, -5);
     EXPECT_EQ(ed->recipe().plates[0].depthZMm, 700);
     EXPECT_FALSE(ed->isModified()) << "opening the file changed it";
+}
+
+// Issue 16 item 1: a resume after a reconnect checks the instrument against the
+// run. One that was switched off (a fresh simulator, homed again) has an empty
+// syringe: the resume is refused and says where the plunger is and should be.
+TEST_F(TrustReconnectTest, AResumeOnAnInstrumentWhosePlungerDiffersIsRefusedSayingWhy)
+{
+    screen->plateMap()->setSelection({{0, 0}, {0, 1}, {0, 2}, {1, 0}, {1, 1}, {1, 2}});
+    QTest::mouseClick(button(screen, QObject::tr("Aspirate from these")), Qt::LeftButton);
+    int finished = 0;
+    QObject::connect(screen->runner(), &jobs::RecipeRunner::opFinished, screen, [&] { ++finished; });
+    QTest::mouseClick(button(screen->runPanel(), QObject::tr("Run")), Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return finished >= 2; }, 30000));
+    w->analyzer()->disconnectLink();
+    pump(300);
+    ui::ConnectionChoice other = choice;
+    other.baud = 921600;  // another link speed: a new simulator, as if the analyzer had been switched off
+    w->analyzer()->connectTo(other);
+    ASSERT_TRUE(waitFor([&] { return analyzer()->isReady() && analyzer()->status().axes.size() == 4; }, 5000));
+    analyzer()->home(0);
+    ASSERT_TRUE(waitFor([&] { return allHomedAndStill(); }, 60000));
+    ASSERT_EQ(screen->runner()->state(), jobs::RunState::Stopped);
+    QString said;
+    QObject::connect(screen->runPanel(), &ui::RunPanel::problem, screen, [&](const QString& m) { said = m; });
+    QTest::mouseClick(button(screen->runPanel(), QObject::tr("Resume")), Qt::LeftButton);
+    pump(200);
+    EXPECT_EQ(screen->runner()->state(), jobs::RunState::Stopped) << "resumed with an empty syringe";
+    EXPECT_TRUE(said.contains(QStringLiteral("plunger"))) << said.toStdString();
 }
