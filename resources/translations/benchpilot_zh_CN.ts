@@ -4126,6 +4126,10 @@ Keep that log aside and start this test afresh?</source>
         <source>%1 h %2 min</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>A test is running: the test on screen stays until it has finished or been aborted.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>ui::ChannelPicker</name>
@@ -5394,6 +5398,10 @@ Keep that log aside and start this test afresh?</source>
     </message>
     <message>
         <source>There is no run to export yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A pattern is running: another can be loaded once it has ended.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -7450,6 +7458,10 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
         <source>These gains are far from the ones %1 runs now:
 %2
 A loop this different may oscillate or run away. Apply them?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A tuning run is under way: results can be opened once it has ended.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -194,3 +194,24 @@ TEST_F(TrustTuningTest, TheScreenSpeaksOfGainsNotOfSeedEquationsOrTables)
         for (const QString& jargon : {QStringLiteral("seed"), QStringLiteral("Table 1"), QStringLiteral("eq. ")})
             EXPECT_FALSE(text.contains(jargon)) << text.toStdString();
 }
+
+// Issue 16 item 5 on the Tuning screen: results opened during a run would
+// replace the ones the running assistant fills in. Held while it runs.
+TEST_F(TrustTuningTest, OpeningResultsIsHeldWhileATuningRunIsUnderWay)
+{
+    ASSERT_TRUE(t->setModelPlant(QStringLiteral("fopdt:K=2,tau=0.5,L=0.1")));
+    ASSERT_TRUE(t->selectTarget(QStringLiteral("Model plant")));
+    ASSERT_TRUE(t->startAssistant());
+    ASSERT_TRUE(t->runner()->busy());
+    QPushButton* open = nullptr;
+    for (auto* b : t->findChildren<QPushButton*>())
+        if (b->text() == QStringLiteral("Open results…"))
+            open = b;
+    ASSERT_NE(open, nullptr);
+    EXPECT_FALSE(open->isEnabled());
+    EXPECT_FALSE(t->loadResults(QStringLiteral("/nonexistent/any.tuning.json")));
+    EXPECT_TRUE(t->statusText().contains(QStringLiteral("under way"))) << t->statusText().toStdString();
+    t->abort();
+    ASSERT_TRUE(waitFor([&] { return !t->runner()->busy(); }, 10000));
+    EXPECT_TRUE(open->isEnabled());
+}

@@ -402,6 +402,7 @@ void TuningScreen::refreshReady()
     m_steps->setReady(ready);
     m_zn->setReady(ready && (!dynamic_cast<dev::ModelTarget*>(m_targetObj.get()) || whyNoUltimateGain(m_plantSpec).empty()));
     m_save->setEnabled(m_haveResult && !m_runner->busy());
+    m_open->setEnabled(!m_runner->busy());
     m_resume->setEnabled(m_runner->state() == dev::TuningRunner::State::Interrupted && m_targetObj && m_targetObj->ready());
 }
 
@@ -483,6 +484,11 @@ bool TuningScreen::saveResults(const QString& given)
 
 bool TuningScreen::loadResults(const QString& given)
 {
+    if (m_runner->busy()) {
+        // The results on screen are the ones the running job fills in (issue 16 item 5).
+        say(tr("A tuning run is under way: results can be opened once it has ended."), true);
+        return false;
+    }
     QString path = given;
     if (path.isEmpty() && m_chooser)
         path = m_chooser(tr("Open tuning results"), tr("Tuning results (*.tuning.json)"), false);
