@@ -29,9 +29,16 @@ void InstrumentSession::disconnectLink()
         m_benchPilot->setTransport(nullptr);
     if (m_grbl)
         m_grbl->setTransport(nullptr);
-    if (m_link)
-        m_link->deleteLater();
+    if (m_link && m_link != m_sim)
+        m_link->deleteLater();  // the simulator stays powered: only its cable is out
     m_link = nullptr;
+}
+
+void InstrumentSession::dropSimulator()
+{
+    if (m_sim)
+        m_sim->deleteLater();
+    m_sim = nullptr;
 }
 
 dev::BenchPilotClient* InstrumentSession::benchPilotOn(dev::Transport* transport)
@@ -49,11 +56,17 @@ void InstrumentSession::connectTo(const ui::ConnectionChoice& choice)
     disconnectLink();
     m_choice = choice;
     if (choice.simulator) {
-        auto* sim = new dev::SimulatedLink(m_kind, choice.baud, this);
-        m_link = sim;
-        benchPilotOn(sim->hostEnd())->connectLink();
+        // The same simulator again when only the cable was out; a new one for another wire speed.
+        if (!m_sim || m_simBaud != choice.baud) {
+            dropSimulator();
+            m_sim = new dev::SimulatedLink(m_kind, choice.baud, this);
+            m_simBaud = choice.baud;
+        }
+        m_link = m_sim;
+        benchPilotOn(m_sim->hostEnd())->connectLink();
         return;
     }
+    dropSimulator();  // another instrument was chosen
     auto* serial = new dev::SerialTransport(choice.port, choice.baud, this);
     m_link = serial;
     connectPort(serial, choice);

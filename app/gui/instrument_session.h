@@ -22,6 +22,7 @@ namespace dev {
 class BenchPilotClient;
 class GrblClient;
 class ProtocolProbe;
+class SimulatedLink;
 class Transport;
 }
 
@@ -63,6 +64,7 @@ private:
     void connectPort(dev::Transport* transport, const ui::ConnectionChoice& choice);
     dev::GrblClient* grblOn(dev::Transport* transport, const ui::ConnectionChoice& choice);
     void stopProbe();
+    void dropSimulator();
 
     proto::DeviceKind m_kind;
     QString m_name;
@@ -71,6 +73,11 @@ private:
     QPointer<dev::GrblClient> m_grbl;
     QPointer<dev::ProtocolProbe> m_probe;
     QPointer<QObject> m_link;
+    /// The in-process simulator, kept across Disconnect → Connect like a powered
+    /// instrument whose cable was out: positions, homed flags and the plunger's
+    /// contents are found again. Ends with the session or when another link is chosen.
+    QPointer<dev::SimulatedLink> m_sim;
+    qint32 m_simBaud = 0;
     ui::ConnectionChoice m_choice;
 };
 

@@ -8,6 +8,9 @@
 #include "api_panel.h"
 #include "app/api/api_server.h"
 #include "device/jobs/pattern_runner.h"
+#include "widgets/plates/recipe_editor.h"
+#include "device/jobs/tuning/tuning_runner.h"
+#include "device/jobs/scan_runner.h"
 #include "device/telemetry/telemetry_hub.h"
 #include "widgets/connection_bar.h"
 #include "widgets/event_log.h"
@@ -314,6 +317,8 @@ void MainWindow::showInstrument(int index)
 
 bool MainWindow::confirm(const QString& question)
 {
+    if (m_options.answer)
+        return m_options.answer(question);
     return QMessageBox::question(this, tr("Confirm move"), question, QMessageBox::Yes | QMessageBox::Cancel,
                                  QMessageBox::Cancel)
         == QMessageBox::Yes;
@@ -324,7 +329,9 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
     InstrumentSession* s = m_sessions[i];
     dev::Instrument* c = s->instrument();
     connect(bar, &ui::ConnectionBar::connectRequested, this, [s](const ui::ConnectionChoice& ch) { s->connectTo(ch); });
-    connect(bar, &ui::ConnectionBar::disconnectRequested, this, [s, bar] {
+    connect(bar, &ui::ConnectionBar::disconnectRequested, this, [this, i, s, bar] {
+        if (!confirmDisconnect(i))
+            return;
         bar->showActivity({});
         s->disconnectLink();
     });
@@ -594,8 +601,48 @@ void MainWindow::saveSettings()
     }
 }
 
+QStringList MainWindow::runningJobs(int index) const
+{
+    QStringList out;
+    if (index == 0 && m_plates->runHoldsFiles())
+        out << tr("a plate run");
+    if (index == 1) {
+        const auto st = m_scan->runner()->state();
+        if (st == jobs::ScanRunner::State::Running || st == jobs::ScanRunner::State::Pausing || st == jobs::ScanRunner::State::Paused)
+            out << tr("a scan");
+        if (m_tuning->runner()->busy())
+            out << tr("a tuning test");
+    }
+    if (m_motion->runner(index) && m_motion->runner(index)->busy())
+        out << tr("a pattern");
+    return out;
+}
+
+bool MainWindow::confirmDisconnect(int index)
+{
+    const QStringList jobs = runningJobs(index);
+    if (jobs.isEmpty() || (!m_options.confirmDialogs && !m_options.answer))
+        return true;
+    return confirm(tr("%1 is running %2. Disconnect anyway? The instrument stops the job when the link goes quiet; "
+                      "it can be resumed after you connect again.")
+                       .arg(m_sessions[index]->name(), jobs.join(tr(", "))));
+}
+
 void MainWindow::closeEvent(QCloseEvent* event)
 {
+    // The one rule: quitting with unsaved edits or a running job asks first.
+    if (m_options.confirmDialogs || m_options.answer) {
+        QStringList reasons;
+        for (int i = 0; i < 2; ++i)
+            for (const QString& job : runningJobs(i))
+                reasons << tr("%1 is running %2").arg(m_sessions[i]->name(), job);
+        if (m_plates->recipeEditor()->isModified())
+            reasons << tr("the recipe has changes that are not saved");
+        if (!reasons.isEmpty() && !confirm(tr("Quit BenchPilot? %1.").arg(reasons.join(tr("; "))))) {
+            event->ignore();
+            return;
+        }
+    }
     for (auto* s : m_sessions)
         s->instrument()->stopAllJogs();
     if (m_options.persistSettings)

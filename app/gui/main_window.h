@@ -6,6 +6,7 @@
 
 #include <QMainWindow>
 
+#include <functional>
 #include <optional>
 
 class QDockWidget;
@@ -45,6 +46,8 @@ class MotionScreens;
 struct MainWindowOptions {
     bool persistSettings = true;  ///< false for screenshots and tests: read nothing, write nothing
     bool confirmDialogs = true;   ///< false in tests: far moves go ahead without asking
+    /// Tests: answers the window's own questions (Disconnect during a run, quitting) instead of a dialog.
+    std::function<bool(const QString& question)> answer;
     bool autoConnect = true;      ///< connect both instruments at start
     /// Connections given on the command line (--sim, --port), over what was remembered.
     std::optional<ui::ConnectionChoice> connection[2];
@@ -105,6 +108,10 @@ private:
     void loadSettings();
     void saveSettings();
     bool confirm(const QString& question);
+    /// The jobs running on instrument `index` now, for people ("a plate run"); empty: none.
+    QStringList runningJobs(int index) const;
+    /// Asks when a job runs on it (issue 16 item 10); true: go ahead.
+    bool confirmDisconnect(int index);
 
     MainWindowOptions m_options;
     InstrumentSession* m_sessions[2];

@@ -252,6 +252,8 @@ bool RecipeRunner::start(const QString& logPath, msg::Message* error)
 
 void RecipeRunner::beginRunning()
 {
+    const auto& id = m_client->identity();
+    m_runInstrument = (id.model + QLatin1Char(' ') + id.firmware).trimmed().toStdString();
     m_pauseAsked = false;
     m_plannedDoneS = 0;
     m_sessionStartS = m_elapsedBeforeS;

@@ -130,6 +130,9 @@ private:
     int nextOpenOp(int from) const;
     int axis(char letter) const;
     double plungerNow() const;
+    /// After a reconnect: the same instrument as the run began on, its plunger where the
+    /// run left it; says what it found (message), or why not (error).
+    bool checkResumedInstrument(msg::Message* error);
 
     dev::Instrument* m_client;
     plates::RecipePlan m_plan;
@@ -151,6 +154,7 @@ private:
     double m_x = 0, m_y = 0, m_z = 0;
     double m_pumpUl = 0;       ///< plunger (µL), from the status at (re)start plus our moves
     double m_pumpStartUl = 0;  ///< plunger when the op's "pump" line was written
+    std::string m_runInstrument;  ///< model and firmware the run was (re)started on
     std::optional<platefiles::RunLogState> m_logState;  ///< the log being resumed, while deciding
     QTimer m_moveTimer, m_dwellTimer;
     quint64 m_moveSentUs = 0;  ///< device clock when the move in flight was sent

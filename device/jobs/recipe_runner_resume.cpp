@@ -131,6 +131,26 @@ bool RecipeRunner::applyDecision(int op, bool redo)
     return true;
 }
 
+bool RecipeRunner::checkResumedInstrument(msg::Message* error)
+{
+    // A reconnect may find another instrument, or this one power-cycled: its plunger
+    // then holds nothing the log says it should, and the next wells would get wrong volumes.
+    const auto& id = m_client->identity();
+    const std::string now = (id.model + QLatin1Char(' ') + id.firmware).trimmed().toStdString();
+    if (!m_runInstrument.empty() && now != m_runInstrument) {
+        *error = msg::make("recipe.resume.other_instrument", {msg::verbatim("was", m_runInstrument), msg::verbatim("now", now)});
+        return false;
+    }
+    const double plunger = plungerNow();
+    // Mid-pump the plunger's place is the evidence the operator decides on (decideInterrupted).
+    if (!m_pumpLogged && std::abs(plunger - m_pumpUl) > kPlungerToleranceUl) {
+        *error = msg::make("recipe.run.plunger_moved", {resumeUl("plunger", plunger), resumeUl("logged", m_pumpUl)});
+        return false;
+    }
+    emit message(msg::make("recipe.resume.found", {msg::verbatim("instrument", now), resumeUl("plunger", plunger)}), false);
+    return true;
+}
+
 bool RecipeRunner::resume(const InterruptedDecider& decide, msg::Message* error)
 {
     if (m_state == RunState::Paused) {
@@ -148,7 +168,7 @@ bool RecipeRunner::resume(const InterruptedDecider& decide, msg::Message* error)
         *error = msg::make("recipe.run.log_closed");
         return false;
     }
-    if (!checkMachine(error))
+    if (!checkMachine(error) || !checkResumedInstrument(error))
         return false;
     bool redo = true;
     if (m_pumpLogged && !decideInterrupted(m_op, decide, &redo, error))

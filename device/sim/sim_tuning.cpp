@@ -39,13 +39,13 @@ SimTuning::SimTuning(SimMachine& machine) : m_m(machine)
 {
     m_axes.resize(static_cast<std::size_t>(machine.axisCount()));
     for (auto& a : m_axes)
-        a.gains = a.saved = machine.config().gains;
+        a.gains = a.saved = a.previous = machine.config().gains;
 }
 
 void SimTuning::setAllGains(const PidGains& g)
 {
     for (auto& a : m_axes)
-        a.gains = g;
+        a.gains = a.previous = g;
 }
 
 bool SimTuning::testRunning(int axis) const
@@ -95,7 +95,10 @@ SimTuning::Result SimTuning::setGains(const proto::SetGainsRequest& r)
     // Eq. 2 is incremental: new gains only size the next increments, so the
     // switch at the next control period is bumpless.
     Axis& a = m_axes[r.axis];
-    a.gains = {r.gains.kp, r.gains.ki, r.gains.kd};
+    const PidGains wanted{r.gains.kp, r.gains.ki, r.gains.kd};
+    if (!(wanted.kp == a.gains.kp && wanted.ki == a.gains.ki && wanted.kd == a.gains.kd))
+        a.previous = a.gains;
+    a.gains = wanted;
     if (r.flags & proto::kSetGainsSave)
         a.saved = a.gains;
     m_m.raiseEvent(proto::kEvGainsChanged, r.axis,
@@ -176,6 +179,8 @@ SimTuning::Result SimTuning::stepTest(const proto::StepTestRequest& r)
     const double deadband = m_m.config().loop.deadbandCounts * s.plant->config().resolution + 1e-12;
     start(r.axis, Experiment::stepTest(spec, s.plant->reference(), 0, m_m.config().controlPeriodS, deadband), 1,
           toWire({spec.gains.kp, spec.gains.ki, spec.gains.kd}));
+    // A host may send the operator's own set as the "trial": it is still the set the axis holds under.
+    m_axes[r.axis].testUsesOperatorGains = !r.trialGains || *r.trialGains == toWire(op);
     return std::nullopt;
 }
 
@@ -216,6 +221,7 @@ void SimTuning::start(int axis, Experiment x, std::uint8_t kind, const proto::Wi
     a.lastReason = EndReason::Running;
     a.tripValue = a.tripLimit = 0;
     a.lastU = 0;
+    a.testUsesOperatorGains = false;
     a.test = std::move(x);
     m_lastHeardS = m_m.timeS();  // the request itself was a frame from the host
 }
@@ -270,7 +276,18 @@ void SimTuning::end(int axis)
     a.tripLimit = x.tripLimit();
     auto& s = m_m.st(axis);
     const char letter = s.plant->config().letter;
-    // The operator's gains were never replaced; the axis stops where it is
+    const bool diverged = x.reason() == EndReason::Excursion || x.reason() == EndReason::FollowingError;
+    const bool fallBack = diverged && a.testUsesOperatorGains
+        && !(a.previous.kp == a.gains.kp && a.previous.ki == a.gains.ki && a.previous.kd == a.gains.kd);
+    a.testUsesOperatorGains = false;
+    if (fallBack) {
+        // The operator's set is what diverged: hold under the one before it.
+        std::swap(a.gains, a.previous);
+        m_m.raiseEvent(proto::kEvGainsChanged, axis,
+                       fmt("gains per control period: kp %.6g, ki %.6g, kd %.6g", a.gains.kp, a.gains.ki, a.gains.kd)
+                           + " (the set in force before the one that tripped the test)");
+    }
+    // Trial gains never replaced the operator's; the axis stops where it is
     // (or stays on the step it settled on) under them.
     if (x.reason() == EndReason::Settled)
         s.plant->resumeLoop(m_m.config().loop);
@@ -281,6 +298,7 @@ void SimTuning::end(int axis)
     const char* what = x.kind() == Experiment::Kind::Step ? "step test" : "relay test";
     const std::string axisName = std::string("axis ") + letter + " " + what;
     const double t = x.elapsedS();
+    const std::string stoppedAt = fmt("; axis stopped at %.4f mm", s.plant->reportedMeasured() - s.measuredOffset);
     switch (x.reason()) {
     case EndReason::Settled:
         m_m.raiseEvent(proto::kEvTestEnded, axis, axisName + fmt(" settled after %.3f s", t));
@@ -290,14 +308,16 @@ void SimTuning::end(int axis)
         break;
     case EndReason::Excursion:
         m_m.raiseEvent(proto::kEvTestTripped, axis,
-                       axisName + fmt(" stopped: max excursion %.4f mm crossed (%.4f mm) after %.3f s", x.tripLimit(), x.tripValue(), t));
+                       axisName + fmt(" stopped: max excursion %.4f mm crossed (%.4f mm) after %.3f s", x.tripLimit(), x.tripValue(), t)
+                           + stoppedAt);
         break;
     case EndReason::FollowingError:
         m_m.raiseEvent(proto::kEvTestTripped, axis,
-                       axisName + fmt(" stopped: max following error %.4f mm crossed (%.4f mm) after %.3f s", x.tripLimit(), x.tripValue(), t));
+                       axisName + fmt(" stopped: max following error %.4f mm crossed (%.4f mm) after %.3f s", x.tripLimit(), x.tripValue(), t)
+                           + stoppedAt);
         break;
     case EndReason::Duration:
-        m_m.raiseEvent(proto::kEvTestTripped, axis, axisName + fmt(" stopped: max duration %.3f s reached", x.tripLimit()));
+        m_m.raiseEvent(proto::kEvTestTripped, axis, axisName + fmt(" stopped: max duration %.3f s reached", x.tripLimit()) + stoppedAt);
         break;
     case EndReason::Stopped: m_m.raiseEvent(proto::kEvTestAborted, axis, axisName + " stopped on request"); break;
     case EndReason::EStop: m_m.raiseEvent(proto::kEvTestAborted, axis, axisName + " ended by E-stop"); break;

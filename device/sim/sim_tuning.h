@@ -8,7 +8,10 @@
 // Trial gains never replace the operator's: they live in the test alone, and
 // whatever ends a test (settled, done, envelope, STOP, TEST_ABORT, E-stop, the
 // host going quiet, a new session) leaves the axis stopped under the
-// operator's gains. The device needs no host for that.
+// operator's gains. The device needs no host for that. One exception: a test
+// run under the operator's own gains that trips its envelope has shown those
+// gains to diverge, so the axis is stopped under the set in force before them
+// (holding on the diverging set would drive it on, millimetres past the trip).
 #include "device/protocol/messages_tuning.h"
 #include "device/sim/machine_config.h"
 #include "motion/control/experiment.h"
@@ -67,6 +70,8 @@ private:
     struct Axis {
         PidGains gains;            ///< the operator's: in force whenever no test runs
         PidGains saved;            ///< power-up set
+        PidGains previous;         ///< the operator's set before the last SET_GAINS
+        bool testUsesOperatorGains = false;  ///< the running test has no trial gains
         std::optional<motion::control::Experiment> test;
         double lastU = 0;          ///< the test's output last period
         Capture capture;

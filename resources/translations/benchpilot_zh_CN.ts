@@ -938,6 +938,46 @@ Take control back? The script&apos;s next call is refused and its jogs stop; a j
         <source>E-STOP: all motion halted. A GRBL controller that was moving has lost its position: home it (or unlock it on your word) before absolute moves. Check the machine, then press Reset E-stop.</source>
         <translation>急停：所有运动已停止。运动中的 GRBL 控制器已丢失位置：绝对移动前请先回零（或在确认后解锁）。检查设备后按“急停复位”。</translation>
     </message>
+    <message>
+        <source>a plate run</source>
+        <translation>孔板运行</translation>
+    </message>
+    <message>
+        <source>a scan</source>
+        <translation>扫描</translation>
+    </message>
+    <message>
+        <source>a tuning test</source>
+        <translation>整定测试</translation>
+    </message>
+    <message>
+        <source>a pattern</source>
+        <translation>图形运动</translation>
+    </message>
+    <message>
+        <source>%1 is running %2. Disconnect anyway? The instrument stops the job when the link goes quiet; it can be resumed after you connect again.</source>
+        <translation>%1 正在进行%2。仍要断开连接吗？链路静默后仪器会停止该任务；重新连接后可以继续。</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>、</translation>
+    </message>
+    <message>
+        <source>%1 is running %2</source>
+        <translation>%1 正在进行%2</translation>
+    </message>
+    <message>
+        <source>the recipe has changes that are not saved</source>
+        <translation>加样方案有未保存的修改</translation>
+    </message>
+    <message>
+        <source>Quit BenchPilot? %1.</source>
+        <translation>退出 BenchPilot？%1。</translation>
+    </message>
+    <message>
+        <source>; </source>
+        <translation>；</translation>
+    </message>
 </context>
 <context>
     <name>cli</name>
@@ -4202,6 +4242,10 @@ Keep that log aside and start this test afresh?</source>
         <source>%1 h %2 min</source>
         <translation>%1 h %2 min</translation>
     </message>
+    <message>
+        <source>A test is running: the test on screen stays until it has finished or been aborted.</source>
+        <translation>测试正在运行：屏幕上的测试会保留，直到它完成或被中止。</translation>
+    </message>
 </context>
 <context>
     <name>ui::ChannelPicker</name>
@@ -4651,10 +4695,6 @@ Keep that log aside and start this test afresh?</source>
         <translation>%1 的 PID 增益</translation>
     </message>
     <message>
-        <source>Shown in continuous form: Kp, Ki in 1/s, Kd in s. Beside them the discrete gains per control period T = %1 that %2 runs (seed 002 eq. 2): ki = Ki·T, kd = Kd/T.</source>
-        <translation>以连续形式显示：Kp，Ki 单位为 1/s，Kd 单位为 s。旁边是%2所用控制周期 T = %1 下的离散增益（文献 002 式 2）：ki = Ki·T，kd = Kd/T。</translation>
-    </message>
-    <message>
         <source>the device</source>
         <translation>设备</translation>
     </message>
@@ -4683,8 +4723,16 @@ Keep that log aside and start this test afresh?</source>
         <translation> · 已编辑，未应用</translation>
     </message>
     <message>
-        <source>every gain must be a number, 0 or more</source>
-        <translation>每个增益都必须是不小于 0 的数</translation>
+        <source>Shown in continuous form: Kp, Ki in 1/s, Kd in s. Beside them the discrete gains per control period T = %1 that %2 runs: ki = Ki·T, kd = Kd/T.</source>
+        <translation>以连续形式显示：Kp，Ki 单位为 1/s，Kd 单位为 s。旁边是 %2 在控制周期 T = %1 下实际执行的离散增益：ki = Ki·T，kd = Kd/T。</translation>
+    </message>
+    <message>
+        <source>Incremental PID: Δu = kp·(e_k − e_k−1) + ki·e_k + kd·(e_k − 2e_k−1 + e_k−2); see docs/tuning.md (the stage paper&apos;s eq. 2).</source>
+        <translation>增量式 PID：Δu = kp·(e_k − e_k−1) + ki·e_k + kd·(e_k − 2e_k−1 + e_k−2)；见 docs/tuning.md（载物台文献的式 2）。</translation>
+    </message>
+    <message>
+        <source>%1 Nothing is sent until it is fixed.</source>
+        <translation>%1 改正之前不会发送任何值。</translation>
     </message>
 </context>
 <context>
@@ -5021,6 +5069,37 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Dismiss</source>
         <translation>关闭</translation>
+    </message>
+</context>
+<context>
+    <name>ui::NumberField</name>
+    <message>
+        <source>the value</source>
+        <translation>该值</translation>
+    </message>
+    <message>
+        <source>%1 is empty: type a number</source>
+        <translation>%1 为空：请输入数字</translation>
+    </message>
+    <message>
+        <source>“%1” is not a number</source>
+        <translation>“%1”不是数字</translation>
+    </message>
+    <message>
+        <source>%1 must be a whole number</source>
+        <translation>%1 必须是整数</translation>
+    </message>
+    <message>
+        <source>%1 must be 0 or more, not %2</source>
+        <translation>%1 必须不小于 0，而不是 %2</translation>
+    </message>
+    <message>
+        <source>%1 must be at least %2, not %3</source>
+        <translation>%1 必须不小于 %2，而不是 %3</translation>
+    </message>
+    <message>
+        <source>%1 must be at most %2, not %3</source>
+        <translation>%1 必须不大于 %2，而不是 %3</translation>
     </message>
 </context>
 <context>
@@ -5437,6 +5516,10 @@ Keep that log aside and start this test afresh?</source>
         <source>There is no run to export yet.</source>
         <translation>还没有可导出的运行数据。</translation>
     </message>
+    <message>
+        <source>A pattern is running: another can be loaded once it has ended.</source>
+        <translation>图形正在运行：结束后才能加载另一个。</translation>
+    </message>
 </context>
 <context>
     <name>ui::PlateMap</name>
@@ -5644,6 +5727,14 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>imported %1 (%2 wells) as %3</source>
         <translation>已将 %1（%2 个孔）导入为 %3</translation>
+    </message>
+    <message>
+        <source>Held while a run is under way: the recipe that runs stays the recipe on screen</source>
+        <translation>运行期间保持不变：正在运行的方案就是屏幕上的方案</translation>
+    </message>
+    <message>
+        <source>A run is under way: the recipe and plate map stay as they are until it has finished or been aborted.</source>
+        <translation>运行正在进行：方案和孔板图保持不变，直到运行完成或被中止。</translation>
     </message>
 </context>
 <context>
@@ -6354,6 +6445,22 @@ Keep that log aside and start this test afresh?</source>
         <source>The recipe validates.</source>
         <translation>加样方案检查通过。</translation>
     </message>
+    <message>
+        <source>Slot %1 is not on this deck: choose one of its slots</source>
+        <translation>板位 %1 不在此台面上：请选择台面上的一个板位</translation>
+    </message>
+    <message>
+        <source>%1 (not on this deck)</source>
+        <translation>%1（不在此台面上）</translation>
+    </message>
+    <message>
+        <source>Safe Z</source>
+        <translation>安全 Z</translation>
+    </message>
+    <message>
+        <source>Depth Z</source>
+        <translation>深度 Z</translation>
+    </message>
 </context>
 <context>
     <name>ui::ResponsePlot</name>
@@ -6499,6 +6606,10 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>done</source>
         <translation>已完成</translation>
+    </message>
+    <message>
+        <source>Abort the run? The analyzer stops at once and raises the tip; the wells not done yet stay undone (the run log can resume them later).</source>
+        <translation>中止运行？分析仪立即停止并抬起加样针；尚未完成的孔保持未完成（之后可从运行日志继续）。</translation>
     </message>
 </context>
 <context>
@@ -7311,6 +7422,14 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
         <source>never</source>
         <translation>从未</translation>
     </message>
+    <message>
+        <source>unstable</source>
+        <translation>不稳定</translation>
+    </message>
+    <message>
+        <source>did not settle</source>
+        <translation>未稳定</translation>
+    </message>
 </context>
 <context>
     <name>ui::TravelView</name>
@@ -7442,6 +7561,34 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     <message>
         <source>Model plant</source>
         <translation>模型对象</translation>
+    </message>
+    <message>
+        <source>Kp</source>
+        <translation>Kp</translation>
+    </message>
+    <message>
+        <source>Ki</source>
+        <translation>Ki</translation>
+    </message>
+    <message>
+        <source>Kd</source>
+        <translation>Kd</translation>
+    </message>
+    <message>
+        <source>%1 %2 → %3 (%4×)</source>
+        <translation>%1 %2 → %3（%4 倍）</translation>
+    </message>
+    <message>
+        <source>These gains are far from the ones %1 runs now:
+%2
+A loop this different may oscillate or run away. Apply them?</source>
+        <translation>这些增益与 %1 当前运行的增益相差很大：
+%2
+差别这么大的回路可能振荡或失控。仍要应用吗？</translation>
+    </message>
+    <message>
+        <source>A tuning run is under way: results can be opened once it has ended.</source>
+        <translation>整定正在进行：结束后才能打开结果。</translation>
     </message>
 </context>
 <context>
@@ -7642,10 +7789,6 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
         <translation>kd / 周期</translation>
     </message>
     <message>
-        <source>Source</source>
-        <translation>来源</translation>
-    </message>
-    <message>
         <source> µm</source>
         <translation> µm</translation>
     </message>
@@ -7682,10 +7825,6 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
         <translation>&lt;br&gt;用 %1 验证：超调量 %2 %，%3</translation>
     </message>
     <message>
-        <source>, inside seed 002&apos;s ±5 µm from %1 ms</source>
-        <translation>，在 %1 ms 后进入文献 002 的 ±5 µm 范围</translation>
-    </message>
-    <message>
         <source>, &lt;b&gt;never inside ±5 µm&lt;/b&gt;</source>
         <translation>，&lt;b&gt;从未进入 ±5 µm 范围&lt;/b&gt;</translation>
     </message>
@@ -7696,6 +7835,14 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     <message>
         <source>Z-N %1: %2</source>
         <translation>Z-N %1：%2</translation>
+    </message>
+    <message>
+        <source>, inside ±5 µm of the target from %1 ms</source>
+        <translation>，自 %1 ms 起在目标 ±5 µm 以内</translation>
+    </message>
+    <message>
+        <source>Source: %1</source>
+        <translation>来源：%1</translation>
     </message>
 </context>
 <context>
@@ -11371,6 +11518,16 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
         <source>the operator counted the interrupted op as done</source>
         <comment>recipe.run.operator_skip</comment>
         <translation>操作员将被中断的操作视为已完成</translation>
+    </message>
+    <message>
+        <source>this is not the instrument the run was on (%1; now %2): resume it on that one, or start the run again</source>
+        <comment>recipe.resume.other_instrument</comment>
+        <translation>这不是运行所在的仪器（%1；现在是 %2）：请在原仪器上继续，或重新开始运行</translation>
+    </message>
+    <message>
+        <source>found the same instrument (%1), homed, with the plunger at %2 as the run left it</source>
+        <comment>recipe.resume.found</comment>
+        <translation>找到同一台仪器（%1），已回零，柱塞在 %2，与运行停止时一致</translation>
     </message>
 </context>
 <context>

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace {
@@ -287,4 +288,33 @@ TEST_F(TuningStage, NewGainsTakeOverBetweenTwoPeriodsWithoutABump)
     run(0.2, [&] { worst = std::max(worst, std::abs(m.axis(kX).controllerU() - u0)); });
     EXPECT_LT(worst, 0.001) << "the output moved at the switch";
     EXPECT_NEAR(measuredMm(m, kX), 50, 0.001);
+}
+
+// Issue 16 item 2: Kp 5 (a typed "-5" whose sign was dropped) applied as the
+// operator's set, then a step test under it. It diverges and trips; after the
+// trip the axis must be at rest under the gains it had before that set, not
+// run on under the set that just diverged, and the trip says where it stopped.
+TEST_F(TuningStage, AfterATripUnderTheOperatorsGainsTheAxisRestsUnderThePreviousSet)
+{
+    const proto::WireGains before = gains().gains;
+    ASSERT_FALSE(t().setGains({kX, 0, {5.0f, before.ki, before.kd}}));
+    auto s = step(0.05);
+    s.envelope.maxExcursion = static_cast<std::uint32_t>(nm(0.15));
+    s.envelope.maxFollowingError = static_cast<std::uint32_t>(nm(0.1));
+    ASSERT_FALSE(t().stepTest(s));
+    run(2.0);
+    const auto* tripped = r.find(proto::kEvTestTripped, kX);
+    ASSERT_NE(tripped, nullptr) << "Kp 5 should diverge";
+    const double atTrip = measuredMm(m, kX);
+    double worst = 0;
+    run(1.0, [&] { worst = std::max(worst, std::abs(measuredMm(m, kX) - atTrip)); });
+    EXPECT_LT(worst, 0.01) << "the axis ran on after the trip";
+    EXPECT_FALSE(moving(m, kX));
+    EXPECT_EQ(gains().gains, before) << "still under the gains that diverged";
+    EXPECT_LT(std::abs(measuredMm(m, kX) - 50), 0.2);
+    const auto at = tripped->text.find("stopped at ");
+    ASSERT_NE(at, std::string::npos) << tripped->text;
+    double said = 0;
+    ASSERT_EQ(std::sscanf(tripped->text.c_str() + at, "stopped at %lf mm", &said), 1) << tripped->text;
+    EXPECT_NEAR(said, measuredMm(m, kX), 0.005) << tripped->text;
 }

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace motion::control;
@@ -199,4 +200,31 @@ TEST(TuningModel, RelayReportsTheClassicEstimateBesideTheRefinedOne)
     EXPECT_NEAR(t.ku, 0.5, 0.005);
     EXPECT_NEAR(t.tuS, 0.1, 0.001);
     EXPECT_TRUE(t.relay->refined);
+}
+
+// Issue 16 item 2: a response that diverged until the envelope tripped showed
+// "overshoot 0 %, settling 6 ms" read off its last samples.
+TEST(TuningStepMetrics, ATrippedOrUnsettledResponseHasNoSettlingFigures)
+{
+    // Runs away until the envelope trips at 0.2, then the capture holds where it stopped.
+    Record grows = recordOf(1e-3, 120, 0, 0.05, [](double t) { return std::min(0.2, 0.05 * std::exp(t / 0.02) - 0.05); });
+    grows.reason = EndReason::Excursion;
+    const StepMetrics u = stepMetrics(grows);
+    EXPECT_EQ(u.outcome, StepOutcome::Unstable);
+    EXPECT_TRUE(std::isnan(u.overshootPct)) << u.overshootPct;
+    EXPECT_TRUE(std::isnan(u.settlingTimeS)) << u.settlingTimeS;
+    EXPECT_TRUE(std::isnan(u.riseTimeS));
+    EXPECT_TRUE(std::isnan(u.steadyStateError));
+    EXPECT_GT(u.iae, 0);  // the integrals are still what happened
+    EXPECT_FALSE(std::isnan(stepFigures(grows).settlingTimeS)) << "the raw figures are the lie this guards against";
+
+    Record hunts = recordOf(1e-3, 1000, 0, 1, [](double t) { return 1 + 0.5 * std::sin(60 * t); });
+    hunts.reason = EndReason::Completed;
+    const StepMetrics h = stepMetrics(hunts);
+    EXPECT_EQ(h.outcome, StepOutcome::DidNotSettle);
+    EXPECT_TRUE(std::isnan(h.overshootPct));
+
+    Record fine = recordOf(1e-4, 20000, 0, 2, [](double t) { return 2 * (1 - std::exp(-t / 0.1)); });
+    fine.reason = EndReason::Settled;
+    EXPECT_EQ(stepMetrics(fine).outcome, StepOutcome::Settled);
 }

@@ -529,6 +529,8 @@ void CalibrationScreen::updateRunUi()
     m_formProblems->setText(formError);
     m_formProblems->setVisible(!formError.isEmpty());
     m_form->setEditable(!active);
+    // A file opened now would replace the test that runs (issue 16 item 5): held while it runs.
+    m_open->setEnabled(!active);
     m_instrumentBox->setEnabled(!active);
     m_sourceBox->setEnabled(!active && m_form->kind() != AccuracyTestForm::Kind::Circle);
     m_port->setEnabled(!active && m_sourceBox->currentData().toString() == QLatin1String("gauge"));

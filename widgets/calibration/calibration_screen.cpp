@@ -393,6 +393,10 @@ void CalibrationScreen::setOutputFolder(const QString& folder) { m_folder->setTe
 
 bool CalibrationScreen::openTest(const QString& path)
 {
+    if ((m_runner && m_runner->isActive()) || (m_circle && m_circle->isActive())) {
+        emit problem(tr("A test is running: the test on screen stays until it has finished or been aborted."));
+        return false;
+    }
     const auto read = accuracyfiles::loadAccuracyTestFile(path);
     if (!read.test) {
         QStringList lines;

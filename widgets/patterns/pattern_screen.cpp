@@ -512,6 +512,12 @@ bool PatternScreen::savePattern(const QString& path, QString* error)
 
 bool PatternScreen::loadPattern(const QString& path, QString* error)
 {
+    if (runner() && runner()->busy()) {
+        // The pattern on screen is the one that runs (issue 16 item 5).
+        if (error)
+            *error = tr("A pattern is running: another can be loaded once it has ended.");
+        return false;
+    }
     motion::plans::Pattern p;
     jsonio::Problems problems;
     if (!files::loadPatternFile(path, &p, &problems)) {

@@ -126,11 +126,15 @@ PlatesScreen::PlatesScreen(dev::Instrument* analyzer, QWidget* parent)
     connect(m_editor, &RecipeEditor::recipeChanged, this, &PlatesScreen::revalidate);
     connect(m_editor, &RecipeEditor::currentStepChanged, this, [this] { emit m_map->selectionChanged(); });
     connect(m_editor, &RecipeEditor::newRequested, this, [this] {
+        if (heldForRun())
+            return;
         if (m_editor->isModified() && m_confirm && !m_confirm(tr("Discard the changes to this recipe?")))
             return;
         newRecipe();
     });
     connect(m_editor, &RecipeEditor::openRequested, this, [this] {
+        if (heldForRun())
+            return;
         if (m_editor->isModified() && m_confirm && !m_confirm(tr("Discard the changes to this recipe?")))
             return;
         const QString path = m_choose ? m_choose(tr("Open recipe"), tr("Recipes (*.recipe.json *.json)"), false) : QString();
@@ -165,6 +169,9 @@ PlatesScreen::PlatesScreen(dev::Instrument* analyzer, QWidget* parent)
     connect(m_run, &RunPanel::resumeFromLogRequested, this, &PlatesScreen::resumeFromLog);
     connect(m_run, &RunPanel::problem, this, &PlatesScreen::problem);
     connect(m_runner, &jobs::RecipeRunner::progressChanged, this, &PlatesScreen::refreshMap);
+    connect(m_runner, &jobs::RecipeRunner::stateChanged, this, [this] {
+        m_editor->setFilesHeld(runHoldsFiles(), tr("Held while a run is under way: the recipe that runs stays the recipe on screen"));
+    });
     connect(m_runner, &jobs::RecipeRunner::message, this, [this](const msg::Message& m, bool isProblem) {
         if (isProblem)
             emit problem(words::text(m));
@@ -178,6 +185,7 @@ PlatesScreen::PlatesScreen(dev::Instrument* analyzer, QWidget* parent)
 void PlatesScreen::setConfirm(Confirm c)
 {
     m_confirm = c;
+    m_run->setConfirm(c);
     m_calibration->setConfirm(std::move(c));
 }
 
@@ -237,8 +245,25 @@ QString PlatesScreen::baseDir() const
     return m_editor->path().isEmpty() ? QDir::currentPath() : QFileInfo(m_editor->path()).absolutePath();
 }
 
+bool PlatesScreen::runHoldsFiles() const
+{
+    const jobs::RunState s = m_runner->state();
+    return s == jobs::RunState::Running || s == jobs::RunState::Pausing || s == jobs::RunState::Paused || s == jobs::RunState::Aborting;
+}
+
+bool PlatesScreen::heldForRun()
+{
+    // Like the Scan screen: the recipe that runs stays the recipe on screen.
+    if (!runHoldsFiles())
+        return false;
+    emit problem(tr("A run is under way: the recipe and plate map stay as they are until it has finished or been aborted."));
+    return true;
+}
+
 bool PlatesScreen::openRecipe(const QString& path)
 {
+    if (heldForRun())
+        return false;
     const platefiles::LoadedRecipe l = platefiles::loadRecipe(path, m_deck, m_calibrations);
     if (!l.readable) {
         emit problem(tr("%1 cannot be opened:\n%2").arg(QFileInfo(path).fileName(), words::fileProblems(l.problems).join(QLatin1Char('\n'))));
@@ -484,6 +509,8 @@ void PlatesScreen::resumeFromLog()
 
 void PlatesScreen::importLabware()
 {
+    if (heldForRun())
+        return;
     const QString from = m_choose ? m_choose(tr("Import labware"), tr("Labware definitions (*.json)"), false) : QString();
     if (from.isEmpty())
         return;

@@ -58,6 +58,9 @@ public:
     /// The tab to show: "recipe", "calibrate", "run".
     void showTab(const QString& name);
 
+    /// A run under way (or paused) holds the recipe and its files: nothing replaces them.
+    bool runHoldsFiles() const;
+
 signals:
     void problem(const QString& message);
     void note(const QString& message);
@@ -65,6 +68,8 @@ signals:
     void recipePathChanged(const QString& path);
 
 private:
+    /// True (with a problem said) when a run holds the files.
+    bool heldForRun();
     void revalidate();
     void refreshPlateChoices();
     void refreshMap();

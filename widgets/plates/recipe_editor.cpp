@@ -6,6 +6,8 @@
 #include "motion/plans/plates/labware.h"
 
 #include <QComboBox>
+#include "widgets/common/number_field.h"
+
 #include <QDoubleSpinBox>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -153,6 +155,10 @@ RecipeEditor::RecipeEditor(QWidget* parent) : QWidget(parent), m_undo(new QUndoS
     connect(saveB, &QToolButton::clicked, this, &RecipeEditor::saveRequested);
     connect(saveAsB, &QToolButton::clicked, this, &RecipeEditor::saveAsRequested);
     connect(importB, &QPushButton::clicked, this, &RecipeEditor::importLabwareRequested);
+    for (QAbstractButton* b : std::initializer_list<QAbstractButton*>{newB, openB, importB}) {
+        m_fileButtons << b;
+        m_fileTips << b->toolTip();
+    }
     connect(undoB, &QToolButton::clicked, m_undo, &QUndoStack::undo);
     connect(redoB, &QToolButton::clicked, m_undo, &QUndoStack::redo);
     connect(m_undo, &QUndoStack::canUndoChanged, undoB, &QToolButton::setEnabled);
@@ -324,6 +330,27 @@ void RecipeEditor::refreshSteps()
     m_updating = was;
 }
 
+void RecipeEditor::showSlot(QComboBox* slot, const std::string& id)
+{
+    // A slot the deck does not have (a file's "7") is shown as it is, marked, never as slot 1.
+    for (int i = slot->count() - 1; i >= 0; --i)
+        if (!slot->itemData(i, kUnknownSlotRole).isNull())
+            slot->removeItem(i);
+    const int at = slot->findData(QString::fromStdString(id));
+    if (at >= 0) {
+        slot->setCurrentIndex(at);
+        slot->setStyleSheet(QString());
+        slot->setToolTip(QString());
+        return;
+    }
+    const QString why = tr("Slot %1 is not on this deck: choose one of its slots").arg(QString::fromStdString(id));
+    slot->addItem(tr("%1 (not on this deck)").arg(QString::fromStdString(id)), QString::fromStdString(id));
+    slot->setItemData(slot->count() - 1, true, kUnknownSlotRole);
+    slot->setCurrentIndex(slot->count() - 1);
+    slot->setStyleSheet(QStringLiteral("QComboBox { background: #fdd; border: 1px solid #b00020; }"));
+    slot->setToolTip(why);
+}
+
 void RecipeEditor::refreshPlates()
 {
     const bool was = m_updating;
@@ -337,14 +364,17 @@ void RecipeEditor::refreshPlates()
             auto* name = qobject_cast<QLineEdit*>(m_plates->cellWidget(row, 0));
             auto* slot = qobject_cast<QComboBox*>(m_plates->cellWidget(row, 1));
             auto* lw = qobject_cast<QComboBox*>(m_plates->cellWidget(row, 2));
-            auto* safe = qobject_cast<QDoubleSpinBox*>(m_plates->cellWidget(row, 3));
-            auto* depth = qobject_cast<QDoubleSpinBox*>(m_plates->cellWidget(row, 4));
-            const QSignalBlocker b0(name), b1(slot), b2(lw), b3(safe), b4(depth);
+            auto* safe = qobject_cast<NumberField*>(m_plates->cellWidget(row, 3));
+            auto* depth = qobject_cast<NumberField*>(m_plates->cellWidget(row, 4));
+            const QSignalBlocker b0(name), b1(slot), b2(lw);
             name->setText(QString::fromStdString(p.name));
-            slot->setCurrentIndex(std::max(0, slot->findData(QString::fromStdString(p.slot))));
+            showSlot(slot, p.slot);
             lw->setCurrentText(QString::fromStdString(p.labware));
-            safe->setValue(p.safeZMm);
-            depth->setValue(p.depthZMm);
+            // Only a value that differs: the field being typed into keeps its text.
+            if (safe->value() != std::optional<double>(p.safeZMm))
+                safe->setValue(p.safeZMm);
+            if (depth->value() != std::optional<double>(p.depthZMm))
+                depth->setValue(p.depthZMm);
         }
         m_updating = was;
         return;
@@ -372,9 +402,11 @@ void RecipeEditor::refreshPlates()
         auto* slot = new QComboBox;
         for (const auto& s : m_deck.plateSlots)
             slot->addItem(QStringLiteral("%1 (%2)").arg(QString::fromStdString(s.id), QString::fromStdString(s.name)), QString::fromStdString(s.id));
-        slot->setCurrentIndex(std::max(0, slot->findData(QString::fromStdString(p.slot))));
+        showSlot(slot, p.slot);
         connect(slot, qOverload<int>(&QComboBox::activated), this, [this, row, slot] {
             const std::string id = slot->currentData().toString().toStdString();
+            if (!slot->currentData(kUnknownSlotRole).isNull())
+                return;  // the file's own slot, kept as it is until another is chosen
             edit(tr("move a plate to slot %1").arg(QString::fromStdString(id)),
                  [row, id](plates::Recipe& r) { r.plates[static_cast<std::size_t>(row)].slot = id; });
         });
@@ -392,14 +424,23 @@ void RecipeEditor::refreshPlates()
         });
         m_plates->setCellWidget(row, 2, lw);
         for (int col : {3, 4}) {
-            auto* z = new QDoubleSpinBox;
-            z->setRange(0, m_deck.travelZMm > 0 ? m_deck.travelZMm : 100);
-            z->setDecimals(2);
-            z->setKeyboardTracking(false);
+            // The file's value as it is, even out of range: shown invalid until the
+            // operator fixes it, never clamped (a spin box made safe Z −5 into 0).
+            auto* z = new NumberField;
+            z->setFieldName(col == 3 ? tr("Safe Z") : tr("Depth Z"));
+            z->setRange(0.0, m_deck.travelZMm > 0 ? m_deck.travelZMm : 100.0);
+            z->setDisplay('g', 10);  // every digit the file has: a rounded display would be written back
+            z->setHelp(col == 3 ? tr("Machine Z at which the tip clears this plate (Z counts down from home)")
+                                : tr("Machine Z the tip goes down to in a well"));
             z->setValue(col == 3 ? p.safeZMm : p.depthZMm);
-            z->setToolTip(col == 3 ? tr("Machine Z at which the tip clears this plate (Z counts down from home)")
-                                   : tr("Machine Z the tip goes down to in a well"));
-            connect(z, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this, row, col](double v) {
+            connect(z, &QLineEdit::editingFinished, this, [this, row, col, z] {
+                const auto value = z->value();
+                if (!value || row >= static_cast<int>(m_recipe.plates.size()))
+                    return;  // an invalid entry changes nothing
+                const auto& now = m_recipe.plates[static_cast<std::size_t>(row)];
+                const double v = *value;
+                if (v == (col == 3 ? now.safeZMm : now.depthZMm))
+                    return;
                 edit(col == 3 ? tr("change a safe height") : tr("change a depth"),
                      [row, col, v](plates::Recipe& r) {
                          auto& pl = r.plates[static_cast<std::size_t>(row)];
@@ -459,6 +500,14 @@ void RecipeEditor::showProblems(const QStringList& errors, const QStringList& wa
     }
     if (errors.isEmpty() && warnings.isEmpty())
         new QListWidgetItem(tr("The recipe validates."), m_problems);
+}
+
+void RecipeEditor::setFilesHeld(bool held, const QString& why)
+{
+    for (int i = 0; i < m_fileButtons.size(); ++i) {
+        m_fileButtons[i]->setEnabled(!held);
+        m_fileButtons[i]->setToolTip(held ? why : m_fileTips[i]);
+    }
 }
 
 } // namespace ui

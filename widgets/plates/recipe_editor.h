@@ -10,6 +10,8 @@
 
 #include <functional>
 
+class QAbstractButton;
+class QComboBox;
 class QLineEdit;
 class QListWidget;
 class QTableWidget;
@@ -48,6 +50,9 @@ public:
     /// A one-line summary of a step for the list: "2. dispense 50 µL · assay row A ← reagents A1".
     static QString stepSummary(const plates::Step& s, int index);
 
+    /// While held, New, Open… and Import are disabled with `why` as their tooltip.
+    void setFilesHeld(bool held, const QString& why);
+
 signals:
     void recipeChanged();
     void currentStepChanged(int index);
@@ -58,6 +63,8 @@ signals:
     void importLabwareRequested();
 
 private:
+    static constexpr int kUnknownSlotRole = Qt::UserRole + 1;  ///< set on a slot item the deck does not have
+    void showSlot(QComboBox* slot, const std::string& id);
     void refreshPlates();
     void refreshSteps();
     void addStep(plates::StepType type);
@@ -69,6 +76,8 @@ private:
     QUndoStack* m_undo;
     bool m_updating = false;
     QLineEdit* m_name;
+    QList<QAbstractButton*> m_fileButtons;  ///< New, Open…, Import: what replaces the recipe
+    QStringList m_fileTips;
     QTableWidget* m_plates;
     QListWidget* m_steps;
     StepForm* m_form;

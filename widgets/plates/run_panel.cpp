@@ -87,7 +87,12 @@ RunPanel::RunPanel(jobs::RecipeRunner* runner, QWidget* parent) : QWidget(parent
     connect(m_run, &QPushButton::clicked, this, &RunPanel::runRequested);
     connect(m_fromLog, &QPushButton::clicked, this, &RunPanel::resumeFromLogRequested);
     connect(m_pause, &QPushButton::clicked, m_runner, &jobs::RecipeRunner::pause);
-    connect(m_abort, &QPushButton::clicked, m_runner, &jobs::RecipeRunner::abort);
+    connect(m_abort, &QPushButton::clicked, this, [this] {
+        if (m_confirm && !m_confirm(tr("Abort the run? The analyzer stops at once and raises the tip; the wells not done yet "
+                                       "stay undone (the run log can resume them later).")))
+            return;
+        m_runner->abort();
+    });
     connect(m_resume, &QPushButton::clicked, this, [this] {
         msg::Message error;
         if (!m_runner->resume(m_decide, &error))

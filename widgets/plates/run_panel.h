@@ -6,6 +6,8 @@
 
 #include <QWidget>
 
+#include <functional>
+
 class QLabel;
 class QListWidget;
 class QProgressBar;
@@ -19,6 +21,8 @@ class RunPanel : public QWidget {
 public:
     explicit RunPanel(jobs::RecipeRunner* runner, QWidget* parent = nullptr);
     void setInterruptedDecider(jobs::InterruptedDecider decide) { m_decide = std::move(decide); }
+    /// Asked before Abort (a destructive action, issue 16's one rule); none: Abort at once.
+    void setConfirm(std::function<bool(const QString&)> confirm) { m_confirm = std::move(confirm); }
     /// The plan to show; `runnable` false (with `why`) disables Run.
     void setPlan(const plates::RecipePlan& plan, bool runnable, const QString& why);
 
@@ -37,6 +41,7 @@ private:
 
     jobs::RecipeRunner* m_runner;
     jobs::InterruptedDecider m_decide;
+    std::function<bool(const QString&)> m_confirm;
     bool m_runnable = false;
     QLabel* m_summary;
     QTableWidget* m_table;

@@ -1,5 +1,7 @@
 #include "widgets/scan/scan_screen.h"
 
+#include "widgets/common/confirmation.h"
+
 #include "device/files/scan_exports.h"
 #include "device/files/scan_plan_file.h"
 #include "device/jobs/machine_model.h"
@@ -460,7 +462,17 @@ bool ScanScreen::run()
     }
     const int taken = m_runner->takenTiles();
     const double left = m_runner->etaS();
-    if (left > kConfirmLongerThanS
+    // The one rule (widgets/common/confirmation.h): a long approach asks, however short the scan.
+    bool longApproach = false;
+    if (taken == 0 && !m_layout.path.empty() && m_stage->status().axes.size() >= 2 && m_stage->identity().axes.size() >= 2) {
+        const auto& tile = m_layout.path.front().target;
+        const double to[2] = {tile.xMm, tile.yMm};
+        for (int i = 0; i < 2; ++i) {
+            const auto& d = m_stage->identity().axes[i];
+            longApproach = longApproach || confirmation::isLongMove(m_stage->status().axes[i].commanded, to[i], d.travelMax - d.travelMin);
+        }
+    }
+    if ((left > kConfirmLongerThanS || longApproach)
         && !confirm(taken > 0 ? tr("Continue the scan at tile %1 of %2? About %3 are left.").arg(taken + 1).arg(m_runner->totalTiles()).arg(duration(left))
                               : tr("Run %1 tiles on the stage? It takes about %2, starting with a move to (%3, %4) mm.")
                                     .arg(m_runner->totalTiles())

@@ -1,11 +1,11 @@
 #include "widgets/tuning/gains_panel.h"
 
-#include <QDoubleValidator>
+#include "widgets/common/number_field.h"
+
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QLineEdit>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -58,11 +58,12 @@ GainsPanel::GainsPanel(QWidget* parent) : QWidget(parent)
     const char* objectNames[3] = {"kpEdit", "kiEdit", "kdEdit"};
     for (int i = 0; i < 3; ++i) {
         grid->addWidget(new QLabel(names[i], this), i + 1, 0);
-        m_edit[i] = new QLineEdit(this);
+        // No validator: a typed "-5" stays "-5", shown invalid with the reason, and is never sent.
+        m_edit[i] = new NumberField(this);
         m_edit[i]->setObjectName(QLatin1String(objectNames[i]));
-        auto* val = new QDoubleValidator(0, 1e12, 12, m_edit[i]);
-        val->setNotation(QDoubleValidator::ScientificNotation);
-        m_edit[i]->setValidator(val);
+        m_edit[i]->setFieldName(names[i]);
+        m_edit[i]->setRange(0.0, std::nullopt);
+        m_edit[i]->setDisplay('g', 6);  // the device holds float32: more digits are noise
         connect(m_edit[i], &QLineEdit::textEdited, this, [this] { showEdited(); });
         grid->addWidget(m_edit[i], i + 1, 1);
         m_discrete[i] = new QLabel(this);
@@ -76,7 +77,6 @@ GainsPanel::GainsPanel(QWidget* parent) : QWidget(parent)
 
     auto* buttons = new QHBoxLayout;
     m_apply = new QPushButton(tr("Apply"), this);
-    m_apply->setToolTip(tr("Send these gains to the target; they take over between two control periods (bumpless)"));
     m_revert = new QPushButton(tr("Revert"), this);
     m_revert->setToolTip(tr("Apply again the set that was in force before the last change"));
     m_save = new QPushButton(tr("Save to device"), this);
@@ -139,8 +139,11 @@ void GainsPanel::setTarget(const QString& name, double periodS, bool device, con
     m_table->setRowCount(0);
     m_title->setText(tr("PID gains of %1").arg(name));
     m_form->setText(tr("Shown in continuous form: Kp, Ki in 1/s, Kd in s. Beside them the discrete gains per control "
-                       "period T = %1 that %2 runs (seed 002 eq. 2): ki = Ki·T, kd = Kd/T.")
+                       "period T = %1 that %2 runs: ki = Ki·T, kd = Kd/T.")
                         .arg(seconds(periodS), device ? tr("the device") : tr("the model's loop")));
+    // The citation is for whoever wants to check the form, not for every reader.
+    m_form->setToolTip(tr("Incremental PID: Δu = kp·(e_k − e_k−1) + ki·e_k + kd·(e_k − 2e_k−1 + e_k−2); "
+                          "see docs/tuning.md (the stage paper's eq. 2)."));
     setInForce(g, source);
 }
 
@@ -156,7 +159,7 @@ void GainsPanel::setEdited(const DiscreteGains& g)
     const ContinuousGains c = motion::control::toContinuous(g, m_periodS);
     const double values[3] = {c.kp, c.kiPerS, c.kdS};
     for (int i = 0; i < 3; ++i)
-        m_edit[i]->setText(QString::number(values[i], 'g', 6));  // the device holds float32: more digits are noise
+        m_edit[i]->setValue(values[i]);
     showEdited();
 }
 
@@ -164,12 +167,10 @@ std::optional<DiscreteGains> GainsPanel::edited() const
 {
     double v[3];
     for (int i = 0; i < 3; ++i) {
-        bool ok = false;
-        v[i] = QLocale().toDouble(m_edit[i]->text(), &ok);
-        if (!ok)
-            v[i] = m_edit[i]->text().toDouble(&ok);
-        if (!ok || !std::isfinite(v[i]) || v[i] < 0)
+        const auto x = m_edit[i]->value();
+        if (!x)
             return std::nullopt;
+        v[i] = *x;
     }
     return motion::control::toDiscrete(ContinuousGains{v[0], v[1], v[2]}, m_periodS);
 }
@@ -177,8 +178,6 @@ std::optional<DiscreteGains> GainsPanel::edited() const
 void GainsPanel::showEdited()
 {
     const auto g = edited();
-    for (int i = 0; i < 3; ++i)
-        m_edit[i]->setStyleSheet(g ? QString() : QStringLiteral("background: #fdd;"));
     if (g) {
         m_discrete[0]->setText(tr("kp = %1").arg(gainText(g->kp)));
         m_discrete[1]->setText(tr("ki = %1").arg(gainText(g->ki)));
@@ -191,9 +190,17 @@ void GainsPanel::showEdited()
     } else {
         for (auto* l : m_discrete)
             l->setText(QStringLiteral("—"));
-        m_times->setText(tr("every gain must be a number, 0 or more"));
+        m_times->setText(problem());
     }
     refreshButtons();
+}
+
+QString GainsPanel::problem() const
+{
+    for (auto* e : m_edit)
+        if (!e->isValid())
+            return tr("%1 Nothing is sent until it is fixed.").arg(e->problem());
+    return {};
 }
 
 std::optional<GainsPanel::HistoryEntry> GainsPanel::previous() const
@@ -228,8 +235,10 @@ void GainsPanel::refreshButtons()
     const bool usable = m_hasTarget && !m_busy;
     for (auto* e : m_edit)
         e->setEnabled(m_hasTarget);
-    m_apply->setEnabled(usable && edited().has_value());
-    m_save->setEnabled(usable && m_device && edited().has_value());
+    const bool valid = edited().has_value();
+    m_apply->setEnabled(usable && valid);
+    m_apply->setToolTip(valid || !m_hasTarget ? tr("Send these gains to the target; they take over between two control periods (bumpless)") : problem());
+    m_save->setEnabled(usable && m_device && valid);
     m_save->setVisible(m_device || !m_hasTarget);
     m_read->setVisible(m_device || !m_hasTarget);
     m_read->setEnabled(usable && m_device);

@@ -10,11 +10,12 @@
 #include <QWidget>
 
 class QLabel;
-class QLineEdit;
 class QPushButton;
 class QTableWidget;
 
 namespace ui {
+
+class NumberField;
 
 class GainsPanel : public QWidget {
     Q_OBJECT
@@ -35,7 +36,7 @@ public:
     void setInForce(const motion::control::DiscreteGains& gains, const QString& source);
     /// Puts a set into the editors without applying it.
     void setEdited(const motion::control::DiscreteGains& gains);
-    /// The editors' set in discrete form; nullopt while a field is not a number.
+    /// The editors' set in discrete form; nullopt while a field is not a valid gain (shown why).
     std::optional<motion::control::DiscreteGains> edited() const;
     const motion::control::DiscreteGains& inForce() const { return m_inForce; }
     double periodS() const { return m_periodS; }
@@ -43,6 +44,8 @@ public:
     /// The set before the one in force (what Revert applies); nullopt if none.
     std::optional<HistoryEntry> previous() const;
     void setBusy(bool busy);
+    /// Why Apply is not possible now (an invalid entry); empty when it is.
+    QString problem() const;
 
 signals:
     void applyRequested(const motion::control::DiscreteGains& gains, const QString& source);
@@ -57,7 +60,7 @@ private:
 
     QLabel* m_title;
     QLabel* m_form;
-    QLineEdit* m_edit[3];
+    NumberField* m_edit[3];
     QLabel* m_discrete[3];
     QLabel* m_times;
     QPushButton* m_apply;

@@ -115,10 +115,13 @@ void StepTestPanel::addResult(const motion::control::Record& r, const motion::co
     head->setForeground(ResponsePlot::colour(col));
     head->setToolTip(legend);
     m_table->setHorizontalHeaderItem(col, head);
-    const QString cells[8] = {metricText(m.riseTimeS * 1000),
-                              metricText(m.overshootPct),
-                              metricText(m.settlingTimeS * 1000),
-                              metricText(m.steadyStateError * k),
+    // No final value, no figures read off it: the words say why.
+    const QString unsettled = m.outcome == motion::control::StepOutcome::Unstable ? tr("unstable") : tr("did not settle");
+    auto settled = [&](double v) { return m.outcome == motion::control::StepOutcome::Settled ? metricText(v) : unsettled; };
+    const QString cells[8] = {settled(m.riseTimeS * 1000),
+                              settled(m.overshootPct),
+                              settled(m.settlingTimeS * 1000),
+                              settled(m.steadyStateError * k),
                               metricText(m.iae * k),
                               metricText(m.ise * k * k),
                               metricText(m.peakOutput * k),

@@ -16,6 +16,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLocale>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSplitter>
@@ -32,7 +33,27 @@ using namespace motion::control;
 namespace {
 const char* kLiveConsumer = "tuning";
 constexpr double kLiveWindowS = 0.5;
+/// A set this many times an active term (or under its inverse) is no adjustment but a new loop: asked first.
+constexpr double kFarFactor = 3;
+
+/// "Kp 0.25 → 5 (20×)" for every active term of `now` that `next` takes more than kFarFactor away.
+QStringList farTerms(const DiscreteGains& next, const DiscreteGains& now, double periodS)
+{
+    const ContinuousGains a = toContinuous(now, periodS), b = toContinuous(next, periodS);
+    const double was[3] = {a.kp, a.kiPerS, a.kdS}, will[3] = {b.kp, b.kiPerS, b.kdS};
+    const QString names[3] = {TuningScreen::tr("Kp"), TuningScreen::tr("Ki"), TuningScreen::tr("Kd")};
+    QStringList out;
+    for (int i = 0; i < 3; ++i) {
+        if (!(was[i] > 0))
+            continue;  // an inactive term has no scale to be far from
+        const double f = will[i] / was[i];
+        if (f > kFarFactor || f < 1 / kFarFactor)
+            out << TuningScreen::tr("%1 %2 → %3 (%4×)")
+                       .arg(names[i], QLocale().toString(was[i], 'g', 4), QLocale().toString(will[i], 'g', 4), QLocale().toString(f, 'g', 3));
+    }
+    return out;
 }
+} // namespace
 
 TuningScreen::TuningScreen(tele::TelemetryHub* hub, QWidget* parent) : QWidget(parent), m_hub(hub)
 {
@@ -139,7 +160,8 @@ TuningScreen::TuningScreen(tele::TelemetryHub* hub, QWidget* parent) : QWidget(p
     connect(m_zn, &ZnPanel::abortRequested, this, &TuningScreen::abort);
     connect(m_zn, &ZnPanel::useRule, this, [this](const QString&, const DiscreteGains& g, const QString& source) {
         const Choice* c = choice();
-        if (c && c->instrument >= 0 && m_confirm
+        // A row far from the gains in force gets the question that says how far, in applyGains.
+        if (c && c->instrument >= 0 && m_confirm && farTerms(g, m_gains->inForce(), m_gains->periodS()).isEmpty()
             && !m_confirm(tr("Apply these gains to %1?\n%2").arg(c->name, describeGains(g, m_gains->periodS()))))
             return;
         m_gains->setEdited(g);
@@ -273,6 +295,11 @@ void TuningScreen::applyGains(const DiscreteGains& g, bool save, const QString& 
     Instrument* in = instrumentOf(*c);
     if (!in || !in->tuning)
         return;
+    const QStringList far = farTerms(g, m_gains->inForce(), m_gains->periodS());
+    if (!far.isEmpty() && m_confirm
+        && !m_confirm(tr("These gains are far from the ones %1 runs now:\n%2\nA loop this different may oscillate or run away. Apply them?")
+                          .arg(c->name, far.join(QLatin1Char('\n')))))
+        return;
     QPointer<TuningScreen> self(this);
     const QString name = c->name;
     ++m_ownGainChanges;
@@ -357,6 +384,10 @@ void TuningScreen::onRunnerState(dev::TuningRunner::State s)
 void TuningScreen::onFinished(bool ok, const QString& text)
 {
     say(text, !ok);
+    // A test that diverged under the gains in force leaves the device under the set
+    // before them (it announces the change while the run is busy): show what is in force.
+    if (const Choice* c = choice(); c && c->instrument >= 0)
+        readGains();
     if (ok && m_haveResult)
         m_lastResult = m_runner->result();  // with its verification
     if (m_haveResult)
@@ -371,6 +402,7 @@ void TuningScreen::refreshReady()
     m_steps->setReady(ready);
     m_zn->setReady(ready && (!dynamic_cast<dev::ModelTarget*>(m_targetObj.get()) || whyNoUltimateGain(m_plantSpec).empty()));
     m_save->setEnabled(m_haveResult && !m_runner->busy());
+    m_open->setEnabled(!m_runner->busy());
     m_resume->setEnabled(m_runner->state() == dev::TuningRunner::State::Interrupted && m_targetObj && m_targetObj->ready());
 }
 
@@ -452,6 +484,11 @@ bool TuningScreen::saveResults(const QString& given)
 
 bool TuningScreen::loadResults(const QString& given)
 {
+    if (m_runner->busy()) {
+        // The results on screen are the ones the running job fills in (issue 16 item 5).
+        say(tr("A tuning run is under way: results can be opened once it has ended."), true);
+        return false;
+    }
     QString path = given;
     if (path.isEmpty() && m_chooser)
         path = m_chooser(tr("Open tuning results"), tr("Tuning results (*.tuning.json)"), false);

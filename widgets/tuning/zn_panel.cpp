@@ -142,15 +142,16 @@ ZnPanel::ZnPanel(QWidget* parent) : QWidget(parent)
     m_result->setWordWrap(true);
     m_result->setTextInteractionFlags(Qt::TextSelectableByMouse);
     lv->addWidget(m_result);
-    m_rules = new QTableWidget(0, 9, lower);
+    // Where a rule comes from is in its name's tooltip: the table holds what a person applies.
+    m_rules = new QTableWidget(0, 8, lower);
     m_rules->setObjectName(QStringLiteral("rulesTable"));
     m_rules->setHorizontalHeaderLabels({tr("Rule"), tr("Kp"), tr("Ki [1/s]"), tr("Kd [s]"), tr("kp"), tr("ki / period"),
-                                        tr("kd / period"), tr("Source"), QString()});
+                                        tr("kd / period"), QString()});
     m_rules->verticalHeader()->setVisible(false);
     m_rules->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 10);
     m_rules->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_rules->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_rules->horizontalHeader()->setSectionResizeMode(7, QHeaderView::Stretch);
+    m_rules->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
     lv->addWidget(m_rules, 1);
     split->addWidget(upper);
     split->addWidget(lower);
@@ -254,7 +255,7 @@ void ZnPanel::showResult(const motion::control::TuningResult& r)
         text += tr("<br>Verification with %1: overshoot %2 %, %3")
                     .arg(rule ? words::term(std::string("tuning.rule.") + rule->id) : QString::fromStdString(v.rule), ruleNumber(v.metrics.overshootPct), words::tuningOutcome(v.outcome));
         if (r.unit == "mm")
-            text += v.settledInside5umS >= 0 ? tr(", inside seed 002's ±5 µm from %1 ms").arg(ruleNumber(v.settledInside5umS * 1000))
+            text += v.settledInside5umS >= 0 ? tr(", inside ±5 µm of the target from %1 ms").arg(ruleNumber(v.settledInside5umS * 1000))
                                              : tr(", <b>never inside ±5 µm</b>");
     }
     m_result->setText(text);
@@ -264,17 +265,17 @@ void ZnPanel::showResult(const motion::control::TuningResult& r)
         const auto d = motion::control::toDiscrete(c, r.controlPeriodS);
         const int row = m_rules->rowCount();
         m_rules->insertRow(row);
-        const QString cells[8] = {words::term(std::string("tuning.rule.") + rule.id), ruleNumber(c.kp), ruleNumber(c.kiPerS), ruleNumber(c.kdS), ruleNumber(d.kp), ruleNumber(d.ki), ruleNumber(d.kd),
-                                  tr(rule.source)};
-        for (int col = 0; col < 8; ++col)
+        const QString cells[7] = {words::term(std::string("tuning.rule.") + rule.id), ruleNumber(c.kp), ruleNumber(c.kiPerS), ruleNumber(c.kdS), ruleNumber(d.kp), ruleNumber(d.ki), ruleNumber(d.kd)};
+        for (int col = 0; col < 7; ++col)
             m_rules->setItem(row, col, new QTableWidgetItem(cells[col]));
+        m_rules->item(row, 0)->setToolTip(tr("Source: %1").arg(tr(rule.source)));
         auto* use = new QPushButton(tr("Use these"), m_rules);
         use->setObjectName(QStringLiteral("use_%1").arg(QLatin1String(rule.id)));
         const QString id = QString::fromLatin1(rule.id);
         const QString source = tr("Z-N %1: %2").arg(r.method == "relay" ? tr("relay") : tr("ultimate gain"), words::term(std::string("tuning.rule.") + rule.id));
         connect(use, &QPushButton::clicked, this, [this, id, d, source] { emit useRule(id, d, source); });
         use->setMaximumHeight(m_rules->verticalHeader()->defaultSectionSize() - 2);
-        m_rules->setCellWidget(row, 8, use);
+        m_rules->setCellWidget(row, 7, use);
     }
     refresh();
 }
@@ -303,7 +304,7 @@ void ZnPanel::refresh()
     m_start->setEnabled(m_ready && !m_busy);
     m_abort->setEnabled(m_busy);
     for (int row = 0; row < m_rules->rowCount(); ++row)
-        if (auto* w = m_rules->cellWidget(row, 8))
+        if (auto* w = m_rules->cellWidget(row, 7))
             w->setEnabled(!m_busy && m_ready);
 }
 

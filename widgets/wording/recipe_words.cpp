@@ -105,6 +105,8 @@ const Row kRows[] = {
     {"recipe.run.log_finished", QT_TRANSLATE_NOOP3("words::RecipeWords", "the run in %1 finished: nothing to resume", "recipe.run.log_finished"), "log"},
     {"recipe.run.plunger_moved", QT_TRANSLATE_NOOP3("words::RecipeWords", "the plunger is at %1 but the log's last completed well left it at %2: the syringe was moved (or the analyzer restarted) since the run stopped, so what it holds is unknown. Start a new run.", "recipe.run.plunger_moved"), "plunger,logged"},
     {"recipe.run.resuming", QT_TRANSLATE_NOOP3("words::RecipeWords", "resuming %1 from %2: %3 of %4 wells already done, continuing with %5", "recipe.run.resuming"), "recipe,log,done,wells,op"},
+    {"recipe.resume.other_instrument", QT_TRANSLATE_NOOP3("words::RecipeWords", "this is not the instrument the run was on (%1; now %2): resume it on that one, or start the run again", "recipe.resume.other_instrument"), "was,now"},
+    {"recipe.resume.found", QT_TRANSLATE_NOOP3("words::RecipeWords", "found the same instrument (%1), homed, with the plunger at %2 as the run left it", "recipe.resume.found"), "instrument,plunger"},
     {"recipe.evidence.moved_in_full", QT_TRANSLATE_NOOP3("words::RecipeWords", "the plunger is at %1, where this step leaves it: its liquid most likely moved in full", "recipe.evidence.moved_in_full"), "plunger"},
     {"recipe.evidence.nothing_moved", QT_TRANSLATE_NOOP3("words::RecipeWords", "the plunger is at %1, where it was before the pump move: no liquid moved", "recipe.evidence.nothing_moved"), "plunger"},
     {"recipe.evidence.part_moved", QT_TRANSLATE_NOOP3("words::RecipeWords", "the plunger is at %1, between %2 (before) and %3 (after): part of the volume moved", "recipe.evidence.part_moved"), "plunger,before,after"},

@@ -26,7 +26,28 @@ double firstCrossing(const Record& r, double y0, double yf, double level)
 }
 } // namespace
 
+namespace {
+StepMetrics unsettled(StepMetrics m, StepOutcome why)
+{
+    m.outcome = why;
+    m.riseTimeS = m.overshootPct = m.settlingTimeS = m.steadyStateError = kNaN;
+    return m;
+}
+} // namespace
+
 StepMetrics stepMetrics(const Record& r, double bandFraction)
+{
+    StepMetrics m = stepFigures(r, bandFraction);
+    // A tripped envelope ends a response that was running away: its last samples
+    // are no final value, and "overshoot 0 %, settled in 6 ms" read off them would lie.
+    if (r.reason == EndReason::Excursion || r.reason == EndReason::FollowingError)
+        return unsettled(m, StepOutcome::Unstable);
+    if (r.size() >= 2 && !std::isfinite(m.settlingTimeS))
+        return unsettled(m, StepOutcome::DidNotSettle);
+    return m;
+}
+
+StepMetrics stepFigures(const Record& r, double bandFraction)
 {
     StepMetrics m;
     if (r.size() < 2)

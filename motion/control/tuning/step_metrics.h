@@ -4,7 +4,12 @@
 
 namespace motion::control {
 
+/// Whether the figures relative to the final value mean anything: a response
+/// that tripped its envelope, or never stayed inside its band, has no final value.
+enum class StepOutcome { Settled, DidNotSettle, Unstable };
+
 struct StepMetrics {
+    StepOutcome outcome = StepOutcome::Settled;  ///< not Settled: rise, overshoot, settling and steady error are NaN
     double step = 0;            ///< setpoint − start (the size asked for)
     double finalValue = 0;      ///< mean of the last 5 % of the record, in the output unit
     double riseTimeS = 0;       ///< 10 % → 90 % of the way from start to the final value; NaN if never reached
@@ -18,7 +23,11 @@ struct StepMetrics {
 };
 
 /// Metrics of a step record (setpoint constant after the start). bandFraction is the settling band (0.02 = 2 %).
+/// A response that tripped its envelope is Unstable; one that never stays inside the
+/// band around its final value DidNotSettle; either way with no figure read off a final value.
 StepMetrics stepMetrics(const Record& r, double bandFraction = 0.02);
+/// The figures as the record gives them, whatever the response did (outcome always Settled).
+StepMetrics stepFigures(const Record& r, double bandFraction = 0.02);
 
 /// When the response entered ±band (absolute, output unit) around the setpoint for
 /// good, in s from the step; NaN if the last sample is outside it.

@@ -1,0 +1,130 @@
+// Issue 16 item 10: one rule for what asks first. Plate Abort, Disconnect during
+// a run and quitting with unsaved edits or a running job ask; "no" leaves
+// everything as it was.
+#include "app/gui/instrument_session.h"
+#include "app/gui/main_window.h"
+#include "device/link/simulated_link.h"
+#include "gui_wait.h"
+#include "gui_window.h"
+#include "widgets/connection_bar.h"
+#include "widgets/plates/plate_map.h"
+#include "widgets/plates/plates_screen.h"
+#include "widgets/plates/recipe_editor.h"
+#include "widgets/plates/run_panel.h"
+
+#include <QPushButton>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using guitest::pump;
+using guitest::waitFor;
+
+namespace {
+
+QPushButton* button(QWidget* root, const QString& text)
+{
+    for (auto* b : root->findChildren<QPushButton*>())
+        if (b->text() == text)
+            return b;
+    return nullptr;
+}
+
+class TrustConfirmTest : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        auto o = guitest::testWindowOptions();
+        o.answer = [this](const QString& q) {
+            questions << q;
+            return answer;
+        };
+        w = std::make_unique<app::MainWindow>(o);
+        w->resize(1500, 950);
+        w->show();
+        ASSERT_TRUE(waitFor([&] { return analyzer()->isReady() && w->stage()->instrument()->isReady(); }, 5000));
+        ASSERT_TRUE(w->showScreen(QStringLiteral("plates")));
+        screen = w->platesScreen();
+        screen->setRunLogDirectory(dir.path());
+        screen->setConfirm([this](const QString& q) {
+            questions << q;
+            return answer;
+        });
+        ui::ConnectionChoice c;
+        c.baud = 0;
+        w->analyzer()->connectTo(c);
+        ASSERT_TRUE(waitFor([&] { return analyzer()->isReady(); }, 5000));
+        qobject_cast<dev::SimulatedLink*>(w->analyzer()->link())->host().setTimeScale(5);
+        analyzer()->home(0);
+        ASSERT_TRUE(waitFor(
+            [&] {
+                const auto& a = analyzer()->status().axes;
+                return a.size() == 4 && std::all_of(a.begin(), a.end(), [](const auto& x) { return x.homed && !x.moving; });
+            },
+            60000));
+        screen->plateMap()->setSelection({{0, 0}, {0, 1}, {0, 2}, {1, 0}, {1, 1}, {1, 2}, {2, 0}, {2, 1}});
+        QTest::mouseClick(button(screen, QObject::tr("Aspirate from these")), Qt::LeftButton);
+    }
+    void run()
+    {
+        answer = true;
+        QTest::mouseClick(button(screen->runPanel(), QObject::tr("Run")), Qt::LeftButton);
+        ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Running; }, 5000));
+        questions.clear();
+        answer = false;
+    }
+    dev::Instrument* analyzer() { return w->analyzer()->instrument(); }
+    QTemporaryDir dir;
+    std::unique_ptr<app::MainWindow> w;
+    ui::PlatesScreen* screen = nullptr;
+    QStringList questions;
+    bool answer = false;
+};
+
+} // namespace
+
+TEST_F(TrustConfirmTest, PlateAbortAsksFirst)
+{
+    run();
+    QTest::mouseClick(button(screen->runPanel(), QObject::tr("Abort")), Qt::LeftButton);
+    ASSERT_EQ(questions.size(), 1);
+    EXPECT_TRUE(questions[0].startsWith(QStringLiteral("Abort"))) << questions[0].toStdString();
+    pump(100);
+    EXPECT_EQ(screen->runner()->state(), jobs::RunState::Running) << "aborted although the operator said no";
+    answer = true;
+    QTest::mouseClick(button(screen->runPanel(), QObject::tr("Abort")), Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Stopped; }, 10000));
+}
+
+TEST_F(TrustConfirmTest, DisconnectDuringARunAsksFirst)
+{
+    run();
+    auto bars = w->findChildren<ui::ConnectionBar*>();
+    ASSERT_GE(bars.size(), 1);
+    emit bars[0]->disconnectRequested();
+    ASSERT_EQ(questions.size(), 1);
+    EXPECT_TRUE(questions[0].contains(QStringLiteral("plate run"))) << questions[0].toStdString();
+    pump(100);
+    EXPECT_TRUE(analyzer()->isReady()) << "disconnected although the operator said no";
+    answer = true;
+    emit bars[0]->disconnectRequested();
+    ASSERT_TRUE(waitFor([&] { return !analyzer()->isReady(); }, 3000));
+}
+
+TEST_F(TrustConfirmTest, QuittingWithUnsavedEditsOrARunningJobAsksFirst)
+{
+    ASSERT_TRUE(screen->recipeEditor()->isModified());
+    EXPECT_FALSE(w->close());
+    ASSERT_EQ(questions.size(), 1);
+    EXPECT_TRUE(questions[0].contains(QStringLiteral("not saved"))) << questions[0].toStdString();
+    EXPECT_TRUE(w->isVisible());
+    run();
+    EXPECT_FALSE(w->close());
+    ASSERT_EQ(questions.size(), 1);
+    EXPECT_TRUE(questions[0].contains(QStringLiteral("plate run"))) << questions[0].toStdString();
+    answer = true;
+    EXPECT_TRUE(w->close());
+}

@@ -1,0 +1,55 @@
+#pragma once
+// One numeric entry for every field a person types a number into where a
+// wrong number matters (gains, recipe depths, slots): the text is kept exactly
+// as typed or as a file gave it — no validator drops a "-" or clamps 700 to
+// 100 — and a text that is not a valid number for the field is shown as
+// invalid with the reason (tooltip and problem()), and value() is nullopt
+// until it is fixed. Whoever sends the value disables its action while invalid.
+#include <QLineEdit>
+
+#include <optional>
+
+namespace ui {
+
+class NumberField : public QLineEdit {
+    Q_OBJECT
+public:
+    explicit NumberField(QWidget* parent = nullptr);
+
+    /// Limits the value must lie within (inclusive); unset: no limit on that side.
+    void setRange(std::optional<double> minimum, std::optional<double> maximum);
+    /// Only whole numbers are valid.
+    void setInteger(bool integer);
+    /// Digits after the point when setValue() writes a number (significant digits with 'g').
+    void setDisplay(char format, int precision);
+    /// What the field is for, in the reason ("Kp", "depth"); empty: "the value".
+    void setFieldName(const QString& name);
+    /// Text appended to the tooltip while the entry is valid (what the field means).
+    void setHelp(const QString& help);
+
+    /// Writes `v` as text, even outside the range (a file's value is shown as it is, marked invalid).
+    void setValue(double v);
+    std::optional<double> value() const;
+    bool isValid() const { return m_problem.isEmpty(); }
+    /// Why the entry is invalid, for people; empty while valid.
+    QString problem() const { return m_problem; }
+
+signals:
+    /// After every change of the text (typed or set): valid or not, and the value if valid.
+    void entryChanged(bool valid);
+
+private:
+    void check();
+    QString limit(double v) const;
+
+    std::optional<double> m_min, m_max;
+    bool m_integer = false;
+    char m_format = 'g';
+    int m_precision = 6;
+    QString m_name;
+    QString m_help;
+    QString m_problem;
+    std::optional<double> m_value;
+};
+
+} // namespace ui
