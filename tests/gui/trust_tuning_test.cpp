@@ -136,6 +136,8 @@ TEST_F(TrustTuningTest, ADivergingStepTestSaysUnstableAndLeavesTheAxisAtRestUnde
     type("kpEdit", QStringLiteral("12"));  // far above the loop's ultimate gain: it runs away
     QTest::mouseClick(apply(), Qt::LeftButton);
     ASSERT_TRUE(waitFor([&] { return std::abs(stage().tuning().gains(0).kp - 12) < 1e-6; }, 3000));
+    // The step test runs the set the screen has in force: wait for the device's reply, not only its change.
+    ASSERT_TRUE(waitFor([&] { return std::abs(t->gains()->inForce().kp - 12) < 1e-6; }, 3000));
     QTest::mouseClick(t->stepTests()->findChild<QPushButton*>(QStringLiteral("runStepTest")), Qt::LeftButton);
     ASSERT_TRUE(waitFor([&] { return t->stepTests()->runs() == 1 && !t->runner()->busy(); }, 15000)) << t->statusText().toStdString();
     auto* table = t->stepTests()->metricsTable();
