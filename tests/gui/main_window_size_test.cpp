@@ -48,6 +48,7 @@ TEST(MainWindowSize, EveryScreenFitsA1366x768Display)
 // states: tuning results, files with long names, a long error in the banner.
 #include "widgets/message_banner.h"
 #include "widgets/plates/plates_screen.h"
+#include "widgets/plates/recipe_editor.h"
 #include "widgets/tuning/tuning_screen.h"
 
 #include <QFile>
@@ -88,6 +89,18 @@ TEST(MainWindowSize, EveryScreenInItsBusyStatesFitsA1366x768DisplayWithEStopShow
         EXPECT_LE(min.height(), 708) << name.toStdString() << " needs " << min.height() << " px";
         EXPECT_LE(w->width(), 1366) << name.toStdString() << ": the window grew itself to " << w->width() << " px";
         EXPECT_LE(w->height(), 708) << name.toStdString() << ": the window grew itself to " << w->height() << " px";
+        // No button cut at the side ("Resum…" on the Plates run panel). The recipe editor's
+        // own clipping is issue 16 item 7, fixed with its editor on another branch.
+        if (name == QLatin1String("plates"))
+            w->platesScreen()->showTab(QStringLiteral("run"));
+        guitest::pump(20);
+        for (QPushButton* b : w->findChildren<QPushButton*>()) {
+            const QRegion seen = b->visibleRegion();
+            if (b->isVisible() && !seen.isEmpty() && !w->platesScreen()->recipeEditor()->isAncestorOf(b)) {
+                EXPECT_EQ(seen.boundingRect().width(), b->width())
+                    << name.toStdString() << ": '" << b->text().toStdString() << "' is cut at the side";
+            }
+        }
         // Tall content may scroll; nothing scrolls sideways.
         EXPECT_EQ(shortOfRoom(w.get(), name).width(), 0) << name.toStdString() << " scrolls sideways";
         const QRect estop(w->estopButton()->mapTo(w.get(), QPoint(0, 0)), w->estopButton()->size());
