@@ -1,5 +1,6 @@
 #include "widgets/axis_row.h"
 
+#include "widgets/input_policy.h"
 #include "widgets/status_lamp.h"
 
 #include <QComboBox>
@@ -51,7 +52,7 @@ AxisRow::AxisRow(int axis, const dev::AxisDescriptor& d, proto::DeviceKind kind,
     for (QLabel* l : {m_commanded, m_measured}) {
         l->setFont(mono);
         l->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
-        l->setMinimumWidth(110);
+        l->setMinimumWidth(l->fontMetrics().horizontalAdvance(QStringLiteral("-0000.0000")) + 6);
     }
     m_commanded->setToolTip(tr("Commanded position (%1)").arg(d.unitName()));
     m_measured->setToolTip(kind == proto::DeviceKind::Stage ? tr("Grating scale reading (%1)").arg(d.unitName())
@@ -84,12 +85,18 @@ AxisRow::AxisRow(int axis, const dev::AxisDescriptor& d, proto::DeviceKind kind,
     m_home->setToolTip(tr("Seek the home switch and make it zero"));
     m_zero = new QPushButton(tr("Zero"), parent);
     m_zero->setToolTip(tr("Make the present position zero"));
+    for (QWidget* w : std::initializer_list<QWidget*>{m_stepMinus, m_stepPlus, m_holdMinus, m_holdPlus, m_home, m_zero})
+        setUsualToolTip(w, w->toolTip());
     m_target = new QLineEdit(parent);
     m_target->setPlaceholderText(tr("target %1").arg(d.unitName()));
     m_target->setValidator(new QDoubleValidator(-1e6, 1e6, 6, m_target));
-    m_target->setMaximumWidth(100);
+    // Wide enough for its own placeholder ("target mm" was cut to "tar…") and a position.
+    m_target->setMinimumWidth(std::max(m_target->fontMetrics().horizontalAdvance(m_target->placeholderText()),
+                                       m_target->fontMetrics().horizontalAdvance(QStringLiteral("-0000.000")))
+                              + 16);
+    m_target->setMaximumWidth(m_target->minimumWidth() + 30);
     m_go = new QPushButton(tr("Go"), parent);
-    m_go->setToolTip(tr("Move %1 to the target (absolute; the axis must be homed)").arg(d.letter));
+    setUsualToolTip(m_go, tr("Move %1 to the target (absolute)").arg(d.letter));
     m_limits = new QLabel(parent);
     m_limits->setToolTip(tr("Soft limits: moves beyond them are refused"));
 
@@ -151,6 +158,9 @@ AxisRow::AxisRow(int axis, const dev::AxisDescriptor& d, proto::DeviceKind kind,
     };
     connect(m_go, &QPushButton::clicked, this, go);
     connect(m_target, &QLineEdit::returnPressed, this, go);
+    connect(m_target, &QLineEdit::returnPressed, this, &AxisRow::doneTyping);
+    connect(m_step->lineEdit(), &QLineEdit::returnPressed, this, &AxisRow::doneTyping);
+    connect(m_step, qOverload<int>(&QComboBox::activated), this, &AxisRow::doneTyping);
 }
 
 AxisRow::~AxisRow() = default;
@@ -182,20 +192,26 @@ void AxisRow::showReadout(const dev::AxisReadout& r)
     m_homeSwitch->setTone(r.homeSwitch ? StatusLamp::Tone::Active : StatusLamp::Tone::Off);
     m_limitSwitch->setTone(r.limitSwitch ? StatusLamp::Tone::Alarm : StatusLamp::Tone::Off);
     m_moving->setTone(r.fault ? StatusLamp::Tone::Alarm : r.moving ? StatusLamp::Tone::Active : StatusLamp::Tone::Off);
-    m_go->setEnabled(r.homed && m_target->isEnabled());
-    m_go->setToolTip(r.homed ? tr("Move %1 to the target").arg(m_desc.letter)
-                             : tr("Home %1 first: absolute moves need a homed axis").arg(m_desc.letter));
+    m_isHomed = r.homed;
+    setEnabledOr(m_go, !m_whyNot.isEmpty() ? m_whyNot
+                       : r.homed           ? QString()
+                                           : tr("Home %1 first: absolute moves need a homed axis").arg(m_desc.letter));
 }
 
 void AxisRow::showLimits(const dev::SoftLimits& l)
 {
-    m_limits->setText(QStringLiteral("%1 … %2 %3").arg(format(l.min), format(l.max), m_desc.unitName()));
+    // Two lines: the Jog screen's grid has to fit a 1366-pixel screen beside the navigation.
+    m_limits->setText(QStringLiteral("%1 …\n%2 %3").arg(format(l.min), format(l.max), m_desc.unitName()));
 }
 
-void AxisRow::setEnabled(bool enabled)
+void AxisRow::setEnabled(const QString& whyNot)
 {
+    m_whyNot = whyNot;
     for (QWidget* w : m_controls)
-        w->setEnabled(enabled);
+        setEnabledOr(w, whyNot);
+    setEnabledOr(m_go, !whyNot.isEmpty() ? whyNot
+                       : m_isHomed       ? QString()
+                                         : tr("Home %1 first: absolute moves need a homed axis").arg(m_desc.letter));
 }
 
 } // namespace ui

@@ -29,7 +29,8 @@ public:
     /// The step the operator picked, in axis units; nullopt (and a red field) when it does not parse.
     std::optional<double> step() const;
     int decimals() const { return m_decimals; }
-    void setEnabled(bool enabled);
+    /// Enabled when `whyNot` is empty; otherwise the controls say why in their tooltips.
+    void setEnabled(const QString& whyNot);
     static QList<double> stepPresets(const dev::AxisDescriptor& d, proto::DeviceKind kind);
 
 signals:
@@ -40,6 +41,8 @@ signals:
     void zeroRequested(int axis);
     void goToRequested(int axis, double target);
     void problem(const QString& message);
+    /// Enter in the Step or Go-to field: the operator is done typing (the keys jog again).
+    void doneTyping();
 
 private:
     QString format(double v) const;
@@ -65,6 +68,8 @@ private:
     QPushButton* m_go;
     QLabel* m_limits;
     QList<QWidget*> m_controls;
+    QString m_whyNot;          ///< why the row's controls are disabled; empty: they are not
+    bool m_isHomed = false;
 };
 
 } // namespace ui

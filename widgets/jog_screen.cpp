@@ -1,6 +1,7 @@
 #include "widgets/jog_screen.h"
 
 #include "widgets/axis_row.h"
+#include "widgets/input_policy.h"
 #include "widgets/live_strip.h"
 #include "widgets/wording/wording.h"
 
@@ -69,7 +70,15 @@ JogScreen::JogScreen(dev::Instrument* client, QWidget* parent) : QWidget(parent)
     auto* keys = new QLabel(tr("Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift fast, Space stop, Esc E-stop"), this);
     keys->setStyleSheet(QStringLiteral("color:#555;"));
     speedRow->addWidget(keys);
+    speedRow->addSpacing(12);
+    // Whether the arrow keys move the machine or the text cursor: said, not guessed.
+    m_keysMode = new QLabel(this);
+    speedRow->addWidget(m_keysMode);
     speedRow->addStretch();
+    connect(qApp, &QApplication::focusChanged, this, [this] { showKeysMode(); });
+    // Jog keys reach this screen whichever of its controls (a button, the slider, the
+    // tab bar) has the focus; only a text field being edited keeps them.
+    qApp->installEventFilter(this);
     top->addLayout(speedRow);
     // A device that cannot stop by itself when BenchPilot goes away (GRBL) says so, with the bound.
     m_hostLossNote = new QLabel(this);
@@ -80,7 +89,7 @@ JogScreen::JogScreen(dev::Instrument* client, QWidget* parent) : QWidget(parent)
 
     m_gridHost = new QWidget(this);
     m_grid = new QGridLayout(m_gridHost);
-    m_grid->setHorizontalSpacing(10);
+    m_grid->setHorizontalSpacing(6);  // 13 columns beside the navigation on a 1366-pixel screen
     top->addWidget(m_gridHost);
     m_strip = new LiveStrip(this);
     m_strip->setVisible(false);
@@ -168,6 +177,7 @@ void JogScreen::rebuild()
         connect(row, &AxisRow::zeroRequested, this, [this](int axis) { m_client->setZero(static_cast<quint8>(1u << axis)); });
         connect(row, &AxisRow::goToRequested, this, &JogScreen::goTo);
         connect(row, &AxisRow::problem, this, &JogScreen::problem);
+        connect(row, &AxisRow::doneTyping, this, [this] { setFocus(Qt::OtherFocusReason); });
         m_rows << row;
     }
     m_grid->setColumnStretch(heads.size(), 1);
@@ -184,14 +194,17 @@ void JogScreen::refresh()
     const auto& st = m_client->status();
     QString state = words::term(dev::linkStateTerm(m_client->state()));
     if (ready && st.estop)
-        state = tr("E-STOP active — press Reset to clear");
+        state = tr("E-STOP active — press Reset E-stop to clear");
     m_state->setText(state);
     m_state->setStyleSheet(ready && !st.estop ? QStringLiteral("color:#2e7d32;") : QStringLiteral("color:#b71c1c; font-weight:bold;"));
     const bool canMove = ready && !st.estop;
     const bool canHome = m_client->can(dev::Capability::Homing);
-    m_homeAll->setEnabled(canMove && canHome);
-    m_homeAll->setToolTip(canHome || !ready ? tr("Home every axis (the analyzer lifts Z first, then X and Y)")
-                                            : words::text(m_client->whyNot(dev::Capability::Homing)));
+    // A greyed control says why (issue 16): the same reason for the whole screen.
+    const QString whyNot = !ready ? tr("Connect the instrument first")
+        : st.estop               ? tr("E-STOP is latched: press Reset E-stop first")
+                                 : QString();
+    setUsualToolTip(m_homeAll, tr("Home every axis (the analyzer lifts Z first, then X and Y)"));
+    setEnabledOr(m_homeAll, !whyNot.isEmpty() ? whyNot : canHome ? QString() : words::text(m_client->whyNot(dev::Capability::Homing)));
     m_setHome->setVisible(ready && !m_client->capabilities().testFlag(dev::Capability::Homing)
                           && m_client->capabilities().testFlag(dev::Capability::SetZero));
     m_setHome->setEnabled(canMove && !st.anyMoving() && !st.positionLost);
@@ -201,9 +214,9 @@ void JogScreen::refresh()
     m_hostLossNote->setVisible(noWatchdog);
     if (noWatchdog)
         m_hostLossNote->setText(words::text(m_client->whyNot(dev::Capability::StopsOnHostLoss)));
-    m_stop->setEnabled(ready);
+    setEnabledOr(m_stop, ready ? QString() : tr("Connect the instrument first"));
     for (AxisRow* r : m_rows) {
-        r->setEnabled(canMove);
+        r->setEnabled(whyNot);
         if (r->axis() < st.axes.size())
             r->showReadout(st.axes[r->axis()]);
         if (r->axis() < m_client->softLimits().size())
@@ -297,6 +310,53 @@ static bool typingFocus()
     if (auto* c = qobject_cast<QComboBox*>(f))
         return c->isEditable();
     return qobject_cast<QLineEdit*>(f) || qobject_cast<QAbstractSpinBox*>(f);
+}
+
+bool JogScreen::typing() const { return isVisible() && typingFocus(); }
+
+QString JogScreen::keysModeText() const
+{
+    return typing() ? tr("Typing in a field — press Enter or click an empty spot to jog with the keys") : tr("Keys jog the axes");
+}
+
+void JogScreen::showKeysMode()
+{
+    m_keysMode->setText(keysModeText());
+    m_keysMode->setStyleSheet(typing() ? QStringLiteral("color:#8a4b00; font-weight:bold;") : QStringLiteral("color:#2e7d32;"));
+}
+
+void JogScreen::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    // Coming to this screen, the keys jog: the focus is not left in a Step or Go-to field.
+    if (typingFocus() || !QApplication::focusWidget() || !isAncestorOf(QApplication::focusWidget()))
+        setFocus(Qt::OtherFocusReason);
+    showKeysMode();
+}
+
+bool JogScreen::eventFilter(QObject* watched, QEvent* event)
+{
+    const QEvent::Type t = event->type();
+    if ((t == QEvent::KeyPress || t == QEvent::KeyRelease || t == QEvent::ShortcutOverride) && watched != this && isVisible()
+        && watched->isWidgetType() && static_cast<QWidget*>(watched)->window() == window() && !typingFocus()) {
+        auto* k = static_cast<QKeyEvent*>(event);
+        int direction = 0;
+        if (axisForKey(k->key(), &direction) >= 0) {
+            if (t == QEvent::ShortcutOverride)
+                return false;  // no shortcut takes them; the key event follows
+            return handleJogKey(k, t == QEvent::KeyPress);
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+bool JogScreen::handleJogKey(QKeyEvent* event, bool press)
+{
+    if (press)
+        keyPressEvent(event);
+    else
+        keyReleaseEvent(event);
+    return event->isAccepted();
 }
 
 void JogScreen::keyPressEvent(QKeyEvent* event)

@@ -46,10 +46,20 @@ protected:
     void keyReleaseEvent(QKeyEvent* event) override;
     void focusOutEvent(QFocusEvent* event) override;
     void hideEvent(QHideEvent* event) override;
+    void showEvent(QShowEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+public:
+    /// True while a text field of this screen is being edited: the arrow keys are the field's then.
+    bool typing() const;
+    /// What the keys do now, as the screen says it ("Keys jog the axes" or how to get them back).
+    QString keysModeText() const;
 
 private:
     void rebuild();
     void refresh();
+    void showKeysMode();
+    bool handleJogKey(QKeyEvent* event, bool press);
     void startHold(int axis, int direction);
     void endHold(int axis);
     void endAllHolds();
@@ -70,6 +80,7 @@ private:
     QPushButton* m_stop;
     QSlider* m_speed;
     QLabel* m_speedLabel;
+    QLabel* m_keysMode;        ///< whether the keys jog or type, and how to switch
     QGridLayout* m_grid;
     QWidget* m_gridHost;
     QList<AxisRow*> m_rows;

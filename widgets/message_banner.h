@@ -1,26 +1,64 @@
 #pragma once
 #include <QFrame>
+#include <QList>
 #include <QTimer>
 
 class QLabel;
+class QToolButton;
 
 namespace ui {
 
-/// Non-modal message strip at the top of a window: errors stay until dismissed
-/// or replaced, notes fade after a while. Never blocks the operator.
+/// Non-modal message box at the top of a window. It always takes the same
+/// two-line height, shown or empty, so a message that comes or goes never moves
+/// the controls under the pointer. A longer message is elided; its whole text is
+/// the tooltip. Errors stay until dismissed; a message that repeats counts its
+/// repeats instead of flashing; news that arrives while an error is unread waits
+/// behind it. Warnings and notes step aside by themselves after a while.
 class MessageBanner : public QFrame {
     Q_OBJECT
 public:
     enum class Level { Info, Warning, Error };
     explicit MessageBanner(QWidget* parent = nullptr);
     void show(Level level, const QString& text);
+    /// The message shown now (empty when none).
     QString text() const;
     Level level() const { return m_level; }
+    /// True while a message is shown (the strip's space is kept either way).
+    bool hasMessage() const { return !m_shown.text.isEmpty(); }
+    /// How many times the shown message arrived (1 the first time).
+    int repeats() const { return m_shown.count; }
+    /// The shown message and those waiting behind it, in the order they will show.
+    QStringList texts() const;
+    /// Messages waiting behind the shown one.
+    int waiting() const { return static_cast<int>(m_waiting.size()); }
+    /// The operator read it: the next waiting message, or an empty strip.
+    void dismiss();
+    /// How long warnings and notes stay.
+    static constexpr int kFadeMs = 8000;
+    /// At most this many wait; the oldest note or warning goes first.
+    static constexpr int kMaxWaiting = 20;
+    static constexpr int kLines = 2;
+
+protected:
+    void resizeEvent(QResizeEvent* event) override;
+    void changeEvent(QEvent* event) override;
 
 private:
+    struct Entry {
+        Level level = Level::Info;
+        QString text;
+        int count = 0;
+    };
+    void display(const Entry& e);
+    void relabel();
+
     QLabel* m_label;
-    QTimer m_hide;
+    QLabel* m_more;
+    QToolButton* m_close;
+    QTimer m_fade;
     Level m_level = Level::Info;
+    Entry m_shown;
+    QList<Entry> m_waiting;
 };
 
 } // namespace ui

@@ -119,7 +119,10 @@ PlotsScreen::PlotsScreen(tele::TelemetryHub* hub, QWidget* parent) : QWidget(par
             m_notes[instrument] = note;
             updateStatus();
         });
-        connect(m_hub, &tele::TelemetryHub::problem, this, [this](const msg::Message& m) { tell(words::text(m), true); });
+        connect(m_hub, &tele::TelemetryHub::problem, this, [this](const msg::Message& m) {
+            // A device clock that started again is news, not a fault: it must not stay red for minutes.
+            tell(words::text(m), m.id != "telemetry.clock_restarted");
+        });
     }
     setWindowS(kDefaultWindowS);
     refreshPicker();
@@ -451,6 +454,13 @@ void PlotsScreen::tell(const QString& text, bool isProblem)
     m_lastMessage = text;
     m_message->setText(text);
     m_message->setStyleSheet(isProblem ? QStringLiteral("color:#b71c1c;") : QString());
+    m_messageProblem = isProblem;
+    // News fades like the banner's notes; a problem stays until the next message.
+    if (!isProblem)
+        QTimer::singleShot(kNoteFadeMs, m_message, [this, text] {
+            if (m_lastMessage == text && !m_messageProblem)
+                m_message->clear();
+        });
     if (isProblem)
         emit problem(text);
     else

@@ -79,6 +79,9 @@ public:
 
     QString statusText() const;
     QString lastMessage() const { return m_lastMessage; }
+    /// Whether the screen's message line shows its message as a problem (red).
+    bool messageIsProblem() const { return m_messageProblem; }
+    static constexpr int kNoteFadeMs = 8000;
     int framesDrawn() const { return m_frames; }
 
 signals:
@@ -133,6 +136,7 @@ private:
     QHash<int, msg::Message> m_notes;  ///< subscription notes per instrument (worded when shown)
     QHash<int, int> m_rates;      ///< streamed rate per instrument
     QString m_lastMessage;
+    bool m_messageProblem = false;
     int m_frames = 0;
 };
 

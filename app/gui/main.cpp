@@ -1,7 +1,7 @@
 // benchpilot: the operator and test-bench GUI.
 //   benchpilot [--lang system|en|zh_CN] [--sim analyzer|stage] [--port PATH [--instrument analyzer|stage] [--profile FILE] [--baud N]]
 //   benchpilot [--api-socket PATH | --no-api] [--api-websocket PORT [--api-token-file FILE] [--api-allow-origin URL]...]
-//   benchpilot [--lang …] --screenshot FILE --screen NAME [--sim analyzer|stage] [--settle-ms N] [--home-first] [--exercise] [--tune] [--recipe FILE]
+//   benchpilot [--lang …] --screenshot FILE --screen NAME [--size WxH] [--sim analyzer|stage] [--settle-ms N] [--home-first] [--exercise] [--tune] [--recipe FILE]
 #include "main_window.h"
 #include "screenshot.h"
 #include "app/cli/command.h"
@@ -78,6 +78,10 @@ int main(int argc, char** argv)
                                QStringLiteral("file"));
     QCommandLineOption baud(QStringLiteral("baud"), QApplication::translate("main", "with --port: the link speed"), QStringLiteral("N"),
                             QStringLiteral("115200"));
+    QCommandLineOption size(QStringLiteral("size"),
+                            QApplication::translate("main", "screenshot: the window's size, e.g. 1366x768 (a window that cannot "
+                                                            "shrink to it shows as a larger picture)"),
+                            QStringLiteral("WxH"), QStringLiteral("1600x1000"));
     QCommandLineOption settle(QStringLiteral("settle-ms"),
                               QApplication::translate("main", "screenshot: how long the simulators run first"),
                               QStringLiteral("ms"), QStringLiteral("1500"));
@@ -106,7 +110,7 @@ int main(int argc, char** argv)
     QCommandLineOption lang(QStringLiteral("lang"),
                             QApplication::translate("main", "language of the screens: system, en or zh_CN (default: the Language menu's choice)"),
                             QStringLiteral("language"));
-    p.addOptions({sim, port, instrument, profile, baud, shot, screen, settle, script, exercise, tune, recipe, lang,
+    p.addOptions({sim, port, instrument, profile, baud, shot, screen, size, settle, script, exercise, tune, recipe, lang,
                   apiSocket, noApi, apiWebSocket, apiToken, apiOrigin});
     QCoreApplication::setOrganizationName(QStringLiteral("BenchPilot"));
     QCoreApplication::setApplicationName(QStringLiteral("benchpilot"));
@@ -152,6 +156,14 @@ int main(int argc, char** argv)
         r.exercise = p.isSet(exercise);
         r.tune = p.isSet(tune);
         r.recipe = p.value(recipe);
+        const QStringList wh = p.value(size).split(QLatin1Char('x'));
+        bool okW = false, okH = false;
+        if (wh.size() == 2)
+            r.size = QSize(wh[0].toInt(&okW), wh[1].toInt(&okH));
+        if (!okW || !okH || r.size.width() < 200 || r.size.height() < 150) {
+            std::fprintf(stderr, "benchpilot: --size needs WIDTHxHEIGHT, e.g. 1366x768 (got '%s')\n", qPrintable(p.value(size)));
+            return 1;
+        }
         return app::takeScreenshot(r);
     }
     // --sim and --port say what to connect this time (over what was remembered).

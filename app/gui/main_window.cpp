@@ -14,6 +14,7 @@
 #include "device/telemetry/telemetry_hub.h"
 #include "widgets/connection_bar.h"
 #include "widgets/event_log.h"
+#include "widgets/input_policy.h"
 #include "widgets/jog_screen.h"
 #include "widgets/message_banner.h"
 #include "widgets/plates/plates_screen.h"
@@ -51,10 +52,30 @@
 #include <QVBoxLayout>
 
 namespace app {
+namespace {
+/// A screen's scroll area: it asks for all its screen needs up to what a 1366 × 768 laptop
+/// leaves a screen beside the navigation, the connections, the event log and the status bar
+/// (MainWindowSize tests hold the sum). Beyond that the screen scrolls instead of growing the
+/// window past the display and pushing E-STOP off it.
+class ScreenScroll : public QScrollArea {
+public:
+    static constexpr int kMostWidthPx = 1212;
+    static constexpr int kMostHeightPx = 517;
+    using QScrollArea::QScrollArea;
+    QSize minimumSizeHint() const override
+    {
+        if (!widget())
+            return QScrollArea::minimumSizeHint();
+        const QSize need = widget()->minimumSizeHint().expandedTo(widget()->minimumSize());
+        return need.boundedTo(QSize(kMostWidthPx, kMostHeightPx));
+    }
+};
+} // namespace
 
 MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMainWindow(parent), m_options(options)
 {
     setWindowTitle(tr("BenchPilot"));
+    ui::InputPolicy::install();  // the wheel turns only a focused spin box or combo, on every screen
     m_sessions[0] = new InstrumentSession(proto::DeviceKind::Analyzer, tr("Analyzer"), this);
     m_sessions[1] = new InstrumentSession(proto::DeviceKind::Stage, tr("Stage"), this);
     m_hub = new tele::TelemetryHub(this);
@@ -76,6 +97,12 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     bars->addWidget(m_bars[0]);
     bars->addWidget(m_bars[1]);
     top->addLayout(bars, 1);
+    // Messages sit beside the E-stop in the row the connections make tall anyway: no row of
+    // their own, so one that comes or goes moves nothing (issue 16, item 3).
+    m_banner = new ui::MessageBanner(central);
+    top->addWidget(m_banner, 1);
+    if (m_api->strip())
+        top->addWidget(m_api->strip(), 1);  // who has control: only while a script has it
     m_reset = new QPushButton(tr("Reset E-stop"), central);
     m_reset->setToolTip(tr("Clear the E-stop latch on both instruments (axes stay where they are)"));
     m_reset->setMinimumHeight(48);
@@ -92,16 +119,6 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     top->addWidget(m_estop);
     v->addLayout(top);
 
-    m_banner = new ui::MessageBanner(central);
-    if (m_api->strip()) {
-        // Who has control shares the banner's row: no extra height on a 768-pixel screen.
-        auto* row = new QHBoxLayout;
-        row->addWidget(m_banner, 1);
-        row->addWidget(m_api->strip(), 1);
-        v->addLayout(row);
-    } else {
-        v->addWidget(m_banner);
-    }
 
     auto* body = new QHBoxLayout;
     m_nav = new QListWidget(central);
@@ -190,6 +207,8 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     dock->setWidget(m_log);
     dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
     addDockWidget(Qt::BottomDockWidgetArea, dock);
+    // The log starts at its least height: on a 768-pixel screen the room is the screens'.
+    resizeDocks({dock}, {dock->minimumSizeHint().height()}, Qt::Vertical);
     wireApi(dock);
 
     for (int i = 0; i < 2; ++i) {
@@ -295,7 +314,16 @@ void MainWindow::addScreen(const QString& name, const QString& title, QWidget* s
 {
     m_screenNames << name;
     m_nav->addItem(title);
-    m_stack->addWidget(screen);
+    // Every screen scrolls when its content is taller or wider than the window: a screen in a
+    // busy state (tuning results, long file names) can no longer grow the window past a 1366 × 768
+    // laptop's screen and push E-STOP off it (issue 16, item 4).
+    auto* scroll = new ScreenScroll(m_stack);
+    scroll->setObjectName(QStringLiteral("screenScroll_%1").arg(name));
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setFocusPolicy(Qt::NoFocus);
+    scroll->setWidget(screen);
+    m_stack->addWidget(scroll);
 }
 
 QStringList MainWindow::screenNames() const { return m_screenNames; }
@@ -404,6 +432,10 @@ void MainWindow::updateStatusBar()
         dev::Instrument* c = m_sessions[i]->instrument();
         const dev::LinkStats st = c->stats();
         QString text = QStringLiteral("%1: %2").arg(m_sessions[i]->name(), words::term(dev::linkStateTerm(c->state())));
+        // "ready" while the E-stop is latched would contradict the red banner: the latch is the state.
+        const bool latched = c->isReady() && c->status().estop;
+        if (latched)
+            text = tr("%1: E-STOP latched — press Reset E-stop to clear").arg(m_sessions[i]->name());
         if (c->state() == dev::LinkState::Ready)
             text += QStringLiteral(" · %1").arg(c->identity().model);
         const quint64 bad = st.crcErrors + st.malformed + st.oversize;
@@ -414,8 +446,11 @@ void MainWindow::updateStatusBar()
         if (st.lostSamples)
             text += tr(" · %1 samples lost").arg(st.lostSamples);
         m_statusLabels[i]->setText(text);
+        m_statusLabels[i]->setStyleSheet(latched ? QStringLiteral("color:#b71c1c; font-weight:bold;") : QString());
     }
 }
+
+QString MainWindow::statusText(int index) const { return m_statusLabels[index]->text(); }
 
 void MainWindow::updateEStopUi()
 {
@@ -423,6 +458,10 @@ void MainWindow::updateEStopUi()
     for (auto* s : m_sessions)
         latched = latched || (s->instrument()->isReady() && s->instrument()->status().estop);
     m_reset->setVisible(latched);
+    if (latched != m_latchShown) {
+        m_latchShown = latched;
+        updateStatusBar();
+    }
 }
 
 void MainWindow::emergencyStop()

@@ -82,6 +82,8 @@ public:
     ui::MessageBanner* banner() { return m_banner; }
     ui::EventLog* eventLog() { return m_log; }
     QPushButton* estopButton() { return m_estop; }
+    /// The status bar's line for the analyzer (0) or the stage (1).
+    QString statusText(int index) const;
     /// The scripting API's wiring (its server is null when no API was asked for).
     ApiWiring* api() { return m_api; }
 
@@ -135,6 +137,7 @@ private:
     QPushButton* m_reset;
     QLabel* m_statusLabels[2];
     bool m_positionLostShown[2] = {false, false};
+    bool m_latchShown = false;  ///< the status bar shows an E-stop latch
     QDockWidget* m_logDock = nullptr;
     QMenu* m_settingsMenu = nullptr;
     QMenu* m_languageMenu = nullptr;

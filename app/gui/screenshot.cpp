@@ -58,7 +58,7 @@ int takeScreenshot(const ScreenshotRequest& r)
     }
     const int index = r.instrument == QLatin1String("stage") ? 1 : 0;
     w.showInstrument(index);
-    w.resize(1600, 1000);
+    w.resize(r.size);
     w.show();
     InstrumentSession* s = index ? w.stage() : w.analyzer();
     if (!spinUntil([&] { return w.analyzer()->instrument()->isReady() && w.stage()->instrument()->isReady(); }, 5000)) {
@@ -177,6 +177,11 @@ int takeScreenshot(const ScreenshotRequest& r)
             return 2;
     }
     spin(r.settleMs);
+    w.resize(r.size);  // what the screen asked for while it settled may have grown it
+    spin(50);
+    if (w.size() != r.size)
+        std::fprintf(stderr, "benchpilot: the window cannot be %dx%d; it is %dx%d\n", r.size.width(), r.size.height(), w.width(),
+                     w.height());
     if (!w.grab().save(r.file)) {
         std::fprintf(stderr, "benchpilot: cannot write %s\n", qPrintable(r.file));
         return 4;

@@ -1,4 +1,5 @@
 #pragma once
+#include <QSize>
 #include <QString>
 
 #include <functional>
@@ -14,6 +15,8 @@ struct ScreenshotRequest {
     bool exercise = false;   ///< jog, then move the shown instrument, so live plots show motion
     bool tune = false;       ///< tuning screen: home the stage, tune X with the relay, run a step test
     QString recipe;          ///< plates: open this recipe, home the analyzer and run it while settling
+    /// The window's size; a window that cannot shrink to it comes out larger (the picture says so).
+    QSize size = QSize(1600, 1000);
 };
 
 /// Renders one screen of a fresh main window (simulated instruments, no saved

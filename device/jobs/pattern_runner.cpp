@@ -262,6 +262,7 @@ bool PatternRunner::start(std::vector<Segment> path, const Options& options)
     m_underruns = 0;
     m_underrunSaid = false;
     m_t0S = m_endS = -1;
+    m_last.reset();
     m_pauseAsked = m_abortAsked = false;
     emit progress(0, m_path.size());
     approach(m_path.front().start, options.zMm.has_value(), [this] { beginAt(0, std::nullopt); });
@@ -478,6 +479,7 @@ void PatternRunner::addSample(double deviceTimeS, Vec2 commanded, Vec2 measured)
         return;
     const motion::path::ContourSample c = m_tracker->add(measured);
     PatternRunSample s{deviceTimeS - m_t0S, commanded, measured, c.pathMm, c.errorMm, c.segment};
+    m_last = s;
     if (m_seen++ % m_thin == 0) {
         if (m_samples.size() >= kMaxStoredSamples) {
             // Bounded: halve the stored resolution, keep the whole run.
@@ -493,7 +495,17 @@ void PatternRunner::addSample(double deviceTimeS, Vec2 commanded, Vec2 measured)
     emit sampleAdded(s);
 }
 
-double PatternRunner::pathDoneMm() const { return m_tracker ? m_tracker->startOfMm(m_done) : 0.0; }
+double PatternRunner::pathDoneMm() const
+{
+    const double done = m_tracker ? m_tracker->startOfMm(m_done) : 0.0;
+    return m_last ? std::max(done, m_last->pathMm) : done;
+}
+
+std::size_t PatternRunner::currentSegment() const
+{
+    std::size_t k = m_last ? std::max(m_done, m_last->segment) : m_done;
+    return m_path.empty() ? 0 : std::min(k, m_path.size() - 1);
+}
 
 double PatternRunner::remainingS() const
 {
@@ -510,7 +522,8 @@ PatternRunSummary PatternRunner::summary() const
         s.rmsContourMm = t.rmsMm;
         s.maxAtPathMm = t.atPathMm;
     }
-    s.durationS = m_t0S >= 0 && m_endS >= m_t0S ? m_endS - m_t0S : 0.0;
+    // A run that did not reach its end (aborted, interrupted) lasted until its last sample, not 0 s.
+    s.durationS = m_t0S >= 0 && m_endS >= m_t0S ? m_endS - m_t0S : m_last ? m_last->tS : 0.0;
     s.underruns = m_underruns;
     s.complete = m_state == State::Done;
     return s;

@@ -81,7 +81,11 @@ public:
     bool busy() const { return m_state == State::Approaching || m_state == State::Running || m_state == State::Paused; }
     std::size_t totalSegments() const { return m_path.size(); }
     std::size_t segmentsDone() const { return m_done; }
+    /// How far along the path the machine is: the last judged telemetry sample when there is
+    /// one (segments are reported done only as the device finishes them, behind the machine).
     double pathDoneMm() const;
+    /// The segment the machine is on (0-based), by the same measure.
+    std::size_t currentSegment() const;
     double remainingS() const;          ///< estimate from the segments not done yet
     quint32 resumeIndex() const { return static_cast<quint32>(m_done); }
     const std::vector<motion::path::Segment>& path() const { return m_path; }
@@ -123,6 +127,7 @@ private:
     std::vector<PatternRunSample> m_samples;
     std::size_t m_thin = 1;             ///< keep every m_thin-th sample once the store filled up
     std::size_t m_seen = 0;
+    std::optional<PatternRunSample> m_last;  ///< the newest judged sample of this run
     std::size_t m_sent = 0;             ///< segments queued on the device
     std::size_t m_done = 0;             ///< segments completed
     std::optional<motion::path::Vec2> m_firstFrom;  ///< the next append's first segment starts here (a restart)

@@ -978,6 +978,10 @@ Take control back? The script&apos;s next call is refused and its jogs stop; a j
         <source>; </source>
         <translation>；</translation>
     </message>
+    <message>
+        <source>%1: E-STOP latched — press Reset E-stop to clear</source>
+        <translation>%1：急停已锁定 — 按“急停复位”解除</translation>
+    </message>
 </context>
 <context>
     <name>cli</name>
@@ -3018,6 +3022,10 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <source>--sim and --port name the same instrument</source>
         <translation>--sim 与 --port 指向同一台仪器</translation>
     </message>
+    <message>
+        <source>screenshot: the window&apos;s size, e.g. 1366x768 (a window that cannot shrink to it shows as a larger picture)</source>
+        <translation>截图：窗口尺寸，如 1366x768（无法缩到该尺寸的窗口会得到更大的图片）</translation>
+    </message>
 </context>
 <context>
     <name>report</name>
@@ -3695,10 +3703,6 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <translation>移动</translation>
     </message>
     <message>
-        <source>Move %1 to the target (absolute; the axis must be homed)</source>
-        <translation>把 %1 移到目标（绝对位置；该轴须已回零）</translation>
-    </message>
-    <message>
         <source>Soft limits: moves beyond them are refused</source>
         <translation>软限位：超出的移动会被拒绝</translation>
     </message>
@@ -3719,12 +3723,12 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <translation>未回零：绝对移动会被拒绝</translation>
     </message>
     <message>
-        <source>Move %1 to the target</source>
-        <translation>把 %1 移到目标</translation>
-    </message>
-    <message>
         <source>Home %1 first: absolute moves need a homed axis</source>
         <translation>请先让 %1 回零：绝对移动需要已回零的轴</translation>
+    </message>
+    <message>
+        <source>Move %1 to the target (absolute)</source>
+        <translation>把 %1 移到目标（绝对位置）</translation>
     </message>
 </context>
 <context>
@@ -4893,10 +4897,6 @@ Keep that log aside and start this test afresh?</source>
         <translation>软限位</translation>
     </message>
     <message>
-        <source>E-STOP active — press Reset to clear</source>
-        <translation>急停已触发 — 按“复位”解除</translation>
-    </message>
-    <message>
         <source> Z rises to its switch first, then the other axes go to theirs.</source>
         <translation> Z 先升到其开关，其他轴再回到各自的开关。</translation>
     </message>
@@ -4931,6 +4931,26 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Unlock the %1? Its controller lost track of its position; unlocking takes the position it believes as true. Home it as soon as you can.</source>
         <translation>解锁%1？其控制器已丢失位置；解锁即采用其认定的位置为准。请尽快回零。</translation>
+    </message>
+    <message>
+        <source>E-STOP active — press Reset E-stop to clear</source>
+        <translation>急停已触发 — 按“急停复位”解除</translation>
+    </message>
+    <message>
+        <source>Connect the instrument first</source>
+        <translation>请先连接仪器</translation>
+    </message>
+    <message>
+        <source>E-STOP is latched: press Reset E-stop first</source>
+        <translation>急停已锁定：请先按“急停复位”</translation>
+    </message>
+    <message>
+        <source>Typing in a field — press Enter or click an empty spot to jog with the keys</source>
+        <translation>正在输入框中输入 — 按回车或点击空白处即可用按键点动</translation>
+    </message>
+    <message>
+        <source>Keys jog the axes</source>
+        <translation>按键点动各轴</translation>
     </message>
 </context>
 <context>
@@ -5013,10 +5033,6 @@ Keep that log aside and start this test afresh?</source>
         <translation>%1 — 摇杆</translation>
     </message>
     <message>
-        <source>E-STOP active — press Reset to clear</source>
-        <translation>急停已触发 — 按“复位”解除</translation>
-    </message>
-    <message>
         <source>&lt;tr&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td align=right&gt;%2&lt;/td&gt;&lt;td align=right&gt;%3&lt;/td&gt;&lt;td&gt;%4&lt;/td&gt;&lt;/tr&gt;</source>
         <translation>&lt;tr&gt;&lt;td&gt;&lt;b&gt;%1&lt;/b&gt;&lt;/td&gt;&lt;td align=right&gt;%2&lt;/td&gt;&lt;td align=right&gt;%3&lt;/td&gt;&lt;td&gt;%4&lt;/td&gt;&lt;/tr&gt;</translation>
     </message>
@@ -5041,8 +5057,12 @@ Keep that log aside and start this test afresh?</source>
         <translation>指令速度：%1 mm/s</translation>
     </message>
     <message>
-        <source>Commanded speed: 0.00 mm/s</source>
-        <translation>指令速度：0.00 mm/s</translation>
+        <source>E-STOP active — press Reset E-stop to clear</source>
+        <translation>急停已触发 — 按“急停复位”解除</translation>
+    </message>
+    <message>
+        <source> · %1 held at its soft limit</source>
+        <translation> · %1 停在软限位</translation>
     </message>
 </context>
 <context>
@@ -5069,6 +5089,18 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Dismiss</source>
         <translation>关闭</translation>
+    </message>
+    <message>
+        <source>%1 (×%2)</source>
+        <translation>%1（×%2）</translation>
+    </message>
+    <message>
+        <source>+%1 more</source>
+        <translation>还有 %1 条</translation>
+    </message>
+    <message>
+        <source>Dismiss: show the next message</source>
+        <translation>关闭：显示下一条消息</translation>
     </message>
 </context>
 <context>
@@ -5491,10 +5523,6 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Leaves the soft limits: %1</source>
         <translation>超出软限位：%1</translation>
-    </message>
-    <message>
-        <source>Continue</source>
-        <translation>继续</translation>
     </message>
     <message>
         <source>Resume</source>

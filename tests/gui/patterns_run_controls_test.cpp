@@ -6,6 +6,9 @@
 #include "widgets/patterns/pattern_screen.h"
 
 #include <QPushButton>
+#include <QRegularExpression>
+
+#include "widgets/message_banner.h"
 
 #include <cmath>
 
@@ -148,4 +151,43 @@ TEST_F(PatternRunControls, AbortStopsOnThePathAndTheNextRunCanStartAndBeAbortedW
     EXPECT_EQ(commanded().x, held.x) << "aborting a paused run moved the machine";
     EXPECT_EQ(commanded().y, held.y) << "aborting a paused run moved the machine";
     expectReadyForTheNextRun();
+}
+
+// Issue 16, item 14: the status said "segment 2 of 4, 15.7 mm done" while the stage was at
+// 17.6 mm in segment 3, and an aborted run's summary said "time 0.0 s".
+TEST_F(PatternRunControls, StatusSaysWhereTheMachineIsAndAnAbortedRunKeepsItsTime)
+{
+    QTest::mouseClick(runButton, Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return runningPast(2.0); }, 10000)) << p->statusText().toStdString();
+    pump(150);  // a few samples more
+    const double along = onLine(measured()).first;
+    const QString status = p->statusText();
+    EXPECT_TRUE(status.contains(QStringLiteral("segment 1 of 1"))) << status.toStdString();
+    const QRegularExpressionMatch m = QRegularExpression(QStringLiteral("([0-9]+[.,][0-9]) mm done")).match(status);
+    ASSERT_TRUE(m.hasMatch()) << status.toStdString();
+    EXPECT_NEAR(QString(m.captured(1)).replace(QLatin1Char(','), QLatin1Char('.')).toDouble(), along, 0.4)
+        << status.toStdString() << " with the stage " << along << " mm along the line";
+
+    QTest::mouseClick(abortButton, Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return !runner()->busy(); }, 5000));
+    EXPECT_GT(runner()->summary().durationS, 1.0) << "an aborted run after more than 1.3 s";
+    EXPECT_FALSE(runner()->summary().complete);
+}
+
+// Issue 16, item 9: after a pulled cable the button said "Continue" while the message said
+// "press Resume".
+TEST_F(PatternRunControls, TheButtonAfterALostLinkSaysTheWordTheMessageUses)
+{
+    QTest::mouseClick(runButton, Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return runningPast(1.0); }, 10000)) << p->statusText().toStdString();
+    w->stage()->disconnectLink();
+    ASSERT_TRUE(waitFor([&] { return runner()->state() == State::Interrupted; }, 5000));
+    pump(50);
+    QString said;
+    for (const QString& t : w->banner()->texts())
+        if (t.contains(QStringLiteral("Resume")) || t.contains(QStringLiteral("Continue")))
+            said = t;
+    ASSERT_TRUE(said.contains(QStringLiteral("press "))) << said.toStdString();
+    EXPECT_TRUE(said.contains(QStringLiteral("press ") + pauseButton->text())) << said.toStdString() << " / button "
+                                                                                << pauseButton->text().toStdString();
 }

@@ -11,6 +11,7 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QKeyEvent>
+#include <QLocale>
 #include <QLabel>
 #include <QPushButton>
 #include <QSlider>
@@ -172,7 +173,7 @@ void JoystickScreen::refresh()
     const auto& id = m_client->identity();
     QString state = words::term(dev::linkStateTerm(m_client->state()));
     if (ready && st.estop)
-        state = tr("E-STOP active — press Reset to clear");
+        state = tr("E-STOP active — press Reset E-stop to clear");
     m_state->setText(state);
     m_state->setStyleSheet(ready && !st.estop ? QStringLiteral("color:#2e7d32;") : QStringLiteral("color:#b71c1c; font-weight:bold;"));
     const bool canMove = ready && !st.estop;
@@ -182,6 +183,8 @@ void JoystickScreen::refresh()
     }
     m_pad->setEnabled(canMove);
     m_z->setEnabled(canMove);
+    if (!m_wish.empty())
+        showSpeed();
     if (id.axes.size() < 2 || st.axes.size() < 2)
         return;
     QString rows;
@@ -247,7 +250,37 @@ void JoystickScreen::apply()
         wish[m_zAxis] = motion::jog::shapeAxis(zIn, s.shaping) * std::min(s.maxSpeedMmS, id.axes[m_zAxis].maxSpeed);
     }
     m_driver->setVelocities(wish);
-    m_speed->setText(tr("Commanded speed: %1 mm/s").arg(std::hypot(wish[0], wish[1]), 0, 'f', 2));
+    m_wish = wish;
+    showSpeed();
+}
+
+QString JoystickScreen::speedText() const { return m_speed->text(); }
+
+void JoystickScreen::showSpeed()
+{
+    // The device holds an axis at its soft limit whatever the stick asks: the line says what
+    // the machine does, not the wish ("20.00 mm/s" against a limit was a lie).
+    const auto& st = m_client->status();
+    const auto& lim = m_client->softLimits();
+    const auto& id = m_client->identity();
+    double v[2] = {0, 0};
+    QStringList held;
+    for (int a = 0; a < 2; ++a) {
+        const auto it = m_wish.find(a);
+        v[a] = it == m_wish.end() ? 0.0 : it->second;
+        if (v[a] == 0 || a >= st.axes.size() || a >= lim.size() || a >= id.axes.size())
+            continue;
+        const double at = st.axes[a].commanded;
+        const double slack = std::max(1e-3, 2 * id.axes[a].resolution);
+        if ((v[a] < 0 && at <= lim[a].min + slack) || (v[a] > 0 && at >= lim[a].max - slack)) {
+            v[a] = 0;
+            held << QString(id.axes[a].letter);
+        }
+    }
+    QString text = tr("Commanded speed: %1 mm/s").arg(QLocale().toString(std::hypot(v[0], v[1]), 'f', 2));
+    if (!held.isEmpty())
+        text += tr(" · %1 held at its soft limit").arg(held.join(QStringLiteral(", ")));
+    m_speed->setText(text);
 }
 
 void JoystickScreen::stopAll()
@@ -260,7 +293,9 @@ void JoystickScreen::stopAll()
         m_z->setValue(0);
     }
     m_driver->stop();
-    m_speed->setText(tr("Commanded speed: 0.00 mm/s"));
+    m_wish.clear();
+    // No client read here: stopAll() also runs from the destructor, when the client may be gone.
+    m_speed->setText(tr("Commanded speed: %1 mm/s").arg(QLocale().toString(0.0, 'f', 2)));
 }
 
 static bool stickKey(int key)

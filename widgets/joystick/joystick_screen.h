@@ -10,6 +10,8 @@
 #include <QSet>
 #include <QWidget>
 
+#include <map>
+
 class QDoubleSpinBox;
 class QLabel;
 class QSlider;
@@ -44,6 +46,8 @@ public:
     dev::JoystickDriver* driver() const { return m_driver; }
     /// Every axis to zero now (release, focus loss, hide…).
     void stopAll();
+    /// The speed line as shown: what the machine is asked to do, an axis held at its soft limit counted at 0.
+    QString speedText() const;
 
 signals:
     void problem(const QString& message);
@@ -58,6 +62,7 @@ protected:
 private:
     void rebuild();
     void refresh();
+    void showSpeed();
     void apply();
     motion::path::Vec2 keyDeflection() const;
     double keyZ() const;
@@ -74,6 +79,7 @@ private:
     QDoubleSpinBox* m_expo;
     QLabel* m_readout;
     QLabel* m_speed;
+    std::map<int, double> m_wish;  ///< axis → velocity the stick asks for (mm/s)
     TravelView* m_travel;
     QSet<int> m_keys;  ///< arrow and page keys held
     int m_zAxis = -1;

@@ -67,6 +67,27 @@ void PatternPreview::keepScale()
     m_adjusting = false;
 }
 
+void PatternPreview::resizeEvent(QResizeEvent* event)
+{
+    QCustomPlot::resizeEvent(event);
+    // The axis rect takes its new size only at the next layout: a banner or a window that
+    // changed the plot's shape turned a circle into an ellipse until something else replotted.
+    // Twice: new ranges give new tick labels, whose width moves the axis rect once more.
+    for (int pass = 0; pass < 2; ++pass) {
+        updateLayout();
+        keepScale();
+    }
+    replot(QCustomPlot::rpQueuedReplot);
+}
+
+double PatternPreview::aspect() const
+{
+    const QRect r = axisRect()->rect();
+    if (r.width() <= 0 || r.height() <= 0 || yAxis->range().size() <= 0)
+        return 0;
+    return (xAxis->range().size() / r.width()) / (yAxis->range().size() / r.height());
+}
+
 void PatternPreview::setLimits(const motion::path::Box& travel, const motion::path::Box& soft)
 {
     m_travel->topLeft->setCoords(travel.minX, travel.maxY);

@@ -38,6 +38,11 @@ public:
     int walkPoints() const;
     int runPoints() const;
     const std::vector<motion::path::Segment>& path() const { return m_path; }
+    /// mm per pixel across over mm per pixel up: 1 when a circle is drawn round.
+    double aspect() const;
+
+protected:
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
     void redrawPath();

@@ -224,6 +224,7 @@ PatternScreen::PatternScreen(QVector<PatternInstrument> instruments, tele::Telem
                 return;
             m_preview->addRunPoint(s.commanded, s.measured);
             m_contour->addSample(s.pathMm, s.contourMm);
+            showRunning();
         });
         connect(r, &PatternRunner::finished, this, [this, i](const jobs::PatternRunSummary& s) {
             if (i != m_runOn)
@@ -344,7 +345,7 @@ void PatternScreen::updateButtons()
     m_pause->setEnabled(mine && (st == PatternRunner::State::Running || st == PatternRunner::State::Paused
                                  || st == PatternRunner::State::Interrupted || st == PatternRunner::State::Approaching));
     const QString pauseText = mine && (st == PatternRunner::State::Paused || st == PatternRunner::State::Interrupted)
-                                  ? (st == PatternRunner::State::Interrupted ? tr("Continue") : tr("Resume"))
+                                  ? tr("Resume")  // the word the run's messages use ("reconnect, then press Resume")
                                   : tr("Pause");
     if (m_pause->text() != pauseText) {
         m_pause->setText(pauseText);
@@ -437,11 +438,20 @@ void PatternScreen::onProgress(std::size_t done, std::size_t total)
 {
     m_progress->setMaximum(static_cast<int>(total));
     m_progress->setValue(static_cast<int>(done));
+    showRunning();
+}
+
+void PatternScreen::showRunning()
+{
+    if (m_runOn < 0)
+        return;
     const PatternRunner* r = m_instruments[m_runOn].runner;
+    // Where the machine is (its measured position along the path), not the last segment the
+    // device reported finished: that lags a whole segment behind.
     if (r->state() == PatternRunner::State::Running)
         m_status->setText(tr("Running: segment %1 of %2, %3 mm done, about %4 left")
-                              .arg(done)
-                              .arg(total)
+                              .arg(r->currentSegment() + 1)
+                              .arg(r->totalSegments())
                               .arg(r->pathDoneMm(), 0, 'f', 1)
                               .arg(duration(r->remainingS())));
 }

@@ -90,6 +90,7 @@ private:
     void refreshLimits();
     void updateButtons();
     void onRunnerState(jobs::PatternRunner::State s);
+    void showRunning();
     void onProgress(std::size_t done, std::size_t total);
     void onData(int hubIndex);
     void wantTelemetry(bool want);

@@ -50,7 +50,6 @@ RunPanel::RunPanel(jobs::RecipeRunner* runner, QWidget* parent) : QWidget(parent
     for (auto* b : {m_run, m_pause, m_resume, m_abort})
         controls->addWidget(b);
     controls->addStretch();
-    controls->addWidget(m_fromLog);
     v->addLayout(controls);
 
     m_progress = new QProgressBar(this);
@@ -60,7 +59,12 @@ RunPanel::RunPanel(jobs::RecipeRunner* runner, QWidget* parent) : QWidget(parent
     m_state = new QLabel(this);
     m_current = new QLabel(this);
     m_times = new QLabel(this);
-    v->addWidget(m_state);
+    // Beside the state, not after the four run buttons: there it was cut to "Resum…" on a
+    // 1366-pixel screen (issue 16, item 4).
+    auto* stateRow = new QHBoxLayout;
+    stateRow->addWidget(m_state, 1);
+    stateRow->addWidget(m_fromLog);
+    v->addLayout(stateRow);
     v->addWidget(m_current);
     v->addWidget(m_times);
 
