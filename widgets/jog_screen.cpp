@@ -12,6 +12,7 @@
 #include <QComboBox>
 #include <QGridLayout>
 #include <QKeyEvent>
+#include <QLocale>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -264,7 +265,14 @@ void JogScreen::homeAxes(quint8 mask)
     const QString order = m_client->capabilities().testFlag(dev::Capability::CoupledXyThenZ) && which.contains(QLatin1Char('Z')) && which.size() > 1
         ? tr(" Z rises to its switch first, then the other axes go to theirs.")
         : QString();
-    if (!confirm(tr("Home %1 of the %2?%3 Keep hands and labware clear.").arg(which, words::term(dev::instrumentTerm(id.kind)), order)))
+    // Homing the plunger drives it to its empty end: whatever it holds goes out of the tip.
+    QString liquid;
+    const auto& st = m_client->status();
+    for (int i = 0; i < id.axes.size() && i < st.axes.size(); ++i)
+        if ((mask == 0 || (mask & (1u << i))) && id.axes[i].letter == QLatin1Char('P') && st.axes[i].commanded > 0.05)
+            liquid = tr(" The plunger holds %1 µL: homing it pushes that out of the tip, wherever the tip is now.")
+                         .arg(QLocale().toString(st.axes[i].commanded, 'f', 1));
+    if (!confirm(tr("Home %1 of the %2?%3%4 Keep hands and labware clear.").arg(which, words::term(dev::instrumentTerm(id.kind)), order, liquid)))
         return;
     m_client->home(mask);
 }

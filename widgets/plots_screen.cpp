@@ -13,6 +13,7 @@
 #include <QComboBox>
 #include <QDateTime>
 #include <QDir>
+#include <QEvent>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -408,6 +409,13 @@ void PlotsScreen::hideEvent(QHideEvent* event)
 void PlotsScreen::updateStatus()
 {
     m_status->setText(statusText());
+}
+
+void PlotsScreen::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        updateStatus();
+    QWidget::changeEvent(event);
 }
 
 QString PlotsScreen::statusText() const

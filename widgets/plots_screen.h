@@ -89,6 +89,8 @@ signals:
     void message(const QString& message);
 
 protected:
+    /// The status line is built from parts worded at different times: built anew.
+    void changeEvent(QEvent* event) override;
     void showEvent(QShowEvent* event) override;
     void hideEvent(QHideEvent* event) override;
 

@@ -103,12 +103,14 @@ private:
         static const QRegularExpression holder(QStringLiteral("%L?[1-9]"));
         if (!e.en.contains(holder))
             return;
-        // A template with no words of its own ("%1", "%1 %2") would match any text.
-        static const QRegularExpression filler(QStringLiteral("%L?[1-9]|\\s"));
-        if (QString(e.en).remove(filler).isEmpty() || QString(e.zh).remove(filler).isEmpty())
-            return;
-        m_enPatterns.push_back(pattern(index, e.en));
-        m_zhPatterns.push_back(pattern(index, e.zh));
+        // A template with no words of its own ("%1", "%1：%2") would match almost any
+        // text in that language: such texts are reworded piece by piece instead.
+        static const QRegularExpression holders(QStringLiteral("%L?[1-9]"));
+        static const QRegularExpression word(QStringLiteral("\\p{L}"));
+        if (QString(e.en).remove(holders).contains(word))
+            m_enPatterns.push_back(pattern(index, e.en));
+        if (QString(e.zh).remove(holders).contains(word))
+            m_zhPatterns.push_back(pattern(index, e.zh));
     }
 
     static SentencePattern pattern(int index, const QString& text)
@@ -224,6 +226,12 @@ void rewordWidget(QWidget* w, Rewording& r)
     if (w->isWindow() || qobject_cast<QDockWidget*>(w))
         r.field(contexts, [w] { return w->windowTitle(); }, [w](const QString& s) { w->setWindowTitle(s); });
     rewordActions(w, contexts, r);
+    // Texts a widget keeps aside to show later (the usual tooltip of a control that is
+    // greyed out with its reason) are worded with the rest.
+    for (const QByteArray& name : w->dynamicPropertyNames())
+        if (w->property(name.constData()).typeId() == QMetaType::QString)
+            r.field(contexts, [w, name] { return w->property(name.constData()).toString(); },
+                    [w, name](const QString& s) { w->setProperty(name.constData(), s); });
     if (auto* l = qobject_cast<QLabel*>(w))
         r.field(contexts, [l] { return l->text(); }, [l](const QString& s) { l->setText(s); });
     if (auto* b = qobject_cast<QAbstractButton*>(w))
@@ -369,6 +377,13 @@ QString rewordIn(const QString& text, const QStringList& contexts, bool fromZh, 
     const QString whole = rewordWhole(text, contexts, fromZh, toZh, depth);
     if (whole != text)
         return whole;
+    if (text.contains(QLatin1Char('\n')) && depth < 3) {
+        // Line by line first: a reason above what a control does, a list of problems.
+        QStringList lines = text.split(QLatin1Char('\n'));
+        for (QString& line : lines)
+            line = rewordIn(line, contexts, fromZh, toZh, depth + 1);
+        return lines.join(QLatin1Char('\n'));
+    }
     static const QRegularExpression axis(QStringLiteral("^(.+) ([A-Z])$"));
     if (const auto m = axis.match(text); m.hasMatch()) {
         const QString term = rewordWhole(m.captured(1), contexts, fromZh, toZh, depth);

@@ -4901,10 +4901,6 @@ Keep that log aside and start this test afresh?</source>
         <translation> Z 先升到其开关，其他轴再回到各自的开关。</translation>
     </message>
     <message>
-        <source>Home %1 of the %2?%3 Keep hands and labware clear.</source>
-        <translation>让%2的 %1 回零？%3请让手和器皿远离。</translation>
-    </message>
-    <message>
         <source>Move %1 from %2 to %3 %4? That is %5 %4.</source>
         <translation>把 %1 从 %2 移到 %3 %4？移动距离 %5 %4。</translation>
     </message>
@@ -4951,6 +4947,14 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Keys jog the axes</source>
         <translation>按键点动各轴</translation>
+    </message>
+    <message>
+        <source> The plunger holds %1 µL: homing it pushes that out of the tip, wherever the tip is now.</source>
+        <translation>柱塞中有 %1 µL：回零会把它从加样针推出，无论加样针此刻在哪里。</translation>
+    </message>
+    <message>
+        <source>Home %1 of the %2?%3%4 Keep hands and labware clear.</source>
+        <translation>让%2的 %1 回零？%3%4请让手和器皿远离。</translation>
     </message>
 </context>
 <context>

@@ -44,7 +44,7 @@ QString withoutData(QString text)
     // What stays as typed in every language: file names, keys, the well syntax and
     // placeholders a person types, the minute's symbol, the simulator's gauge port.
     static const QRegularExpression literal(QStringLiteral(
-        "[A-Za-z0-9_.-]*\\.(json|txt|pos|csv|jsonl)\\b|\\{[a-z0-9:]+\\}|\\bPg(Up|Dn)\\b|\\b(row B|column 3|all|min|sim)\\b"));
+        "[A-Za-z0-9_./-]*\\.(json|txt|pos|csv|jsonl|md)\\b|\\{[a-z0-9:]+\\}|\\bPg(Up|Dn)\\b|\\b(row B|column 3|all|min|sim)\\b"));
     text.remove(literal);
     static const QRegularExpression path(QStringLiteral("/dev/[A-Za-z0-9_./-]+"));
     static const QRegularExpression plant(QStringLiteral("(fopdt|lag):[A-Za-z0-9_.,=]+"));  // a model plant's spec, as typed

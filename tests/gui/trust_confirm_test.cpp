@@ -7,6 +7,8 @@
 #include "gui_wait.h"
 #include "gui_window.h"
 #include "widgets/connection_bar.h"
+#include "widgets/jog_screen.h"
+#include "widgets/wording/wording.h"
 #include "widgets/plates/plate_map.h"
 #include "widgets/plates/plates_screen.h"
 #include "widgets/plates/recipe_editor.h"
@@ -19,6 +21,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 using guitest::pump;
 using guitest::waitFor;
@@ -127,4 +130,45 @@ TEST_F(TrustConfirmTest, QuittingWithUnsavedEditsOrARunningJobAsksFirst)
     EXPECT_TRUE(questions[0].contains(QStringLiteral("plate run"))) << questions[0].toStdString();
     answer = true;
     EXPECT_TRUE(w->close());
+}
+
+TEST_F(TrustConfirmTest, HomingAPlungerThatHoldsLiquidSaysHowMuchWouldBePushedOut)
+{
+    // Issue 16 item 1: the operator was led to home the plunger with 220 µL in the syringe.
+    dev::Instrument* a = analyzer();
+    // Statuses counted from the home request on, so "homed and still" is news, not the last reading.
+    int fresh = 0;
+    QObject::connect(a, &dev::Instrument::statusChanged, w.get(), [&fresh] { ++fresh; });
+    a->home(0);
+    ASSERT_TRUE(waitFor([&] {
+        if (fresh < 3 || a->status().anyMoving())
+            return false;
+        for (const auto& axis : a->status().axes)
+            if (!axis.homed)
+                return false;
+        return true;
+    }, 20000));
+    int p = -1;
+    for (int i = 0; i < a->identity().axes.size(); ++i)
+        if (a->identity().axes[i].letter == QLatin1Char('P'))
+            p = i;
+    ASSERT_GE(p, 0);
+    QString refused;
+    a->move({{p, 220}}, false, 0, [&](const std::optional<dev::RequestError>& e) {
+        if (e)
+            refused = words::text(e->message);
+    });
+    ASSERT_TRUE(waitFor([&] { return std::abs(a->status().axes[p].commanded - 220) < 0.01 && !a->status().anyMoving(); }, 20000))
+        << "P at " << a->status().axes[p].commanded << " homed " << a->status().axes[p].homed << " " << refused.toStdString();
+    ASSERT_TRUE(w->showScreen(QStringLiteral("jog")));
+    w->showInstrument(0);
+    w->jogScreen(0)->setConfirm([this](const QString& q) {
+        questions << q;
+        return false;
+    });
+    QTest::mouseClick(button(w->jogScreen(0), QObject::tr("Home all")), Qt::LeftButton);
+    ASSERT_EQ(questions.size(), 1);
+    EXPECT_TRUE(questions[0].contains(QStringLiteral("220.0 µL"))) << questions[0].toStdString();
+    pump(200);
+    EXPECT_NEAR(a->status().axes[p].commanded, 220, 0.01) << "homed although the operator said no";
 }
