@@ -4,6 +4,7 @@
 // docs/testing.md ("Hostile link") has the table made from them.
 //   BP_HOSTILE_SEEDS   seeds per rate (default 3)
 //   BP_HOSTILE_RATES   comma-separated byte fault rates (default 0.001,0.003,0.01)
+//   BP_HOSTILE_FIRST   first seed number (default 1), to add seeds to an earlier campaign
 #include "integration/hostile_support.h"
 
 #include <gtest/gtest.h>
@@ -29,10 +30,16 @@ int seeds()
     return n > 0 ? n : 3;
 }
 
+int first()
+{
+    const int n = qEnvironmentVariableIntValue("BP_HOSTILE_FIRST");
+    return n > 0 ? n : 1;
+}
+
 void campaign(const std::function<hostile::Outcome(double, std::uint64_t)>& run)
 {
     for (double rate : rates())
-        for (int seed = 1; seed <= seeds(); ++seed) {
+        for (int seed = first(); seed < first() + seeds(); ++seed) {
             const hostile::Outcome o = run(rate, static_cast<std::uint64_t>(seed) * 7919);
             std::printf("%s\n", o.line().c_str());
             std::fflush(stdout);

@@ -39,25 +39,26 @@ struct Outcome {
     int stops = 0;          ///< times the job stopped and was resumed
     bool held = true;       ///< every invariant held
     std::string broken;     ///< which did not
+    std::string why;        ///< what the job said when it stopped (message ids)
     quint64 retransmits = 0, crcErrors = 0, duplicatesAnswered = 0;
     qint64 damagedBytes = 0;
 
-    void fail(const std::string& why)
+    void fail(const std::string& reason)
     {
         held = false;
-        broken += (broken.empty() ? "" : "; ") + why;
+        broken += (broken.empty() ? "" : "; ") + reason;
     }
     /// One line the campaign's table is made from (docs/testing.md, "Hostile link").
     std::string line() const
     {
-        char b[512];
+        char b[1024];
         std::snprintf(b, sizeof b,
                       "[ hostile ] job=%s rate=%.3f seed=%llu end=%s stops=%d invariants=%s retransmits=%llu crc=%llu "
-                      "dup_answered=%llu damaged_bytes=%lld%s%s",
+                      "dup_answered=%llu damaged_bytes=%lld%s%s%s%s",
                       job.c_str(), rate * 100, static_cast<unsigned long long>(seed), end.c_str(), stops, held ? "held" : "BROKEN",
                       static_cast<unsigned long long>(retransmits), static_cast<unsigned long long>(crcErrors),
                       static_cast<unsigned long long>(duplicatesAnswered), static_cast<long long>(damagedBytes),
-                      broken.empty() ? "" : " broken=", broken.c_str());
+                      why.empty() ? "" : " stopped_by=", why.c_str(), broken.empty() ? "" : " broken=", broken.c_str());
         return b;
     }
 };
@@ -92,6 +93,7 @@ inline bool connect(itest::SimSession& s, Outcome& o, int tries = 5)
         if (s.client.state() == dev::LinkState::Ready || s.connect(8000))
             return true;
         ++o.stops;
+        o.why += (o.why.empty() ? "" : ",") + std::string("connect:") + (s.linkMessages.empty() ? "?" : s.linkMessages.back().id);
         itest::spin(100);
     }
     return false;
@@ -105,6 +107,7 @@ inline bool homeAll(itest::SimSession& s, Outcome& o)
         if (s.homeAll())
             return true;
         ++o.stops;
+        o.why += (o.why.empty() ? "" : ",") + std::string("home:") + (s.linkMessages.empty() ? "?" : s.linkMessages.back().id);
     }
     return false;
 }
@@ -140,6 +143,10 @@ inline Outcome recipe(double rate, std::uint64_t seed, const std::string& wells,
         tally(s, o);
         return o;
     }
+    QObject::connect(&runner, &jobs::RecipeRunner::message, &runner, [&](const msg::Message& m, bool problem) {
+        if (problem)
+            o.why += (o.why.empty() ? "" : ",") + m.id;
+    });
     int skipped = 0;
     for (int round = 0; round < 8; ++round) {
         waitSettled(runner, 300000);

@@ -57,6 +57,7 @@ void BenchPilotClient::setTransport(Transport* transport)
         if (m_state != LinkState::Connecting)
             return;
         m_decoder.reset();
+        m_connectStartedMs = nowMs();
         m_timeoutTimer.start();
         sayHello(true);
     });

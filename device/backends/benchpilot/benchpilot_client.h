@@ -42,6 +42,9 @@ public:
     /// A request the device never answers although it keeps talking fails (Timeout) after
     /// this long; the link stays up.
     static constexpr int kRequestGiveUpMs = 5000;
+    /// While connecting, frames that arrive damaged also show a device answering: the
+    /// handshake then goes on for up to this long before it says the device does not answer.
+    static constexpr int kConnectGiveUpMs = 10000;
     static constexpr int kStatusPollMs = 50;
     static constexpr int kJogRefreshMs = 50;   ///< 20 Hz, four refreshes per device watchdog period
     static constexpr int kDefaultTelemetryHz = 100;
@@ -171,6 +174,8 @@ private:
     std::array<std::uint16_t, 32> m_recentEvents{};  ///< sequence numbers of the last events, to drop a duplicated one
     std::size_t m_recentEventCount = 0, m_recentEventNext = 0;
     qint64 m_lastFrameMs = -1;            ///< when a good frame (reply, event, telemetry) last arrived
+    qint64 m_lastDamagedFrameMs = -1;     ///< when a frame with a bad CRC or shape last arrived
+    qint64 m_connectStartedMs = 0;        ///< when the transport opened and HELLO went out
     QHash<int, double> m_jogs;            ///< axis → velocity (axis units/s) while held
     QVector<proto::ChannelRef> m_channels;
     int m_rateHz = 0;

@@ -146,7 +146,15 @@ void BenchPilotClient::checkTimeouts()
     for (const auto& [seq, r] : m_realtime)
         if (oldestWaitingMs < 0 || r.firstSentMs < oldestWaitingMs)
             oldestWaitingMs = r.firstSentMs;
-    const bool silent = oldestWaitingMs >= 0 && now - std::max(m_lastFrameMs, oldestWaitingMs) > kSilenceLimitMs;
+    bool silent = oldestWaitingMs >= 0 && now - std::max(m_lastFrameMs, oldestWaitingMs) > kSilenceLimitMs;
+    if (m_state == LinkState::Connecting && oldestWaitingMs >= 0) {
+        // The HELLO reply is the longest frame (~300 bytes with its limits): at 1 % of bytes
+        // damaged it arrives whole one time in twenty. Frames that arrive damaged show a
+        // device answering on a noisy line, so the handshake goes on trying for up to
+        // kConnectGiveUpMs; a line that is all garbage (a wrong baud rate) ends there too.
+        const qint64 lastSign = std::max({m_lastFrameMs, m_lastDamagedFrameMs, oldestWaitingMs});
+        silent = now - lastSign > kSilenceLimitMs || now - m_connectStartedMs > kConnectGiveUpMs;
+    }
     if (silent && (m_state == LinkState::Ready || m_state == LinkState::Identified)) {
         ++m_stats.timeouts;
         linkGone(msg::make("link.stopped_answering"));
@@ -219,9 +227,13 @@ void BenchPilotClient::failAll(RequestError::Kind kind, const msg::Message& why)
 void BenchPilotClient::onBytes(const QByteArray& bytes)
 {
     m_frames.clear();
+    const auto& ds = m_decoder.stats();
+    const quint64 damagedBefore = ds.crcErrors + ds.malformed;
     m_decoder.feed(reinterpret_cast<const std::uint8_t*>(bytes.constData()), static_cast<std::size_t>(bytes.size()), m_frames);
     if (!m_frames.empty())
         m_lastFrameMs = nowMs();  // garbage alone does not show the device is alive
+    if (ds.crcErrors + ds.malformed > damagedBefore)
+        m_lastDamagedFrameMs = nowMs();  // but while connecting, a frame damaged on the way may
     for (const auto& f : m_frames)
         onFrame(f);
 }
