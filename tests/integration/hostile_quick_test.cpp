@@ -13,7 +13,7 @@ void report(const hostile::Outcome& o)
 }
 } // namespace
 
-TEST(HostileQuick, RecipeEveryWellOnceAndThePlungerAccountedFor) { report(hostile::recipe(0.01, 1, "A1:A4", 4)); }
+TEST(HostileQuick, RecipeEveryWellOnceAndThePlungerAccountedFor) { report(hostile::recipe(0.01, 1, "A1:A2", 2)); }
 
 TEST(HostileQuick, ScanEveryTileOnceWithAMeasuredPositionThroughAnUnplug) { report(hostile::scan(0.01, 1, 1.8, true)); }
 
