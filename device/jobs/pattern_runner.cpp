@@ -43,6 +43,15 @@ PatternRunner::PatternRunner(dev::Instrument* client, QObject* parent) : QObject
         if (m_state != State::Running || m_appendInFlight || !m_paths)
             return;
         m_paths->queryStatus([this](const auto& e, const dev::PathQueueState& s) {
+            if (!e && m_state == State::Running && m_t0S < 0 && m_client && s.state != proto::PathState::Idle
+                && s.state != proto::PathState::Filling)
+                m_t0S = m_client->status().deviceTimeUs / 1e6;  // PATH_STARTED was lost: no later than this
+            if (!e && m_state == State::Running && s.state == proto::PathState::Done && m_sent >= m_path.size() && m_client) {
+                // PATH_FINISHED was lost on the line (events are not retried): the
+                // queue's state says it; the end is no later than this reading.
+                onPathFinished(m_client->status().deviceTimeUs);
+                return;
+            }
             if (!e && m_state == State::Running && !m_appendInFlight) {
                 m_free = s.freeSlots;
                 m_done = std::max(m_done, static_cast<std::size_t>(s.executingIndex));
@@ -91,25 +100,7 @@ void PatternRunner::attachPaths()
             emit message(msg::make("pattern.run.underrun"), true);
         m_underrunSaid = true;
     });
-    m_pathConnections << connect(paths, &dev::PathClient::finished, this, [this](quint32, quint64 us) {
-        if (m_state != State::Running && m_state != State::Paused)
-            return;
-        m_done = m_path.size();
-        m_endS = us / 1e6;
-        m_poll.stop();
-        emit progress(m_done, m_path.size());
-        setState(State::Done);
-        const PatternRunSummary s = summary();
-        emit message(msg::make("pattern.run.done", {msg::real("duration", s.durationS, msg::Unit::S),
-                                                    msg::real("max", s.maxContourMm * 1e3, msg::Unit::Um),
-                                                    msg::real("rms", s.rmsContourMm * 1e3, msg::Unit::Um),
-                                                    // The contour error is only as fine as its samples: how many, and at what
-                                                    // rate (a GRBL controller's status reports against a BenchPilot telemetry).
-                                                    patternCount("samples", static_cast<std::size_t>(s.samples)),
-                                                    msg::integer("rate", m_client ? m_client->subscribedRateHz() : 0, msg::Unit::Hz)}),
-                     false);
-        emit finished(s);
-    });
+    m_pathConnections << connect(paths, &dev::PathClient::finished, this, [this](quint32, quint64 us) { onPathFinished(us); });
     m_pathConnections << connect(paths, &dev::PathClient::held, this, [this](quint32, const QString&) {
         if (m_state != State::Running)
             return;
@@ -207,6 +198,27 @@ double PatternRunner::estimatedS(const std::vector<Segment>& path) const
 
 // ---- run ---------------------------------------------------------------------------
 
+void PatternRunner::onPathFinished(quint64 us)
+{
+    if (m_state != State::Running && m_state != State::Paused)
+        return;
+    m_done = m_path.size();
+    m_endS = us / 1e6;
+    m_poll.stop();
+    emit progress(m_done, m_path.size());
+    setState(State::Done);
+    const PatternRunSummary s = summary();
+    emit message(msg::make("pattern.run.done", {msg::real("duration", s.durationS, msg::Unit::S),
+                                                msg::real("max", s.maxContourMm * 1e3, msg::Unit::Um),
+                                                msg::real("rms", s.rmsContourMm * 1e3, msg::Unit::Um),
+                                                // The contour error is only as fine as its samples: how many, and at what
+                                                // rate (a GRBL controller's status reports against a BenchPilot telemetry).
+                                                patternCount("samples", static_cast<std::size_t>(s.samples)),
+                                                msg::integer("rate", m_client ? m_client->subscribedRateHz() : 0, msg::Unit::Hz)}),
+                 false);
+    emit finished(s);
+}
+
 void PatternRunner::setState(State s)
 {
     if (m_state == s)
@@ -261,7 +273,7 @@ bool PatternRunner::start(std::vector<Segment> path, const Options& options)
     m_sent = m_done = 0;
     m_underruns = 0;
     m_underrunSaid = false;
-    m_t0S = m_endS = -1;
+    m_t0S = m_endS = m_lastSeenS = -1;
     m_last.reset();
     m_pauseAsked = m_abortAsked = false;
     emit progress(0, m_path.size());
@@ -296,6 +308,8 @@ void PatternRunner::approach(Vec2 to, bool withZ, std::function<void()> then)
 
 void PatternRunner::onStatus()
 {
+    if ((m_state == State::Running || m_state == State::Paused) && m_t0S >= 0)
+        m_lastSeenS = std::max(m_lastSeenS, m_client->status().deviceTimeUs / 1e6);
     if (m_state != State::Approaching || !m_arrived)
         return;
     // The move's reply comes before the axes report moving: wait two polls before judging rest.
@@ -522,8 +536,10 @@ PatternRunSummary PatternRunner::summary() const
         s.rmsContourMm = t.rmsMm;
         s.maxAtPathMm = t.atPathMm;
     }
-    // A run that did not reach its end (aborted, interrupted) lasted until its last sample, not 0 s.
-    s.durationS = m_t0S >= 0 && m_endS >= m_t0S ? m_endS - m_t0S : m_last ? m_last->tS : 0.0;
+    // A run that did not reach its end (aborted, interrupted, link lost) lasted until the
+    // last device time it was seen running (a sample or a status reading), not 0 s.
+    const double seenS = m_t0S >= 0 && m_lastSeenS >= m_t0S ? m_lastSeenS - m_t0S : 0.0;
+    s.durationS = m_t0S >= 0 && m_endS >= m_t0S ? m_endS - m_t0S : std::max(m_last ? m_last->tS : 0.0, seenS);
     s.underruns = m_underruns;
     s.complete = m_state == State::Done;
     return s;

@@ -103,6 +103,8 @@ signals:
     void sampleAdded(const jobs::PatternRunSample& sample);
 
 private:
+    /// PATH_FINISHED, or a path status showing it done when the event was lost.
+    void onPathFinished(quint64 deviceTimeUs);
     void setState(State s);
     void fail(const msg::Message& why);
     void fail(const std::vector<msg::Message>& why);
@@ -138,6 +140,7 @@ private:
     bool m_underrunSaid = false;
     double m_t0S = -1;                  ///< device time of the first PATH_STARTED
     double m_endS = -1;
+    double m_lastSeenS = -1;            ///< latest device time seen while the path ran (the end of a stopped run)
     // Approach: waiting for the machine to be at rest at a point.
     std::function<void()> m_arrived;
     motion::path::Vec2 m_approachTo;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace jobs {
 
@@ -67,6 +68,38 @@ RecipeRunner::RecipeRunner(dev::Instrument* client, QObject* parent) : QObject(p
     });
     m_events = connect(client, &dev::Instrument::eventReceived, this, &RecipeRunner::onEvent);
     m_link = connect(client, &dev::Instrument::stateChanged, this, &RecipeRunner::onLinkState);
+    // A MotionDone lost on a noisy line would leave the move to its watchdog (seconds per
+    // move at 1 % of bytes damaged). The status is polled anyway: two readings after the
+    // move's reply with the axes at rest on the target are the arrival. Events and replies
+    // share one ordered stream, so a MotionDone that was not lost came before them.
+    auto restReadings = std::make_shared<std::pair<int, int>>(-1, 0);  // move serial, readings at rest
+    connect(client, &dev::Instrument::statusChanged, this, [this, restReadings](const dev::InstrumentStatus& st) {
+        if (!active(m_state) || !m_inFlight || m_inFlight->kind == MoveKind::Dwell || !m_replied || m_waitMask == 0)
+            return;
+        if (restReadings->first != m_moveSerial)
+            *restReadings = {m_moveSerial, 0};
+        const MachineMove& m = *m_inFlight;
+        auto at = [&](char c, double v) {
+            const int i = axis(c);
+            return i >= 0 && i < st.axes.size() && !st.axes[i].moving && std::abs(st.axes[i].commanded - v) < 1e-3;
+        };
+        bool there = false;
+        if (m.kind == MoveKind::Raise || m.kind == MoveKind::Lower)
+            there = at('Z', m.zMm);
+        else if (m.kind == MoveKind::Pump)
+            there = at('P', m_pumpUl + m.pumpDeltaUl);
+        else
+            there = at('X', m.xMm) && at('Y', m.yMm);
+        if (!there || st.anyMoving()) {
+            restReadings->second = 0;
+            return;
+        }
+        if (++restReadings->second < 2)
+            return;
+        emit message(msg::make("recipe.run.motion_done_lost", {msg::term("move", moveTerm(m.kind))}), false);
+        m_waitMask = 0;
+        moveArrived();
+    });
 }
 
 RecipeRunner::~RecipeRunner()

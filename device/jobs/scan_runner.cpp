@@ -42,6 +42,8 @@ ScanRunner::ScanRunner(dev::Instrument* client, QObject* parent) : QObject(paren
     });
     m_clientConnections << connect(m_client, &dev::Instrument::eventReceived, this, &ScanRunner::onEvent);
     m_clientConnections << connect(m_client, &dev::Instrument::statusChanged, this, [this](const dev::InstrumentStatus& s) {
+        if (m_phase == Phase::Moving)
+            checkArrivedByStatus(s);
         if (m_phase != Phase::Settling || s.axes.size() < 2)
             return;
         checkSettled({s.axes[0].measured, s.axes[1].measured}, s.deviceTimeUs);
@@ -404,6 +406,9 @@ void ScanRunner::nextWaypoint()
     m_phase = Phase::Moving;
     m_waitingAxes = kBothAxes;
     m_motionDoneUs = 0;
+    m_moveTarget = target;
+    m_moveAccepted = false;
+    m_restPolls = 0;
     // Listening for MotionDone starts before the request goes out: a move of zero
     // length reports done at once.
     // The client keeps a callback until the device answers, which may be after this
@@ -417,8 +422,12 @@ void ScanRunner::nextWaypoint()
 
 void ScanRunner::onMoveAccepted(const std::optional<dev::RequestError>& error)
 {
-    if (!error || m_phase != Phase::Moving)
+    if (m_phase != Phase::Moving)
         return;
+    if (!error) {
+        m_moveAccepted = true;
+        return;
+    }
     // A move lost with the link is the link's story, whichever signal comes first.
     if (error->kind == dev::RequestError::Kind::LinkDown || error->kind == dev::RequestError::Kind::Timeout || !m_client->isReady())
         stopWith(msg::make("scan.run.link_lost_cause", {tileArg(currentTile()), msg::nested("cause", error->message)}), false);
@@ -439,21 +448,7 @@ void ScanRunner::onEvent(const dev::DeviceEvent& e)
         m_motionDoneUs = std::max<quint64>(m_motionDoneUs, e.deviceTimeUs);
         if (m_waitingAxes)
             return;
-        if (m_onExtra) {
-            m_extraApproach.reset();
-            m_onExtra = false;
-            nextWaypoint();
-            return;
-        }
-        if (m_layout.path[static_cast<std::size_t>(m_pathIndex)].tile < 0) {
-            ++m_pathIndex;  // an overtravel point: on to its tile
-            nextWaypoint();
-            return;
-        }
-        m_phase = Phase::Settling;
-        m_lastOffUm[0] = m_lastOffUm[1] = NAN;
-        m_settleTimeout.start(static_cast<int>(std::lround(m_plan.settleTimeoutS * 1000)));
-        requestStatus();
+        onMoveArrived();
         return;
     case EventKind::EStop:
         stopWith(msg::make("scan.run.estop", {tileArg(currentTile())}), false);
@@ -470,6 +465,46 @@ void ScanRunner::onEvent(const dev::DeviceEvent& e)
     default:
         return;
     }
+}
+
+void ScanRunner::onMoveArrived()
+{
+    if (m_onExtra) {
+        m_extraApproach.reset();
+        m_onExtra = false;
+        nextWaypoint();
+        return;
+    }
+    if (m_layout.path[static_cast<std::size_t>(m_pathIndex)].tile < 0) {
+        ++m_pathIndex;  // an overtravel point: on to its tile
+        nextWaypoint();
+        return;
+    }
+    m_phase = Phase::Settling;
+    m_lastOffUm[0] = m_lastOffUm[1] = NAN;
+    m_settleTimeout.start(static_cast<int>(std::lround(m_plan.settleTimeoutS * 1000)));
+    requestStatus();
+}
+
+void ScanRunner::checkArrivedByStatus(const dev::InstrumentStatus& s)
+{
+    // Only readings that came after the move's reply count (the queue answers in order,
+    // so they were taken after the move began); two in a row at rest on the target
+    // are an arrival whose MotionDone the line lost.
+    if (!m_moveAccepted || s.axes.size() < 2)
+        return;
+    const bool there = !s.axes[0].moving && !s.axes[1].moving && std::fabs(s.axes[0].commanded - m_moveTarget.xMm) < 1e-4
+        && std::fabs(s.axes[1].commanded - m_moveTarget.yMm) < 1e-4;
+    if (!there) {
+        m_restPolls = 0;
+        return;
+    }
+    if (m_restPolls++ == 0)
+        m_motionDoneUs = std::max<quint64>(m_motionDoneUs, s.deviceTimeUs);
+    if (m_restPolls < 2)
+        return;
+    m_waitingAxes = 0;
+    onMoveArrived();
 }
 
 void ScanRunner::requestStatus()

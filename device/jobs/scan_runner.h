@@ -102,6 +102,10 @@ private:
     void nextWaypoint();
     void onMoveAccepted(const std::optional<dev::RequestError>& error);
     void onEvent(const dev::DeviceEvent& e);
+    /// Both axes owe no MotionDone any more (or the status showed them at rest on target).
+    void onMoveArrived();
+    /// A MotionDone lost on a noisy link: the polled status shows the move arrived.
+    void checkArrivedByStatus(const dev::InstrumentStatus& s);
     void requestStatus();
     void checkSettled(const std::vector<double>& measuredMm, quint64 deviceTimeUs);
     void onExposureEnd();
@@ -134,6 +138,9 @@ private:
     bool m_onExtra = false;              ///< the move in progress goes to m_extraApproach
     unsigned m_waitingAxes = 0;          ///< bit per axis still owing MotionDone
     quint64 m_motionDoneUs = 0;          ///< device time of the last MotionDone of this move
+    motion::scan::Point2 m_moveTarget{}; ///< where the move in flight goes (mm)
+    bool m_moveAccepted = false;         ///< the device replied to the move in flight
+    int m_restPolls = 0;                 ///< status readings since the reply showing it at rest on target
     std::vector<double> m_triggerMm;
     quint64 m_triggerUs = 0;
     double m_lastOffUm[2] = {0, 0};      ///< how far from the target the last status read, for messages

@@ -83,24 +83,65 @@ void LoopbackPair::unplug()
         static_cast<LoopbackEnd*>(e)->drop(msg::make("link.cable_pulled"));
 }
 
+void LoopbackPair::hang(int ms)
+{
+    m_hungUntilNs = std::max(m_hungUntilNs, m_clock.nsecsElapsed() + qint64(ms) * 1000000);
+}
+
 void LoopbackPair::transmit(int from, const QByteArray& input, bool applyFaults)
 {
-    QByteArray bytes = input;
     const LinkFaults& f = m_faults[from];
+    LinkFaultCounts& n = m_counts[from];
+    if (applyFaults && hung())
+        return;
+    QByteArray bytes = input;
+    if (applyFaults && f.filter) {
+        bytes = f.filter(input);
+        if (bytes != input)
+            ++n.filteredWrites;
+        if (bytes.isEmpty())
+            return;
+    }
     auto& rng = m_rng[from];
     std::uniform_real_distribution<double> u(0, 1);
-    if (applyFaults && f.dropChunkProbability > 0 && u(rng) < f.dropChunkProbability)
+    if (applyFaults && f.dropChunkProbability > 0 && u(rng) < f.dropChunkProbability) {
+        ++n.droppedChunks;
         return;
-    if (applyFaults && f.corruptByteProbability > 0)
-        for (auto& c : bytes)
-            if (u(rng) < f.corruptByteProbability)
+    }
+    if (applyFaults && (f.corruptByteProbability > 0 || f.dropByteProbability > 0 || f.duplicateByteProbability > 0)) {
+        QByteArray out;
+        out.reserve(bytes.size() + 8);
+        for (char c : bytes) {
+            if (f.dropByteProbability > 0 && u(rng) < f.dropByteProbability) {
+                ++n.droppedBytes;
+                continue;
+            }
+            if (f.corruptByteProbability > 0 && u(rng) < f.corruptByteProbability) {
                 c = static_cast<char>(c ^ (1 << std::uniform_int_distribution<int>(0, 7)(rng)));
+                ++n.corruptedBytes;
+            }
+            out.append(c);
+            if (f.duplicateByteProbability > 0 && u(rng) < f.duplicateByteProbability) {
+                out.append(c);
+                ++n.duplicatedBytes;
+            }
+        }
+        bytes = out;
+    }
+    if (applyFaults && f.duplicateChunkProbability > 0 && u(rng) < f.duplicateChunkProbability) {
+        bytes += bytes;
+        ++n.duplicatedChunks;
+    }
     m_carried[from] += bytes.size();
     const qint64 now = m_clock.nsecsElapsed();
-    const qint64 extra = applyFaults ? qint64(f.extraDelayMs) * 1000000 : 0;
+    qint64 extra = applyFaults ? qint64(f.extraDelayMs) * 1000000 : 0;
+    if (applyFaults && f.jitterMs > 0)
+        extra += static_cast<qint64>(u(rng) * f.jitterMs * 1e6);
     const int to = 1 - from;
     if (m_baud <= 0) {
-        m_pending.push_back({now + extra, to, bytes});
+        const qint64 due = std::max(now + extra, m_lastDueNs[from]);
+        m_lastDueNs[from] = due;
+        m_pending.push_back({due, to, bytes});
     } else {
         // Pace in small pieces so a long burst trickles in as it would off a UART.
         const qint64 byteNs = qint64(10) * 1000000000 / m_baud;
@@ -108,7 +149,9 @@ void LoopbackPair::transmit(int from, const QByteArray& input, bool applyFaults)
         for (int i = 0; i < bytes.size(); i += 32) {
             const QByteArray piece = bytes.mid(i, 32);
             t += byteNs * piece.size();
-            m_pending.push_back({t + extra, to, piece});
+            const qint64 due = std::max(t + extra, m_lastDueNs[from]);
+            m_lastDueNs[from] = due;
+            m_pending.push_back({due, to, piece});
         }
         m_lineFreeNs[from] = t;
     }

@@ -73,8 +73,17 @@ void Firmware::sendError(std::uint16_t seq, const proto::ErrorReply& e, std::vec
 
 void Firmware::flushEvents()
 {
-    for (const auto& e : m_machine.takeEvents())
+    for (const auto& e : m_machine.takeEvents()) {
+        if (m_journalOn) {
+            JournalEntry j;
+            j.timeS = static_cast<double>(e.deviceTimeUs) * 1e-6;
+            j.type = static_cast<std::uint8_t>(proto::MsgType::Event);
+            j.seq = m_eventSeq;
+            j.payload = proto::encode(e);
+            m_journal.push_back(std::move(j));
+        }
         sendFrame(static_cast<std::uint8_t>(proto::MsgType::Event), m_eventSeq++, proto::encode(e), m_out);
+    }
 }
 
 void Firmware::handle(const proto::Frame& f)
@@ -91,6 +100,7 @@ void Firmware::handle(const proto::Frame& f)
         // session's move with the same seq and bytes.
         for (auto& c : m_cache)
             c.valid = false;
+        m_haveMotionSeq = false;
         // The host that started a test is gone; a new one has not asked for it.
         m_machine.tuning().abort(0, motion::control::EndReason::Stopped);
         m_machine.paths().sessionStarted();
@@ -102,6 +112,20 @@ void Firmware::handle(const proto::Frame& f)
             return;
         }
     }
+    const bool velocity = f.type == static_cast<std::uint8_t>(proto::MsgType::JogVelocity);
+    const bool motionCommand = velocity || f.type == static_cast<std::uint8_t>(proto::MsgType::Stop)
+        || f.type == static_cast<std::uint8_t>(proto::MsgType::EStop);
+    if (velocity && m_haveMotionSeq && static_cast<std::int16_t>(f.seq - m_lastMotionSeq) < 0) {
+        // Sequence numbers rise in the order a host sends: this velocity was sent before
+        // the last one acted on, and reaches us late (a retry that lost the race).
+        ++m_staleVelocities;
+        sendFrame(static_cast<std::uint8_t>(f.type | proto::kReplyFlag), f.seq, {}, m_out);
+        return;
+    }
+    if (motionCommand) {
+        m_haveMotionSeq = true;
+        m_lastMotionSeq = f.seq;
+    }
     CachedReply& slot = m_cache[m_cacheNext];
     m_cacheNext = (m_cacheNext + 1) % m_cache.size();
     slot.valid = true;
@@ -112,6 +136,16 @@ void Firmware::handle(const proto::Frame& f)
     if (!proto::isRealtimeType(f.type))
         m_lastQueued = slot;
     ++m_executed;
+    if (m_journalOn) {
+        JournalEntry j;
+        j.timeS = m_machine.timeS();
+        j.type = f.type;
+        j.seq = f.seq;
+        j.payload = f.payload;
+        for (int i = 0; i < m_machine.axisCount(); ++i)
+            j.commanded.push_back(m_machine.commandedLogical(i));
+        m_journal.push_back(std::move(j));
+    }
     execute(f, slot.reply);
     m_out.insert(m_out.end(), slot.reply.begin(), slot.reply.end());
 }

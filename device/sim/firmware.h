@@ -34,6 +34,8 @@ public:
     const proto::DecoderStats& decoderStats() const { return m_decoder.stats(); }
     std::uint64_t executedRequests() const { return m_executed; }
     std::uint64_t duplicateRequests() const { return m_duplicates; }
+    /// Velocity commands that arrived after a newer velocity, stop or E-stop: answered, not executed.
+    std::uint64_t staleVelocityRequests() const { return m_staleVelocities; }
     std::uint64_t droppedTelemetryBatches() const { return m_droppedBatches; }
     std::uint32_t linkBaud() const { return m_linkBaud; }
     void setLinkBaud(std::uint32_t baud) { m_linkBaud = baud; }
@@ -44,6 +46,19 @@ public:
     /// false: answer HELLO as protocol 1.0 firmware did, refusing a HELLO with a payload
     /// and never sending extension blocks (for trying a host against older firmware).
     void setHelloExtensions(bool on) { m_helloExtensions = on; }
+
+    /// The firmware's own record of what it executed and the events it raised (type EVENT,
+    /// no positions) (off unless asked for): how tests
+    /// judge a run on a hostile line by what the device did, not by what the host believes.
+    struct JournalEntry {
+        double timeS = 0;                   ///< machine time of execution
+        std::uint8_t type = 0;
+        std::uint16_t seq = 0;
+        proto::Bytes payload;
+        std::vector<double> commanded;      ///< each axis's commanded position before it ran (axis units)
+    };
+    void setJournal(bool on) { m_journalOn = on; }
+    const std::vector<JournalEntry>& journal() const { return m_journal; }
 
     /// Bytes per second the link can carry (8N1: ten bit times per byte).
     double linkBytesPerSecond() const { return m_linkBaud / 10.0; }
@@ -76,6 +91,8 @@ private:
     double m_lastHostFrameS = 0;  ///< machine time of the last good frame from the host
     double m_hostSilenceLimitS = proto::kPathHostSilenceMs / 1000.0;
     bool m_helloExtensions = true;
+    bool m_journalOn = false;
+    std::vector<JournalEntry> m_journal;
 
     /// Replies to the last requests, so a retransmission (same seq and bytes) is
     /// answered again without acting twice. Fixed ring: the oldest entry is overwritten.
@@ -86,8 +103,15 @@ private:
         proto::Bytes payload;
         std::vector<std::uint8_t> reply;
     };
-    std::array<CachedReply, 32> m_cache;
+    /// Large enough that a host retrying one request for its whole patience (docs/protocol.md:
+    /// up to 5 s) while status polls and jog refreshes go on finds its answer still here.
+    std::array<CachedReply, 256> m_cache;
     std::size_t m_cacheNext = 0;
+    /// The latest velocity, stop or E-stop executed: a velocity command numbered before it
+    /// is a late copy and must not set an old velocity again (restart a stopped axis).
+    bool m_haveMotionSeq = false;
+    std::uint16_t m_lastMotionSeq = 0;
+    std::uint64_t m_staleVelocities = 0;
     CachedReply m_lastQueued;  ///< key of the latest queued request (reply not kept): tells a repeated HELLO from a new session
 
     // Telemetry subscription.

@@ -594,3 +594,58 @@ TEST(SimFirmware, AdvanceRunsWholeTicksAndCarriesTheRemainder)
         h.fw.advance(0.00025);  // 2.5 ticks each
     EXPECT_EQ(h.fw.machine().timeUs(), 250000u);
 }
+
+TEST(SimFirmware, ALateVelocityCommandNeverRestartsAStoppedAxis)
+{
+    // A host retries a velocity command whose reply the line lost; meanwhile it
+    // stopped the jog. The retry (same seq, answered from the cache) and a copy
+    // numbered before the stop (a retry whose first attempt never arrived) must
+    // leave the axis at rest.
+    Host h(sim::stageConfig());
+    proto::JogVelocityRequest j;
+    j.axisMask = bit(0);
+    j.velocities = {nm(10)};
+    const auto jog = h.frame(MsgType::JogVelocity, proto::encode(j), 10);
+    const auto neverArrived = h.frame(MsgType::JogVelocity, proto::encode(j), 11);
+    h.sendRaw(jog);
+    h.advance(0.1);
+    ASSERT_TRUE(h.status().axes[0].flags & proto::AxisMoving);
+    h.nextSeq = 12;
+    ASSERT_TRUE(h.okFor(h.send(MsgType::Stop, proto::encode(proto::AxisMaskRequest{bit(0)})), MsgType::Stop));
+    ASSERT_TRUE(h.okFor(12, MsgType::Stop));
+    h.advance(0.5);
+    ASSERT_FALSE(h.status().axes[0].flags & proto::AxisMoving);
+    const double stoppedAt = h.status().axes[0].commanded / 1e6;
+
+    const auto executed = h.fw.executedRequests();
+    h.sendRaw(jog);           // a retry of the first: answered from the cache
+    h.sendRaw(neverArrived);  // sent before the stop, arrives after it
+    EXPECT_TRUE(h.okFor(10, MsgType::JogVelocity));
+    EXPECT_TRUE(h.okFor(11, MsgType::JogVelocity)) << "a late copy is answered, so the host stops retrying it";
+    h.advance(0.3);
+    EXPECT_FALSE(h.status().axes[0].flags & proto::AxisMoving);
+    EXPECT_NEAR(h.status().axes[0].commanded / 1e6, stoppedAt, 1e-9) << "the stopped axis moved again";
+    EXPECT_EQ(h.fw.staleVelocityRequests(), 1u);
+    EXPECT_EQ(h.fw.executedRequests(), executed + 2) << "only the two status requests ran";
+
+    // A fresh command after the stop still works.
+    h.send(MsgType::JogVelocity, proto::encode(j));
+    h.advance(0.1);
+    EXPECT_TRUE(h.status().axes[0].flags & proto::AxisMoving);
+}
+
+TEST(SimFirmware, ARetryAfterTwoHundredOtherRequestsIsStillAnsweredFromTheCache)
+{
+    // A host that retries one request for seconds while status polls go on.
+    Host h(sim::analyzerConfig());
+    const auto wire = h.frame(MsgType::Move, moveRel(bit(0), {2}), 500);
+    h.sendRaw(wire);
+    h.nextSeq = 501;
+    for (int i = 0; i < 200; ++i)
+        h.send(MsgType::Status);
+    const auto executed = h.fw.executedRequests();
+    h.sendRaw(wire);
+    EXPECT_EQ(h.fw.executedRequests(), executed);
+    h.advance(3);
+    EXPECT_NEAR(h.status().axes[0].commanded / 1e6, 2.0, 1e-6) << "moved once, not twice";
+}

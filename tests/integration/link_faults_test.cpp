@@ -20,6 +20,7 @@ using dev::LinkFaults;
 using dev::LinkState;
 using dev::LoopbackPair;
 using dev::RequestError;
+using BenchPilotClientLimits = dev::BenchPilotClient;
 
 namespace {
 
@@ -216,7 +217,7 @@ TEST(LinkFaults, RequestWhoseReplyIsLostIsRetransmittedAndExecutedOnce)
     EXPECT_EQ(s.client.state(), LinkState::Ready);
 }
 
-TEST(LinkFaults, DeviceThatNeverAnswersGivesALinkErrorWithinTwoSeconds)
+TEST(LinkFaults, DeviceThatNeverAnswersGivesALinkErrorAfterTwoSecondsOfSilence)
 {
     LoopbackPair pair(itest::kLinkBaud);
     pair.end(LoopbackPair::B)->open();  // a device is there, powered, and mute
@@ -231,14 +232,16 @@ TEST(LinkFaults, DeviceThatNeverAnswersGivesALinkErrorWithinTwoSeconds)
     ASSERT_TRUE(waitFor([&] { return !errors.isEmpty(); }, 5000)) << "no error at all";
     const qint64 ms = wall.elapsed();
     std::printf("[ info ] silent device reported after %lld ms\n", static_cast<long long>(ms));
-    EXPECT_LT(ms, 2000);
+    // docs/protocol.md, "Retries and silence": 2 s of silence, checked every 20 ms.
+    EXPECT_GE(ms, BenchPilotClientLimits::kSilenceLimitMs);
+    EXPECT_LT(ms, BenchPilotClientLimits::kSilenceLimitMs + 600);
     EXPECT_NE(client.state(), LinkState::Ready);
     EXPECT_TRUE(waitFor([&] { return client.state() == LinkState::Disconnected; }, 1000));
     EXPECT_TRUE(errors.first().startsWith(QStringLiteral("link.no_answer{"))) << errors.first().toStdString();
     client.setTransport(nullptr);
 }
 
-TEST(LinkFaults, DeviceThatFallsSilentWhileReadyIsReportedLostWithinTwoSeconds)
+TEST(LinkFaults, DeviceThatFallsSilentWhileReadyIsReportedLostAfterTwoSeconds)
 {
     SimSession s(proto::DeviceKind::Stage);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
@@ -249,10 +252,11 @@ TEST(LinkFaults, DeviceThatFallsSilentWhileReadyIsReportedLostWithinTwoSeconds)
     ASSERT_TRUE(waitFor([&] { return s.client.state() == LinkState::Lost; }, 5000));
     const qint64 ms = wall.elapsed();
     std::printf("[ info ] device silent while Ready: link lost after %lld ms\n", static_cast<long long>(ms));
-    EXPECT_LT(ms, 2000);
-    // Not a single byte came back while one request was tried three times: that
-    // is a dead device, not an unlucky request, and waiting for a second request
-    // to time out as well would take the report past 2 s.
+    // Silent for more than 2 s while a request waits (the request in flight may have
+    // gone out up to a status period after the line went quiet).
+    EXPECT_GE(ms, BenchPilotClientLimits::kSilenceLimitMs);
+    EXPECT_LT(ms, BenchPilotClientLimits::kSilenceLimitMs + 600);
+    EXPECT_GT(s.client.stats().retransmits, 0u) << "the waiting request was retried meanwhile";
     EXPECT_EQ(s.client.stats().timeouts - timeoutsBefore, 1u);
     ASSERT_FALSE(s.linkErrors.isEmpty());
     EXPECT_EQ(s.linkMessages.back().id, "link.lost") << text(s.linkErrors);
@@ -267,8 +271,9 @@ TEST(LinkFaults, OneUnansweredRequestFromADeviceThatIsStillTalkingIsNotLinkLoss)
 {
     SimSession s(proto::DeviceKind::Analyzer);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
-    // One STATUS request vanishes on the way out, all three attempts of it;
-    // telemetry keeps arriving meanwhile and later requests go through.
+    // One STATUS request vanishes on the way out, every attempt of it; telemetry
+    // keeps arriving meanwhile, so after 5 s the request alone is given up and
+    // later requests go through.
     int lostSeq = -1;
     s.tap.beforeWrite = [&](const QByteArray& bytes) {
         for (const auto& f : framesIn(bytes))
@@ -279,7 +284,7 @@ TEST(LinkFaults, OneUnansweredRequestFromADeviceThatIsStillTalkingIsNotLinkLoss)
     };
     s.tap.afterWrite = [&](const QByteArray&) { s.link.pair().setFaults(LoopbackPair::A, LinkFaults{}); };
     const auto timeoutsBefore = s.client.stats().timeouts;
-    ASSERT_TRUE(waitFor([&] { return s.client.stats().timeouts > timeoutsBefore; }, 5000));
+    ASSERT_TRUE(waitFor([&] { return s.client.stats().timeouts > timeoutsBefore; }, BenchPilotClientLimits::kRequestGiveUpMs + 3000));
     const int statusesAfterTimeout = s.statusCount;
     spin(1200);
     EXPECT_EQ(s.client.state(), dev::LinkState::Ready) << text(s.linkErrors);

@@ -57,6 +57,7 @@ void BenchPilotClient::setTransport(Transport* transport)
         if (m_state != LinkState::Connecting)
             return;
         m_decoder.reset();
+        m_connectStartedMs = nowMs();
         m_timeoutTimer.start();
         sayHello(true);
     });
@@ -91,7 +92,12 @@ void BenchPilotClient::connectLink()
     }
     if (m_state == LinkState::Connecting || m_state == LinkState::Identified || m_state == LinkState::Ready)
         return;
-    m_consecutiveTimeouts = 0;
+    // A new line (or the same after a replug) is measured afresh, and a device that
+    // restarted numbers its events afresh.
+    m_srttMs = -1;
+    m_rttVarMs = 0;
+    m_retried.clear();
+    m_recentEventCount = m_recentEventNext = 0;
     setState(LinkState::Connecting);
     m_transport->open();
 }

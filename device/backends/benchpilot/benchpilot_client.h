@@ -16,6 +16,7 @@
 #include <QPointer>
 #include <QTimer>
 
+#include <array>
 #include <deque>
 #include <map>
 
@@ -28,10 +29,22 @@ class ProtocolTuningClient;
 class BenchPilotClient : public Instrument {
     Q_OBJECT
 public:
-    /// Per-attempt reply timeout and attempts: a silent device is reported within
-    /// kAttempts × kReplyTimeoutMs (under 2 s).
-    static constexpr int kReplyTimeoutMs = 300;
-    static constexpr int kAttempts = 3;
+    /// Patience on a noisy line (docs/protocol.md, "Retries and silence"): a request is sent
+    /// again, with the same sequence number, each time its per-attempt reply timeout passes,
+    /// until it is answered. The timeout follows the measured round trip (srtt + 4·rttvar,
+    /// bounded below and above); before the first measurement it is kInitialReplyTimeoutMs.
+    static constexpr int kInitialReplyTimeoutMs = 100;
+    static constexpr int kMinReplyTimeoutMs = 40;
+    static constexpr int kMaxReplyTimeoutMs = 1000;
+    /// The link is lost (and a connect fails) only when a request is waiting and no good
+    /// frame at all has come from the device for longer than this.
+    static constexpr int kSilenceLimitMs = 2000;
+    /// A request the device never answers although it keeps talking fails (Timeout) after
+    /// this long; the link stays up.
+    static constexpr int kRequestGiveUpMs = 5000;
+    /// While connecting, frames that arrive damaged also show a device answering: the
+    /// handshake then goes on for up to this long before it says the device does not answer.
+    static constexpr int kConnectGiveUpMs = 10000;
     static constexpr int kStatusPollMs = 50;
     static constexpr int kJogRefreshMs = 50;   ///< 20 Hz, four refreshes per device watchdog period
     static constexpr int kDefaultTelemetryHz = 100;
@@ -48,6 +61,10 @@ public:
     void disconnectLink() override;
     LinkState state() const override { return m_state; }
     LinkStats stats() const override;
+    /// Events and telemetry batches that arrived twice and were dropped.
+    quint64 duplicateFrames() const { return m_duplicateFrames; }
+    /// The reply timeout of the next attempt (ms), from the measured round trip.
+    int replyTimeoutMs() const;
     QString linkDescription() const override;
     const DeviceIdentity& identity() const override { return m_identity; }
     const InstrumentStatus& status() const override { return m_status; }
@@ -112,6 +129,10 @@ private:
     void complete(Request r, const std::optional<RequestError>& err, const proto::Bytes& payload);
     void checkTimeouts();
     void failAll(RequestError::Kind kind, const msg::Message& why);
+    /// Superseded velocity commands stop being retried: a late copy must not undo a newer one.
+    void dropSupersededJogs(std::uint16_t newerSeq);
+    bool seenEvent(std::uint16_t seq);
+    void addRttSample(double ms);
     void sayHello(bool readsExtensions);
     void onHello(const std::optional<RequestError>& err, const proto::Bytes& payload, bool askedExtensions);
     void pollStatus();
@@ -140,8 +161,21 @@ private:
     QTimer m_timeoutTimer, m_statusTimer, m_jogTimer;
     QElapsedTimer m_clock;
     bool m_statusPending = false;
-    int m_consecutiveTimeouts = 0;
+    quint64 m_duplicateFrames = 0;
+    double m_srttMs = -1;                 ///< smoothed round trip of requests answered at the first attempt; <0 = none yet
+    double m_rttVarMs = 0;
+    /// Requests answered after retries: a second answer to one shows the retries were
+    /// early, and its first answer's round trip is a sample after all.
+    struct Retried {
+        std::uint16_t seq;
+        qint64 firstSentMs, answeredMs;
+    };
+    std::deque<Retried> m_retried;
+    std::array<std::uint16_t, 32> m_recentEvents{};  ///< sequence numbers of the last events, to drop a duplicated one
+    std::size_t m_recentEventCount = 0, m_recentEventNext = 0;
     qint64 m_lastFrameMs = -1;            ///< when a good frame (reply, event, telemetry) last arrived
+    qint64 m_lastDamagedFrameMs = -1;     ///< when a frame with a bad CRC or shape last arrived
+    qint64 m_connectStartedMs = 0;        ///< when the transport opened and HELLO went out
     QHash<int, double> m_jogs;            ///< axis → velocity (axis units/s) while held
     QVector<proto::ChannelRef> m_channels;
     int m_rateHz = 0;

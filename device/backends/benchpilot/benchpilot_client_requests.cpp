@@ -6,6 +6,9 @@
 // benchpilot_client_commands.cpp.
 #include "device/backends/benchpilot/benchpilot_client.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace dev {
 namespace {
 QString typeName(proto::MsgType t)
@@ -53,12 +56,36 @@ void BenchPilotClient::send(proto::MsgType type, const proto::Bytes& payload, Ra
     r.wire = QByteArray(reinterpret_cast<const char*>(wire.data()), static_cast<qsizetype>(wire.size()));
     if (r.realtime) {
         // Realtime requests overtake anything queued: they go out at once.
+        const std::uint16_t seq = r.seq;
         transmit(r);
-        m_realtime.emplace(r.seq, std::move(r));
+        m_realtime.emplace(seq, std::move(r));
+        if (type == proto::MsgType::JogVelocity || type == proto::MsgType::Stop || type == proto::MsgType::EStop)
+            dropSupersededJogs(seq);
         return;
     }
     m_queue.push_back(std::move(r));
     pumpQueue();
+}
+
+void BenchPilotClient::addRttSample(double ms)
+{
+    if (m_srttMs < 0) {
+        m_srttMs = ms;
+        m_rttVarMs = ms / 2;
+    } else {
+        m_rttVarMs = 0.75 * m_rttVarMs + 0.25 * std::abs(m_srttMs - ms);
+        m_srttMs = 0.875 * m_srttMs + 0.125 * ms;
+    }
+}
+
+int BenchPilotClient::replyTimeoutMs() const
+{
+    if (m_srttMs < 0)
+        return kInitialReplyTimeoutMs;
+    // RFC 6298's retransmission timeout, with a floor for an event loop that hiccups
+    // (a retry costs a few bytes; the device answers a repeat from its cache).
+    const double rto = m_srttMs + std::max(10.0, 4 * m_rttVarMs);
+    return std::clamp(static_cast<int>(std::lround(rto)), kMinReplyTimeoutMs, kMaxReplyTimeoutMs);
 }
 
 void BenchPilotClient::transmit(Request& r)
@@ -68,7 +95,7 @@ void BenchPilotClient::transmit(Request& r)
         ++m_stats.retransmits;
     else
         r.firstSentMs = nowMs();
-    r.deadlineMs = nowMs() + kReplyTimeoutMs;
+    r.deadlineMs = nowMs() + replyTimeoutMs();
     if (m_transport)
         m_transport->write(r.wire);
 }
@@ -83,62 +110,93 @@ void BenchPilotClient::pumpQueue()
 
 void BenchPilotClient::complete(Request r, const std::optional<RequestError>& err, const proto::Bytes& payload)
 {
-    if (!err || err->kind != RequestError::Kind::Timeout)
-        m_consecutiveTimeouts = 0;
     if (r.done)
         r.done(err, payload);
+}
+
+void BenchPilotClient::dropSupersededJogs(std::uint16_t newerSeq)
+{
+    // A velocity command still unanswered when a newer velocity, stop or E-stop goes out
+    // is no longer wanted: retrying it could set an old velocity after the newer one
+    // (an axis restarted after its stop). Its caller hears it was accepted; what it
+    // asked for was replaced by what came after.
+    std::vector<Request> superseded;
+    for (auto it = m_realtime.begin(); it != m_realtime.end();) {
+        if (it->second.type == proto::MsgType::JogVelocity && it->first != newerSeq) {
+            superseded.push_back(std::move(it->second));
+            it = m_realtime.erase(it);
+        } else {
+            ++it;
+        }
+    }
+    // Called back only once the map is consistent: a callback may send again.
+    for (auto& r : superseded)
+        complete(std::move(r), std::nullopt, {});
 }
 
 void BenchPilotClient::checkTimeouts()
 {
     const qint64 now = nowMs();
-    auto timeoutError = [](const Request& r) {
+    // The device is silent when a request has waited longer than kSilenceLimitMs and no
+    // good frame (reply, event, telemetry) came in that time. Corrupted frames do not
+    // count: a line at the wrong baud rate is all garbage.
+    qint64 oldestWaitingMs = -1;
+    if (m_inFlight && !m_queue.empty())
+        oldestWaitingMs = m_queue.front().firstSentMs;
+    for (const auto& [seq, r] : m_realtime)
+        if (oldestWaitingMs < 0 || r.firstSentMs < oldestWaitingMs)
+            oldestWaitingMs = r.firstSentMs;
+    bool silent = oldestWaitingMs >= 0 && now - std::max(m_lastFrameMs, oldestWaitingMs) > kSilenceLimitMs;
+    if (m_state == LinkState::Connecting && oldestWaitingMs >= 0) {
+        // The HELLO reply is the longest frame (~300 bytes with its limits): at 1 % of bytes
+        // damaged it arrives whole one time in twenty. Frames that arrive damaged show a
+        // device answering on a noisy line, so the handshake goes on trying for up to
+        // kConnectGiveUpMs; a line that is all garbage (a wrong baud rate) ends there too.
+        const qint64 lastSign = std::max({m_lastFrameMs, m_lastDamagedFrameMs, oldestWaitingMs});
+        silent = now - lastSign > kSilenceLimitMs || now - m_connectStartedMs > kConnectGiveUpMs;
+    }
+    if (silent && (m_state == LinkState::Ready || m_state == LinkState::Identified)) {
+        ++m_stats.timeouts;
+        linkGone(msg::make("link.stopped_answering"));
+        return;
+    }
+    auto timeoutError = [now](const Request& r) {
         RequestError e;
         e.kind = RequestError::Kind::Timeout;
         e.message = msg::make("request.no_reply", {msg::verbatim("request", typeName(r.type).toStdString()),
-                                                   msg::integer("attempts", kAttempts),
-                                                   msg::real("seconds", kAttempts * kReplyTimeoutMs / 1000.0, msg::Unit::S)});
+                                                   msg::integer("attempts", r.attempts),
+                                                   msg::real("seconds", (now - r.firstSentMs) / 1000.0, msg::Unit::S)});
         return e;
     };
+    // Given up: everything while connecting to a silent device; otherwise a request the
+    // device has ignored for kRequestGiveUpMs while it kept talking.
+    auto givenUp = [&](const Request& r) { return silent || now - r.firstSentMs > kRequestGiveUpMs; };
     std::vector<Request> expired;
-    if (m_inFlight && !m_queue.empty() && m_queue.front().deadlineMs <= now) {
+    if (m_inFlight && !m_queue.empty()) {
         Request& r = m_queue.front();
-        if (r.attempts < kAttempts) {
-            transmit(r);  // same seq, same bytes: the device answers a repeat from its cache
-        } else {
+        if (givenUp(r)) {
             expired.push_back(std::move(r));
             m_queue.pop_front();
             m_inFlight = false;
+        } else if (r.deadlineMs <= now) {
+            transmit(r);  // same seq, same bytes: the device answers a repeat from its cache
         }
     }
     for (auto it = m_realtime.begin(); it != m_realtime.end();) {
-        if (it->second.deadlineMs > now) {
-            ++it;
-            continue;
-        }
-        if (it->second.attempts < kAttempts) {
-            transmit(it->second);
-            ++it;
-        } else {
+        if (givenUp(it->second)) {
             expired.push_back(std::move(it->second));
             it = m_realtime.erase(it);
+            continue;
         }
+        if (it->second.deadlineMs <= now)
+            transmit(it->second);
+        ++it;
     }
-    // Nothing at all came back while a request was tried kAttempts times: the
-    // device is gone, not merely unlucky with one request. Waiting for a second
-    // request to time out too would report it only after ~1.9 s or later.
-    bool silent = false;
-    for (const auto& r : expired)
-        silent = silent || m_lastFrameMs < r.firstSentMs;
     for (auto& r : expired) {
         ++m_stats.timeouts;
-        ++m_consecutiveTimeouts;
         const RequestError e = timeoutError(r);
         complete(std::move(r), e, {});
     }
-    if (!expired.empty() && (m_state == LinkState::Ready || m_state == LinkState::Identified)
-        && (silent || m_consecutiveTimeouts >= 2))
-        linkGone(msg::make("link.stopped_answering"));
     pumpQueue();
 }
 
@@ -169,9 +227,13 @@ void BenchPilotClient::failAll(RequestError::Kind kind, const msg::Message& why)
 void BenchPilotClient::onBytes(const QByteArray& bytes)
 {
     m_frames.clear();
+    const auto& ds = m_decoder.stats();
+    const quint64 damagedBefore = ds.crcErrors + ds.malformed;
     m_decoder.feed(reinterpret_cast<const std::uint8_t*>(bytes.constData()), static_cast<std::size_t>(bytes.size()), m_frames);
     if (!m_frames.empty())
         m_lastFrameMs = nowMs();  // garbage alone does not show the device is alive
+    if (ds.crcErrors + ds.malformed > damagedBefore)
+        m_lastDamagedFrameMs = nowMs();  // but while connecting, a frame damaged on the way may
     for (const auto& f : m_frames)
         onFrame(f);
 }
@@ -195,6 +257,12 @@ RequestError BenchPilotClient::deviceError(const proto::ErrorReply& e) const
 void BenchPilotClient::onFrame(const proto::Frame& f)
 {
     if (f.type == static_cast<std::uint8_t>(proto::MsgType::Event)) {
+        // A frame repeated on the line is one event, not two (a MotionDone counted twice
+        // would finish the next move early).
+        if (seenEvent(f.seq)) {
+            ++m_duplicateFrames;
+            return;
+        }
         if (auto e = proto::decodeEvent(f.payload)) {
             DeviceEvent ev;
             ev.kind = e->kind;
@@ -216,6 +284,11 @@ void BenchPilotClient::onFrame(const proto::Frame& f)
         auto b = proto::decodeTelemetryBatch(f.payload);
         if (!b)
             return;
+        // A batch from before the next expected sample is a repeat of one already had.
+        if (m_haveSampleIndex && m_nextSampleIndex - b->firstSampleIndex - 1u < 0x80000000u) {
+            ++m_duplicateFrames;
+            return;
+        }
         ++m_stats.telemetryBatches;
         m_stats.telemetrySamples += b->sampleCount;
         // The sample counter runs on across batches: a jump is samples the wire lost.
@@ -247,7 +320,23 @@ void BenchPilotClient::onFrame(const proto::Frame& f)
         m_realtime.erase(it);
     } else {
         ++m_stats.lateReplies;  // an answer to a retransmission we already had, or to a forgotten request
+        for (auto rt = m_retried.begin(); rt != m_retried.end(); ++rt)
+            if (rt->seq == f.seq) {
+                addRttSample(static_cast<double>(rt->answeredMs - rt->firstSentMs));
+                m_retried.erase(rt);
+                break;
+            }
         return;
+    }
+    if (r.attempts == 1) {
+        // Karn's rule: only a request sent once gives an unambiguous round trip.
+        addRttSample(static_cast<double>(nowMs() - r.firstSentMs));
+    } else {
+        // Retried: if a second answer comes later, the retries were early and the first
+        // answer was to the first attempt (a timeout shorter than the round trip).
+        m_retried.push_back({r.seq, r.firstSentMs, nowMs()});
+        if (m_retried.size() > 16)
+            m_retried.pop_front();
     }
     if (isError) {
         const auto e = proto::decodeErrorReply(f.payload);
@@ -263,6 +352,18 @@ void BenchPilotClient::onFrame(const proto::Frame& f)
         complete(std::move(r), std::nullopt, f.payload);
     }
     pumpQueue();
+}
+
+bool BenchPilotClient::seenEvent(std::uint16_t seq)
+{
+    const std::size_t n = std::min(m_recentEventCount, m_recentEvents.size());
+    for (std::size_t i = 0; i < n; ++i)
+        if (m_recentEvents[i] == seq)
+            return true;
+    m_recentEvents[m_recentEventNext] = seq;
+    m_recentEventNext = (m_recentEventNext + 1) % m_recentEvents.size();
+    ++m_recentEventCount;
+    return false;
 }
 
 // ---- replies handed to callers ---------------------------------------------------

@@ -25,7 +25,7 @@
 //    to exactly the same bytes;
 //  - the firmware answers every request frame with exactly one reply (its type|0x80
 //    or ERROR, same seq), realtime requests of a chunk first; a request equal in
-//    type, seq and payload to one of the last 32 executed is not executed again and
+//    type, seq and payload to one of the last 256 executed is not executed again and
 //    is answered with the identical reply; every byte it sends decodes cleanly;
 //    replies, events and telemetry batches decode with their decoders; events and
 //    batches carry consecutive sequence numbers.
@@ -331,7 +331,7 @@ struct CachedModel {
     Frame reply;
 };
 
-/// The duplicate-request cache as docs/protocol.md specifies it: the last 32
+/// The duplicate-request cache as docs/protocol.md specifies it: the last 256
 /// executed requests, keyed by type, seq and payload; a HELLO that is not a
 /// repeat of the last queued request starts a new session and empties it.
 class ReplyCacheModel {
@@ -345,7 +345,7 @@ public:
     }
     CachedModel& insert(const Frame& f)
     {
-        if (m_entries.size() == 32)
+        if (m_entries.size() == 256)
             m_entries.pop_front();
         m_entries.push_back({f.type, f.seq, f.payload, {}});
         return m_entries.back();
@@ -370,6 +370,8 @@ struct FirmwareChecker {
     FrameDecoder outDecoder;
     std::uint16_t nextDeviceSeq = 0;
     std::uint64_t executed = 0, duplicates = 0;
+    bool haveMotionSeq = false;
+    std::uint16_t lastMotionSeq = 0;  ///< the last velocity, stop or E-stop executed
     ReplyCacheModel cache;
     std::optional<Frame> lastQueued;  ///< type, seq and payload of the last executed queued request
 
@@ -503,13 +505,25 @@ struct FirmwareChecker {
             if (req.type == static_cast<std::uint8_t>(MsgType::Hello)
                 && !(lastQueued && lastQueued->type == req.type && lastQueued->seq == req.seq
                      && lastQueued->payload == req.payload))
+            {
                 cache.clear();
+                haveMotionSeq = false;
+            }
+            const bool velocity = req.type == static_cast<std::uint8_t>(MsgType::JogVelocity);
             if (CachedModel* c = cache.find(req)) {
                 ++duplicates;
                 ++g_cov.duplicates;
                 CHECK(sameFrame(rep, c->reply), "retransmitted request 0x%02X seq %u got a different reply",
                       unsigned{req.type}, unsigned{req.seq});
+            } else if (velocity && haveMotionSeq && static_cast<std::int16_t>(req.seq - lastMotionSeq) < 0) {
+                // A late velocity command (docs/protocol.md): answered, never acted on, not cached.
+                CHECK(rep.type == proto::replyTypeOf(MsgType::JogVelocity) && rep.payload.empty(),
+                      "a late JOG_VELOCITY seq %u got 0x%02X", unsigned{req.seq}, unsigned{rep.type});
             } else {
+                if (velocity || req.type == static_cast<std::uint8_t>(MsgType::Stop) || req.type == static_cast<std::uint8_t>(MsgType::EStop)) {
+                    haveMotionSeq = true;
+                    lastMotionSeq = req.seq;
+                }
                 ++executed;
                 ++g_cov.executed;
                 g_cov.errorReplies += rep.type == static_cast<std::uint8_t>(MsgType::Error);
@@ -543,7 +557,7 @@ void checkFirmware(const Bytes& input, Rng& rng)
     const bool stage = (rng.next() & 1) != 0;
     const sim::MachineConfig cfg = stage ? sim::stageConfig() : sim::analyzerConfig();
     sim::Firmware fw(cfg, kBauds[rng.below(4)]);
-    FirmwareChecker c{fw, static_cast<int>(cfg.axes.size()), cfg.kind, {}, 0, 0, 0, {}, {}};
+    FirmwareChecker c{fw, static_cast<int>(cfg.axes.size()), cfg.kind, {}, 0, 0, 0, false, 0, {}, {}};
 
     // The mirror decoder sees the same chunks as the firmware, so it knows which
     // requests each receive() call completes.
