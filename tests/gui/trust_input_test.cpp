@@ -4,6 +4,7 @@
 #include "gui_window.h"
 
 #include "widgets/jog_screen.h"
+#include "widgets/tuning/tuning_screen.h"
 #include "widgets/plates/plates_screen.h"
 
 #include <QAbstractSpinBox>
@@ -45,10 +46,12 @@ TEST(TrustInput, TheWheelTurnsOnlyAFocusedSpinBoxOrCombo)
     w.resize(1366, 708);
     w.show();
     ASSERT_TRUE(QTest::qWaitForWindowActive(&w));
-    ASSERT_TRUE(w.showScreen(QStringLiteral("plates")));
+    // The recipe panel's numbers are entry fields now (they show a file's value as it
+    // is); the Tuning screen's step size is a spin box an operator scrolls past.
+    ASSERT_TRUE(w.showScreen(QStringLiteral("tuning")));
     guitest::pump(50);
-    auto* spin = firstShown<QAbstractSpinBox>(w.platesScreen());
-    ASSERT_NE(spin, nullptr) << "the recipe panel has spin boxes";
+    auto* spin = firstShown<QAbstractSpinBox>(w.tuningScreen());
+    ASSERT_NE(spin, nullptr) << "the Tuning screen has spin boxes";
     // Somewhere in the middle of its range, so a turn would show.
     if (auto* d = qobject_cast<QDoubleSpinBox*>(spin))
         d->setValue((d->minimum() + d->maximum()) / 2);
@@ -66,6 +69,8 @@ TEST(TrustInput, TheWheelTurnsOnlyAFocusedSpinBoxOrCombo)
     wheel(spin, 3);
     EXPECT_NE(valueOf(spin), before);
 
+    ASSERT_TRUE(w.showScreen(QStringLiteral("plates")));
+    guitest::pump(50);
     auto* combo = firstShown<QComboBox>(w.platesScreen());
     ASSERT_NE(combo, nullptr);
     w.setFocus();
