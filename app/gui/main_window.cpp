@@ -415,6 +415,13 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
         m_log->addNote(s->kind(), "log.kind.link_error", m, true);
     });
     connect(c, &dev::Instrument::requestFailed, this, [this, s](const dev::RequestError& e) {
+        // A request the operator's own Disconnect cut short is what they asked for: logged, no alarm.
+        const msg::Arg* cause = e.message.id == "request.abandoned" ? e.message.arg("cause") : nullptr;
+        const auto* inner = cause ? std::get_if<std::shared_ptr<const msg::Message>>(&cause->value) : nullptr;
+        if (inner && *inner && (*inner)->id == "link.disconnected") {
+            m_log->addNote(s->kind(), "log.kind.refused", e.message, false);
+            return;
+        }
         m_banner->show(ui::MessageBanner::Level::Error, QStringLiteral("%1: %2").arg(s->name(), words::text(e.message)));
         m_log->addNote(s->kind(), "log.kind.refused", e.message, true);
     });

@@ -8,6 +8,7 @@
 #include "gui_window.h"
 #include "widgets/connection_bar.h"
 #include "widgets/jog_screen.h"
+#include "widgets/message_banner.h"
 #include "widgets/wording/wording.h"
 #include "widgets/plates/plate_map.h"
 #include "widgets/plates/plates_screen.h"
@@ -171,4 +172,15 @@ TEST_F(TrustConfirmTest, HomingAPlungerThatHoldsLiquidSaysHowMuchWouldBePushedOu
     EXPECT_TRUE(questions[0].contains(QStringLiteral("220.0 µL"))) << questions[0].toStdString();
     pump(200);
     EXPECT_NEAR(a->status().axes[p].commanded, 220, 0.01) << "homed although the operator said no";
+}
+
+TEST_F(TrustConfirmTest, RequestsCutShortByTheOperatorsDisconnectRaiseNoAlarm)
+{
+    // The screenshot of a plate run showed "Analyzer: 0x12 abandoned: disconnected" in red
+    // after a deliberate reconnect: the request was cut short because the operator asked.
+    ASSERT_FALSE(w->banner()->hasMessage()) << w->banner()->text().toStdString();
+    analyzer()->home(0);  // queued, not yet sent: the disconnect below abandons it
+    w->analyzer()->disconnectLink();
+    pump(100);
+    EXPECT_FALSE(w->banner()->hasMessage()) << w->banner()->text().toStdString();
 }

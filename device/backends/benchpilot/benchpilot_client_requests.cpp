@@ -27,6 +27,25 @@ QString typeName(proto::MsgType t)
     case proto::MsgType::JogVelocity: return QStringLiteral("JOG_VELOCITY");
     case proto::MsgType::Stop: return QStringLiteral("STOP");
     case proto::MsgType::EStop: return QStringLiteral("ESTOP");
+    case proto::MsgType::PathBegin: return QStringLiteral("PATH_BEGIN");
+    case proto::MsgType::PathAppend: return QStringLiteral("PATH_APPEND");
+    case proto::MsgType::PathStatus: return QStringLiteral("PATH_STATUS");
+    case proto::MsgType::PathHold: return QStringLiteral("PATH_HOLD");
+    case proto::MsgType::PathResume: return QStringLiteral("PATH_RESUME");
+    case proto::MsgType::PathClear: return QStringLiteral("PATH_CLEAR");
+    default: break;
+    }
+    // The tuning and compensation requests are numbered in their own headers.
+    switch (static_cast<int>(t)) {
+    case 0x0B: return QStringLiteral("GET_GAINS");
+    case 0x0C: return QStringLiteral("SET_GAINS");
+    case 0x0D: return QStringLiteral("STEP_TEST");
+    case 0x0E: return QStringLiteral("RELAY_TEST");
+    case 0x0F: return QStringLiteral("GET_CAPTURE");
+    case 0x23: return QStringLiteral("TEST_ABORT");
+    case 0x1B: return QStringLiteral("COMP_UPLOAD");
+    case 0x1C: return QStringLiteral("COMP_GET");
+    case 0x1D: return QStringLiteral("COMP_ENABLE");
     default: return QStringLiteral("0x%1").arg(static_cast<int>(t), 2, 16, QLatin1Char('0'));
     }
 }
