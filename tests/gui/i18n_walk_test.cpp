@@ -53,14 +53,10 @@ QString withoutData(QString text)
     return text;
 }
 
-/// Visible texts of `root` and its visible children that still read as English.
-QStringList englishOn(QWidget* root)
+/// Calls `check(where, text)` for every text `root` and its visible children show.
+template <typename Check>
+void forEachShownText(QWidget* root, Check check)
 {
-    QStringList out;
-    auto check = [&out](const QString& where, const QString& text) {
-        for (const QString& w : i18ntest::untranslated(withoutData(text)))
-            out << QStringLiteral("%1: \"%2\" in \"%3\"").arg(where, w, text.left(80));
-    };
     QList<QWidget*> all = root->findChildren<QWidget*>();
     all.prepend(root);
     for (QWidget* w : all) {
@@ -90,6 +86,16 @@ QStringList englishOn(QWidget* root)
             for (int i = 0; i < l->count(); ++i)
                 check(name, l->item(i)->text());
     }
+}
+
+/// Visible texts of `root` and its visible children that still read as English.
+QStringList englishOn(QWidget* root)
+{
+    QStringList out;
+    forEachShownText(root, [&out](const QString& where, const QString& text) {
+        for (const QString& w : i18ntest::untranslated(withoutData(text)))
+            out << QStringLiteral("%1: \"%2\" in \"%3\"").arg(where, w, text.left(80));
+    });
     return out;
 }
 
@@ -135,36 +141,16 @@ TEST(I18nWalk, InChineseNoScreenShowsAnEnglishWord)
     EXPECT_TRUE(failures.isEmpty()) << failures.join(QLatin1Char('\n')).toStdString();
 }
 
-/// Visible texts of `root` that contain a Chinese character.
+/// Visible texts of `root` that contain a Chinese character (a language is named in
+/// its own words in the Language menu, so "简体中文" is not one).
 QStringList chineseOn(QWidget* root)
 {
     static const QRegularExpression han(QStringLiteral("\\p{Han}"));
     QStringList out;
-    QList<QWidget*> all = root->findChildren<QWidget*>();
-    all.prepend(root);
-    auto check = [&](const QString& where, const QString& text) {
-        if (text.contains(han))
+    forEachShownText(root, [&out](const QString& where, const QString& text) {
+        if (text.contains(han) && text != QStringLiteral("简体中文"))
             out << QStringLiteral("%1: \"%2\"").arg(where, text.left(80));
-    };
-    for (QWidget* w : all) {
-        if (!w->isVisibleTo(root->window()))
-            continue;
-        const QString name = QString::fromLatin1(w->metaObject()->className());
-        check(name + QStringLiteral(" tooltip"), w->toolTip());
-        if (auto* l = qobject_cast<QLabel*>(w))
-            check(name, l->text());
-        if (auto* b = qobject_cast<QAbstractButton*>(w))
-            check(name, b->text());
-        if (auto* g = qobject_cast<QGroupBox*>(w))
-            check(name, g->title());
-        if (auto* c = qobject_cast<QComboBox*>(w))
-            for (int i = 0; i < c->count(); ++i)
-                if (c->itemText(i) != QStringLiteral("简体中文"))  // a language is named in its own words
-                    check(name, c->itemText(i));
-        if (auto* t = qobject_cast<QTabWidget*>(w))
-            for (int i = 0; i < t->count(); ++i)
-                check(name, t->tabText(i));
-    }
+    });
     return out;
 }
 
