@@ -168,6 +168,21 @@ QStringList contextsOf(const QObject* w)
     return out;
 }
 
+/// True when `text` is a catalogue entry, but only of contexts other than the widget's:
+/// in a combo or a list that is most likely a name from a file ("wash" the station,
+/// not "wash" the step), and names are never reworded.
+bool foreignWord(const QString& text, const QStringList& contexts, bool fromZh)
+{
+    const Catalogue& cat = Catalogue::instance();
+    const QVector<int>& exact = cat.exact(fromZh, text);
+    if (exact.isEmpty())
+        return false;
+    for (int i : exact)
+        if (contexts.contains(cat.entries()[static_cast<std::size_t>(i)].context))
+            return false;
+    return true;
+}
+
 struct Rewording {
     bool fromZh = false, toZh = false;
     int changed = 0;
@@ -179,6 +194,13 @@ struct Rewording {
         if (out != text)
             ++changed;
         return out;
+    }
+    /// An item of a combo, list or table: reworded unless it reads as a name (foreignWord).
+    template <typename Get, typename Set>
+    void item(const QStringList& contexts, Get get, Set set)
+    {
+        if (!foreignWord(get(), contexts, fromZh))
+            field(contexts, get, set);
     }
     template <typename Get, typename Set>
     void field(const QStringList& contexts, Get get, Set set)
@@ -254,7 +276,15 @@ void rewordWidget(QWidget* w, Rewording& r)
     }
     if (auto* c = qobject_cast<QComboBox*>(w)) {
         for (int i = 0; i < c->count(); ++i) {
-            r.field(contexts, [c, i] { return c->itemText(i); }, [c, i](const QString& s) { c->setItemText(i, s); });
+            // An item whose data is an id of its own (a step type) is a worded term; one with
+            // no data, or its text as its data (a station, a plate), may be a name.
+            const QVariant data = c->itemData(i);
+            auto get = [c, i] { return c->itemText(i); };
+            auto set = [c, i](const QString& s) { c->setItemText(i, s); };
+            if (!data.isValid() || data.toString() == c->itemText(i))
+                r.item(contexts, get, set);
+            else
+                r.field(contexts, get, set);
             r.field(contexts, [c, i] { return c->itemData(i, Qt::ToolTipRole).toString(); },
                     [c, i](const QString& s) { c->setItemData(i, s, Qt::ToolTipRole); });
         }
@@ -270,7 +300,7 @@ void rewordWidget(QWidget* w, Rewording& r)
         auto items = [&](QTableWidgetItem* item) {
             if (!item)
                 return;
-            r.field(contexts, [item] { return item->text(); }, [item](const QString& s) { item->setText(s); });
+            r.item(contexts, [item] { return item->text(); }, [item](const QString& s) { item->setText(s); });
             r.field(contexts, [item] { return item->toolTip(); }, [item](const QString& s) { item->setToolTip(s); });
         };
         for (int c = 0; c < t->columnCount(); ++c)
@@ -288,13 +318,13 @@ void rewordWidget(QWidget* w, Rewording& r)
         for (QTreeWidgetItemIterator it(t); *it; ++it)
             for (int c = 0; c < (*it)->columnCount(); ++c) {
                 QTreeWidgetItem* item = *it;
-                r.field(contexts, [item, c] { return item->text(c); }, [item, c](const QString& s) { item->setText(c, s); });
+                r.item(contexts, [item, c] { return item->text(c); }, [item, c](const QString& s) { item->setText(c, s); });
             }
     }
     if (auto* l = qobject_cast<QListWidget*>(w))
         for (int i = 0; i < l->count(); ++i) {
             QListWidgetItem* item = l->item(i);
-            r.field(contexts, [item] { return item->text(); }, [item](const QString& s) { item->setText(s); });
+            r.item(contexts, [item] { return item->text(); }, [item](const QString& s) { item->setText(s); });
             r.field(contexts, [item] { return item->toolTip(); }, [item](const QString& s) { item->setToolTip(s); });
         }
     if (auto* p = qobject_cast<QCustomPlot*>(w))

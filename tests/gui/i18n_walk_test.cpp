@@ -21,6 +21,7 @@
 #include <QTableWidget>
 
 #include "device/sim/machine_config.h"
+#include "widgets/retranslator.h"
 #include "widgets/wording/translators.h"
 
 #include <gtest/gtest.h>
@@ -196,6 +197,20 @@ TEST(I18nWalk, SwitchingLanguageRewordsEveryOpenScreenWithoutARestart)
             chinese << screen + QStringLiteral(": ") + f;
     }
     EXPECT_TRUE(chinese.isEmpty()) << "left in Chinese after switching back:\n" << chinese.join(QLatin1Char('\n')).toStdString();
+}
+
+TEST(I18nWalk, SwitchingLeavesANameInAComboAsItIs)
+{
+    // A deck station called "wash" is a name from a file, not the step "wash" (清洗):
+    // rewording it would break the recipe that refers to it by name.
+    QWidget root;
+    auto* stations = new QComboBox(&root);
+    stations->addItem(QStringLiteral("wash"));
+    stations->addItem(QStringLiteral("waste"), QStringLiteral("waste"));
+    auto* label = new QLabel(QStringLiteral("wash"), &root);
+    ui::Retranslator::retranslate({&root}, QStringLiteral("en"), QStringLiteral("zh_CN"));
+    EXPECT_EQ(stations->itemText(0), QStringLiteral("wash"));
+    EXPECT_EQ(label->text(), QStringLiteral("清洗")) << "a label's text is worded";
 }
 
 TEST(I18nWalk, TheWalkFindsATextThatDidNotGoThroughTranslation)
