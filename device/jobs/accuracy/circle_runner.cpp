@@ -1,4 +1,5 @@
 #include "device/jobs/accuracy/circle_runner.h"
+#include "device/jobs/accuracy/reading_source.h"
 
 #include <algorithm>
 #include <cmath>
