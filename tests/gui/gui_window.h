@@ -5,6 +5,7 @@
 #include "app/gui/main_window.h"
 #include "gui_wait.h"
 
+#include <QPushButton>
 #include <QSize>
 
 #include <memory>
@@ -17,6 +18,15 @@ inline app::MainWindowOptions testWindowOptions()
     o.persistSettings = false;
     o.confirmDialogs = false;
     return o;
+}
+
+/// The push button under `root` whose text is `text`, or nullptr.
+inline QPushButton* button(QWidget* root, const QString& text)
+{
+    for (auto* b : root->findChildren<QPushButton*>())
+        if (b->text() == text)
+            return b;
+    return nullptr;
 }
 
 /// Shown at `size` with both instruments' links ready; nullptr if they never are.

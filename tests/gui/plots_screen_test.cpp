@@ -2,6 +2,7 @@
 // person would use it: channels ticked and unticked, plots added and removed, pause
 // that freezes the view while the stage keeps moving, export and recording through
 // the injected file chooser.
+#include "gui_window.h"
 #include "app/gui/instrument_session.h"
 #include "app/gui/main_window.h"
 #include "device/telemetry/telemetry_hub.h"
@@ -23,6 +24,8 @@
 
 using guitest::pump;
 using guitest::waitFor;
+
+using guitest::button;
 
 namespace {
 
@@ -55,14 +58,6 @@ int legendEntries(const QCPLegend* legend)
     for (int i = 0; i < legend->itemCount(); ++i)
         n += legend->item(i) != nullptr;
     return n;
-}
-
-QPushButton* button(QWidget* root, const QString& text)
-{
-    for (auto* b : root->findChildren<QPushButton*>())
-        if (b->text() == text)
-            return b;
-    return nullptr;
 }
 
 class PlotsScreenTest : public ::testing::Test {

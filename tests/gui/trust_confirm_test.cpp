@@ -27,15 +27,9 @@
 using guitest::pump;
 using guitest::waitFor;
 
-namespace {
+using guitest::button;
 
-QPushButton* button(QWidget* root, const QString& text)
-{
-    for (auto* b : root->findChildren<QPushButton*>())
-        if (b->text() == text)
-            return b;
-    return nullptr;
-}
+namespace {
 
 class TrustConfirmTest : public ::testing::Test {
 protected:
