@@ -57,6 +57,27 @@ TEST(AccuracyCircle, BothDirectionsAreSampledAndEvaluated)
     }
 }
 
+TEST(AccuracyCircle, AMotionDoneLostOnTheWayToTheStartIsMadeGoodByTheStatus)
+{
+    AccuracyStage s;
+    ASSERT_TRUE(s.ready(5));
+    motion::metrology::CircularTest t;
+    t.centreMm = {50, 50};
+    t.radiusMm = 10;
+    t.feedMmS = 10;
+    jobs::CircleRunner r(&s.session.client);
+    motion::metrology::Problems problems;
+    ASSERT_TRUE(r.prepare(t, &problems)) << describe(problems);
+    int samples = 0;
+    QObject::connect(&r, &jobs::CircleRunner::sampled, [&] { ++samples; });
+    int dropped = 0;
+    loseFirstMotionDone(s.session, s.session.axis('Y'), dropped);
+    ASSERT_TRUE(r.start());
+    EXPECT_TRUE(waitFor([&] { return samples > 0; }, 20000)) << "the circle never began";
+    EXPECT_EQ(dropped, 1);
+    r.abort();
+}
+
 TEST(AccuracyCircle, TheCommandRefusesACircleOutsideTheTravel)
 {
     // (A whole run through the command is not tested here: the runner samples by polling

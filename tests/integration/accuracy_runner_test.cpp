@@ -102,6 +102,22 @@ TEST(AccuracyRunner, AnAbortAndAPulledCableContinueAtTheNextReadingNeverReadingA
     EXPECT_TRUE(r->evaluation().ok()) << "every target and direction read exactly once per cycle";
 }
 
+TEST(AccuracyRunner, AMotionDoneLostOnTheLineIsMadeGoodByTheStatus)
+{
+    AccuracyStage s;
+    ASSERT_TRUE(s.ready());
+    jobs::ReadbackSource source(&s.session.client);
+    AccuracyRunner r(&s.session.client);
+    motion::metrology::Problems problems;
+    ASSERT_TRUE(r.prepare(smallTest({20, 40}, 2), &source, s.dir.path(), false, &problems)) << describe(problems);
+    int dropped = 0;
+    loseFirstMotionDone(s.session, s.session.axis('X'), dropped);
+    ASSERT_TRUE(r.start());
+    ASSERT_TRUE(waitRunner(r, AccuracyRunner::State::Finished, 30000)) << AccuracyRunner::stateName(r.state());
+    EXPECT_EQ(dropped, 1);
+    EXPECT_EQ(r.readingsTaken(), 8);
+}
+
 TEST(AccuracyRunner, AGaugeThatAnswersGarbageStopsTheRunNamingItsPortAndWhatItSent)
 {
     AccuracyStage s;

@@ -55,6 +55,20 @@ inline std::string describe(const motion::metrology::Problems& problems)
     return o.str();
 }
 
+/// From now on the first MotionDone of `axis` is lost on the line; `dropped` counts it.
+inline void loseFirstMotionDone(SimSession& s, int axis, int& dropped)
+{
+    s.tap.dropReceived = [axis, &dropped](const proto::Frame& f) {
+        if (dropped > 0 || f.type != static_cast<std::uint8_t>(proto::MsgType::Event))
+            return false;
+        const auto e = proto::decodeEvent(f.payload);
+        if (!e || e->kind != proto::EventKind::MotionDone || e->axis != axis)
+            return false;
+        ++dropped;
+        return true;
+    };
+}
+
 inline bool openSource(jobs::ReadingSource& source)
 {
     bool done = false;

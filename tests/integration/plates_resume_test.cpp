@@ -164,50 +164,14 @@ TEST_F(PlateResume, ALogThatDoesNotFitIsRefused)
     EXPECT_EQ(error.id, "recipe.run.log_finished") << error;
 }
 
-namespace {
-
-/// The device end of the link with a filter: frames for which `drop` says yes never reach the host.
-class FilterTransport final : public dev::Transport {
-public:
-    explicit FilterTransport(dev::Transport* inner) : m_inner(inner)
-    {
-        connect(inner, &dev::Transport::opened, this, &dev::Transport::opened);
-        connect(inner, &dev::Transport::failed, this, &dev::Transport::failed);
-        connect(inner, &dev::Transport::lost, this, &dev::Transport::lost);
-        connect(inner, &dev::Transport::bytesReceived, this, &dev::Transport::bytesReceived);
-    }
-    void open() override { m_inner->open(); }
-    void close() override { m_inner->close(); }
-    bool isOpen() const override { return m_inner->isOpen(); }
-    QString describe() const override { return m_inner->describe(); }
-    void write(const QByteArray& bytes) override
-    {
-        std::vector<proto::Frame> frames;
-        m_decoder.feed(reinterpret_cast<const std::uint8_t*>(bytes.constData()), static_cast<std::size_t>(bytes.size()), frames);
-        std::vector<std::uint8_t> out;
-        for (const auto& f : frames)
-            if (!drop || !drop(f))
-                proto::encodeFrame(f.type, f.seq, f.payload.data(), f.payload.size(), out);
-        if (!out.empty())
-            m_inner->write(QByteArray(reinterpret_cast<const char*>(out.data()), static_cast<int>(out.size())));
-    }
-    std::function<bool(const proto::Frame&)> drop;
-
-private:
-    dev::Transport* m_inner;
-    proto::FrameDecoder m_decoder;
-};
-
-} // namespace
-
 TEST(PlateRunLink, AMotionDoneLostOnTheLinkIsMadeGoodByTheStatus)
 {
     dev::LoopbackPair pair(0);
-    FilterTransport deviceEnd(pair.end(dev::LoopbackPair::B));
-    dev::SimulatorHost host(sim::analyzerConfig(), 0, &deviceEnd);
+    dev::SimulatorHost host(sim::analyzerConfig(), 0, pair.end(dev::LoopbackPair::B));
     host.start();
+    TapTransport hostEnd(pair.end(dev::LoopbackPair::A));
     dev::BenchPilotClient client;
-    client.setTransport(pair.end(dev::LoopbackPair::A));
+    client.setTransport(&hostEnd);
     client.connectLink();
     ASSERT_TRUE(waitFor([&] { return client.isReady(); }, 5000));
     host.setTimeScale(kRunTimeScale);
@@ -224,7 +188,7 @@ TEST(PlateRunLink, AMotionDoneLostOnTheLinkIsMadeGoodByTheStatus)
     ASSERT_TRUE(homed);
     // From now on the first MotionDone of Z never arrives.
     int dropped = 0;
-    deviceEnd.drop = [&](const proto::Frame& f) {
+    hostEnd.dropReceived = [&](const proto::Frame& f) {
         if (f.type != static_cast<std::uint8_t>(proto::MsgType::Event) || dropped > 0)
             return false;
         const auto e = proto::decodeEvent(f.payload);

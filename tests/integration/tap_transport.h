@@ -35,7 +35,7 @@ public:
         connect(inner, &dev::Transport::opened, this, &dev::Transport::opened);
         connect(inner, &dev::Transport::failed, this, &dev::Transport::failed);
         connect(inner, &dev::Transport::lost, this, &dev::Transport::lost);
-        connect(inner, &dev::Transport::bytesReceived, this, &dev::Transport::bytesReceived);
+        connect(inner, &dev::Transport::bytesReceived, this, &TapTransport::received);
     }
 
     void open() override { m_inner->open(); }
@@ -53,9 +53,29 @@ public:
 
     /// Called with each write's bytes just before / just after they go to the inner transport.
     std::function<void(const QByteArray&)> beforeWrite, afterWrite;
+    /// When set, each whole frame from the device is offered to it first and is lost
+    /// on the line when it answers true (a frame cut by a read boundary waits for its end).
+    std::function<bool(const proto::Frame&)> dropReceived;
 
 private:
+    void received(const QByteArray& bytes)
+    {
+        if (!dropReceived) {
+            emit bytesReceived(bytes);
+            return;
+        }
+        std::vector<proto::Frame> frames;
+        m_decoder.feed(reinterpret_cast<const std::uint8_t*>(bytes.constData()), static_cast<std::size_t>(bytes.size()), frames);
+        std::vector<std::uint8_t> out;
+        for (const auto& f : frames)
+            if (!dropReceived(f))
+                proto::encodeFrame(f, out);
+        if (!out.empty())
+            emit bytesReceived(QByteArray(reinterpret_cast<const char*>(out.data()), static_cast<int>(out.size())));
+    }
+
     dev::Transport* m_inner;
+    proto::FrameDecoder m_decoder;
 };
 
 } // namespace itest

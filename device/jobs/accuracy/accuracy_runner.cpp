@@ -46,6 +46,17 @@ AccuracyRunner::AccuracyRunner(dev::Instrument* instrument, QObject* parent) : Q
         if (isActive() && s != dev::LinkState::Ready)
             stopWith(msg::make("accuracy.run.link_lost"), false);
     });
+    m_connections << connect(instrument, &dev::Instrument::statusChanged, this, [this](const dev::InstrumentStatus& s) {
+        const bool moving = m_phase == Phase::Overrun || m_phase == Phase::Approach || m_phase == Phase::Target;
+        if (!isActive() || !moving || !m_moveAccepted || m_waitingAxes == 0)
+            return;
+        quint64 restUs = 0;
+        if (!m_arrival.feed(s, &restUs))
+            return;
+        m_waitingAxes = 0;
+        m_motionDoneUs = std::max<quint64>(m_motionDoneUs, restUs);
+        onMoveDone();
+    });
 }
 
 AccuracyRunner::~AccuracyRunner()
@@ -193,10 +204,13 @@ void AccuracyRunner::moveTo(const std::vector<double>& positionsMm, Phase phase)
     m_moveAccepted = false;
     m_motionDoneUs = 0;
     QVector<QPair<int, double>> targets;
+    std::vector<std::pair<int, double>> expected;
     for (std::size_t n = 0; n < m_axes.size() && n < positionsMm.size(); ++n) {
         targets.push_back({m_axes[n], positionsMm[n]});
+        expected.emplace_back(m_axes[n], positionsMm[n]);
         m_waitingAxes |= 1u << m_axes[n];
     }
+    m_arrival.expect(std::move(expected));
     const quint64 generation = m_generation;
     const QPointer<AccuracyRunner> self(this);
     m_instrument->move(targets, false, feedOf(m_test), [self, generation](const std::optional<dev::RequestError>& e) {

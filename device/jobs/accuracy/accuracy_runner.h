@@ -19,6 +19,7 @@
 #include "device/files/accuracy/accuracy_test_file.h"
 #include "device/files/accuracy/interferometer_csv.h"
 #include "device/jobs/accuracy/reading_source.h"
+#include "device/jobs/arrival_by_status.h"
 #include "motion/metrology/contour/xy_line_test.h"
 #include "motion/metrology/linear/iso230_2.h"
 
@@ -157,6 +158,7 @@ private:
     std::vector<double> m_stableMin, m_stableMax;
     bool m_haveSettleSample = false;
     QTimer m_poll;
+    ArrivalByStatus m_arrival;  ///< a lost MotionDone made good by the status
     // Time: device seconds since the run began, across resumptions.
     double m_timeBaseS = 0;                   ///< the run's time when this session began
     quint64 m_sessionStartUs = 0;

@@ -52,6 +52,12 @@ CircleRunner::CircleRunner(dev::Instrument* instrument, QObject* parent) : QObje
         if (isActive() && s != dev::LinkState::Ready)
             stopWith(msg::make("accuracy.run.link_lost"));
     });
+    m_connections << connect(instrument, &dev::Instrument::statusChanged, this, [this](const dev::InstrumentStatus& s) {
+        if (!isActive() || m_phase != Phase::ToStart || !m_moveAccepted || m_waitingAxes == 0 || !m_arrival.feed(s))
+            return;
+        m_waitingAxes = 0;
+        nextRun();
+    });
 }
 
 CircleRunner::~CircleRunner()
@@ -177,6 +183,7 @@ void CircleRunner::beginDirection()
     m_phase = Phase::ToStart;
     m_waitingAxes = (1u << m_axisX) | (1u << m_axisY);
     m_moveAccepted = false;
+    m_arrival.expect({{m_axisX, start.x}, {m_axisY, start.y}});
     const quint64 generation = m_generation;
     const QPointer<CircleRunner> self(this);
     m_instrument->move({{m_axisX, start.x}, {m_axisY, start.y}}, false, m_test.feedMmS,

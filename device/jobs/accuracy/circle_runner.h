@@ -14,6 +14,7 @@
 // revolution of a few seconds gives hundreds.
 #include "device/client/instrument.h"
 #include "device/client/path_client.h"
+#include "device/jobs/arrival_by_status.h"
 #include "motion/metrology/contour/circular_test.h"
 
 #include <QObject>
@@ -99,6 +100,7 @@ private:
     bool m_haveAngle = false;
     std::vector<char> m_binTaken;
     QTimer m_poll;
+    ArrivalByStatus m_arrival;  ///< a lost MotionDone made good by the status
     QList<QMetaObject::Connection> m_connections;
     QList<QMetaObject::Connection> m_pathConnections;
 };
