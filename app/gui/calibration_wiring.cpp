@@ -22,7 +22,7 @@ ui::CalibrationScreen* makeCalibrationScreen(InstrumentSession* const sessions[2
     screen->setFileChooser([window](ui::CalibrationScreen::FileAction a, const QString& title, const QString& filter) {
         const QString docs = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
         using A = ui::CalibrationScreen::FileAction;
-        if (a == A::OpenTest)
+        if (a == A::OpenTest || a == A::OpenSequence || a == A::OpenCapture)
             return QFileDialog::getOpenFileName(window, title, docs, filter);
         if (a == A::SaveTest || a == A::SaveCompensation)
             return QFileDialog::getSaveFileName(window, title, docs, filter);

@@ -12,6 +12,16 @@
     </message>
 </context>
 <context>
+    <name>ui::CalibrationScreen</name>
+    <message numerus="yes">
+        <source>Imported %n reading(s) from %1: results in %2.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>words::RecipeWords</name>
     <message numerus="yes">
         <source>running %1: %Ln wells, about %2; log %3</source>

@@ -3885,10 +3885,6 @@ Keep that log aside and start this test afresh?</source>
         <translation>“%1”在此不是有效读数：请为每个轴输入一个值，单位 mm。</translation>
     </message>
     <message>
-        <source>Every stop is visited. Capture with the interferometer, then import its export against %1 (benchpilot-cli accuracy import).</source>
-        <translation>所有测点均已走完。请用干涉仪采集，然后对照 %1 导入其导出的数据（benchpilot-cli accuracy import）。</translation>
-    </message>
-    <message>
         <source>Linked XY line: contour error A↑ %1 µm, R↑ %2 µm (%3 readings).</source>
         <translation>XY 联动直线：轮廓误差 A↑ %1 µm，R↑ %2 µm（%3 个读数）。</translation>
     </message>
@@ -4249,6 +4245,70 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>A test is running: the test on screen stays until it has finished or been aborted.</source>
         <translation>测试正在运行：屏幕上的测试会保留，直到它完成或被中止。</translation>
+    </message>
+    <message>
+        <source>The run&apos;s target sequence</source>
+        <translation>该次运行的目标位置序列</translation>
+    </message>
+    <message>
+        <source>Target sequences (*.targets.csv)</source>
+        <translation>目标位置序列 (*.targets.csv)</translation>
+    </message>
+    <message>
+        <source>The interferometer&apos;s CSV export of that run</source>
+        <translation>该次运行的激光干涉仪 CSV 导出文件</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
+    <message>
+        <source>A test is running: import the capture when it has finished.</source>
+        <translation>测试正在运行：请在其结束后再导入采集数据。</translation>
+    </message>
+    <message>
+        <source>Only an axis test&apos;s capture can be imported: show the axis test it belongs to.</source>
+        <translation>只能导入单轴测试的采集数据：请先显示该数据所属的单轴测试。</translation>
+    </message>
+    <message>
+        <source>The target sequence cannot be read:
+%1</source>
+        <translation>无法读取目标位置序列：
+%1</translation>
+    </message>
+    <message>
+        <source>The capture does not match the run&apos;s stops, so nothing was imported:
+%1</source>
+        <translation>采集数据与该次运行的停留点不符，未导入任何数据：
+%1</translation>
+    </message>
+    <message>
+        <source>The imported readings cannot be evaluated:
+%1</source>
+        <translation>导入的读数无法评定：
+%1</translation>
+    </message>
+    <message>
+        <source>%1 exists already. Replace it with the readings of this capture?</source>
+        <translation>%1 已存在。要用本次采集的读数替换它吗？</translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n reading(s) from %1: results in %2.</source>
+        <translation>
+            <numerusform>已从 %1 导入 %n 个读数：结果位于 %2。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Every stop is visited. Capture with the interferometer, then import its export against %1 (Import capture…).</source>
+        <translation>所有停留点均已到达。请用激光干涉仪采集，然后将其导出文件按 %1 导入（导入采集数据…）。</translation>
+    </message>
+    <message>
+        <source>Match an interferometer&apos;s CSV export to a run&apos;s target sequence and evaluate it against the axis test on screen</source>
+        <translation>将激光干涉仪导出的 CSV 与某次运行的目标位置序列相匹配，并按屏幕上的单轴测试进行评定</translation>
+    </message>
+    <message>
+        <source>Import capture…</source>
+        <translation>导入采集数据…</translation>
     </message>
 </context>
 <context>

@@ -338,7 +338,7 @@ void CalibrationScreen::onAxisFinished()
     const auto* a = std::get_if<AxisTest>(&m_runner->test());
     if (m_source && m_source->kind() == jobs::ReadingKind::Interferometer) {
         emit notice(tr("Every stop is visited. Capture with the interferometer, then import its export against %1 "
-                       "(benchpilot-cli accuracy import).")
+                       "(Import capture…).")
                         .arg(m_runner->basePath() + QStringLiteral(".targets.csv")));
         updateRunUi();
         return;
@@ -351,18 +351,8 @@ void CalibrationScreen::onAxisFinished()
         r.reference = m_source ? jobs::readingKindName(m_source->kind()) : "";
         r.readingsFile = QFileInfo(m_runner->basePath() + QStringLiteral(".readings.csv")).fileName().toStdString();
         r.createdUtc = QDateTime::currentDateTimeUtc().toString(Qt::ISODate).toStdString();
-        if (m_latest && m_latest->axis == r.axis)
-            m_previous = m_latest;
-        m_latest = r;
-        m_latestTest = *a;
-        m_latestReadings = m_runner->readings();
-        m_latestBasePath = m_runner->basePath();
-        m_latestSource = m_source ? m_source->describe() : msg::make("accuracy.source.recorded", {msg::verbatim("reference", r.reference)});
-        m_fit->setEvaluation(r.axis, r.evaluation);
-        showResult();
-        showBeforeAfter();
-        writeReport();
-        m_tabs->setCurrentIndex(1);
+        adoptAxisResult(r, *a, m_runner->readings(), m_runner->basePath(),
+                        m_source ? m_source->describe() : msg::make("accuracy.source.recorded", {msg::verbatim("reference", r.reference)}));
     } else {
         const auto e = m_runner->xyEvaluation();
         m_verdict->setText(tr("Linked XY line: contour error A↑ %1 µm, R↑ %2 µm (%3 readings).")
@@ -372,6 +362,24 @@ void CalibrationScreen::onAxisFinished()
     }
     emit notice(tr("The test is done: results in %1.").arg(m_runner->folder()));
     updateRunUi();
+}
+
+void CalibrationScreen::adoptAxisResult(const accuracyfiles::AccuracyResult& r, const AxisTest& test,
+                                        const std::vector<motion::metrology::Reading>& readings, const QString& basePath,
+                                        const msg::Message& source)
+{
+    if (m_latest && m_latest->axis == r.axis)
+        m_previous = m_latest;
+    m_latest = r;
+    m_latestTest = test;
+    m_latestReadings = readings;
+    m_latestBasePath = basePath;
+    m_latestSource = source;
+    m_fit->setEvaluation(r.axis, r.evaluation);
+    showResult();
+    showBeforeAfter();
+    writeReport();
+    m_tabs->setCurrentIndex(1);
 }
 
 void CalibrationScreen::onCircleFinished()
@@ -559,6 +567,12 @@ void CalibrationScreen::updateRunUi()
     m_abortButton->setEnabled(active || (m_runner && m_runner->state() == jobs::AccuracyRunner::State::Paused));
     m_abortButton->setToolTip(m_abortButton->isEnabled() ? tr("Stop the axes now; Run goes on at the next reading later (Ctrl+.)")
                                                          : tr("Nothing is running."));
+    const bool axisOnScreen = m_form->kind() == AccuracyTestForm::Kind::Axis;
+    m_importButton->setEnabled(!active && axisOnScreen);
+    m_importButton->setToolTip(active          ? tr("A test is running.")
+                                   : !axisOnScreen ? tr("Only an axis test's capture can be imported: show the axis test it belongs to.")
+                                                   : tr("Match an interferometer's CSV export to a run's target sequence and "
+                                                        "evaluate it against the axis test on screen"));
     // Progress and the state line are recomputed from the runners, never stored as text.
     QString state;
     if (m_circle && (circleActive || m_form->kind() == AccuracyTestForm::Kind::Circle)) {

@@ -119,8 +119,13 @@ QWidget* CalibrationScreen::buildLeft()
         if (!path.isEmpty())
             saveTest(path);
     });
+    // An interferometer's capture belongs to a test's files: it arrives after the run.
+    m_importButton = new QPushButton;
+    m_importButton->setObjectName(QStringLiteral("calibrationImport"));
+    connect(m_importButton, &QPushButton::clicked, this, &CalibrationScreen::chooseAndImportCapture);
     files->addWidget(m_open);
     files->addWidget(m_save);
+    files->addWidget(m_importButton);
     tv->addLayout(files);
     v->addWidget(testBox);
 
@@ -320,6 +325,7 @@ void CalibrationScreen::retranslateUi()
     m_pauseButton->setText(tr("Pause"));
     m_pauseButton->setToolTip(tr("Stop after the reading in progress (Ctrl+P)"));
     m_abortButton->setText(tr("Abort"));
+    m_importButton->setText(tr("Import capture…"));
     m_abortButton->setToolTip(tr("Stop the axes now; Run goes on at the next reading later (Ctrl+.)"));
     m_manualEnter->setText(tr("Enter"));
     m_manualValue->setPlaceholderText(tr("reading in mm, e.g. 40.0012"));
@@ -399,10 +405,7 @@ bool CalibrationScreen::openTest(const QString& path)
     }
     const auto read = accuracyfiles::loadAccuracyTestFile(path);
     if (!read.test) {
-        QStringList lines;
-        for (const auto& p : read.problems)
-            lines << QStringLiteral("%1:%2:%3: %4").arg(QString::fromStdString(p.file)).arg(p.line).arg(p.column).arg(words::text(p.message));
-        emit problem(tr("The test cannot be opened:\n%1").arg(lines.join(QLatin1Char('\n'))));
+        emit problem(tr("The test cannot be opened:\n%1").arg(fileProblemLines(read.problems)));
         return false;
     }
     m_form->setTest(*read.test);

@@ -48,7 +48,7 @@ class PolarPlot;
 class CalibrationScreen : public QWidget {
     Q_OBJECT
 public:
-    enum class FileAction { OpenTest, SaveTest, Folder, SaveCompensation };
+    enum class FileAction { OpenTest, SaveTest, Folder, SaveCompensation, OpenSequence, OpenCapture };
     using FileChooser = std::function<QString(FileAction action, const QString& title, const QString& filter)>;
     using Confirm = std::function<bool(const QString& question)>;
     /// The transport of a gauge on `port` for instrument `index` reading `axis` (the app
@@ -84,6 +84,10 @@ public:
     bool run();
     void pause();
     void abort();
+    /// An interferometer's CSV export matched to the run's target sequence and evaluated
+    /// against the axis test on screen; false (with a problem signal, nothing written)
+    /// when they do not match.
+    bool importCapture(const QString& sequencePath, const QString& capturePath);
     /// What a person typed at a manual stop; false (nothing taken) when it is not a reading.
     bool enterManual(const QString& text);
 
@@ -114,6 +118,10 @@ private:
     void onReading();
     void onAxisFinished();
     void onCircleFinished();
+    void chooseAndImportCapture();
+    void adoptAxisResult(const accuracyfiles::AccuracyResult& r, const motion::metrology::AxisTest& test,
+                         const std::vector<motion::metrology::Reading>& readings, const QString& basePath, const msg::Message& source);
+    static QString fileProblemLines(const accuracyfiles::FileProblems& problems);
     void showResult();
     void showBeforeAfter();
     void onManualWanted(const jobs::StopContext& stop);
@@ -152,7 +160,7 @@ private:
     QLineEdit* m_port;
     QLineEdit* m_folder;
     QPushButton* m_browse;
-    QPushButton *m_runButton, *m_pauseButton, *m_abortButton;
+    QPushButton *m_runButton, *m_pauseButton, *m_abortButton, *m_importButton;
     QProgressBar* m_progress;
     QLabel* m_state;
     QWidget* m_manualRow;
