@@ -99,6 +99,7 @@ struct DeviceEvent {
 struct LinkStats {
     quint64 framesIn = 0, crcErrors = 0, malformed = 0, oversize = 0, droppedBytes = 0;
     quint64 retransmits = 0, timeouts = 0, lateReplies = 0;
+    quint64 stalls = 0;  ///< timeout checks put off once because the host's event loop was held up
     quint64 telemetryBatches = 0, telemetrySamples = 0, lostSamples = 0;
 };
 

@@ -12,7 +12,9 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <random>
+#include <thread>
 
 using namespace itest;
 using K = proto::EventKind;
@@ -374,4 +376,44 @@ TEST(LinkFaults, ASecondSessionSeesTheDeviceAsItIsNotAsTheLastSessionLeftIt)
     EXPECT_NEAR(second.status().axes[x].commanded, start + 3.0, 1e-6)
         << "the first status of a new session came from an old one";
     second.setTransport(nullptr);
+}
+
+// A busy GUI thread holds up the event loop with a request on the wire: its answer (and
+// the in-process simulator itself) waits in the queue behind the client's timeout check.
+// Before, the check resent the request after a short hold-up and, after one longer than
+// the silence limit, declared a device that had answered all along silent.
+TEST(LinkFaults, AnEventLoopHeldUpResendsNothingAndKeepsTheLink)
+{
+    // Unpaced: on a paced loopback the in-process device, held up with the host, sends the
+    // telemetry of the held-up time only afterwards and its reply queues behind it, where
+    // a real device's would have been in the port's buffer already.
+    SimSession s(proto::DeviceKind::Analyzer, kUnpaced);
+    ASSERT_TRUE(s.connect()) << text(s.linkErrors);
+    waitFor([] { return false; }, 300);  // the round trip measured, the timeout near its floor
+    const auto before = s.client.stats();
+    for (int heldMs : {300, 2500}) {
+        // The status request written just before the hold-up, and any write of it again
+        // (a retransmission keeps its sequence number).
+        std::optional<std::uint16_t> heldSeq;
+        int again = 0;
+        s.tap.afterWrite = [&](const QByteArray& bytes) {
+            for (const auto& f : framesIn(bytes)) {
+                if (f.type != static_cast<std::uint8_t>(proto::MsgType::Status))
+                    continue;
+                if (!heldSeq) {
+                    heldSeq = f.seq;
+                    std::this_thread::sleep_for(std::chrono::milliseconds(heldMs));
+                } else if (f.seq == *heldSeq) {
+                    ++again;
+                }
+            }
+        };
+        ASSERT_TRUE(waitFor([&] { return heldSeq.has_value(); }, 2000));
+        waitFor([] { return false; }, 200);
+        s.tap.afterWrite = nullptr;
+        EXPECT_EQ(again, 0) << heldMs << " ms: the request answered during the hold-up was sent again";
+        EXPECT_EQ(s.client.state(), LinkState::Ready) << heldMs << " ms: " << text(s.linkErrors);
+    }
+    EXPECT_EQ(s.client.stats().timeouts, before.timeouts);
+    EXPECT_GE(s.client.stats().stalls, before.stalls + 2) << "both hold-ups were seen";
 }

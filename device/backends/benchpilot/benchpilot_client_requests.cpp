@@ -156,6 +156,19 @@ void BenchPilotClient::dropSupersededJogs(std::uint16_t newerSeq)
 void BenchPilotClient::checkTimeouts()
 {
     const qint64 now = nowMs();
+    // After the event loop was held up (a busy GUI thread, a slow machine) the device's
+    // answers of that time wait in the queue behind this tick; the in-process simulator
+    // has not even run yet. Deciding now would resend what is answered already, or call
+    // a device that talked all along silent. One tick is skipped so they are read first;
+    // only one, so a loop that is always late still retries and still notices silence.
+    const bool stalled = m_lastCheckMs > 0 && now - m_lastCheckMs > kStallMs;
+    m_lastCheckMs = now;
+    if (stalled && !m_skippedStalledCheck) {
+        m_skippedStalledCheck = true;
+        ++m_stats.stalls;
+        return;
+    }
+    m_skippedStalledCheck = false;
     // The device is silent when a request has waited longer than kSilenceLimitMs and no
     // good frame (reply, event, telemetry) came in that time. Corrupted frames do not
     // count: a line at the wrong baud rate is all garbage.
