@@ -34,10 +34,8 @@ public:
     {
         m_timeScale = scale;
         // A quiet host is judged on its own clock: 1 s of wall time is `scale` s here.
-        if (m_firmware) {
+        if (m_firmware)
             m_firmware->setHostSilenceLimitS(proto::kPathHostSilenceMs / 1000.0 * std::max(1.0, scale));
-            m_firmware->machine().setJogWatchdogTripS(sim::SimMachine::kJogWatchdogTripS * std::max(1.0, scale));
-        }
     }
     /// Stops the clock; `advance()` then moves virtual time by hand (deterministic tests).
     void setManualClock(bool manual);

@@ -9,6 +9,7 @@
 
 #include "device/files/pattern_file.h"
 #include "device/files/scan_plan_file.h"
+#include "device/sim/sim_machine.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -74,6 +75,7 @@ int main(int argc, char** argv)
     // Under 20 minutes the first half is all warm-up, and not every kind of job comes round.
     bounds.judgeGrowth = !p.isSet(noTiming) && simMinutes >= 20;
     bounds.everyKind = simMinutes >= 20;
+    bounds.jogsCanHold = timeScale * dev::BenchPilotClient::kJogRefreshMs <= sim::SimMachine::kJogWatchdogTripS * 1000;
     const std::uint64_t seedValue = p.value(seed).toULongLong();
 
     // What it runs: the examples a user starts from.
@@ -110,8 +112,11 @@ int main(int argc, char** argv)
 
     std::printf("bp-soak: %.0f simulated minutes at %gx, seed %llu, plots at %d Hz on %zu channels\n", simMinutes, timeScale,
                 static_cast<unsigned long long>(seedValue), p.value(rate).toInt(), plots.channels());
-    std::fflush(stdout);
+    std::printf("(lat_* in ms: how late a %d ms timer came in the period ending on the row; other columns are totals)\n",
+                soak::Probe::kProbeMs);
+    soak::Probe::printHeader(stdout);
     probe.start();
+    soak::Probe::printRow(stdout, probe.periods().back());
     analyzerWork.begin();
     stageWork.begin();
 
@@ -129,7 +134,7 @@ int main(int argc, char** argv)
     QObject::connect(&check, &QTimer::timeout, &app, [&] {
         const double t = probe.simS();
         if (t >= nextRowS && !stopping) {
-            probe.snapshot();
+            soak::Probe::printRow(stdout, probe.snapshot());
             nextRowS += reportMinutes * 60;
         }
         if (t >= targetS && !stopping) {
@@ -146,11 +151,10 @@ int main(int argc, char** argv)
     });
     check.start();
     app.exec();
-    probe.snapshot();
+    soak::Probe::printRow(stdout, probe.snapshot());
 
     const soak::Figures& first = probe.periods().front();
     const soak::Figures& last = probe.periods().back();
-    probe.printTable(stdout);
     std::printf("\nsoak: %.1f simulated minutes in %.1f s wall: %.1fx (%gx asked)\n", last.simS / 60, last.wallS,
                 last.wallS > 0 ? last.simS / last.wallS : 0.0, timeScale);
     std::printf("memory: RSS %.1f MiB at start, %.1f at the end, %.1f at most; heap in use %.1f -> %.1f MiB\n",
@@ -161,8 +165,10 @@ int main(int argc, char** argv)
                 static_cast<unsigned long long>(last.samples), static_cast<unsigned long long>(last.lost()),
                 static_cast<unsigned long long>(last.lostSamples), static_cast<unsigned long long>(last.hubLostSamples),
                 static_cast<unsigned long long>(last.droppedBatches));
-    std::printf("link: %llu errors; %llu retransmits, %llu late replies\n", static_cast<unsigned long long>(last.linkErrors),
-                static_cast<unsigned long long>(last.retransmits), static_cast<unsigned long long>(last.lateReplies));
+    std::printf("link: %llu errors; %llu retransmits, %llu late replies; %llu jogs expired on the device%s\n",
+                static_cast<unsigned long long>(last.linkErrors), static_cast<unsigned long long>(last.retransmits),
+                static_cast<unsigned long long>(last.lateReplies), static_cast<unsigned long long>(last.jogExpired),
+                bounds.jogsCanHold ? "" : " (not judged above 4x: the watchdog runs on the fast clock)");
     std::printf("jobs:");
     for (const auto& [kind, c] : tally.byKind)
         std::printf(" %s %llu done/%llu failed;", kind.c_str(), static_cast<unsigned long long>(c.done), static_cast<unsigned long long>(c.failed));

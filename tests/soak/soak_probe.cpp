@@ -103,7 +103,7 @@ quint64 Probe::linkErrors(Station& s)
     const dev::LinkStats c = s.client.stats();
     const proto::DecoderStats& d = s.link.host().firmware().decoderStats();
     return c.crcErrors + c.malformed + c.oversize + c.droppedBytes + c.timeouts + d.crcErrors + d.malformed + d.oversize
-        + s.trouble.linkErrorSignals + s.trouble.refusals + s.trouble.jogExpired + s.trouble.linkDrops;
+        + s.trouble.linkErrorSignals + s.trouble.refusals + s.trouble.linkDrops;
 }
 
 const Figures& Probe::snapshot()
@@ -128,6 +128,7 @@ const Figures& Probe::snapshot()
         f.hubLostSamples += m_hub.lostSamples(static_cast<int>(i));
         f.droppedBatches += s.link.host().firmware().droppedTelemetryBatches();
         f.linkErrors += linkErrors(s);
+        f.jogExpired += s.trouble.jogExpired;
     }
     f.jobsDone = m_tally.done();
     f.jobsFailed = m_tally.failed();
@@ -150,6 +151,8 @@ std::vector<std::string> Probe::verdict(const Bounds& b, const std::vector<std::
         out.push_back(std::to_string(end.lost()) + " telemetry samples or batches lost on a clean link");
     if (end.linkErrors > 0)
         out.push_back(std::to_string(end.linkErrors) + " link errors on a clean link");
+    if (end.jogExpired > 0 && b.jogsCanHold)
+        out.push_back(std::to_string(end.jogExpired) + " jogs expired on the device although the host renewed them in time");
     if (end.jobsFailed > 0)
         out.push_back(std::to_string(end.jobsFailed) + " jobs failed");
     if (b.everyKind)
@@ -179,18 +182,21 @@ std::vector<std::string> Probe::verdict(const Bounds& b, const std::vector<std::
     return out;
 }
 
-void Probe::printTable(std::FILE* out) const
+void Probe::printHeader(std::FILE* out)
 {
     std::fprintf(out, "%8s %7s %6s %8s %8s %8s %8s %10s %5s %6s %7s %6s %6s %7s\n", "sim_min", "wall_s", "scale", "rss_MiB",
                  "heap_MiB", "lat_max", "lat_p99", "samples", "lost", "linkerr", "retries", "jobs", "failed", "frames");
-    for (const Figures& f : m_periods)
-        std::fprintf(out, "%8.1f %7.1f %6.1f %8.1f %8.1f %8.1f %8.1f %10llu %5llu %6llu %7llu %6llu %6llu %7llu\n", f.simS / 60,
-                     f.wallS, f.wallS > 0 ? f.simS / f.wallS : 0.0, mb(f.rssKb), mb(f.heapKb), f.latencyMaxMs, f.latencyP99Ms,
-                     static_cast<unsigned long long>(f.samples), static_cast<unsigned long long>(f.lost()),
-                     static_cast<unsigned long long>(f.linkErrors), static_cast<unsigned long long>(f.retransmits),
-                     static_cast<unsigned long long>(f.jobsDone), static_cast<unsigned long long>(f.jobsFailed),
-                     static_cast<unsigned long long>(f.plotFrames));
-    std::fprintf(out, "(latency in ms, of the period ending on the row; counters are totals)\n");
+}
+
+void Probe::printRow(std::FILE* out, const Figures& f)
+{
+    // Latency is of the period ending on the row; the counters are totals.
+    std::fprintf(out, "%8.1f %7.1f %6.1f %8.1f %8.1f %8.1f %8.1f %10llu %5llu %6llu %7llu %6llu %6llu %7llu\n", f.simS / 60, f.wallS,
+                 f.wallS > 0 ? f.simS / f.wallS : 0.0, mb(f.rssKb), mb(f.heapKb), f.latencyMaxMs, f.latencyP99Ms,
+                 static_cast<unsigned long long>(f.samples), static_cast<unsigned long long>(f.lost()),
+                 static_cast<unsigned long long>(f.linkErrors), static_cast<unsigned long long>(f.retransmits),
+                 static_cast<unsigned long long>(f.jobsDone), static_cast<unsigned long long>(f.jobsFailed),
+                 static_cast<unsigned long long>(f.plotFrames));
 }
 
 QJsonObject Probe::json(const Bounds& b, const std::vector<std::string>& kinds) const
@@ -209,6 +215,7 @@ QJsonObject Probe::json(const Bounds& b, const std::vector<std::string>& kinds) 
                                    {QStringLiteral("hub_lost_samples"), static_cast<qint64>(f.hubLostSamples)},
                                    {QStringLiteral("dropped_batches"), static_cast<qint64>(f.droppedBatches)},
                                    {QStringLiteral("link_errors"), static_cast<qint64>(f.linkErrors)},
+                                   {QStringLiteral("jogs_expired"), static_cast<qint64>(f.jogExpired)},
                                    {QStringLiteral("retransmits"), static_cast<qint64>(f.retransmits)},
                                    {QStringLiteral("late_replies"), static_cast<qint64>(f.lateReplies)},
                                    {QStringLiteral("jobs_done"), static_cast<qint64>(f.jobsDone)},

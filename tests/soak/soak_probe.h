@@ -27,6 +27,7 @@ struct Figures {
     quint64 droppedBatches = 0;            ///< batches the firmware dropped because its output backed up
     quint64 linkErrors = 0;                ///< see Probe::linkErrors
     quint64 retransmits = 0, lateReplies = 0;
+    quint64 jogExpired = 0;                ///< JogExpired events (see Bounds::jogsCanHold)
     quint64 jobsDone = 0, jobsFailed = 0;
     quint64 plotFrames = 0;
     std::size_t storeBytes = 0;            ///< the hub's stores of what the plots want
@@ -42,6 +43,11 @@ struct Bounds {
     double growthPercent = 5;  ///< ... or this share of the half-way RSS, whichever is larger
     bool judgeGrowth = true;
     bool everyKind = true;     ///< every kind of job finished at least once
+    /// The device's jog watchdog (200 ms of device time) outlasts the client's renewal
+    /// (50 ms of wall time) times the time scale, i.e. the scale is at most 4: only then is
+    /// an expired jog a fault. Above it the simulator judges the host's renewals on its own
+    /// fast clock and every held jog expires between them (reported, not judged).
+    bool jogsCanHold = true;
 };
 
 class Probe : public QObject {
@@ -62,12 +68,14 @@ public:
     quint64 latencyTicks() const { return m_allLate.size(); }
 
     /// Link trouble of one station: damaged frames either way, bytes the decoders dropped,
-    /// requests that timed out, linkError and requestFailed signals, expired jogs and drops.
+    /// requests that timed out, linkError and requestFailed signals, and the link dropping.
     static quint64 linkErrors(Station& s);
 
     /// Everything that fails the soak, one sentence each; empty = passed.
     std::vector<std::string> verdict(const Bounds& bounds, const std::vector<std::string>& kinds) const;
-    void printTable(std::FILE* out) const;
+    /// The table, a row per snapshot: printHeader() once, then printRow() as they are taken.
+    static void printHeader(std::FILE* out);
+    static void printRow(std::FILE* out, const Figures& f);
     QJsonObject json(const Bounds& bounds, const std::vector<std::string>& kinds) const;
 
 private:

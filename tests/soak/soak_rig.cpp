@@ -26,10 +26,9 @@ Station::Station(proto::DeviceKind kind, double timeScale)
         note("request failed: " + msg::debugString(e.message));
     });
     connect(&client, &dev::Instrument::eventReceived, this, [this](const dev::DeviceEvent& e) {
-        if (e.kind == proto::EventKind::JogExpired) {
+        // Counted, not quoted: above 4x every held jog expires (Bounds::jogsCanHold).
+        if (e.kind == proto::EventKind::JogExpired)
             ++trouble.jogExpired;
-            note("jog expired: " + e.text.toStdString());
-        }
     });
     connect(&client, &dev::Instrument::stateChanged, this, [this](dev::LinkState s) {
         if (s == dev::LinkState::Lost || s == dev::LinkState::Disconnected) {
