@@ -142,7 +142,8 @@ int main(int argc, char** argv)
             analyzerWork.finishUp();
             stageWork.finishUp();
         }
-        if (stopping && analyzerWork.idle() && stageWork.idle())
+        // Idle before the time is up: both links went (the works start nothing without one).
+        if (analyzerWork.idle() && stageWork.idle())
             app.quit();
         if (wall.elapsed() > wallLimitS * 1000) {
             hung = true;
