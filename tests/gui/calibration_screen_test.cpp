@@ -87,13 +87,7 @@ protected:
         const QRect r(widget->mapTo(w.get(), QPoint(0, 0)), widget->size());
         return w->rect().contains(r);
     }
-    /// BP_GUI_SHOTS=DIR keeps a picture of the window for a person to look at.
-    void keepPicture(const char* name)
-    {
-        const QString folder = qEnvironmentVariable("BP_GUI_SHOTS");
-        if (!folder.isEmpty())
-            w->grab().save(QDir(folder).filePath(QLatin1String(name)));
-    }
+    void keepPicture(const char* name) { guitest::keepPicture(w.get(), QLatin1String(name)); }
     bool waitFinished()
     {
         return waitFor([&] { return screen->runner() && screen->runner()->state() == jobs::AccuracyRunner::State::Finished; }, 60000);

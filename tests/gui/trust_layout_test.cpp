@@ -92,6 +92,7 @@ TEST(TrustLayout, TheRecipeEditorIsWholeAtLaptopAndDesktopSizesInEnglishAndChine
             w->platesScreen()->showTab(QStringLiteral("recipe"));
             guitest::pump(50);
             const QString where = QStringLiteral("%1 %2×%3: ").arg(lang).arg(size.width()).arg(size.height());
+            guitest::keepPicture(w.get(), QStringLiteral("recipe-%1-%2.png").arg(lang).arg(size.width()));
             for (const QString& c : cutIn(w->platesScreen()->recipeEditor()))
                 failures << where + c;
             EXPECT_LE(w->width(), size.width()) << where.toStdString() << "the window grew";
