@@ -1,4 +1,5 @@
 #include "widgets/connection_bar.h"
+#include "widgets/common/elided_label.h"
 
 #include "device/link/serial_transport.h"
 #include "widgets/status_lamp.h"
@@ -52,9 +53,10 @@ ConnectionBar::ConnectionBar(const QString& title, QWidget* parent) : QWidget(pa
     m_profile->addItem(QString(), QString());
     m_profile->addItem(QString(), kOpenProfile);
     m_connect = new QPushButton(this);
-    m_identity = new QLabel(this);
+    // Whatever room is left: a long identity ends in "…", the whole of it in the tooltip.
+    m_identity = new ElidedLabel(this);
     m_identity->setStyleSheet(QStringLiteral("color:#444;"));
-    m_identity->setMinimumWidth(40);
+    m_identity->setMinimumWidth(40);  // a few letters of the state at least; the status bar has it all
     l->addWidget(m_lamp);
     l->addWidget(m_title);
     l->addWidget(m_source);
@@ -138,8 +140,8 @@ void ConnectionBar::updateTexts()
                                    "output, status rate). Default wiring: each axis on the GRBL axis of its letter, the "
                                    "analyzer's pump on A at 1 µL per mm, no trigger")
                               : tr("Machine profile %1").arg(profile));
-    m_identity->setText(m_activity.isEmpty() ? QStringLiteral("%1 — %2").arg(words::term(dev::linkStateTerm(m_state)), m_identityText) : m_activity);
-    m_identity->setToolTip(m_identity->text());
+    m_identity->setFullText(m_activity.isEmpty() ? QStringLiteral("%1 — %2").arg(words::term(dev::linkStateTerm(m_state)), m_identityText)
+                                                 : m_activity);
 }
 
 void ConnectionBar::refreshPorts()

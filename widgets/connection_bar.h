@@ -15,6 +15,7 @@ class QToolButton;
 
 namespace ui {
 
+class ElidedLabel;
 class StatusLamp;
 
 struct ConnectionChoice {
@@ -71,7 +72,7 @@ private:
     QComboBox* m_baud;
     QComboBox* m_profile;
     QPushButton* m_connect;
-    QLabel* m_identity;
+    ElidedLabel* m_identity;
     dev::LinkState m_state = dev::LinkState::Disconnected;
     QString m_identityText, m_activity;
     int m_lastProfile = 0;

@@ -283,8 +283,9 @@ void JogScreen::goTo(int axis, double target)
     const auto& d = id.axes[axis];
     const double from = axis < m_client->status().axes.size() ? m_client->status().axes[axis].commanded : 0;
     const double travel = d.travelMax - d.travelMin;
-    if (std::abs(target - from) > kFarMoveShare * travel
-        && !confirm(tr("Move %1 from %2 to %3 %4? That is %5 %4.")
+    const Confirm& ask = m_confirmLongMove ? m_confirmLongMove : m_confirm;
+    if (std::abs(target - from) > kFarMoveShare * travel && ask
+        && !ask(tr("Move %1 from %2 to %3 %4? That is %5 %4.")
                         .arg(d.letter)
                         .arg(from, 0, 'f', 3)
                         .arg(target, 0, 'f', 3)

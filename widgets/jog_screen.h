@@ -30,6 +30,9 @@ public:
 
     JogScreen(dev::Instrument* client, QWidget* parent = nullptr);
     void setConfirm(Confirm confirm) { m_confirm = std::move(confirm); }
+    /// Asked before a long move instead of Confirm (app/ offers "don't ask again this session"
+    /// there); unset: Confirm asks. Destructive questions (homing with liquid) always go to Confirm.
+    void setConfirmLongMove(Confirm confirm) { m_confirmLongMove = std::move(confirm); }
     /// Jog speed as a share of each axis' maximum, 0.01–1.
     double speedFraction() const;
     void setSpeedFraction(double f);
@@ -71,6 +74,7 @@ private:
 
     dev::Instrument* m_client;
     Confirm m_confirm;
+    Confirm m_confirmLongMove;
     QLabel* m_title;
     QLabel* m_state;
     QPushButton* m_homeAll;

@@ -3,6 +3,7 @@
 #include "widgets/retranslator.h"
 
 #include "instrument_session.h"
+#include "long_move_question.h"
 #include "motion_screens.h"
 #include "plates_wiring.h"
 #include "api_panel.h"
@@ -75,6 +76,7 @@ public:
 MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMainWindow(parent), m_options(options)
 {
     setWindowTitle(tr("BenchPilot"));
+    m_longMoves = new LongMoveQuestion(this, m_options.answer);
     ui::InputPolicy::install();  // the wheel turns only a focused spin box or combo, on every screen
     m_sessions[0] = new InstrumentSession(proto::DeviceKind::Analyzer, tr("Analyzer"), this);
     m_sessions[1] = new InstrumentSession(proto::DeviceKind::Stage, tr("Stage"), this);
@@ -133,8 +135,10 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     m_jogTabs = new QTabWidget;
     for (int i = 0; i < 2; ++i) {
         m_jog[i] = new ui::JogScreen(m_api->screenInstrument(i));
-        if (m_options.confirmDialogs)
+        if (m_options.confirmDialogs) {
             m_jog[i]->setConfirm([this](const QString& q) { return confirm(q); });
+            m_jog[i]->setConfirmLongMove([this](const QString& q) { return m_longMoves->ask(q); });
+        }
         connect(m_jog[i], &ui::JogScreen::problem, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); });
         m_jog[i]->setTelemetry(m_hub, i);
         m_jogTabs->addTab(m_jog[i], m_sessions[i]->name());
@@ -166,6 +170,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
         MotionScreens::Hooks hooks;
         if (m_options.confirmDialogs) {
             hooks.confirm = [this](const QString& q) { return confirm(q); };
+            hooks.confirmLongMove = [this](const QString& q) { return m_longMoves->ask(q); };
             hooks.chooseFile = [this](const QString& title, const QString& filter, bool save) {
                 const QString dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
                 return save ? QFileDialog::getSaveFileName(this, title, dir, filter) : QFileDialog::getOpenFileName(this, title, dir, filter);
@@ -191,8 +196,10 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
             return QFileDialog::getSaveFileName(this, title, docs, filter);
         return QFileDialog::getExistingDirectory(this, title, filter.isEmpty() ? docs : filter);
     });
-    if (m_options.confirmDialogs)
+    if (m_options.confirmDialogs) {
         m_scan->setConfirm([this](const QString& q) { return confirm(q); });
+        m_scan->setConfirmLongMove([this](const QString& q) { return m_longMoves->ask(q); });
+    }
     connect(m_scan, &ui::ScanScreen::problem, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); });
     connect(m_scan, &ui::ScanScreen::notice, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Info, m); });
     addScreen(QStringLiteral("scan"), tr("Scan"), m_scan);

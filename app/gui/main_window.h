@@ -41,6 +41,7 @@ class QMenu;
 namespace app {
 
 class InstrumentSession;
+class LongMoveQuestion;
 class MotionScreens;
 
 struct MainWindowOptions {
@@ -116,6 +117,7 @@ private:
     bool confirmDisconnect(int index);
 
     MainWindowOptions m_options;
+    LongMoveQuestion* m_longMoves;  ///< the long-move question, waivable for this session only
     InstrumentSession* m_sessions[2];
     ApiWiring* m_api;
     tele::TelemetryHub* m_hub;  ///< every instrument's telemetry, for the plots

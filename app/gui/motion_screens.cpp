@@ -33,6 +33,8 @@ MotionScreens::MotionScreens(InstrumentSession* const sessions[2], tele::Telemet
     m_patterns = new ui::PatternScreen(instruments, hub);
     if (hooks.confirm)
         m_patterns->setConfirm(hooks.confirm);
+    if (hooks.confirmLongMove)
+        m_patterns->setConfirmLongMove(hooks.confirmLongMove);
     if (hooks.chooseFile)
         m_patterns->setFileChooser(hooks.chooseFile);
     if (hooks.warn)

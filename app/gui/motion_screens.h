@@ -33,6 +33,7 @@ class MotionScreens : public QObject {
 public:
     struct Hooks {
         std::function<bool(const QString& question)> confirm;  ///< empty: go ahead without asking
+        std::function<bool(const QString& question)> confirmLongMove;  ///< may be waived for the session; empty: confirm asks
         std::function<void(const QString& message)> warn;      ///< a banner
         std::function<QString(const QString& title, const QString& filter, bool save)> chooseFile;  ///< empty: defaults
         /// The instrument the screens drive (gated while a script has control, api_wiring.h); empty: the session's.

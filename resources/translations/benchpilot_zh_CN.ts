@@ -771,6 +771,21 @@ Take control back? The script&apos;s next call is refused and its jogs stop; a j
     </message>
 </context>
 <context>
+    <name>app::LongMoveQuestion</name>
+    <message>
+        <source>Confirm move</source>
+        <translation>确认移动</translation>
+    </message>
+    <message>
+        <source>Don&apos;t ask again this session</source>
+        <translation>本次运行中不再询问</translation>
+    </message>
+    <message>
+        <source>Long moves go ahead without this question until BenchPilot is closed. Aborting, disconnecting during a run and homing with liquid still ask.</source>
+        <translation>关闭 BenchPilot 之前，长距离移动不再询问而直接执行。中止、运行中断开连接以及柱塞中有液体时回零仍会询问。</translation>
+    </message>
+</context>
+<context>
     <name>app::MainWindow</name>
     <message>
         <source>BenchPilot</source>

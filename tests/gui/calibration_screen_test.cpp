@@ -87,13 +87,7 @@ protected:
         const QRect r(widget->mapTo(w.get(), QPoint(0, 0)), widget->size());
         return w->rect().contains(r);
     }
-    /// BP_GUI_SHOTS=DIR keeps a picture of the window for a person to look at.
-    void keepPicture(const char* name)
-    {
-        const QString folder = qEnvironmentVariable("BP_GUI_SHOTS");
-        if (!folder.isEmpty())
-            w->grab().save(QDir(folder).filePath(QLatin1String(name)));
-    }
+    void keepPicture(const char* name) { guitest::keepPicture(w.get(), QLatin1String(name)); }
     bool waitFinished()
     {
         return waitFor([&] { return screen->runner() && screen->runner()->state() == jobs::AccuracyRunner::State::Finished; }, 60000);
@@ -195,6 +189,28 @@ TEST_F(CalibrationScreenTest, AManualTestAsksAtEachStopAndTakesWhatIsTyped)
     }
     ASSERT_TRUE(waitFinished());
     EXPECT_EQ(screen->latest()->reference, "manual");
+}
+
+// Issue 16 item 5: a file opened while a test runs would replace the test that runs.
+// Open… is held back, saying why, until the test has ended; a manual test waits at its
+// first stop, so the hold is seen while the runner is certainly active.
+TEST_F(CalibrationScreenTest, OpenIsHeldBackWhileATestRuns)
+{
+    ASSERT_TRUE(homedStage());
+    auto t = smallTest();
+    t.targetsMm = {30, 60};
+    screen->form()->setTest(t);
+    screen->setSource(QStringLiteral("manual"));
+    QPushButton* open = guitest::button(screen, QObject::tr("Open…"));
+    ASSERT_NE(open, nullptr);
+    EXPECT_TRUE(open->isEnabled());
+    ASSERT_TRUE(screen->run());
+    ASSERT_TRUE(waitFor([&] { return child<QLabel>("calibrationManualPrompt")->isVisible(); }, 20000));
+    EXPECT_FALSE(open->isEnabled()) << "Open… offered while a test runs";
+    EXPECT_FALSE(open->toolTip().isEmpty()) << "held back without saying why";
+    screen->abort();
+    ASSERT_TRUE(waitFor([&] { return open->isEnabled(); }, 10000)) << "Open… still held after the abort";
+    EXPECT_TRUE(open->toolTip().isEmpty());
 }
 
 } // namespace

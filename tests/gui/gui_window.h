@@ -5,6 +5,7 @@
 #include "app/gui/main_window.h"
 #include "gui_wait.h"
 
+#include <QDir>
 #include <QPushButton>
 #include <QSize>
 
@@ -27,6 +28,14 @@ inline QPushButton* button(QWidget* root, const QString& text)
         if (b->text() == text)
             return b;
     return nullptr;
+}
+
+/// BP_GUI_SHOTS=DIR keeps a picture of `window` as DIR/`name` for a person to look at.
+inline void keepPicture(QWidget* window, const QString& name)
+{
+    const QString folder = qEnvironmentVariable("BP_GUI_SHOTS");
+    if (!folder.isEmpty())
+        window->grab().save(QDir(folder).filePath(name));
 }
 
 /// Shown at `size` with both instruments' links ready; nullptr if they never are.

@@ -191,3 +191,19 @@ TEST_F(PatternRunControls, TheButtonAfterALostLinkSaysTheWordTheMessageUses)
     EXPECT_TRUE(said.contains(QStringLiteral("press ") + pauseButton->text())) << said.toStdString() << " / button "
                                                                                 << pauseButton->text().toStdString();
 }
+
+// Issue 16 item 5: a pattern loaded while one runs would replace the path on screen with
+// one the machine is not following. Load… is held back, saying why, until the run ends.
+TEST_F(PatternRunControls, LoadIsHeldBackWhileAPatternRuns)
+{
+    QPushButton* load = guitest::button(p, QStringLiteral("Load…"));
+    ASSERT_NE(load, nullptr);
+    EXPECT_TRUE(load->isEnabled());
+    QTest::mouseClick(runButton, Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return runningPast(0.5); }, 10000)) << p->statusText().toStdString();
+    EXPECT_FALSE(load->isEnabled()) << "Load… offered while a pattern runs";
+    EXPECT_FALSE(load->toolTip().isEmpty()) << "held back without saying why";
+    QTest::mouseClick(abortButton, Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return runner()->state() == State::Aborted; }, 5000)) << p->statusText().toStdString();
+    ASSERT_TRUE(waitFor([&] { return load->isEnabled(); }, 3000)) << "Load… still held after the run";
+}

@@ -8,14 +8,15 @@
 #include "device/link/simulated_link.h"
 #include "gui_wait.h"
 #include "gui_window.h"
+#include "widgets/common/number_field.h"
 #include "widgets/plates/calibration_panel.h"
 #include "widgets/plates/plate_map.h"
 #include "widgets/plates/plates_screen.h"
 #include "widgets/plates/recipe_editor.h"
 #include "widgets/plates/run_panel.h"
+#include "widgets/plates/step_form.h"
 
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMouseEvent>
@@ -169,18 +170,20 @@ TEST_F(PlatesScreenTest, StepEditsUndoRedoSaveAndOpen)
     ui::RecipeEditor* ed = screen->recipeEditor();
     ASSERT_EQ(ed->recipe().steps.size(), 1u);
     EXPECT_EQ(ed->recipe().steps[0].wells, (std::vector<std::string>{"C1:C12"}));
-    // The form's volume field: typed, one undoable change.
-    QDoubleSpinBox* volume = nullptr;
-    for (auto* s : ed->findChildren<QDoubleSpinBox*>())
-        if (s->suffix() == QStringLiteral(" µL") && s->isVisible())
-            volume = s;
+    // The form's volume field (10 µL as the selection made it): typed twice, one undoable change.
+    ui::NumberField* volume = nullptr;
+    for (auto* f : ed->findChild<ui::StepForm*>()->findChildren<ui::NumberField*>())
+        if (f->isVisible() && f->text() == QStringLiteral("10"))
+            volume = f;
     ASSERT_NE(volume, nullptr);
-    volume->setValue(25);
-    volume->setValue(30);
+    for (const char* typed : {"25", "30"}) {
+        volume->setText(QLatin1String(typed));
+        emit volume->editingFinished();
+    }
     EXPECT_DOUBLE_EQ(ed->recipe().steps[0].volumeUl, 30);
     ed->undoStack()->undo();
     EXPECT_DOUBLE_EQ(ed->recipe().steps[0].volumeUl, 10) << "both changes of the field were one command";
-    EXPECT_DOUBLE_EQ(volume->value(), 10);
+    EXPECT_EQ(volume->value(), std::optional<double>(10));
     ed->undoStack()->redo();
     EXPECT_DOUBLE_EQ(ed->recipe().steps[0].volumeUl, 30);
     // An unknown well in the wells field: the problem names it and Run is off.

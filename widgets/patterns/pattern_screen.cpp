@@ -22,6 +22,7 @@
 #include <QStandardPaths>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ui {
@@ -87,7 +88,8 @@ PatternScreen::PatternScreen(QVector<PatternInstrument> instruments, tele::Telem
     m_summary->setTextFormat(Qt::RichText);
     left->addWidget(m_summary);
     auto* files = new QHBoxLayout;
-    auto* load = new QPushButton(tr("Load…"), leftHost);
+    m_load = new QPushButton(tr("Load…"), leftHost);
+    auto* load = m_load;
     auto* save = new QPushButton(tr("Save…"), leftHost);
     m_export = new QPushButton(tr("Export run…"), leftHost);
     m_export->setToolTip(tr("The last run's samples as CSV: commanded and measured XY, path distance, contour error"));
@@ -356,6 +358,10 @@ void PatternScreen::updateButtons()
     m_abort->setEnabled(mine && (busy || st == PatternRunner::State::Interrupted));
     m_export->setEnabled(m_runOn >= 0 && !m_instruments[m_runOn].runner->samples().empty());
     m_instrumentBox->setEnabled(!busy);
+    // The pattern on screen is the one that runs (issue 16 item 5): no other is loaded over it.
+    const bool anyBusy = std::any_of(m_instruments.begin(), m_instruments.end(), [](const PatternInstrument& i) { return i.runner->busy(); });
+    m_load->setEnabled(!anyBusy);
+    m_load->setToolTip(anyBusy ? tr("A pattern is running: another can be loaded once it has ended.") : QString());
 }
 
 bool PatternScreen::run()
@@ -378,7 +384,8 @@ bool PatternScreen::run()
     const double far = r->approachDistanceMm(m_path);
     if (far > kFarMoveShare * travel) {
         const auto start = m_path.front().start;
-        if (!confirm(tr("Move %1 %2 mm to the pattern's start (%3, %4) and run %5 segments (%6 mm)?")
+        const Confirm& ask = m_confirmLongMove ? m_confirmLongMove : m_confirm;
+        if (ask && !ask(tr("Move %1 %2 mm to the pattern's start (%3, %4) and run %5 segments (%6 mm)?")
                          .arg(cur().name)
                          .arg(far, 0, 'f', 1)
                          .arg(start.x, 0, 'f', 3)

@@ -53,6 +53,9 @@ public:
     PatternScreen(QVector<PatternInstrument> instruments, tele::TelemetryHub* hub, QWidget* parent = nullptr);
     ~PatternScreen() override;
     void setConfirm(Confirm c) { m_confirm = std::move(c); }
+    /// Asked before the long approach instead of Confirm (app/ offers "don't ask again this
+    /// session" there); unset: Confirm asks.
+    void setConfirmLongMove(Confirm c) { m_confirmLongMove = std::move(c); }
     void setFileChooser(FileChooser c) { m_chooser = std::move(c); }
 
     void setInstrument(int index);
@@ -101,6 +104,7 @@ private:
     int m_current = 0;
     int m_runOn = -1;              ///< instrument the last run was started on
     Confirm m_confirm;
+    Confirm m_confirmLongMove;
     FileChooser m_chooser;
     std::vector<motion::path::Segment> m_path;
     double m_lastSampleS = -1;
@@ -118,6 +122,7 @@ private:
     QPushButton* m_pause;
     QPushButton* m_abort;
     QPushButton* m_export;
+    QPushButton* m_load;
     QList<QMetaObject::Connection> m_runnerConnections;
 };
 

@@ -96,8 +96,10 @@ PlatesScreen::PlatesScreen(dev::Instrument* analyzer, QWidget* parent)
     m_tabs->addTab(scrolled(m_run), tr("Run"));
     split->addWidget(left);
     split->addWidget(m_tabs);
-    split->setStretchFactor(0, 3);
-    split->setStretchFactor(1, 2);
+    // Even halves: at 3:2 the recipe tab got about 400 px at 1366 and cut its own table
+    // and buttons, while the plate map draws to scale in whatever room it has.
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 1);
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(0, 0, 0, 0);
     v->addWidget(split);

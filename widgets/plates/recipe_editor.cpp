@@ -79,16 +79,19 @@ RecipeEditor::RecipeEditor(QWidget* parent) : QWidget(parent), m_undo(new QUndoS
     saveB->setShortcut(QKeySequence::Save);
     undoB->setShortcut(QKeySequence::Undo);
     redoB->setShortcut(QKeySequence::Redo);
+    // Two rows, so the panel fits the narrow tab it gets at 1366 px in every language:
+    // the file and undo buttons, then the name with the whole width to show it.
     for (auto* b : {newB, openB, saveB, saveAsB})
         bar->addWidget(b);
-    bar->addSpacing(12);
+    bar->addStretch();
     bar->addWidget(undoB);
     bar->addWidget(redoB);
-    bar->addSpacing(12);
-    bar->addWidget(new QLabel(tr("Name"), this));
-    m_name = new QLineEdit(this);
-    bar->addWidget(m_name, 1);
     v->addLayout(bar);
+    auto* nameRow = new QHBoxLayout;
+    nameRow->addWidget(new QLabel(tr("Name"), this));
+    m_name = new QLineEdit(this);
+    nameRow->addWidget(m_name, 1);
+    v->addLayout(nameRow);
 
     auto* platesBox = new QGroupBox(tr("Plates on the deck"), this);
     auto* pv = new QVBoxLayout(platesBox);
@@ -108,8 +111,12 @@ RecipeEditor::RecipeEditor(QWidget* parent) : QWidget(parent), m_undo(new QUndoS
     pbar->addWidget(addPlate);
     pbar->addWidget(removePlate);
     pbar->addStretch();
-    pbar->addWidget(importB);
     pv->addLayout(pbar);
+    // A row of its own: beside Add and Remove it was cut to "Import Opentrons labw…".
+    auto* ibar = new QHBoxLayout;
+    ibar->addWidget(importB);
+    ibar->addStretch();
+    pv->addLayout(ibar);
     v->addWidget(platesBox);
 
     auto* stepsBox = new QGroupBox(tr("Steps"), this);
@@ -129,8 +136,11 @@ RecipeEditor::RecipeEditor(QWidget* parent) : QWidget(parent), m_undo(new QUndoS
     add->setMenu(menu);
     auto* dup = new QPushButton(tr("Duplicate"), stepsBox);
     auto* remove = new QPushButton(tr("Remove"), stepsBox);
-    auto* up = new QPushButton(tr("▲"), stepsBox);
-    auto* down = new QPushButton(tr("▼"), stepsBox);
+    // Tool buttons: an arrow needs no push button's minimum width (the "▼" was cut).
+    auto* up = new QToolButton(stepsBox);
+    auto* down = new QToolButton(stepsBox);
+    up->setText(tr("▲"));
+    down->setText(tr("▼"));
     up->setToolTip(tr("Move the step up"));
     down->setToolTip(tr("Move the step down"));
     for (QWidget* w : {static_cast<QWidget*>(add), static_cast<QWidget*>(dup), static_cast<QWidget*>(remove), static_cast<QWidget*>(up),
@@ -224,8 +234,8 @@ RecipeEditor::RecipeEditor(QWidget* parent) : QWidget(parent), m_undo(new QUndoS
         edit(tr("remove step %1").arg(i + 1), [i](plates::Recipe& r) { r.steps.erase(r.steps.begin() + i); });
         setCurrentStep(std::min(i, static_cast<int>(m_recipe.steps.size()) - 1));
     });
-    connect(up, &QPushButton::clicked, this, [this] { moveStep(-1); });
-    connect(down, &QPushButton::clicked, this, [this] { moveStep(+1); });
+    connect(up, &QToolButton::clicked, this, [this] { moveStep(-1); });
+    connect(down, &QToolButton::clicked, this, [this] { moveStep(+1); });
     connect(m_problems, &QListWidget::currentRowChanged, this, [this](int row) {
         if (row >= 0 && row < m_problemSteps.size() && m_problemSteps[row] >= 0)
             setCurrentStep(m_problemSteps[row]);

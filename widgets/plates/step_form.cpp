@@ -1,14 +1,16 @@
 #include "widgets/plates/step_form.h"
 #include "widgets/plates/step_texts.h"
+#include "widgets/common/number_field.h"
 
 #include <QCheckBox>
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
-#include <QSpinBox>
+
+#include <utility>
 
 namespace ui {
 
@@ -31,15 +33,22 @@ bool takes(StepType t, const char* field)
     return false;
 }
 
-QDoubleSpinBox* spin(QWidget* parent, double max, const QString& suffix, int decimals = 2)
+/// A number field for a step, with its unit after it in `row` (a spin box clamped a
+/// file's 900 µL/s to 500 without a word; this shows 900, marked invalid).
+NumberField* stepNumber(QWidget* row, double min, double max, const QString& name, const QString& unit)
 {
-    auto* s = new QDoubleSpinBox(parent);
-    s->setRange(0, max);
-    s->setDecimals(decimals);
-    s->setSuffix(suffix);
-    s->setKeyboardTracking(false);
-    s->setMaximumWidth(160);
-    return s;
+    auto* lay = new QHBoxLayout(row);
+    lay->setContentsMargins(0, 0, 0, 0);
+    auto* f = new NumberField(row);
+    f->setRange(min, max);
+    f->setFieldName(name);
+    f->setDisplay('g', 10);  // every digit the file has: a rounded display would be written back
+    f->setMaximumWidth(120);
+    lay->addWidget(f);
+    if (!unit.isEmpty())
+        lay->addWidget(new QLabel(unit, row));
+    lay->addStretch();
+    return f;
 }
 } // namespace
 
@@ -53,6 +62,9 @@ void StepForm::build()
 {
     m_form = new QFormLayout(this);
     m_form->setFieldGrowthPolicy(QFormLayout::ExpandingFieldsGrow);
+    // In the narrow tab a long label ("Touch-off after each well", or its translation)
+    // puts its field on the next line rather than pushing the form wider than the tab.
+    m_form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     m_type = new QComboBox(this);
     for (int i = 0; i < plates::kStepTypeCount; ++i)
         m_type->addItem(stepTypeTitle(static_cast<StepType>(i)), i);  // the id is the item data
@@ -62,36 +74,42 @@ void StepForm::build()
     m_wells->setToolTip(tr("Wells: a well (A1), a range (A1:H1), \"row B\", \"column 3\", \"all\", or several separated by commas.\n"
                            "Select wells on the plate map and press \"Use selection\" to fill this in."));
     m_station = new QComboBox(this);
-    m_volume = spin(this, 100000, tr(" µL"));
-    m_volume->setToolTip(tr("Per well (aspirate, dispense), per stroke (mix, wash), or the air gap"));
+    m_volumeRow = new QWidget(this);
+    m_volume = stepNumber(m_volumeRow, 0, 100000, tr("Volume"), tr(" µL").trimmed());
+    m_volume->setHelp(tr("Per well (aspirate, dispense), per stroke (mix, wash), or the air gap"));
     m_speedRow = new QWidget(this);
     auto* sr = new QHBoxLayout(m_speedRow);
     sr->setContentsMargins(0, 0, 0, 0);
     m_speedSet = new QCheckBox(tr("set"), m_speedRow);
-    m_speed = spin(m_speedRow, 500, tr(" µL/s"), 1);
-    m_speed->setMinimum(0.1);
     sr->addWidget(m_speedSet);
-    sr->addWidget(m_speed);
-    sr->addStretch();
-    m_cycles = new QSpinBox(this);
+    auto* speedHost = new QWidget(m_speedRow);
+    m_speed = stepNumber(speedHost, 0.1, 500, tr("Pump speed"), tr(" µL/s").trimmed());
+    sr->addWidget(speedHost, 1);
+    m_cycles = new NumberField(this);
+    m_cycles->setInteger(true);
     m_cycles->setRange(1, plates::kMaxCycles);
-    m_cycles->setKeyboardTracking(false);
-    m_seconds = spin(this, plates::kMaxWaitS, tr(" s"), 1);
-    m_offset = spin(this, 50, tr(" mm"));
-    m_offset->setToolTip(tr("Touch-off: how far from the well's centre toward its +x wall the tip goes"));
+    m_cycles->setFieldName(tr("Cycles"));
+    m_cycles->setMaximumWidth(120);
+    m_secondsRow = new QWidget(this);
+    m_seconds = stepNumber(m_secondsRow, 0, plates::kMaxWaitS, tr("Wait"), tr(" s").trimmed());
+    m_offsetRow = new QWidget(this);
+    m_offset = stepNumber(m_offsetRow, 0, 50, tr("Touch-off"), tr(" mm").trimmed());
+    m_offset->setHelp(tr("Touch-off: how far from the well's centre toward its +x wall the tip goes"));
     m_sourceRow = new QWidget(this);
-    auto* src = new QHBoxLayout(m_sourceRow);
+    // Two lines (a plate and its well, or a station): on one it was wider than the tab.
+    auto* src = new QGridLayout(m_sourceRow);
     src->setContentsMargins(0, 0, 0, 0);
     m_sourcePlate = new QComboBox(m_sourceRow);
     m_sourceWell = new QLineEdit(m_sourceRow);
     m_sourceWell->setPlaceholderText(tr("well"));
     m_sourceWell->setMaximumWidth(70);
     m_sourceStation = new QComboBox(m_sourceRow);
-    src->addWidget(new QLabel(tr("plate"), m_sourceRow));
-    src->addWidget(m_sourcePlate, 1);
-    src->addWidget(m_sourceWell);
-    src->addWidget(new QLabel(tr("or station"), m_sourceRow));
-    src->addWidget(m_sourceStation, 1);
+    src->addWidget(new QLabel(tr("plate"), m_sourceRow), 0, 0);
+    src->addWidget(m_sourcePlate, 0, 1);
+    src->addWidget(m_sourceWell, 0, 2);
+    src->addWidget(new QLabel(tr("or station"), m_sourceRow), 1, 0);
+    src->addWidget(m_sourceStation, 1, 1);
+    src->setColumnStretch(1, 1);
     m_sourceRow->setToolTip(tr("Refill from here before each round: a transfer bigger than the syringe runs in several rounds"));
     m_note = new QLineEdit(this);
 
@@ -99,11 +117,11 @@ void StepForm::build()
     m_form->addRow(tr("Plate"), m_plate);
     m_form->addRow(tr("Wells"), m_wells);
     m_form->addRow(tr("Station"), m_station);
-    m_form->addRow(tr("Volume"), m_volume);
+    m_form->addRow(tr("Volume"), m_volumeRow);
     m_form->addRow(tr("Pump speed"), m_speedRow);
     m_form->addRow(tr("Cycles"), m_cycles);
-    m_form->addRow(tr("Wait"), m_seconds);
-    m_form->addRow(tr("Touch-off"), m_offset);
+    m_form->addRow(tr("Wait"), m_secondsRow);
+    m_form->addRow(tr("Touch-off"), m_offsetRow);
     m_form->addRow(tr("Source"), m_sourceRow);
     m_form->addRow(tr("Note"), m_note);
 
@@ -127,28 +145,29 @@ void StepForm::build()
         m_step.station = m_station->currentData().toString().toStdString();
         changed(QStringLiteral("station"));
     });
-    connect(m_volume, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) {
-        m_step.volumeUl = v;
-        changed(QStringLiteral("volume"));
-    });
-    auto speedChanged = [this] {
-        m_speed->setEnabled(m_speedSet->isChecked());
-        m_step.speedUlS = m_speedSet->isChecked() ? std::optional<double>(m_speed->value()) : std::nullopt;
-        changed(QStringLiteral("speed"));
+    // A number changes the step once it is finished and valid; until then the step keeps
+    // what it had (the file's value), and only a changed value is an edit.
+    auto number = [this](NumberField* f, const char* field, auto set) {
+        connect(f, &QLineEdit::editingFinished, this, [this, f, field, set] {
+            if (const auto v = f->value(); v && set(*v))
+                changed(QLatin1String(field));
+        });
     };
-    connect(m_speedSet, &QCheckBox::toggled, this, speedChanged);
-    connect(m_speed, qOverload<double>(&QDoubleSpinBox::valueChanged), this, speedChanged);
-    connect(m_cycles, qOverload<int>(&QSpinBox::valueChanged), this, [this](int v) {
-        m_step.cycles = v;
-        changed(QStringLiteral("cycles"));
-    });
-    connect(m_seconds, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) {
-        m_step.seconds = v;
-        changed(QStringLiteral("seconds"));
-    });
-    connect(m_offset, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) {
-        m_step.offsetMm = v;
-        changed(QStringLiteral("offset"));
+    number(m_volume, "volume", [this](double v) { return std::exchange(m_step.volumeUl, v) != v; });
+    number(m_cycles, "cycles", [this](double v) { return std::exchange(m_step.cycles, static_cast<int>(v)) != static_cast<int>(v); });
+    number(m_seconds, "seconds", [this](double v) { return std::exchange(m_step.seconds, v) != v; });
+    number(m_offset, "offset", [this](double v) { return std::exchange(m_step.offsetMm, v) != v; });
+    number(m_speed, "speed", [this](double v) { return std::exchange(m_step.speedUlS, std::optional<double>(v)) != std::optional<double>(v); });
+    connect(m_speedSet, &QCheckBox::toggled, this, [this](bool on) {
+        m_speed->setEnabled(on);
+        if (m_loading)
+            return;
+        // Ticked with an invalid entry: the step gets a speed once the entry is fixed.
+        if (!on)
+            m_step.speedUlS.reset();
+        else if (m_speed->value())
+            m_step.speedUlS = m_speed->value();
+        changed(QStringLiteral("speed"));
     });
     auto sourceChanged = [this] {
         m_step.source.plate = m_sourcePlate->currentData().toString().toStdString();
@@ -216,13 +235,13 @@ void StepForm::showFieldsOf(StepType t)
     m_form->setRowVisible(m_plate, takes(t, "plate"));
     m_form->setRowVisible(m_wells, takes(t, "wells"));
     m_form->setRowVisible(m_station, takes(t, "station"));
-    m_form->setRowVisible(m_volume, takes(t, "volume"));
+    m_form->setRowVisible(m_volumeRow, takes(t, "volume"));
     m_form->setRowVisible(m_speedRow, takes(t, "speed"));
     m_form->setRowVisible(m_cycles, takes(t, "cycles"));
-    m_form->setRowVisible(m_seconds, takes(t, "seconds"));
-    m_form->setRowVisible(m_offset, takes(t, "offset"));
+    m_form->setRowVisible(m_secondsRow, takes(t, "seconds"));
+    m_form->setRowVisible(m_offsetRow, takes(t, "offset"));
     m_form->setRowVisible(m_sourceRow, takes(t, "source"));
-    m_form->labelForField(m_offset)->setProperty("text", t == StepType::Dispense ? tr("Touch-off after each well") : tr("Touch-off"));
+    m_form->labelForField(m_offsetRow)->setProperty("text", t == StepType::Dispense ? tr("Touch-off after each well") : tr("Touch-off"));
 }
 
 void StepForm::load()
@@ -237,13 +256,18 @@ void StepForm::load()
     pick(m_plate, m_step.plate);
     m_wells->setText(wellsText(m_step.wells));
     pick(m_station, m_step.station);
-    m_volume->setValue(m_step.volumeUl);
+    // Only a value that differs: the field being typed into keeps its text.
+    auto show = [](NumberField* f, double v) {
+        if (f->value() != std::optional<double>(v))
+            f->setValue(v);
+    };
+    show(m_volume, m_step.volumeUl);
     m_speedSet->setChecked(m_step.speedUlS.has_value());
     m_speed->setEnabled(m_step.speedUlS.has_value());
-    m_speed->setValue(m_step.speedUlS.value_or(100));
-    m_cycles->setValue(m_step.cycles);
-    m_seconds->setValue(m_step.seconds);
-    m_offset->setValue(m_step.offsetMm);
+    show(m_speed, m_step.speedUlS.value_or(100));
+    show(m_cycles, m_step.cycles);
+    show(m_seconds, m_step.seconds);
+    show(m_offset, m_step.offsetMm);
     pick(m_sourcePlate, m_step.source.plate);
     m_sourceWell->setText(QString::fromStdString(m_step.source.well));
     pick(m_sourceStation, m_step.source.station);

@@ -8,12 +8,12 @@
 
 class QCheckBox;
 class QComboBox;
-class QDoubleSpinBox;
 class QFormLayout;
 class QLineEdit;
-class QSpinBox;
 
 namespace ui {
+
+class NumberField;
 
 class StepForm : public QWidget {
     Q_OBJECT
@@ -23,6 +23,7 @@ public:
     /// The recipe's plate names and the deck's station ids, for the pickers.
     void setChoices(const QStringList& plates, const QStringList& stations);
     /// Shows `step` (index for the title); index −1 empties and disables the form.
+    /// Values out of their field's range are shown as they are, marked invalid.
     void setStep(const plates::Step& step, int index);
     const plates::Step& step() const { return m_step; }
 
@@ -47,12 +48,17 @@ private:
     QComboBox* m_plate;
     QLineEdit* m_wells;
     QComboBox* m_station;
-    QDoubleSpinBox* m_volume;
+    // Numbers as the file gave them, never clamped: out of range shows marked invalid
+    // until the operator fixes it, and an invalid entry changes nothing (issue 16 item 7).
+    NumberField* m_volume;
     QCheckBox* m_speedSet;
-    QDoubleSpinBox* m_speed;
-    QSpinBox* m_cycles;
-    QDoubleSpinBox* m_seconds;
-    QDoubleSpinBox* m_offset;
+    NumberField* m_speed;
+    NumberField* m_cycles;
+    NumberField* m_seconds;
+    NumberField* m_offset;
+    QWidget* m_volumeRow;
+    QWidget* m_secondsRow;
+    QWidget* m_offsetRow;
     QComboBox* m_sourcePlate;
     QLineEdit* m_sourceWell;
     QComboBox* m_sourceStation;

@@ -472,8 +472,12 @@ bool ScanScreen::run()
             longApproach = longApproach || confirmation::isLongMove(m_stage->status().axes[i].commanded, to[i], d.travelMax - d.travelMin);
         }
     }
+    // Only the move is news when the scan is short: that question may be waived for the session.
+    const Confirm ask = longApproach && left <= kConfirmLongerThanS && m_confirmLongMove
+        ? m_confirmLongMove
+        : Confirm([this](const QString& q) { return confirm(q); });
     if ((left > kConfirmLongerThanS || longApproach)
-        && !confirm(taken > 0 ? tr("Continue the scan at tile %1 of %2? About %3 are left.").arg(taken + 1).arg(m_runner->totalTiles()).arg(duration(left))
+        && !ask(taken > 0 ? tr("Continue the scan at tile %1 of %2? About %3 are left.").arg(taken + 1).arg(m_runner->totalTiles()).arg(duration(left))
                               : tr("Run %1 tiles on the stage? It takes about %2, starting with a move to (%3, %4) mm.")
                                     .arg(m_runner->totalTiles())
                                     .arg(duration(left))

@@ -41,6 +41,9 @@ public:
     ~ScanScreen() override;
     void setFileChooser(FileChooser chooser) { m_chooser = std::move(chooser); }
     void setConfirm(Confirm confirm) { m_confirm = std::move(confirm); }
+    /// Asked instead of Confirm when a long approach is the only reason to ask (app/ offers
+    /// "don't ask again this session" there); unset: Confirm asks.
+    void setConfirmLongMove(Confirm confirm) { m_confirmLongMove = std::move(confirm); }
 
     /// The plan as typed, and the plan file's text (kept between runs by the app).
     motion::scan::ScanPlan plan() const;
@@ -100,6 +103,7 @@ private:
     QTimer* m_replanTimer;
     FileChooser m_chooser;
     Confirm m_confirm;
+    Confirm m_confirmLongMove;
     motion::scan::ScanLayout m_layout;
     motion::scan::ScanEstimate m_estimate;
     bool m_valid = false;
