@@ -126,7 +126,13 @@ inline std::string lastLine(const QString& text)
 inline void noteStop(Outcome& o, const char* what, const itest::ProgramRun& r)
 {
     ++o.stops;
+    // Why, by message id where the CLI said one (--json problem events), else its last words.
     std::string said = lastLine(r.err);
+    for (const QString& l : r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
+        const QJsonObject obj = QJsonDocument::fromJson(l.toUtf8()).object();
+        if (obj.value(QStringLiteral("event")).toString() == QLatin1String("problem"))
+            said = obj.value(QStringLiteral("text")).toObject().value(QStringLiteral("id")).toString().toStdString();
+    }
     for (char& c : said)
         c = c == ' ' || c == ',' ? '_' : c;
     o.why += (o.why.empty() ? "" : ",") + std::string(what) + ":" + std::to_string(r.exitCode) + (said.empty() ? "" : ":" + said.substr(said.size() > 90 ? said.size() - 90 : 0));
@@ -230,8 +236,10 @@ inline Outcome ptyRecipe(double rate, std::uint64_t seed, const std::string& wel
             r = cliRun(line.port(), args + common);
             finished = isFinished(r);
             decision.clear();
-            if (r.err.contains(QStringLiteral("not resumed: say --interrupted")))
+            if (r.err.contains(QStringLiteral("not resumed: say --interrupted"))) {
                 decision = r.err.contains(QStringLiteral("moved in full")) ? QStringLiteral("skip") : QStringLiteral("redo");
+                o.why += ",asked:" + decision.toStdString();
+            }
             if (!finished && round == 11)
                 o.why += ",last:" + lastLine(r.err);
         }
