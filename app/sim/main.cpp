@@ -2,6 +2,7 @@
 //   benchpilot-sim --instrument analyzer|stage --pty PATH [--protocol benchpilot|grbl|grblhal]
 //                  [--time-scale K] [--baud N]
 //                  [--gauge PATH --gauge-axis X [--gauge-resolution MM] [--gauge-noise MM]]
+//                  [--journal FILE]
 // --protocol chooses what the firmware speaks over the same machine model: the BenchPilot
 // protocol, or the GRBL 1.1 / grblHAL personality (docs/grbl.md).
 // --gauge serves a simulated length gauge on a second pty: it answers "?" + CR with the
@@ -10,6 +11,7 @@
 #include "device/link/simulated_link.h"
 #include "device/sim/grbl_firmware.h"
 #include "device/sim/sim_gauge.h"
+#include "journal_file.h"
 #include "pty_transport.h"
 
 #include <QCommandLineParser>
@@ -70,7 +72,10 @@ int main(int argc, char** argv)
     QCommandLineOption gaugeNoise(QStringLiteral("gauge-noise"),
                                   QCoreApplication::translate("sim", "standard deviation of the gauge's noise in mm"),
                                   QStringLiteral("mm"), QStringLiteral("0.0001"));
-    p.addOptions({instrument, ptyPath, protocol, timeScale, baud, gaugePath, gaugeAxis, gaugeResolution, gaugeNoise});
+    QCommandLineOption journal(QStringLiteral("journal"),
+                               QCoreApplication::translate("sim", "write what the firmware executed to this file when stopped (benchpilot protocol only)"),
+                               QStringLiteral("file"));
+    p.addOptions({instrument, ptyPath, protocol, timeScale, baud, gaugePath, gaugeAxis, gaugeResolution, gaugeNoise, journal});
     p.process(app);
 
     const QString kind = p.value(instrument);
@@ -88,6 +93,9 @@ int main(int argc, char** argv)
     const int baudRate = p.value(baud).toInt(&ok);
     if (!ok || baudRate < 1200)
         return fail(QCoreApplication::translate("sim", "--baud must be at least 1200 (got '%1')").arg(p.value(baud)));
+
+    if (p.isSet(journal) && proto != QLatin1String("benchpilot"))
+        return fail(QCoreApplication::translate("sim", "--journal records the benchpilot protocol's requests only"));
 
     const sim::MachineConfig machine = kind == QLatin1String("stage") ? sim::stageConfig() : sim::analyzerConfig();
     const QString gaugeLink = p.value(gaugePath);
@@ -143,6 +151,8 @@ int main(int argc, char** argv)
         host = std::make_unique<dev::SimulatorHost>(std::move(fw), &pty);
     }
     host->setTimeScale(scale);
+    if (p.isSet(journal))
+        host->firmware().setJournal(true);
     host->start();
 
     // The gauge: a second pty whose device end answers from the same machine.
@@ -185,6 +195,11 @@ int main(int argc, char** argv)
         std::printf("receive buffer: %llu bytes lost, at most %zu of %zu bytes held\n",
                     static_cast<unsigned long long>(grbl->lostRxBytes()), grbl->maxRxBytesQueued(), grbl->rxBufferBytes());
         std::fflush(stdout);
+    }
+    if (p.isSet(journal)) {
+        QString why;
+        if (!simapp::writeJournal(host->firmware(), p.value(journal), &why))
+            std::fprintf(stderr, "benchpilot-sim: cannot write the journal %s: %s\n", qPrintable(p.value(journal)), qPrintable(why));
     }
     ::unlink(qPrintable(link));
     pty.close();

@@ -45,6 +45,12 @@ public:
     static constexpr int kGrblFirstMs = 300;
     static constexpr int kRepeatMs = 1000;
     static constexpr int kTotalMs = 4000;
+    /// Once BenchPilot frames arrive, even damaged ones (bad CRC or broken COBS: a noisy
+    /// line), HELLO is asked again this often and for up to kNoisyTotalMs in all, as the
+    /// client's own connect does (docs/protocol.md, "Retries and silence"). A wrong baud
+    /// rate can look like damaged frames too: it is then reported after kNoisyTotalMs.
+    static constexpr int kNoisyRepeatMs = 100;
+    static constexpr int kNoisyTotalMs = 10000;
 
     explicit ProtocolProbe(Transport* transport, QObject* parent = nullptr);
     ~ProtocolProbe() override;
@@ -77,6 +83,7 @@ private:
     qint64 m_lastQueryMs = 0, m_lastHelloMs = -1;
     quint64 m_bytes = 0;
     bool m_started = false, m_done = false;
+    bool m_heardFrames = false;  ///< a BenchPilot frame arrived, whole or with a bad CRC
     ProbeResult m_result;
 };
 

@@ -57,8 +57,6 @@ LoopbackPair::LoopbackPair(qint32 baud, QObject* parent) : QObject(parent), m_ba
 {
     m_ends[0] = new LoopbackEnd(this, 0);
     m_ends[1] = new LoopbackEnd(this, 1);
-    m_rng[0].seed(1);
-    m_rng[1].seed(2);
     m_clock.start();
     m_timer.setSingleShot(true);
     m_timer.setTimerType(Qt::PreciseTimer);
@@ -68,12 +66,6 @@ LoopbackPair::LoopbackPair(qint32 baud, QObject* parent) : QObject(parent), m_ba
 LoopbackPair::~LoopbackPair() = default;
 
 Transport* LoopbackPair::end(Side side) { return m_ends[side]; }
-
-void LoopbackPair::setFaults(Side from, const LinkFaults& faults)
-{
-    m_faults[from] = faults;
-    m_rng[from].seed(faults.seed);
-}
 
 void LoopbackPair::unplug()
 {
@@ -90,53 +82,14 @@ void LoopbackPair::hang(int ms)
 
 void LoopbackPair::transmit(int from, const QByteArray& input, bool applyFaults)
 {
-    const LinkFaults& f = m_faults[from];
-    LinkFaultCounts& n = m_counts[from];
     if (applyFaults && hung())
         return;
-    QByteArray bytes = input;
-    if (applyFaults && f.filter) {
-        bytes = f.filter(input);
-        if (bytes != input)
-            ++n.filteredWrites;
-        if (bytes.isEmpty())
-            return;
-    }
-    auto& rng = m_rng[from];
-    std::uniform_real_distribution<double> u(0, 1);
-    if (applyFaults && f.dropChunkProbability > 0 && u(rng) < f.dropChunkProbability) {
-        ++n.droppedChunks;
+    std::int64_t extra = 0;
+    const QByteArray bytes = applyFaults ? m_lines[from].spoil(input, &extra) : input;
+    if (bytes.isEmpty())
         return;
-    }
-    if (applyFaults && (f.corruptByteProbability > 0 || f.dropByteProbability > 0 || f.duplicateByteProbability > 0)) {
-        QByteArray out;
-        out.reserve(bytes.size() + 8);
-        for (char c : bytes) {
-            if (f.dropByteProbability > 0 && u(rng) < f.dropByteProbability) {
-                ++n.droppedBytes;
-                continue;
-            }
-            if (f.corruptByteProbability > 0 && u(rng) < f.corruptByteProbability) {
-                c = static_cast<char>(c ^ (1 << std::uniform_int_distribution<int>(0, 7)(rng)));
-                ++n.corruptedBytes;
-            }
-            out.append(c);
-            if (f.duplicateByteProbability > 0 && u(rng) < f.duplicateByteProbability) {
-                out.append(c);
-                ++n.duplicatedBytes;
-            }
-        }
-        bytes = out;
-    }
-    if (applyFaults && f.duplicateChunkProbability > 0 && u(rng) < f.duplicateChunkProbability) {
-        bytes += bytes;
-        ++n.duplicatedChunks;
-    }
     m_carried[from] += bytes.size();
     const qint64 now = m_clock.nsecsElapsed();
-    qint64 extra = applyFaults ? qint64(f.extraDelayMs) * 1000000 : 0;
-    if (applyFaults && f.jitterMs > 0)
-        extra += static_cast<qint64>(u(rng) * f.jitterMs * 1e6);
     const int to = 1 - from;
     if (m_baud <= 0) {
         const qint64 due = std::max(now + extra, m_lastDueNs[from]);

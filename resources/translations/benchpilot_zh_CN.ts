@@ -3393,6 +3393,14 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <source>--gauge needs a path of its own, not the instrument&apos;s</source>
         <translation>--gauge 需要自己的路径，不能与仪器的相同</translation>
     </message>
+    <message>
+        <source>write what the firmware executed to this file when stopped (benchpilot protocol only)</source>
+        <translation>停止时把固件执行过的请求写入此文件（仅限 benchpilot 协议）</translation>
+    </message>
+    <message>
+        <source>--journal records the benchpilot protocol&apos;s requests only</source>
+        <translation>--journal 只记录 benchpilot 协议的请求</translation>
+    </message>
 </context>
 <context>
     <name>simapp::PtyTransport</name>

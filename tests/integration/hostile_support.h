@@ -13,6 +13,7 @@
 #include "device/jobs/tuning/instrument_target.h"
 #include "device/jobs/tuning/tuning_runner.h"
 #include "device/sim/sim_tuning.h"
+#include "hostile_outcome.h"
 #include "motion/plans/pattern.h"
 #include "plates_run_support.h"
 #include "sim_session.h"
@@ -28,40 +29,6 @@
 #include <utility>
 
 namespace hostile {
-
-/// What one run did and whether the lab's invariants held.
-struct Outcome {
-    Outcome(std::string jobName, double byteRate, std::uint64_t lineSeed) : job(std::move(jobName)), rate(byteRate), seed(lineSeed) {}
-    std::string job;
-    double rate = 0;
-    std::uint64_t seed = 0;
-    std::string end = "?";  ///< finished, or what stopped it for good
-    int stops = 0;          ///< times the job stopped and was resumed
-    bool held = true;       ///< every invariant held
-    std::string broken;     ///< which did not
-    std::string why;        ///< what the job said when it stopped (message ids)
-    quint64 retransmits = 0, crcErrors = 0, duplicatesAnswered = 0;
-    qint64 damagedBytes = 0;
-
-    void fail(const std::string& reason)
-    {
-        held = false;
-        broken += (broken.empty() ? "" : "; ") + reason;
-    }
-    /// One line the campaign's table is made from (docs/testing.md, "Hostile link").
-    std::string line() const
-    {
-        char b[1024];
-        std::snprintf(b, sizeof b,
-                      "[ hostile ] job=%s rate=%.3f seed=%llu end=%s stops=%d invariants=%s retransmits=%llu crc=%llu "
-                      "dup_answered=%llu damaged_bytes=%lld%s%s%s%s",
-                      job.c_str(), rate * 100, static_cast<unsigned long long>(seed), end.c_str(), stops, held ? "held" : "BROKEN",
-                      static_cast<unsigned long long>(retransmits), static_cast<unsigned long long>(crcErrors),
-                      static_cast<unsigned long long>(duplicatesAnswered), static_cast<long long>(damagedBytes),
-                      why.empty() ? "" : " stopped_by=", why.c_str(), broken.empty() ? "" : " broken=", broken.c_str());
-        return b;
-    }
-};
 
 /// The line both ways: `rate` of the bytes damaged (a third corrupted, a third dropped,
 /// a third doubled), and up to 3 ms of jitter per write.
@@ -169,44 +136,12 @@ inline Outcome recipe(double rate, std::uint64_t seed, const std::string& wells,
     s.waitStill();
 
     // The device's own record: every plunger move it executed, and where X, Y stood.
-    std::map<std::pair<long, long>, double> byWell;
-    double pumped = 0;
-    const auto& j = s.link.host().firmware().journal();
-    const auto& axes = s.client.identity().axes;
-    for (std::size_t k = journalFrom; k < j.size(); ++k) {
-        if (j[k].type != static_cast<std::uint8_t>(proto::MsgType::Move))
-            continue;
-        const auto m = proto::decodeMoveRequest(j[k].payload);
-        if (!m || !(m->axisMask & (1u << ip)))
-            continue;
-        std::size_t slot = 0;
-        for (int a = 0; a < ip; ++a)
-            slot += (m->axisMask >> a) & 1u;
-        const double target = m->targets[slot] / axes[ip].wireScale();
-        const double delta = m->relative ? target : target - j[k].commanded[static_cast<std::size_t>(ip)];
-        if (std::abs(delta) < 1e-9)
-            continue;
-        (void)iz;
-        byWell[{std::lround(j[k].commanded[static_cast<std::size_t>(ix)] * 1000), std::lround(j[k].commanded[static_cast<std::size_t>(iy)] * 1000)}] += delta;
-        pumped += delta;
-    }
-    int twice = 0, partial = 0;
-    for (const auto& [xy, ul] : byWell) {
-        if (ul > volumeUl + 1e-6)
-            ++twice;
-        else if (ul < volumeUl - 1e-6)
-            ++partial;
-    }
-    if (twice)
-        o.fail(std::to_string(twice) + " wells aspirated more than once");
-    if (static_cast<int>(byWell.size()) + skipped < wellCount)
-        o.fail(std::to_string(wellCount - static_cast<int>(byWell.size())) + " wells never visited");
-    if (partial > skipped)
-        o.fail(std::to_string(partial) + " wells short of their volume");
-    if (std::abs(s.link.machine().commandedLogical(ip) - p0 - pumped) > 1e-6)
-        o.fail("plunger position does not match the moves the device executed");
-    if (skipped == 0 && std::abs(pumped - wellCount * volumeUl) > 1e-6)
-        o.fail("plunger moved " + std::to_string(pumped) + " uL, the recipe asks " + std::to_string(wellCount * volumeUl));
+    (void)iz;
+    std::vector<double> wireScale;
+    for (const auto& a : s.client.identity().axes)
+        wireScale.push_back(a.wireScale());
+    const PlungerTally t = plungerByWell(s.link.host().firmware().journal(), journalFrom, wireScale, ix, iy, ip);
+    judgeWells(o, t, wellCount, volumeUl, skipped, s.link.machine().commandedLogical(ip) - p0);
     tally(s, o);
     return o;
 }
@@ -276,41 +211,7 @@ inline Outcome scan(double rate, std::uint64_t seed, double sideMm, bool unplugO
     o.end = runner.state() == jobs::ScanRunner::State::Finished ? "finished" : "stopped";
     if (o.end != "finished")
         o.fail("the scan did not finish");
-    const int tiles = runner.totalTiles();
-    int twice = 0, never = 0, unmeasured = 0, notVisited = 0;
-    for (int t = 0; t < tiles; ++t) {
-        const int n = triggers.count(t) ? triggers[t] : 0;
-        twice += n > 1;
-        never += n == 0;
-    }
-    // The device's record: a MOVE it executed to each tile's position, and the tile's
-    // measured position within the plan's tolerance of it.
-    std::set<std::pair<long, long>> moves;
-    for (const auto& e : s.link.host().firmware().journal()) {
-        if (e.type != static_cast<std::uint8_t>(proto::MsgType::Move))
-            continue;
-        if (const auto m = proto::decodeMoveRequest(e.payload); m && !m->relative && m->axisMask == 0b11)
-            moves.insert({std::lround(m->targets[0] / 1e3), std::lround(m->targets[1] / 1e3)});  // nm → µm
-    }
-    for (const auto& rec : runner.records()) {
-        if (!rec.measured()) {
-            ++unmeasured;
-            continue;
-        }
-        for (int a = 0; a < 2; ++a)
-            if (std::abs(rec.measuredMm[a] - rec.commandedMm[a]) * 1e3 > p.toleranceUm)
-                ++unmeasured;
-        if (!moves.count({std::lround(rec.commandedMm[0] * 1e3), std::lround(rec.commandedMm[1] * 1e3)}))
-            ++notVisited;
-    }
-    if (twice)
-        o.fail(std::to_string(twice) + " tiles taken twice");
-    if (never)
-        o.fail(std::to_string(never) + " tiles never taken");
-    if (unmeasured)
-        o.fail(std::to_string(unmeasured) + " tiles without a measured position in tolerance");
-    if (notVisited)
-        o.fail(std::to_string(notVisited) + " tiles the device never moved to");
+    judgeTiles(o, runner.records(), runner.totalTiles(), triggers, p.toleranceUm, xyMovesUm(s.link.host().firmware().journal()));
     tally(s, o);
     return o;
 }

@@ -92,4 +92,23 @@ TEST(ProtocolProbe, TellsBenchPilotFromGrblAndSilence)
     }
 }
 
+// Issue 15, found by bp-faultline on the pty path: at 1 % of bytes damaged a HELLO reply
+// (about 300 bytes) arrives whole one time in twenty, and the probe asked four times in
+// 4 s — so benchpilot-cli --port failed most connects with "neither GRBL lines nor
+// BenchPilot frames" while the device answered every HELLO. Damaged BenchPilot frames are
+// a BenchPilot device on a noisy line: the probe keeps asking, as the client's own connect
+// does (docs/protocol.md, "Retries and silence").
+TEST(ProtocolProbe, FindsBenchPilotThroughOnePercentOfBytesDamaged)
+{
+    for (std::uint64_t seed = 1; seed <= 2; ++seed) {  // both failed before the fix
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        dev::SimulatedLink link(proto::DeviceKind::Analyzer, 0);
+        link.pair().setFaults(dev::LoopbackPair::A, dev::LinkFaults::bytes(0.01, seed * 2 + 1));
+        link.pair().setFaults(dev::LoopbackPair::B, dev::LinkFaults::bytes(0.01, seed * 2 + 2));
+        const dev::ProbeResult r = probeOn(link.hostEnd(), 15000);
+        EXPECT_EQ(r.protocol, dev::ProbeResult::Protocol::BenchPilot) << msg::debugString(r.error);
+        EXPECT_EQ(r.kind, proto::DeviceKind::Analyzer);
+    }
+}
+
 } // namespace

@@ -1,0 +1,381 @@
+#pragma once
+// Jobs on a hostile line over REAL pseudo-terminals (issue 15): benchpilot-sim (its
+// journal on) ← bp-faultline (the loopback's fault model, seeded) ← benchpilot-cli
+// (QSerialPort), one CLI process after another as an operator would run them: a run that
+// stops on the bad line is resumed from its log, a CLI killed with SIGKILL is replaced by
+// a new one that resumes. The invariants are judged on the simulator's own journal, which
+// it writes when stopped (benchpilot-sim --journal), by the judges the in-process runs
+// use (hostile_outcome.h).
+#include "device/files/scan_run_log.h"
+#include "device/files/text_file.h"
+#include "device/sim/machine_config.h"
+#include "hostile_outcome.h"
+#include "motion/plans/scan/scan_plan.h"
+#include "plates_run_support.h"
+#include "pty_simulator.h"
+#include "wait.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+
+#include <csignal>
+#include <functional>
+#include <optional>
+
+namespace hostile {
+
+/// The three programs' line: a simulator with its journal, and bp-faultline in front.
+class PtyLine {
+public:
+    /// `lineArgs`: more bp-faultline options (--delay-ms, --unplug-every …).
+    bool start(const QString& instrument, double timeScale, double rate, std::uint64_t seed, const QStringList& lineArgs = {})
+    {
+        m_journal = m_dir.filePath(QStringLiteral("journal.jsonl"));
+        if (!m_sim.start(instrument, timeScale, {QStringLiteral("--journal"), m_journal})) {
+            m_error = m_sim.error();
+            return false;
+        }
+        m_port = m_dir.filePath(QStringLiteral("ttyFaulty"));
+        m_line.start(itest::binary("bp-faultline"), QStringList{QStringLiteral("--device"), m_sim.link(), QStringLiteral("--listen"), m_port,
+                                                                 QStringLiteral("--seed"), QString::number(seed), QStringLiteral("--rate"),
+                                                                 QString::number(rate), QStringLiteral("--delay-ms"), QStringLiteral("0..3"),
+                                                                 QStringLiteral("--json")}
+                                                        + lineArgs);
+        if (!m_line.waitForStarted(10000) || !itest::waitFor([&] { return m_line.canReadLine() || m_line.state() != QProcess::Running; }, 10000)
+            || !m_line.canReadLine()) {
+            m_error = QStringLiteral("bp-faultline did not start: %1").arg(QString::fromUtf8(m_line.readAllStandardError()));
+            return false;
+        }
+        m_line.readLine();
+        return true;
+    }
+    ~PtyLine()
+    {
+        for (QProcess* p : {&m_line, &m_sim.process()})
+            if (p->state() != QProcess::NotRunning) {
+                p->kill();
+                p->waitForFinished(5000);
+            }
+    }
+    QString port() const { return m_port; }
+    QString error() const { return m_error; }
+    QString dir() const { return m_dir.path(); }
+    /// Pulls the cable now (bp-faultline puts it back after its --unplug-ms).
+    void unplug() { ::kill(static_cast<pid_t>(m_line.processId()), SIGUSR1); }
+
+    /// Stops both programs; the device's journal (with where the machine was left in
+    /// `endCommanded`) and the line's counts. false when either said nothing.
+    bool finish(Journal* journal, std::vector<double>* endCommanded, Outcome* o)
+    {
+        m_line.terminate();
+        m_line.waitForFinished(10000);
+        const QJsonObject counts = itest::lastJson(QString::fromUtf8(m_line.readAllStandardOutput()));
+        o->damagedBytes = static_cast<qint64>(counts.value(QStringLiteral("damaged_bytes")).toDouble());
+        m_sim.process().terminate();
+        m_sim.process().waitForFinished(10000);
+        QFile f(m_journal);
+        if (counts.isEmpty() || !f.open(QIODevice::ReadOnly)) {
+            m_error = QStringLiteral("no journal or no counts: %1").arg(QString::fromUtf8(m_sim.process().readAllStandardError()));
+            return false;
+        }
+        while (!f.atEnd()) {
+            const QJsonObject line = QJsonDocument::fromJson(f.readLine()).object();
+            std::vector<double> commanded;
+            for (const auto v : line.value(QStringLiteral("commanded")).toArray())
+                commanded.push_back(v.toDouble());
+            if (line.value(QStringLiteral("end")).toBool()) {
+                *endCommanded = commanded;
+                o->crcErrors = static_cast<quint64>(line.value(QStringLiteral("crc_errors")).toDouble());
+                o->duplicatesAnswered = static_cast<quint64>(line.value(QStringLiteral("duplicates_answered")).toDouble());
+                continue;
+            }
+            sim::Firmware::JournalEntry e;
+            e.timeS = line.value(QStringLiteral("t")).toDouble();
+            e.type = static_cast<std::uint8_t>(line.value(QStringLiteral("type")).toInt());
+            e.seq = static_cast<std::uint16_t>(line.value(QStringLiteral("seq")).toInt());
+            const QByteArray payload = QByteArray::fromHex(line.value(QStringLiteral("payload")).toString().toLatin1());
+            e.payload.assign(payload.begin(), payload.end());
+            e.commanded = commanded;
+            journal->push_back(std::move(e));
+        }
+        return !endCommanded->empty();
+    }
+
+private:
+    QTemporaryDir m_dir;
+    itest::PtySimulator m_sim;
+    QProcess m_line;
+    QString m_port, m_journal, m_error;
+};
+
+/// One CLI run to its end.
+inline itest::ProgramRun cliRun(const QString& port, const QStringList& args, int timeoutMs = 120000)
+{
+    return itest::runProgram(itest::binary("benchpilot-cli"), QStringList{QStringLiteral("--port"), port} + args, timeoutMs);
+}
+
+/// The last line of what a CLI said on stderr: why it stopped, for the campaign's line.
+inline std::string lastLine(const QString& text)
+{
+    const QStringList lines = text.trimmed().split(QLatin1Char('\n'));
+    return lines.isEmpty() ? std::string() : lines.back().toStdString();
+}
+
+inline void noteStop(Outcome& o, const char* what, const itest::ProgramRun& r)
+{
+    ++o.stops;
+    // Why, by message id where the CLI said one (--json problem events), else its last words.
+    std::string said = lastLine(r.err);
+    for (const QString& l : r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
+        const QJsonObject obj = QJsonDocument::fromJson(l.toUtf8()).object();
+        if (obj.value(QStringLiteral("event")).toString() == QLatin1String("problem"))
+            said = obj.value(QStringLiteral("text")).toObject().value(QStringLiteral("id")).toString().toStdString();
+    }
+    for (char& c : said)
+        c = c == ' ' || c == ',' ? '_' : c;
+    o.why += (o.why.empty() ? "" : ",") + std::string(what) + ":" + std::to_string(r.exitCode) + (said.empty() ? "" : ":" + said.substr(said.size() > 90 ? said.size() - 90 : 0));
+}
+
+/// Homes through the bad line, retrying as an operator would (a failed home is a stop).
+inline bool ptyHome(const QString& port, Outcome& o)
+{
+    for (int i = 0; i < 6; ++i) {
+        const auto r = cliRun(port, {QStringLiteral("home")}, 60000);
+        if (r.exitCode == 0)
+            return true;
+        noteStop(o, "home", r);
+        itest::spin(400);
+    }
+    return false;
+}
+
+/// How a first CLI process is cut: killed (SIGKILL) or the cable pulled, after `after`
+/// wells or tiles are in its log; `after` < 0: not cut.
+struct Cut {
+    enum Kind { None, Kill, Unplug } kind = None;
+    int after = -1;
+};
+
+/// Starts the first CLI process and cuts it as `cut` says once `progress()` reaches
+/// `cut.after`; returns its run, or a run whose exitCode is -1 when it was killed.
+inline itest::ProgramRun firstRun(PtyLine& line, const QStringList& args, const Cut& cut, const std::function<int()>& progress, Outcome& o)
+{
+    QProcess p;
+    p.start(itest::binary("benchpilot-cli"), QStringList{QStringLiteral("--port"), line.port()} + args);
+    itest::ProgramRun r;
+    if (!p.waitForStarted(10000))
+        return r;
+    if (cut.kind != Cut::None) {
+        itest::waitFor([&] { return progress() >= cut.after || p.state() == QProcess::NotRunning; }, 120000);
+        if (p.state() == QProcess::Running) {
+            if (cut.kind == Cut::Kill) {
+                p.kill();  // SIGKILL: no chance to write anything more
+                o.end = "killed";
+            } else {
+                line.unplug();
+            }
+        }
+    }
+    r.finished = p.waitForFinished(180000);
+    if (!r.finished) {
+        p.kill();
+        p.waitForFinished(5000);
+    }
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+// ---- recipe through real ptys: every well once, never twice; the plunger accounted for ----
+
+inline Outcome ptyRecipe(double rate, std::uint64_t seed, const std::string& wells, int wellCount, const Cut& cut, double volumeUl = 10)
+{
+    Outcome o{cut.kind == Cut::Kill ? "recipe-pty-kill" : "recipe-pty", rate, seed};
+    o.hostStats = false;
+    PtyLine line;
+    if (!line.start(QStringLiteral("analyzer"), platestest::kRunTimeScale, rate, seed)) {
+        o.end = "no-line";
+        o.fail(line.error().toStdString());
+        return o;
+    }
+    const QDir dir(line.dir());
+    const QString recipe = dir.filePath(QStringLiteral("sampling.recipe.json"));
+    const QString log = dir.filePath(QStringLiteral("run.jsonl"));
+    {
+        QFile f(recipe);
+        const QString text = QStringLiteral(R"({"schema": "benchpilot.recipe", "version": 1, "name": "hostile",
+            "plates": [{"name": "samples", "slot": "1", "labware": "sbs-96", "safe_z_mm": 55, "depth_z_mm": 70}],
+            "steps": [{"type": "aspirate", "plate": "samples", "wells": "%1", "volume_ul": %2, "speed_ul_s": 100}]})")
+                                 .arg(QString::fromStdString(wells))
+                                 .arg(volumeUl);
+        if (!f.open(QIODevice::WriteOnly) || f.write(text.toUtf8()) < 0) {
+            o.fail("cannot write the recipe");
+            return o;
+        }
+    }
+    bool finished = false;
+    if (ptyHome(line.port(), o)) {
+        const QStringList common{QStringLiteral("--json"), QStringLiteral("--calibration"), QStringLiteral("none")};
+        auto isFinished = [](const itest::ProgramRun& r) {
+            return r.exitCode == 0 && itest::lastJson(r.out).value(QStringLiteral("event")).toString() == QLatin1String("finished");
+        };
+        itest::ProgramRun r = firstRun(line, QStringList{QStringLiteral("recipe"), QStringLiteral("run"), recipe, QStringLiteral("--log"), log} + common,
+                                       cut, [&] { return static_cast<int>(platestest::countLog(log).dones.size()); }, o);
+        finished = isFinished(r);
+        QString decision;  // the operator's word for a well cut mid-aspirate, read from the CLI's evidence
+        for (int round = 0; round < 12 && !finished; ++round) {
+            noteStop(o, "run", r);
+            itest::spin(400);  // as an operator would: a pulled cable is back after bp-faultline's 300 ms
+            QStringList args{QStringLiteral("recipe"), QStringLiteral("run"), recipe};
+            args << (QFileInfo::exists(log) ? QStringLiteral("--resume") : QStringLiteral("--log")) << log;
+            if (!decision.isEmpty())
+                args << QStringLiteral("--interrupted=") + decision;
+            r = cliRun(line.port(), args + common);
+            finished = isFinished(r);
+            decision.clear();
+            if (r.err.contains(QStringLiteral("not resumed: say --interrupted"))) {
+                decision = r.err.contains(QStringLiteral("moved in full")) ? QStringLiteral("skip") : QStringLiteral("redo");
+                o.why += ",asked:" + decision.toStdString();
+            }
+            if (!finished && round == 11)
+                o.why += ",last:" + lastLine(r.err);
+        }
+    }
+    if (o.end != "killed" || !finished)
+        o.end = finished ? "finished" : (o.end == "killed" ? "killed-not-finished" : "stopped");
+    else
+        o.end = "killed+resumed";
+    if (!finished)
+        o.fail("the run did not finish");
+
+    // The client's record agrees: every well closed exactly once.
+    const platestest::LogCounts lc = platestest::countLog(log);
+    int closedTwice = 0;
+    for (int op = 0; op < wellCount; ++op)
+        closedTwice += (lc.dones.count(op) ? lc.dones.at(op) : 0) + (lc.skips.count(op) ? lc.skips.at(op) : 0) > 1;
+    if (closedTwice)
+        o.fail(std::to_string(closedTwice) + " wells closed twice in the run log");
+
+    Journal j;
+    std::vector<double> end;
+    if (!line.finish(&j, &end, &o)) {
+        o.fail(line.error().toStdString());
+        return o;
+    }
+    // The device's record. The plunger's account opens at the first MOVE (after homing).
+    const sim::MachineConfig machine = sim::analyzerConfig();
+    std::vector<double> wireScale;
+    int ix = 0, iy = 1, ip = 3;
+    for (std::size_t a = 0; a < machine.axes.size(); ++a) {
+        wireScale.push_back(machine.axes[a].unit == proto::AxisUnit::Microlitre ? 1e3 : 1e6);
+        const char l = machine.axes[a].letter;
+        if (l == 'X')
+            ix = static_cast<int>(a);
+        else if (l == 'Y')
+            iy = static_cast<int>(a);
+        else if (l == 'P')
+            ip = static_cast<int>(a);
+    }
+    std::size_t from = 0;
+    while (from < j.size() && j[from].type != static_cast<std::uint8_t>(proto::MsgType::Move))
+        ++from;
+    const double p0 = from < j.size() ? j[from].commanded[static_cast<std::size_t>(ip)] : end[static_cast<std::size_t>(ip)];
+    const PlungerTally t = plungerByWell(j, from, wireScale, ix, iy, ip);
+    judgeWells(o, t, wellCount, volumeUl, 0, end[static_cast<std::size_t>(ip)] - p0);
+    return o;
+}
+
+// ---- scan through real ptys: every tile once, each with a measured position ---------------
+
+inline Outcome ptyScan(double rate, std::uint64_t seed, double sideMm, const Cut& cut)
+{
+    Outcome o{cut.kind == Cut::Kill ? "scan-pty-kill" : "scan-pty", rate, seed};
+    o.hostStats = false;
+    PtyLine line;
+    if (!line.start(QStringLiteral("stage"), 10, rate, seed)) {
+        o.end = "no-line";
+        o.fail(line.error().toStdString());
+        return o;
+    }
+    const QDir dir(line.dir());
+    const QString plan = dir.filePath(QStringLiteral("p.scan.json"));
+    const QString out = dir.filePath(QStringLiteral("out"));
+    const double toleranceUm = motion::scan::ScanPlan().toleranceUm;  // `scan plan` leaves the default
+    const auto made = itest::runProgram(itest::binary("benchpilot-cli"),
+                                        {QStringLiteral("scan"), QStringLiteral("plan"), QStringLiteral("--roi"),
+                                         QStringLiteral("40,60,%1,%2").arg(40 + sideMm).arg(60 + sideMm), QStringLiteral("--fov"), QStringLiteral("1,1"),
+                                         QStringLiteral("--pixel-um"), QStringLiteral("0.5"), QStringLiteral("--exposure"), QStringLiteral("0.02")});
+    QString error;
+    if (made.exitCode != 0 || !files::writeAtomically(plan, made.out.toStdString(), &error)) {
+        o.fail("no plan: " + made.describe());
+        return o;
+    }
+    const QString runLog = QDir(out).filePath(QLatin1String(scanfile::kRunLogFile));
+    auto logged = [&]() -> std::optional<scanfile::RunLog> {
+        std::string text;
+        QString e;
+        if (!files::readText(runLog, &text, &e))
+            return std::nullopt;
+        return scanfile::parseRunLog(text).log;
+    };
+    std::map<int, int> printed;  // tile → times a CLI said it took it
+    auto count = [&](const itest::ProgramRun& r) {
+        for (const QString& l : r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
+            const QJsonObject obj = QJsonDocument::fromJson(l.toUtf8()).object();
+            if (obj.contains(QStringLiteral("tile")) && obj.contains(QStringLiteral("measured_mm")))
+                ++printed[obj.value(QStringLiteral("tile")).toInt() - 1];
+        }
+    };
+    bool finished = false;
+    const QStringList args{QStringLiteral("--json"), QStringLiteral("scan"), QStringLiteral("run"), plan, QStringLiteral("--out"), out, QStringLiteral("--yes")};
+    if (ptyHome(line.port(), o)) {
+        itest::ProgramRun r = firstRun(line, args, cut, [&] {
+            const auto l = logged();
+            return l ? static_cast<int>(l->records.size()) : 0;
+        }, o);
+        count(r);
+        finished = r.exitCode == 0;
+        for (int round = 0; round < 12 && !finished; ++round) {
+            noteStop(o, "scan", r);
+            itest::spin(400);
+            r = cliRun(line.port(), args);
+            count(r);
+            finished = r.exitCode == 0;
+            if (!finished && round == 11)
+                o.why += ",last:" + lastLine(r.err);
+        }
+    }
+    if (o.end != "killed" || !finished)
+        o.end = finished ? "finished" : (o.end == "killed" ? "killed-not-finished" : "stopped");
+    else
+        o.end = "killed+resumed";
+    if (!finished)
+        o.fail("the scan did not finish");
+    const auto l = logged();
+    std::map<int, int> taken;  // from the run log; a tile printed twice is taken twice too
+    int tiles = 0;
+    std::vector<motion::PositionRecord> records;
+    if (l) {
+        tiles = l->tiles;
+        records = l->records;
+        for (const auto& rec : records)
+            ++taken[rec.target];
+        for (const auto& [tile, n] : printed)
+            taken[tile] = std::max(taken[tile], n);
+    } else {
+        o.fail("no run log");
+    }
+    Journal j;
+    std::vector<double> end;
+    if (!line.finish(&j, &end, &o)) {
+        o.fail(line.error().toStdString());
+        return o;
+    }
+    judgeTiles(o, records, tiles, taken, toleranceUm, xyMovesUm(j));
+    return o;
+}
+
+} // namespace hostile
