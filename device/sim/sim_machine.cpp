@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace sim {
 namespace {
@@ -72,12 +73,23 @@ std::string SimMachine::fmt(int axis, double value) const
     return buf;
 }
 
+std::int32_t SimMachine::wireInt32(double value)
+{
+    // An error names the value it refused, which can be anything the host sent (a
+    // target of 2.3e9 nm, a speed of 4e9): the wire field says "at least this much"
+    // instead of a wrapped number, and a double outside int32 is never cast (undefined).
+    if (std::isnan(value))
+        return 0;
+    constexpr double lo = std::numeric_limits<std::int32_t>::min(), hi = std::numeric_limits<std::int32_t>::max();
+    return static_cast<std::int32_t>(std::clamp(value, lo, hi));  // truncates, as the cast did
+}
+
 proto::ErrorReply SimMachine::error(proto::ErrorCode code, int axis, double value, const std::string& text) const
 {
     proto::ErrorReply e;
     e.code = code;
     e.axis = axis < 0 ? proto::kNoAxis : static_cast<std::uint8_t>(axis);
-    e.value = axis < 0 ? static_cast<std::int32_t>(value) : static_cast<std::int32_t>(std::lround(value * scale(axis)));
+    e.value = wireInt32(axis < 0 ? value : std::round(value * scale(axis)));
     e.message = text;
     return e;
 }
@@ -89,7 +101,7 @@ void SimMachine::raiseEvent(proto::EventKind kind, int axis, const std::string& 
     e.axis = axis < 0 ? proto::kNoAxis : static_cast<std::uint8_t>(axis);
     e.deviceTimeUs = timeUs();
     if (axis >= 0)
-        e.position = static_cast<std::int32_t>(std::lround(measuredLogical(axis) * scale(axis)));
+        e.position = wireInt32(std::round(measuredLogical(axis) * scale(axis)));
     e.text = text;
     if (m_events.size() >= kMaxEvents)
         m_events.erase(m_events.begin());

@@ -139,6 +139,8 @@ private:
     AxisState& st(int i) { return m_axes[static_cast<std::size_t>(i)]; }
     const AxisState& st(int i) const { return m_axes[static_cast<std::size_t>(i)]; }
     double scale(int i) const;  ///< wire units per axis unit
+    /// A value in wire units as the wire's int32: truncated, saturated, NaN → 0.
+    static std::int32_t wireInt32(double value);
     proto::ErrorReply error(proto::ErrorCode code, int axis, double value, const std::string& text) const;
     std::string fmt(int axis, double value) const;
     Result checkAxes(std::uint8_t mask, bool mustBeIdle) const;

@@ -106,6 +106,22 @@ TEST(GrblStatus, BrokenReportsAreRefusedWithAReason)
     }
 }
 
+// Found by libFuzzer (tests/fuzz/corpus/grbl_lines/regress-override-beyond-int, replayed by
+// fuzz_files): an override of 1.4e21 % was cast to int — undefined behaviour, a crash
+// under UBSan. Overrides past 1000 % (GRBL's reach 200) are a damaged report.
+TEST(GrblStatus, OverridesBeyondAnyControllersRangeAreRefused)
+{
+    for (const char* bad : {"Hold:1|WPos:-2.500,0.000,11.000|Ov:1444444444444444444420,50,100", "Idle|MPos:0,0,0|Ov:100,-5,100",
+                            "Idle|MPos:0,0,0|Ov:100,100,1001", "Idle|MPos:0,0,0|Ov:nan,100,100"}) {
+        const StatusParse p = parseStatusReport(bad);
+        EXPECT_FALSE(p.report) << bad;
+        EXPECT_EQ(p.problem.id, "grbl.status.malformed") << bad;
+    }
+    const StatusReport r = parsed("<Idle|MPos:0,0,0|Ov:200,25,10>");
+    ASSERT_TRUE(r.overridesPercent);
+    EXPECT_EQ(*r.overridesPercent, (std::array<int, 3>{200, 25, 10}));
+}
+
 TEST(GrblStatus, WorkPositionComesFromARememberedOffset)
 {
     StatusTracker t;

@@ -262,6 +262,20 @@ TEST_F(TuningStage, TestsAreRefusedWhereTheyCannotRunSafely)
     EXPECT_EQ(code(unhomed.tuning().capture({0, 0, 10}, c)), proto::kErrNoCapture);
 }
 
+// Found by libFuzzer (tests/fuzz/corpus/codec/regress-test-duration-over-int32, replayed by
+// fuzz_codec): a test asked to last 2.3e9 ms was refused with that value cast to the reply's
+// int32 — undefined behaviour, and under UBSan a crash of the firmware.
+TEST_F(TuningStage, ADurationBeyondTheWiresInt32IsRefusedNamingTheLargestValue)
+{
+    auto s = step(0.01);
+    s.envelope.maxDurationMs = 3'000'000'000u;
+    const auto e = t().stepTest(s);
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->code, proto::ErrorCode::OutOfRange);
+    EXPECT_EQ(e->value, std::numeric_limits<std::int32_t>::max());
+    EXPECT_NE(e->message.find("at most"), std::string::npos) << e->message;
+}
+
 TEST_F(TuningStage, ALongTestKeepsAllOfItsCaptureAtAHalvedRate)
 {
     auto s = step(0.01);

@@ -2,6 +2,8 @@
 
 #include "device/backends/grbl/grbl_lines.h"
 
+#include <algorithm>
+
 namespace grbl {
 
 namespace {
@@ -118,7 +120,10 @@ StatusParse parseStatusReport(std::string_view payload)
                 r.pins = std::string(value);
             } else if (name == "Ov") {
                 const auto v = parseNumberList(value, 3);
-                if (!v || v->size() != 3)
+                // Percentages (GRBL: feed and spindle 10–200, rapid 25/50/100); anything past
+                // 1000 is a damaged line, and a double beyond int is never cast (undefined).
+                if (!v || v->size() != 3
+                    || std::any_of(v->begin(), v->end(), [](double p) { return !(p >= 0 && p <= kMaxOverridePercent); }))
                     return refuse(whole, "grbl.status.bad_overrides");
                 r.overridesPercent = std::array<int, 3>{static_cast<int>((*v)[0]), static_cast<int>((*v)[1]),
                                                         static_cast<int>((*v)[2])};

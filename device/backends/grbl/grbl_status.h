@@ -32,6 +32,8 @@ const char* machineStateName(MachineState s);
 
 constexpr std::size_t kMinStatusAxes = 3;
 constexpr std::size_t kMaxStatusAxes = 6;
+/// Override percentages above this are refused as a damaged report (GRBL's own reach 200).
+constexpr double kMaxOverridePercent = 1000;
 
 struct StatusReport {
     MachineState state = MachineState::Unknown;

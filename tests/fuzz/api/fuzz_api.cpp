@@ -5,9 +5,10 @@
 // deterministic inputs — valid request streams mutated by bit flips, truncation,
 // splicing, garbage, deep nesting, huge and odd numbers, overlong lines — or replays
 // FILEs, and exits 1 on the first violated invariant after writing the input to
-// fuzz_api-failure.bin. With -DBP_LIBFUZZER and clang -fsanitize=fuzzer the same
-// checks run as LLVMFuzzerTestOneInput (link it like the test program: Qt Core,
-// api_lib, cli_lib).
+// fuzz_api-failure.bin; `--corpus DIR` replays a kept corpus (tests/fuzz/corpus/api)
+// before the generated inputs, `--emit DIR` writes the generated inputs out as seeds.
+// Built with -DBP_LIBFUZZER=ON (clang; cmake/libfuzzer.cmake, docs/testing.md
+// "Fuzzing") the same checks run as LLVMFuzzerTestOneInput.
 //
 // Invariants on every input:
 //  - the line splitter gives the same lines fed whole, byte by byte or in random
@@ -24,6 +25,7 @@
 //    same words.
 #include "app/api/command_methods.h"
 #include "app/api/json_rpc.h"
+#include "tests/fuzz/corpus_files.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -56,15 +58,17 @@ struct Coverage {
     std::vfprintf(stderr, fmt, ap);
     va_end(ap);
     std::fputc('\n', stderr);
-#ifndef BP_LIBFUZZER
+#ifdef BP_LIBFUZZER
+    std::abort();  // libFuzzer saves the input itself
+#else
     if (g_input)
         if (std::FILE* f = std::fopen("fuzz_api-failure.bin", "wb")) {
             std::fwrite(g_input->constData(), 1, static_cast<std::size_t>(g_input->size()), f);
             std::fclose(f);
             std::fprintf(stderr, "fuzz_api: input written to fuzz_api-failure.bin; replay with: fuzz_api fuzz_api-failure.bin\n");
         }
-#endif
     std::exit(1);
+#endif
 }
 
 #define CHECK(cond, ...)     \
@@ -255,22 +259,53 @@ int main(int argc, char** argv)
     QCoreApplication app(argc, argv);
     std::uint64_t iterations = 5000, seed = 20;
     std::vector<std::string> files;
+    std::string corpus, seedDir;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--iterations") && i + 1 < argc)
             iterations = std::strtoull(argv[++i], nullptr, 10);
         else if (!std::strcmp(argv[i], "--seed") && i + 1 < argc)
             seed = std::strtoull(argv[++i], nullptr, 10);
+        else if (!std::strcmp(argv[i], "--corpus") && i + 1 < argc)
+            corpus = argv[++i];  // replayed before the generated inputs
+        else if (!std::strcmp(argv[i], "--emit") && i + 1 < argc)
+            seedDir = argv[++i];  // the generated inputs written out, as libFuzzer seeds
         else
             files.emplace_back(argv[i]);
     }
     std::mt19937_64 rng(seed);
-    if (!files.empty()) {
-        for (const auto& f : files) {
-            std::ifstream in(f, std::ios::binary);
-            const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-            checkInput(QByteArray(bytes.data(), static_cast<int>(bytes.size())), rng);
+    if (!seedDir.empty()) {
+        for (std::uint64_t k = 0; k < iterations; ++k) {
+            const QByteArray input = makeInput(rng, k);
+            if (!fuzzcorpus::write(seedDir + "/gen-" + std::to_string(k), input.constData(), static_cast<std::size_t>(input.size()))) {
+                std::fprintf(stderr, "fuzz_api: cannot write into %s\n", seedDir.c_str());
+                return 2;
+            }
         }
         return 0;
+    }
+    auto replay = [&](const std::string& f) {
+        std::string bytes;
+        if (!fuzzcorpus::read(f, bytes)) {
+            std::fprintf(stderr, "fuzz_api: cannot read %s\n", f.c_str());
+            std::exit(2);
+        }
+        checkInput(QByteArray(bytes.data(), static_cast<int>(bytes.size())), rng);
+    };
+    if (!files.empty()) {
+        for (const auto& f : files)
+            replay(f);
+        return 0;
+    }
+    if (!corpus.empty()) {
+        // A kept corpus that went missing would leave the test passing on less than it claims.
+        const auto paths = fuzzcorpus::files(corpus);
+        if (!paths || paths->empty()) {
+            std::fprintf(stderr, "fuzz_api: no corpus in %s\n", corpus.c_str());
+            return 2;
+        }
+        for (const auto& f : *paths)
+            replay(f);
+        std::printf("fuzz_api: %zu corpus inputs of %s replayed\n", paths->size(), corpus.c_str());
     }
     for (g_iteration = 0; g_iteration < iterations; ++g_iteration) {
         const QByteArray input = makeInput(rng, g_iteration);

@@ -6,13 +6,12 @@
 // generates N deterministic inputs (mutations of valid frame streams: bit flips,
 // truncation, splicing, garbage, oversize runs, retransmissions) or replays FILEs,
 // and exits 1 on the first violated invariant, after writing the input to
-// fuzz_codec-failure.bin. With -DBP_LIBFUZZER and clang -fsanitize=fuzzer the same
-// checks run as LLVMFuzzerTestOneInput; codec, simulator and motion are plain C++,
-// so from the repository root:
-//   clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -DBP_LIBFUZZER -I.
-//     -isystem /usr/include/eigen3 tests/fuzz/codec/fuzz_codec.cpp device/protocol/*.cpp
-//     device/sim/*.cpp motion/*.cpp -o fuzz_codec_lf          (one command line)
-//   ./fuzz_codec_lf -max_len=4096 CORPUS_DIR
+// fuzz_codec-failure.bin; `--corpus DIR` replays a kept corpus (tests/fuzz/corpus/codec)
+// before the generated inputs. Built with -DBP_LIBFUZZER=ON (clang; cmake/libfuzzer.cmake,
+// docs/testing.md "Fuzzing") the same checks run as LLVMFuzzerTestOneInput:
+//   ./build-libfuzzer/tests/fuzz/fuzz_codec -max_len=4096 CORPUS_DIR
+// (A single clang++ line over device/protocol, device/sim and motion/*.cpp no longer
+// links: motion has subfolders and the simulator needs them.)
 //
 // Invariants checked on every input:
 //  - the streaming decoder gives the same frames and the same stats whether fed

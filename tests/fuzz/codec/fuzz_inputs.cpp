@@ -3,6 +3,7 @@
 // -DBP_LIBFUZZER, where libFuzzer supplies main() and the inputs.
 #ifndef BP_LIBFUZZER
 #include "fuzz_support.h"
+#include "tests/fuzz/corpus_files.h"
 
 #include "device/protocol/cobs.h"
 #include "device/protocol/crc16.h"
@@ -494,14 +495,21 @@ int main(int argc, char** argv)
 {
     std::uint64_t iterations = 20000, seed = 0xB1F0C0DEC;
     std::vector<const char*> files;
+    std::string corpus, seedDir;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--iterations" && i + 1 < argc) {
             iterations = std::strtoull(argv[++i], nullptr, 10);
         } else if (a == "--seed" && i + 1 < argc) {
             seed = std::strtoull(argv[++i], nullptr, 0);
+        } else if (a == "--corpus" && i + 1 < argc) {
+            corpus = argv[++i];
+        } else if (a == "--emit" && i + 1 < argc) {
+            seedDir = argv[++i];
         } else if (a == "--help" || a == "-h") {
-            std::printf("usage: fuzz_codec [--iterations N] [--seed S] [FILE...]\n");
+            std::printf("usage: fuzz_codec [--iterations N] [--seed S] [--corpus DIR] [FILE...]\n"
+                        "       fuzz_codec --emit DIR [--iterations N] [--seed S]   (writes the generated inputs, as libFuzzer seeds)\n"
+                        "  --corpus DIR  replays every file of DIR (a kept corpus) before the N generated inputs\n");
             return 0;
         } else if (!a.empty() && a[0] == '-') {
             std::fprintf(stderr, "fuzz_codec: unknown option %s\n", a.c_str());
@@ -509,6 +517,17 @@ int main(int argc, char** argv)
         } else {
             files.push_back(argv[i]);
         }
+    }
+    if (!seedDir.empty()) {
+        Rng rng(seed);
+        for (std::uint64_t k = 0; k < iterations; ++k) {
+            const Bytes input = generate(rng);
+            if (!fuzzcorpus::write(seedDir + "/gen-" + std::to_string(k), input.data(), input.size())) {
+                std::fprintf(stderr, "fuzz_codec: cannot write into %s\n", seedDir.c_str());
+                return 2;
+            }
+        }
+        return 0;
     }
     if (!files.empty()) {
         for (const char* path : files) {
@@ -521,6 +540,23 @@ int main(int argc, char** argv)
             std::printf("fuzz_codec: %s (%zu bytes) ok\n", path, data.size());
         }
         return 0;
+    }
+    if (!corpus.empty()) {
+        // A kept corpus that went missing would leave the test passing on less than it claims.
+        const auto paths = fuzzcorpus::files(corpus);
+        if (!paths || paths->empty()) {
+            std::fprintf(stderr, "fuzz_codec: no corpus in %s\n", corpus.c_str());
+            return 2;
+        }
+        for (const std::string& path : *paths) {
+            Bytes data;
+            if (!readFile(path.c_str(), data)) {
+                std::fprintf(stderr, "fuzz_codec: cannot read %s\n", path.c_str());
+                return 2;
+            }
+            fuzzOne(data.data(), data.size());
+        }
+        std::printf("fuzz_codec: %zu corpus inputs of %s replayed\n", paths->size(), corpus.c_str());
     }
     Rng rng(seed);
     std::uint64_t bytes = 0;

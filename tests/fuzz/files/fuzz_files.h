@@ -6,11 +6,14 @@
 // every input to the target's check, which must never crash, hang or accept
 // something it cannot write back and read again the same.
 //
-//   fuzz_files [--iterations N] [--seed S] [--target NAME] [FILE...]
+//   fuzz_files [--iterations N] [--seed S] [--target NAME] [--corpus DIR] [FILE...]
 //
-// With FILEs, each is replayed through every target (or --target). With clang:
-//   clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -DBP_LIBFUZZER ...
-// and BP_FUZZ_TARGET=NAME chooses the target LLVMFuzzerTestOneInput runs.
+// With FILEs, each is replayed through every target (or --target). With --corpus DIR,
+// DIR/NAME/* (tests/fuzz/corpus/NAME, kept by libFuzzer's campaigns) is replayed before
+// NAME's mutated inputs; `--emit DIR` writes each target's seeds to DIR/NAME/. Built with
+// -DBP_LIBFUZZER=ON (clang; cmake/libfuzzer.cmake, docs/testing.md "Fuzzing") it is a
+// libFuzzer target, and BP_FUZZ_TARGET=NAME chooses the target LLVMFuzzerTestOneInput runs
+// (all of them when unset).
 #include <cstdint>
 #include <functional>
 #include <string>

@@ -1,6 +1,7 @@
 // The file-reader fuzz driver's engine: target registry, seeded mutations of
 // the targets' seed documents, replay of saved inputs, and main().
 #include "fuzz_files.h"
+#include "tests/fuzz/corpus_files.h"
 
 #include <algorithm>
 #include <cctype>
@@ -11,6 +12,7 @@
 #include <fstream>
 #include <iterator>
 #include <sstream>
+#include <sys/stat.h>
 
 namespace fuzzfiles {
 namespace {
@@ -255,9 +257,14 @@ int main(int argc, char** argv)
     std::string only;
     unsigned shard = 0, shards = 1;  // --shard K/N: every N-th target by name, so CTest runs N at once
     std::vector<std::string> files;
+    std::string corpus, seedDir;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        if (a == "--iterations" && i + 1 < argc) {
+        if (a == "--corpus" && i + 1 < argc) {
+            corpus = argv[++i];
+        } else if (a == "--emit" && i + 1 < argc) {
+            seedDir = argv[++i];
+        } else if (a == "--iterations" && i + 1 < argc) {
             iterations = std::strtoull(argv[++i], nullptr, 10);
         } else if (a == "--seed" && i + 1 < argc) {
             seed = std::strtoull(argv[++i], nullptr, 0);
@@ -269,7 +276,10 @@ int main(int argc, char** argv)
                 return 2;
             }
         } else if (a == "--help" || a == "-h") {
-            std::printf("usage: fuzz_files [--iterations N] [--seed S] [--target NAME | --shard K/N] [FILE...]\ntargets:");
+            std::printf("usage: fuzz_files [--iterations N] [--seed S] [--target NAME | --shard K/N] [--corpus DIR] [FILE...]\n"
+                        "       fuzz_files --emit DIR [--target NAME]   (writes each target's seeds to DIR/NAME/, for libFuzzer)\n"
+                        "  --corpus DIR  replays DIR/NAME/* (a kept corpus, if NAME has one) before NAME's mutated inputs\n"
+                        "targets:");
             for (const auto& t : targets())
                 std::printf(" %s", t.name.c_str());
             std::printf("\n");
@@ -296,6 +306,23 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "fuzz_files: no target named '%s'\n", only.c_str());
         return 2;
     }
+    if (!seedDir.empty()) {
+        for (const Target* t : chosen) {
+            const std::string dir = seedDir + "/" + t->name;
+            ::mkdir(dir.c_str(), 0777);
+            const std::vector<std::string> seeds = t->seeds();
+            for (std::size_t k = 0; k < seeds.size(); ++k)
+                if (!fuzzcorpus::write(dir + "/seed-" + std::to_string(k), seeds[k].data(), seeds[k].size())) {
+                    std::fprintf(stderr, "fuzz_files: cannot write into %s\n", dir.c_str());
+                    return 2;
+                }
+        }
+        return 0;
+    }
+    if (!corpus.empty() && !fuzzcorpus::files(corpus)) {
+        std::fprintf(stderr, "fuzz_files: no corpus folder %s\n", corpus.c_str());
+        return 2;
+    }
     if (!files.empty()) {
         for (const auto& path : files) {
             std::string text;
@@ -320,13 +347,25 @@ int main(int argc, char** argv)
         Rng rng(seed ^ std::hash<std::string>{}(t->name));
         for (const auto& s : seeds)
             runOne(*t, s);  // the seeds themselves, unmutated
+        std::size_t replayed = 0;
+        if (!corpus.empty())
+            if (const auto paths = fuzzcorpus::files(corpus + "/" + t->name))
+                for (const std::string& path : *paths) {
+                    std::string text;
+                    if (!fuzzcorpus::read(path, text)) {
+                        std::fprintf(stderr, "fuzz_files: cannot read %s\n", path.c_str());
+                        return 2;
+                    }
+                    runOne(*t, text);
+                    ++replayed;
+                }
         for (g_iteration = 0; g_iteration < iterations; ++g_iteration) {
             std::string input = seeds[rng.below(seeds.size())];
             mutate(rng, input, seeds);
             runOne(*t, input);
         }
-        std::printf("fuzz_files: %s: %zu seeds, %" PRIu64 " mutated inputs: all invariants held\n", t->name.c_str(),
-                    seeds.size(), iterations);
+        std::printf("fuzz_files: %s: %zu seeds, %zu corpus inputs, %" PRIu64 " mutated inputs: all invariants held\n",
+                    t->name.c_str(), seeds.size(), replayed, iterations);
     }
     return 0;
 }
