@@ -2,6 +2,7 @@
 // 1366 × 768 are common, and a window taller than the screen hides its own
 // status bar and the bottom of the screen's controls.
 #include "gui_window.h"
+#include "widgets/wording/translators.h"
 
 #include <QLayout>
 #include <QScrollArea>
@@ -21,7 +22,15 @@ QSize shortOfRoom(QWidget* window, const QString& name)
 }
 } // namespace
 
-TEST(MainWindowSize, EveryScreenFitsA1366x768Display)
+// In English and in Chinese (issue 17: Chinese text is often shorter but needs more height).
+class MainWindowSize : public ::testing::TestWithParam<const char*> {
+protected:
+    void SetUp() override { ASSERT_TRUE(translators.setLanguage(QString::fromLatin1(GetParam()))); }
+    void TearDown() override { translators.setLanguage(QStringLiteral("en")); }
+    words::Translators translators;
+};
+
+TEST_P(MainWindowSize, EveryScreenFitsA1366x768Display)
 {
     app::MainWindow w(guitest::testWindowOptions());
     w.resize(1366, 708);
@@ -70,7 +79,7 @@ QString longNamedCopy(const QTemporaryDir& dir, const char* name, const QString&
 }
 } // namespace
 
-TEST(MainWindowSize, EveryScreenInItsBusyStatesFitsA1366x768DisplayWithEStopShown)
+TEST_P(MainWindowSize, EveryScreenInItsBusyStatesFitsA1366x768DisplayWithEStopShown)
 {
     auto w = guitest::openReadyWindow(QSize(1366, 708));
     ASSERT_TRUE(w);
@@ -108,3 +117,6 @@ TEST(MainWindowSize, EveryScreenInItsBusyStatesFitsA1366x768DisplayWithEStopShow
         EXPECT_TRUE(QRect(0, 0, 1366, 708).contains(estop)) << name.toStdString() << ": E-STOP is off the screen";
     }
 }
+
+INSTANTIATE_TEST_SUITE_P(Languages, MainWindowSize, ::testing::Values("en", "zh_CN"),
+                         [](const ::testing::TestParamInfo<const char*>& p) { return std::string(p.param[0] == 'e' ? "English" : "Chinese"); });
