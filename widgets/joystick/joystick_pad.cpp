@@ -11,7 +11,9 @@ namespace ui {
 JoystickPad::JoystickPad(QWidget* parent) : QWidget(parent)
 {
     setObjectName(QStringLiteral("joystickPad"));
-    setMinimumSize(180, 180);
+    // Small enough that the screen fits 1366 × 768 in Chinese too, whose lines are taller;
+    // it grows with the room it gets.
+    setMinimumSize(168, 168);
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
     setToolTip(tr("Drag the knob: speed grows with the distance from the centre. Let go to stop."));
     setCursor(Qt::OpenHandCursor);
