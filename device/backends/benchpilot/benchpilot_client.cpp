@@ -20,7 +20,7 @@ BenchPilotClient::BenchPilotClient(QObject* parent)
       m_compensation(new ProtocolCompensationClient(this, this))
 {
     m_clock.start();
-    m_timeoutTimer.setInterval(20);
+    m_timeoutTimer.setInterval(kCheckPeriodMs);
     connect(&m_timeoutTimer, &QTimer::timeout, this, &BenchPilotClient::checkTimeouts);
     m_statusTimer.setInterval(kStatusPollMs);
     connect(&m_statusTimer, &QTimer::timeout, this, &BenchPilotClient::pollStatus);

@@ -45,8 +45,9 @@ public:
     /// While connecting, frames that arrive damaged also show a device answering: the
     /// handshake then goes on for up to this long before it says the device does not answer.
     static constexpr int kConnectGiveUpMs = 10000;
-    /// A timeout check this long after the last one (twice its 20 ms period) finds the
-    /// event loop was held up.
+    /// Timeouts are checked this often; a check this much later than the last one (twice
+    /// the period) finds the event loop was held up.
+    static constexpr int kCheckPeriodMs = 20;
     static constexpr int kStallMs = 40;
     static constexpr int kStatusPollMs = 50;
     static constexpr int kJogRefreshMs = 50;   ///< 20 Hz, four refreshes per device watchdog period
@@ -121,6 +122,7 @@ private:
         qint64 deadlineMs = 0;
         RawDone done;
         bool realtime = false;
+        bool heldUp = false;  ///< waited through a hold-up of the host: its round trip is no measure
     };
 
     void setState(LinkState s);
@@ -177,7 +179,6 @@ private:
     std::array<std::uint16_t, 32> m_recentEvents{};  ///< sequence numbers of the last events, to drop a duplicated one
     std::size_t m_recentEventCount = 0, m_recentEventNext = 0;
     qint64 m_lastCheckMs = 0;              ///< when checkTimeouts() last ran
-    bool m_skippedStalledCheck = false;
     qint64 m_lastFrameMs = -1;            ///< when a good frame (reply, event, telemetry) last arrived
     qint64 m_lastDamagedFrameMs = -1;     ///< when a frame with a bad CRC or shape last arrived
     qint64 m_connectStartedMs = 0;        ///< when the transport opened and HELLO went out

@@ -158,17 +158,28 @@ void BenchPilotClient::checkTimeouts()
     const qint64 now = nowMs();
     // After the event loop was held up (a busy GUI thread, a slow machine) the device's
     // answers of that time wait in the queue behind this tick; the in-process simulator
-    // has not even run yet. Deciding now would resend what is answered already, or call
-    // a device that talked all along silent. One tick is skipped so they are read first;
-    // only one, so a loop that is always late still retries and still notices silence.
-    const bool stalled = m_lastCheckMs > 0 && now - m_lastCheckMs > kStallMs;
+    // has not even run yet. Time the host spent held up is not time the device took:
+    // every waiting request's clocks move on by the hold-up, so nothing is resent and no
+    // device is called silent for it. A loop that is always late still gains 20 ms a tick.
+    const qint64 heldMs = m_lastCheckMs > 0 ? now - m_lastCheckMs - kCheckPeriodMs : 0;
     m_lastCheckMs = now;
-    if (stalled && !m_skippedStalledCheck) {
-        m_skippedStalledCheck = true;
+    if (heldMs > kStallMs - kCheckPeriodMs) {
         ++m_stats.stalls;
-        return;
+        auto postpone = [heldMs](Request& r) {
+            r.deadlineMs += heldMs;
+            r.firstSentMs += heldMs;
+            r.heldUp = true;
+        };
+        if (m_inFlight && !m_queue.empty())
+            postpone(m_queue.front());
+        for (auto& [seq, r] : m_realtime)
+            postpone(r);
+        if (m_lastFrameMs >= 0)
+            m_lastFrameMs = std::min(m_lastFrameMs + heldMs, now);
+        if (m_lastDamagedFrameMs >= 0)
+            m_lastDamagedFrameMs = std::min(m_lastDamagedFrameMs + heldMs, now);
+        m_connectStartedMs += heldMs;
     }
-    m_skippedStalledCheck = false;
     // The device is silent when a request has waited longer than kSilenceLimitMs and no
     // good frame (reply, event, telemetry) came in that time. Corrupted frames do not
     // count: a line at the wrong baud rate is all garbage.
@@ -360,7 +371,9 @@ void BenchPilotClient::onFrame(const proto::Frame& f)
             }
         return;
     }
-    if (r.attempts == 1) {
+    if (r.heldUp) {
+        // Its clocks were moved on by a hold-up of the host: no measure of the line.
+    } else if (r.attempts == 1) {
         // Karn's rule: only a request sent once gives an unambiguous round trip.
         addRttSample(static_cast<double>(nowMs() - r.firstSentMs));
     } else {
