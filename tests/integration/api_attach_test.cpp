@@ -18,15 +18,7 @@ itest::ProgramRun runCli(const QStringList& args)
     itest::ProgramRun r;
     if (!p.waitForStarted(10000))
         return r;
-    r.finished = itest::waitFor([&] { return p.state() == QProcess::NotRunning; }, 60000);
-    if (!r.finished) {
-        p.kill();
-        p.waitForFinished(5000);
-    }
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return itest::collectRun(p, itest::waitFor([&] { return p.state() == QProcess::NotRunning; }, 60000));
 }
 
 TEST(ApiAttach, TheSameCommandGivesTheSameOutputAndExitCodeThroughTheGui)

@@ -151,6 +151,17 @@ inline bool ptyHome(const QString& port, Outcome& o)
     return false;
 }
 
+/// How the runs ended, after a first run that may have been killed.
+inline void endOutcome(Outcome& o, bool finished, const char* failure)
+{
+    if (o.end != "killed" || !finished)
+        o.end = finished ? "finished" : (o.end == "killed" ? "killed-not-finished" : "stopped");
+    else
+        o.end = "killed+resumed";
+    if (!finished)
+        o.fail(failure);
+}
+
 /// How a first CLI process is cut: killed (SIGKILL) or the cable pulled, after `after`
 /// wells or tiles are in its log; `after` < 0: not cut.
 struct Cut {
@@ -178,15 +189,7 @@ inline itest::ProgramRun firstRun(PtyLine& line, const QStringList& args, const 
             }
         }
     }
-    r.finished = p.waitForFinished(180000);
-    if (!r.finished) {
-        p.kill();
-        p.waitForFinished(5000);
-    }
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return itest::collectRun(p, p.waitForFinished(180000));
 }
 
 // ---- recipe through real ptys: every well once, never twice; the plunger accounted for ----
@@ -244,12 +247,7 @@ inline Outcome ptyRecipe(double rate, std::uint64_t seed, const std::string& wel
                 o.why += ",last:" + lastLine(r.err);
         }
     }
-    if (o.end != "killed" || !finished)
-        o.end = finished ? "finished" : (o.end == "killed" ? "killed-not-finished" : "stopped");
-    else
-        o.end = "killed+resumed";
-    if (!finished)
-        o.fail("the run did not finish");
+    endOutcome(o, finished, "the run did not finish");
 
     // The client's record agrees: every well closed exactly once.
     const platestest::LogCounts lc = platestest::countLog(log);
@@ -348,12 +346,7 @@ inline Outcome ptyScan(double rate, std::uint64_t seed, double sideMm, const Cut
                 o.why += ",last:" + lastLine(r.err);
         }
     }
-    if (o.end != "killed" || !finished)
-        o.end = finished ? "finished" : (o.end == "killed" ? "killed-not-finished" : "stopped");
-    else
-        o.end = "killed+resumed";
-    if (!finished)
-        o.fail("the scan did not finish");
+    endOutcome(o, finished, "the scan did not finish");
     const auto l = logged();
     std::map<int, int> taken;  // from the run log; a tile printed twice is taken twice too
     int tiles = 0;

@@ -32,6 +32,22 @@ struct ProgramRun {
     }
 };
 
+/// What a started program left: its exit code and output. One that has not `finished`
+/// is killed first (and its exit code is then -1).
+inline ProgramRun collectRun(QProcess& p, bool finished)
+{
+    ProgramRun r;
+    r.finished = finished;
+    if (!finished) {
+        p.kill();
+        p.waitForFinished(5000);
+    }
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
 /// Runs a program to completion (killed after `timeoutMs`); `env` replaces the environment when not empty.
 inline ProgramRun runProgram(const QString& program, const QStringList& args, int timeoutMs = 60000,
                              const QProcessEnvironment& env = {})
@@ -45,15 +61,7 @@ inline ProgramRun runProgram(const QString& program, const QStringList& args, in
         r.err = QStringLiteral("could not start %1: %2").arg(program, p.errorString());
         return r;
     }
-    r.finished = p.waitForFinished(timeoutMs);
-    if (!r.finished) {
-        p.kill();
-        p.waitForFinished(5000);
-    }
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return collectRun(p, p.waitForFinished(timeoutMs));
 }
 
 } // namespace itest
