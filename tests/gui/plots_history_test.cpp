@@ -6,7 +6,6 @@
 #include "app/gui/main_window.h"
 #include "device/telemetry/telemetry_hub.h"
 #include "gui_wait.h"
-#include "widgets/channel_picker.h"
 #include "widgets/plot_panel.h"
 #include "widgets/plot_stack.h"
 #include "widgets/plots_screen.h"
@@ -91,35 +90,32 @@ protected:
 
 TEST_F(PlotsHistoryTest, AChannelTickedAfterTheMotionShowsTheSamplesFromBefore)
 {
-    ui::ChannelPicker* picker = screen->picker();
-    picker->setCurrentPlot(1);
-    ASSERT_TRUE(picker->setChecked(stageXError, false));
+    ASSERT_TRUE(waitFor([&] { return hub->store(stageXError) && hub->store(stageXError)->size() > 20; }, 5000)) << "plotted, streaming";
+    ASSERT_TRUE(screen->removeChannel(1, stageXError));  // what unticking it in the picker does
     ASSERT_TRUE(waitFor([&] { return hub->store(stageXError) == nullptr; }, 3000)) << "no plot wants it now";
+    const double untickedAtS = hub->latestTimeS(1);
 
-    stage()->startJog(0, 5.0);
+    stage()->jogStep(0, 5.0, 20.0);  // a 5 mm step, as the device tests move the unhomed stage
     pump(1500);
-    stage()->stopJog(0);
-    pump(300);
     ASSERT_NE(hub->historyStore(stageXError), nullptr) << "recorded all the same";
 
-    ASSERT_TRUE(picker->setChecked(stageXError, true));
+    ASSERT_TRUE(screen->addChannel(1, stageXError));
     const QCPGraph* g = nullptr;
     ASSERT_TRUE(waitFor([&] {
         g = screen->stack()->panel(1)->graph(stageXError);
         return g && g->dataCount() > 0;
     }, 3000));
     const Drawn d = drawn(g);
-    EXPECT_LT(d.oldestX, -1.5) << "the plot reaches back past the moment it was ticked, into the jog";
+    EXPECT_LT(screen->stack()->anchorS(1) + d.oldestX, untickedAtS - 0.05)
+        << "samples from before it was unticked are drawn (a live store made at the tick cannot hold them); " << d.oldestX << " s";
 }
 
 TEST_F(PlotsHistoryTest, OpeningThePlotsAfterAnIncidentShowsWhatHappenedWhileAnotherScreenWasUp)
 {
     w->showScreen(QStringLiteral("profiles"));
     ASSERT_TRUE(waitFor([&] { return hub->store(stageXMeasured) == nullptr; }, 3000)) << "nobody looks: no live store";
-    stage()->startJog(0, 5.0);
-    pump(1200);
-    stage()->stopJog(0);
-    pump(300);
+    stage()->jogStep(0, 5.0, 20.0);
+    pump(1500);
 
     w->showScreen(QStringLiteral("plots"));
     const QCPGraph* g = nullptr;
@@ -127,7 +123,11 @@ TEST_F(PlotsHistoryTest, OpeningThePlotsAfterAnIncidentShowsWhatHappenedWhileAno
         g = screen->stack()->panel(0)->graph(stageXMeasured);
         return g && drawn(g).points > 10;
     }, 3000));
-    EXPECT_GT(drawn(g).spread, 2.0) << "the jog (about 6 mm) is on the plot though no plot was shown while it ran";
+    const tele::ChannelStore* kept = hub->historyStore(stageXMeasured);
+    ASSERT_NE(kept, nullptr);
+    EXPECT_GT(kept->at(kept->size() - 1).value - kept->at(0).value, 2.0f) << "recorded while no plot was shown";
+    EXPECT_GT(drawn(g).spread, 2.0) << "the 5 mm step is on the plot though no plot was shown while it ran: "
+                                    << drawn(g).oldestX << " s back, " << drawn(g).points << " points";
     EXPECT_TRUE(screen->statusText().contains(QStringLiteral("recorded"))) << screen->statusText().toStdString();
 }
 
@@ -136,9 +136,8 @@ TEST_F(PlotsHistoryTest, HistoryExportHasEveryAxisColumnWithData)
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("history.csv"));
     screen->setFileChooser([&](const QString&, const QString&) { return path; });
-    stage()->startJog(1, 5.0);
+    stage()->jogStep(1, 2.0, 20.0);
     pump(800);
-    stage()->stopJog(1);
     ASSERT_TRUE(waitFor([&] { return hub->historySpanS(0) > 0.5 && hub->historySpanS(1) > 0.5; }, 5000));
 
     auto* history = screen->findChild<QPushButton*>(QStringLiteral("historyButton"));
