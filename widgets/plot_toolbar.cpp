@@ -70,7 +70,8 @@ PlotToolbar::PlotToolbar(int rateHz, qint64 rawCsvLimit, QWidget* parent)
     exportPdf->setToolTip(tr("Export the plots as a vector PDF"));
     bar->addWidget(record);
     bar->addSpacing(8);
-    bar->addWidget(new QLabel(tr("Export"), this));
+    // No "Export" label before the export buttons: their names say it, and the room
+    // went to History… (the screen must fit 1366 px, issue 16 item 4).
     for (QPushButton* b : {exportCsv, exportPng, exportPdf})
         bar->addWidget(b);
 

@@ -6013,10 +6013,6 @@ Keep that log aside and start this test afresh?</source>
         <translation>将曲线导出为矢量 PDF</translation>
     </message>
     <message>
-        <source>Export</source>
-        <translation>导出</translation>
-    </message>
-    <message>
         <source>History…</source>
         <translation>历史…</translation>
     </message>
