@@ -42,7 +42,8 @@ class HubPlotSource final : public PlotDataSource {
 public:
     explicit HubPlotSource(const tele::TelemetryHub* hub = nullptr) : m_hub(hub) {}
     void setHub(const tele::TelemetryHub* hub) { m_hub = hub; }
-    const tele::ChannelStore* store(const tele::ChannelKey& key) const override { return m_hub ? m_hub->store(key) : nullptr; }
+    /// The live store, or the recorded history when it reaches further back (TelemetryHub::viewStore).
+    const tele::ChannelStore* store(const tele::ChannelKey& key) const override { return m_hub ? m_hub->viewStore(key) : nullptr; }
     QString channelName(const tele::ChannelKey& key) const override { return m_hub ? m_hub->channelName(key) : QString(); }
     QString channelUnit(const tele::ChannelKey& key) const override { return m_hub ? m_hub->channelUnit(key) : QString(); }
     double latestTimeS(int instrument) const override { return m_hub ? m_hub->latestTimeS(instrument) : std::nan(""); }

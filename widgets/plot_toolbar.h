@@ -5,6 +5,7 @@
 #include <QWidget>
 
 class QComboBox;
+class QMenu;
 class QPushButton;
 
 namespace ui {
@@ -27,6 +28,10 @@ public:
     QPushButton* const exportCsv;
     QPushButton* const exportPng;
     QPushButton* const exportPdf;
+    /// Export of the recorded history (every instrument's positions and following
+    /// errors, shown or not); its menu's actions carry the span in seconds (0: all).
+    QPushButton* const exportHistory;
+    QMenu* const historySpans;
 };
 
 } // namespace ui

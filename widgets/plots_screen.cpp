@@ -17,6 +17,7 @@
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QMenu>
 #include <QPushButton>
 #include <QSplitter>
 #include <QStandardPaths>
@@ -155,6 +156,9 @@ void PlotsScreen::buildToolbar(QHBoxLayout* bar)
     m_exportCsv = tools->exportCsv;
     m_exportPng = tools->exportPng;
     m_exportPdf = tools->exportPdf;
+    m_exportHistory = tools->exportHistory;
+    m_exportHistory->setVisible(m_hub && m_hub->historyEnabled());
+    connect(tools->historySpans, &QMenu::triggered, this, [this](QAction* a) { exportHistory(a->data().toDouble()); });
     connect(m_window, qOverload<int>(&QComboBox::activated), this, [this](int i) { setWindowS(m_window->itemData(i).toDouble()); });
     connect(m_rate, qOverload<int>(&QComboBox::activated), this, [this] { updateWanted(); });
     connect(m_pause, &QPushButton::toggled, this, &PlotsScreen::setPaused);
@@ -437,6 +441,9 @@ QString PlotsScreen::statusText() const
             s += QStringLiteral(" · <i>%1</i>").arg(note.toHtmlEscaped());
         parts << s;
     }
+    const QString history = historyText();
+    if (!history.isEmpty())
+        parts << history.toHtmlEscaped();
     if (m_paused)
         parts << tr("<b>paused</b>");
     if (m_hub->recording())
@@ -516,6 +523,46 @@ bool PlotsScreen::exportPdf(const QString& path)
         return false;
     }
     tell(tr("Saved the plots to %1").arg(QDir::toNativeSeparators(file)), false);
+    return true;
+}
+
+QString PlotsScreen::historyText() const
+{
+    if (!m_hub || !m_hub->historyEnabled())
+        return QString();
+    double spanS = 0;
+    bool heldBack = false;
+    for (int i : m_hub->instruments()) {
+        spanS = std::max(spanS, m_hub->historySpanS(i));
+        heldBack = heldBack || m_hub->historyHeldBack(i);
+    }
+    const int s = static_cast<int>(spanS);
+    const QString span = s >= 60 ? tr("%1 min %2 s").arg(s / 60).arg(s % 60) : tr("%1 s").arg(s);
+    QString text = tr("last %1 recorded").arg(span);
+    if (heldBack)
+        text += tr(" (plotted channels only: the link carries no more)");
+    return text;
+}
+
+bool PlotsScreen::exportHistory(double spanS, const QString& path)
+{
+    if (!m_hub || !m_hub->historyEnabled())
+        return false;
+    const QString file = path.isEmpty() ? chooseFile(tr("Export the recorded history as CSV"), tr("CSV files (*.csv)"), QStringLiteral("csv")) : path;
+    if (file.isEmpty())
+        return false;
+    QDir().mkpath(QFileInfo(file).absolutePath());
+    msg::Message error;
+    quint64 rows = 0;
+    if (!m_hub->exportHistory(file, spanS, &error, &rows)) {
+        tell(words::text(error), true);
+        return false;
+    }
+    tell(tr("Exported %1 rows of recorded history (%2 channels) to %3")
+             .arg(rows)
+             .arg(m_hub->historyChannels().size())
+             .arg(QDir::toNativeSeparators(file)),
+         false);
     return true;
 }
 

@@ -1,7 +1,10 @@
 #pragma once
 // The Plots screen: stacked live plots of both instruments' telemetry on one
 // time axis, a channel picker, two cursors with their readout, the XY path of
-// the stage, recording to CSV and export of the view (CSV, PNG, PDF).
+// the stage, recording to CSV, export of the view (CSV, PNG, PDF) and of the
+// recorded history (every instrument's positions and following errors, kept by the
+// hub from connection on whether or not a plot shows them; plots draw it too, so a
+// channel ticked after an incident shows what happened before).
 //
 // Data comes from the telemetry hub; the screen only says what it wants
 // (setWanted) and reads the stores when it draws. It wants its channels while it
@@ -74,6 +77,11 @@ public:
     bool exportCsv(const QString& path = {});
     bool exportPng(const QString& path = {});
     bool exportPdf(const QString& path = {});
+    /// The recorded history (every instrument's positions and following errors, shown
+    /// or not) of the last spanS seconds (≤ 0: all) as CSV; an empty path asks the chooser.
+    bool exportHistory(double spanS, const QString& path = {});
+    /// "last 4 min 12 s recorded": the longest history an instrument holds (empty without history).
+    QString historyText() const;
     bool startRecording(const QString& path = {});
     void stopRecording();
 
@@ -128,6 +136,7 @@ private:
     QPushButton* m_exportCsv;
     QPushButton* m_exportPng;
     QPushButton* m_exportPdf;
+    QPushButton* m_exportHistory;
     QLabel* m_status;
     QLabel* m_message;
     QTimer m_frame;        ///< single shot: the coalesced next frame

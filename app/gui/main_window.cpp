@@ -81,6 +81,9 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     m_sessions[0] = new InstrumentSession(proto::DeviceKind::Analyzer, tr("Analyzer"), this);
     m_sessions[1] = new InstrumentSession(proto::DeviceKind::Stage, tr("Stage"), this);
     m_hub = new tele::TelemetryHub(this);
+    // Every instrument's positions and following errors from connection on, shown or
+    // not, so "what just happened?" can be answered on the Plots screen (issue 16 item 8).
+    m_hub->enableHistory();
     for (int i = 0; i < 2; ++i)
         m_hub->addInstrument(i, m_sessions[i]->name(), m_sessions[i]->instrument());
     // The screens drive the instruments through the API's gate: while a script holds

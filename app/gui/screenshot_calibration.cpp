@@ -26,10 +26,7 @@ bool showCalibrationAtWork(MainWindow& w, const QString& scratchFolder)
 {
     ui::CalibrationScreen* screen = w.calibrationScreen();
     dev::Instrument* stage = w.stage()->instrument();
-    // Unpaced: a clock sped up over a paced link outruns its wire (SimulatorHost::setTimeScale).
-    ui::ConnectionChoice choice;
-    choice.baud = 0;
-    w.stage()->connectTo(choice);
+    w.stage()->connectTo(ui::ConnectionChoice{});
     if (!runUntil([&] { return stage->isReady(); }, 5000))
         return false;
     auto* link = qobject_cast<dev::SimulatedLink*>(w.stage()->link());

@@ -97,7 +97,7 @@ void LoopbackPair::transmit(int from, const QByteArray& input, bool applyFaults)
         m_pending.push_back({due, to, bytes});
     } else {
         // Pace in small pieces so a long burst trickles in as it would off a UART.
-        const qint64 byteNs = qint64(10) * 1000000000 / m_baud;
+        const auto byteNs = static_cast<qint64>(10e9 / (static_cast<double>(m_baud) * m_timeScale));
         qint64 t = std::max(now, m_lineFreeNs[from]);
         for (int i = 0; i < bytes.size(); i += 32) {
             const QByteArray piece = bytes.mid(i, 32);

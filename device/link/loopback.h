@@ -22,6 +22,11 @@ public:
 
     Transport* end(Side side);
     qint32 baud() const { return m_baud; }
+    /// Wire seconds per wall-clock second: a simulator whose clock runs `scale` times
+    /// faster than the wall gets a wire that carries `scale` times the bytes, so what
+    /// the firmware budgets per second of its link still fits (SimulatorHost::setTimeScale).
+    void setTimeScale(double scale) { m_timeScale = scale > 0 ? scale : 1.0; }
+    double timeScale() const { return m_timeScale; }
     /// Faults applied to what `from` sends.
     void setFaults(Side from, const LinkFaults& faults) { m_lines[from].setFaults(faults); }
     const LinkFaults& faults(Side from) const { return m_lines[from].faults(); }
@@ -51,6 +56,7 @@ private:
     void schedule();
 
     qint32 m_baud;
+    double m_timeScale = 1.0;
     Transport* m_ends[2];
     FaultyLine m_lines[2];            ///< what each side's writes suffer
     qint64 m_hungUntilNs = 0;

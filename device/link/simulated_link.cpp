@@ -102,6 +102,7 @@ SimulatedLink::SimulatedLink(const sim::MachineConfig& config, qint32 baud, QObj
     : QObject(parent), m_pair(new LoopbackPair(baud, this))
 {
     m_host = new SimulatorHost(config, baud, m_pair->end(LoopbackPair::B), this);
+    connect(m_host, &SimulatorHost::timeScaleChanged, m_pair, &LoopbackPair::setTimeScale);
     m_host->start();
 }
 
@@ -109,6 +110,7 @@ SimulatedLink::SimulatedLink(std::unique_ptr<sim::SerialDevice> device, qint32 b
     : QObject(parent), m_pair(new LoopbackPair(baud, this))
 {
     m_host = new SimulatorHost(std::move(device), m_pair->end(LoopbackPair::B), this);
+    connect(m_host, &SimulatorHost::timeScaleChanged, m_pair, &LoopbackPair::setTimeScale);
     m_host->start();
 }
 

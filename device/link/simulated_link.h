@@ -27,20 +27,25 @@ public:
     sim::Firmware& firmware() { return *m_firmware; }
     sim::SerialDevice& device() { return *m_device; }
     /// Virtual seconds per wall-clock second. The firmware budgets telemetry per
-    /// virtual second of its link, so over a baud-paced LoopbackPair a scale
-    /// above 1 sends more than the wire carries and replies queue behind samples:
-    /// speed the clock up only over an unpaced pair (baud 0) or a pty.
+    /// virtual second of its link; over a SimulatedLink the wire runs at the same
+    /// scale (LoopbackPair::setTimeScale), so a sped-up device never sends more
+    /// than its wire carries and its replies do not queue behind samples.
     void setTimeScale(double scale)
     {
         m_timeScale = scale;
         // A quiet host is judged on its own clock: 1 s of wall time is `scale` s here.
         if (m_firmware)
             m_firmware->setHostSilenceLimitS(proto::kPathHostSilenceMs / 1000.0 * std::max(1.0, scale));
+        emit timeScaleChanged(scale);
     }
+    double timeScale() const { return m_timeScale; }
     /// Stops the clock; `advance()` then moves virtual time by hand (deterministic tests).
     void setManualClock(bool manual);
     void advance(double dtS);
     void start();
+
+signals:
+    void timeScaleChanged(double scale);
 
 private:
     void pump();

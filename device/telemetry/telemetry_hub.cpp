@@ -72,6 +72,8 @@ void TelemetryHub::addInstrument(int index, const QString& name, dev::Instrument
             disconnect(c);
     Instrument& in = m_instruments[index];
     in = Instrument{};
+    if (m_history)
+        m_history->forget(index);  // another instrument at this index: its history is not this one's
     in.name = name;
     in.client = client;
     if (client) {

@@ -11,7 +11,9 @@
 // deleted when nobody wants its channel any more.
 #include "device/client/instrument.h"
 #include "device/telemetry/channel_store.h"
+#include "device/telemetry/history_recorder.h"
 
+#include <QElapsedTimer>
 #include <QFile>
 #include <QHash>
 #include <QObject>
@@ -99,7 +101,8 @@ public:
     bool paused() const { return m_paused; }
     /// Device time of the instrument's newest sample when the pause began (NaN if none yet).
     double pausedAtS(int instrument) const;
-    /// Newest device time seen from the instrument (NaN before the first batch).
+    /// Newest time seen from the instrument (NaN before the first batch), on its time
+    /// line: the device clock, moved on past a gap when that clock starts again.
     double latestTimeS(int instrument) const;
     /// Samples (per sample time, all channels) the device sent that never arrived:
     /// gaps in the batches' sample counter, the same rule as the client's.
@@ -122,6 +125,33 @@ public:
     quint64 recordedRows() const;
     static constexpr int kRecordFlushBytes = 64 * 1024;
     static constexpr int kRecordFlushMs = 500;
+
+    // ---- history: the flight recorder (issue 16 item 8, docs/telemetry.md "History") ----
+    /// From now on every instrument, once identified, streams HistoryRecorder::recordedKinds()
+    /// of every axis (at the rate others want, or kDefaultRateHz alone) and the hub keeps
+    /// them within `budget` whether or not anyone wants them. Off until called: a hub in a
+    /// test or a bench streams only what is wanted; the application turns it on.
+    void enableHistory(const HistoryBudget& budget = {});
+    bool historyEnabled() const { return m_history != nullptr; }
+    /// nullptr without history; read-only (stores, span, memory).
+    const HistoryRecorder* history() const { return m_history.get(); }
+    /// nullptr before the channel's first recorded sample.
+    const ChannelStore* historyStore(const ChannelKey& key) const;
+    /// What a plot should draw: the live store while it covers the window (full rate),
+    /// else the recorded history when that reaches further back (a channel just added,
+    /// a screen opened after an incident); nullptr when neither has anything.
+    const ChannelStore* viewStore(const ChannelKey& key) const;
+    /// Every recorded channel of every instrument (instrument, axis, kind order).
+    QVector<ChannelKey> historyChannels() const;
+    /// Newest minus oldest recorded time of the instrument (0 when nothing is recorded).
+    double historySpanS(int instrument) const;
+    /// The link cannot carry the history's channels besides what the screens want: those
+    /// the screens do not show are not recorded now (the rest is).
+    bool historyHeldBack(int instrument) const;
+    /// Writes every recorded channel's last spanS seconds (≤ 0: all) to a CSV file
+    /// (atomically), the recording's format: `time_s,instrument,<name> [<unit>],…`, one
+    /// row per kept sample time of one instrument; time_s is the instrument's time line.
+    bool exportHistory(const QString& csvPath, double spanS, msg::Message* error, quint64* rows = nullptr) const;
 
 signals:
     /// New samples for the instrument: at most once per event-loop turn.
@@ -165,6 +195,12 @@ private:
         std::uint32_t nextSampleIndex = 0;
         bool haveSampleIndex = false;
         bool dirty = false;
+        /// Added to device times: 0 until the device's clock starts again, then what
+        /// continues the instrument's time line after the gap (nothing recorded is dropped).
+        double offsetS = 0;
+        QElapsedTimer sinceBatch;  ///< host time since the last batch: the length of that gap
+        /// The last subscription left the history-only channels out: the link could not carry them too.
+        bool historyShed = false;
         Instrument();
     };
     struct Want {
@@ -186,6 +222,9 @@ private:
     enum class Limit { None, Link, SampleClock };
     void subscribe(int index, const QVector<proto::ChannelRef>& channels, int rateHz, int wantedHz, int attempt,
                    Limit limit, int statedHz);
+    /// Channels only the history wants (not a consumer, not the recording), sorted.
+    QVector<proto::ChannelRef> historyOnly(int index, const QVector<proto::ChannelRef>& channels) const;
+    bool recordsKind(proto::ChannelKind kind) const;
     void dropUnwantedStores(int index);
     std::size_t capacityFor(double periodS) const;
     ChannelStore* storeFor(Instrument& in, const proto::ChannelRef& ref, double periodS);
@@ -207,6 +246,7 @@ private:
     bool m_emitScheduled = false;
     std::vector<float> m_scratch;  ///< one batch of one channel in store units
     std::unique_ptr<Recording> m_record;
+    std::unique_ptr<HistoryRecorder> m_history;
     QTimer m_flushTimer;
 };
 

@@ -153,18 +153,20 @@ void TelemetryHub::onBatch(int index, const proto::TelemetryBatch& batch)
     const std::size_t nc = batch.channels.size();
     if (n == 0 || nc == 0 || batch.values.size() < n * nc || (n > 1 && batch.periodUs == 0))
         return;
-    const double t0 = static_cast<double>(batch.firstSampleTimeUs) * 1e-6;
+    const double deviceT0 = static_cast<double>(batch.firstSampleTimeUs) * 1e-6;
     const double period = static_cast<double>(batch.periodUs) * 1e-6;
-    const double tLast = t0 + static_cast<double>(n - 1) * period;
+    double t0 = deviceT0 + in.offsetS;
     if (!std::isnan(in.latestS) && t0 < in.latestS - period) {
-        // Older than what we have: the device restarted its clock (power cycle).
-        for (auto& [ref, c] : in.stores)
-            c.store->clear();
-        in.latestS = kNaN;
-        if (m_paused)
-            in.pausedAtS = kNaN;
+        // Older than what we have: the device restarted its clock (power cycle). Its
+        // time line goes on after the gap the host saw, so what the stores and the
+        // history hold stays where it was and the new samples follow it (a gap shows).
+        const double gapS = in.sinceBatch.isValid() ? static_cast<double>(in.sinceBatch.elapsed()) * 1e-3 : 0.0;
+        in.offsetS = in.latestS + std::max({period, gapS, 1e-6}) - deviceT0;
+        t0 = deviceT0 + in.offsetS;
         emit problem(msg::make("telemetry.clock_restarted", {msg::verbatim("instrument", in.name.toStdString())}));
     }
+    in.sinceBatch.start();
+    const double tLast = t0 + static_cast<double>(n - 1) * period;
     if (std::isnan(in.latestS) || tLast > in.latestS)
         in.latestS = tLast;
     if (m_paused && std::isnan(in.pausedAtS))
@@ -176,9 +178,10 @@ void TelemetryHub::onBatch(int index, const proto::TelemetryBatch& batch)
     m_scratch.resize(n);
     for (std::size_t c = 0; c < nc; ++c) {
         const proto::ChannelRef ref = batch.channels[c];
-        if (std::find(in.collected.begin(), in.collected.end(), ref) == in.collected.end())
+        const bool live = std::find(in.collected.begin(), in.collected.end(), ref) != in.collected.end();
+        const bool keep = recordsKind(ref.kind);
+        if (!live && !keep)
             continue;
-        ChannelStore* s = storeFor(in, ref, period);
         const double factor = unitFactor(ChannelKey{index, ref});
         const std::int32_t* v = batch.values.data() + c;
         if (client)
@@ -187,6 +190,11 @@ void TelemetryHub::onBatch(int index, const proto::TelemetryBatch& batch)
         else
             for (std::size_t k = 0; k < n; ++k)
                 m_scratch[k] = static_cast<float>(v[k * nc] * factor);
+        if (keep)  // the history is never frozen: a pause is a view, not a stop
+            m_history->record(index, ref, batch.firstSampleIndex, t0, period, m_scratch.data(), n);
+        if (!live)
+            continue;
+        ChannelStore* s = storeFor(in, ref, period);
         std::size_t take = n;
         if (m_paused) {
             // The frozen range is never overwritten: what does not fit waits outside.

@@ -71,6 +71,12 @@ void TelemetryHub::unionFor(int index, QVector<proto::ChannelRef>& channels, int
     for (const auto& ref : in->collected)
         if (available.contains(ChannelKey{index, ref}))
             channels.push_back(ref);
+    // The history's channels ride along at whatever rate the others want; alone they
+    // are streamed at the default rate (as the recording's are).
+    for (const auto& k : available)
+        if (recordsKind(k.ref.kind) && !channels.contains(k.ref))
+            channels.push_back(k.ref);
+    std::sort(channels.begin(), channels.end(), refLess);
     for (auto it = m_wants.cbegin(); it != m_wants.cend(); ++it) {
         if (it.key() == kRecordingConsumer)
             continue;
@@ -149,6 +155,19 @@ void TelemetryHub::subscribe(int index, const QVector<proto::ChannelRef>& channe
             const bool overCapacity = err->kind == dev::RequestError::Kind::Device
                 && (err->code == proto::ErrorCode::OverCapacity || err->code == proto::ErrorCode::OutOfRange);
             const int stated = static_cast<int>(err->value);
+            if (err->kind == dev::RequestError::Kind::Device && err->code == proto::ErrorCode::OverCapacity) {
+                // History never costs a screen its rate: first leave out what only the
+                // history wants (its channels get a gap until the wants change again).
+                const QVector<proto::ChannelRef> shed = self->historyOnly(index, channels);
+                if (!shed.isEmpty() && shed.size() < channels.size()) {
+                    QVector<proto::ChannelRef> rest;
+                    for (const auto& ref : channels)
+                        if (!shed.contains(ref))
+                            rest.push_back(ref);
+                    self->subscribe(index, rest, rateHz, wantedHz, attempt, limit, statedHz);
+                    return;
+                }
+            }
             if (overCapacity && stated > 0 && attempt < kMaxFallbacks && i->client) {
                 // The device states the fastest rate it carries, floored to whole Hz.
                 // Its sample clock divides into whole ticks and serves a request with
@@ -177,6 +196,8 @@ void TelemetryHub::subscribe(int index, const QVector<proto::ChannelRef>& channe
             return;
         }
         i->subscribed = reply.rateHz ? channels : QVector<proto::ChannelRef>{};
+        i->historyShed = !self->historyOnly(index, i->desired).isEmpty()
+            && self->historyOnly(index, channels).size() < self->historyOnly(index, i->desired).size();
         i->subscribedRateHz = static_cast<int>(reply.rateHz);
         i->haveSampleIndex = false;  // a new subscription restarts the device's sample counter
         msg::Message note;
@@ -212,6 +233,30 @@ void TelemetryHub::onStateChanged(int index, dev::LinkState state)
         scheduleApply();
     else if (wasStreaming)
         emit subscriptionChanged(index, 0, msg::make("telemetry.link_state", {msg::term("state", dev::linkStateTerm(state))}));
+}
+
+bool TelemetryHub::recordsKind(proto::ChannelKind kind) const
+{
+    if (!m_history)
+        return false;
+    const auto& kinds = HistoryRecorder::recordedKinds();
+    return std::find(kinds.begin(), kinds.end(), kind) != kinds.end();
+}
+
+QVector<proto::ChannelRef> TelemetryHub::historyOnly(int index, const QVector<proto::ChannelRef>& channels) const
+{
+    QVector<proto::ChannelRef> out;
+    const Instrument* in = instrument(index);
+    for (const auto& ref : channels)
+        if (recordsKind(ref.kind) && (!in || !in->collected.contains(ref)))
+            out.push_back(ref);
+    return out;
+}
+
+bool TelemetryHub::historyHeldBack(int index) const
+{
+    const Instrument* in = instrument(index);
+    return in && in->historyShed && in->subscribedRateHz > 0;
 }
 
 void TelemetryHub::dropUnwantedStores(int index)

@@ -6013,8 +6013,28 @@ Keep that log aside and start this test afresh?</source>
         <translation>将曲线导出为矢量 PDF</translation>
     </message>
     <message>
-        <source>Export</source>
-        <translation>导出</translation>
+        <source>History…</source>
+        <translation>历史…</translation>
+    </message>
+    <message>
+        <source>Export the recorded history as CSV: every instrument&apos;s positions and following errors since connection, whether plotted or not</source>
+        <translation>将记录的历史导出为 CSV：各仪器自连接以来的位置和跟随误差，无论是否已绘制曲线</translation>
+    </message>
+    <message>
+        <source>Last 30 s</source>
+        <translation>最近 30 s</translation>
+    </message>
+    <message>
+        <source>Last 1 min</source>
+        <translation>最近 1 min</translation>
+    </message>
+    <message>
+        <source>Last 2 min</source>
+        <translation>最近 2 min</translation>
+    </message>
+    <message>
+        <source>Everything recorded</source>
+        <translation>全部记录</translation>
     </message>
 </context>
 <context>
@@ -6118,6 +6138,30 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Recorded %1 rows to %2</source>
         <translation>已将 %1 行记录到 %2</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>last %1 recorded</source>
+        <translation>已记录最近 %1</translation>
+    </message>
+    <message>
+        <source> (plotted channels only: the link carries no more)</source>
+        <translation>（仅记录已绘制的通道：连接无法承载更多）</translation>
+    </message>
+    <message>
+        <source>Export the recorded history as CSV</source>
+        <translation>将记录的历史导出为 CSV</translation>
+    </message>
+    <message>
+        <source>Exported %1 rows of recorded history (%2 channels) to %3</source>
+        <translation>已将 %1 行记录的历史（%2 个通道）导出到 %3</translation>
     </message>
 </context>
 <context>
@@ -9196,11 +9240,6 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>记录到 %1 已停止：%2</translation>
     </message>
     <message>
-        <source>%1: the device clock started again; its plots start afresh</source>
-        <comment>telemetry.clock_restarted</comment>
-        <translation>%1：设备时钟已重新开始，其曲线从头绘制</translation>
-    </message>
-    <message>
         <source>home</source>
         <comment>request.home</comment>
         <translation>回零</translation>
@@ -9624,6 +9663,16 @@ A loop this different may oscillate or run away. Apply them?</source>
         <source>this instrument has no alarm lock to release: home it instead</source>
         <comment>request.no_alarm_lock</comment>
         <translation>该仪器没有可解除的报警锁定：请改为回零。</translation>
+    </message>
+    <message>
+        <source>%1: the device clock started again; its plots go on after a gap</source>
+        <comment>telemetry.clock_restarted</comment>
+        <translation>%1：设备时钟已重新开始，其曲线在间断之后继续</translation>
+    </message>
+    <message>
+        <source>no history recorded yet: connect an instrument first</source>
+        <comment>telemetry.history_empty</comment>
+        <translation>尚未记录任何历史：请先连接仪器</translation>
     </message>
 </context>
 <context>

@@ -209,6 +209,46 @@ void BM_HubIngest(benchmark::State& state)
 }
 BENCHMARK(BM_HubIngest);
 
+/// What the flight recorder (issue 16 item 8) costs per telemetry batch: the hub
+/// ingesting 124-sample batches of the stage's X and Y commanded, measured and
+/// following error (6 channels, all recorded kinds) that a plot wants, with the
+/// history off (arg 0) and on (arg 1), at the 10 kHz sample clock (period 100 µs:
+/// the history keeps every 100th sample) and at 100 Hz (10 000 µs: it keeps each).
+/// ns_per_batch on minus off is the recording's cost; history_bytes is its heap.
+void BM_HistoryRecording(benchmark::State& state)
+{
+    const bool history = state.range(0) != 0;
+    const auto periodUs = static_cast<std::uint32_t>(state.range(1));
+    Rig rig(921600, false);
+    if (history)
+        rig.hub.enableHistory();
+    if (!rig.connect()) {
+        state.SkipWithError("simulator did not connect");
+        return;
+    }
+    const std::vector<ChannelRef> refs{{0, ChannelKind::Commanded}, {0, ChannelKind::Measured}, {0, ChannelKind::FollowingError},
+                                       {1, ChannelKind::Commanded}, {1, ChannelKind::Measured}, {1, ChannelKind::FollowingError}};
+    rig.hub.setWindowS(10);
+    rig.hub.setWanted(QStringLiteral("bench"), keys(1, refs), 100);
+    spin(20);
+    rig.client.disconnectLink();  // only the hub from here on (the client keeps its units)
+    spin(20);
+    BatchMaker maker(refs, periodUs);
+    long batches = 0;
+    const auto start = std::chrono::steady_clock::now();
+    for (auto _ : state) {
+        emit rig.client.telemetryReceived(maker.next());
+        if (++batches % 16 == 0)
+            QCoreApplication::processEvents();
+    }
+    const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
+    state.counters["ns_per_batch"] = ns / double(std::max(1L, batches));
+    state.counters["ns_per_sample_channel"] = ns / double(std::max(1L, batches)) / double(maker.valuesPerBatch());
+    state.counters["history_bytes"] = rig.hub.history() ? double(rig.hub.history()->memoryBytes()) : 0.0;
+    state.SetLabel(std::string(history ? "history on" : "history off") + (periodUs == 100 ? ", 10 kHz" : ", 100 Hz"));
+}
+BENCHMARK(BM_HistoryRecording)->Args({0, 100})->Args({1, 100})->Args({0, 10000})->Args({1, 10000});
+
 // ---- memory ---------------------------------------------------------------------
 
 /// One hour of device time at the full sample clock (10 kHz × 4 channels, more than

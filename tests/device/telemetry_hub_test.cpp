@@ -509,7 +509,7 @@ TEST_F(TelemetryHubTest, PauseFreezesTheViewWhileCollectionAndRecordingGoOn)
     f.hub.stopRecording();
 }
 
-TEST_F(TelemetryHubTest, ADeviceClockThatStartsAgainClearsThatInstrumentsPlots)
+TEST_F(TelemetryHubTest, ADeviceClockThatStartsAgainContinuesThatInstrumentsTimeLine)
 {
     FakeRig f;
     f.hub.setWanted(QStringLiteral("plot"), {f.stageX}, 1000);
@@ -517,8 +517,14 @@ TEST_F(TelemetryHubTest, ADeviceClockThatStartsAgainClearsThatInstrumentsPlots)
     ASSERT_EQ(f.hub.store(f.stageX)->size(), 1000u);
     f.nextIndex = 0;
     f.feedStage(0.5, 0.2);  // power-cycled device: its clock is back near zero
-    EXPECT_EQ(f.hub.store(f.stageX)->size(), 200u);
-    EXPECT_DOUBLE_EQ(f.hub.latestTimeS(1), 0.699);
+    // Nothing before the restart is thrown away (issue 16 item 8): the new samples
+    // follow the old ones after the gap the host saw.
+    const tele::ChannelStore* st = f.hub.store(f.stageX);
+    EXPECT_EQ(st->size(), 1200u);
+    EXPECT_DOUBLE_EQ(st->at(999).tS, 100.999);
+    EXPECT_GT(st->at(1000).tS, 100.999);
+    EXPECT_EQ(st->at(1000).value, 0.0f) << "the new stream's first sample";
+    EXPECT_NEAR(f.hub.latestTimeS(1) - st->at(1000).tS, 0.199, 1e-9);
     ASSERT_EQ(f.problems.size(), 1);
     EXPECT_TRUE(f.problems[0].contains(QStringLiteral("clock"))) << f.problems[0].toStdString();
 }

@@ -46,10 +46,7 @@ protected:
     /// The stage homed, its clock sped up.
     bool homedStage()
     {
-        // An unpaced link: a clock sped up over a paced one outruns its wire (SimulatorHost::setTimeScale).
-        ui::ConnectionChoice c;
-        c.baud = 0;
-        w->stage()->connectTo(c);
+        w->stage()->connectTo(ui::ConnectionChoice{});
         dev::Instrument* stage = w->stage()->instrument();
         if (!waitFor([&] { return stage->isReady(); }, 5000))
             return false;

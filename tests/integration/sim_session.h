@@ -17,9 +17,9 @@ namespace itest {
 
 /// The loopback emulates a real UART at this rate unless a test says otherwise.
 constexpr qint32 kLinkBaud = 115200;
-/// No pacing: for tests that speed up the simulator's clock. The firmware sizes
-/// telemetry for its link per virtual second, so at time scale K a paced UART
-/// would have to carry K times its rate and replies would queue behind samples.
+/// No pacing: bytes arrive on the next event-loop turn. A sped-up simulator's wire
+/// is sped up with it (LoopbackPair::setTimeScale), so pacing stays right either way;
+/// unpaced is for tests that judge the device, not the wire.
 constexpr qint32 kUnpaced = 0;
 
 class SimSession {

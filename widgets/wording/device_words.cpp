@@ -57,7 +57,8 @@ const Row kRows[] = {
     {"telemetry.already_recording", QT_TRANSLATE_NOOP3("words::DeviceWords", "already recording to %1", "telemetry.already_recording"), "file"},
     {"telemetry.nothing_to_record", QT_TRANSLATE_NOOP3("words::DeviceWords", "nothing to record: choose at least one channel of a connected instrument", "telemetry.nothing_to_record")},
     {"telemetry.recording_stopped", QT_TRANSLATE_NOOP3("words::DeviceWords", "recording to %1 stopped: %2", "telemetry.recording_stopped"), "file,detail"},
-    {"telemetry.clock_restarted", QT_TRANSLATE_NOOP3("words::DeviceWords", "%1: the device clock started again; its plots start afresh", "telemetry.clock_restarted"), "instrument"},
+    {"telemetry.clock_restarted", QT_TRANSLATE_NOOP3("words::DeviceWords", "%1: the device clock started again; its plots go on after a gap", "telemetry.clock_restarted"), "instrument"},
+    {"telemetry.history_empty", QT_TRANSLATE_NOOP3("words::DeviceWords", "no history recorded yet: connect an instrument first", "telemetry.history_empty")},
 };
 
 const TermRow kTerms[] = {
