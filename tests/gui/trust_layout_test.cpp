@@ -2,7 +2,8 @@
 // was cut mid-letter without "…"; the recipe editor cut "Import Opentrons labware…" and
 // the "▼" beside it, in English and more so in Chinese. Now the identity ends in "…"
 // with the whole text in its tooltip, and every button and label of the recipe editor
-// is whole at 1366 × 768 and at 1920 × 1080, in both languages.
+// is whole at 1366 × 768 and at 1920 × 1080, in both languages: the plates table's column
+// headers too, and a labware name too long for its box shows from its start.
 #include "gui_window.h"
 
 #include "widgets/common/elided_label.h"
@@ -13,6 +14,10 @@
 
 #include <QAbstractButton>
 #include <QApplication>
+#include <QComboBox>
+#include <QHeaderView>
+#include <QLineEdit>
+#include <QStyle>
 #include <QLabel>
 #include <QScrollArea>
 
@@ -42,6 +47,31 @@ QStringList cutIn(QWidget* root)
         if (qobject_cast<ui::ElidedLabel*>(l) || l->wordWrap())
             continue;  // these shorten or wrap their text themselves
         check(l, l->text(), l->fontMetrics().horizontalAdvance(l->text()));
+    }
+    // Column headers (a table's "Depth Z (mm)" was cut to "Depth Z (mm" at 1366 px).
+    for (auto* h : root->findChildren<QHeaderView*>()) {
+        if (!h->isVisible() || h->orientation() != Qt::Horizontal)
+            continue;
+        const int margin = 2 * h->style()->pixelMetric(QStyle::PM_HeaderMargin, nullptr, h);
+        for (int s = 0; s < h->count(); ++s) {
+            const QString text = h->model()->headerData(s, Qt::Horizontal).toString();
+            const int need = h->fontMetrics().horizontalAdvance(text) + margin;
+            if (!h->isSectionHidden(s) && !text.isEmpty() && h->sectionSize(s) < need)
+                out << QStringLiteral("header '%1' is squeezed (%2 px for %3)").arg(text).arg(h->sectionSize(s)).arg(need);
+        }
+    }
+    // An editable combo with a name longer than its box shows the name's start (it showed
+    // "ware.json"), and the whole name is in its tooltip.
+    for (auto* c : root->findChildren<QComboBox*>()) {
+        if (!c->isVisible() || !c->isEditable() || c->lineEdit()->hasFocus())
+            continue;
+        const QString text = c->currentText();
+        if (c->lineEdit()->fontMetrics().horizontalAdvance(text) <= c->lineEdit()->width())
+            continue;
+        if (c->lineEdit()->cursorPosition() != 0)
+            out << QStringLiteral("'%1' shows its end, not its start").arg(text);
+        if (!c->toolTip().contains(text))
+            out << QStringLiteral("'%1' is longer than its box and not in its tooltip").arg(text);
     }
     return out;
 }

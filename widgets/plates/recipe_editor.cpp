@@ -18,6 +18,7 @@
 #include <QMenu>
 #include <QPushButton>
 #include <QSignalBlocker>
+#include <QStyle>
 #include <QTableWidget>
 #include <QToolButton>
 #include <QUndoCommand>
@@ -97,7 +98,20 @@ RecipeEditor::RecipeEditor(QWidget* parent) : QWidget(parent), m_undo(new QUndoS
     auto* pv = new QVBoxLayout(platesBox);
     m_plates = new QTableWidget(0, 5, platesBox);
     m_plates->setHorizontalHeaderLabels({tr("Name"), tr("Slot"), tr("Labware"), tr("Safe Z (mm)"), tr("Depth Z (mm)")});
-    m_plates->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    // The heights are as wide as their headers (a height's value is shorter); names, slots
+    // and labware share the rest (all five stretched, "Depth Z (mm)" was cut at 1366 px).
+    QHeaderView* header = m_plates->horizontalHeader();
+    const int headerMargin = 2 * header->style()->pixelMetric(QStyle::PM_HeaderMargin, nullptr, header) + 4;
+    for (int col = 0; col < m_plates->columnCount(); ++col) {
+        const QString text = m_plates->horizontalHeaderItem(col)->text();
+        m_plates->horizontalHeaderItem(col)->setToolTip(text);
+        if (col < 3) {
+            header->setSectionResizeMode(col, QHeaderView::Stretch);
+        } else {
+            header->setSectionResizeMode(col, QHeaderView::Fixed);
+            header->resizeSection(col, header->fontMetrics().horizontalAdvance(text) + headerMargin);
+        }
+    }
     m_plates->verticalHeader()->setVisible(false);
     m_plates->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_plates->setMaximumHeight(120);
@@ -426,7 +440,10 @@ void RecipeEditor::refreshPlates()
         for (const auto& l : plates::builtinLabware())
             lw->addItem(QString::fromStdString(l.id));
         lw->setCurrentText(QString::fromStdString(p.labware));
-        lw->setToolTip(tr("A built-in plate, or a labware file beside the recipe (NAME.labware.json, or an Opentrons definition)"));
+        // A long file name shows from its start (an editable combo shows its end), whole in the tooltip.
+        lw->lineEdit()->setCursorPosition(0);
+        lw->setToolTip(QStringLiteral("%1\n%2").arg(QString::fromStdString(p.labware),
+            tr("A built-in plate, or a labware file beside the recipe (NAME.labware.json, or an Opentrons definition)")));
         connect(lw, &QComboBox::textActivated, this, [this, row](const QString& text) {
             const std::string id = text.trimmed().toStdString();
             if (row < static_cast<int>(m_recipe.plates.size()) && id != m_recipe.plates[static_cast<std::size_t>(row)].labware)
