@@ -5,6 +5,7 @@
 #include "widgets/wording/wording.h"
 
 #include <QComboBox>
+#include <QEvent>
 #include <QDateTime>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -104,13 +105,24 @@ CalibrationPanel::CalibrationPanel(dev::Instrument* client, QWidget* parent) : Q
     });
 }
 
+void CalibrationPanel::changeEvent(QEvent* event)
+{
+    QWidget::changeEvent(event);
+    if (event->type() != QEvent::LanguageChange)
+        return;
+    for (int i = 0; i < m_slot->count(); ++i)
+        for (const auto& s : m_deck.plateSlots)
+            if (m_slot->itemData(i).toString() == QString::fromStdString(s.id))
+                m_slot->setItemText(i, QStringLiteral("%1 (%2)").arg(QString::fromStdString(s.id), words::shippedName(s.name)));
+}
+
 void CalibrationPanel::setDeck(const plates::Deck& deck)
 {
     m_deck = deck;
     const QString keep = slotId();
     m_slot->clear();
     for (const auto& s : deck.plateSlots)
-        m_slot->addItem(QStringLiteral("%1 (%2)").arg(QString::fromStdString(s.id), QString::fromStdString(s.name)), QString::fromStdString(s.id));
+        m_slot->addItem(QStringLiteral("%1 (%2)").arg(QString::fromStdString(s.id), words::shippedName(s.name)), QString::fromStdString(s.id));
     setSlot(keep);
 }
 

@@ -48,6 +48,10 @@ signals:
     void calibrationsChanged();
     void problem(const QString& message);
 
+protected:
+    /// The shipped deck's slot names are worded per language (words::shippedName).
+    void changeEvent(QEvent* event) override;
+
 private:
     void rebuild();
     void refit();

@@ -14,6 +14,7 @@
 
 #include "widgets/wording/wording.h"
 
+#include <QEvent>
 #include <QComboBox>
 #include <QDateTime>
 #include <QDir>
@@ -235,7 +236,7 @@ void PlatesScreen::newRecipe()
 {
     plates::Recipe r;
     r.name = tr("new recipe").toStdString();
-    r.plates = {{"samples", m_deck.plateSlots.empty() ? "1" : m_deck.plateSlots.front().id, "sbs-96", 55, 70}};
+    r.plates = {{tr("samples", "the name of a new recipe's plate").toStdString(), m_deck.plateSlots.empty() ? "1" : m_deck.plateSlots.front().id, "sbs-96", 55, 70}};
     m_editor->setRecipe(r, QString());
     refreshPlateChoices();
 }
@@ -371,6 +372,13 @@ void PlatesScreen::showTab(const QString& name)
         m_tabs->setCurrentIndex(tabs.indexOf(name));
 }
 
+void PlatesScreen::changeEvent(QEvent* event)
+{
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::LanguageChange)
+        refreshMap();
+}
+
 void PlatesScreen::refreshMap()
 {
     const std::string name = m_plate->currentText().toStdString();
@@ -383,7 +391,7 @@ void PlatesScreen::refreshMap()
         return;
     }
     const QString title = tr("%1 in slot %2: %3")
-                              .arg(QString::fromStdString(p->name), QString::fromStdString(p->slot), QString::fromStdString(lw->second.displayName));
+                              .arg(QString::fromStdString(p->name), QString::fromStdString(p->slot), words::shippedName(lw->second.displayName));
     if (m_map->labware().id != lw->second.id || m_map->labware().wells.size() != lw->second.wells.size())
         m_map->setLabware(lw->second, title);
     m_map->setTitle(title);

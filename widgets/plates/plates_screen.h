@@ -67,6 +67,10 @@ signals:
     /// A recipe was opened or saved here (for remembering it between runs).
     void recipePathChanged(const QString& path);
 
+protected:
+    /// The plate's title under the map names built-in labware in the language shown.
+    void changeEvent(QEvent* event) override;
+
 private:
     /// True (with a problem said) when a run holds the files.
     bool heldForRun();

@@ -7,8 +7,10 @@
 
 #include <QComboBox>
 #include "widgets/common/number_field.h"
+#include "widgets/wording/wording.h"
 
 #include <QDoubleSpinBox>
+#include <QEvent>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -375,6 +377,28 @@ void RecipeEditor::showSlot(QComboBox* slot, const std::string& id)
     slot->setToolTip(why);
 }
 
+QString RecipeEditor::slotTitle(const plates::Slot& slot)
+{
+    return QStringLiteral("%1 (%2)").arg(QString::fromStdString(slot.id), words::shippedName(slot.name));
+}
+
+void RecipeEditor::showLabware(QComboBox* labware, const std::string& id)
+{
+    labware->setCurrentText(QString::fromStdString(id));
+    // A long file name shows from its start (an editable combo shows its end), whole in the tooltip.
+    labware->lineEdit()->setCursorPosition(0);
+    labware->setToolTip(QStringLiteral("%1\n%2").arg(
+        QString::fromStdString(id),
+        tr("A built-in plate, or a labware file beside the recipe (NAME.labware.json, or an Opentrons definition)")));
+}
+
+void RecipeEditor::changeEvent(QEvent* event)
+{
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::LanguageChange)
+        refreshPlates();
+}
+
 void RecipeEditor::refreshPlates()
 {
     const bool was = m_updating;
@@ -392,8 +416,12 @@ void RecipeEditor::refreshPlates()
             auto* depth = qobject_cast<NumberField*>(m_plates->cellWidget(row, 4));
             const QSignalBlocker b0(name), b1(slot), b2(lw);
             name->setText(QString::fromStdString(p.name));
+            for (int i = 0; i < slot->count(); ++i)  // the language may have changed
+                for (const auto& s : m_deck.plateSlots)
+                    if (slot->itemData(i).toString() == QString::fromStdString(s.id))
+                        slot->setItemText(i, slotTitle(s));
             showSlot(slot, p.slot);
-            lw->setCurrentText(QString::fromStdString(p.labware));
+            showLabware(lw, p.labware);
             // Only a value that differs: the field being typed into keeps its text.
             if (safe->value() != std::optional<double>(p.safeZMm))
                 safe->setValue(p.safeZMm);
@@ -425,7 +453,7 @@ void RecipeEditor::refreshPlates()
         m_plates->setCellWidget(row, 0, name);
         auto* slot = new QComboBox;
         for (const auto& s : m_deck.plateSlots)
-            slot->addItem(QStringLiteral("%1 (%2)").arg(QString::fromStdString(s.id), QString::fromStdString(s.name)), QString::fromStdString(s.id));
+            slot->addItem(slotTitle(s), QString::fromStdString(s.id));
         showSlot(slot, p.slot);
         connect(slot, qOverload<int>(&QComboBox::activated), this, [this, row, slot] {
             const std::string id = slot->currentData().toString().toStdString();
@@ -439,11 +467,7 @@ void RecipeEditor::refreshPlates()
         lw->setEditable(true);
         for (const auto& l : plates::builtinLabware())
             lw->addItem(QString::fromStdString(l.id));
-        lw->setCurrentText(QString::fromStdString(p.labware));
-        // A long file name shows from its start (an editable combo shows its end), whole in the tooltip.
-        lw->lineEdit()->setCursorPosition(0);
-        lw->setToolTip(QStringLiteral("%1\n%2").arg(QString::fromStdString(p.labware),
-            tr("A built-in plate, or a labware file beside the recipe (NAME.labware.json, or an Opentrons definition)")));
+        showLabware(lw, p.labware);
         connect(lw, &QComboBox::textActivated, this, [this, row](const QString& text) {
             const std::string id = text.trimmed().toStdString();
             if (row < static_cast<int>(m_recipe.plates.size()) && id != m_recipe.plates[static_cast<std::size_t>(row)].labware)

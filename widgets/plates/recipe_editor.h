@@ -62,7 +62,14 @@ signals:
     void saveAsRequested();
     void importLabwareRequested();
 
+protected:
+    /// The shipped deck's slot names are worded per language (words::shippedName): the
+    /// plate rows are built again.
+    void changeEvent(QEvent* event) override;
+
 private:
+    static QString slotTitle(const plates::Slot& slot);  ///< "1 (back)", the name in the language shown
+    void showLabware(QComboBox* labware, const std::string& id);
     static constexpr int kUnknownSlotRole = Qt::UserRole + 1;  ///< set on a slot item the deck does not have
     void showSlot(QComboBox* slot, const std::string& id);
     void refreshPlates();

@@ -35,6 +35,11 @@ QString unitSymbol(msg::Unit unit);
 /// unknown term id comes back as it is.
 QString term(const std::string& id);
 
+/// A name from the files BenchPilot ships (the analyzer's deck: "back", "wash trough";
+/// the built-in labware: "96-well plate, 360 µL") in the current language, for display
+/// only; any other name, and every id, as it is. Files keep their names in English.
+QString shippedName(const std::string& name);
+
 } // namespace words
 
 namespace jsonio {
