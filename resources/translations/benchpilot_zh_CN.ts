@@ -1,4 +1,5 @@
-<?xml version='1.0' encoding='utf-8'?>
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
     <name>QObject</name>
@@ -7,7 +8,7 @@
         <translation>某个孔的加样被中断</translation>
     </message>
     <message>
-        <source>The run stopped during "%1", after its plunger move had been sent.
+        <source>The run stopped during &quot;%1&quot;, after its plunger move had been sent.
 
 %2.
 
@@ -39,7 +40,7 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <translation>校准</translation>
     </message>
     <message>
-        <source>'sim' is the in-process simulator's gauge: connect the instrument to the simulator first.</source>
+        <source>&apos;sim&apos; is the in-process simulator&apos;s gauge: connect the instrument to the simulator first.</source>
         <translation>“sim”是进程内仿真器的测头：请先将仪器连接到仿真器。</translation>
     </message>
 </context>
@@ -161,16 +162,16 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <translation>应为整数，收到 %1</translation>
     </message>
     <message>
-        <source>expected one axis letter such as "X", got %1</source>
-        <translation>应为一个轴字母，如 "X"，收到 %1</translation>
+        <source>expected one axis letter such as &quot;X&quot;, got %1</source>
+        <translation>应为一个轴字母，如 &quot;X&quot;，收到 %1</translation>
     </message>
     <message>
-        <source>expected axis letters such as "XY" or ["X", "Y"]</source>
-        <translation>应为轴字母，如 "XY" 或 ["X", "Y"]</translation>
+        <source>expected axis letters such as &quot;XY&quot; or [&quot;X&quot;, &quot;Y&quot;]</source>
+        <translation>应为轴字母，如 &quot;XY&quot; 或 [&quot;X&quot;, &quot;Y&quot;]</translation>
     </message>
     <message>
-        <source>expected axis letters such as "XY" or ["X", "Y"], got %1</source>
-        <translation>应为轴字母，如 "XY" 或 ["X", "Y"]，收到 %1</translation>
+        <source>expected axis letters such as &quot;XY&quot; or [&quot;X&quot;, &quot;Y&quot;], got %1</source>
+        <translation>应为轴字母，如 &quot;XY&quot; 或 [&quot;X&quot;, &quot;Y&quot;]，收到 %1</translation>
     </message>
     <message>
         <source>expected an object of axis letters, such as %1, got %2</source>
@@ -193,8 +194,8 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <translation>应为字符串，收到 %1</translation>
     </message>
     <message>
-        <source>'%1' is not one of %2</source>
-        <translation>'%1' 不在 %2 之中</translation>
+        <source>&apos;%1&apos; is not one of %2</source>
+        <translation>&apos;%1&apos; 不在 %2 之中</translation>
     </message>
     <message>
         <source>a request is a JSON object</source>
@@ -213,8 +214,8 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <translation>id：必须是数字或字符串</translation>
     </message>
     <message>
-        <source>jsonrpc: must be "2.0"</source>
-        <translation>jsonrpc：必须为 "2.0"</translation>
+        <source>jsonrpc: must be &quot;2.0&quot;</source>
+        <translation>jsonrpc：必须为 &quot;2.0&quot;</translation>
     </message>
     <message>
         <source>method: must be a non-empty string</source>
@@ -241,7 +242,7 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <translation>在图形界面和事件日志中显示的名称</translation>
     </message>
     <message>
-        <source>the client's working directory: relative paths in calls start here</source>
+        <source>the client&apos;s working directory: relative paths in calls start here</source>
         <translation>客户端的工作目录：调用中的相对路径以此为起点</translation>
     </message>
     <message>
@@ -249,8 +250,8 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <translation>获取控制权（同一时间只有一个持有者）</translation>
     </message>
     <message>
-        <source>Returns {"lease": TOKEN}. Send control.heartbeat with it at least every %1 ms (100 ms is a good pace); the operator can take control back at any time.</source>
-        <translation>返回 {"lease": TOKEN}。请用它至少每 %1 ms 发送一次 control.heartbeat（每 100 ms 一次为宜）；操作员可随时收回控制权。</translation>
+        <source>Returns {&quot;lease&quot;: TOKEN}. Send control.heartbeat with it at least every %1 ms (100 ms is a good pace); the operator can take control back at any time.</source>
+        <translation>返回 {&quot;lease&quot;: TOKEN}。请用它至少每 %1 ms 发送一次 control.heartbeat（每 100 ms 一次为宜）；操作员可随时收回控制权。</translation>
     </message>
     <message>
         <source>give the control lease back</source>
@@ -269,8 +270,8 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <translation>实时数据：位置、状态、作业、日志、遥测</translation>
     </message>
     <message>
-        <source>topic → options: {"positions": {"instrument": "stage", "max_hz": 50}, "state": {}, "jobs": {}, "log": {}, "telemetry": {"instrument": "stage", "channels": ["X.measured"], "rate_hz": 1000}}</source>
-        <translation>主题 → 选项：{"positions": {"instrument": "stage", "max_hz": 50}, "state": {}, "jobs": {}, "log": {}, "telemetry": {"instrument": "stage", "channels": ["X.measured"], "rate_hz": 1000}}</translation>
+        <source>topic → options: {&quot;positions&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;max_hz&quot;: 50}, &quot;state&quot;: {}, &quot;jobs&quot;: {}, &quot;log&quot;: {}, &quot;telemetry&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;channels&quot;: [&quot;X.measured&quot;], &quot;rate_hz&quot;: 1000}}</source>
+        <translation>主题 → 选项：{&quot;positions&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;max_hz&quot;: 50}, &quot;state&quot;: {}, &quot;jobs&quot;: {}, &quot;log&quot;: {}, &quot;telemetry&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;channels&quot;: [&quot;X.measured&quot;], &quot;rate_hz&quot;: 1000}}</translation>
     </message>
     <message>
         <source>end a subscription</source>
@@ -289,7 +290,7 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <translation>该调用的 id</translation>
     </message>
     <message>
-        <source>run benchpilot-cli's words as benchpilot-cli --attach does: output as cli.output, then the exit code</source>
+        <source>run benchpilot-cli&apos;s words as benchpilot-cli --attach does: output as cli.output, then the exit code</source>
         <translation>像 benchpilot-cli --attach 那样执行 benchpilot-cli 的参数：输出以 cli.output 发送，最后给出退出码</translation>
     </message>
     <message>
@@ -375,20 +376,20 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <translation>已断开：%1</translation>
     </message>
     <message>
-        <source>unknown method '%1' (rpc.discover lists them)</source>
-        <translation>未知方法 '%1'（rpc.discover 可列出全部方法）</translation>
+        <source>unknown method &apos;%1&apos; (rpc.discover lists them)</source>
+        <translation>未知方法 &apos;%1&apos;（rpc.discover 可列出全部方法）</translation>
     </message>
     <message>
         <source>%1 calls are already running for this client; wait for one to end</source>
         <translation>该客户端已有 %1 个调用在运行；请等待其中一个结束</translation>
     </message>
     <message>
-        <source>the GUI's %1 is not connected (%2)</source>
+        <source>the GUI&apos;s %1 is not connected (%2)</source>
         <translation>图形界面中的 %1 未连接（%2）</translation>
     </message>
     <message>
-        <source>the GUI has no instrument '%1'</source>
-        <translation>图形界面中没有仪器 '%1'</translation>
+        <source>the GUI has no instrument &apos;%1&apos;</source>
+        <translation>图形界面中没有仪器 &apos;%1&apos;</translation>
     </message>
     <message>
         <source>no instrument is connected in the GUI</source>
@@ -403,8 +404,8 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <translation>未持有控制权：操作员正在运行%1</translation>
     </message>
     <message>
-        <source>not in control: pass the lease from control.acquire as "lease"</source>
-        <translation>未持有控制权：请将 control.acquire 返回的控制权令牌作为 "lease" 传入</translation>
+        <source>not in control: pass the lease from control.acquire as &quot;lease&quot;</source>
+        <translation>未持有控制权：请将 control.acquire 返回的控制权令牌作为 &quot;lease&quot; 传入</translation>
     </message>
     <message>
         <source>not in control: that lease is not the one this client holds</source>
@@ -455,7 +456,7 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <translation>subscription：应为 subscribe 返回的编号</translation>
     </message>
     <message>
-        <source>argv: expected an array of strings (benchpilot-cli's words)</source>
+        <source>argv: expected an array of strings (benchpilot-cli&apos;s words)</source>
         <translation>argv：应为字符串数组（benchpilot-cli 的参数）</translation>
     </message>
     <message>
@@ -497,8 +498,8 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <translation>未知参数（参数有：topics）</translation>
     </message>
     <message>
-        <source>expected an object of topics, e.g. {"positions": {"instrument": "stage", "max_hz": 50}}</source>
-        <translation>应为以主题为键的对象，例如 {"positions": {"instrument": "stage", "max_hz": 50}}</translation>
+        <source>expected an object of topics, e.g. {&quot;positions&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;max_hz&quot;: 50}}</source>
+        <translation>应为以主题为键的对象，例如 {&quot;positions&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;max_hz&quot;: 50}}</translation>
     </message>
     <message>
         <source>unknown topic (topics: positions, state, jobs, log, telemetry)</source>
@@ -525,12 +526,12 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <translation>此处无法使用遥测（没有遥测中心）</translation>
     </message>
     <message>
-        <source>expected an array such as ["X.measured", "X.following_error"]</source>
-        <translation>应为数组，例如 ["X.measured", "X.following_error"]</translation>
+        <source>expected an array such as [&quot;X.measured&quot;, &quot;X.following_error&quot;]</source>
+        <translation>应为数组，例如 [&quot;X.measured&quot;, &quot;X.following_error&quot;]</translation>
     </message>
     <message>
-        <source>'%1' is not a channel of the %2 (AXIS.measured, AXIS.commanded, AXIS.velocity, AXIS.following_error, AXIS.controller_output, AXIS.switches, contour_error)</source>
-        <translation>'%1' 不是 %2 的通道（AXIS.measured, AXIS.commanded, AXIS.velocity, AXIS.following_error, AXIS.controller_output, AXIS.switches, contour_error）</translation>
+        <source>&apos;%1&apos; is not a channel of the %2 (AXIS.measured, AXIS.commanded, AXIS.velocity, AXIS.following_error, AXIS.controller_output, AXIS.switches, contour_error)</source>
+        <translation>&apos;%1&apos; 不是 %2 的通道（AXIS.measured, AXIS.commanded, AXIS.velocity, AXIS.following_error, AXIS.controller_output, AXIS.switches, contour_error）</translation>
     </message>
     <message>
         <source>expected samples per second, 1 or more</source>
@@ -579,7 +580,7 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <translation>收回控制权</translation>
     </message>
     <message>
-        <source>End the script's control now: its next call is refused, its jogs stop; jobs it started go on as yours</source>
+        <source>End the script&apos;s control now: its next call is refused, its jogs stop; jobs it started go on as yours</source>
         <translation>立即结束脚本的控制权：其下一个调用将被拒绝，其点动停止；它启动的作业继续运行，改由您控制</translation>
     </message>
     <message>
@@ -658,7 +659,7 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <translation>控制权：操作员（您）</translation>
     </message>
     <message>
-        <source>End the script's control now</source>
+        <source>End the script&apos;s control now</source>
         <translation>立即结束脚本的控制权</translation>
     </message>
     <message>
@@ -720,7 +721,7 @@ Skip counts the well as done; Do again repeats it in full.</source>
     <message>
         <source>%1 has had control of the bench since %2.
 
-Take control back? The script's next call is refused and its jogs stop; a job it started goes on as yours. Then do again what you meant to do.</source>
+Take control back? The script&apos;s next call is refused and its jogs stop; a job it started goes on as yours. Then do again what you meant to do.</source>
         <translation>%1 自 %2 起控制工作台。
 
 收回控制权？脚本的下一个调用将被拒绝，其点动停止；它启动的作业继续运行，改由您控制。然后请重新执行您刚才想做的操作。</translation>
@@ -765,7 +766,7 @@ Take control back? The script's next call is refused and its jogs stop; a job it
         <translation>正在检测 %1 上的通信协议…</translation>
     </message>
     <message>
-        <source>%1 is a %2, not the %3: connect it in the %2's bar.</source>
+        <source>%1 is a %2, not the %3: connect it in the %2&apos;s bar.</source>
         <translation>%1 是%2，不是%3：请在%2的连接栏中连接它。</translation>
     </message>
 </context>
@@ -776,7 +777,7 @@ Take control back? The script's next call is refused and its jogs stop; a job it
         <translation>确认移动</translation>
     </message>
     <message>
-        <source>Don't ask again this session</source>
+        <source>Don&apos;t ask again this session</source>
         <translation>本次运行中不再询问</translation>
     </message>
     <message>
@@ -1004,7 +1005,7 @@ Take control back? The script's next call is refused and its jogs stop; a job it
         <translation>显示本帮助</translation>
     </message>
     <message>
-        <source>show the program's version</source>
+        <source>show the program&apos;s version</source>
         <translation>显示程序版本</translation>
     </message>
     <message>
@@ -1012,20 +1013,20 @@ Take control back? The script's next call is refused and its jogs stop; a job it
         <translation>（默认：%1）</translation>
     </message>
     <message>
-        <source>--sim needs 'analyzer' or 'stage' (got '%1')</source>
-        <translation>--sim 需要 'analyzer' 或 'stage'（收到 '%1'）</translation>
+        <source>--sim needs &apos;analyzer&apos; or &apos;stage&apos; (got &apos;%1&apos;)</source>
+        <translation>--sim 需要 &apos;analyzer&apos; 或 &apos;stage&apos;（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>--port needs a path</source>
         <translation>--port 需要一个路径</translation>
     </message>
     <message>
-        <source>--baud needs a rate of at least 1200 (got '%1')</source>
-        <translation>--baud 需要不低于 1200 的速率（收到 '%1'）</translation>
+        <source>--baud needs a rate of at least 1200 (got &apos;%1&apos;)</source>
+        <translation>--baud 需要不低于 1200 的速率（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <source>--timeout needs a positive number of seconds (got '%1')</source>
-        <translation>--timeout 需要正的秒数（收到 '%1'）</translation>
+        <source>--timeout needs a positive number of seconds (got &apos;%1&apos;)</source>
+        <translation>--timeout 需要正的秒数（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>unknown option %1 (options: %2)</source>
@@ -1061,14 +1062,14 @@ Global options (before or after the command):
     </message>
     <message>
         <source>
-'benchpilot-cli COMMAND --help' shows a command's options. Options take their value as
-'--opt value' or '--opt=value'.
+&apos;benchpilot-cli COMMAND --help&apos; shows a command&apos;s options. Options take their value as
+&apos;--opt value&apos; or &apos;--opt=value&apos;.
 Exit codes: 0 ok, 1 usage, 2 refused or motion failed, 3 link trouble.
 Bash completion: source &lt;(benchpilot-cli completion bash)
 </source>
         <translation>
-'benchpilot-cli 命令 --help' 显示该命令的选项。选项的值可写作
-'--opt value' 或 '--opt=value'。
+&apos;benchpilot-cli 命令 --help&apos; 显示该命令的选项。选项的值可写作
+&apos;--opt value&apos; 或 &apos;--opt=value&apos;。
 退出码：0 成功，1 用法错误，2 被拒绝或运动失败，3 连接故障。
 Bash 补全：source &lt;(benchpilot-cli completion bash)
 </translation>
@@ -1089,10 +1090,10 @@ Subcommands:
     </message>
     <message>
         <source>
-'benchpilot-cli %1 SUBCOMMAND --help' shows a subcommand's options.
+&apos;benchpilot-cli %1 SUBCOMMAND --help&apos; shows a subcommand&apos;s options.
 </source>
         <translation>
-'benchpilot-cli %1 子命令 --help' 显示该子命令的选项。
+&apos;benchpilot-cli %1 子命令 --help&apos; 显示该子命令的选项。
 </translation>
     </message>
     <message>
@@ -1118,13 +1119,13 @@ Options:
 </translation>
     </message>
     <message>
-        <source>--lang needs en, zh_CN or system (got '%1')</source>
-        <translation>--lang 需要 en、zh_CN 或 system（收到 '%1'）</translation>
+        <source>--lang needs en, zh_CN or system (got &apos;%1&apos;)</source>
+        <translation>--lang 需要 en、zh_CN 或 system（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <source>try 'benchpilot-cli --help'
+        <source>try &apos;benchpilot-cli --help&apos;
 </source>
-        <translation>请尝试 'benchpilot-cli --help'
+        <translation>请尝试 &apos;benchpilot-cli --help&apos;
 </translation>
     </message>
     <message>
@@ -1132,21 +1133,21 @@ Options:
         <translation>未给出命令</translation>
     </message>
     <message>
-        <source>unknown command '%1' (commands: %2)</source>
-        <translation>未知命令 '%1'（可用命令：%2）</translation>
+        <source>unknown command &apos;%1&apos; (commands: %2)</source>
+        <translation>未知命令 &apos;%1&apos;（可用命令：%2）</translation>
     </message>
     <message>
         <source>which one? (%1)</source>
         <translation>是哪一个？（%1）</translation>
     </message>
     <message>
-        <source>unknown subcommand '%1' (%2)</source>
-        <translation>未知子命令 '%1'（%2）</translation>
+        <source>unknown subcommand &apos;%1&apos; (%2)</source>
+        <translation>未知子命令 &apos;%1&apos;（%2）</translation>
     </message>
     <message>
-        <source>try 'benchpilot-cli %1 --help'
+        <source>try &apos;benchpilot-cli %1 --help&apos;
 </source>
-        <translation>请尝试 'benchpilot-cli %1 --help'
+        <translation>请尝试 &apos;benchpilot-cli %1 --help&apos;
 </translation>
     </message>
     <message>
@@ -1162,8 +1163,8 @@ Options:
         <translation>%1 s 内无应答</translation>
     </message>
     <message>
-        <source>axis '%1' does not exist on the %2 (axes: %3)</source>
-        <translation>%2上不存在轴 '%1'（可用轴：%3）</translation>
+        <source>axis &apos;%1&apos; does not exist on the %2 (axes: %3)</source>
+        <translation>%2上不存在轴 &apos;%1&apos;（可用轴：%3）</translation>
     </message>
     <message>
         <source>%1: no answer</source>
@@ -1178,8 +1179,8 @@ Options:
         <translation>%1：%2 s 后仍在运动；已发送停止命令</translation>
     </message>
     <message>
-        <source>only 'bash' is supported: source &lt;(benchpilot-cli completion bash)</source>
-        <translation>只支持 'bash'：source &lt;(benchpilot-cli completion bash)</translation>
+        <source>only &apos;bash&apos; is supported: source &lt;(benchpilot-cli completion bash)</source>
+        <translation>只支持 &apos;bash&apos;：source &lt;(benchpilot-cli completion bash)</translation>
     </message>
     <message>
         <source>print a bash completion script</source>
@@ -1190,11 +1191,11 @@ Options:
         <translation>用法：source &lt;(benchpilot-cli completion bash)</translation>
     </message>
     <message>
-        <source>takes no arguments (got '%1')</source>
-        <translation>不接受参数（收到 '%1'）</translation>
+        <source>takes no arguments (got &apos;%1&apos;)</source>
+        <translation>不接受参数（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <source>planner limits: not reported (estimates assume the reference machine's)</source>
+        <source>planner limits: not reported (estimates assume the reference machine&apos;s)</source>
         <translation>规划器限值：设备未报告（估算按参考机器的限值）</translation>
     </message>
     <message>
@@ -1210,16 +1211,16 @@ Options:
         <translation>请至少给出一个 AXIS=VALUE</translation>
     </message>
     <message>
-        <source>expected AXIS=VALUE, got '%1'</source>
-        <translation>应为 AXIS=VALUE，收到 '%1'</translation>
+        <source>expected AXIS=VALUE, got &apos;%1&apos;</source>
+        <translation>应为 AXIS=VALUE，收到 &apos;%1&apos;</translation>
     </message>
     <message>
-        <source>axis '%1' does not exist on the %2</source>
-        <translation>%2上不存在轴 '%1'</translation>
+        <source>axis &apos;%1&apos; does not exist on the %2</source>
+        <translation>%2上不存在轴 &apos;%1&apos;</translation>
     </message>
     <message>
-        <source>'%1' is not a number for axis %2</source>
-        <translation>'%1' 不是轴 %2 的有效数值</translation>
+        <source>&apos;%1&apos; is not a number for axis %2</source>
+        <translation>&apos;%1&apos; 不是轴 %2 的有效数值</translation>
     </message>
     <message>
         <source>move</source>
@@ -1230,8 +1231,8 @@ Options:
         <translation>应为 AXIS VELOCITY SECONDS</translation>
     </message>
     <message>
-        <source>velocity '%1' is not a number</source>
-        <translation>速度 '%1' 不是数字</translation>
+        <source>velocity &apos;%1&apos; is not a number</source>
+        <translation>速度 &apos;%1&apos; 不是数字</translation>
     </message>
     <message>
         <source>seconds must be in (0, 600]</source>
@@ -1258,16 +1259,16 @@ Options:
         <translation>复位</translation>
     </message>
     <message>
-        <source>name the axes to zero, e.g. 'zero XY'</source>
-        <translation>请指定要设零点的轴，例如 'zero XY'</translation>
+        <source>name the axes to zero, e.g. &apos;zero XY&apos;</source>
+        <translation>请指定要设零点的轴，例如 &apos;zero XY&apos;</translation>
     </message>
     <message>
         <source>zero</source>
         <translation>设零点</translation>
     </message>
     <message>
-        <source>expected AXIS=MIN:MAX, got '%1'</source>
-        <translation>应为 AXIS=MIN:MAX，收到 '%1'</translation>
+        <source>expected AXIS=MIN:MAX, got &apos;%1&apos;</source>
+        <translation>应为 AXIS=MIN:MAX，收到 &apos;%1&apos;</translation>
     </message>
     <message>
         <source>limits</source>
@@ -1294,8 +1295,8 @@ Options:
         <translation>轴回零（未指定时全部回零），并等待完成</translation>
     </message>
     <message>
-        <source>The analyzer lifts Z first. AXES are letters, e.g. 'XY'.</source>
-        <translation>分析仪先抬起 Z 轴。轴用字母表示，例如 'XY'。</translation>
+        <source>The analyzer lifts Z first. AXES are letters, e.g. &apos;XY&apos;.</source>
+        <translation>分析仪先抬起 Z 轴。轴用字母表示，例如 &apos;XY&apos;。</translation>
     </message>
     <message>
         <source>move and wait until done (mm, µL for P)</source>
@@ -1338,16 +1339,16 @@ Options:
         <translation>--%1 为必填项</translation>
     </message>
     <message>
-        <source>--%1 '%2' is not a number</source>
-        <translation>--%1 '%2' 不是数字</translation>
+        <source>--%1 &apos;%2&apos; is not a number</source>
+        <translation>--%1 &apos;%2&apos; 不是数字</translation>
     </message>
     <message>
-        <source>--%1 '%2': '%3' is not a number</source>
-        <translation>--%1 '%2'：'%3' 不是数字</translation>
+        <source>--%1 &apos;%2&apos;: &apos;%3&apos; is not a number</source>
+        <translation>--%1 &apos;%2&apos;：&apos;%3&apos; 不是数字</translation>
     </message>
     <message>
-        <source>--%1 '%2' needs %3 comma-separated numbers</source>
-        <translation>--%1 '%2' 需要 %3 个以逗号分隔的数</translation>
+        <source>--%1 &apos;%2&apos; needs %3 comma-separated numbers</source>
+        <translation>--%1 &apos;%2&apos; 需要 %3 个以逗号分隔的数</translation>
     </message>
     <message>
         <source>plan a motion profile and print s, v, a, j samples (JSON)</source>
@@ -1366,7 +1367,7 @@ Options:
         <translation>直线：--to X,Y [--from X,Y]；圆弧：--start、--center、--to、--dir cw|ccw；正弦|余弦：--amplitude、--wavelength、--length、--tolerance。都需要 --step（mm）。</translation>
     </message>
     <message>
-        <source>seed 001 step-period table of a profile or of seed 001's own move (JSON)</source>
+        <source>seed 001 step-period table of a profile or of seed 001&apos;s own move (JSON)</source>
         <translation>文献 001 的步进周期表：针对某条速度曲线或文献 001 自身的移动（JSON）</translation>
     </message>
     <message>
@@ -1382,27 +1383,27 @@ Options:
         <translation>--joint S:V2:t0_ms,S:V2:t0_ms,…，每个关节给出一次。</translation>
     </message>
     <message>
-        <source>--dir must be cw or ccw (got '%1')</source>
-        <translation>--dir 必须为 cw 或 ccw（收到 '%1'）</translation>
+        <source>--dir must be cw or ccw (got &apos;%1&apos;)</source>
+        <translation>--dir 必须为 cw 或 ccw（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>give --shape (line, rectangle, circle, arc, sine, cosine, spiral, raster) or --file</source>
         <translation>请给出 --shape（line, rectangle, circle, arc, sine, cosine, spiral, raster）或 --file</translation>
     </message>
     <message>
-        <source>--shape '%1' is not one of line, rectangle, circle, arc, sine, cosine, spiral, raster</source>
-        <translation>--shape '%1' 不是 line, rectangle, circle, arc, sine, cosine, spiral, raster 之一</translation>
+        <source>--shape &apos;%1&apos; is not one of line, rectangle, circle, arc, sine, cosine, spiral, raster</source>
+        <translation>--shape &apos;%1&apos; 不是 line, rectangle, circle, arc, sine, cosine, spiral, raster 之一</translation>
     </message>
     <message>
-        <source>--along must be x or y (got '%1')</source>
-        <translation>--along 必须为 x 或 y（收到 '%1'）</translation>
+        <source>--along must be x or y (got &apos;%1&apos;)</source>
+        <translation>--along 必须为 x 或 y（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <source>takes options only (got '%1')</source>
-        <translation>只接受选项（收到 '%1'）</translation>
+        <source>takes options only (got &apos;%1&apos;)</source>
+        <translation>只接受选项（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <source>%1: %2 segments, %3 mm, about %4 s on the %5 simulator's limits
+        <source>%1: %2 segments, %3 mm, about %4 s on the %5 simulator&apos;s limits
 </source>
         <translation>%1：%2 段，%3 mm，按 %5 仿真器的限值约需 %4 s
 </translation>
@@ -1428,7 +1429,7 @@ Options:
         <translation>规划图形（line, rectangle, circle, arc, sine, cosine, spiral, raster）或运行它并测量轮廓误差</translation>
     </message>
     <message>
-        <source>Shape options not given keep the pattern's defaults (docs/patterns.md). --file reads a *.pattern.json; shape options then change it.</source>
+        <source>Shape options not given keep the pattern&apos;s defaults (docs/patterns.md). --file reads a *.pattern.json; shape options then change it.</source>
         <translation>未给出的形状选项沿用图形的默认值（docs/patterns.md）。--file 读取 *.pattern.json，形状选项再对其修改。</translation>
     </message>
     <message>
@@ -1444,7 +1445,7 @@ Options:
         <translation>在仪器上运行图形；输出最大和均方根轮廓误差（µm）及用时</translation>
     </message>
     <message>
-        <source>Moves to the pattern's start (XY, then Z on the analyzer), streams the segments into the device's path queue and judges the measured XY from telemetry against the path. Exit 2 if it is refused or does not complete.</source>
+        <source>Moves to the pattern&apos;s start (XY, then Z on the analyzer), streams the segments into the device&apos;s path queue and judges the measured XY from telemetry against the path. Exit 2 if it is refused or does not complete.</source>
         <translation>移动到图形起点（先 XY，分析仪上再移 Z），将各段流式送入设备的路径队列，并根据遥测中实测的 XY 相对路径进行评判。被拒绝或未完成时退出码为 2。</translation>
     </message>
     <message>
@@ -1508,8 +1509,8 @@ Options:
         <translation>新运行请给出 --log，继续运行请给出 --resume，两者不能同时给出</translation>
     </message>
     <message>
-        <source>--interrupted must be skip or redo (got '%1')</source>
-        <translation>--interrupted 必须为 skip 或 redo（收到 '%1'）</translation>
+        <source>--interrupted must be skip or redo (got &apos;%1&apos;)</source>
+        <translation>--interrupted 必须为 skip 或 redo（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>%1 does not validate: nothing moved</source>
@@ -1552,59 +1553,59 @@ Options:
         <translation>台面定义（默认：内置的分析仪台面）</translation>
     </message>
     <message>
-        <source>slot calibration (default: the one the GUI keeps, %1); "none" for the nominal slots</source>
-        <translation>板位校准（默认：图形界面保存的校准，%1）；"none" 表示使用名义板位</translation>
+        <source>slot calibration (default: the one the GUI keeps, %1); &quot;none&quot; for the nominal slots</source>
+        <translation>板位校准（默认：图形界面保存的校准，%1）；&quot;none&quot; 表示使用名义板位</translation>
     </message>
     <message>
         <source>name one recipe file</source>
         <translation>请指定一个加样方案文件</translation>
     </message>
     <message>
-        <source>--%1 '%2' needs 1 to %3 comma-separated numbers</source>
-        <translation>--%1 '%2' 需要 1 到 %3 个以逗号分隔的数</translation>
+        <source>--%1 &apos;%2&apos; needs 1 to %3 comma-separated numbers</source>
+        <translation>--%1 &apos;%2&apos; 需要 1 到 %3 个以逗号分隔的数</translation>
     </message>
     <message>
-        <source>give the region: --roi x0,y0,x1,y1, --centre x,y with --size w,h, or --polygon 'x,y;x,y;…'</source>
-        <translation>请给出区域：--roi x0,y0,x1,y1，--centre x,y 加 --size w,h，或 --polygon 'x,y;x,y;…'</translation>
+        <source>give the region: --roi x0,y0,x1,y1, --centre x,y with --size w,h, or --polygon &apos;x,y;x,y;…&apos;</source>
+        <translation>请给出区域：--roi x0,y0,x1,y1，--centre x,y 加 --size w,h，或 --polygon &apos;x,y;x,y;…&apos;</translation>
     </message>
     <message>
         <source>give one region: --roi, --centre/--size or --polygon</source>
         <translation>只能给出一种区域：--roi、--centre/--size 或 --polygon</translation>
     </message>
     <message>
-        <source>--polygon: corner '%1' is not x,y in mm</source>
-        <translation>--polygon：角点 '%1' 不是以 mm 为单位的 x,y</translation>
+        <source>--polygon: corner &apos;%1&apos; is not x,y in mm</source>
+        <translation>--polygon：角点 &apos;%1&apos; 不是以 mm 为单位的 x,y</translation>
     </message>
     <message>
         <source>give the camera field: --fov w,h in mm, or --sensor W,H px with --sensor-um and --mag</source>
         <translation>请给出相机视场：--fov w,h（mm），或 --sensor W,H（像素）加 --sensor-um 和 --mag</translation>
     </message>
     <message>
-        <source>--sensor '%1' must be two whole pixel counts</source>
-        <translation>--sensor '%1' 必须是两个整数像素数</translation>
+        <source>--sensor &apos;%1&apos; must be two whole pixel counts</source>
+        <translation>--sensor &apos;%1&apos; 必须是两个整数像素数</translation>
     </message>
     <message>
-        <source>--order '%1' is not one of snake-rows, rows, snake-cols, cols</source>
-        <translation>--order '%1' 不是 snake-rows, rows, snake-cols, cols 之一</translation>
+        <source>--order &apos;%1&apos; is not one of snake-rows, rows, snake-cols, cols</source>
+        <translation>--order &apos;%1&apos; 不是 snake-rows, rows, snake-cols, cols 之一</translation>
     </message>
     <message>
-        <source>--start '%1' is not one of top-left, top-right, bottom-left, bottom-right</source>
-        <translation>--start '%1' 不是 top-left, top-right, bottom-left, bottom-right 之一</translation>
+        <source>--start &apos;%1&apos; is not one of top-left, top-right, bottom-left, bottom-right</source>
+        <translation>--start &apos;%1&apos; 不是 top-left, top-right, bottom-left, bottom-right 之一</translation>
     </message>
     <message>
-        <source>--format '%1' is not one of json, summary, tileconfig, mmpos, csv</source>
-        <translation>--format '%1' 不是 json, summary, tileconfig, mmpos, csv 之一</translation>
+        <source>--format &apos;%1&apos; is not one of json, summary, tileconfig, mmpos, csv</source>
+        <translation>--format &apos;%1&apos; 不是 json, summary, tileconfig, mmpos, csv 之一</translation>
     </message>
     <message>
-        <source>takes at most one plan file (got '%1')</source>
-        <translation>最多只接受一个计划文件（收到 '%1'）</translation>
+        <source>takes at most one plan file (got &apos;%1&apos;)</source>
+        <translation>最多只接受一个计划文件（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <source>give a plan file or the plan's options, not both (--%1)</source>
+        <source>give a plan file or the plan&apos;s options, not both (--%1)</source>
         <translation>计划文件和计划选项只能给出其一（--%1）</translation>
     </message>
     <message>
-        <source>--pixel-um: the plan's camera gives the pixel size (sensor pixel / magnification)</source>
+        <source>--pixel-um: the plan&apos;s camera gives the pixel size (sensor pixel / magnification)</source>
         <translation>--pixel-um：像素尺寸由计划中的相机给出（传感器像素 / 放大倍数）</translation>
     </message>
     <message>
@@ -1696,12 +1697,12 @@ Options:
         <translation>Kp %1，Ki %2 /s，Kd %3 s</translation>
     </message>
     <message>
-        <source>gains are three numbers Kp,Ki,Kd (got '%1')</source>
-        <translation>增益是三个数 Kp,Ki,Kd（收到 '%1'）</translation>
+        <source>gains are three numbers Kp,Ki,Kd (got &apos;%1&apos;)</source>
+        <translation>增益是三个数 Kp,Ki,Kd（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <source>%1 '%2' is not a number</source>
-        <translation>%1 '%2' 不是数字</translation>
+        <source>%1 &apos;%2&apos; is not a number</source>
+        <translation>%1 &apos;%2&apos; 不是数字</translation>
     </message>
     <message>
         <source>homing the axis first</source>
@@ -1744,8 +1745,8 @@ Options:
         <translation>--method 必须为 zn（临界增益）或 relay（继电）</translation>
     </message>
     <message>
-        <source>--verify: no rule '%1'</source>
-        <translation>--verify：没有规则 '%1'</translation>
+        <source>--verify: no rule &apos;%1&apos;</source>
+        <translation>--verify：没有规则 &apos;%1&apos;</translation>
     </message>
     <message>
         <source>relay</source>
@@ -1810,20 +1811,20 @@ Options:
 </translation>
     </message>
     <message>
-        <source>  never inside seed 002's ±5 µm band
+        <source>  never inside seed 002&apos;s ±5 µm band
 </source>
         <translation>  始终未进入文献 002 的 ±5 µm 带内
 </translation>
     </message>
     <message>
-        <source>  inside seed 002's ±5 µm band from %1 s
+        <source>  inside seed 002&apos;s ±5 µm band from %1 s
 </source>
         <translation>  自 %1 s 起进入文献 002 的 ±5 µm 带内
 </translation>
     </message>
     <message>
-        <source>expected AXIS=Kp,Ki,Kd with a closed-loop axis, got '%1'</source>
-        <translation>应为 AXIS=Kp,Ki,Kd，且须为闭环轴，收到 '%1'</translation>
+        <source>expected AXIS=Kp,Ki,Kd with a closed-loop axis, got &apos;%1&apos;</source>
+        <translation>应为 AXIS=Kp,Ki,Kd，且须为闭环轴，收到 &apos;%1&apos;</translation>
     </message>
     <message>
         <source>%1: %2</source>
@@ -1846,7 +1847,7 @@ Options:
         <translation>用模型对象代替仪器：fopdt:K=..,tau=..,L=.. 或 lag:K=..,tau=..,n=..</translation>
     </message>
     <message>
-        <source>the instrument's closed-loop axis</source>
+        <source>the instrument&apos;s closed-loop axis</source>
         <translation>仪器的闭环轴</translation>
     </message>
     <message>
@@ -1866,7 +1867,7 @@ Options:
         <translation>安全包络：测试的最长运行时间，s</translation>
     </message>
     <message>
-        <source>gains are eq. 2's per-period kp,ki,kd, not Kp, Ki [1/s], Kd [s]</source>
+        <source>gains are eq. 2&apos;s per-period kp,ki,kd, not Kp, Ki [1/s], Kd [s]</source>
         <translation>增益为式 2 的每周期 kp,ki,kd，而不是 Kp、Ki [1/s]、Kd [s]</translation>
     </message>
     <message>
@@ -1874,7 +1875,7 @@ Options:
         <translation>求 Ku 和 Tu（Ziegler–Nichols）并输出整定规则</translation>
     </message>
     <message>
-        <source>--method zn raises Kp trial by trial (P only) until the oscillation neither grows nor decays; --method relay runs Åström and Hägglund's relay, then refines to the measured phase crossover. Trials run inside 60 % of the envelope. Ki and Kd are printed in continuous form (1/s, s).</source>
+        <source>--method zn raises Kp trial by trial (P only) until the oscillation neither grows nor decays; --method relay runs Åström and Hägglund&apos;s relay, then refines to the measured phase crossover. Trials run inside 60 % of the envelope. Ki and Kd are printed in continuous form (1/s, s).</source>
         <translation>--method zn 逐次试验提高 Kp（仅比例控制），直到振荡既不发散也不衰减；--method relay 运行 Åström 和 Hägglund 的继电测试，然后细化到实测的相位穿越点。试验在安全包络的 60 % 以内进行。Ki 和 Kd 以连续形式输出（1/s、s）。</translation>
     </message>
     <message>
@@ -1890,7 +1891,7 @@ Options:
         <translation>relay：滞环 ε（mm；或对象单位）</translation>
     </message>
     <message>
-        <source>zn: each trial's setpoint step (mm; plant units)</source>
+        <source>zn: each trial&apos;s setpoint step (mm; plant units)</source>
         <translation>zn：每次试验的设定值阶跃（mm；或对象单位）</translation>
     </message>
     <message>
@@ -1898,7 +1899,7 @@ Options:
         <translation>relay：仅给出经典描述函数法的估计值</translation>
     </message>
     <message>
-        <source>run a step test with this rule's gains afterwards (zn-pid, tl-pi, …)</source>
+        <source>run a step test with this rule&apos;s gains afterwards (zn-pid, tl-pi, …)</source>
         <translation>之后用该规则的增益运行阶跃测试（zn-pid, tl-pi, …）</translation>
     </message>
     <message>
@@ -1906,11 +1907,11 @@ Options:
         <translation>将结果写入 .tuning.json 文件</translation>
     </message>
     <message>
-        <source>a step on one axis under given (or the axis' own) gains; print its metrics</source>
+        <source>a step on one axis under given (or the axis&apos; own) gains; print its metrics</source>
         <translation>在给定增益（或该轴自身增益）下对单轴施加阶跃；输出其指标</translation>
     </message>
     <message>
-        <source>--size in mm (signed: the direction). --gains Kp,Ki,Kd are tried for this test only: the axis' own gains stay.</source>
+        <source>--size in mm (signed: the direction). --gains Kp,Ki,Kd are tried for this test only: the axis&apos; own gains stay.</source>
         <translation>--size 以 mm 为单位（正负号表示方向）。--gains Kp,Ki,Kd 只在本次测试中试用：轴自身的增益保持不变。</translation>
     </message>
     <message>
@@ -1930,7 +1931,7 @@ Options:
         <translation>Kp、Ki（1/s）、Kd（s）（使用 --per-period 时为每周期值）。设备会拒绝 NaN、负值和不合理的值并说明原因，同时保留原有增益。</translation>
     </message>
     <message>
-        <source>also keep them as the device's power-up gains</source>
+        <source>also keep them as the device&apos;s power-up gains</source>
         <translation>同时保存为设备的上电增益</translation>
     </message>
     <message>
@@ -1966,7 +1967,7 @@ Options:
         <translation>请给出一个读数 CSV 文件</translation>
     </message>
     <message>
-        <source>give --sequence TARGETS.csv and the interferometer's CSV export</source>
+        <source>give --sequence TARGETS.csv and the interferometer&apos;s CSV export</source>
         <translation>请给出 --sequence TARGETS.csv 和激光干涉仪导出的 CSV 文件</translation>
     </message>
     <message>
@@ -2022,7 +2023,7 @@ Options:
         <translation>在 X 和 Y 上运行圆测试（ISO 230-4）</translation>
     </message>
     <message>
-        <source>an interferometer's CSV export matched to a run's target sequence</source>
+        <source>an interferometer&apos;s CSV export matched to a run&apos;s target sequence</source>
         <translation>将激光干涉仪导出的 CSV 与某次运行的目标位置序列相匹配</translation>
     </message>
     <message>
@@ -2030,28 +2031,28 @@ Options:
         <translation>EXPORT.csv</translation>
     </message>
     <message>
-        <source>--targets '%1': START:END:COUNT, such as 10:90:9, or a list such as 10,30,50</source>
-        <translation>--targets '%1'：应为 START:END:COUNT，如 10:90:9，或列表，如 10,30,50</translation>
+        <source>--targets &apos;%1&apos;: START:END:COUNT, such as 10:90:9, or a list such as 10,30,50</source>
+        <translation>--targets &apos;%1&apos;：应为 START:END:COUNT，如 10:90:9，或列表，如 10,30,50</translation>
     </message>
     <message>
-        <source>%1 is a circular test: run it with 'accuracy circle --test'</source>
-        <translation>%1 是圆测试：请用 'accuracy circle --test' 运行</translation>
+        <source>%1 is a circular test: run it with &apos;accuracy circle --test&apos;</source>
+        <translation>%1 是圆测试：请用 &apos;accuracy circle --test&apos; 运行</translation>
     </message>
     <message>
         <source>give --targets START:END:COUNT (or a list), or --test FILE</source>
         <translation>请给出 --targets START:END:COUNT（或列表），或 --test FILE</translation>
     </message>
     <message>
-        <source>--cycles '%1' must be a whole number</source>
-        <translation>--cycles '%1' 必须是整数</translation>
+        <source>--cycles &apos;%1&apos; must be a whole number</source>
+        <translation>--cycles &apos;%1&apos; 必须是整数</translation>
     </message>
     <message>
         <source>--time-scale must be from 0 to 100</source>
         <translation>--time-scale 必须在 0 到 100 之间</translation>
     </message>
     <message>
-        <source><byte value="xd" />%1 of %2 readings, about %3 s left   </source>
-        <translation><byte value="xd" />已取得 %1/%2 个读数，约剩 %3 s   </translation>
+        <source><byte value="xd"/>%1 of %2 readings, about %3 s left   </source>
+        <translation><byte value="xd"/>已取得 %1/%2 个读数，约剩 %3 s   </translation>
     </message>
     <message>
         <source>Positioning accuracy of axis %1</source>
@@ -2066,8 +2067,8 @@ Options:
         <translation>读数 %1/%2：%3%4，循环 %5；请输入读数，单位 mm（输入 q 中止）：</translation>
     </message>
     <message>
-        <source>'%1' is not a reading here; </source>
-        <translation>'%1' 不是此处有效的读数；</translation>
+        <source>&apos;%1&apos; is not a reading here; </source>
+        <translation>&apos;%1&apos; 不是此处有效的读数；</translation>
     </message>
     <message>
         <source>no BenchPilot GUI is running with its API at %1. Start benchpilot (with --api-socket %1 if that is where it should listen), or leave out --attach to open the instrument directly.</source>
@@ -2086,8 +2087,8 @@ Options:
         <translation>命令完成前图形界面关闭了连接</translation>
     </message>
     <message>
-        <source>--instrument needs 'analyzer' or 'stage' (got '%1')</source>
-        <translation>--instrument 需要 'analyzer' 或 'stage'（收到 '%1'）</translation>
+        <source>--instrument needs &apos;analyzer&apos; or &apos;stage&apos; (got &apos;%1&apos;)</source>
+        <translation>--instrument 需要 &apos;analyzer&apos; 或 &apos;stage&apos;（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>--profile needs a machine profile file</source>
@@ -2098,11 +2099,11 @@ Options:
         <translation>--profile：%1</translation>
     </message>
     <message>
-        <source>the in-process simulator: analyzer or stage (default: analyzer); with --attach, which of the GUI's instruments</source>
+        <source>the in-process simulator: analyzer or stage (default: analyzer); with --attach, which of the GUI&apos;s instruments</source>
         <translation>进程内仿真器：analyzer 或 stage（默认：analyzer）；与 --attach 一起使用时，指图形界面中的哪台仪器</translation>
     </message>
     <message>
-        <source>with --port: which instrument it is, analyzer or stage (default: what the device says; a GRBL controller: the profile's, else the analyzer)</source>
+        <source>with --port: which instrument it is, analyzer or stage (default: what the device says; a GRBL controller: the profile&apos;s, else the analyzer)</source>
         <translation>与 --port 一起使用：它是哪台仪器，analyzer 或 stage（默认：以设备所报为准；GRBL 控制器：以配置文件为准，否则为分析仪）</translation>
     </message>
     <message>
@@ -2114,13 +2115,13 @@ Options:
         <translation>通过正在运行的 BenchPilot 图形界面执行命令（使用其仪器及其控制权）</translation>
     </message>
     <message>
-        <source>with --attach: the GUI's API socket (default: $XDG_RUNTIME_DIR/benchpilot/api.sock)</source>
+        <source>with --attach: the GUI&apos;s API socket (default: $XDG_RUNTIME_DIR/benchpilot/api.sock)</source>
         <translation>与 --attach 一起使用：图形界面的接口套接字（默认：$XDG_RUNTIME_DIR/benchpilot/api.sock）</translation>
     </message>
     <message>
         <source>usage: benchpilot-cli [GLOBAL OPTIONS] COMMAND [OPTIONS] [ARGUMENTS]
 
-Scripts BenchPilot's instruments (the in-process simulators, benchpilot-sim's pty, or a
+Scripts BenchPilot&apos;s instruments (the in-process simulators, benchpilot-sim&apos;s pty, or a
 serial port: BenchPilot firmware, or a GRBL 1.1 / grblHAL controller) and its motion library.
 
 Commands:
@@ -2162,15 +2163,15 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>请给出一个结果 JSON 或误差曲线 CSV</translation>
     </message>
     <message>
-        <source>--order '%1': auto or 1 to 5</source>
-        <translation>--order '%1'：应为 auto 或 1 到 5</translation>
+        <source>--order &apos;%1&apos;: auto or 1 to 5</source>
+        <translation>--order &apos;%1&apos;：应为 auto 或 1 到 5</translation>
     </message>
     <message>
-        <source>--kind '%1': polynomial or table</source>
-        <translation>--kind '%1'：应为 polynomial 或 table</translation>
+        <source>--kind &apos;%1&apos;: polynomial or table</source>
+        <translation>--kind &apos;%1&apos;：应为 polynomial 或 table</translation>
     </message>
     <message>
-        <source>--kind table needs a result JSON: a table is made from each target's means</source>
+        <source>--kind table needs a result JSON: a table is made from each target&apos;s means</source>
         <translation>--kind table 需要结果 JSON：补偿表由各目标位置的平均值生成</translation>
     </message>
     <message>
@@ -2226,12 +2227,12 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>请给出一个补偿文件</translation>
     </message>
     <message>
-        <source>--format '%1': linuxcnc or csv</source>
-        <translation>--format '%1'：应为 linuxcnc 或 csv</translation>
+        <source>--format &apos;%1&apos;: linuxcnc or csv</source>
+        <translation>--format &apos;%1&apos;：应为 linuxcnc 或 csv</translation>
     </message>
     <message>
-        <source>--type '%1': 0 (positions reached) or 1 (corrections)</source>
-        <translation>--type '%1'：应为 0（到达的位置）或 1（修正量）</translation>
+        <source>--type &apos;%1&apos;: 0 (positions reached) or 1 (corrections)</source>
+        <translation>--type &apos;%1&apos;：应为 0（到达的位置）或 1（修正量）</translation>
     </message>
     <message>
         <source>axis error compensation: fit, keep on the device, export</source>
@@ -2246,8 +2247,8 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>输入</translation>
     </message>
     <message>
-        <source>INPUT is a result JSON of 'accuracy run' or 'accuracy analyze', or a CSV with position_mm,error_um. The order is chosen by adjusted R² unless --order names one; --out writes the compensation file.</source>
-        <translation>输入为 'accuracy run' 或 'accuracy analyze' 的结果 JSON，或含 position_mm,error_um 列的 CSV。除非 --order 指定阶数，否则按调整后 R² 选择阶数；--out 写出补偿文件。</translation>
+        <source>INPUT is a result JSON of &apos;accuracy run&apos; or &apos;accuracy analyze&apos;, or a CSV with position_mm,error_um. The order is chosen by adjusted R² unless --order names one; --out writes the compensation file.</source>
+        <translation>输入为 &apos;accuracy run&apos; 或 &apos;accuracy analyze&apos; 的结果 JSON，或含 position_mm,error_um 列的 CSV。除非 --order 指定阶数，否则按调整后 R² 选择阶数；--out 写出补偿文件。</translation>
     </message>
     <message>
         <source>send a compensation file to the device (installed disabled)</source>
@@ -2258,15 +2259,15 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>文件</translation>
     </message>
     <message>
-        <source>the device's compensation of an axis</source>
+        <source>the device&apos;s compensation of an axis</source>
         <translation>设备上某轴的补偿</translation>
     </message>
     <message>
-        <source>enable the device's compensation of an axis</source>
+        <source>enable the device&apos;s compensation of an axis</source>
         <translation>启用设备上某轴的补偿</translation>
     </message>
     <message>
-        <source>disable the device's compensation of an axis</source>
+        <source>disable the device&apos;s compensation of an axis</source>
         <translation>禁用设备上某轴的补偿</translation>
     </message>
     <message>
@@ -2278,7 +2279,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>[文件]</translation>
     </message>
     <message>
-        <source>Exports FILE, or the device's compensation of --axis when no FILE is given. LinuxCNC: --type 0 writes the positions the joint reaches, --type 1 the corrections (COMP_FILE_TYPE).</source>
+        <source>Exports FILE, or the device&apos;s compensation of --axis when no FILE is given. LinuxCNC: --type 0 writes the positions the joint reaches, --type 1 the corrections (COMP_FILE_TYPE).</source>
         <translation>导出给定的文件；未给出文件时，导出设备上 --axis 所指轴的补偿。LinuxCNC：--type 0 写出关节到达的位置，--type 1 写出修正量（COMP_FILE_TYPE）。</translation>
     </message>
     <message>
@@ -2294,12 +2295,12 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>解锁</translation>
     </message>
     <message>
-        <source>the axes to home, e.g. "XY"; all when left out</source>
-        <translation>要回零的轴，例如 "XY"；省略时全部回零</translation>
+        <source>the axes to home, e.g. &quot;XY&quot;; all when left out</source>
+        <translation>要回零的轴，例如 &quot;XY&quot;；省略时全部回零</translation>
     </message>
     <message>
-        <source>axis → target, e.g. {"X": 10, "Y": 5}</source>
-        <translation>轴 → 目标位置，例如 {"X": 10, "Y": 5}</translation>
+        <source>axis → target, e.g. {&quot;X&quot;: 10, &quot;Y&quot;: 5}</source>
+        <translation>轴 → 目标位置，例如 {&quot;X&quot;: 10, &quot;Y&quot;: 5}</translation>
     </message>
     <message>
         <source>the axis letter</source>
@@ -2318,11 +2319,11 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>在未启用回零（$22=0）的 GRBL 控制器上，这会按您的确认将当前位置作为零位：之后允许绝对移动。</translation>
     </message>
     <message>
-        <source>the axes to zero, e.g. "XY"</source>
-        <translation>要设零点的轴，例如 "XY"</translation>
+        <source>the axes to zero, e.g. &quot;XY&quot;</source>
+        <translation>要设零点的轴，例如 &quot;XY&quot;</translation>
     </message>
     <message>
-        <source>accept the position a controller believes after an alarm (GRBL's $X)</source>
+        <source>accept the position a controller believes after an alarm (GRBL&apos;s $X)</source>
         <translation>报警后采用控制器认定的位置（GRBL 的 $X）</translation>
     </message>
     <message>
@@ -2334,8 +2335,8 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>轴 → 要设置的 [min, max]；省略时显示当前值</translation>
     </message>
     <message>
-        <source>one joint's blocks "S:V2:t0_ms,…"; an array of such strings for several joints</source>
-        <translation>一个关节的块 "S:V2:t0_ms,…"；多个关节时为此类字符串组成的数组</translation>
+        <source>one joint&apos;s blocks &quot;S:V2:t0_ms,…&quot;; an array of such strings for several joints</source>
+        <translation>一个关节的块 &quot;S:V2:t0_ms,…&quot;；多个关节时为此类字符串组成的数组</translation>
     </message>
     <message>
         <source>%1 on the %2: %3 of %4 segments in %5 s; contour error max %6 µm, RMS %7 µm (%8 samples at %9 Hz)
@@ -2348,7 +2349,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>加样方案文件</translation>
     </message>
     <message>
-        <source>a plan file to print in another format (instead of the plan's options)</source>
+        <source>a plan file to print in another format (instead of the plan&apos;s options)</source>
         <translation>要以另一种格式输出的计划文件（代替计划选项）</translation>
     </message>
     <message>
@@ -2360,7 +2361,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>轴 → 要设置的 [Kp, Ki, Kd]；省略时显示当前值</translation>
     </message>
     <message>
-        <source>--time-scale speeds up benchpilot-cli's own simulator; the GUI's simulators keep their pace</source>
+        <source>--time-scale speeds up benchpilot-cli&apos;s own simulator; the GUI&apos;s simulators keep their pace</source>
         <translation>--time-scale 只加速 benchpilot-cli 自己的仿真器；图形界面的仿真器保持原有速度</translation>
     </message>
     <message>
@@ -2368,7 +2369,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>读数 CSV 文件</translation>
     </message>
     <message>
-        <source>the interferometer software's CSV export</source>
+        <source>the interferometer software&apos;s CSV export</source>
         <translation>干涉仪软件导出的 CSV 文件</translation>
     </message>
     <message>
@@ -2380,7 +2381,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>补偿文件</translation>
     </message>
     <message>
-        <source>a compensation file; the device's when left out</source>
+        <source>a compensation file; the device&apos;s when left out</source>
         <translation>补偿文件；省略时使用设备上的补偿</translation>
     </message>
     <message>
@@ -2519,7 +2520,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>缺少数值，或数值格式无效。</translation>
     </message>
     <message>
-        <source>The '$' system command is not recognized or not supported.</source>
+        <source>The &apos;$&apos; system command is not recognized or not supported.</source>
         <translation>无法识别或不支持该“$”系统命令。</translation>
     </message>
     <message>
@@ -2527,7 +2528,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>在只允许正值的地方给出了负值。</translation>
     </message>
     <message>
-        <source>Homing is not enabled in the controller's settings.</source>
+        <source>Homing is not enabled in the controller&apos;s settings.</source>
         <translation>控制器设置中未启用回零。</translation>
     </message>
     <message>
@@ -2539,7 +2540,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>读取已存设置失败；控制器已恢复默认值。</translation>
     </message>
     <message>
-        <source>This '$' command is only accepted while the controller is idle.</source>
+        <source>This &apos;$&apos; command is only accepted while the controller is idle.</source>
         <translation>该“$”命令只能在控制器空闲时执行。</translation>
     </message>
     <message>
@@ -2571,7 +2572,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>点动目标超出机床行程；该点动被忽略。</translation>
     </message>
     <message>
-        <source>The jog command has no '=' or contains G-code that jogging does not allow.</source>
+        <source>The jog command has no &apos;=&apos; or contains G-code that jogging does not allow.</source>
         <translation>点动命令缺少“=”，或含有点动不允许的 G 代码。</translation>
     </message>
     <message>
@@ -2643,7 +2644,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>运动目标无效（无法实现的圆弧，或探测目标等于当前位置）。</translation>
     </message>
     <message>
-        <source>The arc's radius form gives no valid geometry; use the centre (I J) form or split the arc.</source>
+        <source>The arc&apos;s radius form gives no valid geometry; use the centre (I J) form or split the arc.</source>
         <translation>圆弧的半径格式得不到有效几何；请使用圆心（I J）格式或拆分圆弧。</translation>
     </message>
     <message>
@@ -2906,15 +2907,15 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
 <context>
     <name>jobs</name>
     <message>
-        <source>--source '%1': readback, gauge:PATH, manual or interferometer</source>
-        <translation>--source '%1'：可选 readback、gauge:PATH、manual 或 interferometer</translation>
+        <source>--source &apos;%1&apos;: readback, gauge:PATH, manual or interferometer</source>
+        <translation>--source &apos;%1&apos;：可选 readback、gauge:PATH、manual 或 interferometer</translation>
     </message>
     <message>
         <source>--gauge-timeout must be from 0 to 60 s</source>
         <translation>--gauge-timeout 必须在 0 到 60 s 之间</translation>
     </message>
     <message>
-        <source>--source gauge:sim reads the in-process simulator's gauge: use it with --sim</source>
+        <source>--source gauge:sim reads the in-process simulator&apos;s gauge: use it with --sim</source>
         <translation>--source gauge:sim 读取进程内仿真器的测头：请与 --sim 一起使用</translation>
     </message>
     <message>
@@ -2926,7 +2927,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>--source manual 读取操作员在 benchpilot-cli 中输入的读数；在图形界面中请使用“校准”界面</translation>
     </message>
     <message>
-        <source>--source gauge:sim is benchpilot-cli's own simulator's gauge: inside the GUI give the gauge's port, or use the Calibration screen's simulated gauge</source>
+        <source>--source gauge:sim is benchpilot-cli&apos;s own simulator&apos;s gauge: inside the GUI give the gauge&apos;s port, or use the Calibration screen&apos;s simulated gauge</source>
         <translation>--source gauge:sim 是 benchpilot-cli 自带仿真器的测头：在图形界面中请给出测头的端口，或使用“校准”界面的模拟测头</translation>
     </message>
 </context>
@@ -2957,7 +2958,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>截图：点动并移动所示仪器，使实时曲线显示运动</translation>
     </message>
     <message>
-        <source>screenshot: tune the stage's X axis (relay, then a step test) on the tuning screen</source>
+        <source>screenshot: tune the stage&apos;s X axis (relay, then a step test) on the tuning screen</source>
         <translation>截图：在整定界面整定载物台 X 轴（继电试验，然后阶跃测试）</translation>
     </message>
     <message>
@@ -2965,7 +2966,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>截图：在孔板界面打开该方案，让分析仪回零并运行</translation>
     </message>
     <message>
-        <source>language of the screens: system, en or zh_CN (default: the Language menu's choice)</source>
+        <source>language of the screens: system, en or zh_CN (default: the Language menu&apos;s choice)</source>
         <translation>界面语言：system、en 或 zh_CN（默认：“语言”菜单中的选择）</translation>
     </message>
     <message>
@@ -2973,11 +2974,11 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>将该仪器连接到进程内仿真器并显示（analyzer 或 stage；也是截图显示的仪器）</translation>
     </message>
     <message>
-        <source>connect to this serial port or path (e.g. benchpilot-sim's pty); the protocol is detected: BenchPilot or GRBL</source>
+        <source>connect to this serial port or path (e.g. benchpilot-sim&apos;s pty); the protocol is detected: BenchPilot or GRBL</source>
         <translation>连接到该串口或路径（例如 benchpilot-sim 的 pty）；自动检测协议：BenchPilot 或 GRBL</translation>
     </message>
     <message>
-        <source>with --port: which instrument it is, analyzer or stage (default: what the device says; a GRBL controller: the profile's, else the analyzer)</source>
+        <source>with --port: which instrument it is, analyzer or stage (default: what the device says; a GRBL controller: the profile&apos;s, else the analyzer)</source>
         <translation>与 --port 一起使用：它是哪台仪器，analyzer 或 stage（默认：以设备所报为准；GRBL 控制器：以配置文件为准，否则为分析仪）</translation>
     </message>
     <message>
@@ -3001,7 +3002,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>同时在 127.0.0.1:端口 上以 WebSocket 提供接口（默认关闭）</translation>
     </message>
     <message>
-        <source>the WebSocket's token file, 0600 (default: api.token beside the socket)</source>
+        <source>the WebSocket&apos;s token file, 0600 (default: api.token beside the socket)</source>
         <translation>WebSocket 的令牌文件，权限 0600（默认：套接字旁的 api.token）</translation>
     </message>
     <message>
@@ -3013,16 +3014,16 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>--instrument 和 --profile 须与 --port 一起使用</translation>
     </message>
     <message>
-        <source>--sim needs 'analyzer' or 'stage' (got '%1')</source>
-        <translation>--sim 需要 'analyzer' 或 'stage'（收到 '%1'）</translation>
+        <source>--sim needs &apos;analyzer&apos; or &apos;stage&apos; (got &apos;%1&apos;)</source>
+        <translation>--sim 需要 &apos;analyzer&apos; 或 &apos;stage&apos;（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <source>--baud needs a rate of at least 1200 (got '%1')</source>
-        <translation>--baud 需要不低于 1200 的速率（收到 '%1'）</translation>
+        <source>--baud needs a rate of at least 1200 (got &apos;%1&apos;)</source>
+        <translation>--baud 需要不低于 1200 的速率（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <source>--instrument needs 'analyzer' or 'stage' (got '%1')</source>
-        <translation>--instrument 需要 'analyzer' 或 'stage'（收到 '%1'）</translation>
+        <source>--instrument needs &apos;analyzer&apos; or &apos;stage&apos; (got &apos;%1&apos;)</source>
+        <translation>--instrument 需要 &apos;analyzer&apos; 或 &apos;stage&apos;（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>--profile: %1</source>
@@ -3037,7 +3038,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>--sim 与 --port 指向同一台仪器</translation>
     </message>
     <message>
-        <source>screenshot: the window's size, e.g. 1366x768 (a window that cannot shrink to it shows as a larger picture)</source>
+        <source>screenshot: the window&apos;s size, e.g. 1366x768 (a window that cannot shrink to it shows as a larger picture)</source>
         <translation>截图：窗口尺寸，如 1366x768（无法缩到该尺寸的窗口会得到更大的图片）</translation>
     </message>
 </context>
@@ -3188,7 +3189,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>补偿后</translation>
     </message>
     <message>
-        <source>Compensation fit of the mean deviations (seed 002's method)</source>
+        <source>Compensation fit of the mean deviations (seed 002&apos;s method)</source>
         <translation>平均偏差的补偿拟合（文献 002 的方法）</translation>
     </message>
     <message>
@@ -3333,24 +3334,24 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <translation>benchpilot、grbl 或 grblhal</translation>
     </message>
     <message>
-        <source>--instrument must be analyzer or stage (got '%1')</source>
-        <translation>--instrument 必须为 analyzer 或 stage（收到 '%1'）</translation>
+        <source>--instrument must be analyzer or stage (got &apos;%1&apos;)</source>
+        <translation>--instrument 必须为 analyzer 或 stage（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <source>--protocol must be benchpilot, grbl or grblhal (got '%1')</source>
-        <translation>--protocol 必须为 benchpilot、grbl 或 grblhal（收到 '%1'）</translation>
+        <source>--protocol must be benchpilot, grbl or grblhal (got &apos;%1&apos;)</source>
+        <translation>--protocol 必须为 benchpilot、grbl 或 grblhal（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>--pty PATH is required</source>
         <translation>必须给出 --pty PATH</translation>
     </message>
     <message>
-        <source>--time-scale must be a number in (0, 1000] (got '%1')</source>
-        <translation>--time-scale 必须是 (0, 1000] 范围内的数（收到 '%1'）</translation>
+        <source>--time-scale must be a number in (0, 1000] (got &apos;%1&apos;)</source>
+        <translation>--time-scale 必须是 (0, 1000] 范围内的数（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <source>--baud must be at least 1200 (got '%1')</source>
-        <translation>--baud 必须不小于 1200（收到 '%1'）</translation>
+        <source>--baud must be at least 1200 (got &apos;%1&apos;)</source>
+        <translation>--baud 必须不小于 1200（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
         <source>%1 exists and is not a symlink: refusing to replace it</source>
@@ -3361,7 +3362,7 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <translation>无法创建符号链接 %1：%2</translation>
     </message>
     <message>
-        <source>symlink to create for a simulated gauge's pty</source>
+        <source>symlink to create for a simulated gauge&apos;s pty</source>
         <translation>为模拟测头的 pty 创建的符号链接</translation>
     </message>
     <message>
@@ -3369,27 +3370,27 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <translation>测头读取其工作点的轴</translation>
     </message>
     <message>
-        <source>the gauge's last digit in mm</source>
+        <source>the gauge&apos;s last digit in mm</source>
         <translation>测头的末位分辨率，mm</translation>
     </message>
     <message>
-        <source>standard deviation of the gauge's noise in mm</source>
+        <source>standard deviation of the gauge&apos;s noise in mm</source>
         <translation>测头噪声的标准差，mm</translation>
     </message>
     <message>
-        <source>--gauge-axis: the %1 has no axis '%2'</source>
-        <translation>--gauge-axis：%1 没有轴 '%2'</translation>
+        <source>--gauge-axis: the %1 has no axis &apos;%2&apos;</source>
+        <translation>--gauge-axis：%1 没有轴 &apos;%2&apos;</translation>
     </message>
     <message>
-        <source>--gauge-resolution must be from 0.000001 to 0.1 mm (got '%1')</source>
-        <translation>--gauge-resolution 必须在 0.000001 到 0.1 mm 之间（收到 '%1'）</translation>
+        <source>--gauge-resolution must be from 0.000001 to 0.1 mm (got &apos;%1&apos;)</source>
+        <translation>--gauge-resolution 必须在 0.000001 到 0.1 mm 之间（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <source>--gauge-noise must be from 0 to 1 mm (got '%1')</source>
-        <translation>--gauge-noise 必须在 0 到 1 mm 之间（收到 '%1'）</translation>
+        <source>--gauge-noise must be from 0 to 1 mm (got &apos;%1&apos;)</source>
+        <translation>--gauge-noise 必须在 0 到 1 mm 之间（收到 &apos;%1&apos;）</translation>
     </message>
     <message>
-        <source>--gauge needs a path of its own, not the instrument's</source>
+        <source>--gauge needs a path of its own, not the instrument&apos;s</source>
         <translation>--gauge 需要自己的路径，不能与仪器的相同</translation>
     </message>
     <message>
@@ -3397,7 +3398,7 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <translation>停止时把固件执行过的请求写入此文件（仅限 benchpilot 协议）</translation>
     </message>
     <message>
-        <source>--journal records the benchpilot protocol's requests only</source>
+        <source>--journal records the benchpilot protocol&apos;s requests only</source>
         <translation>--journal 只记录 benchpilot 协议的请求</translation>
     </message>
 </context>
@@ -3602,7 +3603,7 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <translation>ISO 230-2 非等间距</translation>
     </message>
     <message>
-        <source>Moves each inner target off the even grid by its own amount, so a periodic error (a screw's pitch) is not sampled at one phase</source>
+        <source>Moves each inner target off the even grid by its own amount, so a periodic error (a screw&apos;s pitch) is not sampled at one phase</source>
         <translation>使每个内部目标位置各自偏离等间距网格一个不同的量，以免周期性误差（如丝杠螺距误差）总在同一相位被采样</translation>
     </message>
     <message>
@@ -3614,7 +3615,7 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <translation>双向（↑ 和 ↓）</translation>
     </message>
     <message>
-        <source>Unticked: every target approached from below only (ISO's unidirectional test)</source>
+        <source>Unticked: every target approached from below only (ISO&apos;s unidirectional test)</source>
         <translation>不勾选：每个目标位置只从下方趋近（ISO 的单向测试）</translation>
     </message>
     <message>
@@ -3729,11 +3730,11 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <translation>软限位：超出的移动会被拒绝</translation>
     </message>
     <message>
-        <source>Axis %1: '%2' is not a position</source>
+        <source>Axis %1: &apos;%2&apos; is not a position</source>
         <translation>%1 轴：“%2”不是位置</translation>
     </message>
     <message>
-        <source>Axis %1: step '%2' is not a positive number</source>
+        <source>Axis %1: step &apos;%2&apos; is not a positive number</source>
         <translation>%1 轴：步长“%2”不是正数</translation>
     </message>
     <message>
@@ -3776,7 +3777,7 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <translation>三个点能精确确定任意仿射变换，因此这里用最小二乘法拟合一个受限模型：其残差能揭示示教时偏离中心的孔。单一比例（默认）留有两个校验量；各轴单独比例则留有一个。</translation>
     </message>
     <message>
-        <source>For each well: &lt;b&gt;Go near&lt;/b&gt; (the tip rises, then moves over the well's expected place), lower it and centre it with the arrows, then &lt;b&gt;Record&lt;/b&gt;.</source>
+        <source>For each well: &lt;b&gt;Go near&lt;/b&gt; (the tip rises, then moves over the well&apos;s expected place), lower it and centre it with the arrows, then &lt;b&gt;Record&lt;/b&gt;.</source>
         <translation>对每个孔：点击&lt;b&gt;移近&lt;/b&gt;（加样针先抬起，再移到该孔预期位置的上方），降下加样针并用方向键对中，然后点击&lt;b&gt;记录&lt;/b&gt;。</translation>
     </message>
     <message>
@@ -3828,7 +3829,7 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <translation>移近</translation>
     </message>
     <message>
-        <source>Raise the tip to the slot's safe height, then move over where %1 is expected</source>
+        <source>Raise the tip to the slot&apos;s safe height, then move over where %1 is expected</source>
         <translation>将加样针抬到该板位的安全高度，再移到 %1 预期位置的上方</translation>
     </message>
     <message>
@@ -3836,7 +3837,7 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <translation>记录</translation>
     </message>
     <message>
-        <source>Take the tip's position now as the centre of %1</source>
+        <source>Take the tip&apos;s position now as the centre of %1</source>
         <translation>将加样针的当前位置记为 %1 的中心</translation>
     </message>
     <message>
@@ -3848,7 +3849,7 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <translation>分析仪未连接</translation>
     </message>
     <message>
-        <source>home the analyzer before teaching: the wells' places are absolute</source>
+        <source>home the analyzer before teaching: the wells&apos; places are absolute</source>
         <translation>示教前请先让分析仪回零：孔的位置是绝对坐标</translation>
     </message>
     <message>
@@ -3871,7 +3872,7 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
 <context>
     <name>ui::CalibrationScreen</name>
     <message>
-        <source>Name the gauge's port (or sim for the simulator's gauge).</source>
+        <source>Name the gauge&apos;s port (or sim for the simulator&apos;s gauge).</source>
         <translation>请指定测头的端口（仿真器的测头填 sim）。</translation>
     </message>
     <message>
@@ -3899,11 +3900,11 @@ Keep that log aside and start this test afresh?</source>
         <translation>第 %1/%2 个读数：%3%4，第 %5 次循环。千分表显示多少？</translation>
     </message>
     <message>
-        <source>'%1' is not a reading: type the indicator's value in mm.</source>
+        <source>&apos;%1&apos; is not a reading: type the indicator&apos;s value in mm.</source>
         <translation>“%1”不是读数：请输入千分表的示值，单位 mm。</translation>
     </message>
     <message>
-        <source>'%1' is not a reading here: type one value per axis, in mm.</source>
+        <source>&apos;%1&apos; is not a reading here: type one value per axis, in mm.</source>
         <translation>“%1”在此不是有效读数：请为每个轴输入一个值，单位 mm。</translation>
     </message>
     <message>
@@ -3999,7 +4000,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>报告已生成：%1</translation>
     </message>
     <message>
-        <source>The gauge's serial port (9600 Bd, 8N1); sim reads the simulator's gauge</source>
+        <source>The gauge&apos;s serial port (9600 Bd, 8N1); sim reads the simulator&apos;s gauge</source>
         <translation>测头的串口（9600 Bd，8N1）；填 sim 则读取仿真器的测头</translation>
     </message>
     <message>
@@ -4011,7 +4012,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>圆测试沿路径采样位置反馈</translation>
     </message>
     <message>
-        <source>The readback is what the position loop closes on: it cannot see the work point's error. A gauge or an interferometer at the work point can.</source>
+        <source>The readback is what the position loop closes on: it cannot see the work point&apos;s error. A gauge or an interferometer at the work point can.</source>
         <translation>位置反馈是位置环闭环所依据的量，看不到工作点处的误差；安装在工作点处的测头或干涉仪才能测到。</translation>
     </message>
     <message>
@@ -4019,7 +4020,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>测试正在运行。</translation>
     </message>
     <message>
-        <source>Opening the gauge's port…</source>
+        <source>Opening the gauge&apos;s port…</source>
         <translation>正在打开测头的端口…</translation>
     </message>
     <message>
@@ -4107,7 +4108,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>测头端口</translation>
     </message>
     <message>
-        <source>Folder for the run's log, readings and report</source>
+        <source>Folder for the run&apos;s log, readings and report</source>
         <translation>存放运行日志、读数和报告的文件夹</translation>
     </message>
     <message>
@@ -4135,7 +4136,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>保存…</translation>
     </message>
     <message>
-        <source>the instrument's readback</source>
+        <source>the instrument&apos;s readback</source>
         <translation>仪器的位置反馈</translation>
     </message>
     <message>
@@ -4151,7 +4152,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>激光干涉仪（事后导入）</translation>
     </message>
     <message>
-        <source>/dev/ttyUSB1, or sim for the simulator's gauge</source>
+        <source>/dev/ttyUSB1, or sim for the simulator&apos;s gauge</source>
         <translation>/dev/ttyUSB1，或填 sim 使用仿真器的测头</translation>
     </message>
     <message>
@@ -4269,7 +4270,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>测试正在运行：屏幕上的测试会保留，直到它完成或被中止。</translation>
     </message>
     <message>
-        <source>The run's target sequence</source>
+        <source>The run&apos;s target sequence</source>
         <translation>该次运行的目标位置序列</translation>
     </message>
     <message>
@@ -4277,7 +4278,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>目标位置序列 (*.targets.csv)</translation>
     </message>
     <message>
-        <source>The interferometer's CSV export of that run</source>
+        <source>The interferometer&apos;s CSV export of that run</source>
         <translation>该次运行的激光干涉仪 CSV 导出文件</translation>
     </message>
     <message>
@@ -4289,7 +4290,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>测试正在运行：请在其结束后再导入采集数据。</translation>
     </message>
     <message>
-        <source>Only an axis test's capture can be imported: show the axis test it belongs to.</source>
+        <source>Only an axis test&apos;s capture can be imported: show the axis test it belongs to.</source>
         <translation>只能导入单轴测试的采集数据：请先显示该数据所属的单轴测试。</translation>
     </message>
     <message>
@@ -4299,7 +4300,7 @@ Keep that log aside and start this test afresh?</source>
 %1</translation>
     </message>
     <message>
-        <source>The capture does not match the run's stops, so nothing was imported:
+        <source>The capture does not match the run&apos;s stops, so nothing was imported:
 %1</source>
         <translation>采集数据与该次运行的停留点不符，未导入任何数据：
 %1</translation>
@@ -4325,7 +4326,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>所有停留点均已到达。请用激光干涉仪采集，然后将其导出文件按 %1 导入（导入采集数据…）。</translation>
     </message>
     <message>
-        <source>Match an interferometer's CSV export to a run's target sequence and evaluate it against the axis test on screen</source>
+        <source>Match an interferometer&apos;s CSV export to a run&apos;s target sequence and evaluate it against the axis test on screen</source>
         <translation>将激光干涉仪导出的 CSV 与某次运行的目标位置序列相匹配，并按屏幕上的单轴测试进行评定</translation>
     </message>
     <message>
@@ -4407,7 +4408,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>波特率（8N1）；GRBL 控制板通常为 115200</translation>
     </message>
     <message>
-        <source>Machine profile: how a GRBL controller is wired to this instrument (axes, pump, trigger output, status rate). Default wiring: each axis on the GRBL axis of its letter, the analyzer's pump on A at 1 µL per mm, no trigger</source>
+        <source>Machine profile: how a GRBL controller is wired to this instrument (axes, pump, trigger output, status rate). Default wiring: each axis on the GRBL axis of its letter, the analyzer&apos;s pump on A at 1 µL per mm, no trigger</source>
         <translation>机器配置：GRBL 控制器与本仪器的接线方式（轴、泵、触发输出、状态刷新率）。默认接线：各轴接同名 GRBL 轴，分析仪的泵接 A 轴，每 mm 1 µL，无触发输出</translation>
     </message>
     <message>
@@ -4630,7 +4631,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>仪器没有 %1 轴。</translation>
     </message>
     <message>
-        <source>Reading the instrument's compensation of %1…</source>
+        <source>Reading the instrument&apos;s compensation of %1…</source>
         <translation>正在读取仪器中 %1 轴的补偿…</translation>
     </message>
     <message>
@@ -4737,7 +4738,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>存入设备</translation>
     </message>
     <message>
-        <source>Apply these gains and keep them as the device's power-up gains</source>
+        <source>Apply these gains and keep them as the device&apos;s power-up gains</source>
         <translation>应用这些增益，并保存为设备的上电增益</translation>
     </message>
     <message>
@@ -4785,7 +4786,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>设备</translation>
     </message>
     <message>
-        <source>the model's loop</source>
+        <source>the model&apos;s loop</source>
         <translation>模型的控制回路</translation>
     </message>
     <message>
@@ -4813,7 +4814,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>以连续形式显示：Kp，Ki 单位为 1/s，Kd 单位为 s。旁边是 %2 在控制周期 T = %1 下实际执行的离散增益：ki = Ki·T，kd = Kd/T。</translation>
     </message>
     <message>
-        <source>Incremental PID: Δu = kp·(e_k − e_k−1) + ki·e_k + kd·(e_k − 2e_k−1 + e_k−2); see docs/tuning.md (the stage paper's eq. 2).</source>
+        <source>Incremental PID: Δu = kp·(e_k − e_k−1) + ki·e_k + kd·(e_k − 2e_k−1 + e_k−2); see docs/tuning.md (the stage paper&apos;s eq. 2).</source>
         <translation>增量式 PID：Δu = kp·(e_k − e_k−1) + ki·e_k + kd·(e_k − 2e_k−1 + e_k−2)；见 docs/tuning.md（载物台文献的式 2）。</translation>
     </message>
     <message>
@@ -4884,7 +4885,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>按住按钮持续移动，或选择每次点击的步长</translation>
     </message>
     <message>
-        <source>Speed as a share of each axis' maximum (slow for teaching)</source>
+        <source>Speed as a share of each axis&apos; maximum (slow for teaching)</source>
         <translation>速度占各轴最大速度的比例（示教时用慢速）</translation>
     </message>
     <message>
@@ -4915,7 +4916,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>点动速度</translation>
     </message>
     <message>
-        <source>Hold-to-jog speed as a share of each axis' maximum; hold Shift for full speed</source>
+        <source>Hold-to-jog speed as a share of each axis&apos; maximum; hold Shift for full speed</source>
         <translation>按住点动的速度占各轴最大速度的比例；按住 Shift 为全速</translation>
     </message>
     <message>
@@ -5377,7 +5378,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>原点</translation>
     </message>
     <message>
-        <source>Start of the wave's axis</source>
+        <source>Start of the wave&apos;s axis</source>
         <translation>波形轴线的起点</translation>
     </message>
     <message>
@@ -5393,7 +5394,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>长度</translation>
     </message>
     <message>
-        <source>Along the wave's axis</source>
+        <source>Along the wave&apos;s axis</source>
         <translation>沿波形轴线</translation>
     </message>
     <message>
@@ -5401,7 +5402,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>轴线角度</translation>
     </message>
     <message>
-        <source>Direction of the wave's axis, 0° = +X</source>
+        <source>Direction of the wave&apos;s axis, 0° = +X</source>
         <translation>波形轴线的方向，0° = +X</translation>
     </message>
     <message>
@@ -5409,7 +5410,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>弦线容差</translation>
     </message>
     <message>
-        <source>Largest gap between a chord and the curve (seed 002's equal parts)</source>
+        <source>Largest gap between a chord and the curve (seed 002&apos;s equal parts)</source>
         <translation>弦线与曲线之间的最大间隙（文献 002 的等分法）</translation>
     </message>
     <message>
@@ -5507,7 +5508,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>运行</translation>
     </message>
     <message>
-        <source>Move to the pattern's start, then run it (F5)</source>
+        <source>Move to the pattern&apos;s start, then run it (F5)</source>
         <translation>移动到图形起点，然后运行（F5）</translation>
     </message>
     <message>
@@ -5543,7 +5544,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>导出运行数据…</translation>
     </message>
     <message>
-        <source>The last run's samples as CSV: commanded and measured XY, path distance, contour error</source>
+        <source>The last run&apos;s samples as CSV: commanded and measured XY, path distance, contour error</source>
         <translation>上次运行的采样数据，CSV 格式：指令与实测 XY、路径距离、轮廓误差</translation>
     </message>
     <message>
@@ -5563,7 +5564,7 @@ Keep that log aside and start this test afresh?</source>
         <translation> mm</translation>
     </message>
     <message>
-        <source>Grid of the point-by-point walk drawn when zoomed in (the instrument's resolution by default)</source>
+        <source>Grid of the point-by-point walk drawn when zoomed in (the instrument&apos;s resolution by default)</source>
         <translation>放大时绘制的逐点插补网格（默认为仪器的分辨率）</translation>
     </message>
     <message>
@@ -5615,7 +5616,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>继续</translation>
     </message>
     <message>
-        <source>Move %1 %2 mm to the pattern's start (%3, %4) and run %5 segments (%6 mm)?</source>
+        <source>Move %1 %2 mm to the pattern&apos;s start (%3, %4) and run %5 segments (%6 mm)?</source>
         <translation>将%1移动 %2 mm 到图形起点（%3, %4），然后运行 %5 段（%6 mm）？</translation>
     </message>
     <message>
@@ -5701,7 +5702,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>用于此步骤</translation>
     </message>
     <message>
-        <source>Set the selected step's wells (and plate) to the selection</source>
+        <source>Set the selected step&apos;s wells (and plate) to the selection</source>
         <translation>把所选步骤的孔（及孔板）设为当前选中的孔</translation>
     </message>
     <message>
@@ -5809,7 +5810,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>该方案未通过检查：请查看其问题</translation>
     </message>
     <message>
-        <source>Run "%1": %2 wells, about %3. The tip goes down to Z %4 mm; the analyzer moves on its own until the end (Pause, Abort, or Esc for the E-stop). Start?</source>
+        <source>Run &quot;%1&quot;: %2 wells, about %3. The tip goes down to Z %4 mm; the analyzer moves on its own until the end (Pause, Abort, or Esc for the E-stop). Start?</source>
         <translation>运行“%1”：%2 个孔，约 %3。加样针将下降到 Z %4 mm；分析仪将自行运动直到结束（可按“暂停”“中止”，或按 Esc 急停）。开始？</translation>
     </message>
     <message>
@@ -5852,7 +5853,7 @@ Keep that log aside and start this test afresh?</source>
     </message>
     <message>
         <source>samples</source>
-        <comment>the name of a new recipe's plate</comment>
+        <comment>the name of a new recipe&apos;s plate</comment>
         <translation>样品</translation>
     </message>
 </context>
@@ -5889,7 +5890,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>自动 Y</translation>
     </message>
     <message>
-        <source>Fit each plot's value axes to what is visible (dragging or Ctrl+wheel on a plot turns it off)</source>
+        <source>Fit each plot&apos;s value axes to what is visible (dragging or Ctrl+wheel on a plot turns it off)</source>
         <translation>使每个曲线图的数值轴适应可见数据（在曲线图上拖动或按 Ctrl+滚轮会关闭此功能）</translation>
     </message>
     <message>
@@ -5905,7 +5906,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>XY</translation>
     </message>
     <message>
-        <source>Show the stage's XY path, commanded against measured</source>
+        <source>Show the stage&apos;s XY path, commanded against measured</source>
         <translation>显示载物台的 XY 路径，指令与实测对比</translation>
     </message>
     <message>
@@ -6021,7 +6022,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>历史…</translation>
     </message>
     <message>
-        <source>Export the recorded history as CSV: every instrument's positions and following errors since connection, whether plotted or not</source>
+        <source>Export the recorded history as CSV: every instrument&apos;s positions and following errors since connection, whether plotted or not</source>
         <translation>将记录的历史导出为 CSV：各仪器自连接以来的位置和跟随误差，无论是否已绘制曲线</translation>
     </message>
     <message>
@@ -6068,8 +6069,8 @@ Keep that log aside and start this test afresh?</source>
         <translation>未发送数据</translation>
     </message>
     <message>
-        <source> · &lt;span style='color:#b71c1c'&gt;&lt;b&gt;%1 lost&lt;/b&gt;&lt;/span&gt;</source>
-        <translation> · &lt;span style='color:#b71c1c'&gt;&lt;b&gt;丢失 %1&lt;/b&gt;&lt;/span&gt;</translation>
+        <source> · &lt;span style=&apos;color:#b71c1c&apos;&gt;&lt;b&gt;%1 lost&lt;/b&gt;&lt;/span&gt;</source>
+        <translation> · &lt;span style=&apos;color:#b71c1c&apos;&gt;&lt;b&gt;丢失 %1&lt;/b&gt;&lt;/span&gt;</translation>
     </message>
     <message>
         <source> · 0 lost</source>
@@ -6084,8 +6085,8 @@ Keep that log aside and start this test afresh?</source>
         <translation>&lt;b&gt;已暂停&lt;/b&gt;</translation>
     </message>
     <message>
-        <source>&lt;span style='color:#b71c1c'&gt;● recording %1 rows to %2&lt;/span&gt;</source>
-        <translation>&lt;span style='color:#b71c1c'&gt;● 正在将 %1 行记录到 %2&lt;/span&gt;</translation>
+        <source>&lt;span style=&apos;color:#b71c1c&apos;&gt;● recording %1 rows to %2&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#b71c1c&apos;&gt;● 正在将 %1 行记录到 %2&lt;/span&gt;</translation>
     </message>
     <message>
         <source>Export the visible range as CSV</source>
@@ -6573,7 +6574,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>内置孔板，或方案旁的耗材文件（NAME.labware.json 或 Opentrons 耗材定义）</translation>
     </message>
     <message>
-        <source>change a plate's labware</source>
+        <source>change a plate&apos;s labware</source>
         <translation>更改孔板的耗材</translation>
     </message>
     <message>
@@ -6778,7 +6779,7 @@ Keep that log aside and start this test afresh?</source>
 <context>
     <name>ui::ScanPlanForm</name>
     <message>
-        <source>corner %1 ("%2") is not "x, y" in mm</source>
+        <source>corner %1 (&quot;%2&quot;) is not &quot;x, y&quot; in mm</source>
         <translation>角点 %1（“%2”）不是以 mm 为单位的“x, y”</translation>
     </message>
     <message>
@@ -6866,7 +6867,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>x, y; x, y; x, y …</translation>
     </message>
     <message>
-        <source>The outline's corners in mm, in order; click them on the map instead</source>
+        <source>The outline&apos;s corners in mm, in order; click them on the map instead</source>
         <translation>轮廓的各角点（mm），按顺序排列；也可在地图上点击</translation>
     </message>
     <message>
@@ -6954,7 +6955,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>°</translation>
     </message>
     <message>
-        <source>The image's x axis against stage +X, counter-clockwise (a small calibration angle)</source>
+        <source>The image&apos;s x axis against stage +X, counter-clockwise (a small calibration angle)</source>
         <translation>图像 x 轴相对载物台 +X 的夹角，逆时针为正（一个小的校准角）</translation>
     </message>
     <message>
@@ -7110,7 +7111,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>运行</translation>
     </message>
     <message>
-        <source>{i} the tile's number, {row} and {col} its place; {i:03} pads to three digits</source>
+        <source>{i} the tile&apos;s number, {row} and {col} its place; {i:03} pads to three digits</source>
         <translation>{i} 为图块序号，{row} 和 {col} 为其行列位置；{i:03} 补零到三位</translation>
     </message>
     <message>
@@ -7122,7 +7123,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>起始序号</translation>
     </message>
     <message>
-        <source>The XY stage's device label in Micro-Manager (for the .pos position list)</source>
+        <source>The XY stage&apos;s device label in Micro-Manager (for the .pos position list)</source>
         <translation>XY 载物台在 Micro-Manager 中的设备名（用于 .pos 位置列表）</translation>
     </message>
     <message>
@@ -7138,7 +7139,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>视场 %1 × %2 mm，样品处每像素 %3 µm</translation>
     </message>
     <message>
-        <source>Use the stage's own compensation</source>
+        <source>Use the stage&apos;s own compensation</source>
         <translation>使用载物台自身的补偿</translation>
     </message>
     <message>
@@ -7161,7 +7162,7 @@ Keep that log aside and start this test afresh?</source>
         <translation>缩放到扫描区</translation>
     </message>
     <message>
-        <source>Show the scan's tiles</source>
+        <source>Show the scan&apos;s tiles</source>
         <translation>显示扫描的图块</translation>
     </message>
     <message>
@@ -7401,8 +7402,8 @@ Start this scan anew in that folder? The old run log is kept under another name.
         <translation>A1:H1、row B、column 3、all，或列表：A1, C4</translation>
     </message>
     <message>
-        <source>Wells: a well (A1), a range (A1:H1), "row B", "column 3", "all", or several separated by commas.
-Select wells on the plate map and press "Use selection" to fill this in.</source>
+        <source>Wells: a well (A1), a range (A1:H1), &quot;row B&quot;, &quot;column 3&quot;, &quot;all&quot;, or several separated by commas.
+Select wells on the plate map and press &quot;Use selection&quot; to fill this in.</source>
         <translation>孔：单个孔（A1）、范围（A1:H1）、“row B”、“column 3”、“all”，或用逗号分隔的多项。
 也可在孔板图上选择孔，然后按“用于此步骤”自动填入。</translation>
     </message>
@@ -7431,7 +7432,7 @@ Select wells on the plate map and press "Use selection" to fill this in.</source
         <translation> mm</translation>
     </message>
     <message>
-        <source>Touch-off: how far from the well's centre toward its +x wall the tip goes</source>
+        <source>Touch-off: how far from the well&apos;s centre toward its +x wall the tip goes</source>
         <translation>贴壁：加样针从孔中心向孔的 +x 壁移动的距离</translation>
     </message>
     <message>
@@ -7658,7 +7659,7 @@ Select wells on the plate map and press "Use selection" to fill this in.</source
 %2</translation>
     </message>
     <message>
-        <source>live at %1 Hz%2; the analysis reads the device's capture at the loop rate</source>
+        <source>live at %1 Hz%2; the analysis reads the device&apos;s capture at the loop rate</source>
         <translation>实时 %1 Hz%2；分析读取设备以控制频率采集的数据</translation>
     </message>
     <message>
@@ -7718,7 +7719,7 @@ Select wells on the plate map and press "Use selection" to fill this in.</source
         <translation>已载入%1的结果</translation>
     </message>
     <message>
-        <source>results of %1 loaded; the rules' gains are for its loop period (%2 ms), applied to %3 as they are</source>
+        <source>results of %1 loaded; the rules&apos; gains are for its loop period (%2 ms), applied to %3 as they are</source>
         <translation>已载入%1的结果；各规则的增益对应其控制周期（%2 ms），按原值应用到%3</translation>
     </message>
     <message>
@@ -7816,11 +7817,11 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>Pessen 积分法则 PID</translation>
     </message>
     <message>
-        <source>Z-N "some overshoot" PID</source>
+        <source>Z-N &quot;some overshoot&quot; PID</source>
         <translation>Z-N“少量超调” PID</translation>
     </message>
     <message>
-        <source>Z-N "no overshoot" PID</source>
+        <source>Z-N &quot;no overshoot&quot; PID</source>
         <translation>Z-N“无超调” PID</translation>
     </message>
     <message>
@@ -8027,7 +8028,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>必须大于 0（当前为 %1）</translation>
     </message>
     <message>
-        <source>"%1" is not an axis name: one capital letter, such as X</source>
+        <source>&quot;%1&quot; is not an axis name: one capital letter, such as X</source>
         <translation>“%1”不是轴名：轴名是一个大写字母，例如 X</translation>
     </message>
     <message>
@@ -8123,7 +8124,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>%2 %3 处有 %1 个读数，而其他位置有 %4 个</translation>
     </message>
     <message>
-        <source>the table's row for %1 lacks a mean or a standard deviation</source>
+        <source>the table&apos;s row for %1 lacks a mean or a standard deviation</source>
         <translation>表中 %1 一行缺少平均值或标准差</translation>
     </message>
     <message>
@@ -8151,7 +8152,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>%1 轴沿该直线不运动：不予评定</translation>
     </message>
     <message>
-        <source>"%1" is not a plane: two different axis letters, such as XY</source>
+        <source>&quot;%1&quot; is not a plane: two different axis letters, such as XY</source>
         <translation>“%1”不是平面：应为两个不同的轴字母，例如 XY</translation>
     </message>
     <message>
@@ -8187,7 +8188,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>%1采样点不在一个圆上</translation>
     </message>
     <message>
-        <source>%1 is written as %2, but the file's own table gives %3</source>
+        <source>%1 is written as %2, but the file&apos;s own table gives %3</source>
         <translation>%1 写的是 %2，但文件自身的表格给出 %3</translation>
     </message>
     <message>
@@ -8203,7 +8204,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>仪器没有本测试所需的 %1 轴。</translation>
     </message>
     <message>
-        <source>The test's axes are not homed: home them first.</source>
+        <source>The test&apos;s axes are not homed: home them first.</source>
         <translation>测试所用的轴尚未回零：请先回零。</translation>
     </message>
     <message>
@@ -8295,11 +8296,11 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>运行用时远超预估，已被中止。</translation>
     </message>
     <message>
-        <source>The circle's path was aborted.</source>
+        <source>The circle&apos;s path was aborted.</source>
         <translation>圆的路径已中止。</translation>
     </message>
     <message>
-        <source>The circle's path was aborted: %1</source>
+        <source>The circle&apos;s path was aborted: %1</source>
         <translation>圆的路径已中止：%1</translation>
     </message>
     <message>
@@ -8323,31 +8324,31 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>有 %1 个单元格，而表头有 %2 列</translation>
     </message>
     <message>
-        <source>"%1" is not a number</source>
+        <source>&quot;%1&quot; is not a number</source>
         <translation>“%1”不是数字</translation>
     </message>
     <message>
-        <source>"%1" is not a direction: up or down</source>
+        <source>&quot;%1&quot; is not a direction: up or down</source>
         <translation>“%1”不是方向：应为 up 或 down</translation>
     </message>
     <message>
-        <source>"%1" is not a cycle: a whole number from 1</source>
+        <source>&quot;%1&quot; is not a cycle: a whole number from 1</source>
         <translation>“%1”不是循环序号：应为从 1 开始的整数</translation>
     </message>
     <message>
-        <source>the export has %1 readings, where the run's sequence has %2 stops</source>
+        <source>the export has %1 readings, where the run&apos;s sequence has %2 stops</source>
         <translation>导出文件有 %1 个读数，而运行序列有 %2 个测点</translation>
     </message>
     <message>
-        <source>reading %1 was taken %2, where the run's stop %1 (at %3) was approached %4</source>
+        <source>reading %1 was taken %2, where the run&apos;s stop %1 (at %3) was approached %4</source>
         <translation>读数 %1 为%2趋近，而运行的第 %1 个测点（%3 处）为%4趋近</translation>
     </message>
     <message>
-        <source>reading %1 is for target %2, where the run's stop %1 is at %3</source>
+        <source>reading %1 is for target %2, where the run&apos;s stop %1 is at %3</source>
         <translation>读数 %1 对应目标位置 %2，而运行的第 %1 个测点位于 %3</translation>
     </message>
     <message>
-        <source>index "%1": the sequence's rows are numbered from 1 in order (expected %2)</source>
+        <source>index &quot;%1&quot;: the sequence&apos;s rows are numbered from 1 in order (expected %2)</source>
         <translation>序号“%1”：序列各行应从 1 起按顺序编号（应为 %2）</translation>
     </message>
     <message>
@@ -8359,7 +8360,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>必须为所读的每个轴给出一个位置，共一个或两个（单位 mm）</translation>
     </message>
     <message>
-        <source>is %1 where the run's next stop is %2: a log's stops come in order, each once</source>
+        <source>is %1 where the run&apos;s next stop is %2: a log&apos;s stops come in order, each once</source>
         <translation>为 %1，而运行的下一个测点是 %2：日志中的测点须按顺序出现，且每个只出现一次</translation>
     </message>
     <message>
@@ -8383,7 +8384,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>闭合引号之后还有文字</translation>
     </message>
     <message>
-        <source>the file is separated by semicolons; BenchPilot reads commas and '.' as the decimal point</source>
+        <source>the file is separated by semicolons; BenchPilot reads commas and &apos;.&apos; as the decimal point</source>
         <translation>文件以分号分隔；BenchPilot 读取逗号分隔、以“.”为小数点的文件</translation>
     </message>
     <message>
@@ -8415,7 +8416,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>曲线在 %2 处达到 %1，超出 ±%3</translation>
     </message>
     <message>
-        <source>the curve's slope is %1 µm/mm at %2, beyond %3</source>
+        <source>the curve&apos;s slope is %1 µm/mm at %2, beyond %3</source>
         <translation>曲线在 %2 处的斜率为 %1 µm/mm，超出 %3</translation>
     </message>
     <message>
@@ -8475,11 +8476,11 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>仪器中没有 %1 轴的补偿。</translation>
     </message>
     <message>
-        <source>The gauge on %1 answered "%2", which is not a reading such as +012.3456 mm.</source>
+        <source>The gauge on %1 answered &quot;%2&quot;, which is not a reading such as +012.3456 mm.</source>
         <translation>%1 上的测头应答“%2”，这不是形如 +012.3456 mm 的读数。</translation>
     </message>
     <message>
-        <source>The gauge on %1 answered "%2" in a unit BenchPilot does not read (%3); it reads mm, µm and in.</source>
+        <source>The gauge on %1 answered &quot;%2&quot; in a unit BenchPilot does not read (%3); it reads mm, µm and in.</source>
         <translation>%1 上的测头应答“%2”，其单位（%3）BenchPilot 无法识别；可识别的单位为 mm、µm 和 in。</translation>
     </message>
     <message>
@@ -8491,11 +8492,11 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>测头无应答。</translation>
     </message>
     <message>
-        <source>Cannot open the gauge's port %1: %2</source>
+        <source>Cannot open the gauge&apos;s port %1: %2</source>
         <translation>无法打开测头的端口 %1：%2</translation>
     </message>
     <message>
-        <source>The gauge's port %1 went away: %2</source>
+        <source>The gauge&apos;s port %1 went away: %2</source>
         <translation>测头的端口 %1 已断开：%2</translation>
     </message>
     <message>
@@ -8507,7 +8508,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>%1 上的测头没有可用于通信的端口。</translation>
     </message>
     <message>
-        <source>The gauge's port %1 is not open.</source>
+        <source>The gauge&apos;s port %1 is not open.</source>
         <translation>测头的端口 %1 未打开。</translation>
     </message>
     <message>
@@ -8515,11 +8516,11 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>位置反馈</translation>
     </message>
     <message>
-        <source>the stage's grating (readback)</source>
+        <source>the stage&apos;s grating (readback)</source>
         <translation>载物台的光栅尺（位置反馈）</translation>
     </message>
     <message>
-        <source>the analyzer's encoder (readback)</source>
+        <source>the analyzer&apos;s encoder (readback)</source>
         <translation>分析仪的编码器（位置反馈）</translation>
     </message>
     <message>
@@ -8586,7 +8587,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>必须大于 0（当前为 %1）</translation>
     </message>
     <message>
-        <source>"%1" is not an axis name: one capital letter, such as X</source>
+        <source>&quot;%1&quot; is not an axis name: one capital letter, such as X</source>
         <comment>accuracy.axis_name_invalid</comment>
         <translation>“%1”不是轴名：轴名是一个大写字母，例如 X</translation>
     </message>
@@ -8681,7 +8682,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>%2 %3 处有 %1 个读数，而其他位置有 %4 个</translation>
     </message>
     <message>
-        <source>the table's row for %1 lacks a mean or a standard deviation</source>
+        <source>the table&apos;s row for %1 lacks a mean or a standard deviation</source>
         <comment>accuracy.statistics_incomplete</comment>
         <translation>表中 %1 一行缺少平均值或标准差</translation>
     </message>
@@ -8716,7 +8717,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>%1 轴沿该直线不运动：不予评定</translation>
     </message>
     <message>
-        <source>"%1" is not a plane: two different axis letters, such as XY</source>
+        <source>&quot;%1&quot; is not a plane: two different axis letters, such as XY</source>
         <comment>accuracy.circle.axes_invalid</comment>
         <translation>“%1”不是平面：应为两个不同的轴字母，例如 XY</translation>
     </message>
@@ -8761,7 +8762,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>%1采样点不在一个圆上</translation>
     </message>
     <message>
-        <source>%1 is written as %2, but the file's own table gives %3</source>
+        <source>%1 is written as %2, but the file&apos;s own table gives %3</source>
         <comment>accuracy.result.figure_disagrees</comment>
         <translation>%1 写的是 %2，但文件自身的表格给出 %3</translation>
     </message>
@@ -8796,17 +8797,17 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>有 %1 个单元格，而表头有 %2 列</translation>
     </message>
     <message>
-        <source>"%1" is not a number</source>
+        <source>&quot;%1&quot; is not a number</source>
         <comment>accuracy.csv.not_a_number</comment>
         <translation>“%1”不是数字</translation>
     </message>
     <message>
-        <source>"%1" is not a direction: up or down</source>
+        <source>&quot;%1&quot; is not a direction: up or down</source>
         <comment>accuracy.csv.unknown_direction</comment>
         <translation>“%1”不是方向：应为 up 或 down</translation>
     </message>
     <message>
-        <source>"%1" is not a cycle: a whole number from 1</source>
+        <source>&quot;%1&quot; is not a cycle: a whole number from 1</source>
         <comment>accuracy.csv.not_a_cycle</comment>
         <translation>“%1”不是循环序号：应为从 1 开始的整数</translation>
     </message>
@@ -8846,7 +8847,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>曲线在 %2 处达到 %1，超出 ±%3</translation>
     </message>
     <message>
-        <source>the curve's slope is %1 µm/mm at %2, beyond %3</source>
+        <source>the curve&apos;s slope is %1 µm/mm at %2, beyond %3</source>
         <comment>compensation.curve_too_steep</comment>
         <translation>曲线在 %2 处的斜率为 %1 µm/mm，超出 %3</translation>
     </message>
@@ -8908,7 +8909,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>零位开关</translation>
     </message>
     <message>
-        <source>way to set an axis' zero</source>
+        <source>way to set an axis&apos; zero</source>
         <translation>设定轴零点的功能</translation>
     </message>
     <message>
@@ -8980,7 +8981,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>它以开环运行</translation>
     </message>
     <message>
-        <source>its firmware predates them; estimates assume the reference machine's</source>
+        <source>its firmware predates them; estimates assume the reference machine&apos;s</source>
         <translation>其固件早于该功能；估算按参考机器的数值</translation>
     </message>
     <message>
@@ -9214,7 +9215,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>速率受 %2 链路限制为 %1（%4 个通道时最多 %3）</translation>
     </message>
     <message>
-        <source>rate limited to %1 by the device's %2 sample clock</source>
+        <source>rate limited to %1 by the device&apos;s %2 sample clock</source>
         <comment>telemetry.rate_clock_limited</comment>
         <translation>速率受设备 %2 采样时钟限制为 %1</translation>
     </message>
@@ -9736,7 +9737,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>闭合引号之后还有文字</translation>
     </message>
     <message>
-        <source>the file is separated by semicolons; BenchPilot reads commas and '.' as the decimal point</source>
+        <source>the file is separated by semicolons; BenchPilot reads commas and &apos;.&apos; as the decimal point</source>
         <comment>file.csv.semicolons</comment>
         <translation>文件以分号分隔；BenchPilot 读取逗号分隔、以“.”为小数点的文件</translation>
     </message>
@@ -9846,12 +9847,12 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>未知的转义 \%1</translation>
     </message>
     <message>
-        <source>a trailing comma before '%1' is not allowed</source>
+        <source>a trailing comma before &apos;%1&apos; is not allowed</source>
         <comment>file.json.trailing_comma</comment>
         <translation>“%1”之前不允许有多余的逗号</translation>
     </message>
     <message>
-        <source>expected ',' or ']' in an array, found %1</source>
+        <source>expected &apos;,&apos; or &apos;]&apos; in an array, found %1</source>
         <comment>file.json.expected_array_comma</comment>
         <translation>数组中此处应为“,”或“]”，却是%1</translation>
     </message>
@@ -9861,17 +9862,17 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>此处应为带引号的成员名，却是%1</translation>
     </message>
     <message>
-        <source>expected ':' after the member name "%1", found %2</source>
+        <source>expected &apos;:&apos; after the member name &quot;%1&quot;, found %2</source>
         <comment>file.json.expected_colon</comment>
         <translation>成员名“%1”之后应为“:”，却是%2</translation>
     </message>
     <message>
-        <source>expected ',' or '}' in an object, found %1</source>
+        <source>expected &apos;,&apos; or &apos;}&apos; in an object, found %1</source>
         <comment>file.json.expected_object_comma</comment>
         <translation>对象中此处应为“,”或“}”，却是%1</translation>
     </message>
     <message>
-        <source>the member "%1" appears twice</source>
+        <source>the member &quot;%1&quot; appears twice</source>
         <comment>file.json.duplicate_member</comment>
         <translation>成员“%1”出现了两次</translation>
     </message>
@@ -9886,7 +9887,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>字节 %1</translation>
     </message>
     <message>
-        <source>'%1'</source>
+        <source>&apos;%1&apos;</source>
         <comment>file.json.found_char</comment>
         <translation>“%1”</translation>
     </message>
@@ -9926,7 +9927,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>必须是整数（当前为 %1）</translation>
     </message>
     <message>
-        <source>"%1" is not one of %2</source>
+        <source>&quot;%1&quot; is not one of %2</source>
         <comment>file.json.not_one_of</comment>
         <translation>“%1”不是以下之一：%2</translation>
     </message>
@@ -9936,7 +9937,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>未知字段</translation>
     </message>
     <message>
-        <source>unknown field; did you mean "%1"?</source>
+        <source>unknown field; did you mean &quot;%1&quot;?</source>
         <comment>file.json.unknown_field_suggest</comment>
         <translation>未知字段；是否指“%1”？</translation>
     </message>
@@ -9951,12 +9952,12 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>文档必须是对象，而不是%1</translation>
     </message>
     <message>
-        <source>must name the file's kind: "schema": "%1"</source>
+        <source>must name the file&apos;s kind: &quot;schema&quot;: &quot;%1&quot;</source>
         <comment>file.json.schema_missing</comment>
-        <translation>必须注明文件类型："schema": "%1"</translation>
+        <translation>必须注明文件类型：&quot;schema&quot;: &quot;%1&quot;</translation>
     </message>
     <message>
-        <source>is "%1", expected "%2"</source>
+        <source>is &quot;%1&quot;, expected &quot;%2&quot;</source>
         <comment>file.json.schema_wrong</comment>
         <translation>为“%1”，应为“%2”</translation>
     </message>
@@ -9981,12 +9982,12 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>日志为空：没有表头行</translation>
     </message>
     <message>
-        <source>the log has no "run" header</source>
+        <source>the log has no &quot;run&quot; header</source>
         <comment>file.log.no_header</comment>
         <translation>日志没有“run”表头</translation>
     </message>
     <message>
-        <source>the log must begin with its "run" header</source>
+        <source>the log must begin with its &quot;run&quot; header</source>
         <comment>file.log.no_header_first</comment>
         <translation>日志必须以“run”表头开始</translation>
     </message>
@@ -10104,14 +10105,14 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>控制器以 error:%2 拒绝了 %1（%3）</translation>
     </message>
     <message>
-        <source>the controller's settings ($$) do not give its limits: %1 (%2 problems in all)</source>
+        <source>the controller&apos;s settings ($$) do not give its limits: %1 (%2 problems in all)</source>
         <comment>grbl.identify.no_limits</comment>
         <translation>控制器的设置（$$）未给出其限值：%1（共 %2 个问题）</translation>
     </message>
     <message>
-        <source>the controller reports positions in inches ($13=1) and the machine profile refuses inch reports: set $13=0 on the controller, or "inch_reports": "convert" in the profile</source>
+        <source>the controller reports positions in inches ($13=1) and the machine profile refuses inch reports: set $13=0 on the controller, or &quot;inch_reports&quot;: &quot;convert&quot; in the profile</source>
         <comment>grbl.identify.inches_refused</comment>
-        <translation>控制器以英寸报告位置（$13=1），而机器配置不接受英寸报告：请在控制器上设置 $13=0，或在配置文件中设置 "inch_reports": "convert"</translation>
+        <translation>控制器以英寸报告位置（$13=1），而机器配置不接受英寸报告：请在控制器上设置 $13=0，或在配置文件中设置 &quot;inch_reports&quot;: &quot;convert&quot;</translation>
     </message>
     <message>
         <source>the machine profile drives axis %1 with GRBL axis %2, but this controller has axes %3</source>
@@ -10154,12 +10155,12 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>停止被急停取代</translation>
     </message>
     <message>
-        <source>%1 %2 is beyond the machine travel %3 … %4 (the controller's $%5): refused before sending, since GRBL would stop with ALARM:2 and need a reset</source>
+        <source>%1 %2 is beyond the machine travel %3 … %4 (the controller&apos;s $%5): refused before sending, since GRBL would stop with ALARM:2 and need a reset</source>
         <comment>grbl.beyond_travel</comment>
         <translation>%1 %2 超出机床行程 %3 … %4（控制器的 $%5）：发送前已拒绝，否则 GRBL 会以 ALARM:2 停机并需要复位</translation>
     </message>
     <message>
-        <source>%1: the line "%2" cannot be sent</source>
+        <source>%1: the line &quot;%2&quot; cannot be sent</source>
         <comment>grbl.line_not_sent</comment>
         <translation>%1：无法发送“%2”这一行</translation>
     </message>
@@ -10269,17 +10270,17 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>BenchPilot 协议 %1（%2）</translation>
     </message>
     <message>
-        <source>must be one upper-case axis letter (got "%1")</source>
+        <source>must be one upper-case axis letter (got &quot;%1&quot;)</source>
         <comment>grbl.profile.axis_letter</comment>
         <translation>必须是一个大写轴字母（当前为“%1”）</translation>
     </message>
     <message>
-        <source>the %1 has axes %2 in that order (got "%3")</source>
+        <source>the %1 has axes %2 in that order (got &quot;%3&quot;)</source>
         <comment>grbl.profile.axes_order</comment>
         <translation>%1的轴依次为 %2（当前为“%3”）</translation>
     </message>
     <message>
-        <source>"%1" is not a GRBL axis (X, Y, Z, A, B, C)</source>
+        <source>&quot;%1&quot; is not a GRBL axis (X, Y, Z, A, B, C)</source>
         <comment>grbl.profile.not_grbl_axis</comment>
         <translation>“%1”不是 GRBL 轴（X、Y、Z、A、B、C）</translation>
     </message>
@@ -10357,7 +10358,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>控制器自行复位；其位置已不可信。</translation>
     </message>
     <message>
-        <source>The controller reset by itself: %1 lines were lost (the first "%2"); its position is no longer trusted.</source>
+        <source>The controller reset by itself: %1 lines were lost (the first &quot;%2&quot;); its position is no longer trusted.</source>
         <translation>控制器自行复位：丢失了 %1 行（第一行为“%2”）；其位置已不可信。</translation>
     </message>
     <message>
@@ -10369,7 +10370,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>GRBL 以开环方式驱动步进电机，没有可读取的编码器，也没有可整定的回路</translation>
     </message>
     <message>
-        <source>GRBL cannot notice that BenchPilot went away; what is queued ahead of a jog runs out within the machine profile's stop budget (250 ms unless it says otherwise)</source>
+        <source>GRBL cannot notice that BenchPilot went away; what is queued ahead of a jog runs out within the machine profile&apos;s stop budget (250 ms unless it says otherwise)</source>
         <translation>GRBL 无法察觉 BenchPilot 已断开；点动之前排队的指令会在机器配置的停止时限内执行完（未另行指定时为 250 ms）</translation>
     </message>
     <message>
@@ -10377,7 +10378,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>GRBL 只限制其机床行程（$130–$132）</translation>
     </message>
     <message>
-        <source>its X and Y are not GRBL's X and Y, and GRBL draws arcs only in its XY plane</source>
+        <source>its X and Y are not GRBL&apos;s X and Y, and GRBL draws arcs only in its XY plane</source>
         <translation>其 X、Y 轴不是 GRBL 的 X、Y 轴，而 GRBL 只能在其 XY 平面内走圆弧</translation>
     </message>
     <message>
@@ -10392,7 +10393,7 @@ A loop this different may oscillate or run away. Apply them?</source>
 <context>
     <name>words::GrblWords</name>
     <message>
-        <source>error %1: %2 (answering "%3")</source>
+        <source>error %1: %2 (answering &quot;%3&quot;)</source>
         <comment>grbl.error.worded</comment>
         <translation>错误 %1：%2（对应“%3”）</translation>
     </message>
@@ -10407,12 +10408,12 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>报警 %1：%2</translation>
     </message>
     <message>
-        <source>a code this BenchPilot does not know (see the controller's documentation)</source>
+        <source>a code this BenchPilot does not know (see the controller&apos;s documentation)</source>
         <comment>grbl.error.unknown_code</comment>
         <translation>本 BenchPilot 不认识的代码（请查阅控制器文档）</translation>
     </message>
     <message>
-        <source>a code this BenchPilot does not know (see the controller's documentation)</source>
+        <source>a code this BenchPilot does not know (see the controller&apos;s documentation)</source>
         <comment>grbl.alarm.unknown_code</comment>
         <translation>本 BenchPilot 不认识的代码（请查阅控制器文档）</translation>
     </message>
@@ -10542,7 +10543,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>没有位置</translation>
     </message>
     <message>
-        <source>%1 refused by the controller: error %2: %3 (answering "%4")</source>
+        <source>%1 refused by the controller: error %2: %3 (answering &quot;%4&quot;)</source>
         <comment>grbl.error.refused</comment>
         <translation>%1 被控制器拒绝：错误 %2：%3（应答“%4”）</translation>
     </message>
@@ -10670,17 +10671,17 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>Z = %1 超出其软限位 %2 … %3。</translation>
     </message>
     <message>
-        <source>Segment %1: feed %2 is above the instrument's %3.</source>
+        <source>Segment %1: feed %2 is above the instrument&apos;s %3.</source>
         <comment>pattern.run.feed_too_high</comment>
         <translation>第 %1 段：进给速度 %2 超过仪器的最大值 %3。</translation>
     </message>
     <message>
-        <source>Cannot move to the pattern's start: %1</source>
+        <source>Cannot move to the pattern&apos;s start: %1</source>
         <comment>pattern.run.approach_refused</comment>
         <translation>无法移动到图形起点：%1</translation>
     </message>
     <message>
-        <source>The move to the pattern's start was stopped before it arrived. Press Resume to try again.</source>
+        <source>The move to the pattern&apos;s start was stopped before it arrived. Press Resume to try again.</source>
         <comment>pattern.run.approach_stopped</comment>
         <translation>移动到图形起点的过程在到达前被停止。按“继续”重试。</translation>
     </message>
@@ -10808,32 +10809,32 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>必须大于 0 且不大于 max_speed %1（当前为 %2）</translation>
     </message>
     <message>
-        <source>slot "%1" is defined twice</source>
+        <source>slot &quot;%1&quot; is defined twice</source>
         <comment>plate.deck.slot_twice</comment>
         <translation>板位“%1”被定义了两次</translation>
     </message>
     <message>
-        <source>a plate in slot "%1" would cover X %2–%3, Y %4–%5, outside the travel 0–%6 × 0–%7</source>
+        <source>a plate in slot &quot;%1&quot; would cover X %2–%3, Y %4–%5, outside the travel 0–%6 × 0–%7</source>
         <comment>plate.deck.slot_outside_travel</comment>
         <translation>板位“%1”上的孔板将覆盖 X %2–%3、Y %4–%5，超出行程 0–%6 × 0–%7</translation>
     </message>
     <message>
-        <source>slot "%1" overlaps slot "%2"</source>
+        <source>slot &quot;%1&quot; overlaps slot &quot;%2&quot;</source>
         <comment>plate.deck.slots_overlap</comment>
         <translation>板位“%1”与板位“%2”重叠</translation>
     </message>
     <message>
-        <source>"%1" is already the id of a slot or station</source>
+        <source>&quot;%1&quot; is already the id of a slot or station</source>
         <comment>plate.deck.id_taken</comment>
         <translation>“%1”已被某个板位或工位使用</translation>
     </message>
     <message>
-        <source>station "%1" at (%2, %3) is outside the travel</source>
+        <source>station &quot;%1&quot; at (%2, %3) is outside the travel</source>
         <comment>plate.deck.station_outside_travel</comment>
         <translation>工位“%1”位于（%2, %3），超出行程</translation>
     </message>
     <message>
-        <source>station "%1" needs 0 ≤ safe_z_mm &lt; depth_z_mm ≤ %2</source>
+        <source>station &quot;%1&quot; needs 0 ≤ safe_z_mm &lt; depth_z_mm ≤ %2</source>
         <comment>plate.deck.station_heights</comment>
         <translation>工位“%1”须满足 0 ≤ safe_z_mm &lt; depth_z_mm ≤ %2</translation>
     </message>
@@ -10868,7 +10869,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>孔 %1 的尺寸必须大于 0</translation>
     </message>
     <message>
-        <source>well %1: its bottom (%2) plus its depth (%3) must be above 0 and at most the plate's height %4</source>
+        <source>well %1: its bottom (%2) plus its depth (%3) must be above 0 and at most the plate&apos;s height %4</source>
         <comment>plate.labware.well_depth</comment>
         <translation>孔 %1：孔底高度（%2）加孔深（%3）必须大于 0 且不超过板高 %4</translation>
     </message>
@@ -10888,7 +10889,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>没有指定任何孔</translation>
     </message>
     <message>
-        <source>%1 needs a row letter, like "row B"</source>
+        <source>%1 needs a row letter, like &quot;row B&quot;</source>
         <comment>plate.wells.row_needs_letter</comment>
         <translation>%1 需要行字母，例如“row B”</translation>
     </message>
@@ -10898,7 +10899,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>%2 孔板上没有行 %1（行为 A–%3）</translation>
     </message>
     <message>
-        <source>%1 needs a column number, like "column 3"</source>
+        <source>%1 needs a column number, like &quot;column 3&quot;</source>
         <comment>plate.wells.column_needs_number</comment>
         <translation>%1 需要列号，例如“column 3”</translation>
     </message>
@@ -10908,12 +10909,12 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>%2 孔板上没有列 %1（列为 1–%3）</translation>
     </message>
     <message>
-        <source>%1 is not a range of two wells, like "A1:H1"</source>
+        <source>%1 is not a range of two wells, like &quot;A1:H1&quot;</source>
         <comment>plate.wells.bad_range</comment>
         <translation>%1 不是由两个孔构成的范围，例如“A1:H1”</translation>
     </message>
     <message>
-        <source>%1 is not a well ("A1"), a range ("A1:H1"), "row B", "column 3" or "all"</source>
+        <source>%1 is not a well (&quot;A1&quot;), a range (&quot;A1:H1&quot;), &quot;row B&quot;, &quot;column 3&quot; or &quot;all&quot;</source>
         <comment>plate.wells.not_a_well_set</comment>
         <translation>%1 不是孔（“A1”）、范围（“A1:H1”）、“row B”、“column 3”或“all”</translation>
     </message>
@@ -10933,7 +10934,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>孔 %1 没有位置</translation>
     </message>
     <message>
-        <source>the taught wells are less than 1 mm apart: teach wells at the plate's corners</source>
+        <source>the taught wells are less than 1 mm apart: teach wells at the plate&apos;s corners</source>
         <comment>plate.calibration.too_close</comment>
         <translation>示教的孔相距不到 1 mm：请示教孔板四角的孔</translation>
     </message>
@@ -10948,7 +10949,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>示教的孔在一条直线上：按轴分别求比例需要一行和一列</translation>
     </message>
     <message>
-        <source>the taught wells are up to %1 off the plate's shape (%2 mm; more than %3): one was taught off centre or on the wrong well; teach them again</source>
+        <source>the taught wells are up to %1 off the plate&apos;s shape (%2 mm; more than %3): one was taught off centre or on the wrong well; teach them again</source>
         <comment>plate.calibration.large_residual</comment>
         <translation>示教的孔与孔板形状最多相差 %1（%2 mm；超过 %3）：有孔示教偏离中心或示教错了孔；请重新示教</translation>
     </message>
@@ -10963,17 +10964,17 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>孔板转了 %1：是否平放在板位中？</translation>
     </message>
     <message>
-        <source>give either "grid" or "wells", not both</source>
+        <source>give either &quot;grid&quot; or &quot;wells&quot;, not both</source>
         <comment>plate.file.grid_and_wells</comment>
         <translation>请给出“grid”或“wells”之一，不能同时给出</translation>
     </message>
     <message>
-        <source>is missing: give the wells as a "grid" (A1 and pitch) or a list of "wells"</source>
+        <source>is missing: give the wells as a &quot;grid&quot; (A1 and pitch) or a list of &quot;wells&quot;</source>
         <comment>plate.file.no_grid</comment>
         <translation>缺失：请以“grid”（A1 与孔距）或“wells”列表给出孔</translation>
     </message>
     <message>
-        <source>"%1" is not a well name like "A1"</source>
+        <source>&quot;%1&quot; is not a well name like &quot;A1&quot;</source>
         <comment>plate.file.not_a_well_name</comment>
         <translation>“%1”不是孔名，孔名形如“A1”</translation>
     </message>
@@ -10998,7 +10999,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>必须是孔名数组</translation>
     </message>
     <message>
-        <source>slot "%1" is calibrated twice</source>
+        <source>slot &quot;%1&quot; is calibrated twice</source>
         <comment>plate.file.slot_calibrated_twice</comment>
         <translation>板位“%1”被校准了两次</translation>
     </message>
@@ -11094,22 +11095,22 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>一个方案最多 %1 个步骤（当前 %2 个）</translation>
     </message>
     <message>
-        <source>plate "%1" is named twice</source>
+        <source>plate &quot;%1&quot; is named twice</source>
         <comment>recipe.plate_named_twice</comment>
         <translation>孔板名“%1”重复</translation>
     </message>
     <message>
-        <source>unknown slot "%1": the deck has slots %2</source>
+        <source>unknown slot &quot;%1&quot;: the deck has slots %2</source>
         <comment>recipe.unknown_slot</comment>
         <translation>未知板位“%1”：台面上的板位有 %2</translation>
     </message>
     <message>
-        <source>slot "%1" already holds another plate of this recipe</source>
+        <source>slot &quot;%1&quot; already holds another plate of this recipe</source>
         <comment>recipe.slot_taken</comment>
         <translation>板位“%1”上已放了本方案的另一块孔板</translation>
     </message>
     <message>
-        <source>unknown labware "%1" (built in: %2; or a labware file)</source>
+        <source>unknown labware &quot;%1&quot; (built in: %2; or a labware file)</source>
         <comment>recipe.unknown_labware</comment>
         <translation>未知耗材“%1”（内置：%2；或使用耗材文件）</translation>
     </message>
@@ -11144,27 +11145,27 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>缺少孔板：本方案有 %1 块孔板（%2）；请指明是哪一块</translation>
     </message>
     <message>
-        <source>unknown plate "%1"; the recipe's plates are %2</source>
+        <source>unknown plate &quot;%1&quot;; the recipe&apos;s plates are %2</source>
         <comment>recipe.unknown_plate</comment>
         <translation>未知孔板“%1”；本方案的孔板有 %2</translation>
     </message>
     <message>
-        <source>unknown plate "%1": the recipe has no plates</source>
+        <source>unknown plate &quot;%1&quot;: the recipe has no plates</source>
         <comment>recipe.unknown_plate_none</comment>
         <translation>未知孔板“%1”：本方案没有孔板</translation>
     </message>
     <message>
-        <source>well %1 of plate "%2" is at (%3, %4), outside the analyzer's travel (0–%5 × 0–%6): check the slot's calibration</source>
+        <source>well %1 of plate &quot;%2&quot; is at (%3, %4), outside the analyzer&apos;s travel (0–%5 × 0–%6): check the slot&apos;s calibration</source>
         <comment>recipe.well_outside_travel</comment>
         <translation>孔板“%2”的孔 %1 位于（%3, %4），超出分析仪行程（0–%5 × 0–%6）：请检查板位校准</translation>
     </message>
     <message>
-        <source>unknown station "%1" (the deck has %2)</source>
+        <source>unknown station &quot;%1&quot; (the deck has %2)</source>
         <comment>recipe.unknown_station</comment>
         <translation>未知工位“%1”（台面上的工位有 %2）</translation>
     </message>
     <message>
-        <source>unknown station "%1": the deck has none</source>
+        <source>unknown station &quot;%1&quot;: the deck has none</source>
         <comment>recipe.unknown_station_none</comment>
         <translation>未知工位“%1”：台面上没有工位</translation>
     </message>
@@ -11174,7 +11175,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>该方案访问的孔超过 %1 个；请拆分成几个方案</translation>
     </message>
     <message>
-        <source>well %1 of plate "%2" receives %3 in all; it holds %4</source>
+        <source>well %1 of plate &quot;%2&quot; receives %3 in all; it holds %4</source>
         <comment>recipe.well_overfilled</comment>
         <translation>孔板“%2”的孔 %1 总共加入 %3；其容积为 %4</translation>
     </message>
@@ -11214,12 +11215,12 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>缺失：请指明向哪些孔排液（或向哪个工位）</translation>
     </message>
     <message>
-        <source>%1 is more than a %2 well of plate "%3"</source>
+        <source>%1 is more than a %2 well of plate &quot;%3&quot;</source>
         <comment>recipe.aspirate_over_well</comment>
         <translation>%1 超过孔板“%3”中 %2 的孔</translation>
     </message>
     <message>
-        <source>%1 does not fit a %2 well of plate "%3"</source>
+        <source>%1 does not fit a %2 well of plate &quot;%3&quot;</source>
         <comment>recipe.dispense_over_well</comment>
         <translation>%1 装不进孔板“%3”中 %2 的孔</translation>
     </message>
@@ -11234,7 +11235,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>%1 超出了宽 %2 的孔壁</translation>
     </message>
     <message>
-        <source>dispensing %1 needs that much liquid in the syringe; it holds %2 here: aspirate first, or give the step a "source"</source>
+        <source>dispensing %1 needs that much liquid in the syringe; it holds %2 here: aspirate first, or give the step a &quot;source&quot;</source>
         <comment>recipe.dispense_without_liquid</comment>
         <translation>排液 %1 需要注射器中有这么多液体；此处只有 %2：请先吸液，或为该步骤指定“source”</translation>
     </message>
@@ -11254,7 +11255,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>请给出孔或工位之一，不能同时给出</translation>
     </message>
     <message>
-        <source>the source is outside the analyzer's travel</source>
+        <source>the source is outside the analyzer&apos;s travel</source>
         <comment>recipe.source_outside_travel</comment>
         <translation>来源超出分析仪行程</translation>
     </message>
@@ -11269,27 +11270,27 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>一轮从 %2 的孔中吸取 %1</translation>
     </message>
     <message>
-        <source>must be a string like "A1" or "A1:H1", not %1</source>
+        <source>must be a string like &quot;A1&quot; or &quot;A1:H1&quot;, not %1</source>
         <comment>recipe.file.well_not_string</comment>
         <translation>必须是形如“A1”或“A1:H1”的字符串，而不是%1</translation>
     </message>
     <message>
-        <source>must be a well set ("A1:H1", "row B", …) or a list of them, not %1</source>
+        <source>must be a well set (&quot;A1:H1&quot;, &quot;row B&quot;, …) or a list of them, not %1</source>
         <comment>recipe.file.wells_wrong_type</comment>
         <translation>必须是孔集合（“A1:H1”、“row B”……）或其列表，而不是%1</translation>
     </message>
     <message>
-        <source>unknown step type "%1"; the types are %2</source>
+        <source>unknown step type &quot;%1&quot;; the types are %2</source>
         <comment>recipe.file.unknown_step_type</comment>
         <translation>未知步骤类型“%1”；可用类型为 %2</translation>
     </message>
     <message>
-        <source>a %1 step has no "%2"</source>
+        <source>a %1 step has no &quot;%2&quot;</source>
         <comment>recipe.file.field_of_other_step</comment>
         <translation>%1 步骤没有“%2”</translation>
     </message>
     <message>
-        <source>needs a "well" (with its "plate") or a "station"</source>
+        <source>needs a &quot;well&quot; (with its &quot;plate&quot;) or a &quot;station&quot;</source>
         <comment>recipe.file.source_empty</comment>
         <translation>需要“well”（及其“plate”）或“station”</translation>
     </message>
@@ -11529,7 +11530,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>%1 中的运行已完成：没有可继续的内容</translation>
     </message>
     <message>
-        <source>the plunger is at %1 but the log's last completed well left it at %2: the syringe was moved (or the analyzer restarted) since the run stopped, so what it holds is unknown. Start a new run.</source>
+        <source>the plunger is at %1 but the log&apos;s last completed well left it at %2: the syringe was moved (or the analyzer restarted) since the run stopped, so what it holds is unknown. Start a new run.</source>
         <comment>recipe.run.plunger_moved</comment>
         <translation>柱塞在 %1，但日志中最后完成的孔使其停在 %2：运行停止后注射器被移动过（或分析仪重启过），其中的液量未知。请开始新的运行。</translation>
     </message>
@@ -11761,7 +11762,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>该曲线在区域内达到 %1；超过 %2 的定位误差不属于可补偿的范围</translation>
     </message>
     <message>
-        <source>must name Micro-Manager's XY stage device (not empty, one line)</source>
+        <source>must name Micro-Manager&apos;s XY stage device (not empty, one line)</source>
         <comment>scan.export.bad_stage_name</comment>
         <translation>必须填写 Micro-Manager 的 XY 载物台设备名（不能为空，只能一行）</translation>
     </message>
@@ -11776,27 +11777,27 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>相对于区域而言视场太小，网格将超过 %1 个图块（最多 %1 个）</translation>
     </message>
     <message>
-        <source>the field %1 × %2 is larger than the stage's travel %3 × %4</source>
+        <source>the field %1 × %2 is larger than the stage&apos;s travel %3 × %4</source>
         <comment>scan.field_larger_than_travel</comment>
         <translation>视场 %1 × %2 大于载物台行程 %3 × %4</translation>
     </message>
     <message>
-        <source>the region X %1 … %2, Y %3 … %4 reaches beyond the stage's travel X %5 … %6, Y %7 … %8</source>
+        <source>the region X %1 … %2, Y %3 … %4 reaches beyond the stage&apos;s travel X %5 … %6, Y %7 … %8</source>
         <comment>scan.region_beyond_travel</comment>
         <translation>区域 X %1 … %2、Y %3 … %4 超出载物台行程 X %5 … %6、Y %7 … %8</translation>
     </message>
     <message>
-        <source>must be at most the stage's top speed %1 (got %2)</source>
+        <source>must be at most the stage&apos;s top speed %1 (got %2)</source>
         <comment>scan.speed_above_stage</comment>
         <translation>不能超过载物台的最高速度 %1（当前为 %2）</translation>
     </message>
     <message>
-        <source>tile %1 (%2, %3) lies outside the stage's travel X %4 … %5, Y %6 … %7; move the region inward</source>
+        <source>tile %1 (%2, %3) lies outside the stage&apos;s travel X %4 … %5, Y %6 … %7; move the region inward</source>
         <comment>scan.tile_outside_travel</comment>
         <translation>图块 %1（%2, %3）位于载物台行程 X %4 … %5、Y %6 … %7 之外；请把区域向内移</translation>
     </message>
     <message>
-        <source>the overtravel point before tile %1 (%2, %3) lies outside the stage's travel X %4 … %5, Y %6 … %7; move the region inward</source>
+        <source>the overtravel point before tile %1 (%2, %3) lies outside the stage&apos;s travel X %4 … %5, Y %6 … %7; move the region inward</source>
         <comment>scan.overtravel_outside_travel</comment>
         <translation>图块 %1 之前的超程点（%2, %3）位于载物台行程 X %4 … %5、Y %6 … %7 之外；请把区域向内移</translation>
     </message>
@@ -11816,17 +11817,17 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>首尾不能有空格（Fiji 会去掉文件名首尾的空格）</translation>
     </message>
     <message>
-        <source>must not start with '#' (Fiji reads such a line as a comment)</source>
+        <source>must not start with &apos;#&apos; (Fiji reads such a line as a comment)</source>
         <comment>scan.naming.starts_with_hash</comment>
         <translation>不能以“#”开头（Fiji 会把这样的行当作注释）</translation>
     </message>
     <message>
-        <source>must not contain ';' (it separates the fields of a TileConfiguration line)</source>
+        <source>must not contain &apos;;&apos; (it separates the fields of a TileConfiguration line)</source>
         <comment>scan.naming.semicolon</comment>
         <translation>不能含有“;”（它用于分隔 TileConfiguration 行中的字段）</translation>
     </message>
     <message>
-        <source>must be a file name without a folder ('/' or '\')</source>
+        <source>must be a file name without a folder (&apos;/&apos; or &apos;\&apos;)</source>
         <comment>scan.naming.folder</comment>
         <translation>必须是不含文件夹的文件名（不能有“/”或“\”）</translation>
     </message>
@@ -11836,12 +11837,12 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>不能含有控制字符或换行</translation>
     </message>
     <message>
-        <source>'{' at character %1 is never closed</source>
+        <source>&apos;{&apos; at character %1 is never closed</source>
         <comment>scan.naming.unclosed_brace</comment>
         <translation>第 %1 个字符处的“{”没有闭合</translation>
     </message>
     <message>
-        <source>'}' at character %1 has no '{'</source>
+        <source>&apos;}&apos; at character %1 has no &apos;{&apos;</source>
         <comment>scan.naming.unopened_brace</comment>
         <translation>第 %1 个字符处的“}”没有对应的“{”</translation>
     </message>
@@ -11961,7 +11962,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>在%1处急停：扫描已停止。复位急停后按“继续”从该图块接着扫描。</translation>
     </message>
     <message>
-        <source>The stage reported "%1" (%2) at %3: the run is stopped. Resume continues at that tile.</source>
+        <source>The stage reported &quot;%1&quot; (%2) at %3: the run is stopped. Resume continues at that tile.</source>
         <comment>scan.run.stage_event</comment>
         <translation>载物台在%3处报告“%1”（%2）：扫描已停止。按“继续”从该图块接着扫描。</translation>
     </message>
@@ -12008,17 +12009,17 @@ A loop this different may oscillate or run away. Apply them?</source>
         </translation>
     </message>
     <message>
-        <source>The plan runs with the stage's own compensation, but this stage keeps none: run without it.</source>
+        <source>The plan runs with the stage&apos;s own compensation, but this stage keeps none: run without it.</source>
         <comment>scan.run.no_compensation_on_stage</comment>
         <translation>本方案依赖载物台自身的误差补偿，但该载物台没有补偿数据：请不使用补偿运行。</translation>
     </message>
     <message>
-        <source>Reading whether the stage's compensation of %1 is enabled…</source>
+        <source>Reading whether the stage&apos;s compensation of %1 is enabled…</source>
         <comment>scan.run.compensation_being_read</comment>
         <translation>正在读取载物台 %1 轴的补偿是否已启用…</translation>
     </message>
     <message>
-        <source>The plan runs with the stage's own compensation, but it is not enabled on %1: enable it (Calibration screen, or compensation enable --axis %1), or run without it.</source>
+        <source>The plan runs with the stage&apos;s own compensation, but it is not enabled on %1: enable it (Calibration screen, or compensation enable --axis %1), or run without it.</source>
         <comment>scan.run.compensation_not_enabled</comment>
         <translation>本方案依赖载物台自身的误差补偿，但 %1 轴未启用补偿：请启用（在“校准”界面，或 compensation enable --axis %1），或不使用补偿运行。</translation>
     </message>
@@ -12084,7 +12085,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>%1 = %2 超过每个控制周期允许的最大值 %3</translation>
     </message>
     <message>
-        <source>unknown plant kind '%1': use fopdt:K=..,tau=..,L=.. or lag:K=..,tau=..,n=..</source>
+        <source>unknown plant kind &apos;%1&apos;: use fopdt:K=..,tau=..,L=.. or lag:K=..,tau=..,n=..</source>
         <comment>tuning.plant.unknown_kind</comment>
         <translation>未知的对象类型“%1”：请用 fopdt:K=..,tau=..,L=.. 或 lag:K=..,tau=..,n=..</translation>
     </message>
@@ -12099,7 +12100,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>%1：有空参数（参数：%2）</translation>
     </message>
     <message>
-        <source>%1: unknown field '%2' (fields: %3)</source>
+        <source>%1: unknown field &apos;%2&apos; (fields: %3)</source>
         <comment>tuning.plant.unknown_field</comment>
         <translation>%1：未知参数“%2”（参数：%3）</translation>
     </message>
@@ -12114,7 +12115,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>%1：%2 给出了两次</translation>
     </message>
     <message>
-        <source>%1: %2 must be a number (got '%3')</source>
+        <source>%1: %2 must be a number (got &apos;%3&apos;)</source>
         <comment>tuning.plant.not_a_number</comment>
         <translation>%1：%2 必须是数字（当前为“%3”）</translation>
     </message>
@@ -12254,7 +12255,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>在 ω = %1 到 %2 rad/s 之间，细化没有找到相位滞后小于 180° 的点；给出经典继电法的估计值</translation>
     </message>
     <message>
-        <source>the refinement reached the loop's Nyquist limit: the classic relay estimate is reported</source>
+        <source>the refinement reached the loop&apos;s Nyquist limit: the classic relay estimate is reported</source>
         <comment>tuning.relay.nyquist</comment>
         <translation>细化已到达控制回路的奈奎斯特频率：给出经典继电法的估计值</translation>
     </message>
@@ -12324,7 +12325,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>安全包络的各项限值都必须大于 0</translation>
     </message>
     <message>
-        <source>the trial step must be above 0 and below %1 of the envelope's excursion and following-error limits</source>
+        <source>the trial step must be above 0 and below %1 of the envelope&apos;s excursion and following-error limits</source>
         <comment>tuning.run.trial_step_invalid</comment>
         <translation>试验阶跃必须大于 0，且小于安全包络中偏移限值和跟随误差限值的 %1</translation>
     </message>
@@ -12434,12 +12435,12 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>与%1的连接中断；设备会在 0.5 s 内自行结束测试，并以原有增益保持该轴</translation>
     </message>
     <message>
-        <source>reading the device's capture</source>
+        <source>reading the device&apos;s capture</source>
         <comment>tuning.target.reading_capture</comment>
         <translation>正在读取设备的采集数据</translation>
     </message>
     <message>
-        <source>reading the device's capture: %1 of %2 samples</source>
+        <source>reading the device&apos;s capture: %1 of %2 samples</source>
         <comment>tuning.target.reading_capture_of</comment>
         <translation>正在读取设备的采集数据：%1/%2 个采样点</translation>
     </message>
@@ -12449,12 +12450,12 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>已中止</translation>
     </message>
     <message>
-        <source>is missing (method is "%1")</source>
+        <source>is missing (method is &quot;%1&quot;)</source>
         <comment>tuning.file.missing_for_method</comment>
         <translation>缺失（方法为“%1”）</translation>
     </message>
     <message>
-        <source>"%1" is not a rule BenchPilot knows</source>
+        <source>&quot;%1&quot; is not a rule BenchPilot knows</source>
         <comment>tuning.file.unknown_rule</comment>
         <translation>“%1”不是 BenchPilot 认识的整定规则</translation>
     </message>
@@ -12599,12 +12600,12 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>Pessen 积分法则 PID</translation>
     </message>
     <message>
-        <source>Z-N "some overshoot" PID</source>
+        <source>Z-N &quot;some overshoot&quot; PID</source>
         <comment>tuning.rule.some-overshoot</comment>
         <translation>Z-N“少量超调” PID</translation>
     </message>
     <message>
-        <source>Z-N "no overshoot" PID</source>
+        <source>Z-N &quot;no overshoot&quot; PID</source>
         <comment>tuning.rule.no-overshoot</comment>
         <translation>Z-N“无超调” PID</translation>
     </message>
