@@ -4333,6 +4333,10 @@ Keep that log aside and start this test afresh?</source>
         <source>Import capture…</source>
         <translation>导入采集数据…</translation>
     </message>
+    <message>
+        <source>%1 is not the run of the axis test on screen, so nothing was imported: %2. Open the test the capture belongs to, then import again.</source>
+        <translation>%1 不是屏幕上这项单轴测试的运行序列，因此未导入任何数据：%2。请打开该采集数据所属的测试，再重新导入。</translation>
+    </message>
 </context>
 <context>
     <name>ui::ChannelPicker</name>
@@ -8562,6 +8566,14 @@ A loop this different may oscillate or run away. Apply them?</source>
     <message>
         <source>as recorded: %1</source>
         <translation>按记录：%1</translation>
+    </message>
+    <message>
+        <source>the sequence has %1 stops, where the test &quot;%3&quot; makes %2: it is the run of another test</source>
+        <translation>序列有 %1 个测点，而测试“%3”有 %2 个：这是另一项测试的运行序列</translation>
+    </message>
+    <message>
+        <source>the sequence&apos;s stop %1 is at %2, approached %3 in cycle %4, where the test &quot;%8&quot; goes to %5, approached %6 in cycle %7: it is the run of another test</source>
+        <translation>序列的第 %1 个测点位于 %2，在第 %4 个循环中%3趋近，而测试“%8”在第 %7 个循环中%6趋近 %5：这是另一项测试的运行序列</translation>
     </message>
 </context>
 <context>

@@ -4,6 +4,7 @@
 // that does not match the run's stops is refused naming the line, with nothing written;
 // readings already beside the sequence are replaced only when the operator says so.
 #include "app/gui/main_window.h"
+#include "device/files/accuracy/accuracy_test_file.h"
 #include "device/files/accuracy/interferometer_csv.h"
 #include "device/files/text_file.h"
 #include "gui_window.h"
@@ -39,13 +40,21 @@ protected:
         capture = dir.filePath(QStringLiteral("xl80-export.csv"));
         ASSERT_TRUE(QFile::copy(example("stage-x-xl80.targets.csv"), sequence));
         ASSERT_TRUE(QFile::copy(example("stage-x-xl80.interferometer.csv"), capture));
-        motion::metrology::AxisTest t;
-        t.name = "stage-x";
-        t.axis = "X";
-        t.targetsMm = {10, 20.59, 30, 40.41, 50};
-        t.tolerances.aMm = 0.001;  // the result is judged against the test on screen
-        screen->form()->setTest(t);
+        screen->form()->setTest(xl80Test());
         pump(20);
+    }
+    /// The test the example capture is the run of, with a tolerance it fails: the result
+    /// is judged against the test on screen.
+    static motion::metrology::AxisTest xl80Test()
+    {
+        std::string text;
+        msg::Message error;
+        EXPECT_TRUE(files::readText(example("stage-x-xl80.accuracy-test.json"), &text, &error));
+        const auto read = accuracyfiles::accuracyTestFromJson(text, "stage-x-xl80.accuracy-test.json");
+        EXPECT_TRUE(read.test);
+        auto t = read.test ? std::get<motion::metrology::AxisTest>(*read.test) : motion::metrology::AxisTest{};
+        t.tolerances.aMm = 0.001;
+        return t;
     }
     QPushButton* importButton() { return screen->findChild<QPushButton*>(QStringLiteral("calibrationImport")); }
 
@@ -102,6 +111,29 @@ TEST_F(CalibrationImport, AnExportThatDoesNotMatchTheStopsIsRefusedAndNothingIsW
     ASSERT_FALSE(problems.isEmpty());
     EXPECT_TRUE(problems.last().contains(QStringLiteral("xl80-export.csv"))) << problems.last().toStdString();
     EXPECT_TRUE(problems.last().contains(QStringLiteral("nothing was imported"))) << problems.last().toStdString();
+    EXPECT_FALSE(screen->latest());
+    EXPECT_FALSE(QFileInfo::exists(dir.filePath(QStringLiteral("stage-x.readings.csv"))));
+}
+
+TEST_F(CalibrationImport, ACaptureOfAnotherTestIsRefusedNamingWhereItDiffers)
+{
+    // This file's first version imported the 3-target capture against a 5-target test on
+    // screen: the figures were filed under a test that never ran.
+    motion::metrology::AxisTest other = xl80Test();
+    other.targetsMm = {10, 20.59, 30, 40.41, 50};
+    screen->form()->setTest(other);
+    pump(20);
+    EXPECT_FALSE(screen->importCapture(sequence, capture));
+    ASSERT_FALSE(problems.isEmpty());
+    EXPECT_TRUE(problems.last().contains(QStringLiteral("stage-x.targets.csv is not the run of the axis test on screen")))
+        << problems.last().toStdString();
+    EXPECT_TRUE(problems.last().contains(QStringLiteral("the sequence has 30 stops"))) << problems.last().toStdString();
+    // As many stops, one target 10 µm off: the first stop that differs is named.
+    other.targetsMm = {10, 20.6, 30};
+    screen->form()->setTest(other);
+    pump(20);
+    EXPECT_FALSE(screen->importCapture(sequence, capture));
+    EXPECT_TRUE(problems.last().contains(QStringLiteral("stop 2 is at 20.590 mm, approached up in cycle 1"))) << problems.last().toStdString();
     EXPECT_FALSE(screen->latest());
     EXPECT_FALSE(QFileInfo::exists(dir.filePath(QStringLiteral("stage-x.readings.csv"))));
 }

@@ -45,7 +45,8 @@ bool CalibrationScreen::importCapture(const QString& sequencePath, const QString
         return false;
     }
     // The sequence holds targets and directions only; the axis and its tolerances are
-    // the test's, so the test the capture belongs to must be the one on screen.
+    // the test's, so the test the capture belongs to must be the one on screen: its
+    // stops are compared with the sequence's before anything is read or written.
     const accuracyfiles::AccuracyTest onScreen = m_form->test();
     const auto* test = std::get_if<motion::metrology::AxisTest>(&onScreen);
     if (!test) {
@@ -55,6 +56,12 @@ bool CalibrationScreen::importCapture(const QString& sequencePath, const QString
     const auto sequence = accuracyfiles::loadTargetSequence(sequencePath);
     if (!sequence.ok()) {
         emit problem(tr("The target sequence cannot be read:\n%1").arg(fileProblemLines(sequence.problems)));
+        return false;
+    }
+    if (const auto mismatch = accuracyfiles::sequenceMismatch(sequence.stops, *test)) {
+        emit problem(tr("%1 is not the run of the axis test on screen, so nothing was imported: %2. Open the test the capture "
+                        "belongs to, then import again.")
+                         .arg(QFileInfo(sequencePath).fileName(), words::text(*mismatch)));
         return false;
     }
     const auto imported = accuracyfiles::loadInterferometerExport(capturePath, sequence.stops);

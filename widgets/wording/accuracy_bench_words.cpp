@@ -209,6 +209,14 @@ QString AccuracyBenchWords::files(const msg::Message& m)
             .arg(benchArg(m, "index"), benchArg(m, "direction"), benchArg(m, "target"), benchArg(m, "expected"));
     if (id == "accuracy.import.target_differs")
         return tr("reading %1 is for target %2, where the run's stop %1 is at %3").arg(benchArg(m, "index"), benchArg(m, "target"), benchArg(m, "expected"));
+    if (id == "accuracy.import.not_this_test_count")
+        return tr("the sequence has %1 stops, where the test \"%3\" makes %2: it is the run of another test")
+            .arg(benchArg(m, "count"), benchArg(m, "expected"), benchArg(m, "test"));
+    if (id == "accuracy.import.not_this_test_stop")
+        return tr("the sequence's stop %1 is at %2, approached %3 in cycle %4, where the test \"%8\" goes to %5, approached %6 in "
+                  "cycle %7: it is the run of another test")
+            .arg(benchArg(m, "stop"), benchArg(m, "target"), benchArg(m, "direction"), benchArg(m, "cycle"), benchArg(m, "expected"),
+                 benchArg(m, "expected_direction"), benchArg(m, "expected_cycle"), benchArg(m, "test"));
     if (id == "accuracy.import.index_out_of_order")
         return tr("index \"%1\": the sequence's rows are numbered from 1 in order (expected %2)").arg(benchArg(m, "text"), benchArg(m, "expected"));
     if (id == "accuracy.log.positions_not_numbers")

@@ -3,6 +3,7 @@
 #include "device/files/accuracy/csv_table.h"
 #include "device/files/accuracy/load_text.h"
 #include "device/files/text_file.h"
+#include "motion/metrology/linear/run_sequence.h"
 
 #include <charconv>
 #include <cmath>
@@ -289,6 +290,26 @@ InterferometerImport loadInterferometerExport(const QString& path, const std::ve
     std::string name;
     const auto text = loadText(path, name, out.problems);
     return text ? importInterferometerCsv(*text, name, sequence) : out;
+}
+
+std::optional<msg::Message> sequenceMismatch(const std::vector<SequenceStop>& sequence, const motion::metrology::AxisTest& test)
+{
+    const std::vector<motion::metrology::Stop> planned = motion::metrology::runSequence(test);
+    if (sequence.size() != planned.size())
+        return msg::make("accuracy.import.not_this_test_count", {msg::integer("count", static_cast<long long>(sequence.size())),
+                                                                 msg::integer("expected", static_cast<long long>(planned.size())),
+                                                                 msg::verbatim("test", test.name)});
+    for (std::size_t k = 0; k < planned.size(); ++k) {
+        const SequenceStop& s = sequence[k];
+        const motion::metrology::Stop& p = planned[k];
+        if (std::fabs(s.targetMm - p.targetMm) > kTargetMatchMm || s.direction != p.direction || s.cycle != p.cycle)
+            return msg::make("accuracy.import.not_this_test_stop",
+                             {msg::integer("stop", static_cast<long long>(k + 1)), msg::real("target", s.targetMm, msg::Unit::Mm),
+                              directionArg("direction", s.direction), msg::integer("cycle", s.cycle),
+                              msg::real("expected", p.targetMm, msg::Unit::Mm), directionArg("expected_direction", p.direction),
+                              msg::integer("expected_cycle", p.cycle), msg::verbatim("test", test.name)});
+    }
+    return std::nullopt;
 }
 
 } // namespace accuracyfiles

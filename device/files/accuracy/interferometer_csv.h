@@ -22,10 +22,12 @@
 //
 // Plain C++ (fuzzed).
 #include "device/files/accuracy/file_problem.h"
+#include "motion/metrology/linear/axis_test.h"
 #include "motion/metrology/readings.h"
 
 #include <QString>
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -59,6 +61,13 @@ struct InterferometerImport {
 /// The export matched to the sequence, all or nothing.
 InterferometerImport importInterferometerCsv(std::string_view exportText, std::string_view fileName,
                                              const std::vector<SequenceStop>& sequence);
+
+/// Whether `sequence` is the run of `test`: as many stops, each at the same target
+/// (within the import's match of targets), direction and cycle. Empty when it is;
+/// else why not (accuracy.import.not_this_test_count / not_this_test_stop, the first
+/// stop that differs). A capture evaluated against another test would be filed
+/// under that test's axis and tolerances.
+std::optional<msg::Message> sequenceMismatch(const std::vector<SequenceStop>& sequence, const motion::metrology::AxisTest& test);
 
 SequenceRead loadTargetSequence(const QString& path);
 bool saveTargetSequence(const QString& path, const std::vector<SequenceStop>& stops, msg::Message* error);
