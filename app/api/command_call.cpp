@@ -273,6 +273,16 @@ void CommandCall::printedJson(const QJsonObject& object)
         m_server.jobs().setProgress(m_jobId, object);
 }
 
+void CommandCall::progressed(const QJsonObject& progress)
+{
+    if (!m_jobId.isEmpty())
+        m_server.jobs().setProgress(m_jobId, progress);
+    // A method's caller gets it as call.progress (cli.run's gets the CLI's text instead).
+    if (m_client && !m_id.isUndefined() && m_style != Style::CliRun)
+        m_client->send(notificationLine(QStringLiteral("call.progress"), QJsonObject{{QStringLiteral("call"), m_id}, {QStringLiteral("data"), progress}}),
+                       ApiClient::Priority::Update);
+}
+
 std::shared_ptr<void> CommandCall::onInterrupt(std::function<void()> interrupt)
 {
     const int key = m_nextHook++;

@@ -64,6 +64,7 @@ public:
     // cli::InvocationHost
     std::unique_ptr<cli::CliSession> openSession(cli::Invocation& inv) override;
     void printedJson(const QJsonObject& object) override;
+    void progressed(const QJsonObject& progress) override;
     void reported(const QString& message) override { m_reports << message; }
     std::shared_ptr<void> onInterrupt(std::function<void()> interrupt) override;
     std::shared_ptr<void> onLostControl(std::function<void()> lost) override;

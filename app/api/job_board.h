@@ -14,6 +14,8 @@
 #include <vector>
 
 namespace jobs {
+class AccuracyRunner;
+class CircleRunner;
 class PatternRunner;
 class RecipeRunner;
 class ScanRunner;
@@ -70,5 +72,8 @@ private:
 void watchRecipeRunner(JobBoard& board, jobs::RecipeRunner* runner, const QString& instrument, const QString& kind);
 void watchScanRunner(JobBoard& board, jobs::ScanRunner* runner, const QString& instrument, const QString& kind);
 void watchPatternRunner(JobBoard& board, jobs::PatternRunner* runner, const QString& instrument, const QString& kind);
+/// The Calibration screen makes a runner per run: watch each as it starts (job_board_accuracy.cpp).
+void watchAccuracyRunner(JobBoard& board, jobs::AccuracyRunner* runner, const QString& instrument, const QString& kind);
+void watchCircleRunner(JobBoard& board, jobs::CircleRunner* runner, const QString& instrument, const QString& kind);
 
 } // namespace api

@@ -182,11 +182,15 @@ int runAccuracy(Invocation& inv)
     attachStdinPrompter(inv, source, [&] { runner.abort(); });
     msg::Message stopped;
     QObject::connect(&runner, &jobs::AccuracyRunner::problem, &runner, [&](const msg::Message& m) { stopped = m; });
-    if (!inv.json())
-        QObject::connect(&runner, &jobs::AccuracyRunner::progress, &runner, [&](int taken, int total, double eta) {
-            inv.err() << tr("\r%1 of %2 readings, about %3 s left   ").arg(taken).arg(total).arg(std::lround(eta));
-            inv.err().flush();
-        });
+    QObject::connect(&runner, &jobs::AccuracyRunner::progress, &runner, [&](int taken, int total, double eta) {
+        inv.host().progressed(QJsonObject{{QStringLiteral("readings_taken"), taken},
+                                          {QStringLiteral("readings"), total},
+                                          {QStringLiteral("eta_s"), eta}});
+        if (inv.json())
+            return;  // the one JSON object at the end is the output scripts read
+        inv.err() << tr("\r%1 of %2 readings, about %3 s left   ").arg(taken).arg(total).arg(std::lround(eta));
+        inv.err().flush();
+    });
     if (runner.state() != jobs::AccuracyRunner::State::Finished) {
         msg::Message why;
         if (!runner.start(&why))

@@ -116,6 +116,10 @@ public:
     virtual std::unique_ptr<CliSession> openSession(Invocation& inv) = 0;
     /// Each JSON object the command printed (Invocation::printJson), in order.
     virtual void printedJson(const QJsonObject& object) { (void)object; }
+    /// How far a long job has come, for a caller that shows it beside the output: the
+    /// API puts it on the job board (the `jobs` topic) and sends it as call.progress.
+    /// The CLI's output does not change: it prints its own progress for a person.
+    virtual void progressed(const QJsonObject& progress) { (void)progress; }
     /// Each message the command reported (Invocation::report), in order.
     virtual void reported(const QString& message) { (void)message; }
     /// Arranges for `interrupt` to run when the run is interrupted (Ctrl+C or SIGTERM in

@@ -8,6 +8,7 @@
 #include "device/jobs/recipe_runner.h"
 #include "device/jobs/scan_runner.h"
 #include "device/jobs/tuning/tuning_runner.h"
+#include "widgets/calibration/calibration_screen.h"
 
 #include <QFileInfo>
 #include <QPointer>
@@ -79,7 +80,7 @@ void ApiWiring::askTakeBack()
 }
 
 void ApiWiring::watchRunners(jobs::RecipeRunner* plates, jobs::ScanRunner* scan, jobs::PatternRunner* const patterns[2],
-                             dev::TuningRunner* tuning)
+                             dev::TuningRunner* tuning, ui::CalibrationScreen* calibration)
 {
     if (!m_server)
         return;
@@ -87,7 +88,8 @@ void ApiWiring::watchRunners(jobs::RecipeRunner* plates, jobs::ScanRunner* scan,
     QPointer<jobs::ScanRunner> s(scan);
     QPointer<jobs::PatternRunner> pa(patterns[0]), ps(patterns[1]);
     QPointer<dev::TuningRunner> t(tuning);
-    m_operatorBusy = [p, s, pa, ps, t]() -> QString {
+    QPointer<ui::CalibrationScreen> c(calibration);
+    m_operatorBusy = [p, s, pa, ps, t, c]() -> QString {
         using R = jobs::RunState;
         if (p && (p->state() == R::Running || p->state() == R::Pausing || p->state() == R::Paused || p->state() == R::Aborting))
             return tr("a recipe on the Plates screen");
@@ -97,12 +99,23 @@ void ApiWiring::watchRunners(jobs::RecipeRunner* plates, jobs::ScanRunner* scan,
             return tr("a pattern on the Patterns screen");
         if (t && t->busy())
             return tr("a test on the Tuning screen");
+        if (c && c->busy())  // a paused accuracy run too: a script's move would spoil its readings
+            return tr("a test on the Calibration screen");
         return {};
     };
     api::watchRecipeRunner(m_server->jobs(), plates, QStringLiteral("analyzer"), QStringLiteral("plates screen"));
     api::watchScanRunner(m_server->jobs(), scan, QStringLiteral("stage"), QStringLiteral("scan screen"));
     api::watchPatternRunner(m_server->jobs(), patterns[0], QStringLiteral("analyzer"), QStringLiteral("patterns screen"));
     api::watchPatternRunner(m_server->jobs(), patterns[1], QStringLiteral("stage"), QStringLiteral("patterns screen"));
+    if (!calibration)
+        return;
+    auto instrumentKey = [](int index) { return index == 0 ? QStringLiteral("analyzer") : QStringLiteral("stage"); };
+    connect(calibration, &ui::CalibrationScreen::accuracyRunStarting, this, [this, instrumentKey](jobs::AccuracyRunner* r, int index) {
+        api::watchAccuracyRunner(m_server->jobs(), r, instrumentKey(index), QStringLiteral("calibration screen"));
+    });
+    connect(calibration, &ui::CalibrationScreen::circleRunStarting, this, [this, instrumentKey](jobs::CircleRunner* r, int index) {
+        api::watchCircleRunner(m_server->jobs(), r, instrumentKey(index), QStringLiteral("calibration screen"));
+    });
 }
 
 } // namespace app

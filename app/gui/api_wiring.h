@@ -30,6 +30,9 @@ class ScanRunner;
 namespace dev {
 class TuningRunner;
 }
+namespace ui {
+class CalibrationScreen;
+}
 namespace tele {
 class TelemetryHub;
 }
@@ -57,7 +60,8 @@ public:
     /// What the operator's screens hold for instrument `index`: gated while a script has control.
     dev::Instrument* screenInstrument(int index) const;
     /// The screens' runners: a script cannot take control while one of them runs a job.
-    void watchRunners(jobs::RecipeRunner* plates, jobs::ScanRunner* scan, jobs::PatternRunner* const patterns[2], dev::TuningRunner* tuning);
+    void watchRunners(jobs::RecipeRunner* plates, jobs::ScanRunner* scan, jobs::PatternRunner* const patterns[2], dev::TuningRunner* tuning,
+                      ui::CalibrationScreen* calibration);
     /// How the window asks "take control back?"; empty: never asks (tests).
     void setAsk(std::function<bool(const QString& question)> ask) { m_ask = std::move(ask); }
 

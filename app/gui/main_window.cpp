@@ -281,7 +281,7 @@ void MainWindow::wireApi(QDockWidget* logDock)
     if (!m_api->server())
         return;
     jobs::PatternRunner* const patterns[2] = {m_motion->runner(0), m_motion->runner(1)};
-    m_api->watchRunners(m_plates->runner(), m_scan->runner(), patterns, m_tuning->runner());
+    m_api->watchRunners(m_plates->runner(), m_scan->runner(), patterns, m_tuning->runner(), m_calibration);
     if (m_options.confirmDialogs)
         m_api->setAsk([this](const QString& q) {
             QMessageBox box(QMessageBox::Question, tr("A script has control"), q, QMessageBox::Cancel, this);

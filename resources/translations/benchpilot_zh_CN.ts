@@ -742,6 +742,10 @@ Take control back? The script&apos;s next call is refused and its jogs stop; a j
         <source>a test on the Tuning screen</source>
         <translation>整定界面上的测试</translation>
     </message>
+    <message>
+        <source>a test on the Calibration screen</source>
+        <translation>校准界面上的测试</translation>
+    </message>
 </context>
 <context>
     <name>app::InstrumentSession</name>

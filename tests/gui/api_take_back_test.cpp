@@ -2,6 +2,7 @@
 // script holds control the window says who and since when with Take back, the
 // operator's motion controls do not interleave with it, and Take back stops the
 // script within one call. The window still fits 1366 × 768 with the strip showing.
+#include "api_script.h"
 #include "gui_window.h"
 
 #include "app/api/api_server.h"
@@ -22,51 +23,9 @@
 
 namespace {
 
-/// A script on the window's API socket.
-class Script {
-public:
-    explicit Script(const QString& path)
-    {
-        m_socket.connectToServer(path);
-        guitest::waitFor([this] { return m_socket.state() == QLocalSocket::ConnectedState; }, 5000);
-    }
-    QJsonObject call(const QString& method, const QJsonObject& params = {})
-    {
-        const int id = m_next++;
-        m_socket.write(QJsonDocument(QJsonObject{{QStringLiteral("jsonrpc"), QStringLiteral("2.0")}, {QStringLiteral("id"), id},
-                                                 {QStringLiteral("method"), method}, {QStringLiteral("params"), params}})
-                           .toJson(QJsonDocument::Compact)
-                       + '\n');
-        m_socket.flush();
-        QJsonObject answer;
-        guitest::waitFor([&] {
-            m_buffer += m_socket.readAll();
-            for (int nl = m_buffer.indexOf('\n'); nl >= 0; nl = m_buffer.indexOf('\n')) {
-                const QJsonObject o = QJsonDocument::fromJson(m_buffer.left(nl)).object();
-                m_buffer.remove(0, nl + 1);
-                if (o.value(QStringLiteral("id")).toInt() == id)
-                    answer = o;
-            }
-            return !answer.isEmpty();
-        }, 20000);
-        return answer;
-    }
-    void heartbeat(const QString& lease)
-    {
-        m_socket.write(QJsonDocument(QJsonObject{{QStringLiteral("jsonrpc"), QStringLiteral("2.0")},
-                                                 {QStringLiteral("method"), QStringLiteral("control.heartbeat")},
-                                                 {QStringLiteral("params"), QJsonObject{{QStringLiteral("lease"), lease}}}})
-                           .toJson(QJsonDocument::Compact)
-                       + '\n');
-    }
+using guitest::Script;
+using guitest::errorCode;
 
-private:
-    QLocalSocket m_socket;
-    QByteArray m_buffer;
-    int m_next = 1;
-};
-
-int errorCode(const QJsonObject& a) { return a.value(QStringLiteral("error")).toObject().value(QStringLiteral("code")).toInt(); }
 
 TEST(ApiTakeBack, TheWindowSaysWhoHasControlAndTakeBackStopsTheScriptWithinOneCall)
 {

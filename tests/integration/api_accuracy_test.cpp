@@ -93,6 +93,21 @@ TEST(ApiAccuracy, ARunOnAnAxisHomedBeforeWaitsForItsNewHomingToEnd)
     ASSERT_FALSE(a.contains(QStringLiteral("error"))) << QJsonDocument(a).toJson().toStdString();
     EXPECT_EQ(ApiTestClient::result(a).value(QStringLiteral("cycles")).toInt(), 2);
     EXPECT_TRUE(QDir(work.filePath(QStringLiteral("run"))).exists());
+    // Its progress came apart from its one result object: a call.progress per reading,
+    // the last one all 20 (5 targets × 2 cycles × 2 directions).
+    int last = -1, count = 0;
+    for (const auto& n : c.notifications)
+        if (n.value(QStringLiteral("method")).toString() == QLatin1String("call.progress")) {
+            const QJsonObject data = n.value(QStringLiteral("params")).toObject().value(QStringLiteral("data")).toObject();
+            if (!data.contains(QStringLiteral("readings_taken")))
+                continue;
+            EXPECT_EQ(data.value(QStringLiteral("readings")).toInt(), 20);
+            EXPECT_GE(data.value(QStringLiteral("readings_taken")).toInt(), last) << "in order";
+            last = data.value(QStringLiteral("readings_taken")).toInt();
+            ++count;
+        }
+    EXPECT_GE(count, 10);
+    EXPECT_EQ(last, 20);
 }
 
 } // namespace

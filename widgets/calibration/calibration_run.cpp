@@ -154,6 +154,14 @@ bool CalibrationScreen::runAxis()
     return true;
 }
 
+bool CalibrationScreen::busy() const
+{
+    using A = jobs::AccuracyRunner::State;
+    using C = jobs::CircleRunner::State;
+    return (m_runner && (m_runner->isActive() || m_runner->state() == A::Paused))
+        || (m_circle && (m_circle->isActive() || m_circle->state() == C::Paused));
+}
+
 bool CalibrationScreen::startAxis(const accuracyfiles::AccuracyTest& test)
 {
     dev::Instrument* inst = cur();
@@ -209,6 +217,7 @@ bool CalibrationScreen::startAxis(const accuracyfiles::AccuracyTest& test)
         return true;
     }
     onReading();
+    emit accuracyRunStarting(m_runner.get(), m_runOn);
     msg::Message why;
     if (!m_runner->start(&why)) {
         emit problem(words::text(why));
@@ -251,6 +260,7 @@ bool CalibrationScreen::runCircle()
     m_livePolar->show();
     m_livePolar->clearAll();
     m_tabs->setCurrentIndex(0);
+    emit circleRunStarting(m_circle.get(), m_runOn);
     msg::Message why;
     if (!m_circle->start(&why)) {
         emit problem(words::text(why));

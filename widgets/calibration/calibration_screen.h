@@ -11,6 +11,8 @@
 #include "device/client/instrument.h"
 #include "device/files/accuracy/accuracy_result_file.h"
 #include "device/files/accuracy/accuracy_test_file.h"
+#include "device/jobs/accuracy/accuracy_runner.h"  // complete for the signals' runner pointers (moc)
+#include "device/jobs/accuracy/circle_runner.h"
 
 #include <QPointer>
 #include <QWidget>
@@ -31,8 +33,6 @@ namespace dev {
 class Transport;
 }
 namespace jobs {
-class AccuracyRunner;
-class CircleRunner;
 class ReadingSource;
 class ManualSource;
 struct StopContext;
@@ -97,9 +97,16 @@ public:
     QString stateText() const;
     QString figuresText() const;  ///< the results table as text (for tests and the clipboard)
 
+    /// A run of this screen is under way or paused part-way: the instrument is the operator's.
+    bool busy() const;
+
 signals:
     void problem(const QString& message);
     void notice(const QString& message);
+    /// A runner made for a run, about to start on instrument `instrument` (0 analyzer,
+    /// 1 stage); it lives until the next run or the screen goes (the API's job board).
+    void accuracyRunStarting(jobs::AccuracyRunner* runner, int instrument);
+    void circleRunStarting(jobs::CircleRunner* runner, int instrument);
 
 protected:
     void changeEvent(QEvent* event) override;
