@@ -172,9 +172,9 @@ public:
     QTextStream& out() { return m_out; }
     QTextStream& err() { return m_err; }
     const LinkOptions& link() const { return m_link; }
-    /// Before session(): the in-process simulator's link is not paced like a UART. A
-    /// simulator clock sped up over a paced link sends more than the wire carries in
-    /// wall time (SimulatorHost::setTimeScale); commands that speed it up ask for this.
+    /// Before session(): the in-process simulator's link is not paced like a UART.
+    /// Commands that speed the simulator's clock up ask for this so nothing waits on
+    /// the wire (a paced wire is sped up with the clock, LoopbackPair::setTimeScale).
     void unpaceSimulatedLink() { m_link.baud = m_link.sim.isEmpty() ? m_link.baud : 0; }
     bool json() const { return m_link.json; }
     InvocationHost& host() { return m_host; }
