@@ -33,9 +33,12 @@ public:
     void setTimeScale(double scale)
     {
         m_timeScale = scale;
-        // A quiet host is judged on its own clock: 1 s of wall time is `scale` s here.
-        if (m_firmware)
+        // A quiet host is judged on its own clock: 1 s of wall time is `scale` s here. So
+        // are its jog refreshes (every 50 ms of its time), or no jog holds above 4x.
+        if (m_firmware) {
             m_firmware->setHostSilenceLimitS(proto::kPathHostSilenceMs / 1000.0 * std::max(1.0, scale));
+            m_firmware->machine().setJogWatchdogTripS(sim::SimMachine::kJogWatchdogTripS * std::max(1.0, scale));
+        }
         emit timeScaleChanged(scale);
     }
     double timeScale() const { return m_timeScale; }

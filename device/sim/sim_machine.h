@@ -34,6 +34,12 @@ public:
     ~SimMachine();
 
     const MachineConfig& config() const { return m_cfg; }
+    /// How long a velocity move may go unrefreshed before it stops (kJogWatchdogTripS). A
+    /// simulator run K times faster than the wall clock judges the host's refreshes on the
+    /// host's clock: K times the trip (SimulatorHost::setTimeScale), or a host refreshing
+    /// every 50 ms of its time could never hold a jog above 4x.
+    void setJogWatchdogTripS(double seconds) { m_jogWatchdogTripS = seconds; }
+    double jogWatchdogTripS() const { return m_jogWatchdogTripS; }
     proto::HelloReply hello(std::uint32_t linkBaud) const;
     /// The planner's limits as HELLO's extension block states them: the numbers
     /// planSegment() works to, so a host times a move the way it will run.
@@ -165,6 +171,7 @@ private:
     double contourErrorMm() const;
 
     MachineConfig m_cfg;
+    double m_jogWatchdogTripS = kJogWatchdogTripS;
     std::vector<AxisState> m_axes;
     std::vector<Segment> m_segments;
     std::vector<std::uint8_t> m_homeStages;  ///< masks still to home, in order

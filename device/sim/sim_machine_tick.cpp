@@ -125,7 +125,7 @@ void SimMachine::tickVelocityModes()
         if (s.mode != Mode::Jog && s.mode != Mode::Decel && s.mode != Mode::Homing)
             continue;
         const auto& c = s.plant->config();
-        if (s.mode == Mode::Jog && !s.expired && timeS() - s.lastRefreshS > kJogWatchdogTripS) {
+        if (s.mode == Mode::Jog && !s.expired && timeS() - s.lastRefreshS > m_jogWatchdogTripS) {
             // The host went quiet (frozen GUI, pulled cable): stop within the budget.
             s.expired = true;
             s.vTarget = 0;

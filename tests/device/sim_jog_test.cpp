@@ -3,6 +3,8 @@
 // host goes quiet, it stops at soft limits once homed and at switches before.
 #include "sim_test_support.h"
 
+#include "device/link/simulated_link.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -160,6 +162,34 @@ TEST(SimJog, KeepsRunningWhileRefreshed)
     }
     EXPECT_NEAR(m.axis(0).carriage() - x0, 40, 0.5);
     EXPECT_TRUE(m.status().axes[0].flags & proto::AxisJogging);
+}
+
+TEST(SimJog, ALongerTripHoldsAJogRefreshedOnASlowerClock)
+{
+    // At time scale K a host refreshing every 50 ms of its own time refreshes every
+    // K x 50 ms of the device's: with the trip scaled by K (SimulatorHost::setTimeScale)
+    // the jog runs on; with the trip as built it expires between refreshes.
+    for (const double tripS : {sim::SimMachine::kJogWatchdogTripS, sim::SimMachine::kJogWatchdogTripS * 10}) {
+        sim::SimMachine m(sim::analyzerConfig());
+        m.setJogWatchdogTripS(tripS);
+        int expired = 0;
+        for (int n = 0; n < 4; ++n) {  // refreshes every 0.5 s: a 50 ms host at 10x
+            ASSERT_FALSE(m.jogVelocity(jog(0, 10)));
+            for (const auto& e : runCollect(m, 0.5))
+                expired += e.kind == EventKind::JogExpired;
+        }
+        EXPECT_EQ(expired > 0, tripS < 0.5) << "trip " << tripS << " s";
+    }
+}
+
+TEST(SimJog, SimulatorHostScalesTheTripWithItsClock)
+{
+    dev::SimulatedLink link(proto::DeviceKind::Stage, 0);
+    EXPECT_DOUBLE_EQ(link.machine().jogWatchdogTripS(), sim::SimMachine::kJogWatchdogTripS);
+    link.host().setTimeScale(100);
+    EXPECT_DOUBLE_EQ(link.machine().jogWatchdogTripS(), sim::SimMachine::kJogWatchdogTripS * 100);
+    link.host().setTimeScale(0.5);  // a slower clock never shortens the host's allowance
+    EXPECT_DOUBLE_EQ(link.machine().jogWatchdogTripS(), sim::SimMachine::kJogWatchdogTripS);
 }
 
 TEST(SimJog, ZeroVelocityStopsAndReportsDone)

@@ -151,7 +151,7 @@ std::vector<std::string> Probe::verdict(const Bounds& b, const std::vector<std::
         out.push_back(std::to_string(end.lost()) + " telemetry samples or batches lost on a clean link");
     if (end.linkErrors > 0)
         out.push_back(std::to_string(end.linkErrors) + " link errors on a clean link");
-    if (end.jogExpired > 0 && b.jogsCanHold)
+    if (end.jogExpired > 0)
         out.push_back(std::to_string(end.jogExpired) + " jogs expired on the device although the host renewed them in time");
     if (end.jobsFailed > 0)
         out.push_back(std::to_string(end.jobsFailed) + " jobs failed");

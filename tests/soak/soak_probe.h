@@ -27,7 +27,7 @@ struct Figures {
     quint64 droppedBatches = 0;            ///< batches the firmware dropped because its output backed up
     quint64 linkErrors = 0;                ///< see Probe::linkErrors
     quint64 retransmits = 0, lateReplies = 0;
-    quint64 jogExpired = 0;                ///< JogExpired events (see Bounds::jogsCanHold)
+    quint64 jogExpired = 0;                ///< JogExpired events: a renewed jog that stopped by itself
     quint64 jobsDone = 0, jobsFailed = 0;
     quint64 plotFrames = 0;
     std::size_t storeBytes = 0;            ///< the hub's stores of what the plots want
@@ -43,11 +43,6 @@ struct Bounds {
     double growthPercent = 5;  ///< ... or this share of the half-way RSS, whichever is larger
     bool judgeGrowth = true;
     bool everyKind = true;     ///< every kind of job finished at least once
-    /// The device's jog watchdog (200 ms of device time) outlasts the client's renewal
-    /// (50 ms of wall time) times the time scale, i.e. the scale is at most 4: only then is
-    /// an expired jog a fault. Above it the simulator judges the host's renewals on its own
-    /// fast clock and every held jog expires between them (reported, not judged).
-    bool jogsCanHold = true;
 };
 
 class Probe : public QObject {

@@ -26,7 +26,7 @@ Station::Station(proto::DeviceKind kind, double timeScale)
         note("request failed: " + msg::debugString(e.message));
     });
     connect(&client, &dev::Instrument::eventReceived, this, [this](const dev::DeviceEvent& e) {
-        // Counted, not quoted: above 4x every held jog expires (Bounds::jogsCanHold).
+        // Counted, not quoted: a fault only in sum (the simulator scales its trip with its clock).
         if (e.kind == proto::EventKind::JogExpired)
             ++trouble.jogExpired;
     });
