@@ -16,6 +16,7 @@
 #include "wait.h"
 
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -368,6 +369,110 @@ inline Outcome ptyScan(double rate, std::uint64_t seed, double sideMm, const Cut
         return o;
     }
     judgeTiles(o, records, tiles, taken, toleranceUm, xyMovesUm(j));
+    return o;
+}
+
+// ---- pattern through real ptys: the circle run whole through damaged bytes; cut by an
+// unplug, the CLI ends saying how long it ran and the stage stops on the path -----------
+
+inline Outcome ptyPattern(double rate, std::uint64_t seed, bool unplug)
+{
+    Outcome o{unplug ? "pattern-pty-unplug" : "pattern-pty", rate, seed};
+    o.hostStats = false;
+    PtyLine line;
+    // --unplug-ms: the cable stays out long enough for the device's path silence to act.
+    if (!line.start(QStringLiteral("stage"), 4, rate, seed, {QStringLiteral("--unplug-ms"), QStringLiteral("3000")})) {
+        o.end = "no-line";
+        o.fail(line.error().toStdString());
+        return o;
+    }
+    constexpr double kCx = 50, kCy = 50, kR = 5;
+    const QStringList args{QStringLiteral("--json"), QStringLiteral("pattern"), QStringLiteral("run"), QStringLiteral("--shape"),
+                           QStringLiteral("circle"), QStringLiteral("--center"), QStringLiteral("%1,%2").arg(kCx).arg(kCy),
+                           QStringLiteral("--radius"), QString::number(kR), QStringLiteral("--feed"), QStringLiteral("2")};
+    QJsonObject result;
+    bool finished = false;
+    // At the circle's start first, so the cut below lands in the pattern, not on the way to it.
+    bool atStart = false;
+    if (ptyHome(line.port(), o))
+        for (int i = 0; i < 6 && !atStart; ++i) {
+            const auto m = cliRun(line.port(), {QStringLiteral("move"), QStringLiteral("X=%1").arg(kCx + kR), QStringLiteral("Y=%1").arg(kCy)});
+            atStart = m.exitCode == 0;
+            if (!atStart)
+                noteStop(o, "move", m);
+        }
+    if (atStart) {
+        QElapsedTimer since;
+        since.start();
+        // The circle is 31.4 mm at 2 mm/s: 15.7 s of device time, 3.9 s of wall time at 4x.
+        // Unplugged 2 s after the CLI starts (its connect through 1 % damage takes up to a
+        // second), the cut lands part-way round; the journal says whether it did.
+        const Cut cut = unplug ? Cut{Cut::Unplug, 1} : Cut{};
+        itest::ProgramRun r = firstRun(line, args, cut, [&] { return since.elapsed() > 2000 ? 1 : 0; }, o);
+        result = itest::lastJson(r.out);
+        finished = r.exitCode == 0 && result.value(QStringLiteral("complete")).toBool();
+        if (!finished)
+            noteStop(o, "pattern", r);
+        // Through damaged bytes alone a run stops only if the device fell silent: run it
+        // again as an operator would (a pattern starts afresh), as often as the scan's loop.
+        for (int round = 0; round < 6 && !finished && !unplug; ++round) {
+            itest::spin(400);
+            r = cliRun(line.port(), args);
+            result = itest::lastJson(r.out);
+            finished = r.exitCode == 0 && result.value(QStringLiteral("complete")).toBool();
+            if (!finished)
+                noteStop(o, "pattern", r);
+        }
+    }
+    Journal j;
+    std::vector<double> end;
+    if (!line.finish(&j, &end, &o)) {
+        o.fail(line.error().toStdString());
+        return o;
+    }
+    bool pathBegun = false;
+    for (const auto& e : j)
+        pathBegun = pathBegun || e.type == static_cast<std::uint8_t>(proto::MsgType::PathBegin);
+    if (unplug && !pathBegun && !finished) {
+        o.end = "cut-before-the-run";  // nothing to judge: the cable went before the path did
+        return o;
+    }
+    if (result.isEmpty()) {
+        o.end = "no-result";
+        o.fail("the CLI printed no result");
+        return o;
+    }
+    // A run the host saw moving (a sample, a segment done) reports how long it ran. One cut
+    // before the host heard the path start (its PATH_STARTED lost on the line, no status
+    // yet) cannot know, and says 0.
+    const double durationS = result.value(QStringLiteral("duration_s")).toDouble();
+    const int samples = result.value(QStringLiteral("samples")).toInt(), segmentsDone = result.value(QStringLiteral("segments_done")).toInt();
+    if ((samples > 0 || segmentsDone > 0) && !(durationS > 0))
+        o.fail("duration_s 0 after " + std::to_string(samples) + " samples and " + std::to_string(segmentsDone) + " segments: a run that moved reports how long it ran");
+    if (unplug)
+        o.why += ",samples=" + std::to_string(samples) + ",duration_s=" + std::to_string(durationS);
+    if (unplug) {
+        o.end = finished ? "finished-before-the-cut" : "cut";
+        if (finished)
+            o.fail("the cut came after the end: nothing was tested");
+    } else {
+        o.end = finished ? "finished" : "stopped";
+        if (!finished)
+            o.fail("the pattern did not finish");
+        else if (result.value(QStringLiteral("max_contour_um")).toDouble() > 5)
+            o.fail("contour error " + std::to_string(result.value(QStringLiteral("max_contour_um")).toDouble()) + " um");
+    }
+    // The device's record: where it was left is on the circle (it never left the path,
+    // and a cut stopped it on it), and at the circle's start after a whole run.
+    if (end.size() < 2) {
+        o.fail("the journal has no end position");
+        return o;
+    }
+    const double offCircle = std::abs(std::hypot(end[0] - kCx, end[1] - kCy) - kR);
+    if (offCircle > 0.01)
+        o.fail("the stage stopped " + std::to_string(offCircle * 1e3) + " um off the circle");
+    if (finished && !unplug && std::hypot(end[0] - (kCx + kR), end[1] - kCy) > 1e-3)
+        o.fail("the stage does not stand at the path's end");
     return o;
 }
 
