@@ -12,6 +12,7 @@
 #include "device/files/accuracy/readings_csv.h"
 #include "device/files/text_file.h"
 #include "device/jobs/accuracy/circle_runner.h"
+#include "device/jobs/accuracy/circle_telemetry.h"
 #include "device/link/simulated_link.h"
 #include "widgets/report/accuracy_report.h"
 #include "widgets/wording/wording.h"
@@ -230,6 +231,11 @@ int circle(Invocation& inv)
     }
     msg::Message stopped;
     QObject::connect(&runner, &jobs::CircleRunner::problem, &runner, [&](const msg::Message& m) { stopped = m; });
+    // Sampled on the device's clock: its measured X and Y as telemetry (status readings
+    // only if the device does not stream them).
+    QObject::connect(instrument, &dev::Instrument::telemetryReceived, &runner,
+                     [&](const proto::TelemetryBatch& b) { jobs::feedCircleBatch(runner, *instrument, b); });
+    session->wantTelemetry(jobs::circleChannels(runner), 250);
     msg::Message why;
     if (!runner.start(&why))
         return reportFailure(inv, why, Refused);

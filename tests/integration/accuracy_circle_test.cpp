@@ -6,6 +6,7 @@
 #include "cli_in_process.h"
 
 #include "device/jobs/accuracy/circle_runner.h"
+#include "device/jobs/accuracy/circle_telemetry.h"
 
 
 #include <gtest/gtest.h>
@@ -31,7 +32,7 @@ TEST(AccuracyCircle, BothDirectionsAreSampledAndEvaluated)
     QObject::connect(&r, &jobs::CircleRunner::problem, [&](const msg::Message& m) { said.push_back(m); });
     int samples = 0;
     QObject::connect(&r, &jobs::CircleRunner::sampled, [&] { ++samples; });
-    // The runner samples the path by polling status on the host's clock, so a sped-up
+    // Fed no telemetry, the runner samples the path by polling status on the host's clock, so a sped-up
     // device clock on a loaded machine leaves gaps. The device's clock is stepped by hand
     // instead: 50 ms of device time (0.5 mm, under 3° of this circle) at a time, each step
     // waiting for the runner's next sample while the path runs.
@@ -55,6 +56,36 @@ TEST(AccuracyCircle, BothDirectionsAreSampledAndEvaluated)
         EXPECT_LT(run.circularDeviationMm, 0.01) << "a grating loop contours within micrometres";
         EXPECT_NEAR(run.lsq.radiusMm, 10, 0.01);
     }
+}
+
+TEST(AccuracyCircle, TelemetrySamplesEveryDegreeOfTheRevolutionOnASpedUpClock)
+{
+    // Status polls come on the host's clock: at 10x one lands every ~60 ms of device time,
+    // about a hundred a revolution here. The device's telemetry comes on its own clock,
+    // 250 a second of it: every 1° bin of both revolutions gets its sample.
+    AccuracyStage s;
+    ASSERT_TRUE(s.ready(10));
+    motion::metrology::CircularTest t;
+    t.centreMm = {50, 50};
+    t.radiusMm = 10;
+    t.feedMmS = 10;
+    t.samplesPerRevolution = 360;
+    jobs::CircleRunner r(&s.session.client);
+    motion::metrology::Problems problems;
+    ASSERT_TRUE(r.prepare(t, &problems)) << describe(problems);
+    QObject::connect(&s.session.client, &dev::Instrument::telemetryReceived, &r,
+                     [&](const proto::TelemetryBatch& b) { jobs::feedCircleBatch(r, s.session.client, b); });
+    ASSERT_FALSE(s.session.call([&](auto cb) { s.session.client.subscribe(jobs::circleChannels(r), 250, [cb](const auto& e, const auto&) { cb(e); }); }));
+    ASSERT_TRUE(r.start());
+    ASSERT_TRUE(waitFor([&] { return !r.isActive(); }, 30000));
+    ASSERT_EQ(r.state(), jobs::CircleRunner::State::Finished);
+    ASSERT_EQ(r.runs().size(), 2u);
+    for (const auto& run : r.runs())
+        EXPECT_EQ(run.samplesMm.size(), 360u) << "a sample in every degree";
+    const auto e = r.evaluation();
+    ASSERT_TRUE(e.ok()) << describe(e.problems);
+    for (const auto& run : e.runs)
+        EXPECT_NEAR(run.lsq.radiusMm, 10, 0.01);
 }
 
 TEST(AccuracyCircle, AMotionDoneLostOnTheWayToTheStartIsMadeGoodByTheStatus)

@@ -3,6 +3,7 @@
 #include "widgets/calibration/calibration_screen.h"
 
 #include "device/files/accuracy/error_curve_csv.h"
+#include "device/jobs/accuracy/circle_telemetry.h"
 #include "device/jobs/accuracy/accuracy_runner.h"
 #include "device/jobs/accuracy/circle_runner.h"
 #include "device/jobs/accuracy/gauge_source.h"
@@ -255,6 +256,12 @@ bool CalibrationScreen::runCircle()
         emit problem(words::text(m));
     });
     connect(m_circle.get(), &jobs::CircleRunner::finished, this, &CalibrationScreen::onCircleFinished);
+    // Sampled on the device's clock from the measured positions every instrument streams
+    // for the telemetry history; status readings stand in if the link sheds them.
+    dev::Instrument* inst = cur();
+    connect(inst, &dev::Instrument::telemetryReceived, m_circle.get(), [runner = m_circle.get(), inst](const proto::TelemetryBatch& b) {
+        jobs::feedCircleBatch(*runner, *inst, b);
+    });
     m_runOn = m_current;
     m_live->hide();
     m_livePolar->show();

@@ -283,14 +283,28 @@ void CircleRunner::poll()
             self->stopWith(msg::make("accuracy.run.status_failed", {msg::nested("detail", e->message)}));
             return;
         }
-        if (self->m_axisX < s.axes.size() && self->m_axisY < s.axes.size())
+        const bool telemetry = self->telemetryComing();
+        if (!telemetry && self->m_axisX < s.axes.size() && self->m_axisY < s.axes.size())
             self->takeSample(s.axes[self->m_axisX].measured, s.axes[self->m_axisY].measured);
         if (self->m_pathDone) {
             self->endRun();
             return;
         }
-        self->m_poll.start(kSamplePollMs);
+        self->m_poll.start(telemetry ? kEndPollMs : kSamplePollMs);
     });
+}
+
+void CircleRunner::addSample(double xMm, double yMm)
+{
+    if (!isActive() || m_phase != Phase::Path)
+        return;
+    m_sinceTelemetry.start();
+    takeSample(xMm, yMm);
+}
+
+bool CircleRunner::telemetryComing() const
+{
+    return m_sinceTelemetry.isValid() && m_sinceTelemetry.elapsed() < kTelemetryStaleMs;
 }
 
 void CircleRunner::takeSample(double xMm, double yMm)

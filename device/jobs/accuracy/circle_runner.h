@@ -17,6 +17,7 @@
 #include "device/jobs/arrival_by_status.h"
 #include "motion/metrology/contour/circular_test.h"
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QPointer>
 #include <QTimer>
@@ -54,7 +55,19 @@ public:
     /// Device seconds left.
     double etaS() const;
 
+    /// A measured position from the device's telemetry (feedCircleBatch): samples on the
+    /// device's clock, so a loaded host or a sped-up simulator leaves no gaps. While they
+    /// come, status readings only watch for the end of the path; without them (no
+    /// subscription, the link shed the channels) the runner samples status readings.
+    void addSample(double xMm, double yMm);
+    int axisX() const { return m_axisX; }
+    int axisY() const { return m_axisY; }
+
     static constexpr int kSamplePollMs = 5;
+    /// Status polls while telemetry samples come: only the end of the path is watched.
+    static constexpr int kEndPollMs = 20;
+    /// Telemetry older than this (wall time) no longer counts as coming: status samples again.
+    static constexpr int kTelemetryStaleMs = 150;
 
 signals:
     void stateChanged(jobs::CircleRunner::State state);
@@ -74,6 +87,7 @@ private:
     void onPathAppended(const std::optional<dev::RequestError>& e, quint64 generation);
     void poll();
     void takeSample(double xMm, double yMm);
+    bool telemetryComing() const;
     void endRun();
     void stopWith(const msg::Message& why);
     std::vector<motion::path::Segment> pathFor(motion::metrology::Rotation r) const;
@@ -100,6 +114,7 @@ private:
     bool m_haveAngle = false;
     std::vector<char> m_binTaken;
     QTimer m_poll;
+    QElapsedTimer m_sinceTelemetry;  ///< wall time since the last telemetry sample (invalid: none yet)
     ArrivalByStatus m_arrival;  ///< a lost MotionDone made good by the status
     QList<QMetaObject::Connection> m_connections;
     QList<QMetaObject::Connection> m_pathConnections;

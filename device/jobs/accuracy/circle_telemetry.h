@@ -1,0 +1,14 @@
+#pragma once
+// Feeds a circular test from raw telemetry batches: the measured X and Y the device
+// streams (the GUI's history keeps them subscribed; the CLI subscribes them itself).
+#include "device/client/instrument.h"
+#include "device/jobs/accuracy/circle_runner.h"
+
+namespace jobs {
+
+/// The channels a circular test samples: measured X and Y of the runner's axes.
+QVector<proto::ChannelRef> circleChannels(const CircleRunner& runner);
+/// Hands every sample of the batch that carries both channels to the runner; returns how many.
+int feedCircleBatch(CircleRunner& runner, const dev::Instrument& client, const proto::TelemetryBatch& batch);
+
+} // namespace jobs
