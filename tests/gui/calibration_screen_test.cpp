@@ -210,4 +210,27 @@ TEST_F(CalibrationScreenTest, OpenIsHeldBackWhileATestRuns)
     EXPECT_TRUE(open->toolTip().isEmpty());
 }
 
+TEST_F(CalibrationScreenTest, ACircularTestIsSampledFromTheStagesTelemetry)
+{
+    // The screen's instruments stream their measured positions for the telemetry history;
+    // the circle runner takes its samples from them, on the device's clock: at 25x every
+    // 1° bin of both revolutions is filled (status polls on the host's clock fill a third).
+    ASSERT_TRUE(homedStage());
+    motion::metrology::CircularTest t;
+    t.name = "gui-circle";
+    t.centreMm = {50, 50};
+    t.radiusMm = 10;
+    t.feedMmS = 10;
+    t.samplesPerRevolution = 360;
+    screen->form()->setTest(t);
+    pump(20);
+    ASSERT_TRUE(screen->run());
+    ASSERT_TRUE(waitFor([&] { return screen->circleRunner() && !screen->circleRunner()->isActive(); }, 60000));
+    ASSERT_EQ(screen->circleRunner()->state(), jobs::CircleRunner::State::Finished);
+    ASSERT_EQ(screen->circleRunner()->runs().size(), 2u);
+    for (const auto& run : screen->circleRunner()->runs())
+        EXPECT_EQ(run.samplesMm.size(), 360u);
+    keepPicture("calibration-circle.png");
+}
+
 } // namespace

@@ -56,8 +56,11 @@ void setRows(QTableWidget* t, const std::vector<QStringList>& rows)
 {
     t->setRowCount(static_cast<int>(rows.size()));
     for (int r = 0; r < static_cast<int>(rows.size()); ++r)
-        for (int c = 0; c < rows[static_cast<std::size_t>(r)].size() && c < t->columnCount(); ++c)
-            t->setItem(r, c, new QTableWidgetItem(rows[static_cast<std::size_t>(r)][c]));
+        for (int c = 0; c < rows[static_cast<std::size_t>(r)].size() && c < t->columnCount(); ++c) {
+            auto* item = new QTableWidgetItem(rows[static_cast<std::size_t>(r)][c]);
+            item->setToolTip(item->text());  // a narrow column elides the name: whole here
+            t->setItem(r, c, item);
+        }
 }
 
 } // namespace

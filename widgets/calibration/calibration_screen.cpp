@@ -289,7 +289,11 @@ QWidget* CalibrationScreen::buildCircle()
     m_circleFigures = new QTableWidget(0, 2);
     m_circleFigures->setObjectName(QStringLiteral("calibrationCircleFigures"));
     m_circleFigures->verticalHeader()->setVisible(false);
-    m_circleFigures->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    // The values whole; the figures' names take the rest, elided with a tooltip (at 1366 px
+    // the names pushed the values out of view behind a scroll bar).
+    m_circleFigures->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    m_circleFigures->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+    m_circleFigures->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     m_circleFigures->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_circleFigures->setMaximumWidth(360);
     h->addWidget(m_circleFigures);
