@@ -72,3 +72,9 @@ TEST(HostilePty, PatternWithAnUnplug)
 {
     ptyCampaign([](double r, std::uint64_t s) { return hostile::ptyPattern(r, s, true); });
 }
+
+// Gains: a Ziegler–Nichols run cut by an unplug leaves the axis under the gains it had, at rest.
+TEST(HostilePty, TuningWithAnUnplug)
+{
+    ptyCampaign([](double r, std::uint64_t s) { return hostile::ptyTuningCut(r, s); });
+}

@@ -476,4 +476,82 @@ inline Outcome ptyPattern(double rate, std::uint64_t seed, bool unplug)
     return o;
 }
 
+// ---- tuning through real ptys: a Ziegler–Nichols run cut by an unplug leaves the gains the axis had ----
+
+/// The X gains `benchpilot-cli gains --json` reads, retried through the bad line; empty when
+/// no read got through.
+inline QJsonObject ptyGains(const QString& port, Outcome& o)
+{
+    for (int i = 0; i < 6; ++i) {
+        const auto r = cliRun(port, {QStringLiteral("--json"), QStringLiteral("gains")}, 30000);
+        if (r.exitCode == 0)
+            return itest::lastJson(r.out).value(QStringLiteral("axes")).toObject().value(QStringLiteral("X")).toObject();
+        noteStop(o, "gains", r);
+        itest::spin(300);
+    }
+    return {};
+}
+
+inline Outcome ptyTuningCut(double rate, std::uint64_t seed)
+{
+    Outcome o{"tuning-pty-unplug", rate, seed};
+    o.hostStats = false;
+    PtyLine line;
+    if (!line.start(QStringLiteral("stage"), 1, rate, seed, {QStringLiteral("--unplug-ms"), QStringLiteral("3000")})) {
+        o.end = "no-line";
+        o.fail(line.error().toStdString());
+        return o;
+    }
+    QJsonObject before, after;
+    bool moving = true;
+    if (ptyHome(line.port(), o)) {
+        for (int i = 0; i < 6; ++i) {
+            const auto m = cliRun(line.port(), {QStringLiteral("move"), QStringLiteral("X=50")});
+            if (m.exitCode == 0)
+                break;
+            noteStop(o, "move", m);
+        }
+        before = ptyGains(line.port(), o);
+        QElapsedTimer since;
+        since.start();
+        // Ziegler–Nichols' trials run for several seconds at real time; the cable goes 2 s
+        // after the CLI starts (its connect through 1 % damage takes up to a second).
+        const itest::ProgramRun r = firstRun(line,
+                                             {QStringLiteral("--json"), QStringLiteral("tune"), QStringLiteral("--method"),
+                                              QStringLiteral("zn"), QStringLiteral("--axis"), QStringLiteral("X"),
+                                              QStringLiteral("--max-duration"), QStringLiteral("60")},
+                                             Cut{Cut::Unplug, 1}, [&] { return since.elapsed() > 2000 ? 1 : 0; }, o);
+        o.end = r.exitCode == 0 ? "finished-before-the-cut" : "cut";
+        if (r.exitCode != 0)
+            noteStop(o, "tune", r);
+        itest::spin(3500);  // the cable back
+        after = ptyGains(line.port(), o);
+        for (int i = 0; i < 6; ++i) {
+            const auto st = cliRun(line.port(), {QStringLiteral("--json"), QStringLiteral("status")}, 30000);
+            if (st.exitCode != 0)
+                continue;
+            moving = itest::lastJson(st.out).value(QStringLiteral("axes")).toObject().value(QStringLiteral("X")).toObject()
+                         .value(QStringLiteral("moving")).toBool(true);
+            break;
+        }
+    }
+    Journal j;
+    std::vector<double> end;
+    if (!line.finish(&j, &end, &o))
+        o.fail(line.error().toStdString());
+    if (before.isEmpty() || after.isEmpty()) {
+        o.fail("the gains could not be read through the line");
+        return o;
+    }
+    for (const char* k : {"Kp", "Ki", "Kd"})
+        if (before.value(QLatin1String(k)).toDouble() != after.value(QLatin1String(k)).toDouble())
+            o.fail(std::string("gain ") + k + " changed: " + std::to_string(before.value(QLatin1String(k)).toDouble()) + " -> "
+                   + std::to_string(after.value(QLatin1String(k)).toDouble()));
+    if (moving)
+        o.fail("axis X still moving after the cut, or its status never read");
+    if (o.end == "finished-before-the-cut")
+        o.fail("the cut came after the end: nothing was tested");
+    return o;
+}
+
 } // namespace hostile
