@@ -8,7 +8,6 @@
 #include <QDir>
 #include <QSaveFile>
 
-#include <charconv>
 #include <cmath>
 #include <vector>
 
@@ -17,23 +16,6 @@ namespace {
 /// A live store "covers the window" when its oldest sample is at most this much
 /// younger than the window's start: one batch late (≤ 105 ms) is still covering.
 constexpr double kCoverSlackS = 0.25;
-
-QByteArray historyCsvCell(const QString& text)
-{
-    QByteArray b = text.toUtf8();
-    if (b.contains(',') || b.contains('"') || b.contains('\n') || b.contains('\r')) {
-        b.replace("\"", "\"\"");
-        b = '"' + b + '"';
-    }
-    return b;
-}
-
-void appendHistoryValue(QByteArray& out, float v)
-{
-    char buf[32];
-    const auto r = std::to_chars(buf, buf + sizeof buf, v);  // the shortest text that reads back as this float
-    out.append(buf, static_cast<qsizetype>(r.ptr - buf));
-}
 
 struct HistoryColumn {
     ChannelKey key;
@@ -109,7 +91,7 @@ bool TelemetryHub::exportHistory(const QString& csvPath, double spanS, msg::Mess
     QByteArray out = "time_s,instrument";
     for (const auto& c : cols) {
         const QString unit = channelUnit(c.key);
-        out += ',' + historyCsvCell(unit.isEmpty() ? channelName(c.key) : tr("%1 [%2]").arg(channelName(c.key), unit));
+        out += ',' + csvCell(unit.isEmpty() ? channelName(c.key) : tr("%1 [%2]").arg(channelName(c.key), unit));
     }
     out += '\n';
     quint64 written = 0;
@@ -128,7 +110,7 @@ bool TelemetryHub::exportHistory(const QString& csvPath, double spanS, msg::Mess
         for (auto& c : cols)
             if (c.key.instrument == index)
                 c.next = std::isfinite(from) ? c.store->lowerBound(from) : 0;
-        const QByteArray who = historyCsvCell(instrumentName(index));
+        const QByteArray who = csvCell(instrumentName(index));
         for (;;) {
             double t = std::numeric_limits<double>::infinity();
             for (const auto& c : cols)
@@ -141,7 +123,7 @@ bool TelemetryHub::exportHistory(const QString& csvPath, double spanS, msg::Mess
                 out += ',';
                 // Same time within 0.1 µs: device clocks tick in whole µs.
                 if (c.key.instrument == index && c.next < c.store->size() && std::abs(c.store->at(c.next).tS - t) < 1e-7)
-                    appendHistoryValue(out, c.store->at(c.next++).value);
+                    appendShortest(out, c.store->at(c.next++).value);
             }
             out += '\n';
             ++written;

@@ -10,24 +10,6 @@
 
 namespace tele {
 namespace {
-/// A CSV cell: quoted when it holds a separator, quote or line break.
-QByteArray csvCell(const QString& text)
-{
-    QByteArray b = text.toUtf8();
-    if (b.contains(',') || b.contains('"') || b.contains('\n') || b.contains('\r')) {
-        b.replace("\"", "\"\"");
-        b = '"' + b + '"';
-    }
-    return b;
-}
-
-void appendNumber(QByteArray& out, double v)
-{
-    char buf[32];
-    const auto r = std::to_chars(buf, buf + sizeof buf, v);  // shortest text that reads back the same
-    out.append(buf, static_cast<qsizetype>(r.ptr - buf));
-}
-
 /// Device microseconds as seconds with six decimals, exactly.
 void appendTimeUs(QByteArray& out, std::uint64_t us)
 {
@@ -138,7 +120,7 @@ void TelemetryHub::writeRecordRows(int index, const proto::TelemetryBatch& batch
             const proto::ChannelRef ref = r.columns[col].ref;
             const std::int32_t raw = batch.values[k * nc + static_cast<std::size_t>(pos[col])];
             const double v = client ? client->toAxisUnits(ref, raw) : double(raw);
-            appendNumber(r.buffer, v * unitFactor(r.columns[col]));
+            appendShortest(r.buffer, v * unitFactor(r.columns[col]));
         }
         r.buffer += '\n';
         ++r.rows;
