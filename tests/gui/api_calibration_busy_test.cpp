@@ -28,12 +28,10 @@ const api::Job* calibrationJob(app::MainWindow& w)
 TEST(ApiCalibrationBusy, AScriptIsRefusedWhileTheOperatorsAccuracyRunRunsOrWaitsPaused)
 {
     QTemporaryDir dir;
-    app::MainWindowOptions options = guitest::testWindowOptions();
-    options.api.socketPath = dir.filePath(QStringLiteral("api.sock"));
-    app::MainWindow w(options);
-    w.resize(1366, 740);
-    w.show();
-    ASSERT_TRUE(guitest::waitFor([&] { return w.analyzer()->instrument()->isReady() && w.stage()->instrument()->isReady(); }, 5000));
+    const app::MainWindowOptions options = guitest::apiWindowOptions(dir.filePath(QStringLiteral("api.sock")));
+    const auto window = guitest::openReadyWindow(QSize(1366, 740), options);
+    ASSERT_TRUE(window);
+    app::MainWindow& w = *window;
     ASSERT_NE(w.api()->server(), nullptr) << w.api()->startError().toStdString();
     ASSERT_TRUE(w.showScreen(QStringLiteral("calibration")));
     ui::CalibrationScreen* screen = w.calibrationScreen();

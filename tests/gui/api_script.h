@@ -9,6 +9,14 @@
 
 namespace guitest {
 
+/// The test window's options with the scripting API on a socket of its own.
+inline app::MainWindowOptions apiWindowOptions(const QString& socketPath)
+{
+    app::MainWindowOptions options = testWindowOptions();
+    options.api.socketPath = socketPath;
+    return options;
+}
+
 /// A script on the window's API socket.
 class Script {
 public:

@@ -30,12 +30,10 @@ using guitest::errorCode;
 TEST(ApiTakeBack, TheWindowSaysWhoHasControlAndTakeBackStopsTheScriptWithinOneCall)
 {
     QTemporaryDir dir;
-    app::MainWindowOptions options = guitest::testWindowOptions();
-    options.api.socketPath = dir.filePath(QStringLiteral("api.sock"));
-    app::MainWindow w(options);
-    w.resize(1366, 740);
-    w.show();
-    ASSERT_TRUE(guitest::waitFor([&] { return w.analyzer()->instrument()->isReady() && w.stage()->instrument()->isReady(); }, 5000));
+    const app::MainWindowOptions options = guitest::apiWindowOptions(dir.filePath(QStringLiteral("api.sock")));
+    const auto window = guitest::openReadyWindow(QSize(1366, 740), options);
+    ASSERT_TRUE(window);
+    app::MainWindow& w = *window;
     ASSERT_NE(w.api()->server(), nullptr) << w.api()->startError().toStdString();
     app::ApiControlStrip* strip = w.api()->strip();
     ASSERT_NE(strip, nullptr);

@@ -39,9 +39,9 @@ inline void keepPicture(QWidget* window, const QString& name)
 }
 
 /// Shown at `size` with both instruments' links ready; nullptr if they never are.
-inline std::unique_ptr<app::MainWindow> openReadyWindow(QSize size)
+inline std::unique_ptr<app::MainWindow> openReadyWindow(QSize size, const app::MainWindowOptions& options = testWindowOptions())
 {
-    auto w = std::make_unique<app::MainWindow>(testWindowOptions());
+    auto w = std::make_unique<app::MainWindow>(options);
     w->resize(size);
     w->show();
     if (!waitFor([&] { return w->analyzer()->instrument()->isReady() && w->stage()->instrument()->isReady(); }, 5000))
