@@ -78,3 +78,10 @@ TEST(HostilePty, TuningWithAnUnplug)
 {
     ptyCampaign([](double r, std::uint64_t s) { return hostile::ptyTuningCut(r, s); });
 }
+
+// A held jog: after the line is pulled or hangs, X rests within the device's watchdog of
+// its last renewal (the loopback's joystick case, on real ptys; odd seeds pull, even hang).
+TEST(HostilePty, HeldJogWhenTheLineDies)
+{
+    ptyCampaign([](double r, std::uint64_t s) { return hostile::ptyJog(r, s); });
+}

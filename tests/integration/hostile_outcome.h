@@ -155,4 +155,32 @@ inline void judgeTiles(Outcome& o, const std::vector<motion::PositionRecord>& re
         o.fail(std::to_string(notVisited) + " tiles the device never moved to");
 }
 
+/// How long after its last velocity refresh (JOG_VELOCITY) each of `axes` came to rest
+/// (its first MotionDone or Stopped event after that refresh), from the device's journal:
+/// fails `o` for an axis that moved longer than `watchdogS` or never reported at rest.
+inline void judgeCoast(Outcome& o, const Journal& j, const std::vector<int>& axes, double watchdogS)
+{
+    double lastRefreshS = -1;
+    std::map<int, double> restS;
+    for (const auto& e : j) {
+        if (e.type == static_cast<std::uint8_t>(proto::MsgType::JogVelocity)) {
+            lastRefreshS = e.timeS;
+            restS.clear();
+        } else if (e.type == static_cast<std::uint8_t>(proto::MsgType::Event)) {
+            const auto ev = proto::decodeEvent(e.payload);
+            if (ev && (ev->kind == proto::EventKind::MotionDone || ev->kind == proto::EventKind::Stopped) && !restS.count(ev->axis))
+                restS[ev->axis] = e.timeS;
+        }
+    }
+    for (const int a : axes) {
+        if (!restS.count(a)) {
+            o.fail("axis " + std::to_string(a) + " never reported at rest");
+            continue;
+        }
+        const double after = restS[a] - std::max(lastRefreshS, 0.0);
+        if (after > watchdogS + 1e-3)
+            o.fail("axis " + std::to_string(a) + " moved " + std::to_string(after * 1000) + " ms after its last refresh");
+    }
+}
+
 } // namespace hostile

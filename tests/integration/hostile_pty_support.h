@@ -65,6 +65,8 @@ public:
     QString dir() const { return m_dir.path(); }
     /// Pulls the cable now (bp-faultline puts it back after its --unplug-ms).
     void unplug() { ::kill(static_cast<pid_t>(m_line.processId()), SIGUSR1); }
+    /// The line goes silent both ways now, neither port noticing (for its --hang-ms).
+    void hang() { ::kill(static_cast<pid_t>(m_line.processId()), SIGUSR2); }
 
     /// Stops both programs; the device's journal (with where the machine was left in
     /// `endCommanded`) and the line's counts. false when either said nothing.
@@ -551,6 +553,56 @@ inline Outcome ptyTuningCut(double rate, std::uint64_t seed)
         o.fail("axis X still moving after the cut, or its status never read");
     if (o.end == "finished-before-the-cut")
         o.fail("the cut came after the end: nothing was tested");
+    return o;
+}
+
+// ---- a held jog through real ptys: nothing moves longer than the watchdog allows after the
+// line dies (pulled, or hung with neither port noticing) ------------------------------------
+
+inline Outcome ptyJog(double rate, std::uint64_t seed)
+{
+    const bool unplug = seed % 2;
+    Outcome o{unplug ? "jog-pty-unplug" : "jog-pty-hang", rate, seed};
+    o.hostStats = false;
+    PtyLine line;
+    if (!line.start(QStringLiteral("stage"), 1, rate, seed,
+                    {QStringLiteral("--unplug-ms"), QStringLiteral("3000"), QStringLiteral("--hang-ms"), QStringLiteral("3000")})) {
+        o.end = "no-line";
+        o.fail(line.error().toStdString());
+        return o;
+    }
+    // 10 s at 4 mm/s on X, renewed by the CLI every 50 ms; the line dies 2 s in.
+    QProcess p;
+    p.start(itest::binary("benchpilot-cli"), {QStringLiteral("--port"), line.port(), QStringLiteral("jog"), QStringLiteral("X"),
+                                              QStringLiteral("4"), QStringLiteral("10")});
+    if (!p.waitForStarted(10000)) {
+        o.fail("the CLI did not start");
+        return o;
+    }
+    itest::spin(2000);
+    if (unplug)
+        line.unplug();
+    else
+        line.hang();
+    o.end = unplug ? "unplugged" : "hung";
+    const itest::ProgramRun r = itest::collectRun(p, p.waitForFinished(30000));
+    if (r.exitCode != 0)
+        noteStop(o, "jog", r);
+    itest::spin(1000);  // a CLI whose port vanished ends at once: give the device's watchdog its time
+    Journal j;
+    std::vector<double> end;
+    if (!line.finish(&j, &end, &o)) {
+        o.fail(line.error().toStdString());
+        return o;
+    }
+    bool jogged = false;
+    for (const auto& e : j)
+        jogged = jogged || e.type == static_cast<std::uint8_t>(proto::MsgType::JogVelocity);
+    if (!jogged) {
+        o.end = "cut-before-the-jog";  // the connect through the damage took the 2 s: nothing to judge
+        return o;
+    }
+    judgeCoast(o, j, {0}, proto::kJogWatchdogMs / 1000.0);
     return o;
 }
 

@@ -362,28 +362,7 @@ inline Outcome joystick(double rate, std::uint64_t seed, int holdMs)
         o.fail("still moving 3 s after the link died");
     // The device's record: the last velocity it executed (no later than the cut), and
     // the events that said each axis was at rest.
-    const double watchdogS = s.client.identity().jogWatchdogMs / 1000.0;
-    double lastRefreshS = -1;
-    std::map<int, double> restS;
-    for (const auto& e : s.link.host().firmware().journal()) {
-        if (e.type == static_cast<std::uint8_t>(proto::MsgType::JogVelocity)) {
-            lastRefreshS = e.timeS;
-            restS.clear();
-        } else if (e.type == static_cast<std::uint8_t>(proto::MsgType::Event)) {
-            const auto ev = proto::decodeEvent(e.payload);
-            if (ev && ev->axis <= 1 && (ev->kind == proto::EventKind::MotionDone || ev->kind == proto::EventKind::Stopped) && !restS.count(ev->axis))
-                restS[ev->axis] = e.timeS;
-        }
-    }
-    for (int a = 0; a < 2; ++a) {
-        if (!restS.count(a)) {
-            o.fail("axis " + std::to_string(a) + " never reported at rest");
-            continue;
-        }
-        const double after = restS[a] - std::max(lastRefreshS, 0.0);
-        if (after > watchdogS + 1e-3)
-            o.fail("axis " + std::to_string(a) + " moved " + std::to_string(after * 1000) + " ms after its last refresh");
-    }
+    judgeCoast(o, s.link.host().firmware().journal(), {0, 1}, s.client.identity().jogWatchdogMs / 1000.0);
     tally(s, o);
     return o;
 }
