@@ -4,6 +4,7 @@
 // its own (bounded ring, order, thinning), the hub fed by hand (multi-instrument,
 // reconnect gap, clock restart, CSV export) and the hub on the simulator (what is
 // subscribed when nobody wants anything).
+#include "qt_event_loop.h"
 #include "device/backends/benchpilot/benchpilot_client.h"
 #include "device/link/simulated_link.h"
 #include "device/telemetry/history_recorder.h"
@@ -30,34 +31,8 @@ using tele::HistoryBudget;
 using tele::HistoryRecorder;
 using tele::TelemetryHub;
 
-void ensureHistoryApp()
-{
-    if (QCoreApplication::instance())
-        return;
-    static int argc = 1;
-    static char name[] = "test_device";
-    static char* argv[] = {name, nullptr};
-    static QCoreApplication* app = new QCoreApplication(argc, argv);
-    (void)app;
-}
-
-bool historyWaitFor(const std::function<bool()>& done, int timeoutMs = 5000)
-{
-    if (done())
-        return true;
-    QEventLoop loop;
-    QTimer poll, limit;
-    QObject::connect(&poll, &QTimer::timeout, &loop, [&] {
-        if (done())
-            loop.quit();
-    });
-    QObject::connect(&limit, &QTimer::timeout, &loop, &QEventLoop::quit);
-    poll.start(1);
-    limit.setSingleShot(true);
-    limit.start(timeoutMs);
-    loop.exec();
-    return done();
-}
+using devtest::ensureApp;
+using devtest::waitFor;
 
 ChannelRef href(int axis, ChannelKind k) { return ChannelRef{static_cast<std::uint8_t>(axis), k}; }
 
@@ -88,7 +63,7 @@ void recordRamp(HistoryRecorder& r, const ChannelRef& ref, std::uint32_t first, 
 
 class TelemetryHistoryTest : public ::testing::Test {
 protected:
-    static void SetUpTestSuite() { ensureHistoryApp(); }
+    static void SetUpTestSuite() { ensureApp(); }
 };
 
 // ---- the recorder on its own ----------------------------------------------------------
@@ -338,16 +313,16 @@ TEST_F(TelemetryHistoryTest, AnInstrumentNobodyWatchesStreamsItsHistoryChannelsA
     hub.enableHistory();
     hub.addInstrument(0, QStringLiteral("Analyzer"), &client);
     client.connectLink();
-    ASSERT_TRUE(historyWaitFor([&] { return client.isReady(); }));
+    ASSERT_TRUE(waitFor([&] { return client.isReady(); }));
     const int axes = client.identity().axes.size();
     ASSERT_EQ(axes, 4);
-    ASSERT_TRUE(historyWaitFor([&] { return client.subscribedChannels().size() == axes * 3; }));
+    ASSERT_TRUE(waitFor([&] { return client.subscribedChannels().size() == axes * 3; }));
     EXPECT_EQ(client.subscribedRateHz(), TelemetryHub::kDefaultRateHz);
     for (int k = 0; k < 100; ++k) {
         link.host().advance(0.01);
         QCoreApplication::processEvents();
     }
-    historyWaitFor([] { return false; }, 20);
+    waitFor([] { return false; }, 20);
     for (int a = 0; a < axes; ++a)
         for (ChannelKind kind : HistoryRecorder::recordedKinds()) {
             const ChannelKey key{0, href(a, kind)};
@@ -370,16 +345,16 @@ TEST_F(TelemetryHistoryTest, HistoryNeverCostsAScreenItsRateOnASlowLink)
     hub.enableHistory();
     hub.addInstrument(0, QStringLiteral("Analyzer"), &client);
     client.connectLink();
-    ASSERT_TRUE(historyWaitFor([&] { return client.isReady(); }));
+    ASSERT_TRUE(waitFor([&] { return client.isReady(); }));
     // 3 channels at 500 Hz fit 115200 baud; 12 do not.
     const QVector<ChannelKey> wanted{ChannelKey{0, href(0, ChannelKind::Measured)}, ChannelKey{0, href(1, ChannelKind::Measured)},
                                      ChannelKey{0, href(2, ChannelKind::Measured)}};
     hub.setWanted(QStringLiteral("plot"), wanted, 500);
-    ASSERT_TRUE(historyWaitFor([&] { return client.subscribedRateHz() == 500; }));
+    ASSERT_TRUE(waitFor([&] { return client.subscribedRateHz() == 500; }));
     EXPECT_EQ(client.subscribedChannels().size(), 3) << "the history's other channels were left out";
     EXPECT_TRUE(hub.historyHeldBack(0));
     hub.setWanted(QStringLiteral("plot"), {}, 0);
-    ASSERT_TRUE(historyWaitFor([&] { return client.subscribedChannels().size() == 12; }));
+    ASSERT_TRUE(waitFor([&] { return client.subscribedChannels().size() == 12; }));
     EXPECT_FALSE(hub.historyHeldBack(0));
     client.setTransport(nullptr);
 }

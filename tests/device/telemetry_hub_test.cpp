@@ -4,6 +4,7 @@
 // the link cannot carry falls back to the capacity the device states, the union of
 // every consumer's wants is what is subscribed, again after a reconnect. With
 // hand-made batches: losses, the window, pause, recording to CSV.
+#include "qt_event_loop.h"
 #include "device/english_words.h"
 #include "device/backends/benchpilot/benchpilot_client.h"
 #include "device/link/simulated_link.h"
@@ -30,35 +31,8 @@ using proto::ChannelRef;
 using tele::ChannelKey;
 using tele::TelemetryHub;
 
-/// The rest of test_device is plain C++: the application object is made on first use.
-void ensureApp()
-{
-    if (QCoreApplication::instance())
-        return;
-    static int argc = 1;
-    static char name[] = "test_device";
-    static char* argv[] = {name, nullptr};
-    static QCoreApplication* app = new QCoreApplication(argc, argv);
-    (void)app;
-}
-
-bool waitFor(const std::function<bool()>& done, int timeoutMs = 5000)
-{
-    if (done())
-        return true;
-    QEventLoop loop;
-    QTimer poll, limit;
-    QObject::connect(&poll, &QTimer::timeout, &loop, [&] {
-        if (done())
-            loop.quit();
-    });
-    QObject::connect(&limit, &QTimer::timeout, &loop, &QEventLoop::quit);
-    poll.start(1);
-    limit.setSingleShot(true);
-    limit.start(timeoutMs);
-    loop.exec();
-    return done();
-}
+using devtest::ensureApp;
+using devtest::waitFor;
 
 void spin(int ms) { waitFor([] { return false; }, ms); }
 
