@@ -407,7 +407,7 @@ void RecipeRunner::sendMove(const MachineMove& planned)
     for (const auto& t : targets)
         m_waitMask = static_cast<quint8>(m_waitMask | (1u << t.first));
     m_moveSentUs = m_client->status().deviceTimeUs;
-    m_moveTimer.start(static_cast<int>(std::lround(m.durationS * kMoveTimeFactor * 1000)) + kMoveGraceMs);
+    m_moveTimer.start(kMoveCheckMs);
     // The client keeps the callback until the device answers, which may be after
     // this runner is gone (a window closed mid-run): it must not reach a dead runner.
     const QPointer<RecipeRunner> self(this);
@@ -521,7 +521,7 @@ void RecipeRunner::onMoveTimeout()
     // simulator running slower or faster than the wall clock is judged by its own time.
     const double budgetUs = (m_inFlight->durationS * kMoveTimeFactor + kMoveGraceMs / 1000.0) * 1e6;
     if (m_client->isReady() && static_cast<double>(m_client->status().deviceTimeUs - std::min(m_moveSentUs, m_client->status().deviceTimeUs)) < budgetUs) {
-        m_moveTimer.start(500);
+        m_moveTimer.start(kMoveCheckMs);
         return;
     }
     // A MotionDone can be lost on a noisy link (events are not retransmitted):
@@ -544,7 +544,33 @@ void RecipeRunner::onMoveTimeout()
         moveArrived();
         return;
     }
-    stopRun(msg::make("recipe.run.move_timeout", {msg::term("move", moveTerm(m.kind)), opArg(m_op)}));
+    // What the device last said goes in the log beside the stop: a timeout on a line that
+    // works is rare enough that whoever reads the log needs the evidence, not a guess.
+    jsonio::Value seen = jsonio::Value::object();
+    seen.set("replied", m_replied);
+    seen.set("ready", m_client->isReady());
+    seen.set("device_s_since_sent", static_cast<double>(st.deviceTimeUs - std::min(m_moveSentUs, st.deviceTimeUs)) / 1e6);
+    seen.set("budget_s", budgetUs / 1e6);
+    jsonio::Value axes = jsonio::Value::object();
+    for (int i = 0; i < st.axes.size() && i < m_client->identity().axes.size(); ++i) {
+        jsonio::Value a = jsonio::Value::object();
+        a.set("commanded", st.axes[i].commanded);
+        a.set("measured", st.axes[i].measured);
+        a.set("moving", st.axes[i].moving);
+        axes.set(QString(m_client->identity().axes[i].letter).toStdString(), std::move(a));
+    }
+    seen.set("axes", std::move(axes));
+    jsonio::Value want = jsonio::Value::object();
+    if (m.kind == MoveKind::Raise || m.kind == MoveKind::Lower)
+        want.set("Z", m.zMm);
+    else if (m.kind == MoveKind::Pump)
+        want.set("P", m_pumpUl + m.pumpDeltaUl);
+    else {
+        want.set("X", m.xMm);
+        want.set("Y", m.yMm);
+    }
+    seen.set("expected", std::move(want));
+    stopRun(msg::make("recipe.run.move_timeout", {msg::term("move", moveTerm(m.kind)), opArg(m_op)}), std::move(seen));
 }
 
 void RecipeRunner::onLinkState(dev::LinkState s)
@@ -562,7 +588,7 @@ msg::Message RecipeRunner::linkLostMessage() const
     return msg::make("recipe.run.link_lost", {opArg(m_op)});
 }
 
-void RecipeRunner::stopRun(const msg::Message& reason)
+void RecipeRunner::stopRun(const msg::Message& reason, jsonio::Value detail)
 {
     m_moveTimer.stop();
     m_dwellTimer.stop();
@@ -573,6 +599,8 @@ void RecipeRunner::stopRun(const msg::Message& reason)
         jsonio::Value v = jsonio::Value::object();
         v.set("event", "stop");
         v.set("reason", reason.id);  // the id: a log is read in any language
+        if (detail.isObject())
+            v.set("device", std::move(detail));
         if (!m_log.write(v))
             m_log.close();
     }

@@ -95,6 +95,9 @@ public:
     /// the status decides whether the move arrived.
     static constexpr double kMoveTimeFactor = 3.0;
     static constexpr int kMoveGraceMs = 3000;
+    /// The budget is looked at this often (wall clock), so a simulator faster than the
+    /// wall clock is judged when its own clock has spent it, not seconds later.
+    static constexpr int kMoveCheckMs = 250;
 
 signals:
     void stateChanged(jobs::RunState state);
@@ -117,7 +120,7 @@ private:
     void onEvent(const dev::DeviceEvent& e);
     void onLinkState(dev::LinkState s);
     void onMoveTimeout();
-    void stopRun(const msg::Message& reason);
+    void stopRun(const msg::Message& reason, jsonio::Value detail = {});
     msg::Message linkLostMessage() const;
     /// The op's label as the `op` argument ("the run" when none is under way).
     msg::Arg opArg(int op) const;

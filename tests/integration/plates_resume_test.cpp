@@ -219,3 +219,85 @@ TEST(PlateRunLink, AMotionDoneLostOnTheLinkIsMadeGoodByTheStatus)
         << allNotes();
     client.setTransport(nullptr);
 }
+
+// A move that never arrives (here the device stopped it, its Stopped and MotionDone lost on
+// the line) stops the run when its budget is spent, and the log says what the device last
+// reported: the evidence for a timeout nobody scripted.
+TEST(PlateRunLink, AMoveThatNeverArrivesStopsWithTheDevicesLastWordsInTheLog)
+{
+    dev::LoopbackPair pair(0);
+    dev::SimulatorHost host(sim::analyzerConfig(), 0, pair.end(dev::LoopbackPair::B));
+    host.start();
+    TapTransport hostEnd(pair.end(dev::LoopbackPair::A));
+    dev::BenchPilotClient client;
+    client.setTransport(&hostEnd);
+    client.connectLink();
+    ASSERT_TRUE(waitFor([&] { return client.isReady(); }, 5000));
+    host.setTimeScale(kRunTimeScale);
+    client.home(0, [&](const auto&) {});
+    ASSERT_TRUE(waitFor(
+        [&] {
+            for (const auto& a : client.status().axes)
+                if (!a.homed || a.moving)
+                    return false;
+            return client.status().axes.size() == 4;
+        },
+        20000));
+    bool stopped = false;
+    hostEnd.dropReceived = [&](const proto::Frame& f) {
+        if (!stopped || f.type != static_cast<std::uint8_t>(proto::MsgType::Event))
+            return false;
+        const auto e = proto::decodeEvent(f.payload);
+        return e && (e->kind == proto::EventKind::MotionDone || e->kind == proto::EventKind::Stopped);
+    };
+    RecipeRunner runner(&client);
+    QObject::connect(&client, &dev::Instrument::statusChanged, &runner, [&](const dev::InstrumentStatus& st) {
+        if (!stopped && runner.state() == RunState::Running && st.anyMoving()) {
+            stopped = true;
+            client.stop(0);
+        }
+    });
+    std::vector<msg::Message> problems;
+    QObject::connect(&runner, &RecipeRunner::message, &runner, [&](const msg::Message& m, bool problem) {
+        if (problem)
+            problems.push_back(m);
+    });
+    QTemporaryDir dir;
+    const QString logPath = dir.filePath(QStringLiteral("run.jsonl"));
+    msg::Message error;
+    ASSERT_TRUE(runner.setPlan(planFor(samplingRecipe("A1:A2"), client), QStringLiteral("two"), &error));
+    ASSERT_TRUE(runner.start(logPath, &error)) << error;
+    ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Finished || runner.state() == RunState::Stopped; },
+                        RecipeRunner::kMoveGraceMs + 20000));
+    ASSERT_TRUE(stopped);
+    EXPECT_EQ(runner.state(), RunState::Stopped);
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_EQ(problems.front().id, "recipe.run.move_timeout");
+
+    QFile f(logPath);
+    ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+    const QByteArray text = f.readAll();
+    const auto state = platefiles::readRunLog(text.toStdString());
+    EXPECT_TRUE(state.problems.empty()) << text.toStdString();
+    EXPECT_EQ(state.lastStop, "recipe.run.move_timeout");
+    const QList<QByteArray> lines = text.trimmed().split('\n');
+    const auto last = jsonio::parse(lines.back().toStdString());
+    ASSERT_TRUE(last);
+    const jsonio::Value* device = last.value->find("device");
+    ASSERT_TRUE(device && device->isObject()) << lines.back().toStdString();
+    EXPECT_TRUE(device->find("replied")->asBool());
+    EXPECT_GE(device->find("device_s_since_sent")->asNumber(), device->find("budget_s")->asNumber());
+    // The device's word against the plan's: the stopped axis short of its target.
+    const jsonio::Value* expected = device->find("expected");
+    const jsonio::Value* axes = device->find("axes");
+    ASSERT_TRUE(expected && axes && !expected->members().empty());
+    bool short_ = false;
+    for (const auto& m : expected->members()) {
+        const jsonio::Value* a = axes->find(m.key);
+        ASSERT_TRUE(a) << m.key;
+        EXPECT_FALSE(a->find("moving")->asBool());
+        short_ = short_ || std::abs(a->find("commanded")->asNumber() - m.value.asNumber()) > 1e-3;
+    }
+    EXPECT_TRUE(short_) << lines.back().toStdString();
+    client.setTransport(nullptr);
+}

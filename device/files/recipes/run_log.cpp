@@ -66,7 +66,7 @@ RunLogState readRunLog(std::string_view text)
         } else if (event && !header) {
             local.add(v, "event", msg::make("file.log.no_header_first"));
         } else if (event) {
-            o.refuseUnknown({"event", "op", "time", "kind", "step", "plate", "well", "station", "volume_ul", "p_ul", "reason"});
+            o.refuseUnknown({"event", "op", "time", "kind", "step", "plate", "well", "station", "volume_ul", "p_ul", "reason", "device"});
             o.string("time", false);
             const bool perOp = *event == "start" || *event == "pump" || *event == "done" || *event == "skip" || *event == "redo";
             long long opIndex = -1;
