@@ -119,6 +119,9 @@ void MessageBanner::display(const Entry& e)
         : e.level == Level::Warning              ? "background:#fff4d6; color:#6b4b00; border:1px solid #e8cf8a;"
                                                  : "background:#e4effd; color:#173d6b; border:1px solid #a9c6ec;";
     setStyleSheet(QStringLiteral("#messageBanner { %1 border-radius:4px; }").arg(QLatin1String(style)));
+    // With nothing to say the box gives its width away (the connections' identities use it)
+    // and keeps its height, so a message that comes or goes moves no control.
+    setMaximumWidth(e.text.isEmpty() ? 0 : QWIDGETSIZE_MAX);
     // Errors wait for the operator; lesser news steps aside by itself.
     if (e.text.isEmpty() || e.level == Level::Error)
         m_fade.stop();

@@ -40,6 +40,7 @@
 #include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScreen>
 #include <QScrollArea>
 #include <QMenu>
 #include <QMenuBar>
@@ -245,7 +246,15 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
         buildLanguageMenu();
     retranslateUi();
 
-    resize(1400, 860);
+    // A first start on a laptop: the preferred size must not put E-STOP past the screen's
+    // edge. A screen smaller than it gets the window maximized (the window manager then
+    // allows for its frame and panels) and sized to the screen where no manager does.
+    // Tests and screenshots size their window themselves.
+    const QSize preferred(1400, 860);
+    const QSize room = screen() && m_options.persistSettings ? screen()->availableGeometry().size() : preferred;
+    resize(preferred.boundedTo(room));
+    if (preferred.boundedTo(room) != preferred)
+        setWindowState(windowState() | Qt::WindowMaximized);
     ui::ConnectionChoice choices[2];
     if (m_options.persistSettings)
         loadSettings();

@@ -3,11 +3,14 @@
 // screens down ~37 px and pulled them back when they faded).
 #include "gui_window.h"
 
+#include "widgets/common/elided_label.h"
+#include "widgets/connection_bar.h"
 #include "widgets/jog_screen.h"
 #include "widgets/message_banner.h"
 
 #include <QApplication>
 #include <QLayout>
+#include <QPushButton>
 
 #include <gtest/gtest.h>
 
@@ -47,6 +50,41 @@ TEST(TrustBanner, ControlsStayPutWhileMessagesComeAndGo)
     settle(&w);
     EXPECT_FALSE(b->hasMessage());
     EXPECT_EQ(inWindow(jog, &w), before) << "dismissing moved the Jog screen back";
+}
+
+// At 1366 px the connections' identities had some 40 px ("read…") while an empty message
+// box kept half the row: with nothing to say the box gives its width away; a message takes
+// it back from the identities, and no button moves either way.
+TEST(TrustBanner, AnEmptyMessageBoxLeavesItsRoomToTheConnectionsIdentities)
+{
+    app::MainWindow w(guitest::testWindowOptions());
+    w.resize(1366, 708);
+    w.show();
+    settle(&w);
+    const auto bars = w.findChildren<ui::ConnectionBar*>();
+    ASSERT_EQ(bars.size(), 2);
+    auto identity = [](ui::ConnectionBar* bar) { return bar->findChild<ui::ElidedLabel*>(); };
+    auto buttons = [&] {
+        std::vector<QRect> out;
+        for (ui::ConnectionBar* bar : bars)
+            for (QPushButton* b : bar->findChildren<QPushButton*>())
+                out.push_back(inWindow(b, &w));
+        return out;
+    };
+    ASSERT_TRUE(identity(bars[0]));
+    const auto before = buttons();
+    EXPECT_FALSE(w.banner()->hasMessage());
+    // "ready — BenchPilot analyzer manipulator (simulated)" and more: the state and the model whole.
+    EXPECT_GT(identity(bars[0])->width(), 450) << identity(bars[0])->fullText().toStdString();
+
+    w.banner()->show(ui::MessageBanner::Level::Error, QStringLiteral("Stage: link lost. Reconnect when the cable is back."));
+    settle(&w);
+    EXPECT_GT(w.banner()->width(), 300) << "a message needs its room back";
+    EXPECT_EQ(buttons(), before) << "a message moved a connection's button";
+    w.banner()->dismiss();
+    settle(&w);
+    EXPECT_EQ(buttons(), before) << "a dismissed message moved a connection's button";
+    EXPECT_GT(identity(bars[0])->width(), 450);
 }
 
 TEST(TrustBanner, ErrorsStayUntilReadAndCountTheirRepeats)

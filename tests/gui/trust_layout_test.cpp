@@ -86,6 +86,11 @@ TEST(TrustLayout, TheConnectionBarsIdentityIsElidedWithItsWholeTextInTheTooltip)
     int elided = 0;
     const auto bars = w->findChildren<ui::ConnectionBar*>();
     ASSERT_EQ(bars.size(), 2);
+    // A GRBL board names itself at length (build options, a profile's file name): longer
+    // than the row's room even with no message beside it.
+    bars[1]->showState(dev::LinkState::Ready, QStringLiteral("GRBL 1.1h ['$' for help] · [OPT:VNMHL,15,128] · profile "
+                                                             "lab-3-bench-left-microscope-stage-2026-11-calibrated.machine.json · /dev/ttyUSB0 @ 115200 baud"));
+    guitest::pump(50);
     for (ui::ConnectionBar* bar : bars) {
         QLabel* identity = nullptr;
         for (QLabel* l : bar->findChildren<QLabel*>())
