@@ -104,6 +104,24 @@ protected:
 
 } // namespace
 
+// Found driving the screen under Xvfb: a drag from A1's centre to H3's centre took A1:G2.
+// Only wells whose centres lay inside the rectangle counted, and the release point, where
+// no move had been reported, was not the drag's end.
+TEST_F(PlatesScreenTest, ADragFromInsideOneWellToInsideAnotherTakesBothAndTheBlockBetween)
+{
+    ui::PlateMap* map = screen->plateMap();
+    const QPointF a = map->wellCenter({0, 0}) + QPointF(1, 1);
+    const QPointF b = map->wellCenter({7, 2}) - QPointF(1, 1);
+    mouse(map, QEvent::MouseButtonPress, a, Qt::LeftButton);
+    mouse(map, QEvent::MouseMove, (a + b) / 2, Qt::LeftButton);  // the last move reported: about D2
+    mouse(map, QEvent::MouseButtonRelease, b, Qt::NoButton);
+    std::set<plates::WellId> want;
+    for (int row = 0; row < 8; ++row)
+        for (int col = 0; col < 3; ++col)
+            want.insert({row, col});
+    EXPECT_EQ(map->selection(), want) << map->selection().size() << " wells";
+}
+
 TEST_F(PlatesScreenTest, DragSelectsWellsAndTheirStepRunsOnTheSimulator)
 {
     fastHomedAnalyzer();

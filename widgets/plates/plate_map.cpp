@@ -124,11 +124,18 @@ std::optional<plates::WellId> PlateMap::wellAt(const QPointF& pos) const
 
 std::set<plates::WellId> PlateMap::wellsIn(const QRectF& r) const
 {
+    // Every well the rectangle touches: a drag from inside one well to inside another
+    // takes both and the block between, wherever in them the pointer was pressed and let go.
     std::set<plates::WellId> out;
-    const QRectF n = r.normalized();
-    for (const plates::Well& w : m_labware.wells)
-        if (n.contains(toWidget(w.xMm, w.yMm)))
+    const QRectF n(toPlate(r.normalized().topLeft()), toPlate(r.normalized().bottomRight()));
+    for (const plates::Well& w : m_labware.wells) {
+        const double dx = std::max({n.left() - w.xMm, 0.0, w.xMm - n.right()});
+        const double dy = std::max({n.top() - w.yMm, 0.0, w.yMm - n.bottom()});
+        const bool touched = w.shape == plates::WellShape::Circular ? std::hypot(dx, dy) <= w.diameterMm / 2
+                                                                      : dx <= w.sizeXMm / 2 && dy <= w.sizeYMm / 2;
+        if (touched)
             out.insert(w.id);
+    }
     return out;
 }
 
@@ -245,17 +252,27 @@ void PlateMap::mouseMoveEvent(QMouseEvent* e)
     if (!m_dragging && (m_dragTo - *m_pressAt).manhattanLength() < kDragPx)
         return;
     m_dragging = true;
+    selectDragged();
+    update();
+}
+
+void PlateMap::selectDragged()
+{
     std::set<plates::WellId> sel = m_dragBase;
     for (const auto& id : wellsIn(QRectF(*m_pressAt, m_dragTo)))
         sel.insert(id);
     setSelection(sel);
-    update();
 }
 
 void PlateMap::mouseReleaseEvent(QMouseEvent* e)
 {
     if (e->button() != Qt::LeftButton || !m_pressAt)
         return;
+    if (m_dragging && e->position() != m_dragTo) {
+        // Where the button came up ends the drag, even when no move was reported there.
+        m_dragTo = e->position();
+        selectDragged();
+    }
     if (!m_dragging) {
         const auto w = wellAt(e->position());
         std::set<plates::WellId> sel = (e->modifiers() & Qt::ControlModifier) ? m_selection : std::set<plates::WellId>{};

@@ -68,6 +68,7 @@ private:
     QPointF origin() const;
     QPointF toWidget(double xMm, double yMm) const;
     QPointF toPlate(const QPointF& p) const;
+    void selectDragged();  ///< the drag's rectangle, with the wells held by Ctrl
     std::set<plates::WellId> wellsIn(const QRectF& widgetRect) const;
     void setHover(const QString& text);
 
