@@ -74,6 +74,10 @@ RecipeRunner::RecipeRunner(dev::Instrument* client, QObject* parent) : QObject(p
     // share one ordered stream, so a MotionDone that was not lost came before them.
     auto restReadings = std::make_shared<std::pair<int, int>>(-1, 0);  // move serial, readings at rest
     connect(client, &dev::Instrument::statusChanged, this, [this, restReadings](const dev::InstrumentStatus& st) {
+        if (m_budgetStartPending && m_replied) {
+            m_moveSentUs = st.deviceTimeUs;
+            m_budgetStartPending = false;
+        }
         if (!active(m_state) || !m_inFlight || m_inFlight->kind == MoveKind::Dwell || !m_replied || m_waitMask == 0)
             return;
         if (restReadings->first != m_moveSerial)
@@ -380,6 +384,7 @@ void RecipeRunner::sendMove(const MachineMove& planned)
     }
     m_inFlight = m;
     m_replied = false;
+    m_budgetStartPending = false;
     const int serial = ++m_moveSerial;
     if (m.kind == MoveKind::Dwell) {
         m_dwellTimer.start(static_cast<int>(std::lround(m.seconds * 1000)));
@@ -423,6 +428,12 @@ void RecipeRunner::sendMove(const MachineMove& planned)
             return;
         }
         m_replied = true;
+        // The budget runs from the device's yes: a request repeated through a noisy line
+        // reaches the device late, and on a sped-up simulator each wall-clock retry costs
+        // that many times more of the device's clock. The status in hand may be older still
+        // (its polls are repeated too); the first one that comes after the answer was
+        // taken after the move began, so its clock starts the budget.
+        m_budgetStartPending = true;
         if (m_waitMask == 0)
             moveArrived();
     });
@@ -520,6 +531,12 @@ void RecipeRunner::onMoveTimeout()
     // The budget is counted on the device's clock (the status carries it), so a
     // simulator running slower or faster than the wall clock is judged by its own time.
     const double budgetUs = (m_inFlight->durationS * kMoveTimeFactor + kMoveGraceMs / 1000.0) * 1e6;
+    // Unanswered, the move is the client's to settle: it repeats the request until the
+    // device answers, or fails it (and the run stops for the link) when the device is silent.
+    if (m_client->isReady() && (!m_replied || m_budgetStartPending)) {
+        m_moveTimer.start(kMoveCheckMs);
+        return;
+    }
     if (m_client->isReady() && static_cast<double>(m_client->status().deviceTimeUs - std::min(m_moveSentUs, m_client->status().deviceTimeUs)) < budgetUs) {
         m_moveTimer.start(kMoveCheckMs);
         return;
@@ -549,7 +566,7 @@ void RecipeRunner::onMoveTimeout()
     jsonio::Value seen = jsonio::Value::object();
     seen.set("replied", m_replied);
     seen.set("ready", m_client->isReady());
-    seen.set("device_s_since_sent", static_cast<double>(st.deviceTimeUs - std::min(m_moveSentUs, st.deviceTimeUs)) / 1e6);
+    seen.set("device_s_since_answer", static_cast<double>(st.deviceTimeUs - std::min(m_moveSentUs, st.deviceTimeUs)) / 1e6);
     seen.set("budget_s", budgetUs / 1e6);
     jsonio::Value axes = jsonio::Value::object();
     for (int i = 0; i < st.axes.size() && i < m_client->identity().axes.size(); ++i) {

@@ -91,8 +91,8 @@ public:
     const std::vector<platefiles::OpState>& opStates() const { return m_opStates; }
     QString logPath() const { return m_log.path(); }
     /// The run's per-move watchdog: a MotionDone lost on the link is noticed after
-    /// the move's planned time × this + kMoveGraceMs on the device's clock, and
-    /// the status decides whether the move arrived.
+    /// the move's planned time × this + kMoveGraceMs on the device's clock, counted from
+    /// the device's answer to the move, and the status decides whether the move arrived.
     static constexpr double kMoveTimeFactor = 3.0;
     static constexpr int kMoveGraceMs = 3000;
     /// The budget is looked at this often (wall clock), so a simulator faster than the
@@ -160,7 +160,8 @@ private:
     std::string m_runInstrument;  ///< model and firmware the run was (re)started on
     std::optional<platefiles::RunLogState> m_logState;  ///< the log being resumed, while deciding
     QTimer m_moveTimer, m_dwellTimer;
-    quint64 m_moveSentUs = 0;  ///< device clock when the move in flight was sent
+    quint64 m_moveSentUs = 0;  ///< device clock of the first status after the move was answered (sent, until then)
+    bool m_budgetStartPending = false;  ///< answered, no status since
     QElapsedTimer m_clock;
     double m_elapsedBeforeS = 0;    ///< running time of earlier stretches
     double m_plannedDoneS = 0;      ///< planned time of ops closed in this session

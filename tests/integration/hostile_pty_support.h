@@ -141,6 +141,23 @@ inline void noteStop(Outcome& o, const char* what, const itest::ProgramRun& r)
     o.why += (o.why.empty() ? "" : ",") + std::string(what) + ":" + std::to_string(r.exitCode) + (said.empty() ? "" : ":" + said.substr(said.size() > 90 ? said.size() - 90 : 0));
 }
 
+/// What the run log's last stop says the device reported (recipe.run.move_timeout writes
+/// it), compacted for the outcome line; empty when the stop carries none.
+inline std::string stopEvidence(const QString& logPath)
+{
+    QFile f(logPath);
+    if (!f.open(QIODevice::ReadOnly))
+        return {};
+    const QList<QByteArray> lines = f.readAll().trimmed().split('\n');
+    const QJsonObject last = QJsonDocument::fromJson(lines.isEmpty() ? QByteArray() : lines.back()).object();
+    if (!last.contains(QStringLiteral("device")))
+        return {};
+    std::string s = QJsonDocument(last.value(QStringLiteral("device")).toObject()).toJson(QJsonDocument::Compact).toStdString();
+    for (char& c : s)
+        c = c == ' ' || c == ',' ? ';' : c;
+    return ":" + s;
+}
+
 /// Homes through the bad line, retrying as an operator would (a failed home is a stop).
 inline bool ptyHome(const QString& port, Outcome& o)
 {
@@ -234,6 +251,7 @@ inline Outcome ptyRecipe(double rate, std::uint64_t seed, const std::string& wel
         QString decision;  // the operator's word for a well cut mid-aspirate, read from the CLI's evidence
         for (int round = 0; round < 12 && !finished; ++round) {
             noteStop(o, "run", r);
+            o.why += stopEvidence(log);
             itest::spin(400);  // as an operator would: a pulled cable is back after bp-faultline's 300 ms
             QStringList args{QStringLiteral("recipe"), QStringLiteral("run"), recipe};
             args << (QFileInfo::exists(log) ? QStringLiteral("--resume") : QStringLiteral("--log")) << log;

@@ -286,7 +286,7 @@ TEST(PlateRunLink, AMoveThatNeverArrivesStopsWithTheDevicesLastWordsInTheLog)
     const jsonio::Value* device = last.value->find("device");
     ASSERT_TRUE(device && device->isObject()) << lines.back().toStdString();
     EXPECT_TRUE(device->find("replied")->asBool());
-    EXPECT_GE(device->find("device_s_since_sent")->asNumber(), device->find("budget_s")->asNumber());
+    EXPECT_GE(device->find("device_s_since_answer")->asNumber(), device->find("budget_s")->asNumber());
     // The device's word against the plan's: the stopped axis short of its target.
     const jsonio::Value* expected = device->find("expected");
     const jsonio::Value* axes = device->find("axes");
