@@ -39,6 +39,7 @@
 #include <deque>
 #include <fcntl.h>
 #include <memory>
+#include <sys/prctl.h>
 #include <sys/socket.h>
 #include <termios.h>
 #include <unistd.h>
@@ -292,6 +293,9 @@ bool parseRange(const QString& text, int* lo, int* hi)
 
 int main(int argc, char** argv)
 {
+    // A test tool: when the campaign that started it dies, so does it, instead of holding
+    // a simulator's pty for the rest of the session.
+    ::prctl(PR_SET_PDEATHSIG, SIGTERM);
     QCoreApplication app(argc, argv);
     QCommandLineParser p;
     p.setApplicationDescription(QStringLiteral("A fault-injecting pty proxy between a host and benchpilot-sim."));
