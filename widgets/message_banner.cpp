@@ -1,5 +1,7 @@
 #include "widgets/message_banner.h"
 
+#include "widgets/wording/wording.h"
+
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -67,10 +69,11 @@ QStringList MessageBanner::texts() const
     return out;
 }
 
-void MessageBanner::show(Level level, const QString& text)
+void MessageBanner::show(Level level, const QString& message)
 {
-    if (text.isEmpty())
+    if (message.isEmpty())
         return;
+    const QString text = words::sentence(message);
     if (hasMessage() && text == m_shown.text) {
         ++m_shown.count;
         m_shown.level = std::max(m_shown.level, level);

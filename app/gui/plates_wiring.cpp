@@ -21,7 +21,7 @@ jobs::InterruptedChoice askAboutInterrupted(QWidget* window, const jobs::Interru
     QMessageBox box(QMessageBox::Warning, QObject::tr("A well was interrupted"),
                     QObject::tr("The run stopped during \"%1\", after its plunger move had been sent.\n\n%2.\n\n"
                                 "Skip counts the well as done; Do again repeats it in full.")
-                        .arg(words::text(op.label), words::text(op.evidence)),
+                        .arg(words::text(op.label), words::sentence(words::text(op.evidence))),
                     QMessageBox::NoButton, window);
     auto* skip = box.addButton(QObject::tr("Skip"), QMessageBox::AcceptRole);
     auto* redo = box.addButton(QObject::tr("Do again"), QMessageBox::DestructiveRole);

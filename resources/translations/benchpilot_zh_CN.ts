@@ -6712,10 +6712,6 @@ Keep that log aside and start this test afresh?</source>
         <translation>从运行日志继续提前结束的运行（如程序崩溃、线缆被拔出）：已完成的孔不会重做</translation>
     </message>
     <message>
-        <source>Plan (dry run: nothing moves)</source>
-        <translation>计划（空运行：不会有任何运动）</translation>
-    </message>
-    <message>
         <source>#</source>
         <translation>#</translation>
     </message>
@@ -6782,6 +6778,10 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Abort the run? The analyzer stops at once and raises the tip; the wells not done yet stay undone (the run log can resume them later).</source>
         <translation>中止运行？分析仪立即停止并抬起加样针；尚未完成的孔保持未完成（之后可从运行日志继续）。</translation>
+    </message>
+    <message>
+        <source>Plan: what the run does, op by op</source>
+        <translation>计划：运行逐项执行的操作</translation>
     </message>
 </context>
 <context>

@@ -68,7 +68,7 @@ RunPanel::RunPanel(jobs::RecipeRunner* runner, QWidget* parent) : QWidget(parent
     v->addWidget(m_current);
     v->addWidget(m_times);
 
-    auto* planBox = new QGroupBox(tr("Plan (dry run: nothing moves)"), this);
+    auto* planBox = new QGroupBox(tr("Plan: what the run does, op by op"), this);
     auto* pv = new QVBoxLayout(planBox);
     m_summary = new QLabel(planBox);
     m_summary->setWordWrap(true);
@@ -105,7 +105,7 @@ RunPanel::RunPanel(jobs::RecipeRunner* runner, QWidget* parent) : QWidget(parent
     connect(m_runner, &jobs::RecipeRunner::stateChanged, this, &RunPanel::refresh);
     connect(m_runner, &jobs::RecipeRunner::progressChanged, this, &RunPanel::refresh);
     connect(m_runner, &jobs::RecipeRunner::message, this, [this](const msg::Message& m, bool problemText) {
-        auto* item = new QListWidgetItem(QStringLiteral("%1  %2").arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), words::text(m)), m_messages);
+        auto* item = new QListWidgetItem(QStringLiteral("%1  %2").arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), words::sentence(words::text(m))), m_messages);
         if (problemText)
             item->setForeground(QColor(0xc6, 0x28, 0x28));
         m_messages->scrollToBottom();

@@ -162,6 +162,13 @@ QString term(const std::string& id)
     return QString::fromStdString(id);
 }
 
+QString sentence(const QString& text)
+{
+    if (text.isEmpty() || !text.front().isLower())
+        return text;
+    return text.front().toUpper() + text.mid(1);
+}
+
 QString text(const msg::Message& m)
 {
     if (m.empty())

@@ -19,6 +19,10 @@ namespace words {
 /// QCoreApplication). An id no area knows comes back as msg::debugString, so
 /// nothing is lost; tests/gui's pseudo-translation check and the id tests catch it.
 QString text(const msg::Message& m);
+/// `text` as a sentence standing on its own (a banner, a dialog, a log line): its first
+/// letter a capital. Sentences are worded to be embedded ("… stopped: the link to …"),
+/// so they start in lower case; Chinese is unchanged.
+QString sentence(const QString& text);
 
 /// One argument as text: a number in the current locale with its unit symbol (the
 /// unit's precision), a Verbatim as it is, a Term worded by term(), a nested
