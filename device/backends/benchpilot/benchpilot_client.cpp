@@ -98,6 +98,9 @@ void BenchPilotClient::connectLink()
     m_rttVarMs = 0;
     m_retried.clear();
     m_recentEventCount = m_recentEventNext = 0;
+    // The device's sample counter ran on while the link was down: what it numbered then
+    // was never sent, not lost on the wire.
+    m_haveSampleIndex = false;
     setState(LinkState::Connecting);
     m_transport->open();
 }
