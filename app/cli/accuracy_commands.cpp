@@ -235,7 +235,7 @@ int circle(Invocation& inv)
     // only if the device does not stream them).
     QObject::connect(instrument, &dev::Instrument::telemetryReceived, &runner,
                      [&](const proto::TelemetryBatch& b) { jobs::feedCircleBatch(runner, *instrument, b); });
-    session->wantTelemetry(jobs::circleChannels(runner), 250);
+    session->wantTelemetry(jobs::circleChannels(runner), jobs::kCircleSampleRateHz);
     msg::Message why;
     if (!runner.start(&why))
         return reportFailure(inv, why, Refused);

@@ -3,9 +3,11 @@
 #include "instrument_session.h"
 #include "main_window.h"
 
+#include "device/jobs/accuracy/circle_telemetry.h"
 #include "device/link/serial_transport.h"
 #include "device/link/simulated_gauge.h"
 #include "device/link/simulated_link.h"
+#include "device/telemetry/telemetry_hub.h"
 #include "widgets/calibration/calibration_screen.h"
 #include "widgets/message_banner.h"
 
@@ -16,7 +18,7 @@
 namespace app {
 
 ui::CalibrationScreen* makeCalibrationScreen(InstrumentSession* const sessions[2], QWidget* window, ui::MessageBanner* banner,
-                                             const MainWindowOptions& options)
+                                             tele::TelemetryHub* hub, const MainWindowOptions& options)
 {
     auto* screen = new ui::CalibrationScreen({sessions[0]->instrument(), sessions[1]->instrument()}, {sessions[0]->name(), sessions[1]->name()});
     screen->setFileChooser([window](ui::CalibrationScreen::FileAction a, const QString& title, const QString& filter) {
@@ -43,6 +45,17 @@ ui::CalibrationScreen* makeCalibrationScreen(InstrumentSession* const sessions[2
             return (new dev::SimulatedGauge(link->machine(), axis, {}, owner))->hostEnd();
         }
         return new dev::SerialTransport(port, 9600, owner);
+    });
+    // A circle is sampled from the instrument's measured X and Y; the history streams them
+    // at 100 Hz, so for the run the hub is asked for the test's own rate (the union of every
+    // consumer's wants is what the device sends), and the wish ends with the run.
+    QObject::connect(screen, &ui::CalibrationScreen::circleRunStarting, hub, [hub](jobs::CircleRunner* runner, int index) {
+        QVector<tele::ChannelKey> keys;
+        for (const proto::ChannelRef& ref : jobs::circleChannels(*runner))
+            keys.push_back(tele::ChannelKey{index, ref});
+        hub->setWanted(QStringLiteral("circular test"), keys, jobs::kCircleSampleRateHz);
+        QObject::connect(runner, &jobs::CircleRunner::finished, hub, [hub] { hub->setWanted(QStringLiteral("circular test"), {}, 0); });
+        QObject::connect(runner, &QObject::destroyed, hub, [hub] { hub->setWanted(QStringLiteral("circular test"), {}, 0); });
     });
     QObject::connect(screen, &ui::CalibrationScreen::problem, banner, [banner](const QString& m) { banner->show(ui::MessageBanner::Level::Warning, m); });
     QObject::connect(screen, &ui::CalibrationScreen::notice, banner, [banner](const QString& m) { banner->show(ui::MessageBanner::Level::Info, m); });

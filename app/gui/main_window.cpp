@@ -207,7 +207,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     connect(m_scan, &ui::ScanScreen::problem, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); });
     connect(m_scan, &ui::ScanScreen::notice, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Info, m); });
     addScreen(QStringLiteral("scan"), tr("Scan"), m_scan);
-    m_calibration = makeCalibrationScreen(m_sessions, this, m_banner, m_options);
+    m_calibration = makeCalibrationScreen(m_sessions, this, m_banner, m_hub, m_options);
     addScreen(QStringLiteral("calibration"), tr("Calibration"), m_calibration);
     connect(m_nav, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
     m_nav->setCurrentRow(0);

@@ -6,6 +6,7 @@
 #include "app/gui/instrument_session.h"
 #include "app/gui/main_window.h"
 #include "device/jobs/accuracy/accuracy_runner.h"
+#include "device/jobs/accuracy/circle_telemetry.h"
 #include "device/link/simulated_link.h"
 #include "gui_window.h"
 #include "widgets/calibration/calibration_screen.h"
@@ -224,9 +225,21 @@ TEST_F(CalibrationScreenTest, ACircularTestIsSampledFromTheStagesTelemetry)
     t.samplesPerRevolution = 360;
     screen->form()->setTest(t);
     pump(20);
+    dev::Instrument* stage = w->stage()->instrument();
+    const int historyRate = stage->subscribedRateHz();
     ASSERT_TRUE(screen->run());
-    ASSERT_TRUE(waitFor([&] { return screen->circleRunner() && !screen->circleRunner()->isActive(); }, 60000));
+    // For the run the stage streams at the test's own rate, not the history's.
+    int runRate = 0;
+    ASSERT_TRUE(waitFor(
+        [&] {
+            runRate = std::max(runRate, stage->subscribedRateHz());
+            return screen->circleRunner() && !screen->circleRunner()->isActive();
+        },
+        60000));
     ASSERT_EQ(screen->circleRunner()->state(), jobs::CircleRunner::State::Finished);
+    EXPECT_EQ(runRate, jobs::kCircleSampleRateHz) << "history streams at " << historyRate << " Hz";
+    EXPECT_LT(historyRate, jobs::kCircleSampleRateHz);
+    EXPECT_TRUE(waitFor([&] { return stage->subscribedRateHz() == historyRate; }, 5000)) << "the run's rate outlived it";
     ASSERT_EQ(screen->circleRunner()->runs().size(), 2u);
     for (const auto& run : screen->circleRunner()->runs())
         EXPECT_EQ(run.samplesMm.size(), 360u);
