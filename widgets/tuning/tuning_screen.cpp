@@ -146,7 +146,10 @@ TuningScreen::TuningScreen(tele::TelemetryHub* hub, QWidget* parent) : QWidget(p
         refreshReady();
     });
 
-    connect(m_target, &QComboBox::currentIndexChanged, this, [this] { onTargetChosen(); });
+    connect(m_target, &QComboBox::currentIndexChanged, this, [this] {
+        m_targetPicked = true;
+        onTargetChosen();
+    });
     connect(m_plant, &QLineEdit::editingFinished, this, [this] {
         if (const Choice* c = choice(); c && c->instrument < 0)
             setModelPlant(m_plant->text());
@@ -533,7 +536,9 @@ void TuningScreen::restoreState(const QVariantMap& m)
     o.method = m.value(QStringLiteral("method")).toString() == QLatin1String("relay") ? TuningMethod::Relay : TuningMethod::UltimateGain;
     m_zn->setOptions(o);
     m_tabs->setCurrentIndex(m.value(QStringLiteral("tab"), 0).toInt());
-    selectTarget(m.value(QStringLiteral("target")).toString());
+    // The instrument saved may not have answered yet: its axis is taken when it does.
+    m_savedTarget = m.value(QStringLiteral("target")).toString();
+    selectTarget(m_savedTarget);
 }
 
 void TuningScreen::showEvent(QShowEvent* event)

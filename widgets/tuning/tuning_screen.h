@@ -111,6 +111,10 @@ private:
     void onFinished(bool ok, const QString& text);
     void updateLiveWant();
     bool m_deviceTestRunning = false;
+    /// The operator (or a script, or saved settings) picked the target: a rebuilt list keeps it.
+    /// Until then the first instrument axis is taken as soon as one is there.
+    bool m_targetPicked = false;
+    QString m_savedTarget;  ///< from the settings, taken when it is offered
     int m_ownGainChanges = 0;  ///< SET_GAINS of ours not yet announced back by the device
     void drawLive();
     void refreshReady();

@@ -107,7 +107,7 @@ void TuningScreen::rebuildTargets()
         return;
     if (m_runner->busy())
         return;  // the target list settles once the run has ended
-    const QString was = currentTarget();
+    const QString was = m_targetPicked ? currentTarget() : m_savedTarget;
     m_choices = next;
     QSignalBlocker block(m_target);
     m_target->clear();
@@ -126,6 +126,7 @@ bool TuningScreen::selectTarget(const QString& name)
     const int i = m_target->findText(name);
     if (i < 0 || m_runner->busy())
         return false;
+    m_targetPicked = true;
     if (i == m_target->currentIndex())
         return true;
     m_target->setCurrentIndex(i);
