@@ -536,9 +536,7 @@ QString PlotsScreen::historyText() const
         spanS = std::max(spanS, m_hub->historySpanS(i));
         heldBack = heldBack || m_hub->historyHeldBack(i);
     }
-    const int s = static_cast<int>(spanS);
-    const QString span = s >= 60 ? tr("%1 min %2 s").arg(s / 60).arg(s % 60) : tr("%1 s").arg(s);
-    QString text = tr("last %1 recorded").arg(span);
+    QString text = tr("last %1 recorded").arg(words::duration(std::floor(spanS)));
     if (heldBack)
         text += tr(" (plotted channels only: the link carries no more)");
     return text;

@@ -4258,18 +4258,6 @@ Keep that log aside and start this test afresh?</source>
         <translation>补偿文件 (*.compensation.json)</translation>
     </message>
     <message>
-        <source>%1 s</source>
-        <translation>%1 s</translation>
-    </message>
-    <message>
-        <source>%1 min %2 s</source>
-        <translation>%1 min %2 s</translation>
-    </message>
-    <message>
-        <source>%1 h %2 min</source>
-        <translation>%1 h %2 min</translation>
-    </message>
-    <message>
         <source>A test is running: the test on screen stays until it has finished or been aborted.</source>
         <translation>测试正在运行：屏幕上的测试会保留，直到它完成或被中止。</translation>
     </message>
@@ -5500,14 +5488,6 @@ Keep that log aside and start this test afresh?</source>
 <context>
     <name>ui::PatternScreen</name>
     <message>
-        <source>%1 s</source>
-        <translation>%1 s</translation>
-    </message>
-    <message>
-        <source>%1 min %2 s</source>
-        <translation>%1 min %2 s</translation>
-    </message>
-    <message>
         <source>Instrument</source>
         <translation>仪器</translation>
     </message>
@@ -6153,14 +6133,6 @@ Keep that log aside and start this test afresh?</source>
         <translation>已将 %1 行记录到 %2</translation>
     </message>
     <message>
-        <source>%1 min %2 s</source>
-        <translation>%1 min %2 s</translation>
-    </message>
-    <message>
-        <source>%1 s</source>
-        <translation>%1 s</translation>
-    </message>
-    <message>
         <source>last %1 recorded</source>
         <translation>已记录最近 %1</translation>
     </message>
@@ -6659,18 +6631,6 @@ Keep that log aside and start this test afresh?</source>
 </context>
 <context>
     <name>ui::RunPanel</name>
-    <message>
-        <source>%1 s</source>
-        <translation>%1 s</translation>
-    </message>
-    <message>
-        <source>%1 min %2 s</source>
-        <translation>%1 min %2 s</translation>
-    </message>
-    <message>
-        <source>%1 h %2 min</source>
-        <translation>%1 h %2 min</translation>
-    </message>
     <message>
         <source>Run</source>
         <translation>运行</translation>
@@ -7282,18 +7242,6 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Polygon: %1</source>
         <translation>多边形：%1</translation>
-    </message>
-    <message>
-        <source>%1 h %2 min</source>
-        <translation>%1 h %2 min</translation>
-    </message>
-    <message>
-        <source>%1 min %2 s</source>
-        <translation>%1 min %2 s</translation>
-    </message>
-    <message>
-        <source>%1 s</source>
-        <translation>%1 s</translation>
     </message>
     <message>
         <source>No tiles: fix the plan below</source>
@@ -9694,6 +9642,21 @@ A loop this different may oscillate or run away. Apply them?</source>
         <source>no history recorded yet: connect an instrument first</source>
         <comment>telemetry.history_empty</comment>
         <translation>尚未记录任何历史：请先连接仪器</translation>
+    </message>
+</context>
+<context>
+    <name>words::Durations</name>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation>%1 h %2 min</translation>
     </message>
 </context>
 <context>

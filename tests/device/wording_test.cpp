@@ -30,6 +30,21 @@ TEST(Wording, NumbersCarryTheirUnitsPrecision)
     EXPECT_EQ(words::number(0.0004, msg::Unit::Mm), QStringLiteral("0.0004 mm"));
 }
 
+// One rule for every screen (the five each had their own) and for sentences with seconds:
+// the 96-well run's banner said "about 173.00 s".
+TEST(Wording, DurationsReadLikeAPersonWouldSayThem)
+{
+    LocaleGuard c(QLocale::c());
+    EXPECT_EQ(words::duration(4.24), QStringLiteral("4.2 s"));
+    EXPECT_EQ(words::duration(42.4), QStringLiteral("42 s"));
+    EXPECT_EQ(words::duration(75), QStringLiteral("1 min 15 s"));
+    EXPECT_EQ(words::duration(173), QStringLiteral("2 min 53 s"));
+    EXPECT_EQ(words::duration(3 * 3600 + 125), QStringLiteral("3 h 02 min"));
+    EXPECT_EQ(words::duration(-1), QStringLiteral("—"));
+    EXPECT_EQ(words::number(173, msg::Unit::S), QStringLiteral("2 min 53 s"));
+    EXPECT_EQ(words::number(12.5, msg::Unit::S), QStringLiteral("12.50 s"));
+}
+
 TEST(Wording, NumbersFollowTheLocale)
 {
     LocaleGuard de(QLocale(QLocale::German, QLocale::Germany));

@@ -263,9 +263,3 @@ TEST_F(ScanScreenTest, EscapeOnTheMapIsStillTheEStop)
     ASSERT_TRUE(waitFor([&] { return !stage->status().estop; }, 3000));
 }
 
-TEST_F(ScanScreenTest, DurationsReadLikeAPersonWouldSayThem)
-{
-    EXPECT_EQ(ui::ScanScreen::duration(4.24), QStringLiteral("4.2 s"));
-    EXPECT_EQ(ui::ScanScreen::duration(75), QStringLiteral("1 min 15 s"));
-    EXPECT_EQ(ui::ScanScreen::duration(3 * 3600 + 125), QStringLiteral("3 h 02 min"));
-}

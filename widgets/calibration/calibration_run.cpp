@@ -34,6 +34,8 @@
 
 namespace ui {
 
+using words::duration;
+
 using motion::metrology::AxisTest;
 using motion::metrology::CircularTest;
 

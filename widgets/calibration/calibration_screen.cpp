@@ -455,16 +455,5 @@ QString CalibrationScreen::choose(FileAction action, const QString& title, const
 
 bool CalibrationScreen::confirm(const QString& question) { return !m_confirm || m_confirm(question); }
 
-QString CalibrationScreen::duration(double seconds)
-{
-    if (!(seconds >= 0) || !std::isfinite(seconds))
-        return QStringLiteral("—");
-    const long s = std::lround(seconds);
-    if (s < 60)
-        return tr("%1 s").arg(s);
-    if (s < 3600)
-        return tr("%1 min %2 s").arg(s / 60).arg(s % 60);
-    return tr("%1 h %2 min").arg(s / 3600).arg((s % 3600) / 60);
-}
 
 } // namespace ui

@@ -137,7 +137,6 @@ private:
     void writeReport();
     QString choose(FileAction action, const QString& title, const QString& filter);
     bool confirm(const QString& question);
-    static QString duration(double seconds);
 
     QVector<dev::Instrument*> m_instruments;
     QStringList m_names;

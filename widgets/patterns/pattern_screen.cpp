@@ -29,16 +29,7 @@ namespace ui {
 
 using jobs::PatternRunner;
 
-namespace {
-QString duration(double s)
-{
-    if (!(s >= 0) || !std::isfinite(s))
-        return QStringLiteral("—");
-    if (s < 60)
-        return PatternScreen::tr("%1 s").arg(s, 0, 'f', 1);
-    return PatternScreen::tr("%1 min %2 s").arg(static_cast<int>(s) / 60).arg(static_cast<int>(s) % 60);
-}
-} // namespace
+using words::duration;
 
 PatternScreen::PatternScreen(QVector<PatternInstrument> instruments, tele::TelemetryHub* hub, QWidget* parent)
     : QWidget(parent), m_instruments(std::move(instruments)), m_hub(hub)

@@ -487,7 +487,7 @@ bool PlatesScreen::runRecipe()
                          "(Pause, Abort, or Esc for the E-stop). Start?")
                           .arg(name)
                           .arg(plan.ops.size())
-                          .arg(RunPanel::duration(plan.totalTimeS))
+                          .arg(words::duration(plan.totalTimeS))
                           .arg(deepest)))
         return false;
     QString safe = name;

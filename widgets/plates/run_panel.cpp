@@ -21,15 +21,7 @@ namespace ui {
 
 using jobs::RunState;
 
-QString RunPanel::duration(double seconds)
-{
-    const long s = std::lround(std::max(0.0, seconds));
-    if (s < 60)
-        return tr("%1 s").arg(s);
-    if (s < 3600)
-        return tr("%1 min %2 s").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'));
-    return tr("%1 h %2 min").arg(s / 3600).arg((s % 3600) / 60, 2, 10, QLatin1Char('0'));
-}
+using words::duration;
 
 RunPanel::RunPanel(jobs::RecipeRunner* runner, QWidget* parent) : QWidget(parent), m_runner(runner)
 {

@@ -27,7 +27,6 @@ public:
     void setPlan(const plates::RecipePlan& plan, bool runnable, const QString& why);
 
     /// "2 min 53 s", "48 s", "1 h 05 min".
-    static QString duration(double seconds);
     /// Rows of the plan table at most (the totals cover every well).
     static constexpr int kMaxPlanRows = 5000;
 

@@ -29,6 +29,8 @@
 
 namespace ui {
 
+using words::duration;
+
 using namespace motion::scan;
 using jobs::ScanRunner;
 
@@ -336,17 +338,6 @@ void ScanScreen::replan()
     updateRunUi();
 }
 
-QString ScanScreen::duration(double s)
-{
-    if (!(s >= 0) || !std::isfinite(s))
-        return QStringLiteral("–");
-    const long total = std::lround(s);
-    if (total >= 3600)
-        return tr("%1 h %2 min").arg(total / 3600).arg((total % 3600) / 60, 2, 10, QLatin1Char('0'));
-    if (total >= 60)
-        return tr("%1 min %2 s").arg(total / 60).arg(total % 60, 2, 10, QLatin1Char('0'));
-    return tr("%1 s").arg(s < 10 ? QString::number(s, 'f', 1) : QString::number(total));
-}
 
 QString ScanScreen::summaryText() const
 {

@@ -70,8 +70,6 @@ public:
     QString summaryText() const;
     QString problemsText() const;
 
-    static QString duration(double seconds);
-
 signals:
     void problem(const QString& message);
     void notice(const QString& message);

@@ -3,6 +3,7 @@
 #include "widgets/wording/areas.h"
 #include "widgets/wording/translators.h"
 
+#include <QCoreApplication>
 #include <QLocale>
 
 #include <cmath>
@@ -114,10 +115,27 @@ QString unitSymbol(msg::Unit unit)
     return {};
 }
 
+QString duration(double seconds)
+{
+    if (!(seconds >= 0) || !std::isfinite(seconds))
+        return QStringLiteral("—");
+    const QLocale locale = englishOnly() ? QLocale::c() : QLocale();
+    const long long s = std::llround(seconds);
+    if (seconds < 10)
+        return QCoreApplication::translate("words::Durations", "%1 s").arg(locale.toString(seconds, 'f', 1));
+    if (s < 60)
+        return QCoreApplication::translate("words::Durations", "%1 s").arg(locale.toString(s));
+    if (s < 3600)
+        return QCoreApplication::translate("words::Durations", "%1 min %2 s").arg(locale.toString(s / 60)).arg(s % 60, 2, 10, QLatin1Char('0'));
+    return QCoreApplication::translate("words::Durations", "%1 h %2 min").arg(locale.toString(s / 3600)).arg((s % 3600) / 60, 2, 10, QLatin1Char('0'));
+}
+
 QString number(double v, msg::Unit unit)
 {
     if (!std::isfinite(v))
         return QString::number(v) + unitSymbol(unit);
+    if (unit == msg::Unit::S && v >= 60)
+        return duration(v);
     const QLocale locale = englishOnly() ? QLocale::c() : QLocale();
     const int decimals = decimalsOf(unit);
     QString digits;

@@ -30,6 +30,11 @@ QString sentence(const QString& text);
 QString arg(const msg::Message& m, const std::string& name);
 QString value(const msg::Arg& a);
 
+/// A span of time as people read it: "8.5 s", "42 s", "2 min 53 s", "1 h 05 min"; "—"
+/// when unknown (negative or not finite). Seconds from a minute on are read as minutes,
+/// so number() words every Unit::S value of a minute or more this way.
+QString duration(double seconds);
+
 /// A number as the locale writes it, with the unit's symbol and precision.
 QString number(double v, msg::Unit unit);
 /// " mm", " µm", "°", "": the SI symbol with its leading space (none for degrees).
