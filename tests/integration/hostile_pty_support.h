@@ -62,6 +62,18 @@ public:
     }
     QString port() const { return m_port; }
     QString error() const { return m_error; }
+    /// Whether the simulator and bp-faultline still run, and what they said on stderr last.
+    std::string health()
+    {
+        auto one = [](const char* name, QProcess& p) {
+            std::string s = std::string(name) + (p.state() == QProcess::Running ? "=running" : "=exited:" + std::to_string(p.exitCode()));
+            const QByteArray err = p.readAllStandardError().trimmed();
+            if (!err.isEmpty())
+                s += ":" + err.right(120).replace('\n', ' ').replace(',', ';').toStdString();
+            return s;
+        };
+        return one("sim", m_sim.process()) + ";" + one("line", m_line);
+    }
     QString dir() const { return m_dir.path(); }
     /// Pulls the cable now (bp-faultline puts it back after its --unplug-ms).
     void unplug() { ::kill(static_cast<pid_t>(m_line.processId()), SIGUSR1); }
@@ -159,13 +171,17 @@ inline std::string stopEvidence(const QString& logPath)
 }
 
 /// Homes through the bad line, retrying as an operator would (a failed home is a stop).
-inline bool ptyHome(const QString& port, Outcome& o)
+inline bool ptyHome(PtyLine& line, Outcome& o)
 {
     for (int i = 0; i < 6; ++i) {
-        const auto r = cliRun(port, {QStringLiteral("home")}, 60000);
+        const auto r = cliRun(line.port(), {QStringLiteral("home")}, 60000);
         if (r.exitCode == 0)
             return true;
         noteStop(o, "home", r);
+        // Twice in a session a home hung for its minute and the line carried nothing after:
+        // say which end was still there, for the next time it happens.
+        if (!r.finished)
+            o.why += ":hung(" + line.health() + ")";
         itest::spin(400);
     }
     return false;
@@ -240,7 +256,7 @@ inline Outcome ptyRecipe(double rate, std::uint64_t seed, const std::string& wel
         }
     }
     bool finished = false;
-    if (ptyHome(line.port(), o)) {
+    if (ptyHome(line, o)) {
         const QStringList common{QStringLiteral("--json"), QStringLiteral("--calibration"), QStringLiteral("none")};
         auto isFinished = [](const itest::ProgramRun& r) {
             return r.exitCode == 0 && itest::lastJson(r.out).value(QStringLiteral("event")).toString() == QLatin1String("finished");
@@ -350,7 +366,7 @@ inline Outcome ptyScan(double rate, std::uint64_t seed, double sideMm, const Cut
     };
     bool finished = false;
     const QStringList args{QStringLiteral("--json"), QStringLiteral("scan"), QStringLiteral("run"), plan, QStringLiteral("--out"), out, QStringLiteral("--yes")};
-    if (ptyHome(line.port(), o)) {
+    if (ptyHome(line, o)) {
         itest::ProgramRun r = firstRun(line, args, cut, [&] {
             const auto l = logged();
             return l ? static_cast<int>(l->records.size()) : 0;
@@ -414,7 +430,7 @@ inline Outcome ptyPattern(double rate, std::uint64_t seed, bool unplug)
     bool finished = false;
     // At the circle's start first, so the cut below lands in the pattern, not on the way to it.
     bool atStart = false;
-    if (ptyHome(line.port(), o))
+    if (ptyHome(line, o))
         for (int i = 0; i < 6 && !atStart; ++i) {
             const auto m = cliRun(line.port(), {QStringLiteral("move"), QStringLiteral("X=%1").arg(kCx + kR), QStringLiteral("Y=%1").arg(kCy)});
             atStart = m.exitCode == 0;
@@ -524,7 +540,7 @@ inline Outcome ptyTuningCut(double rate, std::uint64_t seed)
     }
     QJsonObject before, after;
     bool moving = true;
-    if (ptyHome(line.port(), o)) {
+    if (ptyHome(line, o)) {
         for (int i = 0; i < 6; ++i) {
             const auto m = cliRun(line.port(), {QStringLiteral("move"), QStringLiteral("X=50")});
             if (m.exitCode == 0)
