@@ -219,14 +219,21 @@ int CliSession::waitUntilStill(const QString& what)
     // Two fresh status polls after the request was accepted, so "not moving" is news, not history.
     int fresh = 0;
     auto c = connect(m_client, &dev::Instrument::statusChanged, this, [&fresh] { ++fresh; });
+    QString why;  // the client's own words for a lost link: silence, a vanished port, …
+    auto w = connect(m_client, &dev::Instrument::linkError, this, [&why](const msg::Message& m) {
+        if (why.isEmpty())
+            why = words::text(m);
+    });
     const bool still = spinUntil(
         [&] {
             return m_client->state() != dev::LinkState::Ready || (fresh >= 2 && !m_client->status().anyMoving());
         },
         static_cast<int>(m_opt.timeoutS * 1000));
     disconnect(c);
+    disconnect(w);
     if (m_client->state() != dev::LinkState::Ready) {
-        report(QCoreApplication::translate("cli", "%1: link lost while waiting").arg(what));
+        report(why.isEmpty() ? QCoreApplication::translate("cli", "%1: link lost while waiting").arg(what)
+                             : QCoreApplication::translate("cli", "%1: link lost while waiting: %2").arg(what, why));
         return LinkTrouble;
     }
     if (!still) {

@@ -2420,6 +2420,10 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <source>limit-switch</source>
         <translation>限位开关</translation>
     </message>
+    <message>
+        <source>%1: link lost while waiting: %2</source>
+        <translation>%1：等待期间连接中断：%2</translation>
+    </message>
 </context>
 <context>
     <name>cli::CliSession</name>
