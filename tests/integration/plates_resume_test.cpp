@@ -164,28 +164,40 @@ TEST_F(PlateResume, ALogThatDoesNotFitIsRefused)
     EXPECT_EQ(error.id, "recipe.run.log_finished") << error;
 }
 
+/// The analyzer's simulator behind a tap that can drop frames on their way in, homed,
+/// its clock at the runs' time scale.
+struct TappedAnalyzer {
+    dev::LoopbackPair pair{0};
+    dev::SimulatorHost host{sim::analyzerConfig(), 0, pair.end(dev::LoopbackPair::B)};
+    TapTransport hostEnd{pair.end(dev::LoopbackPair::A)};
+    dev::BenchPilotClient client;
+    ~TappedAnalyzer() { client.setTransport(nullptr); }
+    bool connectAndHome()
+    {
+        host.start();
+        client.setTransport(&hostEnd);
+        client.connectLink();
+        if (!waitFor([&] { return client.isReady(); }, 5000))
+            return false;
+        host.setTimeScale(kRunTimeScale);
+        client.home(0, [](const auto&) {});
+        return waitFor(
+            [&] {
+                for (const auto& a : client.status().axes)
+                    if (!a.homed || a.moving)
+                        return false;
+                return client.status().axes.size() == 4;
+            },
+            20000);
+    }
+};
+
 TEST(PlateRunLink, AMotionDoneLostOnTheLinkIsMadeGoodByTheStatus)
 {
-    dev::LoopbackPair pair(0);
-    dev::SimulatorHost host(sim::analyzerConfig(), 0, pair.end(dev::LoopbackPair::B));
-    host.start();
-    TapTransport hostEnd(pair.end(dev::LoopbackPair::A));
-    dev::BenchPilotClient client;
-    client.setTransport(&hostEnd);
-    client.connectLink();
-    ASSERT_TRUE(waitFor([&] { return client.isReady(); }, 5000));
-    host.setTimeScale(kRunTimeScale);
-    bool homed = false;
-    client.home(0, [&](const auto&) {});
-    homed = waitFor(
-        [&] {
-            for (const auto& a : client.status().axes)
-                if (!a.homed || a.moving)
-                    return false;
-            return client.status().axes.size() == 4;
-        },
-        20000);
-    ASSERT_TRUE(homed);
+    TappedAnalyzer rig;
+    ASSERT_TRUE(rig.connectAndHome());
+    dev::BenchPilotClient& client = rig.client;
+    TapTransport& hostEnd = rig.hostEnd;
     // From now on the first MotionDone of Z never arrives.
     int dropped = 0;
     hostEnd.dropReceived = [&](const proto::Frame& f) {
@@ -217,7 +229,6 @@ TEST(PlateRunLink, AMotionDoneLostOnTheLinkIsMadeGoodByTheStatus)
     EXPECT_EQ(runner.state(), RunState::Finished) << allNotes();
     EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const msg::Message& m) { return m.id == "recipe.run.motion_done_lost"; }))
         << allNotes();
-    client.setTransport(nullptr);
 }
 
 // A move that never arrives (here the device stopped it, its Stopped and MotionDone lost on
@@ -225,24 +236,10 @@ TEST(PlateRunLink, AMotionDoneLostOnTheLinkIsMadeGoodByTheStatus)
 // reported: the evidence for a timeout nobody scripted.
 TEST(PlateRunLink, AMoveThatNeverArrivesStopsWithTheDevicesLastWordsInTheLog)
 {
-    dev::LoopbackPair pair(0);
-    dev::SimulatorHost host(sim::analyzerConfig(), 0, pair.end(dev::LoopbackPair::B));
-    host.start();
-    TapTransport hostEnd(pair.end(dev::LoopbackPair::A));
-    dev::BenchPilotClient client;
-    client.setTransport(&hostEnd);
-    client.connectLink();
-    ASSERT_TRUE(waitFor([&] { return client.isReady(); }, 5000));
-    host.setTimeScale(kRunTimeScale);
-    client.home(0, [&](const auto&) {});
-    ASSERT_TRUE(waitFor(
-        [&] {
-            for (const auto& a : client.status().axes)
-                if (!a.homed || a.moving)
-                    return false;
-            return client.status().axes.size() == 4;
-        },
-        20000));
+    TappedAnalyzer rig;
+    ASSERT_TRUE(rig.connectAndHome());
+    dev::BenchPilotClient& client = rig.client;
+    TapTransport& hostEnd = rig.hostEnd;
     bool stopped = false;
     hostEnd.dropReceived = [&](const proto::Frame& f) {
         if (!stopped || f.type != static_cast<std::uint8_t>(proto::MsgType::Event))
@@ -299,5 +296,4 @@ TEST(PlateRunLink, AMoveThatNeverArrivesStopsWithTheDevicesLastWordsInTheLog)
         short_ = short_ || std::abs(a->find("commanded")->asNumber() - m.value.asNumber()) > 1e-3;
     }
     EXPECT_TRUE(short_) << lines.back().toStdString();
-    client.setTransport(nullptr);
 }
