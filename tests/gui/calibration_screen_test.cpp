@@ -211,6 +211,23 @@ TEST_F(CalibrationScreenTest, OpenIsHeldBackWhileATestRuns)
     EXPECT_TRUE(open->toolTip().isEmpty());
 }
 
+// Found in an Xvfb session: before the first reading the live plot spanned 0 … 5 mm for a
+// test of 10 … 90 mm. Between runs it spans the test on screen.
+TEST_F(CalibrationScreenTest, BetweenRunsTheLivePlotSpansTheTestOnScreen)
+{
+    auto* plot = screen->findChild<ui::DeviationPlot*>(QStringLiteral("calibrationLivePlot"));
+    ASSERT_NE(plot, nullptr);
+    motion::metrology::AxisTest t;
+    t.name = "preview";
+    t.grid = motion::metrology::TargetGrid{20, 140, 7, false};
+    screen->form()->setTest(t);
+    pump(20);
+    EXPECT_LT(plot->xAxis->range().lower, 20);
+    EXPECT_GT(plot->xAxis->range().lower, 15);
+    EXPECT_GT(plot->xAxis->range().upper, 140);
+    EXPECT_LT(plot->xAxis->range().upper, 145);
+}
+
 TEST_F(CalibrationScreenTest, ACircularTestIsSampledFromTheStagesTelemetry)
 {
     // The screen's instruments stream their measured positions for the telemetry history;

@@ -543,6 +543,15 @@ QString CalibrationScreen::figuresText() const
     return lines.join(QLatin1Char('\n'));
 }
 
+void CalibrationScreen::previewTargets()
+{
+    if ((m_runner && m_runner->isActive()) || (m_circle && m_circle->isActive()))
+        return;
+    const auto test = m_form->test();
+    if (const auto* axisTest = std::get_if<motion::metrology::AxisTest>(&test))
+        m_live->showTargets(motion::metrology::targetsOf(*axisTest));
+}
+
 void CalibrationScreen::updateRunUi()
 {
     dev::Instrument* inst = cur();

@@ -67,12 +67,14 @@ CalibrationScreen::CalibrationScreen(QVector<dev::Instrument*> instruments, cons
     connect(m_fit, &FitPanel::problem, this, &CalibrationScreen::problem);
     connect(m_fit, &FitPanel::notice, this, &CalibrationScreen::notice);
     connect(m_form, &AccuracyTestForm::changed, this, &CalibrationScreen::updateRunUi);
+    connect(m_form, &AccuracyTestForm::changed, this, &CalibrationScreen::previewTargets);
     for (dev::Instrument* i : m_instruments)
         if (i) {
             connect(i, &dev::Instrument::stateChanged, this, &CalibrationScreen::updateRunUi);
             connect(i, &dev::Instrument::identified, this, [this] { setInstrument(m_current); });
         }
     setInstrument(m_instruments.size() > 1 ? 1 : 0);
+    previewTargets();
     retranslateUi();
 }
 

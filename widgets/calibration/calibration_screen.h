@@ -133,6 +133,9 @@ private:
     void showBeforeAfter();
     void onManualWanted(const jobs::StopContext& stop);
     void updateRunUi();
+    /// Between runs the live plot spans the axis test on screen (found in an Xvfb session:
+    /// it showed 0 … 5 mm for a test of 10 … 90 mm until the first reading).
+    void previewTargets();
     void saveCompensation();
     void writeReport();
     QString choose(FileAction action, const QString& title, const QString& filter);

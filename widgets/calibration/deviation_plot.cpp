@@ -72,6 +72,18 @@ void DeviationPlot::clearAll()
     replot(QCustomPlot::rpQueuedReplot);
 }
 
+void DeviationPlot::showTargets(const std::vector<double>& targetsMm)
+{
+    for (QCPGraph* g : {m_upMean, m_upHi, m_upLo, m_downMean, m_downHi, m_downLo, m_upDots, m_downDots})
+        g->data()->clear();
+    if (targetsMm.empty())
+        return;
+    const auto [lo, hi] = std::minmax_element(targetsMm.begin(), targetsMm.end());
+    xAxis->setRange(*lo - (*hi - *lo) * 0.03 - 0.5, *hi + (*hi - *lo) * 0.03 + 0.5);
+    yAxis->setRange(-1, 1);
+    replot(QCustomPlot::rpQueuedReplot);
+}
+
 void DeviationPlot::setBefore(const std::optional<motion::metrology::Evaluation>& before)
 {
     m_before->data()->clear();

@@ -21,6 +21,9 @@ public:
     /// Means of an earlier run drawn behind (empty: none).
     void setBefore(const std::optional<motion::metrology::Evaluation>& before);
     void clearAll();
+    /// Before a run: nothing plotted, the target axis spans the test's targets (as the
+    /// run's readings will), so the plot shows where the readings are to come.
+    void showTargets(const std::vector<double>& targetsMm);
     void retranslateUi();
 
 protected:
