@@ -110,6 +110,8 @@ TEST_F(MotionScreensTest, ThePreviewShowsThePlanAndItsStepsWhenZoomedIn)
     }
     EXPECT_GT(p->preview()->pathPoints(), 100);
     EXPECT_EQ(p->preview()->walkPoints(), 0);  // the whole pattern in view: steps far below a pixel
+    // Before a run the contour-error plot spans the path (it showed 0 … 5 mm, an Xvfb session found).
+    EXPECT_NEAR(p->contour()->xAxis->range().upper, motion::path::pathLengthMm(plan), 1e-6);
     // Zoomed onto a few micrometres of the start, the walk's steps appear, each one step long.
     const auto s = plan.front().start;
     p->preview()->yAxis->setRange(s.y - 0.004, s.y + 0.004);

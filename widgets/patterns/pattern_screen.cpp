@@ -307,6 +307,12 @@ void PatternScreen::replan()
         return;
     }
     const double len = motion::path::pathLengthMm(m_path);
+    // Before a run the contour-error plot spans the path on screen, as the run's will (it
+    // showed 0 … 5 mm for a 31 mm circle); a run's trace stays until the next run.
+    if (m_contour->samples() == 0) {
+        m_contour->setPathLength(len);
+        m_contour->refresh();
+    }
     QString text = tr("%1 segments, %2 mm; estimated %3 at %4 mm/s")
                        .arg(m_path.size())
                        .arg(len, 0, 'f', 2)
