@@ -138,7 +138,7 @@ inline std::string lastLine(const QString& text)
     return lines.isEmpty() ? std::string() : lines.back().toStdString();
 }
 
-inline void noteStop(Outcome& o, const char* what, const itest::ProgramRun& r)
+inline void noteStop(Outcome& o, const char* what, const itest::ProgramRun& r, PtyLine* line = nullptr)
 {
     ++o.stops;
     // Why, by message id where the CLI said one (--json problem events), else its last words.
@@ -151,6 +151,11 @@ inline void noteStop(Outcome& o, const char* what, const itest::ProgramRun& r)
     for (char& c : said)
         c = c == ' ' || c == ',' ? '_' : c;
     o.why += (o.why.empty() ? "" : ",") + std::string(what) + ":" + std::to_string(r.exitCode) + (said.empty() ? "" : ":" + said.substr(said.size() > 90 ? said.size() - 90 : 0));
+    // A CLI that hung for its minute, or a line that answered nothing at all: which end was
+    // still there, once a run. A few runs a campaign end so (the line carries nothing after
+    // the first stop, at 0.3 % as at 1 %) and nothing else says why.
+    if (line && (!r.finished || r.err.contains(QStringLiteral("neither to a GRBL"))) && o.why.find("health(") == std::string::npos)
+        o.why += ":health(" + line->health() + ")";
 }
 
 /// What the run log's last stop says the device reported (recipe.run.move_timeout writes
@@ -177,11 +182,7 @@ inline bool ptyHome(PtyLine& line, Outcome& o)
         const auto r = cliRun(line.port(), {QStringLiteral("home")}, 60000);
         if (r.exitCode == 0)
             return true;
-        noteStop(o, "home", r);
-        // Twice in a session a home hung for its minute and the line carried nothing after:
-        // say which end was still there, for the next time it happens.
-        if (!r.finished)
-            o.why += ":hung(" + line.health() + ")";
+        noteStop(o, "home", r, &line);
         itest::spin(400);
     }
     return false;
@@ -266,7 +267,7 @@ inline Outcome ptyRecipe(double rate, std::uint64_t seed, const std::string& wel
         finished = isFinished(r);
         QString decision;  // the operator's word for a well cut mid-aspirate, read from the CLI's evidence
         for (int round = 0; round < 12 && !finished; ++round) {
-            noteStop(o, "run", r);
+            noteStop(o, "run", r, &line);
             o.why += stopEvidence(log);
             itest::spin(400);  // as an operator would: a pulled cable is back after bp-faultline's 300 ms
             QStringList args{QStringLiteral("recipe"), QStringLiteral("run"), recipe};
@@ -374,7 +375,7 @@ inline Outcome ptyScan(double rate, std::uint64_t seed, double sideMm, const Cut
         count(r);
         finished = r.exitCode == 0;
         for (int round = 0; round < 12 && !finished; ++round) {
-            noteStop(o, "scan", r);
+            noteStop(o, "scan", r, &line);
             itest::spin(400);
             r = cliRun(line.port(), args);
             count(r);
@@ -435,7 +436,7 @@ inline Outcome ptyPattern(double rate, std::uint64_t seed, bool unplug)
             const auto m = cliRun(line.port(), {QStringLiteral("move"), QStringLiteral("X=%1").arg(kCx + kR), QStringLiteral("Y=%1").arg(kCy)});
             atStart = m.exitCode == 0;
             if (!atStart)
-                noteStop(o, "move", m);
+                noteStop(o, "move", m, &line);
         }
     if (atStart) {
         QElapsedTimer since;
@@ -448,7 +449,7 @@ inline Outcome ptyPattern(double rate, std::uint64_t seed, bool unplug)
         result = itest::lastJson(r.out);
         finished = r.exitCode == 0 && result.value(QStringLiteral("complete")).toBool();
         if (!finished)
-            noteStop(o, "pattern", r);
+            noteStop(o, "pattern", r, &line);
         // Through damaged bytes alone a run stops only if the device fell silent: run it
         // again as an operator would (a pattern starts afresh), as often as the scan's loop.
         for (int round = 0; round < 6 && !finished && !unplug; ++round) {
@@ -457,7 +458,7 @@ inline Outcome ptyPattern(double rate, std::uint64_t seed, bool unplug)
             result = itest::lastJson(r.out);
             finished = r.exitCode == 0 && result.value(QStringLiteral("complete")).toBool();
             if (!finished)
-                noteStop(o, "pattern", r);
+                noteStop(o, "pattern", r, &line);
         }
     }
     Journal j;
@@ -545,7 +546,7 @@ inline Outcome ptyTuningCut(double rate, std::uint64_t seed)
             const auto m = cliRun(line.port(), {QStringLiteral("move"), QStringLiteral("X=50")});
             if (m.exitCode == 0)
                 break;
-            noteStop(o, "move", m);
+            noteStop(o, "move", m, &line);
         }
         before = ptyGains(line.port(), o);
         QElapsedTimer since;
@@ -559,7 +560,7 @@ inline Outcome ptyTuningCut(double rate, std::uint64_t seed)
                                              Cut{Cut::Unplug, 1}, [&] { return since.elapsed() > 2000 ? 1 : 0; }, o);
         o.end = r.exitCode == 0 ? "finished-before-the-cut" : "cut";
         if (r.exitCode != 0)
-            noteStop(o, "tune", r);
+            noteStop(o, "tune", r, &line);
         itest::spin(3500);  // the cable back
         after = ptyGains(line.port(), o);
         for (int i = 0; i < 6; ++i) {
@@ -621,7 +622,7 @@ inline Outcome ptyJog(double rate, std::uint64_t seed)
     o.end = unplug ? "unplugged" : "hung";
     const itest::ProgramRun r = itest::collectRun(p, p.waitForFinished(30000));
     if (r.exitCode != 0)
-        noteStop(o, "jog", r);
+        noteStop(o, "jog", r, &line);
     itest::spin(1000);  // a CLI whose port vanished ends at once: give the device's watchdog its time
     Journal j;
     std::vector<double> end;
