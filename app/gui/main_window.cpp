@@ -72,6 +72,30 @@ public:
         return need.boundedTo(QSize(kMostWidthPx, kMostHeightPx));
     }
 };
+
+/// Holds a screen in its scroll area without the screen's height-for-width. A screen with a
+/// word-wrapped label reports height-for-width, and QScrollArea then sizes it to its
+/// preferred height for the width, not its minimum: Tuning at 1366 × 768 scrolled by 90 px
+/// with room for all it needs (found in an Xvfb session). Here the screen fills the room and
+/// scrolls only when its minimum does not fit.
+class ScreenHolder : public QWidget {
+public:
+    explicit ScreenHolder(QWidget* screen) : m_screen(screen) { screen->setParent(this); }
+    QSize minimumSizeHint() const override { return m_screen->minimumSizeHint().expandedTo(m_screen->minimumSize()); }
+    QSize sizeHint() const override { return m_screen->sizeHint(); }
+
+protected:
+    void resizeEvent(QResizeEvent*) override { m_screen->setGeometry(rect()); }
+    bool event(QEvent* e) override
+    {
+        if (e->type() == QEvent::LayoutRequest)
+            updateGeometry();
+        return QWidget::event(e);
+    }
+
+private:
+    QWidget* m_screen;
+};
 } // namespace
 
 MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMainWindow(parent), m_options(options)
@@ -341,7 +365,7 @@ void MainWindow::addScreen(const QString& name, const QString& title, QWidget* s
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setFocusPolicy(Qt::NoFocus);
-    scroll->setWidget(screen);
+    scroll->setWidget(new ScreenHolder(screen));
     m_stack->addWidget(scroll);
 }
 

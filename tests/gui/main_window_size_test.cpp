@@ -6,6 +6,7 @@
 
 #include <QLayout>
 #include <QScrollArea>
+#include <QScrollBar>
 
 #include <gtest/gtest.h>
 
@@ -48,6 +49,15 @@ TEST_P(MainWindowSize, EveryScreenFitsA1366x768Display)
         // Empty, every screen fits without scrolling.
         const QSize shortBy = shortOfRoom(&w, name);
         EXPECT_EQ(shortBy, QSize(0, 0)) << name.toStdString() << " is short of " << shortBy.width() << " × " << shortBy.height() << " px";
+        // And the scroll area agrees: no scroll bar where the minimum fits. Tuning scrolled by
+        // 90 px with room to spare, its word-wrapped labels sizing it to its preferred height.
+        auto* scroll = w.findChild<QScrollArea*>(QStringLiteral("screenScroll_%1").arg(name));
+        guitest::pump(20);
+        if (shortBy == QSize(0, 0) && scroll) {
+            EXPECT_FALSE(scroll->verticalScrollBar()->isVisible()) << name.toStdString() << " scrolls: " << scroll->widget()->height() << " px in "
+                                                                   << scroll->viewport()->height();
+            EXPECT_FALSE(scroll->horizontalScrollBar()->isVisible()) << name.toStdString();
+        }
     }
 }
 
@@ -120,3 +130,26 @@ TEST_P(MainWindowSize, EveryScreenInItsBusyStatesFitsA1366x768DisplayWithEStopSh
 
 INSTANTIATE_TEST_SUITE_P(Languages, MainWindowSize, ::testing::Values("en", "zh_CN"),
                          [](const ::testing::TestParamInfo<const char*>& p) { return std::string(p.param[0] == 'e' ? "English" : "Chinese"); });
+
+// A screen held without its height-for-width still scrolls when what it needs grows past the
+// room (results shown, a long list), and stops when it shrinks back.
+TEST(MainWindowScroll, AScreenScrollsOnlyWhileItsMinimumDoesNotFit)
+{
+    auto w = guitest::openReadyWindow(QSize(1366, 768));
+    ASSERT_TRUE(w);
+    ASSERT_TRUE(w->showScreen(QStringLiteral("tuning")));
+    guitest::pump(100);
+    auto* scroll = w->findChild<QScrollArea*>(QStringLiteral("screenScroll_tuning"));
+    QWidget* screen = w->tuningScreen();
+    ASSERT_TRUE(scroll && screen);
+    EXPECT_FALSE(scroll->verticalScrollBar()->isVisible());
+    EXPECT_EQ(screen->height(), scroll->viewport()->height()) << "the screen fills its room";
+    screen->setMinimumHeight(scroll->viewport()->height() + 300);
+    guitest::pump(100);
+    EXPECT_TRUE(scroll->verticalScrollBar()->isVisible());
+    EXPECT_EQ(screen->height(), scroll->viewport()->height() + 300);
+    screen->setMinimumHeight(0);
+    guitest::pump(100);
+    EXPECT_FALSE(scroll->verticalScrollBar()->isVisible());
+    EXPECT_EQ(screen->height(), scroll->viewport()->height());
+}
