@@ -7945,10 +7945,6 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>未细化</translation>
     </message>
     <message>
-        <source>&lt;br&gt;Verification with %1: overshoot %2 %, %3</source>
-        <translation>&lt;br&gt;用 %1 验证：超调量 %2 %，%3</translation>
-    </message>
-    <message>
         <source>, &lt;b&gt;never inside ±5 µm&lt;/b&gt;</source>
         <translation>，&lt;b&gt;从未进入 ±5 µm 范围&lt;/b&gt;</translation>
     </message>
@@ -7967,6 +7963,18 @@ A loop this different may oscillate or run away. Apply them?</source>
     <message>
         <source>Source: %1</source>
         <translation>来源：%1</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>未测得</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Verification with %1: overshoot %2, %3</source>
+        <translation>&lt;br&gt;用 %1 验证：超调量 %2，%3</translation>
     </message>
 </context>
 <context>

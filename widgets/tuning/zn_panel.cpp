@@ -50,6 +50,7 @@ QDoubleSpinBox* ZnPanel::spin(const QString& objectName, double min, double max,
     s->setRange(min, max);
     s->setDecimals(decimals);
     s->setValue(value);
+    s->setMinimumHeight(s->sizeHint().height());  // a form short of room squeezes a spin box thin
     return s;
 }
 
@@ -155,6 +156,10 @@ ZnPanel::ZnPanel(QWidget* parent) : QWidget(parent)
     lv->addWidget(m_rules, 1);
     split->addWidget(upper);
     split->addWidget(lower);
+    // Short of room (a laptop, results shown), the rules table scrolls; the settings keep
+    // their height instead of being squeezed thin.
+    upper->setMinimumHeight(upper->minimumSizeHint().height());
+    split->setChildrenCollapsible(false);
     split->setStretchFactor(0, 1);
     split->setStretchFactor(1, 1);
 
@@ -252,8 +257,10 @@ void ZnPanel::showResult(const motion::control::TuningResult& r)
     if (r.verification) {
         const auto& v = *r.verification;
         const auto* rule = motion::control::findRule(v.rule);
-        text += tr("<br>Verification with %1: overshoot %2 %, %3")
-                    .arg(rule ? words::term(std::string("tuning.rule.") + rule->id) : QString::fromStdString(v.rule), ruleNumber(v.metrics.overshootPct), words::tuningOutcome(v.outcome));
+        // A metric the response did not give (a run cut short) is said so, never "nan %".
+        const QString overshoot = std::isfinite(v.metrics.overshootPct) ? tr("%1 %").arg(ruleNumber(v.metrics.overshootPct)) : tr("not measured");
+        text += tr("<br>Verification with %1: overshoot %2, %3")
+                    .arg(rule ? words::term(std::string("tuning.rule.") + rule->id) : QString::fromStdString(v.rule), overshoot, words::tuningOutcome(v.outcome));
         if (r.unit == "mm")
             text += v.settledInside5umS >= 0 ? tr(", inside ±5 µm of the target from %1 ms").arg(ruleNumber(v.settledInside5umS * 1000))
                                              : tr(", <b>never inside ±5 µm</b>");
