@@ -45,6 +45,17 @@ TEST(Wording, DurationsReadLikeAPersonWouldSayThem)
     EXPECT_EQ(words::number(12.5, msg::Unit::S), QStringLiteral("12.50 s"));
 }
 
+// Sentences are worded to be embedded; shown on their own (banner, run log, a question's
+// paragraph) they start with a capital. Seen lower-case in the Xvfb session.
+TEST(Wording, ASentenceShownOnItsOwnStartsWithACapital)
+{
+    EXPECT_EQ(words::sentence(QStringLiteral("the link to the analyzer was lost")), QStringLiteral("The link to the analyzer was lost"));
+    EXPECT_EQ(words::sentence(QStringLiteral("Analyzer: ready")), QStringLiteral("Analyzer: ready"));
+    EXPECT_EQ(words::sentence(QStringLiteral("分析仪连接中断")), QStringLiteral("分析仪连接中断"));
+    EXPECT_EQ(words::sentence(QStringLiteral("µL left")), QStringLiteral("µL left")) << "a unit's prefix is not a letter to capitalise";
+    EXPECT_EQ(words::sentence(QString()), QString());
+}
+
 TEST(Wording, NumbersFollowTheLocale)
 {
     LocaleGuard de(QLocale(QLocale::German, QLocale::Germany));

@@ -8,6 +8,8 @@
 
 #include "../device/pseudo_translation.h"
 
+#include <QCoreApplication>
+#include <QDoubleSpinBox>
 #include <QTableWidget>
 
 #include <gtest/gtest.h>
@@ -57,4 +59,47 @@ TEST(TuningTranslation, TheZnPanelShowsTheVerificationAndTheRuleSourcesTranslate
     }
     EXPECT_TRUE(rules->item(0, 0)->toolTip().contains(QStringLiteral("sééd 002 Táblé 1 (Zíéglér & Níchóls 1942)")))
         << rules->item(0, 0)->toolTip().toStdString();
+}
+
+// Seen in a Chinese screenshot: "超调量 nan %". A verification that did not settle in its band
+// has no overshoot to give, and says so.
+TEST(TuningTranslation, AVerificationWithoutAnOvershootSaysItWasNotMeasured)
+{
+    TuningResult r;
+    r.target = "Stage X";
+    r.method = "relay";
+    r.controlPeriodS = 0.001;
+    r.ku = 2;
+    r.tuS = 0.5;
+    r.runs = 2;
+    TuningResult::Verification v;
+    v.rule = "zn-pid";
+    v.outcome = motion::control::endReasonName(EndReason::Completed);
+    v.metrics.overshootPct = std::numeric_limits<double>::quiet_NaN();
+    r.verification = v;
+    ui::ZnPanel panel;
+    panel.showResult(r);
+    const QString text = panel.resultText();
+    EXPECT_TRUE(text.contains(QStringLiteral("overshoot not measured"))) << text.toStdString();
+    EXPECT_FALSE(text.contains(QStringLiteral("nan"), Qt::CaseInsensitive)) << text.toStdString();
+    r.verification->metrics.overshootPct = 12.5;
+    panel.showResult(r);
+    EXPECT_TRUE(panel.resultText().contains(QStringLiteral("overshoot 12.5 %"))) << panel.resultText().toStdString();
+}
+
+// Seen in the retaken screenshot at 1366 × 768: short of room, the panel squeezed its first
+// three spin boxes thin. They keep the height they need; the rules table takes the shortfall.
+TEST(ZnPanelLayout, ShortOfRoomTheSpinBoxesKeepTheirHeight)
+{
+    ui::ZnPanel panel;
+    panel.resize(800, 380);
+    panel.show();
+    QCoreApplication::processEvents();
+    const auto spins = panel.findChildren<QDoubleSpinBox*>();
+    ASSERT_GE(spins.size(), 3);
+    for (QDoubleSpinBox* s : spins) {
+        if (s->isVisible()) {
+            EXPECT_GE(s->height(), s->sizeHint().height()) << s->objectName().toStdString();
+        }
+    }
 }

@@ -182,7 +182,8 @@ QString term(const std::string& id)
 
 QString sentence(const QString& text)
 {
-    if (text.isEmpty() || !text.front().isLower())
+    // Latin letters only: "µL" starts with the micro sign, which upper-cases to a Greek Mu.
+    if (text.isEmpty() || !text.front().isLower() || text.front().script() != QChar::Script_Latin)
         return text;
     return text.front().toUpper() + text.mid(1);
 }
