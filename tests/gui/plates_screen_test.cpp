@@ -159,6 +159,17 @@ TEST_F(PlatesScreenTest, DragSelectsWellsAndTheirStepRunsOnTheSimulator)
     // The run log is where the screen said.
     EXPECT_FALSE(screen->runner()->logPath().isEmpty());
     EXPECT_TRUE(screen->runner()->logPath().startsWith(dir.path()));
+    // Its message lines start with a capital and are whole in their tooltips (a long log
+    // name was cut with "…" in Chinese).
+    auto* messages = screen->runPanel()->findChild<QListWidget*>(QStringLiteral("runMessages"));
+    ASSERT_NE(messages, nullptr);
+    ASSERT_GT(messages->count(), 0);
+    for (int i = 0; i < messages->count(); ++i) {
+        const QString line = messages->item(i)->text();
+        EXPECT_EQ(messages->item(i)->toolTip(), line);
+        const QString sentence = line.section(QStringLiteral("  "), 1);
+        EXPECT_TRUE(!sentence.isEmpty() && sentence.front().isUpper()) << line.toStdString();
+    }
 }
 
 TEST_F(PlatesScreenTest, ClickAndCtrlClickAndHoverShowCoordinatesAndVolume)

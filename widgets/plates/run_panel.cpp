@@ -76,6 +76,7 @@ RunPanel::RunPanel(jobs::RecipeRunner* runner, QWidget* parent) : QWidget(parent
     v->addWidget(planBox, 3);
 
     m_messages = new QListWidget(this);
+    m_messages->setObjectName(QStringLiteral("runMessages"));
     m_messages->setMaximumHeight(100);
     m_messages->setWordWrap(true);
     v->addWidget(m_messages, 1);
@@ -98,6 +99,7 @@ RunPanel::RunPanel(jobs::RecipeRunner* runner, QWidget* parent) : QWidget(parent
     connect(m_runner, &jobs::RecipeRunner::progressChanged, this, &RunPanel::refresh);
     connect(m_runner, &jobs::RecipeRunner::message, this, [this](const msg::Message& m, bool problemText) {
         auto* item = new QListWidgetItem(QStringLiteral("%1  %2").arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), words::sentence(words::text(m))), m_messages);
+        item->setToolTip(item->text());  // a line cut with "…" (a long log name) is whole here
         if (problemText)
             item->setForeground(QColor(0xc6, 0x28, 0x28));
         m_messages->scrollToBottom();
