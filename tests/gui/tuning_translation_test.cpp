@@ -28,7 +28,8 @@ TEST(TuningTranslation, OutcomesAndEndReasonsAreTranslatedByKey)
         << "a verification stores its end reason's name";
 }
 
-TEST(TuningTranslation, TheZnPanelShowsTheVerificationAndTheRuleSourcesTranslated)
+/// A relay result on the stage's X, verified with Ziegler–Nichols PID ending for `reason`.
+TuningResult relayResult(EndReason reason)
 {
     TuningResult r;
     r.target = "Stage X";
@@ -39,8 +40,14 @@ TEST(TuningTranslation, TheZnPanelShowsTheVerificationAndTheRuleSourcesTranslate
     r.runs = 3;
     TuningResult::Verification v;
     v.rule = "zn-pid";
-    v.outcome = motion::control::endReasonName(EndReason::Settled);
+    v.outcome = motion::control::endReasonName(reason);
     r.verification = v;
+    return r;
+}
+
+TEST(TuningTranslation, TheZnPanelShowsTheVerificationAndTheRuleSourcesTranslated)
+{
+    const TuningResult r = relayResult(EndReason::Settled);
 
     const i18ntest::PseudoTranslation translated({QStringLiteral("words::TuningWords"), QStringLiteral("ui::ZnPanel")});
     ui::ZnPanel panel;
@@ -65,18 +72,8 @@ TEST(TuningTranslation, TheZnPanelShowsTheVerificationAndTheRuleSourcesTranslate
 // has no overshoot to give, and says so.
 TEST(TuningTranslation, AVerificationWithoutAnOvershootSaysItWasNotMeasured)
 {
-    TuningResult r;
-    r.target = "Stage X";
-    r.method = "relay";
-    r.controlPeriodS = 0.001;
-    r.ku = 2;
-    r.tuS = 0.5;
-    r.runs = 2;
-    TuningResult::Verification v;
-    v.rule = "zn-pid";
-    v.outcome = motion::control::endReasonName(EndReason::Completed);
-    v.metrics.overshootPct = std::numeric_limits<double>::quiet_NaN();
-    r.verification = v;
+    TuningResult r = relayResult(EndReason::Completed);
+    r.verification->metrics.overshootPct = std::numeric_limits<double>::quiet_NaN();
     ui::ZnPanel panel;
     panel.showResult(r);
     const QString text = panel.resultText();
