@@ -64,7 +64,7 @@ QStringList EventLog::cellsOf(const Entry& e) const
         kind = term == "device.event.unknown" ? tr("event %1").arg(static_cast<int>(*e.event)) : words::term(term);
         // What the backend made of it (a GRBL alarm with its meaning) says more than the
         // device's own words ("ALARM:3"), and is worded in the language of the log.
-        const QString said = e.note.empty() ? e.deviceText : words::text(e.note);
+        const QString said = e.worded || !e.note.empty() ? words::text(e.note) : e.deviceText;
         details = said;
         if (e.position) {
             const QString at = e.segment ? tr("segment %1").arg(static_cast<qint64>(*e.position))
@@ -142,6 +142,7 @@ void EventLog::addEvent(const QString& instrument, const dev::DeviceIdentity& id
     e.event = ev.kind;
     e.deviceText = ev.text;
     e.note = ev.detail;
+    e.worded = ev.worded;
     if (ev.axis >= 0 && ev.axis < id.axes.size()) {
         const double shown = std::round(ev.position * 1000) / 1000;
         e.position = shown == 0 ? 0.0 : shown;

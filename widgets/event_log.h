@@ -50,6 +50,7 @@ private:
         bool segment = false;
         std::string kindTerm;                         ///< a note of a worded kind …
         QString kindText;                             ///< … or of a kind already in words
+        bool worded = false;                          ///< an event whose detail says all the device said
         msg::Message note;                            ///< a worded note, or an event's structured detail …
         QString noteText;                             ///< … or one already in words
         QColor color;

@@ -72,8 +72,8 @@ void CliSession::watchMotionErrors()
         using K = proto::EventKind;
         if (e.kind == K::LimitHit || e.kind == K::Fault || e.kind == K::EStop || e.kind == K::LostSteps
             || e.kind == K::JogExpired)
-            if (!m_motionErrors.contains(e.text))  // one line per distinct problem, however often it repeats
-                m_motionErrors << e.text;
+            if (const QString said = words::eventDetail(e); !m_motionErrors.contains(said))  // one line per distinct problem
+                m_motionErrors << said;
     });
 }
 

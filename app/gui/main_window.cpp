@@ -471,7 +471,8 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
     connect(c, &dev::Instrument::eventReceived, this, [this, s, c](const dev::DeviceEvent& e) {
         m_log->addEvent(s->kind(), c->identity(), e);
         if (e.kind == proto::EventKind::LimitHit || e.kind == proto::EventKind::Fault || e.kind == proto::EventKind::LostSteps)
-            m_banner->show(ui::MessageBanner::Level::Warning, QStringLiteral("%1: %2").arg(s->name(), e.text));
+            m_banner->show(ui::MessageBanner::Level::Warning,
+                           QStringLiteral("%1: %2").arg(s->name(), words::eventDetail(e)));
     });
     showState();
 }

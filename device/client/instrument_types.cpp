@@ -14,6 +14,13 @@ const char* linkStateTerm(LinkState s)
     return "link.state.disconnected";
 }
 
+msg::Arg eventDetail(const DeviceEvent& e, const char* name)
+{
+    if (e.worded || !e.detail.empty())
+        return msg::nested(name, e.detail);
+    return msg::verbatim(name, e.text.toStdString());
+}
+
 const char* linkStateKey(LinkState s)
 {
     // The term's last word: "link.state.ready" → "ready".

@@ -92,7 +92,11 @@ struct DeviceEvent {
     QString text;
     QDateTime hostTime;
     msg::Message detail;      ///< structured form of `text` where the backend has one (GRBL: grbl.alarm{code})
+    bool worded = false;      ///< `detail` says all the device said, even when empty (its reason was one this host knows)
 };
+/// The event's detail as a message argument called `name`: its worded form, or the
+/// device's own text where the backend has none.
+msg::Arg eventDetail(const DeviceEvent& e, const char* name = "detail");
 
 /// How the link has fared, for the status bar. A backend fills what applies to it
 /// (a line protocol has no CRC errors; the counters it cannot know stay 0).

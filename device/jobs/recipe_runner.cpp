@@ -507,7 +507,7 @@ void RecipeRunner::onEvent(const dev::DeviceEvent& e)
         return;
     }
     if (e.kind == K::LostSteps || e.kind == K::Fault) {
-        stopRun(msg::make("recipe.run.fault", {msg::term("event", proto::eventKindTerm(e.kind)), msg::verbatim("detail", e.text.toStdString())}));
+        stopRun(msg::make("recipe.run.fault", {msg::term("event", proto::eventKindTerm(e.kind)), dev::eventDetail(e)}));
         return;
     }
     if (!m_inFlight || e.axis < 0 || !(m_waitMask & (1u << e.axis)))
@@ -519,7 +519,7 @@ void RecipeRunner::onEvent(const dev::DeviceEvent& e)
     } else if (e.kind == K::Stopped || e.kind == K::LimitHit || e.kind == K::JogExpired) {
         if (m_state == RunState::Aborting)
             return;
-        stopRun(msg::make("recipe.run.event_during", {msg::term("event", proto::eventKindTerm(e.kind)), msg::verbatim("detail", e.text.toStdString()),
+        stopRun(msg::make("recipe.run.event_during", {msg::term("event", proto::eventKindTerm(e.kind)), dev::eventDetail(e),
                                                       opArg(m_op)}));
     }
 }

@@ -458,7 +458,7 @@ void ScanRunner::onEvent(const dev::DeviceEvent& e)
     case EventKind::Fault:
     case EventKind::LostSteps:
         if (e.axis <= 1)
-            stopWith(msg::make("scan.run.stage_event", {msg::term("event", proto::eventKindTerm(e.kind)), msg::verbatim("detail", e.text.toStdString()),
+            stopWith(msg::make("scan.run.stage_event", {msg::term("event", proto::eventKindTerm(e.kind)), dev::eventDetail(e),
                                                         tileArg(currentTile())}),
                      false);
         return;

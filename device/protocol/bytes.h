@@ -18,6 +18,12 @@ public:
     void u32(std::uint32_t v) { raw(v, 4); }
     void u64(std::uint64_t v) { raw(v, 8); }
     void i32(std::int32_t v) { u32(static_cast<std::uint32_t>(v)); }
+    void f64(double v)
+    {
+        std::uint64_t u;
+        std::memcpy(&u, &v, sizeof u);
+        u64(u);
+    }
     /// Short string: u8 length then bytes, cut to at most 255 bytes. The cut
     /// never splits a UTF-8 sequence (messages carry "µL", "×", "…").
     void str(const std::string& s)
@@ -52,6 +58,13 @@ public:
     std::uint32_t u32() { return static_cast<std::uint32_t>(raw(4)); }
     std::uint64_t u64() { return raw(8); }
     std::int32_t i32() { return static_cast<std::int32_t>(u32()); }
+    double f64()
+    {
+        const std::uint64_t u = u64();
+        double v;
+        std::memcpy(&v, &u, sizeof v);
+        return v;
+    }
     std::string str()
     {
         const std::size_t n = u8();

@@ -3,6 +3,8 @@
 #include "device/protocol/bytes.h"
 #include "device/protocol/frame_codec.h"
 
+#include <cmath>
+
 namespace proto {
 
 int popcount8(std::uint8_t mask)
@@ -282,6 +284,12 @@ Bytes encode(const EventMsg& m)
     w.u64(m.deviceTimeUs);
     w.i32(m.position);
     w.str(m.text);
+    if (m.reason) {
+        w.u8(m.reason->code);
+        w.u8(static_cast<std::uint8_t>(m.reason->values.size()));
+        for (double v : m.reason->values)
+            w.f64(v);
+    }
     return b;
 }
 
@@ -555,6 +563,19 @@ std::optional<EventMsg> decodeEvent(const Bytes& p)
     m.deviceTimeUs = r.u64();
     m.position = r.i32();
     m.text = r.str();
+    if (r.ok() && r.remaining() > 0) {
+        EventReason why;
+        why.code = r.u8();
+        const std::size_t n = r.u8();
+        if (why.code == 0 || n > kMaxEventReasonValues)
+            return std::nullopt;
+        for (std::size_t i = 0; i < n; ++i) {
+            why.values.push_back(r.f64());
+            if (!std::isfinite(why.values.back()))
+                return std::nullopt;
+        }
+        m.reason = std::move(why);
+    }
     return finish(r, std::move(m));
 }
 

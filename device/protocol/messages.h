@@ -141,6 +141,7 @@ struct AxisInfo {
 /// host that reads the reply's extension blocks (docs/protocol.md, "HELLO").
 enum HelloFlag : std::uint8_t {
     HelloReadsExtensions = 1u << 0,  ///< append the extension blocks to the reply
+    HelloReadsEventReasons = 1u << 1,  ///< append each EVENT's reason (event_reasons.h) this session
 };
 struct HelloRequest { std::uint8_t flags = 0; };
 
@@ -256,12 +257,23 @@ struct TelemetryBatch {
 /// Bytes of a batch payload that are not sample values.
 std::size_t telemetryHeaderBytes(std::size_t channelCount);
 
+/// Why an event was raised, as numbers a host words in its operator's language
+/// (docs/protocol.md, "Event reasons"). A device appends it only for a host whose
+/// HELLO set HelloReadsEventReasons; any other host reads the text alone.
+struct EventReason {
+    std::uint8_t code = 0;        ///< per event kind (event_reasons.h), 1–255
+    std::vector<double> values;   ///< finite, at most kMaxEventReasonValues; units fixed by kind and code
+    bool operator==(const EventReason& o) const { return code == o.code && values == o.values; }
+};
+constexpr std::size_t kMaxEventReasonValues = 8;
+
 struct EventMsg {
     EventKind kind = EventKind::MotionDone;
     std::uint8_t axis = kNoAxis;
     std::uint64_t deviceTimeUs = 0;
     WireUnits position = 0;
-    std::string text;
+    std::string text;                    ///< for people, in the device's language; may be empty
+    std::optional<EventReason> reason;
 };
 
 struct ErrorReply {

@@ -73,7 +73,9 @@ void Firmware::sendError(std::uint16_t seq, const proto::ErrorReply& e, std::vec
 
 void Firmware::flushEvents()
 {
-    for (const auto& e : m_machine.takeEvents()) {
+    for (auto& e : m_machine.takeEvents()) {
+        if (!m_eventReasons)
+            e.reason.reset();  // a host that did not ask reads the text alone (docs/protocol.md, "Event reasons")
         if (m_journalOn) {
             JournalEntry j;
             j.timeS = static_cast<double>(e.deviceTimeUs) * 1e-6;
@@ -178,6 +180,7 @@ void Firmware::execute(const proto::Frame& f, std::vector<std::uint8_t>& reply)
         if (!r || (!m_helloExtensions && !f.payload.empty()))
             return bad("HELLO");
         proto::HelloReply h = m_machine.hello(m_linkBaud);
+        m_eventReasons = (r->flags & proto::HelloReadsEventReasons) != 0;
         if (r->flags & proto::HelloReadsExtensions)
             h.motionLimits = m_machine.motionLimits();
         sendFrame(ok, f.seq, proto::encode(h), reply);

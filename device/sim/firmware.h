@@ -91,6 +91,7 @@ private:
     double m_lastHostFrameS = 0;  ///< machine time of the last good frame from the host
     double m_hostSilenceLimitS = proto::kPathHostSilenceMs / 1000.0;
     bool m_helloExtensions = true;
+    bool m_eventReasons = false;  ///< this session's host asked for each EVENT's reason
     bool m_journalOn = false;
     std::vector<JournalEntry> m_journal;
 

@@ -96,7 +96,10 @@ void PathQueue::reserveAxes(bool reserve)
 
 void PathQueue::event(proto::EventKind kind, std::uint32_t index, const std::string& text)
 {
-    m.raiseEvent(kind, -1, text);
+    // A held or ended path says why by its PathReason; one that ran as planned says so.
+    const bool why = kind == proto::EventKind::PathHeld || kind == proto::EventKind::PathAborted;
+    const std::uint8_t code = why && m_reason != PathReason::None ? static_cast<std::uint8_t>(m_reason) : proto::reason::kPathRan;
+    m.raiseEvent(kind, -1, text, code);
     m.m_events.back().position = static_cast<std::int32_t>(index);
 }
 

@@ -137,11 +137,14 @@ SimCompensation::Result SimCompensation::install(int i, CompensationModel model)
     }
     Axis& a = m_axes[static_cast<std::size_t>(i)];
     const std::string text = "installed " + kindText(model) + ", disabled";
+    const bool poly = model.kind == CompensationModel::Kind::Polynomial;
+    std::vector<double> values = poly ? std::vector<double>{2, static_cast<double>(model.polynomial.coefficientsUm.size()) - 1, model.validFromMm, model.validToMm}
+                                      : std::vector<double>{1, static_cast<double>(model.table.size()), model.perDirection ? 1.0 : 0.0};
     a.model = std::move(model);
     a.enabled = false;  // a new compensation is enabled on purpose, never by accident
     a.saved = false;
     reconcile();
-    m_m.raiseEvent(proto::kEvCompChanged, i, text);
+    m_m.raiseEvent(proto::kEvCompChanged, i, text, proto::reason::kInstalled, std::move(values));
     return std::nullopt;
 }
 
@@ -210,8 +213,8 @@ SimCompensation::Result SimCompensation::enable(const proto::CompEnableRequest& 
             a.saved = true;
         }
         if (changed || save)
-            m_m.raiseEvent(proto::kEvCompChanged, i,
-                           std::string(a.enabled ? "enabled" : "disabled") + (save ? ", kept for power-up" : ""));
+            m_m.raiseEvent(proto::kEvCompChanged, i, std::string(a.enabled ? "enabled" : "disabled") + (save ? ", kept for power-up" : ""),
+                           a.enabled ? proto::reason::kEnabled : proto::reason::kDisabled, {save ? 1.0 : 0.0});
     }
     reconcile();
     return std::nullopt;

@@ -69,8 +69,9 @@ void SimMachine::tickHoming(int i)
             s.mode = Mode::Idle;
             s.fault = true;
             s.plant->holdHere();
-            raiseEvent(proto::EventKind::Fault, i, std::string("axis ") + c.letter + " home switch not found over the whole travel");
-            cancelHoming("homing cancelled: another axis failed to find its switch");
+            raiseEvent(proto::EventKind::Fault, i, std::string("axis ") + c.letter + " home switch not found over the whole travel",
+                       proto::reason::kHomeSwitchNotFound);
+            cancelHoming("homing cancelled: another axis failed to find its switch", proto::reason::kHomingOtherFailed);
         }
         break;
     case HomePhase::BackOff:
@@ -124,16 +125,16 @@ void SimMachine::advanceHomingStages()
     // An axis of this stage came to rest unhomed (stopped by a switch, say): the
     // later stages must not run, nor stay pending and block every later homing.
     if (!allHomed)
-        cancelHoming("homing cancelled: an axis homed before this one did not reach home");
+        cancelHoming("homing cancelled: an axis homed before this one did not reach home", proto::reason::kHomingEarlierFailed);
     startHomingStage();
 }
 
-void SimMachine::cancelHoming(const char* why)
+void SimMachine::cancelHoming(const char* why, std::uint8_t code)
 {
     // Axes still waiting for their stage never moved: tell the host they will not home.
     for (int i = 0; i < axisCount(); ++i)
         if (awaitingHoming(i))
-            raiseEvent(proto::EventKind::Stopped, i, why);
+            raiseEvent(proto::EventKind::Stopped, i, why, code);
     m_homeStages.clear();
 }
 

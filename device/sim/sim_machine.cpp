@@ -94,7 +94,7 @@ proto::ErrorReply SimMachine::error(proto::ErrorCode code, int axis, double valu
     return e;
 }
 
-void SimMachine::raiseEvent(proto::EventKind kind, int axis, const std::string& text)
+void SimMachine::raiseEvent(proto::EventKind kind, int axis, const std::string& text, std::uint8_t why, std::vector<double> values)
 {
     proto::EventMsg e;
     e.kind = kind;
@@ -103,6 +103,8 @@ void SimMachine::raiseEvent(proto::EventKind kind, int axis, const std::string& 
     if (axis >= 0)
         e.position = wireInt32(std::round(measuredLogical(axis) * scale(axis)));
     e.text = text;
+    if (why != 0)
+        e.reason = proto::EventReason{why, std::move(values)};
     if (m_events.size() >= kMaxEvents)
         m_events.erase(m_events.begin());
     m_events.push_back(std::move(e));
@@ -154,7 +156,7 @@ SimMachine::Result SimMachine::planSegment(const std::vector<int>& axes, const s
     const double len = std::sqrt(len2);
     if (len < 1e-9) {
         for (int i : axes)
-            raiseEvent(doneEvent, i, "already there");
+            raiseEvent(doneEvent, i, "already there", proto::reason::kAlreadyThere);
         if (idOut)
             *idOut = -1;
         return std::nullopt;
@@ -390,7 +392,7 @@ SimMachine::Result SimMachine::stop(std::uint8_t mask)
         }
     }
     if (homingStopped)
-        cancelHoming("homing stopped before this axis' turn");
+        cancelHoming("homing stopped before this axis' turn", proto::reason::kHomingStopped);
     // Axes of one segment slow down together, so a coupled XY move stops on its
     // line. A segment that has not started yet stops at once (v = 0).
     for (int id : segIds) {
@@ -416,12 +418,12 @@ SimMachine::Result SimMachine::stop(std::uint8_t mask)
         }
         m_segments.erase(it);
         // Z waited for this XY move to arrive; it never will.
-        cancelSegmentsAfter(id, "cancelled: the move it waited for was stopped");
+        cancelSegmentsAfter(id, "cancelled: the move it waited for was stopped", proto::reason::kWaitedMoveStopped);
     }
     return std::nullopt;
 }
 
-void SimMachine::cancelSegmentsAfter(int id, const char* why)
+void SimMachine::cancelSegmentsAfter(int id, const char* why, std::uint8_t code)
 {
     auto waiting = [&](const Segment& g) { return !g.started && g.after == id; };
     for (const Segment& g : m_segments) {
@@ -432,7 +434,7 @@ void SimMachine::cancelSegmentsAfter(int id, const char* why)
                 continue;
             st(a).mode = Mode::Idle;
             st(a).segment = -1;
-            raiseEvent(proto::EventKind::Stopped, a, why);
+            raiseEvent(proto::EventKind::Stopped, a, why, code);
         }
     }
     m_segments.erase(std::remove_if(m_segments.begin(), m_segments.end(), waiting), m_segments.end());
@@ -452,7 +454,7 @@ SimMachine::Result SimMachine::estop()
         s.segment = -1;
         s.v = s.vTarget = 0;
     }
-    raiseEvent(proto::EventKind::EStop, -1, "emergency stop: all motion halted");
+    raiseEvent(proto::EventKind::EStop, -1, "emergency stop: all motion halted", proto::reason::kAllHalted);
     return std::nullopt;
 }
 
@@ -465,7 +467,7 @@ SimMachine::Result SimMachine::reset()
     }
     for (int i = 0; i < axisCount(); ++i)
         st(i).fault = false;
-    raiseEvent(proto::EventKind::Reset, -1, "E-stop and faults cleared");
+    raiseEvent(proto::EventKind::Reset, -1, "E-stop and faults cleared", proto::reason::kCleared);
     return std::nullopt;
 }
 

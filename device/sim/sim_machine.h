@@ -2,6 +2,7 @@
 // The simulated instrument's motion controller: the reference firmware's
 // behaviour (segments, jog with watchdog, homing, switches, E-stop, soft limits)
 // over SimAxis plants, on a virtual clock advanced in fixed ticks.
+#include "device/protocol/event_reasons.h"
 #include "device/protocol/messages.h"
 #include "device/sim/machine_config.h"
 #include "device/sim/sim_axis.h"
@@ -156,18 +157,20 @@ private:
     void zeroCounters(int i, double logicalHere);
     Result planSegment(const std::vector<int>& axes, const std::vector<double>& targetsMachine, double speed,
                        int after, proto::EventKind doneEvent, int* idOut);
-    void finishAxis(int i, proto::EventKind kind, const std::string& text = {});
+    void finishAxis(int i, proto::EventKind kind, const std::string& text = {}, std::uint8_t why = 0);
     void stopAxisHard(int i);
-    void cancelSegmentsAfter(int id, const char* why);
+    void cancelSegmentsAfter(int id, const char* why, std::uint8_t code);
     void advanceHomingStages();
-    void cancelHoming(const char* why);
+    void cancelHoming(const char* why, std::uint8_t code);
     void startHomingStage();
     void tickSegments();
     void tickVelocityModes();
     void tickHoming(int i);
     void tickSettling(int i);
     void checkSwitches(int i);
-    void raiseEvent(proto::EventKind kind, int axis, const std::string& text = {});
+    /// `text` for people; `why` and `values` for a host that words it (proto::reason, 0: none).
+    void raiseEvent(proto::EventKind kind, int axis, const std::string& text = {}, std::uint8_t why = 0,
+                    std::vector<double> values = {});
     double contourErrorMm() const;
 
     MachineConfig m_cfg;

@@ -14,7 +14,7 @@
 
 namespace sim {
 
-void SimMachine::finishAxis(int i, proto::EventKind kind, const std::string& text)
+void SimMachine::finishAxis(int i, proto::EventKind kind, const std::string& text, std::uint8_t why)
 {
     AxisState& s = st(i);
     s.mode = Mode::Idle;
@@ -25,13 +25,14 @@ void SimMachine::finishAxis(int i, proto::EventKind kind, const std::string& tex
         s.homeOffset = s.offset;               // soft limits are relative to home
         s.homed = true;
     }
-    raiseEvent(kind, i, text);
+    raiseEvent(kind, i, text, why);
     if (!m_cfg.closedLoop && !s.lostReported) {
         const double err = measuredLogical(i) - commandedLogical(i);
         if (std::abs(err) > m_cfg.lostStepTolerance) {
             s.lostReported = true;
             raiseEvent(proto::EventKind::LostSteps, i,
-                 std::string("axis ") + s.plant->config().letter + " encoder is " + fmt(i, err) + " off the command");
+                       std::string("axis ") + s.plant->config().letter + " encoder is " + fmt(i, err) + " off the command",
+                       proto::reason::kOffCommand, {err});
         }
     }
 }
@@ -51,14 +52,14 @@ void SimMachine::stopAxisHard(int i)
             for (int a : it->axes)
                 if (a != i) {
                     st(a).plant->holdHere();
-                    finishAxis(a, proto::EventKind::Stopped, "stopped with its coupled axis");
+                    finishAxis(a, proto::EventKind::Stopped, "stopped with its coupled axis", proto::reason::kWithCoupledAxis);
                 }
             m_segments.erase(it);
         }
         s.mode = Mode::Idle;
         s.segment = -1;
         // A Z that waited for this XY move to arrive must not start, nor stay busy.
-        cancelSegmentsAfter(id, "cancelled: the move it waited for was stopped by a switch");
+        cancelSegmentsAfter(id, "cancelled: the move it waited for was stopped by a switch", proto::reason::kWaitedMoveHitSwitch);
     }
     s.mode = Mode::Idle;
     s.segment = -1;
@@ -73,10 +74,10 @@ void SimMachine::checkSwitches(int i)
     const auto& c = s.plant->config();
     if (s.plant->homeSwitch() && v < 0) {
         stopAxisHard(i);
-        raiseEvent(proto::EventKind::LimitHit, i, std::string("axis ") + c.letter + " hit its home switch");
+        raiseEvent(proto::EventKind::LimitHit, i, std::string("axis ") + c.letter + " hit its home switch", proto::reason::kHomeSwitch);
     } else if (s.plant->limitSwitch() && v > 0) {
         stopAxisHard(i);
-        raiseEvent(proto::EventKind::LimitHit, i, std::string("axis ") + c.letter + " hit its limit switch");
+        raiseEvent(proto::EventKind::LimitHit, i, std::string("axis ") + c.letter + " hit its limit switch", proto::reason::kLimitSwitch);
     }
 }
 
@@ -130,7 +131,8 @@ void SimMachine::tickVelocityModes()
             s.expired = true;
             s.vTarget = 0;
             s.accel = std::max(c.maxAccel, std::abs(s.v) / kJogStopBudgetS);
-            raiseEvent(proto::EventKind::JogExpired, i, std::string("axis ") + c.letter + " jog not refreshed: stopped");
+            raiseEvent(proto::EventKind::JogExpired, i, std::string("axis ") + c.letter + " jog not refreshed: stopped", proto::reason::kNotRefreshed,
+                       {m_jogWatchdogTripS});
         }
         double target = s.vTarget;
         const double pos = s.plant->reference();
@@ -172,7 +174,10 @@ void SimMachine::tickVelocityModes()
                 s.settleStartS = timeS();
                 s.settledS = 0;
             } else {
-                finishAxis(i, s.mode == Mode::Decel ? proto::EventKind::Stopped : proto::EventKind::MotionDone);
+                if (s.mode == Mode::Decel)
+                    finishAxis(i, proto::EventKind::Stopped, {}, proto::reason::kStopRequest);
+                else
+                    finishAxis(i, proto::EventKind::MotionDone);
             }
         }
     }
@@ -186,9 +191,9 @@ void SimMachine::tickSettling(int i)
     else
         s.settledS = 0;
     if (s.settledS >= m_cfg.settleTimeS) {
-        finishAxis(i, s.doneEvent);
+        finishAxis(i, s.doneEvent, {}, s.doneEvent == proto::EventKind::Stopped ? proto::reason::kStopRequest : 0);
     } else if (timeS() - s.settleStartS > 2.0) {
-        finishAxis(i, s.doneEvent, "arrived outside the in-position window");
+        finishAxis(i, s.doneEvent, "arrived outside the in-position window", proto::reason::kOutsideWindow);
     }
 }
 

@@ -103,7 +103,8 @@ SimTuning::Result SimTuning::setGains(const proto::SetGainsRequest& r)
         a.saved = a.gains;
     m_m.raiseEvent(proto::kEvGainsChanged, r.axis,
                    fmt("gains per control period: kp %.6g, ki %.6g, kd %.6g", a.gains.kp, a.gains.ki, a.gains.kd)
-                       + ((r.flags & proto::kSetGainsSave) ? " (kept as power-up gains)" : ""));
+                       + ((r.flags & proto::kSetGainsSave) ? " (kept as power-up gains)" : ""),
+                   proto::reason::kGainsSet, {a.gains.kp, a.gains.ki, a.gains.kd, (r.flags & proto::kSetGainsSave) ? 1.0 : 0.0});
     return std::nullopt;
 }
 
@@ -285,7 +286,8 @@ void SimTuning::end(int axis)
         std::swap(a.gains, a.previous);
         m_m.raiseEvent(proto::kEvGainsChanged, axis,
                        fmt("gains per control period: kp %.6g, ki %.6g, kd %.6g", a.gains.kp, a.gains.ki, a.gains.kd)
-                           + " (the set in force before the one that tripped the test)");
+                           + " (the set in force before the one that tripped the test)",
+                       proto::reason::kGainsFellBack, {a.gains.kp, a.gains.ki, a.gains.kd});
     }
     // Trial gains never replaced the operator's; the axis stops where it is
     // (or stays on the step it settled on) under them.
@@ -296,36 +298,45 @@ void SimTuning::end(int axis)
     if (s.mode == SimMachine::Mode::Tuning)
         s.mode = SimMachine::Mode::Idle;
     const char* what = x.kind() == Experiment::Kind::Step ? "step test" : "relay test";
+    const double test = x.kind() == Experiment::Kind::Step ? proto::reason::kStepTest : proto::reason::kRelayTest;
     const std::string axisName = std::string("axis ") + letter + " " + what;
     const double t = x.elapsedS();
-    const std::string stoppedAt = fmt("; axis stopped at %.4f mm", s.plant->reportedMeasured() - s.measuredOffset);
+    const double at = s.plant->reportedMeasured() - s.measuredOffset;
+    const std::string stoppedAt = fmt("; axis stopped at %.4f mm", at);
+    namespace why = proto::reason;
     switch (x.reason()) {
     case EndReason::Settled:
-        m_m.raiseEvent(proto::kEvTestEnded, axis, axisName + fmt(" settled after %.3f s", t));
+        m_m.raiseEvent(proto::kEvTestEnded, axis, axisName + fmt(" settled after %.3f s", t), why::kSettled, {test, t});
         break;
     case EndReason::Completed:
-        m_m.raiseEvent(proto::kEvTestEnded, axis, axisName + fmt(" completed in %.3f s", t));
+        m_m.raiseEvent(proto::kEvTestEnded, axis, axisName + fmt(" completed in %.3f s", t), why::kCompleted, {test, t});
         break;
     case EndReason::Excursion:
         m_m.raiseEvent(proto::kEvTestTripped, axis,
                        axisName + fmt(" stopped: max excursion %.4f mm crossed (%.4f mm) after %.3f s", x.tripLimit(), x.tripValue(), t)
-                           + stoppedAt);
+                           + stoppedAt,
+                       why::kExcursion, {test, x.tripLimit(), x.tripValue(), t, at});
         break;
     case EndReason::FollowingError:
         m_m.raiseEvent(proto::kEvTestTripped, axis,
                        axisName + fmt(" stopped: max following error %.4f mm crossed (%.4f mm) after %.3f s", x.tripLimit(), x.tripValue(), t)
-                           + stoppedAt);
+                           + stoppedAt,
+                       why::kFollowingError, {test, x.tripLimit(), x.tripValue(), t, at});
         break;
     case EndReason::Duration:
-        m_m.raiseEvent(proto::kEvTestTripped, axis, axisName + fmt(" stopped: max duration %.3f s reached", x.tripLimit()) + stoppedAt);
+        m_m.raiseEvent(proto::kEvTestTripped, axis, axisName + fmt(" stopped: max duration %.3f s reached", x.tripLimit()) + stoppedAt,
+                       why::kDuration, {test, x.tripLimit(), at});
         break;
-    case EndReason::Stopped: m_m.raiseEvent(proto::kEvTestAborted, axis, axisName + " stopped on request"); break;
-    case EndReason::EStop: m_m.raiseEvent(proto::kEvTestAborted, axis, axisName + " ended by E-stop"); break;
+    case EndReason::Stopped:
+        m_m.raiseEvent(proto::kEvTestAborted, axis, axisName + " stopped on request", why::kOnRequest, {test});
+        break;
+    case EndReason::EStop: m_m.raiseEvent(proto::kEvTestAborted, axis, axisName + " ended by E-stop", why::kByEStop, {test}); break;
     case EndReason::HostSilent:
-        m_m.raiseEvent(proto::kEvTestAborted, axis, axisName + fmt(" ended: no frame from the host for %.1f s; axis stopped", kHostSilenceS));
+        m_m.raiseEvent(proto::kEvTestAborted, axis, axisName + fmt(" ended: no frame from the host for %.1f s; axis stopped", kHostSilenceS),
+                       why::kHostSilent, {test, kHostSilenceS});
         break;
     case EndReason::Fault:
-    case EndReason::Running: m_m.raiseEvent(proto::kEvTestAborted, axis, axisName + " ended by a fault"); break;
+    case EndReason::Running: m_m.raiseEvent(proto::kEvTestAborted, axis, axisName + " ended by a fault", why::kByFault, {test}); break;
     }
 }
 

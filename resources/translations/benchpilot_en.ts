@@ -22,6 +22,25 @@
     </message>
 </context>
 <context>
+    <name>words::EventWords</name>
+    <message numerus="yes">
+        <source>axis %1: a compensation table of %Ln points installed, not yet enabled</source>
+        <comment>device.why.comp_installed_table</comment>
+        <translation>
+            <numerusform>axis %1: a compensation table of %Ln point installed, not yet enabled</numerusform>
+            <numerusform>axis %1: a compensation table of %Ln points installed, not yet enabled</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>axis %1: a compensation table of %Ln points per direction installed, not yet enabled</source>
+        <comment>device.why.comp_installed_table_per_direction</comment>
+        <translation>
+            <numerusform>axis %1: a compensation table of %Ln point per direction installed, not yet enabled</numerusform>
+            <numerusform>axis %1: a compensation table of %Ln points per direction installed, not yet enabled</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>words::RecipeWords</name>
     <message numerus="yes">
         <source>running %1: %Ln wells, about %2; log %3</source>

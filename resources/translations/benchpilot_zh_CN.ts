@@ -9672,6 +9672,203 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
+    <name>words::EventWords</name>
+    <message>
+        <source>already there: nothing moved</source>
+        <comment>device.why.already_there</comment>
+        <translation>已在目标位置：未运动</translation>
+    </message>
+    <message>
+        <source>arrived outside the in-position window</source>
+        <comment>device.why.outside_window</comment>
+        <translation>已到达，但在到位窗口之外</translation>
+    </message>
+    <message>
+        <source>axis %1 hit its home switch</source>
+        <comment>device.why.home_switch</comment>
+        <translation>%1 轴碰到零位开关</translation>
+    </message>
+    <message>
+        <source>axis %1 hit its limit switch</source>
+        <comment>device.why.limit_switch</comment>
+        <translation>%1 轴碰到限位开关</translation>
+    </message>
+    <message>
+        <source>axis %1 found no home switch over its whole travel</source>
+        <comment>device.why.home_switch_not_found</comment>
+        <translation>%1 轴在整个行程内未找到零位开关</translation>
+    </message>
+    <message>
+        <source>all motion halted</source>
+        <comment>device.why.all_halted</comment>
+        <translation>所有运动已停止</translation>
+    </message>
+    <message>
+        <source>axis %1 heard no jog for %2, so it stopped</source>
+        <comment>device.why.jog_not_refreshed</comment>
+        <translation>%1 轴在 %2 内未收到点动指令，已停止</translation>
+    </message>
+    <message>
+        <source>stopped on request</source>
+        <comment>device.why.stop_request</comment>
+        <translation>应请求停止</translation>
+    </message>
+    <message>
+        <source>stopped with the axis it moves with</source>
+        <comment>device.why.with_coupled_axis</comment>
+        <translation>随联动轴一起停止</translation>
+    </message>
+    <message>
+        <source>homing cancelled: another axis found no home switch</source>
+        <comment>device.why.homing_other_failed</comment>
+        <translation>回零已取消：另一轴未找到零位开关</translation>
+    </message>
+    <message>
+        <source>homing cancelled: an axis homed before this one did not reach home</source>
+        <comment>device.why.homing_earlier_failed</comment>
+        <translation>回零已取消：先于此轴回零的轴未到达零位</translation>
+    </message>
+    <message>
+        <source>homing stopped before this axis&apos; turn</source>
+        <comment>device.why.homing_stopped</comment>
+        <translation>轮到此轴之前回零已停止</translation>
+    </message>
+    <message>
+        <source>cancelled: the move it waited for was stopped</source>
+        <comment>device.why.waited_move_stopped</comment>
+        <translation>已取消：所等待的运动被停止</translation>
+    </message>
+    <message>
+        <source>cancelled: a switch stopped the move it waited for</source>
+        <comment>device.why.waited_move_hit_switch</comment>
+        <translation>已取消：所等待的运动被开关停止</translation>
+    </message>
+    <message>
+        <source>axis %1&apos;s encoder is %2 off the command</source>
+        <comment>device.why.off_command</comment>
+        <translation>%1 轴编码器偏离指令位置 %2</translation>
+    </message>
+    <message>
+        <source>E-stop and faults cleared</source>
+        <comment>device.why.cleared</comment>
+        <translation>急停和故障已清除</translation>
+    </message>
+    <message>
+        <source>axis %1 %2 settled after %3</source>
+        <comment>device.why.test_settled</comment>
+        <translation>%1 轴%2在 %3 后稳定</translation>
+    </message>
+    <message>
+        <source>axis %1 %2 completed in %3</source>
+        <comment>device.why.test_completed</comment>
+        <translation>%1 轴%2完成，用时 %3</translation>
+    </message>
+    <message>
+        <source>axis %1 %2 stopped after %5: its excursion reached %4, past the limit of %3; the axis stopped at %6</source>
+        <comment>device.why.test_excursion</comment>
+        <translation>%1 轴%2在 %5 后停止：偏移达到 %4，超过限值 %3；轴停在 %6</translation>
+    </message>
+    <message>
+        <source>axis %1 %2 stopped after %5: its following error reached %4, past the limit of %3; the axis stopped at %6</source>
+        <comment>device.why.test_following_error</comment>
+        <translation>%1 轴%2在 %5 后停止：跟随误差达到 %4，超过限值 %3；轴停在 %6</translation>
+    </message>
+    <message>
+        <source>axis %1 %2 stopped at its time limit of %3; the axis stopped at %4</source>
+        <comment>device.why.test_duration</comment>
+        <translation>%1 轴%2达到时间限值 %3 而停止；轴停在 %4</translation>
+    </message>
+    <message>
+        <source>axis %1 %2 stopped on request</source>
+        <comment>device.why.test_on_request</comment>
+        <translation>%1 轴%2应请求停止</translation>
+    </message>
+    <message>
+        <source>axis %1 %2 ended by the E-stop</source>
+        <comment>device.why.test_estop</comment>
+        <translation>%1 轴%2因急停结束</translation>
+    </message>
+    <message>
+        <source>axis %1 %2 ended: nothing came from BenchPilot for %3, so the axis stopped</source>
+        <comment>device.why.test_host_silent</comment>
+        <translation>%1 轴%2结束：%3 内未收到 BenchPilot 的任何消息，轴已停止</translation>
+    </message>
+    <message>
+        <source>axis %1 %2 ended by a fault</source>
+        <comment>device.why.test_fault</comment>
+        <translation>%1 轴%2因故障结束</translation>
+    </message>
+    <message>
+        <source>axis %1 gains per control period: kp %2, ki %3, kd %4</source>
+        <comment>device.why.gains_set</comment>
+        <translation>%1 轴每控制周期增益：kp %2，ki %3，kd %4</translation>
+    </message>
+    <message>
+        <source>axis %1 gains per control period: kp %2, ki %3, kd %4, kept as its power-up gains</source>
+        <comment>device.why.gains_set_kept</comment>
+        <translation>%1 轴每控制周期增益：kp %2，ki %3，kd %4，已保存为上电增益</translation>
+    </message>
+    <message>
+        <source>axis %1 is back on the gains in force before the set that tripped the test: kp %2, ki %3, kd %4</source>
+        <comment>device.why.gains_fell_back</comment>
+        <translation>%1 轴已恢复为触发测试的那组增益之前的增益：kp %2，ki %3，kd %4</translation>
+    </message>
+    <message numerus="yes">
+        <source>axis %1: a compensation table of %Ln points installed, not yet enabled</source>
+        <comment>device.why.comp_installed_table</comment>
+        <translation>
+            <numerusform>%1 轴：已安装 %Ln 点补偿表，尚未启用</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>axis %1: a compensation table of %Ln points per direction installed, not yet enabled</source>
+        <comment>device.why.comp_installed_table_per_direction</comment>
+        <translation>
+            <numerusform>%1 轴：已安装每方向 %Ln 点的补偿表，尚未启用</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>axis %1: a compensation polynomial of order %2 over %3 to %4 installed, not yet enabled</source>
+        <comment>device.why.comp_installed_polynomial</comment>
+        <translation>%1 轴：已安装 %2 阶补偿多项式（%3 至 %4），尚未启用</translation>
+    </message>
+    <message>
+        <source>axis %1: compensation enabled</source>
+        <comment>device.why.comp_enabled</comment>
+        <translation>%1 轴：补偿已启用</translation>
+    </message>
+    <message>
+        <source>axis %1: compensation enabled and kept for power-up</source>
+        <comment>device.why.comp_enabled_kept</comment>
+        <translation>%1 轴：补偿已启用，并保存为上电设置</translation>
+    </message>
+    <message>
+        <source>axis %1: compensation disabled</source>
+        <comment>device.why.comp_disabled</comment>
+        <translation>%1 轴：补偿已停用</translation>
+    </message>
+    <message>
+        <source>axis %1: compensation disabled, and kept so for power-up</source>
+        <comment>device.why.comp_disabled_kept</comment>
+        <translation>%1 轴：补偿已停用，并保存为上电设置</translation>
+    </message>
+    <message>
+        <source>the queue ran dry: at rest until more segments arrive</source>
+        <comment>device.why.path_underrun</comment>
+        <translation>队列已空：静止等待更多段</translation>
+    </message>
+    <message>
+        <source>held: %1</source>
+        <comment>device.why.path_held</comment>
+        <translation>已暂停：%1</translation>
+    </message>
+    <message>
+        <source>ended: %1</source>
+        <comment>device.why.path_ended</comment>
+        <translation>已结束：%1</translation>
+    </message>
+</context>
+<context>
     <name>words::FileWords</name>
     <message>
         <source>warning: %1</source>

@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -346,6 +348,37 @@ TEST(CodecMessages, EventAndErrorRoundTripAndLayout)
     }
 }
 
+TEST(CodecMessages, AnEventsReasonFollowsItsTextAndIsCheckedLikeTheRest)
+{
+    EventMsg e{EventKind::LimitHit, 1, 2500000, -250000, "hi", EventReason{2, {0.5, -1.25}}};
+    const Bytes b = encode(e);
+    const Bytes plain = encode(EventMsg{EventKind::LimitHit, 1, 2500000, -250000, "hi", std::nullopt});
+    ASSERT_EQ(b.size(), plain.size() + 2 + 16);
+    EXPECT_TRUE(std::equal(plain.begin(), plain.end(), b.begin())) << "the reason is appended: the fields before it keep their places";
+    // code, count, then each value as an IEEE 754 double, little-endian: 0.5 = 0x3FE0000000000000.
+    EXPECT_EQ(Bytes(b.begin() + static_cast<std::ptrdiff_t>(plain.size()), b.begin() + static_cast<std::ptrdiff_t>(plain.size()) + 10),
+              (Bytes{0x02, 0x02, 0, 0, 0, 0, 0, 0, 0xE0, 0x3F}));
+    const auto d = decodeEvent(b);
+    ASSERT_TRUE(d);
+    ASSERT_TRUE(d->reason);
+    EXPECT_EQ(*d->reason, (EventReason{2, {0.5, -1.25}}));
+    EXPECT_EQ(encode(*d), b);
+    EXPECT_FALSE(decodeEvent(plain)->reason) << "an event without one (an older device, or a host that did not ask)";
+    EXPECT_TRUE(decodeEvent(encode(EventMsg{EventKind::EStop, kNoAxis, 1, 0, "", EventReason{1, {}}}))->reason);
+
+    // Anything between the text and a whole reason is refused, as is a byte after it.
+    for (std::size_t n = plain.size() + 1; n < b.size(); ++n)
+        EXPECT_FALSE(decodeEvent(Bytes(b.begin(), b.begin() + static_cast<std::ptrdiff_t>(n)))) << n;
+    Bytes longer = b;
+    longer.push_back(0);
+    EXPECT_FALSE(decodeEvent(longer));
+    EXPECT_FALSE(decodeEvent(with(b, plain.size(), 0))) << "code 0 is not a reason";
+    EXPECT_FALSE(decodeEvent(encode(EventMsg{EventKind::Fault, 0, 1, 2, "x", EventReason{1, std::vector<double>(9, 1.0)}})))
+        << "at most 8 values";
+    for (double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+        EXPECT_FALSE(decodeEvent(encode(EventMsg{EventKind::Fault, 0, 1, 2, "x", EventReason{1, {bad}}})));
+}
+
 TEST(CodecMessages, StringsAreCutAt255BytesOnACharacterBoundary)
 {
     ErrorReply r;
@@ -392,7 +425,7 @@ TEST(CodecMessages, DecodersRejectShortAndLongPayloads)
     t.sampleCount = 2;
     t.values = {10, 20};
     expectStrict(encode(t), &decodeTelemetryBatch, "TELEMETRY");
-    expectStrict(encode(EventMsg{EventKind::Fault, 0, 1, 2, "x"}), &decodeEvent, "EVENT");
+    expectStrict(encode(EventMsg{EventKind::Fault, 0, 1, 2, "x", std::nullopt}), &decodeEvent, "EVENT");
     expectStrict(encode(ErrorReply{ErrorCode::Busy, 0, 1, "busy"}), &decodeErrorReply, "ERROR");
 }
 

@@ -1,6 +1,7 @@
 // The reference firmware's protocol side, driven through encoded frames exactly
 // as a host would: HELLO, replies and typed errors, retransmissions, corrupted
 // frames, realtime-first handling and telemetry batches.
+#include "device/protocol/event_reasons.h"
 #include "device/protocol/frame_codec.h"
 #include "device/protocol/messages.h"
 #include "device/sim/firmware.h"
@@ -536,6 +537,32 @@ TEST(SimFirmware, EventsCarryKindAxisAndDeviceTime)
     const auto reset = h.send(MsgType::Reset);
     EXPECT_TRUE(h.okFor(reset, MsgType::Reset));
     EXPECT_FALSE(h.status().deviceFlags & proto::DeviceEStop);
+}
+
+TEST(SimFirmware, EventsCarryTheirReasonOnlyToAHostThatAskedForIt)
+{
+    Host h(sim::stageConfig());
+    auto session = [&](std::uint8_t flags) {
+        const auto seq = h.send(MsgType::Hello, proto::encode(proto::HelloRequest{flags}));
+        ASSERT_TRUE(h.okFor(seq, MsgType::Hello));
+        h.events.clear();
+        h.send(MsgType::EStop);
+        h.send(MsgType::Reset);
+        ASSERT_EQ(h.events.size(), 2u);
+    };
+    session(proto::HelloReadsExtensions);
+    EXPECT_FALSE(h.events[0].reason) << "a host that did not ask reads the text alone";
+    EXPECT_EQ(h.events[0].text, "emergency stop: all motion halted");
+
+    session(proto::HelloReadsExtensions | proto::HelloReadsEventReasons);
+    ASSERT_TRUE(h.events[0].reason);
+    EXPECT_EQ(h.events[0].reason->code, proto::reason::kAllHalted);
+    ASSERT_TRUE(h.events[1].reason);
+    EXPECT_EQ(h.events[1].reason->code, proto::reason::kCleared);
+    EXPECT_FALSE(h.events[0].text.empty()) << "and still the text, for a person reading the wire";
+
+    session(0);
+    EXPECT_FALSE(h.events[0].reason) << "the choice is the session's: a new HELLO makes it again";
 }
 
 TEST(SimFirmware, JogOverTheWireStopsWhenRefreshesStop)

@@ -120,6 +120,11 @@ TEST_F(TuningStage, StepTestSettlesUnderTheOperatorsGainsAndIsCaptured)
     const auto* ended = r.find(proto::kEvTestEnded, kX);
     ASSERT_NE(ended, nullptr);
     EXPECT_NE(ended->text.find("settled"), std::string::npos) << ended->text;
+    ASSERT_TRUE(ended->reason);
+    EXPECT_EQ(ended->reason->code, proto::reason::kSettled);
+    ASSERT_EQ(ended->reason->values.size(), 2u);
+    EXPECT_EQ(ended->reason->values[0], proto::reason::kStepTest);
+    EXPECT_GT(ended->reason->values[1], 0.0) << "how long it ran";
     EXPECT_NEAR(measuredMm(m, kX), 50.02, 0.001);
     EXPECT_NEAR(commandedMm(m, kX), 50.02, 1e-9);  // it stays on the step it settled on
     const auto c = capture();
@@ -146,6 +151,12 @@ TEST_F(TuningStage, TrialGainsAreUsedForTheTestOnlyAndTheEnvelopeStopsTheAxis)
     const auto* tripped = r.find(proto::kEvTestTripped, kX);
     ASSERT_NE(tripped, nullptr);
     EXPECT_NE(tripped->text.find("max excursion 0.0300 mm crossed"), std::string::npos) << tripped->text;
+    ASSERT_TRUE(tripped->reason);
+    EXPECT_EQ(tripped->reason->code, proto::reason::kExcursion);
+    ASSERT_EQ(tripped->reason->values.size(), 5u) << "test, limit, value, seconds, where it stopped";
+    EXPECT_EQ(tripped->reason->values[0], proto::reason::kStepTest);
+    EXPECT_DOUBLE_EQ(tripped->reason->values[1], 0.03);
+    EXPECT_GT(tripped->reason->values[2], 0.03);
     EXPECT_FALSE(moving(m, kX));
     const auto c = capture();
     EXPECT_EQ(c.reason, static_cast<std::uint8_t>(EndReason::Excursion));
@@ -191,6 +202,8 @@ TEST_F(TuningStage, EStopMidOscillationEndsTheTestAndKeepsTheGains)
     const auto* aborted = r.find(proto::kEvTestAborted, kX);
     ASSERT_NE(aborted, nullptr);
     EXPECT_NE(aborted->text.find("E-stop"), std::string::npos);
+    ASSERT_TRUE(aborted->reason);
+    EXPECT_EQ(*aborted->reason, (proto::EventReason{proto::reason::kByEStop, {proto::reason::kRelayTest}}));
     EXPECT_FALSE(t().testRunning(kX));
     EXPECT_EQ(capture().reason, static_cast<std::uint8_t>(EndReason::EStop));
     const double here = m.measuredLogical(kX);

@@ -21,6 +21,7 @@
 #include <QTableWidget>
 
 #include "device/sim/machine_config.h"
+#include "widgets/event_log.h"
 #include "widgets/retranslator.h"
 #include "widgets/wording/translators.h"
 #include "widgets/wording/wording.h"
@@ -199,6 +200,33 @@ TEST(I18nWalk, SwitchingLanguageRewordsEveryOpenScreenWithoutARestart)
             chinese << screen + QStringLiteral(": ") + f;
     }
     EXPECT_TRUE(chinese.isEmpty()) << "left in Chinese after switching back:\n" << chinese.join(QLatin1Char('\n')).toStdString();
+}
+
+TEST(I18nWalk, TheEventLogSaysWhatTheDeviceDidInTheLanguageOnScreen)
+{
+    words::Translators translators;
+    ASSERT_TRUE(translators.setLanguage(QStringLiteral("zh_CN")));
+    app::MainWindowOptions options = guitest::testWindowOptions();
+    options.translators = &translators;
+    auto w = guitest::openReadyWindow(QSize(1366, 768), options);
+    ASSERT_TRUE(w);
+    dev::Instrument* stage = w->stage()->instrument();
+    const int before = w->eventLog()->rowCount();
+    stage->estop();
+    ASSERT_TRUE(guitest::waitFor([&] { return stage->status().estop; }, 3000));
+    stage->reset();
+    ASSERT_TRUE(guitest::waitFor([&] { return !stage->status().estop && w->eventLog()->rowCount() >= before + 2; }, 3000));
+    QStringList english;
+    for (int r = before; r < w->eventLog()->rowCount(); ++r)
+        for (const QString& word : i18ntest::untranslated(withoutData(w->eventLog()->rowText(r))))
+            english << QStringLiteral("\"%1\" in %2").arg(word, w->eventLog()->rowText(r));
+    EXPECT_TRUE(english.isEmpty()) << english.join(QLatin1Char('\n')).toStdString();
+    // Worded when shown: switching back rewords the rows already in the log.
+    chooseLanguage(*w, QStringLiteral("en"));
+    bool halted = false;
+    for (int r = before; r < w->eventLog()->rowCount(); ++r)
+        halted = halted || w->eventLog()->rowText(r).contains(QStringLiteral("all motion halted"));
+    EXPECT_TRUE(halted);
 }
 
 TEST(I18nWalk, SwitchingLeavesANameInAComboAsItIs)

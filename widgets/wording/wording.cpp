@@ -1,5 +1,7 @@
 #include "widgets/wording/wording.h"
 
+#include "device/client/instrument_types.h"
+
 #include "widgets/wording/areas.h"
 #include "widgets/wording/translators.h"
 
@@ -20,6 +22,7 @@ const std::pair<const char*, SentenceFn> kSentences[] = {
     {"capability.", &areas::capability},
     {"accuracy.", &areas::accuracy},
     {"compensation.", &areas::accuracy},
+    {"device.why.", &areas::deviceEvent},
     {"request.", &areas::device},
     {"link.", &areas::device},
     {"device.", &areas::device},
@@ -186,6 +189,11 @@ QString sentence(const QString& text)
     if (text.isEmpty() || !text.front().isLower() || text.front().script() != QChar::Script_Latin)
         return text;
     return text.front().toUpper() + text.mid(1);
+}
+
+QString eventDetail(const dev::DeviceEvent& e)
+{
+    return e.worded || !e.detail.empty() ? text(e.detail) : e.text;
 }
 
 QString text(const msg::Message& m)

@@ -13,12 +13,19 @@
 
 #include <vector>
 
+namespace dev {
+struct DeviceEvent;
+}
+
 namespace words {
 
 /// The sentence for `m` in the current language (the translators installed in
 /// QCoreApplication). An id no area knows comes back as msg::debugString, so
 /// nothing is lost; tests/gui's pseudo-translation check and the id tests catch it.
 QString text(const msg::Message& m);
+/// What a device event says beyond its kind: the backend's worded form (an event
+/// reason, a GRBL alarm), or the device's own text where it has none.
+QString eventDetail(const dev::DeviceEvent& e);
 /// `text` as a sentence standing on its own (a banner, a dialog, a log line): its first
 /// letter a capital. Sentences are worded to be embedded ("… stopped: the link to …"),
 /// so they start in lower case; Chinese is unchanged.

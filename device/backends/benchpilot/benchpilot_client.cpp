@@ -146,7 +146,9 @@ LinkStats BenchPilotClient::stats() const
 
 void BenchPilotClient::sayHello(bool readsExtensions)
 {
-    const proto::Bytes payload = readsExtensions ? proto::encode(proto::HelloRequest{proto::HelloReadsExtensions}) : proto::Bytes{};
+    // A device that knows no event reasons ignores that bit and sends its text alone.
+    const proto::Bytes payload =
+        readsExtensions ? proto::encode(proto::HelloRequest{proto::HelloReadsExtensions | proto::HelloReadsEventReasons}) : proto::Bytes{};
     send(proto::MsgType::Hello, payload,
          [this, readsExtensions](const auto& err, const auto& reply) { onHello(err, reply, readsExtensions); });
 }

@@ -5,6 +5,7 @@
 // benchpilot_client.cpp (connection, handshake), benchpilot_client_status.cpp,
 // benchpilot_client_commands.cpp.
 #include "device/backends/benchpilot/benchpilot_client.h"
+#include "device/backends/benchpilot/event_reason.h"
 
 #include <algorithm>
 #include <cmath>
@@ -316,6 +317,15 @@ void BenchPilotClient::onFrame(const proto::Frame& f)
             ev.deviceTimeUs = e->deviceTimeUs;
             ev.text = QString::fromStdString(e->text);
             ev.hostTime = QDateTime::currentDateTime();
+            if (e->reason) {
+                const bool onAxis = ev.axis >= 0 && ev.axis < m_identity.axes.size();
+                const std::string letter = onAxis ? QString(m_identity.axes[ev.axis].letter).toStdString() : std::string();
+                const auto unit = onAxis ? m_identity.axes[ev.axis].unit : proto::AxisUnit::Millimetre;
+                if (auto m = eventReasonMessage(ev.kind, *e->reason, letter, unit)) {
+                    ev.detail = std::move(*m);
+                    ev.worded = true;
+                }
+            }
             // Homing moves the coordinate origin, and with it the limits' numbers.
             if (ev.kind == proto::EventKind::HomeDone)
                 refreshLimits();

@@ -254,7 +254,7 @@ void AccuracyRunner::onEvent(const dev::DeviceEvent& e)
         || e.kind == proto::EventKind::LostSteps) {
         const QString letter = e.axis < m_instrument->identity().axes.size() ? QString(m_instrument->identity().axes[e.axis].letter) : QString();
         stopWith(msg::make("accuracy.run.axis_stopped", {msg::verbatim("axis", letter.toStdString()),
-                                                         msg::term("event", proto::eventKindTerm(e.kind)), eventDetail(e)}),
+                                                         msg::term("event", proto::eventKindTerm(e.kind)), dev::eventDetail(e)}),
                  e.kind == proto::EventKind::LostSteps);
     }
 }

@@ -45,7 +45,7 @@ CircleRunner::CircleRunner(dev::Instrument* instrument, QObject* parent) : QObje
                 nextRun();
         } else if (e.kind == proto::EventKind::Stopped || e.kind == proto::EventKind::LimitHit || e.kind == proto::EventKind::Fault) {
             stopWith(msg::make("accuracy.run.axis_stopped", {msg::verbatim("axis", e.axis == m_axisX ? "X" : "Y"),
-                                                             msg::term("event", proto::eventKindTerm(e.kind)), eventDetail(e)}));
+                                                             msg::term("event", proto::eventKindTerm(e.kind)), dev::eventDetail(e)}));
         }
     });
     m_connections << connect(instrument, &dev::Instrument::stateChanged, this, [this](dev::LinkState s) {

@@ -26,9 +26,4 @@ const char* readingKindTerm(ReadingKind k)
     return "accuracy.source_kind.readback";
 }
 
-msg::Arg eventDetail(const dev::DeviceEvent& e)
-{
-    return e.detail.empty() ? msg::verbatim("detail", e.text.toStdString()) : msg::nested("detail", e.detail);
-}
-
 } // namespace jobs

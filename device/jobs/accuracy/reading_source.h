@@ -32,10 +32,6 @@ const char* readingKindName(ReadingKind k);
 /// The term that names the kind for a person: accuracy.source_kind.* (words::term).
 const char* readingKindTerm(ReadingKind k);
 
-/// A device event's "detail" argument: the backend's structured form where it has
-/// one (GRBL's alarms), else the text the device sent, as it sent it.
-msg::Arg eventDetail(const dev::DeviceEvent& e);
-
 /// One stop of a run, as a source needs to know it.
 struct StopContext {
     int index = 0;                       ///< 0-based, in the run's order
