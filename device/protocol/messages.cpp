@@ -57,6 +57,9 @@ const char* errorCodeTerm(ErrorCode c)
     case 16: return "device.error.path_sequence";
     case 17: return "device.error.path_geometry";
     case 18: return "device.error.path_state";
+    case 23: return "device.error.comp_invalid";
+    case 24: return "device.error.comp_sequence";
+    case 25: return "device.error.comp_missing";
     }
     return "device.error.unknown";
 }

@@ -9655,6 +9655,21 @@ A loop this different may oscillate or run away. Apply them?</source>
         <comment>telemetry.history_empty</comment>
         <translation>尚未记录任何历史：请先连接仪器</translation>
     </message>
+    <message>
+        <source>compensation refused</source>
+        <comment>device.error.comp_invalid</comment>
+        <translation>补偿被拒绝</translation>
+    </message>
+    <message>
+        <source>compensation upload out of order</source>
+        <comment>device.error.comp_sequence</comment>
+        <translation>补偿上传顺序错误</translation>
+    </message>
+    <message>
+        <source>no compensation</source>
+        <comment>device.error.comp_missing</comment>
+        <translation>无补偿</translation>
+    </message>
 </context>
 <context>
     <name>words::Durations</name>
@@ -11885,6 +11900,124 @@ A loop this different may oscillate or run away. Apply them?</source>
         <source>found the same instrument (%1), homed, with the plunger at %2 as the run left it</source>
         <comment>recipe.resume.found</comment>
         <translation>找到同一台仪器（%1），已回零，柱塞在 %2，与运行停止时一致</translation>
+    </message>
+</context>
+<context>
+    <name>words::RefusalWords</name>
+    <message>
+        <source>the device does not know this request (type %1)</source>
+        <comment>device.refused.unknown_command</comment>
+        <translation>设备不认识此请求（类型 %1）</translation>
+    </message>
+    <message>
+        <source>the device could not read this request</source>
+        <comment>device.refused.bad_payload</comment>
+        <translation>设备无法读取此请求</translation>
+    </message>
+    <message>
+        <source>the instrument has no axis or channel %1</source>
+        <comment>device.refused.bad_axis</comment>
+        <translation>仪器没有轴或通道 %1</translation>
+    </message>
+    <message>
+        <source>not homed, so it cannot move to %1: home it first</source>
+        <comment>device.refused.not_homed</comment>
+        <translation>未回零，无法移动到 %1：请先回零</translation>
+    </message>
+    <message>
+        <source>the target lies beyond the soft limit at %1</source>
+        <comment>device.refused.soft_limit</comment>
+        <translation>目标超出软限位 %1</translation>
+    </message>
+    <message>
+        <source>still moving or homing</source>
+        <comment>device.refused.busy</comment>
+        <translation>仍在运动或回零</translation>
+    </message>
+    <message>
+        <source>the E-stop is latched: reset it first</source>
+        <comment>device.refused.estop_active</comment>
+        <translation>急停已锁定：请先复位</translation>
+    </message>
+    <message>
+        <source>the telemetry would not fit the link: at most %1 fits</source>
+        <comment>device.refused.over_capacity</comment>
+        <translation>遥测超出链路容量：最多可容纳 %1</translation>
+    </message>
+    <message>
+        <source>a speed, limit, rate or count in the request is out of the device&apos;s range</source>
+        <comment>device.refused.out_of_range</comment>
+        <translation>请求中的速度、限值、速率或数量超出设备范围</translation>
+    </message>
+    <message>
+        <source>the device is in a fault state: reset it first</source>
+        <comment>device.refused.fault</comment>
+        <translation>设备处于故障状态：请先复位</translation>
+    </message>
+    <message>
+        <source>gain %1 is not finite, is negative or is above the device&apos;s limit; nothing changed</source>
+        <comment>device.refused.bad_gains</comment>
+        <translation>增益 %1 不是有限值、为负或超过设备上限；未作任何更改</translation>
+    </message>
+    <message>
+        <source>a tuning test runs on it</source>
+        <comment>device.refused.test_active</comment>
+        <translation>该轴正在运行整定测试</translation>
+    </message>
+    <message>
+        <source>it has no closed loop (PID) to tune</source>
+        <comment>device.refused.not_closed_loop</comment>
+        <translation>该轴没有可整定的闭环（PID）</translation>
+    </message>
+    <message>
+        <source>no test capture to read there (%1 samples captured)</source>
+        <comment>device.refused.no_capture</comment>
+        <translation>该处没有可读取的测试采集数据（已采集 %1 个样本）</translation>
+    </message>
+    <message>
+        <source>the path queue has room for only %1 more segments</source>
+        <comment>device.refused.path_queue_full</comment>
+        <translation>路径队列只能再容纳 %1 段</translation>
+    </message>
+    <message>
+        <source>the device expected path segment %1 next</source>
+        <comment>device.refused.path_sequence</comment>
+        <translation>设备期望的下一段是第 %1 段</translation>
+    </message>
+    <message>
+        <source>path segment %1 cannot be run: an arc&apos;s end is off its circle, or its radius is under two steps</source>
+        <comment>device.refused.path_geometry</comment>
+        <translation>第 %1 段无法执行：圆弧终点不在圆上，或半径小于两步</translation>
+    </message>
+    <message>
+        <source>no path is open to add to: none was begun, its last segment is queued, or it was aborted</source>
+        <comment>device.refused.path_state</comment>
+        <translation>没有可追加的路径：未开始路径、最后一段已入队，或路径已中止</translation>
+    </message>
+    <message>
+        <source>the device cannot apply this compensation; nothing changed</source>
+        <comment>device.refused.comp_invalid</comment>
+        <translation>设备无法应用此补偿；未作任何更改</translation>
+    </message>
+    <message>
+        <source>the compensation upload is out of order: the device expects entry %1</source>
+        <comment>device.refused.comp_sequence</comment>
+        <translation>补偿上传顺序错误：设备期望第 %1 项</translation>
+    </message>
+    <message>
+        <source>no compensation to enable</source>
+        <comment>device.refused.comp_missing</comment>
+        <translation>没有可启用的补偿</translation>
+    </message>
+    <message>
+        <source>axis %1: %2</source>
+        <comment>device.refused.on_axis</comment>
+        <translation>%1 轴：%2</translation>
+    </message>
+    <message>
+        <source>%1 (the device says: %2)</source>
+        <comment>device.refused.device_says</comment>
+        <translation>%1</translation>
     </message>
 </context>
 <context>

@@ -13,6 +13,7 @@ QString capability(const msg::Message& m);  ///< "capability."
 QString accuracy(const msg::Message& m);    ///< "accuracy.", "compensation."
 QString device(const msg::Message& m);      ///< "request.", "link.", "device.", "telemetry."
 QString deviceEvent(const msg::Message& m); ///< "device.why." (event_words.cpp)
+QString refusal(const msg::Message& m);     ///< "device.refused" (refusal_words.cpp)
 QString file(const msg::Message& m);        ///< "file."
 QString grbl(const msg::Message& m);        ///< "grbl."
 QString pattern(const msg::Message& m);     ///< "pattern."

@@ -23,6 +23,7 @@ const std::pair<const char*, SentenceFn> kSentences[] = {
     {"accuracy.", &areas::accuracy},
     {"compensation.", &areas::accuracy},
     {"device.why.", &areas::deviceEvent},
+    {"device.refused", &areas::refusal},
     {"request.", &areas::device},
     {"link.", &areas::device},
     {"device.", &areas::device},

@@ -6,6 +6,7 @@
 // benchpilot_client_commands.cpp.
 #include "device/backends/benchpilot/benchpilot_client.h"
 #include "device/backends/benchpilot/event_reason.h"
+#include "device/backends/benchpilot/refusal_value.h"
 
 #include <algorithm>
 #include <cmath>
@@ -292,8 +293,11 @@ RequestError BenchPilotClient::deviceError(const proto::ErrorReply& e) const
     // The device's own words (firmware text, English) stay beside the code, which is
     // what the wording layer words.
     std::vector<msg::Arg> args{msg::term("code", proto::errorCodeTerm(e.code)), msg::verbatim("detail", e.message)};
-    if (r.axis >= 0 && r.axis < m_identity.axes.size())
+    const bool onAxis = r.axis >= 0 && r.axis < m_identity.axes.size();
+    if (onAxis)
         args.push_back(msg::verbatim("axis", QString(m_identity.axes[r.axis].letter).toStdString()));
+    if (auto v = refusalValue(e, onAxis ? &m_identity.axes[r.axis] : nullptr))
+        args.push_back(std::move(*v));
     r.message = msg::make("device.refused", std::move(args));
     return r;
 }

@@ -1,0 +1,74 @@
+// A device's refusal is worded from its error code, the axis and the code's value in the
+// operator's language: in Chinese without the firmware's English, in English with the
+// firmware's words quoted where they add what the code cannot say.
+#include "device/protocol/messages.h"
+#include "device/protocol/messages_compensation.h"
+#include "sim_session.h"
+#include "widgets/wording/translators.h"
+#include "widgets/wording/wording.h"
+
+#include "../device/pseudo_translation.h"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+constexpr const char* kFirmwareWords = "axis X relay test: amplitude 5.000 mm above 1.000 mm";
+
+msg::Message refusal(int code, bool onAxis = true)
+{
+    std::vector<msg::Arg> args{msg::term("code", proto::errorCodeTerm(static_cast<proto::ErrorCode>(code))),
+                               msg::verbatim("detail", kFirmwareWords)};
+    if (onAxis)
+        args.push_back(msg::verbatim("axis", "X"));
+    args.push_back(msg::real("value", 3, msg::Unit::Mm));
+    return msg::make("device.refused", std::move(args));
+}
+
+const int kCodes[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 23, 24, 25};
+
+} // namespace
+
+TEST(RefusalWords, EveryCodeIsASentenceInChineseWithoutTheFirmwaresEnglish)
+{
+    words::Translators translators;
+    ASSERT_TRUE(translators.setLanguage(QStringLiteral("zh_CN")));
+    static const QRegularExpression han(QStringLiteral("\\p{Han}"));
+    for (int code : kCodes)
+        for (bool onAxis : {true, false}) {
+            const QString zh = words::text(refusal(code, onAxis));
+            EXPECT_TRUE(zh.contains(han)) << code << ": " << zh.toStdString();
+            EXPECT_TRUE(i18ntest::untranslated(zh).isEmpty()) << code << ": " << zh.toStdString();
+            EXPECT_EQ(zh.startsWith(QStringLiteral("X 轴")), onAxis) << code << ": " << zh.toStdString();
+        }
+    translators.setLanguage(QStringLiteral("en"));
+}
+
+TEST(RefusalWords, TheEnglishQuotesTheDeviceOnlyWhereItsWordsAddToTheCode)
+{
+    const words::EnglishScope english;
+    EXPECT_EQ(words::text(refusal(9)).toStdString(), std::string("axis X: a speed, limit, rate or count in the request is out of the device's range "
+                                                                 "(the device says: ") + kFirmwareWords + ")");
+    EXPECT_EQ(words::text(refusal(5)).toStdString(), "axis X: the target lies beyond the soft limit at 3.000 mm");
+    EXPECT_EQ(words::text(refusal(7, false)).toStdString(), "the E-stop is latched: reset it first");
+    // A code this host does not know: its term and the device's words, as before.
+    EXPECT_EQ(words::text(refusal(99)).toStdString(), std::string("unknown error: ") + kFirmwareWords);
+}
+
+TEST(RefusalWords, AnAbsoluteMoveOnAnUnhomedAxisIsRefusedWithTheTargetInTheOperatorsLanguage)
+{
+    itest::SimSession s(proto::DeviceKind::Analyzer);
+    ASSERT_TRUE(s.connect());
+    const auto err = s.call([&](auto cb) { s.client.move({{s.axis('Y'), 50.0}}, false, 0, cb); });
+    ASSERT_TRUE(err);
+    {
+        const words::EnglishScope english;
+        EXPECT_EQ(words::text(err->message).toStdString(), "move refused: axis Y: not homed, so it cannot move to 50.000 mm: home it first");
+    }
+    words::Translators translators;
+    ASSERT_TRUE(translators.setLanguage(QStringLiteral("zh_CN")));
+    const QString zh = words::text(err->message);
+    EXPECT_TRUE(zh.contains(QStringLiteral("Y 轴：未回零"))) << zh.toStdString();
+    EXPECT_TRUE(i18ntest::untranslated(zh).isEmpty()) << zh.toStdString();
+    translators.setLanguage(QStringLiteral("en"));
+}
