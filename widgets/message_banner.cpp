@@ -8,6 +8,8 @@
 #include <QLocale>
 #include <QToolButton>
 
+#include <algorithm>
+
 namespace ui {
 namespace {
 /// `text` cut (with an ellipsis) to what `lines` word-wrapped lines of `width` pixels hold.
@@ -69,7 +71,7 @@ QStringList MessageBanner::texts() const
     return out;
 }
 
-void MessageBanner::show(Level level, const QString& message)
+void MessageBanner::show(Level level, const QString& message, const QString& key)
 {
     if (message.isEmpty())
         return;
@@ -87,7 +89,7 @@ void MessageBanner::show(Level level, const QString& message)
             relabel();
             return;
         }
-    const Entry e{level, text, 1};
+    const Entry e{level, text, 1, key};
     // An unread error is not pushed out of sight by lesser news: that waits behind it.
     if (hasMessage() && m_shown.level == Level::Error && level != Level::Error) {
         m_waiting.append(e);
@@ -106,6 +108,17 @@ void MessageBanner::show(Level level, const QString& message)
         m_waiting.removeAt(drop);
     }
     relabel();
+}
+
+void MessageBanner::withdraw(const QString& key)
+{
+    if (key.isEmpty())
+        return;
+    m_waiting.erase(std::remove_if(m_waiting.begin(), m_waiting.end(), [&](const Entry& e) { return e.key == key; }), m_waiting.end());
+    if (hasMessage() && m_shown.key == key)
+        dismiss();
+    else
+        relabel();
 }
 
 void MessageBanner::dismiss()

@@ -19,7 +19,10 @@ class MessageBanner : public QFrame {
 public:
     enum class Level { Info, Warning, Error };
     explicit MessageBanner(QWidget* parent = nullptr);
-    void show(Level level, const QString& text);
+    /// `key` names a state the message tells of ("estop"): withdraw(key) takes it back
+    /// once that state is over, shown or waiting, so the strip never outlives the fact.
+    void show(Level level, const QString& text, const QString& key = {});
+    void withdraw(const QString& key);
     /// The message shown now (empty when none).
     QString text() const;
     Level level() const { return m_level; }
@@ -48,6 +51,7 @@ private:
         Level level = Level::Info;
         QString text;
         int count = 0;
+        QString key;
     };
     void display(const Entry& e);
     void relabel();

@@ -465,7 +465,10 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
             m_log->addNote(s->kind(), "log.kind.refused", e.message, false);
             return;
         }
-        m_banner->show(ui::MessageBanner::Level::Error, QStringLiteral("%1: %2").arg(s->name(), words::text(e.message)));
+        // Refused because the E-stop was latched: a fact that ends with the reset, as the E-stop's own message does.
+        const bool latched = e.kind == dev::RequestError::Kind::Device && e.code == proto::ErrorCode::EStopActive;
+        m_banner->show(ui::MessageBanner::Level::Error, QStringLiteral("%1: %2").arg(s->name(), words::text(e.message)),
+                       latched ? QStringLiteral("estop") : QString());
         m_log->addNote(s->kind(), "log.kind.refused", e.message, true);
     });
     connect(c, &dev::Instrument::eventReceived, this, [this, s, c](const dev::DeviceEvent& e) {
@@ -531,7 +534,8 @@ void MainWindow::emergencyStop()
     m_banner->show(ui::MessageBanner::Level::Error,
                    positionAtRisk ? tr("E-STOP: all motion halted. A GRBL controller that was moving has lost its position: home "
                                        "it (or unlock it on your word) before absolute moves. Check the machine, then press Reset E-stop.")
-                                  : tr("E-STOP: all motion halted. Check the machine, then press Reset E-stop."));
+                                  : tr("E-STOP: all motion halted. Check the machine, then press Reset E-stop."),
+                   QStringLiteral("estop"));
 }
 
 void MainWindow::resetEStop()
@@ -539,6 +543,7 @@ void MainWindow::resetEStop()
     for (auto* s : m_sessions)
         if (s->instrument()->isReady() && s->instrument()->status().estop)
             s->instrument()->reset();
+    m_banner->withdraw(QStringLiteral("estop"));
     m_banner->show(ui::MessageBanner::Level::Info, tr("E-stop cleared. Re-home the axes if anything was moved by hand."));
 }
 

@@ -127,6 +127,10 @@ TEST_F(JogScreenTest, EscapeIsEStopFromAnyScreenAndResetClearsIt)
     ASSERT_TRUE(waitFor([&] { return reset->isVisible(); }, 2000));
     QTest::mouseClick(reset, Qt::LeftButton);
     ASSERT_TRUE(waitFor([&] { return !analyzer()->status().estop; }, 2000));
+    // The E-stop's message and the refusal it caused end with the latch: nothing on the strip still says E-stop.
+    for (const QString& t : w->banner()->texts())
+        EXPECT_FALSE(t.contains(QStringLiteral("E-STOP")) || t.contains(QStringLiteral("latched"))) << t.toStdString();
+    EXPECT_TRUE(w->banner()->text().contains(QStringLiteral("E-stop cleared"))) << w->banner()->text().toStdString();
     bool eventLogged = false;
     for (int r = 0; r < w->eventLog()->rowCount(); ++r)
         eventLogged = eventLogged || w->eventLog()->rowText(r).contains(QStringLiteral("E-stop"));

@@ -110,3 +110,18 @@ TEST(TrustBanner, ErrorsStayUntilReadAndCountTheirRepeats)
     b.dismiss();
     EXPECT_FALSE(b.hasMessage());
 }
+
+TEST(TrustBanner, AMessageAboutAStateIsWithdrawnWhenTheStateEndsShownOrWaiting)
+{
+    ui::MessageBanner b;
+    b.resize(800, b.sizeHint().height());
+    b.QWidget::show();
+    b.show(ui::MessageBanner::Level::Error, QStringLiteral("E-STOP: all motion halted."), QStringLiteral("estop"));
+    b.show(ui::MessageBanner::Level::Error, QStringLiteral("Stage: link lost."));
+    b.show(ui::MessageBanner::Level::Error, QStringLiteral("Analyzer: move refused: the E-stop is latched."), QStringLiteral("estop"));
+    ASSERT_EQ(b.texts().size(), 3);
+    b.withdraw(QStringLiteral("estop"));
+    EXPECT_EQ(b.texts(), QStringList{QStringLiteral("Stage: link lost.")}) << "the unrelated error stays to be read";
+    b.withdraw(QStringLiteral("estop"));
+    EXPECT_EQ(b.text(), QStringLiteral("Stage: link lost."));
+}
