@@ -1,5 +1,7 @@
 #include "widgets/axis_row.h"
 
+#include "widgets/common/reading_text.h"
+
 #include "widgets/input_policy.h"
 #include "widgets/status_lamp.h"
 
@@ -165,7 +167,7 @@ AxisRow::AxisRow(int axis, const dev::AxisDescriptor& d, proto::DeviceKind kind,
 
 AxisRow::~AxisRow() = default;
 
-QString AxisRow::format(double v) const { return QString::number(v, 'f', m_decimals); }
+QString AxisRow::format(double v) const { return readingText(v, m_decimals); }
 
 std::optional<double> AxisRow::step() const
 {

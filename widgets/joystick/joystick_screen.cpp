@@ -3,6 +3,7 @@
 #include "device/client/joystick_driver.h"
 #include "widgets/joystick/joystick_pad.h"
 #include "widgets/joystick/travel_view.h"
+#include "widgets/common/reading_text.h"
 
 #include "widgets/wording/wording.h"
 
@@ -193,8 +194,7 @@ void JoystickScreen::refresh()
             continue;
         rows += tr("<tr><td><b>%1</b></td><td align=right>%2</td><td align=right>%3</td><td>%4</td></tr>")
                     .arg(id.axes[i].letter)
-                    .arg(st.axes[i].commanded, 0, 'f', 3)
-                    .arg(st.axes[i].measured, 0, 'f', 3)
+                    .arg(readingText(st.axes[i].commanded, 3), readingText(st.axes[i].measured, 3))
                     .arg(st.axes[i].homed ? QString() : tr("not homed"));
     }
     m_readout->setText(tr("<table cellspacing=6><tr><td></td><td>commanded</td><td>%1</td><td></td></tr>%2</table>")
