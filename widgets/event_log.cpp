@@ -69,7 +69,7 @@ QStringList EventLog::cellsOf(const Entry& e) const
         if (e.position) {
             const QString at = e.segment ? tr("segment %1").arg(static_cast<qint64>(*e.position))
                                          : tr("at %1 %2").arg(QLocale().toString(*e.position, 'f', 3), e.unit);
-            details = said.isEmpty() ? at : QStringLiteral("%1 (%2)").arg(said, at);
+            details = said.isEmpty() ? at : tr("%1 (%2)", "an event's detail, then where it happened").arg(said, at);
         }
     } else {
         if (!e.kindTerm.empty())

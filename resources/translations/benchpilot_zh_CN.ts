@@ -4539,6 +4539,11 @@ Keep that log aside and start this test afresh?</source>
         <source>at %1 %2</source>
         <translation>位于 %1 %2</translation>
     </message>
+    <message>
+        <source>%1 (%2)</source>
+        <comment>an event&apos;s detail, then where it happened</comment>
+        <translation>%1（%2）</translation>
+    </message>
 </context>
 <context>
     <name>ui::FitPanel</name>
@@ -11920,16 +11925,6 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>仪器没有轴或通道 %1</translation>
     </message>
     <message>
-        <source>not homed, so it cannot move to %1: home it first</source>
-        <comment>device.refused.not_homed</comment>
-        <translation>未回零，无法移动到 %1：请先回零</translation>
-    </message>
-    <message>
-        <source>the target lies beyond the soft limit at %1</source>
-        <comment>device.refused.soft_limit</comment>
-        <translation>目标超出软限位 %1</translation>
-    </message>
-    <message>
         <source>still moving or homing</source>
         <comment>device.refused.busy</comment>
         <translation>仍在运动或回零</translation>
@@ -12018,6 +12013,16 @@ A loop this different may oscillate or run away. Apply them?</source>
         <source>%1 (the device says: %2)</source>
         <comment>device.refused.device_says</comment>
         <translation>%1</translation>
+    </message>
+    <message>
+        <source>not homed: home it first</source>
+        <comment>device.refused.not_homed</comment>
+        <translation>未回零：请先回零</translation>
+    </message>
+    <message>
+        <source>it would cross the soft limit at %1</source>
+        <comment>device.refused.soft_limit</comment>
+        <translation>将越过软限位 %1</translation>
     </message>
 </context>
 <context>
@@ -12683,32 +12688,32 @@ A loop this different may oscillate or run away. Apply them?</source>
     <message>
         <source>E-stop during %1: the device ended the test and halted the axis; the gains in force are the ones from before (trial gains only ever lived inside the test)</source>
         <comment>tuning.run.estop</comment>
-        <translation>%1期间急停：设备结束了测试并停住该轴；生效的增益仍是原来的（试验增益只在测试中使用）</translation>
+        <translation>%1 期间急停：设备结束了测试并停住该轴；生效的增益仍是原来的（试验增益只在测试中使用）</translation>
     </message>
     <message>
         <source>%1 ended because the device heard nothing from BenchPilot for 0.5 s; the axis holds under its own gains. Resume when the link is steady.</source>
         <comment>tuning.run.host_silent</comment>
-        <translation>%1结束：设备 0.5 s 内未收到 BenchPilot 的消息；该轴以自身增益保持。待连接稳定后按“继续”。</translation>
+        <translation>%1 结束：设备 0.5 s 内未收到 BenchPilot 的消息；该轴以自身增益保持。待连接稳定后按“继续”。</translation>
     </message>
     <message>
         <source>a fault or a switch ended %1; the axis is stopped</source>
         <comment>tuning.run.fault</comment>
-        <translation>故障或开关信号结束了%1；该轴已停止</translation>
+        <translation>故障或开关信号结束了 %1；该轴已停止</translation>
     </message>
     <message>
         <source>aborted during %1: the axis is stopped, its gains unchanged</source>
         <comment>tuning.run.aborted_during</comment>
-        <translation>在%1期间中止：该轴已停止，增益未改变</translation>
+        <translation>在 %1 期间中止：该轴已停止，增益未改变</translation>
     </message>
     <message>
         <source>%1 was stopped (STOP or TEST_ABORT from elsewhere); the axis is stopped, its gains unchanged</source>
         <comment>tuning.run.stopped_elsewhere</comment>
-        <translation>%1被停止（来自其他地方的 STOP 或 TEST_ABORT）；该轴已停止，增益未改变</translation>
+        <translation>%1 被停止（来自其他地方的 STOP 或 TEST_ABORT）；该轴已停止，增益未改变</translation>
     </message>
     <message>
         <source>%1 interrupted: %2. Reconnect, then Resume to run it again.</source>
         <comment>tuning.run.interrupted</comment>
-        <translation>%1被中断：%2。请重新连接，然后按“继续”重新运行。</translation>
+        <translation>%1 被中断：%2。请重新连接，然后按“继续”重新运行。</translation>
     </message>
     <message>
         <source>%1: %2</source>
@@ -12728,12 +12733,12 @@ A loop this different may oscillate or run away. Apply them?</source>
     <message>
         <source>aborted after %1: nothing runs on the target; the gains in force are unchanged</source>
         <comment>tuning.run.aborted_after</comment>
-        <translation>在%1之后中止：对象上没有正在运行的试验；生效的增益未改变</translation>
+        <translation>在 %1 之后中止：对象上没有正在运行的试验；生效的增益未改变</translation>
     </message>
     <message>
         <source>%1 hit the envelope before a cycle could be measured: repeating it with half the step</source>
         <comment>tuning.run.repeat_half_step</comment>
-        <translation>%1在测出一个周期之前就超出了安全包络：以一半阶跃重做</translation>
+        <translation>%1 在测出一个周期之前就超出了安全包络：以一半阶跃重做</translation>
     </message>
     <message>
         <source>ultimate-gain search: %1</source>

@@ -49,13 +49,13 @@ TEST(RefusalWords, TheEnglishQuotesTheDeviceOnlyWhereItsWordsAddToTheCode)
     const words::EnglishScope english;
     EXPECT_EQ(words::text(refusal(9)).toStdString(), std::string("axis X: a speed, limit, rate or count in the request is out of the device's range "
                                                                  "(the device says: ") + kFirmwareWords + ")");
-    EXPECT_EQ(words::text(refusal(5)).toStdString(), "axis X: the target lies beyond the soft limit at 3.000 mm");
+    EXPECT_EQ(words::text(refusal(5)).toStdString(), "axis X: it would cross the soft limit at 3.000 mm");
     EXPECT_EQ(words::text(refusal(7, false)).toStdString(), "the E-stop is latched: reset it first");
     // A code this host does not know: its term and the device's words, as before.
     EXPECT_EQ(words::text(refusal(99)).toStdString(), std::string("unknown error: ") + kFirmwareWords);
 }
 
-TEST(RefusalWords, AnAbsoluteMoveOnAnUnhomedAxisIsRefusedWithTheTargetInTheOperatorsLanguage)
+TEST(RefusalWords, AnAbsoluteMoveOnAnUnhomedAxisIsRefusedInTheOperatorsLanguage)
 {
     itest::SimSession s(proto::DeviceKind::Analyzer);
     ASSERT_TRUE(s.connect());
@@ -63,7 +63,7 @@ TEST(RefusalWords, AnAbsoluteMoveOnAnUnhomedAxisIsRefusedWithTheTargetInTheOpera
     ASSERT_TRUE(err);
     {
         const words::EnglishScope english;
-        EXPECT_EQ(words::text(err->message).toStdString(), "move refused: axis Y: not homed, so it cannot move to 50.000 mm: home it first");
+        EXPECT_EQ(words::text(err->message).toStdString(), "move refused: axis Y: not homed: home it first");
     }
     words::Translators translators;
     ASSERT_TRUE(translators.setLanguage(QStringLiteral("zh_CN")));

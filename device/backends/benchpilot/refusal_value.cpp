@@ -9,7 +9,8 @@ std::optional<msg::Arg> refusalValue(const proto::ErrorReply& e, const AxisDescr
 {
     using proto::ErrorCode;
     const auto code = e.code;
-    if (code == ErrorCode::NotHomed || code == ErrorCode::SoftLimit) {
+    // NotHomed's value is a target only for a move (0 for a test or a path): the sentence needs none.
+    if (code == ErrorCode::SoftLimit) {
         if (!axis)
             return std::nullopt;
         const msg::Unit unit = axis->unit == proto::AxisUnit::Microlitre ? msg::Unit::Ul : msg::Unit::Mm;

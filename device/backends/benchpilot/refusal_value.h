@@ -10,7 +10,7 @@
 
 namespace dev {
 
-/// "value": the target or limit of a NotHomed or SoftLimit refusal in the axis' unit,
+/// "value": the limit of a SoftLimit refusal in the axis' unit,
 /// the rate that fits for OverCapacity, an index or count for the path, capture,
 /// gains and compensation codes; nullopt where the code's value says nothing to a
 /// person (0, device-specific, or a value of unknown unit). `axis`: the axis at
