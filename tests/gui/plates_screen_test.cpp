@@ -172,6 +172,17 @@ TEST_F(PlatesScreenTest, DragSelectsWellsAndTheirStepRunsOnTheSimulator)
     }
 }
 
+// Seen under Xvfb in Chinese: a recipe named 新方案 logged to "--20261127-143319-403.run.jsonl",
+// its name dropped and a leading "--" that any command-line tool takes for an option.
+TEST(PlatesRunLogName, KeepsTheRecipesNameInAnyScriptAndNeverStartsWithADash)
+{
+    const QDateTime at(QDate(2026, 11, 27), QTime(14, 33, 19, 403));
+    EXPECT_EQ(ui::PlatesScreen::runLogName(QStringLiteral("新方案"), at), QStringLiteral("新方案-20261127-143319-403.run.jsonl"));
+    EXPECT_EQ(ui::PlatesScreen::runLogName(QStringLiteral("New recipe"), at), QStringLiteral("New-recipe-20261127-143319-403.run.jsonl"));
+    EXPECT_EQ(ui::PlatesScreen::runLogName(QStringLiteral("--all/../wells "), at), QStringLiteral("all-..-wells-20261127-143319-403.run.jsonl"));
+    EXPECT_EQ(ui::PlatesScreen::runLogName(QStringLiteral(" / "), at), QStringLiteral("recipe-20261127-143319-403.run.jsonl"));
+}
+
 TEST_F(PlatesScreenTest, ClickAndCtrlClickAndHoverShowCoordinatesAndVolume)
 {
     ui::PlateMap* map = screen->plateMap();

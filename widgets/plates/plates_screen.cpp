@@ -490,11 +490,8 @@ bool PlatesScreen::runRecipe()
                           .arg(words::duration(plan.totalTimeS))
                           .arg(deepest)))
         return false;
-    QString safe = name;
-    safe.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9_.-]+")), QStringLiteral("-"));
     QDir().mkpath(m_logDir);
-    const QString log = QDir(m_logDir).filePath(
-        QStringLiteral("%1-%2.run.jsonl").arg(safe, QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss-zzz"))));
+    const QString log = QDir(m_logDir).filePath(runLogName(name, QDateTime::currentDateTime()));
     if (!m_runner->start(log, &error)) {
         emit problem(words::text(error));
         return false;
@@ -549,6 +546,18 @@ void PlatesScreen::importLabware()
                 p.labware = ref;
     });
     emit note(tr("imported %1 (%2 wells) as %3").arg(QString::fromStdString(r.labware->displayName)).arg(r.labware->wells.size()).arg(to));
+}
+
+QString PlatesScreen::runLogName(const QString& recipeName, const QDateTime& when)
+{
+    // Letters and digits of any script stay (a Chinese name reads as itself); a name that
+    // would start with '-' would read as an option to the tools people open logs with.
+    QString stem = recipeName;
+    stem.replace(QRegularExpression(QStringLiteral("[^\\p{L}\\p{N}_.]+")), QStringLiteral("-"));
+    stem.remove(QRegularExpression(QStringLiteral("^[-.]+|-+$")));
+    if (stem.isEmpty())
+        stem = QStringLiteral("recipe");
+    return QStringLiteral("%1-%2.run.jsonl").arg(stem, when.toString(QStringLiteral("yyyyMMdd-HHmmss-zzz")));
 }
 
 } // namespace ui

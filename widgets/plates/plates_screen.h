@@ -8,6 +8,7 @@
 #include "motion/plans/plates/calibration.h"
 #include "motion/plans/recipes/recipe_plan.h"
 
+#include <QDateTime>
 #include <QWidget>
 
 #include <functional>
@@ -40,6 +41,8 @@ public:
     void setCalibrationFile(const QString& path);
     /// Where run logs go.
     void setRunLogDirectory(const QString& dir) { m_logDir = dir; }
+    /// The file name a run of `recipeName` started at `when` logs to.
+    static QString runLogName(const QString& recipeName, const QDateTime& when);
 
     bool openRecipe(const QString& path);
     bool saveRecipe(const QString& path);
