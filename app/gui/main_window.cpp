@@ -445,6 +445,7 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
         (void)i;
     };
     connect(c, &dev::Instrument::stateChanged, this, showState);
+    m_connectionTexts.push_back(showState);  // the link's description is worded: again on a language switch
     connect(c, &dev::Instrument::stateChanged, this, [this, s](dev::LinkState st) {
         if (st == dev::LinkState::Lost)
             m_banner->show(ui::MessageBanner::Level::Error,
@@ -590,6 +591,8 @@ void MainWindow::setLanguage(const QString& language)
 void MainWindow::retranslateUi()
 {
     setWindowTitle(tr("BenchPilot"));
+    for (const auto& reword : m_connectionTexts)
+        reword();
     const std::pair<const char*, QString> titles[] = {
         {"jog", tr("Jog")},         {"plots", tr("Plots")},         {"profiles", tr("Profiles")},
         {"tuning", tr("Tuning")},   {"joystick", tr("Joystick")},   {"patterns", tr("Patterns")},

@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <optional>
+#include <vector>
 
 class QDockWidget;
 class QListWidget;
@@ -139,6 +140,7 @@ private:
     QPushButton* m_reset;
     QLabel* m_statusLabels[2];
     bool m_positionLostShown[2] = {false, false};
+    std::vector<std::function<void()>> m_connectionTexts;  ///< each instrument's connection bar and status text, worded anew
     bool m_latchShown = false;  ///< the status bar shows an E-stop latch
     QDockWidget* m_logDock = nullptr;
     QMenu* m_settingsMenu = nullptr;

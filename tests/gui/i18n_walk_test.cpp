@@ -21,7 +21,10 @@
 #include <QTableWidget>
 
 #include "device/sim/machine_config.h"
+#include "widgets/common/elided_label.h"
 #include "widgets/event_log.h"
+#include "widgets/plates/plates_screen.h"
+#include "widgets/plates/run_panel.h"
 #include "widgets/retranslator.h"
 #include "widgets/wording/translators.h"
 #include "widgets/wording/wording.h"
@@ -227,6 +230,39 @@ TEST(I18nWalk, TheEventLogSaysWhatTheDeviceDidInTheLanguageOnScreen)
     for (int r = before; r < w->eventLog()->rowCount(); ++r)
         halted = halted || w->eventLog()->rowText(r).contains(QStringLiteral("all motion halted"));
     EXPECT_TRUE(halted);
+}
+
+// Seen under Xvfb: switching to English mid-run left "回环 @ 115200 波特" in both connection
+// bars and the run's message lines in Chinese; both were worded once, when they came.
+TEST(I18nWalk, LinesAlreadyShownAreRewordedOnASwitch)
+{
+    words::Translators translators;
+    ASSERT_TRUE(translators.setLanguage(QStringLiteral("zh_CN")));
+    app::MainWindowOptions options = guitest::testWindowOptions();
+    options.translators = &translators;
+    auto w = guitest::openReadyWindow(QSize(1366, 768), options);
+    ASSERT_TRUE(w);
+    ASSERT_TRUE(w->showScreen(QStringLiteral("plates")));
+    emit w->platesScreen()->runner()->message(msg::make("recipe.run.aborted"), false);
+    QApplication::processEvents();
+    auto* lines = w->platesScreen()->runPanel()->findChild<QListWidget*>(QStringLiteral("runMessages"));
+    ASSERT_NE(lines, nullptr);
+    ASSERT_GT(lines->count(), 0);
+    const QString chineseLine = lines->item(lines->count() - 1)->text();
+    auto connectionTexts = [&] {
+        QStringList out;
+        for (auto* l : w->findChildren<ui::ElidedLabel*>())
+            out << l->fullText();
+        return out.join(QLatin1Char('\n'));
+    };
+    ASSERT_TRUE(connectionTexts().contains(QStringLiteral("回环"))) << connectionTexts().toStdString();
+
+    chooseLanguage(*w, QStringLiteral("en"));
+    const QString englishLine = lines->item(lines->count() - 1)->text();
+    EXPECT_NE(englishLine, chineseLine);
+    EXPECT_TRUE(englishLine.endsWith(QStringLiteral("  Aborted by the operator"))) << englishLine.toStdString();
+    EXPECT_FALSE(connectionTexts().contains(QStringLiteral("回环"))) << connectionTexts().toStdString();
+    EXPECT_TRUE(connectionTexts().contains(QStringLiteral("loopback"))) << connectionTexts().toStdString();
 }
 
 TEST(I18nWalk, SwitchingLeavesANameInAComboAsItIs)

@@ -1,8 +1,10 @@
 #include "widgets/plates/run_panel.h"
 #include "widgets/plates/step_texts.h"
 
+#include "device/client/request_error.h"
 #include "widgets/wording/wording.h"
 
+#include <QEvent>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -98,8 +100,10 @@ RunPanel::RunPanel(jobs::RecipeRunner* runner, QWidget* parent) : QWidget(parent
     connect(m_runner, &jobs::RecipeRunner::stateChanged, this, &RunPanel::refresh);
     connect(m_runner, &jobs::RecipeRunner::progressChanged, this, &RunPanel::refresh);
     connect(m_runner, &jobs::RecipeRunner::message, this, [this](const msg::Message& m, bool problemText) {
-        auto* item = new QListWidgetItem(QStringLiteral("%1  %2").arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), words::sentence(words::text(m))), m_messages);
-        item->setToolTip(item->text());  // a line cut with "…" (a long log name) is whole here
+        auto* item = new QListWidgetItem(m_messages);
+        item->setData(Qt::UserRole, QTime::currentTime().toString(QStringLiteral("HH:mm:ss")));
+        item->setData(Qt::UserRole + 1, QVariant::fromValue(m));
+        wordLine(item);
         if (problemText)
             item->setForeground(QColor(0xc6, 0x28, 0x28));
         m_messages->scrollToBottom();
@@ -174,6 +178,22 @@ void RunPanel::refresh()
                                          : tr("Elapsed %1 · ETA %2").arg(duration(p.elapsedS), s == RunState::Finished ? tr("done") : duration(p.etaS)));
     if (p.currentOp >= 0 && p.currentOp < m_table->rowCount() && busy)
         m_table->selectRow(p.currentOp);
+}
+
+void RunPanel::wordLine(QListWidgetItem* item)
+{
+    const auto m = item->data(Qt::UserRole + 1).value<msg::Message>();
+    item->setText(QStringLiteral("%1  %2").arg(item->data(Qt::UserRole).toString(), words::sentence(words::text(m))));
+    item->setToolTip(item->text());  // a line cut with "…" (a long log name) is whole here
+}
+
+void RunPanel::changeEvent(QEvent* event)
+{
+    // The run's messages so far are reworded too: a switch mid-run leaves no line in the old language.
+    if (event->type() == QEvent::LanguageChange)
+        for (int i = 0; i < m_messages->count(); ++i)
+            wordLine(m_messages->item(i));
+    QWidget::changeEvent(event);
 }
 
 } // namespace ui

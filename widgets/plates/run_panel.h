@@ -10,6 +10,7 @@
 
 class QLabel;
 class QListWidget;
+class QListWidgetItem;
 class QProgressBar;
 class QPushButton;
 class QTableWidget;
@@ -35,8 +36,13 @@ signals:
     void resumeFromLogRequested();
     void problem(const QString& message);
 
+protected:
+    void changeEvent(QEvent* event) override;
+
 private:
     void refresh();
+    /// Words a message line from what it keeps (its time and message), in the language shown.
+    static void wordLine(QListWidgetItem* item);
 
     jobs::RecipeRunner* m_runner;
     jobs::InterruptedDecider m_decide;
