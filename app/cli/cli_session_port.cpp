@@ -43,7 +43,7 @@ bool CliSession::choosePortBackend(dev::Transport* transport)
     if (protocol == files::MachineProfile::Protocol::Auto) {
         dev::ProtocolProbe probe(transport);
         probe.start();
-        spinUntil([&probe] { return probe.done(); }, dev::ProtocolProbe::kTotalMs + 2000);
+        spinUntil([&probe] { return probe.done(); }, dev::ProtocolProbe::kLongestMs + 2000);
         if (!probe.done()) {
             report(tr("cannot connect to %1: the protocol could not be detected").arg(transport->describe()));
             return false;

@@ -33,7 +33,7 @@ proto::DeviceKind detectInstrument(const QString& port, qint32 baud)
     dev::ProtocolProbe probe(&transport);
     QEventLoop loop;
     QObject::connect(&probe, &dev::ProtocolProbe::finished, &loop, &QEventLoop::quit);
-    QTimer::singleShot(dev::ProtocolProbe::kTotalMs + 2000, &loop, &QEventLoop::quit);
+    QTimer::singleShot(dev::ProtocolProbe::kLongestMs + 2000, &loop, &QEventLoop::quit);
     probe.start();
     if (!probe.done())
         loop.exec();

@@ -51,6 +51,9 @@ public:
     /// rate can look like damaged frames too: it is then reported after kNoisyTotalMs.
     static constexpr int kNoisyRepeatMs = 100;
     static constexpr int kNoisyTotalMs = 10000;
+    /// The longest a probe takes before it finishes by itself: what a caller waiting on
+    /// it must allow, or it gives up on a noisy line the probe would still have read.
+    static constexpr int kLongestMs = kNoisyTotalMs > kTotalMs ? kNoisyTotalMs : kTotalMs;
 
     explicit ProtocolProbe(Transport* transport, QObject* parent = nullptr);
     ~ProtocolProbe() override;

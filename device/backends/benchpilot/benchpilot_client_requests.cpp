@@ -214,8 +214,12 @@ void BenchPilotClient::checkTimeouts()
         return e;
     };
     // Given up: everything while connecting to a silent device; otherwise a request the
-    // device has ignored for kRequestGiveUpMs while it kept talking.
-    auto givenUp = [&](const Request& r) { return silent || now - r.firstSentMs > kRequestGiveUpMs; };
+    // device has ignored for kRequestGiveUpMs while it kept talking. While connecting the
+    // handshake's own patience (kConnectGiveUpMs, in `silent`) rules: the 5 s of a request
+    // cut a HELLO short on a noisy line whose device was answering.
+    auto givenUp = [&](const Request& r) {
+        return silent || (m_state != LinkState::Connecting && now - r.firstSentMs > kRequestGiveUpMs);
+    };
     std::vector<Request> expired;
     if (m_inFlight && !m_queue.empty()) {
         Request& r = m_queue.front();
