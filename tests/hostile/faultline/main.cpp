@@ -111,7 +111,15 @@ public:
             char buf[4096];
             for (;;) {
                 const ssize_t n = ::read(m_device, buf, sizeof buf);
-                if (n <= 0)
+                if (n == 0 || (n < 0 && errno == EIO)) {
+                    // The simulator closed its end: nothing will come again. Reading on would
+                    // spin the notifier at full speed and load the very machine being measured.
+                    m_deviceRead->setEnabled(false);
+                    std::fprintf(stderr, "bp-faultline: the device closed its end\n");
+                    QCoreApplication::quit();
+                    return;
+                }
+                if (n < 0)
                     break;
                 send(kToHost, QByteArray(buf, static_cast<qsizetype>(n)));
             }
