@@ -47,7 +47,8 @@ const Row kRows[] = {
 /// Codes whose value cannot say what the firmware's words do.
 bool firmwareAddsTo(const std::string& name)
 {
-    return name == "out_of_range" || name == "bad_payload" || name == "fault" || name == "comp_invalid" || name == "unknown_command";
+    return name == "out_of_range" || name == "bad_payload" || name == "fault" || name == "comp_invalid" || name == "unknown_command"
+           || name == "bad_gains";  // which value it was (NaN, 1e9) and the set kept
 }
 
 } // namespace
