@@ -73,9 +73,21 @@ QStringList MessageBanner::texts() const
 
 void MessageBanner::show(Level level, const QString& message, const QString& key)
 {
-    if (message.isEmpty())
+    add(Entry{level, message, 1, key, {}});
+}
+
+void MessageBanner::show(Level level, const Wording& wording, const QString& key)
+{
+    add(Entry{level, wording ? wording() : QString(), 1, key, wording});
+}
+
+void MessageBanner::add(Entry e)
+{
+    if (e.text.isEmpty())
         return;
-    const QString text = words::sentence(message);
+    e.text = words::sentence(e.text);
+    const QString& text = e.text;
+    const Level level = e.level;
     if (hasMessage() && text == m_shown.text) {
         ++m_shown.count;
         m_shown.level = std::max(m_shown.level, level);
@@ -89,7 +101,6 @@ void MessageBanner::show(Level level, const QString& message, const QString& key
             relabel();
             return;
         }
-    const Entry e{level, text, 1, key};
     // An unread error is not pushed out of sight by lesser news: that waits behind it.
     if (hasMessage() && m_shown.level == Level::Error && level != Level::Error) {
         m_waiting.append(e);
@@ -174,8 +185,16 @@ void MessageBanner::resizeEvent(QResizeEvent* event)
 void MessageBanner::changeEvent(QEvent* event)
 {
     QFrame::changeEvent(event);
-    if (event->type() == QEvent::LanguageChange)
+    if (event->type() == QEvent::LanguageChange) {
+        auto reword = [](Entry& e) {
+            if (e.wording)
+                e.text = words::sentence(e.wording());
+        };
+        reword(m_shown);
+        for (Entry& w : m_waiting)
+            reword(w);
         relabel();
+    }
 }
 
 } // namespace ui

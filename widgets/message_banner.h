@@ -3,6 +3,8 @@
 #include <QList>
 #include <QTimer>
 
+#include <functional>
+
 class QLabel;
 class QToolButton;
 
@@ -22,6 +24,10 @@ public:
     /// `key` names a state the message tells of ("estop"): withdraw(key) takes it back
     /// once that state is over, shown or waiting, so the strip never outlives the fact.
     void show(Level level, const QString& text, const QString& key = {});
+    /// A message worded by `wording`, and worded again when the language changes (shown or
+    /// waiting), so a switch leaves no line in the old language.
+    using Wording = std::function<QString()>;
+    void show(Level level, const Wording& wording, const QString& key = {});
     void withdraw(const QString& key);
     /// The message shown now (empty when none).
     QString text() const;
@@ -52,7 +58,9 @@ private:
         QString text;
         int count = 0;
         QString key;
+        Wording wording;  ///< none: the text as it came
     };
+    void add(Entry e);
     void display(const Entry& e);
     void relabel();
 

@@ -428,10 +428,11 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
     // motion): say so once, and what to do.
     connect(c, &dev::Instrument::statusChanged, this, [this, s, i](const dev::InstrumentStatus& st) {
         if (st.positionLost && !m_positionLostShown[i])
-            m_banner->show(ui::MessageBanner::Level::Error,
-                           tr("%1: the controller no longer trusts its position (an alarm, an E-stop or a reset while it was "
-                              "moving). Home it, or Unlock on the Jog screen to take the position it believes.")
-                               .arg(s->name()));
+            m_banner->show(ui::MessageBanner::Level::Error, [s] {
+                return tr("%1: the controller no longer trusts its position (an alarm, an E-stop or a reset while it was "
+                          "moving). Home it, or Unlock on the Jog screen to take the position it believes.")
+                    .arg(s->name());
+            });
         m_positionLostShown[i] = st.positionLost;
     });
     auto showState = [this, i, c, bar] {
@@ -448,14 +449,15 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
     m_connectionTexts.push_back(showState);  // the link's description is worded: again on a language switch
     connect(c, &dev::Instrument::stateChanged, this, [this, s](dev::LinkState st) {
         if (st == dev::LinkState::Lost)
-            m_banner->show(ui::MessageBanner::Level::Error,
-                           tr("%1: link lost. Motion on the instrument stops by itself; reconnect when the cable is back.").arg(s->name()));
+            m_banner->show(ui::MessageBanner::Level::Error, [s] {
+                return tr("%1: link lost. Motion on the instrument stops by itself; reconnect when the cable is back.").arg(s->name());
+            });
         m_log->addNote(s->kind(), "log.kind.link", msg::make("telemetry.link_state", {msg::term("state", dev::linkStateTerm(st))}),
                        st == dev::LinkState::Lost);
     });
     connect(c, &dev::Instrument::statusChanged, this, [this] { updateEStopUi(); });
     connect(c, &dev::Instrument::linkError, this, [this, s](const msg::Message& m) {
-        m_banner->show(ui::MessageBanner::Level::Error, QStringLiteral("%1: %2").arg(s->name(), words::text(m)));
+        m_banner->show(ui::MessageBanner::Level::Error, [s, m] { return QStringLiteral("%1: %2").arg(s->name(), words::text(m)); });
         m_log->addNote(s->kind(), "log.kind.link_error", m, true);
     });
     connect(c, &dev::Instrument::requestFailed, this, [this, s](const dev::RequestError& e) {
@@ -468,15 +470,15 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
         }
         // Refused because the E-stop was latched: a fact that ends with the reset, as the E-stop's own message does.
         const bool latched = e.kind == dev::RequestError::Kind::Device && e.code == proto::ErrorCode::EStopActive;
-        m_banner->show(ui::MessageBanner::Level::Error, QStringLiteral("%1: %2").arg(s->name(), words::text(e.message)),
-                       latched ? QStringLiteral("estop") : QString());
+        m_banner->show(
+            ui::MessageBanner::Level::Error, [s, why = e.message] { return QStringLiteral("%1: %2").arg(s->name(), words::text(why)); },
+            latched ? QStringLiteral("estop") : QString());
         m_log->addNote(s->kind(), "log.kind.refused", e.message, true);
     });
     connect(c, &dev::Instrument::eventReceived, this, [this, s, c](const dev::DeviceEvent& e) {
         m_log->addEvent(s->kind(), c->identity(), e);
         if (e.kind == proto::EventKind::LimitHit || e.kind == proto::EventKind::Fault || e.kind == proto::EventKind::LostSteps)
-            m_banner->show(ui::MessageBanner::Level::Warning,
-                           QStringLiteral("%1: %2").arg(s->name(), words::eventDetail(e)));
+            m_banner->show(ui::MessageBanner::Level::Warning, [s, e] { return QStringLiteral("%1: %2").arg(s->name(), words::eventDetail(e)); });
     });
     showState();
 }
@@ -532,11 +534,14 @@ void MainWindow::emergencyStop()
     bool positionAtRisk = false;
     for (auto* s : m_sessions)
         positionAtRisk = positionAtRisk || (s->instrument()->isReady() && !s->instrument()->capabilities().testFlag(dev::Capability::StopsOnHostLoss));
-    m_banner->show(ui::MessageBanner::Level::Error,
-                   positionAtRisk ? tr("E-STOP: all motion halted. A GRBL controller that was moving has lost its position: home "
+    m_banner->show(
+        ui::MessageBanner::Level::Error,
+        [positionAtRisk] {
+            return positionAtRisk ? tr("E-STOP: all motion halted. A GRBL controller that was moving has lost its position: home "
                                        "it (or unlock it on your word) before absolute moves. Check the machine, then press Reset E-stop.")
-                                  : tr("E-STOP: all motion halted. Check the machine, then press Reset E-stop."),
-                   QStringLiteral("estop"));
+                                  : tr("E-STOP: all motion halted. Check the machine, then press Reset E-stop.");
+        },
+        QStringLiteral("estop"));
 }
 
 void MainWindow::resetEStop()
@@ -545,7 +550,7 @@ void MainWindow::resetEStop()
         if (s->instrument()->isReady() && s->instrument()->status().estop)
             s->instrument()->reset();
     m_banner->withdraw(QStringLiteral("estop"));
-    m_banner->show(ui::MessageBanner::Level::Info, tr("E-stop cleared. Re-home the axes if anything was moved by hand."));
+    m_banner->show(ui::MessageBanner::Level::Info, [] { return tr("E-stop cleared. Re-home the axes if anything was moved by hand."); });
 }
 
 void MainWindow::buildLanguageMenu()

@@ -18,11 +18,13 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QTabWidget>
+#include <QTest>
 #include <QTableWidget>
 
 #include "device/sim/machine_config.h"
 #include "widgets/common/elided_label.h"
 #include "widgets/event_log.h"
+#include "widgets/message_banner.h"
 #include "widgets/plates/plates_screen.h"
 #include "widgets/plates/run_panel.h"
 #include "widgets/retranslator.h"
@@ -233,7 +235,7 @@ TEST(I18nWalk, TheEventLogSaysWhatTheDeviceDidInTheLanguageOnScreen)
 }
 
 // Seen under Xvfb: switching to English mid-run left "回环 @ 115200 波特" in both connection
-// bars and the run's message lines in Chinese; both were worded once, when they came.
+// bars, the run's message lines and the banner in Chinese; each was worded once, when it came.
 TEST(I18nWalk, LinesAlreadyShownAreRewordedOnASwitch)
 {
     words::Translators translators;
@@ -256,8 +258,11 @@ TEST(I18nWalk, LinesAlreadyShownAreRewordedOnASwitch)
         return out.join(QLatin1Char('\n'));
     };
     ASSERT_TRUE(connectionTexts().contains(QStringLiteral("回环"))) << connectionTexts().toStdString();
+    QTest::keyClick(w.get(), Qt::Key_Escape);  // the E-stop's banner, an error that waits to be read
+    ASSERT_TRUE(w->banner()->text().contains(QStringLiteral("急停"))) << w->banner()->text().toStdString();
 
     chooseLanguage(*w, QStringLiteral("en"));
+    EXPECT_TRUE(w->banner()->text().startsWith(QStringLiteral("E-STOP"))) << w->banner()->text().toStdString();
     const QString englishLine = lines->item(lines->count() - 1)->text();
     EXPECT_NE(englishLine, chineseLine);
     EXPECT_TRUE(englishLine.endsWith(QStringLiteral("  Aborted by the operator"))) << englishLine.toStdString();
