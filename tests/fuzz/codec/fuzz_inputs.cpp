@@ -122,6 +122,9 @@ Bytes validPayload(Rng& r, std::uint8_t type)
 {
     using namespace proto;
     switch (type) {
+    // HELLO: as a 1.0 host (empty), or with flags, so sessions that read extension blocks
+    // and event reasons (bit 1) are driven too.
+    case 0x01: return r.chance(30) ? Bytes{} : encode(HelloRequest{static_cast<std::uint8_t>(r.below(4))});
     case 0x03: return encode(HomeRequest{randMask(r)});
     case 0x04: {
         MoveRequest m;
@@ -275,6 +278,12 @@ Bytes validPayload(Rng& r, std::uint8_t type)
         e.deviceTimeUs = r.next();
         e.position = randPosition(r);
         e.text = randText(r);
+        if (r.chance(50)) {
+            EventReason why{static_cast<std::uint8_t>(1 + r.below(255)), {}};
+            for (std::size_t i = r.below(kMaxEventReasonValues + 1); i > 0; --i)
+                why.values.push_back(static_cast<double>(randPosition(r)) / 1e6);
+            e.reason = std::move(why);
+        }
         return encode(e);
     }
     case 0xE1: {
