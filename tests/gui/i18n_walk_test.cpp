@@ -207,13 +207,21 @@ TEST(I18nWalk, SwitchingLanguageRewordsEveryOpenScreenWithoutARestart)
     EXPECT_TRUE(chinese.isEmpty()) << "left in Chinese after switching back:\n" << chinese.join(QLatin1Char('\n')).toStdString();
 }
 
+/// A window ready on both simulators at 1366 × 768, in Chinese; its Language menu switches
+/// `translators`.
+std::unique_ptr<app::MainWindow> openInChinese(words::Translators& translators)
+{
+    if (!translators.setLanguage(QStringLiteral("zh_CN")))
+        return nullptr;
+    app::MainWindowOptions options = guitest::testWindowOptions();
+    options.translators = &translators;
+    return guitest::openReadyWindow(QSize(1366, 768), options);
+}
+
 TEST(I18nWalk, TheEventLogSaysWhatTheDeviceDidInTheLanguageOnScreen)
 {
     words::Translators translators;
-    ASSERT_TRUE(translators.setLanguage(QStringLiteral("zh_CN")));
-    app::MainWindowOptions options = guitest::testWindowOptions();
-    options.translators = &translators;
-    auto w = guitest::openReadyWindow(QSize(1366, 768), options);
+    auto w = openInChinese(translators);
     ASSERT_TRUE(w);
     dev::Instrument* stage = w->stage()->instrument();
     const int before = w->eventLog()->rowCount();
@@ -239,10 +247,7 @@ TEST(I18nWalk, TheEventLogSaysWhatTheDeviceDidInTheLanguageOnScreen)
 TEST(I18nWalk, LinesAlreadyShownAreRewordedOnASwitch)
 {
     words::Translators translators;
-    ASSERT_TRUE(translators.setLanguage(QStringLiteral("zh_CN")));
-    app::MainWindowOptions options = guitest::testWindowOptions();
-    options.translators = &translators;
-    auto w = guitest::openReadyWindow(QSize(1366, 768), options);
+    auto w = openInChinese(translators);
     ASSERT_TRUE(w);
     ASSERT_TRUE(w->showScreen(QStringLiteral("plates")));
     emit w->platesScreen()->runner()->message(msg::make("recipe.run.aborted"), false);
