@@ -194,7 +194,7 @@ QString sentence(const QString& text)
 
 QString eventDetail(const dev::DeviceEvent& e)
 {
-    return e.worded || !e.detail.empty() ? text(e.detail) : e.text;
+    return value(dev::eventDetail(e));  // one rule for which to show: dev::eventDetail's
 }
 
 QString text(const msg::Message& m)

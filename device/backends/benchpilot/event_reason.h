@@ -15,6 +15,6 @@ namespace dev {
 /// does not know (the device's text is shown instead), an empty message when the
 /// reason adds nothing to the kind (a path that started or finished as planned).
 std::optional<msg::Message> eventReasonMessage(proto::EventKind kind, const proto::EventReason& why, const std::string& letter,
-                                proto::AxisUnit unit);
+                                               proto::AxisUnit unit);
 
 } // namespace dev
