@@ -9675,6 +9675,16 @@ A loop this different may oscillate or run away. Apply them?</source>
         <comment>device.error.comp_missing</comment>
         <translation>无补偿</translation>
     </message>
+    <message>
+        <source>no whole answer from %1 within %2, only damaged frames (%3): a noisy line or a wrong baud rate; check the cable and the baud rate</source>
+        <comment>link.only_damaged</comment>
+        <translation>%2 内未收到 %1 的完整应答，只收到损坏的帧（%3 个）：线路噪声过大或波特率错误；请检查电缆和波特率</translation>
+    </message>
+    <message>
+        <source>%1 went silent while connecting: only damaged frames came (%2), then nothing for %3; check power and cable</source>
+        <comment>link.went_silent</comment>
+        <translation>%1 在连接过程中停止应答：只收到损坏的帧（%2 个），之后 %3 内没有任何数据；请检查电源和电缆</translation>
+    </message>
 </context>
 <context>
     <name>words::Durations</name>

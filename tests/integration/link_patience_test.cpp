@@ -73,6 +73,37 @@ TEST(LinkPatience, AHandshakeKeepsTryingPastFiveSecondsWhileDamagedRepliesShowTh
     EXPECT_TRUE(s.linkErrors.isEmpty()) << text(s.linkErrors);
 }
 
+// A connect that fails says what the line carried: "no answer … check power" had been
+// the message for a line whose every answer arrived damaged too, which sent the operator
+// to the power switch instead of the cable (the hostile campaign's dead-line hunt).
+TEST(LinkPatience, AConnectWhoseEveryAnswerArrivesDamagedSaysSoWhenItGivesUp)
+{
+    SimSession s(proto::DeviceKind::Analyzer);
+    s.link.pair().setFaults(LoopbackPair::B, LinkFaults::bytes(0.05, 17));  // a HELLO reply never arrives whole
+    ASSERT_FALSE(s.connect(dev::BenchPilotClient::kConnectGiveUpMs + 3000));
+    ASSERT_EQ(s.linkErrors.size(), 1) << text(s.linkErrors);
+    EXPECT_TRUE(s.linkErrors.first().startsWith(QStringLiteral("link.only_damaged{"))) << text(s.linkErrors);
+    EXPECT_FALSE(s.linkErrors.first().contains(QStringLiteral("damaged=0"))) << text(s.linkErrors);
+}
+
+TEST(LinkPatience, ADeviceThatGoesSilentMidConnectIsToldFromOneThatNeverAnswered)
+{
+    SimSession s(proto::DeviceKind::Analyzer);
+    s.link.pair().setFaults(LoopbackPair::B, LinkFaults::bytes(0.05, 17));
+    QTimer::singleShot(1000, &s.client, [&] {
+        LinkFaults mute;
+        mute.filter = [](const QByteArray&) { return QByteArray(); };
+        s.link.pair().setFaults(LoopbackPair::B, mute);
+    });
+    QElapsedTimer took;
+    took.start();
+    ASSERT_FALSE(s.connect(dev::BenchPilotClient::kConnectGiveUpMs + 3000));
+    // 2 s of silence after the last damaged frame, not the handshake's 10 s.
+    EXPECT_LT(took.elapsed(), dev::BenchPilotClient::kConnectGiveUpMs);
+    ASSERT_EQ(s.linkErrors.size(), 1) << text(s.linkErrors);
+    EXPECT_TRUE(s.linkErrors.first().startsWith(QStringLiteral("link.went_silent{"))) << text(s.linkErrors);
+}
+
 TEST(LinkPatience, HandshakeAndRequestsRideThroughOnePercentByteFaults)
 {
     // The test waits as long as the client itself would before it gives up; the client's

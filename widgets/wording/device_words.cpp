@@ -40,6 +40,8 @@ const Row kRows[] = {
     {"link.disconnected", QT_TRANSLATE_NOOP3("words::DeviceWords", "disconnected", "link.disconnected")},
     {"link.lost", QT_TRANSLATE_NOOP3("words::DeviceWords", "link lost: %1", "link.lost"), "cause"},
     {"link.no_answer", QT_TRANSLATE_NOOP3("words::DeviceWords", "no answer from %1: check power, cable and baud rate", "link.no_answer"), "link"},
+    {"link.only_damaged", QT_TRANSLATE_NOOP3("words::DeviceWords", "no whole answer from %1 within %2, only damaged frames (%3): a noisy line or a wrong baud rate; check the cable and the baud rate", "link.only_damaged"), "link,seconds,damaged"},
+    {"link.went_silent", QT_TRANSLATE_NOOP3("words::DeviceWords", "%1 went silent while connecting: only damaged frames came (%2), then nothing for %3; check power and cable", "link.went_silent"), "link,damaged,seconds"},
     {"link.not_benchpilot", QT_TRANSLATE_NOOP3("words::DeviceWords", "%1 answered HELLO with something that is not BenchPilot protocol", "link.not_benchpilot"), "link"},
     {"link.protocol_version", QT_TRANSLATE_NOOP3("words::DeviceWords", "the device speaks protocol version %1; this BenchPilot speaks version %2", "link.protocol_version"), "device,host"},
     {"link.stopped_answering", QT_TRANSLATE_NOOP3("words::DeviceWords", "the device stopped answering", "link.stopped_answering")},

@@ -58,6 +58,7 @@ void BenchPilotClient::setTransport(Transport* transport)
             return;
         m_decoder.reset();
         m_connectStartedMs = nowMs();
+        m_damagedAtConnect = m_decoder.stats().crcErrors + m_decoder.stats().malformed;
         m_timeoutTimer.start();
         sayHello(true);
     });
@@ -153,6 +154,26 @@ void BenchPilotClient::sayHello(bool readsExtensions)
          [this, readsExtensions](const auto& err, const auto& reply) { onHello(err, reply, readsExtensions); });
 }
 
+/// Why a connect got no whole HELLO reply, in the shape the line had: nothing at all (power,
+/// cable, port), frames that all arrived damaged until the handshake's patience ran out (a
+/// noisy line or a wrong baud rate), or damaged frames and then silence (the device went
+/// away mid-connect). One "no answer" for all three sent the operator to the wrong cause.
+msg::Message BenchPilotClient::connectUnanswered() const
+{
+    const msg::Arg link = msg::verbatim("link", linkDescription().toStdString());
+    const auto& ds = m_decoder.stats();
+    const quint64 all = ds.crcErrors + ds.malformed;
+    const quint64 damaged = all > m_damagedAtConnect ? all - m_damagedAtConnect : 0;
+    if (damaged == 0)
+        return msg::make("link.no_answer", {link});
+    const qint64 now = nowMs();
+    const msg::Arg frames = msg::integer("damaged", static_cast<long long>(damaged));
+    if (now - m_connectStartedMs >= kConnectGiveUpMs)
+        return msg::make("link.only_damaged", {link, msg::real("seconds", (now - m_connectStartedMs) / 1000.0, msg::Unit::S), frames});
+    return msg::make("link.went_silent",
+                     {link, frames, msg::real("seconds", (now - std::max(m_lastDamagedFrameMs, m_lastFrameMs)) / 1000.0, msg::Unit::S)});
+}
+
 void BenchPilotClient::onHello(const std::optional<RequestError>& err, const proto::Bytes& payload, bool askedExtensions)
 {
     if (m_state != LinkState::Connecting)
@@ -171,9 +192,7 @@ void BenchPilotClient::onHello(const std::optional<RequestError>& err, const pro
         return;
     }
     if (err) {
-        fail(err->kind == RequestError::Kind::Timeout
-                 ? msg::make("link.no_answer", {msg::verbatim("link", linkDescription().toStdString())})
-                 : err->message);
+        fail(err->kind == RequestError::Kind::Timeout ? connectUnanswered() : err->message);
         return;
     }
     const auto h = proto::decodeHelloReply(payload);

@@ -140,6 +140,7 @@ private:
     void addRttSample(double ms);
     void sayHello(bool readsExtensions);
     void onHello(const std::optional<RequestError>& err, const proto::Bytes& payload, bool askedExtensions);
+    msg::Message connectUnanswered() const;
     void pollStatus();
     void applyStatus(const proto::Bytes& payload);
     void refreshLimits(std::function<void()> then = {});
@@ -182,6 +183,7 @@ private:
     qint64 m_lastFrameMs = -1;            ///< when a good frame (reply, event, telemetry) last arrived
     qint64 m_lastDamagedFrameMs = -1;     ///< when a frame with a bad CRC or shape last arrived
     qint64 m_connectStartedMs = 0;        ///< when the transport opened and HELLO went out
+    quint64 m_damagedAtConnect = 0;       ///< the decoder's damaged frames when this connect began
     QHash<int, double> m_jogs;            ///< axis → velocity (axis units/s) while held
     QVector<proto::ChannelRef> m_channels;
     int m_rateHz = 0;
