@@ -104,6 +104,40 @@ TEST(LinkPatience, ADeviceThatGoesSilentMidConnectIsToldFromOneThatNeverAnswered
     EXPECT_TRUE(s.linkErrors.first().startsWith(QStringLiteral("link.went_silent{"))) << text(s.linkErrors);
 }
 
+// Found under Xvfb: a scan's cable pulled, put back 10 s later, Connect pressed; the GUI
+// said "connecting" for 12 s on a line that carried the device's answer at once. The
+// first timeout check of the new connect took the time since the old link's last check
+// for the host's own event loop held up, and put the HELLO's retry off by all of it: a
+// first reply lost or damaged then cost as long as the cable had been out.
+TEST(LinkPatience, AReconnectRetriesAtOnceHoweverLongTheLinkWasDown)
+{
+    SimSession s(proto::DeviceKind::Analyzer);
+    ASSERT_TRUE(s.connect()) << text(s.linkErrors);
+    s.client.disconnectLink();
+    QElapsedTimer down;
+    down.start();
+    waitFor([] { return false; }, 3000);  // the cable out for 3 s
+    ASSERT_GE(down.elapsed(), 2500);  // a coarse timer may end the wait a little early
+    bool lostOne = false;  // the first HELLO reply of the reconnect does not arrive
+    LinkFaults f;
+    f.filter = [&lostOne](const QByteArray& bytes) {
+        if (!lostOne) {
+            for (const auto& fr : framesIn(bytes))
+                if (fr.type == proto::replyTypeOf(proto::MsgType::Hello)) {
+                    lostOne = true;
+                    return QByteArray();
+                }
+        }
+        return bytes;
+    };
+    s.link.pair().setFaults(LoopbackPair::B, f);
+    QElapsedTimer took;
+    took.start();
+    ASSERT_TRUE(s.connect(dev::BenchPilotClient::kConnectGiveUpMs)) << text(s.linkErrors);
+    EXPECT_TRUE(lostOne) << "no reply was lost: no test";
+    EXPECT_LT(took.elapsed(), 1500) << "the lost reply's retry waited for the time the link was down";
+}
+
 TEST(LinkPatience, HandshakeAndRequestsRideThroughOnePercentByteFaults)
 {
     // The test waits as long as the client itself would before it gives up; the client's

@@ -59,6 +59,9 @@ void BenchPilotClient::setTransport(Transport* transport)
         m_decoder.reset();
         m_connectStartedMs = nowMs();
         m_damagedAtConnect = m_decoder.stats().crcErrors + m_decoder.stats().malformed;
+        // The last check of an earlier link is no measure of this one: counted as a hold-up
+        // of the host's event loop, it put the first retry off by as long as the link was down.
+        m_lastCheckMs = 0;
         m_timeoutTimer.start();
         sayHello(true);
     });
