@@ -447,20 +447,26 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
     };
     connect(c, &dev::Instrument::stateChanged, this, showState);
     m_connectionTexts.push_back(showState);  // the link's description is worded: again on a language switch
-    connect(c, &dev::Instrument::stateChanged, this, [this, s](dev::LinkState st) {
+    // A lost link, and what it cut short, are a state that ends once the link is ready again:
+    // a banner still saying "link lost" over a working link is the screen contradicting the machine.
+    const QString linkKey = QStringLiteral("link.%1").arg(i);
+    connect(c, &dev::Instrument::stateChanged, this, [this, s, linkKey](dev::LinkState st) {
         if (st == dev::LinkState::Lost)
-            m_banner->show(ui::MessageBanner::Level::Error, [s] {
-                return tr("%1: link lost. Motion on the instrument stops by itself; reconnect when the cable is back.").arg(s->name());
-            });
+            m_banner->show(
+                ui::MessageBanner::Level::Error,
+                [s] { return tr("%1: link lost. Motion on the instrument stops by itself; reconnect when the cable is back.").arg(s->name()); },
+                linkKey);
+        if (st == dev::LinkState::Ready)
+            m_banner->withdraw(linkKey);
         m_log->addNote(s->kind(), "log.kind.link", msg::make("telemetry.link_state", {msg::term("state", dev::linkStateTerm(st))}),
                        st == dev::LinkState::Lost);
     });
     connect(c, &dev::Instrument::statusChanged, this, [this] { updateEStopUi(); });
-    connect(c, &dev::Instrument::linkError, this, [this, s](const msg::Message& m) {
-        m_banner->show(ui::MessageBanner::Level::Error, [s, m] { return QStringLiteral("%1: %2").arg(s->name(), words::text(m)); });
+    connect(c, &dev::Instrument::linkError, this, [this, s, linkKey](const msg::Message& m) {
+        m_banner->show(ui::MessageBanner::Level::Error, [s, m] { return QStringLiteral("%1: %2").arg(s->name(), words::text(m)); }, linkKey);
         m_log->addNote(s->kind(), "log.kind.link_error", m, true);
     });
-    connect(c, &dev::Instrument::requestFailed, this, [this, s](const dev::RequestError& e) {
+    connect(c, &dev::Instrument::requestFailed, this, [this, s, linkKey](const dev::RequestError& e) {
         // A request the operator's own Disconnect cut short is what they asked for: logged, no alarm.
         const msg::Arg* cause = e.message.id == "request.abandoned" ? e.message.arg("cause") : nullptr;
         const auto* inner = cause ? std::get_if<std::shared_ptr<const msg::Message>>(&cause->value) : nullptr;
@@ -470,9 +476,9 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
         }
         // Refused because the E-stop was latched: a fact that ends with the reset, as the E-stop's own message does.
         const bool latched = e.kind == dev::RequestError::Kind::Device && e.code == proto::ErrorCode::EStopActive;
+        const QString key = latched ? QStringLiteral("estop") : e.kind == dev::RequestError::Kind::LinkDown ? linkKey : QString();
         m_banner->show(
-            ui::MessageBanner::Level::Error, [s, why = e.message] { return QStringLiteral("%1: %2").arg(s->name(), words::text(why)); },
-            latched ? QStringLiteral("estop") : QString());
+            ui::MessageBanner::Level::Error, [s, why = e.message] { return QStringLiteral("%1: %2").arg(s->name(), words::text(why)); }, key);
         m_log->addNote(s->kind(), "log.kind.refused", e.message, true);
     });
     connect(c, &dev::Instrument::eventReceived, this, [this, s, c](const dev::DeviceEvent& e) {

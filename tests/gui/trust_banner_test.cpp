@@ -1,7 +1,11 @@
 // Issue 16, item 3: a message that comes or goes must not move the controls under
 // the pointer (three clicks landed on the wrong control when banners pushed the
 // screens down ~37 px and pulled them back when they faded).
+#include "gui_wait.h"
 #include "gui_window.h"
+
+#include "app/gui/instrument_session.h"
+#include "device/link/simulated_link.h"
 
 #include "widgets/common/elided_label.h"
 #include "widgets/connection_bar.h"
@@ -124,4 +128,31 @@ TEST(TrustBanner, AMessageAboutAStateIsWithdrawnWhenTheStateEndsShownOrWaiting)
     EXPECT_EQ(b.texts(), QStringList{QStringLiteral("Stage: link lost.")}) << "the unrelated error stays to be read";
     b.withdraw(QStringLiteral("estop"));
     EXPECT_EQ(b.text(), QStringLiteral("Stage: link lost."));
+}
+
+// Seen under Xvfb: a scan's cable pulled, put back, Connect pressed; the stage ran on while
+// the banner still said "Stage: link lost … reconnect when the cable is back", three more
+// errors of the same loss waiting behind it. Once the link is ready again they are gone;
+// the analyzer's own error stays to be read.
+TEST(TrustBanner, ALostLinksMessagesAreWithdrawnOnceItIsReadyAgain)
+{
+    auto w = guitest::openReadyWindow({1366, 708});
+    auto* link = qobject_cast<dev::SimulatedLink*>(w->stage()->link());
+    ASSERT_NE(link, nullptr);
+    dev::Instrument* stage = w->stage()->instrument();
+    ui::MessageBanner* b = w->banner();
+    b->show(ui::MessageBanner::Level::Error, QStringLiteral("Analyzer: move refused."));
+    link->pair().unplug();
+    ASSERT_TRUE(guitest::waitFor([&] { return stage->state() == dev::LinkState::Lost; }, 3000));
+    guitest::pump(50);
+    const QString lost = b->texts().join(QLatin1Char('\n'));
+    ASSERT_TRUE(lost.contains(QStringLiteral("Stage: link lost"))) << lost.toStdString();
+
+    link->pair().replug();
+    stage->connectLink();
+    ASSERT_TRUE(guitest::waitFor([&] { return stage->isReady(); }, 5000));
+    guitest::pump(50);
+    const QString after = b->texts().join(QLatin1Char('\n'));
+    EXPECT_FALSE(after.contains(QStringLiteral("Stage:"))) << after.toStdString();
+    EXPECT_TRUE(after.contains(QStringLiteral("Analyzer: move refused."))) << "an unrelated error stays to be read";
 }
