@@ -4076,14 +4076,6 @@ Keep that log aside and start this test afresh?</source>
         <translation>（本读数完成后暂停）</translation>
     </message>
     <message>
-        <source>Paused at reading %1 of %2.</source>
-        <translation>已在第 %1/%2 个读数处暂停。</translation>
-    </message>
-    <message>
-        <source>Stopped at reading %1 of %2: %3</source>
-        <translation>已在第 %1/%2 个读数处停止：%3</translation>
-    </message>
-    <message>
         <source>Done: %1 readings.</source>
         <translation>完成：共 %1 个读数。</translation>
     </message>
@@ -4332,6 +4324,14 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>%1 is not the run of the axis test on screen, so nothing was imported: %2. Open the test the capture belongs to, then import again.</source>
         <translation>%1 不是屏幕上这项单轴测试的运行序列，因此未导入任何数据：%2。请打开该采集数据所属的测试，再重新导入。</translation>
+    </message>
+    <message>
+        <source>Paused after %1 of %2 readings.</source>
+        <translation>已取得 %1/%2 个读数，已暂停。</translation>
+    </message>
+    <message>
+        <source>Stopped after %1 of %2 readings: %3</source>
+        <translation>已取得 %1/%2 个读数，已停止：%3</translation>
     </message>
 </context>
 <context>

@@ -264,3 +264,32 @@ TEST_F(CalibrationScreenTest, ACircularTestIsSampledFromTheStagesTelemetry)
 }
 
 } // namespace
+
+// Seen under Xvfb: once a run started the live plot spanned -0.5 … 1.5 mm until the first
+// reading, then grew with each. It keeps the test's span throughout; and a stopped run
+// says how many readings it has ("Stopped at reading 7" over seven read as if the seventh
+// was lost).
+TEST_F(CalibrationScreenTest, DuringARunTheLivePlotKeepsTheTestsSpanAndAStopCountsWhatWasTaken)
+{
+    ASSERT_TRUE(homedStage());
+    auto* plot = screen->findChild<ui::DeviationPlot*>(QStringLiteral("calibrationLivePlot"));
+    ASSERT_NE(plot, nullptr);
+    screen->form()->setTest(smallTest());
+    screen->setSource(QStringLiteral("gauge"), QStringLiteral("sim"));
+    ASSERT_TRUE(screen->run());
+    ASSERT_TRUE(waitFor([&] { return screen->runner() && screen->runner()->isActive(); }, 5000));  // the gauge opens first
+    EXPECT_LT(plot->xAxis->range().lower, 20);
+    EXPECT_GT(plot->xAxis->range().upper, 80);
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->readingsTaken() >= 1; }, 20000));
+    pump(20);
+    EXPECT_LT(plot->xAxis->range().lower, 20);
+    EXPECT_GT(plot->xAxis->range().upper, 80) << "the frame shrank to the first reading";
+    auto* link = qobject_cast<dev::SimulatedLink*>(w->stage()->link());
+    link->pair().unplug();
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::AccuracyRunner::State::Stopped; }, 5000));
+    pump(20);
+    const int taken = screen->runner()->readingsTaken();
+    const QString state = child<QLabel>("calibrationState")->text();
+    EXPECT_TRUE(state.startsWith(QStringLiteral("Stopped after %1 of %2 readings").arg(taken).arg(screen->runner()->totalReadings())))
+        << state.toStdString();
+}

@@ -217,6 +217,10 @@ bool CalibrationScreen::startAxis(const accuracyfiles::AccuracyTest& test)
     m_live->show();
     m_livePolar->hide();
     m_live->clearAll();
+    // The frame of the whole test from the start: it had spanned -0.5 … 1.5 mm until the
+    // first reading, then grown with each (seen under Xvfb).
+    const auto* axisTest = std::get_if<motion::metrology::AxisTest>(&test);
+    m_live->showTargets(axisTest ? motion::metrology::targetsOf(*axisTest) : std::vector<double>{});
     m_tabs->setCurrentIndex(0);
     if (m_runner->state() == jobs::AccuracyRunner::State::Finished) {
         onAxisFinished();
@@ -626,9 +630,10 @@ void CalibrationScreen::updateRunUi()
                         .arg(duration(m_runner->etaS()))
                         .arg(m_runner->state() == S::Pausing ? tr(" (pausing after this reading)") : QString());
             break;
-        case S::Paused: state = tr("Paused at reading %1 of %2.").arg(m_runner->readingsTaken()).arg(m_runner->totalReadings()); break;
+        // "after N of M": "at reading 7" over seven readings taken read as if the seventh was lost.
+        case S::Paused: state = tr("Paused after %1 of %2 readings.").arg(m_runner->readingsTaken()).arg(m_runner->totalReadings()); break;
         case S::Stopped:
-            state = tr("Stopped at reading %1 of %2: %3")
+            state = tr("Stopped after %1 of %2 readings: %3")
                         .arg(m_runner->readingsTaken())
                         .arg(m_runner->totalReadings())
                         .arg(m_lastProblem.empty() ? QString() : words::text(m_lastProblem));

@@ -76,9 +76,11 @@ void DeviationPlot::showTargets(const std::vector<double>& targetsMm)
 {
     for (QCPGraph* g : {m_upMean, m_upHi, m_upLo, m_downMean, m_downHi, m_downLo, m_upDots, m_downDots})
         g->data()->clear();
+    m_frame.reset();
     if (targetsMm.empty())
         return;
     const auto [lo, hi] = std::minmax_element(targetsMm.begin(), targetsMm.end());
+    m_frame = std::make_pair(*lo, *hi);
     xAxis->setRange(*lo - (*hi - *lo) * 0.03 - 0.5, *hi + (*hi - *lo) * 0.03 + 0.5);
     yAxis->setRange(-1, 1);
     replot(QCustomPlot::rpQueuedReplot);
@@ -130,6 +132,10 @@ void DeviationPlot::setData(const std::vector<motion::metrology::Reading>& readi
     }
     for (int i = 0; i < m_before->dataCount(); ++i)
         span(m_before->data()->at(i)->key, m_before->data()->at(i)->value);
+    if (m_frame) {
+        x0 = std::min(x0, m_frame->first);
+        x1 = std::max(x1, m_frame->second);
+    }
     if (x0 > x1) {
         x0 = 0;
         x1 = 1;

@@ -21,8 +21,9 @@ public:
     /// Means of an earlier run drawn behind (empty: none).
     void setBefore(const std::optional<motion::metrology::Evaluation>& before);
     void clearAll();
-    /// Before a run: nothing plotted, the target axis spans the test's targets (as the
-    /// run's readings will), so the plot shows where the readings are to come.
+    /// Before and during a run: the target axis spans the test's targets, so the plot shows
+    /// where the readings are to come and does not rescale as each arrives (empty: the
+    /// axis follows the data). Clears what is plotted.
     void showTargets(const std::vector<double>& targetsMm);
     void retranslateUi();
 
@@ -31,6 +32,7 @@ protected:
 
 private:
     QCPGraph *m_upMean, *m_upHi, *m_upLo, *m_downMean, *m_downHi, *m_downLo, *m_upDots, *m_downDots, *m_before;
+    std::optional<std::pair<double, double>> m_frame;  ///< the test's first and last target, mm
 };
 
 } // namespace ui
