@@ -167,11 +167,11 @@ int runRecipe(Invocation& inv)
                                   {QStringLiteral("log"), logPath}});
     if (finished) {
         if (!inv.json())
-            out << tr("finished: %1 of %2 wells in %3").arg(p.opsDone).arg(p.opsTotal).arg(clock(p.elapsedS)) << "\n";
+            out << tr("finished: %1 of %2 operations in %3").arg(p.opsDone).arg(p.opsTotal).arg(clock(p.elapsedS)) << "\n";
         out.flush();
         return Ok;
     }
-    inv.report(tr("stopped after %1 of %2 wells; continue with: benchpilot-cli recipe run %3 --resume %4")
+    inv.report(tr("stopped after %1 of %2 operations; continue with: benchpilot-cli recipe run %3 --resume %4")
                    .arg(p.opsDone)
                    .arg(p.opsTotal)
                    .arg(l.path, logPath));

@@ -279,7 +279,7 @@ bool RecipeRunner::start(const QString& logPath, msg::Message* error)
     m_knowXy = m_knowZ = false;
     m_pumpUl = plungerNow();
     emit message(msg::make("recipe.run.started", {msg::verbatim("recipe", m_recipeName.toStdString()),
-                                                  msg::integer("wells", static_cast<long long>(m_plan.ops.size())),
+                                                  msg::integer("ops", static_cast<long long>(m_plan.ops.size())),
                                                   msg::real("time", std::round(m_plan.totalTimeS), msg::Unit::S),
                                                   msg::verbatim("log", QFileInfo(logPath).fileName().toStdString())}),
                  false);
@@ -319,7 +319,7 @@ void RecipeRunner::nextMove()
         m_log.close();
         setState(RunState::Finished);
         emit message(msg::make("recipe.run.finished", {msg::verbatim("recipe", m_recipeName.toStdString()),
-                                                       msg::integer("wells", static_cast<long long>(m_plan.ops.size()))}),
+                                                       msg::integer("ops", static_cast<long long>(m_plan.ops.size()))}),
                      false);
         emit finished(true);
         return;

@@ -278,7 +278,7 @@ bool RecipeRunner::resumeFromLog(const QString& logPath, const InterruptedDecide
     m_knowXy = m_knowZ = false;
     m_pumpUl = plungerNow();
     emit message(msg::make("recipe.run.resuming", {msg::verbatim("recipe", m_recipeName.toStdString()), logArg,
-                                                   msg::integer("done", started), msg::integer("wells", static_cast<long long>(m_plan.ops.size())),
+                                                   msg::integer("done", started), msg::integer("ops", static_cast<long long>(m_plan.ops.size())),
                                                    m_op < static_cast<int>(m_plan.ops.size()) ? opArg(m_op)
                                                                                               : msg::nested("op", msg::make("recipe.run.the_end"))}),
                  false);

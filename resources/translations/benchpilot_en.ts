@@ -5,9 +5,9 @@
     <name>app::ApiStatusButton</name>
     <message numerus="yes">
         <source>API: %n client(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>API: %n client</numerusform>
+            <numerusform>API: %n clients</numerusform>
         </translation>
     </message>
 </context>
@@ -15,9 +15,9 @@
     <name>ui::CalibrationScreen</name>
     <message numerus="yes">
         <source>Imported %n reading(s) from %1: results in %2.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Imported %n reading from %1: results in %2.</numerusform>
+            <numerusform>Imported %n readings from %1: results in %2.</numerusform>
         </translation>
     </message>
 </context>
@@ -43,19 +43,19 @@
 <context>
     <name>words::RecipeWords</name>
     <message numerus="yes">
-        <source>running %1: %Ln wells, about %2; log %3</source>
+        <source>running %1: %Ln operations, about %2; log %3</source>
         <comment>recipe.run.started</comment>
         <translation>
-            <numerusform>running %1: %Ln well, about %2; log %3</numerusform>
-            <numerusform>running %1: %Ln wells, about %2; log %3</numerusform>
+            <numerusform>running %1: %Ln operation, about %2; log %3</numerusform>
+            <numerusform>running %1: %Ln operations, about %2; log %3</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <source>%1 finished: %Ln wells</source>
+        <source>%1 finished: %Ln operations</source>
         <comment>recipe.run.finished</comment>
         <translation>
-            <numerusform>%1 finished: %Ln well</numerusform>
-            <numerusform>%1 finished: %Ln wells</numerusform>
+            <numerusform>%1 finished: %Ln operation</numerusform>
+            <numerusform>%1 finished: %Ln operations</numerusform>
         </translation>
     </message>
 </context>

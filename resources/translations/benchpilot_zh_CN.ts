@@ -1545,14 +1545,6 @@ Options:
         <translation>日志：%1</translation>
     </message>
     <message>
-        <source>finished: %1 of %2 wells in %3</source>
-        <translation>已完成：%2 个孔中的 %1 个，用时 %3</translation>
-    </message>
-    <message>
-        <source>stopped after %1 of %2 wells; continue with: benchpilot-cli recipe run %3 --resume %4</source>
-        <translation>在 %2 个孔中完成 %1 个后停止；继续请用：benchpilot-cli recipe run %3 --resume %4</translation>
-    </message>
-    <message>
         <source>the deck definition (default: the built-in analyzer deck)</source>
         <translation>台面定义（默认：内置的分析仪台面）</translation>
     </message>
@@ -2423,6 +2415,14 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>%1: link lost while waiting: %2</source>
         <translation>%1：等待期间连接中断：%2</translation>
+    </message>
+    <message>
+        <source>finished: %1 of %2 operations in %3</source>
+        <translation>已完成：%2 项操作中的 %1 项，用时 %3</translation>
+    </message>
+    <message>
+        <source>stopped after %1 of %2 operations; continue with: benchpilot-cli recipe run %3 --resume %4</source>
+        <translation>在 %2 项操作中完成 %1 项后停止；继续请用：benchpilot-cli recipe run %3 --resume %4</translation>
     </message>
 </context>
 <context>
@@ -5807,10 +5807,6 @@ Keep that log aside and start this test afresh?</source>
         <translation>该方案未通过检查：请查看其问题</translation>
     </message>
     <message>
-        <source>Run &quot;%1&quot;: %2 wells, about %3. The tip goes down to Z %4 mm; the analyzer moves on its own until the end (Pause, Abort, or Esc for the E-stop). Start?</source>
-        <translation>运行“%1”：%2 个孔，约 %3。加样针将下降到 Z %4 mm；分析仪将自行运动直到结束（可按“暂停”“中止”，或按 Esc 急停）。开始？</translation>
-    </message>
-    <message>
         <source>Resume from run log</source>
         <translation>从运行日志继续</translation>
     </message>
@@ -5852,6 +5848,10 @@ Keep that log aside and start this test afresh?</source>
         <source>samples</source>
         <comment>the name of a new recipe&apos;s plate</comment>
         <translation>样品</translation>
+    </message>
+    <message>
+        <source>Run &quot;%1&quot;: %2 operations over %3 wells, about %4. The tip goes down to Z %5 mm; the analyzer moves on its own until the end (Pause, Abort, or Esc for the E-stop). Start?</source>
+        <translation>运行“%1”：%2 项操作，涉及 %3 个孔，约 %4。加样针将下降到 Z %5 mm；分析仪将自行运动直到结束（可按“暂停”“中止”，或按 Esc 急停）。开始？</translation>
     </message>
 </context>
 <context>
@@ -6713,16 +6713,8 @@ Keep that log aside and start this test afresh?</source>
         <translation>开始时间</translation>
     </message>
     <message>
-        <source>%1 ops over %2 wells · %3 µL dispensed, %4 µL aspirated · plunger %5 → %6 µL · about %7</source>
-        <translation>%1 个操作，涉及 %2 个孔 · 排液 %3 µL，吸液 %4 µL · 柱塞 %5 → %6 µL · 约 %7</translation>
-    </message>
-    <message>
         <source>Not runnable: %1</source>
         <translation>无法运行：%1</translation>
-    </message>
-    <message>
-        <source>%1 of %2 wells</source>
-        <translation>%1/%2 个孔</translation>
     </message>
     <message>
         <source>State: %1</source>
@@ -6751,6 +6743,14 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Plan: what the run does, op by op</source>
         <translation>计划：运行逐项执行的操作</translation>
+    </message>
+    <message>
+        <source>%1 operations over %2 wells · %3 µL dispensed, %4 µL aspirated · plunger %5 → %6 µL · about %7</source>
+        <translation>%1 项操作，涉及 %2 个孔 · 排液 %3 µL，吸液 %4 µL · 柱塞 %5 → %6 µL · 约 %7</translation>
+    </message>
+    <message>
+        <source>%1 of %2 operations</source>
+        <translation>%1/%2 项操作</translation>
     </message>
 </context>
 <context>
@@ -11753,11 +11753,6 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>柱塞在 %1，但日志中最后完成的孔使其停在 %2：运行停止后注射器被移动过（或分析仪重启过），其中的液量未知。请开始新的运行。</translation>
     </message>
     <message>
-        <source>resuming %1 from %2: %3 of %4 wells already done, continuing with %5</source>
-        <comment>recipe.run.resuming</comment>
-        <translation>从 %2 继续 %1：%4 个孔中已完成 %3 个，接着运行“%5”</translation>
-    </message>
-    <message>
         <source>the plunger is at %1, where this step leaves it: its liquid most likely moved in full</source>
         <comment>recipe.evidence.moved_in_full</comment>
         <translation>柱塞在 %1，正是该步骤完成后的位置：液体很可能已全部移动</translation>
@@ -11877,20 +11872,6 @@ A loop this different may oscillate or run away. Apply them?</source>
         <comment>recipe.step.touch_off</comment>
         <translation>贴壁</translation>
     </message>
-    <message numerus="yes">
-        <source>running %1: %Ln wells, about %2; log %3</source>
-        <comment>recipe.run.started</comment>
-        <translation>
-            <numerusform>正在运行 %1：%Ln 个孔，约 %2；日志 %3</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%1 finished: %Ln wells</source>
-        <comment>recipe.run.finished</comment>
-        <translation>
-            <numerusform>%1 已完成：%Ln 个孔</numerusform>
-        </translation>
-    </message>
     <message>
         <source>aborted by the operator</source>
         <comment>recipe.run.aborted</comment>
@@ -11915,6 +11896,25 @@ A loop this different may oscillate or run away. Apply them?</source>
         <source>found the same instrument (%1), homed, with the plunger at %2 as the run left it</source>
         <comment>recipe.resume.found</comment>
         <translation>找到同一台仪器（%1），已回零，柱塞在 %2，与运行停止时一致</translation>
+    </message>
+    <message numerus="yes">
+        <source>running %1: %Ln operations, about %2; log %3</source>
+        <comment>recipe.run.started</comment>
+        <translation>
+            <numerusform>正在运行 %1：%Ln 项操作，约 %2；日志 %3</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 finished: %Ln operations</source>
+        <comment>recipe.run.finished</comment>
+        <translation>
+            <numerusform>%1 已完成：%Ln 项操作</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>resuming %1 from %2: %3 of %4 operations already done, continuing with %5</source>
+        <comment>recipe.run.resuming</comment>
+        <translation>从 %2 继续 %1：%4 项操作中已完成 %3 项，接着运行“%5”</translation>
     </message>
 </context>
 <context>

@@ -20,6 +20,7 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMouseEvent>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -348,4 +349,31 @@ TEST_F(PlatesScreenTest, StepTypesAndPlannedOpsShowReadableNamesNotFileIds)
     for (int c = 0; c < table->columnCount(); ++c)
         cells << (table->item(1, c) ? table->item(1, c)->text() : QString());
     EXPECT_TRUE(cells.contains(QStringLiteral("Aspirate 10 µL from samples A2"))) << cells.join(QLatin1String(" | ")).toStdString();
+}
+
+// Seen under Xvfb with the reagent-transfer example: the plan said "47 ops over 30 wells",
+// the run's question "47 wells", the progress "0 of 0 wells" and then "0 of 47 wells". The
+// runner counts operations (a wash, a mix, an aspirate each are one); only sampling-96,
+// one op a well, had made the two agree.
+TEST_F(PlatesScreenTest, ARunCountsOperationsAndSaysOverHowManyWells)
+{
+    ASSERT_TRUE(screen->openRecipe(QStringLiteral(BP_SOURCE_DIR "/resources/examples/reagent-transfer.recipe.json")));
+    pump(50);
+    const plates::RecipePlan& plan = screen->plan();
+    ASSERT_TRUE(plan.ok());
+    const int ops = static_cast<int>(plan.ops.size()), wells = plan.wellsVisited();
+    ASSERT_GT(ops, wells) << "a recipe whose ops are its wells tells nothing";
+    auto* progress = screen->runPanel()->findChild<QProgressBar*>();
+    ASSERT_NE(progress, nullptr);
+    EXPECT_EQ(progress->text().toStdString(), QStringLiteral("0 of %1 operations").arg(ops).toStdString()) << "before the run, the plan's count";
+    QString asked;
+    screen->setConfirm([&](const QString& q) {
+        asked = q;
+        return false;
+    });
+    QPushButton* run = button(screen->runPanel(), QObject::tr("Run"));
+    ASSERT_NE(run, nullptr);
+    QTest::mouseClick(run, Qt::LeftButton);
+    pump(20);
+    EXPECT_TRUE(asked.contains(QStringLiteral("%1 operations over %2 wells").arg(ops).arg(wells))) << asked.toStdString();
 }

@@ -482,11 +482,14 @@ bool PlatesScreen::runRecipe()
     double deepest = 0;
     for (const auto& p : m_editor->recipe().plates)
         deepest = std::max(deepest, p.depthZMm);
+    // Operations, not wells: a recipe that washes, mixes and dispenses counts more of them
+    // than it visits wells (the dialog had said "47 wells" of a plan over 30).
     if (m_confirm
-        && !m_confirm(tr("Run \"%1\": %2 wells, about %3. The tip goes down to Z %4 mm; the analyzer moves on its own until the end "
-                         "(Pause, Abort, or Esc for the E-stop). Start?")
+        && !m_confirm(tr("Run \"%1\": %2 operations over %3 wells, about %4. The tip goes down to Z %5 mm; the analyzer moves on its "
+                         "own until the end (Pause, Abort, or Esc for the E-stop). Start?")
                           .arg(name)
                           .arg(plan.ops.size())
+                          .arg(plan.wellsVisited())
                           .arg(words::duration(plan.totalTimeS))
                           .arg(deepest)))
         return false;

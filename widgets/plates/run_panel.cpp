@@ -124,12 +124,10 @@ RunPanel::RunPanel(jobs::RecipeRunner* runner, QWidget* parent) : QWidget(parent
 void RunPanel::setPlan(const plates::RecipePlan& plan, bool runnable, const QString& why)
 {
     m_runnable = runnable;
-    int wells = 0;
-    for (const auto& w : plan.wells)
-        wells += w.visits > 0;
-    m_summary->setText(runnable ? tr("%1 ops over %2 wells · %3 µL dispensed, %4 µL aspirated · plunger %5 → %6 µL · about %7")
+    m_planOps = runnable ? static_cast<int>(plan.ops.size()) : 0;
+    m_summary->setText(runnable ? tr("%1 operations over %2 wells · %3 µL dispensed, %4 µL aspirated · plunger %5 → %6 µL · about %7")
                                       .arg(plan.ops.size())
-                                      .arg(wells)
+                                      .arg(plan.wellsVisited())
                                       .arg(plan.totalDispensedUl, 0, 'g', 6)
                                       .arg(plan.totalAspiratedUl, 0, 'g', 6)
                                       .arg(plan.pumpStartUl, 0, 'g', 6)
@@ -171,7 +169,7 @@ void RunPanel::refresh()
     m_resume->setEnabled(s == RunState::Paused || (s == RunState::Stopped && !m_runner->logPath().isEmpty()));
     m_abort->setEnabled(s == RunState::Running || s == RunState::Pausing || s == RunState::Paused);
     m_progress->setValue(static_cast<int>(std::lround(p.fraction * 1000)));
-    m_progress->setFormat(tr("%1 of %2 wells").arg(p.opsDone).arg(p.opsTotal));
+    m_progress->setFormat(tr("%1 of %2 operations").arg(p.opsDone).arg(s == RunState::Idle ? m_planOps : p.opsTotal));
     m_state->setText(tr("State: %1").arg(words::term(jobs::runStateTerm(s))));
     m_current->setText(p.currentOp >= 0 && s != RunState::Idle ? tr("Current: %1").arg(words::text(p.currentLabel)) : tr("Current: —"));
     m_times->setText(s == RunState::Idle ? QString()

@@ -50,6 +50,7 @@ private:
     bool m_runnable = false;
     QLabel* m_summary;
     QTableWidget* m_table;
+    int m_planOps = 0;  ///< the plan on screen, before a run has one
     QPushButton* m_run;
     QPushButton* m_pause;
     QPushButton* m_resume;

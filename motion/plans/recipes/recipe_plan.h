@@ -85,6 +85,15 @@ struct RecipePlan {
     std::uint64_t fingerprint = 0;
     bool ok() const { return !hasErrors(problems); }
     const WellTotal* total(const std::string& plate, const std::string& well) const;
+    /// Wells the run goes into (a wash station is not one); fewer than ops.size() when a
+    /// recipe also washes, mixes or aspirates.
+    int wellsVisited() const
+    {
+        int n = 0;
+        for (const auto& w : wells)
+            n += w.visits > 0;
+        return n;
+    }
 };
 
 RecipePlan planRecipe(const Recipe& recipe, const PlanContext& context, const StartState& start = {});
