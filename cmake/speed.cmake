@@ -1,4 +1,4 @@
-# Build speed on a fresh machine (issue 15, docs/testing.md). CI compiles every
+# Build speed on a fresh machine (docs/testing.md). CI compiles every
 # target once from nothing; these two options make that cheap. A developer's
 # default build leaves them off, so an edit recompiles one file and a missing
 # #include shows at once (./scripts/test turns both on).

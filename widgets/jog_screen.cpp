@@ -200,7 +200,7 @@ void JogScreen::refresh()
     m_state->setStyleSheet(ready && !st.estop ? QStringLiteral("color:#2e7d32;") : QStringLiteral("color:#b71c1c; font-weight:bold;"));
     const bool canMove = ready && !st.estop;
     const bool canHome = m_client->can(dev::Capability::Homing);
-    // A greyed control says why (issue 16): the same reason for the whole screen.
+    // A greyed control says why: the same reason for the whole screen.
     const QString whyNot = !ready ? tr("Connect the instrument first")
         : st.estop               ? tr("E-STOP is latched: press Reset E-stop first")
                                  : QString();

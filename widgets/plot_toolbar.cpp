@@ -71,7 +71,7 @@ PlotToolbar::PlotToolbar(int rateHz, qint64 rawCsvLimit, QWidget* parent)
     bar->addWidget(record);
     bar->addSpacing(8);
     // No "Export" label before the export buttons: their names say it, and the room
-    // went to History… (the screen must fit 1366 px, issue 16 item 4).
+    // went to History… (the screen must fit 1366 px).
     for (QPushButton* b : {exportCsv, exportPng, exportPdf})
         bar->addWidget(b);
 

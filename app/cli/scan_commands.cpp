@@ -1,4 +1,4 @@
-// benchpilot-cli's stitching scan commands (issue 10):
+// benchpilot-cli's stitching scan commands:
 //   scan plan  --roi x0,y0,x1,y1 --fov w,h --overlap o[,o] --order … [--format …]
 //              prints the plan file, a summary, or the tile positions as Fiji,
 //              Micro-Manager or CSV read them;

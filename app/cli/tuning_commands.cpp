@@ -1,4 +1,4 @@
-// benchpilot-cli's tuning commands (issue 7): tune (Ziegler–Nichols, ultimate
+// benchpilot-cli's tuning commands: tune (Ziegler–Nichols, ultimate
 // gain or relay) on an instrument's axis or a model plant, step-test, gains.
 // Gains are given and printed in continuous form (Kp, Ki in 1/s, Kd in s), the
 // device's per-period form beside them in text output.

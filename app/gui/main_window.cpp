@@ -107,7 +107,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     m_sessions[1] = new InstrumentSession(proto::DeviceKind::Stage, tr("Stage"), this);
     m_hub = new tele::TelemetryHub(this);
     // Every instrument's positions and following errors from connection on, shown or
-    // not, so "what just happened?" can be answered on the Plots screen (issue 16 item 8).
+    // not, so "what just happened?" can be answered on the Plots screen (docs/telemetry.md, "History").
     m_hub->enableHistory();
     for (int i = 0; i < 2; ++i)
         m_hub->addInstrument(i, m_sessions[i]->name(), m_sessions[i]->instrument());
@@ -128,7 +128,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     bars->addWidget(m_bars[1]);
     top->addLayout(bars, 1);
     // Messages sit beside the E-stop in the row the connections make tall anyway: no row of
-    // their own, so one that comes or goes moves nothing (issue 16, item 3).
+    // their own, so one that comes or goes moves nothing under the operator's pointer.
     m_banner = new ui::MessageBanner(central);
     top->addWidget(m_banner, 1);
     if (m_api->strip())
@@ -359,7 +359,7 @@ void MainWindow::addScreen(const QString& name, const QString& title, QWidget* s
     m_nav->addItem(title);
     // Every screen scrolls when its content is taller or wider than the window: a screen in a
     // busy state (tuning results, long file names) can no longer grow the window past a 1366 × 768
-    // laptop's screen and push E-STOP off it (issue 16, item 4).
+    // laptop's screen and push E-STOP off it.
     auto* scroll = new ScreenScroll(m_stack);
     scroll->setObjectName(QStringLiteral("screenScroll_%1").arg(name));
     scroll->setWidgetResizable(true);

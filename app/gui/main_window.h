@@ -114,7 +114,7 @@ private:
     bool confirm(const QString& question);
     /// The jobs running on instrument `index` now, for people ("a plate run"); empty: none.
     QStringList runningJobs(int index) const;
-    /// Asks when a job runs on it (issue 16 item 10); true: go ahead.
+    /// Asks when a job runs on it (widgets/common/confirmation.h); true: go ahead.
     bool confirmDisconnect(int index);
 
     MainWindowOptions m_options;

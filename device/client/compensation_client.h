@@ -1,5 +1,5 @@
 #pragma once
-// An instrument's own axis error compensation (issue 18), in axis units: upload an
+// An instrument's own axis error compensation (docs/accuracy.md), in axis units: upload an
 // axis's compensation (an error polynomial or a table of up to 256 points, plus a
 // backlash: motion::metrology::CompensationModel), read it back, enable or disable it
 // and keep it for power-up. Reached as Instrument::compensation(), nullptr on a

@@ -1,7 +1,7 @@
 #pragma once
 // One instrument as screens, runners and the CLI use it, whatever it speaks: the
-// BenchPilot protocol (device/backends/benchpilot/) or, later, GRBL
-// (device/backends/grbl/). Nothing above device/backends/ names a backend's class:
+// BenchPilot protocol (device/backends/benchpilot/) or GRBL 1.1 and grblHAL
+// (device/backends/grbl/, docs/grbl.md). Nothing above device/backends/ names a backend's class:
 // runners and widgets hold a dev::Instrument*, and only app/ and tests compose a
 // backend with its transport.
 //

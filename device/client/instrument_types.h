@@ -41,7 +41,7 @@ struct AxisDescriptor {
 struct DeviceIdentity {
     proto::DeviceKind kind = proto::DeviceKind::Analyzer;
     /// The firmware family and the protocol it speaks, as a person reads it:
-    /// "BenchPilot protocol 1", later "Grbl 1.1h", "grblHAL 1.1f".
+    /// "BenchPilot protocol 1", "Grbl 1.1h", "grblHAL 1.1f".
     QString family;
     int protocolVersion = 0;
     /// The BenchPilot protocol's HELLO capability bits as sent (0 from other backends).

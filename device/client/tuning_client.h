@@ -1,5 +1,5 @@
 #pragma once
-// The tuning side of one instrument (issue 7), in axis units: PID gains of the
+// The tuning side of one instrument (docs/tuning.md), in axis units: PID gains of the
 // closed-loop axes, step and relay tests that run on the device, the device's
 // capture of a test, and the realtime abort. A BenchPilot-protocol feature, reached
 // as Instrument::tuning() (nullptr on a backend without it, such as GRBL); the

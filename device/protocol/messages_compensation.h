@@ -1,5 +1,5 @@
 #pragma once
-// Protocol v1 messages of axis error compensation (issue 18): upload an axis's
+// Protocol v1 messages of axis error compensation: upload an axis's
 // compensation (an error polynomial, or a table of up to 256 points, plus a
 // backlash), read it back, enable or disable it and keep it for power-up. Plain C++,
 // like messages.h; docs/protocol.md ("Compensation") is the byte-level spec.

@@ -1,5 +1,5 @@
 #pragma once
-// Protocol v1 messages of PID tuning (issue 7): gains, step and relay tests,
+// Protocol v1 messages of PID tuning: gains, step and relay tests,
 // the device's capture of a test, and the realtime abort. Plain C++, like
 // messages.h; docs/protocol.md ("Tuning") is the byte-level spec.
 //

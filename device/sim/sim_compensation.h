@@ -1,5 +1,5 @@
 #pragma once
-// The simulated controller's axis error compensation (issue 18; docs/protocol.md,
+// The simulated controller's axis error compensation (docs/protocol.md,
 // "Compensation"): per axis an error polynomial or a table of up to 256 points plus
 // a backlash, uploaded in parts, read back, enabled and disabled, and kept for
 // power-up when asked (the "flash", NonVolatile below).

@@ -1,5 +1,5 @@
 #pragma once
-// The simulated stage's side of PID tuning (issue 7): per-axis gains (the
+// The simulated stage's side of PID tuning (docs/tuning.md): per-axis gains (the
 // operator's set and a power-up set), and tests that run on the device at the
 // loop rate — a step test with optional trial gains, a relay or forced square
 // wave — with the abort envelope checked every control period, a capture of

@@ -1,5 +1,5 @@
 #pragma once
-// The flight recorder of the telemetry hub (issue 16 item 8): every connected
+// The flight recorder of the telemetry hub (docs/telemetry.md, "History"): every connected
 // instrument's positions and following errors, kept from connection on whether or
 // not a screen shows them, so "what just happened?" can be answered and exported
 // after the fact. The live stores follow what screens want; this does not.

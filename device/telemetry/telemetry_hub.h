@@ -126,7 +126,7 @@ public:
     static constexpr int kRecordFlushBytes = 64 * 1024;
     static constexpr int kRecordFlushMs = 500;
 
-    // ---- history: the flight recorder (issue 16 item 8, docs/telemetry.md "History") ----
+    // ---- history: the flight recorder (docs/telemetry.md "History") ----
     /// From now on every instrument, once identified, streams HistoryRecorder::recordedKinds()
     /// of every axis (at the rate others want, or kDefaultRateHz alone) and the hub keeps
     /// them within `budget` whether or not anyone wants them. Off until called: a hub in a

@@ -1,4 +1,4 @@
-// TelemetryHub: the flight recorder's side (issue 16 item 8). The recorder keeps
+// TelemetryHub: the flight recorder's side. The recorder keeps
 // every instrument's positions and following errors within a fixed budget
 // (history_recorder.h); here the hub turns it on, picks between it and the live
 // stores for a plot, and exports it as CSV.

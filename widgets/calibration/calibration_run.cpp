@@ -572,7 +572,7 @@ void CalibrationScreen::updateRunUi()
     m_formProblems->setText(formError);
     m_formProblems->setVisible(!formError.isEmpty());
     m_form->setEditable(!active);
-    // A file opened now would replace the test that runs (issue 16 item 5): held while it runs.
+    // A file opened now would replace the test that runs: held while it runs.
     m_open->setEnabled(!active);
     m_open->setToolTip(active ? tr("A test is running: the test on screen stays until it has finished or been aborted.") : QString());
     m_instrumentBox->setEnabled(!active);

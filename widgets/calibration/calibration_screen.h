@@ -1,5 +1,5 @@
 #pragma once
-// The Calibration screen (issue 18): define or open an accuracy test (an ISO 230-2 axis
+// The Calibration screen (docs/accuracy.md): define or open an accuracy test (an ISO 230-2 axis
 // test, seed 000's linked XY line or an ISO 230-4 circle), pick where the readings
 // come from (the instrument's readback, a gauge on a serial port, a person at a dial
 // indicator, or an interferometer's capture imported afterwards), and run it with

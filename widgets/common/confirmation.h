@@ -1,5 +1,5 @@
 #pragma once
-// One rule for what asks first, on every screen (issue 16 item 10): a long move
+// One rule for what asks first, on every screen: a long move
 // (further than kLongMoveShare of an axis's travel) and a destructive action
 // (Abort a run, Disconnect during one, quitting with unsaved edits or a running
 // job) are confirmed. Screens raise the question through their Confirm hook;

@@ -2,7 +2,7 @@
 // A one-line label for text that may be longer than the room it gets (an
 // instrument's identity, a file's name): cut with "…" rather than clipped
 // mid-letter, with the whole text in the tooltip, and never asking the window
-// to be wider than the screen (issue 16 items 4 and 7).
+// to be wider than the screen (a 1366 × 768 laptop must show every control).
 #include <QLabel>
 
 namespace ui {

@@ -355,7 +355,7 @@ void PatternScreen::updateButtons()
     m_abort->setEnabled(mine && (busy || st == PatternRunner::State::Interrupted));
     m_export->setEnabled(m_runOn >= 0 && !m_instruments[m_runOn].runner->samples().empty());
     m_instrumentBox->setEnabled(!busy);
-    // The pattern on screen is the one that runs (issue 16 item 5): no other is loaded over it.
+    // The pattern on screen is the one that runs: no other is loaded over it.
     const bool anyBusy = std::any_of(m_instruments.begin(), m_instruments.end(), [](const PatternInstrument& i) { return i.runner->busy(); });
     m_load->setEnabled(!anyBusy);
     m_load->setToolTip(anyBusy ? tr("A pattern is running: another can be loaded once it has ended.") : QString());
@@ -527,7 +527,7 @@ bool PatternScreen::savePattern(const QString& path, QString* error)
 bool PatternScreen::loadPattern(const QString& path, QString* error)
 {
     if (runner() && runner()->busy()) {
-        // The pattern on screen is the one that runs (issue 16 item 5).
+        // The pattern on screen is the one that runs.
         if (error)
             *error = tr("A pattern is running: another can be loaded once it has ended.");
         return false;

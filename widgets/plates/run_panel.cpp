@@ -54,7 +54,7 @@ RunPanel::RunPanel(jobs::RecipeRunner* runner, QWidget* parent) : QWidget(parent
     m_current = new QLabel(this);
     m_times = new QLabel(this);
     // Beside the state, not after the four run buttons: there it was cut to "Resum…" on a
-    // 1366-pixel screen (issue 16, item 4).
+    // 1366-pixel screen.
     auto* stateRow = new QHBoxLayout;
     stateRow->addWidget(m_state, 1);
     stateRow->addWidget(m_fromLog);

@@ -22,7 +22,7 @@ class RunPanel : public QWidget {
 public:
     explicit RunPanel(jobs::RecipeRunner* runner, QWidget* parent = nullptr);
     void setInterruptedDecider(jobs::InterruptedDecider decide) { m_decide = std::move(decide); }
-    /// Asked before Abort (a destructive action, issue 16's one rule); none: Abort at once.
+    /// Asked before Abort (a destructive action, widgets/common/confirmation.h); none: Abort at once.
     void setConfirm(std::function<bool(const QString&)> confirm) { m_confirm = std::move(confirm); }
     /// The plan to show; `runnable` false (with `why`) disables Run.
     void setPlan(const plates::RecipePlan& plan, bool runnable, const QString& why);

@@ -49,7 +49,7 @@ private:
     QLineEdit* m_wells;
     QComboBox* m_station;
     // Numbers as the file gave them, never clamped: out of range shows marked invalid
-    // until the operator fixes it, and an invalid entry changes nothing (issue 16 item 7).
+    // until the operator fixes it, and an invalid entry changes nothing: what a file says is never changed silently.
     NumberField* m_volume;
     QCheckBox* m_speedSet;
     NumberField* m_speed;

@@ -1,5 +1,5 @@
 #pragma once
-// The accuracy bench's report (issue 18): one PDF per test with its set-up, the
+// The accuracy bench's report (docs/accuracy.md): one PDF per test with its set-up, the
 // figures table with pass/fail, the ISO-style plot (mean ± 2s per direction against
 // the target, reversal visible), the deviations of every reading, the compensation
 // fit with its order table and residuals when there is one, and the before/after

@@ -488,7 +488,7 @@ bool TuningScreen::saveResults(const QString& given)
 bool TuningScreen::loadResults(const QString& given)
 {
     if (m_runner->busy()) {
-        // The results on screen are the ones the running job fills in (issue 16 item 5).
+        // The results on screen are the ones the running job fills in: none is opened over them.
         say(tr("A tuning run is under way: results can be opened once it has ended."), true);
         return false;
     }

@@ -1,5 +1,5 @@
 #pragma once
-// The Tuning screen (issue 7): pick an instrument's closed-loop axis or a model
+// The Tuning screen (docs/tuning.md): pick an instrument's closed-loop axis or a model
 // plant; its gains (continuous form, discrete beside) with Apply / Revert /
 // Save to device and their history; step tests overlaid with their metrics;
 // the Ziegler–Nichols assistant. Everything long runs in one TuningRunner with

@@ -1,6 +1,6 @@
-// Words for the accuracy bench's runs (issue 18) that the table in accuracy_words.cpp does
-// not word: ids accuracy.*, compensation.*, file.* and gauge.* (context words::AccuracyBenchWords,
-// its Chinese pending), and the terms direction.* and rotation.* (docs/accuracy.md, appendix).
+// Words for the accuracy bench's runs that the table in accuracy_words.cpp does
+// not word: ids accuracy.*, compensation.*, file.* and gauge.* (context words::AccuracyBenchWords),
+// and the terms direction.* and rotation.* (docs/accuracy.md, appendix).
 #include "widgets/wording/areas.h"
 #include "widgets/wording/wording.h"
 

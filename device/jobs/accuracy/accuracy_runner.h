@@ -1,5 +1,5 @@
 #pragma once
-// Runs an ISO 230-2 axis test or seed 000's linked XY test on an instrument (issue 18):
+// Runs an ISO 230-2 axis test or seed 000's linked XY test on an instrument (docs/accuracy.md):
 // for each stop of the run it moves (over the overrun point where the standard
 // linear cycle has one), waits for the device's MotionDone, dwells and waits for the
 // readback to settle on the device's clock, asks the reading source for the reading

@@ -1,5 +1,5 @@
 #pragma once
-// Where an accuracy run's readings come from, behind one interface (issue 18):
+// Where an accuracy run's readings come from, behind one interface:
 //
 //  - the instrument's own readback (encoder on the analyzer, grating on the stage),
 //  - an external gauge on a serial port of its own (gauge_source.h),

@@ -60,7 +60,7 @@ struct Approach {
     double overtravelMm = 0.2;  ///< how far before the tile the overtravel point lies
 };
 
-/// The stage's own error compensation (issue 18): with `enabled` the scan runs only
+/// The stage's own error compensation (docs/scan.md): with `enabled` the scan runs only
 /// when the device has compensation enabled on X and Y (the runner checks), and the
 /// device moves every target by its correction so the work point lands on the planned
 /// position. The plan carries no error curve of its own: measure one on the
