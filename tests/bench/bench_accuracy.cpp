@@ -1,4 +1,4 @@
-// Google Benchmark program for the accuracy bench's math (issue 18).
+// Google Benchmark program for the accuracy bench's math (docs/accuracy.md).
 // Target: evaluating 41 targets × 10 cycles × 2 directions (820 readings) by ISO
 // 230-2 and fitting polynomial orders 1–5 to the 41 mean deviations takes under
 // 1 ms. Counters: ms_per_evaluate_and_fit (the target figure: this thread's CPU

@@ -1,4 +1,4 @@
-// Google Benchmark program for the scripting API (issue 20, docs/api.md).
+// Google Benchmark program for the scripting API (docs/api.md).
 //
 // BM_StatusRoundTrip: device.status over the Unix socket, from a client's send to the
 //   answer's last byte read: the server and both simulated instruments run on a thread

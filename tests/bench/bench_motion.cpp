@@ -1,5 +1,5 @@
 // Google Benchmark program for motion/: planning latency and step-generation throughput.
-// Targets (issue 3): jerk-limited plan ≤ 0.12 µs (1 axis), ≤ 0.6 µs (3 axes synchronised);
+// Targets: jerk-limited plan ≤ 0.12 µs (1 axis), ≤ 0.6 µs (3 axes synchronised);
 // point-by-point interpolation ≥ 100 M steps/s; Taylor delay recurrence ≥ 100 M delays/s.
 // Derived figures are counters: plans_per_second, steps_per_second, delays_per_second.
 // Inputs are generated once with a fixed seed so runs compare.

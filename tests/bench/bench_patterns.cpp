@@ -1,4 +1,4 @@
-// Google Benchmark program for issue 9's acceptance figures and the path queue's costs.
+// Google Benchmark program for the patterns' acceptance figures (docs/patterns.md) and the path queue's costs.
 //
 // Acceptance (reported as counters, not asserted by time):
 //   BM_StageCircle10mmAt2mmS        max_contour_um < 2     (simulated stage, grating measured every tick)

@@ -1,4 +1,4 @@
-// Google Benchmark program for plates and recipes (issue 8): what must stay
+// Google Benchmark program for plates and recipes (docs/plates.md): what must stay
 // quick however big the plate — planning (which is also validation) of a
 // 384-well recipe each time the editor changes it, reading and checking that
 // recipe from its JSON, reading a run log to resume, the calibration fit, and

@@ -1,4 +1,4 @@
-// Google Benchmark program for the live plots (issue 4): one redraw of the Plots
+// Google Benchmark program for the live plots (docs/telemetry.md): one redraw of the Plots
 // screen's stacked plots, offscreen at 1600×900, 8 channels in 4 plots, each
 // channel holding a 10-minute window at 10 kHz (6 M samples). A frame is what the
 // screen's timer does: ask every store for min/max per pixel column, hand

@@ -1,4 +1,4 @@
-// Google Benchmark program for the stitching scan planner (issue 10).
+// Google Benchmark program for the stitching scan planner (docs/scan.md).
 // Target: plan a 100 × 100 tile region with its time estimate in under 50 ms.
 // Counters: tiles (per plan), seconds_per_plan (validate + grid + order + estimate),
 // tiles_per_second. Variants: a rectangle, a rectangle with the unidirectional

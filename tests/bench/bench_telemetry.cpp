@@ -1,4 +1,4 @@
-// Google Benchmark program for device/telemetry and the telemetry link (issue 4).
+// Google Benchmark program for device/telemetry and the telemetry link (docs/telemetry.md).
 // Targets: ingest ≤ 50 ns per sample per channel; memory bounded by the window (a
 // one-hour run at full rate grows nothing); decimation cost follows the columns,
 // not the samples; ≥ 85 % of the wire's bytes are sample payload at 115200 baud;
@@ -209,7 +209,7 @@ void BM_HubIngest(benchmark::State& state)
 }
 BENCHMARK(BM_HubIngest);
 
-/// What the flight recorder (issue 16 item 8) costs per telemetry batch: the hub
+/// What the flight recorder (docs/telemetry.md, "History") costs per telemetry batch: the hub
 /// ingesting 124-sample batches of the stage's X and Y commanded, measured and
 /// following error (6 channels, all recorded kinds) that a plot wants, with the
 /// history off (arg 0) and on (arg 1), at the 10 kHz sample clock (period 100 µs:

@@ -1,4 +1,4 @@
-// Google Benchmark program for motion/control (issue 7).
+// Google Benchmark program for motion/control (docs/tuning.md).
 // Target: 10 s of a plant + incremental PID at 10 kHz (100 000 control periods)
 // simulated in under 5 ms. Counters: ms_per_10s_simulated (the target figure:
 // this thread's CPU time, which other load on a shared machine does not

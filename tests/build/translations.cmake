@@ -1,4 +1,4 @@
-# The translations are complete and up to date (issue 17):
+# The translations are complete and up to date (docs/wording.md):
 #  - lupdate run over the sources into copies of the .ts files changes nothing, so a
 #    string added or changed in the code without `cmake --build build --target
 #    update_translations` fails here (seconds: lupdate only, nothing is built);
@@ -29,9 +29,9 @@ foreach(ts benchpilot_zh_CN.ts benchpilot_en.ts)
   endif()
 endforeach()
 
-# Contexts still being translated: none since stop 24 (issue 17 phase 2 translated the
-# screens, the accuracy bench, GRBL, the API and the CLI). A new context may be listed
-# here while its words are in review; the list should stay short-lived.
+# Contexts still being translated: none (the screens, the accuracy bench, GRBL, the API
+# and the CLI are all translated). A new context may be listed here while its words are
+# in review; the list should stay short-lived.
 set(PENDING)
 file(READ ${TS_DIR}/benchpilot_zh_CN.ts zh)
 # One list element per <context>: the text's own ';' (and brackets, which CMake

@@ -1,6 +1,6 @@
 // The instrument interface's layering, checked on the sources: runners, the telemetry
-// hub, the interface itself and the screens never name a backend (issue 19: "the runners
-// do not know which backend they drive"), and the simulator's room holds only the
+// hub, the interface itself and the screens never name a backend ("the runners do not
+// know which backend they drive"), and the simulator's room holds only the
 // protocol and the machine model. CMake enforces the link direction; this catches an
 // include of a backend header, which would compile either way.
 #include <gtest/gtest.h>

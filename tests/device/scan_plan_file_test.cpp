@@ -175,8 +175,8 @@ TEST(ScanPlanFile, FingerprintFollowsTheTilesNotTheName)
 
 TEST(ScanPlanFile, SeedTwosCurvesInAnOlderPlanAreReadAndNoLongerUsed)
 {
-    // Before the stage kept its own compensation (issue 18), plans carried seed 002's
-    // curves; such a file still opens, and the plan asks for the device's compensation.
+    // Older plan files carry seed 002's curves (from before the stage kept its own
+    // compensation); such a file still opens, and the plan asks for the device's compensation.
     ScanPlan p;
     p.compensation.enabled = true;
     std::string text = scanfile::writePlan(p);

@@ -19,7 +19,7 @@ TEST(ScanStageModel, MatchesTheSimulatedStage)
     EXPECT_EQ(model.travel.widthMm(), stage.axes[0].travel);
     EXPECT_EQ(model.travel.heightMm(), stage.axes[1].travel);
     // The simulated stage's work point follows seed 002's curves; the plan carries none of
-    // its own (the device's compensation corrects the work point, issue 18).
+    // its own (the device's compensation corrects the work point).
     EXPECT_EQ(stage.axes[0].abbeErrorPolyUm, (std::vector<double>{1.563, 0.9473, -0.0006}));
     EXPECT_EQ(stage.axes[1].abbeErrorPolyUm, (std::vector<double>{1.021, 0.6397, 0.0168}));
 }

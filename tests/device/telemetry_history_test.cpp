@@ -1,4 +1,4 @@
-// The telemetry hub's flight recorder (issue 16 item 8): every instrument's
+// The telemetry hub's flight recorder: every instrument's
 // positions and following errors from connection on, whether or not anyone wants
 // them, in a fixed memory budget (docs/telemetry.md, "History"). The recorder on
 // its own (bounded ring, order, thinning), the hub fed by hand (multi-instrument,

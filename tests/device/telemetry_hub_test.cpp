@@ -491,7 +491,7 @@ TEST_F(TelemetryHubTest, ADeviceClockThatStartsAgainContinuesThatInstrumentsTime
     ASSERT_EQ(f.hub.store(f.stageX)->size(), 1000u);
     f.nextIndex = 0;
     f.feedStage(0.5, 0.2);  // power-cycled device: its clock is back near zero
-    // Nothing before the restart is thrown away (issue 16 item 8): the new samples
+    // Nothing before the restart is thrown away (the history must tell what happened): the new samples
     // follow the old ones after the gap the host saw.
     const tele::ChannelStore* st = f.hub.store(f.stageX);
     EXPECT_EQ(st->size(), 1200u);

@@ -1,4 +1,4 @@
-// Tuning messages (issue 7): layouts, round trips, and decoders that refuse
+// Tuning messages: layouts, round trips, and decoders that refuse
 // anything but exactly one well-formed message.
 #include "device/protocol/frame_codec.h"
 #include "device/protocol/messages_tuning.h"

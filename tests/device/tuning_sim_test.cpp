@@ -317,7 +317,7 @@ TEST_F(TuningStage, NewGainsTakeOverBetweenTwoPeriodsWithoutABump)
     EXPECT_NEAR(measuredMm(m, kX), 50, 0.001);
 }
 
-// Issue 16 item 2: Kp 5 (a typed "-5" whose sign was dropped) applied as the
+// Kp 5 (a typed "-5" whose sign was dropped) applied as the
 // operator's set, then a step test under it. It diverges and trips; after the
 // trip the axis must be at rest under the gains it had before that set, not
 // run on under the set that just diverged, and the trip says where it stopped.

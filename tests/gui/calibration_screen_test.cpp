@@ -189,7 +189,7 @@ TEST_F(CalibrationScreenTest, AManualTestAsksAtEachStopAndTakesWhatIsTyped)
     EXPECT_EQ(screen->latest()->reference, "manual");
 }
 
-// Issue 16 item 5: a file opened while a test runs would replace the test that runs.
+// A file opened while a test runs would replace the test that runs.
 // Open… is held back, saying why, until the test has ended; a manual test waits at its
 // first stop, so the hold is seen while the runner is certainly active.
 TEST_F(CalibrationScreenTest, OpenIsHeldBackWhileATestRuns)

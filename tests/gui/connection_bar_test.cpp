@@ -1,4 +1,4 @@
-// The connection bar (issue 16 item 12, issue 19): a path typed into the port list is what
+// The connection bar: a path typed into the port list is what
 // connects (the pty benchpilot-sim serves), 115200 Bd is offered and chosen by default, and a
 // machine profile can be chosen, remembered and cleared — the choice carries it to the session.
 #include "widgets/connection_bar.h"

@@ -23,7 +23,7 @@ QSize shortOfRoom(QWidget* window, const QString& name)
 }
 } // namespace
 
-// In English and in Chinese (issue 17: Chinese text is often shorter but needs more height).
+// In English and in Chinese (Chinese text is often shorter but needs more height).
 class MainWindowSize : public ::testing::TestWithParam<const char*> {
 protected:
     void SetUp() override { ASSERT_TRUE(translators.setLanguage(QString::fromLatin1(GetParam()))); }
@@ -61,7 +61,7 @@ TEST_P(MainWindowSize, EveryScreenFitsA1366x768Display)
     }
 }
 
-// Issue 16, item 4: the empty screens fitted, but the window could not go narrower
+// The failure this catches: the empty screens fitted, but the window could not go narrower
 // than 1401 px and widened itself to 1547 px once Ziegler–Nichols results were
 // shown, pushing E-STOP off a 1366-pixel laptop screen. The screens in their busy
 // states: tuning results, files with long names, a long error in the banner.

@@ -153,7 +153,7 @@ TEST_F(PatternRunControls, AbortStopsOnThePathAndTheNextRunCanStartAndBeAbortedW
     expectReadyForTheNextRun();
 }
 
-// Issue 16, item 14: the status said "segment 2 of 4, 15.7 mm done" while the stage was at
+// The failure this catches: the status said "segment 2 of 4, 15.7 mm done" while the stage was at
 // 17.6 mm in segment 3, and an aborted run's summary said "time 0.0 s".
 TEST_F(PatternRunControls, StatusSaysWhereTheMachineIsAndAnAbortedRunKeepsItsTime)
 {
@@ -174,7 +174,7 @@ TEST_F(PatternRunControls, StatusSaysWhereTheMachineIsAndAnAbortedRunKeepsItsTim
     EXPECT_FALSE(runner()->summary().complete);
 }
 
-// Issue 16, item 9: after a pulled cable the button said "Continue" while the message said
+// The failure this catches: after a pulled cable the button said "Continue" while the message said
 // "press Resume".
 TEST_F(PatternRunControls, TheButtonAfterALostLinkSaysTheWordTheMessageUses)
 {
@@ -192,7 +192,7 @@ TEST_F(PatternRunControls, TheButtonAfterALostLinkSaysTheWordTheMessageUses)
                                                                                 << pauseButton->text().toStdString();
 }
 
-// Issue 16 item 5: a pattern loaded while one runs would replace the path on screen with
+// A pattern loaded while one runs would replace the path on screen with
 // one the machine is not following. Load… is held back, saying why, until the run ends.
 TEST_F(PatternRunControls, LoadIsHeldBackWhileAPatternRuns)
 {

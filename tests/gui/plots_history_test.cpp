@@ -1,4 +1,4 @@
-// The Plots screen after an incident (issue 16 item 8): what happened while no plot
+// The Plots screen after an incident (docs/telemetry.md, "History"): what happened while no plot
 // showed a channel is drawn when it is shown again, and the history export holds
 // every instrument's positions and following errors, plotted or not. The real main
 // window on its in-process simulators, offscreen.

@@ -1,4 +1,4 @@
-// benchpilot --help and --version answer without a display (issue 11).
+// benchpilot --help and --version answer without a display (on a server or over ssh).
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>

@@ -1,4 +1,4 @@
-// Issue 16, item 4: `benchpilot --screenshot FILE --size WxH` renders the window at that size;
+// `benchpilot --screenshot FILE --size WxH` renders the window at that size;
 // a window that cannot shrink to it comes out as a larger picture, so the picture itself
 // shows whether a screen fits a 1366 × 768 laptop.
 #include <QCoreApplication>

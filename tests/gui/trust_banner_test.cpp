@@ -1,4 +1,4 @@
-// Issue 16, item 3: a message that comes or goes must not move the controls under
+// A message that comes or goes must not move the controls under
 // the pointer (three clicks landed on the wrong control when banners pushed the
 // screens down ~37 px and pulled them back when they faded).
 #include "gui_wait.h"

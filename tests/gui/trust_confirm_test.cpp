@@ -1,4 +1,4 @@
-// Issue 16 item 10: one rule for what asks first. Plate Abort, Disconnect during
+// One rule for what asks first (widgets/common/confirmation.h). Plate Abort, Disconnect during
 // a run and quitting with unsaved edits or a running job ask; "no" leaves
 // everything as it was.
 #include "app/gui/instrument_session.h"
@@ -129,7 +129,7 @@ TEST_F(TrustConfirmTest, QuittingWithUnsavedEditsOrARunningJobAsksFirst)
 
 TEST_F(TrustConfirmTest, HomingAPlungerThatHoldsLiquidSaysHowMuchWouldBePushedOut)
 {
-    // Issue 16 item 1: the operator was led to home the plunger with 220 µL in the syringe.
+    // The failure this catches: the operator was led to home the plunger with 220 µL in the syringe.
     dev::Instrument* a = analyzer();
     // Statuses counted from the home request on, so "homed and still" is news, not the last reading.
     int fresh = 0;

@@ -1,4 +1,4 @@
-// Issue 16, item 13: "Go" stayed disabled until homing with no hint why, and the go-to field
+// The failure this catches: "Go" stayed disabled until homing with no hint why, and the go-to field
 // was cut to "tar…". A greyed control says why in its tooltip.
 #include "gui_window.h"
 

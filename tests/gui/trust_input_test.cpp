@@ -1,4 +1,4 @@
-// Issue 16, item 6: input traps. The wheel over a recipe panel turned a pump speed
+// Input traps. The wheel over a recipe panel turned a pump speed
 // it was only passing over; after switching to Jog the focus sat in a Step box and
 // ↑ changed the step instead of jogging Y.
 #include "gui_window.h"

@@ -1,4 +1,4 @@
-// Issue 16 items 4 and 7: at 1366 × 768 nothing is cut. The connection bar's identity
+// At 1366 × 768 nothing is cut. The connection bar's identity
 // was cut mid-letter without "…"; the recipe editor cut "Import Opentrons labware…" and
 // the "▼" beside it, in English and more so in Chinese. Now the identity ends in "…"
 // with the whole text in its tooltip, and every button and label of the recipe editor

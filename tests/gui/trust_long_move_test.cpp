@@ -1,4 +1,4 @@
-// Issue 16 item 10: one rule for long moves on every screen. Scan asked nothing before a
+// One rule for long moves on every screen. Scan once asked nothing before a
 // 45 mm approach while Jog and Patterns asked; now Scan asks too (and No leaves the stage
 // where it is), and the long-move question offers "Don't ask again this session": ticked
 // with Yes, the next long move — on any screen — goes without asking. Destructive

@@ -1,4 +1,4 @@
-// Issue 16 item 7: nothing loaded from a file is changed silently. The step form's spin
+// Nothing loaded from a file is changed silently. The step form's spin
 // boxes clamped a file's volume −20 µL to 0 and its pump speed 900 µL/s to 500 while
 // Problems listed the originals. The form shows the file's values, marked invalid, the
 // recipe keeps them until the operator types another, and saving without an edit writes

@@ -1,4 +1,4 @@
-// Issue 16 item 1: Disconnect → Connect on the in-process simulator finds the
+// Disconnect → Connect on the in-process simulator finds the
 // same instrument (a powered machine whose cable was out), and a plate run
 // interrupted by Disconnect resumes after Connect with every well done exactly
 // once and the plunger's contents right.
@@ -123,7 +123,7 @@ TEST_F(TrustReconnectTest, APlateRunInterruptedByDisconnectResumesWithEveryWellD
     EXPECT_NEAR(analyzer()->status().axes[3].commanded, 60, 1e-6) << "six wells of 10 µL";
 }
 
-// Issue 16 item 5: Open… during a plate run replaced the plate map with "No
+// The failure this catches: Open… during a plate run replaced the plate map with "No
 // plate" while the old run went on. A run holds the recipe that runs on screen.
 TEST_F(TrustReconnectTest, OpenDuringAPlateRunKeepsTheRecipeThatRuns)
 {
@@ -151,7 +151,7 @@ TEST_F(TrustReconnectTest, OpenDuringAPlateRunKeepsTheRecipeThatRuns)
     EXPECT_TRUE(screen->openRecipe(other));
 }
 
-// Issue 16 item 7: the recipe editor clamped a file's safe Z −5 to 0, depth 700
+// The failure this catches: the recipe editor clamped a file's safe Z −5 to 0, depth 700
 // to 100 and slot 7 to 1 while Problems listed the originals. The editor shows
 // the file's values, marked invalid, and the recipe keeps them until fixed.
 TEST_F(TrustReconnectTest, TheRecipeEditorShowsAFilesOutOfRangeValuesAsTheyAreMarkedInvalid)
@@ -185,7 +185,7 @@ TEST_F(TrustReconnectTest, TheRecipeEditorShowsAFilesOutOfRangeValuesAsTheyAreMa
     EXPECT_FALSE(ed->isModified()) << "opening the file changed it";
 }
 
-// Issue 16 item 1: a resume after a reconnect checks the instrument against the
+// A resume after a reconnect checks the instrument against the
 // run. One that was switched off (a fresh simulator, homed again) has an empty
 // syringe: the resume is refused and says where the plunger is and should be.
 TEST_F(TrustReconnectTest, AResumeOnAnInstrumentWhosePlungerDiffersIsRefusedSayingWhy)

@@ -1,4 +1,4 @@
-// Issue 16, items 9 and 14: one source of truth per state. The status bar said "ready" during
+// One source of truth per state. Failures this catches: the status bar said "ready" during
 // an E-stop; "Device clock started again" stayed red for minutes; at a soft limit the joystick
 // still said "Commanded speed 20.00 mm/s"; the circle preview became an ellipse after a resize.
 #include "patterns_fixture.h"

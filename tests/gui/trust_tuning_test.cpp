@@ -1,4 +1,4 @@
-// Issue 16 items 2 and 11 on the Tuning screen, against the in-process stage:
+// Trust on the Tuning screen, against the in-process stage:
 // a gain typed as "-5" stays "-5", is shown invalid and never sent; a set far
 // from the one in force asks first; a step test that diverges shows "unstable",
 // never figures, and leaves the axis at rest under the gains it had before; and
@@ -197,7 +197,7 @@ TEST_F(TrustTuningTest, TheScreenSpeaksOfGainsNotOfSeedEquationsOrTables)
             EXPECT_FALSE(text.contains(jargon)) << text.toStdString();
 }
 
-// Issue 16 item 5 on the Tuning screen: results opened during a run would
+// On the Tuning screen, results opened during a run would
 // replace the ones the running assistant fills in. Held while it runs.
 TEST_F(TrustTuningTest, OpeningResultsIsHeldWhileATuningRunIsUnderWay)
 {

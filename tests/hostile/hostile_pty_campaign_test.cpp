@@ -61,7 +61,7 @@ TEST(HostilePty, ScanWithAKilledCli)
     ptyCampaign([](double r, std::uint64_t s) { return hostile::ptyScan(r, s, 3.6, {hostile::Cut::Kill, 5}); });
 }
 
-// A circle (issue 15: each job through the bad line, pattern included): whole through
+// A circle (each job goes through the bad line, pattern included): whole through
 // damaged bytes; cut by an unplug, the CLI ends with how long it ran, the stage on the path.
 TEST(HostilePty, PatternThroughDamagedBytes)
 {

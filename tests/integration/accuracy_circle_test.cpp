@@ -113,7 +113,7 @@ TEST(AccuracyCircle, TheCommandRefusesACircleOutsideTheTravel)
 {
     // (A whole run through the command is not tested here: the runner samples by polling
     // status on the host's clock, and the command cannot step the device's clock by hand,
-    // so on a loaded machine a sped-up run leaves gaps. See the report of issue 18.)
+    // so on a loaded machine a sped-up run leaves gaps.)
     // Outside the travel: refused naming the limit, nothing moves.
     const auto out = runCliInProcess(splitWords("--sim stage accuracy circle --home --time-scale 25 --radius 20 --centre 10,50"));
     EXPECT_EQ(out.code, 1);

@@ -1,5 +1,5 @@
 // benchpilot-cli accuracy and compensation, as scripts use them: the JSON shapes of
-// issue 18 (figures under "figures" with A … B_mean, the fit's order, coefficients_um,
+// docs/accuracy.md (figures under "figures" with A … B_mean, the fit's order, coefficients_um,
 // sse, r2, adj_r2 and its table of orders), bad input named by file, line and column,
 // a run on the simulated stage measured by its gauge, and the device keeping an
 // uploaded compensation across separate programs.

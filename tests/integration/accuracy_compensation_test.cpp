@@ -1,4 +1,4 @@
-// Issue 18's must-hold, on the simulated stage and the simulator's clock: measured by
+// What compensation must achieve, on the simulated stage and the simulator's clock: measured by
 // a gauge at the work point, the stage shows seed 002's Abbe error and the grating's
 // scale error (tens of µm); a compensation fitted to those readings, uploaded to the
 // device and enabled, reduces A at least five-fold while R stays within noise. The

@@ -1,4 +1,4 @@
-// The command line behaves as users expect (issue 11): --help and -h on every
+// The command line behaves as users expect: --help and -h on every
 // command and subcommand, --opt=value beside --opt value, negative numbers as
 // values and arguments, --version on all programs, bash completion.
 #include "app/cli/command.h"

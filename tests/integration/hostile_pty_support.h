@@ -1,5 +1,5 @@
 #pragma once
-// Jobs on a hostile line over REAL pseudo-terminals (issue 15): benchpilot-sim (its
+// Jobs on a hostile line over REAL pseudo-terminals (docs/testing.md): benchpilot-sim (its
 // journal on) ← bp-faultline (the loopback's fault model, seeded) ← benchpilot-cli
 // (QSerialPort), one CLI process after another as an operator would run them: a run that
 // stops on the bad line is resumed from its log, a CLI killed with SIGKILL is replaced by

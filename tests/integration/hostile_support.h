@@ -1,5 +1,5 @@
 #pragma once
-// Jobs on a hostile line (issue 15): each runs one job — recipe, scan, pattern, tuning,
+// Jobs on a hostile line (docs/testing.md): each runs one job — recipe, scan, pattern, tuning,
 // joystick — on the in-process simulator over a loopback whose bytes are dropped,
 // corrupted, duplicated and delayed (dev::LinkFaults, seeded), with unplugs where the
 // job has a way back, and judges the invariants a lab relies on by the SIMULATOR's own

@@ -1,4 +1,4 @@
-// Patience on a noisy line (issue 15, docs/protocol.md "Retries and silence"): at 1 %
+// Patience on a noisy line (docs/protocol.md "Retries and silence"): at 1 %
 // of bytes damaged the handshake and every request get through by retrying with the
 // same sequence number, each executed once; duplicated device frames are one event;
 // a lost MotionDone does not stall a scan; a stopped pattern says how long it ran.

@@ -92,7 +92,7 @@ TEST(ProtocolProbe, TellsBenchPilotFromGrblAndSilence)
     }
 }
 
-// Issue 15, found by bp-faultline on the pty path: at 1 % of bytes damaged a HELLO reply
+// Found by bp-faultline on the pty path: at 1 % of bytes damaged a HELLO reply
 // (about 300 bytes) arrives whole one time in twenty, and the probe asked four times in
 // 4 s — so benchpilot-cli --port failed most connects with "neither GRBL lines nor
 // BenchPilot frames" while the device answered every HELLO. Damaged BenchPilot frames are

@@ -355,8 +355,8 @@ TEST(ScanRun, TheStagesOwnCompensationPutsTheWorkPointOnThePlan)
 {
     // The simulated stage's work point sits off its grating by seed 002's curves (up to
     // 0.23 mm at Y = 100 mm). With those curves uploaded to the stage and enabled, the
-    // plan that runs with the stage's compensation brings it back (issue 18: the planner
-    // carries no curve of its own).
+    // plan that runs with the stage's compensation brings it back (the planner carries
+    // no curve of its own).
     StageScan s;
     ASSERT_TRUE(s.ready());
     ScanPlan p = smallPlan();

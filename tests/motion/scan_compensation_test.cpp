@@ -121,7 +121,7 @@ TEST(SeedCompensation, SeedsOneStepRuleLeavesAlmostAMicrometreOnY)
 
 TEST(SeedCompensation, ThePlanCommandsWhatItPlansAndLeavesTheCorrectionToTheDevice)
 {
-    // Issue 18: no error curve in the planner; the stage's own compensation moves the
+    // No error curve in the planner; the stage's own compensation moves the
     // target on the device (tests/integration/scan_run_test.cpp, ScanRun.TheDevicesCompensation…).
     motion::scan::ScanPlan p;
     const motion::scan::Point2 planned{50, 80};

@@ -202,7 +202,7 @@ TEST(TuningModel, RelayReportsTheClassicEstimateBesideTheRefinedOne)
     EXPECT_TRUE(t.relay->refined);
 }
 
-// Issue 16 item 2: a response that diverged until the envelope tripped showed
+// The failure this catches: a response that diverged until the envelope tripped showed
 // "overshoot 0 %, settling 6 ms" read off its last samples.
 TEST(TuningStepMetrics, ATrippedOrUnsettledResponseHasNoSettlingFigures)
 {
