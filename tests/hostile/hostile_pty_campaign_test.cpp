@@ -45,7 +45,7 @@ TEST(HostilePty, Recipe24WellsWithAKilledCli)
     ptyCampaign([](double r, std::uint64_t s) { return hostile::ptyRecipe(r, s, "A1:B12", 24, {hostile::Cut::Kill, 8}); });
 }
 
-// The issue's own case: sampling-96, the CLI killed a third of the way through.
+// The case a lab fears most: sampling-96, the CLI killed a third of the way through.
 TEST(HostilePty, Recipe96WellsWithAKilledCli)
 {
     ptyCampaign([](double r, std::uint64_t s) { return hostile::ptyRecipe(r, s, "A1:H12", 96, {hostile::Cut::Kill, 30}); });

@@ -1,5 +1,5 @@
 // benchpilot-cli tune, step-test and gains, called in-process: the JSON shapes
-// the issue gives, Ku/Tu against the closed form, and refusals that say why.
+// docs/tuning.md gives, Ku/Tu against the closed form, and refusals that say why.
 #include "cli_in_process.h"
 #include "motion/control/plant.h"
 

@@ -1,5 +1,5 @@
 // Planning a recipe: the moves per well, the syringe's capacity, and every
-// error the issue names, found in one pass.
+// error a recipe can have, found in one pass.
 #include "motion/message_print.h"
 #include "motion/plans/recipes/move_time.h"
 #include "motion/seed_scurve.h"

@@ -1,5 +1,5 @@
 // Both tuning methods against the analytic phase crossover over a wide, seeded
-// population of FOPDT and lag plants (the first "must hold"), and the
+// population of FOPDT and lag plants (what the tuning must get right first), and the
 // classic describing-function estimate beside the refined one.
 #include "motion/message_print.h"
 #include "motion/control/tuning/model_tuning.h"
