@@ -146,9 +146,9 @@ ApiParam optionParam(const char* option, ParamType type, bool required)
 QCommandLineOption option(const char* name, const char* description, const char* valueName, const char* fallback)
 {
     QCommandLineOption o(QString::fromLatin1(name), QCoreApplication::translate("cli", description),
-                         valueName ? QString::fromLatin1(valueName) : QString());
+                         valueName ? QString::fromUtf8(valueName) : QString());  // "x,y;x,y;…" is UTF-8, as the source is
     if (fallback)
-        o.setDefaultValue(QString::fromLatin1(fallback));
+        o.setDefaultValue(QString::fromUtf8(fallback));
     return o;
 }
 
