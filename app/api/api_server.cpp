@@ -43,6 +43,7 @@ ApiServer::ApiServer(QVector<ServedInstrument> instruments, tele::TelemetryHub* 
         if (ApiClient* c = clientById(clientId))
             c->drain();
     });
+    m_lease.setCallInProgress([this](quint64 clientId) { return holderWaitsForACall(clientId); });
 }
 
 ApiServer::~ApiServer()
@@ -269,8 +270,26 @@ void ApiServer::tick()
         m_tick.stop();
 }
 
+bool ApiServer::holderWaitsForACall(quint64 clientId) const
+{
+    // A velocity jog the client holds open still needs its heartbeats: a call in progress
+    // shows that the script waits for it, not that it still watches the jog.
+    for (const HeldJog& j : m_heldJogs)
+        if (j.clientId == clientId && j.instrument)
+            return false;
+    const ApiClient* client = clientById(clientId);
+    if (!client || !client->isOpen())
+        return false;
+    for (const auto& c : m_calls)
+        if (c->clientId() == clientId && !c->id().isUndefined() && !c->finished())
+            return true;
+    return false;
+}
+
 void ApiServer::callFinished(CommandCall* call)
 {
+    // The holder's silence is counted from the answer, not from when it asked.
+    m_lease.callAnswered(call->clientId());
     m_lease.endOneCallLease(call->clientId());
     for (auto it = m_calls.begin(); it != m_calls.end(); ++it)
         if (it->get() == call) {

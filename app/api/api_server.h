@@ -123,6 +123,9 @@ private:
     void tick();
     void answerError(ApiClient* client, const Request& r, int code, const QString& message, const QJsonValue& data = {});
     ApiClient* clientById(quint64 id) const;
+    /// A call of the lease holder's still running, on its open connection, that it will be
+    /// answered: proof of life that stands in for heartbeats (ControlLease::setCallInProgress).
+    bool holderWaitsForACall(quint64 clientId) const;
 
     QVector<ServedInstrument> m_instruments;
     tele::TelemetryHub* m_hub;
