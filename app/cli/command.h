@@ -247,9 +247,17 @@ int runCommandLine(const QStringList& args, QTextStream& out, QTextStream& err, 
 /// `--attach`: sends the words to the running GUI's API socket (`socketPath`, or the
 /// default one) as a cli.run call and prints what comes back (attach.cpp).
 int runAttached(const QStringList& args, const QString& socketPath, QTextStream& out, QTextStream& err);
-/// Where the GUI listens unless told otherwise: $XDG_RUNTIME_DIR/benchpilot/api.sock,
-/// or /tmp/benchpilot-UID/api.sock when XDG_RUNTIME_DIR is not set.
+/// Where the GUI listens, and benchpilot-cli --attach looks, unless told otherwise: the
+/// one rule for both (clients/python/benchpilot.py's default_socket_path() spells it the
+/// same way): $XDG_RUNTIME_DIR/benchpilot/api.sock, or /tmp/benchpilot-UID/api.sock when
+/// XDG_RUNTIME_DIR is not set, as the user's environment gave it to the program.
 QString defaultApiSocketPath();
+/// The rule itself, for a given XDG_RUNTIME_DIR ("" = not set) and user id.
+QString apiSocketPathFor(const QString& runtimeDir, uint uid);
+/// Notes XDG_RUNTIME_DIR as the program was started with it. benchpilot-cli calls it
+/// before it gives Qt a private runtime folder of its own when there is none, so that
+/// --attach still looks where the GUI listens.
+void noteUsersRuntimeDir();
 
 /// The command the words name after the global options ("recipe", "run", …), with its
 /// path ("recipe run"); nullptr when they name none. Global options are skipped.
