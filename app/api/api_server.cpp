@@ -318,19 +318,22 @@ const ServedInstrument* ApiServer::resolveInstrument(const QString& kind, QStrin
         *callersFault = true;
         return nullptr;
     }
-    const ServedInstrument* only = nullptr;
-    int ready = 0;
-    for (const auto& s : m_instruments)
-        if (s.instrument && s.instrument->isReady()) {
-            only = &s;
-            ++ready;
-        }
-    if (ready == 1)
-        return only;
-    *why = ready == 0 ? tr("no instrument is connected in the GUI")
-                      : tr("the analyzer and the stage are both connected: say which with --sim analyzer|stage");
-    *callersFault = ready > 1;
+    const QVector<const ServedInstrument*> ready = connectedInstruments();
+    if (ready.size() == 1)
+        return ready.first();
+    *why = ready.isEmpty() ? tr("no instrument is connected in the GUI")
+                           : tr("the analyzer and the stage are both connected: say which with --instrument analyzer|stage");
+    *callersFault = !ready.isEmpty();
     return nullptr;
+}
+
+QVector<const ServedInstrument*> ApiServer::connectedInstruments() const
+{
+    QVector<const ServedInstrument*> ready;
+    for (const auto& s : m_instruments)
+        if (s.instrument && s.instrument->isReady())
+            ready << &s;
+    return ready;
 }
 
 bool ApiServer::mayControl(quint64 clientId, const QString& clientName, const QString& token, bool oneCall, QString* why)

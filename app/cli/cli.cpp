@@ -411,10 +411,21 @@ int runCommandLine(const QStringList& rawArgs, QTextStream& out, QTextStream& er
         return Usage;
     if (top.isSet(QStringLiteral("attach")) || p.isSet(QStringLiteral("attach")))
         return fail(who, tr("--attach is already in effect here"), QString());
+    if (host.insideGui() && link.port.isEmpty() && !link.instrument.isEmpty()) {
+        // Inside the GUI (--attach, the API) --instrument names which of its instruments,
+        // whatever it is connected to; --sim is the older spelling of the same.
+        if (!link.sim.isEmpty() && link.sim != link.instrument)
+            return fail(who, tr("--instrument %1 and --sim %2 name different instruments").arg(link.instrument, link.sim), QString());
+        link.sim = link.instrument;
+        link.instrument.clear();
+    }
     if (!link.sim.isEmpty() && !link.port.isEmpty())
         return fail(who, tr("give either --sim or --port, not both"), QString());
-    if (link.port.isEmpty() && (!link.instrument.isEmpty() || !link.profile.isEmpty()))
-        return fail(who, tr("--instrument and --profile go with --port (--sim names its instrument itself)"), QString());
+    if (link.port.isEmpty() && !link.instrument.isEmpty())
+        return fail(who, tr("--instrument goes with --port, or with --attach to name the GUI's instrument (--sim names its simulator itself)"),
+                    QString());
+    if (link.port.isEmpty() && !link.profile.isEmpty())
+        return fail(who, tr("--profile goes with --port"), QString());
     if (ran)
         *ran = cmd;
     Invocation inv(path, p, link, out, err, host);

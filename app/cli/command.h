@@ -155,6 +155,12 @@ public:
     }
     /// True inside the GUI: no tricks on the simulator's clock, no process signals.
     virtual bool insideGui() const { return false; }
+    /// The sessions a command that only makes machines safer (stop, estop) acts on: the
+    /// one openSession() gives, unless the host holds several instruments and the words
+    /// name none. Then it is every connected one, as the GUI's E-stop button halts them
+    /// all: a halt is never refused because the caller did not say which. Empty after
+    /// reporting why.
+    virtual std::vector<std::unique_ptr<CliSession>> openHaltSessions(Invocation& inv);
 };
 
 /// benchpilot-cli's own host: a link of its own per command, signals for Ctrl+C.
@@ -216,6 +222,9 @@ public:
     CliSession* session();
     /// The session if one was opened.
     CliSession* openedSession() const { return m_session.get(); }
+    /// For stop and estop: every instrument they halt (InvocationHost::openHaltSessions),
+    /// opened at once; empty after reporting why. One of them is also session().
+    QVector<CliSession*> haltSessions();
 
 private:
     QString m_path;
@@ -226,6 +235,7 @@ private:
     InvocationHost& m_host;
     QStringList m_reports;
     std::unique_ptr<CliSession> m_session;
+    std::vector<std::unique_ptr<CliSession>> m_moreSessions;  ///< haltSessions() beyond the first
 };
 
 /// Options with a value take the next word even when it starts with '-', and a
