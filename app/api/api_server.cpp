@@ -43,6 +43,7 @@ ApiServer::ApiServer(QVector<ServedInstrument> instruments, tele::TelemetryHub* 
         if (ApiClient* c = clientById(clientId))
             c->drain();
     });
+    m_lease.setCallInProgress([this](quint64 clientId) { return holderWaitsForACall(clientId); });
 }
 
 ApiServer::~ApiServer()
@@ -269,8 +270,26 @@ void ApiServer::tick()
         m_tick.stop();
 }
 
+bool ApiServer::holderWaitsForACall(quint64 clientId) const
+{
+    // A velocity jog the client holds open still needs its heartbeats: a call in progress
+    // shows that the script waits for it, not that it still watches the jog.
+    for (const HeldJog& j : m_heldJogs)
+        if (j.clientId == clientId && j.instrument)
+            return false;
+    const ApiClient* client = clientById(clientId);
+    if (!client || !client->isOpen())
+        return false;
+    for (const auto& c : m_calls)
+        if (c->clientId() == clientId && !c->id().isUndefined() && !c->finished())
+            return true;
+    return false;
+}
+
 void ApiServer::callFinished(CommandCall* call)
 {
+    // The holder's silence is counted from the answer, not from when it asked.
+    m_lease.callAnswered(call->clientId());
     m_lease.endOneCallLease(call->clientId());
     for (auto it = m_calls.begin(); it != m_calls.end(); ++it)
         if (it->get() == call) {
@@ -299,19 +318,22 @@ const ServedInstrument* ApiServer::resolveInstrument(const QString& kind, QStrin
         *callersFault = true;
         return nullptr;
     }
-    const ServedInstrument* only = nullptr;
-    int ready = 0;
-    for (const auto& s : m_instruments)
-        if (s.instrument && s.instrument->isReady()) {
-            only = &s;
-            ++ready;
-        }
-    if (ready == 1)
-        return only;
-    *why = ready == 0 ? tr("no instrument is connected in the GUI")
-                      : tr("the analyzer and the stage are both connected: say which with --sim analyzer|stage");
-    *callersFault = ready > 1;
+    const QVector<const ServedInstrument*> ready = connectedInstruments();
+    if (ready.size() == 1)
+        return ready.first();
+    *why = ready.isEmpty() ? tr("no instrument is connected in the GUI")
+                           : tr("the analyzer and the stage are both connected: say which with --instrument analyzer|stage");
+    *callersFault = !ready.isEmpty();
     return nullptr;
+}
+
+QVector<const ServedInstrument*> ApiServer::connectedInstruments() const
+{
+    QVector<const ServedInstrument*> ready;
+    for (const auto& s : m_instruments)
+        if (s.instrument && s.instrument->isReady())
+            ready << &s;
+    return ready;
 }
 
 bool ApiServer::mayControl(quint64 clientId, const QString& clientName, const QString& token, bool oneCall, QString* why)

@@ -95,6 +95,8 @@ public:
     /// The served instrument `kind` names ("" = the only one connected); nullptr with why,
     /// and `callersFault` set when the caller must name another (or any) instrument.
     const ServedInstrument* resolveInstrument(const QString& kind, QString* why, bool* callersFault = nullptr) const;
+    /// Every served instrument that is connected and ready, in the order served.
+    QVector<const ServedInstrument*> connectedInstruments() const;
     /// May the client change things? With `oneCall` (cli.run) a free lease is taken for the call.
     bool mayControl(quint64 clientId, const QString& clientName, const QString& token, bool oneCall, QString* why);
     void holdJog(quint64 clientId, dev::Instrument* instrument, int axis, double velocity);
@@ -123,6 +125,9 @@ private:
     void tick();
     void answerError(ApiClient* client, const Request& r, int code, const QString& message, const QJsonValue& data = {});
     ApiClient* clientById(quint64 id) const;
+    /// A call of the lease holder's still running, on its open connection, that it will be
+    /// answered: proof of life that stands in for heartbeats (ControlLease::setCallInProgress).
+    bool holderWaitsForACall(quint64 clientId) const;
 
     QVector<ServedInstrument> m_instruments;
     tele::TelemetryHub* m_hub;

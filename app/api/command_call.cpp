@@ -219,7 +219,7 @@ std::unique_ptr<cli::CliSession> CommandCall::openSession(cli::Invocation& inv)
 {
     const cli::LinkOptions& link = inv.link();
     if (!link.port.isEmpty()) {
-        inv.report(tr("inside the GUI its own connections are used: --port does not apply (name the instrument with --sim analyzer|stage)"));
+        inv.report(tr("inside the GUI its own connections are used: --port does not apply (name the instrument with --instrument analyzer|stage)"));
         return nullptr;
     }
     QString why;
@@ -247,22 +247,49 @@ std::unique_ptr<cli::CliSession> CommandCall::openSession(cli::Invocation& inv)
     if (spec.access == cli::Access::Safety)  // stop and E-stop change things too: in the log, never gated
         m_server.logActivity(m_clientName, QStringLiteral("call"),
                              tr("%1 on the %2").arg(m_description.isEmpty() ? methodName() : m_description, served->key), false);
-    auto session = std::make_unique<cli::CliSession>(inv, served->instrument.data());
-    const QString consumer = QStringLiteral("api call %1 of client %2").arg(reinterpret_cast<quintptr>(this)).arg(m_clientId);
-    const ServedInstrument copy = *served;
+    return sessionOn(inv, *served);
+}
+
+std::unique_ptr<cli::CliSession> CommandCall::sessionOn(cli::Invocation& inv, const ServedInstrument& served)
+{
+    auto session = std::make_unique<cli::CliSession>(inv, served.instrument.data());
+    const QString consumer = QStringLiteral("api call %1 of client %2 on %3").arg(reinterpret_cast<quintptr>(this)).arg(m_clientId).arg(served.key);
+    const ServedInstrument copy = served;
     session->setTelemetryWish([this, consumer, copy](const QVector<proto::ChannelRef>& channels, int rateHz) {
         m_server.wantTelemetry(consumer, copy, channels, rateHz);
     });
     // A refusal the command reports comes through the instrument's signal or request():
     // remember the device's code for the error the client gets.
-    QObject::connect(served->instrument.data(), &dev::Instrument::statusChanged, session.get(),
+    QObject::connect(served.instrument.data(), &dev::Instrument::statusChanged, session.get(),
                      [this](const dev::InstrumentStatus& st) { m_estopLatched = st.estop; });
-    QObject::connect(served->instrument.data(), &dev::Instrument::requestFailed, session.get(), [this](const dev::RequestError& e) {
+    QObject::connect(served.instrument.data(), &dev::Instrument::requestFailed, session.get(), [this](const dev::RequestError& e) {
         if (e.kind == dev::RequestError::Kind::Device)
             m_refusal = e;
     });
-    m_estopLatched = served->instrument->status().estop;
+    m_estopLatched = served.instrument->status().estop;
     return session;
+}
+
+std::vector<std::unique_ptr<cli::CliSession>> CommandCall::openHaltSessions(cli::Invocation& inv)
+{
+    // An instrument named, or at most one connected: as any command (a named one that is
+    // not connected is said so; none connected is link trouble).
+    const QVector<const ServedInstrument*> ready = m_server.connectedInstruments();
+    if (!inv.link().sim.isEmpty() || !inv.link().port.isEmpty() || ready.size() < 2)
+        return cli::InvocationHost::openHaltSessions(inv);
+    // None named with several connected: every one, as the GUI's E-stop button and Esc do.
+    // A halt is never refused for want of saying which.
+    QStringList keys;
+    std::vector<std::unique_ptr<cli::CliSession>> sessions;
+    for (const ServedInstrument* served : ready) {
+        keys << served->key;
+        sessions.push_back(sessionOn(inv, *served));
+    }
+    m_instrumentKey = keys.join(QStringLiteral(", "));
+    m_server.logActivity(m_clientName, QStringLiteral("call"),
+                         tr("%1 on every connected instrument (%2)").arg(m_description.isEmpty() ? methodName() : m_description, m_instrumentKey),
+                         false);
+    return sessions;
 }
 
 void CommandCall::printedJson(const QJsonObject& object)

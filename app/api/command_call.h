@@ -27,6 +27,7 @@ namespace api {
 class ApiClient;
 class ApiServer;
 struct CommandMethod;
+struct ServedInstrument;
 
 class CommandCall final : public cli::InvocationHost {
 public:
@@ -73,8 +74,12 @@ public:
     bool canHoldJog() const override { return m_style == Style::Method; }
     void holdJog(cli::CliSession& session, int axis, double velocity) override;
     bool insideGui() const override { return true; }
+    /// Naming no instrument while several are connected, stop and estop halt every one.
+    std::vector<std::unique_ptr<cli::CliSession>> openHaltSessions(cli::Invocation& inv) override;
 
 private:
+    /// A session on `served` for this call, its refusals and the E-stop latch watched.
+    std::unique_ptr<cli::CliSession> sessionOn(cli::Invocation& inv, const ServedInstrument& served);
     void body();
     void flushOutput();
     void answer();

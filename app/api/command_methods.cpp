@@ -124,8 +124,10 @@ QVector<MethodParam> methodParams(const CommandMethod& m)
     }
     if (spec.access != cli::Access::Compute || spec.instrumentParam)
         out.push_back({QStringLiteral("instrument"), cli::ParamType::Text,
-                       tr("analyzer or stage; may be left out when only one is connected"), false, QStringLiteral("sim"),
-                       {QStringLiteral("analyzer"), QStringLiteral("stage")}, {}, true});
+                       spec.access == cli::Access::Safety
+                           ? tr("analyzer or stage; left out, every connected instrument (never refused for not saying which)")
+                           : tr("analyzer or stage; may be left out when only one is connected"),
+                       false, QStringLiteral("instrument"), {QStringLiteral("analyzer"), QStringLiteral("stage")}, {}, true});
     if (spec.access == cli::Access::Control || spec.access == cli::Access::Safety)
         out.push_back({QStringLiteral("timeout"), cli::ParamType::Number, tr("longest wait for motion to finish, s (default: 120)"), false,
                        QStringLiteral("timeout"), {}, {}, true});
@@ -301,9 +303,13 @@ QString apiWording(const CommandMethod& m, const QString& message)
 {
     // Longest option names first, so "--start-deg" is not taken for "--start".
     QVector<QPair<QString, QString>> names;
-    for (const MethodParam& p : methodParams(m))
+    for (const MethodParam& p : methodParams(m)) {
         if (!p.option.isEmpty())
             names.push_back({QStringLiteral("--") + p.option, p.name});
+        // A command's own words may name the instrument by --sim, its older spelling.
+        if (p.common && p.option == QLatin1String("instrument"))
+            names.push_back({QStringLiteral("--sim"), p.name});
+    }
     std::sort(names.begin(), names.end(), [](const auto& a, const auto& b) { return a.first.size() > b.first.size(); });
     QString out;
     for (int i = 0; i < message.size();) {

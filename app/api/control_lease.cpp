@@ -96,8 +96,12 @@ void ControlLease::onTimeout()
     const quint64 id = m_holder->clientId;
     if (m_beforeExpiry)
         m_beforeExpiry(id);  // may touch() the lease, restarting the timer
-    if (m_holder && m_holder->clientId == id && !m_heartbeat.isActive())
-        end(EndReason::HeartbeatLost);
+    if (!m_holder || m_holder->clientId != id || m_heartbeat.isActive())
+        return;
+    // Waiting for its own call: alive. The timer stays off; callAnswered() restarts it.
+    if (m_callInProgress && m_callInProgress(id))
+        return;
+    end(EndReason::HeartbeatLost);
 }
 
 void ControlLease::end(EndReason reason)

@@ -7,8 +7,11 @@
 //    pumps, changes gains or starts a job.
 //  - It ends when the client releases it, when the operator takes it back, when the
 //    client's connection closes, or when neither a heartbeat nor a call has come from
-//    the holder for kHeartbeatTimeoutMs. Then whatever keeps velocity motion going for
-//    the holder stops (lostControl listeners): as when a jog key is released.
+//    the holder for kHeartbeatTimeoutMs. A call of the holder's still in progress on its
+//    open connection is proof of life too (a script that homes for seconds without a
+//    heartbeat thread keeps its lease): the silence is counted from its answer. Then
+//    whatever keeps velocity motion going for the holder stops (lostControl
+//    listeners): as when a jog key is released.
 //  - E-stop and stop never need it.
 #include <QDateTime>
 #include <QObject>
@@ -58,6 +61,11 @@ public:
     /// Called just before a heartbeat timeout ends the lease: lets the server read what
     /// the holder already sent (a busy event loop must not cost a live client its lease).
     void setBeforeExpiry(std::function<void(quint64 clientId)> drain) { m_beforeExpiry = std::move(drain); }
+    /// Whether the holder waits for a call of its own that is still running: while it
+    /// does, its silence does not end the lease.
+    void setCallInProgress(std::function<bool(quint64 clientId)> waiting) { m_callInProgress = std::move(waiting); }
+    /// A call of the client's was answered: the holder's silence is counted from now.
+    void callAnswered(quint64 clientId) { touch(clientId); }
 
 signals:
     void changed();
@@ -71,6 +79,7 @@ private:
     std::optional<Holder> m_holder;
     QTimer m_heartbeat;
     std::function<void(quint64)> m_beforeExpiry;
+    std::function<bool(quint64)> m_callInProgress;
 };
 
 } // namespace api

@@ -16,6 +16,7 @@
 #include <QLocalSocket>
 
 #include <csignal>
+#include <optional>
 #include <unistd.h>
 
 namespace cli {
@@ -37,12 +38,30 @@ bool sendLine(QLocalSocket& socket, const QJsonObject& message)
 
 } // namespace
 
+namespace {
+/// XDG_RUNTIME_DIR as the program was started with it, once noted (noteUsersRuntimeDir).
+std::optional<QString>& usersRuntimeDir()
+{
+    static std::optional<QString> dir;
+    return dir;
+}
+} // namespace
+
+void noteUsersRuntimeDir() { usersRuntimeDir() = qEnvironmentVariable("XDG_RUNTIME_DIR"); }
+
+QString apiSocketPathFor(const QString& runtimeDir, uint uid)
+{
+    // Spelled as benchpilot.py's default_socket_path() does (os.path.join), character for
+    // character: the Python client and the CLI must find the GUI in the same place.
+    if (!runtimeDir.isEmpty())
+        return runtimeDir + (runtimeDir.endsWith(QLatin1Char('/')) ? QString() : QStringLiteral("/")) + QStringLiteral("benchpilot/api.sock");
+    return QStringLiteral("/tmp/benchpilot-%1/api.sock").arg(uid);
+}
+
 QString defaultApiSocketPath()
 {
-    const QString runtime = qEnvironmentVariable("XDG_RUNTIME_DIR");
-    if (!runtime.isEmpty())
-        return QDir(runtime).filePath(QStringLiteral("benchpilot/api.sock"));
-    return QStringLiteral("/tmp/benchpilot-%1/api.sock").arg(::getuid());
+    const std::optional<QString>& noted = usersRuntimeDir();
+    return apiSocketPathFor(noted ? *noted : qEnvironmentVariable("XDG_RUNTIME_DIR"), ::getuid());
 }
 
 int runAttached(const QStringList& args, const QString& socketPath, QTextStream& out, QTextStream& err)

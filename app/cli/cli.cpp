@@ -151,19 +151,27 @@ QString parseError(const QCommandLineParser& p, const QList<QCommandLineOption>&
 
 QList<QCommandLineOption> globalOptions()
 {
-    return {QCommandLineOption(QStringLiteral("sim"), tr("the in-process simulator: analyzer or stage (default: analyzer); with --attach, which of the GUI's instruments"), QStringLiteral("KIND")),
+    return {QCommandLineOption(QStringLiteral("sim"),
+                               tr("the in-process simulator: analyzer or stage (default: analyzer); with --attach, the older "
+                                  "spelling of --instrument"),
+                               QStringLiteral("KIND")),
             QCommandLineOption(QStringLiteral("port"), tr("a serial port, or the pty of benchpilot-sim"), QStringLiteral("PATH")),
             QCommandLineOption(QStringLiteral("baud"), tr("link speed (default: 115200)"), QStringLiteral("N")),
             QCommandLineOption(QStringLiteral("instrument"),
                                tr("with --port: which instrument it is, analyzer or stage (default: what the device says; "
-                                  "a GRBL controller: the profile's, else the analyzer)"),
+                                  "a GRBL controller: the profile's, else the analyzer); with --attach: which of the GUI's "
+                                  "instruments, whatever it is connected to (may be left out when only one is; stop and estop "
+                                  "without it halt every one)"),
                                QStringLiteral("KIND")),
             QCommandLineOption(QStringLiteral("profile"),
                                tr("with --port: the machine profile of a GRBL controller (docs/grbl.md)"), QStringLiteral("FILE")),
             QCommandLineOption(QStringLiteral("json"), tr("print JSON instead of text")),
             QCommandLineOption(QStringLiteral("timeout"), tr("longest wait for motion to finish, s (default: 120)"), QStringLiteral("S")),
             QCommandLineOption(QStringLiteral("attach"), tr("run the command through the running BenchPilot GUI (its instruments, its control lease)")),
-            QCommandLineOption(QStringLiteral("api-socket"), tr("with --attach: the GUI's API socket (default: $XDG_RUNTIME_DIR/benchpilot/api.sock)"),
+            QCommandLineOption(QStringLiteral("api-socket"),
+                               tr("with --attach: the GUI's API socket (default: %1; $XDG_RUNTIME_DIR/benchpilot/api.sock, or "
+                                  "/tmp/benchpilot-UID/api.sock without XDG_RUNTIME_DIR)")
+                                   .arg(defaultApiSocketPath()),
                                QStringLiteral("PATH")),
             QCommandLineOption(QStringLiteral("lang"), tr("language of the text for people: en (default), zh_CN, or system (follows LANG); --json never changes"),
                                QStringLiteral("LANG"))};
@@ -403,10 +411,21 @@ int runCommandLine(const QStringList& rawArgs, QTextStream& out, QTextStream& er
         return Usage;
     if (top.isSet(QStringLiteral("attach")) || p.isSet(QStringLiteral("attach")))
         return fail(who, tr("--attach is already in effect here"), QString());
+    if (host.insideGui() && link.port.isEmpty() && !link.instrument.isEmpty()) {
+        // Inside the GUI (--attach, the API) --instrument names which of its instruments,
+        // whatever it is connected to; --sim is the older spelling of the same.
+        if (!link.sim.isEmpty() && link.sim != link.instrument)
+            return fail(who, tr("--instrument %1 and --sim %2 name different instruments").arg(link.instrument, link.sim), QString());
+        link.sim = link.instrument;
+        link.instrument.clear();
+    }
     if (!link.sim.isEmpty() && !link.port.isEmpty())
         return fail(who, tr("give either --sim or --port, not both"), QString());
-    if (link.port.isEmpty() && (!link.instrument.isEmpty() || !link.profile.isEmpty()))
-        return fail(who, tr("--instrument and --profile go with --port (--sim names its instrument itself)"), QString());
+    if (link.port.isEmpty() && !link.instrument.isEmpty())
+        return fail(who, tr("--instrument goes with --port, or with --attach to name the GUI's instrument (--sim names its simulator itself)"),
+                    QString());
+    if (link.port.isEmpty() && !link.profile.isEmpty())
+        return fail(who, tr("--profile goes with --port"), QString());
     if (ran)
         *ran = cmd;
     Invocation inv(path, p, link, out, err, host);

@@ -170,18 +170,28 @@ bool CliSession::parseAxes(const QString& text, quint8* mask)
 
 int CliSession::request(const std::function<void(dev::Instrument::Callback)>& send, const QString& what)
 {
-    bool done = false;
-    std::optional<dev::RequestError> error;
-    send([&](const std::optional<dev::RequestError>& e) {
-        error = e;
-        done = true;
+    return awaitAnswer(sendRequest(send), what);
+}
+
+std::shared_ptr<CliSession::PendingRequest> CliSession::sendRequest(const std::function<void(dev::Instrument::Callback)>& send)
+{
+    // Shared with the callback: an answer that comes after the wait gave up has somewhere to go.
+    auto pending = std::make_shared<PendingRequest>();
+    send([pending](const std::optional<dev::RequestError>& e) {
+        pending->error = e;
+        pending->done = true;
     });
-    spinUntil([&] { return done; }, 10000);
-    if (!done) {
+    return pending;
+}
+
+int CliSession::awaitAnswer(const std::shared_ptr<PendingRequest>& pending, const QString& what)
+{
+    spinUntil([&] { return pending->done; }, 10000);
+    if (!pending->done) {
         report(QCoreApplication::translate("cli", "%1: no answer").arg(what));
         return LinkTrouble;
     }
-    if (error) {
+    if (const auto& error = pending->error) {
         if (error->kind == dev::RequestError::Kind::Device)
             m_lastRefusal = error;
         report(words::text(error->message));
@@ -211,7 +221,7 @@ bool CliSession::waitUntilHomed(quint8 mask)
     return homed && m_client->state() == dev::LinkState::Ready;
 }
 
-int CliSession::waitUntilStill(const QString& what)
+int CliSession::waitUntilStill(const QString& what, bool printStatusAfter)
 {
     // Asked to stop (the API's call.cancel or the GUI's Abort): the machine decelerates
     // and the wait ends as the motion does.
@@ -244,11 +254,36 @@ int CliSession::waitUntilStill(const QString& what)
     }
     if (!m_motionErrors.isEmpty()) {
         report(QStringLiteral("%1: %2").arg(what, m_motionErrors.join(QStringLiteral("; "))));
-        printStatus();
+        if (printStatusAfter)
+            printStatus();
         return Refused;
     }
-    printStatus();
+    if (printStatusAfter)
+        printStatus();
     return Ok;
+}
+
+QJsonObject CliSession::statusJson() const
+{
+    const auto& id = m_client->identity();
+    const auto& st = m_client->status();
+    QJsonObject axes;
+    for (int i = 0; i < id.axes.size() && i < st.axes.size(); ++i) {
+        const auto& a = st.axes[i];
+        axes.insert(QString(id.axes[i].letter),
+                    QJsonObject{{QStringLiteral("position"), a.commanded},
+                                {QStringLiteral("measured"), a.measured},
+                                {QStringLiteral("homed"), a.homed},
+                                {QStringLiteral("moving"), a.moving},
+                                {QStringLiteral("homing"), a.homing},
+                                {QStringLiteral("home_switch"), a.homeSwitch},
+                                {QStringLiteral("limit_switch"), a.limitSwitch},
+                                {QStringLiteral("unit"), id.axes[i].unitName()}});
+    }
+    return QJsonObject{{QStringLiteral("instrument"), id.kindName()},
+                       {QStringLiteral("estop"), st.estop},
+                       {QStringLiteral("fault"), st.fault},
+                       {QStringLiteral("axes"), axes}};
 }
 
 void CliSession::printStatus()
@@ -256,24 +291,7 @@ void CliSession::printStatus()
     const auto& id = m_client->identity();
     const auto& st = m_client->status();
     if (m_opt.json) {
-        QJsonObject axes;
-        for (int i = 0; i < id.axes.size() && i < st.axes.size(); ++i) {
-            const auto& a = st.axes[i];
-            axes.insert(QString(id.axes[i].letter),
-                        QJsonObject{{QStringLiteral("position"), a.commanded},
-                                    {QStringLiteral("measured"), a.measured},
-                                    {QStringLiteral("homed"), a.homed},
-                                    {QStringLiteral("moving"), a.moving},
-                                    {QStringLiteral("homing"), a.homing},
-                                    {QStringLiteral("home_switch"), a.homeSwitch},
-                                    {QStringLiteral("limit_switch"), a.limitSwitch},
-                                    {QStringLiteral("unit"), id.axes[i].unitName()}});
-        }
-        QJsonObject root{{QStringLiteral("instrument"), id.kindName()},
-                         {QStringLiteral("estop"), st.estop},
-                         {QStringLiteral("fault"), st.fault},
-                         {QStringLiteral("axes"), axes}};
-        m_inv.printJson(root);
+        m_inv.printJson(statusJson());
         return;
     }
     {

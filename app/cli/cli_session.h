@@ -5,12 +5,14 @@
 #include "command.h"
 #include "device/client/instrument_proxy.h"
 
+#include <QJsonObject>
 #include <QObject>
 #include <QPointer>
 #include <QStringList>
 #include <QTextStream>
 
 #include <functional>
+#include <memory>
 #include <optional>
 
 namespace dev {
@@ -41,8 +43,17 @@ public:
 
     /// Sends one request and waits for its answer; prints a refusal. Returns an exit code.
     int request(const std::function<void(dev::Instrument::Callback)>& send, const QString& what);
-    /// Waits until no axis moves (or the timeout, then stops the machine); prints the status.
-    int waitUntilStill(const QString& what);
+    /// request() in two halves, so that a halt goes out to every instrument before any
+    /// answer is awaited: sendRequest() sends, awaitAnswer() waits as request() does.
+    struct PendingRequest {
+        bool done = false;
+        std::optional<dev::RequestError> error;
+    };
+    std::shared_ptr<PendingRequest> sendRequest(const std::function<void(dev::Instrument::Callback)>& send);
+    int awaitAnswer(const std::shared_ptr<PendingRequest>& pending, const QString& what);
+    /// Waits until no axis moves (or the timeout, then stops the machine); prints the
+    /// status unless `printStatusAfter` is false.
+    int waitUntilStill(const QString& what, bool printStatusAfter = true);
     /// After a home request was accepted: waits, quietly, until the axes in `mask` are
     /// homed and at rest in a status read after the request (an axis homed before looks
     /// done at once in the last one). False on timeout or a lost link.
@@ -50,6 +61,8 @@ public:
     /// Axis letters ("XY", "X,Z") to a mask; false after a usage message.
     bool parseAxes(const QString& text, quint8* mask);
     void printStatus();
+    /// The status as `--json` prints it.
+    QJsonObject statusJson() const;
     void report(const QString& message);
     /// Limit hits, faults and the like seen since the last call.
     QStringList takeMotionErrors();

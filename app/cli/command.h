@@ -155,6 +155,12 @@ public:
     }
     /// True inside the GUI: no tricks on the simulator's clock, no process signals.
     virtual bool insideGui() const { return false; }
+    /// The sessions a command that only makes machines safer (stop, estop) acts on: the
+    /// one openSession() gives, unless the host holds several instruments and the words
+    /// name none. Then it is every connected one, as the GUI's E-stop button halts them
+    /// all: a halt is never refused because the caller did not say which. Empty after
+    /// reporting why.
+    virtual std::vector<std::unique_ptr<CliSession>> openHaltSessions(Invocation& inv);
 };
 
 /// benchpilot-cli's own host: a link of its own per command, signals for Ctrl+C.
@@ -216,6 +222,9 @@ public:
     CliSession* session();
     /// The session if one was opened.
     CliSession* openedSession() const { return m_session.get(); }
+    /// For stop and estop: every instrument they halt (InvocationHost::openHaltSessions),
+    /// opened at once; empty after reporting why. One of them is also session().
+    QVector<CliSession*> haltSessions();
 
 private:
     QString m_path;
@@ -226,6 +235,7 @@ private:
     InvocationHost& m_host;
     QStringList m_reports;
     std::unique_ptr<CliSession> m_session;
+    std::vector<std::unique_ptr<CliSession>> m_moreSessions;  ///< haltSessions() beyond the first
 };
 
 /// Options with a value take the next word even when it starts with '-', and a
@@ -247,9 +257,17 @@ int runCommandLine(const QStringList& args, QTextStream& out, QTextStream& err, 
 /// `--attach`: sends the words to the running GUI's API socket (`socketPath`, or the
 /// default one) as a cli.run call and prints what comes back (attach.cpp).
 int runAttached(const QStringList& args, const QString& socketPath, QTextStream& out, QTextStream& err);
-/// Where the GUI listens unless told otherwise: $XDG_RUNTIME_DIR/benchpilot/api.sock,
-/// or /tmp/benchpilot-UID/api.sock when XDG_RUNTIME_DIR is not set.
+/// Where the GUI listens, and benchpilot-cli --attach looks, unless told otherwise: the
+/// one rule for both (clients/python/benchpilot.py's default_socket_path() spells it the
+/// same way): $XDG_RUNTIME_DIR/benchpilot/api.sock, or /tmp/benchpilot-UID/api.sock when
+/// XDG_RUNTIME_DIR is not set, as the user's environment gave it to the program.
 QString defaultApiSocketPath();
+/// The rule itself, for a given XDG_RUNTIME_DIR ("" = not set) and user id.
+QString apiSocketPathFor(const QString& runtimeDir, uint uid);
+/// Notes XDG_RUNTIME_DIR as the program was started with it. benchpilot-cli calls it
+/// before it gives Qt a private runtime folder of its own when there is none, so that
+/// --attach still looks where the GUI listens.
+void noteUsersRuntimeDir();
 
 /// The command the words name after the global options ("recipe", "run", …), with its
 /// path ("recipe run"); nullptr when they name none. Global options are skipped.

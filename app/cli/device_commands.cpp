@@ -10,7 +10,10 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
+#include <vector>
 
 namespace cli {
 namespace {
@@ -207,16 +210,67 @@ int jog(Invocation& inv)
     return s->waitUntilStill(tr("jog"));
 }
 
+/// The worse of two exit codes (link trouble over a refusal over a usage error).
+int worse(int a, int b) { return std::max(a, b); }
+
+/// Sends a halt (`send`) to every session before waiting for any answer, so that a slow
+/// link never holds up another machine's halt; then waits for each. `halted` gets the
+/// sessions that accepted it. Returns the worst exit code.
+int haltEach(const QVector<CliSession*>& sessions, const std::function<void(CliSession*, dev::Instrument::Callback)>& send,
+             const QString& what, QVector<CliSession*>* halted)
+{
+    std::vector<std::shared_ptr<CliSession::PendingRequest>> pending;
+    for (CliSession* s : sessions)
+        pending.push_back(s->sendRequest([s, &send](dev::Instrument::Callback cb) { send(s, std::move(cb)); }));
+    int rc = Ok;
+    for (int i = 0; i < sessions.size(); ++i) {
+        const int answered = sessions[i]->awaitAnswer(pending[static_cast<std::size_t>(i)], what);
+        if (answered == Ok)
+            *halted << sessions[i];
+        rc = worse(rc, answered);
+    }
+    return rc;
+}
+
+/// What a halt reached. One instrument: its status, as `status` prints it (with --json,
+/// "halted" names it too). Several (inside the GUI, none named): each one's status in
+/// turn; with --json {"halted": [names], "instruments": [statuses]}.
+void printHalted(Invocation& inv, const QVector<CliSession*>& halted, int asked)
+{
+    if (!inv.json()) {
+        for (CliSession* s : halted)
+            s->printStatus();
+        return;
+    }
+    QJsonArray names, statuses;
+    for (CliSession* s : halted) {
+        names.append(s->instrument()->identity().kindName());
+        statuses.append(s->statusJson());
+    }
+    QJsonObject o = asked == 1 && !halted.isEmpty() ? halted.first()->statusJson() : QJsonObject{{QStringLiteral("instruments"), statuses}};
+    o.insert(QStringLiteral("halted"), names);
+    inv.printJson(o);
+}
+
 int stop(Invocation& inv)
 {
     if (!noArguments(inv))
         return Usage;
-    CliSession* s = inv.session();
-    if (!s)
+    const QVector<CliSession*> sessions = inv.haltSessions();
+    if (sessions.isEmpty())
         return LinkTrouble;
-    if (int rc = s->request([&](auto cb) { s->instrument()->stop(0, cb); }, tr("stop")))
-        return rc;
-    return s->waitUntilStill(tr("stop"));
+    QVector<CliSession*> halted;
+    int rc = haltEach(sessions, [](CliSession* s, dev::Instrument::Callback cb) { s->instrument()->stop(0, std::move(cb)); }, tr("stop"),
+                      &halted);
+    QVector<CliSession*> shown;
+    for (CliSession* s : halted) {
+        rc = worse(rc, s->waitUntilStill(tr("stop"), false));
+        if (s->instrument()->isReady())
+            shown << s;
+    }
+    if (!shown.isEmpty())
+        printHalted(inv, shown, static_cast<int>(sessions.size()));
+    return rc;
 }
 
 /// Lets a status poll arrive after a request whose effect is immediate, then prints it.
@@ -231,13 +285,19 @@ int estop(Invocation& inv)
 {
     if (!noArguments(inv))
         return Usage;
-    CliSession* s = inv.session();
-    if (!s)
+    const QVector<CliSession*> sessions = inv.haltSessions();
+    if (sessions.isEmpty())
         return LinkTrouble;
-    if (int rc = s->request([&](auto cb) { s->instrument()->estop(cb); }, tr("estop")))
+    QVector<CliSession*> halted;
+    const int rc = haltEach(sessions, [](CliSession* s, dev::Instrument::Callback cb) { s->instrument()->estop(std::move(cb)); },
+                            tr("estop"), &halted);
+    for (CliSession* s : sessions)
+        s->takeMotionErrors();  // the E-stop event is the point here, not a failure
+    if (halted.isEmpty())
         return rc;
-    s->takeMotionErrors();  // the E-stop event is the point here, not a failure
-    return settleAndPrint(s);
+    spinUntil([] { return false; }, 150);  // a status poll after the latch, so the printed status shows it
+    printHalted(inv, halted, static_cast<int>(sessions.size()));
+    return rc;
 }
 
 int reset(Invocation& inv)

@@ -136,6 +136,33 @@ CliSession* Invocation::session()
     return m_session.get();
 }
 
+QVector<CliSession*> Invocation::haltSessions()
+{
+    if (!m_session && m_moreSessions.empty()) {
+        std::vector<std::unique_ptr<CliSession>> opened = m_host.openHaltSessions(*this);
+        for (auto& s : opened) {
+            if (!m_session)
+                m_session = std::move(s);
+            else
+                m_moreSessions.push_back(std::move(s));
+        }
+    }
+    QVector<CliSession*> all;
+    if (m_session)
+        all << m_session.get();
+    for (const auto& s : m_moreSessions)
+        all << s.get();
+    return all;
+}
+
+std::vector<std::unique_ptr<CliSession>> InvocationHost::openHaltSessions(Invocation& inv)
+{
+    std::vector<std::unique_ptr<CliSession>> sessions;
+    if (auto s = openSession(inv))
+        sessions.push_back(std::move(s));
+    return sessions;
+}
+
 ApiParam optionParam(const char* option, ParamType type, bool required)
 {
     QString name = QString::fromLatin1(option);
@@ -146,9 +173,9 @@ ApiParam optionParam(const char* option, ParamType type, bool required)
 QCommandLineOption option(const char* name, const char* description, const char* valueName, const char* fallback)
 {
     QCommandLineOption o(QString::fromLatin1(name), QCoreApplication::translate("cli", description),
-                         valueName ? QString::fromLatin1(valueName) : QString());
+                         valueName ? QString::fromUtf8(valueName) : QString());  // "x,y;x,y;…" is UTF-8, as the source is
     if (fallback)
-        o.setDefaultValue(QString::fromLatin1(fallback));
+        o.setDefaultValue(QString::fromUtf8(fallback));
     return o;
 }
 

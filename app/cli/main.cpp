@@ -16,7 +16,9 @@ int main(int argc, char** argv)
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     // The platform plugin wants a runtime directory and complains on stderr without one
-    // (a script reading stderr would see it): give it a private one.
+    // (a script reading stderr would see it): give it a private one. --attach still looks
+    // for the GUI where the user's own environment says (cli::defaultApiSocketPath).
+    cli::noteUsersRuntimeDir();
     if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
         const QString dir = QDir::tempPath() + QStringLiteral("/benchpilot-runtime-%1").arg(::getuid());
         QDir().mkpath(dir);

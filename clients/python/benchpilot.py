@@ -37,7 +37,13 @@ HEARTBEAT_S = 0.1
 
 
 def default_socket_path():
-    """Where the GUI listens unless told otherwise (benchpilot --api-socket)."""
+    """Where the GUI listens unless told otherwise (benchpilot --api-socket).
+
+    $XDG_RUNTIME_DIR/benchpilot/api.sock, or /tmp/benchpilot-UID/api.sock when
+    XDG_RUNTIME_DIR is not set: the rule the GUI and benchpilot-cli --attach follow
+    (cli::apiSocketPathFor in app/cli/attach.cpp), spelled the same way; a test runs
+    both in the same environments and compares.
+    """
     runtime = os.environ.get("XDG_RUNTIME_DIR")
     if runtime:
         return os.path.join(runtime, "benchpilot", "api.sock")

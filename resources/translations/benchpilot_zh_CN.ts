@@ -305,6 +305,10 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <source>JSON-RPC 2.0, one object per line; see docs/api.md</source>
         <translation>JSON-RPC 2.0，每行一个对象；参见 docs/api.md</translation>
     </message>
+    <message>
+        <source>analyzer or stage; left out, every connected instrument (never refused for not saying which)</source>
+        <translation>analyzer 或 stage；省略时为每台已连接的仪器（绝不因未指明而被拒绝）</translation>
+    </message>
 </context>
 <context>
     <name>api::ApiClient</name>
@@ -396,10 +400,6 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <translation>图形界面中没有已连接的仪器</translation>
     </message>
     <message>
-        <source>the analyzer and the stage are both connected: say which with --sim analyzer|stage</source>
-        <translation>分析仪和载物台都已连接：请用 --sim analyzer|stage 指明是哪一台</translation>
-    </message>
-    <message>
         <source>not in control: the operator runs %1</source>
         <translation>未持有控制权：操作员正在运行%1</translation>
     </message>
@@ -463,6 +463,10 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <source>%1 calls are already running for this client</source>
         <translation>该客户端已有 %1 个调用在运行</translation>
     </message>
+    <message>
+        <source>the analyzer and the stage are both connected: say which with --instrument analyzer|stage</source>
+        <translation>分析仪和载物台都已连接：请用 --instrument analyzer|stage 指明是哪一台</translation>
+    </message>
 </context>
 <context>
     <name>api::CommandCall</name>
@@ -483,12 +487,16 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <translation>失败，退出码 %1</translation>
     </message>
     <message>
-        <source>inside the GUI its own connections are used: --port does not apply (name the instrument with --sim analyzer|stage)</source>
-        <translation>在图形界面内使用其自身的连接：--port 不适用（请用 --sim analyzer|stage 指定仪器）</translation>
-    </message>
-    <message>
         <source>%1 on the %2</source>
         <translation>%2 上的 %1</translation>
+    </message>
+    <message>
+        <source>inside the GUI its own connections are used: --port does not apply (name the instrument with --instrument analyzer|stage)</source>
+        <translation>在图形界面内使用其自身的连接：--port 不适用（请用 --instrument analyzer|stage 指定仪器）</translation>
+    </message>
+    <message>
+        <source>%1 on every connected instrument (%2)</source>
+        <translation>每台已连接仪器（%2）上的 %1</translation>
     </message>
 </context>
 <context>
@@ -2095,24 +2103,12 @@ Options:
         <translation>--profile：%1</translation>
     </message>
     <message>
-        <source>the in-process simulator: analyzer or stage (default: analyzer); with --attach, which of the GUI&apos;s instruments</source>
-        <translation>进程内仿真器：analyzer 或 stage（默认：analyzer）；与 --attach 一起使用时，指图形界面中的哪台仪器</translation>
-    </message>
-    <message>
-        <source>with --port: which instrument it is, analyzer or stage (default: what the device says; a GRBL controller: the profile&apos;s, else the analyzer)</source>
-        <translation>与 --port 一起使用：它是哪台仪器，analyzer 或 stage（默认：以设备所报为准；GRBL 控制器：以配置文件为准，否则为分析仪）</translation>
-    </message>
-    <message>
         <source>with --port: the machine profile of a GRBL controller (docs/grbl.md)</source>
         <translation>与 --port 一起使用：GRBL 控制器的机器配置文件（docs/grbl.md）</translation>
     </message>
     <message>
         <source>run the command through the running BenchPilot GUI (its instruments, its control lease)</source>
         <translation>通过正在运行的 BenchPilot 图形界面执行命令（使用其仪器及其控制权）</translation>
-    </message>
-    <message>
-        <source>with --attach: the GUI&apos;s API socket (default: $XDG_RUNTIME_DIR/benchpilot/api.sock)</source>
-        <translation>与 --attach 一起使用：图形界面的接口套接字（默认：$XDG_RUNTIME_DIR/benchpilot/api.sock）</translation>
     </message>
     <message>
         <source>usage: benchpilot-cli [GLOBAL OPTIONS] COMMAND [OPTIONS] [ARGUMENTS]
@@ -2145,10 +2141,6 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>--attach is already in effect here</source>
         <translation>此处 --attach 已经生效</translation>
-    </message>
-    <message>
-        <source>--instrument and --profile go with --port (--sim names its instrument itself)</source>
-        <translation>--instrument 和 --profile 须与 --port 一起使用（--sim 自身已指明仪器）</translation>
     </message>
     <message>
         <source>[ALARM] the controller does not trust its position: home, or `unlock` on your word</source>
@@ -2423,6 +2415,30 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>stopped after %1 of %2 operations; continue with: benchpilot-cli recipe run %3 --resume %4</source>
         <translation>在 %2 项操作中完成 %1 项后停止；继续请用：benchpilot-cli recipe run %3 --resume %4</translation>
+    </message>
+    <message>
+        <source>the in-process simulator: analyzer or stage (default: analyzer); with --attach, the older spelling of --instrument</source>
+        <translation>进程内仿真器：analyzer 或 stage（默认：analyzer）；与 --attach 一起使用时，是 --instrument 的旧写法</translation>
+    </message>
+    <message>
+        <source>with --port: which instrument it is, analyzer or stage (default: what the device says; a GRBL controller: the profile&apos;s, else the analyzer); with --attach: which of the GUI&apos;s instruments, whatever it is connected to (may be left out when only one is; stop and estop without it halt every one)</source>
+        <translation>与 --port 一起使用：它是哪台仪器，analyzer 或 stage（默认：以设备所报为准；GRBL 控制器：以配置文件为准，否则为分析仪）；与 --attach 一起使用：图形界面中的哪台仪器，不论它连接的是什么（只有一台已连接时可省略；不带它的 stop 和 estop 会停下每一台）</translation>
+    </message>
+    <message>
+        <source>with --attach: the GUI&apos;s API socket (default: %1; $XDG_RUNTIME_DIR/benchpilot/api.sock, or /tmp/benchpilot-UID/api.sock without XDG_RUNTIME_DIR)</source>
+        <translation>与 --attach 一起使用：图形界面的接口套接字（默认：%1；即 $XDG_RUNTIME_DIR/benchpilot/api.sock，未设置 XDG_RUNTIME_DIR 时为 /tmp/benchpilot-UID/api.sock）</translation>
+    </message>
+    <message>
+        <source>--instrument %1 and --sim %2 name different instruments</source>
+        <translation>--instrument %1 与 --sim %2 指的是不同的仪器</translation>
+    </message>
+    <message>
+        <source>--instrument goes with --port, or with --attach to name the GUI&apos;s instrument (--sim names its simulator itself)</source>
+        <translation>--instrument 须与 --port 一起使用，或与 --attach 一起使用以指明图形界面的仪器（--sim 自身已指明其仿真器）</translation>
+    </message>
+    <message>
+        <source>--profile goes with --port</source>
+        <translation>--profile 须与 --port 一起使用</translation>
     </message>
 </context>
 <context>

@@ -6,6 +6,8 @@
 
 #include "app/api/json_rpc.h"
 
+#include <optional>
+
 using itest::ApiFixture;
 using itest::ApiTestClient;
 
@@ -118,6 +120,45 @@ TEST(ApiControl, HeartbeatSilenceEndsTheLease)
     EXPECT_EQ(lost.value(QStringLiteral("reason")).toString(), QStringLiteral("heartbeat_lost"));
     EXPECT_FALSE(f.stage.proxy.isJogging(0));
     EXPECT_NE(restTimeUs(f, 5000), 0u);
+}
+
+TEST(ApiControl, AHoldersLongCallIsProofOfLifeAndItsSilenceCountsFromTheAnswer)
+{
+    ApiFixture f(false);
+    ApiTestClient script(f.path);
+    const QString lease = acquire(script, "no heartbeat thread");
+    ASSERT_FALSE(lease.isEmpty());
+    // A call that lasts three times the heartbeat timeout, and not one heartbeat: a raw
+    // script that acquires and then homes or moves, waiting for the answer.
+    const QJsonObject jog = script.call(QStringLiteral("device.jog"),
+                                        QJsonObject{{QStringLiteral("axis"), QStringLiteral("X")}, {QStringLiteral("velocity"), 2},
+                                                    {QStringLiteral("seconds"), 1.5}, {QStringLiteral("lease"), lease}});
+    ASSERT_TRUE(jog.contains(QStringLiteral("result"))) << QJsonDocument(jog).toJson().toStdString();
+    for (const QJsonObject& n : script.notifications)
+        EXPECT_NE(n.value(QStringLiteral("method")).toString(), QStringLiteral("control.lost")) << "not while it waited for its own call";
+    EXPECT_TRUE(f.server->lease().holder().has_value()) << "still held when its call answers";
+    // From the answer on, silence counts again: without heartbeats the lease ends.
+    const QJsonObject lost = script.waitNotification(QStringLiteral("control.lost"), {}, 10000);
+    EXPECT_EQ(lost.value(QStringLiteral("reason")).toString(), QStringLiteral("heartbeat_lost"));
+}
+
+TEST(ApiControl, AClosedConnectionEndsTheLeaseAtOnceEvenDuringItsCall)
+{
+    ApiFixture f(false);
+    auto script = std::make_unique<ApiTestClient>(f.path);
+    const QString lease = acquire(*script, "doomed mid-call");
+    std::optional<api::ControlLease::EndReason> why;
+    QObject::connect(&f.server->lease(), &api::ControlLease::ended, &f.server->lease(),
+                     [&why](const api::ControlLease::Holder&, api::ControlLease::EndReason r) { why = r; });
+    script->send(QStringLiteral("device.jog"),
+                 QJsonObject{{QStringLiteral("axis"), QStringLiteral("X")}, {QStringLiteral("velocity"), 2},
+                             {QStringLiteral("seconds"), 60}, {QStringLiteral("lease"), lease}},
+                 1);
+    ASSERT_TRUE(itest::waitFor([&] { return f.stage.proxy.status().axes.value(0).moving; }, 5000));
+    script->socket.abort();
+    ASSERT_TRUE(itest::waitFor([&] { return why.has_value(); }, 5000));
+    EXPECT_EQ(*why, api::ControlLease::EndReason::ConnectionClosed) << "not left to a heartbeat timeout";
+    EXPECT_NE(restTimeUs(f, 5000), 0u) << "its jog stops with the lease, long before its 60 s";
 }
 
 TEST(ApiControl, EStopFromAnotherClientLatchesAtOnceWhileTheFirstHoldsTheLease)
