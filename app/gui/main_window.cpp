@@ -670,6 +670,7 @@ void MainWindow::loadSettings()
         ui::ConnectionChoice c;
         c.simulator = st.value(QStringLiteral("simulator"), true).toBool();
         c.port = st.value(QStringLiteral("port")).toString();
+        c.serialNumber = st.value(QStringLiteral("serial_number")).toString();
         c.baud = st.value(QStringLiteral("baud"), 115200).toInt();
         c.profile = st.value(QStringLiteral("profile")).toString();
         for (const QString& path : st.value(QStringLiteral("profiles")).toStringList())
@@ -707,6 +708,7 @@ void MainWindow::saveSettings()
         st.beginGroup(QStringLiteral("connection/%1").arg(QLatin1String(keys[i])));
         st.setValue(QStringLiteral("simulator"), c.simulator);
         st.setValue(QStringLiteral("port"), c.port);
+        st.setValue(QStringLiteral("serial_number"), c.serialNumber);
         st.setValue(QStringLiteral("baud"), c.baud);
         st.setValue(QStringLiteral("profile"), c.profile);
         st.setValue(QStringLiteral("profiles"), m_bars[i]->profiles());
