@@ -6,6 +6,7 @@
 #include "widgets/wording/translators.h"
 
 #include <QApplication>
+#include <QDir>
 #include <QLabel>
 #include <QMainWindow>
 #include <QMenuBar>
@@ -39,6 +40,9 @@ TEST(AboutBox, SaysTheVersionTheQtTheLicenceAndTheLibraries)
                                 QStringLiteral("QCustomPlot"), QStringLiteral("Eigen"), QStringLiteral("MPL-2.0"), QStringLiteral("LGPL-3.0"),
                                 QStringLiteral("NO WARRANTY")})
         EXPECT_TRUE(text.contains(want)) << want.toStdString() << " not in: " << text.toStdString();
+    // BP_GUI_SHOTS=DIR keeps a picture of the box for a person to look at.
+    if (const QString folder = qEnvironmentVariable("BP_GUI_SHOTS"); !folder.isEmpty())
+        box->grab().save(QDir(folder).filePath(QStringLiteral("about_box.png")));
     // A second click brings the same box forward rather than a second one.
     help->aboutAction()->trigger();
     EXPECT_EQ(window.findChildren<app::AboutDialog*>().size(), 1);
