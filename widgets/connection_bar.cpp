@@ -1,7 +1,6 @@
 #include "widgets/connection_bar.h"
 #include "widgets/common/elided_label.h"
 
-#include "device/link/serial_transport.h"
 #include "widgets/status_lamp.h"
 
 #include "widgets/wording/wording.h"
@@ -21,6 +20,8 @@ namespace ui {
 namespace {
 /// The profile list's last entry opens a file dialog rather than naming a profile.
 const QString kOpenProfile = QStringLiteral("\x01open");
+/// A listed port's serial number, beside its name (Qt::UserRole).
+constexpr int kSerialNumberRole = Qt::UserRole + 1;
 } // namespace
 
 QList<qint32> ConnectionBar::baudRates() { return {9600, 19200, 38400, 57600, 115200, 230400, 250000, 460800, 921600}; }
@@ -144,13 +145,37 @@ void ConnectionBar::updateTexts()
                                                  : m_activity);
 }
 
+QString ConnectionBar::portLabel(const dev::SerialTransport::PortInfo& port)
+{
+    // What the adapter says of itself, as it says it (not translated); a manufacturer the
+    // description already names is not said twice.
+    QString what = port.description;
+    if (!port.manufacturer.isEmpty() && !what.contains(port.manufacturer, Qt::CaseInsensitive))
+        what = what.isEmpty() ? port.manufacturer : QStringLiteral("%1 %2").arg(port.manufacturer, what);
+    if (what.isEmpty() && port.serialNumber.isEmpty())
+        return port.name;
+    if (port.serialNumber.isEmpty())
+        return QStringLiteral("%1 — %2").arg(port.name, what);
+    if (what.isEmpty())
+        return tr("%1 — serial number %2").arg(port.name, port.serialNumber);
+    return tr("%1 — %2, serial number %3").arg(port.name, what, port.serialNumber);
+}
+
+void ConnectionBar::setPortLister(PortLister lister)
+{
+    m_listPorts = std::move(lister);
+    refreshPorts();
+}
+
 void ConnectionBar::refreshPorts()
 {
     const ConnectionChoice keep = choice();
     while (m_source->count() > 1)
         m_source->removeItem(1);
-    for (const auto& p : dev::SerialTransport::availablePorts())
-        m_source->addItem(p.description.isEmpty() ? p.name : QStringLiteral("%1 — %2").arg(p.name, p.description), p.name);
+    for (const auto& p : m_listPorts ? m_listPorts() : QList<dev::SerialTransport::PortInfo>{}) {
+        m_source->addItem(portLabel(p), p.name);
+        m_source->setItemData(m_source->count() - 1, p.serialNumber, kSerialNumberRole);
+    }
     setChoice(keep);
 }
 
@@ -160,10 +185,12 @@ ConnectionChoice ConnectionBar::choice() const
     const QString text = m_source->currentText().trimmed();
     const int idx = m_source->currentIndex();
     QString port;
-    if (idx >= 0 && m_source->itemText(idx) == m_source->currentText())
+    if (idx >= 0 && m_source->itemText(idx) == m_source->currentText()) {
         port = m_source->itemData(idx).toString();  // a listed entry
-    else if (!text.isEmpty() && text != m_source->itemText(0))
+        c.serialNumber = m_source->itemData(idx, kSerialNumberRole).toString();
+    } else if (!text.isEmpty() && text != m_source->itemText(0)) {
         port = text;                                 // a path typed in
+    }
     c.simulator = port.isEmpty();
     c.port = port;
     c.baud = m_baud->currentData().toInt();
@@ -177,12 +204,17 @@ void ConnectionBar::setChoice(const ConnectionChoice& c)
 {
     int idx = 0;
     if (!c.simulator) {
-        idx = m_source->findData(c.port);
+        // The adapter by its serial number first: replugged, it may be ttyUSB1 now, and
+        // ttyUSB0 another adapter.
+        idx = c.serialNumber.isEmpty() ? -1 : m_source->findData(c.serialNumber, kSerialNumberRole);
+        if (idx < 0)
+            idx = m_source->findData(c.port);
         if (idx < 0) {
             // A typed path that exists (a pty, a /dev/serial/by-id link) is shown as it is; a
             // remembered port that is not there now is kept, so it can be retried when it is back.
             m_source->addItem(QFileInfo::exists(c.port) ? c.port : tr("%1 (not found)").arg(c.port), c.port);
             idx = m_source->count() - 1;
+            m_source->setItemData(idx, c.serialNumber, kSerialNumberRole);
         }
     }
     m_source->setCurrentIndex(idx);

@@ -5,8 +5,11 @@
 // controller is wired to the instrument (docs/grbl.md). Switched at run time; the protocol a
 // port speaks is detected when it connects (a BenchPilot HELLO or a GRBL banner).
 #include "device/client/instrument_types.h"
+#include "device/link/serial_transport.h"
 
 #include <QWidget>
+
+#include <functional>
 
 class QComboBox;
 class QLabel;
@@ -21,11 +24,14 @@ class StatusLamp;
 struct ConnectionChoice {
     bool simulator = true;
     QString port;          ///< when not simulated: a listed port or a typed path
+    /// A USB adapter's serial number, when the port was chosen from the list: the same
+    /// adapter plugged in again under another /dev name is found by it.
+    QString serialNumber;
     qint32 baud = 115200;
     QString profile;       ///< machine profile file; empty: the default wiring (and detect the protocol)
     bool operator==(const ConnectionChoice& o) const
     {
-        return simulator == o.simulator && port == o.port && baud == o.baud && profile == o.profile;
+        return simulator == o.simulator && port == o.port && serialNumber == o.serialNumber && baud == o.baud && profile == o.profile;
     }
 };
 
@@ -46,6 +52,12 @@ public:
     QStringList profiles() const;
     static QList<qint32> baudRates();
 
+    /// Where the port list comes from (the system's, QSerialPortInfo; tests give their own).
+    using PortLister = std::function<QList<dev::SerialTransport::PortInfo>()>;
+    void setPortLister(PortLister lister);
+    /// How a listed port reads: its /dev name, what the adapter says it is, its serial number.
+    static QString portLabel(const dev::SerialTransport::PortInfo& port);
+
 public slots:
     void refreshPorts();
 
@@ -64,6 +76,7 @@ private:
     void updateTexts();
     int openProfileIndex() const;
 
+    PortLister m_listPorts = &dev::SerialTransport::availablePorts;
     QString m_titleText;
     QLabel* m_title;
     StatusLamp* m_lamp;

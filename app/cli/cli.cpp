@@ -4,7 +4,9 @@
 #include "cli_session.h"
 #include "command.h"
 
+#include "app/common/version_text.h"
 #include "device/files/machine_profile_file.h"
+#include "device/files/shipped_data.h"
 #include "widgets/wording/translators.h"
 #include "widgets/wording/wording.h"
 
@@ -109,7 +111,7 @@ bool readLinkOptions(const QCommandLineParser& p, LinkOptions& link, QTextStream
         link.instrument = v;
     }
     if (p.isSet(QStringLiteral("profile"))) {
-        link.profile = unmarkNegative(p.value(QStringLiteral("profile")));
+        link.profile = files::resolveMachineProfile(unmarkNegative(p.value(QStringLiteral("profile"))));
         files::MachineProfile profile;
         jsonio::Problems problems;
         if (link.profile.isEmpty())
@@ -164,7 +166,7 @@ QList<QCommandLineOption> globalOptions()
                                   "without it halt every one)"),
                                QStringLiteral("KIND")),
             QCommandLineOption(QStringLiteral("profile"),
-                               tr("with --port: the machine profile of a GRBL controller (docs/grbl.md)"), QStringLiteral("FILE")),
+                               tr("with --port: the machine profile of a GRBL controller, a file or the name of one BenchPilot ships (stage-grbl-uno; docs/grbl.md)"), QStringLiteral("FILE")),
             QCommandLineOption(QStringLiteral("json"), tr("print JSON instead of text")),
             QCommandLineOption(QStringLiteral("timeout"), tr("longest wait for motion to finish, s (default: 120)"), QStringLiteral("S")),
             QCommandLineOption(QStringLiteral("attach"), tr("run the command through the running BenchPilot GUI (its instruments, its control lease)")),
@@ -354,7 +356,7 @@ int runCommandLine(const QStringList& rawArgs, QTextStream& out, QTextStream& er
     if (!top.parse(args))
         return fail(QStringLiteral("benchpilot-cli"), parseError(top, globalOptions()), tr("try 'benchpilot-cli --help'\n"));
     if (top.isSet(versionOption())) {
-        out << "benchpilot-cli " << BP_VERSION << "\n";
+        out << QString::fromStdString(app::versionText("benchpilot-cli"));
         out.flush();
         return Ok;
     }

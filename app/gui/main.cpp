@@ -7,13 +7,16 @@
 #include "app/cli/command.h"
 
 #include "device/backends/protocol_probe.h"
+#include "app/common/version_text.h"
 #include "device/files/machine_profile_file.h"
+#include "device/files/shipped_data.h"
 #include "device/link/serial_transport.h"
 
 #include "widgets/wording/translators.h"
 #include "widgets/wording/wording.h"
 
 #include <QApplication>
+#include <QIcon>
 #include <QCommandLineParser>
 #include <QEventLoop>
 #include <QFileInfo>
@@ -74,7 +77,7 @@ int main(int argc, char** argv)
                                                                   "the device says; a GRBL controller: the profile's, else the analyzer)"),
                                   QStringLiteral("kind"));
     QCommandLineOption profile(QStringLiteral("profile"),
-                               QApplication::translate("main", "with --port: the machine profile of a GRBL controller (docs/grbl.md)"),
+                               QApplication::translate("main", "with --port: the machine profile of a GRBL controller, a file or the name of one BenchPilot ships (stage-grbl-uno; docs/grbl.md)"),
                                QStringLiteral("file"));
     QCommandLineOption baud(QStringLiteral("baud"), QApplication::translate("main", "with --port: the link speed"), QStringLiteral("N"),
                             QStringLiteral("115200"));
@@ -126,7 +129,7 @@ int main(int argc, char** argv)
             return 0;
         }
         if (a == QLatin1String("-v") || a == QLatin1String("--version")) {
-            std::printf("benchpilot %s\n", BP_VERSION);
+            std::fputs(app::versionText("benchpilot").c_str(), stdout);
             return 0;
         }
     }
@@ -134,6 +137,14 @@ int main(int argc, char** argv)
     QApplication app(argc, argv);
     // Settings stay where earlier versions kept them.
     QApplication::setApplicationName(QStringLiteral("BenchPilot"));
+    // The icon the installed desktop entry names (the theme's when installed, else the
+    // one built in), and the entry itself, so a Wayland shell groups the window with it.
+    Q_INIT_RESOURCE(resources);  // resources.qrc is in gui_lib, a static library
+    QIcon builtIn;
+    for (int px : {16, 32, 48, 64, 128, 256})
+        builtIn.addFile(QStringLiteral(":/icons/hicolor/%1x%1/benchpilot.png").arg(px), QSize(px, px));
+    QApplication::setWindowIcon(QIcon::fromTheme(QStringLiteral("io.github.benchpilot.BenchPilot"), builtIn));
+    QGuiApplication::setDesktopFileName(QStringLiteral("io.github.benchpilot.BenchPilot"));
     p.process(app);  // prints a wrong option and exits 1
     if (!p.positionalArguments().isEmpty()) {
         std::fprintf(stderr, "benchpilot: unexpected argument '%s'\ntry 'benchpilot --help'\n", qPrintable(p.positionalArguments().first()));
@@ -198,12 +209,13 @@ int main(int argc, char** argv)
         std::optional<proto::DeviceKind> k;
         if (p.isSet(instrument) && !(k = kindOf(p.value(instrument))))
             return fail(QApplication::translate("main", "--instrument needs 'analyzer' or 'stage' (got '%1')").arg(p.value(instrument)));
+        const QString profileFile = p.isSet(profile) ? files::resolveMachineProfile(p.value(profile)) : QString();
         if (p.isSet(profile)) {
             files::MachineProfile mp;
             jsonio::Problems problems;
-            if (!files::loadMachineProfileFile(p.value(profile), &mp, &problems))
+            if (!files::loadMachineProfileFile(profileFile, &mp, &problems))
                 return fail(QApplication::translate("main", "--profile: %1")
-                                .arg(words::fileProblems(problems, QFileInfo(p.value(profile)).fileName()).join(QLatin1Char('\n'))));
+                                .arg(words::fileProblems(problems, QFileInfo(profileFile).fileName()).join(QLatin1Char('\n'))));
             if (k && *k != mp.instrument)
                 return fail(QApplication::translate("main", "--profile is for the other instrument than --instrument names"));
             k = mp.instrument;
@@ -216,7 +228,7 @@ int main(int argc, char** argv)
         c.simulator = false;
         c.port = p.value(port);
         c.baud = rate;
-        c.profile = p.value(profile);
+        c.profile = profileFile;
         options.connection[kindIndex(*k)] = c;
         options.showInstrument = kindIndex(*k);
     }

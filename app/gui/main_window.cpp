@@ -2,12 +2,14 @@
 
 #include "widgets/retranslator.h"
 
+#include "about_dialog.h"
 #include "instrument_session.h"
 #include "long_move_question.h"
 #include "motion_screens.h"
 #include "plates_wiring.h"
 #include "api_panel.h"
 #include "app/api/api_server.h"
+#include "device/files/shipped_data.h"
 #include "device/jobs/pattern_runner.h"
 #include "widgets/plates/recipe_editor.h"
 #include "device/jobs/tuning/tuning_runner.h"
@@ -415,8 +417,10 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
         m_log->addNote(s->name(), tr("link error"), why, true);
     });
     connect(bar, &ui::ConnectionBar::profileFileRequested, this, [this, bar] {
+        // The profiles BenchPilot ships are where a first-time user looks for one.
+        const QString shipped = files::shippedMachinesDirectory();
         const QString path = QFileDialog::getOpenFileName(this, tr("Machine profile"),
-                                                          QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation),
+                                                          shipped.isEmpty() ? QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation) : shipped,
                                                           tr("Machine profiles (*.machine.json);;All files (*)"));
         if (!path.isEmpty())
             bar->addProfile(path);
@@ -579,6 +583,7 @@ void MainWindow::buildLanguageMenu()
     QSettings st;
     m_languageSetting = m_options.persistSettings ? st.value(QStringLiteral("language"), QStringLiteral("system")).toString()
                                                   : m_options.translators->language();
+    menuBar()->addMenu(new HelpMenu(this));
 }
 
 void MainWindow::setLanguage(const QString& language)
@@ -665,6 +670,7 @@ void MainWindow::loadSettings()
         ui::ConnectionChoice c;
         c.simulator = st.value(QStringLiteral("simulator"), true).toBool();
         c.port = st.value(QStringLiteral("port")).toString();
+        c.serialNumber = st.value(QStringLiteral("serial_number")).toString();
         c.baud = st.value(QStringLiteral("baud"), 115200).toInt();
         c.profile = st.value(QStringLiteral("profile")).toString();
         for (const QString& path : st.value(QStringLiteral("profiles")).toStringList())
@@ -702,6 +708,7 @@ void MainWindow::saveSettings()
         st.beginGroup(QStringLiteral("connection/%1").arg(QLatin1String(keys[i])));
         st.setValue(QStringLiteral("simulator"), c.simulator);
         st.setValue(QStringLiteral("port"), c.port);
+        st.setValue(QStringLiteral("serial_number"), c.serialNumber);
         st.setValue(QStringLiteral("baud"), c.baud);
         st.setValue(QStringLiteral("profile"), c.profile);
         st.setValue(QStringLiteral("profiles"), m_bars[i]->profiles());

@@ -10,6 +10,7 @@
 // instrument's own encoder or grating does not see.
 #include "device/link/simulated_link.h"
 #include "device/sim/grbl_firmware.h"
+#include "app/common/version_text.h"
 #include "device/sim/sim_gauge.h"
 #include "journal_file.h"
 #include "pty_transport.h"
@@ -76,6 +77,15 @@ int main(int argc, char** argv)
                                QCoreApplication::translate("sim", "write what the firmware executed to this file when stopped (benchpilot protocol only)"),
                                QStringLiteral("file"));
     p.addOptions({instrument, ptyPath, protocol, timeScale, baud, gaugePath, gaugeAxis, gaugeResolution, gaugeNoise, journal});
+    // --version gives the licence too (app/common/version_text.h), not Qt's bare line.
+    for (const QString& a : QCoreApplication::arguments().mid(1)) {
+        if (a == QLatin1String("--"))
+            break;
+        if (a == QLatin1String("-v") || a == QLatin1String("--version")) {
+            std::fputs(app::versionText("benchpilot-sim").c_str(), stdout);
+            return 0;
+        }
+    }
     p.process(app);
 
     const QString kind = p.value(instrument);

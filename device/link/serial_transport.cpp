@@ -1,5 +1,7 @@
 #include "device/link/serial_transport.h"
 
+#include "device/link/port_access.h"
+
 #include <QSerialPort>
 #include <QSerialPortInfo>
 #include <QTimer>
@@ -38,12 +40,14 @@ void SerialTransport::open()
     m_port->setStopBits(QSerialPort::OneStop);
     m_port->setFlowControl(QSerialPort::NoFlowControl);
     if (!m_port->open(QIODevice::ReadWrite)) {
-        // QSerialPort's errorString() is Qt's own text (translated by Qt's catalogue).
-        const char* id = m_port->error() == QSerialPort::PermissionError      ? "link.port_busy"
-                         : m_port->error() == QSerialPort::DeviceNotFoundError ? "link.no_such_port"
-                                                                               : "link.cannot_open";
-        const msg::Message why = msg::make(id, {msg::verbatim("port", m_name.toStdString()),
-                                                msg::verbatim("detail", m_port->errorString().toStdString())});
+        // QSerialPort's errorString() is Qt's own text (translated by Qt's catalogue). Its
+        // PermissionError is both "you may not" and "another program has it locked".
+        const QString location = m_name.startsWith(QLatin1Char('/')) ? m_name : QStringLiteral("/dev/") + m_name;
+        const msg::Message why =
+            m_port->error() == QSerialPort::PermissionError
+                ? permissionProblem(m_name, portAccess(location), m_port->errorString())
+                : msg::make(m_port->error() == QSerialPort::DeviceNotFoundError ? "link.no_such_port" : "link.cannot_open",
+                            {msg::verbatim("port", m_name.toStdString()), msg::verbatim("detail", m_port->errorString().toStdString())});
         QTimer::singleShot(0, this, [this, why] { emit failed(why); });
         return;
     }
@@ -70,12 +74,8 @@ QString SerialTransport::describe() const { return tr("%1 @ %2 baud").arg(m_name
 QList<SerialTransport::PortInfo> SerialTransport::availablePorts()
 {
     QList<PortInfo> out;
-    for (const QSerialPortInfo& p : QSerialPortInfo::availablePorts()) {
-        QString desc = p.description();
-        if (!p.manufacturer().isEmpty())
-            desc = desc.isEmpty() ? p.manufacturer() : p.manufacturer() + QStringLiteral(" — ") + desc;
-        out.push_back({p.systemLocation(), desc});
-    }
+    for (const QSerialPortInfo& p : QSerialPortInfo::availablePorts())
+        out.push_back({p.systemLocation(), p.description(), p.manufacturer(), p.serialNumber()});
     return out;
 }
 

@@ -18,9 +18,12 @@ public:
     void write(const QByteArray& bytes) override;
     QString describe() const override;
 
+    /// What the system says of a port (QSerialPortInfo), for people to tell adapters apart.
     struct PortInfo {
-        QString name;         ///< what QSerialPort opens: "ttyUSB0", or a path
-        QString description;  ///< manufacturer and description, for people
+        QString name;          ///< what QSerialPort opens: "/dev/ttyUSB0", or a path
+        QString description;   ///< the adapter's product text ("FT232R USB UART"); empty for a built-in port
+        QString manufacturer;  ///< "FTDI"; often empty
+        QString serialNumber;  ///< the USB serial number: the same adapter keeps it on any /dev name
     };
     static QList<PortInfo> availablePorts();
 

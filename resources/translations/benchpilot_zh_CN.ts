@@ -582,6 +582,45 @@ Skip counts the well as done; Do again repeats it in full.</source>
     </message>
 </context>
 <context>
+    <name>app::AboutDialog</name>
+    <message>
+        <source>Operator and test-bench application for laboratory motion instruments.</source>
+        <translation>实验室运动仪器的操作与测试工作台软件。</translation>
+    </message>
+    <message>
+        <source>Built with Qt %1, running on Qt %2.</source>
+        <translation>基于 Qt %1 编译，运行于 Qt %2。</translation>
+    </message>
+    <message>
+        <source>Copyright © 2026 The BenchPilot authors.</source>
+        <translation>版权所有 © 2026 BenchPilot 作者。</translation>
+    </message>
+    <message>
+        <source>BenchPilot is free software: you can redistribute it and modify it under the terms of the GNU General Public License, version 3 or (at your option) any later version (%1). It comes with NO WARRANTY, to the extent permitted by law. The full text: %2.</source>
+        <translation>BenchPilot 是自由软件：您可以按照 GNU 通用公共许可证第 3 版或（由您选择）任何更新版本（%1）的条款再发布和修改它。在法律允许的范围内，本软件不提供任何担保（NO WARRANTY）。许可证全文：%2。</translation>
+    </message>
+    <message>
+        <source>Libraries it is made of:</source>
+        <translation>所用的库：</translation>
+    </message>
+    <message>
+        <source>Library</source>
+        <translation>库</translation>
+    </message>
+    <message>
+        <source>Version</source>
+        <translation>版本</translation>
+    </message>
+    <message>
+        <source>Licence</source>
+        <translation>许可证</translation>
+    </message>
+    <message>
+        <source>About BenchPilot</source>
+        <translation>关于 BenchPilot</translation>
+    </message>
+</context>
+<context>
     <name>app::ApiControlStrip</name>
     <message>
         <source>Take back</source>
@@ -753,6 +792,17 @@ Take control back? The script&apos;s next call is refused and its jogs stop; a j
     <message>
         <source>a test on the Calibration screen</source>
         <translation>校准界面上的测试</translation>
+    </message>
+</context>
+<context>
+    <name>app::HelpMenu</name>
+    <message>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <source>&amp;About BenchPilot…</source>
+        <translation>关于 BenchPilot(&amp;A)…</translation>
     </message>
 </context>
 <context>
@@ -2105,6 +2155,16 @@ Options:
     <message>
         <source>with --port: the machine profile of a GRBL controller (docs/grbl.md)</source>
         <translation>与 --port 一起使用：GRBL 控制器的机器配置文件（docs/grbl.md）</translation>
+        <source>the in-process simulator: analyzer or stage (default: analyzer); with --attach, which of the GUI&apos;s instruments</source>
+        <translation>进程内仿真器：analyzer 或 stage（默认：analyzer）；与 --attach 一起使用时，指图形界面中的哪台仪器</translation>
+    </message>
+    <message>
+        <source>with --port: which instrument it is, analyzer or stage (default: what the device says; a GRBL controller: the profile&apos;s, else the analyzer)</source>
+        <translation>与 --port 一起使用：它是哪台仪器，analyzer 或 stage（默认：以设备所报为准；GRBL 控制器：以配置文件为准，否则为分析仪）</translation>
+    </message>
+    <message>
+        <source>with --port: the machine profile of a GRBL controller, a file or the name of one BenchPilot ships (stage-grbl-uno; docs/grbl.md)</source>
+        <translation>与 --port 一起使用：GRBL 控制器的机器配置文件，可以是文件，也可以是 BenchPilot 自带配置的名称（stage-grbl-uno；docs/grbl.md）</translation>
     </message>
     <message>
         <source>run the command through the running BenchPilot GUI (its instruments, its control lease)</source>
@@ -3006,8 +3066,8 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>与 --port 一起使用：它是哪台仪器，analyzer 或 stage（默认：以设备所报为准；GRBL 控制器：以配置文件为准，否则为分析仪）</translation>
     </message>
     <message>
-        <source>with --port: the machine profile of a GRBL controller (docs/grbl.md)</source>
-        <translation>与 --port 一起使用：GRBL 控制器的机器配置文件（docs/grbl.md）</translation>
+        <source>with --port: the machine profile of a GRBL controller, a file or the name of one BenchPilot ships (stage-grbl-uno; docs/grbl.md)</source>
+        <translation>与 --port 一起使用：GRBL 控制器的机器配置文件，可以是文件，也可以是 BenchPilot 自带配置的名称（stage-grbl-uno；docs/grbl.md）</translation>
     </message>
     <message>
         <source>with --port: the link speed</source>
@@ -4430,6 +4490,14 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Machine profile %1</source>
         <translation>机器配置 %1</translation>
+    </message>
+    <message>
+        <source>%1 — serial number %2</source>
+        <translation>%1 — 序列号 %2</translation>
+    </message>
+    <message>
+        <source>%1 — %2, serial number %3</source>
+        <translation>%1 — %2，序列号 %3</translation>
     </message>
 </context>
 <context>
@@ -9187,11 +9255,6 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>%1：设备已断开（%2）</translation>
     </message>
     <message>
-        <source>cannot open %1: it is busy or you lack permission (%2)</source>
-        <comment>link.port_busy</comment>
-        <translation>无法打开 %1：端口被占用或没有权限（%2）</translation>
-    </message>
-    <message>
         <source>cannot open %1: no such port</source>
         <comment>link.no_such_port</comment>
         <translation>无法打开 %1：端口不存在</translation>
@@ -9700,6 +9763,21 @@ A loop this different may oscillate or run away. Apply them?</source>
         <source>%1 went silent while connecting: only damaged frames came (%2), then nothing for %3; check power and cable</source>
         <comment>link.went_silent</comment>
         <translation>%1 在连接过程中停止应答：只收到损坏的帧（%2 个），之后 %3 内没有任何数据；请检查电源和电缆</translation>
+    </message>
+    <message>
+        <source>cannot open %1: another program has it open (%2)</source>
+        <comment>link.port_busy</comment>
+        <translation>无法打开 %1：另一个程序正在使用它（%2）</translation>
+    </message>
+    <message>
+        <source>cannot open %1: only members of the group %2 may use it, and this login is not one. Add yourself once with &quot;sudo usermod -aG %2 $USER&quot;, then log out and in again</source>
+        <comment>link.port_group</comment>
+        <translation>无法打开 %1：只有 %2 组的成员才能使用它，而当前登录会话不在该组中。请执行一次 &quot;sudo usermod -aG %2 $USER&quot;，然后注销并重新登录</translation>
+    </message>
+    <message>
+        <source>cannot open %1: you may not read and write it (%2); ask the computer&apos;s administrator</source>
+        <comment>link.port_denied</comment>
+        <translation>无法打开 %1：您没有读写它的权限（%2）；请联系这台计算机的管理员</translation>
     </message>
 </context>
 <context>

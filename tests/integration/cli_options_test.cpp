@@ -149,13 +149,18 @@ TEST(CliOptions, VersionOnAllThreePrograms)
 {
     const CliRun r = runCli({QStringLiteral("--version")});
     EXPECT_EQ(r.code, 0);
-    EXPECT_EQ(r.out.trimmed(), QStringLiteral("benchpilot-cli " BP_VERSION));
+    EXPECT_EQ(r.out.section(QLatin1Char('\n'), 0, 0), QStringLiteral("benchpilot-cli " BP_VERSION));
     const ProgramRun c = runProgram(binary("benchpilot-cli"), {QStringLiteral("--version")});
     EXPECT_EQ(c.exitCode, 0) << c.describe();
-    EXPECT_EQ(c.out.trimmed(), QStringLiteral("benchpilot-cli " BP_VERSION));
+    EXPECT_EQ(c.out.section(QLatin1Char('\n'), 0, 0), QStringLiteral("benchpilot-cli " BP_VERSION));
     const ProgramRun s = runProgram(binary("benchpilot-sim"), {QStringLiteral("--version")});
     EXPECT_EQ(s.exitCode, 0) << s.describe();
-    EXPECT_EQ(s.out.trimmed(), QStringLiteral("benchpilot-sim " BP_VERSION));
+    EXPECT_EQ(s.out.section(QLatin1Char('\n'), 0, 0), QStringLiteral("benchpilot-sim " BP_VERSION));
+    // The licence the programs are distributed under, as GNU programs say it (and help2man reads it).
+    for (const QString& out : {r.out, c.out, s.out}) {
+        EXPECT_TRUE(out.contains(QStringLiteral("License GPL-3.0-or-later"))) << out.toStdString();
+        EXPECT_TRUE(out.contains(QStringLiteral("NO WARRANTY"))) << out.toStdString();
+    }
 }
 
 TEST(CliOptions, SimulatorHelpAndJoinedValues)

@@ -1,6 +1,7 @@
 #include "device/files/recipes/recipe_loader.h"
 
 #include "device/files/plates/labware_file.h"
+#include "device/files/shipped_data.h"
 #include "device/files/text_file.h"
 
 #include <QDir>
@@ -30,7 +31,11 @@ int resolveLabware(const plates::Recipe& recipe, const QString& baseDir, plates:
         }
         if (!isLabwareFile(p.labware))
             continue;  // the plan reports the unknown id with the recipe's position
-        const QString file = QDir(baseDir).filePath(QString::fromStdString(p.labware));
+        QString file = QDir(baseDir).filePath(QString::fromStdString(p.labware));
+        // A recipe copied out of the examples still finds the labware shipped with them.
+        if (!QFileInfo::exists(file))
+            if (const QString shipped = files::shippedLabwareFile(QString::fromStdString(p.labware)); !shipped.isEmpty())
+                file = shipped;
         std::string text;
         msg::Message error;
         if (!files::readText(file, &text, &error)) {
