@@ -315,7 +315,7 @@ QList<QCommandLineOption> accuracyRunOptions()
             option("gauge-timeout", "how long the gauge may take to answer, in s", "s", "1"),
             option("out", "folder for the run log, readings CSV, result JSON and PDF report", "dir"),
             option("restart", "keep another test's run log in --out aside and start afresh"),
-            option("new-run", "when --out holds a finished run of this test, run it again beside it (into <out>-2, <out>-3, …), keeping both; a stopped newest run goes on"),
+            option("new-run", "when --out holds a finished run of this test, run it again beside it (into OUT-2, OUT-3, …), keeping both; a stopped newest run goes on"),
             option("home", "home the test's axes first"),
             option("time-scale", "with --sim: run the simulator's clock this many times faster", "k", "1")};
 }
