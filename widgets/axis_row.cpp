@@ -1,12 +1,13 @@
 #include "widgets/axis_row.h"
 
+#include "widgets/common/number_field.h"
+
 #include "widgets/common/reading_text.h"
 
 #include "widgets/input_policy.h"
 #include "widgets/status_lamp.h"
 
 #include <QComboBox>
-#include <QDoubleValidator>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -70,7 +71,14 @@ AxisRow::AxisRow(int axis, const dev::AxisDescriptor& d, proto::DeviceKind kind,
     for (double s : stepPresets(d, kind))
         m_step->addItem(QString::number(s), s);
     m_step->setCurrentIndex(std::min(2, m_step->count() - 1));
-    m_step->lineEdit()->setValidator(new QDoubleValidator(0, d.travelMax - d.travelMin, 6, m_step));
+    // A typed step is kept as typed: "-5" shows as invalid with its reason (a validator
+    // used to drop the minus and step by 5).
+    auto* stepEntry = new NumberField(m_step);
+    stepEntry->setObjectName(QStringLiteral("jogStep%1").arg(d.letter));
+    stepEntry->setFieldName(tr("Step %1").arg(d.letter));
+    stepEntry->setRange(0, d.travelMax - d.travelMin);
+    m_step->setLineEdit(stepEntry);
+    m_step->setCurrentIndex(std::min(2, m_step->count() - 1));
     m_step->setMinimumWidth(80);
     auto makeTool = [&](const QString& text, const QString& tip) {
         auto* b = new QToolButton(parent);
@@ -89,9 +97,14 @@ AxisRow::AxisRow(int axis, const dev::AxisDescriptor& d, proto::DeviceKind kind,
     m_zero->setToolTip(tr("Make the present position zero"));
     for (QWidget* w : std::initializer_list<QWidget*>{m_stepMinus, m_stepPlus, m_holdMinus, m_holdPlus, m_home, m_zero})
         setUsualToolTip(w, w->toolTip());
-    m_target = new QLineEdit(parent);
+    // The target is kept as typed: "1e9" or "abc" shows as invalid with its reason, and Go says why.
+    auto* target = new NumberField(parent);
+    target->setObjectName(QStringLiteral("jogTarget%1").arg(d.letter));
+    target->setFieldName(tr("Target %1").arg(d.letter));
+    target->setRange(-1e6, 1e6);
+    target->setEmptyAllowed(true);
+    m_target = target;
     m_target->setPlaceholderText(tr("target %1").arg(d.unitName()));
-    m_target->setValidator(new QDoubleValidator(-1e6, 1e6, 6, m_target));
     // Wide enough for its own placeholder ("target mm" was cut to "tar…") and a position.
     m_target->setMinimumWidth(std::max(m_target->fontMetrics().horizontalAdvance(m_target->placeholderText()),
                                        m_target->fontMetrics().horizontalAdvance(QStringLiteral("-0000.000")))
@@ -149,6 +162,10 @@ AxisRow::AxisRow(int axis, const dev::AxisDescriptor& d, proto::DeviceKind kind,
     connect(m_home, &QPushButton::clicked, this, [this] { emit homeRequested(m_axis); });
     connect(m_zero, &QPushButton::clicked, this, [this] { emit zeroRequested(m_axis); });
     auto go = [this] {
+        if (auto* f = qobject_cast<NumberField*>(m_target); f && !f->isValid()) {
+            emit problem(tr("Axis %1: %2").arg(m_desc.letter).arg(f->problem()));
+            return;
+        }
         bool ok = false;
         const double v = QLocale().toDouble(m_target->text(), &ok);
         const double v2 = ok ? v : m_target->text().toDouble(&ok);

@@ -3,13 +3,13 @@
 #include "motion/any_profile.h"
 #include "motion/step_timing.h"
 
+#include "widgets/common/number_field.h"
 #include "widgets/wording/wording.h"
 
 #include <qcustomplot.h>
 
 #include <QAbstractTableModel>
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -19,6 +19,7 @@
 #include <QTimer>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ui {
@@ -235,20 +236,21 @@ ProfilesScreen::ProfilesScreen(QWidget* parent) : QWidget(parent)
     replan();
 }
 
-QDoubleSpinBox* ProfilesScreen::addField(QFormLayout* form, const QString& objectName, const QString& label,
-                                         const QString& suffix, double min, double max, double value, int decimals,
-                                         const QString& tip)
+// Kept as typed: "-5" in Max velocity is shown as invalid with its reason (and no plan),
+// never turned into 5 by a spin box that cannot take the minus.
+NumberField* ProfilesScreen::addField(QFormLayout* form, const QString& objectName, const QString& label,
+                                      const QString& suffix, double min, double max, double value, int decimals,
+                                      const QString& tip)
 {
-    auto* box = new QDoubleSpinBox(this);
+    auto* box = new NumberField(this);
     box->setObjectName(objectName);
     box->setRange(min, max);
-    box->setDecimals(decimals);
+    box->setDisplay('g', std::max(10, decimals + 6));  // every digit a value has: a rounded display would be taken back as typed
     box->setValue(value);
-    box->setSuffix(suffix);
-    box->setToolTip(tip);
-    box->setKeyboardTracking(true);
+    box->setUnit(suffix);
+    box->setHelp(tip);
     form->addRow(label, box);
-    connect(box, qOverload<double>(&QDoubleSpinBox::valueChanged), this, &ProfilesScreen::scheduleReplan);
+    connect(box, &NumberField::entryChanged, this, &ProfilesScreen::scheduleReplan);
     return box;
 }
 
@@ -259,7 +261,7 @@ void ProfilesScreen::scheduleReplan() { m_replanTimer->start(); }
 void ProfilesScreen::updateFieldVisibility()
 {
     const auto f = fieldsOf(static_cast<motion::ProfileKind>(m_kind->currentData().toInt()));
-    const std::pair<QDoubleSpinBox*, bool> rows[] = {
+    const std::pair<NumberField*, bool> rows[] = {
         {m_aMax, f.aMax}, {m_jMax, f.jMax}, {m_accelTime, f.accelTime}, {m_startSpeed, f.startSpeed}, {m_plateau, f.plateau}};
     for (const auto& [box, visible] : rows) {
         box->setVisible(visible);
@@ -276,28 +278,38 @@ void ProfilesScreen::showError(const QString& message)
     m_error->setVisible(!message.isEmpty());
 }
 
+void ProfilesScreen::showNoPlan(const QString& why)
+{
+    m_moveTimeS = -1;
+    showError(why);
+    m_moveTime->setText(tr("Move time: —"));
+    m_summary->clear();
+    for (auto* plot : m_plots) {
+        plot->graph(0)->data()->clear();
+        plot->replot();
+    }
+    m_model->setTable({});
+    m_tableSummary->clear();
+}
+
 void ProfilesScreen::replan()
 {
     motion::ProfileRequest r;
     r.kind = static_cast<motion::ProfileKind>(m_kind->currentData().toInt());
-    r.vMaxMmS = m_vMax->value();
-    r.aMaxMmS2 = m_aMax->value();
-    r.jMaxMmS3 = m_jMax->value();
-    r.accelTimeS = m_accelTime->value();
-    r.startSpeedMmS = m_startSpeed->value();
-    r.plateauMm = m_plateau->value();
-    const auto planned = motion::planProfile(m_distance->value(), r);
+    if (const QString typed = NumberField::firstProblemUnder(this); !typed.isEmpty()) {
+        showNoPlan(typed);
+        return;
+    }
+    // Every shown field is valid here; a hidden one is not used by this kind of profile.
+    r.vMaxMmS = m_vMax->valueOr(0);
+    r.aMaxMmS2 = m_aMax->valueOr(0);
+    r.jMaxMmS3 = m_jMax->valueOr(0);
+    r.accelTimeS = m_accelTime->valueOr(0);
+    r.startSpeedMmS = m_startSpeed->valueOr(0);
+    r.plateauMm = m_plateau->valueOr(0);
+    const auto planned = motion::planProfile(m_distance->valueOr(0), r);
     if (!planned) {
-        m_moveTimeS = -1;
-        showError(tr("Cannot plan this move: %1").arg(words::text(planned.error)));
-        m_moveTime->setText(tr("Move time: —"));
-        m_summary->clear();
-        for (auto* plot : m_plots) {
-            plot->graph(0)->data()->clear();
-            plot->replot();
-        }
-        m_model->setTable({});
-        m_tableSummary->clear();
+        showNoPlan(tr("Cannot plan this move: %1").arg(words::text(planned.error)));
         return;
     }
     showError({});
@@ -333,7 +345,7 @@ void ProfilesScreen::replan()
                            .arg(peak[3], 0, 'g', 5));
 
     // Seed 001 step-period table of this move.
-    const double stepMm = m_step->value();
+    const double stepMm = m_step->valueOr(0);
     const double steps = std::floor(std::fabs(p.distance()) / stepMm + 1e-9);
     if (steps > kMaxTableSteps) {
         m_model->setTable({});

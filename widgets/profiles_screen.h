@@ -8,13 +8,14 @@
 
 class QComboBox;
 class QCustomPlot;
-class QDoubleSpinBox;
 class QFormLayout;
 class QLabel;
 class QTableView;
 class QTimer;
 
 namespace ui {
+
+class NumberField;
 
 class StepTableModel;
 
@@ -32,20 +33,22 @@ private:
     void replan();
     void scheduleReplan();
     void updateFieldVisibility();
-    QDoubleSpinBox* addField(QFormLayout* form, const QString& objectName, const QString& label,
-                             const QString& suffix, double min, double max, double value, int decimals,
-                             const QString& tip);
+    NumberField* addField(QFormLayout* form, const QString& objectName, const QString& label,
+                          const QString& suffix, double min, double max, double value, int decimals,
+                          const QString& tip);
     void showError(const QString& message);
+    /// No plan shown: `why` in the error line, the plots and table empty.
+    void showNoPlan(const QString& why);
 
     QComboBox* m_kind;
-    QDoubleSpinBox* m_distance;
-    QDoubleSpinBox* m_vMax;
-    QDoubleSpinBox* m_aMax;
-    QDoubleSpinBox* m_jMax;
-    QDoubleSpinBox* m_accelTime;
-    QDoubleSpinBox* m_startSpeed;
-    QDoubleSpinBox* m_plateau;
-    QDoubleSpinBox* m_step;
+    NumberField* m_distance;
+    NumberField* m_vMax;
+    NumberField* m_aMax;
+    NumberField* m_jMax;
+    NumberField* m_accelTime;
+    NumberField* m_startSpeed;
+    NumberField* m_plateau;
+    NumberField* m_step;
     QLabel* m_moveTime;
     QLabel* m_summary;
     QLabel* m_tableSummary;

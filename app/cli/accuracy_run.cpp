@@ -7,6 +7,7 @@
 #include "cli_session.h"
 #include "command.h"
 
+#include "device/files/accuracy/accuracy_run_folders.h"
 #include "device/files/accuracy/accuracy_test_file.h"
 #include "device/jobs/accuracy/accuracy_runner.h"
 #include "device/link/simulated_link.h"
@@ -134,7 +135,13 @@ int runAccuracy(Invocation& inv)
         return inv.usage(timeScaleRefusal(inv));
     if (!(timeScale > 0 && timeScale <= 100))
         return inv.usage(tr("--time-scale must be from 0 to 100"));
-    const QString folder = inv.isSet(QStringLiteral("out")) ? inv.path(inv.value(QStringLiteral("out"))) : defaultFolder(inv, test);
+    const QString base = inv.isSet(QStringLiteral("out")) ? inv.path(inv.value(QStringLiteral("out"))) : defaultFolder(inv, test);
+    // --new-run: the newest run of the test (accuracy_run_folders.h) goes on if it stopped;
+    // a finished one is followed by a run beside it. Without it, --out is the run.
+    const bool newRun = inv.isSet(QStringLiteral("new-run"));
+    if (newRun && inv.isSet(QStringLiteral("restart")))
+        return inv.usage(tr("--new-run keeps every run; --restart sets one aside: give one of them"));
+    QString folder = newRun ? accuracyfiles::latestRunFolder(base) : base;
     if (timeScale != 1)
         inv.unpaceSimulatedLink();
 
@@ -177,6 +184,24 @@ int runAccuracy(Invocation& inv)
     if (!runner.prepare(test, source, folder, inv.isSet(QStringLiteral("restart")), &problems)) {
         reportProblems(inv, problems, kOptionOf);
         return Usage;
+    }
+    if (runner.state() == jobs::AccuracyRunner::State::Finished && newRun) {
+        const QString finished = folder;
+        folder = accuracyfiles::nextRunFolder(base);
+        if (!runner.prepare(test, source, folder, false, &problems)) {
+            reportProblems(inv, problems, kOptionOf);
+            return Usage;
+        }
+        inv.err() << tr("%1 holds a finished run of this test: this run goes into %2, beside it.")
+                         .arg(QDir::toNativeSeparators(finished), QDir::toNativeSeparators(folder))
+                  << "\n";
+    } else if (runner.state() == jobs::AccuracyRunner::State::Finished) {
+        // Not a dead end: the finished run's results are reported again, and the way to
+        // measure again (after compensation) is said.
+        inv.err() << tr("%1 holds a finished run of this test: its results follow, nothing was moved. To run the test "
+                        "again beside it (after compensation), add --new-run: it goes into %2 and both are kept.")
+                         .arg(QDir::toNativeSeparators(folder), QDir::toNativeSeparators(accuracyfiles::nextRunFolder(base)))
+                  << "\n";
     }
     reportProblems(inv, problems, kOptionOf);  // warnings
     attachStdinPrompter(inv, source, [&] { runner.abort(); });
@@ -290,6 +315,7 @@ QList<QCommandLineOption> accuracyRunOptions()
             option("gauge-timeout", "how long the gauge may take to answer, in s", "s", "1"),
             option("out", "folder for the run log, readings CSV, result JSON and PDF report", "dir"),
             option("restart", "keep another test's run log in --out aside and start afresh"),
+            option("new-run", "when --out holds a finished run of this test, run it again beside it (into OUT-2, OUT-3, …), keeping both; a stopped newest run goes on"),
             option("home", "home the test's axes first"),
             option("time-scale", "with --sim: run the simulator's clock this many times faster", "k", "1")};
 }

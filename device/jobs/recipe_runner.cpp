@@ -287,13 +287,15 @@ bool RecipeRunner::start(const QString& logPath, msg::Message* error)
     return true;
 }
 
-void RecipeRunner::beginRunning()
+void RecipeRunner::beginRunning(bool newSession)
 {
     const auto& id = m_client->identity();
     m_runInstrument = (id.model + QLatin1Char(' ') + id.firmware).trimmed().toStdString();
     m_pauseAsked = false;
-    m_plannedDoneS = 0;
-    m_sessionStartS = m_elapsedBeforeS;
+    if (newSession) {
+        m_plannedDoneS = 0;
+        m_sessionStartS = m_elapsedBeforeS;
+    }
     setState(RunState::Running);
     QTimer::singleShot(0, this, &RecipeRunner::nextMove);
 }

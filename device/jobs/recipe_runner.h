@@ -54,9 +54,13 @@ using InterruptedDecider = std::function<InterruptedChoice(const InterruptedOp&)
 
 struct RunProgress {
     int opsDone = 0, opsTotal = 0;
+    /// The op under way; -1 when none is (idle, finished, or paused between two ops:
+    /// the op after a pause has not begun, so it is nextOp, not current).
     int currentOp = -1;
     msg::Message currentWhere;  ///< recipe.where.*: "samples B3"
     msg::Message currentLabel;  ///< recipe.op.*
+    int nextOp = -1;            ///< while paused: the op Resume begins with
+    msg::Message nextLabel;     ///< recipe.op.* of nextOp
     double elapsedS = 0;    ///< running time (pauses excluded)
     double etaS = 0;        ///< remaining, from the profiles scaled by how the run is going
     double fraction = 0;    ///< of the planned time
@@ -113,7 +117,8 @@ private:
     bool checkMachine(msg::Message* error) const;
     bool preflight(msg::Message* error) const;
     void setState(RunState s);
-    void beginRunning();
+    /// Running from m_op; `newSession`: the pace is judged afresh (not after a pause).
+    void beginRunning(bool newSession = true);
     void nextMove();
     void sendMove(const plates::MachineMove& planned);
     void moveArrived();
@@ -164,6 +169,9 @@ private:
     bool m_budgetStartPending = false;  ///< answered, no status since
     QElapsedTimer m_clock;
     double m_elapsedBeforeS = 0;    ///< running time of earlier stretches
+    /// The pace of this session: planned time of the ops it closed against the running time
+    /// it took. A pause does not end a session (the pause is not running time, and the pace
+    /// before it still holds); a resume after a stop or from a log starts a new one.
     double m_plannedDoneS = 0;      ///< planned time of ops closed in this session
     double m_sessionStartS = 0;     ///< running time when this session's first op began
     QMetaObject::Connection m_events, m_link;

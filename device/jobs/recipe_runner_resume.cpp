@@ -49,7 +49,11 @@ RunProgress RecipeRunner::progress() const
     }
     const bool running = m_state == RunState::Running || m_state == RunState::Pausing || m_state == RunState::Aborting;
     p.elapsedS = m_elapsedBeforeS + (running ? m_clock.elapsed() / 1000.0 : 0.0);
-    if (m_op >= 0 && m_op < p.opsTotal && m_state != RunState::Finished) {
+    if (m_op >= 0 && m_op < p.opsTotal && m_state == RunState::Paused) {
+        // Paused between two ops: the last one is done and the next has not begun.
+        p.nextOp = m_op;
+        p.nextLabel = m_plan.ops[static_cast<std::size_t>(m_op)].label();
+    } else if (m_op >= 0 && m_op < p.opsTotal && m_state != RunState::Finished) {
         const plates::PlanOp& op = m_plan.ops[static_cast<std::size_t>(m_op)];
         p.currentOp = m_op;
         p.currentWhere = op.where();
@@ -157,7 +161,7 @@ bool RecipeRunner::resume(const InterruptedDecider& decide, msg::Message* error)
         if (!checkMachine(error) || !preflight(error))
             return false;
         m_knowXy = m_knowZ = false;
-        beginRunning();
+        beginRunning(false);  // the pace before the pause still holds: the ETA does not jump
         return true;
     }
     if (m_state != RunState::Stopped || m_op < 0 || m_op >= static_cast<int>(m_plan.ops.size())) {

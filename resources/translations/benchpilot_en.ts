@@ -22,6 +22,16 @@
     </message>
 </context>
 <context>
+    <name>ui::PatternScreen</name>
+    <message numerus="yes">
+        <source>%n samples say little of a largest error</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>words::EventWords</name>
     <message numerus="yes">
         <source>axis %1: a compensation table of %Ln points installed, not yet enabled</source>

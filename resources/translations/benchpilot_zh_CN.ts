@@ -2499,6 +2499,16 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>--profile goes with --port</source>
         <translation>--profile 须与 --port 一起使用</translation>
+        <source>--new-run keeps every run; --restart sets one aside: give one of them</source>
+        <translation>--new-run 保留每次运行，--restart 把一次运行放到一边：只能给其中一个</translation>
+    </message>
+    <message>
+        <source>%1 holds a finished run of this test: this run goes into %2, beside it.</source>
+        <translation>%1 中已有此测试完成的一次运行：这次运行写入它旁边的 %2。</translation>
+    </message>
+    <message>
+        <source>%1 holds a finished run of this test: its results follow, nothing was moved. To run the test again beside it (after compensation), add --new-run: it goes into %2 and both are kept.</source>
+        <translation>%1 中已有此测试完成的一次运行：下面是它的结果，机器没有移动。要在它旁边再运行一次此测试（例如补偿之后），请加上 --new-run：它写入 %2，两次运行都会保留。</translation>
     </message>
 </context>
 <context>
@@ -3837,6 +3847,18 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <source>Move %1 to the target (absolute)</source>
         <translation>把 %1 移到目标（绝对位置）</translation>
     </message>
+    <message>
+        <source>Step %1</source>
+        <translation>%1 步长</translation>
+    </message>
+    <message>
+        <source>Target %1</source>
+        <translation>%1 目标</translation>
+    </message>
+    <message>
+        <source>Axis %1: %2</source>
+        <translation>%1 轴：%2</translation>
+    </message>
 </context>
 <context>
     <name>ui::CalibrationPanel</name>
@@ -4408,6 +4430,14 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Stopped after %1 of %2 readings: %3</source>
         <translation>已取得 %1/%2 个读数，已停止：%3</translation>
+    </message>
+    <message>
+        <source>The test is not saved: %1</source>
+        <translation>测试未保存：%1</translation>
+    </message>
+    <message>
+        <source>%1 holds a finished run of this test. Run the test again into %2? Both runs are kept, and Before / after compares the new one with this one.</source>
+        <translation>%1 中已有此测试完成的一次运行。要在 %2 中再运行一次此测试吗？两次运行都会保留，“补偿前后”会把新的一次与这一次比较。</translation>
     </message>
 </context>
 <context>
@@ -5309,6 +5339,10 @@ Keep that log aside and start this test afresh?</source>
         <source>%1 must be at most %2, not %3</source>
         <translation>%1 必须不大于 %2，而不是 %3</translation>
     </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
 </context>
 <context>
     <name>ui::PatternForm</name>
@@ -5558,10 +5592,6 @@ Keep that log aside and start this test afresh?</source>
         <translation>指令</translation>
     </message>
     <message>
-        <source>measured</source>
-        <translation>实测</translation>
-    </message>
-    <message>
         <source>start</source>
         <translation>起点</translation>
     </message>
@@ -5576,6 +5606,10 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Y (mm)</source>
         <translation>Y (mm)</translation>
+    </message>
+    <message>
+        <source>measured (samples)</source>
+        <translation>实测（采样点）</translation>
     </message>
 </context>
 <context>
@@ -5673,8 +5707,8 @@ Keep that log aside and start this test afresh?</source>
         <translation>CSV (*.csv)</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Contour error&lt;/b&gt; max %1 µm (at %2 mm), RMS %3 µm · &lt;b&gt;time&lt;/b&gt; %4 · %5 samples%6</source>
-        <translation>&lt;b&gt;轮廓误差&lt;/b&gt; 最大 %1 µm（位于 %2 mm），均方根 %3 µm · &lt;b&gt;用时&lt;/b&gt; %4 · %5 个采样点%6</translation>
+        <source>&lt;b&gt;Contour error&lt;/b&gt; max %1 µm (at %2 mm), RMS %3 µm · &lt;b&gt;time&lt;/b&gt; %4 · %5 samples at %6 Hz%7</source>
+        <translation>&lt;b&gt;轮廓误差&lt;/b&gt; 最大 %1 µm（位于 %2 mm），均方根 %3 µm · &lt;b&gt;用时&lt;/b&gt; %4 · %5 个采样点，采样率 %6 Hz%7</translation>
     </message>
     <message>
         <source> · &lt;b&gt;incomplete&lt;/b&gt;</source>
@@ -5715,6 +5749,20 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>A pattern is running: another can be loaded once it has ended.</source>
         <translation>图形正在运行：结束后才能加载另一个。</translation>
+    </message>
+    <message>
+        <source>between two samples the path bends up to %1 µm away from the line joining them, more than the largest error found: what the machine did there is not seen</source>
+        <translation>两个采样点之间，路径偏离其连线最多 %1 µm，大于测得的最大误差：机器在那里如何走看不到</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n samples say little of a largest error</source>
+        <translation>
+            <numerusform>只有 %n 个采样点，说明不了最大误差</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Too few samples for this figure: %1.</source>
+        <translation>采样点太少，此数值意义不大：%1。</translation>
     </message>
 </context>
 <context>
@@ -6836,6 +6884,10 @@ Keep that log aside and start this test afresh?</source>
         <source>%1 of %2 operations</source>
         <translation>%1/%2 项操作</translation>
     </message>
+    <message>
+        <source>Next: %1</source>
+        <translation>下一步：%1</translation>
+    </message>
 </context>
 <context>
     <name>ui::ScanPlanForm</name>
@@ -7207,6 +7259,10 @@ Keep that log aside and start this test afresh?</source>
         <source>Runs only when the stage has its error compensation enabled on X and Y: the stage moves each target so the work point lands on it. Measure and upload it on the Calibration screen.</source>
         <translation>仅当载物台的 X 和 Y 都已启用误差补偿时才能运行：载物台会修正每个目标位置，使工作点准确落在目标上。请在“校准”界面测量并上传补偿。</translation>
     </message>
+    <message>
+        <source>Field: — (a camera value above is not a number yet)</source>
+        <translation>视场：—（上方某个相机数值还不是数字）</translation>
+    </message>
 </context>
 <context>
     <name>ui::ScanScreen</name>
@@ -7427,6 +7483,10 @@ Start this scan anew in that folder? The old run log is kept under another name.
     <message>
         <source>Exported %1 planned tile positions to %2.</source>
         <translation>已将 %1 个计划图块位置导出到 %2。</translation>
+    </message>
+    <message>
+        <source>The plan is not saved: %1</source>
+        <translation>计划未保存：%1</translation>
     </message>
 </context>
 <context>

@@ -17,6 +17,7 @@
 #include <QDir>
 
 #include <qcustomplot.h>
+#include <QFile>
 #include <QFileInfo>
 #include <QLabel>
 #include <QLineEdit>
@@ -158,6 +159,68 @@ TEST_F(CalibrationScreenTest, AGaugeRunThenItsCompensationShowBeforeAndAfter)
     EXPECT_TRUE(child<QLabel>("calibrationBeforeAfterNote")->text().contains(QStringLiteral("times better")));
     screen->tabs()->setCurrentIndex(3);
     keepPicture("calibration-before-after.png");
+}
+
+// Run on a test whose folder holds a finished run did nothing but say where its results
+// were. The operator wants the run after (compensation): asked first, it goes into a
+// numbered folder beside the first, both are kept, and Before / after compares them.
+TEST_F(CalibrationScreenTest, RunOnAFinishedTestOffersANewRunBesideItAndComparesBoth)
+{
+    ASSERT_TRUE(homedStage());
+    screen->form()->setTest(smallTest());
+    screen->setSource(QStringLiteral("gauge"), QStringLiteral("sim"));
+    ASSERT_TRUE(screen->run());
+    ASSERT_TRUE(waitFinished());
+    const QString first = QDir(dir.path()).filePath(QStringLiteral("gui-x"));
+    const QString second = QDir(dir.path()).filePath(QStringLiteral("gui-x-2"));
+    ASSERT_TRUE(QFileInfo::exists(first + QStringLiteral("/gui-x.readings.csv")));
+    const QByteArray firstReadings = [&] {
+        QFile f(first + QStringLiteral("/gui-x.readings.csv"));
+        return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+    }();
+
+    // Declined: nothing runs, nothing is written, and the run is not compared with itself.
+    QStringList asked;
+    screen->setConfirm([&](const QString& q) {
+        asked << q;
+        return false;
+    });
+    ASSERT_TRUE(screen->run());
+    ASSERT_TRUE(waitFor([&] { return !asked.isEmpty(); }, 5000)) << "Run on a finished test asked nothing";
+    EXPECT_TRUE(asked.front().contains(QStringLiteral("gui-x-2"))) << asked.front().toStdString();
+    pump(100);
+    EXPECT_FALSE(QFileInfo::exists(second));
+    EXPECT_FALSE(screen->previous()) << "a run compared with itself";
+
+    // Accepted: the test runs again into gui-x-2; the first run's files stay as they were.
+    asked.clear();
+    screen->setConfirm([&](const QString& q) {
+        asked << q;
+        return true;
+    });
+    ASSERT_TRUE(screen->run());
+    ASSERT_TRUE(waitFor([&] { return screen->runner() && QDir(screen->runner()->folder()) == QDir(second)
+                                     && screen->runner()->state() == jobs::AccuracyRunner::State::Finished; },
+                        60000))
+        << asked.join(QLatin1Char('\n')).toStdString();
+    pump(100);
+    EXPECT_TRUE(QFileInfo::exists(second + QStringLiteral("/gui-x.readings.csv")));
+    QFile f(first + QStringLiteral("/gui-x.readings.csv"));
+    ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+    EXPECT_EQ(f.readAll(), firstReadings) << "the first run's readings changed";
+    ASSERT_TRUE(screen->previous());
+    ASSERT_TRUE(screen->latest());
+    EXPECT_GT(child<QTableWidget>("calibrationBeforeAfter")->rowCount(), 3) << "Before / after compares the two runs";
+
+    // A third Run offers gui-x-3 and compares with gui-x-2, the newest.
+    asked.clear();
+    screen->setConfirm([&](const QString& q) {
+        asked << q;
+        return false;
+    });
+    ASSERT_TRUE(screen->run());
+    ASSERT_TRUE(waitFor([&] { return !asked.isEmpty(); }, 5000));
+    EXPECT_TRUE(asked.front().contains(QStringLiteral("gui-x-3"))) << asked.front().toStdString();
 }
 
 TEST_F(CalibrationScreenTest, AManualTestAsksAtEachStopAndTakesWhatIsTyped)

@@ -6,7 +6,7 @@
 #include "motion/jog/joystick_curve.h"
 #include "patterns_fixture.h"
 
-#include <QDoubleSpinBox>
+#include "widgets/common/number_field.h"
 #include <QLabel>
 
 #include <cmath>
@@ -127,7 +127,7 @@ TEST_F(JoystickStops, FullDeflectionRunsAtTheMaximumSpeedAndChangingItChangesThe
     ui::JoystickScreen* j = showStageJoystick();
     ASSERT_NE(j, nullptr);
     ui::JoystickPad* pad = j->pad();
-    auto* maxSpeed = j->findChild<QDoubleSpinBox*>(QStringLiteral("joystickMaxSpeed"));
+    auto* maxSpeed = j->findChild<ui::NumberField*>(QStringLiteral("joystickMaxSpeed"));
     auto* speedLabel = j->findChild<QLabel*>(QStringLiteral("joystickSpeed"));
     ASSERT_NE(maxSpeed, nullptr);
     ASSERT_NE(speedLabel, nullptr);

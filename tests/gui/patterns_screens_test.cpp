@@ -9,6 +9,7 @@
 #include "device/jobs/pattern_runner.h"
 #include "gui_wait.h"
 #include "patterns_fixture.h"
+#include "widgets/common/number_field.h"
 #include "widgets/joystick/joystick_pad.h"
 #include "widgets/joystick/joystick_screen.h"
 #include "widgets/joystick/travel_view.h"
@@ -155,7 +156,7 @@ TEST_F(MotionScreensTest, SaveAndLoadKeepThePattern)
     ASSERT_TRUE(p->loadPattern(f, &error)) << error.toStdString();
     EXPECT_EQ(p->pattern().shape, motion::plans::PatternShape::Cosine);
     EXPECT_DOUBLE_EQ(p->pattern().wave.amplitudeMm, 3.5);
-    EXPECT_EQ(p->form()->field(QStringLiteral("cosine.amplitude_mm"))->value(), 3.5);
+    EXPECT_EQ(p->form()->field(QStringLiteral("cosine.amplitude_mm"))->value().value_or(-1), 3.5);
     EXPECT_FALSE(p->exportRun(tmp.filePath(QStringLiteral("run.csv")), &error));  // nothing run yet
     EXPECT_FALSE(error.isEmpty());
 }
@@ -177,6 +178,8 @@ TEST_F(MotionScreensTest, ARunFromTheScreenEndsWithItsContourSummaryAndExportsCs
     ASSERT_TRUE(waitFor([&] { return p->runner()->state() == jobs::PatternRunner::State::Done; }, 15000)) << p->statusText().toStdString();
     pump(200);
     EXPECT_TRUE(p->summaryText().contains(QStringLiteral("Contour error"))) << p->summaryText().toStdString();
+    EXPECT_TRUE(p->summaryText().contains(QStringLiteral(" Hz"))) << "the sample rate is said: " << p->summaryText().toStdString();
+    EXPECT_FALSE(p->summaryText().contains(QStringLiteral("Too few samples"))) << p->summaryText().toStdString();
     EXPECT_GT(p->runner()->summary().samples, 100u);  // 2 s at 250 Hz through the hub
     EXPECT_LT(p->runner()->summary().maxContourMm, 0.002);
     EXPECT_GT(p->contour()->samples(), 100);

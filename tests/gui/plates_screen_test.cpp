@@ -17,6 +17,7 @@
 #include "widgets/plates/step_form.h"
 
 #include <QComboBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMouseEvent>
@@ -376,4 +377,43 @@ TEST_F(PlatesScreenTest, ARunCountsOperationsAndSaysOverHowManyWells)
     QTest::mouseClick(run, Qt::LeftButton);
     pump(20);
     EXPECT_TRUE(asked.contains(QStringLiteral("%1 operations over %2 wells").arg(ops).arg(wells))) << asked.toStdString();
+}
+
+// Paused after a well, the screen showed the next well as "Current" (and the map drew it
+// as under way): nothing is under way while paused. The next op is said as next.
+TEST_F(PlatesScreenTest, PausedBetweenWellsNothingIsCurrent)
+{
+    fastHomedAnalyzer();
+    ui::PlateMap* map = screen->plateMap();
+    dragAcross(map, {0, 0}, {0, 7});  // A1 … A8
+    QTest::mouseClick(button(screen, QObject::tr("Aspirate from these")), Qt::LeftButton);
+    ASSERT_TRUE(screen->plan().ok());
+    QPushButton* run = button(screen->runPanel(), QObject::tr("Run"));
+    ASSERT_NE(run, nullptr);
+    QTest::mouseClick(run, Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->progress().opsDone >= 2; }, 30000));
+    QPushButton* pause = button(screen->runPanel(), QObject::tr("Pause"));
+    ASSERT_NE(pause, nullptr);
+    QTest::mouseClick(pause, Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Paused; }, 30000))
+        << jobs::runStateTerm(screen->runner()->state());
+    pump(100);
+    const int next = screen->runner()->progress().opsDone;
+    const QString nextWell = QString::fromStdString(screen->plan().ops[static_cast<std::size_t>(next)].well);
+    QStringList shown;
+    for (auto* l : screen->runPanel()->findChildren<QLabel*>())
+        shown << l->text();
+    const QString all = shown.join(QLatin1Char('|'));
+    EXPECT_FALSE(all.contains(QStringLiteral("Current: "))) << "paused, yet something is current: " << all.toStdString();
+    EXPECT_TRUE(all.contains(QStringLiteral("Next: "))) << all.toStdString();
+    EXPECT_TRUE(all.contains(nextWell)) << nextWell.toStdString() << " in " << all.toStdString();
+    // On the map the next well is not drawn as under way.
+    const QImage img = map->grab().toImage();
+    const plates::WellId id{0, next};
+    EXPECT_NE(QColor(img.pixel(map->wellCenter(id).toPoint())), ui::PlateMap::colorOf(ui::PlateMap::WellState::Current))
+        << nextWell.toStdString();
+    QPushButton* resume = button(screen->runPanel(), QObject::tr("Resume"));
+    ASSERT_NE(resume, nullptr);
+    QTest::mouseClick(resume, Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Finished; }, 30000));
 }

@@ -7,7 +7,7 @@
 
 #include <QApplication>
 #include <QComboBox>
-#include <QDoubleSpinBox>
+#include "widgets/common/number_field.h"
 #include <QLabel>
 #include <QTableView>
 #include <QTest>
@@ -25,9 +25,9 @@ QApplication& app()
     return *instance;
 }
 
-QDoubleSpinBox* field(ui::ProfilesScreen& s, const char* name)
+ui::NumberField* field(ui::ProfilesScreen& s, const char* name)
 {
-    auto* box = s.findChild<QDoubleSpinBox*>(QString::fromLatin1(name));
+    auto* box = s.findChild<ui::NumberField*>(QString::fromLatin1(name));
     EXPECT_NE(box, nullptr) << name;
     return box;
 }

@@ -14,7 +14,7 @@
 
 #include <QComboBox>
 #include <QDir>
-#include <QDoubleSpinBox>
+#include "widgets/common/number_field.h"
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
@@ -50,7 +50,7 @@ protected:
     T* child(const char* name) { return screen->findChild<T*>(QLatin1String(name)); }
     void setSpin(const char* name, double v)
     {
-        auto* s = child<QDoubleSpinBox>(name);
+        auto* s = child<ui::NumberField>(name);
         ASSERT_NE(s, nullptr) << name;
         s->setValue(v);
     }
@@ -84,7 +84,7 @@ TEST_F(ScanScreenTest, TypedRegionAndFieldGiveTheTileCountAndTime)
 
 TEST_F(ScanScreenTest, ProblemsAreShownAndRunIsHeldBack)
 {
-    setSpin("scanX1", child<QDoubleSpinBox>("scanX0")->value());  // zero width
+    setSpin("scanX1", child<ui::NumberField>("scanX0")->valueOr(0));  // zero width
     settle();
     EXPECT_TRUE(screen->problemsText().contains(QStringLiteral("zero size"))) << screen->problemsText().toStdString();
     EXPECT_FALSE(child<QPushButton>("scanRun")->isEnabled());

@@ -12,6 +12,8 @@
 #include <QDoubleSpinBox>
 #include <QTableWidget>
 
+#include "widgets/common/number_field.h"
+
 #include <gtest/gtest.h>
 
 using motion::control::EndReason;
@@ -92,9 +94,9 @@ TEST(ZnPanelLayout, ShortOfRoomTheSpinBoxesKeepTheirHeight)
     panel.resize(800, 380);
     panel.show();
     QCoreApplication::processEvents();
-    const auto spins = panel.findChildren<QDoubleSpinBox*>();
+    const auto spins = panel.findChildren<ui::NumberField*>();
     ASSERT_GE(spins.size(), 3);
-    for (QDoubleSpinBox* s : spins) {
+    for (ui::NumberField* s : spins) {
         if (s->isVisible()) {
             EXPECT_GE(s->height(), s->sizeHint().height()) << s->objectName().toStdString();
         }

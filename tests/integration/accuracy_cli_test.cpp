@@ -8,6 +8,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QTemporaryDir>
 
@@ -147,3 +148,44 @@ TEST(AccuracyCli, TheDeviceKeepsAnUploadedCompensationAcrossPrograms)
 }
 
 } // namespace
+
+// `accuracy run` into a folder whose run has finished did nothing but print the old
+// results. It still does (a script may read them), and says how to measure again; with
+// --new-run the test runs again beside the finished one, and both runs are kept.
+TEST(AccuracyCli, ARunIntoAFinishedFolderSaysSoAndNewRunRunsBesideIt)
+{
+    QTemporaryDir dir;
+    const QString out = dir.filePath(QStringLiteral("x"));
+    auto run = [&](const QStringList& extra) {
+        QStringList args{QStringLiteral("--sim"), QStringLiteral("stage"), QStringLiteral("--json"), QStringLiteral("accuracy"),
+                         QStringLiteral("run"), QStringLiteral("--home"), QStringLiteral("--time-scale"), QStringLiteral("25"),
+                         QStringLiteral("--axis"), QStringLiteral("X"), QStringLiteral("--targets"), QStringLiteral("20,50"),
+                         QStringLiteral("--cycles"), QStringLiteral("2"), QStringLiteral("--feed"), QStringLiteral("15"),
+                         QStringLiteral("--dwell"), QStringLiteral("0.05"), QStringLiteral("--out"), out};
+        return runCliInProcess(args + extra);
+    };
+    auto readings = [](const QString& folder) {
+        const QStringList found = QDir(folder).entryList({QStringLiteral("*.readings.csv")}, QDir::Files);
+        QFile f(found.isEmpty() ? QString() : QDir(folder).filePath(found.front()));
+        return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+    };
+    const auto first = run({});
+    ASSERT_EQ(first.code, 0) << first.err.toStdString() << first.out.toStdString();
+    const QByteArray firstReadings = readings(out);
+    ASSERT_FALSE(firstReadings.isEmpty()) << "files: " << QDir(out).entryList().join(QLatin1Char(' ')).toStdString();
+
+    const auto again = run({});
+    ASSERT_EQ(again.code, 0) << again.err.toStdString();
+    EXPECT_TRUE(again.err.contains(QStringLiteral("finished run"))) << again.err.toStdString();
+    EXPECT_TRUE(again.err.contains(QStringLiteral("--new-run"))) << again.err.toStdString();
+    EXPECT_FALSE(QFileInfo::exists(out + QStringLiteral("-2")));
+
+    const auto after = run({QStringLiteral("--new-run")});
+    ASSERT_EQ(after.code, 0) << after.err.toStdString() << after.out.toStdString();
+    EXPECT_EQ(QDir(after.json().value(QStringLiteral("folder")).toString()), QDir(out + QStringLiteral("-2")));
+    EXPECT_FALSE(readings(out + QStringLiteral("-2")).isEmpty());
+    EXPECT_EQ(readings(out), firstReadings) << "the first run's readings changed";
+
+    const auto refused = run({QStringLiteral("--new-run"), QStringLiteral("--restart")});
+    EXPECT_NE(refused.code, 0);
+}

@@ -201,6 +201,39 @@ TEST_F(PlateRun, PauseWaitsForTheWellUnderWayThenResumeFinishes)
     EXPECT_NEAR(p(), 80, 1e-6);
 }
 
+// Paused after a well, nothing is under way: the well done is done, the next is "next",
+// not "current". And the pause is not running time: the ETA on Resume is the ETA paused
+// (it jumped from 2:42 to 4:28 when the pace was judged afresh from nothing).
+TEST_F(PlateRun, PausedNothingIsCurrentAndResumeKeepsTheEta)
+{
+    msg::Message error;
+    ASSERT_TRUE(runner.setPlan(planFor(samplingRecipe("A1:A12"), s.client), QStringLiteral("row"), &error));
+    ASSERT_TRUE(runner.start(logPath, &error)) << error;
+    // Enough done for the pace to count (the runner judges it after 2 s of planned time).
+    const double total = runner.plan().totalTimeS;
+    ASSERT_TRUE(waitFor([&] { return runner.progress().fraction * total > 3 && runner.state() == RunState::Running; }, 20000));
+    runner.pause();
+    ASSERT_TRUE(waitSettled(runner, 20000));
+    ASSERT_EQ(runner.state(), RunState::Paused) << problemText();
+    const jobs::RunProgress paused = runner.progress();
+    ASSERT_LT(paused.opsDone, paused.opsTotal);
+    EXPECT_EQ(paused.currentOp, -1) << "paused between wells, op " << paused.currentOp << " is shown as under way";
+    EXPECT_EQ(paused.nextOp, paused.opsDone) << "the op Resume begins with";
+    EXPECT_EQ(msg::debugString(paused.nextLabel), msg::debugString(runner.plan().ops[static_cast<std::size_t>(paused.opsDone)].label()));
+    double remainingPlannedS = 0;
+    for (int i = paused.opsDone; i < paused.opsTotal; ++i)
+        remainingPlannedS += runner.plan().ops[static_cast<std::size_t>(i)].durationS;
+    // The simulator runs faster than planned (its clock is sped up): the ETA says so.
+    ASSERT_LT(paused.etaS, 0.9 * remainingPlannedS) << "the run's pace is not what this test is about";
+    spin(300);  // a pause of any length
+    EXPECT_DOUBLE_EQ(runner.progress().etaS, paused.etaS) << "the ETA moves while nothing runs";
+    ASSERT_TRUE(runner.resume({}, &error)) << error;
+    const jobs::RunProgress resumed = runner.progress();
+    EXPECT_NEAR(resumed.etaS, paused.etaS, 0.05 * paused.etaS) << "the ETA jumped on Resume";
+    EXPECT_EQ(resumed.nextOp, -1);
+    ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Finished; }, 30000)) << problemText();
+}
+
 TEST_F(PlateRun, AbortStopsAtOnceThenLiftsTheTipAndTheLogResumes)
 {
     msg::Message error;

@@ -2,6 +2,7 @@
 // progress and time left, manual entry, results, before/after and the report.
 #include "widgets/calibration/calibration_screen.h"
 
+#include "device/files/accuracy/accuracy_run_folders.h"
 #include "device/files/accuracy/error_curve_csv.h"
 #include "device/jobs/accuracy/circle_telemetry.h"
 #include "device/jobs/accuracy/accuracy_runner.h"
@@ -168,11 +169,14 @@ bool CalibrationScreen::busy() const
         || (m_circle && (m_circle->isActive() || m_circle->state() == C::Paused));
 }
 
-bool CalibrationScreen::startAxis(const accuracyfiles::AccuracyTest& test)
+bool CalibrationScreen::startAxis(const accuracyfiles::AccuracyTest& test, const QString& into)
 {
     dev::Instrument* inst = cur();
     const std::string name = std::visit([](const auto& t) { return t.name; }, test);
-    const QString folder = QDir(m_folder->text()).filePath(QString::fromStdString(name));
+    const QString base = QDir(m_folder->text()).filePath(QString::fromStdString(name));
+    // The newest run of this test: a stopped one goes on there, a finished one is offered a
+    // run beside it (accuracy_run_folders.h).
+    const QString folder = into.isEmpty() ? accuracyfiles::latestRunFolder(base) : into;
     m_runner = std::make_unique<jobs::AccuracyRunner>(inst);
     motion::metrology::Problems problems;
     if (!m_runner->prepare(test, m_source.get(), folder, false, &problems)) {
@@ -223,8 +227,17 @@ bool CalibrationScreen::startAxis(const accuracyfiles::AccuracyTest& test)
     m_live->showTargets(axisTest ? motion::metrology::targetsOf(*axisTest) : std::vector<double>{});
     m_tabs->setCurrentIndex(0);
     if (m_runner->state() == jobs::AccuracyRunner::State::Finished) {
-        onAxisFinished();
-        return true;
+        onAxisFinished();  // its results on screen: the "before" of a run after it
+        if (!into.isEmpty() || m_source->kind() == jobs::ReadingKind::Interferometer)
+            return true;
+        // The operator ran it to measure again (after compensation): a new run beside the
+        // finished one, which stays as it is for the before/after comparison.
+        const QString next = accuracyfiles::nextRunFolder(base);
+        if (!confirm(tr("%1 holds a finished run of this test. Run the test again into %2? Both runs are kept, and "
+                        "Before / after compares the new one with this one.")
+                         .arg(QDir::toNativeSeparators(folder), QDir::toNativeSeparators(next))))
+            return true;
+        return startAxis(test, next);
     }
     onReading();
     emit accuracyRunStarting(m_runner.get(), m_runOn);
@@ -394,7 +407,8 @@ void CalibrationScreen::adoptAxisResult(const accuracyfiles::AccuracyResult& r, 
                                         const std::vector<motion::metrology::Reading>& readings, const QString& basePath,
                                         const msg::Message& source)
 {
-    if (m_latest && m_latest->axis == r.axis)
+    // The same run shown again (Run on its finished folder) is not its own "before".
+    if (m_latest && m_latest->axis == r.axis && m_latestBasePath != basePath)
         m_previous = m_latest;
     m_latest = r;
     m_latestTest = test;
@@ -551,6 +565,8 @@ void CalibrationScreen::previewTargets()
 {
     if ((m_runner && m_runner->isActive()) || (m_circle && m_circle->isActive()))
         return;
+    if (!m_form->entryProblem().isEmpty())
+        return;  // the targets shown stay those of the last valid entry
     const auto test = m_form->test();
     if (const auto* axisTest = std::get_if<motion::metrology::AxisTest>(&test))
         m_live->showTargets(motion::metrology::targetsOf(*axisTest));
@@ -563,9 +579,9 @@ void CalibrationScreen::updateRunUi()
     const bool circleActive = m_circle && m_circle->isActive();
     const bool active = axisActive || circleActive;
     const auto problems = m_form->problems();
-    QString formError;
+    QString formError = m_form->entryProblem();  // a field's own reason before what its NaN breaks
     for (const auto& p : problems)
-        if (!p.warning) {
+        if (!p.warning && formError.isEmpty()) {
             formError = p.path.empty() ? words::text(p.message) : QStringLiteral("%1: %2").arg(QString::fromStdString(p.path), words::text(p.message));
             break;
         }

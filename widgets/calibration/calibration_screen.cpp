@@ -421,6 +421,10 @@ bool CalibrationScreen::openTest(const QString& path)
 
 bool CalibrationScreen::saveTest(const QString& path)
 {
+    if (const QString typed = m_form->entryProblem(); !typed.isEmpty()) {
+        emit problem(tr("The test is not saved: %1").arg(typed));  // a file never gets a number nobody typed
+        return false;
+    }
     msg::Message error;
     if (!accuracyfiles::saveAccuracyTestFile(path, m_form->test(), &error)) {
         emit problem(words::text(error));

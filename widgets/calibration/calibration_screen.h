@@ -120,7 +120,9 @@ private:
     dev::Instrument* cur() const;
     std::unique_ptr<jobs::ReadingSource> makeSource(int axis, QString* error);
     bool runAxis();
-    bool startAxis(const accuracyfiles::AccuracyTest& test);
+    /// Runs `test` in its newest run folder (going on with a stopped run there), or in `into`.
+    /// A finished run there shows its results and offers a new run beside it.
+    bool startAxis(const accuracyfiles::AccuracyTest& test, const QString& into = {});
     bool runCircle();
     void onReading();
     void onAxisFinished();

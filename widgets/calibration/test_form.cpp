@@ -1,22 +1,21 @@
 #include "widgets/calibration/test_form.h"
 
 #include "widgets/calibration/wheel_guard.h"
+#include "widgets/common/number_field.h"
 
 #include <QCheckBox>
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QEvent>
 #include <QFormLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
 #include <QRegularExpression>
-#include <QSpinBox>
 #include <QStackedWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
-#include <type_traits>
 
 namespace ui {
 
@@ -26,27 +25,43 @@ using motion::metrology::XyLineTest;
 
 namespace {
 
-/// Spin boxes change only under the keyboard or a focused wheel (house rule).
+/// Combos change only under the keyboard or a focused wheel (house rule).
 template <typename Box>
 Box* quiet(Box* b)
 {
     WheelGuard::guard(b);
-    if constexpr (std::is_base_of_v<QAbstractSpinBox, Box>)
-        b->setKeyboardTracking(false);  // one change when the typing is done, not one a digit
     return b;
 }
 
+/// What a field holds for the definition: NaN (an int field: 0) while its text is not a
+/// valid number; entryProblem() says why and the run waits.
+double formNumber(const NumberField* f) { return f->valueOr(std::nan("")); }
+int formWhole(const NumberField* f) { return static_cast<int>(f->valueOr(0)); }
+
 } // namespace
 
-QDoubleSpinBox* AccuracyTestForm::number(const char* name, double min, double max, double value, int decimals, double step)
+// Typed numbers are kept as typed: a "-5" in Feed is shown as invalid with its reason and
+// holds the run, never turned into 5 (a spin box's validator dropped the minus).
+NumberField* AccuracyTestForm::number(const char* name, double min, double max, double value, int decimals)
 {
-    auto* b = quiet(new QDoubleSpinBox);
+    auto* b = new NumberField;
     b->setObjectName(QString::fromLatin1(name));
     b->setRange(min, max);
-    b->setDecimals(decimals);
-    b->setSingleStep(step);
+    b->setDisplay('g', std::max(10, decimals + 6));  // every digit a test file has: a rounded display would be saved back
     b->setValue(value);
-    connect(b, qOverload<double>(&QDoubleSpinBox::valueChanged), this, &AccuracyTestForm::changed);
+    connect(b, &NumberField::entryChanged, this, &AccuracyTestForm::changed);
+    return b;
+}
+
+NumberField* AccuracyTestForm::whole(const char* name, int min, int max, int value)
+{
+    auto* b = new NumberField;
+    if (name)
+        b->setObjectName(QString::fromLatin1(name));
+    b->setInteger(true);
+    b->setRange(min, max);
+    b->setValue(value);
+    connect(b, &NumberField::entryChanged, this, &AccuracyTestForm::changed);
     return b;
 }
 
@@ -77,6 +92,7 @@ QWidget* AccuracyTestForm::buildAxisPage()
     f->setContentsMargins(0, 0, 0, 0);
     auto row = [&](const char* source, QWidget* w) {
         auto* l = new QLabel;
+        l->setBuddy(w);  // a field's reason names it by its label
         m_worded.push_back({l, source});
         f->addRow(l, w);
     };
@@ -88,13 +104,9 @@ QWidget* AccuracyTestForm::buildAxisPage()
     m_targetMode = quiet(new QComboBox);
     m_targetMode->addItems({QString(), QString()});
     row(QT_TR_NOOP("Targets"), m_targetMode);
-    m_start = number("calibrationStart", -10000, 10000, 10, 3, 1);
-    m_end = number("calibrationEnd", -10000, 10000, 90, 3, 1);
-    m_count = quiet(new QSpinBox);
-    m_count->setObjectName(QStringLiteral("calibrationCount"));
-    m_count->setRange(2, motion::metrology::kMaxTargets);
-    m_count->setValue(9);
-    connect(m_count, qOverload<int>(&QSpinBox::valueChanged), this, &AccuracyTestForm::changed);
+    m_start = number("calibrationStart", -10000, 10000, 10, 3);
+    m_end = number("calibrationEnd", -10000, 10000, 90, 3);
+    m_count = whole("calibrationCount", 2, motion::metrology::kMaxTargets, 9);
     row(QT_TR_NOOP("From (mm)"), m_start);
     row(QT_TR_NOOP("To (mm)"), m_end);
     row(QT_TR_NOOP("Count"), m_count);
@@ -114,30 +126,26 @@ QWidget* AccuracyTestForm::buildAxisPage()
         m_list->setEnabled(i == 1);
         emit changed();
     });
-    m_cycles = quiet(new QSpinBox);
-    m_cycles->setObjectName(QStringLiteral("calibrationCycles"));
-    m_cycles->setRange(2, motion::metrology::kMaxCycles);
-    m_cycles->setValue(motion::metrology::kIsoCycles);
-    connect(m_cycles, qOverload<int>(&QSpinBox::valueChanged), this, &AccuracyTestForm::changed);
+    m_cycles = whole("calibrationCycles", 2, motion::metrology::kMaxCycles, motion::metrology::kIsoCycles);
     row(QT_TR_NOOP("Cycles"), m_cycles);
     m_bidirectional = new QCheckBox;
     m_bidirectional->setChecked(true);
     connect(m_bidirectional, &QCheckBox::toggled, this, &AccuracyTestForm::changed);
     row(QT_TR_NOOP("Directions"), m_bidirectional);
-    m_overrun = number("calibrationOverrun", 0, 100, 1, 3, 0.1);
+    m_overrun = number("calibrationOverrun", 0, 100, 1, 3);
     row(QT_TR_NOOP("Overrun (mm)"), m_overrun);
-    m_feed = number("calibrationFeed", 0.01, 1000, 5, 2, 1);
+    m_feed = number("calibrationFeed", 0.01, 1000, 5, 2);
     row(QT_TR_NOOP("Feed (mm/s)"), m_feed);
-    m_dwell = number("calibrationDwell", 0, 60, 0.5, 2, 0.1);
+    m_dwell = number("calibrationDwell", 0, 60, 0.5, 2);
     row(QT_TR_NOOP("Dwell (s)"), m_dwell);
-    m_settleTol = number("calibrationSettleTol", 0.01, 1000, 1, 2, 0.5);
+    m_settleTol = number("calibrationSettleTol", 0.01, 1000, 1, 2);
     row(QT_TR_NOOP("Settled within (µm)"), m_settleTol);
-    m_settleWindow = number("calibrationSettleWindow", 0, 60, 0.2, 2, 0.1);
+    m_settleWindow = number("calibrationSettleWindow", 0, 60, 0.2, 2);
     row(QT_TR_NOOP("… for (s)"), m_settleWindow);
-    m_settleTimeout = number("calibrationSettleTimeout", 0.01, 600, 10, 1, 1);
+    m_settleTimeout = number("calibrationSettleTimeout", 0.01, 600, 10, 1);
     row(QT_TR_NOOP("Settle timeout (s)"), m_settleTimeout);
-    m_tolA = number("calibrationTolA", 0, 100, 0, 4, 0.001);
-    m_tolR = number("calibrationTolR", 0, 100, 0, 4, 0.001);
+    m_tolA = number("calibrationTolA", 0, 100, 0, 4);
+    m_tolR = number("calibrationTolR", 0, 100, 0, 4);
     row(QT_TR_NOOP("Limit on A (mm)"), m_tolA);
     row(QT_TR_NOOP("Limit on R (mm)"), m_tolR);
     return page;
@@ -150,29 +158,24 @@ QWidget* AccuracyTestForm::buildXyPage()
     f->setContentsMargins(0, 0, 0, 0);
     auto row = [&](const char* source, QWidget* w) {
         auto* l = new QLabel;
+        l->setBuddy(w);  // a field's reason names it by its label
         m_worded.push_back({l, source});
         f->addRow(l, w);
     };
     // Seed 000's line: (30, 40) to (150, 200).
-    m_fromX = number("calibrationFromX", -10000, 10000, 30, 3, 1);
-    m_fromY = number("calibrationFromY", -10000, 10000, 40, 3, 1);
-    m_toX = number("calibrationToX", -10000, 10000, 150, 3, 1);
-    m_toY = number("calibrationToY", -10000, 10000, 200, 3, 1);
+    m_fromX = number("calibrationFromX", -10000, 10000, 30, 3);
+    m_fromY = number("calibrationFromY", -10000, 10000, 40, 3);
+    m_toX = number("calibrationToX", -10000, 10000, 150, 3);
+    m_toY = number("calibrationToY", -10000, 10000, 200, 3);
     row(QT_TR_NOOP("From X (mm)"), m_fromX);
     row(QT_TR_NOOP("From Y (mm)"), m_fromY);
     row(QT_TR_NOOP("To X (mm)"), m_toX);
     row(QT_TR_NOOP("To Y (mm)"), m_toY);
-    m_xyCount = quiet(new QSpinBox);
-    m_xyCount->setRange(2, motion::metrology::kMaxTargets);
-    m_xyCount->setValue(5);
-    connect(m_xyCount, qOverload<int>(&QSpinBox::valueChanged), this, &AccuracyTestForm::changed);
+    m_xyCount = whole("calibrationXyCount", 2, motion::metrology::kMaxTargets, 5);
     row(QT_TR_NOOP("Targets"), m_xyCount);
-    m_xyCycles = quiet(new QSpinBox);
-    m_xyCycles->setRange(2, motion::metrology::kMaxCycles);
-    m_xyCycles->setValue(5);
-    connect(m_xyCycles, qOverload<int>(&QSpinBox::valueChanged), this, &AccuracyTestForm::changed);
+    m_xyCycles = whole("calibrationXyCycles", 2, motion::metrology::kMaxCycles, 5);
     row(QT_TR_NOOP("Cycles"), m_xyCycles);
-    m_xyFeed = number("calibrationXyFeed", 0.01, 1000, 20, 2, 1);
+    m_xyFeed = number("calibrationXyFeed", 0.01, 1000, 20, 2);
     row(QT_TR_NOOP("Feed (mm/s)"), m_xyFeed);
     return page;
 }
@@ -184,14 +187,15 @@ QWidget* AccuracyTestForm::buildCirclePage()
     f->setContentsMargins(0, 0, 0, 0);
     auto row = [&](const char* source, QWidget* w) {
         auto* l = new QLabel;
+        l->setBuddy(w);  // a field's reason names it by its label
         m_worded.push_back({l, source});
         f->addRow(l, w);
     };
-    m_cx = number("calibrationCentreX", -10000, 10000, 50, 3, 1);
-    m_cy = number("calibrationCentreY", -10000, 10000, 50, 3, 1);
-    m_radius = number("calibrationRadius", 0.01, 1000, 20, 3, 1);
-    m_circleFeed = number("calibrationCircleFeed", 0.01, 1000, 5, 2, 1);
-    m_lead = number("calibrationLead", 0, 180, 45, 1, 5);
+    m_cx = number("calibrationCentreX", -10000, 10000, 50, 3);
+    m_cy = number("calibrationCentreY", -10000, 10000, 50, 3);
+    m_radius = number("calibrationRadius", 0.01, 1000, 20, 3);
+    m_circleFeed = number("calibrationCircleFeed", 0.01, 1000, 5, 2);
+    m_lead = number("calibrationLead", 0, 180, 45, 1);
     row(QT_TR_NOOP("Centre X (mm)"), m_cx);
     row(QT_TR_NOOP("Centre Y (mm)"), m_cy);
     row(QT_TR_NOOP("Radius (mm)"), m_radius);
@@ -201,12 +205,9 @@ QWidget* AccuracyTestForm::buildCirclePage()
     m_directions->addItems({QString(), QString(), QString()});
     connect(m_directions, qOverload<int>(&QComboBox::currentIndexChanged), this, &AccuracyTestForm::changed);
     row(QT_TR_NOOP("Directions"), m_directions);
-    m_samples = quiet(new QSpinBox);
-    m_samples->setRange(8, 100000);
-    m_samples->setValue(360);
-    connect(m_samples, qOverload<int>(&QSpinBox::valueChanged), this, &AccuracyTestForm::changed);
+    m_samples = whole("calibrationSamples", 8, 100000, 360);
     row(QT_TR_NOOP("Samples a turn"), m_samples);
-    m_tolG = number("calibrationTolG", 0, 100, 0, 4, 0.001);
+    m_tolG = number("calibrationTolG", 0, 100, 0, 4);
     row(QT_TR_NOOP("Limit on G (mm)"), m_tolG);
     return page;
 }
@@ -264,7 +265,7 @@ accuracyfiles::AccuracyTest AccuracyTestForm::test() const
         t.axis = m_axis->currentText().toStdString();
         t.name = m_name.empty() ? "accuracy-" + t.axis : m_name;
         if (m_targetMode->currentIndex() == 0) {
-            t.grid = motion::metrology::TargetGrid{m_start->value(), m_end->value(), m_count->value(), m_irregular->isChecked()};
+            t.grid = motion::metrology::TargetGrid{formNumber(m_start), formNumber(m_end), formWhole(m_count), m_irregular->isChecked()};
         } else {
             for (const QString& w : m_list->text().split(QRegularExpression(QStringLiteral("[,;\\s]+")), Qt::SkipEmptyParts)) {
                 bool ok = false;
@@ -272,41 +273,41 @@ accuracyfiles::AccuracyTest AccuracyTestForm::test() const
                 t.targetsMm.push_back(ok ? v : std::nan(""));
             }
         }
-        t.cycles = m_cycles->value();
+        t.cycles = formWhole(m_cycles);
         t.bidirectional = m_bidirectional->isChecked();
-        t.overrunMm = m_overrun->value();
-        t.feedMmS = m_feed->value();
-        t.dwellS = m_dwell->value();
-        t.settle = {m_settleTol->value(), m_settleWindow->value(), m_settleTimeout->value()};
-        if (m_tolA->value() > 0)
-            t.tolerances.aMm = m_tolA->value();
-        if (m_tolR->value() > 0)
-            t.tolerances.rMm = m_tolR->value();
+        t.overrunMm = formNumber(m_overrun);
+        t.feedMmS = formNumber(m_feed);
+        t.dwellS = formNumber(m_dwell);
+        t.settle = {formNumber(m_settleTol), formNumber(m_settleWindow), formNumber(m_settleTimeout)};
+        if (formNumber(m_tolA) > 0)
+            t.tolerances.aMm = formNumber(m_tolA);
+        if (formNumber(m_tolR) > 0)
+            t.tolerances.rMm = formNumber(m_tolR);
         return t;
     }
     case Kind::XyLine: {
         XyLineTest t;
         t.name = m_name.empty() ? "xy-line" : m_name;
-        t.fromMm = motion::metrology::XyPoint{m_fromX->value(), m_fromY->value()};
-        t.toMm = motion::metrology::XyPoint{m_toX->value(), m_toY->value()};
-        t.count = m_xyCount->value();
-        t.cycles = m_xyCycles->value();
-        t.feedMmS = m_xyFeed->value();
+        t.fromMm = motion::metrology::XyPoint{formNumber(m_fromX), formNumber(m_fromY)};
+        t.toMm = motion::metrology::XyPoint{formNumber(m_toX), formNumber(m_toY)};
+        t.count = formWhole(m_xyCount);
+        t.cycles = formWhole(m_xyCycles);
+        t.feedMmS = formNumber(m_xyFeed);
         return t;
     }
     case Kind::Circle: break;
     }
     CircularTest t;
     t.name = m_name.empty() ? "circle" : m_name;
-    t.centreMm = {m_cx->value(), m_cy->value()};
-    t.radiusMm = m_radius->value();
-    t.feedMmS = m_circleFeed->value();
-    t.leadArcDeg = m_lead->value();
-    t.samplesPerRevolution = m_samples->value();
+    t.centreMm = {formNumber(m_cx), formNumber(m_cy)};
+    t.radiusMm = formNumber(m_radius);
+    t.feedMmS = formNumber(m_circleFeed);
+    t.leadArcDeg = formNumber(m_lead);
+    t.samplesPerRevolution = formWhole(m_samples);
     t.counterClockwise = m_directions->currentIndex() != 2;
     t.clockwise = m_directions->currentIndex() != 1;
-    if (m_tolG->value() > 0)
-        t.maxGMm = m_tolG->value();
+    if (formNumber(m_tolG) > 0)
+        t.maxGMm = formNumber(m_tolG);
     return t;
 }
 
@@ -376,6 +377,8 @@ void AccuracyTestForm::fill(const accuracyfiles::AccuracyTest& test)
     }
     m_pages->setCurrentIndex(m_kind->currentIndex());
 }
+
+QString AccuracyTestForm::entryProblem() const { return NumberField::firstProblemUnder(m_pages->currentWidget()); }
 
 motion::metrology::Problems AccuracyTestForm::problems() const
 {

@@ -14,13 +14,13 @@
 
 class QCheckBox;
 class QComboBox;
-class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
-class QSpinBox;
 class QStackedWidget;
 
 namespace ui {
+
+class NumberField;
 
 class AccuracyTestForm : public QWidget {
     Q_OBJECT
@@ -35,6 +35,9 @@ public:
     /// Axis letters the instrument has (the axis combo offers these).
     void setAxes(const QStringList& letters);
     motion::metrology::Problems problems() const;
+    /// The first typed number that is not valid ("Feed (mm/s) must be at least 0.01, not -5"),
+    /// empty when every shown field holds a number: the run waits for it.
+    QString entryProblem() const;
     /// Read-only while a run uses the definition.
     void setEditable(bool editable);
 
@@ -50,27 +53,28 @@ private:
     QWidget* buildAxisPage();
     QWidget* buildXyPage();
     QWidget* buildCirclePage();
-    QDoubleSpinBox* number(const char* name, double min, double max, double value, int decimals, double step);
+    NumberField* number(const char* name, double min, double max, double value, int decimals);
+    NumberField* whole(const char* name, int min, int max, int value);
 
     QComboBox* m_kind;
     QStackedWidget* m_pages;
     // Axis test.
     QComboBox* m_axis;
     QComboBox* m_targetMode;    ///< grid or list
-    QDoubleSpinBox *m_start, *m_end;
-    QSpinBox* m_count;
+    NumberField *m_start, *m_end;
+    NumberField* m_count;
     QCheckBox* m_irregular;
     QLineEdit* m_list;
-    QSpinBox* m_cycles;
+    NumberField* m_cycles;
     QCheckBox* m_bidirectional;
-    QDoubleSpinBox *m_overrun, *m_feed, *m_dwell, *m_settleTol, *m_settleWindow, *m_settleTimeout;
-    QDoubleSpinBox *m_tolA, *m_tolR;
+    NumberField *m_overrun, *m_feed, *m_dwell, *m_settleTol, *m_settleWindow, *m_settleTimeout;
+    NumberField *m_tolA, *m_tolR;
     // XY line.
-    QDoubleSpinBox *m_fromX, *m_fromY, *m_toX, *m_toY, *m_xyFeed;
-    QSpinBox *m_xyCount, *m_xyCycles;
+    NumberField *m_fromX, *m_fromY, *m_toX, *m_toY, *m_xyFeed;
+    NumberField *m_xyCount, *m_xyCycles;
     // Circle.
-    QDoubleSpinBox *m_cx, *m_cy, *m_radius, *m_circleFeed, *m_lead, *m_tolG;
-    QSpinBox* m_samples;
+    NumberField *m_cx, *m_cy, *m_radius, *m_circleFeed, *m_lead, *m_tolG;
+    NumberField* m_samples;
     QComboBox* m_directions;
     std::string m_name;
     /// Form labels and their source texts (QT_TR_NOOP), re-worded by retranslateUi().

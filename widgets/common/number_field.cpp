@@ -1,5 +1,7 @@
 #include "widgets/common/number_field.h"
 
+#include <QEvent>
+#include <QLabel>
 #include <QLocale>
 
 #include <cmath>
@@ -22,6 +24,12 @@ void NumberField::setRange(std::optional<double> minimum, std::optional<double> 
 void NumberField::setInteger(bool integer)
 {
     m_integer = integer;
+    check();
+}
+
+void NumberField::setEmptyAllowed(bool allowed)
+{
+    m_emptyAllowed = allowed;
     check();
 }
 
@@ -50,18 +58,88 @@ void NumberField::setValue(double v)
 
 std::optional<double> NumberField::value() const { return m_value; }
 
+void NumberField::setUnit(const QString& unit)
+{
+    if (unit.isEmpty() && !m_unit)
+        return;
+    if (!m_unit) {
+        m_unit = new QLabel(this);
+        m_unit->setObjectName(QStringLiteral("numberFieldUnit"));
+        m_unit->setAttribute(Qt::WA_TransparentForMouseEvents);  // a click there still places the cursor
+        m_unit->setStyleSheet(QStringLiteral("color: #666; background: transparent;"));
+    }
+    m_unit->setText(unit);
+    placeUnit();
+}
+
+QString NumberField::unit() const { return m_unit ? m_unit->text() : QString(); }
+
+void NumberField::placeUnit()
+{
+    if (!m_unit)
+        return;
+    const int w = m_unit->text().isEmpty() ? 0 : fontMetrics().horizontalAdvance(m_unit->text()) + 6;
+    setTextMargins(0, 0, w, 0);
+    m_unit->setGeometry(width() - w - 2, 0, w, height());
+    m_unit->setVisible(w > 0);
+}
+
+void NumberField::resizeEvent(QResizeEvent* event)
+{
+    QLineEdit::resizeEvent(event);
+    placeUnit();
+}
+
+void NumberField::changeEvent(QEvent* event)
+{
+    QLineEdit::changeEvent(event);
+    if (event->type() == QEvent::LanguageChange)
+        check();  // the reason in the language now in force
+    else if (event->type() == QEvent::FontChange)
+        placeUnit();
+}
+
+QString NumberField::shownName() const
+{
+    if (!m_name.isEmpty())
+        return m_name;
+    if (const QWidget* p = parentWidget())
+        for (const QLabel* l : p->findChildren<QLabel*>())
+            if (l->buddy() == this && !l->text().isEmpty()) {
+                QString t = l->text();
+                t.remove(QLatin1Char('&'));
+                while (t.endsWith(QLatin1Char(':')) || t.endsWith(QChar(0xFF1A)))
+                    t.chop(1);
+                return t.trimmed();
+            }
+    return tr("the value");
+}
+
+QString NumberField::firstProblemUnder(const QWidget* root)
+{
+    for (const NumberField* f : root->findChildren<NumberField*>()) {
+        if (f->isValid() || !f->isVisibleTo(root) || !f->isEnabled())
+            continue;
+        const QString name = f->shownName();
+        return f->problem().contains(name) ? f->problem() : tr("%1: %2").arg(name, f->problem());
+    }
+    return {};
+}
+
 QString NumberField::limit(double v) const { return m_integer ? QLocale().toString(static_cast<qlonglong>(std::llround(v))) : QLocale().toString(v, 'g', 6); }
 
 void NumberField::check()
 {
-    const QString name = m_name.isEmpty() ? tr("the value") : m_name;
+    const QString name = shownName();
     const QString t = text().trimmed();
     bool ok = false;
     double v = QLocale().toDouble(t, &ok);
     if (!ok)
         v = QLocale::c().toDouble(t, &ok);  // "0.5" typed under a locale with a decimal comma
     QString problem;
-    if (t.isEmpty())
+    if (t.isEmpty() && m_emptyAllowed)
+        ok = false;  // valid, and no value
+    else if (t.isEmpty())
         problem = tr("%1 is empty: type a number").arg(name);
     else if (!ok || !std::isfinite(v))
         problem = tr("“%1” is not a number").arg(t);
@@ -72,7 +150,7 @@ void NumberField::check()
     else if (m_max && v > *m_max)
         problem = tr("%1 must be at most %2, not %3").arg(name, limit(*m_max), t);
     m_problem = problem;
-    m_value = problem.isEmpty() ? std::optional<double>(v) : std::nullopt;
+    m_value = problem.isEmpty() && ok ? std::optional<double>(v) : std::nullopt;
     setStyleSheet(problem.isEmpty() ? QString() : QStringLiteral("QLineEdit { background: #fdd; border: 1px solid #b00020; }"));
     setToolTip(problem.isEmpty() ? m_help : problem);
     setProperty("invalid", !problem.isEmpty());

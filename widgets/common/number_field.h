@@ -7,6 +7,8 @@
 // until it is fixed. Whoever sends the value disables its action while invalid.
 #include <QLineEdit>
 
+class QLabel;
+
 #include <optional>
 
 namespace ui {
@@ -20,36 +22,59 @@ public:
     void setRange(std::optional<double> minimum, std::optional<double> maximum);
     /// Only whole numbers are valid.
     void setInteger(bool integer);
+    /// An empty field is valid, with no value (a target not typed yet); by default it is not.
+    void setEmptyAllowed(bool allowed);
     /// Digits after the point when setValue() writes a number (significant digits with 'g').
     void setDisplay(char format, int precision);
     /// What the field is for, in the reason ("Kp", "depth"); empty: "the value".
     void setFieldName(const QString& name);
     /// Text appended to the tooltip while the entry is valid (what the field means).
     void setHelp(const QString& help);
+    /// A unit shown at the field's right end (" mm", " µm"), outside the text: what is
+    /// typed stays the number alone. Empty: none.
+    void setUnit(const QString& unit);
+    QString unit() const;
 
     /// Writes `v` as text, even outside the range (a file's value is shown as it is, marked invalid).
     void setValue(double v);
     std::optional<double> value() const;
+    /// The value, or `fallback` while the entry is invalid (for previews; an action that
+    /// sends the value is disabled instead).
+    double valueOr(double fallback) const { return m_value.value_or(fallback); }
     bool isValid() const { return m_problem.isEmpty(); }
     /// Why the entry is invalid, for people; empty while valid.
     QString problem() const { return m_problem; }
+
+    /// The first invalid field shown under `root` (in creation order), as its reason
+    /// preceded by the field's name where the reason does not name it; empty if none.
+    static QString firstProblemUnder(const QWidget* root);
 
 signals:
     /// After every change of the text (typed or set): valid or not, and the value if valid.
     void entryChanged(bool valid);
 
+protected:
+    void resizeEvent(QResizeEvent* event) override;
+    void changeEvent(QEvent* event) override;
+
 private:
     void check();
+    /// The name the reason gives: setFieldName's, else the text of the label that is
+    /// this field's buddy (a form row's label), else "the value".
+    QString shownName() const;
+    void placeUnit();
     QString limit(double v) const;
 
     std::optional<double> m_min, m_max;
     bool m_integer = false;
+    bool m_emptyAllowed = false;
     char m_format = 'g';
     int m_precision = 6;
     QString m_name;
     QString m_help;
     QString m_problem;
     std::optional<double> m_value;
+    QLabel* m_unit = nullptr;
 };
 
 } // namespace ui

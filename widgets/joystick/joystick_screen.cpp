@@ -3,11 +3,11 @@
 #include "device/client/joystick_driver.h"
 #include "widgets/joystick/joystick_pad.h"
 #include "widgets/joystick/travel_view.h"
+#include "widgets/common/number_field.h"
 #include "widgets/common/reading_text.h"
 
 #include "widgets/wording/wording.h"
 
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -16,7 +16,6 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QSlider>
-#include <QSpinBox>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -63,21 +62,25 @@ JoystickScreen::JoystickScreen(dev::Instrument* client, QWidget* parent)
 
     auto* settings = new QGroupBox(tr("Response"), this);
     auto* form = new QFormLayout(settings);
-    m_maxSpeed = new QDoubleSpinBox(settings);
+    // Kept as typed: "-5" or "1e9" is shown as invalid with its reason, never turned into
+    // another speed; the stick goes on with the settings last valid.
+    m_maxSpeed = new NumberField(settings);
     m_maxSpeed->setObjectName(QStringLiteral("joystickMaxSpeed"));
     m_maxSpeed->setRange(0.01, 1000);
-    m_maxSpeed->setDecimals(2);
-    m_maxSpeed->setSuffix(tr(" mm/s"));
-    m_maxSpeed->setToolTip(tr("Speed at full deflection (each axis is also held to its own maximum)"));
-    m_deadband = new QSpinBox(settings);
+    m_maxSpeed->setDisplay('g', 10);
+    m_maxSpeed->setUnit(tr(" mm/s"));
+    m_maxSpeed->setHelp(tr("Speed at full deflection (each axis is also held to its own maximum)"));
+    m_deadband = new NumberField(settings);
+    m_deadband->setObjectName(QStringLiteral("joystickDeadband"));
     m_deadband->setRange(0, 50);
-    m_deadband->setSuffix(tr(" %"));
-    m_deadband->setToolTip(tr("Deflection around the centre that does nothing"));
-    m_expo = new QDoubleSpinBox(settings);
+    m_deadband->setInteger(true);
+    m_deadband->setUnit(tr(" %"));
+    m_deadband->setHelp(tr("Deflection around the centre that does nothing"));
+    m_expo = new NumberField(settings);
+    m_expo->setObjectName(QStringLiteral("joystickExpo"));
     m_expo->setRange(0, 1);
-    m_expo->setSingleStep(0.1);
-    m_expo->setDecimals(2);
-    m_expo->setToolTip(tr("0: speed grows linearly with deflection; 1: cubically (finer near the centre)"));
+    m_expo->setDisplay('g', 10);
+    m_expo->setHelp(tr("0: speed grows linearly with deflection; 1: cubically (finer near the centre)"));
     form->addRow(tr("Max speed"), m_maxSpeed);
     form->addRow(tr("Dead-band"), m_deadband);
     form->addRow(tr("Expo"), m_expo);
@@ -111,10 +114,11 @@ JoystickScreen::JoystickScreen(dev::Instrument* client, QWidget* parent)
     connect(m_z, &QSlider::valueChanged, this, &JoystickScreen::apply);
     connect(m_z, &QSlider::sliderReleased, this, [this] { m_z->setValue(0); });
     connect(clear, &QPushButton::clicked, m_travel, &TravelView::clearTrail);
-    for (auto* box : {static_cast<QAbstractSpinBox*>(m_maxSpeed), static_cast<QAbstractSpinBox*>(m_deadband),
-                      static_cast<QAbstractSpinBox*>(m_expo)})
-        connect(box, &QAbstractSpinBox::editingFinished, this, [this] {
-            m_pad->setDeadband(m_deadband->value() / 100.0);
+    for (NumberField* box : {m_maxSpeed, m_deadband, m_expo})
+        connect(box, &QLineEdit::editingFinished, this, [this] {
+            if (m_maxSpeed->isValid() && m_deadband->isValid() && m_expo->isValid())
+                m_inForce = this->settings();
+            m_pad->setDeadband(m_inForce.shaping.deadband);
             apply();
         });
     connect(m_client, &dev::Instrument::identified, this, &JoystickScreen::rebuild);
@@ -137,15 +141,18 @@ JoystickScreen::~JoystickScreen() { stopAll(); }
 
 JoystickSettings JoystickScreen::settings() const
 {
-    JoystickSettings s;
-    s.maxSpeedMmS = m_maxSpeed->value();
-    s.shaping.deadband = m_deadband->value() / 100.0;
-    s.shaping.expo = m_expo->value();
+    JoystickSettings s = m_inForce;
+    if (m_maxSpeed->isValid() && m_deadband->isValid() && m_expo->isValid()) {
+        s.maxSpeedMmS = m_maxSpeed->valueOr(s.maxSpeedMmS);
+        s.shaping.deadband = m_deadband->valueOr(0) / 100.0;
+        s.shaping.expo = m_expo->valueOr(s.shaping.expo);
+    }
     return s;
 }
 
 void JoystickScreen::setSettings(const JoystickSettings& s)
 {
+    m_inForce = s;
     m_maxSpeed->setValue(s.maxSpeedMmS);
     m_deadband->setValue(static_cast<int>(std::lround(s.shaping.deadband * 100)));
     m_expo->setValue(s.shaping.expo);
@@ -160,9 +167,14 @@ void JoystickScreen::rebuild()
     m_zAxis = id.axisIndex(QLatin1Char('Z'));
     m_z->setVisible(m_zAxis >= 0);
     m_zLabel->setVisible(m_zAxis >= 0);
-    if (id.axes.size() >= 2) {
-        double vmax = std::min(id.axes[0].maxSpeed, id.axes[1].maxSpeed);
-        m_maxSpeed->setMaximum(vmax);
+    if (id.axes.size() >= 2 && std::min(id.axes[0].maxSpeed, id.axes[1].maxSpeed) > 0.01) {
+        const double vmax = std::min(id.axes[0].maxSpeed, id.axes[1].maxSpeed);
+        m_maxSpeed->setRange(0.01, vmax);
+        if (m_maxSpeed->valueOr(0) > vmax) {
+            // The instrument is slower than the setting: shown at its maximum, as in force.
+            m_maxSpeed->setValue(vmax);
+            m_inForce.maxSpeedMmS = vmax;
+        }
     }
     refresh();
 }

@@ -12,10 +12,8 @@
 
 #include <map>
 
-class QDoubleSpinBox;
 class QLabel;
 class QSlider;
-class QSpinBox;
 
 namespace dev {
 class JoystickDriver;
@@ -24,6 +22,7 @@ class JoystickDriver;
 namespace ui {
 
 class JoystickPad;
+class NumberField;
 class TravelView;
 
 struct JoystickSettings {
@@ -74,9 +73,12 @@ private:
     JoystickPad* m_pad;
     QSlider* m_z;
     QLabel* m_zLabel;
-    QDoubleSpinBox* m_maxSpeed;
-    QSpinBox* m_deadband;
-    QDoubleSpinBox* m_expo;
+    NumberField* m_maxSpeed;
+    NumberField* m_deadband;  ///< %
+    NumberField* m_expo;
+    /// What the stick answers with: set, or the fields' values when last all valid (Enter or
+    /// leaving a field). An invalid field shows its reason and leaves these as they were.
+    JoystickSettings m_inForce;
     QLabel* m_readout;
     QLabel* m_speed;
     std::map<int, double> m_wish;  ///< axis → velocity the stick asks for (mm/s)

@@ -12,6 +12,9 @@ ContourPlot::ContourPlot(QWidget* parent) : QCustomPlot(parent)
     m_graph->setName(tr("contour error"));
     m_graph->setPen(QPen(QColor(0x1f, 0x77, 0xb4), 1));
     m_graph->setAdaptiveSampling(true);
+    // Each judged sample marked: a sparse run (a controller polled at 10 Hz) shows how few
+    // points its line joins.
+    m_graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, 3));
     m_worst = addGraph();
     m_worst->setName(tr("largest"));
     m_worst->setLineStyle(QCPGraph::lsNone);

@@ -1,16 +1,19 @@
 #include "widgets/patterns/pattern_form.h"
 
+#include "widgets/common/number_field.h"
 #include "widgets/wording/wording.h"
 
 #include <QCheckBox>
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QStackedWidget>
 #include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
 
 namespace ui {
 
@@ -49,11 +52,12 @@ PatternForm::PatternForm(QWidget* parent) : QWidget(parent)
     m_shape->setObjectName(QStringLiteral("patternShape"));
     for (PatternShape s : motion::plans::kAllShapes)
         m_shape->addItem(shapeTitle(s), QString::fromLatin1(motion::plans::shapeName(s)));
-    m_feed = new QDoubleSpinBox(this);
+    m_feed = new NumberField(this);
+    m_feed->setObjectName(QStringLiteral("feed_mm_s"));
     m_feed->setRange(0.001, 1000);
-    m_feed->setDecimals(3);
-    m_feed->setSuffix(tr(" mm/s"));
-    m_feed->setToolTip(tr("Path speed (feed): how fast the pattern is run along its length"));
+    m_feed->setDisplay('g', 10);
+    m_feed->setUnit(tr(" mm/s"));
+    m_feed->setHelp(tr("Path speed (feed): how fast the pattern is run along its length"));
     m_fields.insert(QStringLiteral("feed_mm_s"), m_feed);
     common->addRow(tr("Name"), m_name);
     common->addRow(tr("Shape"), m_shape);
@@ -63,10 +67,12 @@ PatternForm::PatternForm(QWidget* parent) : QWidget(parent)
     zr->setContentsMargins(0, 0, 0, 0);
     m_useZ = new QCheckBox(tr("work at Z"), m_zRow);
     m_useZ->setToolTip(tr("Z goes to this height once X and Y are at the start (seed 000: Z follows XY)"));
-    m_z = new QDoubleSpinBox(m_zRow);
+    m_z = new NumberField(m_zRow);
+    m_z->setObjectName(QStringLiteral("z_mm"));
+    m_z->setFieldName(tr("Z"));
     m_z->setRange(-10000, 10000);
-    m_z->setDecimals(3);
-    m_z->setSuffix(tr(" mm"));
+    m_z->setDisplay('g', 10);
+    m_z->setUnit(tr(" mm"));
     m_z->setEnabled(false);
     zr->addWidget(m_useZ);
     zr->addWidget(m_z, 1);
@@ -97,8 +103,8 @@ PatternForm::PatternForm(QWidget* parent) : QWidget(parent)
             if (!m_loading)
                 emit changed();
         });
-    for (QDoubleSpinBox* b : {m_feed, m_z})
-        connect(b, &QDoubleSpinBox::valueChanged, this, [this] {
+    for (NumberField* b : {m_feed, m_z})
+        connect(b, &NumberField::entryChanged, this, [this] {
             if (!m_loading) {
                 showProblems();
                 emit changed();
@@ -108,18 +114,19 @@ PatternForm::PatternForm(QWidget* parent) : QWidget(parent)
     setPattern(Pattern{});
 }
 
-QDoubleSpinBox* PatternForm::number(const QString& name, double lo, double hi, int decimals, const QString& suffix,
-                                    const QString& tip)
+// Kept as typed: "-5" in Radius is shown as invalid with its reason and nothing is planned
+// from it, never turned into 5 by a spin box that cannot take the minus.
+NumberField* PatternForm::number(const QString& name, double lo, double hi, int decimals, const QString& suffix,
+                                 const QString& tip)
 {
-    auto* b = new QDoubleSpinBox(this);
+    auto* b = new NumberField(this);
     b->setObjectName(name);
     b->setRange(lo, hi);
-    b->setDecimals(decimals);
-    b->setSuffix(suffix);
-    b->setToolTip(tip);
-    b->setKeyboardTracking(false);
+    b->setDisplay('g', std::max(10, decimals + 6));  // every digit a pattern file has
+    b->setUnit(suffix);
+    b->setHelp(tip);
     m_fields.insert(name, b);
-    connect(b, &QDoubleSpinBox::valueChanged, this, [this] {
+    connect(b, &NumberField::entryChanged, this, [this] {
         if (!m_loading) {
             showProblems();
             emit changed();
@@ -134,9 +141,14 @@ QWidget* PatternForm::pointRow(const QString& name, const QString& tip)
     auto* h = new QHBoxLayout(w);
     h->setContentsMargins(0, 0, 0, 0);
     h->addWidget(new QLabel(tr("X", "axis"), w));
-    h->addWidget(number(name + QStringLiteral(".x"), -10000, 10000, 3, tr(" mm"), tip), 1);
-    h->addWidget(new QLabel(tr("Y", "axis"), w));
-    h->addWidget(number(name + QStringLiteral(".y"), -10000, 10000, 3, tr(" mm"), tip), 1);
+    auto* x = number(name + QStringLiteral(".x"), -10000, 10000, 3, tr(" mm"), tip);
+    auto* y = number(name + QStringLiteral(".y"), -10000, 10000, 3, tr(" mm"), tip);
+    static_cast<QLabel*>(h->itemAt(0)->widget())->setBuddy(x);  // a reason names the axis typed in
+    h->addWidget(x, 1);
+    auto* yLabel = new QLabel(tr("Y", "axis"), w);
+    yLabel->setBuddy(y);
+    h->addWidget(yLabel);
+    h->addWidget(y, 1);
     return w;
 }
 
@@ -232,13 +244,16 @@ Pattern PatternForm::pattern() const
     Pattern p;
     p.name = m_name->text().toStdString();
     p.shape = motion::plans::kAllShapes[std::max(0, m_shape->currentIndex())];
-    p.feedMmS = m_feed->value();
+    // A field whose text is not a valid number gives NaN: the validator refuses it, so nothing
+    // is planned, run or saved from a number nobody typed.
+    const double nan = std::nan("");
+    p.feedMmS = m_feed->valueOr(nan);
     if (m_useZ->isChecked() && m_zAvailable)
-        p.zMm = m_z->value();
-    auto n = [&](PatternShape s, const char* f) { return m_fields.value(key(s, f))->value(); };
+        p.zMm = m_z->valueOr(nan);
+    auto n = [&](PatternShape s, const char* f) { return m_fields.value(key(s, f))->valueOr(nan); };
     auto pt = [&](PatternShape s, const char* f) {
-        return motion::path::Vec2{m_fields.value(key(s, f) + QStringLiteral(".x"))->value(),
-                                  m_fields.value(key(s, f) + QStringLiteral(".y"))->value()};
+        return motion::path::Vec2{m_fields.value(key(s, f) + QStringLiteral(".x"))->valueOr(nan),
+                                  m_fields.value(key(s, f) + QStringLiteral(".y"))->valueOr(nan)};
     };
     auto cw = [&](PatternShape s, const char* f) { return m_choices.value(key(s, f))->currentData().toBool(); };
     using S = PatternShape;
@@ -316,9 +331,13 @@ void PatternForm::setPattern(const Pattern& p)
     emit changed();
 }
 
+QString PatternForm::entryProblem() const { return NumberField::firstProblemUnder(this); }
+
 void PatternForm::showProblems()
 {
     QStringList lines;
+    if (const QString typed = entryProblem(); !typed.isEmpty())
+        lines << typed;
     for (const auto& q : motion::plans::validate(pattern()))
         lines << QStringLiteral("%1: %2").arg(QString::fromStdString(q.field), words::text(q.message));
     m_problems->setText(lines.join(QLatin1Char('\n')));

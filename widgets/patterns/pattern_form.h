@@ -9,13 +9,14 @@
 
 class QCheckBox;
 class QComboBox;
-class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
 class QFormLayout;
 class QStackedWidget;
 
 namespace ui {
+
+class NumberField;
 
 class PatternForm : public QWidget {
     Q_OBJECT
@@ -26,16 +27,19 @@ public:
     void setPattern(const motion::plans::Pattern& p);
     /// Shows the Z height row (instruments whose Z follows XY).
     void setZAvailable(bool available);
-    /// The spin box of a field ("radius_mm", "feed_mm_s"; points as "center_mm.x"), for tests.
-    QDoubleSpinBox* field(const QString& name) const { return m_fields.value(name); }
+    /// The first typed number shown that is not valid, with its reason; empty when all are.
+    /// pattern() gives NaN for such a field, which no plan takes.
+    QString entryProblem() const;
+    /// The entry of a field ("radius_mm", "feed_mm_s"; points as "center_mm.x"), for tests.
+    NumberField* field(const QString& name) const { return m_fields.value(name); }
     QComboBox* shapeBox() const { return m_shape; }
 
 signals:
     void changed();
 
 private:
-    QDoubleSpinBox* number(const QString& name, double lo, double hi, int decimals, const QString& suffix,
-                           const QString& tip = {});
+    NumberField* number(const QString& name, double lo, double hi, int decimals, const QString& suffix,
+                        const QString& tip = {});
     QWidget* pointRow(const QString& name, const QString& tip);
     QWidget* page(motion::plans::PatternShape shape);
     void showProblems();
@@ -43,12 +47,12 @@ private:
     QComboBox* m_shape;
     QLineEdit* m_name;
     QStackedWidget* m_pages;
-    QDoubleSpinBox* m_feed;
+    NumberField* m_feed;
     QCheckBox* m_useZ;
-    QDoubleSpinBox* m_z;
+    NumberField* m_z;
     QWidget* m_zRow;
     QFormLayout* m_common;
-    QHash<QString, QDoubleSpinBox*> m_fields;
+    QHash<QString, NumberField*> m_fields;
     QHash<QString, QComboBox*> m_choices;  ///< "direction.circle", "passes_along"
     QLabel* m_problems;
     bool m_loading = false;

@@ -29,9 +29,14 @@ PatternPreview::PatternPreview(QWidget* parent) : QCustomPlot(parent)
     m_commanded = new QCPCurve(xAxis, yAxis);
     m_commanded->setName(tr("commanded"));
     m_commanded->setPen(QPen(QColor(0x90, 0x90, 0x90), 1, Qt::DashLine));
+    // The measured XY is what telemetry sampled: drawn as its samples, not joined. A line
+    // through them is no path the machine took (10 Hz on a small circle cut chords 0.12 mm
+    // inside it); at a fast rate the markers run together into the trace anyway.
     m_measured = new QCPCurve(xAxis, yAxis);
-    m_measured->setName(tr("measured"));
+    m_measured->setName(tr("measured (samples)"));
     m_measured->setPen(QPen(QColor(0x1f, 0x77, 0xb4), 2));
+    m_measured->setLineStyle(QCPCurve::lsNone);
+    m_measured->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, QColor(0x1f, 0x77, 0xb4), 4));
     m_start = addGraph();
     m_start->setName(tr("start"));
     m_start->setLineStyle(QCPGraph::lsNone);

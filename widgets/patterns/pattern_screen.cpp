@@ -1,5 +1,6 @@
 #include "widgets/patterns/pattern_screen.h"
 
+#include "widgets/common/number_field.h"
 #include "widgets/wording/wording.h"
 
 #include "device/files/pattern_file.h"
@@ -12,9 +13,9 @@
 #include <QFileInfo>
 #include <QComboBox>
 #include <QDir>
-#include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
@@ -105,12 +106,15 @@ PatternScreen::PatternScreen(QVector<PatternInstrument> instruments, tele::Telem
     fit->setToolTip(tr("Show the whole pattern (wheel: zoom, drag: pan)"));
     viewRow->addWidget(fit);
     viewRow->addSpacing(12);
-    viewRow->addWidget(new QLabel(tr("Interpolation step"), rightHost));
-    m_step = new QDoubleSpinBox(rightHost);
+    auto* stepLabel = new QLabel(tr("Interpolation step"), rightHost);
+    viewRow->addWidget(stepLabel);
+    m_step = new NumberField(rightHost);
+    m_step->setObjectName(QStringLiteral("patternInterpolationStep"));
     m_step->setRange(0.0001, 1);
-    m_step->setDecimals(4);
-    m_step->setSuffix(tr(" mm"));
-    m_step->setToolTip(tr("Grid of the point-by-point walk drawn when zoomed in (the instrument's resolution by default)"));
+    m_step->setDisplay('g', 6);
+    m_step->setUnit(tr(" mm"));
+    m_step->setHelp(tr("Grid of the point-by-point walk drawn when zoomed in (the instrument's resolution by default)"));
+    stepLabel->setBuddy(m_step);
     viewRow->addWidget(m_step);
     viewRow->addWidget(new QLabel(tr("zoom in to see the steps"), rightHost));
     viewRow->addStretch(1);
@@ -136,7 +140,10 @@ PatternScreen::PatternScreen(QVector<PatternInstrument> instruments, tele::Telem
     connect(m_form, &PatternForm::changed, &m_replan, qOverload<>(&QTimer::start));
     connect(m_instrumentBox, &QComboBox::currentIndexChanged, this, &PatternScreen::setInstrument);
     connect(fit, &QPushButton::clicked, m_preview, &PatternPreview::fit);
-    connect(m_step, &QDoubleSpinBox::valueChanged, m_preview, &PatternPreview::setStepMm);
+    connect(m_step, &NumberField::entryChanged, this, [this] {
+        if (const auto mm = m_step->value())
+            m_preview->setStepMm(*mm);  // an invalid entry keeps the grid drawn and says why
+    });
     connect(m_run, &QPushButton::clicked, this, [this] { run(); });
     connect(m_pause, &QPushButton::clicked, this, &PatternScreen::pauseOrResume);
     connect(m_abort, &QPushButton::clicked, this, &PatternScreen::abort);
@@ -222,13 +229,7 @@ PatternScreen::PatternScreen(QVector<PatternInstrument> instruments, tele::Telem
         connect(r, &PatternRunner::finished, this, [this, i](const jobs::PatternRunSummary& s) {
             if (i != m_runOn)
                 return;
-            m_summary->setText(tr("<b>Contour error</b> max %1 µm (at %2 mm), RMS %3 µm · <b>time</b> %4 · %5 samples%6")
-                                   .arg(s.maxContourMm * 1e3, 0, 'f', 2)
-                                   .arg(s.maxAtPathMm, 0, 'f', 2)
-                                   .arg(s.rmsContourMm * 1e3, 0, 'f', 2)
-                                   .arg(duration(s.durationS))
-                                   .arg(s.samples)
-                                   .arg(s.complete ? QString() : tr(" · <b>incomplete</b>")));
+            m_summary->setText(runSummaryText(s, densityOf(*m_instruments[i].runner)));
             m_redraw.stop();
             m_preview->replot(QCustomPlot::rpQueuedReplot);
             m_contour->refresh();
@@ -252,6 +253,39 @@ PatternScreen::~PatternScreen()
 jobs::PatternRunner* PatternScreen::runner() const { return cur().runner; }
 QString PatternScreen::statusText() const { return m_status->text(); }
 QString PatternScreen::summaryText() const { return m_summary->text(); }
+
+motion::path::SampleDensity PatternScreen::densityOf(const jobs::PatternRunner& runner)
+{
+    std::vector<double> along, times;
+    along.reserve(runner.samples().size());
+    times.reserve(runner.samples().size());
+    for (const jobs::PatternRunSample& s : runner.samples()) {
+        along.push_back(s.pathMm);
+        times.push_back(s.tS);
+    }
+    return motion::path::judgeSampleDensity(runner.path(), along, times, runner.summary().maxContourMm);
+}
+
+QString PatternScreen::runSummaryText(const jobs::PatternRunSummary& s, const motion::path::SampleDensity& d)
+{
+    QString text = tr("<b>Contour error</b> max %1 µm (at %2 mm), RMS %3 µm · <b>time</b> %4 · %5 samples at %6 Hz%7")
+                       .arg(s.maxContourMm * 1e3, 0, 'f', 2)
+                       .arg(s.maxAtPathMm, 0, 'f', 2)
+                       .arg(s.rmsContourMm * 1e3, 0, 'f', 2)
+                       .arg(duration(s.durationS))
+                       .arg(s.samples)
+                       .arg(QLocale().toString(d.rateHz, 'g', d.rateHz < 100 ? 2 : 3))
+                       .arg(s.complete ? QString() : tr(" · <b>incomplete</b>"));
+    if (d.tooSparse) {
+        const QString why = d.largestSagMm > std::fabs(s.maxContourMm)
+            ? tr("between two samples the path bends up to %1 µm away from the line joining them, more than the "
+                 "largest error found: what the machine did there is not seen")
+                  .arg(QLocale().toString(d.largestSagMm * 1e3, 'f', 1))
+            : tr("%n samples say little of a largest error", nullptr, static_cast<int>(d.samples));
+        text += QStringLiteral("<br><span style='color:#b71c1c'>%1</span>").arg(tr("Too few samples for this figure: %1.").arg(why));
+    }
+    return text;
+}
 motion::plans::Pattern PatternScreen::pattern() const { return m_form->pattern(); }
 
 void PatternScreen::setPattern(const motion::plans::Pattern& p)
@@ -516,6 +550,11 @@ bool PatternScreen::exportRun(const QString& path, QString* error)
 
 bool PatternScreen::savePattern(const QString& path, QString* error)
 {
+    if (const QString typed = m_form->entryProblem(); !typed.isEmpty()) {
+        if (error)
+            *error = typed;  // a file never gets a number nobody typed
+        return false;
+    }
     msg::Message why;
     if (files::savePatternFile(path, m_form->pattern(), &why))
         return true;

@@ -10,6 +10,7 @@
 #include "device/client/instrument.h"
 #include "device/client/path_client.h"
 #include "device/jobs/pattern_runner.h"
+#include "motion/path/sample_density.h"
 #include "motion/plans/pattern.h"
 
 #include <QPointer>
@@ -19,7 +20,6 @@
 #include <functional>
 
 class QComboBox;
-class QDoubleSpinBox;
 class QLabel;
 class QProgressBar;
 class QPushButton;
@@ -31,6 +31,7 @@ class TelemetryHub;
 namespace ui {
 
 class ContourPlot;
+class NumberField;
 class PatternForm;
 class PatternPreview;
 
@@ -51,6 +52,12 @@ public:
     static constexpr int kTelemetryHz = 250;
 
     PatternScreen(QVector<PatternInstrument> instruments, tele::TelemetryHub* hub, QWidget* parent = nullptr);
+    /// The run's figures as the screen words them: the contour error, how many samples it
+    /// rests on and at what rate, and a warning when they are too few for the figure
+    /// (motion/path/sample_density.h).
+    static QString runSummaryText(const jobs::PatternRunSummary& summary, const motion::path::SampleDensity& density);
+    /// How densely a runner's samples cover its path.
+    static motion::path::SampleDensity densityOf(const jobs::PatternRunner& runner);
     ~PatternScreen() override;
     void setConfirm(Confirm c) { m_confirm = std::move(c); }
     /// Asked before the long approach instead of Confirm (app/ offers "don't ask again this
@@ -113,7 +120,7 @@ private:
     PatternForm* m_form;
     PatternPreview* m_preview;
     ContourPlot* m_contour;
-    QDoubleSpinBox* m_step;
+    NumberField* m_step;
     QLabel* m_estimate;
     QLabel* m_status;
     QLabel* m_summary;

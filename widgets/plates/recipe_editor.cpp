@@ -9,7 +9,6 @@
 #include "widgets/common/number_field.h"
 #include "widgets/wording/wording.h"
 
-#include <QDoubleSpinBox>
 #include <QEvent>
 #include <QGroupBox>
 #include <QHBoxLayout>

@@ -171,7 +171,10 @@ void RunPanel::refresh()
     m_progress->setValue(static_cast<int>(std::lround(p.fraction * 1000)));
     m_progress->setFormat(tr("%1 of %2 operations").arg(p.opsDone).arg(s == RunState::Idle ? m_planOps : p.opsTotal));
     m_state->setText(tr("State: %1").arg(words::term(jobs::runStateTerm(s))));
-    m_current->setText(p.currentOp >= 0 && s != RunState::Idle ? tr("Current: %1").arg(words::text(p.currentLabel)) : tr("Current: —"));
+    // Paused between two ops nothing is under way: the op Resume begins with is "next".
+    m_current->setText(p.currentOp >= 0 && s != RunState::Idle ? tr("Current: %1").arg(words::text(p.currentLabel))
+                       : p.nextOp >= 0                          ? tr("Next: %1").arg(words::text(p.nextLabel))
+                                                                : tr("Current: —"));
     m_times->setText(s == RunState::Idle ? QString()
                                          : tr("Elapsed %1 · ETA %2").arg(duration(p.elapsedS), s == RunState::Finished ? tr("done") : duration(p.etaS)));
     if (p.currentOp >= 0 && p.currentOp < m_table->rowCount() && busy)

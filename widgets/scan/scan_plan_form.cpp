@@ -1,18 +1,21 @@
 #include "widgets/scan/scan_plan_form.h"
 
+#include "widgets/common/number_field.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QCoreApplication>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QRegularExpression>
-#include <QSpinBox>
 #include <QStackedWidget>
 #include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
 
 namespace ui {
 
@@ -49,6 +52,9 @@ std::vector<Point2> parsePolygon(const QString& text, QString* error)
     return out;
 }
 
+/// What plan() gives for a typed number that is not valid (entryProblem() says why).
+const double kScanFormNaN = std::nan("");
+
 QGroupBox* group(const QString& title, QLayout* layout)
 {
     auto* g = new QGroupBox(title);
@@ -71,23 +77,27 @@ ScanPlanForm::ScanPlanForm(QWidget* parent) : QWidget(parent)
     setPlan(ScanPlan{});
 }
 
-QDoubleSpinBox* ScanPlanForm::number(const QString& name, double min, double max, double value, int decimals,
-                                     const QString& suffix, const QString& tip)
+// Kept as typed: "-5" in Speed is shown as invalid with its reason and nothing is planned
+// from it, never turned into 5 by a spin box that cannot take the minus.
+NumberField* ScanPlanForm::number(const QString& name, double min, double max, double value, int decimals,
+                                  const QString& suffix, const QString& tip)
 {
-    auto* s = new QDoubleSpinBox;
+    auto* s = new NumberField;
     s->setObjectName(name);
     s->setRange(min, max);
-    s->setDecimals(decimals);
+    s->setDisplay('g', std::max(10, decimals + 6));  // every digit a plan file has: a rounded display would be saved back
     s->setValue(value);
-    s->setSuffix(suffix);
-    s->setToolTip(tip);
-    s->setKeyboardTracking(false);
+    s->setUnit(suffix);
+    s->setHelp(tip);
+    s->setFieldName(tip);  // two fields share a row's label ("Corner X, Y"): the reason names which
     // Wide ranges would make the boxes as wide as their longest number; the panel is narrow.
     s->setMinimumWidth(70);
     s->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
-    connect(s, &QDoubleSpinBox::valueChanged, this, &ScanPlanForm::changed);
+    connect(s, &NumberField::entryChanged, this, &ScanPlanForm::changed);  // the screen replans on a timer
     return s;
 }
+
+QString ScanPlanForm::entryProblem() const { return NumberField::firstProblemUnder(this); }
 
 QWidget* ScanPlanForm::regionGroup()
 {
@@ -171,13 +181,14 @@ QWidget* ScanPlanForm::cameraGroup()
     auto* sg = new QFormLayout(sensor);
     sg->setContentsMargins(0, 0, 0, 0);
     auto pixels = [this](const QString& name, const QString& tip) {
-        auto* s = new QSpinBox;
+        auto* s = new NumberField;
         s->setObjectName(name);
+        s->setInteger(true);
         s->setRange(1, 100000);
-        s->setSuffix(tr(" px"));
-        s->setToolTip(tip);
-        s->setKeyboardTracking(false);
-        connect(s, &QSpinBox::valueChanged, this, &ScanPlanForm::changed);
+        s->setUnit(tr(" px"));
+        s->setHelp(tip);
+        s->setFieldName(tip);
+        connect(s, &NumberField::entryChanged, this, &ScanPlanForm::changed);
         return s;
     };
     m_sensorW = pixels(QStringLiteral("scanSensorW"), tr("Sensor width in pixels"));
@@ -304,10 +315,11 @@ QWidget* ScanPlanForm::exportGroup()
     m_pattern->setToolTip(tr("{i} the tile's number, {row} and {col} its place; {i:03} pads to three digits"));
     connect(m_pattern, &QLineEdit::editingFinished, this, &ScanPlanForm::changed);
     form->addRow(tr("File names"), m_pattern);
-    m_firstIndex = new QSpinBox;
+    m_firstIndex = new NumberField;
+    m_firstIndex->setObjectName(QStringLiteral("scanFirstIndex"));
+    m_firstIndex->setInteger(true);
     m_firstIndex->setRange(0, 1000000);
-    m_firstIndex->setKeyboardTracking(false);
-    connect(m_firstIndex, &QSpinBox::valueChanged, this, &ScanPlanForm::changed);
+    connect(m_firstIndex, &NumberField::entryChanged, this, &ScanPlanForm::changed);
     form->addRow(tr("First number"), m_firstIndex);
     m_mmStage = new QLineEdit;
     m_mmStage->setToolTip(tr("The XY stage's device label in Micro-Manager (for the .pos position list)"));
@@ -327,6 +339,10 @@ void ScanPlanForm::changed()
 void ScanPlanForm::updateCameraInfo()
 {
     const ScanPlan p = plan();
+    if (!std::isfinite(fieldWidthMm(p.camera)) || !std::isfinite(fieldHeightMm(p.camera)) || !std::isfinite(pixelAtSampleUm(p.camera))) {
+        m_cameraInfo->setText(tr("Field: — (a camera value above is not a number yet)"));
+        return;
+    }
     m_cameraInfo->setText(tr("Field %1 × %2 mm, %3 µm per pixel at the sample")
                               .arg(fieldWidthMm(p.camera), 0, 'f', 4)
                               .arg(fieldHeightMm(p.camera), 0, 'f', 4)
@@ -338,38 +354,38 @@ ScanPlan ScanPlanForm::plan() const
     ScanPlan p;
     p.name = m_name->text().toStdString();
     p.region.kind = static_cast<RegionKind>(m_regionKind->currentData().toInt());
-    p.region.cornerA = {m_x0->value(), m_y0->value()};
-    p.region.cornerB = {m_x1->value(), m_y1->value()};
-    p.region.centre = {m_cx->value(), m_cy->value()};
-    p.region.widthMm = m_w->value();
-    p.region.heightMm = m_h->value();
+    p.region.cornerA = {m_x0->valueOr(kScanFormNaN), m_y0->valueOr(kScanFormNaN)};
+    p.region.cornerB = {m_x1->valueOr(kScanFormNaN), m_y1->valueOr(kScanFormNaN)};
+    p.region.centre = {m_cx->valueOr(kScanFormNaN), m_cy->valueOr(kScanFormNaN)};
+    p.region.widthMm = m_w->valueOr(kScanFormNaN);
+    p.region.heightMm = m_h->valueOr(kScanFormNaN);
     QString error;
     p.region.vertices = parsePolygon(m_vertices->text(), &error);
     m_polygonError = p.region.kind == RegionKind::Polygon ? error : QString();
     p.camera.source = static_cast<FieldSource>(m_fovFrom->currentData().toInt());
-    p.camera.sensorWidthPx = m_sensorW->value();
-    p.camera.sensorHeightPx = m_sensorH->value();
-    p.camera.sensorPixelUm = m_sensorPixel->value();
-    p.camera.magnification = m_magnification->value();
-    p.camera.fieldWidthMm = m_fieldW->value();
-    p.camera.fieldHeightMm = m_fieldH->value();
-    p.camera.samplePixelUm = m_samplePixel->value();
-    p.camera.rotationDeg = m_rotation->value();
+    p.camera.sensorWidthPx = static_cast<int>(m_sensorW->valueOr(0));
+    p.camera.sensorHeightPx = static_cast<int>(m_sensorH->valueOr(0));
+    p.camera.sensorPixelUm = m_sensorPixel->valueOr(kScanFormNaN);
+    p.camera.magnification = m_magnification->valueOr(kScanFormNaN);
+    p.camera.fieldWidthMm = m_fieldW->valueOr(kScanFormNaN);
+    p.camera.fieldHeightMm = m_fieldH->valueOr(kScanFormNaN);
+    p.camera.samplePixelUm = m_samplePixel->valueOr(kScanFormNaN);
+    p.camera.rotationDeg = m_rotation->valueOr(kScanFormNaN);
     p.camera.imageY = static_cast<ImageY>(m_imageY->currentData().toInt());
-    p.overlapX = m_overlapX->value() / 100.0;
-    p.overlapY = m_overlapY->value() / 100.0;
+    p.overlapX = m_overlapX->valueOr(kScanFormNaN) / 100.0;
+    p.overlapY = m_overlapY->valueOr(kScanFormNaN) / 100.0;
     p.order = static_cast<ScanOrder>(m_order->currentData().toInt());
     p.start = static_cast<StartCorner>(m_start->currentData().toInt());
     p.approach.unidirectional = m_unidirectional->isChecked();
-    p.approach.overtravelMm = m_overtravel->value();
-    p.speedMmS = m_speed->value();
-    p.settleS = m_settle->value();
-    p.exposureS = m_exposure->value();
-    p.toleranceUm = m_tolerance->value();
-    p.settleTimeoutS = m_settleTimeout->value();
+    p.approach.overtravelMm = m_overtravel->valueOr(kScanFormNaN);
+    p.speedMmS = m_speed->valueOr(kScanFormNaN);
+    p.settleS = m_settle->valueOr(kScanFormNaN);
+    p.exposureS = m_exposure->valueOr(kScanFormNaN);
+    p.toleranceUm = m_tolerance->valueOr(kScanFormNaN);
+    p.settleTimeoutS = m_settleTimeout->valueOr(kScanFormNaN);
     p.compensation.enabled = m_compensate->isChecked();
     p.naming.filePattern = m_pattern->text().toStdString();
-    p.naming.firstIndex = m_firstIndex->value();
+    p.naming.firstIndex = static_cast<int>(m_firstIndex->valueOr(0));
     p.naming.mmXyStage = m_mmStage->text().toStdString();
     return p;
 }

@@ -9,14 +9,14 @@
 
 class QCheckBox;
 class QComboBox;
-class QDoubleSpinBox;
 class QFormLayout;
 class QLabel;
 class QLineEdit;
-class QSpinBox;
 class QStackedWidget;
 
 namespace ui {
+
+class NumberField;
 
 class ScanPlanForm : public QWidget {
     Q_OBJECT
@@ -27,6 +27,9 @@ public:
     void setPlan(const motion::scan::ScanPlan& plan);
     /// The polygon text ("x, y; x, y; …") does not read: why, else empty.
     QString polygonError() const { return m_polygonError; }
+    /// The first typed number shown that is not valid, with its reason; empty when all are.
+    /// plan() gives NaN for such a field: nothing is planned, saved or run from it.
+    QString entryProblem() const;
 
 signals:
     void planChanged();
@@ -39,8 +42,8 @@ private:
     QWidget* gridGroup();
     QWidget* runGroup();
     QWidget* exportGroup();
-    QDoubleSpinBox* number(const QString& name, double min, double max, double value, int decimals, const QString& suffix,
-                           const QString& tip);
+    NumberField* number(const QString& name, double min, double max, double value, int decimals, const QString& suffix,
+                        const QString& tip);
     void changed();
     void updateCameraInfo();
 
@@ -50,29 +53,29 @@ private:
     // Region
     QComboBox* m_regionKind;
     QStackedWidget* m_regionPages;
-    QDoubleSpinBox *m_x0, *m_y0, *m_x1, *m_y1;
-    QDoubleSpinBox *m_cx, *m_cy, *m_w, *m_h;
+    NumberField *m_x0, *m_y0, *m_x1, *m_y1;
+    NumberField *m_cx, *m_cy, *m_w, *m_h;
     QLineEdit* m_vertices;
     // Camera
     QComboBox* m_fovFrom;
     QStackedWidget* m_cameraPages;
-    QSpinBox *m_sensorW, *m_sensorH;
-    QDoubleSpinBox *m_sensorPixel, *m_magnification;
-    QDoubleSpinBox *m_fieldW, *m_fieldH, *m_samplePixel;
-    QDoubleSpinBox* m_rotation;
+    NumberField *m_sensorW, *m_sensorH;
+    NumberField *m_sensorPixel, *m_magnification;
+    NumberField *m_fieldW, *m_fieldH, *m_samplePixel;
+    NumberField* m_rotation;
     QComboBox* m_imageY;
     QLabel* m_cameraInfo;
     // Grid
-    QDoubleSpinBox *m_overlapX, *m_overlapY;
+    NumberField *m_overlapX, *m_overlapY;
     QComboBox *m_order, *m_start;
     QCheckBox* m_unidirectional;
-    QDoubleSpinBox* m_overtravel;
+    NumberField* m_overtravel;
     // Run
-    QDoubleSpinBox *m_speed, *m_settle, *m_exposure, *m_tolerance, *m_settleTimeout;
+    NumberField *m_speed, *m_settle, *m_exposure, *m_tolerance, *m_settleTimeout;
     QCheckBox* m_compensate;
     // Export
     QLineEdit *m_pattern, *m_mmStage;
-    QSpinBox* m_firstIndex;
+    NumberField* m_firstIndex;
 };
 
 } // namespace ui

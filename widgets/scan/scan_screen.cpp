@@ -275,6 +275,10 @@ bool ScanScreen::openPlan(const QString& path)
 
 bool ScanScreen::savePlan(const QString& path)
 {
+    if (const QString typed = m_form->entryProblem(); !typed.isEmpty()) {
+        emit problem(tr("The plan is not saved: %1").arg(typed));  // a file never gets a number nobody typed
+        return false;
+    }
     msg::Message error;
     if (!scanfile::savePlan(path, plan(), &error)) {
         emit problem(words::text(error));
@@ -318,6 +322,8 @@ void ScanScreen::replan()
     const ScanPlan p = plan();
     auto problems = validate(p, stageModel());
     QStringList lines;
+    if (const QString typed = m_form->entryProblem(); !typed.isEmpty())
+        lines << typed;
     if (!m_form->polygonError().isEmpty())
         lines << tr("Polygon: %1").arg(m_form->polygonError());
     for (const auto& pr : problems)

@@ -1,10 +1,11 @@
 #include "widgets/tuning/step_test_panel.h"
 
+#include "widgets/common/number_field.h"
+#include "widgets/input_policy.h"
 #include "widgets/wording/wording.h"
 #include "widgets/tuning/response_plot.h"
 
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -27,11 +28,14 @@ StepTestPanel::StepTestPanel(QWidget* parent) : QWidget(parent)
     auto* v = new QVBoxLayout(this);
     auto* row = new QHBoxLayout;
     row->addWidget(new QLabel(tr("Step"), this));
-    m_size = new QDoubleSpinBox(this);
+    // Kept as typed: "-5" is invalid with its reason (the direction is the combo beside it), not 5.
+    auto* stepLabel = row->itemAt(row->count() - 1)->widget();
+    m_size = new NumberField(this);
     m_size->setObjectName(QStringLiteral("stepSize"));
-    m_size->setDecimals(3);
     m_size->setRange(0.001, 1e6);
+    m_size->setDisplay('g', 6);
     m_size->setValue(20);
+    static_cast<QLabel*>(stepLabel)->setBuddy(m_size);
     row->addWidget(m_size);
     m_direction = new QComboBox(this);
     m_direction->addItem(tr("positive"));
@@ -63,7 +67,11 @@ StepTestPanel::StepTestPanel(QWidget* parent) : QWidget(parent)
     split->setStretchFactor(1, 1);
     v->addWidget(split, 1);
 
-    connect(m_run, &QPushButton::clicked, this, [this] { emit runRequested(step()); });
+    connect(m_run, &QPushButton::clicked, this, [this] {
+        if (m_size->isValid())
+            emit runRequested(step());
+    });
+    connect(m_size, &NumberField::entryChanged, this, [this] { refresh(); });
     connect(m_clear, &QPushButton::clicked, this, [this] {
         m_plot->clear();
         m_table->setColumnCount(0);
@@ -76,7 +84,7 @@ void StepTestPanel::setUnit(const QString& unit)
     const bool changed = unit != m_unit;
     m_unit = unit;
     const bool mm = unit == QLatin1String("mm");
-    m_size->setSuffix(mm ? tr(" µm") : QString());
+    m_size->setUnit(mm ? tr(" µm") : QString());
     if (changed)
         m_size->setValue(mm ? 20 : 1);
     m_plot->setUnit(unit);
@@ -88,7 +96,8 @@ void StepTestPanel::setUnit(const QString& unit)
 
 double StepTestPanel::step() const
 {
-    const double magnitude = m_unit == QLatin1String("mm") ? m_size->value() / 1000.0 : m_size->value();
+    const double typed = m_size->valueOr(std::nan(""));  // Run is held while the entry is invalid
+    const double magnitude = m_unit == QLatin1String("mm") ? typed / 1000.0 : typed;
     return m_direction->currentIndex() == 0 ? magnitude : -magnitude;
 }
 
@@ -147,6 +156,11 @@ void StepTestPanel::setReady(bool ready)
     refresh();
 }
 
-void StepTestPanel::refresh() { m_run->setEnabled(m_ready && !m_busy); }
+void StepTestPanel::refresh()
+{
+    setEnabledOr(m_run, m_size->problem());
+    if (!m_ready || m_busy)
+        m_run->setEnabled(false);
+}
 
 } // namespace ui

@@ -7,12 +7,13 @@
 #include <QWidget>
 
 class QComboBox;
-class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
 class QTableWidget;
 
 namespace ui {
+
+class NumberField;
 
 class ResponsePlot;
 
@@ -39,7 +40,7 @@ signals:
 private:
     void refresh();
 
-    QDoubleSpinBox* m_size;
+    NumberField* m_size;
     QComboBox* m_direction;
     QPushButton* m_run;
     QPushButton* m_clear;

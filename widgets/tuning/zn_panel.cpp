@@ -1,5 +1,7 @@
 #include "widgets/tuning/zn_panel.h"
 
+#include "widgets/common/number_field.h"
+#include "widgets/input_policy.h"
 #include "widgets/wording/wording.h"
 #include "motion/control/tuning/tuning_rules.h"
 #include "widgets/tuning/gains_panel.h"
@@ -7,7 +9,6 @@
 
 #include <QCheckBox>
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -43,14 +44,16 @@ QString ruleNumber(double v) { return QString::number(v, 'g', 4); }
 QString period(double s) { return s < 1 ? ZnPanel::tr("%1 ms").arg(ruleNumber(s * 1000)) : ZnPanel::tr("%1 s").arg(ruleNumber(s)); }
 } // namespace
 
-QDoubleSpinBox* ZnPanel::spin(const QString& objectName, double min, double max, int decimals, double value)
+// Typed settings are kept as typed: "-5" or "1e9" is shown as invalid with its reason and
+// holds Start, never turned into 5 or 19 (a spin box's validator dropped what it could not take).
+NumberField* ZnPanel::spin(const QString& objectName, double min, double max, int decimals, double value)
 {
-    auto* s = new QDoubleSpinBox(this);
+    auto* s = new NumberField(this);
     s->setObjectName(objectName);
     s->setRange(min, max);
-    s->setDecimals(decimals);
+    s->setDisplay('g', decimals + 3);
     s->setValue(value);
-    s->setMinimumHeight(s->sizeHint().height());  // a form short of room squeezes a spin box thin
+    s->setMinimumHeight(s->sizeHint().height());  // a form short of room squeezes an entry thin
     return s;
 }
 
@@ -74,7 +77,7 @@ ZnPanel::ZnPanel(QWidget* parent) : QWidget(parent)
     m_excursion = spin(QStringLiteral("maxExcursion"), 0.001, 1e6, 3, 50);
     m_following = spin(QStringLiteral("maxFollowingError"), 0.001, 1e6, 3, 50);
     m_duration = spin(QStringLiteral("maxDuration"), 0.01, 600, 2, 2);
-    m_duration->setSuffix(tr(" s"));
+    m_duration->setUnit(tr(" s"));
     form->addRow(tr("Max excursion"), m_excursion);
     form->addRow(tr("Max following error"), m_following);
     form->addRow(tr("Max duration"), m_duration);
@@ -164,6 +167,9 @@ ZnPanel::ZnPanel(QWidget* parent) : QWidget(parent)
     split->setStretchFactor(1, 1);
 
     connect(m_method, &QComboBox::currentIndexChanged, m_methodPages, &QStackedWidget::setCurrentIndex);
+    connect(m_method, &QComboBox::currentIndexChanged, this, [this] { refresh(); });
+    for (auto* f : findChildren<NumberField*>())
+        connect(f, &NumberField::entryChanged, this, [this] { refresh(); });
     connect(m_start, &QPushButton::clicked, this, &ZnPanel::startRequested);
     connect(m_abort, &QPushButton::clicked, this, &ZnPanel::abortRequested);
     setUnit(QStringLiteral("mm"));
@@ -175,13 +181,13 @@ double ZnPanel::toShown(double target) const { return m_unit == QLatin1String("m
 
 void ZnPanel::setUnit(const QString& unit)
 {
+    const QString suffix = unit == QLatin1String("mm") ? tr(" µm") : QString();
+    for (auto* s : {m_excursion, m_following, m_trialStep, m_amplitude, m_hysteresis})
+        s->setUnit(suffix);
     if (unit == m_unit)
         return;
     auto o = options();
     m_unit = unit;
-    const QString suffix = unit == QLatin1String("mm") ? tr(" µm") : QString();
-    for (auto* s : {m_excursion, m_following, m_trialStep, m_amplitude, m_hysteresis})
-        s->setSuffix(suffix);
     if (unit == QLatin1String("mm")) {
         o.envelope = {0.05, 0.05, 2};
         o.step = 0.02;
@@ -205,12 +211,14 @@ dev::TuningRunner::ZnOptions ZnPanel::options() const
 {
     dev::TuningRunner::ZnOptions o;
     o.method = m_method->currentIndex() == 1 ? TuningMethod::Relay : TuningMethod::UltimateGain;
-    o.envelope = {toTarget(m_excursion->value()), toTarget(m_following->value()), m_duration->value()};
-    o.step = toTarget(m_trialStep->value());
-    o.startKp = m_startKp->value();
-    o.kpMax = m_kpMax->value();
-    o.relayAmplitude = toTarget(m_amplitude->value());
-    o.hysteresis = toTarget(m_hysteresis->value());
+    // Start is held while a shown field is invalid (refresh()); NaN is what no run accepts.
+    const auto typed = [](const NumberField* f) { return f->valueOr(std::nan("")); };
+    o.envelope = {toTarget(typed(m_excursion)), toTarget(typed(m_following)), typed(m_duration)};
+    o.step = toTarget(typed(m_trialStep));
+    o.startKp = typed(m_startKp);
+    o.kpMax = typed(m_kpMax);
+    o.relayAmplitude = toTarget(typed(m_amplitude));
+    o.hysteresis = toTarget(typed(m_hysteresis));
     o.refine = m_refine->isChecked();
     o.verifyRule = m_verify->currentData().toString().toStdString();
     o.verifyStep = o.step;
@@ -308,7 +316,9 @@ void ZnPanel::setReady(bool ready)
 
 void ZnPanel::refresh()
 {
-    m_start->setEnabled(m_ready && !m_busy);
+    setEnabledOr(m_start, NumberField::firstProblemUnder(this));
+    if (!m_ready || m_busy)
+        m_start->setEnabled(false);
     m_abort->setEnabled(m_busy);
     for (int row = 0; row < m_rules->rowCount(); ++row)
         if (auto* w = m_rules->cellWidget(row, 7))

@@ -10,7 +10,6 @@
 
 class QCheckBox;
 class QComboBox;
-class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
 class QStackedWidget;
@@ -18,6 +17,7 @@ class QTableWidget;
 
 namespace ui {
 
+class NumberField;
 class ResponsePlot;
 
 class ZnPanel : public QWidget {
@@ -48,21 +48,21 @@ signals:
     void useRule(const QString& ruleId, const motion::control::DiscreteGains& gains, const QString& source);
 
 private:
-    QDoubleSpinBox* spin(const QString& objectName, double min, double max, int decimals, double value);
+    NumberField* spin(const QString& objectName, double min, double max, int decimals, double value);
     double toTarget(double shown) const;
     double toShown(double target) const;
     void refresh();
 
     QComboBox* m_method;
-    QDoubleSpinBox* m_excursion;
-    QDoubleSpinBox* m_following;
-    QDoubleSpinBox* m_duration;
+    NumberField* m_excursion;
+    NumberField* m_following;
+    NumberField* m_duration;
     QStackedWidget* m_methodPages;
-    QDoubleSpinBox* m_trialStep;
-    QDoubleSpinBox* m_startKp;
-    QDoubleSpinBox* m_kpMax;
-    QDoubleSpinBox* m_amplitude;
-    QDoubleSpinBox* m_hysteresis;
+    NumberField* m_trialStep;
+    NumberField* m_startKp;
+    NumberField* m_kpMax;
+    NumberField* m_amplitude;
+    NumberField* m_hysteresis;
     QCheckBox* m_refine;
     QComboBox* m_verify;
     QPushButton* m_start;
