@@ -76,8 +76,10 @@ TEST(GrblResetContract, EveryResetPathAnswersEveryCommandOnceAndLeavesNothingRun
         ASSERT_TRUE(r.connect());
         r.port.report = "<Idle|MPos:0.000,0.000,0.000|FS:0,0>";
 
-        // A move GRBL never answers, and a held jog whose segments it takes.
-        r.port.hold = [](const std::string& line) { return line.rfind("G91", 0) == 0; };
+        // A move GRBL never answers, and a held jog behind it (GRBL answers in order: nothing
+        // after the move is answered either).
+        bool holding = false;
+        r.port.hold = [&holding](const std::string& line) { return holding = holding || line.rfind("G91", 0) == 0; };
         int moveAnswers = 0;
         std::optional<dev::RequestError> moveError;
         r.client.move({{0, 5}}, true, 5, [&](const std::optional<dev::RequestError>& e) {
@@ -115,6 +117,7 @@ TEST(GrblResetContract, EveryResetPathAnswersEveryCommandOnceAndLeavesNothingRun
         case ResetPath::Disconnect: r.client.disconnectLink(); break;
         case ResetPath::LinkLost: emit r.port.lost(msg::make("link.unplugged")); break;
         case ResetPath::ControllerReset:
+            r.port.hold = {};  // what it held is gone with the reset; what comes after, it answers
             r.port.push("Grbl 1.1h ['$' for help]");
             ASSERT_TRUE(waitFor([&] {
                 return std::any_of(r.events.begin(), r.events.end(), [](const dev::DeviceEvent& e) { return e.detail.id == "grbl.controller_reset"; });
@@ -123,9 +126,9 @@ TEST(GrblResetContract, EveryResetPathAnswersEveryCommandOnceAndLeavesNothingRun
         case ResetPath::EStop: r.client.estop(countReset); break;
         case ResetPath::Alarm:
             // A hard limit: GRBL hears nothing but a reset, which the operator gives.
+            r.port.report = "<Alarm|MPos:0.000,0.000,0.000|FS:0,0>";
             r.port.push("ALARM:1");
             ASSERT_TRUE(waitFor([&] { return r.client.alarmCode() == 1; }, 3000));
-            r.port.report = "<Alarm|MPos:0.000,0.000,0.000|FS:0,0>";
             r.client.reset(countReset);
             break;
         }

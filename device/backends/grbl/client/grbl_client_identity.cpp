@@ -128,9 +128,15 @@ void GrblClient::updateTravel()
     const bool forceOrigin = m_controller.build.hasOption('Z')
                              || (m_controller.firmware == grbl::Firmware::GrblHal
                                  && ((static_cast<unsigned>(m_controller.settings.value(grbl::setting::kHomingCycle).value_or(0)) >> 3) & 1u));
+    // Until the controller of this connection is identified the wiring is the last one's and the
+    // limits are not read yet: nothing to anchor (buildIdentity calls this once they are).
+    if (m_map.isEmpty() || m_controller.limits.axes.empty())
+        return;
     bool changed = false;
     for (int i = 0; i < m_map.size() && i < m_identity.axes.size(); ++i) {
         const auto g = static_cast<std::size_t>(m_map[i].grbl);
+        if (g >= m_controller.limits.axes.size())
+            continue;
         const grbl::AxisLimits& l = m_controller.limits.axes[g];
         const double wco = g < m_reports.wcoMm.size() ? m_reports.wcoMm[g] : 0.0;
         double lo = 0, hi = l.maxTravelMm;  // work coordinates
