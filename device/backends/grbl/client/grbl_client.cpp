@@ -37,6 +37,9 @@ GrblClient::GrblClient(const files::MachineProfile& profile, bool lenient, QObje
 
 GrblClient::~GrblClient()
 {
+    // A program that ends without closing the link (a CLI run) leaves where the machine stands.
+    if (m_phase == Phase::Ready)
+        keepHomeOnLeave();
     // Callbacks may refer to objects already gone: drop them unanswered.
     m_lines.pending.clear();
     m_waiters.status.clear();
@@ -115,6 +118,7 @@ void GrblClient::connectLink()
     // goes on showing them while it reconnects.
     m_phase = Phase::Closed;
     m_wire = Wire{};
+    m_wire.restartHeard = std::exchange(m_restartHeardBeforeConnect, false);
     dropLines(msg::make("link.disconnected"));
     m_controller = Controller{};
     m_reports = Reports{};
@@ -184,6 +188,8 @@ void GrblClient::endLink(const msg::Message& why)
     // and nothing is owed any more — no motion, no stop, no jog (a jog GRBL still runs ends
     // with its short segments). What the controller is and reported stays until the next
     // connection, for the screens to show.
+    if (m_phase == Phase::Ready)
+        keepHomeOnLeave();
     m_pollTimer.stop();
     m_linkTimer.stop();
     m_jogTimer.stop();
@@ -451,6 +457,8 @@ void GrblClient::onBanner(const grbl::Banner& banner)
     m_controller.bannerVersion = banner.version;
     m_wire.sawGrblLine = true;
     m_lines.modalReady = false;
+    if (m_phase != Phase::Ready)
+        m_wire.restartHeard = true;
     if (m_phase == Phase::Syncing) {
         // The controller just started (an Arduino resets when its port opens). If the sync line
         // came before the reset it was lost: ask again soon unless its answer arrives.
@@ -467,7 +475,7 @@ void GrblClient::onBanner(const grbl::Banner& banner)
         // flight is gone, nothing moves, and no position can be trusted any more.
         std::vector<std::string> lost;
         LostLines waiting = dropLines(msg::make("grbl.reset_by_itself"), &lost);
-        m_positions = Positions{};
+        loseEstablished();
         m_motion = Motion{};
         m_jogs.forget();
         const msg::Message detail = msg::make(

@@ -75,6 +75,20 @@ public:
     /// How long a connection may take before it is refused (kConnectMs unless a test is in a hurry).
     void setConnectTimeoutMs(int ms) { m_connectTimeoutMs = ms; }
 
+    /// Where a home set here (setZero, with homing disabled) is remembered between connections
+    /// (GrblHomeMemory), and the port this controller is on. Without it every connection to a
+    /// controller without homing starts unestablished. The home is kept at the next connection
+    /// only when the controller can be told not to have restarted since: no start-up banner as
+    /// the port opened, no alarm, and the G54 offset and machine position this host last saw.
+    void rememberHomesIn(const QString& file, const QString& port)
+    {
+        m_homeFile = file;
+        m_homePort = port;
+    }
+    /// The probe that opened the port heard the controller's start-up banner (ProbeResult::grblBanner):
+    /// it restarted as the port opened. For the next connectLink().
+    void setRestartHeardBeforeConnect(bool heard) { m_restartHeardBeforeConnect = heard; }
+
     /// Not owned. Replacing the transport disconnects the old one first. A transport that is
     /// already open (a protocol probe opened it) is used as it is: no second open.
     void setTransport(Transport* transport);
@@ -220,6 +234,16 @@ private:
     bool established(int axis) const { return (m_positions.established >> axis) & 1u; }
     std::optional<RequestError> checkTarget(int axis, double target) const;
     void finishStop(const std::optional<RequestError>& e);
+    // grbl_client_home.cpp: the home set here, across connections.
+    std::string controllerKey() const;
+    /// At the first report of a connection to a controller without homing: the axes whose home,
+    /// set here before, still holds.
+    quint32 recallHome(grbl::MachineState state);
+    void rememberHome();
+    /// When the link ends: where the machine was last seen, for the next connection to compare.
+    void keepHomeOnLeave();
+    /// The positions are no longer trusted (an alarm, a restart): nor is the home remembered.
+    void loseEstablished();
     // grbl_client_jog.cpp: continuous jog.
     void updateJog();
     void topUpJog();
@@ -237,6 +261,8 @@ private:
     QTimer m_pollTimer, m_linkTimer, m_jogTimer;
     int m_connectTimeoutMs = kConnectMs;
     std::uint64_t m_nextTag = 1;  ///< line tags are never reused, across resets and connections
+    QString m_homeFile, m_homePort;
+    bool m_restartHeardBeforeConnect = false;
 
     // ---- State, grouped by what it belongs to ---------------------------------------------
     // Each group is reset as a whole — assigned afresh, or by its own reset() — so a field
@@ -260,6 +286,7 @@ private:
         int syncAttempts = 0;
         bool syncSawParserState = false;
         bool sawGrblLine = false;
+        bool restartHeard = false;  ///< a start-up banner came before the controller was identified
         int expectedBanners = 0;  ///< soft resets this host sent whose banner has not come yet
     } m_wire;
 

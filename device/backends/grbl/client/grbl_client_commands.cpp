@@ -264,9 +264,16 @@ void GrblClient::setZero(quint8 axisMask, Callback done)
             }
             // Taken as home on the operator's word: absolute moves are allowed from here.
             self->m_positions.established |= mask;
-            self->queueLine("$#", {});  // the new offset, for the travel
             self->sendQuery();
-            if (done)
+            // The new offset, for the travel and for the next connection to recognise; done once
+            // it is read, so a script that disconnects at once leaves it remembered.
+            const bool asked = self->queueLine("$#", [self, done](const std::optional<grbl::Streamer::Ack>& offsets) {
+                if (self && offsets && offsets->ok)
+                    self->rememberHome();
+                if (done)
+                    done(std::nullopt);
+            });
+            if (!asked && done)
                 done(std::nullopt);
         },
         true);

@@ -7,6 +7,7 @@
 
 
 #include <cmath>
+#include <utility>
 
 namespace dev {
 
@@ -125,9 +126,12 @@ void GrblClient::onStatusReport(const grbl::StatusReport& r)
     const grbl::MachineState st = r.state;
     if (m_reports.first) {
         // What can be trusted at connection: a controller with homing that is not in alarm was
-        // homed (or unlocked) before; without homing nothing says where home is.
+        // homed (or unlocked) before; without homing, only a home set here that provably still holds.
         m_reports.first = false;
-        m_positions.established = (st != grbl::MachineState::Alarm && m_controller.limits.homingEnabled) ? (1u << m_map.size()) - 1 : 0;
+        if (m_controller.limits.homingEnabled)
+            m_positions.established = st != grbl::MachineState::Alarm ? (1u << m_map.size()) - 1 : 0;
+        else
+            m_positions.established = recallHome(st);
         updateTravel();
     }
     if (st != grbl::MachineState::Alarm)
@@ -212,7 +216,7 @@ void GrblClient::onAlarm(int code)
     // Positions survive a soft-limit alarm and a failed probe; every other alarm (a hard limit, a
     // reset in motion, a failed homing, grblHAL's E-stop) leaves them untrusted.
     if (code != grbl::alarm::kSoftLimit && code != grbl::alarm::kProbeFailInitial && code != grbl::alarm::kProbeFailContact)
-        m_positions = Positions{};
+        loseEstablished();
     if (code == grbl::alarm::kHardLimit || code == grbl::alarm::kSoftLimit)
         m_machine.critical = true;
     m_machine.homing = false;
