@@ -10631,9 +10631,14 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>无法在 %1 中记住在此设定的原点：下次连接时不会保留</translation>
     </message>
     <message>
-        <source>%1 %2 is beyond the machine travel %3 … %4 (the controller&apos;s $%5): refused before sending, since GRBL would stop with ALARM:2 and need a reset</source>
+        <source>%1 %2 is beyond the machine travel %3 … %4 (work coordinates, G54; the controller&apos;s $%5): refused before sending, since GRBL would stop with ALARM:2 and need a reset</source>
         <comment>grbl.beyond_travel</comment>
-        <translation>%1 %2 超出机床行程 %3 … %4（控制器的 $%5）：发送前已拒绝，否则 GRBL 会以 ALARM:2 停机并需要复位</translation>
+        <translation>%1 %2 超出机床行程 %3 … %4（工件坐标 G54；控制器的 $%5）：发送前已拒绝，否则 GRBL 会以 ALARM:2 停机并需要复位</translation>
+    </message>
+    <message>
+        <source>work position (G54) %1, machine position %2</source>
+        <comment>grbl.event.position</comment>
+        <translation>工件坐标（G54）%1，机床坐标 %2</translation>
     </message>
 </context>
 <context>

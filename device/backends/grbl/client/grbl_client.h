@@ -378,6 +378,10 @@ private:
         quint32 axes = 0;    ///< instrument axes owing MotionDone
         int linesOpen = 0;   ///< their lines not yet acknowledged
         quint64 ackUs = 0;   ///< when the last of them was acknowledged
+        /// Axes owing HomeDone: told with the first report asked after $H was acknowledged, so
+        /// that the event carries where homing left them, not where the last report before it saw them.
+        quint32 homedAxes = 0;
+        quint64 homedAckUs = 0;
     } m_motion;
 
     /// A stop in progress: feed hold, waiting for Hold:0, then the reset.

@@ -175,9 +175,8 @@ void GrblClient::home(quint8 axisMask, Callback done)
         }
         self->m_positions.established |= homedMask;
         self->m_machine.alarm = 0;
-        for (int i = 0; i < self->m_map.size(); ++i)
-            if ((homedMask >> i) & 1u)
-                self->emitEvent(proto::EventKind::HomeDone, i, self->m_status.axes[i].commanded);
+        self->m_motion.homedAxes |= homedMask;
+        self->m_motion.homedAckUs = self->nowUs();
         reply(std::nullopt);
         self->sendQuery();
     });

@@ -89,6 +89,15 @@ void GrblClient::applyParameters(const grbl::Line& l)
 
 void GrblClient::emitEvent(proto::EventKind kind, int axis, double position, msg::Message detail, const QString& text)
 {
+    // Where an axis arrived, stopped or was homed: the event's position is in work coordinates
+    // (G54, as the screens show), and GRBL's machine coordinates differ by the work offset, so
+    // the detail says both.
+    const bool where = kind == proto::EventKind::HomeDone || kind == proto::EventKind::MotionDone || kind == proto::EventKind::Stopped;
+    if (where && detail.id.empty() && axis >= 0 && axis < m_identity.axes.size()) {
+        const msg::Unit unit = unitOf(axis);
+        detail = msg::make("grbl.event.position", {msg::real("work", position, unit),
+                                                   msg::real("machine", instrumentValue(axis, m_reports.machineMm), unit)});
+    }
     DeviceEvent e;
     e.kind = kind;
     e.axis = axis;
@@ -171,6 +180,12 @@ void GrblClient::onStatusReport(const grbl::StatusReport& r)
         softReset(true);
     }
     settleMotion(askedUs, st);
+    if (m_motion.homedAxes && askedUs > m_motion.homedAckUs) {
+        const quint32 homed = std::exchange(m_motion.homedAxes, 0u);
+        for (int i = 0; i < m_status.axes.size(); ++i)
+            if ((homed >> i) & 1u)
+                emitEvent(proto::EventKind::HomeDone, i, m_status.axes[i].commanded);
+    }
     if (m_jogs.cancelling && m_jogs.lines.open == 0 && askedUs > m_jogs.cancelSentUs && st != grbl::MachineState::Jog) {
         m_jogs.cancelling = false;
         updateJog();  // a jog asked for while the cancel ran starts now
