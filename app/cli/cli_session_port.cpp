@@ -6,6 +6,7 @@
 
 #include "device/backends/benchpilot/benchpilot_client.h"
 #include "device/backends/grbl/client/grbl_client.h"
+#include "device/backends/grbl/grbl_home_memory.h"
 #include "device/backends/protocol_probe.h"
 #include "device/files/machine_profile_file.h"
 #include "widgets/wording/wording.h"
@@ -70,6 +71,8 @@ bool CliSession::choosePortBackend(dev::Transport* transport)
     // GRBL names no instrument: the profile's, else --instrument's, else the analyzer.
     const proto::DeviceKind kind = profile ? profile->instrument : asked.value_or(proto::DeviceKind::Analyzer);
     auto* grbl = new dev::GrblClient(profile ? *profile : files::defaultProfile(kind), !profile.has_value());
+    grbl->rememberHomesIn(dev::GrblHomeMemory::defaultPath(), m_opt.port);
+    grbl->setRestartHeardBeforeConnect(found.grblBanner);
     m_ownProxy->setBackend(grbl);
     grbl->setTransport(transport);
     return true;

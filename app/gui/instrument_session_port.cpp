@@ -5,6 +5,7 @@
 
 #include "device/backends/benchpilot/benchpilot_client.h"
 #include "device/backends/grbl/client/grbl_client.h"
+#include "device/backends/grbl/grbl_home_memory.h"
 #include "device/backends/protocol_probe.h"
 #include "device/files/machine_profile_file.h"
 #include "widgets/wording/wording.h"
@@ -36,6 +37,7 @@ dev::GrblClient* InstrumentSession::grblOn(dev::Transport* transport, const ui::
         files::loadMachineProfileFile(choice.profile, &profile, nullptr);  // checked in connectPort()
     // A new backend per connection: the wiring may have changed with the profile.
     m_grbl = new dev::GrblClient(profile, choice.profile.isEmpty());
+    m_grbl->rememberHomesIn(dev::GrblHomeMemory::defaultPath(), choice.port);
     m_proxy->setBackend(m_grbl);
     m_grbl->setTransport(transport);
     return m_grbl;
@@ -84,9 +86,12 @@ void InstrumentSession::connectPort(dev::Transport* transport, const ui::Connect
             }
             benchPilotOn(transport)->connectLink();
             return;
-        case dev::ProbeResult::Protocol::Grbl:
-            grblOn(transport, choice)->connectLink();
+        case dev::ProbeResult::Protocol::Grbl: {
+            dev::GrblClient* grbl = grblOn(transport, choice);
+            grbl->setRestartHeardBeforeConnect(r.grblBanner);
+            grbl->connectLink();
             return;
+        }
         case dev::ProbeResult::Protocol::None:
             emit connectFailed(words::text(r.error));
             return;

@@ -2,9 +2,12 @@
 //   benchpilot-sim --instrument analyzer|stage --pty PATH [--protocol benchpilot|grbl|grblhal]
 //                  [--time-scale K] [--baud N]
 //                  [--gauge PATH --gauge-axis X [--gauge-resolution MM] [--gauge-noise MM]]
-//                  [--journal FILE]
+//                  [--journal FILE] [--no-homing]
 // --protocol chooses what the firmware speaks over the same machine model: the BenchPilot
 // protocol, or the GRBL 1.1 / grblHAL personality (docs/grbl.md).
+// The GRBL board runs on when a host opens the port, as most grblHAL boards do (a board that
+// restarts then is played in-process: GrblFirmware::setRestartsOnPortOpen). --no-homing: a GRBL
+// board without homing switches ($22=0), Idle at power-up.
 // --gauge serves a simulated length gauge on a second pty: it answers "?" + CR with the
 // true position of one axis' work point (docs/accuracy.md, "Gauge dialect"), which the
 // instrument's own encoder or grating does not see.
@@ -76,7 +79,9 @@ int main(int argc, char** argv)
     QCommandLineOption journal(QStringLiteral("journal"),
                                QCoreApplication::translate("sim", "write what the firmware executed to this file when stopped (benchpilot protocol only)"),
                                QStringLiteral("file"));
-    p.addOptions({instrument, ptyPath, protocol, timeScale, baud, gaugePath, gaugeAxis, gaugeResolution, gaugeNoise, journal});
+    QCommandLineOption noHoming(QStringLiteral("no-homing"),
+                                QCoreApplication::translate("sim", "the GRBL board has no homing switches ($22=0)"));
+    p.addOptions({instrument, ptyPath, protocol, timeScale, baud, gaugePath, gaugeAxis, gaugeResolution, gaugeNoise, journal, noHoming});
     // --version gives the licence too (app/common/version_text.h), not Qt's bare line.
     for (const QString& a : QCoreApplication::arguments().mid(1)) {
         if (a == QLatin1String("--"))
@@ -104,6 +109,8 @@ int main(int argc, char** argv)
     if (!ok || baudRate < 1200)
         return fail(QCoreApplication::translate("sim", "--baud must be at least 1200 (got '%1')").arg(p.value(baud)));
 
+    if (p.isSet(noHoming) && proto == QLatin1String("benchpilot"))
+        return fail(QCoreApplication::translate("sim", "--no-homing is for the GRBL personality (--protocol grbl or grblhal)"));
     if (p.isSet(journal) && proto != QLatin1String("benchpilot"))
         return fail(QCoreApplication::translate("sim", "--journal records the benchpilot protocol's requests only"));
 
@@ -156,6 +163,10 @@ int main(int argc, char** argv)
     } else {
         auto fw = std::make_unique<sim::GrblFirmware>(machine, proto == QLatin1String("grbl") ? sim::GrblFirmware::Dialect::Grbl
                                                                                                : sim::GrblFirmware::Dialect::GrblHal);
+        if (p.isSet(noHoming)) {
+            fw->settings().write(22, 0);
+            fw->restart();  // powered up so: Idle, no homing lock
+        }
         grbl = fw.get();
         simMachine = &fw->machine();
         host = std::make_unique<dev::SimulatorHost>(std::move(fw), &pty);

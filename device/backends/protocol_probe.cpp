@@ -129,6 +129,8 @@ void ProtocolProbe::onBytes(const QByteArray& bytes)
                                                               msg::verbatim("version", b->version)});
             else
                 r.found = msg::make("grbl.probe.found_grbl_unnamed");
+            for (const auto& other : lines)
+                r.grblBanner = r.grblBanner || grbl::parseBanner(other.text).has_value();
             finish(r);
             return;
         }

@@ -37,6 +37,9 @@ struct ProbeResult {
     msg::Message found;
     /// When protocol is None: why (grbl.probe.no_answer, grbl.probe.unreadable, link.*).
     msg::Message error;
+    /// GRBL's start-up banner came while probing: the controller restarted since the port was
+    /// opened (GrblClient::setRestartHeardBeforeConnect).
+    bool grblBanner = false;
 };
 
 class ProtocolProbe : public QObject {

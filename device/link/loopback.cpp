@@ -18,6 +18,7 @@ public:
             }
             m_open = true;
             emit opened();
+            m_pair->peerOpenedBy(m_side);
         });
     }
     void close() override { m_open = false; }
@@ -33,6 +34,11 @@ public:
         // lupdate files these under.
         return m_pair->m_baud > 0 ? QCoreApplication::translate("dev::LoopbackEnd", "loopback @ %1 baud").arg(m_pair->m_baud)
                                   : QCoreApplication::translate("dev::LoopbackEnd", "loopback");
+    }
+    void sayPeerOpened()
+    {
+        if (m_open)
+            emit peerOpened();
     }
     void deliver(const QByteArray& bytes)
     {
@@ -66,6 +72,8 @@ LoopbackPair::LoopbackPair(qint32 baud, QObject* parent) : QObject(parent), m_ba
 LoopbackPair::~LoopbackPair() = default;
 
 Transport* LoopbackPair::end(Side side) { return m_ends[side]; }
+
+void LoopbackPair::peerOpenedBy(int side) { static_cast<LoopbackEnd*>(m_ends[1 - side])->sayPeerOpened(); }
 
 void LoopbackPair::unplug()
 {

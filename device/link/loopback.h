@@ -52,6 +52,7 @@ private:
         QByteArray bytes;
     };
     void transmit(int from, const QByteArray& bytes, bool applyFaults);
+    void peerOpenedBy(int side);
     void deliverDue();
     void schedule();
 

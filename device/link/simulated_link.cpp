@@ -43,6 +43,11 @@ SimulatorHost::SimulatorHost(std::unique_ptr<sim::SerialDevice> device, Transpor
             m_reopen.start();  // still unplugged: try again shortly
     });
     connect(m_end, &Transport::opened, this, [this] { m_reopening = false; });
+    connect(m_end, &Transport::peerOpened, this, [this] {
+        pump();  // the restart happens at the present time
+        m_device->portOpened();
+        flush();
+    });
 }
 
 void SimulatorHost::start()

@@ -30,6 +30,10 @@ signals:
     void failed(const msg::Message& reason);  ///< link.* (docs/wording.md)
     void lost(const msg::Message& reason);
     void bytesReceived(const QByteArray& bytes);
+    /// The far end opened the line: on a device's end, a host opened the port (a board wired to
+    /// reset on DTR restarts then). Emitted before any byte the host sends after opening; only
+    /// by transports that can tell (the loopback pair, benchpilot-sim's pty).
+    void peerOpened();
 };
 
 } // namespace dev

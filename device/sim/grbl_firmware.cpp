@@ -128,6 +128,44 @@ void GrblFirmware::realtime(std::uint8_t b)
 
 // ---- reset and alarms ---------------------------------------------------------------------
 
+void GrblFirmware::portOpened()
+{
+    if (m_restartsOnOpen)
+        restart();
+}
+
+void GrblFirmware::restart()
+{
+    ++m_restarts;
+    if (m_state == State::Home)
+        m_machine.stop(0);
+    for (int i = 0; i < m_machine.axisCount(); ++i) {
+        m_machine.axis(i).holdHere();
+        m_origin[static_cast<std::size_t>(i)] = m_machine.axis(i).reference();  // the counters start at 0 here
+    }
+    m_motion.resetTo(std::vector<double>(static_cast<std::size_t>(m_axes), 0.0));
+    m_homed = false;
+    m_alarm = 0;
+    m_state = m_settings.homingEnabled() ? State::Alarm : State::Idle;
+    m_critical = false;
+    m_jogCancel = false;
+    m_softLimitHold = false;
+    m_pending = Pending{};
+    m_rx.clear();
+    m_line.clear();
+    m_lineOverflow = false;
+    m_statusRequested = false;
+    m_modal = GrblModalState{};
+    bool floodOn = false;
+    for (const auto& e : m_outputs)
+        if (e.port < 0)
+            floodOn = e.on;
+    if (floodOn)
+        m_outputs.push_back({m_machine.timeS(), -1, false});
+    m_out.clear();  // half a line it was sending dies with it
+    welcome();
+}
+
 void GrblFirmware::softReset()
 {
     const bool moving = (m_state == State::Run || m_state == State::Jog || m_state == State::Home)

@@ -16,7 +16,9 @@
 //   - ALARM:3 for a reset while moving, ALARM:1 on a limit switch with $21=1, ALARM:2 for a
 //     G-code target beyond the travel with $20=1 (both then wait for a reset), error:15 for
 //     a jog beyond it, error:5 for $H with homing disabled;
-//   - outputs (M8/M9, grblHAL M62–M65) recorded with the machine time they switched.
+//   - outputs (M8/M9, grblHAL M62–M65) recorded with the machine time they switched;
+//   - a board wired to restart when a host opens its port (an Arduino's DTR line), or one that
+//     does not (most grblHAL boards, native USB): setRestartsOnPortOpen().
 // What it knowingly does differently from real firmware is listed in docs/grbl.md.
 #include "device/sim/grbl_sim_gcode.h"
 #include "device/sim/grbl_sim_motion.h"
@@ -51,6 +53,17 @@ public:
     void advance(double dtS) override;
     /// Moves the bytes the device has sent since the last call to `out`.
     void drainOutput(std::vector<std::uint8_t>& out) override;
+    /// A host opened the port: a board that restarts on it does (restart()).
+    void portOpened() override;
+    /// Whether the board restarts when a host opens its port (off: it does not, and what it
+    /// sent meanwhile was lost on a closed port).
+    void setRestartsOnPortOpen(bool restarts) { m_restartsOnOpen = restarts; }
+    bool restartsOnPortOpen() const { return m_restartsOnOpen; }
+    /// Power-up again (a reset button, a brown-out, DTR): the steppers stop dead, every buffer is
+    /// emptied, the step counters start at 0 where the axes stand, the homing lock comes back;
+    /// the settings and G54 offset (EEPROM) stay. Then the banner.
+    void restart();
+    int restarts() const { return m_restarts; }
 
     SimMachine& machine() { return m_machine; }
     const SimMachine& machine() const { return m_machine; }
@@ -154,6 +167,8 @@ private:
     std::size_t m_maxRx = 0;
     int m_motionEnds = 0;
     bool m_wasMoving = false;
+    bool m_restartsOnOpen = false;
+    int m_restarts = 0;
 };
 
 } // namespace sim

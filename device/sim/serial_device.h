@@ -18,6 +18,9 @@ public:
     virtual void advance(double dtS) = 0;
     /// Moves the bytes the device has sent since the last call to `out`.
     virtual void drainOutput(std::vector<std::uint8_t>& out) = 0;
+    /// A host opened the port (where the transport can tell: Transport::peerOpened). A board
+    /// wired to restart then (an Arduino's DTR line) restarts; the others do nothing.
+    virtual void portOpened() {}
 };
 
 } // namespace sim

@@ -3495,6 +3495,14 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <source>--journal records the benchpilot protocol&apos;s requests only</source>
         <translation>--journal 只记录 benchpilot 协议的请求</translation>
     </message>
+    <message>
+        <source>the GRBL board has no homing switches ($22=0)</source>
+        <translation>GRBL 控制板没有回零开关（$22=0）</translation>
+    </message>
+    <message>
+        <source>--no-homing is for the GRBL personality (--protocol grbl or grblhal)</source>
+        <translation>--no-homing 仅用于 GRBL 模式（--protocol grbl 或 grblhal）</translation>
+    </message>
 </context>
 <context>
     <name>simapp::PtyTransport</name>
@@ -10527,11 +10535,6 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>停止被急停取代</translation>
     </message>
     <message>
-        <source>%1 %2 is beyond the machine travel %3 … %4 (the controller&apos;s $%5): refused before sending, since GRBL would stop with ALARM:2 and need a reset</source>
-        <comment>grbl.beyond_travel</comment>
-        <translation>%1 %2 超出机床行程 %3 … %4（控制器的 $%5）：发送前已拒绝，否则 GRBL 会以 ALARM:2 停机并需要复位</translation>
-    </message>
-    <message>
         <source>%1: the line &quot;%2&quot; cannot be sent</source>
         <comment>grbl.line_not_sent</comment>
         <translation>%1：无法发送“%2”这一行</translation>
@@ -10760,6 +10763,36 @@ A loop this different may oscillate or run away. Apply them?</source>
     <message>
         <source>the machine profile names no trigger output</source>
         <translation>机器配置未指定触发输出</translation>
+    </message>
+    <message>
+        <source>the controller has not restarted since home was set here: %1 keep their established positions</source>
+        <comment>grbl.home_kept</comment>
+        <translation>自在此设定原点以来控制器未曾重启：%1 保持确定的位置</translation>
+    </message>
+    <message>
+        <source>the controller restarted as the port opened (its start-up message came): %1 have no established position until home is set again</source>
+        <comment>grbl.home_lost_restart</comment>
+        <translation>打开端口时控制器重启了（收到了其启动信息）：在重新设定原点之前，%1 没有确定的位置</translation>
+    </message>
+    <message>
+        <source>the controller&apos;s work offset or machine position is not what it was when home was set here (it restarted, or another program moved it): %1 have no established position until home is set again</source>
+        <comment>grbl.home_lost_changed</comment>
+        <translation>控制器的工件偏移或机床坐标与在此设定原点时不同（它重启过，或被其他程序移动过）：在重新设定原点之前，%1 没有确定的位置</translation>
+    </message>
+    <message>
+        <source>the home set here cannot be remembered in %1: the next connection will not keep it</source>
+        <comment>grbl.home_not_saved</comment>
+        <translation>无法在 %1 中记住在此设定的原点：下次连接时不会保留</translation>
+    </message>
+    <message>
+        <source>%1 %2 is beyond the machine travel %3 … %4 (work coordinates, G54; the controller&apos;s $%5): refused before sending, since GRBL would stop with ALARM:2 and need a reset</source>
+        <comment>grbl.beyond_travel</comment>
+        <translation>%1 %2 超出机床行程 %3 … %4（工件坐标 G54；控制器的 $%5）：发送前已拒绝，否则 GRBL 会以 ALARM:2 停机并需要复位</translation>
+    </message>
+    <message>
+        <source>work position (G54) %1, machine position %2</source>
+        <comment>grbl.event.position</comment>
+        <translation>工件坐标（G54）%1，机床坐标 %2</translation>
     </message>
 </context>
 <context>

@@ -101,6 +101,11 @@ TEST(GrblWords, EveryIdTheBackendEmitsIsWorded)
         msg::make("grbl.trigger_bad_width", {msg::real("width", -1, msg::Unit::S)}),
         msg::make("grbl.event.estop"),
         msg::make("grbl.event.estop_cleared"),
+        msg::make("grbl.event.position", {msg::real("work", 0, msg::Unit::Mm), msg::real("machine", -41.712, msg::Unit::Mm)}),
+        msg::make("grbl.home_kept", {msg::verbatim("axes", "XY")}),
+        msg::make("grbl.home_lost_restart", {msg::verbatim("axes", "XY")}),
+        msg::make("grbl.home_lost_changed", {msg::verbatim("axes", "XY")}),
+        msg::make("grbl.home_not_saved", {msg::verbatim("file", "/home/u/.local/share/BenchPilot/grbl-homes.json")}),
         msg::make("grbl.path.already_running"),
         msg::make("grbl.path.not_begun"),
         msg::make("grbl.path.out_of_sequence", {msg::integer("expected", 4, msg::Unit::None), msg::integer("sent", 6, msg::Unit::None)}),
@@ -132,8 +137,10 @@ TEST(GrblWords, EveryIdTheBackendEmitsIsWorded)
     auto byId = [&all](const char* id) {
         return *std::find_if(all.begin(), all.end(), [id](const msg::Message& m) { return m.id == id; });
     };
-    EXPECT_EQ(words::text(byId("grbl.beyond_travel")), QStringLiteral("X 150.000 mm is beyond the machine travel 0.000 mm … 100.000 mm (the controller's $130): "
+    EXPECT_EQ(words::text(byId("grbl.beyond_travel")), QStringLiteral("X 150.000 mm is beyond the machine travel 0.000 mm … 100.000 mm (work coordinates, G54; the controller's $130): "
                                                    "refused before sending, since GRBL would stop with ALARM:2 and need a reset"));
+    // Where an axis ended up says which number is in which coordinates (machine vs work).
+    EXPECT_EQ(words::text(byId("grbl.event.position")), QStringLiteral("work position (G54) 0.000 mm, machine position -41.712 mm"));
     EXPECT_EQ(words::text(byId("grbl.line_not_sent")), QStringLiteral("move: the line \"G0 X1\" cannot be sent"));
     EXPECT_EQ(words::text(byId("grbl.probe.found_benchpilot")), QStringLiteral("BenchPilot protocol 1 (stage)"));
     for (const char* request : {"grbl.request.unlock", "grbl.request.dwell", "grbl.request.trigger", "grbl.request.status"})

@@ -10,6 +10,7 @@
 
 
 #include <cmath>
+#include <utility>
 
 namespace dev {
 
@@ -36,11 +37,14 @@ GrblClient::GrblClient(const files::MachineProfile& profile, bool lenient, QObje
 
 GrblClient::~GrblClient()
 {
+    // A program that ends without closing the link (a CLI run) leaves where the machine stands.
+    if (m_phase == Phase::Ready)
+        keepHomeOnLeave();
     // Callbacks may refer to objects already gone: drop them unanswered.
-    m_pending.clear();
-    m_statusWaiters.clear();
-    m_stopDone.clear();
-    m_resetDone.clear();
+    m_lines.pending.clear();
+    m_waiters.status.clear();
+    m_waiters.stop.clear();
+    m_waiters.reset.clear();
     for (const auto& c : m_transportConnections)
         disconnect(c);
 }
@@ -76,11 +80,11 @@ QString GrblClient::linkDescription() const { return m_transport ? m_transport->
 LinkStats GrblClient::stats() const
 {
     LinkStats s;
-    s.framesIn = m_bytesIn;
-    s.malformed = m_unknownLines;
-    s.oversize = m_garbageLines;
-    s.droppedBytes = m_reader.droppedBytes();
-    s.lateReplies = m_streamer.strayAcks();
+    s.framesIn = m_wire.bytesIn;
+    s.malformed = m_wire.unknownLines;
+    s.oversize = m_wire.garbageLines;
+    s.droppedBytes = m_wire.reader.droppedBytes();
+    s.lateReplies = m_lines.streamer.strayAcks();
     s.telemetrySamples = m_sampleIndex;
     s.telemetryBatches = m_sampleIndex;
     return s;
@@ -106,30 +110,20 @@ void GrblClient::connectLink()
     }
     if (m_state == LinkState::Connecting || m_state == LinkState::Identified || m_state == LinkState::Ready)
         return;
+    // A new connection: nothing is known of the controller at the other end, not even that it
+    // is the one of last time. The conversation, what the controller is, what it reported and
+    // its alarm state start afresh. Every way to Disconnected answered the lines and waiters
+    // already, so none are left to answer. Kept: the E-stop latch (only reset() clears it), and
+    // the instrument's shape and status until the controller is identified again, so a screen
+    // goes on showing them while it reconnects.
     m_phase = Phase::Closed;
-    m_reader.clear();
-    m_streamer.softReset(true);
-    m_backlog.clear();
-    m_pending.clear();
-    m_aloneInFlight = false;
-    m_expectedBanners = 0;
-    m_bytesIn = m_garbageLines = m_unknownLines = 0;
-    m_sawGrblLine = false;
-    m_syncAttempts = 0;
-    m_firmware = grbl::Firmware::Unknown;
-    m_bannerVersion.clear();
-    m_build = grbl::BuildInfo{};
-    m_settings.clear();
-    m_haveParameters = false;
-    m_g54Mm.clear();
-    m_g92Mm.clear();
-    m_tloMm = 0;
-    m_tracker = grbl::StatusTracker{};
-    m_querySent.clear();
-    m_alarm = 0;
-    m_critical = m_homing = m_stopping = false;
-    m_modalReady = false;
-    m_firstReport = true;
+    m_wire = Wire{};
+    m_wire.restartHeard = std::exchange(m_restartHeardBeforeConnect, false);
+    dropLines(msg::make("link.disconnected"));
+    m_controller = Controller{};
+    m_reports = Reports{};
+    m_machine = Machine{};
+    m_stop = Stop{};
     setState(LinkState::Connecting);
     if (m_transport->isOpen())
         QTimer::singleShot(0, this, [this] {
@@ -143,10 +137,10 @@ void GrblClient::connectLink()
 void GrblClient::onOpened()
 {
     m_phase = Phase::Syncing;
-    m_connectStartMs = m_clock.elapsed();
-    m_lastRxMs = m_connectStartMs;
-    m_syncAttempts = 1;
-    m_syncSentMs = m_clock.elapsed();
+    m_wire.connectStartMs = m_clock.elapsed();
+    m_wire.lastRxMs = m_wire.connectStartMs;
+    m_wire.syncAttempts = 1;
+    m_wire.syncSentMs = m_clock.elapsed();
     writeSync();
     m_linkTimer.start();
 }
@@ -158,40 +152,24 @@ void GrblClient::writeSync()
     // Answers before the [GC:] line are stale (another program's, or the leftovers'); the first
     // after it belongs to $G, and every later answer pairs with a line of ours. The '?' is
     // answered at once by a GRBL that is up.
-    m_syncSawParserState = false;
+    m_wire.syncSawParserState = false;
     m_transport->write(QByteArray("\n$G\n?", 5));
 }
 
 void GrblClient::failConnect(const msg::Message& why)
 {
-    m_pollTimer.stop();
-    m_linkTimer.stop();
-    m_jogTimer.stop();
-    failAllLines(why);
-    m_phase = Phase::Closed;
-    if (m_transport)
-        m_transport->close();
+    endLink(why);
     emit linkError(why);
     setState(LinkState::Disconnected);
 }
 
 void GrblClient::disconnectLink()
 {
-    if (m_state == LinkState::Ready && (m_jog || m_jogCancelling) && m_transport) {
+    if (m_state == LinkState::Ready && (m_jogs.run || m_jogs.cancelling) && m_transport) {
         // A jog queued ahead would run out by itself; cancel it rather than leave it to do so.
         m_transport->write(QByteArray(1, static_cast<char>(grbl::rt::kJogCancel)));
     }
-    m_heldJogs.clear();
-    m_stickJogs.clear();
-    m_jog.reset();
-    m_jogCancelling = false;
-    m_pollTimer.stop();
-    m_linkTimer.stop();
-    m_jogTimer.stop();
-    failAllLines(msg::make("link.disconnected"));
-    m_phase = Phase::Closed;
-    if (m_transport)
-        m_transport->close();
+    endLink(msg::make("link.disconnected"));
     setState(LinkState::Disconnected);
 }
 
@@ -199,106 +177,117 @@ void GrblClient::linkGone(const msg::Message& why)
 {
     if (m_state == LinkState::Disconnected || m_state == LinkState::Lost)
         return;
-    m_heldJogs.clear();
-    m_stickJogs.clear();
-    m_jog.reset();
-    m_jogCancelling = false;
-    m_pollTimer.stop();
-    m_linkTimer.stop();
-    m_jogTimer.stop();
-    failAllLines(why);
-    m_phase = Phase::Closed;
-    if (m_transport)
-        m_transport->close();
+    endLink(why);
     emit linkError(msg::make("link.lost", {msg::nested("cause", why)}));
     setState(LinkState::Lost);
 }
 
-void GrblClient::failAllLines(const msg::Message& why)
+void GrblClient::endLink(const msg::Message& why)
 {
-    m_streamer.softReset(true);
-    m_backlog.clear();
-    m_aloneInFlight = false;
-    auto pending = std::move(m_pending);
-    m_pending.clear();
-    m_lostReason = why;
-    for (auto& [tag, p] : pending)
-        if (p.done)
-            p.done(std::nullopt);
+    // Nothing more will be answered: every line and every waiter is answered now with `why`,
+    // and nothing is owed any more — no motion, no stop, no jog (a jog GRBL still runs ends
+    // with its short segments). What the controller is and reported stays until the next
+    // connection, for the screens to show.
+    if (m_phase == Phase::Ready)
+        keepHomeOnLeave();
+    m_pollTimer.stop();
+    m_linkTimer.stop();
+    m_jogTimer.stop();
+    m_jogs.forget();
+    LostLines lost = dropLines(why);
+    answerLost(lost);
     RequestError e;
     e.kind = RequestError::Kind::LinkDown;
     e.message = why;
-    auto waiters = std::move(m_statusWaiters);
-    m_statusWaiters.clear();
-    for (auto& w : waiters)
+    Waiters waiters = std::move(m_waiters);
+    m_waiters = Waiters{};
+    for (auto& w : waiters.status)
         if (w.done)
             w.done(e, m_status);
-    auto stops = std::move(m_stopDone);
-    m_stopDone.clear();
-    for (auto& d : stops)
+    for (auto& d : waiters.stop)
         if (d)
             d(e);
-    auto resets = std::move(m_resetDone);
-    m_resetDone.clear();
-    for (auto& d : resets)
+    for (auto& d : waiters.reset)
         if (d)
             d(e);
-    m_stopping = false;
-    m_motionAxes = 0;
-    m_motionLinesOpen = 0;
-    m_jogLinesOpen = 0;
-    m_jogTags.clear();
-    m_querySent.clear();
+    m_stop = Stop{};
+    m_motion = Motion{};
+    m_reports.querySent.clear();
+    m_reports.queryAgain = false;
+    m_phase = Phase::Closed;
+    if (m_transport)
+        m_transport->close();
+}
+
+GrblClient::LostLines GrblClient::dropLines(const msg::Message& why, std::vector<std::string>* inFlight)
+{
+    auto [acks, waiting] = m_lines.reset(why);
+    if (inFlight)
+        for (auto& a : acks)
+            inFlight->push_back(std::move(a.line));
+    // The lines motion and jogs count are gone with the queue; GRBL will answer none of them.
+    m_motion.linesOpen = 0;
+    m_jogs.lines = Jogs::Lines{};
+    return std::move(waiting);
+}
+
+void GrblClient::answerLost(LostLines& waiting)
+{
+    auto answering = std::move(waiting);
+    waiting.clear();
+    for (auto& [tag, p] : answering)
+        if (p.done)
+            p.done(std::nullopt);
 }
 
 void GrblClient::checkLink()
 {
     const qint64 now = m_clock.elapsed();
     if (m_phase == Phase::Syncing) {
-        if (m_syncAttempts < 2 && now - m_syncSentMs > std::min(kResyncMs, m_connectTimeoutMs / 2) && m_transport) {
+        if (m_wire.syncAttempts < 2 && now - m_wire.syncSentMs > std::min(kResyncMs, m_connectTimeoutMs / 2) && m_transport) {
             // A board that resets when its port opens (an Arduino's DTR) ate the first line
             // while its bootloader ran: say it again.
-            ++m_syncAttempts;
-            m_syncSentMs = now;
+            ++m_wire.syncAttempts;
+            m_wire.syncSentMs = now;
             writeSync();
         }
-        if (now - m_connectStartMs > m_connectTimeoutMs) {
+        if (now - m_wire.connectStartMs > m_connectTimeoutMs) {
             const msg::Arg link = msg::verbatim("link", linkDescription().toStdString());
             const msg::Arg seconds = msg::real("seconds", m_connectTimeoutMs / 1000.0, msg::Unit::S);
-            if (m_bytesIn == 0)
+            if (m_wire.bytesIn == 0)
                 failConnect(msg::make("grbl.connect.no_answer", {link, seconds}));
-            else if (!m_sawGrblLine)
+            else if (!m_wire.sawGrblLine)
                 failConnect(msg::make("grbl.connect.no_grbl_line",
-                                      {link, msg::integer("bytes", static_cast<long long>(m_bytesIn)), seconds}));
+                                      {link, msg::integer("bytes", static_cast<long long>(m_wire.bytesIn)), seconds}));
             else
                 failConnect(msg::make("grbl.connect.never_acknowledged", {link, seconds}));
         }
         return;
     }
     if (m_phase == Phase::Identifying) {
-        if (now - m_lastRxMs > m_connectTimeoutMs)
+        if (now - m_wire.lastRxMs > m_connectTimeoutMs)
             failConnect(msg::make("grbl.connect.identify_silent", {msg::verbatim("link", linkDescription().toStdString())}));
         return;
     }
     if (m_phase != Phase::Ready)
         return;
     // GRBL 1.1 does not answer '?' while homing, nor in a critical alarm: silence is expected then.
-    if (!m_homing && !m_critical && now - m_lastRxMs > kSilenceMs) {
+    if (!m_machine.homing && !m_machine.critical && now - m_wire.lastRxMs > kSilenceMs) {
         const msg::Arg seconds = msg::real("seconds", kSilenceMs / 1000.0, msg::Unit::S);
-        linkGone(m_unknownLines > 0
-                     ? msg::make("grbl.silent_with_noise", {seconds, msg::integer("count", static_cast<long long>(m_unknownLines))})
+        linkGone(m_wire.unknownLines > 0
+                     ? msg::make("grbl.silent_with_noise", {seconds, msg::integer("count", static_cast<long long>(m_wire.unknownLines))})
                      : msg::make("grbl.silent", {seconds}));
         return;
     }
-    if (m_stopping && now - m_stopStartMs > kStopMs) {
+    if (m_stop.active && now - m_stop.startMs > kStopMs) {
         RequestError e;
         e.kind = RequestError::Kind::Timeout;
         e.message = msg::make("grbl.stop_timeout", {msg::real("seconds", kStopMs / 1000.0, msg::Unit::S)});
         finishStop(e);
     }
-    if (!m_stickJogs.empty() && now > m_stickDeadlineMs) {
+    if (!m_jogs.stick.empty() && now > m_jogs.stickDeadlineMs) {
         // The caller stopped renewing the joystick's velocities: stop as a watchdog would.
-        m_stickJogs.clear();
+        m_jogs.stick.clear();
         updateJog();
     }
 }
@@ -312,7 +301,7 @@ void GrblClient::startIdentify()
             return;
         if (!a) {
             self->failConnect(msg::make("grbl.identify.not_answered",
-                                        {msg::verbatim("command", command), msg::nested("cause", self->m_lostReason)}));
+                                        {msg::verbatim("command", command), msg::nested("cause", self->m_lines.lostReason)}));
             return;
         }
         self->failConnect(msg::make("grbl.identify.refused", {msg::verbatim("command", command), msg::integer("code", a->errorCode, msg::Unit::None)}));
@@ -356,9 +345,9 @@ void GrblClient::onBytes(const QByteArray& bytes)
 {
     if (m_phase == Phase::Closed)
         return;
-    m_bytesIn += static_cast<quint64>(bytes.size());
+    m_wire.bytesIn += static_cast<quint64>(bytes.size());
     std::vector<grbl::LineReader::Line> lines;
-    m_reader.feed(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())), lines);
+    m_wire.reader.feed(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())), lines);
     for (const auto& l : lines) {
         onLine(l);
         if (m_phase == Phase::Closed)
@@ -369,29 +358,29 @@ void GrblClient::onBytes(const QByteArray& bytes)
 void GrblClient::onLine(const grbl::LineReader::Line& raw)
 {
     if (raw.truncated) {
-        ++m_garbageLines;
-        if (m_garbageLines == 1)
+        ++m_wire.garbageLines;
+        if (m_wire.garbageLines == 1)
             note(msg::make("grbl.line_too_long", {msg::integer("limit", static_cast<long long>(grbl::LineReader::kMaxLineBytes),
                                                                 msg::Unit::Byte)}));
         return;
     }
     const grbl::Line l = grbl::classifyLine(raw.text);
     if (l.kind == grbl::LineKind::Unknown) {
-        ++m_unknownLines;
-        if (m_unknownLines <= kUnknownNotedFirst || m_unknownLines % kUnknownNoteEvery == 0)
+        ++m_wire.unknownLines;
+        if (m_wire.unknownLines <= kUnknownNotedFirst || m_wire.unknownLines % kUnknownNoteEvery == 0)
             note(msg::make("grbl.unknown_line", {msg::verbatim("line", raw.text.substr(0, 120)),
-                                                 msg::integer("count", static_cast<long long>(m_unknownLines))}));
+                                                 msg::integer("count", static_cast<long long>(m_wire.unknownLines))}));
         return;
     }
     if (l.kind == grbl::LineKind::Empty)
         return;
-    m_sawGrblLine = true;
-    m_lastRxMs = m_clock.elapsed();
+    m_wire.sawGrblLine = true;
+    m_wire.lastRxMs = m_clock.elapsed();
     switch (l.kind) {
     case grbl::LineKind::Ok:
     case grbl::LineKind::Error:
         if (m_phase == Phase::Syncing) {
-            if (m_syncSawParserState)
+            if (m_wire.syncSawParserState)
                 startIdentify();  // $G's answer: from here on, answers pair with lines
             return;
         }
@@ -414,18 +403,18 @@ void GrblClient::onLine(const grbl::LineReader::Line& raw)
         return;
     case grbl::LineKind::Message: onDeviceMessage(std::string(l.payload)); return;
     case grbl::LineKind::Version:
-    case grbl::LineKind::Options: grbl::addBuildInfoLine(m_build, l); return;
+    case grbl::LineKind::Options: grbl::addBuildInfoLine(m_controller.build, l); return;
     case grbl::LineKind::Bracketed:
-        if (!grbl::addBuildInfoLine(m_build, l))
+        if (!grbl::addBuildInfoLine(m_controller.build, l))
             applyParameters(l);
         return;
     case grbl::LineKind::Setting:
         if (const auto s = grbl::parseSettingLine(raw.text))
-            m_settings.add(*s);
+            m_controller.settings.add(*s);
         return;
     case grbl::LineKind::ParserState:
         if (m_phase == Phase::Syncing) {
-            m_syncSawParserState = true;
+            m_wire.syncSawParserState = true;
             return;
         }
         note(msg::make("grbl.device_line", {msg::verbatim("line", raw.text.substr(0, 120))}));
@@ -439,94 +428,79 @@ void GrblClient::onLine(const grbl::LineReader::Line& raw)
 
 void GrblClient::onAck(bool ok, int code)
 {
-    const auto ack = m_streamer.acknowledge(ok, code);
+    const auto ack = m_lines.streamer.acknowledge(ok, code);
     if (!ack) {
         // An answer with nothing in flight: a second answer to a sync, or a line someone else
         // sent. Counted (stats().lateReplies); it is never matched to a later line.
         return;
     }
-    const auto it = m_pending.find(ack->tag);
+    const auto it = m_lines.pending.find(ack->tag);
     LineDone done;
-    if (it != m_pending.end()) {
+    if (it != m_lines.pending.end()) {
         if (it->second.alone)
-            m_aloneInFlight = false;
+            m_lines.aloneInFlight = false;
         done = std::move(it->second.done);
-        m_pending.erase(it);
+        m_lines.pending.erase(it);
     }
     if (done)
         done(ack);
     // After an error the streamer holds back what follows; each command decides for itself
     // (a pattern stops its own job), so the others go on.
-    m_streamer.resume();
+    m_lines.streamer.resume();
     pump();
 }
 
 void GrblClient::onBanner(const grbl::Banner& banner)
 {
-    if (m_firmware == grbl::Firmware::Unknown || banner.firmware == grbl::Firmware::GrblHal)
-        m_firmware = banner.firmware;
-    m_bannerVersion = banner.version;
-    m_sawGrblLine = true;
-    m_modalReady = false;
+    if (m_controller.firmware == grbl::Firmware::Unknown || banner.firmware == grbl::Firmware::GrblHal)
+        m_controller.firmware = banner.firmware;
+    m_controller.bannerVersion = banner.version;
+    m_wire.sawGrblLine = true;
+    m_lines.modalReady = false;
+    if (m_phase != Phase::Ready)
+        m_wire.restartHeard = true;
     if (m_phase == Phase::Syncing) {
         // The controller just started (an Arduino resets when its port opens). If the sync line
         // came before the reset it was lost: ask again soon unless its answer arrives.
-        m_syncSentMs = std::min(m_syncSentMs, m_clock.elapsed() - kResyncMs + 300);
-        m_syncAttempts = std::min(m_syncAttempts, 1);
+        m_wire.syncSentMs = std::min(m_wire.syncSentMs, m_clock.elapsed() - kResyncMs + 300);
+        m_wire.syncAttempts = std::min(m_wire.syncAttempts, 1);
         return;
     }
-    ++m_resets;
-    const bool expected = m_expectedBanners > 0;
+    ++m_wire.resets;
+    const bool expected = m_wire.expectedBanners > 0;
     if (expected) {
-        --m_expectedBanners;
+        --m_wire.expectedBanners;
     } else {
         // Nobody here asked for it: a power glitch, another program, a watchdog. Everything in
-        // flight is gone and the position can no longer be trusted.
+        // flight is gone, nothing moves, and no position can be trusted any more.
         std::vector<std::string> lost;
-        for (const auto& a : m_streamer.softReset(true))
-            lost.push_back(a.line);
-        m_backlog.clear();
-        m_aloneInFlight = false;
-        m_lostReason = msg::make("grbl.reset_by_itself");
-        auto pending = std::move(m_pending);
-        m_pending.clear();
-        m_established = 0;
-        m_motionAxes = 0;
-        m_motionLinesOpen = 0;
-        m_jogLinesOpen = 0;
-        m_jogTags.clear();
-        m_jog.reset();
-        m_heldJogs.clear();
-        m_stickJogs.clear();
-        m_jogCancelling = false;
+        LostLines waiting = dropLines(msg::make("grbl.reset_by_itself"), &lost);
+        loseEstablished();
+        m_motion = Motion{};
+        m_jogs.forget();
         const msg::Message detail = msg::make(
             "grbl.controller_reset", {msg::integer("lost", static_cast<long long>(lost.size())),
                                       msg::verbatim("first", lost.empty() ? std::string() : lost.front())});
         emitEvent(proto::EventKind::Fault, -1, 0, detail);
-        for (auto& [tag, p] : pending)
-            if (p.done)
-                p.done(std::nullopt);
+        answerLost(waiting);
     }
-    m_tracker.reset();
-    m_wcoMm.clear();
-    m_querySent.clear();
-    m_critical = false;
-    m_homing = false;
+    // Any reset: GRBL tells its state and offsets afresh, and no longer homes or holds a limit alarm.
+    m_reports.sinceReset();
+    m_machine.sinceReset();
     if (m_phase == Phase::Identifying) {
         // A reset in the middle of identification: start again from the sync.
         m_phase = Phase::Syncing;
-        m_syncAttempts = 1;
-        m_syncSentMs = m_clock.elapsed();
+        m_wire.syncAttempts = 1;
+        m_wire.syncSentMs = m_clock.elapsed();
         writeSync();
         return;
     }
     // The offsets may have changed with the reset (G92 is forgotten): read them again.
     queueLine("$#", {});
     emit controllerReset(expected);
-    if (m_stopping)
+    if (m_stop.active)
         finishStop(std::nullopt);
-    auto resets = std::move(m_resetDone);
-    m_resetDone.clear();
+    auto resets = std::exchange(m_waiters.reset, {});
     for (auto& d : resets)
         if (d)
             d(std::nullopt);
@@ -536,7 +510,7 @@ void GrblClient::onBanner(const grbl::Banner& banner)
 void GrblClient::onDeviceMessage(const std::string& text)
 {
     if (text == "Reset to continue")
-        m_critical = true;  // GRBL now hears nothing but 0x18
+        m_machine.critical = true;  // GRBL now hears nothing but 0x18
     note(msg::make("grbl.device_message", {msg::verbatim("text", text.substr(0, 200))}));
 }
 

@@ -75,6 +75,20 @@ public:
     /// How long a connection may take before it is refused (kConnectMs unless a test is in a hurry).
     void setConnectTimeoutMs(int ms) { m_connectTimeoutMs = ms; }
 
+    /// Where a home set here (setZero, with homing disabled) is remembered between connections
+    /// (GrblHomeMemory), and the port this controller is on. Without it every connection to a
+    /// controller without homing starts unestablished. The home is kept at the next connection
+    /// only when the controller can be told not to have restarted since: no start-up banner as
+    /// the port opened, no alarm, and the G54 offset and machine position this host last saw.
+    void rememberHomesIn(const QString& file, const QString& port)
+    {
+        m_homeFile = file;
+        m_homePort = port;
+    }
+    /// The probe that opened the port heard the controller's start-up banner (ProbeResult::grblBanner):
+    /// it restarted as the port opened. For the next connectLink().
+    void setRestartHeardBeforeConnect(bool heard) { m_restartHeardBeforeConnect = heard; }
+
     /// Not owned. Replacing the transport disconnects the old one first. A transport that is
     /// already open (a protocol probe opened it) is used as it is: no second open.
     void setTransport(Transport* transport);
@@ -82,12 +96,12 @@ public:
     const files::MachineProfile& profile() const { return m_profile; }
 
     // What the controller said about itself.
-    grbl::Firmware firmware() const { return m_firmware; }
-    const grbl::BuildInfo& buildInfo() const { return m_build; }
-    const grbl::Settings& settings() const { return m_settings; }
-    const grbl::MachineLimits& machineLimits() const { return m_limits; }
-    grbl::MachineState machineState() const { return m_tracker.state(); }
-    int alarmCode() const { return m_alarm; }
+    grbl::Firmware firmware() const { return m_controller.firmware; }
+    const grbl::BuildInfo& buildInfo() const { return m_controller.build; }
+    const grbl::Settings& settings() const { return m_controller.settings; }
+    const grbl::MachineLimits& machineLimits() const { return m_controller.limits; }
+    grbl::MachineState machineState() const { return m_reports.tracker.state(); }
+    int alarmCode() const { return m_machine.alarm; }
     double pollHz() const { return m_profile.statusPollHz; }
     /// The jog plan for a continuous jog of one axis at `speed` (axis units/s): what the GUI
     /// quotes for the release stop and the overrun of a lost host.
@@ -144,8 +158,8 @@ public:
     int grblIndexOf(int axis) const;
     /// The controller's letter for instrument axis `axis` ('X', 'A', …); 0 when unmapped.
     char grblLetterOf(int axis) const;
-    std::optional<double> feedMmMin() const { return m_tracker.feedMmMin(); }
-    const std::vector<double>& workPositionMm() const { return m_workMm; }
+    std::optional<double> feedMmMin() const { return m_reports.tracker.feedMmMin(); }
+    const std::vector<double>& workPositionMm() const { return m_reports.workMm; }
     /// True when the streamer holds no line in flight or queued.
     bool linesIdle() const;
     quint64 nowUs() const;
@@ -188,7 +202,13 @@ private:
     void finishIdentify();
     void failConnect(const msg::Message& why);
     void linkGone(const msg::Message& why);
-    void failAllLines(const msg::Message& why);
+    /// The link ended (closed, lost, or a connection that failed): the reset path they share.
+    void endLink(const msg::Message& why);
+    using LostLines = std::map<std::uint64_t, PendingLine>;
+    /// Empties the line queue and the counts of the lines motion and jogs own; the waiters are
+    /// returned for the caller to answer (answerLost) once its own state is consistent.
+    LostLines dropLines(const msg::Message& why, std::vector<std::string>* inFlight = nullptr);
+    static void answerLost(LostLines& waiting);
     /// The line's tag, or 0 when it cannot be sent.
     std::uint64_t queueLine(const std::string& line, LineDone done, bool alone = false);
     void pump();
@@ -211,9 +231,19 @@ private:
     void emitTelemetry(const std::vector<double>& workMm);
     // grbl_client_commands.cpp: helpers.
     void sendMotionLines(const std::vector<std::string>& lines, quint8 axes, const std::string& request, Callback done);
-    bool established(int axis) const { return (m_established >> axis) & 1u; }
+    bool established(int axis) const { return (m_positions.established >> axis) & 1u; }
     std::optional<RequestError> checkTarget(int axis, double target) const;
     void finishStop(const std::optional<RequestError>& e);
+    // grbl_client_home.cpp: the home set here, across connections.
+    std::string controllerKey() const;
+    /// At the first report of a connection to a controller without homing: the axes whose home,
+    /// set here before, still holds.
+    quint32 recallHome(grbl::MachineState state);
+    void rememberHome();
+    /// When the link ends: where the machine was last seen, for the next connection to compare.
+    void keepHomeOnLeave();
+    /// The positions are no longer trusted (an alarm, a restart): nor is the home remembered.
+    void loseEstablished();
     // grbl_client_jog.cpp: continuous jog.
     void updateJog();
     void topUpJog();
@@ -229,33 +259,74 @@ private:
     Phase m_phase = Phase::Closed;
     QElapsedTimer m_clock;
     QTimer m_pollTimer, m_linkTimer, m_jogTimer;
-
-    // The line protocol.
-    grbl::LineReader m_reader;
-    grbl::Streamer m_streamer;
-    std::deque<std::pair<std::string, std::uint64_t>> m_backlog;  ///< lines waiting for the streamer (behind an EEPROM line)
-    std::map<std::uint64_t, PendingLine> m_pending;               ///< by streamer tag
-    std::uint64_t m_nextTag = 1;
-    bool m_aloneInFlight = false;
-    bool m_modalReady = false;   ///< "G54 G17 G94" sent since the last reset
-    msg::Message m_lostReason;   ///< why lines in flight were lost, for the commands that owned them
-    int m_expectedBanners = 0;   ///< soft resets this host sent whose banner has not come yet
-    quint64 m_bytesIn = 0, m_garbageLines = 0, m_unknownLines = 0, m_resets = 0;
-    qint64 m_lastRxMs = -1, m_connectStartMs = 0, m_syncSentMs = 0;
-    int m_syncAttempts = 0;
     int m_connectTimeoutMs = kConnectMs;
-    bool m_syncSawParserState = false;
-    bool m_sawGrblLine = false;
+    std::uint64_t m_nextTag = 1;  ///< line tags are never reused, across resets and connections
+    QString m_homeFile, m_homePort;
+    bool m_restartHeardBeforeConnect = false;
 
-    // What the controller is.
-    grbl::Firmware m_firmware = grbl::Firmware::Unknown;
-    std::string m_bannerVersion;
-    grbl::BuildInfo m_build;
-    grbl::Settings m_settings;
-    grbl::MachineLimits m_limits;
-    std::vector<double> m_g54Mm, m_g92Mm;
-    double m_tloMm = 0;
-    bool m_haveParameters = false;
+    // ---- State, grouped by what it belongs to ---------------------------------------------
+    // Each group is reset as a whole — assigned afresh, or by its own reset() — so a field
+    // added to a group is reset by every path that resets the group. The paths, and the groups
+    // each one resets (the functions say why):
+    //   connectLink()        Wire, Lines, Controller, Reports, Machine, Stop
+    //   identified           the instrument's shape (m_identity, m_map, m_softLimits, m_status)
+    //   endLink()            Lines, Waiters (answered), Stop, Motion, Jog, Reports' queries
+    //   controller reset     Lines, Reports.sinceReset(), Machine.sinceReset(); unexpected:
+    //   (its banner)         also Motion, Jog, Positions
+    //   softReset() sent     Lines
+    //   estop()              Jog, Motion.axes, then softReset()
+    //   ALARM:N              Jog, Motion.axes, Positions (unless it keeps them)
+    // m_estopLatched is no group: the operator's latch outlives every reset but reset().
+
+    /// This connection's conversation: reading bytes into lines, the sync, what came in.
+    struct Wire {
+        grbl::LineReader reader;
+        quint64 bytesIn = 0, garbageLines = 0, unknownLines = 0, resets = 0;
+        qint64 lastRxMs = -1, connectStartMs = 0, syncSentMs = 0;
+        int syncAttempts = 0;
+        bool syncSawParserState = false;
+        bool sawGrblLine = false;
+        bool restartHeard = false;  ///< a start-up banner came before the controller was identified
+        int expectedBanners = 0;  ///< soft resets this host sent whose banner has not come yet
+    } m_wire;
+
+    /// The lines on their way to the controller and what waits for their answers. Whenever
+    /// the controller forgets its buffers or the link ends they are all lost at once
+    /// (dropLines(): every waiter answered with nullopt).
+    struct Lines {
+        grbl::Streamer streamer;  ///< its receive-buffer size ($I) outlives the resets
+        std::deque<std::pair<std::string, std::uint64_t>> backlog;  ///< waiting for the streamer (behind an EEPROM line)
+        std::map<std::uint64_t, PendingLine> pending;               ///< by streamer tag
+        bool aloneInFlight = false;
+        bool modalReady = false;  ///< "G54 G17 G94" sent since the last reset
+        msg::Message lostReason;  ///< why lines in flight were lost, for the commands that owned them
+        /// Empties the queue; the lines in flight (for the message) and the waiters (to answer).
+        std::pair<std::vector<grbl::Streamer::Ack>, std::map<std::uint64_t, PendingLine>> reset(const msg::Message& why)
+        {
+            auto lost = streamer.softReset(true);
+            backlog.clear();
+            aloneInFlight = false;
+            modalReady = false;
+            lostReason = why;
+            auto waiting = std::move(pending);
+            pending.clear();
+            return {std::move(lost), std::move(waiting)};
+        }
+    } m_lines;
+
+    /// What the controller said it is: read afresh at every connection.
+    struct Controller {
+        grbl::Firmware firmware = grbl::Firmware::Unknown;
+        std::string bannerVersion;
+        grbl::BuildInfo build;
+        grbl::Settings settings;
+        grbl::MachineLimits limits;
+        std::vector<double> g54Mm, g92Mm;  ///< $#
+        double tloMm = 0;
+        bool haveParameters = false;
+    } m_controller;
+
+    // The instrument the controller is, replaced whole when identified (buildIdentity).
     DeviceIdentity m_identity;
     struct AxisMap {
         int grbl = -1;       ///< index into the controller's axes
@@ -263,55 +334,102 @@ private:
     };
     QVector<AxisMap> m_map;  ///< per instrument axis
     QVector<SoftLimits> m_softLimits;
-
-    // State.
-    grbl::StatusTracker m_tracker;
     InstrumentStatus m_status;
-    std::vector<double> m_machineMm, m_workMm, m_wcoMm;
-    int m_alarm = 0;
-    bool m_critical = false;     ///< hard or soft limit alarm: GRBL hears nothing but a reset
-    bool m_homing = false;
+
+    /// What the status reports said, and the queries that ask for them.
+    struct Reports {
+        grbl::StatusTracker tracker;
+        std::vector<double> machineMm, workMm, wcoMm;
+        std::vector<double> lastWorkMm;  ///< the report before, for motion and velocity
+        quint64 lastUs = 0;
+        bool first = true;  ///< the first report of the connection decides what is established
+        /// Send times of the '?' not answered yet, oldest first (a report answers the oldest:
+        /// when GRBL folds two queries into one report, later reports are dated conservatively early).
+        std::deque<quint64> querySent;
+        bool queryAgain = false;
+        /// The controller reset: its state and offsets come again in its next reports, and no
+        /// query sent before is answered. The last positions stay on screen until then.
+        void sinceReset()
+        {
+            tracker.reset();
+            wcoMm.clear();
+            querySent.clear();
+            queryAgain = false;
+        }
+    } m_reports;
+
+    /// What the controller is doing that the host must know to talk to it.
+    struct Machine {
+        int alarm = 0;
+        bool critical = false;  ///< hard or soft limit alarm: GRBL hears nothing but a reset
+        bool homing = false;    ///< $H running: GRBL answers no '?' until it ends
+        /// A reset ends a critical alarm and a homing cycle; the alarm code stays (ALARM:3 may follow).
+        void sinceReset() { critical = homing = false; }
+    } m_machine;
     bool m_estopLatched = false;
-    quint32 m_established = 0;   ///< instrument axes whose position is trusted (homed, unlocked, set here)
-    /// Send times of the '?' not answered yet, oldest first (a report answers the oldest: when
-    /// GRBL folds two queries into one report, later reports are dated conservatively early).
-    std::deque<quint64> m_querySent;
-    bool m_queryAgain = false;
-    bool m_firstReport = true;
+
+    /// Which positions are trusted.
+    struct Positions {
+        quint32 established = 0;  ///< instrument axes whose position is trusted (homed, unlocked, set here)
+    } m_positions;
+
+    /// Motion the host commanded, owing MotionDone or Stopped.
+    struct Motion {
+        quint32 axes = 0;    ///< instrument axes owing MotionDone
+        int linesOpen = 0;   ///< their lines not yet acknowledged
+        quint64 ackUs = 0;   ///< when the last of them was acknowledged
+        /// Axes owing HomeDone: told with the first report asked after $H was acknowledged, so
+        /// that the event carries where homing left them, not where the last report before it saw them.
+        quint32 homedAxes = 0;
+        quint64 homedAckUs = 0;
+    } m_motion;
+
+    /// A stop in progress: feed hold, waiting for Hold:0, then the reset.
+    struct Stop {
+        bool active = false;
+        bool resetSent = false;
+        quint64 askedUs = 0;  ///< when the feed hold went out: reports asked later judge the hold
+        qint64 startMs = 0;
+    } m_stop;
+
+    /// Callers waiting for something other than a line's answer; answered, never dropped, when the link ends.
     struct StatusWaiter {
         quint64 sinceUs;
         StatusCallback done;
     };
-    std::vector<StatusWaiter> m_statusWaiters;
+    struct Waiters {
+        std::vector<StatusWaiter> status;
+        std::vector<Callback> stop;
+        std::vector<Callback> reset;  ///< reset()/estop()/unlock() waiting for the banner
+    } m_waiters;
 
-    // Motion the host commanded, for MotionDone / Stopped.
-    quint32 m_motionAxes = 0;      ///< instrument axes owing MotionDone
-    int m_motionLinesOpen = 0;     ///< their lines not yet acknowledged
-    quint64 m_motionAckUs = 0;     ///< when the last of them was acknowledged
-    std::vector<double> m_lastReportWork;
-    quint64 m_lastReportUs = 0;
-    // A stop in progress: feed hold, waiting for Hold:0, then the reset.
-    bool m_stopping = false;
-    bool m_stopResetSent = false;
-    quint64 m_stopAskedUs = 0;          ///< when the feed hold went out: reports asked later judge the hold
-    qint64 m_stopStartMs = 0;
-    std::vector<Callback> m_stopDone;
-    std::vector<Callback> m_resetDone;  ///< reset()/estop() waiting for the banner
+    /// Continuous jog: what is asked (held keys, the joystick), the jog running, and its lines.
+    struct Jogs {
+        /// The jog lines queued or in flight: they belong to the line queue and are dropped
+        /// with it (dropLines()), not before — GRBL still answers each one.
+        struct Lines {
+            int open = 0;
+            std::set<std::uint64_t> tags;
+        } lines;
+        QHash<int, double> held;        ///< startJog: axis → velocity
+        std::map<int, double> stick;    ///< setJogVelocities: axis → velocity
+        qint64 stickDeadlineMs = 0;
+        std::optional<grbl::ContinuousJog> run;
+        std::vector<double> velocityMmS;  ///< per GRBL axis, the vector `run` runs
+        bool cancelling = false;
+        int linesAtCancel = 0;            ///< jog lines unacknowledged when 0x85 went out
+        quint64 cancelSentUs = 0;
+        bool refusedSaid = false;
+        /// Nothing asked, nothing running: everything but the lines still in the queue.
+        void forget()
+        {
+            Lines keep = std::move(lines);
+            *this = Jogs{};
+            lines = std::move(keep);
+        }
+    } m_jogs;
 
-    // Continuous jog.
-    QHash<int, double> m_heldJogs;        ///< startJog: axis → velocity
-    std::map<int, double> m_stickJogs;    ///< setJogVelocities: axis → velocity
-    qint64 m_stickDeadlineMs = 0;
-    std::optional<grbl::ContinuousJog> m_jog;
-    std::vector<double> m_jogVelocityMmS; ///< per GRBL axis, the vector m_jog runs
-    int m_jogLinesOpen = 0;               ///< jog lines queued or in flight
-    std::set<std::uint64_t> m_jogTags;    ///< their tags
-    bool m_jogCancelling = false;
-    int m_jogLinesAtCancel = 0;           ///< jog lines unacknowledged when 0x85 went out
-    quint64 m_jogCancelSentUs = 0;
-    bool m_jogRefusedSaid = false;
-
-    // Telemetry from status reports.
+    // Telemetry from status reports: the subscription outlives the link.
     QVector<proto::ChannelRef> m_channels;
     int m_rateHz = 0;
     std::uint32_t m_sampleIndex = 0;

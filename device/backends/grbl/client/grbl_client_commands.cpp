@@ -94,21 +94,21 @@ void GrblClient::sendMotionLines(const std::vector<std::string>& lines, quint8 a
     };
     auto progress = std::make_shared<Progress>(Progress{lines.size()});
     const QPointer<GrblClient> self(this);
-    m_motionAxes |= axes;
+    m_motion.axes |= axes;
     for (const std::string& line : lines) {
-        ++m_motionLinesOpen;
+        ++m_motion.linesOpen;
         const bool queued = queueLine(line, [self, progress, request, done](const std::optional<grbl::Streamer::Ack>& a) {
             if (!self)
                 return;
-            self->m_motionLinesOpen = std::max(0, self->m_motionLinesOpen - 1);
-            self->m_motionAckUs = self->nowUs();
+            self->m_motion.linesOpen = std::max(0, self->m_motion.linesOpen - 1);
+            self->m_motion.ackUs = self->nowUs();
             if (progress->finished)
                 return;
             if (!a || !a->ok) {
                 progress->finished = true;
                 const RequestError e = a ? errorOf(a->errorCode, a->line, request)
                                          : refusal(self->isReady() ? RequestError::Kind::Device : RequestError::Kind::LinkDown,
-                                                   abandoned(request, self->m_lostReason));
+                                                   abandoned(request, self->m_lines.lostReason));
                 emit self->requestFailed(e);
                 if (done)
                     done(e);
@@ -121,7 +121,7 @@ void GrblClient::sendMotionLines(const std::vector<std::string>& lines, quint8 a
             }
         });
         if (!queued) {
-            --m_motionLinesOpen;
+            --m_motion.linesOpen;
             if (!progress->finished) {
                 progress->finished = true;
                 GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("grbl.line_not_sent", {msg::term("request", request), msg::verbatim("line", line)})));
@@ -160,29 +160,28 @@ void GrblClient::home(quint8 axisMask, Callback done)
         if (done)
             done(e);
     };
-    m_homing = true;
+    m_machine.homing = true;
     const QPointer<GrblClient> self(this);
     const quint32 homedMask = axisMask == 0 ? all : (axisMask & all);
     const bool queued = queueLine(line, [self, reply, homedMask, line](const std::optional<grbl::Streamer::Ack>& a) {
         if (!self)
             return;
-        self->m_homing = false;
+        self->m_machine.homing = false;
         if (!a || !a->ok) {
-            const RequestError e = a ? errorOf(a->errorCode, a->line, "request.home") : refusal(RequestError::Kind::Device, abandoned("request.home", self->m_lostReason));
+            const RequestError e = a ? errorOf(a->errorCode, a->line, "request.home") : refusal(RequestError::Kind::Device, abandoned("request.home", self->m_lines.lostReason));
             emit self->requestFailed(e);
             reply(e);
             return;
         }
-        self->m_established |= homedMask;
-        self->m_alarm = 0;
-        for (int i = 0; i < self->m_map.size(); ++i)
-            if ((homedMask >> i) & 1u)
-                self->emitEvent(proto::EventKind::HomeDone, i, self->m_status.axes[i].commanded);
+        self->m_positions.established |= homedMask;
+        self->m_machine.alarm = 0;
+        self->m_motion.homedAxes |= homedMask;
+        self->m_motion.homedAckUs = self->nowUs();
         reply(std::nullopt);
         self->sendQuery();
     });
     if (!queued) {
-        m_homing = false;
+        m_machine.homing = false;
         GRBL_REFUSE(done, notSent("request.home"));
     }
     // No refusal in the first moments means GRBL is homing: say "accepted" as other backends do.
@@ -201,15 +200,15 @@ void GrblClient::unlock(Callback done)
             if (!self)
                 return;
             if (!a || !a->ok) {
-                const RequestError e = a ? errorOf(a->errorCode, a->line, "grbl.request.unlock") : refusal(RequestError::Kind::Device, abandoned("grbl.request.unlock", self->m_lostReason));
+                const RequestError e = a ? errorOf(a->errorCode, a->line, "grbl.request.unlock") : refusal(RequestError::Kind::Device, abandoned("grbl.request.unlock", self->m_lines.lostReason));
                 emit self->requestFailed(e);
                 if (done)
                     done(e);
                 return;
             }
             // The operator's word: the position GRBL believes is taken as true.
-            self->m_established = (1u << self->m_map.size()) - 1;
-            self->m_alarm = 0;
+            self->m_positions.established = (1u << self->m_map.size()) - 1;
+            self->m_machine.alarm = 0;
             self->sendQuery();
             if (done)
                 done(std::nullopt);
@@ -217,9 +216,9 @@ void GrblClient::unlock(Callback done)
         if (!queued && done)
             done(notSent("grbl.request.unlock"));
     };
-    if (m_critical) {
+    if (m_machine.critical) {
         // A limit alarm hears nothing but a reset: reset first, then unlock.
-        m_resetDone.push_back([sendUnlock, done](const std::optional<RequestError>& e) {
+        m_waiters.reset.push_back([sendUnlock, done](const std::optional<RequestError>& e) {
             if (e) {
                 if (done)
                     done(e);
@@ -256,17 +255,24 @@ void GrblClient::setZero(quint8 axisMask, Callback done)
             if (!self)
                 return;
             if (!a || !a->ok) {
-                const RequestError e = a ? errorOf(a->errorCode, a->line, "request.set_zero") : refusal(RequestError::Kind::Device, abandoned("request.set_zero", self->m_lostReason));
+                const RequestError e = a ? errorOf(a->errorCode, a->line, "request.set_zero") : refusal(RequestError::Kind::Device, abandoned("request.set_zero", self->m_lines.lostReason));
                 emit self->requestFailed(e);
                 if (done)
                     done(e);
                 return;
             }
             // Taken as home on the operator's word: absolute moves are allowed from here.
-            self->m_established |= mask;
-            self->queueLine("$#", {});  // the new offset, for the travel
+            self->m_positions.established |= mask;
             self->sendQuery();
-            if (done)
+            // The new offset, for the travel and for the next connection to recognise; done once
+            // it is read, so a script that disconnects at once leaves it remembered.
+            const bool asked = self->queueLine("$#", [self, done](const std::optional<grbl::Streamer::Ack>& offsets) {
+                if (self && offsets && offsets->ok)
+                    self->rememberHome();
+                if (done)
+                    done(std::nullopt);
+            });
+            if (!asked && done)
                 done(std::nullopt);
         },
         true);
@@ -359,28 +365,28 @@ void GrblClient::stop(quint8, Callback done)
     if (!isReady())
         GRBL_REFUSE(done, notSent("request.stop"));
     // GRBL stops all its axes or none.
-    const bool jogging = m_jog.has_value() || m_jogCancelling || !m_heldJogs.isEmpty() || !m_stickJogs.empty()
-                         || m_tracker.state() == grbl::MachineState::Jog;
-    m_heldJogs.clear();
-    m_stickJogs.clear();
+    const bool jogging = m_jogs.run.has_value() || m_jogs.cancelling || !m_jogs.held.isEmpty() || !m_jogs.stick.empty()
+                         || m_reports.tracker.state() == grbl::MachineState::Jog;
+    m_jogs.held.clear();
+    m_jogs.stick.clear();
     if (jogging)
         cancelJog();
-    const bool gcodeMotion = m_motionAxes || !linesIdle() || m_tracker.state() == grbl::MachineState::Run
-                             || m_tracker.state() == grbl::MachineState::Hold;
-    if (!gcodeMotion || m_critical) {
+    const bool gcodeMotion = m_motion.axes || !linesIdle() || m_reports.tracker.state() == grbl::MachineState::Run
+                             || m_reports.tracker.state() == grbl::MachineState::Hold;
+    if (!gcodeMotion || m_machine.critical) {
         if (done)
             done(std::nullopt);
         return;
     }
     // Feed hold: GRBL slows down along its path; once at rest (Hold:0) a soft reset forgets
     // every queued line without losing the position (onStatusReport sends it).
-    m_stopDone.push_back(std::move(done));
-    if (m_stopping)
+    m_waiters.stop.push_back(std::move(done));
+    if (m_stop.active)
         return;
-    m_stopping = true;
-    m_stopResetSent = false;
-    m_stopStartMs = m_clock.elapsed();
-    m_stopAskedUs = nowUs();
+    m_stop.active = true;
+    m_stop.resetSent = false;
+    m_stop.startMs = m_clock.elapsed();
+    m_stop.askedUs = nowUs();
     sendRealtime(grbl::rt::kFeedHold);
     sendQuery();
 }
@@ -392,29 +398,29 @@ void GrblClient::holdThenFlush(Callback done)
             done(refusal(RequestError::Kind::LinkDown, msg::make("request.instrument_not_connected")));
         return;
     }
-    m_stopDone.push_back(std::move(done));
-    if (m_stopping)
+    m_waiters.stop.push_back(std::move(done));
+    if (m_stop.active)
         return;
-    m_stopping = true;
-    m_stopResetSent = false;
-    m_stopStartMs = m_clock.elapsed();
-    m_stopAskedUs = nowUs();
+    m_stop.active = true;
+    m_stop.resetSent = false;
+    m_stop.startMs = m_clock.elapsed();
+    m_stop.askedUs = nowUs();
     sendRealtime(grbl::rt::kFeedHold);
     sendQuery();
 }
 
 void GrblClient::finishStop(const std::optional<RequestError>& e)
 {
-    m_stopping = false;
-    m_stopResetSent = false;
-    const quint32 axes = m_motionAxes;
-    m_motionAxes = 0;
+    m_stop.active = false;
+    m_stop.resetSent = false;
+    const quint32 axes = m_motion.axes;
+    m_motion.axes = 0;
     if (!e)
         for (int i = 0; i < m_status.axes.size(); ++i)
             if ((axes >> i) & 1u)
                 emitEvent(proto::EventKind::Stopped, i, m_status.axes[i].commanded);
-    auto waiting = std::move(m_stopDone);
-    m_stopDone.clear();
+    auto waiting = std::move(m_waiters.stop);
+    m_waiters.stop.clear();
     for (auto& d : waiting)
         if (d)
             d(e);
@@ -426,17 +432,15 @@ void GrblClient::estop(Callback done)
         GRBL_REFUSE(done, notSent("request.estop"));
     // Feed hold and soft reset at once: the steppers stop dead. GRBL keeps its position only if
     // nothing was moving; otherwise it reports ALARM:3 and the position must be re-established.
-    m_heldJogs.clear();
-    m_stickJogs.clear();
-    m_jog.reset();
-    m_jogCancelling = false;
+    // No jog goes on and no motion is owed; the lines go with the soft reset below.
+    m_jogs.forget();
     m_jogTimer.stop();
     m_estopLatched = true;
-    m_motionAxes = 0;
+    m_motion.axes = 0;
     sendRealtime(grbl::rt::kFeedHold);
-    if (m_stopping)
+    if (m_stop.active)
         finishStop(refusal(RequestError::Kind::Device, msg::make("grbl.stop_overtaken_by_estop"), proto::ErrorCode::EStopActive));
-    m_resetDone.push_back(std::move(done));
+    m_waiters.reset.push_back(std::move(done));
     softReset(true);
     m_status.estop = true;
     emitEvent(proto::EventKind::EStop, -1, 0, msg::make("grbl.event.estop"));
@@ -453,9 +457,9 @@ void GrblClient::reset(Callback done)
     if (wasLatched)
         emitEvent(proto::EventKind::Reset, -1, 0, msg::make("grbl.event.estop_cleared"));
     emit statusChanged(m_status);
-    if (m_critical) {
+    if (m_machine.critical) {
         // A limit alarm waits for a soft reset; the position lock (Alarm) stays until home or unlock.
-        m_resetDone.push_back(std::move(done));
+        m_waiters.reset.push_back(std::move(done));
         softReset(true);
         return;
     }
@@ -477,7 +481,7 @@ void GrblClient::dwell(double seconds, Callback done)
             return;
         if (!a)
             return done(refusal(self->isReady() ? RequestError::Kind::Device : RequestError::Kind::LinkDown,
-                                abandoned("grbl.request.dwell", self->m_lostReason)));
+                                abandoned("grbl.request.dwell", self->m_lines.lostReason)));
         done(a->ok ? std::nullopt : std::optional<RequestError>(errorOf(a->errorCode, a->line, "grbl.request.dwell")));
     });
     if (!queued)
@@ -508,7 +512,7 @@ void GrblClient::pulseTrigger(double widthS, Callback done)
                 return;
             if (!a || !a->ok) {
                 *failed = true;
-                const RequestError e = a ? errorOf(a->errorCode, a->line, "grbl.request.trigger") : refusal(RequestError::Kind::Device, abandoned("grbl.request.trigger", self->m_lostReason));
+                const RequestError e = a ? errorOf(a->errorCode, a->line, "grbl.request.trigger") : refusal(RequestError::Kind::Device, abandoned("grbl.request.trigger", self->m_lines.lostReason));
                 emit self->requestFailed(e);
                 if (done)
                     done(e);

@@ -11,12 +11,12 @@ namespace dev {
 
 std::string GrblClient::axisLettersOfController() const
 {
-    if (!m_build.axisLetters.empty())
-        return m_build.axisLetters;  // grblHAL's [AXS:n:XYZA]
+    if (!m_controller.build.axisLetters.empty())
+        return m_controller.build.axisLetters;  // grblHAL's [AXS:n:XYZA]
     // Stock GRBL has X, Y and Z; a four- to six-axis build has the settings of its extra axes.
     std::string letters = "XYZ";
     for (int k = 3; k < 6; ++k)
-        if (m_settings.has(grbl::setting::kMaxRateMmMinX + k))
+        if (m_controller.settings.has(grbl::setting::kMaxRateMmMinX + k))
             letters.push_back("XYZABC"[k]);
         else
             break;
@@ -26,7 +26,7 @@ std::string GrblClient::axisLettersOfController() const
 bool GrblClient::buildIdentity(msg::Message* why)
 {
     const std::string letters = axisLettersOfController();
-    grbl::LimitsRead read = grbl::machineLimits(m_settings, letters);
+    grbl::LimitsRead read = grbl::machineLimits(m_controller.settings, letters);
     if (!read.limits) {
         // The refusal names the first problem and how many there are; each one is noted.
         for (const auto& p : read.problems)
@@ -36,20 +36,20 @@ bool GrblClient::buildIdentity(msg::Message* why)
                           msg::integer("count", static_cast<long long>(read.problems.size()))});
         return false;
     }
-    m_limits = *read.limits;
-    if (m_limits.reportInches) {
+    m_controller.limits = *read.limits;
+    if (m_controller.limits.reportInches) {
         if (m_profile.inchReports == files::MachineProfile::InchReports::Refuse) {
             *why = msg::make("grbl.identify.inches_refused");
             return false;
         }
-        m_tracker.setReportInches(true);
+        m_reports.tracker.setReportInches(true);
     }
     for (const auto& w : read.warnings)
         note(w);
-    if (m_build.firmware == grbl::Firmware::GrblHal)
-        m_firmware = grbl::Firmware::GrblHal;
-    if (m_firmware == grbl::Firmware::Unknown)
-        m_firmware = grbl::Firmware::Grbl;
+    if (m_controller.build.firmware == grbl::Firmware::GrblHal)
+        m_controller.firmware = grbl::Firmware::GrblHal;
+    if (m_controller.firmware == grbl::Firmware::Unknown)
+        m_controller.firmware = grbl::Firmware::Grbl;
 
     // The wiring: every axis the profile names must exist on this controller.
     QVector<AxisMap> map;
@@ -83,23 +83,23 @@ bool GrblClient::buildIdentity(msg::Message* why)
         }
     }
     m_map = map;
-    m_streamer.setRxBufferBytes(m_build.rxBufferOrDefault(m_firmware));
+    m_lines.streamer.setRxBufferBytes(m_controller.build.rxBufferOrDefault(m_controller.firmware));
 
     DeviceIdentity id;
     id.kind = m_profile.instrument;
-    std::string version = m_bannerVersion;
+    std::string version = m_controller.bannerVersion;
     if (version.empty())
-        version = m_build.version.substr(0, m_build.version.find('.', m_build.version.find('.') + 1));
-    id.family = QStringLiteral("%1 %2").arg(m_firmware == grbl::Firmware::GrblHal ? QStringLiteral("grblHAL") : QStringLiteral("Grbl"),
+        version = m_controller.build.version.substr(0, m_controller.build.version.find('.', m_controller.build.version.find('.') + 1));
+    id.family = QStringLiteral("%1 %2").arg(m_controller.firmware == grbl::Firmware::GrblHal ? QStringLiteral("grblHAL") : QStringLiteral("Grbl"),
                                             QString::fromStdString(version));
     id.model = m_profile.name.empty() ? tr("GRBL controller") : QString::fromStdString(m_profile.name);
-    id.firmware = QString::fromStdString(m_build.version.empty() ? version : m_build.version);
+    id.firmware = QString::fromStdString(m_controller.build.version.empty() ? version : m_controller.build.version);
     id.protocolVersion = 0;
     id.motionProfile = proto::MotionProfile::Trapezoid;  // GRBL plans trapezoids: no jerk limit
     id.maxTelemetryRateHz = static_cast<std::uint32_t>(std::lround(m_profile.statusPollHz));
     id.jogWatchdogMs = 0;  // nothing on the controller stops a jog the host stops renewing
     for (int i = 0; i < map.size(); ++i) {
-        const grbl::AxisLimits& l = m_limits.axes[static_cast<std::size_t>(map[i].grbl)];
+        const grbl::AxisLimits& l = m_controller.limits.axes[static_cast<std::size_t>(map[i].grbl)];
         AxisDescriptor d;
         d.letter = QChar::fromLatin1(instrumentLetters[static_cast<std::size_t>(i)]);
         d.unit = d.letter == QLatin1Char('P') ? proto::AxisUnit::Microlitre : proto::AxisUnit::Millimetre;
@@ -124,15 +124,21 @@ void GrblClient::updateTravel()
     // Machine space per GRBL axis: with homing forcing the origin (OPT Z, grblHAL $22 bit 3) it
     // lies on the side homing comes from; otherwise GRBL's [−travel, 0]. With homing disabled
     // nothing anchors it: the travel is taken from the point set as home towards +.
-    const bool homing = m_limits.homingEnabled;
-    const bool forceOrigin = m_build.hasOption('Z')
-                             || (m_firmware == grbl::Firmware::GrblHal
-                                 && ((static_cast<unsigned>(m_settings.value(grbl::setting::kHomingCycle).value_or(0)) >> 3) & 1u));
+    const bool homing = m_controller.limits.homingEnabled;
+    const bool forceOrigin = m_controller.build.hasOption('Z')
+                             || (m_controller.firmware == grbl::Firmware::GrblHal
+                                 && ((static_cast<unsigned>(m_controller.settings.value(grbl::setting::kHomingCycle).value_or(0)) >> 3) & 1u));
+    // Until the controller of this connection is identified the wiring is the last one's and the
+    // limits are not read yet: nothing to anchor (buildIdentity calls this once they are).
+    if (m_map.isEmpty() || m_controller.limits.axes.empty())
+        return;
     bool changed = false;
     for (int i = 0; i < m_map.size() && i < m_identity.axes.size(); ++i) {
         const auto g = static_cast<std::size_t>(m_map[i].grbl);
-        const grbl::AxisLimits& l = m_limits.axes[g];
-        const double wco = g < m_wcoMm.size() ? m_wcoMm[g] : 0.0;
+        if (g >= m_controller.limits.axes.size())
+            continue;
+        const grbl::AxisLimits& l = m_controller.limits.axes[g];
+        const double wco = g < m_reports.wcoMm.size() ? m_reports.wcoMm[g] : 0.0;
         double lo = 0, hi = l.maxTravelMm;  // work coordinates
         if (homing) {
             const bool positive = forceOrigin && l.homesNegative;
@@ -181,13 +187,13 @@ grbl::JogPlan GrblClient::jogPlan(int axis, double speed) const
 {
     grbl::JogPlanInput in;
     const int g = grblIndexOf(axis);
-    if (g < 0 || g >= static_cast<int>(m_limits.axes.size()))
+    if (g < 0 || g >= static_cast<int>(m_controller.limits.axes.size()))
         return {};
     const double k = scaleOf(axis);
     in.speedMmS = std::fabs(speed) / k;
-    in.maxRateMmS = m_limits.axes[static_cast<std::size_t>(g)].maxRateMmS;
-    in.accelMmS2 = m_limits.axes[static_cast<std::size_t>(g)].accelMmS2;
-    in.plannerBlocks = m_build.plannerBlocksOrDefault();
+    in.maxRateMmS = m_controller.limits.axes[static_cast<std::size_t>(g)].maxRateMmS;
+    in.accelMmS2 = m_controller.limits.axes[static_cast<std::size_t>(g)].accelMmS2;
+    in.plannerBlocks = m_controller.build.plannerBlocksOrDefault();
     in.refreshPeriodS = m_profile.jog.refreshS;
     in.linkLatencyS = m_profile.jog.linkLatencyS;
     in.stopBudgetS = m_profile.jog.stopBudgetS;
@@ -202,7 +208,7 @@ Capabilities GrblClient::capabilities() const
     // Arcs are G2/G3 in GRBL's XY plane: paths need the instrument's X and Y on GRBL's X and Y.
     if (grblLetterOf(0) == 'X' && grblLetterOf(1) == 'Y')
         c |= Capability::PathQueue;
-    if (m_limits.homingEnabled)
+    if (m_controller.limits.homingEnabled)
         c |= Capability::Homing;
     if (m_identity.kind == proto::DeviceKind::Analyzer && m_identity.axisIndex(QLatin1Char('Z')) >= 0)
         c |= Capability::CoupledXyThenZ;  // moves are sent as XY, then Z

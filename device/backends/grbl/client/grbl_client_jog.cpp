@@ -27,34 +27,34 @@ int GrblClient::jogRefreshMs() const { return std::max(5, static_cast<int>(std::
 
 bool GrblClient::isJogging(int axis) const
 {
-    if (m_heldJogs.contains(axis))
+    if (m_jogs.held.contains(axis))
         return true;
-    const auto it = m_stickJogs.find(axis);
-    return it != m_stickJogs.end() && it->second != 0;
+    const auto it = m_jogs.stick.find(axis);
+    return it != m_jogs.stick.end() && it->second != 0;
 }
 
 void GrblClient::startJog(int axis, double velocity)
 {
     if (axis < 0 || axis >= m_identity.axes.size() || !std::isfinite(velocity) || !isReady())
         return;
-    m_jogRefusedSaid = false;
-    m_heldJogs[axis] = velocity;
+    m_jogs.refusedSaid = false;
+    m_jogs.held[axis] = velocity;
     updateJog();
 }
 
 void GrblClient::stopJog(int axis)
 {
-    if (!m_heldJogs.remove(axis))
+    if (!m_jogs.held.remove(axis))
         return;
     updateJog();
 }
 
 void GrblClient::stopAllJogs()
 {
-    if (m_heldJogs.isEmpty() && m_stickJogs.empty() && !m_jog)
+    if (m_jogs.held.isEmpty() && m_jogs.stick.empty() && !m_jogs.run)
         return;
-    m_heldJogs.clear();
-    m_stickJogs.clear();
+    m_jogs.held.clear();
+    m_jogs.stick.clear();
     updateJog();
 }
 
@@ -71,13 +71,13 @@ void GrblClient::setJogVelocities(const std::map<int, double>& velocities, Callb
     }
     for (const auto& [axis, v] : velocities) {
         if (v == 0)
-            m_stickJogs.erase(axis);
+            m_jogs.stick.erase(axis);
         else
-            m_stickJogs[axis] = v;
+            m_jogs.stick[axis] = v;
     }
-    if (!m_stickJogs.empty())
-        m_jogRefusedSaid = false;
-    m_stickDeadlineMs = m_clock.elapsed() + kStickRenewalPeriods * jogRefreshMs();
+    if (!m_jogs.stick.empty())
+        m_jogs.refusedSaid = false;
+    m_jogs.stickDeadlineMs = m_clock.elapsed() + kStickRenewalPeriods * jogRefreshMs();
     updateJog();
     if (done)
         done(std::nullopt);
@@ -85,8 +85,8 @@ void GrblClient::setJogVelocities(const std::map<int, double>& velocities, Callb
 
 std::map<int, double> GrblClient::wantedJogVelocities() const
 {
-    std::map<int, double> v(m_stickJogs.begin(), m_stickJogs.end());
-    for (auto it = m_heldJogs.cbegin(); it != m_heldJogs.cend(); ++it)
+    std::map<int, double> v(m_jogs.stick.begin(), m_jogs.stick.end());
+    for (auto it = m_jogs.held.cbegin(); it != m_jogs.held.cend(); ++it)
         v[it.key()] = it.value();
     return v;
 }
@@ -96,7 +96,7 @@ void GrblClient::updateJog()
     if (m_phase != Phase::Ready)
         return;
     // The wanted velocity per GRBL axis, mm/s.
-    std::vector<double> vMmS(m_limits.axes.size(), 0.0);
+    std::vector<double> vMmS(m_controller.limits.axes.size(), 0.0);
     for (const auto& [axis, v] : wantedJogVelocities()) {
         const int g = grblIndexOf(axis);
         if (g >= 0 && g < static_cast<int>(vMmS.size()))
@@ -107,19 +107,19 @@ void GrblClient::updateJog()
         speed += v * v;
     speed = std::sqrt(speed);
     if (speed == 0) {
-        if (m_jog)
+        if (m_jogs.run)
             cancelJog();
-        if (!m_jogCancelling)
+        if (!m_jogs.cancelling)
             m_jogTimer.stop();
         return;
     }
-    if (m_jogCancelling)
+    if (m_jogs.cancelling)
         return;  // starts once the cancel has run out (onStatusReport calls back)
-    if (m_jog && m_jogVelocityMmS == vMmS)
+    if (m_jogs.run && m_jogs.velocityMmS == vMmS)
         return;
     // Along the jog direction: the slowest axis' rate and acceleration bound the jog's.
     std::vector<double> rates, accels;
-    for (const auto& l : m_limits.axes) {
+    for (const auto& l : m_controller.limits.axes) {
         rates.push_back(l.maxRateMmS);
         accels.push_back(l.accelMmS2);
     }
@@ -128,14 +128,14 @@ void GrblClient::updateJog()
     in.speedMmS = speed;
     in.maxRateMmS = vmax;
     in.accelMmS2 = amax;
-    in.plannerBlocks = m_build.plannerBlocksOrDefault();
+    in.plannerBlocks = m_controller.build.plannerBlocksOrDefault();
     in.refreshPeriodS = m_profile.jog.refreshS;
     in.linkLatencyS = m_profile.jog.linkLatencyS;
     in.stopBudgetS = m_profile.jog.stopBudgetS;
     const grbl::JogPlan plan = grbl::planContinuousJog(in);
     if (!plan.feasible) {
-        m_heldJogs.clear();
-        m_stickJogs.clear();
+        m_jogs.held.clear();
+        m_jogs.stick.clear();
         RequestError e;
         e.kind = RequestError::Kind::Invalid;
         e.message = plan.problem;  // grbl.jog.budget_too_small{budget, latency, refresh}
@@ -150,58 +150,58 @@ void GrblClient::updateJog()
     if (plan.speedLimited)
         note(msg::make("grbl.jog.speed_limited", {msg::real("asked", speed, msg::Unit::MmPerS), msg::real("speed", plan.speedMmS, msg::Unit::MmPerS),
                                                   msg::real("budget", in.stopBudgetS, msg::Unit::S)}));
-    m_jogVelocityMmS = vMmS;
-    if (m_jog && m_jog->active()) {
-        m_jog->retarget(plan, letters, unit);
+    m_jogs.velocityMmS = vMmS;
+    if (m_jogs.run && m_jogs.run->active()) {
+        m_jogs.run->retarget(plan, letters, unit);
         topUpJog();
         return;
     }
-    m_jog.emplace(plan, letters, unit);
-    sendJogLines(m_jog->start(m_clock.elapsed() / 1000.0));
+    m_jogs.run.emplace(plan, letters, unit);
+    sendJogLines(m_jogs.run->start(m_clock.elapsed() / 1000.0));
     m_jogTimer.start();
 }
 
 void GrblClient::topUpJog()
 {
-    if (!m_stickJogs.empty() && m_clock.elapsed() > m_stickDeadlineMs) {
-        m_stickJogs.clear();
+    if (!m_jogs.stick.empty() && m_clock.elapsed() > m_jogs.stickDeadlineMs) {
+        m_jogs.stick.clear();
         updateJog();
         return;
     }
-    if (!m_jog || !m_jog->active() || m_jogCancelling)
+    if (!m_jogs.run || !m_jogs.run->active() || m_jogs.cancelling)
         return;
-    sendJogLines(m_jog->tick(m_clock.elapsed() / 1000.0));
+    sendJogLines(m_jogs.run->tick(m_clock.elapsed() / 1000.0));
 }
 
 void GrblClient::sendJogLines(const std::vector<std::string>& lines)
 {
     const QPointer<GrblClient> self(this);
     for (const auto& line : lines) {
-        ++m_jogLinesOpen;
+        ++m_jogs.lines.open;
         auto tagHolder = std::make_shared<std::uint64_t>(0);
         const std::uint64_t tag = queueLine(line, [self, tagHolder](const std::optional<grbl::Streamer::Ack>& a) {
             if (!self)
                 return;
-            self->m_jogTags.erase(*tagHolder);
-            self->m_jogLinesOpen = std::max(0, self->m_jogLinesOpen - 1);
+            self->m_jogs.lines.tags.erase(*tagHolder);
+            self->m_jogs.lines.open = std::max(0, self->m_jogs.lines.open - 1);
             if (a && !a->ok) {
                 // error:15 at the travel's end, error:8 while something else runs: the hold ends
                 // here, said once.
-                const bool say = !self->m_jogRefusedSaid;
-                self->m_jogRefusedSaid = true;
-                self->m_heldJogs.clear();
-                self->m_stickJogs.clear();
-                if (self->m_jog)
+                const bool say = !self->m_jogs.refusedSaid;
+                self->m_jogs.refusedSaid = true;
+                self->m_jogs.held.clear();
+                self->m_jogs.stick.clear();
+                if (self->m_jogs.run)
                     self->cancelJog();
                 if (say)
                     emit self->requestFailed(errorOf(a->errorCode, a->line, "request.jog"));
             }
-            if (self->m_jogCancelling) {
+            if (self->m_jogs.cancelling) {
                 // The last jog line that was in flight at the cancel: if GRBL read it after the
                 // cancel it is jogging again — cancel once more.
-                if (self->m_jogLinesAtCancel > 0 && self->m_jogLinesOpen == 0) {
-                    self->m_jogLinesAtCancel = 0;
-                    self->m_jogCancelSentUs = self->nowUs();
+                if (self->m_jogs.linesAtCancel > 0 && self->m_jogs.lines.open == 0) {
+                    self->m_jogs.linesAtCancel = 0;
+                    self->m_jogs.cancelSentUs = self->nowUs();
                     self->sendRealtime(grbl::rt::kJogCancel);
                     self->sendQuery();
                 }
@@ -211,39 +211,39 @@ void GrblClient::sendJogLines(const std::vector<std::string>& lines)
                 self->topUpJog();  // GRBL planned a segment: room for the next
         });
         if (!tag) {
-            --m_jogLinesOpen;
+            --m_jogs.lines.open;
             break;
         }
         *tagHolder = tag;
-        m_jogTags.insert(tag);
+        m_jogs.lines.tags.insert(tag);
     }
 }
 
 void GrblClient::cancelJog()
 {
-    if (m_jog)
-        m_jog->stop();
-    m_jog.reset();
-    m_jogVelocityMmS.clear();
+    if (m_jogs.run)
+        m_jogs.run->stop();
+    m_jogs.run.reset();
+    m_jogs.velocityMmS.clear();
     // Segments not written yet are dropped here; those already in GRBL's buffer are counted.
-    auto isJog = [this](std::uint64_t tag) { return m_jogTags.count(tag) != 0; };
-    std::vector<std::uint64_t> dropped = m_streamer.removeQueued(isJog);
-    for (auto it = m_backlog.begin(); it != m_backlog.end();) {
+    auto isJog = [this](std::uint64_t tag) { return m_jogs.lines.tags.count(tag) != 0; };
+    std::vector<std::uint64_t> dropped = m_lines.streamer.removeQueued(isJog);
+    for (auto it = m_lines.backlog.begin(); it != m_lines.backlog.end();) {
         if (isJog(it->second)) {
             dropped.push_back(it->second);
-            it = m_backlog.erase(it);
+            it = m_lines.backlog.erase(it);
         } else {
             ++it;
         }
     }
     for (const std::uint64_t tag : dropped) {
-        m_pending.erase(tag);
-        m_jogTags.erase(tag);
+        m_lines.pending.erase(tag);
+        m_jogs.lines.tags.erase(tag);
     }
-    m_jogLinesOpen = static_cast<int>(m_jogTags.size());
-    m_jogCancelling = true;
-    m_jogLinesAtCancel = m_jogLinesOpen;
-    m_jogCancelSentUs = nowUs();
+    m_jogs.lines.open = static_cast<int>(m_jogs.lines.tags.size());
+    m_jogs.cancelling = true;
+    m_jogs.linesAtCancel = m_jogs.lines.open;
+    m_jogs.cancelSentUs = nowUs();
     sendRealtime(grbl::rt::kJogCancel);
     sendQuery();
 }

@@ -7,6 +7,7 @@
 
 
 #include <cmath>
+#include <utility>
 
 namespace dev {
 
@@ -18,21 +19,21 @@ void GrblClient::poll()
 {
     if (m_phase != Phase::Ready)
         return;
-    if (m_querySent.empty()) {
+    if (m_reports.querySent.empty()) {
         sendQuery();
         return;
     }
     // An unanswered '?' (an EEPROM write stalled the serial interrupt, or GRBL is homing) is
     // asked again; the silence check decides when enough is enough.
-    if (nowUs() - m_querySent.back() > static_cast<quint64>(kQueryRetryMs) * 1000 && m_querySent.size() < kMaxQueriesOutstanding)
+    if (nowUs() - m_reports.querySent.back() > static_cast<quint64>(kQueryRetryMs) * 1000 && m_reports.querySent.size() < kMaxQueriesOutstanding)
         sendQuery();
 }
 
 void GrblClient::sendQuery()
 {
-    if (m_querySent.size() >= kMaxQueriesOutstanding)
-        m_querySent.pop_front();
-    m_querySent.push_back(nowUs());
+    if (m_reports.querySent.size() >= kMaxQueriesOutstanding)
+        m_reports.querySent.pop_front();
+    m_reports.querySent.push_back(nowUs());
     sendRealtime(grbl::rt::kStatusQuery);
 }
 
@@ -47,17 +48,17 @@ void GrblClient::readStatus(StatusCallback done)
         return;
     }
     const quint64 since = nowUs();
-    m_statusWaiters.push_back({since, std::move(done)});
-    if (m_querySent.empty())
+    m_waiters.status.push_back({since, std::move(done)});
+    if (m_reports.querySent.empty())
         sendQuery();
     else
-        m_queryAgain = true;  // the query in flight was asked before this call: ask once more
+        m_reports.queryAgain = true;  // the query in flight was asked before this call: ask once more
 }
 
 void GrblClient::applyParameters(const grbl::Line& l)
 {
     // $# answers: [G54:x,y,z] … [G92:x,y,z] [TLO:z] (report units: inches with $13=1).
-    const double k = m_tracker.reportInches() ? grbl::kMmPerInch : 1.0;
+    const double k = m_reports.tracker.reportInches() ? grbl::kMmPerInch : 1.0;
     auto vec = [&](std::vector<double>& into) {
         if (const auto v = grbl::parseNumberList(l.payload, grbl::kMaxStatusAxes)) {
             into = *v;
@@ -66,20 +67,20 @@ void GrblClient::applyParameters(const grbl::Line& l)
         }
     };
     if (l.tag == "G54")
-        vec(m_g54Mm);
+        vec(m_controller.g54Mm);
     else if (l.tag == "G92")
-        vec(m_g92Mm);
+        vec(m_controller.g92Mm);
     else if (l.tag == "TLO") {
         if (const auto v = grbl::parseNumber(l.payload))
-            m_tloMm = *v * k;
+            m_controller.tloMm = *v * k;
         // TLO is the last line of the offsets: the work offset is known now.
-        m_haveParameters = true;
-        if (!m_tracker.haveWorkOffset()) {
-            m_wcoMm = m_g54Mm;
-            for (std::size_t i = 0; i < m_wcoMm.size() && i < m_g92Mm.size(); ++i)
-                m_wcoMm[i] += m_g92Mm[i];
-            if (m_wcoMm.size() > 2)
-                m_wcoMm[2] += m_tloMm;
+        m_controller.haveParameters = true;
+        if (!m_reports.tracker.haveWorkOffset()) {
+            m_reports.wcoMm = m_controller.g54Mm;
+            for (std::size_t i = 0; i < m_reports.wcoMm.size() && i < m_controller.g92Mm.size(); ++i)
+                m_reports.wcoMm[i] += m_controller.g92Mm[i];
+            if (m_reports.wcoMm.size() > 2)
+                m_reports.wcoMm[2] += m_controller.tloMm;
         }
         if (!m_map.isEmpty())
             updateTravel();
@@ -88,6 +89,15 @@ void GrblClient::applyParameters(const grbl::Line& l)
 
 void GrblClient::emitEvent(proto::EventKind kind, int axis, double position, msg::Message detail, const QString& text)
 {
+    // Where an axis arrived, stopped or was homed: the event's position is in work coordinates
+    // (G54, as the screens show), and GRBL's machine coordinates differ by the work offset, so
+    // the detail says both.
+    const bool where = kind == proto::EventKind::HomeDone || kind == proto::EventKind::MotionDone || kind == proto::EventKind::Stopped;
+    if (where && detail.id.empty() && axis >= 0 && axis < m_identity.axes.size()) {
+        const msg::Unit unit = unitOf(axis);
+        detail = msg::make("grbl.event.position", {msg::real("work", position, unit),
+                                                   msg::real("machine", instrumentValue(axis, m_reports.machineMm), unit)});
+    }
     DeviceEvent e;
     e.kind = kind;
     e.axis = axis;
@@ -101,37 +111,40 @@ void GrblClient::emitEvent(proto::EventKind kind, int axis, double position, msg
 
 void GrblClient::onStatusReport(const grbl::StatusReport& r)
 {
-    const quint64 askedUs = m_querySent.empty() ? 0 : m_querySent.front();
-    if (!m_querySent.empty())
-        m_querySent.pop_front();
-    if (!m_tracker.update(r))
+    const quint64 askedUs = m_reports.querySent.empty() ? 0 : m_reports.querySent.front();
+    if (!m_reports.querySent.empty())
+        m_reports.querySent.pop_front();
+    if (!m_reports.tracker.update(r))
         return;
     // Work and machine position: from the report and the last WCO (the report's own, or $#'s).
-    if (m_tracker.haveWorkOffset())
-        m_wcoMm = m_tracker.workOffsetMm();
+    if (m_reports.tracker.haveWorkOffset())
+        m_reports.wcoMm = m_reports.tracker.workOffsetMm();
     std::vector<double> pos = r.position;
-    const double k = m_tracker.reportInches() ? grbl::kMmPerInch : 1.0;
+    const double k = m_reports.tracker.reportInches() ? grbl::kMmPerInch : 1.0;
     for (double& x : pos)
         x *= k;
-    m_wcoMm.resize(pos.size(), 0.0);
-    m_machineMm = pos;
-    m_workMm = pos;
+    m_reports.wcoMm.resize(pos.size(), 0.0);
+    m_reports.machineMm = pos;
+    m_reports.workMm = pos;
     for (std::size_t i = 0; i < pos.size(); ++i) {
         if (r.positionIsMachine)
-            m_workMm[i] = pos[i] - m_wcoMm[i];
+            m_reports.workMm[i] = pos[i] - m_reports.wcoMm[i];
         else
-            m_machineMm[i] = pos[i] + m_wcoMm[i];
+            m_reports.machineMm[i] = pos[i] + m_reports.wcoMm[i];
     }
     const grbl::MachineState st = r.state;
-    if (m_firstReport) {
+    if (m_reports.first) {
         // What can be trusted at connection: a controller with homing that is not in alarm was
-        // homed (or unlocked) before; without homing nothing says where home is.
-        m_firstReport = false;
-        m_established = (st != grbl::MachineState::Alarm && m_limits.homingEnabled) ? (1u << m_map.size()) - 1 : 0;
+        // homed (or unlocked) before; without homing, only a home set here that provably still holds.
+        m_reports.first = false;
+        if (m_controller.limits.homingEnabled)
+            m_positions.established = st != grbl::MachineState::Alarm ? (1u << m_map.size()) - 1 : 0;
+        else
+            m_positions.established = recallHome(st);
         updateTravel();
     }
     if (st != grbl::MachineState::Alarm)
-        m_critical = false;
+        m_machine.critical = false;
     const bool active = st == grbl::MachineState::Run || st == grbl::MachineState::Jog || st == grbl::MachineState::Home
                         || (st == grbl::MachineState::Hold && r.subState != 0);
     const quint64 now = nowUs();
@@ -143,14 +156,14 @@ void GrblClient::onStatusReport(const grbl::StatusReport& r)
     for (int i = 0; i < m_status.axes.size(); ++i) {
         AxisReadout& a = m_status.axes[i];
         const int g = grblIndexOf(i);
-        const double v = instrumentValue(i, m_workMm);
-        const bool changed = g < static_cast<int>(m_lastReportWork.size())
-                             && std::fabs(m_lastReportWork[static_cast<std::size_t>(g)] - m_workMm[static_cast<std::size_t>(g)]) > 1e-6;
+        const double v = instrumentValue(i, m_reports.workMm);
+        const bool changed = g < static_cast<int>(m_reports.lastWorkMm.size())
+                             && std::fabs(m_reports.lastWorkMm[static_cast<std::size_t>(g)] - m_reports.workMm[static_cast<std::size_t>(g)]) > 1e-6;
         a.commanded = v;
         a.measured = v;  // GRBL reports its step count: there is no separate measurement
         a.homed = established(i) && st != grbl::MachineState::Alarm;
         a.homing = st == grbl::MachineState::Home;
-        a.moving = active && (changed || (m_motionAxes >> i) & 1u || isJogging(i) || st == grbl::MachineState::Home);
+        a.moving = active && (changed || (m_motion.axes >> i) & 1u || isJogging(i) || st == grbl::MachineState::Home);
         a.jogging = st == grbl::MachineState::Jog && (changed || isJogging(i));
         a.limitSwitch = g >= 0 && g < static_cast<int>(letters.size()) && r.pinTriggered(letters[static_cast<std::size_t>(g)]);
         a.homeSwitch = false;  // GRBL has one limit pin per axis: it cannot tell home from limit
@@ -161,33 +174,39 @@ void GrblClient::onStatusReport(const grbl::StatusReport& r)
     emit statusChanged(m_status);
 
     // A stop waits for the hold to reach rest, then flushes the queue with a reset.
-    if (m_stopping && !m_stopResetSent && askedUs >= m_stopAskedUs
+    if (m_stop.active && !m_stop.resetSent && askedUs >= m_stop.askedUs
         && ((st == grbl::MachineState::Hold && r.subState == 0) || st == grbl::MachineState::Idle)) {
-        m_stopResetSent = true;
+        m_stop.resetSent = true;
         softReset(true);
     }
     settleMotion(askedUs, st);
-    if (m_jogCancelling && m_jogLinesOpen == 0 && askedUs > m_jogCancelSentUs && st != grbl::MachineState::Jog) {
-        m_jogCancelling = false;
+    if (m_motion.homedAxes && askedUs > m_motion.homedAckUs) {
+        const quint32 homed = std::exchange(m_motion.homedAxes, 0u);
+        for (int i = 0; i < m_status.axes.size(); ++i)
+            if ((homed >> i) & 1u)
+                emitEvent(proto::EventKind::HomeDone, i, m_status.axes[i].commanded);
+    }
+    if (m_jogs.cancelling && m_jogs.lines.open == 0 && askedUs > m_jogs.cancelSentUs && st != grbl::MachineState::Jog) {
+        m_jogs.cancelling = false;
         updateJog();  // a jog asked for while the cancel ran starts now
     }
-    auto waiters = std::move(m_statusWaiters);
-    m_statusWaiters.clear();
+    auto waiters = std::move(m_waiters.status);
+    m_waiters.status.clear();
     for (auto& w : waiters) {
         if (w.sinceUs <= askedUs) {
             if (w.done)
                 w.done(std::nullopt, m_status);
         } else {
-            m_statusWaiters.push_back(std::move(w));
+            m_waiters.status.push_back(std::move(w));
         }
     }
-    emitTelemetry(m_workMm);
-    m_lastReportWork = m_workMm;
-    m_lastReportUs = now;
+    emitTelemetry(m_reports.workMm);
+    m_reports.lastWorkMm = m_reports.workMm;
+    m_reports.lastUs = now;
     emit reportApplied(askedUs);
-    if (m_queryAgain || !m_statusWaiters.empty()) {
-        m_queryAgain = false;
-        if (m_querySent.empty())
+    if (m_reports.queryAgain || !m_waiters.status.empty()) {
+        m_reports.queryAgain = false;
+        if (m_reports.querySent.empty())
             sendQuery();
     }
 }
@@ -197,10 +216,10 @@ void GrblClient::settleMotion(quint64 askedUs, grbl::MachineState st)
     // GRBL says nothing when a move ends. A report asked for after the last line of the move was
     // acknowledged (so GRBL had started the cycle: it auto-starts once its serial buffer is empty)
     // that shows Idle means every axis of it has arrived.
-    if (!m_motionAxes || m_motionLinesOpen > 0 || m_stopping || askedUs <= m_motionAckUs || st != grbl::MachineState::Idle)
+    if (!m_motion.axes || m_motion.linesOpen > 0 || m_stop.active || askedUs <= m_motion.ackUs || st != grbl::MachineState::Idle)
         return;
-    const quint32 axes = m_motionAxes;
-    m_motionAxes = 0;
+    const quint32 axes = m_motion.axes;
+    m_motion.axes = 0;
     for (int i = 0; i < m_status.axes.size(); ++i)
         if ((axes >> i) & 1u)
             emitEvent(proto::EventKind::MotionDone, i, m_status.axes[i].commanded);
@@ -208,14 +227,14 @@ void GrblClient::settleMotion(quint64 askedUs, grbl::MachineState st)
 
 void GrblClient::onAlarm(int code)
 {
-    m_alarm = code;
+    m_machine.alarm = code;
     // Positions survive a soft-limit alarm and a failed probe; every other alarm (a hard limit, a
     // reset in motion, a failed homing, grblHAL's E-stop) leaves them untrusted.
     if (code != grbl::alarm::kSoftLimit && code != grbl::alarm::kProbeFailInitial && code != grbl::alarm::kProbeFailContact)
-        m_established = 0;
+        loseEstablished();
     if (code == grbl::alarm::kHardLimit || code == grbl::alarm::kSoftLimit)
-        m_critical = true;
-    m_homing = false;
+        m_machine.critical = true;
+    m_machine.homing = false;
     proto::EventKind kind = proto::EventKind::Fault;
     if (code == grbl::alarm::kHardLimit || code == grbl::alarm::kSoftLimit)
         kind = proto::EventKind::LimitHit;
@@ -227,10 +246,10 @@ void GrblClient::onAlarm(int code)
         for (int i = 0; i < m_status.axes.size() && axis < 0; ++i)
             if (m_status.axes[i].limitSwitch)
                 axis = i;
-    m_motionAxes = 0;
-    m_jog.reset();
-    m_heldJogs.clear();
-    m_stickJogs.clear();
+    // GRBL stopped: no motion is owed and no jog goes on. Lines still in flight are answered
+    // (error:9 in the alarm lock), so they keep their counts.
+    m_motion.axes = 0;
+    m_jogs.forget();
     // The event's text is what the controller said; its detail, grbl.alarm{code}, is worded with the meaning.
     emitEvent(kind, axis, axis >= 0 ? m_status.axes[axis].commanded : 0, grbl::alarmMessage(code), QStringLiteral("ALARM:%1").arg(code));
     emit alarmRaised(code);
@@ -266,7 +285,7 @@ void GrblClient::emitTelemetry(const std::vector<double>& workMm)
     b.firstSampleTimeUs = m_status.deviceTimeUs;
     b.periodUs = static_cast<std::uint32_t>(std::lround(1e6 / m_profile.statusPollHz));
     b.sampleCount = 1;
-    const double dtS = m_lastReportUs > 0 && m_status.deviceTimeUs > m_lastReportUs ? (m_status.deviceTimeUs - m_lastReportUs) / 1e6 : 0;
+    const double dtS = m_reports.lastUs > 0 && m_status.deviceTimeUs > m_reports.lastUs ? (m_status.deviceTimeUs - m_reports.lastUs) / 1e6 : 0;
     for (const auto& c : m_channels) {
         if (c.axis >= m_identity.axes.size())
             continue;
@@ -277,7 +296,7 @@ void GrblClient::emitTelemetry(const std::vector<double>& workMm)
         case proto::ChannelKind::Commanded:
         case proto::ChannelKind::Measured: v = instrumentValue(i, workMm) * k; break;
         case proto::ChannelKind::Velocity:
-            v = dtS > 0 ? (instrumentValue(i, workMm) - instrumentValue(i, m_lastReportWork)) / dtS * k : 0;
+            v = dtS > 0 ? (instrumentValue(i, workMm) - instrumentValue(i, m_reports.lastWorkMm)) / dtS * k : 0;
             break;
         case proto::ChannelKind::Switches: v = m_status.axes[i].limitSwitch ? 2 : 0; break;
         default: continue;  // no following error, controller output or contour on GRBL: left out, not faked

@@ -15,7 +15,7 @@ std::uint64_t GrblClient::queueLine(const std::string& line, LineDone done, bool
 {
     if (!m_transport || !m_transport->isOpen() || m_phase == Phase::Closed)
         return 0;
-    if (line.empty() || line.size() > grbl::kMaxLineChars || line.size() + 1 > m_streamer.capacityBytes())
+    if (line.empty() || line.size() > grbl::kMaxLineChars || line.size() + 1 > m_lines.streamer.capacityBytes())
         return 0;
     for (const char c : line) {
         const auto b = static_cast<std::uint8_t>(c);
@@ -24,19 +24,19 @@ std::uint64_t GrblClient::queueLine(const std::string& line, LineDone done, bool
     }
     // Motion lines rely on the modal state this host set (G54 work coordinates, XY plane, feed
     // per minute); a reset or another program may have changed it.
-    if (!m_modalReady && (line[0] == 'G' || line[0] == 'M')) {
-        m_modalReady = true;
+    if (!m_lines.modalReady && (line[0] == 'G' || line[0] == 'M')) {
+        m_lines.modalReady = true;
         const std::uint64_t tag = m_nextTag++;
-        m_backlog.emplace_back("G54 G17 G94", tag);
-        m_pending[tag] = PendingLine{[this](const std::optional<grbl::Streamer::Ack>& a) {
+        m_lines.backlog.emplace_back("G54 G17 G94", tag);
+        m_lines.pending[tag] = PendingLine{[this](const std::optional<grbl::Streamer::Ack>& a) {
                                          if (!a || !a->ok)
-                                             m_modalReady = false;
+                                             m_lines.modalReady = false;
                                      },
                                      false};
     }
     const std::uint64_t tag = m_nextTag++;
-    m_backlog.emplace_back(line, tag);
-    m_pending[tag] = PendingLine{std::move(done), alone};
+    m_lines.backlog.emplace_back(line, tag);
+    m_lines.pending[tag] = PendingLine{std::move(done), alone};
     pump();
     return tag;
 }
@@ -50,29 +50,29 @@ bool GrblClient::sendLine(const std::string& line, LineDone done)
 
 void GrblClient::sendRealtime(std::uint8_t byte)
 {
-    if (!m_streamer.enqueueRealtime(byte))
+    if (!m_lines.streamer.enqueueRealtime(byte))
         return;
     pump();
 }
 
-bool GrblClient::linesIdle() const { return m_backlog.empty() && m_streamer.idle(); }
+bool GrblClient::linesIdle() const { return m_lines.backlog.empty() && m_lines.streamer.idle(); }
 
 void GrblClient::pump()
 {
     if (!m_transport || !m_transport->isOpen())
         return;
-    while (!m_backlog.empty() && !m_aloneInFlight) {
-        const auto& [line, tag] = m_backlog.front();
-        const auto it = m_pending.find(tag);
-        const bool alone = it != m_pending.end() && it->second.alone;
-        if (alone && !(m_streamer.inFlightLines() == 0 && m_streamer.queuedLines() == 0))
+    while (!m_lines.backlog.empty() && !m_lines.aloneInFlight) {
+        const auto& [line, tag] = m_lines.backlog.front();
+        const auto it = m_lines.pending.find(tag);
+        const bool alone = it != m_lines.pending.end() && it->second.alone;
+        if (alone && !(m_lines.streamer.inFlightLines() == 0 && m_lines.streamer.queuedLines() == 0))
             break;  // an EEPROM write goes out only when nothing else is in flight
-        m_streamer.enqueue(line, tag);
-        m_backlog.pop_front();
+        m_lines.streamer.enqueue(line, tag);
+        m_lines.backlog.pop_front();
         if (alone)
-            m_aloneInFlight = true;
+            m_lines.aloneInFlight = true;
     }
-    const std::string out = m_streamer.takeOutput();
+    const std::string out = m_lines.streamer.takeOutput();
     if (!out.empty())
         m_transport->write(QByteArray(out.data(), static_cast<qsizetype>(out.size())));
 }
@@ -82,25 +82,15 @@ void GrblClient::softReset(bool expected)
     if (!m_transport || !m_transport->isOpen())
         return;
     // Realtime bytes still waiting (a feed hold) go first, then the reset itself.
-    std::string out = m_streamer.takeOutput();
+    std::string out = m_lines.streamer.takeOutput();
     out.push_back(static_cast<char>(grbl::rt::kSoftReset));
     m_transport->write(QByteArray(out.data(), static_cast<qsizetype>(out.size())));
-    m_streamer.softReset(true);
-    m_backlog.clear();
-    m_aloneInFlight = false;
-    m_reader.clear();
-    m_modalReady = false;
+    // GRBL forgets every line it holds, and half a line it was sending is garbage now.
     if (expected)
-        ++m_expectedBanners;
-    m_lostReason = msg::make("grbl.reset_flushed");
-    auto pending = std::move(m_pending);
-    m_pending.clear();
-    m_motionLinesOpen = 0;
-    m_jogLinesOpen = 0;
-    m_jogTags.clear();
-    for (auto& [tag, p] : pending)
-        if (p.done)
-            p.done(std::nullopt);
+        ++m_wire.expectedBanners;
+    m_wire.reader.clear();
+    LostLines lost = dropLines(msg::make("grbl.reset_flushed"));
+    answerLost(lost);
 }
 
 // ---- refusals ----------------------------------------------------------------
