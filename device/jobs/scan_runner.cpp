@@ -21,6 +21,29 @@ using motion::scan::Point2;
 
 namespace {
 constexpr unsigned kBothAxes = 0x3;
+
+/// A commanded position this close to the move's target (mm) is the target: the setpoint
+/// comes back in whole nanometres (docs/protocol.md, wire units), so it differs from the
+/// target by rounding; 0.1 µm is above that and far below a step or a grating count.
+constexpr double kScanAtTargetMm = 1e-4;
+/// Readings at rest on the target, in a row, that stand for a lost MotionDone: the second
+/// confirms the first was not a passing moment, at the cost of one status poll, and only on
+/// a line that lost the event.
+constexpr int kScanRestPollsForArrival = 2;
+/// The run's own pace corrects the time left only once this many tiles of the session are
+/// taken: fewer are mostly the lead-in and the first settle, not the run's rhythm.
+constexpr int kScanPaceMinTiles = 3;
+/// …and only over a stretch the estimate puts at least this long (s): a shorter one is
+/// dominated by the device clock's granularity and one tile's settle.
+constexpr double kScanPaceMinStretchS = 0.5;
+/// The correction is held between these factors: a stage five times slower or faster than
+/// planned is a fault to report, not a pace to extrapolate over the rest of the run.
+constexpr double kScanPaceMinFactor = 0.2;
+constexpr double kScanPaceMaxFactor = 5.0;
+
+constexpr double kScanSecondsPerUs = 1e-6;
+constexpr double kScanUmPerMm = 1e3;
+constexpr double kScanMsPerS = 1e3;
 } // namespace
 
 ScanRunner::ScanRunner(dev::Instrument* client, QObject* parent) : QObject(parent), m_client(client)
@@ -348,12 +371,13 @@ double ScanRunner::etaS() const
     // estimate: trigger to trigger on the device's clock against the estimate for
     // the same stretch. The exposures at both ends cancel out, and neither a busy
     // host nor a simulator on a sped-up or stepped clock skews it.
-    if (isActive() && m_sessionFirstTile >= 0 && lastTaken > m_sessionFirstTile && m_takenCount - m_sessionFirstTaken >= 3) {
+    if (isActive() && m_sessionFirstTile >= 0 && lastTaken > m_sessionFirstTile && m_takenCount - m_sessionFirstTaken >= kScanPaceMinTiles) {
         const auto first = static_cast<std::size_t>(m_sessionFirstTile), last = static_cast<std::size_t>(lastTaken);
         const double estimated = m_estimate.tileDoneS[last] - m_estimate.tileDoneS[first];
         const quint64 fromUs = m_records[first].deviceTimeUs, toUs = m_records[last].deviceTimeUs;
-        if (estimated > 0.5 && toUs > fromUs)
-            return remaining * std::clamp(static_cast<double>(toUs - fromUs) * 1e-6 / estimated, 0.2, 5.0);
+        if (estimated > kScanPaceMinStretchS && toUs > fromUs)
+            return remaining * std::clamp(static_cast<double>(toUs - fromUs) * kScanSecondsPerUs / estimated, kScanPaceMinFactor,
+                                           kScanPaceMaxFactor);
     }
     return remaining;
 }
@@ -482,7 +506,7 @@ void ScanRunner::onMoveArrived()
     }
     m_phase = Phase::Settling;
     m_lastOffUm[0] = m_lastOffUm[1] = NAN;
-    m_settleTimeout.start(static_cast<int>(std::lround(m_plan.settleTimeoutS * 1000)));
+    m_settleTimeout.start(static_cast<int>(std::lround(m_plan.settleTimeoutS * kScanMsPerS)));
     requestStatus();
 }
 
@@ -493,15 +517,15 @@ void ScanRunner::checkArrivedByStatus(const dev::InstrumentStatus& s)
     // are an arrival whose MotionDone the line lost.
     if (!m_moveAccepted || s.axes.size() < 2)
         return;
-    const bool there = !s.axes[0].moving && !s.axes[1].moving && std::fabs(s.axes[0].commanded - m_moveTarget.xMm) < 1e-4
-        && std::fabs(s.axes[1].commanded - m_moveTarget.yMm) < 1e-4;
+    const bool there = !s.axes[0].moving && !s.axes[1].moving && std::fabs(s.axes[0].commanded - m_moveTarget.xMm) < kScanAtTargetMm
+        && std::fabs(s.axes[1].commanded - m_moveTarget.yMm) < kScanAtTargetMm;
     if (!there) {
         m_restPolls = 0;
         return;
     }
     if (m_restPolls++ == 0)
         m_motionDoneUs = std::max<quint64>(m_motionDoneUs, s.deviceTimeUs);
-    if (m_restPolls < 2)
+    if (m_restPolls < kScanRestPollsForArrival)
         return;
     m_waitingAxes = 0;
     onMoveArrived();
@@ -525,8 +549,8 @@ void ScanRunner::checkSettled(const std::vector<double>& measuredMm, quint64 dev
     if (m_phase != Phase::Settling)
         return;
     const Point2 target = commanded(m_pathIndex);
-    m_lastOffUm[0] = (measuredMm[0] - target.xMm) * 1e3;
-    m_lastOffUm[1] = (measuredMm[1] - target.yMm) * 1e3;
+    m_lastOffUm[0] = (measuredMm[0] - target.xMm) * kScanUmPerMm;
+    m_lastOffUm[1] = (measuredMm[1] - target.yMm) * kScanUmPerMm;
     if (std::fabs(m_lastOffUm[0]) > m_plan.toleranceUm || std::fabs(m_lastOffUm[1]) > m_plan.toleranceUm)
         return;
     if (deviceTimeUs < m_motionDoneUs)
@@ -541,7 +565,7 @@ void ScanRunner::checkSettled(const std::vector<double>& measuredMm, quint64 dev
     // its rising edge starts an edge-triggered camera, its length times a level-triggered one.
     if (m_client->can(dev::Capability::TriggerOutput))
         m_client->pulseTrigger(m_plan.exposureS);
-    m_exposure.start(static_cast<int>(std::lround(m_plan.exposureS * 1000)));
+    m_exposure.start(static_cast<int>(std::lround(m_plan.exposureS * kScanMsPerS)));
 }
 
 void ScanRunner::onExposureEnd()
@@ -552,7 +576,7 @@ void ScanRunner::onExposureEnd()
     motion::PositionRecord& r = m_records[static_cast<std::size_t>(tile)];
     r.measuredMm = m_triggerMm;
     r.deviceTimeUs = m_triggerUs;
-    r.settleS = m_triggerUs > m_motionDoneUs ? static_cast<double>(m_triggerUs - m_motionDoneUs) * 1e-6 : 0.0;
+    r.settleS = m_triggerUs > m_motionDoneUs ? static_cast<double>(m_triggerUs - m_motionDoneUs) * kScanSecondsPerUs : 0.0;
     msg::Message error;
     if (!appendLog(scanfile::runLogLine(r), &error)) {
         r.measuredMm.clear();
