@@ -71,6 +71,14 @@ ScanRunner::ScanRunner(dev::Instrument* client, QObject* parent) : QObject(paren
             return;
         checkSettled({s.axes[0].measured, s.axes[1].measured}, s.deviceTimeUs);
     });
+    // The stage model is taken once per prepare and again only when the device reports
+    // other limits, so preflight and the lead-in check what the device has now.
+    const auto retakeStageModel = [this] {
+        if (m_prepared)
+            m_stageModel = stageModelOf(m_client->identity(), m_client->softLimits());
+    };
+    m_clientConnections << connect(m_client, &dev::Instrument::identified, this, retakeStageModel);
+    m_clientConnections << connect(m_client, &dev::Instrument::limitsChanged, this, retakeStageModel);
     m_clientConnections << connect(m_client, &dev::Instrument::stateChanged, this, [this](dev::LinkState st) {
         if (st != dev::LinkState::Ready && isActive())
             stopWith(msg::make("scan.run.link_lost", {tileArg(currentTile())}), false);
@@ -168,65 +176,75 @@ bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& fold
     const std::uint64_t fingerprint = motion::scan::layoutFingerprint(plan, m_layout);
 
     bool fresh = true;
-    if (QFileInfo::exists(logPath())) {
-        std::string text;
-        if (!files::readText(logPath(), &text, error))
-            return false;
-        const auto log = scanfile::parseRunLog(text);
-        if (!log.log) {
-            const jsonio::Problem& first = log.problems.list().front();
-            *error = msg::make("scan.run.log_damaged", {msg::verbatim("log", scanfile::kRunLogFile),
-                                                        msg::integer("line", first.position.line, msg::Unit::None),
-                                                        msg::nested("cause", first.message)});
-            return false;
-        }
-        if (log.log->fingerprint == fingerprint && !restart) {
-            fresh = false;
-            for (const auto& r : log.log->records) {
-                const auto k = static_cast<std::size_t>(r.target);
-                if (k >= m_records.size())
-                    continue;
-                m_records[k].measuredMm = r.measuredMm;
-                m_records[k].deviceTimeUs = r.deviceTimeUs;
-                m_records[k].settleS = r.settleS;
-                if (!m_taken[k]) {
-                    m_taken[k] = 1;
-                    ++m_takenCount;
-                }
-            }
-            // A line torn by a crash would sit in front of the next one: write the
-            // log out again without it (atomically, so this cannot lose it either).
-            if (log.log->tornTail) {
-                std::string clean = scanfile::runLogHeader(m_plan.name, fingerprint, totalTiles());
-                for (const auto& r : log.log->records)
-                    clean += scanfile::runLogLine(r);
-                if (!files::writeAtomically(logPath(), clean, error))
-                    return false;
-            }
-        } else if (!restart) {
-            reason = Refusal::OtherScansLog;
-            *error = msg::make("scan.run.other_scans_log", {msg::integer("taken", static_cast<long long>(log.log->records.size())),
-                                                            msg::integer("tiles", log.log->tiles)});
-            return false;
-        } else {
-            // Nothing is thrown away: the old log moves aside under its time.
-            const QString aside = QDir(m_folder).filePath(
-                QStringLiteral("scan-run.%1.jsonl").arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"))));
-            if (!QFile::rename(logPath(), aside)) {
-                *error = msg::make("scan.run.cannot_move_log", {msg::verbatim("file", aside.toStdString())});
-                return false;
-            }
-        }
-    }
+    if (QFileInfo::exists(logPath()) && !adoptRunLog(fingerprint, restart, &fresh, error, &reason))
+        return false;
     if (fresh && !files::writeAtomically(logPath(), scanfile::runLogHeader(m_plan.name, fingerprint, totalTiles()), error))
         return false;
-    m_estimate = motion::scan::estimateScan(m_plan, m_layout, stageModelOf(m_client->identity(), m_client->softLimits()));
+    m_stageModel = stageModelOf(m_client->identity(), m_client->softLimits());
+    m_estimate = motion::scan::estimateScan(m_plan, m_layout, m_stageModel);
     m_prepared = true;
     refreshCompensation();
     reason = Refusal::None;
     setState(m_takenCount == totalTiles() ? State::Finished : State::Idle);
     emit progress(m_takenCount, totalTiles(), etaS());
     return true;
+}
+
+bool ScanRunner::adoptRunLog(std::uint64_t fingerprint, bool restart, bool* fresh, msg::Message* error, Refusal* why)
+{
+    std::string text;
+    if (!files::readText(logPath(), &text, error))
+        return false;
+    const auto log = scanfile::parseRunLog(text);
+    if (!log.log) {
+        const jsonio::Problem& first = log.problems.list().front();
+        *error = msg::make("scan.run.log_damaged", {msg::verbatim("log", scanfile::kRunLogFile),
+                                                    msg::integer("line", first.position.line, msg::Unit::None),
+                                                    msg::nested("cause", first.message)});
+        return false;
+    }
+    if (log.log->fingerprint == fingerprint && !restart) {
+        *fresh = false;
+        return continueFromLog(*log.log, fingerprint, error);
+    }
+    if (!restart) {
+        *why = Refusal::OtherScansLog;
+        *error = msg::make("scan.run.other_scans_log", {msg::integer("taken", static_cast<long long>(log.log->records.size())),
+                                                        msg::integer("tiles", log.log->tiles)});
+        return false;
+    }
+    // Nothing is thrown away: the old log moves aside under its time.
+    const QString aside = QDir(m_folder).filePath(
+        QStringLiteral("scan-run.%1.jsonl").arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"))));
+    if (!QFile::rename(logPath(), aside)) {
+        *error = msg::make("scan.run.cannot_move_log", {msg::verbatim("file", aside.toStdString())});
+        return false;
+    }
+    return true;
+}
+
+bool ScanRunner::continueFromLog(const scanfile::RunLog& log, std::uint64_t fingerprint, msg::Message* error)
+{
+    for (const auto& r : log.records) {
+        const auto k = static_cast<std::size_t>(r.target);
+        if (k >= m_records.size())
+            continue;
+        m_records[k].measuredMm = r.measuredMm;
+        m_records[k].deviceTimeUs = r.deviceTimeUs;
+        m_records[k].settleS = r.settleS;
+        if (!m_taken[k]) {
+            m_taken[k] = 1;
+            ++m_takenCount;
+        }
+    }
+    if (!log.tornTail)
+        return true;
+    // A line torn by a crash would sit in front of the next one: write the
+    // log out again without it (atomically, so this cannot lose it either).
+    std::string clean = scanfile::runLogHeader(m_plan.name, fingerprint, totalTiles());
+    for (const auto& r : log.records)
+        clean += scanfile::runLogLine(r);
+    return files::writeAtomically(logPath(), clean, error);
 }
 
 Point2 ScanRunner::commanded(int pathIndex) const
@@ -269,7 +287,7 @@ std::vector<msg::Message> ScanRunner::preflight() const
             }
     }
     // The whole plan against the device's travel and soft limits, before anything moves.
-    for (const auto& p : motion::scan::validate(m_plan, stageModelOf(id, m_client->softLimits())))
+    for (const auto& p : motion::scan::validate(m_plan, m_stageModel))
         out.push_back(msg::make("scan.run.plan_problem", {msg::verbatim("field", p.field), msg::nested("cause", p.message)}));
     return out;
 }
@@ -309,8 +327,7 @@ bool ScanRunner::start(msg::Message* error)
         && m_layout.path[static_cast<std::size_t>(m_pathIndex)].tile >= 0) {
         const Point2 over = motion::scan::overtravelPoint(m_layout, m_plan, m_layout.path[static_cast<std::size_t>(m_pathIndex)].target);
         m_extraApproach = motion::scan::commandedTarget(m_plan, over);
-        const auto limits = stageModelOf(m_client->identity(), m_client->softLimits()).travel;
-        if (!limits.contains(*m_extraApproach))
+        if (!m_stageModel.travel.contains(*m_extraApproach))
             m_extraApproach.reset();  // at the edge of travel: the direct move is the best there is
     }
     m_sessionFirstTaken = m_takenCount;
@@ -321,10 +338,9 @@ bool ScanRunner::start(msg::Message* error)
     const Point2 from = st.axes.size() >= 2 ? Point2{st.axes[0].commanded, st.axes[1].commanded} : Point2{};
     const Point2 firstTarget = m_extraApproach ? *m_extraApproach
                                                : (m_pathIndex < static_cast<int>(m_layout.path.size()) ? commanded(m_pathIndex) : from);
-    m_leadInS = motion::scan::moveTimeS(from, firstTarget, m_plan.speedMmS, stageModelOf(m_client->identity(), m_client->softLimits()));
+    m_leadInS = motion::scan::moveTimeS(from, firstTarget, m_plan.speedMmS, m_stageModel);
     if (m_extraApproach && m_pathIndex < static_cast<int>(m_layout.path.size()))
-        m_leadInS += motion::scan::moveTimeS(*m_extraApproach, commanded(m_pathIndex), m_plan.speedMmS,
-                                             stageModelOf(m_client->identity(), m_client->softLimits()));
+        m_leadInS += motion::scan::moveTimeS(*m_extraApproach, commanded(m_pathIndex), m_plan.speedMmS, m_stageModel);
     setState(State::Running);
     nextWaypoint();
     return true;

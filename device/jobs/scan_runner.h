@@ -23,6 +23,10 @@
 #include <optional>
 #include <vector>
 
+namespace scanfile {
+struct RunLog;
+}
+
 namespace jobs {
 
 class ScanRunner : public QObject {
@@ -113,6 +117,11 @@ private:
     /// A plan that runs with the stage's own compensation: reads whether X and Y have it
     /// enabled (again whenever the device says it changed), for preflight().
     void refreshCompensation();
+    /// The folder's run log: continued when it is of these tiles, refused (`why`) when it is
+    /// another plan's, set aside when `restart`. `fresh` says whether a new log is to begin.
+    bool adoptRunLog(std::uint64_t fingerprint, bool restart, bool* fresh, msg::Message* error, Refusal* why);
+    /// Marks the log's tiles taken, and writes the log out again without a torn last line.
+    bool continueFromLog(const scanfile::RunLog& log, std::uint64_t fingerprint, msg::Message* error);
     bool openLog(msg::Message* error);
     bool appendLog(const std::string& line, msg::Message* error);
     int waypointToResumeAt() const;
@@ -124,6 +133,7 @@ private:
     motion::scan::ScanPlan m_plan;
     motion::scan::ScanLayout m_layout;
     motion::scan::ScanEstimate m_estimate;
+    motion::scan::StageModel m_stageModel;  ///< the device's limits as of prepare() or its last change
     std::vector<motion::PositionRecord> m_records;
     std::vector<char> m_taken;
     int m_takenCount = 0;
