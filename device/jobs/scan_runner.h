@@ -65,6 +65,7 @@ public:
     void pause();
     void abort();
 
+    dev::Instrument* instrument() const { return m_client; }
     State state() const { return m_state; }
     bool isActive() const { return m_state == State::Running || m_state == State::Pausing; }
     const motion::scan::ScanPlan& plan() const { return m_plan; }
