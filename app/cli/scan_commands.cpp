@@ -10,6 +10,7 @@
 
 #include "device/files/scan_exports.h"
 #include "device/files/scan_plan_file.h"
+#include "device/jobs/scan_launch.h"
 #include "device/jobs/scan_runner.h"
 #include "motion/plans/scan/scan_estimate.h"
 
@@ -270,11 +271,15 @@ int scanRun(Invocation& inv)
             return inv.refused(tr("homing did not finish"));
     }
     ScanRunner runner(client);
-    ScanRunner::Refusal why = ScanRunner::Refusal::None;
-    if (!runner.prepare(plan, folder, inv.isSet(QStringLiteral("restart")), &error, &why))
-        return why == ScanRunner::Refusal::OtherScansLog ? inv.usage(words::text(error) + tr(" (--restart starts over)")) : inv.refused(words::text(error));
+    jobs::ScanLaunch launch(&runner);
+    using Kind = jobs::ScanDecision::Kind;
+    const jobs::ScanDecision d = launch.prepare(plan, folder, inv.isSet(QStringLiteral("restart")));
+    if (d.kind == Kind::OtherScansLog)
+        return inv.usage(words::text(d.error) + tr(" (--restart starts over)"));
+    if (d.kind == Kind::Refused)
+        return inv.refused(words::text(d.error));
     QTextStream& out = inv.out();
-    if (runner.state() == ScanRunner::State::Finished) {
+    if (d.kind == Kind::AllTaken) {
         QStringList written;
         if (!runner.writeExports(&written, &error))
             return inv.refused(words::text(error));
@@ -282,17 +287,18 @@ int scanRun(Invocation& inv)
         out.flush();
         return Ok;
     }
-    QStringList blockers;
-    for (const msg::Message& m : runner.preflight())
-        blockers << words::text(m);
-    if (!blockers.isEmpty())
+    if (d.kind == Kind::Blocked) {
+        QStringList blockers;
+        for (const msg::Message& m : d.blockers)
+            blockers << words::text(m);
         return inv.refused(blockers.join(QStringLiteral("; ")) + (inv.isSet(QStringLiteral("home")) ? QString() : tr(" (--home homes the stage first)")));
-    const double eta = runner.etaS();
-    if (eta > 60 && !inv.isSet(QStringLiteral("yes")))
-        return inv.usage(tr("this scan takes about %1 min on the stage; add --yes to run it").arg(std::ceil(eta / 60)));
-    if (runner.takenTiles() > 0)
+    }
+    // A script has no one to ask: a run longer than ScanLaunch::kAskLongerThanS needs --yes.
+    if (d.outlook.longRun && !inv.isSet(QStringLiteral("yes")))
+        return inv.usage(tr("this scan takes about %1 min on the stage; add --yes to run it").arg(std::ceil(d.outlook.etaS / 60)));
+    if (d.outlook.resume)
         out << tr("Continuing at tile %1 of %2 (the run log in %3 has the first %4).\n")
-                   .arg(runner.takenTiles() + 1).arg(runner.totalTiles()).arg(folder).arg(runner.takenTiles());
+                   .arg(d.outlook.takenTiles + 1).arg(d.outlook.totalTiles).arg(folder).arg(d.outlook.takenTiles);
     QString stopReason;
     QStringList exports;
     QObject::connect(&runner, &ScanRunner::problem, [&](const msg::Message& m) { stopReason = words::text(m); });
@@ -311,7 +317,7 @@ int scanRun(Invocation& inv)
                        .arg(r.measuredMm[0], 0, 'f', 4).arg(r.measuredMm[1], 0, 'f', 4).arg(r.settleS, 0, 'f', 3);
         out.flush();
     });
-    if (!runner.start(&error))
+    if (!launch.start(&error))
         return inv.refused(words::text(error));
     const auto abortHook = inv.host().onAbort([&runner] { runner.abort(); });  // the API's cancel; the log can continue
     spinUntil([&] { return !runner.isActive(); }, std::numeric_limits<int>::max());

@@ -15,6 +15,8 @@
 #include <QMessageBox>
 #include <QStandardPaths>
 
+#include <array>
+
 namespace app {
 
 ui::CalibrationScreen* makeCalibrationScreen(InstrumentSession* const sessions[2], QWidget* window, ui::MessageBanner* banner,
@@ -35,9 +37,11 @@ ui::CalibrationScreen* makeCalibrationScreen(InstrumentSession* const sessions[2
             return QMessageBox::question(window, QObject::tr("Calibration"), q, QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
                 == QMessageBox::Yes;
         });
-    screen->setGaugeFactory([sessions](int index, const QString& port, int axis, QObject* owner, QString* error) -> dev::Transport* {
+    // The sessions themselves, not the caller's list of them: that list may be a temporary.
+    const std::array<InstrumentSession*, 2> gaugeSessions{sessions[0], sessions[1]};
+    screen->setGaugeFactory([gaugeSessions](int index, const QString& port, int axis, QObject* owner, QString* error) -> dev::Transport* {
         if (port == QLatin1String("sim")) {
-            auto* link = qobject_cast<dev::SimulatedLink*>(sessions[index]->link());
+            auto* link = qobject_cast<dev::SimulatedLink*>(gaugeSessions[static_cast<std::size_t>(index)]->link());
             if (!link) {
                 *error = QObject::tr("'sim' is the in-process simulator's gauge: connect the instrument to the simulator first.");
                 return nullptr;

@@ -57,6 +57,9 @@
 
 namespace app {
 namespace {
+/// Each instrument's group in the settings, in instrument order (0 analyzer, 1 stage).
+constexpr const char* kSettingsKeys[] = {"analyzer", "stage"};
+
 /// A screen's scroll area: it asks for all its screen needs up to what a 1366 × 768 laptop
 /// leaves a screen beside the navigation, the connections, the event log and the status bar
 /// (MainWindowSize tests hold the sum). Beyond that the screen scrolls instead of growing the
@@ -105,17 +108,19 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     setWindowTitle(tr("BenchPilot"));
     m_longMoves = new LongMoveQuestion(this, m_options.answer);
     ui::InputPolicy::install();  // the wheel turns only a focused spin box or combo, on every screen
-    m_sessions[0] = new InstrumentSession(proto::DeviceKind::Analyzer, tr("Analyzer"), this);
-    m_sessions[1] = new InstrumentSession(proto::DeviceKind::Stage, tr("Stage"), this);
+    static_assert(std::size(kSettingsKeys) == kInstrumentCount, "a settings group per instrument");
+    const proto::DeviceKind kinds[kInstrumentCount] = {proto::DeviceKind::Analyzer, proto::DeviceKind::Stage};
+    for (int i = 0; i < kInstrumentCount; ++i)
+        m_instruments[i].session = new InstrumentSession(kinds[i], instrumentTitle(i), this);
     m_hub = new tele::TelemetryHub(this);
     // Every instrument's positions and following errors from connection on, shown or
     // not, so "what just happened?" can be answered on the Plots screen (docs/telemetry.md, "History").
     m_hub->enableHistory();
-    for (int i = 0; i < 2; ++i)
-        m_hub->addInstrument(i, m_sessions[i]->name(), m_sessions[i]->instrument());
+    for (int i = 0; i < kInstrumentCount; ++i)
+        m_hub->addInstrument(i, m_instruments[i].session->name(), m_instruments[i].session->instrument());
     // The screens drive the instruments through the API's gate: while a script holds
     // control their motion asks first (api_wiring.h).
-    m_api = new ApiWiring(m_sessions, m_hub, m_options.api, this);
+    m_api = new ApiWiring(sessions().data(), m_hub, m_options.api, this);
 
     auto* central = new QWidget(this);
     auto* v = new QVBoxLayout(central);
@@ -124,10 +129,10 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     // Connections on the left, the E-stop on the right: both visible on every screen.
     auto* top = new QHBoxLayout;
     auto* bars = new QVBoxLayout;
-    m_bars[0] = new ui::ConnectionBar(tr("Analyzer"), central);
-    m_bars[1] = new ui::ConnectionBar(tr("Stage"), central);
-    bars->addWidget(m_bars[0]);
-    bars->addWidget(m_bars[1]);
+    for (int i = 0; i < kInstrumentCount; ++i) {
+        m_instruments[i].bar = new ui::ConnectionBar(instrumentTitle(i), central);
+        bars->addWidget(m_instruments[i].bar);
+    }
     top->addLayout(bars, 1);
     // Messages sit beside the E-stop in the row the connections make tall anyway: no row of
     // their own, so one that comes or goes moves nothing under the operator's pointer.
@@ -163,28 +168,28 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     setCentralWidget(central);
 
     m_jogTabs = new QTabWidget;
-    for (int i = 0; i < 2; ++i) {
-        m_jog[i] = new ui::JogScreen(m_api->screenInstrument(i));
+    for (int i = 0; i < kInstrumentCount; ++i) {
+        auto* jog = m_instruments[i].jog = new ui::JogScreen(m_api->screenInstrument(i));
         if (m_options.confirmDialogs) {
-            m_jog[i]->setConfirm([this](const QString& q) { return confirm(q); });
-            m_jog[i]->setConfirmLongMove([this](const QString& q) { return m_longMoves->ask(q); });
+            jog->setConfirm([this](const QString& q) { return confirm(q); });
+            jog->setConfirmLongMove([this](const QString& q) { return m_longMoves->ask(q); });
         }
-        connect(m_jog[i], &ui::JogScreen::problem, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); });
-        m_jog[i]->setTelemetry(m_hub, i);
-        m_jogTabs->addTab(m_jog[i], m_sessions[i]->name());
+        connect(jog, &ui::JogScreen::problem, this, &MainWindow::warn);
+        jog->setTelemetry(m_hub, i);
+        m_jogTabs->addTab(jog, m_instruments[i].session->name());
     }
-    connect(m_jogTabs, &QTabWidget::currentChanged, this, [this](int i) { m_jog[i]->setFocus(); });
+    connect(m_jogTabs, &QTabWidget::currentChanged, this, [this](int i) { m_instruments[i].jog->setFocus(); });
     addScreen(QStringLiteral("jog"), tr("Jog"), m_jogTabs);
     m_plots = new ui::PlotsScreen(m_hub);
     m_plots->setFileChooser([this](const QString& title, const QString& filter) {
         return QFileDialog::getSaveFileName(this, title, QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation), filter);
     });
-    connect(m_plots, &ui::PlotsScreen::problem, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); });
+    connect(m_plots, &ui::PlotsScreen::problem, this, &MainWindow::warn);
     addScreen(QStringLiteral("plots"), tr("Plots"), m_plots);
     addScreen(QStringLiteral("profiles"), tr("Profiles"), new ui::ProfilesScreen);
     m_tuning = new ui::TuningScreen(m_hub);
-    for (int i = 0; i < 2; ++i)
-        m_tuning->addInstrument(i, m_sessions[i]->name(), m_api->screenInstrument(i));
+    for (int i = 0; i < kInstrumentCount; ++i)
+        m_tuning->addInstrument(i, m_instruments[i].session->name(), m_api->screenInstrument(i));
     m_tuning->setFileChooser([this](const QString& title, const QString& filter, bool save) {
         const QString dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
         return save ? QFileDialog::getSaveFileName(this, title, dir, filter) : QFileDialog::getOpenFileName(this, title, dir, filter);
@@ -194,7 +199,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
             return QMessageBox::question(this, tr("Apply gains"), q, QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel)
                 == QMessageBox::Yes;
         });
-    connect(m_tuning, &ui::TuningScreen::problem, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); });
+    connect(m_tuning, &ui::TuningScreen::problem, this, &MainWindow::warn);
     addScreen(QStringLiteral("tuning"), tr("Tuning"), m_tuning);
     {
         MotionScreens::Hooks hooks;
@@ -206,15 +211,15 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
                 return save ? QFileDialog::getSaveFileName(this, title, dir, filter) : QFileDialog::getOpenFileName(this, title, dir, filter);
             };
         }
-        hooks.warn = [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); };
+        hooks.warn = [this](const QString& m) { warn(m); };
         hooks.instrument = [this](int i) { return m_api->screenInstrument(i); };
-        m_motion = new MotionScreens(m_sessions, m_hub, hooks, this);
+        m_motion = new MotionScreens(sessions().data(), m_hub, hooks, this);
         addScreen(QStringLiteral("joystick"), tr("Joystick"), m_motion->joystickTabs());
         addScreen(QStringLiteral("patterns"), tr("Patterns"), m_motion->patterns());
     }
     m_plates = new ui::PlatesScreen(m_api->screenInstrument(0));
-    connect(m_plates, &ui::PlatesScreen::problem, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); });
-    connect(m_plates, &ui::PlatesScreen::note, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Info, m); });
+    connect(m_plates, &ui::PlatesScreen::problem, this, &MainWindow::warn);
+    connect(m_plates, &ui::PlatesScreen::note, this, &MainWindow::inform);
     wirePlatesScreen(m_plates, this, m_options);
     addScreen(QStringLiteral("plates"), tr("Plates"), m_plates);
     m_scan = new ui::ScanScreen(m_api->screenInstrument(1));
@@ -230,10 +235,10 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
         m_scan->setConfirm([this](const QString& q) { return confirm(q); });
         m_scan->setConfirmLongMove([this](const QString& q) { return m_longMoves->ask(q); });
     }
-    connect(m_scan, &ui::ScanScreen::problem, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Warning, m); });
-    connect(m_scan, &ui::ScanScreen::notice, this, [this](const QString& m) { m_banner->show(ui::MessageBanner::Level::Info, m); });
+    connect(m_scan, &ui::ScanScreen::problem, this, &MainWindow::warn);
+    connect(m_scan, &ui::ScanScreen::notice, this, &MainWindow::inform);
     addScreen(QStringLiteral("scan"), tr("Scan"), m_scan);
-    m_calibration = makeCalibrationScreen(m_sessions, this, m_banner, m_hub, m_options);
+    m_calibration = makeCalibrationScreen(sessions().data(), this, m_banner, m_hub, m_options);
     addScreen(QStringLiteral("calibration"), tr("Calibration"), m_calibration);
     connect(m_nav, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
     m_nav->setCurrentRow(0);
@@ -248,12 +253,12 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     resizeDocks({dock}, {dock->minimumSizeHint().height()}, Qt::Vertical);
     wireApi(dock);
 
-    for (int i = 0; i < 2; ++i) {
-        m_statusLabels[i] = new QLabel(this);
-        statusBar()->addWidget(m_statusLabels[i], 1);
+    for (auto& slot : m_instruments) {
+        slot.statusLabel = new QLabel(this);
+        statusBar()->addWidget(slot.statusLabel, 1);
     }
-    for (int i = 0; i < 2; ++i)
-        wireSession(i, m_bars[i]);
+    for (int i = 0; i < kInstrumentCount; ++i)
+        wireSession(i, m_instruments[i].bar);
     auto* statsTimer = new QTimer(this);
     connect(statsTimer, &QTimer::timeout, this, &MainWindow::updateStatusBar);
     statsTimer->start(500);
@@ -281,19 +286,19 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     resize(preferred.boundedTo(room));
     if (preferred.boundedTo(room) != preferred)
         setWindowState(windowState() | Qt::WindowMaximized);
-    ui::ConnectionChoice choices[2];
+    ui::ConnectionChoice choices[kInstrumentCount];
     if (m_options.persistSettings)
         loadSettings();
-    for (int i = 0; i < 2; ++i) {
+    for (int i = 0; i < kInstrumentCount; ++i) {
         if (m_options.connection[i])
-            m_bars[i]->setChoice(*m_options.connection[i]);
-        choices[i] = m_bars[i]->choice();
+            m_instruments[i].bar->setChoice(*m_options.connection[i]);
+        choices[i] = m_instruments[i].bar->choice();
     }
     if (m_options.showInstrument >= 0)
         showInstrument(m_options.showInstrument);
     if (m_options.autoConnect)
-        for (int i = 0; i < 2; ++i)
-            m_sessions[i]->connectTo(choices[i]);
+        for (int i = 0; i < kInstrumentCount; ++i)
+            m_instruments[i].session->connectTo(choices[i]);
     updateStatusBar();
 }
 
@@ -305,8 +310,8 @@ MainWindow::~MainWindow()
     // The sessions are the first children to go; a client that reports "disconnected"
     // while its session is destroyed must not reach updateStatusBar(), which reads the
     // other, possibly already destroyed, session.
-    for (auto* s : m_sessions)
-        s->instrument()->disconnect(this);
+    for (const auto& slot : m_instruments)
+        slot.session->instrument()->disconnect(this);
 }
 
 void MainWindow::wireApi(QDockWidget* logDock)
@@ -315,7 +320,7 @@ void MainWindow::wireApi(QDockWidget* logDock)
         m_banner->show(ui::MessageBanner::Level::Warning, m_api->startError());
     if (!m_api->server())
         return;
-    jobs::PatternRunner* const patterns[2] = {m_motion->runner(0), m_motion->runner(1)};
+    jobs::PatternRunner* const patterns[kInstrumentCount] = {m_motion->runner(0), m_motion->runner(1)};
     m_api->watchRunners(m_plates->runner(), m_scan->runner(), patterns, m_tuning->runner(), m_calibration);
     if (m_options.confirmDialogs)
         m_api->setAsk([this](const QString& q) {
@@ -352,7 +357,7 @@ void MainWindow::wireApi(QDockWidget* logDock)
     connect(m_api, &ApiWiring::note, this, [this](const QString& client, const QString& text, bool problem) {
         m_log->addNote(tr("API"), client.isEmpty() ? tr("server") : client, text, problem);
     });
-    connect(m_api, &ApiWiring::handedOver, this, [this](const QString& text) { m_banner->show(ui::MessageBanner::Level::Info, text); });
+    connect(m_api, &ApiWiring::handedOver, this, &MainWindow::inform);
 }
 
 void MainWindow::addScreen(const QString& name, const QString& title, QWidget* screen)
@@ -399,7 +404,7 @@ bool MainWindow::confirm(const QString& question)
 
 void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
 {
-    InstrumentSession* s = m_sessions[i];
+    InstrumentSession* s = m_instruments[i].session;
     dev::Instrument* c = s->instrument();
     connect(bar, &ui::ConnectionBar::connectRequested, this, [s](const ui::ConnectionChoice& ch) { s->connectTo(ch); });
     connect(bar, &ui::ConnectionBar::disconnectRequested, this, [this, i, s, bar] {
@@ -431,13 +436,13 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
     // A controller that no longer trusts its position (GRBL's alarm after an E-stop or a reset in
     // motion): say so once, and what to do.
     connect(c, &dev::Instrument::statusChanged, this, [this, s, i](const dev::InstrumentStatus& st) {
-        if (st.positionLost && !m_positionLostShown[i])
+        if (st.positionLost && !m_instruments[i].positionLostShown)
             m_banner->show(ui::MessageBanner::Level::Error, [s] {
                 return tr("%1: the controller no longer trusts its position (an alarm, an E-stop or a reset while it was "
                           "moving). Home it, or Unlock on the Jog screen to take the position it believes.")
                     .arg(s->name());
             });
-        m_positionLostShown[i] = st.positionLost;
+        m_instruments[i].positionLostShown = st.positionLost;
     });
     auto showState = [this, i, c, bar] {
         const auto& id = c->identity();
@@ -495,14 +500,14 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
 
 void MainWindow::updateStatusBar()
 {
-    for (int i = 0; i < 2; ++i) {
-        dev::Instrument* c = m_sessions[i]->instrument();
+    for (auto& slot : m_instruments) {
+        dev::Instrument* c = slot.session->instrument();
         const dev::LinkStats st = c->stats();
-        QString text = QStringLiteral("%1: %2").arg(m_sessions[i]->name(), words::term(dev::linkStateTerm(c->state())));
+        QString text = QStringLiteral("%1: %2").arg(slot.session->name(), words::term(dev::linkStateTerm(c->state())));
         // "ready" while the E-stop is latched would contradict the red banner: the latch is the state.
         const bool latched = c->isReady() && c->status().estop;
         if (latched)
-            text = tr("%1: E-STOP latched — press Reset E-stop to clear").arg(m_sessions[i]->name());
+            text = tr("%1: E-STOP latched — press Reset E-stop to clear").arg(slot.session->name());
         if (c->state() == dev::LinkState::Ready)
             text += QStringLiteral(" · %1").arg(c->identity().model);
         const quint64 bad = st.crcErrors + st.malformed + st.oversize;
@@ -512,18 +517,31 @@ void MainWindow::updateStatusBar()
             text += tr(" · %1 retries, %2 timeouts").arg(st.retransmits).arg(st.timeouts);
         if (st.lostSamples)
             text += tr(" · %1 samples lost").arg(st.lostSamples);
-        m_statusLabels[i]->setText(text);
-        m_statusLabels[i]->setStyleSheet(latched ? QStringLiteral("color:#b71c1c; font-weight:bold;") : QString());
+        slot.statusLabel->setText(text);
+        slot.statusLabel->setStyleSheet(latched ? QStringLiteral("color:#b71c1c; font-weight:bold;") : QString());
     }
 }
 
-QString MainWindow::statusText(int index) const { return m_statusLabels[index]->text(); }
+QString MainWindow::statusText(int index) const { return m_instruments[index].statusLabel->text(); }
+
+std::array<InstrumentSession*, MainWindow::kInstrumentCount> MainWindow::sessions() const
+{
+    std::array<InstrumentSession*, kInstrumentCount> out{};
+    for (int i = 0; i < kInstrumentCount; ++i)
+        out[i] = m_instruments[i].session;
+    return out;
+}
+
+QString MainWindow::instrumentTitle(int index) { return index == 0 ? tr("Analyzer") : tr("Stage"); }
+
+void MainWindow::warn(const QString& message) { m_banner->show(ui::MessageBanner::Level::Warning, message); }
+void MainWindow::inform(const QString& message) { m_banner->show(ui::MessageBanner::Level::Info, message); }
 
 void MainWindow::updateEStopUi()
 {
     bool latched = false;
-    for (auto* s : m_sessions)
-        latched = latched || (s->instrument()->isReady() && s->instrument()->status().estop);
+    for (const auto& slot : m_instruments)
+        latched = latched || (slot.session->instrument()->isReady() && slot.session->instrument()->status().estop);
     m_reset->setVisible(latched);
     if (latched != m_latchShown) {
         m_latchShown = latched;
@@ -534,16 +552,18 @@ void MainWindow::updateEStopUi()
 void MainWindow::emergencyStop()
 {
     // Both instruments, whichever screen is showing: the operator should not have to think.
-    for (auto* j : m_jog)
-        j->clearFocus();
+    for (const auto& slot : m_instruments)
+        slot.jog->clearFocus();
     m_motion->stopSticks();
-    for (auto* s : m_sessions)
-        if (s->instrument()->isReady())
-            s->instrument()->estop();
+    for (const auto& slot : m_instruments)
+        if (slot.session->instrument()->isReady())
+            slot.session->instrument()->estop();
     // A GRBL controller stops with a soft reset: one that was moving loses its position.
     bool positionAtRisk = false;
-    for (auto* s : m_sessions)
-        positionAtRisk = positionAtRisk || (s->instrument()->isReady() && !s->instrument()->capabilities().testFlag(dev::Capability::StopsOnHostLoss));
+    for (const auto& slot : m_instruments) {
+        const dev::Instrument* c = slot.session->instrument();
+        positionAtRisk = positionAtRisk || (c->isReady() && !c->capabilities().testFlag(dev::Capability::StopsOnHostLoss));
+    }
     m_banner->show(
         ui::MessageBanner::Level::Error,
         [positionAtRisk] {
@@ -556,9 +576,9 @@ void MainWindow::emergencyStop()
 
 void MainWindow::resetEStop()
 {
-    for (auto* s : m_sessions)
-        if (s->instrument()->isReady() && s->instrument()->status().estop)
-            s->instrument()->reset();
+    for (const auto& slot : m_instruments)
+        if (slot.session->instrument()->isReady() && slot.session->instrument()->status().estop)
+            slot.session->instrument()->reset();
     m_banner->withdraw(QStringLiteral("estop"));
     m_banner->show(ui::MessageBanner::Level::Info, [] { return tr("E-stop cleared. Re-home the axes if anything was moved by hand."); });
 }
@@ -618,17 +638,14 @@ void MainWindow::retranslateUi()
         for (const auto& [name, title] : titles)
             if (m_screenNames[i] == QLatin1String(name))
                 m_nav->item(i)->setText(title);
-    m_bars[0]->setTitle(tr("Analyzer"));
-    m_bars[1]->setTitle(tr("Stage"));
-    for (int i = 0; i < 2; ++i) {
+    for (int i = 0; i < kInstrumentCount; ++i) {
+        m_instruments[i].bar->setTitle(instrumentTitle(i));
         if (m_hub)
-            m_hub->setInstrumentName(i, m_sessions[i]->name());
+            m_hub->setInstrumentName(i, m_instruments[i].session->name());
         if (m_tuning)
-            m_tuning->renameInstrument(i, m_sessions[i]->name());
-    }
-    if (m_jogTabs && m_jogTabs->count() >= 2) {
-        m_jogTabs->setTabText(0, tr("Analyzer"));
-        m_jogTabs->setTabText(1, tr("Stage"));
+            m_tuning->renameInstrument(i, m_instruments[i].session->name());
+        if (m_jogTabs && m_jogTabs->count() >= kInstrumentCount)
+            m_jogTabs->setTabText(i, instrumentTitle(i));
     }
     m_reset->setText(tr("Reset E-stop"));
     m_reset->setToolTip(tr("Clear the E-stop latch on both instruments (axes stay where they are)"));
@@ -654,8 +671,8 @@ void MainWindow::changeEvent(QEvent* event)
         retranslateUi();
     // A hold whose key-up went to another application must not keep the machine moving.
     if (event->type() == QEvent::ActivationChange && !isActiveWindow())
-        for (auto* s : m_sessions)
-            s->instrument()->stopAllJogs();
+        for (const auto& slot : m_instruments)
+            slot.session->instrument()->stopAllJogs();
     QMainWindow::changeEvent(event);
 }
 
@@ -664,9 +681,8 @@ void MainWindow::loadSettings()
     QSettings st;
     restoreGeometry(st.value(QStringLiteral("window/geometry")).toByteArray());
     restoreState(st.value(QStringLiteral("window/state")).toByteArray());
-    const char* keys[2] = {"analyzer", "stage"};
-    for (int i = 0; i < 2; ++i) {
-        st.beginGroup(QStringLiteral("connection/%1").arg(QLatin1String(keys[i])));
+    for (int i = 0; i < kInstrumentCount; ++i) {
+        st.beginGroup(QStringLiteral("connection/%1").arg(QLatin1String(kSettingsKeys[i])));
         ui::ConnectionChoice c;
         c.simulator = st.value(QStringLiteral("simulator"), true).toBool();
         c.port = st.value(QStringLiteral("port")).toString();
@@ -674,10 +690,10 @@ void MainWindow::loadSettings()
         c.baud = st.value(QStringLiteral("baud"), 115200).toInt();
         c.profile = st.value(QStringLiteral("profile")).toString();
         for (const QString& path : st.value(QStringLiteral("profiles")).toStringList())
-            m_bars[i]->addProfile(path, false);
+            m_instruments[i].bar->addProfile(path, false);
         st.endGroup();
-        m_bars[i]->setChoice(c);
-        m_jog[i]->setSpeedFraction(st.value(QStringLiteral("jog/%1/speed").arg(QLatin1String(keys[i])), 0.2).toDouble());
+        m_instruments[i].bar->setChoice(c);
+        m_instruments[i].jog->setSpeedFraction(st.value(QStringLiteral("jog/%1/speed").arg(QLatin1String(kSettingsKeys[i])), 0.2).toDouble());
     }
     m_motion->load(st);
     m_nav->setCurrentRow(std::clamp(st.value(QStringLiteral("window/screen"), 0).toInt(), 0, m_nav->count() - 1));
@@ -702,18 +718,17 @@ void MainWindow::saveSettings()
     m_motion->save(st);
     st.setValue(QStringLiteral("scan/plan"), m_scan->planText());
     st.setValue(QStringLiteral("scan/folder"), m_scan->outputFolder());
-    const char* keys[2] = {"analyzer", "stage"};
-    for (int i = 0; i < 2; ++i) {
-        const ui::ConnectionChoice c = m_sessions[i]->choice();
-        st.beginGroup(QStringLiteral("connection/%1").arg(QLatin1String(keys[i])));
+    for (int i = 0; i < kInstrumentCount; ++i) {
+        const ui::ConnectionChoice c = m_instruments[i].session->choice();
+        st.beginGroup(QStringLiteral("connection/%1").arg(QLatin1String(kSettingsKeys[i])));
         st.setValue(QStringLiteral("simulator"), c.simulator);
         st.setValue(QStringLiteral("port"), c.port);
         st.setValue(QStringLiteral("serial_number"), c.serialNumber);
         st.setValue(QStringLiteral("baud"), c.baud);
         st.setValue(QStringLiteral("profile"), c.profile);
-        st.setValue(QStringLiteral("profiles"), m_bars[i]->profiles());
+        st.setValue(QStringLiteral("profiles"), m_instruments[i].bar->profiles());
         st.endGroup();
-        st.setValue(QStringLiteral("jog/%1/speed").arg(QLatin1String(keys[i])), m_jog[i]->speedFraction());
+        st.setValue(QStringLiteral("jog/%1/speed").arg(QLatin1String(kSettingsKeys[i])), m_instruments[i].jog->speedFraction());
     }
 }
 
@@ -741,7 +756,7 @@ bool MainWindow::confirmDisconnect(int index)
         return true;
     return confirm(tr("%1 is running %2. Disconnect anyway? The instrument stops the job when the link goes quiet; "
                       "it can be resumed after you connect again.")
-                       .arg(m_sessions[index]->name(), jobs.join(tr(", "))));
+                       .arg(m_instruments[index].session->name(), jobs.join(tr(", "))));
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)
@@ -749,9 +764,9 @@ void MainWindow::closeEvent(QCloseEvent* event)
     // The one rule: quitting with unsaved edits or a running job asks first.
     if (m_options.confirmDialogs || m_options.answer) {
         QStringList reasons;
-        for (int i = 0; i < 2; ++i)
+        for (int i = 0; i < kInstrumentCount; ++i)
             for (const QString& job : runningJobs(i))
-                reasons << tr("%1 is running %2").arg(m_sessions[i]->name(), job);
+                reasons << tr("%1 is running %2").arg(m_instruments[i].session->name(), job);
         if (m_plates->recipeEditor()->isModified())
             reasons << tr("the recipe has changes that are not saved");
         if (!reasons.isEmpty() && !confirm(tr("Quit BenchPilot? %1.").arg(reasons.join(tr("; "))))) {
@@ -759,8 +774,8 @@ void MainWindow::closeEvent(QCloseEvent* event)
             return;
         }
     }
-    for (auto* s : m_sessions)
-        s->instrument()->stopAllJogs();
+    for (const auto& slot : m_instruments)
+        slot.session->instrument()->stopAllJogs();
     if (m_options.persistSettings)
         saveSettings();
     savePlatesSettings(m_plates, m_options);

@@ -6,6 +6,7 @@
 
 #include <QMainWindow>
 
+#include <array>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -66,13 +67,13 @@ public:
     explicit MainWindow(const MainWindowOptions& options = {}, QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    InstrumentSession* analyzer() { return m_sessions[0]; }
-    InstrumentSession* stage() { return m_sessions[1]; }
+    InstrumentSession* analyzer() { return m_instruments[0].session; }
+    InstrumentSession* stage() { return m_instruments[1].session; }
     /// Screen names are the lower-case navigation words: "jog", "profiles", …
     QStringList screenNames() const;
     bool showScreen(const QString& name);
     void showInstrument(int index);  ///< 0 analyzer, 1 stage, on screens that have a choice
-    ui::JogScreen* jogScreen(int index) { return m_jog[index]; }
+    ui::JogScreen* jogScreen(int index) { return m_instruments[index].jog; }
     ui::PlotsScreen* plotsScreen() { return m_plots; }
     ui::TuningScreen* tuningScreen() { return m_tuning; }
     /// The Joystick and Patterns screens (motion_screens.h).
@@ -98,6 +99,25 @@ protected:
     void changeEvent(QEvent* event) override;
 
 private:
+    /// 0 the analyzer, 1 the stage: the order of every per-instrument list here and in the
+    /// parts the window wires (the API, the telemetry hub, the motion and calibration screens).
+    static constexpr int kInstrumentCount = 2;
+    /// What the window keeps of one instrument.
+    struct InstrumentSlot {
+        InstrumentSession* session = nullptr;
+        ui::ConnectionBar* bar = nullptr;
+        ui::JogScreen* jog = nullptr;
+        QLabel* statusLabel = nullptr;
+        bool positionLostShown = false;  ///< the "no longer trusts its position" banner is up
+    };
+    /// The sessions in instrument order, for the parts that take the list.
+    std::array<InstrumentSession*, kInstrumentCount> sessions() const;
+    /// The instrument's name for people ("Analyzer", "Stage") in the current language.
+    static QString instrumentTitle(int index);
+    /// A screen's problem, and its notice, on the banner.
+    void warn(const QString& message);
+    void inform(const QString& message);
+
     /// The window's own texts (title, navigation, E-stop, docks, menus); the screens
     /// reword themselves on the same LanguageChange.
     void retranslateUi();
@@ -119,7 +139,7 @@ private:
 
     MainWindowOptions m_options;
     LongMoveQuestion* m_longMoves;  ///< the long-move question, waivable for this session only
-    InstrumentSession* m_sessions[2];
+    std::array<InstrumentSlot, kInstrumentCount> m_instruments;
     ApiWiring* m_api;
     tele::TelemetryHub* m_hub;  ///< every instrument's telemetry, for the plots
     ui::PlotsScreen* m_plots;
@@ -127,8 +147,6 @@ private:
     ui::PlatesScreen* m_plates;
     ui::ScanScreen* m_scan;
     ui::CalibrationScreen* m_calibration;
-    ui::ConnectionBar* m_bars[2];
-    ui::JogScreen* m_jog[2];
     QTabWidget* m_jogTabs;
     MotionScreens* m_motion;
     QListWidget* m_nav;
@@ -138,8 +156,6 @@ private:
     ui::EventLog* m_log;
     QPushButton* m_estop;
     QPushButton* m_reset;
-    QLabel* m_statusLabels[2];
-    bool m_positionLostShown[2] = {false, false};
     std::vector<std::function<void()>> m_connectionTexts;  ///< each instrument's connection bar and status text, worded anew
     bool m_latchShown = false;  ///< the status bar shows an E-stop latch
     QDockWidget* m_logDock = nullptr;

@@ -21,6 +21,29 @@ using motion::scan::Point2;
 
 namespace {
 constexpr unsigned kBothAxes = 0x3;
+
+/// A commanded position this close to the move's target (mm) is the target: the setpoint
+/// comes back in whole nanometres (docs/protocol.md, wire units), so it differs from the
+/// target by rounding; 0.1 µm is above that and far below a step or a grating count.
+constexpr double kScanAtTargetMm = 1e-4;
+/// Readings at rest on the target, in a row, that stand for a lost MotionDone: the second
+/// confirms the first was not a passing moment, at the cost of one status poll, and only on
+/// a line that lost the event.
+constexpr int kScanRestPollsForArrival = 2;
+/// The run's own pace corrects the time left only once this many tiles of the session are
+/// taken: fewer are mostly the lead-in and the first settle, not the run's rhythm.
+constexpr int kScanPaceMinTiles = 3;
+/// …and only over a stretch the estimate puts at least this long (s): a shorter one is
+/// dominated by the device clock's granularity and one tile's settle.
+constexpr double kScanPaceMinStretchS = 0.5;
+/// The correction is held between these factors: a stage five times slower or faster than
+/// planned is a fault to report, not a pace to extrapolate over the rest of the run.
+constexpr double kScanPaceMinFactor = 0.2;
+constexpr double kScanPaceMaxFactor = 5.0;
+
+constexpr double kScanSecondsPerUs = 1e-6;
+constexpr double kScanUmPerMm = 1e3;
+constexpr double kScanMsPerS = 1e3;
 } // namespace
 
 ScanRunner::ScanRunner(dev::Instrument* client, QObject* parent) : QObject(parent), m_client(client)
@@ -48,6 +71,14 @@ ScanRunner::ScanRunner(dev::Instrument* client, QObject* parent) : QObject(paren
             return;
         checkSettled({s.axes[0].measured, s.axes[1].measured}, s.deviceTimeUs);
     });
+    // The stage model is taken once per prepare and again only when the device reports
+    // other limits, so preflight and the lead-in check what the device has now.
+    const auto retakeStageModel = [this] {
+        if (m_prepared)
+            m_stageModel = stageModelOf(m_client->identity(), m_client->softLimits());
+    };
+    m_clientConnections << connect(m_client, &dev::Instrument::identified, this, retakeStageModel);
+    m_clientConnections << connect(m_client, &dev::Instrument::limitsChanged, this, retakeStageModel);
     m_clientConnections << connect(m_client, &dev::Instrument::stateChanged, this, [this](dev::LinkState st) {
         if (st != dev::LinkState::Ready && isActive())
             stopWith(msg::make("scan.run.link_lost", {tileArg(currentTile())}), false);
@@ -145,65 +176,75 @@ bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& fold
     const std::uint64_t fingerprint = motion::scan::layoutFingerprint(plan, m_layout);
 
     bool fresh = true;
-    if (QFileInfo::exists(logPath())) {
-        std::string text;
-        if (!files::readText(logPath(), &text, error))
-            return false;
-        const auto log = scanfile::parseRunLog(text);
-        if (!log.log) {
-            const jsonio::Problem& first = log.problems.list().front();
-            *error = msg::make("scan.run.log_damaged", {msg::verbatim("log", scanfile::kRunLogFile),
-                                                        msg::integer("line", first.position.line, msg::Unit::None),
-                                                        msg::nested("cause", first.message)});
-            return false;
-        }
-        if (log.log->fingerprint == fingerprint && !restart) {
-            fresh = false;
-            for (const auto& r : log.log->records) {
-                const auto k = static_cast<std::size_t>(r.target);
-                if (k >= m_records.size())
-                    continue;
-                m_records[k].measuredMm = r.measuredMm;
-                m_records[k].deviceTimeUs = r.deviceTimeUs;
-                m_records[k].settleS = r.settleS;
-                if (!m_taken[k]) {
-                    m_taken[k] = 1;
-                    ++m_takenCount;
-                }
-            }
-            // A line torn by a crash would sit in front of the next one: write the
-            // log out again without it (atomically, so this cannot lose it either).
-            if (log.log->tornTail) {
-                std::string clean = scanfile::runLogHeader(m_plan.name, fingerprint, totalTiles());
-                for (const auto& r : log.log->records)
-                    clean += scanfile::runLogLine(r);
-                if (!files::writeAtomically(logPath(), clean, error))
-                    return false;
-            }
-        } else if (!restart) {
-            reason = Refusal::OtherScansLog;
-            *error = msg::make("scan.run.other_scans_log", {msg::integer("taken", static_cast<long long>(log.log->records.size())),
-                                                            msg::integer("tiles", log.log->tiles)});
-            return false;
-        } else {
-            // Nothing is thrown away: the old log moves aside under its time.
-            const QString aside = QDir(m_folder).filePath(
-                QStringLiteral("scan-run.%1.jsonl").arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"))));
-            if (!QFile::rename(logPath(), aside)) {
-                *error = msg::make("scan.run.cannot_move_log", {msg::verbatim("file", aside.toStdString())});
-                return false;
-            }
-        }
-    }
+    if (QFileInfo::exists(logPath()) && !adoptRunLog(fingerprint, restart, &fresh, error, &reason))
+        return false;
     if (fresh && !files::writeAtomically(logPath(), scanfile::runLogHeader(m_plan.name, fingerprint, totalTiles()), error))
         return false;
-    m_estimate = motion::scan::estimateScan(m_plan, m_layout, stageModelOf(m_client->identity(), m_client->softLimits()));
+    m_stageModel = stageModelOf(m_client->identity(), m_client->softLimits());
+    m_estimate = motion::scan::estimateScan(m_plan, m_layout, m_stageModel);
     m_prepared = true;
     refreshCompensation();
     reason = Refusal::None;
     setState(m_takenCount == totalTiles() ? State::Finished : State::Idle);
     emit progress(m_takenCount, totalTiles(), etaS());
     return true;
+}
+
+bool ScanRunner::adoptRunLog(std::uint64_t fingerprint, bool restart, bool* fresh, msg::Message* error, Refusal* why)
+{
+    std::string text;
+    if (!files::readText(logPath(), &text, error))
+        return false;
+    const auto log = scanfile::parseRunLog(text);
+    if (!log.log) {
+        const jsonio::Problem& first = log.problems.list().front();
+        *error = msg::make("scan.run.log_damaged", {msg::verbatim("log", scanfile::kRunLogFile),
+                                                    msg::integer("line", first.position.line, msg::Unit::None),
+                                                    msg::nested("cause", first.message)});
+        return false;
+    }
+    if (log.log->fingerprint == fingerprint && !restart) {
+        *fresh = false;
+        return continueFromLog(*log.log, fingerprint, error);
+    }
+    if (!restart) {
+        *why = Refusal::OtherScansLog;
+        *error = msg::make("scan.run.other_scans_log", {msg::integer("taken", static_cast<long long>(log.log->records.size())),
+                                                        msg::integer("tiles", log.log->tiles)});
+        return false;
+    }
+    // Nothing is thrown away: the old log moves aside under its time.
+    const QString aside = QDir(m_folder).filePath(
+        QStringLiteral("scan-run.%1.jsonl").arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"))));
+    if (!QFile::rename(logPath(), aside)) {
+        *error = msg::make("scan.run.cannot_move_log", {msg::verbatim("file", aside.toStdString())});
+        return false;
+    }
+    return true;
+}
+
+bool ScanRunner::continueFromLog(const scanfile::RunLog& log, std::uint64_t fingerprint, msg::Message* error)
+{
+    for (const auto& r : log.records) {
+        const auto k = static_cast<std::size_t>(r.target);
+        if (k >= m_records.size())
+            continue;
+        m_records[k].measuredMm = r.measuredMm;
+        m_records[k].deviceTimeUs = r.deviceTimeUs;
+        m_records[k].settleS = r.settleS;
+        if (!m_taken[k]) {
+            m_taken[k] = 1;
+            ++m_takenCount;
+        }
+    }
+    if (!log.tornTail)
+        return true;
+    // A line torn by a crash would sit in front of the next one: write the
+    // log out again without it (atomically, so this cannot lose it either).
+    std::string clean = scanfile::runLogHeader(m_plan.name, fingerprint, totalTiles());
+    for (const auto& r : log.records)
+        clean += scanfile::runLogLine(r);
+    return files::writeAtomically(logPath(), clean, error);
 }
 
 Point2 ScanRunner::commanded(int pathIndex) const
@@ -246,7 +287,7 @@ std::vector<msg::Message> ScanRunner::preflight() const
             }
     }
     // The whole plan against the device's travel and soft limits, before anything moves.
-    for (const auto& p : motion::scan::validate(m_plan, stageModelOf(id, m_client->softLimits())))
+    for (const auto& p : motion::scan::validate(m_plan, m_stageModel))
         out.push_back(msg::make("scan.run.plan_problem", {msg::verbatim("field", p.field), msg::nested("cause", p.message)}));
     return out;
 }
@@ -286,8 +327,7 @@ bool ScanRunner::start(msg::Message* error)
         && m_layout.path[static_cast<std::size_t>(m_pathIndex)].tile >= 0) {
         const Point2 over = motion::scan::overtravelPoint(m_layout, m_plan, m_layout.path[static_cast<std::size_t>(m_pathIndex)].target);
         m_extraApproach = motion::scan::commandedTarget(m_plan, over);
-        const auto limits = stageModelOf(m_client->identity(), m_client->softLimits()).travel;
-        if (!limits.contains(*m_extraApproach))
+        if (!m_stageModel.travel.contains(*m_extraApproach))
             m_extraApproach.reset();  // at the edge of travel: the direct move is the best there is
     }
     m_sessionFirstTaken = m_takenCount;
@@ -298,10 +338,9 @@ bool ScanRunner::start(msg::Message* error)
     const Point2 from = st.axes.size() >= 2 ? Point2{st.axes[0].commanded, st.axes[1].commanded} : Point2{};
     const Point2 firstTarget = m_extraApproach ? *m_extraApproach
                                                : (m_pathIndex < static_cast<int>(m_layout.path.size()) ? commanded(m_pathIndex) : from);
-    m_leadInS = motion::scan::moveTimeS(from, firstTarget, m_plan.speedMmS, stageModelOf(m_client->identity(), m_client->softLimits()));
+    m_leadInS = motion::scan::moveTimeS(from, firstTarget, m_plan.speedMmS, m_stageModel);
     if (m_extraApproach && m_pathIndex < static_cast<int>(m_layout.path.size()))
-        m_leadInS += motion::scan::moveTimeS(*m_extraApproach, commanded(m_pathIndex), m_plan.speedMmS,
-                                             stageModelOf(m_client->identity(), m_client->softLimits()));
+        m_leadInS += motion::scan::moveTimeS(*m_extraApproach, commanded(m_pathIndex), m_plan.speedMmS, m_stageModel);
     setState(State::Running);
     nextWaypoint();
     return true;
@@ -348,12 +387,13 @@ double ScanRunner::etaS() const
     // estimate: trigger to trigger on the device's clock against the estimate for
     // the same stretch. The exposures at both ends cancel out, and neither a busy
     // host nor a simulator on a sped-up or stepped clock skews it.
-    if (isActive() && m_sessionFirstTile >= 0 && lastTaken > m_sessionFirstTile && m_takenCount - m_sessionFirstTaken >= 3) {
+    if (isActive() && m_sessionFirstTile >= 0 && lastTaken > m_sessionFirstTile && m_takenCount - m_sessionFirstTaken >= kScanPaceMinTiles) {
         const auto first = static_cast<std::size_t>(m_sessionFirstTile), last = static_cast<std::size_t>(lastTaken);
         const double estimated = m_estimate.tileDoneS[last] - m_estimate.tileDoneS[first];
         const quint64 fromUs = m_records[first].deviceTimeUs, toUs = m_records[last].deviceTimeUs;
-        if (estimated > 0.5 && toUs > fromUs)
-            return remaining * std::clamp(static_cast<double>(toUs - fromUs) * 1e-6 / estimated, 0.2, 5.0);
+        if (estimated > kScanPaceMinStretchS && toUs > fromUs)
+            return remaining * std::clamp(static_cast<double>(toUs - fromUs) * kScanSecondsPerUs / estimated, kScanPaceMinFactor,
+                                           kScanPaceMaxFactor);
     }
     return remaining;
 }
@@ -482,7 +522,7 @@ void ScanRunner::onMoveArrived()
     }
     m_phase = Phase::Settling;
     m_lastOffUm[0] = m_lastOffUm[1] = NAN;
-    m_settleTimeout.start(static_cast<int>(std::lround(m_plan.settleTimeoutS * 1000)));
+    m_settleTimeout.start(static_cast<int>(std::lround(m_plan.settleTimeoutS * kScanMsPerS)));
     requestStatus();
 }
 
@@ -493,15 +533,15 @@ void ScanRunner::checkArrivedByStatus(const dev::InstrumentStatus& s)
     // are an arrival whose MotionDone the line lost.
     if (!m_moveAccepted || s.axes.size() < 2)
         return;
-    const bool there = !s.axes[0].moving && !s.axes[1].moving && std::fabs(s.axes[0].commanded - m_moveTarget.xMm) < 1e-4
-        && std::fabs(s.axes[1].commanded - m_moveTarget.yMm) < 1e-4;
+    const bool there = !s.axes[0].moving && !s.axes[1].moving && std::fabs(s.axes[0].commanded - m_moveTarget.xMm) < kScanAtTargetMm
+        && std::fabs(s.axes[1].commanded - m_moveTarget.yMm) < kScanAtTargetMm;
     if (!there) {
         m_restPolls = 0;
         return;
     }
     if (m_restPolls++ == 0)
         m_motionDoneUs = std::max<quint64>(m_motionDoneUs, s.deviceTimeUs);
-    if (m_restPolls < 2)
+    if (m_restPolls < kScanRestPollsForArrival)
         return;
     m_waitingAxes = 0;
     onMoveArrived();
@@ -525,8 +565,8 @@ void ScanRunner::checkSettled(const std::vector<double>& measuredMm, quint64 dev
     if (m_phase != Phase::Settling)
         return;
     const Point2 target = commanded(m_pathIndex);
-    m_lastOffUm[0] = (measuredMm[0] - target.xMm) * 1e3;
-    m_lastOffUm[1] = (measuredMm[1] - target.yMm) * 1e3;
+    m_lastOffUm[0] = (measuredMm[0] - target.xMm) * kScanUmPerMm;
+    m_lastOffUm[1] = (measuredMm[1] - target.yMm) * kScanUmPerMm;
     if (std::fabs(m_lastOffUm[0]) > m_plan.toleranceUm || std::fabs(m_lastOffUm[1]) > m_plan.toleranceUm)
         return;
     if (deviceTimeUs < m_motionDoneUs)
@@ -541,7 +581,7 @@ void ScanRunner::checkSettled(const std::vector<double>& measuredMm, quint64 dev
     // its rising edge starts an edge-triggered camera, its length times a level-triggered one.
     if (m_client->can(dev::Capability::TriggerOutput))
         m_client->pulseTrigger(m_plan.exposureS);
-    m_exposure.start(static_cast<int>(std::lround(m_plan.exposureS * 1000)));
+    m_exposure.start(static_cast<int>(std::lround(m_plan.exposureS * kScanMsPerS)));
 }
 
 void ScanRunner::onExposureEnd()
@@ -552,7 +592,7 @@ void ScanRunner::onExposureEnd()
     motion::PositionRecord& r = m_records[static_cast<std::size_t>(tile)];
     r.measuredMm = m_triggerMm;
     r.deviceTimeUs = m_triggerUs;
-    r.settleS = m_triggerUs > m_motionDoneUs ? static_cast<double>(m_triggerUs - m_motionDoneUs) * 1e-6 : 0.0;
+    r.settleS = m_triggerUs > m_motionDoneUs ? static_cast<double>(m_triggerUs - m_motionDoneUs) * kScanSecondsPerUs : 0.0;
     msg::Message error;
     if (!appendLog(scanfile::runLogLine(r), &error)) {
         r.measuredMm.clear();

@@ -23,6 +23,10 @@
 #include <optional>
 #include <vector>
 
+namespace scanfile {
+struct RunLog;
+}
+
 namespace jobs {
 
 class ScanRunner : public QObject {
@@ -61,6 +65,7 @@ public:
     void pause();
     void abort();
 
+    dev::Instrument* instrument() const { return m_client; }
     State state() const { return m_state; }
     bool isActive() const { return m_state == State::Running || m_state == State::Pausing; }
     const motion::scan::ScanPlan& plan() const { return m_plan; }
@@ -113,6 +118,11 @@ private:
     /// A plan that runs with the stage's own compensation: reads whether X and Y have it
     /// enabled (again whenever the device says it changed), for preflight().
     void refreshCompensation();
+    /// The folder's run log: continued when it is of these tiles, refused (`why`) when it is
+    /// another plan's, set aside when `restart`. `fresh` says whether a new log is to begin.
+    bool adoptRunLog(std::uint64_t fingerprint, bool restart, bool* fresh, msg::Message* error, Refusal* why);
+    /// Marks the log's tiles taken, and writes the log out again without a torn last line.
+    bool continueFromLog(const scanfile::RunLog& log, std::uint64_t fingerprint, msg::Message* error);
     bool openLog(msg::Message* error);
     bool appendLog(const std::string& line, msg::Message* error);
     int waypointToResumeAt() const;
@@ -124,6 +134,7 @@ private:
     motion::scan::ScanPlan m_plan;
     motion::scan::ScanLayout m_layout;
     motion::scan::ScanEstimate m_estimate;
+    motion::scan::StageModel m_stageModel;  ///< the device's limits as of prepare() or its last change
     std::vector<motion::PositionRecord> m_records;
     std::vector<char> m_taken;
     int m_takenCount = 0;

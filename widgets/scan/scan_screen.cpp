@@ -1,10 +1,9 @@
 #include "widgets/scan/scan_screen.h"
 
-#include "widgets/common/confirmation.h"
-
 #include "device/files/scan_exports.h"
 #include "device/files/scan_plan_file.h"
 #include "device/jobs/machine_model.h"
+#include "device/jobs/scan_launch.h"
 #include "device/jobs/scan_runner.h"
 #include "widgets/scan/scan_plan_form.h"
 #include "widgets/scan/scan_stage_map.h"
@@ -35,7 +34,7 @@ using namespace motion::scan;
 using jobs::ScanRunner;
 
 ScanScreen::ScanScreen(dev::Instrument* stage, QWidget* parent)
-    : QWidget(parent), m_stage(stage), m_runner(new ScanRunner(stage, this))
+    : QWidget(parent), m_stage(stage), m_runner(new ScanRunner(stage, this)), m_launch(std::make_unique<jobs::ScanLaunch>(m_runner))
 {
     auto* v = new QVBoxLayout(this);
     m_summary = new QLabel;
@@ -336,7 +335,7 @@ void ScanScreen::replan()
     m_map->setPlan(p, m_layout);
     // A run of this very plan keeps showing its progress.
     m_taken.assign(m_layout.tiles.size(), 0);
-    if (m_valid && m_preparedFingerprint == layoutFingerprint(p, m_layout))
+    if (m_valid && m_launch->holds(layoutFingerprint(p, m_layout)))
         for (int t = 0; t < static_cast<int>(m_taken.size()); ++t)
             m_taken[static_cast<std::size_t>(t)] = m_runner->isTaken(t);
     m_map->setProgress(m_taken, m_runner->isActive() ? m_runner->currentTile() : -1);
@@ -414,80 +413,57 @@ bool ScanScreen::run()
         emit problem(tr("The plan has problems: %1").arg(m_problems->text()));
         return false;
     }
-    const ScanPlan p = plan();
     const QString folder = outputFolder().trimmed();
     if (folder.isEmpty()) {
         emit problem(tr("Choose an output folder for the run log and the exports."));
         return false;
     }
-    const std::uint64_t fingerprint = layoutFingerprint(p, m_layout);
-    const bool sameRun = m_preparedFingerprint == fingerprint && m_preparedFolder == folder && m_runner->totalTiles() > 0;
-    if (!sameRun || m_runner->state() == ScanRunner::State::Finished) {
-        msg::Message error;
-        ScanRunner::Refusal why = ScanRunner::Refusal::None;
-        if (!m_runner->prepare(p, folder, false, &error, &why)) {
-            if (why != ScanRunner::Refusal::OtherScansLog
-                || !confirm(tr("%1\n\nStart this scan anew in that folder? The old run log is kept under another name.").arg(words::text(error)))) {
-                emit problem(words::text(error));
-                return false;
-            }
-            if (!m_runner->prepare(p, folder, true, &error)) {
-                emit problem(words::text(error));
-                return false;
-            }
+    using Kind = jobs::ScanDecision::Kind;
+    jobs::ScanDecision d = m_launch->prepare(plan(), folder);
+    if (d.kind == Kind::OtherScansLog) {
+        if (!confirm(tr("%1\n\nStart this scan anew in that folder? The old run log is kept under another name.").arg(words::text(d.error)))) {
+            emit problem(words::text(d.error));
+            return false;
         }
-        if (m_runner->state() == ScanRunner::State::Finished) {
-            if (!confirm(tr("Every tile of this scan is already taken in %1. Take them all again? The old run log is kept "
-                            "under another name.").arg(folder)))
-                return false;
-            msg::Message again;
-            if (!m_runner->prepare(p, folder, true, &again)) {
-                emit problem(words::text(again));
-                return false;
-            }
-        }
-        m_preparedFingerprint = fingerprint;
-        m_preparedFolder = folder;
-        replan();
+        d = m_launch->beginAnew();
     }
-    QStringList blockers;
-    for (const msg::Message& m : m_runner->preflight())
-        blockers << words::text(m);
-    if (!blockers.isEmpty()) {
+    if (d.kind == Kind::AllTaken) {
+        if (!confirm(tr("Every tile of this scan is already taken in %1. Take them all again? The old run log is kept "
+                        "under another name.").arg(folder)))
+            return false;
+        d = m_launch->beginAnew();
+    }
+    if (d.kind != Kind::Blocked && d.kind != Kind::Ready) {
+        emit problem(words::text(d.error));
+        return false;
+    }
+    replan();  // the run's taken tiles on the map
+    if (d.kind == Kind::Blocked) {
+        QStringList blockers;
+        for (const msg::Message& m : d.blockers)
+            blockers << words::text(m);
         emit problem(tr("The scan cannot start: %1").arg(blockers.join(QStringLiteral("; "))));
         return false;
     }
-    const int taken = m_runner->takenTiles();
-    const double left = m_runner->etaS();
-    // The one rule (widgets/common/confirmation.h): a long approach asks, however short the scan.
-    bool longApproach = false;
-    if (taken == 0 && !m_layout.path.empty() && m_stage->status().axes.size() >= 2 && m_stage->identity().axes.size() >= 2) {
-        const auto& tile = m_layout.path.front().target;
-        const double to[2] = {tile.xMm, tile.yMm};
-        for (int i = 0; i < 2; ++i) {
-            const auto& d = m_stage->identity().axes[i];
-            longApproach = longApproach || confirmation::isLongMove(m_stage->status().axes[i].commanded, to[i], d.travelMax - d.travelMin);
-        }
-    }
+    const jobs::ScanOutlook& o = d.outlook;
     // Only the move is news when the scan is short: that question may be waived for the session.
-    const Confirm ask = longApproach && left <= kConfirmLongerThanS && m_confirmLongMove
-        ? m_confirmLongMove
-        : Confirm([this](const QString& q) { return confirm(q); });
-    if ((left > kConfirmLongerThanS || longApproach)
-        && !ask(taken > 0 ? tr("Continue the scan at tile %1 of %2? About %3 are left.").arg(taken + 1).arg(m_runner->totalTiles()).arg(duration(left))
-                              : tr("Run %1 tiles on the stage? It takes about %2, starting with a move to (%3, %4) mm.")
-                                    .arg(m_runner->totalTiles())
-                                    .arg(duration(left))
-                                    .arg(m_layout.path.front().target.xMm, 0, 'f', 2)
-                                    .arg(m_layout.path.front().target.yMm, 0, 'f', 2)))
+    const Confirm ask = o.longApproach && !o.longRun && m_confirmLongMove ? m_confirmLongMove
+                                                                          : Confirm([this](const QString& q) { return confirm(q); });
+    if (o.needsConfirmation()
+        && !ask(o.resume ? tr("Continue the scan at tile %1 of %2? About %3 are left.").arg(o.takenTiles + 1).arg(o.totalTiles).arg(duration(o.etaS))
+                         : tr("Run %1 tiles on the stage? It takes about %2, starting with a move to (%3, %4) mm.")
+                               .arg(o.totalTiles)
+                               .arg(duration(o.etaS))
+                               .arg(o.firstTileMm.xMm, 0, 'f', 2)
+                               .arg(o.firstTileMm.yMm, 0, 'f', 2)))
         return false;
     msg::Message error;
-    if (!m_runner->start(&error)) {
+    if (!m_launch->start(&error)) {
         emit problem(words::text(error));
         return false;
     }
-    if (taken > 0)
-        emit notice(tr("Continuing at tile %1 of %2 (the run log has the first %3).").arg(taken + 1).arg(m_runner->totalTiles()).arg(taken));
+    if (o.resume)
+        emit notice(tr("Continuing at tile %1 of %2 (the run log has the first %3).").arg(o.takenTiles + 1).arg(o.totalTiles).arg(o.takenTiles));
     return true;
 }
 
@@ -505,8 +481,8 @@ bool ScanScreen::exportFiles()
     QStringList written;
     msg::Message error;
     // The run's measured positions when this plan ran into this folder, else the planned ones.
-    const bool measured = m_preparedFingerprint == layoutFingerprint(p, m_layout) && m_preparedFolder == outputFolder()
-        && m_runner->takenTiles() > 0;
+    const QString folder = outputFolder();
+    const bool measured = m_launch->holds(layoutFingerprint(p, m_layout), &folder) && m_runner->takenTiles() > 0;
     const bool ok = measured ? m_runner->writeExports(&written, &error)
                              : scanfile::writeExports(outputFolder(), p, m_layout, scanfile::plannedRecords(p, m_layout), &written, &error);
     if (!ok) {

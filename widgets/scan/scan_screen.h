@@ -18,6 +18,7 @@ class QPushButton;
 class QTimer;
 
 namespace jobs {
+class ScanLaunch;
 class ScanRunner;
 }
 
@@ -32,10 +33,9 @@ public:
     enum class FileAction { Open, Save, Folder };
     /// Asks for a file or folder; "" = cancelled. The composition root supplies dialogs.
     using FileChooser = std::function<QString(FileAction action, const QString& title, const QString& filter)>;
-    /// Asked before a long run or before setting an old run aside; true = go ahead.
+    /// Asked before a long run (jobs::ScanLaunch says which) or before setting an old run
+    /// aside; true = go ahead.
     using Confirm = std::function<bool(const QString& question)>;
-    /// Runs longer than this ask first.
-    static constexpr double kConfirmLongerThanS = 60;
 
     explicit ScanScreen(dev::Instrument* stage, QWidget* parent = nullptr);
     ~ScanScreen() override;
@@ -88,6 +88,7 @@ private:
 
     dev::Instrument* m_stage;
     jobs::ScanRunner* m_runner;
+    std::unique_ptr<jobs::ScanLaunch> m_launch;  ///< what Run does, shared with the CLI
     ScanStageMap* m_map;
     ScanPlanForm* m_form;
     QLabel* m_summary;
@@ -106,8 +107,6 @@ private:
     motion::scan::ScanEstimate m_estimate;
     bool m_valid = false;
     std::vector<char> m_taken;
-    std::uint64_t m_preparedFingerprint = 0;
-    QString m_preparedFolder;
 };
 
 } // namespace ui
