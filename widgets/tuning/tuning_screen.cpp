@@ -133,7 +133,7 @@ TuningScreen::TuningScreen(tele::TelemetryHub* hub, QWidget* parent) : QWidget(p
         if (kind < 2)
             m_zn->showRun(r, words::text(label));
     });
-    connect(m_runner, &dev::TuningRunner::stepTestDone, this, [this](const Record& r, const StepMetrics& m, const msg::Message& label) {
+    connect(m_runner, &dev::TuningRunner::stepTestDone, this, [this](const Record& r, const StepVerdict& m, const msg::Message& label) {
         m_steps->addResult(r, m, QStringLiteral("%1 (%2)").arg(words::text(label), describeGains(m_runGains, m_gains->periodS())));
     });
     connect(m_runner, &dev::TuningRunner::ultimateFound, this, [this](double, double) {
