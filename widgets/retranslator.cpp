@@ -194,13 +194,13 @@ struct Rewording {
     bool fromZh = false, toZh = false;
     int changed = 0;
     QObject* owner = nullptr;  ///< whose texts are being reworded
-    int field_ = 0;            ///< the how-manieth text of `owner`, its key in the memory
+    int nextKey = 0;           ///< the how-manieth text of `owner`, its key in the memory
 
     /// Starts on the texts of `o`.
     void begin(QObject* o)
     {
         owner = o;
-        field_ = 0;
+        nextKey = 0;
     }
     QString apply(const QString& text, const QStringList& contexts, int key)
     {
@@ -230,12 +230,12 @@ struct Rewording {
         if (!foreignWord(get(), contexts, fromZh))
             field(contexts, get, set);
         else
-            ++field_;  // the texts after it keep their keys
+            ++nextKey;  // the texts after it keep their keys
     }
     template <typename Get, typename Set>
     void field(const QStringList& contexts, Get get, Set set)
     {
-        const int key = field_++;
+        const int key = nextKey++;
         const QString text = get();
         if (text.isEmpty())
             return;
@@ -282,7 +282,7 @@ void rewordWidget(QWidget* w, Rewording& r)
         r.field(contexts, [w] { return w->windowTitle(); }, [w](const QString& s) { w->setWindowTitle(s); });
     rewordActions(w, contexts, r);
     r.begin(w);
-    r.field_ = 1000000;  // after its actions: its own texts again, under keys of their own
+    r.nextKey = 1000000;  // after its actions: its own texts again, under keys of their own
     // Texts a widget keeps aside to show later (the usual tooltip of a control that is
     // greyed out with its reason) are worded with the rest.
     for (const QByteArray& name : w->dynamicPropertyNames())
