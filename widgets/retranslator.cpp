@@ -183,16 +183,44 @@ bool foreignWord(const QString& text, const QStringList& contexts, bool fromZh)
     return true;
 }
 
+/// Where a widget keeps what the retranslator made of its texts (a QVariantMap, so it is
+/// never taken for a text to reword itself): for each of its texts, the text it showed in
+/// the language switched from and the one set in the language switched to. Switching back
+/// gives the text it had, not the catalogue's best guess: an English word can be one of
+/// several that share a Chinese one ("Home" and "home", "Go" and "move").
+constexpr const char* kWordedProperty = "_bp_worded";
+
 struct Rewording {
     bool fromZh = false, toZh = false;
     int changed = 0;
+    QObject* owner = nullptr;  ///< whose texts are being reworded
+    int nextKey = 0;           ///< the how-manieth text of `owner`, its key in the memory
 
-    QString apply(const QString& text, const QStringList& contexts)
+    /// Starts on the texts of `o`.
+    void begin(QObject* o)
     {
-        const QString out = Retranslator::reword(text, contexts, fromZh ? QStringLiteral("zh_CN") : QStringLiteral("en"),
-                                                 toZh ? QStringLiteral("zh_CN") : QStringLiteral("en"));
-        if (out != text)
+        owner = o;
+        nextKey = 0;
+    }
+    QString apply(const QString& text, const QStringList& contexts, int key)
+    {
+        const QString from = fromZh ? QStringLiteral("zh") : QStringLiteral("en");
+        const QString to = toZh ? QStringLiteral("zh") : QStringLiteral("en");
+        QVariantMap memory = owner ? owner->property(kWordedProperty).toMap() : QVariantMap();
+        const QString slot = QString::number(key);
+        const QVariantMap was = memory.value(slot).toMap();
+        // What this text was before the last switch, if it is still what that switch set.
+        QString out = was.value(from).toString() == text && was.contains(to)
+            ? was.value(to).toString()
+            : Retranslator::reword(text, contexts, fromZh ? QStringLiteral("zh_CN") : QStringLiteral("en"),
+                                   toZh ? QStringLiteral("zh_CN") : QStringLiteral("en"));
+        if (out != text) {
             ++changed;
+            if (owner) {
+                memory.insert(slot, QVariantMap{{from, text}, {to, out}});
+                owner->setProperty(kWordedProperty, memory);
+            }
+        }
         return out;
     }
     /// An item of a combo, list or table: reworded unless it reads as a name (foreignWord).
@@ -201,14 +229,17 @@ struct Rewording {
     {
         if (!foreignWord(get(), contexts, fromZh))
             field(contexts, get, set);
+        else
+            ++nextKey;  // the texts after it keep their keys
     }
     template <typename Get, typename Set>
     void field(const QStringList& contexts, Get get, Set set)
     {
+        const int key = nextKey++;
         const QString text = get();
         if (text.isEmpty())
             return;
-        const QString out = apply(text, contexts);
+        const QString out = apply(text, contexts, key);
         if (out != text)
             set(out);
     }
@@ -235,6 +266,7 @@ void rewordPlot(QCustomPlot* plot, const QStringList& contexts, Rewording& r)
 void rewordActions(QWidget* w, const QStringList& contexts, Rewording& r)
 {
     for (QAction* a : w->actions()) {
+        r.begin(a);
         r.field(contexts, [a] { return a->text(); }, [a](const QString& s) { a->setText(s); });
         r.field(contexts, [a] { return a->toolTip(); }, [a](const QString& s) { a->setToolTip(s); });
     }
@@ -243,11 +275,14 @@ void rewordActions(QWidget* w, const QStringList& contexts, Rewording& r)
 void rewordWidget(QWidget* w, Rewording& r)
 {
     const QStringList contexts = contextsOf(w);
+    r.begin(w);
     r.field(contexts, [w] { return w->toolTip(); }, [w](const QString& s) { w->setToolTip(s); });
     r.field(contexts, [w] { return w->statusTip(); }, [w](const QString& s) { w->setStatusTip(s); });
     if (w->isWindow() || qobject_cast<QDockWidget*>(w))
         r.field(contexts, [w] { return w->windowTitle(); }, [w](const QString& s) { w->setWindowTitle(s); });
     rewordActions(w, contexts, r);
+    r.begin(w);
+    r.nextKey = 1000000;  // after its actions: its own texts again, under keys of their own
     // Texts a widget keeps aside to show later (the usual tooltip of a control that is
     // greyed out with its reason) are worded with the rest.
     for (const QByteArray& name : w->dynamicPropertyNames())

@@ -35,6 +35,19 @@ QString describeGains(const DiscreteGains& g, double periodS)
     return tr("Kp %1, Ki %2 /s, Kd %3 s").arg(num(c.kp), num(c.kiPerS), num(c.kdS));
 }
 
+/// The step test's verdict (judgeStep) as a line: a limit cycle with its size and period.
+QString verdictLine(StepOutcome o, const LimitCycle& lc, const QString& unit)
+{
+    switch (o) {
+    case StepOutcome::Settled: return tr("  verdict: settled\n");
+    case StepOutcome::DidNotSettle: return tr("  verdict: did not settle within 2 % of the step\n");
+    case StepOutcome::Unstable: return tr("  verdict: unstable\n");
+    case StepOutcome::LimitCycle:
+        return tr("  verdict: never comes to rest: a limit cycle of ±%1 %2 every %3 s\n").arg(num(lc.amplitude), unit, num(lc.periodS));
+    }
+    return {};
+}
+
 /// Parses "Kp,Ki,Kd" in continuous form (or per period with `perPeriod`).
 std::optional<DiscreteGains> parseGains(const QString& text, double periodS, bool perPeriod, QString* why)
 {
@@ -256,10 +269,12 @@ int tune(Invocation& inv)
                       << num(c.kiPerS).leftJustified(11) << " " << num(c.kdS).leftJustified(11) << " | " << num(d.kp) << ", " << num(d.ki)
                       << ", " << num(d.kd) << "\n";
         }
-        if (r.verification)
+        if (r.verification) {
             inv.out() << tr("  verified with %1: overshoot %2 %, %3\n")
                              .arg(QString::fromStdString(r.verification->rule), num(r.verification->metrics.overshootPct),
                                   words::tuningOutcome(r.verification->outcome));
+            inv.out() << verdictLine(r.verification->metrics.outcome, r.verification->limitCycle, QString::fromStdString(r.unit));
+        }
     }
     inv.out().flush();
     return Ok;
@@ -315,14 +330,16 @@ int stepTest(Invocation& inv)
     dev::TuningRunner runner;
     Record record;
     StepMetrics m;
-    QObject::connect(&runner, &dev::TuningRunner::stepTestDone, &runner, [&](const Record& r, const StepMetrics& mm, const msg::Message&) {
+    StepVerdict verdict;
+    QObject::connect(&runner, &dev::TuningRunner::stepTestDone, &runner, [&](const Record& r, const StepVerdict& v, const msg::Message&) {
         record = r;
-        m = mm;
+        verdict = v;
+        m = v.metrics;
     });
     if (int rc = runToEnd(inv, runner, [&] { return runner.startStepTest(t.target.get(), s, msg::make("tuning.label.step_test")); }, inv.link().timeoutS))
         return rc;
     const bool mm = t.target->unit() == QLatin1String("mm");
-    const double in5 = mm ? settledInsideS(record, 0.005) : std::nan("");
+    const double in5 = mm ? verdict.insideTargetBandS : std::nan("");
     auto opt = [](double v) { return std::isfinite(v) ? QJsonValue(v) : QJsonValue(); };
     if (inv.json()) {
         QJsonObject o{{QStringLiteral("target"), t.target->describe()},
@@ -336,9 +353,13 @@ int stepTest(Invocation& inv)
                       {QStringLiteral("iae"), opt(m.iae)},
                       {QStringLiteral("ise"), opt(m.ise)},
                       {QStringLiteral("peak_output"), opt(m.peakOutput)},
-                      {QStringLiteral("unit"), t.target->unit()}};
+                      {QStringLiteral("unit"), t.target->unit()},
+                      {QStringLiteral("verdict"), QString::fromLatin1(stepOutcomeName(m.outcome))}};
         if (mm)
             o[QStringLiteral("settled_inside_5um_s")] = opt(in5);
+        if (verdict.limitCycle.found)
+            o[QStringLiteral("limit_cycle")] = QJsonObject{{QStringLiteral("amplitude"), verdict.limitCycle.amplitude},
+                                                           {QStringLiteral("period_s"), verdict.limitCycle.periodS}};
         inv.printJson(o);
     } else {
         const QString u = t.target->unit();
@@ -349,6 +370,7 @@ int stepTest(Invocation& inv)
                          .arg(num(m.steadyStateError), num(m.iae), num(m.ise), u, num(m.peakOutput));
         if (mm)
             inv.out() << (std::isnan(in5) ? tr("  never inside seed 002's ±5 µm band\n") : tr("  inside seed 002's ±5 µm band from %1 s\n").arg(num(in5)));
+        inv.out() << verdictLine(m.outcome, verdict.limitCycle, u);
     }
     inv.out().flush();
     (void)opt;

@@ -116,6 +116,15 @@ std::string tuningToJson(const TuningResult& r)
         vv.set("peak_output", v.metrics.peakOutput);
         if (v.settledInside5umS >= 0)
             vv.set("settled_inside_5um_s", v.settledInside5umS);
+        vv.set("verdict", std::string(motion::control::stepOutcomeName(v.metrics.outcome)));
+        if (v.limitCycle.found) {
+            Value lc = Value::object();
+            lc.set("amplitude", v.limitCycle.amplitude);
+            lc.set("period_s", v.limitCycle.periodS);
+            lc.set("cycles", v.limitCycle.cycles);
+            lc.set("threshold", v.limitCycle.threshold);
+            vv.set("limit_cycle", lc);
+        }
         root.set("verification", vv);
     }
     if (!r.note.empty())
@@ -244,8 +253,28 @@ TuningRead tuningFromJson(std::string_view text)
         metric("peak_output", v.metrics.peakOutput, 0, kBig);
         if (auto x = vo.number("settled_inside_5um_s", false, 0, 1e6))
             v.settledInside5umS = *x;
+        // Files from before the verdict was kept: a response with no settling time did not settle.
+        v.metrics.outcome = std::isfinite(v.metrics.settlingTimeS) ? motion::control::StepOutcome::Settled
+                                                                   : motion::control::StepOutcome::DidNotSettle;
+        if (auto verdict = vo.oneOf("verdict", false, {"settled", "did not settle", "unstable", "limit cycle"}))
+            motion::control::stepOutcomeFromName(*verdict, &v.metrics.outcome);
+        if (const Value* lcv = vo.get("limit_cycle", Value::Type::Object, false)) {
+            ObjectReader lo(*lcv, "verification.limit_cycle", p);
+            const auto amplitude = lo.number("amplitude", true, 0, kBig);
+            const auto periodS = lo.number("period_s", true, 0, 1e6);
+            const auto cycles = lo.number("cycles", false, 0, 1e9);
+            const auto threshold = lo.number("threshold", false, 0, kBig);
+            lo.refuseUnknown({"amplitude", "period_s", "cycles", "threshold"});
+            if (amplitude && periodS) {
+                v.limitCycle.found = true;
+                v.limitCycle.amplitude = *amplitude;
+                v.limitCycle.periodS = *periodS;
+                v.limitCycle.cycles = cycles ? static_cast<int>(*cycles) : 0;
+                v.limitCycle.threshold = threshold.value_or(0);
+            }
+        }
         vo.refuseUnknown({"rule", "gains", "outcome", "rise_time_s", "overshoot_pct", "settling_time_s", "steady_state_error", "iae",
-                          "ise", "peak_output", "settled_inside_5um_s"});
+                          "ise", "peak_output", "settled_inside_5um_s", "verdict", "limit_cycle"});
         r.verification = v;
     }
     if (auto v = o.string("note", false))

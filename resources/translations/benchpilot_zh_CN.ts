@@ -2509,6 +2509,28 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>%1 holds a finished run of this test: its results follow, nothing was moved. To run the test again beside it (after compensation), add --new-run: it goes into %2 and both are kept.</source>
         <translation>%1 中已有此测试完成的一次运行：下面是它的结果，机器没有移动。要在它旁边再运行一次此测试（例如补偿之后），请加上 --new-run：它写入 %2，两次运行都会保留。</translation>
+        <source>  verdict: settled
+</source>
+        <translation>  判定：已稳定
+</translation>
+    </message>
+    <message>
+        <source>  verdict: did not settle within 2 % of the step
+</source>
+        <translation>  判定：未稳定在阶跃的 2 % 以内
+</translation>
+    </message>
+    <message>
+        <source>  verdict: unstable
+</source>
+        <translation>  判定：不稳定
+</translation>
+    </message>
+    <message>
+        <source>  verdict: never comes to rest: a limit cycle of ±%1 %2 every %3 s
+</source>
+        <translation>  判定：始终未静止：仍有 ±%1 %2、周期 %3 s 的极限环
+</translation>
     </message>
 </context>
 <context>
@@ -4947,6 +4969,14 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>%1 Nothing is sent until it is fixed.</source>
         <translation>%1 改正之前不会发送任何值。</translation>
+    </message>
+    <message>
+        <source>%1 is still being typed: nothing is sent until it is a number.</source>
+        <translation>%1 尚未输入完：成为数字之前不会发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Put the gains in force back in the fields (nothing is sent)</source>
+        <translation>把当前生效的增益放回输入框（不发送任何内容）</translation>
     </message>
 </context>
 <context>
@@ -7711,6 +7741,22 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
         <source>did not settle</source>
         <translation>未稳定</translation>
     </message>
+    <message>
+        <source>Limit cycle at rest</source>
+        <translation>静止时的极限环</translation>
+    </message>
+    <message>
+        <source>±%1 %2 every %3 ms</source>
+        <translation>±%1 %2，周期 %3 ms</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>never: limit cycle</source>
+        <translation>从未稳定：极限环</translation>
+    </message>
 </context>
 <context>
     <name>ui::TravelView</name>
@@ -8132,6 +8178,22 @@ A loop this different may oscillate or run away. Apply them?</source>
     <message>
         <source>&lt;br&gt;Verification with %1: overshoot %2, %3</source>
         <translation>&lt;br&gt;用 %1 验证：超调量 %2，%3</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Verification with %1: &lt;b&gt;unstable&lt;/b&gt; (%2)</source>
+        <translation>&lt;br&gt;用 %1 验证：&lt;b&gt;不稳定&lt;/b&gt;（%2）</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Verification with %1: &lt;b&gt;never comes to rest&lt;/b&gt;: a limit cycle of ±%2 µm every %3 remains (a still axis reads at most %4 µm peak to peak on its grating); overshoot %5</source>
+        <translation>&lt;br&gt;用 %1 验证：&lt;b&gt;始终未静止&lt;/b&gt;：仍有 ±%2 µm、周期 %3 的极限环（静止的轴在光栅上的读数峰峰值至多 %4 µm）；超调量 %5</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Verification with %1: &lt;b&gt;never comes to rest&lt;/b&gt;: a limit cycle of ±%2 every %3 remains; overshoot %4</source>
+        <translation>&lt;br&gt;用 %1 验证：&lt;b&gt;始终未静止&lt;/b&gt;：仍有 ±%2、周期 %3 的极限环；超调量 %4</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Verification with %1: &lt;b&gt;did not settle&lt;/b&gt; within 2 % of its step; overshoot %2</source>
+        <translation>&lt;br&gt;用 %1 验证：&lt;b&gt;未稳定&lt;/b&gt;在阶跃的 2 % 以内；超调量 %2</translation>
     </message>
 </context>
 <context>

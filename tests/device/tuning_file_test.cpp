@@ -152,3 +152,35 @@ TEST(TuningFile, SavesAtomicallyAndLoadsBack)
     EXPECT_FALSE(files::loadTuningFile(tmp.filePath(QStringLiteral("missing.json")), &problems));
     EXPECT_NE(i18ntest::englishFormat(problems, "x").find("missing.json"), std::string::npos) << i18ntest::englishFormat(problems, "x");
 }
+
+// The verification's verdict is kept with its limit cycle; a file written before there was
+// a verdict reads as the step test judged it then (no settling time: did not settle).
+TEST(TuningFile, AVerificationKeepsItsVerdictAndItsLimitCycle)
+{
+    TuningResult r = relayResult();
+    r.verification->metrics.outcome = motion::control::StepOutcome::LimitCycle;
+    r.verification->limitCycle = {true, 0.0025, 0.04, 4, 0.001};
+    const std::string text = files::tuningToJson(r);
+    EXPECT_NE(text.find("\"verdict\": \"limit cycle\""), std::string::npos) << text;
+    const auto back = files::tuningFromJson(text);
+    ASSERT_TRUE(back.result) << i18ntest::englishFormat(back.problems, "x.tuning.json");
+    ASSERT_TRUE(back.result->verification);
+    const auto& v = *back.result->verification;
+    EXPECT_EQ(v.metrics.outcome, motion::control::StepOutcome::LimitCycle);
+    ASSERT_TRUE(v.limitCycle.found);
+    EXPECT_DOUBLE_EQ(v.limitCycle.amplitude, 0.0025);
+    EXPECT_DOUBLE_EQ(v.limitCycle.periodS, 0.04);
+    EXPECT_EQ(v.limitCycle.cycles, 4);
+    EXPECT_EQ(files::tuningToJson(*back.result), text);
+
+    std::string old = files::tuningToJson(relayResult());
+    const std::string verdict = "\"verdict\": \"settled\"";
+    const auto key = old.find(verdict);
+    ASSERT_NE(key, std::string::npos) << old;
+    const auto comma = old.rfind(',', key);
+    old.erase(comma, key + verdict.size() - comma);
+    ASSERT_EQ(old.find("verdict"), std::string::npos) << old;
+    const auto read = files::tuningFromJson(old);
+    ASSERT_TRUE(read.result) << i18ntest::englishFormat(read.problems, "old.tuning.json");
+    EXPECT_EQ(read.result->verification->metrics.outcome, motion::control::StepOutcome::DidNotSettle);
+}

@@ -3,6 +3,7 @@
 #include <QEvent>
 #include <QLabel>
 #include <QLocale>
+#include <QRegularExpression>
 
 #include <cmath>
 
@@ -10,7 +11,19 @@ namespace ui {
 
 NumberField::NumberField(QWidget* parent) : QLineEdit(parent)
 {
-    connect(this, &QLineEdit::textChanged, this, [this] { check(); });
+    // QLineEdit emits textEdited before textChanged for a key: the first marks the text
+    // as the operator's; a textChanged without it is a text set by the program.
+    connect(this, &QLineEdit::textEdited, this, [this] {
+        m_typing = true;
+        m_editPending = true;
+    });
+    connect(this, &QLineEdit::textChanged, this, [this] {
+        if (!m_editPending)
+            m_typing = false;
+        m_editPending = false;
+        check();
+    });
+    connect(this, &QLineEdit::editingFinished, this, &NumberField::finishEntry);
     check();
 }
 
@@ -56,7 +69,25 @@ void NumberField::setValue(double v)
     setText(m_integer ? QLocale().toString(static_cast<qlonglong>(std::llround(v))) : QLocale().toString(v, m_format, m_precision));
 }
 
-std::optional<double> NumberField::value() const { return m_value; }
+std::optional<double> NumberField::value() const { return read().value; }
+
+QString NumberField::problem() const { return read().problem; }
+
+bool NumberField::isIncomplete() const { return m_typing && read().partial; }
+
+void NumberField::finishEntry()
+{
+    if (!m_typing)
+        return;
+    m_typing = false;
+    check();
+}
+
+void NumberField::focusOutEvent(QFocusEvent* event)
+{
+    QLineEdit::focusOutEvent(event);
+    finishEntry();  // editingFinished comes only when the text changed since the last one
+}
 
 void NumberField::setUnit(const QString& unit)
 {
@@ -128,7 +159,7 @@ QString NumberField::firstProblemUnder(const QWidget* root)
 
 QString NumberField::limit(double v) const { return m_integer ? QLocale().toString(static_cast<qlonglong>(std::llround(v))) : QLocale().toString(v, 'g', 6); }
 
-void NumberField::check()
+NumberField::Reading NumberField::read() const
 {
     const QString name = shownName();
     const QString t = text().trimmed();
@@ -136,25 +167,39 @@ void NumberField::check()
     double v = QLocale().toDouble(t, &ok);
     if (!ok)
         v = QLocale::c().toDouble(t, &ok);  // "0.5" typed under a locale with a decimal comma
-    QString problem;
+    Reading r;
     if (t.isEmpty() && m_emptyAllowed)
-        ok = false;  // valid, and no value
-    else if (t.isEmpty())
-        problem = tr("%1 is empty: type a number").arg(name);
+        return r;  // valid, and no value
+    if (t.isEmpty())
+        r.problem = tr("%1 is empty: type a number").arg(name);
     else if (!ok || !std::isfinite(v))
-        problem = tr("“%1” is not a number").arg(t);
+        r.problem = tr("“%1” is not a number").arg(t);
     else if (m_integer && v != std::floor(v))
-        problem = tr("%1 must be a whole number").arg(name);
+        r.problem = tr("%1 must be a whole number").arg(name);
     else if (m_min && v < *m_min)
-        problem = *m_min == 0 ? tr("%1 must be 0 or more, not %2").arg(name, t) : tr("%1 must be at least %2, not %3").arg(name, limit(*m_min), t);
+        r.problem = *m_min == 0 ? tr("%1 must be 0 or more, not %2").arg(name, t) : tr("%1 must be at least %2, not %3").arg(name, limit(*m_min), t);
     else if (m_max && v > *m_max)
-        problem = tr("%1 must be at most %2, not %3").arg(name, limit(*m_max), t);
-    m_problem = problem;
-    m_value = problem.isEmpty() && ok ? std::optional<double>(v) : std::nullopt;
-    setStyleSheet(problem.isEmpty() ? QString() : QStringLiteral("QLineEdit { background: #fdd; border: 1px solid #b00020; }"));
-    setToolTip(problem.isEmpty() ? m_help : problem);
-    setProperty("invalid", !problem.isEmpty());
-    emit entryChanged(problem.isEmpty());
+        r.problem = tr("%1 must be at most %2, not %3").arg(name, limit(*m_max), t);
+    if (r.problem.isEmpty()) {
+        r.value = v;
+        return r;
+    }
+    // What a number looks like on its way to being typed: a sign, digits with a point
+    // or comma, an exponent still without its digits.
+    static const QRegularExpression start(QStringLiteral("^[+\\-\\x{2212}]?[0-9]*([.,][0-9]*)?([eE][+\\-]?)?$"));
+    r.partial = !ok && start.match(t).hasMatch();
+    return r;
+}
+
+void NumberField::check()
+{
+    const Reading r = read();
+    const bool partial = m_typing && r.partial;
+    const QString shown = partial ? QString() : r.problem;
+    setStyleSheet(shown.isEmpty() ? QString() : QStringLiteral("QLineEdit { background: #fdd; border: 1px solid #b00020; }"));
+    setToolTip(shown.isEmpty() ? m_help : shown);
+    setProperty("invalid", !shown.isEmpty());
+    emit entryChanged(r.problem.isEmpty());
 }
 
 } // namespace ui

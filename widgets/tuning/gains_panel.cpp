@@ -64,21 +64,25 @@ GainsPanel::GainsPanel(QWidget* parent) : QWidget(parent)
         m_edit[i]->setFieldName(names[i]);
         m_edit[i]->setRange(0.0, std::nullopt);
         m_edit[i]->setDisplay('g', 6);  // the device holds float32: more digits are noise
-        connect(m_edit[i], &QLineEdit::textEdited, this, [this] { showEdited(); });
+        // entryChanged, not textEdited: QLineEdit announces an edit before the field has read it.
+        connect(m_edit[i], &NumberField::entryChanged, this, [this] { showEdited(); });
         grid->addWidget(m_edit[i], i + 1, 1);
         m_discrete[i] = new QLabel(this);
+        m_discrete[i]->setObjectName(QString::fromLatin1(objectNames[i]).replace(QStringLiteral("Edit"), QStringLiteral("Discrete")));
         m_discrete[i]->setTextInteractionFlags(Qt::TextSelectableByMouse);
         grid->addWidget(m_discrete[i], i + 1, 2);
     }
     v->addLayout(grid);
     m_times = new QLabel(this);
+    m_times->setObjectName(QStringLiteral("gainsNote"));
     m_times->setStyleSheet(QStringLiteral("color: #555;"));
     v->addWidget(m_times);
 
     auto* buttons = new QHBoxLayout;
     m_apply = new QPushButton(tr("Apply"), this);
+    m_apply->setObjectName(QStringLiteral("gainsApply"));
     m_revert = new QPushButton(tr("Revert"), this);
-    m_revert->setToolTip(tr("Apply again the set that was in force before the last change"));
+    m_revert->setObjectName(QStringLiteral("gainsRevert"));
     m_save = new QPushButton(tr("Save to device"), this);
     m_save->setToolTip(tr("Apply these gains and keep them as the device's power-up gains"));
     m_read = new QPushButton(tr("Read back"), this);
@@ -95,6 +99,11 @@ GainsPanel::GainsPanel(QWidget* parent) : QWidget(parent)
             emit saveRequested(*g);
     });
     connect(m_revert, &QPushButton::clicked, this, [this] {
+        // Edits not applied are what Revert takes back first; nothing is sent for them.
+        if (hasUnappliedEdits()) {
+            setEdited(m_inForce);
+            return;
+        }
         if (const auto p = previous())
             emit revertRequested(p->gains, tr("reverted to %1").arg(p->time.toString(QStringLiteral("HH:mm:ss"))));
     });
@@ -177,14 +186,20 @@ std::optional<DiscreteGains> GainsPanel::edited() const
 
 void GainsPanel::showEdited()
 {
+    if (!m_hasTarget) {
+        for (auto* l : m_discrete)
+            l->clear();
+        m_times->clear();
+        refreshButtons();
+        return;
+    }
     const auto g = edited();
     if (g) {
         m_discrete[0]->setText(tr("kp = %1").arg(gainText(g->kp)));
         m_discrete[1]->setText(tr("ki = %1").arg(gainText(g->ki)));
         m_discrete[2]->setText(tr("kd = %1").arg(gainText(g->kd)));
         const ContinuousGains c = motion::control::toContinuous(*g, m_periodS);
-        auto near = [](double a, double b) { return std::abs(a - b) <= 1e-5 * std::max(std::abs(a), std::abs(b)) + 1e-300; };
-        const bool changed = !(near(g->kp, m_inForce.kp) && near(g->ki, m_inForce.ki) && near(g->kd, m_inForce.kd));
+        const bool changed = hasUnappliedEdits();
         m_times->setText(tr("Ti = Kp/Ki = %1 · Td = Kd/Kp = %2%3")
                              .arg(seconds(c.tiS()), seconds(c.tdS()), changed ? tr(" · edited, not applied") : QString()));
     } else {
@@ -197,10 +212,25 @@ void GainsPanel::showEdited()
 
 QString GainsPanel::problem() const
 {
+    // A wrong entry is said before one still being typed: it needs the operator's eye.
     for (auto* e : m_edit)
-        if (!e->isValid())
+        if (!e->isValid() && !e->isIncomplete())
             return tr("%1 Nothing is sent until it is fixed.").arg(e->problem());
+    for (auto* e : m_edit)
+        if (e->isIncomplete())
+            return tr("%1 is still being typed: nothing is sent until it is a number.").arg(e->fieldName());
     return {};
+}
+
+bool GainsPanel::hasUnappliedEdits() const
+{
+    if (!m_hasTarget)
+        return false;
+    const auto g = edited();
+    if (!g)
+        return true;
+    auto near = [](double a, double b) { return std::abs(a - b) <= 1e-5 * std::max(std::abs(a), std::abs(b)) + 1e-300; };
+    return !(near(g->kp, m_inForce.kp) && near(g->ki, m_inForce.ki) && near(g->kd, m_inForce.kd));
 }
 
 std::optional<GainsPanel::HistoryEntry> GainsPanel::previous() const
@@ -242,7 +272,10 @@ void GainsPanel::refreshButtons()
     m_save->setVisible(m_device || !m_hasTarget);
     m_read->setVisible(m_device || !m_hasTarget);
     m_read->setEnabled(usable && m_device);
-    m_revert->setEnabled(usable && previous().has_value());
+    const bool edits = hasUnappliedEdits();
+    m_revert->setEnabled(usable && (edits || previous().has_value()));
+    m_revert->setToolTip(edits ? tr("Put the gains in force back in the fields (nothing is sent)")
+                               : tr("Apply again the set that was in force before the last change"));
 }
 
 } // namespace ui

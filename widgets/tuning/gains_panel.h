@@ -44,8 +44,10 @@ public:
     /// The set before the one in force (what Revert applies); nullopt if none.
     std::optional<HistoryEntry> previous() const;
     void setBusy(bool busy);
-    /// Why Apply is not possible now (an invalid entry); empty when it is.
+    /// Why Apply is not possible now (an invalid entry, or one still being typed); empty when it is.
     QString problem() const;
+    /// The fields hold something other than the set in force (a different set, or an entry that is no set).
+    bool hasUnappliedEdits() const;
 
 signals:
     void applyRequested(const motion::control::DiscreteGains& gains, const QString& source);

@@ -54,7 +54,7 @@ StepTestPanel::StepTestPanel(QWidget* parent) : QWidget(parent)
     // colour, its gains in the tooltip), one row per metric.
     auto* split = new QSplitter(Qt::Horizontal, this);
     m_plot = new ResponsePlot(ResponsePlot::Mode::Overlay, split);
-    m_table = new QTableWidget(8, 0, split);
+    m_table = new QTableWidget(9, 0, split);
     m_table->setObjectName(QStringLiteral("stepMetrics"));
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setWordWrap(false);
@@ -91,7 +91,8 @@ void StepTestPanel::setUnit(const QString& unit)
     const QString u = mm ? tr("µm") : tr("units");
     m_table->setVerticalHeaderLabels({tr("Rise 10–90 % [ms]"), tr("Overshoot [%]"), tr("Settling 2 % [ms]"),
                                       tr("Steady error [%1]").arg(u), tr("IAE [%1·s]").arg(u), tr("ISE [(%1)²·s]").arg(u),
-                                      tr("Peak output [%1]").arg(u), mm ? tr("Inside ±5 µm from [ms]") : tr("Ended")});
+                                      tr("Peak output [%1]").arg(u), mm ? tr("Inside ±5 µm from [ms]") : tr("Ended"),
+                                      tr("Limit cycle at rest")});
 }
 
 double StepTestPanel::step() const
@@ -109,33 +110,43 @@ void StepTestPanel::setStep(double magnitude, bool positive)
 
 int StepTestPanel::runs() const { return m_table->columnCount(); }
 
-void StepTestPanel::addResult(const motion::control::Record& r, const motion::control::StepMetrics& m, const QString& legend)
+void StepTestPanel::addResult(const motion::control::Record& r, const motion::control::StepVerdict& verdict, const QString& legend)
 {
+    using motion::control::StepOutcome;
+    const motion::control::StepMetrics& m = verdict.metrics;
     // Show where the response happens, not a second of it sitting still (zoom and drag for the rest).
     const double whole = static_cast<double>(r.size()) * r.periodS;
     const double busy = std::isfinite(m.settlingTimeS) ? 2 * m.settlingTimeS : (std::isfinite(m.riseTimeS) ? 20 * m.riseTimeS : whole);
     m_plot->addRun(r, legend, std::clamp(busy, std::min(whole, 0.02), whole));
     const bool mm = m_unit == QLatin1String("mm");
     const double k = mm ? 1000.0 : 1.0;
-    const double in5 = mm ? motion::control::settledInsideS(r, 0.005) : 0;
+    const double in5 = verdict.insideTargetBandS;
     const int col = m_table->columnCount();
     m_table->insertColumn(col);
     auto* head = new QTableWidgetItem(QString::number(col + 1));
     head->setForeground(ResponsePlot::colour(col));
     head->setToolTip(legend);
     m_table->setHorizontalHeaderItem(col, head);
-    // No final value, no figures read off it: the words say why.
-    const QString unsettled = m.outcome == motion::control::StepOutcome::Unstable ? tr("unstable") : tr("did not settle");
-    auto settled = [&](double v) { return m.outcome == motion::control::StepOutcome::Settled ? metricText(v) : unsettled; };
-    const QString cells[8] = {settled(m.riseTimeS * 1000),
+    // No final value, no figures read off it: the words say why. A limit cycle has a
+    // centre to read them from, but it never settles.
+    const QString unsettled = m.outcome == StepOutcome::Unstable ? tr("unstable") : tr("did not settle");
+    const bool figures = m.outcome == StepOutcome::Settled || m.outcome == StepOutcome::LimitCycle;
+    auto settled = [&](double v) { return figures ? metricText(v) : unsettled; };
+    const auto& lc = verdict.limitCycle;
+    const QString cycle = lc.found ? tr("±%1 %2 every %3 ms")
+                                         .arg(mm ? QString::number(lc.amplitude * k, 'f', 1) : metricText(lc.amplitude), mm ? tr("µm") : tr("units"),
+                                              metricText(lc.periodS * 1000))
+                                   : (m.outcome == StepOutcome::Unstable ? unsettled : tr("none"));
+    const QString cells[9] = {settled(m.riseTimeS * 1000),
                               settled(m.overshootPct),
-                              settled(m.settlingTimeS * 1000),
+                              m.outcome == StepOutcome::LimitCycle ? tr("never: limit cycle") : settled(m.settlingTimeS * 1000),
                               settled(m.steadyStateError * k),
                               metricText(m.iae * k),
                               metricText(m.ise * k * k),
                               metricText(m.peakOutput * k),
-                              mm ? (std::isnan(in5) ? tr("never") : metricText(in5 * 1000)) : words::term(motion::control::endReasonTerm(r.reason))};
-    for (int row = 0; row < 8; ++row) {
+                              mm ? (std::isnan(in5) ? tr("never") : metricText(in5 * 1000)) : words::term(motion::control::endReasonTerm(r.reason)),
+                              cycle};
+    for (int row = 0; row < 9; ++row) {
         auto* item = new QTableWidgetItem(cells[row]);
         item->setToolTip(legend);
         item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);

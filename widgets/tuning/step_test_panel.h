@@ -2,7 +2,7 @@
 // Step tests: size and direction, the responses overlaid (one colour a run,
 // the legend gives its gains) and the metrics of every run beside the plot.
 #include "motion/control/experiment.h"
-#include "motion/control/tuning/step_metrics.h"
+#include "motion/control/tuning/step_verdict.h"
 
 #include <QWidget>
 
@@ -27,7 +27,8 @@ public:
     /// Signed step in the target's unit (mm for a stage).
     double step() const;
     void setStep(double magnitude, bool positive);
-    void addResult(const motion::control::Record& record, const motion::control::StepMetrics& m, const QString& legend);
+    /// A run as judgeStep judged it (the Z–N verification is judged the same way).
+    void addResult(const motion::control::Record& record, const motion::control::StepVerdict& verdict, const QString& legend);
     void setBusy(bool busy);
     void setReady(bool ready);
     int runs() const;

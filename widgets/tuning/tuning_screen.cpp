@@ -133,7 +133,7 @@ TuningScreen::TuningScreen(tele::TelemetryHub* hub, QWidget* parent) : QWidget(p
         if (kind < 2)
             m_zn->showRun(r, words::text(label));
     });
-    connect(m_runner, &dev::TuningRunner::stepTestDone, this, [this](const Record& r, const StepMetrics& m, const msg::Message& label) {
+    connect(m_runner, &dev::TuningRunner::stepTestDone, this, [this](const Record& r, const StepVerdict& m, const msg::Message& label) {
         m_steps->addResult(r, m, QStringLiteral("%1 (%2)").arg(words::text(label), describeGains(m_runGains, m_gains->periodS())));
     });
     connect(m_runner, &dev::TuningRunner::ultimateFound, this, [this](double, double) {
@@ -261,15 +261,16 @@ void TuningScreen::readGains()
     Instrument* in = c ? instrumentOf(*c) : nullptr;
     if (!in || !in->tuning)
         return;
-    const QString name = c->name;
+    const int instrument = c->instrument;
     const int axis = c->axis;
     QPointer<TuningScreen> self(this);
-    in->tuning->getGains(axis, [self, name, axis](const std::optional<dev::RequestError>& e, const dev::AxisGains& g) {
+    in->tuning->getGains(axis, [self, instrument, axis](const std::optional<dev::RequestError>& e, const dev::AxisGains& g) {
         if (!self)
             return;
         const Choice* now = self->choice();
-        if (!now || now->name != name)
-            return;  // another target was chosen meanwhile
+        if (!now || now->instrument != instrument || now->axis != axis)
+            return;  // another target was chosen meanwhile (a new name for the same one is no other)
+        const QString name = now->name;
         if (e) {
             self->m_gains->clearTarget(words::text(e->message));
             return;
@@ -280,7 +281,6 @@ void TuningScreen::readGains()
             self->m_gains->setTarget(name, g.controlPeriodS, true, g.gains, tr("read from the device"));
         else if (g.gains != self->m_gains->inForce())
             self->m_gains->setInForce(g.gains, tr("read from the device"));
-        (void)axis;
         self->refreshReady();
     });
 }
@@ -305,8 +305,9 @@ void TuningScreen::applyGains(const DiscreteGains& g, bool save, const QString& 
         return;
     QPointer<TuningScreen> self(this);
     const QString name = c->name;
+    const int instrument = c->instrument, axis = c->axis;
     ++m_ownGainChanges;
-    in->tuning->setGains(c->axis, g, save, [self, g, source, name](const std::optional<dev::RequestError>& e) {
+    in->tuning->setGains(c->axis, g, save, [self, g, source, name, instrument, axis](const std::optional<dev::RequestError>& e) {
         if (!self)
             return;
         if (e) {
@@ -315,7 +316,7 @@ void TuningScreen::applyGains(const DiscreteGains& g, bool save, const QString& 
             self->say(words::text(e->message), true);
             return;
         }
-        if (self->currentTarget() == name)
+        if (const Choice* now = self->choice(); now && now->instrument == instrument && now->axis == axis)
             self->m_gains->setInForce(g, source);
         self->say(tr("%1: gains applied (%2)").arg(name, source));
     });

@@ -100,11 +100,21 @@ void TuningScreen::rebuildTargets()
     next.push_back({tr("Model plant"), -1, -1});
     m_unavailable->setText(unavailable.join(QLatin1Char('\n')));
     m_unavailable->setVisible(!unavailable.isEmpty());
+    // A target is an instrument's axis (or the model), not its name: the same targets under
+    // new names (a language switch) are reworded in place, and the one chosen keeps its
+    // gains, history, results and step tests.
     bool same = next.size() == m_choices.size();
     for (int i = 0; same && i < next.size(); ++i)
-        same = next[i].name == m_choices[i].name;
-    if (same)
+        same = next[i].instrument == m_choices[i].instrument && next[i].axis == m_choices[i].axis;
+    if (same) {
+        QSignalBlocker block(m_target);
+        for (int i = 0; i < next.size(); ++i) {
+            m_choices[i].name = next[i].name;
+            if (m_target->itemText(i) != next[i].name)
+                m_target->setItemText(i, next[i].name);
+        }
         return;
+    }
     if (m_runner->busy())
         return;  // the target list settles once the run has ended
     const QString was = m_targetPicked ? currentTarget() : m_savedTarget;

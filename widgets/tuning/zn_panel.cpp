@@ -249,6 +249,41 @@ void ZnPanel::clearResult(const QString& note)
     m_rules->setRowCount(0);
 }
 
+QString ZnPanel::verificationText(const motion::control::TuningResult& r)
+{
+    using motion::control::StepOutcome;
+    const auto& v = *r.verification;
+    const auto* rule = motion::control::findRule(v.rule);
+    const QString name = rule ? words::term(std::string("tuning.rule.") + rule->id) : QString::fromStdString(v.rule);
+    const bool mm = r.unit == "mm";
+    // A metric the response did not give (a run cut short) is said so, never "nan %".
+    const QString overshoot = std::isfinite(v.metrics.overshootPct) ? tr("%1 %").arg(ruleNumber(v.metrics.overshootPct)) : tr("not measured");
+    // The verdict is the step test's (judgeStep): a run that "completed" inside a wide
+    // band may still never have come to rest, and that is said first.
+    switch (v.metrics.outcome) {
+    case StepOutcome::Unstable:
+        return tr("<br>Verification with %1: <b>unstable</b> (%2)").arg(name, words::tuningOutcome(v.outcome));
+    case StepOutcome::LimitCycle: {
+        const auto& lc = v.limitCycle;
+        if (mm)
+            return tr("<br>Verification with %1: <b>never comes to rest</b>: a limit cycle of ±%2 µm every %3 remains "
+                      "(a still axis reads at most %4 µm peak to peak on its grating); overshoot %5")
+                .arg(name, QString::number(lc.amplitude * 1000, 'f', 1), period(lc.periodS), QString::number(lc.threshold * 1000, 'f', 1), overshoot);
+        return tr("<br>Verification with %1: <b>never comes to rest</b>: a limit cycle of ±%2 every %3 remains; overshoot %4")
+            .arg(name, ruleNumber(lc.amplitude), period(lc.periodS), overshoot);
+    }
+    case StepOutcome::DidNotSettle:
+    case StepOutcome::Settled: break;
+    }
+    QString text = v.metrics.outcome == StepOutcome::Settled
+        ? tr("<br>Verification with %1: overshoot %2, %3").arg(name, overshoot, words::tuningOutcome(v.outcome))
+        : tr("<br>Verification with %1: <b>did not settle</b> within 2 % of its step; overshoot %2").arg(name, overshoot);
+    if (mm)
+        text += v.settledInside5umS >= 0 ? tr(", inside ±5 µm of the target from %1 ms").arg(ruleNumber(v.settledInside5umS * 1000))
+                                         : tr(", <b>never inside ±5 µm</b>");
+    return text;
+}
+
 QString ZnPanel::resultText() const { return m_result->text(); }
 
 void ZnPanel::showResult(const motion::control::TuningResult& r)
@@ -262,17 +297,8 @@ void ZnPanel::showResult(const motion::control::TuningResult& r)
         text += tr("<br>Classic describing function: Ku = %1, Tu = %2 — %3")
                     .arg(ruleNumber(*r.kuDescribing), period(r.tuRelayS.value_or(0)),
                          r.refined ? tr("refined above from the measured phase crossover") : tr("not refined"));
-    if (r.verification) {
-        const auto& v = *r.verification;
-        const auto* rule = motion::control::findRule(v.rule);
-        // A metric the response did not give (a run cut short) is said so, never "nan %".
-        const QString overshoot = std::isfinite(v.metrics.overshootPct) ? tr("%1 %").arg(ruleNumber(v.metrics.overshootPct)) : tr("not measured");
-        text += tr("<br>Verification with %1: overshoot %2, %3")
-                    .arg(rule ? words::term(std::string("tuning.rule.") + rule->id) : QString::fromStdString(v.rule), overshoot, words::tuningOutcome(v.outcome));
-        if (r.unit == "mm")
-            text += v.settledInside5umS >= 0 ? tr(", inside ±5 µm of the target from %1 ms").arg(ruleNumber(v.settledInside5umS * 1000))
-                                             : tr(", <b>never inside ±5 µm</b>");
-    }
+    if (r.verification)
+        text += verificationText(r);
     m_result->setText(text);
     m_rules->setRowCount(0);
     for (const auto& rule : motion::control::tuningRules()) {

@@ -48,6 +48,8 @@ signals:
     void useRule(const QString& ruleId, const motion::control::DiscreteGains& gains, const QString& source);
 
 private:
+    /// The verification's line of the result: its verdict first, then its figures.
+    static QString verificationText(const motion::control::TuningResult& r);
     NumberField* spin(const QString& objectName, double min, double max, int decimals, double value);
     double toTarget(double shown) const;
     double toShown(double target) const;

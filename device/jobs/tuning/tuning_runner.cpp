@@ -45,6 +45,15 @@ DiscreteGains TuningRunner::ruleGains(const std::string& ruleId, double ku, doub
     return r ? toDiscrete(applyRule(*r, ku, tuS), periodS) : DiscreteGains{};
 }
 
+StepJudging TuningRunner::judging(const TuningTarget& target)
+{
+    StepJudging j;
+    j.resolution = target.noiseFloor();
+    if (target.unit() == QLatin1String("mm"))
+        j.targetBand = 0.005;
+    return j;
+}
+
 bool TuningRunner::startZn(TuningTarget* target, const ZnOptions& o)
 {
     if (busy())
@@ -302,15 +311,15 @@ void TuningRunner::onRun(const RunOutcome& out, int kind, const msg::Message& la
     if (endedBadly(out.record, label))
         return;
     if (m_stepOnly || m_verifying) {
-        const StepMetrics m = stepMetrics(out.record);
-        emit stepTestDone(out.record, m, label);
+        const StepVerdict verdict = judgeStep(out.record, judging(*m_target));
+        emit stepTestDone(out.record, verdict, label);
         if (m_verifying) {
             TuningResult::Verification v;
             v.rule = m_options.verifyRule;
             v.gains = ruleGains(m_options.verifyRule, m_result.ku, m_result.tuS, m_result.controlPeriodS);
-            v.metrics = m;
-            const double t5 = m_target->unit() == QLatin1String("mm") ? settledInsideS(out.record, 0.005) : std::nan("");
-            v.settledInside5umS = std::isnan(t5) ? -1 : t5;
+            v.metrics = verdict.metrics;
+            v.limitCycle = verdict.limitCycle;
+            v.settledInside5umS = std::isnan(verdict.insideTargetBandS) ? -1 : verdict.insideTargetBandS;
             v.outcome = endReasonName(out.record.reason);
             m_result.verification = v;
         }

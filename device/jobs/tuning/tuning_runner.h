@@ -59,6 +59,8 @@ public:
 
     /// The verification test's gains for a rule, in the target's discrete form.
     static motion::control::DiscreteGains ruleGains(const std::string& ruleId, double ku, double tuS, double periodS);
+    /// How a step on `target` is judged: its grating count, and seed 002's ±5 µm on a stage (mm).
+    static motion::control::StepJudging judging(const TuningTarget& target);
 
 signals:
     void stateChanged(dev::TuningRunner::State state);
@@ -67,7 +69,8 @@ signals:
     /// Every experiment's record: kind 0 trial, 1 relay, 2 forced run, 3 step test / verification.
     void recordArrived(const motion::control::Record& record, const msg::Message& label, int kind);
     void ultimateFound(double ku, double tuS);
-    void stepTestDone(const motion::control::Record& record, const motion::control::StepMetrics& metrics, const msg::Message& label);
+    /// A step test or the verification, judged by motion::control::judgeStep (the same rules for both).
+    void stepTestDone(const motion::control::Record& record, const motion::control::StepVerdict& verdict, const msg::Message& label);
     /// The job ended: ok, and a message for the operator (tuning.run.*; labels are tuning.label.*).
     void finished(bool ok, const msg::Message& message);
     /// Something the operator should read now (link lost, E-stop, …).

@@ -6,7 +6,8 @@ namespace motion::control {
 
 /// Whether the figures relative to the final value mean anything: a response
 /// that tripped its envelope, or never stayed inside its band, has no final value.
-enum class StepOutcome { Settled, DidNotSettle, Unstable };
+/// LimitCycle (judgeStep, step_verdict.h): it keeps oscillating at rest around a centre.
+enum class StepOutcome { Settled, DidNotSettle, Unstable, LimitCycle };
 
 struct StepMetrics {
     StepOutcome outcome = StepOutcome::Settled;  ///< not Settled: rise, overshoot, settling and steady error are NaN

@@ -5,6 +5,7 @@
 #include "motion/control/experiment.h"
 #include "motion/control/gains.h"
 #include "motion/control/tuning/step_metrics.h"
+#include "motion/control/tuning/step_verdict.h"
 
 #include <optional>
 #include <string>
@@ -43,7 +44,8 @@ struct TuningResult {
     struct Verification {
         std::string rule;        ///< rule id whose gains were tried
         DiscreteGains gains;
-        StepMetrics metrics;
+        StepMetrics metrics;     ///< judged as a step test is (judgeStep): its outcome says whether it came to rest
+        LimitCycle limitCycle;   ///< the oscillation left at rest, if any
         double settledInside5umS = -1;  ///< when it entered ±5 µm (seed 002's band) for good; −1 never
         std::string outcome;     ///< end reason
     };
