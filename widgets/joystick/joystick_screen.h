@@ -78,6 +78,7 @@ private:
     QSpinBox* m_deadband;
     QDoubleSpinBox* m_expo;
     QLabel* m_readout;
+    QLabel* m_hint = nullptr;
     QLabel* m_speed;
     std::map<int, double> m_wish;  ///< axis → velocity the stick asks for (mm/s)
     TravelView* m_travel;
