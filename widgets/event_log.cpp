@@ -44,6 +44,12 @@ void EventLog::retranslateUi()
 
 int EventLog::rowCount() const { return m_table->rowCount(); }
 
+int EventLog::heightForRows(int rows) const
+{
+    return m_table->horizontalHeader()->sizeHint().height() + rows * m_table->verticalHeader()->defaultSectionSize()
+        + 2 * m_table->frameWidth();
+}
+
 QString EventLog::rowText(int row) const
 {
     QStringList cells;
