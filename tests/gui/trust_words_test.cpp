@@ -8,6 +8,7 @@
 #include "app/gui/api_wiring.h"
 #include "widgets/event_log.h"
 #include "widgets/plot_ticks.h"
+#include "widgets/tuning/response_plot.h"
 #include "widgets/wording/translators.h"
 
 #include <QHeaderView>
@@ -117,6 +118,27 @@ TEST(TrustWordsTicks, TickLabelsDifferAndSayTheirValueAtEveryRange)
             EXPECT_NEAR(v, ticks[i], std::abs(step) / 100) << lo << "…" << hi << ": " << labels[i].toStdString();
         }
     }
+}
+
+// The step test's legend, run beside the Z-N verification at 1366 × 768, was cut at its left:
+// "…s PID gains verification (Kp 2.5066 · Ki 962.75 /s · Kd 1.6315 ms)".
+TEST(TrustWordsLegend, TheStepTestLegendFitsItsPlot)
+{
+    ui::ResponsePlot plot(ui::ResponsePlot::Mode::Overlay);
+    plot.resize(330, 330);  // the plot's width beside the gains and the results at 1366 px
+    plot.show();
+    motion::control::Record r;
+    r.periodS = 1e-3;
+    for (int i = 0; i < 120; ++i)
+        r.append(0.02, 0.02 * (1 - std::exp(-i / 10.0)), 0);
+    plot.addRun(r, QStringLiteral("Gains in use (Kp 0.25 · Ki 500 /s · Kd 30 µs)"));
+    plot.addRun(r, QStringLiteral("Ziegler–Nichols PID gains verification (Kp 2.5066 · Ki 962.75 /s · Kd 1.6315 ms)"));
+    plot.plot()->replot();
+    const QRect legend = plot.plot()->legend->outerRect();
+    const QRect room = plot.plot()->rect();
+    EXPECT_GE(legend.left(), room.left()) << "the legend starts " << room.left() - legend.left() << " px left of its plot";
+    EXPECT_LE(legend.right(), room.right());
+    EXPECT_EQ(ui::ResponsePlot::legendLines(QStringLiteral("PID verification (Kp 2)")), QStringLiteral("PID verification\n(Kp 2)"));
 }
 
 } // namespace

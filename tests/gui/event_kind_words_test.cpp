@@ -5,7 +5,7 @@
 #include "widgets/wording/translators.h"
 #include "widgets/wording/wording.h"
 
-#include "pseudo_translation.h"
+#include "../device/pseudo_translation.h"
 
 #include <QFile>
 #include <QRegularExpression>
