@@ -257,10 +257,11 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     dock->setWidget(m_log);
     dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
     addDockWidget(Qt::BottomDockWidgetArea, dock);
-    // The log starts four rows high: what just happened stays in view on a 768-pixel screen,
-    // and a screen short of room scrolls. (Two rows, the least height, said almost nothing.)
+    // The log starts three (compact) rows high: what just happened stays in view on a 768-pixel
+    // screen. Two rows of the table's usual height said almost nothing; more height leaves the
+    // Jog screen no room to spare at 708 px, where a message coming would then move it.
     const int titlePx = dock->minimumSizeHint().height() - m_log->minimumSizeHint().height();
-    resizeDocks({dock}, {titlePx + m_log->heightForRows(4)}, Qt::Vertical);
+    resizeDocks({dock}, {titlePx + m_log->heightForRows(3)}, Qt::Vertical);
     wireApi(dock);
 
     for (int i = 0; i < 2; ++i) {
