@@ -42,11 +42,10 @@ QList<double> AxisRow::stepPresets(const dev::AxisDescriptor& d, proto::DeviceKi
 
 AxisRow::AxisRow(int axis, const dev::AxisDescriptor& d, proto::DeviceKind kind, QGridLayout* grid, int row,
                  QWidget* parent)
-    : QObject(parent), m_axis(axis), m_desc(d)
+    : QObject(parent), m_axis(axis), m_desc(d), m_kind(kind)
 {
     m_decimals = d.resolution > 0 ? std::max(0, static_cast<int>(std::ceil(-std::log10(d.resolution) - 1e-9))) : 3;
     m_name = new QLabel(QStringLiteral("<b>%1</b>").arg(d.letter), parent);
-    m_name->setToolTip(d.unit == proto::AxisUnit::Microlitre ? tr("Plunger pump, µL") : tr("Axis %1, mm").arg(d.letter));
     QFont mono(QStringLiteral("DejaVu Sans Mono"));
     mono.setStyleHint(QFont::Monospace);
     mono.setPointSizeF(mono.pointSizeF() * 1.15);
@@ -57,17 +56,13 @@ AxisRow::AxisRow(int axis, const dev::AxisDescriptor& d, proto::DeviceKind kind,
         l->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
         l->setMinimumWidth(l->fontMetrics().horizontalAdvance(QStringLiteral("-0000.0000")) + 6);
     }
-    m_commanded->setToolTip(tr("Commanded position (%1)").arg(d.unitName()));
-    m_measured->setToolTip(kind == proto::DeviceKind::Stage ? tr("Grating scale reading (%1)").arg(d.unitName())
-                                                            : tr("Encoder reading (%1)").arg(d.unitName()));
-    m_homed = new StatusLamp(tr("Homed"), parent);
-    m_homeSwitch = new StatusLamp(tr("Home switch"), parent);
-    m_limitSwitch = new StatusLamp(tr("Limit switch"), parent);
-    m_moving = new StatusLamp(tr("Moving"), parent);
+    m_homed = new StatusLamp(QString(), parent);
+    m_homeSwitch = new StatusLamp(QString(), parent);
+    m_limitSwitch = new StatusLamp(QString(), parent);
+    m_moving = new StatusLamp(QString(), parent);
 
     m_step = new QComboBox(parent);
     m_step->setEditable(true);
-    m_step->setToolTip(tr("Step size in %1: pick a preset or type your own").arg(d.unitName()));
     for (double s : stepPresets(d, kind))
         m_step->addItem(QString::number(s), s);
     m_step->setCurrentIndex(std::min(2, m_step->count() - 1));
@@ -80,23 +75,18 @@ AxisRow::AxisRow(int axis, const dev::AxisDescriptor& d, proto::DeviceKind kind,
     m_step->setLineEdit(stepEntry);
     m_step->setCurrentIndex(std::min(2, m_step->count() - 1));
     m_step->setMinimumWidth(80);
-    auto makeTool = [&](const QString& text, const QString& tip) {
+    auto makeTool = [&](const QString& text) {
         auto* b = new QToolButton(parent);
         b->setText(text);
-        b->setToolTip(tip);
         b->setMinimumWidth(34);
         return b;
     };
-    m_stepMinus = makeTool(QStringLiteral("−"), tr("Step %1 down by the step size").arg(d.letter));
-    m_stepPlus = makeTool(QStringLiteral("+"), tr("Step %1 up by the step size").arg(d.letter));
-    m_holdMinus = makeTool(QStringLiteral("◀◀"), tr("Hold to move %1 down; release to stop").arg(d.letter));
-    m_holdPlus = makeTool(QStringLiteral("▶▶"), tr("Hold to move %1 up; release to stop").arg(d.letter));
-    m_home = new QPushButton(tr("Home"), parent);
-    m_home->setToolTip(tr("Seek the home switch and make it zero"));
-    m_zero = new QPushButton(tr("Zero"), parent);
-    m_zero->setToolTip(tr("Make the present position zero"));
-    for (QWidget* w : std::initializer_list<QWidget*>{m_stepMinus, m_stepPlus, m_holdMinus, m_holdPlus, m_home, m_zero})
-        setUsualToolTip(w, w->toolTip());
+    m_stepMinus = makeTool(QStringLiteral("−"));
+    m_stepPlus = makeTool(QStringLiteral("+"));
+    m_holdMinus = makeTool(QStringLiteral("◀◀"));
+    m_holdPlus = makeTool(QStringLiteral("▶▶"));
+    m_home = new QPushButton(parent);
+    m_zero = new QPushButton(parent);
     // The target is kept as typed: "1e9" or "abc" shows as invalid with its reason, and Go says why.
     auto* target = new NumberField(parent);
     target->setObjectName(QStringLiteral("jogTarget%1").arg(d.letter));
@@ -104,16 +94,14 @@ AxisRow::AxisRow(int axis, const dev::AxisDescriptor& d, proto::DeviceKind kind,
     target->setRange(-1e6, 1e6);
     target->setEmptyAllowed(true);
     m_target = target;
-    m_target->setPlaceholderText(tr("target %1").arg(d.unitName()));
+    m_go = new QPushButton(parent);
+    m_limits = new QLabel(parent);
+    retranslateUi();
     // Wide enough for its own placeholder ("target mm" was cut to "tar…") and a position.
     m_target->setMinimumWidth(std::max(m_target->fontMetrics().horizontalAdvance(m_target->placeholderText()),
                                        m_target->fontMetrics().horizontalAdvance(QStringLiteral("-0000.000")))
                               + 16);
     m_target->setMaximumWidth(m_target->minimumWidth() + 30);
-    m_go = new QPushButton(tr("Go"), parent);
-    setUsualToolTip(m_go, tr("Move %1 to the target (absolute)").arg(d.letter));
-    m_limits = new QLabel(parent);
-    m_limits->setToolTip(tr("Soft limits: moves beyond them are refused"));
 
     int c = 0;
     grid->addWidget(m_name, row, c++);
@@ -184,6 +172,52 @@ AxisRow::AxisRow(int axis, const dev::AxisDescriptor& d, proto::DeviceKind kind,
 
 AxisRow::~AxisRow() = default;
 
+void AxisRow::retranslateUi()
+{
+    // The row's widgets sit in its screen's grid, not under this object: the screen's
+    // run-time rewording cannot tell this class's words from another's ("Home" the
+    // button, "home" the event), so the row words itself again on a language switch.
+    const QChar letter = m_desc.letter;
+    m_name->setToolTip(m_desc.unit == proto::AxisUnit::Microlitre ? tr("Plunger pump, µL") : tr("Axis %1, mm").arg(letter));
+    m_step->setToolTip(tr("Step size in %1: pick a preset or type your own").arg(m_desc.unitName()));
+    setUsualToolTip(m_stepMinus, tr("Step %1 down by the step size").arg(letter));
+    setUsualToolTip(m_stepPlus, tr("Step %1 up by the step size").arg(letter));
+    setUsualToolTip(m_holdMinus, tr("Hold to move %1 down; release to stop").arg(letter));
+    setUsualToolTip(m_holdPlus, tr("Hold to move %1 up; release to stop").arg(letter));
+    m_home->setText(tr("Home"));
+    setUsualToolTip(m_home, tr("Seek the home switch and make it zero"));
+    m_zero->setText(tr("Zero"));
+    setUsualToolTip(m_zero, tr("Make the present position zero"));
+    m_target->setPlaceholderText(tr("target %1").arg(m_desc.unitName()));
+    if (auto* f = qobject_cast<NumberField*>(m_target))
+        f->setFieldName(tr("Target %1").arg(letter));
+    if (auto* f = qobject_cast<NumberField*>(m_step->lineEdit()))
+        f->setFieldName(tr("Step %1").arg(letter));
+    m_go->setText(tr("Go"));
+    setUsualToolTip(m_go, tr("Move %1 to the target (absolute)").arg(letter));
+    m_limits->setToolTip(tr("Soft limits: moves beyond them are refused"));
+    showLampTips();
+}
+
+void AxisRow::showLampTips()
+{
+    if (m_stale) {
+        const QString unknown = tr("Unknown: the instrument is not connected");
+        for (StatusLamp* lamp : {m_homed, m_homeSwitch, m_limitSwitch, m_moving})
+            lamp->setToolTip(unknown);
+        for (QLabel* l : {m_commanded, m_measured})
+            l->setToolTip(tr("The last reading before the link went down, not where the axis is now"));
+        return;
+    }
+    m_commanded->setToolTip(tr("Commanded position (%1)").arg(m_desc.unitName()));
+    m_measured->setToolTip(m_kind == proto::DeviceKind::Stage ? tr("Grating scale reading (%1)").arg(m_desc.unitName())
+                                                              : tr("Encoder reading (%1)").arg(m_desc.unitName()));
+    m_homed->setToolTip(m_isHomed ? tr("Homed") : m_homing ? tr("Homing…") : tr("Not homed: absolute moves are refused"));
+    m_homeSwitch->setToolTip(tr("Home switch"));
+    m_limitSwitch->setToolTip(tr("Limit switch"));
+    m_moving->setToolTip(tr("Moving"));
+}
+
 QString AxisRow::format(double v) const { return readingText(v, m_decimals); }
 
 std::optional<double> AxisRow::step() const
@@ -206,15 +240,37 @@ void AxisRow::showReadout(const dev::AxisReadout& r)
 {
     m_commanded->setText(format(r.commanded));
     m_measured->setText(format(r.measured));
+    const bool wasStale = m_stale;
+    m_stale = false;
+    if (wasStale)
+        for (QLabel* l : {m_commanded, m_measured})
+            l->setStyleSheet(QString());
     m_homed->setTone(r.homed ? StatusLamp::Tone::Ok : r.homing ? StatusLamp::Tone::Active : StatusLamp::Tone::Warning);
-    m_homed->setToolTip(r.homed ? tr("Homed") : r.homing ? tr("Homing…") : tr("Not homed: absolute moves are refused"));
     m_homeSwitch->setTone(r.homeSwitch ? StatusLamp::Tone::Active : StatusLamp::Tone::Off);
     m_limitSwitch->setTone(r.limitSwitch ? StatusLamp::Tone::Alarm : StatusLamp::Tone::Off);
     m_moving->setTone(r.fault ? StatusLamp::Tone::Alarm : r.moving ? StatusLamp::Tone::Active : StatusLamp::Tone::Off);
+    const bool tipsChange = wasStale || m_isHomed != r.homed || m_homing != r.homing || m_homed->toolTip().isEmpty();
     m_isHomed = r.homed;
+    m_homing = r.homing;
+    if (tipsChange)
+        showLampTips();
     setEnabledOr(m_go, !m_whyNot.isEmpty() ? m_whyNot
                        : r.homed           ? QString()
                                            : tr("Home %1 first: absolute moves need a homed axis").arg(m_desc.letter));
+}
+
+void AxisRow::showStale()
+{
+    if (m_stale)
+        return;
+    m_stale = true;
+    for (StatusLamp* lamp : {m_homed, m_homeSwitch, m_limitSwitch, m_moving})
+        lamp->setTone(StatusLamp::Tone::Unknown);
+    m_isHomed = false;
+    m_homing = false;
+    for (QLabel* l : {m_commanded, m_measured})
+        l->setStyleSheet(QStringLiteral("color:#9e9e9e;"));
+    showLampTips();
 }
 
 void AxisRow::showLimits(const dev::SoftLimits& l)

@@ -25,12 +25,18 @@ public:
 
     int axis() const { return m_axis; }
     void showReadout(const dev::AxisReadout& readout);
+    /// No live link: the lamps say unknown and the positions are marked as the last
+    /// ones read, so nothing from before reads as the machine's state now.
+    void showStale();
+    bool stale() const { return m_stale; }
     void showLimits(const dev::SoftLimits& limits);
     /// The step the operator picked, in axis units; nullopt (and a red field) when it does not parse.
     std::optional<double> step() const;
     int decimals() const { return m_decimals; }
     /// Enabled when `whyNot` is empty; otherwise the controls say why in their tooltips.
     void setEnabled(const QString& whyNot);
+    /// Words the row's texts again in the language now in force.
+    void retranslateUi();
     static QList<double> stepPresets(const dev::AxisDescriptor& d, proto::DeviceKind kind);
 
 signals:
@@ -46,9 +52,11 @@ signals:
 
 private:
     QString format(double v) const;
+    void showLampTips();
 
     int m_axis;
     dev::AxisDescriptor m_desc;
+    proto::DeviceKind m_kind;
     int m_decimals;
     QLabel* m_name;
     QLabel* m_commanded;
@@ -70,6 +78,8 @@ private:
     QList<QWidget*> m_controls;
     QString m_whyNot;          ///< why the row's controls are disabled; empty: they are not
     bool m_isHomed = false;
+    bool m_homing = false;
+    bool m_stale = false;
 };
 
 } // namespace ui

@@ -19,6 +19,9 @@ EventLog::EventLog(QWidget* parent) : QWidget(parent), m_table(new QTableWidget(
     l->addWidget(m_table);
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->verticalHeader()->setVisible(false);
+    // One line of text a row, with little padding: more of what just happened in the same height.
+    m_table->verticalHeader()->setMinimumSectionSize(m_table->fontMetrics().height() + 4);
+    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setColumnWidth(0, 90);
@@ -43,6 +46,12 @@ void EventLog::retranslateUi()
 }
 
 int EventLog::rowCount() const { return m_table->rowCount(); }
+
+int EventLog::heightForRows(int rows) const
+{
+    return m_table->horizontalHeader()->sizeHint().height() + rows * m_table->verticalHeader()->defaultSectionSize()
+        + 2 * m_table->frameWidth();
+}
 
 QString EventLog::rowText(int row) const
 {

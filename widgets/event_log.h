@@ -32,6 +32,8 @@ public:
     void addEvent(const QString& instrument, const dev::DeviceIdentity& id, const dev::DeviceEvent& event);
     void addNote(const QString& instrument, const QString& kind, const QString& text, bool isError = false);
     int rowCount() const;
+    /// The height that shows the column titles and `rows` rows.
+    int heightForRows(int rows) const;
     QString rowText(int row) const;  ///< "time | instrument | axis | kind | text", for tests and copying
 
 protected:

@@ -7,6 +7,7 @@
 
 #include "widgets/wording/wording.h"
 
+#include <QAbstractItemView>
 #include <QAbstractSpinBox>
 #include <QApplication>
 #include <QComboBox>
@@ -15,6 +16,8 @@
 #include <QLocale>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPlainTextEdit>
+#include <QTextEdit>
 #include <QPushButton>
 #include <QSlider>
 #include <QVBoxLayout>
@@ -68,9 +71,10 @@ JogScreen::JogScreen(dev::Instrument* client, QWidget* parent) : QWidget(parent)
     speedRow->addWidget(m_speed);
     speedRow->addWidget(m_speedLabel);
     speedRow->addSpacing(24);
-    auto* keys = new QLabel(tr("Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift fast, Space stop, Esc E-stop"), this);
-    keys->setStyleSheet(QStringLiteral("color:#555;"));
-    speedRow->addWidget(keys);
+    m_keys = new QLabel(this);  // the instrument's own axes: worded in showKeys()
+    m_keys->setObjectName(QStringLiteral("jogKeys"));
+    m_keys->setStyleSheet(QStringLiteral("color:#555;"));
+    speedRow->addWidget(m_keys);
     speedRow->addSpacing(12);
     // Whether the arrow keys move the machine or the text cursor: said, not guessed.
     m_keysMode = new QLabel(this);
@@ -152,7 +156,8 @@ void JogScreen::rebuild()
         delete item;
     }
     const auto& id = m_client->identity();
-    m_title->setText(id.axes.isEmpty() ? tr("No instrument") : id.model);
+    m_title->setText(id.axes.isEmpty() ? tr("No instrument") : words::modelName(id));
+    showKeys();
     if (id.axes.isEmpty()) {
         refresh();
         return;
@@ -218,11 +223,44 @@ void JogScreen::refresh()
     setEnabledOr(m_stop, ready ? QString() : tr("Connect the instrument first"));
     for (AxisRow* r : m_rows) {
         r->setEnabled(whyNot);
-        if (r->axis() < st.axes.size())
+        if (!ready)
+            r->showStale();
+        else if (r->axis() < st.axes.size())
             r->showReadout(st.axes[r->axis()]);
         if (r->axis() < m_client->softLimits().size())
             r->showLimits(m_client->softLimits()[r->axis()]);
     }
+}
+
+void JogScreen::showKeys()
+{
+    // Only the keys of axes the instrument has: the stage has no Z for PgUp/PgDn to move.
+    const auto& id = m_client->identity();
+    QStringList axes;
+    if (id.axisIndex(QLatin1Char('X')) >= 0)
+        axes << QStringLiteral("←/→ X");
+    if (id.axisIndex(QLatin1Char('Y')) >= 0)
+        axes << QStringLiteral("↑/↓ Y");
+    if (id.axisIndex(QLatin1Char('Z')) >= 0)
+        axes << QStringLiteral("PgUp/PgDn Z");
+    m_keys->setText(axes.isEmpty() ? tr("Keys: Space stop, Esc E-stop")
+                                   : tr("Keys: %1, Shift fast, Space stop, Esc E-stop").arg(axes.join(tr(", ", "between the items of a list"))));
+}
+
+void JogScreen::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange && m_keys) {
+        // Worded here rather than by the window's rewording of texts already shown: the rows'
+        // buttons sit in this screen's grid, where "Home" could be read as another class's word.
+        const auto& id = m_client->identity();
+        m_title->setText(id.axes.isEmpty() ? tr("No instrument") : words::modelName(id));
+        showKeys();
+        for (AxisRow* r : m_rows)
+            r->retranslateUi();
+        refresh();
+        showKeysMode();
+    }
+    QWidget::changeEvent(event);
 }
 
 bool JogScreen::confirm(const QString& question) { return !m_confirm || m_confirm(question); }
@@ -311,6 +349,12 @@ int JogScreen::axisForKey(int key, int* direction) const
     return id.axisIndex(letter);
 }
 
+/// A text field that needs the arrow keys has the focus: a line edit, an editable combo,
+/// a spin box, an editable text. A list, a button or a combo picked from keeps no jog keys.
+// A table or list with the focus keeps the arrow keys: an operator who clicked a recipe
+// step and presses Down means the next step, not a move of the machine.
+static bool listFocus() { return qobject_cast<QAbstractItemView*>(QApplication::focusWidget()) != nullptr; }
+
 static bool typingFocus()
 {
     QWidget* f = QApplication::focusWidget();
@@ -318,14 +362,23 @@ static bool typingFocus()
         return false;
     if (auto* c = qobject_cast<QComboBox*>(f))
         return c->isEditable();
-    return qobject_cast<QLineEdit*>(f) || qobject_cast<QAbstractSpinBox*>(f);
+    if (auto* t = qobject_cast<QPlainTextEdit*>(f))
+        return !t->isReadOnly();
+    if (auto* t = qobject_cast<QTextEdit*>(f))
+        return !t->isReadOnly();
+    return qobject_cast<QLineEdit*>(f) || qobject_cast<QAbstractSpinBox*>(f) || listFocus();
 }
 
 bool JogScreen::typing() const { return isVisible() && typingFocus(); }
 
+bool JogScreen::keysAreMine() const { return isVisible() || (m_keysElsewhere && m_keysElsewhere()); }
+
 QString JogScreen::keysModeText() const
 {
-    return typing() ? tr("Typing in a field — press Enter or click an empty spot to jog with the keys") : tr("Keys jog the axes");
+    if (!typing())
+        return tr("Keys jog the axes");
+    return listFocus() ? tr("A list has the keys — click an empty spot to jog with them")
+                       : tr("Typing in a field — press Enter or click an empty spot to jog with the keys");
 }
 
 void JogScreen::showKeysMode()
@@ -346,7 +399,7 @@ void JogScreen::showEvent(QShowEvent* event)
 bool JogScreen::eventFilter(QObject* watched, QEvent* event)
 {
     const QEvent::Type t = event->type();
-    if ((t == QEvent::KeyPress || t == QEvent::KeyRelease || t == QEvent::ShortcutOverride) && watched != this && isVisible()
+    if ((t == QEvent::KeyPress || t == QEvent::KeyRelease || t == QEvent::ShortcutOverride) && watched != this && keysAreMine()
         && watched->isWidgetType() && static_cast<QWidget*>(watched)->window() == window() && !typingFocus()) {
         auto* k = static_cast<QKeyEvent*>(event);
         int direction = 0;

@@ -40,6 +40,12 @@ public:
     static constexpr double kFarMoveShare = 0.25;
     /// Shows the live position / following-error strip of the axis last jogged.
     void setTelemetry(tele::TelemetryHub* hub, int instrument);
+    /// While this screen is not shown, the jog keys still move its instrument when
+    /// `mine` says so (the window's screen shown leaves the arrow keys to jogging and is
+    /// about this instrument); a text field being edited keeps them all the same.
+    void setKeysFromOtherScreens(std::function<bool()> mine) { m_keysElsewhere = std::move(mine); }
+    /// Ends every hold of a key or button (the window changed screens under a held key).
+    void endHolds() { endAllHolds(); }
 
 signals:
     void problem(const QString& message);
@@ -51,6 +57,7 @@ protected:
     void hideEvent(QHideEvent* event) override;
     void showEvent(QShowEvent* event) override;
     bool eventFilter(QObject* watched, QEvent* event) override;
+    void changeEvent(QEvent* event) override;
 
 public:
     /// True while a text field of this screen is being edited: the arrow keys are the field's then.
@@ -62,6 +69,8 @@ private:
     void rebuild();
     void refresh();
     void showKeysMode();
+    void showKeys();
+    bool keysAreMine() const;
     bool handleJogKey(QKeyEvent* event, bool press);
     void startHold(int axis, int direction);
     void endHold(int axis);
@@ -75,6 +84,7 @@ private:
     dev::Instrument* m_client;
     Confirm m_confirm;
     Confirm m_confirmLongMove;
+    std::function<bool()> m_keysElsewhere;
     QLabel* m_title;
     QLabel* m_state;
     QPushButton* m_homeAll;
@@ -84,6 +94,7 @@ private:
     QPushButton* m_stop;
     QSlider* m_speed;
     QLabel* m_speedLabel;
+    QLabel* m_keys = nullptr; ///< which keys jog which axis
     QLabel* m_keysMode;        ///< whether the keys jog or type, and how to switch
     QGridLayout* m_grid;
     QWidget* m_gridHost;

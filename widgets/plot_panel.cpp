@@ -1,4 +1,5 @@
 #include "widgets/plot_panel.h"
+#include "widgets/plot_ticks.h"
 
 #include <qcustomplot.h>
 
@@ -54,6 +55,8 @@ PlotPanel::PlotPanel(QCustomPlot* plot, QCPMarginGroup* margins, QObject* parent
     timeAxis()->setTickLabels(false);
     leftAxis()->setNumberFormat(QStringLiteral("gb"));
     rightAxis()->setNumberFormat(QStringLiteral("gb"));
+    useDistinctTickLabels(leftAxis());
+    useDistinctTickLabels(rightAxis());
     for (QCPAxis* a : {timeAxis(), leftAxis(), rightAxis()}) {
         a->grid()->setPen(QPen(QColor(0xe6, 0xe6, 0xe6), 0));  // solid: dotted pens cost a dash pattern per frame
         QFont f = a->labelFont();
@@ -142,6 +145,14 @@ bool PlotPanel::addChannel(const tele::ChannelKey& key, const QString& name, con
     m_extent << std::make_pair(std::nan(""), std::nan(""));
     relayoutAxes();
     return true;
+}
+
+void PlotPanel::rename(const PlotDataSource& source)
+{
+    for (Line& l : m_lines) {
+        l.name = source.channelName(l.key);
+        l.graph->setName(l.unit.isEmpty() ? l.name : QStringLiteral("%1 (%2)").arg(l.name, l.unit));
+    }
 }
 
 bool PlotPanel::removeChannel(const tele::ChannelKey& key)

@@ -50,6 +50,8 @@ public:
     QCPLegend* legend() const { return m_legend; }
 
     bool addChannel(const tele::ChannelKey& key, const QString& name, const QString& unit);
+    /// Names every line again from `source` (after a language switch).
+    void rename(const PlotDataSource& source);
     bool removeChannel(const tele::ChannelKey& key);
     bool hasChannel(const tele::ChannelKey& key) const { return indexOf(key) >= 0; }
     QVector<tele::ChannelKey> channels() const;

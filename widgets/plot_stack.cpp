@@ -2,6 +2,8 @@
 
 #include "widgets/plot_panel.h"
 
+#include <QTimer>
+
 #include <cmath>
 
 namespace ui {
@@ -187,6 +189,22 @@ void PlotStack::wheelEvent(QWheelEvent* event)
     if (i >= 0)
         m_panels[i]->rect()->setRangeZoom(event->modifiers() & Qt::ControlModifier ? Qt::Vertical : Qt::Horizontal);
     QCustomPlot::wheelEvent(event);
+}
+
+void PlotStack::changeEvent(QEvent* event)
+{
+    QCustomPlot::changeEvent(event);
+    if (event->type() != QEvent::LanguageChange)
+        return;
+    // The legends name channels in the words of the language they were added in: named again
+    // once the window has given the instruments their new names (after this event).
+    QTimer::singleShot(0, this, [this] {
+        if (!m_source)
+            return;
+        for (PlotPanel* p : std::as_const(m_panels))
+            p->rename(*m_source);
+        replot(QCustomPlot::rpQueuedReplot);
+    });
 }
 
 void PlotStack::resizeEvent(QResizeEvent* event)

@@ -13,6 +13,7 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMenu>
+#include <QProgressBar>
 #include <QRegularExpression>
 #include <QSpinBox>
 #include <QTabWidget>
@@ -299,6 +300,8 @@ void rewordWidget(QWidget* w, Rewording& r)
         r.field(contexts, [e] { return e->placeholderText(); }, [e](const QString& s) { e->setPlaceholderText(s); });
     if (auto* m = qobject_cast<QMenu*>(w))
         r.field(contexts, [m] { return m->title(); }, [m](const QString& s) { m->setTitle(s); });
+    if (auto* p = qobject_cast<QProgressBar*>(w))  // "%v of %m tiles"
+        r.field(contexts, [p] { return p->format(); }, [p](const QString& f) { p->setFormat(f); });
     if (auto* s = qobject_cast<QAbstractSpinBox*>(w))
         r.field(contexts, [s] { return s->specialValueText(); }, [s](const QString& t) { s->setSpecialValueText(t); });
     if (auto* s = qobject_cast<QDoubleSpinBox*>(w)) {

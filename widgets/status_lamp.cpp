@@ -27,9 +27,16 @@ void StatusLamp::paintEvent(QPaintEvent*)
     case Tone::Active: c = QColor(0x1F, 0x6F, 0xEB); break;
     case Tone::Warning: c = QColor(0xE3, 0x9B, 0x0B); break;
     case Tone::Alarm: c = QColor(0xD7, 0x26, 0x2B); break;
+    case Tone::Unknown: c = QColor(0x9E, 0x9E, 0x9E); break;
     }
     QPainter p(this);
     p.setRenderHint(QPainter::Antialiasing);
+    if (m_tone == Tone::Unknown) {
+        p.setPen(QPen(c, 1.5, Qt::DotLine));
+        p.setBrush(Qt::NoBrush);
+        p.drawEllipse(QRectF(2.5, 2.5, width() - 5, height() - 5));
+        return;
+    }
     p.setPen(QPen(c.darker(140), 1));
     p.setBrush(c);
     p.drawEllipse(QRectF(2, 2, width() - 4, height() - 4));

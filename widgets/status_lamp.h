@@ -8,7 +8,9 @@ namespace ui {
 class StatusLamp : public QWidget {
     Q_OBJECT
 public:
-    enum class Tone { Off, Ok, Active, Warning, Alarm };
+    /// Unknown: the lamp's state cannot be known now (no live link), drawn hollow so it is
+    /// never read as a state the machine is in.
+    enum class Tone { Off, Ok, Active, Warning, Alarm, Unknown };
     explicit StatusLamp(const QString& toolTip = {}, QWidget* parent = nullptr);
     void setTone(Tone tone);
     Tone tone() const { return m_tone; }

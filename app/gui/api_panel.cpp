@@ -26,7 +26,10 @@ ApiControlStrip::ApiControlStrip(api::ApiServer* server, QWidget* parent) : QFra
     h->setContentsMargins(8, 3, 8, 3);
     m_label = new QLabel(this);
     m_label->setTextFormat(Qt::PlainText);
-    m_label->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);  // long client names elide, the button stays
+    // Wrapped over the height the connection bars give the row: one line was cut at "Your m…"
+    // at 1366 px. The button stays whatever the client's name.
+    m_label->setWordWrap(true);
+    m_label->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     m_takeBack = new QPushButton(this);
     m_takeBack->setObjectName(QStringLiteral("apiTakeBack"));
     h->addWidget(m_label, 1);

@@ -241,6 +241,21 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     m_calibration = makeCalibrationScreen(sessions().data(), this, m_banner, m_hub, m_options);
     addScreen(QStringLiteral("calibration"), tr("Calibration"), m_calibration);
     connect(m_nav, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
+    // The jog keys work on every screen: a screen about one instrument jogs that one, any
+    // other the instrument of the Jog screen's tab. The Joystick screen's arrow keys are its
+    // stick's. A key held while the screen changes stops its axis.
+    for (int i = 0; i < 2; ++i)
+        m_jog[i]->setKeysFromOtherScreens([this, i] {
+            const QString screen = m_screenNames.value(m_nav->currentRow());
+            if (screen == QLatin1String("jog") || screen == QLatin1String("joystick"))
+                return false;
+            const int instrument = screen == QLatin1String("plates") ? 0 : screen == QLatin1String("scan") ? 1 : m_jogTabs->currentIndex();
+            return instrument == i;
+        });
+    connect(m_nav, &QListWidget::currentRowChanged, this, [this] {
+        for (auto* j : m_jog)
+            j->endHolds();
+    });
     m_nav->setCurrentRow(0);
 
     m_log = new ui::EventLog;
@@ -249,8 +264,11 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     dock->setWidget(m_log);
     dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
     addDockWidget(Qt::BottomDockWidgetArea, dock);
-    // The log starts at its least height: on a 768-pixel screen the room is the screens'.
-    resizeDocks({dock}, {dock->minimumSizeHint().height()}, Qt::Vertical);
+    // The log starts three (compact) rows high: what just happened stays in view on a 768-pixel
+    // screen. Two rows of the table's usual height said almost nothing; more height leaves the
+    // Jog screen no room to spare at 708 px, where a message coming would then move it.
+    const int titlePx = dock->minimumSizeHint().height() - m_log->minimumSizeHint().height();
+    resizeDocks({dock}, {titlePx + m_log->heightForRows(3)}, Qt::Vertical);
     wireApi(dock);
 
     for (auto& slot : m_instruments) {
@@ -447,7 +465,7 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
     auto showState = [this, i, c, bar] {
         const auto& id = c->identity();
         const QString who = c->state() == dev::LinkState::Ready || c->state() == dev::LinkState::Identified
-            ? QStringLiteral("%1 · %2 · %3").arg(id.model, id.firmware, c->linkDescription())
+            ? QStringLiteral("%1 · %2 · %3").arg(words::modelName(id), id.firmware, c->linkDescription())
             : c->linkDescription();
         bar->showState(c->state(), who);
         updateStatusBar();
@@ -509,7 +527,7 @@ void MainWindow::updateStatusBar()
         if (latched)
             text = tr("%1: E-STOP latched — press Reset E-stop to clear").arg(slot.session->name());
         if (c->state() == dev::LinkState::Ready)
-            text += QStringLiteral(" · %1").arg(c->identity().model);
+            text += QStringLiteral(" · %1").arg(words::modelName(c->identity()));
         const quint64 bad = st.crcErrors + st.malformed + st.oversize;
         if (bad || st.droppedBytes)
             text += tr(" · %1 bad frames, %2 bytes skipped").arg(bad).arg(st.droppedBytes);

@@ -86,12 +86,22 @@ const char* eventKindTerm(EventKind k)
     case 23: return "device.event.path_done";
     case 24: return "device.event.path_held";
     case 25: return "device.event.path_aborted";
+    case 40: return "device.event.comp_changed";
     }
     return "device.event.unknown";
 }
 
 const char* eventKindName(EventKind k)
 {
+    // Kinds defined beside their features (messages_tuning.h, messages_compensation.h) by number.
+    switch (static_cast<int>(k)) {
+    case 10: return "test ended";
+    case 11: return "test tripped";
+    case 12: return "test aborted";
+    case 13: return "gains changed";
+    case 40: return "compensation changed";
+    default: break;
+    }
     switch (k) {
     case EventKind::MotionDone: return "motion done";
     case EventKind::HomeDone: return "home done";

@@ -3888,6 +3888,12 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
     <message>
         <source>Axis %1: %2</source>
         <translation>%1 轴：%2</translation>
+        <source>Unknown: the instrument is not connected</source>
+        <translation>未知：仪器未连接</translation>
+    </message>
+    <message>
+        <source>The last reading before the link went down, not where the axis is now</source>
+        <translation>链路断开前的最后读数，并非该轴现在的位置</translation>
     </message>
 </context>
 <context>
@@ -5181,6 +5187,10 @@ Keep that log aside and start this test afresh?</source>
         <translation>急停已锁定：请先按“急停复位”</translation>
     </message>
     <message>
+        <source>A list has the keys — click an empty spot to jog with them</source>
+        <translation>列表正在使用按键 — 点击空白处即可用按键点动</translation>
+    </message>
+    <message>
         <source>Typing in a field — press Enter or click an empty spot to jog with the keys</source>
         <translation>正在输入框中输入 — 按回车或点击空白处即可用按键点动</translation>
     </message>
@@ -5195,6 +5205,19 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Home %1 of the %2?%3%4 Keep hands and labware clear.</source>
         <translation>让%2的 %1 回零？%3%4请让手和器皿远离。</translation>
+    </message>
+    <message>
+        <source>Keys: Space stop, Esc E-stop</source>
+        <translation>按键：空格停止，Esc 急停</translation>
+    </message>
+    <message>
+        <source>Keys: %1, Shift fast, Space stop, Esc E-stop</source>
+        <translation>按键：%1，Shift 快速，空格停止，Esc 急停</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <comment>between the items of a list</comment>
+        <translation>，</translation>
     </message>
 </context>
 <context>
@@ -5307,6 +5330,14 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source> · %1 held at its soft limit</source>
         <translation> · %1 停在软限位</translation>
+    </message>
+    <message>
+        <source>The last positions read before the link went down, not where the axes are now</source>
+        <translation>链路断开前最后读到的位置，并非各轴现在的位置</translation>
+    </message>
+    <message>
+        <source>Drag the knob; let go to stop. Arrow keys push the stick to the rim. Esc: E-stop.</source>
+        <translation>拖动旋钮，松开即停。方向键把摇杆推到边缘。Esc：急停。</translation>
     </message>
 </context>
 <context>
@@ -9725,6 +9756,11 @@ A loop this different may oscillate or run away. Apply them?</source>
         <translation>路径已中止</translation>
     </message>
     <message>
+        <source>compensation changed</source>
+        <comment>device.event.comp_changed</comment>
+        <translation>补偿已更改</translation>
+    </message>
+    <message>
         <source>unknown event</source>
         <comment>device.event.unknown</comment>
         <translation>未知事件</translation>
@@ -11018,6 +11054,17 @@ A loop this different may oscillate or run away. Apply them?</source>
         <source>%1 refused by the controller: error %2: %3</source>
         <comment>grbl.error.refused_no_line</comment>
         <translation>%1 被控制器拒绝：错误 %2：%3</translation>
+    </message>
+</context>
+<context>
+    <name>words::IdentityWords</name>
+    <message>
+        <source>BenchPilot analyzer manipulator (simulated)</source>
+        <translation>BenchPilot 分析仪机械手（模拟）</translation>
+    </message>
+    <message>
+        <source>BenchPilot microscope stage (simulated)</source>
+        <translation>BenchPilot 显微镜载物台（模拟）</translation>
     </message>
 </context>
 <context>

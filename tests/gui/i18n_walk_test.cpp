@@ -5,6 +5,7 @@
 // paths, and names from files (the deck's slots, a recipe's plates, field paths).
 // The walk prints what it found on every screen.
 #include "gui_window.h"
+#include "shown_texts.h"
 
 #include "../device/pseudo_translation.h"
 
@@ -21,7 +22,8 @@
 #include <QTest>
 #include <QTableWidget>
 
-#include "device/sim/machine_config.h"
+#include "widgets/axis_row.h"
+#include "widgets/jog_screen.h"
 #include "widgets/common/elided_label.h"
 #include "widgets/event_log.h"
 #include "widgets/message_banner.h"
@@ -35,15 +37,19 @@
 
 namespace {
 
-/// Text shown verbatim in every language: what the simulated devices report of
-/// themselves, serial-port paths, the deck's station ids, a recipe problem's field
-/// path and a model plant's spec. The shipped deck's slot names ("back") and the new
-/// recipe's plate name are worded (words::shippedName), so they are not listed.
+using InstrumentSessionPtr = app::InstrumentSession*;
+
+/// Text shown verbatim in every language: the simulator's firmware name, the protocol's
+/// name, serial-port paths, the deck's station ids, a recipe problem's field path and a
+/// model plant's spec. The shipped deck's slot names ("back"), the new recipe's plate
+/// name and the simulator's model are worded (words::shippedName, words::modelName), so
+/// they are not listed.
 QString withoutData(QString text)
 {
     static const QStringList data = [] {
-        QStringList d{QString::fromStdString(sim::analyzerConfig().model), QString::fromStdString(sim::stageConfig().model),
-                      QStringLiteral("benchpilot-sim 1.0"), QStringLiteral("BenchPilot protocol 1"),
+        // "samples": the plate of a recipe made while the window spoke English keeps its name
+        // in the recipe (steps refer to it), so the plate map shows it as it is.
+        QStringList d{QStringLiteral("benchpilot-sim 1.0"), QStringLiteral("BenchPilot protocol 1"), QStringLiteral("samples"),
                       QStringLiteral("wash"), QStringLiteral("waste"), QStringLiteral("steps:"),
                       QStringLiteral("steps：")};
         return d;
@@ -57,45 +63,14 @@ QString withoutData(QString text)
     text.remove(literal);
     static const QRegularExpression path(QStringLiteral("/dev/[A-Za-z0-9_./-]+"));
     static const QRegularExpression plant(QStringLiteral("(fopdt|lag):[A-Za-z0-9_.,=]+"));  // a model plant's spec, as typed
+    static const QRegularExpression labware(QStringLiteral("\\bsbs-\\d+\\b"));  // a built-in labware's id, as files name it
+    text.remove(labware);
     text.remove(path);
     text.remove(plant);
     return text;
 }
 
-/// Calls `check(where, text)` for every text `root` and its visible children show.
-template <typename Check>
-void forEachShownText(QWidget* root, Check check)
-{
-    QList<QWidget*> all = root->findChildren<QWidget*>();
-    all.prepend(root);
-    for (QWidget* w : all) {
-        if (!w->isVisibleTo(root->window()))
-            continue;
-        const QString name = QString::fromLatin1(w->metaObject()->className());
-        check(name + QStringLiteral(" tooltip"), w->toolTip());
-        if (auto* l = qobject_cast<QLabel*>(w))
-            check(name, l->text());
-        if (auto* b = qobject_cast<QAbstractButton*>(w))
-            check(name, b->text());
-        if (auto* g = qobject_cast<QGroupBox*>(w))
-            check(name, g->title());
-        if (auto* e = qobject_cast<QLineEdit*>(w))
-            check(name + QStringLiteral(" placeholder"), e->placeholderText());
-        if (auto* c = qobject_cast<QComboBox*>(w))
-            for (int i = 0; i < c->count(); ++i)
-                check(name, c->itemText(i));
-        if (auto* t = qobject_cast<QTabWidget*>(w))
-            for (int i = 0; i < t->count(); ++i)
-                check(name, t->tabText(i));
-        if (auto* t = qobject_cast<QTableWidget*>(w))
-            for (int c = 0; c < t->columnCount(); ++c)
-                if (t->horizontalHeaderItem(c))
-                    check(name + QStringLiteral(" header"), t->horizontalHeaderItem(c)->text());
-        if (auto* l = qobject_cast<QListWidget*>(w))
-            for (int i = 0; i < l->count(); ++i)
-                check(name, l->item(i)->text());
-    }
-}
+using guitest::forEachShownText;
 
 /// Visible texts of `root` and its visible children that still read as English.
 QStringList englishOn(QWidget* root)
@@ -314,6 +289,132 @@ TEST(I18nWalk, TheWalkFindsATextThatDidNotGoThroughTranslation)
     EXPECT_FALSE(englishOn(&root).isEmpty());
     l->setText(QCoreApplication::translate("ui::Test", "Plain English here"));
     EXPECT_TRUE(englishOn(&root).isEmpty()) << englishOn(&root).join(QLatin1Char('\n')).toStdString();
+}
+
+/// A little motion of each instrument, so every plot has lines, ticks and a legend.
+void exerciseBoth(app::MainWindow& w)
+{
+    for (InstrumentSessionPtr s : {w.analyzer(), w.stage()}) {
+        dev::Instrument* c = s->instrument();
+        c->startJog(0, 0.2 * c->identity().axes[0].maxSpeed);
+        guitest::pump(400);
+        c->stopJog(0);
+    }
+    guitest::waitFor([&] { return !w.analyzer()->instrument()->status().anyMoving() && !w.stage()->instrument()->status().anyMoving(); },
+                     3000);
+}
+
+/// What of `w`'s screen on show reads as English in Chinese, and tick labels that repeat.
+QStringList englishOnScreen(app::MainWindow& w, const QString& where)
+{
+    QStringList out;
+    forEachShownText(
+        &w,
+        [&](const QString& what, const QString& text) {
+            for (const QString& word : guitest::englishWords(withoutData(text)))
+                out << QStringLiteral("%1: %2: \"%3\" in \"%4\"").arg(where, what, word, text.left(100));
+        },
+        true);
+    for (auto* plot : w.findChildren<QCustomPlot*>()) {
+        if (!plot->isVisibleTo(&w))
+            continue;
+        for (QCPAxis* axis : plot->axisRects().isEmpty() ? QList<QCPAxis*>() : plot->axisRects().first()->axes())
+            if (axis->visible() && axis->tickLabels()) {
+                const QVector<QString> labels = axis->tickVectorLabels();
+                if (QSet<QString>(labels.begin(), labels.end()).size() != labels.size())
+                    out << QStringLiteral("%1: %2 tick labels repeat: %3").arg(where, QString::fromLatin1(plot->metaObject()->className()),
+                                                                                QStringList(labels.begin(), labels.end()).join(QStringLiteral(", ")));
+            }
+    }
+    return out;
+}
+
+// A walk of every screen in Chinese, for each simulated instrument, reading everything a
+// person sees: labels, buttons, items and headers, tooltips, plot axes, ticks and legends,
+// and the words custom widgets paint. Only names, units, keys and file names stay Latin.
+TEST(I18nWalk, InChineseEveryTextOfEveryScreenIsChineseForBothInstruments)
+{
+    words::Translators translators;
+    auto w = openInChinese(translators);
+    ASSERT_TRUE(w);
+    exerciseBoth(*w);
+    QStringList failures;
+    for (int instrument : {0, 1}) {
+        w->showInstrument(instrument);
+        for (const QString& screen : w->screenNames()) {
+            ASSERT_TRUE(w->showScreen(screen));
+            guitest::pump(150);  // plots draw on their frame timers
+            failures << englishOnScreen(*w, QStringLiteral("%1 (%2)").arg(screen, instrument ? QStringLiteral("stage") : QStringLiteral("analyzer")));
+        }
+    }
+    failures.removeDuplicates();
+    for (const QString& f : failures)
+        std::printf("[zh walk] %s\n", qPrintable(f));
+    translators.setLanguage(QStringLiteral("en"));
+    EXPECT_TRUE(failures.isEmpty()) << failures.size() << " English texts; the first:\n"
+                                    << failures.mid(0, 40).join(QLatin1Char('\n')).toStdString();
+}
+
+/// Every screen of `w` for each instrument in turn, with what reads as English on each.
+QStringList walkBothInstruments(app::MainWindow& w)
+{
+    QStringList failures;
+    for (int instrument : {0, 1}) {
+        w.showInstrument(instrument);
+        for (const QString& screen : w.screenNames()) {
+            if (!w.showScreen(screen))
+                continue;
+            guitest::pump(150);  // plots draw on their frame timers
+            failures << englishOnScreen(w, QStringLiteral("%1 (%2)").arg(screen, instrument ? QStringLiteral("stage") : QStringLiteral("analyzer")));
+        }
+    }
+    failures.removeDuplicates();
+    return failures;
+}
+
+// The session that found the English: Chinese chosen at run time, every screen already built
+// and shown in English, plots already drawn.
+TEST(I18nWalk, AfterASwitchToChineseEveryTextOfEveryScreenIsChinese)
+{
+    words::Translators translators;
+    ASSERT_TRUE(translators.setLanguage(QStringLiteral("en")));
+    app::MainWindowOptions options = guitest::testWindowOptions();
+    options.translators = &translators;
+    auto w = guitest::openReadyWindow(QSize(1366, 768), options);
+    ASSERT_TRUE(w);
+    exerciseBoth(*w);
+    for (int instrument : {0, 1}) {
+        w->showInstrument(instrument);
+        for (const QString& screen : w->screenNames()) {
+            ASSERT_TRUE(w->showScreen(screen));
+            guitest::pump(60);
+        }
+    }
+    chooseLanguage(*w, QStringLiteral("zh_CN"));
+    const QStringList failures = walkBothInstruments(*w);
+    for (const QString& f : failures)
+        std::printf("[zh switch walk] %s\n", qPrintable(f));
+    chooseLanguage(*w, QStringLiteral("en"));
+    EXPECT_TRUE(failures.isEmpty()) << failures.size() << " English texts; the first:\n"
+                                    << failures.mid(0, 40).join(QLatin1Char('\n')).toStdString();
+}
+
+TEST(I18nWalk, TheJogButtonsReadHomeAndGoAgainAfterChineseAndBack)
+{
+    words::Translators translators;
+    auto w = openInChinese(translators);
+    ASSERT_TRUE(w);
+    chooseLanguage(*w, QStringLiteral("en"));
+    for (int i = 0; i < 2; ++i) {
+        QStringList buttons;
+        for (auto* b : w->jogScreen(i)->findChildren<QPushButton*>())
+            buttons << b->text();
+        const int axes = static_cast<int>(w->jogScreen(i)->findChildren<ui::AxisRow*>().size());
+        EXPECT_EQ(buttons.count(QStringLiteral("Home")), axes) << buttons.join(QStringLiteral(", ")).toStdString();
+        EXPECT_EQ(buttons.count(QStringLiteral("Go")), axes) << buttons.join(QStringLiteral(", ")).toStdString();
+        EXPECT_FALSE(buttons.contains(QStringLiteral("home")) || buttons.contains(QStringLiteral("move")))
+            << buttons.join(QStringLiteral(", ")).toStdString();
+    }
 }
 
 } // namespace

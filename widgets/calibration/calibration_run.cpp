@@ -46,13 +46,13 @@ QString um(std::optional<double> mm) { return mm ? QLocale().toString(*mm * 1e3,
 
 const char* const kFigureKeys[] = {"A", "A_up", "A_down", "E", "E_up", "E_down", "M", "R", "R_up", "R_down", "B", "B_mean"};
 
-/// "A_up" as ISO writes it: A↑.
+/// "A_up" as ISO writes it: A↑; the mean reversal value B̄ (a symbol, the same in every language).
 QString figureLabel(const char* key)
 {
     return QString::fromLatin1(key)
         .replace(QStringLiteral("_up"), QStringLiteral("↑"))
         .replace(QStringLiteral("_down"), QStringLiteral("↓"))
-        .replace(QStringLiteral("_mean"), QStringLiteral(" mean"));
+        .replace(QStringLiteral("B_mean"), QStringLiteral("B\u0304"));
 }
 
 void setRows(QTableWidget* t, const std::vector<QStringList>& rows)

@@ -92,12 +92,10 @@ JoystickScreen::JoystickScreen(dev::Instrument* client, QWidget* parent)
     m_speed->setObjectName(QStringLiteral("joystickSpeed"));
     left->addWidget(m_readout);
     left->addWidget(m_speed);
-    auto* hint = new QLabel(tr("Drag the knob; let go to stop. Arrow keys push the stick to the rim, PgUp/PgDn move Z. "
-                               "Esc: E-stop."),
-                            this);
-    hint->setWordWrap(true);
-    hint->setStyleSheet(QStringLiteral("color:#555;"));
-    left->addWidget(hint);
+    m_hint = new QLabel(this);  // names PgUp/PgDn only where there is a Z: rebuild()
+    m_hint->setWordWrap(true);
+    m_hint->setStyleSheet(QStringLiteral("color:#555;"));
+    left->addWidget(m_hint);
     body->addLayout(left, 2);
 
     auto* right = new QVBoxLayout;
@@ -163,10 +161,13 @@ void JoystickScreen::rebuild()
 {
     stopAll();
     const auto& id = m_client->identity();
-    m_title->setText(id.axes.isEmpty() ? tr("No instrument") : tr("%1 — joystick").arg(id.model));
+    m_title->setText(id.axes.isEmpty() ? tr("No instrument") : tr("%1 — joystick").arg(words::modelName(id)));
     m_zAxis = id.axisIndex(QLatin1Char('Z'));
     m_z->setVisible(m_zAxis >= 0);
     m_zLabel->setVisible(m_zAxis >= 0);
+    m_hint->setText(m_zAxis >= 0 ? tr("Drag the knob; let go to stop. Arrow keys push the stick to the rim, PgUp/PgDn move Z. "
+                                      "Esc: E-stop.")
+                                 : tr("Drag the knob; let go to stop. Arrow keys push the stick to the rim. Esc: E-stop."));
     if (id.axes.size() >= 2 && std::min(id.axes[0].maxSpeed, id.axes[1].maxSpeed) > 0.01) {
         const double vmax = std::min(id.axes[0].maxSpeed, id.axes[1].maxSpeed);
         m_maxSpeed->setRange(0.01, vmax);
@@ -207,10 +208,15 @@ void JoystickScreen::refresh()
         rows += tr("<tr><td><b>%1</b></td><td align=right>%2</td><td align=right>%3</td><td>%4</td></tr>")
                     .arg(id.axes[i].letter)
                     .arg(readingText(st.axes[i].commanded, 3), readingText(st.axes[i].measured, 3))
-                    .arg(st.axes[i].homed ? QString() : tr("not homed"));
+                    .arg(!ready ? QString() : st.axes[i].homed ? QString() : tr("not homed"));
     }
     m_readout->setText(tr("<table cellspacing=6><tr><td></td><td>commanded</td><td>%1</td><td></td></tr>%2</table>")
                            .arg(id.kind == proto::DeviceKind::Stage ? tr("grating") : tr("encoder"), rows));
+    // Without a live link the positions are the last ones read: greyed and said so.
+    m_readout->setStyleSheet(ready ? QString() : QStringLiteral("color:#9e9e9e;"));
+    m_readout->setToolTip(ready ? QString() : tr("The last positions read before the link went down, not where the axes are now"));
+    if (!ready)
+        return;
     const auto& lim = m_client->softLimits();
     QRectF soft(id.axes[0].travelMin, id.axes[1].travelMin, id.axes[0].travelMax - id.axes[0].travelMin,
                 id.axes[1].travelMax - id.axes[1].travelMin);

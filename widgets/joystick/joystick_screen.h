@@ -80,6 +80,7 @@ private:
     /// leaving a field). An invalid field shows its reason and leaves these as they were.
     JoystickSettings m_inForce;
     QLabel* m_readout;
+    QLabel* m_hint = nullptr;
     QLabel* m_speed;
     std::map<int, double> m_wish;  ///< axis → velocity the stick asks for (mm/s)
     TravelView* m_travel;

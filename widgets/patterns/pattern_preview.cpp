@@ -236,6 +236,12 @@ void PatternPreview::setMachinePosition(Vec2 p)
     m_machine->addData(p.x, p.y);
 }
 
+void PatternPreview::clearMachinePosition()
+{
+    m_machine->data()->clear();
+    replot(QCustomPlot::rpQueuedReplot);
+}
+
 int PatternPreview::pathPoints() const { return m_curve->data()->size(); }
 int PatternPreview::walkPoints() const { return m_walk->data()->size(); }
 int PatternPreview::runPoints() const { return m_runPoints; }

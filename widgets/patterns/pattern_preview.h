@@ -32,6 +32,8 @@ public:
     void addRunPoint(motion::path::Vec2 commanded, motion::path::Vec2 measured);
     void clearRun();
     void setMachinePosition(motion::path::Vec2 p);
+    /// No live link: no marker, rather than the last position read shown as the machine's.
+    void clearMachinePosition();
 
     // For tests: what is drawn.
     int pathPoints() const;

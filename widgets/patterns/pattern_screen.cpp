@@ -192,6 +192,8 @@ PatternScreen::PatternScreen(QVector<PatternInstrument> instruments, tele::Telem
                 return;
             if (dev::PathClient* paths = cur().client->paths(); paths && s == dev::LinkState::Ready)
                 paths->refreshLimits([this](const auto&) { replan(); });
+            if (s != dev::LinkState::Ready)
+                m_preview->clearMachinePosition();
             updateButtons();
         });
         connect(in.client, &dev::Instrument::statusChanged, this, [this, i](const dev::InstrumentStatus& st) {

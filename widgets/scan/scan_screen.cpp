@@ -141,6 +141,10 @@ ScanScreen::ScanScreen(dev::Instrument* stage, QWidget* parent)
     connect(m_stage, &dev::Instrument::identified, this, &ScanScreen::onStageIdentity);
     connect(m_stage, &dev::Instrument::limitsChanged, this, &ScanScreen::onStageIdentity);
     connect(m_stage, &dev::Instrument::stateChanged, this, &ScanScreen::updateRunUi);
+    connect(m_stage, &dev::Instrument::stateChanged, this, [this](dev::LinkState s) {
+        if (s != dev::LinkState::Ready)
+            m_map->setStagePosition(std::nullopt);  // where the stage was is not where it is
+    });
 
     setOutputFolder(QDir(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation))
                         .filePath(QStringLiteral("BenchPilot scans/scan")));
@@ -308,7 +312,7 @@ void ScanScreen::onStageIdentity()
 
 void ScanScreen::onStatus(const dev::InstrumentStatus& s)
 {
-    if (s.axes.size() >= 2 && s.axes[0].homed && s.axes[1].homed)
+    if (m_stage->isReady() && s.axes.size() >= 2 && s.axes[0].homed && s.axes[1].homed)
         m_map->setStagePosition(Point2{s.axes[0].measured, s.axes[1].measured});
     else
         m_map->setStagePosition(std::nullopt);

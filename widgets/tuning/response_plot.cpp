@@ -20,8 +20,16 @@ ResponsePlot::ResponsePlot(Mode mode, QWidget* parent) : QWidget(parent), m_mode
     m_plot->setMinimumHeight(220);
     m_plot->legend->setVisible(true);
     m_plot->legend->setFont(QFont(font().family(), 8));
-    m_plot->axisRect()->insetLayout()->setInsetAlignment(0, mode == Mode::Overlay ? Qt::AlignRight | Qt::AlignBottom
-                                                                                   : Qt::AlignRight | Qt::AlignTop);
+    if (mode == Mode::Overlay) {
+        // Under the plot, as wide as the widget: the runs' legends (their gains) were wider than
+        // the axis rect beside the gains and the results, and cut at the left.
+        m_plot->axisRect()->insetLayout()->take(m_plot->legend);
+        m_plot->plotLayout()->addElement(1, 0, m_plot->legend);
+        m_plot->plotLayout()->setRowStretchFactor(1, 0.001);
+        m_plot->legend->setMargins(QMargins(4, 2, 4, 2));
+    } else {
+        m_plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignRight | Qt::AlignTop);
+    }
     m_plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     if (m_mode == Mode::Oscillation) {
         m_plot->yAxis2->setVisible(true);
@@ -60,6 +68,14 @@ void ResponsePlot::clear()
     m_plot->replot();
 }
 
+QString ResponsePlot::legendLines(const QString& legend)
+{
+    // "Ziegler–Nichols PID verification (Kp 2.5 · Ki 962 /s · Kd 1.6 ms)" on one line was wider
+    // than the plot and cut at its left: what the run was on one line, its gains on the next.
+    const int open = static_cast<int>(legend.indexOf(QStringLiteral(" (")));
+    return open > 0 && legend.endsWith(QLatin1Char(')')) ? legend.left(open) + QLatin1Char('\n') + legend.mid(open + 1) : legend;
+}
+
 void ResponsePlot::addRun(const motion::control::Record& r, const QString& legend, double showS)
 {
     if (m_mode == Mode::Oscillation)
@@ -83,7 +99,7 @@ void ResponsePlot::addRun(const motion::control::Record& r, const QString& legen
     QCPGraph* measured = m_plot->addGraph();
     measured->setData(t, y, true);
     measured->setPen(QPen(c, 1.6));
-    measured->setName(legend);
+    measured->setName(legendLines(legend));
     if (m_mode == Mode::Oscillation) {
         QCPGraph* out = m_plot->addGraph(m_plot->xAxis, m_plot->yAxis2);
         out->setData(t, u, true);

@@ -32,6 +32,8 @@ public:
     static QColor colour(int run);
     int runCount() const { return m_runs; }
     QCustomPlot* plot() const { return m_plot; }
+    /// A run's legend as drawn: its gains, "(…)", on a line of their own.
+    static QString legendLines(const QString& legend);
 
 private:
     double scale() const { return m_unit == QLatin1String("mm") ? 1000.0 : 1.0; }

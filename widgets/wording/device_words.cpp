@@ -127,6 +127,7 @@ const TermRow kTerms[] = {
     {"device.event.path_done", QT_TRANSLATE_NOOP3("words::DeviceWords", "path done", "device.event.path_done")},
     {"device.event.path_held", QT_TRANSLATE_NOOP3("words::DeviceWords", "path held", "device.event.path_held")},
     {"device.event.path_aborted", QT_TRANSLATE_NOOP3("words::DeviceWords", "path aborted", "device.event.path_aborted")},
+    {"device.event.comp_changed", QT_TRANSLATE_NOOP3("words::DeviceWords", "compensation changed", "device.event.comp_changed")},
     {"device.event.unknown", QT_TRANSLATE_NOOP3("words::DeviceWords", "unknown event", "device.event.unknown")},
     {"path.state.idle", QT_TRANSLATE_NOOP3("words::DeviceWords", "idle", "path.state.idle")},
     {"path.state.filling", QT_TRANSLATE_NOOP3("words::DeviceWords", "filling", "path.state.filling")},

@@ -15,6 +15,7 @@
 
 namespace dev {
 struct DeviceEvent;
+struct DeviceIdentity;
 }
 
 namespace words {
@@ -56,6 +57,10 @@ QString term(const std::string& id);
 /// only; any other name, and every id, as it is. Files keep their names in English.
 QString shippedName(const std::string& name);
 
+/// The instrument's model for people: BenchPilot's own simulator named in the current
+/// language from the kind it simulates; any other device's model as it gives it.
+QString modelName(const dev::DeviceIdentity& id);
+
 } // namespace words
 
 namespace jsonio {
@@ -77,6 +82,10 @@ QStringList fileProblems(const std::vector<jsonio::FileProblem>& problems);
 /// "hit the envelope", an end reason's name such as "settled"), for a person; a
 /// key this build does not know comes back as it is.
 QString tuningOutcome(const std::string& key);
+
+/// The instrument's model for people: BenchPilot's own simulator named in the current
+/// language from the kind it simulates; any other device's model as it gives it.
+QString modelName(const dev::DeviceIdentity& id);
 
 } // namespace words
 
@@ -103,5 +112,9 @@ QString englishTerm(const std::string& id);
 
 /// The unit's symbol for JSON, without the leading space: "mm", "µm", "" for none.
 QString unitKey(msg::Unit unit);
+
+/// The instrument's model for people: BenchPilot's own simulator named in the current
+/// language from the kind it simulates; any other device's model as it gives it.
+QString modelName(const dev::DeviceIdentity& id);
 
 } // namespace words
