@@ -244,8 +244,8 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     // The jog keys work on every screen: a screen about one instrument jogs that one, any
     // other the instrument of the Jog screen's tab. The Joystick screen's arrow keys are its
     // stick's. A key held while the screen changes stops its axis.
-    for (int i = 0; i < 2; ++i)
-        m_jog[i]->setKeysFromOtherScreens([this, i] {
+    for (int i = 0; i < kInstrumentCount; ++i)
+        m_instruments[i].jog->setKeysFromOtherScreens([this, i] {
             const QString screen = m_screenNames.value(m_nav->currentRow());
             if (screen == QLatin1String("jog") || screen == QLatin1String("joystick"))
                 return false;
@@ -253,8 +253,8 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
             return instrument == i;
         });
     connect(m_nav, &QListWidget::currentRowChanged, this, [this] {
-        for (auto* j : m_jog)
-            j->endHolds();
+        for (auto& slot : m_instruments)
+            slot.jog->endHolds();
     });
     m_nav->setCurrentRow(0);
 
