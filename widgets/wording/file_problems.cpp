@@ -24,9 +24,29 @@ public:
         return p.path.empty() ? QStringLiteral("%1: %2").arg(at, sentence)
                               : QStringLiteral("%1: %2: %3").arg(at, QString::fromStdString(p.path), sentence);
     }
+    static QString line(const msg::Problem& p)
+    {
+        QString out = p.isWarning() ? tr("warning: %1").arg(text(p.message)) : text(p.message);
+        if (!p.path.empty())
+            out = QStringLiteral("%1: %2").arg(QString::fromStdString(p.path), out);
+        QString at = QString::fromStdString(p.file);
+        if (p.line > 0)
+            at = at.isEmpty() ? QStringLiteral("%1:%2").arg(p.line).arg(p.column) : QStringLiteral("%1:%2:%3").arg(at).arg(p.line).arg(p.column);
+        return at.isEmpty() ? out : QStringLiteral("%1: %2").arg(at, out);
+    }
 };
 
 } // namespace
+
+QString problem(const msg::Problem& p) { return FileProblemWords::line(p); }
+
+QStringList problems(const msg::Problems& list)
+{
+    QStringList out;
+    for (const msg::Problem& p : list)
+        out << problem(p);
+    return out;
+}
 
 QString fileProblem(const QString& file, const jsonio::Problem& problem) { return FileProblemWords::line(file, problem); }
 

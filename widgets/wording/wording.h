@@ -7,6 +7,7 @@
 // accuracy_words.cpp, …) and is listed once in wording.cpp's table; see
 // docs/wording.md for how to add ids.
 #include "motion/message.h"
+#include "motion/problem.h"
 
 #include <QString>
 #include <QStringList>
@@ -73,6 +74,15 @@ QString fileProblem(const QString& file, const jsonio::Problem& problem);
 QStringList fileProblems(const jsonio::Problems& problems, const QString& file);
 QStringList fileProblems(const std::vector<jsonio::FileProblem>& problems);
 
+/// A problem for a person, the one way the CLI, the API and the screens say it:
+/// "FILE:LINE:COLUMN: PATH: sentence", each part only where known ("FILE: sentence" for
+/// a file as a whole, "PATH: sentence" for a form), "warning: " before a warning's
+/// sentence. A caller that knows the field by another name (a CLI option) puts that
+/// name in `path` first.
+QString problem(const msg::Problem& p);
+/// problem() of each, in the order given, one line each.
+QStringList problems(const msg::Problems& list);
+
 /// How a tuning result stores a trial's or a verification's outcome ("decays",
 /// "hit the envelope", an end reason's name such as "settled"), for a person; a
 /// key this build does not know comes back as it is.
@@ -94,6 +104,9 @@ QJsonObject toJson(const msg::Message& m);
 /// A problem of a file: toJson of its message with "file" and, where known,
 /// "line", "column" and "field" beside it.
 QJsonObject toJson(const jsonio::FileProblem& p);
+/// A problem: toJson of its message with "file", "line", "column" and "field" beside it
+/// where known, and "warning": true for a warning.
+QJsonObject toJson(const msg::Problem& p);
 
 /// The sentence in English (the source text, C-locale numbers) even while a
 /// translation is shown.

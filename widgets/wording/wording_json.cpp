@@ -64,4 +64,20 @@ QJsonObject toJson(const jsonio::FileProblem& p)
     return o;
 }
 
+QJsonObject toJson(const msg::Problem& p)
+{
+    QJsonObject o = toJson(p.message);
+    if (!p.file.empty())
+        o.insert(QStringLiteral("file"), QString::fromStdString(p.file));
+    if (p.line > 0) {
+        o.insert(QStringLiteral("line"), p.line);
+        o.insert(QStringLiteral("column"), p.column);
+    }
+    if (!p.path.empty())
+        o.insert(QStringLiteral("field"), QString::fromStdString(p.path));
+    if (p.isWarning())
+        o.insert(QStringLiteral("warning"), true);
+    return o;
+}
+
 } // namespace words
