@@ -126,7 +126,7 @@ bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& fold
     }
     const auto problems = motion::scan::validate(plan);
     if (!problems.empty()) {
-        *error = msg::make("scan.run.plan_problem", {msg::verbatim("field", problems.front().field), msg::nested("cause", problems.front().message)});
+        *error = msg::make("scan.run.plan_problem", {msg::verbatim("field", problems.front().path), msg::nested("cause", problems.front().message)});
         return false;
     }
     if (!QDir().mkpath(folder)) {
@@ -247,7 +247,7 @@ std::vector<msg::Message> ScanRunner::preflight() const
     }
     // The whole plan against the device's travel and soft limits, before anything moves.
     for (const auto& p : motion::scan::validate(m_plan, stageModelOf(id, m_client->softLimits())))
-        out.push_back(msg::make("scan.run.plan_problem", {msg::verbatim("field", p.field), msg::nested("cause", p.message)}));
+        out.push_back(msg::make("scan.run.plan_problem", {msg::verbatim("field", p.path), msg::nested("cause", p.message)}));
     return out;
 }
 

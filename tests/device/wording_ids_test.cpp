@@ -118,7 +118,7 @@ TEST(WordingIds, EveryProblemOfABadRecipeAndScanPlanIsWorded)
     bad.naming.filePattern = "{x}";
     for (const auto& problem : motion::scan::validate(bad)) {
         const QString t = words::englishText(problem.message);
-        EXPECT_NE(t, QString::fromStdString(msg::debugString(problem.message))) << problem.field;
+        EXPECT_NE(t, QString::fromStdString(msg::debugString(problem.message))) << problem.path;
     }
 }
 
