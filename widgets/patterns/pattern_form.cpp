@@ -318,10 +318,7 @@ void PatternForm::setPattern(const Pattern& p)
 
 void PatternForm::showProblems()
 {
-    QStringList lines;
-    for (const auto& q : motion::plans::validate(pattern()))
-        lines << QStringLiteral("%1: %2").arg(QString::fromStdString(q.field), words::text(q.message));
-    m_problems->setText(lines.join(QLatin1Char('\n')));
+    m_problems->setText(words::problems(motion::plans::validate(pattern())).join(QLatin1Char('\n')));
 }
 
 } // namespace ui
