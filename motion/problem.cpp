@@ -2,20 +2,9 @@
 
 namespace msg {
 
-Problem error(std::string path, Message message)
-{
-    Problem p;
-    p.path = std::move(path);
-    p.message = std::move(message);
-    return p;
-}
+Problem error(std::string path, Message message) { return Problem(std::move(path), std::move(message)); }
 
-Problem warning(std::string path, Message message)
-{
-    Problem p = error(std::move(path), std::move(message));
-    p.severity = Severity::Warning;
-    return p;
-}
+Problem warning(std::string path, Message message) { return Problem(std::move(path), std::move(message), Severity::Warning); }
 
 bool hasErrors(const Problems& problems)
 {

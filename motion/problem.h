@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace msg {
@@ -21,6 +22,12 @@ enum class Severity {
 };
 
 struct Problem {
+    Problem() = default;
+    Problem(std::string atPath, Message what, Severity how = Severity::Error)
+        : path(std::move(atPath)), message(std::move(what)), severity(how)
+    {
+    }
+
     std::string path;                   ///< the field at fault ("steps[3].volume_ul", "camera.overlap"); "" for the whole input
     Message message;                    ///< what is wrong, without the place
     Severity severity = Severity::Error;

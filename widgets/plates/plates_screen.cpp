@@ -317,15 +317,15 @@ void PlatesScreen::revalidate()
         steps << -1;
     for (const auto& p : m_plan.problems) {
         const QString line = QStringLiteral("%1: %2").arg(QString::fromStdString(p.path), words::text(p.message));
-        (p.warning ? warnings : errors) << line;
+        (p.isWarning() ? warnings : errors) << line;
         int step = -1;
         if (p.path.rfind("steps[", 0) == 0)
             step = QString::fromStdString(p.path.substr(6)).section(QLatin1Char(']'), 0, 0).toInt();
-        if (!p.warning)
+        if (p.isError())
             steps << step;
     }
     for (const auto& p : m_plan.problems)
-        if (p.warning)
+        if (p.isWarning())
             steps << -1;
     m_editor->showProblems(errors, warnings, steps);
     m_planOk = errors.isEmpty() && m_plan.ok() && !m_plan.ops.empty();
