@@ -27,6 +27,11 @@ struct Problem {
         : path(std::move(atPath)), message(std::move(what)), severity(how)
     {
     }
+    /// A problem a file reader found at a place in the file.
+    Problem(std::string inFile, int atLine, int atColumn, std::string atPath, Message what, Severity how = Severity::Error)
+        : path(std::move(atPath)), message(std::move(what)), severity(how), file(std::move(inFile)), line(atLine), column(atColumn)
+    {
+    }
 
     std::string path;                   ///< the field at fault ("steps[3].volume_ul", "camera.overlap"); "" for the whole input
     Message message;                    ///< what is wrong, without the place

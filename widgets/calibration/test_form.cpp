@@ -377,7 +377,7 @@ void AccuracyTestForm::fill(const accuracyfiles::AccuracyTest& test)
     m_pages->setCurrentIndex(m_kind->currentIndex());
 }
 
-motion::metrology::Problems AccuracyTestForm::problems() const
+msg::Problems AccuracyTestForm::problems() const
 {
     return std::visit([](const auto& t) { return motion::metrology::validate(t); }, test());
 }

@@ -34,7 +34,7 @@ public:
     void setTest(const accuracyfiles::AccuracyTest& test);
     /// Axis letters the instrument has (the axis combo offers these).
     void setAxes(const QStringList& letters);
-    motion::metrology::Problems problems() const;
+    msg::Problems problems() const;
     /// Read-only while a run uses the definition.
     void setEditable(bool editable);
 
