@@ -151,9 +151,9 @@ bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& fold
             return false;
         const auto log = scanfile::parseRunLog(text);
         if (!log.log) {
-            const jsonio::Problem& first = log.problems.list().front();
+            const msg::Problem& first = log.problems.list().front();
             *error = msg::make("scan.run.log_damaged", {msg::verbatim("log", scanfile::kRunLogFile),
-                                                        msg::integer("line", first.position.line, msg::Unit::None),
+                                                        msg::integer("line", first.line, msg::Unit::None),
                                                         msg::nested("cause", first.message)});
             return false;
         }

@@ -269,7 +269,7 @@ bool PlatesScreen::openRecipe(const QString& path)
         return false;
     const platefiles::LoadedRecipe l = platefiles::loadRecipe(path, m_deck, m_calibrations);
     if (!l.readable) {
-        emit problem(tr("%1 cannot be opened:\n%2").arg(QFileInfo(path).fileName(), words::fileProblems(l.problems).join(QLatin1Char('\n'))));
+        emit problem(tr("%1 cannot be opened:\n%2").arg(QFileInfo(path).fileName(), words::problems(l.problems).join(QLatin1Char('\n'))));
         return false;
     }
     m_editor->setRecipe(l.recipe, path);
@@ -294,14 +294,14 @@ bool PlatesScreen::saveRecipe(const QString& path)
 
 plates::PlanContext PlatesScreen::context(QStringList* messages) const
 {
-    jsonio::FileProblems problems;
+    msg::Problems problems;
     plates::PlanContext c;
     // Times follow the analyzer's own planner limits once it has reported them.
     c.deck = jobs::deckWithDeviceMotion(m_deck, m_client->identity());
     c.calibration = platefiles::calibrationTransforms(m_calibrations);
     platefiles::resolveLabware(m_editor->recipe(), baseDir(), c, &problems);
     if (messages)
-        *messages << words::fileProblems(problems);
+        *messages << words::problems(problems);
     return c;
 }
 

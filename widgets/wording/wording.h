@@ -60,19 +60,13 @@ QString shippedName(const std::string& name);
 } // namespace words
 
 namespace jsonio {
-struct Problem;
 class Problems;
-struct FileProblem;
 } // namespace jsonio
 
 namespace words {
 
-/// A problem found in a file, for a person: "FILE:LINE:COLUMN: PATH: sentence"
-/// ("FILE: sentence" for the file as a whole; "warning: " before a warning's sentence).
-QString fileProblem(const QString& file, const jsonio::Problem& problem);
-/// Every problem of `problems`, in the order of the file, one line each.
+/// Every problem a reader found in `file`, in the order of the file, worded by problem().
 QStringList fileProblems(const jsonio::Problems& problems, const QString& file);
-QStringList fileProblems(const std::vector<jsonio::FileProblem>& problems);
 
 /// A problem for a person, the one way the CLI, the API and the screens say it:
 /// "FILE:LINE:COLUMN: PATH: sentence", each part only where known ("FILE: sentence" for
@@ -101,9 +95,6 @@ namespace words {
 /// a Term argument is its id. "message" is English whatever language is shown
 /// (englishText()), so scripts can log it and key on "id".
 QJsonObject toJson(const msg::Message& m);
-/// A problem of a file: toJson of its message with "file" and, where known,
-/// "line", "column" and "field" beside it.
-QJsonObject toJson(const jsonio::FileProblem& p);
 /// A problem: toJson of its message with "file", "line", "column" and "field" beside it
 /// where known, and "warning": true for a warning.
 QJsonObject toJson(const msg::Problem& p);

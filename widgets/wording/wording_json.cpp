@@ -51,19 +51,6 @@ QJsonObject toJson(const msg::Message& m)
     return o;
 }
 
-QJsonObject toJson(const jsonio::FileProblem& p)
-{
-    QJsonObject o = toJson(p.problem.message);
-    o.insert(QStringLiteral("file"), QString::fromStdString(p.file));
-    if (p.problem.position.line > 0) {
-        o.insert(QStringLiteral("line"), p.problem.position.line);
-        o.insert(QStringLiteral("column"), p.problem.position.column);
-    }
-    if (!p.problem.path.empty())
-        o.insert(QStringLiteral("field"), QString::fromStdString(p.problem.path));
-    return o;
-}
-
 QJsonObject toJson(const msg::Problem& p)
 {
     QJsonObject o = toJson(p.message);

@@ -11,8 +11,8 @@ msg::Problem fromParseError(const jsonio::ParseError& e, std::string_view file)
 
 void addJsonProblems(const jsonio::Problems& found, std::string_view file, msg::Problems& out)
 {
-    for (const jsonio::Problem& p : found.list())
-        out.push_back({std::string(file), p.position.line, p.position.column, p.path, msg::make("file.json_field", {msg::nested("detail", p.message)})});
+    for (const msg::Problem& p : found.list())
+        out.push_back({std::string(file), p.line, p.column, p.path, msg::make("file.json_field", {msg::nested("detail", p.message)})});
 }
 
 void addModelProblems(const msg::Problems& found, const jsonio::Value& root, std::string_view file, msg::Problems& out)

@@ -20,7 +20,7 @@ constexpr double kLabwareBig = 1e6;
 void addModelProblems(const Value& root, const msg::Problems& found, jsonio::Problems& out)
 {
     for (const msg::Problem& p : found)
-        out.add(positionOfPath(root, p.path), p.path, p.message, p.isWarning());
+        out.add(positionOfPath(root, p.path), p.path, p.message, p.severity);
 }
 
 std::optional<WellShape> readShape(ObjectReader& o, const char* key)

@@ -196,7 +196,7 @@ bool AccuracyRunner::openLog(bool restart, Problems* problems)
             if (!read.log) {
                 const auto& p = read.problems.list().front();
                 add(problems, msg::make("accuracy.run.log_unreadable", {msg::verbatim("file", path.toStdString()),
-                                                                        msg::integer("line", p.position.line),
+                                                                        msg::integer("line", p.line),
                                                                         msg::nested("detail", p.message)}));
             } else {
                 add(problems, msg::make("accuracy.run.other_log", {msg::verbatim("file", path.toStdString()),
