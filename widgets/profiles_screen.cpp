@@ -289,7 +289,7 @@ void ProfilesScreen::replan()
     const auto planned = motion::planProfile(m_distance->value(), r);
     if (!planned) {
         m_moveTimeS = -1;
-        showError(tr("Cannot plan this move: %1").arg(words::text(planned.error)));
+        showError(tr("Cannot plan this move: %1").arg(words::text(planned.error())));
         m_moveTime->setText(tr("Move time: —"));
         m_summary->clear();
         for (auto* plot : m_plots) {
