@@ -56,6 +56,16 @@ TEST(Wording, ASentenceShownOnItsOwnStartsWithACapital)
     EXPECT_EQ(words::sentence(QString()), QString());
 }
 
+// "Sampling-96.recipe.json cannot be opened" named a file that does not exist: a sentence
+// that starts with a file's name or a path keeps it as it is.
+TEST(Wording, ASentenceThatStartsWithAFileNameKeepsItsCase)
+{
+    EXPECT_EQ(words::sentence(QStringLiteral("sampling-96.recipe.json was not opened")), QStringLiteral("sampling-96.recipe.json was not opened"));
+    EXPECT_EQ(words::sentence(QStringLiteral("runs/plate-1/run.log: line 4 is damaged")), QStringLiteral("runs/plate-1/run.log: line 4 is damaged"));
+    EXPECT_EQ(words::sentence(QStringLiteral("calibration.json: 2 problems")), QStringLiteral("calibration.json: 2 problems"));
+    EXPECT_EQ(words::sentence(QStringLiteral("done.")), QStringLiteral("Done.")) << "a full stop at the end is no extension";
+}
+
 // One wording of a problem for the CLI, the API's text and the screens: the place as far
 // as it is known, then the sentence.
 TEST(Wording, AProblemSaysItsPlaceThenItsSentence)
