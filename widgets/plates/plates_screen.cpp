@@ -278,6 +278,7 @@ bool PlatesScreen::openRecipe(const QString& path)
         return false;
     }
     m_filePlaces = l.problems;
+    m_fileRecipe = platefiles::writeRecipe(l.recipe);
     m_editor->setRecipe(l.recipe, path);
     refreshPlateChoices();
     emit note(tr("opened %1").arg(path));
@@ -318,8 +319,11 @@ void PlatesScreen::revalidate()
     m_context = context(&problems);
     const plates::PlanContext& c = m_context;
     m_plan = plates::planRecipe(m_editor->recipe(), c);
+    // The file's lines and columns hold while the recipe on screen is still the file (an
+    // edit reaches here before the undo stack counts it, so the recipe itself is compared).
+    const bool asRead = !m_filePlaces.empty() && platefiles::writeRecipe(m_editor->recipe()) == m_fileRecipe;
     for (msg::Problem p : m_plan.problems) {
-        if (!m_editor->isModified())
+        if (asRead)
             for (const msg::Problem& placed : m_filePlaces)
                 if (placed.path == p.path && placed.message == p.message) {
                     p.file = placed.file;

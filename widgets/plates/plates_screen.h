@@ -101,6 +101,7 @@ private:
     /// The opened file's problems with their lines and columns, lent to the plan's own
     /// while the recipe on screen is still exactly that file.
     msg::Problems m_filePlaces;
+    std::string m_fileRecipe;  ///< that file's recipe as writeRecipe writes it
     PlateMap* m_map;
     QComboBox* m_plate;
     QLabel* m_hover;
