@@ -54,9 +54,9 @@ ProfileSample AnyProfile::at(double tS) const
     return std::visit([tS](const auto& p) { return p.at(tS); }, m_profile);
 }
 
-PlanResult<AnyProfile> planProfile(double distanceMm, const ProfileRequest& r)
+msg::Checked<AnyProfile> planProfile(double distanceMm, const ProfileRequest& r)
 {
-    using Result = PlanResult<AnyProfile>;
+    using Result = msg::Checked<AnyProfile>;
     const char* kind = profileKindName(r.kind);
     if (!std::isfinite(distanceMm)) {
         return Result::fail(msg::make("profile.not_finite", {msg::verbatim("field", "distanceMm"), msg::real("value", distanceMm)}));
@@ -102,9 +102,9 @@ PlanResult<AnyProfile> planProfile(double distanceMm, const ProfileRequest& r)
     return Result::fail(msg::make("profile.unknown_kind"));
 }
 
-PlanResult<LinearMove<AnyProfile>> planSynchronized(const double* distancesMm, int axisCount, const ProfileRequest& r)
+msg::Checked<LinearMove<AnyProfile>> planSynchronized(const double* distancesMm, int axisCount, const ProfileRequest& r)
 {
-    using Result = PlanResult<LinearMove<AnyProfile>>;
+    using Result = msg::Checked<LinearMove<AnyProfile>>;
     if (axisCount < 1 || axisCount > kMaxAxes) {
         return Result::fail(msg::make("profile.axis_count", {msg::integer("count", axisCount), msg::integer("max", kMaxAxes)}));
     }
@@ -128,7 +128,7 @@ PlanResult<LinearMove<AnyProfile>> planSynchronized(const double* distancesMm, i
     path.plateauMm *= k;
     auto profile = planProfile(length, path);
     if (!profile)
-        return Result::fail(profile.error);
+        return Result::fail(profile.error());
     return Result::ok(LinearMove<AnyProfile>(*profile, distancesMm, axisCount));
 }
 

@@ -80,9 +80,9 @@ const char* blockShapeName(BlockShape shape)
     return "?";
 }
 
-PlanResult<JointPlan> planJointBlocks(const std::vector<Block>& blocks, double maxSpeedStepsS, int joint)
+msg::Checked<JointPlan> planJointBlocks(const std::vector<Block>& blocks, double maxSpeedStepsS, int joint)
 {
-    using Result = PlanResult<JointPlan>;
+    using Result = msg::Checked<JointPlan>;
     JointPlan out;
     out.blocks.reserve(blocks.size() + 4);
     double v1 = 0.0;

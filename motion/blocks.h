@@ -22,7 +22,7 @@
 // Its error per step (given an exact p_{i-1}) is (1+n)^(-1/2) - (1 - n/2) ∈ [0, 3n²/8·(1+n)^(-5/2)]:
 // the recurrence always gives a slightly SHORTER delay. See taylorStepErrorBound().
 
-#include "motion/plan_result.h"
+#include "motion/checked.h"
 
 #include <cstdint>
 #include <vector>
@@ -62,7 +62,7 @@ struct JointPlan {
 
 /// Validates and plans one joint's block stream. Fails with "joint J block K: …" naming the field
 /// and value (t0 > 0, |V2| ≤ vMax, S reachable; 0.5-microstep tolerance on reachability).
-PlanResult<JointPlan> planJointBlocks(const std::vector<Block>& blocks, double maxSpeedStepsS, int joint = 0);
+msg::Checked<JointPlan> planJointBlocks(const std::vector<Block>& blocks, double maxSpeedStepsS, int joint = 0);
 
 /// Exact delays (timer ticks at timerHz) of every microstep of the block: F / √(v² + 2a).
 std::vector<double> exactDelaysTicks(const BlockPlan& plan, double timerHz);

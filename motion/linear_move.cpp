@@ -32,10 +32,10 @@ bool lineLength(const double* distancesMm, int axisCount, double& lengthMm, msg:
 
 }  // namespace
 
-PlanResult<LinearMove<JerkLimitedProfile>> planLinearJerkLimited(const double* distancesMm,
+msg::Checked<LinearMove<JerkLimitedProfile>> planLinearJerkLimited(const double* distancesMm,
                                                                  const JerkLimits* limitsPerAxis, int axisCount)
 {
-    using Result = PlanResult<LinearMove<JerkLimitedProfile>>;
+    using Result = msg::Checked<LinearMove<JerkLimitedProfile>>;
     double lengthMm = 0.0;
     msg::Message error;
     if (!lineLength(distancesMm, axisCount, lengthMm, error))
@@ -67,10 +67,10 @@ PlanResult<LinearMove<JerkLimitedProfile>> planLinearJerkLimited(const double* d
     return Result::ok(LinearMove<JerkLimitedProfile>(*profile, distancesMm, axisCount));
 }
 
-PlanResult<LinearMove<SeedSCurve>> planLinearSeedSCurve(const double* distancesMm, const double* vMaxMmSPerAxis,
+msg::Checked<LinearMove<SeedSCurve>> planLinearSeedSCurve(const double* distancesMm, const double* vMaxMmSPerAxis,
                                                         double accelTimeS, int axisCount)
 {
-    using Result = PlanResult<LinearMove<SeedSCurve>>;
+    using Result = msg::Checked<LinearMove<SeedSCurve>>;
     double lengthMm = 0.0;
     msg::Message error;
     if (!lineLength(distancesMm, axisCount, lengthMm, error))

@@ -9,7 +9,7 @@
 // the time-optimal straight-line move: no axis could go faster without leaving the line.
 
 #include "motion/jerk_limited.h"
-#include "motion/plan_result.h"
+#include "motion/checked.h"
 #include "motion/profile.h"
 #include "motion/seed_scurve.h"
 
@@ -59,12 +59,12 @@ private:
 };
 
 /// Straight-line, time-optimal jerk-limited move of axisCount (1..kMaxAxes) axes.
-PlanResult<LinearMove<JerkLimitedProfile>> planLinearJerkLimited(const double* distancesMm,
+msg::Checked<LinearMove<JerkLimitedProfile>> planLinearJerkLimited(const double* distancesMm,
                                                                  const JerkLimits* limitsPerAxis, int axisCount);
 
 /// Seed 000's way: every axis uses the same acceleration time; the slowest axis (relative to its
 /// share of the line) sets the path speed.
-PlanResult<LinearMove<SeedSCurve>> planLinearSeedSCurve(const double* distancesMm, const double* vMaxMmSPerAxis,
+msg::Checked<LinearMove<SeedSCurve>> planLinearSeedSCurve(const double* distancesMm, const double* vMaxMmSPerAxis,
                                                         double accelTimeS, int axisCount);
 
 /// Contour (cross-track) error of an XY point that should lie on the line at angle θ to the x axis:

@@ -16,24 +16,17 @@ double nm6(double v) { return std::round(v * 1e6) / 1e6; }
 
 QJsonObject messageJson(const msg::Message& m) { return words::toJson(m); }
 
-QJsonObject problemJson(const accuracyfiles::FileProblem& p)
+QJsonObject problemJson(const msg::Problem& p)
 {
-    QJsonObject o = words::toJson(p.message);
-    o.insert(QStringLiteral("file"), QString::fromStdString(p.file));
-    o.insert(QStringLiteral("line"), p.line);
-    o.insert(QStringLiteral("column"), p.column);
-    o.insert(QStringLiteral("field"), QString::fromStdString(p.path));
-    if (p.warning)
-        o.insert(QStringLiteral("warning"), true);
-    return o;
-}
-
-QJsonObject problemJson(const motion::metrology::Problem& p)
-{
-    QJsonObject o = words::toJson(p.message);
-    o.insert(QStringLiteral("field"), QString::fromStdString(p.path));
-    if (p.warning)
-        o.insert(QStringLiteral("warning"), true);
+    QJsonObject o = words::toJson(p);
+    // These commands' JSON has always carried the field, and a file's line and column
+    // (0: the file as a whole), even when empty; scripts may read them unguarded.
+    if (!o.contains(QStringLiteral("field")))
+        o.insert(QStringLiteral("field"), QString());
+    if (!p.file.empty() && !o.contains(QStringLiteral("line"))) {
+        o.insert(QStringLiteral("line"), p.line);
+        o.insert(QStringLiteral("column"), p.column);
+    }
     return o;
 }
 
@@ -42,35 +35,9 @@ void printJson(Invocation& inv, const QJsonObject& o)
     inv.printJson(o);  // the API's result is this object, not its text
 }
 
-bool reportProblems(Invocation& inv, const accuracyfiles::FileProblems& problems)
+bool reportProblems(Invocation& inv, const msg::Problems& problems, const std::vector<std::pair<QString, QString>>& optionNames)
 {
-    const bool errors = accuracyfiles::hasErrors(problems);
-    if (inv.json()) {
-        if (!errors)
-            return false;  // warnings travel with the result
-        QJsonArray list;
-        for (const auto& p : problems)
-            list.append(problemJson(p));
-        printJson(inv, QJsonObject{{QStringLiteral("ok"), false}, {QStringLiteral("problems"), list}});
-        return true;
-    }
-    for (const auto& p : problems) {
-        QString where = QString::fromStdString(p.file);
-        if (p.line > 0)
-            where += QStringLiteral(":%1:%2").arg(p.line).arg(p.column);
-        if (!p.path.empty())
-            where += QStringLiteral(": ") + QString::fromStdString(p.path);
-        (p.warning ? inv.out() : inv.err()) << where << ": " << (p.warning ? tr("warning: ") : QString()) << words::text(p.message) << "\n";
-    }
-    inv.out().flush();
-    inv.err().flush();
-    return errors;
-}
-
-bool reportProblems(Invocation& inv, const motion::metrology::Problems& problems,
-                    const std::vector<std::pair<QString, QString>>& optionNames)
-{
-    const bool errors = motion::metrology::hasErrors(problems);
+    const bool errors = msg::hasErrors(problems);
     auto optionOf = [&](const std::string& path) {
         const QString p = QString::fromStdString(path);
         for (const auto& [field, option] : optionNames)
@@ -80,7 +47,7 @@ bool reportProblems(Invocation& inv, const motion::metrology::Problems& problems
     };
     if (inv.json()) {
         if (!errors)
-            return false;
+            return false;  // warnings travel with the result
         QJsonArray list;
         for (const auto& p : problems) {
             QJsonObject o = problemJson(p);
@@ -91,17 +58,19 @@ bool reportProblems(Invocation& inv, const motion::metrology::Problems& problems
         printJson(inv, QJsonObject{{QStringLiteral("ok"), false}, {QStringLiteral("problems"), list}});
         return true;
     }
-    for (const auto& p : problems) {
-        const QString where = optionOf(p.path);
-        QString line = words::text(p.message);
-        if (!where.isEmpty())
-            line = where + QStringLiteral(": ") + line;
-        if (p.warning)
-            inv.out() << tr("warning: ") << line << "\n";
+    for (msg::Problem p : problems) {
+        if (!optionNames.empty())
+            p.path = optionOf(p.path).toStdString();
+        const QString line = words::problem(p);
+        if (p.isWarning())
+            inv.out() << line << "\n";
+        else if (!p.file.empty())
+            inv.err() << line << "\n";  // FILE:LINE:COLUMN leads, as compilers print it
         else
             inv.report(line);
     }
     inv.out().flush();
+    inv.err().flush();
     return errors;
 }
 

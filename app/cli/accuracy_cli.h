@@ -12,16 +12,14 @@
 
 namespace cli {
 
-QJsonObject problemJson(const accuracyfiles::FileProblem& p);
-QJsonObject problemJson(const motion::metrology::Problem& p);
+QJsonObject problemJson(const msg::Problem& p);
 QJsonObject messageJson(const msg::Message& m);
 
-/// Prints every problem (text: errors on stderr, warnings on stdout; JSON: one object
-/// {"ok": false|true, "problems": [...]} when any is an error). True when any is an error.
-bool reportProblems(Invocation& inv, const accuracyfiles::FileProblems& problems);
-/// The same for a data model's problems; `optionNames` maps a field path's start to the
-/// command-line option that set it ("cycles" → "--cycles").
-bool reportProblems(Invocation& inv, const motion::metrology::Problems& problems,
+/// Prints every problem as words::problem words it (text: errors on stderr, warnings on
+/// stdout; JSON: one object {"ok": false, "problems": [...]} when any is an error). True
+/// when any is an error. `optionNames` maps a field path's start to the command-line
+/// option that set it ("cycles" → "--cycles"), for a data model's problems.
+bool reportProblems(Invocation& inv, const msg::Problems& problems,
                     const std::vector<std::pair<QString, QString>>& optionNames = {});
 /// One message as the command's failure: text on stderr or {"ok": false, "error": {...}}.
 int reportFailure(Invocation& inv, const msg::Message& m, int exitCode);

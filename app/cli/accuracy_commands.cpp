@@ -63,7 +63,7 @@ int analyze(Invocation& inv)
     std::string text, name = QFileInfo(path).fileName().toStdString();
     msg::Message error;
     if (!files::readText(path, &text, &error)) {
-        reportProblems(inv, accuracyfiles::FileProblems{{name, 0, 0, "", error, false}});
+        reportProblems(inv, msg::Problems{msg::Problem(name, 0, 0, "", error)});
         return Usage;
     }
     const auto analyzed = accuracyfiles::analyzeReadingsCsv(text, name);
@@ -224,7 +224,7 @@ int circle(Invocation& inv)
             return reportFailure(inv, msg::make("accuracy.run.not_homed", {msg::verbatim("axis", "XY")}), Refused);
     }
     jobs::CircleRunner runner(instrument);
-    motion::metrology::Problems problems;
+    msg::Problems problems;
     if (!runner.prepare(t, &problems)) {
         reportProblems(inv, problems);
         return Usage;

@@ -180,7 +180,7 @@ int runAccuracy(Invocation& inv)
         return reportFailure(inv, openProblem.empty() ? msg::make("gauge.no_answer") : openProblem, LinkTrouble);
 
     jobs::AccuracyRunner runner(instrument);
-    motion::metrology::Problems problems;
+    msg::Problems problems;
     if (!runner.prepare(test, source, folder, inv.isSet(QStringLiteral("restart")), &problems)) {
         reportProblems(inv, problems, kOptionOf);
         return Usage;

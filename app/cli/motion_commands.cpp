@@ -84,7 +84,7 @@ int runProfile(Invocation& o)
     if (distances.size() == 1) {
         const auto profile = motion::planProfile(distances[0], request);
         if (!profile)
-            return o.usage(optionForField(profile.error) + words::text(profile.error));
+            return o.usage(optionForField(profile.error()) + words::text(profile.error()));
         const auto samples = motion::sampleProfile(*profile, dt);
         if (samples.empty())
             return o.usage(QStringLiteral("--dt '%1' gives too many samples for a %2 s move").arg(o.value(QStringLiteral("dt"))).arg(profile->duration()));
@@ -94,7 +94,7 @@ int runProfile(Invocation& o)
     } else {
         const auto move = motion::planSynchronized(distances.constData(), int(distances.size()), request);
         if (!move)
-            return o.usage(optionForField(move.error) + words::text(move.error));
+            return o.usage(optionForField(move.error()) + words::text(move.error()));
         const double T = move->duration();
         if (T / dt > 1e6)
             return o.usage(QStringLiteral("--dt '%1' gives too many samples for a %2 s move").arg(o.value(QStringLiteral("dt"))).arg(T));
@@ -270,7 +270,7 @@ int runStepTable(Invocation& o)
             return o.usage(QStringLiteral("--step '%1' must be > 0 and give at most %2 steps").arg(o.value(QStringLiteral("step"))).arg(kMaxPoints));
         const auto profile = motion::planProfile(distance, request);
         if (!profile)
-            return o.usage(optionForField(profile.error) + words::text(profile.error));
+            return o.usage(optionForField(profile.error()) + words::text(profile.error()));
         instants = motion::stepInstantsS(*profile, stepMm);
         extra.insert("kind", QString::fromLatin1(motion::profileKindName(request.kind)));
         extra.insert("duration", profile->duration());
@@ -311,7 +311,7 @@ int runBlocks(Invocation& o)
         }
         const auto plan = motion::planJointBlocks(list, vMax, j);
         if (!plan)
-            return o.refused(QStringLiteral("--joint '%1': %2").arg(joints[j], words::text(plan.error)));
+            return o.refused(QStringLiteral("--joint '%1': %2").arg(joints[j], words::text(plan.error())));
         QJsonArray planned;
         for (const auto& p : plan->blocks)
             planned.append(QJsonObject{{"source", p.sourceIndex}, {"steps", qint64(p.steps) * p.direction},

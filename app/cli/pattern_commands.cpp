@@ -161,10 +161,7 @@ std::optional<motion::plans::Pattern> patternFrom(Invocation& inv)
         return std::nullopt;
     const auto problems = motion::plans::validate(p);
     if (!problems.empty()) {
-        QStringList lines;
-        for (const auto& q : problems)
-            lines << QStringLiteral("%1: %2").arg(QString::fromStdString(q.field), words::text(q.message));
-        inv.usage(lines.join(QStringLiteral("; ")));
+        inv.usage(words::problems(problems).join(QStringLiteral("; ")));
         return std::nullopt;
     }
     return p;

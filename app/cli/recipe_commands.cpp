@@ -56,8 +56,8 @@ int validate(Invocation& inv)
     const platefiles::LoadedRecipe& l = setup.loaded;
     if (inv.json()) {
         QJsonArray errors, warnings;
-        for (const jsonio::FileProblem& p : l.problems)
-            (p.problem.warning ? warnings : errors).append(words::toJson(p));
+        for (const msg::Problem& p : l.problems)
+            (p.isWarning() ? warnings : errors).append(words::toJson(p));
         inv.printJson(QJsonObject{{QStringLiteral("file"), l.path},
                                                {QStringLiteral("ok"), l.ok()},
                                                {QStringLiteral("errors"), errors},
@@ -65,8 +65,8 @@ int validate(Invocation& inv)
                                                {QStringLiteral("ops"), static_cast<int>(l.plan.ops.size())},
                                                {QStringLiteral("total_time_s"), l.plan.totalTimeS}});
     } else {
-        for (const jsonio::FileProblem& p : l.problems)
-            (p.problem.warning ? inv.out() : inv.err()) << words::fileProblem(QString::fromStdString(p.file), p.problem) << "\n";
+        for (const msg::Problem& p : l.problems)
+            (p.isWarning() ? inv.out() : inv.err()) << words::problem(p) << "\n";
         if (l.ok())
             inv.out() << tr("%1: valid: %2 ops, about %3 s").arg(l.path).arg(l.plan.ops.size()).arg(std::lround(l.plan.totalTimeS)) << "\n";
         else
@@ -121,7 +121,7 @@ int plan(Invocation& inv)
                                      {QStringLiteral("aspirated_ul"), r6(w.aspiratedUl)},
                                      {QStringLiteral("visits"), w.visits}});
         QJsonArray warnings;
-        for (const jsonio::FileProblem& m : l.problems)
+        for (const msg::Problem& m : l.problems)
             warnings.append(words::toJson(m));
         inv.printJson(QJsonObject{{QStringLiteral("recipe"), QString::fromStdString(l.recipe.name)},
                                                {QStringLiteral("fingerprint"), QString::fromStdString(plates::fingerprintHex(p.fingerprint))},
@@ -134,7 +134,7 @@ int plan(Invocation& inv)
                                                {QStringLiteral("ops"), ops},
                                                {QStringLiteral("wells"), wells}});
     } else {
-        for (const QString& m : words::fileProblems(l.problems))
+        for (const QString& m : words::problems(l.problems))
             inv.out() << m << "\n";
         for (const auto& op : p.ops)
             inv.out() << QStringLiteral("%1  %2  (%3, %4) mm  Z %5  pump %6 µL  at %7 s\n")

@@ -59,7 +59,7 @@ int loadSetup(Invocation& inv, RecipeSetup* setup)
 
 int reportInvalid(Invocation& inv, const platefiles::LoadedRecipe& loaded)
 {
-    for (const QString& m : words::fileProblems(loaded.problems))
+    for (const QString& m : words::problems(loaded.problems))
         inv.err() << m << "\n";
     inv.err().flush();
     return Usage;

@@ -202,9 +202,9 @@ int scanPlan(Invocation& inv)
     if (!problems.empty()) {
         // Every problem once, each naming the option to change (X and Y of --overlap may say the same).
         QStringList lines;
-        for (const auto& pr : problems) {
-            const QString line = optionFor(pr.field, p.camera.source == FieldSource::Sensor) + QStringLiteral(": ")
-                + words::text(pr.message);
+        for (msg::Problem pr : problems) {
+            pr.path = optionFor(pr.path, p.camera.source == FieldSource::Sensor).toStdString();
+            const QString line = words::problem(pr);
             if (!lines.contains(line))
                 lines << line;
         }

@@ -142,7 +142,7 @@ int openTarget(Invocation& inv, Target& t, bool needsAxis)
             return inv.usage(tr("give either --plant or an instrument (--sim/--port with --axis), not both"));
         const auto p = parsePlant(inv.value(QStringLiteral("plant")).toStdString());
         if (!p)
-            return inv.usage(tr("--plant: %1").arg(words::text(p.error)));
+            return inv.usage(tr("--plant: %1").arg(words::text(p.error())));
         t.target = std::make_unique<dev::ModelTarget>(*p);
         return Ok;
     }

@@ -6,60 +6,34 @@
 
 namespace jsonio {
 
-void Problems::add(Position at, std::string path, msg::Message message, bool warning)
+void Problems::add(Position at, std::string path, msg::Message message, msg::Severity severity)
 {
-    m_list.push_back(Problem{at, std::move(path), std::move(message), warning});
-}
-
-bool Problems::hasErrors() const
-{
-    for (const Problem& p : m_list)
-        if (!p.warning)
-            return true;
-    return false;
+    msg::Problem p(std::move(path), std::move(message), severity);
+    p.line = at.line;
+    p.column = at.column;
+    m_list.push_back(std::move(p));
 }
 
 std::string Problems::format(std::string_view fileName) const
 {
     std::string out;
-    for (const Problem& p : m_list) {
-        out += std::string(fileName) + ":" + std::to_string(p.position.line) + ":" + std::to_string(p.position.column) + ": ";
-        if (!p.path.empty())
-            out += p.path + ": ";
-        if (p.warning)
-            out += "warning: ";
-        out += msg::debugString(p.message) + "\n";
+    for (msg::Problem p : m_list) {
+        p.file = std::string(fileName);
+        out += msg::debugString(p) + "\n";
     }
     return out;
 }
 
-void appendSorted(FileProblems& out, const Problems& found, const std::string& file)
+void appendSorted(msg::Problems& out, const Problems& found, const std::string& file)
 {
-    std::vector<Problem> sorted = found.list();
-    std::stable_sort(sorted.begin(), sorted.end(), [](const Problem& a, const Problem& b) {
-        return a.position.line != b.position.line ? a.position.line < b.position.line : a.position.column < b.position.column;
+    msg::Problems sorted = found.list();
+    std::stable_sort(sorted.begin(), sorted.end(), [](const msg::Problem& a, const msg::Problem& b) {
+        return a.line != b.line ? a.line < b.line : a.column < b.column;
     });
-    for (Problem& p : sorted)
-        out.push_back({file, std::move(p)});
-}
-
-int errorCount(const FileProblems& problems)
-{
-    int n = 0;
-    for (const FileProblem& p : problems)
-        n += p.problem.warning ? 0 : 1;
-    return n;
-}
-
-std::string debugFormat(const FileProblems& problems)
-{
-    std::string out;
-    for (const FileProblem& p : problems) {
-        Problems one;
-        one.add(p.problem.position, p.problem.path, p.problem.message, p.problem.warning);
-        out += one.format(p.file);
+    for (msg::Problem& p : sorted) {
+        p.file = file;
+        out.push_back(std::move(p));
     }
-    return out;
 }
 
 std::string childPath(std::string_view parent, std::string_view key)

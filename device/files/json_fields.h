@@ -4,6 +4,7 @@
 // fault ("steps[3].volume_ul"), so a person fixes a file in one pass.
 // Plain C++, like json.h.
 #include "device/files/json.h"
+#include "motion/problem.h"
 
 #include <initializer_list>
 #include <optional>
@@ -13,46 +14,34 @@
 
 namespace jsonio {
 
-struct Problem {
-    Position position;    ///< line 0: the file as a whole (it cannot be read)
-    std::string path;     ///< "" for the document as a whole
-    msg::Message message; ///< what is wrong, without the location (file.json.*, or the model's own ids)
-    bool warning = false; ///< a warning does not refuse the file
-};
-
+/// Collects a reader's problems (msg::Problem, motion/problem.h) with the line and
+/// column of the value each is about.
 class Problems {
 public:
-    void add(Position at, std::string path, msg::Message message, bool warning = false);
-    void add(const Value& at, std::string path, msg::Message message, bool warning = false)
+    void add(Position at, std::string path, msg::Message message, msg::Severity severity = msg::Severity::Error);
+    void add(const Value& at, std::string path, msg::Message message, msg::Severity severity = msg::Severity::Error)
     {
-        add(at.position(), std::move(path), std::move(message), warning);
+        add(at.position(), std::move(path), std::move(message), severity);
     }
     bool empty() const { return m_list.empty(); }
     std::size_t size() const { return m_list.size(); }
-    bool hasErrors() const;
+    bool hasErrors() const { return msg::hasErrors(m_list); }
     /// The file as a whole could not be read (file.cannot_open, …): line 0, no field.
     void addFileProblem(msg::Message message) { add(Position{0, 0}, "", std::move(message)); }
-    const std::vector<Problem>& list() const { return m_list; }
+    /// Without the file's name: appendSorted adds it.
+    const msg::Problems& list() const { return m_list; }
     /// One line per problem: "FILE:LINE:COLUMN: PATH: id{args}" — for logs, fuzzers and
-    /// test failures. People read words::fileProblems (widgets/wording/wording.h).
+    /// test failures. People read words::problem (widgets/wording/wording.h).
     std::string format(std::string_view fileName) const;
 
 private:
-    std::vector<Problem> m_list;
+    msg::Problems m_list;
 };
 
-/// A problem of a named file, for lists that span several files (a recipe and the
-/// labware files it names).
-struct FileProblem {
-    std::string file;  ///< the name a person knows it by ("sampling-96.recipe.json")
-    Problem problem;
-};
-using FileProblems = std::vector<FileProblem>;
-/// Every problem of `found`, in the order of the file (line, then column), under `file`.
-void appendSorted(FileProblems& out, const Problems& found, const std::string& file);
-int errorCount(const FileProblems& problems);
-/// "FILE:LINE:COLUMN: PATH: id{args}", one a line: for logs and test failures.
-std::string debugFormat(const FileProblems& problems);
+/// Every problem of `found`, in the order of the file (line, then column), with
+/// `file` (the name a person knows it by: "sampling-96.recipe.json"), for lists that
+/// span several files (a recipe and the labware files it names).
+void appendSorted(msg::Problems& out, const Problems& found, const std::string& file);
 
 /// "steps" + 3 → "steps[3]"; "steps[3]" + "volume_ul" → "steps[3].volume_ul".
 std::string childPath(std::string_view parent, std::string_view key);

@@ -60,53 +60,53 @@ MachineProfile defaultProfile(proto::DeviceKind kind)
     return p;
 }
 
-std::vector<ProfileProblem> validate(const MachineProfile& p)
+msg::Problems validate(const MachineProfile& p)
 {
-    std::vector<ProfileProblem> out;
+    msg::Problems out;
     const bool stage = p.instrument == proto::DeviceKind::Stage;
     const std::string wanted = stage ? "XY" : "XYZ";
     std::string have;
     for (const auto& a : p.axes)
         have.push_back(a.axis);
     if (have != wanted)
-        out.push_back({"axes", msg::make("grbl.profile.axes_order", {msg::term("instrument", stage ? "instrument.stage" : "instrument.analyzer"),
-                                                                     msg::verbatim("wanted", wanted), msg::verbatim("got", have)})});
+        out.push_back(msg::error("axes", msg::make("grbl.profile.axes_order", {msg::term("instrument", stage ? "instrument.stage" : "instrument.analyzer"),
+                                                                     msg::verbatim("wanted", wanted), msg::verbatim("got", have)})));
     std::string used;
     for (std::size_t i = 0; i < p.axes.size(); ++i) {
         const char g = p.axes[i].grblAxis;
         const std::string field = "axes[" + std::to_string(i) + "].grbl_axis";
         if (!isGrblAxis(g))
-            out.push_back({field, msg::make("grbl.profile.not_grbl_axis", {msg::verbatim("axis", letter(g))})});
+            out.push_back(msg::error(field, msg::make("grbl.profile.not_grbl_axis", {msg::verbatim("axis", letter(g))})));
         else if (used.find(g) != std::string::npos)
-            out.push_back({field, msg::make("grbl.profile.grbl_axis_used", {msg::verbatim("axis", letter(g))})});
+            out.push_back(msg::error(field, msg::make("grbl.profile.grbl_axis_used", {msg::verbatim("axis", letter(g))})));
         used.push_back(g);
     }
     if (p.pump) {
         if (stage)
-            out.push_back({"pump", msg::make("grbl.profile.stage_no_pump")});
+            out.push_back(msg::error("pump", msg::make("grbl.profile.stage_no_pump")));
         if (!isGrblAxis(p.pump->grblAxis))
-            out.push_back({"pump.grbl_axis", msg::make("grbl.profile.not_grbl_axis", {msg::verbatim("axis", letter(p.pump->grblAxis))})});
+            out.push_back(msg::error("pump.grbl_axis", msg::make("grbl.profile.not_grbl_axis", {msg::verbatim("axis", letter(p.pump->grblAxis))})));
         else if (used.find(p.pump->grblAxis) != std::string::npos)
-            out.push_back({"pump.grbl_axis", msg::make("grbl.profile.pump_axis_used", {msg::verbatim("axis", letter(p.pump->grblAxis))})});
+            out.push_back(msg::error("pump.grbl_axis", msg::make("grbl.profile.pump_axis_used", {msg::verbatim("axis", letter(p.pump->grblAxis))})));
         if (!(p.pump->ulPerMm > 0) || !(p.pump->ulPerMm <= kMaxUlPerMm))
-            out.push_back({"pump.ul_per_mm", msg::make("grbl.profile.ul_per_mm_range", {msg::real("value", p.pump->ulPerMm),
-                                                                                       msg::real("max", kMaxUlPerMm)})});
+            out.push_back(msg::error("pump.ul_per_mm", msg::make("grbl.profile.ul_per_mm_range", {msg::real("value", p.pump->ulPerMm),
+                                                                                       msg::real("max", kMaxUlPerMm)})));
     }
     if (p.trigger && p.trigger->output == Profile::TriggerOutput::GrblHalDigital && (p.trigger->port < 0 || p.trigger->port > 255))
-        out.push_back({"trigger.port", jsonio::outOfRange(p.trigger->port, 0, 255)});
+        out.push_back(msg::error("trigger.port", jsonio::outOfRange(p.trigger->port, 0, 255)));
     if (!(p.statusPollHz >= kMinPollHz && p.statusPollHz <= kMaxPollHz))
-        out.push_back({"status_poll_hz", jsonio::outOfRange(p.statusPollHz, kMinPollHz, kMaxPollHz)});
+        out.push_back(msg::error("status_poll_hz", jsonio::outOfRange(p.statusPollHz, kMinPollHz, kMaxPollHz)));
     const auto& j = p.jog;
     if (!(j.linkLatencyS >= 0 && j.linkLatencyS <= 0.5))
-        out.push_back({"jog.link_latency_s", jsonio::outOfRange(j.linkLatencyS, 0, 0.5)});
+        out.push_back(msg::error("jog.link_latency_s", jsonio::outOfRange(j.linkLatencyS, 0, 0.5)));
     if (!(j.refreshS >= 0.005 && j.refreshS <= 0.5))
-        out.push_back({"jog.refresh_s", jsonio::outOfRange(j.refreshS, 0.005, 0.5)});
+        out.push_back(msg::error("jog.refresh_s", jsonio::outOfRange(j.refreshS, 0.005, 0.5)));
     if (!(j.stopBudgetS >= 0.05 && j.stopBudgetS <= 2))
-        out.push_back({"jog.stop_budget_s", jsonio::outOfRange(j.stopBudgetS, 0.05, 2)});
+        out.push_back(msg::error("jog.stop_budget_s", jsonio::outOfRange(j.stopBudgetS, 0.05, 2)));
     else if (j.linkLatencyS + j.refreshS + kMinJogSegmentS >= j.stopBudgetS)
-        out.push_back({"jog.stop_budget_s", msg::make("grbl.profile.stop_budget_too_small",
+        out.push_back(msg::error("jog.stop_budget_s", msg::make("grbl.profile.stop_budget_too_small",
                                                       {msg::real("value", j.stopBudgetS, msg::Unit::S),
-                                                       msg::real("least", j.linkLatencyS + j.refreshS + kMinJogSegmentS, msg::Unit::S)})});
+                                                       msg::real("least", j.linkLatencyS + j.refreshS + kMinJogSegmentS, msg::Unit::S)})));
     return out;
 }
 
@@ -200,9 +200,9 @@ MachineProfileReadResult parseMachineProfile(std::string_view text)
         return out;
     // The profile's own rules, placed at the field they are about (or the nearest one present).
     for (const auto& problem : validate(p)) {
-        const std::string top = problem.field.substr(0, problem.field.find_first_of(".["));
+        const std::string top = problem.path.substr(0, problem.path.find_first_of(".["));
         const Value* at = root.find(top);
-        out.problems.add(at ? *at : root, problem.field, problem.message);
+        out.problems.add(at ? *at : root, problem.path, problem.message);
     }
     if (out.problems.empty())
         out.profile = std::move(p);

@@ -12,6 +12,7 @@
 // no trigger, 10 Hz status polls.
 #include "device/files/json_fields.h"
 #include "device/protocol/messages.h"
+#include "motion/problem.h"
 
 #include <QString>
 
@@ -74,12 +75,9 @@ struct MachineProfile {
 /// The profile a connection uses when none is chosen.
 MachineProfile defaultProfile(proto::DeviceKind kind);
 
-/// Rules a profile keeps whatever file it came from; each problem names its field.
-struct ProfileProblem {
-    std::string field;
-    msg::Message message;  ///< grbl.profile.*, or file.json.out_of_range{value, min, max}
-};
-std::vector<ProfileProblem> validate(const MachineProfile& p);
+/// Rules a profile keeps whatever file it came from; each problem names its field
+/// (grbl.profile.*, or file.json.out_of_range{value, min, max}).
+msg::Problems validate(const MachineProfile& p);
 
 struct MachineProfileReadResult {
     std::optional<MachineProfile> profile;

@@ -152,8 +152,8 @@ PatternReadResult parsePattern(std::string_view text)
         return out;
     // The pattern's own rules, placed at the field they are about.
     for (const auto& problem : motion::plans::validate(p)) {
-        const Value* at = root.find(problem.field);
-        out.problems.add(at ? *at : root, problem.field, problem.message);
+        const Value* at = root.find(problem.path);
+        out.problems.add(at ? *at : root, problem.path, problem.message);
     }
     if (out.problems.empty())
         out.pattern = std::move(p);

@@ -291,7 +291,7 @@ PlanReadResult parsePlan(std::string_view text)
         return out;
     // The plan's own rules, pointed at the member they are about.
     for (const auto& problem : motion::scan::validate(plan))
-        out.problems.add(locate(root, problem.field), problem.field, problem.message);
+        out.problems.add(locate(root, problem.path), problem.path, problem.message);
     if (out.problems.empty())
         out.plan = std::move(plan);
     return out;

@@ -59,7 +59,7 @@ std::optional<std::vector<double>> readAxes(ObjectReader& o, std::string_view ke
 void addShifted(jsonio::Problems& into, const jsonio::Problems& line, int lineNo)
 {
     for (const auto& p : line.list())
-        into.add(jsonio::Position{lineNo, p.position.column}, p.path, p.message);
+        into.add(jsonio::Position{lineNo, p.column}, p.path, p.message);
 }
 
 } // namespace

@@ -128,7 +128,7 @@ bool RecipeRunner::setPlan(const plates::RecipePlan& plan, const QString& recipe
     }
     if (!plan.ok()) {
         for (const auto& p : plan.problems)
-            if (!p.warning) {
+            if (p.isError()) {
                 *error = msg::make("recipe.run.does_not_validate", {msg::verbatim("field", p.path), msg::nested("cause", p.message)});
                 break;
             }

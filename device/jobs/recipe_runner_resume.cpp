@@ -217,8 +217,8 @@ bool RecipeRunner::resumeFromLog(const QString& logPath, const InterruptedDecide
     const msg::Arg logArg = msg::verbatim("log", name.toStdString());
     if (!st.problems.empty()) {
         // The first problem says why; the log itself is left as it is for a person to read.
-        const jsonio::Problem& first = st.problems.list().front();
-        *error = msg::make("recipe.run.log_untrusted", {logArg, msg::integer("line", first.position.line, msg::Unit::None),
+        const msg::Problem& first = st.problems.list().front();
+        *error = msg::make("recipe.run.log_untrusted", {logArg, msg::integer("line", first.line, msg::Unit::None),
                                                         msg::nested("cause", first.message)});
         return false;
     }

@@ -157,7 +157,7 @@ bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& fold
     }
     const auto problems = motion::scan::validate(plan);
     if (!problems.empty()) {
-        *error = msg::make("scan.run.plan_problem", {msg::verbatim("field", problems.front().field), msg::nested("cause", problems.front().message)});
+        *error = msg::make("scan.run.plan_problem", {msg::verbatim("field", problems.front().path), msg::nested("cause", problems.front().message)});
         return false;
     }
     if (!QDir().mkpath(folder)) {
@@ -197,9 +197,9 @@ bool ScanRunner::adoptRunLog(std::uint64_t fingerprint, bool restart, bool* fres
         return false;
     const auto log = scanfile::parseRunLog(text);
     if (!log.log) {
-        const jsonio::Problem& first = log.problems.list().front();
+        const msg::Problem& first = log.problems.list().front();
         *error = msg::make("scan.run.log_damaged", {msg::verbatim("log", scanfile::kRunLogFile),
-                                                    msg::integer("line", first.position.line, msg::Unit::None),
+                                                    msg::integer("line", first.line, msg::Unit::None),
                                                     msg::nested("cause", first.message)});
         return false;
     }
@@ -288,7 +288,7 @@ std::vector<msg::Message> ScanRunner::preflight() const
     }
     // The whole plan against the device's travel and soft limits, before anything moves.
     for (const auto& p : motion::scan::validate(m_plan, m_stageModel))
-        out.push_back(msg::make("scan.run.plan_problem", {msg::verbatim("field", p.field), msg::nested("cause", p.message)}));
+        out.push_back(msg::make("scan.run.plan_problem", {msg::verbatim("field", p.path), msg::nested("cause", p.message)}));
     return out;
 }
 

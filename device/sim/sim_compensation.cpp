@@ -129,7 +129,7 @@ SimCompensation::Result SimCompensation::upload(const proto::CompUploadRequest& 
 SimCompensation::Result SimCompensation::install(int i, CompensationModel model)
 {
     for (const auto& p : motion::metrology::validate(model)) {
-        if (p.warning)
+        if (p.isWarning())
             continue;
         return error(proto::kErrCompInvalid, i, indexIn(p.path),
                      "the compensation is refused" + (p.path.empty() ? std::string() : " at " + p.path) + ": "

@@ -40,9 +40,9 @@ std::string PlantSpec::text() const
     return s;
 }
 
-PlanResult<PlantSpec> parsePlant(std::string_view text)
+msg::Checked<PlantSpec> parsePlant(std::string_view text)
 {
-    using R = PlanResult<PlantSpec>;
+    using R = msg::Checked<PlantSpec>;
     const std::string all = trim(text);
     const auto colon = all.find(':');
     const std::string kind = trim(std::string_view(all).substr(0, colon == std::string::npos ? all.size() : colon));

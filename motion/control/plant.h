@@ -4,7 +4,7 @@
 //   lag:K=..,tau=..,n=..        K/(1 + s·tau)^n                 (n equal lags)
 // Both accept Ts=.. (the loop's control period, s; default 1e-4, i.e. 10 kHz).
 // Times in seconds; K in output units per input unit.
-#include "motion/plan_result.h"
+#include "motion/checked.h"
 
 #include <complex>
 #include <optional>
@@ -29,7 +29,7 @@ struct PlantSpec {
 
 /// Parses a plant spec. Errors name the field at fault: "lag: n must be a whole
 /// number from 1 to 12 (got 2.5)", "fopdt: unknown field 'Tau' (fields: K, tau, L, Ts)".
-PlanResult<PlantSpec> parsePlant(std::string_view text);
+msg::Checked<PlantSpec> parsePlant(std::string_view text);
 
 /// G(jω).
 std::complex<double> frequencyResponse(const PlantSpec& p, double omegaRadS);

@@ -12,6 +12,7 @@
 #include "motion/path/junction_planner.h"
 #include "motion/path/path_geometry.h"
 #include "motion/message.h"
+#include "motion/problem.h"
 
 #include <optional>
 #include <string>
@@ -96,13 +97,10 @@ struct Pattern {
     RasterParams raster;
 };
 
-struct PatternProblem {
-    std::string field;                   ///< "radius_mm", "feed_mm_s", …
-    msg::Message message;                ///< pattern.not_above {value, min}, … (docs/patterns.md, "Messages")
-};
-
-/// Every problem of the pattern's own numbers (not the instrument's limits: see outsideLimits).
-std::vector<PatternProblem> validate(const Pattern& p);
+/// Every problem of the pattern's own numbers (not the instrument's limits: see
+/// outsideLimits), each at its field ("radius_mm", "feed_mm_s") with pattern.not_above
+/// {value, min}, … (docs/patterns.md, "Messages").
+msg::Problems validate(const Pattern& p);
 /// The segments, in order; empty if the pattern is not valid. Arcs are split into pieces of at
 /// most 90° so every piece has one unambiguous sweep.
 std::vector<motion::path::Segment> plan(const Pattern& p);

@@ -1989,10 +1989,6 @@ Options:
         <translation>同时保存为设备的上电增益</translation>
     </message>
     <message>
-        <source>warning: </source>
-        <translation>警告：</translation>
-    </message>
-    <message>
         <source>Axis %1, %2, %3 cycles, %4 targets (ISO 230-2, µm)</source>
         <translation>%1 轴，%2，%3 个循环，%4 个目标位置（ISO 230-2，µm）</translation>
     </message>
@@ -5970,12 +5966,6 @@ Keep that log aside and start this test afresh?</source>
         <translation>新方案</translation>
     </message>
     <message>
-        <source>%1 cannot be opened:
-%2</source>
-        <translation>无法打开 %1：
-%2</translation>
-    </message>
-    <message>
         <source>opened %1</source>
         <translation>已打开 %1</translation>
     </message>
@@ -6053,6 +6043,10 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Run &quot;%1&quot;: %2 operations over %3 wells, about %4. The tip goes down to Z %5 mm; the analyzer moves on its own until the end (Pause, Abort, or Esc for the E-stop). Start?</source>
         <translation>运行“%1”：%2 项操作，涉及 %3 个孔，约 %4。加样针将下降到 Z %5 mm；分析仪将自行运动直到结束（可按“暂停”“中止”，或按 Esc 急停）。开始？</translation>
+    </message>
+    <message>
+        <source>%1 was not opened: its problems are listed under Problems</source>
+        <translation>未打开 %1：其问题列在“问题”中</translation>
     </message>
 </context>
 <context>
@@ -6792,10 +6786,6 @@ Keep that log aside and start this test afresh?</source>
         <translation>移动步骤 %1</translation>
     </message>
     <message>
-        <source>warning: %1</source>
-        <translation>警告：%1</translation>
-    </message>
-    <message>
         <source>The recipe validates.</source>
         <translation>加样方案检查通过。</translation>
     </message>
@@ -6814,6 +6804,10 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Depth Z</source>
         <translation>深度 Z</translation>
+    </message>
+    <message>
+        <source>%1 was not opened (the recipe on screen is unchanged):</source>
+        <translation>未打开 %1（屏幕上的加样方案未改变）：</translation>
     </message>
 </context>
 <context>

@@ -21,9 +21,9 @@ using accuracyexamples::read;
 
 namespace {
 
-std::optional<FileProblem> find(const FileProblems& ps, const std::string& id)
+std::optional<msg::Problem> find(const msg::Problems& ps, const std::string& id)
 {
-    for (const FileProblem& p : ps)
+    for (const msg::Problem& p : ps)
         if (p.message.id == id)
             return p;
     return std::nullopt;
@@ -92,7 +92,7 @@ TEST(AccuracyFiles, TestDefinitionProblemsNameLineColumnAndField)
     const AccuracyTestRead w = accuracyTestFromJson(three, "w");
     ASSERT_TRUE(w.test) << debugFormat(w.problems);
     ASSERT_EQ(w.problems.size(), 1u);
-    EXPECT_TRUE(w.problems[0].warning);
+    EXPECT_TRUE(w.problems[0].isWarning());
     EXPECT_EQ(w.problems[0].message.id, "accuracy.fewer_cycles_than_iso");
 
     const AccuracyTestRead bad = accuracyTestFromJson("{\"schema\": \"benchpilot.accuracy-test\", \"version\": 1,\n \"kind\": \"spiral\"}", "k");
@@ -152,7 +152,7 @@ TEST(AccuracyFiles, ReadingsInOtherUnitsOrderAndWithQuotesReadTheSame)
 
 TEST(AccuracyFiles, ReadingsProblemsNameLineAndColumn)
 {
-    FileProblems ps = readingsFromCsv("target_mm,direction,cycle,measured_furlong\n10,up,1,10\n", "u.csv").problems;
+    msg::Problems ps = readingsFromCsv("target_mm,direction,cycle,measured_furlong\n10,up,1,10\n", "u.csv").problems;
     auto unit = find(ps, "accuracy.csv.unknown_unit");
     ASSERT_TRUE(unit);
     EXPECT_EQ(unit->line, 1);

@@ -15,9 +15,9 @@ using accuracyexamples::read;
 
 namespace {
 
-std::optional<FileProblem> find(const FileProblems& ps, const std::string& id)
+std::optional<msg::Problem> find(const msg::Problems& ps, const std::string& id)
 {
-    for (const FileProblem& p : ps)
+    for (const msg::Problem& p : ps)
         if (p.message.id == id)
             return p;
     return std::nullopt;

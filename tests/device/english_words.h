@@ -19,17 +19,19 @@ inline std::string englishFormat(const jsonio::Problems& problems, std::string_v
 {
     const words::EnglishScope inEnglish;
     std::string out;
-    for (const jsonio::Problem& p : problems.list())
-        out += words::fileProblem(QString::fromUtf8(file.data(), static_cast<qsizetype>(file.size())), p).toStdString() + "\n";
+    for (msg::Problem p : problems.list()) {
+        p.file = std::string(file);
+        out += words::problem(p).toStdString() + "\n";
+    }
     return out;
 }
 
-inline std::string englishFormat(const jsonio::FileProblems& problems)
+inline std::string englishFormat(const msg::Problems& problems)
 {
     const words::EnglishScope inEnglish;
     std::string out;
-    for (const jsonio::FileProblem& p : problems)
-        out += words::fileProblem(QString::fromStdString(p.file), p.problem).toStdString() + "\n";
+    for (const msg::Problem& p : problems)
+        out += words::problem(p).toStdString() + "\n";
     return out;
 }
 

@@ -22,7 +22,7 @@ jsonio::Problems problemsOf(std::string_view text)
 }
 
 /// The problem at `path` with message `id`, or nullopt (the failure prints them all).
-std::optional<jsonio::Problem> find(const jsonio::Problems& problems, const std::string& path, const std::string& id)
+std::optional<msg::Problem> find(const jsonio::Problems& problems, const std::string& path, const std::string& id)
 {
     for (const auto& p : problems.list())
         if (p.path == path && p.message.id == id)
@@ -129,8 +129,8 @@ TEST(MachineProfileFile, MistakesAreReportedWithTheirPlaceAndField)
     const jsonio::Problems mill =
         problemsOf("{\n  \"schema\": \"benchpilot.machine-profile\",\n  \"version\": 1,\n  \"instrument\": \"mill\",\n  \"axes\": []\n}");
     if (const auto p = find(mill, "instrument", "file.json.not_one_of")) {
-        EXPECT_EQ(p->position.line, 4);
-        EXPECT_EQ(p->position.column, 17);
+        EXPECT_EQ(p->line, 4);
+        EXPECT_EQ(p->column, 17);
     }
     // Another file's schema, a newer version.
     if (const auto p = find(problemsOf(R"({"schema": "benchpilot.pattern", "version": 1})"), "schema", "file.json.schema_wrong")) {
@@ -144,7 +144,7 @@ TEST(MachineProfileFile, AFileThatCannotBeReadSaysSo)
     jsonio::Problems problems;
     EXPECT_FALSE(files::loadMachineProfileFile(QStringLiteral("/nonexistent/x.machine.json"), nullptr, &problems));
     ASSERT_EQ(problems.size(), 1u);
-    EXPECT_EQ(problems.list().front().position.line, 0);  // the file as a whole
+    EXPECT_EQ(problems.list().front().line, 0);  // the file as a whole
     EXPECT_FALSE(problems.list().front().message.empty());
 }
 

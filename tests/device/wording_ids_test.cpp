@@ -88,7 +88,7 @@ TEST(WordingIds, APatternsProblemsAreSentencesWithTheirNumbers)
     p.spiral.turns = 2.3;
     QStringList lines;
     for (const auto& q : motion::plans::validate(p))
-        lines << QString::fromStdString(q.field) + QStringLiteral(": ") + words::englishText(q.message);
+        lines << QString::fromStdString(q.path) + QStringLiteral(": ") + words::englishText(q.message);
     const QStringList expected{QStringLiteral("feed_mm_s: must be from 0.001 mm/s to 1000.00 mm/s (got 0.00 mm/s)"),
                                   QStringLiteral("pitch_mm: must be above 0.000 mm (got -1.000 mm)"),
                                   QStringLiteral("turns: must be a whole or half number of turns (got 2.3)")};
@@ -118,7 +118,7 @@ TEST(WordingIds, EveryProblemOfABadRecipeAndScanPlanIsWorded)
     bad.naming.filePattern = "{x}";
     for (const auto& problem : motion::scan::validate(bad)) {
         const QString t = words::englishText(problem.message);
-        EXPECT_NE(t, QString::fromStdString(msg::debugString(problem.message))) << problem.field;
+        EXPECT_NE(t, QString::fromStdString(msg::debugString(problem.message))) << problem.path;
     }
 }
 

@@ -56,6 +56,42 @@ TEST(Wording, ASentenceShownOnItsOwnStartsWithACapital)
     EXPECT_EQ(words::sentence(QString()), QString());
 }
 
+// "Sampling-96.recipe.json cannot be opened" named a file that does not exist: a sentence
+// that starts with a file's name or a path keeps it as it is.
+TEST(Wording, ASentenceThatStartsWithAFileNameKeepsItsCase)
+{
+    EXPECT_EQ(words::sentence(QStringLiteral("sampling-96.recipe.json was not opened")), QStringLiteral("sampling-96.recipe.json was not opened"));
+    EXPECT_EQ(words::sentence(QStringLiteral("runs/plate-1/run.log: line 4 is damaged")), QStringLiteral("runs/plate-1/run.log: line 4 is damaged"));
+    EXPECT_EQ(words::sentence(QStringLiteral("calibration.json: 2 problems")), QStringLiteral("calibration.json: 2 problems"));
+    EXPECT_EQ(words::sentence(QStringLiteral("done.")), QStringLiteral("Done.")) << "a full stop at the end is no extension";
+}
+
+// One wording of a problem for the CLI, the API's text and the screens: the place as far
+// as it is known, then the sentence.
+TEST(Wording, AProblemSaysItsPlaceThenItsSentence)
+{
+    LocaleGuard c(QLocale::c());
+    msg::Problem p = msg::error("steps[3].volume_ul", msg::make("file.json.missing"));
+    const QString sentence = words::text(p.message);
+    EXPECT_EQ(words::problem(p), QStringLiteral("steps[3].volume_ul: ") + sentence);
+    p.file = "a.recipe.json";
+    EXPECT_EQ(words::problem(p), QStringLiteral("a.recipe.json: steps[3].volume_ul: ") + sentence);
+    p.line = 12;
+    p.column = 7;
+    EXPECT_EQ(words::problem(p), QStringLiteral("a.recipe.json:12:7: steps[3].volume_ul: ") + sentence);
+    p.severity = msg::Severity::Warning;
+    EXPECT_EQ(words::problem(p), QStringLiteral("a.recipe.json:12:7: steps[3].volume_ul: warning: ") + sentence);
+    p.path.clear();
+    p.line = 0;
+    EXPECT_EQ(words::problem(p), QStringLiteral("a.recipe.json: warning: ") + sentence);
+
+    const QJsonObject o = words::toJson(p);
+    EXPECT_EQ(o.value(QStringLiteral("file")).toString(), QStringLiteral("a.recipe.json"));
+    EXPECT_TRUE(o.value(QStringLiteral("warning")).toBool());
+    EXPECT_FALSE(o.contains(QStringLiteral("line"))) << "a file as a whole has no line";
+    EXPECT_FALSE(o.contains(QStringLiteral("field")));
+}
+
 TEST(Wording, NumbersFollowTheLocale)
 {
     LocaleGuard de(QLocale(QLocale::German, QLocale::Germany));

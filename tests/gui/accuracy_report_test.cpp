@@ -54,7 +54,7 @@ TEST(AccuracyReport, APdfOfTwoA4PagesWithTheFiguresAndPlots)
     if (QStandardPaths::findExecutable(QStringLiteral("pdftoppm")).isEmpty())
         GTEST_FAIL() << "pdftoppm is missing: ./scripts/setup installs poppler-utils";
     const auto result = accuracyfiles::loadAccuracyResultFile(example("stage-x-interferometer.accuracy-result.json"));
-    ASSERT_TRUE(result.result) << accuracyfiles::debugFormat(result.problems);
+    ASSERT_TRUE(result.result) << msg::debugFormat(result.problems);
     const auto readings = accuracyfiles::loadReadingsCsv(example("stage-x-interferometer.readings.csv"));
     ASSERT_TRUE(readings.ok());
     report::AxisReportInput in;

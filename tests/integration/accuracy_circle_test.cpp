@@ -26,7 +26,7 @@ TEST(AccuracyCircle, BothDirectionsAreSampledAndEvaluated)
     t.leadArcDeg = 30;
     t.samplesPerRevolution = 90;
     jobs::CircleRunner r(&s.session.client);
-    motion::metrology::Problems problems;
+    msg::Problems problems;
     ASSERT_TRUE(r.prepare(t, &problems)) << describe(problems);
     std::vector<msg::Message> said;
     QObject::connect(&r, &jobs::CircleRunner::problem, [&](const msg::Message& m) { said.push_back(m); });
@@ -71,7 +71,7 @@ TEST(AccuracyCircle, TelemetrySamplesEveryDegreeOfTheRevolutionOnASpedUpClock)
     t.feedMmS = 10;
     t.samplesPerRevolution = 360;
     jobs::CircleRunner r(&s.session.client);
-    motion::metrology::Problems problems;
+    msg::Problems problems;
     ASSERT_TRUE(r.prepare(t, &problems)) << describe(problems);
     QObject::connect(&s.session.client, &dev::Instrument::telemetryReceived, &r,
                      [&](const proto::TelemetryBatch& b) { jobs::feedCircleBatch(r, s.session.client, b); });
@@ -97,7 +97,7 @@ TEST(AccuracyCircle, AMotionDoneLostOnTheWayToTheStartIsMadeGoodByTheStatus)
     t.radiusMm = 10;
     t.feedMmS = 10;
     jobs::CircleRunner r(&s.session.client);
-    motion::metrology::Problems problems;
+    msg::Problems problems;
     ASSERT_TRUE(r.prepare(t, &problems)) << describe(problems);
     int samples = 0;
     QObject::connect(&r, &jobs::CircleRunner::sampled, [&] { ++samples; });

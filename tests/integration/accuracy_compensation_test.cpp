@@ -32,7 +32,7 @@ motion::metrology::Evaluation runTest(AccuracyStage& s, jobs::ReadingSource& sou
                                       const accuracyfiles::AccuracyTest& test = stageTest(), int timeoutMs = 120000)
 {
     AccuracyRunner r(&s.session.client);
-    motion::metrology::Problems problems;
+    msg::Problems problems;
     EXPECT_TRUE(r.prepare(test, &source, folder, false, &problems)) << describe(problems);
     EXPECT_TRUE(r.start());
     EXPECT_TRUE(waitRunner(r, AccuracyRunner::State::Finished, timeoutMs)) << AccuracyRunner::stateName(r.state());

@@ -24,7 +24,7 @@ TEST(AccuracyRunner, RunsTheStandardLinearCycleAndWritesItsResults)
     ASSERT_TRUE(s.ready());
     jobs::ReadbackSource source(&s.session.client);
     AccuracyRunner r(&s.session.client);
-    motion::metrology::Problems problems;
+    msg::Problems problems;
     const auto test = smallTest();
     ASSERT_TRUE(r.prepare(test, &source, s.dir.path(), false, &problems)) << describe(problems);
     EXPECT_EQ(r.totalReadings(), 3 * 2 * 2);
@@ -52,7 +52,7 @@ TEST(AccuracyRunner, RunsTheStandardLinearCycleAndWritesItsResults)
     ASSERT_TRUE(back.ok());
     EXPECT_EQ(back.readings.size(), 12u);
     const auto result = accuracyfiles::loadAccuracyResultFile(r.basePath() + QStringLiteral(".accuracy-result.json"));
-    ASSERT_TRUE(result.result) << accuracyfiles::debugFormat(result.problems);
+    ASSERT_TRUE(result.result) << msg::debugFormat(result.problems);
     EXPECT_EQ(result.result->reference, "readback");
 }
 
@@ -62,7 +62,7 @@ TEST(AccuracyRunner, AnAbortAndAPulledCableContinueAtTheNextReadingNeverReadingA
     ASSERT_TRUE(s.ready());
     jobs::ReadbackSource source(&s.session.client);
     auto r = std::make_unique<AccuracyRunner>(&s.session.client);
-    motion::metrology::Problems problems;
+    msg::Problems problems;
     ASSERT_TRUE(r->prepare(smallTest(), &source, s.dir.path(), false, &problems)) << describe(problems);
     ASSERT_TRUE(r->start());
     ASSERT_TRUE(waitFor([&] { return r->readingsTaken() >= 3; }, 30000));
@@ -108,7 +108,7 @@ TEST(AccuracyRunner, AMotionDoneLostOnTheLineIsMadeGoodByTheStatus)
     ASSERT_TRUE(s.ready());
     jobs::ReadbackSource source(&s.session.client);
     AccuracyRunner r(&s.session.client);
-    motion::metrology::Problems problems;
+    msg::Problems problems;
     ASSERT_TRUE(r.prepare(smallTest({20, 40}, 2), &source, s.dir.path(), false, &problems)) << describe(problems);
     int dropped = 0;
     loseFirstMotionDone(s.session, s.session.axis('X'), dropped);
@@ -127,7 +127,7 @@ TEST(AccuracyRunner, AGaugeThatAnswersGarbageStopsTheRunNamingItsPortAndWhatItSe
     source.link().setTimeoutMs(200);
     ASSERT_TRUE(openSource(source));
     AccuracyRunner r(&s.session.client);
-    motion::metrology::Problems problems;
+    msg::Problems problems;
     ASSERT_TRUE(r.prepare(smallTest(), &source, s.dir.path(), false, &problems)) << describe(problems);
     std::vector<msg::Message> said;
     QObject::connect(&r, &AccuracyRunner::problem, [&](const msg::Message& m) { said.push_back(m); });
@@ -159,14 +159,14 @@ TEST(AccuracyRunner, TargetsOutsideTheSoftLimitsAreRefusedBeforeAnythingMoves)
     jobs::ReadbackSource source(&s.session.client);
     AccuracyRunner r(&s.session.client);
     auto test = smallTest();
-    auto firstError = [](const motion::metrology::Problems& ps) {
+    auto firstError = [](const msg::Problems& ps) {
         for (const auto& p : ps)
-            if (!p.warning)
+            if (p.isError())
                 return p;
-        return motion::metrology::Problem{};
+        return msg::Problem{};
     };
     std::get<motion::metrology::AxisTest>(test).targetsMm = {20, 60, 99.8};  // the overrun goes to 100.3
-    motion::metrology::Problems problems;
+    msg::Problems problems;
     EXPECT_FALSE(r.prepare(test, &source, s.dir.path(), false, &problems));
     EXPECT_EQ(firstError(problems).message.id, "accuracy.overrun_above_limit") << describe(problems);
     EXPECT_EQ(firstError(problems).path, "overrun_mm");

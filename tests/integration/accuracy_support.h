@@ -47,7 +47,7 @@ inline bool waitRunner(jobs::AccuracyRunner& r, jobs::AccuracyRunner::State s, i
     return waitFor([&] { return r.state() == s; }, ms);
 }
 
-inline std::string describe(const motion::metrology::Problems& problems)
+inline std::string describe(const msg::Problems& problems)
 {
     std::ostringstream o;
     for (const auto& p : problems)

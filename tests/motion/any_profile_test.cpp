@@ -17,12 +17,12 @@ TEST(AnyProfile, KindsByNameAndMissingFieldsNamed)
     r.kind = ProfileKind::JerkLimited;
     r.vMaxMmS = 100;
     r.aMaxMmS2 = 1000;
-    EXPECT_EQ(msg::debugString(planProfile(10, r).error), "profile.not_positive{field=\"jMaxMmS3\", value=0, kind=\"jerk-limited\"}");
+    EXPECT_EQ(msg::debugString(planProfile(10, r).error()), "profile.not_positive{field=\"jMaxMmS3\", value=0, kind=\"jerk-limited\"}");
     r.kind = ProfileKind::SeedSCurve;
-    EXPECT_EQ(msg::debugString(planProfile(10, r).error), "profile.not_positive{field=\"accelTimeS\", value=0, kind=\"seed-scurve\"}");
+    EXPECT_EQ(msg::debugString(planProfile(10, r).error()), "profile.not_positive{field=\"accelTimeS\", value=0, kind=\"seed-scurve\"}");
     r.kind = ProfileKind::Trapezoid;
     r.plateauMm = 1;
-    EXPECT_EQ(msg::debugString(planProfile(10, r).error),
+    EXPECT_EQ(msg::debugString(planProfile(10, r).error()),
               "profile.start_speed_for_plateau{field=\"startSpeedMmS\", value=0, kind=\"trapezoid\"}");
 }
 
@@ -38,7 +38,7 @@ TEST(AnyProfile, EveryKindLandsOnItsDistance)
     for (ProfileKind k : {ProfileKind::SeedSCurve, ProfileKind::Trapezoid, ProfileKind::Exponential, ProfileKind::JerkLimited}) {
         r.kind = k;
         const auto p = planProfile(-25, r);
-        ASSERT_TRUE(p) << p.error;
+        ASSERT_TRUE(p) << p.error();
         EXPECT_EQ(p->kind(), k);
         EXPECT_EQ(p->at(p->duration()).s, -25) << profileKindName(k);
         const auto samples = sampleProfile(*p, 0.01);
@@ -59,7 +59,7 @@ TEST(AnyProfile, SynchronizedSeedMoveReproducesTable2Timing)
     r.accelTimeS = 0.1;
     const double target[] = {30, 40};
     const auto move = planSynchronized(target, 2, r);
-    ASSERT_TRUE(move) << move.error;
+    ASSERT_TRUE(move) << move.error();
     EXPECT_NEAR(move->axisAt(1, 0.5).v, 37.5, 1e-9);
     EXPECT_NEAR(move->axisAt(0, 0.5).v, 37.5 * 0.75, 1e-9);
     EXPECT_NEAR(move->duration(), 0.1 + 40 / 37.5, 1e-12);

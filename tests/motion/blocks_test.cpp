@@ -26,7 +26,7 @@ BlockPlan planOne(double v1, Block b)
         blocks.push_back({static_cast<std::int32_t>(v1), static_cast<std::int16_t>(v1), 1000});  // cruise 1 s at v1
     blocks.push_back(b);
     const auto plan = planJointBlocks(blocks, 30000, 1);
-    EXPECT_TRUE(plan) << plan.error;
+    EXPECT_TRUE(plan) << plan.error();
     return plan ? plan->blocks.back() : BlockPlan{};
 }
 
@@ -67,12 +67,12 @@ TEST(Blocks, EveryShapeOfTheSeed)
 TEST(Blocks, ValidationNamesJointBlockFieldAndValue)
 {
     auto r = planJointBlocks({{10, 100, 0}}, 30000, 2);
-    EXPECT_EQ(msg::debugString(r.error), "profile.block_zero_duration{joint=2, block=0}");
+    EXPECT_EQ(msg::debugString(r.error()), "profile.block_zero_duration{joint=2, block=0}");
     r = planJointBlocks({{10, 100, 100}, {10, 32000, 100}}, 30000, 2);
-    EXPECT_EQ(msg::debugString(r.error), "profile.block_too_fast{joint=2, block=1, v2=32000, max=30000}");
+    EXPECT_EQ(msg::debugString(r.error()), "profile.block_too_fast{joint=2, block=1, v2=32000, max=30000}");
     r = planJointBlocks({{100, 0, 500}}, 30000, 0);  // rest to rest cannot move in the seed's plan
     EXPECT_FALSE(r);
-    EXPECT_NE(msg::debugString(r.error).find("profile.block_unreachable{joint=0, block=0, steps=100,"), std::string::npos) << r.error;
+    EXPECT_NE(msg::debugString(r.error()).find("profile.block_unreachable{joint=0, block=0, steps=100,"), std::string::npos) << r.error();
     r = planJointBlocks({{-50, 1000, 500}}, 30000, 0);  // speed forward, S backward
     EXPECT_FALSE(r);
 }
@@ -82,7 +82,7 @@ TEST(Blocks, DirectionChangeIsSplitAtZeroSpeed)
     // +1000 → -500 in 300 ms: zero speed after 200 ms (constant deceleration through zero),
     // 100 steps forward braking, then 25 steps back speeding up: S = 75.
     const auto r = planJointBlocks({{1000, 1000, 1000}, {75, -500, 300}}, 30000, 0);
-    ASSERT_TRUE(r) << r.error;
+    ASSERT_TRUE(r) << r.error();
     EXPECT_EQ(r->splitCount, 1);
     ASSERT_EQ(r->blocks.size(), 3u);
     const BlockPlan& a = r->blocks[1];
@@ -117,7 +117,7 @@ TEST(Blocks, PropertyRandomReachableBlocksArePlannedExactly)
             v1 = v2;
         }
         const auto r = planJointBlocks(blocks, 20000, 0);
-        ASSERT_TRUE(r) << r.error;
+        ASSERT_TRUE(r) << r.error();
         for (const auto& p : r->blocks) {
             ASSERT_NEAR(coveredSteps(p), p.steps, 0.5 + 1e-9);
             ASSERT_NEAR(p.rampTimeS + p.cruiseTimeS, p.durationS, 1e-12);
@@ -200,7 +200,7 @@ TEST(Blocks, TaylorFallsBackToTheSquareRootNearZeroSpeed)
     const double F = 1e6;
     // From rest: 0 → 2000 microsteps/s in 1 s, 1000 steps.
     const auto r = planJointBlocks({{1000, 2000, 1000}}, 30000, 0);
-    ASSERT_TRUE(r) << r.error;
+    ASSERT_TRUE(r) << r.error();
     const auto exact = exactDelaysTicks(r->blocks[0], F);
     const auto taylor = taylorDelaysTicks(r->blocks[0], F);
     ASSERT_EQ(taylor.size(), 1000u);

@@ -17,7 +17,7 @@ TEST(LinearMove, SeedTable2ParametersPutBothAxesAtTheirLimitsTogether)
     const double target[] = {30, 40};
     const double vMax[] = {37.5, 50};
     const auto move = planLinearSeedSCurve(target, vMax, 0.1, 2);
-    ASSERT_TRUE(move) << move.error;
+    ASSERT_TRUE(move) << move.error();
     EXPECT_NEAR(move->path().peakVelocityMmS(), 62.5, 1e-12);
     EXPECT_NEAR(move->duration(), 0.9, 1e-12);
     EXPECT_NEAR(move->axisAt(0, 0.5).v, 37.5, 1e-12);
@@ -71,7 +71,7 @@ TEST(LinearMove, JerkLimitedAxesStayOnTheLineAndRespectTheirOwnLimits)
                                       {100 * lim(rng), 1000 * lim(rng), 10000 * lim(rng)},
                                       {50 * lim(rng), 500 * lim(rng), 5000 * lim(rng)}};
         const auto move = planLinearJerkLimited(target, limits, 3);
-        ASSERT_TRUE(move) << move.error;
+        ASSERT_TRUE(move) << move.error();
         const double T = move->duration();
         bool someAxisAtVMax = false;
         for (int k = 0; k <= 200; ++k) {
@@ -104,10 +104,10 @@ TEST(LinearMove, ErrorsNameAxisFieldAndValue)
     const JerkLimits limits[] = {{1, 1, 1}, {1, 0, 1}};
     const auto bad = planLinearJerkLimited(target, limits, 2);
     EXPECT_FALSE(bad);
-    EXPECT_EQ(msg::debugString(bad.error), "profile.axis_not_positive{field=\"aMaxMmS2\", value=0, axis=1}");
+    EXPECT_EQ(msg::debugString(bad.error()), "profile.axis_not_positive{field=\"aMaxMmS2\", value=0, axis=1}");
     const double nanTarget[] = {1, NAN};
-    EXPECT_EQ(msg::debugString(planLinearJerkLimited(nanTarget, limits, 2).error), "profile.axis_not_finite{field=\"distanceMm\", value=nan, axis=1}");
-    EXPECT_EQ(msg::debugString(planLinearJerkLimited(target, limits, 0).error), "profile.axis_count{count=0, max=6}");
+    EXPECT_EQ(msg::debugString(planLinearJerkLimited(nanTarget, limits, 2).error()), "profile.axis_not_finite{field=\"distanceMm\", value=nan, axis=1}");
+    EXPECT_EQ(msg::debugString(planLinearJerkLimited(target, limits, 0).error()), "profile.axis_count{count=0, max=6}");
     const double zero[] = {0, 0};
     const JerkLimits good[] = {{1, 1, 1}, {1, 1, 1}};
     const auto none = planLinearJerkLimited(zero, good, 2);

@@ -174,7 +174,7 @@ TEST(PatternsPlans, ValidationReportsEveryProblemByField)
     const auto problems = validate(p);
     std::vector<std::string> fields;
     for (const auto& q : problems)
-        fields.push_back(q.field);
+        fields.push_back(q.path);
     EXPECT_EQ(fields, (std::vector<std::string>{"feed_mm_s", "start_radius_mm", "pitch_mm", "turns"}));
     EXPECT_EQ(msg::debugString(problems[2].message), "pattern.not_above{value=-1 mm, min=0 mm}");
     EXPECT_TRUE(plan(p).empty());
@@ -183,12 +183,12 @@ TEST(PatternsPlans, ValidationReportsEveryProblemByField)
     w.wave.toleranceMm = 1e-5;
     w.wave.lengthMm = 1e6;
     ASSERT_EQ(validate(w).size(), 1u);
-    EXPECT_EQ(validate(w)[0].field, "tolerance_mm");
+    EXPECT_EQ(validate(w)[0].path, "tolerance_mm");
 
     Pattern l = of(PatternShape::Line);
     l.line.endMm = l.line.startMm;
     ASSERT_EQ(validate(l).size(), 1u);
-    EXPECT_EQ(validate(l)[0].field, "end_mm");
+    EXPECT_EQ(validate(l)[0].path, "end_mm");
 }
 
 TEST(PatternsPlans, APatternLeavingTheSoftLimitsNamesTheSegment)

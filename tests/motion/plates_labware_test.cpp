@@ -63,7 +63,7 @@ TEST(PlateLabware, ValidationNamesTheWellAtFault)
     lw.wells[5].xMm = 130;  // past the 127.76 mm edge
     lw.wells[7].volumeUl = 0;
     lw.wells[9].id = lw.wells[8].id;
-    const Problems p = validateLabware(lw);
+    const msg::Problems p = validateLabware(lw);
     ASSERT_EQ(p.size(), 3u);
     EXPECT_EQ(p[0].path, "wells[5]");
     EXPECT_NE(msg::debugString(p[0].message).find("length=127.76 mm, width=85.48 mm"), std::string::npos) << msg::debugString(p[0].message);

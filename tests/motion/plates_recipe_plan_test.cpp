@@ -19,7 +19,7 @@ int countErrors(const RecipePlan& p)
 {
     int n = 0;
     for (const auto& x : p.problems)
-        n += !x.warning;
+        n += x.isError();
     return n;
 }
 } // namespace

@@ -45,7 +45,7 @@ inline plates::Recipe oneStep(plates::StepType type, std::vector<std::string> we
 }
 
 /// The problem at `path`, or an empty one.
-inline plates::Problem problemAt(const plates::RecipePlan& plan, const std::string& path)
+inline msg::Problem problemAt(const plates::RecipePlan& plan, const std::string& path)
 {
     for (const auto& p : plan.problems)
         if (p.path == path)

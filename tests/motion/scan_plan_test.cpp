@@ -13,19 +13,19 @@ using namespace motion::scan;
 namespace {
 
 /// The message for `field`, or "" when there is none.
-std::string problemAt(const std::vector<PlanProblem>& problems, const std::string& field)
+std::string problemAt(const msg::Problems& problems, const std::string& field)
 {
     for (const auto& p : problems)
-        if (p.field == field)
+        if (p.path == field)
             return msg::debugString(p.message);
     return {};
 }
 
-std::string all(const std::vector<PlanProblem>& problems)
+std::string all(const msg::Problems& problems)
 {
     std::string s;
     for (const auto& p : problems)
-        s += p.field + ": " + msg::debugString(p.message) + "\n";
+        s += p.path + ": " + msg::debugString(p.message) + "\n";
     return s;
 }
 

@@ -16,7 +16,7 @@ using motion::kPi;
 PlantSpec parseOk(const char* text)
 {
     const auto p = parsePlant(text);
-    EXPECT_TRUE(p) << text << ": " << p.error;
+    EXPECT_TRUE(p) << text << ": " << p.error();
     return p ? *p : PlantSpec{};
 }
 
@@ -24,7 +24,7 @@ std::string parseError(const char* text)
 {
     const auto p = parsePlant(text);
     EXPECT_FALSE(p) << text << " was accepted";
-    return msg::debugString(p.error);
+    return msg::debugString(p.error());
 }
 } // namespace
 

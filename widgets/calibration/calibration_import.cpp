@@ -19,12 +19,12 @@
 
 namespace ui {
 
-QString CalibrationScreen::fileProblemLines(const accuracyfiles::FileProblems& problems)
+QString CalibrationScreen::fileProblemLines(const msg::Problems& problems)
 {
     QStringList lines;
     for (const auto& p : problems)
-        if (!p.warning)
-            lines << QStringLiteral("%1:%2:%3: %4").arg(QString::fromStdString(p.file)).arg(p.line).arg(p.column).arg(words::text(p.message));
+        if (p.isError())
+            lines << words::problem(p);
     return lines.join(QLatin1Char('\n'));
 }
 
@@ -71,10 +71,7 @@ bool CalibrationScreen::importCapture(const QString& sequencePath, const QString
     }
     const auto evaluation = motion::metrology::evaluate(imported.readings);
     if (!evaluation.ok()) {
-        QStringList lines;
-        for (const auto& p : evaluation.problems)
-            lines << words::text(p.message);
-        emit problem(tr("The imported readings cannot be evaluated:\n%1").arg(lines.join(QLatin1Char('\n'))));
+        emit problem(tr("The imported readings cannot be evaluated:\n%1").arg(words::problems(evaluation.problems).join(QLatin1Char('\n'))));
         return false;
     }
     QString base = sequencePath;

@@ -178,12 +178,12 @@ bool CalibrationScreen::startAxis(const accuracyfiles::AccuracyTest& test, const
     // run beside it (accuracy_run_folders.h).
     const QString folder = into.isEmpty() ? accuracyfiles::latestRunFolder(base) : into;
     m_runner = std::make_unique<jobs::AccuracyRunner>(inst);
-    motion::metrology::Problems problems;
+    msg::Problems problems;
     if (!m_runner->prepare(test, m_source.get(), folder, false, &problems)) {
         QStringList lines;
         for (const auto& p : problems)
-            if (!p.warning)
-                lines << (p.path.empty() ? words::text(p.message) : QStringLiteral("%1: %2").arg(QString::fromStdString(p.path), words::text(p.message)));
+            if (p.isError())
+                lines << words::problem(p);
         const bool otherLog = !problems.empty() && problems.back().message.id == "accuracy.run.other_log";
         if (otherLog && confirm(tr("%1\n\nKeep that log aside and start this test afresh?").arg(lines.join(QLatin1Char('\n'))))) {
             if (!m_runner->prepare(test, m_source.get(), folder, true, &problems)) {
@@ -258,12 +258,12 @@ bool CalibrationScreen::runCircle()
     if (!c)
         return false;
     m_circle = std::make_unique<jobs::CircleRunner>(cur());
-    motion::metrology::Problems problems;
+    msg::Problems problems;
     if (!m_circle->prepare(*c, &problems)) {
         QStringList lines;
         for (const auto& p : problems)
-            if (!p.warning)
-                lines << words::text(p.message);
+            if (p.isError())
+                lines << words::problem(p);
         emit problem(lines.join(QLatin1Char('\n')));
         return false;
     }
@@ -581,8 +581,8 @@ void CalibrationScreen::updateRunUi()
     const auto problems = m_form->problems();
     QString formError = m_form->entryProblem();  // a field's own reason before what its NaN breaks
     for (const auto& p : problems)
-        if (!p.warning && formError.isEmpty()) {
-            formError = p.path.empty() ? words::text(p.message) : QStringLiteral("%1: %2").arg(QString::fromStdString(p.path), words::text(p.message));
+        if (p.isError() && formError.isEmpty()) {
+            formError = words::problem(p);
             break;
         }
     m_formProblems->setText(formError);

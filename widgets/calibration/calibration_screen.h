@@ -130,7 +130,7 @@ private:
     void chooseAndImportCapture();
     void adoptAxisResult(const accuracyfiles::AccuracyResult& r, const motion::metrology::AxisTest& test,
                          const std::vector<motion::metrology::Reading>& readings, const QString& basePath, const msg::Message& source);
-    static QString fileProblemLines(const accuracyfiles::FileProblems& problems);
+    static QString fileProblemLines(const msg::Problems& problems);
     void showResult();
     void showBeforeAfter();
     void onManualWanted(const jobs::StopContext& stop);

@@ -165,10 +165,7 @@ void FitPanel::refit()
     }
     const auto* chosen = m_fit.chosen();
     if (!chosen) {
-        QStringList why;
-        for (const auto& p : m_fit.problems)
-            why << words::text(p.message);
-        m_curve->setText(why.join(QLatin1Char('\n')));
+        m_curve->setText(words::problems(m_fit.problems).join(QLatin1Char('\n')));
     } else {
         QStringList terms;
         for (std::size_t k = 0; k < chosen->polynomial.coefficientsUm.size(); ++k)

@@ -380,7 +380,7 @@ void AccuracyTestForm::fill(const accuracyfiles::AccuracyTest& test)
 
 QString AccuracyTestForm::entryProblem() const { return NumberField::firstProblemUnder(m_pages->currentWidget()); }
 
-motion::metrology::Problems AccuracyTestForm::problems() const
+msg::Problems AccuracyTestForm::problems() const
 {
     return std::visit([](const auto& t) { return motion::metrology::validate(t); }, test());
 }

@@ -34,7 +34,7 @@ public:
     void setTest(const accuracyfiles::AccuracyTest& test);
     /// Axis letters the instrument has (the axis combo offers these).
     void setAxes(const QStringList& letters);
-    motion::metrology::Problems problems() const;
+    msg::Problems problems() const;
     /// The first typed number that is not valid ("Feed (mm/s) must be at least 0.01, not -5"),
     /// empty when every shown field holds a number: the run waits for it.
     QString entryProblem() const;

@@ -338,8 +338,7 @@ void PatternForm::showProblems()
     QStringList lines;
     if (const QString typed = entryProblem(); !typed.isEmpty())
         lines << typed;
-    for (const auto& q : motion::plans::validate(pattern()))
-        lines << QStringLiteral("%1: %2").arg(QString::fromStdString(q.field), words::text(q.message));
+    lines << words::problems(motion::plans::validate(pattern()));
     m_problems->setText(lines.join(QLatin1Char('\n')));
 }
 

@@ -237,6 +237,7 @@ void PlatesScreen::newRecipe()
     plates::Recipe r;
     r.name = tr("new recipe").toStdString();
     r.plates = {{tr("samples", "the name of a new recipe's plate").toStdString(), m_deck.plateSlots.empty() ? "1" : m_deck.plateSlots.front().id, "sbs-96", 55, 70}};
+    m_filePlaces.clear();
     m_editor->setRecipe(r, QString());
     refreshPlateChoices();
 }
@@ -269,9 +270,15 @@ bool PlatesScreen::openRecipe(const QString& path)
         return false;
     const platefiles::LoadedRecipe l = platefiles::loadRecipe(path, m_deck, m_calibrations);
     if (!l.readable) {
-        emit problem(tr("%1 cannot be opened:\n%2").arg(QFileInfo(path).fileName(), words::fileProblems(l.problems).join(QLatin1Char('\n'))));
+        // Every problem goes to the Problems pane with its line and column; the banner
+        // only says so, as a banner cuts a list of them after its first line.
+        const QString name = QFileInfo(path).fileName();
+        m_editor->showProblems(l.problems, name);
+        emit problem(tr("%1 was not opened: its problems are listed under Problems").arg(name));
         return false;
     }
+    m_filePlaces = l.problems;
+    m_fileRecipe = platefiles::writeRecipe(l.recipe);
     m_editor->setRecipe(l.recipe, path);
     refreshPlateChoices();
     emit note(tr("opened %1").arg(path));
@@ -286,48 +293,51 @@ bool PlatesScreen::saveRecipe(const QString& path)
         emit problem(words::text(error));
         return false;
     }
+    m_filePlaces.clear();  // written anew: its lines are not the ones read
     m_editor->markSaved(path);
     emit note(tr("saved %1").arg(path));
     emit recipePathChanged(path);
     return true;
 }
 
-plates::PlanContext PlatesScreen::context(QStringList* messages) const
+plates::PlanContext PlatesScreen::context(msg::Problems* problems) const
 {
-    jsonio::FileProblems problems;
+    msg::Problems found;
     plates::PlanContext c;
     // Times follow the analyzer's own planner limits once it has reported them.
     c.deck = jobs::deckWithDeviceMotion(m_deck, m_client->identity());
     c.calibration = platefiles::calibrationTransforms(m_calibrations);
-    platefiles::resolveLabware(m_editor->recipe(), baseDir(), c, &problems);
-    if (messages)
-        *messages << words::fileProblems(problems);
+    platefiles::resolveLabware(m_editor->recipe(), baseDir(), c, &found);
+    if (problems)
+        problems->insert(problems->end(), found.begin(), found.end());
     return c;
 }
 
 void PlatesScreen::revalidate()
 {
-    QStringList labwareMessages;
-    m_context = context(&labwareMessages);
+    msg::Problems problems;
+    m_context = context(&problems);
     const plates::PlanContext& c = m_context;
     m_plan = plates::planRecipe(m_editor->recipe(), c);
-    QStringList errors = labwareMessages, warnings;
-    QList<int> steps;
-    for (int i = 0; i < labwareMessages.size(); ++i)
-        steps << -1;
-    for (const auto& p : m_plan.problems) {
-        const QString line = QStringLiteral("%1: %2").arg(QString::fromStdString(p.path), words::text(p.message));
-        (p.warning ? warnings : errors) << line;
-        int step = -1;
-        if (p.path.rfind("steps[", 0) == 0)
-            step = QString::fromStdString(p.path.substr(6)).section(QLatin1Char(']'), 0, 0).toInt();
-        if (!p.warning)
-            steps << step;
+    // The file's lines and columns hold while the recipe on screen is still the file (an
+    // edit reaches here before the undo stack counts it, so the recipe itself is compared).
+    const bool asRead = !m_filePlaces.empty() && platefiles::writeRecipe(m_editor->recipe()) == m_fileRecipe;
+    for (msg::Problem p : m_plan.problems) {
+        if (asRead)
+            for (const msg::Problem& placed : m_filePlaces)
+                if (placed.path == p.path && placed.message == p.message) {
+                    p.file = placed.file;
+                    p.line = placed.line;
+                    p.column = placed.column;
+                    break;
+                }
+        problems.push_back(std::move(p));
     }
-    for (const auto& p : m_plan.problems)
-        if (p.warning)
-            steps << -1;
-    m_editor->showProblems(errors, warnings, steps);
+    m_editor->showProblems(problems);
+    QStringList errors;
+    for (const msg::Problem& p : problems)
+        if (p.isError())
+            errors << words::problem(p);
     m_planOk = errors.isEmpty() && m_plan.ok() && !m_plan.ops.empty();
     m_run->setPlan(m_plan, m_planOk, errors.isEmpty() ? (m_plan.ops.empty() ? tr("the recipe has no steps") : QString()) : errors.first());
     refreshPlateChoices();

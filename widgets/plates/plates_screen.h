@@ -84,7 +84,7 @@ private:
     void importLabware();
     void resumeFromLog();
     void saveCalibrations();
-    plates::PlanContext context(QStringList* messages) const;
+    plates::PlanContext context(msg::Problems* problems) const;
     QString baseDir() const;
 
     dev::Instrument* m_client;
@@ -98,6 +98,10 @@ private:
     plates::RecipePlan m_plan;
     plates::PlanContext m_context;  ///< of the last validation: labware files are read once per change, not per well
     bool m_planOk = false;
+    /// The opened file's problems with their lines and columns, lent to the plan's own
+    /// while the recipe on screen is still exactly that file.
+    msg::Problems m_filePlaces;
+    std::string m_fileRecipe;  ///< that file's recipe as writeRecipe writes it
     PlateMap* m_map;
     QComboBox* m_plate;
     QLabel* m_hover;

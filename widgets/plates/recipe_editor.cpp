@@ -536,20 +536,38 @@ void RecipeEditor::moveStep(int delta)
     setCurrentStep(j);
 }
 
-void RecipeEditor::showProblems(const QStringList& errors, const QStringList& warnings, const QList<int>& steps)
+void RecipeEditor::showProblems(const msg::Problems& problems, const QString& refusedFile)
 {
     m_problems->clear();
-    m_problemSteps = steps;
-    for (const QString& e : errors) {
-        auto* item = new QListWidgetItem(e, m_problems);
-        item->setForeground(QColor(0xc6, 0x28, 0x28));
-    }
-    for (const QString& w : warnings) {
-        auto* item = new QListWidgetItem(tr("warning: %1").arg(w), m_problems);
-        item->setForeground(QColor(0xb2, 0x6a, 0x00));
-    }
-    if (errors.isEmpty() && warnings.isEmpty())
-        new QListWidgetItem(tr("The recipe validates."), m_problems);
+    m_problemSteps.clear();
+    auto row = [this](const QString& text, const QColor& colour, int step) {
+        auto* item = new QListWidgetItem(text, m_problems);
+        if (colour.isValid())
+            item->setForeground(colour);
+        m_problemSteps << step;
+    };
+    if (!refusedFile.isEmpty())
+        row(tr("%1 was not opened (the recipe on screen is unchanged):").arg(refusedFile), QColor(0xc6, 0x28, 0x28), -1);
+    for (const msg::Severity severity : {msg::Severity::Error, msg::Severity::Warning})
+        for (const msg::Problem& p : problems) {
+            if (p.severity != severity)
+                continue;
+            // Only a problem of the recipe on screen points at one of its steps.
+            int step = -1;
+            if (refusedFile.isEmpty() && p.file.empty() && p.path.rfind("steps[", 0) == 0)
+                step = QString::fromStdString(p.path.substr(6)).section(QLatin1Char(']'), 0, 0).toInt();
+            row(words::problem(p), p.isError() ? QColor(0xc6, 0x28, 0x28) : QColor(0xb2, 0x6a, 0x00), step);
+        }
+    if (problems.empty() && refusedFile.isEmpty())
+        row(tr("The recipe validates."), QColor(), -1);
+}
+
+QStringList RecipeEditor::problemRows() const
+{
+    QStringList out;
+    for (int i = 0; i < m_problems->count(); ++i)
+        out << m_problems->item(i)->text();
+    return out;
 }
 
 void RecipeEditor::setFilesHeld(bool held, const QString& why)

@@ -5,6 +5,7 @@
 // QUndoStack (Ctrl+Z / Ctrl+Shift+Z); typing into one field merges into one.
 #include "motion/plans/plates/deck.h"
 #include "motion/plans/recipes/recipe.h"
+#include "motion/problem.h"
 
 #include <QWidget>
 
@@ -38,8 +39,13 @@ public:
 
     int currentStep() const;
     void setCurrentStep(int index);
-    /// Shows the plan's problems; selecting one goes to its step.
-    void showProblems(const QStringList& errors, const QStringList& warnings, const QList<int>& steps);
+    /// Lists every problem, errors first, each as words::problem words it (with its file,
+    /// line and column where known); selecting one about a step of the recipe on screen
+    /// goes to that step. `refusedFile`: these are the problems of a file that was not
+    /// opened (the recipe on screen is unchanged), said first.
+    void showProblems(const msg::Problems& problems, const QString& refusedFile = {});
+    /// What the Problems pane lists, one row each (for tests and the accessibility tree).
+    QStringList problemRows() const;
 
     /// Changes the recipe as one undoable command named `text`. Consecutive
     /// commands with the same non-negative `mergeId` merge into one.

@@ -329,8 +329,7 @@ void ScanScreen::replan()
         lines << typed;
     if (!m_form->polygonError().isEmpty())
         lines << tr("Polygon: %1").arg(m_form->polygonError());
-    for (const auto& pr : problems)
-        lines << QStringLiteral("%1: %2").arg(QString::fromStdString(pr.field), words::text(pr.message));
+    lines << words::problems(problems);
     m_valid = lines.isEmpty();
     m_layout = m_valid ? layoutScan(p) : ScanLayout{};
     m_estimate = m_valid ? estimateScan(p, m_layout, stageModel()) : ScanEstimate{};

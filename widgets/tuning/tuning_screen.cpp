@@ -202,9 +202,9 @@ bool TuningScreen::setModelPlant(const QString& spec, QString* error)
 {
     const auto p = parsePlant(spec.toStdString());
     if (!p) {
-        m_plantError->setText(words::text(p.error));
+        m_plantError->setText(words::text(p.error()));
         if (error)
-            *error = words::text(p.error);
+            *error = words::text(p.error());
         return false;
     }
     m_plantError->clear();

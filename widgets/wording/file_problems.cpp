@@ -1,5 +1,5 @@
-// Problems found in files, worded with their place: what the CLI prints and the
-// screens list when a recipe, plan, pattern or tuning file is refused.
+// Problems worded with their place: what the CLI prints, the API's text says and the
+// screens list when a plan, a form or a file is refused.
 #include "widgets/wording/wording.h"
 
 #include "device/files/json_fields.h"
@@ -12,37 +12,38 @@
 namespace words {
 namespace {
 
-class FileProblemWords {
+class ProblemWords {
     Q_DECLARE_TR_FUNCTIONS(words::FileWords)
 public:
-    static QString line(const QString& file, const jsonio::Problem& p)
+    static QString line(const msg::Problem& p)
     {
-        const QString sentence = p.warning ? tr("warning: %1").arg(text(p.message)) : text(p.message);
-        if (p.position.line <= 0)
-            return QStringLiteral("%1: %2").arg(file, sentence);
-        const QString at = QStringLiteral("%1:%2:%3").arg(file).arg(p.position.line).arg(p.position.column);
-        return p.path.empty() ? QStringLiteral("%1: %2").arg(at, sentence)
-                              : QStringLiteral("%1: %2: %3").arg(at, QString::fromStdString(p.path), sentence);
+        QString out = p.isWarning() ? tr("warning: %1").arg(text(p.message)) : text(p.message);
+        if (!p.path.empty())
+            out = QStringLiteral("%1: %2").arg(QString::fromStdString(p.path), out);
+        QString at = QString::fromStdString(p.file);
+        if (p.line > 0)
+            at = at.isEmpty() ? QStringLiteral("%1:%2").arg(p.line).arg(p.column) : QStringLiteral("%1:%2:%3").arg(at).arg(p.line).arg(p.column);
+        return at.isEmpty() ? out : QStringLiteral("%1: %2").arg(at, out);
     }
 };
 
 } // namespace
 
-QString fileProblem(const QString& file, const jsonio::Problem& problem) { return FileProblemWords::line(file, problem); }
+QString problem(const msg::Problem& p) { return ProblemWords::line(p); }
+
+QStringList problems(const msg::Problems& list)
+{
+    QStringList out;
+    for (const msg::Problem& p : list)
+        out << problem(p);
+    return out;
+}
 
 QStringList fileProblems(const jsonio::Problems& problems, const QString& file)
 {
-    std::vector<jsonio::FileProblem> sorted;
+    msg::Problems sorted;
     jsonio::appendSorted(sorted, problems, file.toStdString());
-    return fileProblems(sorted);
-}
-
-QStringList fileProblems(const std::vector<jsonio::FileProblem>& problems)
-{
-    QStringList out;
-    for (const jsonio::FileProblem& p : problems)
-        out << fileProblem(QString::fromStdString(p.file), p.problem);
-    return out;
+    return words::problems(sorted);
 }
 
 QString tuningOutcome(const std::string& key)

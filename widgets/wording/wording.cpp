@@ -189,6 +189,16 @@ QString sentence(const QString& text)
     // Latin letters only: "µL" starts with the micro sign, which upper-cases to a Greek Mu.
     if (text.isEmpty() || !text.front().isLower() || text.front().script() != QChar::Script_Latin)
         return text;
+    // A file's name or a path keeps its case: "sampling-96.recipe.json was not opened"
+    // names a file that "Sampling-96.recipe.json" is not. Its first word holds a
+    // separator or an extension (a dot with more after it).
+    qsizetype end = 0;
+    while (end < text.size() && !text.at(end).isSpace() && text.at(end) != QLatin1Char(':'))
+        ++end;
+    const QStringView first = QStringView(text).left(end);
+    const qsizetype dot = first.indexOf(QLatin1Char('.'));
+    if (first.contains(QLatin1Char('/')) || first.contains(QLatin1Char('\\')) || (dot >= 0 && dot + 1 < first.size()))
+        return text;
     return text.front().toUpper() + text.mid(1);
 }
 

@@ -7,6 +7,7 @@
 // accuracy_words.cpp, …) and is listed once in wording.cpp's table; see
 // docs/wording.md for how to add ids.
 #include "motion/message.h"
+#include "motion/problem.h"
 
 #include <QString>
 #include <QStringList>
@@ -64,19 +65,22 @@ QString modelName(const dev::DeviceIdentity& id);
 } // namespace words
 
 namespace jsonio {
-struct Problem;
 class Problems;
-struct FileProblem;
 } // namespace jsonio
 
 namespace words {
 
-/// A problem found in a file, for a person: "FILE:LINE:COLUMN: PATH: sentence"
-/// ("FILE: sentence" for the file as a whole; "warning: " before a warning's sentence).
-QString fileProblem(const QString& file, const jsonio::Problem& problem);
-/// Every problem of `problems`, in the order of the file, one line each.
+/// Every problem a reader found in `file`, in the order of the file, worded by problem().
 QStringList fileProblems(const jsonio::Problems& problems, const QString& file);
-QStringList fileProblems(const std::vector<jsonio::FileProblem>& problems);
+
+/// A problem for a person, the one way the CLI, the API and the screens say it:
+/// "FILE:LINE:COLUMN: PATH: sentence", each part only where known ("FILE: sentence" for
+/// a file as a whole, "PATH: sentence" for a form), "warning: " before a warning's
+/// sentence. A caller that knows the field by another name (a CLI option) puts that
+/// name in `path` first.
+QString problem(const msg::Problem& p);
+/// problem() of each, in the order given, one line each.
+QStringList problems(const msg::Problems& list);
 
 /// How a tuning result stores a trial's or a verification's outcome ("decays",
 /// "hit the envelope", an end reason's name such as "settled"), for a person; a
@@ -100,9 +104,9 @@ namespace words {
 /// a Term argument is its id. "message" is English whatever language is shown
 /// (englishText()), so scripts can log it and key on "id".
 QJsonObject toJson(const msg::Message& m);
-/// A problem of a file: toJson of its message with "file" and, where known,
-/// "line", "column" and "field" beside it.
-QJsonObject toJson(const jsonio::FileProblem& p);
+/// A problem: toJson of its message with "file", "line", "column" and "field" beside it
+/// where known, and "warning": true for a warning.
+QJsonObject toJson(const msg::Problem& p);
 
 /// The sentence in English (the source text, C-locale numbers) even while a
 /// translation is shown.

@@ -51,16 +51,19 @@ QJsonObject toJson(const msg::Message& m)
     return o;
 }
 
-QJsonObject toJson(const jsonio::FileProblem& p)
+QJsonObject toJson(const msg::Problem& p)
 {
-    QJsonObject o = toJson(p.problem.message);
-    o.insert(QStringLiteral("file"), QString::fromStdString(p.file));
-    if (p.problem.position.line > 0) {
-        o.insert(QStringLiteral("line"), p.problem.position.line);
-        o.insert(QStringLiteral("column"), p.problem.position.column);
+    QJsonObject o = toJson(p.message);
+    if (!p.file.empty())
+        o.insert(QStringLiteral("file"), QString::fromStdString(p.file));
+    if (p.line > 0) {
+        o.insert(QStringLiteral("line"), p.line);
+        o.insert(QStringLiteral("column"), p.column);
     }
-    if (!p.problem.path.empty())
-        o.insert(QStringLiteral("field"), QString::fromStdString(p.problem.path));
+    if (!p.path.empty())
+        o.insert(QStringLiteral("field"), QString::fromStdString(p.path));
+    if (p.isWarning())
+        o.insert(QStringLiteral("warning"), true);
     return o;
 }
 

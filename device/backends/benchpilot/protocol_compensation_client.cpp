@@ -73,7 +73,7 @@ void ProtocolCompensationClient::upload(int axis, const CompensationModel& model
     CompensationModel m = model;
     m.axis = QString(m_client->identity().axes[axis].letter).toStdString();
     for (const auto& p : motion::metrology::validate(m))
-        if (!p.warning) {
+        if (p.isError()) {
             if (done)
                 done(compensationInvalid(msg::make("compensation.model_invalid", {msg::verbatim("field", p.path), msg::nested("detail", p.message)})));
             return;

@@ -199,7 +199,7 @@ AccuracyResultRead accuracyResultFromJson(std::string_view text, std::string_vie
         return out;
 
     r.evaluation = summarize(table, bidirectional);
-    Problems model = r.evaluation.problems;
+    msg::Problems model = r.evaluation.problems;
     validateTolerances(r.tolerances, "tolerances", model);
     addModelProblems(model, root, fileName, out.problems);
     if (hasErrors(out.problems))
@@ -215,15 +215,14 @@ AccuracyResultRead accuracyResultFromJson(std::string_view text, std::string_vie
         const bool written = v && v->isNumber();
         if (v && !v->isNumber() && !v->isNull()) {
             out.problems.push_back({std::string(fileName), at.line, at.column, "figures." + key,
-                                    msg::make("file.json_field", {msg::nested("detail", msg::make("file.json.number_or_null", {msg::term("actual", jsonio::typeTerm(v->type()))}))}), false});
+                                    msg::make("file.json_field", {msg::nested("detail", msg::make("file.json.number_or_null", {msg::term("actual", jsonio::typeTerm(v->type()))}))})});
             continue;
         }
         if (written != computed.has_value() || (written && std::fabs(v->asNumber() - *computed) > kFigureAgreementMm))
             out.problems.push_back({std::string(fileName), at.line, at.column, "figures." + key,
                                     msg::make("accuracy.result.figure_disagrees",
                                               {msg::verbatim("figure", key), computed ? msg::real("computed", *computed, msg::Unit::Mm) : msg::verbatim("computed", "null"),
-                                               written ? msg::real("value", v->asNumber(), msg::Unit::Mm) : msg::verbatim("value", "null")}),
-                                    false});
+                                               written ? msg::real("value", v->asNumber(), msg::Unit::Mm) : msg::verbatim("value", "null")})});
     }
     std::vector<std::string_view> known(figureKeys().begin(), figureKeys().end());
     fo.refuseUnknown(known);

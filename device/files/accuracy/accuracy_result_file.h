@@ -44,7 +44,7 @@ std::string accuracyResultToJson(const AccuracyResult& result);
 
 struct AccuracyResultRead {
     std::optional<AccuracyResult> result;
-    FileProblems problems;
+    msg::Problems problems;
 };
 /// Plain C++: what the fuzzer drives.
 AccuracyResultRead accuracyResultFromJson(std::string_view text, std::string_view fileName);

@@ -48,7 +48,7 @@ std::optional<std::vector<double>> readPositions(ObjectReader& o, std::string_vi
 void addShifted(jsonio::Problems& into, const jsonio::Problems& line, int lineNo)
 {
     for (const auto& p : line.list())
-        into.add(jsonio::Position{lineNo, p.position.column}, p.path, p.message);
+        into.add(jsonio::Position{lineNo, p.column}, p.path, p.message);
 }
 
 } // namespace

@@ -290,7 +290,7 @@ AccuracyTestRead accuracyTestFromJson(std::string_view text, std::string_view fi
         return out;
     }
     AccuracyTest test;
-    Problems model;
+    msg::Problems model;
     if (*kind == "axis") {
         AxisTest t = readAxis(o);
         t.name = name;

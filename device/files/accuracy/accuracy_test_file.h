@@ -29,7 +29,7 @@ std::string accuracyTestToJson(const AccuracyTest& test);
 
 struct AccuracyTestRead {
     std::optional<AccuracyTest> test;   ///< empty when there are errors
-    FileProblems problems;              ///< errors, or warnings beside a test
+    msg::Problems problems;              ///< errors, or warnings beside a test
 };
 /// Plain C++: what the fuzzer drives.
 AccuracyTestRead accuracyTestFromJson(std::string_view text, std::string_view fileName);

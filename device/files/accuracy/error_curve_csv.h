@@ -16,7 +16,7 @@ namespace accuracyfiles {
 
 struct ErrorCurveRead {
     std::vector<motion::metrology::FitPoint> points;
-    FileProblems problems;
+    msg::Problems problems;
     bool ok() const { return !hasErrors(problems); }
 };
 /// Plain C++: what the fuzzer drives.

@@ -29,9 +29,9 @@ std::optional<int> wholeNumber(const std::string& text)
 }
 
 /// A length column that may be absent: its index (−1 none), or −2 after a problem.
-LengthColumn optionalLength(const CsvRow& header, const std::string& stem, std::string_view file, FileProblems& out)
+LengthColumn optionalLength(const CsvRow& header, const std::string& stem, std::string_view file, msg::Problems& out)
 {
-    FileProblems scratch;
+    msg::Problems scratch;
     const LengthColumn c = findLengthColumn(header, stem, stem + "_mm", file, scratch);
     if (c.index == -2)
         out.insert(out.end(), scratch.begin(), scratch.end());
@@ -70,12 +70,12 @@ SequenceRead targetSequenceFromCsv(std::string_view text, std::string_view fileN
     if (hasErrors(out.problems))
         return out;
     if (table.rows.size() < 2) {
-        out.problems.push_back({file, table.rows.empty() ? 0 : table.rows.front().line, 0, "", msg::make("accuracy.csv.no_readings"), false});
+        out.problems.push_back({file, table.rows.empty() ? 0 : table.rows.front().line, 0, "", msg::make("accuracy.csv.no_readings")});
         return out;
     }
     const CsvRow& header = table.rows.front();
     if (looksSemicolonSeparated(header)) {
-        out.problems.push_back({file, header.line, 1, "", msg::make("file.csv.semicolons"), false});
+        out.problems.push_back({file, header.line, 1, "", msg::make("file.csv.semicolons")});
         return out;
     }
     const int index = findRequiredColumn(header, "index", fileName, out.problems);
@@ -91,8 +91,7 @@ SequenceRead targetSequenceFromCsv(std::string_view text, std::string_view fileN
         if (row.cells.size() != header.cells.size()) {
             out.problems.push_back({file, row.line, 1, "",
                                     msg::make("accuracy.csv.wrong_cell_count", {msg::integer("count", static_cast<long long>(row.cells.size())),
-                                                                                msg::integer("expected", static_cast<long long>(header.cells.size()))}),
-                                    false});
+                                                                                msg::integer("expected", static_cast<long long>(header.cells.size()))})});
             continue;
         }
         SequenceStop s;
@@ -100,8 +99,7 @@ SequenceRead targetSequenceFromCsv(std::string_view text, std::string_view fileN
         const auto n = wholeNumber(ic.text);
         if (!n || *n != static_cast<int>(r)) {
             out.problems.push_back({file, row.line, ic.column, "index",
-                                    msg::make("accuracy.import.index_out_of_order", {msg::verbatim("text", ic.text), msg::integer("expected", static_cast<long long>(r))}),
-                                    false});
+                                    msg::make("accuracy.import.index_out_of_order", {msg::verbatim("text", ic.text), msg::integer("expected", static_cast<long long>(r))})});
             continue;
         }
         s.index = *n;
@@ -109,21 +107,21 @@ SequenceRead targetSequenceFromCsv(std::string_view text, std::string_view fileN
         const auto t = parseNumber(tc.text);
         if (!t || !std::isfinite(*t * target.toMm)) {
             out.problems.push_back({file, row.line, tc.column, header.cells[static_cast<std::size_t>(target.index)].text,
-                                    t ? msg::make("accuracy.value_not_finite") : msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", tc.text)}), false});
+                                    t ? msg::make("accuracy.value_not_finite") : msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", tc.text)})});
             continue;
         }
         s.targetMm = *t * target.toMm;
         const CsvCell& dc = row.cells[static_cast<std::size_t>(direction)];
         const auto d = motion::metrology::directionFromName(asciiLower(dc.text));
         if (!d) {
-            out.problems.push_back({file, row.line, dc.column, "direction", msg::make("accuracy.csv.unknown_direction", {msg::verbatim("text", dc.text)}), false});
+            out.problems.push_back({file, row.line, dc.column, "direction", msg::make("accuracy.csv.unknown_direction", {msg::verbatim("text", dc.text)})});
             continue;
         }
         s.direction = *d;
         const CsvCell& cc = row.cells[static_cast<std::size_t>(cycle)];
         const auto c = wholeNumber(cc.text);
         if (!c || *c < 1) {
-            out.problems.push_back({file, row.line, cc.column, "cycle", msg::make("accuracy.csv.not_a_cycle", {msg::verbatim("text", cc.text)}), false});
+            out.problems.push_back({file, row.line, cc.column, "cycle", msg::make("accuracy.csv.not_a_cycle", {msg::verbatim("text", cc.text)})});
             continue;
         }
         s.cycle = *c;
@@ -131,13 +129,13 @@ SequenceRead targetSequenceFromCsv(std::string_view text, std::string_view fileN
             const CsvCell& timeCell = row.cells[static_cast<std::size_t>(time)];
             const auto v = parseNumber(timeCell.text);
             if (!v) {
-                out.problems.push_back({file, row.line, timeCell.column, "time_s", msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", timeCell.text)}), false});
+                out.problems.push_back({file, row.line, timeCell.column, "time_s", msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", timeCell.text)})});
                 continue;
             }
             // Device seconds since the run began: a run of 30 years is a typo.
-            motion::metrology::Problems range;
+            msg::Problems range;
             if (!motion::metrology::checkRange(range, "time_s", *v, 0, 1e9, msg::Unit::S)) {
-                out.problems.push_back({file, row.line, timeCell.column, "time_s", range.front().message, false});
+                out.problems.push_back({file, row.line, timeCell.column, "time_s", range.front().message});
                 continue;
             }
             s.timeS = *v;
@@ -160,12 +158,12 @@ InterferometerImport importInterferometerCsv(std::string_view exportText, std::s
     if (hasErrors(out.problems))
         return out;
     if (table.rows.empty()) {
-        out.problems.push_back({file, 0, 0, "", msg::make("accuracy.csv.no_readings"), false});
+        out.problems.push_back({file, 0, 0, "", msg::make("accuracy.csv.no_readings")});
         return out;
     }
     const CsvRow& header = table.rows.front();
     if (looksSemicolonSeparated(header)) {
-        out.problems.push_back({file, header.line, 1, "", msg::make("file.csv.semicolons"), false});
+        out.problems.push_back({file, header.line, 1, "", msg::make("file.csv.semicolons")});
         return out;
     }
     // The value: a position or a deviation, exactly one of them.
@@ -181,7 +179,7 @@ InterferometerImport importInterferometerCsv(std::string_view exportText, std::s
         if (value.index >= 0) {
             out.problems.push_back({file, header.line, header.cells[static_cast<std::size_t>(c.index)].column,
                                     header.cells[static_cast<std::size_t>(c.index)].text,
-                                    msg::make("accuracy.csv.duplicate_column", {msg::verbatim("column", header.cells[static_cast<std::size_t>(c.index)].text)}), false});
+                                    msg::make("accuracy.csv.duplicate_column", {msg::verbatim("column", header.cells[static_cast<std::size_t>(c.index)].text)})});
             return out;
         }
         value = c;
@@ -189,7 +187,7 @@ InterferometerImport importInterferometerCsv(std::string_view exportText, std::s
         isDeviation = std::string(stem) == "deviation" || std::string(stem) == "error";
     }
     if (value.index < 0) {
-        out.problems.push_back({file, header.line, 1, "", msg::make("accuracy.csv.missing_column", {msg::verbatim("column", "measured_mm")}), false});
+        out.problems.push_back({file, header.line, 1, "", msg::make("accuracy.csv.missing_column", {msg::verbatim("column", "measured_mm")})});
         return out;
     }
     const LengthColumn target = optionalLength(header, "target", fileName, out.problems);
@@ -202,8 +200,7 @@ InterferometerImport importInterferometerCsv(std::string_view exportText, std::s
         const int line = rows == 0 ? header.line : table.rows.back().line;
         out.problems.push_back({file, line, 1, "",
                                 msg::make("accuracy.import.count_differs", {msg::integer("count", static_cast<long long>(rows)),
-                                                                            msg::integer("expected", static_cast<long long>(sequence.size()))}),
-                                false});
+                                                                            msg::integer("expected", static_cast<long long>(sequence.size()))})});
         return out;
     }
     for (std::size_t k = 0; k < rows; ++k) {
@@ -212,33 +209,31 @@ InterferometerImport importInterferometerCsv(std::string_view exportText, std::s
         if (row.cells.size() != header.cells.size()) {
             out.problems.push_back({file, row.line, 1, "",
                                     msg::make("accuracy.csv.wrong_cell_count", {msg::integer("count", static_cast<long long>(row.cells.size())),
-                                                                                msg::integer("expected", static_cast<long long>(header.cells.size()))}),
-                                    false});
+                                                                                msg::integer("expected", static_cast<long long>(header.cells.size()))})});
             continue;
         }
         const CsvCell& vc = row.cells[static_cast<std::size_t>(value.index)];
         const auto v = parseNumber(vc.text);
         if (!v) {
-            out.problems.push_back({file, row.line, vc.column, valueName, msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", vc.text)}), false});
+            out.problems.push_back({file, row.line, vc.column, valueName, msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", vc.text)})});
             continue;
         }
         if (!std::isfinite(*v * value.toMm)) {
-            out.problems.push_back({file, row.line, vc.column, valueName, msg::make("accuracy.value_not_finite"), false});
+            out.problems.push_back({file, row.line, vc.column, valueName, msg::make("accuracy.value_not_finite")});
             continue;
         }
         if (direction >= 0) {
             const CsvCell& dc = row.cells[static_cast<std::size_t>(direction)];
             const auto d = exportDirection(dc.text);
             if (!d) {
-                out.problems.push_back({file, row.line, dc.column, "direction", msg::make("accuracy.csv.unknown_direction", {msg::verbatim("text", dc.text)}), false});
+                out.problems.push_back({file, row.line, dc.column, "direction", msg::make("accuracy.csv.unknown_direction", {msg::verbatim("text", dc.text)})});
                 continue;
             }
             if (*d != stop.direction) {
                 out.problems.push_back({file, row.line, dc.column, "direction",
                                         msg::make("accuracy.import.direction_differs",
                                                   {msg::integer("index", stop.index), directionArg("direction", *d),
-                                                   directionArg("expected", stop.direction), msg::real("target", stop.targetMm, msg::Unit::Mm)}),
-                                        false});
+                                                   directionArg("expected", stop.direction), msg::real("target", stop.targetMm, msg::Unit::Mm)})});
                 continue;
             }
         }
@@ -247,15 +242,14 @@ InterferometerImport importInterferometerCsv(std::string_view exportText, std::s
             const auto t = parseNumber(tc.text);
             if (!t || !std::isfinite(*t * target.toMm)) {
                 out.problems.push_back({file, row.line, tc.column, header.cells[static_cast<std::size_t>(target.index)].text,
-                                        t ? msg::make("accuracy.value_not_finite") : msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", tc.text)}), false});
+                                        t ? msg::make("accuracy.value_not_finite") : msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", tc.text)})});
                 continue;
             }
             if (std::fabs(*t * target.toMm - stop.targetMm) > kTargetMatchMm) {
                 out.problems.push_back({file, row.line, tc.column, header.cells[static_cast<std::size_t>(target.index)].text,
                                         msg::make("accuracy.import.target_differs",
                                                   {msg::integer("index", stop.index), msg::real("target", *t * target.toMm, msg::Unit::Mm),
-                                                   msg::real("expected", stop.targetMm, msg::Unit::Mm)}),
-                                        false});
+                                                   msg::real("expected", stop.targetMm, msg::Unit::Mm)})});
                 continue;
             }
         }

@@ -48,14 +48,14 @@ std::string targetSequenceCsv(const std::vector<SequenceStop>& stops);
 
 struct SequenceRead {
     std::vector<SequenceStop> stops;
-    FileProblems problems;
+    msg::Problems problems;
     bool ok() const { return !hasErrors(problems); }
 };
 SequenceRead targetSequenceFromCsv(std::string_view text, std::string_view fileName);
 
 struct InterferometerImport {
     std::vector<motion::metrology::Reading> readings;  ///< one per stop, in the sequence's order
-    FileProblems problems;
+    msg::Problems problems;
     bool ok() const { return !hasErrors(problems); }
 };
 /// The export matched to the sequence, all or nothing.

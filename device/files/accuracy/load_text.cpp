@@ -6,14 +6,14 @@
 
 namespace accuracyfiles {
 
-std::optional<std::string> loadText(const QString& path, std::string& fileName, FileProblems& out)
+std::optional<std::string> loadText(const QString& path, std::string& fileName, msg::Problems& out)
 {
     fileName = QFileInfo(path).fileName().toStdString();
     std::string text;
     msg::Message error;  // file.cannot_open, file.too_large, file.cannot_read {file, detail}
     if (files::readText(path, &text, &error))
         return text;
-    out.push_back({fileName, 0, 0, "", error, false});
+    out.push_back({fileName, 0, 0, "", error});
     return std::nullopt;
 }
 

@@ -11,6 +11,6 @@
 
 namespace accuracyfiles {
 
-std::optional<std::string> loadText(const QString& path, std::string& fileName, FileProblems& out);
+std::optional<std::string> loadText(const QString& path, std::string& fileName, msg::Problems& out);
 
 } // namespace accuracyfiles

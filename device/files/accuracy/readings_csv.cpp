@@ -21,12 +21,12 @@ ReadingsRead readingsFromCsv(std::string_view text, std::string_view fileName)
     if (hasErrors(out.problems))
         return out;
     if (table.rows.empty()) {
-        out.problems.push_back({file, 0, 0, "", msg::make("accuracy.csv.no_readings"), false});
+        out.problems.push_back({file, 0, 0, "", msg::make("accuracy.csv.no_readings")});
         return out;
     }
     const CsvRow& header = table.rows.front();
     if (looksSemicolonSeparated(header)) {
-        out.problems.push_back({file, header.line, 1, "", msg::make("file.csv.semicolons"), false});
+        out.problems.push_back({file, header.line, 1, "", msg::make("file.csv.semicolons")});
         return out;
     }
     const LengthColumn target = findLengthColumn(header, "target", "target_mm", fileName, out.problems);
@@ -36,7 +36,7 @@ ReadingsRead readingsFromCsv(std::string_view text, std::string_view fileName)
     if (hasErrors(out.problems))
         return out;
     if (table.rows.size() == 1) {
-        out.problems.push_back({file, header.line, 1, "", msg::make("accuracy.csv.no_readings"), false});
+        out.problems.push_back({file, header.line, 1, "", msg::make("accuracy.csv.no_readings")});
         return out;
     }
 
@@ -45,8 +45,7 @@ ReadingsRead readingsFromCsv(std::string_view text, std::string_view fileName)
         if (row.cells.size() != header.cells.size()) {
             out.problems.push_back({file, row.line, 1, "",
                                     msg::make("accuracy.csv.wrong_cell_count", {msg::integer("count", static_cast<long long>(row.cells.size())),
-                                                                                msg::integer("expected", static_cast<long long>(header.cells.size()))}),
-                                    false});
+                                                                                msg::integer("expected", static_cast<long long>(header.cells.size()))})});
             continue;
         }
         bool good = true;
@@ -55,10 +54,10 @@ ReadingsRead readingsFromCsv(std::string_view text, std::string_view fileName)
             const std::string& name = header.cells[static_cast<std::size_t>(col.index)].text;
             const auto v = parseNumber(cell.text);
             if (!v) {
-                out.problems.push_back({file, row.line, cell.column, name, msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", cell.text)}), false});
+                out.problems.push_back({file, row.line, cell.column, name, msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", cell.text)})});
                 good = false;
             } else if (!std::isfinite(*v * col.toMm)) {  // 1e308 m is not finite in mm
-                out.problems.push_back({file, row.line, cell.column, name, msg::make("accuracy.value_not_finite"), false});
+                out.problems.push_back({file, row.line, cell.column, name, msg::make("accuracy.value_not_finite")});
                 good = false;
             } else {
                 into = *v * col.toMm;
@@ -71,14 +70,14 @@ ReadingsRead readingsFromCsv(std::string_view text, std::string_view fileName)
         if (const auto dir = motion::metrology::directionFromName(asciiLower(d.text)))
             reading.direction = *dir;
         else {
-            out.problems.push_back({file, row.line, d.column, "direction", msg::make("accuracy.csv.unknown_direction", {msg::verbatim("text", d.text)}), false});
+            out.problems.push_back({file, row.line, d.column, "direction", msg::make("accuracy.csv.unknown_direction", {msg::verbatim("text", d.text)})});
             good = false;
         }
         const CsvCell& c = row.cells[static_cast<std::size_t>(cycle)];
         int n = 0;
         const auto parsed = std::from_chars(c.text.data(), c.text.data() + c.text.size(), n);
         if (c.text.empty() || parsed.ec != std::errc() || parsed.ptr != c.text.data() + c.text.size() || n < 1) {
-            out.problems.push_back({file, row.line, c.column, "cycle", msg::make("accuracy.csv.not_a_cycle", {msg::verbatim("text", c.text)}), false});
+            out.problems.push_back({file, row.line, c.column, "cycle", msg::make("accuracy.csv.not_a_cycle", {msg::verbatim("text", c.text)})});
             good = false;
         } else {
             reading.cycle = n;
@@ -91,10 +90,10 @@ ReadingsRead readingsFromCsv(std::string_view text, std::string_view fileName)
     return out;
 }
 
-FileProblems placeReadingProblems(const motion::metrology::Problems& found, const ReadingsRead& read, std::string_view fileName)
+msg::Problems placeReadingProblems(const msg::Problems& found, const ReadingsRead& read, std::string_view fileName)
 {
-    FileProblems out;
-    for (const motion::metrology::Problem& p : found) {
+    msg::Problems out;
+    for (const msg::Problem& p : found) {
         int line = 0;
         std::string field;
         // "readings[12]" or "readings[12].measured_mm": the reading's line.
@@ -108,7 +107,7 @@ FileProblems placeReadingProblems(const motion::metrology::Problems& found, cons
             if (dot != std::string::npos)
                 field = p.path.substr(dot + 1);
         }
-        out.push_back({std::string(fileName), line, line > 0 ? 1 : 0, field, p.message, p.warning});
+        out.push_back({std::string(fileName), line, line > 0 ? 1 : 0, field, p.message, p.severity});
     }
     return out;
 }
@@ -121,7 +120,7 @@ AnalyzedReadings analyzeReadingsCsv(std::string_view text, std::string_view file
     if (!out.read.ok())
         return out;
     out.evaluation = motion::metrology::evaluate(out.read.readings);
-    const FileProblems placed = placeReadingProblems(out.evaluation.problems, out.read, fileName);
+    const msg::Problems placed = placeReadingProblems(out.evaluation.problems, out.read, fileName);
     out.problems.insert(out.problems.end(), placed.begin(), placed.end());
     return out;
 }

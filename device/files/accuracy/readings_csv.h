@@ -25,7 +25,7 @@ namespace accuracyfiles {
 struct ReadingsRead {
     std::vector<motion::metrology::Reading> readings;
     std::vector<int> lines;   ///< the line of each reading, for placing later problems
-    FileProblems problems;
+    msg::Problems problems;
     bool ok() const { return !hasErrors(problems); }
 };
 
@@ -37,13 +37,13 @@ ReadingsRead readingsFromCsv(std::string_view text, std::string_view fileName);
 
 /// The evaluation's own problems (paths "readings[k]…") placed at the line and
 /// column of the reading they name: too few cycles, a duplicate, a missing direction.
-FileProblems placeReadingProblems(const motion::metrology::Problems& found, const ReadingsRead& read, std::string_view fileName);
+msg::Problems placeReadingProblems(const msg::Problems& found, const ReadingsRead& read, std::string_view fileName);
 
 /// Read and evaluate in one: what `benchpilot-cli accuracy analyze` does.
 struct AnalyzedReadings {
     ReadingsRead read;
     motion::metrology::Evaluation evaluation;
-    FileProblems problems;   ///< the reader's and the evaluation's, placed
+    msg::Problems problems;   ///< the reader's and the evaluation's, placed
     bool ok() const { return !hasErrors(problems); }
 };
 AnalyzedReadings analyzeReadingsCsv(std::string_view text, std::string_view fileName);

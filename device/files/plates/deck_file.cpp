@@ -96,7 +96,7 @@ DeckRead parseDeck(std::string_view text)
     }
     if (!r.problems.empty())
         return r;
-    for (const plates::Problem& p : plates::validateDeck(d))
+    for (const msg::Problem& p : plates::validateDeck(d))
         r.problems.add(positionOfPath(root, p.path), p.path, p.message);
     if (r.problems.empty())
         r.deck = std::move(d);

@@ -17,10 +17,10 @@ namespace {
 constexpr double kLabwareBig = 1e6;
 
 /// The model validator's problems, placed in the document.
-void addModelProblems(const Value& root, const plates::Problems& found, jsonio::Problems& out)
+void addModelProblems(const Value& root, const msg::Problems& found, jsonio::Problems& out)
 {
-    for (const plates::Problem& p : found)
-        out.add(positionOfPath(root, p.path), p.path, p.message, p.warning);
+    for (const msg::Problem& p : found)
+        out.add(positionOfPath(root, p.path), p.path, p.message, p.severity);
 }
 
 std::optional<WellShape> readShape(ObjectReader& o, const char* key)
@@ -236,9 +236,9 @@ LabwareRead parseLabware(std::string_view text)
     }
     if (!lw)
         return r;
-    plates::Problems found = plates::validateLabware(*lw);
+    msg::Problems found = plates::validateLabware(*lw);
     if (r.opentrons)
-        for (plates::Problem& p : found)
+        for (msg::Problem& p : found)
             p.path = "wells";  // Opentrons keys wells by name; the message names the well
     addModelProblems(root, found, r.problems);
     if (r.problems.empty())

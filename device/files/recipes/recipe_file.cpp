@@ -184,17 +184,17 @@ RecipeRead parseRecipe(std::string_view text)
     return r;
 }
 
-void placeProblems(RecipeRead& read, const plates::Problems& problems)
+void placeProblems(RecipeRead& read, const msg::Problems& problems)
 {
-    const std::vector<jsonio::Problem> before = read.problems.list();
-    for (const plates::Problem& p : problems) {
+    const std::vector<msg::Problem> before = read.problems.list();
+    for (const msg::Problem& p : problems) {
         bool dup = false;
-        for (const jsonio::Problem& q : before)
+        for (const msg::Problem& q : before)
             dup = dup || covers(q.path, p.path);
         if (dup)
             continue;
         const jsonio::Position at = read.root ? positionOfPath(*read.root, p.path) : jsonio::Position{};
-        read.problems.add(at, p.path, p.message, p.warning);
+        read.problems.add(at, p.path, p.message, p.severity);
     }
 }
 

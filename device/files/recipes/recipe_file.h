@@ -32,7 +32,7 @@ std::string writeRecipe(const plates::Recipe& recipe);
 
 /// The plan's problems added to `read.problems` at their positions, except
 /// where the reader already reported that field. Warnings say "warning: ".
-void placeProblems(RecipeRead& read, const plates::Problems& problems);
+void placeProblems(RecipeRead& read, const msg::Problems& problems);
 
 /// A labware reference that names a file (ends in ".json") rather than a built-in id.
 bool isLabwareFile(const std::string& reference);

@@ -13,13 +13,13 @@ namespace platefiles {
 
 namespace {
 /// A file that cannot be read, as a problem of that file.
-jsonio::FileProblem unreadable(const QString& file, const msg::Message& why)
+msg::Problem unreadable(const QString& file, const msg::Message& why)
 {
-    return {QFileInfo(file).fileName().toStdString(), jsonio::Problem{jsonio::Position{0, 0}, "", why, false}};
+    return msg::Problem(QFileInfo(file).fileName().toStdString(), 0, 0, "", why);
 }
 } // namespace
 
-int resolveLabware(const plates::Recipe& recipe, const QString& baseDir, plates::PlanContext& context, jsonio::FileProblems* problems)
+int resolveLabware(const plates::Recipe& recipe, const QString& baseDir, plates::PlanContext& context, msg::Problems* problems)
 {
     int errors = 0;
     for (const plates::RecipePlate& p : recipe.plates) {
@@ -45,9 +45,9 @@ int resolveLabware(const plates::Recipe& recipe, const QString& baseDir, plates:
             continue;
         }
         const LabwareRead lr = parseLabware(text);
-        jsonio::FileProblems found;
+        msg::Problems found;
         jsonio::appendSorted(found, lr.problems, QFileInfo(file).fileName().toStdString());
-        errors += jsonio::errorCount(found);
+        errors += msg::errorCount(found);
         if (problems)
             problems->insert(problems->end(), found.begin(), found.end());
         if (lr.labware)
@@ -75,17 +75,17 @@ LoadedRecipe loadRecipe(const QString& path, const plates::Deck& deck, const std
     const std::string name = QFileInfo(path).fileName().toStdString();
     if (!read.recipe) {
         jsonio::appendSorted(out.problems, read.problems, name);
-        out.errorCount = jsonio::errorCount(out.problems);
+        out.errorCount = msg::errorCount(out.problems);
         return out;
     }
     out.readable = read.wellFormed;
     out.recipe = *read.recipe;
-    jsonio::FileProblems labwareProblems;
+    msg::Problems labwareProblems;
     const int labwareErrors = resolveLabware(out.recipe, QFileInfo(path).absolutePath(), out.context, &labwareProblems);
     out.plan = plates::planRecipe(out.recipe, out.context);
     placeProblems(read, out.plan.problems);
     jsonio::appendSorted(out.problems, read.problems, name);
-    out.errorCount = jsonio::errorCount(out.problems);
+    out.errorCount = msg::errorCount(out.problems);
     out.problems.insert(out.problems.end(), labwareProblems.begin(), labwareProblems.end());
     out.errorCount += labwareErrors;
     return out;

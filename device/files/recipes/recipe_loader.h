@@ -17,7 +17,7 @@ struct LoadedRecipe {
     plates::Recipe recipe;
     plates::PlanContext context;
     plates::RecipePlan plan;      ///< from the machine's start (0, 0, 0, 0) unless re-planned
-    jsonio::FileProblems problems; ///< errors and warnings, files in order (words::fileProblems words them)
+    msg::Problems problems; ///< errors and warnings, files in order (words::fileProblems words them)
     bool readable = false;        ///< the recipe's form was right: `recipe` is the file
     int errorCount = 0;
     bool ok() const { return readable && errorCount == 0; }
@@ -31,6 +31,6 @@ LoadedRecipe loadRecipe(const QString& path, const plates::Deck& deck, const std
 /// Fills `context.labware` for the plates of `recipe`: built-in ids, and labware
 /// files (ours or Opentrons) relative to `baseDir`. Problems go to `problems`;
 /// returns how many errors.
-int resolveLabware(const plates::Recipe& recipe, const QString& baseDir, plates::PlanContext& context, jsonio::FileProblems* problems);
+int resolveLabware(const plates::Recipe& recipe, const QString& baseDir, plates::PlanContext& context, msg::Problems* problems);
 
 } // namespace platefiles

@@ -128,8 +128,8 @@ RunLogState readRunLog(std::string_view text)
                 r.line = lineNo;
             }
         }
-        for (const jsonio::Problem& p : local.list())
-            st.problems.add(at(p.position), p.path, p.message);
+        for (const msg::Problem& p : local.list())
+            st.problems.add(at(jsonio::Position{p.line, p.column}), p.path, p.message);
         if (st.problems.size() > 100)
             break;
     }

@@ -58,7 +58,7 @@ public:
     /// and source is continued; another's is refused unless `restart`, which keeps it
     /// aside under another name. Problems: paths of the test's fields, or "" for the run.
     bool prepare(const accuracyfiles::AccuracyTest& test, ReadingSource* source, const QString& folder, bool restart,
-                 motion::metrology::Problems* problems);
+                 msg::Problems* problems);
     /// Starts, or continues after a pause or a stop, at the first stop not yet read.
     /// Refused (why) when not prepared, not connected, an axis not homed, E-stop.
     bool start(msg::Message* why = nullptr);
@@ -125,7 +125,7 @@ private:
     void takeReading(bool settled);
     void onReading(const TakeResult& r, bool settled, quint64 deviceTimeUs);
     void stopWith(const msg::Message& why, bool stopAxes);
-    bool openLog(bool restart, motion::metrology::Problems* problems);
+    bool openLog(bool restart, msg::Problems* problems);
     bool appendLog(const accuracyfiles::RunLogEntry& e);
     void finish();
     void writeResults();

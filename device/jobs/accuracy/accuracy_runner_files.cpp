@@ -18,7 +18,7 @@ namespace jobs {
 
 using motion::metrology::AxisTest;
 using motion::metrology::Direction;
-using motion::metrology::Problems;
+using msg::Problems;
 using motion::metrology::XyLineTest;
 
 namespace {
@@ -26,7 +26,7 @@ namespace {
 void add(Problems* out, msg::Message m, std::string path = {})
 {
     if (out)
-        out->push_back({std::move(path), std::move(m), false});
+        out->push_back({std::move(path), std::move(m)});
 }
 
 /// A file name from a test's name: letters, digits, '-' and '_' kept, the rest '-'.
@@ -83,7 +83,7 @@ bool AccuracyRunner::prepare(const accuracyfiles::AccuracyTest& test, ReadingSou
         }
         axes = {i};
         found = motion::metrology::validate(*a, limitsOf(*m_instrument, i));
-        if (!motion::metrology::hasErrors(found))
+        if (!msg::hasErrors(found))
             for (const auto& s : motion::metrology::runSequence(*a)) {
                 PlannedStop p;
                 p.cycle = s.cycle;
@@ -109,7 +109,7 @@ bool AccuracyRunner::prepare(const accuracyfiles::AccuracyTest& test, ReadingSou
         if (lim.x.maxFeedMmS && lim.y.maxFeedMmS)
             lim.maxFeedMmS = std::min(*lim.x.maxFeedMmS, *lim.y.maxFeedMmS);
         found = motion::metrology::validate(*x, lim);
-        if (!motion::metrology::hasErrors(found)) {
+        if (!msg::hasErrors(found)) {
             std::vector<double> previous;
             for (const auto& s : motion::metrology::runSequence(*x)) {
                 PlannedStop p;
@@ -132,7 +132,7 @@ bool AccuracyRunner::prepare(const accuracyfiles::AccuracyTest& test, ReadingSou
     }
     if (problems)
         problems->insert(problems->end(), found.begin(), found.end());
-    if (motion::metrology::hasErrors(found) || stops.empty())
+    if (msg::hasErrors(found) || stops.empty())
         return false;
     if (!source) {
         add(problems, msg::make("accuracy.run.no_source"));
@@ -196,7 +196,7 @@ bool AccuracyRunner::openLog(bool restart, Problems* problems)
             if (!read.log) {
                 const auto& p = read.problems.list().front();
                 add(problems, msg::make("accuracy.run.log_unreadable", {msg::verbatim("file", path.toStdString()),
-                                                                        msg::integer("line", p.position.line),
+                                                                        msg::integer("line", p.line),
                                                                         msg::nested("detail", p.message)}));
             } else {
                 add(problems, msg::make("accuracy.run.other_log", {msg::verbatim("file", path.toStdString()),

@@ -76,13 +76,13 @@ void CircleRunner::setState(State s)
     emit stateChanged(s);
 }
 
-bool CircleRunner::prepare(const motion::metrology::CircularTest& test, motion::metrology::Problems* problems)
+bool CircleRunner::prepare(const motion::metrology::CircularTest& test, msg::Problems* problems)
 {
     if (problems)
         problems->clear();
     auto refuse = [&](msg::Message m) {
         if (problems)
-            problems->push_back({"", std::move(m), false});
+            problems->push_back({"", std::move(m)});
         return false;
     };
     if (isActive())
@@ -115,7 +115,7 @@ bool CircleRunner::prepare(const motion::metrology::CircularTest& test, motion::
     const auto found = motion::metrology::validate(test, lim);
     if (problems)
         problems->insert(problems->end(), found.begin(), found.end());
-    if (motion::metrology::hasErrors(found))
+    if (msg::hasErrors(found))
         return false;
     m_test = test;
     m_axisX = ax;

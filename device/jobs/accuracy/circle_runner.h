@@ -37,7 +37,7 @@ public:
 
     /// Checks the test against the instrument: X and Y, the soft limits, the feed, a path
     /// queue (Capability::PathQueue, with its reason when missing).
-    bool prepare(const motion::metrology::CircularTest& test, motion::metrology::Problems* problems);
+    bool prepare(const motion::metrology::CircularTest& test, msg::Problems* problems);
     /// Starts, or after a pause or stop runs the directions not yet done.
     bool start(msg::Message* why = nullptr);
     void pause();

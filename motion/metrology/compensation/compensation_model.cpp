@@ -101,30 +101,28 @@ double CompensationModel::correctionUm(double targetMm, Direction approach) cons
     return (commandMm(targetMm, approach) - targetMm) * 1e3;
 }
 
-Problems validate(const CompensationModel& m)
+msg::Problems validate(const CompensationModel& m)
 {
-    Problems out;
+    msg::Problems out;
     if (m.axis.size() != 1 || m.axis[0] < 'A' || m.axis[0] > 'Z')
-        out.push_back({"axis", msg::make("accuracy.axis_name_invalid", {msg::verbatim("axis", m.axis)}), false});
+        out.push_back({"axis", msg::make("accuracy.axis_name_invalid", {msg::verbatim("axis", m.axis)})});
     if (m.kind == CompensationModel::Kind::Polynomial) {
         const auto& c = m.polynomial.coefficientsUm;
         if (c.empty())
-            out.push_back({"polynomial.coefficients_um", msg::make("compensation.no_coefficients"), false});
+            out.push_back({"polynomial.coefficients_um", msg::make("compensation.no_coefficients")});
         if (c.size() > 6)
             out.push_back({"polynomial.coefficients_um",
                            msg::make("compensation.too_many_coefficients",
-                                     {msg::integer("count", static_cast<long long>(c.size())), msg::integer("max", 6)}),
-                           false});
+                                     {msg::integer("count", static_cast<long long>(c.size())), msg::integer("max", 6)})});
         for (std::size_t i = 0; i < c.size(); ++i)
             if (!std::isfinite(c[i]))
-                out.push_back({indexPath("polynomial.coefficients_um", i), msg::make("accuracy.value_not_finite"), false});
+                out.push_back({indexPath("polynomial.coefficients_um", i), msg::make("accuracy.value_not_finite")});
         const bool from = checkRange(out, "polynomial.valid_from_mm", m.validFromMm, -1e6, 1e6, msg::Unit::Mm);
         const bool to = checkRange(out, "polynomial.valid_to_mm", m.validToMm, -1e6, 1e6, msg::Unit::Mm);
         if (from && to && !(m.validToMm - m.validFromMm >= 2 * kMinTableSpacingMm))
             out.push_back({"polynomial.valid_to_mm", msg::make("compensation.range_too_short",
                                                                {msg::real("from", m.validFromMm, msg::Unit::Mm), msg::real("to", m.validToMm, msg::Unit::Mm),
-                                                                msg::real("min", 2 * kMinTableSpacingMm, msg::Unit::Mm)}),
-                           false});
+                                                                msg::real("min", 2 * kMinTableSpacingMm, msg::Unit::Mm)})});
         else if (from && to && !hasErrors(out)) {
             // A curve a device can apply: bounded and gentle over the range it is used on.
             for (int i = 0; i <= 100; ++i) {
@@ -133,15 +131,13 @@ Problems validate(const CompensationModel& m)
                 if (!(std::fabs(e) <= kMaxCorrectionUm)) {
                     out.push_back({"polynomial.coefficients_um", msg::make("compensation.curve_too_large",
                                                                            {msg::real("position", x, msg::Unit::Mm), msg::real("value", e, msg::Unit::Um),
-                                                                            msg::real("max", kMaxCorrectionUm, msg::Unit::Um)}),
-                                   false});
+                                                                            msg::real("max", kMaxCorrectionUm, msg::Unit::Um)})});
                     break;
                 }
                 if (!(std::fabs(slope) <= kMaxSlopeUmPerMm)) {
                     out.push_back({"polynomial.coefficients_um", msg::make("compensation.curve_too_steep",
                                                                            {msg::real("position", x, msg::Unit::Mm), msg::real("value", slope),
-                                                                            msg::real("max", kMaxSlopeUmPerMm)}),
-                                   false});
+                                                                            msg::real("max", kMaxSlopeUmPerMm)})});
                     break;
                 }
             }
@@ -149,11 +145,10 @@ Problems validate(const CompensationModel& m)
     } else {
         const auto n = static_cast<long long>(m.table.size());
         if (n < 2)
-            out.push_back({"table.points", msg::make("compensation.too_few_table_points", {msg::integer("count", n), msg::integer("min", 2)}), false});
+            out.push_back({"table.points", msg::make("compensation.too_few_table_points", {msg::integer("count", n), msg::integer("min", 2)})});
         if (m.table.size() > kMaxTablePoints)
             out.push_back({"table.points", msg::make("compensation.too_many_table_points",
-                                                     {msg::integer("count", n), msg::integer("max", static_cast<long long>(kMaxTablePoints))}),
-                           false});
+                                                     {msg::integer("count", n), msg::integer("max", static_cast<long long>(kMaxTablePoints))})});
         for (std::size_t i = 0; i < m.table.size(); ++i) {
             const std::string path = indexPath("table.points", i);
             const TablePoint& p = m.table[i];
@@ -163,14 +158,12 @@ Problems validate(const CompensationModel& m)
                 if (!(p.nominalMm > previous))
                     out.push_back({fieldPath(path, "nominal_mm"),
                                    msg::make("compensation.nominals_not_increasing",
-                                             {msg::real("value", p.nominalMm, msg::Unit::Mm), msg::real("previous", previous, msg::Unit::Mm)}),
-                                   false});
+                                             {msg::real("value", p.nominalMm, msg::Unit::Mm), msg::real("previous", previous, msg::Unit::Mm)})});
                 else if (p.nominalMm - previous < kMinTableSpacingMm * (1 - 1e-9))
                     out.push_back({fieldPath(path, "nominal_mm"),
                                    msg::make("compensation.nominals_too_close",
                                              {msg::real("value", p.nominalMm, msg::Unit::Mm), msg::real("previous", previous, msg::Unit::Mm),
-                                              msg::real("min", kMinTableSpacingMm, msg::Unit::Mm)}),
-                                   false});
+                                              msg::real("min", kMinTableSpacingMm, msg::Unit::Mm)})});
             }
             checkRange(out, fieldPath(path, m.perDirection ? "correction_up_um" : "correction_um"), p.correctionUpUm, -kMaxCorrectionUm,
                        kMaxCorrectionUm, msg::Unit::Um);
@@ -178,8 +171,7 @@ Problems validate(const CompensationModel& m)
                 checkRange(out, fieldPath(path, "correction_down_um"), p.correctionDownUm, -kMaxCorrectionUm, kMaxCorrectionUm, msg::Unit::Um);
         }
         if (m.perDirection && m.backlashUm != 0)
-            out.push_back({"backlash_um", msg::make("compensation.backlash_with_directions", {msg::real("value", m.backlashUm, msg::Unit::Um)}),
-                           false});
+            out.push_back({"backlash_um", msg::make("compensation.backlash_with_directions", {msg::real("value", m.backlashUm, msg::Unit::Um)})});
     }
     checkRange(out, "backlash_um", m.backlashUm, -kMaxCorrectionUm, kMaxCorrectionUm, msg::Unit::Um);
     return out;

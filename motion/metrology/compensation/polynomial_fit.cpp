@@ -125,18 +125,16 @@ FitTable fitPolynomials(const std::vector<FitPoint>& points, std::optional<int> 
     FitTable out;
     for (std::size_t i = 0; i < points.size(); ++i) {
         if (!std::isfinite(points[i].positionMm))
-            out.problems.push_back({fieldPath(indexPath("points", i), "position_mm"), msg::make("accuracy.value_not_finite"), false});
+            out.problems.push_back({fieldPath(indexPath("points", i), "position_mm"), msg::make("accuracy.value_not_finite")});
         if (!std::isfinite(points[i].errorUm))
-            out.problems.push_back({fieldPath(indexPath("points", i), "error_um"), msg::make("accuracy.value_not_finite"), false});
+            out.problems.push_back({fieldPath(indexPath("points", i), "error_um"), msg::make("accuracy.value_not_finite")});
     }
     if (operatorOrder && (*operatorOrder < 1 || *operatorOrder > kMaxFitOrder))
         out.problems.push_back({"order", msg::make("compensation.order_out_of_range",
-                                                   {msg::integer("order", *operatorOrder), msg::integer("min", 1), msg::integer("max", kMaxFitOrder)}),
-                                false});
+                                                   {msg::integer("order", *operatorOrder), msg::integer("min", 1), msg::integer("max", kMaxFitOrder)})});
     if (points.size() < 3)
         out.problems.push_back({"points", msg::make("compensation.too_few_points",
-                                                    {msg::integer("count", static_cast<long long>(points.size())), msg::integer("min", 3)}),
-                                false});
+                                                    {msg::integer("count", static_cast<long long>(points.size())), msg::integer("min", 3)})});
     if (hasErrors(out.problems))
         return out;
 
@@ -149,8 +147,7 @@ FitTable fitPolynomials(const std::vector<FitPoint>& points, std::optional<int> 
             out.problems.push_back({"order", msg::make("compensation.order_needs_more_points",
                                                        {msg::integer("order", *operatorOrder),
                                                         msg::integer("count", static_cast<long long>(points.size())),
-                                                        msg::integer("min", *operatorOrder + 2)}),
-                                    false});
+                                                        msg::integer("min", *operatorOrder + 2)})});
             return out;
         }
         out.chosenOrder = *operatorOrder;
@@ -169,8 +166,7 @@ FitTable fitPolynomials(const std::vector<FitPoint>& points, std::optional<int> 
     }
     if (!best) {
         out.problems.push_back({"points", msg::make("compensation.too_few_points",
-                                                    {msg::integer("count", static_cast<long long>(distinctPositions(points))), msg::integer("min", 3)}),
-                                false});
+                                                    {msg::integer("count", static_cast<long long>(distinctPositions(points))), msg::integer("min", 3)})});
         return out;
     }
     out.chosenOrder = best->order;

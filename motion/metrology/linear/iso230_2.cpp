@@ -63,16 +63,16 @@ Evaluation evaluate(const std::vector<Reading>& readings, const EvaluationOption
         const Reading& r = readings[k];
         bool good = true;
         if (!std::isfinite(r.targetMm)) {
-            out.problems.push_back({fieldPath(readingPath(k), "target_mm"), msg::make("accuracy.value_not_finite"), false});
+            out.problems.push_back({fieldPath(readingPath(k), "target_mm"), msg::make("accuracy.value_not_finite")});
             good = false;
         }
         if (!std::isfinite(r.measuredMm)) {
-            out.problems.push_back({fieldPath(readingPath(k), "measured_mm"), msg::make("accuracy.value_not_finite"), false});
+            out.problems.push_back({fieldPath(readingPath(k), "measured_mm"), msg::make("accuracy.value_not_finite")});
             good = false;
         }
         if (r.cycle < 1) {
             out.problems.push_back({fieldPath(readingPath(k), "cycle"),
-                                    msg::make("accuracy.value_below", {msg::integer("value", r.cycle), msg::integer("min", 1)}), false});
+                                    msg::make("accuracy.value_below", {msg::integer("value", r.cycle), msg::integer("min", 1)})});
             good = false;
         }
         if (!good)
@@ -83,8 +83,7 @@ Evaluation evaluate(const std::vector<Reading>& readings, const EvaluationOption
             out.problems.push_back({readingPath(k),
                                     msg::make("accuracy.duplicate_reading",
                                               {targetArg(r.targetMm), msg::term("direction", directionTermId(r.direction)),
-                                               msg::integer("cycle", r.cycle), msg::integer("first", static_cast<long long>(it->second))}),
-                                    false});
+                                               msg::integer("cycle", r.cycle), msg::integer("first", static_cast<long long>(it->second))})});
             continue;
         }
         seen.emplace(id, k);
@@ -100,8 +99,7 @@ Evaluation evaluate(const std::vector<Reading>& readings, const EvaluationOption
         return out;
     if (groups.size() < static_cast<std::size_t>(kMinTargets)) {
         out.problems.push_back({"readings", msg::make("accuracy.too_few_targets",
-                                                      {msg::integer("count", static_cast<long long>(groups.size())), msg::integer("min", kMinTargets)}),
-                                false});
+                                                      {msg::integer("count", static_cast<long long>(groups.size())), msg::integer("min", kMinTargets)})});
         return out;
     }
 
@@ -117,8 +115,7 @@ Evaluation evaluate(const std::vector<Reading>& readings, const EvaluationOption
         if (s.deviationsMm.empty()) {
             out.problems.push_back({readingPath(other.firstReading),
                                     msg::make("accuracy.direction_missing",
-                                              {targetArg(g.targetMm), msg::term("direction", directionTermId(d))}),
-                                    false});
+                                              {targetArg(g.targetMm), msg::term("direction", directionTermId(d))})});
             return;
         }
         const auto n = static_cast<long long>(s.deviationsMm.size());
@@ -126,8 +123,7 @@ Evaluation evaluate(const std::vector<Reading>& readings, const EvaluationOption
             out.problems.push_back({readingPath(s.firstReading),
                                     msg::make("accuracy.too_few_cycles",
                                               {msg::integer("count", n), msg::integer("min", kMinCycles), targetArg(g.targetMm),
-                                               msg::term("direction", directionTermId(d))}),
-                                    false});
+                                               msg::term("direction", directionTermId(d))})});
             return;
         }
         if (s.deviationsMm.size() != expected)
@@ -135,7 +131,7 @@ Evaluation evaluate(const std::vector<Reading>& readings, const EvaluationOption
                                     msg::make("accuracy.cycle_counts_differ",
                                               {targetArg(g.targetMm), msg::term("direction", directionTermId(d)), msg::integer("count", n),
                                                msg::integer("expected", static_cast<long long>(expected))}),
-                                    options.allowUnequalCycles});
+                                    options.allowUnequalCycles ? msg::Severity::Warning : msg::Severity::Error});
     };
     for (const auto& [key, g] : groups) {
         checkSample(g, g.up, g.down, Direction::Up);
@@ -171,8 +167,7 @@ Evaluation summarize(std::vector<TargetStatistics> targets, bool bidirectional)
     out.bidirectional = bidirectional;
     if (targets.size() < static_cast<std::size_t>(kMinTargets)) {
         out.problems.push_back({"targets", msg::make("accuracy.too_few_targets",
-                                                     {msg::integer("count", static_cast<long long>(targets.size())), msg::integer("min", kMinTargets)}),
-                                false});
+                                                     {msg::integer("count", static_cast<long long>(targets.size())), msg::integer("min", kMinTargets)})});
         return out;
     }
     for (std::size_t i = 0; i < targets.size(); ++i) {
@@ -181,12 +176,11 @@ Evaluation summarize(std::vector<TargetStatistics> targets, bool bidirectional)
         if (i > 0 && !(t.targetMm > targets[i - 1].targetMm))
             out.problems.push_back({fieldPath(path, "target_mm"),
                                     msg::make("accuracy.targets_not_increasing",
-                                              {msg::real("value", t.targetMm, msg::Unit::Mm), msg::real("previous", targets[i - 1].targetMm, msg::Unit::Mm)}),
-                                    false});
+                                              {msg::real("value", t.targetMm, msg::Unit::Mm), msg::real("previous", targets[i - 1].targetMm, msg::Unit::Mm)})});
         const bool finite = std::isfinite(t.targetMm) && std::isfinite(t.meanUpMm) && std::isfinite(t.sUpMm) && t.sUpMm >= 0
             && (!bidirectional || (t.meanDownMm && t.sDownMm && std::isfinite(*t.meanDownMm) && std::isfinite(*t.sDownMm) && *t.sDownMm >= 0));
         if (!finite)
-            out.problems.push_back({path, msg::make("accuracy.statistics_incomplete", {targetArg(t.targetMm)}), false});
+            out.problems.push_back({path, msg::make("accuracy.statistics_incomplete", {targetArg(t.targetMm)})});
     }
     if (hasErrors(out.problems))
         return out;

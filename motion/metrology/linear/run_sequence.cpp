@@ -41,16 +41,15 @@ std::size_t readingCount(const AxisTest& t)
 
 namespace motion::metrology {
 
-Problems checkAgainstPlan(const AxisTest& t, const std::vector<Reading>& readings)
+msg::Problems checkAgainstPlan(const AxisTest& t, const std::vector<Reading>& readings)
 {
-    Problems out;
+    msg::Problems out;
     const std::vector<Stop> plan = runSequence(t);
     if (plan.empty())
         return validate(t);
     if (readings.size() != plan.size())
         out.push_back({"readings", msg::make("accuracy.reading_count_wrong", {msg::integer("count", static_cast<long long>(readings.size())),
-                                                                              msg::integer("expected", static_cast<long long>(plan.size()))}),
-                       false});
+                                                                              msg::integer("expected", static_cast<long long>(plan.size()))})});
     auto key = [](double targetMm, Direction d, int cycle) {
         return std::to_string(std::llround(targetMm * 1e6)) + (d == Direction::Up ? "u" : "d") + std::to_string(cycle);
     };
@@ -64,8 +63,7 @@ Problems checkAgainstPlan(const AxisTest& t, const std::vector<Reading>& reading
         if (it == planned.end())
             out.push_back({indexPath("readings", k),
                            msg::make("accuracy.reading_not_in_plan", {msg::real("target", r.targetMm, msg::Unit::Mm),
-                                                                      msg::term("direction", directionTermId(r.direction)), msg::integer("cycle", r.cycle)}),
-                           false});
+                                                                      msg::term("direction", directionTermId(r.direction)), msg::integer("cycle", r.cycle)})});
         else
             read[it->second] = true;
     }
@@ -73,8 +71,7 @@ Problems checkAgainstPlan(const AxisTest& t, const std::vector<Reading>& reading
         if (!read[i]) {
             out.push_back({"readings", msg::make("accuracy.reading_missing", {msg::real("target", plan[i].targetMm, msg::Unit::Mm),
                                                                               msg::term("direction", directionTermId(plan[i].direction)),
-                                                                              msg::integer("cycle", plan[i].cycle)}),
-                           false});
+                                                                              msg::integer("cycle", plan[i].cycle)})});
             break;
         }
     return out;

@@ -44,9 +44,9 @@ void footprintBox(const Slot& s, double* x0, double* y0, double* x1, double* y1)
 }
 } // namespace
 
-Problems validateDeck(const Deck& d)
+msg::Problems validateDeck(const Deck& d)
 {
-    Problems out;
+    msg::Problems out;
     for (auto [name, v] : {std::pair{"travel_x_mm", d.travelXMm}, std::pair{"travel_y_mm", d.travelYMm},
                            std::pair{"travel_z_mm", d.travelZMm}, std::pair{"table_z_mm", d.tableZMm},
                            std::pair{"syringe_ul", d.syringeUl}})

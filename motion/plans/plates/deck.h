@@ -63,6 +63,6 @@ struct Deck {
 
 /// Ids unique and present, speeds and accelerations positive, slots and
 /// stations inside the travel, a plate in one slot not overlapping another's.
-Problems validateDeck(const Deck& deck);
+msg::Problems validateDeck(const Deck& deck);
 
 } // namespace plates

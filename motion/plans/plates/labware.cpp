@@ -112,9 +112,9 @@ std::optional<Labware> findBuiltinLabware(const std::string& id)
     return std::nullopt;
 }
 
-Problems validateLabware(const Labware& lw)
+msg::Problems validateLabware(const Labware& lw)
 {
-    Problems out;
+    msg::Problems out;
     auto bad = [](double v) { return !std::isfinite(v) || v <= 0; };
     if (lw.id.empty())
         out.push_back({"id", msg::make("plate.empty")});

@@ -78,6 +78,6 @@ std::optional<Labware> findBuiltinLabware(const std::string& id);
 
 /// Every problem of a definition: grid, names, wells off the footprint,
 /// non-positive sizes, a well deeper than the plate.
-Problems validateLabware(const Labware& labware);
+msg::Problems validateLabware(const Labware& labware);
 
 } // namespace plates

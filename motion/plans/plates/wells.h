@@ -34,7 +34,7 @@ std::optional<WellId> parseWellName(std::string_view text);
 
 struct WellSet {
     std::vector<WellId> wells;  ///< in the order written; a range runs row by row from its first corner
-    Problems problems;          ///< at `path`, or `path[k]` for the k-th spec of a list
+    msg::Problems problems;          ///< at `path`, or `path[k]` for the k-th spec of a list
 };
 
 /// Expands well specs against `labware`. `path` names the field for messages

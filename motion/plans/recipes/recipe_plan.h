@@ -75,7 +75,7 @@ struct WellTotal {
 
 struct RecipePlan {
     std::vector<PlanOp> ops;
-    Problems problems;
+    msg::Problems problems;
     double totalTimeS = 0;
     double pumpStartUl = 0, pumpEndUl = 0;
     double totalDispensedUl = 0, totalAspiratedUl = 0;

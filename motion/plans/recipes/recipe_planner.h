@@ -34,8 +34,8 @@ public:
     RecipePlan run();
 
 private:
-    void error(const std::string& path, msg::Message message) { m_plan.problems.push_back({path, std::move(message), false}); }
-    void warning(const std::string& path, msg::Message message) { m_plan.problems.push_back({path, std::move(message), true}); }
+    void error(const std::string& path, msg::Message message) { m_plan.problems.push_back(msg::error(path, std::move(message))); }
+    void warning(const std::string& path, msg::Message message) { m_plan.problems.push_back(msg::warning(path, std::move(message))); }
 
     static msg::Arg volume(std::string name, double v) { return ulArg(std::move(name), std::round(v * 1000) / 1000); }
 

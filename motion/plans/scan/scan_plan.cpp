@@ -89,8 +89,8 @@ msg::Arg mm(std::string name, double v) { return msg::real(std::move(name), v, U
 
 class Checker {
 public:
-    explicit Checker(std::vector<PlanProblem>& out) : m_out(out) {}
-    void add(std::string field, msg::Message message) { m_out.push_back({std::move(field), std::move(message)}); }
+    explicit Checker(msg::Problems& out) : m_out(out) {}
+    void add(std::string field, msg::Message message) { m_out.push_back(msg::error(std::move(field), std::move(message))); }
     /// Finite and inside [lo, hi].
     bool range(const std::string& field, double v, double lo, double hi, Unit unit = Unit::None)
     {
@@ -115,7 +115,7 @@ public:
     }
 
 private:
-    std::vector<PlanProblem>& m_out;
+    msg::Problems& m_out;
 };
 
 void checkRegion(const Region& r, Checker& c)
@@ -179,9 +179,9 @@ void checkCamera(const Camera& cam, Checker& c)
 
 } // namespace
 
-std::vector<PlanProblem> validate(const ScanPlan& plan)
+msg::Problems validate(const ScanPlan& plan)
 {
-    std::vector<PlanProblem> out;
+    msg::Problems out;
     Checker c(out);
     checkRegion(plan.region, c);
     checkCamera(plan.camera, c);
@@ -217,9 +217,9 @@ std::vector<PlanProblem> validate(const ScanPlan& plan)
     return out;
 }
 
-std::vector<PlanProblem> validate(const ScanPlan& plan, const StageModel& stage)
+msg::Problems validate(const ScanPlan& plan, const StageModel& stage)
 {
-    std::vector<PlanProblem> out = validate(plan);
+    msg::Problems out = validate(plan);
     Checker c(out);
     const Rect t = stage.travel;
     const double w = fieldWidthMm(plan.camera), h = fieldHeightMm(plan.camera);

@@ -5,6 +5,7 @@
 // once; the tile grid (scan_layout.h) and the time estimate (scan_estimate.h) are
 // computed from it. The file format is device/files/scan_plan_file.h, docs/scan.md.
 #include "motion/message.h"
+#include "motion/problem.h"
 #include "motion/plans/scan/scan_geometry.h"
 
 #include <optional>
@@ -105,24 +106,20 @@ struct StageModel {
     double maxJerkMmS3[2] = {4000, 4000};
 };
 
-/// One thing wrong with a plan. `field` is the member's path in the plan file
-/// ("camera.overlap", "region.vertices_mm[3]"), so the file reader can point at it
-/// and the CLI can name its option.
-struct PlanProblem {
-    std::string field;
-    msg::Message message;  ///< scan.* (docs/scan.md, "Messages")
-};
 
 /// Limits a plan must respect.
 constexpr double kMaxOverlap = 0.9;
 constexpr std::size_t kMaxPolygonVertices = 1000;
 constexpr long kMaxTiles = 250000;  ///< 500 × 500: far beyond any slide, well inside memory
 
-/// Every problem of the plan on its own (empty = valid): what the grid needs.
-std::vector<PlanProblem> validate(const ScanPlan& plan);
+/// Every problem of the plan on its own (empty = valid): what the grid needs. Each
+/// problem's path is the member's path in the plan file ("camera.overlap",
+/// "region.vertices_mm[3]"), so the file reader can point at it and the CLI can name
+/// its option; its message is scan.* (docs/scan.md, "Messages").
+msg::Problems validate(const ScanPlan& plan);
 /// …and against a stage: the region inside its travel, the field no larger than
 /// it, the speed within its limits.
-std::vector<PlanProblem> validate(const ScanPlan& plan, const StageModel& stage);
+msg::Problems validate(const ScanPlan& plan, const StageModel& stage);
 
 /// The position to command for a planned one: the planned position itself. With the
 /// device's compensation the device moves it by the correction; the host never does.

@@ -17,7 +17,7 @@ void check(std::string_view input)
 {
     using namespace accuracyfiles;
     const AnalyzedReadings a = analyzeReadingsCsv(input, "fuzz.csv");
-    for (const FileProblem& p : a.problems)
+    for (const msg::Problem& p : a.problems)
         if (p.file != "fuzz.csv" || p.message.id.empty())
             fuzzfiles::fail("a problem that does not say where or what: " + debugFormat(a.problems));
     if (!a.read.ok())

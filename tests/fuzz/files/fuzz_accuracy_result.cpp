@@ -28,7 +28,7 @@ void check(std::string_view input)
 {
     using namespace accuracyfiles;
     const AccuracyResultRead r = accuracyResultFromJson(input, "fuzz.json");
-    for (const FileProblem& p : r.problems)
+    for (const msg::Problem& p : r.problems)
         if (p.file != "fuzz.json" || p.line < 1 || p.message.id.empty())
             fuzzfiles::fail("a problem that does not say where or what: " + debugFormat(r.problems));
     if (!r.result) {

@@ -16,7 +16,7 @@ void check(std::string_view input)
 {
     using namespace accuracyfiles;
     const ErrorCurveRead r = errorCurveFromCsv(input, "fuzz.csv");
-    for (const FileProblem& p : r.problems)
+    for (const msg::Problem& p : r.problems)
         if (p.file != "fuzz.csv" || p.message.id.empty())
             fuzzfiles::fail("a problem that does not say where or what: " + debugFormat(r.problems));
     if (!r.ok())

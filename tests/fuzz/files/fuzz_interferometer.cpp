@@ -14,11 +14,11 @@ const std::string kSequence = "index,target_mm,direction,cycle,time_s,settled\r\
 
 std::vector<accuracyfiles::SequenceStop> sequence() { return accuracyfiles::targetSequenceFromCsv(kSequence, "seq.csv").stops; }
 
-void checkProblems(const accuracyfiles::FileProblems& problems, const char* file)
+void checkProblems(const msg::Problems& problems, const char* file)
 {
     for (const auto& p : problems)
         if (p.file != file || p.message.id.empty())
-            fuzzfiles::fail("a problem that does not say where or what: " + accuracyfiles::debugFormat(problems));
+            fuzzfiles::fail("a problem that does not say where or what: " + msg::debugFormat(problems));
 }
 
 void checkSequence(std::string_view input)

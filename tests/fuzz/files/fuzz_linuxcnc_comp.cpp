@@ -20,7 +20,7 @@ void check(std::string_view input)
     using namespace accuracyfiles;
     for (auto type : {LinuxcncCompType::ActualPositions, LinuxcncCompType::Corrections}) {
         const LinuxcncRead r = linuxcncFromText(input, "fuzz.comp", type);
-        for (const FileProblem& p : r.problems)
+        for (const msg::Problem& p : r.problems)
             if (p.file != "fuzz.comp" || p.message.id.empty())
                 fuzzfiles::fail("a problem that does not say where or what: " + debugFormat(r.problems));
         if (!r.model)

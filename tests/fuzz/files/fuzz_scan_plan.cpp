@@ -27,7 +27,7 @@ void checkPlan(std::string_view input)
         if (r.problems.empty())
             fuzzfiles::fail("a refused plan without a problem");
         for (const auto& p : r.problems.list())
-            if (p.message.empty() || p.position.line < 1)
+            if (p.message.empty() || p.line < 1)
                 fuzzfiles::fail("a problem without a message or a place");
         return;
     }

@@ -33,7 +33,7 @@ void check(std::string_view input)
             fuzzfiles::fail("a refusal without a problem");
         const long lines = 1 + std::count(input.begin(), input.end(), '\n');
         for (const auto& p : r.problems.list())
-            if (p.position.line < 0 || p.position.line > lines || p.message.empty())
+            if (p.line < 0 || p.line > lines || p.message.empty())
                 fuzzfiles::fail("a problem outside the text or without a message: " + r.problems.format("fuzz.tuning.json"));
         return;
     }

@@ -123,7 +123,7 @@ LinuxcncRead linuxcncFromText(std::string_view text, std::string_view fileName, 
         }
         if (fields.size() != 3) {
             out.problems.push_back({file, line, 1, "",
-                                    msg::make("compensation.linuxcnc.not_a_triplet", {msg::integer("count", static_cast<long long>(fields.size()))}), false});
+                                    msg::make("compensation.linuxcnc.not_a_triplet", {msg::integer("count", static_cast<long long>(fields.size()))})});
             continue;
         }
         double v[3] = {0, 0, 0};
@@ -134,7 +134,7 @@ LinuxcncRead linuxcncFromText(std::string_view text, std::string_view fileName, 
             const auto n = parseNumber(fields[static_cast<std::size_t>(k)]);
             if (!n || !std::isfinite(*n)) {
                 out.problems.push_back({file, line, static_cast<int>(column), "",
-                                        msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", fields[static_cast<std::size_t>(k)])}), false});
+                                        msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", fields[static_cast<std::size_t>(k)])})});
                 good = false;
                 break;
             }
@@ -152,13 +152,13 @@ LinuxcncRead linuxcncFromText(std::string_view text, std::string_view fileName, 
     if (hasErrors(out.problems))
         return out;
     // The table's own checks, placed on the line of the point they name.
-    for (const motion::metrology::Problem& p : motion::metrology::validate(m)) {
+    for (const msg::Problem& p : motion::metrology::validate(m)) {
         int at = 0;
         if (p.path.rfind("table.points[", 0) == 0) {
             const auto k = static_cast<std::size_t>(std::atoi(p.path.c_str() + 13));
             at = k < pointLines.size() ? pointLines[k] : 0;
         }
-        out.problems.push_back({file, at, at > 0 ? 1 : 0, p.path, p.message, p.warning});
+        out.problems.push_back({file, at, at > 0 ? 1 : 0, p.path, p.message, p.severity});
     }
     if (!hasErrors(out.problems))
         out.model = m;

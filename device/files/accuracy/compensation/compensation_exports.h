@@ -41,7 +41,7 @@ std::string linuxcncCompensation(const motion::metrology::CompensationModel& m, 
 
 struct LinuxcncRead {
     std::optional<motion::metrology::CompensationModel> model;  ///< a per-direction table
-    FileProblems problems;
+    msg::Problems problems;
 };
 /// A LinuxCNC compensation file of the given type, back to a per-direction table.
 /// Stricter than LinuxCNC: a line that is not three numbers is an error here (there

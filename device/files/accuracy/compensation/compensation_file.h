@@ -40,7 +40,7 @@ std::string compensationToJson(const CompensationFile& c);
 
 struct CompensationRead {
     std::optional<CompensationFile> compensation;
-    FileProblems problems;
+    msg::Problems problems;
 };
 /// Plain C++: what the fuzzer drives.
 CompensationRead compensationFromJson(std::string_view text, std::string_view fileName);
