@@ -313,7 +313,11 @@ void rewordWidget(QWidget* w, Rewording& r)
         r.field(contexts, [s] { return s->prefix(); }, [s](const QString& t) { s->setPrefix(t); });
     }
     if (auto* c = qobject_cast<QComboBox*>(w)) {
-        for (int i = 0; i < c->count(); ++i) {
+        // A combo that lists names from a file (a recipe's plates) says so: a name that is
+        // also a word of the screen ("samples") is still the name the file and the code
+        // look it up by, and a rewording would lose it.
+        const int items = c->property(Retranslator::kItemsAreNames).toBool() ? 0 : c->count();
+        for (int i = 0; i < items; ++i) {
             // An item whose data is an id of its own (a step type) is a worded term; one with
             // no data, or its text as its data (a station, a plate), may be a name.
             const QVariant data = c->itemData(i);

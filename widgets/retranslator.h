@@ -30,6 +30,8 @@ public:
     /// One text from `from` to `to`; `contexts` are the class names to prefer, nearest
     /// first. The text itself when the catalogue does not have it.
     static QString reword(const QString& text, const QStringList& contexts, const QString& from, const QString& to);
+    /// A combo's bool property: its items are names (data), never reworded.
+    static constexpr const char* kItemsAreNames = "bpItemsAreNames";
 };
 
 } // namespace ui

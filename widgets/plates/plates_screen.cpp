@@ -11,6 +11,7 @@
 #include "widgets/plates/plate_map.h"
 #include "widgets/plates/recipe_editor.h"
 #include "widgets/plates/run_panel.h"
+#include "widgets/retranslator.h"
 
 #include "widgets/wording/wording.h"
 
@@ -49,6 +50,7 @@ PlatesScreen::PlatesScreen(dev::Instrument* analyzer, QWidget* parent)
     auto* pick = new QHBoxLayout;
     pick->addWidget(new QLabel(tr("Plate"), left));
     m_plate = new QComboBox(left);
+    m_plate->setProperty(Retranslator::kItemsAreNames, true);  // the recipe's plate names, looked up by text
     pick->addWidget(m_plate, 1);
     lv->addLayout(pick);
     m_map = new PlateMap(left);
