@@ -21,7 +21,7 @@ PlotStack::PlotStack(const PlotDataSource* source, QWidget* parent)
     // which saves clearing and compositing a full-size ARGB image every frame.
     layer(QStringLiteral("overlay"))->setMode(QCPLayer::lmLogical);
     setNotAntialiasedElements(QCP::aeAll);
-    m_timeTitle = tr("Time (s, 0 = newest sample)");
+    setProperty(kTimeTitleProperty, tr("Time (s, 0 = newest sample)"));
     addPanel();
 }
 
@@ -93,14 +93,14 @@ void PlotStack::relabel()
 {
     m_layoutDirty = true;
     for (int i = 0; i < m_panels.size(); ++i) {
-        m_panels[i]->setTimeLabelsVisible(i == m_panels.size() - 1, m_timeTitle);
+        m_panels[i]->setTimeLabelsVisible(i == m_panels.size() - 1, property(kTimeTitleProperty).toString());
         m_panels[i]->setHighlighted(i == m_highlighted && m_panels.size() > 1);
     }
 }
 
 void PlotStack::setTimeTitle(const QString& title)
 {
-    m_timeTitle = title;
+    setProperty(kTimeTitleProperty, title);
     relabel();
 }
 

@@ -57,6 +57,10 @@ public:
     /// Re-reads every channel for the present range and size and replots now.
     void redraw();
     void setTimeTitle(const QString& title);
+    /// The time axis's title is kept as a string property, not a member: the run-time
+    /// rewording (retranslator.h) rewords a widget's string properties, so a panel
+    /// labelled after a language switch gets the title in the new language.
+    static constexpr const char* kTimeTitleProperty = "bpTimeTitle";
     void setHighlightedPanel(int index);
 
 signals:
@@ -90,7 +94,6 @@ private:
     /// columns off for one frame.
     bool m_layoutDirty = true;
     int m_highlighted = -1;
-    QString m_timeTitle;
 };
 
 } // namespace ui

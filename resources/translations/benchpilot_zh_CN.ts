@@ -2149,16 +2149,6 @@ Options:
         <translation>--profile：%1</translation>
     </message>
     <message>
-        <source>with --port: the machine profile of a GRBL controller (docs/grbl.md)</source>
-        <translation>与 --port 一起使用：GRBL 控制器的机器配置文件（docs/grbl.md）</translation>
-        <source>the in-process simulator: analyzer or stage (default: analyzer); with --attach, which of the GUI&apos;s instruments</source>
-        <translation>进程内仿真器：analyzer 或 stage（默认：analyzer）；与 --attach 一起使用时，指图形界面中的哪台仪器</translation>
-    </message>
-    <message>
-        <source>with --port: which instrument it is, analyzer or stage (default: what the device says; a GRBL controller: the profile&apos;s, else the analyzer)</source>
-        <translation>与 --port 一起使用：它是哪台仪器，analyzer 或 stage（默认：以设备所报为准；GRBL 控制器：以配置文件为准，否则为分析仪）</translation>
-    </message>
-    <message>
         <source>with --port: the machine profile of a GRBL controller, a file or the name of one BenchPilot ships (stage-grbl-uno; docs/grbl.md)</source>
         <translation>与 --port 一起使用：GRBL 控制器的机器配置文件，可以是文件，也可以是 BenchPilot 自带配置的名称（stage-grbl-uno；docs/grbl.md）</translation>
     </message>
@@ -2495,6 +2485,8 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>--profile goes with --port</source>
         <translation>--profile 须与 --port 一起使用</translation>
+    </message>
+    <message>
         <source>--new-run keeps every run; --restart sets one aside: give one of them</source>
         <translation>--new-run 保留每次运行，--restart 把一次运行放到一边：只能给其中一个</translation>
     </message>
@@ -2505,6 +2497,8 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>%1 holds a finished run of this test: its results follow, nothing was moved. To run the test again beside it (after compensation), add --new-run: it goes into %2 and both are kept.</source>
         <translation>%1 中已有此测试完成的一次运行：下面是它的结果，机器没有移动。要在它旁边再运行一次此测试（例如补偿之后），请加上 --new-run：它写入 %2，两次运行都会保留。</translation>
+    </message>
+    <message>
         <source>  verdict: settled
 </source>
         <translation>  判定：已稳定
@@ -3884,6 +3878,8 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
     <message>
         <source>Axis %1: %2</source>
         <translation>%1 轴：%2</translation>
+    </message>
+    <message>
         <source>Unknown: the instrument is not connected</source>
         <translation>未知：仪器未连接</translation>
     </message>
@@ -5077,10 +5073,6 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Hold-to-jog speed as a share of each axis&apos; maximum; hold Shift for full speed</source>
         <translation>按住点动的速度占各轴最大速度的比例；按住 Shift 为全速</translation>
-    </message>
-    <message>
-        <source>Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift fast, Space stop, Esc E-stop</source>
-        <translation>按键：←/→ X，↑/↓ Y，PgUp/PgDn Z，Shift 快速，空格停止，Esc 急停</translation>
     </message>
     <message>
         <source>%1 %</source>

@@ -58,9 +58,14 @@ void NumberField::setFieldName(const QString& name)
     check();
 }
 
+// The help is kept as a string property, not a member: the run-time rewording
+// (retranslator.h) rewords a widget's string properties, so a language switch finds the
+// help in the new language when the tooltip is next shown from it.
+static constexpr const char* kHelpProperty = "bpNumberFieldHelp";
+
 void NumberField::setHelp(const QString& help)
 {
-    m_help = help;
+    setProperty(kHelpProperty, help);
     check();
 }
 
@@ -197,7 +202,7 @@ void NumberField::check()
     const bool partial = m_typing && r.partial;
     const QString shown = partial ? QString() : r.problem;
     setStyleSheet(shown.isEmpty() ? QString() : QStringLiteral("QLineEdit { background: #fdd; border: 1px solid #b00020; }"));
-    setToolTip(shown.isEmpty() ? m_help : shown);
+    setToolTip(shown.isEmpty() ? property(kHelpProperty).toString() : shown);
     setProperty("invalid", !shown.isEmpty());
     emit entryChanged(r.problem.isEmpty());
 }

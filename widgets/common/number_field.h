@@ -91,7 +91,6 @@ private:
     char m_format = 'g';
     int m_precision = 6;
     QString m_name;
-    QString m_help;
     QLabel* m_unit = nullptr;
     bool m_typing = false;       ///< the text came from the operator's keys and the entry is not finished
     bool m_editPending = false;  ///< textEdited seen, its textChanged not yet

@@ -144,7 +144,7 @@ void checkLine(const QByteArray& line)
                         continue;
                     CHECK(w.startsWith(QLatin1String("--")), "an option word '%s' without --", qPrintable(w));
                     const QString name = w.mid(2).section(QLatin1Char('='), 0, 0);
-                    bool known = name == QLatin1String("sim") || name == QLatin1String("timeout");
+                    bool known = name == QLatin1String("sim") || name == QLatin1String("instrument") || name == QLatin1String("timeout");
                     for (const auto& o : m->command->options)
                         known = known || o.names().contains(name);
                     CHECK(known, "'%s' is not an option of %s", qPrintable(name), qPrintable(m->method));
