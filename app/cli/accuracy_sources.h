@@ -12,15 +12,18 @@
 
 #include <memory>
 
-namespace cli {
+namespace app::cli {
 
 class CliSession;
+// Unqualified in the declarator: lupdate takes a qualified return type for the
+// function's class and would file the strings below under that context.
+using ReadingSource = dev::jobs::ReadingSource;
 
 /// The source, owned by `owner`; nullptr after reporting why (exit Usage).
-jobs::ReadingSource* makeSource(Invocation& inv, CliSession& session, const QString& spec, int axis, QObject* owner);
+ReadingSource* makeSource(Invocation& inv, CliSession& session, const QString& spec, int axis, QObject* owner);
 
 /// Answers a ManualSource's prompts from stdin, one reading a line ("10.0012", "10.0012 mm",
 /// "12.3 um"; for two axes "x y"); "q" aborts. Ends when the source is gone.
-void attachStdinPrompter(Invocation& inv, jobs::ReadingSource* source, const std::function<void()>& onQuit);
+void attachStdinPrompter(Invocation& inv, dev::jobs::ReadingSource* source, const std::function<void()>& onQuit);
 
-} // namespace cli
+} // namespace app::cli

@@ -16,7 +16,7 @@
 #include <optional>
 #include <vector>
 
-namespace cli {
+namespace app::cli {
 
 /// Exit codes: 0 ok, 1 usage, 2 refused by the device or failed motion, 3 link trouble.
 enum ExitCode { Ok = 0, Usage = 1, Refused = 2, LinkTrouble = 3 };
@@ -276,7 +276,7 @@ const Command* findCommand(const QStringList& args, QString* path = nullptr);
 QString methodName(const QString& path, const Command& c);
 
 /// An option for a command's list: no `valueName` makes a flag, `fallback` is its
-/// default; the description is translated in the "cli" context.
+/// default; the description is translated in the "app::cli" context.
 QCommandLineOption option(const char* name, const char* description, const char* valueName = nullptr,
                           const char* fallback = nullptr);
 
@@ -297,4 +297,4 @@ QString commandHelp(const QString& path, const Command& c);
 /// The options every command accepts (--sim, --port, --baud, --instrument, --profile, --json, --timeout).
 QList<QCommandLineOption> globalOptions();
 
-} // namespace cli
+} // namespace app::cli

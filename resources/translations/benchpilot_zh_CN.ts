@@ -108,480 +108,6 @@ Skip counts the well as done; Do again repeats it in full.</source>
     </message>
 </context>
 <context>
-    <name>api</name>
-    <message>
-        <source>expected an array of numbers, got %1</source>
-        <translation>应为数字数组，收到 %1</translation>
-    </message>
-    <message>
-        <source>expected an array of numbers, found %1 in it</source>
-        <translation>应为数字数组，但其中含有 %1</translation>
-    </message>
-    <message>
-        <source>analyzer or stage; may be left out when only one is connected</source>
-        <translation>analyzer 或 stage；只连接了一台仪器时可省略</translation>
-    </message>
-    <message>
-        <source>longest wait for motion to finish, s (default: 120)</source>
-        <translation>等待运动结束的最长时间，s（默认：120）</translation>
-    </message>
-    <message>
-        <source>the lease from control.acquire (needed only when setting)</source>
-        <translation>control.acquire 返回的控制权令牌（仅在设置时需要）</translation>
-    </message>
-    <message>
-        <source>the lease from control.acquire</source>
-        <translation>control.acquire 返回的控制权令牌</translation>
-    </message>
-    <message>
-        <source>unknown parameter (this method takes none)</source>
-        <translation>未知参数（此方法不接受参数）</translation>
-    </message>
-    <message>
-        <source>unknown parameter (parameters: %1)</source>
-        <translation>未知参数（参数有：%1）</translation>
-    </message>
-    <message>
-        <source>required</source>
-        <translation>必需</translation>
-    </message>
-    <message>
-        <source>given without %1, which comes before it</source>
-        <translation>给出了该参数，却缺少排在它前面的 %1</translation>
-    </message>
-    <message>
-        <source>expected true or false, got %1</source>
-        <translation>应为 true 或 false，收到 %1</translation>
-    </message>
-    <message>
-        <source>expected a number, got %1</source>
-        <translation>应为数字，收到 %1</translation>
-    </message>
-    <message>
-        <source>expected a whole number, got %1</source>
-        <translation>应为整数，收到 %1</translation>
-    </message>
-    <message>
-        <source>expected one axis letter such as &quot;X&quot;, got %1</source>
-        <translation>应为一个轴字母，如 &quot;X&quot;，收到 %1</translation>
-    </message>
-    <message>
-        <source>expected axis letters such as &quot;XY&quot; or [&quot;X&quot;, &quot;Y&quot;]</source>
-        <translation>应为轴字母，如 &quot;XY&quot; 或 [&quot;X&quot;, &quot;Y&quot;]</translation>
-    </message>
-    <message>
-        <source>expected axis letters such as &quot;XY&quot; or [&quot;X&quot;, &quot;Y&quot;], got %1</source>
-        <translation>应为轴字母，如 &quot;XY&quot; 或 [&quot;X&quot;, &quot;Y&quot;]，收到 %1</translation>
-    </message>
-    <message>
-        <source>expected an object of axis letters, such as %1, got %2</source>
-        <translation>应为以轴字母为键的对象，如 %1，收到 %2</translation>
-    </message>
-    <message>
-        <source>not an axis letter</source>
-        <translation>不是轴字母</translation>
-    </message>
-    <message>
-        <source>expected [min, max], got %1</source>
-        <translation>应为 [min, max]，收到 %1</translation>
-    </message>
-    <message>
-        <source>expected a string, a number or an array of either</source>
-        <translation>应为字符串、数字，或由二者之一组成的数组</translation>
-    </message>
-    <message>
-        <source>expected a string, got %1</source>
-        <translation>应为字符串，收到 %1</translation>
-    </message>
-    <message>
-        <source>&apos;%1&apos; is not one of %2</source>
-        <translation>&apos;%1&apos; 不在 %2 之中</translation>
-    </message>
-    <message>
-        <source>a request is a JSON object</source>
-        <translation>请求必须是一个 JSON 对象</translation>
-    </message>
-    <message>
-        <source>parse error at byte %1: %2</source>
-        <translation>第 %1 字节处解析错误：%2</translation>
-    </message>
-    <message>
-        <source>batches are not supported: send one request per line</source>
-        <translation>不支持批量请求：每行发送一个请求</translation>
-    </message>
-    <message>
-        <source>id: must be a number or a string</source>
-        <translation>id：必须是数字或字符串</translation>
-    </message>
-    <message>
-        <source>jsonrpc: must be &quot;2.0&quot;</source>
-        <translation>jsonrpc：必须为 &quot;2.0&quot;</translation>
-    </message>
-    <message>
-        <source>method: must be a non-empty string</source>
-        <translation>method：必须是非空字符串</translation>
-    </message>
-    <message>
-        <source>params: give them by name (an object), not by position</source>
-        <translation>params：请按名称给出（对象），不要按位置给出</translation>
-    </message>
-    <message>
-        <source>params: must be an object</source>
-        <translation>params：必须是对象</translation>
-    </message>
-    <message>
-        <source>this document</source>
-        <translation>本文档</translation>
-    </message>
-    <message>
-        <source>say who is calling (shown in the GUI) and where relative paths start</source>
-        <translation>说明调用者是谁（显示在图形界面中）以及相对路径的起点</translation>
-    </message>
-    <message>
-        <source>a name for the GUI and the event log</source>
-        <translation>在图形界面和事件日志中显示的名称</translation>
-    </message>
-    <message>
-        <source>the client&apos;s working directory: relative paths in calls start here</source>
-        <translation>客户端的工作目录：调用中的相对路径以此为起点</translation>
-    </message>
-    <message>
-        <source>take the control lease (one holder at a time)</source>
-        <translation>获取控制权（同一时间只有一个持有者）</translation>
-    </message>
-    <message>
-        <source>Returns {&quot;lease&quot;: TOKEN}. Send control.heartbeat with it at least every %1 ms (100 ms is a good pace); the operator can take control back at any time.</source>
-        <translation>返回 {&quot;lease&quot;: TOKEN}。请用它至少每 %1 ms 发送一次 control.heartbeat（每 100 ms 一次为宜）；操作员可随时收回控制权。</translation>
-    </message>
-    <message>
-        <source>give the control lease back</source>
-        <translation>交还控制权</translation>
-    </message>
-    <message>
-        <source>keep the control lease (send as a notification, no id, every 100 ms)</source>
-        <translation>保持控制权（以通知形式发送，不带 id，每 100 ms 一次）</translation>
-    </message>
-    <message>
-        <source>who holds control, since when</source>
-        <translation>谁持有控制权，从何时起</translation>
-    </message>
-    <message>
-        <source>live data: positions, state, jobs, log, telemetry</source>
-        <translation>实时数据：位置、状态、作业、日志、遥测</translation>
-    </message>
-    <message>
-        <source>topic → options: {&quot;positions&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;max_hz&quot;: 50}, &quot;state&quot;: {}, &quot;jobs&quot;: {}, &quot;log&quot;: {}, &quot;telemetry&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;channels&quot;: [&quot;X.measured&quot;], &quot;rate_hz&quot;: 1000}}</source>
-        <translation>主题 → 选项：{&quot;positions&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;max_hz&quot;: 50}, &quot;state&quot;: {}, &quot;jobs&quot;: {}, &quot;log&quot;: {}, &quot;telemetry&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;channels&quot;: [&quot;X.measured&quot;], &quot;rate_hz&quot;: 1000}}</translation>
-    </message>
-    <message>
-        <source>end a subscription</source>
-        <translation>结束订阅</translation>
-    </message>
-    <message>
-        <source>the number subscribe answered</source>
-        <translation>subscribe 返回的编号</translation>
-    </message>
-    <message>
-        <source>interrupt a running call of this client, as Ctrl+C interrupts the CLI</source>
-        <translation>中断本客户端正在运行的调用，如同 Ctrl+C 中断命令行工具</translation>
-    </message>
-    <message>
-        <source>the id of the call</source>
-        <translation>该调用的 id</translation>
-    </message>
-    <message>
-        <source>run benchpilot-cli&apos;s words as benchpilot-cli --attach does: output as cli.output, then the exit code</source>
-        <translation>像 benchpilot-cli --attach 那样执行 benchpilot-cli 的参数：输出以 cli.output 发送，最后给出退出码</translation>
-    </message>
-    <message>
-        <source>the words after benchpilot-cli</source>
-        <translation>benchpilot-cli 之后的参数</translation>
-    </message>
-    <message>
-        <source>where relative paths start</source>
-        <translation>相对路径的起点</translation>
-    </message>
-    <message>
-        <source>JSON-RPC 2.0, one object per line; see docs/api.md</source>
-        <translation>JSON-RPC 2.0，每行一个对象；参见 docs/api.md</translation>
-    </message>
-    <message>
-        <source>analyzer or stage; left out, every connected instrument (never refused for not saying which)</source>
-        <translation>analyzer 或 stage；省略时为每台已连接的仪器（绝不因未指明而被拒绝）</translation>
-    </message>
-</context>
-<context>
-    <name>api::ApiClient</name>
-    <message>
-        <source>pid %1</source>
-        <translation>进程号 %1</translation>
-    </message>
-    <message>
-        <source>%1 (pid %2)</source>
-        <translation>%1（进程号 %2）</translation>
-    </message>
-    <message>
-        <source>client %1</source>
-        <translation>客户端 %1</translation>
-    </message>
-    <message>
-        <source>connection closed</source>
-        <translation>连接已关闭</translation>
-    </message>
-    <message>
-        <source>it stopped reading (more than %1 MiB of answers waiting)</source>
-        <translation>它已停止读取（超过 %1 MiB 的应答在等待）</translation>
-    </message>
-    <message>
-        <source>it flooded the server (more than %1 requests waiting)</source>
-        <translation>它发来的请求过多（超过 %1 个请求在等待）</translation>
-    </message>
-</context>
-<context>
-    <name>api::ApiServer</name>
-    <message>
-        <source>cannot make the folder %1 for the API socket</source>
-        <translation>无法为接口套接字创建文件夹 %1</translation>
-    </message>
-    <message>
-        <source>the folder %1 for the API socket belongs to another user</source>
-        <translation>接口套接字所在的文件夹 %1 属于其他用户</translation>
-    </message>
-    <message>
-        <source>another BenchPilot is already listening at %1</source>
-        <translation>另一个 BenchPilot 已在 %1 监听</translation>
-    </message>
-    <message>
-        <source>cannot listen at %1: %2</source>
-        <translation>无法在 %1 监听：%2</translation>
-    </message>
-    <message>
-        <source>API listening at %1</source>
-        <translation>接口正在 %1 监听</translation>
-    </message>
-    <message>
-        <source>API WebSocket listening at %1</source>
-        <translation>接口 WebSocket 正在 %1 监听</translation>
-    </message>
-    <message>
-        <source>too many clients (at most %1)</source>
-        <translation>客户端过多（最多 %1 个）</translation>
-    </message>
-    <message>
-        <source>line longer than %1 bytes: skipped to its end</source>
-        <translation>行长超过 %1 字节：已跳过该行其余部分</translation>
-    </message>
-    <message>
-        <source>connection closed</source>
-        <translation>连接已关闭</translation>
-    </message>
-    <message>
-        <source>disconnected: %1</source>
-        <translation>已断开：%1</translation>
-    </message>
-    <message>
-        <source>unknown method &apos;%1&apos; (rpc.discover lists them)</source>
-        <translation>未知方法 &apos;%1&apos;（rpc.discover 可列出全部方法）</translation>
-    </message>
-    <message>
-        <source>%1 calls are already running for this client; wait for one to end</source>
-        <translation>该客户端已有 %1 个调用在运行；请等待其中一个结束</translation>
-    </message>
-    <message>
-        <source>the GUI&apos;s %1 is not connected (%2)</source>
-        <translation>图形界面中的 %1 未连接（%2）</translation>
-    </message>
-    <message>
-        <source>the GUI has no instrument &apos;%1&apos;</source>
-        <translation>图形界面中没有仪器 &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <source>no instrument is connected in the GUI</source>
-        <translation>图形界面中没有已连接的仪器</translation>
-    </message>
-    <message>
-        <source>not in control: the operator runs %1</source>
-        <translation>未持有控制权：操作员正在运行%1</translation>
-    </message>
-    <message>
-        <source>not in control: pass the lease from control.acquire as &quot;lease&quot;</source>
-        <translation>未持有控制权：请将 control.acquire 返回的控制权令牌作为 &quot;lease&quot; 传入</translation>
-    </message>
-    <message>
-        <source>not in control: that lease is not the one this client holds</source>
-        <translation>未持有控制权：该控制权令牌不是本客户端所持有的</translation>
-    </message>
-    <message>
-        <source>not in control: %1 has had control since %2</source>
-        <translation>未持有控制权：%1 自 %2 起持有控制权</translation>
-    </message>
-    <message>
-        <source>not in control: call control.acquire first (the operator can take control back at any time)</source>
-        <translation>未持有控制权：请先调用 control.acquire（操作员可随时收回控制权）</translation>
-    </message>
-    <message>
-        <source>%1 that %2 started goes on, and is now yours (%3)</source>
-        <translation>%2 启动的 %1 继续运行，现在由您控制（%3）</translation>
-    </message>
-    <message>
-        <source>%1: unknown parameter (this method takes none)</source>
-        <translation>%1：未知参数（此方法不接受参数）</translation>
-    </message>
-    <message>
-        <source>%1: unknown parameter (parameters: %2)</source>
-        <translation>%1：未知参数（参数有：%2）</translation>
-    </message>
-    <message>
-        <source>%1: expected a string</source>
-        <translation>%1：应为字符串</translation>
-    </message>
-    <message>
-        <source>the operator runs %1: control stays with the GUI until it ends</source>
-        <translation>操作员正在运行%1：在其结束前控制权留在图形界面</translation>
-    </message>
-    <message>
-        <source>%1 has had control since %2</source>
-        <translation>%1 自 %2 起持有控制权</translation>
-    </message>
-    <message>
-        <source>took control</source>
-        <translation>取得了控制权</translation>
-    </message>
-    <message>
-        <source>not in control: this client does not hold that lease (taken back, expired or released)</source>
-        <translation>未持有控制权：本客户端并未持有该控制权令牌（已被收回、已过期或已交还）</translation>
-    </message>
-    <message>
-        <source>subscription: expected the number subscribe answered</source>
-        <translation>subscription：应为 subscribe 返回的编号</translation>
-    </message>
-    <message>
-        <source>argv: expected an array of strings (benchpilot-cli&apos;s words)</source>
-        <translation>argv：应为字符串数组（benchpilot-cli 的参数）</translation>
-    </message>
-    <message>
-        <source>%1 calls are already running for this client</source>
-        <translation>该客户端已有 %1 个调用在运行</translation>
-    </message>
-    <message>
-        <source>the analyzer and the stage are both connected: say which with --instrument analyzer|stage</source>
-        <translation>分析仪和载物台都已连接：请用 --instrument analyzer|stage 指明是哪一台</translation>
-    </message>
-</context>
-<context>
-    <name>api::CommandCall</name>
-    <message>
-        <source>%1: done</source>
-        <translation>%1：完成</translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1：%2</translation>
-    </message>
-    <message>
-        <source>failed</source>
-        <translation>失败</translation>
-    </message>
-    <message>
-        <source>failed with exit code %1</source>
-        <translation>失败，退出码 %1</translation>
-    </message>
-    <message>
-        <source>%1 on the %2</source>
-        <translation>%2 上的 %1</translation>
-    </message>
-    <message>
-        <source>inside the GUI its own connections are used: --port does not apply (name the instrument with --instrument analyzer|stage)</source>
-        <translation>在图形界面内使用其自身的连接：--port 不适用（请用 --instrument analyzer|stage 指定仪器）</translation>
-    </message>
-    <message>
-        <source>%1 on every connected instrument (%2)</source>
-        <translation>每台已连接仪器（%2）上的 %1</translation>
-    </message>
-</context>
-<context>
-    <name>api::Subscriptions</name>
-    <message>
-        <source>unknown parameter (parameters: topics)</source>
-        <translation>未知参数（参数有：topics）</translation>
-    </message>
-    <message>
-        <source>expected an object of topics, e.g. {&quot;positions&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;max_hz&quot;: 50}}</source>
-        <translation>应为以主题为键的对象，例如 {&quot;positions&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;max_hz&quot;: 50}}</translation>
-    </message>
-    <message>
-        <source>unknown topic (topics: positions, state, jobs, log, telemetry)</source>
-        <translation>未知主题（主题有：positions, state, jobs, log, telemetry）</translation>
-    </message>
-    <message>
-        <source>expected an object of options (max_hz, instrument, …), {} for the defaults</source>
-        <translation>应为选项对象（max_hz, instrument, …），{} 表示使用默认值</translation>
-    </message>
-    <message>
-        <source>unknown option (options: %1)</source>
-        <translation>未知选项（选项有：%1）</translation>
-    </message>
-    <message>
-        <source>expected a number above 0 and at most %1</source>
-        <translation>应为大于 0 且不大于 %1 的数</translation>
-    </message>
-    <message>
-        <source>expected one of %1</source>
-        <translation>应为 %1 之一</translation>
-    </message>
-    <message>
-        <source>telemetry is not available here (no telemetry hub)</source>
-        <translation>此处无法使用遥测（没有遥测中心）</translation>
-    </message>
-    <message>
-        <source>expected an array such as [&quot;X.measured&quot;, &quot;X.following_error&quot;]</source>
-        <translation>应为数组，例如 [&quot;X.measured&quot;, &quot;X.following_error&quot;]</translation>
-    </message>
-    <message>
-        <source>&apos;%1&apos; is not a channel of the %2 (AXIS.measured, AXIS.commanded, AXIS.velocity, AXIS.following_error, AXIS.controller_output, AXIS.switches, contour_error)</source>
-        <translation>&apos;%1&apos; 不是 %2 的通道（AXIS.measured, AXIS.commanded, AXIS.velocity, AXIS.following_error, AXIS.controller_output, AXIS.switches, contour_error）</translation>
-    </message>
-    <message>
-        <source>expected samples per second, 1 or more</source>
-        <translation>应为每秒采样数，不小于 1</translation>
-    </message>
-</context>
-<context>
-    <name>api::WebSocketEndpoint</name>
-    <message>
-        <source>the token file %1 can be read by others (chmod 600 it)</source>
-        <translation>令牌文件 %1 可被其他用户读取（请对其执行 chmod 600）</translation>
-    </message>
-    <message>
-        <source>cannot read the token file %1: %2</source>
-        <translation>无法读取令牌文件 %1：%2</translation>
-    </message>
-    <message>
-        <source>the token in %1 is too short (at least 16 characters)</source>
-        <translation>%1 中的令牌太短（至少 16 个字符）</translation>
-    </message>
-    <message>
-        <source>cannot write the token file %1: %2</source>
-        <translation>无法写入令牌文件 %1：%2</translation>
-    </message>
-    <message>
-        <source>cannot listen on 127.0.0.1:%1: %2</source>
-        <translation>无法在 127.0.0.1:%1 上监听：%2</translation>
-    </message>
-    <message>
-        <source>origin not allowed</source>
-        <translation>不允许该来源</translation>
-    </message>
-    <message>
-        <source>a token is required (?token=… from the token file)</source>
-        <translation>需要令牌（?token=…，取自令牌文件）</translation>
-    </message>
-    <message>
-        <source>this BenchPilot was built without Qt WebSockets (install qt6-websockets-dev: ./scripts/setup)</source>
-        <translation>此 BenchPilot 构建时未包含 Qt WebSockets（请安装 qt6-websockets-dev：./scripts/setup）</translation>
-    </message>
-</context>
-<context>
     <name>app::AboutDialog</name>
     <message>
         <source>Operator and test-bench application for laboratory motion instruments.</source>
@@ -1061,7 +587,481 @@ Take control back? The script&apos;s next call is refused and its jogs stop; a j
     </message>
 </context>
 <context>
-    <name>cli</name>
+    <name>app::api</name>
+    <message>
+        <source>expected an array of numbers, got %1</source>
+        <translation>应为数字数组，收到 %1</translation>
+    </message>
+    <message>
+        <source>expected an array of numbers, found %1 in it</source>
+        <translation>应为数字数组，但其中含有 %1</translation>
+    </message>
+    <message>
+        <source>analyzer or stage; may be left out when only one is connected</source>
+        <translation>analyzer 或 stage；只连接了一台仪器时可省略</translation>
+    </message>
+    <message>
+        <source>longest wait for motion to finish, s (default: 120)</source>
+        <translation>等待运动结束的最长时间，s（默认：120）</translation>
+    </message>
+    <message>
+        <source>the lease from control.acquire (needed only when setting)</source>
+        <translation>control.acquire 返回的控制权令牌（仅在设置时需要）</translation>
+    </message>
+    <message>
+        <source>the lease from control.acquire</source>
+        <translation>control.acquire 返回的控制权令牌</translation>
+    </message>
+    <message>
+        <source>unknown parameter (this method takes none)</source>
+        <translation>未知参数（此方法不接受参数）</translation>
+    </message>
+    <message>
+        <source>unknown parameter (parameters: %1)</source>
+        <translation>未知参数（参数有：%1）</translation>
+    </message>
+    <message>
+        <source>required</source>
+        <translation>必需</translation>
+    </message>
+    <message>
+        <source>given without %1, which comes before it</source>
+        <translation>给出了该参数，却缺少排在它前面的 %1</translation>
+    </message>
+    <message>
+        <source>expected true or false, got %1</source>
+        <translation>应为 true 或 false，收到 %1</translation>
+    </message>
+    <message>
+        <source>expected a number, got %1</source>
+        <translation>应为数字，收到 %1</translation>
+    </message>
+    <message>
+        <source>expected a whole number, got %1</source>
+        <translation>应为整数，收到 %1</translation>
+    </message>
+    <message>
+        <source>expected one axis letter such as &quot;X&quot;, got %1</source>
+        <translation>应为一个轴字母，如 &quot;X&quot;，收到 %1</translation>
+    </message>
+    <message>
+        <source>expected axis letters such as &quot;XY&quot; or [&quot;X&quot;, &quot;Y&quot;]</source>
+        <translation>应为轴字母，如 &quot;XY&quot; 或 [&quot;X&quot;, &quot;Y&quot;]</translation>
+    </message>
+    <message>
+        <source>expected axis letters such as &quot;XY&quot; or [&quot;X&quot;, &quot;Y&quot;], got %1</source>
+        <translation>应为轴字母，如 &quot;XY&quot; 或 [&quot;X&quot;, &quot;Y&quot;]，收到 %1</translation>
+    </message>
+    <message>
+        <source>expected an object of axis letters, such as %1, got %2</source>
+        <translation>应为以轴字母为键的对象，如 %1，收到 %2</translation>
+    </message>
+    <message>
+        <source>not an axis letter</source>
+        <translation>不是轴字母</translation>
+    </message>
+    <message>
+        <source>expected [min, max], got %1</source>
+        <translation>应为 [min, max]，收到 %1</translation>
+    </message>
+    <message>
+        <source>expected a string, a number or an array of either</source>
+        <translation>应为字符串、数字，或由二者之一组成的数组</translation>
+    </message>
+    <message>
+        <source>expected a string, got %1</source>
+        <translation>应为字符串，收到 %1</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not one of %2</source>
+        <translation>&apos;%1&apos; 不在 %2 之中</translation>
+    </message>
+    <message>
+        <source>a request is a JSON object</source>
+        <translation>请求必须是一个 JSON 对象</translation>
+    </message>
+    <message>
+        <source>parse error at byte %1: %2</source>
+        <translation>第 %1 字节处解析错误：%2</translation>
+    </message>
+    <message>
+        <source>batches are not supported: send one request per line</source>
+        <translation>不支持批量请求：每行发送一个请求</translation>
+    </message>
+    <message>
+        <source>id: must be a number or a string</source>
+        <translation>id：必须是数字或字符串</translation>
+    </message>
+    <message>
+        <source>jsonrpc: must be &quot;2.0&quot;</source>
+        <translation>jsonrpc：必须为 &quot;2.0&quot;</translation>
+    </message>
+    <message>
+        <source>method: must be a non-empty string</source>
+        <translation>method：必须是非空字符串</translation>
+    </message>
+    <message>
+        <source>params: give them by name (an object), not by position</source>
+        <translation>params：请按名称给出（对象），不要按位置给出</translation>
+    </message>
+    <message>
+        <source>params: must be an object</source>
+        <translation>params：必须是对象</translation>
+    </message>
+    <message>
+        <source>this document</source>
+        <translation>本文档</translation>
+    </message>
+    <message>
+        <source>say who is calling (shown in the GUI) and where relative paths start</source>
+        <translation>说明调用者是谁（显示在图形界面中）以及相对路径的起点</translation>
+    </message>
+    <message>
+        <source>a name for the GUI and the event log</source>
+        <translation>在图形界面和事件日志中显示的名称</translation>
+    </message>
+    <message>
+        <source>the client&apos;s working directory: relative paths in calls start here</source>
+        <translation>客户端的工作目录：调用中的相对路径以此为起点</translation>
+    </message>
+    <message>
+        <source>take the control lease (one holder at a time)</source>
+        <translation>获取控制权（同一时间只有一个持有者）</translation>
+    </message>
+    <message>
+        <source>Returns {&quot;lease&quot;: TOKEN}. Send control.heartbeat with it at least every %1 ms (100 ms is a good pace); the operator can take control back at any time.</source>
+        <translation>返回 {&quot;lease&quot;: TOKEN}。请用它至少每 %1 ms 发送一次 control.heartbeat（每 100 ms 一次为宜）；操作员可随时收回控制权。</translation>
+    </message>
+    <message>
+        <source>give the control lease back</source>
+        <translation>交还控制权</translation>
+    </message>
+    <message>
+        <source>keep the control lease (send as a notification, no id, every 100 ms)</source>
+        <translation>保持控制权（以通知形式发送，不带 id，每 100 ms 一次）</translation>
+    </message>
+    <message>
+        <source>who holds control, since when</source>
+        <translation>谁持有控制权，从何时起</translation>
+    </message>
+    <message>
+        <source>live data: positions, state, jobs, log, telemetry</source>
+        <translation>实时数据：位置、状态、作业、日志、遥测</translation>
+    </message>
+    <message>
+        <source>topic → options: {&quot;positions&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;max_hz&quot;: 50}, &quot;state&quot;: {}, &quot;jobs&quot;: {}, &quot;log&quot;: {}, &quot;telemetry&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;channels&quot;: [&quot;X.measured&quot;], &quot;rate_hz&quot;: 1000}}</source>
+        <translation>主题 → 选项：{&quot;positions&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;max_hz&quot;: 50}, &quot;state&quot;: {}, &quot;jobs&quot;: {}, &quot;log&quot;: {}, &quot;telemetry&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;channels&quot;: [&quot;X.measured&quot;], &quot;rate_hz&quot;: 1000}}</translation>
+    </message>
+    <message>
+        <source>end a subscription</source>
+        <translation>结束订阅</translation>
+    </message>
+    <message>
+        <source>the number subscribe answered</source>
+        <translation>subscribe 返回的编号</translation>
+    </message>
+    <message>
+        <source>interrupt a running call of this client, as Ctrl+C interrupts the CLI</source>
+        <translation>中断本客户端正在运行的调用，如同 Ctrl+C 中断命令行工具</translation>
+    </message>
+    <message>
+        <source>the id of the call</source>
+        <translation>该调用的 id</translation>
+    </message>
+    <message>
+        <source>run benchpilot-cli&apos;s words as benchpilot-cli --attach does: output as cli.output, then the exit code</source>
+        <translation>像 benchpilot-cli --attach 那样执行 benchpilot-cli 的参数：输出以 cli.output 发送，最后给出退出码</translation>
+    </message>
+    <message>
+        <source>the words after benchpilot-cli</source>
+        <translation>benchpilot-cli 之后的参数</translation>
+    </message>
+    <message>
+        <source>where relative paths start</source>
+        <translation>相对路径的起点</translation>
+    </message>
+    <message>
+        <source>JSON-RPC 2.0, one object per line; see docs/api.md</source>
+        <translation>JSON-RPC 2.0，每行一个对象；参见 docs/api.md</translation>
+    </message>
+    <message>
+        <source>analyzer or stage; left out, every connected instrument (never refused for not saying which)</source>
+        <translation>analyzer 或 stage；省略时为每台已连接的仪器（绝不因未指明而被拒绝）</translation>
+    </message>
+</context>
+<context>
+    <name>app::api::ApiClient</name>
+    <message>
+        <source>pid %1</source>
+        <translation>进程号 %1</translation>
+    </message>
+    <message>
+        <source>%1 (pid %2)</source>
+        <translation>%1（进程号 %2）</translation>
+    </message>
+    <message>
+        <source>client %1</source>
+        <translation>客户端 %1</translation>
+    </message>
+    <message>
+        <source>connection closed</source>
+        <translation>连接已关闭</translation>
+    </message>
+    <message>
+        <source>it stopped reading (more than %1 MiB of answers waiting)</source>
+        <translation>它已停止读取（超过 %1 MiB 的应答在等待）</translation>
+    </message>
+    <message>
+        <source>it flooded the server (more than %1 requests waiting)</source>
+        <translation>它发来的请求过多（超过 %1 个请求在等待）</translation>
+    </message>
+</context>
+<context>
+    <name>app::api::ApiServer</name>
+    <message>
+        <source>cannot make the folder %1 for the API socket</source>
+        <translation>无法为接口套接字创建文件夹 %1</translation>
+    </message>
+    <message>
+        <source>the folder %1 for the API socket belongs to another user</source>
+        <translation>接口套接字所在的文件夹 %1 属于其他用户</translation>
+    </message>
+    <message>
+        <source>another BenchPilot is already listening at %1</source>
+        <translation>另一个 BenchPilot 已在 %1 监听</translation>
+    </message>
+    <message>
+        <source>cannot listen at %1: %2</source>
+        <translation>无法在 %1 监听：%2</translation>
+    </message>
+    <message>
+        <source>API listening at %1</source>
+        <translation>接口正在 %1 监听</translation>
+    </message>
+    <message>
+        <source>API WebSocket listening at %1</source>
+        <translation>接口 WebSocket 正在 %1 监听</translation>
+    </message>
+    <message>
+        <source>too many clients (at most %1)</source>
+        <translation>客户端过多（最多 %1 个）</translation>
+    </message>
+    <message>
+        <source>line longer than %1 bytes: skipped to its end</source>
+        <translation>行长超过 %1 字节：已跳过该行其余部分</translation>
+    </message>
+    <message>
+        <source>connection closed</source>
+        <translation>连接已关闭</translation>
+    </message>
+    <message>
+        <source>disconnected: %1</source>
+        <translation>已断开：%1</translation>
+    </message>
+    <message>
+        <source>unknown method &apos;%1&apos; (rpc.discover lists them)</source>
+        <translation>未知方法 &apos;%1&apos;（rpc.discover 可列出全部方法）</translation>
+    </message>
+    <message>
+        <source>%1 calls are already running for this client; wait for one to end</source>
+        <translation>该客户端已有 %1 个调用在运行；请等待其中一个结束</translation>
+    </message>
+    <message>
+        <source>the GUI&apos;s %1 is not connected (%2)</source>
+        <translation>图形界面中的 %1 未连接（%2）</translation>
+    </message>
+    <message>
+        <source>the GUI has no instrument &apos;%1&apos;</source>
+        <translation>图形界面中没有仪器 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>no instrument is connected in the GUI</source>
+        <translation>图形界面中没有已连接的仪器</translation>
+    </message>
+    <message>
+        <source>not in control: the operator runs %1</source>
+        <translation>未持有控制权：操作员正在运行%1</translation>
+    </message>
+    <message>
+        <source>not in control: pass the lease from control.acquire as &quot;lease&quot;</source>
+        <translation>未持有控制权：请将 control.acquire 返回的控制权令牌作为 &quot;lease&quot; 传入</translation>
+    </message>
+    <message>
+        <source>not in control: that lease is not the one this client holds</source>
+        <translation>未持有控制权：该控制权令牌不是本客户端所持有的</translation>
+    </message>
+    <message>
+        <source>not in control: %1 has had control since %2</source>
+        <translation>未持有控制权：%1 自 %2 起持有控制权</translation>
+    </message>
+    <message>
+        <source>not in control: call control.acquire first (the operator can take control back at any time)</source>
+        <translation>未持有控制权：请先调用 control.acquire（操作员可随时收回控制权）</translation>
+    </message>
+    <message>
+        <source>%1 that %2 started goes on, and is now yours (%3)</source>
+        <translation>%2 启动的 %1 继续运行，现在由您控制（%3）</translation>
+    </message>
+    <message>
+        <source>%1: unknown parameter (this method takes none)</source>
+        <translation>%1：未知参数（此方法不接受参数）</translation>
+    </message>
+    <message>
+        <source>%1: unknown parameter (parameters: %2)</source>
+        <translation>%1：未知参数（参数有：%2）</translation>
+    </message>
+    <message>
+        <source>%1: expected a string</source>
+        <translation>%1：应为字符串</translation>
+    </message>
+    <message>
+        <source>the operator runs %1: control stays with the GUI until it ends</source>
+        <translation>操作员正在运行%1：在其结束前控制权留在图形界面</translation>
+    </message>
+    <message>
+        <source>%1 has had control since %2</source>
+        <translation>%1 自 %2 起持有控制权</translation>
+    </message>
+    <message>
+        <source>took control</source>
+        <translation>取得了控制权</translation>
+    </message>
+    <message>
+        <source>not in control: this client does not hold that lease (taken back, expired or released)</source>
+        <translation>未持有控制权：本客户端并未持有该控制权令牌（已被收回、已过期或已交还）</translation>
+    </message>
+    <message>
+        <source>subscription: expected the number subscribe answered</source>
+        <translation>subscription：应为 subscribe 返回的编号</translation>
+    </message>
+    <message>
+        <source>argv: expected an array of strings (benchpilot-cli&apos;s words)</source>
+        <translation>argv：应为字符串数组（benchpilot-cli 的参数）</translation>
+    </message>
+    <message>
+        <source>%1 calls are already running for this client</source>
+        <translation>该客户端已有 %1 个调用在运行</translation>
+    </message>
+    <message>
+        <source>the analyzer and the stage are both connected: say which with --instrument analyzer|stage</source>
+        <translation>分析仪和载物台都已连接：请用 --instrument analyzer|stage 指明是哪一台</translation>
+    </message>
+</context>
+<context>
+    <name>app::api::CommandCall</name>
+    <message>
+        <source>%1: done</source>
+        <translation>%1：完成</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>失败</translation>
+    </message>
+    <message>
+        <source>failed with exit code %1</source>
+        <translation>失败，退出码 %1</translation>
+    </message>
+    <message>
+        <source>%1 on the %2</source>
+        <translation>%2 上的 %1</translation>
+    </message>
+    <message>
+        <source>inside the GUI its own connections are used: --port does not apply (name the instrument with --instrument analyzer|stage)</source>
+        <translation>在图形界面内使用其自身的连接：--port 不适用（请用 --instrument analyzer|stage 指定仪器）</translation>
+    </message>
+    <message>
+        <source>%1 on every connected instrument (%2)</source>
+        <translation>每台已连接仪器（%2）上的 %1</translation>
+    </message>
+</context>
+<context>
+    <name>app::api::Subscriptions</name>
+    <message>
+        <source>unknown parameter (parameters: topics)</source>
+        <translation>未知参数（参数有：topics）</translation>
+    </message>
+    <message>
+        <source>expected an object of topics, e.g. {&quot;positions&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;max_hz&quot;: 50}}</source>
+        <translation>应为以主题为键的对象，例如 {&quot;positions&quot;: {&quot;instrument&quot;: &quot;stage&quot;, &quot;max_hz&quot;: 50}}</translation>
+    </message>
+    <message>
+        <source>unknown topic (topics: positions, state, jobs, log, telemetry)</source>
+        <translation>未知主题（主题有：positions, state, jobs, log, telemetry）</translation>
+    </message>
+    <message>
+        <source>expected an object of options (max_hz, instrument, …), {} for the defaults</source>
+        <translation>应为选项对象（max_hz, instrument, …），{} 表示使用默认值</translation>
+    </message>
+    <message>
+        <source>unknown option (options: %1)</source>
+        <translation>未知选项（选项有：%1）</translation>
+    </message>
+    <message>
+        <source>expected a number above 0 and at most %1</source>
+        <translation>应为大于 0 且不大于 %1 的数</translation>
+    </message>
+    <message>
+        <source>expected one of %1</source>
+        <translation>应为 %1 之一</translation>
+    </message>
+    <message>
+        <source>telemetry is not available here (no telemetry hub)</source>
+        <translation>此处无法使用遥测（没有遥测中心）</translation>
+    </message>
+    <message>
+        <source>expected an array such as [&quot;X.measured&quot;, &quot;X.following_error&quot;]</source>
+        <translation>应为数组，例如 [&quot;X.measured&quot;, &quot;X.following_error&quot;]</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a channel of the %2 (AXIS.measured, AXIS.commanded, AXIS.velocity, AXIS.following_error, AXIS.controller_output, AXIS.switches, contour_error)</source>
+        <translation>&apos;%1&apos; 不是 %2 的通道（AXIS.measured, AXIS.commanded, AXIS.velocity, AXIS.following_error, AXIS.controller_output, AXIS.switches, contour_error）</translation>
+    </message>
+    <message>
+        <source>expected samples per second, 1 or more</source>
+        <translation>应为每秒采样数，不小于 1</translation>
+    </message>
+</context>
+<context>
+    <name>app::api::WebSocketEndpoint</name>
+    <message>
+        <source>the token file %1 can be read by others (chmod 600 it)</source>
+        <translation>令牌文件 %1 可被其他用户读取（请对其执行 chmod 600）</translation>
+    </message>
+    <message>
+        <source>cannot read the token file %1: %2</source>
+        <translation>无法读取令牌文件 %1：%2</translation>
+    </message>
+    <message>
+        <source>the token in %1 is too short (at least 16 characters)</source>
+        <translation>%1 中的令牌太短（至少 16 个字符）</translation>
+    </message>
+    <message>
+        <source>cannot write the token file %1: %2</source>
+        <translation>无法写入令牌文件 %1：%2</translation>
+    </message>
+    <message>
+        <source>cannot listen on 127.0.0.1:%1: %2</source>
+        <translation>无法在 127.0.0.1:%1 上监听：%2</translation>
+    </message>
+    <message>
+        <source>origin not allowed</source>
+        <translation>不允许该来源</translation>
+    </message>
+    <message>
+        <source>a token is required (?token=… from the token file)</source>
+        <translation>需要令牌（?token=…，取自令牌文件）</translation>
+    </message>
+    <message>
+        <source>this BenchPilot was built without Qt WebSockets (install qt6-websockets-dev: ./scripts/setup)</source>
+        <translation>此 BenchPilot 构建时未包含 Qt WebSockets（请安装 qt6-websockets-dev：./scripts/setup）</translation>
+    </message>
+</context>
+<context>
+    <name>app::cli</name>
     <message>
         <source>show this help</source>
         <translation>显示本帮助</translation>
@@ -2522,9 +2522,33 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>  判定：始终未静止：仍有 ±%1 %2、周期 %3 s 的极限环
 </translation>
     </message>
+    <message>
+        <source>--source manual reads what a person types at benchpilot-cli; in the GUI use the Calibration screen</source>
+        <translation>--source manual 读取操作员在 benchpilot-cli 中输入的读数；在图形界面中请使用“校准”界面</translation>
+    </message>
+    <message>
+        <source>--source &apos;%1&apos;: readback, gauge:PATH, manual or interferometer</source>
+        <translation>--source &apos;%1&apos;：可选 readback、gauge:PATH、manual 或 interferometer</translation>
+    </message>
+    <message>
+        <source>--gauge-timeout must be from 0 to 60 s</source>
+        <translation>--gauge-timeout 必须在 0 到 60 s 之间</translation>
+    </message>
+    <message>
+        <source>--source gauge:sim is benchpilot-cli&apos;s own simulator&apos;s gauge: inside the GUI give the gauge&apos;s port, or use the Calibration screen&apos;s simulated gauge</source>
+        <translation>--source gauge:sim 是 benchpilot-cli 自带仿真器的测头：在图形界面中请给出测头的端口，或使用“校准”界面的模拟测头</translation>
+    </message>
+    <message>
+        <source>--source gauge:sim reads the in-process simulator&apos;s gauge: use it with --sim</source>
+        <translation>--source gauge:sim 读取进程内仿真器的测头：请与 --sim 一起使用</translation>
+    </message>
+    <message>
+        <source>simulated gauge</source>
+        <translation>模拟测头</translation>
+    </message>
 </context>
 <context>
-    <name>cli::CliSession</name>
+    <name>app::cli::CliSession</name>
     <message>
         <source>--profile: %1</source>
         <translation>--profile：%1</translation>
@@ -2544,6 +2568,17 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>%1 is a %2, not the %3 --instrument names</source>
         <translation>%1 是%2，不是 --instrument 指定的%3</translation>
+    </message>
+</context>
+<context>
+    <name>app::sim::PtyTransport</name>
+    <message>
+        <source>cannot create a pseudo-terminal: %1</source>
+        <translation>无法创建伪终端：%1</translation>
+    </message>
+    <message>
+        <source>cannot name the pseudo-terminal: %1</source>
+        <translation>无法获取伪终端名称：%1</translation>
     </message>
 </context>
 <context>
@@ -2594,6 +2629,57 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>%1 @ %2 baud</source>
         <translation>%1 @ %2 波特</translation>
+    </message>
+</context>
+<context>
+    <name>dev::tele::TelemetryHub</name>
+    <message>
+        <source>commanded</source>
+        <translation>指令位置</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>实测位置</translation>
+    </message>
+    <message>
+        <source>velocity</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>following error</source>
+        <translation>跟随误差</translation>
+    </message>
+    <message>
+        <source>controller output</source>
+        <translation>控制器输出</translation>
+    </message>
+    <message>
+        <source>switches</source>
+        <translation>开关</translation>
+    </message>
+    <message>
+        <source>contour error</source>
+        <translation>轮廓误差</translation>
+    </message>
+    <message>
+        <source>controller output u</source>
+        <translation>控制器输出 u</translation>
+    </message>
+    <message>
+        <source>Instrument %1</source>
+        <translation>仪器 %1</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>%1 %2 %3</source>
+        <translation>%1 %2 %3</translation>
+    </message>
+    <message>
+        <source>%1 [%2]</source>
+        <translation>%1 [%2]</translation>
     </message>
 </context>
 <context>
@@ -3011,33 +3097,6 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     </message>
 </context>
 <context>
-    <name>jobs</name>
-    <message>
-        <source>--source &apos;%1&apos;: readback, gauge:PATH, manual or interferometer</source>
-        <translation>--source &apos;%1&apos;：可选 readback、gauge:PATH、manual 或 interferometer</translation>
-    </message>
-    <message>
-        <source>--gauge-timeout must be from 0 to 60 s</source>
-        <translation>--gauge-timeout 必须在 0 到 60 s 之间</translation>
-    </message>
-    <message>
-        <source>--source gauge:sim reads the in-process simulator&apos;s gauge: use it with --sim</source>
-        <translation>--source gauge:sim 读取进程内仿真器的测头：请与 --sim 一起使用</translation>
-    </message>
-    <message>
-        <source>simulated gauge</source>
-        <translation>模拟测头</translation>
-    </message>
-    <message>
-        <source>--source manual reads what a person types at benchpilot-cli; in the GUI use the Calibration screen</source>
-        <translation>--source manual 读取操作员在 benchpilot-cli 中输入的读数；在图形界面中请使用“校准”界面</translation>
-    </message>
-    <message>
-        <source>--source gauge:sim is benchpilot-cli&apos;s own simulator&apos;s gauge: inside the GUI give the gauge&apos;s port, or use the Calibration screen&apos;s simulated gauge</source>
-        <translation>--source gauge:sim 是 benchpilot-cli 自带仿真器的测头：在图形界面中请给出测头的端口，或使用“校准”界面的模拟测头</translation>
-    </message>
-</context>
-<context>
     <name>main</name>
     <message>
         <source>BenchPilot operator and test-bench application.</source>
@@ -3149,271 +3208,6 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     </message>
 </context>
 <context>
-    <name>report</name>
-    <message>
-        <source>Instrument: %1</source>
-        <translation>仪器：%1</translation>
-    </message>
-    <message>
-        <source>Reference: %1</source>
-        <translation>测量基准：%1</translation>
-    </message>
-    <message>
-        <source>Axis %1, %2 targets (mm): %3</source>
-        <translation>%1 轴，%2 个目标位置 (mm)：%3</translation>
-    </message>
-    <message>
-        <source>%1 cycles, %2</source>
-        <translation>%1 次循环，%2</translation>
-    </message>
-    <message>
-        <source>bidirectional (ISO 230-2 standard linear cycle)</source>
-        <translation>双向（ISO 230-2 标准线性循环）</translation>
-    </message>
-    <message>
-        <source>unidirectional (approached from below)</source>
-        <translation>单向（从下方趋近）</translation>
-    </message>
-    <message>
-        <source>Feed %1, overrun %2, dwell %3; settled within %4 for %5 (timeout %6)</source>
-        <translation>进给速度 %1，越程 %2，停留 %3；在 %4 以内稳定 %5 后读数（超时 %6）</translation>
-    </message>
-    <message>
-        <source>Readings: %1</source>
-        <translation>读数文件：%1</translation>
-    </message>
-    <message>
-        <source>Figure</source>
-        <translation>指标</translation>
-    </message>
-    <message>
-        <source>Before (µm)</source>
-        <translation>补偿前 (µm)</translation>
-    </message>
-    <message>
-        <source>After (µm)</source>
-        <translation>补偿后 (µm)</translation>
-    </message>
-    <message>
-        <source>Improvement</source>
-        <translation>改善倍数</translation>
-    </message>
-    <message>
-        <source>Value (µm)</source>
-        <translation>数值 (µm)</translation>
-    </message>
-    <message>
-        <source>Limit (µm)</source>
-        <translation>限值 (µm)</translation>
-    </message>
-    <message>
-        <source>Verdict</source>
-        <translation>判定</translation>
-    </message>
-    <message>
-        <source>pass</source>
-        <translation>合格</translation>
-    </message>
-    <message>
-        <source>FAIL</source>
-        <translation>不合格</translation>
-    </message>
-    <message>
-        <source>target (mm)</source>
-        <translation>目标位置 (mm)</translation>
-    </message>
-    <message>
-        <source>deviation (µm)</source>
-        <translation>偏差 (µm)</translation>
-    </message>
-    <message>
-        <source>mean ↑</source>
-        <translation>平均值 ↑</translation>
-    </message>
-    <message>
-        <source>mean ↓</source>
-        <translation>平均值 ↓</translation>
-    </message>
-    <message>
-        <source>mean ± 2s</source>
-        <translation>平均值 ± 2s</translation>
-    </message>
-    <message>
-        <source>readings ↑</source>
-        <translation>读数 ↑</translation>
-    </message>
-    <message>
-        <source>readings ↓</source>
-        <translation>读数 ↓</translation>
-    </message>
-    <message>
-        <source>BenchPilot accuracy report · %1 · %2</source>
-        <translation>BenchPilot 精度报告 · %1 · %2</translation>
-    </message>
-    <message>
-        <source>Figures before and after compensation (ISO 230-2:2014)</source>
-        <translation>补偿前后的评定指标（ISO 230-2:2014）</translation>
-    </message>
-    <message>
-        <source>Figures (ISO 230-2:2014)</source>
-        <translation>评定指标（ISO 230-2:2014）</translation>
-    </message>
-    <message>
-        <source>PASS: every figure judged is within its limit.</source>
-        <translation>合格：所有参与评定的指标均在限值以内。</translation>
-    </message>
-    <message>
-        <source>FAIL: a figure is beyond its limit.</source>
-        <translation>不合格：有指标超出限值。</translation>
-    </message>
-    <message>
-        <source>No tolerances were given: the figures are not judged.</source>
-        <translation>未给出公差：不对指标进行评定。</translation>
-    </message>
-    <message>
-        <source>Deviations: mean ± 2s per direction</source>
-        <translation>偏差：各方向的平均值 ± 2s</translation>
-    </message>
-    <message>
-        <source>Per target (µm)</source>
-        <translation>各目标位置 (µm)</translation>
-    </message>
-    <message>
-        <source>Before and after</source>
-        <translation>补偿前后</translation>
-    </message>
-    <message>
-        <source>mean deviation (µm)</source>
-        <translation>平均偏差 (µm)</translation>
-    </message>
-    <message>
-        <source>before</source>
-        <translation>补偿前</translation>
-    </message>
-    <message>
-        <source>after</source>
-        <translation>补偿后</translation>
-    </message>
-    <message>
-        <source>Compensation fit of the mean deviations (seed 002&apos;s method)</source>
-        <translation>平均偏差的补偿拟合（文献 002 的方法）</translation>
-    </message>
-    <message>
-        <source>order</source>
-        <translation>阶数</translation>
-    </message>
-    <message>
-        <source>SSE (µm²)</source>
-        <translation>残差平方和 (µm²)</translation>
-    </message>
-    <message>
-        <source>adjusted R²</source>
-        <translation>调整后 R²</translation>
-    </message>
-    <message>
-        <source>chosen</source>
-        <translation>选用</translation>
-    </message>
-    <message>
-        <source>not enough points</source>
-        <translation>点数不足</translation>
-    </message>
-    <message>
-        <source>e(x) = %1 µm, x in mm (order %2%3)</source>
-        <translation>e(x) = %1 µm，x 单位为 mm（%2 阶%3）</translation>
-    </message>
-    <message>
-        <source>, chosen by the operator</source>
-        <translation>，由操作员选定</translation>
-    </message>
-    <message>
-        <source>, chosen by adjusted R²</source>
-        <translation>，按调整后 R² 选定</translation>
-    </message>
-    <message>
-        <source>residual (µm)</source>
-        <translation>残差 (µm)</translation>
-    </message>
-    <message>
-        <source>mean deviation − fit</source>
-        <translation>平均偏差 − 拟合值</translation>
-    </message>
-    <message>
-        <source>a PDF needs a graphical application object; none exists in this program</source>
-        <translation>生成 PDF 需要图形应用程序对象，而本程序中没有</translation>
-    </message>
-    <message>
-        <source>— clockwise</source>
-        <translation>— 顺时针</translation>
-    </message>
-    <message>
-        <source>— counter-clockwise</source>
-        <translation>— 逆时针</translation>
-    </message>
-    <message>
-        <source>radius %1, deviation from the least-squares circle magnified %2×; dashed: the nominal circle</source>
-        <translation>半径 %1，相对最小二乘圆的偏差放大 %2×；虚线：名义圆</translation>
-    </message>
-    <message>
-        <source>Instrument: %1
-Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolution</source>
-        <translation>仪器：%1
-平面 %2，圆心（%3, %4），半径 %5，进给速度 %6，引入弧 %7；每周 %8 个采样点</translation>
-    </message>
-    <message>
-        <source>Figures (ISO 230-4, µm)</source>
-        <translation>评定指标（ISO 230-4，µm）</translation>
-    </message>
-    <message>
-        <source>figure</source>
-        <translation>指标</translation>
-    </message>
-    <message>
-        <source>value (µm)</source>
-        <translation>数值 (µm)</translation>
-    </message>
-    <message>
-        <source>limit (µm)</source>
-        <translation>限值 (µm)</translation>
-    </message>
-    <message>
-        <source>verdict</source>
-        <translation>判定</translation>
-    </message>
-    <message>
-        <source>clockwise</source>
-        <translation>顺时针</translation>
-    </message>
-    <message>
-        <source>counter-clockwise</source>
-        <translation>逆时针</translation>
-    </message>
-    <message>
-        <source>G circular deviation, %1</source>
-        <translation>G 圆偏差，%1</translation>
-    </message>
-    <message>
-        <source>radial deviation, %1: min … max</source>
-        <translation>径向偏差，%1：最小 … 最大</translation>
-    </message>
-    <message>
-        <source>G(b) bidirectional circular deviation</source>
-        <translation>G(b) 双向圆偏差</translation>
-    </message>
-    <message>
-        <source>H circular hysteresis</source>
-        <translation>H 圆滞后</translation>
-    </message>
-    <message>
-        <source>BenchPilot circular test · %1 · %2</source>
-        <translation>BenchPilot 圆测试 · %1 · %2</translation>
-    </message>
-    <message>
-        <source>cannot write %1</source>
-        <translation>无法写入 %1</translation>
-    </message>
-</context>
-<context>
     <name>sim</name>
     <message>
         <source>BenchPilot simulated instrument on a pseudo-terminal.</source>
@@ -3514,68 +3308,6 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
     <message>
         <source>--no-homing is for the GRBL personality (--protocol grbl or grblhal)</source>
         <translation>--no-homing 仅用于 GRBL 模式（--protocol grbl 或 grblhal）</translation>
-    </message>
-</context>
-<context>
-    <name>simapp::PtyTransport</name>
-    <message>
-        <source>cannot create a pseudo-terminal: %1</source>
-        <translation>无法创建伪终端：%1</translation>
-    </message>
-    <message>
-        <source>cannot name the pseudo-terminal: %1</source>
-        <translation>无法获取伪终端名称：%1</translation>
-    </message>
-</context>
-<context>
-    <name>tele::TelemetryHub</name>
-    <message>
-        <source>commanded</source>
-        <translation>指令位置</translation>
-    </message>
-    <message>
-        <source>measured</source>
-        <translation>实测位置</translation>
-    </message>
-    <message>
-        <source>velocity</source>
-        <translation>速度</translation>
-    </message>
-    <message>
-        <source>following error</source>
-        <translation>跟随误差</translation>
-    </message>
-    <message>
-        <source>controller output</source>
-        <translation>控制器输出</translation>
-    </message>
-    <message>
-        <source>switches</source>
-        <translation>开关</translation>
-    </message>
-    <message>
-        <source>contour error</source>
-        <translation>轮廓误差</translation>
-    </message>
-    <message>
-        <source>controller output u</source>
-        <translation>控制器输出 u</translation>
-    </message>
-    <message>
-        <source>Instrument %1</source>
-        <translation>仪器 %1</translation>
-    </message>
-    <message>
-        <source>%1 %2</source>
-        <translation>%1 %2</translation>
-    </message>
-    <message>
-        <source>%1 %2 %3</source>
-        <translation>%1 %2 %3</translation>
-    </message>
-    <message>
-        <source>%1 [%2]</source>
-        <translation>%1 [%2]</translation>
     </message>
 </context>
 <context>
@@ -8214,7 +7946,272 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::AccuracyBenchWords</name>
+    <name>ui::report</name>
+    <message>
+        <source>Instrument: %1</source>
+        <translation>仪器：%1</translation>
+    </message>
+    <message>
+        <source>Reference: %1</source>
+        <translation>测量基准：%1</translation>
+    </message>
+    <message>
+        <source>Axis %1, %2 targets (mm): %3</source>
+        <translation>%1 轴，%2 个目标位置 (mm)：%3</translation>
+    </message>
+    <message>
+        <source>%1 cycles, %2</source>
+        <translation>%1 次循环，%2</translation>
+    </message>
+    <message>
+        <source>bidirectional (ISO 230-2 standard linear cycle)</source>
+        <translation>双向（ISO 230-2 标准线性循环）</translation>
+    </message>
+    <message>
+        <source>unidirectional (approached from below)</source>
+        <translation>单向（从下方趋近）</translation>
+    </message>
+    <message>
+        <source>Feed %1, overrun %2, dwell %3; settled within %4 for %5 (timeout %6)</source>
+        <translation>进给速度 %1，越程 %2，停留 %3；在 %4 以内稳定 %5 后读数（超时 %6）</translation>
+    </message>
+    <message>
+        <source>Readings: %1</source>
+        <translation>读数文件：%1</translation>
+    </message>
+    <message>
+        <source>Figure</source>
+        <translation>指标</translation>
+    </message>
+    <message>
+        <source>Before (µm)</source>
+        <translation>补偿前 (µm)</translation>
+    </message>
+    <message>
+        <source>After (µm)</source>
+        <translation>补偿后 (µm)</translation>
+    </message>
+    <message>
+        <source>Improvement</source>
+        <translation>改善倍数</translation>
+    </message>
+    <message>
+        <source>Value (µm)</source>
+        <translation>数值 (µm)</translation>
+    </message>
+    <message>
+        <source>Limit (µm)</source>
+        <translation>限值 (µm)</translation>
+    </message>
+    <message>
+        <source>Verdict</source>
+        <translation>判定</translation>
+    </message>
+    <message>
+        <source>pass</source>
+        <translation>合格</translation>
+    </message>
+    <message>
+        <source>FAIL</source>
+        <translation>不合格</translation>
+    </message>
+    <message>
+        <source>target (mm)</source>
+        <translation>目标位置 (mm)</translation>
+    </message>
+    <message>
+        <source>deviation (µm)</source>
+        <translation>偏差 (µm)</translation>
+    </message>
+    <message>
+        <source>mean ↑</source>
+        <translation>平均值 ↑</translation>
+    </message>
+    <message>
+        <source>mean ↓</source>
+        <translation>平均值 ↓</translation>
+    </message>
+    <message>
+        <source>mean ± 2s</source>
+        <translation>平均值 ± 2s</translation>
+    </message>
+    <message>
+        <source>readings ↑</source>
+        <translation>读数 ↑</translation>
+    </message>
+    <message>
+        <source>readings ↓</source>
+        <translation>读数 ↓</translation>
+    </message>
+    <message>
+        <source>BenchPilot accuracy report · %1 · %2</source>
+        <translation>BenchPilot 精度报告 · %1 · %2</translation>
+    </message>
+    <message>
+        <source>Figures before and after compensation (ISO 230-2:2014)</source>
+        <translation>补偿前后的评定指标（ISO 230-2:2014）</translation>
+    </message>
+    <message>
+        <source>Figures (ISO 230-2:2014)</source>
+        <translation>评定指标（ISO 230-2:2014）</translation>
+    </message>
+    <message>
+        <source>PASS: every figure judged is within its limit.</source>
+        <translation>合格：所有参与评定的指标均在限值以内。</translation>
+    </message>
+    <message>
+        <source>FAIL: a figure is beyond its limit.</source>
+        <translation>不合格：有指标超出限值。</translation>
+    </message>
+    <message>
+        <source>No tolerances were given: the figures are not judged.</source>
+        <translation>未给出公差：不对指标进行评定。</translation>
+    </message>
+    <message>
+        <source>Deviations: mean ± 2s per direction</source>
+        <translation>偏差：各方向的平均值 ± 2s</translation>
+    </message>
+    <message>
+        <source>Per target (µm)</source>
+        <translation>各目标位置 (µm)</translation>
+    </message>
+    <message>
+        <source>Before and after</source>
+        <translation>补偿前后</translation>
+    </message>
+    <message>
+        <source>mean deviation (µm)</source>
+        <translation>平均偏差 (µm)</translation>
+    </message>
+    <message>
+        <source>before</source>
+        <translation>补偿前</translation>
+    </message>
+    <message>
+        <source>after</source>
+        <translation>补偿后</translation>
+    </message>
+    <message>
+        <source>Compensation fit of the mean deviations (seed 002&apos;s method)</source>
+        <translation>平均偏差的补偿拟合（文献 002 的方法）</translation>
+    </message>
+    <message>
+        <source>order</source>
+        <translation>阶数</translation>
+    </message>
+    <message>
+        <source>SSE (µm²)</source>
+        <translation>残差平方和 (µm²)</translation>
+    </message>
+    <message>
+        <source>adjusted R²</source>
+        <translation>调整后 R²</translation>
+    </message>
+    <message>
+        <source>chosen</source>
+        <translation>选用</translation>
+    </message>
+    <message>
+        <source>not enough points</source>
+        <translation>点数不足</translation>
+    </message>
+    <message>
+        <source>e(x) = %1 µm, x in mm (order %2%3)</source>
+        <translation>e(x) = %1 µm，x 单位为 mm（%2 阶%3）</translation>
+    </message>
+    <message>
+        <source>, chosen by the operator</source>
+        <translation>，由操作员选定</translation>
+    </message>
+    <message>
+        <source>, chosen by adjusted R²</source>
+        <translation>，按调整后 R² 选定</translation>
+    </message>
+    <message>
+        <source>residual (µm)</source>
+        <translation>残差 (µm)</translation>
+    </message>
+    <message>
+        <source>mean deviation − fit</source>
+        <translation>平均偏差 − 拟合值</translation>
+    </message>
+    <message>
+        <source>a PDF needs a graphical application object; none exists in this program</source>
+        <translation>生成 PDF 需要图形应用程序对象，而本程序中没有</translation>
+    </message>
+    <message>
+        <source>— clockwise</source>
+        <translation>— 顺时针</translation>
+    </message>
+    <message>
+        <source>— counter-clockwise</source>
+        <translation>— 逆时针</translation>
+    </message>
+    <message>
+        <source>radius %1, deviation from the least-squares circle magnified %2×; dashed: the nominal circle</source>
+        <translation>半径 %1，相对最小二乘圆的偏差放大 %2×；虚线：名义圆</translation>
+    </message>
+    <message>
+        <source>Instrument: %1
+Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolution</source>
+        <translation>仪器：%1
+平面 %2，圆心（%3, %4），半径 %5，进给速度 %6，引入弧 %7；每周 %8 个采样点</translation>
+    </message>
+    <message>
+        <source>Figures (ISO 230-4, µm)</source>
+        <translation>评定指标（ISO 230-4，µm）</translation>
+    </message>
+    <message>
+        <source>figure</source>
+        <translation>指标</translation>
+    </message>
+    <message>
+        <source>value (µm)</source>
+        <translation>数值 (µm)</translation>
+    </message>
+    <message>
+        <source>limit (µm)</source>
+        <translation>限值 (µm)</translation>
+    </message>
+    <message>
+        <source>verdict</source>
+        <translation>判定</translation>
+    </message>
+    <message>
+        <source>clockwise</source>
+        <translation>顺时针</translation>
+    </message>
+    <message>
+        <source>counter-clockwise</source>
+        <translation>逆时针</translation>
+    </message>
+    <message>
+        <source>G circular deviation, %1</source>
+        <translation>G 圆偏差，%1</translation>
+    </message>
+    <message>
+        <source>radial deviation, %1: min … max</source>
+        <translation>径向偏差，%1：最小 … 最大</translation>
+    </message>
+    <message>
+        <source>G(b) bidirectional circular deviation</source>
+        <translation>G(b) 双向圆偏差</translation>
+    </message>
+    <message>
+        <source>H circular hysteresis</source>
+        <translation>H 圆滞后</translation>
+    </message>
+    <message>
+        <source>BenchPilot circular test · %1 · %2</source>
+        <translation>BenchPilot 圆测试 · %1 · %2</translation>
+    </message>
+    <message>
+        <source>cannot write %1</source>
+        <translation>无法写入 %1</translation>
+    </message>
+</context>
+<context>
+    <name>ui::words::AccuracyBenchWords</name>
     <message>
         <source>must be a number (not NaN or infinite)</source>
         <translation>必须是数字（不能是 NaN 或无穷大）</translation>
@@ -8777,7 +8774,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::AccuracyWords</name>
+    <name>ui::words::AccuracyWords</name>
     <message>
         <source>must be a number (not NaN or infinite)</source>
         <comment>accuracy.value_not_finite</comment>
@@ -9115,7 +9112,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::CapabilityWords</name>
+    <name>ui::words::CapabilityWords</name>
     <message>
         <source>homing switches</source>
         <translation>零位开关</translation>
@@ -9230,7 +9227,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::DeviceWords</name>
+    <name>ui::words::DeviceWords</name>
     <message>
         <source>%1 not sent: the instrument is not connected</source>
         <comment>request.not_sent</comment>
@@ -9933,7 +9930,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::Durations</name>
+    <name>ui::words::Durations</name>
     <message>
         <source>%1 s</source>
         <translation>%1 s</translation>
@@ -9948,7 +9945,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::EventWords</name>
+    <name>ui::words::EventWords</name>
     <message>
         <source>already there: nothing moved</source>
         <comment>device.why.already_there</comment>
@@ -10145,7 +10142,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::FileWords</name>
+    <name>ui::words::FileWords</name>
     <message>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
@@ -10537,7 +10534,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::GrblBackendWords</name>
+    <name>ui::words::GrblBackendWords</name>
     <message>
         <source>no answer from %1 within %2: check power, cable and baud rate (GRBL boards usually run at 115200 Bd)</source>
         <comment>grbl.connect.no_answer</comment>
@@ -10880,7 +10877,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::GrblWords</name>
+    <name>ui::words::GrblWords</name>
     <message>
         <source>error %1: %2 (answering &quot;%3&quot;)</source>
         <comment>grbl.error.worded</comment>
@@ -11043,7 +11040,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::IdentityWords</name>
+    <name>ui::words::IdentityWords</name>
     <message>
         <source>BenchPilot analyzer manipulator (simulated)</source>
         <translation>BenchPilot 分析仪机械手（模拟）</translation>
@@ -11054,7 +11051,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::PatternWords</name>
+    <name>ui::words::PatternWords</name>
     <message>
         <source>must be a number</source>
         <comment>pattern.not_a_number</comment>
@@ -11262,7 +11259,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::PlateWords</name>
+    <name>ui::words::PlateWords</name>
     <message>
         <source>must not be empty</source>
         <comment>plate.empty</comment>
@@ -11510,7 +11507,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::ProfileWords</name>
+    <name>ui::words::ProfileWords</name>
     <message>
         <source>%1 = %2 must be finite</source>
         <comment>profile.not_finite</comment>
@@ -11588,7 +11585,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::RecipeWords</name>
+    <name>ui::words::RecipeWords</name>
     <message>
         <source>a recipe has at most %1 steps (got %2)</source>
         <comment>recipe.too_many_steps</comment>
@@ -12200,7 +12197,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::RefusalWords</name>
+    <name>ui::words::RefusalWords</name>
     <message>
         <source>the device does not know this request (type %1)</source>
         <comment>device.refused.unknown_command</comment>
@@ -12318,7 +12315,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::ScanWords</name>
+    <name>ui::words::ScanWords</name>
     <message>
         <source>must be from %1 to %2 (got %3)</source>
         <comment>scan.out_of_range</comment>
@@ -12643,7 +12640,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::ShippedNames</name>
+    <name>ui::words::ShippedNames</name>
     <message>
         <source>back</source>
         <translation>后侧</translation>
@@ -12686,7 +12683,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::TuningWords</name>
+    <name>ui::words::TuningWords</name>
     <message>
         <source>%1 is %2: a gain must be a finite number</source>
         <comment>tuning.gain_not_finite</comment>
