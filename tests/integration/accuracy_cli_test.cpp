@@ -114,6 +114,23 @@ TEST(AccuracyCli, ARunOnTheSimulatedStageByItsGaugeThenItsFit)
     EXPECT_EQ(csv.out.count(QLatin1Char('\n')), 41) << "41 triplets over the fitted range";
 }
 
+// The reading sources' refusals are worded in the language asked for: their strings
+// were once filed by lupdate under another context than the one they are looked up in.
+TEST(AccuracyCli, AReadingSourcesRefusalIsInTheChosenLanguage)
+{
+    QTemporaryDir dir;
+    const QStringList args = {QStringLiteral("--sim"), QStringLiteral("stage"), QStringLiteral("accuracy"), QStringLiteral("run"),
+                              QStringLiteral("--axis"), QStringLiteral("X"), QStringLiteral("--targets"), QStringLiteral("10:90:4"),
+                              QStringLiteral("--source"), QStringLiteral("gauge:sim"), QStringLiteral("--gauge-timeout"), QStringLiteral("99"),
+                              QStringLiteral("--out"), dir.path()};
+    const auto en = runCliInProcess(args);
+    EXPECT_NE(en.code, 0);
+    EXPECT_TRUE(en.err.contains(QStringLiteral("--gauge-timeout must be from 0 to 60 s"))) << en.err.toStdString();
+    const auto zh = runCliInProcess(QStringList{QStringLiteral("--lang"), QStringLiteral("zh_CN")} + args);
+    EXPECT_NE(zh.code, 0);
+    EXPECT_TRUE(zh.err.contains(QStringLiteral("--gauge-timeout 必须在 0 到 60 s 之间"))) << zh.err.toStdString();
+}
+
 TEST(AccuracyCli, TheDeviceKeepsAnUploadedCompensationAcrossPrograms)
 {
     PtySimulator sim;
