@@ -147,21 +147,7 @@ void GrblFirmware::restart()
     m_homed = false;
     m_alarm = 0;
     m_state = m_settings.homingEnabled() ? State::Alarm : State::Idle;
-    m_critical = false;
-    m_jogCancel = false;
-    m_softLimitHold = false;
-    m_pending = Pending{};
-    m_rx.clear();
-    m_line.clear();
-    m_lineOverflow = false;
-    m_statusRequested = false;
-    m_modal = GrblModalState{};
-    bool floodOn = false;
-    for (const auto& e : m_outputs)
-        if (e.port < 0)
-            floodOn = e.on;
-    if (floodOn)
-        m_outputs.push_back({m_machine.timeS(), -1, false});
+    clearForReset();
     m_out.clear();  // half a line it was sending dies with it
     welcome();
 }
@@ -189,6 +175,14 @@ void GrblFirmware::softReset()
     // A reset keeps an alarm (position still unknown); otherwise GRBL comes back Idle.
     if (m_state != State::Alarm)
         m_state = State::Idle;
+    clearForReset();
+    welcome();
+}
+
+// What any reset clears, a power cycle or a soft reset alike, so that a new piece of
+// state is added here once rather than to each path.
+void GrblFirmware::clearForReset()
+{
     m_critical = false;
     m_jogCancel = false;
     m_softLimitHold = false;
@@ -205,7 +199,6 @@ void GrblFirmware::softReset()
             floodOn = e.on;
     if (floodOn)
         m_outputs.push_back({m_machine.timeS(), -1, false});
-    welcome();
 }
 
 void GrblFirmware::raiseAlarm(int code, bool critical)

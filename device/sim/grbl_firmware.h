@@ -94,6 +94,7 @@ private:
     // grbl_firmware.cpp: bytes, time, states.
     void realtime(std::uint8_t b);
     void softReset();
+    void clearForReset();
     void tick();
     void readLines();
     void raiseAlarm(int code, bool critical);
