@@ -113,10 +113,12 @@ TEST_P(TuningOnStage, ZieglerNicholsPidSettlesInsideTheSeedsBandAndTrialsStayInT
     std::cout << "\n";
     // Z-N PID is aggressive for this loop: the simulated stage, like the hands-on session's,
     // hunts about ±1 µm (four grating counts peak to peak) every 8–9 ms at rest, inside ±5 µm
-    // all along. The verdict says so instead of "settled inside ±5 µm".
+    // all along. The verdict says so instead of "settled inside ±5 µm". How hard it hunts
+    // follows the Ku and Tu the experiment found, which move by a grating count with where
+    // in the loop's cycle the host's requests land: seen from 1.1 to 2.2 µm over repeats.
     EXPECT_EQ(r.verification->metrics.outcome, motion::control::StepOutcome::LimitCycle);
     EXPECT_GT(r.verification->limitCycle.amplitude, 0.0006);
-    EXPECT_LT(r.verification->limitCycle.amplitude, 0.002);
+    EXPECT_LT(r.verification->limitCycle.amplitude, 0.003);
     // Every experiment stayed inside the operator's envelope, trials well inside.
     ASSERT_FALSE(t.records.empty());
     for (const auto& rec : t.records) {
