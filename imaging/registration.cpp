@@ -314,37 +314,50 @@ PairRegistration registerPair(const ImageF& a, const ImageF& b, const Eigen::Vec
         return out;
     std::sort(readings.begin(), readings.end(), [](const Candidate& p, const Candidate& q) { return p.ncc > q.ncc; });
     const Candidate best = readings.front();
-    for (const Candidate& q : readings)
-        if (std::max(std::abs(q.dx - best.dx), std::abs(q.dy - best.dy)) > 2) {
-            out.secondNcc = q.ncc;
+    // Hill-climb the NCC over integer offsets (MIST's local search): a correlation
+    // peak blurred by the window may sit a pixel or two off the best offset.
+    auto climb = [&](Candidate from) {
+        for (int step = 0; step < 4 * bound + 8; ++step) {
+            Candidate next = from;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    if ((!dx && !dy) || std::abs(from.dx + dx) > bound || std::abs(from.dy + dy) > bound)
+                        continue;
+                    const Rect r = overlapIn(a, b, ex + from.dx + dx, ey + from.dy + dy);
+                    if (r.w() < opt.minOverlapPx || r.h() < opt.minOverlapPx)
+                        continue;
+                    const double v = overlapNcc(a, b, ex + from.dx + dx, ey + from.dy + dy);
+                    if (v > next.ncc) {
+                        next = from;
+                        next.dx += dx;
+                        next.dy += dy;
+                        next.ncc = v;
+                    }
+                }
+            if (next.dx == from.dx && next.dy == from.dy)
+                break;
+            from = next;
+        }
+        return from;
+    };
+    const Candidate top = climb(best);
+    const int bx = top.dx, by = top.dy;
+    const double bestNcc = top.ncc;
+    // The runner-up is another hill of the NCC, not the slope of the winner's: a
+    // rival candidate climbs to its own maximum, and counts only if that lies apart.
+    out.secondNcc = 0;
+    int tried = 0;
+    for (const Candidate& q : readings) {
+        if (tried >= 3)
+            break;
+        if (std::max(std::abs(q.dx - bx), std::abs(q.dy - by)) <= 2)
+            continue;
+        ++tried;
+        const Candidate rival = climb(q);
+        if (std::max(std::abs(rival.dx - bx), std::abs(rival.dy - by)) > 1) {
+            out.secondNcc = rival.ncc;
             break;
         }
-    // Hill-climb the NCC over integer offsets from the winner (MIST's local search):
-    // a correlation peak blurred by the window may sit a pixel or two off the best.
-    int bx = best.dx, by = best.dy;
-    double bestNcc = best.ncc;
-    for (int step = 0; step < 4 * bound + 8; ++step) {
-        int nx = bx, ny = by;
-        double nn = bestNcc;
-        for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) {
-                if ((!dx && !dy) || std::abs(bx + dx) > bound || std::abs(by + dy) > bound)
-                    continue;
-                const Rect r = overlapIn(a, b, ex + bx + dx, ey + by + dy);
-                if (r.w() < opt.minOverlapPx || r.h() < opt.minOverlapPx)
-                    continue;
-                const double v = overlapNcc(a, b, ex + bx + dx, ey + by + dy);
-                if (v > nn) {
-                    nn = v;
-                    nx = bx + dx;
-                    ny = by + dy;
-                }
-            }
-        if (nx == bx && ny == by)
-            break;
-        bx = nx;
-        by = ny;
-        bestNcc = nn;
     }
     const Eigen::Vector2d integer(ex + bx, ey + by);
     const Refined r = refine(a, b, integer);
