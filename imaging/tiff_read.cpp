@@ -121,9 +121,9 @@ std::string lastTiffMessage()
     return tlsTiffMessage;
 }
 
-msg::Checked<TiffInfo> readTiffInfo(const std::string& path)
+msg::Checked<TiffInfo> readTiffInfo(const std::string& path, const std::string& shownName)
 {
-    auto o = openTiff(path, path);
+    auto o = openTiff(path, shownName.empty() ? path : shownName);
     if (!o)
         return msg::Checked<TiffInfo>::refused(o.problems());
     return msg::Checked<TiffInfo>::ok(o->info);

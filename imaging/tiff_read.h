@@ -16,7 +16,7 @@ struct TiffInfo {
 };
 
 /// The size and sample kind of `path`'s first image, without its pixels.
-msg::Checked<TiffInfo> readTiffInfo(const std::string& path);
+msg::Checked<TiffInfo> readTiffInfo(const std::string& path, const std::string& shownName = {});
 /// The first image of `path`. `shownName` is how problems name the file ("" = path).
 msg::Checked<TileImage> readTiff(const std::string& path, const std::string& shownName = {});
 
