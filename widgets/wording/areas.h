@@ -23,6 +23,7 @@ QString recipe(const msg::Message& m);      ///< "recipe."
 QString scan(const msg::Message& m);        ///< "scan."
 QString tuning(const msg::Message& m);      ///< "tuning."
 QString gauge(const msg::Message& m);       ///< "gauge." (accuracy_bench_words.cpp)
+QString imaging(const msg::Message& m);     ///< "imaging." (imaging_words.cpp)
 
 // What an area's table does not word yet, in a context of its own whose Chinese is
 // pending (tests/build/translations.cmake): the area's function falls back to these.
