@@ -28,7 +28,9 @@ bool parseNumber(std::string_view s, double& out)
     std::istringstream in{std::string(s)};
     in.imbue(std::locale::classic());
     in >> out;
-    return !in.fail() && in.peek() == std::char_traits<char>::eof() && std::isfinite(out);
+    // A position beyond a billion pixels is no mosaic's: refused, so any accepted
+    // number writes back in a short fixed-point form.
+    return !in.fail() && in.peek() == std::char_traits<char>::eof() && std::isfinite(out) && std::abs(out) <= 1e9;
 }
 
 msg::Problem at(const std::string& file, int line, const char* id, std::vector<msg::Arg> args = {})
