@@ -264,6 +264,10 @@ void addStitchCommands(std::vector<Command>& list)
                     option("no-mosaic", "register and place only: the TileConfiguration and the report")},
                    stitchRun,
                    {}};
+    // Not yet a scripting-API method: the API's page runs every method's example, and
+    // this one needs a folder of images that no earlier example makes (the simulated
+    // camera's scan will). Its JSON is already the shape the method will return.
+    stitch.api.offered = false;
     stitch.api.access = Access::Compute;
     stitch.api.params = {{QStringLiteral("dir"), ParamType::File, tr("the folder of tiles"), true, {}, {}},
                          optionParam("positions", ParamType::File),
