@@ -256,7 +256,7 @@ void addStitchCommands(std::vector<Command>& list)
                     option("plan", "the scan plan: pixel size, rotation and image_y of its camera", "PLAN.json"),
                     option("pixel-um", "one pixel at the sample, µm", "P"),
                     option("rotation", "camera rotation against stage +X, degrees (with a run log)", "DEG"),
-                    option("image-y", "image rows run along stage-minus-y or stage-plus-y (with a run log)", "DIR"),
+                    option("image-y", "image rows run along stage-minus-y or stage-plus-y (with a run log)", "AXIS"),
                     option("max-shift-px", "how far registration may move a tile from its stage position, px", "N", "40"),
                     option("repeatability-um", "the stage's repeatability (1σ), µm: the weight of its positions", "UM", "1"),
                     option("blend", "feather (linear in the overlaps) or overlay", "MODE", "feather"),

@@ -182,3 +182,30 @@ TEST(OmeTiff, AFullDiskLeavesNoMosaicUnderTheOutputName)
     EXPECT_FALSE(exists(path));
     EXPECT_FALSE(exists(path + ".partial"));
 }
+
+TEST(OmeTiff, ABigTiffMosaicReadsBackTheSame)
+{
+    const std::string path = scratch("big.ome.tif");
+    imaging::OmeTiffOptions o;
+    o.pixelSizeUm = 0.325;
+    o.forceBigTiff = true;  // what a mosaic past 2 GB gets
+    auto w = imaging::OmeTiffWriter::open(path, 300, 200, o);
+    ASSERT_TRUE(w.ok());
+    std::vector<std::uint16_t> rows(300 * 200);
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        rows[i] = static_cast<std::uint16_t>(i % 60000);
+    ASSERT_TRUE((*w)->writeRows(rows.data(), 200).empty());
+    ASSERT_TRUE((*w)->finish().empty());
+    std::ifstream in(path, std::ios::binary);
+    char magic[4] = {};
+    in.read(magic, 4);
+    EXPECT_EQ(magic[0], 'I');
+    EXPECT_EQ(magic[2], 43);  // BigTIFF's version number (classic TIFF is 42)
+    TIFF* t = TIFFOpen(path.c_str(), "r");
+    ASSERT_NE(t, nullptr);
+    std::vector<std::uint16_t> tile(static_cast<std::size_t>(TIFFTileSize(t) / 2));
+    ASSERT_GE(TIFFReadTile(t, tile.data(), 0, 0, 0, 0), 0);
+    EXPECT_EQ(tile[5 * 256 + 7], rows[5 * 300 + 7]);
+    TIFFClose(t);
+    EXPECT_NE(imaging::readImageDescription(path).find("PhysicalSizeX=\"0.325\""), std::string::npos);
+}
