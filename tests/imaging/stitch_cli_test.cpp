@@ -53,7 +53,7 @@ std::string scratchDir(const std::string& name)
 
 // A 4 × 3 scan at 0.65 µm a pixel, image y along stage −Y (the default), written as
 // the camera writes it: tile TIFFs and a run log whose lines carry "image" and "sha256".
-void writeScan(const imagingtest::Grid& g, const std::string& dir)
+void writeScan(const imagingtest::Grid& g, const std::string& dir, double yMmPerPx = -0.00065)
 {
     std::ostringstream log;
     log << "{\"schema\":\"benchpilot.scan-run\",\"version\":1,\"plan\":\"test\",\"fingerprint\":\"0123456789abcdef\",\"tiles\":"
@@ -63,7 +63,7 @@ void writeScan(const imagingtest::Grid& g, const std::string& dir)
         std::snprintf(name, sizeof name, "tile_%03zu.tif", i + 1);
         EXPECT_TRUE(imaging::writeTiff(dir + "/" + name, g.tiles[i]).empty());
         // The stage's reading, in mm: image +x is stage +X, image +y is stage −Y.
-        const double xmm = 20 + g.stagePx[i].x() * 0.00065, ymm = 40 - g.stagePx[i].y() * 0.00065;
+        const double xmm = 20 + g.stagePx[i].x() * 0.00065, ymm = 40 + g.stagePx[i].y() * yMmPerPx;
         log.precision(10);
         log << "{\"tile\":" << i << ",\"label\":\"" << name << "\",\"planned_mm\":[0,0],\"commanded_mm\":[0,0],\"measured_mm\":[" << xmm << ","
             << ymm << "],\"device_time_us\":1,\"settle_s\":0.01,\"image\":\"" << name << "\",\"sha256\":\"00\"}\n";
@@ -144,4 +144,23 @@ TEST(StitchCli, BadFoldersAreRefusedNamingTheFileAndNoMosaicIsLeft)
         EXPECT_EQ(r.code, 1);
         EXPECT_NE(r.err.find("--pixel-um"), std::string::npos) << r.err;
     }
+}
+
+TEST(StitchCli, TheCameraGeometryTurnsTheLogsMillimetresIntoPixels)
+{
+    // A camera whose image rows run along stage +Y: stitched as such, every pair holds;
+    // stitched with the default (stage −Y) the rows come out mirrored, and the pairs
+    // between rows find nothing where the stage puts them.
+    const imagingtest::Texture tex(53);
+    const imagingtest::Grid g = imagingtest::makeGrid(tex);
+    const std::string dir = scratchDir("imagey");
+    writeScan(g, dir + "/scan", +0.00065);
+    const CliRun right = cli("stitch " + dir + "/scan --pixel-um 0.65 --image-y stage-plus-y --no-mosaic --json", dir);
+    ASSERT_EQ(right.code, 0) << right.err;
+    EXPECT_NE(right.out.find("\"tiles_placed_by_stage\":0"), std::string::npos) << right.out.substr(right.out.size() - 300);
+    EXPECT_EQ(right.out.find("\"accepted\":false"), std::string::npos);
+    const CliRun wrong = cli("stitch " + dir + "/scan --pixel-um 0.65 --no-mosaic --json", dir);
+    ASSERT_EQ(wrong.code, 0) << wrong.err;
+    EXPECT_NE(wrong.out.find("\"accepted\":false"), std::string::npos);
+    EXPECT_FALSE(exists(dir + "/scan/mosaic.ome.tif"));
 }
