@@ -42,7 +42,7 @@ MosaicFrame mosaicFrame(const std::vector<Eigen::Vector2d>& positionsPx, int til
     return f;
 }
 
-msg::Problems fuseTiles(const std::vector<Eigen::Vector2d>& positionsPx, int tileW, int tileH, const TileLoader& load,
+motion::msg::Problems fuseTiles(const std::vector<Eigen::Vector2d>& positionsPx, int tileW, int tileH, const TileLoader& load,
                         OmeTiffWriter& out, const FusionOptions& o)
 {
     const MosaicFrame frame = mosaicFrame(positionsPx, tileW, tileH);
@@ -69,11 +69,11 @@ msg::Problems fuseTiles(const std::vector<Eigen::Vector2d>& positionsPx, int til
                 continue;
             auto it = held.find(i);
             if (it == held.end()) {
-                msg::Checked<TileImage> t = load(i);
+                motion::msg::Checked<TileImage> t = load(i);
                 if (!t)
                     return t.problems();
                 if (t->grey.width != tileW || t->grey.height != tileH)
-                    return {msg::error("", msg::make("imaging.mosaic.tile_changed", {msg::integer("tile", i, msg::Unit::None)}))};
+                    return {motion::msg::error("", motion::msg::make("imaging.mosaic.tile_changed", {motion::msg::integer("tile", i, motion::msg::Unit::None)}))};
                 it = held.emplace(i, t.take()).first;
             }
             const ImageU16& img = it->second.grey;
@@ -101,7 +101,7 @@ msg::Problems fuseTiles(const std::vector<Eigen::Vector2d>& positionsPx, int til
         const std::size_t n = static_cast<std::size_t>(y1 - y0) * static_cast<std::size_t>(W);
         for (std::size_t k = 0; k < n; ++k)
             rows[k] = weight[k] > 0 ? static_cast<std::uint16_t>(std::min(65535.f, sum[k] / weight[k] + 0.5f)) : 0;
-        msg::Problems p = out.writeRows(rows.data(), y1 - y0);
+        motion::msg::Problems p = out.writeRows(rows.data(), y1 - y0);
         if (!p.empty())
             return p;
     }

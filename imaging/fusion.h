@@ -29,7 +29,7 @@ struct FusionOptions {
 };
 
 /// Loads tile `index` (the caller reads its file; a problem stops the fusion).
-using TileLoader = std::function<msg::Checked<TileImage>(int index)>;
+using TileLoader = std::function<motion::msg::Checked<TileImage>(int index)>;
 
 /// The mosaic's size for tiles of `tileW` × `tileH` at `positionsPx` (each rounded),
 /// and the offset that moves the top-left-most tile to (0, 0).
@@ -40,7 +40,7 @@ struct MosaicFrame {
 MosaicFrame mosaicFrame(const std::vector<Eigen::Vector2d>& positionsPx, int tileW, int tileH);
 
 /// Fuses every tile into `out` (opened with mosaicFrame's size) and finishes it.
-msg::Problems fuseTiles(const std::vector<Eigen::Vector2d>& positionsPx, int tileW, int tileH, const TileLoader& load,
+motion::msg::Problems fuseTiles(const std::vector<Eigen::Vector2d>& positionsPx, int tileW, int tileH, const TileLoader& load,
                         OmeTiffWriter& out, const FusionOptions& options = {});
 
 } // namespace imaging

@@ -97,9 +97,9 @@ std::string OmeTiffWriter::omeXml(int width, int height, const OmeTiffOptions& o
     return x.str();
 }
 
-msg::Checked<std::shared_ptr<OmeTiffWriter>> OmeTiffWriter::open(const std::string& path, int width, int height, const OmeTiffOptions& o)
+motion::msg::Checked<std::shared_ptr<OmeTiffWriter>> OmeTiffWriter::open(const std::string& path, int width, int height, const OmeTiffOptions& o)
 {
-    using Result = msg::Checked<std::shared_ptr<OmeTiffWriter>>;
+    using Result = motion::msg::Checked<std::shared_ptr<OmeTiffWriter>>;
     quietTiff();
     std::shared_ptr<OmeTiffWriter> w(new OmeTiffWriter);
     w->m_path = path;
@@ -108,8 +108,8 @@ msg::Checked<std::shared_ptr<OmeTiffWriter>> OmeTiffWriter::open(const std::stri
     w->m_height = height;
     w->m_options = o;
     if (width <= 0 || height <= 0 || (o.bitsPerSample != 8 && o.bitsPerSample != 16) || o.tileSize % 16 || o.tileSize <= 0)
-        return Result::fail(msg::make("imaging.mosaic.bad_size", {msg::integer("width", width, msg::Unit::None),
-                                                                   msg::integer("height", height, msg::Unit::None)}));
+        return Result::fail(motion::msg::make("imaging.mosaic.bad_size", {motion::msg::integer("width", width, motion::msg::Unit::None),
+                                                                   motion::msg::integer("height", height, motion::msg::Unit::None)}));
     // Levels: the full size, then halvings until the longer side fits.
     int lw = width, lh = height;
     do {
@@ -123,16 +123,16 @@ msg::Checked<std::shared_ptr<OmeTiffWriter>> OmeTiffWriter::open(const std::stri
     for (std::size_t k = 1; k < w->m_levels.size(); ++k) {
         w->m_levels[k]->raw = std::tmpfile();
         if (!w->m_levels[k]->raw)
-            return Result::refused({msg::Problem(path, 0, 0, "", msg::make("imaging.mosaic.write_failed",
-                                   {msg::verbatim("file", path), msg::verbatim("reason", std::strerror(errno))}))});
+            return Result::refused({motion::msg::Problem(path, 0, 0, "", motion::msg::make("imaging.mosaic.write_failed",
+                                   {motion::msg::verbatim("file", path), motion::msg::verbatim("reason", std::strerror(errno))}))});
     }
     const double bytes = static_cast<double>(width) * height * (o.bitsPerSample / 8) * 4.0 / 3.0;
     const bool big = o.forceBigTiff || bytes > 2.0e9;
     std::remove(w->m_tempPath.c_str());
     w->m_tif = TIFFOpen(w->m_tempPath.c_str(), big ? "w8" : "w");
     if (!w->m_tif)
-        return Result::refused({msg::Problem(path, 0, 0, "", msg::make("imaging.mosaic.cannot_create",
-                               {msg::verbatim("file", path), msg::verbatim("reason", lastTiffMessage())}))});
+        return Result::refused({motion::msg::Problem(path, 0, 0, "", motion::msg::make("imaging.mosaic.cannot_create",
+                               {motion::msg::verbatim("file", path), motion::msg::verbatim("reason", lastTiffMessage())}))});
     TIFF* t = asTiff(w->m_tif);
     const std::string xml = omeXml(width, height, o);
     auto fields = [&](int level) {
@@ -181,16 +181,16 @@ void OmeTiffWriter::discard()
     m_failed = true;
 }
 
-msg::Problems OmeTiffWriter::failure(const char* what)
+motion::msg::Problems OmeTiffWriter::failure(const char* what)
 {
     const std::string reason = lastTiffMessage().empty() ? std::string(what) : lastTiffMessage();
     discard();
-    return {msg::Problem(m_path, 0, 0, "", msg::make("imaging.mosaic.write_failed", {msg::verbatim("file", m_path), msg::verbatim("reason", reason)}))};
+    return {motion::msg::Problem(m_path, 0, 0, "", motion::msg::make("imaging.mosaic.write_failed", {motion::msg::verbatim("file", m_path), motion::msg::verbatim("reason", reason)}))};
 }
 
 // Writes a band of `rows` rows (at most one tile high) of level `level` at the
 // current row of that level, and passes its halving down to the next level's file.
-msg::Problems OmeTiffWriter::writeBand(int level, const std::uint16_t* band, int rows)
+motion::msg::Problems OmeTiffWriter::writeBand(int level, const std::uint16_t* band, int rows)
 {
     Level& l = *m_levels[static_cast<std::size_t>(level)];
     const int ts = m_options.tileSize;
@@ -223,7 +223,7 @@ msg::Problems OmeTiffWriter::writeBand(int level, const std::uint16_t* band, int
     return {};
 }
 
-msg::Problems OmeTiffWriter::writeRows(const std::uint16_t* rows, int count)
+motion::msg::Problems OmeTiffWriter::writeRows(const std::uint16_t* rows, int count)
 {
     if (m_failed || m_finished)
         return {};
@@ -233,7 +233,7 @@ msg::Problems OmeTiffWriter::writeRows(const std::uint16_t* rows, int count)
                   rows + static_cast<std::size_t>(r + 1) * static_cast<std::size_t>(m_width),
                   m_band.data() + static_cast<std::size_t>(m_bandRows) * static_cast<std::size_t>(m_width));
         if (++m_bandRows == ts) {
-            msg::Problems p = writeBand(0, m_band.data(), m_bandRows);
+            motion::msg::Problems p = writeBand(0, m_band.data(), m_bandRows);
             m_bandRows = 0;
             if (!p.empty())
                 return p;
@@ -242,7 +242,7 @@ msg::Problems OmeTiffWriter::writeRows(const std::uint16_t* rows, int count)
     return {};
 }
 
-msg::Problems OmeTiffWriter::finish()
+motion::msg::Problems OmeTiffWriter::finish()
 {
     if (m_failed || m_finished)
         return {};
@@ -251,13 +251,13 @@ msg::Problems OmeTiffWriter::finish()
         // bug, not the disk's.
         std::vector<std::uint16_t> zeros(static_cast<std::size_t>(m_width), 0);
         while (m_rowsDone < m_height) {
-            msg::Problems p = writeRows(zeros.data(), 1);
+            motion::msg::Problems p = writeRows(zeros.data(), 1);
             if (!p.empty())
                 return p;
         }
     }
     if (m_bandRows > 0) {
-        msg::Problems p = writeBand(0, m_band.data(), m_bandRows);
+        motion::msg::Problems p = writeBand(0, m_band.data(), m_bandRows);
         m_bandRows = 0;
         if (!p.empty())
             return p;
@@ -292,7 +292,7 @@ msg::Problems OmeTiffWriter::finish()
             const std::size_t n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(l.width);
             if (std::fread(band.data(), sizeof(std::uint16_t), n, l.raw) != n)
                 return failure("cannot read back a pyramid level");
-            msg::Problems p = writeBand(static_cast<int>(k), band.data(), rows);
+            motion::msg::Problems p = writeBand(static_cast<int>(k), band.data(), rows);
             if (!p.empty())
                 return p;
         }
@@ -309,7 +309,7 @@ msg::Problems OmeTiffWriter::finish()
         const std::string reason = std::strerror(errno);
         std::remove(m_tempPath.c_str());
         m_failed = true;
-        return {msg::Problem(m_path, 0, 0, "", msg::make("imaging.mosaic.write_failed", {msg::verbatim("file", m_path), msg::verbatim("reason", reason)}))};
+        return {motion::msg::Problem(m_path, 0, 0, "", motion::msg::make("imaging.mosaic.write_failed", {motion::msg::verbatim("file", m_path), motion::msg::verbatim("reason", reason)}))};
     }
     m_finished = true;
     return {};

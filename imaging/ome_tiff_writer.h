@@ -36,7 +36,7 @@ struct OmeTiffOptions {
 class OmeTiffWriter {
 public:
     /// Opens `path`'s temporary sibling for a width × height mosaic.
-    static msg::Checked<std::shared_ptr<OmeTiffWriter>> open(const std::string& path, int width, int height, const OmeTiffOptions& options);
+    static motion::msg::Checked<std::shared_ptr<OmeTiffWriter>> open(const std::string& path, int width, int height, const OmeTiffOptions& options);
     ~OmeTiffWriter();
     OmeTiffWriter(const OmeTiffWriter&) = delete;
     OmeTiffWriter& operator=(const OmeTiffWriter&) = delete;
@@ -44,18 +44,18 @@ public:
     int width() const { return m_width; }
     int height() const { return m_height; }
     /// The next `count` rows, top to bottom, `width()` samples each.
-    msg::Problems writeRows(const std::uint16_t* rows, int count);
+    motion::msg::Problems writeRows(const std::uint16_t* rows, int count);
     /// Writes the smaller levels and renames the file into place. After an error the
     /// temporary file is removed and `path` is untouched.
-    msg::Problems finish();
+    motion::msg::Problems finish();
     /// The OME-XML written into the file (for tests and the docs).
     static std::string omeXml(int width, int height, const OmeTiffOptions& options);
 
 private:
     OmeTiffWriter() = default;
     struct Level;
-    msg::Problems writeBand(int level, const std::uint16_t* band, int rows);
-    msg::Problems failure(const char* what);
+    motion::msg::Problems writeBand(int level, const std::uint16_t* band, int rows);
+    motion::msg::Problems failure(const char* what);
     void discard();
 
     std::string m_path, m_tempPath;

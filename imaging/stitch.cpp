@@ -29,9 +29,9 @@ class TileCache {
 public:
     TileCache(const std::vector<StitchTile>& tiles, std::size_t capacity) : m_tiles(tiles), m_capacity(std::max<std::size_t>(3, capacity)) {}
 
-    msg::Checked<std::shared_ptr<const TileImage>> get(int i)
+    motion::msg::Checked<std::shared_ptr<const TileImage>> get(int i)
     {
-        using Result = msg::Checked<std::shared_ptr<const TileImage>>;
+        using Result = motion::msg::Checked<std::shared_ptr<const TileImage>>;
         {
             std::lock_guard<std::mutex> lock(m_mutex);
             auto it = m_held.find(i);
@@ -41,7 +41,7 @@ public:
             }
         }
         const StitchTile& t = m_tiles[static_cast<std::size_t>(i)];
-        msg::Checked<TileImage> read = readTiff(t.path, t.file);
+        motion::msg::Checked<TileImage> read = readTiff(t.path, t.file);
         if (!read)
             return Result::refused(read.problems());
         auto shared = std::make_shared<const TileImage>(read.take());
@@ -65,9 +65,9 @@ private:
     std::map<int, std::pair<std::shared_ptr<const TileImage>, std::list<int>::iterator>> m_held;
 };
 
-msg::Problem tileProblem(const StitchTile& t, const char* id, std::vector<msg::Arg> args)
+motion::msg::Problem tileProblem(const StitchTile& t, const char* id, std::vector<motion::msg::Arg> args)
 {
-    return msg::Problem(t.file, 0, 0, "", msg::make(id, std::move(args)));
+    return motion::msg::Problem(t.file, 0, 0, "", motion::msg::make(id, std::move(args)));
 }
 
 } // namespace
@@ -103,18 +103,18 @@ std::vector<TilePair> neighbourPairs(const std::vector<Eigen::Vector2d>& stagePx
     return pairs;
 }
 
-msg::Checked<StitchResult> checkTiles(const std::vector<StitchTile>& tiles)
+motion::msg::Checked<StitchResult> checkTiles(const std::vector<StitchTile>& tiles)
 {
-    using Result = msg::Checked<StitchResult>;
+    using Result = motion::msg::Checked<StitchResult>;
     if (tiles.empty())
-        return Result::fail(msg::make("imaging.tiles.none"));
-    msg::Problems problems;
+        return Result::fail(motion::msg::make("imaging.tiles.none"));
+    motion::msg::Problems problems;
     StitchResult r;
     r.tiles = tiles;
     const StitchTile* first = nullptr;
     TiffInfo firstInfo;
     for (const StitchTile& t : tiles) {
-        msg::Checked<TiffInfo> info = readTiffInfo(t.path, t.file);
+        motion::msg::Checked<TiffInfo> info = readTiffInfo(t.path, t.file);
         if (!info) {
             problems.insert(problems.end(), info.problems().begin(), info.problems().end());
             continue;
@@ -126,16 +126,16 @@ msg::Checked<StitchResult> checkTiles(const std::vector<StitchTile>& tiles)
         }
         if (info->width != firstInfo.width || info->height != firstInfo.height)
             problems.push_back(tileProblem(t, "imaging.tiles.mixed_size",
-                                           {msg::verbatim("file", t.file), msg::integer("width", info->width, msg::Unit::None),
-                                            msg::integer("height", info->height, msg::Unit::None), msg::verbatim("first", first->file),
-                                            msg::integer("first_width", firstInfo.width, msg::Unit::None),
-                                            msg::integer("first_height", firstInfo.height, msg::Unit::None)}));
+                                           {motion::msg::verbatim("file", t.file), motion::msg::integer("width", info->width, motion::msg::Unit::None),
+                                            motion::msg::integer("height", info->height, motion::msg::Unit::None), motion::msg::verbatim("first", first->file),
+                                            motion::msg::integer("first_width", firstInfo.width, motion::msg::Unit::None),
+                                            motion::msg::integer("first_height", firstInfo.height, motion::msg::Unit::None)}));
         else if (info->kind != firstInfo.kind)
             problems.push_back(tileProblem(t, "imaging.tiles.mixed_kind",
-                                           {msg::verbatim("file", t.file), msg::verbatim("kind", sampleKindName(info->kind)),
-                                            msg::verbatim("first", first->file), msg::verbatim("first_kind", sampleKindName(firstInfo.kind))}));
+                                           {motion::msg::verbatim("file", t.file), motion::msg::verbatim("kind", sampleKindName(info->kind)),
+                                            motion::msg::verbatim("first", first->file), motion::msg::verbatim("first_kind", sampleKindName(firstInfo.kind))}));
     }
-    if (msg::hasErrors(problems))
+    if (motion::msg::hasErrors(problems))
         return Result::refused(std::move(problems));
     r.tileWidth = firstInfo.width;
     r.tileHeight = firstInfo.height;
@@ -143,10 +143,10 @@ msg::Checked<StitchResult> checkTiles(const std::vector<StitchTile>& tiles)
     return Result::ok(std::move(r));
 }
 
-msg::Checked<StitchResult> stitch(const std::vector<StitchTile>& tiles, const StitchOptions& o)
+motion::msg::Checked<StitchResult> stitch(const std::vector<StitchTile>& tiles, const StitchOptions& o)
 {
-    using Result = msg::Checked<StitchResult>;
-    msg::Checked<StitchResult> checked = checkTiles(tiles);
+    using Result = motion::msg::Checked<StitchResult>;
+    motion::msg::Checked<StitchResult> checked = checkTiles(tiles);
     if (!checked)
         return checked;
     StitchResult r = checked.take();
@@ -161,7 +161,7 @@ msg::Checked<StitchResult> stitch(const std::vector<StitchTile>& tiles, const St
     TileCache cache(r.tiles, static_cast<std::size_t>(o.cacheMegabytes / std::max(0.001, tileMb)));
     std::atomic<std::size_t> next{0};
     std::mutex problemMutex;
-    msg::Problems problems;
+    motion::msg::Problems problems;
     auto work = [&] {
         for (std::size_t k = next++; k < r.pairs.size(); k = next++) {
             TilePair& p = r.pairs[k];
@@ -169,7 +169,7 @@ msg::Checked<StitchResult> stitch(const std::vector<StitchTile>& tiles, const St
             auto b = a ? cache.get(p.b) : a;
             if (!a || !b) {
                 std::lock_guard<std::mutex> lock(problemMutex);
-                for (const msg::Problem& pr : (!a ? a : b).problems())
+                for (const motion::msg::Problem& pr : (!a ? a : b).problems())
                     problems.push_back(pr);
                 next = r.pairs.size();
                 return;
@@ -209,10 +209,10 @@ msg::Checked<StitchResult> stitch(const std::vector<StitchTile>& tiles, const St
         auto writer = OmeTiffWriter::open(o.mosaicPath, r.frame.width, r.frame.height, mo);
         if (!writer)
             return Result::refused(writer.problems());
-        const msg::Problems fused = fuseTiles(
+        const motion::msg::Problems fused = fuseTiles(
             r.placement.positionsPx, r.tileWidth, r.tileHeight,
             [&](int i) { return readTiff(r.tiles[static_cast<std::size_t>(i)].path, r.tiles[static_cast<std::size_t>(i)].file); }, **writer, o.fusion);
-        if (msg::hasErrors(fused))
+        if (motion::msg::hasErrors(fused))
             return Result::refused(fused);
         r.fusionS = since(t2);
     }

@@ -54,11 +54,11 @@ struct StitchResult {
 std::vector<TilePair> neighbourPairs(const std::vector<Eigen::Vector2d>& stagePx, int tileW, int tileH, int minOverlapPx);
 
 /// Every file readable, all of one size and sample kind: or every problem at once.
-msg::Checked<StitchResult> checkTiles(const std::vector<StitchTile>& tiles);
+motion::msg::Checked<StitchResult> checkTiles(const std::vector<StitchTile>& tiles);
 
 /// The whole job. Refused with problems naming the file at fault; the mosaic file
 /// exists only when all went well.
-msg::Checked<StitchResult> stitch(const std::vector<StitchTile>& tiles, const StitchOptions& options);
+motion::msg::Checked<StitchResult> stitch(const std::vector<StitchTile>& tiles, const StitchOptions& options);
 
 /// Fiji's TileConfiguration of the registered positions (mosaic pixels, top-left tile near 0, 0).
 std::string registeredTileConfiguration(const StitchResult& r);

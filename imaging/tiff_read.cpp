@@ -29,12 +29,12 @@ struct TiffCloser {
 };
 using TiffHandle = std::unique_ptr<TIFF, TiffCloser>;
 
-msg::Problem readProblem(const std::string& file, const char* id, std::vector<msg::Arg> extra = {})
+motion::msg::Problem readProblem(const std::string& file, const char* id, std::vector<motion::msg::Arg> extra = {})
 {
-    std::vector<msg::Arg> args{msg::verbatim("file", file)};
+    std::vector<motion::msg::Arg> args{motion::msg::verbatim("file", file)};
     for (auto& a : extra)
         args.push_back(std::move(a));
-    msg::Problem p(file, 0, 0, "", msg::make(id, std::move(args)));
+    motion::msg::Problem p(file, 0, 0, "", motion::msg::make(id, std::move(args)));
     return p;
 }
 
@@ -45,14 +45,14 @@ struct Opened {
     int samples = 0;
 };
 
-msg::Checked<Opened> openTiff(const std::string& path, const std::string& shown)
+motion::msg::Checked<Opened> openTiff(const std::string& path, const std::string& shown)
 {
     quietTiff();
     tlsTiffMessage.clear();
     Opened o;
     o.tif.reset(TIFFOpen(path.c_str(), "r"));
     if (!o.tif)
-        return msg::Checked<Opened>::refused({readProblem(shown, "imaging.tiff.unreadable", {msg::verbatim("reason", lastTiffMessage())})});
+        return motion::msg::Checked<Opened>::refused({readProblem(shown, "imaging.tiff.unreadable", {motion::msg::verbatim("reason", lastTiffMessage())})});
     uint32_t w = 0, h = 0;
     uint16_t bits = 0, spp = 1, photometric = 0, format = SAMPLEFORMAT_UINT, planar = PLANARCONFIG_CONTIG;
     TIFFGetField(o.tif.get(), TIFFTAG_IMAGEWIDTH, &w);
@@ -65,13 +65,13 @@ msg::Checked<Opened> openTiff(const std::string& path, const std::string& shown)
     // A tile larger than 64k a side is no camera's frame; refusing it bounds what a
     // hostile header can make us allocate.
     if (w == 0 || h == 0 || w > 65536 || h > 65536)
-        return msg::Checked<Opened>::refused({readProblem(shown, "imaging.tiff.bad_size",
-                                                         {msg::integer("width", w, msg::Unit::None), msg::integer("height", h, msg::Unit::None)})});
+        return motion::msg::Checked<Opened>::refused({readProblem(shown, "imaging.tiff.bad_size",
+                                                         {motion::msg::integer("width", w, motion::msg::Unit::None), motion::msg::integer("height", h, motion::msg::Unit::None)})});
     const bool grey = spp == 1 && (photometric == PHOTOMETRIC_MINISBLACK || photometric == PHOTOMETRIC_MINISWHITE);
     const bool rgb = spp == 3 && photometric == PHOTOMETRIC_RGB && bits == 8 && planar == PLANARCONFIG_CONTIG;
     if (format != SAMPLEFORMAT_UINT || !((grey && (bits == 8 || bits == 16)) || rgb))
-        return msg::Checked<Opened>::refused({readProblem(shown, "imaging.tiff.unsupported",
-                                                         {msg::integer("bits", bits, msg::Unit::None), msg::integer("samples", spp, msg::Unit::None)})});
+        return motion::msg::Checked<Opened>::refused({readProblem(shown, "imaging.tiff.unsupported",
+                                                         {motion::msg::integer("bits", bits, motion::msg::Unit::None), motion::msg::integer("samples", spp, motion::msg::Unit::None)})});
     o.info.width = static_cast<int>(w);
     o.info.height = static_cast<int>(h);
     o.info.kind = rgb ? SampleKind::Rgb8 : bits == 8 ? SampleKind::Grey8 : SampleKind::Grey16;
@@ -79,7 +79,7 @@ msg::Checked<Opened> openTiff(const std::string& path, const std::string& shown)
     o.samples = spp;
     if (photometric == PHOTOMETRIC_MINISWHITE)
         o.bits = -bits;  // inverted below
-    return msg::Checked<Opened>::ok(std::move(o));
+    return motion::msg::Checked<Opened>::ok(std::move(o));
 }
 
 // One row of decoded samples into 16-bit grey. RGB uses Rec. 601 luma weights: any
@@ -121,20 +121,20 @@ std::string lastTiffMessage()
     return tlsTiffMessage;
 }
 
-msg::Checked<TiffInfo> readTiffInfo(const std::string& path, const std::string& shownName)
+motion::msg::Checked<TiffInfo> readTiffInfo(const std::string& path, const std::string& shownName)
 {
     auto o = openTiff(path, shownName.empty() ? path : shownName);
     if (!o)
-        return msg::Checked<TiffInfo>::refused(o.problems());
-    return msg::Checked<TiffInfo>::ok(o->info);
+        return motion::msg::Checked<TiffInfo>::refused(o.problems());
+    return motion::msg::Checked<TiffInfo>::ok(o->info);
 }
 
-msg::Checked<TileImage> readTiff(const std::string& path, const std::string& shownName)
+motion::msg::Checked<TileImage> readTiff(const std::string& path, const std::string& shownName)
 {
     const std::string shown = shownName.empty() ? path : shownName;
     auto o = openTiff(path, shown);
     if (!o)
-        return msg::Checked<TileImage>::refused(o.problems());
+        return motion::msg::Checked<TileImage>::refused(o.problems());
     TIFF* tif = o->tif.get();
     TileImage out;
     out.kind = o->info.kind;
@@ -142,7 +142,7 @@ msg::Checked<TileImage> readTiff(const std::string& path, const std::string& sho
     const int w = o->info.width, h = o->info.height;
     const std::size_t pixelBytes = static_cast<std::size_t>(o->samples) * static_cast<std::size_t>(std::abs(o->bits) / 8);
     auto broken = [&] {
-        return msg::Checked<TileImage>::refused({readProblem(shown, "imaging.tiff.damaged", {msg::verbatim("reason", lastTiffMessage())})});
+        return motion::msg::Checked<TileImage>::refused({readProblem(shown, "imaging.tiff.damaged", {motion::msg::verbatim("reason", lastTiffMessage())})});
     };
     if (TIFFIsTiled(tif)) {
         uint32_t tw = 0, th = 0;
@@ -175,7 +175,7 @@ msg::Checked<TileImage> readTiff(const std::string& path, const std::string& sho
             widenRow(buf.data(), w, o->bits, o->samples, out.grey.row(y));
         }
     }
-    return msg::Checked<TileImage>::ok(std::move(out));
+    return motion::msg::Checked<TileImage>::ok(std::move(out));
 }
 
 } // namespace imaging

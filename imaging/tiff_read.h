@@ -16,9 +16,9 @@ struct TiffInfo {
 };
 
 /// The size and sample kind of `path`'s first image, without its pixels.
-msg::Checked<TiffInfo> readTiffInfo(const std::string& path, const std::string& shownName = {});
+motion::msg::Checked<TiffInfo> readTiffInfo(const std::string& path, const std::string& shownName = {});
 /// The first image of `path`. `shownName` is how problems name the file ("" = path).
-msg::Checked<TileImage> readTiff(const std::string& path, const std::string& shownName = {});
+motion::msg::Checked<TileImage> readTiff(const std::string& path, const std::string& shownName = {});
 
 /// What libtiff said last on this thread (its warnings and errors go here, not to stderr).
 std::string lastTiffMessage();

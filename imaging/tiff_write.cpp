@@ -12,14 +12,14 @@
 
 namespace imaging {
 
-msg::Problems writeTiffSamples(const std::string& path, int width, int height, int samples, int bits, const void* data)
+motion::msg::Problems writeTiffSamples(const std::string& path, int width, int height, int samples, int bits, const void* data)
 {
     quietTiff();
     const std::string temp = path + ".partial";
     auto failed = [&](std::string reason) {
         std::remove(temp.c_str());
-        return msg::Problems{msg::Problem(path, 0, 0, "", msg::make("imaging.mosaic.write_failed",
-                                                                  {msg::verbatim("file", path), msg::verbatim("reason", std::move(reason))}))};
+        return motion::msg::Problems{motion::msg::Problem(path, 0, 0, "", motion::msg::make("imaging.mosaic.write_failed",
+                                                                  {motion::msg::verbatim("file", path), motion::msg::verbatim("reason", std::move(reason))}))};
     };
     TIFF* t = TIFFOpen(temp.c_str(), "w");
     if (!t)
@@ -50,7 +50,7 @@ msg::Problems writeTiffSamples(const std::string& path, int width, int height, i
     return {};
 }
 
-msg::Problems writeTiff(const std::string& path, const ImageU16& image, int bits)
+motion::msg::Problems writeTiff(const std::string& path, const ImageU16& image, int bits)
 {
     if (bits == 16)
         return writeTiffSamples(path, image.width, image.height, 1, 16, image.px.data());

@@ -10,8 +10,8 @@ namespace imaging {
 
 /// `samples` interleaved samples per pixel (1 grey, 3 RGB) of `bits` (8 or 16) each,
 /// row after row. An empty list means written.
-msg::Problems writeTiffSamples(const std::string& path, int width, int height, int samples, int bits, const void* data);
+motion::msg::Problems writeTiffSamples(const std::string& path, int width, int height, int samples, int bits, const void* data);
 /// A grey image at 16 bits, or at 8 bits (values above 255 clipped).
-msg::Problems writeTiff(const std::string& path, const ImageU16& image, int bits = 16);
+motion::msg::Problems writeTiff(const std::string& path, const ImageU16& image, int bits = 16);
 
 } // namespace imaging

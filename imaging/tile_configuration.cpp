@@ -33,18 +33,18 @@ bool parseNumber(std::string_view s, double& out)
     return !in.fail() && in.peek() == std::char_traits<char>::eof() && std::isfinite(out) && std::abs(out) <= 1e9;
 }
 
-msg::Problem at(const std::string& file, int line, const char* id, std::vector<msg::Arg> args = {})
+motion::msg::Problem at(const std::string& file, int line, const char* id, std::vector<motion::msg::Arg> args = {})
 {
-    return msg::Problem(file, line, 0, "", msg::make(id, std::move(args)));
+    return motion::msg::Problem(file, line, 0, "", motion::msg::make(id, std::move(args)));
 }
 
 } // namespace
 
-msg::Checked<std::vector<TileEntry>> parseTileConfiguration(std::string_view text, const std::string& fileName)
+motion::msg::Checked<std::vector<TileEntry>> parseTileConfiguration(std::string_view text, const std::string& fileName)
 {
-    using Result = msg::Checked<std::vector<TileEntry>>;
+    using Result = motion::msg::Checked<std::vector<TileEntry>>;
     std::vector<TileEntry> tiles;
-    msg::Problems problems;
+    motion::msg::Problems problems;
     int dim = 0;
     int lineNo = 0;
     std::size_t pos = 0;
@@ -79,7 +79,7 @@ msg::Checked<std::vector<TileEntry>> parseTileConfiguration(std::string_view tex
             f = semi + 1;
         }
         if (fields.size() != 3) {
-            problems.push_back(at(fileName, lineNo, "imaging.tileconfig.not_three_fields", {msg::integer("count", static_cast<long long>(fields.size()))}));
+            problems.push_back(at(fileName, lineNo, "imaging.tileconfig.not_three_fields", {motion::msg::integer("count", static_cast<long long>(fields.size()))}));
             continue;
         }
         const std::string_view name = trimmed(fields[0]);
@@ -111,9 +111,9 @@ msg::Checked<std::vector<TileEntry>> parseTileConfiguration(std::string_view tex
         }
         tiles.push_back({std::string(name), {values[0], values[1]}, lineNo});
     }
-    if (tiles.empty() && !msg::hasErrors(problems))
+    if (tiles.empty() && !motion::msg::hasErrors(problems))
         problems.push_back(at(fileName, 0, "imaging.tileconfig.no_tiles"));
-    if (msg::hasErrors(problems))
+    if (motion::msg::hasErrors(problems))
         return Result::refused(std::move(problems));
     return Result::ok(std::move(tiles));
 }

@@ -22,7 +22,7 @@ struct TileEntry {
 };
 
 /// The tiles of a TileConfiguration; `fileName` names the file in problems.
-msg::Checked<std::vector<TileEntry>> parseTileConfiguration(std::string_view text, const std::string& fileName);
+motion::msg::Checked<std::vector<TileEntry>> parseTileConfiguration(std::string_view text, const std::string& fileName);
 /// The text of a TileConfiguration (2-D) of these tiles, positions with 3 decimals.
 std::string tileConfigurationText(const std::vector<TileEntry>& tiles);
 

@@ -23,12 +23,12 @@
 
 #include <cmath>
 
-namespace cli {
+namespace app::cli {
 namespace {
 
 QString tr(const char* text)
 {
-    return QCoreApplication::translate("cli", text);
+    return QCoreApplication::translate("app::cli", text);
 }
 
 /// How stage millimetres become image pixels (docs/scan.md, "Exports"): the image x
@@ -92,9 +92,9 @@ int stitchRun(Invocation& inv)
     if (inv.isSet(QStringLiteral("plan"))) {
         const QString planPath = inv.path(inv.value(QStringLiteral("plan")));
         motion::scan::ScanPlan plan;
-        jsonio::Problems problems;
-        if (!scanfile::loadPlan(planPath, &plan, &problems))
-            return inv.usage(words::fileProblems(problems, QFileInfo(planPath).fileName()).join(QLatin1Char('\n')));
+        dev::files::json::Problems problems;
+        if (!dev::files::scan::loadPlan(planPath, &plan, &problems))
+            return inv.usage(ui::words::fileProblems(problems, QFileInfo(planPath).fileName()).join(QLatin1Char('\n')));
         geo.pixelUm = motion::scan::pixelAtSampleUm(plan.camera);
         geo.rotationDeg = plan.camera.rotationDeg;
         geo.imageYAlongMinusY = plan.camera.imageY == motion::scan::ImageY::StageMinusY;
@@ -131,14 +131,14 @@ int stitchRun(Invocation& inv)
     // Where the positions are: --positions, else the run log, else a TileConfiguration.
     QString positions = inv.isSet(QStringLiteral("positions")) ? inv.path(inv.value(QStringLiteral("positions"))) : QString();
     if (positions.isEmpty()) {
-        for (const char* name : {scanfile::kRunLogFile, "TileConfiguration.txt"})
+        for (const char* name : {dev::files::scan::kRunLogFile, "TileConfiguration.txt"})
             if (dir.exists(QLatin1String(name))) {
                 positions = dir.filePath(QLatin1String(name));
                 break;
             }
         if (positions.isEmpty())
             return inv.usage(tr("%1 holds neither a scan run log (%2) nor a TileConfiguration.txt: say where the tiles were taken with --positions")
-                                 .arg(QDir::toNativeSeparators(dir.path()), QLatin1String(scanfile::kRunLogFile)));
+                                 .arg(QDir::toNativeSeparators(dir.path()), QLatin1String(dev::files::scan::kRunLogFile)));
     }
     QFile pf(positions);
     if (!pf.open(QIODevice::ReadOnly))
@@ -151,10 +151,10 @@ int stitchRun(Invocation& inv)
         if (!(geo.pixelUm > 0))
             return inv.usage(tr("%1 gives positions in mm: give the pixel size at the sample with --pixel-um (or the scan plan with --plan)")
                                  .arg(QFileInfo(positions).fileName()));
-        auto taken = scanfile::parseTakenTiles(std::string_view(text.constData(), static_cast<std::size_t>(text.size())), shownPositions);
+        auto taken = dev::files::scan::parseTakenTiles(std::string_view(text.constData(), static_cast<std::size_t>(text.size())), shownPositions);
         if (!taken)
-            return inv.usage(words::problems(taken.problems()).join(QLatin1Char('\n')));
-        for (const scanfile::TakenTile& t : *taken) {
+            return inv.usage(ui::words::problems(taken.problems()).join(QLatin1Char('\n')));
+        for (const dev::files::scan::TakenTile& t : *taken) {
             const QString name = QString::fromStdString(t.image);
             tiles.push_back({t.image, dir.filePath(name).toStdString(), geo.toPx({t.measuredXMm, t.measuredYMm})});
         }
@@ -164,7 +164,7 @@ int stitchRun(Invocation& inv)
     } else {
         auto entries = imaging::parseTileConfiguration(std::string_view(text.constData(), static_cast<std::size_t>(text.size())), shownPositions);
         if (!entries)
-            return inv.usage(words::problems(entries.problems()).join(QLatin1Char('\n')));
+            return inv.usage(ui::words::problems(entries.problems()).join(QLatin1Char('\n')));
         for (const imaging::TileEntry& e : *entries)
             tiles.push_back({e.file, dir.filePath(QString::fromStdString(e.file)).toStdString(), e.positionPx});
     }
@@ -198,7 +198,7 @@ int stitchRun(Invocation& inv)
     so.mosaicPath = inv.isSet(QStringLiteral("no-mosaic")) ? std::string() : outPath.toStdString();
     auto result = imaging::stitch(tiles, so);
     if (!result)
-        return inv.usage(words::problems(result.problems()).join(QLatin1Char('\n')));
+        return inv.usage(ui::words::problems(result.problems()).join(QLatin1Char('\n')));
 
     // Fiji's registered TileConfiguration beside the images, as Fiji writes it; the report beside the mosaic.
     QString error;
@@ -280,4 +280,4 @@ void addStitchCommands(std::vector<Command>& list)
     list.push_back(stitch);
 }
 
-} // namespace cli
+} // namespace app::cli

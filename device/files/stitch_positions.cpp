@@ -5,16 +5,16 @@
 
 #include <set>
 
-namespace scanfile {
+namespace dev::files::scan {
 
-using jsonio::ObjectReader;
-using jsonio::Value;
+using dev::files::json::ObjectReader;
+using dev::files::json::Value;
 
-msg::Checked<std::vector<TakenTile>> parseTakenTiles(std::string_view text, const std::string& fileName)
+motion::msg::Checked<std::vector<TakenTile>> parseTakenTiles(std::string_view text, const std::string& fileName)
 {
-    using Result = msg::Checked<std::vector<TakenTile>>;
+    using Result = motion::msg::Checked<std::vector<TakenTile>>;
     std::vector<TakenTile> tiles;
-    jsonio::Problems problems;
+    dev::files::json::Problems problems;
     std::set<int> seen;
     std::set<std::string> images;
     std::size_t at = 0;
@@ -26,16 +26,16 @@ msg::Checked<std::vector<TakenTile>> parseTakenTiles(std::string_view text, cons
         const std::string_view line = text.substr(at, complete ? nl - at : std::string_view::npos);
         at = complete ? nl + 1 : text.size();
         ++lineNo;
-        jsonio::ParseResult parsed = jsonio::parse(line);
+        dev::files::json::ParseResult parsed = dev::files::json::parse(line);
         if (!parsed.value) {
             if (!complete && header)
                 break;  // torn by a crash: the tile was not taken
-            problems.add(jsonio::Position{lineNo, parsed.error.position.column}, "", parsed.error.message);
+            problems.add(dev::files::json::Position{lineNo, parsed.error.position.column}, "", parsed.error.message);
             break;
         }
-        jsonio::Problems lp;
+        dev::files::json::Problems lp;
         if (!header) {
-            jsonio::checkSchema(*parsed.value, kRunLogSchema, kRunLogVersion, lp);
+            dev::files::json::checkSchema(*parsed.value, kRunLogSchema, kRunLogVersion, lp);
             header = true;
         } else {
             ObjectReader o(*parsed.value, "", lp);
@@ -44,30 +44,30 @@ msg::Checked<std::vector<TakenTile>> parseTakenTiles(std::string_view text, cons
             const auto label = image ? std::optional<std::string>(image->asString()) : o.string("label", true);
             const Value* measured = o.get("measured_mm", Value::Type::Array, true);
             if (measured && (measured->items().size() != 2 || !measured->items()[0].isNumber() || !measured->items()[1].isNumber()))
-                lp.add(*measured, "measured_mm", msg::make("file.json.array_of_numbers", {msg::integer("count", 2)}));
+                lp.add(*measured, "measured_mm", motion::msg::make("file.json.array_of_numbers", {motion::msg::integer("count", 2)}));
             else if (tile && label && measured) {
                 if (label->empty() || label->find('/') != std::string::npos || label->find('\\') != std::string::npos)
                     lp.add(image ? *image : *parsed.value->find("label"), image ? "image" : "label",
-                           msg::make("imaging.positions.bad_image_name", {msg::verbatim("file", *label)}));
+                           motion::msg::make("imaging.positions.bad_image_name", {motion::msg::verbatim("file", *label)}));
                 else if (!seen.insert(static_cast<int>(*tile)).second || !images.insert(*label).second)
-                    lp.add(*parsed.value, "", msg::make("imaging.positions.duplicate", {msg::verbatim("file", *label)}));
+                    lp.add(*parsed.value, "", motion::msg::make("imaging.positions.duplicate", {motion::msg::verbatim("file", *label)}));
                 else
                     tiles.push_back({static_cast<int>(*tile), *label, measured->items()[0].asNumber(), measured->items()[1].asNumber(), lineNo});
             }
         }
         for (const auto& p : lp.list())
-            problems.add(jsonio::Position{lineNo, p.column}, p.path, p.message);
+            problems.add(dev::files::json::Position{lineNo, p.column}, p.path, p.message);
     }
     if (!header && problems.empty())
-        problems.add(jsonio::Position{1, 1}, "", msg::make("file.log.empty"));
+        problems.add(dev::files::json::Position{1, 1}, "", motion::msg::make("file.log.empty"));
     if (problems.hasErrors()) {
-        msg::Problems out;
-        jsonio::appendSorted(out, problems, fileName);
+        motion::msg::Problems out;
+        dev::files::json::appendSorted(out, problems, fileName);
         return Result::refused(std::move(out));
     }
     if (tiles.empty())
-        return Result::fail(msg::make("imaging.positions.no_tiles", {msg::verbatim("file", fileName)}));
+        return Result::fail(motion::msg::make("imaging.positions.no_tiles", {motion::msg::verbatim("file", fileName)}));
     return Result::ok(std::move(tiles));
 }
 
-} // namespace scanfile
+} // namespace dev::files::scan

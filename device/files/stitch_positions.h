@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-namespace scanfile {
+namespace dev::files::scan {
 
 struct TakenTile {
     int tile = 0;              ///< its number in the plan
@@ -23,6 +23,6 @@ struct TakenTile {
 
 /// The tiles a run log says were taken, in the order taken. A tile taken twice (a
 /// resumed run never does that) is refused. `fileName` names the file in problems.
-msg::Checked<std::vector<TakenTile>> parseTakenTiles(std::string_view text, const std::string& fileName);
+motion::msg::Checked<std::vector<TakenTile>> parseTakenTiles(std::string_view text, const std::string& fileName);
 
-} // namespace scanfile
+} // namespace dev::files::scan

@@ -116,7 +116,7 @@ void BM_StitchGrid10x10(benchmark::State& state)
     for (auto _ : state) {
         auto r = imaging::stitch(tiles, o);
         if (!r) {
-            state.SkipWithError(msg::debugFormat(r.problems()).c_str());
+            state.SkipWithError(motion::msg::debugFormat(r.problems()).c_str());
             break;
         }
         last = r.take();

@@ -50,7 +50,7 @@ TEST(Stitch, AFolderOfTilesBecomesAMosaicAReportAndATileConfiguration)
     o.mosaic.pixelSizeUm = 0.65;
     o.threads = 2;
     auto r = imaging::stitch(writeGrid(g, dir), o);
-    ASSERT_TRUE(r.ok()) << msg::debugFormat(r.problems());
+    ASSERT_TRUE(r.ok()) << motion::msg::debugFormat(r.problems());
     EXPECT_TRUE(exists(o.mosaicPath));
     EXPECT_EQ(r->pairs.size(), 17u);  // 3 × 3 across, 4 × 2 down
     EXPECT_TRUE(r->placement.placedByStage[static_cast<std::size_t>(blank)]);
@@ -76,7 +76,7 @@ TEST(Stitch, AFolderOfTilesBecomesAMosaicAReportAndATileConfiguration)
     // The registered TileConfiguration reads back (Fiji's rules) with the same positions.
     const std::string tc = imaging::registeredTileConfiguration(*r);
     auto back = imaging::parseTileConfiguration(tc, "TileConfiguration.registered.txt");
-    ASSERT_TRUE(back.ok()) << msg::debugFormat(back.problems());
+    ASSERT_TRUE(back.ok()) << motion::msg::debugFormat(back.problems());
     ASSERT_EQ(back->size(), g.tiles.size());
     EXPECT_EQ((*back)[static_cast<std::size_t>(blank)].file, "tile_06.tif");
     const Eigen::Vector2d origin = r->frame.originPx.cast<double>();
@@ -98,7 +98,7 @@ TEST(Stitch, MixedSizesOrAnUnreadableTileAreRefusedNamingTheFileAndWriteNothing)
     auto r = imaging::stitch(tiles, o);
     ASSERT_FALSE(r.ok());
     std::map<std::string, std::string> byFile;
-    for (const msg::Problem& p : r.problems())
+    for (const motion::msg::Problem& p : r.problems())
         byFile[p.file] = p.message.id;
     EXPECT_EQ(byFile["tile_03.tif"], "imaging.tiles.mixed_size");
     EXPECT_EQ(byFile["tile_05.tif"], "imaging.tiff.unreadable");
@@ -117,7 +117,7 @@ TEST(TileConfiguration, ReadsWhatFijiReadsAndRefusesWhatItRefuses)
         "  tile 002.tif;name;(1843.2,-5e-1)  \n"
         "x\n";
     auto r = imaging::parseTileConfiguration(ok, "TileConfiguration.txt");
-    ASSERT_TRUE(r.ok()) << msg::debugFormat(r.problems());
+    ASSERT_TRUE(r.ok()) << motion::msg::debugFormat(r.problems());
     ASSERT_EQ(r->size(), 2u);
     EXPECT_EQ((*r)[1].file, "tile 002.tif");
     EXPECT_DOUBLE_EQ((*r)[1].positionPx.x(), 1843.2);

@@ -103,10 +103,10 @@ TEST(OmeTiff, AFusedMosaicReadsBackWithItsPixelSizeAndPyramid)
     ASSERT_TRUE(w.ok());
     imaging::FusionOptions fo;
     fo.bandRows = 50;  // several bands, not a multiple of the tile height
-    const msg::Problems p = imaging::fuseTiles(pos, 120, 110,
-                                               [&](int i) { return msg::Checked<imaging::TileImage>::ok({tiles[static_cast<std::size_t>(i)], imaging::SampleKind::Grey16}); },
+    const motion::msg::Problems p = imaging::fuseTiles(pos, 120, 110,
+                                               [&](int i) { return motion::msg::Checked<imaging::TileImage>::ok({tiles[static_cast<std::size_t>(i)], imaging::SampleKind::Grey16}); },
                                                **w, fo);
-    ASSERT_TRUE(p.empty()) << msg::debugFormat(p);
+    ASSERT_TRUE(p.empty()) << motion::msg::debugFormat(p);
     EXPECT_FALSE(exists(path + ".partial"));
 
     TIFF* t = TIFFOpen(path.c_str(), "r");
@@ -164,7 +164,7 @@ namespace {
     if (!w.ok())
         std::exit(4);
     std::vector<std::uint16_t> rows(600 * 600, 777);
-    msg::Problems p = (*w)->writeRows(rows.data(), 600);
+    motion::msg::Problems p = (*w)->writeRows(rows.data(), 600);
     if (p.empty())
         p = (*w)->finish();
     const bool named = !p.empty() && p.front().message.id == "imaging.mosaic.write_failed" && p.front().file == path;

@@ -25,15 +25,15 @@ std::vector<std::string> seeds()
 
 void check(std::string_view input)
 {
-    const auto r = scanfile::parseTakenTiles(input, "scan-run.jsonl");
-    for (const msg::Problem& p : r.problems())
+    const auto r = dev::files::scan::parseTakenTiles(input, "scan-run.jsonl");
+    for (const motion::msg::Problem& p : r.problems())
         if (p.message.id.empty() || (p.file != "scan-run.jsonl" && p.message.text("file") != "scan-run.jsonl"))
-            fuzzfiles::fail("a problem that does not say where or what: " + msg::debugFormat(r.problems()));
+            fuzzfiles::fail("a problem that does not say where or what: " + motion::msg::debugFormat(r.problems()));
     if (!r.ok())
         return;
     std::set<int> tiles;
     std::set<std::string> names;
-    for (const scanfile::TakenTile& t : *r) {
+    for (const dev::files::scan::TakenTile& t : *r) {
         if (t.image.empty() || t.image.find('/') != std::string::npos || t.image.find('\\') != std::string::npos)
             fuzzfiles::fail("a tile image that is not a plain file name: " + t.image);
         if (!std::isfinite(t.measuredXMm) || !std::isfinite(t.measuredYMm))

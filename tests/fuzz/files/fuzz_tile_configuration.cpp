@@ -23,15 +23,15 @@ std::vector<std::string> seeds()
 void check(std::string_view input)
 {
     const auto r = imaging::parseTileConfiguration(input, "fuzz.txt");
-    for (const msg::Problem& p : r.problems())
+    for (const motion::msg::Problem& p : r.problems())
         if (p.file != "fuzz.txt" || p.message.id.empty())
-            fuzzfiles::fail("a problem that does not say where or what: " + msg::debugFormat(r.problems()));
+            fuzzfiles::fail("a problem that does not say where or what: " + motion::msg::debugFormat(r.problems()));
     if (!r.ok())
         return;
     std::vector<imaging::TileEntry> flat = *r;
     const auto again = imaging::parseTileConfiguration(imaging::tileConfigurationText(flat), "again.txt");
     if (!again.ok() || again->size() != flat.size())
-        fuzzfiles::fail("written tiles do not read back: " + msg::debugFormat(again.problems()));
+        fuzzfiles::fail("written tiles do not read back: " + motion::msg::debugFormat(again.problems()));
     for (std::size_t i = 0; i < flat.size(); ++i) {
         const auto& a = flat[i];
         const auto& b = (*again)[i];
