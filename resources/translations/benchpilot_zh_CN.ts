@@ -2545,6 +2545,90 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>simulated gauge</source>
         <translation>模拟测头</translation>
+        <source>stitch needs one folder of tiles (benchpilot-cli stitch DIR --out mosaic.ome.tif)</source>
+        <translation>stitch 需要一个图块文件夹（benchpilot-cli stitch DIR --out mosaic.ome.tif）</translation>
+    </message>
+    <message>
+        <source>%1: no such folder</source>
+        <translation>%1：文件夹不存在</translation>
+    </message>
+    <message>
+        <source>--pixel-um must be above 0 and below 1000 µm (got %1)</source>
+        <translation>--pixel-um 必须大于 0 且小于 1000 µm（实际为 %1）</translation>
+    </message>
+    <message>
+        <source>--image-y must be stage-minus-y or stage-plus-y (got &apos;%1&apos;)</source>
+        <translation>--image-y 必须是 stage-minus-y 或 stage-plus-y（实际为“%1”）</translation>
+    </message>
+    <message>
+        <source>--max-shift-px must be from 1 to 10000 px (got %1)</source>
+        <translation>--max-shift-px 必须在 1 到 10000 px 之间（实际为 %1）</translation>
+    </message>
+    <message>
+        <source>--repeatability-um must be above 0 and at most 1000 µm (got %1)</source>
+        <translation>--repeatability-um 必须大于 0 且不超过 1000 µm（实际为 %1）</translation>
+    </message>
+    <message>
+        <source>--blend must be feather or overlay (got &apos;%1&apos;)</source>
+        <translation>--blend 必须是 feather 或 overlay（实际为“%1”）</translation>
+    </message>
+    <message>
+        <source>%1 holds neither a scan run log (%2) nor a TileConfiguration.txt: say where the tiles were taken with --positions</source>
+        <translation>%1 中既没有扫描运行日志（%2），也没有 TileConfiguration.txt：请用 --positions 指明各图块的拍摄位置</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 gives positions in mm: give the pixel size at the sample with --pixel-um (or the scan plan with --plan)</source>
+        <translation>%1 中的位置以 mm 为单位：请用 --pixel-um 给出样品面上的像元尺寸（或用 --plan 给出扫描方案）</translation>
+    </message>
+    <message>
+        <source>%1 names %2, which is not in the folder</source>
+        <translation>%1 列出了 %2，但文件夹中没有该文件</translation>
+    </message>
+    <message>
+        <source>%1 places %2 tiles, but the folder also holds tile images it does not name: %3. Stitch a folder of one scan, or give positions for every image.</source>
+        <translation>%1 给出了 %2 个图块的位置，但文件夹中还有它未列出的图块图像：%3。请只拼接同一次扫描的文件夹，或为每幅图像给出位置。</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 tiles, %2 pairs: %3 trusted, %4 rejected as outliers, %5 not trusted; %6 tiles placed by the stage
+</source>
+        <translation>%1 个图块，%2 对：%3 对可信，%4 对作为离群值剔除，%5 对不可信；%6 个图块按载物台位置放置
+</translation>
+    </message>
+    <message>
+        <source>correction from the stage: RMS %1 px, worst %2 px
+</source>
+        <translation>相对载物台位置的修正：均方根 %1 px，最大 %2 px
+</translation>
+    </message>
+    <message>
+        <source>wrote %1 (%2 × %3 px), %4 and %5 in %6 s
+</source>
+        <translation>已写出 %1（%2 × %3 px）、%4 和 %5，用时 %6 s
+</translation>
+    </message>
+    <message>
+        <source>stitch a folder of tiles into a pyramidal OME-TIFF mosaic</source>
+        <translation>把一个图块文件夹拼接成金字塔 OME-TIFF 全景图</translation>
+    </message>
+    <message>
+        <source>DIR</source>
+        <translation>DIR</translation>
+    </message>
+    <message>
+        <source>Registers every pair of neighbouring tiles over their expected overlap, places all tiles by weighted least squares with the stage positions as priors, and fuses them (docs/stitching.md). Positions: the scan&apos;s run log or TileConfiguration.txt in DIR, or --positions. Writes the mosaic (--out), TileConfiguration.registered.txt in DIR and a .stitch.json report beside the mosaic.</source>
+        <translation>在预期重叠区内配准每一对相邻图块，以载物台位置为先验、用加权最小二乘放置全部图块，再融合成图（docs/stitching.md）。位置来自 DIR 中的扫描运行日志或 TileConfiguration.txt，或由 --positions 给出。写出全景图（--out）、DIR 中的 TileConfiguration.registered.txt，以及全景图旁的 .stitch.json 报告。</translation>
+    </message>
+    <message>
+        <source>the folder of tiles</source>
+        <translation>图块所在的文件夹</translation>
     </message>
 </context>
 <context>
@@ -11048,6 +11132,109 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
     <message>
         <source>BenchPilot microscope stage (simulated)</source>
         <translation>BenchPilot 显微镜载物台（模拟）</translation>
+    </message>
+</context>
+<context>
+    <name>ui::words::ImagingWords</name>
+    <message>
+        <source>cannot be read as a TIFF image (%1)</source>
+        <comment>imaging.tiff.unreadable</comment>
+        <translation>无法作为 TIFF 图像读取（%1）</translation>
+    </message>
+    <message>
+        <source>the image is damaged or cut short (%1)</source>
+        <comment>imaging.tiff.damaged</comment>
+        <translation>图像已损坏或不完整（%1）</translation>
+    </message>
+    <message>
+        <source>the image is %1 × %2 pixels: a tile must be from 1 to 65536 pixels each way</source>
+        <comment>imaging.tiff.bad_size</comment>
+        <translation>图像为 %1 × %2 像素：图块每个方向必须在 1 到 65536 像素之间</translation>
+    </message>
+    <message>
+        <source>the image has %2 samples of %1 bits a pixel: tiles must be 8- or 16-bit grey, or 8-bit RGB</source>
+        <comment>imaging.tiff.unsupported</comment>
+        <translation>图像每像素有 %2 个 %1 位采样：图块必须是 8 位或 16 位灰度，或 8 位 RGB</translation>
+    </message>
+    <message>
+        <source>there are no tiles to stitch</source>
+        <comment>imaging.tiles.none</comment>
+        <translation>没有可拼接的图块</translation>
+    </message>
+    <message>
+        <source>this tile is %1 × %2 pixels but %3 is %4 × %5: every tile of a mosaic must be the same size</source>
+        <comment>imaging.tiles.mixed_size</comment>
+        <translation>此图块为 %1 × %2 像素，而 %3 为 %4 × %5：同一全景图的所有图块必须大小相同</translation>
+    </message>
+    <message>
+        <source>this tile is %1 but %2 is %3: every tile of a mosaic must be of one kind (grey8, grey16 or rgb8)</source>
+        <comment>imaging.tiles.mixed_kind</comment>
+        <translation>此图块为 %1，而 %2 为 %3：同一全景图的所有图块必须是同一种类（grey8、grey16 或 rgb8）</translation>
+    </message>
+    <message>
+        <source>a mosaic of %1 × %2 pixels cannot be written</source>
+        <comment>imaging.mosaic.bad_size</comment>
+        <translation>无法写出 %1 × %2 像素的全景图</translation>
+    </message>
+    <message>
+        <source>the file cannot be created (%1)</source>
+        <comment>imaging.mosaic.cannot_create</comment>
+        <translation>无法创建该文件（%1）</translation>
+    </message>
+    <message>
+        <source>writing the file failed (%1); nothing was left under its name</source>
+        <comment>imaging.mosaic.write_failed</comment>
+        <translation>写入文件失败（%1）；该文件名下未留下任何内容</translation>
+    </message>
+    <message>
+        <source>tile %1 changed size while the mosaic was being written</source>
+        <comment>imaging.mosaic.tile_changed</comment>
+        <translation>写全景图期间图块 %1 的大小发生了变化</translation>
+    </message>
+    <message>
+        <source>a tile line comes before &apos;dim = 2&apos;</source>
+        <comment>imaging.tileconfig.no_dim</comment>
+        <translation>图块行出现在“dim = 2”之前</translation>
+    </message>
+    <message>
+        <source>the dimensions must be &apos;dim = 2&apos; (or 3)</source>
+        <comment>imaging.tileconfig.bad_dim</comment>
+        <translation>维数必须是“dim = 2”（或 3）</translation>
+    </message>
+    <message>
+        <source>a tile line needs three fields separated by &apos;;&apos; (file; name; (x, y)), this one has %1</source>
+        <comment>imaging.tileconfig.not_three_fields</comment>
+        <translation>图块行需要三个以“;”分隔的字段（文件; 名称; (x, y)），此行有 %1 个</translation>
+    </message>
+    <message>
+        <source>the position must be (x, y) in pixels, one number for each dimension</source>
+        <comment>imaging.tileconfig.bad_position</comment>
+        <translation>位置必须是以像素为单位的 (x, y)，每个维度一个数</translation>
+    </message>
+    <message>
+        <source>the tile line names no file</source>
+        <comment>imaging.tileconfig.no_file</comment>
+        <translation>图块行未给出文件名</translation>
+    </message>
+    <message>
+        <source>the file places no tiles</source>
+        <comment>imaging.tileconfig.no_tiles</comment>
+        <translation>文件中没有任何图块位置</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a file name in the folder (empty, or with a folder in it)</source>
+        <comment>imaging.positions.bad_image_name</comment>
+        <translation>“%1”不是文件夹中的文件名（为空，或含有文件夹路径）</translation>
+    </message>
+    <message>
+        <source>%1 (or its tile number) is taken twice in the log</source>
+        <comment>imaging.positions.duplicate</comment>
+        <translation>%1（或其图块编号）在日志中出现了两次</translation>
+    </message>
+    <message>
+        <source>%1 records no tile taken yet</source>
+        <comment>imaging.positions.no_tiles</comment>
+        <translation>%1 中尚无已拍摄的图块</translation>
     </message>
 </context>
 <context>

@@ -1,4 +1,4 @@
-// Every message id and term id that motion/, device/ and the screens can hand to
+// Every message id and term id that motion/, imaging/, device/ and the screens can hand to
 // a person is worded: none reaches a person as motion::msg::debugString. The ids are read
 // from the sources themselves (string literals with an area's prefix), so an id
 // added without its words fails here, in whatever file it was added.
@@ -35,9 +35,9 @@ QStringList idLiterals()
 {
     static const QRegularExpression id(QStringLiteral(
         "(?<!api\\()\"((?:pattern|plate|recipe|scan|profile|tuning|file|request|link|device|telemetry|path|json|segment|grbl|accuracy|"
-        "compensation|direction|rotation|capability|instrument|log|gauge)\\.[a-z0-9_.\\-]+)\""));
+        "compensation|direction|rotation|capability|instrument|log|gauge|imaging)\\.[a-z0-9_.\\-]+)\""));
     QSet<QString> found;
-    for (const char* dir : {"motion", "device", "widgets", "app"}) {
+    for (const char* dir : {"motion", "imaging", "device", "widgets", "app"}) {
         QDirIterator it(QStringLiteral(BP_SOURCE_DIR "/%1").arg(QLatin1String(dir)), {QStringLiteral("*.cpp"), QStringLiteral("*.h")},
                         QDir::Files, QDirIterator::Subdirectories);
         while (it.hasNext()) {

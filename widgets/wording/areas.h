@@ -23,6 +23,7 @@ QString recipe(const motion::msg::Message& m);      ///< "recipe."
 QString scan(const motion::msg::Message& m);        ///< "scan."
 QString tuning(const motion::msg::Message& m);      ///< "tuning."
 QString gauge(const motion::msg::Message& m);       ///< "gauge." (accuracy_bench_words.cpp)
+QString imaging(const motion::msg::Message& m);     ///< "imaging." (imaging_words.cpp)
 
 // What an area's table does not word yet, in a context of its own whose Chinese is
 // pending (tests/build/translations.cmake): the area's function falls back to these.

@@ -37,6 +37,7 @@ const std::pair<const char*, SentenceFn> kSentences[] = {
     {"scan.", &areas::scan},
     {"tuning.", &areas::tuning},
     {"gauge.", &areas::gauge},
+    {"imaging.", &areas::imaging},
 };
 
 const TermFn kTerms[] = {

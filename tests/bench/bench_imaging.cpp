@@ -1,0 +1,145 @@
+// Google Benchmark program for imaging/: registration and the whole stitch.
+// Goals (docs/stitching.md, "Speed"): one 2048 × 2048 pair registered in ≤ 60 ms on
+// one core; a 10 × 10 grid of 2048² 16-bit tiles with 10 % overlap registered, placed
+// and fused into a pyramidal OME-TIFF in ≤ 20 s on two cores with a peak memory
+// ≤ 1.5 GB; global placement after the last tile (the live delay) ≤ 2 s.
+// Counters (the pair's time is the Time column): registration_s, placement_ms, fusion_s, peak_rss_mb, rms_error_px.
+// BP_BENCH_SHORT=1 (CTest's short run) uses a 4 × 4 grid of 512² tiles instead.
+#include "imaging/registration.h"
+#include "imaging/stitch.h"
+#include "imaging/tiff_write.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <random>
+#include <string>
+#include <sys/resource.h>
+#include <unistd.h>
+#include <vector>
+
+namespace {
+
+bool shortRun()
+{
+    const char* s = std::getenv("BP_BENCH_SHORT");
+    return s && *s && *s != '0';
+}
+
+std::uint32_t hash3(std::int64_t x, std::int64_t y, std::uint32_t s)
+{
+    std::uint64_t h = static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint64_t>(y) * 0xC2B2AE3D27D4EB4Full ^ s * 0x165667B19E3779F9ull;
+    h ^= h >> 29;
+    h *= 0xBF58476D1CE4E5B9ull;
+    h ^= h >> 32;
+    return static_cast<std::uint32_t>(h);
+}
+
+/// Value noise at three scales (4, 16 and 64 px), a texture defined at every
+/// integer point of the plane, cheap enough for 100 tiles of 2048².
+double texture(std::int64_t x, std::int64_t y)
+{
+    double v = 20000;
+    const int scales[] = {4, 16, 64};
+    const double amps[] = {1500, 3000, 5000};
+    for (int k = 0; k < 3; ++k) {
+        const int s = scales[k];
+        const std::int64_t ix = x >= 0 ? x / s : (x - s + 1) / s, iy = y >= 0 ? y / s : (y - s + 1) / s;
+        const double fx = static_cast<double>(x - ix * s) / s, fy = static_cast<double>(y - iy * s) / s;
+        auto r = [&](std::int64_t a, std::int64_t b) { return (hash3(a, b, static_cast<std::uint32_t>(k)) & 0xFFFF) / 65535.0 - 0.5; };
+        const double top = r(ix, iy) * (1 - fx) + r(ix + 1, iy) * fx, bottom = r(ix, iy + 1) * (1 - fx) + r(ix + 1, iy + 1) * fx;
+        v += amps[k] * (top * (1 - fy) + bottom * fy);
+    }
+    return v;
+}
+
+imaging::ImageU16 tileAt(std::int64_t x0, std::int64_t y0, int size, unsigned seed)
+{
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> noise(0, 50);
+    imaging::ImageU16 t(size, size);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x)
+            t.at(x, y) = static_cast<std::uint16_t>(std::clamp(texture(x0 + x, y0 + y) + noise(rng), 0.0, 65535.0));
+    return t;
+}
+
+double peakRssMb()
+{
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return static_cast<double>(u.ru_maxrss) / 1024.0;
+}
+
+void BM_RegisterPair2048(benchmark::State& state)
+{
+    const int size = shortRun() ? 512 : 2048;
+    const int step = size - size / 10;  // 10 % overlap
+    static const imaging::ImageU16 a = tileAt(0, 0, size, 1);
+    static const imaging::ImageU16 b = tileAt(step + 3, -2, size, 2);  // the stage 3 px and 2 px wrong
+    imaging::PairRegistration r;
+    for (auto _ : state) {
+        r = imaging::registerPair(a, b, Eigen::Vector2d(step, 0), {});
+        benchmark::DoNotOptimize(r);
+    }
+    state.counters["error_px"] = (r.shiftPx - Eigen::Vector2d(step + 3, -2)).norm();
+    state.counters["ncc"] = r.ncc;
+}
+BENCHMARK(BM_RegisterPair2048)->Unit(benchmark::kMillisecond);
+
+void BM_StitchGrid10x10(benchmark::State& state)
+{
+    const int n = shortRun() ? 4 : 10, size = shortRun() ? 512 : 2048;
+    const int step = size - size / 10;
+    const std::string dir = "/tmp/bench_imaging_" + std::to_string(::getpid());
+    std::system(("mkdir -p " + dir).c_str());
+    std::vector<imaging::StitchTile> tiles;
+    std::vector<Eigen::Vector2d> truth;
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> err(-3, 3);
+    for (int r = 0; r < n; ++r)
+        for (int c = 0; c < n; ++c) {
+            const Eigen::Vector2d stage(c * step, r * step);
+            const Eigen::Vector2i t = (stage + Eigen::Vector2d(err(rng), err(rng))).array().round().cast<int>();
+            truth.push_back(t.cast<double>());
+            const std::string name = "tile_" + std::to_string(1000 + r * n + c).substr(1) + ".tif";
+            imaging::writeTiff(dir + "/" + name, tileAt(t.x(), t.y(), size, static_cast<unsigned>(r * n + c)));
+            tiles.push_back({name, dir + "/" + name, stage});
+        }
+    imaging::StitchOptions o;
+    o.mosaicPath = dir + "/mosaic.ome.tif";
+    o.mosaic.pixelSizeUm = 0.65;
+    o.threads = 2;
+    imaging::StitchResult last;
+    for (auto _ : state) {
+        auto r = imaging::stitch(tiles, o);
+        if (!r) {
+            state.SkipWithError(motion::msg::debugFormat(r.problems()).c_str());
+            break;
+        }
+        last = r.take();
+    }
+    if (!last.tiles.empty()) {
+        double sum2 = 0;
+        Eigen::Vector2d mean(0, 0);
+        for (std::size_t i = 0; i < truth.size(); ++i)
+            mean += last.placement.positionsPx[i] - truth[i];
+        mean /= static_cast<double>(truth.size());
+        for (std::size_t i = 0; i < truth.size(); ++i)
+            sum2 += (last.placement.positionsPx[i] - truth[i] - mean).squaredNorm();
+        state.counters["rms_error_px"] = std::sqrt(sum2 / static_cast<double>(truth.size()));
+        state.counters["registration_s"] = last.registrationS;
+        state.counters["placement_ms"] = last.placementS * 1e3;
+        state.counters["fusion_s"] = last.fusionS;
+        state.counters["pairs"] = static_cast<double>(last.pairs.size());
+    }
+    state.counters["peak_rss_mb"] = peakRssMb();
+    std::system(("rm -rf " + dir).c_str());
+}
+BENCHMARK(BM_StitchGrid10x10)->Unit(benchmark::kSecond)->Iterations(1);
+
+} // namespace
+
+BENCHMARK_MAIN();

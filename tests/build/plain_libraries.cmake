@@ -1,0 +1,30 @@
+# motion/ and imaging/ are plain C++17 (Eigen; FFTW and libtiff for imaging): no Qt,
+# so they can be fuzzed, benchmarked and compiled where Qt is not. Their targets
+# link no Qt, which already fails a build that includes a Qt header; this check
+# also refuses a Qt include behind an #if and a Qt library named in their CMake files.
+#   cmake -DSRC=<source dir> -P plain_libraries.cmake
+set(bad "")
+foreach(lib motion imaging)
+  if(NOT IS_DIRECTORY "${SRC}/${lib}")
+    string(APPEND bad "  ${lib}/: missing\n")
+    continue()
+  endif()
+  file(GLOB_RECURSE sources RELATIVE "${SRC}" "${SRC}/${lib}/*.h" "${SRC}/${lib}/*.cpp" "${SRC}/${lib}/*.hpp")
+  foreach(f IN LISTS sources)
+    file(STRINGS "${SRC}/${f}" lines REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"](Q[A-Za-z]|Qt[A-Za-z]*/)")
+    foreach(l IN LISTS lines)
+      string(APPEND bad "  ${f}: ${l}\n")
+    endforeach()
+  endforeach()
+  file(GLOB_RECURSE cmakes "${SRC}/${lib}/CMakeLists.txt" "${SRC}/${lib}/*.cmake")
+  foreach(f IN LISTS cmakes)
+    file(STRINGS "${f}" lines REGEX "Qt6::|Qt5::|find_package\\(Qt")
+    foreach(l IN LISTS lines)
+      string(APPEND bad "  ${f}: ${l}\n")
+    endforeach()
+  endforeach()
+endforeach()
+if(bad)
+  message(FATAL_ERROR "Qt in a plain C++ library (motion/, imaging/):\n${bad}")
+endif()
+message(STATUS "motion/ and imaging/ include no Qt")

@@ -1,0 +1,41 @@
+// Words for the imaging.* ids (docs/stitching.md, "Messages"): tile files, the
+// mosaic, TileConfiguration and run-log positions. One row per id, the English
+// source with %1, %2 … for the arguments named beside it (word_table.h).
+#include "widgets/wording/areas.h"
+#include "widgets/wording/word_table.h"
+
+#include <QCoreApplication>
+
+namespace ui::words::areas {
+namespace {
+
+// clang-format off
+const Row kRows[] = {
+    {"imaging.tiff.unreadable", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "cannot be read as a TIFF image (%1)", "imaging.tiff.unreadable"), "reason"},
+    {"imaging.tiff.damaged", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the image is damaged or cut short (%1)", "imaging.tiff.damaged"), "reason"},
+    {"imaging.tiff.bad_size", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the image is %1 × %2 pixels: a tile must be from 1 to 65536 pixels each way", "imaging.tiff.bad_size"), "width,height"},
+    {"imaging.tiff.unsupported", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the image has %2 samples of %1 bits a pixel: tiles must be 8- or 16-bit grey, or 8-bit RGB", "imaging.tiff.unsupported"), "bits,samples"},
+    {"imaging.tiles.none", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "there are no tiles to stitch", "imaging.tiles.none")},
+    {"imaging.tiles.mixed_size", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "this tile is %1 × %2 pixels but %3 is %4 × %5: every tile of a mosaic must be the same size", "imaging.tiles.mixed_size"), "width,height,first,first_width,first_height"},
+    {"imaging.tiles.mixed_kind", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "this tile is %1 but %2 is %3: every tile of a mosaic must be of one kind (grey8, grey16 or rgb8)", "imaging.tiles.mixed_kind"), "kind,first,first_kind"},
+    {"imaging.mosaic.bad_size", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "a mosaic of %1 × %2 pixels cannot be written", "imaging.mosaic.bad_size"), "width,height"},
+    {"imaging.mosaic.cannot_create", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the file cannot be created (%1)", "imaging.mosaic.cannot_create"), "reason"},
+    {"imaging.mosaic.write_failed", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "writing the file failed (%1); nothing was left under its name", "imaging.mosaic.write_failed"), "reason"},
+    {"imaging.mosaic.tile_changed", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "tile %1 changed size while the mosaic was being written", "imaging.mosaic.tile_changed"), "tile"},
+    {"imaging.tileconfig.no_dim", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "a tile line comes before 'dim = 2'", "imaging.tileconfig.no_dim")},
+    {"imaging.tileconfig.bad_dim", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the dimensions must be 'dim = 2' (or 3)", "imaging.tileconfig.bad_dim")},
+    {"imaging.tileconfig.not_three_fields", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "a tile line needs three fields separated by ';' (file; name; (x, y)), this one has %1", "imaging.tileconfig.not_three_fields"), "count"},
+    {"imaging.tileconfig.bad_position", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the position must be (x, y) in pixels, one number for each dimension", "imaging.tileconfig.bad_position")},
+    {"imaging.tileconfig.no_file", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the tile line names no file", "imaging.tileconfig.no_file")},
+    {"imaging.tileconfig.no_tiles", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the file places no tiles", "imaging.tileconfig.no_tiles")},
+    {"imaging.positions.bad_image_name", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "'%1' is not a file name in the folder (empty, or with a folder in it)", "imaging.positions.bad_image_name"), "file"},
+    {"imaging.positions.duplicate", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "%1 (or its tile number) is taken twice in the log", "imaging.positions.duplicate"), "file"},
+    {"imaging.positions.no_tiles", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "%1 records no tile taken yet", "imaging.positions.no_tiles"), "file"},
+};
+// clang-format on
+
+} // namespace
+
+QString imaging(const motion::msg::Message& m) { return fromRows("ui::words::ImagingWords", kRows, m); }
+
+} // namespace ui::words::areas
