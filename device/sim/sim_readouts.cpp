@@ -3,6 +3,8 @@
 #include "device/sim/sim_machine.h"
 
 #include "device/protocol/messages_compensation.h"
+#include "device/protocol/messages_compensation_2d.h"
+#include "device/sim/sim_compensation_2d.h"
 #include "device/protocol/messages_tuning.h"
 #include "device/sim/path_queue.h"
 
@@ -22,6 +24,8 @@ proto::HelloReply SimMachine::hello(std::uint32_t linkBaud) const
         h.capabilities |= proto::CapEncoder;
     if (m_cfg.zAfterXy)
         h.capabilities |= proto::CapCoupledXyThenZ | proto::CapPathZFollow;
+    if (m_comp2d->available())
+        h.capabilities |= proto::CapCompensation2d;
     for (const auto& a : m_cfg.axes)
         if (a.unit == proto::AxisUnit::Microlitre)
             h.capabilities |= proto::CapPump;

@@ -23,6 +23,7 @@ QString recipe(const msg::Message& m);      ///< "recipe."
 QString scan(const msg::Message& m);        ///< "scan."
 QString tuning(const msg::Message& m);      ///< "tuning."
 QString gauge(const msg::Message& m);       ///< "gauge." (accuracy_bench_words.cpp)
+QString grid(const msg::Message& m);        ///< "grid.", "stage_errors.", "compensation2d." (grid_words.cpp)
 
 // What an area's table does not word yet, in a context of its own whose Chinese is
 // pending (tests/build/translations.cmake): the area's function falls back to these.
@@ -42,5 +43,6 @@ QString patternTerm(const std::string& id);     ///< "segment.", "pattern.state.
 QString recipeTerm(const std::string& id);      ///< "recipe.state.", "recipe.move.", "recipe.step."
 QString scanTerm(const std::string& id);        ///< "scan.state."
 QString tuningTerm(const std::string& id);      ///< "tuning.state.", "tuning.end.", "tuning.outcome.", "tuning.rule."
+QString gridTerm(const std::string& id);        ///< "compensation2d.request."
 
 } // namespace words::areas

@@ -35,6 +35,7 @@
 #include "device/protocol/frame_codec.h"
 #include "device/protocol/messages.h"
 #include "device/protocol/messages_compensation.h"
+#include "device/protocol/messages_compensation_2d.h"
 #include "device/protocol/messages_tuning.h"
 #include "device/protocol/messages_path.h"
 #include "device/sim/firmware.h"
@@ -212,6 +213,12 @@ void checkAllDecoders(const Bytes& p)
     checkDecoder(p, &proto::decodeCompGetRequest, "decodeCompGetRequest");
     checkDecoder(p, &proto::decodeCompGetReply, "decodeCompGetReply");
     checkDecoder(p, &proto::decodeCompEnableRequest, "decodeCompEnableRequest");
+    checkDecoder(p, &proto::decodeComp2dUploadRequest, "decodeComp2dUploadRequest");
+    checkDecoder(p, &proto::decodeComp2dUploadReply, "decodeComp2dUploadReply");
+    checkDecoder(p, &proto::decodeComp2dEnableRequest, "decodeComp2dEnableRequest");
+    checkDecoder(p, &proto::decodeComp2dEnableReply, "decodeComp2dEnableReply");
+    if (const auto u = proto::decodeComp2dUploadRequest(p))
+        CHECK(u->nodes.size() <= proto::kMaxComp2dNodesPerFrame, "COMP2D_UPLOAD node count");
     if (const auto a = proto::decodePathAppendRequest(p))
         CHECK(!a->segments.empty() && a->segments.size() <= std::size_t(proto::kMaxPathSegmentsPerAppend), "PATH_APPEND segment count");
     const auto move = proto::decodeMoveRequest(p);
@@ -359,7 +366,8 @@ private:
 bool knownRequest(std::uint8_t t)
 {
     return (t >= 0x01 && t <= 0x0A) || (t >= 0x20 && t <= 0x22) || proto::tuningTypeName(t) != nullptr
-        || (t >= 0x10 && t <= 0x12) || (t >= 0x24 && t <= 0x26) || proto::compensationTypeName(t) != nullptr;
+        || (t >= 0x10 && t <= 0x12) || (t >= 0x24 && t <= 0x26) || proto::compensationTypeName(t) != nullptr
+        || proto::compensation2dTypeName(t) != nullptr;
 }
 
 struct FirmwareChecker {
