@@ -2522,6 +2522,78 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>  判定：始终未静止：仍有 ±%1 %2、周期 %3 s 的极限环
 </translation>
     </message>
+    <message>
+        <source>--stage-errors is for the simulated stage: give --sim stage</source>
+        <translation>--stage-errors 只用于仿真载物台：请给出 --sim stage</translation>
+    </message>
+    <message>
+        <source>--stage-errors: %1</source>
+        <translation>--stage-errors：%1</translation>
+    </message>
+    <message>
+        <source>with --sim stage: the simulated stage&apos;s errors from a benchpilot.stage-errors file</source>
+        <translation>与 --sim stage 一起使用：从 benchpilot.stage-errors 文件读取仿真载物台的误差</translation>
+    </message>
+    <message>
+        <source>no 2D compensation table on the device</source>
+        <translation>设备上没有二维补偿表</translation>
+    </message>
+    <message>
+        <source>2D table of %1 × %2 nodes; %3%4%5</source>
+        <translation>%1 × %2 节点的二维表；%3%4%5</translation>
+    </message>
+    <message>
+        <source> (applied once X and Y are homed)</source>
+        <translation>（X 和 Y 回零后生效）</translation>
+    </message>
+    <message>
+        <source>give one grid map result file</source>
+        <translation>请给出一个网格图结果文件</translation>
+    </message>
+    <message>
+        <source>give the table file to write: --out FILE</source>
+        <translation>请给出要写入的表文件：--out FILE</translation>
+    </message>
+    <message>
+        <source>2D table of %1 × %2 nodes, every %3 × %4 mm from (%5, %6) mm</source>
+        <translation>%1 × %2 节点的二维表，从 (%5, %6) mm 起每隔 %3 × %4 mm</translation>
+    </message>
+    <message>
+        <source>give one 2D compensation table file</source>
+        <translation>请给出一个二维补偿表文件</translation>
+    </message>
+    <message>
+        <source>a 2D compensation table from a grid map&apos;s result file</source>
+        <translation>由网格图结果文件生成二维补偿表</translation>
+    </message>
+    <message>
+        <source>RESULT</source>
+        <translation>RESULT</translation>
+    </message>
+    <message>
+        <source>RESULT is a benchpilot.grid-map-result file; the table has a node at each of its nodes, with the X and Y corrections that put the work point on them.</source>
+        <translation>RESULT 为 benchpilot.grid-map-result 文件；补偿表在其每个节点处各有一个节点，其 X、Y 修正量使工作点落在这些节点上。</translation>
+    </message>
+    <message>
+        <source>send a 2D compensation table to the device (installed disabled)</source>
+        <translation>将二维补偿表发送到设备（安装后处于禁用状态）</translation>
+    </message>
+    <message>
+        <source>the device&apos;s 2D compensation table</source>
+        <translation>设备的二维补偿表</translation>
+    </message>
+    <message>
+        <source>enable the device&apos;s 2D compensation table</source>
+        <translation>启用设备的二维补偿表</translation>
+    </message>
+    <message>
+        <source>disable the device&apos;s 2D compensation table</source>
+        <translation>禁用设备的二维补偿表</translation>
+    </message>
+    <message>
+        <source>a 2D compensation table as CSV</source>
+        <translation>将二维补偿表导出为 CSV</translation>
+    </message>
 </context>
 <context>
     <name>cli::CliSession</name>
@@ -3147,6 +3219,18 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <source>screenshot: the window&apos;s size, e.g. 1366x768 (a window that cannot shrink to it shows as a larger picture)</source>
         <translation>截图：窗口尺寸，如 1366x768（无法缩到该尺寸的窗口会得到更大的图片）</translation>
     </message>
+    <message>
+        <source>with --sim stage: the simulated stage&apos;s errors from a benchpilot.stage-errors file</source>
+        <translation>与 --sim stage 一起使用：从 benchpilot.stage-errors 文件读取仿真载物台的误差</translation>
+    </message>
+    <message>
+        <source>--stage-errors is for the simulated stage: give --sim stage</source>
+        <translation>--stage-errors 只用于仿真载物台：请给出 --sim stage</translation>
+    </message>
+    <message>
+        <source>--stage-errors: %1</source>
+        <translation>--stage-errors：%1</translation>
+    </message>
 </context>
 <context>
     <name>report</name>
@@ -3514,6 +3598,14 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
     <message>
         <source>--no-homing is for the GRBL personality (--protocol grbl or grblhal)</source>
         <translation>--no-homing 仅用于 GRBL 模式（--protocol grbl 或 grblhal）</translation>
+    </message>
+    <message>
+        <source>the stage&apos;s errors from a benchpilot.stage-errors file</source>
+        <translation>从 benchpilot.stage-errors 文件读取载物台的误差</translation>
+    </message>
+    <message>
+        <source>--stage-errors is for the simulated stage (--instrument stage)</source>
+        <translation>--stage-errors 只用于仿真载物台（--instrument stage）</translation>
     </message>
 </context>
 <context>
@@ -11040,6 +11132,69 @@ A loop this different may oscillate or run away. Apply them?</source>
         <source>%1 refused by the controller: error %2: %3</source>
         <comment>grbl.error.refused_no_line</comment>
         <translation>%1 被控制器拒绝：错误 %2：%3</translation>
+    </message>
+</context>
+<context>
+    <name>words::GridWords</name>
+    <message>
+        <source>%1 × %2 nodes: a map needs at least %3 a side</source>
+        <translation>%1 × %2 个节点：网格图每边至少需要 %3 个</translation>
+    </message>
+    <message>
+        <source>position %1 does not come after %2: a grid&apos;s positions must increase</source>
+        <translation>位置 %1 不在 %2 之后：网格位置必须递增</translation>
+    </message>
+    <message>
+        <source>%1 nodes, where the grid has %2</source>
+        <translation>%1 个节点，而网格有 %2 个</translation>
+    </message>
+    <message>
+        <source>the node at (%1, %2) is off the grid, whose node here is at (%3, %4)</source>
+        <translation>位于 (%1, %2) 的节点不在网格上，网格在此处的节点位于 (%3, %4)</translation>
+    </message>
+    <message>
+        <source>%1 coefficients: at most %2 (order 5)</source>
+        <translation>%1 个系数：最多 %2 个（5 阶）</translation>
+    </message>
+    <message>
+        <source>the curve reaches %1 at %2, beyond ±%3</source>
+        <translation>曲线在 %2 处达到 %1，超出 ±%3</translation>
+    </message>
+    <message>
+        <source>%1 nodes: a 2D table has %2 to %3 a side</source>
+        <translation>%1 个节点：二维表每边应有 %2 到 %3 个节点</translation>
+    </message>
+    <message>
+        <source>this instrument keeps no 2D compensation table</source>
+        <translation>此仪器不保存二维补偿表</translation>
+    </message>
+    <message>
+        <source>the device answered COMP2D_UPLOAD with something unreadable</source>
+        <translation>设备对 COMP2D_UPLOAD 的应答无法解读</translation>
+    </message>
+    <message>
+        <source>the device answered COMP2D_ENABLE with something unreadable</source>
+        <translation>设备对 COMP2D_ENABLE 的应答无法解读</translation>
+    </message>
+    <message>
+        <source>the nodes of %1 are not on one regular grid: no 2D table can be made of them</source>
+        <translation>%1 的节点不在同一规则网格上：无法由其生成二维表</translation>
+    </message>
+    <message>
+        <source>upload the 2D compensation table</source>
+        <translation>上传二维补偿表</translation>
+    </message>
+    <message>
+        <source>enable the 2D compensation table</source>
+        <translation>启用二维补偿表</translation>
+    </message>
+    <message>
+        <source>disable the 2D compensation table</source>
+        <translation>禁用二维补偿表</translation>
+    </message>
+    <message>
+        <source>read the 2D compensation table&apos;s state</source>
+        <translation>读取二维补偿表状态</translation>
     </message>
 </context>
 <context>
