@@ -479,6 +479,17 @@ struct FirmwareChecker {
                 CHECK(c && c->axis < axes && c->first + c->samples.size() <= c->total, "GET_CAPTURE reply wrong");
                 break;
             }
+            if (req.type == static_cast<std::uint8_t>(proto::kComp2dUpload)) {
+                const auto u = proto::decodeComp2dUploadReply(rep.payload);
+                CHECK(u.has_value(), "COMP2D_UPLOAD reply does not decode");
+                break;
+            }
+            if (req.type == static_cast<std::uint8_t>(proto::kComp2dEnable)) {
+                const auto e = proto::decodeComp2dEnableReply(rep.payload);
+                CHECK(e && ((e->state & proto::Comp2dInstalled) != 0) == (e->columns >= 2 && e->rows >= 2),
+                      "COMP2D_ENABLE reply's state and grid disagree");
+                break;
+            }
             CHECK(rep.payload.empty(), "reply to 0x%02X has a %zu-byte payload", unsigned{req.type}, rep.payload.size());
             break;
         }
