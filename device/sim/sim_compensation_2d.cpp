@@ -12,15 +12,13 @@ using motion::metrology::CompensationTable2D;
 SimCompensation2d::SimCompensation2d(SimMachine& machine, const NonVolatile& powerUp)
     : m_m(machine), m_table(powerUp.table2d), m_enabled(powerUp.table2d && powerUp.table2dEnabled)
 {
-}
-
-bool SimCompensation2d::available() const
-{
-    if (m_m.axisCount() < 2)
-        return false;
-    const auto& x = m_m.st(0).plant->config();
-    const auto& y = m_m.st(1).plant->config();
-    return x.letter == 'X' && y.letter == 'Y' && x.unit == proto::AxisUnit::Millimetre && y.unit == proto::AxisUnit::Millimetre;
+    // The axes are made before this part, and never change: asked every tick, so kept.
+    if (m_m.axisCount() >= 2) {
+        const auto& x = m_m.st(0).plant->config();
+        const auto& y = m_m.st(1).plant->config();
+        m_available = x.letter == 'X' && y.letter == 'Y' && x.unit == proto::AxisUnit::Millimetre
+                      && y.unit == proto::AxisUnit::Millimetre;
+    }
 }
 
 proto::ErrorReply SimCompensation2d::error(proto::ErrorCode code, std::int32_t value, const std::string& text) const

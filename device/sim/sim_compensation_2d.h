@@ -38,7 +38,7 @@ public:
     bool enabled() const { return m_enabled; }
     bool applied() const { return m_applied; }
     /// The machine has X and Y as axes 0 and 1, in mm: the table has somewhere to go.
-    bool available() const;
+    bool available() const { return m_available; }
 
 private:
     proto::ErrorReply error(proto::ErrorCode code, std::int32_t value, const std::string& text) const;
@@ -53,6 +53,7 @@ private:
     bool m_enabled = false;
     bool m_applied = false;
     bool m_saved = true;
+    bool m_available = false;
     std::optional<proto::Comp2dUploadRequest> m_staging;  ///< the grid of the upload in progress
     std::vector<proto::Comp2dNode> m_stagingNodes;
 };
