@@ -155,6 +155,8 @@ TEST_F(ExampleStage, ATableFittedFromItsMapCutsTheSameMapsErrorFiveFold)
     EXPECT_NEAR(m.trueWorkPoint().yMm, held.yMm, 1e-6);
     const auto after = motion::metrology::analyseGridMap(mapByMoving(m, r));
     ASSERT_TRUE(after);
+    RecordProperty("rms_before_um", std::to_string(before->figures.rmsErrorUm));
+    RecordProperty("rms_after_um", std::to_string(after->figures.rmsErrorUm));
     EXPECT_GT(before->figures.rmsErrorUm, 5.0);
     EXPECT_LT(after->figures.rmsErrorUm * 5, before->figures.rmsErrorUm)
         << "before " << before->figures.rmsErrorUm << " µm, after " << after->figures.rmsErrorUm << " µm";
