@@ -14,10 +14,10 @@
 #include <QCoreApplication>
 #include <QFileInfo>
 
-namespace cli {
+namespace app::cli {
 namespace {
 
-QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+QString tr(const char* text) { return QCoreApplication::translate("app::cli", text); }
 
 const QCommandLineOption& helpOption()
 {
@@ -103,9 +103,9 @@ bool readLinkOptions(const QCommandLineParser& p, LinkOptions& link, QTextStream
     if (p.isSet(QStringLiteral("stage-errors"))) {
         if (link.sim != QLatin1String("stage"))
             return fail(tr("--stage-errors is for the simulated stage: give --sim stage"));
-        const auto read = accuracyfiles::loadStageErrorsFile(unmarkNegative(p.value(QStringLiteral("stage-errors"))));
+        const auto read = dev::files::accuracy::loadStageErrorsFile(unmarkNegative(p.value(QStringLiteral("stage-errors"))));
         if (!read.errors)
-            return fail(tr("--stage-errors: %1").arg(words::problems(read.problems).join(QLatin1Char('\n'))));
+            return fail(tr("--stage-errors: %1").arg(ui::words::problems(read.problems).join(QLatin1Char('\n'))));
         link.stageErrors = read.errors;
     }
     if (p.isSet(QStringLiteral("port"))) {
@@ -120,13 +120,13 @@ bool readLinkOptions(const QCommandLineParser& p, LinkOptions& link, QTextStream
         link.instrument = v;
     }
     if (p.isSet(QStringLiteral("profile"))) {
-        link.profile = files::resolveMachineProfile(unmarkNegative(p.value(QStringLiteral("profile"))));
-        files::MachineProfile profile;
-        jsonio::Problems problems;
+        link.profile = dev::files::resolveMachineProfile(unmarkNegative(p.value(QStringLiteral("profile"))));
+        dev::files::MachineProfile profile;
+        dev::files::json::Problems problems;
         if (link.profile.isEmpty())
             return fail(tr("--profile needs a machine profile file"));
-        if (!files::loadMachineProfileFile(link.profile, &profile, &problems))
-            return fail(tr("--profile: %1").arg(words::fileProblems(problems, QFileInfo(link.profile).fileName()).join(QLatin1Char('\n'))));
+        if (!dev::files::loadMachineProfileFile(link.profile, &profile, &problems))
+            return fail(tr("--profile: %1").arg(ui::words::fileProblems(problems, QFileInfo(link.profile).fileName()).join(QLatin1Char('\n'))));
     }
     if (p.isSet(QStringLiteral("baud"))) {
         bool ok = false;
@@ -298,7 +298,7 @@ int runCli(const QStringList& rawArgs, QTextStream& out, QTextStream& err)
 {
     // The language first, wherever it stands, so that every later word (usage
     // errors included) is in it. English unless asked: scripts parse this output.
-    words::Translators translators;
+    ui::words::Translators translators;
     for (int i = 0; i < rawArgs.size(); ++i) {
         const QString& a = rawArgs[i];
         QString language;
@@ -446,4 +446,4 @@ int runCommandLine(const QStringList& rawArgs, QTextStream& out, QTextStream& er
     return cmd->run(inv);
 }
 
-} // namespace cli
+} // namespace app::cli

@@ -18,10 +18,10 @@
 #include <QFileInfo>
 #include <QJsonArray>
 
-namespace cli {
+namespace app::cli {
 namespace {
 
-QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+QString tr(const char* text) { return QCoreApplication::translate("app::cli", text); }
 
 QJsonObject state2dJson(const dev::Compensation2dState& s)
 {
@@ -57,7 +57,7 @@ dev::Compensation2dClient* device2d(Invocation& inv)
         return nullptr;
     dev::Compensation2dClient* c = session->instrument()->compensation2d();
     if (!c || !c->available()) {
-        reportFailure(inv, msg::make("compensation2d.not_supported"), Refused);
+        reportFailure(inv, motion::msg::make("compensation2d.not_supported"), Refused);
         return nullptr;
     }
     return c;
@@ -74,9 +74,9 @@ int wait2d(Invocation& inv, const std::function<void(dev::Compensation2dClient::
         done = true;
     });
     if (!spinUntil([&] { return done; }, 30000))
-        return reportFailure(inv, msg::make("accuracy.run.link_lost"), LinkTrouble);
+        return reportFailure(inv, motion::msg::make("accuracy.run.link_lost"), LinkTrouble);
     if (error)
-        return reportFailure(inv, msg::make("compensation.device_refused", {msg::nested("detail", error->message)}),
+        return reportFailure(inv, motion::msg::make("compensation.device_refused", {motion::msg::nested("detail", error->message)}),
                              error->kind == dev::RequestError::Kind::LinkDown || error->kind == dev::RequestError::Kind::Timeout
                                  ? LinkTrouble
                                  : Refused);
@@ -90,13 +90,13 @@ int fit2d(Invocation& inv)
     if (!inv.isSet(QStringLiteral("out")))
         return inv.usage(tr("give the table file to write: --out FILE"));
     const QString input = inv.path(inv.arguments().front());
-    const auto read = accuracyfiles::loadGridMapResultFile(input);
+    const auto read = dev::files::accuracy::loadGridMapResultFile(input);
     if (reportProblems(inv, read.problems) || !read.file)
         return Usage;
     const auto table = motion::metrology::compensationFromMap(read.file->result);
     if (!table)
-        return reportFailure(inv, msg::make("compensation2d.map_not_a_grid", {msg::verbatim("file", QFileInfo(input).fileName().toStdString())}), Usage);
-    msg::Problems problems;
+        return reportFailure(inv, motion::msg::make("compensation2d.map_not_a_grid", {motion::msg::verbatim("file", QFileInfo(input).fileName().toStdString())}), Usage);
+    motion::msg::Problems problems;
     for (auto p : motion::metrology::validate(*table)) {
         p.file = QFileInfo(input).fileName().toStdString();
         problems.push_back(p);
@@ -104,8 +104,8 @@ int fit2d(Invocation& inv)
     if (reportProblems(inv, problems))
         return Usage;
     const QString out = inv.path(inv.value(QStringLiteral("out")));
-    msg::Message error;
-    if (!accuracyfiles::saveCompensation2DFile(out, {*table, QFileInfo(input).fileName().toStdString()}, &error))
+    motion::msg::Message error;
+    if (!dev::files::accuracy::saveCompensation2DFile(out, {*table, QFileInfo(input).fileName().toStdString()}, &error))
         return reportFailure(inv, error, Refused);
     if (inv.json()) {
         printJson(inv, QJsonObject{{QStringLiteral("ok"), true},
@@ -132,7 +132,7 @@ int upload2d(Invocation& inv)
 {
     if (inv.arguments().size() != 1)
         return inv.usage(tr("give one 2D compensation table file"));
-    const auto read = accuracyfiles::loadCompensation2DFile(inv.path(inv.arguments().front()));
+    const auto read = dev::files::accuracy::loadCompensation2DFile(inv.path(inv.arguments().front()));
     if (reportProblems(inv, read.problems) || !read.file)
         return Usage;
     dev::Compensation2dClient* c = device2d(inv);
@@ -145,9 +145,9 @@ int upload2d(Invocation& inv)
         done = true;
     });
     if (!spinUntil([&] { return done; }, 30000))
-        return reportFailure(inv, msg::make("accuracy.run.link_lost"), LinkTrouble);
+        return reportFailure(inv, motion::msg::make("accuracy.run.link_lost"), LinkTrouble);
     if (error)
-        return reportFailure(inv, msg::make("compensation.device_refused", {msg::nested("detail", error->message)}), Refused);
+        return reportFailure(inv, motion::msg::make("compensation.device_refused", {motion::msg::nested("detail", error->message)}), Refused);
     dev::Compensation2dState s;
     const bool on = inv.isSet(QStringLiteral("enable"));
     if (int rc = on ? wait2d(inv, [&](auto cb) { c->setEnabled(true, inv.isSet(QStringLiteral("save")), cb); }, &s)
@@ -185,14 +185,14 @@ int export2d(Invocation& inv)
 {
     if (inv.arguments().size() != 1)
         return inv.usage(tr("give one 2D compensation table file"));
-    const auto read = accuracyfiles::loadCompensation2DFile(inv.path(inv.arguments().front()));
+    const auto read = dev::files::accuracy::loadCompensation2DFile(inv.path(inv.arguments().front()));
     if (reportProblems(inv, read.problems) || !read.file)
         return Usage;
-    const std::string text = accuracyfiles::compensation2DToCsv(read.file->table);
+    const std::string text = dev::files::accuracy::compensation2DToCsv(read.file->table);
     if (inv.isSet(QStringLiteral("out"))) {
-        msg::Message error;
+        motion::msg::Message error;
         const QString out = inv.path(inv.value(QStringLiteral("out")));
-        if (!files::writeAtomically(out, text, &error))
+        if (!dev::files::writeAtomically(out, text, &error))
             return reportFailure(inv, error, Refused);
         if (inv.json())
             printJson(inv, QJsonObject{{QStringLiteral("ok"), true}, {QStringLiteral("files"), QJsonArray{out}}});
@@ -231,4 +231,4 @@ void addCompensation2dSubcommands(Command& comp)
     }
 }
 
-} // namespace cli
+} // namespace app::cli

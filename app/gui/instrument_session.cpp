@@ -8,7 +8,7 @@
 
 namespace app {
 
-InstrumentSession::InstrumentSession(proto::DeviceKind kind, const QString& name, QObject* parent)
+InstrumentSession::InstrumentSession(dev::proto::DeviceKind kind, const QString& name, QObject* parent)
     : QObject(parent), m_kind(kind), m_name(name), m_proxy(new dev::InstrumentProxy(this))
 {
 }
@@ -60,9 +60,9 @@ void InstrumentSession::connectTo(const ui::ConnectionChoice& choice)
         // The same simulator again when only the cable was out; a new one for another wire speed.
         if (!m_sim || m_simBaud != choice.baud) {
             dropSimulator();
-            if (choice.stageErrors && m_kind == proto::DeviceKind::Stage) {
-                sim::MachineConfig config = sim::stageConfig();
-                sim::applyStageErrors(config, *choice.stageErrors);
+            if (choice.stageErrors && m_kind == dev::proto::DeviceKind::Stage) {
+                dev::sim::MachineConfig config = dev::sim::stageConfig();
+                dev::sim::applyStageErrors(config, *choice.stageErrors);
                 m_sim = new dev::SimulatedLink(config, choice.baud, this);
             } else {
                 m_sim = new dev::SimulatedLink(m_kind, choice.baud, this);

@@ -2,7 +2,7 @@
 
 #include "device/protocol/bytes.h"
 
-namespace proto {
+namespace dev::proto {
 
 Bytes encode(const Comp2dUploadRequest& m)
 {
@@ -96,4 +96,4 @@ const char* compensation2dTypeName(std::uint8_t type)
     }
 }
 
-} // namespace proto
+} // namespace dev::proto

@@ -12,7 +12,7 @@
 #include <optional>
 #include <vector>
 
-namespace proto {
+namespace dev::proto {
 
 // Message types (queued 0x1E–0x1F) and capability bit 15, as allocated in messages.h.
 // Errors reuse the per-axis compensation's codes (CompInvalid, CompSequence,
@@ -85,4 +85,4 @@ std::optional<Comp2dEnableReply> decodeComp2dEnableReply(const Bytes&);
 
 const char* compensation2dTypeName(std::uint8_t type);  ///< "COMP2D_UPLOAD", … or nullptr
 
-} // namespace proto
+} // namespace dev::proto

@@ -5,39 +5,39 @@
 #include "device/protocol/messages_compensation_2d.h"
 #include "device/sim/sim_compensation_2d.h"
 
-namespace sim {
+namespace dev::sim {
 
-bool Firmware::executeCompensation(const proto::Frame& f, std::vector<std::uint8_t>& reply)
+bool Firmware::executeCompensation(const dev::proto::Frame& f, std::vector<std::uint8_t>& reply)
 {
-    if (const char* name2d = proto::compensation2dTypeName(f.type)) {
+    if (const char* name2d = dev::proto::compensation2dTypeName(f.type)) {
         SimCompensation2d& c = m_machine.compensation2d();
-        const std::uint8_t ok = static_cast<std::uint8_t>(f.type | proto::kReplyFlag);
+        const std::uint8_t ok = static_cast<std::uint8_t>(f.type | dev::proto::kReplyFlag);
         if (f.type == 0x1E) {
-            if (const auto r = proto::decodeComp2dUploadRequest(f.payload)) {
-                proto::Comp2dUploadReply out;
+            if (const auto r = dev::proto::decodeComp2dUploadRequest(f.payload)) {
+                dev::proto::Comp2dUploadReply out;
                 if (const auto e = c.upload(*r, out))
                     sendError(f.seq, *e, reply);
                 else
-                    sendFrame(ok, f.seq, proto::encode(out), reply);
+                    sendFrame(ok, f.seq, dev::proto::encode(out), reply);
                 return true;
             }
-        } else if (const auto r = proto::decodeComp2dEnableRequest(f.payload)) {
-            proto::Comp2dEnableReply out;
+        } else if (const auto r = dev::proto::decodeComp2dEnableRequest(f.payload)) {
+            dev::proto::Comp2dEnableReply out;
             if (const auto e = c.enable(*r, out))
                 sendError(f.seq, *e, reply);
             else
-                sendFrame(ok, f.seq, proto::encode(out), reply);
+                sendFrame(ok, f.seq, dev::proto::encode(out), reply);
             return true;
         }
         sendMalformed(f.seq, name2d, reply);
         return true;
     }
-    const char* name = proto::compensationTypeName(f.type);
+    const char* name = dev::proto::compensationTypeName(f.type);
     if (!name)
         return false;
-    const std::uint8_t ok = static_cast<std::uint8_t>(f.type | proto::kReplyFlag);
+    const std::uint8_t ok = static_cast<std::uint8_t>(f.type | dev::proto::kReplyFlag);
     SimCompensation& c = m_machine.compensation();
-    auto answer = [&](const SimCompensation::Result& r, const proto::Bytes& payload) {
+    auto answer = [&](const SimCompensation::Result& r, const dev::proto::Bytes& payload) {
         if (r)
             sendError(f.seq, *r, reply);
         else
@@ -45,23 +45,23 @@ bool Firmware::executeCompensation(const proto::Frame& f, std::vector<std::uint8
     };
     switch (f.type) {
     case 0x1B:
-        if (const auto r = proto::decodeCompUploadRequest(f.payload)) {
-            proto::CompUploadReply out;
+        if (const auto r = dev::proto::decodeCompUploadRequest(f.payload)) {
+            dev::proto::CompUploadReply out;
             const auto e = c.upload(*r, out);
-            answer(e, e ? proto::Bytes{} : proto::encode(out));
+            answer(e, e ? dev::proto::Bytes{} : dev::proto::encode(out));
             return true;
         }
         break;
     case 0x1C:
-        if (const auto r = proto::decodeCompGetRequest(f.payload)) {
-            proto::CompGetReply out;
+        if (const auto r = dev::proto::decodeCompGetRequest(f.payload)) {
+            dev::proto::CompGetReply out;
             const auto e = c.get(*r, out);
-            answer(e, e ? proto::Bytes{} : proto::encode(out));
+            answer(e, e ? dev::proto::Bytes{} : dev::proto::encode(out));
             return true;
         }
         break;
     case 0x1D:
-        if (const auto r = proto::decodeCompEnableRequest(f.payload)) {
+        if (const auto r = dev::proto::decodeCompEnableRequest(f.payload)) {
             answer(c.enable(*r), {});
             return true;
         }
@@ -72,4 +72,4 @@ bool Firmware::executeCompensation(const proto::Frame& f, std::vector<std::uint8
     return true;
 }
 
-} // namespace sim
+} // namespace dev::sim

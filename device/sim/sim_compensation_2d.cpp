@@ -5,7 +5,7 @@
 
 #include <cstdio>
 
-namespace sim {
+namespace dev::sim {
 
 using motion::metrology::CompensationTable2D;
 
@@ -16,44 +16,44 @@ SimCompensation2d::SimCompensation2d(SimMachine& machine, const NonVolatile& pow
     if (m_m.axisCount() >= 2) {
         const auto& x = m_m.st(0).plant->config();
         const auto& y = m_m.st(1).plant->config();
-        m_available = x.letter == 'X' && y.letter == 'Y' && x.unit == proto::AxisUnit::Millimetre
-                      && y.unit == proto::AxisUnit::Millimetre;
+        m_available = x.letter == 'X' && y.letter == 'Y' && x.unit == dev::proto::AxisUnit::Millimetre
+                      && y.unit == dev::proto::AxisUnit::Millimetre;
     }
 }
 
-proto::ErrorReply SimCompensation2d::error(proto::ErrorCode code, std::int32_t value, const std::string& text) const
+dev::proto::ErrorReply SimCompensation2d::error(dev::proto::ErrorCode code, std::int32_t value, const std::string& text) const
 {
-    proto::ErrorReply e;
+    dev::proto::ErrorReply e;
     e.code = code;
-    e.axis = proto::kNoAxis;
+    e.axis = dev::proto::kNoAxis;
     e.value = value;
     e.message = text;
     return e;
 }
 
-proto::Comp2dEnableReply SimCompensation2d::state() const
+dev::proto::Comp2dEnableReply SimCompensation2d::state() const
 {
-    proto::Comp2dEnableReply s;
+    dev::proto::Comp2dEnableReply s;
     if (m_table) {
-        s.state |= proto::Comp2dInstalled;
+        s.state |= dev::proto::Comp2dInstalled;
         s.columns = static_cast<std::uint8_t>(m_table->columns);
         s.rows = static_cast<std::uint8_t>(m_table->rows);
     }
     if (m_enabled)
-        s.state |= proto::Comp2dEnabled;
+        s.state |= dev::proto::Comp2dEnabled;
     if (m_applied)
-        s.state |= proto::Comp2dApplied;
+        s.state |= dev::proto::Comp2dApplied;
     if (m_saved)
-        s.state |= proto::Comp2dSaved;
+        s.state |= dev::proto::Comp2dSaved;
     return s;
 }
 
-SimCompensation2d::Result SimCompensation2d::upload(const proto::Comp2dUploadRequest& r, proto::Comp2dUploadReply& out)
+SimCompensation2d::Result SimCompensation2d::upload(const dev::proto::Comp2dUploadRequest& r, dev::proto::Comp2dUploadReply& out)
 {
     if (!available())
-        return error(proto::ErrorCode::BadAxis, 0, "this instrument has no X and Y axes for a 2D table");
+        return error(dev::proto::ErrorCode::BadAxis, 0, "this instrument has no X and Y axes for a 2D table");
     if (m_m.st(0).mode != SimMachine::Mode::Idle || m_m.st(1).mode != SimMachine::Mode::Idle)
-        return error(proto::ErrorCode::Busy, 0, "X or Y is moving: upload the 2D table at rest");
+        return error(dev::proto::ErrorCode::Busy, 0, "X or Y is moving: upload the 2D table at rest");
     const std::size_t total = static_cast<std::size_t>(r.columns) * r.rows;
     if (r.first == 0) {
         m_staging = r;
@@ -63,13 +63,13 @@ SimCompensation2d::Result SimCompensation2d::upload(const proto::Comp2dUploadReq
                || r.originX != m_staging->originX || r.originY != m_staging->originY || r.pitchX != m_staging->pitchX
                || r.pitchY != m_staging->pitchY) {
         const auto expected = static_cast<std::int32_t>(m_staging ? m_stagingNodes.size() : 0);
-        return error(proto::kErrCompSequence, expected,
+        return error(dev::proto::kErrCompSequence, expected,
                      "part from node " + std::to_string(r.first) + " of the 2D table: the device expects node "
                          + std::to_string(expected) + " of the upload in progress, on the same grid");
     }
     if (m_stagingNodes.size() + r.nodes.size() > total) {
         m_staging.reset();
-        return error(proto::kErrCompInvalid, static_cast<std::int32_t>(total),
+        return error(dev::proto::kErrCompInvalid, static_cast<std::int32_t>(total),
                      "the 2D table's parts hold more nodes than its " + std::to_string(total));
     }
     m_stagingNodes.insert(m_stagingNodes.end(), r.nodes.begin(), r.nodes.end());
@@ -93,7 +93,7 @@ SimCompensation2d::Result SimCompensation2d::upload(const proto::Comp2dUploadReq
     const auto problems = motion::metrology::validate(t);
     for (const auto& p : problems)
         if (p.isError())
-            return error(proto::kErrCompInvalid, -1, "the 2D table cannot be applied: " + p.path + ": " + msg::debugString(p.message));
+            return error(dev::proto::kErrCompInvalid, -1, "the 2D table cannot be applied: " + p.path + ": " + motion::msg::debugString(p.message));
     if (m_applied)
         attach(false);
     m_table = t;
@@ -102,24 +102,24 @@ SimCompensation2d::Result SimCompensation2d::upload(const proto::Comp2dUploadReq
     out.installed = 1;
     char text[96];
     std::snprintf(text, sizeof text, "2D table of %d x %d nodes installed, disabled", t.columns, t.rows);
-    m_m.raiseEvent(proto::kEvCompChanged, -1, text);
+    m_m.raiseEvent(dev::proto::kEvCompChanged, -1, text);
     return std::nullopt;
 }
 
-SimCompensation2d::Result SimCompensation2d::enable(const proto::Comp2dEnableRequest& r, proto::Comp2dEnableReply& out)
+SimCompensation2d::Result SimCompensation2d::enable(const dev::proto::Comp2dEnableRequest& r, dev::proto::Comp2dEnableReply& out)
 {
     if (!available())
-        return error(proto::ErrorCode::BadAxis, 0, "this instrument has no X and Y axes for a 2D table");
-    if (r.flags & proto::Comp2dEnableQuery) {
+        return error(dev::proto::ErrorCode::BadAxis, 0, "this instrument has no X and Y axes for a 2D table");
+    if (r.flags & dev::proto::Comp2dEnableQuery) {
         out = state();
         return std::nullopt;
     }
-    const bool on = r.flags & proto::Comp2dEnableOn;
-    const bool save = r.flags & proto::Comp2dEnableSave;
+    const bool on = r.flags & dev::proto::Comp2dEnableOn;
+    const bool save = r.flags & dev::proto::Comp2dEnableSave;
     if (on && !m_table)
-        return error(proto::kErrCompMissing, 0, "there is no 2D table to enable: upload one first");
+        return error(dev::proto::kErrCompMissing, 0, "there is no 2D table to enable: upload one first");
     if (m_m.st(0).mode != SimMachine::Mode::Idle || m_m.st(1).mode != SimMachine::Mode::Idle)
-        return error(proto::ErrorCode::Busy, 0, "X or Y is moving: change the 2D table at rest");
+        return error(dev::proto::ErrorCode::Busy, 0, "X or Y is moving: change the 2D table at rest");
     const bool changed = m_enabled != on;
     m_enabled = on;
     if (changed)
@@ -130,9 +130,9 @@ SimCompensation2d::Result SimCompensation2d::enable(const proto::Comp2dEnableReq
     }
     follow();
     if (changed || save)
-        m_m.raiseEvent(proto::kEvCompChanged, -1,
+        m_m.raiseEvent(dev::proto::kEvCompChanged, -1,
                        std::string(on ? "2D table enabled" : "2D table disabled") + (save ? ", kept for power-up" : ""),
-                       on ? proto::reason::kEnabled : proto::reason::kDisabled, {save ? 1.0 : 0.0});
+                       on ? dev::proto::reason::kEnabled : dev::proto::reason::kDisabled, {save ? 1.0 : 0.0});
     out = state();
     return std::nullopt;
 }
@@ -192,4 +192,4 @@ void SimCompensation2d::follow()
     sy.plant->setCrossCorrection(ky, false);
 }
 
-} // namespace sim
+} // namespace dev::sim

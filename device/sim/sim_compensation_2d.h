@@ -19,7 +19,7 @@
 #include <optional>
 #include <vector>
 
-namespace sim {
+namespace dev::sim {
 
 class SimMachine;
 
@@ -27,9 +27,9 @@ class SimCompensation2d {
 public:
     SimCompensation2d(SimMachine& machine, const NonVolatile& powerUp);
 
-    using Result = std::optional<proto::ErrorReply>;
-    Result upload(const proto::Comp2dUploadRequest& r, proto::Comp2dUploadReply& out);
-    Result enable(const proto::Comp2dEnableRequest& r, proto::Comp2dEnableReply& out);
+    using Result = std::optional<dev::proto::ErrorReply>;
+    Result upload(const dev::proto::Comp2dUploadRequest& r, dev::proto::Comp2dUploadReply& out);
+    Result enable(const dev::proto::Comp2dEnableRequest& r, dev::proto::Comp2dEnableReply& out);
 
     /// Once per tick, after the references were set and before the plants move.
     void follow();
@@ -41,8 +41,8 @@ public:
     bool available() const { return m_available; }
 
 private:
-    proto::ErrorReply error(proto::ErrorCode code, std::int32_t value, const std::string& text) const;
-    proto::Comp2dEnableReply state() const;
+    dev::proto::ErrorReply error(dev::proto::ErrorCode code, std::int32_t value, const std::string& text) const;
+    dev::proto::Comp2dEnableReply state() const;
     /// The corrections (mm) at the axes' present nominal references.
     void correctionsNow(double& xMm, double& yMm) const;
     /// Attaches or detaches at rest: the nominal references move, the drives stay.
@@ -54,8 +54,8 @@ private:
     bool m_applied = false;
     bool m_saved = true;
     bool m_available = false;
-    std::optional<proto::Comp2dUploadRequest> m_staging;  ///< the grid of the upload in progress
-    std::vector<proto::Comp2dNode> m_stagingNodes;
+    std::optional<dev::proto::Comp2dUploadRequest> m_staging;  ///< the grid of the upload in progress
+    std::vector<dev::proto::Comp2dNode> m_stagingNodes;
 };
 
-} // namespace sim
+} // namespace dev::sim

@@ -27,7 +27,7 @@
 
 namespace {
 
-using namespace proto;
+using namespace dev::proto;
 
 struct Example {
     std::string name;

@@ -36,17 +36,17 @@ StageErrors exampleErrors()
     return e;
 }
 
-sim::MachineConfig stageWithExampleErrors()
+dev::sim::MachineConfig stageWithExampleErrors()
 {
-    auto c = sim::stageConfig();
-    sim::applyStageErrors(c, exampleErrors());
+    auto c = dev::sim::stageConfig();
+    dev::sim::applyStageErrors(c, exampleErrors());
     return c;
 }
 
 using ExampleStage = HomedMachine<stageWithExampleErrors>;
-using BuiltInStage = HomedMachine<sim::stageConfig>;
+using BuiltInStage = HomedMachine<dev::sim::stageConfig>;
 
-void moveXy(sim::SimMachine& m, Runner& r, double x, double y)
+void moveXy(dev::sim::SimMachine& m, Runner& r, double x, double y)
 {
     ASSERT_FALSE(m.move(absMove(kXy, {x, y})));
     ASSERT_TRUE(r.runUntilIdle(30));
@@ -57,7 +57,7 @@ const std::vector<double> kNodesMm = {20, 30, 40, 50, 60, 70, 80};
 
 /// The map a camera on a grid plate would give: the work point's true place at every
 /// node, the stage sent there through its (compensated or not) targets.
-motion::metrology::GridMapInput mapByMoving(sim::SimMachine& m, Runner& r)
+motion::metrology::GridMapInput mapByMoving(dev::sim::SimMachine& m, Runner& r)
 {
     motion::metrology::GridMapInput in;
     in.xMm = kNodesMm;
@@ -72,9 +72,9 @@ motion::metrology::GridMapInput mapByMoving(sim::SimMachine& m, Runner& r)
     return in;
 }
 
-void upload(sim::SimMachine& m, const motion::metrology::CompensationTable2D& t)
+void upload(dev::sim::SimMachine& m, const motion::metrology::CompensationTable2D& t)
 {
-    proto::Comp2dUploadRequest h;
+    dev::proto::Comp2dUploadRequest h;
     h.columns = static_cast<std::uint8_t>(t.columns);
     h.rows = static_cast<std::uint8_t>(t.rows);
     h.originX = nm(t.originXMm);
@@ -82,24 +82,24 @@ void upload(sim::SimMachine& m, const motion::metrology::CompensationTable2D& t)
     h.pitchX = nm(t.pitchXMm);
     h.pitchY = nm(t.pitchYMm);
     const std::size_t n = t.correctionXUm.size();
-    for (std::size_t first = 0; first < n; first += proto::kMaxComp2dNodesPerFrame) {
-        proto::Comp2dUploadRequest part = h;
+    for (std::size_t first = 0; first < n; first += dev::proto::kMaxComp2dNodesPerFrame) {
+        dev::proto::Comp2dUploadRequest part = h;
         part.first = static_cast<std::uint16_t>(first);
-        for (std::size_t k = first; k < std::min(n, first + proto::kMaxComp2dNodesPerFrame); ++k)
+        for (std::size_t k = first; k < std::min(n, first + dev::proto::kMaxComp2dNodesPerFrame); ++k)
             part.nodes.push_back({static_cast<std::int32_t>(std::lround(t.correctionXUm[k] * 1e3)),
                                   static_cast<std::int32_t>(std::lround(t.correctionYUm[k] * 1e3))});
         // Through the codec, as the device receives it.
-        const auto decoded = proto::decodeComp2dUploadRequest(proto::encode(part));
+        const auto decoded = dev::proto::decodeComp2dUploadRequest(dev::proto::encode(part));
         ASSERT_TRUE(decoded);
-        proto::Comp2dUploadReply reply;
+        dev::proto::Comp2dUploadReply reply;
         ASSERT_FALSE(m.compensation2d().upload(*decoded, reply));
-        EXPECT_EQ(reply.installed, first + proto::kMaxComp2dNodesPerFrame >= n ? 1 : 0);
+        EXPECT_EQ(reply.installed, first + dev::proto::kMaxComp2dNodesPerFrame >= n ? 1 : 0);
     }
 }
 
-proto::Comp2dEnableReply enable2d(sim::SimMachine& m, std::uint8_t flags)
+dev::proto::Comp2dEnableReply enable2d(dev::sim::SimMachine& m, std::uint8_t flags)
 {
-    proto::Comp2dEnableReply out;
+    dev::proto::Comp2dEnableReply out;
     EXPECT_FALSE(m.compensation2d().enable({flags}, out));
     return out;
 }
@@ -146,9 +146,9 @@ TEST_F(ExampleStage, ATableFittedFromItsMapCutsTheSameMapsErrorFiveFold)
     upload(m, *table);
     EXPECT_FALSE(m.compensation2d().enabled()) << "installed disabled";
     const auto held = m.trueWorkPoint();
-    const auto on = enable2d(m, proto::Comp2dEnableOn);
-    EXPECT_EQ(on.state & (proto::Comp2dInstalled | proto::Comp2dEnabled | proto::Comp2dApplied),
-              proto::Comp2dInstalled | proto::Comp2dEnabled | proto::Comp2dApplied);
+    const auto on = enable2d(m, dev::proto::Comp2dEnableOn);
+    EXPECT_EQ(on.state & (dev::proto::Comp2dInstalled | dev::proto::Comp2dEnabled | dev::proto::Comp2dApplied),
+              dev::proto::Comp2dInstalled | dev::proto::Comp2dEnabled | dev::proto::Comp2dApplied);
     EXPECT_EQ(on.columns, 7);
     r.run(0.2);
     EXPECT_NEAR(m.trueWorkPoint().xMm, held.xMm, 1e-6) << "enabling never moves the axes";
@@ -169,26 +169,26 @@ TEST_F(ExampleStage, ATableFittedFromItsMapCutsTheSameMapsErrorFiveFold)
 
 TEST_F(ExampleStage, RefusesAPartOutOfOrderAndAnEnableWithoutATable)
 {
-    proto::Comp2dEnableReply out;
-    const auto missing = m.compensation2d().enable({proto::Comp2dEnableOn}, out);
+    dev::proto::Comp2dEnableReply out;
+    const auto missing = m.compensation2d().enable({dev::proto::Comp2dEnableOn}, out);
     ASSERT_TRUE(missing);
-    EXPECT_EQ(missing->code, proto::kErrCompMissing);
-    proto::Comp2dUploadRequest part;
+    EXPECT_EQ(missing->code, dev::proto::kErrCompMissing);
+    dev::proto::Comp2dUploadRequest part;
     part.columns = 19;
     part.rows = 19;
     part.pitchX = part.pitchY = nm(5);
     part.first = 0;
     part.nodes.assign(96, {});
-    proto::Comp2dUploadReply reply;
+    dev::proto::Comp2dUploadReply reply;
     ASSERT_FALSE(m.compensation2d().upload(part, reply));
     EXPECT_EQ(reply.received, 96);
     part.first = 100;
     const auto seq = m.compensation2d().upload(part, reply);
     ASSERT_TRUE(seq);
-    EXPECT_EQ(seq->code, proto::kErrCompSequence);
+    EXPECT_EQ(seq->code, dev::proto::kErrCompSequence);
     EXPECT_EQ(seq->value, 96);
     // A complete table the device cannot apply (a pitch of 10 nm) is refused whole.
-    proto::Comp2dUploadRequest bad;
+    dev::proto::Comp2dUploadRequest bad;
     bad.columns = 2;
     bad.rows = 2;
     bad.pitchX = 10;
@@ -196,7 +196,7 @@ TEST_F(ExampleStage, RefusesAPartOutOfOrderAndAnEnableWithoutATable)
     bad.nodes.assign(4, {});
     const auto invalid = m.compensation2d().upload(bad, reply);
     ASSERT_TRUE(invalid);
-    EXPECT_EQ(invalid->code, proto::kErrCompInvalid);
+    EXPECT_EQ(invalid->code, dev::proto::kErrCompInvalid);
     EXPECT_FALSE(m.compensation2d().table());
 }
 
@@ -208,12 +208,12 @@ TEST_F(ExampleStage, OnlyASavedTableSurvivesAPowerCycle)
     t.correctionXUm = {1, 2, 3, 4};
     t.correctionYUm = {0, 0, 0, 0};
     upload(m, t);
-    enable2d(m, proto::Comp2dEnableOn);
-    sim::SimMachine unsaved(stageWithExampleErrors(), m.compensation().flash());
+    enable2d(m, dev::proto::Comp2dEnableOn);
+    dev::sim::SimMachine unsaved(stageWithExampleErrors(), m.compensation().flash());
     EXPECT_FALSE(unsaved.compensation2d().table());
-    const auto kept = enable2d(m, proto::Comp2dEnableOn | proto::Comp2dEnableSave);
-    EXPECT_TRUE(kept.state & proto::Comp2dSaved);
-    sim::SimMachine saved(stageWithExampleErrors(), m.compensation().flash());
+    const auto kept = enable2d(m, dev::proto::Comp2dEnableOn | dev::proto::Comp2dEnableSave);
+    EXPECT_TRUE(kept.state & dev::proto::Comp2dSaved);
+    dev::sim::SimMachine saved(stageWithExampleErrors(), m.compensation().flash());
     ASSERT_TRUE(saved.compensation2d().table());
     EXPECT_TRUE(saved.compensation2d().enabled());
     EXPECT_EQ(saved.compensation2d().table()->correctionXUm, t.correctionXUm);
@@ -221,7 +221,7 @@ TEST_F(ExampleStage, OnlyASavedTableSurvivesAPowerCycle)
 
 TEST(Comp2dCodec, RoundTripsAndRefusesWhatDoesNotFit)
 {
-    proto::Comp2dUploadRequest r;
+    dev::proto::Comp2dUploadRequest r;
     r.columns = 3;
     r.rows = 2;
     r.originX = -5;
@@ -230,25 +230,25 @@ TEST(Comp2dCodec, RoundTripsAndRefusesWhatDoesNotFit)
     r.pitchY = nm(2.5);
     r.first = 4;
     r.nodes = {{1, -2}, {300000, -400000}};
-    const auto bytes = proto::encode(r);
+    const auto bytes = dev::proto::encode(r);
     EXPECT_EQ(bytes.size(), 21u + 16u);
-    const auto back = proto::decodeComp2dUploadRequest(bytes);
+    const auto back = dev::proto::decodeComp2dUploadRequest(bytes);
     ASSERT_TRUE(back);
     EXPECT_EQ(back->nodes, r.nodes);
     EXPECT_EQ(back->pitchY, r.pitchY);
     auto shortBytes = bytes;
     shortBytes.pop_back();
-    EXPECT_FALSE(proto::decodeComp2dUploadRequest(shortBytes));
+    EXPECT_FALSE(dev::proto::decodeComp2dUploadRequest(shortBytes));
     auto longBytes = bytes;
     longBytes.push_back(0);
-    EXPECT_FALSE(proto::decodeComp2dUploadRequest(longBytes));
-    EXPECT_FALSE(proto::decodeComp2dEnableRequest({0x08}));
-    EXPECT_FALSE(proto::decodeComp2dEnableRequest({}));
-    EXPECT_TRUE(proto::decodeComp2dEnableRequest({0x07}));
-    EXPECT_FALSE(proto::decodeComp2dEnableReply({0x10, 0, 0}));
-    EXPECT_FALSE(proto::decodeComp2dUploadReply({1, 0, 2}));
-    EXPECT_STREQ(proto::compensation2dTypeName(0x1E), "COMP2D_UPLOAD");
-    EXPECT_EQ(proto::compensation2dTypeName(0x1D), nullptr);
+    EXPECT_FALSE(dev::proto::decodeComp2dUploadRequest(longBytes));
+    EXPECT_FALSE(dev::proto::decodeComp2dEnableRequest({0x08}));
+    EXPECT_FALSE(dev::proto::decodeComp2dEnableRequest({}));
+    EXPECT_TRUE(dev::proto::decodeComp2dEnableRequest({0x07}));
+    EXPECT_FALSE(dev::proto::decodeComp2dEnableReply({0x10, 0, 0}));
+    EXPECT_FALSE(dev::proto::decodeComp2dUploadReply({1, 0, 2}));
+    EXPECT_STREQ(dev::proto::compensation2dTypeName(0x1E), "COMP2D_UPLOAD");
+    EXPECT_EQ(dev::proto::compensation2dTypeName(0x1D), nullptr);
 }
 
 } // namespace

@@ -14,7 +14,7 @@
 #include <fstream>
 #include <sstream>
 
-using namespace accuracyfiles;
+using namespace dev::files::accuracy;
 using namespace motion::metrology;
 
 namespace {
@@ -66,7 +66,7 @@ std::map<std::string, std::string> derived()
 TEST(GridFiles, TheStageErrorExampleIsTheFileOfTheDocs)
 {
     const auto r = stageErrorsFromJson(readExample("stage-example.stage-errors.json"), "stage-example.stage-errors.json");
-    ASSERT_TRUE(r.errors) << msg::debugFormat(r.problems);
+    ASSERT_TRUE(r.errors) << motion::msg::debugFormat(r.problems);
     EXPECT_EQ(r.errors->x.pitchPolyUm, (std::vector<double>{0, 0.5, -0.004}));
     EXPECT_EQ(r.errors->y.straightnessPolyUm, (std::vector<double>{0, 0, -0.003}));
     EXPECT_EQ(r.errors->squarenessUrad, 40);
@@ -80,7 +80,7 @@ TEST(GridFiles, TheStageErrorExampleIsTheFileOfTheDocs)
 TEST(GridFiles, AStageErrorFileLeavingMembersOutKeepsTheBuiltInStage)
 {
     const auto r = stageErrorsFromJson(R"({"schema": "benchpilot.stage-errors", "version": 1, "squareness_urad": -25})", "s.json");
-    ASSERT_TRUE(r.errors) << msg::debugFormat(r.problems);
+    ASSERT_TRUE(r.errors) << motion::msg::debugFormat(r.problems);
     EXPECT_EQ(r.errors->x.pitchPolyUm, builtInStageErrors().x.pitchPolyUm);
     EXPECT_EQ(r.errors->squarenessUrad, -25);
 }
@@ -94,7 +94,7 @@ TEST(GridFiles, AStageErrorFileWithEveryProblemAtOnceNamesLineAndColumn)
                              " \"backlash_um\": {\"x\": -1}}";
     const auto r = stageErrorsFromJson(text, "bad.stage-errors.json");
     EXPECT_FALSE(r.errors);
-    ASSERT_EQ(r.problems.size(), 5u) << msg::debugFormat(r.problems);
+    ASSERT_EQ(r.problems.size(), 5u) << motion::msg::debugFormat(r.problems);
     for (const auto& p : r.problems)
         EXPECT_EQ(p.file, "bad.stage-errors.json");
     EXPECT_EQ(r.problems[0].path, "x.pitch_poly_um[1]");
@@ -124,12 +124,12 @@ TEST(GridFiles, DerivedExamplesAreWhatTheWritersMake)
 TEST(GridFiles, TheExampleResultAndTableReadBackAsWritten)
 {
     const auto map = gridMapResultFromJson(readExample("stage-example.grid-map-result.json"), "stage-example.grid-map-result.json");
-    ASSERT_TRUE(map.file) << msg::debugFormat(map.problems);
+    ASSERT_TRUE(map.file) << motion::msg::debugFormat(map.problems);
     EXPECT_EQ(map.file->result.nodes.size(), 49u);
     ASSERT_TRUE(map.file->result.figures.maxReversalUm);
     EXPECT_NEAR(*map.file->result.figures.maxReversalUm, 2.5, 1e-9);  // √(1.5² + 2²)
     const auto table = compensation2DFromJson(readExample("stage-example.compensation-2d.json"), "stage-example.compensation-2d.json");
-    ASSERT_TRUE(table.file) << msg::debugFormat(table.problems);
+    ASSERT_TRUE(table.file) << motion::msg::debugFormat(table.problems);
     EXPECT_EQ(table.file->table.columns, 7);
     EXPECT_NEAR(table.file->table.pitchXMm, 10, 1e-12);
     // The table the example map gives is the example table.
@@ -148,7 +148,7 @@ TEST(GridFiles, AResultWhoseNodesLeaveTheGridIsRefusedAtTheNode)
     text.replace(at, node.size(), "\"x_mm\": 41,");
     const auto r = gridMapResultFromJson(text, "moved.json");
     EXPECT_FALSE(r.file);
-    ASSERT_EQ(r.problems.size(), 1u) << msg::debugFormat(r.problems);
+    ASSERT_EQ(r.problems.size(), 1u) << motion::msg::debugFormat(r.problems);
     EXPECT_EQ(r.problems[0].message.id, "grid.node_off_grid");
     EXPECT_EQ(r.problems[0].path, "nodes[2]");
     EXPECT_GT(r.problems[0].line, 1);
@@ -164,7 +164,7 @@ TEST(GridFiles, ATableFileWithEveryProblemAtOnce)
                              "  {\"x_mm\": 0.01, \"y_mm\": 5, \"correction_x_um\": 1, \"correction_y_um\": 2}]}";
     const auto r = compensation2DFromJson(text, "t.compensation-2d.json");
     EXPECT_FALSE(r.file);
-    ASSERT_EQ(r.problems.size(), 2u) << msg::debugFormat(r.problems);
+    ASSERT_EQ(r.problems.size(), 2u) << motion::msg::debugFormat(r.problems);
     EXPECT_EQ(r.problems[0].path, "grid.pitch_x_mm");
     EXPECT_EQ(r.problems[0].line, 2);
     EXPECT_EQ(r.problems[1].path, "nodes[1].correction_x_um");

@@ -26,8 +26,8 @@ TEST(GridCompensationCli, FitTwoDMakesTheExampleTableFromTheExampleMap)
                                     gridExample("stage-example.grid-map-result.json"), QStringLiteral("--out"), out});
     ASSERT_EQ(r.code, 0) << qPrintable(r.err);
     EXPECT_EQ(r.json().value(QStringLiteral("columns")).toInt(), 7);
-    const auto made = accuracyfiles::loadCompensation2DFile(out);
-    const auto example = accuracyfiles::loadCompensation2DFile(gridExample("stage-example.compensation-2d.json"));
+    const auto made = dev::files::accuracy::loadCompensation2DFile(out);
+    const auto example = dev::files::accuracy::loadCompensation2DFile(gridExample("stage-example.compensation-2d.json"));
     ASSERT_TRUE(made.file && example.file);
     EXPECT_EQ(made.file->table.correctionXUm, example.file->table.correctionXUm);
     EXPECT_EQ(made.file->table.correctionYUm, example.file->table.correctionYUm);

@@ -165,7 +165,7 @@ TEST(GridMap, RefusesEveryProblemAtOnce)
     in.exUm[4] = std::nan("");
     in.reverseExUm.assign(9, 0);
     const auto p = validate(in);
-    ASSERT_EQ(p.size(), 4u) << msg::debugFormat(p);
+    ASSERT_EQ(p.size(), 4u) << motion::msg::debugFormat(p);
     EXPECT_EQ(p[0].path, "x_mm[2]");
     EXPECT_EQ(p[0].message.id, "grid.positions_not_increasing");
     EXPECT_EQ(p[1].path, "ex_um[4]");
@@ -201,7 +201,7 @@ TEST(StageErrors, FollowTheFormulaOfTheFileWithBacklashAgainstTheApproach)
     s.squarenessUrad = std::nan("");
     s.backlashYUm = -1;
     const auto p = validate(s);
-    ASSERT_EQ(p.size(), 3u) << msg::debugFormat(p);
+    ASSERT_EQ(p.size(), 3u) << motion::msg::debugFormat(p);
     EXPECT_EQ(p[0].message.id, "stage_errors.too_many_coefficients");
     EXPECT_EQ(p[1].path, "squareness_urad");
     EXPECT_EQ(p[2].path, "backlash_um.y");
@@ -227,7 +227,7 @@ TEST(CompensationTable2D, InterpolatesBilinearlyAndHoldsTheEdge)
     t.columns = 50;
     t.pitchYMm = 0.01;
     const auto p = validate(t);
-    ASSERT_EQ(p.size(), 3u) << msg::debugFormat(p);
+    ASSERT_EQ(p.size(), 3u) << motion::msg::debugFormat(p);
     EXPECT_EQ(p[0].message.id, "compensation2d.nodes_out_of_range");
     EXPECT_EQ(p[1].path, "grid.pitch_y_mm");
     EXPECT_EQ(p[2].message.id, "compensation2d.node_count_wrong");

@@ -6,19 +6,19 @@
 
 #include <QCoreApplication>
 
-namespace words::areas {
+namespace ui::words::areas {
 namespace {
 
 class GridWords {
-    Q_DECLARE_TR_FUNCTIONS(words::GridWords)
+    Q_DECLARE_TR_FUNCTIONS(ui::words::GridWords)
 public:
-    static QString sentence(const msg::Message& m);
+    static QString sentence(const motion::msg::Message& m);
     static QString term(const std::string& id);
 };
 
-QString gridArg(const msg::Message& m, const char* name) { return words::arg(m, name); }
+QString gridArg(const motion::msg::Message& m, const char* name) { return ui::words::arg(m, name); }
 
-QString GridWords::sentence(const msg::Message& m)
+QString GridWords::sentence(const motion::msg::Message& m)
 {
     const std::string& id = m.id;
     if (id == "grid.too_few_nodes")
@@ -64,7 +64,7 @@ QString GridWords::term(const std::string& id)
 
 } // namespace
 
-QString grid(const msg::Message& m) { return GridWords::sentence(m); }
+QString grid(const motion::msg::Message& m) { return GridWords::sentence(m); }
 QString gridTerm(const std::string& id) { return GridWords::term(id); }
 
-} // namespace words::areas
+} // namespace ui::words::areas

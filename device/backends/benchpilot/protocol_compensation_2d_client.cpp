@@ -11,7 +11,7 @@ using motion::metrology::CompensationTable2D;
 
 namespace {
 
-RequestError invalid2d(const msg::Message& why)
+RequestError invalid2d(const motion::msg::Message& why)
 {
     RequestError e;
     e.kind = RequestError::Kind::Invalid;
@@ -22,13 +22,13 @@ RequestError invalid2d(const msg::Message& why)
 std::int32_t nmOfMm(double mm) { return static_cast<std::int32_t>(std::llround(mm * 1e6)); }
 std::int32_t nmOfUm(double um) { return static_cast<std::int32_t>(std::llround(um * 1e3)); }
 
-Compensation2dState stateOf(const proto::Comp2dEnableReply& r)
+Compensation2dState stateOf(const dev::proto::Comp2dEnableReply& r)
 {
     Compensation2dState s;
-    s.installed = r.state & proto::Comp2dInstalled;
-    s.enabled = r.state & proto::Comp2dEnabled;
-    s.applied = r.state & proto::Comp2dApplied;
-    s.saved = r.state & proto::Comp2dSaved;
+    s.installed = r.state & dev::proto::Comp2dInstalled;
+    s.enabled = r.state & dev::proto::Comp2dEnabled;
+    s.applied = r.state & dev::proto::Comp2dApplied;
+    s.saved = r.state & dev::proto::Comp2dSaved;
     s.columns = r.columns;
     s.rows = r.rows;
     return s;
@@ -38,8 +38,8 @@ Compensation2dState stateOf(const proto::Comp2dEnableReply& r)
 
 /// An upload in progress: the parts still to send.
 struct ProtocolCompensation2dClient::Upload {
-    proto::Comp2dUploadRequest header;
-    std::vector<proto::Comp2dNode> nodes;
+    dev::proto::Comp2dUploadRequest header;
+    std::vector<dev::proto::Comp2dNode> nodes;
     std::size_t next = 0;
     Callback done;
     Progress progress;
@@ -52,7 +52,7 @@ ProtocolCompensation2dClient::ProtocolCompensation2dClient(BenchPilotClient* cli
 
 bool ProtocolCompensation2dClient::available() const
 {
-    return m_client && m_client->hasProtocolCapability(proto::CapCompensation2d);
+    return m_client && m_client->hasProtocolCapability(dev::proto::CapCompensation2d);
 }
 
 bool ProtocolCompensation2dClient::check(const std::function<void(const std::optional<RequestError>&)>& refuse) const
@@ -60,7 +60,7 @@ bool ProtocolCompensation2dClient::check(const std::function<void(const std::opt
     if (available())
         return true;
     if (refuse)
-        refuse(invalid2d(msg::make("compensation2d.not_supported")));
+        refuse(invalid2d(motion::msg::make("compensation2d.not_supported")));
     return false;
 }
 
@@ -71,13 +71,13 @@ void ProtocolCompensation2dClient::upload(const CompensationTable2D& table, Call
     for (const auto& p : motion::metrology::validate(table))
         if (p.isError()) {
             if (done)
-                done(invalid2d(msg::make("compensation.model_invalid", {msg::verbatim("field", p.path), msg::nested("detail", p.message)})));
+                done(invalid2d(motion::msg::make("compensation.model_invalid", {motion::msg::verbatim("field", p.path), motion::msg::nested("detail", p.message)})));
             return;
         }
     auto u = std::make_shared<Upload>();
     u->done = std::move(done);
     u->progress = std::move(progress);
-    proto::Comp2dUploadRequest& h = u->header;
+    dev::proto::Comp2dUploadRequest& h = u->header;
     h.columns = static_cast<std::uint8_t>(table.columns);
     h.rows = static_cast<std::uint8_t>(table.rows);
     h.originX = nmOfMm(table.originXMm);
@@ -91,15 +91,15 @@ void ProtocolCompensation2dClient::upload(const CompensationTable2D& table, Call
 
 void ProtocolCompensation2dClient::sendPart(std::shared_ptr<Upload> u)
 {
-    proto::Comp2dUploadRequest r = u->header;
+    dev::proto::Comp2dUploadRequest r = u->header;
     r.first = static_cast<std::uint16_t>(u->next);
-    const std::size_t count = std::min<std::size_t>(proto::kMaxComp2dNodesPerFrame, u->nodes.size() - u->next);
+    const std::size_t count = std::min<std::size_t>(dev::proto::kMaxComp2dNodesPerFrame, u->nodes.size() - u->next);
     r.nodes.assign(u->nodes.begin() + static_cast<std::ptrdiff_t>(u->next),
                    u->nodes.begin() + static_cast<std::ptrdiff_t>(u->next + count));
     const QPointer<ProtocolCompensation2dClient> self(this);
     m_client->request(
-        proto::kComp2dUpload, proto::encode(r),
-        [self, u](const std::optional<RequestError>& e, const proto::Bytes& payload) {
+        dev::proto::kComp2dUpload, dev::proto::encode(r),
+        [self, u](const std::optional<RequestError>& e, const dev::proto::Bytes& payload) {
             if (!self)
                 return;
             if (e) {
@@ -107,10 +107,10 @@ void ProtocolCompensation2dClient::sendPart(std::shared_ptr<Upload> u)
                     u->done(e);
                 return;
             }
-            const auto reply = proto::decodeComp2dUploadReply(payload);
+            const auto reply = dev::proto::decodeComp2dUploadReply(payload);
             if (!reply) {
                 if (u->done)
-                    u->done(invalid2d(msg::make("compensation2d.upload_unreadable")));
+                    u->done(invalid2d(motion::msg::make("compensation2d.upload_unreadable")));
                 return;
             }
             u->next = reply->received;
@@ -123,7 +123,7 @@ void ProtocolCompensation2dClient::sendPart(std::shared_ptr<Upload> u)
             }
             if (u->next >= u->nodes.size()) {
                 if (u->done)
-                    u->done(invalid2d(msg::make("compensation.not_installed")));
+                    u->done(invalid2d(motion::msg::make("compensation.not_installed")));
                 return;
             }
             self->sendPart(u);
@@ -134,15 +134,15 @@ void ProtocolCompensation2dClient::sendPart(std::shared_ptr<Upload> u)
 void ProtocolCompensation2dClient::sendEnable(std::uint8_t flags, const char* what, StateDone done)
 {
     m_client->request(
-        proto::kComp2dEnable, proto::encode(proto::Comp2dEnableRequest{flags}),
-        [done](const std::optional<RequestError>& e, const proto::Bytes& payload) {
+        dev::proto::kComp2dEnable, dev::proto::encode(dev::proto::Comp2dEnableRequest{flags}),
+        [done](const std::optional<RequestError>& e, const dev::proto::Bytes& payload) {
             if (!done)
                 return;
             if (e)
                 return done(e, {});
-            const auto r = proto::decodeComp2dEnableReply(payload);
+            const auto r = dev::proto::decodeComp2dEnableReply(payload);
             if (!r)
-                return done(invalid2d(msg::make("compensation2d.state_unreadable")), {});
+                return done(invalid2d(motion::msg::make("compensation2d.state_unreadable")), {});
             done(std::nullopt, stateOf(*r));
         },
         what);
@@ -155,7 +155,7 @@ void ProtocolCompensation2dClient::setEnabled(bool enabled, bool keepForPowerUp,
                 done(e, {});
         }))
         return;
-    const auto flags = static_cast<std::uint8_t>((enabled ? proto::Comp2dEnableOn : 0) | (keepForPowerUp ? proto::Comp2dEnableSave : 0));
+    const auto flags = static_cast<std::uint8_t>((enabled ? dev::proto::Comp2dEnableOn : 0) | (keepForPowerUp ? dev::proto::Comp2dEnableSave : 0));
     sendEnable(flags, enabled ? "compensation2d.request.enable" : "compensation2d.request.disable", std::move(done));
 }
 
@@ -166,7 +166,7 @@ void ProtocolCompensation2dClient::state(StateDone done)
                 done(e, {});
         }))
         return;
-    sendEnable(proto::Comp2dEnableQuery, "compensation2d.request.state", std::move(done));
+    sendEnable(dev::proto::Comp2dEnableQuery, "compensation2d.request.state", std::move(done));
 }
 
 } // namespace dev

@@ -43,34 +43,34 @@ CompensationTable2D::Correction CompensationTable2D::correctionAt(double xMm, do
     return {bilinear(correctionXUm, c, columns), bilinear(correctionYUm, c, columns)};
 }
 
-msg::Problems validate(const CompensationTable2D& t)
+motion::msg::Problems validate(const CompensationTable2D& t)
 {
-    msg::Problems out;
+    motion::msg::Problems out;
     auto nodes = [&](int n, const char* path) {
         if (n < kMinTable2DNodes || n > kMaxTable2DNodes)
-            out.push_back(msg::error(path, msg::make("compensation2d.nodes_out_of_range",
-                                                     {msg::integer("count", n), msg::integer("min", kMinTable2DNodes),
-                                                      msg::integer("max", kMaxTable2DNodes)})));
+            out.push_back(motion::msg::error(path, motion::msg::make("compensation2d.nodes_out_of_range",
+                                                     {motion::msg::integer("count", n), motion::msg::integer("min", kMinTable2DNodes),
+                                                      motion::msg::integer("max", kMaxTable2DNodes)})));
     };
     nodes(t.columns, "grid.columns");
     nodes(t.rows, "grid.rows");
-    checkRange(out, "grid.origin_x_mm", t.originXMm, -10000, 10000, msg::Unit::Mm);
-    checkRange(out, "grid.origin_y_mm", t.originYMm, -10000, 10000, msg::Unit::Mm);
-    checkRange(out, "grid.pitch_x_mm", t.pitchXMm, kMinTable2DPitchMm, 10000, msg::Unit::Mm);
-    checkRange(out, "grid.pitch_y_mm", t.pitchYMm, kMinTable2DPitchMm, 10000, msg::Unit::Mm);
+    checkRange(out, "grid.origin_x_mm", t.originXMm, -10000, 10000, motion::msg::Unit::Mm);
+    checkRange(out, "grid.origin_y_mm", t.originYMm, -10000, 10000, motion::msg::Unit::Mm);
+    checkRange(out, "grid.pitch_x_mm", t.pitchXMm, kMinTable2DPitchMm, 10000, motion::msg::Unit::Mm);
+    checkRange(out, "grid.pitch_y_mm", t.pitchYMm, kMinTable2DPitchMm, 10000, motion::msg::Unit::Mm);
     const long long expected = static_cast<long long>(std::max(0, t.columns)) * std::max(0, t.rows);
     if (static_cast<long long>(t.correctionXUm.size()) != expected || t.correctionYUm.size() != t.correctionXUm.size()) {
-        out.push_back(msg::error("nodes", msg::make("compensation2d.node_count_wrong",
-                                                    {msg::integer("count", static_cast<long long>(t.correctionXUm.size())),
-                                                     msg::integer("expected", expected)})));
+        out.push_back(motion::msg::error("nodes", motion::msg::make("compensation2d.node_count_wrong",
+                                                    {motion::msg::integer("count", static_cast<long long>(t.correctionXUm.size())),
+                                                     motion::msg::integer("expected", expected)})));
         return out;
     }
     for (std::size_t k = 0; k < t.correctionXUm.size(); ++k) {
         const std::string node = indexPath("nodes", k);
         checkRange(out, fieldPath(node, "correction_x_um"), t.correctionXUm[k], -kMaxTable2DCorrectionUm,
-                   kMaxTable2DCorrectionUm, msg::Unit::Um);
+                   kMaxTable2DCorrectionUm, motion::msg::Unit::Um);
         checkRange(out, fieldPath(node, "correction_y_um"), t.correctionYUm[k], -kMaxTable2DCorrectionUm,
-                   kMaxTable2DCorrectionUm, msg::Unit::Um);
+                   kMaxTable2DCorrectionUm, motion::msg::Unit::Um);
     }
     return out;
 }

@@ -45,7 +45,7 @@ constexpr double kMaxTable2DCorrectionUm = 10000;
 /// Every problem at once, at the file's paths ("grid.columns", "nodes[12].correction_x_um").
 /// Messages: compensation2d.nodes_out_of_range, compensation2d.node_count_wrong,
 /// accuracy.value_below, accuracy.value_above, accuracy.value_not_finite.
-msg::Problems validate(const CompensationTable2D& table);
+motion::msg::Problems validate(const CompensationTable2D& table);
 
 /// The table that cancels a map's errors (GridMapResult's nodes, placement removed),
 /// on the map's own grid. nullopt when the map's grid is not a regular one a device

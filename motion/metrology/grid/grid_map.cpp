@@ -86,25 +86,25 @@ GridPlacement fitPlacement(const std::vector<double>& xMm, const std::vector<dou
     return p;
 }
 
-msg::Problems validate(const GridMapInput& in)
+motion::msg::Problems validate(const GridMapInput& in)
 {
-    msg::Problems out;
+    motion::msg::Problems out;
     constexpr std::size_t kMin = 3;
     if (in.columns() < kMin || in.rows() < kMin) {
-        out.push_back(msg::error("nodes", msg::make("grid.too_few_nodes",
-                                                    {msg::integer("columns", static_cast<long long>(in.columns())),
-                                                     msg::integer("rows", static_cast<long long>(in.rows())),
-                                                     msg::integer("min", static_cast<long long>(kMin))})));
+        out.push_back(motion::msg::error("nodes", motion::msg::make("grid.too_few_nodes",
+                                                    {motion::msg::integer("columns", static_cast<long long>(in.columns())),
+                                                     motion::msg::integer("rows", static_cast<long long>(in.rows())),
+                                                     motion::msg::integer("min", static_cast<long long>(kMin))})));
         return out;
     }
     auto increasing = [&](const std::vector<double>& v, const char* path) {
         for (std::size_t k = 0; k < v.size(); ++k) {
             if (!std::isfinite(v[k])) {
-                out.push_back(msg::error(indexPath(path, k), msg::make("accuracy.value_not_finite")));
+                out.push_back(motion::msg::error(indexPath(path, k), motion::msg::make("accuracy.value_not_finite")));
             } else if (k > 0 && !(v[k] > v[k - 1])) {
-                out.push_back(msg::error(indexPath(path, k), msg::make("grid.positions_not_increasing",
-                                                                        {msg::real("value", v[k], msg::Unit::Mm),
-                                                                         msg::real("previous", v[k - 1], msg::Unit::Mm)})));
+                out.push_back(motion::msg::error(indexPath(path, k), motion::msg::make("grid.positions_not_increasing",
+                                                                        {motion::msg::real("value", v[k], motion::msg::Unit::Mm),
+                                                                         motion::msg::real("previous", v[k - 1], motion::msg::Unit::Mm)})));
             }
         }
     };
@@ -115,14 +115,14 @@ msg::Problems validate(const GridMapInput& in)
         if (optional && v.empty())
             return;
         if (v.size() != n) {
-            out.push_back(msg::error(path, msg::make("grid.node_count_wrong",
-                                                     {msg::integer("count", static_cast<long long>(v.size())),
-                                                      msg::integer("expected", static_cast<long long>(n))})));
+            out.push_back(motion::msg::error(path, motion::msg::make("grid.node_count_wrong",
+                                                     {motion::msg::integer("count", static_cast<long long>(v.size())),
+                                                      motion::msg::integer("expected", static_cast<long long>(n))})));
             return;
         }
         for (std::size_t k = 0; k < n; ++k)
             if (!std::isfinite(v[k]))
-                out.push_back(msg::error(indexPath(path, k), msg::make("accuracy.value_not_finite")));
+                out.push_back(motion::msg::error(indexPath(path, k), motion::msg::make("accuracy.value_not_finite")));
     };
     complete(in.exUm, "ex_um", false);
     complete(in.eyUm, "ey_um", false);

@@ -83,7 +83,7 @@ struct GridMapResult {
 /// positions, finite errors, the reverse pass complete or absent. Messages:
 /// grid.too_few_nodes, grid.positions_not_increasing, grid.node_count_wrong,
 /// accuracy.value_not_finite.
-msg::Problems validate(const GridMapInput& input);
+motion::msg::Problems validate(const GridMapInput& input);
 
 /// The placement fitted out and the decomposition; nullopt when validate() finds an error.
 std::optional<GridMapResult> analyseGridMap(const GridMapInput& input);

@@ -30,17 +30,17 @@ double halfBacklashAgainst(std::optional<Direction> approach, double backlashUm)
     return *approach == Direction::Up ? -0.5 * backlashUm : 0.5 * backlashUm;
 }
 
-void checkStagePolynomial(msg::Problems& out, const std::string& path, const std::vector<double>& c, double travelMm)
+void checkStagePolynomial(motion::msg::Problems& out, const std::string& path, const std::vector<double>& c, double travelMm)
 {
     if (c.size() > kMaxStageErrorCoefficients) {
-        out.push_back(msg::error(path, msg::make("stage_errors.too_many_coefficients",
-                                                 {msg::integer("count", static_cast<long long>(c.size())),
-                                                  msg::integer("max", static_cast<long long>(kMaxStageErrorCoefficients))})));
+        out.push_back(motion::msg::error(path, motion::msg::make("stage_errors.too_many_coefficients",
+                                                 {motion::msg::integer("count", static_cast<long long>(c.size())),
+                                                  motion::msg::integer("max", static_cast<long long>(kMaxStageErrorCoefficients))})));
         return;
     }
     bool finite = true;
     for (std::size_t k = 0; k < c.size(); ++k)
-        finite = checkRange(out, indexPath(path, k), c[k], -kMaxStageErrorUm, kMaxStageErrorUm, msg::Unit::None) && finite;
+        finite = checkRange(out, indexPath(path, k), c[k], -kMaxStageErrorUm, kMaxStageErrorUm, motion::msg::Unit::None) && finite;
     if (!finite)
         return;
     // Checked at 101 points of the travel: a curve that leaves ±10 mm is a typo in a
@@ -49,10 +49,10 @@ void checkStagePolynomial(msg::Problems& out, const std::string& path, const std
         const double mm = travelMm * i / 100.0;
         const double v = polynomialUm(c, mm);
         if (std::abs(v) > kMaxStageErrorUm) {
-            out.push_back(msg::error(path, msg::make("stage_errors.curve_too_large",
-                                                     {msg::real("position", mm, msg::Unit::Mm),
-                                                      msg::real("value", v, msg::Unit::Um),
-                                                      msg::real("max", kMaxStageErrorUm, msg::Unit::Um)})));
+            out.push_back(motion::msg::error(path, motion::msg::make("stage_errors.curve_too_large",
+                                                     {motion::msg::real("position", mm, motion::msg::Unit::Mm),
+                                                      motion::msg::real("value", v, motion::msg::Unit::Um),
+                                                      motion::msg::real("max", kMaxStageErrorUm, motion::msg::Unit::Um)})));
             return;
         }
     }
@@ -71,16 +71,16 @@ ErrorVectorUm stageErrorUm(const StageErrors& e, double xMm, double yMm, std::op
     return v;
 }
 
-msg::Problems validate(const StageErrors& e, double travelMm)
+motion::msg::Problems validate(const StageErrors& e, double travelMm)
 {
-    msg::Problems out;
+    motion::msg::Problems out;
     checkStagePolynomial(out, "x.pitch_poly_um", e.x.pitchPolyUm, travelMm);
     checkStagePolynomial(out, "x.straightness_poly_um", e.x.straightnessPolyUm, travelMm);
     checkStagePolynomial(out, "y.pitch_poly_um", e.y.pitchPolyUm, travelMm);
     checkStagePolynomial(out, "y.straightness_poly_um", e.y.straightnessPolyUm, travelMm);
-    checkRange(out, "squareness_urad", e.squarenessUrad, -kMaxSquarenessUrad, kMaxSquarenessUrad, msg::Unit::None);
-    checkRange(out, "backlash_um.x", e.backlashXUm, 0, kMaxStageErrorUm, msg::Unit::Um);
-    checkRange(out, "backlash_um.y", e.backlashYUm, 0, kMaxStageErrorUm, msg::Unit::Um);
+    checkRange(out, "squareness_urad", e.squarenessUrad, -kMaxSquarenessUrad, kMaxSquarenessUrad, motion::msg::Unit::None);
+    checkRange(out, "backlash_um.x", e.backlashXUm, 0, kMaxStageErrorUm, motion::msg::Unit::Um);
+    checkRange(out, "backlash_um.y", e.backlashYUm, 0, kMaxStageErrorUm, motion::msg::Unit::Um);
     return out;
 }
 

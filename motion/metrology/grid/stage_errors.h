@@ -66,6 +66,6 @@ constexpr double kMaxSquarenessUrad = 100000;
 /// checked to stay within ±kMaxStageErrorUm. Messages: stage_errors.too_many_coefficients,
 /// accuracy.value_not_finite, accuracy.value_above, accuracy.value_below,
 /// stage_errors.curve_too_large.
-msg::Problems validate(const StageErrors& errors, double travelMm = 100);
+motion::msg::Problems validate(const StageErrors& errors, double travelMm = 100);
 
 } // namespace motion::metrology

@@ -11,18 +11,18 @@
 
 namespace {
 
-void checkProblemsSayWhere(const msg::Problems& problems, bool accepted)
+void checkProblemsSayWhere(const motion::msg::Problems& problems, bool accepted)
 {
-    for (const msg::Problem& p : problems)
+    for (const motion::msg::Problem& p : problems)
         if (p.file != "fuzz.json" || p.line < 1 || p.message.id.empty())
-            fuzzfiles::fail("a problem that does not say where or what: " + msg::debugFormat(problems));
+            fuzzfiles::fail("a problem that does not say where or what: " + motion::msg::debugFormat(problems));
     if (!accepted && problems.empty())
         fuzzfiles::fail("refused without a problem");
 }
 
 void checkStageErrors(std::string_view input)
 {
-    using namespace accuracyfiles;
+    using namespace dev::files::accuracy;
     const StageErrorsRead r = stageErrorsFromJson(input, "fuzz.json");
     checkProblemsSayWhere(r.problems, r.errors.has_value());
     if (!r.errors)
@@ -30,14 +30,14 @@ void checkStageErrors(std::string_view input)
     const std::string once = stageErrorsToJson(*r.errors);
     const StageErrorsRead again = stageErrorsFromJson(once, "again.json");
     if (!again.errors)
-        fuzzfiles::fail("written stage errors do not read back: " + msg::debugFormat(again.problems));
+        fuzzfiles::fail("written stage errors do not read back: " + motion::msg::debugFormat(again.problems));
     if (stageErrorsToJson(*again.errors) != once)
         fuzzfiles::fail("write → read → write changed the stage errors");
 }
 
 void checkGridMapResult(std::string_view input)
 {
-    using namespace accuracyfiles;
+    using namespace dev::files::accuracy;
     const GridMapResultRead r = gridMapResultFromJson(input, "fuzz.json");
     checkProblemsSayWhere(r.problems, r.file.has_value());
     if (!r.file)
@@ -45,7 +45,7 @@ void checkGridMapResult(std::string_view input)
     const std::string once = gridMapResultToJson(*r.file);
     const GridMapResultRead again = gridMapResultFromJson(once, "again.json");
     if (!again.file)
-        fuzzfiles::fail("a written map does not read back: " + msg::debugFormat(again.problems));
+        fuzzfiles::fail("a written map does not read back: " + motion::msg::debugFormat(again.problems));
     if (gridMapResultToJson(*again.file) != once)
         fuzzfiles::fail("write → read → write changed the map");
     (void)motion::metrology::compensationFromMap(r.file->result);
@@ -53,7 +53,7 @@ void checkGridMapResult(std::string_view input)
 
 void checkCompensation2D(std::string_view input)
 {
-    using namespace accuracyfiles;
+    using namespace dev::files::accuracy;
     const Compensation2DRead r = compensation2DFromJson(input, "fuzz.json");
     checkProblemsSayWhere(r.problems, r.file.has_value());
     if (!r.file)
@@ -61,7 +61,7 @@ void checkCompensation2D(std::string_view input)
     const std::string once = compensation2DToJson(*r.file);
     const Compensation2DRead again = compensation2DFromJson(once, "again.json");
     if (!again.file)
-        fuzzfiles::fail("a written table does not read back: " + msg::debugFormat(again.problems));
+        fuzzfiles::fail("a written table does not read back: " + motion::msg::debugFormat(again.problems));
     if (compensation2DToJson(*again.file) != once)
         fuzzfiles::fail("write → read → write changed the table");
     (void)compensation2DToCsv(r.file->table);

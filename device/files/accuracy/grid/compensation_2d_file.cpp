@@ -6,10 +6,10 @@
 #include <cmath>
 #include <cstdio>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
-using jsonio::ObjectReader;
-using jsonio::Value;
+using dev::files::json::ObjectReader;
+using dev::files::json::Value;
 using motion::metrology::CompensationTable2D;
 
 namespace {
@@ -20,7 +20,7 @@ constexpr double kTable2dOnGridMm = 1e-3;
 std::string compensation2DToJson(const Compensation2DFile& f)
 {
     const CompensationTable2D& t = f.table;
-    Value root = jsonio::schemaObject(kCompensation2DSchema, kCompensation2DVersion);
+    Value root = dev::files::json::schemaObject(kCompensation2DSchema, kCompensation2DVersion);
     Value g = Value::object();
     g.set("origin_x_mm", t.originXMm);
     g.set("origin_y_mm", t.originYMm);
@@ -43,20 +43,20 @@ std::string compensation2DToJson(const Compensation2DFile& f)
     root.set("nodes", nodes);
     if (!f.source.empty())
         root.set("source", f.source);
-    return jsonio::write(root);
+    return dev::files::json::write(root);
 }
 
 Compensation2DRead compensation2DFromJson(std::string_view text, std::string_view fileName)
 {
     Compensation2DRead out;
-    const jsonio::ParseResult parsed = jsonio::parse(text);
+    const dev::files::json::ParseResult parsed = dev::files::json::parse(text);
     if (!parsed) {
         out.problems.push_back(fromParseError(parsed.error, fileName));
         return out;
     }
     const Value& root = *parsed.value;
-    jsonio::Problems p;
-    if (!jsonio::checkSchema(root, kCompensation2DSchema, kCompensation2DVersion, p)) {
+    dev::files::json::Problems p;
+    if (!dev::files::json::checkSchema(root, kCompensation2DSchema, kCompensation2DVersion, p)) {
         addJsonProblems(p, fileName, out.problems);
         return out;
     }
@@ -85,7 +85,7 @@ Compensation2DRead compensation2DFromJson(std::string_view text, std::string_vie
     }
     if (const Value* list = o.get("nodes", Value::Type::Array, true))
         for (std::size_t k = 0; k < list->items().size(); ++k) {
-            ObjectReader no(list->items()[k], jsonio::childPath("nodes", k), p);
+            ObjectReader no(list->items()[k], dev::files::json::childPath("nodes", k), p);
             const auto x = no.number("x_mm", true, -kTable2dAny, kTable2dAny);
             const auto y = no.number("y_mm", true, -kTable2dAny, kTable2dAny);
             const auto cx = no.number("correction_x_um", true, -kTable2dAny, kTable2dAny);
@@ -101,10 +101,10 @@ Compensation2DRead compensation2DFromJson(std::string_view text, std::string_vie
                 const double gx = t.originXMm + t.pitchXMm * static_cast<double>(k % static_cast<std::size_t>(t.columns));
                 const double gy = t.originYMm + t.pitchYMm * static_cast<double>(k / static_cast<std::size_t>(t.columns));
                 if (std::abs(*x - gx) > kTable2dOnGridMm || std::abs(*y - gy) > kTable2dOnGridMm)
-                    p.add(list->items()[k], jsonio::childPath("nodes", k),
-                          msg::make("grid.node_off_grid", {msg::real("x", *x, msg::Unit::Mm), msg::real("y", *y, msg::Unit::Mm),
-                                                           msg::real("expected_x", gx, msg::Unit::Mm),
-                                                           msg::real("expected_y", gy, msg::Unit::Mm)}));
+                    p.add(list->items()[k], dev::files::json::childPath("nodes", k),
+                          motion::msg::make("grid.node_off_grid", {motion::msg::real("x", *x, motion::msg::Unit::Mm), motion::msg::real("y", *y, motion::msg::Unit::Mm),
+                                                           motion::msg::real("expected_x", gx, motion::msg::Unit::Mm),
+                                                           motion::msg::real("expected_y", gy, motion::msg::Unit::Mm)}));
             }
         }
     if (auto s = o.string("source", false))
@@ -127,9 +127,9 @@ Compensation2DRead loadCompensation2DFile(const QString& path)
     return text ? compensation2DFromJson(*text, name) : out;
 }
 
-bool saveCompensation2DFile(const QString& path, const Compensation2DFile& f, msg::Message* error)
+bool saveCompensation2DFile(const QString& path, const Compensation2DFile& f, motion::msg::Message* error)
 {
-    return files::writeAtomically(path, compensation2DToJson(f), error);
+    return dev::files::writeAtomically(path, compensation2DToJson(f), error);
 }
 
 std::string compensation2DToCsv(const CompensationTable2D& t)
@@ -146,4 +146,4 @@ std::string compensation2DToCsv(const CompensationTable2D& t)
     return out;
 }
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

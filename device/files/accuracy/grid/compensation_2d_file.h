@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
 constexpr const char* kCompensation2DSchema = "benchpilot.compensation-2d";
 constexpr int kCompensation2DVersion = 1;
@@ -26,14 +26,14 @@ std::string compensation2DToJson(const Compensation2DFile& f);
 
 struct Compensation2DRead {
     std::optional<Compensation2DFile> file;
-    msg::Problems problems;
+    motion::msg::Problems problems;
 };
 /// Plain C++: what the fuzzer drives.
 Compensation2DRead compensation2DFromJson(std::string_view text, std::string_view fileName);
 Compensation2DRead loadCompensation2DFile(const QString& path);
-bool saveCompensation2DFile(const QString& path, const Compensation2DFile& f, msg::Message* error);
+bool saveCompensation2DFile(const QString& path, const Compensation2DFile& f, motion::msg::Message* error);
 
 /// `x_mm,y_mm,correction_x_um,correction_y_um`, a row per node, row by row.
 std::string compensation2DToCsv(const motion::metrology::CompensationTable2D& t);
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
-using jsonio::ObjectReader;
-using jsonio::Value;
+using dev::files::json::ObjectReader;
+using dev::files::json::Value;
 using motion::metrology::GridMapNode;
 
 namespace {
@@ -31,7 +31,7 @@ std::optional<double> gridNumberOrNull(ObjectReader& o, std::string_view key)
 std::string gridMapResultToJson(const GridMapResultFile& f)
 {
     const auto& r = f.result;
-    Value root = jsonio::schemaObject(kGridMapResultSchema, kGridMapResultVersion);
+    Value root = dev::files::json::schemaObject(kGridMapResultSchema, kGridMapResultVersion);
     root.set("standard", "ISO 230-1 least-squares reference lines");
     Value pl = Value::object();
     pl.set("offset_x_um", r.placement.offsetXUm);
@@ -65,20 +65,20 @@ std::string gridMapResultToJson(const GridMapResultFile& f)
     root.set("nodes", nodes);
     if (!f.source.empty())
         root.set("source", f.source);
-    return jsonio::write(root);
+    return dev::files::json::write(root);
 }
 
 GridMapResultRead gridMapResultFromJson(std::string_view text, std::string_view fileName)
 {
     GridMapResultRead out;
-    const jsonio::ParseResult parsed = jsonio::parse(text);
+    const dev::files::json::ParseResult parsed = dev::files::json::parse(text);
     if (!parsed) {
         out.problems.push_back(fromParseError(parsed.error, fileName));
         return out;
     }
     const Value& root = *parsed.value;
-    jsonio::Problems p;
-    if (!jsonio::checkSchema(root, kGridMapResultSchema, kGridMapResultVersion, p)) {
+    dev::files::json::Problems p;
+    if (!dev::files::json::checkSchema(root, kGridMapResultSchema, kGridMapResultVersion, p)) {
         addJsonProblems(p, fileName, out.problems);
         return out;
     }
@@ -111,7 +111,7 @@ GridMapResultRead gridMapResultFromJson(std::string_view text, std::string_view 
     std::vector<const Value*> nodeValues;
     if (const Value* list = o.get("nodes", Value::Type::Array, true))
         for (std::size_t i = 0; i < list->items().size(); ++i) {
-            ObjectReader no(list->items()[i], jsonio::childPath("nodes", i), p);
+            ObjectReader no(list->items()[i], dev::files::json::childPath("nodes", i), p);
             GridMapNode n;
             const auto x = no.number("x_mm", true, -kGridAny, kGridAny);
             const auto y = no.number("y_mm", true, -kGridAny, kGridAny);
@@ -145,16 +145,16 @@ GridMapResultRead gridMapResultFromJson(std::string_view text, std::string_view 
     const std::size_t n = r.nodes.size();
     if (nx < 2 || n / nx < 2) {
         out.problems.emplace_back(std::string(fileName), root.position().line, root.position().column, "nodes",
-                                  msg::make("grid.too_few_nodes", {msg::integer("columns", static_cast<long long>(nx)),
-                                                                   msg::integer("rows", static_cast<long long>(nx ? n / nx : 0)),
-                                                                   msg::integer("min", 2)}));
+                                  motion::msg::make("grid.too_few_nodes", {motion::msg::integer("columns", static_cast<long long>(nx)),
+                                                                   motion::msg::integer("rows", static_cast<long long>(nx ? n / nx : 0)),
+                                                                   motion::msg::integer("min", 2)}));
         return out;
     }
     if (n % nx != 0) {
         const auto pos = nodeValues.back()->position();
-        out.problems.emplace_back(std::string(fileName), pos.line, pos.column, jsonio::childPath("nodes", n - 1),
-                                  msg::make("grid.node_count_wrong", {msg::integer("count", static_cast<long long>(n)),
-                                                                      msg::integer("expected", static_cast<long long>((n / nx + 1) * nx))}));
+        out.problems.emplace_back(std::string(fileName), pos.line, pos.column, dev::files::json::childPath("nodes", n - 1),
+                                  motion::msg::make("grid.node_count_wrong", {motion::msg::integer("count", static_cast<long long>(n)),
+                                                                      motion::msg::integer("expected", static_cast<long long>((n / nx + 1) * nx))}));
         return out;
     }
     const double x0 = r.nodes.front().xMm, y0 = r.nodes.front().yMm;
@@ -165,11 +165,11 @@ GridMapResultRead gridMapResultFromJson(std::string_view text, std::string_view 
         if (!(px > 0) || !(py > 0) || std::abs(r.nodes[k].xMm - gx) > kGridOnGridMm
             || std::abs(r.nodes[k].yMm - gy) > kGridOnGridMm) {
             const auto pos = nodeValues[k]->position();
-            out.problems.emplace_back(std::string(fileName), pos.line, pos.column, jsonio::childPath("nodes", k),
-                                      msg::make("grid.node_off_grid", {msg::real("x", r.nodes[k].xMm, msg::Unit::Mm),
-                                                                       msg::real("y", r.nodes[k].yMm, msg::Unit::Mm),
-                                                                       msg::real("expected_x", gx, msg::Unit::Mm),
-                                                                       msg::real("expected_y", gy, msg::Unit::Mm)}));
+            out.problems.emplace_back(std::string(fileName), pos.line, pos.column, dev::files::json::childPath("nodes", k),
+                                      motion::msg::make("grid.node_off_grid", {motion::msg::real("x", r.nodes[k].xMm, motion::msg::Unit::Mm),
+                                                                       motion::msg::real("y", r.nodes[k].yMm, motion::msg::Unit::Mm),
+                                                                       motion::msg::real("expected_x", gx, motion::msg::Unit::Mm),
+                                                                       motion::msg::real("expected_y", gy, motion::msg::Unit::Mm)}));
             return out;
         }
     }
@@ -185,9 +185,9 @@ GridMapResultRead loadGridMapResultFile(const QString& path)
     return text ? gridMapResultFromJson(*text, name) : out;
 }
 
-bool saveGridMapResultFile(const QString& path, const GridMapResultFile& f, msg::Message* error)
+bool saveGridMapResultFile(const QString& path, const GridMapResultFile& f, motion::msg::Message* error)
 {
-    return files::writeAtomically(path, gridMapResultToJson(f), error);
+    return dev::files::writeAtomically(path, gridMapResultToJson(f), error);
 }
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

@@ -13,7 +13,7 @@
 #include <string>
 #include <string_view>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
 constexpr const char* kGridMapResultSchema = "benchpilot.grid-map-result";
 constexpr int kGridMapResultVersion = 1;
@@ -27,12 +27,12 @@ std::string gridMapResultToJson(const GridMapResultFile& f);
 
 struct GridMapResultRead {
     std::optional<GridMapResultFile> file;
-    msg::Problems problems;
+    motion::msg::Problems problems;
 };
 /// Plain C++: what the fuzzer drives. The nodes must lie on one regular grid, row
 /// by row (grid.node_off_grid names the first that does not).
 GridMapResultRead gridMapResultFromJson(std::string_view text, std::string_view fileName);
 GridMapResultRead loadGridMapResultFile(const QString& path);
-bool saveGridMapResultFile(const QString& path, const GridMapResultFile& f, msg::Message* error);
+bool saveGridMapResultFile(const QString& path, const GridMapResultFile& f, motion::msg::Message* error);
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

@@ -3,10 +3,10 @@
 #include "device/files/accuracy/load_text.h"
 #include "device/files/text_file.h"
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
-using jsonio::ObjectReader;
-using jsonio::Value;
+using dev::files::json::ObjectReader;
+using dev::files::json::Value;
 using motion::metrology::StageAxisErrors;
 using motion::metrology::StageErrors;
 
@@ -46,7 +46,7 @@ std::optional<std::vector<double>> numberList(ObjectReader& o, std::string_view 
         if (k.isNumber()) {
             out.push_back(k.asNumber());
         } else {
-            o.problems().add(k, jsonio::childPath(o.pathOf(key), i), jsonio::wrongType(Value::Type::Number, k.type()));
+            o.problems().add(k, dev::files::json::childPath(o.pathOf(key), i), dev::files::json::wrongType(Value::Type::Number, k.type()));
             ok = false;
         }
     }
@@ -57,7 +57,7 @@ std::optional<std::vector<double>> numberList(ObjectReader& o, std::string_view 
 
 std::string stageErrorsToJson(const StageErrors& e)
 {
-    Value root = jsonio::schemaObject(kStageErrorsSchema, kStageErrorsVersion);
+    Value root = dev::files::json::schemaObject(kStageErrorsSchema, kStageErrorsVersion);
     auto axis = [](const StageAxisErrors& a) {
         Value v = Value::object();
         v.set("pitch_poly_um", stageNumbers(a.pitchPolyUm));
@@ -71,20 +71,20 @@ std::string stageErrorsToJson(const StageErrors& e)
     b.set("x", e.backlashXUm);
     b.set("y", e.backlashYUm);
     root.set("backlash_um", b);
-    return jsonio::write(root);
+    return dev::files::json::write(root);
 }
 
 StageErrorsRead stageErrorsFromJson(std::string_view text, std::string_view fileName)
 {
     StageErrorsRead out;
-    const jsonio::ParseResult parsed = jsonio::parse(text);
+    const dev::files::json::ParseResult parsed = dev::files::json::parse(text);
     if (!parsed) {
         out.problems.push_back(fromParseError(parsed.error, fileName));
         return out;
     }
     const Value& root = *parsed.value;
-    jsonio::Problems p;
-    if (!jsonio::checkSchema(root, kStageErrorsSchema, kStageErrorsVersion, p)) {
+    dev::files::json::Problems p;
+    if (!dev::files::json::checkSchema(root, kStageErrorsSchema, kStageErrorsVersion, p)) {
         addJsonProblems(p, fileName, out.problems);
         return out;
     }
@@ -121,9 +121,9 @@ StageErrorsRead loadStageErrorsFile(const QString& path)
     return text ? stageErrorsFromJson(*text, name) : out;
 }
 
-bool saveStageErrorsFile(const QString& path, const StageErrors& e, msg::Message* error)
+bool saveStageErrorsFile(const QString& path, const StageErrors& e, motion::msg::Message* error)
 {
-    return files::writeAtomically(path, stageErrorsToJson(e), error);
+    return dev::files::writeAtomically(path, stageErrorsToJson(e), error);
 }
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

@@ -13,24 +13,24 @@
 #include <string>
 #include <string_view>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
 constexpr const char* kStageErrorsSchema = "benchpilot.stage-errors";
 constexpr int kStageErrorsVersion = 1;
 
 struct StageErrorsRead {
     std::optional<motion::metrology::StageErrors> errors;
-    msg::Problems problems;
+    motion::msg::Problems problems;
 };
 
 std::string stageErrorsToJson(const motion::metrology::StageErrors& e);
 /// Plain C++: what the fuzzer drives.
 StageErrorsRead stageErrorsFromJson(std::string_view text, std::string_view fileName);
 StageErrorsRead loadStageErrorsFile(const QString& path);
-bool saveStageErrorsFile(const QString& path, const motion::metrology::StageErrors& e, msg::Message* error);
+bool saveStageErrorsFile(const QString& path, const motion::metrology::StageErrors& e, motion::msg::Message* error);
 
 /// A JSON array of numbers at `key` of `o`, each element's problem at its own place;
 /// nullopt when absent (and not required) or when any element is not a number.
-std::optional<std::vector<double>> numberList(jsonio::ObjectReader& o, std::string_view key, bool required);
+std::optional<std::vector<double>> numberList(dev::files::json::ObjectReader& o, std::string_view key, bool required);
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy
