@@ -6,10 +6,12 @@
 // port speaks is detected when it connects (a BenchPilot HELLO or a GRBL banner).
 #include "device/client/instrument_types.h"
 #include "device/link/serial_transport.h"
+#include "motion/metrology/grid/stage_errors.h"
 
 #include <QWidget>
 
 #include <functional>
+#include <optional>
 
 class QComboBox;
 class QLabel;
@@ -29,6 +31,9 @@ struct ConnectionChoice {
     QString serialNumber;
     qint32 baud = 115200;
     QString profile;       ///< machine profile file; empty: the default wiring (and detect the protocol)
+    /// The simulated stage's errors (benchpilot --sim stage --stage-errors FILE), for this
+    /// run only; none: the built-in stage's.
+    std::optional<motion::metrology::StageErrors> stageErrors;
     bool operator==(const ConnectionChoice& o) const
     {
         return simulator == o.simulator && port == o.port && serialNumber == o.serialNumber && baud == o.baud && profile == o.profile;

@@ -5,6 +5,7 @@
 #include "command.h"
 
 #include "app/common/version_text.h"
+#include "device/files/accuracy/grid/stage_errors_file.h"
 #include "device/files/machine_profile_file.h"
 #include "device/files/shipped_data.h"
 #include "widgets/wording/translators.h"
@@ -99,6 +100,14 @@ bool readLinkOptions(const QCommandLineParser& p, LinkOptions& link, QTextStream
             return fail(tr("--sim needs 'analyzer' or 'stage' (got '%1')").arg(v));
         link.sim = v;
     }
+    if (p.isSet(QStringLiteral("stage-errors"))) {
+        if (link.sim != QLatin1String("stage"))
+            return fail(tr("--stage-errors is for the simulated stage: give --sim stage"));
+        const auto read = dev::files::accuracy::loadStageErrorsFile(unmarkNegative(p.value(QStringLiteral("stage-errors"))));
+        if (!read.errors)
+            return fail(tr("--stage-errors: %1").arg(ui::words::problems(read.problems).join(QLatin1Char('\n'))));
+        link.stageErrors = read.errors;
+    }
     if (p.isSet(QStringLiteral("port"))) {
         link.port = unmarkNegative(p.value(QStringLiteral("port")));
         if (link.port.isEmpty())
@@ -157,6 +166,9 @@ QList<QCommandLineOption> globalOptions()
                                tr("the in-process simulator: analyzer or stage (default: analyzer); with --attach, the older "
                                   "spelling of --instrument"),
                                QStringLiteral("KIND")),
+            QCommandLineOption(QStringLiteral("stage-errors"),
+                               tr("with --sim stage: the simulated stage's errors from a benchpilot.stage-errors file"),
+                               QStringLiteral("FILE")),
             QCommandLineOption(QStringLiteral("port"), tr("a serial port, or the pty of benchpilot-sim"), QStringLiteral("PATH")),
             QCommandLineOption(QStringLiteral("baud"), tr("link speed (default: 115200)"), QStringLiteral("N")),
             QCommandLineOption(QStringLiteral("instrument"),

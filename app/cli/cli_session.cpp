@@ -1,4 +1,6 @@
 #include "cli_session.h"
+
+#include "device/sim/machine_config.h"
 #include "fiber.h"
 
 #include "widgets/wording/wording.h"
@@ -6,6 +8,7 @@
 #include "device/backends/benchpilot/benchpilot_client.h"
 #include "device/link/serial_transport.h"
 #include "device/link/simulated_link.h"
+#include "device/sim/machine_config.h"
 
 #include <QCoreApplication>
 #include <QEventLoop>
@@ -113,8 +116,15 @@ bool CliSession::connectDevice()
             linkError = ui::words::text(m);
     });
     if (!m_opt.sim.isEmpty()) {
-        auto* link = new dev::SimulatedLink(m_opt.sim == QLatin1String("stage") ? dev::proto::DeviceKind::Stage : dev::proto::DeviceKind::Analyzer,
-                                            m_opt.baud, this);
+        dev::SimulatedLink* link = nullptr;
+        if (m_opt.stageErrors && m_opt.sim == QLatin1String("stage")) {
+            dev::sim::MachineConfig config = dev::sim::stageConfig();
+            dev::sim::applyStageErrors(config, *m_opt.stageErrors);
+            link = new dev::SimulatedLink(config, m_opt.baud, this);
+        } else {
+            link = new dev::SimulatedLink(m_opt.sim == QLatin1String("stage") ? dev::proto::DeviceKind::Stage : dev::proto::DeviceKind::Analyzer,
+                                          m_opt.baud, this);
+        }
         m_link = link;
         m_benchPilot = new dev::BenchPilotClient;
         m_ownProxy->setBackend(m_benchPilot);

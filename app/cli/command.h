@@ -3,6 +3,8 @@
 // options) and what it gets when it runs (the parsed options, its arguments,
 // the output streams, and the instrument when it needs one). See README.md here
 // for how to add a command.
+#include "motion/metrology/grid/stage_errors.h"
+
 #include <QCommandLineOption>
 #include <QCommandLineParser>
 #include <QJsonObject>
@@ -30,6 +32,8 @@ struct LinkOptions {
     qint32 baud = 115200;
     bool json = false;
     double timeoutS = 120; ///< longest wait for motion to finish
+    /// --stage-errors: the simulated stage's errors (a benchpilot.stage-errors file), read and checked.
+    std::optional<motion::metrology::StageErrors> stageErrors;
     // Inside the GUI (the scripting API, --attach) `sim` names which of the GUI's
     // instruments, whatever it is connected to; empty leaves it to the GUI.
 };
@@ -290,6 +294,8 @@ void addScanCommands(std::vector<Command>& list);
 void addStitchCommands(std::vector<Command>& list);
 void addAccuracyCommands(std::vector<Command>& list);
 void addCompensationCommands(std::vector<Command>& list);
+/// compensation fit-2d | upload-2d | show-2d | enable-2d | disable-2d | export-2d.
+void addCompensation2dSubcommands(Command& comp);
 void addCompletionCommand(std::vector<Command>& list);
 
 /// The help texts, also used by the completion script.

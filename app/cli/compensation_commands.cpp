@@ -3,6 +3,7 @@
 //   upload --axis X FILE                              a compensation file to the device (installed disabled)
 //   show|enable|disable --axis X [--save]             what the device holds; enable or disable it
 //   export --format linuxcnc|csv [FILE | --axis X]    a compensation file's or the device's, for other tools
+//   fit-2d, upload-2d, show-2d, enable-2d, disable-2d, export-2d: the XY 2D table (compensation_2d_commands.cpp)
 #include "accuracy_cli.h"
 #include "cli_session.h"
 #include "command.h"
@@ -433,6 +434,7 @@ void addCompensationCommands(std::vector<Command>& list)
             a.example = onStageX;
         }
     }
+    addCompensation2dSubcommands(comp);
     list.push_back(comp);
 }
 

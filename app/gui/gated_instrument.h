@@ -62,6 +62,7 @@ public:
     dev::PathClient* paths() override { return m_inner->paths(); }
     dev::TuningClient* tuning() override { return m_inner->tuning(); }
     dev::CompensationClient* compensation() override { return m_inner->compensation(); }
+    dev::Compensation2dClient* compensation2d() override { return m_inner->compensation2d(); }
 
 protected:
     motion::msg::Message missingReason(dev::Capability c) const override { return m_inner->whyNot(c); }

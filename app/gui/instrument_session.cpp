@@ -4,6 +4,7 @@
 #include "device/backends/grbl/client/grbl_client.h"
 #include "device/link/serial_transport.h"
 #include "device/link/simulated_link.h"
+#include "device/sim/machine_config.h"
 
 namespace app {
 
@@ -59,7 +60,13 @@ void InstrumentSession::connectTo(const ui::ConnectionChoice& choice)
         // The same simulator again when only the cable was out; a new one for another wire speed.
         if (!m_sim || m_simBaud != choice.baud) {
             dropSimulator();
-            m_sim = new dev::SimulatedLink(m_kind, choice.baud, this);
+            if (choice.stageErrors && m_kind == dev::proto::DeviceKind::Stage) {
+                dev::sim::MachineConfig config = dev::sim::stageConfig();
+                dev::sim::applyStageErrors(config, *choice.stageErrors);
+                m_sim = new dev::SimulatedLink(config, choice.baud, this);
+            } else {
+                m_sim = new dev::SimulatedLink(m_kind, choice.baud, this);
+            }
             m_simBaud = choice.baud;
         }
         m_link = m_sim;

@@ -1,5 +1,5 @@
 // benchpilot: the operator and test-bench GUI.
-//   benchpilot [--lang system|en|zh_CN] [--sim analyzer|stage] [--port PATH [--instrument analyzer|stage] [--profile FILE] [--baud N]]
+//   benchpilot [--lang system|en|zh_CN] [--sim analyzer|stage [--stage-errors FILE]] [--port PATH [--instrument analyzer|stage] [--profile FILE] [--baud N]]
 //   benchpilot [--api-socket PATH | --no-api] [--api-websocket PORT [--api-token-file FILE] [--api-allow-origin URL]...]
 //   benchpilot [--lang …] --screenshot FILE --screen NAME [--size WxH] [--sim analyzer|stage] [--settle-ms N] [--home-first] [--exercise] [--tune] [--recipe FILE]
 #include "main_window.h"
@@ -8,6 +8,7 @@
 
 #include "device/backends/protocol_probe.h"
 #include "app/common/version_text.h"
+#include "device/files/accuracy/grid/stage_errors_file.h"
 #include "device/files/machine_profile_file.h"
 #include "device/files/shipped_data.h"
 #include "device/link/serial_transport.h"
@@ -68,6 +69,10 @@ int main(int argc, char** argv)
                            QApplication::translate("main", "connect this instrument to its in-process simulator and show it "
                                                            "(analyzer or stage; also the instrument a screenshot shows)"),
                            QStringLiteral("kind"), QStringLiteral("analyzer"));
+    QCommandLineOption stageErrors(QStringLiteral("stage-errors"),
+                                   QApplication::translate("main", "with --sim stage: the simulated stage's errors from a "
+                                                                   "benchpilot.stage-errors file"),
+                                   QStringLiteral("file"));
     QCommandLineOption port(QStringLiteral("port"),
                             QApplication::translate("main", "connect to this serial port or path (e.g. benchpilot-sim's pty); the "
                                                             "protocol is detected: BenchPilot or GRBL"),
@@ -113,7 +118,7 @@ int main(int argc, char** argv)
     QCommandLineOption lang(QStringLiteral("lang"),
                             QApplication::translate("main", "language of the screens: system, en or zh_CN (default: the Language menu's choice)"),
                             QStringLiteral("language"));
-    p.addOptions({sim, port, instrument, profile, baud, shot, screen, size, settle, script, exercise, tune, recipe, lang,
+    p.addOptions({sim, stageErrors, port, instrument, profile, baud, shot, screen, size, settle, script, exercise, tune, recipe, lang,
                   apiSocket, noApi, apiWebSocket, apiToken, apiOrigin});
     QCoreApplication::setOrganizationName(QStringLiteral("BenchPilot"));
     QCoreApplication::setApplicationName(QStringLiteral("benchpilot"));
@@ -198,8 +203,18 @@ int main(int argc, char** argv)
         if (!k)
             return fail(QApplication::translate("main", "--sim needs 'analyzer' or 'stage' (got '%1')").arg(p.value(sim)));
         ui::ConnectionChoice c;
+        if (p.isSet(stageErrors)) {
+            if (*k != dev::proto::DeviceKind::Stage)
+                return fail(QApplication::translate("main", "--stage-errors is for the simulated stage: give --sim stage"));
+            const auto read = dev::files::accuracy::loadStageErrorsFile(p.value(stageErrors));
+            if (!read.errors)
+                return fail(QApplication::translate("main", "--stage-errors: %1").arg(ui::words::problems(read.problems).join(QLatin1Char('\n'))));
+            c.stageErrors = read.errors;
+        }
         options.connection[kindIndex(*k)] = c;
         options.showInstrument = kindIndex(*k);
+    } else if (p.isSet(stageErrors)) {
+        return fail(QApplication::translate("main", "--stage-errors is for the simulated stage: give --sim stage"));
     }
     if (p.isSet(port)) {
         bool ok = false;

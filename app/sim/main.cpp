@@ -2,7 +2,7 @@
 //   benchpilot-sim --instrument analyzer|stage --pty PATH [--protocol benchpilot|grbl|grblhal]
 //                  [--time-scale K] [--baud N]
 //                  [--gauge PATH --gauge-axis X [--gauge-resolution MM] [--gauge-noise MM]]
-//                  [--journal FILE] [--no-homing]
+//                  [--journal FILE] [--no-homing] [--stage-errors FILE]
 // --protocol chooses what the firmware speaks over the same machine model: the BenchPilot
 // protocol, or the GRBL 1.1 / grblHAL personality (docs/grbl.md).
 // The GRBL board runs on when a host opens the port, as most grblHAL boards do (a board that
@@ -11,10 +11,14 @@
 // --gauge serves a simulated length gauge on a second pty: it answers "?" + CR with the
 // true position of one axis' work point (docs/accuracy.md, "Gauge dialect"), which the
 // instrument's own encoder or grating does not see.
+// --stage-errors gives the stage the errors of a benchpilot.stage-errors file (pitch,
+// straightness, squareness, lost motion at the work point; docs/accuracy.md).
 #include "device/link/simulated_link.h"
 #include "device/sim/grbl_firmware.h"
 #include "app/common/version_text.h"
+#include "device/files/accuracy/grid/stage_errors_file.h"
 #include "device/sim/sim_gauge.h"
+#include "widgets/wording/wording.h"
 #include "journal_file.h"
 #include "pty_transport.h"
 
@@ -81,7 +85,11 @@ int main(int argc, char** argv)
                                QStringLiteral("file"));
     QCommandLineOption noHoming(QStringLiteral("no-homing"),
                                 QCoreApplication::translate("sim", "the GRBL board has no homing switches ($22=0)"));
-    p.addOptions({instrument, ptyPath, protocol, timeScale, baud, gaugePath, gaugeAxis, gaugeResolution, gaugeNoise, journal, noHoming});
+    QCommandLineOption stageErrors(QStringLiteral("stage-errors"),
+                                   QCoreApplication::translate("sim", "the stage's errors from a benchpilot.stage-errors file"),
+                                   QStringLiteral("file"));
+    p.addOptions({instrument, ptyPath, protocol, timeScale, baud, gaugePath, gaugeAxis, gaugeResolution, gaugeNoise, journal, noHoming,
+                  stageErrors});
     // --version gives the licence too (app/common/version_text.h), not Qt's bare line.
     for (const QString& a : QCoreApplication::arguments().mid(1)) {
         if (a == QLatin1String("--"))
@@ -114,7 +122,15 @@ int main(int argc, char** argv)
     if (p.isSet(journal) && proto != QLatin1String("benchpilot"))
         return fail(QCoreApplication::translate("sim", "--journal records the benchpilot protocol's requests only"));
 
-    const dev::sim::MachineConfig machine = kind == QLatin1String("stage") ? dev::sim::stageConfig() : dev::sim::analyzerConfig();
+    dev::sim::MachineConfig machine = kind == QLatin1String("stage") ? dev::sim::stageConfig() : dev::sim::analyzerConfig();
+    if (p.isSet(stageErrors)) {
+        if (kind != QLatin1String("stage"))
+            return fail(QCoreApplication::translate("sim", "--stage-errors is for the simulated stage (--instrument stage)"));
+        const auto read = dev::files::accuracy::loadStageErrorsFile(p.value(stageErrors));
+        if (!read.errors)
+            return fail(ui::words::problems(read.problems).join(QLatin1Char('\n')));
+        dev::sim::applyStageErrors(machine, *read.errors);
+    }
     const QString gaugeLink = p.value(gaugePath);
     int gaugeAxisIndex = -1;
     dev::sim::GaugeConfig gaugeConfig;

@@ -36,6 +36,7 @@
 namespace dev {
 
 class CompensationClient;
+class Compensation2dClient;
 class PathClient;
 class TuningClient;
 
@@ -117,6 +118,8 @@ public:
     /// Axis error compensation kept on the device; nullptr when the backend has none (the
     /// default, so a backend without it need not say so: Capability::Compensation does).
     virtual CompensationClient* compensation() { return nullptr; }
+    /// An XY stage's 2D compensation table kept on the device; nullptr when the backend has none.
+    virtual Compensation2dClient* compensation2d() { return nullptr; }
 
 signals:
     void stateChanged(dev::LinkState state);

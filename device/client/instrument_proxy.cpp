@@ -212,5 +212,6 @@ double InstrumentProxy::toAxisUnits(const dev::proto::ChannelRef& channel, std::
 PathClient* InstrumentProxy::paths() { return m_backend ? m_backend->paths() : nullptr; }
 TuningClient* InstrumentProxy::tuning() { return m_backend ? m_backend->tuning() : nullptr; }
 CompensationClient* InstrumentProxy::compensation() { return m_backend ? m_backend->compensation() : nullptr; }
+Compensation2dClient* InstrumentProxy::compensation2d() { return m_backend ? m_backend->compensation2d() : nullptr; }
 
 } // namespace dev

@@ -71,6 +71,7 @@ public:
     PathClient* paths() override;
     TuningClient* tuning() override;
     CompensationClient* compensation() override;
+    Compensation2dClient* compensation2d() override;
 
 protected:
     motion::msg::Message missingReason(Capability c) const override;

@@ -2,10 +2,36 @@
 // "Compensation"); the behaviour is in sim_compensation.cpp.
 #include "device/sim/firmware.h"
 
+#include "device/protocol/messages_compensation_2d.h"
+#include "device/sim/sim_compensation_2d.h"
+
 namespace dev::sim {
 
 bool Firmware::executeCompensation(const dev::proto::Frame& f, std::vector<std::uint8_t>& reply)
 {
+    if (const char* name2d = dev::proto::compensation2dTypeName(f.type)) {
+        SimCompensation2d& c = m_machine.compensation2d();
+        const std::uint8_t ok = static_cast<std::uint8_t>(f.type | dev::proto::kReplyFlag);
+        if (f.type == 0x1E) {
+            if (const auto r = dev::proto::decodeComp2dUploadRequest(f.payload)) {
+                dev::proto::Comp2dUploadReply out;
+                if (const auto e = c.upload(*r, out))
+                    sendError(f.seq, *e, reply);
+                else
+                    sendFrame(ok, f.seq, dev::proto::encode(out), reply);
+                return true;
+            }
+        } else if (const auto r = dev::proto::decodeComp2dEnableRequest(f.payload)) {
+            dev::proto::Comp2dEnableReply out;
+            if (const auto e = c.enable(*r, out))
+                sendError(f.seq, *e, reply);
+            else
+                sendFrame(ok, f.seq, dev::proto::encode(out), reply);
+            return true;
+        }
+        sendMalformed(f.seq, name2d, reply);
+        return true;
+    }
     const char* name = dev::proto::compensationTypeName(f.type);
     if (!name)
         return false;

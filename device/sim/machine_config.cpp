@@ -104,18 +104,27 @@ MachineConfig stageConfig()
     // The grating itself: +5 µm per metre (0.5 µm over the travel); the loop puts
     // the carriage short by as much, which only a reference at the work point sees.
     x.scaleErrorPerUnit = 5e-6;
-    // Seed 002's fitted error of the X axis (work point against the grating), µm over mm.
-    x.abbeErrorPolyUm = {1.563, 0.9473, -0.0006};
+    // Seed 002's fitted error of the X axis (work point against the grating), µm over mm:
+    // the stage-error model's built-in pitch (applyStageErrors below sets it).
     x.switchRepeatability = 0.001;
     x.startPosition = 41.7;
     AxisConfig y = x;
     y.letter = 'Y';
     y.leadErrorPerUnit = -2.0e-4;
     y.scaleErrorPerUnit = -4e-6;
-    y.abbeErrorPolyUm = {1.021, 0.6397, 0.0168};
     y.startPosition = 63.2;
     m.axes = {x, y};
+    applyStageErrors(m, motion::metrology::builtInStageErrors());
     return m;
+}
+
+void applyStageErrors(MachineConfig& m, const motion::metrology::StageErrors& errors)
+{
+    if (m.axes.size() < 2 || m.axes[0].letter != 'X' || m.axes[1].letter != 'Y')
+        return;
+    m.axes[0].abbeErrorPolyUm = errors.x.pitchPolyUm;
+    m.axes[1].abbeErrorPolyUm = errors.y.pitchPolyUm;
+    m.stageErrors = errors;
 }
 
 } // namespace dev::sim

@@ -2,7 +2,9 @@
 // Mechanical and control parameters of the simulated instruments. Units: the
 // axis' own unit (mm, or µL for the pump) unless a name says otherwise.
 #include "device/protocol/messages.h"
+#include "motion/metrology/grid/stage_errors.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -89,9 +91,17 @@ struct MachineConfig {
     PidGains gains;
     ClosedLoopTuning loop;
     std::uint64_t seed = 12345;     ///< noise is deterministic for a given seed
+    /// An XY stage's work point against its carriages (motion/metrology/grid/stage_errors.h):
+    /// the pitch polynomials are axes[0] and [1]'s abbeErrorPolyUm, the rest (straightness,
+    /// squareness, lost motion at the work point) is applied by SimMachine. None: each
+    /// axis' work point follows its own carriage alone (the analyzer).
+    std::optional<motion::metrology::StageErrors> stageErrors;
 };
 
 MachineConfig analyzerConfig();
 MachineConfig stageConfig();
+/// Gives a machine with X and Y as axes 0 and 1 these stage errors (benchpilot-sim
+/// --stage-errors FILE): the pitch polynomials become the axes' work-point error.
+void applyStageErrors(MachineConfig& machine, const motion::metrology::StageErrors& errors);
 
 } // namespace dev::sim

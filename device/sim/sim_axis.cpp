@@ -27,7 +27,7 @@ double SimAxis::correctionAt(double nominal) const
     return m_comp->commandMm(home, m_approach) - home;
 }
 
-void SimAxis::updateDrive() { m_drive = m_ref + correctionAt(m_ref); }
+void SimAxis::updateDrive() { m_drive = m_ref + correctionAt(m_ref) + m_cross; }
 
 double SimAxis::nominalForDrive(double drive) const
 {
@@ -35,8 +35,21 @@ double SimAxis::nominalForDrive(double drive) const
     // fixed-point iteration converges by an order of magnitude a step.
     double n = drive - (m_drive - m_ref);
     for (int i = 0; i < 8; ++i)
-        n = drive - correctionAt(n);
+        n = drive - m_cross - correctionAt(n);
     return n;
+}
+
+void SimAxis::setCrossCorrection(double mm, bool keepDrive)
+{
+    m_cross = mm;
+    if (!keepDrive) {
+        updateDrive();
+        return;
+    }
+    const double drive = m_drive;
+    m_ref = nominalForDrive(drive);
+    updateDrive();
+    m_drive = drive;
 }
 
 void SimAxis::setCompensation(const motion::metrology::CompensationModel* model, double homeMachine)

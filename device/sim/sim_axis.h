@@ -36,6 +36,14 @@ public:
     /// jerks the axis; the next move goes to the compensated place.
     void setCompensation(const motion::metrology::CompensationModel* model, double homeMachine);
     bool compensated() const { return m_comp.has_value(); }
+    /// A 2D table's correction for this axis (mm, device/sim/sim_compensation_2d.h), on
+    /// top of the axis' own compensation. `keepDrive`: the axis does not move, the
+    /// nominal reference shifts instead (enabling or disabling the table at rest);
+    /// otherwise the drive follows (the correction changes as the axes move).
+    void setCrossCorrection(double mm, bool keepDrive);
+    double crossCorrection() const { return m_cross; }
+    /// The side the reference last moved towards.
+    motion::metrology::Direction approach() const { return m_approach; }
     double referenceVelocity() const { return m_refVel; }
 
     /// Advances the plant by one simulation tick.
@@ -101,6 +109,7 @@ private:
 
     double m_ref = 0, m_refVel = 0, m_prevRefForLoop = 0, m_prevRefVelForLoop = 0;
     double m_drive = 0;             ///< m_ref plus the compensation's correction (m_prevRefForLoop tracks this)
+    double m_cross = 0;             ///< a 2D table's correction, mm, added to the drive
     std::optional<motion::metrology::CompensationModel> m_comp;
     double m_compHome = 0;          ///< machine position of home coordinate 0
     motion::metrology::Direction m_approach = motion::metrology::Direction::Up;  ///< the side the reference last moved towards

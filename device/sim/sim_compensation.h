@@ -15,6 +15,7 @@
 // keeps it; a power cycle (a new SimMachine) starts from what was saved.
 #include "device/protocol/messages_compensation.h"
 #include "motion/metrology/compensation/compensation_model.h"
+#include "motion/metrology/grid/compensation_table_2d.h"
 
 #include <optional>
 #include <vector>
@@ -31,6 +32,9 @@ struct NonVolatile {
         bool enabled = false;
     };
     std::vector<Axis> axes;
+    /// The XY 2D table saved (device/sim/sim_compensation_2d.h) and whether it was enabled.
+    std::optional<motion::metrology::CompensationTable2D> table2d;
+    bool table2dEnabled = false;
 };
 
 class SimCompensation {
@@ -46,7 +50,13 @@ public:
     /// rest, detaches one that is disabled or whose homing was lost.
     void reconcile();
 
+    /// What a power cycle keeps, the 2D table's part included (SimCompensation2d saves it here).
     const NonVolatile& flash() const { return m_flash; }
+    void saveTable2d(const std::optional<motion::metrology::CompensationTable2D>& table, bool enabled)
+    {
+        m_flash.table2d = table;
+        m_flash.table2dEnabled = enabled;
+    }
     const std::optional<motion::metrology::CompensationModel>& model(int axis) const;
     bool enabled(int axis) const;
     bool applied(int axis) const;

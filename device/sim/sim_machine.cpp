@@ -3,6 +3,7 @@
 #include "device/sim/sim_tuning.h"
 
 #include "device/sim/path_queue.h"
+#include "device/sim/sim_compensation_2d.h"
 #include "motion/jerk_limited.h"
 #include "motion/seed_scurve.h"
 
@@ -32,6 +33,7 @@ SimMachine::SimMachine(const MachineConfig& config, const NonVolatile& powerUp) 
     m_tuning = std::make_unique<SimTuning>(*this);
     m_path = std::make_unique<PathQueue>(*this);
     m_comp = std::make_unique<SimCompensation>(*this, powerUp);
+    m_comp2d = std::make_unique<SimCompensation2d>(*this, powerUp);
 }
 
 SimMachine::~SimMachine() = default;
@@ -40,7 +42,50 @@ void SimMachine::setGains(const PidGains& g) { m_tuning->setAllGains(g); }
 
 double SimMachine::commandedLogical(int i) const { return st(i).plant->reference() - st(i).offset; }
 double SimMachine::measuredLogical(int i) const { return st(i).plant->reportedMeasured() - st(i).measuredOffset; }
-double SimMachine::workPointLogical(int i) const { return st(i).plant->workPoint() - st(i).measuredOffset; }
+double SimMachine::workPointLogical(int i) const
+{
+    if (i < 2 && hasStageErrors())
+        return stageWorkPointMachine(i, st(0).plant->carriage(), st(1).plant->carriage()) - st(i).measuredOffset;
+    return st(i).plant->workPoint() - st(i).measuredOffset;
+}
+
+bool SimMachine::hasStageErrors() const { return m_cfg.stageErrors.has_value() && axisCount() >= 2; }
+
+double SimMachine::stageWorkPointMachine(int i, double carriageX, double carriageY) const
+{
+    const auto& e = *m_cfg.stageErrors;
+    const double own = i == 0 ? carriageX : carriageY;
+    const auto& cfg = st(i).plant->config();
+    // The pitch is the axis' own work-point error (abbeErrorPolyUm, which the file's
+    // pitch polynomial set); the cross terms and the lost motion come from the model.
+    const auto v = motion::metrology::stageErrorUm(e, carriageX, carriageY, st(0).plant->approach(), st(1).plant->approach());
+    const double pitch = motion::metrology::polynomialUm(cfg.abbeErrorPolyUm, own);
+    const double ownPitchInModel = motion::metrology::polynomialUm(i == 0 ? e.x.pitchPolyUm : e.y.pitchPolyUm, own);
+    return own + (pitch + (i == 0 ? v.xUm : v.yUm) - ownPitchInModel) * 1e-3;
+}
+
+SimMachine::WorkPointMm SimMachine::trueWorkPoint() const
+{
+    if (axisCount() < 2)
+        return {};
+    return {workPointLogical(0), workPointLogical(1)};
+}
+
+SimMachine::WorkPointMm SimMachine::trueWorkPointAt(double gratingXMm, double gratingYMm) const
+{
+    if (axisCount() < 2)
+        return {};
+    // The grating reads the carriage through its own scale error (SimAxis::measured).
+    const double cx = (gratingXMm + st(0).measuredOffset) / (1.0 + st(0).plant->config().scaleErrorPerUnit);
+    const double cy = (gratingYMm + st(1).measuredOffset) / (1.0 + st(1).plant->config().scaleErrorPerUnit);
+    if (!hasStageErrors()) {
+        auto single = [&](int i, double c) {
+            return c + motion::metrology::polynomialUm(st(i).plant->config().abbeErrorPolyUm, c) * 1e-3 - st(i).measuredOffset;
+        };
+        return {single(0, cx), single(1, cy)};
+    }
+    return {stageWorkPointMachine(0, cx, cy) - st(0).measuredOffset, stageWorkPointMachine(1, cx, cy) - st(1).measuredOffset};
+}
 
 void SimMachine::zeroCounters(int i, double logicalHere)
 {

@@ -20,6 +20,7 @@ namespace dev::sim {
 
 class SimTuning;
 class PathQueue;
+class SimCompensation2d;
 
 class SimMachine {
 public:
@@ -84,6 +85,20 @@ public:
     /// the Abbe error there, not 0). The readback sees neither the scale's error nor the
     /// Abbe error; this does.
     double workPointLogical(int i) const;
+    /// Where an XY stage's work point truly is, in host coordinates (mm): what a camera
+    /// looking at a plate on the stage sees, as a gauge sees workPointLogical(). With
+    /// stage errors (MachineConfig::stageErrors) X and Y each carry the other axis'
+    /// straightness, X the squareness, and each half its lost motion against the side
+    /// it was approached from (motion/metrology/grid/stage_errors.h).
+    struct WorkPointMm {
+        double xMm = 0;
+        double yMm = 0;
+    };
+    WorkPointMm trueWorkPoint() const;
+    /// The same for gratings that read (gratingXMm, gratingYMm) in host coordinates
+    /// (the raw gratings, before a compensation's correction), the axes having last
+    /// moved as they did: where the work point is when the stage stands there.
+    WorkPointMm trueWorkPointAt(double gratingXMm, double gratingYMm) const;
     bool homed(int i) const { return m_axes[static_cast<std::size_t>(i)].homed; }
     bool estopActive() const { return m_estop; }
     /// Every closed-loop axis' operator gains (seed 002's per-period form).
@@ -97,11 +112,15 @@ public:
     /// Axis error compensation (device/sim/sim_compensation.h).
     SimCompensation& compensation() { return *m_comp; }
     const SimCompensation& compensation() const { return *m_comp; }
+    /// The XY stage's 2D compensation table (device/sim/sim_compensation_2d.h).
+    SimCompensation2d& compensation2d() { return *m_comp2d; }
+    const SimCompensation2d& compensation2d() const { return *m_comp2d; }
 
 private:
     friend class SimTuning;
     friend class PathQueue;  // drives the axes it has reserved (Mode::Path) through the same state
     friend class SimCompensation;  // attaches compensations to homed axes at rest
+    friend class SimCompensation2d;
     enum class Mode { Idle, Segment, Jog, Decel, Homing, Settling, Tuning, Path };
     enum class HomePhase { SeekFast, BackOff, SeekSlow };
 
@@ -172,6 +191,11 @@ private:
     void raiseEvent(dev::proto::EventKind kind, int axis, const std::string& text = {}, std::uint8_t why = 0,
                     std::vector<double> values = {});
     double contourErrorMm() const;
+    /// The work point of axis `i` (0: X, 1: Y) in machine coordinates for carriages at
+    /// (carriageX, carriageY), machine coordinates: the one formula both
+    /// trueWorkPoint() and trueWorkPointAt() use.
+    double stageWorkPointMachine(int i, double carriageX, double carriageY) const;
+    bool hasStageErrors() const;
 
     MachineConfig m_cfg;
     double m_jogWatchdogTripS = kJogWatchdogTripS;
@@ -188,6 +212,7 @@ private:
     std::unique_ptr<SimTuning> m_tuning;
     std::unique_ptr<PathQueue> m_path;
     std::unique_ptr<SimCompensation> m_comp;
+    std::unique_ptr<SimCompensation2d> m_comp2d;
 };
 
 } // namespace dev::sim

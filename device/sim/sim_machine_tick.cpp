@@ -4,6 +4,7 @@
 #include "device/sim/sim_machine.h"
 
 #include "device/sim/sim_compensation.h"
+#include "device/sim/sim_compensation_2d.h"
 #include "device/sim/sim_tuning.h"
 
 #include "device/sim/path_queue.h"
@@ -204,6 +205,7 @@ void SimMachine::tick()
     m_path->tick();
     tickSegments();
     tickVelocityModes();
+    m_comp2d->follow();  // the 2D table's corrections at the references just set
     for (int i = 0; i < axisCount(); ++i) {
         if (m_cfg.closedLoop && m_ticks % static_cast<std::uint64_t>(m_ticksPerControl) == 0
             && !m_tuning->controlStep(i, m_ticksPerControl))  // a tuning test, or the PID with the axis' gains

@@ -3,6 +3,8 @@
 #include "device/sim/sim_machine.h"
 
 #include "device/protocol/messages_compensation.h"
+#include "device/protocol/messages_compensation_2d.h"
+#include "device/sim/sim_compensation_2d.h"
 #include "device/protocol/messages_tuning.h"
 #include "device/sim/path_queue.h"
 
@@ -22,6 +24,8 @@ dev::proto::HelloReply SimMachine::hello(std::uint32_t linkBaud) const
         h.capabilities |= dev::proto::CapEncoder;
     if (m_cfg.zAfterXy)
         h.capabilities |= dev::proto::CapCoupledXyThenZ | dev::proto::CapPathZFollow;
+    if (m_comp2d->available())
+        h.capabilities |= dev::proto::CapCompensation2d;
     for (const auto& a : m_cfg.axes)
         if (a.unit == dev::proto::AxisUnit::Microlitre)
             h.capabilities |= dev::proto::CapPump;

@@ -2523,6 +2523,233 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
 </translation>
     </message>
     <message>
+        <source>--stage-errors is for the simulated stage: give --sim stage</source>
+        <translation>--stage-errors 只用于仿真载物台：请给出 --sim stage</translation>
+    </message>
+    <message>
+        <source>--stage-errors: %1</source>
+        <translation>--stage-errors：%1</translation>
+    </message>
+    <message>
+        <source>with --sim stage: the simulated stage&apos;s errors from a benchpilot.stage-errors file</source>
+        <translation>与 --sim stage 一起使用：从 benchpilot.stage-errors 文件读取仿真载物台的误差</translation>
+    </message>
+    <message>
+        <source>no 2D compensation table on the device</source>
+        <translation>设备上没有二维补偿表</translation>
+    </message>
+    <message>
+        <source>2D table of %1 × %2 nodes; %3%4%5</source>
+        <translation>%1 × %2 节点的二维表；%3%4%5</translation>
+    </message>
+    <message>
+        <source> (applied once X and Y are homed)</source>
+        <translation>（X 和 Y 回零后生效）</translation>
+    </message>
+    <message>
+        <source>give one grid map result file</source>
+        <translation>请给出一个网格图结果文件</translation>
+    </message>
+    <message>
+        <source>give the table file to write: --out FILE</source>
+        <translation>请给出要写入的表文件：--out FILE</translation>
+    </message>
+    <message>
+        <source>2D table of %1 × %2 nodes, every %3 × %4 mm from (%5, %6) mm</source>
+        <translation>%1 × %2 节点的二维表，从 (%5, %6) mm 起每隔 %3 × %4 mm</translation>
+    </message>
+    <message>
+        <source>give one 2D compensation table file</source>
+        <translation>请给出一个二维补偿表文件</translation>
+    </message>
+    <message>
+        <source>a 2D compensation table from a grid map&apos;s result file</source>
+        <translation>由网格图结果文件生成二维补偿表</translation>
+    </message>
+    <message>
+        <source>RESULT</source>
+        <translation>RESULT</translation>
+    </message>
+    <message>
+        <source>RESULT is a benchpilot.grid-map-result file; the table has a node at each of its nodes, with the X and Y corrections that put the work point on them.</source>
+        <translation>RESULT 为 benchpilot.grid-map-result 文件；补偿表在其每个节点处各有一个节点，其 X、Y 修正量使工作点落在这些节点上。</translation>
+    </message>
+    <message>
+        <source>send a 2D compensation table to the device (installed disabled)</source>
+        <translation>将二维补偿表发送到设备（安装后处于禁用状态）</translation>
+    </message>
+    <message>
+        <source>the device&apos;s 2D compensation table</source>
+        <translation>设备的二维补偿表</translation>
+    </message>
+    <message>
+        <source>enable the device&apos;s 2D compensation table</source>
+        <translation>启用设备的二维补偿表</translation>
+    </message>
+    <message>
+        <source>disable the device&apos;s 2D compensation table</source>
+        <translation>禁用设备的二维补偿表</translation>
+    </message>
+    <message>
+        <source>a 2D compensation table as CSV</source>
+        <translation>将二维补偿表导出为 CSV</translation>
+    </message>
+</context>
+<context>
+    <name>app::cli::CliSession</name>
+    <message>
+        <source>--profile: %1</source>
+        <translation>--profile：%1</translation>
+    </message>
+    <message>
+        <source>--profile %1 is for the %2, but --instrument says %3</source>
+        <translation>--profile %1 适用于%2，但 --instrument 指定的是%3</translation>
+    </message>
+    <message>
+        <source>cannot connect to %1: the protocol could not be detected</source>
+        <translation>无法连接到 %1：无法检测通信协议</translation>
+    </message>
+    <message>
+        <source>cannot connect to %1: %2</source>
+        <translation>无法连接到 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 is a %2, not the %3 --instrument names</source>
+        <translation>%1 是%2，不是 --instrument 指定的%3</translation>
+    </message>
+</context>
+<context>
+    <name>dev</name>
+    <message>
+        <source>give the axis: --axis X</source>
+        <translation>请指定轴：--axis X</translation>
+    </message>
+</context>
+<context>
+    <name>dev::BenchPilotClient</name>
+    <message>
+        <source>no link</source>
+        <translation>无连接</translation>
+    </message>
+</context>
+<context>
+    <name>dev::GrblClient</name>
+    <message>
+        <source>no link</source>
+        <translation>无链路</translation>
+    </message>
+    <message>
+        <source>GRBL controller</source>
+        <translation>GRBL 控制器</translation>
+    </message>
+</context>
+<context>
+    <name>dev::InstrumentProxy</name>
+    <message>
+        <source>no link</source>
+        <translation>无连接</translation>
+    </message>
+</context>
+<context>
+    <name>dev::LoopbackEnd</name>
+    <message>
+        <source>loopback @ %1 baud</source>
+        <translation>回环 @ %1 波特</translation>
+    </message>
+    <message>
+        <source>loopback</source>
+        <translation>回环</translation>
+    </message>
+</context>
+<context>
+    <name>dev::SerialTransport</name>
+    <message>
+        <source>%1 @ %2 baud</source>
+        <translation>%1 @ %2 波特</translation>
+    </message>
+</context>
+<context>
+    <name>files</name>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>无法打开 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 is %2 MiB, more than the %3 MiB a BenchPilot file may be</source>
+        <translation>%1 大小为 %2 MiB，超过 BenchPilot 文件上限 %3 MiB</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>grbl</name>
+    <message>
+        <source>A G-code word has no letter: every word is a letter followed by a value.</source>
+        <translation>G 代码字缺少字母：每个字都是一个字母后跟数值。</translation>
+    </message>
+    <message>
+        <source>A number is missing or is not written as a valid number.</source>
+        <translation>缺少数值，或数值格式无效。</translation>
+    </message>
+    <message>
+        <source>The &apos;$&apos; system command is not recognized or not supported.</source>
+        <translation>无法识别或不支持该“$”系统命令。</translation>
+    </message>
+    <message>
+        <source>A negative value was given where only a positive one is allowed.</source>
+        <translation>在只允许正值的地方给出了负值。</translation>
+    </message>
+    <message>
+        <source>Homing is not enabled in the controller&apos;s settings.</source>
+        <translation>控制器设置中未启用回零。</translation>
+    </message>
+    <message>
+        <source>The step pulse time is shorter than the controller allows.</source>
+        <translation>步进脉冲时间短于控制器允许的最小值。</translation>
+    </message>
+    <message>
+        <source>Reading the stored settings failed; the controller restored its defaults.</source>
+        <translation>读取已存设置失败；控制器已恢复默认值。</translation>
+    </message>
+    <message>
+        <source>This &apos;$&apos; command is only accepted while the controller is idle.</source>
+        <translation>该“$”命令只能在控制器空闲时执行。</translation>
+    </message>
+    <message>
+        <source>G-code is locked out while the controller is in alarm or jogging.</source>
+        <translation>控制器处于报警或点动状态时锁定 G 代码。</translation>
+    </message>
+    <message>
+        <source>Soft limits cannot be enabled unless homing is enabled too.</source>
+        <translation>未启用回零时不能启用软限位。</translation>
+    </message>
+    <message>
+        <source>The line is longer than the controller accepts; it was not executed.</source>
+        <translation>该行超过控制器允许的长度，未执行。</translation>
+    </message>
+    <message>
+        <source>This setting would make the step rate exceed what the controller supports.</source>
+        <translation>该设置会使步进频率超过控制器所能支持的范围。</translation>
+    </message>
+    <message>
+        <source>The safety door is open; the controller entered its door state.</source>
+        <translation>安全门已打开；控制器进入安全门状态。</translation>
+    </message>
+    <message>
+        <source>The build info or startup line is too long to be stored.</source>
+        <translation>版本信息或启动行太长，无法保存。</translation>
+    </message>
+    <message>
+        <source>The jog target lies beyond the machine travel; the jog was ignored.</source>
+        <translation>点动目标超出机床行程；该点动被忽略。</translation>
+    </message>
+    <message>
         <source>--source manual reads what a person types at benchpilot-cli; in the GUI use the Calibration screen</source>
         <translation>--source manual 读取操作员在 benchpilot-cli 中输入的读数；在图形界面中请使用“校准”界面</translation>
     </message>
@@ -3028,6 +3255,21 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>读取文件失败。</translation>
     </message>
     <message>
+        <source>with --sim stage: the simulated stage&apos;s errors from a benchpilot.stage-errors file</source>
+        <translation>与 --sim stage 一起使用：从 benchpilot.stage-errors 文件读取仿真载物台的误差</translation>
+    </message>
+    <message>
+        <source>--stage-errors is for the simulated stage: give --sim stage</source>
+        <translation>--stage-errors 只用于仿真载物台：请给出 --sim stage</translation>
+    </message>
+    <message>
+        <source>--stage-errors: %1</source>
+        <translation>--stage-errors：%1</translation>
+    </message>
+</context>
+<context>
+    <name>ui::report</name>
+    <message>
         <source>A directory could not be opened.</source>
         <translation>无法打开目录。</translation>
     </message>
@@ -3392,6 +3634,76 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>--no-homing is for the GRBL personality (--protocol grbl or grblhal)</source>
         <translation>--no-homing 仅用于 GRBL 模式（--protocol grbl 或 grblhal）</translation>
+    </message>
+    <message>
+        <source>the stage&apos;s errors from a benchpilot.stage-errors file</source>
+        <translation>从 benchpilot.stage-errors 文件读取载物台的误差</translation>
+    </message>
+    <message>
+        <source>--stage-errors is for the simulated stage (--instrument stage)</source>
+        <translation>--stage-errors 只用于仿真载物台（--instrument stage）</translation>
+    </message>
+</context>
+<context>
+    <name>app::sim::PtyTransport</name>
+    <message>
+        <source>cannot create a pseudo-terminal: %1</source>
+        <translation>无法创建伪终端：%1</translation>
+    </message>
+    <message>
+        <source>cannot name the pseudo-terminal: %1</source>
+        <translation>无法获取伪终端名称：%1</translation>
+    </message>
+</context>
+<context>
+    <name>dev::tele::TelemetryHub</name>
+    <message>
+        <source>commanded</source>
+        <translation>指令位置</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>实测位置</translation>
+    </message>
+    <message>
+        <source>velocity</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>following error</source>
+        <translation>跟随误差</translation>
+    </message>
+    <message>
+        <source>controller output</source>
+        <translation>控制器输出</translation>
+    </message>
+    <message>
+        <source>switches</source>
+        <translation>开关</translation>
+    </message>
+    <message>
+        <source>contour error</source>
+        <translation>轮廓误差</translation>
+    </message>
+    <message>
+        <source>controller output u</source>
+        <translation>控制器输出 u</translation>
+    </message>
+    <message>
+        <source>Instrument %1</source>
+        <translation>仪器 %1</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>%1 %2 %3</source>
+        <translation>%1 %2 %3</translation>
+    </message>
+    <message>
+        <source>%1 [%2]</source>
+        <translation>%1 [%2]</translation>
     </message>
 </context>
 <context>
@@ -11121,6 +11433,69 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <source>%1 refused by the controller: error %2: %3</source>
         <comment>grbl.error.refused_no_line</comment>
         <translation>%1 被控制器拒绝：错误 %2：%3</translation>
+    </message>
+</context>
+<context>
+    <name>ui::words::GridWords</name>
+    <message>
+        <source>%1 × %2 nodes: a map needs at least %3 a side</source>
+        <translation>%1 × %2 个节点：网格图每边至少需要 %3 个</translation>
+    </message>
+    <message>
+        <source>position %1 does not come after %2: a grid&apos;s positions must increase</source>
+        <translation>位置 %1 不在 %2 之后：网格位置必须递增</translation>
+    </message>
+    <message>
+        <source>%1 nodes, where the grid has %2</source>
+        <translation>%1 个节点，而网格有 %2 个</translation>
+    </message>
+    <message>
+        <source>the node at (%1, %2) is off the grid, whose node here is at (%3, %4)</source>
+        <translation>位于 (%1, %2) 的节点不在网格上，网格在此处的节点位于 (%3, %4)</translation>
+    </message>
+    <message>
+        <source>%1 coefficients: at most %2 (order 5)</source>
+        <translation>%1 个系数：最多 %2 个（5 阶）</translation>
+    </message>
+    <message>
+        <source>the curve reaches %1 at %2, beyond ±%3</source>
+        <translation>曲线在 %2 处达到 %1，超出 ±%3</translation>
+    </message>
+    <message>
+        <source>%1 nodes: a 2D table has %2 to %3 a side</source>
+        <translation>%1 个节点：二维表每边应有 %2 到 %3 个节点</translation>
+    </message>
+    <message>
+        <source>this instrument keeps no 2D compensation table</source>
+        <translation>此仪器不保存二维补偿表</translation>
+    </message>
+    <message>
+        <source>the device answered COMP2D_UPLOAD with something unreadable</source>
+        <translation>设备对 COMP2D_UPLOAD 的应答无法解读</translation>
+    </message>
+    <message>
+        <source>the device answered COMP2D_ENABLE with something unreadable</source>
+        <translation>设备对 COMP2D_ENABLE 的应答无法解读</translation>
+    </message>
+    <message>
+        <source>the nodes of %1 are not on one regular grid: no 2D table can be made of them</source>
+        <translation>%1 的节点不在同一规则网格上：无法由其生成二维表</translation>
+    </message>
+    <message>
+        <source>upload the 2D compensation table</source>
+        <translation>上传二维补偿表</translation>
+    </message>
+    <message>
+        <source>enable the 2D compensation table</source>
+        <translation>启用二维补偿表</translation>
+    </message>
+    <message>
+        <source>disable the 2D compensation table</source>
+        <translation>禁用二维补偿表</translation>
+    </message>
+    <message>
+        <source>read the 2D compensation table&apos;s state</source>
+        <translation>读取二维补偿表状态</translation>
     </message>
 </context>
 <context>

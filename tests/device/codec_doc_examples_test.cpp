@@ -10,6 +10,7 @@
 #include "device/protocol/messages.h"
 #include "compensation_doc_examples.h"
 #include "tuning_doc_examples.h"
+#include "device/protocol/messages_compensation_2d.h"
 #include "device/protocol/messages_path.h"
 
 #include <gtest/gtest.h>
@@ -165,6 +166,22 @@ std::vector<Example> examples()
     done0.deviceTimeUs = 4000000;
     done0.position = 0;
     ex.push_back({"event-path-segment-done", t(MsgType::Event), 5, encode(done0)});
+
+    // 2D compensation (docs/protocol.md, "2D compensation"): a 2 × 2 table over the
+    // stage's 100 × 100 mm, uploaded in one part, enabled and kept, then only asked.
+    Comp2dUploadRequest table;
+    table.columns = 2;
+    table.rows = 2;
+    table.pitchX = nm(100);
+    table.pitchY = nm(100);
+    table.nodes = {{-1563, -1021}, {-96293, -1021}, {-1563, -65011}, {-96293, -65011}};
+    ex.push_back({"comp2d-upload", static_cast<std::uint8_t>(kComp2dUpload), 40, encode(table)});
+    ex.push_back({"comp2d-upload-reply", replyTypeOf(kComp2dUpload), 40, encode(Comp2dUploadReply{4, 1})});
+    ex.push_back({"comp2d-enable-save", static_cast<std::uint8_t>(kComp2dEnable), 41,
+                  encode(Comp2dEnableRequest{Comp2dEnableOn | Comp2dEnableSave})});
+    ex.push_back({"comp2d-enable-reply", replyTypeOf(kComp2dEnable), 41,
+                  encode(Comp2dEnableReply{Comp2dInstalled | Comp2dEnabled | Comp2dApplied | Comp2dSaved, 2, 2})});
+    ex.push_back({"comp2d-query", static_cast<std::uint8_t>(kComp2dEnable), 42, encode(Comp2dEnableRequest{Comp2dEnableQuery})});
     return ex;
 }
 

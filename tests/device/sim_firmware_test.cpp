@@ -302,7 +302,7 @@ TEST(SimFirmware, CorruptedRequestIsNeverExecuted)
 TEST(SimFirmware, UnknownTypeGetsUnknownCommand)
 {
     Host h(dev::sim::analyzerConfig());
-    for (std::uint8_t type : {std::uint8_t{0x1E}, std::uint8_t{0x3F}, std::uint8_t{0x00}, std::uint8_t{0x55}}) {
+    for (std::uint8_t type : {std::uint8_t{0x3E}, std::uint8_t{0x3F}, std::uint8_t{0x00}, std::uint8_t{0x55}}) {
         std::vector<std::uint8_t> wire;
         ASSERT_TRUE(dev::proto::encodeFrame(type, 77, nullptr, 0, wire));
         h.replies.clear();

@@ -24,6 +24,7 @@ QString scan(const motion::msg::Message& m);        ///< "scan."
 QString tuning(const motion::msg::Message& m);      ///< "tuning."
 QString gauge(const motion::msg::Message& m);       ///< "gauge." (accuracy_bench_words.cpp)
 QString imaging(const motion::msg::Message& m);     ///< "imaging." (imaging_words.cpp)
+QString grid(const motion::msg::Message& m);        ///< "grid.", "stage_errors.", "compensation2d." (grid_words.cpp)
 
 // What an area's table does not word yet, in a context of its own whose Chinese is
 // pending (tests/build/translations.cmake): the area's function falls back to these.
@@ -43,5 +44,6 @@ QString patternTerm(const std::string& id);     ///< "segment.", "pattern.state.
 QString recipeTerm(const std::string& id);      ///< "recipe.state.", "recipe.move.", "recipe.step."
 QString scanTerm(const std::string& id);        ///< "scan.state."
 QString tuningTerm(const std::string& id);      ///< "tuning.state.", "tuning.end.", "tuning.outcome.", "tuning.rule."
+QString gridTerm(const std::string& id);        ///< "compensation2d.request."
 
 } // namespace ui::words::areas

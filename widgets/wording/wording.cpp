@@ -21,7 +21,10 @@ using TermFn = QString (*)(const std::string&);
 const std::pair<const char*, SentenceFn> kSentences[] = {
     {"capability.", &areas::capability},
     {"accuracy.", &areas::accuracy},
+    {"compensation2d.", &areas::grid},
     {"compensation.", &areas::accuracy},
+    {"grid.", &areas::grid},
+    {"stage_errors.", &areas::grid},
     {"device.why.", &areas::deviceEvent},
     {"device.refused", &areas::refusal},
     {"request.", &areas::device},
@@ -50,6 +53,7 @@ const TermFn kTerms[] = {
     &areas::recipeTerm,
     &areas::scanTerm,
     &areas::tuningTerm,
+    &areas::gridTerm,
 };
 
 bool startsWith(const std::string& s, const char* prefix)

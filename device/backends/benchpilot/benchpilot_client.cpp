@@ -9,6 +9,7 @@
 
 #include "device/backends/benchpilot/protocol_path_client.h"
 #include "device/backends/benchpilot/protocol_compensation_client.h"
+#include "device/backends/benchpilot/protocol_compensation_2d_client.h"
 #include "device/backends/benchpilot/protocol_tuning_client.h"
 
 #include <QCoreApplication>
@@ -17,7 +18,8 @@ namespace dev {
 
 BenchPilotClient::BenchPilotClient(QObject* parent)
     : Instrument(parent), m_paths(new ProtocolPathClient(this, this)), m_tuning(new ProtocolTuningClient(this, this)),
-      m_compensation(new ProtocolCompensationClient(this, this))
+      m_compensation(new ProtocolCompensationClient(this, this)),
+      m_compensation2d(new ProtocolCompensation2dClient(this, this))
 {
     m_clock.start();
     m_timeoutTimer.setInterval(kCheckPeriodMs);

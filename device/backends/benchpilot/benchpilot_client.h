@@ -23,6 +23,7 @@
 namespace dev {
 
 class ProtocolCompensationClient;
+class ProtocolCompensation2dClient;
 class ProtocolPathClient;
 class ProtocolTuningClient;
 
@@ -98,6 +99,7 @@ public:
     PathClient* paths() override;
     TuningClient* tuning() override;
     CompensationClient* compensation() override;
+    Compensation2dClient* compensation2d() override;
 
     /// Any request of the protocol, with its reply payload handed back: how the parts
     /// (tuning, paths) talk to the device without this class growing a method per message.
@@ -193,6 +195,7 @@ private:
     ProtocolPathClient* m_paths;
     ProtocolTuningClient* m_tuning;
     ProtocolCompensationClient* m_compensation;
+    ProtocolCompensation2dClient* m_compensation2d;
 };
 
 } // namespace dev

@@ -4,6 +4,7 @@
 #include "device/backends/benchpilot/benchpilot_client.h"
 
 #include "device/backends/benchpilot/protocol_compensation_client.h"
+#include "device/backends/benchpilot/protocol_compensation_2d_client.h"
 #include "device/backends/benchpilot/protocol_path_client.h"
 #include "device/backends/benchpilot/protocol_tuning_client.h"
 #include "device/protocol/messages_compensation.h"
@@ -138,5 +139,6 @@ void BenchPilotClient::pulseTrigger(double, Callback done)
 PathClient* BenchPilotClient::paths() { return m_paths; }
 TuningClient* BenchPilotClient::tuning() { return m_tuning; }
 CompensationClient* BenchPilotClient::compensation() { return m_compensation; }
+Compensation2dClient* BenchPilotClient::compensation2d() { return m_compensation2d; }
 
 } // namespace dev

@@ -35,6 +35,7 @@
 #include "device/protocol/frame_codec.h"
 #include "device/protocol/messages.h"
 #include "device/protocol/messages_compensation.h"
+#include "device/protocol/messages_compensation_2d.h"
 #include "device/protocol/messages_tuning.h"
 #include "device/protocol/messages_path.h"
 #include "device/sim/firmware.h"
@@ -212,6 +213,12 @@ void checkAllDecoders(const Bytes& p)
     checkDecoder(p, &dev::proto::decodeCompGetRequest, "decodeCompGetRequest");
     checkDecoder(p, &dev::proto::decodeCompGetReply, "decodeCompGetReply");
     checkDecoder(p, &dev::proto::decodeCompEnableRequest, "decodeCompEnableRequest");
+    checkDecoder(p, &dev::proto::decodeComp2dUploadRequest, "decodeComp2dUploadRequest");
+    checkDecoder(p, &dev::proto::decodeComp2dUploadReply, "decodeComp2dUploadReply");
+    checkDecoder(p, &dev::proto::decodeComp2dEnableRequest, "decodeComp2dEnableRequest");
+    checkDecoder(p, &dev::proto::decodeComp2dEnableReply, "decodeComp2dEnableReply");
+    if (const auto u = dev::proto::decodeComp2dUploadRequest(p))
+        CHECK(u->nodes.size() <= dev::proto::kMaxComp2dNodesPerFrame, "COMP2D_UPLOAD node count");
     if (const auto a = dev::proto::decodePathAppendRequest(p))
         CHECK(!a->segments.empty() && a->segments.size() <= std::size_t(dev::proto::kMaxPathSegmentsPerAppend), "PATH_APPEND segment count");
     const auto move = dev::proto::decodeMoveRequest(p);
@@ -359,7 +366,8 @@ private:
 bool knownRequest(std::uint8_t t)
 {
     return (t >= 0x01 && t <= 0x0A) || (t >= 0x20 && t <= 0x22) || dev::proto::tuningTypeName(t) != nullptr
-        || (t >= 0x10 && t <= 0x12) || (t >= 0x24 && t <= 0x26) || dev::proto::compensationTypeName(t) != nullptr;
+        || (t >= 0x10 && t <= 0x12) || (t >= 0x24 && t <= 0x26) || dev::proto::compensationTypeName(t) != nullptr
+        || dev::proto::compensation2dTypeName(t) != nullptr;
 }
 
 struct FirmwareChecker {
@@ -469,6 +477,17 @@ struct FirmwareChecker {
             if (req.type == static_cast<std::uint8_t>(dev::proto::kGetCapture)) {
                 const auto c = dev::proto::decodeCaptureReply(rep.payload);
                 CHECK(c && c->axis < axes && c->first + c->samples.size() <= c->total, "GET_CAPTURE reply wrong");
+                break;
+            }
+            if (req.type == static_cast<std::uint8_t>(dev::proto::kComp2dUpload)) {
+                const auto u = dev::proto::decodeComp2dUploadReply(rep.payload);
+                CHECK(u.has_value(), "COMP2D_UPLOAD reply does not decode");
+                break;
+            }
+            if (req.type == static_cast<std::uint8_t>(dev::proto::kComp2dEnable)) {
+                const auto e = dev::proto::decodeComp2dEnableReply(rep.payload);
+                CHECK(e && ((e->state & dev::proto::Comp2dInstalled) != 0) == (e->columns >= 2 && e->rows >= 2),
+                      "COMP2D_ENABLE reply's state and grid disagree");
                 break;
             }
             CHECK(rep.payload.empty(), "reply to 0x%02X has a %zu-byte payload", unsigned{req.type}, rep.payload.size());

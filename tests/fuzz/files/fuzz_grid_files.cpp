@@ -1,0 +1,74 @@
+// Fuzz targets "stage-errors", "grid-map-result" and "compensation-2d": the readers of
+// the simulated stage's error file, a grid map's result and the 2D compensation table.
+// Invariants: no crash; a refusal says where and what; an accepted file writes out,
+// reads back and writes out the same; an accepted map's table, if it makes one,
+// is one a device takes or is refused with a reason.
+#include "fuzz_files.h"
+
+#include "device/files/accuracy/grid/compensation_2d_file.h"
+#include "device/files/accuracy/grid/grid_map_result_file.h"
+#include "device/files/accuracy/grid/stage_errors_file.h"
+
+namespace {
+
+void checkProblemsSayWhere(const motion::msg::Problems& problems, bool accepted)
+{
+    for (const motion::msg::Problem& p : problems)
+        if (p.file != "fuzz.json" || p.line < 1 || p.message.id.empty())
+            fuzzfiles::fail("a problem that does not say where or what: " + motion::msg::debugFormat(problems));
+    if (!accepted && problems.empty())
+        fuzzfiles::fail("refused without a problem");
+}
+
+void checkStageErrors(std::string_view input)
+{
+    using namespace dev::files::accuracy;
+    const StageErrorsRead r = stageErrorsFromJson(input, "fuzz.json");
+    checkProblemsSayWhere(r.problems, r.errors.has_value());
+    if (!r.errors)
+        return;
+    const std::string once = stageErrorsToJson(*r.errors);
+    const StageErrorsRead again = stageErrorsFromJson(once, "again.json");
+    if (!again.errors)
+        fuzzfiles::fail("written stage errors do not read back: " + motion::msg::debugFormat(again.problems));
+    if (stageErrorsToJson(*again.errors) != once)
+        fuzzfiles::fail("write → read → write changed the stage errors");
+}
+
+void checkGridMapResult(std::string_view input)
+{
+    using namespace dev::files::accuracy;
+    const GridMapResultRead r = gridMapResultFromJson(input, "fuzz.json");
+    checkProblemsSayWhere(r.problems, r.file.has_value());
+    if (!r.file)
+        return;
+    const std::string once = gridMapResultToJson(*r.file);
+    const GridMapResultRead again = gridMapResultFromJson(once, "again.json");
+    if (!again.file)
+        fuzzfiles::fail("a written map does not read back: " + motion::msg::debugFormat(again.problems));
+    if (gridMapResultToJson(*again.file) != once)
+        fuzzfiles::fail("write → read → write changed the map");
+    (void)motion::metrology::compensationFromMap(r.file->result);
+}
+
+void checkCompensation2D(std::string_view input)
+{
+    using namespace dev::files::accuracy;
+    const Compensation2DRead r = compensation2DFromJson(input, "fuzz.json");
+    checkProblemsSayWhere(r.problems, r.file.has_value());
+    if (!r.file)
+        return;
+    const std::string once = compensation2DToJson(*r.file);
+    const Compensation2DRead again = compensation2DFromJson(once, "again.json");
+    if (!again.file)
+        fuzzfiles::fail("a written table does not read back: " + motion::msg::debugFormat(again.problems));
+    if (compensation2DToJson(*again.file) != once)
+        fuzzfiles::fail("write → read → write changed the table");
+    (void)compensation2DToCsv(r.file->table);
+}
+
+} // namespace
+
+BP_FUZZ_FILE_TARGET({"stage-errors", [] { return fuzzfiles::exampleFiles(".stage-errors.json"); }, checkStageErrors});
+BP_FUZZ_FILE_TARGET({"grid-map-result", [] { return fuzzfiles::exampleFiles(".grid-map-result.json"); }, checkGridMapResult});
+BP_FUZZ_FILE_TARGET({"compensation-2d", [] { return fuzzfiles::exampleFiles(".compensation-2d.json"); }, checkCompensation2D});
