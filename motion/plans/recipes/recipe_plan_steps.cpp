@@ -55,7 +55,7 @@ void Planner::aspirateAt(int step, const Place& pl, double vol, double speed, co
     PlanOp& op = newOp(step, StepType::Aspirate, &pl, vol);
     goInto(op, pl);
     pump(op, vol, speed);
-    raiseTo(op, m_safeZ);
+    leave(op);
     m_liquid += vol;
     if (!pl.well.empty()) {
         WellTotal& t = totalOf(pl);
@@ -77,7 +77,7 @@ void Planner::dispenseAt(int step, const Place& pl, double vol, double speed, do
         travelTo(op, {pl.at.x + dir.x, pl.at.y + dir.y}, MoveKind::Touch);
         travelTo(op, pl.at, MoveKind::Touch);
     }
-    raiseTo(op, m_safeZ);
+    leave(op);
     m_liquid -= vol;
     if (!pl.well.empty()) {
         WellTotal& t = totalOf(pl);
@@ -108,11 +108,14 @@ void Planner::planStep(int i)
         const bool volOk = checkVolume(s, path, true);
         std::vector<Place> places;
         if (!s.station.empty()) {
+            if (s.order && *s.order != WellOrder::AsWritten)
+                error(fieldPath(path, "order"), msg::make("recipe.order_without_wells", {textArg("order", wellOrderName(*s.order))}));
             Place pl;
             if (stationPlace(s.station, fieldPath(path, "station"), &pl))
                 places.push_back(pl);
         } else {
             places = wellPlaces(s, path);
+            orderPlaces(i, s, places);
         }
         if (!volOk)
             return;
@@ -151,7 +154,8 @@ void Planner::planStep(int i)
     case StepType::Mix: {
         checkCycles(s, path);
         const bool ok = checkVolume(s, path, true);
-        const std::vector<Place> places = wellPlaces(s, path);
+        std::vector<Place> places = wellPlaces(s, path);
+        orderPlaces(i, s, places);
         if (!ok)
             return;
         roomFor(s.volumeUl, fieldPath(path, "volume_ul"), &reported);
@@ -166,7 +170,7 @@ void Planner::planStep(int i)
                 pump(op, s.volumeUl, speed);
                 pump(op, -s.volumeUl, speed);
             }
-            raiseTo(op, m_safeZ);
+            leave(op);
             ++totalOf(pl).visits;
         }
         return;
@@ -188,7 +192,7 @@ void Planner::planStep(int i)
             pump(op, s.volumeUl, speed);
             pump(op, -s.volumeUl, speed);
         }
-        raiseTo(op, m_safeZ);
+        leave(op);
         return;
     }
     case StepType::AirGap: {
@@ -217,7 +221,8 @@ void Planner::planStep(int i)
         return;
     }
     case StepType::TouchOff: {
-        const std::vector<Place> places = wellPlaces(s, path);
+        std::vector<Place> places = wellPlaces(s, path);
+        orderPlaces(i, s, places);
         if (!(s.offsetMm > 0) || !std::isfinite(s.offsetMm)) {
             error(fieldPath(path, "offset_mm"), msg::make("plate.not_positive", {mmArg("value", s.offsetMm)}));
             return;
@@ -232,7 +237,7 @@ void Planner::planStep(int i)
             const PointMm dir = pl.transform.applyVector({s.offsetMm, 0});
             travelTo(op, {pl.at.x + dir.x, pl.at.y + dir.y}, MoveKind::Touch);
             travelTo(op, pl.at, MoveKind::Touch);
-            raiseTo(op, m_safeZ);
+            leave(op);
         }
         return;
     }
