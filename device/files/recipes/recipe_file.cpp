@@ -18,13 +18,14 @@ constexpr double kRecipeBig = 1e9;
 std::vector<std::string_view> fieldsOf(StepType t)
 {
     switch (t) {
-    case StepType::Aspirate: return {"plate", "wells", "station", "volume_ul", "speed_ul_s"};
-    case StepType::Dispense: return {"plate", "wells", "station", "volume_ul", "speed_ul_s", "source", "touch_off_mm"};
-    case StepType::Mix: return {"plate", "wells", "volume_ul", "cycles", "speed_ul_s"};
+    case StepType::Aspirate: return {"plate", "wells", "station", "volume_ul", "speed_ul_s", "order"};
+    case StepType::Dispense:
+        return {"plate", "wells", "station", "volume_ul", "speed_ul_s", "source", "touch_off_mm", "order", "distribute", "disposal_ul", "air_gap_ul", "rest_to"};
+    case StepType::Mix: return {"plate", "wells", "volume_ul", "cycles", "speed_ul_s", "order"};
     case StepType::Wash: return {"station", "volume_ul", "cycles", "speed_ul_s"};
     case StepType::AirGap: return {"volume_ul", "speed_ul_s"};
     case StepType::Wait: return {"seconds"};
-    case StepType::TouchOff: return {"plate", "wells", "offset_mm"};
+    case StepType::TouchOff: return {"plate", "wells", "offset_mm", "order"};
     }
     return {};
 }
@@ -58,6 +59,18 @@ void readWells(ObjectReader& o, const Value& step, plates::Step& s, jsonio::Prob
     } else {
         problems.add(*w, o.pathOf("wells"), msg::make("recipe.file.wells_wrong_type", {msg::term("actual", jsonio::typeTerm(w->type()))}));
     }
+}
+
+std::optional<plates::WellOrder> readOrder(ObjectReader& o, const Value& owner, jsonio::Problems& problems)
+{
+    const auto name = o.string("order", false);
+    if (!name)
+        return std::nullopt;
+    const auto order = plates::wellOrderFromName(*name);
+    if (!order)
+        problems.add(*owner.find("order"), o.pathOf("order"), msg::make("recipe.file.unknown_order", {msg::verbatim("order", name->substr(0, 40)),
+                                                                                                         msg::verbatim("orders", plates::wellOrderList())}));
+    return order;
 }
 
 plates::Step readStep(const Value& v, const std::string& path, jsonio::Problems& problems)
@@ -114,6 +127,14 @@ plates::Step readStep(const Value& v, const std::string& path, jsonio::Problems&
         s.offsetMm = o.number("offset_mm", true, -kRecipeBig, kRecipeBig).value_or(0);
     if (*t == StepType::Dispense)
         s.offsetMm = o.number("touch_off_mm", false, -kRecipeBig, kRecipeBig).value_or(0);
+    if (takes(*t, "order"))
+        s.order = readOrder(o, v, problems);
+    if (*t == StepType::Dispense) {
+        s.distribute = o.boolean("distribute", false).value_or(false);
+        s.disposalUl = o.number("disposal_ul", false, -kRecipeBig, kRecipeBig).value_or(0);
+        s.airGapUl = o.number("air_gap_ul", false, -kRecipeBig, kRecipeBig).value_or(0);
+        s.restTo = o.string("rest_to", false).value_or("");
+    }
     if (takes(*t, "source"))
         if (const Value* src = o.get("source", Value::Type::Object, false)) {
             ObjectReader so(*src, o.pathOf("source"), problems);
@@ -148,17 +169,38 @@ RecipeRead parseRecipe(std::string_view text)
     if (!r.root)
         return r;
     const Value& root = *r.root;
-    if (!jsonio::checkSchema(root, kRecipeSchema, kRecipeVersion, r.problems))
+    const auto version = jsonio::checkSchema(root, kRecipeSchema, kRecipeVersion, r.problems);
+    if (!version)
         return r;
     ObjectReader o(root, "", r.problems);
-    o.refuseUnknown({"schema", "version", "name", "description", "travel_speed_mm_s", "z_speed_mm_s", "plates", "steps"});
+    o.refuseUnknown({"schema", "version", "name", "description", "travel_speed_mm_s", "z_speed_mm_s", "order", "travel", "plates", "steps"});
     plates::Recipe rec;
+    // Version 1 recipes travel straight up and down, as they always did; from version 2
+    // the tip travels in arches unless the recipe says otherwise.
+    rec.travel.mode = *version >= 2 ? plates::TravelMode::Arched : plates::TravelMode::StraightUpDown;
+    if (const Value* travel = root.find("travel")) {
+        if (*version < 2)
+            r.problems.add(*travel, "travel", msg::make("recipe.file.travel_needs_version", {msg::integer("version", *version)}));
+        else if (const Value* t = o.get("travel", Value::Type::Object, false)) {
+            ObjectReader to(*t, "travel", r.problems);
+            to.refuseUnknown({"mode", "clearance_in_plate_mm", "clearance_between_mm"});
+            if (const auto mode = to.string("mode", false)) {
+                if (const auto m = plates::travelModeFromName(*mode))
+                    rec.travel.mode = *m;
+                else
+                    r.problems.add(*t->find("mode"), "travel.mode", msg::make("recipe.file.unknown_travel_mode", {msg::verbatim("mode", mode->substr(0, 40))}));
+            }
+            rec.travel.clearanceInPlateMm = to.number("clearance_in_plate_mm", false, -kRecipeBig, kRecipeBig).value_or(5);
+            rec.travel.clearanceBetweenMm = to.number("clearance_between_mm", false, -kRecipeBig, kRecipeBig).value_or(10);
+        }
+    }
     rec.name = o.string("name", false).value_or("");
     rec.description = o.string("description", false).value_or("");
     if (root.find("travel_speed_mm_s"))
         rec.travelSpeedMmS = o.number("travel_speed_mm_s", false, -kRecipeBig, kRecipeBig);
     if (root.find("z_speed_mm_s"))
         rec.zSpeedMmS = o.number("z_speed_mm_s", false, -kRecipeBig, kRecipeBig);
+    rec.order = readOrder(o, root, r.problems);
     if (const Value* plates = o.get("plates", Value::Type::Array, true)) {
         for (std::size_t k = 0; k < plates->items().size() && k < 64; ++k) {
             ObjectReader p(plates->items()[k], jsonio::childPath("plates", k), r.problems);
@@ -212,7 +254,10 @@ Value wellsJson(const std::vector<std::string>& wells)
 
 std::string writeRecipe(const plates::Recipe& rec)
 {
-    Value v = jsonio::schemaObject(kRecipeSchema, kRecipeVersion);
+    // A recipe that travels as version 1 did is written as version 1, which every
+    // BenchPilot reads the same; anything else needs version 2 and says how it travels.
+    const bool v1 = rec.travel.isDefault();
+    Value v = jsonio::schemaObject(kRecipeSchema, v1 ? 1 : kRecipeVersion);
     v.set("name", rec.name);
     if (!rec.description.empty())
         v.set("description", rec.description);
@@ -220,6 +265,15 @@ std::string writeRecipe(const plates::Recipe& rec)
         v.set("travel_speed_mm_s", *rec.travelSpeedMmS);
     if (rec.zSpeedMmS)
         v.set("z_speed_mm_s", *rec.zSpeedMmS);
+    if (rec.order)
+        v.set("order", plates::wellOrderName(*rec.order));
+    if (!v1) {
+        Value t = Value::object();
+        t.set("mode", plates::travelModeName(rec.travel.mode));
+        t.set("clearance_in_plate_mm", rec.travel.clearanceInPlateMm);
+        t.set("clearance_between_mm", rec.travel.clearanceBetweenMm);
+        v.set("travel", std::move(t));
+    }
     Value plates = Value::array();
     for (const plates::RecipePlate& p : rec.plates) {
         Value x = Value::object();
@@ -263,6 +317,18 @@ std::string writeRecipe(const plates::Recipe& rec)
                 src.set("well", s.source.well);
             }
             x.set("source", std::move(src));
+        }
+        if (takes(s.type, "order") && s.order)
+            x.set("order", plates::wellOrderName(*s.order));
+        if (s.type == StepType::Dispense) {
+            if (s.distribute)
+                x.set("distribute", true);
+            if (s.disposalUl != 0)
+                x.set("disposal_ul", s.disposalUl);
+            if (s.airGapUl != 0)
+                x.set("air_gap_ul", s.airGapUl);
+            if (!s.restTo.empty())
+                x.set("rest_to", s.restTo);
         }
         if (!s.note.empty())
             x.set("note", s.note);

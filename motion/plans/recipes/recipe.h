@@ -78,6 +78,13 @@ struct Step {
     double seconds = 0;              ///< wait
     double offsetMm = 0;             ///< touch_off: from the centre toward the well's +x wall; dispense: touch off after each well when > 0
     SourceRef source;                ///< dispense: refill from here (transfer in rounds)
+    /// Dispense with a source: one aspiration for as many wells as the syringe holds
+    /// with `disposalUl` more (and `airGapUl` of air drawn after it), the wells in
+    /// order, then the disposal volume back to the source (or to the station `restTo`).
+    bool distribute = false;
+    double disposalUl = 0;           ///< extra drawn each round and returned: the last well gets as much as the first
+    double airGapUl = 0;             ///< air drawn after each round's aspiration; it leaves with the first well's dispense
+    std::string restTo;              ///< "" = back to the source; or a deck station ("waste")
     std::optional<WellOrder> order;  ///< the wells' order; none = the recipe's default
     std::string note;                ///< free text for the person reading the recipe
 };

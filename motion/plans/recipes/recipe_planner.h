@@ -124,6 +124,11 @@ private:
     /// syringe has room for, one aspirate from the source before each round.
     void planTransfer(int i, const Step& s, const std::string& path, const std::vector<Place>& targets, double speed);
 
+    /// A transfer with `distribute`: each round draws its wells plus the disposal
+    /// volume (and an air gap), doses the wells, and returns the disposal volume.
+    void planDistribute(int i, const Step& s, const std::string& path, const std::vector<Place>& targets, double speed, const Place& src,
+                        double room);
+
     void finish();
 
     const Recipe& m_r;
