@@ -204,7 +204,11 @@ void addRecipeCommands(std::vector<Command>& list)
                                   QList<QCommandLineOption>(setupOptions)
                                       << QCommandLineOption(QStringLiteral("compare-orders"),
                                                             tr("also plan every well order (as-written, column-major, snake-rows, snake-columns, shortest): time and bound of each")),
-                                  plan, {}, api("recipe.plan", Access::Compute)});
+                                  plan, {}, [&] {
+                                      ApiSpec a = api("recipe.plan", Access::Compute);
+                                      a.params << optionParam("compare-orders", ParamType::Boolean);
+                                      return a;
+                                  }()});
     QList<QCommandLineOption> runOptions = setupOptions;
     runOptions << QCommandLineOption(QStringLiteral("log"), tr("the run log to write (a new file; default RECIPE-DATE.run.jsonl here)"),
                                      QStringLiteral("RUN.jsonl"))

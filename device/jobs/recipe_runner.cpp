@@ -478,9 +478,9 @@ double RecipeRunner::deviceRate() const
 void RecipeRunner::checkDwell(bool begin)
 {
     // A wait lasts its seconds on the device's clock, where the plan's seconds are
-    // counted: the wall clock's timer sleeps for about that long (at the device's
-    // rate), then a fresh status says whether they have passed, and the rest is
-    // slept again. Never short, and a sped-up simulator's wait is its plan's.
+    // counted: the wall clock's timer sleeps part of what is left (at the device's
+    // rate), then a fresh status says what is left. Never short, and a sped-up
+    // simulator's wait is its plan's.
     if (!m_inFlight || m_inFlight->kind != MoveKind::Dwell)
         return;
     const QPointer<RecipeRunner> self(this);
@@ -501,7 +501,10 @@ void RecipeRunner::checkDwell(bool begin)
             moveArrived();
             return;
         }
-        m_dwellTimer.start(std::max(1, static_cast<int>(std::lround(leftS / deviceRate() * 1000))));
+        // Half of what seems left, then look again: a rate misjudged either way never
+        // makes the wait run long by more than a status's round trip.
+        // (At most kMoveCheckMs at a time: before the rate is known it is taken as 1.)
+        m_dwellTimer.start(std::clamp(static_cast<int>(std::lround(0.5 * leftS / deviceRate() * 1000)), 1, kMoveCheckMs));
     });
 }
 
