@@ -218,6 +218,20 @@ void PlateMap::paintEvent(QPaintEvent*)
             p.drawRect(QRectF(c.x() - w.sizeXMm / 2 * s, c.y() - w.sizeYMm / 2 * s, w.sizeXMm * s, w.sizeYMm * s));
         }
     }
+    if (m_path.size() > 1) {
+        // Over the wells, thin and half transparent: the wells' colours still read through.
+        QPolygonF line;
+        for (const QString& name : m_path)
+            if (const plates::Well* w = m_labware.wellNamed(name.toStdString()))
+                line << toWidget(w->xMm, w->yMm);
+        p.setPen(QPen(QColor(0xe6, 0x51, 0x00, 170), 1.5));
+        p.setBrush(Qt::NoBrush);
+        p.drawPolyline(line);
+        if (!line.isEmpty()) {
+            p.setBrush(QColor(0xe6, 0x51, 0x00));
+            p.drawEllipse(line.front(), 3, 3);  // where the path begins
+        }
+    }
     if (m_dragging && m_pressAt) {
         p.setPen(QPen(QColor(0x1a, 0x23, 0x7e), 1, Qt::DashLine));
         p.setBrush(QColor(0x1a, 0x23, 0x7e, 30));
@@ -226,6 +240,14 @@ void PlateMap::paintEvent(QPaintEvent*)
     p.setPen(QColor(0x33, 0x33, 0x33));
     p.drawText(QRectF(footprint.left(), footprint.bottom() + 2, footprint.width(), kMarginPx - 4), Qt::AlignLeft | Qt::AlignTop,
                m_title + tr("  ·  %1 × %2 mm, drawn to scale").arg(m_labware.lengthMm).arg(m_labware.widthMm));
+}
+
+void PlateMap::setPath(const QStringList& wellsInOrder)
+{
+    if (wellsInOrder == m_path)
+        return;
+    m_path = wellsInOrder;
+    update();
 }
 
 void PlateMap::mousePressEvent(QMouseEvent* e)

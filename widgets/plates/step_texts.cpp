@@ -29,6 +29,19 @@ QString stepTypeTitle(plates::StepType type)
     return QString::fromLatin1(plates::stepTypeName(type));
 }
 
+QString wellOrderTitle(plates::WellOrder order)
+{
+    using plates::WellOrder;
+    switch (order) {
+    case WellOrder::AsWritten: return StepTexts::tr("As written");
+    case WellOrder::ColumnMajor: return StepTexts::tr("Column by column");
+    case WellOrder::SnakeRows: return StepTexts::tr("Snake rows");
+    case WellOrder::SnakeColumns: return StepTexts::tr("Snake columns");
+    case WellOrder::Shortest: return StepTexts::tr("Shortest");
+    }
+    return QString::fromLatin1(plates::wellOrderName(order));
+}
+
 QString opTitle(const plates::PlanOp& op)
 {
     using plates::StepType;
