@@ -204,6 +204,17 @@ void PlateMap::paintEvent(QPaintEvent*)
         const QPointF at = toWidget(w->xMm, 0);
         p.drawText(QRectF(at.x() - 15, at.y() - kMarginPx, 30, kMarginPx - 3), Qt::AlignHCenter | Qt::AlignBottom, QString::number(c + 1));
     }
+    if (m_path.size() > 1) {
+        // Under the wells: the line shows between them, over the rims it crosses, and each
+        // well keeps its colour.
+        QPolygonF line;
+        for (const QString& name : m_path)
+            if (const plates::Well* w = m_labware.wellNamed(name.toStdString()))
+                line << toWidget(w->xMm, w->yMm);
+        p.setPen(QPen(QColor(0xe6, 0x51, 0x00), 2));
+        p.setBrush(Qt::NoBrush);
+        p.drawPolyline(line);
+    }
     for (const plates::Well& w : m_labware.wells) {
         const QString name = QString::fromStdString(plates::wellName(w.id));
         const WellState st = m_states.value(name, WellState::Unused);
@@ -216,20 +227,6 @@ void PlateMap::paintEvent(QPaintEvent*)
             p.drawEllipse(c, r, r);
         } else {
             p.drawRect(QRectF(c.x() - w.sizeXMm / 2 * s, c.y() - w.sizeYMm / 2 * s, w.sizeXMm * s, w.sizeYMm * s));
-        }
-    }
-    if (m_path.size() > 1) {
-        // Over the wells, thin and half transparent: the wells' colours still read through.
-        QPolygonF line;
-        for (const QString& name : m_path)
-            if (const plates::Well* w = m_labware.wellNamed(name.toStdString()))
-                line << toWidget(w->xMm, w->yMm);
-        p.setPen(QPen(QColor(0xe6, 0x51, 0x00, 170), 1.5));
-        p.setBrush(Qt::NoBrush);
-        p.drawPolyline(line);
-        if (!line.isEmpty()) {
-            p.setBrush(QColor(0xe6, 0x51, 0x00));
-            p.drawEllipse(line.front(), 3, 3);  // where the path begins
         }
     }
     if (m_dragging && m_pressAt) {

@@ -73,6 +73,14 @@ RunPanel::RunPanel(jobs::RecipeRunner* runner, QWidget* parent) : QWidget(parent
     m_speed->setToolTip(tr("The bound is the least time any controller could take for these wells in this order under the axes' limits "
                            "and the travel rules (docs/recipes.md)"));
     pv->addWidget(m_speed);
+    m_table = new QTableWidget(0, 8, planBox);
+    m_table->setHorizontalHeaderLabels({tr("#"), tr("Step"), tr("What"), tr("Where"), tr("X (mm)"), tr("Y (mm)"), tr("Plunger (µL)"), tr("Starts at")});
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->verticalHeader()->setVisible(false);
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    // Made after the plan table (which stays the panel's first table), shown above it.
     m_orders = new QTableWidget(0, 4, planBox);
     m_orders->setObjectName(QStringLiteral("orderComparison"));
     m_orders->setHorizontalHeaderLabels({tr("Well order"), tr("Planned"), tr("Bound"), tr("Planned / bound")});
@@ -83,13 +91,6 @@ RunPanel::RunPanel(jobs::RecipeRunner* runner, QWidget* parent) : QWidget(parent
     m_orders->setMaximumHeight(m_orders->horizontalHeader()->sizeHint().height() * 7);
     m_orders->setToolTip(tr("Every step with wells planned in each order; the recipe's own order is the one shown above"));
     pv->addWidget(m_orders);
-    m_table = new QTableWidget(0, 8, planBox);
-    m_table->setHorizontalHeaderLabels({tr("#"), tr("Step"), tr("What"), tr("Where"), tr("X (mm)"), tr("Y (mm)"), tr("Plunger (µL)"), tr("Starts at")});
-    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_table->horizontalHeader()->setStretchLastSection(true);
-    m_table->verticalHeader()->setVisible(false);
-    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     pv->addWidget(m_table);
     v->addWidget(planBox, 3);
 
