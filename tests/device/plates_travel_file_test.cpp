@@ -8,17 +8,17 @@
 
 #include <gtest/gtest.h>
 
-using namespace platefiles;
+using namespace dev::files::plates;
 using platestest::examplePath;
 using platestest::text;
 
 namespace {
 
-plates::PlanContext travelContext()
+motion::plates::PlanContext travelContext()
 {
-    plates::PlanContext c;
+    motion::plates::PlanContext c;
     c.deck = builtinDeck();
-    for (auto& lw : plates::builtinLabware())
+    for (auto& lw : motion::plates::builtinLabware())
         c.labware[lw.id] = lw;
     return c;
 }
@@ -27,7 +27,7 @@ std::string checkTravel(const std::string& recipe)
 {
     RecipeRead r = parseRecipe(recipe);
     if (r.recipe)
-        placeProblems(r, plates::planRecipe(*r.recipe, travelContext()).problems);
+        placeProblems(r, motion::plates::planRecipe(*r.recipe, travelContext()).problems);
     return i18ntest::englishFormat(r.problems, "t.recipe.json");
 }
 
@@ -47,18 +47,18 @@ TEST(PlateTravelFile, VersionTwoArchesVersionOneGoesStraight)
 {
     const RecipeRead v1 = parseRecipe(recipeText(1, "", kStep));
     ASSERT_TRUE(v1.recipe) << text(v1.problems);
-    EXPECT_EQ(v1.recipe->travel.mode, plates::TravelMode::StraightUpDown);
+    EXPECT_EQ(v1.recipe->travel.mode, motion::plates::TravelMode::StraightUpDown);
     const RecipeRead v2 = parseRecipe(recipeText(2, "", kStep));
     ASSERT_TRUE(v2.recipe) << text(v2.problems);
-    EXPECT_EQ(v2.recipe->travel.mode, plates::TravelMode::Arched);
+    EXPECT_EQ(v2.recipe->travel.mode, motion::plates::TravelMode::Arched);
     const RecipeRead asked = parseRecipe(recipeText(2, "  \"travel\": {\"mode\": \"straight-up-down\", \"clearance_in_plate_mm\": 3},\n", kStep));
     ASSERT_TRUE(asked.recipe) << text(asked.problems);
-    EXPECT_EQ(asked.recipe->travel.mode, plates::TravelMode::StraightUpDown);
+    EXPECT_EQ(asked.recipe->travel.mode, motion::plates::TravelMode::StraightUpDown);
     EXPECT_DOUBLE_EQ(asked.recipe->travel.clearanceInPlateMm, 3);
     EXPECT_DOUBLE_EQ(asked.recipe->travel.clearanceBetweenMm, 10);
     // Straight up and down plans exactly as version 1 does.
-    EXPECT_DOUBLE_EQ(plates::planRecipe(*asked.recipe, travelContext()).totalTimeS, plates::planRecipe(*v1.recipe, travelContext()).totalTimeS);
-    EXPECT_LT(plates::planRecipe(*v2.recipe, travelContext()).totalTimeS, plates::planRecipe(*v1.recipe, travelContext()).totalTimeS);
+    EXPECT_DOUBLE_EQ(motion::plates::planRecipe(*asked.recipe, travelContext()).totalTimeS, motion::plates::planRecipe(*v1.recipe, travelContext()).totalTimeS);
+    EXPECT_LT(motion::plates::planRecipe(*v2.recipe, travelContext()).totalTimeS, motion::plates::planRecipe(*v1.recipe, travelContext()).totalTimeS);
 }
 
 TEST(PlateTravelFile, BadTravelAndOrdersAreNamedWithTheirPlace)
@@ -93,26 +93,26 @@ TEST(PlateTravelFile, WrittenBackTheSameAndVersionOneStaysVersionOne)
     const RecipeRead again = parseRecipe(once);
     ASSERT_TRUE(again.recipe) << text(again.problems);
     EXPECT_EQ(writeRecipe(*again.recipe), once);
-    EXPECT_EQ(again.recipe->travel.mode, plates::TravelMode::Arched);
-    EXPECT_EQ(again.recipe->order, plates::WellOrder::Shortest);
-    EXPECT_EQ(again.recipe->steps[0].order, plates::WellOrder::SnakeColumns);
+    EXPECT_EQ(again.recipe->travel.mode, motion::plates::TravelMode::Arched);
+    EXPECT_EQ(again.recipe->order, motion::plates::WellOrder::Shortest);
+    EXPECT_EQ(again.recipe->steps[0].order, motion::plates::WellOrder::SnakeColumns);
 }
 
 TEST(PlateTravelFile, TheArchedFillExampleLoadsAndIsQuickerThanStraight)
 {
     const LoadedRecipe l = loadRecipe(examplePath("fill-96-arched.recipe.json"), builtinDeck(), {});
     ASSERT_TRUE(l.ok()) << i18ntest::englishFormat(l.problems);
-    EXPECT_EQ(l.recipe.travel.mode, plates::TravelMode::Arched);
-    EXPECT_EQ(l.plan.orders, std::vector<plates::WellOrder>{plates::WellOrder::SnakeRows});
+    EXPECT_EQ(l.recipe.travel.mode, motion::plates::TravelMode::Arched);
+    EXPECT_EQ(l.plan.orders, std::vector<motion::plates::WellOrder>{motion::plates::WellOrder::SnakeRows});
     int dispensed = 0;
     for (const auto& op : l.plan.ops)
-        dispensed += op.type == plates::StepType::Dispense;
+        dispensed += op.type == motion::plates::StepType::Dispense;
     EXPECT_EQ(dispensed, 96);
     EXPECT_DOUBLE_EQ(l.plan.totalDispensedUl, 4800);
-    plates::Recipe today = l.recipe;
-    today.travel.mode = plates::TravelMode::StraightUpDown;
+    motion::plates::Recipe today = l.recipe;
+    today.travel.mode = motion::plates::TravelMode::StraightUpDown;
     today.order.reset();
-    const plates::RecipePlan slow = plates::planRecipe(today, l.context);
+    const motion::plates::RecipePlan slow = motion::plates::planRecipe(today, l.context);
     EXPECT_LT(l.plan.totalTimeS, slow.totalTimeS);
     std::printf("fill-96: as written, straight %.1f s; snake rows, arched %.1f s (%.1f %% less); bound %.1f s\n", slow.totalTimeS,
                 l.plan.totalTimeS, 100 * (1 - l.plan.totalTimeS / slow.totalTimeS), l.plan.boundS);

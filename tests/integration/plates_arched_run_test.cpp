@@ -13,8 +13,8 @@
 
 using namespace itest;
 using namespace platestest;
-using jobs::RecipeRunner;
-using jobs::RunState;
+using dev::jobs::RecipeRunner;
+using dev::jobs::RunState;
 
 namespace {
 
@@ -30,26 +30,26 @@ struct TipRun {
 
 /// Runs `recipe` with the simulator's clock stepped 2 ms at a time, sampling the tip's
 /// true position after each step against the sbs-96 plate in slot 1.
-TipRun runStepped(const plates::Recipe& recipe)
+TipRun runStepped(const motion::plates::Recipe& recipe)
 {
     TipRun out;
-    SimSession s{proto::DeviceKind::Analyzer, kUnpaced};
+    SimSession s{dev::proto::DeviceKind::Analyzer, kUnpaced};
     if (!s.connect() || !s.homeAll()) {
         ADD_FAILURE() << "no simulated analyzer";
         return out;
     }
-    const plates::RecipePlan plan = planFor(recipe, s.client);
+    const motion::plates::RecipePlan plan = planFor(recipe, s.client);
     RecipeRunner runner(&s.client);
-    msg::Message error;
+    motion::msg::Message error;
     QTemporaryDir dir;
     if (!runner.setPlan(plan, QStringLiteral("arched"), &error)) {
         ADD_FAILURE() << error;
         return out;
     }
-    const plates::Labware lw = *plates::findBuiltinLabware("sbs-96");
+    const motion::plates::Labware lw = *motion::plates::findBuiltinLabware("sbs-96");
     const double ox = 8, oy = 8;  // slot 1, nominal
     auto& host = s.link.host();
-    const sim::SimMachine& m = s.link.machine();
+    const dev::sim::SimMachine& m = s.link.machine();
     host.setManualClock(true);
     if (!runner.start(dir.filePath(QStringLiteral("run.jsonl")), &error)) {
         ADD_FAILURE() << error;
@@ -64,7 +64,7 @@ TipRun runStepped(const plates::Recipe& recipe)
         const double px = x - ox, py = y - oy;
         if (px >= 0 && py >= 0 && px <= lw.lengthMm && py <= lw.widthMm) {
             bool inOpening = false;
-            for (const plates::Well& w : lw.wells)
+            for (const motion::plates::Well& w : lw.wells)
                 inOpening = inOpening || std::hypot(px - w.xMm, py - w.yMm) < w.diameterMm / 2;
             if (!inOpening) {
                 ++out.samplesOverRim;
@@ -78,7 +78,7 @@ TipRun runStepped(const plates::Recipe& recipe)
     out.plungerEndUl = m.commandedLogical(3);
     const auto logged = readLog(dir.filePath(QStringLiteral("run.jsonl")));
     for (const auto& op : logged.ops)
-        out.wellsDone += op.state == platefiles::OpState::Done && op.plate == "samples";
+        out.wellsDone += op.state == dev::files::plates::OpState::Done && op.plate == "samples";
     out.finished = runner.state() == RunState::Finished;
     out.deviceS = runner.progress().deviceS;
     return out;
@@ -88,9 +88,9 @@ TipRun runStepped(const plates::Recipe& recipe)
 
 TEST(PlateArchedRun, TheTipNeverCrossesARimBelowTheClearanceAndArchesAreFaster)
 {
-    plates::Recipe straight = samplingRecipe("A1:H12", 10);
-    plates::Recipe arched = straight;
-    arched.travel.mode = plates::TravelMode::Arched;
+    motion::plates::Recipe straight = samplingRecipe("A1:H12", 10);
+    motion::plates::Recipe arched = straight;
+    arched.travel.mode = motion::plates::TravelMode::Arched;
     const TipRun a = runStepped(arched);
     ASSERT_TRUE(a.finished);
     const double clear = 75 - 14.22 - 5;
@@ -114,16 +114,16 @@ TEST(PlateArchedRun, TheTipNeverCrossesARimBelowTheClearanceAndArchesAreFaster)
 // and each well's op is done once).
 TEST(PlateArchedRun, DistributingInSnakeRowsWithArchesAgainstTodaysRounds)
 {
-    plates::Recipe today = samplingRecipe("all", 50);
+    motion::plates::Recipe today = samplingRecipe("all", 50);
     today.plates.push_back({"reagents", "2", "sbs-12", 50, 70});
-    today.steps[0].type = plates::StepType::Dispense;
+    today.steps[0].type = motion::plates::StepType::Dispense;
     today.steps[0].plate = "samples";
     today.steps[0].source = {"reagents", "A1", ""};
-    plates::Recipe quick = today;
+    motion::plates::Recipe quick = today;
     quick.steps[0].distribute = true;
     quick.steps[0].disposalUl = 10;
-    quick.order = plates::WellOrder::SnakeRows;
-    quick.travel.mode = plates::TravelMode::Arched;
+    quick.order = motion::plates::WellOrder::SnakeRows;
+    quick.travel.mode = motion::plates::TravelMode::Arched;
     const TipRun t = runStepped(today);
     const TipRun q = runStepped(quick);
     ASSERT_TRUE(t.finished);

@@ -14,8 +14,8 @@
 
 using namespace itest;
 using namespace platestest;
-using jobs::RecipeRunner;
-using jobs::RunState;
+using dev::jobs::RecipeRunner;
+using dev::jobs::RunState;
 
 namespace {
 
@@ -27,25 +27,25 @@ struct Measured {
 Measured runExample(const char* name)
 {
     Measured out;
-    SimSession s{proto::DeviceKind::Analyzer, kUnpaced};
+    SimSession s{dev::proto::DeviceKind::Analyzer, kUnpaced};
     if (!s.connect() || !s.homeAll()) {
         ADD_FAILURE() << "no simulated analyzer";
         return out;
     }
-    const platefiles::LoadedRecipe l = platefiles::loadRecipe(QStringLiteral(BP_SOURCE_DIR "/resources/examples/") + QLatin1String(name),
-                                                              platefiles::builtinDeck(), {});
+    const dev::files::plates::LoadedRecipe l = dev::files::plates::loadRecipe(QStringLiteral(BP_SOURCE_DIR "/resources/examples/") + QLatin1String(name),
+                                                              dev::files::plates::builtinDeck(), {});
     if (!l.ok()) {
         ADD_FAILURE() << name << " does not load";
         return out;
     }
-    plates::PlanContext c = l.context;
-    c.deck = jobs::deckWithDeviceMotion(c.deck, s.client.identity());
-    plates::StartState start;
+    motion::plates::PlanContext c = l.context;
+    c.deck = dev::jobs::deckWithDeviceMotion(c.deck, s.client.identity());
+    motion::plates::StartState start;
     const auto& a = s.client.status().axes;
     start = {a[0].commanded, a[1].commanded, a[2].commanded, a[3].commanded};
-    const plates::RecipePlan plan = plates::planRecipe(l.recipe, c, start);
+    const motion::plates::RecipePlan plan = motion::plates::planRecipe(l.recipe, c, start);
     RecipeRunner runner(&s.client);
-    msg::Message error;
+    motion::msg::Message error;
     QTemporaryDir dir;
     if (!runner.setPlan(plan, QString::fromLatin1(name), &error)) {
         ADD_FAILURE() << error;

@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-using namespace plates;
+using namespace motion::plates;
 using platestest::context;
 using platestest::oneStep;
 using platestest::problemAt;

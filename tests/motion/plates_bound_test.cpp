@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-using namespace plates;
+using namespace motion::plates;
 using platestest::context;
 using platestest::oneStep;
 

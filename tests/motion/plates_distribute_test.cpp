@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-using namespace plates;
+using namespace motion::plates;
 using platestest::context;
 using platestest::oneStep;
 using platestest::problemAt;

@@ -7,7 +7,7 @@
 
 #include <algorithm>
 
-using namespace plates;
+using namespace motion::plates;
 using platestest::context;
 using platestest::oneStep;
 using platestest::problemAt;
@@ -118,7 +118,7 @@ TEST(PlateWellOrder, AStationStepCannotTakeAnOrder)
     r.steps[0].order = WellOrder::Shortest;
     const RecipePlan plan = planRecipe(r, context());
     EXPECT_FALSE(plan.ok());
-    const msg::Problem p = problemAt(plan, "steps[0].order");
+    const motion::msg::Problem p = problemAt(plan, "steps[0].order");
     EXPECT_EQ(p.message.id, "recipe.order_without_wells");
     EXPECT_EQ(p.message.text("order"), "shortest");
 }

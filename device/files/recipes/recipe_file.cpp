@@ -4,11 +4,11 @@
 
 #include <vector>
 
-namespace platefiles {
+namespace dev::files::plates {
 
-using jsonio::ObjectReader;
-using jsonio::Value;
-using plates::StepType;
+using dev::files::json::ObjectReader;
+using dev::files::json::Value;
+using motion::plates::StepType;
 
 namespace {
 
@@ -38,7 +38,7 @@ bool takes(StepType t, std::string_view field)
     return false;
 }
 
-void readWells(ObjectReader& o, const Value& step, plates::Step& s, jsonio::Problems& problems)
+void readWells(ObjectReader& o, const Value& step, motion::plates::Step& s, dev::files::json::Problems& problems)
 {
     const Value* w = step.find("wells");
     if (!w)
@@ -49,41 +49,41 @@ void readWells(ObjectReader& o, const Value& step, plates::Step& s, jsonio::Prob
         for (std::size_t k = 0; k < w->items().size(); ++k) {
             const Value& item = w->items()[k];
             if (!item.isString()) {
-                problems.add(item, jsonio::childPath(o.pathOf("wells"), k), msg::make("recipe.file.well_not_string", {msg::term("actual", jsonio::typeTerm(item.type()))}));
+                problems.add(item, dev::files::json::childPath(o.pathOf("wells"), k), motion::msg::make("recipe.file.well_not_string", {motion::msg::term("actual", dev::files::json::typeTerm(item.type()))}));
                 continue;
             }
             s.wells.push_back(item.asString());
         }
         if (w->items().empty())
-            problems.add(*w, o.pathOf("wells"), msg::make("plate.wells.none"));
+            problems.add(*w, o.pathOf("wells"), motion::msg::make("plate.wells.none"));
     } else {
-        problems.add(*w, o.pathOf("wells"), msg::make("recipe.file.wells_wrong_type", {msg::term("actual", jsonio::typeTerm(w->type()))}));
+        problems.add(*w, o.pathOf("wells"), motion::msg::make("recipe.file.wells_wrong_type", {motion::msg::term("actual", dev::files::json::typeTerm(w->type()))}));
     }
 }
 
-std::optional<plates::WellOrder> readOrder(ObjectReader& o, const Value& owner, jsonio::Problems& problems)
+std::optional<motion::plates::WellOrder> readOrder(ObjectReader& o, const Value& owner, dev::files::json::Problems& problems)
 {
     const auto name = o.string("order", false);
     if (!name)
         return std::nullopt;
-    const auto order = plates::wellOrderFromName(*name);
+    const auto order = motion::plates::wellOrderFromName(*name);
     if (!order)
-        problems.add(*owner.find("order"), o.pathOf("order"), msg::make("recipe.file.unknown_order", {msg::verbatim("order", name->substr(0, 40)),
-                                                                                                         msg::verbatim("orders", plates::wellOrderList())}));
+        problems.add(*owner.find("order"), o.pathOf("order"), motion::msg::make("recipe.file.unknown_order", {motion::msg::verbatim("order", name->substr(0, 40)),
+                                                                                                         motion::msg::verbatim("orders", motion::plates::wellOrderList())}));
     return order;
 }
 
-plates::Step readStep(const Value& v, const std::string& path, jsonio::Problems& problems)
+motion::plates::Step readStep(const Value& v, const std::string& path, dev::files::json::Problems& problems)
 {
-    plates::Step s;
+    motion::plates::Step s;
     ObjectReader o(v, path, problems);
     if (!o.valid())
         return s;
     const auto type = o.string("type", true);
-    const auto t = type ? plates::stepTypeFromName(*type) : std::nullopt;
+    const auto t = type ? motion::plates::stepTypeFromName(*type) : std::nullopt;
     if (type && !t) {
-        problems.add(*v.find("type"), o.pathOf("type"), msg::make("recipe.file.unknown_step_type", {msg::verbatim("type", type->substr(0, 40)),
-                                                                                                   msg::verbatim("types", plates::stepTypeList())}));
+        problems.add(*v.find("type"), o.pathOf("type"), motion::msg::make("recipe.file.unknown_step_type", {motion::msg::verbatim("type", type->substr(0, 40)),
+                                                                                                   motion::msg::verbatim("types", motion::plates::stepTypeList())}));
         s.type = StepType::Wait;  // a harmless stand-in keeps the later steps' indices
         s.seconds = 0;
         return s;
@@ -97,12 +97,12 @@ plates::Step readStep(const Value& v, const std::string& path, jsonio::Problems&
     known.push_back("type");
     known.push_back("note");
     // A field of another step type gets a sentence of its own, not a spelling hint.
-    for (const jsonio::Member& m : v.members()) {
+    for (const dev::files::json::Member& m : v.members()) {
         if (m.key == "type" || m.key == "note" || takes(*t, m.key))
             continue;
-        for (int k = 0; k < plates::kStepTypeCount; ++k)
+        for (int k = 0; k < motion::plates::kStepTypeCount; ++k)
             if (takes(static_cast<StepType>(k), m.key)) {
-                problems.add(m.keyPosition, o.pathOf(m.key), msg::make("recipe.file.field_of_other_step", {msg::verbatim("type", *type), msg::verbatim("field", m.key)}));
+                problems.add(m.keyPosition, o.pathOf(m.key), motion::msg::make("recipe.file.field_of_other_step", {motion::msg::verbatim("type", *type), motion::msg::verbatim("field", m.key)}));
                 known.push_back(m.key);
                 break;
             }
@@ -143,7 +143,7 @@ plates::Step readStep(const Value& v, const std::string& path, jsonio::Problems&
             s.source.well = so.string("well", false).value_or("");
             s.source.station = so.string("station", false).value_or("");
             if (s.source.empty())
-                problems.add(*src, o.pathOf("source"), msg::make("recipe.file.source_empty"));
+                problems.add(*src, o.pathOf("source"), motion::msg::make("recipe.file.source_empty"));
         }
     return s;
 }
@@ -169,26 +169,26 @@ RecipeRead parseRecipe(std::string_view text)
     if (!r.root)
         return r;
     const Value& root = *r.root;
-    const auto version = jsonio::checkSchema(root, kRecipeSchema, kRecipeVersion, r.problems);
+    const auto version = dev::files::json::checkSchema(root, kRecipeSchema, kRecipeVersion, r.problems);
     if (!version)
         return r;
     ObjectReader o(root, "", r.problems);
     o.refuseUnknown({"schema", "version", "name", "description", "travel_speed_mm_s", "z_speed_mm_s", "order", "travel", "plates", "steps"});
-    plates::Recipe rec;
+    motion::plates::Recipe rec;
     // Version 1 recipes travel straight up and down, as they always did; from version 2
     // the tip travels in arches unless the recipe says otherwise.
-    rec.travel.mode = *version >= 2 ? plates::TravelMode::Arched : plates::TravelMode::StraightUpDown;
+    rec.travel.mode = *version >= 2 ? motion::plates::TravelMode::Arched : motion::plates::TravelMode::StraightUpDown;
     if (const Value* travel = root.find("travel")) {
         if (*version < 2)
-            r.problems.add(*travel, "travel", msg::make("recipe.file.travel_needs_version", {msg::integer("version", *version)}));
+            r.problems.add(*travel, "travel", motion::msg::make("recipe.file.travel_needs_version", {motion::msg::integer("version", *version)}));
         else if (const Value* t = o.get("travel", Value::Type::Object, false)) {
             ObjectReader to(*t, "travel", r.problems);
             to.refuseUnknown({"mode", "clearance_in_plate_mm", "clearance_between_mm"});
             if (const auto mode = to.string("mode", false)) {
-                if (const auto m = plates::travelModeFromName(*mode))
+                if (const auto m = motion::plates::travelModeFromName(*mode))
                     rec.travel.mode = *m;
                 else
-                    r.problems.add(*t->find("mode"), "travel.mode", msg::make("recipe.file.unknown_travel_mode", {msg::verbatim("mode", mode->substr(0, 40))}));
+                    r.problems.add(*t->find("mode"), "travel.mode", motion::msg::make("recipe.file.unknown_travel_mode", {motion::msg::verbatim("mode", mode->substr(0, 40))}));
             }
             rec.travel.clearanceInPlateMm = to.number("clearance_in_plate_mm", false, -kRecipeBig, kRecipeBig).value_or(5);
             rec.travel.clearanceBetweenMm = to.number("clearance_between_mm", false, -kRecipeBig, kRecipeBig).value_or(10);
@@ -203,9 +203,9 @@ RecipeRead parseRecipe(std::string_view text)
     rec.order = readOrder(o, root, r.problems);
     if (const Value* plates = o.get("plates", Value::Type::Array, true)) {
         for (std::size_t k = 0; k < plates->items().size() && k < 64; ++k) {
-            ObjectReader p(plates->items()[k], jsonio::childPath("plates", k), r.problems);
+            ObjectReader p(plates->items()[k], dev::files::json::childPath("plates", k), r.problems);
             p.refuseUnknown({"name", "slot", "labware", "safe_z_mm", "depth_z_mm"});
-            plates::RecipePlate rp;
+            motion::plates::RecipePlate rp;
             rp.name = p.string("name", true).value_or("");
             rp.slot = p.string("slot", true).value_or("");
             rp.labware = p.string("labware", true).value_or("");
@@ -214,28 +214,28 @@ RecipeRead parseRecipe(std::string_view text)
             rec.plates.push_back(rp);
         }
         if (plates->items().size() > 64)
-            r.problems.add(*plates, "plates", msg::make("recipe.file.too_many_plates", {msg::integer("max", 64)}));
+            r.problems.add(*plates, "plates", motion::msg::make("recipe.file.too_many_plates", {motion::msg::integer("max", 64)}));
     }
     if (const Value* steps = o.get("steps", Value::Type::Array, true)) {
-        const std::size_t n = std::min(steps->items().size(), plates::kMaxSteps + 1);
+        const std::size_t n = std::min(steps->items().size(), motion::plates::kMaxSteps + 1);
         for (std::size_t k = 0; k < n; ++k)
-            rec.steps.push_back(readStep(steps->items()[k], jsonio::childPath("steps", k), r.problems));
+            rec.steps.push_back(readStep(steps->items()[k], dev::files::json::childPath("steps", k), r.problems));
     }
     r.wellFormed = r.problems.empty();
     r.recipe = std::move(rec);
     return r;
 }
 
-void placeProblems(RecipeRead& read, const msg::Problems& problems)
+void placeProblems(RecipeRead& read, const motion::msg::Problems& problems)
 {
-    const std::vector<msg::Problem> before = read.problems.list();
-    for (const msg::Problem& p : problems) {
+    const std::vector<motion::msg::Problem> before = read.problems.list();
+    for (const motion::msg::Problem& p : problems) {
         bool dup = false;
-        for (const msg::Problem& q : before)
+        for (const motion::msg::Problem& q : before)
             dup = dup || covers(q.path, p.path);
         if (dup)
             continue;
-        const jsonio::Position at = read.root ? positionOfPath(*read.root, p.path) : jsonio::Position{};
+        const dev::files::json::Position at = read.root ? positionOfPath(*read.root, p.path) : dev::files::json::Position{};
         read.problems.add(at, p.path, p.message, p.severity);
     }
 }
@@ -252,12 +252,12 @@ Value wellsJson(const std::vector<std::string>& wells)
 }
 } // namespace
 
-std::string writeRecipe(const plates::Recipe& rec)
+std::string writeRecipe(const motion::plates::Recipe& rec)
 {
     // A recipe that travels as version 1 did is written as version 1, which every
     // BenchPilot reads the same; anything else needs version 2 and says how it travels.
     const bool v1 = rec.travel.isDefault();
-    Value v = jsonio::schemaObject(kRecipeSchema, v1 ? 1 : kRecipeVersion);
+    Value v = dev::files::json::schemaObject(kRecipeSchema, v1 ? 1 : kRecipeVersion);
     v.set("name", rec.name);
     if (!rec.description.empty())
         v.set("description", rec.description);
@@ -266,16 +266,16 @@ std::string writeRecipe(const plates::Recipe& rec)
     if (rec.zSpeedMmS)
         v.set("z_speed_mm_s", *rec.zSpeedMmS);
     if (rec.order)
-        v.set("order", plates::wellOrderName(*rec.order));
+        v.set("order", motion::plates::wellOrderName(*rec.order));
     if (!v1) {
         Value t = Value::object();
-        t.set("mode", plates::travelModeName(rec.travel.mode));
+        t.set("mode", motion::plates::travelModeName(rec.travel.mode));
         t.set("clearance_in_plate_mm", rec.travel.clearanceInPlateMm);
         t.set("clearance_between_mm", rec.travel.clearanceBetweenMm);
         v.set("travel", std::move(t));
     }
     Value plates = Value::array();
-    for (const plates::RecipePlate& p : rec.plates) {
+    for (const motion::plates::RecipePlate& p : rec.plates) {
         Value x = Value::object();
         x.set("name", p.name);
         x.set("slot", p.slot);
@@ -286,9 +286,9 @@ std::string writeRecipe(const plates::Recipe& rec)
     }
     v.set("plates", std::move(plates));
     Value steps = Value::array();
-    for (const plates::Step& s : rec.steps) {
+    for (const motion::plates::Step& s : rec.steps) {
         Value x = Value::object();
-        x.set("type", plates::stepTypeName(s.type));
+        x.set("type", motion::plates::stepTypeName(s.type));
         if (takes(s.type, "plate") && !s.plate.empty())
             x.set("plate", s.plate);
         if (takes(s.type, "wells") && !s.wells.empty())
@@ -319,7 +319,7 @@ std::string writeRecipe(const plates::Recipe& rec)
             x.set("source", std::move(src));
         }
         if (takes(s.type, "order") && s.order)
-            x.set("order", plates::wellOrderName(*s.order));
+            x.set("order", motion::plates::wellOrderName(*s.order));
         if (s.type == StepType::Dispense) {
             if (s.distribute)
                 x.set("distribute", true);
@@ -335,7 +335,7 @@ std::string writeRecipe(const plates::Recipe& rec)
         steps.push(std::move(x));
     }
     v.set("steps", std::move(steps));
-    return jsonio::write(v);
+    return dev::files::json::write(v);
 }
 
-} // namespace platefiles
+} // namespace dev::files::plates

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace plates {
+namespace motion::plates {
 
 namespace {
 constexpr double kBoundEps = 1e-9;
@@ -164,9 +164,9 @@ double planBoundS(const RecipePlan& plan, const Deck& deck, const StartState& st
     return t;
 }
 
-} // namespace plates
+} // namespace motion::plates
 
-namespace plates {
+namespace motion::plates {
 
 std::vector<OrderComparison> compareOrders(const Recipe& recipe, const PlanContext& context, const StartState& start)
 {
@@ -183,4 +183,4 @@ std::vector<OrderComparison> compareOrders(const Recipe& recipe, const PlanConte
     return out;
 }
 
-} // namespace plates
+} // namespace motion::plates

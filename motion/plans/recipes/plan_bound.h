@@ -21,7 +21,7 @@
 // acceleration-limited (jerk unbounded).
 #include "motion/plans/recipes/recipe_plan.h"
 
-namespace plates {
+namespace motion::plates {
 
 /// The bound of `plan` in seconds (no per-move link overhead: it is a property of the motion).
 double planBoundS(const RecipePlan& plan, const Deck& deck, const StartState& start = {});
@@ -36,9 +36,9 @@ double xyRestToRestS(const AxisMotion& x, const AxisMotion& y, double dx, double
 /// Least seconds to cover `distance` (≥ 0) from rest with the end speed free.
 double reachS(const AxisMotion& axis, double distance);
 
-} // namespace plates
+} // namespace motion::plates
 
-namespace plates {
+namespace motion::plates {
 
 /// One well order applied to every step of a recipe: its planned time and bound.
 struct OrderComparison {
@@ -49,4 +49,4 @@ struct OrderComparison {
 /// Every order, each given to every step that has wells (steps' own orders set aside).
 std::vector<OrderComparison> compareOrders(const Recipe& recipe, const PlanContext& context, const StartState& start = {});
 
-} // namespace plates
+} // namespace motion::plates

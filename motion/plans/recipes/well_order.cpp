@@ -5,7 +5,7 @@
 #include <numeric>
 #include <unordered_map>
 
-namespace plates {
+namespace motion::plates {
 
 namespace {
 
@@ -141,4 +141,4 @@ double pathCost(const std::vector<std::size_t>& sequence, const std::vector<Poin
     return t;
 }
 
-} // namespace plates
+} // namespace motion::plates

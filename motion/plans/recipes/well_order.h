@@ -13,7 +13,7 @@
 #include <functional>
 #include <vector>
 
-namespace plates {
+namespace motion::plates {
 
 /// Seconds to move the tip between two machine points; it must depend only on
 /// |Δx| and |Δy| (a straight move's time does), which lets it be remembered.
@@ -26,4 +26,4 @@ std::vector<std::size_t> wellOrderIndices(WellOrder order, const std::vector<Wel
 /// The cost of visiting `at` in `sequence` starting from `from`.
 double pathCost(const std::vector<std::size_t>& sequence, const std::vector<PointMm>& at, const PointMm& from, const MoveCost& cost);
 
-} // namespace plates
+} // namespace motion::plates
