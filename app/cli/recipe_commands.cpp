@@ -9,6 +9,7 @@
 #include "recipe_setup.h"
 
 #include "device/files/recipes/recipe_loader.h"
+#include "motion/plans/recipes/plan_bound.h"
 
 #include "widgets/wording/wording.h"
 
@@ -38,6 +39,8 @@ QJsonObject moveJson(const motion::plates::MachineMove& m)
     case motion::plates::MoveKind::Touch:
         o.insert(QStringLiteral("x_mm"), r6(m.xMm));
         o.insert(QStringLiteral("y_mm"), r6(m.yMm));
+        if (m.withZ)
+            o.insert(QStringLiteral("z_mm"), r6(m.zMm));  // arched: Z moves there at the same time
         break;
     case motion::plates::MoveKind::Pump: o.insert(QStringLiteral("pump_ul"), r6(m.pumpDeltaUl)); break;
     case motion::plates::MoveKind::Dwell: o.insert(QStringLiteral("seconds"), m.seconds); break;
@@ -123,16 +126,27 @@ int plan(Invocation& inv)
         QJsonArray warnings;
         for (const motion::msg::Problem& m : l.problems)
             warnings.append(ui::words::toJson(m));
-        inv.printJson(QJsonObject{{QStringLiteral("recipe"), QString::fromStdString(l.recipe.name)},
+        QJsonObject head{{QStringLiteral("recipe"), QString::fromStdString(l.recipe.name)},
                                                {QStringLiteral("fingerprint"), QString::fromStdString(motion::plates::fingerprintHex(p.fingerprint))},
                                                {QStringLiteral("total_time_s"), r6(p.totalTimeS)},
+                                               {QStringLiteral("bound_s"), r6(p.boundS)},
                                                {QStringLiteral("dispensed_ul"), r6(p.totalDispensedUl)},
                                                {QStringLiteral("aspirated_ul"), r6(p.totalAspiratedUl)},
                                                {QStringLiteral("pump_start_ul"), r6(p.pumpStartUl)},
                                                {QStringLiteral("pump_end_ul"), r6(p.pumpEndUl)},
                                                {QStringLiteral("warnings"), warnings},
                                                {QStringLiteral("ops"), ops},
-                                               {QStringLiteral("wells"), wells}});
+                                               {QStringLiteral("wells"), wells}};
+        if (inv.isSet(QStringLiteral("compare-orders"))) {
+            QJsonArray orders;
+            for (const motion::plates::OrderComparison& c : motion::plates::compareOrders(l.recipe, l.context))
+                orders.append(QJsonObject{{QStringLiteral("order"), QString::fromLatin1(motion::plates::wellOrderName(c.order))},
+                                          {QStringLiteral("ok"), c.ok},
+                                          {QStringLiteral("total_time_s"), r6(c.totalTimeS)},
+                                          {QStringLiteral("bound_s"), r6(c.boundS)}});
+            head.insert(QStringLiteral("orders"), orders);
+        }
+        inv.printJson(head);
     } else {
         for (const QString& m : ui::words::problems(l.problems))
             inv.out() << m << "\n";
@@ -153,6 +167,13 @@ int plan(Invocation& inv)
                          .arg(p.pumpEndUl)
                          .arg(p.totalTimeS, 0, 'f', 1)
                   << "\n";
+        inv.out() << tr("time-optimal bound %1 s: the plan takes %2 times the bound").arg(p.boundS, 0, 'f', 1).arg(p.boundS > 0 ? p.totalTimeS / p.boundS : 1.0, 0, 'f', 2)
+                  << "\n";
+        if (inv.isSet(QStringLiteral("compare-orders")))
+            for (const motion::plates::OrderComparison& c : motion::plates::compareOrders(l.recipe, l.context))
+                inv.out() << (c.ok ? tr("order %1: %2 s, bound %3 s").arg(QString::fromLatin1(motion::plates::wellOrderName(c.order)), -14).arg(c.totalTimeS, 0, 'f', 1).arg(c.boundS, 0, 'f', 1)
+                                   : tr("order %1: a step cannot take it").arg(QString::fromLatin1(motion::plates::wellOrderName(c.order)), -14))
+                          << "\n";
     }
     inv.out().flush();
     return Ok;
@@ -180,7 +201,14 @@ void addRecipeCommands(std::vector<Command>& list)
                                   setupOptions, validate, {}, api("recipe.validate", Access::Compute)});
     recipe.subcommands.push_back({QStringLiteral("plan"), tr("the dry run: each op and move with well, x, y, z, volume, and the total time"),
                                   QStringLiteral("FILE"), tr("Planned from the machine at home (0, 0, 0) with an empty syringe. Nothing moves."),
-                                  setupOptions, plan, {}, api("recipe.plan", Access::Compute)});
+                                  QList<QCommandLineOption>(setupOptions)
+                                      << QCommandLineOption(QStringLiteral("compare-orders"),
+                                                            tr("also plan every well order (as-written, column-major, snake-rows, snake-columns, shortest): time and bound of each")),
+                                  plan, {}, [&] {
+                                      ApiSpec a = api("recipe.plan", Access::Compute);
+                                      a.params << optionParam("compare-orders", ParamType::Boolean);
+                                      return a;
+                                  }()});
     QList<QCommandLineOption> runOptions = setupOptions;
     runOptions << QCommandLineOption(QStringLiteral("log"), tr("the run log to write (a new file; default RECIPE-DATE.run.jsonl here)"),
                                      QStringLiteral("RUN.jsonl"))

@@ -164,6 +164,9 @@ int runRecipe(Invocation& inv)
                                   {QStringLiteral("ops_done"), p.opsDone},
                                   {QStringLiteral("ops"), p.opsTotal},
                                   {QStringLiteral("elapsed_s"), p.elapsedS},
+                                  {QStringLiteral("device_s"), p.deviceS},
+                                  {QStringLiteral("planned_s"), plan.totalTimeS},
+                                  {QStringLiteral("bound_s"), plan.boundS},
                                   {QStringLiteral("log"), logPath}});
     if (finished) {
         if (!inv.json())

@@ -62,10 +62,7 @@ RecipeRunner::RecipeRunner(dev::Instrument* client, QObject* parent) : QObject(p
     m_moveTimer.setSingleShot(true);
     m_dwellTimer.setSingleShot(true);
     connect(&m_moveTimer, &QTimer::timeout, this, &RecipeRunner::onMoveTimeout);
-    connect(&m_dwellTimer, &QTimer::timeout, this, [this] {
-        if (m_inFlight && m_inFlight->kind == MoveKind::Dwell)
-            moveArrived();
-    });
+    connect(&m_dwellTimer, &QTimer::timeout, this, [this] { checkDwell(false); });
     m_events = connect(client, &dev::Instrument::eventReceived, this, &RecipeRunner::onEvent);
     m_link = connect(client, &dev::Instrument::stateChanged, this, &RecipeRunner::onLinkState);
     // A MotionDone lost on a noisy line would leave the move to its watchdog (seconds per
@@ -74,6 +71,8 @@ RecipeRunner::RecipeRunner(dev::Instrument* client, QObject* parent) : QObject(p
     // share one ordered stream, so a MotionDone that was not lost came before them.
     auto restReadings = std::make_shared<std::pair<int, int>>(-1, 0);  // move serial, readings at rest
     connect(client, &dev::Instrument::statusChanged, this, [this, restReadings](const dev::InstrumentStatus& st) {
+        if (active(m_state) && st.deviceTimeUs > m_deviceLastUs)
+            m_deviceLastUs = st.deviceTimeUs;
         if (m_budgetStartPending && m_replied) {
             m_moveSentUs = st.deviceTimeUs;
             m_budgetStartPending = false;
@@ -93,7 +92,7 @@ RecipeRunner::RecipeRunner(dev::Instrument* client, QObject* parent) : QObject(p
         else if (m.kind == MoveKind::Pump)
             there = at('P', m_pumpUl + m.pumpDeltaUl);
         else
-            there = at('X', m.xMm) && at('Y', m.yMm);
+            there = at('X', m.xMm) && at('Y', m.yMm) && (!m.withZ || at('Z', m.zMm));
         if (!there || st.anyMoving()) {
             restReadings->second = 0;
             return;
@@ -196,7 +195,7 @@ bool RecipeRunner::preflight(motion::msg::Message* error) const
                                                                    recipeMm("x_max", limits[ix].max), recipeMm("y_min", limits[iy].min), recipeMm("y_max", limits[iy].max)});
                 return false;
             }
-            if ((m.kind == MoveKind::Raise || m.kind == MoveKind::Lower) && outside(iz, m.zMm)) {
+            if ((m.kind == MoveKind::Raise || m.kind == MoveKind::Lower || m.withZ) && outside(iz, m.zMm)) {
                 *error = motion::msg::make("recipe.run.z_beyond_limits", {what, recipeMm("z", m.zMm), recipeMm("min", limits[iz].min), recipeMm("max", limits[iz].max)});
                 return false;
             }
@@ -219,10 +218,14 @@ void RecipeRunner::setState(RunState s)
 {
     if (s == m_state)
         return;
-    if (active(m_state) && !active(s))
+    if (active(m_state) && !active(s)) {
         m_elapsedBeforeS += m_clock.elapsed() / 1000.0;
-    if (!active(m_state) && active(s))
+        m_deviceBeforeS += static_cast<double>(m_deviceLastUs - std::min(m_deviceStartUs, m_deviceLastUs)) / 1e6;
+    }
+    if (!active(m_state) && active(s)) {
         m_clock.restart();
+        m_deviceStartUs = m_deviceLastUs = m_client->status().deviceTimeUs;
+    }
     m_state = s;
     emit stateChanged(s);
     emit progressChanged();
@@ -267,12 +270,19 @@ bool RecipeRunner::start(const QString& logPath, motion::msg::Message* error)
     head.set("fingerprint", motion::plates::fingerprintHex(m_plan.fingerprint));
     head.set("ops", static_cast<int>(m_plan.ops.size()));
     head.set("p_ul", plungerNow());
+    // The order each step's wells were planned in: the ops above follow it, and the
+    // fingerprint (which covers each op's well) holds a resume to it.
+    dev::files::json::Value orders = dev::files::json::Value::array();
+    for (motion::plates::WellOrder o : m_plan.orders)
+        orders.push(motion::plates::wellOrderName(o));
+    head.set("orders", std::move(orders));
     if (!m_log.write(head)) {
         *error = m_log.lastError();
         m_log.close();
         return false;
     }
     m_elapsedBeforeS = 0;
+    m_deviceBeforeS = 0;
     m_op = 0;
     m_move = 0;
     m_pumpLogged = false;
@@ -351,7 +361,7 @@ void RecipeRunner::nextMove()
         const bool skip = (m.kind == MoveKind::Raise && m_knowZ && m_z <= m.zMm + kSameMm)
             || (m.kind == MoveKind::Lower && m_knowZ && std::abs(m_z - m.zMm) < kSameMm)
             || ((m.kind == MoveKind::Travel || m.kind == MoveKind::Touch) && m_knowXy && std::abs(m_x - m.xMm) < kSameMm
-                && std::abs(m_y - m.yMm) < kSameMm)
+                && std::abs(m_y - m.yMm) < kSameMm && (!m.withZ || (m_knowZ && std::abs(m_z - m.zMm) < kSameMm)))
             || (m.kind == MoveKind::Dwell && m.seconds <= 0);
         if (!skip) {
             sendMove(m);
@@ -373,6 +383,11 @@ void RecipeRunner::sendMove(const MachineMove& planned)
         if (iz >= 0 && iz < m_client->status().axes.size())
             m.zMm = std::min(m.zMm, m_client->status().axes[iz].commanded);
     }
+    if (m.kind == MoveKind::Raise && !m_knowXy && m_op >= 0 && m_op < static_cast<int>(m_plan.ops.size())) {
+        // Not knowing where the tip stands in XY either (a start, a resume), the first
+        // raise goes to the op's safe height, which clears whatever it may cross first.
+        m.zMm = std::min(m.zMm, m_plan.ops[static_cast<std::size_t>(m_op)].safeZMm);
+    }
     if (m.kind == MoveKind::Pump && !m_pumpLogged) {
         dev::files::json::Value v = dev::files::json::Value::object();
         v.set("event", "pump");
@@ -389,10 +404,10 @@ void RecipeRunner::sendMove(const MachineMove& planned)
     m_budgetStartPending = false;
     const int serial = ++m_moveSerial;
     if (m.kind == MoveKind::Dwell) {
-        m_dwellTimer.start(static_cast<int>(std::lround(m.seconds * 1000)));
+        checkDwell(true);
         return;
     }
-    QVector<QPair<int, double>> targets;
+    QVector<QPair<int, double>> targets, zTargets;
     bool relative = false;
     switch (m.kind) {
     case MoveKind::Raise:
@@ -402,6 +417,10 @@ void RecipeRunner::sendMove(const MachineMove& planned)
     case MoveKind::Travel:
     case MoveKind::Touch:
         targets = {{axis('X'), m.xMm}, {axis('Y'), m.yMm}};
+        // Arched travel: Z in a request of its own, so it runs with XY (in one request
+        // the analyzer runs Z after XY).
+        if (m.withZ)
+            zTargets = {{axis('Z'), m.zMm}};
         break;
     case MoveKind::Pump:
         targets = {{axis('P'), m.pumpDeltaUl}};
@@ -411,14 +430,15 @@ void RecipeRunner::sendMove(const MachineMove& planned)
         break;
     }
     m_waitMask = 0;
-    for (const auto& t : targets)
+    for (const auto& t : targets + zTargets)
         m_waitMask = static_cast<quint8>(m_waitMask | (1u << t.first));
+    m_repliesPending = zTargets.isEmpty() ? 1 : 2;
     m_moveSentUs = m_client->status().deviceTimeUs;
     m_moveTimer.start(kMoveCheckMs);
     // The client keeps the callback until the device answers, which may be after
     // this runner is gone (a window closed mid-run): it must not reach a dead runner.
     const QPointer<RecipeRunner> self(this);
-    m_client->move(targets, relative, m.speed, [this, self, serial](const std::optional<dev::RequestError>& err) {
+    const auto answered = [this, self, serial](const std::optional<dev::RequestError>& err) {
         if (!self || serial != m_moveSerial || !m_inFlight)
             return;
         if (err && err->kind != dev::RequestError::Kind::Device && err->kind != dev::RequestError::Kind::Invalid) {
@@ -429,6 +449,8 @@ void RecipeRunner::sendMove(const MachineMove& planned)
             stopRun(motion::msg::make("recipe.run.move_refused", {opArg(m_op), motion::msg::nested("cause", err->message)}));
             return;
         }
+        if (--m_repliesPending > 0)
+            return;
         m_replied = true;
         // The budget runs from the device's yes: a request repeated through a noisy line
         // reaches the device late, and on a sped-up simulator each wall-clock retry costs
@@ -438,6 +460,51 @@ void RecipeRunner::sendMove(const MachineMove& planned)
         m_budgetStartPending = true;
         if (m_waitMask == 0)
             moveArrived();
+    };
+    m_client->move(targets, relative, m.speed, answered);
+    if (!zTargets.isEmpty())
+        m_client->move(zTargets, false, m.zSpeed, answered);
+}
+
+double RecipeRunner::deviceRate() const
+{
+    // The device's seconds per wall second this stretch: 1 on the instrument, the time
+    // scale on a sped-up simulator.
+    const double wallS = m_clock.isValid() ? m_clock.elapsed() / 1000.0 : 0.0;
+    const double deviceS = static_cast<double>(m_deviceLastUs - std::min(m_deviceStartUs, m_deviceLastUs)) / 1e6;
+    return wallS > 0.5 && deviceS > 0 ? std::clamp(deviceS / wallS, 0.01, 1000.0) : 1.0;
+}
+
+void RecipeRunner::checkDwell(bool begin)
+{
+    // A wait lasts its seconds on the device's clock, where the plan's seconds are
+    // counted: the wall clock's timer sleeps part of what is left (at the device's
+    // rate), then a fresh status says what is left. Never short, and a sped-up
+    // simulator's wait is its plan's.
+    if (!m_inFlight || m_inFlight->kind != MoveKind::Dwell)
+        return;
+    const QPointer<RecipeRunner> self(this);
+    const int serial = m_moveSerial;
+    m_client->readStatus([this, self, serial, begin](const std::optional<dev::RequestError>& err, const dev::InstrumentStatus& st) {
+        if (!self || serial != m_moveSerial || !m_inFlight || m_inFlight->kind != MoveKind::Dwell || !active(m_state))
+            return;
+        if (err) {
+            stopRun(linkLostMessage());
+            return;
+        }
+        if (st.deviceTimeUs > m_deviceLastUs)
+            m_deviceLastUs = st.deviceTimeUs;
+        if (begin)
+            m_dwellStartUs = st.deviceTimeUs;
+        const double leftS = m_inFlight->seconds - static_cast<double>(st.deviceTimeUs - std::min(m_dwellStartUs, st.deviceTimeUs)) / 1e6;
+        if (leftS <= 0) {
+            moveArrived();
+            return;
+        }
+        // Half of what seems left, then look again: a rate misjudged either way never
+        // makes the wait run long by more than a status's round trip.
+        // (At most kMoveCheckMs at a time: before the rate is known it is taken as 1.)
+        m_dwellTimer.start(std::clamp(static_cast<int>(std::lround(0.5 * leftS / deviceRate() * 1000)), 1, kMoveCheckMs));
     });
 }
 
@@ -458,6 +525,10 @@ void RecipeRunner::moveArrived()
         m_x = m.xMm;
         m_y = m.yMm;
         m_knowXy = true;
+        if (m.withZ) {
+            m_z = m.zMm;
+            m_knowZ = true;
+        }
         break;
     case MoveKind::Pump:
         m_pumpUl += m.pumpDeltaUl;
@@ -503,6 +574,9 @@ void RecipeRunner::onEvent(const dev::DeviceEvent& e)
 {
     if (!active(m_state))
         return;
+    // Events carry the device's clock to the microsecond (a status only as often as it is polled).
+    if (e.deviceTimeUs > m_deviceLastUs)
+        m_deviceLastUs = e.deviceTimeUs;
     using K = dev::proto::EventKind;
     if (e.kind == K::EStop) {
         stopRun(motion::msg::make("recipe.run.estop", {opArg(m_op)}));
@@ -557,7 +631,7 @@ void RecipeRunner::onMoveTimeout()
     else if (m.kind == MoveKind::Pump)
         arrived = arrived && at('P', m_pumpUl + m.pumpDeltaUl);
     else
-        arrived = arrived && at('X', m.xMm) && at('Y', m.yMm);
+        arrived = arrived && at('X', m.xMm) && at('Y', m.yMm) && (!m.withZ || at('Z', m.zMm));
     if (arrived) {
         emit message(motion::msg::make("recipe.run.motion_done_lost", {motion::msg::term("move", moveTerm(m.kind))}), false);
         moveArrived();
@@ -587,6 +661,8 @@ void RecipeRunner::onMoveTimeout()
     else {
         want.set("X", m.xMm);
         want.set("Y", m.yMm);
+        if (m.withZ)
+            want.set("Z", m.zMm);
     }
     seen.set("expected", std::move(want));
     stopRun(motion::msg::make("recipe.run.move_timeout", {motion::msg::term("move", moveTerm(m.kind)), opArg(m_op)}), std::move(seen));

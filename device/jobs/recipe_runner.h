@@ -64,6 +64,9 @@ struct RunProgress {
     double elapsedS = 0;    ///< running time (pauses excluded)
     double etaS = 0;        ///< remaining, from the profiles scaled by how the run is going
     double fraction = 0;    ///< of the planned time
+    /// Running time on the instrument's own clock (pauses excluded): what the plan's
+    /// times are comparable with, on a sped-up simulator too.
+    double deviceS = 0;
 };
 
 class RecipeRunner : public QObject {
@@ -122,6 +125,9 @@ private:
     void nextMove();
     void sendMove(const motion::plates::MachineMove& planned);
     void moveArrived();
+    /// A wait: asks the device's clock, then sleeps what is left of it (`begin`: it starts now).
+    void checkDwell(bool begin);
+    double deviceRate() const;
     void onEvent(const dev::DeviceEvent& e);
     void onLinkState(dev::LinkState s);
     void onMoveTimeout();
@@ -154,7 +160,8 @@ private:
     bool m_pauseAsked = false;
     // The move in flight: which axes' MotionDone we wait for, and its reply.
     quint8 m_waitMask = 0;
-    bool m_replied = false;
+    bool m_replied = false;    ///< every request of the move answered
+    int m_repliesPending = 0;  ///< requests of the move not answered yet (two for an arched leg)
     int m_moveSerial = 0;      ///< callbacks of an abandoned move are ignored
     std::optional<motion::plates::MachineMove> m_inFlight;
     // What we last commanded (valid once commanded since the (re)start).
@@ -169,6 +176,10 @@ private:
     bool m_budgetStartPending = false;  ///< answered, no status since
     QElapsedTimer m_clock;
     double m_elapsedBeforeS = 0;    ///< running time of earlier stretches
+    double m_deviceBeforeS = 0;     ///< the same on the device's clock
+    quint64 m_deviceStartUs = 0;    ///< device clock when this stretch began
+    quint64 m_deviceLastUs = 0;     ///< device clock of the latest event or status of this stretch
+    quint64 m_dwellStartUs = 0;     ///< device clock the wait counts from
     /// The pace of this session: planned time of the ops it closed against the running time
     /// it took. A pause does not end a session (the pause is not running time, and the pace
     /// before it still holds); a resume after a stop or from a log starts a new one.

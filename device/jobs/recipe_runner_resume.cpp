@@ -49,6 +49,7 @@ RunProgress RecipeRunner::progress() const
     }
     const bool running = m_state == RunState::Running || m_state == RunState::Pausing || m_state == RunState::Aborting;
     p.elapsedS = m_elapsedBeforeS + (running ? m_clock.elapsed() / 1000.0 : 0.0);
+    p.deviceS = m_deviceBeforeS + (running ? static_cast<double>(m_deviceLastUs - std::min(m_deviceStartUs, m_deviceLastUs)) / 1e6 : 0.0);
     if (m_op >= 0 && m_op < p.opsTotal && m_state == RunState::Paused) {
         // Paused between two ops: the last one is done and the next has not begun.
         p.nextOp = m_op;

@@ -106,6 +106,26 @@ Skip counts the well as done; Do again repeats it in full.</source>
         <source>Touch off in %1</source>
         <translation>在 %1 中贴壁</translation>
     </message>
+    <message>
+        <source>As written</source>
+        <translation>按书写顺序</translation>
+    </message>
+    <message>
+        <source>Column by column</source>
+        <translation>逐列</translation>
+    </message>
+    <message>
+        <source>Snake rows</source>
+        <translation>行蛇形</translation>
+    </message>
+    <message>
+        <source>Snake columns</source>
+        <translation>列蛇形</translation>
+    </message>
+    <message>
+        <source>Shortest</source>
+        <translation>最短路径</translation>
+    </message>
 </context>
 <context>
     <name>app::AboutDialog</name>
@@ -2522,6 +2542,25 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>  判定：始终未静止：仍有 ±%1 %2、周期 %3 s 的极限环
 </translation>
     </message>
+    <message>
+        <source>time-optimal bound %1 s: the plan takes %2 times the bound</source>
+        <translation>时间最优下限 %1 s：计划用时是下限的 %2 倍</translation>
+    </message>
+    <message>
+        <source>order %1: %2 s, bound %3 s</source>
+        <translation>顺序 %1：%2 s，下限 %3 s</translation>
+    </message>
+    <message>
+        <source>order %1: a step cannot take it</source>
+        <translation>顺序 %1：有步骤不能采用</translation>
+    </message>
+    <message>
+        <source>also plan every well order (as-written, column-major, snake-rows, snake-columns, shortest): time and bound of each</source>
+        <translation>同时按每种孔顺序（按书写、逐列、行蛇形、列蛇形、最短路径）规划：给出各自的用时和下限</translation>
+    </message>
+</context>
+<context>
+    <name>app::cli::CliSession</name>
     <message>
         <source>--stage-errors is for the simulated stage: give --sim stage</source>
         <translation>--stage-errors 只用于仿真载物台：请给出 --sim stage</translation>
@@ -7334,6 +7373,45 @@ Keep that log aside and start this test afresh?</source>
         <source>Start corner</source>
         <translation>起始角点</translation>
     </message>
+    <message>
+        <source>The bound is the least time any controller could take for these wells in this order under the axes&apos; limits and the travel rules (docs/recipes.md)</source>
+        <translation>下限是任何控制器在各轴限制和移动规则下按此顺序完成这些孔所需的最短时间（docs/recipes.md）</translation>
+    </message>
+    <message>
+        <source>Well order</source>
+        <translation>孔顺序</translation>
+    </message>
+    <message>
+        <source>Planned</source>
+        <translation>计划</translation>
+    </message>
+    <message>
+        <source>Bound</source>
+        <translation>下限</translation>
+    </message>
+    <message>
+        <source>Planned / bound</source>
+        <translation>计划 / 下限</translation>
+    </message>
+    <message>
+        <source>Every step with wells planned in each order; the recipe&apos;s own order is the one shown above</source>
+        <translation>每个含孔的步骤按各顺序规划；方案自身的顺序即上方所示</translation>
+    </message>
+    <message>
+        <source>cannot be used</source>
+        <translation>不能使用</translation>
+    </message>
+    <message>
+        <source>Took %1 on the analyzer&apos;s clock: %2 times the time-optimal bound (%3); planned %4</source>
+        <translation>按分析仪时钟用时 %1：是时间最优下限（%3）的 %2 倍；计划 %4</translation>
+    </message>
+    <message>
+        <source>Time-optimal bound %1: the plan takes %2 times it</source>
+        <translation>时间最优下限 %1：计划用时是它的 %2 倍</translation>
+    </message>
+</context>
+<context>
+    <name>ui::ScanPlanForm</name>
     <message>
         <source>Approach every tile from the same side</source>
         <translation>每个图块都从同一侧趋近</translation>
@@ -12756,6 +12834,46 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <source>resuming %1 from %2: %3 of %4 operations already done, continuing with %5</source>
         <comment>recipe.run.resuming</comment>
         <translation>从 %2 继续 %1：%4 项操作中已完成 %3 项，接着运行“%5”</translation>
+    </message>
+    <message>
+        <source>a clearance counts up from the labware&apos;s top: %1 is not from 0 to %2</source>
+        <comment>recipe.clearance_below_top</comment>
+        <translation>安全间隙从耗材顶面向上计：%1 不在 0 到 %2 之间</translation>
+    </message>
+    <message>
+        <source>&quot;travel&quot; needs a recipe of version 2 (this one is version %1)</source>
+        <comment>recipe.file.travel_needs_version</comment>
+        <translation>“travel” 需要第 2 版方案（本方案为第 %1 版）</translation>
+    </message>
+    <message>
+        <source>unknown travel mode &quot;%1&quot;; the modes are arched, straight-up-down</source>
+        <comment>recipe.file.unknown_travel_mode</comment>
+        <translation>未知移动方式 “%1”；可用方式为 arched、straight-up-down</translation>
+    </message>
+    <message>
+        <source>one well&apos;s %1 with the disposal volume %2 and the air gap %3 does not fit the syringe&apos;s room (%4)</source>
+        <comment>recipe.distribute_no_room</comment>
+        <translation>一个孔的 %1 加上弃液量 %2 和空气间隔 %3 超出注射器的剩余容量（%4）</translation>
+    </message>
+    <message>
+        <source>distributing needs a source to draw from</source>
+        <comment>recipe.distribute_needs_source</comment>
+        <translation>分配需要一个吸液来源</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is for a step that distributes: add &quot;distribute&quot;: true</source>
+        <comment>recipe.needs_distribute</comment>
+        <translation>“%1” 用于分配步骤：请加上 “distribute”: true</translation>
+    </message>
+    <message>
+        <source>a step at a station has no wells to put in order &quot;%1&quot;</source>
+        <comment>recipe.order_without_wells</comment>
+        <translation>工位上的步骤没有可按 “%1” 排序的孔</translation>
+    </message>
+    <message>
+        <source>unknown well order &quot;%1&quot;; the orders are %2</source>
+        <comment>recipe.file.unknown_order</comment>
+        <translation>未知孔顺序 “%1”；可用顺序为 %2</translation>
     </message>
 </context>
 <context>

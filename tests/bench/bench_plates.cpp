@@ -5,12 +5,13 @@
 // one paint of the 384-well plate map.
 //
 // Counters: ops (wells and stations visited), ops_per_s (planning rate),
-// plan_ms / read_ms / paint_ms (this thread's CPU per iteration, which the
+// plan_ms / plan_shortest_ms / bound_ms / read_ms / paint_ms (this thread's CPU per iteration, which the
 // shared build machine does not inflate), log_lines, fits_per_s.
 #include "device/files/plates/deck_file.h"
 #include "device/files/recipes/recipe_file.h"
 #include "device/files/recipes/run_log.h"
 #include "motion/plans/plates/calibration.h"
+#include "motion/plans/recipes/plan_bound.h"
 #include "motion/plans/recipes/recipe_plan.h"
 #include "widgets/plates/plate_map.h"
 
@@ -100,6 +101,53 @@ void BM_PlanRecipe384(benchmark::State& state)
     cpuPerIteration(state, "plan_ms", t0);
 }
 BENCHMARK(BM_PlanRecipe384)->Unit(benchmark::kMillisecond);
+
+/// The same recipe with every step in the "shortest" order (nearest neighbour and
+/// 2-opt over each step's 384 wells) and arched travel: planning it, then its bound alone.
+motion::plates::Recipe recipe384Shortest()
+{
+    motion::plates::Recipe r = recipe384();
+    r.order = motion::plates::WellOrder::Shortest;
+    r.travel.mode = motion::plates::TravelMode::Arched;
+    return r;
+}
+
+void BM_PlanRecipe384Shortest(benchmark::State& state)
+{
+    const motion::plates::PlanContext c = context();
+    const motion::plates::Recipe r = recipe384Shortest();
+    std::size_t ops = 0;
+    const double t0 = threadCpuMs();
+    for (auto _ : state) {
+        const motion::plates::RecipePlan p = motion::plates::planRecipe(r, c);
+        ops = p.ops.size();
+        if (!p.ok())
+            state.SkipWithError(motion::msg::debugString(p.problems.front().message).c_str());
+        benchmark::DoNotOptimize(p.totalTimeS);
+    }
+    state.counters["ops"] = static_cast<double>(ops);
+    cpuPerIteration(state, "plan_shortest_ms", t0);
+}
+BENCHMARK(BM_PlanRecipe384Shortest)->Unit(benchmark::kMillisecond);
+
+void BM_Bound384(benchmark::State& state)
+{
+    const motion::plates::PlanContext c = context();
+    const motion::plates::RecipePlan p = motion::plates::planRecipe(recipe384Shortest(), c);
+    if (!p.ok())
+        state.SkipWithError(motion::msg::debugString(p.problems.front().message).c_str());
+    double bound = 0;
+    const double t0 = threadCpuMs();
+    for (auto _ : state) {
+        bound = motion::plates::planBoundS(p, c.deck);
+        benchmark::DoNotOptimize(bound);
+    }
+    state.counters["ops"] = static_cast<double>(p.ops.size());
+    state.counters["bound_s"] = bound;
+    state.counters["planned_s"] = p.totalTimeS;
+    cpuPerIteration(state, "bound_ms", t0);
+}
+BENCHMARK(BM_Bound384)->Unit(benchmark::kMillisecond);
 
 void BM_ReadAndValidateRecipe384(benchmark::State& state)
 {

@@ -417,3 +417,33 @@ TEST_F(PlatesScreenTest, PausedBetweenWellsNothingIsCurrent)
     QTest::mouseClick(resume, Qt::LeftButton);
     ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == dev::jobs::RunState::Finished; }, 30000));
 }
+
+// Before Run the screen shows the path the chosen order takes on the plate, the planned
+// time beside its time-optimal bound, and how every other order would do.
+TEST_F(PlatesScreenTest, ThePathTheBoundAndTheOrdersComparedBeforeRun)
+{
+    ASSERT_TRUE(screen->openRecipe(QStringLiteral(BP_SOURCE_DIR "/resources/examples/fill-96-arched.recipe.json")));
+    pump(50);
+    const motion::plates::RecipePlan& plan = screen->plan();
+    ASSERT_TRUE(plan.ok());
+    screen->showPlate(QStringLiteral("assay"));
+    pump(20);
+    // Snake rows: A1 … A12, then B12 back to B1.
+    const QStringList path = screen->plateMap()->path();
+    ASSERT_EQ(path.size(), 96);
+    EXPECT_EQ(path.mid(10, 4), (QStringList{QStringLiteral("A11"), QStringLiteral("A12"), QStringLiteral("B12"), QStringLiteral("B11")}));
+    auto* speed = screen->runPanel()->findChild<QLabel*>(QStringLiteral("planSpeed"));
+    ASSERT_NE(speed, nullptr);
+    EXPECT_TRUE(speed->text().contains(QStringLiteral("Time-optimal bound"))) << speed->text().toStdString();
+    EXPECT_TRUE(speed->text().contains(QString::number(plan.totalTimeS / plan.boundS, 'f', 2))) << speed->text().toStdString();
+    auto* orders = screen->runPanel()->findChild<QTableWidget*>(QStringLiteral("orderComparison"));
+    ASSERT_NE(orders, nullptr);
+    ASSERT_EQ(orders->rowCount(), 5);
+    QStringList names;
+    for (int r = 0; r < orders->rowCount(); ++r)
+        names << orders->item(r, 0)->text();
+    EXPECT_EQ(names, (QStringList{QStringLiteral("As written"), QStringLiteral("Column by column"), QStringLiteral("Snake rows"),
+                                  QStringLiteral("Snake columns"), QStringLiteral("Shortest")}));
+    EXPECT_EQ(orders->item(2, 0)->toolTip(), QStringLiteral("snake-rows")) << "the file's word";
+    EXPECT_FALSE(orders->item(4, 1)->text().isEmpty());
+}

@@ -204,6 +204,17 @@ void PlateMap::paintEvent(QPaintEvent*)
         const QPointF at = toWidget(w->xMm, 0);
         p.drawText(QRectF(at.x() - 15, at.y() - kMarginPx, 30, kMarginPx - 3), Qt::AlignHCenter | Qt::AlignBottom, QString::number(c + 1));
     }
+    if (m_path.size() > 1) {
+        // Under the wells: the line shows between them, over the rims it crosses, and each
+        // well keeps its colour.
+        QPolygonF line;
+        for (const QString& name : m_path)
+            if (const motion::plates::Well* w = m_labware.wellNamed(name.toStdString()))
+                line << toWidget(w->xMm, w->yMm);
+        p.setPen(QPen(QColor(0xe6, 0x51, 0x00), 2));
+        p.setBrush(Qt::NoBrush);
+        p.drawPolyline(line);
+    }
     for (const motion::plates::Well& w : m_labware.wells) {
         const QString name = QString::fromStdString(motion::plates::wellName(w.id));
         const WellState st = m_states.value(name, WellState::Unused);
@@ -226,6 +237,14 @@ void PlateMap::paintEvent(QPaintEvent*)
     p.setPen(QColor(0x33, 0x33, 0x33));
     p.drawText(QRectF(footprint.left(), footprint.bottom() + 2, footprint.width(), kMarginPx - 4), Qt::AlignLeft | Qt::AlignTop,
                m_title + tr("  ·  %1 × %2 mm, drawn to scale").arg(m_labware.lengthMm).arg(m_labware.widthMm));
+}
+
+void PlateMap::setPath(const QStringList& wellsInOrder)
+{
+    if (wellsInOrder == m_path)
+        return;
+    m_path = wellsInOrder;
+    update();
 }
 
 void PlateMap::mousePressEvent(QMouseEvent* e)

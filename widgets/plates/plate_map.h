@@ -33,6 +33,10 @@ public:
     /// States and the recipe's volumes per well (µL: + dispensed, − aspirated).
     void setWellStates(const QMap<QString, WellState>& states);
     void setVolumes(const QMap<QString, double>& volumesUl);
+    /// The tip's path over this plate: its wells in the order the plan visits them
+    /// (drawn as a line from centre to centre; a well may come more than once).
+    void setPath(const QStringList& wellsInOrder);
+    const QStringList& path() const { return m_path; }
 
     const std::set<motion::plates::WellId>& selection() const { return m_selection; }
     void setSelection(const std::set<motion::plates::WellId>& wells);
@@ -78,6 +82,7 @@ private:
     bool m_calibrated = false;
     QMap<QString, WellState> m_states;
     QMap<QString, double> m_volumes;
+    QStringList m_path;
     std::set<motion::plates::WellId> m_selection;
     std::set<motion::plates::WellId> m_dragBase;  ///< what was selected when a Ctrl-drag began
     std::optional<QPointF> m_pressAt;

@@ -342,6 +342,7 @@ void PlatesScreen::revalidate()
             errors << ui::words::problem(p);
     m_planOk = errors.isEmpty() && m_plan.ok() && !m_plan.ops.empty();
     m_run->setPlan(m_plan, m_planOk, errors.isEmpty() ? (m_plan.ops.empty() ? tr("the recipe has no steps") : QString()) : errors.first());
+    m_run->setOrderComparison(m_planOk ? motion::plates::compareOrders(m_editor->recipe(), c) : std::vector<motion::plates::OrderComparison>{});
     refreshPlateChoices();
 
     // The calibration wizard teaches on what the recipe puts in each slot.
@@ -435,6 +436,11 @@ void PlatesScreen::refreshMap()
     }
     m_map->setWellStates(states);
     m_map->setVolumes(volumes);
+    QStringList path;
+    for (const auto& op : m_plan.ops)
+        if (op.plate == name && !op.well.empty())
+            path << QString::fromStdString(op.well);
+    m_map->setPath(path);
 }
 
 void PlatesScreen::selectionToStep(int mode)

@@ -67,6 +67,12 @@ RunPanel::RunPanel(dev::jobs::RecipeRunner* runner, QWidget* parent) : QWidget(p
     m_summary = new QLabel(planBox);
     m_summary->setWordWrap(true);
     pv->addWidget(m_summary);
+    m_speed = new QLabel(planBox);
+    m_speed->setObjectName(QStringLiteral("planSpeed"));
+    m_speed->setWordWrap(true);
+    m_speed->setToolTip(tr("The bound is the least time any controller could take for these wells in this order under the axes' limits "
+                           "and the travel rules (docs/recipes.md)"));
+    pv->addWidget(m_speed);
     m_table = new QTableWidget(0, 8, planBox);
     m_table->setHorizontalHeaderLabels({tr("#"), tr("Step"), tr("What"), tr("Where"), tr("X (mm)"), tr("Y (mm)"), tr("Plunger (µL)"), tr("Starts at")});
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -74,6 +80,17 @@ RunPanel::RunPanel(dev::jobs::RecipeRunner* runner, QWidget* parent) : QWidget(p
     m_table->verticalHeader()->setVisible(false);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    // Made after the plan table (which stays the panel's first table), shown above it.
+    m_orders = new QTableWidget(0, 4, planBox);
+    m_orders->setObjectName(QStringLiteral("orderComparison"));
+    m_orders->setHorizontalHeaderLabels({tr("Well order"), tr("Planned"), tr("Bound"), tr("Planned / bound")});
+    m_orders->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_orders->horizontalHeader()->setStretchLastSection(true);
+    m_orders->verticalHeader()->setVisible(false);
+    m_orders->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_orders->setMaximumHeight(m_orders->horizontalHeader()->sizeHint().height() * 7);
+    m_orders->setToolTip(tr("Every step with wells planned in each order; the recipe's own order is the one shown above"));
+    pv->addWidget(m_orders);
     pv->addWidget(m_table);
     v->addWidget(planBox, 3);
 
@@ -134,6 +151,8 @@ void RunPanel::setPlan(const motion::plates::RecipePlan& plan, bool runnable, co
                                       .arg(plan.pumpEndUl, 0, 'g', 6)
                                       .arg(duration(plan.totalTimeS))
                                 : tr("Not runnable: %1").arg(why));
+    m_plannedS = runnable ? plan.totalTimeS : 0;
+    m_boundS = runnable ? plan.boundS : 0;
     const int rows = std::min(static_cast<int>(plan.ops.size()), kMaxPlanRows);
     m_table->setUpdatesEnabled(false);
     m_table->setRowCount(rows);
@@ -158,6 +177,26 @@ void RunPanel::setPlan(const motion::plates::RecipePlan& plan, bool runnable, co
     refresh();
 }
 
+void RunPanel::setOrderComparison(const std::vector<motion::plates::OrderComparison>& orders)
+{
+    m_orders->setRowCount(static_cast<int>(orders.size()));
+    for (int r = 0; r < static_cast<int>(orders.size()); ++r) {
+        const motion::plates::OrderComparison& o = orders[static_cast<std::size_t>(r)];
+        const QStringList cells = {wellOrderTitle(o.order),
+                                   o.ok ? duration(o.totalTimeS) : tr("cannot be used"),
+                                   o.ok ? duration(o.boundS) : QString(),
+                                   o.ok && o.boundS > 0 ? QString::number(o.totalTimeS / o.boundS, 'f', 2) : QString()};
+        for (int c = 0; c < cells.size(); ++c) {
+            auto* item = m_orders->item(r, c);
+            if (!item)
+                m_orders->setItem(r, c, item = new QTableWidgetItem);
+            item->setText(cells[c]);
+        }
+        m_orders->item(r, 0)->setToolTip(QString::fromLatin1(motion::plates::wellOrderName(o.order)));  // what the recipe file says
+    }
+    m_orders->setVisible(!orders.empty());
+}
+
 void RunPanel::refresh()
 {
     const RunState s = m_runner->state();
@@ -177,6 +216,13 @@ void RunPanel::refresh()
                                                                 : tr("Current: —"));
     m_times->setText(s == RunState::Idle ? QString()
                                          : tr("Elapsed %1 · ETA %2").arg(duration(p.elapsedS), s == RunState::Finished ? tr("done") : duration(p.etaS)));
+    if (m_boundS <= 0)
+        m_speed->clear();
+    else if (s == RunState::Finished && p.deviceS > 0)
+        m_speed->setText(tr("Took %1 on the analyzer's clock: %2 times the time-optimal bound (%3); planned %4")
+                             .arg(duration(p.deviceS), QString::number(p.deviceS / m_boundS, 'f', 2), duration(m_boundS), duration(m_plannedS)));
+    else
+        m_speed->setText(tr("Time-optimal bound %1: the plan takes %2 times it").arg(duration(m_boundS), QString::number(m_plannedS / m_boundS, 'f', 2)));
     if (p.currentOp >= 0 && p.currentOp < m_table->rowCount() && busy)
         m_table->selectRow(p.currentOp);
 }

@@ -3,6 +3,7 @@
 // move and time, the totals), Run / Pause / Resume / Abort, progress with the
 // current well, elapsed time and ETA, and what the run said along the way.
 #include "device/jobs/recipe_runner.h"
+#include "motion/plans/recipes/plan_bound.h"
 
 #include <QWidget>
 
@@ -26,6 +27,8 @@ public:
     void setConfirm(std::function<bool(const QString&)> confirm) { m_confirm = std::move(confirm); }
     /// The plan to show; `runnable` false (with `why`) disables Run.
     void setPlan(const motion::plates::RecipePlan& plan, bool runnable, const QString& why);
+    /// Each well order's planned time and bound, shown before Run (empty: none to show).
+    void setOrderComparison(const std::vector<motion::plates::OrderComparison>& orders);
 
     /// "2 min 53 s", "48 s", "1 h 05 min".
     /// Rows of the plan table at most (the totals cover every well).
@@ -49,6 +52,9 @@ private:
     std::function<bool(const QString&)> m_confirm;
     bool m_runnable = false;
     QLabel* m_summary;
+    QLabel* m_speed;        ///< the bound, and the plan's (or the finished run's) time over it
+    QTableWidget* m_orders; ///< the orders compared
+    double m_plannedS = 0, m_boundS = 0;
     QTableWidget* m_table;
     int m_planOps = 0;  ///< the plan on screen, before a run has one
     QPushButton* m_run;

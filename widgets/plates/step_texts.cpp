@@ -29,6 +29,19 @@ QString stepTypeTitle(motion::plates::StepType type)
     return QString::fromLatin1(motion::plates::stepTypeName(type));
 }
 
+QString wellOrderTitle(motion::plates::WellOrder order)
+{
+    using motion::plates::WellOrder;
+    switch (order) {
+    case WellOrder::AsWritten: return StepTexts::tr("As written");
+    case WellOrder::ColumnMajor: return StepTexts::tr("Column by column");
+    case WellOrder::SnakeRows: return StepTexts::tr("Snake rows");
+    case WellOrder::SnakeColumns: return StepTexts::tr("Snake columns");
+    case WellOrder::Shortest: return StepTexts::tr("Shortest");
+    }
+    return QString::fromLatin1(motion::plates::wellOrderName(order));
+}
+
 QString opTitle(const motion::plates::PlanOp& op)
 {
     using motion::plates::StepType;

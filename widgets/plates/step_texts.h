@@ -12,6 +12,9 @@ namespace ui {
 /// "Aspirate", "Dispense", "Mix", "Wash", "Air gap", "Wait", "Touch off".
 QString stepTypeTitle(motion::plates::StepType type);
 
+/// "As written", "Column by column", "Snake rows", "Snake columns", "Shortest".
+QString wellOrderTitle(motion::plates::WellOrder order);
+
 /// One op for the plan table: "Dispense 10 µL into assay B3", "Wash 200 µL at station wash".
 QString opTitle(const motion::plates::PlanOp& op);
 

@@ -18,13 +18,14 @@ constexpr double kRecipeBig = 1e9;
 std::vector<std::string_view> fieldsOf(StepType t)
 {
     switch (t) {
-    case StepType::Aspirate: return {"plate", "wells", "station", "volume_ul", "speed_ul_s"};
-    case StepType::Dispense: return {"plate", "wells", "station", "volume_ul", "speed_ul_s", "source", "touch_off_mm"};
-    case StepType::Mix: return {"plate", "wells", "volume_ul", "cycles", "speed_ul_s"};
+    case StepType::Aspirate: return {"plate", "wells", "station", "volume_ul", "speed_ul_s", "order"};
+    case StepType::Dispense:
+        return {"plate", "wells", "station", "volume_ul", "speed_ul_s", "source", "touch_off_mm", "order", "distribute", "disposal_ul", "air_gap_ul", "rest_to"};
+    case StepType::Mix: return {"plate", "wells", "volume_ul", "cycles", "speed_ul_s", "order"};
     case StepType::Wash: return {"station", "volume_ul", "cycles", "speed_ul_s"};
     case StepType::AirGap: return {"volume_ul", "speed_ul_s"};
     case StepType::Wait: return {"seconds"};
-    case StepType::TouchOff: return {"plate", "wells", "offset_mm"};
+    case StepType::TouchOff: return {"plate", "wells", "offset_mm", "order"};
     }
     return {};
 }
@@ -58,6 +59,18 @@ void readWells(ObjectReader& o, const Value& step, motion::plates::Step& s, dev:
     } else {
         problems.add(*w, o.pathOf("wells"), motion::msg::make("recipe.file.wells_wrong_type", {motion::msg::term("actual", dev::files::json::typeTerm(w->type()))}));
     }
+}
+
+std::optional<motion::plates::WellOrder> readOrder(ObjectReader& o, const Value& owner, dev::files::json::Problems& problems)
+{
+    const auto name = o.string("order", false);
+    if (!name)
+        return std::nullopt;
+    const auto order = motion::plates::wellOrderFromName(*name);
+    if (!order)
+        problems.add(*owner.find("order"), o.pathOf("order"), motion::msg::make("recipe.file.unknown_order", {motion::msg::verbatim("order", name->substr(0, 40)),
+                                                                                                         motion::msg::verbatim("orders", motion::plates::wellOrderList())}));
+    return order;
 }
 
 motion::plates::Step readStep(const Value& v, const std::string& path, dev::files::json::Problems& problems)
@@ -114,6 +127,14 @@ motion::plates::Step readStep(const Value& v, const std::string& path, dev::file
         s.offsetMm = o.number("offset_mm", true, -kRecipeBig, kRecipeBig).value_or(0);
     if (*t == StepType::Dispense)
         s.offsetMm = o.number("touch_off_mm", false, -kRecipeBig, kRecipeBig).value_or(0);
+    if (takes(*t, "order"))
+        s.order = readOrder(o, v, problems);
+    if (*t == StepType::Dispense) {
+        s.distribute = o.boolean("distribute", false).value_or(false);
+        s.disposalUl = o.number("disposal_ul", false, -kRecipeBig, kRecipeBig).value_or(0);
+        s.airGapUl = o.number("air_gap_ul", false, -kRecipeBig, kRecipeBig).value_or(0);
+        s.restTo = o.string("rest_to", false).value_or("");
+    }
     if (takes(*t, "source"))
         if (const Value* src = o.get("source", Value::Type::Object, false)) {
             ObjectReader so(*src, o.pathOf("source"), problems);
@@ -148,17 +169,38 @@ RecipeRead parseRecipe(std::string_view text)
     if (!r.root)
         return r;
     const Value& root = *r.root;
-    if (!dev::files::json::checkSchema(root, kRecipeSchema, kRecipeVersion, r.problems))
+    const auto version = dev::files::json::checkSchema(root, kRecipeSchema, kRecipeVersion, r.problems);
+    if (!version)
         return r;
     ObjectReader o(root, "", r.problems);
-    o.refuseUnknown({"schema", "version", "name", "description", "travel_speed_mm_s", "z_speed_mm_s", "plates", "steps"});
+    o.refuseUnknown({"schema", "version", "name", "description", "travel_speed_mm_s", "z_speed_mm_s", "order", "travel", "plates", "steps"});
     motion::plates::Recipe rec;
+    // Version 1 recipes travel straight up and down, as they always did; from version 2
+    // the tip travels in arches unless the recipe says otherwise.
+    rec.travel.mode = *version >= 2 ? motion::plates::TravelMode::Arched : motion::plates::TravelMode::StraightUpDown;
+    if (const Value* travel = root.find("travel")) {
+        if (*version < 2)
+            r.problems.add(*travel, "travel", motion::msg::make("recipe.file.travel_needs_version", {motion::msg::integer("version", *version)}));
+        else if (const Value* t = o.get("travel", Value::Type::Object, false)) {
+            ObjectReader to(*t, "travel", r.problems);
+            to.refuseUnknown({"mode", "clearance_in_plate_mm", "clearance_between_mm"});
+            if (const auto mode = to.string("mode", false)) {
+                if (const auto m = motion::plates::travelModeFromName(*mode))
+                    rec.travel.mode = *m;
+                else
+                    r.problems.add(*t->find("mode"), "travel.mode", motion::msg::make("recipe.file.unknown_travel_mode", {motion::msg::verbatim("mode", mode->substr(0, 40))}));
+            }
+            rec.travel.clearanceInPlateMm = to.number("clearance_in_plate_mm", false, -kRecipeBig, kRecipeBig).value_or(5);
+            rec.travel.clearanceBetweenMm = to.number("clearance_between_mm", false, -kRecipeBig, kRecipeBig).value_or(10);
+        }
+    }
     rec.name = o.string("name", false).value_or("");
     rec.description = o.string("description", false).value_or("");
     if (root.find("travel_speed_mm_s"))
         rec.travelSpeedMmS = o.number("travel_speed_mm_s", false, -kRecipeBig, kRecipeBig);
     if (root.find("z_speed_mm_s"))
         rec.zSpeedMmS = o.number("z_speed_mm_s", false, -kRecipeBig, kRecipeBig);
+    rec.order = readOrder(o, root, r.problems);
     if (const Value* plates = o.get("plates", Value::Type::Array, true)) {
         for (std::size_t k = 0; k < plates->items().size() && k < 64; ++k) {
             ObjectReader p(plates->items()[k], dev::files::json::childPath("plates", k), r.problems);
@@ -212,7 +254,10 @@ Value wellsJson(const std::vector<std::string>& wells)
 
 std::string writeRecipe(const motion::plates::Recipe& rec)
 {
-    Value v = dev::files::json::schemaObject(kRecipeSchema, kRecipeVersion);
+    // A recipe that travels as version 1 did is written as version 1, which every
+    // BenchPilot reads the same; anything else needs version 2 and says how it travels.
+    const bool v1 = rec.travel.isDefault();
+    Value v = dev::files::json::schemaObject(kRecipeSchema, v1 ? 1 : kRecipeVersion);
     v.set("name", rec.name);
     if (!rec.description.empty())
         v.set("description", rec.description);
@@ -220,6 +265,15 @@ std::string writeRecipe(const motion::plates::Recipe& rec)
         v.set("travel_speed_mm_s", *rec.travelSpeedMmS);
     if (rec.zSpeedMmS)
         v.set("z_speed_mm_s", *rec.zSpeedMmS);
+    if (rec.order)
+        v.set("order", motion::plates::wellOrderName(*rec.order));
+    if (!v1) {
+        Value t = Value::object();
+        t.set("mode", motion::plates::travelModeName(rec.travel.mode));
+        t.set("clearance_in_plate_mm", rec.travel.clearanceInPlateMm);
+        t.set("clearance_between_mm", rec.travel.clearanceBetweenMm);
+        v.set("travel", std::move(t));
+    }
     Value plates = Value::array();
     for (const motion::plates::RecipePlate& p : rec.plates) {
         Value x = Value::object();
@@ -263,6 +317,18 @@ std::string writeRecipe(const motion::plates::Recipe& rec)
                 src.set("well", s.source.well);
             }
             x.set("source", std::move(src));
+        }
+        if (takes(s.type, "order") && s.order)
+            x.set("order", motion::plates::wellOrderName(*s.order));
+        if (s.type == StepType::Dispense) {
+            if (s.distribute)
+                x.set("distribute", true);
+            if (s.disposalUl != 0)
+                x.set("disposal_ul", s.disposalUl);
+            if (s.airGapUl != 0)
+                x.set("air_gap_ul", s.airGapUl);
+            if (!s.restTo.empty())
+                x.set("rest_to", s.restTo);
         }
         if (!s.note.empty())
             x.set("note", s.note);

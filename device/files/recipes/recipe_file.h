@@ -15,7 +15,8 @@
 namespace dev::files::plates {
 
 constexpr const char* kRecipeSchema = "benchpilot.recipe";
-constexpr int kRecipeVersion = 1;
+/// Version 2: "travel" (arched by default). Version 1 recipes travel straight up and down.
+constexpr int kRecipeVersion = 2;
 
 struct RecipeRead {
     /// As much of the recipe as could be read, whenever the document is a

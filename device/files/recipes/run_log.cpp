@@ -55,7 +55,10 @@ RunLogState readRunLog(std::string_view text)
             if (header)
                 local.add(v, "event", motion::msg::make("file.log.second_header"));
             dev::files::json::checkSchema(v, kRunLogSchema, kRunLogVersion, local);
-            o.refuseUnknown({"schema", "version", "event", "recipe", "fingerprint", "ops", "p_ul", "time"});
+            o.refuseUnknown({"schema", "version", "event", "recipe", "fingerprint", "ops", "p_ul", "orders", "time"});
+            if (const Value* orders = o.get("orders", Value::Type::Array, false))
+                for (const Value& item : orders->items())
+                    st.orders.push_back(item.isString() ? item.asString() : std::string());
             st.startPumpUl = o.number("p_ul", false, -1e9, 1e9);
             st.recipe = o.string("recipe", false).value_or("");
             st.fingerprint = o.string("fingerprint", true).value_or("");

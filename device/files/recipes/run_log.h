@@ -47,6 +47,7 @@ struct RunLogState {
     /// The plunger when the run began: a resumed run is planned from it, so its
     /// plan (and the syringe's accounting) is the original run's.
     std::optional<double> startPumpUl;
+    std::vector<std::string> orders;  ///< the well order of each step, as the run was planned
     std::vector<OpRecord> ops;
     bool finished = false;
     int runs = 0;                  ///< the header and each resume

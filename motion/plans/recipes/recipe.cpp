@@ -23,6 +23,39 @@ std::string stepTypeList()
     return s;
 }
 
+namespace {
+const char* const kOrderNames[kWellOrderCount] = {"as-written", "column-major", "snake-rows", "snake-columns", "shortest"};
+}
+
+const char* wellOrderName(WellOrder o) { return kOrderNames[static_cast<int>(o)]; }
+
+std::optional<WellOrder> wellOrderFromName(const std::string& name)
+{
+    for (int i = 0; i < kWellOrderCount; ++i)
+        if (name == kOrderNames[i])
+            return static_cast<WellOrder>(i);
+    return std::nullopt;
+}
+
+std::string wellOrderList()
+{
+    std::string s;
+    for (int i = 0; i < kWellOrderCount; ++i)
+        s += (i ? ", " : "") + std::string(kOrderNames[i]);
+    return s;
+}
+
+const char* travelModeName(TravelMode m) { return m == TravelMode::Arched ? "arched" : "straight-up-down"; }
+
+std::optional<TravelMode> travelModeFromName(const std::string& name)
+{
+    if (name == "arched")
+        return TravelMode::Arched;
+    if (name == "straight-up-down")
+        return TravelMode::StraightUpDown;
+    return std::nullopt;
+}
+
 const RecipePlate* Recipe::plate(const std::string& plateName) const
 {
     for (const RecipePlate& p : plates)

@@ -1,7 +1,9 @@
 #include "motion/plans/recipes/recipe_plan.h"
 
 #include "motion/plans/recipes/move_time.h"
+#include "motion/plans/recipes/plan_bound.h"
 #include "motion/plans/recipes/recipe_planner.h"
+#include "motion/plans/recipes/well_order.h"
 
 #include <algorithm>
 #include <cmath>
@@ -94,10 +96,18 @@ Planner::Planner(const Recipe& r, const PlanContext& c, const StartState& s) : m
     m_z = s.zMm;
     m_p = s.pumpUl;
     m_plan.pumpStartUl = s.pumpUl;
+    for (const RecipePlate& p : r.plates)
+        if (const auto lw = c.labware.find(p.labware); lw != c.labware.end())
+            m_tallestTopZMm = std::min(m_tallestTopZMm, c.deck.tableZMm - lw->second.heightMm);
+    m_allClearZ = std::max(0.0, m_tallestTopZMm - r.travel.clearanceBetweenMm);
+    for (const Station& st : c.deck.stations)
+        m_allClearZ = std::min(m_allClearZ, st.safeZMm);
+    m_allClearZ = std::max(0.0, m_allClearZ);
 }
 
 RecipePlan Planner::run()
 {
+    m_plan.orders.assign(m_r.steps.size(), WellOrder::AsWritten);
     checkRecipe();
     if (m_r.steps.size() > kMaxSteps) {
         error("steps", motion::msg::make("recipe.too_many_steps", {motion::msg::integer("max", static_cast<long long>(kMaxSteps)),
@@ -145,6 +155,11 @@ void Planner::checkRecipe()
     }
     if (m_r.steps.empty())
         error("steps", motion::msg::make("recipe.no_steps"));
+    // Clearances count up from the labware's top: below 0 the tip would cross rims lower than their tops.
+    for (const auto& [field, value] : {std::pair<const char*, double>{"clearance_in_plate_mm", m_r.travel.clearanceInPlateMm},
+                                       {"clearance_between_mm", m_r.travel.clearanceBetweenMm}})
+        if (!std::isfinite(value) || value < 0 || value > d.travelZMm)
+            error(fieldPath("travel", field), motion::msg::make("recipe.clearance_below_top", {mmArg("value", value), mmArg("max", d.travelZMm)}));
     if (m_r.travelSpeedMmS) {
         const double vmax = std::min(d.x.maxSpeed, d.y.maxSpeed);
         if (!(*m_r.travelSpeedMmS >= kMinSpeed) || *m_r.travelSpeedMmS > vmax)
@@ -213,6 +228,8 @@ Place Planner::wellPlace(const RecipePlate& p, const Well& w)
     pl.at = pl.transform.apply({w.xMm, w.yMm});
     pl.safeZMm = p.safeZMm;
     pl.depthZMm = p.depthZMm;
+    if (const auto lw = m_c.labware.find(p.labware); lw != m_c.labware.end())
+        pl.topZMm = m_c.deck.tableZMm - lw->second.heightMm;
     pl.w = &w;
     return pl;
 }
@@ -263,7 +280,42 @@ bool Planner::stationPlace(const std::string& id, const std::string& path, Place
     pl->at = {st->xMm, st->yMm};
     pl->safeZMm = st->safeZMm;
     pl->depthZMm = st->depthZMm;
+    pl->topZMm = st->safeZMm;
     return true;
+}
+
+double Planner::clearanceTo(const Place& to) const
+{
+    // Never above home: a clearance taller than the travel is the travel's top.
+    if (!to.station.empty())
+        return std::max(0.0, std::min(to.topZMm, m_tallestTopZMm - m_r.travel.clearanceBetweenMm));
+    if (!m_overPlate.empty() && m_overPlate == to.plate)
+        return std::max(0.0, to.topZMm - m_r.travel.clearanceInPlateMm);
+    return std::max(0.0, std::min(to.topZMm - m_r.travel.clearanceInPlateMm, m_tallestTopZMm - m_r.travel.clearanceBetweenMm));
+}
+
+void Planner::orderPlaces(int step, const Step& s, std::vector<Place>& places)
+{
+    const WellOrder order = m_r.orderOf(s);
+    m_plan.orders[static_cast<std::size_t>(step)] = order;
+    if (order == WellOrder::AsWritten || places.size() < 2)
+        return;
+    std::vector<WellId> ids;
+    std::vector<PointMm> at;
+    for (const Place& pl : places) {
+        ids.push_back(pl.w ? pl.w->id : WellId{});
+        at.push_back(pl.at);
+    }
+    const double speed = m_r.travelSpeedMmS.value_or(0);
+    const MoveCost cost = [this, speed](const PointMm& a, const PointMm& b) {
+        return moveTimeS({{&m_c.deck.x, b.x - a.x}, {&m_c.deck.y, b.y - a.y}}, speed);
+    };
+    const std::vector<std::size_t> idx = wellOrderIndices(order, ids, at, cost);
+    std::vector<Place> out;
+    out.reserve(places.size());
+    for (std::size_t i : idx)
+        out.push_back(std::move(places[i]));
+    places = std::move(out);
 }
 
 void Planner::raiseTo(PlanOp& op, double z)
@@ -316,6 +368,12 @@ void Planner::pump(PlanOp& op, double delta, double speed)
 
 void Planner::goInto(PlanOp& op, const Place& pl)
 {
+    if (m_r.travel.mode == TravelMode::Arched) {
+        goIntoArched(op, pl);
+        return;
+    }
+    op.clearZMm = clearanceTo(pl);
+    m_overPlate = pl.station.empty() ? pl.plate : std::string();
     raiseTo(op, std::min(m_safeZ, pl.safeZMm));
     travelTo(op, pl.at);
     m_safeZ = pl.safeZMm;
@@ -323,6 +381,79 @@ void Planner::goInto(PlanOp& op, const Place& pl)
     op.safeZMm = pl.safeZMm;
     op.depthZMm = pl.depthZMm;
     lowerTo(op, pl.depthZMm);
+    op.visitMoves = static_cast<int>(op.moves.size());
+}
+
+double Planner::openingMm(const Place& pl)
+{
+    return pl.w ? std::max(0.0, pl.w->innerRadiusMm() - kTipWallMarginMm) : 0.0;
+}
+
+MachineMove Planner::travelWithZ(const PointMm& at, double z)
+{
+    MachineMove m;
+    m.kind = MoveKind::Travel;
+    m.xMm = at.x;
+    m.yMm = at.y;
+    m.zMm = z;
+    m.withZ = true;
+    m.speed = m_r.travelSpeedMmS.value_or(0);
+    m.zSpeed = m_r.zSpeedMmS.value_or(0);
+    const double xy = moveTimeS({{&m_c.deck.x, at.x - m_x}, {&m_c.deck.y, at.y - m_y}}, m.speed);
+    const double zt = moveTimeS({{&m_c.deck.z, z - m_z}}, m.zSpeed);
+    // Two requests go out back to back, and the move ends when both have.
+    m.durationS = overheadFor(std::max(xy, zt));
+    m_x = at.x;
+    m_y = at.y;
+    m_z = z;
+    return m;
+}
+
+void Planner::goIntoArched(PlanOp& op, const Place& pl)
+{
+    const double clear = clearanceTo(pl);
+    op.clearZMm = clear;
+    const double into = openingMm(pl);
+    const double dx = pl.at.x - m_x, dy = pl.at.y - m_y, d = std::hypot(dx, dy);
+    const bool crossing = d > m_inWellMm + into + kEps;
+    if (crossing && m_inWellMm > 0 && m_departOp == op.index - 1 && op.index > 0) {
+        // The op before ended with the tip going straight up out of its well: it
+        // leaves toward this one instead, within its well's opening, while Z rises.
+        PlanOp& prev = m_plan.ops[static_cast<std::size_t>(op.index - 1)];
+        const double zNow = m_z;
+        m_z = m_departFromZ;
+        prev.moves.back() = travelWithZ({m_x + dx / d * m_inWellMm, m_y + dy / d * m_inWellMm}, std::min(clear, zNow));
+    }
+    m_overPlate = pl.station.empty() ? pl.plate : std::string();
+    raiseTo(op, clear);
+    const double ux = d > kEps ? dx / d : 0, uy = d > kEps ? dy / d : 0;
+    if (crossing && into > 0) {
+        travelTo(op, {pl.at.x - ux * into, pl.at.y - uy * into});
+        op.moves.push_back(travelWithZ(pl.at, pl.depthZMm));
+    } else {
+        travelTo(op, pl.at);
+        lowerTo(op, pl.depthZMm);
+    }
+    // An op ends with the tip up over its own place: a plate's in-plate clearance (the
+    // next op's depart goes higher when it crosses to other labware), a station's safe height.
+    m_safeZ = pl.station.empty() ? std::max(0.0, pl.topZMm - m_r.travel.clearanceInPlateMm) : pl.topZMm;
+    m_inWellMm = into;
+    op.at = pl.at;
+    // Where an abort lifts the tip to, and the first raise of a run that does not know
+    // where it stands: above everything on the deck.
+    op.safeZMm = std::min(clear, m_allClearZ);
+    op.depthZMm = pl.depthZMm;
+    op.visitMoves = static_cast<int>(op.moves.size());
+}
+
+void Planner::leave(PlanOp& op)
+{
+    const double from = m_z;
+    raiseTo(op, m_safeZ);
+    if (m_r.travel.mode == TravelMode::Arched && m_inWellMm > 0 && !op.moves.empty() && op.moves.back().kind == MoveKind::Raise) {
+        m_departOp = op.index;
+        m_departFromZ = from;
+    }
 }
 
 PlanOp& Planner::newOp(int step, StepType type, const Place* pl, double volume)
@@ -339,6 +470,8 @@ PlanOp& Planner::newOp(int step, StepType type, const Place* pl, double volume)
     }
     op.at = {m_x, m_y};
     op.safeZMm = m_safeZ < 1e300 ? m_safeZ : 0;
+    if (m_r.travel.mode == TravelMode::Arched)
+        op.safeZMm = std::min(op.safeZMm, m_allClearZ);
     m_plan.ops.push_back(std::move(op));
     if (m_plan.ops.size() > kMaxPlannedOps && !m_tooMany) {
         m_tooMany = true;
@@ -399,7 +532,9 @@ void Planner::finish()
 
 RecipePlan planRecipe(const Recipe& recipe, const PlanContext& context, const StartState& start)
 {
-    return planning::Planner(recipe, context, start).run();
+    RecipePlan plan = planning::Planner(recipe, context, start).run();
+    plan.boundS = planBoundS(plan, context.deck, start);
+    return plan;
 }
 
 } // namespace motion::plates

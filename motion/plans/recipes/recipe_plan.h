@@ -41,7 +41,11 @@ const char* moveKindName(MoveKind k);  ///< "raise", "travel", "lower", "pump", 
 struct MachineMove {
     MoveKind kind = MoveKind::Dwell;
     double xMm = 0, yMm = 0;   ///< Travel, Touch: XY target
-    double zMm = 0;            ///< Raise, Lower: Z target
+    double zMm = 0;            ///< Raise, Lower: Z target; Travel with `withZ`: Z's target
+    /// Travel (arched): Z runs to zMm at the same time as XY — leaving a well while it rises,
+    /// or entering one while it goes down; the XY part stays within the well's opening.
+    bool withZ = false;
+    double zSpeed = 0;         ///< with `withZ`: Z's speed (mm/s); 0 = the device's default
     double pumpDeltaUl = 0;    ///< Pump: + draws in, − pushes out
     double speed = 0;          ///< axis units per second; 0 = the device's default
     double seconds = 0;        ///< Dwell
@@ -59,7 +63,12 @@ struct PlanOp {
     double pumpNetUl = 0;      ///< net plunger change: + aspirate / air gap, − dispense, 0 mix / wash
     PointMm at;                ///< machine XY
     double safeZMm = 0, depthZMm = 0;
+    /// The lowest the tip may cross on its way here (machine Z, down from home): the
+    /// clearance above the plate's top within one plate, above the deck's tallest
+    /// labware between two (TravelRules), a station's safe height at a station.
+    double clearZMm = 0;
     std::vector<MachineMove> moves;
+    int visitMoves = 0;        ///< the leading moves that bring the tip into its place (raise, travel, lower)
     double durationS = 0;
     double startS = 0;         ///< planned start, from the run's start
     bool pumps() const;        ///< has a plunger move (liquid may have moved once it started)
@@ -77,6 +86,10 @@ struct RecipePlan {
     std::vector<PlanOp> ops;
     motion::msg::Problems problems;
     double totalTimeS = 0;
+    /// The time-optimal bound of these ops in this order (plan_bound.h): no run can be faster.
+    double boundS = 0;
+    /// The well order each step was planned with (by step index; AsWritten for steps without wells).
+    std::vector<WellOrder> orders;
     double pumpStartUl = 0, pumpEndUl = 0;
     double totalDispensedUl = 0, totalAspiratedUl = 0;
     std::vector<WellTotal> wells;   ///< in order of first visit

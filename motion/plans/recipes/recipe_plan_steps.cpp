@@ -55,7 +55,7 @@ void Planner::aspirateAt(int step, const Place& pl, double vol, double speed, co
     PlanOp& op = newOp(step, StepType::Aspirate, &pl, vol);
     goInto(op, pl);
     pump(op, vol, speed);
-    raiseTo(op, m_safeZ);
+    leave(op);
     m_liquid += vol;
     if (!pl.well.empty()) {
         WellTotal& t = totalOf(pl);
@@ -77,7 +77,7 @@ void Planner::dispenseAt(int step, const Place& pl, double vol, double speed, do
         travelTo(op, {pl.at.x + dir.x, pl.at.y + dir.y}, MoveKind::Touch);
         travelTo(op, pl.at, MoveKind::Touch);
     }
-    raiseTo(op, m_safeZ);
+    leave(op);
     m_liquid -= vol;
     if (!pl.well.empty()) {
         WellTotal& t = totalOf(pl);
@@ -108,11 +108,14 @@ void Planner::planStep(int i)
         const bool volOk = checkVolume(s, path, true);
         std::vector<Place> places;
         if (!s.station.empty()) {
+            if (s.order && *s.order != WellOrder::AsWritten)
+                error(fieldPath(path, "order"), motion::msg::make("recipe.order_without_wells", {textArg("order", wellOrderName(*s.order))}));
             Place pl;
             if (stationPlace(s.station, fieldPath(path, "station"), &pl))
                 places.push_back(pl);
         } else {
             places = wellPlaces(s, path);
+            orderPlaces(i, s, places);
         }
         if (!volOk)
             return;
@@ -136,6 +139,13 @@ void Planner::planStep(int i)
                 error(fieldPath(path, "touch_off_mm"), motion::msg::make("recipe.offset_past_wall", {mmArg("value", s.offsetMm), mmArg("width", 2 * pl.w->innerRadiusMm())}));
                 break;
             }
+        if (s.distribute && s.source.empty())
+            error(fieldPath(path, "distribute"), motion::msg::make("recipe.distribute_needs_source"));
+        if (!s.distribute)
+            for (const auto& [field, set] : {std::pair<const char*, bool>{"disposal_ul", s.disposalUl != 0}, {"air_gap_ul", s.airGapUl != 0},
+                                             {"rest_to", !s.restTo.empty()}})
+                if (set)
+                    error(fieldPath(path, field), motion::msg::make("recipe.needs_distribute", {textArg("field", field)}));
         if (!s.source.empty())
             planTransfer(i, s, path, places, speed);
         else
@@ -151,7 +161,8 @@ void Planner::planStep(int i)
     case StepType::Mix: {
         checkCycles(s, path);
         const bool ok = checkVolume(s, path, true);
-        const std::vector<Place> places = wellPlaces(s, path);
+        std::vector<Place> places = wellPlaces(s, path);
+        orderPlaces(i, s, places);
         if (!ok)
             return;
         roomFor(s.volumeUl, fieldPath(path, "volume_ul"), &reported);
@@ -166,7 +177,7 @@ void Planner::planStep(int i)
                 pump(op, s.volumeUl, speed);
                 pump(op, -s.volumeUl, speed);
             }
-            raiseTo(op, m_safeZ);
+            leave(op);
             ++totalOf(pl).visits;
         }
         return;
@@ -188,7 +199,7 @@ void Planner::planStep(int i)
             pump(op, s.volumeUl, speed);
             pump(op, -s.volumeUl, speed);
         }
-        raiseTo(op, m_safeZ);
+        leave(op);
         return;
     }
     case StepType::AirGap: {
@@ -217,7 +228,8 @@ void Planner::planStep(int i)
         return;
     }
     case StepType::TouchOff: {
-        const std::vector<Place> places = wellPlaces(s, path);
+        std::vector<Place> places = wellPlaces(s, path);
+        orderPlaces(i, s, places);
         if (!(s.offsetMm > 0) || !std::isfinite(s.offsetMm)) {
             error(fieldPath(path, "offset_mm"), motion::msg::make("plate.not_positive", {mmArg("value", s.offsetMm)}));
             return;
@@ -232,7 +244,7 @@ void Planner::planStep(int i)
             const PointMm dir = pl.transform.applyVector({s.offsetMm, 0});
             travelTo(op, {pl.at.x + dir.x, pl.at.y + dir.y}, MoveKind::Touch);
             travelTo(op, pl.at, MoveKind::Touch);
-            raiseTo(op, m_safeZ);
+            leave(op);
         }
         return;
     }
@@ -274,6 +286,10 @@ void Planner::planTransfer(int i, const Step& s, const std::string& path, const 
         }
     }
     const double room = m_cap - m_p - m_air;
+    if (s.distribute) {
+        planDistribute(i, s, path, targets, speed, src, room);
+        return;
+    }
     const int perRound = static_cast<int>(std::floor((room + 1e-6) / s.volumeUl));
     if (perRound < 1) {
         error(fieldPath(path, "volume_ul"), motion::msg::make("recipe.transfer_no_room", {volume("volume", s.volumeUl), volume("room", std::max(0.0, room)),
@@ -293,6 +309,60 @@ void Planner::planTransfer(int i, const Step& s, const std::string& path, const 
         m_plan.ops.back().round = round;
         for (std::size_t j = k; j < k + n; ++j) {
             dispenseAt(i, targets[j], s.volumeUl, speed, std::max(0.0, s.offsetMm));
+            m_plan.ops.back().round = round;
+        }
+    }
+}
+
+void Planner::planDistribute(int i, const Step& s, const std::string& path, const std::vector<Place>& targets, double speed, const Place& src,
+                             double room)
+{
+    bool ok = true;
+    for (const auto& [field, value] : {std::pair<const char*, double>{"disposal_ul", s.disposalUl}, {"air_gap_ul", s.airGapUl}})
+        if (!std::isfinite(value) || value < 0) {
+            error(fieldPath(path, field), motion::msg::make("plate.negative", {ulArg("value", value)}));
+            ok = false;
+        }
+    Place rest = src;
+    if (!s.restTo.empty() && s.restTo != "source" && !stationPlace(s.restTo, fieldPath(path, "rest_to"), &rest))
+        ok = false;
+    if (!ok)
+        return;
+    // Each round draws its wells plus the disposal volume, then the air gap: all of it
+    // must fit the syringe's room, for one well at least.
+    const double fixed = s.disposalUl + s.airGapUl;
+    const int perRound = static_cast<int>(std::floor((room - fixed + 1e-6) / s.volumeUl));
+    if (perRound < 1) {
+        error(fieldPath(path, "volume_ul"), motion::msg::make("recipe.distribute_no_room", {volume("volume", s.volumeUl), volume("disposal", s.disposalUl),
+                                                                                    volume("air_gap", s.airGapUl), volume("room", std::max(0.0, room))}));
+        return;
+    }
+    const std::string srcPath = fieldPath(path, "source");
+    bool reported = false;
+    for (std::size_t k = 0; k < targets.size(); k += static_cast<std::size_t>(perRound)) {
+        const std::size_t n = std::min(targets.size() - k, static_cast<std::size_t>(perRound));
+        const double vol = s.volumeUl * static_cast<double>(n) + s.disposalUl;
+        const int round = static_cast<int>(k / static_cast<std::size_t>(perRound)) + 1;
+        if (src.w && vol > src.w->volumeUl + kEps && !reported) {
+            reported = true;
+            warning(srcPath, motion::msg::make("recipe.round_over_source", {volume("volume", vol), volume("capacity", src.w->volumeUl)}));
+        }
+        aspirateAt(i, src, vol, speed, fieldPath(path, "volume_ul"), &reported);
+        m_plan.ops.back().round = round;
+        if (s.airGapUl > 0) {
+            roomFor(s.airGapUl, fieldPath(path, "air_gap_ul"), &reported);
+            PlanOp& gap = newOp(i, StepType::AirGap, nullptr, s.airGapUl);
+            raiseTo(gap, m_safeZ < 1e300 ? m_safeZ : m_z);
+            pump(gap, s.airGapUl, speed);
+            m_air += s.airGapUl;
+            gap.round = round;
+        }
+        for (std::size_t j = k; j < k + n; ++j) {
+            dispenseAt(i, targets[j], s.volumeUl, speed, std::max(0.0, s.offsetMm));
+            m_plan.ops.back().round = round;
+        }
+        if (s.disposalUl > 0) {
+            dispenseAt(i, rest, s.disposalUl, speed, 0);
             m_plan.ops.back().round = round;
         }
     }

@@ -23,6 +23,7 @@ struct Place {
     std::string plate, well, station;
     PointMm at;
     double safeZMm = 0, depthZMm = 0;
+    double topZMm = 0;         ///< machine Z of the labware's top (a station: its safe height)
     const Well* w = nullptr;
     PlateTransform transform;  ///< plate → machine, for touch-off directions
 };
@@ -62,6 +63,12 @@ private:
 
     bool stationPlace(const std::string& id, const std::string& path, Place* pl);
 
+    /// Puts `places` in the step's well order (the recipe's default when it names none).
+    void orderPlaces(int step, const Step& s, std::vector<Place>& places);
+
+    /// The lowest the tip may cross going from the place it is over to `to`.
+    double clearanceTo(const Place& to) const;
+
     // ---- moves -----------------------------------------------------------------
 
     double overheadFor(double t) const { return t > 0 ? t + m_c.deck.moveOverheadS : 0.0; }
@@ -76,6 +83,21 @@ private:
 
     /// Up to a height that clears both where the tip is and where it goes, across, down.
     void goInto(PlanOp& op, const Place& pl);
+
+    /// Arched travel (TravelMode::Arched): the op before, when it ended straight up out of
+    /// a well, leaves it toward `pl` while rising; across at the clearance; into `pl`'s
+    /// well while going down.
+    void goIntoArched(PlanOp& op, const Place& pl);
+
+    /// The end of a visit: the tip up to the travel height; remembers the op for a depart.
+    void leave(PlanOp& op);
+
+    /// How far the tip's centre may go from the centre of `pl`'s well while below the
+    /// clearance (0 at a station: its opening is not known).
+    static double openingMm(const Place& pl);
+
+    /// A Travel that moves Z to `z` at the same time.
+    MachineMove travelWithZ(const PointMm& at, double z);
 
     PlanOp& newOp(int step, StepType type, const Place* pl, double volume);
 
@@ -102,6 +124,11 @@ private:
     /// syringe has room for, one aspirate from the source before each round.
     void planTransfer(int i, const Step& s, const std::string& path, const std::vector<Place>& targets, double speed);
 
+    /// A transfer with `distribute`: each round draws its wells plus the disposal
+    /// volume (and an air gap), doses the wells, and returns the disposal volume.
+    void planDistribute(int i, const Step& s, const std::string& path, const std::vector<Place>& targets, double speed, const Place& src,
+                        double room);
+
     void finish();
 
     const Recipe& m_r;
@@ -110,6 +137,12 @@ private:
     RecipePlan m_plan;
     double m_x = 0, m_y = 0, m_z = 0, m_p = 0;
     double m_safeZ = std::numeric_limits<double>::infinity();  ///< the place the tip is over; none yet
+    std::string m_overPlate;   ///< the plate the tip is over ("" at a station or nowhere yet)
+    double m_inWellMm = 0;     ///< the opening (openingMm) of the well the tip is in; 0 elsewhere
+    int m_departOp = -1;       ///< the op that ended straight up out of a well, its last move a Raise
+    double m_departFromZ = 0;  ///< where that Raise began
+    double m_allClearZ = 0;    ///< the height that clears every labware and station of the deck
+    double m_tallestTopZMm = std::numeric_limits<double>::infinity();  ///< the deck's tallest labware in this recipe
     double m_liquid = 0, m_air = 0;
     bool m_tooMany = false;
 };

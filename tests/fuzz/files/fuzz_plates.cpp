@@ -39,6 +39,13 @@ std::vector<std::string> recipeSeeds()
 {"type":"aspirate","station":"wash","volume_ul":50},{"type":"dispense","station":"waste","volume_ul":40},
 {"type":"touch_off","plate":"a","wells":"column 3","offset_mm":1.5},{"type":"wait","seconds":0.5},
 {"type":"wash","station":"wash","volume_ul":200,"cycles":3}]})");
+    // Version 2: the travel rules and well orders, per recipe and per step.
+    s.push_back(R"({"schema":"benchpilot.recipe","version":2,"name":"arched","order":"snake-columns",
+"travel":{"mode":"arched","clearance_in_plate_mm":4,"clearance_between_mm":12},
+"plates":[{"name":"a","slot":"1","labware":"sbs-96","safe_z_mm":55,"depth_z_mm":70},{"name":"b","slot":"2","labware":"sbs-24","safe_z_mm":50,"depth_z_mm":70}],
+"steps":[{"type":"dispense","plate":"a","wells":"all","volume_ul":40,"source":{"plate":"b","well":"A1"},"order":"shortest"},
+{"type":"mix","plate":"a","wells":"A1:H3","volume_ul":20,"order":"column-major"},{"type":"aspirate","plate":"b","wells":"row B","volume_ul":5,"order":"snake-rows"},
+{"type":"touch_off","plate":"a","wells":"column 3","offset_mm":1.5,"order":"as-written"},{"type":"wash","station":"wash","volume_ul":200}]})");
     return s;
 }
 
@@ -60,7 +67,7 @@ void checkRecipe(std::string_view input)
                     // A touch-off may reach past a well at the edge only within the well: still inside the travel.
                     fail("an accepted recipe moves to (" + std::to_string(m.xMm) + ", " + std::to_string(m.yMm) + ")");
                 }
-                if ((m.kind == motion::plates::MoveKind::Raise || m.kind == motion::plates::MoveKind::Lower) && (m.zMm < 0 || m.zMm > c.deck.travelZMm))
+                if ((m.kind == motion::plates::MoveKind::Raise || m.kind == motion::plates::MoveKind::Lower || m.withZ) && (m.zMm < 0 || m.zMm > c.deck.travelZMm))
                     fail("an accepted recipe moves Z to " + std::to_string(m.zMm));
                 if (m.kind == motion::plates::MoveKind::Pump) {
                     p += m.pumpDeltaUl;
@@ -70,6 +77,8 @@ void checkRecipe(std::string_view input)
                 if (!std::isfinite(m.durationS) || m.durationS < 0)
                     fail("a move with a duration of " + std::to_string(m.durationS) + " s");
             }
+        if (!std::isfinite(plan.boundS) || plan.boundS < 0)
+            fail("a bound of " + std::to_string(plan.boundS) + " s");
     }
     if (r.wellFormed) {
         const std::string once = dev::files::plates::writeRecipe(*r.recipe);
