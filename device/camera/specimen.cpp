@@ -154,11 +154,11 @@ void Specimen::buildSlide()
     const double sigmaTexels = m_blurUm / kFineTexelUm;
     const int r = static_cast<int>(std::lround(std::max(0.0, (-1 + std::sqrt(1 + 4 * sigmaTexels * sigmaTexels)) / 2)));
     boxBlurWrap(m_fine, kFineSize, r, 3);
-    // Patches: where the tissue is dense or loose, 0.25 … 1.
+    // Patches: where the tissue is dense or loose, 0.45 … 1 (loose tissue still has texture).
     m_coarse = noiseField(rng, kCoarseSize, 6, 3);
     for (float& v : m_coarse) {
         const float t = std::clamp((v - 0.3f) / 0.4f, 0.0f, 1.0f);
-        v = 0.25f + 0.75f * t * t * (3 - 2 * t);
+        v = 0.45f + 0.55f * t * t * (3 - 2 * t);
     }
 }
 
