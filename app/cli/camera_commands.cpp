@@ -15,6 +15,7 @@
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonObject>
+#include <QPointer>
 
 #include <cmath>
 
@@ -33,7 +34,10 @@ QString problemText(const msg::Message& m) { return words::text(m); }
 int cameraList(Invocation& inv)
 {
     QJsonArray sources;
+    const bool onlyAvailable = inv.isSet(QStringLiteral("available"));
     auto add = [&](const QString& source, const QString& what, bool available) {
+        if (onlyAvailable && !available)
+            return;
         sources.append(QJsonObject{{QStringLiteral("source"), source}, {QStringLiteral("description"), what},
                                    {QStringLiteral("available"), available}});
     };
@@ -163,6 +167,17 @@ std::unique_ptr<dev::camera::Camera> cameraFor(Invocation& inv, CliSession* sess
             sim.workPoint = [m]() -> std::optional<cam::WorkPoint> {
                 return cam::WorkPoint{m->workPointLogical(0), m->workPointLogical(1), m->timeUs()};
             };
+    } else if (session && session->instrument()) {
+        // No simulator in this process (benchpilot-sim's pty, a real stage, the GUI's API):
+        // the simulated camera looks where the stage says it is; only the in-process
+        // simulator knows the true work point apart from the reading.
+        QPointer<dev::Instrument> instrument = session->instrument();
+        sim.workPoint = [instrument]() -> std::optional<cam::WorkPoint> {
+            if (!instrument || instrument->status().axes.size() < 2)
+                return std::nullopt;
+            const auto& st = instrument->status();
+            return cam::WorkPoint{st.axes[0].measured, st.axes[1].measured, st.deviceTimeUs};
+        };
     }
     msg::Message error;
     auto camera = cam::makeCamera(source.toStdString(), sim, &error);
@@ -174,8 +189,10 @@ std::unique_ptr<dev::camera::Camera> cameraFor(Invocation& inv, CliSession* sess
 void addCameraCommands(std::vector<Command>& list)
 {
     Command listCmd{QStringLiteral("list"), tr("the cameras BenchPilot can take images from, and the simulated specimens"), {}, {}, {}, cameraList, {}};
+    listCmd.options = {option("available", "only the sources this build can open")};
     listCmd.api.access = Access::Compute;
-    listCmd.api.example = QJsonObject{};
+    listCmd.api.params = {optionParam("available", ParamType::Boolean)};
+    listCmd.api.example = QJsonObject{{QStringLiteral("available"), true}};
     QList<QCommandLineOption> snapOptions{option("camera", "sim, uvc[:NAME], command:CMD or folder:DIR (see camera list)", "SOURCE"),
                                           option("out", "the image file to write (TIFF)", "FILE.tif"),
                                           option("exposure-ms", "exposure, ms, where the camera lets it be set", "N", "10")};
