@@ -44,7 +44,7 @@ int cameraList(Invocation& inv)
     add(QStringLiteral("sim"), tr("the simulated camera on the in-process simulator's stage (--sim stage)"), true);
     add(QStringLiteral("sim:PATH"), tr("the simulated camera benchpilot-sim serves on a socket (--camera-socket)"), false);
     add(QStringLiteral("uvc[:NAME]"), tr("a USB camera through Qt Multimedia"), false);
-    add(QStringLiteral("command:CMD"), tr("your capture program, run for each image with {file} {tile} {x_mm} {y_mm}"), false);
+    add(QStringLiteral("command:CMD"), tr("your capture program, run for each image with {file} {tile} {x_mm} {y_mm}"), true);
     add(QStringLiteral("folder:DIR"), tr("the next complete new image a camera's own software saves in DIR"), false);
     QJsonArray specimens;
     for (const std::string& s : cam::specimenNames())

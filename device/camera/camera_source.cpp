@@ -1,5 +1,7 @@
 #include "device/camera/camera_source.h"
 
+#include "device/camera/command_camera.h"
+
 namespace dev::camera {
 
 namespace {
@@ -45,9 +47,10 @@ std::unique_ptr<Camera> makeCamera(const std::string& text, const SimContext& si
             return nullptr;
         }
         return std::make_unique<SimCamera>(sim.workPoint, sim.settings, parent);
+    case SourceKind::Command:
+        return std::make_unique<CommandCamera>(QString::fromStdString(spec.argument), parent);
     case SourceKind::SimSocket:
     case SourceKind::Uvc:
-    case SourceKind::Command:
     case SourceKind::Folder:
         break;
     }

@@ -9267,6 +9267,31 @@ A loop this different may oscillate or run away. Apply them?</source>
         <comment>camera.tiff.empty_frame</comment>
         <translation>相机给出了空图像；未向 %1 写入任何内容</translation>
     </message>
+    <message>
+        <source>the capture command &apos;%1&apos; failed (exit code %2): %3</source>
+        <comment>camera.command.failed</comment>
+        <translation>采集命令 &apos;%1&apos; 失败（退出码 %2）：%3</translation>
+    </message>
+    <message>
+        <source>the capture command &apos;%1&apos; did not finish within %2 and was stopped: %3</source>
+        <comment>camera.command.timeout</comment>
+        <translation>采集命令 &apos;%1&apos; 未在 %2 内结束，已被终止：%3</translation>
+    </message>
+    <message>
+        <source>the capture command &apos;%1&apos; ended without writing %2: %3</source>
+        <comment>camera.command.no_file</comment>
+        <translation>采集命令 &apos;%1&apos; 结束时没有写出 %2：%3</translation>
+    </message>
+    <message>
+        <source>the capture command &apos;%1&apos; cannot be started: %2</source>
+        <comment>camera.command.cannot_start</comment>
+        <translation>无法启动采集命令 &apos;%1&apos;：%2</translation>
+    </message>
+    <message>
+        <source>the capture command &apos;%1&apos; is still taking the previous image</source>
+        <comment>camera.command.busy</comment>
+        <translation>采集命令 &apos;%1&apos; 仍在拍摄上一张图像</translation>
+    </message>
 </context>
 <context>
     <name>words::CapabilityWords</name>
