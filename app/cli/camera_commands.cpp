@@ -45,7 +45,7 @@ int cameraList(Invocation& inv)
     add(QStringLiteral("sim:PATH"), tr("the simulated camera benchpilot-sim serves on a socket (--camera-socket)"), false);
     add(QStringLiteral("uvc[:NAME]"), tr("a USB camera through Qt Multimedia"), false);
     add(QStringLiteral("command:CMD"), tr("your capture program, run for each image with {file} {tile} {x_mm} {y_mm}"), true);
-    add(QStringLiteral("folder:DIR"), tr("the next complete new image a camera's own software saves in DIR"), false);
+    add(QStringLiteral("folder:DIR"), tr("the next complete new image a camera's own software saves in DIR"), true);
     QJsonArray specimens;
     for (const std::string& s : cam::specimenNames())
         specimens.append(QString::fromStdString(s));
@@ -100,6 +100,9 @@ int cameraSnap(Invocation& inv)
         req.yMm = st.axes[1].measured;
     }
     camera->capture(req);
+    // A camera's own software fired by the stage's trigger output: the snap fires it too.
+    if (camera->capabilities().needsTriggerOutput && s->instrument()->can(dev::Capability::TriggerOutput))
+        s->instrument()->pulseTrigger(exposureMs / 1000.0);
     if (!spinUntil([&] { return frame || failure; }, static_cast<int>(exposureMs) + kSnapGraceMs))
         return inv.refused(tr("the camera %1 gave no image within %2 s").arg(camera->source()).arg(kSnapGraceMs / 1000));
     if (failure)

@@ -1,6 +1,7 @@
 #include "device/camera/camera_source.h"
 
 #include "device/camera/command_camera.h"
+#include "device/camera/folder_camera.h"
 
 namespace dev::camera {
 
@@ -49,9 +50,10 @@ std::unique_ptr<Camera> makeCamera(const std::string& text, const SimContext& si
         return std::make_unique<SimCamera>(sim.workPoint, sim.settings, parent);
     case SourceKind::Command:
         return std::make_unique<CommandCamera>(QString::fromStdString(spec.argument), parent);
+    case SourceKind::Folder:
+        return std::make_unique<FolderCamera>(QString::fromStdString(spec.argument), parent);
     case SourceKind::SimSocket:
     case SourceKind::Uvc:
-    case SourceKind::Folder:
         break;
     }
     *error = msg::make("camera.source.not_available", {msg::verbatim("source", text)});

@@ -4,7 +4,7 @@
 //   sim:PATH          the simulated camera benchpilot-sim serves on a local socket (not yet)
 //   uvc[:NAME]        a USB camera through Qt Multimedia (not in this build yet)
 //   command:CMD       the operator's capture program, run per image (command_camera.h)
-//   folder:DIR        the next complete new file a camera's own software saves in DIR (not yet)
+//   folder:DIR        the next complete new file a camera's own software saves in DIR (folder_camera.h)
 // A name that is none of these, or a source this build cannot open, is refused with a
 // message saying what was given and what would do (camera.source.*).
 #include "device/camera/camera.h"

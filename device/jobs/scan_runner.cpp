@@ -625,12 +625,15 @@ void ScanRunner::checkSettled(const std::vector<double>& measuredMm, quint64 dev
     emit triggered(tile, deviceTimeUs);
     // A camera on the instrument's trigger output sees the output held for the exposure:
     // its rising edge starts an edge-triggered camera, its length times a level-triggered one.
-    if (m_client->can(dev::Capability::TriggerOutput))
-        m_client->pulseTrigger(m_plan.exposureS);
     if (m_camera) {
+        // The camera starts waiting before the pulse fires a camera on the trigger output.
         takeWithCamera(tile);
+        if (m_client->can(dev::Capability::TriggerOutput))
+            m_client->pulseTrigger(m_plan.exposureS);
         return;
     }
+    if (m_client->can(dev::Capability::TriggerOutput))
+        m_client->pulseTrigger(m_plan.exposureS);
     m_exposure.start(static_cast<int>(std::lround(m_plan.exposureS * kScanMsPerS)));
 }
 

@@ -9292,6 +9292,21 @@ A loop this different may oscillate or run away. Apply them?</source>
         <comment>camera.command.busy</comment>
         <translation>采集命令 &apos;%1&apos; 仍在拍摄上一张图像</translation>
     </message>
+    <message>
+        <source>the camera&apos;s folder %1 is not there (or not a folder)</source>
+        <comment>camera.folder.missing</comment>
+        <translation>相机的文件夹 %1 不存在（或不是文件夹）</translation>
+    </message>
+    <message>
+        <source>no new image arrived in %1 within %2: is the camera&apos;s software running and saving there, and is it fired by the stage&apos;s trigger output?</source>
+        <comment>camera.folder.timeout</comment>
+        <translation>%2 内 %1 中没有出现新图像：相机软件是否在运行并保存到那里？是否由载物台的触发输出触发？</translation>
+    </message>
+    <message>
+        <source>still waiting for the previous image in %1</source>
+        <comment>camera.folder.busy</comment>
+        <translation>仍在等待 %1 中的上一张图像</translation>
+    </message>
 </context>
 <context>
     <name>words::CapabilityWords</name>

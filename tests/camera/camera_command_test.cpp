@@ -1,8 +1,9 @@
-// command:CMD — the operator's capture program, without a shell: placeholders filled, the
+// command:CMD and folder:DIR. The operator's capture program, without a shell: placeholders filled, the
 // file it wrote read (16-bit TIFF kept at 16 bits), and a failing, hanging, silent or
 // missing program each named with its own stderr.
 #include "device/camera/camera_source.h"
 #include "device/camera/command_camera.h"
+#include "device/camera/folder_camera.h"
 #include "device/camera/tile_tiff.h"
 #include "motion/message_print.h"
 
@@ -12,6 +13,7 @@
 #include <QFile>
 #include <QImage>
 #include <QTemporaryDir>
+#include <QTimer>
 
 #include <gtest/gtest.h>
 
@@ -146,4 +148,36 @@ TEST(CommandCamera, AFailingHangingSilentOrMissingProgramIsNamedWithItsStderr)
     auto made = cam::makeCamera("command:gphoto2 --capture-image-and-download --filename {file}", {}, &error);
     ASSERT_TRUE(made) << error;
     EXPECT_EQ(made->source(), QStringLiteral("command:gphoto2 --capture-image-and-download --filename {file}"));
+}
+
+TEST(FolderCamera, TheNextCompleteNewFileIsTakenAndNoFileIsNamed)
+{
+    QTemporaryDir dir;
+    QImage old(4, 4, QImage::Format_Grayscale8);
+    old.fill(1);
+    ASSERT_TRUE(old.save(dir.filePath(QStringLiteral("old.png"))));  // there before: never taken
+    cam::FolderCamera c(dir.path());
+    // The camera's software writes under a temporary name and renames it into place.
+    QTimer::singleShot(150, [&] {
+        QImage img(6, 5, QImage::Format_Grayscale8);
+        img.fill(200);
+        img.save(dir.filePath(QStringLiteral("img_0001.png.part")), "PNG");
+        QFile::rename(dir.filePath(QStringLiteral("img_0001.png.part")), dir.filePath(QStringLiteral("img_0001.png")));
+    });
+    const Shot s = take(c, request(dir));
+    ASSERT_TRUE(s.frame) << (s.failure ? msg::debugString(*s.failure) : std::string());
+    EXPECT_EQ(s.frame->width, 6);
+    EXPECT_EQ(s.frame->pixels[0], 200);
+    EXPECT_TRUE(c.capabilities().needsTriggerOutput);
+
+    c.setTimeoutS(0.3);
+    const Shot none = take(c, request(dir));
+    ASSERT_TRUE(none.failure);
+    EXPECT_EQ(none.failure->id, "camera.folder.timeout");
+    EXPECT_NE(msg::debugString(*none.failure).find(dir.path().toStdString()), std::string::npos) << "names the folder";
+
+    cam::FolderCamera gone(dir.filePath(QStringLiteral("nowhere")));
+    const Shot g = take(gone, request(dir));
+    ASSERT_TRUE(g.failure);
+    EXPECT_EQ(g.failure->id, "camera.folder.missing");
 }
