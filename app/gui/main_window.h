@@ -18,7 +18,7 @@ class QStackedWidget;
 class QTabWidget;
 class QLabel;
 
-namespace tele {
+namespace dev::tele {
 class TelemetryHub;
 }
 
@@ -33,7 +33,7 @@ class ScanScreen;
 class CalibrationScreen;
 } // namespace ui
 
-namespace words {
+namespace ui::words {
 class Translators;
 }
 class QActionGroup;
@@ -58,7 +58,7 @@ struct MainWindowOptions {
     ApiOptions api;               ///< the scripting API (docs/api.md); no socket path: none
     /// The program's translators (main.cpp owns them); the Language menu switches
     /// them. nullptr: the window has no Language menu (tests that do not switch).
-    words::Translators* translators = nullptr;
+    ui::words::Translators* translators = nullptr;
 };
 
 class MainWindow : public QMainWindow {
@@ -81,7 +81,7 @@ public:
     ui::PlatesScreen* platesScreen() { return m_plates; }
     ui::ScanScreen* scanScreen() { return m_scan; }
     ui::CalibrationScreen* calibrationScreen() { return m_calibration; }
-    tele::TelemetryHub* telemetry() { return m_hub; }
+    dev::tele::TelemetryHub* telemetry() { return m_hub; }
     ui::MessageBanner* banner() { return m_banner; }
     ui::EventLog* eventLog() { return m_log; }
     QPushButton* estopButton() { return m_estop; }
@@ -141,7 +141,7 @@ private:
     LongMoveQuestion* m_longMoves;  ///< the long-move question, waivable for this session only
     std::array<InstrumentSlot, kInstrumentCount> m_instruments;
     ApiWiring* m_api;
-    tele::TelemetryHub* m_hub;  ///< every instrument's telemetry, for the plots
+    dev::tele::TelemetryHub* m_hub;  ///< every instrument's telemetry, for the plots
     ui::PlotsScreen* m_plots;
     ui::TuningScreen* m_tuning;
     ui::PlatesScreen* m_plates;

@@ -24,11 +24,11 @@ std::string tail(const QByteArray& bytes)
 }
 } // namespace
 
-bool readImageFile(const QString& path, Frame* frame, msg::Message* error)
+bool readImageFile(const QString& path, Frame* frame, motion::msg::Message* error)
 {
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly)) {
-        *error = msg::make("camera.tiff.cannot_read", {msg::verbatim("file", path.toStdString()), msg::verbatim("detail", f.errorString().toStdString())});
+        *error = motion::msg::make("camera.tiff.cannot_read", {motion::msg::verbatim("file", path.toStdString()), motion::msg::verbatim("detail", f.errorString().toStdString())});
         return false;
     }
     const QByteArray magic = f.read(4);
@@ -37,7 +37,7 @@ bool readImageFile(const QString& path, Frame* frame, msg::Message* error)
         return readTiff(path.toStdString(), frame, nullptr, error);
     QImage img(path);
     if (img.isNull()) {
-        *error = msg::make("camera.tiff.cannot_read", {msg::verbatim("file", path.toStdString()), msg::verbatim("detail", "not an image Qt can read")});
+        *error = motion::msg::make("camera.tiff.cannot_read", {motion::msg::verbatim("file", path.toStdString()), motion::msg::verbatim("detail", "not an image Qt can read")});
         return false;
     }
     Frame out;
@@ -94,13 +94,13 @@ void CommandCamera::close()
 void CommandCamera::capture(const CaptureRequest& request)
 {
     if (m_process) {
-        emit failed(request.id, msg::Problem("", msg::make("camera.command.busy", {msg::verbatim("command", m_command.toStdString())})));
+        emit failed(request.id, motion::msg::Problem("", motion::msg::make("camera.command.busy", {motion::msg::verbatim("command", m_command.toStdString())})));
         return;
     }
     QStringList words = QProcess::splitCommand(m_command);
     if (words.isEmpty()) {
-        emit failed(request.id, msg::Problem("", msg::make("camera.source.needs_argument", {msg::verbatim("source", source().toStdString()),
-                                                                                             msg::verbatim("kind", "command")})));
+        emit failed(request.id, motion::msg::Problem("", motion::msg::make("camera.source.needs_argument", {motion::msg::verbatim("source", source().toStdString()),
+                                                                                             motion::msg::verbatim("kind", "command")})));
         return;
     }
     // The program writes beside the tile, under a name of its own: the tile's file is
@@ -127,7 +127,7 @@ void CommandCamera::capture(const CaptureRequest& request)
             return;
         m_process = nullptr;
         p->deleteLater();
-        fail(msg::make("camera.command.cannot_start", {msg::verbatim("command", m_command.toStdString()), msg::verbatim("detail", p->errorString().toStdString())}));
+        fail(motion::msg::make("camera.command.cannot_start", {motion::msg::verbatim("command", m_command.toStdString()), motion::msg::verbatim("detail", p->errorString().toStdString())}));
     });
     QTimer::singleShot(static_cast<int>(m_timeoutS * 1000), p, [this, p] {
         if (m_process != p || p->state() == QProcess::NotRunning)
@@ -138,10 +138,10 @@ void CommandCamera::capture(const CaptureRequest& request)
     p->start();
 }
 
-void CommandCamera::fail(const msg::Message& m)
+void CommandCamera::fail(const motion::msg::Message& m)
 {
     QFile::remove(m_file);
-    emit failed(m_request.id, msg::Problem("", m));
+    emit failed(m_request.id, motion::msg::Problem("", m));
 }
 
 void CommandCamera::finish(int exitCode, QProcess::ExitStatus status)
@@ -154,20 +154,20 @@ void CommandCamera::finish(int exitCode, QProcess::ExitStatus status)
     const std::string err = tail(p->readAllStandardError());
     const std::string cmd = m_command.toStdString();
     if (m_timedOut) {
-        fail(msg::make("camera.command.timeout", {msg::verbatim("command", cmd), msg::real("seconds", m_timeoutS, msg::Unit::S), msg::verbatim("stderr", err)}));
+        fail(motion::msg::make("camera.command.timeout", {motion::msg::verbatim("command", cmd), motion::msg::real("seconds", m_timeoutS, motion::msg::Unit::S), motion::msg::verbatim("stderr", err)}));
         return;
     }
     if (status != QProcess::NormalExit || exitCode != 0) {
-        fail(msg::make("camera.command.failed", {msg::verbatim("command", cmd), msg::integer("code", status == QProcess::NormalExit ? exitCode : -1, msg::Unit::None),
-                                                 msg::verbatim("stderr", err)}));
+        fail(motion::msg::make("camera.command.failed", {motion::msg::verbatim("command", cmd), motion::msg::integer("code", status == QProcess::NormalExit ? exitCode : -1, motion::msg::Unit::None),
+                                                 motion::msg::verbatim("stderr", err)}));
         return;
     }
     if (!QFileInfo::exists(m_file)) {
-        fail(msg::make("camera.command.no_file", {msg::verbatim("command", cmd), msg::verbatim("file", m_file.toStdString()), msg::verbatim("stderr", err)}));
+        fail(motion::msg::make("camera.command.no_file", {motion::msg::verbatim("command", cmd), motion::msg::verbatim("file", m_file.toStdString()), motion::msg::verbatim("stderr", err)}));
         return;
     }
     Frame frame;
-    msg::Message error;
+    motion::msg::Message error;
     if (!readImageFile(m_file, &frame, &error)) {
         fail(error);
         return;

@@ -13,7 +13,7 @@
 namespace dev::camera {
 
 /// Reads an image file into a Frame: TIFF by libtiff (keeps 16 bits), others by QImage.
-bool readImageFile(const QString& path, Frame* frame, msg::Message* error);
+bool readImageFile(const QString& path, Frame* frame, motion::msg::Message* error);
 
 class CommandCamera : public Camera {
     Q_OBJECT
@@ -35,7 +35,7 @@ public:
 
 private:
     void finish(int exitCode, QProcess::ExitStatus status);
-    void fail(const msg::Message& m);
+    void fail(const motion::msg::Message& m);
 
     QString m_command;
     bool m_open = false;

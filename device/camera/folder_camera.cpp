@@ -24,7 +24,7 @@ Capabilities FolderCamera::capabilities() const
 void FolderCamera::open()
 {
     if (!QFileInfo(m_folder).isDir()) {
-        emit failed(0, msg::Problem("", msg::make("camera.folder.missing", {msg::verbatim("folder", m_folder.toStdString())})));
+        emit failed(0, motion::msg::Problem("", motion::msg::make("camera.folder.missing", {motion::msg::verbatim("folder", m_folder.toStdString())})));
         return;
     }
     m_open = true;
@@ -51,11 +51,11 @@ QHash<QString, qint64> FolderCamera::sizes() const
 void FolderCamera::capture(const CaptureRequest& request)
 {
     if (!QFileInfo(m_folder).isDir()) {
-        emit failed(request.id, msg::Problem("", msg::make("camera.folder.missing", {msg::verbatim("folder", m_folder.toStdString())})));
+        emit failed(request.id, motion::msg::Problem("", motion::msg::make("camera.folder.missing", {motion::msg::verbatim("folder", m_folder.toStdString())})));
         return;
     }
     if (m_waiting) {
-        emit failed(request.id, msg::Problem("", msg::make("camera.folder.busy", {msg::verbatim("folder", m_folder.toStdString())})));
+        emit failed(request.id, motion::msg::Problem("", motion::msg::make("camera.folder.busy", {motion::msg::verbatim("folder", m_folder.toStdString())})));
         return;
     }
     m_request = request;
@@ -83,9 +83,9 @@ void FolderCamera::look()
         m_look.stop();
         m_waiting = false;
         Frame frame;
-        msg::Message error;
+        motion::msg::Message error;
         if (!readImageFile(QDir(m_folder).filePath(it.key()), &frame, &error)) {
-            emit failed(m_request.id, msg::Problem("", error));
+            emit failed(m_request.id, motion::msg::Problem("", error));
             return;
         }
         frame.exposureMs = m_exposureMs;
@@ -96,8 +96,8 @@ void FolderCamera::look()
     if (QDateTime::currentMSecsSinceEpoch() - m_startedMs > static_cast<qint64>(m_timeoutS * 1000)) {
         m_look.stop();
         m_waiting = false;
-        emit failed(m_request.id, msg::Problem("", msg::make("camera.folder.timeout", {msg::verbatim("folder", m_folder.toStdString()),
-                                                                                       msg::real("seconds", m_timeoutS, msg::Unit::S)})));
+        emit failed(m_request.id, motion::msg::Problem("", motion::msg::make("camera.folder.timeout", {motion::msg::verbatim("folder", m_folder.toStdString()),
+                                                                                       motion::msg::real("seconds", m_timeoutS, motion::msg::Unit::S)})));
     }
 }
 

@@ -15,7 +15,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace jobs {
+namespace dev::jobs {
 
 using motion::scan::Point2;
 
@@ -48,7 +48,7 @@ constexpr double kScanMsPerS = 1e3;
 
 ScanRunner::ScanRunner(dev::Instrument* client, QObject* parent) : QObject(parent), m_client(client)
 {
-    qRegisterMetaType<jobs::ScanRunner::State>();
+    qRegisterMetaType<dev::jobs::ScanRunner::State>();
     m_exposure.setSingleShot(true);
     m_exposure.setTimerType(Qt::PreciseTimer);
     connect(&m_exposure, &QTimer::timeout, this, &ScanRunner::onExposureEnd);
@@ -56,11 +56,11 @@ ScanRunner::ScanRunner(dev::Instrument* client, QObject* parent) : QObject(paren
     connect(&m_settleTimeout, &QTimer::timeout, this, [this] {
         if (m_phase != Phase::Settling)
             return;
-        stopWith(msg::make("scan.run.not_settled", {tileArg(m_layout.path[static_cast<std::size_t>(m_pathIndex)].tile),
-                                                     msg::real("tolerance", m_plan.toleranceUm, msg::Unit::Um),
-                                                     msg::real("timeout", m_plan.settleTimeoutS, msg::Unit::S),
-                                                     msg::real("off_x", m_lastOffUm[0], msg::Unit::Um),
-                                                     msg::real("off_y", m_lastOffUm[1], msg::Unit::Um)}),
+        stopWith(motion::msg::make("scan.run.not_settled", {tileArg(m_layout.path[static_cast<std::size_t>(m_pathIndex)].tile),
+                                                     motion::msg::real("tolerance", m_plan.toleranceUm, motion::msg::Unit::Um),
+                                                     motion::msg::real("timeout", m_plan.settleTimeoutS, motion::msg::Unit::S),
+                                                     motion::msg::real("off_x", m_lastOffUm[0], motion::msg::Unit::Um),
+                                                     motion::msg::real("off_y", m_lastOffUm[1], motion::msg::Unit::Um)}),
                  false);
     });
     m_clientConnections << connect(m_client, &dev::Instrument::eventReceived, this, &ScanRunner::onEvent);
@@ -81,7 +81,7 @@ ScanRunner::ScanRunner(dev::Instrument* client, QObject* parent) : QObject(paren
     m_clientConnections << connect(m_client, &dev::Instrument::limitsChanged, this, retakeStageModel);
     m_clientConnections << connect(m_client, &dev::Instrument::stateChanged, this, [this](dev::LinkState st) {
         if (st != dev::LinkState::Ready && isActive())
-            stopWith(msg::make("scan.run.link_lost", {tileArg(currentTile())}), false);
+            stopWith(motion::msg::make("scan.run.link_lost", {tileArg(currentTile())}), false);
     });
 }
 
@@ -115,14 +115,14 @@ void ScanRunner::refreshCompensation()
         });
 }
 
-QString ScanRunner::logPath() const { return QDir(m_folder).filePath(QString::fromLatin1(scanfile::kRunLogFile)); }
+QString ScanRunner::logPath() const { return QDir(m_folder).filePath(QString::fromLatin1(dev::files::scan::kRunLogFile)); }
 
-msg::Arg ScanRunner::tileArg(int tile) const
+motion::msg::Arg ScanRunner::tileArg(int tile) const
 {
     if (tile < 0 || tile >= totalTiles())
-        return msg::nested("tile", msg::make("scan.run.the_start"));
-    return msg::nested("tile", msg::make("scan.run.tile", {msg::integer("tile", tile + 1, msg::Unit::None), msg::integer("total", totalTiles()),
-                                                           msg::verbatim("label", m_records[static_cast<std::size_t>(tile)].label)}));
+        return motion::msg::nested("tile", motion::msg::make("scan.run.the_start"));
+    return motion::msg::nested("tile", motion::msg::make("scan.run.tile", {motion::msg::integer("tile", tile + 1, motion::msg::Unit::None), motion::msg::integer("total", totalTiles()),
+                                                           motion::msg::verbatim("label", m_records[static_cast<std::size_t>(tile)].label)}));
 }
 
 const char* ScanRunner::stateTerm(State s)
@@ -146,22 +146,22 @@ void ScanRunner::setState(State s)
     emit stateChanged(s);
 }
 
-bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& folder, bool restart, msg::Message* error, Refusal* why)
+bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& folder, bool restart, motion::msg::Message* error, Refusal* why)
 {
     Refusal unused;
     Refusal& reason = why ? *why : unused;
     reason = Refusal::Other;  // every early return below is "something else"
     if (isActive()) {
-        *error = msg::make("scan.run.busy_preparing");
+        *error = motion::msg::make("scan.run.busy_preparing");
         return false;
     }
     const auto problems = motion::scan::validate(plan);
     if (!problems.empty()) {
-        *error = msg::make("scan.run.plan_problem", {msg::verbatim("field", problems.front().path), msg::nested("cause", problems.front().message)});
+        *error = motion::msg::make("scan.run.plan_problem", {motion::msg::verbatim("field", problems.front().path), motion::msg::nested("cause", problems.front().message)});
         return false;
     }
     if (!QDir().mkpath(folder)) {
-        *error = msg::make("file.cannot_make_folder", {msg::verbatim("folder", folder.toStdString())});
+        *error = motion::msg::make("file.cannot_make_folder", {motion::msg::verbatim("folder", folder.toStdString())});
         return false;
     }
     m_log.close();
@@ -169,7 +169,7 @@ bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& fold
     m_plan = plan;
     m_folder = folder;
     m_layout = motion::scan::layoutScan(plan);
-    m_records = scanfile::plannedRecords(plan, m_layout);
+    m_records = dev::files::scan::plannedRecords(plan, m_layout);
     m_images.assign(m_layout.tiles.size(), {});
     m_finishWhenWritten = false;
     m_taken.assign(m_layout.tiles.size(), 0);
@@ -180,7 +180,7 @@ bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& fold
     bool fresh = true;
     if (QFileInfo::exists(logPath()) && !adoptRunLog(fingerprint, restart, &fresh, error, &reason))
         return false;
-    if (fresh && !files::writeAtomically(logPath(), scanfile::runLogHeader(m_plan.name, fingerprint, totalTiles()), error))
+    if (fresh && !dev::files::writeAtomically(logPath(), dev::files::scan::runLogHeader(m_plan.name, fingerprint, totalTiles()), error))
         return false;
     m_stageModel = stageModelOf(m_client->identity(), m_client->softLimits());
     m_estimate = motion::scan::estimateScan(m_plan, m_layout, m_stageModel);
@@ -198,43 +198,43 @@ Point2 ScanRunner::commanded(int pathIndex) const
     return motion::scan::commandedTarget(m_plan, m_layout.path[static_cast<std::size_t>(pathIndex)].target);
 }
 
-std::vector<msg::Message> ScanRunner::preflight() const
+std::vector<motion::msg::Message> ScanRunner::preflight() const
 {
-    std::vector<msg::Message> out;
+    std::vector<motion::msg::Message> out;
     if (!m_prepared) {
-        out.push_back(msg::make("scan.run.not_prepared"));
+        out.push_back(motion::msg::make("scan.run.not_prepared"));
         return out;
     }
     if (!m_client->isReady()) {
-        out.push_back(msg::make("scan.run.not_connected"));
+        out.push_back(motion::msg::make("scan.run.not_connected"));
         return out;
     }
     const auto& id = m_client->identity();
-    if (id.kind != proto::DeviceKind::Stage || id.axes.size() < 2) {
-        out.push_back(msg::make("scan.run.not_a_stage", {msg::term("instrument", dev::instrumentTerm(id.kind))}));
+    if (id.kind != dev::proto::DeviceKind::Stage || id.axes.size() < 2) {
+        out.push_back(motion::msg::make("scan.run.not_a_stage", {motion::msg::term("instrument", dev::instrumentTerm(id.kind))}));
         return out;
     }
     const auto& st = m_client->status();
     if (st.estop)
-        out.push_back(msg::make("scan.run.estop_latched"));
+        out.push_back(motion::msg::make("scan.run.estop_latched"));
     if (st.axes.size() >= 2 && (!st.axes[0].homed || !st.axes[1].homed))
-        out.push_back(msg::make("scan.run.not_homed"));
+        out.push_back(motion::msg::make("scan.run.not_homed"));
     if (m_plan.compensation.enabled) {
         // The plan trusts the stage to move each target by its own correction.
         if (!m_client->can(dev::Capability::Compensation) || !m_client->compensation())
-            out.push_back(msg::make("scan.run.no_compensation_on_stage"));
+            out.push_back(motion::msg::make("scan.run.no_compensation_on_stage"));
         else
             for (int axis = 0; axis < 2; ++axis) {
-                const msg::Arg letter = msg::verbatim("axis", axis == 0 ? "X" : "Y");
+                const motion::msg::Arg letter = motion::msg::verbatim("axis", axis == 0 ? "X" : "Y");
                 if (!m_compEnabled[axis])
-                    out.push_back(msg::make("scan.run.compensation_being_read", {letter}));
+                    out.push_back(motion::msg::make("scan.run.compensation_being_read", {letter}));
                 else if (!*m_compEnabled[axis])
-                    out.push_back(msg::make("scan.run.compensation_not_enabled", {letter}));
+                    out.push_back(motion::msg::make("scan.run.compensation_not_enabled", {letter}));
             }
     }
     // The whole plan against the device's travel and soft limits, before anything moves.
     for (const auto& p : motion::scan::validate(m_plan, m_stageModel))
-        out.push_back(msg::make("scan.run.plan_problem", {msg::verbatim("field", p.path), msg::nested("cause", p.message)}));
+        out.push_back(motion::msg::make("scan.run.plan_problem", {motion::msg::verbatim("field", p.path), motion::msg::nested("cause", p.message)}));
     return out;
 }
 
@@ -252,13 +252,13 @@ int ScanRunner::waypointToResumeAt() const
     return static_cast<int>(m_layout.path.size());
 }
 
-bool ScanRunner::start(msg::Message* error)
+bool ScanRunner::start(motion::msg::Message* error)
 {
     if (isActive()) {
-        *error = msg::make("scan.run.already_running");
+        *error = motion::msg::make("scan.run.already_running");
         return false;
     }
-    const std::vector<msg::Message> blockers = preflight();
+    const std::vector<motion::msg::Message> blockers = preflight();
     if (!blockers.empty()) {
         *error = blockers.front();
         return false;
@@ -304,7 +304,7 @@ void ScanRunner::abort()
 {
     if (!isActive())
         return;
-    stopWith(msg::make("scan.run.aborted", {tileArg(currentTile())}), true);
+    stopWith(motion::msg::make("scan.run.aborted", {tileArg(currentTile())}), true);
 }
 
 int ScanRunner::currentTile() const
@@ -398,9 +398,9 @@ void ScanRunner::finishRun()
     m_finishWhenWritten = false;
     m_log.close();
     QStringList written;
-    msg::Message error;
+    motion::msg::Message error;
     if (!writeExports(&written, &error))
-        emit problem(msg::make("scan.run.exports_failed", {msg::nested("cause", error)}));
+        emit problem(motion::msg::make("scan.run.exports_failed", {motion::msg::nested("cause", error)}));
     setState(State::Finished);
     emit progress(m_takenCount, totalTiles(), 0);
     emit finished(written);
@@ -416,16 +416,16 @@ void ScanRunner::onMoveAccepted(const std::optional<dev::RequestError>& error)
     }
     // A move lost with the link is the link's story, whichever signal comes first.
     if (error->kind == dev::RequestError::Kind::LinkDown || error->kind == dev::RequestError::Kind::Timeout || !m_client->isReady())
-        stopWith(msg::make("scan.run.link_lost_cause", {tileArg(currentTile()), msg::nested("cause", error->message)}), false);
+        stopWith(motion::msg::make("scan.run.link_lost_cause", {tileArg(currentTile()), motion::msg::nested("cause", error->message)}), false);
     else
-        stopWith(msg::make("scan.run.move_refused", {tileArg(currentTile()), msg::nested("cause", error->message)}), false);
+        stopWith(motion::msg::make("scan.run.move_refused", {tileArg(currentTile()), motion::msg::nested("cause", error->message)}), false);
 }
 
 void ScanRunner::onEvent(const dev::DeviceEvent& e)
 {
     if (m_phase == Phase::None)
         return;
-    using proto::EventKind;
+    using dev::proto::EventKind;
     switch (e.kind) {
     case EventKind::MotionDone:
         if (m_phase != Phase::Moving || e.axis < 0 || e.axis > 1)
@@ -437,14 +437,14 @@ void ScanRunner::onEvent(const dev::DeviceEvent& e)
         onMoveArrived();
         return;
     case EventKind::EStop:
-        stopWith(msg::make("scan.run.estop", {tileArg(currentTile())}), false);
+        stopWith(motion::msg::make("scan.run.estop", {tileArg(currentTile())}), false);
         return;
     case EventKind::Stopped:
     case EventKind::LimitHit:
     case EventKind::Fault:
     case EventKind::LostSteps:
         if (e.axis <= 1)
-            stopWith(msg::make("scan.run.stage_event", {msg::term("event", proto::eventKindTerm(e.kind)), dev::eventDetail(e),
+            stopWith(motion::msg::make("scan.run.stage_event", {motion::msg::term("event", dev::proto::eventKindTerm(e.kind)), dev::eventDetail(e),
                                                         tileArg(currentTile())}),
                      false);
         return;
@@ -546,10 +546,10 @@ void ScanRunner::onExposureEnd()
     r.measuredMm = m_triggerMm;
     r.deviceTimeUs = m_triggerUs;
     r.settleS = m_triggerUs > m_motionDoneUs ? static_cast<double>(m_triggerUs - m_motionDoneUs) * kScanSecondsPerUs : 0.0;
-    msg::Message error;
-    if (!appendLog(scanfile::runLogLine(r), &error)) {
+    motion::msg::Message error;
+    if (!appendLog(dev::files::scan::runLogLine(r), &error)) {
         r.measuredMm.clear();
-        stopWith(msg::make("scan.run.log_failed", {msg::nested("cause", error)}), false);
+        stopWith(motion::msg::make("scan.run.log_failed", {motion::msg::nested("cause", error)}), false);
         return;
     }
     if (!m_taken[static_cast<std::size_t>(tile)]) {
@@ -565,7 +565,7 @@ void ScanRunner::onExposureEnd()
     nextWaypoint();
 }
 
-void ScanRunner::stopWith(const msg::Message& message, bool stopStage)
+void ScanRunner::stopWith(const motion::msg::Message& message, bool stopStage)
 {
     m_exposure.stop();
     m_settleTimeout.stop();
@@ -581,13 +581,13 @@ void ScanRunner::stopWith(const msg::Message& message, bool stopStage)
     emit progress(m_takenCount, totalTiles(), etaS());
 }
 
-bool ScanRunner::writeExports(QStringList* written, msg::Message* error) const
+bool ScanRunner::writeExports(QStringList* written, motion::msg::Message* error) const
 {
     if (!m_prepared) {
-        *error = msg::make("scan.run.not_prepared");
+        *error = motion::msg::make("scan.run.not_prepared");
         return false;
     }
-    return scanfile::writeExports(m_folder, m_plan, m_layout, m_records, written, error);
+    return dev::files::scan::writeExports(m_folder, m_plan, m_layout, m_records, written, error);
 }
 
-} // namespace jobs
+} // namespace dev::jobs

@@ -9,19 +9,19 @@
 #include <QDateTime>
 #include <QDir>
 
-namespace jobs {
+namespace dev::jobs {
 
-bool ScanRunner::adoptRunLog(std::uint64_t fingerprint, bool restart, bool* fresh, msg::Message* error, Refusal* why)
+bool ScanRunner::adoptRunLog(std::uint64_t fingerprint, bool restart, bool* fresh, motion::msg::Message* error, Refusal* why)
 {
     std::string text;
-    if (!files::readText(logPath(), &text, error))
+    if (!dev::files::readText(logPath(), &text, error))
         return false;
-    const auto log = scanfile::parseRunLog(text);
+    const auto log = dev::files::scan::parseRunLog(text);
     if (!log.log) {
-        const msg::Problem& first = log.problems.list().front();
-        *error = msg::make("scan.run.log_damaged", {msg::verbatim("log", scanfile::kRunLogFile),
-                                                    msg::integer("line", first.line, msg::Unit::None),
-                                                    msg::nested("cause", first.message)});
+        const motion::msg::Problem& first = log.problems.list().front();
+        *error = motion::msg::make("scan.run.log_damaged", {motion::msg::verbatim("log", dev::files::scan::kRunLogFile),
+                                                    motion::msg::integer("line", first.line, motion::msg::Unit::None),
+                                                    motion::msg::nested("cause", first.message)});
         return false;
     }
     if (log.log->fingerprint == fingerprint && !restart) {
@@ -30,21 +30,21 @@ bool ScanRunner::adoptRunLog(std::uint64_t fingerprint, bool restart, bool* fres
     }
     if (!restart) {
         *why = Refusal::OtherScansLog;
-        *error = msg::make("scan.run.other_scans_log", {msg::integer("taken", static_cast<long long>(log.log->records.size())),
-                                                        msg::integer("tiles", log.log->tiles)});
+        *error = motion::msg::make("scan.run.other_scans_log", {motion::msg::integer("taken", static_cast<long long>(log.log->records.size())),
+                                                        motion::msg::integer("tiles", log.log->tiles)});
         return false;
     }
     // Nothing is thrown away: the old log moves aside under its time.
     const QString aside = QDir(m_folder).filePath(
         QStringLiteral("scan-run.%1.jsonl").arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"))));
     if (!QFile::rename(logPath(), aside)) {
-        *error = msg::make("scan.run.cannot_move_log", {msg::verbatim("file", aside.toStdString())});
+        *error = motion::msg::make("scan.run.cannot_move_log", {motion::msg::verbatim("file", aside.toStdString())});
         return false;
     }
     return true;
 }
 
-bool ScanRunner::continueFromLog(const scanfile::RunLog& log, std::uint64_t fingerprint, msg::Message* error)
+bool ScanRunner::continueFromLog(const dev::files::scan::RunLog& log, std::uint64_t fingerprint, motion::msg::Message* error)
 {
     // The last line of a tile counts (a tile is logged once; a log edited by hand may not be).
     std::vector<int> lastLine(m_records.size(), -1);
@@ -62,7 +62,7 @@ bool ScanRunner::continueFromLog(const scanfile::RunLog& log, std::uint64_t fing
             dropped = true;
             continue;
         }
-        const scanfile::TileImageRef image = i < log.images.size() ? log.images[i] : scanfile::TileImageRef{};
+        const dev::files::scan::TileImageRef image = i < log.images.size() ? log.images[i] : dev::files::scan::TileImageRef{};
         // With a camera, a tile is taken when its image is there, whole and the one logged.
         if (m_camera && !imageIntact(image)) {
             dropped = true;
@@ -83,32 +83,32 @@ bool ScanRunner::continueFromLog(const scanfile::RunLog& log, std::uint64_t fing
     // A line torn by a crash would sit in front of the next one, and a tile taken again
     // must not be logged twice: write the log out again with the lines that stand
     // (atomically, so this cannot lose them either).
-    std::string clean = scanfile::runLogHeader(m_plan.name, fingerprint, totalTiles());
+    std::string clean = dev::files::scan::runLogHeader(m_plan.name, fingerprint, totalTiles());
     for (std::size_t i : kept)
-        clean += scanfile::runLogLine(log.records[i], i < log.images.size() ? log.images[i] : scanfile::TileImageRef{});
-    return files::writeAtomically(logPath(), clean, error);
+        clean += dev::files::scan::runLogLine(log.records[i], i < log.images.size() ? log.images[i] : dev::files::scan::TileImageRef{});
+    return dev::files::writeAtomically(logPath(), clean, error);
 }
 
-bool ScanRunner::openLog(msg::Message* error)
+bool ScanRunner::openLog(motion::msg::Message* error)
 {
     if (m_log.isOpen())
         return true;
     m_log.setFileName(logPath());
     if (!m_log.open(QIODevice::WriteOnly | QIODevice::Append)) {
-        *error = msg::make("file.log.cannot_open", {msg::verbatim("file", logPath().toStdString()), msg::verbatim("detail", m_log.errorString().toStdString())});
+        *error = motion::msg::make("file.log.cannot_open", {motion::msg::verbatim("file", logPath().toStdString()), motion::msg::verbatim("detail", m_log.errorString().toStdString())});
         return false;
     }
     return true;
 }
 
-bool ScanRunner::appendLog(const std::string& line, msg::Message* error)
+bool ScanRunner::appendLog(const std::string& line, motion::msg::Message* error)
 {
     // One write and a flush per tile: a crash of the program loses nothing taken.
     if (m_log.write(line.data(), static_cast<qint64>(line.size())) != static_cast<qint64>(line.size()) || !m_log.flush()) {
-        *error = msg::make("file.log.cannot_write", {msg::verbatim("file", logPath().toStdString()), msg::verbatim("detail", m_log.errorString().toStdString())});
+        *error = motion::msg::make("file.log.cannot_write", {motion::msg::verbatim("file", logPath().toStdString()), motion::msg::verbatim("detail", m_log.errorString().toStdString())});
         return false;
     }
     return true;
 }
 
-} // namespace jobs
+} // namespace dev::jobs

@@ -37,8 +37,8 @@ TEST(CameraCli, AScanKilledMidRunEndsWithEveryImageWholeAndNoneTwice)
     const QString out = dir.filePath(QStringLiteral("run"));
     const auto made = runProgram(binary("benchpilot-cli"), planArgs());
     ASSERT_EQ(made.exitCode, 0) << made.describe();
-    msg::Message error;
-    ASSERT_TRUE(files::writeAtomically(plan, made.out.toStdString(), &error));
+    motion::msg::Message error;
+    ASSERT_TRUE(dev::files::writeAtomically(plan, made.out.toStdString(), &error));
     const QStringList runArgs = {QStringLiteral("--sim"), QStringLiteral("stage"), QStringLiteral("--json"), QStringLiteral("scan"),
                                  QStringLiteral("run"), plan, QStringLiteral("--out"), out, QStringLiteral("--home"),
                                  QStringLiteral("--camera"), QStringLiteral("sim")};
@@ -63,8 +63,8 @@ TEST(CameraCli, AScanKilledMidRunEndsWithEveryImageWholeAndNoneTwice)
     EXPECT_LE(again.out.count(QStringLiteral("\"image\"")), 12 - 5) << "the run continued: " << again.out.toStdString();
 
     std::string text;
-    ASSERT_TRUE(files::readText(QDir(out).filePath(QLatin1String(scanfile::kRunLogFile)), &text, &error));
-    const auto log = scanfile::parseRunLog(text);
+    ASSERT_TRUE(dev::files::readText(QDir(out).filePath(QLatin1String(dev::files::scan::kRunLogFile)), &text, &error));
+    const auto log = dev::files::scan::parseRunLog(text);
     ASSERT_TRUE(log.log);
     ASSERT_EQ(log.log->records.size(), 12u) << text;
     std::set<int> tiles;
@@ -91,7 +91,7 @@ TEST(CameraCli, SnapWritesATileAndBadSourcesAreNamed)
     EXPECT_TRUE(snap.out.contains(QStringLiteral("\"width\":2048"))) << snap.out.toStdString();
     dev::camera::Frame f;
     std::string description;
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(dev::camera::readTiff(file.toStdString(), &f, &description, &error));
     EXPECT_EQ(f.width, 2048);
     EXPECT_NE(description.find("\"exposure_ms\":5"), std::string::npos) << description;

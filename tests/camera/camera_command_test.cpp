@@ -25,14 +25,14 @@ namespace {
 
 struct Shot {
     std::optional<cam::Frame> frame;
-    std::optional<msg::Message> failure;
+    std::optional<motion::msg::Message> failure;
 };
 
 Shot take(cam::Camera& c, const cam::CaptureRequest& r)
 {
     Shot s;
     QObject::connect(&c, &cam::Camera::captured, [&](std::uint64_t, const cam::Frame& f) { s.frame = f; });
-    QObject::connect(&c, &cam::Camera::failed, [&](std::uint64_t, const msg::Problem& p) { s.failure = p.message; });
+    QObject::connect(&c, &cam::Camera::failed, [&](std::uint64_t, const motion::msg::Problem& p) { s.failure = p.message; });
     c.open();
     c.capture(r);
     itest::waitFor([&] { return s.frame || s.failure; }, 20000);
@@ -74,7 +74,7 @@ TEST(CommandCamera, TheProgramsFileIsReadWithThePlaceholdersFilledIn)
     const QString sh = script(dir, "cap.sh", "cp \"$1\" \"$2\"; echo \"$3 $4 $5\" > \"$6\"\n");
     cam::CommandCamera c(QStringLiteral("sh %1 %2 {file} {tile} {x_mm} {y_mm} %3").arg(sh, src, log));
     const Shot s = take(c, request(dir));
-    ASSERT_TRUE(s.frame) << (s.failure ? msg::debugString(*s.failure) : std::string());
+    ASSERT_TRUE(s.frame) << (s.failure ? motion::msg::debugString(*s.failure) : std::string());
     EXPECT_EQ(s.frame->width, 8);
     EXPECT_EQ(s.frame->format, cam::PixelFormat::Rgb8);
     EXPECT_EQ(s.frame->pixels[0], 10);
@@ -92,7 +92,7 @@ TEST(CommandCamera, TheProgramsFileIsReadWithThePlaceholdersFilledIn)
     grey.pixels.resize(6);
     const std::uint16_t v[3] = {100, 40000, 65535};
     std::memcpy(grey.pixels.data(), v, 6);
-    msg::Message error;
+    motion::msg::Message error;
     const QString tif = dir.filePath(QStringLiteral("grey.tif"));
     ASSERT_TRUE(cam::writeTileTiff(tif.toStdString(), grey, {}, nullptr, &error));
     cam::CommandCamera c16(QStringLiteral("cp %1 {file}").arg(tif));
@@ -111,7 +111,7 @@ TEST(CommandCamera, AFailingHangingSilentOrMissingProgramIsNamedWithItsStderr)
         const Shot s = take(c, request(dir));
         ASSERT_TRUE(s.failure);
         EXPECT_EQ(s.failure->id, "camera.command.failed");
-        const std::string t = msg::debugString(*s.failure);
+        const std::string t = motion::msg::debugString(*s.failure);
         EXPECT_NE(t.find("no camera found"), std::string::npos) << t;
         EXPECT_NE(t.find("3"), std::string::npos) << t;
     }
@@ -127,7 +127,7 @@ TEST(CommandCamera, AFailingHangingSilentOrMissingProgramIsNamedWithItsStderr)
         const Shot s = take(c, request(dir));
         ASSERT_TRUE(s.failure);
         EXPECT_EQ(s.failure->id, "camera.command.no_file");
-        EXPECT_NE(msg::debugString(*s.failure).find("wrote nothing"), std::string::npos);
+        EXPECT_NE(motion::msg::debugString(*s.failure).find("wrote nothing"), std::string::npos);
     }
     {
         cam::CommandCamera c(QStringLiteral("/nonexistent/capture-tool {file}"));
@@ -144,7 +144,7 @@ TEST(CommandCamera, AFailingHangingSilentOrMissingProgramIsNamedWithItsStderr)
     }
     EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files).size(), 0) << "nothing half-written, nothing left behind";
     // The source name makes the same camera.
-    msg::Message error;
+    motion::msg::Message error;
     auto made = cam::makeCamera("command:gphoto2 --capture-image-and-download --filename {file}", {}, &error);
     ASSERT_TRUE(made) << error;
     EXPECT_EQ(made->source(), QStringLiteral("command:gphoto2 --capture-image-and-download --filename {file}"));
@@ -165,7 +165,7 @@ TEST(FolderCamera, TheNextCompleteNewFileIsTakenAndNoFileIsNamed)
         QFile::rename(dir.filePath(QStringLiteral("img_0001.png.part")), dir.filePath(QStringLiteral("img_0001.png")));
     });
     const Shot s = take(c, request(dir));
-    ASSERT_TRUE(s.frame) << (s.failure ? msg::debugString(*s.failure) : std::string());
+    ASSERT_TRUE(s.frame) << (s.failure ? motion::msg::debugString(*s.failure) : std::string());
     EXPECT_EQ(s.frame->width, 6);
     EXPECT_EQ(s.frame->pixels[0], 200);
     EXPECT_TRUE(c.capabilities().needsTriggerOutput);
@@ -174,7 +174,7 @@ TEST(FolderCamera, TheNextCompleteNewFileIsTakenAndNoFileIsNamed)
     const Shot none = take(c, request(dir));
     ASSERT_TRUE(none.failure);
     EXPECT_EQ(none.failure->id, "camera.folder.timeout");
-    EXPECT_NE(msg::debugString(*none.failure).find(dir.path().toStdString()), std::string::npos) << "names the folder";
+    EXPECT_NE(motion::msg::debugString(*none.failure).find(dir.path().toStdString()), std::string::npos) << "names the folder";
 
     cam::FolderCamera gone(dir.filePath(QStringLiteral("nowhere")));
     const Shot g = take(gone, request(dir));
