@@ -292,6 +292,7 @@ void addPatternCommands(std::vector<Command>& list);
 void addRecipeCommands(std::vector<Command>& list);
 void addScanCommands(std::vector<Command>& list);
 void addStitchCommands(std::vector<Command>& list);
+void addCameraCommands(std::vector<Command>& list);
 void addAccuracyCommands(std::vector<Command>& list);
 void addCompensationCommands(std::vector<Command>& list);
 /// compensation fit-2d | upload-2d | show-2d | enable-2d | disable-2d | export-2d.

@@ -15,6 +15,7 @@ const std::vector<Command>& commands()
         addRecipeCommands(l);
         addScanCommands(l);
         addStitchCommands(l);
+        addCameraCommands(l);
         addAccuracyCommands(l);
         addCompensationCommands(l);
         addCompletionCommand(l);  // last: it lists the others

@@ -170,6 +170,8 @@ bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& fold
     m_folder = folder;
     m_layout = motion::scan::layoutScan(plan);
     m_records = dev::files::scan::plannedRecords(plan, m_layout);
+    m_images.assign(m_layout.tiles.size(), {});
+    m_finishWhenWritten = false;
     m_taken.assign(m_layout.tiles.size(), 0);
     m_takenCount = 0;
     m_phase = Phase::None;
@@ -182,69 +184,13 @@ bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& fold
         return false;
     m_stageModel = stageModelOf(m_client->identity(), m_client->softLimits());
     m_estimate = motion::scan::estimateScan(m_plan, m_layout, m_stageModel);
+    addCameraTimeToEstimate();
     m_prepared = true;
     refreshCompensation();
     reason = Refusal::None;
     setState(m_takenCount == totalTiles() ? State::Finished : State::Idle);
     emit progress(m_takenCount, totalTiles(), etaS());
     return true;
-}
-
-bool ScanRunner::adoptRunLog(std::uint64_t fingerprint, bool restart, bool* fresh, motion::msg::Message* error, Refusal* why)
-{
-    std::string text;
-    if (!dev::files::readText(logPath(), &text, error))
-        return false;
-    const auto log = dev::files::scan::parseRunLog(text);
-    if (!log.log) {
-        const motion::msg::Problem& first = log.problems.list().front();
-        *error = motion::msg::make("scan.run.log_damaged", {motion::msg::verbatim("log", dev::files::scan::kRunLogFile),
-                                                    motion::msg::integer("line", first.line, motion::msg::Unit::None),
-                                                    motion::msg::nested("cause", first.message)});
-        return false;
-    }
-    if (log.log->fingerprint == fingerprint && !restart) {
-        *fresh = false;
-        return continueFromLog(*log.log, fingerprint, error);
-    }
-    if (!restart) {
-        *why = Refusal::OtherScansLog;
-        *error = motion::msg::make("scan.run.other_scans_log", {motion::msg::integer("taken", static_cast<long long>(log.log->records.size())),
-                                                        motion::msg::integer("tiles", log.log->tiles)});
-        return false;
-    }
-    // Nothing is thrown away: the old log moves aside under its time.
-    const QString aside = QDir(m_folder).filePath(
-        QStringLiteral("scan-run.%1.jsonl").arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"))));
-    if (!QFile::rename(logPath(), aside)) {
-        *error = motion::msg::make("scan.run.cannot_move_log", {motion::msg::verbatim("file", aside.toStdString())});
-        return false;
-    }
-    return true;
-}
-
-bool ScanRunner::continueFromLog(const dev::files::scan::RunLog& log, std::uint64_t fingerprint, motion::msg::Message* error)
-{
-    for (const auto& r : log.records) {
-        const auto k = static_cast<std::size_t>(r.target);
-        if (k >= m_records.size())
-            continue;
-        m_records[k].measuredMm = r.measuredMm;
-        m_records[k].deviceTimeUs = r.deviceTimeUs;
-        m_records[k].settleS = r.settleS;
-        if (!m_taken[k]) {
-            m_taken[k] = 1;
-            ++m_takenCount;
-        }
-    }
-    if (!log.tornTail)
-        return true;
-    // A line torn by a crash would sit in front of the next one: write the
-    // log out again without it (atomically, so this cannot lose it either).
-    std::string clean = dev::files::scan::runLogHeader(m_plan.name, fingerprint, totalTiles());
-    for (const auto& r : log.records)
-        clean += dev::files::scan::runLogLine(r);
-    return dev::files::writeAtomically(logPath(), clean, error);
 }
 
 Point2 ScanRunner::commanded(int pathIndex) const
@@ -317,6 +263,8 @@ bool ScanRunner::start(motion::msg::Message* error)
         *error = blockers.front();
         return false;
     }
+    if (m_camera && !m_camera->begin(m_plan, m_folder.toStdString(), error))
+        return false;
     if (!openLog(error))
         return false;
     m_pathIndex = waypointToResumeAt();
@@ -398,28 +346,6 @@ double ScanRunner::etaS() const
     return remaining;
 }
 
-bool ScanRunner::openLog(motion::msg::Message* error)
-{
-    if (m_log.isOpen())
-        return true;
-    m_log.setFileName(logPath());
-    if (!m_log.open(QIODevice::WriteOnly | QIODevice::Append)) {
-        *error = motion::msg::make("file.log.cannot_open", {motion::msg::verbatim("file", logPath().toStdString()), motion::msg::verbatim("detail", m_log.errorString().toStdString())});
-        return false;
-    }
-    return true;
-}
-
-bool ScanRunner::appendLog(const std::string& line, motion::msg::Message* error)
-{
-    // One write and a flush per tile: a crash of the program loses nothing taken.
-    if (m_log.write(line.data(), static_cast<qint64>(line.size())) != static_cast<qint64>(line.size()) || !m_log.flush()) {
-        *error = motion::msg::make("file.log.cannot_write", {motion::msg::verbatim("file", logPath().toStdString()), motion::msg::verbatim("detail", m_log.errorString().toStdString())});
-        return false;
-    }
-    return true;
-}
-
 void ScanRunner::nextWaypoint()
 {
     if (m_state == State::Pausing) {
@@ -429,16 +355,23 @@ void ScanRunner::nextWaypoint()
     }
     if (m_state != State::Running)
         return;
+    // A resumed run may have holes (tiles whose images were taken again): tiles already
+    // taken are passed over, with the overtravel points that lead to them.
+    while (m_pathIndex < static_cast<int>(m_layout.path.size())) {
+        const int tile = currentTile();
+        if (tile < 0 || !m_taken[static_cast<std::size_t>(tile)])
+            break;
+        while (m_pathIndex < static_cast<int>(m_layout.path.size()) && m_layout.path[static_cast<std::size_t>(m_pathIndex)].tile != tile)
+            ++m_pathIndex;
+        ++m_pathIndex;
+    }
     if (m_pathIndex >= static_cast<int>(m_layout.path.size())) {
         m_phase = Phase::None;
-        m_log.close();
-        QStringList written;
-        motion::msg::Message error;
-        if (!writeExports(&written, &error))
-            emit problem(motion::msg::make("scan.run.exports_failed", {motion::msg::nested("cause", error)}));
-        setState(State::Finished);
-        emit progress(m_takenCount, totalTiles(), 0);
-        emit finished(written);
+        if (m_camera && m_camera->pendingWrites() > 0) {
+            m_finishWhenWritten = true;  // the last images are still being written
+            return;
+        }
+        finishRun();
         return;
     }
     m_onExtra = m_extraApproach.has_value();
@@ -458,6 +391,19 @@ void ScanRunner::nextWaypoint()
         if (self)
             self->onMoveAccepted(e);
     });
+}
+
+void ScanRunner::finishRun()
+{
+    m_finishWhenWritten = false;
+    m_log.close();
+    QStringList written;
+    motion::msg::Message error;
+    if (!writeExports(&written, &error))
+        emit problem(motion::msg::make("scan.run.exports_failed", {motion::msg::nested("cause", error)}));
+    setState(State::Finished);
+    emit progress(m_takenCount, totalTiles(), 0);
+    emit finished(written);
 }
 
 void ScanRunner::onMoveAccepted(const std::optional<dev::RequestError>& error)
@@ -579,6 +525,13 @@ void ScanRunner::checkSettled(const std::vector<double>& measuredMm, quint64 dev
     emit triggered(tile, deviceTimeUs);
     // A camera on the instrument's trigger output sees the output held for the exposure:
     // its rising edge starts an edge-triggered camera, its length times a level-triggered one.
+    if (m_camera) {
+        // The camera starts waiting before the pulse fires a camera on the trigger output.
+        takeWithCamera(tile);
+        if (m_client->can(dev::Capability::TriggerOutput))
+            m_client->pulseTrigger(m_plan.exposureS);
+        return;
+    }
     if (m_client->can(dev::Capability::TriggerOutput))
         m_client->pulseTrigger(m_plan.exposureS);
     m_exposure.start(static_cast<int>(std::lround(m_plan.exposureS * kScanMsPerS)));
@@ -616,6 +569,8 @@ void ScanRunner::stopWith(const motion::msg::Message& message, bool stopStage)
 {
     m_exposure.stop();
     m_settleTimeout.stop();
+    m_cameraTimeout.stop();
+    m_finishWhenWritten = false;
     m_phase = Phase::None;
     m_extraApproach.reset();
     m_onExtra = false;

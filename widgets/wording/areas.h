@@ -21,6 +21,7 @@ QString plate(const motion::msg::Message& m);       ///< "plate."
 QString profile(const motion::msg::Message& m);     ///< "profile."
 QString recipe(const motion::msg::Message& m);      ///< "recipe."
 QString scan(const motion::msg::Message& m);        ///< "scan."
+QString camera(const motion::msg::Message& m);      ///< "camera."
 QString tuning(const motion::msg::Message& m);      ///< "tuning."
 QString gauge(const motion::msg::Message& m);       ///< "gauge." (accuracy_bench_words.cpp)
 QString imaging(const motion::msg::Message& m);     ///< "imaging." (imaging_words.cpp)
