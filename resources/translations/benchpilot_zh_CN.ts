@@ -2558,236 +2558,6 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <source>also plan every well order (as-written, column-major, snake-rows, snake-columns, shortest): time and bound of each</source>
         <translation>同时按每种孔顺序（按书写、逐列、行蛇形、列蛇形、最短路径）规划：给出各自的用时和下限</translation>
     </message>
-</context>
-<context>
-    <name>app::cli::CliSession</name>
-    <message>
-        <source>--stage-errors is for the simulated stage: give --sim stage</source>
-        <translation>--stage-errors 只用于仿真载物台：请给出 --sim stage</translation>
-    </message>
-    <message>
-        <source>--stage-errors: %1</source>
-        <translation>--stage-errors：%1</translation>
-    </message>
-    <message>
-        <source>with --sim stage: the simulated stage&apos;s errors from a benchpilot.stage-errors file</source>
-        <translation>与 --sim stage 一起使用：从 benchpilot.stage-errors 文件读取仿真载物台的误差</translation>
-    </message>
-    <message>
-        <source>no 2D compensation table on the device</source>
-        <translation>设备上没有二维补偿表</translation>
-    </message>
-    <message>
-        <source>2D table of %1 × %2 nodes; %3%4%5</source>
-        <translation>%1 × %2 节点的二维表；%3%4%5</translation>
-    </message>
-    <message>
-        <source> (applied once X and Y are homed)</source>
-        <translation>（X 和 Y 回零后生效）</translation>
-    </message>
-    <message>
-        <source>give one grid map result file</source>
-        <translation>请给出一个网格图结果文件</translation>
-    </message>
-    <message>
-        <source>give the table file to write: --out FILE</source>
-        <translation>请给出要写入的表文件：--out FILE</translation>
-    </message>
-    <message>
-        <source>2D table of %1 × %2 nodes, every %3 × %4 mm from (%5, %6) mm</source>
-        <translation>%1 × %2 节点的二维表，从 (%5, %6) mm 起每隔 %3 × %4 mm</translation>
-    </message>
-    <message>
-        <source>give one 2D compensation table file</source>
-        <translation>请给出一个二维补偿表文件</translation>
-    </message>
-    <message>
-        <source>a 2D compensation table from a grid map&apos;s result file</source>
-        <translation>由网格图结果文件生成二维补偿表</translation>
-    </message>
-    <message>
-        <source>RESULT</source>
-        <translation>RESULT</translation>
-    </message>
-    <message>
-        <source>RESULT is a benchpilot.grid-map-result file; the table has a node at each of its nodes, with the X and Y corrections that put the work point on them.</source>
-        <translation>RESULT 为 benchpilot.grid-map-result 文件；补偿表在其每个节点处各有一个节点，其 X、Y 修正量使工作点落在这些节点上。</translation>
-    </message>
-    <message>
-        <source>send a 2D compensation table to the device (installed disabled)</source>
-        <translation>将二维补偿表发送到设备（安装后处于禁用状态）</translation>
-    </message>
-    <message>
-        <source>the device&apos;s 2D compensation table</source>
-        <translation>设备的二维补偿表</translation>
-    </message>
-    <message>
-        <source>enable the device&apos;s 2D compensation table</source>
-        <translation>启用设备的二维补偿表</translation>
-    </message>
-    <message>
-        <source>disable the device&apos;s 2D compensation table</source>
-        <translation>禁用设备的二维补偿表</translation>
-    </message>
-    <message>
-        <source>a 2D compensation table as CSV</source>
-        <translation>将二维补偿表导出为 CSV</translation>
-    </message>
-</context>
-<context>
-    <name>app::cli::CliSession</name>
-    <message>
-        <source>--profile: %1</source>
-        <translation>--profile：%1</translation>
-    </message>
-    <message>
-        <source>--profile %1 is for the %2, but --instrument says %3</source>
-        <translation>--profile %1 适用于%2，但 --instrument 指定的是%3</translation>
-    </message>
-    <message>
-        <source>cannot connect to %1: the protocol could not be detected</source>
-        <translation>无法连接到 %1：无法检测通信协议</translation>
-    </message>
-    <message>
-        <source>cannot connect to %1: %2</source>
-        <translation>无法连接到 %1：%2</translation>
-    </message>
-    <message>
-        <source>%1 is a %2, not the %3 --instrument names</source>
-        <translation>%1 是%2，不是 --instrument 指定的%3</translation>
-    </message>
-</context>
-<context>
-    <name>dev</name>
-    <message>
-        <source>give the axis: --axis X</source>
-        <translation>请指定轴：--axis X</translation>
-    </message>
-</context>
-<context>
-    <name>dev::BenchPilotClient</name>
-    <message>
-        <source>no link</source>
-        <translation>无连接</translation>
-    </message>
-</context>
-<context>
-    <name>dev::GrblClient</name>
-    <message>
-        <source>no link</source>
-        <translation>无链路</translation>
-    </message>
-    <message>
-        <source>GRBL controller</source>
-        <translation>GRBL 控制器</translation>
-    </message>
-</context>
-<context>
-    <name>dev::InstrumentProxy</name>
-    <message>
-        <source>no link</source>
-        <translation>无连接</translation>
-    </message>
-</context>
-<context>
-    <name>dev::LoopbackEnd</name>
-    <message>
-        <source>loopback @ %1 baud</source>
-        <translation>回环 @ %1 波特</translation>
-    </message>
-    <message>
-        <source>loopback</source>
-        <translation>回环</translation>
-    </message>
-</context>
-<context>
-    <name>dev::SerialTransport</name>
-    <message>
-        <source>%1 @ %2 baud</source>
-        <translation>%1 @ %2 波特</translation>
-    </message>
-</context>
-<context>
-    <name>files</name>
-    <message>
-        <source>cannot open %1: %2</source>
-        <translation>无法打开 %1：%2</translation>
-    </message>
-    <message>
-        <source>%1 is %2 MiB, more than the %3 MiB a BenchPilot file may be</source>
-        <translation>%1 大小为 %2 MiB，超过 BenchPilot 文件上限 %3 MiB</translation>
-    </message>
-    <message>
-        <source>cannot read %1: %2</source>
-        <translation>无法读取 %1：%2</translation>
-    </message>
-    <message>
-        <source>cannot write %1: %2</source>
-        <translation>无法写入 %1：%2</translation>
-    </message>
-</context>
-<context>
-    <name>grbl</name>
-    <message>
-        <source>A G-code word has no letter: every word is a letter followed by a value.</source>
-        <translation>G 代码字缺少字母：每个字都是一个字母后跟数值。</translation>
-    </message>
-    <message>
-        <source>A number is missing or is not written as a valid number.</source>
-        <translation>缺少数值，或数值格式无效。</translation>
-    </message>
-    <message>
-        <source>The &apos;$&apos; system command is not recognized or not supported.</source>
-        <translation>无法识别或不支持该“$”系统命令。</translation>
-    </message>
-    <message>
-        <source>A negative value was given where only a positive one is allowed.</source>
-        <translation>在只允许正值的地方给出了负值。</translation>
-    </message>
-    <message>
-        <source>Homing is not enabled in the controller&apos;s settings.</source>
-        <translation>控制器设置中未启用回零。</translation>
-    </message>
-    <message>
-        <source>The step pulse time is shorter than the controller allows.</source>
-        <translation>步进脉冲时间短于控制器允许的最小值。</translation>
-    </message>
-    <message>
-        <source>Reading the stored settings failed; the controller restored its defaults.</source>
-        <translation>读取已存设置失败；控制器已恢复默认值。</translation>
-    </message>
-    <message>
-        <source>This &apos;$&apos; command is only accepted while the controller is idle.</source>
-        <translation>该“$”命令只能在控制器空闲时执行。</translation>
-    </message>
-    <message>
-        <source>G-code is locked out while the controller is in alarm or jogging.</source>
-        <translation>控制器处于报警或点动状态时锁定 G 代码。</translation>
-    </message>
-    <message>
-        <source>Soft limits cannot be enabled unless homing is enabled too.</source>
-        <translation>未启用回零时不能启用软限位。</translation>
-    </message>
-    <message>
-        <source>The line is longer than the controller accepts; it was not executed.</source>
-        <translation>该行超过控制器允许的长度，未执行。</translation>
-    </message>
-    <message>
-        <source>This setting would make the step rate exceed what the controller supports.</source>
-        <translation>该设置会使步进频率超过控制器所能支持的范围。</translation>
-    </message>
-    <message>
-        <source>The safety door is open; the controller entered its door state.</source>
-        <translation>安全门已打开；控制器进入安全门状态。</translation>
-    </message>
-    <message>
-        <source>The build info or startup line is too long to be stored.</source>
-        <translation>版本信息或启动行太长，无法保存。</translation>
-    </message>
-    <message>
-        <source>The jog target lies beyond the machine travel; the jog was ignored.</source>
-        <translation>点动目标超出机床行程；该点动被忽略。</translation>
-    </message>
     <message>
         <source>--source manual reads what a person types at benchpilot-cli; in the GUI use the Calibration screen</source>
         <translation>--source manual 读取操作员在 benchpilot-cli 中输入的读数；在图形界面中请使用“校准”界面</translation>
@@ -2811,90 +2581,6 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>simulated gauge</source>
         <translation>模拟测头</translation>
-        <source>stitch needs one folder of tiles (benchpilot-cli stitch DIR --out mosaic.ome.tif)</source>
-        <translation>stitch 需要一个图块文件夹（benchpilot-cli stitch DIR --out mosaic.ome.tif）</translation>
-    </message>
-    <message>
-        <source>%1: no such folder</source>
-        <translation>%1：文件夹不存在</translation>
-    </message>
-    <message>
-        <source>--pixel-um must be above 0 and below 1000 µm (got %1)</source>
-        <translation>--pixel-um 必须大于 0 且小于 1000 µm（实际为 %1）</translation>
-    </message>
-    <message>
-        <source>--image-y must be stage-minus-y or stage-plus-y (got &apos;%1&apos;)</source>
-        <translation>--image-y 必须是 stage-minus-y 或 stage-plus-y（实际为“%1”）</translation>
-    </message>
-    <message>
-        <source>--max-shift-px must be from 1 to 10000 px (got %1)</source>
-        <translation>--max-shift-px 必须在 1 到 10000 px 之间（实际为 %1）</translation>
-    </message>
-    <message>
-        <source>--repeatability-um must be above 0 and at most 1000 µm (got %1)</source>
-        <translation>--repeatability-um 必须大于 0 且不超过 1000 µm（实际为 %1）</translation>
-    </message>
-    <message>
-        <source>--blend must be feather or overlay (got &apos;%1&apos;)</source>
-        <translation>--blend 必须是 feather 或 overlay（实际为“%1”）</translation>
-    </message>
-    <message>
-        <source>%1 holds neither a scan run log (%2) nor a TileConfiguration.txt: say where the tiles were taken with --positions</source>
-        <translation>%1 中既没有扫描运行日志（%2），也没有 TileConfiguration.txt：请用 --positions 指明各图块的拍摄位置</translation>
-    </message>
-    <message>
-        <source>cannot read %1: %2</source>
-        <translation>无法读取 %1：%2</translation>
-    </message>
-    <message>
-        <source>%1 gives positions in mm: give the pixel size at the sample with --pixel-um (or the scan plan with --plan)</source>
-        <translation>%1 中的位置以 mm 为单位：请用 --pixel-um 给出样品面上的像元尺寸（或用 --plan 给出扫描方案）</translation>
-    </message>
-    <message>
-        <source>%1 names %2, which is not in the folder</source>
-        <translation>%1 列出了 %2，但文件夹中没有该文件</translation>
-    </message>
-    <message>
-        <source>%1 places %2 tiles, but the folder also holds tile images it does not name: %3. Stitch a folder of one scan, or give positions for every image.</source>
-        <translation>%1 给出了 %2 个图块的位置，但文件夹中还有它未列出的图块图像：%3。请只拼接同一次扫描的文件夹，或为每幅图像给出位置。</translation>
-    </message>
-    <message>
-        <source>cannot write %1: %2</source>
-        <translation>无法写入 %1：%2</translation>
-    </message>
-    <message>
-        <source>%1 tiles, %2 pairs: %3 trusted, %4 rejected as outliers, %5 not trusted; %6 tiles placed by the stage
-</source>
-        <translation>%1 个图块，%2 对：%3 对可信，%4 对作为离群值剔除，%5 对不可信；%6 个图块按载物台位置放置
-</translation>
-    </message>
-    <message>
-        <source>correction from the stage: RMS %1 px, worst %2 px
-</source>
-        <translation>相对载物台位置的修正：均方根 %1 px，最大 %2 px
-</translation>
-    </message>
-    <message>
-        <source>wrote %1 (%2 × %3 px), %4 and %5 in %6 s
-</source>
-        <translation>已写出 %1（%2 × %3 px）、%4 和 %5，用时 %6 s
-</translation>
-    </message>
-    <message>
-        <source>stitch a folder of tiles into a pyramidal OME-TIFF mosaic</source>
-        <translation>把一个图块文件夹拼接成金字塔 OME-TIFF 全景图</translation>
-    </message>
-    <message>
-        <source>DIR</source>
-        <translation>DIR</translation>
-    </message>
-    <message>
-        <source>Registers every pair of neighbouring tiles over their expected overlap, places all tiles by weighted least squares with the stage positions as priors, and fuses them (docs/stitching.md). Positions: the scan&apos;s run log or TileConfiguration.txt in DIR, or --positions. Writes the mosaic (--out), TileConfiguration.registered.txt in DIR and a .stitch.json report beside the mosaic.</source>
-        <translation>在预期重叠区内配准每一对相邻图块，以载物台位置为先验、用加权最小二乘放置全部图块，再融合成图（docs/stitching.md）。位置来自 DIR 中的扫描运行日志或 TileConfiguration.txt，或由 --positions 给出。写出全景图（--out）、DIR 中的 TileConfiguration.registered.txt，以及全景图旁的 .stitch.json 报告。</translation>
-    </message>
-    <message>
-        <source>the folder of tiles</source>
-        <translation>图块所在的文件夹</translation>
     </message>
     <message>
         <source>the simulated camera on the in-process simulator&apos;s stage (--sim stage)</source>
@@ -2981,6 +2667,164 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>See docs/camera.md for the sources, the image files and the simulated specimens.</source>
         <translation>图像来源、图像文件和模拟样品见 docs/camera.md。</translation>
+    </message>
+    <message>
+        <source>--stage-errors is for the simulated stage: give --sim stage</source>
+        <translation>--stage-errors 只用于仿真载物台：请给出 --sim stage</translation>
+    </message>
+    <message>
+        <source>--stage-errors: %1</source>
+        <translation>--stage-errors：%1</translation>
+    </message>
+    <message>
+        <source>with --sim stage: the simulated stage&apos;s errors from a benchpilot.stage-errors file</source>
+        <translation>与 --sim stage 一起使用：从 benchpilot.stage-errors 文件读取仿真载物台的误差</translation>
+    </message>
+    <message>
+        <source>no 2D compensation table on the device</source>
+        <translation>设备上没有二维补偿表</translation>
+    </message>
+    <message>
+        <source>2D table of %1 × %2 nodes; %3%4%5</source>
+        <translation>%1 × %2 节点的二维表；%3%4%5</translation>
+    </message>
+    <message>
+        <source> (applied once X and Y are homed)</source>
+        <translation>（X 和 Y 回零后生效）</translation>
+    </message>
+    <message>
+        <source>give one grid map result file</source>
+        <translation>请给出一个网格图结果文件</translation>
+    </message>
+    <message>
+        <source>give the table file to write: --out FILE</source>
+        <translation>请给出要写入的表文件：--out FILE</translation>
+    </message>
+    <message>
+        <source>2D table of %1 × %2 nodes, every %3 × %4 mm from (%5, %6) mm</source>
+        <translation>%1 × %2 节点的二维表，从 (%5, %6) mm 起每隔 %3 × %4 mm</translation>
+    </message>
+    <message>
+        <source>give one 2D compensation table file</source>
+        <translation>请给出一个二维补偿表文件</translation>
+    </message>
+    <message>
+        <source>a 2D compensation table from a grid map&apos;s result file</source>
+        <translation>由网格图结果文件生成二维补偿表</translation>
+    </message>
+    <message>
+        <source>RESULT</source>
+        <translation>RESULT</translation>
+    </message>
+    <message>
+        <source>RESULT is a benchpilot.grid-map-result file; the table has a node at each of its nodes, with the X and Y corrections that put the work point on them.</source>
+        <translation>RESULT 为 benchpilot.grid-map-result 文件；补偿表在其每个节点处各有一个节点，其 X、Y 修正量使工作点落在这些节点上。</translation>
+    </message>
+    <message>
+        <source>send a 2D compensation table to the device (installed disabled)</source>
+        <translation>将二维补偿表发送到设备（安装后处于禁用状态）</translation>
+    </message>
+    <message>
+        <source>the device&apos;s 2D compensation table</source>
+        <translation>设备的二维补偿表</translation>
+    </message>
+    <message>
+        <source>enable the device&apos;s 2D compensation table</source>
+        <translation>启用设备的二维补偿表</translation>
+    </message>
+    <message>
+        <source>disable the device&apos;s 2D compensation table</source>
+        <translation>禁用设备的二维补偿表</translation>
+    </message>
+    <message>
+        <source>a 2D compensation table as CSV</source>
+        <translation>将二维补偿表导出为 CSV</translation>
+    </message>
+    <message>
+        <source>stitch needs one folder of tiles (benchpilot-cli stitch DIR --out mosaic.ome.tif)</source>
+        <translation>stitch 需要一个图块文件夹（benchpilot-cli stitch DIR --out mosaic.ome.tif）</translation>
+    </message>
+    <message>
+        <source>%1: no such folder</source>
+        <translation>%1：文件夹不存在</translation>
+    </message>
+    <message>
+        <source>--pixel-um must be above 0 and below 1000 µm (got %1)</source>
+        <translation>--pixel-um 必须大于 0 且小于 1000 µm（实际为 %1）</translation>
+    </message>
+    <message>
+        <source>--image-y must be stage-minus-y or stage-plus-y (got &apos;%1&apos;)</source>
+        <translation>--image-y 必须是 stage-minus-y 或 stage-plus-y（实际为“%1”）</translation>
+    </message>
+    <message>
+        <source>--max-shift-px must be from 1 to 10000 px (got %1)</source>
+        <translation>--max-shift-px 必须在 1 到 10000 px 之间（实际为 %1）</translation>
+    </message>
+    <message>
+        <source>--repeatability-um must be above 0 and at most 1000 µm (got %1)</source>
+        <translation>--repeatability-um 必须大于 0 且不超过 1000 µm（实际为 %1）</translation>
+    </message>
+    <message>
+        <source>--blend must be feather or overlay (got &apos;%1&apos;)</source>
+        <translation>--blend 必须是 feather 或 overlay（实际为“%1”）</translation>
+    </message>
+    <message>
+        <source>%1 holds neither a scan run log (%2) nor a TileConfiguration.txt: say where the tiles were taken with --positions</source>
+        <translation>%1 中既没有扫描运行日志（%2），也没有 TileConfiguration.txt：请用 --positions 指明各图块的拍摄位置</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 gives positions in mm: give the pixel size at the sample with --pixel-um (or the scan plan with --plan)</source>
+        <translation>%1 中的位置以 mm 为单位：请用 --pixel-um 给出样品面上的像元尺寸（或用 --plan 给出扫描方案）</translation>
+    </message>
+    <message>
+        <source>%1 names %2, which is not in the folder</source>
+        <translation>%1 列出了 %2，但文件夹中没有该文件</translation>
+    </message>
+    <message>
+        <source>%1 places %2 tiles, but the folder also holds tile images it does not name: %3. Stitch a folder of one scan, or give positions for every image.</source>
+        <translation>%1 给出了 %2 个图块的位置，但文件夹中还有它未列出的图块图像：%3。请只拼接同一次扫描的文件夹，或为每幅图像给出位置。</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 tiles, %2 pairs: %3 trusted, %4 rejected as outliers, %5 not trusted; %6 tiles placed by the stage
+</source>
+        <translation>%1 个图块，%2 对：%3 对可信，%4 对作为离群值剔除，%5 对不可信；%6 个图块按载物台位置放置
+</translation>
+    </message>
+    <message>
+        <source>correction from the stage: RMS %1 px, worst %2 px
+</source>
+        <translation>相对载物台位置的修正：均方根 %1 px，最大 %2 px
+</translation>
+    </message>
+    <message>
+        <source>wrote %1 (%2 × %3 px), %4 and %5 in %6 s
+</source>
+        <translation>已写出 %1（%2 × %3 px）、%4 和 %5，用时 %6 s
+</translation>
+    </message>
+    <message>
+        <source>stitch a folder of tiles into a pyramidal OME-TIFF mosaic</source>
+        <translation>把一个图块文件夹拼接成金字塔 OME-TIFF 全景图</translation>
+    </message>
+    <message>
+        <source>DIR</source>
+        <translation>DIR</translation>
+    </message>
+    <message>
+        <source>Registers every pair of neighbouring tiles over their expected overlap, places all tiles by weighted least squares with the stage positions as priors, and fuses them (docs/stitching.md). Positions: the scan&apos;s run log or TileConfiguration.txt in DIR, or --positions. Writes the mosaic (--out), TileConfiguration.registered.txt in DIR and a .stitch.json report beside the mosaic.</source>
+        <translation>在预期重叠区内配准每一对相邻图块，以载物台位置为先验、用加权最小二乘放置全部图块，再融合成图（docs/stitching.md）。位置来自 DIR 中的扫描运行日志或 TileConfiguration.txt，或由 --positions 给出。写出全景图（--out）、DIR 中的 TileConfiguration.registered.txt，以及全景图旁的 .stitch.json 报告。</translation>
+    </message>
+    <message>
+        <source>the folder of tiles</source>
+        <translation>图块所在的文件夹</translation>
     </message>
 </context>
 <context>
@@ -3380,21 +3224,6 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>读取文件失败。</translation>
     </message>
     <message>
-        <source>with --sim stage: the simulated stage&apos;s errors from a benchpilot.stage-errors file</source>
-        <translation>与 --sim stage 一起使用：从 benchpilot.stage-errors 文件读取仿真载物台的误差</translation>
-    </message>
-    <message>
-        <source>--stage-errors is for the simulated stage: give --sim stage</source>
-        <translation>--stage-errors 只用于仿真载物台：请给出 --sim stage</translation>
-    </message>
-    <message>
-        <source>--stage-errors: %1</source>
-        <translation>--stage-errors：%1</translation>
-    </message>
-</context>
-<context>
-    <name>ui::report</name>
-    <message>
         <source>A directory could not be opened.</source>
         <translation>无法打开目录。</translation>
     </message>
@@ -3657,6 +3486,18 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <source>screenshot: the window&apos;s size, e.g. 1366x768 (a window that cannot shrink to it shows as a larger picture)</source>
         <translation>截图：窗口尺寸，如 1366x768（无法缩到该尺寸的窗口会得到更大的图片）</translation>
     </message>
+    <message>
+        <source>with --sim stage: the simulated stage&apos;s errors from a benchpilot.stage-errors file</source>
+        <translation>与 --sim stage 一起使用：从 benchpilot.stage-errors 文件读取仿真载物台的误差</translation>
+    </message>
+    <message>
+        <source>--stage-errors is for the simulated stage: give --sim stage</source>
+        <translation>--stage-errors 只用于仿真载物台：请给出 --sim stage</translation>
+    </message>
+    <message>
+        <source>--stage-errors: %1</source>
+        <translation>--stage-errors：%1</translation>
+    </message>
 </context>
 <context>
     <name>sim</name>
@@ -3767,68 +3608,6 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>--stage-errors is for the simulated stage (--instrument stage)</source>
         <translation>--stage-errors 只用于仿真载物台（--instrument stage）</translation>
-    </message>
-</context>
-<context>
-    <name>app::sim::PtyTransport</name>
-    <message>
-        <source>cannot create a pseudo-terminal: %1</source>
-        <translation>无法创建伪终端：%1</translation>
-    </message>
-    <message>
-        <source>cannot name the pseudo-terminal: %1</source>
-        <translation>无法获取伪终端名称：%1</translation>
-    </message>
-</context>
-<context>
-    <name>dev::tele::TelemetryHub</name>
-    <message>
-        <source>commanded</source>
-        <translation>指令位置</translation>
-    </message>
-    <message>
-        <source>measured</source>
-        <translation>实测位置</translation>
-    </message>
-    <message>
-        <source>velocity</source>
-        <translation>速度</translation>
-    </message>
-    <message>
-        <source>following error</source>
-        <translation>跟随误差</translation>
-    </message>
-    <message>
-        <source>controller output</source>
-        <translation>控制器输出</translation>
-    </message>
-    <message>
-        <source>switches</source>
-        <translation>开关</translation>
-    </message>
-    <message>
-        <source>contour error</source>
-        <translation>轮廓误差</translation>
-    </message>
-    <message>
-        <source>controller output u</source>
-        <translation>控制器输出 u</translation>
-    </message>
-    <message>
-        <source>Instrument %1</source>
-        <translation>仪器 %1</translation>
-    </message>
-    <message>
-        <source>%1 %2</source>
-        <translation>%1 %2</translation>
-    </message>
-    <message>
-        <source>%1 %2 %3</source>
-        <translation>%1 %2 %3</translation>
-    </message>
-    <message>
-        <source>%1 [%2]</source>
-        <translation>%1 [%2]</translation>
     </message>
 </context>
 <context>
@@ -7196,6 +6975,42 @@ Keep that log aside and start this test afresh?</source>
         <source>Next: %1</source>
         <translation>下一步：%1</translation>
     </message>
+    <message>
+        <source>The bound is the least time any controller could take for these wells in this order under the axes&apos; limits and the travel rules (docs/recipes.md)</source>
+        <translation>下限是任何控制器在各轴限制和移动规则下按此顺序完成这些孔所需的最短时间（docs/recipes.md）</translation>
+    </message>
+    <message>
+        <source>Well order</source>
+        <translation>孔顺序</translation>
+    </message>
+    <message>
+        <source>Planned</source>
+        <translation>计划</translation>
+    </message>
+    <message>
+        <source>Bound</source>
+        <translation>下限</translation>
+    </message>
+    <message>
+        <source>Planned / bound</source>
+        <translation>计划 / 下限</translation>
+    </message>
+    <message>
+        <source>Every step with wells planned in each order; the recipe&apos;s own order is the one shown above</source>
+        <translation>每个含孔的步骤按各顺序规划；方案自身的顺序即上方所示</translation>
+    </message>
+    <message>
+        <source>cannot be used</source>
+        <translation>不能使用</translation>
+    </message>
+    <message>
+        <source>Took %1 on the analyzer&apos;s clock: %2 times the time-optimal bound (%3); planned %4</source>
+        <translation>按分析仪时钟用时 %1：是时间最优下限（%3）的 %2 倍；计划 %4</translation>
+    </message>
+    <message>
+        <source>Time-optimal bound %1: the plan takes %2 times it</source>
+        <translation>时间最优下限 %1：计划用时是它的 %2 倍</translation>
+    </message>
 </context>
 <context>
     <name>ui::ScanPlanForm</name>
@@ -7459,45 +7274,6 @@ Keep that log aside and start this test afresh?</source>
         <source>Start corner</source>
         <translation>起始角点</translation>
     </message>
-    <message>
-        <source>The bound is the least time any controller could take for these wells in this order under the axes&apos; limits and the travel rules (docs/recipes.md)</source>
-        <translation>下限是任何控制器在各轴限制和移动规则下按此顺序完成这些孔所需的最短时间（docs/recipes.md）</translation>
-    </message>
-    <message>
-        <source>Well order</source>
-        <translation>孔顺序</translation>
-    </message>
-    <message>
-        <source>Planned</source>
-        <translation>计划</translation>
-    </message>
-    <message>
-        <source>Bound</source>
-        <translation>下限</translation>
-    </message>
-    <message>
-        <source>Planned / bound</source>
-        <translation>计划 / 下限</translation>
-    </message>
-    <message>
-        <source>Every step with wells planned in each order; the recipe&apos;s own order is the one shown above</source>
-        <translation>每个含孔的步骤按各顺序规划；方案自身的顺序即上方所示</translation>
-    </message>
-    <message>
-        <source>cannot be used</source>
-        <translation>不能使用</translation>
-    </message>
-    <message>
-        <source>Took %1 on the analyzer&apos;s clock: %2 times the time-optimal bound (%3); planned %4</source>
-        <translation>按分析仪时钟用时 %1：是时间最优下限（%3）的 %2 倍；计划 %4</translation>
-    </message>
-    <message>
-        <source>Time-optimal bound %1: the plan takes %2 times it</source>
-        <translation>时间最优下限 %1：计划用时是它的 %2 倍</translation>
-    </message>
-</context>
-<context>
-    <name>ui::ScanPlanForm</name>
     <message>
         <source>Approach every tile from the same side</source>
         <translation>每个图块都从同一侧趋近</translation>
@@ -8076,6 +7852,10 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     <message>
         <source>XY travel to scale · dashed: soft limits</source>
         <translation>XY 行程（按比例）· 虚线：软限位</translation>
+    </message>
+    <message>
+        <source>not connected: the grey ring is the last known position</source>
+        <translation>未连接：灰色圆圈是最后已知的位置</translation>
     </message>
 </context>
 <context>
