@@ -7,6 +7,7 @@
 #include "patterns_fixture.h"
 
 #include "widgets/common/number_field.h"
+#include "widgets/joystick/travel_view.h"
 #include <QLabel>
 
 #include <cmath>
@@ -85,9 +86,13 @@ TEST_F(JoystickStops, APulledCableStopsTheAxesAndTheStickStaysDeadAfterReconnect
     ui::JoystickScreen* j = holdDiagonal();
     ASSERT_NE(j, nullptr);
     ui::JoystickPad* pad = j->pad();
+    auto* travel = j->findChild<ui::TravelView*>();
+    ASSERT_NE(travel, nullptr);
+    ASSERT_TRUE(waitFor([&] { return travel->showsLivePosition(); }, 2000));
     dev::SimulatedLink* link = stageLink();
     link->pair().unplug();
     ASSERT_TRUE(waitFor([&] { return stage()->state() == dev::LinkState::Lost; }, 2000));
+    EXPECT_FALSE(travel->showsLivePosition()) << "the travel view must not show the last position as where the axes are";
     EXPECT_FALSE(j->driver()->active());
     EXPECT_FALSE(pad->dragging()) << "the knob must let go when the link goes";
     EXPECT_TRUE(pad->deflection().isNull());
@@ -99,6 +104,7 @@ TEST_F(JoystickStops, APulledCableStopsTheAxesAndTheStickStaysDeadAfterReconnect
     stage()->connectLink();
     ASSERT_TRUE(waitFor([&] { return stage()->isReady(); }, 5000));
     ASSERT_TRUE(waitFor([&] { return pad->isEnabled(); }, 2000));
+    EXPECT_TRUE(travel->showsLivePosition());
     const double x = link->machine().commandedLogical(0), y = link->machine().commandedLogical(1);
     const quint64 frames = j->driver()->framesSent();
     // The hand never let go of the mouse and keeps pushing: nothing may move by itself.

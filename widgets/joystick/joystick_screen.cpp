@@ -183,6 +183,7 @@ void JoystickScreen::rebuild()
 void JoystickScreen::refresh()
 {
     const bool ready = m_client->isReady();
+    m_travel->setLive(ready);
     const auto& st = m_client->status();
     const auto& id = m_client->identity();
     QString state = ui::words::term(dev::linkStateTerm(m_client->state()));

@@ -35,6 +35,14 @@ void TravelView::addPosition(QPointF measuredMm, QPointF commandedMm)
     update();
 }
 
+void TravelView::setLive(bool live)
+{
+    if (m_live == live)
+        return;
+    m_live = live;
+    update();
+}
+
 void TravelView::clearTrail()
 {
     m_trail.clear();
@@ -90,7 +98,15 @@ void TravelView::paintEvent(QPaintEvent*)
         p.setPen(QPen(QColor(0x1f, 0x77, 0xb4), 1.5));
         p.drawPath(path);
     }
-    if (m_havePosition) {
+    if (m_havePosition && !m_live) {
+        const QPointF at = toPixel(m_measured);
+        p.setPen(QPen(QColor(0x90, 0x90, 0x90), 1.5, Qt::DashLine));
+        p.setBrush(Qt::NoBrush);
+        p.drawEllipse(at, 5, 5);
+        p.setPen(QColor(0x70, 0x70, 0x70));
+        p.drawText(QRectF(travel.left(), travel.bottom() + 18, travel.width(), 16), Qt::AlignCenter,
+                   tr("not connected: the grey ring is the last known position"));
+    } else if (m_havePosition) {
         p.setPen(QPen(QColor(0x30, 0x30, 0x30), 1.5));
         p.setBrush(Qt::NoBrush);
         p.drawEllipse(toPixel(m_commanded), 7, 7);

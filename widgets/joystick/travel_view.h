@@ -21,6 +21,10 @@ public:
     /// A new position: measured joins the trail, commanded is marked.
     void addPosition(QPointF measuredMm, QPointF commandedMm);
     void clearTrail();
+    /// Whether the positions are live. Without the link the last one is still drawn, grey and
+    /// labelled as the last known, never as where the axes are now.
+    void setLive(bool live);
+    bool showsLivePosition() const { return m_havePosition && m_live; }
     std::size_t trailSize() const { return m_trail.size(); }
     /// Pixel position of a point in mm (for tests and overlays).
     QPointF toPixel(QPointF mm) const;
@@ -36,6 +40,7 @@ private:
     std::deque<QPointF> m_trail;
     QPointF m_measured, m_commanded;
     bool m_havePosition = false;
+    bool m_live = true;
 };
 
 } // namespace ui
