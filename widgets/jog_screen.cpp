@@ -369,6 +369,12 @@ static bool typingFocus()
     return qobject_cast<QLineEdit*>(f) || qobject_cast<QAbstractSpinBox*>(f) || listFocus();
 }
 
+void JogScreen::addPanel(QWidget* panel)
+{
+    auto* top = static_cast<QVBoxLayout*>(layout());
+    top->insertWidget(top->count() - 1, panel, 6);  // before the closing stretch
+}
+
 bool JogScreen::typing() const { return isVisible() && typingFocus(); }
 
 bool JogScreen::keysAreMine() const { return isVisible() || (m_keysElsewhere && m_keysElsewhere()); }

@@ -5,11 +5,15 @@
 #include "device/jobs/machine_model.h"
 #include "device/jobs/scan_launch.h"
 #include "device/jobs/scan_runner.h"
+#include "widgets/camera/camera_panel.h"
+#include "widgets/camera/camera_session.h"
+#include "widgets/camera/live_view.h"
 #include "widgets/scan/scan_plan_form.h"
 #include "widgets/scan/scan_stage_map.h"
 
 #include "widgets/wording/wording.h"
 
+#include <QCheckBox>
 #include <QDir>
 #include <QFileInfo>
 #include <QHBoxLayout>
@@ -20,6 +24,8 @@
 #include <QScrollArea>
 #include <QSplitter>
 #include <QStandardPaths>
+#include <QTabBar>
+#include <QTabWidget>
 #include <QTimer>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -71,7 +77,12 @@ ScanScreen::ScanScreen(dev::Instrument* stage, QWidget* parent)
     mapBar->addWidget(fitPlan);
     mapBar->addWidget(m_pointer, 1);
     lv->addLayout(mapBar);
-    split->addWidget(left);
+    // The camera goes in a tab beside the map (setCameraSession): the live view needs the room.
+    m_leftTabs = new QTabWidget;
+    m_leftTabs->setObjectName(QStringLiteral("scanLeftTabs"));
+    m_leftTabs->addTab(left, tr("Stage map"));
+    m_leftTabs->tabBar()->setVisible(false);
+    split->addWidget(m_leftTabs);
 
     auto* right = new QWidget;
     auto* rv = new QVBoxLayout(right);
@@ -206,6 +217,13 @@ QWidget* ScanScreen::buildRunPanel()
     folderRow->addWidget(m_folder, 1);
     folderRow->addWidget(browse);
     v->addLayout(folderRow);
+    m_useCamera = new QCheckBox(tr("Take an image at each tile"));
+    m_useCamera->setObjectName(QStringLiteral("scanUseCamera"));
+    m_useCamera->setToolTip(tr("The camera open on the Camera tab takes each tile once it has settled; the images go to the "
+                               "output folder"));
+    m_useCamera->setVisible(false);  // until there is a camera to take them
+    connect(m_useCamera, &QCheckBox::toggled, this, &ScanScreen::updateRunUi);
+    v->addWidget(m_useCamera);
     auto* buttons = new QHBoxLayout;
     m_runButton = new QPushButton(tr("Run"));
     m_runButton->setObjectName(QStringLiteral("scanRun"));
@@ -259,6 +277,32 @@ void ScanScreen::setPlan(const ScanPlan& p)
 
 QString ScanScreen::outputFolder() const { return m_folder->text(); }
 void ScanScreen::setOutputFolder(const QString& folder) { m_folder->setText(folder); }
+
+void ScanScreen::setCameraSession(CameraSession* session)
+{
+    if (m_camera || !session)
+        return;
+    m_camera = session;
+    m_cameraPanel = new CameraPanel(session, m_stage);
+    m_cameraPanel->setObjectName(QStringLiteral("scanCamera"));
+    m_leftTabs->addTab(m_cameraPanel, tr("Camera"));
+    m_leftTabs->tabBar()->setVisible(true);
+    connect(m_cameraPanel, &CameraPanel::problem, this, &ScanScreen::problem);
+    connect(m_cameraPanel, &CameraPanel::notice, this, &ScanScreen::notice);
+    connect(session, &CameraSession::stateChanged, this, &ScanScreen::updateRunUi);
+    m_useCamera->setVisible(true);
+    replan();
+}
+
+bool ScanScreen::takesImages() const { return m_useCamera->isChecked(); }
+void ScanScreen::setTakesImages(bool on) { m_useCamera->setChecked(on); }
+
+dev::camera::Camera* ScanScreen::runCamera() const
+{
+    return m_camera && m_useCamera->isChecked() ? m_camera->camera() : nullptr;
+}
+
+void ScanScreen::showTab(int index) { m_leftTabs->setCurrentIndex(std::clamp(index, 0, m_leftTabs->count() - 1)); }
 
 bool ScanScreen::openPlan(const QString& path)
 {
@@ -336,6 +380,8 @@ void ScanScreen::replan()
     m_problems->setText(lines.join(QLatin1Char('\n')));
     m_problems->setVisible(!lines.isEmpty());
     m_map->setPlan(p, m_layout);
+    if (m_cameraPanel)  // the plan's camera says the pixel size where the frames do not
+        m_cameraPanel->liveView()->setFallbackPixelUm(pixelAtSampleUm(p.camera));
     // A run of this very plan keeps showing its progress.
     m_taken.assign(m_layout.tiles.size(), 0);
     if (m_valid && m_launch->holds(layoutFingerprint(p, m_layout)))
@@ -381,6 +427,9 @@ void ScanScreen::updateRunUi()
     m_pauseButton->setEnabled(st == ScanRunner::State::Running);
     m_abortButton->setEnabled(active);
     m_exportButton->setEnabled(m_valid && !active);
+    m_useCamera->setEnabled(!active);
+    if (m_camera)
+        m_camera->setInUse(active && m_useCamera->isChecked());
     const int total = m_runner->totalTiles() > 0 ? m_runner->totalTiles() : static_cast<int>(m_layout.tiles.size());
     m_progress->setRange(0, std::max(1, total));
     m_progress->setValue(m_runner->totalTiles() > 0 ? m_runner->takenTiles() : 0);
@@ -419,6 +468,10 @@ bool ScanScreen::run()
     const QString folder = outputFolder().trimmed();
     if (folder.isEmpty()) {
         emit problem(tr("Choose an output folder for the run log and the exports."));
+        return false;
+    }
+    if (m_useCamera->isChecked() && !runCamera()) {
+        emit problem(tr("Open a camera on the Camera tab first, or clear “Take an image at each tile”."));
         return false;
     }
     using Kind = jobs::ScanDecision::Kind;
@@ -460,6 +513,8 @@ bool ScanScreen::run()
                                .arg(o.firstTileMm.xMm, 0, 'f', 2)
                                .arg(o.firstTileMm.yMm, 0, 'f', 2)))
         return false;
+    if (!handCameraToRunner())
+        return false;
     msg::Message error;
     if (!m_launch->start(&error)) {
         emit problem(words::text(error));
@@ -468,6 +523,17 @@ bool ScanScreen::run()
     if (o.resume)
         emit notice(tr("Continuing at tile %1 of %2 (the run log has the first %3).").arg(o.takenTiles + 1).arg(o.totalTiles).arg(o.takenTiles));
     return true;
+}
+
+bool ScanScreen::handCameraToRunner()
+{
+    dev::camera::Camera* cam = runCamera();
+    if (!cam)
+        return true;
+    // The runner's camera side (capture after settle, images in the run log) is not in this
+    // build yet: a run asked to take images refuses rather than run without them.
+    emit problem(tr("This scan cannot take images yet: clear “Take an image at each tile” to run it without them."));
+    return false;
 }
 
 void ScanScreen::pause() { m_runner->pause(); }

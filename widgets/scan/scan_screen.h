@@ -11,8 +11,10 @@
 #include <functional>
 #include <memory>
 
+class QCheckBox;
 class QLabel;
 class QLineEdit;
+class QTabWidget;
 class QProgressBar;
 class QPushButton;
 class QTimer;
@@ -22,8 +24,14 @@ class ScanLaunch;
 class ScanRunner;
 }
 
+namespace dev::camera {
+class Camera;
+}
+
 namespace ui {
 
+class CameraPanel;
+class CameraSession;
 class ScanPlanForm;
 class ScanStageMap;
 
@@ -52,6 +60,18 @@ public:
     void setPlan(const motion::scan::ScanPlan& plan);
     QString outputFolder() const;
     void setOutputFolder(const QString& folder);
+
+    /// Gives the screen the GUI's camera: a Camera tab beside the stage map with the live
+    /// view, and the run's "take an image at each tile" option.
+    void setCameraSession(CameraSession* session);
+    CameraPanel* cameraPanel() const { return m_cameraPanel; }
+    /// Whether a run takes an image at each tile (kept between runs by the app).
+    bool takesImages() const;
+    void setTakesImages(bool on);
+    /// The camera a run is handed: the open one when images are asked for, else nullptr.
+    dev::camera::Camera* runCamera() const;
+    /// Shows the stage map (0) or the camera (1).
+    void showTab(int index);
 
     bool openPlan(const QString& path);
     bool savePlan(const QString& path);
@@ -84,6 +104,7 @@ private:
     void onStageIdentity();
     motion::scan::StageModel stageModel() const;
     bool confirm(const QString& question);
+    bool handCameraToRunner();  ///< false (with a problem) when the run cannot take the images asked for
     QString choose(FileAction action, const QString& title, const QString& filter);
 
     dev::Instrument* m_stage;
@@ -91,6 +112,10 @@ private:
     std::unique_ptr<jobs::ScanLaunch> m_launch;  ///< what Run does, shared with the CLI
     ScanStageMap* m_map;
     ScanPlanForm* m_form;
+    QTabWidget* m_leftTabs;
+    CameraSession* m_camera = nullptr;
+    CameraPanel* m_cameraPanel = nullptr;
+    QCheckBox* m_useCamera;
     QLabel* m_summary;
     QLabel* m_problems;
     QLabel* m_pointer;

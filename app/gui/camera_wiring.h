@@ -1,0 +1,19 @@
+#pragma once
+// The GUI's cameras: how a source string becomes a camera, and which sources can be
+// listed (a USB camera is found; a command or a folder is whatever the operator types).
+#include "device/camera/camera.h"
+
+#include <QString>
+#include <QStringList>
+
+#include <memory>
+
+namespace app {
+
+/// The camera for `source` ("sim", "uvc:NAME", "command:CMD", "folder:DIR"), not yet
+/// opened; nullptr with `error` worded when this build cannot make it.
+std::unique_ptr<dev::camera::Camera> makeCamera(const QString& source, QString* error);
+/// The sources known to exist now.
+QStringList listCameras();
+
+} // namespace app
