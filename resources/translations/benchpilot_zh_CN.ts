@@ -795,6 +795,13 @@ Take control back? The script&apos;s next call is refused and its jogs stop; a j
     </message>
 </context>
 <context>
+    <name>app::CameraWiring</name>
+    <message>
+        <source>Camera %1: this build has no camera sources.</source>
+        <translation>相机 %1：此版本没有相机来源。</translation>
+    </message>
+</context>
+<context>
     <name>app::HelpMenu</name>
     <message>
         <source>&amp;Help</source>
@@ -4469,6 +4476,140 @@ Keep that log aside and start this test afresh?</source>
     </message>
 </context>
 <context>
+    <name>ui::CameraPanel</name>
+    <message>
+        <source>the camera gave an empty image</source>
+        <translation>相机给出的图像是空的</translation>
+    </message>
+    <message>
+        <source>the PNG could not be written</source>
+        <translation>无法写入 PNG</translation>
+    </message>
+    <message>
+        <source>Save the snapped image</source>
+        <translation>保存拍摄的图像</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG 图像 (*.png)</translation>
+    </message>
+    <message>
+        <source>Open a camera before snapping.</source>
+        <translation>拍摄前请先打开相机。</translation>
+    </message>
+    <message>
+        <source>A snap is still being taken.</source>
+        <translation>上一张图像仍在拍摄中。</translation>
+    </message>
+    <message>
+        <source>The snap was not taken: %1</source>
+        <translation>未拍摄图像：%1</translation>
+    </message>
+    <message>
+        <source>The snap was not saved to %1: %2</source>
+        <translation>图像未保存到 %1：%2</translation>
+    </message>
+    <message>
+        <source>Snapped %1.</source>
+        <translation>已拍摄 %1。</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>打开</translation>
+    </message>
+    <message>
+        <source>Open: %1</source>
+        <translation>已打开：%1</translation>
+    </message>
+    <message>
+        <source>Opening %1…</source>
+        <translation>正在打开 %1…</translation>
+    </message>
+    <message>
+        <source>Closed</source>
+        <translation>已关闭</translation>
+    </message>
+    <message>
+        <source>Opening the camera…</source>
+        <translation>正在打开相机…</translation>
+    </message>
+    <message>
+        <source>No picture: open a camera.</source>
+        <translation>无图像：请打开相机。</translation>
+    </message>
+    <message>
+        <source>This source gives no live picture: each snap is shown here.</source>
+        <translation>此来源没有实时图像：每次拍摄的图像显示在这里。</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>相机</translation>
+    </message>
+    <message>
+        <source>sim: the simulated camera; uvc:NAME: a USB camera; command:CMD: runs CMD for each image ({file} is where it writes); folder:DIR: takes the next new file in DIR</source>
+        <translation>sim：模拟相机；uvc:NAME：USB 相机；command:CMD：每张图像运行一次 CMD（{file} 是它写入的位置）；folder:DIR：取 DIR 中的下一个新文件</translation>
+    </message>
+    <message>
+        <source>List the cameras again</source>
+        <translation>重新列出相机</translation>
+    </message>
+    <message>
+        <source>Exposure</source>
+        <translation>曝光</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>Exposure time, where the camera lets it be set</source>
+        <translation>曝光时间（相机允许设置时）</translation>
+    </message>
+    <message>
+        <source>Snap</source>
+        <translation>拍摄</translation>
+    </message>
+    <message>
+        <source>Take one image and save it as a PNG (16-bit grey stays 16-bit) (%1)</source>
+        <translation>拍摄一张图像并保存为 PNG（16 位灰度保持 16 位）（%1）</translation>
+    </message>
+</context>
+<context>
+    <name>ui::CameraSession</name>
+    <message>
+        <source>No camera source given: type sim, uvc:NAME, command:CMD or folder:DIR.</source>
+        <translation>未给出相机来源：请输入 sim、uvc:NAME、command:CMD 或 folder:DIR。</translation>
+    </message>
+    <message>
+        <source>“%1” needs what follows the colon: command:CMD runs CMD, folder:DIR watches DIR.</source>
+        <translation>“%1”的冒号后需要内容：command:CMD 运行 CMD，folder:DIR 监视 DIR。</translation>
+    </message>
+    <message>
+        <source>“%1” is not a camera source: type sim, uvc:NAME, command:CMD or folder:DIR.</source>
+        <translation>“%1”不是相机来源：请输入 sim、uvc:NAME、command:CMD 或 folder:DIR。</translation>
+    </message>
+    <message>
+        <source>The camera is taking a scan&apos;s tiles: pause or abort the scan before changing it.</source>
+        <translation>相机正在拍摄扫描的图块：请先暂停或中止扫描再更换相机。</translation>
+    </message>
+    <message>
+        <source>Camera %1: this build cannot open it.</source>
+        <translation>相机 %1：此版本无法打开它。</translation>
+    </message>
+    <message>
+        <source>Camera %1: %2</source>
+        <translation>相机 %1：%2</translation>
+    </message>
+    <message>
+        <source>The camera is taking a scan&apos;s tiles: pause or abort the scan before closing it.</source>
+        <translation>相机正在拍摄扫描的图块：请先暂停或中止扫描再关闭相机。</translation>
+    </message>
+</context>
+<context>
     <name>ui::ChannelPicker</name>
     <message>
         <source>Channels of</source>
@@ -5345,6 +5486,69 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Plots screen paused: this strip stops once that pause has filled its window</source>
         <translation>曲线界面已暂停：暂停填满其窗口后本条也会停止</translation>
+    </message>
+</context>
+<context>
+    <name>ui::LiveView</name>
+    <message>
+        <source>No picture: open a camera.</source>
+        <translation>无图像：请打开相机。</translation>
+    </message>
+    <message>
+        <source>%1 µm</source>
+        <translation>%1 µm</translation>
+    </message>
+    <message>
+        <source>Pixel size not known: no scale bar</source>
+        <translation>像元尺寸未知：无比例尺</translation>
+    </message>
+    <message>
+        <source>X %1  Y %2 mm</source>
+        <translation>X %1  Y %2 mm</translation>
+    </message>
+    <message>
+        <source>Stage position not known</source>
+        <translation>载物台位置未知</translation>
+    </message>
+    <message>
+        <source>%1 × %2 px · %3-bit · frame %4</source>
+        <translation>%1 × %2 px · %3 位 · 第 %4 帧</translation>
+    </message>
+    <message>
+        <source>Focus: —</source>
+        <translation>对焦：—</translation>
+    </message>
+    <message>
+        <source>Focus: %1</source>
+        <translation>对焦：%1</translation>
+    </message>
+    <message>
+        <source>Variance of the Laplacian (× 10⁴) of a downscaled copy: higher is sharper. Turn the focus until it peaks.</source>
+        <translation>缩小副本的拉普拉斯方差（× 10⁴）：越高越清晰。调焦直到它达到峰值。</translation>
+    </message>
+    <message>
+        <source>Levels %1–%2 of %3</source>
+        <translation>灰度 %1–%2（共 %3）</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>继续</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <source>Hold the picture still, or take frames again</source>
+        <translation>定住画面，或重新接收帧</translation>
+    </message>
+    <message>
+        <source>Auto contrast</source>
+        <translation>自动对比度</translation>
+    </message>
+    <message>
+        <source>Stretch the levels between the 0.5th and 99.5th percentiles; off, the full bit depth maps black to white</source>
+        <translation>在第 0.5 与第 99.5 百分位之间拉伸灰度；关闭时，整个位深从黑映射到白</translation>
     </message>
 </context>
 <context>
@@ -7542,6 +7746,30 @@ Start this scan anew in that folder? The old run log is kept under another name.
     <message>
         <source>The plan is not saved: %1</source>
         <translation>计划未保存：%1</translation>
+    </message>
+    <message>
+        <source>Stage map</source>
+        <translation>载物台地图</translation>
+    </message>
+    <message>
+        <source>Take an image at each tile</source>
+        <translation>在每个图块拍摄图像</translation>
+    </message>
+    <message>
+        <source>The camera open on the Camera tab takes each tile once it has settled; the images go to the output folder</source>
+        <translation>“相机”页中打开的相机在每个图块稳定后拍摄；图像保存到输出文件夹</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>相机</translation>
+    </message>
+    <message>
+        <source>Open a camera on the Camera tab first, or clear “Take an image at each tile”.</source>
+        <translation>请先在“相机”页打开相机，或取消“在每个图块拍摄图像”。</translation>
+    </message>
+    <message>
+        <source>This scan cannot take images yet: clear “Take an image at each tile” to run it without them.</source>
+        <translation>此扫描尚不能拍摄图像：取消“在每个图块拍摄图像”即可不拍图像运行。</translation>
     </message>
 </context>
 <context>
