@@ -13,11 +13,15 @@
 //   only when the previous one was taken), it never builds a queue.
 // - failed() carries a problem whose message names the source and what went wrong
 //   (and, for a command, its own stderr); after a capture fails, the tile is not taken.
+#include "device/camera/camera_geometry.h"
 #include "device/camera/frame.h"
 #include "motion/problem.h"
 
 #include <QObject>
 #include <QString>
+
+#include <optional>
+#include <string>
 
 namespace dev::camera {
 
@@ -36,6 +40,9 @@ struct CaptureRequest {
     int tile = -1;                ///< -1: a snap, not a scan tile
     double xMm = 0, yMm = 0;      ///< the stage's measured position when asked
     std::string fileHint;         ///< absolute path a command may be told to write ({file})
+    /// The scan plan's camera, in a scan: the simulated camera renders with it, a real
+    /// one refuses a tile when its sensor is not this size. Empty: the source's own.
+    std::optional<CameraGeometry> geometry;
 };
 
 class Camera : public QObject {

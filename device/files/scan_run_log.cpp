@@ -64,7 +64,7 @@ void addShifted(jsonio::Problems& into, const jsonio::Problems& line, int lineNo
 
 } // namespace
 
-std::string runLogLine(const motion::PositionRecord& r)
+std::string runLogLine(const motion::PositionRecord& r, const TileImageRef& image)
 {
     Value v = Value::object();
     v.set("tile", Value(r.target));
@@ -74,6 +74,10 @@ std::string runLogLine(const motion::PositionRecord& r)
     v.set("measured_mm", list(r.measuredMm));
     v.set("device_time_us", Value(static_cast<double>(r.deviceTimeUs)));
     v.set("settle_s", Value(r.settleS));
+    if (!image.file.empty()) {
+        v.set("image", Value(image.file));
+        v.set("sha256", Value(image.sha256));
+    }
     return jsonio::write(v, false) + "\n";
 }
 
@@ -124,7 +128,7 @@ RunLogReadResult parseRunLog(std::string_view text)
             continue;
         }
         ObjectReader o(*parsed.value, "", lp);
-        o.refuseUnknown({"tile", "label", "planned_mm", "commanded_mm", "measured_mm", "device_time_us", "settle_s"});
+        o.refuseUnknown({"tile", "label", "planned_mm", "commanded_mm", "measured_mm", "device_time_us", "settle_s", "image", "sha256"});
         motion::PositionRecord r;
         const auto tile = o.integer("tile", true, 0, log.tiles - 1);
         const auto label = o.string("label", true);
@@ -133,7 +137,18 @@ RunLogReadResult parseRunLog(std::string_view text)
         const auto measured = readAxes(o, "measured_mm");
         const auto time = o.number("device_time_us", true, 0, 9007199254740992.0);
         const auto settle = o.number("settle_s", true, 0, 1e6);
-        if (tile && label && planned && commanded && measured && time && settle) {
+        const auto image = o.string("image", false);
+        const auto sha = o.string("sha256", false);
+        const bool shaOk = !sha || (sha->size() == 64 && sha->find_first_not_of("0123456789abcdef") == std::string::npos);
+        if (!shaOk)
+            lp.add(*parsed.value->find("sha256"), "sha256", msg::make("file.log.bad_sha256"));
+        // The image is a file in the run's folder: a path out of it is not one this log wrote.
+        const bool imageOk = !image || (!image->empty() && *image != "." && *image != ".." && image->find_first_of("/\\") == std::string::npos);
+        if (!imageOk)
+            lp.add(*parsed.value->find("image"), "image", msg::make("file.log.bad_image_name"));
+        if (image.has_value() != sha.has_value())
+            lp.add(*parsed.value, image ? "sha256" : "image", msg::make("file.log.image_without_sha256"));
+        if (tile && label && planned && commanded && measured && time && settle && shaOk && imageOk && image.has_value() == sha.has_value()) {
             r.target = static_cast<int>(*tile);
             r.label = *label;
             r.plannedMm = *planned;
@@ -142,6 +157,7 @@ RunLogReadResult parseRunLog(std::string_view text)
             r.deviceTimeUs = static_cast<std::uint64_t>(*time);
             r.settleS = *settle;
             log.records.push_back(std::move(r));
+            log.images.push_back({image.value_or(std::string()), sha.value_or(std::string())});
         }
         addShifted(out.problems, lp, lineNo);
     }

@@ -5,7 +5,8 @@
 //             "fingerprint": HEX, "tiles": N}
 //   then one line per tile taken, in the order taken:
 //            {"tile": K, "label": …, "planned_mm": [x, y], "commanded_mm": […],
-//             "measured_mm": […], "device_time_us": T, "settle_s": S}
+//             "measured_mm": […], "device_time_us": T, "settle_s": S
+//             [, "image": FILE, "sha256": HEX]}   (with a camera: the tile's image)
 // A line is appended (and flushed) once the tile's exposure has ended. A whole
 // file is never rewritten, so a crash can only tear the last line: a last line
 // without its newline that does not parse is dropped, anything else wrong is an
@@ -25,11 +26,18 @@ constexpr const char* kRunLogSchema = "benchpilot.scan-run";
 constexpr int kRunLogVersion = 1;
 constexpr const char* kRunLogFile = "scan-run.jsonl";
 
+/// A tile's image as the run log names it: the file in the output folder and its SHA-256.
+struct TileImageRef {
+    std::string file;    ///< empty: the tile was taken without a camera
+    std::string sha256;  ///< 64 lower-case hex digits
+};
+
 struct RunLog {
     std::string planName;
     std::uint64_t fingerprint = 0;
     int tiles = 0;
     std::vector<motion::PositionRecord> records;  ///< in the order taken
+    std::vector<TileImageRef> images;             ///< beside records, one each
     bool tornTail = false;                        ///< a last line cut short by a crash was dropped
 };
 
@@ -39,7 +47,7 @@ struct RunLogReadResult {
 };
 
 std::string runLogHeader(const std::string& planName, std::uint64_t fingerprint, int tiles);
-std::string runLogLine(const motion::PositionRecord& record);
+std::string runLogLine(const motion::PositionRecord& record, const TileImageRef& image = {});
 RunLogReadResult parseRunLog(std::string_view text);
 
 std::string fingerprintText(std::uint64_t fingerprint);  ///< 16 hex digits
