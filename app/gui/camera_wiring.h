@@ -10,9 +10,12 @@
 
 namespace app {
 
+class InstrumentSession;
+
 /// The camera for `source` ("sim", "uvc:NAME", "command:CMD", "folder:DIR"), not yet
-/// opened; nullptr with `error` worded when this build cannot make it.
-std::unique_ptr<dev::camera::Camera> makeCamera(const QString& source, QString* error);
+/// opened; nullptr with `error` worded when this build cannot make it. The simulated
+/// camera looks at `stage`'s in-process simulator.
+std::unique_ptr<dev::camera::Camera> makeCamera(const QString& source, InstrumentSession* stage, QString* error);
 /// The sources known to exist now.
 QStringList listCameras();
 

@@ -171,7 +171,9 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     setCentralWidget(central);
 
     m_camera = new ui::CameraSession(this);
-    m_camera->setFactory(m_options.cameraFactory ? m_options.cameraFactory : ui::CameraSession::Factory(&makeCamera));
+    m_camera->setFactory(m_options.cameraFactory ? m_options.cameraFactory : ui::CameraSession::Factory([this](const QString& source, QString* error) {
+        return makeCamera(source, m_instruments[1].session, error);
+    }));
     m_camera->setLister(&listCameras);
     connect(m_camera, &ui::CameraSession::problem, this, &MainWindow::warn);
     const auto chooseSnapFile = [this](const QString& title, const QString& filter) {
@@ -743,7 +745,7 @@ void MainWindow::loadSettings()
         m_scan->setOutputFolder(st.value(QStringLiteral("scan/folder")).toString());
     m_camera->setRecentSources(st.value(QStringLiteral("camera/recent")).toStringList());
     m_camera->setSource(st.value(QStringLiteral("camera/source"), QStringLiteral("sim")).toString());
-    m_camera->setExposureMs(st.value(QStringLiteral("camera/exposure_ms"), 20.0).toDouble());
+    m_camera->setExposureMs(st.value(QStringLiteral("camera/exposure_ms"), 10.0).toDouble());
     m_camera->setAutoContrast(st.value(QStringLiteral("camera/auto_contrast"), true).toBool());
     m_scan->setTakesImages(st.value(QStringLiteral("scan/take_images"), false).toBool());
     m_jogTabs->setCurrentIndex(std::clamp(st.value(QStringLiteral("window/instrument"), 0).toInt(), 0, 1));

@@ -797,8 +797,8 @@ Take control back? The script&apos;s next call is refused and its jogs stop; a j
 <context>
     <name>app::CameraWiring</name>
     <message>
-        <source>Camera %1: this build has no camera sources.</source>
-        <translation>相机 %1：此版本没有相机来源。</translation>
+        <source>Camera %1: this build cannot open this kind of source yet.</source>
+        <translation>相机 %1：此版本尚不能打开这类来源。</translation>
     </message>
 </context>
 <context>
@@ -4478,20 +4478,8 @@ Keep that log aside and start this test afresh?</source>
 <context>
     <name>ui::CameraPanel</name>
     <message>
-        <source>the camera gave an empty image</source>
-        <translation>相机给出的图像是空的</translation>
-    </message>
-    <message>
-        <source>the PNG could not be written</source>
-        <translation>无法写入 PNG</translation>
-    </message>
-    <message>
         <source>Save the snapped image</source>
         <translation>保存拍摄的图像</translation>
-    </message>
-    <message>
-        <source>PNG images (*.png)</source>
-        <translation>PNG 图像 (*.png)</translation>
     </message>
     <message>
         <source>Open a camera before snapping.</source>
@@ -4574,8 +4562,12 @@ Keep that log aside and start this test afresh?</source>
         <translation>拍摄</translation>
     </message>
     <message>
-        <source>Take one image and save it as a PNG (16-bit grey stays 16-bit) (%1)</source>
-        <translation>拍摄一张图像并保存为 PNG（16 位灰度保持 16 位）（%1）</translation>
+        <source>TIFF images (*.tif *.tiff)</source>
+        <translation>TIFF 图像 (*.tif *.tiff)</translation>
+    </message>
+    <message>
+        <source>Take one image and save it as a TIFF with the stage position in it (16-bit grey stays 16-bit) (%1)</source>
+        <translation>拍摄一张图像并保存为含载物台位置的 TIFF（16 位灰度保持 16 位）（%1）</translation>
     </message>
 </context>
 <context>
@@ -5547,8 +5539,8 @@ Keep that log aside and start this test afresh?</source>
         <translation>自动对比度</translation>
     </message>
     <message>
-        <source>Stretch the levels between the 0.5th and 99.5th percentiles; off, the full bit depth maps black to white</source>
-        <translation>在第 0.5 与第 99.5 百分位之间拉伸灰度；关闭时，整个位深从黑映射到白</translation>
+        <source>Stretch the levels so the darkest and brightest 0.1 % of the pixels clip; off, the full bit depth maps black to white</source>
+        <translation>拉伸灰度，使最暗和最亮的 0.1% 像素截断；关闭时，整个位深从黑映射到白</translation>
     </message>
 </context>
 <context>
@@ -10762,6 +10754,21 @@ A loop this different may oscillate or run away. Apply them?</source>
         <source>an object</source>
         <comment>json.type.object</comment>
         <translation>对象</translation>
+    </message>
+    <message>
+        <source>must be 64 lower-case hex digits (the image&apos;s SHA-256)</source>
+        <comment>file.log.bad_sha256</comment>
+        <translation>必须是 64 位小写十六进制数字（图像的 SHA-256）</translation>
+    </message>
+    <message>
+        <source>a tile&apos;s &quot;image&quot; and &quot;sha256&quot; come together: one without the other is not a line this program wrote</source>
+        <comment>file.log.image_without_sha256</comment>
+        <translation>图块的 &quot;image&quot; 与 &quot;sha256&quot; 必须同时出现：只有其一的行不是本程序写的</translation>
+    </message>
+    <message>
+        <source>must name a file in the run&apos;s folder (no folder, no &quot;..&quot;)</source>
+        <comment>file.log.bad_image_name</comment>
+        <translation>必须是运行文件夹中的文件名（不含文件夹，不含 &quot;..&quot;）</translation>
     </message>
 </context>
 <context>

@@ -1,6 +1,7 @@
 #include "widgets/camera/camera_panel.h"
 
 #include "device/client/instrument.h"
+#include "device/camera/tile_tiff.h"
 #include "widgets/camera/camera_session.h"
 #include "widgets/camera/live_view.h"
 #include "widgets/retranslator.h"
@@ -12,7 +13,6 @@
 #include <QEvent>
 #include <QFileInfo>
 #include <QHBoxLayout>
-#include <QImage>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPointer>
@@ -34,25 +34,17 @@ std::uint64_t nextSnapId()
     return ++next;
 }
 
-/// The frame as an image file, its own bit depth kept; "" or what went wrong.
-QString writeSnap(const dev::camera::Frame& f, const QString& path)
+/// What a snap is, for the TIFF's description: where the stage stood and which camera.
+dev::camera::TileMetadata snapMetadata(const QString& path, const dev::camera::CaptureRequest& request, bool positionKnown,
+                                       const QString& source)
 {
-    using dev::camera::PixelFormat;
-    const int bpp = dev::camera::bytesPerPixel(f.format);
-    if (f.isEmpty() || f.pixels.size() < std::size_t(f.width) * std::size_t(f.height) * std::size_t(bpp))
-        return CameraPanel::tr("the camera gave an empty image");
-    const QImage::Format format = f.format == PixelFormat::Grey16 ? QImage::Format_Grayscale16
-                                  : f.format == PixelFormat::Rgb8 ? QImage::Format_RGB888
-                                                                  : QImage::Format_Grayscale8;
-    const QImage image(f.pixels.data(), f.width, f.height, f.width * bpp, format);
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return file.errorString();
-    if (!image.save(&file, "PNG"))
-        return CameraPanel::tr("the PNG could not be written");
-    if (!file.commit())
-        return file.errorString();
-    return {};
+    dev::camera::TileMetadata meta;
+    meta.tile = -1;
+    meta.label = QFileInfo(path).fileName().toStdString();
+    if (positionKnown)
+        meta.measuredMm = {request.xMm, request.yMm};
+    meta.source = source.toStdString();
+    return meta;
 }
 
 std::optional<QPointF> positionOf(const dev::Instrument* stage)
@@ -92,7 +84,6 @@ CameraPanel::CameraPanel(CameraSession* session, dev::Instrument* stage, QWidget
     sourceRow->addWidget(m_open);
     v->addLayout(sourceRow);
 
-    auto* exposureRow = new QHBoxLayout;
     m_exposureLabel = new QLabel;
     m_exposure = new QDoubleSpinBox;
     m_exposure->setObjectName(QStringLiteral("cameraExposure"));
@@ -105,15 +96,15 @@ CameraPanel::CameraPanel(CameraSession* session, dev::Instrument* stage, QWidget
     m_snap->setShortcut(QKeySequence(kSnapKey));
     m_state = new QLabel;
     m_state->setObjectName(QStringLiteral("cameraState"));
-    m_state->setWordWrap(true);
-    exposureRow->addWidget(m_exposureLabel);
-    exposureRow->addWidget(m_exposure);
-    exposureRow->addWidget(m_snap);
-    exposureRow->addWidget(m_state, 1);
-    v->addLayout(exposureRow);
+    sourceRow->addWidget(m_state);
 
     m_view = new LiveView;
     m_view->setAutoContrast(m_session->autoContrast());
+    // Exposure and Snap share the view's row: every row less is picture on a small display.
+    m_view->bar()->insertWidget(0, m_exposureLabel);
+    m_view->bar()->insertWidget(1, m_exposure);
+    m_view->bar()->insertWidget(2, m_snap);
+    m_view->bar()->insertSpacing(3, 12);
     v->addWidget(m_view, 1);
 
     connect(m_refresh, &QPushButton::clicked, this, &CameraPanel::refreshSources);
@@ -131,9 +122,11 @@ CameraPanel::CameraPanel(CameraSession* session, dev::Instrument* stage, QWidget
     connect(m_snap, &QPushButton::clicked, this, [this] {
         if (!m_session->isOpen())
             return;
-        const QString path = m_chooser ? m_chooser(tr("Save the snapped image"), tr("PNG images (*.png)")) : QString();
-        if (!path.isEmpty())
-            snapTo(path.endsWith(QLatin1String(".png"), Qt::CaseInsensitive) ? path : path + QStringLiteral(".png"));
+        const QString path = m_chooser ? m_chooser(tr("Save the snapped image"), tr("TIFF images (*.tif *.tiff)")) : QString();
+        if (path.isEmpty())
+            return;
+        const bool tiff = path.endsWith(QLatin1String(".tif"), Qt::CaseInsensitive) || path.endsWith(QLatin1String(".tiff"), Qt::CaseInsensitive);
+        snapTo(tiff ? path : path + QStringLiteral(".tif"));
     });
     connect(m_session, &CameraSession::stateChanged, this, &CameraPanel::updateUi);
     connect(m_session, &CameraSession::liveFrame, m_view, &LiveView::showFrame);
@@ -202,6 +195,8 @@ bool CameraPanel::snapTo(const QString& path)
         request.yMm = at->y();
     }
     request.fileHint = path.toStdString();
+    m_snapRequest = request;
+    m_snapPositionKnown = positionOf(m_stage).has_value();
     updateUi();
     cam->capture(request);
     return true;
@@ -215,11 +210,14 @@ void CameraPanel::onCaptured(std::uint64_t id, const dev::camera::Frame& frame)
     updateUi();
     m_view->showFrame(frame);  // the snap is what the person looks at next
     const QString path = m_snapPath;
+    const dev::camera::TileMetadata meta = snapMetadata(path, m_snapRequest, m_snapPositionKnown, m_session->source());
     QPointer<CameraPanel> self(this);
     // Encoding a large image takes long enough to stutter the screen: a worker writes it.
-    QThreadPool::globalInstance()->start([self, frame, path] {
-        const QString error = writeSnap(frame, path);
-        QMetaObject::invokeMethod(qApp, [self, path, error] {
+    QThreadPool::globalInstance()->start([self, frame, path, meta] {
+        msg::Message problem;
+        const bool ok = dev::camera::writeTileTiff(path.toStdString(), frame, meta, nullptr, &problem);
+        QMetaObject::invokeMethod(qApp, [self, path, ok, problem] {
+            const QString error = ok ? QString() : words::text(problem);
             if (!self)
                 return;
             if (!error.isEmpty()) {
@@ -266,7 +264,7 @@ void CameraPanel::retranslateUi()
     m_exposure->setSuffix(tr(" ms"));
     m_exposure->setToolTip(tr("Exposure time, where the camera lets it be set"));
     m_snap->setText(tr("Snap"));
-    m_snap->setToolTip(tr("Take one image and save it as a PNG (16-bit grey stays 16-bit) (%1)")
+    m_snap->setToolTip(tr("Take one image and save it as a TIFF with the stage position in it (16-bit grey stays 16-bit) (%1)")
                            .arg(QKeySequence(kSnapKey).toString(QKeySequence::NativeText)));
     updateUi();
 }

@@ -3,7 +3,7 @@
 // open and close it, set the exposure, watch the live view with the stage's position,
 // and snap one image to a file. The Scan screen and the stage's Jog screen each have
 // one; both show the one camera of the CameraSession.
-#include "device/camera/frame.h"
+#include "device/camera/camera.h"
 
 #include <QWidget>
 
@@ -39,8 +39,9 @@ public:
     QString sourceText() const;
     /// Opens what the source field says (the Open button).
     void openTyped();
-    /// Takes one image with the camera and writes it to `path` (PNG; 16-bit grey stays
-    /// 16-bit), off the GUI thread; false when no camera is open or one snap is pending.
+    /// Takes one image with the camera and writes it to `path` (a TIFF as a scan's tiles are,
+    /// dev::camera::writeTileTiff: its own bit depth, the stage position in its description),
+    /// off the GUI thread; false when no camera is open or one snap is pending.
     bool snapTo(const QString& path);
     bool snapPending() const { return m_snapId != 0; }
 
@@ -76,6 +77,8 @@ private:
     std::uint64_t m_snapId = 0;
     QMetaObject::Connection m_snapCaptured, m_snapFailed;
     QString m_snapPath;
+    dev::camera::CaptureRequest m_snapRequest;
+    bool m_snapPositionKnown = false;
 };
 
 } // namespace ui

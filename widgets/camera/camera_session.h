@@ -72,7 +72,7 @@ private:
     std::unique_ptr<dev::camera::Camera> m_camera;
     QString m_source;
     QStringList m_recent;
-    double m_exposureMs = 20;
+    double m_exposureMs = 10;
     bool m_autoContrast = true;
     bool m_opening = false;
     bool m_inUse = false;

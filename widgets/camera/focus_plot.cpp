@@ -9,7 +9,6 @@ namespace ui {
 
 FocusPlot::FocusPlot(QWidget* parent) : QWidget(parent)
 {
-    setMinimumHeight(36);
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
 }
 
@@ -38,10 +37,16 @@ void FocusPlot::paintEvent(QPaintEvent*)
     if (m_values.size() < 2)
         return;
     // Scaled to the history's own range: what matters is where the peak is, not its value.
+    // A range under a tenth of the figure is noise, not focus: it is drawn as a tenth, centred.
     const auto [lo, hi] = std::minmax_element(m_values.begin(), m_values.end());
-    const double span = std::max(*hi - *lo, 1e-12);
+    const double least = std::max(0.1 * std::abs(*hi), 1e-12);
+    double base = *lo, span = *hi - *lo;
+    if (span < least) {
+        base = (*lo + *hi) / 2 - least / 2;
+        span = least;
+    }
     auto at = [&](int i) {
-        return QPointF(r.left() + r.width() * i / double(kHistory - 1), r.bottom() - r.height() * (m_values[i] - *lo) / span);
+        return QPointF(r.left() + r.width() * i / double(kHistory - 1), r.bottom() - r.height() * (m_values[i] - base) / span);
     };
     QPainterPath path(at(0));
     for (int i = 1; i < m_values.size(); ++i)

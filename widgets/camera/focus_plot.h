@@ -15,7 +15,7 @@ public:
     void add(double focus);
     void clear();
     const QVector<double>& history() const { return m_values; }
-    QSize sizeHint() const override { return {240, 44}; }
+    QSize sizeHint() const override { return {240, 32}; }
 
 protected:
     void paintEvent(QPaintEvent* event) override;

@@ -20,7 +20,7 @@ class LiveCanvas : public QWidget {
 public:
     explicit LiveCanvas(LiveView* view) : QWidget(view), m_view(view)
     {
-        setMinimumSize(240, 180);
+        setMinimumSize(160, 60);  // on a 768-pixel display under the Jog screen's axes; it takes any room left
         setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
         setAttribute(Qt::WA_OpaquePaintEvent);
     }
@@ -98,7 +98,7 @@ LiveView::LiveView(QWidget* parent) : QWidget(parent), m_processor(new LiveViewP
 {
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(0, 0, 0, 0);
-    auto* bar = new QHBoxLayout;
+    auto* bar = m_bar = new QHBoxLayout;
     m_pause = new QPushButton;
     m_pause->setObjectName(QStringLiteral("livePause"));
     m_pause->setCheckable(true);
@@ -166,16 +166,14 @@ void LiveView::setPaused(bool paused)
 
 void LiveView::setAutoContrast(bool on)
 {
-    auto o = m_processor->options();
-    if (o.autoContrast == on)
+    if (m_processor->autoContrast() == on)
         return;
-    o.autoContrast = on;
-    m_processor->setOptions(o);
+    m_processor->setAutoContrast(on);
     m_autoContrast->setChecked(on);
     emit autoContrastChanged(on);
 }
 
-bool LiveView::autoContrast() const { return m_processor->options().autoContrast; }
+bool LiveView::autoContrast() const { return m_processor->autoContrast(); }
 
 void LiveView::setFallbackPixelUm(double um)
 {
@@ -224,8 +222,8 @@ void LiveView::updateReadouts()
     m_focusLabel->setToolTip(tr("Variance of the Laplacian (× 10⁴) of a downscaled copy: higher is sharper. "
                                 "Turn the focus until it peaks."));
     m_levelsLabel->setText(tr("Levels %1–%2 of %3")
-                               .arg(m_shown.stretch.black, 0, 'f', 0)
-                               .arg(m_shown.stretch.white, 0, 'f', 0)
+                               .arg(m_shown.stretch.low)
+                               .arg(m_shown.stretch.high)
                                .arg((1 << std::clamp(m_shown.bitDepth, 1, 16)) - 1));
 }
 
@@ -234,7 +232,7 @@ void LiveView::retranslateUi()
     m_pause->setText(m_paused ? tr("Resume") : tr("Pause"));
     m_pause->setToolTip(tr("Hold the picture still, or take frames again"));
     m_autoContrast->setText(tr("Auto contrast"));
-    m_autoContrast->setToolTip(tr("Stretch the levels between the 0.5th and 99.5th percentiles; off, the full bit depth "
+    m_autoContrast->setToolTip(tr("Stretch the levels so the darkest and brightest 0.1 % of the pixels clip; off, the full bit depth "
                                   "maps black to white"));
     updateReadouts();
     m_canvas->update();

@@ -17,6 +17,7 @@
 #include <optional>
 
 class QCheckBox;
+class QHBoxLayout;
 class QLabel;
 class QPushButton;
 
@@ -59,6 +60,9 @@ public:
     /// Frames taken while on screen and not paused.
     std::uint64_t framesTaken() const { return m_taken; }
     QString overlayText() const;  ///< the position and frame lines as painted (for tests)
+    /// The row above the picture (Pause, Auto contrast, levels): a panel puts its own
+    /// controls at its start, so the picture keeps the height.
+    QHBoxLayout* bar() const { return m_bar; }
 
 signals:
     void pausedChanged(bool paused);
@@ -75,6 +79,7 @@ private:
     LiveViewProcessor* m_processor;
     LiveCanvas* m_canvas;
     FocusPlot* m_focusPlot;
+    QHBoxLayout* m_bar;
     QPushButton* m_pause;
     QCheckBox* m_autoContrast;
     QLabel* m_focusLabel;

@@ -30,10 +30,10 @@ void LiveViewProcessor::start(dev::camera::Frame frame)
 {
     m_busy = true;
     auto owned = std::make_shared<const dev::camera::Frame>(std::move(frame));
-    const dev::camera::DisplayOptions options = m_options;
+    const bool autoContrast = m_autoContrast;
     const QSize target = m_target;
-    m_pool.start([this, owned, options, target] {
-        ProcessedFrame result = process(*owned, options, target);
+    m_pool.start([this, owned, autoContrast, target] {
+        ProcessedFrame result = process(*owned, autoContrast, target);
         // Back on the GUI thread; dropped unseen if this object is gone by then.
         QMetaObject::invokeMethod(this, [this, result] { finish(result); }, Qt::QueuedConnection);
     });
@@ -51,7 +51,7 @@ void LiveViewProcessor::finish(const ProcessedFrame& result)
     emit ready(result);
 }
 
-ProcessedFrame LiveViewProcessor::process(const dev::camera::Frame& frame, const dev::camera::DisplayOptions& options, const QSize& target)
+ProcessedFrame LiveViewProcessor::process(const dev::camera::Frame& frame, bool autoContrast, const QSize& target)
 {
     ProcessedFrame out;
     out.frameSize = QSize(frame.width, frame.height);
@@ -59,17 +59,17 @@ ProcessedFrame LiveViewProcessor::process(const dev::camera::Frame& frame, const
     out.sequence = frame.sequence;
     out.colour = frame.format == dev::camera::PixelFormat::Rgb8;
     out.bitDepth = frame.format == dev::camera::PixelFormat::Grey16 ? frame.bitDepth : 8;
-    const dev::camera::DisplayImage shown = dev::camera::toDisplay(frame, options);
-    if (shown.isEmpty())
+    const int bpp = dev::camera::bytesPerPixel(frame.format);
+    if (frame.isEmpty() || frame.pixels.size() < std::size_t(frame.width) * std::size_t(frame.height) * std::size_t(bpp))
+        return out;  // a short buffer is not read past its end
+    const QImage shown = dev::camera::toDisplayImage(frame, autoContrast, &out.stretch);
+    if (shown.isNull())
         return out;
-    out.stretch = shown.stretch;
     out.focus = dev::camera::focusMeasure(frame);
-    const QImage wrapped(shown.pixels.data(), shown.width, shown.height, shown.width * shown.channels,
-                         shown.channels == 3 ? QImage::Format_RGB888 : QImage::Format_Grayscale8);
-    if (target.isValid() && !target.isEmpty() && (shown.width > target.width() || shown.height > target.height()))
-        out.image = wrapped.scaled(target, Qt::KeepAspectRatio, Qt::SmoothTransformation);
+    if (target.isValid() && !target.isEmpty() && (shown.width() > target.width() || shown.height() > target.height()))
+        out.image = shown.scaled(target, Qt::KeepAspectRatio, Qt::SmoothTransformation);
     else
-        out.image = wrapped.copy();  // the wrapped pixels go with `shown`
+        out.image = shown;
     return out;
 }
 

@@ -8,7 +8,7 @@
 // arrives while another waits replaces it (latest wins, counted as dropped), so a
 // camera faster than the processing never builds a queue and the picture shown is
 // never older than one frame behind.
-#include "device/camera/display.h"
+#include "device/camera/display_image.h"
 #include "device/camera/frame.h"
 
 #include <QImage>
@@ -27,7 +27,7 @@ struct ProcessedFrame {
     QSize frameSize;               ///< the frame's own size in pixels
     double pixelUm = 0;            ///< the frame's pixel at the sample; 0 when it does not say
     double focus = 0;              ///< dev::camera::focusMeasure of the frame
-    dev::camera::Stretch stretch;  ///< the levels shown black and white
+    dev::camera::DisplayStretch stretch;  ///< the levels shown black and white
     int bitDepth = 8;
     bool colour = false;
     std::uint64_t sequence = 0;
@@ -41,8 +41,10 @@ public:
 
     /// Processes `frame` now, or after the one in progress (replacing any that waits).
     void submit(const dev::camera::Frame& frame);
-    void setOptions(const dev::camera::DisplayOptions& options) { m_options = options; }
-    dev::camera::DisplayOptions options() const { return m_options; }
+    /// On: the levels are stretched between the darkest and brightest 0.1 % (dev::camera::toDisplayImage);
+    /// off: the frame's bit depth maps black to white.
+    void setAutoContrast(bool on) { m_autoContrast = on; }
+    bool autoContrast() const { return m_autoContrast; }
     /// The picture is scaled to fit this (an empty size: the frame's own size).
     void setTargetSize(const QSize& size) { m_target = size; }
 
@@ -52,7 +54,7 @@ public:
     std::uint64_t droppedCount() const { return m_dropped; }
 
     /// The work done on the worker thread, callable anywhere (tests, benchmarks).
-    static ProcessedFrame process(const dev::camera::Frame& frame, const dev::camera::DisplayOptions& options, const QSize& target);
+    static ProcessedFrame process(const dev::camera::Frame& frame, bool autoContrast, const QSize& target);
 
 signals:
     void ready(const ui::ProcessedFrame& frame);
@@ -62,7 +64,7 @@ private:
     void finish(const ProcessedFrame& result);
 
     QThreadPool m_pool;
-    dev::camera::DisplayOptions m_options;
+    bool m_autoContrast = true;
     QSize m_target;
     bool m_busy = false;
     std::optional<dev::camera::Frame> m_waiting;
