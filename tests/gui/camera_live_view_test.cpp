@@ -286,6 +286,7 @@ TEST_F(CameraScreens, TheScanAndJogScreensShowTheOneCamera)
     EXPECT_EQ(jogPanel->sourceText(), QStringLiteral("sim"));
     // The stage is homed on the simulator after a while; until then the view says it does not know.
     EXPECT_FALSE(jogPanel->liveView()->overlayText().isEmpty());
+    guitest::keepPicture(w.get(), QStringLiteral("camera-jog.png"));
 }
 
 TEST_F(CameraScreens, ARunAskedForImagesWithNoCameraOpenDoesNotStart)
