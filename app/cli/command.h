@@ -287,6 +287,7 @@ void addTuningCommands(std::vector<Command>& list);
 void addPatternCommands(std::vector<Command>& list);
 void addRecipeCommands(std::vector<Command>& list);
 void addScanCommands(std::vector<Command>& list);
+void addCameraCommands(std::vector<Command>& list);
 void addAccuracyCommands(std::vector<Command>& list);
 void addCompensationCommands(std::vector<Command>& list);
 void addCompletionCommand(std::vector<Command>& list);

@@ -14,6 +14,7 @@ const std::vector<Command>& commands()
         addPatternCommands(l);
         addRecipeCommands(l);
         addScanCommands(l);
+        addCameraCommands(l);
         addAccuracyCommands(l);
         addCompensationCommands(l);
         addCompletionCommand(l);  // last: it lists the others

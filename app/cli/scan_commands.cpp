@@ -5,8 +5,11 @@
 //   scan run   PLAN.json [--out DIR] on --sim stage or --port: runs the scan,
 //              continues a run stopped part-way, writes the exports with the
 //              measured positions. See docs/scan.md.
+#include "camera_cli.h"
 #include "cli_session.h"
 #include "command.h"
+
+#include "device/camera/scan_camera.h"
 
 #include "device/files/scan_exports.h"
 #include "device/files/scan_plan_file.h"
@@ -270,7 +273,18 @@ int scanRun(Invocation& inv)
         if (!s->waitUntilHomed(0b11))
             return inv.refused(tr("homing did not finish"));
     }
+    // With --camera the camera takes each tile; it is made before prepare(), which checks
+    // the images of a run it continues.
+    std::unique_ptr<dev::camera::Camera> camera;
+    std::unique_ptr<dev::camera::ScanCamera> scanCamera;
+    if (inv.isSet(QStringLiteral("camera"))) {
+        camera = cameraFor(inv, s, inv.value(QStringLiteral("camera")));
+        if (!camera)
+            return Usage;
+        scanCamera = std::make_unique<dev::camera::ScanCamera>(camera.get());
+    }
     ScanRunner runner(client);
+    runner.setCamera(scanCamera.get());
     jobs::ScanLaunch launch(&runner);
     using Kind = jobs::ScanDecision::Kind;
     const jobs::ScanDecision d = launch.prepare(plan, folder, inv.isSet(QStringLiteral("restart")));
@@ -305,13 +319,19 @@ int scanRun(Invocation& inv)
     QObject::connect(&runner, &ScanRunner::finished, [&](const QStringList& e) { exports = e; });
     QObject::connect(&runner, &ScanRunner::tileTaken, [&](int tile) {
         const auto& r = runner.records()[static_cast<std::size_t>(tile)];
-        if (inv.json())
-            inv.printJson(QJsonObject{{QStringLiteral("tile"), tile + 1},
-                                      {QStringLiteral("file"), QString::fromStdString(r.label)},
-                                      {QStringLiteral("planned_mm"), QJsonArray{r.plannedMm[0], r.plannedMm[1]}},
-                                      {QStringLiteral("measured_mm"), QJsonArray{r.measuredMm[0], r.measuredMm[1]}},
-                                      {QStringLiteral("device_time_us"), static_cast<qint64>(r.deviceTimeUs)}});
-        else
+        const auto& image = runner.image(tile);
+        if (inv.json()) {
+            QJsonObject o{{QStringLiteral("tile"), tile + 1},
+                          {QStringLiteral("file"), QString::fromStdString(r.label)},
+                          {QStringLiteral("planned_mm"), QJsonArray{r.plannedMm[0], r.plannedMm[1]}},
+                          {QStringLiteral("measured_mm"), QJsonArray{r.measuredMm[0], r.measuredMm[1]}},
+                          {QStringLiteral("device_time_us"), static_cast<qint64>(r.deviceTimeUs)}};
+            if (!image.file.empty()) {
+                o.insert(QStringLiteral("image"), QString::fromStdString(image.file));
+                o.insert(QStringLiteral("sha256"), QString::fromStdString(image.sha256));
+            }
+            inv.printJson(o);
+        } else
             out << tr("tile %1/%2 %3 at %4, %5 mm (%6 s to settle)\n")
                        .arg(tile + 1).arg(runner.totalTiles()).arg(QString::fromStdString(r.label))
                        .arg(r.measuredMm[0], 0, 'f', 4).arg(r.measuredMm[1], 0, 'f', 4).arg(r.settleS, 0, 'f', 3);
@@ -384,10 +404,13 @@ void addScanCommands(std::vector<Command>& list)
                    "positions.pos and scan.csv go to --out; a run stopped part-way continues at its next tile when run again."),
                 {option("out", "folder for the run log and the exports (default: PLAN-run)", "DIR"),
                  option("home", "home the stage first"), option("restart", "start over even if the folder holds a run (kept aside)"),
-                 option("yes", "run a scan that takes longer than a minute without asking")},
+                 option("yes", "run a scan that takes longer than a minute without asking"),
+                 option("camera", "take an image at every tile: sim, uvc[:NAME], command:CMD or folder:DIR (see camera list)", "SOURCE"),
+                 cameraOptions()[0], cameraOptions()[1]},
                 scanRun, {}};
     run.api.access = Access::Control;
-    run.api.params = {{QStringLiteral("plan"), ParamType::File, tr("the scan plan file"), true, {}, {}}, optionParam("out", ParamType::File)};
+    run.api.params = {{QStringLiteral("plan"), ParamType::File, tr("the scan plan file"), true, {}, {}}, optionParam("out", ParamType::File),
+                      optionParam("camera", ParamType::Text), optionParam("specimen", ParamType::Text), optionParam("camera-seed", ParamType::Number)};
     run.api.example = QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")}, {QStringLiteral("plan"), QStringLiteral("slide.scan.json")},
                                   {QStringLiteral("out"), QStringLiteral("slide-run")}};
     list.push_back({QStringLiteral("scan"), tr("stitching scans on the stage: plan, run"), {},

@@ -71,11 +71,18 @@ std::vector<float> noiseField(std::mt19937_64& rng, int size, int radius, int pa
     return img;
 }
 
-inline float bilinear(const float* t, int mask, int shift, double u, double v)
+/// Texel coordinates in 32.16 fixed point: a row walks them by adding a step, and the
+/// integer and fraction come out by a shift and a mask (no double-to-int per pixel).
+constexpr int kFixBits = 16;
+constexpr double kFixOne = 65536.0;
+constexpr float kFixInv = 1.0f / 65536.0f;
+
+inline std::int64_t toFix(double texels) { return static_cast<std::int64_t>(std::llround(texels * kFixOne)); }
+
+inline float bilinear(const float* t, int mask, int shift, std::int64_t u, std::int64_t v)
 {
-    const auto iu = static_cast<long long>(u), iv = static_cast<long long>(v);
-    const auto fu = static_cast<float>(u - static_cast<double>(iu)), fv = static_cast<float>(v - static_cast<double>(iv));
-    const int x0 = static_cast<int>(iu) & mask, y0 = static_cast<int>(iv) & mask;
+    const int x0 = static_cast<int>(u >> kFixBits) & mask, y0 = static_cast<int>(v >> kFixBits) & mask;
+    const float fu = static_cast<float>(u & 0xFFFF) * kFixInv, fv = static_cast<float>(v & 0xFFFF) * kFixInv;
     const int x1 = (x0 + 1) & mask, y1 = (y0 + 1) & mask;
     const float* r0 = t + (static_cast<std::ptrdiff_t>(y0) << shift);
     const float* r1 = t + (static_cast<std::ptrdiff_t>(y1) << shift);
@@ -154,11 +161,11 @@ void Specimen::buildSlide()
     const double sigmaTexels = m_blurUm / kFineTexelUm;
     const int r = static_cast<int>(std::lround(std::max(0.0, (-1 + std::sqrt(1 + 4 * sigmaTexels * sigmaTexels)) / 2)));
     boxBlurWrap(m_fine, kFineSize, r, 3);
-    // Patches: where the tissue is dense or loose, 0.25 … 1.
+    // Patches: where the tissue is dense or loose, 0.45 … 1 (loose tissue still has texture).
     m_coarse = noiseField(rng, kCoarseSize, 6, 3);
     for (float& v : m_coarse) {
         const float t = std::clamp((v - 0.3f) / 0.4f, 0.0f, 1.0f);
-        v = 0.25f + 0.75f * t * t * (3 - 2 * t);
+        v = 0.45f + 0.55f * t * t * (3 - 2 * t);
     }
 }
 
@@ -184,12 +191,12 @@ void Specimen::slideRow(float* out, int n, double x0, double y0, double dx, doub
     const double c = std::cos(kSecondLayerTurnDeg * M_PI / 180) * kSecondLayerScale * kPerMmFine;
     const double s = std::sin(kSecondLayerTurnDeg * M_PI / 180) * kSecondLayerScale * kPerMmFine;
     // Texel coordinates walk linearly along the row: start and step for each look-up.
-    double u1 = x0 * kPerMmFine + kTexelBias, v1 = y0 * kPerMmFine + kTexelBias;
-    const double du1 = dx * kPerMmFine, dv1 = dy * kPerMmFine;
-    double u2 = c * x0 - s * y0 + kTexelBias + 311.0, v2 = s * x0 + c * y0 + kTexelBias + 577.0;
-    const double du2 = c * dx - s * dy, dv2 = s * dx + c * dy;
-    double uc = x0 * kPerMmCoarse + kTexelBias, vc = y0 * kPerMmCoarse + kTexelBias;
-    const double duc = dx * kPerMmCoarse, dvc = dy * kPerMmCoarse;
+    std::int64_t u1 = toFix(x0 * kPerMmFine + kTexelBias), v1 = toFix(y0 * kPerMmFine + kTexelBias);
+    const std::int64_t du1 = toFix(dx * kPerMmFine), dv1 = toFix(dy * kPerMmFine);
+    std::int64_t u2 = toFix(c * x0 - s * y0 + kTexelBias + 311.0), v2 = toFix(s * x0 + c * y0 + kTexelBias + 577.0);
+    const std::int64_t du2 = toFix(c * dx - s * dy), dv2 = toFix(s * dx + c * dy);
+    std::int64_t uc = toFix(x0 * kPerMmCoarse + kTexelBias), vc = toFix(y0 * kPerMmCoarse + kTexelBias);
+    const std::int64_t duc = toFix(dx * kPerMmCoarse), dvc = toFix(dy * kPerMmCoarse);
     // The bare glass: only rows that come near the disc pay for the distance.
     const double x1 = x0 + dx * n, y1 = y0 + dy * n;
     const double near = kSlideGlassRadiusMm + std::hypot(dx, dy) * n + 0.1;

@@ -170,6 +170,8 @@ bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& fold
     m_folder = folder;
     m_layout = motion::scan::layoutScan(plan);
     m_records = scanfile::plannedRecords(plan, m_layout);
+    m_images.assign(m_layout.tiles.size(), {});
+    m_finishWhenWritten = false;
     m_taken.assign(m_layout.tiles.size(), 0);
     m_takenCount = 0;
     m_phase = Phase::None;
@@ -182,6 +184,7 @@ bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& fold
         return false;
     m_stageModel = stageModelOf(m_client->identity(), m_client->softLimits());
     m_estimate = motion::scan::estimateScan(m_plan, m_layout, m_stageModel);
+    addCameraTimeToEstimate();
     m_prepared = true;
     refreshCompensation();
     reason = Refusal::None;
@@ -225,25 +228,46 @@ bool ScanRunner::adoptRunLog(std::uint64_t fingerprint, bool restart, bool* fres
 
 bool ScanRunner::continueFromLog(const scanfile::RunLog& log, std::uint64_t fingerprint, msg::Message* error)
 {
-    for (const auto& r : log.records) {
+    // The last line of a tile counts (a tile is logged once; a log edited by hand may not be).
+    std::vector<int> lastLine(m_records.size(), -1);
+    for (std::size_t i = 0; i < log.records.size(); ++i) {
+        const auto k = static_cast<std::size_t>(log.records[i].target);
+        if (k < m_records.size())
+            lastLine[k] = static_cast<int>(i);
+    }
+    bool dropped = false;  // a line the log keeps no longer: its tile is taken again
+    std::vector<std::size_t> kept;
+    for (std::size_t i = 0; i < log.records.size(); ++i) {
+        const auto& r = log.records[i];
         const auto k = static_cast<std::size_t>(r.target);
-        if (k >= m_records.size())
+        if (k >= m_records.size() || lastLine[k] != static_cast<int>(i)) {
+            dropped = true;
             continue;
+        }
+        const scanfile::TileImageRef image = i < log.images.size() ? log.images[i] : scanfile::TileImageRef{};
+        // With a camera, a tile is taken when its image is there, whole and the one logged.
+        if (m_camera && !imageIntact(image)) {
+            dropped = true;
+            continue;
+        }
+        kept.push_back(i);
         m_records[k].measuredMm = r.measuredMm;
         m_records[k].deviceTimeUs = r.deviceTimeUs;
         m_records[k].settleS = r.settleS;
+        m_images[k] = image;
         if (!m_taken[k]) {
             m_taken[k] = 1;
             ++m_takenCount;
         }
     }
-    if (!log.tornTail)
+    if (!log.tornTail && !dropped)
         return true;
-    // A line torn by a crash would sit in front of the next one: write the
-    // log out again without it (atomically, so this cannot lose it either).
+    // A line torn by a crash would sit in front of the next one, and a tile taken again
+    // must not be logged twice: write the log out again with the lines that stand
+    // (atomically, so this cannot lose them either).
     std::string clean = scanfile::runLogHeader(m_plan.name, fingerprint, totalTiles());
-    for (const auto& r : log.records)
-        clean += scanfile::runLogLine(r);
+    for (std::size_t i : kept)
+        clean += scanfile::runLogLine(log.records[i], i < log.images.size() ? log.images[i] : scanfile::TileImageRef{});
     return files::writeAtomically(logPath(), clean, error);
 }
 
@@ -317,6 +341,8 @@ bool ScanRunner::start(msg::Message* error)
         *error = blockers.front();
         return false;
     }
+    if (m_camera && !m_camera->begin(m_plan, m_folder.toStdString(), error))
+        return false;
     if (!openLog(error))
         return false;
     m_pathIndex = waypointToResumeAt();
@@ -429,16 +455,23 @@ void ScanRunner::nextWaypoint()
     }
     if (m_state != State::Running)
         return;
+    // A resumed run may have holes (tiles whose images were taken again): tiles already
+    // taken are passed over, with the overtravel points that lead to them.
+    while (m_pathIndex < static_cast<int>(m_layout.path.size())) {
+        const int tile = currentTile();
+        if (tile < 0 || !m_taken[static_cast<std::size_t>(tile)])
+            break;
+        while (m_pathIndex < static_cast<int>(m_layout.path.size()) && m_layout.path[static_cast<std::size_t>(m_pathIndex)].tile != tile)
+            ++m_pathIndex;
+        ++m_pathIndex;
+    }
     if (m_pathIndex >= static_cast<int>(m_layout.path.size())) {
         m_phase = Phase::None;
-        m_log.close();
-        QStringList written;
-        msg::Message error;
-        if (!writeExports(&written, &error))
-            emit problem(msg::make("scan.run.exports_failed", {msg::nested("cause", error)}));
-        setState(State::Finished);
-        emit progress(m_takenCount, totalTiles(), 0);
-        emit finished(written);
+        if (m_camera && m_camera->pendingWrites() > 0) {
+            m_finishWhenWritten = true;  // the last images are still being written
+            return;
+        }
+        finishRun();
         return;
     }
     m_onExtra = m_extraApproach.has_value();
@@ -458,6 +491,19 @@ void ScanRunner::nextWaypoint()
         if (self)
             self->onMoveAccepted(e);
     });
+}
+
+void ScanRunner::finishRun()
+{
+    m_finishWhenWritten = false;
+    m_log.close();
+    QStringList written;
+    msg::Message error;
+    if (!writeExports(&written, &error))
+        emit problem(msg::make("scan.run.exports_failed", {msg::nested("cause", error)}));
+    setState(State::Finished);
+    emit progress(m_takenCount, totalTiles(), 0);
+    emit finished(written);
 }
 
 void ScanRunner::onMoveAccepted(const std::optional<dev::RequestError>& error)
@@ -581,6 +627,10 @@ void ScanRunner::checkSettled(const std::vector<double>& measuredMm, quint64 dev
     // its rising edge starts an edge-triggered camera, its length times a level-triggered one.
     if (m_client->can(dev::Capability::TriggerOutput))
         m_client->pulseTrigger(m_plan.exposureS);
+    if (m_camera) {
+        takeWithCamera(tile);
+        return;
+    }
     m_exposure.start(static_cast<int>(std::lround(m_plan.exposureS * kScanMsPerS)));
 }
 
@@ -616,6 +666,8 @@ void ScanRunner::stopWith(const msg::Message& message, bool stopStage)
 {
     m_exposure.stop();
     m_settleTimeout.stop();
+    m_cameraTimeout.stop();
+    m_finishWhenWritten = false;
     m_phase = Phase::None;
     m_extraApproach.reset();
     m_onExtra = false;

@@ -7,11 +7,19 @@
 // A run that stopped for any reason (abort, E-stop, a refused move, a lost link,
 // a crash of the program) continues from its run log at the next tile.
 //
+// With a camera (setCamera), the tile is taken by the camera instead of a dwell: the next
+// frame started after the settle; the stage moves on once the exposure is over, while the
+// image is written; the tile's run-log line (with "image" and "sha256") is appended when
+// the file is whole. A resumed run takes again a tile whose image is missing or does not
+// match its checksum.
+//
 // It needs no protocol of its own: a move, the MotionDone event and a status reading
 // (grating positions with the device's clock) carry everything (docs/scan.md), so it
 // runs on any dev::Instrument. Estimates use the limits the device reported
 // (jobs::stageModelOf).
 #include "device/client/instrument.h"
+#include "device/files/scan_run_log.h"
+#include "device/jobs/scan_tile_camera.h"
 #include "motion/plans/scan/scan_estimate.h"
 #include "motion/records/position_record.h"
 
@@ -22,10 +30,6 @@
 
 #include <optional>
 #include <vector>
-
-namespace scanfile {
-struct RunLog;
-}
 
 namespace jobs {
 
@@ -57,6 +61,13 @@ public:
     /// `restart`, which keeps it under another name and starts afresh.
     bool prepare(const motion::scan::ScanPlan& plan, const QString& folder, bool restart, msg::Message* error,
                  Refusal* why = nullptr);
+
+    /// The camera that takes each tile (nullptr: none, the plan's exposure is a dwell).
+    /// Set it before prepare(): resuming checks the images, and the estimate counts it.
+    void setCamera(ScanTileCamera* camera);
+    ScanTileCamera* camera() const { return m_camera; }
+    /// The tile's image as the run log has it (empty file: none).
+    const scanfile::TileImageRef& image(int tile) const { return m_images.at(static_cast<std::size_t>(tile)); }
 
     /// What keeps the prepared run from starting now, one message each (scan.run.*); empty = ready.
     std::vector<msg::Message> preflight() const;
@@ -114,6 +125,15 @@ private:
     void requestStatus();
     void checkSettled(const std::vector<double>& measuredMm, quint64 deviceTimeUs);
     void onExposureEnd();
+    /// The camera's side of a tile (scan_runner_camera.cpp).
+    void takeWithCamera(int tile);
+    void onCameraExposed(int tile);
+    void onImageWritten(int tile, const jobs::TileImage& image);
+    void onCameraFailed(int tile, const msg::Message& reason);
+    /// A tile of the log whose image is missing, cut short or not the one logged.
+    bool imageIntact(const scanfile::TileImageRef& image) const;
+    void addCameraTimeToEstimate();
+    void finishRun();
     void stopWith(const msg::Message& message, bool stopStage);
     /// A plan that runs with the stage's own compensation: reads whether X and Y have it
     /// enabled (again whenever the device says it changed), for preflight().
@@ -156,6 +176,11 @@ private:
     quint64 m_triggerUs = 0;
     double m_lastOffUm[2] = {0, 0};      ///< how far from the target the last status read, for messages
     QTimer m_exposure, m_settleTimeout;
+    QPointer<ScanTileCamera> m_camera;
+    QList<QMetaObject::Connection> m_cameraConnections;
+    std::vector<scanfile::TileImageRef> m_images;  ///< per tile, as logged
+    QTimer m_cameraTimeout;               ///< a camera that never ends the exposure stops the run
+    bool m_finishWhenWritten = false;     ///< every tile exposed; finishing waits for the last images
     int m_sessionFirstTaken = 0;         ///< tiles taken when this start or resume began
     int m_sessionFirstTile = -1;         ///< the first tile this session took, or −1
     double m_leadInS = 0;                ///< estimated move from where the stage stood to the session's first waypoint

@@ -2529,6 +2529,92 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>  判定：始终未静止：仍有 ±%1 %2、周期 %3 s 的极限环
 </translation>
     </message>
+    <message>
+        <source>the simulated camera on the in-process simulator&apos;s stage (--sim stage)</source>
+        <translation>进程内模拟器载物台上的模拟相机（--sim stage）</translation>
+    </message>
+    <message>
+        <source>the simulated camera benchpilot-sim serves on a socket (--camera-socket)</source>
+        <translation>benchpilot-sim 在套接字上提供的模拟相机（--camera-socket）</translation>
+    </message>
+    <message>
+        <source>a USB camera through Qt Multimedia</source>
+        <translation>经 Qt Multimedia 的 USB 相机</translation>
+    </message>
+    <message>
+        <source>your capture program, run for each image with {file} {tile} {x_mm} {y_mm}</source>
+        <translation>您自己的采集程序，每张图像运行一次，填入 {file} {tile} {x_mm} {y_mm}</translation>
+    </message>
+    <message>
+        <source>the next complete new image a camera&apos;s own software saves in DIR</source>
+        <translation>相机自带软件在 DIR 中保存的下一张完整新图像</translation>
+    </message>
+    <message>
+        <source> (not in this build yet)</source>
+        <translation>（本版本尚未提供）</translation>
+    </message>
+    <message>
+        <source>Simulated specimens (--specimen): %1
+</source>
+        <translation>模拟样品（--specimen）：%1
+</translation>
+    </message>
+    <message>
+        <source>needs --camera SOURCE (sim, uvc[:NAME], command:CMD or folder:DIR; see camera list)</source>
+        <translation>需要 --camera SOURCE（sim、uvc[:NAME]、command:CMD 或 folder:DIR；见 camera list）</translation>
+    </message>
+    <message>
+        <source>needs --out FILE.tif</source>
+        <translation>需要 --out FILE.tif</translation>
+    </message>
+    <message>
+        <source>--out &apos;%1&apos;: the image is a TIFF, give a name ending in .tif</source>
+        <translation>--out &apos;%1&apos;：图像是 TIFF 文件，请给出以 .tif 结尾的文件名</translation>
+    </message>
+    <message>
+        <source>--exposure-ms must be above 0 and at most 60000</source>
+        <translation>--exposure-ms 必须大于 0 且不超过 60000</translation>
+    </message>
+    <message>
+        <source>the camera %1 gave no image within %2 s</source>
+        <translation>相机 %1 在 %2 秒内没有给出图像</translation>
+    </message>
+    <message>
+        <source>wrote %1: %2 × %3 px, %4-bit, %5 ms</source>
+        <translation>已写入 %1：%2 × %3 像素，%4 位，%5 毫秒</translation>
+    </message>
+    <message>
+        <source>, at %1, %2 mm</source>
+        <translation>，位置 %1, %2 mm</translation>
+    </message>
+    <message>
+        <source>--specimen &apos;%1&apos; is not one of slide, grid-plate, line-scales</source>
+        <translation>--specimen &apos;%1&apos; 不是 slide、grid-plate、line-scales 之一</translation>
+    </message>
+    <message>
+        <source>--camera-seed must be a whole number from 0</source>
+        <translation>--camera-seed 必须是不小于 0 的整数</translation>
+    </message>
+    <message>
+        <source>the cameras BenchPilot can take images from, and the simulated specimens</source>
+        <translation>BenchPilot 可以从中获取图像的相机，以及模拟样品</translation>
+    </message>
+    <message>
+        <source>take one image and write it as a TIFF with where the stage stood</source>
+        <translation>拍摄一张图像，连同载物台所在位置写成 TIFF 文件</translation>
+    </message>
+    <message>
+        <source>With --sim stage and --camera sim the simulated camera renders the specimen at the stage&apos;s true position (see docs/camera.md).</source>
+        <translation>使用 --sim stage 和 --camera sim 时，模拟相机按载物台的真实位置渲染样品（见 docs/camera.md）。</translation>
+    </message>
+    <message>
+        <source>cameras: list the sources, take an image</source>
+        <translation>相机：列出图像来源，拍摄图像</translation>
+    </message>
+    <message>
+        <source>See docs/camera.md for the sources, the image files and the simulated specimens.</source>
+        <translation>图像来源、图像文件和模拟样品见 docs/camera.md。</translation>
+    </message>
 </context>
 <context>
     <name>cli::CliSession</name>
@@ -9335,6 +9421,74 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
+    <name>words::CameraWords</name>
+    <message>
+        <source>no camera is chosen</source>
+        <comment>camera.none</comment>
+        <translation>未选择相机</translation>
+    </message>
+    <message>
+        <source>the camera %1 is not open</source>
+        <comment>camera.not_open</comment>
+        <translation>相机 %1 未打开</translation>
+    </message>
+    <message>
+        <source>the camera %1 was closed while it took an image</source>
+        <comment>camera.closed_during_capture</comment>
+        <translation>相机 %1 在拍摄图像时被关闭</translation>
+    </message>
+    <message>
+        <source>the simulated camera has no simulated stage to look at (is the simulator connected?)</source>
+        <comment>camera.sim.no_stage</comment>
+        <translation>模拟相机没有可观察的模拟载物台（模拟器已连接吗？）</translation>
+    </message>
+    <message>
+        <source>the simulated camera &apos;sim&apos; looks at the in-process simulator&apos;s stage: use it with --sim stage (benchpilot-sim&apos;s camera is sim:PATH)</source>
+        <comment>camera.sim.needs_simulator</comment>
+        <translation>模拟相机 &apos;sim&apos; 观察的是进程内模拟器的载物台：请与 --sim stage 一起使用（benchpilot-sim 的相机是 sim:PATH）</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a camera: give sim, sim:PATH, uvc[:NAME], command:CMD or folder:DIR</source>
+        <comment>camera.source.unknown</comment>
+        <translation>&apos;%1&apos; 不是相机：请给出 sim、sim:PATH、uvc[:NAME]、command:CMD 或 folder:DIR</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: %2: needs what follows the colon (%2:…)</source>
+        <comment>camera.source.needs_argument</comment>
+        <translation>&apos;%1&apos;：%2：冒号后面需要内容（%2:…）</translation>
+    </message>
+    <message>
+        <source>the camera source &apos;%1&apos; is not in this build of BenchPilot yet; &apos;camera list&apos; shows what is</source>
+        <comment>camera.source.not_available</comment>
+        <translation>本版本的 BenchPilot 尚未提供相机来源 &apos;%1&apos;；&apos;camera list&apos; 列出可用的来源</translation>
+    </message>
+    <message>
+        <source>the camera %1 gives images of %2 × %3 px, but the plan&apos;s camera has %4 × %5 px: correct the plan&apos;s sensor (or the camera&apos;s resolution), or every tile lands in the wrong place</source>
+        <comment>camera.sensor_mismatch</comment>
+        <translation>相机 %1 给出的图像为 %2 × %3 像素，而计划中的相机为 %4 × %5 像素：请更正计划的传感器（或相机的分辨率），否则每个图块都会放错位置</translation>
+    </message>
+    <message>
+        <source>cannot write the image %1: %2</source>
+        <comment>camera.tiff.cannot_write</comment>
+        <translation>无法写入图像 %1：%2</translation>
+    </message>
+    <message>
+        <source>cannot read the image %1: %2</source>
+        <comment>camera.tiff.cannot_read</comment>
+        <translation>无法读取图像 %1：%2</translation>
+    </message>
+    <message>
+        <source>the image %1 is %2 a pixel; BenchPilot reads 8- or 16-bit grey and 8-bit RGB</source>
+        <comment>camera.tiff.unsupported</comment>
+        <translation>图像 %1 每像素为 %2；BenchPilot 读取 8 位或 16 位灰度以及 8 位 RGB</translation>
+    </message>
+    <message>
+        <source>the camera gave an empty image; nothing was written to %1</source>
+        <comment>camera.tiff.empty_frame</comment>
+        <translation>相机给出了空图像；未向 %1 写入任何内容</translation>
+    </message>
+</context>
+<context>
     <name>words::CapabilityWords</name>
     <message>
         <source>homing switches</source>
@@ -10764,6 +10918,7 @@ A loop this different may oscillate or run away. Apply them?</source>
         <source>a tile&apos;s &quot;image&quot; and &quot;sha256&quot; come together: one without the other is not a line this program wrote</source>
         <comment>file.log.image_without_sha256</comment>
         <translation>图块的 &quot;image&quot; 与 &quot;sha256&quot; 必须同时出现：只有其一的行不是本程序写的</translation>
+        <translation>图块的 &quot;image&quot; 和 &quot;sha256&quot; 成对出现：缺少其中之一的行不是本程序写的</translation>
     </message>
     <message>
         <source>must name a file in the run&apos;s folder (no folder, no &quot;..&quot;)</source>
@@ -12875,6 +13030,16 @@ A loop this different may oscillate or run away. Apply them?</source>
         <source>The plan runs with the stage&apos;s own compensation, but it is not enabled on %1: enable it (Calibration screen, or compensation enable --axis %1), or run without it.</source>
         <comment>scan.run.compensation_not_enabled</comment>
         <translation>本方案依赖载物台自身的误差补偿，但 %1 轴未启用补偿：请启用（在“校准”界面，或 compensation enable --axis %1），或不使用补偿运行。</translation>
+    </message>
+    <message>
+        <source>The camera could not take %1: %2 The run is stopped; every tile taken before it is kept. Resume takes this tile again.</source>
+        <comment>scan.run.camera_failed</comment>
+        <translation>相机无法拍摄%1：%2 运行已停止；之前拍摄的每个图块都已保留。继续运行时会重拍此图块。</translation>
+    </message>
+    <message>
+        <source>the camera %1 gave no image within %2 after the exposure</source>
+        <comment>scan.run.camera_silent</comment>
+        <translation>相机 %1 在曝光结束后 %2 内没有给出图像</translation>
     </message>
 </context>
 <context>

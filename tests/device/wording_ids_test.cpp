@@ -25,6 +25,10 @@ const QSet<QString> kNotIds = {
     QStringLiteral("pattern.value_above"),  // an example in message.h's comment
     QStringLiteral("direction.circle"),     // a field path of the accuracy files
     QStringLiteral("scan.csv"),             // a file name
+    // The scan plan's camera fields (paths in a plan file, not message ids).
+    QStringLiteral("camera.field_mm"), QStringLiteral("camera.magnification"), QStringLiteral("camera.overlap"),
+    QStringLiteral("camera.pixel_um"), QStringLiteral("camera.rotation_deg"), QStringLiteral("camera.sensor_pixel_um"),
+    QStringLiteral("camera.sensor_px"),
     QStringLiteral("link.state."),          // the prefix linkStateKey() strips
     // API method names the CLI's command table spells out (app/cli, docs/api.md).
     QStringLiteral("device.move"), QStringLiteral("recipe.run"), QStringLiteral("tuning.gains"),
@@ -35,7 +39,7 @@ QStringList idLiterals()
 {
     static const QRegularExpression id(QStringLiteral(
         "(?<!api\\()\"((?:pattern|plate|recipe|scan|profile|tuning|file|request|link|device|telemetry|path|json|segment|grbl|accuracy|"
-        "compensation|direction|rotation|capability|instrument|log|gauge)\\.[a-z0-9_.\\-]+)\""));
+        "compensation|direction|rotation|capability|instrument|log|gauge|camera)\\.[a-z0-9_.\\-]+)\""));
     QSet<QString> found;
     for (const char* dir : {"motion", "device", "widgets", "app"}) {
         QDirIterator it(QStringLiteral(BP_SOURCE_DIR "/%1").arg(QLatin1String(dir)), {QStringLiteral("*.cpp"), QStringLiteral("*.h")},

@@ -21,6 +21,7 @@ QString plate(const msg::Message& m);       ///< "plate."
 QString profile(const msg::Message& m);     ///< "profile."
 QString recipe(const msg::Message& m);      ///< "recipe."
 QString scan(const msg::Message& m);        ///< "scan."
+QString camera(const msg::Message& m);      ///< "camera."
 QString tuning(const msg::Message& m);      ///< "tuning."
 QString gauge(const msg::Message& m);       ///< "gauge." (accuracy_bench_words.cpp)
 

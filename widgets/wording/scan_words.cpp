@@ -65,6 +65,8 @@ const Row kRows[] = {
     {"scan.run.aborted", QT_TRANSLATE_NOOP3("words::ScanWords", "Aborted at %1. The tiles taken so far are kept; Resume continues at that tile.", "scan.run.aborted"), "tile"},
     {"scan.run.exports_failed", QT_TRANSLATE_NOOP3("words::ScanWords", "Every tile is taken, but the exports could not be written: %1", "scan.run.exports_failed"), "cause"},
     {"scan.run.move_refused", QT_TRANSLATE_NOOP3("words::ScanWords", "The stage refused the move to %1: %2", "scan.run.move_refused"), "tile,cause"},
+    {"scan.run.camera_failed", QT_TRANSLATE_NOOP3("words::ScanWords", "The camera could not take %1: %2 The run is stopped; every tile taken before it is kept. Resume takes this tile again.", "scan.run.camera_failed"), "tile,cause"},
+    {"scan.run.camera_silent", QT_TRANSLATE_NOOP3("words::ScanWords", "the camera %1 gave no image within %2 after the exposure", "scan.run.camera_silent"), "camera,seconds"},
     {"scan.run.estop", QT_TRANSLATE_NOOP3("words::ScanWords", "E-stop at %1: the run is stopped. Reset the E-stop and Resume to continue at that tile.", "scan.run.estop"), "tile"},
     {"scan.run.stage_event", QT_TRANSLATE_NOOP3("words::ScanWords", "The stage reported \"%1\" (%2) at %3: the run is stopped. Resume continues at that tile.", "scan.run.stage_event"), "event,detail,tile"},
     {"scan.run.log_failed", QT_TRANSLATE_NOOP3("words::ScanWords", "%1 The run is stopped so that no tile goes unrecorded.", "scan.run.log_failed"), "cause"},

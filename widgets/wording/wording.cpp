@@ -35,6 +35,7 @@ const std::pair<const char*, SentenceFn> kSentences[] = {
     {"profile.", &areas::profile},
     {"recipe.", &areas::recipe},
     {"scan.", &areas::scan},
+    {"camera.", &areas::camera},
     {"tuning.", &areas::tuning},
     {"gauge.", &areas::gauge},
 };

@@ -1,0 +1,21 @@
+#pragma once
+// The camera a command was given (--camera SOURCE, with --specimen and --camera-seed for the
+// simulated one), made for benchpilot-cli's session: the simulated camera reads the
+// in-process simulator's true work point (--sim stage).
+#include "command.h"
+
+#include "device/camera/camera.h"
+
+#include <memory>
+
+namespace cli {
+
+class CliSession;
+
+/// nullptr after a usage message naming what was wrong with --camera.
+std::unique_ptr<dev::camera::Camera> cameraFor(Invocation& inv, CliSession* session, const QString& source);
+
+/// The options that go with --camera (specimen, seed), for a command's option list.
+QList<QCommandLineOption> cameraOptions();
+
+} // namespace cli

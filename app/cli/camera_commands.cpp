@@ -1,0 +1,197 @@
+// benchpilot-cli's camera commands:
+//   camera list              the sources this build can take, and the simulated specimens;
+//   camera snap --camera SOURCE --out FILE.tif [--exposure-ms N]
+//                            one image, with where the stage stood, as a tile TIFF.
+// See docs/camera.md.
+#include "camera_cli.h"
+#include "cli_session.h"
+
+#include "device/camera/camera_source.h"
+#include "device/camera/tile_tiff.h"
+#include "device/link/simulated_link.h"
+#include "widgets/wording/wording.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonObject>
+
+#include <cmath>
+
+namespace cli {
+namespace {
+
+namespace cam = dev::camera;
+
+QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+
+/// Longest wait for a frame beyond its exposure: a simulated 2048² frame takes tens of ms.
+constexpr int kSnapGraceMs = 30000;
+
+QString problemText(const msg::Message& m) { return words::text(m); }
+
+int cameraList(Invocation& inv)
+{
+    QJsonArray sources;
+    auto add = [&](const QString& source, const QString& what, bool available) {
+        sources.append(QJsonObject{{QStringLiteral("source"), source}, {QStringLiteral("description"), what},
+                                   {QStringLiteral("available"), available}});
+    };
+    add(QStringLiteral("sim"), tr("the simulated camera on the in-process simulator's stage (--sim stage)"), true);
+    add(QStringLiteral("sim:PATH"), tr("the simulated camera benchpilot-sim serves on a socket (--camera-socket)"), false);
+    add(QStringLiteral("uvc[:NAME]"), tr("a USB camera through Qt Multimedia"), false);
+    add(QStringLiteral("command:CMD"), tr("your capture program, run for each image with {file} {tile} {x_mm} {y_mm}"), false);
+    add(QStringLiteral("folder:DIR"), tr("the next complete new image a camera's own software saves in DIR"), false);
+    QJsonArray specimens;
+    for (const std::string& s : cam::specimenNames())
+        specimens.append(QString::fromStdString(s));
+    if (inv.json()) {
+        inv.printJson(QJsonObject{{QStringLiteral("sources"), sources}, {QStringLiteral("specimens"), specimens}});
+        return Ok;
+    }
+    QTextStream& out = inv.out();
+    for (const auto& v : sources) {
+        const QJsonObject o = v.toObject();
+        out << o.value(QStringLiteral("source")).toString().leftJustified(14) << ' ' << o.value(QStringLiteral("description")).toString()
+            << (o.value(QStringLiteral("available")).toBool() ? QString() : tr(" (not in this build yet)")) << '\n';
+    }
+    out << tr("Simulated specimens (--specimen): %1\n").arg(QStringLiteral("slide, grid-plate, line-scales"));
+    out.flush();
+    return Ok;
+}
+
+int cameraSnap(Invocation& inv)
+{
+    if (!inv.isSet(QStringLiteral("camera")))
+        return inv.usage(tr("needs --camera SOURCE (sim, uvc[:NAME], command:CMD or folder:DIR; see camera list)"));
+    if (!inv.isSet(QStringLiteral("out")))
+        return inv.usage(tr("needs --out FILE.tif"));
+    const QString file = inv.path(inv.value(QStringLiteral("out")));
+    if (!file.endsWith(QLatin1String(".tif")) && !file.endsWith(QLatin1String(".tiff")))
+        return inv.usage(tr("--out '%1': the image is a TIFF, give a name ending in .tif").arg(file));
+    double exposureMs = 0;
+    if (!inv.number(QStringLiteral("exposure-ms"), exposureMs, 10.0))
+        return Usage;
+    if (!(exposureMs > 0 && exposureMs <= 60000))
+        return inv.usage(tr("--exposure-ms must be above 0 and at most 60000"));
+    CliSession* s = inv.session();
+    if (!s)
+        return LinkTrouble;
+    std::unique_ptr<cam::Camera> camera = cameraFor(inv, s, inv.value(QStringLiteral("camera")));
+    if (!camera)
+        return Usage;
+    camera->open();
+    if (camera->capabilities().exposure)
+        camera->setExposureMs(exposureMs);
+    std::optional<cam::Frame> frame;
+    std::optional<msg::Message> failure;
+    QObject::connect(camera.get(), &cam::Camera::captured, [&](std::uint64_t, const cam::Frame& f) { frame = f; });
+    QObject::connect(camera.get(), &cam::Camera::failed, [&](std::uint64_t, const msg::Problem& p) { failure = p.message; });
+    const auto& st = s->instrument()->status();
+    cam::CaptureRequest req;
+    req.id = 1;
+    req.fileHint = file.toStdString();
+    if (st.axes.size() >= 2) {
+        req.xMm = st.axes[0].measured;
+        req.yMm = st.axes[1].measured;
+    }
+    camera->capture(req);
+    if (!spinUntil([&] { return frame || failure; }, static_cast<int>(exposureMs) + kSnapGraceMs))
+        return inv.refused(tr("the camera %1 gave no image within %2 s").arg(camera->source()).arg(kSnapGraceMs / 1000));
+    if (failure)
+        return inv.refused(problemText(*failure));
+    cam::TileMetadata meta;
+    meta.label = QFileInfo(file).fileName().toStdString();
+    if (st.axes.size() >= 2)
+        meta.measuredMm = {req.xMm, req.yMm};
+    meta.deviceTimeUs = frame->deviceTimeUs;
+    meta.source = camera->source().toStdString();
+    std::string sha;
+    msg::Message error;
+    if (!cam::writeTileTiff(file.toStdString(), *frame, meta, &sha, &error))
+        return inv.refused(problemText(error));
+    if (inv.json()) {
+        QJsonObject o{{QStringLiteral("file"), file},
+                      {QStringLiteral("camera"), camera->source()},
+                      {QStringLiteral("width"), frame->width},
+                      {QStringLiteral("height"), frame->height},
+                      {QStringLiteral("bit_depth"), frame->bitDepth},
+                      {QStringLiteral("exposure_ms"), frame->exposureMs},
+                      {QStringLiteral("pixel_um"), frame->pixelUm},
+                      {QStringLiteral("sha256"), QString::fromStdString(sha)}};
+        if (!meta.measuredMm.empty())
+            o.insert(QStringLiteral("measured_mm"), QJsonArray{meta.measuredMm[0], meta.measuredMm[1]});
+        inv.printJson(o);
+    } else {
+        inv.out() << tr("wrote %1: %2 × %3 px, %4-bit, %5 ms").arg(file).arg(frame->width).arg(frame->height).arg(frame->bitDepth).arg(frame->exposureMs)
+                  << (meta.measuredMm.empty() ? QString() : tr(", at %1, %2 mm").arg(meta.measuredMm[0], 0, 'f', 4).arg(meta.measuredMm[1], 0, 'f', 4))
+                  << '\n';
+        inv.out().flush();
+    }
+    return Ok;
+}
+
+} // namespace
+
+QList<QCommandLineOption> cameraOptions()
+{
+    return {option("specimen", "with --camera sim: what lies on the simulated stage: slide, grid-plate or line-scales", "NAME", "slide"),
+            option("camera-seed", "with --camera sim: the simulated specimen's and noise's seed", "N", "1")};
+}
+
+std::unique_ptr<dev::camera::Camera> cameraFor(Invocation& inv, CliSession* session, const QString& source)
+{
+    cam::SimContext sim;
+    const QString specimen = inv.isSet(QStringLiteral("specimen")) ? inv.value(QStringLiteral("specimen")) : QStringLiteral("slide");
+    const auto kind = cam::specimenFromName(specimen.toStdString());
+    if (!kind) {
+        inv.usage(tr("--specimen '%1' is not one of slide, grid-plate, line-scales").arg(specimen));
+        return nullptr;
+    }
+    sim.settings.specimen = *kind;
+    double seed = 1;
+    if (!inv.number(QStringLiteral("camera-seed"), seed, 1.0))
+        return nullptr;
+    if (!(seed >= 0 && seed < 9007199254740992.0 && std::floor(seed) == seed)) {
+        inv.usage(tr("--camera-seed must be a whole number from 0"));
+        return nullptr;
+    }
+    sim.settings.seed = static_cast<std::uint64_t>(seed);
+    if (auto* link = session ? qobject_cast<dev::SimulatedLink*>(session->link()) : nullptr) {
+        sim::SimMachine* m = &link->machine();
+        if (m->axisCount() >= 2)
+            sim.workPoint = [m]() -> std::optional<cam::WorkPoint> {
+                return cam::WorkPoint{m->workPointLogical(0), m->workPointLogical(1), m->timeUs()};
+            };
+    }
+    msg::Message error;
+    auto camera = cam::makeCamera(source.toStdString(), sim, &error);
+    if (!camera)
+        inv.usage(QStringLiteral("--camera: ") + words::text(error));
+    return camera;
+}
+
+void addCameraCommands(std::vector<Command>& list)
+{
+    Command listCmd{QStringLiteral("list"), tr("the cameras BenchPilot can take images from, and the simulated specimens"), {}, {}, {}, cameraList, {}};
+    listCmd.api.access = Access::Compute;
+    listCmd.api.example = QJsonObject{};
+    QList<QCommandLineOption> snapOptions{option("camera", "sim, uvc[:NAME], command:CMD or folder:DIR (see camera list)", "SOURCE"),
+                                          option("out", "the image file to write (TIFF)", "FILE.tif"),
+                                          option("exposure-ms", "exposure, ms, where the camera lets it be set", "N", "10")};
+    snapOptions << cameraOptions();
+    Command snap{QStringLiteral("snap"), tr("take one image and write it as a TIFF with where the stage stood"), {},
+                 tr("With --sim stage and --camera sim the simulated camera renders the specimen at the stage's true "
+                    "position (see docs/camera.md)."),
+                 snapOptions, cameraSnap, {}};
+    snap.api.access = Access::Control;
+    snap.api.params = {optionParam("camera", ParamType::Text, true), optionParam("out", ParamType::File, true),
+                       optionParam("exposure-ms", ParamType::Number), optionParam("specimen", ParamType::Text),
+                       optionParam("camera-seed", ParamType::Number)};
+    snap.api.example = QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")}, {QStringLiteral("camera"), QStringLiteral("sim")},
+                                   {QStringLiteral("out"), QStringLiteral("snap.tif")}};
+    list.push_back({QStringLiteral("camera"), tr("cameras: list the sources, take an image"), {},
+                    tr("See docs/camera.md for the sources, the image files and the simulated specimens."), {}, {}, {listCmd, snap}});
+}
+
+} // namespace cli
