@@ -4,6 +4,7 @@
 // percentiles, the scale bar is as long as the pixel size says, and the camera's state
 // (source, exposure, paused, contrast, the scan's option) survives a language switch.
 #include "device/camera/tile_tiff.h"
+#include "device/jobs/scan_runner.h"
 #include "fake_camera.h"
 #include "gui_window.h"
 #include "widgets/camera/camera_panel.h"
@@ -18,6 +19,8 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDir>
+#include <QFileInfo>
 #include <QDoubleSpinBox>
 #include <QImage>
 #include <QPushButton>
@@ -210,9 +213,10 @@ TEST(CameraLiveView, ASourceThatCannotBeReadIsRefusedWithTheForms)
     QString said;
     QObject::connect(&session, &ui::CameraSession::problem, [&](const QString& m) { said = m; });
     EXPECT_FALSE(session.open(QStringLiteral("webcam0")));
-    EXPECT_TRUE(said.contains(QStringLiteral("webcam0")) && said.contains(QStringLiteral("uvc:NAME"))) << said.toStdString();
+    EXPECT_TRUE(said.contains(QStringLiteral("webcam0")) && said.contains(QStringLiteral("uvc[:NAME]"))) << said.toStdString();
     EXPECT_FALSE(session.open(QStringLiteral("folder:")));
-    EXPECT_TRUE(said.contains(QStringLiteral("folder:DIR"))) << said.toStdString();
+    EXPECT_TRUE(said.contains(QStringLiteral("folder:"))) << said.toStdString();
+    EXPECT_FALSE(session.isOpen());
     EXPECT_TRUE(ui::CameraSession::sourceProblem(QStringLiteral("command:gphoto2 --capture-image-and-download --filename {file}")).isEmpty());
 }
 
@@ -301,6 +305,25 @@ TEST_F(CameraScreens, ARunAskedForImagesWithNoCameraOpenDoesNotStart)
     EXPECT_EQ(scan->runCamera(), nullptr);
 }
 
+TEST_F(CameraScreens, TheRunIsHandedTheOpenCameraOnlyWhenAskedForImages)
+{
+    ASSERT_TRUE(w->showScreen(QStringLiteral("scan")));
+    ui::ScanScreen* scan = w->scanScreen();
+    QTemporaryDir dir;
+    scan->setOutputFolder(dir.filePath(QStringLiteral("run")));
+    w->cameraSession()->open(QStringLiteral("sim"));
+    ASSERT_TRUE(waitFor([&] { return w->cameraSession()->isOpen(); }, 2000));
+    scan->setTakesImages(true);
+    scan->run();  // the stage is not homed: it may refuse to start, but the camera is handed over first
+    ASSERT_NE(scan->runner()->camera(), nullptr);
+    EXPECT_EQ(QString::fromStdString(scan->runner()->camera()->sourceName()), QStringLiteral("sim"));
+    scan->abort();
+    scan->setTakesImages(false);
+    scan->run();
+    EXPECT_EQ(scan->runner()->camera(), nullptr) << "a run without images was handed the camera";
+    scan->abort();
+}
+
 TEST_F(CameraScreens, TheCameraKeepsItsStateAcrossALanguageSwitch)
 {
     ASSERT_TRUE(w->showScreen(QStringLiteral("scan")));
@@ -362,6 +385,38 @@ TEST_F(SimulatedCameraScreens, TheSimulatedCameraShowsWhatIsUnderTheObjective)
     // A source this build cannot make is refused, and the simulated camera stays closed after Close.
     QTest::mouseClick(panel->findChild<QPushButton*>(QStringLiteral("cameraOpen")), Qt::LeftButton);
     EXPECT_FALSE(w->cameraSession()->isOpen());
+}
+
+TEST_F(SimulatedCameraScreens, AScanFromTheScreenWritesAnImageForEachTile)
+{
+    dev::Instrument* stage = w->stage()->instrument();
+    stage->home(0);
+    ASSERT_TRUE(waitFor([&] { return !stage->status().axes.isEmpty() && stage->status().axes[0].homed && stage->status().axes[1].homed
+                                  && !stage->status().anyMoving(); }, 60000));
+    ASSERT_TRUE(w->showScreen(QStringLiteral("scan")));
+    ui::ScanScreen* scan = w->scanScreen();
+    motion::scan::ScanPlan p;
+    p.region.kind = motion::scan::RegionKind::CentreSize;
+    p.region.centre = {40, 40};
+    p.region.widthMm = 2.4;  // two 1.33 mm fields across, one down
+    p.region.heightMm = 1.0;
+    scan->setPlan(p);
+    QTemporaryDir dir;
+    scan->setOutputFolder(dir.filePath(QStringLiteral("run")));
+    w->cameraSession()->open(QStringLiteral("sim"));
+    ASSERT_TRUE(waitFor([&] { return w->cameraSession()->isOpen(); }, 5000));
+    scan->setTakesImages(true);
+    const int tiles = int(scan->layout().tiles.size());
+    ASSERT_GE(tiles, 2);
+    ASSERT_TRUE(scan->run());
+    EXPECT_TRUE(w->cameraSession()->inUse()) << "the camera could be closed under the run";
+    ASSERT_TRUE(waitFor([&] { return scan->runner()->state() == jobs::ScanRunner::State::Finished; }, 120000));
+    for (int t = 0; t < tiles; ++t) {
+        const auto& image = scan->runner()->image(t);
+        ASSERT_FALSE(image.file.empty()) << "tile " << t << " has no image";
+        EXPECT_TRUE(QFileInfo::exists(QDir(dir.filePath(QStringLiteral("run"))).filePath(QString::fromStdString(image.file))));
+    }
+    EXPECT_FALSE(w->cameraSession()->inUse());
 }
 
 // The picture in docs/camera.md: BP_GUI_SHOTS=DIR keeps it as DIR/camera-live-view.png

@@ -1,5 +1,6 @@
 #include "widgets/camera/camera_session.h"
 
+#include "device/camera/camera_source.h"
 #include "widgets/wording/wording.h"
 
 namespace ui {
@@ -21,18 +22,9 @@ QStringList CameraSession::availableSources() const
 
 QString CameraSession::sourceProblem(const QString& source)
 {
-    const QString s = source.trimmed();
-    if (s.isEmpty())
-        return tr("No camera source given: type sim, uvc:NAME, command:CMD or folder:DIR.");
-    if (s == QLatin1String("sim") || s.startsWith(QLatin1String("sim:")) || s == QLatin1String("uvc")
-        || s.startsWith(QLatin1String("uvc:")))
-        return {};
-    for (const char* prefix : {"command:", "folder:"})
-        if (s.startsWith(QLatin1String(prefix)))
-            return s.size() > int(qstrlen(prefix)) ? QString()
-                                                    : tr("“%1” needs what follows the colon: command:CMD runs CMD, folder:DIR "
-                                                         "watches DIR.").arg(s);
-    return tr("“%1” is not a camera source: type sim, uvc:NAME, command:CMD or folder:DIR.").arg(s);
+    dev::camera::SourceSpec spec;
+    msg::Message error;
+    return dev::camera::parseSource(source.trimmed().toStdString(), &spec, &error) ? QString() : words::text(error);
 }
 
 bool CameraSession::open(const QString& source)

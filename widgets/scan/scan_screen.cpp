@@ -1,5 +1,6 @@
 #include "widgets/scan/scan_screen.h"
 
+#include "device/camera/scan_camera.h"
 #include "device/files/scan_exports.h"
 #include "device/files/scan_plan_file.h"
 #include "device/jobs/machine_model.h"
@@ -474,6 +475,7 @@ bool ScanScreen::run()
         emit problem(tr("Open a camera on the Camera tab first, or clear “Take an image at each tile”."));
         return false;
     }
+    handCameraToRunner();
     using Kind = jobs::ScanDecision::Kind;
     jobs::ScanDecision d = m_launch->prepare(plan(), folder);
     if (d.kind == Kind::OtherScansLog) {
@@ -513,8 +515,6 @@ bool ScanScreen::run()
                                .arg(o.firstTileMm.xMm, 0, 'f', 2)
                                .arg(o.firstTileMm.yMm, 0, 'f', 2)))
         return false;
-    if (!handCameraToRunner())
-        return false;
     msg::Message error;
     if (!m_launch->start(&error)) {
         emit problem(words::text(error));
@@ -525,15 +525,19 @@ bool ScanScreen::run()
     return true;
 }
 
-bool ScanScreen::handCameraToRunner()
+void ScanScreen::handCameraToRunner()
 {
+    // Set before the run is prepared: resuming checks the images taken, and the estimate
+    // counts the camera's time. A camera swapped since the last run gets a new wrapper.
     dev::camera::Camera* cam = runCamera();
-    if (!cam)
-        return true;
-    // The runner's camera side (capture after settle, images in the run log) is not in this
-    // build yet: a run asked to take images refuses rather than run without them.
-    emit problem(tr("This scan cannot take images yet: clear “Take an image at each tile” to run it without them."));
-    return false;
+    if (!cam) {
+        m_runner->setCamera(nullptr);
+        m_scanCamera.reset();
+        return;
+    }
+    if (!m_scanCamera || m_scanCamera->camera() != cam)
+        m_scanCamera = std::make_unique<dev::camera::ScanCamera>(cam);
+    m_runner->setCamera(m_scanCamera.get());
 }
 
 void ScanScreen::pause() { m_runner->pause(); }

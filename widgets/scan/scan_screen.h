@@ -26,6 +26,7 @@ class ScanRunner;
 
 namespace dev::camera {
 class Camera;
+class ScanCamera;
 }
 
 namespace ui {
@@ -104,7 +105,7 @@ private:
     void onStageIdentity();
     motion::scan::StageModel stageModel() const;
     bool confirm(const QString& question);
-    bool handCameraToRunner();  ///< false (with a problem) when the run cannot take the images asked for
+    void handCameraToRunner();  ///< the runner takes the tiles with runCamera(), or with none
     QString choose(FileAction action, const QString& title, const QString& filter);
 
     dev::Instrument* m_stage;
@@ -115,6 +116,7 @@ private:
     QTabWidget* m_leftTabs;
     CameraSession* m_camera = nullptr;
     CameraPanel* m_cameraPanel = nullptr;
+    std::unique_ptr<dev::camera::ScanCamera> m_scanCamera;  ///< the run's side of the camera, made for runCamera()
     QCheckBox* m_useCamera;
     QLabel* m_summary;
     QLabel* m_problems;
