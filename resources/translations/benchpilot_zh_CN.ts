@@ -795,13 +795,6 @@ Take control back? The script&apos;s next call is refused and its jogs stop; a j
     </message>
 </context>
 <context>
-    <name>app::CameraWiring</name>
-    <message>
-        <source>Camera %1: this build cannot open this kind of source yet.</source>
-        <translation>相机 %1：此版本尚不能打开这类来源。</translation>
-    </message>
-</context>
-<context>
     <name>app::HelpMenu</name>
     <message>
         <source>&amp;Help</source>
@@ -4659,18 +4652,6 @@ Keep that log aside and start this test afresh?</source>
 <context>
     <name>ui::CameraSession</name>
     <message>
-        <source>No camera source given: type sim, uvc:NAME, command:CMD or folder:DIR.</source>
-        <translation>未给出相机来源：请输入 sim、uvc:NAME、command:CMD 或 folder:DIR。</translation>
-    </message>
-    <message>
-        <source>“%1” needs what follows the colon: command:CMD runs CMD, folder:DIR watches DIR.</source>
-        <translation>“%1”的冒号后需要内容：command:CMD 运行 CMD，folder:DIR 监视 DIR。</translation>
-    </message>
-    <message>
-        <source>“%1” is not a camera source: type sim, uvc:NAME, command:CMD or folder:DIR.</source>
-        <translation>“%1”不是相机来源：请输入 sim、uvc:NAME、command:CMD 或 folder:DIR。</translation>
-    </message>
-    <message>
         <source>The camera is taking a scan&apos;s tiles: pause or abort the scan before changing it.</source>
         <translation>相机正在拍摄扫描的图块：请先暂停或中止扫描再更换相机。</translation>
     </message>
@@ -7845,10 +7826,6 @@ Start this scan anew in that folder? The old run log is kept under another name.
         <source>Open a camera on the Camera tab first, or clear “Take an image at each tile”.</source>
         <translation>请先在“相机”页打开相机，或取消“在每个图块拍摄图像”。</translation>
     </message>
-    <message>
-        <source>This scan cannot take images yet: clear “Take an image at each tile” to run it without them.</source>
-        <translation>此扫描尚不能拍摄图像：取消“在每个图块拍摄图像”即可不拍图像运行。</translation>
-    </message>
 </context>
 <context>
     <name>ui::ScanStageMap</name>
@@ -10917,7 +10894,6 @@ A loop this different may oscillate or run away. Apply them?</source>
     <message>
         <source>a tile&apos;s &quot;image&quot; and &quot;sha256&quot; come together: one without the other is not a line this program wrote</source>
         <comment>file.log.image_without_sha256</comment>
-        <translation>图块的 &quot;image&quot; 与 &quot;sha256&quot; 必须同时出现：只有其一的行不是本程序写的</translation>
         <translation>图块的 &quot;image&quot; 和 &quot;sha256&quot; 成对出现：缺少其中之一的行不是本程序写的</translation>
     </message>
     <message>
