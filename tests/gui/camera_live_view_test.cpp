@@ -324,6 +324,45 @@ TEST_F(CameraScreens, TheRunIsHandedTheOpenCameraOnlyWhenAskedForImages)
     scan->abort();
 }
 
+TEST_F(CameraScreens, F9SnapsFromTheScreenShown)
+{
+    // Both the Scan screen and the stage's Jog screen have a Snap button on F9: only the
+    // one on screen may take it, or Qt calls the key ambiguous and neither snaps.
+    ASSERT_TRUE(w->showScreen(QStringLiteral("scan")));
+    ui::ScanScreen* scan = w->scanScreen();
+    scan->showTab(1);
+    w->cameraSession()->open(QStringLiteral("sim"));
+    ASSERT_TRUE(waitFor([&] { return w->cameraSession()->isOpen(); }, 2000));
+    auto* cam = static_cast<FakeCamera*>(w->cameraSession()->camera());
+    cam->captureFrame = guitest::ramp16(32, 16, 100);
+    QTemporaryDir dir;
+    int asked = 0;
+    for (ui::CameraPanel* p : {scan->cameraPanel(), w->jogCameraPanel()})
+        p->setFileChooser([&](const QString&, const QString&) {
+            ++asked;
+            return dir.filePath(QStringLiteral("f9"));
+        });
+    QString written;
+    QObject::connect(scan->cameraPanel(), &ui::CameraPanel::snapWritten, [&](const QString& p) { written = p; });
+    w->activateWindow();
+    QTest::keyClick(w.get(), Qt::Key_F9);
+    auto* snapButton = scan->cameraPanel()->findChild<QPushButton*>(QStringLiteral("cameraSnap"));
+    ASSERT_TRUE(waitFor([&] { return !written.isEmpty(); }, 5000)) << "F9 did not snap; asked " << asked << ", button enabled "
+                                                                    << snapButton->isEnabled() << " visible " << snapButton->isVisible()
+                                                                    << " shortcut " << snapButton->shortcut().toString().toStdString()
+                                                                    << " active " << (QApplication::activeWindow() == w.get());
+    EXPECT_EQ(asked, 1);
+    EXPECT_EQ(written, dir.filePath(QStringLiteral("f9.tif"))) << "the TIFF's extension is added";
+    // A language switch rewords the button; the key stays.
+    chooseLanguage(QStringLiteral("zh_CN"));
+    chooseLanguage(QStringLiteral("en"));
+    guitest::pump(50);
+    written.clear();
+    QTest::keyClick(w.get(), Qt::Key_F9);
+    ASSERT_TRUE(waitFor([&] { return !written.isEmpty(); }, 5000)) << "F9 did not snap after a language switch";
+    EXPECT_EQ(asked, 2);
+}
+
 TEST_F(CameraScreens, TheCameraKeepsItsStateAcrossALanguageSwitch)
 {
     ASSERT_TRUE(w->showScreen(QStringLiteral("scan")));

@@ -93,7 +93,6 @@ CameraPanel::CameraPanel(CameraSession* session, dev::Instrument* stage, QWidget
     m_exposure->setValue(m_session->exposureMs());
     m_snap = new QPushButton;
     m_snap->setObjectName(QStringLiteral("cameraSnap"));
-    m_snap->setShortcut(QKeySequence(kSnapKey));
     m_state = new QLabel;
     m_state->setObjectName(QStringLiteral("cameraState"));
     sourceRow->addWidget(m_state);
@@ -264,6 +263,7 @@ void CameraPanel::retranslateUi()
     m_exposure->setSuffix(tr(" ms"));
     m_exposure->setToolTip(tr("Exposure time, where the camera lets it be set"));
     m_snap->setText(tr("Snap"));
+    m_snap->setShortcut(QKeySequence(kSnapKey));  // after the text: a button's setText() resets its shortcut
     m_snap->setToolTip(tr("Take one image and save it as a TIFF with the stage position in it (16-bit grey stays 16-bit) (%1)")
                            .arg(QKeySequence(kSnapKey).toString(QKeySequence::NativeText)));
     updateUi();
