@@ -363,6 +363,22 @@ TEST_F(CameraScreens, F9SnapsFromTheScreenShown)
     EXPECT_EQ(asked, 2);
 }
 
+// Found beside the camera's F9: the Scan screen's Run (Ctrl+R) lost its key once its text
+// was reworded (Resume, or another language), because a button's setText() resets it.
+TEST_F(CameraScreens, TheScanScreensKeysSurviveALanguageSwitch)
+{
+    ASSERT_TRUE(w->showScreen(QStringLiteral("scan")));
+    ui::ScanScreen* scan = w->scanScreen();
+    auto* run = scan->findChild<QPushButton*>(QStringLiteral("scanRun"));
+    ASSERT_NE(run, nullptr);
+    chooseLanguage(QStringLiteral("zh_CN"));
+    guitest::pump(50);
+    EXPECT_EQ(run->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_R)) << "in Chinese";
+    chooseLanguage(QStringLiteral("en"));
+    guitest::pump(50);
+    EXPECT_EQ(run->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_R)) << "back in English";
+}
+
 TEST_F(CameraScreens, TheCameraKeepsItsStateAcrossALanguageSwitch)
 {
     ASSERT_TRUE(w->showScreen(QStringLiteral("scan")));

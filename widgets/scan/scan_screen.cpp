@@ -16,6 +16,7 @@
 
 #include <QCheckBox>
 #include <QDir>
+#include <QEvent>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -423,6 +424,10 @@ void ScanScreen::updateRunUi()
     m_folder->setEnabled(!active);
     m_map->setDrawingEnabled(!active);
     m_runButton->setText(resumable && m_runner->takenTiles() > 0 ? tr("Resume") : tr("Run"));
+    // A button's setText() resets its shortcut (to the text's mnemonic): set the keys again.
+    m_runButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    m_pauseButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
+    m_abortButton->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_A));
     m_runButton->setToolTip(tr("Run the scan on the stage, or continue it at the next tile (Ctrl+R)"));
     m_runButton->setEnabled(!active && m_valid && m_stage->isReady());
     m_pauseButton->setEnabled(st == ScanRunner::State::Running);
@@ -448,6 +453,15 @@ void ScanScreen::updateRunUi()
     else
         text = tr("%1 · %2 of %3 tiles taken").arg(words::term(ScanRunner::stateTerm(st))).arg(m_runner->takenTiles()).arg(m_runner->totalTiles());
     m_runState->setText(text);
+}
+
+void ScanScreen::changeEvent(QEvent* event)
+{
+    // The window rewords the buttons after this event (ui::Retranslator), which drops their
+    // keys: they are set again once it has.
+    if (event->type() == QEvent::LanguageChange)
+        QTimer::singleShot(0, this, &ScanScreen::updateRunUi);
+    QWidget::changeEvent(event);
 }
 
 bool ScanScreen::confirm(const QString& question) { return !m_confirm || m_confirm(question); }

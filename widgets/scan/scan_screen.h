@@ -95,6 +95,9 @@ signals:
     void problem(const QString& message);
     void notice(const QString& message);
 
+protected:
+    void changeEvent(QEvent* event) override;
+
 private:
     QWidget* buildRunPanel();
     QWidget* buildFileRow();  ///< New, Open, Save: held back while a scan runs
