@@ -11,6 +11,7 @@
 #include "widgets/camera/camera_session.h"
 #include "widgets/camera/focus_plot.h"
 #include "widgets/camera/live_view.h"
+#include "widgets/common/number_field.h"
 #include "widgets/jog_screen.h"
 #include "widgets/scan/scan_screen.h"
 #include "widgets/wording/translators.h"
@@ -21,7 +22,6 @@
 #include <QComboBox>
 #include <QDir>
 #include <QFileInfo>
-#include <QDoubleSpinBox>
 #include <QImage>
 #include <QPushButton>
 #include <QTabWidget>
@@ -391,8 +391,12 @@ TEST_F(CameraScreens, TheCameraKeepsItsStateAcrossALanguageSwitch)
     auto* cam = static_cast<FakeCamera*>(w->cameraSession()->camera());
     cam->push(guitest::texture(640, 480, 0, 3));
     ASSERT_TRUE(waitFor([&] { return panel->liveView()->hasPicture(); }, 5000));
-    auto* exposure = panel->findChild<QDoubleSpinBox*>(QStringLiteral("cameraExposure"));
-    exposure->setValue(35);
+    auto* exposure = panel->findChild<ui::NumberField*>(QStringLiteral("cameraExposure"));
+    exposure->setFocus();
+    exposure->selectAll();
+    QTest::keyClicks(exposure, QStringLiteral("35"));
+    QTest::keyClick(exposure, Qt::Key_Return);
+    ASSERT_DOUBLE_EQ(w->cameraSession()->exposureMs(), 35);
     panel->liveView()->setAutoContrast(false);
     panel->liveView()->setPaused(true);
     scan->setTakesImages(true);
@@ -412,7 +416,7 @@ TEST_F(CameraScreens, TheCameraKeepsItsStateAcrossALanguageSwitch)
     EXPECT_TRUE(w->cameraSession()->isOpen());
     EXPECT_EQ(w->cameraSession()->camera(), cam) << "the camera was reopened";
     EXPECT_EQ(panel->sourceText(), QStringLiteral("sim"));
-    EXPECT_DOUBLE_EQ(exposure->value(), 35);
+    EXPECT_EQ(exposure->text(), QStringLiteral("35"));
     EXPECT_DOUBLE_EQ(cam->exposureMs(), 35);
     EXPECT_TRUE(panel->liveView()->isPaused());
     EXPECT_FALSE(panel->liveView()->autoContrast());

@@ -4,12 +4,12 @@
 #include "device/camera/tile_tiff.h"
 #include "widgets/camera/camera_session.h"
 #include "widgets/camera/live_view.h"
+#include "widgets/common/number_field.h"
 #include "widgets/retranslator.h"
 #include "widgets/wording/wording.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
-#include <QDoubleSpinBox>
 #include <QEvent>
 #include <QFileInfo>
 #include <QHBoxLayout>
@@ -85,11 +85,11 @@ CameraPanel::CameraPanel(CameraSession* session, dev::Instrument* stage, QWidget
     v->addLayout(sourceRow);
 
     m_exposureLabel = new QLabel;
-    m_exposure = new QDoubleSpinBox;
+    m_exposure = new NumberField;
     m_exposure->setObjectName(QStringLiteral("cameraExposure"));
     m_exposure->setRange(0.01, 60000);
-    m_exposure->setDecimals(2);
-    m_exposure->setKeyboardTracking(false);
+    m_exposure->setDisplay('g', 6);
+    m_exposure->setMaximumWidth(110);
     m_exposure->setValue(m_session->exposureMs());
     m_snap = new QPushButton;
     m_snap->setObjectName(QStringLiteral("cameraSnap"));
@@ -117,7 +117,12 @@ CameraPanel::CameraPanel(CameraSession* session, dev::Instrument* stage, QWidget
         if (!m_session->isOpen())
             openTyped();
     });
-    connect(m_exposure, &QDoubleSpinBox::valueChanged, m_session, &CameraSession::setExposureMs);
+    // Sent once the entry is finished and valid; a refused one says why on the field and sends nothing.
+    connect(m_exposure, &QLineEdit::editingFinished, this, [this] {
+        m_exposure->finishEntry();
+        if (const auto ms = m_exposure->value())
+            m_session->setExposureMs(*ms);
+    });
     connect(m_snap, &QPushButton::clicked, this, [this] {
         if (!m_session->isOpen())
             return;
@@ -157,7 +162,8 @@ void CameraPanel::showEvent(QShowEvent* event)
     // The other screen's panel may have opened another source since this one was shown.
     if (!m_session->source().isEmpty() && m_session->source() != sourceText())
         m_source->setCurrentText(m_session->source());
-    m_exposure->setValue(m_session->exposureMs());
+    if (m_exposure->isValid() && m_exposure->value() != m_session->exposureMs() && !m_exposure->hasFocus())
+        m_exposure->setValue(m_session->exposureMs());
     m_view->setStagePosition(positionOf(m_stage));
     QWidget::showEvent(event);
 }
@@ -260,8 +266,9 @@ void CameraPanel::retranslateUi()
                             "({file} is where it writes); folder:DIR: takes the next new file in DIR"));
     m_refresh->setToolTip(tr("List the cameras again"));
     m_exposureLabel->setText(tr("Exposure"));
-    m_exposure->setSuffix(tr(" ms"));
-    m_exposure->setToolTip(tr("Exposure time, where the camera lets it be set"));
+    m_exposure->setUnit(tr(" ms"));
+    m_exposure->setFieldName(tr("Exposure"));
+    m_exposure->setHelp(tr("Exposure time, where the camera lets it be set"));
     m_snap->setText(tr("Snap"));
     m_snap->setShortcut(QKeySequence(kSnapKey));  // after the text: a button's setText() resets its shortcut
     m_snap->setToolTip(tr("Take one image and save it as a TIFF with the stage position in it (16-bit grey stays 16-bit) (%1)")

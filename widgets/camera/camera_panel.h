@@ -11,7 +11,6 @@
 #include <functional>
 
 class QComboBox;
-class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
 
@@ -23,6 +22,7 @@ namespace ui {
 
 class CameraSession;
 class LiveView;
+class NumberField;
 
 class CameraPanel : public QWidget {
     Q_OBJECT
@@ -68,7 +68,7 @@ private:
     QComboBox* m_source;
     QPushButton* m_open;
     QPushButton* m_refresh;
-    QDoubleSpinBox* m_exposure;
+    NumberField* m_exposure;
     QPushButton* m_snap;
     QLabel* m_sourceLabel;
     QLabel* m_exposureLabel;
