@@ -12,9 +12,9 @@ bool positive(double x) { return std::isfinite(x) && x > 0.0; }
 
 /// "{field} = {value} must be finite and > 0 for {kind}": the field is the request's
 /// member name, which the CLI maps back to its option.
-msg::Message fieldMessage(const char* field, double value, const char* id, const char* kind)
+motion::msg::Message fieldMessage(const char* field, double value, const char* id, const char* kind)
 {
-    return msg::make(id, {msg::verbatim("field", field), msg::real("value", value), msg::verbatim("kind", kind)});
+    return motion::msg::make(id, {motion::msg::verbatim("field", field), motion::msg::real("value", value), motion::msg::verbatim("kind", kind)});
 }
 
 }  // namespace
@@ -54,12 +54,12 @@ ProfileSample AnyProfile::at(double tS) const
     return std::visit([tS](const auto& p) { return p.at(tS); }, m_profile);
 }
 
-msg::Checked<AnyProfile> planProfile(double distanceMm, const ProfileRequest& r)
+motion::msg::Checked<AnyProfile> planProfile(double distanceMm, const ProfileRequest& r)
 {
-    using Result = msg::Checked<AnyProfile>;
+    using Result = motion::msg::Checked<AnyProfile>;
     const char* kind = profileKindName(r.kind);
     if (!std::isfinite(distanceMm)) {
-        return Result::fail(msg::make("profile.not_finite", {msg::verbatim("field", "distanceMm"), msg::real("value", distanceMm)}));
+        return Result::fail(motion::msg::make("profile.not_finite", {motion::msg::verbatim("field", "distanceMm"), motion::msg::real("value", distanceMm)}));
     }
     if (!positive(r.vMaxMmS))
         return Result::fail(fieldMessage("vMaxMmS", r.vMaxMmS, "profile.not_positive", kind));
@@ -99,20 +99,20 @@ msg::Checked<AnyProfile> planProfile(double distanceMm, const ProfileRequest& r)
         return Result::ok(AnyProfile(*JerkLimitedProfile::plan(distanceMm, {r.vMaxMmS, r.aMaxMmS2, r.jMaxMmS3})));
     }
     }
-    return Result::fail(msg::make("profile.unknown_kind"));
+    return Result::fail(motion::msg::make("profile.unknown_kind"));
 }
 
-msg::Checked<LinearMove<AnyProfile>> planSynchronized(const double* distancesMm, int axisCount, const ProfileRequest& r)
+motion::msg::Checked<LinearMove<AnyProfile>> planSynchronized(const double* distancesMm, int axisCount, const ProfileRequest& r)
 {
-    using Result = msg::Checked<LinearMove<AnyProfile>>;
+    using Result = motion::msg::Checked<LinearMove<AnyProfile>>;
     if (axisCount < 1 || axisCount > kMaxAxes) {
-        return Result::fail(msg::make("profile.axis_count", {msg::integer("count", axisCount), msg::integer("max", kMaxAxes)}));
+        return Result::fail(motion::msg::make("profile.axis_count", {motion::msg::integer("count", axisCount), motion::msg::integer("max", kMaxAxes)}));
     }
     double sumSq = 0.0, largest = 0.0;
     for (int i = 0; i < axisCount; ++i) {
         if (!std::isfinite(distancesMm[i]))
-            return Result::fail(msg::make("profile.axis_not_finite", {msg::verbatim("field", "distanceMm"), msg::real("value", distancesMm[i]),
-                                                                      msg::integer("axis", i, msg::Unit::None)}));
+            return Result::fail(motion::msg::make("profile.axis_not_finite", {motion::msg::verbatim("field", "distanceMm"), motion::msg::real("value", distancesMm[i]),
+                                                                      motion::msg::integer("axis", i, motion::msg::Unit::None)}));
         sumSq += distancesMm[i] * distancesMm[i];
         largest = std::max(largest, std::fabs(distancesMm[i]));
     }

@@ -54,11 +54,11 @@ private:
 };
 
 /// One axis. Errors name the field and value ("vMaxMmS = 0 must be finite and > 0").
-msg::Checked<AnyProfile> planProfile(double distanceMm, const ProfileRequest& request);
+motion::msg::Checked<AnyProfile> planProfile(double distanceMm, const ProfileRequest& request);
 
 /// Several axes on a straight line, all with the request's limits: the axis that moves furthest
 /// runs at the limits, the others in proportion (see linear_move.h).
-msg::Checked<LinearMove<AnyProfile>> planSynchronized(const double* distancesMm, int axisCount,
+motion::msg::Checked<LinearMove<AnyProfile>> planSynchronized(const double* distancesMm, int axisCount,
                                                     const ProfileRequest& request);
 
 /// Samples at t = 0, dt, 2dt, … and always at the end. Empty when dt ≤ 0 or the count would pass

@@ -17,11 +17,11 @@ struct RawBlock {  // a block before its shape is chosen; speeds signed
     double durationS;
 };
 
-msg::Arg jointArg(int joint) { return msg::integer("joint", joint, msg::Unit::None); }
-msg::Arg blockArg(int index) { return msg::integer("block", index, msg::Unit::None); }
+motion::msg::Arg jointArg(int joint) { return motion::msg::integer("joint", joint, motion::msg::Unit::None); }
+motion::msg::Arg blockArg(int index) { return motion::msg::integer("block", index, motion::msg::Unit::None); }
 
 /// Chooses the shape of a block that does not change direction.
-bool shapeBlock(const RawBlock& raw, BlockPlan& plan, msg::Message& error, int joint)
+bool shapeBlock(const RawBlock& raw, BlockPlan& plan, motion::msg::Message& error, int joint)
 {
     const double w1 = std::fabs(raw.v1), w2 = std::fabs(raw.v2), t0 = raw.durationS;
     const double D = std::fabs(raw.steps);
@@ -36,10 +36,10 @@ bool shapeBlock(const RawBlock& raw, BlockPlan& plan, msg::Message& error, int j
     const double lo = std::min(w1, w2) * t0, hi = std::max(w1, w2) * t0;
     const bool wrongWay = raw.steps != 0.0 && (raw.steps < 0.0) != (plan.direction < 0);
     if (wrongWay || D < lo - kReachToleranceSteps || D > hi + kReachToleranceSteps) {
-        error = msg::make("profile.block_unreachable",
-                          {jointArg(joint), blockArg(raw.sourceIndex), msg::real("steps", raw.steps), msg::real("v1", raw.v1),
-                           msg::real("v2", raw.v2), msg::real("t0", t0 * 1000.0, msg::Unit::Ms), msg::real("from", plan.direction < 0 ? -hi : lo),
-                           msg::real("to", plan.direction < 0 ? -lo : hi)});
+        error = motion::msg::make("profile.block_unreachable",
+                          {jointArg(joint), blockArg(raw.sourceIndex), motion::msg::real("steps", raw.steps), motion::msg::real("v1", raw.v1),
+                           motion::msg::real("v2", raw.v2), motion::msg::real("t0", t0 * 1000.0, motion::msg::Unit::Ms), motion::msg::real("from", plan.direction < 0 ? -hi : lo),
+                           motion::msg::real("to", plan.direction < 0 ? -lo : hi)});
         return false;
     }
     const double Dc = std::clamp(D, lo, hi);
@@ -80,9 +80,9 @@ const char* blockShapeName(BlockShape shape)
     return "?";
 }
 
-msg::Checked<JointPlan> planJointBlocks(const std::vector<Block>& blocks, double maxSpeedStepsS, int joint)
+motion::msg::Checked<JointPlan> planJointBlocks(const std::vector<Block>& blocks, double maxSpeedStepsS, int joint)
 {
-    using Result = msg::Checked<JointPlan>;
+    using Result = motion::msg::Checked<JointPlan>;
     JointPlan out;
     out.blocks.reserve(blocks.size() + 4);
     double v1 = 0.0;
@@ -90,12 +90,12 @@ msg::Checked<JointPlan> planJointBlocks(const std::vector<Block>& blocks, double
         const Block& b = blocks[i];
         const int index = static_cast<int>(i);
         if (b.durationMs == 0) {
-            return Result::fail(msg::make("profile.block_zero_duration", {jointArg(joint), blockArg(index)}));
+            return Result::fail(motion::msg::make("profile.block_zero_duration", {jointArg(joint), blockArg(index)}));
         }
         if (std::fabs(static_cast<double>(b.endSpeed)) > maxSpeedStepsS) {
-            return Result::fail(msg::make("profile.block_too_fast", {jointArg(joint), blockArg(index),
-                                                                     msg::real("v2", std::abs(static_cast<double>(b.endSpeed))),
-                                                                     msg::real("max", maxSpeedStepsS)}));
+            return Result::fail(motion::msg::make("profile.block_too_fast", {jointArg(joint), blockArg(index),
+                                                                     motion::msg::real("v2", std::abs(static_cast<double>(b.endSpeed))),
+                                                                     motion::msg::real("max", maxSpeedStepsS)}));
         }
         const double v2 = b.endSpeed, t0 = b.durationMs / 1000.0;
         std::vector<RawBlock> parts;
@@ -111,7 +111,7 @@ msg::Checked<JointPlan> planJointBlocks(const std::vector<Block>& blocks, double
         }
         for (const RawBlock& raw : parts) {
             BlockPlan plan;
-            msg::Message error;
+            motion::msg::Message error;
             if (!shapeBlock(raw, plan, error, joint))
                 return Result::fail(error);
             out.blocks.push_back(plan);

@@ -62,7 +62,7 @@ struct JointPlan {
 
 /// Validates and plans one joint's block stream. Fails with "joint J block K: …" naming the field
 /// and value (t0 > 0, |V2| ≤ vMax, S reachable; 0.5-microstep tolerance on reachability).
-msg::Checked<JointPlan> planJointBlocks(const std::vector<Block>& blocks, double maxSpeedStepsS, int joint = 0);
+motion::msg::Checked<JointPlan> planJointBlocks(const std::vector<Block>& blocks, double maxSpeedStepsS, int joint = 0);
 
 /// Exact delays (timer ticks at timerHz) of every microstep of the block: F / √(v² + 2a).
 std::vector<double> exactDelaysTicks(const BlockPlan& plan, double timerHz);

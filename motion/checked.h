@@ -12,7 +12,7 @@
 #include <optional>
 #include <utility>
 
-namespace msg {
+namespace motion::msg {
 
 template <class T>
 class Checked {
@@ -35,7 +35,7 @@ public:
         return c;
     }
     /// Refused for one reason that names its field in its arguments.
-    static Checked fail(Message why, std::string path = {}) { return refused({msg::error(std::move(path), std::move(why))}); }
+    static Checked fail(Message why, std::string path = {}) { return refused({motion::msg::error(std::move(path), std::move(why))}); }
     /// The value when `problems` holds no error, refused otherwise: a validator's verdict.
     static Checked from(T value, Problems problems)
     {
@@ -70,4 +70,4 @@ private:
     Problems m_problems;
 };
 
-} // namespace msg
+} // namespace motion::msg

@@ -40,7 +40,7 @@ HalfState accelHalf(double tau, double J, double Tj, double Ta)
 
 }  // namespace
 
-std::optional<msg::Message> validateJerkLimits(const JerkLimits& limits, int axis)
+std::optional<motion::msg::Message> validateJerkLimits(const JerkLimits& limits, int axis)
 {
     const struct {
         const char* name;
@@ -49,9 +49,9 @@ std::optional<msg::Message> validateJerkLimits(const JerkLimits& limits, int axi
     for (const auto& f : fields) {
         if (!positiveFinite(f.value)) {
             if (axis < 0)
-                return msg::make("profile.not_positive_plain", {msg::verbatim("field", f.name), msg::real("value", f.value)});
-            return msg::make("profile.axis_not_positive", {msg::verbatim("field", f.name), msg::real("value", f.value),
-                                                           msg::integer("axis", axis, msg::Unit::None)});
+                return motion::msg::make("profile.not_positive_plain", {motion::msg::verbatim("field", f.name), motion::msg::real("value", f.value)});
+            return motion::msg::make("profile.axis_not_positive", {motion::msg::verbatim("field", f.name), motion::msg::real("value", f.value),
+                                                           motion::msg::integer("axis", axis, motion::msg::Unit::None)});
         }
     }
     return std::nullopt;

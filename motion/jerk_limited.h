@@ -24,7 +24,7 @@ struct JerkLimits {
 
 /// nullopt when every limit is finite and > 0, else a message naming the field, the axis (when
 /// axis >= 0) and the value, e.g. "axis 1: aMaxMmS2 = -3 must be finite and > 0".
-std::optional<msg::Message> validateJerkLimits(const JerkLimits& limits, int axis = -1);
+std::optional<motion::msg::Message> validateJerkLimits(const JerkLimits& limits, int axis = -1);
 
 class JerkLimitedProfile final : public Profile {
 public:

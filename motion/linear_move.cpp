@@ -6,16 +6,16 @@ namespace motion {
 
 namespace {
 
-msg::Message axisMessage(int axis, const char* field, double value, const char* id)
+motion::msg::Message axisMessage(int axis, const char* field, double value, const char* id)
 {
-    return msg::make(id, {msg::verbatim("field", field), msg::real("value", value), msg::integer("axis", axis, msg::Unit::None)});
+    return motion::msg::make(id, {motion::msg::verbatim("field", field), motion::msg::real("value", value), motion::msg::integer("axis", axis, motion::msg::Unit::None)});
 }
 
 /// Length of the line, or a message when the input is unusable.
-bool lineLength(const double* distancesMm, int axisCount, double& lengthMm, msg::Message& error)
+bool lineLength(const double* distancesMm, int axisCount, double& lengthMm, motion::msg::Message& error)
 {
     if (axisCount < 1 || axisCount > kMaxAxes) {
-        error = msg::make("profile.axis_count", {msg::integer("count", axisCount), msg::integer("max", kMaxAxes)});
+        error = motion::msg::make("profile.axis_count", {motion::msg::integer("count", axisCount), motion::msg::integer("max", kMaxAxes)});
         return false;
     }
     double sumSq = 0.0;
@@ -32,12 +32,12 @@ bool lineLength(const double* distancesMm, int axisCount, double& lengthMm, msg:
 
 }  // namespace
 
-msg::Checked<LinearMove<JerkLimitedProfile>> planLinearJerkLimited(const double* distancesMm,
+motion::msg::Checked<LinearMove<JerkLimitedProfile>> planLinearJerkLimited(const double* distancesMm,
                                                                  const JerkLimits* limitsPerAxis, int axisCount)
 {
-    using Result = msg::Checked<LinearMove<JerkLimitedProfile>>;
+    using Result = motion::msg::Checked<LinearMove<JerkLimitedProfile>>;
     double lengthMm = 0.0;
-    msg::Message error;
+    motion::msg::Message error;
     if (!lineLength(distancesMm, axisCount, lengthMm, error))
         return Result::fail(error);
     constexpr double inf = std::numeric_limits<double>::infinity();
@@ -63,20 +63,20 @@ msg::Checked<LinearMove<JerkLimitedProfile>> planLinearJerkLimited(const double*
         path = limitsPerAxis[0];  // zero-length move: any valid limits give the empty profile
     const auto profile = JerkLimitedProfile::plan(lengthMm, path);
     if (!profile)
-        return Result::fail(msg::make("profile.path_limits_not_finite"));
+        return Result::fail(motion::msg::make("profile.path_limits_not_finite"));
     return Result::ok(LinearMove<JerkLimitedProfile>(*profile, distancesMm, axisCount));
 }
 
-msg::Checked<LinearMove<SeedSCurve>> planLinearSeedSCurve(const double* distancesMm, const double* vMaxMmSPerAxis,
+motion::msg::Checked<LinearMove<SeedSCurve>> planLinearSeedSCurve(const double* distancesMm, const double* vMaxMmSPerAxis,
                                                         double accelTimeS, int axisCount)
 {
-    using Result = msg::Checked<LinearMove<SeedSCurve>>;
+    using Result = motion::msg::Checked<LinearMove<SeedSCurve>>;
     double lengthMm = 0.0;
-    msg::Message error;
+    motion::msg::Message error;
     if (!lineLength(distancesMm, axisCount, lengthMm, error))
         return Result::fail(error);
     if (!(std::isfinite(accelTimeS) && accelTimeS > 0.0))
-        return Result::fail(msg::make("profile.not_positive_plain", {msg::verbatim("field", "accelTimeS"), msg::real("value", accelTimeS)}));
+        return Result::fail(motion::msg::make("profile.not_positive_plain", {motion::msg::verbatim("field", "accelTimeS"), motion::msg::real("value", accelTimeS)}));
     double pathVMaxMmS = std::numeric_limits<double>::infinity();
     for (int i = 0; i < axisCount; ++i) {
         const double v = vMaxMmSPerAxis[i];
@@ -90,7 +90,7 @@ msg::Checked<LinearMove<SeedSCurve>> planLinearSeedSCurve(const double* distance
         pathVMaxMmS = vMaxMmSPerAxis[0];
     const auto profile = SeedSCurve::plan(lengthMm, pathVMaxMmS, accelTimeS);
     if (!profile)
-        return Result::fail(msg::make("profile.path_speed_not_finite"));
+        return Result::fail(motion::msg::make("profile.path_speed_not_finite"));
     return Result::ok(LinearMove<SeedSCurve>(*profile, distancesMm, axisCount));
 }
 

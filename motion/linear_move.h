@@ -59,12 +59,12 @@ private:
 };
 
 /// Straight-line, time-optimal jerk-limited move of axisCount (1..kMaxAxes) axes.
-msg::Checked<LinearMove<JerkLimitedProfile>> planLinearJerkLimited(const double* distancesMm,
+motion::msg::Checked<LinearMove<JerkLimitedProfile>> planLinearJerkLimited(const double* distancesMm,
                                                                  const JerkLimits* limitsPerAxis, int axisCount);
 
 /// Seed 000's way: every axis uses the same acceleration time; the slowest axis (relative to its
 /// share of the line) sets the path speed.
-msg::Checked<LinearMove<SeedSCurve>> planLinearSeedSCurve(const double* distancesMm, const double* vMaxMmSPerAxis,
+motion::msg::Checked<LinearMove<SeedSCurve>> planLinearSeedSCurve(const double* distancesMm, const double* vMaxMmSPerAxis,
                                                         double accelTimeS, int axisCount);
 
 /// Contour (cross-track) error of an XY point that should lie on the line at angle θ to the x axis:

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace msg {
+namespace motion::msg {
 
 namespace {
 
@@ -152,4 +152,4 @@ bool operator==(const Message& a, const Message& b)
     return true;
 }
 
-} // namespace msg
+} // namespace motion::msg

@@ -16,7 +16,7 @@
 #include <variant>
 #include <vector>
 
-namespace msg {
+namespace motion::msg {
 
 /// How a number is shown: its unit symbol (SI, the same in every language) and
 /// the precision that suits it. Count and None have no symbol.
@@ -77,7 +77,7 @@ struct Message {
 };
 
 // Builders, so call sites read like the sentence they stand for:
-//   msg::make("pattern.value_above", {msg::real("min", 0, msg::Unit::Mm), msg::real("value", r, msg::Unit::Mm)})
+//   motion::msg::make("pattern.value_above", {motion::msg::real("min", 0, motion::msg::Unit::Mm), motion::msg::real("value", r, motion::msg::Unit::Mm)})
 Arg real(std::string name, double value, Unit unit = Unit::None);
 Arg integer(std::string name, long long value, Unit unit = Unit::Count);
 Arg verbatim(std::string name, std::string text);
@@ -93,4 +93,4 @@ std::string debugString(const Message& m);
 bool operator==(const Message& a, const Message& b);
 inline bool operator!=(const Message& a, const Message& b) { return !(a == b); }
 
-} // namespace msg
+} // namespace motion::msg

@@ -1,6 +1,6 @@
 #include "motion/problem.h"
 
-namespace msg {
+namespace motion::msg {
 
 Problem error(std::string path, Message message) { return Problem(std::move(path), std::move(message)); }
 
@@ -54,4 +54,4 @@ std::string debugFormat(const Problems& problems)
     return out;
 }
 
-} // namespace msg
+} // namespace motion::msg

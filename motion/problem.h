@@ -2,7 +2,7 @@
 // One thing wrong with what a person gave: a plan, a pattern, a machine profile, an
 // accuracy test, a recipe, a file. Every validator and reader reports all its problems
 // at once as a list of these, so a person fixes the input in one pass, and the CLI, the
-// API and the screens word each one the same way (words::problem, words::toJson).
+// API and the screens word each one the same way (ui::words::problem, ui::words::toJson).
 //
 // The message is data (an id and typed arguments, motion/message.h), without the
 // place: the place is the field path and, where a reader knows it, the file, line and
@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-namespace msg {
+namespace motion::msg {
 
 enum class Severity {
     Error,    ///< refuses the input: a run does not start, a file is not taken
@@ -58,9 +58,9 @@ std::string fieldPath(const std::string& parent, const std::string& key);
 std::string indexPath(const std::string& parent, std::size_t index);
 
 /// "FILE:LINE:COLUMN: PATH: warning: id{args}" (each part only where known), for logs,
-/// fuzzers and test failures, never for people: they read words::problem.
+/// fuzzers and test failures, never for people: they read ui::words::problem.
 std::string debugString(const Problem& p);
 /// debugString of each, one a line.
 std::string debugFormat(const Problems& problems);
 
-} // namespace msg
+} // namespace motion::msg

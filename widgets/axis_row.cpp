@@ -31,16 +31,16 @@ QWidget* lampBox(QWidget* parent, StatusLamp* lamp)
 }
 } // namespace
 
-QList<double> AxisRow::stepPresets(const dev::AxisDescriptor& d, proto::DeviceKind kind)
+QList<double> AxisRow::stepPresets(const dev::AxisDescriptor& d, dev::proto::DeviceKind kind)
 {
-    if (d.unit == proto::AxisUnit::Microlitre)
+    if (d.unit == dev::proto::AxisUnit::Microlitre)
         return {0.5, 1, 5, 10, 50, 100};
-    if (kind == proto::DeviceKind::Stage)
+    if (kind == dev::proto::DeviceKind::Stage)
         return {0.001, 0.01, 0.1, 1, 10};
     return {0.01, 0.1, 1, 10, 50};
 }
 
-AxisRow::AxisRow(int axis, const dev::AxisDescriptor& d, proto::DeviceKind kind, QGridLayout* grid, int row,
+AxisRow::AxisRow(int axis, const dev::AxisDescriptor& d, dev::proto::DeviceKind kind, QGridLayout* grid, int row,
                  QWidget* parent)
     : QObject(parent), m_axis(axis), m_desc(d), m_kind(kind)
 {
@@ -178,7 +178,7 @@ void AxisRow::retranslateUi()
     // run-time rewording cannot tell this class's words from another's ("Home" the
     // button, "home" the event), so the row words itself again on a language switch.
     const QChar letter = m_desc.letter;
-    m_name->setToolTip(m_desc.unit == proto::AxisUnit::Microlitre ? tr("Plunger pump, µL") : tr("Axis %1, mm").arg(letter));
+    m_name->setToolTip(m_desc.unit == dev::proto::AxisUnit::Microlitre ? tr("Plunger pump, µL") : tr("Axis %1, mm").arg(letter));
     m_step->setToolTip(tr("Step size in %1: pick a preset or type your own").arg(m_desc.unitName()));
     setUsualToolTip(m_stepMinus, tr("Step %1 down by the step size").arg(letter));
     setUsualToolTip(m_stepPlus, tr("Step %1 up by the step size").arg(letter));
@@ -210,7 +210,7 @@ void AxisRow::showLampTips()
         return;
     }
     m_commanded->setToolTip(tr("Commanded position (%1)").arg(m_desc.unitName()));
-    m_measured->setToolTip(m_kind == proto::DeviceKind::Stage ? tr("Grating scale reading (%1)").arg(m_desc.unitName())
+    m_measured->setToolTip(m_kind == dev::proto::DeviceKind::Stage ? tr("Grating scale reading (%1)").arg(m_desc.unitName())
                                                               : tr("Encoder reading (%1)").arg(m_desc.unitName()));
     m_homed->setToolTip(m_isHomed ? tr("Homed") : m_homing ? tr("Homing…") : tr("Not homed: absolute moves are refused"));
     m_homeSwitch->setToolTip(tr("Home switch"));

@@ -19,7 +19,7 @@ class StatusLamp;
 class AxisRow : public QObject {
     Q_OBJECT
 public:
-    AxisRow(int axis, const dev::AxisDescriptor& descriptor, proto::DeviceKind kind, QGridLayout* grid, int row,
+    AxisRow(int axis, const dev::AxisDescriptor& descriptor, dev::proto::DeviceKind kind, QGridLayout* grid, int row,
             QWidget* parent);
     ~AxisRow() override;
 
@@ -37,7 +37,7 @@ public:
     void setEnabled(const QString& whyNot);
     /// Words the row's texts again in the language now in force.
     void retranslateUi();
-    static QList<double> stepPresets(const dev::AxisDescriptor& d, proto::DeviceKind kind);
+    static QList<double> stepPresets(const dev::AxisDescriptor& d, dev::proto::DeviceKind kind);
 
 signals:
     void stepRequested(int axis, double delta);
@@ -56,7 +56,7 @@ private:
 
     int m_axis;
     dev::AxisDescriptor m_desc;
-    proto::DeviceKind m_kind;
+    dev::proto::DeviceKind m_kind;
     int m_decimals;
     QLabel* m_name;
     QLabel* m_commanded;

@@ -13,13 +13,13 @@ constexpr int kKeyRole = Qt::UserRole;            ///< channelId of a channel it
 constexpr int kInstrumentRole = Qt::UserRole + 1; ///< instrument index of any item
 constexpr int kIsChannelRole = Qt::UserRole + 2;
 
-tele::ChannelKey keyOf(const QTreeWidgetItem* item)
+dev::tele::ChannelKey keyOf(const QTreeWidgetItem* item)
 {
     const int id = item->data(0, kKeyRole).toInt();
-    tele::ChannelKey k;
+    dev::tele::ChannelKey k;
     k.instrument = id >> 16;
     k.ref.axis = static_cast<std::uint8_t>((id >> 8) & 0xFF);
-    k.ref.kind = static_cast<proto::ChannelKind>(id & 0xFF);
+    k.ref.kind = static_cast<dev::proto::ChannelKind>(id & 0xFF);
     return k;
 }
 } // namespace
@@ -138,7 +138,7 @@ void ChannelPicker::setCurrentPlot(int index)
 
 int ChannelPicker::currentPlot() const { return m_plot->currentIndex(); }
 
-QTreeWidgetItem* ChannelPicker::itemFor(const tele::ChannelKey& key) const
+QTreeWidgetItem* ChannelPicker::itemFor(const dev::tele::ChannelKey& key) const
 {
     const int id = channelId(key);
     for (int i = 0; i < m_tree->topLevelItemCount(); ++i) {
@@ -150,7 +150,7 @@ QTreeWidgetItem* ChannelPicker::itemFor(const tele::ChannelKey& key) const
     return nullptr;
 }
 
-void ChannelPicker::showChecked(const QVector<tele::ChannelKey>& channels)
+void ChannelPicker::showChecked(const QVector<dev::tele::ChannelKey>& channels)
 {
     QSet<int> ids;
     for (const auto& k : channels)
@@ -183,13 +183,13 @@ void ChannelPicker::revealChecked()
         m_tree->topLevelItem(i)->setExpanded(withTicks.isEmpty() || withTicks.contains(m_tree->topLevelItem(i)));
 }
 
-bool ChannelPicker::isChecked(const tele::ChannelKey& key) const
+bool ChannelPicker::isChecked(const dev::tele::ChannelKey& key) const
 {
     const QTreeWidgetItem* item = itemFor(key);
     return item && item->checkState(0) == Qt::Checked;
 }
 
-bool ChannelPicker::setChecked(const tele::ChannelKey& key, bool on)
+bool ChannelPicker::setChecked(const dev::tele::ChannelKey& key, bool on)
 {
     QTreeWidgetItem* item = itemFor(key);
     if (!item)

@@ -16,7 +16,7 @@ class ChannelPicker : public QWidget {
     Q_OBJECT
 public:
     struct Entry {
-        tele::ChannelKey key;
+        dev::tele::ChannelKey key;
         QString name, unit;
     };
 
@@ -31,20 +31,20 @@ public:
     void setCurrentPlot(int index);
     int currentPlot() const;
     /// Ticks exactly these channels (the current plot's) without emitting toggles.
-    void showChecked(const QVector<tele::ChannelKey>& channels);
-    bool isChecked(const tele::ChannelKey& key) const;
+    void showChecked(const QVector<dev::tele::ChannelKey>& channels);
+    bool isChecked(const dev::tele::ChannelKey& key) const;
     /// Expands the instruments that have ticked channels and folds the others
     /// (all expanded when nothing is ticked), so a plot's channels are in view.
     void revealChecked();
     /// As if the person ticked or unticked the box: emits channelToggled on a change.
-    bool setChecked(const tele::ChannelKey& key, bool on);
+    bool setChecked(const dev::tele::ChannelKey& key, bool on);
 
 signals:
-    void channelToggled(int plot, const tele::ChannelKey& key, bool on);
+    void channelToggled(int plot, const dev::tele::ChannelKey& key, bool on);
     void currentPlotChanged(int index);
 
 private:
-    QTreeWidgetItem* itemFor(const tele::ChannelKey& key) const;
+    QTreeWidgetItem* itemFor(const dev::tele::ChannelKey& key) const;
     QTreeWidgetItem* instrumentItem(int instrument);
 
     QComboBox* m_plot;

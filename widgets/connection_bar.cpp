@@ -141,7 +141,7 @@ void ConnectionBar::updateTexts()
                                    "output, status rate). Default wiring: each axis on the GRBL axis of its letter, the "
                                    "analyzer's pump on A at 1 µL per mm, no trigger")
                               : tr("Machine profile %1").arg(profile));
-    m_identity->setFullText(m_activity.isEmpty() ? QStringLiteral("%1 — %2").arg(words::term(dev::linkStateTerm(m_state)), m_identityText)
+    m_identity->setFullText(m_activity.isEmpty() ? QStringLiteral("%1 — %2").arg(ui::words::term(dev::linkStateTerm(m_state)), m_identityText)
                                                  : m_activity);
 }
 
@@ -267,7 +267,7 @@ void ConnectionBar::showState(dev::LinkState state, const QString& identity)
     case dev::LinkState::Ready: m_lamp->setTone(T::Ok); break;
     case dev::LinkState::Lost: m_lamp->setTone(T::Alarm); break;
     }
-    m_lamp->setToolTip(words::term(dev::linkStateTerm(state)));
+    m_lamp->setToolTip(ui::words::term(dev::linkStateTerm(state)));
     const bool idle = state == dev::LinkState::Disconnected || state == dev::LinkState::Lost;
     m_source->setEnabled(idle);
     m_baud->setEnabled(idle);

@@ -65,15 +65,15 @@ QStringList EventLog::cellsOf(const Entry& e) const
 {
     QString instrument = e.instrumentText;
     if (e.instrument)
-        instrument = *e.instrument == proto::DeviceKind::Stage ? tr("Stage") : tr("Analyzer");
+        instrument = *e.instrument == dev::proto::DeviceKind::Stage ? tr("Stage") : tr("Analyzer");
     QString kind = e.kindText, details = e.noteText;
     if (e.event) {
-        const std::string term = proto::eventKindTerm(*e.event);
+        const std::string term = dev::proto::eventKindTerm(*e.event);
         // A kind this build does not know (a newer device): by number, so it can be looked up.
-        kind = term == "device.event.unknown" ? tr("event %1").arg(static_cast<int>(*e.event)) : words::term(term);
+        kind = term == "device.event.unknown" ? tr("event %1").arg(static_cast<int>(*e.event)) : ui::words::term(term);
         // What the backend made of it (a GRBL alarm with its meaning) says more than the
         // device's own words ("ALARM:3"), and is worded in the language of the log.
-        const QString said = e.worded || !e.note.empty() ? words::text(e.note) : e.deviceText;
+        const QString said = e.worded || !e.note.empty() ? ui::words::text(e.note) : e.deviceText;
         details = said;
         if (e.position) {
             const QString at = e.segment ? tr("segment %1").arg(static_cast<qint64>(*e.position))
@@ -82,9 +82,9 @@ QStringList EventLog::cellsOf(const Entry& e) const
         }
     } else {
         if (!e.kindTerm.empty())
-            kind = words::term(e.kindTerm);
+            kind = ui::words::term(e.kindTerm);
         if (!e.note.empty())
-            details = words::text(e.note);
+            details = ui::words::text(e.note);
     }
     return {QLocale().toString(e.time, QStringLiteral("HH:mm:ss.zzz")), instrument, e.axis, kind, details};
 }
@@ -117,9 +117,9 @@ void EventLog::append(Entry e)
     m_table->scrollToBottom();
 }
 
-void EventLog::addEvent(proto::DeviceKind instrument, const dev::DeviceIdentity& id, const dev::DeviceEvent& event)
+void EventLog::addEvent(dev::proto::DeviceKind instrument, const dev::DeviceIdentity& id, const dev::DeviceEvent& event)
 {
-    if (event.kind == proto::EventKind::PathSegmentDone)
+    if (event.kind == dev::proto::EventKind::PathSegmentDone)
         return;  // not logged (below): the entry before it is another event's
     addEvent(QString(), id, event);
     if (!m_entries.empty() && m_entries.back().event && m_entries.back().instrumentText.isEmpty()) {
@@ -132,20 +132,20 @@ void EventLog::addEvent(const QString& instrument, const dev::DeviceIdentity& id
 {
     // A path reports every segment it completes: the Patterns screen shows that as progress;
     // in the log it would bury everything else.
-    if (ev.kind == proto::EventKind::PathSegmentDone)
+    if (ev.kind == dev::proto::EventKind::PathSegmentDone)
         return;
     Entry e;
     e.time = ev.hostTime.time();
     e.instrumentText = instrument;
     e.axis = ev.axis >= 0 && ev.axis < id.axes.size() ? QString(id.axes[ev.axis].letter) : QString();
     switch (ev.kind) {
-    case proto::EventKind::LimitHit:
-    case proto::EventKind::Fault:
-    case proto::EventKind::EStop:
-    case proto::EventKind::LostSteps: e.color = QColor(0xB7, 0x1C, 0x1C); break;
-    case proto::EventKind::JogExpired:
-    case proto::EventKind::PathUnderrun:
-    case proto::EventKind::PathAborted: e.color = QColor(0x9A, 0x67, 0x00); break;
+    case dev::proto::EventKind::LimitHit:
+    case dev::proto::EventKind::Fault:
+    case dev::proto::EventKind::EStop:
+    case dev::proto::EventKind::LostSteps: e.color = QColor(0xB7, 0x1C, 0x1C); break;
+    case dev::proto::EventKind::JogExpired:
+    case dev::proto::EventKind::PathUnderrun:
+    case dev::proto::EventKind::PathAborted: e.color = QColor(0x9A, 0x67, 0x00); break;
     default: break;
     }
     e.event = ev.kind;
@@ -156,14 +156,14 @@ void EventLog::addEvent(const QString& instrument, const dev::DeviceIdentity& id
         const double shown = std::round(ev.position * 1000) / 1000;
         e.position = shown == 0 ? 0.0 : shown;
         e.unit = id.axes[ev.axis].unitName();
-    } else if (ev.kind >= proto::EventKind::PathStarted && ev.kind <= proto::EventKind::PathAborted) {
+    } else if (ev.kind >= dev::proto::EventKind::PathStarted && ev.kind <= dev::proto::EventKind::PathAborted) {
         e.position = ev.position;
         e.segment = true;
     }
     append(std::move(e));
 }
 
-void EventLog::addNote(proto::DeviceKind instrument, const std::string& kindTerm, const msg::Message& text, bool isError)
+void EventLog::addNote(dev::proto::DeviceKind instrument, const std::string& kindTerm, const motion::msg::Message& text, bool isError)
 {
     Entry e;
     e.time = QTime::currentTime();
@@ -174,7 +174,7 @@ void EventLog::addNote(proto::DeviceKind instrument, const std::string& kindTerm
     append(std::move(e));
 }
 
-void EventLog::addNote(const QString& instrument, const std::string& kindTerm, const msg::Message& text, bool isError)
+void EventLog::addNote(const QString& instrument, const std::string& kindTerm, const motion::msg::Message& text, bool isError)
 {
     Entry e;
     e.time = QTime::currentTime();

@@ -23,11 +23,11 @@ class EventLog : public QWidget {
 public:
     static constexpr int kMaxRows = 5000;
     explicit EventLog(QWidget* parent = nullptr);
-    void addEvent(proto::DeviceKind instrument, const dev::DeviceIdentity& id, const dev::DeviceEvent& event);
+    void addEvent(dev::proto::DeviceKind instrument, const dev::DeviceIdentity& id, const dev::DeviceEvent& event);
     /// A note whose kind is a term ("log.kind.link") and whose text is a message:
     /// both worded again when the language changes.
-    void addNote(proto::DeviceKind instrument, const std::string& kindTerm, const msg::Message& text, bool isError = false);
-    void addNote(const QString& instrument, const std::string& kindTerm, const msg::Message& text, bool isError = false);
+    void addNote(dev::proto::DeviceKind instrument, const std::string& kindTerm, const motion::msg::Message& text, bool isError = false);
+    void addNote(const QString& instrument, const std::string& kindTerm, const motion::msg::Message& text, bool isError = false);
     /// A note already in words (shown as it is in every language).
     void addEvent(const QString& instrument, const dev::DeviceIdentity& id, const dev::DeviceEvent& event);
     void addNote(const QString& instrument, const QString& kind, const QString& text, bool isError = false);
@@ -42,10 +42,10 @@ protected:
 private:
     struct Entry {
         QTime time;
-        std::optional<proto::DeviceKind> instrument;  ///< worded; else instrumentText
+        std::optional<dev::proto::DeviceKind> instrument;  ///< worded; else instrumentText
         QString instrumentText;
         QString axis;
-        std::optional<proto::EventKind> event;        ///< a device event …
+        std::optional<dev::proto::EventKind> event;        ///< a device event …
         QString deviceText;                           ///< … its text, as the device sent it
         std::optional<double> position;               ///< … and where (axis units, or a segment index)
         QString unit;
@@ -53,7 +53,7 @@ private:
         std::string kindTerm;                         ///< a note of a worded kind …
         QString kindText;                             ///< … or of a kind already in words
         bool worded = false;                          ///< an event whose detail says all the device said
-        msg::Message note;                            ///< a worded note, or an event's structured detail …
+        motion::msg::Message note;                            ///< a worded note, or an event's structured detail …
         QString noteText;                             ///< … or one already in words
         QColor color;
     };

@@ -137,7 +137,7 @@ JogScreen::JogScreen(dev::Instrument* client, QWidget* parent) : QWidget(parent)
     rebuild();
 }
 
-void JogScreen::setTelemetry(tele::TelemetryHub* hub, int instrument)
+void JogScreen::setTelemetry(dev::tele::TelemetryHub* hub, int instrument)
 {
     m_strip->setTelemetry(hub, instrument);
     m_strip->setVisible(hub != nullptr);
@@ -157,13 +157,13 @@ void JogScreen::rebuild()
         delete item;
     }
     const auto& id = m_client->identity();
-    m_title->setText(id.axes.isEmpty() ? tr("No instrument") : words::modelName(id));
+    m_title->setText(id.axes.isEmpty() ? tr("No instrument") : ui::words::modelName(id));
     showKeys();
     if (id.axes.isEmpty()) {
         refresh();
         return;
     }
-    const QStringList heads = {tr("Axis"), tr("Commanded"), id.kind == proto::DeviceKind::Stage ? tr("Grating") : tr("Encoder"),
+    const QStringList heads = {tr("Axis"), tr("Commanded"), id.kind == dev::proto::DeviceKind::Stage ? tr("Grating") : tr("Encoder"),
                                tr("Homed"), tr("Home sw"), tr("Limit sw"), tr("Moving"), tr("Step"), tr("Hold"),
                                QString(), QString(), tr("Go to"), tr("Soft limits")};
     for (int c = 0; c < heads.size(); ++c) {
@@ -199,7 +199,7 @@ void JogScreen::refresh()
 {
     const bool ready = m_client->isReady();
     const auto& st = m_client->status();
-    QString state = words::term(dev::linkStateTerm(m_client->state()));
+    QString state = ui::words::term(dev::linkStateTerm(m_client->state()));
     if (ready && st.estop)
         state = tr("E-STOP active — press Reset E-stop to clear");
     m_state->setText(state);
@@ -211,7 +211,7 @@ void JogScreen::refresh()
         : st.estop               ? tr("E-STOP is latched: press Reset E-stop first")
                                  : QString();
     setUsualToolTip(m_homeAll, tr("Home every axis (the analyzer lifts Z first, then X and Y)"));
-    setEnabledOr(m_homeAll, !whyNot.isEmpty() ? whyNot : canHome ? QString() : words::text(m_client->whyNot(dev::Capability::Homing)));
+    setEnabledOr(m_homeAll, !whyNot.isEmpty() ? whyNot : canHome ? QString() : ui::words::text(m_client->whyNot(dev::Capability::Homing)));
     m_setHome->setVisible(ready && !m_client->capabilities().testFlag(dev::Capability::Homing)
                           && m_client->capabilities().testFlag(dev::Capability::SetZero));
     m_setHome->setEnabled(canMove && !st.anyMoving() && !st.positionLost);
@@ -220,7 +220,7 @@ void JogScreen::refresh()
                             && !m_client->capabilities().testFlag(dev::Capability::StopsOnHostLoss);
     m_hostLossNote->setVisible(noWatchdog);
     if (noWatchdog)
-        m_hostLossNote->setText(words::text(m_client->whyNot(dev::Capability::StopsOnHostLoss)));
+        m_hostLossNote->setText(ui::words::text(m_client->whyNot(dev::Capability::StopsOnHostLoss)));
     setEnabledOr(m_stop, ready ? QString() : tr("Connect the instrument first"));
     for (AxisRow* r : m_rows) {
         r->setEnabled(whyNot);
@@ -254,7 +254,7 @@ void JogScreen::changeEvent(QEvent* event)
         // Worded here rather than by the window's rewording of texts already shown: the rows'
         // buttons sit in this screen's grid, where "Home" could be read as another class's word.
         const auto& id = m_client->identity();
-        m_title->setText(id.axes.isEmpty() ? tr("No instrument") : words::modelName(id));
+        m_title->setText(id.axes.isEmpty() ? tr("No instrument") : ui::words::modelName(id));
         showKeys();
         for (AxisRow* r : m_rows)
             r->retranslateUi();
@@ -311,7 +311,7 @@ void JogScreen::homeAxes(quint8 mask)
         if ((mask == 0 || (mask & (1u << i))) && id.axes[i].letter == QLatin1Char('P') && st.axes[i].commanded > 0.05)
             liquid = tr(" The plunger holds %1 µL: homing it pushes that out of the tip, wherever the tip is now.")
                          .arg(QLocale().toString(st.axes[i].commanded, 'f', 1));
-    if (!confirm(tr("Home %1 of the %2?%3%4 Keep hands and labware clear.").arg(which, words::term(dev::instrumentTerm(id.kind)), order, liquid)))
+    if (!confirm(tr("Home %1 of the %2?%3%4 Keep hands and labware clear.").arg(which, ui::words::term(dev::instrumentTerm(id.kind)), order, liquid)))
         return;
     m_client->home(mask);
 }

@@ -12,7 +12,7 @@ class QLabel;
 class QPushButton;
 class QSlider;
 
-namespace tele {
+namespace dev::tele {
 class TelemetryHub;
 }
 
@@ -39,7 +39,7 @@ public:
     /// Moves farther than this share of an axis' travel ask for confirmation first.
     static constexpr double kFarMoveShare = 0.25;
     /// Shows the live position / following-error strip of the axis last jogged.
-    void setTelemetry(tele::TelemetryHub* hub, int instrument);
+    void setTelemetry(dev::tele::TelemetryHub* hub, int instrument);
     /// While this screen is not shown, the jog keys still move its instrument when
     /// `mine` says so (the window's screen shown leaves the arrow keys to jogging and is
     /// about this instrument); a text field being edited keeps them all the same.

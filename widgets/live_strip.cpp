@@ -55,7 +55,7 @@ LiveStrip::~LiveStrip()
 
 QString LiveStrip::consumer() const { return QStringLiteral("jog-strip-%1").arg(m_instrument); }
 
-void LiveStrip::setTelemetry(tele::TelemetryHub* hub, int instrument)
+void LiveStrip::setTelemetry(dev::tele::TelemetryHub* hub, int instrument)
 {
     if (m_hub) {
         m_hub->setWanted(consumer(), {}, 0);
@@ -65,7 +65,7 @@ void LiveStrip::setTelemetry(tele::TelemetryHub* hub, int instrument)
     m_source.setHub(hub);
     m_instrument = instrument;
     if (m_hub)
-        connect(m_hub, &tele::TelemetryHub::dataArrived, this, [this](int i) {
+        connect(m_hub, &dev::tele::TelemetryHub::dataArrived, this, [this](int i) {
             if (i == m_instrument && isVisible() && !m_frame.isActive())
                 m_frame.start();
         });
@@ -91,12 +91,12 @@ void LiveStrip::setAxis(int axis)
     rebuildChannels();
 }
 
-QVector<tele::ChannelKey> LiveStrip::channels() const
+QVector<dev::tele::ChannelKey> LiveStrip::channels() const
 {
     const auto a = static_cast<std::uint8_t>(m_axis);
-    return {tele::ChannelKey{m_instrument, {a, proto::ChannelKind::Commanded}},
-            tele::ChannelKey{m_instrument, {a, proto::ChannelKind::Measured}},
-            tele::ChannelKey{m_instrument, {a, proto::ChannelKind::FollowingError}}};
+    return {dev::tele::ChannelKey{m_instrument, {a, dev::proto::ChannelKind::Commanded}},
+            dev::tele::ChannelKey{m_instrument, {a, dev::proto::ChannelKind::Measured}},
+            dev::tele::ChannelKey{m_instrument, {a, dev::proto::ChannelKind::FollowingError}}};
 }
 
 void LiveStrip::rebuildChannels()

@@ -26,13 +26,13 @@ public:
     explicit LiveStrip(QWidget* parent = nullptr);
     ~LiveStrip() override;
 
-    void setTelemetry(tele::TelemetryHub* hub, int instrument);
+    void setTelemetry(dev::tele::TelemetryHub* hub, int instrument);
     /// Axis letters of the instrument, in axis order (the axis chooser).
     void setAxes(const QStringList& letters);
     void setAxis(int axis);
     int axis() const { return m_axis; }
     /// The channels the strip shows now: commanded, measured, following error.
-    QVector<tele::ChannelKey> channels() const;
+    QVector<dev::tele::ChannelKey> channels() const;
     PlotStack* stack() const { return m_stack; }
     int framesDrawn() const { return m_frames; }
 
@@ -46,7 +46,7 @@ private:
     void redraw();
     QString consumer() const;
 
-    QPointer<tele::TelemetryHub> m_hub;
+    QPointer<dev::tele::TelemetryHub> m_hub;
     HubPlotSource m_source;
     int m_instrument = 0;
     int m_axis = 0;

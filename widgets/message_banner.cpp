@@ -85,7 +85,7 @@ void MessageBanner::add(Entry e)
 {
     if (e.text.isEmpty())
         return;
-    e.text = words::sentence(e.text);
+    e.text = ui::words::sentence(e.text);
     const QString& text = e.text;
     const Level level = e.level;
     if (hasMessage() && text == m_shown.text) {
@@ -188,7 +188,7 @@ void MessageBanner::changeEvent(QEvent* event)
     if (event->type() == QEvent::LanguageChange) {
         auto reword = [](Entry& e) {
             if (e.wording)
-                e.text = words::sentence(e.wording());
+                e.text = ui::words::sentence(e.wording());
         };
         reword(m_shown);
         for (Entry& w : m_waiting)

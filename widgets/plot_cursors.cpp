@@ -167,7 +167,7 @@ QVector<CursorReading> PlotCursors::readings() const
             r.name = l.name;
             r.unit = l.unit;
             const double anchor = m_stack->anchorS(l.key.instrument);
-            const tele::ChannelStore* store = source ? source->store(l.key) : nullptr;
+            const dev::tele::ChannelStore* store = source ? source->store(l.key) : nullptr;
             if (store && !store->empty() && !std::isnan(anchor)) {
                 r.a = store->nearest(anchor + m_x[0]);
                 r.b = store->nearest(anchor + m_x[1]);

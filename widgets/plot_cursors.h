@@ -19,9 +19,9 @@ class PlotStack;
 
 struct CursorReading {
     int panel = 0;
-    tele::ChannelKey key;
+    dev::tele::ChannelKey key;
     QString name, unit;
-    std::optional<tele::Sample> a, b;  ///< nearest stored sample to each cursor (device time)
+    std::optional<dev::tele::Sample> a, b;  ///< nearest stored sample to each cursor (device time)
     std::optional<double> deltaY() const
     {
         if (!a || !b)

@@ -27,8 +27,8 @@ QByteArray csvField(const QString& s)
 }
 
 struct Column {
-    tele::ChannelKey key;
-    const tele::ChannelStore* store = nullptr;
+    dev::tele::ChannelKey key;
+    const dev::tele::ChannelStore* store = nullptr;
     double anchorS = 0;
     std::size_t next = 0, end = 0;  ///< raw samples [next, end) still to write
 };
@@ -56,7 +56,7 @@ CsvExportResult exportCsv(const PlotStack& stack, const QString& path, qint64 ra
     const QCPRange range = stack.timeRange();
     std::vector<Column> cols;
     qint64 total = 0;
-    for (const tele::ChannelKey& key : stack.allChannels()) {
+    for (const dev::tele::ChannelKey& key : stack.allChannels()) {
         Column c;
         c.key = key;
         c.store = source->store(key);
@@ -140,7 +140,7 @@ CsvExportResult exportCsv(const PlotStack& stack, const QString& path, qint64 ra
         }
     } else {
         const int columns = std::max(1, stack.columns());
-        std::vector<std::vector<tele::MinMax>> mm(cols.size(), std::vector<tele::MinMax>(std::size_t(columns)));
+        std::vector<std::vector<dev::tele::MinMax>> mm(cols.size(), std::vector<dev::tele::MinMax>(std::size_t(columns)));
         for (std::size_t i = 0; i < cols.size(); ++i)
             if (cols[i].store && !cols[i].store->empty() && !std::isnan(cols[i].anchorS))
                 cols[i].store->decimate(cols[i].anchorS + range.lower, cols[i].anchorS + range.upper, columns, mm[i].data());
@@ -155,7 +155,7 @@ CsvExportResult exportCsv(const PlotStack& stack, const QString& path, qint64 ra
                 out += QByteArray::number(range.lower + (col + 0.5) * width, 'f', 6) + ',';
                 for (const auto& m : mm) {
                     out += ',';
-                    const tele::MinMax& v = m[std::size_t(col)];
+                    const dev::tele::MinMax& v = m[std::size_t(col)];
                     if (!v.empty())
                         out += QByteArray::number(which == 0 ? v.min : v.max, 'g', 9);
                 }

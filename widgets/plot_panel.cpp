@@ -11,32 +11,32 @@ namespace {
 
 /// Colours by instrument and axis, so a channel keeps its colour in every plot:
 /// the stage's X/Y in blue/orange, the analyzer's X/Y/Z/P in green/red/purple/brown.
-QColor colourFor(const tele::ChannelKey& key)
+QColor colourFor(const dev::tele::ChannelKey& key)
 {
     static const QColor stage[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xff, 0x7f, 0x0e)};
     static const QColor analyzer[] = {QColor(0x2c, 0xa0, 0x2c), QColor(0xd6, 0x27, 0x28), QColor(0x94, 0x67, 0xbd),
                                       QColor(0x8c, 0x56, 0x4b)};
-    if (key.ref.axis == proto::kNoAxis)
+    if (key.ref.axis == dev::proto::kNoAxis)
         return QColor(0xe3, 0x77, 0xc2);
     if (key.instrument == 1)
         return stage[key.ref.axis % 2];
     return analyzer[key.ref.axis % 4];
 }
 
-Qt::PenStyle styleFor(proto::ChannelKind kind)
+Qt::PenStyle styleFor(dev::proto::ChannelKind kind)
 {
     switch (kind) {
-    case proto::ChannelKind::Commanded: return Qt::DashLine;
-    case proto::ChannelKind::Velocity: return Qt::DotLine;
-    case proto::ChannelKind::ControllerOutput: return Qt::DashDotLine;
-    case proto::ChannelKind::Switches: return Qt::DashDotDotLine;
+    case dev::proto::ChannelKind::Commanded: return Qt::DashLine;
+    case dev::proto::ChannelKind::Velocity: return Qt::DotLine;
+    case dev::proto::ChannelKind::ControllerOutput: return Qt::DashDotLine;
+    case dev::proto::ChannelKind::Switches: return Qt::DashDotDotLine;
     default: return Qt::SolidLine;
     }
 }
 
 } // namespace
 
-QPen PlotPanel::penFor(const tele::ChannelKey& key)
+QPen PlotPanel::penFor(const dev::tele::ChannelKey& key)
 {
     // One pixel wide: the raster engine draws such lines on its fast path; a wider
     // (or fractional) pen goes through the stroker and costs ten times as much.
@@ -98,7 +98,7 @@ QCPAxis* PlotPanel::timeAxis() const { return m_rect->axis(QCPAxis::atBottom); }
 QCPAxis* PlotPanel::leftAxis() const { return m_rect->axis(QCPAxis::atLeft); }
 QCPAxis* PlotPanel::rightAxis() const { return m_rect->axis(QCPAxis::atRight); }
 
-int PlotPanel::indexOf(const tele::ChannelKey& key) const
+int PlotPanel::indexOf(const dev::tele::ChannelKey& key) const
 {
     for (int i = 0; i < m_lines.size(); ++i)
         if (sameChannel(m_lines[i].key, key))
@@ -106,21 +106,21 @@ int PlotPanel::indexOf(const tele::ChannelKey& key) const
     return -1;
 }
 
-QVector<tele::ChannelKey> PlotPanel::channels() const
+QVector<dev::tele::ChannelKey> PlotPanel::channels() const
 {
-    QVector<tele::ChannelKey> out;
+    QVector<dev::tele::ChannelKey> out;
     for (const Line& l : m_lines)
         out << l.key;
     return out;
 }
 
-QCPGraph* PlotPanel::graph(const tele::ChannelKey& key) const
+QCPGraph* PlotPanel::graph(const dev::tele::ChannelKey& key) const
 {
     const int i = indexOf(key);
     return i < 0 ? nullptr : m_lines[i].graph;
 }
 
-bool PlotPanel::addChannel(const tele::ChannelKey& key, const QString& name, const QString& unit)
+bool PlotPanel::addChannel(const dev::tele::ChannelKey& key, const QString& name, const QString& unit)
 {
     if (hasChannel(key))
         return false;
@@ -155,7 +155,7 @@ void PlotPanel::rename(const PlotDataSource& source)
     }
 }
 
-bool PlotPanel::removeChannel(const tele::ChannelKey& key)
+bool PlotPanel::removeChannel(const dev::tele::ChannelKey& key)
 {
     const int i = indexOf(key);
     if (i < 0)
@@ -205,7 +205,7 @@ void PlotPanel::refresh(const PlotDataSource& source, double x0S, double x1S, co
 {
     for (int i = 0; i < m_lines.size(); ++i) {
         Line& l = m_lines[i];
-        const tele::ChannelStore* store = source.store(l.key);
+        const dev::tele::ChannelStore* store = source.store(l.key);
         const int inst = std::clamp(l.key.instrument, 0, 1);
         m_extent[i] = {std::nan(""), std::nan("")};
         if (!store || store->empty() || std::isnan(anchorS[inst]) || columns <= 0 || !(x1S > x0S)) {
@@ -224,7 +224,7 @@ void PlotPanel::refresh(const PlotDataSource& source, double x0S, double x1S, co
     }
 }
 
-void PlotPanel::feed(Line& line, const tele::ChannelStore& store, double x0S, double x1S, double anchorS, int columns)
+void PlotPanel::feed(Line& line, const dev::tele::ChannelStore& store, double x0S, double x1S, double anchorS, int columns)
 {
     QVector<QCPGraphData>& pts = *m_points;
     pts.clear();
@@ -233,12 +233,12 @@ void PlotPanel::feed(Line& line, const tele::ChannelStore& store, double x0S, do
     const std::size_t hi = store.lowerBound(t1);
     // One sample either side of the range, so the line runs to the plot's edges.
     if (lo > 0) {
-        const tele::Sample s = store.at(lo - 1);
+        const dev::tele::Sample s = store.at(lo - 1);
         pts.append(QCPGraphData(s.tS - anchorS, s.value));
     }
     if (hi - lo <= 2 * static_cast<std::size_t>(columns)) {
         for (std::size_t i = lo; i < hi; ++i) {
-            const tele::Sample s = store.at(i);
+            const dev::tele::Sample s = store.at(i);
             pts.append(QCPGraphData(s.tS - anchorS, s.value));
         }
     } else {
@@ -247,7 +247,7 @@ void PlotPanel::feed(Line& line, const tele::ChannelStore& store, double x0S, do
         const double width = (x1S - x0S) / columns;
         double last = pts.isEmpty() ? std::nan("") : pts.last().value;
         for (int c = 0; c < columns; ++c) {
-            const tele::MinMax& mm = m_columns[static_cast<std::size_t>(c)];
+            const dev::tele::MinMax& mm = m_columns[static_cast<std::size_t>(c)];
             if (mm.empty())
                 continue;
             const double x = x0S + (c + 0.5) * width;
@@ -265,7 +265,7 @@ void PlotPanel::feed(Line& line, const tele::ChannelStore& store, double x0S, do
         }
     }
     if (hi < store.size()) {
-        const tele::Sample s = store.at(hi);
+        const dev::tele::Sample s = store.at(hi);
         pts.append(QCPGraphData(s.tS - anchorS, s.value));
     }
     line.graph->data()->set(pts, true);

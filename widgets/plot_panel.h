@@ -33,7 +33,7 @@ class PlotPanel : public QObject {
     Q_OBJECT
 public:
     struct Line {
-        tele::ChannelKey key;
+        dev::tele::ChannelKey key;
         QString name, unit;
         QCPGraph* graph = nullptr;
     };
@@ -49,15 +49,15 @@ public:
     QCPAxis* rightAxis() const;
     QCPLegend* legend() const { return m_legend; }
 
-    bool addChannel(const tele::ChannelKey& key, const QString& name, const QString& unit);
+    bool addChannel(const dev::tele::ChannelKey& key, const QString& name, const QString& unit);
     /// Names every line again from `source` (after a language switch).
     void rename(const PlotDataSource& source);
-    bool removeChannel(const tele::ChannelKey& key);
-    bool hasChannel(const tele::ChannelKey& key) const { return indexOf(key) >= 0; }
-    QVector<tele::ChannelKey> channels() const;
+    bool removeChannel(const dev::tele::ChannelKey& key);
+    bool hasChannel(const dev::tele::ChannelKey& key) const { return indexOf(key) >= 0; }
+    QVector<dev::tele::ChannelKey> channels() const;
     const QVector<Line>& lines() const { return m_lines; }
     /// The graph drawing `key`, or nullptr.
-    QCPGraph* graph(const tele::ChannelKey& key) const;
+    QCPGraph* graph(const dev::tele::ChannelKey& key) const;
 
     /// Shows the time tick labels and title (only the bottom panel of a stack does).
     void setTimeLabelsVisible(bool visible, const QString& title);
@@ -70,12 +70,12 @@ public:
     void autoScaleValues();
 
     /// Line colour and style of a channel: colour by instrument and axis, dash by kind.
-    static QPen penFor(const tele::ChannelKey& key);
+    static QPen penFor(const dev::tele::ChannelKey& key);
 
 private:
-    int indexOf(const tele::ChannelKey& key) const;
+    int indexOf(const dev::tele::ChannelKey& key) const;
     void relayoutAxes();
-    void feed(Line& line, const tele::ChannelStore& store, double x0S, double x1S, double anchorS, int columns);
+    void feed(Line& line, const dev::tele::ChannelStore& store, double x0S, double x1S, double anchorS, int columns);
 
     QCustomPlot* m_plot;
     QCPAxisRect* m_rect;
@@ -84,7 +84,7 @@ private:
     /// Value extent of the visible points per line (NaN when none), for auto-scale.
     QVector<std::pair<double, double>> m_extent;
     // Scratch buffers reused every frame so a redraw allocates nothing once warm.
-    std::vector<tele::MinMax> m_columns;
+    std::vector<dev::tele::MinMax> m_columns;
     std::unique_ptr<QVector<QCPGraphData>> m_points;
 };
 

@@ -110,7 +110,7 @@ void PlotStack::setHighlightedPanel(int index)
     relabel();
 }
 
-bool PlotStack::addChannel(int panel, const tele::ChannelKey& key)
+bool PlotStack::addChannel(int panel, const dev::tele::ChannelKey& key)
 {
     PlotPanel* p = m_panels.value(panel);
     if (!p || !m_source || !p->addChannel(key, m_source->channelName(key), m_source->channelUnit(key)))
@@ -120,7 +120,7 @@ bool PlotStack::addChannel(int panel, const tele::ChannelKey& key)
     return true;
 }
 
-bool PlotStack::removeChannel(int panel, const tele::ChannelKey& key)
+bool PlotStack::removeChannel(int panel, const dev::tele::ChannelKey& key)
 {
     PlotPanel* p = m_panels.value(panel);
     if (!p || !p->removeChannel(key))
@@ -130,9 +130,9 @@ bool PlotStack::removeChannel(int panel, const tele::ChannelKey& key)
     return true;
 }
 
-QVector<tele::ChannelKey> PlotStack::allChannels() const
+QVector<dev::tele::ChannelKey> PlotStack::allChannels() const
 {
-    QVector<tele::ChannelKey> out;
+    QVector<dev::tele::ChannelKey> out;
     for (const PlotPanel* p : m_panels)
         for (const auto& k : p->channels()) {
             bool seen = false;

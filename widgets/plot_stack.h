@@ -38,10 +38,10 @@ public:
     bool removePanel(int index);
 
     /// Name and unit come from the source.
-    bool addChannel(int panel, const tele::ChannelKey& key);
-    bool removeChannel(int panel, const tele::ChannelKey& key);
+    bool addChannel(int panel, const dev::tele::ChannelKey& key);
+    bool removeChannel(int panel, const dev::tele::ChannelKey& key);
     /// Every channel of every panel, each once.
-    QVector<tele::ChannelKey> allChannels() const;
+    QVector<dev::tele::ChannelKey> allChannels() const;
 
     /// Device time (s) at x = 0 for instrument 0 (analyzer) and 1 (stage); NaN hides its channels.
     void setAnchors(double analyzerS, double stageS);

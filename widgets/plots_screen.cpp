@@ -33,7 +33,7 @@ const QString kConsumerXy = QStringLiteral("plots-xy");
 constexpr qint64 kStaleMs = 1000;
 } // namespace
 
-PlotsScreen::PlotsScreen(tele::TelemetryHub* hub, QWidget* parent) : QWidget(parent), m_hub(hub), m_source(hub)
+PlotsScreen::PlotsScreen(dev::tele::TelemetryHub* hub, QWidget* parent) : QWidget(parent), m_hub(hub), m_source(hub)
 {
     auto* top = new QVBoxLayout(this);
     top->setContentsMargins(4, 4, 4, 2);
@@ -91,7 +91,7 @@ PlotsScreen::PlotsScreen(tele::TelemetryHub* hub, QWidget* parent) : QWidget(par
     });
     m_statusTimer.start();
 
-    connect(m_picker, &ChannelPicker::channelToggled, this, [this](int plot, const tele::ChannelKey& key, bool on) {
+    connect(m_picker, &ChannelPicker::channelToggled, this, [this](int plot, const dev::tele::ChannelKey& key, bool on) {
         if (on)
             addChannel(plot, key);
         else
@@ -110,20 +110,20 @@ PlotsScreen::PlotsScreen(tele::TelemetryHub* hub, QWidget* parent) : QWidget(par
     connect(m_cursors, &PlotCursors::changed, this, [this] { m_cursorsButton->setChecked(m_cursors->isVisible()); });
 
     if (m_hub) {
-        connect(m_hub, &tele::TelemetryHub::dataArrived, this, [this](int instrument) {
+        connect(m_hub, &dev::tele::TelemetryHub::dataArrived, this, [this](int instrument) {
             if (instrument >= 0 && instrument < 2)
                 m_arrival[instrument].start();
             if (!m_paused)
                 scheduleRedraw();
         });
-        connect(m_hub, &tele::TelemetryHub::subscriptionChanged, this, [this](int instrument, int rateHz, const msg::Message& note) {
+        connect(m_hub, &dev::tele::TelemetryHub::subscriptionChanged, this, [this](int instrument, int rateHz, const motion::msg::Message& note) {
             m_rates[instrument] = rateHz;
             m_notes[instrument] = note;
             updateStatus();
         });
-        connect(m_hub, &tele::TelemetryHub::problem, this, [this](const msg::Message& m) {
+        connect(m_hub, &dev::tele::TelemetryHub::problem, this, [this](const motion::msg::Message& m) {
             // A device clock that started again is news, not a fault: it must not stay red for minutes.
-            tell(words::text(m), m.id != "telemetry.clock_restarted");
+            tell(ui::words::text(m), m.id != "telemetry.clock_restarted");
         });
     }
     setWindowS(kDefaultWindowS);
@@ -200,7 +200,7 @@ bool PlotsScreen::removePlot(int index)
     return true;
 }
 
-bool PlotsScreen::addChannel(int plot, const tele::ChannelKey& key)
+bool PlotsScreen::addChannel(int plot, const dev::tele::ChannelKey& key)
 {
     if (!m_stack->addChannel(plot, key))
         return false;
@@ -211,7 +211,7 @@ bool PlotsScreen::addChannel(int plot, const tele::ChannelKey& key)
     return true;
 }
 
-bool PlotsScreen::removeChannel(int plot, const tele::ChannelKey& key)
+bool PlotsScreen::removeChannel(int plot, const dev::tele::ChannelKey& key)
 {
     if (!m_stack->removeChannel(plot, key))
         return false;
@@ -318,8 +318,8 @@ void PlotsScreen::updateWanted()
     if (!m_hub)
         return;
     const bool wanted = isVisible() || m_paused;
-    m_hub->setWanted(kConsumerPlots, wanted ? m_stack->allChannels() : QVector<tele::ChannelKey>{}, rateHz());
-    m_hub->setWanted(kConsumerXy, wanted && m_xyButton->isChecked() ? m_xy->channels() : QVector<tele::ChannelKey>{}, rateHz());
+    m_hub->setWanted(kConsumerPlots, wanted ? m_stack->allChannels() : QVector<dev::tele::ChannelKey>{}, rateHz());
+    m_hub->setWanted(kConsumerXy, wanted && m_xyButton->isChecked() ? m_xy->channels() : QVector<dev::tele::ChannelKey>{}, rateHz());
 }
 
 void PlotsScreen::refreshPicker()
@@ -337,16 +337,16 @@ void PlotsScreen::refreshPicker()
     m_xy->setInstrument(m_xy->instrument());  // the unit is known once the stage is identified
 }
 
-void PlotsScreen::applyDefaults(int instrument, const QVector<tele::ChannelKey>& available)
+void PlotsScreen::applyDefaults(int instrument, const QVector<dev::tele::ChannelKey>& available)
 {
     if (instrument < 0 || instrument > 1 || m_defaultsApplied[instrument] || available.isEmpty())
         return;
     m_defaultsApplied[instrument] = true;
-    using K = proto::ChannelKind;
-    auto key = [instrument](int axis, K kind) { return tele::ChannelKey{instrument, proto::ChannelRef{std::uint8_t(axis), kind}}; };
+    using K = dev::proto::ChannelKind;
+    auto key = [instrument](int axis, K kind) { return dev::tele::ChannelKey{instrument, dev::proto::ChannelRef{std::uint8_t(axis), kind}}; };
     // The stage: positions on the first plot, following errors on the second; the
     // analyzer's measured positions on the third. A plot someone already filled is left alone.
-    QVector<QPair<int, tele::ChannelKey>> wanted;
+    QVector<QPair<int, dev::tele::ChannelKey>> wanted;
     if (instrument == 1) {
         for (int axis : {0, 1}) {
             wanted << qMakePair(0, key(axis, K::Commanded)) << qMakePair(0, key(axis, K::Measured));
@@ -436,7 +436,7 @@ QString PlotsScreen::statusText() const
         s += lost ? tr(" · <span style='color:#b71c1c'><b>%1 lost</b></span>").arg(lost) : tr(" · 0 lost");
         if (m_hub->heldBackSamples(i))
             s += tr(" · %1 not kept while paused").arg(m_hub->heldBackSamples(i));
-        const QString note = words::text(m_notes.value(i));
+        const QString note = ui::words::text(m_notes.value(i));
         if (!note.isEmpty())
             s += QStringLiteral(" · <i>%1</i>").arg(note.toHtmlEscaped());
         parts << s;
@@ -536,7 +536,7 @@ QString PlotsScreen::historyText() const
         spanS = std::max(spanS, m_hub->historySpanS(i));
         heldBack = heldBack || m_hub->historyHeldBack(i);
     }
-    QString text = tr("last %1 recorded").arg(words::duration(std::floor(spanS)));
+    QString text = tr("last %1 recorded").arg(ui::words::duration(std::floor(spanS)));
     if (heldBack)
         text += tr(" (plotted channels only: the link carries no more)");
     return text;
@@ -550,10 +550,10 @@ bool PlotsScreen::exportHistory(double spanS, const QString& path)
     if (file.isEmpty())
         return false;
     QDir().mkpath(QFileInfo(file).absolutePath());
-    msg::Message error;
+    motion::msg::Message error;
     quint64 rows = 0;
     if (!m_hub->exportHistory(file, spanS, &error, &rows)) {
-        tell(words::text(error), true);
+        tell(ui::words::text(error), true);
         return false;
     }
     tell(tr("Exported %1 rows of recorded history (%2 channels) to %3")
@@ -575,7 +575,7 @@ bool PlotsScreen::startRecording(const QString& path)
         setButton(m_hub && m_hub->recording());
         return false;
     }
-    QVector<tele::ChannelKey> channels = m_stack->allChannels();
+    QVector<dev::tele::ChannelKey> channels = m_stack->allChannels();
     if (m_xyButton->isChecked())
         for (const auto& k : m_xy->channels())
             if (!channels.contains(k))
@@ -586,10 +586,10 @@ bool PlotsScreen::startRecording(const QString& path)
         return false;
     }
     QDir().mkpath(QFileInfo(file).absolutePath());
-    msg::Message error;
+    motion::msg::Message error;
     if (!m_hub->startRecording(file, channels, &error)) {
         setButton(false);
-        tell(words::text(error), true);
+        tell(ui::words::text(error), true);
         return false;
     }
     setButton(true);

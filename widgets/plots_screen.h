@@ -47,7 +47,7 @@ public:
     static constexpr int kDefaultRateHz = 200;
     static constexpr double kDefaultWindowS = 10;  ///< a live view; up to 10 min on request
 
-    explicit PlotsScreen(tele::TelemetryHub* hub, QWidget* parent = nullptr);
+    explicit PlotsScreen(dev::tele::TelemetryHub* hub, QWidget* parent = nullptr);
     ~PlotsScreen() override;
     void setFileChooser(FileChooser chooser) { m_chooser = std::move(chooser); }
 
@@ -59,8 +59,8 @@ public:
     int plotCount() const;
     int addPlot();
     bool removePlot(int index);
-    bool addChannel(int plot, const tele::ChannelKey& key);
-    bool removeChannel(int plot, const tele::ChannelKey& key);
+    bool addChannel(int plot, const dev::tele::ChannelKey& key);
+    bool removeChannel(int plot, const dev::tele::ChannelKey& key);
 
     void setWindowS(double seconds);
     double windowS() const;
@@ -108,14 +108,14 @@ private:
     void redraw();
     void updateWanted();
     void refreshPicker();
-    void applyDefaults(int instrument, const QVector<tele::ChannelKey>& available);
+    void applyDefaults(int instrument, const QVector<dev::tele::ChannelKey>& available);
     void showPlotInPicker(int index);
     void updateStatus();
     double liveAnchor(int instrument) const;
     QString chooseFile(const QString& title, const QString& filter, const QString& suffix);
     void tell(const QString& text, bool isProblem);
 
-    QPointer<tele::TelemetryHub> m_hub;  ///< may be destroyed before the screen
+    QPointer<dev::tele::TelemetryHub> m_hub;  ///< may be destroyed before the screen
     HubPlotSource m_source;
     FileChooser m_chooser;
     PlotStack* m_stack;
@@ -144,7 +144,7 @@ private:
     bool m_paused = false;
     bool m_defaultsApplied[2] = {false, false};
     QElapsedTimer m_arrival[2];  ///< host time of the last batch per instrument
-    QHash<int, msg::Message> m_notes;  ///< subscription notes per instrument (worded when shown)
+    QHash<int, motion::msg::Message> m_notes;  ///< subscription notes per instrument (worded when shown)
     QHash<int, int> m_rates;      ///< streamed rate per instrument
     QString m_lastMessage;
     bool m_messageProblem = false;

@@ -309,7 +309,7 @@ void ProfilesScreen::replan()
     r.plateauMm = m_plateau->valueOr(0);
     const auto planned = motion::planProfile(m_distance->valueOr(0), r);
     if (!planned) {
-        showNoPlan(tr("Cannot plan this move: %1").arg(words::text(planned.error())));
+        showNoPlan(tr("Cannot plan this move: %1").arg(ui::words::text(planned.error())));
         return;
     }
     showError({});

@@ -55,27 +55,27 @@ void XyView::setInstrument(int instrument)
     yAxis->setLabel(unit.isEmpty() ? tr("Y") : tr("Y (%1)").arg(unit));
 }
 
-QVector<tele::ChannelKey> XyView::channels() const
+QVector<dev::tele::ChannelKey> XyView::channels() const
 {
-    QVector<tele::ChannelKey> out;
+    QVector<dev::tele::ChannelKey> out;
     for (std::uint8_t axis : {std::uint8_t(0), std::uint8_t(1)})
-        for (auto kind : {proto::ChannelKind::Commanded, proto::ChannelKind::Measured})
-            out << tele::ChannelKey{m_instrument, proto::ChannelRef{axis, kind}};
+        for (auto kind : {dev::proto::ChannelKind::Commanded, dev::proto::ChannelKind::Measured})
+            out << dev::tele::ChannelKey{m_instrument, dev::proto::ChannelRef{axis, kind}};
     return out;
 }
 
-int XyView::fill(QCPCurve* curve, proto::ChannelKind kind, double t0S, double t1S, int maxPoints)
+int XyView::fill(QCPCurve* curve, dev::proto::ChannelKind kind, double t0S, double t1S, int maxPoints)
 {
     m_points.clear();
-    const tele::ChannelStore* xs = m_source->store({m_instrument, {0, kind}});
-    const tele::ChannelStore* ys = m_source->store({m_instrument, {1, kind}});
+    const dev::tele::ChannelStore* xs = m_source->store({m_instrument, {0, kind}});
+    const dev::tele::ChannelStore* ys = m_source->store({m_instrument, {1, kind}});
     if (xs && ys && !xs->empty() && !ys->empty() && maxPoints > 0) {
         const std::size_t lo = xs->lowerBound(t0S), hi = xs->lowerBound(t1S);
         const std::size_t n = hi - lo;
         const std::size_t stride = std::max<std::size_t>(1, (n + static_cast<std::size_t>(maxPoints) - 1) / static_cast<std::size_t>(maxPoints));
         int k = 0;
         auto add = [&](std::size_t i) {
-            const tele::Sample x = xs->at(i);
+            const dev::tele::Sample x = xs->at(i);
             const auto y = ys->nearest(x.tS);
             if (y)
                 m_points.append(QCPCurveData(k++, x.value, y->value));
@@ -100,8 +100,8 @@ void XyView::refresh(double anchorS, double x0S, double x1S)
     updateLayout();
     const int maxPoints = 2 * std::max(axisRect()->width(), 100);
     const double t0 = anchorS + x0S, t1 = anchorS + x1S;
-    fill(m_commanded, proto::ChannelKind::Commanded, t0, t1, maxPoints);
-    const int measured = fill(m_measured, proto::ChannelKind::Measured, t0, t1, maxPoints);
+    fill(m_commanded, dev::proto::ChannelKind::Commanded, t0, t1, maxPoints);
+    const int measured = fill(m_measured, dev::proto::ChannelKind::Measured, t0, t1, maxPoints);
     m_now->data()->clear();
     if (measured > 0) {
         const QCPCurveData last = *(m_measured->data()->constEnd() - 1);

@@ -18,7 +18,7 @@ public:
     void setInstrument(int instrument);
     int instrument() const { return m_instrument; }
     /// The four channels the view needs: X and Y, commanded and measured.
-    QVector<tele::ChannelKey> channels() const;
+    QVector<dev::tele::ChannelKey> channels() const;
 
     /// Redraws the path over device times [anchorS + x0S, anchorS + x1S].
     void refresh(double anchorS, double x0S, double x1S);
@@ -27,7 +27,7 @@ public:
 
 private:
     /// Pairs X and Y samples of one kind by time; returns the number of points.
-    int fill(QCPCurve* curve, proto::ChannelKind kind, double t0S, double t1S, int maxPoints);
+    int fill(QCPCurve* curve, dev::proto::ChannelKind kind, double t0S, double t1S, int maxPoints);
 
     const PlotDataSource* m_source;
     int m_instrument = 1;

@@ -7,10 +7,10 @@
 
 #include <sys/socket.h>
 
-namespace api {
+namespace app::api {
 
 namespace {
-[[maybe_unused]] QString tr(const char* text) { return QCoreApplication::translate("api", text); }
+[[maybe_unused]] QString tr(const char* text) { return QCoreApplication::translate("app::api", text); }
 
 QString programOf(qint64 pid)
 {
@@ -164,4 +164,4 @@ void ApiClient::handleQueued()
     scheduleHandling();
 }
 
-} // namespace api
+} // namespace app::api

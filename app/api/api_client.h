@@ -23,7 +23,7 @@
 
 class QLocalSocket;
 
-namespace api {
+namespace app::api {
 
 /// A transport carrying lines: the Unix socket (a byte stream, split at newlines) or
 /// a WebSocket (each text message is one line).
@@ -125,4 +125,4 @@ private:
     int m_callsInFlight = 0;
 };
 
-} // namespace api
+} // namespace app::api

@@ -20,15 +20,15 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-namespace api {
+namespace app::api {
 
 namespace {
-[[maybe_unused]] QString tr(const char* text) { return QCoreApplication::translate("api", text); }
+[[maybe_unused]] QString tr(const char* text) { return QCoreApplication::translate("app::api", text); }
 
 QString clock(const QDateTime& t) { return t.toString(QStringLiteral("HH:mm:ss")); }
 } // namespace
 
-ApiServer::ApiServer(QVector<ServedInstrument> instruments, tele::TelemetryHub* hub, QObject* parent)
+ApiServer::ApiServer(QVector<ServedInstrument> instruments, dev::tele::TelemetryHub* hub, QObject* parent)
     : QObject(parent), m_instruments(std::move(instruments)), m_hub(hub), m_methods(commandMethods())
 {
     for (const auto& s : m_instruments)
@@ -309,7 +309,7 @@ const ServedInstrument* ApiServer::resolveInstrument(const QString& kind, QStrin
         for (const auto& s : m_instruments)
             if (s.key == kind) {
                 if (!s.instrument || !s.instrument->isReady()) {
-                    *why = tr("the GUI's %1 is not connected (%2)").arg(kind, s.instrument ? words::term(dev::linkStateTerm(s.instrument->state())) : QString());
+                    *why = tr("the GUI's %1 is not connected (%2)").arg(kind, s.instrument ? ui::words::term(dev::linkStateTerm(s.instrument->state())) : QString());
                     return nullptr;
                 }
                 return &s;
@@ -378,12 +378,12 @@ void ApiServer::holdJog(quint64 clientId, dev::Instrument* instrument, int axis,
     m_heldJogs.push_back({clientId, instrument, axis});
 }
 
-void ApiServer::wantTelemetry(const QString& consumer, const ServedInstrument& instrument, const QVector<proto::ChannelRef>& channels,
+void ApiServer::wantTelemetry(const QString& consumer, const ServedInstrument& instrument, const QVector<dev::proto::ChannelRef>& channels,
                               int rateHz)
 {
     if (!m_hub || instrument.hubIndex < 0)
         return;  // no hub (tests): the job goes without the samples rather than take the plots' stream
-    QVector<tele::ChannelKey> keys;
+    QVector<dev::tele::ChannelKey> keys;
     for (const auto& ref : channels)
         keys.push_back({instrument.hubIndex, ref});
     m_hub->setWanted(consumer, keys, rateHz);
@@ -447,7 +447,7 @@ void ApiServer::onLeaseEnded(const ControlLease::Holder& holder, ControlLease::E
         {static_cast<int>(ControlLease::EndReason::CallEnded), "gave back control (its call ended)"}};
     if (reason != ControlLease::EndReason::CallEnded)
         logActivity(holder.clientName, QStringLiteral("control"),
-                    QCoreApplication::translate("api", kWhy.value(static_cast<int>(reason))),
+                    QCoreApplication::translate("app::api", kWhy.value(static_cast<int>(reason))),
                     reason == ControlLease::EndReason::TakenBack || reason == ControlLease::EndReason::HeartbeatLost);
     if (ApiClient* c = clientById(holder.clientId); c && reason != ControlLease::EndReason::CallEnded)
         c->send(notificationLine(QStringLiteral("control.lost"), QJsonObject{{QStringLiteral("reason"), ControlLease::reasonKey(reason)}}));
@@ -613,4 +613,4 @@ void ApiServer::handleBuiltin(ApiClient* client, const Request& r, bool* handled
     }
 }
 
-} // namespace api
+} // namespace app::api

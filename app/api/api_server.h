@@ -27,11 +27,11 @@
 
 class QLocalServer;
 
-namespace tele {
+namespace dev::tele {
 class TelemetryHub;
 }
 
-namespace api {
+namespace app::api {
 
 class CommandCall;
 class Subscriptions;
@@ -51,7 +51,7 @@ public:
     static constexpr int kMaxClients = 32;
     static constexpr int kFiberTickMs = 5;   ///< how often waiting calls look at their condition
 
-    ApiServer(QVector<ServedInstrument> instruments, tele::TelemetryHub* hub, QObject* parent = nullptr);
+    ApiServer(QVector<ServedInstrument> instruments, dev::tele::TelemetryHub* hub, QObject* parent = nullptr);
     ~ApiServer() override;
 
     /// Listens on the Unix socket at `path` (its folder made 0700, the socket 0600); a
@@ -71,7 +71,7 @@ public:
     EventJournal& journal() { return m_journal; }
     JobBoard& jobs() { return m_jobs; }
     const QVector<ServedInstrument>& instruments() const { return m_instruments; }
-    tele::TelemetryHub* hub() const { return m_hub; }
+    dev::tele::TelemetryHub* hub() const { return m_hub; }
     Subscriptions& subscriptions() { return *m_subscriptions; }
 
     struct ClientInfo {
@@ -101,7 +101,7 @@ public:
     bool mayControl(quint64 clientId, const QString& clientName, const QString& token, bool oneCall, QString* why);
     void holdJog(quint64 clientId, dev::Instrument* instrument, int axis, double velocity);
     /// Routes a call's telemetry wish through the hub (nothing without one).
-    void wantTelemetry(const QString& consumer, const ServedInstrument& instrument, const QVector<proto::ChannelRef>& channels,
+    void wantTelemetry(const QString& consumer, const ServedInstrument& instrument, const QVector<dev::proto::ChannelRef>& channels,
                        int rateHz);
     /// An entry in the event log (and the GUI's, through activity()).
     void logActivity(const QString& client, const QString& kind, const QString& text, bool problem);
@@ -130,7 +130,7 @@ private:
     bool holderWaitsForACall(quint64 clientId) const;
 
     QVector<ServedInstrument> m_instruments;
-    tele::TelemetryHub* m_hub;
+    dev::tele::TelemetryHub* m_hub;
     QVector<CommandMethod> m_methods;
     QLocalServer* m_local = nullptr;
     QString m_socketPath;
@@ -154,4 +154,4 @@ private:
     bool m_shuttingDown = false;
 };
 
-} // namespace api
+} // namespace app::api

@@ -11,10 +11,10 @@
 #include <QDir>
 #include <QJsonDocument>
 
-namespace api {
+namespace app::api {
 
 namespace {
-[[maybe_unused]] QString tr(const char* text) { return QCoreApplication::translate("api::CommandCall", text); }
+[[maybe_unused]] QString tr(const char* text) { return QCoreApplication::translate("app::api::CommandCall", text); }
 
 /// A guard that removes a hook from its map when the command lets go of it.
 std::shared_ptr<void> hookGuard(std::map<int, std::function<void()>>& hooks, int key)
@@ -43,7 +43,7 @@ QString CommandCall::methodName() const
     if (m_method)
         return m_method->method;
     QString path;
-    if (cli::findCommand(m_args, &path))
+    if (app::cli::findCommand(m_args, &path))
         return QStringLiteral("cli.run %1").arg(path);
     return QStringLiteral("cli.run");
 }
@@ -51,7 +51,7 @@ QString CommandCall::methodName() const
 void CommandCall::body()
 {
     QTextStream out(&m_outText), err(&m_errText);
-    m_exit = cli::runCommandLine(m_args, out, err, *this, &m_ran);
+    m_exit = app::cli::runCommandLine(m_args, out, err, *this, &m_ran);
     out.flush();
     err.flush();
 }
@@ -98,25 +98,25 @@ QString CommandCall::reword(const QString& message) const { return m_method ? ap
 void CommandCall::answer()
 {
     if (!m_jobId.isEmpty()) {
-        m_server.jobs().finish(m_jobId, m_exit == cli::Ok ? QStringLiteral("finished") : QStringLiteral("stopped"));
+        m_server.jobs().finish(m_jobId, m_exit == app::cli::Ok ? QStringLiteral("finished") : QStringLiteral("stopped"));
         if (!m_objects.isEmpty())
             m_server.jobs().setProgress(m_jobId, m_objects.last().toObject());
     }
     if (m_tookControl)
         m_server.logActivity(m_clientName, QStringLiteral("call"),
-                             m_exit == cli::Ok ? tr("%1: done").arg(methodName())
+                             m_exit == app::cli::Ok ? tr("%1: done").arg(methodName())
                                                : tr("%1: %2").arg(methodName(), reword(m_reports.value(m_reports.size() - 1, tr("failed")))),
-                             m_exit != cli::Ok);
+                             m_exit != app::cli::Ok);
     if (!m_client || m_id.isUndefined())
         return;
     if (m_style == Style::CliRun) {
         // Not in control is a refusal for a shell script (the CLI's exit code 2); an
         // instrument the words must name is a usage error (1).
-        const int code = m_notInControl ? int(cli::Refused) : m_badInstrument ? int(cli::Usage) : m_exit;
+        const int code = m_notInControl ? int(app::cli::Refused) : m_badInstrument ? int(app::cli::Usage) : m_exit;
         m_client->send(resultLine(m_id, QJsonObject{{QStringLiteral("exit_code"), code}}));
         return;
     }
-    if (m_exit == cli::Ok) {
+    if (m_exit == app::cli::Ok) {
         // The last object printed, unless the command ended with a sentence after it
         // (scan run's "144 tiles taken; wrote …"): then that text, the objects having
         // gone out as progress.
@@ -139,17 +139,17 @@ void CommandCall::answer()
         code = code::kNotInControl;
     } else if (m_interrupted) {
         code = code::kCancelled;
-    } else if (m_exit == cli::Usage || m_badInstrument) {
+    } else if (m_exit == app::cli::Usage || m_badInstrument) {
         code = code::kInvalidParams;
-    } else if (m_exit == cli::LinkTrouble) {
+    } else if (m_exit == app::cli::LinkTrouble) {
         code = code::kLinkTrouble;
-    } else if (m_exit == cli::Refused) {
+    } else if (m_exit == app::cli::Refused) {
         code = code::kRefused;
         if (m_refusal) {
             switch (m_refusal->code) {
-            case proto::ErrorCode::NotHomed: code = code::kNotHomed; break;
-            case proto::ErrorCode::SoftLimit: code = code::kSoftLimit; break;
-            case proto::ErrorCode::EStopActive: code = code::kEStopLatched; break;
+            case dev::proto::ErrorCode::NotHomed: code = code::kNotHomed; break;
+            case dev::proto::ErrorCode::SoftLimit: code = code::kSoftLimit; break;
+            case dev::proto::ErrorCode::EStopActive: code = code::kEStopLatched; break;
             default: break;
             }
         } else if (m_estopLatched) {
@@ -173,13 +173,13 @@ void CommandCall::answer()
             message = tr("failed with exit code %1").arg(m_exit);
     }
     // Not in control is a refusal (the CLI's exit code 2), whatever the command made of it.
-    QJsonObject data{{QStringLiteral("exit_code"), m_notInControl ? int(cli::Refused) : m_exit}};
+    QJsonObject data{{QStringLiteral("exit_code"), m_notInControl ? int(app::cli::Refused) : m_exit}};
     if (messages.size() > 1)
         data.insert(QStringLiteral("messages"), QJsonArray::fromStringList(messages));
     if (!m_objects.isEmpty())
         data.insert(QStringLiteral("result"), m_objects.last());
     if (m_refusal)
-        data.insert(QStringLiteral("device_error"), QString::fromLatin1(proto::errorCodeName(m_refusal->code)));
+        data.insert(QStringLiteral("device_error"), QString::fromLatin1(dev::proto::errorCodeName(m_refusal->code)));
     if (code == code::kInvalidParams && m_method) {
         // The field, when the message starts with one ("speed needs a positive number").
         for (const MethodParam& p : methodParams(*m_method))
@@ -215,9 +215,9 @@ void CommandCall::detachClient()
     m_client = nullptr;
 }
 
-std::unique_ptr<cli::CliSession> CommandCall::openSession(cli::Invocation& inv)
+std::unique_ptr<app::cli::CliSession> CommandCall::openSession(app::cli::Invocation& inv)
 {
-    const cli::LinkOptions& link = inv.link();
+    const app::cli::LinkOptions& link = inv.link();
     if (!link.port.isEmpty()) {
         inv.report(tr("inside the GUI its own connections are used: --port does not apply (name the instrument with --instrument analyzer|stage)"));
         return nullptr;
@@ -229,9 +229,9 @@ std::unique_ptr<cli::CliSession> CommandCall::openSession(cli::Invocation& inv)
         return nullptr;
     }
     m_instrumentKey = served->key;
-    const cli::Command* cmd = cli::findCommand(m_args);
-    const cli::ApiSpec spec = cmd ? cmd->api : cli::ApiSpec{};
-    const bool control = spec.access == cli::Access::Control && !(spec.readsWithoutArguments && inv.arguments().isEmpty());
+    const app::cli::Command* cmd = app::cli::findCommand(m_args);
+    const app::cli::ApiSpec spec = cmd ? cmd->api : app::cli::ApiSpec{};
+    const bool control = spec.access == app::cli::Access::Control && !(spec.readsWithoutArguments && inv.arguments().isEmpty());
     if (control) {
         if (!m_server.mayControl(m_clientId, m_clientName, m_leaseToken, m_style == Style::CliRun, &why)) {
             m_notInControl = true;
@@ -244,18 +244,18 @@ std::unique_ptr<cli::CliSession> CommandCall::openSession(cli::Invocation& inv)
                              tr("%1 on the %2").arg(m_description.isEmpty() ? methodName() : m_description, served->key), false);
         m_jobId = m_server.jobs().add(m_method ? m_method->method : methodName(), served->key, m_clientName, true);
     }
-    if (spec.access == cli::Access::Safety)  // stop and E-stop change things too: in the log, never gated
+    if (spec.access == app::cli::Access::Safety)  // stop and E-stop change things too: in the log, never gated
         m_server.logActivity(m_clientName, QStringLiteral("call"),
                              tr("%1 on the %2").arg(m_description.isEmpty() ? methodName() : m_description, served->key), false);
     return sessionOn(inv, *served);
 }
 
-std::unique_ptr<cli::CliSession> CommandCall::sessionOn(cli::Invocation& inv, const ServedInstrument& served)
+std::unique_ptr<app::cli::CliSession> CommandCall::sessionOn(app::cli::Invocation& inv, const ServedInstrument& served)
 {
-    auto session = std::make_unique<cli::CliSession>(inv, served.instrument.data());
+    auto session = std::make_unique<app::cli::CliSession>(inv, served.instrument.data());
     const QString consumer = QStringLiteral("api call %1 of client %2 on %3").arg(reinterpret_cast<quintptr>(this)).arg(m_clientId).arg(served.key);
     const ServedInstrument copy = served;
-    session->setTelemetryWish([this, consumer, copy](const QVector<proto::ChannelRef>& channels, int rateHz) {
+    session->setTelemetryWish([this, consumer, copy](const QVector<dev::proto::ChannelRef>& channels, int rateHz) {
         m_server.wantTelemetry(consumer, copy, channels, rateHz);
     });
     // A refusal the command reports comes through the instrument's signal or request():
@@ -270,17 +270,17 @@ std::unique_ptr<cli::CliSession> CommandCall::sessionOn(cli::Invocation& inv, co
     return session;
 }
 
-std::vector<std::unique_ptr<cli::CliSession>> CommandCall::openHaltSessions(cli::Invocation& inv)
+std::vector<std::unique_ptr<app::cli::CliSession>> CommandCall::openHaltSessions(app::cli::Invocation& inv)
 {
     // An instrument named, or at most one connected: as any command (a named one that is
     // not connected is said so; none connected is link trouble).
     const QVector<const ServedInstrument*> ready = m_server.connectedInstruments();
     if (!inv.link().sim.isEmpty() || !inv.link().port.isEmpty() || ready.size() < 2)
-        return cli::InvocationHost::openHaltSessions(inv);
+        return app::cli::InvocationHost::openHaltSessions(inv);
     // None named with several connected: every one, as the GUI's E-stop button and Esc do.
     // A halt is never refused for want of saying which.
     QStringList keys;
-    std::vector<std::unique_ptr<cli::CliSession>> sessions;
+    std::vector<std::unique_ptr<app::cli::CliSession>> sessions;
     for (const ServedInstrument* served : ready) {
         keys << served->key;
         sessions.push_back(sessionOn(inv, *served));
@@ -331,9 +331,9 @@ QString CommandCall::resolvePath(const QString& path) const
     return QDir(m_cwd).absoluteFilePath(path);
 }
 
-void CommandCall::holdJog(cli::CliSession& session, int axis, double velocity)
+void CommandCall::holdJog(app::cli::CliSession& session, int axis, double velocity)
 {
     m_server.holdJog(m_clientId, session.instrument(), axis, velocity);
 }
 
-} // namespace api
+} // namespace app::api

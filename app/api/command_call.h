@@ -1,6 +1,6 @@
 #pragma once
 // One call of a benchpilot-cli command made through the API: the command's words run
-// through the CLI's own parser and code (cli::runCommandLine) on a Fiber, so its
+// through the CLI's own parser and code (app::cli::runCommandLine) on a Fiber, so its
 // waits suspend it and the GUI's event loop goes on; the host side of it (where its
 // instrument comes from, where its output goes, what interrupts it) is this class.
 //
@@ -22,14 +22,14 @@
 #include <map>
 #include <memory>
 
-namespace api {
+namespace app::api {
 
 class ApiClient;
 class ApiServer;
 struct CommandMethod;
 struct ServedInstrument;
 
-class CommandCall final : public cli::InvocationHost {
+class CommandCall final : public app::cli::InvocationHost {
 public:
     enum class Style {
         Method,  ///< a typed method ("device.move"): the result is the JSON the command printed
@@ -62,8 +62,8 @@ public:
     /// How the event log shows the call: "device.move {"targets":{"X":10}}".
     void setDescription(const QString& text) { m_description = text; }
 
-    // cli::InvocationHost
-    std::unique_ptr<cli::CliSession> openSession(cli::Invocation& inv) override;
+    // app::cli::InvocationHost
+    std::unique_ptr<app::cli::CliSession> openSession(app::cli::Invocation& inv) override;
     void printedJson(const QJsonObject& object) override;
     void progressed(const QJsonObject& progress) override;
     void reported(const QString& message) override { m_reports << message; }
@@ -72,14 +72,14 @@ public:
     std::shared_ptr<void> onAbort(std::function<void()> abort) override { return onInterrupt(std::move(abort)); }
     QString resolvePath(const QString& path) const override;
     bool canHoldJog() const override { return m_style == Style::Method; }
-    void holdJog(cli::CliSession& session, int axis, double velocity) override;
+    void holdJog(app::cli::CliSession& session, int axis, double velocity) override;
     bool insideGui() const override { return true; }
     /// Naming no instrument while several are connected, stop and estop halt every one.
-    std::vector<std::unique_ptr<cli::CliSession>> openHaltSessions(cli::Invocation& inv) override;
+    std::vector<std::unique_ptr<app::cli::CliSession>> openHaltSessions(app::cli::Invocation& inv) override;
 
 private:
     /// A session on `served` for this call, its refusals and the E-stop latch watched.
-    std::unique_ptr<cli::CliSession> sessionOn(cli::Invocation& inv, const ServedInstrument& served);
+    std::unique_ptr<app::cli::CliSession> sessionOn(app::cli::Invocation& inv, const ServedInstrument& served);
     void body();
     void flushOutput();
     void answer();
@@ -96,11 +96,11 @@ private:
     QStringList m_args;
     QString m_leaseToken;
     QString m_description;
-    cli::Fiber m_fiber;
+    app::cli::Fiber m_fiber;
 
     // What the command did.
     int m_exit = -1;
-    const cli::Command* m_ran = nullptr;
+    const app::cli::Command* m_ran = nullptr;
     QString m_outText, m_errText;
     int m_outSent = 0, m_errSent = 0;
     QStringList m_reports;
@@ -121,4 +121,4 @@ private:
     int m_nextHook = 0;
 };
 
-} // namespace api
+} // namespace app::api

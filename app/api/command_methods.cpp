@@ -7,12 +7,12 @@
 #include <algorithm>
 #include <cmath>
 
-namespace api {
+namespace app::api {
 namespace {
 
-[[maybe_unused]] QString tr(const char* text) { return QCoreApplication::translate("api", text); }
+[[maybe_unused]] QString tr(const char* text) { return QCoreApplication::translate("app::api", text); }
 
-void collect(const std::vector<cli::Command>& list, const QString& prefix, QVector<CommandMethod>& out)
+void collect(const std::vector<app::cli::Command>& list, const QString& prefix, QVector<CommandMethod>& out)
 {
     for (const auto& c : list) {
         const QString path = prefix.isEmpty() ? c.name : prefix + QLatin1Char(' ') + c.name;
@@ -22,7 +22,7 @@ void collect(const std::vector<cli::Command>& list, const QString& prefix, QVect
         }
         if (!c.api.offered || !c.run)
             continue;
-        out.push_back({cli::methodName(path, c), path, &c});
+        out.push_back({app::cli::methodName(path, c), path, &c});
     }
 }
 
@@ -82,7 +82,7 @@ bool isAxisLetter(const QString& s) { return s.size() == 1 && s[0].isLetter(); }
 QVector<CommandMethod> commandMethods()
 {
     QVector<CommandMethod> out;
-    collect(cli::commands(), QString(), out);
+    collect(app::cli::commands(), QString(), out);
     return out;
 }
 
@@ -97,8 +97,8 @@ const CommandMethod* findMethod(const QVector<CommandMethod>& methods, const QSt
 QVector<MethodParam> methodParams(const CommandMethod& m)
 {
     QVector<MethodParam> out;
-    const cli::ApiSpec& spec = m.command->api;
-    for (const cli::ApiParam& p : spec.params)
+    const app::cli::ApiSpec& spec = m.command->api;
+    for (const app::cli::ApiParam& p : spec.params)
         if (p.option.isEmpty())
             out.push_back({p.name, p.type, p.description, p.required, {}, p.choices, {}, false});
     for (const QCommandLineOption& o : m.command->options) {
@@ -108,10 +108,10 @@ QVector<MethodParam> methodParams(const CommandMethod& m)
         MethodParam mp;
         mp.option = option;
         mp.name = jsonName(option);
-        mp.type = o.valueName().isEmpty() ? cli::ParamType::Boolean : cli::ParamType::Text;
+        mp.type = o.valueName().isEmpty() ? app::cli::ParamType::Boolean : app::cli::ParamType::Text;
         mp.description = o.description();
         mp.defaultValue = o.defaultValues().join(QLatin1Char(','));
-        for (const cli::ApiParam& p : spec.params)
+        for (const app::cli::ApiParam& p : spec.params)
             if (p.option == option) {
                 mp.name = p.name;
                 mp.type = p.type;
@@ -122,17 +122,17 @@ QVector<MethodParam> methodParams(const CommandMethod& m)
             }
         out.push_back(mp);
     }
-    if (spec.access != cli::Access::Compute || spec.instrumentParam)
-        out.push_back({QStringLiteral("instrument"), cli::ParamType::Text,
-                       spec.access == cli::Access::Safety
+    if (spec.access != app::cli::Access::Compute || spec.instrumentParam)
+        out.push_back({QStringLiteral("instrument"), app::cli::ParamType::Text,
+                       spec.access == app::cli::Access::Safety
                            ? tr("analyzer or stage; left out, every connected instrument (never refused for not saying which)")
                            : tr("analyzer or stage; may be left out when only one is connected"),
                        false, QStringLiteral("instrument"), {QStringLiteral("analyzer"), QStringLiteral("stage")}, {}, true});
-    if (spec.access == cli::Access::Control || spec.access == cli::Access::Safety)
-        out.push_back({QStringLiteral("timeout"), cli::ParamType::Number, tr("longest wait for motion to finish, s (default: 120)"), false,
+    if (spec.access == app::cli::Access::Control || spec.access == app::cli::Access::Safety)
+        out.push_back({QStringLiteral("timeout"), app::cli::ParamType::Number, tr("longest wait for motion to finish, s (default: 120)"), false,
                        QStringLiteral("timeout"), {}, {}, true});
-    if (spec.access == cli::Access::Control)
-        out.push_back({QStringLiteral("lease"), cli::ParamType::Text,
+    if (spec.access == app::cli::Access::Control)
+        out.push_back({QStringLiteral("lease"), app::cli::ParamType::Text,
                        spec.readsWithoutArguments ? tr("the lease from control.acquire (needed only when setting)")
                                                   : tr("the lease from control.acquire"),
                        false, {}, {}, {}, true});
@@ -141,8 +141,8 @@ QVector<MethodParam> methodParams(const CommandMethod& m)
 
 bool needsLease(const CommandMethod& m, bool hasPositionalWords)
 {
-    const cli::ApiSpec& spec = m.command->api;
-    if (spec.access != cli::Access::Control)
+    const app::cli::ApiSpec& spec = m.command->api;
+    if (spec.access != app::cli::Access::Control)
         return false;
     return !spec.readsWithoutArguments || hasPositionalWords;
 }
@@ -190,35 +190,35 @@ bool toWords(const CommandMethod& m, const QJsonObject& params, QStringList* wor
         QStringList texts;  // one word each (positional) or one option each
         QString why;
         switch (p.type) {
-        case cli::ParamType::Boolean:
+        case app::cli::ParamType::Boolean:
             if (!v.isBool())
                 return fail(p.name, tr("expected true or false, got %1").arg(typeName(v)));
             if (v.toBool())
                 optionWords << QStringLiteral("--") + p.option;
             continue;
-        case cli::ParamType::Number:
+        case app::cli::ParamType::Number:
             if (!finiteNumber(v))
                 return fail(p.name, tr("expected a number, got %1").arg(typeName(v)));
             texts << numberText(v.toDouble());
             break;
-        case cli::ParamType::Integer:
+        case app::cli::ParamType::Integer:
             if (!finiteNumber(v) || v.toDouble() != std::floor(v.toDouble()) || std::abs(v.toDouble()) > 1e15)
                 return fail(p.name, tr("expected a whole number, got %1").arg(v.isDouble() ? numberText(v.toDouble()) : typeName(v)));
             texts << numberText(v.toDouble());
             break;
-        case cli::ParamType::Numbers: {
+        case app::cli::ParamType::Numbers: {
             QString t;
             if (!numbersText(v, &t, &why))
                 return fail(p.name, why);
             texts << t;
             break;
         }
-        case cli::ParamType::Axis:
+        case app::cli::ParamType::Axis:
             if (!v.isString() || !isAxisLetter(v.toString()))
                 return fail(p.name, tr("expected one axis letter such as \"X\", got %1").arg(v.isString() ? QLatin1Char('"') + v.toString() + QLatin1Char('"') : typeName(v)));
             texts << v.toString();
             break;
-        case cli::ParamType::Axes: {
+        case app::cli::ParamType::Axes: {
             QString letters;
             if (v.isString()) {
                 letters = v.toString();
@@ -234,18 +234,18 @@ bool toWords(const CommandMethod& m, const QJsonObject& params, QStringList* wor
             texts << letters;
             break;
         }
-        case cli::ParamType::AxisValues:
-        case cli::ParamType::AxisRanges: {
+        case app::cli::ParamType::AxisValues:
+        case app::cli::ParamType::AxisRanges: {
             if (!v.isObject() || v.toObject().isEmpty())
                 return fail(p.name, tr("expected an object of axis letters, such as %1, got %2")
-                                        .arg(p.type == cli::ParamType::AxisRanges ? QStringLiteral("{\"X\": [0, 50]}") : QStringLiteral("{\"X\": 10}"),
+                                        .arg(p.type == app::cli::ParamType::AxisRanges ? QStringLiteral("{\"X\": [0, 50]}") : QStringLiteral("{\"X\": 10}"),
                                              typeName(v)));
             const QJsonObject axes = v.toObject();
             for (auto a = axes.begin(); a != axes.end(); ++a) {
                 const QString field = p.name + QLatin1Char('.') + a.key();
                 if (!isAxisLetter(a.key()))
                     return fail(field, tr("not an axis letter"));
-                if (p.type == cli::ParamType::AxisRanges) {
+                if (p.type == app::cli::ParamType::AxisRanges) {
                     const QJsonArray r = a.value().toArray();
                     if (!a.value().isArray() || r.size() != 2 || !finiteNumber(r[0]) || !finiteNumber(r[1]))
                         return fail(field, tr("expected [min, max], got %1").arg(typeName(a.value())));
@@ -259,8 +259,8 @@ bool toWords(const CommandMethod& m, const QJsonObject& params, QStringList* wor
             }
             break;
         }
-        case cli::ParamType::Text:
-        case cli::ParamType::File:
+        case app::cli::ParamType::Text:
+        case app::cli::ParamType::File:
             if (v.isString()) {
                 texts << v.toString();
             } else if (finiteNumber(v)) {
@@ -331,4 +331,4 @@ QString apiWording(const CommandMethod& m, const QString& message)
     return out;
 }
 
-} // namespace api
+} // namespace app::api

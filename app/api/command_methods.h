@@ -13,12 +13,12 @@
 #include <QStringList>
 #include <QVector>
 
-namespace api {
+namespace app::api {
 
 struct CommandMethod {
     QString method;                   ///< "device.move"
     QString path;                     ///< the command's words: "move", "recipe run"
-    const cli::Command* command = nullptr;
+    const app::cli::Command* command = nullptr;
 };
 
 /// Every command the API offers, in the order the CLI's help lists them.
@@ -29,7 +29,7 @@ const CommandMethod* findMethod(const QVector<CommandMethod>& methods, const QSt
 /// options, or common to the methods that need it (instrument, timeout, lease).
 struct MethodParam {
     QString name;                 ///< JSON name
-    cli::ParamType type = cli::ParamType::Text;
+    app::cli::ParamType type = app::cli::ParamType::Text;
     QString description;
     bool required = false;
     QString option;               ///< the CLI option it fills; empty for a positional word
@@ -56,4 +56,4 @@ bool toWords(const CommandMethod& m, const QJsonObject& params, QStringList* wor
 /// number") said the API's way ("speed needs a positive number").
 QString apiWording(const CommandMethod& m, const QString& message);
 
-} // namespace api
+} // namespace app::api

@@ -2,7 +2,7 @@
 
 #include <QUuid>
 
-namespace api {
+namespace app::api {
 
 QString ControlLease::reasonKey(EndReason r)
 {
@@ -113,4 +113,4 @@ void ControlLease::end(EndReason reason)
     emit changed();
 }
 
-} // namespace api
+} // namespace app::api

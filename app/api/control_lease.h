@@ -21,7 +21,7 @@
 #include <functional>
 #include <optional>
 
-namespace api {
+namespace app::api {
 
 class ControlLease : public QObject {
     Q_OBJECT
@@ -70,7 +70,7 @@ public:
 signals:
     void changed();
     /// After the lease ended; `holder` is the one it was.
-    void ended(const api::ControlLease::Holder& holder, api::ControlLease::EndReason reason);
+    void ended(const app::api::ControlLease::Holder& holder, app::api::ControlLease::EndReason reason);
 
 private:
     void end(EndReason reason);
@@ -82,4 +82,4 @@ private:
     std::function<bool(quint64)> m_callInProgress;
 };
 
-} // namespace api
+} // namespace app::api

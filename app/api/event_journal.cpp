@@ -5,7 +5,7 @@
 
 #include <QCoreApplication>
 
-namespace api {
+namespace app::api {
 
 QJsonObject JournalEntry::toJson() const
 {
@@ -22,9 +22,9 @@ QJsonObject JournalEntry::toJson() const
     return o;
 }
 
-QString eventKindKey(proto::EventKind kind)
+QString eventKindKey(dev::proto::EventKind kind)
 {
-    QString k = QString::fromLatin1(proto::eventKindName(kind)).toLower();
+    QString k = QString::fromLatin1(dev::proto::eventKindName(kind)).toLower();
     k.replace(QLatin1Char(' '), QLatin1Char('_'));
     k.replace(QLatin1Char('-'), QString());
     return k;
@@ -35,7 +35,7 @@ EventJournal::EventJournal(QObject* parent) : QObject(parent) {}
 void EventJournal::watch(const QString& source, dev::Instrument* instrument)
 {
     connect(instrument, &dev::Instrument::eventReceived, this, [this, source, instrument](const dev::DeviceEvent& e) {
-        using K = proto::EventKind;
+        using K = dev::proto::EventKind;
         JournalEntry j;
         j.hostTime = e.hostTime.isValid() ? e.hostTime : QDateTime::currentDateTime();
         j.deviceTimeUs = e.deviceTimeUs;
@@ -62,7 +62,7 @@ void EventJournal::watch(const QString& source, dev::Instrument* instrument)
         j.hostTime = QDateTime::currentDateTime();
         j.source = source;
         j.kind = QStringLiteral("refused");
-        j.text = words::englishText(e.message);  // the API speaks English whatever the screens do
+        j.text = ui::words::englishText(e.message);  // the API speaks English whatever the screens do
         j.problem = true;
         add(j);
     });
@@ -79,4 +79,4 @@ void EventJournal::add(JournalEntry entry)
     emit added(m_entries.back());
 }
 
-} // namespace api
+} // namespace app::api

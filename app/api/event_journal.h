@@ -18,7 +18,7 @@ namespace dev {
 class Instrument;
 }
 
-namespace api {
+namespace app::api {
 
 struct JournalEntry {
     quint64 seq = 0;
@@ -46,7 +46,7 @@ public:
     quint64 lastSeq() const { return m_nextSeq - 1; }
 
 signals:
-    void added(const api::JournalEntry& entry);
+    void added(const app::api::JournalEntry& entry);
 
 private:
     std::deque<JournalEntry> m_entries;
@@ -54,6 +54,6 @@ private:
 };
 
 /// The event's kind as the log topic names it ("motion_done", "limit_hit", …).
-QString eventKindKey(proto::EventKind kind);
+QString eventKindKey(dev::proto::EventKind kind);
 
-} // namespace api
+} // namespace app::api

@@ -11,7 +11,7 @@
 #include <algorithm>
 #include <memory>
 
-namespace api {
+namespace app::api {
 
 QJsonObject Job::toJson() const
 {
@@ -115,39 +115,39 @@ struct Watch {
 };
 } // namespace
 
-void watchRecipeRunner(JobBoard& board, jobs::RecipeRunner* runner, const QString& instrument, const QString& kind)
+void watchRecipeRunner(JobBoard& board, dev::jobs::RecipeRunner* runner, const QString& instrument, const QString& kind)
 {
     auto w = std::make_shared<Watch>();
     QPointer<JobBoard> b(&board);
-    QObject::connect(runner, &jobs::RecipeRunner::stateChanged, &board, [b, w, runner, instrument, kind](jobs::RunState s) {
-        const bool active = s == jobs::RunState::Running || s == jobs::RunState::Pausing || s == jobs::RunState::Paused
-            || s == jobs::RunState::Aborting;
+    QObject::connect(runner, &dev::jobs::RecipeRunner::stateChanged, &board, [b, w, runner, instrument, kind](dev::jobs::RunState s) {
+        const bool active = s == dev::jobs::RunState::Running || s == dev::jobs::RunState::Pausing || s == dev::jobs::RunState::Paused
+            || s == dev::jobs::RunState::Aborting;
         if (active && w->id.isEmpty())
             w->id = b->add(kind, instrument, JobBoard::kOperator, false);
         else if (!active && !w->id.isEmpty()) {
-            b->finish(w->id, s == jobs::RunState::Stopped ? QStringLiteral("stopped") : QStringLiteral("finished"));
+            b->finish(w->id, s == dev::jobs::RunState::Stopped ? QStringLiteral("stopped") : QStringLiteral("finished"));
             w->id.clear();
         }
         (void)runner;
     });
-    QObject::connect(runner, &jobs::RecipeRunner::progressChanged, &board, [b, w, runner] {
+    QObject::connect(runner, &dev::jobs::RecipeRunner::progressChanged, &board, [b, w, runner] {
         if (w->id.isEmpty())
             return;
-        const jobs::RunProgress p = runner->progress();
+        const dev::jobs::RunProgress p = runner->progress();
         b->setProgress(w->id, QJsonObject{{QStringLiteral("ops_done"), p.opsDone},
                                           {QStringLiteral("ops"), p.opsTotal},
-                                          {QStringLiteral("well"), words::englishText(p.currentWhere)},
+                                          {QStringLiteral("well"), ui::words::englishText(p.currentWhere)},
                                           {QStringLiteral("elapsed_s"), p.elapsedS},
                                           {QStringLiteral("eta_s"), p.etaS}});
     });
 }
 
-void watchScanRunner(JobBoard& board, jobs::ScanRunner* runner, const QString& instrument, const QString& kind)
+void watchScanRunner(JobBoard& board, dev::jobs::ScanRunner* runner, const QString& instrument, const QString& kind)
 {
     auto w = std::make_shared<Watch>();
     QPointer<JobBoard> b(&board);
-    QObject::connect(runner, &jobs::ScanRunner::stateChanged, &board, [b, w, instrument, kind](jobs::ScanRunner::State s) {
-        using S = jobs::ScanRunner::State;
+    QObject::connect(runner, &dev::jobs::ScanRunner::stateChanged, &board, [b, w, instrument, kind](dev::jobs::ScanRunner::State s) {
+        using S = dev::jobs::ScanRunner::State;
         const bool active = s == S::Running || s == S::Pausing || s == S::Paused;
         if (active && w->id.isEmpty())
             w->id = b->add(kind, instrument, JobBoard::kOperator, false);
@@ -156,7 +156,7 @@ void watchScanRunner(JobBoard& board, jobs::ScanRunner* runner, const QString& i
             w->id.clear();
         }
     });
-    QObject::connect(runner, &jobs::ScanRunner::progress, &board, [b, w](int taken, int total, double etaS) {
+    QObject::connect(runner, &dev::jobs::ScanRunner::progress, &board, [b, w](int taken, int total, double etaS) {
         if (!w->id.isEmpty())
             b->setProgress(w->id, QJsonObject{{QStringLiteral("tiles_taken"), taken},
                                               {QStringLiteral("tiles"), total},
@@ -164,23 +164,23 @@ void watchScanRunner(JobBoard& board, jobs::ScanRunner* runner, const QString& i
     });
 }
 
-void watchPatternRunner(JobBoard& board, jobs::PatternRunner* runner, const QString& instrument, const QString& kind)
+void watchPatternRunner(JobBoard& board, dev::jobs::PatternRunner* runner, const QString& instrument, const QString& kind)
 {
     auto w = std::make_shared<Watch>();
     QPointer<JobBoard> b(&board);
-    QObject::connect(runner, &jobs::PatternRunner::stateChanged, &board, [b, w, runner, instrument, kind](jobs::PatternRunner::State s) {
+    QObject::connect(runner, &dev::jobs::PatternRunner::stateChanged, &board, [b, w, runner, instrument, kind](dev::jobs::PatternRunner::State s) {
         if (runner->busy() && w->id.isEmpty())
             w->id = b->add(kind, instrument, JobBoard::kOperator, false);
         else if (!runner->busy() && !w->id.isEmpty()) {
-            b->finish(w->id, s == jobs::PatternRunner::State::Done ? QStringLiteral("finished") : QStringLiteral("stopped"));
+            b->finish(w->id, s == dev::jobs::PatternRunner::State::Done ? QStringLiteral("finished") : QStringLiteral("stopped"));
             w->id.clear();
         }
     });
-    QObject::connect(runner, &jobs::PatternRunner::progress, &board, [b, w](std::size_t done, std::size_t total) {
+    QObject::connect(runner, &dev::jobs::PatternRunner::progress, &board, [b, w](std::size_t done, std::size_t total) {
         if (!w->id.isEmpty())
             b->setProgress(w->id, QJsonObject{{QStringLiteral("segments_done"), static_cast<qint64>(done)},
                                               {QStringLiteral("segments"), static_cast<qint64>(total)}});
     });
 }
 
-} // namespace api
+} // namespace app::api

@@ -13,7 +13,7 @@
 
 #include <vector>
 
-namespace jobs {
+namespace dev::jobs {
 class AccuracyRunner;
 class CircleRunner;
 class PatternRunner;
@@ -21,7 +21,7 @@ class RecipeRunner;
 class ScanRunner;
 }
 
-namespace api {
+namespace app::api {
 
 struct Job {
     QString id;          ///< "j7"
@@ -69,11 +69,11 @@ private:
 };
 
 /// Puts a screen's runner on the board while it runs (the operator's jobs).
-void watchRecipeRunner(JobBoard& board, jobs::RecipeRunner* runner, const QString& instrument, const QString& kind);
-void watchScanRunner(JobBoard& board, jobs::ScanRunner* runner, const QString& instrument, const QString& kind);
-void watchPatternRunner(JobBoard& board, jobs::PatternRunner* runner, const QString& instrument, const QString& kind);
+void watchRecipeRunner(JobBoard& board, dev::jobs::RecipeRunner* runner, const QString& instrument, const QString& kind);
+void watchScanRunner(JobBoard& board, dev::jobs::ScanRunner* runner, const QString& instrument, const QString& kind);
+void watchPatternRunner(JobBoard& board, dev::jobs::PatternRunner* runner, const QString& instrument, const QString& kind);
 /// The Calibration screen makes a runner per run: watch each as it starts (job_board_accuracy.cpp).
-void watchAccuracyRunner(JobBoard& board, jobs::AccuracyRunner* runner, const QString& instrument, const QString& kind);
-void watchCircleRunner(JobBoard& board, jobs::CircleRunner* runner, const QString& instrument, const QString& kind);
+void watchAccuracyRunner(JobBoard& board, dev::jobs::AccuracyRunner* runner, const QString& instrument, const QString& kind);
+void watchCircleRunner(JobBoard& board, dev::jobs::CircleRunner* runner, const QString& instrument, const QString& kind);
 
-} // namespace api
+} // namespace app::api

@@ -10,7 +10,7 @@
 
 #include <memory>
 
-namespace api {
+namespace app::api {
 namespace {
 
 struct Watch {
@@ -41,12 +41,12 @@ void watchStates(JobBoard& board, Runner* runner, const QString& instrument, con
 
 } // namespace
 
-void watchAccuracyRunner(JobBoard& board, jobs::AccuracyRunner* runner, const QString& instrument, const QString& kind)
+void watchAccuracyRunner(JobBoard& board, dev::jobs::AccuracyRunner* runner, const QString& instrument, const QString& kind)
 {
     auto w = std::make_shared<Watch>();
-    watchStates<jobs::AccuracyRunner, jobs::AccuracyRunner::State>(board, runner, instrument, kind, w);
+    watchStates<dev::jobs::AccuracyRunner, dev::jobs::AccuracyRunner::State>(board, runner, instrument, kind, w);
     QPointer<JobBoard> b(&board);
-    QObject::connect(runner, &jobs::AccuracyRunner::progress, &board, [b, w](int taken, int total, double etaS) {
+    QObject::connect(runner, &dev::jobs::AccuracyRunner::progress, &board, [b, w](int taken, int total, double etaS) {
         if (!w->id.isEmpty())
             b->setProgress(w->id, QJsonObject{{QStringLiteral("readings_taken"), taken},
                                               {QStringLiteral("readings"), total},
@@ -54,15 +54,15 @@ void watchAccuracyRunner(JobBoard& board, jobs::AccuracyRunner* runner, const QS
     });
 }
 
-void watchCircleRunner(JobBoard& board, jobs::CircleRunner* runner, const QString& instrument, const QString& kind)
+void watchCircleRunner(JobBoard& board, dev::jobs::CircleRunner* runner, const QString& instrument, const QString& kind)
 {
     auto w = std::make_shared<Watch>();
-    watchStates<jobs::CircleRunner, jobs::CircleRunner::State>(board, runner, instrument, kind, w);
+    watchStates<dev::jobs::CircleRunner, dev::jobs::CircleRunner::State>(board, runner, instrument, kind, w);
     QPointer<JobBoard> b(&board);
-    QObject::connect(runner, &jobs::CircleRunner::progress, &board, [b, w](double fraction, double etaS) {
+    QObject::connect(runner, &dev::jobs::CircleRunner::progress, &board, [b, w](double fraction, double etaS) {
         if (!w->id.isEmpty())
             b->setProgress(w->id, QJsonObject{{QStringLiteral("fraction"), fraction}, {QStringLiteral("eta_s"), etaS}});
     });
 }
 
-} // namespace api
+} // namespace app::api

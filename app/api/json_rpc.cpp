@@ -4,10 +4,10 @@
 #include <QJsonDocument>
 #include <QJsonParseError>
 
-namespace api {
+namespace app::api {
 
 namespace {
-[[maybe_unused]] QString tr(const char* text) { return QCoreApplication::translate("api", text); }
+[[maybe_unused]] QString tr(const char* text) { return QCoreApplication::translate("app::api", text); }
 
 Request invalid(const QJsonValue& id, int errorCode, const QString& message)
 {
@@ -123,4 +123,4 @@ void LineSplitter::feed(const QByteArray& bytes, const std::function<void(const 
     }
 }
 
-} // namespace api
+} // namespace app::api

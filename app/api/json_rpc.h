@@ -9,7 +9,7 @@
 
 #include <functional>
 
-namespace api {
+namespace app::api {
 
 /// The error codes. −32768…−32000 are JSON-RPC's own; the application's are
 /// −32001…−32099, documented in docs/api.md with what a client should do.
@@ -73,4 +73,4 @@ private:
     bool m_skipping = false;  ///< inside a line already known to be too long
 };
 
-} // namespace api
+} // namespace app::api

@@ -5,10 +5,10 @@
 #include <QCoreApplication>
 #include <QJsonArray>
 
-namespace api {
+namespace app::api {
 
 namespace {
-[[maybe_unused]] QString tr(const char* text) { return QCoreApplication::translate("api", text); }
+[[maybe_unused]] QString tr(const char* text) { return QCoreApplication::translate("app::api", text); }
 
 QJsonObject typed(const char* type) { return QJsonObject{{QStringLiteral("type"), QString::fromLatin1(type)}}; }
 QJsonObject numberOrNumbers()
@@ -82,20 +82,20 @@ QJsonArray builtinMethods()
 }
 } // namespace
 
-QString accessName(cli::Access access, bool readsWithoutArguments)
+QString accessName(app::cli::Access access, bool readsWithoutArguments)
 {
     switch (access) {
-    case cli::Access::Compute: return QStringLiteral("compute");
-    case cli::Access::Read: return QStringLiteral("read");
-    case cli::Access::Safety: return QStringLiteral("safety");
-    case cli::Access::Control: return readsWithoutArguments ? QStringLiteral("control when setting") : QStringLiteral("control");
+    case app::cli::Access::Compute: return QStringLiteral("compute");
+    case app::cli::Access::Read: return QStringLiteral("read");
+    case app::cli::Access::Safety: return QStringLiteral("safety");
+    case app::cli::Access::Control: return readsWithoutArguments ? QStringLiteral("control when setting") : QStringLiteral("control");
     }
     return QStringLiteral("control");
 }
 
-QJsonObject paramSchema(cli::ParamType type, const QStringList& choices)
+QJsonObject paramSchema(app::cli::ParamType type, const QStringList& choices)
 {
-    using T = cli::ParamType;
+    using T = app::cli::ParamType;
     switch (type) {
     case T::Text:
         if (!choices.isEmpty())
@@ -136,7 +136,7 @@ QJsonObject openRpcDocument(const QVector<CommandMethod>& methods)
                 o.insert(QStringLiteral("x-cli"), QStringLiteral("--") + p.option);
             params.append(o);
         }
-        const cli::ApiSpec& spec = m.command->api;
+        const app::cli::ApiSpec& spec = m.command->api;
         QJsonObject o = method(m.method, m.command->summary, params, accessName(spec.access, spec.readsWithoutArguments),
                                apiWording(m, m.command->description));
         o.insert(QStringLiteral("x-cli"), QStringLiteral("benchpilot-cli %1").arg(m.path));
@@ -156,4 +156,4 @@ QJsonObject openRpcDocument(const QVector<CommandMethod>& methods)
                        {QStringLiteral("methods"), list}};
 }
 
-} // namespace api
+} // namespace app::api

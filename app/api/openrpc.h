@@ -8,12 +8,12 @@
 #include <QJsonObject>
 #include <QVector>
 
-namespace api {
+namespace app::api {
 
 QJsonObject openRpcDocument(const QVector<CommandMethod>& methods);
 /// The JSON Schema of a parameter type.
-QJsonObject paramSchema(cli::ParamType type, const QStringList& choices);
+QJsonObject paramSchema(app::cli::ParamType type, const QStringList& choices);
 /// "control", "read", "compute", "safety": what a method needs (docs/api.md, "Control").
-QString accessName(cli::Access access, bool readsWithoutArguments);
+QString accessName(app::cli::Access access, bool readsWithoutArguments);
 
-} // namespace api
+} // namespace app::api

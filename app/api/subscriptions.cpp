@@ -13,25 +13,25 @@
 #include <algorithm>
 #include <cmath>
 
-namespace api {
+namespace app::api {
 
 namespace {
-[[maybe_unused]] QString tr(const char* text) { return QCoreApplication::translate("api", text); }
+[[maybe_unused]] QString tr(const char* text) { return QCoreApplication::translate("app::api", text); }
 
 constexpr int kSnapshotLogEntries = 100;
 constexpr int kMaxTelemetryBacklog = 16;  ///< batches held per client; older ones are dropped
 
 struct KindName {
-    proto::ChannelKind kind;
+    dev::proto::ChannelKind kind;
     const char* name;
 };
-constexpr KindName kKinds[] = {{proto::ChannelKind::Commanded, "commanded"},
-                               {proto::ChannelKind::Measured, "measured"},
-                               {proto::ChannelKind::Velocity, "velocity"},
-                               {proto::ChannelKind::FollowingError, "following_error"},
-                               {proto::ChannelKind::ControllerOutput, "controller_output"},
-                               {proto::ChannelKind::Switches, "switches"},
-                               {proto::ChannelKind::ContourError, "contour_error"}};
+constexpr KindName kKinds[] = {{dev::proto::ChannelKind::Commanded, "commanded"},
+                               {dev::proto::ChannelKind::Measured, "measured"},
+                               {dev::proto::ChannelKind::Velocity, "velocity"},
+                               {dev::proto::ChannelKind::FollowingError, "following_error"},
+                               {dev::proto::ChannelKind::ControllerOutput, "controller_output"},
+                               {dev::proto::ChannelKind::Switches, "switches"},
+                               {dev::proto::ChannelKind::ContourError, "contour_error"}};
 
 } // namespace
 
@@ -59,7 +59,7 @@ struct Subscriptions::Sub {
     std::deque<QJsonObject> logBacklog;
     quint64 logSeq = 0;
     // telemetry
-    std::vector<proto::ChannelRef> channels;
+    std::vector<dev::proto::ChannelRef> channels;
     QStringList channelNames, units;
     std::vector<double> factors;
     int rateHz = 0;
@@ -126,7 +126,7 @@ Subscriptions::Subscriptions(ApiServer& server, QObject* parent) : QObject(paren
         });
         connect(c, &dev::Instrument::stateChanged, this, state);
         connect(c, &dev::Instrument::eventReceived, this, [this, i, c](const dev::DeviceEvent& e) {
-            using K = proto::EventKind;
+            using K = dev::proto::EventKind;
             if (e.kind != K::LimitHit && e.kind != K::Fault && e.kind != K::EStop && e.kind != K::LostSteps && e.kind != K::JogExpired)
                 return;
             Source& src = source(Topic::State, i);
@@ -140,7 +140,7 @@ Subscriptions::Subscriptions(ApiServer& server, QObject* parent) : QObject(paren
             v.insert(QStringLiteral("last_problem"), problem);
             sourceChanged(Topic::State, i, v, e.deviceTimeUs);
         });
-        connect(c, &dev::Instrument::telemetryReceived, this, [this, i](const proto::TelemetryBatch& b) { onTelemetry(i, b); });
+        connect(c, &dev::Instrument::telemetryReceived, this, [this, i](const dev::proto::TelemetryBatch& b) { onTelemetry(i, b); });
         positions();
         state();
     }
@@ -214,7 +214,7 @@ void Subscriptions::onJournal(const JournalEntry& entry)
     }
 }
 
-void Subscriptions::onTelemetry(int instrument, const proto::TelemetryBatch& b)
+void Subscriptions::onTelemetry(int instrument, const dev::proto::TelemetryBatch& b)
 {
     dev::Instrument* c = m_server.instruments().value(instrument).instrument;
     if (!c || b.sampleCount == 0)
@@ -473,16 +473,16 @@ QJsonObject Subscriptions::subscribe(ApiClient* client, const QJsonObject& param
                     }
                 if (!o.value(QStringLiteral("channels")).isUndefined() && (!o.value(QStringLiteral("channels")).isArray() || names.isEmpty()))
                     return fail(field + QStringLiteral(".channels"), tr("expected an array such as [\"X.measured\", \"X.following_error\"]"));
-                QVector<tele::ChannelKey> keys;
-                const QVector<tele::ChannelKey> available = m_server.hub()->availableChannels(m_server.instruments()[instrument].hubIndex);
+                QVector<dev::tele::ChannelKey> keys;
+                const QVector<dev::tele::ChannelKey> available = m_server.hub()->availableChannels(m_server.instruments()[instrument].hubIndex);
                 for (const QJsonValue& n : names) {
                     const QString name = n.toString();
-                    proto::ChannelRef ref;
+                    dev::proto::ChannelRef ref;
                     bool ok = false;
                     const QString axisPart = name.section(QLatin1Char('.'), 0, 0), kindPart = name.section(QLatin1Char('.'), 1);
                     for (const auto& kn : kKinds) {
-                        if (kn.kind == proto::ChannelKind::ContourError && name == QLatin1String(kn.name)) {
-                            ref = {proto::kNoAxis, kn.kind};
+                        if (kn.kind == dev::proto::ChannelKind::ContourError && name == QLatin1String(kn.name)) {
+                            ref = {dev::proto::kNoAxis, kn.kind};
                             ok = true;
                         } else if (kindPart == QLatin1String(kn.name) && axisPart.size() == 1) {
                             const int a = c->identity().axisIndex(axisPart[0]);
@@ -492,7 +492,7 @@ QJsonObject Subscriptions::subscribe(ApiClient* client, const QJsonObject& param
                             }
                         }
                     }
-                    const tele::ChannelKey key{m_server.instruments()[instrument].hubIndex, ref};
+                    const dev::tele::ChannelKey key{m_server.instruments()[instrument].hubIndex, ref};
                     if (!ok || !available.contains(key))
                         return fail(field + QStringLiteral(".channels"),
                                     tr("'%1' is not a channel of the %2 (AXIS.measured, AXIS.commanded, AXIS.velocity, "
@@ -504,9 +504,9 @@ QJsonObject Subscriptions::subscribe(ApiClient* client, const QJsonObject& param
                     const QString unit = m_server.hub()->channelUnit(key);
                     s->units << unit;
                     // The hub's units: following and contour error in µm (nL), from mm (µL).
-                    s->factors.push_back(ref.kind == proto::ChannelKind::FollowingError || ref.kind == proto::ChannelKind::ContourError ? 1000.0 : 1.0);
+                    s->factors.push_back(ref.kind == dev::proto::ChannelKind::FollowingError || ref.kind == dev::proto::ChannelKind::ContourError ? 1000.0 : 1.0);
                 }
-                int rate = tele::TelemetryHub::kDefaultRateHz;
+                int rate = dev::tele::TelemetryHub::kDefaultRateHz;
                 if (o.contains(QStringLiteral("rate_hz"))) {
                     const QJsonValue v = o.value(QStringLiteral("rate_hz"));
                     if (!v.isDouble() || v.toDouble() < 1 || v.toDouble() > 100000)
@@ -579,4 +579,4 @@ Subscriptions::Counts Subscriptions::counts(quint64 clientId) const
     return it == m_counts.end() ? Counts{} : it->second;
 }
 
-} // namespace api
+} // namespace app::api

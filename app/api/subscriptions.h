@@ -29,7 +29,7 @@
 #include <memory>
 #include <vector>
 
-namespace api {
+namespace app::api {
 
 class ApiClient;
 class ApiServer;
@@ -67,7 +67,7 @@ private:
     Source& source(Topic topic, int instrument);
     void sourceChanged(Topic topic, int instrument, const QJsonObject& value, quint64 deviceTimeUs);
     void onJournal(const JournalEntry& entry);
-    void onTelemetry(int instrument, const proto::TelemetryBatch& batch);
+    void onTelemetry(int instrument, const dev::proto::TelemetryBatch& batch);
     void pump();
     void send(Sub& s, bool snapshot);
 
@@ -80,4 +80,4 @@ private:
     std::map<quint64, Counts> m_counts;
 };
 
-} // namespace api
+} // namespace app::api

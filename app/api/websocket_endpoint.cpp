@@ -15,10 +15,10 @@
 
 #include <sys/stat.h>
 
-namespace api {
+namespace app::api {
 
 namespace {
-[[maybe_unused]] QString tr(const char* text) { return QCoreApplication::translate("api", text); }
+[[maybe_unused]] QString tr(const char* text) { return QCoreApplication::translate("app::api", text); }
 
 #ifdef BP_WITH_WEBSOCKETS
 /// Compares without an early exit, so the time taken says nothing about the token.
@@ -151,4 +151,4 @@ QString WebSocketEndpoint::url() const
     return {};
 }
 
-} // namespace api
+} // namespace app::api

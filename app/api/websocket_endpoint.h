@@ -18,7 +18,7 @@
 class QWebSocket;
 class QWebSocketServer;
 
-namespace api {
+namespace app::api {
 
 class WebSocketEndpoint : public QObject {
     Q_OBJECT
@@ -35,7 +35,7 @@ public:
     static bool originAllowed(const QString& origin, const QStringList& allowed);
 
 signals:
-    void newChannel(api::Channel* channel);
+    void newChannel(app::api::Channel* channel);
 
 private:
     QWebSocketServer* m_server = nullptr;
@@ -44,4 +44,4 @@ private:
     QStringList m_allowedOrigins;
 };
 
-} // namespace api
+} // namespace app::api

@@ -7,18 +7,18 @@
 
 #include <cmath>
 
-namespace cli {
+namespace app::cli {
 namespace {
-QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+QString tr(const char* text) { return QCoreApplication::translate("app::cli", text); }
 } // namespace
 
 double nm6(double v) { return std::round(v * 1e6) / 1e6; }
 
-QJsonObject messageJson(const msg::Message& m) { return words::toJson(m); }
+QJsonObject messageJson(const motion::msg::Message& m) { return ui::words::toJson(m); }
 
-QJsonObject problemJson(const msg::Problem& p)
+QJsonObject problemJson(const motion::msg::Problem& p)
 {
-    QJsonObject o = words::toJson(p);
+    QJsonObject o = ui::words::toJson(p);
     // These commands' JSON has always carried the field, and a file's line and column
     // (0: the file as a whole), even when empty; scripts may read them unguarded.
     if (!o.contains(QStringLiteral("field")))
@@ -35,9 +35,9 @@ void printJson(Invocation& inv, const QJsonObject& o)
     inv.printJson(o);  // the API's result is this object, not its text
 }
 
-bool reportProblems(Invocation& inv, const msg::Problems& problems, const std::vector<std::pair<QString, QString>>& optionNames)
+bool reportProblems(Invocation& inv, const motion::msg::Problems& problems, const std::vector<std::pair<QString, QString>>& optionNames)
 {
-    const bool errors = msg::hasErrors(problems);
+    const bool errors = motion::msg::hasErrors(problems);
     auto optionOf = [&](const std::string& path) {
         const QString p = QString::fromStdString(path);
         for (const auto& [field, option] : optionNames)
@@ -58,10 +58,10 @@ bool reportProblems(Invocation& inv, const msg::Problems& problems, const std::v
         printJson(inv, QJsonObject{{QStringLiteral("ok"), false}, {QStringLiteral("problems"), list}});
         return true;
     }
-    for (msg::Problem p : problems) {
+    for (motion::msg::Problem p : problems) {
         if (!optionNames.empty())
             p.path = optionOf(p.path).toStdString();
-        const QString line = words::problem(p);
+        const QString line = ui::words::problem(p);
         if (p.isWarning())
             inv.out() << line << "\n";
         else if (!p.file.empty())
@@ -74,21 +74,21 @@ bool reportProblems(Invocation& inv, const msg::Problems& problems, const std::v
     return errors;
 }
 
-int reportFailure(Invocation& inv, const msg::Message& m, int exitCode)
+int reportFailure(Invocation& inv, const motion::msg::Message& m, int exitCode)
 {
     if (inv.json())
-        printJson(inv, QJsonObject{{QStringLiteral("ok"), false}, {QStringLiteral("error"), words::toJson(m)}});
+        printJson(inv, QJsonObject{{QStringLiteral("ok"), false}, {QStringLiteral("error"), ui::words::toJson(m)}});
     else
-        inv.report(words::text(m));
+        inv.report(ui::words::text(m));
     return exitCode;
 }
 
-QJsonObject resultJson(const accuracyfiles::AccuracyResult& r)
+QJsonObject resultJson(const dev::files::accuracy::AccuracyResult& r)
 {
-    return QJsonDocument::fromJson(QByteArray::fromStdString(accuracyfiles::accuracyResultToJson(r))).object();
+    return QJsonDocument::fromJson(QByteArray::fromStdString(dev::files::accuracy::accuracyResultToJson(r))).object();
 }
 
-void printFiguresText(Invocation& inv, const accuracyfiles::AccuracyResult& r)
+void printFiguresText(Invocation& inv, const dev::files::accuracy::AccuracyResult& r)
 {
     const auto& f = r.evaluation.figures;
     auto um = [](std::optional<double> v) { return v ? QString::number(*v * 1e3, 'f', 2) : QStringLiteral("—"); };
@@ -121,4 +121,4 @@ QString timeScaleRefusal(Invocation& inv)
     return tr("--time-scale speeds up the in-process simulator: use it with --sim");
 }
 
-} // namespace cli
+} // namespace app::cli

@@ -10,22 +10,22 @@
 #include <QJsonArray>
 #include <QJsonObject>
 
-namespace cli {
+namespace app::cli {
 
-QJsonObject problemJson(const msg::Problem& p);
-QJsonObject messageJson(const msg::Message& m);
+QJsonObject problemJson(const motion::msg::Problem& p);
+QJsonObject messageJson(const motion::msg::Message& m);
 
-/// Prints every problem as words::problem words it (text: errors on stderr, warnings on
+/// Prints every problem as ui::words::problem words it (text: errors on stderr, warnings on
 /// stdout; JSON: one object {"ok": false, "problems": [...]} when any is an error). True
 /// when any is an error. `optionNames` maps a field path's start to the command-line
 /// option that set it ("cycles" → "--cycles"), for a data model's problems.
-bool reportProblems(Invocation& inv, const msg::Problems& problems,
+bool reportProblems(Invocation& inv, const motion::msg::Problems& problems,
                     const std::vector<std::pair<QString, QString>>& optionNames = {});
 /// One message as the command's failure: text on stderr or {"ok": false, "error": {...}}.
-int reportFailure(Invocation& inv, const msg::Message& m, int exitCode);
+int reportFailure(Invocation& inv, const motion::msg::Message& m, int exitCode);
 
 /// A result file's document as JSON (figures, targets, tolerances, verdicts, pass).
-QJsonObject resultJson(const accuracyfiles::AccuracyResult& r);
+QJsonObject resultJson(const dev::files::accuracy::AccuracyResult& r);
 void printJson(Invocation& inv, const QJsonObject& o);
 /// A number rounded to the nanometre (mm) for JSON.
 double nm6(double v);
@@ -35,6 +35,6 @@ double nm6(double v);
 QString timeScaleRefusal(Invocation& inv);
 
 /// The figures as a small text table for a person.
-void printFiguresText(Invocation& inv, const accuracyfiles::AccuracyResult& r);
+void printFiguresText(Invocation& inv, const dev::files::accuracy::AccuracyResult& r);
 
-} // namespace cli
+} // namespace app::cli

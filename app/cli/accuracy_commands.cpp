@@ -26,14 +26,14 @@
 
 #include <cmath>
 
-namespace cli {
+namespace app::cli {
 
 int runAccuracy(Invocation& inv);
 QList<QCommandLineOption> accuracyRunOptions();
 
 namespace {
 
-QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+QString tr(const char* text) { return QCoreApplication::translate("app::cli", text); }
 
 /// --tolerance-a etc.: limits in mm for a result that has none.
 bool readTolerances(Invocation& inv, motion::metrology::AxisTolerances& t)
@@ -61,15 +61,15 @@ int analyze(Invocation& inv)
         return inv.usage(tr("give one readings CSV"));
     const QString path = inv.path(inv.arguments().front());
     std::string text, name = QFileInfo(path).fileName().toStdString();
-    msg::Message error;
-    if (!files::readText(path, &text, &error)) {
-        reportProblems(inv, msg::Problems{msg::Problem(name, 0, 0, "", error)});
+    motion::msg::Message error;
+    if (!dev::files::readText(path, &text, &error)) {
+        reportProblems(inv, motion::msg::Problems{motion::msg::Problem(name, 0, 0, "", error)});
         return Usage;
     }
-    const auto analyzed = accuracyfiles::analyzeReadingsCsv(text, name);
+    const auto analyzed = dev::files::accuracy::analyzeReadingsCsv(text, name);
     if (reportProblems(inv, analyzed.problems))
         return Usage;
-    accuracyfiles::AccuracyResult r;
+    dev::files::accuracy::AccuracyResult r;
     r.axis = inv.value(QStringLiteral("axis")).isEmpty() ? "X" : inv.value(QStringLiteral("axis")).toUpper().toStdString();
     r.evaluation = analyzed.evaluation;
     if (!readTolerances(inv, r.tolerances))
@@ -77,7 +77,7 @@ int analyze(Invocation& inv)
     r.readingsFile = name;
     r.createdUtc = QDateTime::currentDateTimeUtc().toString(Qt::ISODate).toStdString();
     if (inv.isSet(QStringLiteral("out"))) {
-        if (!accuracyfiles::saveAccuracyResultFile(inv.path(inv.value(QStringLiteral("out"))), r, &error))
+        if (!dev::files::accuracy::saveAccuracyResultFile(inv.path(inv.value(QStringLiteral("out"))), r, &error))
             return reportFailure(inv, error, Refused);
     }
     if (inv.json())
@@ -91,23 +91,23 @@ int importInterferometer(Invocation& inv)
 {
     if (inv.arguments().size() != 1 || !inv.isSet(QStringLiteral("sequence")))
         return inv.usage(tr("give --sequence TARGETS.csv and the interferometer's CSV export"));
-    const auto sequence = accuracyfiles::loadTargetSequence(inv.path(inv.value(QStringLiteral("sequence"))));
+    const auto sequence = dev::files::accuracy::loadTargetSequence(inv.path(inv.value(QStringLiteral("sequence"))));
     if (reportProblems(inv, sequence.problems))
         return Usage;
-    const auto imported = accuracyfiles::loadInterferometerExport(inv.path(inv.arguments().front()), sequence.stops);
+    const auto imported = dev::files::accuracy::loadInterferometerExport(inv.path(inv.arguments().front()), sequence.stops);
     if (reportProblems(inv, imported.problems))
         return Usage;
     const auto evaluation = motion::metrology::evaluate(imported.readings);
-    msg::Message error;
+    motion::msg::Message error;
     QString out = inv.path(inv.value(QStringLiteral("out")));
     if (inv.value(QStringLiteral("out")).isEmpty()) {
         out = inv.path(inv.value(QStringLiteral("sequence")));
         out.replace(QStringLiteral(".targets.csv"), QString());
         out += QStringLiteral(".readings.csv");
     }
-    if (!accuracyfiles::saveReadingsCsv(out, imported.readings, &error))
+    if (!dev::files::accuracy::saveReadingsCsv(out, imported.readings, &error))
         return reportFailure(inv, error, Refused);
-    accuracyfiles::AccuracyResult r;
+    dev::files::accuracy::AccuracyResult r;
     r.axis = inv.value(QStringLiteral("axis")).isEmpty() ? "X" : inv.value(QStringLiteral("axis")).toUpper().toStdString();
     r.evaluation = evaluation;
     r.reference = "interferometer";
@@ -166,7 +166,7 @@ int circle(Invocation& inv)
 {
     motion::metrology::CircularTest t;
     if (inv.isSet(QStringLiteral("test"))) {
-        const auto read = accuracyfiles::loadAccuracyTestFile(inv.path(inv.value(QStringLiteral("test"))));
+        const auto read = dev::files::accuracy::loadAccuracyTestFile(inv.path(inv.value(QStringLiteral("test"))));
         if (reportProblems(inv, read.problems) || !read.test)
             return Usage;
         const auto* c = std::get_if<motion::metrology::CircularTest>(&*read.test);
@@ -221,31 +221,31 @@ int circle(Invocation& inv)
         if (int rc = session->request([&](auto cb) { instrument->home(mask, cb); }, tr("home")))
             return rc;
         if (!session->waitUntilHomed(mask))
-            return reportFailure(inv, msg::make("accuracy.run.not_homed", {msg::verbatim("axis", "XY")}), Refused);
+            return reportFailure(inv, motion::msg::make("accuracy.run.not_homed", {motion::msg::verbatim("axis", "XY")}), Refused);
     }
-    jobs::CircleRunner runner(instrument);
-    msg::Problems problems;
+    dev::jobs::CircleRunner runner(instrument);
+    motion::msg::Problems problems;
     if (!runner.prepare(t, &problems)) {
         reportProblems(inv, problems);
         return Usage;
     }
-    msg::Message stopped;
-    QObject::connect(&runner, &jobs::CircleRunner::problem, &runner, [&](const msg::Message& m) { stopped = m; });
+    motion::msg::Message stopped;
+    QObject::connect(&runner, &dev::jobs::CircleRunner::problem, &runner, [&](const motion::msg::Message& m) { stopped = m; });
     // Sampled on the device's clock: its measured X and Y as telemetry (status readings
     // only if the device does not stream them).
     QObject::connect(instrument, &dev::Instrument::telemetryReceived, &runner,
-                     [&](const proto::TelemetryBatch& b) { jobs::feedCircleBatch(runner, *instrument, b); });
-    session->wantTelemetry(jobs::circleChannels(runner), jobs::kCircleSampleRateHz);
-    msg::Message why;
+                     [&](const dev::proto::TelemetryBatch& b) { dev::jobs::feedCircleBatch(runner, *instrument, b); });
+    session->wantTelemetry(dev::jobs::circleChannels(runner), dev::jobs::kCircleSampleRateHz);
+    motion::msg::Message why;
     if (!runner.start(&why))
         return reportFailure(inv, why, Refused);
     const int limitMs = static_cast<int>(std::min(24.0 * 3600, runner.etaS() / timeScale * 4 + 60) * 1000);
     if (!spinUntil([&] { return !runner.isActive(); }, limitMs)) {
         runner.abort();
-        return reportFailure(inv, msg::make("accuracy.run.timed_out"), Refused);
+        return reportFailure(inv, motion::msg::make("accuracy.run.timed_out"), Refused);
     }
-    if (runner.state() != jobs::CircleRunner::State::Finished)
-        return reportFailure(inv, stopped.empty() ? msg::make("accuracy.run.aborted") : stopped, Refused);
+    if (runner.state() != dev::jobs::CircleRunner::State::Finished)
+        return reportFailure(inv, stopped.empty() ? motion::msg::make("accuracy.run.aborted") : stopped, Refused);
     const auto e = runner.evaluation();
     if (!e.ok()) {
         reportProblems(inv, e.problems);
@@ -262,18 +262,18 @@ int circle(Invocation& inv)
         for (const auto& run : runner.runs())
             for (const auto& s : run.samplesMm)
                 csv += std::string(motion::metrology::rotationName(run.rotation)) + "," + std::to_string(s.xMm) + "," + std::to_string(s.yMm) + "\r\n";
-        if (files::writeAtomically(base + QStringLiteral(".circle-samples.csv"), csv, &error))
+        if (dev::files::writeAtomically(base + QStringLiteral(".circle-samples.csv"), csv, &error))
             files.append(base + QStringLiteral(".circle-samples.csv"));
-        if (files::writeAtomically(base + QStringLiteral(".circle-result.json"), QJsonDocument(o).toJson().toStdString(), &error))
+        if (dev::files::writeAtomically(base + QStringLiteral(".circle-result.json"), QJsonDocument(o).toJson().toStdString(), &error))
             files.append(base + QStringLiteral(".circle-result.json"));
-        if (report::canRender()) {
-            report::CircleReportInput in;
+        if (ui::report::canRender()) {
+            ui::report::CircleReportInput in;
             in.title = tr("Circular test, radius %1 mm").arg(t.radiusMm);
             in.instrument = QStringLiteral("%1 (%2)").arg(instrument->identity().model, instrument->identity().family);
             in.test = t;
             in.evaluation = e;
             in.created = QDateTime::currentDateTime().toString(Qt::ISODate);
-            if (report::writeCircleReport(base + QStringLiteral(".report.pdf"), in, &error))
+            if (ui::report::writeCircleReport(base + QStringLiteral(".report.pdf"), in, &error))
                 files.append(base + QStringLiteral(".report.pdf"));
             else
                 inv.report(error);
@@ -284,7 +284,7 @@ int circle(Invocation& inv)
         printJson(inv, o);
     } else {
         for (const auto& run : e.runs)
-            inv.out() << tr("G %1: %2 µm").arg(words::term(motion::metrology::rotationTermId(run.rotation))).arg(run.circularDeviationMm * 1e3, 0, 'f', 2) << "\n";
+            inv.out() << tr("G %1: %2 µm").arg(ui::words::term(motion::metrology::rotationTermId(run.rotation))).arg(run.circularDeviationMm * 1e3, 0, 'f', 2) << "\n";
         if (e.hysteresisMm)
             inv.out() << tr("H: %1 µm").arg(*e.hysteresisMm * 1e3, 0, 'f', 2) << "\n";
     }
@@ -371,4 +371,4 @@ void addAccuracyCommands(std::vector<Command>& list)
     list.push_back(accuracy);
 }
 
-} // namespace cli
+} // namespace app::cli

@@ -24,10 +24,10 @@
 
 #include <cmath>
 
-namespace cli {
+namespace app::cli {
 namespace {
 
-QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+QString tr(const char* text) { return QCoreApplication::translate("app::cli", text); }
 
 const std::vector<std::pair<QString, QString>> kOptionOf = {
     {QStringLiteral("targets_mm"), QStringLiteral("--targets")}, {QStringLiteral("grid"), QStringLiteral("--targets")},
@@ -67,10 +67,10 @@ bool parseTargets(Invocation& inv, const QString& text, motion::metrology::AxisT
 }
 
 /// The test from --test FILE, or from the options.
-bool buildTest(Invocation& inv, accuracyfiles::AccuracyTest& out)
+bool buildTest(Invocation& inv, dev::files::accuracy::AccuracyTest& out)
 {
     if (inv.isSet(QStringLiteral("test"))) {
-        const auto read = accuracyfiles::loadAccuracyTestFile(inv.path(inv.value(QStringLiteral("test"))));
+        const auto read = dev::files::accuracy::loadAccuracyTestFile(inv.path(inv.value(QStringLiteral("test"))));
         if (reportProblems(inv, read.problems) || !read.test)
             return false;
         if (std::holds_alternative<motion::metrology::CircularTest>(*read.test)) {
@@ -106,7 +106,7 @@ bool buildTest(Invocation& inv, accuracyfiles::AccuracyTest& out)
     return true;
 }
 
-QString defaultFolder(const Invocation& inv, const accuracyfiles::AccuracyTest& t)
+QString defaultFolder(const Invocation& inv, const dev::files::accuracy::AccuracyTest& t)
 {
     const std::string name = std::visit([](const auto& x) { return x.name; }, t);
     return inv.path(QString::fromStdString(name.empty() ? "accuracy" : name));
@@ -124,7 +124,7 @@ QJsonArray filesJson(const QStringList& files)
 
 int runAccuracy(Invocation& inv)
 {
-    accuracyfiles::AccuracyTest test;
+    dev::files::accuracy::AccuracyTest test;
     if (!buildTest(inv, test))
         return Usage;
     const QString spec = inv.value(QStringLiteral("source")).isEmpty() ? QStringLiteral("readback") : inv.value(QStringLiteral("source"));
@@ -141,7 +141,7 @@ int runAccuracy(Invocation& inv)
     const bool newRun = inv.isSet(QStringLiteral("new-run"));
     if (newRun && inv.isSet(QStringLiteral("restart")))
         return inv.usage(tr("--new-run keeps every run; --restart sets one aside: give one of them"));
-    QString folder = newRun ? accuracyfiles::latestRunFolder(base) : base;
+    QString folder = newRun ? dev::files::accuracy::latestRunFolder(base) : base;
     if (timeScale != 1)
         inv.unpaceSimulatedLink();
 
@@ -160,34 +160,34 @@ int runAccuracy(Invocation& inv)
         if (int rc = session->request([&](auto cb) { instrument->home(mask, cb); }, tr("home")))
             return rc;
         if (!session->waitUntilHomed(mask))
-            return reportFailure(inv, msg::make("accuracy.run.not_homed", {msg::verbatim("axis", "")}), Refused);
+            return reportFailure(inv, motion::msg::make("accuracy.run.not_homed", {motion::msg::verbatim("axis", "")}), Refused);
     }
     int axisIndex = 0;
     if (const auto* a = std::get_if<motion::metrology::AxisTest>(&test))
         axisIndex = a->axis.size() == 1 ? instrument->identity().axisIndex(QChar::fromLatin1(a->axis[0])) : -1;
     QObject owner;
-    jobs::ReadingSource* source = makeSource(inv, *session, spec, std::max(0, axisIndex), &owner);
+    dev::jobs::ReadingSource* source = makeSource(inv, *session, spec, std::max(0, axisIndex), &owner);
     if (!source)
         return Usage;
-    msg::Message openProblem;
+    motion::msg::Message openProblem;
     bool opened = false;
-    source->open([&](const msg::Message& p) {
+    source->open([&](const motion::msg::Message& p) {
         openProblem = p;
         opened = true;
     });
     spinUntil([&] { return opened; }, 5000);
     if (!opened || !openProblem.empty())
-        return reportFailure(inv, openProblem.empty() ? msg::make("gauge.no_answer") : openProblem, LinkTrouble);
+        return reportFailure(inv, openProblem.empty() ? motion::msg::make("gauge.no_answer") : openProblem, LinkTrouble);
 
-    jobs::AccuracyRunner runner(instrument);
-    msg::Problems problems;
+    dev::jobs::AccuracyRunner runner(instrument);
+    motion::msg::Problems problems;
     if (!runner.prepare(test, source, folder, inv.isSet(QStringLiteral("restart")), &problems)) {
         reportProblems(inv, problems, kOptionOf);
         return Usage;
     }
-    if (runner.state() == jobs::AccuracyRunner::State::Finished && newRun) {
+    if (runner.state() == dev::jobs::AccuracyRunner::State::Finished && newRun) {
         const QString finished = folder;
-        folder = accuracyfiles::nextRunFolder(base);
+        folder = dev::files::accuracy::nextRunFolder(base);
         if (!runner.prepare(test, source, folder, false, &problems)) {
             reportProblems(inv, problems, kOptionOf);
             return Usage;
@@ -195,19 +195,19 @@ int runAccuracy(Invocation& inv)
         inv.err() << tr("%1 holds a finished run of this test: this run goes into %2, beside it.")
                          .arg(QDir::toNativeSeparators(finished), QDir::toNativeSeparators(folder))
                   << "\n";
-    } else if (runner.state() == jobs::AccuracyRunner::State::Finished) {
+    } else if (runner.state() == dev::jobs::AccuracyRunner::State::Finished) {
         // Not a dead end: the finished run's results are reported again, and the way to
         // measure again (after compensation) is said.
         inv.err() << tr("%1 holds a finished run of this test: its results follow, nothing was moved. To run the test "
                         "again beside it (after compensation), add --new-run: it goes into %2 and both are kept.")
-                         .arg(QDir::toNativeSeparators(folder), QDir::toNativeSeparators(accuracyfiles::nextRunFolder(base)))
+                         .arg(QDir::toNativeSeparators(folder), QDir::toNativeSeparators(dev::files::accuracy::nextRunFolder(base)))
                   << "\n";
     }
     reportProblems(inv, problems, kOptionOf);  // warnings
     attachStdinPrompter(inv, source, [&] { runner.abort(); });
-    msg::Message stopped;
-    QObject::connect(&runner, &jobs::AccuracyRunner::problem, &runner, [&](const msg::Message& m) { stopped = m; });
-    QObject::connect(&runner, &jobs::AccuracyRunner::progress, &runner, [&](int taken, int total, double eta) {
+    motion::msg::Message stopped;
+    QObject::connect(&runner, &dev::jobs::AccuracyRunner::problem, &runner, [&](const motion::msg::Message& m) { stopped = m; });
+    QObject::connect(&runner, &dev::jobs::AccuracyRunner::progress, &runner, [&](int taken, int total, double eta) {
         inv.host().progressed(QJsonObject{{QStringLiteral("readings_taken"), taken},
                                           {QStringLiteral("readings"), total},
                                           {QStringLiteral("eta_s"), eta}});
@@ -216,12 +216,12 @@ int runAccuracy(Invocation& inv)
         inv.err() << tr("\r%1 of %2 readings, about %3 s left   ").arg(taken).arg(total).arg(std::lround(eta));
         inv.err().flush();
     });
-    if (runner.state() != jobs::AccuracyRunner::State::Finished) {
-        msg::Message why;
+    if (runner.state() != dev::jobs::AccuracyRunner::State::Finished) {
+        motion::msg::Message why;
         if (!runner.start(&why))
             return reportFailure(inv, why, Refused);
         // No wall-clock limit on a person typing; otherwise four times the estimate.
-        const bool manual = source->kind() == jobs::ReadingKind::Manual;
+        const bool manual = source->kind() == dev::jobs::ReadingKind::Manual;
         const int limitMs = manual ? 24 * 3600 * 1000
                                    : static_cast<int>(std::min(24.0 * 3600, std::max(inv.link().timeoutS, runner.etaS() / timeScale * 4 + 60)) * 1000);
         const bool done = spinUntil([&] { return !runner.isActive(); }, limitMs);
@@ -229,42 +229,42 @@ int runAccuracy(Invocation& inv)
             inv.err() << "\n";
         if (!done) {
             runner.abort();
-            return reportFailure(inv, msg::make("accuracy.run.timed_out"), Refused);
+            return reportFailure(inv, motion::msg::make("accuracy.run.timed_out"), Refused);
         }
     }
-    if (runner.state() != jobs::AccuracyRunner::State::Finished)
-        return reportFailure(inv, stopped.empty() ? msg::make("accuracy.run.aborted") : stopped, Refused);
+    if (runner.state() != dev::jobs::AccuracyRunner::State::Finished)
+        return reportFailure(inv, stopped.empty() ? motion::msg::make("accuracy.run.aborted") : stopped, Refused);
 
     QStringList files = runner.results();
     QJsonObject out;
-    if (source->kind() == jobs::ReadingKind::Interferometer) {
+    if (source->kind() == dev::jobs::ReadingKind::Interferometer) {
         out = QJsonObject{{QStringLiteral("ok"), true},
                           {QStringLiteral("readings"), QJsonValue::Null},
                           {QStringLiteral("sequence"), runner.basePath() + QStringLiteral(".targets.csv")}};
     } else if (const auto* a = std::get_if<motion::metrology::AxisTest>(&test)) {
-        accuracyfiles::AccuracyResult r;
+        dev::files::accuracy::AccuracyResult r;
         r.axis = a->axis;
         r.evaluation = runner.evaluation();
         r.tolerances = a->tolerances;
-        r.reference = jobs::readingKindName(source->kind());
+        r.reference = dev::jobs::readingKindName(source->kind());
         r.readingsFile = QFileInfo(runner.basePath() + QStringLiteral(".readings.csv")).fileName().toStdString();
         if (!r.evaluation.ok()) {
             reportProblems(inv, r.evaluation.problems);
             return Refused;
         }
-        report::AxisReportInput in;
+        ui::report::AxisReportInput in;
         in.title = tr("Positioning accuracy of axis %1").arg(QString::fromStdString(a->axis));
         in.instrument = QStringLiteral("%1 (%2)").arg(instrument->identity().model, instrument->identity().family);
         in.source = source->describe();
         in.test = *a;
         in.result = r;
         in.readings = runner.readings();
-        in.fit = motion::metrology::fitPolynomials(accuracyfiles::fitPointsOf(r.evaluation));
+        in.fit = motion::metrology::fitPolynomials(dev::files::accuracy::fitPointsOf(r.evaluation));
         in.created = QDateTime::currentDateTime().toString(Qt::ISODate);
         const QString pdf = runner.basePath() + QStringLiteral(".report.pdf");
         QString error;
-        if (report::canRender()) {
-            if (report::writeAxisReport(pdf, in, &error))
+        if (ui::report::canRender()) {
+            if (ui::report::writeAxisReport(pdf, in, &error))
                 files << pdf;
             else
                 inv.report(error);
@@ -276,7 +276,7 @@ int runAccuracy(Invocation& inv)
     } else {
         const auto e = runner.xyEvaluation();
         auto figures = [](const motion::metrology::Evaluation& ev) {
-            accuracyfiles::AccuracyResult r;
+            dev::files::accuracy::AccuracyResult r;
             r.evaluation = ev;
             return resultJson(r).value(QStringLiteral("figures"));
         };
@@ -288,7 +288,7 @@ int runAccuracy(Invocation& inv)
                       << "\n";
     }
     if (inv.json()) {
-        out.insert(QStringLiteral("source"), QString::fromLatin1(jobs::readingKindName(source->kind())));
+        out.insert(QStringLiteral("source"), QString::fromLatin1(dev::jobs::readingKindName(source->kind())));
         out.insert(QStringLiteral("folder"), folder);
         out.insert(QStringLiteral("files"), filesJson(files));
         printJson(inv, out);
@@ -320,4 +320,4 @@ QList<QCommandLineOption> accuracyRunOptions()
             option("time-scale", "with --sim: run the simulator's clock this many times faster", "k", "1")};
 }
 
-} // namespace cli
+} // namespace app::cli

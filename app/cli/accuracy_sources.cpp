@@ -18,9 +18,9 @@
 #include <cmath>
 #include <unistd.h>
 
-namespace cli {
+namespace app::cli {
 namespace {
-QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+QString tr(const char* text) { return QCoreApplication::translate("app::cli", text); }
 
 /// A typed reading: a number, with an optional unit (mm when none).
 std::optional<double> parseTyped(const QString& word)
@@ -29,7 +29,7 @@ std::optional<double> parseTyped(const QString& word)
     if (w.isEmpty())
         return std::nullopt;
     // With a unit: the gauge dialect's rules; without: millimetres.
-    const auto a = gaugewire::parseAnswer(w.toStdString(), "stdin");
+    const auto a = dev::gaugewire::parseAnswer(w.toStdString(), "stdin");
     if (a.valueMm)
         return a.valueMm;
     bool ok = false;
@@ -40,20 +40,20 @@ std::optional<double> parseTyped(const QString& word)
 }
 } // namespace
 
-jobs::ReadingSource* makeSource(Invocation& inv, CliSession& session, const QString& spec, int axis, QObject* owner)
+dev::jobs::ReadingSource* makeSource(Invocation& inv, CliSession& session, const QString& spec, int axis, QObject* owner)
 {
     if (spec == QLatin1String("readback"))
-        return new jobs::ReadbackSource(session.instrument(), owner);
+        return new dev::jobs::ReadbackSource(session.instrument(), owner);
     if (spec == QLatin1String("manual")) {
         // Readings are typed on standard input; the GUI's has nobody at it.
         if (inv.host().insideGui()) {
             inv.usage(tr("--source manual reads what a person types at benchpilot-cli; in the GUI use the Calibration screen"));
             return nullptr;
         }
-        return new jobs::ManualSource(owner);
+        return new dev::jobs::ManualSource(owner);
     }
     if (spec == QLatin1String("interferometer"))
-        return new jobs::InterferometerSource(owner);
+        return new dev::jobs::InterferometerSource(owner);
     if (!spec.startsWith(QLatin1String("gauge:")) || spec.size() <= 6) {
         inv.usage(tr("--source '%1': readback, gauge:PATH, manual or interferometer").arg(spec));
         return nullptr;
@@ -66,7 +66,7 @@ jobs::ReadingSource* makeSource(Invocation& inv, CliSession& session, const QStr
         inv.usage(tr("--gauge-timeout must be from 0 to 60 s"));
         return nullptr;
     }
-    jobs::GaugeSource* source = nullptr;
+    dev::jobs::GaugeSource* source = nullptr;
     if (port == QLatin1String("sim")) {
         auto* link = qobject_cast<dev::SimulatedLink*>(session.link());
         if (!link) {
@@ -78,21 +78,21 @@ jobs::ReadingSource* makeSource(Invocation& inv, CliSession& session, const QStr
             return nullptr;
         }
         auto* gauge = new dev::SimulatedGauge(link->machine(), axis, {}, owner);
-        source = new jobs::GaugeSource(gauge->hostEnd(), tr("simulated gauge"), owner);
+        source = new dev::jobs::GaugeSource(gauge->hostEnd(), tr("simulated gauge"), owner);
     } else {
         double baud = 9600;
         if (!inv.number(QStringLiteral("gauge-baud"), baud, 9600.0))
             return nullptr;
         auto* serial = new dev::SerialTransport(port, static_cast<qint32>(baud), owner);
-        source = new jobs::GaugeSource(serial, port, owner);
+        source = new dev::jobs::GaugeSource(serial, port, owner);
     }
     source->link().setTimeoutMs(static_cast<int>(std::lround(timeoutS * 1000)));
     return source;
 }
 
-void attachStdinPrompter(Invocation& inv, jobs::ReadingSource* source, const std::function<void()>& onQuit)
+void attachStdinPrompter(Invocation& inv, dev::jobs::ReadingSource* source, const std::function<void()>& onQuit)
 {
-    auto* manual = qobject_cast<jobs::ManualSource*>(source);
+    auto* manual = qobject_cast<dev::jobs::ManualSource*>(source);
     if (!manual)
         return;
     struct Stdin {
@@ -103,14 +103,14 @@ void attachStdinPrompter(Invocation& inv, jobs::ReadingSource* source, const std
     auto in = std::make_shared<Stdin>();
     in->notifier = new QSocketNotifier(STDIN_FILENO, QSocketNotifier::Read, manual);
     QTextStream* err = &inv.err();
-    auto prompt = [err](const jobs::StopContext& s) {
+    auto prompt = [err](const dev::jobs::StopContext& s) {
         QString what;
         for (std::size_t n = 0; n < s.letters.size(); ++n)
             what += QStringLiteral("%1 %2 mm  ").arg(s.letters[n]).arg(s.targetsMm[n], 0, 'f', 3);
         *err << tr("reading %1 of %2: %3%4, cycle %5; type the reading in mm (q aborts): ")
                     .arg(s.index + 1)
                     .arg(s.total)
-                    .arg(what, words::term(motion::metrology::directionTermId(s.direction)))
+                    .arg(what, ui::words::term(motion::metrology::directionTermId(s.direction)))
                     .arg(s.cycle);
         err->flush();
     };
@@ -141,14 +141,14 @@ void attachStdinPrompter(Invocation& inv, jobs::ReadingSource* source, const std
                 else
                     ok = false;
             }
-            const jobs::StopContext stop = *manual->waiting();
+            const dev::jobs::StopContext stop = *manual->waiting();
             if (!ok || !manual->provide(values)) {
                 *err << tr("'%1' is not a reading here; ").arg(line);
                 prompt(stop);
             }
         }
     };
-    QObject::connect(manual, &jobs::ManualSource::entryWanted, manual, [prompt, process](const jobs::StopContext& s) {
+    QObject::connect(manual, &dev::jobs::ManualSource::entryWanted, manual, [prompt, process](const dev::jobs::StopContext& s) {
         prompt(s);
         process();
     });
@@ -165,4 +165,4 @@ void attachStdinPrompter(Invocation& inv, jobs::ReadingSource* source, const std
     });
 }
 
-} // namespace cli
+} // namespace app::cli

@@ -12,15 +12,15 @@
 
 #include <memory>
 
-namespace cli {
+namespace app::cli {
 
 class CliSession;
 
 /// The source, owned by `owner`; nullptr after reporting why (exit Usage).
-jobs::ReadingSource* makeSource(Invocation& inv, CliSession& session, const QString& spec, int axis, QObject* owner);
+dev::jobs::ReadingSource* makeSource(Invocation& inv, CliSession& session, const QString& spec, int axis, QObject* owner);
 
 /// Answers a ManualSource's prompts from stdin, one reading a line ("10.0012", "10.0012 mm",
 /// "12.3 um"; for two axes "x y"); "q" aborts. Ends when the source is gone.
-void attachStdinPrompter(Invocation& inv, jobs::ReadingSource* source, const std::function<void()>& onQuit);
+void attachStdinPrompter(Invocation& inv, dev::jobs::ReadingSource* source, const std::function<void()>& onQuit);
 
-} // namespace cli
+} // namespace app::cli

@@ -19,10 +19,10 @@
 #include <optional>
 #include <unistd.h>
 
-namespace cli {
+namespace app::cli {
 namespace {
 
-QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+QString tr(const char* text) { return QCoreApplication::translate("app::cli", text); }
 
 volatile std::sig_atomic_t g_interrupted = 0;
 void onInterrupt(int) { g_interrupted = 1; }
@@ -142,4 +142,4 @@ int runAttached(const QStringList& args, const QString& socketPath, QTextStream&
     return exitCode;
 }
 
-} // namespace cli
+} // namespace app::cli

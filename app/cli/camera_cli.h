@@ -8,7 +8,7 @@
 
 #include <memory>
 
-namespace cli {
+namespace app::cli {
 
 class CliSession;
 
@@ -18,4 +18,4 @@ std::unique_ptr<dev::camera::Camera> cameraFor(Invocation& inv, CliSession* sess
 /// The options that go with --camera (specimen, seed), for a command's option list.
 QList<QCommandLineOption> cameraOptions();
 
-} // namespace cli
+} // namespace app::cli

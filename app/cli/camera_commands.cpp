@@ -18,17 +18,17 @@
 
 #include <cmath>
 
-namespace cli {
+namespace app::cli {
 namespace {
 
 namespace cam = dev::camera;
 
-QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+QString tr(const char* text) { return QCoreApplication::translate("app::cli", text); }
 
 /// Longest wait for a frame beyond its exposure: a simulated 2048² frame takes tens of ms.
 constexpr int kSnapGraceMs = 30000;
 
-QString problemText(const msg::Message& m) { return words::text(m); }
+QString problemText(const motion::msg::Message& m) { return ui::words::text(m); }
 
 int cameraList(Invocation& inv)
 {
@@ -84,9 +84,9 @@ int cameraSnap(Invocation& inv)
     if (camera->capabilities().exposure)
         camera->setExposureMs(exposureMs);
     std::optional<cam::Frame> frame;
-    std::optional<msg::Message> failure;
+    std::optional<motion::msg::Message> failure;
     QObject::connect(camera.get(), &cam::Camera::captured, [&](std::uint64_t, const cam::Frame& f) { frame = f; });
-    QObject::connect(camera.get(), &cam::Camera::failed, [&](std::uint64_t, const msg::Problem& p) { failure = p.message; });
+    QObject::connect(camera.get(), &cam::Camera::failed, [&](std::uint64_t, const motion::msg::Problem& p) { failure = p.message; });
     const auto& st = s->instrument()->status();
     cam::CaptureRequest req;
     req.id = 1;
@@ -107,7 +107,7 @@ int cameraSnap(Invocation& inv)
     meta.deviceTimeUs = frame->deviceTimeUs;
     meta.source = camera->source().toStdString();
     std::string sha;
-    msg::Message error;
+    motion::msg::Message error;
     if (!cam::writeTileTiff(file.toStdString(), *frame, meta, &sha, &error))
         return inv.refused(problemText(error));
     if (inv.json()) {
@@ -158,16 +158,16 @@ std::unique_ptr<dev::camera::Camera> cameraFor(Invocation& inv, CliSession* sess
     }
     sim.settings.seed = static_cast<std::uint64_t>(seed);
     if (auto* link = session ? qobject_cast<dev::SimulatedLink*>(session->link()) : nullptr) {
-        sim::SimMachine* m = &link->machine();
+        dev::sim::SimMachine* m = &link->machine();
         if (m->axisCount() >= 2)
             sim.workPoint = [m]() -> std::optional<cam::WorkPoint> {
                 return cam::WorkPoint{m->workPointLogical(0), m->workPointLogical(1), m->timeUs()};
             };
     }
-    msg::Message error;
+    motion::msg::Message error;
     auto camera = cam::makeCamera(source.toStdString(), sim, &error);
     if (!camera)
-        inv.usage(QStringLiteral("--camera: ") + words::text(error));
+        inv.usage(QStringLiteral("--camera: ") + ui::words::text(error));
     return camera;
 }
 
@@ -194,4 +194,4 @@ void addCameraCommands(std::vector<Command>& list)
                     tr("See docs/camera.md for the sources, the image files and the simulated specimens."), {}, {}, {listCmd, snap}});
 }
 
-} // namespace cli
+} // namespace app::cli

@@ -13,10 +13,10 @@
 #include <QCoreApplication>
 #include <QFileInfo>
 
-namespace cli {
+namespace app::cli {
 namespace {
 
-QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+QString tr(const char* text) { return QCoreApplication::translate("app::cli", text); }
 
 const QCommandLineOption& helpOption()
 {
@@ -111,13 +111,13 @@ bool readLinkOptions(const QCommandLineParser& p, LinkOptions& link, QTextStream
         link.instrument = v;
     }
     if (p.isSet(QStringLiteral("profile"))) {
-        link.profile = files::resolveMachineProfile(unmarkNegative(p.value(QStringLiteral("profile"))));
-        files::MachineProfile profile;
-        jsonio::Problems problems;
+        link.profile = dev::files::resolveMachineProfile(unmarkNegative(p.value(QStringLiteral("profile"))));
+        dev::files::MachineProfile profile;
+        dev::files::json::Problems problems;
         if (link.profile.isEmpty())
             return fail(tr("--profile needs a machine profile file"));
-        if (!files::loadMachineProfileFile(link.profile, &profile, &problems))
-            return fail(tr("--profile: %1").arg(words::fileProblems(problems, QFileInfo(link.profile).fileName()).join(QLatin1Char('\n'))));
+        if (!dev::files::loadMachineProfileFile(link.profile, &profile, &problems))
+            return fail(tr("--profile: %1").arg(ui::words::fileProblems(problems, QFileInfo(link.profile).fileName()).join(QLatin1Char('\n'))));
     }
     if (p.isSet(QStringLiteral("baud"))) {
         bool ok = false;
@@ -286,7 +286,7 @@ int runCli(const QStringList& rawArgs, QTextStream& out, QTextStream& err)
 {
     // The language first, wherever it stands, so that every later word (usage
     // errors included) is in it. English unless asked: scripts parse this output.
-    words::Translators translators;
+    ui::words::Translators translators;
     for (int i = 0; i < rawArgs.size(); ++i) {
         const QString& a = rawArgs[i];
         QString language;
@@ -434,4 +434,4 @@ int runCommandLine(const QStringList& rawArgs, QTextStream& out, QTextStream& er
     return cmd->run(inv);
 }
 
-} // namespace cli
+} // namespace app::cli

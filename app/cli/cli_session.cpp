@@ -16,7 +16,7 @@
 
 #include <cmath>
 
-namespace cli {
+namespace app::cli {
 namespace {
 // A safety net only: the client ends a connect itself (the device silent for its silence
 // limit, or no whole answer within its give-up while damaged frames show a device talking),
@@ -69,10 +69,10 @@ CliSession::CliSession(Invocation& inv, dev::Instrument* instrument) : m_inv(inv
 void CliSession::watchMotionErrors()
 {
     connect(m_client, &dev::Instrument::eventReceived, this, [this](const dev::DeviceEvent& e) {
-        using K = proto::EventKind;
+        using K = dev::proto::EventKind;
         if (e.kind == K::LimitHit || e.kind == K::Fault || e.kind == K::EStop || e.kind == K::LostSteps
             || e.kind == K::JogExpired)
-            if (const QString said = words::eventDetail(e); !m_motionErrors.contains(said))  // one line per distinct problem
+            if (const QString said = ui::words::eventDetail(e); !m_motionErrors.contains(said))  // one line per distinct problem
                 m_motionErrors << said;
     });
 }
@@ -85,7 +85,7 @@ CliSession::~CliSession()
         m_benchPilot->setTransport(nullptr);
 }
 
-void CliSession::wantTelemetry(const QVector<proto::ChannelRef>& channels, int rateHz)
+void CliSession::wantTelemetry(const QVector<dev::proto::ChannelRef>& channels, int rateHz)
 {
     m_wantedTelemetry = !channels.isEmpty();
     if (m_telemetryWish)
@@ -108,12 +108,12 @@ bool CliSession::connectDevice()
     QString linkError;
     // Only while connecting: the lambda holds a reference to this frame's string
     // (ASan caught a later link error writing into the dead frame).
-    const auto watch = connect(m_client, &dev::Instrument::linkError, this, [&linkError](const msg::Message& m) {
+    const auto watch = connect(m_client, &dev::Instrument::linkError, this, [&linkError](const motion::msg::Message& m) {
         if (linkError.isEmpty())
-            linkError = words::text(m);
+            linkError = ui::words::text(m);
     });
     if (!m_opt.sim.isEmpty()) {
-        auto* link = new dev::SimulatedLink(m_opt.sim == QLatin1String("stage") ? proto::DeviceKind::Stage : proto::DeviceKind::Analyzer,
+        auto* link = new dev::SimulatedLink(m_opt.sim == QLatin1String("stage") ? dev::proto::DeviceKind::Stage : dev::proto::DeviceKind::Analyzer,
                                             m_opt.baud, this);
         m_link = link;
         m_benchPilot = new dev::BenchPilotClient;
@@ -139,9 +139,9 @@ bool CliSession::connectDevice()
     disconnect(watch);
     if (finished && m_client->state() == dev::LinkState::Ready)
         return true;
-    report(QCoreApplication::translate("cli", "cannot connect to %1: %2")
+    report(QCoreApplication::translate("app::cli", "cannot connect to %1: %2")
                .arg(m_client->linkDescription(),
-                    linkError.isEmpty() ? QCoreApplication::translate("cli", "no answer within %1 s").arg(kConnectTimeoutMs / 1000)
+                    linkError.isEmpty() ? QCoreApplication::translate("app::cli", "no answer within %1 s").arg(kConnectTimeoutMs / 1000)
                                         : linkError));
     return false;
 }
@@ -155,7 +155,7 @@ bool CliSession::parseAxes(const QString& text, quint8* mask)
             continue;
         const int i = id.axisIndex(c);
         if (i < 0) {
-            report(QCoreApplication::translate("cli", "axis '%1' does not exist on the %2 (axes: %3)").arg(c).arg(words::term(dev::instrumentTerm(id.kind))).arg([&] {
+            report(QCoreApplication::translate("app::cli", "axis '%1' does not exist on the %2 (axes: %3)").arg(c).arg(ui::words::term(dev::instrumentTerm(id.kind))).arg([&] {
                 QString s;
                 for (const auto& a : id.axes)
                     s += a.letter;
@@ -188,13 +188,13 @@ int CliSession::awaitAnswer(const std::shared_ptr<PendingRequest>& pending, cons
 {
     spinUntil([&] { return pending->done; }, 10000);
     if (!pending->done) {
-        report(QCoreApplication::translate("cli", "%1: no answer").arg(what));
+        report(QCoreApplication::translate("app::cli", "%1: no answer").arg(what));
         return LinkTrouble;
     }
     if (const auto& error = pending->error) {
         if (error->kind == dev::RequestError::Kind::Device)
             m_lastRefusal = error;
-        report(words::text(error->message));
+        report(ui::words::text(error->message));
         return error->kind == dev::RequestError::Kind::Device || error->kind == dev::RequestError::Kind::Invalid ? Refused : LinkTrouble;
     }
     return Ok;
@@ -230,9 +230,9 @@ int CliSession::waitUntilStill(const QString& what, bool printStatusAfter)
     int fresh = 0;
     auto c = connect(m_client, &dev::Instrument::statusChanged, this, [&fresh] { ++fresh; });
     QString why;  // the client's own words for a lost link: silence, a vanished port, …
-    auto w = connect(m_client, &dev::Instrument::linkError, this, [&why](const msg::Message& m) {
+    auto w = connect(m_client, &dev::Instrument::linkError, this, [&why](const motion::msg::Message& m) {
         if (why.isEmpty())
-            why = words::text(m);
+            why = ui::words::text(m);
     });
     const bool still = spinUntil(
         [&] {
@@ -242,14 +242,14 @@ int CliSession::waitUntilStill(const QString& what, bool printStatusAfter)
     disconnect(c);
     disconnect(w);
     if (m_client->state() != dev::LinkState::Ready) {
-        report(why.isEmpty() ? QCoreApplication::translate("cli", "%1: link lost while waiting").arg(what)
-                             : QCoreApplication::translate("cli", "%1: link lost while waiting: %2").arg(what, why));
+        report(why.isEmpty() ? QCoreApplication::translate("app::cli", "%1: link lost while waiting").arg(what)
+                             : QCoreApplication::translate("app::cli", "%1: link lost while waiting: %2").arg(what, why));
         return LinkTrouble;
     }
     if (!still) {
         m_client->stop();
         spinUntil([] { return false; }, 200);
-        report(QCoreApplication::translate("cli", "%1: still moving after %2 s; sent stop").arg(what).arg(m_opt.timeoutS));
+        report(QCoreApplication::translate("app::cli", "%1: still moving after %2 s; sent stop").arg(what).arg(m_opt.timeoutS));
         return Refused;
     }
     if (!m_motionErrors.isEmpty()) {
@@ -296,28 +296,28 @@ void CliSession::printStatus()
     }
     {
         QTextStream& out = m_inv.out();
-        out << QStringLiteral("%1%2\n").arg(words::term(dev::instrumentTerm(id.kind)), st.estop ? QStringLiteral("  [%1]").arg(QCoreApplication::translate("cli", "E-STOP")) : QString());
+        out << QStringLiteral("%1%2\n").arg(ui::words::term(dev::instrumentTerm(id.kind)), st.estop ? QStringLiteral("  [%1]").arg(QCoreApplication::translate("app::cli", "E-STOP")) : QString());
         if (st.positionLost)
-            out << "  " << QCoreApplication::translate("cli", "[ALARM] the controller does not trust its position: home, or `unlock` on your word")
+            out << "  " << QCoreApplication::translate("app::cli", "[ALARM] the controller does not trust its position: home, or `unlock` on your word")
                 << "\n";
         for (int i = 0; i < id.axes.size() && i < st.axes.size(); ++i) {
             const auto& a = st.axes[i];
             // English stays exactly as it was (people's scripts read it); --lang words it.
-            auto t = [](const char* s) { return QCoreApplication::translate("cli", s); };
+            auto t = [](const char* s) { return QCoreApplication::translate("app::cli", s); };
             out << QStringLiteral("  %1  %2 %3  %4 %5 %6  %7%8%9%10\n")
                          .arg(id.axes[i].letter)
-                         .arg(t(QT_TRANSLATE_NOOP("cli", "cmd")))
+                         .arg(t(QT_TRANSLATE_NOOP("app::cli", "cmd")))
                          .arg(num(a.commanded), 10)
-                         .arg(t(QT_TRANSLATE_NOOP("cli", "meas")))
+                         .arg(t(QT_TRANSLATE_NOOP("app::cli", "meas")))
                          .arg(num(a.measured), 10)
                          .arg(id.axes[i].unitName(), -2)
-                         .arg(a.homed ? t(QT_TRANSLATE_NOOP("cli", "homed")) : t(QT_TRANSLATE_NOOP("cli", "NOT HOMED")))
-                         .arg(a.moving ? QLatin1Char(' ') + t(QT_TRANSLATE_NOOP("cli", "moving")) : QString())
-                         .arg(a.homeSwitch ? QLatin1Char(' ') + t(QT_TRANSLATE_NOOP("cli", "home-switch")) : QString())
-                         .arg(a.limitSwitch ? QLatin1Char(' ') + t(QT_TRANSLATE_NOOP("cli", "limit-switch")) : QString());
+                         .arg(a.homed ? t(QT_TRANSLATE_NOOP("app::cli", "homed")) : t(QT_TRANSLATE_NOOP("app::cli", "NOT HOMED")))
+                         .arg(a.moving ? QLatin1Char(' ') + t(QT_TRANSLATE_NOOP("app::cli", "moving")) : QString())
+                         .arg(a.homeSwitch ? QLatin1Char(' ') + t(QT_TRANSLATE_NOOP("app::cli", "home-switch")) : QString())
+                         .arg(a.limitSwitch ? QLatin1Char(' ') + t(QT_TRANSLATE_NOOP("app::cli", "limit-switch")) : QString());
         }
         out.flush();
     }
 }
 
-} // namespace cli
+} // namespace app::cli

@@ -20,7 +20,7 @@ class BenchPilotClient;
 class Transport;
 }
 
-namespace cli {
+namespace app::cli {
 
 class CliSession : public QObject {
     Q_OBJECT
@@ -73,8 +73,8 @@ public:
     /// Telemetry a job needs (channels at rateHz; empty withdraws). By default the
     /// instrument's subscription is replaced; inside the GUI the host routes it
     /// through the telemetry hub, so the plots keep what they show.
-    using TelemetryWish = std::function<void(const QVector<proto::ChannelRef>& channels, int rateHz)>;
-    void wantTelemetry(const QVector<proto::ChannelRef>& channels, int rateHz);
+    using TelemetryWish = std::function<void(const QVector<dev::proto::ChannelRef>& channels, int rateHz)>;
+    void wantTelemetry(const QVector<dev::proto::ChannelRef>& channels, int rateHz);
     void setTelemetryWish(TelemetryWish wish) { m_telemetryWish = std::move(wish); }
 
 private:
@@ -101,4 +101,4 @@ private:
 /// of nesting an event loop (fiber.h); the commands never need to know.
 bool spinUntil(const std::function<bool()>& done, int timeoutMs);
 
-} // namespace cli
+} // namespace app::cli

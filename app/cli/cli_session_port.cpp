@@ -14,34 +14,34 @@
 #include <QCoreApplication>
 #include <QFileInfo>
 
-namespace cli {
+namespace app::cli {
 
 namespace {
-QString kindWord(proto::DeviceKind k) { return words::term(dev::instrumentTerm(k)); }
+QString kindWord(dev::proto::DeviceKind k) { return ui::words::term(dev::instrumentTerm(k)); }
 } // namespace
 
 bool CliSession::choosePortBackend(dev::Transport* transport)
 {
-    std::optional<files::MachineProfile> profile;
+    std::optional<dev::files::MachineProfile> profile;
     if (!m_opt.profile.isEmpty()) {
-        files::MachineProfile p;
-        jsonio::Problems problems;
-        if (!files::loadMachineProfileFile(m_opt.profile, &p, &problems)) {
-            report(tr("--profile: %1").arg(words::fileProblems(problems, QFileInfo(m_opt.profile).fileName()).join(QLatin1Char('\n'))));
+        dev::files::MachineProfile p;
+        dev::files::json::Problems problems;
+        if (!dev::files::loadMachineProfileFile(m_opt.profile, &p, &problems)) {
+            report(tr("--profile: %1").arg(ui::words::fileProblems(problems, QFileInfo(m_opt.profile).fileName()).join(QLatin1Char('\n'))));
             return false;
         }
         profile = p;
     }
-    std::optional<proto::DeviceKind> asked;
+    std::optional<dev::proto::DeviceKind> asked;
     if (!m_opt.instrument.isEmpty())
-        asked = m_opt.instrument == QLatin1String("stage") ? proto::DeviceKind::Stage : proto::DeviceKind::Analyzer;
+        asked = m_opt.instrument == QLatin1String("stage") ? dev::proto::DeviceKind::Stage : dev::proto::DeviceKind::Analyzer;
     if (asked && profile && profile->instrument != *asked) {
         report(tr("--profile %1 is for the %2, but --instrument says %3").arg(m_opt.profile, kindWord(profile->instrument), kindWord(*asked)));
         return false;
     }
-    auto protocol = profile ? profile->protocol : files::MachineProfile::Protocol::Auto;
+    auto protocol = profile ? profile->protocol : dev::files::MachineProfile::Protocol::Auto;
     dev::ProbeResult found;
-    if (protocol == files::MachineProfile::Protocol::Auto) {
+    if (protocol == dev::files::MachineProfile::Protocol::Auto) {
         dev::ProtocolProbe probe(transport);
         probe.start();
         spinUntil([&probe] { return probe.done(); }, dev::ProtocolProbe::kLongestMs + 2000);
@@ -51,13 +51,13 @@ bool CliSession::choosePortBackend(dev::Transport* transport)
         }
         found = probe.result();
         if (found.protocol == dev::ProbeResult::Protocol::None) {
-            report(tr("cannot connect to %1: %2").arg(transport->describe(), words::text(found.error)));
+            report(tr("cannot connect to %1: %2").arg(transport->describe(), ui::words::text(found.error)));
             return false;
         }
-        protocol = found.protocol == dev::ProbeResult::Protocol::Grbl ? files::MachineProfile::Protocol::Grbl
-                                                                      : files::MachineProfile::Protocol::BenchPilot;
+        protocol = found.protocol == dev::ProbeResult::Protocol::Grbl ? dev::files::MachineProfile::Protocol::Grbl
+                                                                      : dev::files::MachineProfile::Protocol::BenchPilot;
     }
-    if (protocol == files::MachineProfile::Protocol::BenchPilot) {
+    if (protocol == dev::files::MachineProfile::Protocol::BenchPilot) {
         if (asked && found.kindKnown && found.kind != *asked) {
             transport->close();
             report(tr("%1 is a %2, not the %3 --instrument names").arg(transport->describe(), kindWord(found.kind), kindWord(*asked)));
@@ -69,8 +69,8 @@ bool CliSession::choosePortBackend(dev::Transport* transport)
         return true;
     }
     // GRBL names no instrument: the profile's, else --instrument's, else the analyzer.
-    const proto::DeviceKind kind = profile ? profile->instrument : asked.value_or(proto::DeviceKind::Analyzer);
-    auto* grbl = new dev::GrblClient(profile ? *profile : files::defaultProfile(kind), !profile.has_value());
+    const dev::proto::DeviceKind kind = profile ? profile->instrument : asked.value_or(dev::proto::DeviceKind::Analyzer);
+    auto* grbl = new dev::GrblClient(profile ? *profile : dev::files::defaultProfile(kind), !profile.has_value());
     grbl->rememberHomesIn(dev::GrblHomeMemory::defaultPath(), m_opt.port);
     grbl->setRestartHeardBeforeConnect(found.grblBanner);
     m_ownProxy->setBackend(grbl);
@@ -78,4 +78,4 @@ bool CliSession::choosePortBackend(dev::Transport* transport)
     return true;
 }
 
-} // namespace cli
+} // namespace app::cli

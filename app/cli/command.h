@@ -16,7 +16,7 @@
 #include <optional>
 #include <vector>
 
-namespace cli {
+namespace app::cli {
 
 /// Exit codes: 0 ok, 1 usage, 2 refused by the device or failed motion, 3 link trouble.
 enum ExitCode { Ok = 0, Usage = 1, Refused = 2, LinkTrouble = 3 };
@@ -298,4 +298,4 @@ QString commandHelp(const QString& path, const Command& c);
 /// The options every command accepts (--sim, --port, --baud, --instrument, --profile, --json, --timeout).
 QList<QCommandLineOption> globalOptions();
 
-} // namespace cli
+} // namespace app::cli

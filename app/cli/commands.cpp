@@ -2,7 +2,7 @@
 // A new area adds its registration function here (see README.md).
 #include "command.h"
 
-namespace cli {
+namespace app::cli {
 
 const std::vector<Command>& commands()
 {
@@ -23,4 +23,4 @@ const std::vector<Command>& commands()
     return list;
 }
 
-} // namespace cli
+} // namespace app::cli

@@ -21,12 +21,12 @@
 
 #include <cmath>
 
-namespace cli {
+namespace app::cli {
 namespace {
 
 using motion::metrology::CompensationModel;
 
-QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+QString tr(const char* text) { return QCoreApplication::translate("app::cli", text); }
 
 QJsonArray numbers(const std::vector<double>& v)
 {
@@ -93,22 +93,22 @@ int fit(Invocation& inv)
     double backlashUm = 0;
     std::optional<motion::metrology::Evaluation> evaluation;
     std::string text;
-    msg::Message error;
-    if (!files::readText(path, &text, &error))
+    motion::msg::Message error;
+    if (!dev::files::readText(path, &text, &error))
         return reportFailure(inv, error, Usage);
     const std::string name = QFileInfo(path).fileName().toStdString();
     const auto firstChar = text.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
     if (firstChar != std::string::npos && text[firstChar] == '{') {
-        const auto read = accuracyfiles::accuracyResultFromJson(text, name);
+        const auto read = dev::files::accuracy::accuracyResultFromJson(text, name);
         if (reportProblems(inv, read.problems) || !read.result)
             return Usage;
-        points = accuracyfiles::fitPointsOf(read.result->evaluation);
+        points = dev::files::accuracy::fitPointsOf(read.result->evaluation);
         backlashUm = motion::metrology::backlashUmFrom(read.result->evaluation);
         if (axis.empty())
             axis = read.result->axis;
         evaluation = read.result->evaluation;
     } else {
-        const auto read = accuracyfiles::errorCurveFromCsv(text, name);
+        const auto read = dev::files::accuracy::errorCurveFromCsv(text, name);
         if (reportProblems(inv, read.problems))
             return Usage;
         points = read.points;
@@ -129,14 +129,14 @@ int fit(Invocation& inv)
     if (kind != QLatin1String("polynomial") && kind != QLatin1String("table"))
         return inv.usage(tr("--kind '%1': polynomial or table").arg(kind));
     if (inv.isSet(QStringLiteral("out"))) {
-        accuracyfiles::CompensationFile file;
+        dev::files::accuracy::CompensationFile file;
         if (kind == QLatin1String("table")) {
             if (!evaluation)
                 return inv.usage(tr("--kind table needs a result JSON: a table is made from each target's means"));
             file.model = motion::metrology::tableModel(axis, *evaluation, inv.isSet(QStringLiteral("per-direction")));
         } else {
             file.model = motion::metrology::polynomialModel(axis, chosen.polynomial, from, to, backlashUm);
-            file.fit = accuracyfiles::FitRecord{chosen.order, chosen.sseUm2, chosen.r2, chosen.adjustedR2, static_cast<int>(chosen.points),
+            file.fit = dev::files::accuracy::FitRecord{chosen.order, chosen.sseUm2, chosen.r2, chosen.adjustedR2, static_cast<int>(chosen.points),
                                                 table.chosenByOperator};
         }
         file.source = name;
@@ -144,7 +144,7 @@ int fit(Invocation& inv)
         if (reportProblems(inv, problems))
             return Refused;
         const QString out = inv.path(inv.value(QStringLiteral("out")));
-        if (!accuracyfiles::saveCompensationFile(out, file, &error))
+        if (!dev::files::accuracy::saveCompensationFile(out, file, &error))
             return reportFailure(inv, error, Refused);
         files.append(out);
     }
@@ -203,7 +203,7 @@ dev::CompensationClient* deviceCompensation(Invocation& inv, int* axis)
     }
     *axis = instrument->identity().axisIndex(inv.value(QStringLiteral("axis")).toUpper().at(0));
     if (*axis < 0 || !instrument->compensation()->compensableAxes().contains(*axis)) {
-        reportFailure(inv, msg::make("accuracy.run.no_such_axis", {msg::verbatim("axis", inv.value(QStringLiteral("axis")).toStdString())}), Usage);
+        reportFailure(inv, motion::msg::make("accuracy.run.no_such_axis", {motion::msg::verbatim("axis", inv.value(QStringLiteral("axis")).toStdString())}), Usage);
         return nullptr;
     }
     return instrument->compensation();
@@ -218,9 +218,9 @@ int waitRequest(Invocation& inv, const std::function<void(dev::Instrument::Callb
         done = true;
     });
     if (!spinUntil([&] { return done; }, 30000))
-        return reportFailure(inv, msg::make("accuracy.run.link_lost"), LinkTrouble);
+        return reportFailure(inv, motion::msg::make("accuracy.run.link_lost"), LinkTrouble);
     if (error) {
-        const msg::Message m = msg::make("compensation.device_refused", {msg::nested("detail", error->message)});
+        const motion::msg::Message m = motion::msg::make("compensation.device_refused", {motion::msg::nested("detail", error->message)});
         return reportFailure(inv, m, error->kind == dev::RequestError::Kind::LinkDown || error->kind == dev::RequestError::Kind::Timeout ? LinkTrouble : Refused);
     }
     return Ok;
@@ -236,9 +236,9 @@ int readBack(Invocation& inv, dev::CompensationClient* c, int axis, dev::AxisCom
         done = true;
     });
     if (!spinUntil([&] { return done; }, 30000))
-        return reportFailure(inv, msg::make("accuracy.run.link_lost"), LinkTrouble);
+        return reportFailure(inv, motion::msg::make("accuracy.run.link_lost"), LinkTrouble);
     if (error)
-        return reportFailure(inv, msg::make("compensation.device_refused", {msg::nested("detail", error->message)}), Refused);
+        return reportFailure(inv, motion::msg::make("compensation.device_refused", {motion::msg::nested("detail", error->message)}), Refused);
     return Ok;
 }
 
@@ -270,7 +270,7 @@ int upload(Invocation& inv)
 {
     if (inv.arguments().size() != 1)
         return inv.usage(tr("give one compensation file"));
-    const auto read = accuracyfiles::loadCompensationFile(inv.path(inv.arguments().front()));
+    const auto read = dev::files::accuracy::loadCompensationFile(inv.path(inv.arguments().front()));
     if (reportProblems(inv, read.problems) || !read.compensation)
         return Usage;
     int axis = -1;
@@ -324,7 +324,7 @@ int exportCompensation(Invocation& inv)
         return inv.usage(tr("--format '%1': linuxcnc or csv").arg(format));
     CompensationModel model;
     if (!inv.arguments().isEmpty()) {
-        const auto read = accuracyfiles::loadCompensationFile(inv.path(inv.arguments().front()));
+        const auto read = dev::files::accuracy::loadCompensationFile(inv.path(inv.arguments().front()));
         if (reportProblems(inv, read.problems) || !read.compensation)
             return Usage;
         model = read.compensation->model;
@@ -337,23 +337,23 @@ int exportCompensation(Invocation& inv)
         if (int rc = readBack(inv, c, axis, &got))
             return rc;
         if (!got.model)
-            return reportFailure(inv, msg::make("compensation.none_on_device", {msg::verbatim("axis", inv.value(QStringLiteral("axis")).toStdString())}), Refused);
+            return reportFailure(inv, motion::msg::make("compensation.none_on_device", {motion::msg::verbatim("axis", inv.value(QStringLiteral("axis")).toStdString())}), Refused);
         model = *got.model;
     }
     std::string text;
     if (format == QLatin1String("csv")) {
-        text = accuracyfiles::compensationCsv(model);
+        text = dev::files::accuracy::compensationCsv(model);
     } else {
         const QString type = inv.value(QStringLiteral("type"));
         if (type != QLatin1String("0") && type != QLatin1String("1"))
             return inv.usage(tr("--type '%1': 0 (positions reached) or 1 (corrections)").arg(type));
-        text = accuracyfiles::linuxcncCompensation(model, type == QLatin1String("0") ? accuracyfiles::LinuxcncCompType::ActualPositions
-                                                                                     : accuracyfiles::LinuxcncCompType::Corrections);
+        text = dev::files::accuracy::linuxcncCompensation(model, type == QLatin1String("0") ? dev::files::accuracy::LinuxcncCompType::ActualPositions
+                                                                                     : dev::files::accuracy::LinuxcncCompType::Corrections);
     }
     if (inv.isSet(QStringLiteral("out"))) {
-        msg::Message error;
+        motion::msg::Message error;
         const QString out = inv.path(inv.value(QStringLiteral("out")));
-        if (!files::writeAtomically(out, text, &error))
+        if (!dev::files::writeAtomically(out, text, &error))
             return reportFailure(inv, error, Refused);
         if (inv.json())
             printJson(inv, QJsonObject{{QStringLiteral("ok"), true}, {QStringLiteral("files"), QJsonArray{out}}});
@@ -436,4 +436,4 @@ void addCompensationCommands(std::vector<Command>& list)
     list.push_back(comp);
 }
 
-} // namespace cli
+} // namespace app::cli

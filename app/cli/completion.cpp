@@ -4,7 +4,7 @@
 
 #include <QCoreApplication>
 
-namespace cli {
+namespace app::cli {
 namespace {
 
 QString longOptions(const QList<QCommandLineOption>& options)
@@ -40,7 +40,7 @@ int run(Invocation& inv)
 {
     const QStringList words = inv.arguments();
     if (words != QStringList{QStringLiteral("bash")})
-        return inv.usage(QCoreApplication::translate("cli", "only 'bash' is supported: source <(benchpilot-cli completion bash)"));
+        return inv.usage(QCoreApplication::translate("app::cli", "only 'bash' is supported: source <(benchpilot-cli completion bash)"));
     const QString global = longOptions(globalOptions());
     QStringList top;
     for (const auto& c : commands())
@@ -83,8 +83,8 @@ int run(Invocation& inv)
 
 void addCompletionCommand(std::vector<Command>& list)
 {
-    list.push_back({QStringLiteral("completion"), QCoreApplication::translate("cli", "print a bash completion script"),
-                    QStringLiteral("bash"), QCoreApplication::translate("cli", "Use: source <(benchpilot-cli completion bash)"),
+    list.push_back({QStringLiteral("completion"), QCoreApplication::translate("app::cli", "print a bash completion script"),
+                    QStringLiteral("bash"), QCoreApplication::translate("app::cli", "Use: source <(benchpilot-cli completion bash)"),
                     {}, run, {}, [] {
                         ApiSpec a;
                         a.offered = false;  // a shell's business, not a script's
@@ -92,4 +92,4 @@ void addCompletionCommand(std::vector<Command>& list)
                     }()});
 }
 
-} // namespace cli
+} // namespace app::cli

@@ -15,10 +15,10 @@
 #include <memory>
 #include <vector>
 
-namespace cli {
+namespace app::cli {
 namespace {
 
-QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+QString tr(const char* text) { return QCoreApplication::translate("app::cli", text); }
 
 /// Commands that take no words after their options.
 bool noArguments(Invocation& inv)
@@ -30,13 +30,13 @@ bool noArguments(Invocation& inv)
 }
 
 /// The planner's profile as `info --json` names it; "unstated" when the device gave no limits.
-QString profileName(proto::MotionProfile p)
+QString profileName(dev::proto::MotionProfile p)
 {
     switch (p) {
-    case proto::MotionProfile::Unstated: return QStringLiteral("unstated");
-    case proto::MotionProfile::Trapezoid: return QStringLiteral("trapezoid");
-    case proto::MotionProfile::JerkLimited: return QStringLiteral("jerk-limited");
-    case proto::MotionProfile::SeedSCurve: return QStringLiteral("seed-s-curve");
+    case dev::proto::MotionProfile::Unstated: return QStringLiteral("unstated");
+    case dev::proto::MotionProfile::Trapezoid: return QStringLiteral("trapezoid");
+    case dev::proto::MotionProfile::JerkLimited: return QStringLiteral("jerk-limited");
+    case dev::proto::MotionProfile::SeedSCurve: return QStringLiteral("seed-s-curve");
     }
     return QStringLiteral("unstated");
 }
@@ -144,7 +144,7 @@ int move(Invocation& inv)
     for (const QString& a : words) {
         const int axis = id.axisIndex(a[0]);
         if (axis < 0)
-            return inv.usage(tr("axis '%1' does not exist on the %2").arg(a[0]).arg(::words::term(dev::instrumentTerm(id.kind))));
+            return inv.usage(tr("axis '%1' does not exist on the %2").arg(a[0]).arg(::ui::words::term(dev::instrumentTerm(id.kind))));
         bool ok = false;
         const double v = a.mid(2).toDouble(&ok);
         if (!ok || !std::isfinite(v))
@@ -178,13 +178,13 @@ int jog(Invocation& inv)
     const auto& id = s->instrument()->identity();
     const int axis = words[0].size() == 1 ? id.axisIndex(words[0][0]) : -1;
     if (axis < 0)
-        return inv.usage(tr("axis '%1' does not exist on the %2").arg(words[0]).arg(::words::term(dev::instrumentTerm(id.kind))));
+        return inv.usage(tr("axis '%1' does not exist on the %2").arg(words[0]).arg(::ui::words::term(dev::instrumentTerm(id.kind))));
     if (std::abs(v) > id.axes[axis].maxSpeed)
         return inv.usage(tr("velocity must be within ±%1 %2/s").arg(id.axes[axis].maxSpeed).arg(id.axes[axis].unitName()));
     QString refused;
     dev::Instrument* c = s->instrument();
     auto conn = QObject::connect(c, &dev::Instrument::requestFailed, s, [&](const dev::RequestError& e) {
-        refused = ::words::text(e.message);
+        refused = ::ui::words::text(e.message);
         s->noteRefusal(e);
     });
     if (held) {
@@ -371,7 +371,7 @@ int limits(Invocation& inv)
     for (const Change& c : changes) {
         const int axis = id.axisIndex(c.text[0]);
         if (axis < 0)
-            return inv.usage(tr("axis '%1' does not exist on the %2").arg(c.text[0]).arg(::words::term(dev::instrumentTerm(id.kind))));
+            return inv.usage(tr("axis '%1' does not exist on the %2").arg(c.text[0]).arg(::ui::words::term(dev::instrumentTerm(id.kind))));
         if (int rc = s->request([&](auto cb) { s->instrument()->setSoftLimits(axis, c.lo, c.hi, cb); }, tr("limits")))
             return rc;
     }
@@ -462,4 +462,4 @@ void addDeviceCommands(std::vector<Command>& list)
     list.push_back({QStringLiteral("limits"), tr("show or set soft limits"), QStringLiteral("[AXIS=MIN:MAX...]"), {}, {}, limits, {}, limitsApi});
 }
 
-} // namespace cli
+} // namespace app::cli

@@ -18,7 +18,7 @@
 #include <sanitizer/common_interface_defs.h>
 #endif
 
-namespace cli {
+namespace app::cli {
 
 namespace {
 thread_local Fiber* t_current = nullptr;
@@ -165,4 +165,4 @@ bool Fiber::waitUntil(const std::function<bool()>& done, int timeoutMs)
     return done();
 }
 
-} // namespace cli
+} // namespace app::cli

@@ -22,7 +22,7 @@
 #include <functional>
 #include <memory>
 
-namespace cli {
+namespace app::cli {
 
 class Fiber {
 public:
@@ -65,4 +65,4 @@ private:
     long long m_waitDeadlineMs = 0;  ///< QDeadlineTimer-free: steady clock ms
 };
 
-} // namespace cli
+} // namespace app::cli

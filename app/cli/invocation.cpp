@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-namespace cli {
+namespace app::cli {
 
 namespace {
 /// Marks a word the parser must not take for an option; see unmarkNegative().
@@ -90,7 +90,7 @@ bool Invocation::number(const QString& option, double& value, std::optional<doub
 {
     if (!isSet(option)) {
         if (!fallback) {
-            report(QCoreApplication::translate("cli", "--%1 is required").arg(option));
+            report(QCoreApplication::translate("app::cli", "--%1 is required").arg(option));
             return false;
         }
         value = *fallback;
@@ -99,7 +99,7 @@ bool Invocation::number(const QString& option, double& value, std::optional<doub
     bool ok = false;
     value = this->value(option).toDouble(&ok);
     if (!ok || !std::isfinite(value)) {
-        report(QCoreApplication::translate("cli", "--%1 '%2' is not a number").arg(option, this->value(option)));
+        report(QCoreApplication::translate("app::cli", "--%1 '%2' is not a number").arg(option, this->value(option)));
         return false;
     }
     return true;
@@ -108,7 +108,7 @@ bool Invocation::number(const QString& option, double& value, std::optional<doub
 bool Invocation::numbers(const QString& option, QVector<double>& values, int count)
 {
     if (!isSet(option)) {
-        report(QCoreApplication::translate("cli", "--%1 is required").arg(option));
+        report(QCoreApplication::translate("app::cli", "--%1 is required").arg(option));
         return false;
     }
     values.clear();
@@ -117,13 +117,13 @@ bool Invocation::numbers(const QString& option, QVector<double>& values, int cou
         bool ok = false;
         const double v = part.trimmed().toDouble(&ok);
         if (!ok || !std::isfinite(v)) {
-            report(QCoreApplication::translate("cli", "--%1 '%2': '%3' is not a number").arg(option, text, part));
+            report(QCoreApplication::translate("app::cli", "--%1 '%2': '%3' is not a number").arg(option, text, part));
             return false;
         }
         values << v;
     }
     if (count > 0 && values.size() != count) {
-        report(QCoreApplication::translate("cli", "--%1 '%2' needs %3 comma-separated numbers").arg(option, text).arg(count));
+        report(QCoreApplication::translate("app::cli", "--%1 '%2' needs %3 comma-separated numbers").arg(option, text).arg(count));
         return false;
     }
     return true;
@@ -172,11 +172,11 @@ ApiParam optionParam(const char* option, ParamType type, bool required)
 
 QCommandLineOption option(const char* name, const char* description, const char* valueName, const char* fallback)
 {
-    QCommandLineOption o(QString::fromLatin1(name), QCoreApplication::translate("cli", description),
+    QCommandLineOption o(QString::fromLatin1(name), QCoreApplication::translate("app::cli", description),
                          valueName ? QString::fromUtf8(valueName) : QString());  // "x,y;x,y;…" is UTF-8, as the source is
     if (fallback)
         o.setDefaultValue(QString::fromUtf8(fallback));
     return o;
 }
 
-} // namespace cli
+} // namespace app::cli

@@ -11,7 +11,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
-namespace cli {
+namespace app::cli {
 namespace {
 
 int g_signalPipe[2] = {-1, -1};
@@ -79,4 +79,4 @@ public:
 
 std::unique_ptr<InvocationHost> makeLocalHost() { return std::make_unique<LocalHost>(); }
 
-} // namespace cli
+} // namespace app::cli

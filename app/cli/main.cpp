@@ -17,8 +17,8 @@ int main(int argc, char** argv)
         qputenv("QT_QPA_PLATFORM", "offscreen");
     // The platform plugin wants a runtime directory and complains on stderr without one
     // (a script reading stderr would see it): give it a private one. --attach still looks
-    // for the GUI where the user's own environment says (cli::defaultApiSocketPath).
-    cli::noteUsersRuntimeDir();
+    // for the GUI where the user's own environment says (app::cli::defaultApiSocketPath).
+    app::cli::noteUsersRuntimeDir();
     if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
         const QString dir = QDir::tempPath() + QStringLiteral("/benchpilot-runtime-%1").arg(::getuid());
         QDir().mkpath(dir);
@@ -29,5 +29,5 @@ int main(int argc, char** argv)
     QCoreApplication::setApplicationName(QStringLiteral("benchpilot-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(BP_VERSION));
     QTextStream out(stdout), err(stderr);
-    return cli::runCli(app.arguments().mid(1), out, err);
+    return app::cli::runCli(app.arguments().mid(1), out, err);
 }

@@ -20,7 +20,7 @@
 #include <cmath>
 #include <cstdint>
 
-namespace cli {
+namespace app::cli {
 
 namespace {
 
@@ -29,7 +29,7 @@ constexpr std::int64_t kMaxPoints = 2000000;  ///< keeps a typo in --step from p
 
 /// The option a person typed for a motion-library field, so refusals name what they can change.
 /// The option a planning message is about, from its `field` argument.
-QString optionForField(const msg::Message& m)
+QString optionForField(const motion::msg::Message& m)
 {
     const std::string message = m.text("field");
     static const std::pair<const char*, const char*> kFields[] = {
@@ -84,7 +84,7 @@ int runProfile(Invocation& o)
     if (distances.size() == 1) {
         const auto profile = motion::planProfile(distances[0], request);
         if (!profile)
-            return o.usage(optionForField(profile.error()) + words::text(profile.error()));
+            return o.usage(optionForField(profile.error()) + ui::words::text(profile.error()));
         const auto samples = motion::sampleProfile(*profile, dt);
         if (samples.empty())
             return o.usage(QStringLiteral("--dt '%1' gives too many samples for a %2 s move").arg(o.value(QStringLiteral("dt"))).arg(profile->duration()));
@@ -94,7 +94,7 @@ int runProfile(Invocation& o)
     } else {
         const auto move = motion::planSynchronized(distances.constData(), int(distances.size()), request);
         if (!move)
-            return o.usage(optionForField(move.error()) + words::text(move.error()));
+            return o.usage(optionForField(move.error()) + ui::words::text(move.error()));
         const double T = move->duration();
         if (T / dt > 1e6)
             return o.usage(QStringLiteral("--dt '%1' gives too many samples for a %2 s move").arg(o.value(QStringLiteral("dt"))).arg(T));
@@ -270,7 +270,7 @@ int runStepTable(Invocation& o)
             return o.usage(QStringLiteral("--step '%1' must be > 0 and give at most %2 steps").arg(o.value(QStringLiteral("step"))).arg(kMaxPoints));
         const auto profile = motion::planProfile(distance, request);
         if (!profile)
-            return o.usage(optionForField(profile.error()) + words::text(profile.error()));
+            return o.usage(optionForField(profile.error()) + ui::words::text(profile.error()));
         instants = motion::stepInstantsS(*profile, stepMm);
         extra.insert("kind", QString::fromLatin1(motion::profileKindName(request.kind)));
         extra.insert("duration", profile->duration());
@@ -311,7 +311,7 @@ int runBlocks(Invocation& o)
         }
         const auto plan = motion::planJointBlocks(list, vMax, j);
         if (!plan)
-            return o.refused(QStringLiteral("--joint '%1': %2").arg(joints[j], words::text(plan.error())));
+            return o.refused(QStringLiteral("--joint '%1': %2").arg(joints[j], ui::words::text(plan.error())));
         QJsonArray planned;
         for (const auto& p : plan->blocks)
             planned.append(QJsonObject{{"source", p.sourceIndex}, {"steps", qint64(p.steps) * p.direction},
@@ -359,7 +359,7 @@ QList<QCommandLineOption> profileLimits()
 
 void addMotionCommands(std::vector<Command>& list)
 {
-    auto tr = [](const char* t) { return QCoreApplication::translate("cli", t); };
+    auto tr = [](const char* t) { return QCoreApplication::translate("app::cli", t); };
     QList<QCommandLineOption> profile = profileLimits();
     profile << opt("dt", "sample period of the output, s", "S", "0.01");
     auto compute = [](const char* method, QList<ApiParam> params, QJsonObject example) {
@@ -424,4 +424,4 @@ void addMotionCommands(std::vector<Command>& list)
                             QJsonObject{{QStringLiteral("joint"), QJsonArray{QStringLiteral("100:200:500")}}})});
 }
 
-} // namespace cli
+} // namespace app::cli

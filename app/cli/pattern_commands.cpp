@@ -23,10 +23,10 @@
 #include <algorithm>
 #include <cmath>
 
-namespace cli {
+namespace app::cli {
 namespace {
 
-QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+QString tr(const char* text) { return QCoreApplication::translate("app::cli", text); }
 
 QList<QCommandLineOption> patternOptions()
 {
@@ -94,9 +94,9 @@ std::optional<motion::plans::Pattern> patternFrom(Invocation& inv)
 {
     motion::plans::Pattern p;
     if (inv.isSet(QStringLiteral("file"))) {
-        jsonio::Problems problems;
-        if (!files::loadPatternFile(inv.path(inv.value(QStringLiteral("file"))), &p, &problems)) {
-            inv.usage(words::fileProblems(problems, QFileInfo(inv.value(QStringLiteral("file"))).fileName()).join(QLatin1Char('\n')));
+        dev::files::json::Problems problems;
+        if (!dev::files::loadPatternFile(inv.path(inv.value(QStringLiteral("file"))), &p, &problems)) {
+            inv.usage(ui::words::fileProblems(problems, QFileInfo(inv.value(QStringLiteral("file"))).fileName()).join(QLatin1Char('\n')));
             return std::nullopt;
         }
     } else if (!inv.isSet(QStringLiteral("shape"))) {
@@ -161,7 +161,7 @@ std::optional<motion::plans::Pattern> patternFrom(Invocation& inv)
         return std::nullopt;
     const auto problems = motion::plans::validate(p);
     if (!problems.empty()) {
-        inv.usage(words::problems(problems).join(QStringLiteral("; ")));
+        inv.usage(ui::words::problems(problems).join(QStringLiteral("; ")));
         return std::nullopt;
     }
     return p;
@@ -172,10 +172,10 @@ QJsonArray pointJson(motion::path::Vec2 p) { return QJsonArray{p.x, p.y}; }
 /// The path limits a simulated instrument runs with (the device's defaults).
 motion::path::PathLimits simLimits(const QString& instrument)
 {
-    const sim::MachineConfig c = instrument == QLatin1String("analyzer") ? sim::analyzerConfig() : sim::stageConfig();
+    const dev::sim::MachineConfig c = instrument == QLatin1String("analyzer") ? dev::sim::analyzerConfig() : dev::sim::stageConfig();
     motion::path::PathLimits l;
-    l.accelMmS2 = sim::PathQueue::kDefaultAccelShare * std::min(c.axes[0].maxAccel, c.axes[1].maxAccel);
-    l.junctionDeviationMm = sim::PathQueue::kDefaultJunctionDeviationMm;
+    l.accelMmS2 = dev::sim::PathQueue::kDefaultAccelShare * std::min(c.axes[0].maxAccel, c.axes[1].maxAccel);
+    l.junctionDeviationMm = dev::sim::PathQueue::kDefaultJunctionDeviationMm;
     l.maxSpeedMmS = std::min(c.axes[0].maxSpeed, c.axes[1].maxSpeed);
     return l;
 }
@@ -263,26 +263,26 @@ int run(Invocation& inv)
     }
     dev::PathClient* paths = c->paths();
     if (!paths || !c->capabilities().testFlag(dev::Capability::PathQueue))
-        return inv.refused(words::text(c->whyNot(dev::Capability::PathQueue)));
-    jobs::PatternRunner runner(c);
+        return inv.refused(ui::words::text(c->whyNot(dev::Capability::PathQueue)));
+    dev::jobs::PatternRunner runner(c);
     bool limits = false;
     paths->refreshLimits([&](const auto&) { limits = true; });
     spinUntil([&] { return limits; }, 3000);
-    std::vector<msg::Message> problems;
-    QObject::connect(&runner, &jobs::PatternRunner::message, &runner, [&](const msg::Message& m, bool problem) {
+    std::vector<motion::msg::Message> problems;
+    QObject::connect(&runner, &dev::jobs::PatternRunner::message, &runner, [&](const motion::msg::Message& m, bool problem) {
         if (problem)
             problems.push_back(m);
     });
     QObject::connect(c, &dev::Instrument::telemetryReceived, &runner,
-                     [&](const proto::TelemetryBatch& b) { jobs::feedBatch(runner, *c, b); });
-    s->wantTelemetry(jobs::patternChannels(), 250);
-    jobs::PatternRunner::Options o;
+                     [&](const dev::proto::TelemetryBatch& b) { dev::jobs::feedBatch(runner, *c, b); });
+    s->wantTelemetry(dev::jobs::patternChannels(), 250);
+    dev::jobs::PatternRunner::Options o;
     o.zMm = p->zMm;
     if (!runner.start(path, o)) {
         QStringList why;
         bool notHomed = false;
-        for (const msg::Message& m : problems) {
-            why << words::text(m);
+        for (const motion::msg::Message& m : problems) {
+            why << ui::words::text(m);
             notHomed = notHomed || m.id == "pattern.run.not_homed";
         }
         if (!inv.link().sim.isEmpty() && !inv.host().insideGui() && notHomed)
@@ -299,7 +299,7 @@ int run(Invocation& inv)
     const auto sum = runner.summary();
     const QJsonObject result{{QStringLiteral("shape"), QString::fromLatin1(motion::plans::shapeName(p->shape))},
                              {QStringLiteral("instrument"), c->identity().kindName()},
-                             {QStringLiteral("state"), words::englishTerm(jobs::PatternRunner::stateTerm(runner.state()))},
+                             {QStringLiteral("state"), ui::words::englishTerm(dev::jobs::PatternRunner::stateTerm(runner.state()))},
                              {QStringLiteral("complete"), sum.complete},
                              {QStringLiteral("segments"), static_cast<qint64>(path.size())},
                              {QStringLiteral("segments_done"), static_cast<qint64>(runner.segmentsDone())},
@@ -315,7 +315,7 @@ int run(Invocation& inv)
         inv.printJson(result);
     else
         inv.out() << tr("%1 on the %2: %3 of %4 segments in %5 s; contour error max %6 µm, RMS %7 µm (%8 samples at %9 Hz)\n")
-                         .arg(QString::fromLatin1(motion::plans::shapeName(p->shape)), words::term(dev::instrumentTerm(c->identity().kind)))
+                         .arg(QString::fromLatin1(motion::plans::shapeName(p->shape)), ui::words::term(dev::instrumentTerm(c->identity().kind)))
                          .arg(runner.segmentsDone())
                          .arg(path.size())
                          .arg(sum.durationS, 0, 'f', 2)
@@ -325,7 +325,7 @@ int run(Invocation& inv)
                          .arg(c->subscribedRateHz());
     inv.out().flush();
     if (!sum.complete)
-        return inv.refused(problems.empty() ? tr("the pattern did not complete") : words::text(problems.back()));
+        return inv.refused(problems.empty() ? tr("the pattern did not complete") : ui::words::text(problems.back()));
     return Ok;
 }
 
@@ -378,4 +378,4 @@ void addPatternCommands(std::vector<Command>& list)
     list.push_back(pattern);
 }
 
-} // namespace cli
+} // namespace app::cli

@@ -19,28 +19,28 @@
 
 #include <cmath>
 
-namespace cli {
+namespace app::cli {
 namespace {
 
-QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+QString tr(const char* text) { return QCoreApplication::translate("app::cli", text); }
 
 /// Millimetres and microlitres to the nanometre, seconds to the microsecond:
 /// the JSON shows 22.38, not 22.380000000000003.
 double r6(double v) { return std::round(v * 1e6) / 1e6; }
 
-QJsonObject moveJson(const plates::MachineMove& m)
+QJsonObject moveJson(const motion::plates::MachineMove& m)
 {
-    QJsonObject o{{QStringLiteral("move"), QString::fromLatin1(plates::moveKindName(m.kind))}};
+    QJsonObject o{{QStringLiteral("move"), QString::fromLatin1(motion::plates::moveKindName(m.kind))}};
     switch (m.kind) {
-    case plates::MoveKind::Raise:
-    case plates::MoveKind::Lower: o.insert(QStringLiteral("z_mm"), r6(m.zMm)); break;
-    case plates::MoveKind::Travel:
-    case plates::MoveKind::Touch:
+    case motion::plates::MoveKind::Raise:
+    case motion::plates::MoveKind::Lower: o.insert(QStringLiteral("z_mm"), r6(m.zMm)); break;
+    case motion::plates::MoveKind::Travel:
+    case motion::plates::MoveKind::Touch:
         o.insert(QStringLiteral("x_mm"), r6(m.xMm));
         o.insert(QStringLiteral("y_mm"), r6(m.yMm));
         break;
-    case plates::MoveKind::Pump: o.insert(QStringLiteral("pump_ul"), r6(m.pumpDeltaUl)); break;
-    case plates::MoveKind::Dwell: o.insert(QStringLiteral("seconds"), m.seconds); break;
+    case motion::plates::MoveKind::Pump: o.insert(QStringLiteral("pump_ul"), r6(m.pumpDeltaUl)); break;
+    case motion::plates::MoveKind::Dwell: o.insert(QStringLiteral("seconds"), m.seconds); break;
     }
     if (m.speed > 0)
         o.insert(QStringLiteral("speed"), m.speed);
@@ -53,11 +53,11 @@ int validate(Invocation& inv)
     RecipeSetup setup;
     if (int rc = loadSetup(inv, &setup))
         return rc;
-    const platefiles::LoadedRecipe& l = setup.loaded;
+    const dev::files::plates::LoadedRecipe& l = setup.loaded;
     if (inv.json()) {
         QJsonArray errors, warnings;
-        for (const msg::Problem& p : l.problems)
-            (p.isWarning() ? warnings : errors).append(words::toJson(p));
+        for (const motion::msg::Problem& p : l.problems)
+            (p.isWarning() ? warnings : errors).append(ui::words::toJson(p));
         inv.printJson(QJsonObject{{QStringLiteral("file"), l.path},
                                                {QStringLiteral("ok"), l.ok()},
                                                {QStringLiteral("errors"), errors},
@@ -65,8 +65,8 @@ int validate(Invocation& inv)
                                                {QStringLiteral("ops"), static_cast<int>(l.plan.ops.size())},
                                                {QStringLiteral("total_time_s"), l.plan.totalTimeS}});
     } else {
-        for (const msg::Problem& p : l.problems)
-            (p.isWarning() ? inv.out() : inv.err()) << words::problem(p) << "\n";
+        for (const motion::msg::Problem& p : l.problems)
+            (p.isWarning() ? inv.out() : inv.err()) << ui::words::problem(p) << "\n";
         if (l.ok())
             inv.out() << tr("%1: valid: %2 ops, about %3 s").arg(l.path).arg(l.plan.ops.size()).arg(std::lround(l.plan.totalTimeS)) << "\n";
         else
@@ -82,10 +82,10 @@ int plan(Invocation& inv)
     RecipeSetup setup;
     if (int rc = loadSetup(inv, &setup))
         return rc;
-    const platefiles::LoadedRecipe& l = setup.loaded;
+    const dev::files::plates::LoadedRecipe& l = setup.loaded;
     if (!l.ok())
         return reportInvalid(inv, l);
-    const plates::RecipePlan& p = l.plan;
+    const motion::plates::RecipePlan& p = l.plan;
     if (inv.json()) {
         QJsonArray ops, wells;
         for (const auto& op : p.ops) {
@@ -94,7 +94,7 @@ int plan(Invocation& inv)
                 moves.append(moveJson(m));
             QJsonObject o{{QStringLiteral("op"), op.index},
                           {QStringLiteral("step"), op.step},
-                          {QStringLiteral("kind"), QString::fromLatin1(plates::stepTypeName(op.type))},
+                          {QStringLiteral("kind"), QString::fromLatin1(motion::plates::stepTypeName(op.type))},
                           {QStringLiteral("volume_ul"), r6(op.volumeUl)},
                           {QStringLiteral("pump_ul"), r6(op.pumpNetUl)},
                           {QStringLiteral("x_mm"), r6(op.at.x)},
@@ -121,10 +121,10 @@ int plan(Invocation& inv)
                                      {QStringLiteral("aspirated_ul"), r6(w.aspiratedUl)},
                                      {QStringLiteral("visits"), w.visits}});
         QJsonArray warnings;
-        for (const msg::Problem& m : l.problems)
-            warnings.append(words::toJson(m));
+        for (const motion::msg::Problem& m : l.problems)
+            warnings.append(ui::words::toJson(m));
         inv.printJson(QJsonObject{{QStringLiteral("recipe"), QString::fromStdString(l.recipe.name)},
-                                               {QStringLiteral("fingerprint"), QString::fromStdString(plates::fingerprintHex(p.fingerprint))},
+                                               {QStringLiteral("fingerprint"), QString::fromStdString(motion::plates::fingerprintHex(p.fingerprint))},
                                                {QStringLiteral("total_time_s"), r6(p.totalTimeS)},
                                                {QStringLiteral("dispensed_ul"), r6(p.totalDispensedUl)},
                                                {QStringLiteral("aspirated_ul"), r6(p.totalAspiratedUl)},
@@ -134,12 +134,12 @@ int plan(Invocation& inv)
                                                {QStringLiteral("ops"), ops},
                                                {QStringLiteral("wells"), wells}});
     } else {
-        for (const QString& m : words::problems(l.problems))
+        for (const QString& m : ui::words::problems(l.problems))
             inv.out() << m << "\n";
         for (const auto& op : p.ops)
             inv.out() << QStringLiteral("%1  %2  (%3, %4) mm  Z %5  pump %6 µL  at %7 s\n")
                              .arg(op.index + 1, 5)
-                             .arg(words::text(op.label()), -44)
+                             .arg(ui::words::text(op.label()), -44)
                              .arg(op.at.x, 7, 'f', 2)
                              .arg(op.at.y, 7, 'f', 2)
                              .arg(op.well.empty() && op.station.empty() ? QStringLiteral("     —") : QString::number(op.depthZMm, 'f', 2).rightJustified(6))
@@ -208,4 +208,4 @@ void addRecipeCommands(std::vector<Command>& list)
     list.push_back(std::move(recipe));
 }
 
-} // namespace cli
+} // namespace app::cli

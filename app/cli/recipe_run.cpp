@@ -1,4 +1,4 @@
-// benchpilot-cli recipe run: a recipe on the analyzer through jobs::RecipeRunner,
+// benchpilot-cli recipe run: a recipe on the analyzer through dev::jobs::RecipeRunner,
 // a line per well, resumable from its run log. Ctrl+C (or SIGTERM; call.cancel
 // through the API) aborts cleanly: the machine stops, the tip rises, the log says
 // where it stopped.
@@ -18,10 +18,10 @@
 
 #include <cmath>
 
-namespace cli {
+namespace app::cli {
 namespace {
 
-QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+QString tr(const char* text) { return QCoreApplication::translate("app::cli", text); }
 
 QString clock(double s)
 {
@@ -43,7 +43,7 @@ int runRecipe(Invocation& inv)
     RecipeSetup setup;
     if (int rc = loadSetup(inv, &setup))
         return rc;
-    const platefiles::LoadedRecipe& l = setup.loaded;
+    const dev::files::plates::LoadedRecipe& l = setup.loaded;
     if (!l.ok()) {
         reportInvalid(inv, l);
         return inv.usage(tr("%1 does not validate: nothing moved").arg(l.path));
@@ -80,39 +80,39 @@ int runRecipe(Invocation& inv)
     spinUntil([&] { return c->state() != dev::LinkState::Ready || (fresh >= 2 && !c->status().anyMoving()); }, 30000);
     QObject::disconnect(conn);
 
-    plates::StartState start;
+    motion::plates::StartState start;
     const auto& axes = c->status().axes;
     if (axes.size() >= 4)
         start = {axes[0].commanded, axes[1].commanded, axes[2].commanded, axes[3].commanded};
     if (resuming)
-        start = jobs::RecipeRunner::resumeStart(logPath, *c);
+        start = dev::jobs::RecipeRunner::resumeStart(logPath, *c);
     // Times (the ETA) follow the analyzer's own planner limits when it reports them.
-    plates::PlanContext context = l.context;
-    context.deck = jobs::deckWithDeviceMotion(context.deck, c->identity());
-    const plates::RecipePlan plan = plates::planRecipe(l.recipe, context, start);
-    jobs::RecipeRunner runner(c);
-    msg::Message error;
+    motion::plates::PlanContext context = l.context;
+    context.deck = dev::jobs::deckWithDeviceMotion(context.deck, c->identity());
+    const motion::plates::RecipePlan plan = motion::plates::planRecipe(l.recipe, context, start);
+    dev::jobs::RecipeRunner runner(c);
+    motion::msg::Message error;
     const QString name = QString::fromStdString(l.recipe.name.empty() ? QFileInfo(l.path).fileName().toStdString() : l.recipe.name);
     if (!runner.setPlan(plan, name, &error))
-        return inv.refused(words::text(error));
+        return inv.refused(ui::words::text(error));
 
     QTextStream& out = inv.out();
-    QObject::connect(&runner, &jobs::RecipeRunner::message, &runner, [&](const msg::Message& text, bool problem) {
+    QObject::connect(&runner, &dev::jobs::RecipeRunner::message, &runner, [&](const motion::msg::Message& text, bool problem) {
         if (inv.json())
             inv.printJson(QJsonObject{{QStringLiteral("event"), problem ? QStringLiteral("problem") : QStringLiteral("note")},
-                                      {QStringLiteral("text"), words::toJson(text)}});
+                                      {QStringLiteral("text"), ui::words::toJson(text)}});
         else
-            (problem ? inv.err() : out) << words::text(text) << "\n";
+            (problem ? inv.err() : out) << ui::words::text(text) << "\n";
         inv.err().flush();
         out.flush();
     });
-    QObject::connect(&runner, &jobs::RecipeRunner::opFinished, &runner, [&](int op) {
-        const jobs::RunProgress p = runner.progress();
-        const plates::PlanOp& o = plan.ops[static_cast<std::size_t>(op)];
+    QObject::connect(&runner, &dev::jobs::RecipeRunner::opFinished, &runner, [&](int op) {
+        const dev::jobs::RunProgress p = runner.progress();
+        const motion::plates::PlanOp& o = plan.ops[static_cast<std::size_t>(op)];
         if (inv.json()) {
             QJsonObject line{{QStringLiteral("event"), QStringLiteral("done")},
                              {QStringLiteral("op"), op},
-                             {QStringLiteral("kind"), QString::fromLatin1(plates::stepTypeName(o.type))},
+                             {QStringLiteral("kind"), QString::fromLatin1(motion::plates::stepTypeName(o.type))},
                              {QStringLiteral("volume_ul"), o.volumeUl},
                              {QStringLiteral("ops_done"), p.opsDone},
                              {QStringLiteral("ops"), p.opsTotal},
@@ -127,20 +127,20 @@ int runRecipe(Invocation& inv)
             out << QStringLiteral("[%1/%2] %3 · %4 elapsed · ETA %5\n")
                        .arg(p.opsDone, QString::number(p.opsTotal).size())
                        .arg(p.opsTotal)
-                       .arg(words::text(o.label()), clock(p.elapsedS), clock(p.etaS));
+                       .arg(ui::words::text(o.label()), clock(p.elapsedS), clock(p.etaS));
             out.flush();
         }
     });
 
     bool needDecision = false;
-    const jobs::InterruptedDecider decide = [&](const jobs::InterruptedOp& op) {
-        inv.report(tr("%1 was interrupted after its plunger move was sent: %2").arg(words::text(op.label), words::text(op.evidence)));
+    const dev::jobs::InterruptedDecider decide = [&](const dev::jobs::InterruptedOp& op) {
+        inv.report(tr("%1 was interrupted after its plunger move was sent: %2").arg(ui::words::text(op.label), ui::words::text(op.evidence)));
         if (interrupted == QLatin1String("skip"))
-            return jobs::InterruptedChoice::Skip;
+            return dev::jobs::InterruptedChoice::Skip;
         if (interrupted == QLatin1String("redo"))
-            return jobs::InterruptedChoice::Redo;
+            return dev::jobs::InterruptedChoice::Redo;
         needDecision = true;
-        return jobs::InterruptedChoice::Cancel;
+        return dev::jobs::InterruptedChoice::Cancel;
     };
     // Ctrl+C here, a cancelled call through the GUI's API.
     const auto interrupt = inv.host().onInterrupt([&runner, &inv] {
@@ -151,14 +151,14 @@ int runRecipe(Invocation& inv)
     if (!started) {
         if (needDecision)
             return inv.usage(tr("not resumed: say --interrupted=skip (count the well as done) or --interrupted=redo (do it again)"));
-        return inv.refused(words::text(error));
+        return inv.refused(ui::words::text(error));
     }
     if (!inv.json())
         out << tr("log: %1").arg(logPath) << "\n";
     out.flush();
-    spinUntil([&] { return runner.state() == jobs::RunState::Finished || runner.state() == jobs::RunState::Stopped; }, INT32_MAX);
-    const jobs::RunProgress p = runner.progress();
-    const bool finished = runner.state() == jobs::RunState::Finished;
+    spinUntil([&] { return runner.state() == dev::jobs::RunState::Finished || runner.state() == dev::jobs::RunState::Stopped; }, INT32_MAX);
+    const dev::jobs::RunProgress p = runner.progress();
+    const bool finished = runner.state() == dev::jobs::RunState::Finished;
     if (inv.json())
         inv.printJson(QJsonObject{{QStringLiteral("event"), finished ? QStringLiteral("finished") : QStringLiteral("stopped")},
                                   {QStringLiteral("ops_done"), p.opsDone},
@@ -178,4 +178,4 @@ int runRecipe(Invocation& inv)
     return c->state() == dev::LinkState::Ready ? Refused : LinkTrouble;
 }
 
-} // namespace cli
+} // namespace app::cli

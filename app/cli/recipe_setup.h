@@ -5,12 +5,12 @@
 
 #include "device/files/recipes/recipe_loader.h"
 
-namespace cli {
+namespace app::cli {
 
 struct RecipeSetup {
-    platefiles::LoadedRecipe loaded;
-    plates::Deck deck;
-    std::vector<plates::SlotCalibration> calibration;
+    dev::files::plates::LoadedRecipe loaded;
+    motion::plates::Deck deck;
+    std::vector<motion::plates::SlotCalibration> calibration;
     QString calibrationPath;  ///< "" when none is used
 };
 
@@ -22,9 +22,9 @@ QList<QCommandLineOption> recipeSetupOptions();
 int loadSetup(Invocation& inv, RecipeSetup* setup);
 
 /// Prints every problem of a recipe that does not validate on stderr; returns Usage.
-int reportInvalid(Invocation& inv, const platefiles::LoadedRecipe& loaded);
+int reportInvalid(Invocation& inv, const dev::files::plates::LoadedRecipe& loaded);
 
 /// recipe run (recipe_run.cpp).
 int runRecipe(Invocation& inv);
 
-} // namespace cli
+} // namespace app::cli

@@ -28,13 +28,13 @@
 
 #include <cmath>
 
-namespace cli {
+namespace app::cli {
 namespace {
 
 using namespace motion::scan;
-using jobs::ScanRunner;
+using dev::jobs::ScanRunner;
 
-QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+QString tr(const char* text) { return QCoreApplication::translate("app::cli", text); }
 
 /// The option a person typed for a plan field, so a refusal names what to change.
 QString optionFor(const std::string& field, bool fromSensor)
@@ -187,10 +187,10 @@ int scanPlan(Invocation& inv)
         for (const char* o : {"roi", "centre", "size", "polygon", "fov", "sensor", "overlap"})
             if (inv.isSet(QString::fromLatin1(o)))
                 return inv.usage(tr("give a plan file or the plan's options, not both (--%1)").arg(QLatin1String(o)));
-        jsonio::Problems problems;
+        dev::files::json::Problems problems;
         const QString planFile = inv.path(inv.arguments().front());
-        if (!scanfile::loadPlan(planFile, &p, &problems))
-            return inv.usage(words::fileProblems(problems, QFileInfo(planFile).fileName()).join(QLatin1Char('\n')));
+        if (!dev::files::scan::loadPlan(planFile, &p, &problems))
+            return inv.usage(ui::words::fileProblems(problems, QFileInfo(planFile).fileName()).join(QLatin1Char('\n')));
         if (inv.isSet(QStringLiteral("pixel-um"))) {
             if (p.camera.source == FieldSource::Sensor)
                 return inv.usage(tr("--pixel-um: the plan's camera gives the pixel size (sensor pixel / magnification)"));
@@ -205,9 +205,9 @@ int scanPlan(Invocation& inv)
     if (!problems.empty()) {
         // Every problem once, each naming the option to change (X and Y of --overlap may say the same).
         QStringList lines;
-        for (msg::Problem pr : problems) {
+        for (motion::msg::Problem pr : problems) {
             pr.path = optionFor(pr.path, p.camera.source == FieldSource::Sensor).toStdString();
-            const QString line = words::problem(pr);
+            const QString line = ui::words::problem(pr);
             if (!lines.contains(line))
                 lines << line;
         }
@@ -221,7 +221,7 @@ int scanPlan(Invocation& inv)
     const ScanLayout layout = layoutScan(p);
     QTextStream& out = inv.out();
     if (format == QLatin1String("json")) {
-        const std::string text = scanfile::writePlan(p);
+        const std::string text = dev::files::scan::writePlan(p);
         out << QString::fromStdString(text);
         inv.offerJson(QJsonDocument::fromJson(QByteArray::fromStdString(text)).object());
     } else if (format == QLatin1String("summary")) {
@@ -238,10 +238,10 @@ int scanPlan(Invocation& inv)
                                          {QStringLiteral("settle_s"), e.settleS},
                                          {QStringLiteral("exposure_s"), e.exposureS}});
     } else {
-        const auto records = scanfile::plannedRecords(p, layout);
-        const std::string text = format == QLatin1String("tileconfig") ? scanfile::tileConfiguration(p, records)
-            : format == QLatin1String("mmpos")                         ? scanfile::microManagerPositions(p, layout)
-                                                                       : scanfile::scanCsv(p, layout, records);
+        const auto records = dev::files::scan::plannedRecords(p, layout);
+        const std::string text = format == QLatin1String("tileconfig") ? dev::files::scan::tileConfiguration(p, records)
+            : format == QLatin1String("mmpos")                         ? dev::files::scan::microManagerPositions(p, layout)
+                                                                       : dev::files::scan::scanCsv(p, layout, records);
         out << QString::fromStdString(text);
     }
     out.flush();
@@ -254,10 +254,10 @@ int scanRun(Invocation& inv)
         return inv.usage(tr("needs one plan file: scan run PLAN.json [--out DIR]"));
     const QString planPath = inv.path(inv.arguments().front());
     ScanPlan plan;
-    jsonio::Problems problems;
-    if (!scanfile::loadPlan(planPath, &plan, &problems))
-        return inv.usage(words::fileProblems(problems, QFileInfo(planPath).fileName()).join(QLatin1Char('\n')));
-    msg::Message error;
+    dev::files::json::Problems problems;
+    if (!dev::files::scan::loadPlan(planPath, &plan, &problems))
+        return inv.usage(ui::words::fileProblems(problems, QFileInfo(planPath).fileName()).join(QLatin1Char('\n')));
+    motion::msg::Message error;
     const QString folder = inv.path(inv.isSet(QStringLiteral("out"))
         ? inv.value(QStringLiteral("out"))
         : QFileInfo(inv.arguments().front()).completeBaseName().section(QLatin1Char('.'), 0, 0) + QStringLiteral("-run"));
@@ -265,8 +265,8 @@ int scanRun(Invocation& inv)
     if (!s)
         return LinkTrouble;
     dev::Instrument* client = s->instrument();
-    if (client->identity().kind != proto::DeviceKind::Stage)
-        return inv.refused(tr("scans run on the microscope stage; this is the %1 (use --sim stage or --port)").arg(words::term(dev::instrumentTerm(client->identity().kind))));
+    if (client->identity().kind != dev::proto::DeviceKind::Stage)
+        return inv.refused(tr("scans run on the microscope stage; this is the %1 (use --sim stage or --port)").arg(ui::words::term(dev::instrumentTerm(client->identity().kind))));
     if (inv.isSet(QStringLiteral("home"))) {
         if (const int rc = s->request([&](auto cb) { client->home(0, cb); }, tr("home")))
             return rc;
@@ -285,26 +285,26 @@ int scanRun(Invocation& inv)
     }
     ScanRunner runner(client);
     runner.setCamera(scanCamera.get());
-    jobs::ScanLaunch launch(&runner);
-    using Kind = jobs::ScanDecision::Kind;
-    const jobs::ScanDecision d = launch.prepare(plan, folder, inv.isSet(QStringLiteral("restart")));
+    dev::jobs::ScanLaunch launch(&runner);
+    using Kind = dev::jobs::ScanDecision::Kind;
+    const dev::jobs::ScanDecision d = launch.prepare(plan, folder, inv.isSet(QStringLiteral("restart")));
     if (d.kind == Kind::OtherScansLog)
-        return inv.usage(words::text(d.error) + tr(" (--restart starts over)"));
+        return inv.usage(ui::words::text(d.error) + tr(" (--restart starts over)"));
     if (d.kind == Kind::Refused)
-        return inv.refused(words::text(d.error));
+        return inv.refused(ui::words::text(d.error));
     QTextStream& out = inv.out();
     if (d.kind == Kind::AllTaken) {
         QStringList written;
         if (!runner.writeExports(&written, &error))
-            return inv.refused(words::text(error));
+            return inv.refused(ui::words::text(error));
         out << tr("Every tile of this scan is already taken in %1; exports written again. --restart takes them anew.\n").arg(folder);
         out.flush();
         return Ok;
     }
     if (d.kind == Kind::Blocked) {
         QStringList blockers;
-        for (const msg::Message& m : d.blockers)
-            blockers << words::text(m);
+        for (const motion::msg::Message& m : d.blockers)
+            blockers << ui::words::text(m);
         return inv.refused(blockers.join(QStringLiteral("; ")) + (inv.isSet(QStringLiteral("home")) ? QString() : tr(" (--home homes the stage first)")));
     }
     // A script has no one to ask: a run longer than ScanLaunch::kAskLongerThanS needs --yes.
@@ -315,7 +315,7 @@ int scanRun(Invocation& inv)
                    .arg(d.outlook.takenTiles + 1).arg(d.outlook.totalTiles).arg(folder).arg(d.outlook.takenTiles);
     QString stopReason;
     QStringList exports;
-    QObject::connect(&runner, &ScanRunner::problem, [&](const msg::Message& m) { stopReason = words::text(m); });
+    QObject::connect(&runner, &ScanRunner::problem, [&](const motion::msg::Message& m) { stopReason = ui::words::text(m); });
     QObject::connect(&runner, &ScanRunner::finished, [&](const QStringList& e) { exports = e; });
     QObject::connect(&runner, &ScanRunner::tileTaken, [&](int tile) {
         const auto& r = runner.records()[static_cast<std::size_t>(tile)];
@@ -338,7 +338,7 @@ int scanRun(Invocation& inv)
         out.flush();
     });
     if (!launch.start(&error))
-        return inv.refused(words::text(error));
+        return inv.refused(ui::words::text(error));
     const auto abortHook = inv.host().onAbort([&runner] { runner.abort(); });  // the API's cancel; the log can continue
     spinUntil([&] { return !runner.isActive(); }, std::numeric_limits<int>::max());
     if (runner.state() != ScanRunner::State::Finished) {
@@ -417,4 +417,4 @@ void addScanCommands(std::vector<Command>& list)
                     tr("See docs/scan.md for the grid rule, the plan file and the exports."), {}, {}, {plan, run}});
 }
 
-} // namespace cli
+} // namespace app::cli

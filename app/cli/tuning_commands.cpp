@@ -21,12 +21,12 @@
 #include <cmath>
 #include <memory>
 
-namespace cli {
+namespace app::cli {
 namespace {
 
 using namespace motion::control;
 
-QString tr(const char* text) { return QCoreApplication::translate("cli", text); }
+QString tr(const char* text) { return QCoreApplication::translate("app::cli", text); }
 QString num(double v) { return std::isfinite(v) ? QString::number(v, 'g', 6) : QStringLiteral("—"); }
 
 QString describeGains(const DiscreteGains& g, double periodS)
@@ -130,7 +130,7 @@ int openInstrument(Invocation& inv, Target& t)
     t.session = s;
     t.tuning = s->instrument()->tuning();
     if (!t.tuning || !t.tuning->hasGains())
-        return inv.refused(words::text(s->instrument()->whyNot(dev::Capability::PidGains)));
+        return inv.refused(ui::words::text(s->instrument()->whyNot(dev::Capability::PidGains)));
     return Ok;
 }
 
@@ -142,7 +142,7 @@ int openTarget(Invocation& inv, Target& t, bool needsAxis)
             return inv.usage(tr("give either --plant or an instrument (--sim/--port with --axis), not both"));
         const auto p = parsePlant(inv.value(QStringLiteral("plant")).toStdString());
         if (!p)
-            return inv.usage(tr("--plant: %1").arg(words::text(p.error())));
+            return inv.usage(tr("--plant: %1").arg(ui::words::text(p.error())));
         t.target = std::make_unique<dev::ModelTarget>(*p);
         return Ok;
     }
@@ -156,7 +156,7 @@ int openTarget(Invocation& inv, Target& t, bool needsAxis)
         return Ok;
     t.axis = s->instrument()->identity().axisIndex(letter[0].toUpper());
     if (t.axis < 0)
-        return inv.usage(tr("axis '%1' does not exist on the %2").arg(letter, words::term(dev::instrumentTerm(s->instrument()->identity().kind))));
+        return inv.usage(tr("axis '%1' does not exist on the %2").arg(letter, ui::words::term(dev::instrumentTerm(s->instrument()->identity().kind))));
     if (inv.isSet(QStringLiteral("home")) || qobject_cast<dev::SimulatedLink*>(s->link()))
         if (int rc = homeAndCentre(inv, s, t.axis))
             return rc;
@@ -172,7 +172,7 @@ int openTarget(Invocation& inv, Target& t, bool needsAxis)
     });
     spinUntil([&] { return read; }, 5000);
     if (err)
-        return err->kind == dev::RequestError::Kind::Device ? inv.refused(words::text(err->message)) : inv.linkTrouble(words::text(err->message));
+        return err->kind == dev::RequestError::Kind::Device ? inv.refused(ui::words::text(err->message)) : inv.linkTrouble(ui::words::text(err->message));
     t.target = std::move(target);
     return Ok;
 }
@@ -190,12 +190,12 @@ int runToEnd(Invocation& inv, dev::TuningRunner& runner, const std::function<boo
 {
     bool done = false, ok = false;
     QString message;
-    QObject::connect(&runner, &dev::TuningRunner::finished, &runner, [&](bool good, const msg::Message& m) {
+    QObject::connect(&runner, &dev::TuningRunner::finished, &runner, [&](bool good, const motion::msg::Message& m) {
         done = true;
         ok = good;
-        message = words::text(m);
+        message = ui::words::text(m);
     });
-    QObject::connect(&runner, &dev::TuningRunner::message, &runner, [&](const msg::Message& m) { inv.report(words::text(m)); });
+    QObject::connect(&runner, &dev::TuningRunner::message, &runner, [&](const motion::msg::Message& m) { inv.report(ui::words::text(m)); });
     if (!start())
         return inv.refused(message.isEmpty() ? tr("could not start") : message);
     const auto abortHook = inv.host().onAbort([&runner] { runner.abort(); });  // the API's cancel: the axis stops under its gains
@@ -245,9 +245,9 @@ int tune(Invocation& inv)
         return rc;
     const TuningResult& r = runner.result();
     if (inv.isSet(QStringLiteral("save"))) {
-        msg::Message error;
-        if (!files::saveTuningFile(inv.path(inv.value(QStringLiteral("save"))), r, &error))
-            return inv.refused(words::text(error));
+        motion::msg::Message error;
+        if (!dev::files::saveTuningFile(inv.path(inv.value(QStringLiteral("save"))), r, &error))
+            return inv.refused(ui::words::text(error));
     }
     if (inv.json()) {
         QJsonObject rules;
@@ -272,7 +272,7 @@ int tune(Invocation& inv)
         if (r.verification) {
             inv.out() << tr("  verified with %1: overshoot %2 %, %3\n")
                              .arg(QString::fromStdString(r.verification->rule), num(r.verification->metrics.overshootPct),
-                                  words::tuningOutcome(r.verification->outcome));
+                                  ui::words::tuningOutcome(r.verification->outcome));
             inv.out() << verdictLine(r.verification->metrics.outcome, r.verification->limitCycle, QString::fromStdString(r.unit));
         }
     }
@@ -316,7 +316,7 @@ int stepTest(Invocation& inv)
         });
         spinUntil([&] { return read; }, 5000);
         if (err)
-            return inv.refused(words::text(err->message));
+            return inv.refused(ui::words::text(err->message));
     } else {
         return inv.usage(tr("a model plant has no gains of its own: give --gains Kp,Ki,Kd"));
     }
@@ -331,12 +331,12 @@ int stepTest(Invocation& inv)
     Record record;
     StepMetrics m;
     StepVerdict verdict;
-    QObject::connect(&runner, &dev::TuningRunner::stepTestDone, &runner, [&](const Record& r, const StepVerdict& v, const msg::Message&) {
+    QObject::connect(&runner, &dev::TuningRunner::stepTestDone, &runner, [&](const Record& r, const StepVerdict& v, const motion::msg::Message&) {
         record = r;
         verdict = v;
         m = v.metrics;
     });
-    if (int rc = runToEnd(inv, runner, [&] { return runner.startStepTest(t.target.get(), s, msg::make("tuning.label.step_test")); }, inv.link().timeoutS))
+    if (int rc = runToEnd(inv, runner, [&] { return runner.startStepTest(t.target.get(), s, motion::msg::make("tuning.label.step_test")); }, inv.link().timeoutS))
         return rc;
     const bool mm = t.target->unit() == QLatin1String("mm");
     const double in5 = mm ? verdict.insideTargetBandS : std::nan("");
@@ -364,7 +364,7 @@ int stepTest(Invocation& inv)
     } else {
         const QString u = t.target->unit();
         inv.out() << t.target->describe() << tr(": step %1 %2 with ").arg(num(size), u) << describeGains(s.gains, T) << " — "
-                  << words::term(endReasonTerm(record.reason)) << "\n"
+                  << ui::words::term(endReasonTerm(record.reason)) << "\n"
                   << tr("  rise 10–90 %: %1 s, overshoot %2 %, settling (2 %): %3 s\n").arg(num(m.riseTimeS), num(m.overshootPct), num(m.settlingTimeS))
                   << tr("  steady-state error %1 %4, IAE %2 %4·s, ISE %3 %4²·s, peak output %5 %4\n")
                          .arg(num(m.steadyStateError), num(m.iae), num(m.ise), u, num(m.peakOutput));
@@ -404,7 +404,7 @@ int gains(Invocation& inv)
             return inv.usage(tr("expected AXIS=Kp,Ki,Kd with a closed-loop axis, got '%1'").arg(a));
         dev::AxisGains now;
         if (const auto e = read(axis, now))
-            return inv.refused(words::text(e->message));
+            return inv.refused(ui::words::text(e->message));
         QString why;
         const auto g = parseGains(a.mid(2), now.controlPeriodS, perPeriod, &why);
         if (!g)
@@ -416,7 +416,7 @@ int gains(Invocation& inv)
     for (int axis : t.tuning->tunableAxes()) {
         dev::AxisGains g;
         if (const auto e = read(axis, g))
-            return inv.refused(words::text(e->message));
+            return inv.refused(ui::words::text(e->message));
         const QString letter(id.axes[axis].letter);
         if (inv.json()) {
             QJsonObject o = continuousJson(g.gains, g.controlPeriodS);
@@ -504,4 +504,4 @@ void addTuningCommands(std::vector<Command>& list)
                     }()});
 }
 
-} // namespace cli
+} // namespace app::cli

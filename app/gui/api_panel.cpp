@@ -18,7 +18,7 @@ QString since(const QDateTime& t) { return t.toString(QStringLiteral("HH:mm:ss")
 
 // ---- the strip ------------------------------------------------------------------------
 
-ApiControlStrip::ApiControlStrip(api::ApiServer* server, QWidget* parent) : QFrame(parent), m_server(server)
+ApiControlStrip::ApiControlStrip(app::api::ApiServer* server, QWidget* parent) : QFrame(parent), m_server(server)
 {
     setObjectName(QStringLiteral("apiControlStrip"));
     setStyleSheet(QStringLiteral("#apiControlStrip { background:#fff3cd; border:1px solid #d4a72c; border-radius:4px; }"));
@@ -34,8 +34,8 @@ ApiControlStrip::ApiControlStrip(api::ApiServer* server, QWidget* parent) : QFra
     m_takeBack->setObjectName(QStringLiteral("apiTakeBack"));
     h->addWidget(m_label, 1);
     h->addWidget(m_takeBack);
-    connect(m_takeBack, &QPushButton::clicked, server, &api::ApiServer::takeBack);
-    connect(&server->lease(), &api::ControlLease::changed, this, &ApiControlStrip::refresh);
+    connect(m_takeBack, &QPushButton::clicked, server, &app::api::ApiServer::takeBack);
+    connect(&server->lease(), &app::api::ControlLease::changed, this, &ApiControlStrip::refresh);
     retranslateUi();
 }
 
@@ -70,11 +70,11 @@ void ApiControlStrip::changeEvent(QEvent* event)
 
 // ---- the status bar button ------------------------------------------------------------
 
-ApiStatusButton::ApiStatusButton(api::ApiServer* server, QWidget* parent) : QToolButton(parent), m_server(server)
+ApiStatusButton::ApiStatusButton(app::api::ApiServer* server, QWidget* parent) : QToolButton(parent), m_server(server)
 {
     setObjectName(QStringLiteral("apiStatus"));
     setAutoRaise(true);
-    connect(server, &api::ApiServer::clientsChanged, this, &ApiStatusButton::retranslateUi);
+    connect(server, &app::api::ApiServer::clientsChanged, this, &ApiStatusButton::retranslateUi);
     retranslateUi();
 }
 
@@ -100,7 +100,7 @@ void ApiStatusButton::changeEvent(QEvent* event)
 
 // ---- the panel ------------------------------------------------------------------------
 
-ApiPanel::ApiPanel(api::ApiServer* server, QWidget* parent) : QWidget(parent), m_server(server)
+ApiPanel::ApiPanel(app::api::ApiServer* server, QWidget* parent) : QWidget(parent), m_server(server)
 {
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(4, 4, 4, 4);
@@ -138,12 +138,12 @@ ApiPanel::ApiPanel(api::ApiServer* server, QWidget* parent) : QWidget(parent), m
     v->addWidget(m_clients, 1);
     v->addLayout(jobsRow);
     v->addWidget(m_jobs, 1);
-    connect(m_takeBack, &QPushButton::clicked, server, &api::ApiServer::takeBack);
+    connect(m_takeBack, &QPushButton::clicked, server, &app::api::ApiServer::takeBack);
     connect(m_abort, &QPushButton::clicked, this, &ApiPanel::abortSelected);
     connect(m_jobs, &QTableWidget::itemSelectionChanged, this, &ApiPanel::refresh);
-    connect(server, &api::ApiServer::clientsChanged, this, &ApiPanel::refresh);
-    connect(&server->jobs(), &api::JobBoard::changed, this, &ApiPanel::refresh);
-    connect(&server->lease(), &api::ControlLease::changed, this, &ApiPanel::refresh);
+    connect(server, &app::api::ApiServer::clientsChanged, this, &ApiPanel::refresh);
+    connect(&server->jobs(), &app::api::JobBoard::changed, this, &ApiPanel::refresh);
+    connect(&server->lease(), &app::api::ControlLease::changed, this, &ApiPanel::refresh);
     retranslateUi();
 }
 
@@ -184,7 +184,7 @@ void ApiPanel::refresh()
     const QString selected = m_jobs->currentRow() >= 0 && m_jobs->item(m_jobs->currentRow(), 0)
         ? m_jobs->item(m_jobs->currentRow(), 0)->data(Qt::UserRole).toString()
         : QString();
-    QVector<const api::Job*> shown;
+    QVector<const app::api::Job*> shown;
     for (const auto& j : m_server->jobs().all())
         if (j.fromApi)
             shown.push_back(&j);
@@ -192,7 +192,7 @@ void ApiPanel::refresh()
     m_jobs->setRowCount(shown.size());
     bool canAbort = false;
     for (int r = 0; r < shown.size(); ++r) {
-        const api::Job& j = *shown[r];
+        const app::api::Job& j = *shown[r];
         QStringList progress;
         for (auto it = j.progress.begin(); it != j.progress.end(); ++it)
             if (it.value().isDouble() || it.value().isString())

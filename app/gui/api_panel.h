@@ -14,7 +14,7 @@ class QLabel;
 class QPushButton;
 class QTableWidget;
 
-namespace api {
+namespace app::api {
 class ApiServer;
 }
 
@@ -23,7 +23,7 @@ namespace app {
 class ApiControlStrip : public QFrame {
     Q_OBJECT
 public:
-    ApiControlStrip(api::ApiServer* server, QWidget* parent = nullptr);
+    ApiControlStrip(app::api::ApiServer* server, QWidget* parent = nullptr);
     QPushButton* takeBackButton() const { return m_takeBack; }
     QString text() const;
 
@@ -34,7 +34,7 @@ private:
     void retranslateUi();
     void refresh();
 
-    api::ApiServer* m_server;
+    app::api::ApiServer* m_server;
     QLabel* m_label;
     QPushButton* m_takeBack;
 };
@@ -42,7 +42,7 @@ private:
 class ApiStatusButton : public QToolButton {
     Q_OBJECT
 public:
-    ApiStatusButton(api::ApiServer* server, QWidget* parent = nullptr);
+    ApiStatusButton(app::api::ApiServer* server, QWidget* parent = nullptr);
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -50,13 +50,13 @@ protected:
 private:
     void retranslateUi();
 
-    api::ApiServer* m_server;
+    app::api::ApiServer* m_server;
 };
 
 class ApiPanel : public QWidget {
     Q_OBJECT
 public:
-    ApiPanel(api::ApiServer* server, QWidget* parent = nullptr);
+    ApiPanel(app::api::ApiServer* server, QWidget* parent = nullptr);
     QTableWidget* clientsTable() const { return m_clients; }
     QTableWidget* jobsTable() const { return m_jobs; }
 
@@ -68,7 +68,7 @@ private:
     void refresh();
     void abortSelected();
 
-    api::ApiServer* m_server;
+    app::api::ApiServer* m_server;
     QLabel* m_where;
     QLabel* m_control;
     QPushButton* m_takeBack;

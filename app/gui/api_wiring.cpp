@@ -15,7 +15,7 @@
 
 namespace app {
 
-ApiWiring::ApiWiring(InstrumentSession* const sessions[2], tele::TelemetryHub* hub, const ApiOptions& options, QWidget* window)
+ApiWiring::ApiWiring(InstrumentSession* const sessions[2], dev::tele::TelemetryHub* hub, const ApiOptions& options, QWidget* window)
     : QObject(window)
 {
     // Each lives as long as its session's proxy (the screens hold them the same way).
@@ -23,9 +23,9 @@ ApiWiring::ApiWiring(InstrumentSession* const sessions[2], tele::TelemetryHub* h
         m_gated[i] = new GatedInstrument(sessions[i]->instrument(), [this] { return blockedBy(); }, [this] { askTakeBack(); }, sessions[i]);
     if (options.socketPath.isEmpty())
         return;
-    QVector<api::ServedInstrument> served{{QStringLiteral("analyzer"), sessions[0]->instrument(), 0},
+    QVector<app::api::ServedInstrument> served{{QStringLiteral("analyzer"), sessions[0]->instrument(), 0},
                                           {QStringLiteral("stage"), sessions[1]->instrument(), 1}};
-    m_server = std::make_unique<api::ApiServer>(served, hub);
+    m_server = std::make_unique<app::api::ApiServer>(served, hub);
     QString error;
     if (!m_server->listen(options.socketPath, &error)) {
         m_startError = tr("Scripting API not started: %1").arg(error);
@@ -43,8 +43,8 @@ ApiWiring::ApiWiring(InstrumentSession* const sessions[2], tele::TelemetryHub* h
     m_panel = new ApiPanel(m_server.get());
     m_statusButton = new ApiStatusButton(m_server.get(), window);
     connect(m_statusButton, &QToolButton::clicked, this, &ApiWiring::showPanelRequested);
-    connect(m_server.get(), &api::ApiServer::activity, this, &ApiWiring::note);
-    connect(m_server.get(), &api::ApiServer::jobHandedOver, this, [this](const QString&, const QString& text) { emit handedOver(text); });
+    connect(m_server.get(), &app::api::ApiServer::activity, this, &ApiWiring::note);
+    connect(m_server.get(), &app::api::ApiServer::jobHandedOver, this, [this](const QString&, const QString& text) { emit handedOver(text); });
 }
 
 ApiWiring::~ApiWiring()
@@ -79,21 +79,21 @@ void ApiWiring::askTakeBack()
         m_server->takeBack();
 }
 
-void ApiWiring::watchRunners(jobs::RecipeRunner* plates, jobs::ScanRunner* scan, jobs::PatternRunner* const patterns[2],
+void ApiWiring::watchRunners(dev::jobs::RecipeRunner* plates, dev::jobs::ScanRunner* scan, dev::jobs::PatternRunner* const patterns[2],
                              dev::TuningRunner* tuning, ui::CalibrationScreen* calibration)
 {
     if (!m_server)
         return;
-    QPointer<jobs::RecipeRunner> p(plates);
-    QPointer<jobs::ScanRunner> s(scan);
-    QPointer<jobs::PatternRunner> pa(patterns[0]), ps(patterns[1]);
+    QPointer<dev::jobs::RecipeRunner> p(plates);
+    QPointer<dev::jobs::ScanRunner> s(scan);
+    QPointer<dev::jobs::PatternRunner> pa(patterns[0]), ps(patterns[1]);
     QPointer<dev::TuningRunner> t(tuning);
     QPointer<ui::CalibrationScreen> c(calibration);
     m_operatorBusy = [p, s, pa, ps, t, c]() -> QString {
-        using R = jobs::RunState;
+        using R = dev::jobs::RunState;
         if (p && (p->state() == R::Running || p->state() == R::Pausing || p->state() == R::Paused || p->state() == R::Aborting))
             return tr("a recipe on the Plates screen");
-        if (s && (s->isActive() || s->state() == jobs::ScanRunner::State::Paused))
+        if (s && (s->isActive() || s->state() == dev::jobs::ScanRunner::State::Paused))
             return tr("a scan on the Scan screen");
         if ((pa && pa->busy()) || (ps && ps->busy()))
             return tr("a pattern on the Patterns screen");
@@ -103,18 +103,18 @@ void ApiWiring::watchRunners(jobs::RecipeRunner* plates, jobs::ScanRunner* scan,
             return tr("a test on the Calibration screen");
         return {};
     };
-    api::watchRecipeRunner(m_server->jobs(), plates, QStringLiteral("analyzer"), QStringLiteral("plates screen"));
-    api::watchScanRunner(m_server->jobs(), scan, QStringLiteral("stage"), QStringLiteral("scan screen"));
-    api::watchPatternRunner(m_server->jobs(), patterns[0], QStringLiteral("analyzer"), QStringLiteral("patterns screen"));
-    api::watchPatternRunner(m_server->jobs(), patterns[1], QStringLiteral("stage"), QStringLiteral("patterns screen"));
+    app::api::watchRecipeRunner(m_server->jobs(), plates, QStringLiteral("analyzer"), QStringLiteral("plates screen"));
+    app::api::watchScanRunner(m_server->jobs(), scan, QStringLiteral("stage"), QStringLiteral("scan screen"));
+    app::api::watchPatternRunner(m_server->jobs(), patterns[0], QStringLiteral("analyzer"), QStringLiteral("patterns screen"));
+    app::api::watchPatternRunner(m_server->jobs(), patterns[1], QStringLiteral("stage"), QStringLiteral("patterns screen"));
     if (!calibration)
         return;
     auto instrumentKey = [](int index) { return index == 0 ? QStringLiteral("analyzer") : QStringLiteral("stage"); };
-    connect(calibration, &ui::CalibrationScreen::accuracyRunStarting, this, [this, instrumentKey](jobs::AccuracyRunner* r, int index) {
-        api::watchAccuracyRunner(m_server->jobs(), r, instrumentKey(index), QStringLiteral("calibration screen"));
+    connect(calibration, &ui::CalibrationScreen::accuracyRunStarting, this, [this, instrumentKey](dev::jobs::AccuracyRunner* r, int index) {
+        app::api::watchAccuracyRunner(m_server->jobs(), r, instrumentKey(index), QStringLiteral("calibration screen"));
     });
-    connect(calibration, &ui::CalibrationScreen::circleRunStarting, this, [this, instrumentKey](jobs::CircleRunner* r, int index) {
-        api::watchCircleRunner(m_server->jobs(), r, instrumentKey(index), QStringLiteral("calibration screen"));
+    connect(calibration, &ui::CalibrationScreen::circleRunStarting, this, [this, instrumentKey](dev::jobs::CircleRunner* r, int index) {
+        app::api::watchCircleRunner(m_server->jobs(), r, instrumentKey(index), QStringLiteral("calibration screen"));
     });
 }
 

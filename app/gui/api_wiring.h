@@ -16,13 +16,13 @@ class QPushButton;
 class QToolButton;
 class QWidget;
 
-namespace api {
+namespace app::api {
 class ApiServer;
 }
 namespace dev {
 class Instrument;
 }
-namespace jobs {
+namespace dev::jobs {
 class PatternRunner;
 class RecipeRunner;
 class ScanRunner;
@@ -33,7 +33,7 @@ class TuningRunner;
 namespace ui {
 class CalibrationScreen;
 }
-namespace tele {
+namespace dev::tele {
 class TelemetryHub;
 }
 
@@ -54,18 +54,18 @@ struct ApiOptions {
 class ApiWiring : public QObject {
     Q_OBJECT
 public:
-    ApiWiring(InstrumentSession* const sessions[2], tele::TelemetryHub* hub, const ApiOptions& options, QWidget* window);
+    ApiWiring(InstrumentSession* const sessions[2], dev::tele::TelemetryHub* hub, const ApiOptions& options, QWidget* window);
     ~ApiWiring() override;
 
     /// What the operator's screens hold for instrument `index`: gated while a script has control.
     dev::Instrument* screenInstrument(int index) const;
     /// The screens' runners: a script cannot take control while one of them runs a job.
-    void watchRunners(jobs::RecipeRunner* plates, jobs::ScanRunner* scan, jobs::PatternRunner* const patterns[2], dev::TuningRunner* tuning,
+    void watchRunners(dev::jobs::RecipeRunner* plates, dev::jobs::ScanRunner* scan, dev::jobs::PatternRunner* const patterns[2], dev::TuningRunner* tuning,
                       ui::CalibrationScreen* calibration);
     /// How the window asks "take control back?"; empty: never asks (tests).
     void setAsk(std::function<bool(const QString& question)> ask) { m_ask = std::move(ask); }
 
-    api::ApiServer* server() const { return m_server.get(); }
+    app::api::ApiServer* server() const { return m_server.get(); }
     /// "" when listening (or no API was asked for), else why not, for a banner.
     QString startError() const { return m_startError; }
     ApiControlStrip* strip() const { return m_strip; }
@@ -83,7 +83,7 @@ private:
     QString blockedBy() const;
     void askTakeBack();
 
-    std::unique_ptr<api::ApiServer> m_server;
+    std::unique_ptr<app::api::ApiServer> m_server;
     QPointer<GatedInstrument> m_gated[2];
     ApiControlStrip* m_strip = nullptr;
     ApiPanel* m_panel = nullptr;

@@ -20,7 +20,7 @@
 namespace app {
 
 ui::CalibrationScreen* makeCalibrationScreen(InstrumentSession* const sessions[2], QWidget* window, ui::MessageBanner* banner,
-                                             tele::TelemetryHub* hub, const MainWindowOptions& options)
+                                             dev::tele::TelemetryHub* hub, const MainWindowOptions& options)
 {
     auto* screen = new ui::CalibrationScreen({sessions[0]->instrument(), sessions[1]->instrument()}, {sessions[0]->name(), sessions[1]->name()});
     screen->setFileChooser([window](ui::CalibrationScreen::FileAction a, const QString& title, const QString& filter) {
@@ -53,12 +53,12 @@ ui::CalibrationScreen* makeCalibrationScreen(InstrumentSession* const sessions[2
     // A circle is sampled from the instrument's measured X and Y; the history streams them
     // at 100 Hz, so for the run the hub is asked for the test's own rate (the union of every
     // consumer's wants is what the device sends), and the wish ends with the run.
-    QObject::connect(screen, &ui::CalibrationScreen::circleRunStarting, hub, [hub](jobs::CircleRunner* runner, int index) {
-        QVector<tele::ChannelKey> keys;
-        for (const proto::ChannelRef& ref : jobs::circleChannels(*runner))
-            keys.push_back(tele::ChannelKey{index, ref});
-        hub->setWanted(QStringLiteral("circular test"), keys, jobs::kCircleSampleRateHz);
-        QObject::connect(runner, &jobs::CircleRunner::finished, hub, [hub] { hub->setWanted(QStringLiteral("circular test"), {}, 0); });
+    QObject::connect(screen, &ui::CalibrationScreen::circleRunStarting, hub, [hub](dev::jobs::CircleRunner* runner, int index) {
+        QVector<dev::tele::ChannelKey> keys;
+        for (const dev::proto::ChannelRef& ref : dev::jobs::circleChannels(*runner))
+            keys.push_back(dev::tele::ChannelKey{index, ref});
+        hub->setWanted(QStringLiteral("circular test"), keys, dev::jobs::kCircleSampleRateHz);
+        QObject::connect(runner, &dev::jobs::CircleRunner::finished, hub, [hub] { hub->setWanted(QStringLiteral("circular test"), {}, 0); });
         QObject::connect(runner, &QObject::destroyed, hub, [hub] { hub->setWanted(QStringLiteral("circular test"), {}, 0); });
     });
     QObject::connect(screen, &ui::CalibrationScreen::problem, banner, [banner](const QString& m) { banner->show(ui::MessageBanner::Level::Warning, m); });

@@ -9,7 +9,7 @@ namespace ui {
 class CalibrationScreen;
 class MessageBanner;
 }
-namespace tele {
+namespace dev::tele {
 class TelemetryHub;
 }
 
@@ -19,6 +19,6 @@ class InstrumentSession;
 struct MainWindowOptions;
 
 ui::CalibrationScreen* makeCalibrationScreen(InstrumentSession* const sessions[2], QWidget* window, ui::MessageBanner* banner,
-                                             tele::TelemetryHub* hub, const MainWindowOptions& options);
+                                             dev::tele::TelemetryHub* hub, const MainWindowOptions& options);
 
 } // namespace app

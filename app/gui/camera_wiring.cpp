@@ -19,13 +19,13 @@ std::unique_ptr<dev::camera::Camera> makeCamera(const QString& source, Instrumen
         auto* link = session ? qobject_cast<dev::SimulatedLink*>(session->link()) : nullptr;
         if (!link || link->machine().axisCount() < 2)
             return std::nullopt;
-        const sim::SimMachine& m = link->machine();
+        const dev::sim::SimMachine& m = link->machine();
         return dev::camera::WorkPoint{m.workPointLogical(0), m.workPointLogical(1), m.timeUs()};
     };
-    msg::Message problem;
+    motion::msg::Message problem;
     auto camera = dev::camera::makeCamera(source.toStdString(), sim, &problem);
     if (!camera)
-        *error = words::text(problem);
+        *error = ui::words::text(problem);
     return camera;
 }
 

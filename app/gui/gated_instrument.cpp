@@ -27,7 +27,7 @@ bool GatedInstrument::allowed(const Callback& done)
     const QString holder = m_blockedBy ? m_blockedBy() : QString();
     if (holder.isEmpty())
         return true;
-    refuse(done, dev::RequestError::Kind::Invalid, msg::make("request.bench_held", {msg::verbatim("holder", holder.toStdString())}));
+    refuse(done, dev::RequestError::Kind::Invalid, motion::msg::make("request.bench_held", {motion::msg::verbatim("holder", holder.toStdString())}));
     // Asked once per refusal burst, from the event loop (never from inside a runner's call).
     if (m_ask && !m_askPending) {
         m_askPending = true;

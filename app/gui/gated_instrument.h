@@ -52,19 +52,19 @@ public:
     void readStatus(StatusCallback done) override { m_inner->readStatus(std::move(done)); }
     void dwell(double seconds, Callback done) override { m_inner->dwell(seconds, std::move(done)); }
     void pulseTrigger(double widthS, Callback done = {}) override;
-    void subscribe(const QVector<proto::ChannelRef>& channels, int rateHz, SubscribeCallback done = {}) override
+    void subscribe(const QVector<dev::proto::ChannelRef>& channels, int rateHz, SubscribeCallback done = {}) override
     {
         m_inner->subscribe(channels, rateHz, std::move(done));
     }
-    const QVector<proto::ChannelRef>& subscribedChannels() const override { return m_inner->subscribedChannels(); }
+    const QVector<dev::proto::ChannelRef>& subscribedChannels() const override { return m_inner->subscribedChannels(); }
     int subscribedRateHz() const override { return m_inner->subscribedRateHz(); }
-    double toAxisUnits(const proto::ChannelRef& channel, std::int32_t value) const override { return m_inner->toAxisUnits(channel, value); }
+    double toAxisUnits(const dev::proto::ChannelRef& channel, std::int32_t value) const override { return m_inner->toAxisUnits(channel, value); }
     dev::PathClient* paths() override { return m_inner->paths(); }
     dev::TuningClient* tuning() override { return m_inner->tuning(); }
     dev::CompensationClient* compensation() override { return m_inner->compensation(); }
 
 protected:
-    msg::Message missingReason(dev::Capability c) const override { return m_inner->whyNot(c); }
+    motion::msg::Message missingReason(dev::Capability c) const override { return m_inner->whyNot(c); }
 
 private:
     /// True when the request may go to the instrument; otherwise refuses it and asks.

@@ -7,7 +7,7 @@
 
 namespace app {
 
-InstrumentSession::InstrumentSession(proto::DeviceKind kind, const QString& name, QObject* parent)
+InstrumentSession::InstrumentSession(dev::proto::DeviceKind kind, const QString& name, QObject* parent)
     : QObject(parent), m_kind(kind), m_name(name), m_proxy(new dev::InstrumentProxy(this))
 {
 }

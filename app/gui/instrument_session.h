@@ -31,16 +31,16 @@ namespace app {
 class InstrumentSession : public QObject {
     Q_OBJECT
 public:
-    InstrumentSession(proto::DeviceKind kind, const QString& name, QObject* parent = nullptr);
+    InstrumentSession(dev::proto::DeviceKind kind, const QString& name, QObject* parent = nullptr);
     ~InstrumentSession() override;
 
     /// The one instrument of this session, whichever backend drives it.
     dev::Instrument* instrument() { return m_proxy; }
-    proto::DeviceKind kind() const { return m_kind; }
+    dev::proto::DeviceKind kind() const { return m_kind; }
     /// "Analyzer" or "Stage" in the language in force now (not the one at construction).
     QString name() const
     {
-        return m_kind == proto::DeviceKind::Stage ? QCoreApplication::translate("app::MainWindow", "Stage")
+        return m_kind == dev::proto::DeviceKind::Stage ? QCoreApplication::translate("app::MainWindow", "Stage")
                                                   : QCoreApplication::translate("app::MainWindow", "Analyzer");
     }
     ui::ConnectionChoice choice() const { return m_choice; }
@@ -66,7 +66,7 @@ private:
     void stopProbe();
     void dropSimulator();
 
-    proto::DeviceKind m_kind;
+    dev::proto::DeviceKind m_kind;
     QString m_name;
     dev::InstrumentProxy* m_proxy;
     QPointer<dev::BenchPilotClient> m_benchPilot;

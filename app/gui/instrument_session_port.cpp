@@ -16,9 +16,9 @@ namespace app {
 
 namespace {
 
-QString kindWord(proto::DeviceKind k)
+QString kindWord(dev::proto::DeviceKind k)
 {
-    return k == proto::DeviceKind::Stage ? InstrumentSession::tr("stage") : InstrumentSession::tr("analyzer");
+    return k == dev::proto::DeviceKind::Stage ? InstrumentSession::tr("stage") : InstrumentSession::tr("analyzer");
 }
 
 } // namespace
@@ -32,9 +32,9 @@ void InstrumentSession::stopProbe()
 
 dev::GrblClient* InstrumentSession::grblOn(dev::Transport* transport, const ui::ConnectionChoice& choice)
 {
-    files::MachineProfile profile = files::defaultProfile(m_kind);
+    dev::files::MachineProfile profile = dev::files::defaultProfile(m_kind);
     if (!choice.profile.isEmpty())
-        files::loadMachineProfileFile(choice.profile, &profile, nullptr);  // checked in connectPort()
+        dev::files::loadMachineProfileFile(choice.profile, &profile, nullptr);  // checked in connectPort()
     // A new backend per connection: the wiring may have changed with the profile.
     m_grbl = new dev::GrblClient(profile, choice.profile.isEmpty());
     m_grbl->rememberHomesIn(dev::GrblHomeMemory::defaultPath(), choice.port);
@@ -45,13 +45,13 @@ dev::GrblClient* InstrumentSession::grblOn(dev::Transport* transport, const ui::
 
 void InstrumentSession::connectPort(dev::Transport* transport, const ui::ConnectionChoice& choice)
 {
-    auto protocol = files::MachineProfile::Protocol::Auto;
+    auto protocol = dev::files::MachineProfile::Protocol::Auto;
     if (!choice.profile.isEmpty()) {
-        files::MachineProfile profile;
-        jsonio::Problems problems;
-        if (!files::loadMachineProfileFile(choice.profile, &profile, &problems)) {
+        dev::files::MachineProfile profile;
+        dev::files::json::Problems problems;
+        if (!dev::files::loadMachineProfileFile(choice.profile, &profile, &problems)) {
             emit connectFailed(tr("The machine profile does not load: %1")
-                                   .arg(words::fileProblems(problems, QFileInfo(choice.profile).fileName()).join(QLatin1Char('\n'))));
+                                   .arg(ui::words::fileProblems(problems, QFileInfo(choice.profile).fileName()).join(QLatin1Char('\n'))));
             return;
         }
         if (profile.instrument != m_kind) {
@@ -61,11 +61,11 @@ void InstrumentSession::connectPort(dev::Transport* transport, const ui::Connect
         }
         protocol = profile.protocol;
     }
-    if (protocol == files::MachineProfile::Protocol::BenchPilot) {
+    if (protocol == dev::files::MachineProfile::Protocol::BenchPilot) {
         benchPilotOn(transport)->connectLink();
         return;
     }
-    if (protocol == files::MachineProfile::Protocol::Grbl) {
+    if (protocol == dev::files::MachineProfile::Protocol::Grbl) {
         grblOn(transport, choice)->connectLink();
         return;
     }
@@ -93,7 +93,7 @@ void InstrumentSession::connectPort(dev::Transport* transport, const ui::Connect
             return;
         }
         case dev::ProbeResult::Protocol::None:
-            emit connectFailed(words::text(r.error));
+            emit connectFailed(ui::words::text(r.error));
             return;
         }
     });

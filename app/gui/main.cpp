@@ -30,7 +30,7 @@ namespace {
 /// Which instrument a port is, when nobody said: a BenchPilot device tells in its HELLO; a GRBL
 /// controller does not (the analyzer then, as the CLI takes it). Errors are the connection's to
 /// tell later; here they only leave the analyzer.
-proto::DeviceKind detectInstrument(const QString& port, qint32 baud)
+dev::proto::DeviceKind detectInstrument(const QString& port, qint32 baud)
 {
     dev::SerialTransport transport(port, baud);
     dev::ProtocolProbe probe(&transport);
@@ -43,11 +43,11 @@ proto::DeviceKind detectInstrument(const QString& port, qint32 baud)
     transport.close();
     const dev::ProbeResult& r = probe.result();
     if (r.protocol == dev::ProbeResult::Protocol::None)
-        std::fprintf(stderr, "benchpilot: %s\n", qPrintable(words::text(r.error)));
-    return r.kindKnown ? r.kind : proto::DeviceKind::Analyzer;
+        std::fprintf(stderr, "benchpilot: %s\n", qPrintable(ui::words::text(r.error)));
+    return r.kindKnown ? r.kind : dev::proto::DeviceKind::Analyzer;
 }
 
-int kindIndex(proto::DeviceKind k) { return k == proto::DeviceKind::Stage ? 1 : 0; }
+int kindIndex(dev::proto::DeviceKind k) { return k == dev::proto::DeviceKind::Stage ? 1 : 0; }
 
 } // namespace
 
@@ -98,7 +98,7 @@ int main(int argc, char** argv)
                               QApplication::translate("main", "screenshot: open this recipe on the Plates screen, home the analyzer and run it"),
                               QStringLiteral("file"));
     QCommandLineOption apiSocket(QStringLiteral("api-socket"),
-                                 QApplication::translate("main", "where the scripting API listens (default: %1)").arg(cli::defaultApiSocketPath()),
+                                 QApplication::translate("main", "where the scripting API listens (default: %1)").arg(app::cli::defaultApiSocketPath()),
                                  QStringLiteral("path"));
     QCommandLineOption noApi(QStringLiteral("no-api"), QApplication::translate("main", "do not start the scripting API"));
     QCommandLineOption apiWebSocket(QStringLiteral("api-websocket"),
@@ -151,7 +151,7 @@ int main(int argc, char** argv)
         return 1;
     }
     // Before any window exists, so the first texts are already in the language.
-    words::Translators translators;
+    ui::words::Translators translators;
     const QString language = p.isSet(lang) ? p.value(lang) : QSettings().value(QStringLiteral("language"), QStringLiteral("system")).toString();
     if (!translators.setLanguage(language) && p.isSet(lang)) {
         std::fprintf(stderr, "benchpilot: --lang '%s': no such language (system, en, zh_CN)\n", qPrintable(language));
@@ -184,11 +184,11 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "benchpilot: %s\ntry 'benchpilot --help'\n", qPrintable(m));
         return 1;
     };
-    auto kindOf = [](const QString& v) -> std::optional<proto::DeviceKind> {
+    auto kindOf = [](const QString& v) -> std::optional<dev::proto::DeviceKind> {
         if (v == QLatin1String("analyzer"))
-            return proto::DeviceKind::Analyzer;
+            return dev::proto::DeviceKind::Analyzer;
         if (v == QLatin1String("stage"))
-            return proto::DeviceKind::Stage;
+            return dev::proto::DeviceKind::Stage;
         return std::nullopt;
     };
     if ((p.isSet(instrument) || p.isSet(profile)) && !p.isSet(port))
@@ -206,16 +206,16 @@ int main(int argc, char** argv)
         const qint32 rate = p.value(baud).toInt(&ok);
         if (!ok || rate < 1200)
             return fail(QApplication::translate("main", "--baud needs a rate of at least 1200 (got '%1')").arg(p.value(baud)));
-        std::optional<proto::DeviceKind> k;
+        std::optional<dev::proto::DeviceKind> k;
         if (p.isSet(instrument) && !(k = kindOf(p.value(instrument))))
             return fail(QApplication::translate("main", "--instrument needs 'analyzer' or 'stage' (got '%1')").arg(p.value(instrument)));
-        const QString profileFile = p.isSet(profile) ? files::resolveMachineProfile(p.value(profile)) : QString();
+        const QString profileFile = p.isSet(profile) ? dev::files::resolveMachineProfile(p.value(profile)) : QString();
         if (p.isSet(profile)) {
-            files::MachineProfile mp;
-            jsonio::Problems problems;
-            if (!files::loadMachineProfileFile(profileFile, &mp, &problems))
+            dev::files::MachineProfile mp;
+            dev::files::json::Problems problems;
+            if (!dev::files::loadMachineProfileFile(profileFile, &mp, &problems))
                 return fail(QApplication::translate("main", "--profile: %1")
-                                .arg(words::fileProblems(problems, QFileInfo(profileFile).fileName()).join(QLatin1Char('\n'))));
+                                .arg(ui::words::fileProblems(problems, QFileInfo(profileFile).fileName()).join(QLatin1Char('\n'))));
             if (k && *k != mp.instrument)
                 return fail(QApplication::translate("main", "--profile is for the other instrument than --instrument names"));
             k = mp.instrument;
@@ -233,7 +233,7 @@ int main(int argc, char** argv)
         options.showInstrument = kindIndex(*k);
     }
     if (!p.isSet(noApi)) {
-        options.api.socketPath = p.isSet(apiSocket) ? p.value(apiSocket) : cli::defaultApiSocketPath();
+        options.api.socketPath = p.isSet(apiSocket) ? p.value(apiSocket) : app::cli::defaultApiSocketPath();
         if (p.isSet(apiWebSocket)) {
             bool ok = false;
             const uint wsPort = p.value(apiWebSocket).toUInt(&ok);

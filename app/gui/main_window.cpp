@@ -112,10 +112,10 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     m_longMoves = new LongMoveQuestion(this, m_options.answer);
     ui::InputPolicy::install();  // the wheel turns only a focused spin box or combo, on every screen
     static_assert(std::size(kSettingsKeys) == kInstrumentCount, "a settings group per instrument");
-    const proto::DeviceKind kinds[kInstrumentCount] = {proto::DeviceKind::Analyzer, proto::DeviceKind::Stage};
+    const dev::proto::DeviceKind kinds[kInstrumentCount] = {dev::proto::DeviceKind::Analyzer, dev::proto::DeviceKind::Stage};
     for (int i = 0; i < kInstrumentCount; ++i)
         m_instruments[i].session = new InstrumentSession(kinds[i], instrumentTitle(i), this);
-    m_hub = new tele::TelemetryHub(this);
+    m_hub = new dev::tele::TelemetryHub(this);
     // Every instrument's positions and following errors from connection on, shown or
     // not, so "what just happened?" can be answered on the Plots screen (docs/telemetry.md, "History").
     m_hub->enableHistory();
@@ -360,7 +360,7 @@ void MainWindow::wireApi(QDockWidget* logDock)
         m_banner->show(ui::MessageBanner::Level::Warning, m_api->startError());
     if (!m_api->server())
         return;
-    jobs::PatternRunner* const patterns[kInstrumentCount] = {m_motion->runner(0), m_motion->runner(1)};
+    dev::jobs::PatternRunner* const patterns[kInstrumentCount] = {m_motion->runner(0), m_motion->runner(1)};
     m_api->watchRunners(m_plates->runner(), m_scan->runner(), patterns, m_tuning->runner(), m_calibration);
     if (m_options.confirmDialogs)
         m_api->setAsk([this](const QString& q) {
@@ -463,7 +463,7 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
     });
     connect(bar, &ui::ConnectionBar::profileFileRequested, this, [this, bar] {
         // The profiles BenchPilot ships are where a first-time user looks for one.
-        const QString shipped = files::shippedMachinesDirectory();
+        const QString shipped = dev::files::shippedMachinesDirectory();
         const QString path = QFileDialog::getOpenFileName(this, tr("Machine profile"),
                                                           shipped.isEmpty() ? QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation) : shipped,
                                                           tr("Machine profiles (*.machine.json);;All files (*)"));
@@ -472,7 +472,7 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
     });
     connect(c, &dev::Instrument::stateChanged, bar, [bar] { bar->showActivity({}); });
     // A controller's own messages and the lines a backend did not understand: logged, never banners.
-    connect(c, &dev::Instrument::noted, this, [this, s](const msg::Message& m) { m_log->addNote(s->name(), tr("device"), words::text(m)); });
+    connect(c, &dev::Instrument::noted, this, [this, s](const motion::msg::Message& m) { m_log->addNote(s->name(), tr("device"), ui::words::text(m)); });
     // A controller that no longer trusts its position (GRBL's alarm after an E-stop or a reset in
     // motion): say so once, and what to do.
     connect(c, &dev::Instrument::statusChanged, this, [this, s, i](const dev::InstrumentStatus& st) {
@@ -487,7 +487,7 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
     auto showState = [this, i, c, bar] {
         const auto& id = c->identity();
         const QString who = c->state() == dev::LinkState::Ready || c->state() == dev::LinkState::Identified
-            ? QStringLiteral("%1 · %2 · %3").arg(words::modelName(id), id.firmware, c->linkDescription())
+            ? QStringLiteral("%1 · %2 · %3").arg(ui::words::modelName(id), id.firmware, c->linkDescription())
             : c->linkDescription();
         bar->showState(c->state(), who);
         updateStatusBar();
@@ -507,33 +507,33 @@ void MainWindow::wireSession(int i, ui::ConnectionBar* bar)
                 linkKey);
         if (st == dev::LinkState::Ready)
             m_banner->withdraw(linkKey);
-        m_log->addNote(s->kind(), "log.kind.link", msg::make("telemetry.link_state", {msg::term("state", dev::linkStateTerm(st))}),
+        m_log->addNote(s->kind(), "log.kind.link", motion::msg::make("telemetry.link_state", {motion::msg::term("state", dev::linkStateTerm(st))}),
                        st == dev::LinkState::Lost);
     });
     connect(c, &dev::Instrument::statusChanged, this, [this] { updateEStopUi(); });
-    connect(c, &dev::Instrument::linkError, this, [this, s, linkKey](const msg::Message& m) {
-        m_banner->show(ui::MessageBanner::Level::Error, [s, m] { return QStringLiteral("%1: %2").arg(s->name(), words::text(m)); }, linkKey);
+    connect(c, &dev::Instrument::linkError, this, [this, s, linkKey](const motion::msg::Message& m) {
+        m_banner->show(ui::MessageBanner::Level::Error, [s, m] { return QStringLiteral("%1: %2").arg(s->name(), ui::words::text(m)); }, linkKey);
         m_log->addNote(s->kind(), "log.kind.link_error", m, true);
     });
     connect(c, &dev::Instrument::requestFailed, this, [this, s, linkKey](const dev::RequestError& e) {
         // A request the operator's own Disconnect cut short is what they asked for: logged, no alarm.
-        const msg::Arg* cause = e.message.id == "request.abandoned" ? e.message.arg("cause") : nullptr;
-        const auto* inner = cause ? std::get_if<std::shared_ptr<const msg::Message>>(&cause->value) : nullptr;
+        const motion::msg::Arg* cause = e.message.id == "request.abandoned" ? e.message.arg("cause") : nullptr;
+        const auto* inner = cause ? std::get_if<std::shared_ptr<const motion::msg::Message>>(&cause->value) : nullptr;
         if (inner && *inner && (*inner)->id == "link.disconnected") {
             m_log->addNote(s->kind(), "log.kind.refused", e.message, false);
             return;
         }
         // Refused because the E-stop was latched: a fact that ends with the reset, as the E-stop's own message does.
-        const bool latched = e.kind == dev::RequestError::Kind::Device && e.code == proto::ErrorCode::EStopActive;
+        const bool latched = e.kind == dev::RequestError::Kind::Device && e.code == dev::proto::ErrorCode::EStopActive;
         const QString key = latched ? QStringLiteral("estop") : e.kind == dev::RequestError::Kind::LinkDown ? linkKey : QString();
         m_banner->show(
-            ui::MessageBanner::Level::Error, [s, why = e.message] { return QStringLiteral("%1: %2").arg(s->name(), words::text(why)); }, key);
+            ui::MessageBanner::Level::Error, [s, why = e.message] { return QStringLiteral("%1: %2").arg(s->name(), ui::words::text(why)); }, key);
         m_log->addNote(s->kind(), "log.kind.refused", e.message, true);
     });
     connect(c, &dev::Instrument::eventReceived, this, [this, s, c](const dev::DeviceEvent& e) {
         m_log->addEvent(s->kind(), c->identity(), e);
-        if (e.kind == proto::EventKind::LimitHit || e.kind == proto::EventKind::Fault || e.kind == proto::EventKind::LostSteps)
-            m_banner->show(ui::MessageBanner::Level::Warning, [s, e] { return QStringLiteral("%1: %2").arg(s->name(), words::eventDetail(e)); });
+        if (e.kind == dev::proto::EventKind::LimitHit || e.kind == dev::proto::EventKind::Fault || e.kind == dev::proto::EventKind::LostSteps)
+            m_banner->show(ui::MessageBanner::Level::Warning, [s, e] { return QStringLiteral("%1: %2").arg(s->name(), ui::words::eventDetail(e)); });
     });
     showState();
 }
@@ -543,13 +543,13 @@ void MainWindow::updateStatusBar()
     for (auto& slot : m_instruments) {
         dev::Instrument* c = slot.session->instrument();
         const dev::LinkStats st = c->stats();
-        QString text = QStringLiteral("%1: %2").arg(slot.session->name(), words::term(dev::linkStateTerm(c->state())));
+        QString text = QStringLiteral("%1: %2").arg(slot.session->name(), ui::words::term(dev::linkStateTerm(c->state())));
         // "ready" while the E-stop is latched would contradict the red banner: the latch is the state.
         const bool latched = c->isReady() && c->status().estop;
         if (latched)
             text = tr("%1: E-STOP latched — press Reset E-stop to clear").arg(slot.session->name());
         if (c->state() == dev::LinkState::Ready)
-            text += QStringLiteral(" · %1").arg(words::modelName(c->identity()));
+            text += QStringLiteral(" · %1").arg(ui::words::modelName(c->identity()));
         const quint64 bad = st.crcErrors + st.malformed + st.oversize;
         if (bad || st.droppedBytes)
             text += tr(" · %1 bad frames, %2 bytes skipped").arg(bad).arg(st.droppedBytes);
@@ -789,7 +789,7 @@ QStringList MainWindow::runningJobs(int index) const
         out << tr("a plate run");
     if (index == 1) {
         const auto st = m_scan->runner()->state();
-        if (st == jobs::ScanRunner::State::Running || st == jobs::ScanRunner::State::Pausing || st == jobs::ScanRunner::State::Paused)
+        if (st == dev::jobs::ScanRunner::State::Running || st == dev::jobs::ScanRunner::State::Pausing || st == dev::jobs::ScanRunner::State::Paused)
             out << tr("a scan");
         if (m_tuning->runner()->busy())
             out << tr("a tuning test");

@@ -20,7 +20,7 @@ class QStackedWidget;
 class QTabWidget;
 class QLabel;
 
-namespace tele {
+namespace dev::tele {
 class TelemetryHub;
 }
 
@@ -37,7 +37,7 @@ class ScanScreen;
 class CalibrationScreen;
 } // namespace ui
 
-namespace words {
+namespace ui::words {
 class Translators;
 }
 class QActionGroup;
@@ -62,7 +62,7 @@ struct MainWindowOptions {
     ApiOptions api;               ///< the scripting API (docs/api.md); no socket path: none
     /// The program's translators (main.cpp owns them); the Language menu switches
     /// them. nullptr: the window has no Language menu (tests that do not switch).
-    words::Translators* translators = nullptr;
+    ui::words::Translators* translators = nullptr;
     /// Makes the GUI's camera from a source string; unset: camera_wiring.h's. Tests give a fake.
     std::function<std::unique_ptr<dev::camera::Camera>(const QString& source, QString* error)> cameraFactory;
 };
@@ -90,7 +90,7 @@ public:
     ui::CameraSession* cameraSession() { return m_camera; }
     ui::CameraPanel* jogCameraPanel() { return m_jogCamera; }
     ui::CalibrationScreen* calibrationScreen() { return m_calibration; }
-    tele::TelemetryHub* telemetry() { return m_hub; }
+    dev::tele::TelemetryHub* telemetry() { return m_hub; }
     ui::MessageBanner* banner() { return m_banner; }
     ui::EventLog* eventLog() { return m_log; }
     QPushButton* estopButton() { return m_estop; }
@@ -150,7 +150,7 @@ private:
     LongMoveQuestion* m_longMoves;  ///< the long-move question, waivable for this session only
     std::array<InstrumentSlot, kInstrumentCount> m_instruments;
     ApiWiring* m_api;
-    tele::TelemetryHub* m_hub;  ///< every instrument's telemetry, for the plots
+    dev::tele::TelemetryHub* m_hub;  ///< every instrument's telemetry, for the plots
     ui::PlotsScreen* m_plots;
     ui::TuningScreen* m_tuning;
     ui::PlatesScreen* m_plates;

@@ -15,7 +15,7 @@ namespace {
 const char* kKeys[2] = {"analyzer", "stage"};
 }
 
-MotionScreens::MotionScreens(InstrumentSession* const sessions[2], tele::TelemetryHub* hub, const Hooks& hooks, QObject* parent)
+MotionScreens::MotionScreens(InstrumentSession* const sessions[2], dev::tele::TelemetryHub* hub, const Hooks& hooks, QObject* parent)
     : QObject(parent)
 {
     m_joyTabs = new QTabWidget;
@@ -26,7 +26,7 @@ MotionScreens::MotionScreens(InstrumentSession* const sessions[2], tele::Telemet
         if (hooks.warn)
             connect(m_joystick[i], &ui::JoystickScreen::problem, this, hooks.warn);
         m_joyTabs->addTab(m_joystick[i], sessions[i]->name());
-        m_runners[i] = new jobs::PatternRunner(c, this);
+        m_runners[i] = new dev::jobs::PatternRunner(c, this);
         instruments.push_back({sessions[i]->name(), c, m_runners[i], i});
     }
     connect(m_joyTabs, &QTabWidget::currentChanged, this, [this](int i) { m_joystick[i]->setFocus(); });
@@ -69,7 +69,7 @@ void MotionScreens::load(QSettings& st)
     // The last pattern as its file text: a pattern that no longer reads is simply not restored.
     const QString text = st.value(QStringLiteral("patterns/last")).toString();
     if (!text.isEmpty())
-        if (auto r = files::parsePattern(text.toStdString()); r.pattern)
+        if (auto r = dev::files::parsePattern(text.toStdString()); r.pattern)
             m_patterns->setPattern(*r.pattern);
     m_patterns->setInstrument(std::clamp(st.value(QStringLiteral("patterns/instrument"), 1).toInt(), 0, 1));
 }
@@ -84,7 +84,7 @@ void MotionScreens::save(QSettings& st) const
         st.setValue(QStringLiteral("expo"), s.shaping.expo);
         st.endGroup();
     }
-    st.setValue(QStringLiteral("patterns/last"), QString::fromStdString(files::writePattern(m_patterns->pattern())));
+    st.setValue(QStringLiteral("patterns/last"), QString::fromStdString(dev::files::writePattern(m_patterns->pattern())));
     st.setValue(QStringLiteral("patterns/instrument"), m_patterns->instrument());
 }
 

@@ -13,10 +13,10 @@ class QWidget;
 namespace dev {
 class Instrument;
 }
-namespace jobs {
+namespace dev::jobs {
 class PatternRunner;
 }
-namespace tele {
+namespace dev::tele {
 class TelemetryHub;
 }
 namespace ui {
@@ -40,13 +40,13 @@ public:
         std::function<dev::Instrument*(int index)> instrument;
     };
 
-    MotionScreens(InstrumentSession* const sessions[2], tele::TelemetryHub* hub, const Hooks& hooks, QObject* parent = nullptr);
+    MotionScreens(InstrumentSession* const sessions[2], dev::tele::TelemetryHub* hub, const Hooks& hooks, QObject* parent = nullptr);
     ~MotionScreens() override;
 
     QTabWidget* joystickTabs() const { return m_joyTabs; }
     ui::JoystickScreen* joystick(int instrument) const { return m_joystick[instrument]; }
     ui::PatternScreen* patterns() const { return m_patterns; }
-    jobs::PatternRunner* runner(int instrument) const { return m_runners[instrument]; }
+    dev::jobs::PatternRunner* runner(int instrument) const { return m_runners[instrument]; }
     void showInstrument(int index);
     /// E-stop: the sticks let go at once (the device stops everything anyway).
     void stopSticks();
@@ -56,7 +56,7 @@ public:
 private:
     QTabWidget* m_joyTabs;
     ui::JoystickScreen* m_joystick[2];
-    jobs::PatternRunner* m_runners[2];
+    dev::jobs::PatternRunner* m_runners[2];
     ui::PatternScreen* m_patterns;
 };
 

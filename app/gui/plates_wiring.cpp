@@ -16,22 +16,22 @@
 namespace app {
 
 namespace {
-jobs::InterruptedChoice askAboutInterrupted(QWidget* window, const jobs::InterruptedOp& op)
+dev::jobs::InterruptedChoice askAboutInterrupted(QWidget* window, const dev::jobs::InterruptedOp& op)
 {
     QMessageBox box(QMessageBox::Warning, QObject::tr("A well was interrupted"),
                     QObject::tr("The run stopped during \"%1\", after its plunger move had been sent.\n\n%2.\n\n"
                                 "Skip counts the well as done; Do again repeats it in full.")
-                        .arg(words::text(op.label), words::sentence(words::text(op.evidence))),
+                        .arg(ui::words::text(op.label), ui::words::sentence(ui::words::text(op.evidence))),
                     QMessageBox::NoButton, window);
     auto* skip = box.addButton(QObject::tr("Skip"), QMessageBox::AcceptRole);
     auto* redo = box.addButton(QObject::tr("Do again"), QMessageBox::DestructiveRole);
     box.addButton(QMessageBox::Cancel);
     box.exec();
     if (box.clickedButton() == skip)
-        return jobs::InterruptedChoice::Skip;
+        return dev::jobs::InterruptedChoice::Skip;
     if (box.clickedButton() == redo)
-        return jobs::InterruptedChoice::Redo;
-    return jobs::InterruptedChoice::Cancel;
+        return dev::jobs::InterruptedChoice::Redo;
+    return dev::jobs::InterruptedChoice::Cancel;
 }
 } // namespace
 
@@ -48,13 +48,13 @@ void wirePlatesScreen(ui::PlatesScreen* screen, QWidget* window, const MainWindo
                 == QMessageBox::Yes;
         });
         // Asked only from the Resume buttons (never from a device signal).
-        screen->setInterruptedDecider([window](const jobs::InterruptedOp& op) { return askAboutInterrupted(window, op); });
+        screen->setInterruptedDecider([window](const dev::jobs::InterruptedOp& op) { return askAboutInterrupted(window, op); });
     }
     if (!options.persistSettings)
         return;
     // The same places as benchpilot-cli's defaults: both see one calibration.
-    screen->setRunLogDirectory(platefiles::defaultRunLogDirectory());
-    screen->setCalibrationFile(platefiles::defaultCalibrationPath());
+    screen->setRunLogDirectory(dev::files::plates::defaultRunLogDirectory());
+    screen->setCalibrationFile(dev::files::plates::defaultCalibrationPath());
     const QString last = QSettings().value(QStringLiteral("plates/recipe")).toString();
     if (!last.isEmpty() && QFileInfo::exists(last))
         screen->openRecipe(last);

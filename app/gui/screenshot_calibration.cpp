@@ -53,7 +53,7 @@ bool showCalibrationAtWork(MainWindow& w, const QString& scratchFolder)
     screen->form()->setTest(t);
     screen->setSource(QStringLiteral("gauge"), QStringLiteral("sim"));
     screen->setOutputFolder(QDir(scratchFolder).filePath(QStringLiteral("accuracy")));
-    auto finished = [&] { return screen->runner() && screen->runner()->state() == jobs::AccuracyRunner::State::Finished; };
+    auto finished = [&] { return screen->runner() && screen->runner()->state() == dev::jobs::AccuracyRunner::State::Finished; };
     if (!screen->run() || !runUntil(finished, 120000))
         return false;
     // The fit of those readings to the stage, enabled, and the same test again.

@@ -5,9 +5,9 @@
 #include <QJsonObject>
 #include <QSaveFile>
 
-namespace simapp {
+namespace app::sim {
 
-bool writeJournal(const sim::Firmware& firmware, const QString& path, QString* error)
+bool writeJournal(const dev::sim::Firmware& firmware, const QString& path, QString* error)
 {
     QSaveFile f(path);
     if (!f.open(QIODevice::WriteOnly)) {
@@ -44,4 +44,4 @@ bool writeJournal(const sim::Firmware& firmware, const QString& path, QString* e
     return true;
 }
 
-} // namespace simapp
+} // namespace app::sim

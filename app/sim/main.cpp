@@ -114,10 +114,10 @@ int main(int argc, char** argv)
     if (p.isSet(journal) && proto != QLatin1String("benchpilot"))
         return fail(QCoreApplication::translate("sim", "--journal records the benchpilot protocol's requests only"));
 
-    const sim::MachineConfig machine = kind == QLatin1String("stage") ? sim::stageConfig() : sim::analyzerConfig();
+    const dev::sim::MachineConfig machine = kind == QLatin1String("stage") ? dev::sim::stageConfig() : dev::sim::analyzerConfig();
     const QString gaugeLink = p.value(gaugePath);
     int gaugeAxisIndex = -1;
-    sim::GaugeConfig gaugeConfig;
+    dev::sim::GaugeConfig gaugeConfig;
     if (!gaugeLink.isEmpty()) {
         const QString letter = p.value(gaugeAxis).trimmed().toUpper();
         for (std::size_t i = 0; i < machine.axes.size(); ++i)
@@ -148,21 +148,21 @@ int main(int argc, char** argv)
     const QString link = p.value(ptyPath);
     if (const QString why = claimLink(link); !why.isEmpty())
         return fail(why);
-    simapp::PtyTransport pty;
+    app::sim::PtyTransport pty;
     if (!pty.create())
         return fail(pty.error());
     if (::symlink(qPrintable(pty.slavePath()), qPrintable(link)) != 0)
         return fail(QCoreApplication::translate("sim", "cannot create symlink %1: %2").arg(link, QString::fromLocal8Bit(strerror(errno))));
 
     std::unique_ptr<dev::SimulatorHost> host;
-    const sim::GrblFirmware* grbl = nullptr;
-    sim::SimMachine* simMachine = nullptr;
+    const dev::sim::GrblFirmware* grbl = nullptr;
+    dev::sim::SimMachine* simMachine = nullptr;
     if (proto == QLatin1String("benchpilot")) {
         host = std::make_unique<dev::SimulatorHost>(machine, baudRate, &pty);
         simMachine = &host->firmware().machine();
     } else {
-        auto fw = std::make_unique<sim::GrblFirmware>(machine, proto == QLatin1String("grbl") ? sim::GrblFirmware::Dialect::Grbl
-                                                                                               : sim::GrblFirmware::Dialect::GrblHal);
+        auto fw = std::make_unique<dev::sim::GrblFirmware>(machine, proto == QLatin1String("grbl") ? dev::sim::GrblFirmware::Dialect::Grbl
+                                                                                               : dev::sim::GrblFirmware::Dialect::GrblHal);
         if (p.isSet(noHoming)) {
             fw->settings().write(22, 0);
             fw->restart();  // powered up so: Idle, no homing lock
@@ -177,7 +177,7 @@ int main(int argc, char** argv)
     host->start();
 
     // The gauge: a second pty whose device end answers from the same machine.
-    simapp::PtyTransport gaugePty;
+    app::sim::PtyTransport gaugePty;
     std::unique_ptr<dev::SimulatorHost> gaugeHost;
     if (!gaugeLink.isEmpty()) {
         if (const QString why = claimLink(gaugeLink); !why.isEmpty())
@@ -188,7 +188,7 @@ int main(int argc, char** argv)
             return fail(QCoreApplication::translate("sim", "cannot create symlink %1: %2")
                             .arg(gaugeLink, QString::fromLocal8Bit(strerror(errno))));
         gaugeHost = std::make_unique<dev::SimulatorHost>(
-            std::make_unique<sim::SimGauge>([simMachine, gaugeAxisIndex] { return simMachine->workPointLogical(gaugeAxisIndex); },
+            std::make_unique<dev::sim::SimGauge>([simMachine, gaugeAxisIndex] { return simMachine->workPointLogical(gaugeAxisIndex); },
                                             gaugeConfig),
             &gaugePty);
         gaugeHost->setManualClock(true);  // it answers when asked; nothing to run between requests
@@ -219,7 +219,7 @@ int main(int argc, char** argv)
     }
     if (p.isSet(journal)) {
         QString why;
-        if (!simapp::writeJournal(host->firmware(), p.value(journal), &why))
+        if (!app::sim::writeJournal(host->firmware(), p.value(journal), &why))
             std::fprintf(stderr, "benchpilot-sim: cannot write the journal %s: %s\n", qPrintable(p.value(journal)), qPrintable(why));
     }
     ::unlink(qPrintable(link));

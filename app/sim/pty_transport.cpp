@@ -8,7 +8,7 @@
 #include <termios.h>
 #include <unistd.h>
 
-namespace simapp {
+namespace app::sim {
 namespace {
 // A host that stops reading must not make the simulator grow without bound:
 // beyond this, the oldest unsent bytes are dropped (the host sees a sample gap).
@@ -56,7 +56,7 @@ void PtyTransport::open()
         if (m_master >= 0)
             emit opened();
         else
-            emit failed(msg::make("link.cannot_open", {msg::verbatim("port", "pty"), msg::verbatim("detail", m_error.toStdString())}));
+            emit failed(motion::msg::make("link.cannot_open", {motion::msg::verbatim("port", "pty"), motion::msg::verbatim("detail", m_error.toStdString())}));
     });
 }
 
@@ -108,4 +108,4 @@ void PtyTransport::flushPending()
         m_writeNotifier->setEnabled(!m_pending.isEmpty());
 }
 
-} // namespace simapp
+} // namespace app::sim

@@ -6,7 +6,7 @@
 
 #include <QSocketNotifier>
 
-namespace simapp {
+namespace app::sim {
 
 class PtyTransport final : public dev::Transport {
     Q_OBJECT
@@ -37,4 +37,4 @@ private:
     QByteArray m_pending;       ///< bytes the kernel buffer could not take yet; bounded below
 };
 
-} // namespace simapp
+} // namespace app::sim

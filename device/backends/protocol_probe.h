@@ -31,12 +31,12 @@ struct ProbeResult {
     enum class Protocol { None, BenchPilot, Grbl };
     Protocol protocol = Protocol::None;
     bool kindKnown = false;                            ///< a HELLO said which instrument
-    proto::DeviceKind kind = proto::DeviceKind::Analyzer;
+    dev::proto::DeviceKind kind = dev::proto::DeviceKind::Analyzer;
     /// What answered (grbl.probe.found_grbl{firmware, version}, grbl.probe.found_grbl_unnamed,
-    /// grbl.probe.found_benchpilot{version, instrument}); words::text words it.
-    msg::Message found;
+    /// grbl.probe.found_benchpilot{version, instrument}); ui::words::text words it.
+    motion::msg::Message found;
     /// When protocol is None: why (grbl.probe.no_answer, grbl.probe.unreadable, link.*).
-    msg::Message error;
+    motion::msg::Message error;
     /// GRBL's start-up banner came while probing: the controller restarted since the port was
     /// opened (GrblClient::setRestartHeardBeforeConnect).
     bool grblBanner = false;
@@ -83,8 +83,8 @@ private:
     QList<QMetaObject::Connection> m_connections;
     QTimer m_timer;
     QElapsedTimer m_clock;
-    grbl::LineReader m_lines;
-    proto::FrameDecoder m_frames;
+    dev::grbl::LineReader m_lines;
+    dev::proto::FrameDecoder m_frames;
     std::uint16_t m_helloSeq = 0;
     qint64 m_lastQueryMs = 0, m_lastHelloMs = -1;
     quint64 m_bytes = 0;

@@ -75,7 +75,7 @@ signals:
     void closed();
     void liveFrame(const dev::camera::Frame& frame);
     void captured(std::uint64_t requestId, const dev::camera::Frame& frame);
-    void failed(std::uint64_t requestId, const msg::Problem& problem);  ///< requestId 0: not a capture (open, live)
+    void failed(std::uint64_t requestId, const motion::msg::Problem& problem);  ///< requestId 0: not a capture (open, live)
 };
 
 } // namespace dev::camera

@@ -6,7 +6,7 @@ namespace {
 bool startsWith(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
 } // namespace
 
-bool parseSource(const std::string& text, SourceSpec* spec, msg::Message* error)
+bool parseSource(const std::string& text, SourceSpec* spec, motion::msg::Message* error)
 {
     struct Prefix {
         const char* word;
@@ -23,17 +23,17 @@ bool parseSource(const std::string& text, SourceSpec* spec, msg::Message* error)
             if (p.kind == SourceKind::Sim && !spec->argument.empty())
                 spec->kind = SourceKind::SimSocket;
             if (p.needsArgument && spec->argument.find_first_not_of(' ') == std::string::npos) {
-                *error = msg::make("camera.source.needs_argument", {msg::verbatim("source", text), msg::verbatim("kind", word)});
+                *error = motion::msg::make("camera.source.needs_argument", {motion::msg::verbatim("source", text), motion::msg::verbatim("kind", word)});
                 return false;
             }
             return true;
         }
     }
-    *error = msg::make("camera.source.unknown", {msg::verbatim("source", text)});
+    *error = motion::msg::make("camera.source.unknown", {motion::msg::verbatim("source", text)});
     return false;
 }
 
-std::unique_ptr<Camera> makeCamera(const std::string& text, const SimContext& sim, msg::Message* error, QObject* parent)
+std::unique_ptr<Camera> makeCamera(const std::string& text, const SimContext& sim, motion::msg::Message* error, QObject* parent)
 {
     SourceSpec spec;
     if (!parseSource(text, &spec, error))
@@ -41,7 +41,7 @@ std::unique_ptr<Camera> makeCamera(const std::string& text, const SimContext& si
     switch (spec.kind) {
     case SourceKind::Sim:
         if (!sim.workPoint) {
-            *error = msg::make("camera.sim.needs_simulator");
+            *error = motion::msg::make("camera.sim.needs_simulator");
             return nullptr;
         }
         return std::make_unique<SimCamera>(sim.workPoint, sim.settings, parent);
@@ -51,7 +51,7 @@ std::unique_ptr<Camera> makeCamera(const std::string& text, const SimContext& si
     case SourceKind::Folder:
         break;
     }
-    *error = msg::make("camera.source.not_available", {msg::verbatim("source", text)});
+    *error = motion::msg::make("camera.source.not_available", {motion::msg::verbatim("source", text)});
     return nullptr;
 }
 

@@ -23,7 +23,7 @@ struct SourceSpec {
 };
 
 /// Reads "sim", "uvc:Logitech", "command:…", "folder:…"; false with camera.source.* in `error`.
-bool parseSource(const std::string& text, SourceSpec* spec, msg::Message* error);
+bool parseSource(const std::string& text, SourceSpec* spec, motion::msg::Message* error);
 
 /// What a simulated camera needs from the place it runs: the stage's true work point.
 struct SimContext {
@@ -32,6 +32,6 @@ struct SimContext {
 };
 
 /// Makes the camera `text` names; nullptr with the reason.
-std::unique_ptr<Camera> makeCamera(const std::string& text, const SimContext& sim, msg::Message* error, QObject* parent = nullptr);
+std::unique_ptr<Camera> makeCamera(const std::string& text, const SimContext& sim, motion::msg::Message* error, QObject* parent = nullptr);
 
 } // namespace dev::camera

@@ -38,7 +38,7 @@ CameraGeometry geometryOfPlan(const motion::scan::ScanPlan& plan)
 }
 
 ScanCamera::ScanCamera(Camera* camera, QObject* parent)
-    : jobs::ScanTileCamera(parent), m_camera(camera), m_overheadS(kScanCameraFirstOverheadS)
+    : dev::jobs::ScanTileCamera(parent), m_camera(camera), m_overheadS(kScanCameraFirstOverheadS)
 {
     m_writer.setMaxThreadCount(1);
     m_clock.start();
@@ -52,10 +52,10 @@ ScanCamera::~ScanCamera() { m_writer.waitForDone(); }
 
 std::string ScanCamera::sourceName() const { return m_camera ? m_camera->source().toStdString() : std::string("?"); }
 
-bool ScanCamera::begin(const motion::scan::ScanPlan& plan, const std::string& folder, msg::Message* error)
+bool ScanCamera::begin(const motion::scan::ScanPlan& plan, const std::string& folder, motion::msg::Message* error)
 {
     if (!m_camera) {
-        *error = msg::make("camera.none");
+        *error = motion::msg::make("camera.none");
         return false;
     }
     m_geometry = geometryOfPlan(plan);
@@ -69,10 +69,10 @@ bool ScanCamera::begin(const motion::scan::ScanPlan& plan, const std::string& fo
     return true;
 }
 
-void ScanCamera::take(const jobs::TileShot& shot)
+void ScanCamera::take(const dev::jobs::TileShot& shot)
 {
     if (!m_camera) {
-        emit failed(shot.tile, msg::make("camera.none"));
+        emit failed(shot.tile, motion::msg::make("camera.none"));
         return;
     }
     CaptureRequest req;
@@ -88,7 +88,7 @@ void ScanCamera::take(const jobs::TileShot& shot)
     m_camera->capture(req);
 }
 
-void ScanCamera::onFailed(std::uint64_t id, const msg::Problem& problem)
+void ScanCamera::onFailed(std::uint64_t id, const motion::msg::Problem& problem)
 {
     const auto it = m_inFlight.find(id);
     if (it == m_inFlight.end())
@@ -111,11 +111,11 @@ void ScanCamera::onCaptured(std::uint64_t id, const Frame& captured)
     // A camera whose frames are not the plan's sensor would put every tile in the wrong place.
     if (std::abs(captured.width - m_geometry.sensorWidthPx) > kScanCameraSizeSlackPx
         || std::abs(captured.height - m_geometry.sensorHeightPx) > kScanCameraSizeSlackPx) {
-        emit failed(tile, msg::make("camera.sensor_mismatch", {msg::verbatim("camera", sourceName()),
-                                                               msg::integer("width", captured.width, msg::Unit::None),
-                                                               msg::integer("height", captured.height, msg::Unit::None),
-                                                               msg::integer("plan_width", m_geometry.sensorWidthPx, msg::Unit::None),
-                                                               msg::integer("plan_height", m_geometry.sensorHeightPx, msg::Unit::None)}));
+        emit failed(tile, motion::msg::make("camera.sensor_mismatch", {motion::msg::verbatim("camera", sourceName()),
+                                                               motion::msg::integer("width", captured.width, motion::msg::Unit::None),
+                                                               motion::msg::integer("height", captured.height, motion::msg::Unit::None),
+                                                               motion::msg::integer("plan_width", m_geometry.sensorWidthPx, motion::msg::Unit::None),
+                                                               motion::msg::integer("plan_height", m_geometry.sensorHeightPx, motion::msg::Unit::None)}));
         return;
     }
     // Counted before exposed(): the runner decides on it whether the run can finish.
@@ -135,13 +135,13 @@ void ScanCamera::onCaptured(std::uint64_t id, const Frame& captured)
     const std::optional<std::uint64_t> frameTime = captured.deviceTimeUs;
     m_writer.start([this, frame = std::move(frame), meta, path, file, tile, frameTime] {
         std::string sha;
-        msg::Message error;
+        motion::msg::Message error;
         const bool ok = writeTileTiff(path, frame, meta, &sha, &error);
         // Back on the runner's thread; the destructor waits for this task.
         QMetaObject::invokeMethod(this, [this, ok, sha, error, file, tile, frameTime] {
             --m_pending;
             if (ok)
-                emit written(tile, jobs::TileImage{file, sha, frameTime});
+                emit written(tile, dev::jobs::TileImage{file, sha, frameTime});
             else
                 emit failed(tile, error);
         }, Qt::QueuedConnection);

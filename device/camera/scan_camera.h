@@ -1,5 +1,5 @@
 #pragma once
-// A camera taking a scan's tiles (jobs::ScanTileCamera over any dev::camera::Camera): asks
+// A camera taking a scan's tiles (dev::jobs::ScanTileCamera over any dev::camera::Camera): asks
 // for the next frame started after the settle, with the plan's geometry; says when the
 // exposure is over; writes the TIFF on its own writer thread (one at a time, in the order
 // taken) while the stage moves on; hands back the file and its SHA-256.
@@ -19,14 +19,14 @@ namespace dev::camera {
 /// The geometry a plan's camera gives the source: sensor size, pixel at the sample, rotation, image_y.
 CameraGeometry geometryOfPlan(const motion::scan::ScanPlan& plan);
 
-class ScanCamera : public jobs::ScanTileCamera {
+class ScanCamera : public dev::jobs::ScanTileCamera {
     Q_OBJECT
 public:
     explicit ScanCamera(Camera* camera, QObject* parent = nullptr);
     ~ScanCamera() override;
 
-    bool begin(const motion::scan::ScanPlan& plan, const std::string& folder, msg::Message* error) override;
-    void take(const jobs::TileShot& shot) override;
+    bool begin(const motion::scan::ScanPlan& plan, const std::string& folder, motion::msg::Message* error) override;
+    void take(const dev::jobs::TileShot& shot) override;
     int pendingWrites() const override { return m_pending; }
     double overheadPerTileS() const override { return m_overheadS; }
     std::string sourceName() const override;
@@ -35,10 +35,10 @@ public:
 
 private:
     void onCaptured(std::uint64_t id, const Frame& frame);
-    void onFailed(std::uint64_t id, const msg::Problem& problem);
+    void onFailed(std::uint64_t id, const motion::msg::Problem& problem);
 
     struct InFlight {
-        jobs::TileShot shot;
+        dev::jobs::TileShot shot;
         qint64 askedMs = 0;
     };
 

@@ -29,7 +29,7 @@ SimCamera::SimCamera(WorkPointSource workPoint, const SimCameraSettings& setting
             return;
         const auto at = m_workPoint ? m_workPoint() : std::nullopt;
         if (!at) {
-            emit failed(0, msg::Problem("", msg::make("camera.sim.no_stage")));
+            emit failed(0, motion::msg::Problem("", motion::msg::make("camera.sim.no_stage")));
             return;
         }
         renderAsync(*at, m_settings.geometry, 0, true);
@@ -94,13 +94,13 @@ void SimCamera::setExposureMs(double ms) { m_settings.exposureMs = std::clamp(ms
 void SimCamera::capture(const CaptureRequest& request)
 {
     if (!m_open) {
-        emit failed(request.id, msg::Problem("", msg::make("camera.not_open", {msg::verbatim("source", source().toStdString())})));
+        emit failed(request.id, motion::msg::Problem("", motion::msg::make("camera.not_open", {motion::msg::verbatim("source", source().toStdString())})));
         return;
     }
     // The exposure starts now: the work point is where the stage is at this moment.
     const auto at = m_workPoint ? m_workPoint() : std::nullopt;
     if (!at) {
-        emit failed(request.id, msg::Problem("", msg::make("camera.sim.no_stage")));
+        emit failed(request.id, motion::msg::Problem("", motion::msg::make("camera.sim.no_stage")));
         return;
     }
     renderAsync(*at, request.geometry.value_or(m_settings.geometry), request.id, false);
@@ -135,7 +135,7 @@ void SimCamera::renderAsync(const WorkPoint& at, const CameraGeometry& geometry,
                 } else if (m_open) {
                     emit captured(requestId, f);
                 } else {
-                    emit failed(requestId, msg::Problem("", msg::make("camera.closed_during_capture", {msg::verbatim("source", source().toStdString())})));
+                    emit failed(requestId, motion::msg::Problem("", motion::msg::make("camera.closed_during_capture", {motion::msg::verbatim("source", source().toStdString())})));
                 }
             };
             if (leftMs > 0)

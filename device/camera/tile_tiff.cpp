@@ -39,9 +39,9 @@ void installTiffHandlers()
     });
 }
 
-msg::Message tiffProblem(const char* id, const std::string& path, const std::string& detail)
+motion::msg::Message tiffProblem(const char* id, const std::string& path, const std::string& detail)
 {
-    return msg::make(id, {msg::verbatim("file", path), msg::verbatim("detail", detail.empty() ? std::string("unknown") : detail)});
+    return motion::msg::make(id, {motion::msg::verbatim("file", path), motion::msg::verbatim("detail", detail.empty() ? std::string("unknown") : detail)});
 }
 
 bool syncFile(const std::string& path)
@@ -58,31 +58,31 @@ bool syncFile(const std::string& path)
 
 std::string tileDescription(const Frame& f, const TileMetadata& meta)
 {
-    jsonio::Value v = jsonio::schemaObject("benchpilot.tile", 1);
+    dev::files::json::Value v = dev::files::json::schemaObject("benchpilot.tile", 1);
     if (meta.tile >= 0)
-        v.set("tile", jsonio::Value(meta.tile));
+        v.set("tile", dev::files::json::Value(meta.tile));
     if (!meta.label.empty())
-        v.set("label", jsonio::Value(meta.label));
+        v.set("label", dev::files::json::Value(meta.label));
     if (meta.measuredMm.size() == 2) {
-        jsonio::Value xy = jsonio::Value::array();
+        dev::files::json::Value xy = dev::files::json::Value::array();
         xy.push(meta.measuredMm[0]);
         xy.push(meta.measuredMm[1]);
         v.set("measured_mm", xy);
     }
     if (meta.deviceTimeUs)
-        v.set("device_time_us", jsonio::Value(static_cast<double>(*meta.deviceTimeUs)));
-    v.set("exposure_ms", jsonio::Value(f.exposureMs));
+        v.set("device_time_us", dev::files::json::Value(static_cast<double>(*meta.deviceTimeUs)));
+    v.set("exposure_ms", dev::files::json::Value(f.exposureMs));
     if (f.gain > 0)
-        v.set("gain", jsonio::Value(f.gain));
+        v.set("gain", dev::files::json::Value(f.gain));
     if (f.pixelUm > 0)
-        v.set("pixel_um", jsonio::Value(f.pixelUm));
-    v.set("bit_depth", jsonio::Value(f.bitDepth));
+        v.set("pixel_um", dev::files::json::Value(f.pixelUm));
+    v.set("bit_depth", dev::files::json::Value(f.bitDepth));
     if (!meta.source.empty())
-        v.set("camera", jsonio::Value(meta.source));
-    return jsonio::write(v, false);
+        v.set("camera", dev::files::json::Value(meta.source));
+    return dev::files::json::write(v, false);
 }
 
-bool writeTileTiff(const std::string& path, const Frame& f, const TileMetadata& meta, std::string* sha256Hex, msg::Message* error)
+bool writeTileTiff(const std::string& path, const Frame& f, const TileMetadata& meta, std::string* sha256Hex, motion::msg::Message* error)
 {
     installTiffHandlers();
     if (f.isEmpty() || f.pixels.size() < static_cast<std::size_t>(f.width) * static_cast<std::size_t>(f.height) * static_cast<std::size_t>(bytesPerPixel(f.format))) {
@@ -162,7 +162,7 @@ std::optional<std::string> fileSha256(const std::string& path)
     return hash.result().toHex().toStdString();
 }
 
-bool readTiff(const std::string& path, Frame* frame, std::string* description, msg::Message* error)
+bool readTiff(const std::string& path, Frame* frame, std::string* description, motion::msg::Message* error)
 {
     installTiffHandlers();
     t_tiffError.clear();

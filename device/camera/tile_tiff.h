@@ -28,13 +28,13 @@ std::string tileDescription(const Frame& frame, const TileMetadata& meta);
 /// Writes `frame` to `path` (temporary name, then rename). On success `sha256Hex` holds the
 /// file's SHA-256 (lower-case hex) when given.
 bool writeTileTiff(const std::string& path, const Frame& frame, const TileMetadata& meta, std::string* sha256Hex,
-                   msg::Message* error);
+                   motion::msg::Message* error);
 
 /// The SHA-256 of a file, lower-case hex; nullopt when it cannot be read.
 std::optional<std::string> fileSha256(const std::string& path);
 
 /// Reads a TIFF this writer (or a camera) wrote, into a Frame (grey 8/16, RGB 8); the
 /// description, when asked. For tests, the resume check and the folder source.
-bool readTiff(const std::string& path, Frame* frame, std::string* description, msg::Message* error);
+bool readTiff(const std::string& path, Frame* frame, std::string* description, motion::msg::Message* error);
 
 } // namespace dev::camera

@@ -1,7 +1,7 @@
 #pragma once
 // What an instrument can do, the same words on every backend: screens, runners and
 // the CLI gate features on these, never on a protocol's bits or a backend's class.
-// When a capability is missing, the Instrument says why as a msg::Message
+// When a capability is missing, the Instrument says why as a motion::msg::Message
 // (Instrument::whyNot), which the GUI shows on the disabled control.
 #include "motion/message.h"
 

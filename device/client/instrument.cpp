@@ -12,37 +12,37 @@ Instrument::Instrument(QObject* parent) : QObject(parent)
 
 Instrument::~Instrument() = default;
 
-std::string instrumentTerm(proto::DeviceKind kind)
+std::string instrumentTerm(dev::proto::DeviceKind kind)
 {
-    return kind == proto::DeviceKind::Stage ? "instrument.stage" : "instrument.analyzer";
+    return kind == dev::proto::DeviceKind::Stage ? "instrument.stage" : "instrument.analyzer";
 }
 
-msg::Message Instrument::whyNot(Capability c) const
+motion::msg::Message Instrument::whyNot(Capability c) const
 {
     if (!isReady()) {
         // Before its first identification a backend does not know what it drives yet.
         if (identity().axes.isEmpty())
-            return msg::make(kNotConnectedId);
-        return msg::make(kNotConnectedId, {msg::term("instrument", instrumentTerm(identity().kind))});
+            return motion::msg::make(kNotConnectedId);
+        return motion::msg::make(kNotConnectedId, {motion::msg::term("instrument", instrumentTerm(identity().kind))});
     }
     if (capabilities().testFlag(c))
         return {};
     return missingReason(c);
 }
 
-msg::Message Instrument::missingReason(Capability c) const
+motion::msg::Message Instrument::missingReason(Capability c) const
 {
     const DeviceIdentity& id = identity();
-    return msg::make(missingId(c), {msg::term("instrument", instrumentTerm(id.kind)),
-                                    msg::verbatim("family", id.family.toStdString())});
+    return motion::msg::make(missingId(c), {motion::msg::term("instrument", instrumentTerm(id.kind)),
+                                    motion::msg::verbatim("family", id.family.toStdString())});
 }
 
 void Instrument::unlock(Callback done)
 {
-    refuse(done, RequestError::Kind::Invalid, msg::make("request.no_alarm_lock"));
+    refuse(done, RequestError::Kind::Invalid, motion::msg::make("request.no_alarm_lock"));
 }
 
-void Instrument::refuse(const Callback& done, RequestError::Kind kind, const msg::Message& message)
+void Instrument::refuse(const Callback& done, RequestError::Kind kind, const motion::msg::Message& message)
 {
     RequestError e;
     e.kind = kind;

@@ -19,7 +19,7 @@
 //    without it (GRBL) is kept only a short, bounded distance ahead.
 //  - status() is kept fresh by the backend (BenchPilot polls every 50 ms; GRBL polls `?`),
 //    statusChanged follows each update; readStatus() asks for one reading now.
-//  - Capabilities gate features; whyNot() says why one is unavailable, as a msg::Message.
+//  - Capabilities gate features; whyNot() says why one is unavailable, as a motion::msg::Message.
 //  - paths(), tuning() and compensation() are parts a backend may not have (nullptr). A backend's parts
 //    live as long as it does; an InstrumentProxy emits partsReplaced() when it switches to
 //    another backend, after which the pointers fetched before are gone: fetch them when a
@@ -44,7 +44,7 @@ class Instrument : public QObject {
 public:
     using Callback = std::function<void(const std::optional<RequestError>&)>;
     using StatusCallback = std::function<void(const std::optional<RequestError>&, const InstrumentStatus&)>;
-    using SubscribeCallback = std::function<void(const std::optional<RequestError>&, const proto::SubscribeReply&)>;
+    using SubscribeCallback = std::function<void(const std::optional<RequestError>&, const dev::proto::SubscribeReply&)>;
 
     explicit Instrument(QObject* parent = nullptr);
     ~Instrument() override;
@@ -67,7 +67,7 @@ public:
     bool can(Capability c) const { return isReady() && capabilities().testFlag(c); }
     /// Why `c` cannot be used now; an empty Message when it can. Not connected comes
     /// first (capability.not_connected); then the backend's reason (capability.no_<key>).
-    msg::Message whyNot(Capability c) const;
+    motion::msg::Message whyNot(Capability c) const;
 
     // ---- motion -------------------------------------------------------------------------
     /// 0 = every axis, in the device's order (the analyzer lifts Z first).
@@ -105,11 +105,11 @@ public:
 
     // ---- telemetry ----------------------------------------------------------------------
     /// Replaces the telemetry subscription; rate 0 stops it.
-    virtual void subscribe(const QVector<proto::ChannelRef>& channels, int rateHz, SubscribeCallback done = {}) = 0;
-    virtual const QVector<proto::ChannelRef>& subscribedChannels() const = 0;
+    virtual void subscribe(const QVector<dev::proto::ChannelRef>& channels, int rateHz, SubscribeCallback done = {}) = 0;
+    virtual const QVector<dev::proto::ChannelRef>& subscribedChannels() const = 0;
     virtual int subscribedRateHz() const = 0;
     /// Converts a telemetry value of a channel to axis units (mm, µL, per second, …).
-    virtual double toAxisUnits(const proto::ChannelRef& channel, std::int32_t value) const = 0;
+    virtual double toAxisUnits(const dev::proto::ChannelRef& channel, std::int32_t value) const = 0;
 
     // ---- parts a backend may not have ---------------------------------------------------
     virtual PathClient* paths() = 0;     ///< line/arc streaming; nullptr when the backend has none
@@ -124,14 +124,14 @@ signals:
     void statusChanged(const dev::InstrumentStatus& status);
     void limitsChanged();
     void eventReceived(const dev::DeviceEvent& event);
-    void telemetryReceived(const proto::TelemetryBatch& batch);
+    void telemetryReceived(const dev::proto::TelemetryBatch& batch);
     /// Something went wrong on the link or with a request; for a status bar or log.
-    void linkError(const msg::Message& message);
+    void linkError(const motion::msg::Message& message);
     void requestFailed(const dev::RequestError& error);
     void samplesLost(quint64 totalLost);
     /// Something worth a line in the event log that changes no state: a controller's own
     /// message ([MSG:…] on GRBL), a line the backend does not know (logged, never fatal).
-    void noted(const msg::Message& note);
+    void noted(const motion::msg::Message& note);
     /// paths(), tuning() and compensation() now return other objects (see the contract above).
     void partsReplaced();
 
@@ -139,13 +139,13 @@ protected:
     /// The backend's reason that the identified device lacks `c` (whyNot() has already
     /// ruled out a link that is not ready). The default names the capability, the
     /// instrument and its family; a backend adds a `because` where it knows one.
-    virtual msg::Message missingReason(Capability c) const;
+    virtual motion::msg::Message missingReason(Capability c) const;
     /// For backends: a refusal of `what` before anything is sent (bad axis, a missing
     /// capability), reported like a device's refusal.
-    void refuse(const Callback& done, RequestError::Kind kind, const msg::Message& message);
+    void refuse(const Callback& done, RequestError::Kind kind, const motion::msg::Message& message);
 };
 
 /// The term that names an instrument kind in messages: "instrument.analyzer", "instrument.stage".
-std::string instrumentTerm(proto::DeviceKind kind);
+std::string instrumentTerm(dev::proto::DeviceKind kind);
 
 } // namespace dev

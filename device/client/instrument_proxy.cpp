@@ -50,7 +50,7 @@ bool InstrumentProxy::noBackend(const Callback& done)
 {
     if (m_backend)
         return false;
-    refuse(done, RequestError::Kind::LinkDown, msg::make("request.instrument_not_connected"));
+    refuse(done, RequestError::Kind::LinkDown, motion::msg::make("request.instrument_not_connected"));
     return true;
 }
 
@@ -59,7 +59,7 @@ void InstrumentProxy::connectLink()
     if (m_backend)
         m_backend->connectLink();
     else
-        emit linkError(msg::make("link.no_connection_chosen"));
+        emit linkError(motion::msg::make("link.no_connection_chosen"));
 }
 
 void InstrumentProxy::disconnectLink()
@@ -76,7 +76,7 @@ const InstrumentStatus& InstrumentProxy::status() const { return m_backend ? m_b
 const QVector<SoftLimits>& InstrumentProxy::softLimits() const { return m_backend ? m_backend->softLimits() : m_noLimits; }
 Capabilities InstrumentProxy::capabilities() const { return m_backend ? m_backend->capabilities() : Capabilities{}; }
 
-msg::Message InstrumentProxy::missingReason(Capability c) const
+motion::msg::Message InstrumentProxy::missingReason(Capability c) const
 {
     // whyNot() has found the proxy ready, so the backend is, and its reason is its own.
     return m_backend ? m_backend->whyNot(c) : Instrument::missingReason(c);
@@ -187,7 +187,7 @@ void InstrumentProxy::pulseTrigger(double widthS, Callback done)
         m_backend->pulseTrigger(widthS, std::move(done));
 }
 
-void InstrumentProxy::subscribe(const QVector<proto::ChannelRef>& channels, int rateHz, SubscribeCallback done)
+void InstrumentProxy::subscribe(const QVector<dev::proto::ChannelRef>& channels, int rateHz, SubscribeCallback done)
 {
     if (m_backend)
         return m_backend->subscribe(channels, rateHz, std::move(done));
@@ -197,14 +197,14 @@ void InstrumentProxy::subscribe(const QVector<proto::ChannelRef>& channels, int 
     });
 }
 
-const QVector<proto::ChannelRef>& InstrumentProxy::subscribedChannels() const
+const QVector<dev::proto::ChannelRef>& InstrumentProxy::subscribedChannels() const
 {
     return m_backend ? m_backend->subscribedChannels() : m_noChannels;
 }
 
 int InstrumentProxy::subscribedRateHz() const { return m_backend ? m_backend->subscribedRateHz() : 0; }
 
-double InstrumentProxy::toAxisUnits(const proto::ChannelRef& channel, std::int32_t value) const
+double InstrumentProxy::toAxisUnits(const dev::proto::ChannelRef& channel, std::int32_t value) const
 {
     return m_backend ? m_backend->toAxisUnits(channel, value) : value;
 }

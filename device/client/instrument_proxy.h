@@ -64,16 +64,16 @@ public:
     void readStatus(StatusCallback done) override;
     void dwell(double seconds, Callback done) override;
     void pulseTrigger(double widthS, Callback done = {}) override;
-    void subscribe(const QVector<proto::ChannelRef>& channels, int rateHz, SubscribeCallback done = {}) override;
-    const QVector<proto::ChannelRef>& subscribedChannels() const override;
+    void subscribe(const QVector<dev::proto::ChannelRef>& channels, int rateHz, SubscribeCallback done = {}) override;
+    const QVector<dev::proto::ChannelRef>& subscribedChannels() const override;
     int subscribedRateHz() const override;
-    double toAxisUnits(const proto::ChannelRef& channel, std::int32_t value) const override;
+    double toAxisUnits(const dev::proto::ChannelRef& channel, std::int32_t value) const override;
     PathClient* paths() override;
     TuningClient* tuning() override;
     CompensationClient* compensation() override;
 
 protected:
-    msg::Message missingReason(Capability c) const override;
+    motion::msg::Message missingReason(Capability c) const override;
 
 private:
     /// Refuses a request for want of a backend; true when there is none.
@@ -85,7 +85,7 @@ private:
     DeviceIdentity m_noIdentity;
     InstrumentStatus m_noStatus;
     QVector<SoftLimits> m_noLimits;
-    QVector<proto::ChannelRef> m_noChannels;
+    QVector<dev::proto::ChannelRef> m_noChannels;
 };
 
 } // namespace dev

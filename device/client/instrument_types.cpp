@@ -14,11 +14,11 @@ const char* linkStateTerm(LinkState s)
     return "link.state.disconnected";
 }
 
-msg::Arg eventDetail(const DeviceEvent& e, const char* name)
+motion::msg::Arg eventDetail(const DeviceEvent& e, const char* name)
 {
     if (e.worded || !e.detail.empty())
-        return msg::nested(name, e.detail);
-    return msg::verbatim(name, e.text.toStdString());
+        return motion::msg::nested(name, e.detail);
+    return motion::msg::verbatim(name, e.text.toStdString());
 }
 
 const char* linkStateKey(LinkState s)
@@ -29,7 +29,7 @@ const char* linkStateKey(LinkState s)
 
 QString AxisDescriptor::unitName() const
 {
-    return unit == proto::AxisUnit::Microlitre ? QStringLiteral("µL") : QStringLiteral("mm");
+    return unit == dev::proto::AxisUnit::Microlitre ? QStringLiteral("µL") : QStringLiteral("mm");
 }
 
 int DeviceIdentity::axisIndex(QChar letter) const
@@ -42,7 +42,7 @@ int DeviceIdentity::axisIndex(QChar letter) const
 
 QString DeviceIdentity::kindName() const
 {
-    return kind == proto::DeviceKind::Stage ? QStringLiteral("stage") : QStringLiteral("analyzer");
+    return kind == dev::proto::DeviceKind::Stage ? QStringLiteral("stage") : QStringLiteral("analyzer");
 }
 
 bool InstrumentStatus::anyMoving() const

@@ -15,14 +15,14 @@
 namespace dev {
 
 enum class LinkState { Disconnected, Connecting, Identified, Ready, Lost };
-/// The state's term for people ("link.state.ready"; words::linkState words it).
+/// The state's term for people ("link.state.ready"; ui::words::linkState words it).
 const char* linkStateTerm(LinkState s);
 /// The state as a stable key for JSON ("ready", "lost", …): never translated.
 const char* linkStateKey(LinkState s);
 
 struct AxisDescriptor {
     QChar letter;
-    proto::AxisUnit unit = proto::AxisUnit::Millimetre;
+    dev::proto::AxisUnit unit = dev::proto::AxisUnit::Millimetre;
     double travelMin = 0, travelMax = 0;  ///< axis units
     double maxSpeed = 0;                  ///< axis units per second: the planner's velocity limit
     double resolution = 0;                ///< one count of the measuring system
@@ -34,12 +34,12 @@ struct AxisDescriptor {
     double defaultSpeed = 0;              ///< axis units per second: a move without a speed runs at this
     double minAccelTimeS = 0;             ///< seed 000 S-curve: the shortest acceleration phase
     /// Wire units (nm or nL) per axis unit.
-    double wireScale() const { return unit == proto::AxisUnit::Microlitre ? 1e3 : 1e6; }
+    double wireScale() const { return unit == dev::proto::AxisUnit::Microlitre ? 1e3 : 1e6; }
     QString unitName() const;             ///< "mm" or "µL"
 };
 
 struct DeviceIdentity {
-    proto::DeviceKind kind = proto::DeviceKind::Analyzer;
+    dev::proto::DeviceKind kind = dev::proto::DeviceKind::Analyzer;
     /// The firmware family and the protocol it speaks, as a person reads it:
     /// "BenchPilot protocol 1", "Grbl 1.1h", "grblHAL 1.1f".
     QString family;
@@ -51,15 +51,15 @@ struct DeviceIdentity {
     QVector<AxisDescriptor> axes;
     /// How the planner shapes a move; Unstated when the device gave no motion limits
     /// (a protocol 1.0 device): then the axes' maxAccel and friends are 0.
-    proto::MotionProfile motionProfile = proto::MotionProfile::Unstated;
+    dev::proto::MotionProfile motionProfile = dev::proto::MotionProfile::Unstated;
     std::uint32_t linkBaud = 0;
     std::uint32_t maxTelemetryRateHz = 0;
     int jogWatchdogMs = 0;                ///< a velocity jog not renewed is at rest this long after (0: the device has no watchdog)
     int axisIndex(QChar letter) const;
     /// "stage" or "analyzer": the key in JSON and logs, the same in every language.
-    /// People read words::term(dev::instrumentTerm(kind)).
+    /// People read ui::words::term(dev::instrumentTerm(kind)).
     QString kindName() const;
-    bool reportsMotionLimits() const { return motionProfile != proto::MotionProfile::Unstated; }
+    bool reportsMotionLimits() const { return motionProfile != dev::proto::MotionProfile::Unstated; }
 };
 
 struct AxisReadout {
@@ -85,18 +85,18 @@ struct SoftLimits {
 };
 
 struct DeviceEvent {
-    proto::EventKind kind = proto::EventKind::MotionDone;
+    dev::proto::EventKind kind = dev::proto::EventKind::MotionDone;
     int axis = -1;            ///< −1: the whole instrument
     double position = 0;      ///< axis units; for an instrument-wide event the number as sent (path events: the segment index)
     quint64 deviceTimeUs = 0;
     QString text;
     QDateTime hostTime;
-    msg::Message detail;      ///< structured form of `text` where the backend has one (GRBL: grbl.alarm{code})
+    motion::msg::Message detail;      ///< structured form of `text` where the backend has one (GRBL: grbl.alarm{code})
     bool worded = false;      ///< `detail` says all the device said, even when empty (its reason was one this host knows)
 };
 /// The event's detail as a message argument called `name`: its worded form, or the
 /// device's own text where the backend has none.
-msg::Arg eventDetail(const DeviceEvent& e, const char* name = "detail");
+motion::msg::Arg eventDetail(const DeviceEvent& e, const char* name = "detail");
 
 /// How the link has fared, for the status bar. A backend fills what applies to it
 /// (a line protocol has no CRC errors; the counters it cannot know stay 0).

@@ -22,20 +22,20 @@ namespace dev {
 
 /// The queue's state in host units, as the last answer reported it.
 struct PathQueueState {
-    proto::PathState state = proto::PathState::Idle;
+    dev::proto::PathState state = dev::proto::PathState::Idle;
     int capacity = 0;
     int freeSlots = 0;
     quint32 nextIndex = 0;         ///< the index the next append must start with
     quint32 executingIndex = 0;    ///< segment in progress; the ones before it are done
     double speedMmS = 0;
     int underruns = 0;
-    proto::PathReason reason = proto::PathReason::None;
+    dev::proto::PathReason reason = dev::proto::PathReason::None;
     double accelMmS2 = 0;
     double junctionDeviationMm = 0;
 };
-/// Terms for people (words::term): "path.state.running", "path.reason.host_silent", …
-const char* pathStateTerm(proto::PathState s);
-const char* pathReasonTerm(proto::PathReason r);
+/// Terms for people (ui::words::term): "path.state.running", "path.reason.host_silent", …
+const char* pathStateTerm(dev::proto::PathState s);
+const char* pathReasonTerm(dev::proto::PathReason r);
 
 class PathClient : public QObject {
     Q_OBJECT

@@ -14,13 +14,13 @@ namespace dev {
 struct RequestError {
     enum class Kind { Device, Timeout, LinkDown, Invalid };
     Kind kind = Kind::Device;
-    proto::ErrorCode code = proto::ErrorCode::BadPayload;  ///< for Kind::Device
+    dev::proto::ErrorCode code = dev::proto::ErrorCode::BadPayload;  ///< for Kind::Device
     int axis = -1;
     double value = 0;         ///< axis units where an axis is named, else as sent
-    msg::Message message;     ///< request.*, device.refused, link.*: worded by words::text (docs/wording.md)
+    motion::msg::Message message;     ///< request.*, device.refused, link.*: worded by ui::words::text (docs/wording.md)
 };
 
 } // namespace dev
 
 Q_DECLARE_METATYPE(dev::RequestError)
-Q_DECLARE_METATYPE(msg::Message)
+Q_DECLARE_METATYPE(motion::msg::Message)

@@ -85,7 +85,7 @@ public:
 
 signals:
     /// A test ended on the device (event TestEnded, TestTripped or TestAborted); text says how.
-    void testEnded(int axis, proto::EventKind kind, const QString& text);
+    void testEnded(int axis, dev::proto::EventKind kind, const QString& text);
     void gainsChanged(int axis, const QString& text);
 
 private:

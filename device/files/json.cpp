@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstring>
 
-namespace jsonio {
+namespace dev::files::json {
 
 Value Value::array()
 {
@@ -84,7 +84,7 @@ public:
     {
         ParseResult r;
         if (m_s.size() > kMaxTextBytes) {
-            r.error = {msg::make("file.json.too_large", {msg::integer("max", static_cast<long long>(kMaxTextBytes / (1024 * 1024)), msg::Unit::None)}), {}};
+            r.error = {motion::msg::make("file.json.too_large", {motion::msg::integer("max", static_cast<long long>(kMaxTextBytes / (1024 * 1024)), motion::msg::Unit::None)}), {}};
             return r;
         }
         if (m_s.size() >= 3 && std::memcmp(m_s.data(), "\xEF\xBB\xBF", 3) == 0)
@@ -95,7 +95,7 @@ public:
             return fail();
         skipSpace();
         if (m_i != m_s.size()) {
-            error(msg::make("file.json.text_after_end"));
+            error(motion::msg::make("file.json.text_after_end"));
             return fail();
         }
         r.value = std::move(v);
@@ -110,8 +110,8 @@ private:
         return r;
     }
 
-    bool error(msg::Message message) { return errorAt(std::move(message), here()); }
-    bool errorAt(msg::Message message, Position p)
+    bool error(motion::msg::Message message) { return errorAt(std::move(message), here()); }
+    bool errorAt(motion::msg::Message message, Position p)
     {
         if (!m_failed) {
             m_failed = true;
@@ -143,15 +143,15 @@ private:
     }
 
     /// What stood where something else was expected, as the `found` argument.
-    static msg::Arg describe(char c)
+    static motion::msg::Arg describe(char c)
     {
         if (c == '\0')
-            return msg::nested("found", msg::make("file.json.found_end"));
+            return motion::msg::nested("found", motion::msg::make("file.json.found_end"));
         if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F)
-            return msg::nested("found", msg::make("file.json.found_byte", {msg::verbatim("byte", "0x" + hex(static_cast<unsigned char>(c)))}));
-        return msg::nested("found", msg::make("file.json.found_char", {msg::verbatim("char", std::string(1, c))}));
+            return motion::msg::nested("found", motion::msg::make("file.json.found_byte", {motion::msg::verbatim("byte", "0x" + hex(static_cast<unsigned char>(c)))}));
+        return motion::msg::nested("found", motion::msg::make("file.json.found_char", {motion::msg::verbatim("char", std::string(1, c))}));
     }
-    static msg::Message expected(const char* id, char c) { return msg::make(id, {describe(c)}); }
+    static motion::msg::Message expected(const char* id, char c) { return motion::msg::make(id, {describe(c)}); }
     static std::string hex(unsigned v)
     {
         const char* d = "0123456789ABCDEF";
@@ -161,7 +161,7 @@ private:
     bool parseValue(Value& out, int depth)
     {
         if (depth > kMaxDepth)
-            return error(msg::make("file.json.too_deep", {msg::integer("max", kMaxDepth, msg::Unit::None)}));
+            return error(motion::msg::make("file.json.too_deep", {motion::msg::integer("max", kMaxDepth, motion::msg::Unit::None)}));
         const Position start = here();
         bool ok = false;
         switch (peek()) {
@@ -181,7 +181,7 @@ private:
             if (peek() == '-' || (peek() >= '0' && peek() <= '9'))
                 ok = parseNumber(out);
             else if (peek() == '/')
-                return error(msg::make("file.json.comment"));
+                return error(motion::msg::make("file.json.comment"));
             else
                 return error(expected("file.json.expected_value", peek()));
         }
@@ -207,7 +207,7 @@ private:
         if (peek() == '0') {
             ++m_i;
             if (peek() >= '0' && peek() <= '9')
-                return error(msg::make("file.json.leading_zero"));
+                return error(motion::msg::make("file.json.leading_zero"));
         } else if (peek() >= '1' && peek() <= '9') {
             while (peek() >= '0' && peek() <= '9')
                 ++m_i;
@@ -235,11 +235,11 @@ private:
         const auto [ptr, ec] = std::from_chars(m_s.data() + start, m_s.data() + m_i, v);
         if (ec == std::errc::result_out_of_range || !std::isfinite(v)) {
             m_i = start;
-            return error(msg::make("file.json.number_too_large"));
+            return error(motion::msg::make("file.json.number_too_large"));
         }
         if (ec != std::errc() || ptr != m_s.data() + m_i) {
             m_i = start;
-            return error(msg::make("file.json.malformed_number"));
+            return error(motion::msg::make("file.json.malformed_number"));
         }
         out = Value(v);
         return true;
@@ -258,7 +258,7 @@ private:
             else if (c >= 'A' && c <= 'F')
                 d = static_cast<unsigned>(c - 'A' + 10);
             else
-                return error(msg::make("file.json.bad_unicode_escape"));
+                return error(motion::msg::make("file.json.bad_unicode_escape"));
             out = out * 16 + d;
             ++m_i;
         }
@@ -298,18 +298,18 @@ private:
         } else if (b0 >= 0xF0 && b0 <= 0xF4) {
             n = 3; cp = b0 & 0x07u; min = 0x10000;
         } else {
-            return error(msg::make("file.json.invalid_utf8_byte", {msg::verbatim("byte", "0x" + hex(b0))}));
+            return error(motion::msg::make("file.json.invalid_utf8_byte", {motion::msg::verbatim("byte", "0x" + hex(b0))}));
         }
         if (m_i + static_cast<std::size_t>(n) >= m_s.size())
-            return error(msg::make("file.json.truncated_utf8"));
+            return error(motion::msg::make("file.json.truncated_utf8"));
         for (int k = 1; k <= n; ++k) {
             const auto b = static_cast<unsigned char>(m_s[m_i + static_cast<std::size_t>(k)]);
             if ((b & 0xC0) != 0x80)
-                return error(msg::make("file.json.invalid_utf8"));
+                return error(motion::msg::make("file.json.invalid_utf8"));
             cp = (cp << 6) | (b & 0x3Fu);
         }
         if (cp < min || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF))
-            return error(msg::make("file.json.invalid_utf8"));
+            return error(motion::msg::make("file.json.invalid_utf8"));
         s.append(m_s.data() + m_i, static_cast<std::size_t>(n) + 1);
         m_i += static_cast<std::size_t>(n) + 1;
         m_continuations += static_cast<std::size_t>(n);
@@ -321,14 +321,14 @@ private:
         ++m_i;  // opening quote
         for (;;) {
             if (atEnd())
-                return error(msg::make("file.json.unterminated_string"));
+                return error(motion::msg::make("file.json.unterminated_string"));
             const char c = m_s[m_i];
             if (c == '"') {
                 ++m_i;
                 return true;
             }
             if (static_cast<unsigned char>(c) < 0x20)
-                return error(msg::make(c == '\n' ? "file.json.line_break_in_string" : "file.json.control_character"));
+                return error(motion::msg::make(c == '\n' ? "file.json.line_break_in_string" : "file.json.control_character"));
             if (static_cast<unsigned char>(c) >= 0x80) {
                 if (!copyUtf8(out))
                     return false;
@@ -358,22 +358,22 @@ private:
                 if (cp >= 0xD800 && cp <= 0xDBFF) {
                     unsigned lo = 0;
                     if (peek() != '\\' || m_s.substr(m_i, 2) != "\\u")
-                        return error(msg::make("file.json.lone_high_surrogate"));
+                        return error(motion::msg::make("file.json.lone_high_surrogate"));
                     m_i += 2;
                     if (!hex4(lo))
                         return false;
                     if (lo < 0xDC00 || lo > 0xDFFF)
-                        return error(msg::make("file.json.lone_high_surrogate"));
+                        return error(motion::msg::make("file.json.lone_high_surrogate"));
                     cp = 0x10000 + ((cp - 0xD800) << 10) + (lo - 0xDC00);
                 } else if (cp >= 0xDC00 && cp <= 0xDFFF) {
-                    return error(msg::make("file.json.lone_low_surrogate"));
+                    return error(motion::msg::make("file.json.lone_low_surrogate"));
                 }
                 appendUtf8(out, cp);
                 break;
             }
             default:
                 --m_i;
-                return error(msg::make("file.json.unknown_escape", {describe(e)}));
+                return error(motion::msg::make("file.json.unknown_escape", {describe(e)}));
             }
         }
     }
@@ -398,7 +398,7 @@ private:
                 ++m_i;
                 skipSpace();
                 if (peek() == ']')
-                    return error(msg::make("file.json.trailing_comma", {msg::verbatim("bracket", "]")}));
+                    return error(motion::msg::make("file.json.trailing_comma", {motion::msg::verbatim("bracket", "]")}));
                 continue;
             }
             if (peek() == ']') {
@@ -422,7 +422,7 @@ private:
         for (;;) {
             skipSpace();
             if (peek() != '"')
-                return error(peek() == '}' ? msg::make("file.json.trailing_comma", {msg::verbatim("bracket", "}")})
+                return error(peek() == '}' ? motion::msg::make("file.json.trailing_comma", {motion::msg::verbatim("bracket", "}")})
                                            : expected("file.json.expected_member_name", peek()));
             Member m;
             m.keyPosition = here();
@@ -430,7 +430,7 @@ private:
                 return false;
             skipSpace();
             if (peek() != ':')
-                return error(msg::make("file.json.expected_colon", {msg::verbatim("member", m.key.substr(0, 60)), describe(peek())}));
+                return error(motion::msg::make("file.json.expected_colon", {motion::msg::verbatim("member", m.key.substr(0, 60)), describe(peek())}));
             ++m_i;
             skipSpace();
             if (!parseValue(m.value, depth + 1))
@@ -455,7 +455,7 @@ private:
         for (std::size_t k = 1; k < order.size(); ++k)
             if (members[order[k]].key == members[order[k - 1]].key) {
                 const std::size_t second = std::max(order[k], order[k - 1]);
-                return errorAt(msg::make("file.json.duplicate_member", {msg::verbatim("member", members[second].key.substr(0, 60))}), members[second].keyPosition);
+                return errorAt(motion::msg::make("file.json.duplicate_member", {motion::msg::verbatim("member", members[second].key.substr(0, 60))}), members[second].keyPosition);
             }
         out.members() = std::move(members);
         return true;
@@ -578,4 +578,4 @@ std::string write(const Value& v, bool pretty)
     return out;
 }
 
-} // namespace jsonio
+} // namespace dev::files::json

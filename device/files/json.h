@@ -13,7 +13,7 @@
 #include <string_view>
 #include <vector>
 
-namespace jsonio {
+namespace dev::files::json {
 
 /// 1-based; the column counts characters (UTF-8 code points), as editors do.
 struct Position {
@@ -85,7 +85,7 @@ struct Member {
 };
 
 const char* typeName(Value::Type t);  ///< "a number": for logs and tests
-const char* typeTerm(Value::Type t);  ///< "json.type.number": for people (words::term)
+const char* typeTerm(Value::Type t);  ///< "json.type.number": for people (ui::words::term)
 
 /// Nesting deeper than this is refused (a reader's stack stays bounded on any input).
 constexpr int kMaxDepth = 128;
@@ -93,7 +93,7 @@ constexpr int kMaxDepth = 128;
 constexpr std::size_t kMaxTextBytes = 64u * 1024 * 1024;
 
 struct ParseError {
-    msg::Message message;  ///< file.json.* (docs/wording.md; worded in widgets/wording/file_words.cpp)
+    motion::msg::Message message;  ///< file.json.* (docs/wording.md; worded in widgets/wording/file_words.cpp)
     Position position;
 };
 
@@ -113,4 +113,4 @@ ParseResult parse(std::string_view text);
 /// Non-finite numbers, which JSON cannot hold, are written as null.
 std::string write(const Value& v, bool pretty = true);
 
-} // namespace jsonio
+} // namespace dev::files::json

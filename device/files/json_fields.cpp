@@ -4,11 +4,11 @@
 #include <cmath>
 #include <cstdio>
 
-namespace jsonio {
+namespace dev::files::json {
 
-void Problems::add(Position at, std::string path, msg::Message message, msg::Severity severity)
+void Problems::add(Position at, std::string path, motion::msg::Message message, motion::msg::Severity severity)
 {
-    msg::Problem p(std::move(path), std::move(message), severity);
+    motion::msg::Problem p(std::move(path), std::move(message), severity);
     p.line = at.line;
     p.column = at.column;
     m_list.push_back(std::move(p));
@@ -17,20 +17,20 @@ void Problems::add(Position at, std::string path, msg::Message message, msg::Sev
 std::string Problems::format(std::string_view fileName) const
 {
     std::string out;
-    for (msg::Problem p : m_list) {
+    for (motion::msg::Problem p : m_list) {
         p.file = std::string(fileName);
-        out += msg::debugString(p) + "\n";
+        out += motion::msg::debugString(p) + "\n";
     }
     return out;
 }
 
-void appendSorted(msg::Problems& out, const Problems& found, const std::string& file)
+void appendSorted(motion::msg::Problems& out, const Problems& found, const std::string& file)
 {
-    msg::Problems sorted = found.list();
-    std::stable_sort(sorted.begin(), sorted.end(), [](const msg::Problem& a, const msg::Problem& b) {
+    motion::msg::Problems sorted = found.list();
+    std::stable_sort(sorted.begin(), sorted.end(), [](const motion::msg::Problem& a, const motion::msg::Problem& b) {
         return a.line != b.line ? a.line < b.line : a.column < b.column;
     });
-    for (msg::Problem& p : sorted) {
+    for (motion::msg::Problem& p : sorted) {
         p.file = file;
         out.push_back(std::move(p));
     }
@@ -48,18 +48,18 @@ std::string childPath(std::string_view parent, std::size_t index)
     return std::string(parent) + "[" + std::to_string(index) + "]";
 }
 
-msg::Message wrongType(Value::Type expected, Value::Type actual)
+motion::msg::Message wrongType(Value::Type expected, Value::Type actual)
 {
-    return msg::make("file.json.wrong_type", {msg::term("expected", typeTerm(expected)), msg::term("actual", typeTerm(actual))});
+    return motion::msg::make("file.json.wrong_type", {motion::msg::term("expected", typeTerm(expected)), motion::msg::term("actual", typeTerm(actual))});
 }
 
-msg::Message outOfRange(double value, double min, double max)
+motion::msg::Message outOfRange(double value, double min, double max)
 {
     if (min > -1e300 && max < 1e300)
-        return msg::make("file.json.out_of_range", {msg::real("value", value), msg::real("min", min), msg::real("max", max)});
+        return motion::msg::make("file.json.out_of_range", {motion::msg::real("value", value), motion::msg::real("min", min), motion::msg::real("max", max)});
     if (min > -1e300)
-        return msg::make("file.json.below_min", {msg::real("value", value), msg::real("min", min)});
-    return msg::make("file.json.above_max", {msg::real("value", value), msg::real("max", max)});
+        return motion::msg::make("file.json.below_min", {motion::msg::real("value", value), motion::msg::real("min", min)});
+    return motion::msg::make("file.json.above_max", {motion::msg::real("value", value), motion::msg::real("max", max)});
 }
 
 std::string formatNumber(double v)
@@ -83,7 +83,7 @@ const Value* ObjectReader::get(std::string_view key, Value::Type type, bool requ
     const Value* v = m_obj.find(key);
     if (!v) {
         if (required)
-            m_problems.add(m_obj, pathOf(key), msg::make("file.json.missing"));
+            m_problems.add(m_obj, pathOf(key), motion::msg::make("file.json.missing"));
         return nullptr;
     }
     if (v->type() != type) {
@@ -113,7 +113,7 @@ std::optional<long long> ObjectReader::integer(std::string_view key, bool requir
         return std::nullopt;
     const double x = v->asNumber();
     if (std::floor(x) != x) {
-        m_problems.add(*v, pathOf(key), msg::make("file.json.not_whole", {msg::real("value", x)}));
+        m_problems.add(*v, pathOf(key), motion::msg::make("file.json.not_whole", {motion::msg::real("value", x)}));
         return std::nullopt;
     }
     if (x < static_cast<double>(min) || x > static_cast<double>(max)) {
@@ -150,7 +150,7 @@ std::optional<std::string> ObjectReader::oneOf(std::string_view key, bool requir
     std::string list;
     for (std::string_view a : allowed)
         list += (list.empty() ? "" : ", ") + std::string("\"") + std::string(a) + "\"";
-    m_problems.add(*v, pathOf(key), msg::make("file.json.not_one_of", {msg::verbatim("value", v->asString().substr(0, 60)), msg::verbatim("allowed", list)}));
+    m_problems.add(*v, pathOf(key), motion::msg::make("file.json.not_one_of", {motion::msg::verbatim("value", v->asString().substr(0, 60)), motion::msg::verbatim("allowed", list)}));
     return std::nullopt;
 }
 
@@ -198,34 +198,34 @@ void ObjectReader::refuseUnknown(const std::vector<std::string_view>& known)
             }
         }
         m_problems.add(m.keyPosition, pathOf(m.key),
-                       best.empty() ? msg::make("file.json.unknown_field")
-                                    : msg::make("file.json.unknown_field_suggest", {msg::verbatim("suggestion", std::string(best))}));
+                       best.empty() ? motion::msg::make("file.json.unknown_field")
+                                    : motion::msg::make("file.json.unknown_field_suggest", {motion::msg::verbatim("suggestion", std::string(best))}));
     }
 }
 
 std::optional<int> checkSchema(const Value& root, std::string_view name, int newestVersion, Problems& problems)
 {
     if (!root.isObject()) {
-        problems.add(root, "", msg::make("file.json.document_not_object", {msg::term("actual", typeTerm(root.type()))}));
+        problems.add(root, "", motion::msg::make("file.json.document_not_object", {motion::msg::term("actual", typeTerm(root.type()))}));
         return std::nullopt;
     }
     const Value* schema = root.find("schema");
     if (!schema || !schema->isString()) {
-        problems.add(schema ? *schema : root, "schema", msg::make("file.json.schema_missing", {msg::verbatim("schema", std::string(name))}));
+        problems.add(schema ? *schema : root, "schema", motion::msg::make("file.json.schema_missing", {motion::msg::verbatim("schema", std::string(name))}));
         return std::nullopt;
     }
     if (schema->asString() != name) {
-        problems.add(*schema, "schema", msg::make("file.json.schema_wrong", {msg::verbatim("value", schema->asString().substr(0, 60)), msg::verbatim("schema", std::string(name))}));
+        problems.add(*schema, "schema", motion::msg::make("file.json.schema_wrong", {motion::msg::verbatim("value", schema->asString().substr(0, 60)), motion::msg::verbatim("schema", std::string(name))}));
         return std::nullopt;
     }
     const Value* version = root.find("version");
     if (!version || !version->isNumber() || std::floor(version->asNumber()) != version->asNumber() || version->asNumber() < 1) {
-        problems.add(version ? *version : root, "version", msg::make("file.json.version_invalid"));
+        problems.add(version ? *version : root, "version", motion::msg::make("file.json.version_invalid"));
         return std::nullopt;
     }
     if (version->asNumber() > newestVersion) {
-        problems.add(*version, "version", msg::make("file.json.version_newer", {msg::real("value", version->asNumber()),
-                                                                         msg::integer("newest", newestVersion, msg::Unit::None)}));
+        problems.add(*version, "version", motion::msg::make("file.json.version_newer", {motion::msg::real("value", version->asNumber()),
+                                                                         motion::msg::integer("newest", newestVersion, motion::msg::Unit::None)}));
         return std::nullopt;
     }
     return static_cast<int>(version->asNumber());
@@ -239,4 +239,4 @@ Value schemaObject(std::string_view name, int version)
     return v;
 }
 
-} // namespace jsonio
+} // namespace dev::files::json

@@ -12,36 +12,36 @@
 #include <string_view>
 #include <vector>
 
-namespace jsonio {
+namespace dev::files::json {
 
-/// Collects a reader's problems (msg::Problem, motion/problem.h) with the line and
+/// Collects a reader's problems (motion::msg::Problem, motion/problem.h) with the line and
 /// column of the value each is about.
 class Problems {
 public:
-    void add(Position at, std::string path, msg::Message message, msg::Severity severity = msg::Severity::Error);
-    void add(const Value& at, std::string path, msg::Message message, msg::Severity severity = msg::Severity::Error)
+    void add(Position at, std::string path, motion::msg::Message message, motion::msg::Severity severity = motion::msg::Severity::Error);
+    void add(const Value& at, std::string path, motion::msg::Message message, motion::msg::Severity severity = motion::msg::Severity::Error)
     {
         add(at.position(), std::move(path), std::move(message), severity);
     }
     bool empty() const { return m_list.empty(); }
     std::size_t size() const { return m_list.size(); }
-    bool hasErrors() const { return msg::hasErrors(m_list); }
+    bool hasErrors() const { return motion::msg::hasErrors(m_list); }
     /// The file as a whole could not be read (file.cannot_open, …): line 0, no field.
-    void addFileProblem(msg::Message message) { add(Position{0, 0}, "", std::move(message)); }
+    void addFileProblem(motion::msg::Message message) { add(Position{0, 0}, "", std::move(message)); }
     /// Without the file's name: appendSorted adds it.
-    const msg::Problems& list() const { return m_list; }
+    const motion::msg::Problems& list() const { return m_list; }
     /// One line per problem: "FILE:LINE:COLUMN: PATH: id{args}" — for logs, fuzzers and
-    /// test failures. People read words::problem (widgets/wording/wording.h).
+    /// test failures. People read ui::words::problem (widgets/wording/wording.h).
     std::string format(std::string_view fileName) const;
 
 private:
-    msg::Problems m_list;
+    motion::msg::Problems m_list;
 };
 
 /// Every problem of `found`, in the order of the file (line, then column), with
 /// `file` (the name a person knows it by: "sampling-96.recipe.json"), for lists that
 /// span several files (a recipe and the labware files it names).
-void appendSorted(msg::Problems& out, const Problems& found, const std::string& file);
+void appendSorted(motion::msg::Problems& out, const Problems& found, const std::string& file);
 
 /// "steps" + 3 → "steps[3]"; "steps[3]" + "volume_ul" → "steps[3].volume_ul".
 std::string childPath(std::string_view parent, std::string_view key);
@@ -91,11 +91,11 @@ std::optional<int> checkSchema(const Value& root, std::string_view name, int new
 Value schemaObject(std::string_view name, int version);
 
 /// file.json.wrong_type {expected, actual} (terms json.type.*).
-msg::Message wrongType(Value::Type expected, Value::Type actual);
+motion::msg::Message wrongType(Value::Type expected, Value::Type actual);
 /// file.json.out_of_range {value, min, max}, or below_min / above_max when one side is open.
-msg::Message outOfRange(double value, double min, double max);
+motion::msg::Message outOfRange(double value, double min, double max);
 
 /// A number for logs: up to 6 significant digits, no trailing zeros.
 std::string formatNumber(double v);
 
-} // namespace jsonio
+} // namespace dev::files::json

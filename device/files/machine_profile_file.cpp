@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-namespace files {
+namespace dev::files {
 
-using jsonio::ObjectReader;
-using jsonio::Value;
+using dev::files::json::ObjectReader;
+using dev::files::json::Value;
 using Profile = MachineProfile;
 
 namespace {
@@ -29,7 +29,7 @@ std::optional<char> axisLetter(ObjectReader& o, std::string_view key)
     if (!s)
         return std::nullopt;
     if (s->size() != 1 || !(((*s)[0] >= 'A' && (*s)[0] <= 'Z'))) {
-        o.problems().add(*o.value().find(key), o.pathOf(key), msg::make("grbl.profile.axis_letter", {msg::verbatim("text", *s)}));
+        o.problems().add(*o.value().find(key), o.pathOf(key), motion::msg::make("grbl.profile.axis_letter", {motion::msg::verbatim("text", *s)}));
         return std::nullopt;
     }
     return (*s)[0];
@@ -47,66 +47,66 @@ char MachineProfile::grblAxisOf(char axis) const
     return 0;
 }
 
-MachineProfile defaultProfile(proto::DeviceKind kind)
+MachineProfile defaultProfile(dev::proto::DeviceKind kind)
 {
     MachineProfile p;
     p.instrument = kind;
-    p.name = kind == proto::DeviceKind::Stage ? "stage (default wiring)" : "analyzer (default wiring)";
+    p.name = kind == dev::proto::DeviceKind::Stage ? "stage (default wiring)" : "analyzer (default wiring)";
     p.axes = {{'X', 'X'}, {'Y', 'Y'}};
-    if (kind == proto::DeviceKind::Analyzer) {
+    if (kind == dev::proto::DeviceKind::Analyzer) {
         p.axes.push_back({'Z', 'Z'});
         p.pump = Profile::Pump{'A', 1.0};
     }
     return p;
 }
 
-msg::Problems validate(const MachineProfile& p)
+motion::msg::Problems validate(const MachineProfile& p)
 {
-    msg::Problems out;
-    const bool stage = p.instrument == proto::DeviceKind::Stage;
+    motion::msg::Problems out;
+    const bool stage = p.instrument == dev::proto::DeviceKind::Stage;
     const std::string wanted = stage ? "XY" : "XYZ";
     std::string have;
     for (const auto& a : p.axes)
         have.push_back(a.axis);
     if (have != wanted)
-        out.push_back(msg::error("axes", msg::make("grbl.profile.axes_order", {msg::term("instrument", stage ? "instrument.stage" : "instrument.analyzer"),
-                                                                     msg::verbatim("wanted", wanted), msg::verbatim("got", have)})));
+        out.push_back(motion::msg::error("axes", motion::msg::make("grbl.profile.axes_order", {motion::msg::term("instrument", stage ? "instrument.stage" : "instrument.analyzer"),
+                                                                     motion::msg::verbatim("wanted", wanted), motion::msg::verbatim("got", have)})));
     std::string used;
     for (std::size_t i = 0; i < p.axes.size(); ++i) {
         const char g = p.axes[i].grblAxis;
         const std::string field = "axes[" + std::to_string(i) + "].grbl_axis";
         if (!isGrblAxis(g))
-            out.push_back(msg::error(field, msg::make("grbl.profile.not_grbl_axis", {msg::verbatim("axis", letter(g))})));
+            out.push_back(motion::msg::error(field, motion::msg::make("grbl.profile.not_grbl_axis", {motion::msg::verbatim("axis", letter(g))})));
         else if (used.find(g) != std::string::npos)
-            out.push_back(msg::error(field, msg::make("grbl.profile.grbl_axis_used", {msg::verbatim("axis", letter(g))})));
+            out.push_back(motion::msg::error(field, motion::msg::make("grbl.profile.grbl_axis_used", {motion::msg::verbatim("axis", letter(g))})));
         used.push_back(g);
     }
     if (p.pump) {
         if (stage)
-            out.push_back(msg::error("pump", msg::make("grbl.profile.stage_no_pump")));
+            out.push_back(motion::msg::error("pump", motion::msg::make("grbl.profile.stage_no_pump")));
         if (!isGrblAxis(p.pump->grblAxis))
-            out.push_back(msg::error("pump.grbl_axis", msg::make("grbl.profile.not_grbl_axis", {msg::verbatim("axis", letter(p.pump->grblAxis))})));
+            out.push_back(motion::msg::error("pump.grbl_axis", motion::msg::make("grbl.profile.not_grbl_axis", {motion::msg::verbatim("axis", letter(p.pump->grblAxis))})));
         else if (used.find(p.pump->grblAxis) != std::string::npos)
-            out.push_back(msg::error("pump.grbl_axis", msg::make("grbl.profile.pump_axis_used", {msg::verbatim("axis", letter(p.pump->grblAxis))})));
+            out.push_back(motion::msg::error("pump.grbl_axis", motion::msg::make("grbl.profile.pump_axis_used", {motion::msg::verbatim("axis", letter(p.pump->grblAxis))})));
         if (!(p.pump->ulPerMm > 0) || !(p.pump->ulPerMm <= kMaxUlPerMm))
-            out.push_back(msg::error("pump.ul_per_mm", msg::make("grbl.profile.ul_per_mm_range", {msg::real("value", p.pump->ulPerMm),
-                                                                                       msg::real("max", kMaxUlPerMm)})));
+            out.push_back(motion::msg::error("pump.ul_per_mm", motion::msg::make("grbl.profile.ul_per_mm_range", {motion::msg::real("value", p.pump->ulPerMm),
+                                                                                       motion::msg::real("max", kMaxUlPerMm)})));
     }
     if (p.trigger && p.trigger->output == Profile::TriggerOutput::GrblHalDigital && (p.trigger->port < 0 || p.trigger->port > 255))
-        out.push_back(msg::error("trigger.port", jsonio::outOfRange(p.trigger->port, 0, 255)));
+        out.push_back(motion::msg::error("trigger.port", dev::files::json::outOfRange(p.trigger->port, 0, 255)));
     if (!(p.statusPollHz >= kMinPollHz && p.statusPollHz <= kMaxPollHz))
-        out.push_back(msg::error("status_poll_hz", jsonio::outOfRange(p.statusPollHz, kMinPollHz, kMaxPollHz)));
+        out.push_back(motion::msg::error("status_poll_hz", dev::files::json::outOfRange(p.statusPollHz, kMinPollHz, kMaxPollHz)));
     const auto& j = p.jog;
     if (!(j.linkLatencyS >= 0 && j.linkLatencyS <= 0.5))
-        out.push_back(msg::error("jog.link_latency_s", jsonio::outOfRange(j.linkLatencyS, 0, 0.5)));
+        out.push_back(motion::msg::error("jog.link_latency_s", dev::files::json::outOfRange(j.linkLatencyS, 0, 0.5)));
     if (!(j.refreshS >= 0.005 && j.refreshS <= 0.5))
-        out.push_back(msg::error("jog.refresh_s", jsonio::outOfRange(j.refreshS, 0.005, 0.5)));
+        out.push_back(motion::msg::error("jog.refresh_s", dev::files::json::outOfRange(j.refreshS, 0.005, 0.5)));
     if (!(j.stopBudgetS >= 0.05 && j.stopBudgetS <= 2))
-        out.push_back(msg::error("jog.stop_budget_s", jsonio::outOfRange(j.stopBudgetS, 0.05, 2)));
+        out.push_back(motion::msg::error("jog.stop_budget_s", dev::files::json::outOfRange(j.stopBudgetS, 0.05, 2)));
     else if (j.linkLatencyS + j.refreshS + kMinJogSegmentS >= j.stopBudgetS)
-        out.push_back(msg::error("jog.stop_budget_s", msg::make("grbl.profile.stop_budget_too_small",
-                                                      {msg::real("value", j.stopBudgetS, msg::Unit::S),
-                                                       msg::real("least", j.linkLatencyS + j.refreshS + kMinJogSegmentS, msg::Unit::S)})));
+        out.push_back(motion::msg::error("jog.stop_budget_s", motion::msg::make("grbl.profile.stop_budget_too_small",
+                                                      {motion::msg::real("value", j.stopBudgetS, motion::msg::Unit::S),
+                                                       motion::msg::real("least", j.linkLatencyS + j.refreshS + kMinJogSegmentS, motion::msg::Unit::S)})));
     return out;
 }
 
@@ -128,20 +128,20 @@ const char* triggerOutputName(MachineProfile::TriggerOutput t)
 MachineProfileReadResult parseMachineProfile(std::string_view text)
 {
     MachineProfileReadResult out;
-    const jsonio::ParseResult parsed = jsonio::parse(text);
+    const dev::files::json::ParseResult parsed = dev::files::json::parse(text);
     if (!parsed) {
         out.problems.add(parsed.error.position, "", parsed.error.message);
         return out;
     }
     const Value& root = *parsed.value;
-    if (!jsonio::checkSchema(root, kMachineProfileSchema, kMachineProfileVersion, out.problems))
+    if (!dev::files::json::checkSchema(root, kMachineProfileSchema, kMachineProfileVersion, out.problems))
         return out;
     ObjectReader o(root, "", out.problems);
     Profile p;
     if (auto n = o.string("name", false))
         p.name = *n;
     if (auto k = o.oneOf("instrument", true, {"analyzer", "stage"}))
-        p.instrument = *k == "stage" ? proto::DeviceKind::Stage : proto::DeviceKind::Analyzer;
+        p.instrument = *k == "stage" ? dev::proto::DeviceKind::Stage : dev::proto::DeviceKind::Analyzer;
     if (auto pr = o.oneOf("protocol", false, {"auto", "benchpilot", "grbl"}))
         p.protocol = *pr == "grbl" ? Profile::Protocol::Grbl : *pr == "benchpilot" ? Profile::Protocol::BenchPilot : Profile::Protocol::Auto;
     if (auto hz = o.number("status_poll_hz", false, kMinPollHz, kMaxPollHz))
@@ -150,7 +150,7 @@ MachineProfileReadResult parseMachineProfile(std::string_view text)
         p.inchReports = *in == "refuse" ? Profile::InchReports::Refuse : Profile::InchReports::Convert;
     if (const Value* axes = o.get("axes", Value::Type::Array, true)) {
         for (std::size_t i = 0; i < axes->items().size(); ++i) {
-            ObjectReader a(axes->items()[i], jsonio::childPath("axes", i), out.problems);
+            ObjectReader a(axes->items()[i], dev::files::json::childPath("axes", i), out.problems);
             if (!a.valid())
                 continue;
             const auto axis = axisLetter(a, "axis");
@@ -211,9 +211,9 @@ MachineProfileReadResult parseMachineProfile(std::string_view text)
 
 std::string writeMachineProfile(const MachineProfile& p)
 {
-    Value v = jsonio::schemaObject(kMachineProfileSchema, kMachineProfileVersion);
+    Value v = dev::files::json::schemaObject(kMachineProfileSchema, kMachineProfileVersion);
     v.set("name", Value(p.name));
-    v.set("instrument", Value(p.instrument == proto::DeviceKind::Stage ? "stage" : "analyzer"));
+    v.set("instrument", Value(p.instrument == dev::proto::DeviceKind::Stage ? "stage" : "analyzer"));
     v.set("protocol", Value(protocolName(p.protocol)));
     v.set("status_poll_hz", Value(p.statusPollHz));
     v.set("inch_reports", Value(p.inchReports == Profile::InchReports::Refuse ? "refuse" : "convert"));
@@ -243,13 +243,13 @@ std::string writeMachineProfile(const MachineProfile& p)
     jog.set("refresh_s", Value(p.jog.refreshS));
     jog.set("stop_budget_s", Value(p.jog.stopBudgetS));
     v.set("jog", std::move(jog));
-    return jsonio::write(v);
+    return dev::files::json::write(v);
 }
 
-bool loadMachineProfileFile(const QString& path, MachineProfile* profile, jsonio::Problems* problems)
+bool loadMachineProfileFile(const QString& path, MachineProfile* profile, dev::files::json::Problems* problems)
 {
     std::string text;
-    msg::Message error;
+    motion::msg::Message error;
     if (!readText(path, &text, &error)) {
         if (problems)
             problems->addFileProblem(error);
@@ -266,9 +266,9 @@ bool loadMachineProfileFile(const QString& path, MachineProfile* profile, jsonio
     return true;
 }
 
-bool saveMachineProfileFile(const QString& path, const MachineProfile& profile, msg::Message* error)
+bool saveMachineProfileFile(const QString& path, const MachineProfile& profile, motion::msg::Message* error)
 {
     return writeAtomically(path, writeMachineProfile(profile), error);
 }
 
-} // namespace files
+} // namespace dev::files

@@ -21,7 +21,7 @@
 #include <string_view>
 #include <vector>
 
-namespace files {
+namespace dev::files {
 
 constexpr std::string_view kMachineProfileSchema = "benchpilot.machine-profile";
 constexpr int kMachineProfileVersion = 1;
@@ -59,7 +59,7 @@ struct MachineProfile {
     };
 
     std::string name;
-    proto::DeviceKind instrument = proto::DeviceKind::Analyzer;
+    dev::proto::DeviceKind instrument = dev::proto::DeviceKind::Analyzer;
     Protocol protocol = Protocol::Auto;
     double statusPollHz = 10;     ///< '?' queries per second (the GRBL document: 5 Hz, 10 may work)
     std::vector<AxisMap> axes;    ///< in the instrument's order
@@ -73,25 +73,25 @@ struct MachineProfile {
 };
 
 /// The profile a connection uses when none is chosen.
-MachineProfile defaultProfile(proto::DeviceKind kind);
+MachineProfile defaultProfile(dev::proto::DeviceKind kind);
 
 /// Rules a profile keeps whatever file it came from; each problem names its field
 /// (grbl.profile.*, or file.json.out_of_range{value, min, max}).
-msg::Problems validate(const MachineProfile& p);
+motion::msg::Problems validate(const MachineProfile& p);
 
 struct MachineProfileReadResult {
     std::optional<MachineProfile> profile;
-    jsonio::Problems problems;  ///< empty when profile is set
+    dev::files::json::Problems problems;  ///< empty when profile is set
 };
 MachineProfileReadResult parseMachineProfile(std::string_view text);
 /// Two-space indented JSON: the header, then every field.
 std::string writeMachineProfile(const MachineProfile& p);
 
-/// False with every problem in *problems (words::fileProblems words them with the file's name).
-bool loadMachineProfileFile(const QString& path, MachineProfile* profile, jsonio::Problems* problems);
-bool saveMachineProfileFile(const QString& path, const MachineProfile& profile, msg::Message* error);
+/// False with every problem in *problems (ui::words::fileProblems words them with the file's name).
+bool loadMachineProfileFile(const QString& path, MachineProfile* profile, dev::files::json::Problems* problems);
+bool saveMachineProfileFile(const QString& path, const MachineProfile& profile, motion::msg::Message* error);
 
 const char* protocolName(MachineProfile::Protocol p);  ///< "auto", "benchpilot", "grbl"
 const char* triggerOutputName(MachineProfile::TriggerOutput t);  ///< "grblhal-digital", "coolant-flood"
 
-} // namespace files
+} // namespace dev::files

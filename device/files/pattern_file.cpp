@@ -6,10 +6,10 @@
 
 #include <limits>
 
-namespace files {
+namespace dev::files {
 
-using jsonio::ObjectReader;
-using jsonio::Value;
+using dev::files::json::ObjectReader;
+using dev::files::json::Value;
 using motion::plans::Pattern;
 using motion::plans::PatternShape;
 using motion::path::Vec2;
@@ -48,7 +48,7 @@ struct Reader {
             return;
         const auto& items = v->items();
         if (items.size() != 2 || !items[0].isNumber() || !items[1].isNumber()) {
-            o.problems().add(*v, o.pathOf(key), msg::make("file.json.array_of_numbers", {msg::integer("count", 2)}));
+            o.problems().add(*v, o.pathOf(key), motion::msg::make("file.json.array_of_numbers", {motion::msg::integer("count", 2)}));
             return;
         }
         into = {items[0].asNumber(), items[1].asNumber()};
@@ -73,13 +73,13 @@ Value pointValue(Vec2 p)
 PatternReadResult parsePattern(std::string_view text)
 {
     PatternReadResult out;
-    const jsonio::ParseResult parsed = jsonio::parse(text);
+    const dev::files::json::ParseResult parsed = dev::files::json::parse(text);
     if (!parsed) {
         out.problems.add(parsed.error.position, "", parsed.error.message);
         return out;
     }
     const Value& root = *parsed.value;
-    if (!jsonio::checkSchema(root, kPatternSchema, kPatternVersion, out.problems))
+    if (!dev::files::json::checkSchema(root, kPatternSchema, kPatternVersion, out.problems))
         return out;
     ObjectReader o(root, "", out.problems);
     Pattern p;
@@ -162,7 +162,7 @@ PatternReadResult parsePattern(std::string_view text)
 
 std::string writePattern(const Pattern& p)
 {
-    Value v = jsonio::schemaObject(kPatternSchema, kPatternVersion);
+    Value v = dev::files::json::schemaObject(kPatternSchema, kPatternVersion);
     v.set("name", Value(p.name));
     v.set("shape", Value(motion::plans::shapeName(p.shape)));
     v.set("feed_mm_s", Value(p.feedMmS));
@@ -218,13 +218,13 @@ std::string writePattern(const Pattern& p)
         v.set("passes_along", Value(p.raster.alongY ? "y" : "x"));
         break;
     }
-    return jsonio::write(v);
+    return dev::files::json::write(v);
 }
 
-bool loadPatternFile(const QString& path, Pattern* pattern, jsonio::Problems* problems)
+bool loadPatternFile(const QString& path, Pattern* pattern, dev::files::json::Problems* problems)
 {
     std::string text;
-    msg::Message error;
+    motion::msg::Message error;
     if (!readText(path, &text, &error)) {
         if (problems)
             problems->addFileProblem(error);
@@ -241,9 +241,9 @@ bool loadPatternFile(const QString& path, Pattern* pattern, jsonio::Problems* pr
     return true;
 }
 
-bool savePatternFile(const QString& path, const Pattern& pattern, msg::Message* error)
+bool savePatternFile(const QString& path, const Pattern& pattern, motion::msg::Message* error)
 {
     return writeAtomically(path, writePattern(pattern), error);
 }
 
-} // namespace files
+} // namespace dev::files

@@ -13,7 +13,7 @@
 #include <string>
 #include <string_view>
 
-namespace files {
+namespace dev::files {
 
 constexpr std::string_view kPatternSchema = "benchpilot.pattern";
 constexpr int kPatternVersion = 1;
@@ -22,15 +22,15 @@ constexpr std::string_view kPatternSuffix = ".pattern.json";
 
 struct PatternReadResult {
     std::optional<motion::plans::Pattern> pattern;
-    jsonio::Problems problems;  ///< empty when pattern is set
+    dev::files::json::Problems problems;  ///< empty when pattern is set
 };
 PatternReadResult parsePattern(std::string_view text);
 /// Two-space indented JSON of the pattern: the header, then the common fields, then the fields
 /// of its shape (only those).
 std::string writePattern(const motion::plans::Pattern& pattern);
 
-/// False with every problem in *problems (words::fileProblems words them with the file's name).
-bool loadPatternFile(const QString& path, motion::plans::Pattern* pattern, jsonio::Problems* problems);
-bool savePatternFile(const QString& path, const motion::plans::Pattern& pattern, msg::Message* error);
+/// False with every problem in *problems (ui::words::fileProblems words them with the file's name).
+bool loadPatternFile(const QString& path, motion::plans::Pattern* pattern, dev::files::json::Problems* problems);
+bool savePatternFile(const QString& path, const motion::plans::Pattern& pattern, motion::msg::Message* error);
 
-} // namespace files
+} // namespace dev::files

@@ -4,7 +4,7 @@
 
 #include <charconv>
 
-namespace files {
+namespace dev::files {
 
 namespace {
 /// Shortest text that reads back to the same double.
@@ -16,7 +16,7 @@ void number(std::string& out, double v)
 }
 } // namespace
 
-std::string patternRunCsv(const std::vector<jobs::PatternRunSample>& samples)
+std::string patternRunCsv(const std::vector<dev::jobs::PatternRunSample>& samples)
 {
     std::string out = "time_s,commanded_x_mm,commanded_y_mm,measured_x_mm,measured_y_mm,path_mm,contour_um,segment\n";
     out.reserve(out.size() + samples.size() * 96);
@@ -31,9 +31,9 @@ std::string patternRunCsv(const std::vector<jobs::PatternRunSample>& samples)
     return out;
 }
 
-bool savePatternRunCsv(const QString& path, const std::vector<jobs::PatternRunSample>& samples, msg::Message* error)
+bool savePatternRunCsv(const QString& path, const std::vector<dev::jobs::PatternRunSample>& samples, motion::msg::Message* error)
 {
     return writeAtomically(path, patternRunCsv(samples), error);
 }
 
-} // namespace files
+} // namespace dev::files

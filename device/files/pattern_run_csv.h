@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-namespace files {
+namespace dev::files {
 
 /// Header: time_s,commanded_x_mm,commanded_y_mm,measured_x_mm,measured_y_mm,path_mm,contour_um,segment
-std::string patternRunCsv(const std::vector<jobs::PatternRunSample>& samples);
+std::string patternRunCsv(const std::vector<dev::jobs::PatternRunSample>& samples);
 /// Atomic write; false with a sentence naming the file otherwise.
-bool savePatternRunCsv(const QString& path, const std::vector<jobs::PatternRunSample>& samples, msg::Message* error);
+bool savePatternRunCsv(const QString& path, const std::vector<dev::jobs::PatternRunSample>& samples, motion::msg::Message* error);
 
-} // namespace files
+} // namespace dev::files

@@ -3,7 +3,7 @@
 #include <cctype>
 #include <cstdio>
 
-namespace files {
+namespace dev::files {
 
 std::string csvField(const std::string& text)
 {
@@ -67,4 +67,4 @@ std::string positionRecordsCsv(const std::vector<motion::PositionRecord>& record
     return out;
 }
 
-} // namespace files
+} // namespace dev::files

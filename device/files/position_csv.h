@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace files {
+namespace dev::files {
 
 struct CsvColumn {
     std::string name;
@@ -23,4 +23,4 @@ std::string positionRecordsCsv(const std::vector<motion::PositionRecord>& record
 /// One CSV field, quoted when it needs to be.
 std::string csvField(const std::string& text);
 
-} // namespace files
+} // namespace dev::files

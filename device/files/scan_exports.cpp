@@ -13,14 +13,14 @@
 #include <cmath>
 #include <cstdio>
 
-namespace scanfile {
+namespace dev::files::scan {
 
 
 using motion::PositionRecord;
 using motion::scan::Point2;
 using motion::scan::ScanLayout;
 using motion::scan::ScanPlan;
-using jsonio::Value;
+using dev::files::json::Value;
 
 std::vector<PositionRecord> plannedRecords(const ScanPlan& plan, const ScanLayout& layout)
 {
@@ -75,7 +75,7 @@ std::string tileConfiguration(const ScanPlan& plan, const std::vector<PositionRe
         minY = std::min_element(px.begin(), px.end(), [](auto a, auto b) { return a.yMm < b.yMm; })->yMm;
     }
     std::string out = "# Stitching scan \"" + plan.name + "\" from BenchPilot: tile positions in pixels ("
-        + jsonio::formatNumber(motion::scan::pixelAtSampleUm(plan.camera)) + " µm each)\n";
+        + dev::files::json::formatNumber(motion::scan::pixelAtSampleUm(plan.camera)) + " µm each)\n";
     out += "# Define the number of dimensions we are working on\ndim = 2\n\n# Define the image coordinates\n";
     char buf[96];
     for (std::size_t i = 0; i < records.size(); ++i) {
@@ -135,12 +135,12 @@ std::string microManagerPositions(const ScanPlan& plan, const ScanLayout& layout
     doc.set("major_version", Value(2));
     doc.set("minor_version", Value(0));
     doc.set("map", std::move(map));
-    return jsonio::write(doc) + "\n";
+    return dev::files::json::write(doc) + "\n";
 }
 
 std::string scanCsv(const ScanPlan& plan, const ScanLayout& layout, const std::vector<PositionRecord>& records)
 {
-    files::CsvColumn row{"row", {}}, col{"col", {}}, workX{"stitch_x_mm", {}}, workY{"stitch_y_mm", {}};
+    dev::files::CsvColumn row{"row", {}}, col{"col", {}}, workX{"stitch_x_mm", {}}, workY{"stitch_y_mm", {}};
     char buf[48];
     for (std::size_t i = 0; i < records.size(); ++i) {
         const auto& t = layout.tiles.at(i);
@@ -152,14 +152,14 @@ std::string scanCsv(const ScanPlan& plan, const ScanLayout& layout, const std::v
         std::snprintf(buf, sizeof buf, "%.6f", p.yMm);
         workY.cells.push_back(buf);
     }
-    return files::positionRecordsCsv(records, "XY", {row, col, workX, workY});
+    return dev::files::positionRecordsCsv(records, "XY", {row, col, workX, workY});
 }
 
 bool writeExports(const QString& folder, const ScanPlan& plan, const ScanLayout& layout,
-                  const std::vector<PositionRecord>& records, QStringList* written, msg::Message* error)
+                  const std::vector<PositionRecord>& records, QStringList* written, motion::msg::Message* error)
 {
     if (!QDir().mkpath(folder)) {
-        *error = msg::make("file.cannot_make_folder", {msg::verbatim("folder", folder.toStdString())});
+        *error = motion::msg::make("file.cannot_make_folder", {motion::msg::verbatim("folder", folder.toStdString())});
         return false;
     }
     const QDir dir(folder);
@@ -170,7 +170,7 @@ bool writeExports(const QString& folder, const ScanPlan& plan, const ScanLayout&
     };
     for (const auto& [name, text] : outputs) {
         const QString path = dir.filePath(QString::fromLatin1(name));
-        if (!files::writeAtomically(path, text, error))
+        if (!dev::files::writeAtomically(path, text, error))
             return false;
         if (written)
             *written << path;
@@ -178,4 +178,4 @@ bool writeExports(const QString& folder, const ScanPlan& plan, const ScanLayout&
     return true;
 }
 
-} // namespace scanfile
+} // namespace dev::files::scan

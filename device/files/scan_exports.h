@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-namespace scanfile {
+namespace dev::files::scan {
 
 /// One record per tile, in visiting order: planned and commanded positions filled
 /// in, labelled with the tile's file name; nothing measured yet.
@@ -44,6 +44,6 @@ constexpr const char* kCsvFile = "scan.csv";
 
 /// Writes the three exports into `folder` (made if missing). `written` gets their paths.
 bool writeExports(const QString& folder, const motion::scan::ScanPlan& plan, const motion::scan::ScanLayout& layout,
-                  const std::vector<motion::PositionRecord>& records, QStringList* written, msg::Message* error);
+                  const std::vector<motion::PositionRecord>& records, QStringList* written, motion::msg::Message* error);
 
-} // namespace scanfile
+} // namespace dev::files::scan

@@ -7,11 +7,11 @@
 #include <cmath>
 #include <cstdlib>
 
-namespace scanfile {
+namespace dev::files::scan {
 
-using jsonio::ObjectReader;
-using jsonio::Problems;
-using jsonio::Value;
+using dev::files::json::ObjectReader;
+using dev::files::json::Problems;
+using dev::files::json::Value;
 using motion::scan::Point2;
 using motion::scan::ScanPlan;
 
@@ -23,18 +23,18 @@ constexpr double kScanAny = 1e300;  // ranges are the plan validator's job; the 
 std::optional<std::vector<double>> readNumbers(const Value& v, const std::string& path, std::size_t n, bool whole, Problems& p)
 {
     if (!v.isArray() || v.items().size() != n) {
-        p.add(v, path, msg::make("file.json.array_of_numbers", {msg::integer("count", static_cast<long long>(n))}));
+        p.add(v, path, motion::msg::make("file.json.array_of_numbers", {motion::msg::integer("count", static_cast<long long>(n))}));
         return std::nullopt;
     }
     std::vector<double> out;
     for (std::size_t i = 0; i < n; ++i) {
         const Value& item = v.items()[i];
         if (!item.isNumber()) {
-            p.add(item, jsonio::childPath(path, i), jsonio::wrongType(Value::Type::Number, item.type()));
+            p.add(item, dev::files::json::childPath(path, i), dev::files::json::wrongType(Value::Type::Number, item.type()));
             return std::nullopt;
         }
         if (whole && std::floor(item.asNumber()) != item.asNumber()) {
-            p.add(item, jsonio::childPath(path, i), msg::make("file.json.not_whole", {msg::real("value", item.asNumber())}));
+            p.add(item, dev::files::json::childPath(path, i), motion::msg::make("file.json.not_whole", {motion::msg::real("value", item.asNumber())}));
             return std::nullopt;
         }
         out.push_back(item.asNumber());
@@ -68,7 +68,7 @@ std::optional<std::vector<double>> polyMember(ObjectReader& o, std::string_view 
     for (std::size_t i = 0; i < v->items().size(); ++i) {
         const Value& item = v->items()[i];
         if (!item.isNumber()) {
-            o.problems().add(item, jsonio::childPath(o.pathOf(key), i), jsonio::wrongType(Value::Type::Number, item.type()));
+            o.problems().add(item, dev::files::json::childPath(o.pathOf(key), i), dev::files::json::wrongType(Value::Type::Number, item.type()));
             return std::nullopt;
         }
         out.push_back(item.asNumber());
@@ -91,7 +91,7 @@ void readRegion(const Value& v, ScanPlan& plan, Problems& p)
         if (!corners)
             return;
         if (corners->items().size() != 2) {
-            p.add(*corners, "region.corners_mm", msg::make("scan.file.two_corners"));
+            p.add(*corners, "region.corners_mm", motion::msg::make("scan.file.two_corners"));
             return;
         }
         const auto a = readPoint(corners->items()[0], "region.corners_mm[0]", p);
@@ -117,7 +117,7 @@ void readRegion(const Value& v, ScanPlan& plan, Problems& p)
             return;
         r.vertices.clear();
         for (std::size_t i = 0; i < vs->items().size(); ++i)
-            if (const auto pt = readPoint(vs->items()[i], jsonio::childPath("region.vertices_mm", i), p))
+            if (const auto pt = readPoint(vs->items()[i], dev::files::json::childPath("region.vertices_mm", i), p))
                 r.vertices.push_back(*pt);
     }
 }
@@ -231,10 +231,10 @@ Value numberPair(double a, double b)
 
 } // namespace
 
-jsonio::Position locate(const Value& root, const std::string& path)
+dev::files::json::Position locate(const Value& root, const std::string& path)
 {
     const Value* at = &root;
-    jsonio::Position best = root.position();
+    dev::files::json::Position best = root.position();
     std::size_t i = 0;
     while (i < path.size() && at) {
         if (path[i] == '.') {
@@ -263,13 +263,13 @@ jsonio::Position locate(const Value& root, const std::string& path)
 PlanReadResult parsePlan(std::string_view text)
 {
     PlanReadResult out;
-    const jsonio::ParseResult parsed = jsonio::parse(text);
+    const dev::files::json::ParseResult parsed = dev::files::json::parse(text);
     if (!parsed) {
         out.problems.add(parsed.error.position, "", parsed.error.message);
         return out;
     }
     const Value& root = *parsed.value;
-    if (!jsonio::checkSchema(root, kPlanSchema, kPlanVersion, out.problems))
+    if (!dev::files::json::checkSchema(root, kPlanSchema, kPlanVersion, out.problems))
         return out;
     ScanPlan plan;
     ObjectReader o(root, "", out.problems);
@@ -301,7 +301,7 @@ Value planToJson(const ScanPlan& plan)
 {
     using motion::scan::FieldSource;
     using motion::scan::RegionKind;
-    Value root = jsonio::schemaObject(kPlanSchema, kPlanVersion);
+    Value root = dev::files::json::schemaObject(kPlanSchema, kPlanVersion);
     root.set("name", Value(plan.name));
     Value region = Value::object();
     const auto& r = plan.region;
@@ -365,13 +365,13 @@ Value planToJson(const ScanPlan& plan)
     return root;
 }
 
-std::string writePlan(const ScanPlan& plan) { return jsonio::write(planToJson(plan)) + "\n"; }
+std::string writePlan(const ScanPlan& plan) { return dev::files::json::write(planToJson(plan)) + "\n"; }
 
-bool loadPlan(const QString& path, ScanPlan* plan, jsonio::Problems* problems)
+bool loadPlan(const QString& path, ScanPlan* plan, dev::files::json::Problems* problems)
 {
     std::string text;
-    msg::Message error;
-    if (!files::readText(path, &text, &error)) {
+    motion::msg::Message error;
+    if (!dev::files::readText(path, &text, &error)) {
         problems->addFileProblem(error);
         return false;
     }
@@ -384,9 +384,9 @@ bool loadPlan(const QString& path, ScanPlan* plan, jsonio::Problems* problems)
     return true;
 }
 
-bool savePlan(const QString& path, const ScanPlan& plan, msg::Message* error)
+bool savePlan(const QString& path, const ScanPlan& plan, motion::msg::Message* error)
 {
-    return files::writeAtomically(path, writePlan(plan), error);
+    return dev::files::writeAtomically(path, writePlan(plan), error);
 }
 
-} // namespace scanfile
+} // namespace dev::files::scan

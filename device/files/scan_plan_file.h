@@ -13,27 +13,27 @@
 #include <optional>
 #include <string_view>
 
-namespace scanfile {
+namespace dev::files::scan {
 
 constexpr const char* kPlanSchema = "benchpilot.scan-plan";
 constexpr int kPlanVersion = 1;
 
 struct PlanReadResult {
     std::optional<motion::scan::ScanPlan> plan;  ///< only when there is no problem
-    jsonio::Problems problems;
+    dev::files::json::Problems problems;
 };
 
 PlanReadResult parsePlan(std::string_view text);
-jsonio::Value planToJson(const motion::scan::ScanPlan& plan);
+dev::files::json::Value planToJson(const motion::scan::ScanPlan& plan);
 std::string writePlan(const motion::scan::ScanPlan& plan);
 
 /// Where `path` ("region.vertices_mm[3]", "overlap[0]") stands in the document, or
 /// the nearest enclosing value that is there (a field left to its default).
-jsonio::Position locate(const jsonio::Value& root, const std::string& path);
+dev::files::json::Position locate(const dev::files::json::Value& root, const std::string& path);
 
-/// False with every problem in `problems` (words::fileProblems words them, with the
+/// False with every problem in `problems` (ui::words::fileProblems words them, with the
 /// file, line and column).
-bool loadPlan(const QString& path, motion::scan::ScanPlan* plan, jsonio::Problems* problems);
-bool savePlan(const QString& path, const motion::scan::ScanPlan& plan, msg::Message* error);
+bool loadPlan(const QString& path, motion::scan::ScanPlan* plan, dev::files::json::Problems* problems);
+bool savePlan(const QString& path, const motion::scan::ScanPlan& plan, motion::msg::Message* error);
 
-} // namespace scanfile
+} // namespace dev::files::scan

@@ -4,10 +4,10 @@
 #include <cstdio>
 #include <cstdlib>
 
-namespace scanfile {
+namespace dev::files::scan {
 
-using jsonio::ObjectReader;
-using jsonio::Value;
+using dev::files::json::ObjectReader;
+using dev::files::json::Value;
 
 std::string fingerprintText(std::uint64_t fingerprint)
 {
@@ -18,11 +18,11 @@ std::string fingerprintText(std::uint64_t fingerprint)
 
 std::string runLogHeader(const std::string& planName, std::uint64_t fingerprint, int tiles)
 {
-    Value v = jsonio::schemaObject(kRunLogSchema, kRunLogVersion);
+    Value v = dev::files::json::schemaObject(kRunLogSchema, kRunLogVersion);
     v.set("plan", Value(planName));
     v.set("fingerprint", Value(fingerprintText(fingerprint)));
     v.set("tiles", Value(tiles));
-    return jsonio::write(v, false) + "\n";
+    return dev::files::json::write(v, false) + "\n";
 }
 
 namespace {
@@ -43,23 +43,23 @@ std::optional<std::vector<double>> readAxes(ObjectReader& o, std::string_view ke
     std::vector<double> out;
     for (const Value& item : v->items()) {
         if (!item.isNumber()) {
-            o.problems().add(item, o.pathOf(key), jsonio::wrongType(jsonio::Value::Type::Number, item.type()));
+            o.problems().add(item, o.pathOf(key), dev::files::json::wrongType(dev::files::json::Value::Type::Number, item.type()));
             return std::nullopt;
         }
         out.push_back(item.asNumber());
     }
     if (out.size() != 2) {
-        o.problems().add(*v, o.pathOf(key), msg::make("file.json.array_of_numbers", {msg::integer("count", 2)}));
+        o.problems().add(*v, o.pathOf(key), motion::msg::make("file.json.array_of_numbers", {motion::msg::integer("count", 2)}));
         return std::nullopt;
     }
     return out;
 }
 
 /// Problems of one line, moved to where the line stands in the file.
-void addShifted(jsonio::Problems& into, const jsonio::Problems& line, int lineNo)
+void addShifted(dev::files::json::Problems& into, const dev::files::json::Problems& line, int lineNo)
 {
     for (const auto& p : line.list())
-        into.add(jsonio::Position{lineNo, p.column}, p.path, p.message);
+        into.add(dev::files::json::Position{lineNo, p.column}, p.path, p.message);
 }
 
 } // namespace
@@ -78,7 +78,7 @@ std::string runLogLine(const motion::PositionRecord& r, const TileImageRef& imag
         v.set("image", Value(image.file));
         v.set("sha256", Value(image.sha256));
     }
-    return jsonio::write(v, false) + "\n";
+    return dev::files::json::write(v, false) + "\n";
 }
 
 RunLogReadResult parseRunLog(std::string_view text)
@@ -96,25 +96,25 @@ RunLogReadResult parseRunLog(std::string_view text)
         ++lineNo;
         if (line.find_first_not_of(" \t\r") == std::string_view::npos)
             continue;
-        const jsonio::ParseResult parsed = jsonio::parse(line);
+        const dev::files::json::ParseResult parsed = dev::files::json::parse(line);
         if (!parsed) {
             if (!complete && header) {
                 log.tornTail = true;  // the write a crash interrupted: that tile is simply not taken
                 break;
             }
-            out.problems.add(jsonio::Position{lineNo, parsed.error.position.column}, "", parsed.error.message);
+            out.problems.add(dev::files::json::Position{lineNo, parsed.error.position.column}, "", parsed.error.message);
             break;
         }
-        jsonio::Problems lp;
+        dev::files::json::Problems lp;
         if (!header) {
-            if (jsonio::checkSchema(*parsed.value, kRunLogSchema, kRunLogVersion, lp)) {
+            if (dev::files::json::checkSchema(*parsed.value, kRunLogSchema, kRunLogVersion, lp)) {
                 ObjectReader o(*parsed.value, "", lp);
                 o.refuseUnknown({"schema", "version", "plan", "fingerprint", "tiles"});
                 const auto name = o.string("plan", true);
                 const auto fp = o.string("fingerprint", true);
                 const auto tiles = o.integer("tiles", true, 1, 1000000000);
                 if (fp && (fp->size() != 16 || fp->find_first_not_of("0123456789abcdef") != std::string::npos))
-                    lp.add(*parsed.value->find("fingerprint"), "fingerprint", msg::make("file.log.bad_fingerprint"));
+                    lp.add(*parsed.value->find("fingerprint"), "fingerprint", motion::msg::make("file.log.bad_fingerprint"));
                 else if (name && fp && tiles) {
                     log.planName = *name;
                     log.fingerprint = std::strtoull(fp->c_str(), nullptr, 16);
@@ -141,13 +141,13 @@ RunLogReadResult parseRunLog(std::string_view text)
         const auto sha = o.string("sha256", false);
         const bool shaOk = !sha || (sha->size() == 64 && sha->find_first_not_of("0123456789abcdef") == std::string::npos);
         if (!shaOk)
-            lp.add(*parsed.value->find("sha256"), "sha256", msg::make("file.log.bad_sha256"));
+            lp.add(*parsed.value->find("sha256"), "sha256", motion::msg::make("file.log.bad_sha256"));
         // The image is a file in the run's folder: a path out of it is not one this log wrote.
         const bool imageOk = !image || (!image->empty() && *image != "." && *image != ".." && image->find_first_of("/\\") == std::string::npos);
         if (!imageOk)
-            lp.add(*parsed.value->find("image"), "image", msg::make("file.log.bad_image_name"));
+            lp.add(*parsed.value->find("image"), "image", motion::msg::make("file.log.bad_image_name"));
         if (image.has_value() != sha.has_value())
-            lp.add(*parsed.value, image ? "sha256" : "image", msg::make("file.log.image_without_sha256"));
+            lp.add(*parsed.value, image ? "sha256" : "image", motion::msg::make("file.log.image_without_sha256"));
         if (tile && label && planned && commanded && measured && time && settle && shaOk && imageOk && image.has_value() == sha.has_value()) {
             r.target = static_cast<int>(*tile);
             r.label = *label;
@@ -162,10 +162,10 @@ RunLogReadResult parseRunLog(std::string_view text)
         addShifted(out.problems, lp, lineNo);
     }
     if (!header && out.problems.empty())
-        out.problems.add(jsonio::Position{1, 1}, "", msg::make("file.log.empty"));
+        out.problems.add(dev::files::json::Position{1, 1}, "", motion::msg::make("file.log.empty"));
     if (out.problems.empty())
         out.log = std::move(log);
     return out;
 }
 
-} // namespace scanfile
+} // namespace dev::files::scan

@@ -20,7 +20,7 @@
 #include <string_view>
 #include <vector>
 
-namespace scanfile {
+namespace dev::files::scan {
 
 constexpr const char* kRunLogSchema = "benchpilot.scan-run";
 constexpr int kRunLogVersion = 1;
@@ -43,7 +43,7 @@ struct RunLog {
 
 struct RunLogReadResult {
     std::optional<RunLog> log;
-    jsonio::Problems problems;
+    dev::files::json::Problems problems;
 };
 
 std::string runLogHeader(const std::string& planName, std::uint64_t fingerprint, int tiles);
@@ -52,4 +52,4 @@ RunLogReadResult parseRunLog(std::string_view text);
 
 std::string fingerprintText(std::uint64_t fingerprint);  ///< 16 hex digits
 
-} // namespace scanfile
+} // namespace dev::files::scan

@@ -4,7 +4,7 @@
 #include <QDir>
 #include <QFileInfo>
 
-namespace files {
+namespace dev::files {
 
 namespace {
 QString& overrideDirectory()
@@ -58,4 +58,4 @@ QString shippedLabwareFile(const QString& fileName)
     return QFileInfo(file).isFile() ? file : QString();
 }
 
-} // namespace files
+} // namespace dev::files

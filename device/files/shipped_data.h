@@ -7,7 +7,7 @@
 // a copy moved or installed under another prefix finds its own files.
 #include <QString>
 
-namespace files {
+namespace dev::files {
 
 /// <program folder>/../share/benchpilot (as installed: bin/ to the data folder), or
 /// empty when there is none.
@@ -33,4 +33,4 @@ QString resolveMachineProfile(const QString& typed);
 /// the shipped one of that name, or empty.
 QString shippedLabwareFile(const QString& fileName);
 
-} // namespace files
+} // namespace dev::files

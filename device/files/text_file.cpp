@@ -4,7 +4,7 @@
 #include <QFile>
 #include <QSaveFile>
 
-namespace files {
+namespace dev::files {
 
 bool readText(const QString& path, std::string* text, QString* error, qint64 maxBytes)
 {
@@ -51,13 +51,13 @@ bool writeAtomically(const QString& path, const std::string& text, QString* erro
 }
 
 namespace {
-msg::Message fileProblem(const char* id, const QString& path, const QString& detail)
+motion::msg::Message fileProblem(const char* id, const QString& path, const QString& detail)
 {
-    return msg::make(id, {msg::verbatim("file", path.toStdString()), msg::verbatim("detail", detail.toStdString())});
+    return motion::msg::make(id, {motion::msg::verbatim("file", path.toStdString()), motion::msg::verbatim("detail", detail.toStdString())});
 }
 } // namespace
 
-bool readText(const QString& path, std::string* text, msg::Message* error, qint64 maxBytes)
+bool readText(const QString& path, std::string* text, motion::msg::Message* error, qint64 maxBytes)
 {
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly)) {
@@ -67,9 +67,9 @@ bool readText(const QString& path, std::string* text, msg::Message* error, qint6
     }
     if (f.size() > maxBytes) {
         if (error)
-            *error = msg::make("file.too_large", {msg::verbatim("file", path.toStdString()),
-                                                  msg::real("size", f.size() / (1024.0 * 1024.0)),
-                                                  msg::integer("max", maxBytes / (1024 * 1024), msg::Unit::None)});
+            *error = motion::msg::make("file.too_large", {motion::msg::verbatim("file", path.toStdString()),
+                                                  motion::msg::real("size", f.size() / (1024.0 * 1024.0)),
+                                                  motion::msg::integer("max", maxBytes / (1024 * 1024), motion::msg::Unit::None)});
         return false;
     }
     const QByteArray bytes = f.readAll();
@@ -82,7 +82,7 @@ bool readText(const QString& path, std::string* text, msg::Message* error, qint6
     return true;
 }
 
-bool writeAtomically(const QString& path, const std::string& text, msg::Message* error)
+bool writeAtomically(const QString& path, const std::string& text, motion::msg::Message* error)
 {
     QSaveFile f(path);
     if (!f.open(QIODevice::WriteOnly)) {
@@ -100,4 +100,4 @@ bool writeAtomically(const QString& path, const std::string& text, msg::Message*
     return true;
 }
 
-} // namespace files
+} // namespace dev::files

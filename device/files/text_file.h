@@ -6,7 +6,7 @@
 
 #include <string>
 
-namespace files {
+namespace dev::files {
 
 /// Files larger than this are refused by readText: none of ours come close.
 constexpr qint64 kMaxFileBytes = 32ll * 1024 * 1024;
@@ -20,7 +20,7 @@ bool writeAtomically(const QString& path, const std::string& text, QString* erro
 /// The same with the reason as a message for the wording layer: file.cannot_open,
 /// file.too_large, file.cannot_read, file.cannot_write {file, detail} (detail is
 /// Qt's own text). The QString forms above remain for callers not yet on messages.
-bool readText(const QString& path, std::string* text, msg::Message* error, qint64 maxBytes = kMaxFileBytes);
-bool writeAtomically(const QString& path, const std::string& text, msg::Message* error);
+bool readText(const QString& path, std::string* text, motion::msg::Message* error, qint64 maxBytes = kMaxFileBytes);
+bool writeAtomically(const QString& path, const std::string& text, motion::msg::Message* error);
 
-} // namespace files
+} // namespace dev::files

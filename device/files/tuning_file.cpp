@@ -9,11 +9,11 @@
 
 #include <cmath>
 
-namespace files {
+namespace dev::files {
 
-using jsonio::ObjectReader;
-using jsonio::Problems;
-using jsonio::Value;
+using dev::files::json::ObjectReader;
+using dev::files::json::Problems;
+using dev::files::json::Value;
 using motion::control::TuningResult;
 
 namespace {
@@ -41,7 +41,7 @@ std::optional<motion::control::DiscreteGains> readGains(const Value& v, const st
 
 std::string tuningToJson(const TuningResult& r)
 {
-    Value root = jsonio::schemaObject(kTuningSchema, kTuningVersion);
+    Value root = dev::files::json::schemaObject(kTuningSchema, kTuningVersion);
     root.set("target", r.target);
     root.set("unit", r.unit);
     root.set("method", r.method);
@@ -129,20 +129,20 @@ std::string tuningToJson(const TuningResult& r)
     }
     if (!r.note.empty())
         root.set("note", r.note);
-    return jsonio::write(root);
+    return dev::files::json::write(root);
 }
 
 TuningRead tuningFromJson(std::string_view text)
 {
     TuningRead out;
-    const jsonio::ParseResult parsed = jsonio::parse(text);
+    const dev::files::json::ParseResult parsed = dev::files::json::parse(text);
     if (!parsed) {
         out.problems.add(parsed.error.position, "", parsed.error.message);
         return out;
     }
     Problems p;
     const Value& root = *parsed.value;
-    if (!jsonio::checkSchema(root, kTuningSchema, kTuningVersion, p)) {
+    if (!dev::files::json::checkSchema(root, kTuningSchema, kTuningVersion, p)) {
         out.problems = std::move(p);
         return out;
     }
@@ -177,9 +177,9 @@ TuningRead tuningFromJson(std::string_view text)
     const Value* relay = o.get("relay", Value::Type::Object, false);
     const Value* ug = o.get("ultimate_gain", Value::Type::Object, false);
     if (r.method == "relay" && !relay)
-        p.add(root, "relay", msg::make("tuning.file.missing_for_method", {msg::verbatim("method", "relay")}));
+        p.add(root, "relay", motion::msg::make("tuning.file.missing_for_method", {motion::msg::verbatim("method", "relay")}));
     if (r.method == "ultimate-gain" && !ug)
-        p.add(root, "ultimate_gain", msg::make("tuning.file.missing_for_method", {msg::verbatim("method", "ultimate-gain")}));
+        p.add(root, "ultimate_gain", motion::msg::make("tuning.file.missing_for_method", {motion::msg::verbatim("method", "ultimate-gain")}));
     if (relay) {
         ObjectReader rr(*relay, "relay", p);
         if (auto v = rr.number("amplitude", true, 0, kBig))
@@ -192,7 +192,7 @@ TuningRead tuningFromJson(std::string_view text)
             r.refined = *v;
         if (const Value* pts = rr.get("points", Value::Type::Array, false)) {
             for (std::size_t i = 0; i < pts->items().size(); ++i) {
-                ObjectReader po(pts->items()[i], jsonio::childPath("relay.points", i), p);
+                ObjectReader po(pts->items()[i], dev::files::json::childPath("relay.points", i), p);
                 const auto w = po.number("omega_rad_s", true, 0, kBig), g = po.number("gain", true, 0, kBig),
                            ph = po.number("phase_deg", true, -3600, 3600);
                 po.refuseUnknown({"omega_rad_s", "gain", "phase_deg"});
@@ -208,7 +208,7 @@ TuningRead tuningFromJson(std::string_view text)
             r.step = *v;
         if (const Value* trials = uo.get("trials", Value::Type::Array, false)) {
             for (std::size_t i = 0; i < trials->items().size(); ++i) {
-                ObjectReader to(trials->items()[i], jsonio::childPath("ultimate_gain.trials", i), p);
+                ObjectReader to(trials->items()[i], dev::files::json::childPath("ultimate_gain.trials", i), p);
                 TuningResult::Trial t;
                 const auto kp = to.number("kp", true, 0, kBig), ratio = to.number("ratio", true, 0, kBig),
                            period = to.number("period_s", true, 0, 1e6);
@@ -226,7 +226,7 @@ TuningRead tuningFromJson(std::string_view text)
         TuningResult::Verification v;
         const auto rule = vo.string("rule", true);
         if (rule && !motion::control::findRule(*rule))
-            p.add(*vo.value().find("rule"), "verification.rule", msg::make("tuning.file.unknown_rule", {msg::verbatim("rule", rule->substr(0, 40))}));
+            p.add(*vo.value().find("rule"), "verification.rule", motion::msg::make("tuning.file.unknown_rule", {motion::msg::verbatim("rule", rule->substr(0, 40))}));
         if (rule)
             v.rule = *rule;
         if (const Value* g = vo.get("gains", Value::Type::Object, true))
@@ -289,15 +289,15 @@ TuningRead tuningFromJson(std::string_view text)
     return out;
 }
 
-bool saveTuningFile(const QString& path, const TuningResult& result, msg::Message* error)
+bool saveTuningFile(const QString& path, const TuningResult& result, motion::msg::Message* error)
 {
     return writeAtomically(path, tuningToJson(result), error);
 }
 
-std::optional<TuningResult> loadTuningFile(const QString& path, jsonio::Problems* problems)
+std::optional<TuningResult> loadTuningFile(const QString& path, dev::files::json::Problems* problems)
 {
     std::string text;
-    msg::Message error;
+    motion::msg::Message error;
     if (!readText(path, &text, &error)) {
         if (problems)
             problems->addFileProblem(error);
@@ -309,4 +309,4 @@ std::optional<TuningResult> loadTuningFile(const QString& path, jsonio::Problems
     return r.result;
 }
 
-} // namespace files
+} // namespace dev::files

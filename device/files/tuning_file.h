@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-namespace files {
+namespace dev::files {
 
 constexpr const char* kTuningSchema = "benchpilot.tuning";
 constexpr int kTuningVersion = 1;
@@ -22,12 +22,12 @@ std::string tuningToJson(const motion::control::TuningResult& result);
 
 struct TuningRead {
     std::optional<motion::control::TuningResult> result;
-    jsonio::Problems problems;  ///< empty when read; problems.format(file) for logs, words::fileProblems for people
+    dev::files::json::Problems problems;  ///< empty when read; problems.format(file) for logs, ui::words::fileProblems for people
 };
 /// Plain C++: what the fuzzer drives.
 TuningRead tuningFromJson(std::string_view text);
 
-bool saveTuningFile(const QString& path, const motion::control::TuningResult& result, msg::Message* error);
-std::optional<motion::control::TuningResult> loadTuningFile(const QString& path, jsonio::Problems* problems);
+bool saveTuningFile(const QString& path, const motion::control::TuningResult& result, motion::msg::Message* error);
+std::optional<motion::control::TuningResult> loadTuningFile(const QString& path, dev::files::json::Problems* problems);
 
-} // namespace files
+} // namespace dev::files

@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-namespace jobs {
+namespace dev::jobs {
 
 class ArrivalByStatus {
 public:
@@ -54,4 +54,4 @@ private:
     quint64 m_firstRestUs = 0;
 };
 
-} // namespace jobs
+} // namespace dev::jobs

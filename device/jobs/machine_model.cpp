@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace jobs {
+namespace dev::jobs {
 
 motion::scan::StageModel stageModelOf(const dev::DeviceIdentity& identity, const QVector<dev::SoftLimits>& limits)
 {
@@ -27,9 +27,9 @@ motion::scan::StageModel stageModelOf(const dev::DeviceIdentity& identity, const
     return m;
 }
 
-plates::Deck deckWithDeviceMotion(plates::Deck deck, const dev::DeviceIdentity& identity)
+motion::plates::Deck deckWithDeviceMotion(motion::plates::Deck deck, const dev::DeviceIdentity& identity)
 {
-    const std::pair<char, plates::AxisMotion*> axes[] = {{'X', &deck.x}, {'Y', &deck.y}, {'Z', &deck.z}, {'P', &deck.p}};
+    const std::pair<char, motion::plates::AxisMotion*> axes[] = {{'X', &deck.x}, {'Y', &deck.y}, {'Z', &deck.z}, {'P', &deck.p}};
     for (const auto& [letter, motion] : axes) {
         const int i = identity.axisIndex(QLatin1Char(letter));
         if (i < 0)
@@ -44,10 +44,10 @@ plates::Deck deckWithDeviceMotion(plates::Deck deck, const dev::DeviceIdentity& 
         if (a.defaultSpeed > 0)
             motion->defaultSpeed = std::min(a.defaultSpeed, motion->maxSpeed);
         // Only seed 000's S-curve has a shortest acceleration phase; another planner is
-        // timed as that curve held to its acceleration limit (plates::moveTimeS).
-        motion->accelTimeS = identity.motionProfile == proto::MotionProfile::SeedSCurve ? a.minAccelTimeS : 0.0;
+        // timed as that curve held to its acceleration limit (motion::plates::moveTimeS).
+        motion->accelTimeS = identity.motionProfile == dev::proto::MotionProfile::SeedSCurve ? a.minAccelTimeS : 0.0;
     }
     return deck;
 }
 
-} // namespace jobs
+} // namespace dev::jobs

@@ -8,7 +8,7 @@
 #include "motion/plans/plates/deck.h"
 #include "motion/plans/scan/scan_plan.h"
 
-namespace jobs {
+namespace dev::jobs {
 
 /// No jerk limit (a trapezoid planner, GRBL): a jerk so high that every ramp is within a
 /// microsecond of a trapezoid's, so the jerk-limited estimate times it as one.
@@ -22,6 +22,6 @@ motion::scan::StageModel stageModelOf(const dev::DeviceIdentity& identity, const
 /// top speed always, and its acceleration, default speed and S-curve phase when it reported
 /// its planner's limits. Recipe plans and their ETAs follow. An identity without axes (not
 /// connected) leaves the deck as the file has it.
-plates::Deck deckWithDeviceMotion(plates::Deck deck, const dev::DeviceIdentity& identity);
+motion::plates::Deck deckWithDeviceMotion(motion::plates::Deck deck, const dev::DeviceIdentity& identity);
 
-} // namespace jobs
+} // namespace dev::jobs

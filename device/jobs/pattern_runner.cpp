@@ -9,14 +9,14 @@
 #include <algorithm>
 #include <cmath>
 
-namespace jobs {
+namespace dev::jobs {
 
 using motion::path::Segment;
 using motion::path::Vec2;
 
 namespace {
-msg::Arg patternMm(const char* name, double v) { return msg::real(name, v, msg::Unit::Mm); }
-msg::Arg patternCount(const char* name, std::size_t v) { return msg::integer(name, static_cast<long long>(v), msg::Unit::None); }
+motion::msg::Arg patternMm(const char* name, double v) { return motion::msg::real(name, v, motion::msg::Unit::Mm); }
+motion::msg::Arg patternCount(const char* name, std::size_t v) { return motion::msg::integer(name, static_cast<long long>(v), motion::msg::Unit::None); }
 }
 
 const char* PatternRunner::stateTerm(State s)
@@ -36,17 +36,17 @@ const char* PatternRunner::stateTerm(State s)
 
 PatternRunner::PatternRunner(dev::Instrument* client, QObject* parent) : QObject(parent), m_client(client)
 {
-    qRegisterMetaType<jobs::PatternRunner::State>();
-    qRegisterMetaType<jobs::PatternRunSummary>();
+    qRegisterMetaType<dev::jobs::PatternRunner::State>();
+    qRegisterMetaType<dev::jobs::PatternRunSummary>();
     m_poll.setInterval(100);
     connect(&m_poll, &QTimer::timeout, this, [this] {
         if (m_state != State::Running || m_appendInFlight || !m_paths)
             return;
         m_paths->queryStatus([this](const auto& e, const dev::PathQueueState& s) {
-            if (!e && m_state == State::Running && m_t0S < 0 && m_client && s.state != proto::PathState::Idle
-                && s.state != proto::PathState::Filling)
+            if (!e && m_state == State::Running && m_t0S < 0 && m_client && s.state != dev::proto::PathState::Idle
+                && s.state != dev::proto::PathState::Filling)
                 m_t0S = m_client->status().deviceTimeUs / 1e6;  // PATH_STARTED was lost: no later than this
-            if (!e && m_state == State::Running && s.state == proto::PathState::Done && m_sent >= m_path.size() && m_client) {
+            if (!e && m_state == State::Running && s.state == dev::proto::PathState::Done && m_sent >= m_path.size() && m_client) {
                 // PATH_FINISHED was lost on the line (events are not retried): the
                 // queue's state says it; the end is no later than this reading.
                 onPathFinished(m_client->status().deviceTimeUs);
@@ -76,7 +76,7 @@ void PatternRunner::attachPaths()
     // Another backend took over (a reconnection that found another protocol): whatever
     // ran on the old one's queue is over.
     if (busy())
-        interrupt(msg::make("pattern.run.replaced"));
+        interrupt(motion::msg::make("pattern.run.replaced"));
     m_paths = paths;
     if (!paths)
         return;
@@ -97,7 +97,7 @@ void PatternRunner::attachPaths()
             return;
         ++m_underruns;
         if (!m_underrunSaid)
-            emit message(msg::make("pattern.run.underrun"), true);
+            emit message(motion::msg::make("pattern.run.underrun"), true);
         m_underrunSaid = true;
     });
     m_pathConnections << connect(paths, &dev::PathClient::finished, this, [this](quint32, quint64 us) { onPathFinished(us); });
@@ -107,7 +107,7 @@ void PatternRunner::attachPaths()
         setState(State::Paused);
         if (!m_pauseAsked)
             m_paths->queryStatus([this](const auto&, const dev::PathQueueState& s) {
-                emit message(msg::make("pattern.run.held", {msg::term("reason", dev::pathReasonTerm(s.reason))}), true);
+                emit message(motion::msg::make("pattern.run.held", {motion::msg::term("reason", dev::pathReasonTerm(s.reason))}), true);
             });
         m_pauseAsked = false;
     });
@@ -118,13 +118,13 @@ void PatternRunner::attachPaths()
         if (m_abortAsked) {
             m_poll.stop();
             setState(State::Aborted);
-            emit message(msg::make("pattern.run.aborted", {patternCount("segment", index), patternCount("total", m_path.size())}), false);
+            emit message(motion::msg::make("pattern.run.aborted", {patternCount("segment", index), patternCount("total", m_path.size())}), false);
             emit finished(summary());
             return;
         }
         m_paths->queryStatus([this, index](const auto&, const dev::PathQueueState& s) {
-            interrupt(msg::make("pattern.run.stopped_by_instrument",
-                                {patternCount("segment", index), msg::term("reason", dev::pathReasonTerm(s.reason))}));
+            interrupt(motion::msg::make("pattern.run.stopped_by_instrument",
+                                {patternCount("segment", index), motion::msg::term("reason", dev::pathReasonTerm(s.reason))}));
         });
         setState(State::Interrupted);
     });
@@ -140,41 +140,41 @@ Vec2 PatternRunner::machineXy() const
     return {st.axes[0].commanded, st.axes[1].commanded};
 }
 
-std::vector<msg::Message> PatternRunner::preflight(const std::vector<Segment>& path, const Options& options) const
+std::vector<motion::msg::Message> PatternRunner::preflight(const std::vector<Segment>& path, const Options& options) const
 {
-    std::vector<msg::Message> out;
+    std::vector<motion::msg::Message> out;
     if (!m_client || !m_paths || !m_paths->available()) {
-        out.push_back(msg::make("pattern.run.no_path_queue"));
+        out.push_back(motion::msg::make("pattern.run.no_path_queue"));
         return out;
     }
     const auto& id = m_client->identity();
     const auto& st = m_client->status();
     if (path.empty())
-        out.push_back(msg::make("pattern.run.no_segments"));
+        out.push_back(motion::msg::make("pattern.run.no_segments"));
     if (st.estop)
-        out.push_back(msg::make("pattern.run.estop_active"));
+        out.push_back(motion::msg::make("pattern.run.estop_active"));
     if (st.anyMoving())
-        out.push_back(msg::make("pattern.run.still_moving"));
+        out.push_back(motion::msg::make("pattern.run.still_moving"));
     for (int i = 0; i < 2 && i < st.axes.size(); ++i)
         if (!st.axes[i].homed)
-            out.push_back(msg::make("pattern.run.not_homed", {msg::verbatim("axis", QString(id.axes[i].letter).toStdString())}));
+            out.push_back(motion::msg::make("pattern.run.not_homed", {motion::msg::verbatim("axis", QString(id.axes[i].letter).toStdString())}));
     const int z = id.axisIndex(QLatin1Char('Z'));
     if (options.zMm) {
         if (z < 0 || !m_client->capabilities().testFlag(dev::Capability::CoupledXyThenZ)) {
-            out.push_back(msg::make("pattern.run.no_z"));
+            out.push_back(motion::msg::make("pattern.run.no_z"));
         } else {
             if (!st.axes[z].homed)
-                out.push_back(msg::make("pattern.run.not_homed", {msg::verbatim("axis", "Z")}));
+                out.push_back(motion::msg::make("pattern.run.not_homed", {motion::msg::verbatim("axis", "Z")}));
             const auto& lim = m_client->softLimits()[z];
             if (*options.zMm < lim.min || *options.zMm > lim.max)
-                out.push_back(msg::make("pattern.run.z_outside_limits", {patternMm("value", *options.zMm), patternMm("min", lim.min), patternMm("max", lim.max)}));
+                out.push_back(motion::msg::make("pattern.run.z_outside_limits", {patternMm("value", *options.zMm), patternMm("min", lim.min), patternMm("max", lim.max)}));
         }
     }
     const double vmax = m_paths->limits().maxSpeedMmS;
     for (std::size_t k = 0; k < path.size(); ++k)
         if (path[k].feedMmS > vmax + 1e-9) {
-            out.push_back(msg::make("pattern.run.feed_too_high", {patternCount("segment", k), msg::real("feed", path[k].feedMmS, msg::Unit::MmPerS),
-                                                                  msg::real("max", vmax, msg::Unit::MmPerS)}));
+            out.push_back(motion::msg::make("pattern.run.feed_too_high", {patternCount("segment", k), motion::msg::real("feed", path[k].feedMmS, motion::msg::Unit::MmPerS),
+                                                                  motion::msg::real("max", vmax, motion::msg::Unit::MmPerS)}));
             break;
         }
     if (m_client->softLimits().size() >= 2 && !path.empty()) {
@@ -208,13 +208,13 @@ void PatternRunner::onPathFinished(quint64 us)
     emit progress(m_done, m_path.size());
     setState(State::Done);
     const PatternRunSummary s = summary();
-    emit message(msg::make("pattern.run.done", {msg::real("duration", s.durationS, msg::Unit::S),
-                                                msg::real("max", s.maxContourMm * 1e3, msg::Unit::Um),
-                                                msg::real("rms", s.rmsContourMm * 1e3, msg::Unit::Um),
+    emit message(motion::msg::make("pattern.run.done", {motion::msg::real("duration", s.durationS, motion::msg::Unit::S),
+                                                motion::msg::real("max", s.maxContourMm * 1e3, motion::msg::Unit::Um),
+                                                motion::msg::real("rms", s.rmsContourMm * 1e3, motion::msg::Unit::Um),
                                                 // The contour error is only as fine as its samples: how many, and at what
                                                 // rate (a GRBL controller's status reports against a BenchPilot telemetry).
                                                 patternCount("samples", static_cast<std::size_t>(s.samples)),
-                                                msg::integer("rate", m_client ? m_client->subscribedRateHz() : 0, msg::Unit::Hz)}),
+                                                motion::msg::integer("rate", m_client ? m_client->subscribedRateHz() : 0, motion::msg::Unit::Hz)}),
                  false);
     emit finished(s);
 }
@@ -227,26 +227,26 @@ void PatternRunner::setState(State s)
     emit stateChanged(s);
 }
 
-void PatternRunner::fail(const msg::Message& why) { fail(std::vector<msg::Message>{why}); }
+void PatternRunner::fail(const motion::msg::Message& why) { fail(std::vector<motion::msg::Message>{why}); }
 
-void PatternRunner::fail(const std::vector<msg::Message>& why)
+void PatternRunner::fail(const std::vector<motion::msg::Message>& why)
 {
     m_poll.stop();
     m_arrived = nullptr;
     setState(State::Failed);
-    for (const msg::Message& m : why)
+    for (const motion::msg::Message& m : why)
         emit message(m, true);
 }
 
-void PatternRunner::interrupt(const msg::Message& why) { interrupt(std::vector<msg::Message>{why}); }
+void PatternRunner::interrupt(const motion::msg::Message& why) { interrupt(std::vector<motion::msg::Message>{why}); }
 
-void PatternRunner::interrupt(const std::vector<msg::Message>& why)
+void PatternRunner::interrupt(const std::vector<motion::msg::Message>& why)
 {
     m_poll.stop();
     m_arrived = nullptr;
     m_appendInFlight = false;
     setState(State::Interrupted);
-    for (const msg::Message& m : why)
+    for (const motion::msg::Message& m : why)
         emit message(m, true);
 }
 
@@ -254,7 +254,7 @@ bool PatternRunner::start(std::vector<Segment> path, const Options& options)
 {
     if (busy())
         return false;
-    const std::vector<msg::Message> problems = preflight(path, options);
+    const std::vector<motion::msg::Message> problems = preflight(path, options);
     if (!problems.empty()) {
         fail(problems);
         return false;
@@ -301,7 +301,7 @@ void PatternRunner::approach(Vec2 to, bool withZ, std::function<void()> then)
         if (!self || m_state != State::Approaching)
             return;
         if (e)
-            return fail(msg::make("pattern.run.approach_refused", {msg::nested("cause", e->message)}));
+            return fail(motion::msg::make("pattern.run.approach_refused", {motion::msg::nested("cause", e->message)}));
         m_arrived = then;  // onStatus() goes on once the machine is at rest there
     });
 }
@@ -318,7 +318,7 @@ void PatternRunner::onStatus()
     auto then = std::move(m_arrived);
     m_arrived = nullptr;
     if (motion::path::norm(m_approachTo - machineXy()) > 1e-3)
-        return interrupt(msg::make("pattern.run.approach_stopped"));
+        return interrupt(motion::msg::make("pattern.run.approach_stopped"));
     then();
 }
 
@@ -330,7 +330,7 @@ void PatternRunner::beginAt(std::size_t index, std::optional<Vec2> from)
         if (m_state != State::Approaching && m_state != State::Running)
             return;
         if (e)
-            return fail(msg::make("pattern.run.refused", {msg::nested("cause", e->message)}));
+            return fail(motion::msg::make("pattern.run.refused", {motion::msg::nested("cause", e->message)}));
         m_sent = index;
         m_done = index;
         m_firstFrom = from;
@@ -377,11 +377,11 @@ void PatternRunner::onReply(const std::optional<dev::RequestError>& e, const dev
         pump();
         return;
     }
-    if (e->kind == dev::RequestError::Kind::Device && e->code == proto::ErrorCode::PathQueueFull) {
+    if (e->kind == dev::RequestError::Kind::Device && e->code == dev::proto::ErrorCode::PathQueueFull) {
         m_free = static_cast<int>(e->value);  // wait for segments to complete
         return;
     }
-    if (e->kind == dev::RequestError::Kind::Device && e->code == proto::ErrorCode::PathSequence) {
+    if (e->kind == dev::RequestError::Kind::Device && e->code == dev::proto::ErrorCode::PathSequence) {
         // An answer was lost and the device already has these: go on from where it is.
         m_sent = std::clamp<std::size_t>(static_cast<std::size_t>(e->value), m_done, m_path.size());
         pump();
@@ -389,7 +389,7 @@ void PatternRunner::onReply(const std::optional<dev::RequestError>& e, const dev
     }
     if (e->kind == dev::RequestError::Kind::Device) {
         m_paths->clear();
-        return fail(msg::make("pattern.run.refused", {msg::nested("cause", e->message)}));
+        return fail(motion::msg::make("pattern.run.refused", {motion::msg::nested("cause", e->message)}));
     }
     // Link trouble: the link handler says what happened.
 }
@@ -400,7 +400,7 @@ void PatternRunner::onLinkState(dev::LinkState s)
         return;
     if (!busy())
         return;
-    interrupt(msg::make("pattern.run.link_lost", {patternCount("segment", m_done), patternCount("total", m_path.size())}));
+    interrupt(motion::msg::make("pattern.run.link_lost", {patternCount("segment", m_done), patternCount("total", m_path.size())}));
 }
 
 void PatternRunner::pause()
@@ -429,11 +429,11 @@ void PatternRunner::resume()
     if (m_state != State::Interrupted || m_path.empty())
         return;
     if (!m_paths->available())
-        return emit message(msg::make("pattern.run.reconnect_first"), true);
+        return emit message(motion::msg::make("pattern.run.reconnect_first"), true);
     m_paths->queryStatus([this](const auto& e, const dev::PathQueueState& s) {
         if (e || m_state != State::Interrupted)
             return;
-        if (s.state == proto::PathState::Held || s.state == proto::PathState::Holding) {
+        if (s.state == dev::proto::PathState::Held || s.state == dev::proto::PathState::Holding) {
             // Same path still on the device (the link came back before the device gave it up).
             m_sent = std::max<std::size_t>(m_done, s.nextIndex);
             m_free = s.freeSlots;
@@ -443,14 +443,14 @@ void PatternRunner::resume()
         }
         const std::size_t k = std::min(m_path.size() - 1, std::max(m_done, static_cast<std::size_t>(s.executingIndex)));
         m_done = k;
-        const std::vector<msg::Message> problems = preflight({m_path.begin() + static_cast<std::ptrdiff_t>(k), m_path.end()}, m_options);
+        const std::vector<motion::msg::Message> problems = preflight({m_path.begin() + static_cast<std::ptrdiff_t>(k), m_path.end()}, m_options);
         if (!problems.empty())
             return interrupt(problems);
         m_abortAsked = m_pauseAsked = false;
         const Vec2 here = machineXy();
         const auto near = motion::path::nearestOn(m_path[k], here);
         const bool onIt = std::fabs(near.distanceMm) < kOnPathMm && near.alongMm < motion::path::lengthMm(m_path[k]);
-        emit message(msg::make("pattern.run.continuing", {patternCount("segment", k)}), false);
+        emit message(motion::msg::make("pattern.run.continuing", {patternCount("segment", k)}), false);
         m_tracker->seek(k);
         setState(State::Approaching);
         if (onIt)
@@ -545,4 +545,4 @@ PatternRunSummary PatternRunner::summary() const
     return s;
 }
 
-} // namespace jobs
+} // namespace dev::jobs

@@ -21,7 +21,7 @@
 #include <optional>
 #include <vector>
 
-namespace jobs {
+namespace dev::jobs {
 
 struct PatternRunSample {
     double tS = 0;                     ///< device time since the path first started
@@ -43,7 +43,7 @@ class PatternRunner : public QObject {
     Q_OBJECT
 public:
     enum class State { Idle, Approaching, Running, Paused, Done, Aborted, Interrupted, Failed };
-    /// The state's term for people ("pattern.state.running"), worded by words::term.
+    /// The state's term for people ("pattern.state.running"), worded by ui::words::term.
     static const char* stateTerm(State s);
 
     struct Options {
@@ -60,7 +60,7 @@ public:
     explicit PatternRunner(dev::Instrument* client, QObject* parent = nullptr);
 
     /// Everything that keeps this path from running now (pattern.run.*); empty when it can.
-    std::vector<msg::Message> preflight(const std::vector<motion::path::Segment>& path, const Options& options) const;
+    std::vector<motion::msg::Message> preflight(const std::vector<motion::path::Segment>& path, const Options& options) const;
     /// How far the machine moves to reach the path's start (for a far-move confirmation).
     double approachDistanceMm(const std::vector<motion::path::Segment>& path) const;
     /// Estimated time of the path itself under the instrument's path limits.
@@ -94,22 +94,22 @@ public:
     const Options& options() const { return m_options; }
 
 signals:
-    void stateChanged(jobs::PatternRunner::State state);
+    void stateChanged(dev::jobs::PatternRunner::State state);
     void progress(std::size_t done, std::size_t total);
-    /// A message for a banner, a log or stderr (pattern.run.*, worded by words::text);
+    /// A message for a banner, a log or stderr (pattern.run.*, worded by ui::words::text);
     /// `problem` when something went wrong.
-    void message(const msg::Message& text, bool problem);
-    void finished(const jobs::PatternRunSummary& summary);
-    void sampleAdded(const jobs::PatternRunSample& sample);
+    void message(const motion::msg::Message& text, bool problem);
+    void finished(const dev::jobs::PatternRunSummary& summary);
+    void sampleAdded(const dev::jobs::PatternRunSample& sample);
 
 private:
     /// PATH_FINISHED, or a path status showing it done when the event was lost.
     void onPathFinished(quint64 deviceTimeUs);
     void setState(State s);
-    void fail(const msg::Message& why);
-    void fail(const std::vector<msg::Message>& why);
-    void interrupt(const msg::Message& why);
-    void interrupt(const std::vector<msg::Message>& why);
+    void fail(const motion::msg::Message& why);
+    void fail(const std::vector<motion::msg::Message>& why);
+    void interrupt(const motion::msg::Message& why);
+    void interrupt(const std::vector<motion::msg::Message>& why);
     void approach(motion::path::Vec2 to, bool withZ, std::function<void()> then);
     void onStatus();
     void beginAt(std::size_t index, std::optional<motion::path::Vec2> from);
@@ -150,7 +150,7 @@ private:
     QList<QMetaObject::Connection> m_pathConnections;  ///< to m_paths' signals
 };
 
-} // namespace jobs
+} // namespace dev::jobs
 
-Q_DECLARE_METATYPE(jobs::PatternRunner::State)
-Q_DECLARE_METATYPE(jobs::PatternRunSummary)
+Q_DECLARE_METATYPE(dev::jobs::PatternRunner::State)
+Q_DECLARE_METATYPE(dev::jobs::PatternRunSummary)

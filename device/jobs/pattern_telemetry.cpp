@@ -1,14 +1,14 @@
 #include "device/jobs/pattern_telemetry.h"
 
-namespace jobs {
+namespace dev::jobs {
 
-QVector<proto::ChannelRef> patternChannels()
+QVector<dev::proto::ChannelRef> patternChannels()
 {
-    return {{0, proto::ChannelKind::Commanded}, {0, proto::ChannelKind::Measured},
-            {1, proto::ChannelKind::Commanded}, {1, proto::ChannelKind::Measured}};
+    return {{0, dev::proto::ChannelKind::Commanded}, {0, dev::proto::ChannelKind::Measured},
+            {1, dev::proto::ChannelKind::Commanded}, {1, dev::proto::ChannelKind::Measured}};
 }
 
-int feedBatch(PatternRunner& runner, const dev::Instrument& client, const proto::TelemetryBatch& batch)
+int feedBatch(PatternRunner& runner, const dev::Instrument& client, const dev::proto::TelemetryBatch& batch)
 {
     const auto wanted = patternChannels();
     int column[4] = {-1, -1, -1, -1};
@@ -30,4 +30,4 @@ int feedBatch(PatternRunner& runner, const dev::Instrument& client, const proto:
     return batch.sampleCount;
 }
 
-} // namespace jobs
+} // namespace dev::jobs

@@ -4,11 +4,11 @@
 #include "device/client/instrument.h"
 #include "device/jobs/pattern_runner.h"
 
-namespace jobs {
+namespace dev::jobs {
 
 /// The channels a run needs: X and Y, commanded and measured.
-QVector<proto::ChannelRef> patternChannels();
+QVector<dev::proto::ChannelRef> patternChannels();
 /// Hands every sample of the batch that carries all four channels to the runner; returns how many.
-int feedBatch(PatternRunner& runner, const dev::Instrument& client, const proto::TelemetryBatch& batch);
+int feedBatch(PatternRunner& runner, const dev::Instrument& client, const dev::proto::TelemetryBatch& batch);
 
-} // namespace jobs
+} // namespace dev::jobs

@@ -9,11 +9,11 @@
 #include <cmath>
 #include <memory>
 
-namespace jobs {
+namespace dev::jobs {
 
-using plates::MachineMove;
-using plates::MoveKind;
-using platefiles::OpState;
+using motion::plates::MachineMove;
+using motion::plates::MoveKind;
+using dev::files::plates::OpState;
 
 namespace {
 constexpr double kSameMm = 1e-6;
@@ -32,8 +32,8 @@ const char* moveTerm(MoveKind k)
 }
 
 bool active(RunState s) { return s == RunState::Running || s == RunState::Pausing || s == RunState::Aborting; }
-msg::Arg recipeMm(std::string name, double v) { return msg::real(std::move(name), v, msg::Unit::Mm); }
-msg::Arg recipeUl(std::string name, double v) { return msg::real(std::move(name), v, msg::Unit::Ul); }
+motion::msg::Arg recipeMm(std::string name, double v) { return motion::msg::real(std::move(name), v, motion::msg::Unit::Mm); }
+motion::msg::Arg recipeUl(std::string name, double v) { return motion::msg::real(std::move(name), v, motion::msg::Unit::Ul); }
 } // namespace
 
 const char* runStateTerm(RunState s)
@@ -50,15 +50,15 @@ const char* runStateTerm(RunState s)
     return "recipe.state.idle";
 }
 
-msg::Arg RecipeRunner::opArg(int op) const
+motion::msg::Arg RecipeRunner::opArg(int op) const
 {
-    return msg::nested("op", op >= 0 && op < static_cast<int>(m_plan.ops.size()) ? m_plan.ops[static_cast<std::size_t>(op)].label()
-                                                                              : msg::make("recipe.run.the_run"));
+    return motion::msg::nested("op", op >= 0 && op < static_cast<int>(m_plan.ops.size()) ? m_plan.ops[static_cast<std::size_t>(op)].label()
+                                                                              : motion::msg::make("recipe.run.the_run"));
 }
 
 RecipeRunner::RecipeRunner(dev::Instrument* client, QObject* parent) : QObject(parent), m_client(client)
 {
-    qRegisterMetaType<jobs::RunState>();
+    qRegisterMetaType<dev::jobs::RunState>();
     m_moveTimer.setSingleShot(true);
     m_dwellTimer.setSingleShot(true);
     connect(&m_moveTimer, &QTimer::timeout, this, &RecipeRunner::onMoveTimeout);
@@ -100,7 +100,7 @@ RecipeRunner::RecipeRunner(dev::Instrument* client, QObject* parent) : QObject(p
         }
         if (++restReadings->second < 2)
             return;
-        emit message(msg::make("recipe.run.motion_done_lost", {msg::term("move", moveTerm(m.kind))}), false);
+        emit message(motion::msg::make("recipe.run.motion_done_lost", {motion::msg::term("move", moveTerm(m.kind))}), false);
         m_waitMask = 0;
         moveArrived();
     });
@@ -120,16 +120,16 @@ double RecipeRunner::plungerNow() const
     return p >= 0 && p < m_client->status().axes.size() ? m_client->status().axes[p].commanded : 0.0;
 }
 
-bool RecipeRunner::setPlan(const plates::RecipePlan& plan, const QString& recipeName, msg::Message* error)
+bool RecipeRunner::setPlan(const motion::plates::RecipePlan& plan, const QString& recipeName, motion::msg::Message* error)
 {
     if (active(m_state) || m_state == RunState::Paused) {
-        *error = msg::make("recipe.run.busy_changing");
+        *error = motion::msg::make("recipe.run.busy_changing");
         return false;
     }
     if (!plan.ok()) {
         for (const auto& p : plan.problems)
             if (p.isError()) {
-                *error = msg::make("recipe.run.does_not_validate", {msg::verbatim("field", p.path), msg::nested("cause", p.message)});
+                *error = motion::msg::make("recipe.run.does_not_validate", {motion::msg::verbatim("field", p.path), motion::msg::nested("cause", p.message)});
                 break;
             }
         return false;
@@ -144,37 +144,37 @@ bool RecipeRunner::setPlan(const plates::RecipePlan& plan, const QString& recipe
     return true;
 }
 
-bool RecipeRunner::checkMachine(msg::Message* error) const
+bool RecipeRunner::checkMachine(motion::msg::Message* error) const
 {
     if (!m_client->isReady()) {
-        *error = msg::make("recipe.run.not_connected");
+        *error = motion::msg::make("recipe.run.not_connected");
         return false;
     }
     const auto& id = m_client->identity();
-    if (id.kind != proto::DeviceKind::Analyzer || axis('X') < 0 || axis('Y') < 0 || axis('Z') < 0 || axis('P') < 0) {
-        *error = msg::make("recipe.run.not_an_analyzer", {msg::term("instrument", dev::instrumentTerm(id.kind))});
+    if (id.kind != dev::proto::DeviceKind::Analyzer || axis('X') < 0 || axis('Y') < 0 || axis('Z') < 0 || axis('P') < 0) {
+        *error = motion::msg::make("recipe.run.not_an_analyzer", {motion::msg::term("instrument", dev::instrumentTerm(id.kind))});
         return false;
     }
     const auto& st = m_client->status();
     if (st.estop) {
-        *error = msg::make("recipe.run.estop_latched");
+        *error = motion::msg::make("recipe.run.estop_latched");
         return false;
     }
     for (char c : {'X', 'Y', 'Z', 'P'}) {
         const int i = axis(c);
         if (i >= st.axes.size() || !st.axes[i].homed) {
-            *error = msg::make("recipe.run.not_homed", {msg::verbatim("axis", std::string(1, c))});
+            *error = motion::msg::make("recipe.run.not_homed", {motion::msg::verbatim("axis", std::string(1, c))});
             return false;
         }
     }
     if (st.anyMoving()) {
-        *error = msg::make("recipe.run.still_moving");
+        *error = motion::msg::make("recipe.run.still_moving");
         return false;
     }
     return true;
 }
 
-bool RecipeRunner::preflight(msg::Message* error) const
+bool RecipeRunner::preflight(motion::msg::Message* error) const
 {
     // Every target of the ops still to do against the device's soft limits, so a
     // run never stops half-way on a refusal it could have foreseen.
@@ -186,18 +186,18 @@ bool RecipeRunner::preflight(msg::Message* error) const
 
     double p = plungerNow(), pMin = p, pMax = p;
     for (std::size_t k = static_cast<std::size_t>(std::max(0, nextOpenOp(0))); k < m_plan.ops.size(); ++k) {
-        const plates::PlanOp& op = m_plan.ops[k];
-        if (platefiles::isClosed(m_opStates[k]))
+        const motion::plates::PlanOp& op = m_plan.ops[k];
+        if (dev::files::plates::isClosed(m_opStates[k]))
             continue;
-        const msg::Arg what = msg::nested("op", op.label());
+        const motion::msg::Arg what = motion::msg::nested("op", op.label());
         for (const MachineMove& m : op.moves) {
             if ((m.kind == MoveKind::Travel || m.kind == MoveKind::Touch) && (outside(ix, m.xMm) || outside(iy, m.yMm))) {
-                *error = msg::make("recipe.run.xy_beyond_limits", {what, recipeMm("x", m.xMm), recipeMm("y", m.yMm), recipeMm("x_min", limits[ix].min),
+                *error = motion::msg::make("recipe.run.xy_beyond_limits", {what, recipeMm("x", m.xMm), recipeMm("y", m.yMm), recipeMm("x_min", limits[ix].min),
                                                                    recipeMm("x_max", limits[ix].max), recipeMm("y_min", limits[iy].min), recipeMm("y_max", limits[iy].max)});
                 return false;
             }
             if ((m.kind == MoveKind::Raise || m.kind == MoveKind::Lower) && outside(iz, m.zMm)) {
-                *error = msg::make("recipe.run.z_beyond_limits", {what, recipeMm("z", m.zMm), recipeMm("min", limits[iz].min), recipeMm("max", limits[iz].max)});
+                *error = motion::msg::make("recipe.run.z_beyond_limits", {what, recipeMm("z", m.zMm), recipeMm("min", limits[iz].min), recipeMm("max", limits[iz].max)});
                 return false;
             }
             if (m.kind == MoveKind::Pump) {
@@ -208,7 +208,7 @@ bool RecipeRunner::preflight(msg::Message* error) const
         }
     }
     if (outside(ip, pMin) || outside(ip, pMax)) {
-        *error = msg::make(pMax > limits[ip].max ? "recipe.run.plunger_beyond_limits_full" : "recipe.run.plunger_beyond_limits_empty",
+        *error = motion::msg::make(pMax > limits[ip].max ? "recipe.run.plunger_beyond_limits_full" : "recipe.run.plunger_beyond_limits_empty",
                            {recipeUl("from", pMin), recipeUl("to", pMax), recipeUl("now", plungerNow()), recipeUl("min", limits[ip].min), recipeUl("max", limits[ip].max)});
         return false;
     }
@@ -228,32 +228,32 @@ void RecipeRunner::setState(RunState s)
     emit progressChanged();
 }
 
-bool RecipeRunner::logLine(jsonio::Value line)
+bool RecipeRunner::logLine(dev::files::json::Value line)
 {
     if (m_log.write(std::move(line)))
         return true;
-    const msg::Message why = m_log.lastError();
+    const motion::msg::Message why = m_log.lastError();
     m_log.close();
-    stopRun(msg::make("recipe.run.log_failed", {msg::nested("cause", why)}));
+    stopRun(motion::msg::make("recipe.run.log_failed", {motion::msg::nested("cause", why)}));
     return false;
 }
 
 int RecipeRunner::nextOpenOp(int from) const
 {
     for (int i = std::max(0, from); i < static_cast<int>(m_opStates.size()); ++i)
-        if (!platefiles::isClosed(m_opStates[static_cast<std::size_t>(i)]))
+        if (!dev::files::plates::isClosed(m_opStates[static_cast<std::size_t>(i)]))
             return i;
     return static_cast<int>(m_opStates.size());
 }
 
-bool RecipeRunner::start(const QString& logPath, msg::Message* error)
+bool RecipeRunner::start(const QString& logPath, motion::msg::Message* error)
 {
     if (active(m_state) || m_state == RunState::Paused) {
-        *error = msg::make("recipe.run.already_running");
+        *error = motion::msg::make("recipe.run.already_running");
         return false;
     }
     if (m_plan.ops.empty()) {
-        *error = msg::make("recipe.run.no_recipe");
+        *error = motion::msg::make("recipe.run.no_recipe");
         return false;
     }
     m_opStates.assign(m_plan.ops.size(), OpState::NotStarted);
@@ -261,10 +261,10 @@ bool RecipeRunner::start(const QString& logPath, msg::Message* error)
         return false;
     if (!m_log.create(logPath, error))
         return false;
-    jsonio::Value head = jsonio::schemaObject(platefiles::kRunLogSchema, platefiles::kRunLogVersion);
+    dev::files::json::Value head = dev::files::json::schemaObject(dev::files::plates::kRunLogSchema, dev::files::plates::kRunLogVersion);
     head.set("event", "run");
     head.set("recipe", m_recipeName.toStdString());
-    head.set("fingerprint", plates::fingerprintHex(m_plan.fingerprint));
+    head.set("fingerprint", motion::plates::fingerprintHex(m_plan.fingerprint));
     head.set("ops", static_cast<int>(m_plan.ops.size()));
     head.set("p_ul", plungerNow());
     if (!m_log.write(head)) {
@@ -278,10 +278,10 @@ bool RecipeRunner::start(const QString& logPath, msg::Message* error)
     m_pumpLogged = false;
     m_knowXy = m_knowZ = false;
     m_pumpUl = plungerNow();
-    emit message(msg::make("recipe.run.started", {msg::verbatim("recipe", m_recipeName.toStdString()),
-                                                  msg::integer("ops", static_cast<long long>(m_plan.ops.size())),
-                                                  msg::real("time", std::round(m_plan.totalTimeS), msg::Unit::S),
-                                                  msg::verbatim("log", QFileInfo(logPath).fileName().toStdString())}),
+    emit message(motion::msg::make("recipe.run.started", {motion::msg::verbatim("recipe", m_recipeName.toStdString()),
+                                                  motion::msg::integer("ops", static_cast<long long>(m_plan.ops.size())),
+                                                  motion::msg::real("time", std::round(m_plan.totalTimeS), motion::msg::Unit::S),
+                                                  motion::msg::verbatim("log", QFileInfo(logPath).fileName().toStdString())}),
                  false);
     beginRunning();
     return true;
@@ -315,24 +315,24 @@ void RecipeRunner::nextMove()
     if (m_inFlight)
         return;
     if (m_op >= static_cast<int>(m_plan.ops.size())) {
-        jsonio::Value v = jsonio::Value::object();
+        dev::files::json::Value v = dev::files::json::Value::object();
         v.set("event", "finished");
         logLine(std::move(v));
         m_log.close();
         setState(RunState::Finished);
-        emit message(msg::make("recipe.run.finished", {msg::verbatim("recipe", m_recipeName.toStdString()),
-                                                       msg::integer("ops", static_cast<long long>(m_plan.ops.size()))}),
+        emit message(motion::msg::make("recipe.run.finished", {motion::msg::verbatim("recipe", m_recipeName.toStdString()),
+                                                       motion::msg::integer("ops", static_cast<long long>(m_plan.ops.size()))}),
                      false);
         emit finished(true);
         return;
     }
-    const plates::PlanOp& op = m_plan.ops[static_cast<std::size_t>(m_op)];
+    const motion::plates::PlanOp& op = m_plan.ops[static_cast<std::size_t>(m_op)];
     if (m_move == 0 && m_opStates[static_cast<std::size_t>(m_op)] == OpState::NotStarted) {
-        jsonio::Value v = jsonio::Value::object();
+        dev::files::json::Value v = dev::files::json::Value::object();
         v.set("event", "start");
         v.set("op", m_op);
         v.set("step", op.step);
-        v.set("kind", plates::stepTypeName(op.type));
+        v.set("kind", motion::plates::stepTypeName(op.type));
         if (!op.plate.empty())
             v.set("plate", op.plate);
         if (!op.well.empty())
@@ -374,7 +374,7 @@ void RecipeRunner::sendMove(const MachineMove& planned)
             m.zMm = std::min(m.zMm, m_client->status().axes[iz].commanded);
     }
     if (m.kind == MoveKind::Pump && !m_pumpLogged) {
-        jsonio::Value v = jsonio::Value::object();
+        dev::files::json::Value v = dev::files::json::Value::object();
         v.set("event", "pump");
         v.set("op", m_op);
         v.set("p_ul", m_pumpUl);
@@ -426,7 +426,7 @@ void RecipeRunner::sendMove(const MachineMove& planned)
             return;
         }
         if (err) {
-            stopRun(msg::make("recipe.run.move_refused", {opArg(m_op), msg::nested("cause", err->message)}));
+            stopRun(motion::msg::make("recipe.run.move_refused", {opArg(m_op), motion::msg::nested("cause", err->message)}));
             return;
         }
         m_replied = true;
@@ -467,7 +467,7 @@ void RecipeRunner::moveArrived()
     }
     if (m_state == RunState::Aborting) {
         setState(RunState::Stopped);
-        emit message(msg::make("recipe.run.aborted_tip_up", {recipeMm("z", m_z)}), true);
+        emit message(motion::msg::make("recipe.run.aborted_tip_up", {recipeMm("z", m_z)}), true);
         emit finished(false);
         return;
     }
@@ -477,8 +477,8 @@ void RecipeRunner::moveArrived()
 
 void RecipeRunner::finishOp()
 {
-    const plates::PlanOp& op = m_plan.ops[static_cast<std::size_t>(m_op)];
-    jsonio::Value v = jsonio::Value::object();
+    const motion::plates::PlanOp& op = m_plan.ops[static_cast<std::size_t>(m_op)];
+    dev::files::json::Value v = dev::files::json::Value::object();
     v.set("event", "done");
     v.set("op", m_op);
     v.set("p_ul", m_pumpUl);
@@ -493,7 +493,7 @@ void RecipeRunner::finishOp()
     emit progressChanged();
     if (m_pauseAsked && m_op < static_cast<int>(m_plan.ops.size())) {
         setState(RunState::Paused);
-        emit message(msg::make("recipe.run.paused_after", {msg::nested("op", op.label())}), false);
+        emit message(motion::msg::make("recipe.run.paused_after", {motion::msg::nested("op", op.label())}), false);
         return;
     }
     nextMove();
@@ -503,13 +503,13 @@ void RecipeRunner::onEvent(const dev::DeviceEvent& e)
 {
     if (!active(m_state))
         return;
-    using K = proto::EventKind;
+    using K = dev::proto::EventKind;
     if (e.kind == K::EStop) {
-        stopRun(msg::make("recipe.run.estop", {opArg(m_op)}));
+        stopRun(motion::msg::make("recipe.run.estop", {opArg(m_op)}));
         return;
     }
     if (e.kind == K::LostSteps || e.kind == K::Fault) {
-        stopRun(msg::make("recipe.run.fault", {msg::term("event", proto::eventKindTerm(e.kind)), dev::eventDetail(e)}));
+        stopRun(motion::msg::make("recipe.run.fault", {motion::msg::term("event", dev::proto::eventKindTerm(e.kind)), dev::eventDetail(e)}));
         return;
     }
     if (!m_inFlight || e.axis < 0 || !(m_waitMask & (1u << e.axis)))
@@ -521,7 +521,7 @@ void RecipeRunner::onEvent(const dev::DeviceEvent& e)
     } else if (e.kind == K::Stopped || e.kind == K::LimitHit || e.kind == K::JogExpired) {
         if (m_state == RunState::Aborting)
             return;
-        stopRun(msg::make("recipe.run.event_during", {msg::term("event", proto::eventKindTerm(e.kind)), dev::eventDetail(e),
+        stopRun(motion::msg::make("recipe.run.event_during", {motion::msg::term("event", dev::proto::eventKindTerm(e.kind)), dev::eventDetail(e),
                                                       opArg(m_op)}));
     }
 }
@@ -559,27 +559,27 @@ void RecipeRunner::onMoveTimeout()
     else
         arrived = arrived && at('X', m.xMm) && at('Y', m.yMm);
     if (arrived) {
-        emit message(msg::make("recipe.run.motion_done_lost", {msg::term("move", moveTerm(m.kind))}), false);
+        emit message(motion::msg::make("recipe.run.motion_done_lost", {motion::msg::term("move", moveTerm(m.kind))}), false);
         moveArrived();
         return;
     }
     // What the device last said goes in the log beside the stop: a timeout on a line that
     // works is rare enough that whoever reads the log needs the evidence, not a guess.
-    jsonio::Value seen = jsonio::Value::object();
+    dev::files::json::Value seen = dev::files::json::Value::object();
     seen.set("replied", m_replied);
     seen.set("ready", m_client->isReady());
     seen.set("device_s_since_answer", static_cast<double>(st.deviceTimeUs - std::min(m_moveSentUs, st.deviceTimeUs)) / 1e6);
     seen.set("budget_s", budgetUs / 1e6);
-    jsonio::Value axes = jsonio::Value::object();
+    dev::files::json::Value axes = dev::files::json::Value::object();
     for (int i = 0; i < st.axes.size() && i < m_client->identity().axes.size(); ++i) {
-        jsonio::Value a = jsonio::Value::object();
+        dev::files::json::Value a = dev::files::json::Value::object();
         a.set("commanded", st.axes[i].commanded);
         a.set("measured", st.axes[i].measured);
         a.set("moving", st.axes[i].moving);
         axes.set(QString(m_client->identity().axes[i].letter).toStdString(), std::move(a));
     }
     seen.set("axes", std::move(axes));
-    jsonio::Value want = jsonio::Value::object();
+    dev::files::json::Value want = dev::files::json::Value::object();
     if (m.kind == MoveKind::Raise || m.kind == MoveKind::Lower)
         want.set("Z", m.zMm);
     else if (m.kind == MoveKind::Pump)
@@ -589,25 +589,25 @@ void RecipeRunner::onMoveTimeout()
         want.set("Y", m.yMm);
     }
     seen.set("expected", std::move(want));
-    stopRun(msg::make("recipe.run.move_timeout", {msg::term("move", moveTerm(m.kind)), opArg(m_op)}), std::move(seen));
+    stopRun(motion::msg::make("recipe.run.move_timeout", {motion::msg::term("move", moveTerm(m.kind)), opArg(m_op)}), std::move(seen));
 }
 
 void RecipeRunner::onLinkState(dev::LinkState s)
 {
     if (s == dev::LinkState::Ready && m_state == RunState::Stopped && m_op >= 0 && m_op < static_cast<int>(m_plan.ops.size())) {
-        emit message(msg::make("recipe.run.back", {opArg(m_op)}), false);
+        emit message(motion::msg::make("recipe.run.back", {opArg(m_op)}), false);
         return;
     }
     if (s != dev::LinkState::Ready && active(m_state))
         stopRun(linkLostMessage());
 }
 
-msg::Message RecipeRunner::linkLostMessage() const
+motion::msg::Message RecipeRunner::linkLostMessage() const
 {
-    return msg::make("recipe.run.link_lost", {opArg(m_op)});
+    return motion::msg::make("recipe.run.link_lost", {opArg(m_op)});
 }
 
-void RecipeRunner::stopRun(const msg::Message& reason, jsonio::Value detail)
+void RecipeRunner::stopRun(const motion::msg::Message& reason, dev::files::json::Value detail)
 {
     m_moveTimer.stop();
     m_dwellTimer.stop();
@@ -615,7 +615,7 @@ void RecipeRunner::stopRun(const msg::Message& reason, jsonio::Value detail)
     m_waitMask = 0;
     ++m_moveSerial;
     if (m_log.isOpen()) {
-        jsonio::Value v = jsonio::Value::object();
+        dev::files::json::Value v = dev::files::json::Value::object();
         v.set("event", "stop");
         v.set("reason", reason.id);  // the id: a log is read in any language
         if (detail.isObject())
@@ -631,7 +631,7 @@ void RecipeRunner::stopRun(const msg::Message& reason, jsonio::Value detail)
 void RecipeRunner::abort()
 {
     if (m_state == RunState::Paused) {
-        stopRun(msg::make("recipe.run.aborted_while_paused"));
+        stopRun(motion::msg::make("recipe.run.aborted_while_paused"));
         return;
     }
     if (m_state != RunState::Running && m_state != RunState::Pausing)
@@ -642,7 +642,7 @@ void RecipeRunner::abort()
     m_waitMask = 0;
     const int serial = ++m_moveSerial;
     if (m_log.isOpen()) {
-        jsonio::Value v = jsonio::Value::object();
+        dev::files::json::Value v = dev::files::json::Value::object();
         v.set("event", "stop");
         v.set("reason", "recipe.run.aborted");
         m_log.write(v);
@@ -667,7 +667,7 @@ void RecipeRunner::abort()
             const double safe = m_op >= 0 && m_op < static_cast<int>(m_plan.ops.size()) ? m_plan.ops[static_cast<std::size_t>(m_op)].safeZMm : 0.0;
             if (st.estop || iz < 0 || iz >= st.axes.size() || !st.axes[iz].homed) {
                 setState(RunState::Stopped);
-                emit message(msg::make("recipe.run.aborted_tip_down"), true);
+                emit message(motion::msg::make("recipe.run.aborted_tip_down"), true);
                 emit finished(false);
                 return;
             }
@@ -676,7 +676,7 @@ void RecipeRunner::abort()
             m_knowXy = false;
             if (m_z <= safe + kSameMm) {
                 setState(RunState::Stopped);
-                emit message(msg::make("recipe.run.aborted_tip_up", {recipeMm("z", m_z)}), true);
+                emit message(motion::msg::make("recipe.run.aborted_tip_up", {recipeMm("z", m_z)}), true);
                 emit finished(false);
                 return;
             }
@@ -689,4 +689,4 @@ void RecipeRunner::abort()
     });
 }
 
-} // namespace jobs
+} // namespace dev::jobs

@@ -25,7 +25,7 @@
 #include <utility>
 #include <vector>
 
-namespace jobs {
+namespace dev::jobs {
 
 enum class RunState {
     Idle,      ///< nothing under way (never started, or finished)
@@ -36,18 +36,18 @@ enum class RunState {
     Stopped,   ///< aborted, link lost, refused: resume() or resumeFromLog() can continue
     Finished,
 };
-/// The state's term for people ("recipe.state.running"), worded by words::term.
+/// The state's term for people ("recipe.state.running"), worded by ui::words::term.
 const char* runStateTerm(RunState s);
 
 /// What the operator is asked about an op that was interrupted after its
 /// plunger move had been sent.
 struct InterruptedOp {
     int op = 0;
-    msg::Message label;                  ///< recipe.op.*: "dispense 10 µL into samples B3"
+    motion::msg::Message label;                  ///< recipe.op.*: "dispense 10 µL into samples B3"
     std::optional<double> pumpStartUl;   ///< plunger when the pump move was sent
     double plannedDeltaUl = 0;           ///< what the op's pump moves add up to
     std::optional<double> plungerNowUl;  ///< where it is now
-    msg::Message evidence;               ///< recipe.evidence.*: "the plunger is where the dispense would leave it"
+    motion::msg::Message evidence;               ///< recipe.evidence.*: "the plunger is where the dispense would leave it"
 };
 enum class InterruptedChoice { Skip, Redo, Cancel };
 using InterruptedDecider = std::function<InterruptedChoice(const InterruptedOp&)>;
@@ -57,10 +57,10 @@ struct RunProgress {
     /// The op under way; -1 when none is (idle, finished, or paused between two ops:
     /// the op after a pause has not begun, so it is nextOp, not current).
     int currentOp = -1;
-    msg::Message currentWhere;  ///< recipe.where.*: "samples B3"
-    msg::Message currentLabel;  ///< recipe.op.*
+    motion::msg::Message currentWhere;  ///< recipe.where.*: "samples B3"
+    motion::msg::Message currentLabel;  ///< recipe.op.*
     int nextOp = -1;            ///< while paused: the op Resume begins with
-    msg::Message nextLabel;     ///< recipe.op.* of nextOp
+    motion::msg::Message nextLabel;     ///< recipe.op.* of nextOp
     double elapsedS = 0;    ///< running time (pauses excluded)
     double etaS = 0;        ///< remaining, from the profiles scaled by how the run is going
     double fraction = 0;    ///< of the planned time
@@ -73,26 +73,26 @@ public:
     ~RecipeRunner() override;
 
     /// The plan to run (planRecipe's result; refused when it has errors).
-    bool setPlan(const plates::RecipePlan& plan, const QString& recipeName, msg::Message* error);
-    const plates::RecipePlan& plan() const { return m_plan; }
+    bool setPlan(const motion::plates::RecipePlan& plan, const QString& recipeName, motion::msg::Message* error);
+    const motion::plates::RecipePlan& plan() const { return m_plan; }
 
     /// A new run, logged to `logPath` (a new file).
-    bool start(const QString& logPath, msg::Message* error);
+    bool start(const QString& logPath, motion::msg::Message* error);
     /// Continues the run `logPath` records (same recipe: same fingerprint). Plan
     /// it from where the run began: resumeStart() says where that was.
-    bool resumeFromLog(const QString& logPath, const InterruptedDecider& decide, msg::Message* error);
+    bool resumeFromLog(const QString& logPath, const InterruptedDecider& decide, motion::msg::Message* error);
     /// The state to plan a resumed run from: the machine as it stands, with the
     /// plunger where the logged run began (the plan's syringe accounting is the
     /// original run's). Falls back to the plunger now when the log does not say.
-    static plates::StartState resumeStart(const QString& logPath, const dev::Instrument& client);
+    static motion::plates::StartState resumeStart(const QString& logPath, const dev::Instrument& client);
     /// After a pause or a stop; `decide` is asked when the op under way had moved liquid.
-    bool resume(const InterruptedDecider& decide, msg::Message* error);
+    bool resume(const InterruptedDecider& decide, motion::msg::Message* error);
     void pause();
     void abort();
 
     RunState state() const { return m_state; }
     RunProgress progress() const;
-    const std::vector<platefiles::OpState>& opStates() const { return m_opStates; }
+    const std::vector<dev::files::plates::OpState>& opStates() const { return m_opStates; }
     QString logPath() const { return m_log.path(); }
     /// The run's per-move watchdog: a MotionDone lost on the link is noticed after
     /// the move's planned time × this + kMoveGraceMs on the device's clock, counted from
@@ -104,49 +104,49 @@ public:
     static constexpr int kMoveCheckMs = 250;
 
 signals:
-    void stateChanged(jobs::RunState state);
+    void stateChanged(dev::jobs::RunState state);
     void progressChanged();
     void opStarted(int op);
     void opFinished(int op);
-    /// A message for the operator (recipe.run.*, worded by words::text); `problem` for
+    /// A message for the operator (recipe.run.*, worded by ui::words::text); `problem` for
     /// what stopped the run.
-    void message(const msg::Message& text, bool problem);
+    void message(const motion::msg::Message& text, bool problem);
     void finished(bool completed);
 
 private:
-    bool checkMachine(msg::Message* error) const;
-    bool preflight(msg::Message* error) const;
+    bool checkMachine(motion::msg::Message* error) const;
+    bool preflight(motion::msg::Message* error) const;
     void setState(RunState s);
     /// Running from m_op; `newSession`: the pace is judged afresh (not after a pause).
     void beginRunning(bool newSession = true);
     void nextMove();
-    void sendMove(const plates::MachineMove& planned);
+    void sendMove(const motion::plates::MachineMove& planned);
     void moveArrived();
     void onEvent(const dev::DeviceEvent& e);
     void onLinkState(dev::LinkState s);
     void onMoveTimeout();
-    void stopRun(const msg::Message& reason, jsonio::Value detail = {});
-    msg::Message linkLostMessage() const;
+    void stopRun(const motion::msg::Message& reason, dev::files::json::Value detail = {});
+    motion::msg::Message linkLostMessage() const;
     /// The op's label as the `op` argument ("the run" when none is under way).
-    msg::Arg opArg(int op) const;
+    motion::msg::Arg opArg(int op) const;
     void finishOp();
-    bool logLine(jsonio::Value line);
-    bool decideInterrupted(int op, const InterruptedDecider& decide, bool* redo, msg::Message* error);
+    bool logLine(dev::files::json::Value line);
+    bool decideInterrupted(int op, const InterruptedDecider& decide, bool* redo, motion::msg::Message* error);
     bool applyDecision(int op, bool redo);
     /// preflight() as the run will be once the operator's (op, redo) decisions apply.
-    bool preflightDecided(const std::vector<std::pair<int, bool>>& decisions, msg::Message* error);
+    bool preflightDecided(const std::vector<std::pair<int, bool>>& decisions, motion::msg::Message* error);
     int nextOpenOp(int from) const;
     int axis(char letter) const;
     double plungerNow() const;
     /// After a reconnect: the same instrument as the run began on, its plunger where the
     /// run left it; says what it found (message), or why not (error).
-    bool checkResumedInstrument(msg::Message* error);
+    bool checkResumedInstrument(motion::msg::Message* error);
 
     dev::Instrument* m_client;
-    plates::RecipePlan m_plan;
+    motion::plates::RecipePlan m_plan;
     QString m_recipeName;
-    platefiles::RunLogWriter m_log;
-    std::vector<platefiles::OpState> m_opStates;
+    dev::files::plates::RunLogWriter m_log;
+    std::vector<dev::files::plates::OpState> m_opStates;
     RunState m_state = RunState::Idle;
     int m_op = -1;             ///< op under way
     int m_move = 0;            ///< next move of it
@@ -156,14 +156,14 @@ private:
     quint8 m_waitMask = 0;
     bool m_replied = false;
     int m_moveSerial = 0;      ///< callbacks of an abandoned move are ignored
-    std::optional<plates::MachineMove> m_inFlight;
+    std::optional<motion::plates::MachineMove> m_inFlight;
     // What we last commanded (valid once commanded since the (re)start).
     bool m_knowXy = false, m_knowZ = false;
     double m_x = 0, m_y = 0, m_z = 0;
     double m_pumpUl = 0;       ///< plunger (µL), from the status at (re)start plus our moves
     double m_pumpStartUl = 0;  ///< plunger when the op's "pump" line was written
     std::string m_runInstrument;  ///< model and firmware the run was (re)started on
-    std::optional<platefiles::RunLogState> m_logState;  ///< the log being resumed, while deciding
+    std::optional<dev::files::plates::RunLogState> m_logState;  ///< the log being resumed, while deciding
     QTimer m_moveTimer, m_dwellTimer;
     quint64 m_moveSentUs = 0;  ///< device clock of the first status after the move was answered (sent, until then)
     bool m_budgetStartPending = false;  ///< answered, no status since
@@ -177,6 +177,6 @@ private:
     QMetaObject::Connection m_events, m_link;
 };
 
-} // namespace jobs
+} // namespace dev::jobs
 
-Q_DECLARE_METATYPE(jobs::RunState)
+Q_DECLARE_METATYPE(dev::jobs::RunState)

@@ -8,18 +8,18 @@
 #include <algorithm>
 #include <cmath>
 
-namespace jobs {
+namespace dev::jobs {
 
-using platefiles::OpState;
+using dev::files::plates::OpState;
 
 namespace {
 constexpr double kPlungerToleranceUl = 0.05;  ///< a count of the pump's encoder
-msg::Arg resumeUl(std::string name, double v) { return msg::real(std::move(name), v, msg::Unit::Ul); }
+motion::msg::Arg resumeUl(std::string name, double v) { return motion::msg::real(std::move(name), v, motion::msg::Unit::Ul); }
 } // namespace
 
-plates::StartState RecipeRunner::resumeStart(const QString& logPath, const dev::Instrument& client)
+motion::plates::StartState RecipeRunner::resumeStart(const QString& logPath, const dev::Instrument& client)
 {
-    plates::StartState s;
+    motion::plates::StartState s;
     const auto& a = client.status().axes;
     const auto& id = client.identity();
     const int ix = id.axisIndex(QLatin1Char('X')), iy = id.axisIndex(QLatin1Char('Y')), iz = id.axisIndex(QLatin1Char('Z')),
@@ -27,9 +27,9 @@ plates::StartState RecipeRunner::resumeStart(const QString& logPath, const dev::
     if (ix >= 0 && iy >= 0 && iz >= 0 && ip >= 0 && std::max({ix, iy, iz, ip}) < a.size())
         s = {a[ix].commanded, a[iy].commanded, a[iz].commanded, a[ip].commanded};
     std::string text;
-    msg::Message error;
-    if (files::readText(logPath, &text, &error))
-        if (const auto p = platefiles::readRunLog(text).startPumpUl)
+    motion::msg::Message error;
+    if (dev::files::readText(logPath, &text, &error))
+        if (const auto p = dev::files::plates::readRunLog(text).startPumpUl)
             s.pumpUl = *p;
     return s;
 }
@@ -40,7 +40,7 @@ RunProgress RecipeRunner::progress() const
     p.opsTotal = static_cast<int>(m_plan.ops.size());
     double plannedClosed = 0, remaining = 0;
     for (std::size_t i = 0; i < m_plan.ops.size() && i < m_opStates.size(); ++i) {
-        if (platefiles::isClosed(m_opStates[i])) {
+        if (dev::files::plates::isClosed(m_opStates[i])) {
             ++p.opsDone;
             plannedClosed += m_plan.ops[i].durationS;
         } else {
@@ -54,7 +54,7 @@ RunProgress RecipeRunner::progress() const
         p.nextOp = m_op;
         p.nextLabel = m_plan.ops[static_cast<std::size_t>(m_op)].label();
     } else if (m_op >= 0 && m_op < p.opsTotal && m_state != RunState::Finished) {
-        const plates::PlanOp& op = m_plan.ops[static_cast<std::size_t>(m_op)];
+        const motion::plates::PlanOp& op = m_plan.ops[static_cast<std::size_t>(m_op)];
         p.currentOp = m_op;
         p.currentWhere = op.where();
         p.currentLabel = op.label();
@@ -70,9 +70,9 @@ RunProgress RecipeRunner::progress() const
     return p;
 }
 
-bool RecipeRunner::decideInterrupted(int op, const InterruptedDecider& decide, bool* redo, msg::Message* error)
+bool RecipeRunner::decideInterrupted(int op, const InterruptedDecider& decide, bool* redo, motion::msg::Message* error)
 {
-    const plates::PlanOp& plan = m_plan.ops[static_cast<std::size_t>(op)];
+    const motion::plates::PlanOp& plan = m_plan.ops[static_cast<std::size_t>(op)];
     InterruptedOp q;
     q.op = op;
     q.label = plan.label();
@@ -85,21 +85,21 @@ bool RecipeRunner::decideInterrupted(int op, const InterruptedDecider& decide, b
     if (q.pumpStartUl && std::abs(plan.pumpNetUl) > kPlungerToleranceUl) {
         const double end = *q.pumpStartUl + plan.pumpNetUl;
         if (std::abs(*q.plungerNowUl - end) <= kPlungerToleranceUl)
-            q.evidence = msg::make("recipe.evidence.moved_in_full", {resumeUl("plunger", end)});
+            q.evidence = motion::msg::make("recipe.evidence.moved_in_full", {resumeUl("plunger", end)});
         else if (std::abs(*q.plungerNowUl - *q.pumpStartUl) <= kPlungerToleranceUl)
-            q.evidence = msg::make("recipe.evidence.nothing_moved", {resumeUl("plunger", *q.pumpStartUl)});
+            q.evidence = motion::msg::make("recipe.evidence.nothing_moved", {resumeUl("plunger", *q.pumpStartUl)});
         else
-            q.evidence = msg::make("recipe.evidence.part_moved", {resumeUl("plunger", *q.plungerNowUl), resumeUl("before", *q.pumpStartUl), resumeUl("after", end)});
+            q.evidence = motion::msg::make("recipe.evidence.part_moved", {resumeUl("plunger", *q.plungerNowUl), resumeUl("before", *q.pumpStartUl), resumeUl("after", end)});
     } else {
-        q.evidence = msg::make("recipe.evidence.cannot_tell", {msg::term("step", std::string("recipe.step.") + plates::stepTypeName(plan.type))});
+        q.evidence = motion::msg::make("recipe.evidence.cannot_tell", {motion::msg::term("step", std::string("recipe.step.") + motion::plates::stepTypeName(plan.type))});
     }
     if (!decide) {
-        *error = msg::make("recipe.run.interrupted_needs_decision", {msg::nested("op", q.label), msg::nested("evidence", q.evidence)});
+        *error = motion::msg::make("recipe.run.interrupted_needs_decision", {motion::msg::nested("op", q.label), motion::msg::nested("evidence", q.evidence)});
         return false;
     }
     const InterruptedChoice c = decide(q);
     if (c == InterruptedChoice::Cancel) {
-        *error = msg::make("recipe.run.not_resumed_no_decision", {msg::nested("op", q.label)});
+        *error = motion::msg::make("recipe.run.not_resumed_no_decision", {motion::msg::nested("op", q.label)});
         return false;
     }
     *redo = c == InterruptedChoice::Redo;
@@ -107,7 +107,7 @@ bool RecipeRunner::decideInterrupted(int op, const InterruptedDecider& decide, b
 }
 
 /// Writes the operator's decision about `op` and sets it up to be skipped or begun again.
-bool RecipeRunner::preflightDecided(const std::vector<std::pair<int, bool>>& decisions, msg::Message* error)
+bool RecipeRunner::preflightDecided(const std::vector<std::pair<int, bool>>& decisions, motion::msg::Message* error)
 {
     // The plunger already stands after a skipped op's pump move (the analyzer
     // finished it): counting that move again made a dispense that was skipped
@@ -123,7 +123,7 @@ bool RecipeRunner::preflightDecided(const std::vector<std::pair<int, bool>>& dec
 
 bool RecipeRunner::applyDecision(int op, bool redo)
 {
-    jsonio::Value v = jsonio::Value::object();
+    dev::files::json::Value v = dev::files::json::Value::object();
     v.set("event", redo ? "redo" : "skip");
     v.set("op", op);
     v.set("p_ul", plungerNow());
@@ -131,31 +131,31 @@ bool RecipeRunner::applyDecision(int op, bool redo)
     if (!m_log.write(v))
         return false;
     m_opStates[static_cast<std::size_t>(op)] = redo ? OpState::NotStarted : OpState::Skipped;
-    emit message(msg::make(redo ? "recipe.run.will_redo" : "recipe.run.counts_as_done", {opArg(op)}), false);
+    emit message(motion::msg::make(redo ? "recipe.run.will_redo" : "recipe.run.counts_as_done", {opArg(op)}), false);
     return true;
 }
 
-bool RecipeRunner::checkResumedInstrument(msg::Message* error)
+bool RecipeRunner::checkResumedInstrument(motion::msg::Message* error)
 {
     // A reconnect may find another instrument, or this one power-cycled: its plunger
     // then holds nothing the log says it should, and the next wells would get wrong volumes.
     const auto& id = m_client->identity();
     const std::string now = (id.model + QLatin1Char(' ') + id.firmware).trimmed().toStdString();
     if (!m_runInstrument.empty() && now != m_runInstrument) {
-        *error = msg::make("recipe.resume.other_instrument", {msg::verbatim("was", m_runInstrument), msg::verbatim("now", now)});
+        *error = motion::msg::make("recipe.resume.other_instrument", {motion::msg::verbatim("was", m_runInstrument), motion::msg::verbatim("now", now)});
         return false;
     }
     const double plunger = plungerNow();
     // Mid-pump the plunger's place is the evidence the operator decides on (decideInterrupted).
     if (!m_pumpLogged && std::abs(plunger - m_pumpUl) > kPlungerToleranceUl) {
-        *error = msg::make("recipe.run.plunger_moved", {resumeUl("plunger", plunger), resumeUl("logged", m_pumpUl)});
+        *error = motion::msg::make("recipe.run.plunger_moved", {resumeUl("plunger", plunger), resumeUl("logged", m_pumpUl)});
         return false;
     }
-    emit message(msg::make("recipe.resume.found", {msg::verbatim("instrument", now), resumeUl("plunger", plunger)}), false);
+    emit message(motion::msg::make("recipe.resume.found", {motion::msg::verbatim("instrument", now), resumeUl("plunger", plunger)}), false);
     return true;
 }
 
-bool RecipeRunner::resume(const InterruptedDecider& decide, msg::Message* error)
+bool RecipeRunner::resume(const InterruptedDecider& decide, motion::msg::Message* error)
 {
     if (m_state == RunState::Paused) {
         if (!checkMachine(error) || !preflight(error))
@@ -165,11 +165,11 @@ bool RecipeRunner::resume(const InterruptedDecider& decide, msg::Message* error)
         return true;
     }
     if (m_state != RunState::Stopped || m_op < 0 || m_op >= static_cast<int>(m_plan.ops.size())) {
-        *error = msg::make("recipe.run.nothing_to_resume");
+        *error = motion::msg::make("recipe.run.nothing_to_resume");
         return false;
     }
     if (!m_log.isOpen()) {
-        *error = msg::make("recipe.run.log_closed");
+        *error = motion::msg::make("recipe.run.log_closed");
         return false;
     }
     if (!checkMachine(error) || !checkResumedInstrument(error))
@@ -179,7 +179,7 @@ bool RecipeRunner::resume(const InterruptedDecider& decide, msg::Message* error)
         return false;
     if (!preflightDecided(m_pumpLogged ? std::vector<std::pair<int, bool>>{{m_op, redo}} : std::vector<std::pair<int, bool>>{}, error))
         return false;
-    jsonio::Value v = jsonio::Value::object();
+    dev::files::json::Value v = dev::files::json::Value::object();
     v.set("event", "resume");
     if (!m_log.write(v)) {
         *error = m_log.lastError();
@@ -203,33 +203,33 @@ bool RecipeRunner::resume(const InterruptedDecider& decide, msg::Message* error)
     return true;
 }
 
-bool RecipeRunner::resumeFromLog(const QString& logPath, const InterruptedDecider& decide, msg::Message* error)
+bool RecipeRunner::resumeFromLog(const QString& logPath, const InterruptedDecider& decide, motion::msg::Message* error)
 {
     if (m_state == RunState::Running || m_state == RunState::Pausing || m_state == RunState::Aborting || m_state == RunState::Paused) {
-        *error = msg::make("recipe.run.already_running");
+        *error = motion::msg::make("recipe.run.already_running");
         return false;
     }
     std::string text;
-    if (!files::readText(logPath, &text, error))
+    if (!dev::files::readText(logPath, &text, error))
         return false;
-    platefiles::RunLogState st = platefiles::readRunLog(text);
+    dev::files::plates::RunLogState st = dev::files::plates::readRunLog(text);
     const QString name = QFileInfo(logPath).fileName();
-    const msg::Arg logArg = msg::verbatim("log", name.toStdString());
+    const motion::msg::Arg logArg = motion::msg::verbatim("log", name.toStdString());
     if (!st.problems.empty()) {
         // The first problem says why; the log itself is left as it is for a person to read.
-        const msg::Problem& first = st.problems.list().front();
-        *error = msg::make("recipe.run.log_untrusted", {logArg, msg::integer("line", first.line, msg::Unit::None),
-                                                        msg::nested("cause", first.message)});
+        const motion::msg::Problem& first = st.problems.list().front();
+        *error = motion::msg::make("recipe.run.log_untrusted", {logArg, motion::msg::integer("line", first.line, motion::msg::Unit::None),
+                                                        motion::msg::nested("cause", first.message)});
         return false;
     }
-    if (st.fingerprint != plates::fingerprintHex(m_plan.fingerprint) || st.opCount != static_cast<int>(m_plan.ops.size())) {
-        *error = msg::make("recipe.run.log_of_other_recipe", {logArg, msg::integer("log_ops", st.opCount), msg::verbatim("log_plan", st.fingerprint),
-                                                              msg::integer("ops", static_cast<long long>(m_plan.ops.size())),
-                                                              msg::verbatim("plan", plates::fingerprintHex(m_plan.fingerprint))});
+    if (st.fingerprint != motion::plates::fingerprintHex(m_plan.fingerprint) || st.opCount != static_cast<int>(m_plan.ops.size())) {
+        *error = motion::msg::make("recipe.run.log_of_other_recipe", {logArg, motion::msg::integer("log_ops", st.opCount), motion::msg::verbatim("log_plan", st.fingerprint),
+                                                              motion::msg::integer("ops", static_cast<long long>(m_plan.ops.size())),
+                                                              motion::msg::verbatim("plan", motion::plates::fingerprintHex(m_plan.fingerprint))});
         return false;
     }
     if (st.finished) {
-        *error = msg::make("recipe.run.log_finished", {logArg});
+        *error = motion::msg::make("recipe.run.log_finished", {logArg});
         return false;
     }
     if (!checkMachine(error))
@@ -241,12 +241,12 @@ bool RecipeRunner::resumeFromLog(const QString& logPath, const InterruptedDecide
     // With nothing interrupted, the plunger must be where the last completed op
     // left it; otherwise the syringe's content is not what the log says.
     if (interrupted.empty() && st.lastPumpUl && std::abs(*st.lastPumpUl - plungerNow()) > kPlungerToleranceUl) {
-        *error = msg::make("recipe.run.plunger_moved", {resumeUl("plunger", plungerNow()), resumeUl("logged", *st.lastPumpUl)});
+        *error = motion::msg::make("recipe.run.plunger_moved", {resumeUl("plunger", plungerNow()), resumeUl("logged", *st.lastPumpUl)});
         return false;
     }
     m_opStates.assign(m_plan.ops.size(), OpState::NotStarted);
     for (std::size_t i = 0; i < st.ops.size(); ++i)
-        if (platefiles::isClosed(st.ops[i].state))
+        if (dev::files::plates::isClosed(st.ops[i].state))
             m_opStates[i] = st.ops[i].state;
     m_logState = std::move(st);
     std::vector<std::pair<int, bool>> decisions;
@@ -263,7 +263,7 @@ bool RecipeRunner::resumeFromLog(const QString& logPath, const InterruptedDecide
         return false;
     if (!m_log.append(logPath, error))
         return false;
-    jsonio::Value v = jsonio::Value::object();
+    dev::files::json::Value v = dev::files::json::Value::object();
     v.set("event", "resume");
     if (!m_log.write(v)) {
         *error = m_log.lastError();
@@ -274,21 +274,21 @@ bool RecipeRunner::resumeFromLog(const QString& logPath, const InterruptedDecide
             *error = m_log.lastError();
             return false;
         }
-    const int started = std::count_if(m_opStates.begin(), m_opStates.end(), platefiles::isClosed);
+    const int started = std::count_if(m_opStates.begin(), m_opStates.end(), dev::files::plates::isClosed);
     m_elapsedBeforeS = 0;
     m_op = nextOpenOp(0);
     m_move = 0;
     m_pumpLogged = false;
     m_knowXy = m_knowZ = false;
     m_pumpUl = plungerNow();
-    emit message(msg::make("recipe.run.resuming", {msg::verbatim("recipe", m_recipeName.toStdString()), logArg,
-                                                   msg::integer("done", started), msg::integer("ops", static_cast<long long>(m_plan.ops.size())),
+    emit message(motion::msg::make("recipe.run.resuming", {motion::msg::verbatim("recipe", m_recipeName.toStdString()), logArg,
+                                                   motion::msg::integer("done", started), motion::msg::integer("ops", static_cast<long long>(m_plan.ops.size())),
                                                    m_op < static_cast<int>(m_plan.ops.size()) ? opArg(m_op)
-                                                                                              : msg::nested("op", msg::make("recipe.run.the_end"))}),
+                                                                                              : motion::msg::nested("op", motion::msg::make("recipe.run.the_end"))}),
                  false);
     emit progressChanged();
     beginRunning();
     return true;
 }
 
-} // namespace jobs
+} // namespace dev::jobs

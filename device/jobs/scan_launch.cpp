@@ -2,7 +2,7 @@
 
 #include "motion/long_move.h"
 
-namespace jobs {
+namespace dev::jobs {
 
 using Kind = ScanDecision::Kind;
 
@@ -66,4 +66,4 @@ bool ScanLaunch::holds(std::uint64_t fingerprint, const QString* folder) const
     return m_holding && m_heldFingerprint == fingerprint && (!folder || *folder == m_heldFolder);
 }
 
-} // namespace jobs
+} // namespace dev::jobs

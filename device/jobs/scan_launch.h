@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace jobs {
+namespace dev::jobs {
 
 /// What starting the prepared run now would do.
 struct ScanOutlook {
@@ -38,8 +38,8 @@ struct ScanDecision {
         Ready,          ///< prepared and nothing in the way: `outlook` says what start() does
     };
     Kind kind = Kind::Refused;
-    msg::Message error;
-    std::vector<msg::Message> blockers;
+    motion::msg::Message error;
+    std::vector<motion::msg::Message> blockers;
     ScanOutlook outlook;
 };
 
@@ -60,7 +60,7 @@ public:
     ScanDecision beginAnew() { return prepare(m_plan, m_folder, true); }
     /// What start() would do now; the runner must be prepared.
     ScanOutlook outlook() const;
-    bool start(msg::Message* error) { return m_runner->start(error); }
+    bool start(motion::msg::Message* error) { return m_runner->start(error); }
 
     /// The runner holds a run of this layout that got past prepare(), in `folder` when one
     /// is given: its taken tiles and measured positions are this plan's.
@@ -75,4 +75,4 @@ private:
     QString m_heldFolder;
 };
 
-} // namespace jobs
+} // namespace dev::jobs

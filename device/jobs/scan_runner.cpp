@@ -15,7 +15,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace jobs {
+namespace dev::jobs {
 
 using motion::scan::Point2;
 
@@ -48,7 +48,7 @@ constexpr double kScanMsPerS = 1e3;
 
 ScanRunner::ScanRunner(dev::Instrument* client, QObject* parent) : QObject(parent), m_client(client)
 {
-    qRegisterMetaType<jobs::ScanRunner::State>();
+    qRegisterMetaType<dev::jobs::ScanRunner::State>();
     m_exposure.setSingleShot(true);
     m_exposure.setTimerType(Qt::PreciseTimer);
     connect(&m_exposure, &QTimer::timeout, this, &ScanRunner::onExposureEnd);
@@ -56,11 +56,11 @@ ScanRunner::ScanRunner(dev::Instrument* client, QObject* parent) : QObject(paren
     connect(&m_settleTimeout, &QTimer::timeout, this, [this] {
         if (m_phase != Phase::Settling)
             return;
-        stopWith(msg::make("scan.run.not_settled", {tileArg(m_layout.path[static_cast<std::size_t>(m_pathIndex)].tile),
-                                                     msg::real("tolerance", m_plan.toleranceUm, msg::Unit::Um),
-                                                     msg::real("timeout", m_plan.settleTimeoutS, msg::Unit::S),
-                                                     msg::real("off_x", m_lastOffUm[0], msg::Unit::Um),
-                                                     msg::real("off_y", m_lastOffUm[1], msg::Unit::Um)}),
+        stopWith(motion::msg::make("scan.run.not_settled", {tileArg(m_layout.path[static_cast<std::size_t>(m_pathIndex)].tile),
+                                                     motion::msg::real("tolerance", m_plan.toleranceUm, motion::msg::Unit::Um),
+                                                     motion::msg::real("timeout", m_plan.settleTimeoutS, motion::msg::Unit::S),
+                                                     motion::msg::real("off_x", m_lastOffUm[0], motion::msg::Unit::Um),
+                                                     motion::msg::real("off_y", m_lastOffUm[1], motion::msg::Unit::Um)}),
                  false);
     });
     m_clientConnections << connect(m_client, &dev::Instrument::eventReceived, this, &ScanRunner::onEvent);
@@ -81,7 +81,7 @@ ScanRunner::ScanRunner(dev::Instrument* client, QObject* parent) : QObject(paren
     m_clientConnections << connect(m_client, &dev::Instrument::limitsChanged, this, retakeStageModel);
     m_clientConnections << connect(m_client, &dev::Instrument::stateChanged, this, [this](dev::LinkState st) {
         if (st != dev::LinkState::Ready && isActive())
-            stopWith(msg::make("scan.run.link_lost", {tileArg(currentTile())}), false);
+            stopWith(motion::msg::make("scan.run.link_lost", {tileArg(currentTile())}), false);
     });
 }
 
@@ -115,14 +115,14 @@ void ScanRunner::refreshCompensation()
         });
 }
 
-QString ScanRunner::logPath() const { return QDir(m_folder).filePath(QString::fromLatin1(scanfile::kRunLogFile)); }
+QString ScanRunner::logPath() const { return QDir(m_folder).filePath(QString::fromLatin1(dev::files::scan::kRunLogFile)); }
 
-msg::Arg ScanRunner::tileArg(int tile) const
+motion::msg::Arg ScanRunner::tileArg(int tile) const
 {
     if (tile < 0 || tile >= totalTiles())
-        return msg::nested("tile", msg::make("scan.run.the_start"));
-    return msg::nested("tile", msg::make("scan.run.tile", {msg::integer("tile", tile + 1, msg::Unit::None), msg::integer("total", totalTiles()),
-                                                           msg::verbatim("label", m_records[static_cast<std::size_t>(tile)].label)}));
+        return motion::msg::nested("tile", motion::msg::make("scan.run.the_start"));
+    return motion::msg::nested("tile", motion::msg::make("scan.run.tile", {motion::msg::integer("tile", tile + 1, motion::msg::Unit::None), motion::msg::integer("total", totalTiles()),
+                                                           motion::msg::verbatim("label", m_records[static_cast<std::size_t>(tile)].label)}));
 }
 
 const char* ScanRunner::stateTerm(State s)
@@ -146,22 +146,22 @@ void ScanRunner::setState(State s)
     emit stateChanged(s);
 }
 
-bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& folder, bool restart, msg::Message* error, Refusal* why)
+bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& folder, bool restart, motion::msg::Message* error, Refusal* why)
 {
     Refusal unused;
     Refusal& reason = why ? *why : unused;
     reason = Refusal::Other;  // every early return below is "something else"
     if (isActive()) {
-        *error = msg::make("scan.run.busy_preparing");
+        *error = motion::msg::make("scan.run.busy_preparing");
         return false;
     }
     const auto problems = motion::scan::validate(plan);
     if (!problems.empty()) {
-        *error = msg::make("scan.run.plan_problem", {msg::verbatim("field", problems.front().path), msg::nested("cause", problems.front().message)});
+        *error = motion::msg::make("scan.run.plan_problem", {motion::msg::verbatim("field", problems.front().path), motion::msg::nested("cause", problems.front().message)});
         return false;
     }
     if (!QDir().mkpath(folder)) {
-        *error = msg::make("file.cannot_make_folder", {msg::verbatim("folder", folder.toStdString())});
+        *error = motion::msg::make("file.cannot_make_folder", {motion::msg::verbatim("folder", folder.toStdString())});
         return false;
     }
     m_log.close();
@@ -169,7 +169,7 @@ bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& fold
     m_plan = plan;
     m_folder = folder;
     m_layout = motion::scan::layoutScan(plan);
-    m_records = scanfile::plannedRecords(plan, m_layout);
+    m_records = dev::files::scan::plannedRecords(plan, m_layout);
     m_images.assign(m_layout.tiles.size(), {});
     m_finishWhenWritten = false;
     m_taken.assign(m_layout.tiles.size(), 0);
@@ -180,7 +180,7 @@ bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& fold
     bool fresh = true;
     if (QFileInfo::exists(logPath()) && !adoptRunLog(fingerprint, restart, &fresh, error, &reason))
         return false;
-    if (fresh && !files::writeAtomically(logPath(), scanfile::runLogHeader(m_plan.name, fingerprint, totalTiles()), error))
+    if (fresh && !dev::files::writeAtomically(logPath(), dev::files::scan::runLogHeader(m_plan.name, fingerprint, totalTiles()), error))
         return false;
     m_stageModel = stageModelOf(m_client->identity(), m_client->softLimits());
     m_estimate = motion::scan::estimateScan(m_plan, m_layout, m_stageModel);
@@ -193,17 +193,17 @@ bool ScanRunner::prepare(const motion::scan::ScanPlan& plan, const QString& fold
     return true;
 }
 
-bool ScanRunner::adoptRunLog(std::uint64_t fingerprint, bool restart, bool* fresh, msg::Message* error, Refusal* why)
+bool ScanRunner::adoptRunLog(std::uint64_t fingerprint, bool restart, bool* fresh, motion::msg::Message* error, Refusal* why)
 {
     std::string text;
-    if (!files::readText(logPath(), &text, error))
+    if (!dev::files::readText(logPath(), &text, error))
         return false;
-    const auto log = scanfile::parseRunLog(text);
+    const auto log = dev::files::scan::parseRunLog(text);
     if (!log.log) {
-        const msg::Problem& first = log.problems.list().front();
-        *error = msg::make("scan.run.log_damaged", {msg::verbatim("log", scanfile::kRunLogFile),
-                                                    msg::integer("line", first.line, msg::Unit::None),
-                                                    msg::nested("cause", first.message)});
+        const motion::msg::Problem& first = log.problems.list().front();
+        *error = motion::msg::make("scan.run.log_damaged", {motion::msg::verbatim("log", dev::files::scan::kRunLogFile),
+                                                    motion::msg::integer("line", first.line, motion::msg::Unit::None),
+                                                    motion::msg::nested("cause", first.message)});
         return false;
     }
     if (log.log->fingerprint == fingerprint && !restart) {
@@ -212,21 +212,21 @@ bool ScanRunner::adoptRunLog(std::uint64_t fingerprint, bool restart, bool* fres
     }
     if (!restart) {
         *why = Refusal::OtherScansLog;
-        *error = msg::make("scan.run.other_scans_log", {msg::integer("taken", static_cast<long long>(log.log->records.size())),
-                                                        msg::integer("tiles", log.log->tiles)});
+        *error = motion::msg::make("scan.run.other_scans_log", {motion::msg::integer("taken", static_cast<long long>(log.log->records.size())),
+                                                        motion::msg::integer("tiles", log.log->tiles)});
         return false;
     }
     // Nothing is thrown away: the old log moves aside under its time.
     const QString aside = QDir(m_folder).filePath(
         QStringLiteral("scan-run.%1.jsonl").arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"))));
     if (!QFile::rename(logPath(), aside)) {
-        *error = msg::make("scan.run.cannot_move_log", {msg::verbatim("file", aside.toStdString())});
+        *error = motion::msg::make("scan.run.cannot_move_log", {motion::msg::verbatim("file", aside.toStdString())});
         return false;
     }
     return true;
 }
 
-bool ScanRunner::continueFromLog(const scanfile::RunLog& log, std::uint64_t fingerprint, msg::Message* error)
+bool ScanRunner::continueFromLog(const dev::files::scan::RunLog& log, std::uint64_t fingerprint, motion::msg::Message* error)
 {
     // The last line of a tile counts (a tile is logged once; a log edited by hand may not be).
     std::vector<int> lastLine(m_records.size(), -1);
@@ -244,7 +244,7 @@ bool ScanRunner::continueFromLog(const scanfile::RunLog& log, std::uint64_t fing
             dropped = true;
             continue;
         }
-        const scanfile::TileImageRef image = i < log.images.size() ? log.images[i] : scanfile::TileImageRef{};
+        const dev::files::scan::TileImageRef image = i < log.images.size() ? log.images[i] : dev::files::scan::TileImageRef{};
         // With a camera, a tile is taken when its image is there, whole and the one logged.
         if (m_camera && !imageIntact(image)) {
             dropped = true;
@@ -265,10 +265,10 @@ bool ScanRunner::continueFromLog(const scanfile::RunLog& log, std::uint64_t fing
     // A line torn by a crash would sit in front of the next one, and a tile taken again
     // must not be logged twice: write the log out again with the lines that stand
     // (atomically, so this cannot lose them either).
-    std::string clean = scanfile::runLogHeader(m_plan.name, fingerprint, totalTiles());
+    std::string clean = dev::files::scan::runLogHeader(m_plan.name, fingerprint, totalTiles());
     for (std::size_t i : kept)
-        clean += scanfile::runLogLine(log.records[i], i < log.images.size() ? log.images[i] : scanfile::TileImageRef{});
-    return files::writeAtomically(logPath(), clean, error);
+        clean += dev::files::scan::runLogLine(log.records[i], i < log.images.size() ? log.images[i] : dev::files::scan::TileImageRef{});
+    return dev::files::writeAtomically(logPath(), clean, error);
 }
 
 Point2 ScanRunner::commanded(int pathIndex) const
@@ -276,43 +276,43 @@ Point2 ScanRunner::commanded(int pathIndex) const
     return motion::scan::commandedTarget(m_plan, m_layout.path[static_cast<std::size_t>(pathIndex)].target);
 }
 
-std::vector<msg::Message> ScanRunner::preflight() const
+std::vector<motion::msg::Message> ScanRunner::preflight() const
 {
-    std::vector<msg::Message> out;
+    std::vector<motion::msg::Message> out;
     if (!m_prepared) {
-        out.push_back(msg::make("scan.run.not_prepared"));
+        out.push_back(motion::msg::make("scan.run.not_prepared"));
         return out;
     }
     if (!m_client->isReady()) {
-        out.push_back(msg::make("scan.run.not_connected"));
+        out.push_back(motion::msg::make("scan.run.not_connected"));
         return out;
     }
     const auto& id = m_client->identity();
-    if (id.kind != proto::DeviceKind::Stage || id.axes.size() < 2) {
-        out.push_back(msg::make("scan.run.not_a_stage", {msg::term("instrument", dev::instrumentTerm(id.kind))}));
+    if (id.kind != dev::proto::DeviceKind::Stage || id.axes.size() < 2) {
+        out.push_back(motion::msg::make("scan.run.not_a_stage", {motion::msg::term("instrument", dev::instrumentTerm(id.kind))}));
         return out;
     }
     const auto& st = m_client->status();
     if (st.estop)
-        out.push_back(msg::make("scan.run.estop_latched"));
+        out.push_back(motion::msg::make("scan.run.estop_latched"));
     if (st.axes.size() >= 2 && (!st.axes[0].homed || !st.axes[1].homed))
-        out.push_back(msg::make("scan.run.not_homed"));
+        out.push_back(motion::msg::make("scan.run.not_homed"));
     if (m_plan.compensation.enabled) {
         // The plan trusts the stage to move each target by its own correction.
         if (!m_client->can(dev::Capability::Compensation) || !m_client->compensation())
-            out.push_back(msg::make("scan.run.no_compensation_on_stage"));
+            out.push_back(motion::msg::make("scan.run.no_compensation_on_stage"));
         else
             for (int axis = 0; axis < 2; ++axis) {
-                const msg::Arg letter = msg::verbatim("axis", axis == 0 ? "X" : "Y");
+                const motion::msg::Arg letter = motion::msg::verbatim("axis", axis == 0 ? "X" : "Y");
                 if (!m_compEnabled[axis])
-                    out.push_back(msg::make("scan.run.compensation_being_read", {letter}));
+                    out.push_back(motion::msg::make("scan.run.compensation_being_read", {letter}));
                 else if (!*m_compEnabled[axis])
-                    out.push_back(msg::make("scan.run.compensation_not_enabled", {letter}));
+                    out.push_back(motion::msg::make("scan.run.compensation_not_enabled", {letter}));
             }
     }
     // The whole plan against the device's travel and soft limits, before anything moves.
     for (const auto& p : motion::scan::validate(m_plan, m_stageModel))
-        out.push_back(msg::make("scan.run.plan_problem", {msg::verbatim("field", p.path), msg::nested("cause", p.message)}));
+        out.push_back(motion::msg::make("scan.run.plan_problem", {motion::msg::verbatim("field", p.path), motion::msg::nested("cause", p.message)}));
     return out;
 }
 
@@ -330,13 +330,13 @@ int ScanRunner::waypointToResumeAt() const
     return static_cast<int>(m_layout.path.size());
 }
 
-bool ScanRunner::start(msg::Message* error)
+bool ScanRunner::start(motion::msg::Message* error)
 {
     if (isActive()) {
-        *error = msg::make("scan.run.already_running");
+        *error = motion::msg::make("scan.run.already_running");
         return false;
     }
-    const std::vector<msg::Message> blockers = preflight();
+    const std::vector<motion::msg::Message> blockers = preflight();
     if (!blockers.empty()) {
         *error = blockers.front();
         return false;
@@ -382,7 +382,7 @@ void ScanRunner::abort()
 {
     if (!isActive())
         return;
-    stopWith(msg::make("scan.run.aborted", {tileArg(currentTile())}), true);
+    stopWith(motion::msg::make("scan.run.aborted", {tileArg(currentTile())}), true);
 }
 
 int ScanRunner::currentTile() const
@@ -424,23 +424,23 @@ double ScanRunner::etaS() const
     return remaining;
 }
 
-bool ScanRunner::openLog(msg::Message* error)
+bool ScanRunner::openLog(motion::msg::Message* error)
 {
     if (m_log.isOpen())
         return true;
     m_log.setFileName(logPath());
     if (!m_log.open(QIODevice::WriteOnly | QIODevice::Append)) {
-        *error = msg::make("file.log.cannot_open", {msg::verbatim("file", logPath().toStdString()), msg::verbatim("detail", m_log.errorString().toStdString())});
+        *error = motion::msg::make("file.log.cannot_open", {motion::msg::verbatim("file", logPath().toStdString()), motion::msg::verbatim("detail", m_log.errorString().toStdString())});
         return false;
     }
     return true;
 }
 
-bool ScanRunner::appendLog(const std::string& line, msg::Message* error)
+bool ScanRunner::appendLog(const std::string& line, motion::msg::Message* error)
 {
     // One write and a flush per tile: a crash of the program loses nothing taken.
     if (m_log.write(line.data(), static_cast<qint64>(line.size())) != static_cast<qint64>(line.size()) || !m_log.flush()) {
-        *error = msg::make("file.log.cannot_write", {msg::verbatim("file", logPath().toStdString()), msg::verbatim("detail", m_log.errorString().toStdString())});
+        *error = motion::msg::make("file.log.cannot_write", {motion::msg::verbatim("file", logPath().toStdString()), motion::msg::verbatim("detail", m_log.errorString().toStdString())});
         return false;
     }
     return true;
@@ -498,9 +498,9 @@ void ScanRunner::finishRun()
     m_finishWhenWritten = false;
     m_log.close();
     QStringList written;
-    msg::Message error;
+    motion::msg::Message error;
     if (!writeExports(&written, &error))
-        emit problem(msg::make("scan.run.exports_failed", {msg::nested("cause", error)}));
+        emit problem(motion::msg::make("scan.run.exports_failed", {motion::msg::nested("cause", error)}));
     setState(State::Finished);
     emit progress(m_takenCount, totalTiles(), 0);
     emit finished(written);
@@ -516,16 +516,16 @@ void ScanRunner::onMoveAccepted(const std::optional<dev::RequestError>& error)
     }
     // A move lost with the link is the link's story, whichever signal comes first.
     if (error->kind == dev::RequestError::Kind::LinkDown || error->kind == dev::RequestError::Kind::Timeout || !m_client->isReady())
-        stopWith(msg::make("scan.run.link_lost_cause", {tileArg(currentTile()), msg::nested("cause", error->message)}), false);
+        stopWith(motion::msg::make("scan.run.link_lost_cause", {tileArg(currentTile()), motion::msg::nested("cause", error->message)}), false);
     else
-        stopWith(msg::make("scan.run.move_refused", {tileArg(currentTile()), msg::nested("cause", error->message)}), false);
+        stopWith(motion::msg::make("scan.run.move_refused", {tileArg(currentTile()), motion::msg::nested("cause", error->message)}), false);
 }
 
 void ScanRunner::onEvent(const dev::DeviceEvent& e)
 {
     if (m_phase == Phase::None)
         return;
-    using proto::EventKind;
+    using dev::proto::EventKind;
     switch (e.kind) {
     case EventKind::MotionDone:
         if (m_phase != Phase::Moving || e.axis < 0 || e.axis > 1)
@@ -537,14 +537,14 @@ void ScanRunner::onEvent(const dev::DeviceEvent& e)
         onMoveArrived();
         return;
     case EventKind::EStop:
-        stopWith(msg::make("scan.run.estop", {tileArg(currentTile())}), false);
+        stopWith(motion::msg::make("scan.run.estop", {tileArg(currentTile())}), false);
         return;
     case EventKind::Stopped:
     case EventKind::LimitHit:
     case EventKind::Fault:
     case EventKind::LostSteps:
         if (e.axis <= 1)
-            stopWith(msg::make("scan.run.stage_event", {msg::term("event", proto::eventKindTerm(e.kind)), dev::eventDetail(e),
+            stopWith(motion::msg::make("scan.run.stage_event", {motion::msg::term("event", dev::proto::eventKindTerm(e.kind)), dev::eventDetail(e),
                                                         tileArg(currentTile())}),
                      false);
         return;
@@ -643,10 +643,10 @@ void ScanRunner::onExposureEnd()
     r.measuredMm = m_triggerMm;
     r.deviceTimeUs = m_triggerUs;
     r.settleS = m_triggerUs > m_motionDoneUs ? static_cast<double>(m_triggerUs - m_motionDoneUs) * kScanSecondsPerUs : 0.0;
-    msg::Message error;
-    if (!appendLog(scanfile::runLogLine(r), &error)) {
+    motion::msg::Message error;
+    if (!appendLog(dev::files::scan::runLogLine(r), &error)) {
         r.measuredMm.clear();
-        stopWith(msg::make("scan.run.log_failed", {msg::nested("cause", error)}), false);
+        stopWith(motion::msg::make("scan.run.log_failed", {motion::msg::nested("cause", error)}), false);
         return;
     }
     if (!m_taken[static_cast<std::size_t>(tile)]) {
@@ -662,7 +662,7 @@ void ScanRunner::onExposureEnd()
     nextWaypoint();
 }
 
-void ScanRunner::stopWith(const msg::Message& message, bool stopStage)
+void ScanRunner::stopWith(const motion::msg::Message& message, bool stopStage)
 {
     m_exposure.stop();
     m_settleTimeout.stop();
@@ -678,13 +678,13 @@ void ScanRunner::stopWith(const msg::Message& message, bool stopStage)
     emit progress(m_takenCount, totalTiles(), etaS());
 }
 
-bool ScanRunner::writeExports(QStringList* written, msg::Message* error) const
+bool ScanRunner::writeExports(QStringList* written, motion::msg::Message* error) const
 {
     if (!m_prepared) {
-        *error = msg::make("scan.run.not_prepared");
+        *error = motion::msg::make("scan.run.not_prepared");
         return false;
     }
-    return scanfile::writeExports(m_folder, m_plan, m_layout, m_records, written, error);
+    return dev::files::scan::writeExports(m_folder, m_plan, m_layout, m_records, written, error);
 }
 
-} // namespace jobs
+} // namespace dev::jobs

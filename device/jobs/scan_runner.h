@@ -16,7 +16,7 @@
 // It needs no protocol of its own: a move, the MotionDone event and a status reading
 // (grating positions with the device's clock) carry everything (docs/scan.md), so it
 // runs on any dev::Instrument. Estimates use the limits the device reported
-// (jobs::stageModelOf).
+// (dev::jobs::stageModelOf).
 #include "device/client/instrument.h"
 #include "device/files/scan_run_log.h"
 #include "device/jobs/scan_tile_camera.h"
@@ -31,7 +31,7 @@
 #include <optional>
 #include <vector>
 
-namespace jobs {
+namespace dev::jobs {
 
 class ScanRunner : public QObject {
     Q_OBJECT
@@ -59,7 +59,7 @@ public:
     /// Takes the plan and the folder its run log and exports go to. A run log there
     /// of the same tiles is continued; one of other tiles is refused unless
     /// `restart`, which keeps it under another name and starts afresh.
-    bool prepare(const motion::scan::ScanPlan& plan, const QString& folder, bool restart, msg::Message* error,
+    bool prepare(const motion::scan::ScanPlan& plan, const QString& folder, bool restart, motion::msg::Message* error,
                  Refusal* why = nullptr);
 
     /// The camera that takes each tile (nullptr: none, the plan's exposure is a dwell).
@@ -67,12 +67,12 @@ public:
     void setCamera(ScanTileCamera* camera);
     ScanTileCamera* camera() const { return m_camera; }
     /// The tile's image as the run log has it (empty file: none).
-    const scanfile::TileImageRef& image(int tile) const { return m_images.at(static_cast<std::size_t>(tile)); }
+    const dev::files::scan::TileImageRef& image(int tile) const { return m_images.at(static_cast<std::size_t>(tile)); }
 
     /// What keeps the prepared run from starting now, one message each (scan.run.*); empty = ready.
-    std::vector<msg::Message> preflight() const;
+    std::vector<motion::msg::Message> preflight() const;
     /// Starts, or resumes after a pause or a stop, at the first tile not yet taken.
-    bool start(msg::Message* error);
+    bool start(motion::msg::Message* error);
     void pause();
     void abort();
 
@@ -95,19 +95,19 @@ public:
     QString folder() const { return m_folder; }
     QString logPath() const;
     /// Writes TileConfiguration.txt, positions.pos and scan.csv into the folder.
-    bool writeExports(QStringList* written, msg::Message* error) const;
+    bool writeExports(QStringList* written, motion::msg::Message* error) const;
 
-    /// The state's term for people ("scan.state.running"), worded by words::term.
+    /// The state's term for people ("scan.state.running"), worded by ui::words::term.
     static const char* stateTerm(State s);
 
 signals:
-    void stateChanged(jobs::ScanRunner::State state);
+    void stateChanged(dev::jobs::ScanRunner::State state);
     void progress(int taken, int total, double etaS);
     /// The stage sits within tolerance at `tile`: where a camera would be triggered.
     void triggered(int tile, quint64 deviceTimeUs);
     void tileTaken(int tile);
-    /// Why the run stopped or would not start (scan.run.*, worded by words::text).
-    void problem(const msg::Message& message);
+    /// Why the run stopped or would not start (scan.run.*, worded by ui::words::text).
+    void problem(const motion::msg::Message& message);
     /// Every tile taken; `exports` are the files written.
     void finished(const QStringList& exports);
 
@@ -128,27 +128,27 @@ private:
     /// The camera's side of a tile (scan_runner_camera.cpp).
     void takeWithCamera(int tile);
     void onCameraExposed(int tile);
-    void onImageWritten(int tile, const jobs::TileImage& image);
-    void onCameraFailed(int tile, const msg::Message& reason);
+    void onImageWritten(int tile, const dev::jobs::TileImage& image);
+    void onCameraFailed(int tile, const motion::msg::Message& reason);
     /// A tile of the log whose image is missing, cut short or not the one logged.
-    bool imageIntact(const scanfile::TileImageRef& image) const;
+    bool imageIntact(const dev::files::scan::TileImageRef& image) const;
     void addCameraTimeToEstimate();
     void finishRun();
-    void stopWith(const msg::Message& message, bool stopStage);
+    void stopWith(const motion::msg::Message& message, bool stopStage);
     /// A plan that runs with the stage's own compensation: reads whether X and Y have it
     /// enabled (again whenever the device says it changed), for preflight().
     void refreshCompensation();
     /// The folder's run log: continued when it is of these tiles, refused (`why`) when it is
     /// another plan's, set aside when `restart`. `fresh` says whether a new log is to begin.
-    bool adoptRunLog(std::uint64_t fingerprint, bool restart, bool* fresh, msg::Message* error, Refusal* why);
+    bool adoptRunLog(std::uint64_t fingerprint, bool restart, bool* fresh, motion::msg::Message* error, Refusal* why);
     /// Marks the log's tiles taken, and writes the log out again without a torn last line.
-    bool continueFromLog(const scanfile::RunLog& log, std::uint64_t fingerprint, msg::Message* error);
-    bool openLog(msg::Message* error);
-    bool appendLog(const std::string& line, msg::Message* error);
+    bool continueFromLog(const dev::files::scan::RunLog& log, std::uint64_t fingerprint, motion::msg::Message* error);
+    bool openLog(motion::msg::Message* error);
+    bool appendLog(const std::string& line, motion::msg::Message* error);
     int waypointToResumeAt() const;
     motion::scan::Point2 commanded(int pathIndex) const;
     /// The `tile` argument: scan.run.tile {tile, total, label}, or scan.run.the_start.
-    msg::Arg tileArg(int tile) const;
+    motion::msg::Arg tileArg(int tile) const;
 
     dev::Instrument* m_client;
     motion::scan::ScanPlan m_plan;
@@ -178,7 +178,7 @@ private:
     QTimer m_exposure, m_settleTimeout;
     QPointer<ScanTileCamera> m_camera;
     QList<QMetaObject::Connection> m_cameraConnections;
-    std::vector<scanfile::TileImageRef> m_images;  ///< per tile, as logged
+    std::vector<dev::files::scan::TileImageRef> m_images;  ///< per tile, as logged
     QTimer m_cameraTimeout;               ///< a camera that never ends the exposure stops the run
     bool m_finishWhenWritten = false;     ///< every tile exposed; finishing waits for the last images
     int m_sessionFirstTaken = 0;         ///< tiles taken when this start or resume began
@@ -189,6 +189,6 @@ private:
     QPointer<QObject> m_compWatched;         ///< the compensation part whose changes are followed
 };
 
-} // namespace jobs
+} // namespace dev::jobs
 
-Q_DECLARE_METATYPE(jobs::ScanRunner::State)
+Q_DECLARE_METATYPE(dev::jobs::ScanRunner::State)

@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-namespace jobs {
+namespace dev::jobs {
 
 namespace {
 /// A camera that has not ended an exposure this long after its end stops the run: a hung
@@ -33,9 +33,9 @@ void ScanRunner::setCamera(ScanTileCamera* camera)
                         << connect(&m_cameraTimeout, &QTimer::timeout, this, [this] {
                                if (m_phase != Phase::Exposing)
                                    return;
-                               onCameraFailed(currentTile(), msg::make("scan.run.camera_silent",
-                                                                       {msg::verbatim("camera", m_camera ? m_camera->sourceName() : std::string()),
-                                                                        msg::real("seconds", kScanCameraGraceS, msg::Unit::S)}));
+                               onCameraFailed(currentTile(), motion::msg::make("scan.run.camera_silent",
+                                                                       {motion::msg::verbatim("camera", m_camera ? m_camera->sourceName() : std::string()),
+                                                                        motion::msg::real("seconds", kScanCameraGraceS, motion::msg::Unit::S)}));
                            });
 }
 
@@ -57,7 +57,7 @@ void ScanRunner::addCameraTimeToEstimate()
     m_estimate.exposureS += extra * seen;
 }
 
-bool ScanRunner::imageIntact(const scanfile::TileImageRef& image) const
+bool ScanRunner::imageIntact(const dev::files::scan::TileImageRef& image) const
 {
     if (image.file.empty())
         return false;
@@ -103,11 +103,11 @@ void ScanRunner::onImageWritten(int tile, const TileImage& image)
     motion::PositionRecord& r = m_records[static_cast<std::size_t>(tile)];
     if (!r.measured() || m_taken[static_cast<std::size_t>(tile)])
         return;  // exposed after a stop, or already logged: never twice
-    const scanfile::TileImageRef ref{image.file, image.sha256};
-    msg::Message error;
-    if (!appendLog(scanfile::runLogLine(r, ref), &error)) {
+    const dev::files::scan::TileImageRef ref{image.file, image.sha256};
+    motion::msg::Message error;
+    if (!appendLog(dev::files::scan::runLogLine(r, ref), &error)) {
         r.measuredMm.clear();
-        stopWith(msg::make("scan.run.log_failed", {msg::nested("cause", error)}), true);
+        stopWith(motion::msg::make("scan.run.log_failed", {motion::msg::nested("cause", error)}), true);
         return;
     }
     m_images[static_cast<std::size_t>(tile)] = ref;
@@ -119,17 +119,17 @@ void ScanRunner::onImageWritten(int tile, const TileImage& image)
         finishRun();
 }
 
-void ScanRunner::onCameraFailed(int tile, const msg::Message& reason)
+void ScanRunner::onCameraFailed(int tile, const motion::msg::Message& reason)
 {
     if (tile >= 0 && tile < totalTiles() && !m_taken[static_cast<std::size_t>(tile)])
         m_records[static_cast<std::size_t>(tile)].measuredMm.clear();
     // Whatever the stage is doing (settled at this tile, or on its way to the next while
     // the image was being written), the run stops here; every tile logged stays.
     if (m_state == State::Stopped) {
-        emit problem(msg::make("scan.run.camera_failed", {tileArg(tile), msg::nested("cause", reason)}));
+        emit problem(motion::msg::make("scan.run.camera_failed", {tileArg(tile), motion::msg::nested("cause", reason)}));
         return;
     }
-    stopWith(msg::make("scan.run.camera_failed", {tileArg(tile), msg::nested("cause", reason)}), true);
+    stopWith(motion::msg::make("scan.run.camera_failed", {tileArg(tile), motion::msg::nested("cause", reason)}), true);
 }
 
-} // namespace jobs
+} // namespace dev::jobs

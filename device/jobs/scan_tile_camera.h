@@ -19,7 +19,7 @@ namespace motion::scan {
 struct ScanPlan;
 }
 
-namespace jobs {
+namespace dev::jobs {
 
 struct TileShot {
     int tile = -1;
@@ -42,7 +42,7 @@ public:
 
     /// Readies the camera for the plan and the folder the images go to; false with the
     /// reason (the camera is not there, its sensor is not the plan's, …).
-    virtual bool begin(const motion::scan::ScanPlan& plan, const std::string& folder, msg::Message* error) = 0;
+    virtual bool begin(const motion::scan::ScanPlan& plan, const std::string& folder, motion::msg::Message* error) = 0;
     virtual void take(const TileShot& shot) = 0;
     /// Images taken and not yet written.
     virtual int pendingWrites() const = 0;
@@ -54,8 +54,8 @@ public:
 
 signals:
     void exposed(int tile);
-    void written(int tile, const jobs::TileImage& image);
-    void failed(int tile, const msg::Message& reason);
+    void written(int tile, const dev::jobs::TileImage& image);
+    void failed(int tile, const motion::msg::Message& reason);
 };
 
-} // namespace jobs
+} // namespace dev::jobs

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace gaugewire {
+namespace dev::gaugewire {
 namespace {
 
 bool isSpace(char c) { return c == ' ' || c == '\t'; }
@@ -33,9 +33,9 @@ double unitToMm(std::string_view unit)
     return 0;
 }
 
-msg::Message notAReading(std::string_view line, const std::string& port)
+motion::msg::Message notAReading(std::string_view line, const std::string& port)
 {
-    return msg::make("gauge.not_a_reading", {msg::verbatim("port", port), msg::verbatim("text", printable(line))});
+    return motion::msg::make("gauge.not_a_reading", {motion::msg::verbatim("port", port), motion::msg::verbatim("text", printable(line))});
 }
 
 } // namespace
@@ -129,8 +129,8 @@ Answer parseAnswer(std::string_view line, const std::string& port)
     }
     const double toMm = unitToMm(unit);
     if (toMm == 0) {
-        a.problem = msg::make("gauge.unknown_unit", {msg::verbatim("port", port), msg::verbatim("text", printable(line)),
-                                                     msg::verbatim("unit", printable(unit))});
+        a.problem = motion::msg::make("gauge.unknown_unit", {motion::msg::verbatim("port", port), motion::msg::verbatim("text", printable(line)),
+                                                     motion::msg::verbatim("unit", printable(unit))});
         return a;
     }
     // from_chars: the C locale's '.', whatever locale the program runs in (strtod
@@ -148,4 +148,4 @@ Answer parseAnswer(std::string_view line, const std::string& port)
     return a;
 }
 
-} // namespace gaugewire
+} // namespace dev::gaugewire

@@ -19,7 +19,7 @@
 #include <string>
 #include <string_view>
 
-namespace gaugewire {
+namespace dev::gaugewire {
 
 /// What the host writes to ask for one reading.
 constexpr const char* kRequest = "?\r";
@@ -30,7 +30,7 @@ struct Answer {
     std::optional<double> valueMm;  ///< the reading, converted to mm
     /// Why there is no value: gauge.not_a_reading {port, text} or
     /// gauge.unknown_unit {port, text, unit}.
-    msg::Message problem;
+    motion::msg::Message problem;
 };
 
 /// One answer line (without its line end). `port` names the port in messages.
@@ -40,4 +40,4 @@ Answer parseAnswer(std::string_view line, const std::string& port);
 /// are, control and invalid bytes as \r, \n, \t or \xHH; cut to 80 characters with "…".
 std::string printable(std::string_view bytes);
 
-} // namespace gaugewire
+} // namespace dev::gaugewire

@@ -15,16 +15,16 @@ GaugeLink::GaugeLink(Transport* transport, QString port, QObject* parent)
             return;
         if (!m_line.isEmpty() || m_overlong) {
             // It said something, never ended the line: that is its answer, and not a reading.
-            finish(std::nullopt, msg::make("gauge.not_a_reading", {msg::verbatim("port", m_port.toStdString()),
-                                                                  msg::verbatim("text", gaugewire::printable(m_line.toStdString()))}));
+            finish(std::nullopt, motion::msg::make("gauge.not_a_reading", {motion::msg::verbatim("port", m_port.toStdString()),
+                                                                  motion::msg::verbatim("text", dev::gaugewire::printable(m_line.toStdString()))}));
             return;
         }
         if (m_attemptsLeft > 0) {
             sendRequest();
             return;
         }
-        finish(std::nullopt, msg::make("gauge.no_answer", {msg::verbatim("port", m_port.toStdString()),
-                                                          msg::real("timeout", m_timeoutMs * 1e-3, msg::Unit::S)}));
+        finish(std::nullopt, motion::msg::make("gauge.no_answer", {motion::msg::verbatim("port", m_port.toStdString()),
+                                                          motion::msg::real("timeout", m_timeoutMs * 1e-3, motion::msg::Unit::S)}));
     });
     if (!m_transport)
         return;
@@ -33,13 +33,13 @@ GaugeLink::GaugeLink(Transport* transport, QString port, QObject* parent)
         if (auto done = std::exchange(m_opening, {}))
             done({});
     });
-    m_connections << connect(m_transport, &Transport::failed, this, [this](const msg::Message& why) {
+    m_connections << connect(m_transport, &Transport::failed, this, [this](const motion::msg::Message& why) {
         if (auto done = std::exchange(m_opening, {}))
-            done(msg::make("gauge.port_failed", {msg::verbatim("port", m_port.toStdString()), msg::nested("detail", why)}));
+            done(motion::msg::make("gauge.port_failed", {motion::msg::verbatim("port", m_port.toStdString()), motion::msg::nested("detail", why)}));
     });
-    m_connections << connect(m_transport, &Transport::lost, this, [this](const msg::Message& why) {
+    m_connections << connect(m_transport, &Transport::lost, this, [this](const motion::msg::Message& why) {
         if (m_pending)
-            finish(std::nullopt, msg::make("gauge.link_lost", {msg::verbatim("port", m_port.toStdString()), msg::nested("detail", why)}));
+            finish(std::nullopt, motion::msg::make("gauge.link_lost", {motion::msg::verbatim("port", m_port.toStdString()), motion::msg::nested("detail", why)}));
     });
 }
 
@@ -52,7 +52,7 @@ GaugeLink::~GaugeLink()
 void GaugeLink::open(OpenDone done)
 {
     if (!m_transport) {
-        done(msg::make("gauge.no_transport", {msg::verbatim("port", m_port.toStdString())}));
+        done(motion::msg::make("gauge.no_transport", {motion::msg::verbatim("port", m_port.toStdString())}));
         return;
     }
     if (m_transport->isOpen()) {
@@ -75,11 +75,11 @@ bool GaugeLink::isOpen() const { return m_transport && m_transport->isOpen(); }
 void GaugeLink::read(ReadDone done)
 {
     if (m_pending) {
-        done(std::nullopt, msg::make("gauge.busy", {msg::verbatim("port", m_port.toStdString())}));
+        done(std::nullopt, motion::msg::make("gauge.busy", {motion::msg::verbatim("port", m_port.toStdString())}));
         return;
     }
     if (!isOpen()) {
-        done(std::nullopt, msg::make("gauge.not_open", {msg::verbatim("port", m_port.toStdString())}));
+        done(std::nullopt, motion::msg::make("gauge.not_open", {motion::msg::verbatim("port", m_port.toStdString())}));
         return;
     }
     m_pending = std::move(done);
@@ -100,7 +100,7 @@ void GaugeLink::sendRequest()
     // out, or a line the gauge sent by itself.
     m_line.clear();
     m_overlong = false;
-    m_transport->write(QByteArray(gaugewire::kRequest));
+    m_transport->write(QByteArray(dev::gaugewire::kRequest));
     m_timer.start(m_timeoutMs);
 }
 
@@ -113,16 +113,16 @@ void GaugeLink::onBytes(const QByteArray& bytes)
             if (!m_pending || (line.isEmpty() && !overlong))
                 continue;  // nothing asked, or the LF of a CR LF
             if (overlong) {
-                finish(std::nullopt, msg::make("gauge.not_a_reading", {msg::verbatim("port", m_port.toStdString()),
-                                                                      msg::verbatim("text", gaugewire::printable(line.toStdString()))}));
+                finish(std::nullopt, motion::msg::make("gauge.not_a_reading", {motion::msg::verbatim("port", m_port.toStdString()),
+                                                                      motion::msg::verbatim("text", dev::gaugewire::printable(line.toStdString()))}));
                 continue;
             }
-            const auto a = gaugewire::parseAnswer(std::string_view(line.constData(), static_cast<std::size_t>(line.size())),
+            const auto a = dev::gaugewire::parseAnswer(std::string_view(line.constData(), static_cast<std::size_t>(line.size())),
                                                   m_port.toStdString());
             finish(a.valueMm, a.problem);
             continue;
         }
-        if (static_cast<std::size_t>(m_line.size()) >= gaugewire::kMaxAnswerBytes) {
+        if (static_cast<std::size_t>(m_line.size()) >= dev::gaugewire::kMaxAnswerBytes) {
             m_overlong = true;  // keeps the start for the message, drops the rest up to the line end
             continue;
         }
@@ -130,7 +130,7 @@ void GaugeLink::onBytes(const QByteArray& bytes)
     }
 }
 
-void GaugeLink::finish(std::optional<double> value, const msg::Message& problem)
+void GaugeLink::finish(std::optional<double> value, const motion::msg::Message& problem)
 {
     m_timer.stop();
     if (auto done = std::exchange(m_pending, {}))

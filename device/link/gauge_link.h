@@ -34,13 +34,13 @@ public:
     void setAttempts(int n) { m_attempts = n < 1 ? 1 : n; }
     QString port() const { return m_port; }
 
-    using OpenDone = std::function<void(const msg::Message& problem)>;  ///< empty problem: open
+    using OpenDone = std::function<void(const motion::msg::Message& problem)>;  ///< empty problem: open
     /// Opens the transport (gauge.port_failed {port, detail} when it cannot be).
     void open(OpenDone done);
     void close();
     bool isOpen() const;
 
-    using ReadDone = std::function<void(std::optional<double> valueMm, const msg::Message& problem)>;
+    using ReadDone = std::function<void(std::optional<double> valueMm, const motion::msg::Message& problem)>;
     /// One reading. Problems: gauge.not_a_reading, gauge.unknown_unit (what it sent),
     /// gauge.no_answer {port, timeout}, gauge.link_lost {port, detail}, gauge.busy (a read
     /// is already waiting), gauge.not_open. Every read is answered exactly once.
@@ -51,7 +51,7 @@ public:
 private:
     void onBytes(const QByteArray& bytes);
     void sendRequest();
-    void finish(std::optional<double> value, const msg::Message& problem);
+    void finish(std::optional<double> value, const motion::msg::Message& problem);
 
     QPointer<Transport> m_transport;
     QString m_port;

@@ -13,7 +13,7 @@ public:
     {
         QTimer::singleShot(0, this, [this] {
             if (m_pair->m_unplugged) {
-                emit failed(msg::make("link.cable_unplugged"));
+                emit failed(motion::msg::make("link.cable_unplugged"));
                 return;
             }
             m_open = true;
@@ -45,7 +45,7 @@ public:
         if (m_open)
             emit bytesReceived(bytes);
     }
-    void drop(const msg::Message& why)
+    void drop(const motion::msg::Message& why)
     {
         if (!m_open)
             return;
@@ -80,7 +80,7 @@ void LoopbackPair::unplug()
     m_unplugged = true;
     m_pending.clear();
     for (auto* e : m_ends)
-        static_cast<LoopbackEnd*>(e)->drop(msg::make("link.cable_pulled"));
+        static_cast<LoopbackEnd*>(e)->drop(motion::msg::make("link.cable_pulled"));
 }
 
 void LoopbackPair::hang(int ms)

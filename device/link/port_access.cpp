@@ -36,13 +36,13 @@ PortAccess portAccess(const QString& path)
     return a;
 }
 
-msg::Message permissionProblem(const QString& port, const PortAccess& access, const QString& detail)
+motion::msg::Message permissionProblem(const QString& port, const PortAccess& access, const QString& detail)
 {
     if (!access.denied)
-        return msg::make("link.port_busy", {msg::verbatim("port", port.toStdString()), msg::verbatim("detail", detail.toStdString())});
+        return motion::msg::make("link.port_busy", {motion::msg::verbatim("port", port.toStdString()), motion::msg::verbatim("detail", detail.toStdString())});
     if (!access.group.isEmpty())
-        return msg::make("link.port_group", {msg::verbatim("port", port.toStdString()), msg::verbatim("group", access.group.toStdString())});
-    return msg::make("link.port_denied", {msg::verbatim("port", port.toStdString()), msg::verbatim("mode", access.mode.toStdString())});
+        return motion::msg::make("link.port_group", {motion::msg::verbatim("port", port.toStdString()), motion::msg::verbatim("group", access.group.toStdString())});
+    return motion::msg::make("link.port_denied", {motion::msg::verbatim("port", port.toStdString()), motion::msg::verbatim("mode", access.mode.toStdString())});
 }
 
 } // namespace dev

@@ -21,6 +21,6 @@ PortAccess portAccess(const QString& path);
 /// The message for a port that would not open with QSerialPort's PermissionError:
 /// link.port_group (join the group), link.port_denied (no group would help), or
 /// link.port_busy when the user may open it (then another program holds it).
-msg::Message permissionProblem(const QString& port, const PortAccess& access, const QString& detail);
+motion::msg::Message permissionProblem(const QString& port, const PortAccess& access, const QString& detail);
 
 } // namespace dev

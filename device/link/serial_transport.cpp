@@ -15,8 +15,8 @@ SerialTransport::SerialTransport(const QString& portName, qint32 baud, QObject* 
     connect(m_port, &QSerialPort::errorOccurred, this, [this](QSerialPort::SerialPortError e) {
         // ResourceError is what an unplugged adapter or a vanished pty gives.
         if (e == QSerialPort::ResourceError && m_port->isOpen()) {
-            const msg::Message why = msg::make("link.port_went_away", {msg::verbatim("port", m_name.toStdString()),
-                                                                       msg::verbatim("detail", m_port->errorString().toStdString())});
+            const motion::msg::Message why = motion::msg::make("link.port_went_away", {motion::msg::verbatim("port", m_name.toStdString()),
+                                                                       motion::msg::verbatim("detail", m_port->errorString().toStdString())});
             m_port->close();
             emit lost(why);
         }
@@ -43,11 +43,11 @@ void SerialTransport::open()
         // QSerialPort's errorString() is Qt's own text (translated by Qt's catalogue). Its
         // PermissionError is both "you may not" and "another program has it locked".
         const QString location = m_name.startsWith(QLatin1Char('/')) ? m_name : QStringLiteral("/dev/") + m_name;
-        const msg::Message why =
+        const motion::msg::Message why =
             m_port->error() == QSerialPort::PermissionError
                 ? permissionProblem(m_name, portAccess(location), m_port->errorString())
-                : msg::make(m_port->error() == QSerialPort::DeviceNotFoundError ? "link.no_such_port" : "link.cannot_open",
-                            {msg::verbatim("port", m_name.toStdString()), msg::verbatim("detail", m_port->errorString().toStdString())});
+                : motion::msg::make(m_port->error() == QSerialPort::DeviceNotFoundError ? "link.no_such_port" : "link.cannot_open",
+                            {motion::msg::verbatim("port", m_name.toStdString()), motion::msg::verbatim("detail", m_port->errorString().toStdString())});
         QTimer::singleShot(0, this, [this, why] { emit failed(why); });
         return;
     }

@@ -7,14 +7,14 @@ namespace {
 constexpr double kMaxCatchUpS = 5.0;
 }
 
-SimulatorHost::SimulatorHost(const sim::MachineConfig& config, qint32 linkBaud, Transport* deviceEnd, QObject* parent)
-    : SimulatorHost(std::make_unique<sim::Firmware>(config, static_cast<std::uint32_t>(linkBaud > 0 ? linkBaud : 921600)),
+SimulatorHost::SimulatorHost(const dev::sim::MachineConfig& config, qint32 linkBaud, Transport* deviceEnd, QObject* parent)
+    : SimulatorHost(std::make_unique<dev::sim::Firmware>(config, static_cast<std::uint32_t>(linkBaud > 0 ? linkBaud : 921600)),
                     deviceEnd, parent)
 {
-    m_firmware = static_cast<sim::Firmware*>(m_device.get());
+    m_firmware = static_cast<dev::sim::Firmware*>(m_device.get());
 }
 
-SimulatorHost::SimulatorHost(std::unique_ptr<sim::SerialDevice> device, Transport* deviceEnd, QObject* parent)
+SimulatorHost::SimulatorHost(std::unique_ptr<dev::sim::SerialDevice> device, Transport* deviceEnd, QObject* parent)
     : QObject(parent), m_device(std::move(device)), m_end(deviceEnd)
 {
     connect(m_end, &Transport::bytesReceived, this, [this](const QByteArray& b) {
@@ -98,12 +98,12 @@ void SimulatorHost::flush()
         m_end->write(QByteArray(reinterpret_cast<const char*>(m_out.data()), static_cast<qsizetype>(m_out.size())));
 }
 
-SimulatedLink::SimulatedLink(proto::DeviceKind kind, qint32 baud, QObject* parent)
-    : SimulatedLink(kind == proto::DeviceKind::Stage ? sim::stageConfig() : sim::analyzerConfig(), baud, parent)
+SimulatedLink::SimulatedLink(dev::proto::DeviceKind kind, qint32 baud, QObject* parent)
+    : SimulatedLink(kind == dev::proto::DeviceKind::Stage ? dev::sim::stageConfig() : dev::sim::analyzerConfig(), baud, parent)
 {
 }
 
-SimulatedLink::SimulatedLink(const sim::MachineConfig& config, qint32 baud, QObject* parent)
+SimulatedLink::SimulatedLink(const dev::sim::MachineConfig& config, qint32 baud, QObject* parent)
     : QObject(parent), m_pair(new LoopbackPair(baud, this))
 {
     m_host = new SimulatorHost(config, baud, m_pair->end(LoopbackPair::B), this);
@@ -111,7 +111,7 @@ SimulatedLink::SimulatedLink(const sim::MachineConfig& config, qint32 baud, QObj
     m_host->start();
 }
 
-SimulatedLink::SimulatedLink(std::unique_ptr<sim::SerialDevice> device, qint32 baud, QObject* parent)
+SimulatedLink::SimulatedLink(std::unique_ptr<dev::sim::SerialDevice> device, qint32 baud, QObject* parent)
     : QObject(parent), m_pair(new LoopbackPair(baud, this))
 {
     m_host = new SimulatorHost(std::move(device), m_pair->end(LoopbackPair::B), this);

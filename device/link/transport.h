@@ -27,8 +27,8 @@ public:
 
 signals:
     void opened();
-    void failed(const msg::Message& reason);  ///< link.* (docs/wording.md)
-    void lost(const msg::Message& reason);
+    void failed(const motion::msg::Message& reason);  ///< link.* (docs/wording.md)
+    void lost(const motion::msg::Message& reason);
     void bytesReceived(const QByteArray& bytes);
     /// The far end opened the line: on a device's end, a host opened the port (a board wired to
     /// reset on DTR restarts then). Emitted before any byte the host sends after opening; only

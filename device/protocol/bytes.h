@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-namespace proto {
+namespace dev::proto {
 
 /// Little-endian writer into a growing buffer.
 class ByteWriter {
@@ -110,4 +110,4 @@ std::optional<T> finish(const ByteReader& r, T&& value)
     return std::optional<T>(std::forward<T>(value));
 }
 
-} // namespace proto
+} // namespace dev::proto

@@ -1,6 +1,6 @@
 #include "device/protocol/cobs.h"
 
-namespace proto {
+namespace dev::proto {
 
 void cobsEncode(const std::uint8_t* data, std::size_t size, std::vector<std::uint8_t>& out)
 {
@@ -47,4 +47,4 @@ std::optional<std::vector<std::uint8_t>> cobsDecode(const std::uint8_t* data, st
     return out;
 }
 
-} // namespace proto
+} // namespace dev::proto

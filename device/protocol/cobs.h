@@ -4,7 +4,7 @@
 #include <optional>
 #include <vector>
 
-namespace proto {
+namespace dev::proto {
 
 /// Consistent Overhead Byte Stuffing: removes every 0x00 from a block so 0x00 can
 /// delimit frames. Overhead is one byte per started 254 bytes of input.
@@ -17,4 +17,4 @@ std::optional<std::vector<std::uint8_t>> cobsDecode(const std::uint8_t* data, st
 /// Worst-case encoded size of `size` input bytes, delimiter not included.
 constexpr std::size_t cobsMaxEncodedSize(std::size_t size) { return size + size / 254 + 1; }
 
-} // namespace proto
+} // namespace dev::proto

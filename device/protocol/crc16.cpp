@@ -2,7 +2,7 @@
 
 #include <array>
 
-namespace proto {
+namespace dev::proto {
 namespace {
 constexpr std::array<std::uint16_t, 256> makeTable()
 {
@@ -25,4 +25,4 @@ std::uint16_t crc16Ccitt(const std::uint8_t* data, std::size_t size, std::uint16
     return crc;
 }
 
-} // namespace proto
+} // namespace dev::proto

@@ -5,7 +5,7 @@
 // Values: positions and lengths in the axis unit (mm or µL), times in seconds.
 #include <cstdint>
 
-namespace proto::reason {
+namespace dev::proto::reason {
 
 // Test kinds, a tuning event's first value.
 constexpr double kStepTest = 1, kRelayTest = 2;
@@ -57,4 +57,4 @@ constexpr std::uint8_t kInstalled = 1;
 constexpr std::uint8_t kEnabled = 2;
 constexpr std::uint8_t kDisabled = 3;
 
-} // namespace proto::reason
+} // namespace dev::proto::reason

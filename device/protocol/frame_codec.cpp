@@ -3,7 +3,7 @@
 #include "device/protocol/cobs.h"
 #include "device/protocol/crc16.h"
 
-namespace proto {
+namespace dev::proto {
 namespace {
 constexpr std::size_t kMaxEncodedBlock = cobsMaxEncodedSize(kMaxBodyBytes);
 }
@@ -97,4 +97,4 @@ void FrameDecoder::finishBlock(std::vector<Frame>& out)
     out.push_back(std::move(f));
 }
 
-} // namespace proto
+} // namespace dev::proto

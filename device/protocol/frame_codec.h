@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace proto {
+namespace dev::proto {
 
 /// Decoded frame body: type (1) + seq (2, LE) + payload + CRC (2, LE). The cap
 /// keeps both ends' buffers bounded; anything longer is dropped as oversize.
@@ -64,4 +64,4 @@ private:
     DecoderStats m_stats;
 };
 
-} // namespace proto
+} // namespace dev::proto

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-namespace proto {
+namespace dev::proto {
 
 int popcount8(std::uint8_t mask)
 {
@@ -606,4 +606,4 @@ std::optional<ErrorReply> decodeErrorReply(const Bytes& p)
     return finish(r, std::move(m));
 }
 
-} // namespace proto
+} // namespace dev::proto

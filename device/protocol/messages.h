@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace proto {
+namespace dev::proto {
 
 constexpr std::uint8_t kProtocolVersion = 1;
 constexpr std::uint8_t kNoAxis = 0xFF;
@@ -95,7 +95,7 @@ enum class ErrorCode : std::uint8_t {
 constexpr std::uint8_t kMaxErrorCode = 0x7F;
 const char* errorCodeName(ErrorCode c);  ///< for logs and tests: "soft limit"
 /// The term a person reads for a code ("device.error.soft_limit"; tuning codes
-/// included), worded by words::term; "device.error.unknown" for a code this host
+/// included), worded by ui::words::term; "device.error.unknown" for a code this host
 /// does not know.
 const char* errorCodeTerm(ErrorCode c);
 
@@ -323,4 +323,4 @@ std::optional<ErrorReply> decodeErrorReply(const Bytes&);
 
 int popcount8(std::uint8_t mask);
 
-} // namespace proto
+} // namespace dev::proto

@@ -4,7 +4,7 @@
 
 #include <cstring>
 
-namespace proto {
+namespace dev::proto {
 namespace {
 
 void putF64(ByteWriter& w, double v)
@@ -226,4 +226,4 @@ const char* compensationTypeName(std::uint8_t type)
     }
 }
 
-} // namespace proto
+} // namespace dev::proto

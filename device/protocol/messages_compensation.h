@@ -15,7 +15,7 @@
 #include <optional>
 #include <vector>
 
-namespace proto {
+namespace dev::proto {
 
 // Message types (queued 0x1B–0x1D), capability bit 14, error codes 23–25 and event kind
 // 40, as allocated in messages.h.
@@ -128,4 +128,4 @@ std::optional<CompEnableRequest> decodeCompEnableRequest(const Bytes&);
 
 const char* compensationTypeName(std::uint8_t type);  ///< "COMP_UPLOAD", … or nullptr
 
-} // namespace proto
+} // namespace dev::proto

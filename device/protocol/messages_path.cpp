@@ -2,7 +2,7 @@
 
 #include "device/protocol/bytes.h"
 
-namespace proto {
+namespace dev::proto {
 
 const char* pathStateName(PathState s)
 {
@@ -160,4 +160,4 @@ std::optional<PathStatusReply> decodePathStatusReply(const Bytes& p)
     return m;
 }
 
-} // namespace proto
+} // namespace dev::proto

@@ -8,7 +8,7 @@
 #include <optional>
 #include <vector>
 
-namespace proto {
+namespace dev::proto {
 
 /// Segments one PATH_APPEND may carry (and the simulator's queue capacity): 32 × 25 bytes fit a frame.
 constexpr int kMaxPathSegmentsPerAppend = 32;
@@ -94,4 +94,4 @@ std::optional<PathBeginRequest> decodePathBeginRequest(const Bytes&);
 std::optional<PathAppendRequest> decodePathAppendRequest(const Bytes&);
 std::optional<PathStatusReply> decodePathStatusReply(const Bytes&);
 
-} // namespace proto
+} // namespace dev::proto

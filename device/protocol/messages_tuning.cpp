@@ -4,7 +4,7 @@
 
 #include <cstring>
 
-namespace proto {
+namespace dev::proto {
 namespace {
 
 std::uint32_t bitsOf(float f)
@@ -274,4 +274,4 @@ std::optional<CaptureReply> decodeCaptureReply(const Bytes& p)
     return finish(r, std::move(m));
 }
 
-} // namespace proto
+} // namespace dev::proto

@@ -12,7 +12,7 @@
 #include <optional>
 #include <vector>
 
-namespace proto {
+namespace dev::proto {
 
 // Message types (queued 0x0B–0x0F, realtime 0x23), capability bits 8–9, error
 // codes 11–14, event kinds 10–13 and telemetry channel kind 7, as allocated in messages.h.
@@ -140,4 +140,4 @@ std::optional<AbortRequest> decodeAbortRequest(const Bytes&);
 
 const char* tuningTypeName(std::uint8_t type);  ///< "GET_GAINS", … or nullptr
 
-} // namespace proto
+} // namespace dev::proto

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-namespace sim {
+namespace dev::sim {
 namespace {
 constexpr double kLinkHeadroom = 0.9;        // telemetry may use 90% of the wire; replies and events get the rest
 constexpr double kBatchLatencyS = 0.02;      // a batch holds at most this much time unless capacity needs more
@@ -30,10 +30,10 @@ void Firmware::receive(const std::uint8_t* data, std::size_t size)
     // Realtime requests act first: a stop or E-stop decoded in the same chunk as
     // queued requests must not wait behind them.
     for (const auto& f : m_frames)
-        if (proto::isRealtimeType(f.type))
+        if (dev::proto::isRealtimeType(f.type))
             handle(f);
     for (const auto& f : m_frames)
-        if (!proto::isRealtimeType(f.type))
+        if (!dev::proto::isRealtimeType(f.type))
             handle(f);
     flushEvents();
 }
@@ -61,14 +61,14 @@ void Firmware::drainOutput(std::vector<std::uint8_t>& out)
     m_out.clear();
 }
 
-void Firmware::sendFrame(std::uint8_t type, std::uint16_t seq, const proto::Bytes& payload, std::vector<std::uint8_t>& out)
+void Firmware::sendFrame(std::uint8_t type, std::uint16_t seq, const dev::proto::Bytes& payload, std::vector<std::uint8_t>& out)
 {
-    proto::encodeFrame(type, seq, payload.data(), payload.size(), out);
+    dev::proto::encodeFrame(type, seq, payload.data(), payload.size(), out);
 }
 
-void Firmware::sendError(std::uint16_t seq, const proto::ErrorReply& e, std::vector<std::uint8_t>& out)
+void Firmware::sendError(std::uint16_t seq, const dev::proto::ErrorReply& e, std::vector<std::uint8_t>& out)
 {
-    sendFrame(static_cast<std::uint8_t>(proto::MsgType::Error), seq, proto::encode(e), out);
+    sendFrame(static_cast<std::uint8_t>(dev::proto::MsgType::Error), seq, dev::proto::encode(e), out);
 }
 
 void Firmware::flushEvents()
@@ -79,20 +79,20 @@ void Firmware::flushEvents()
         if (m_journalOn) {
             JournalEntry j;
             j.timeS = static_cast<double>(e.deviceTimeUs) * 1e-6;
-            j.type = static_cast<std::uint8_t>(proto::MsgType::Event);
+            j.type = static_cast<std::uint8_t>(dev::proto::MsgType::Event);
             j.seq = m_eventSeq;
-            j.payload = proto::encode(e);
+            j.payload = dev::proto::encode(e);
             m_journal.push_back(std::move(j));
         }
-        sendFrame(static_cast<std::uint8_t>(proto::MsgType::Event), m_eventSeq++, proto::encode(e), m_out);
+        sendFrame(static_cast<std::uint8_t>(dev::proto::MsgType::Event), m_eventSeq++, dev::proto::encode(e), m_out);
     }
 }
 
-void Firmware::handle(const proto::Frame& f)
+void Firmware::handle(const dev::proto::Frame& f)
 {
     if (f.type >= 0x80)
         return;  // replies, events and errors: only a device sends those, a device ignores them
-    const bool hello = f.type == static_cast<std::uint8_t>(proto::MsgType::Hello);
+    const bool hello = f.type == static_cast<std::uint8_t>(dev::proto::MsgType::Hello);
     const bool repeatOfLast = m_lastQueued.valid && m_lastQueued.type == f.type && m_lastQueued.seq == f.seq
         && m_lastQueued.payload == f.payload;
     if (hello && !repeatOfLast) {
@@ -114,14 +114,14 @@ void Firmware::handle(const proto::Frame& f)
             return;
         }
     }
-    const bool velocity = f.type == static_cast<std::uint8_t>(proto::MsgType::JogVelocity);
-    const bool motionCommand = velocity || f.type == static_cast<std::uint8_t>(proto::MsgType::Stop)
-        || f.type == static_cast<std::uint8_t>(proto::MsgType::EStop);
+    const bool velocity = f.type == static_cast<std::uint8_t>(dev::proto::MsgType::JogVelocity);
+    const bool motionCommand = velocity || f.type == static_cast<std::uint8_t>(dev::proto::MsgType::Stop)
+        || f.type == static_cast<std::uint8_t>(dev::proto::MsgType::EStop);
     if (velocity && m_haveMotionSeq && static_cast<std::int16_t>(f.seq - m_lastMotionSeq) < 0) {
         // Sequence numbers rise in the order a host sends: this velocity was sent before
         // the last one acted on, and reaches us late (a retry that lost the race).
         ++m_staleVelocities;
-        sendFrame(static_cast<std::uint8_t>(f.type | proto::kReplyFlag), f.seq, {}, m_out);
+        sendFrame(static_cast<std::uint8_t>(f.type | dev::proto::kReplyFlag), f.seq, {}, m_out);
         return;
     }
     if (motionCommand) {
@@ -135,7 +135,7 @@ void Firmware::handle(const proto::Frame& f)
     slot.seq = f.seq;
     slot.payload = f.payload;
     slot.reply.clear();
-    if (!proto::isRealtimeType(f.type))
+    if (!dev::proto::isRealtimeType(f.type))
         m_lastQueued = slot;
     ++m_executed;
     if (m_journalOn) {
@@ -154,17 +154,17 @@ void Firmware::handle(const proto::Frame& f)
 
 void Firmware::sendMalformed(std::uint16_t seq, const char* what, std::vector<std::uint8_t>& out)
 {
-    proto::ErrorReply e;
-    e.code = proto::ErrorCode::BadPayload;
+    dev::proto::ErrorReply e;
+    e.code = dev::proto::ErrorCode::BadPayload;
     e.message = std::string("malformed ") + what + " request";
     sendError(seq, e, out);
 }
 
-void Firmware::execute(const proto::Frame& f, std::vector<std::uint8_t>& reply)
+void Firmware::execute(const dev::proto::Frame& f, std::vector<std::uint8_t>& reply)
 {
-    using proto::MsgType;
+    using dev::proto::MsgType;
     const auto type = static_cast<MsgType>(f.type);
-    const std::uint8_t ok = static_cast<std::uint8_t>(f.type | proto::kReplyFlag);
+    const std::uint8_t ok = static_cast<std::uint8_t>(f.type | dev::proto::kReplyFlag);
     auto bad = [&](const char* what) { sendMalformed(f.seq, what, reply); };
     auto answer = [&](const SimMachine::Result& r) {
         if (r)
@@ -176,44 +176,44 @@ void Firmware::execute(const proto::Frame& f, std::vector<std::uint8_t>& reply)
     case MsgType::Hello: {
         // Protocol 1.0 firmware knew no HELLO payload and refused one; a host that asks
         // for the extension blocks then asks again without (docs/protocol.md, "HELLO").
-        const auto r = proto::decodeHelloRequest(f.payload);
+        const auto r = dev::proto::decodeHelloRequest(f.payload);
         if (!r || (!m_helloExtensions && !f.payload.empty()))
             return bad("HELLO");
-        proto::HelloReply h = m_machine.hello(m_linkBaud);
-        m_eventReasons = (r->flags & proto::HelloReadsEventReasons) != 0;
-        if (r->flags & proto::HelloReadsExtensions)
+        dev::proto::HelloReply h = m_machine.hello(m_linkBaud);
+        m_eventReasons = (r->flags & dev::proto::HelloReadsEventReasons) != 0;
+        if (r->flags & dev::proto::HelloReadsExtensions)
             h.motionLimits = m_machine.motionLimits();
-        sendFrame(ok, f.seq, proto::encode(h), reply);
+        sendFrame(ok, f.seq, dev::proto::encode(h), reply);
         return;
     }
     case MsgType::Status:
         if (!f.payload.empty())
             return bad("STATUS");
-        sendFrame(ok, f.seq, proto::encode(m_machine.status()), reply);
+        sendFrame(ok, f.seq, dev::proto::encode(m_machine.status()), reply);
         return;
     case MsgType::Home:
-        if (auto r = proto::decodeHomeRequest(f.payload))
+        if (auto r = dev::proto::decodeHomeRequest(f.payload))
             return answer(m_machine.home(r->axisMask));
         return bad("HOME");
     case MsgType::Move:
-        if (auto r = proto::decodeMoveRequest(f.payload))
+        if (auto r = dev::proto::decodeMoveRequest(f.payload))
             return answer(m_machine.move(*r));
         return bad("MOVE");
     case MsgType::JogStep:
-        if (auto r = proto::decodeJogStepRequest(f.payload))
+        if (auto r = dev::proto::decodeJogStepRequest(f.payload))
             return answer(m_machine.jogStep(*r));
         return bad("JOG_STEP");
     case MsgType::SetZero:
-        if (auto r = proto::decodeAxisMaskRequest(f.payload))
+        if (auto r = dev::proto::decodeAxisMaskRequest(f.payload))
             return answer(m_machine.setZero(r->axisMask));
         return bad("SET_ZERO");
     case MsgType::GetLimits:
         if (!f.payload.empty())
             return bad("GET_LIMITS");
-        sendFrame(ok, f.seq, proto::encode(m_machine.limits()), reply);
+        sendFrame(ok, f.seq, dev::proto::encode(m_machine.limits()), reply);
         return;
     case MsgType::SetLimits:
-        if (auto r = proto::decodeSetLimitsRequest(f.payload))
+        if (auto r = dev::proto::decodeSetLimitsRequest(f.payload))
             return answer(m_machine.setLimits(*r));
         return bad("SET_LIMITS");
     case MsgType::Subscribe:
@@ -221,11 +221,11 @@ void Firmware::execute(const proto::Frame& f, std::vector<std::uint8_t>& reply)
     case MsgType::Reset:
         return answer(m_machine.reset());
     case MsgType::JogVelocity:
-        if (auto r = proto::decodeJogVelocityRequest(f.payload))
+        if (auto r = dev::proto::decodeJogVelocityRequest(f.payload))
             return answer(m_machine.jogVelocity(*r));
         return bad("JOG_VELOCITY");
     case MsgType::Stop:
-        if (auto r = proto::decodeAxisMaskRequest(f.payload))
+        if (auto r = dev::proto::decodeAxisMaskRequest(f.payload))
             return answer(m_machine.stop(r->axisMask));
         return bad("STOP");
     case MsgType::EStop:
@@ -240,8 +240,8 @@ void Firmware::execute(const proto::Frame& f, std::vector<std::uint8_t>& reply)
     default: {
         if (executeTuning(f, reply) || executeCompensation(f, reply))
             return;
-        proto::ErrorReply e;
-        e.code = proto::ErrorCode::UnknownCommand;
+        dev::proto::ErrorReply e;
+        e.code = dev::proto::ErrorCode::UnknownCommand;
         e.value = f.type;
         e.message = "unknown request type 0x" + [](unsigned v) {
             const char* hex = "0123456789ABCDEF";
@@ -252,24 +252,24 @@ void Firmware::execute(const proto::Frame& f, std::vector<std::uint8_t>& reply)
     }
 }
 
-void Firmware::subscribe(const proto::Frame& f, std::vector<std::uint8_t>& reply)
+void Firmware::subscribe(const dev::proto::Frame& f, std::vector<std::uint8_t>& reply)
 {
-    const auto req = proto::decodeSubscribeRequest(f.payload);
-    proto::ErrorReply e;
+    const auto req = dev::proto::decodeSubscribeRequest(f.payload);
+    dev::proto::ErrorReply e;
     if (!req) {
-        e.code = proto::ErrorCode::BadPayload;
+        e.code = dev::proto::ErrorCode::BadPayload;
         e.message = "malformed SUBSCRIBE request";
         return sendError(f.seq, e, reply);
     }
     if (req->rateHz == 0 || req->channels.empty()) {
         m_rateHz = 0;
         m_channels.clear();
-        sendFrame(static_cast<std::uint8_t>(f.type | proto::kReplyFlag), f.seq, proto::encode(proto::SubscribeReply{}), reply);
+        sendFrame(static_cast<std::uint8_t>(f.type | dev::proto::kReplyFlag), f.seq, dev::proto::encode(dev::proto::SubscribeReply{}), reply);
         return;
     }
     for (const auto& c : req->channels) {
         if (!m_machine.channelExists(c)) {
-            e.code = proto::ErrorCode::BadAxis;
+            e.code = dev::proto::ErrorCode::BadAxis;
             e.axis = c.axis;
             e.message = "telemetry channel " + std::to_string(static_cast<int>(c.kind)) + " on axis "
                 + std::to_string(c.axis) + " does not exist on this instrument";
@@ -278,7 +278,7 @@ void Firmware::subscribe(const proto::Frame& f, std::vector<std::uint8_t>& reply
     }
     const std::uint32_t tickRate = static_cast<std::uint32_t>(std::lround(1.0 / SimMachine::kTickS));
     if (req->rateHz > tickRate) {
-        e.code = proto::ErrorCode::OutOfRange;
+        e.code = dev::proto::ErrorCode::OutOfRange;
         e.value = static_cast<std::int32_t>(tickRate);
         e.message = "telemetry rate " + std::to_string(req->rateHz) + " Hz is above the device's " + std::to_string(tickRate)
             + " Hz sample clock";
@@ -290,9 +290,9 @@ void Firmware::subscribe(const proto::Frame& f, std::vector<std::uint8_t>& reply
     // gives 5000 Hz, not 10000 Hz): a rate the link was said to carry must fit.
     const std::uint32_t ticksPerSample = (tickRate + req->rateHz - 1) / req->rateHz;
     const double rate = double(tickRate) / ticksPerSample;
-    const std::size_t maxFit = (proto::kMaxPayloadBytes - proto::telemetryHeaderBytes(ch)) / (4 * ch);
+    const std::size_t maxFit = (dev::proto::kMaxPayloadBytes - dev::proto::telemetryHeaderBytes(ch)) / (4 * ch);
     if (maxFit == 0) {
-        e.code = proto::ErrorCode::OutOfRange;
+        e.code = dev::proto::ErrorCode::OutOfRange;
         e.value = static_cast<std::int32_t>(ch);
         e.message = "too many telemetry channels for one batch";
         return sendError(f.seq, e, reply);
@@ -300,7 +300,7 @@ void Firmware::subscribe(const proto::Frame& f, std::vector<std::uint8_t>& reply
     // Smallest batch that keeps latency low; grown if the wire needs fewer frames.
     const double capacity = linkBytesPerSecond() * kLinkHeadroom;
     auto bytesPerSecond = [&](std::size_t spb) {
-        const double frame = double(proto::wireBytesForPayload(proto::telemetryHeaderBytes(ch) + 4 * ch * spb));
+        const double frame = double(dev::proto::wireBytesForPayload(dev::proto::telemetryHeaderBytes(ch) + 4 * ch * spb));
         return rate / double(spb) * frame;
     };
     std::size_t spb = std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(rate * kBatchLatencyS)), 1, maxFit);
@@ -313,7 +313,7 @@ void Firmware::subscribe(const proto::Frame& f, std::vector<std::uint8_t>& reply
         spb = std::max(spb, std::min(maxFit, static_cast<std::size_t>(std::floor(rate * kBusyLinkBatchS))));
     }
     if (bytesPerSecond(spb) > capacity) {
-        const double perSampleFull = double(proto::wireBytesForPayload(proto::telemetryHeaderBytes(ch) + 4 * ch * maxFit)) / double(maxFit);
+        const double perSampleFull = double(dev::proto::wireBytesForPayload(dev::proto::telemetryHeaderBytes(ch) + 4 * ch * maxFit)) / double(maxFit);
         // The fastest achievable rate (tick rate / whole ticks) that fits, as whole
         // Hz that get exactly that sample period when asked for again: rounded up
         // where that still maps to it (588.2 Hz → 589), else down (accepted, one
@@ -322,7 +322,7 @@ void Firmware::subscribe(const proto::Frame& f, std::vector<std::uint8_t>& reply
         auto maxRate = static_cast<std::int32_t>(std::ceil(double(tickRate) / minTicks));
         if (std::ceil(double(tickRate) / maxRate) < minTicks)
             maxRate = static_cast<std::int32_t>(std::floor(double(tickRate) / minTicks));
-        e.code = proto::ErrorCode::OverCapacity;
+        e.code = dev::proto::ErrorCode::OverCapacity;
         e.value = maxRate;
         e.message = std::to_string(static_cast<long>(rate)) + " Hz × " + std::to_string(ch) + " channels needs "
             + std::to_string(static_cast<long>(bytesPerSecond(spb))) + " B/s but the link carries "
@@ -335,11 +335,11 @@ void Firmware::subscribe(const proto::Frame& f, std::vector<std::uint8_t>& reply
     m_ticksPerSample = ticksPerSample;
     m_samplesPerBatch = static_cast<std::uint16_t>(spb);
     m_sampleIndex = 0;
-    m_batch = proto::TelemetryBatch{};
-    proto::SubscribeReply r;
+    m_batch = dev::proto::TelemetryBatch{};
+    dev::proto::SubscribeReply r;
     r.rateHz = m_rateHz;
     r.samplesPerBatch = m_samplesPerBatch;
-    sendFrame(static_cast<std::uint8_t>(f.type | proto::kReplyFlag), f.seq, proto::encode(r), reply);
+    sendFrame(static_cast<std::uint8_t>(f.type | dev::proto::kReplyFlag), f.seq, dev::proto::encode(r), reply);
 }
 
 void Firmware::sampleTelemetry()
@@ -361,11 +361,11 @@ void Firmware::sampleTelemetry()
         // Overflow policy: a host that stops reading loses telemetry, never replies
         // or events; the gap in firstSampleIndex tells it what it lost.
         if (m_out.size() < kMaxPendingOutputBytes)
-            sendFrame(static_cast<std::uint8_t>(proto::MsgType::TelemetryBatch), m_eventSeq++, proto::encode(m_batch), m_out);
+            sendFrame(static_cast<std::uint8_t>(dev::proto::MsgType::TelemetryBatch), m_eventSeq++, dev::proto::encode(m_batch), m_out);
         else
             ++m_droppedBatches;
         m_batch.sampleCount = 0;
     }
 }
 
-} // namespace sim
+} // namespace dev::sim

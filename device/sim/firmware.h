@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace sim {
+namespace dev::sim {
 
 class Firmware : public SerialDevice {
 public:
@@ -31,7 +31,7 @@ public:
 
     SimMachine& machine() { return m_machine; }
     const SimMachine& machine() const { return m_machine; }
-    const proto::DecoderStats& decoderStats() const { return m_decoder.stats(); }
+    const dev::proto::DecoderStats& decoderStats() const { return m_decoder.stats(); }
     std::uint64_t executedRequests() const { return m_executed; }
     std::uint64_t duplicateRequests() const { return m_duplicates; }
     /// Velocity commands that arrived after a newer velocity, stop or E-stop: answered, not executed.
@@ -40,7 +40,7 @@ public:
     std::uint32_t linkBaud() const { return m_linkBaud; }
     void setLinkBaud(std::uint32_t baud) { m_linkBaud = baud; }
     /// Device time without any frame from the host after which a moving path is held
-    /// (proto::kPathHostSilenceMs). A simulator run K times faster than the wall clock judges
+    /// (dev::proto::kPathHostSilenceMs). A simulator run K times faster than the wall clock judges
     /// the host by the host's clock: K times the limit (SimulatorHost::setTimeScale does that).
     void setHostSilenceLimitS(double seconds) { m_hostSilenceLimitS = seconds; }
     /// false: answer HELLO as protocol 1.0 firmware did, refusing a HELLO with a payload
@@ -54,7 +54,7 @@ public:
         double timeS = 0;                   ///< machine time of execution
         std::uint8_t type = 0;
         std::uint16_t seq = 0;
-        proto::Bytes payload;
+        dev::proto::Bytes payload;
         std::vector<double> commanded;      ///< each axis's commanded position before it ran (axis units)
     };
     void setJournal(bool on) { m_journalOn = on; }
@@ -64,32 +64,32 @@ public:
     double linkBytesPerSecond() const { return m_linkBaud / 10.0; }
 
 private:
-    void handle(const proto::Frame& f);
-    void execute(const proto::Frame& f, std::vector<std::uint8_t>& reply);
-    void sendFrame(std::uint8_t type, std::uint16_t seq, const proto::Bytes& payload, std::vector<std::uint8_t>& out);
-    void sendError(std::uint16_t seq, const proto::ErrorReply& e, std::vector<std::uint8_t>& out);
+    void handle(const dev::proto::Frame& f);
+    void execute(const dev::proto::Frame& f, std::vector<std::uint8_t>& reply);
+    void sendFrame(std::uint8_t type, std::uint16_t seq, const dev::proto::Bytes& payload, std::vector<std::uint8_t>& out);
+    void sendError(std::uint16_t seq, const dev::proto::ErrorReply& e, std::vector<std::uint8_t>& out);
     void sendMalformed(std::uint16_t seq, const char* what, std::vector<std::uint8_t>& out);  ///< BadPayload
-    void subscribe(const proto::Frame& f, std::vector<std::uint8_t>& reply);
+    void subscribe(const dev::proto::Frame& f, std::vector<std::uint8_t>& reply);
     /// Tuning requests (firmware_tuning.cpp); false if `f` is not one.
-    bool executeTuning(const proto::Frame& f, std::vector<std::uint8_t>& reply);
+    bool executeTuning(const dev::proto::Frame& f, std::vector<std::uint8_t>& reply);
     /// Compensation requests (firmware_compensation.cpp); false if `f` is not one.
-    bool executeCompensation(const proto::Frame& f, std::vector<std::uint8_t>& reply);
+    bool executeCompensation(const dev::proto::Frame& f, std::vector<std::uint8_t>& reply);
     void sampleTelemetry();
     void flushEvents();
     // Path queue (firmware_path.cpp): its requests, and the feed hold when the host goes quiet.
-    void executePath(const proto::Frame& f, std::vector<std::uint8_t>& reply);
+    void executePath(const dev::proto::Frame& f, std::vector<std::uint8_t>& reply);
     void checkHostSilence();
 
     SimMachine m_machine;
     std::uint32_t m_linkBaud;
-    proto::FrameDecoder m_decoder;
-    std::vector<proto::Frame> m_frames;
+    dev::proto::FrameDecoder m_decoder;
+    std::vector<dev::proto::Frame> m_frames;
     std::vector<std::uint8_t> m_out;
     double m_pendingS = 0;
     std::uint16_t m_eventSeq = 0;
     std::uint64_t m_executed = 0, m_duplicates = 0, m_droppedBatches = 0;
     double m_lastHostFrameS = 0;  ///< machine time of the last good frame from the host
-    double m_hostSilenceLimitS = proto::kPathHostSilenceMs / 1000.0;
+    double m_hostSilenceLimitS = dev::proto::kPathHostSilenceMs / 1000.0;
     bool m_helloExtensions = true;
     bool m_eventReasons = false;  ///< this session's host asked for each EVENT's reason
     bool m_journalOn = false;
@@ -101,7 +101,7 @@ private:
         bool valid = false;
         std::uint8_t type = 0;
         std::uint16_t seq = 0;
-        proto::Bytes payload;
+        dev::proto::Bytes payload;
         std::vector<std::uint8_t> reply;
     };
     /// Large enough that a host retrying one request for its whole patience (docs/protocol.md:
@@ -116,13 +116,13 @@ private:
     CachedReply m_lastQueued;  ///< key of the latest queued request (reply not kept): tells a repeated HELLO from a new session
 
     // Telemetry subscription.
-    std::vector<proto::ChannelRef> m_channels;
+    std::vector<dev::proto::ChannelRef> m_channels;
     std::uint32_t m_rateHz = 0;
     std::uint32_t m_ticksPerSample = 0;
     std::uint16_t m_samplesPerBatch = 0;
     std::uint32_t m_sampleIndex = 0;
     std::uint64_t m_tickCount = 0;
-    proto::TelemetryBatch m_batch;
+    dev::proto::TelemetryBatch m_batch;
 };
 
-} // namespace sim
+} // namespace dev::sim

@@ -2,16 +2,16 @@
 // "Compensation"); the behaviour is in sim_compensation.cpp.
 #include "device/sim/firmware.h"
 
-namespace sim {
+namespace dev::sim {
 
-bool Firmware::executeCompensation(const proto::Frame& f, std::vector<std::uint8_t>& reply)
+bool Firmware::executeCompensation(const dev::proto::Frame& f, std::vector<std::uint8_t>& reply)
 {
-    const char* name = proto::compensationTypeName(f.type);
+    const char* name = dev::proto::compensationTypeName(f.type);
     if (!name)
         return false;
-    const std::uint8_t ok = static_cast<std::uint8_t>(f.type | proto::kReplyFlag);
+    const std::uint8_t ok = static_cast<std::uint8_t>(f.type | dev::proto::kReplyFlag);
     SimCompensation& c = m_machine.compensation();
-    auto answer = [&](const SimCompensation::Result& r, const proto::Bytes& payload) {
+    auto answer = [&](const SimCompensation::Result& r, const dev::proto::Bytes& payload) {
         if (r)
             sendError(f.seq, *r, reply);
         else
@@ -19,23 +19,23 @@ bool Firmware::executeCompensation(const proto::Frame& f, std::vector<std::uint8
     };
     switch (f.type) {
     case 0x1B:
-        if (const auto r = proto::decodeCompUploadRequest(f.payload)) {
-            proto::CompUploadReply out;
+        if (const auto r = dev::proto::decodeCompUploadRequest(f.payload)) {
+            dev::proto::CompUploadReply out;
             const auto e = c.upload(*r, out);
-            answer(e, e ? proto::Bytes{} : proto::encode(out));
+            answer(e, e ? dev::proto::Bytes{} : dev::proto::encode(out));
             return true;
         }
         break;
     case 0x1C:
-        if (const auto r = proto::decodeCompGetRequest(f.payload)) {
-            proto::CompGetReply out;
+        if (const auto r = dev::proto::decodeCompGetRequest(f.payload)) {
+            dev::proto::CompGetReply out;
             const auto e = c.get(*r, out);
-            answer(e, e ? proto::Bytes{} : proto::encode(out));
+            answer(e, e ? dev::proto::Bytes{} : dev::proto::encode(out));
             return true;
         }
         break;
     case 0x1D:
-        if (const auto r = proto::decodeCompEnableRequest(f.payload)) {
+        if (const auto r = dev::proto::decodeCompEnableRequest(f.payload)) {
             answer(c.enable(*r), {});
             return true;
         }
@@ -46,4 +46,4 @@ bool Firmware::executeCompensation(const proto::Frame& f, std::vector<std::uint8
     return true;
 }
 
-} // namespace sim
+} // namespace dev::sim

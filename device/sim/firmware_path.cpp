@@ -5,20 +5,20 @@
 #include "device/protocol/messages_path.h"
 #include "device/sim/path_queue.h"
 
-namespace sim {
+namespace dev::sim {
 
-void Firmware::executePath(const proto::Frame& f, std::vector<std::uint8_t>& reply)
+void Firmware::executePath(const dev::proto::Frame& f, std::vector<std::uint8_t>& reply)
 {
-    using proto::MsgType;
+    using dev::proto::MsgType;
     PathQueue& q = m_machine.paths();
-    const std::uint8_t ok = static_cast<std::uint8_t>(f.type | proto::kReplyFlag);
+    const std::uint8_t ok = static_cast<std::uint8_t>(f.type | dev::proto::kReplyFlag);
     auto bad = [&](const char* what) { sendMalformed(f.seq, what, reply); };
     // BEGIN, APPEND and STATUS answer with the queue's state: the host's flow control.
     auto withStatus = [&](const PathQueue::Result& r) {
         if (r)
             sendError(f.seq, *r, reply);
         else
-            sendFrame(ok, f.seq, proto::encode(q.status()), reply);
+            sendFrame(ok, f.seq, dev::proto::encode(q.status()), reply);
     };
     auto empty = [&](const PathQueue::Result& r) {
         if (r)
@@ -28,11 +28,11 @@ void Firmware::executePath(const proto::Frame& f, std::vector<std::uint8_t>& rep
     };
     switch (static_cast<MsgType>(f.type)) {
     case MsgType::PathBegin:
-        if (auto r = proto::decodePathBeginRequest(f.payload))
+        if (auto r = dev::proto::decodePathBeginRequest(f.payload))
             return withStatus(q.begin(*r));
         return bad("PATH_BEGIN");
     case MsgType::PathAppend:
-        if (auto r = proto::decodePathAppendRequest(f.payload))
+        if (auto r = dev::proto::decodePathAppendRequest(f.payload))
             return withStatus(q.append(*r));
         return bad("PATH_APPEND");
     case MsgType::PathStatus:
@@ -55,11 +55,11 @@ void Firmware::executePath(const proto::Frame& f, std::vector<std::uint8_t>& rep
 void Firmware::checkHostSilence()
 {
     PathQueue& q = m_machine.paths();
-    if (!q.moving() || q.state() == proto::PathState::Holding)
+    if (!q.moving() || q.state() == dev::proto::PathState::Holding)
         return;
     // BenchPilot polls STATUS every 50 ms: a second without any frame is a host that is gone.
     if (m_machine.timeS() - m_lastHostFrameS > m_hostSilenceLimitS)
-        q.hold(proto::PathReason::HostSilent);
+        q.hold(dev::proto::PathReason::HostSilent);
 }
 
-} // namespace sim
+} // namespace dev::sim

@@ -3,22 +3,22 @@
 #include "device/sim/firmware.h"
 #include "device/sim/sim_tuning.h"
 
-namespace sim {
+namespace dev::sim {
 
-bool Firmware::executeTuning(const proto::Frame& f, std::vector<std::uint8_t>& reply)
+bool Firmware::executeTuning(const dev::proto::Frame& f, std::vector<std::uint8_t>& reply)
 {
-    const std::uint8_t ok = static_cast<std::uint8_t>(f.type | proto::kReplyFlag);
-    const char* name = proto::tuningTypeName(f.type);
+    const std::uint8_t ok = static_cast<std::uint8_t>(f.type | dev::proto::kReplyFlag);
+    const char* name = dev::proto::tuningTypeName(f.type);
     if (!name)
         return false;
     SimTuning& t = m_machine.tuning();
     auto bad = [&] {
-        proto::ErrorReply e;
-        e.code = proto::ErrorCode::BadPayload;
+        dev::proto::ErrorReply e;
+        e.code = dev::proto::ErrorCode::BadPayload;
         e.message = std::string("malformed ") + name + " request";
         sendError(f.seq, e, reply);
     };
-    auto answer = [&](const SimTuning::Result& r, const proto::Bytes& payload = {}) {
+    auto answer = [&](const SimTuning::Result& r, const dev::proto::Bytes& payload = {}) {
         if (r)
             sendError(f.seq, *r, reply);
         else
@@ -26,37 +26,37 @@ bool Firmware::executeTuning(const proto::Frame& f, std::vector<std::uint8_t>& r
     };
     switch (f.type) {
     case 0x0B:
-        if (auto r = proto::decodeAxisRequest(f.payload)) {
-            proto::GainsReply g;
+        if (auto r = dev::proto::decodeAxisRequest(f.payload)) {
+            dev::proto::GainsReply g;
             const auto e = t.getGains(r->axis, g);
-            answer(e, e ? proto::Bytes{} : proto::encode(g));
+            answer(e, e ? dev::proto::Bytes{} : dev::proto::encode(g));
         } else {
             bad();
         }
         return true;
     case 0x0C:
-        if (auto r = proto::decodeSetGainsRequest(f.payload))
+        if (auto r = dev::proto::decodeSetGainsRequest(f.payload))
             answer(t.setGains(*r));
         else
             bad();
         return true;
     case 0x0D:
-        if (auto r = proto::decodeStepTestRequest(f.payload))
+        if (auto r = dev::proto::decodeStepTestRequest(f.payload))
             answer(t.stepTest(*r));
         else
             bad();
         return true;
     case 0x0E:
-        if (auto r = proto::decodeRelayTestRequest(f.payload))
+        if (auto r = dev::proto::decodeRelayTestRequest(f.payload))
             answer(t.relayTest(*r));
         else
             bad();
         return true;
     case 0x0F:
-        if (auto r = proto::decodeCaptureRequest(f.payload)) {
-            proto::CaptureReply c;
+        if (auto r = dev::proto::decodeCaptureRequest(f.payload)) {
+            dev::proto::CaptureReply c;
             const auto e = t.capture(*r, c);
-            answer(e, e ? proto::Bytes{} : proto::encode(c));
+            answer(e, e ? dev::proto::Bytes{} : dev::proto::encode(c));
         } else {
             bad();
         }
@@ -70,4 +70,4 @@ bool Firmware::executeTuning(const proto::Frame& f, std::vector<std::uint8_t>& r
     }
 }
 
-} // namespace sim
+} // namespace dev::sim

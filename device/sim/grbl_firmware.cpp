@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sim {
+namespace dev::sim {
 
 namespace {
 
@@ -31,10 +31,10 @@ GrblFirmware::GrblFirmware(const MachineConfig& config, Dialect dialect)
       m_letters(lettersFor(config)),
       m_axes(static_cast<int>(m_letters.size())),
       m_settings(config, m_axes),
-      m_motion(m_axes, dialect == Dialect::Grbl ? grbl::kGrblDefaultPlannerBlocks : 35),
+      m_motion(m_axes, dialect == Dialect::Grbl ? dev::grbl::kGrblDefaultPlannerBlocks : 35),
       m_origin(static_cast<std::size_t>(m_axes), 0.0),
       m_workOffset(static_cast<std::size_t>(m_axes), 0.0),
-      m_rxSize(dialect == Dialect::Grbl ? grbl::kGrblDefaultRxBufferBytes : grbl::kGrblHalDefaultRxBufferBytes)
+      m_rxSize(dialect == Dialect::Grbl ? dev::grbl::kGrblDefaultRxBufferBytes : dev::grbl::kGrblHalDefaultRxBufferBytes)
 {
     // Power-up: GRBL's step counters start at 0 wherever the axes stand.
     for (int i = 0; i < m_machine.axisCount(); ++i)
@@ -71,7 +71,7 @@ void GrblFirmware::receive(const std::uint8_t* data, std::size_t size)
 {
     for (std::size_t k = 0; k < size; ++k) {
         const std::uint8_t b = data[k];
-        if (grbl::rt::isRealtime(b)) {
+        if (dev::grbl::rt::isRealtime(b)) {
             realtime(b);
             continue;
         }
@@ -87,17 +87,17 @@ void GrblFirmware::receive(const std::uint8_t* data, std::size_t size)
 
 void GrblFirmware::realtime(std::uint8_t b)
 {
-    if (b == grbl::rt::kSoftReset) {
+    if (b == dev::grbl::rt::kSoftReset) {
         softReset();
         return;
     }
     if (m_critical)
         return;  // a limit alarm waits for a reset; it does not even report status
     switch (b) {
-    case grbl::rt::kStatusQuery:
+    case dev::grbl::rt::kStatusQuery:
         m_statusRequested = true;  // several '?' before the report is made give one report
         break;
-    case grbl::rt::kFeedHold:
+    case dev::grbl::rt::kFeedHold:
         if (m_state == State::Jog) {
             m_jogCancel = true;  // a feed hold cancels a jog, like 0x85
             m_motion.hold();
@@ -106,13 +106,13 @@ void GrblFirmware::realtime(std::uint8_t b)
             m_motion.hold();
         }
         break;
-    case grbl::rt::kCycleStart:
+    case dev::grbl::rt::kCycleStart:
         if (m_state == State::Hold && m_motion.holdComplete()) {
             m_motion.resume();
             m_state = m_motion.moving() || m_pending.active ? State::Run : State::Idle;
         }
         break;
-    case grbl::rt::kJogCancel:
+    case dev::grbl::rt::kJogCancel:
         if (m_jogCancelsS.size() >= 64)
             m_jogCancelsS.erase(m_jogCancelsS.begin());
         m_jogCancelsS.push_back(m_machine.timeS());
@@ -180,10 +180,10 @@ void GrblFirmware::softReset()
         pos[static_cast<std::size_t>(i)] = m_machine.axis(i).reference() - m_origin[static_cast<std::size_t>(i)];
     m_motion.resetTo(pos);
     if (moving) {
-        m_alarm = m_state == State::Home ? grbl::alarm::kHomingFailReset : grbl::alarm::kAbortCycle;
+        m_alarm = m_state == State::Home ? dev::grbl::alarm::kHomingFailReset : dev::grbl::alarm::kAbortCycle;
         send("ALARM:" + std::to_string(m_alarm));
         m_state = State::Alarm;
-        if (m_alarm == grbl::alarm::kAbortCycle)
+        if (m_alarm == dev::grbl::alarm::kAbortCycle)
             m_homed = false;
     }
     // A reset keeps an alarm (position still unknown); otherwise GRBL comes back Idle.
@@ -260,7 +260,7 @@ bool GrblFirmware::checkHardLimits()
             pos[static_cast<std::size_t>(j)] = m_machine.axis(j).reference() - m_origin[static_cast<std::size_t>(j)];
         m_motion.resetTo(pos);
         m_homed = false;
-        raiseAlarm(grbl::alarm::kHardLimit, true);
+        raiseAlarm(dev::grbl::alarm::kHardLimit, true);
         return true;
     }
     return false;
@@ -349,7 +349,7 @@ void GrblFirmware::readLines()
             m_line.clear();
             m_lineOverflow = false;
             if (overflow)
-                answer(grbl::err::kOverflow);
+                answer(dev::grbl::err::kOverflow);
             else
                 executeLine(line);
             return;
@@ -358,11 +358,11 @@ void GrblFirmware::readLines()
         // control character (protocol.c: "c <= ' '").
         if (static_cast<unsigned char>(c) <= ' ')
             continue;
-        if (m_line.size() >= grbl::kMaxLineChars)
+        if (m_line.size() >= dev::grbl::kMaxLineChars)
             m_lineOverflow = true;
         else
             m_line.push_back(c);
     }
 }
 
-} // namespace sim
+} // namespace dev::sim

@@ -1,6 +1,6 @@
 #pragma once
 // The simulator's GRBL personality: GRBL 1.1 (or grblHAL) spoken over the same simulated
-// machine as the BenchPilot firmware, with the same host-facing shape as sim::Firmware —
+// machine as the BenchPilot firmware, with the same host-facing shape as dev::sim::Firmware —
 // bytes in, virtual time advanced by the host, bytes out — so the pty host and the
 // in-process link can run either.
 //
@@ -31,7 +31,7 @@
 #include <string>
 #include <vector>
 
-namespace sim {
+namespace dev::sim {
 
 class GrblFirmware : public SerialDevice {
 public:
@@ -171,4 +171,4 @@ private:
     int m_restarts = 0;
 };
 
-} // namespace sim
+} // namespace dev::sim

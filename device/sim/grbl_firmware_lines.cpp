@@ -9,9 +9,9 @@
 #include <cmath>
 #include <cstdlib>
 
-namespace sim {
+namespace dev::sim {
 
-namespace err = grbl::err;
+namespace err = dev::grbl::err;
 
 namespace {
 
@@ -245,7 +245,7 @@ void GrblFirmware::continuePending()
         if (!m_motion.moving() || m_motion.holdComplete()) {
             m_softLimitHold = false;
             m_motion.flush();
-            raiseAlarm(grbl::alarm::kSoftLimit, true);
+            raiseAlarm(dev::grbl::alarm::kSoftLimit, true);
         }
         return;
     }
@@ -253,15 +253,15 @@ void GrblFirmware::continuePending()
         return;
     if (m_pending.homing) {
         bool done = true;
-        const proto::StatusReply status = m_machine.status();
-        for (const proto::AxisStatus& a : status.axes) {
-            if (!(a.flags & proto::AxisHomed) || (a.flags & (proto::AxisMoving | proto::AxisHoming)))
+        const dev::proto::StatusReply status = m_machine.status();
+        for (const dev::proto::AxisStatus& a : status.axes) {
+            if (!(a.flags & dev::proto::AxisHomed) || (a.flags & (dev::proto::AxisMoving | dev::proto::AxisHoming)))
                 done = false;
-            if (a.flags & proto::AxisFault) {
+            if (a.flags & dev::proto::AxisFault) {
                 // No switch found: GRBL alarms, resets, and the $H line is never answered.
                 m_machine.stop(0);
                 m_state = State::Idle;
-                raiseAlarm(grbl::alarm::kHomingFailApproach, false);
+                raiseAlarm(dev::grbl::alarm::kHomingFailApproach, false);
                 return;
             }
         }
@@ -308,4 +308,4 @@ void GrblFirmware::continuePending()
     answer(0);
 }
 
-} // namespace sim
+} // namespace dev::sim

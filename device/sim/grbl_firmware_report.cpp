@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace sim {
+namespace dev::sim {
 
 std::string GrblFirmware::numbers(const std::vector<double>& mm) const
 {
@@ -15,7 +15,7 @@ std::string GrblFirmware::numbers(const std::vector<double>& mm) const
     std::string s;
     char buf[32];
     for (std::size_t i = 0; i < mm.size(); ++i) {
-        double v = inches ? mm[i] / grbl::kMmPerInch : mm[i];
+        double v = inches ? mm[i] / dev::grbl::kMmPerInch : mm[i];
         if (std::fabs(v) < 5e-5)
             v = 0;  // never "-0.000"
         std::snprintf(buf, sizeof buf, inches ? "%.4f" : "%.3f", v);
@@ -52,7 +52,7 @@ void GrblFirmware::statusReport()
         r += "|Bf:" + std::to_string(m_motion.freeBlocks()) + "," + std::to_string(m_rxSize - 1 - m_rx.size());
     if (m_motion.currentLine() > 0)
         r += "|Ln:" + std::to_string(m_motion.currentLine());
-    const double feed = m_motion.speedMmS() * 60 / (m_settings.reportInches() ? grbl::kMmPerInch : 1.0);
+    const double feed = m_motion.speedMmS() * 60 / (m_settings.reportInches() ? dev::grbl::kMmPerInch : 1.0);
     r += "|FS:" + std::to_string(static_cast<long>(std::lround(feed))) + ",0";
     std::string pins;
     for (int i = 0; i < m_machine.axisCount(); ++i)
@@ -97,7 +97,7 @@ void GrblFirmware::buildInfo()
 void GrblFirmware::parserState()
 {
     char feed[32];
-    std::snprintf(feed, sizeof feed, "%g", m_modal.inches ? m_modal.feedMmMin / grbl::kMmPerInch : m_modal.feedMmMin);
+    std::snprintf(feed, sizeof feed, "%g", m_modal.inches ? m_modal.feedMmMin / dev::grbl::kMmPerInch : m_modal.feedMmMin);
     send(std::string("[GC:G") + std::to_string(m_modal.motion) + " G54 G17 " + (m_modal.inches ? "G20" : "G21") + " "
          + (m_modal.relative ? "G91" : "G90") + " G94 M5 " + (m_modal.flood ? "M8" : "M9") + " T0 F" + feed + " S0]");
 }
@@ -112,4 +112,4 @@ void GrblFirmware::parameters()
     send("[PRB:" + zero + ":0]");
 }
 
-} // namespace sim
+} // namespace dev::sim

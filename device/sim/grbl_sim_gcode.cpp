@@ -6,9 +6,9 @@
 #include <cstdlib>
 #include <map>
 
-namespace sim {
+namespace dev::sim {
 
-namespace err = grbl::err;
+namespace err = dev::grbl::err;
 
 std::string grblCleanLine(std::string_view line)
 {
@@ -101,7 +101,7 @@ bool axisTarget(Words& w, std::string_view letters, bool relative, bool inches, 
 {
     target = from;
     bool any = false;
-    const double k = inches ? grbl::kMmPerInch : 1.0;
+    const double k = inches ? dev::grbl::kMmPerInch : 1.0;
     for (std::size_t i = 0; i < letters.size() && i < target.size(); ++i) {
         double v = 0;
         if (take(w, letters[i], v)) {
@@ -187,7 +187,7 @@ GrblParse parseGrblLine(std::string_view line, GrblModalState& state, const std:
     if (take(w, 'F', v)) {
         if (v < 0)
             return r.error = err::kNegativeValue, r;
-        next.feedMmMin = next.inches ? v * grbl::kMmPerInch : v;
+        next.feedMmMin = next.inches ? v * dev::grbl::kMmPerInch : v;
     }
     if (motion >= 0)
         next.motion = motion;
@@ -209,7 +209,7 @@ GrblParse parseGrblLine(std::string_view line, GrblModalState& state, const std:
         b.kind = GrblBlock::Kind::SetWorkOffset;
         b.targetMm = workOffset;
         b.targetMm.resize(pos.size(), 0.0);
-        const double k = next.inches ? grbl::kMmPerInch : 1.0;
+        const double k = next.inches ? dev::grbl::kMmPerInch : 1.0;
         for (std::size_t i = 0; i < axisLetters.size() && i < pos.size(); ++i) {
             double word = 0;
             if (take(w, axisLetters[i], word))
@@ -246,7 +246,7 @@ GrblParse parseGrblLine(std::string_view line, GrblModalState& state, const std:
                     return r.error = err::kUnsupportedCommand, r;  // radius form: not in this simulator
                 if (!hi && !hj)
                     return r.error = err::kNoOffsetsInPlane, r;
-                const double k = next.inches ? grbl::kMmPerInch : 1.0;
+                const double k = next.inches ? dev::grbl::kMmPerInch : 1.0;
                 b.kind = GrblBlock::Kind::Arc;
                 b.clockwise = next.motion == 2;
                 b.centreMm[0] = pos[0] + i * k;
@@ -306,8 +306,8 @@ GrblParse parseGrblJog(std::string_view command, const GrblModalState& state, co
     if (!axisTarget(w, axisLetters, relative && !machine, inches, pos, machine ? std::vector<double>{} : workOffset, b.targetMm))
         return r.error = err::kNoAxisWords, r;
     b.kind = GrblBlock::Kind::Line;
-    b.feedMmMin = inches ? f * grbl::kMmPerInch : f;
+    b.feedMmMin = inches ? f * dev::grbl::kMmPerInch : f;
     return r;
 }
 
-} // namespace sim
+} // namespace dev::sim

@@ -13,7 +13,7 @@
 #include <string_view>
 #include <vector>
 
-namespace sim {
+namespace dev::sim {
 
 struct GrblModalState {
     int motion = 0;            ///< 0, 1, 2, 3
@@ -63,4 +63,4 @@ GrblParse parseGrblJog(std::string_view command, const GrblModalState& state, co
 /// Line after GRBL's pre-parser: spaces and comments "(…)" and ";…" removed, letters upper case.
 std::string grblCleanLine(std::string_view line);
 
-} // namespace sim
+} // namespace dev::sim

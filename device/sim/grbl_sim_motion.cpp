@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sim {
+namespace dev::sim {
 
 GrblMotion::GrblMotion(int axes, int capacityBlocks)
     : m_axes(axes), m_capacity(capacityBlocks), m_pos(static_cast<std::size_t>(axes), 0.0), m_end(m_pos)
@@ -150,4 +150,4 @@ void GrblMotion::resetTo(const std::vector<double>& positionMm)
     flush();
 }
 
-} // namespace sim
+} // namespace dev::sim

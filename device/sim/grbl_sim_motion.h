@@ -13,7 +13,7 @@
 #include <deque>
 #include <vector>
 
-namespace sim {
+namespace dev::sim {
 
 class GrblMotion {
 public:
@@ -81,4 +81,4 @@ private:
     bool m_hold = false;
 };
 
-} // namespace sim
+} // namespace dev::sim

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace sim {
+namespace dev::sim {
 
 GrblSimSettings::GrblSimSettings(const MachineConfig& machine, int grblAxes) : m_axes(grblAxes)
 {
@@ -38,17 +38,17 @@ double GrblSimSettings::get(int id) const
 int GrblSimSettings::write(int id, double value)
 {
     if (!has(id))
-        return grbl::err::kInvalidStatement;
+        return dev::grbl::err::kInvalidStatement;
     if (!std::isfinite(value))
-        return grbl::err::kBadNumberFormat;
+        return dev::grbl::err::kBadNumberFormat;
     if (value < 0)
-        return grbl::err::kNegativeValue;
+        return dev::grbl::err::kNegativeValue;
     const bool axisRate = (id >= 100 && id < 100 + m_axes) || (id >= 110 && id < 110 + m_axes)
                           || (id >= 120 && id < 120 + m_axes);
     if (axisRate && value <= 0)
-        return grbl::err::kNegativeValue;  // a zero rate would stall the planner (grblHAL says error:19)
+        return dev::grbl::err::kNegativeValue;  // a zero rate would stall the planner (grblHAL says error:19)
     if (id == 20 && value != 0 && !homingEnabled())
-        return grbl::err::kSoftLimitNeedsHoming;
+        return dev::grbl::err::kSoftLimitNeedsHoming;
     m_values[id] = value;
     if (id == 22 && value == 0)
         m_values[20] = 0;  // soft limits cannot stay on without homing
@@ -71,4 +71,4 @@ std::string GrblSimSettings::printout() const
     return out;
 }
 
-} // namespace sim
+} // namespace dev::sim

@@ -3,7 +3,7 @@
 // simulated machine (rates, accelerations and travel of its axes), written with $N=V and
 // read back with $$. Values are what firmware stores: lengths in mm, rates in mm/min.
 //
-// Axis k of the GRBL personality is axis k of sim::SimMachine; GRBL always has at least
+// Axis k of the GRBL personality is axis k of dev::sim::SimMachine; GRBL always has at least
 // X, Y and Z, so the stage (XY) gets a Z without hardware (docs/grbl.md). The analyzer's
 // pump P is GRBL's fourth axis, A, with 1 µL per "mm".
 #include "device/sim/machine_config.h"
@@ -11,7 +11,7 @@
 #include <map>
 #include <string>
 
-namespace sim {
+namespace dev::sim {
 
 class GrblSimSettings {
 public:
@@ -43,4 +43,4 @@ private:
     int m_axes;
 };
 
-} // namespace sim
+} // namespace dev::sim

@@ -1,11 +1,11 @@
 #include "device/sim/machine_config.h"
 
-namespace sim {
+namespace dev::sim {
 
 MachineConfig analyzerConfig()
 {
     MachineConfig m;
-    m.kind = proto::DeviceKind::Analyzer;
+    m.kind = dev::proto::DeviceKind::Analyzer;
     m.model = "BenchPilot analyzer manipulator (simulated)";
     m.profile = ProfileKind::SeedSCurve;
     m.zAfterXy = true;
@@ -48,7 +48,7 @@ MachineConfig analyzerConfig()
     // Plunger pump: 1000 µL over 48000 microsteps.
     AxisConfig p;
     p.letter = 'P';
-    p.unit = proto::AxisUnit::Microlitre;
+    p.unit = dev::proto::AxisUnit::Microlitre;
     p.travel = 1000;
     p.stepSize = 1000.0 / 48000;
     p.resolution = 0.05;
@@ -71,7 +71,7 @@ MachineConfig analyzerConfig()
 MachineConfig stageConfig()
 {
     MachineConfig m;
-    m.kind = proto::DeviceKind::Stage;
+    m.kind = dev::proto::DeviceKind::Stage;
     m.model = "BenchPilot microscope stage (simulated)";
     m.profile = ProfileKind::JerkLimited;
     m.closedLoop = true;
@@ -118,4 +118,4 @@ MachineConfig stageConfig()
     return m;
 }
 
-} // namespace sim
+} // namespace dev::sim

@@ -6,13 +6,13 @@
 #include <string>
 #include <vector>
 
-namespace sim {
+namespace dev::sim {
 
 enum class ProfileKind { SeedSCurve, JerkLimited };
 
 struct AxisConfig {
     char letter = 'X';
-    proto::AxisUnit unit = proto::AxisUnit::Millimetre;
+    dev::proto::AxisUnit unit = dev::proto::AxisUnit::Millimetre;
     double travel = 100;            ///< soft limits default to [0, travel]
     double stepSize = 0.0025;       ///< one microstep of the motor, in axis units
     double resolution = 0.002;      ///< one count of encoder or grating
@@ -69,7 +69,7 @@ struct ClosedLoopTuning {
 };
 
 struct MachineConfig {
-    proto::DeviceKind kind = proto::DeviceKind::Analyzer;
+    dev::proto::DeviceKind kind = dev::proto::DeviceKind::Analyzer;
     std::string model;
     std::vector<AxisConfig> axes;
     ProfileKind profile = ProfileKind::SeedSCurve;
@@ -94,4 +94,4 @@ struct MachineConfig {
 MachineConfig analyzerConfig();
 MachineConfig stageConfig();
 
-} // namespace sim
+} // namespace dev::sim

@@ -11,15 +11,15 @@
 #include <cmath>
 #include <cstdio>
 
-namespace sim {
+namespace dev::sim {
 
 using motion::GridPoint;
 using motion::path::Segment;
 using motion::path::SegmentKind;
 using motion::path::Vec2;
-using proto::ErrorCode;
-using proto::PathReason;
-using proto::PathState;
+using dev::proto::ErrorCode;
+using dev::proto::PathReason;
+using dev::proto::PathState;
 
 PathQueue::PathQueue(SimMachine& machine) : m(machine)
 {
@@ -94,18 +94,18 @@ void PathQueue::reserveAxes(bool reserve)
     }
 }
 
-void PathQueue::event(proto::EventKind kind, std::uint32_t index, const std::string& text)
+void PathQueue::event(dev::proto::EventKind kind, std::uint32_t index, const std::string& text)
 {
     // A held or ended path says why by its PathReason; one that ran as planned says so.
-    const bool why = kind == proto::EventKind::PathHeld || kind == proto::EventKind::PathAborted;
-    const std::uint8_t code = why && m_reason != PathReason::None ? static_cast<std::uint8_t>(m_reason) : proto::reason::kPathRan;
+    const bool why = kind == dev::proto::EventKind::PathHeld || kind == dev::proto::EventKind::PathAborted;
+    const std::uint8_t code = why && m_reason != PathReason::None ? static_cast<std::uint8_t>(m_reason) : dev::proto::reason::kPathRan;
     m.raiseEvent(kind, -1, text, code);
     m.m_events.back().position = static_cast<std::int32_t>(index);
 }
 
 // ---- requests -----------------------------------------------------------------------
 
-PathQueue::Result PathQueue::begin(const proto::PathBeginRequest& r)
+PathQueue::Result PathQueue::begin(const dev::proto::PathBeginRequest& r)
 {
     if (m.axisCount() < 2)
         return refuse(ErrorCode::BadAxis, -1, 0, "this instrument has no XY axes to run a path on");
@@ -152,15 +152,15 @@ PathQueue::Result PathQueue::begin(const proto::PathBeginRequest& r)
     return std::nullopt;
 }
 
-PathQueue::Result PathQueue::check(const proto::PathSegmentWire& w, std::uint32_t index, const Vec2& from,
+PathQueue::Result PathQueue::check(const dev::proto::PathSegmentWire& w, std::uint32_t index, const Vec2& from,
                                    const GridPoint& gridFrom, Queued& q) const
 {
     auto& sx = m.st(m_x);
     auto& sy = m.st(m_y);
     q.index = index;
     Segment& g = q.geo;
-    g.kind = w.kind == proto::PathSegmentKind::Line ? SegmentKind::Line
-             : w.kind == proto::PathSegmentKind::ArcCw ? SegmentKind::ArcCw : SegmentKind::ArcCcw;
+    g.kind = w.kind == dev::proto::PathSegmentKind::Line ? SegmentKind::Line
+             : w.kind == dev::proto::PathSegmentKind::ArcCw ? SegmentKind::ArcCw : SegmentKind::ArcCcw;
     g.start = from;
     g.end = {w.x / 1e6 + sx.offset, w.y / 1e6 + sy.offset};
     g.center = {w.cx / 1e6 + sx.offset, w.cy / 1e6 + sy.offset};
@@ -223,14 +223,14 @@ PathQueue::Result PathQueue::check(const proto::PathSegmentWire& w, std::uint32_
     return std::nullopt;
 }
 
-PathQueue::Result PathQueue::append(const proto::PathAppendRequest& r)
+PathQueue::Result PathQueue::append(const dev::proto::PathAppendRequest& r)
 {
     if (m.m_estop)
         return refuse(ErrorCode::EStopActive, -1, 0, "E-stop is active: the path was aborted");
     if (!active())
         return refuse(ErrorCode::PathState, -1, 0,
                       m_state == PathState::Aborted
-                          ? std::string("the path was aborted (") + proto::pathReasonName(m_reason) + "): begin a new one"
+                          ? std::string("the path was aborted (") + dev::proto::pathReasonName(m_reason) + "): begin a new one"
                           : "no path begun: send PATH_BEGIN first");
     if (m_lastQueued)
         return refuse(ErrorCode::PathState, -1, m_nextIndex, "the path's last segment has already been queued");
@@ -270,9 +270,9 @@ PathQueue::Result PathQueue::append(const proto::PathAppendRequest& r)
     m_tailTangent = tangent;
     m_tailStops = stops;
     m_nextIndex += static_cast<std::uint32_t>(r.segments.size());
-    m_lastQueued = r.flags & proto::PathAppendLast;
+    m_lastQueued = r.flags & dev::proto::PathAppendLast;
     if (m_state == PathState::Filling
-        && ((r.flags & (proto::PathAppendStart | proto::PathAppendLast)) || m_queue.full()))
+        && ((r.flags & (dev::proto::PathAppendStart | dev::proto::PathAppendLast)) || m_queue.full()))
         startRunning();
     else if (m_state == PathState::Starved)
         m_state = PathState::Running;
@@ -280,9 +280,9 @@ PathQueue::Result PathQueue::append(const proto::PathAppendRequest& r)
     return std::nullopt;
 }
 
-proto::PathStatusReply PathQueue::status() const
+dev::proto::PathStatusReply PathQueue::status() const
 {
-    proto::PathStatusReply s;
+    dev::proto::PathStatusReply s;
     s.state = m_state;
     s.capacity = static_cast<std::uint8_t>(kCapacity);
     s.freeSlots = static_cast<std::uint8_t>(m_queue.capacity() - m_queue.size());
@@ -300,7 +300,7 @@ void PathQueue::startRunning()
 {
     m_state = PathState::Running;
     const auto* first = m_queue.peek(0);
-    event(proto::EventKind::PathStarted, first ? first->index : m_nextIndex, "path started");
+    event(dev::proto::EventKind::PathStarted, first ? first->index : m_nextIndex, "path started");
 }
 
 PathQueue::Result PathQueue::hold(PathReason why)
@@ -316,7 +316,7 @@ PathQueue::Result PathQueue::hold(PathReason why)
             m_cur->zBraking = true;
     } else {
         m_state = PathState::Held;
-        event(proto::EventKind::PathHeld, status().executingIndex, std::string("held: ") + proto::pathReasonName(why));
+        event(dev::proto::EventKind::PathHeld, status().executingIndex, std::string("held: ") + dev::proto::pathReasonName(why));
     }
     return std::nullopt;
 }
@@ -411,9 +411,9 @@ void PathQueue::endPath(PathState state, PathReason why, const std::string& text
     m_junctionMm = kDefaultJunctionDeviationMm;
     reserveAxes(false);
     if (state == PathState::Done)
-        event(proto::EventKind::PathDone, at, text);
+        event(dev::proto::EventKind::PathDone, at, text);
     else
-        event(proto::EventKind::PathAborted, at, text + " at segment " + std::to_string(at));
+        event(dev::proto::EventKind::PathAborted, at, text + " at segment " + std::to_string(at));
 }
 
-} // namespace sim
+} // namespace dev::sim

@@ -35,13 +35,13 @@ namespace motion {
 class Profile;
 }
 
-namespace sim {
+namespace dev::sim {
 
 class SimMachine;
 
 class PathQueue {
 public:
-    static constexpr int kCapacity = proto::kMaxPathSegmentsPerAppend;
+    static constexpr int kCapacity = dev::proto::kMaxPathSegmentsPerAppend;
     static constexpr double kDefaultJunctionDeviationMm = 0.01;
     static constexpr double kMaxJunctionDeviationMm = 1.0;
     /// Default path acceleration as a share of the slower of X and Y's maxAccel: the rest is
@@ -55,11 +55,11 @@ public:
     explicit PathQueue(SimMachine& machine);
     ~PathQueue();
 
-    using Result = std::optional<proto::ErrorReply>;  ///< nullopt = accepted
-    Result begin(const proto::PathBeginRequest& request);
-    Result append(const proto::PathAppendRequest& request);
-    proto::PathStatusReply status() const;
-    Result hold(proto::PathReason why = proto::PathReason::HostHold);
+    using Result = std::optional<dev::proto::ErrorReply>;  ///< nullopt = accepted
+    Result begin(const dev::proto::PathBeginRequest& request);
+    Result append(const dev::proto::PathAppendRequest& request);
+    dev::proto::PathStatusReply status() const;
+    Result hold(dev::proto::PathReason why = dev::proto::PathReason::HostHold);
     Result resume();
     Result clear();
 
@@ -69,7 +69,7 @@ public:
     /// STOP named a path axis: slow down along the path, then end it.
     void stop();
     /// E-stop or a limit switch: the axes are already frozen; forget the path now.
-    void abortNow(proto::PathReason why, const std::string& text);
+    void abortNow(dev::proto::PathReason why, const std::string& text);
     /// A host opened a new session: it does not know this path, so end it (slowing down first).
     void sessionStarted();
 
@@ -80,7 +80,7 @@ public:
     double speedMmS() const { return m_speedMmS; }
     double accelMmS2() const { return m_accelMmS2; }
     std::uint8_t axisMask() const;
-    proto::PathState state() const { return m_state; }
+    dev::proto::PathState state() const { return m_state; }
     /// 0 switches the cross-coupled correction off (for comparison in tests and the benchmark).
     void setCrossCouplingGain(double perTick) { m_crossCouplingGain = perTick; }
     double crossCouplingGain() const { return m_crossCouplingGain; }
@@ -108,8 +108,8 @@ private:
         bool zBraking = false;           ///< a hold or stop caught Z moving: brake it
     };
 
-    Result refuse(proto::ErrorCode code, int axis, double value, const std::string& text) const;
-    Result check(const proto::PathSegmentWire& w, std::uint32_t index, const motion::path::Vec2& from,
+    Result refuse(dev::proto::ErrorCode code, int axis, double value, const std::string& text) const;
+    Result check(const dev::proto::PathSegmentWire& w, std::uint32_t index, const motion::path::Vec2& from,
                  const motion::GridPoint& gridFrom, Queued& out) const;
     void startRunning();
     void replan();
@@ -121,10 +121,10 @@ private:
     void atRest();
     void setReferences();
     /// Ends the path; the event names `eventIndex` (default: the segment not completed).
-    void endPath(proto::PathState state, proto::PathReason why, const std::string& text,
+    void endPath(dev::proto::PathState state, dev::proto::PathReason why, const std::string& text,
                  std::optional<std::uint32_t> eventIndex = std::nullopt);
     void reserveAxes(bool reserve);
-    void event(proto::EventKind kind, std::uint32_t index, const std::string& text);
+    void event(dev::proto::EventKind kind, std::uint32_t index, const std::string& text);
     double gridToMachine(int axis, std::int64_t steps) const;
     std::string where(std::uint32_t index, const motion::path::Segment& s) const;
 
@@ -138,8 +138,8 @@ private:
     motion::GridPoint m_gridAt;          ///< where the last completed segment's walk ended
     bool m_havePrevGrid = false;
 
-    proto::PathState m_state = proto::PathState::Idle;
-    proto::PathReason m_reason = proto::PathReason::None;
+    dev::proto::PathState m_state = dev::proto::PathState::Idle;
+    dev::proto::PathReason m_reason = dev::proto::PathReason::None;
     bool m_lastQueued = false;           ///< the path's final segment has arrived
     bool m_abortAtRest = false;          ///< holding to end the path (stop, clear, new session)
     std::uint32_t m_nextIndex = 0;
@@ -158,4 +158,4 @@ private:
     double m_crossCorrectionMm = 0;      ///< the cross-coupled correction now, along the left normal
 };
 
-} // namespace sim
+} // namespace dev::sim

@@ -12,10 +12,10 @@
 #include <cmath>
 #include <vector>
 
-namespace sim {
+namespace dev::sim {
 
-using proto::PathReason;
-using proto::PathState;
+using dev::proto::PathReason;
+using dev::proto::PathState;
 
 void PathQueue::replan()
 {
@@ -72,7 +72,7 @@ void PathQueue::finishSegment()
     const std::uint32_t index = m_cur->seg.index;
     m_cur.reset();
     m_executing = index + 1;
-    event(proto::EventKind::PathSegmentDone, index, {});
+    event(dev::proto::EventKind::PathSegmentDone, index, {});
 }
 
 void PathQueue::setReferences()
@@ -134,7 +134,7 @@ void PathQueue::atRest()
         return;
     }
     m_state = PathState::Held;
-    event(proto::EventKind::PathHeld, status().executingIndex, std::string("held: ") + proto::pathReasonName(m_reason));
+    event(dev::proto::EventKind::PathHeld, status().executingIndex, std::string("held: ") + dev::proto::pathReasonName(m_reason));
 }
 
 void PathQueue::tickZ(double dtS)
@@ -232,7 +232,7 @@ void PathQueue::tick()
             m_state = PathState::Starved;
             if (m_underruns < 0xFFFF)
                 ++m_underruns;
-            event(proto::EventKind::PathUnderrun, m_executing == 0 ? 0 : m_executing - 1,
+            event(dev::proto::EventKind::PathUnderrun, m_executing == 0 ? 0 : m_executing - 1,
                   "the queue ran dry: at rest until more segments arrive");
         }
         return;
@@ -263,4 +263,4 @@ std::optional<double> PathQueue::contourErrorMm(double measuredX, double measure
     return signedBest;
 }
 
-} // namespace sim
+} // namespace dev::sim

@@ -1,13 +1,13 @@
 #pragma once
 // What a host needs of a simulated device on a serial line, whatever protocol it speaks:
-// bytes in, virtual time advanced by the host, bytes out. sim::Firmware (the BenchPilot
-// protocol) and sim::GrblFirmware (GRBL 1.1 / grblHAL) both are one, so the pty host and the
+// bytes in, virtual time advanced by the host, bytes out. dev::sim::Firmware (the BenchPilot
+// protocol) and dev::sim::GrblFirmware (GRBL 1.1 / grblHAL) both are one, so the pty host and the
 // in-process link run either.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
-namespace sim {
+namespace dev::sim {
 
 class SerialDevice {
 public:
@@ -23,4 +23,4 @@ public:
     virtual void portOpened() {}
 };
 
-} // namespace sim
+} // namespace dev::sim

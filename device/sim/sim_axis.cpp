@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sim {
+namespace dev::sim {
 
 SimAxis::SimAxis(const AxisConfig& config, bool closedLoop, std::uint64_t seed, double driveLagS, double rotorLagS)
     : m_cfg(config), m_closedLoop(closedLoop), m_lagS(driveLagS), m_rotorLagS(rotorLagS), m_rng(seed)
@@ -241,4 +241,4 @@ void SimAxis::tick(double dtS)
     m_prevMeasured = meas;
 }
 
-} // namespace sim
+} // namespace dev::sim

@@ -9,7 +9,7 @@
 #include <optional>
 #include <random>
 
-namespace sim {
+namespace dev::sim {
 
 class SimAxis {
 public:
@@ -122,4 +122,4 @@ private:
     bool m_frozen = false;
 };
 
-} // namespace sim
+} // namespace dev::sim

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace sim {
+namespace dev::sim {
 
 using motion::metrology::CompensationModel;
 
@@ -51,36 +51,36 @@ const std::optional<CompensationModel>& SimCompensation::model(int axis) const {
 bool SimCompensation::enabled(int axis) const { return m_axes[static_cast<std::size_t>(axis)].enabled; }
 bool SimCompensation::applied(int axis) const { return m_axes[static_cast<std::size_t>(axis)].applied; }
 
-proto::ErrorReply SimCompensation::error(proto::ErrorCode code, int axis, std::int32_t value, const std::string& text) const
+dev::proto::ErrorReply SimCompensation::error(dev::proto::ErrorCode code, int axis, std::int32_t value, const std::string& text) const
 {
-    proto::ErrorReply e;
+    dev::proto::ErrorReply e;
     e.code = code;
-    e.axis = axis < 0 ? proto::kNoAxis : static_cast<std::uint8_t>(axis);
+    e.axis = axis < 0 ? dev::proto::kNoAxis : static_cast<std::uint8_t>(axis);
     e.value = value;
     e.message = text;
     return e;
 }
 
-SimCompensation::Result SimCompensation::upload(const proto::CompUploadRequest& r, proto::CompUploadReply& out)
+SimCompensation::Result SimCompensation::upload(const dev::proto::CompUploadRequest& r, dev::proto::CompUploadReply& out)
 {
     if (r.axis >= m_axes.size())
-        return error(proto::ErrorCode::BadAxis, -1, r.axis, "axis index " + std::to_string(r.axis) + " does not exist");
+        return error(dev::proto::ErrorCode::BadAxis, -1, r.axis, "axis index " + std::to_string(r.axis) + " does not exist");
     const int i = r.axis;
     const auto& cfg = m_m.st(i).plant->config();
     const std::string letter(1, cfg.letter);
-    if (cfg.unit != proto::AxisUnit::Millimetre)
-        return error(proto::ErrorCode::BadAxis, i, 0, "axis " + letter + " is not a linear axis: it has no positioning error to compensate");
+    if (cfg.unit != dev::proto::AxisUnit::Millimetre)
+        return error(dev::proto::ErrorCode::BadAxis, i, 0, "axis " + letter + " is not a linear axis: it has no positioning error to compensate");
     if (m_m.st(i).mode != SimMachine::Mode::Idle)
-        return error(proto::ErrorCode::Busy, i, 0, "axis " + letter + " is moving: upload its compensation at rest");
+        return error(dev::proto::ErrorCode::Busy, i, 0, "axis " + letter + " is moving: upload its compensation at rest");
     Axis& a = m_axes[static_cast<std::size_t>(i)];
     Staging& s = a.staging;
-    const bool table = r.kind != proto::CompKind::Polynomial;
+    const bool table = r.kind != dev::proto::CompKind::Polynomial;
     if (r.first == 0) {
-        if (table && (r.total < proto::kMinCompPoints || r.total > proto::kMaxCompPoints))
-            return error(proto::kErrCompInvalid, i, -1,
+        if (table && (r.total < dev::proto::kMinCompPoints || r.total > dev::proto::kMaxCompPoints))
+            return error(dev::proto::kErrCompInvalid, i, -1,
                          "a table of " + std::to_string(r.total) + " points: a compensation table has 2 to 256");
-        if (!table && (r.total < 1 || r.total > proto::kMaxCompCoefficients))
-            return error(proto::kErrCompInvalid, i, -1, std::to_string(r.total) + " coefficients: a polynomial has 1 to 6");
+        if (!table && (r.total < 1 || r.total > dev::proto::kMaxCompCoefficients))
+            return error(dev::proto::kErrCompInvalid, i, -1, std::to_string(r.total) + " coefficients: a polynomial has 1 to 6");
         s = Staging{};
         s.active = true;
         s.kind = r.kind;
@@ -89,13 +89,13 @@ SimCompensation::Result SimCompensation::upload(const proto::CompUploadRequest& 
     } else if (!s.active || s.kind != r.kind || s.backlash != r.backlash || s.total != r.total
                || r.first != s.points.size()) {
         const std::int32_t expected = s.active ? static_cast<std::int32_t>(s.points.size()) : 0;
-        return error(proto::kErrCompSequence, i, expected,
+        return error(dev::proto::kErrCompSequence, i, expected,
                      "part from entry " + std::to_string(r.first) + " of axis " + letter + "'s compensation: the device expects entry "
                          + std::to_string(expected) + (s.active ? " of the upload in progress" : " (no upload in progress)"));
     }
     if (table) {
         if (r.first + r.points.size() > s.total)
-            return error(proto::kErrCompInvalid, i, static_cast<std::int32_t>(s.total),
+            return error(dev::proto::kErrCompInvalid, i, static_cast<std::int32_t>(s.total),
                          "more points than the " + std::to_string(s.total) + " the upload announced");
         s.points.insert(s.points.end(), r.points.begin(), r.points.end());
     }
@@ -110,7 +110,7 @@ SimCompensation::Result SimCompensation::upload(const proto::CompUploadRequest& 
     m.backlashUm = s.backlash / 1e3;
     if (table) {
         m.kind = CompensationModel::Kind::Table;
-        m.perDirection = s.kind == proto::CompKind::TablePerDirection;
+        m.perDirection = s.kind == dev::proto::CompKind::TablePerDirection;
         for (const auto& p : s.points)
             m.table.push_back({p.nominal / 1e6, p.correctionUp / 1e3, (m.perDirection ? p.correctionDown : p.correctionUp) / 1e3});
     } else {
@@ -131,9 +131,9 @@ SimCompensation::Result SimCompensation::install(int i, CompensationModel model)
     for (const auto& p : motion::metrology::validate(model)) {
         if (p.isWarning())
             continue;
-        return error(proto::kErrCompInvalid, i, indexIn(p.path),
+        return error(dev::proto::kErrCompInvalid, i, indexIn(p.path),
                      "the compensation is refused" + (p.path.empty() ? std::string() : " at " + p.path) + ": "
-                         + msg::debugString(p.message));
+                         + motion::msg::debugString(p.message));
     }
     Axis& a = m_axes[static_cast<std::size_t>(i)];
     const std::string text = "installed " + kindText(model) + ", disabled";
@@ -144,35 +144,35 @@ SimCompensation::Result SimCompensation::install(int i, CompensationModel model)
     a.enabled = false;  // a new compensation is enabled on purpose, never by accident
     a.saved = false;
     reconcile();
-    m_m.raiseEvent(proto::kEvCompChanged, i, text, proto::reason::kInstalled, std::move(values));
+    m_m.raiseEvent(dev::proto::kEvCompChanged, i, text, dev::proto::reason::kInstalled, std::move(values));
     return std::nullopt;
 }
 
-SimCompensation::Result SimCompensation::get(const proto::CompGetRequest& r, proto::CompGetReply& out) const
+SimCompensation::Result SimCompensation::get(const dev::proto::CompGetRequest& r, dev::proto::CompGetReply& out) const
 {
     if (r.axis >= m_axes.size())
-        return error(proto::ErrorCode::BadAxis, -1, r.axis, "axis index " + std::to_string(r.axis) + " does not exist");
+        return error(dev::proto::ErrorCode::BadAxis, -1, r.axis, "axis index " + std::to_string(r.axis) + " does not exist");
     const Axis& a = m_axes[r.axis];
-    out = proto::CompGetReply{};
+    out = dev::proto::CompGetReply{};
     out.axis = r.axis;
-    out.flags = static_cast<std::uint8_t>((a.enabled ? proto::CompEnabled : 0) | (a.applied ? proto::CompApplied : 0)
-                                          | (a.saved ? proto::CompSaved : 0));
+    out.flags = static_cast<std::uint8_t>((a.enabled ? dev::proto::CompEnabled : 0) | (a.applied ? dev::proto::CompApplied : 0)
+                                          | (a.saved ? dev::proto::CompSaved : 0));
     if (!a.model)
         return std::nullopt;
     const CompensationModel& m = *a.model;
     out.backlash = compNmFromUm(m.backlashUm);
     if (m.kind == CompensationModel::Kind::Polynomial) {
-        out.kind = proto::CompKind::Polynomial;
+        out.kind = dev::proto::CompKind::Polynomial;
         out.coefficients = m.polynomial.coefficientsUm;
         out.total = static_cast<std::uint16_t>(out.coefficients.size());
         out.validFrom = compNm(m.validFromMm);
         out.validTo = compNm(m.validToMm);
         return std::nullopt;
     }
-    out.kind = m.perDirection ? proto::CompKind::TablePerDirection : proto::CompKind::Table;
+    out.kind = m.perDirection ? dev::proto::CompKind::TablePerDirection : dev::proto::CompKind::Table;
     out.total = static_cast<std::uint16_t>(m.table.size());
     out.first = r.first;
-    const std::size_t count = std::min<std::size_t>(std::min<std::uint8_t>(r.maxCount, proto::kMaxCompPointsPerFrame),
+    const std::size_t count = std::min<std::size_t>(std::min<std::uint8_t>(r.maxCount, dev::proto::kMaxCompPointsPerFrame),
                                                      r.first < m.table.size() ? m.table.size() - r.first : 0);
     for (std::size_t k = 0; k < count; ++k) {
         const auto& p = m.table[r.first + k];
@@ -181,10 +181,10 @@ SimCompensation::Result SimCompensation::get(const proto::CompGetRequest& r, pro
     return std::nullopt;
 }
 
-SimCompensation::Result SimCompensation::enable(const proto::CompEnableRequest& r)
+SimCompensation::Result SimCompensation::enable(const dev::proto::CompEnableRequest& r)
 {
-    const bool on = r.flags & proto::CompEnableOn;
-    const bool save = r.flags & proto::CompEnableSave;
+    const bool on = r.flags & dev::proto::CompEnableOn;
+    const bool save = r.flags & dev::proto::CompEnableSave;
     std::vector<int> axes;
     for (int i = 0; i < static_cast<int>(m_axes.size()); ++i) {
         const bool named = r.axisMask & (1u << i);
@@ -193,14 +193,14 @@ SimCompensation::Result SimCompensation::enable(const proto::CompEnableRequest& 
     }
     for (int b = static_cast<int>(m_axes.size()); b < 8; ++b)
         if (r.axisMask & (1u << b))
-            return error(proto::ErrorCode::BadAxis, -1, b, "axis index " + std::to_string(b) + " does not exist");
+            return error(dev::proto::ErrorCode::BadAxis, -1, b, "axis index " + std::to_string(b) + " does not exist");
     // Check every axis before changing any: a refusal changes nothing.
     for (int i : axes) {
         const std::string letter(1, m_m.st(i).plant->config().letter);
         if (on && !m_axes[static_cast<std::size_t>(i)].model)
-            return error(proto::kErrCompMissing, i, 0, "axis " + letter + " has no compensation to enable: upload one first");
+            return error(dev::proto::kErrCompMissing, i, 0, "axis " + letter + " has no compensation to enable: upload one first");
         if (m_m.st(i).mode != SimMachine::Mode::Idle)
-            return error(proto::ErrorCode::Busy, i, 0, "axis " + letter + " is moving: change its compensation at rest");
+            return error(dev::proto::ErrorCode::Busy, i, 0, "axis " + letter + " is moving: change its compensation at rest");
     }
     for (int i : axes) {
         Axis& a = m_axes[static_cast<std::size_t>(i)];
@@ -213,8 +213,8 @@ SimCompensation::Result SimCompensation::enable(const proto::CompEnableRequest& 
             a.saved = true;
         }
         if (changed || save)
-            m_m.raiseEvent(proto::kEvCompChanged, i, std::string(a.enabled ? "enabled" : "disabled") + (save ? ", kept for power-up" : ""),
-                           a.enabled ? proto::reason::kEnabled : proto::reason::kDisabled, {save ? 1.0 : 0.0});
+            m_m.raiseEvent(dev::proto::kEvCompChanged, i, std::string(a.enabled ? "enabled" : "disabled") + (save ? ", kept for power-up" : ""),
+                           a.enabled ? dev::proto::reason::kEnabled : dev::proto::reason::kDisabled, {save ? 1.0 : 0.0});
     }
     reconcile();
     return std::nullopt;
@@ -236,4 +236,4 @@ void SimCompensation::reconcile()
     }
 }
 
-} // namespace sim
+} // namespace dev::sim

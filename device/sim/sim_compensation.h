@@ -19,7 +19,7 @@
 #include <optional>
 #include <vector>
 
-namespace sim {
+namespace dev::sim {
 
 class SimMachine;
 
@@ -37,10 +37,10 @@ class SimCompensation {
 public:
     SimCompensation(SimMachine& machine, const NonVolatile& powerUp);
 
-    using Result = std::optional<proto::ErrorReply>;
-    Result upload(const proto::CompUploadRequest& r, proto::CompUploadReply& out);
-    Result get(const proto::CompGetRequest& r, proto::CompGetReply& out) const;
-    Result enable(const proto::CompEnableRequest& r);
+    using Result = std::optional<dev::proto::ErrorReply>;
+    Result upload(const dev::proto::CompUploadRequest& r, dev::proto::CompUploadReply& out);
+    Result get(const dev::proto::CompGetRequest& r, dev::proto::CompGetReply& out) const;
+    Result enable(const dev::proto::CompEnableRequest& r);
 
     /// Once per tick: attaches an enabled compensation to an axis that is homed and at
     /// rest, detaches one that is disabled or whose homing was lost.
@@ -54,10 +54,10 @@ public:
 private:
     struct Staging {
         bool active = false;
-        proto::CompKind kind = proto::CompKind::None;
+        dev::proto::CompKind kind = dev::proto::CompKind::None;
         std::int32_t backlash = 0;
         std::uint16_t total = 0;
-        std::vector<proto::CompPoint> points;
+        std::vector<dev::proto::CompPoint> points;
     };
     struct Axis {
         std::optional<motion::metrology::CompensationModel> model;
@@ -68,11 +68,11 @@ private:
     };
 
     Result install(int axis, motion::metrology::CompensationModel model);
-    proto::ErrorReply error(proto::ErrorCode code, int axis, std::int32_t value, const std::string& text) const;
+    dev::proto::ErrorReply error(dev::proto::ErrorCode code, int axis, std::int32_t value, const std::string& text) const;
 
     SimMachine& m_m;
     std::vector<Axis> m_axes;
     NonVolatile m_flash;
 };
 
-} // namespace sim
+} // namespace dev::sim

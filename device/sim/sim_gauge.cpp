@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace sim {
+namespace dev::sim {
 
 SimGauge::SimGauge(std::function<double()> truePositionMm, const GaugeConfig& config)
     : m_truePosition(std::move(truePositionMm)), m_cfg(config), m_rng(config.seed)
@@ -71,4 +71,4 @@ void SimGauge::drainOutput(std::vector<std::uint8_t>& out)
     m_out.clear();
 }
 
-} // namespace sim
+} // namespace dev::sim

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-namespace sim {
+namespace dev::sim {
 
 struct GaugeConfig {
     double resolutionMm = 0.0001;  ///< the last digit: 0.1 µm prints four decimals
@@ -57,4 +57,4 @@ private:
     std::uint64_t m_requests = 0;
 };
 
-} // namespace sim
+} // namespace dev::sim

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sim {
+namespace dev::sim {
 
 SimMachine::Result SimMachine::home(std::uint8_t mask)
 {
@@ -17,7 +17,7 @@ SimMachine::Result SimMachine::home(std::uint8_t mask)
     // One homing sequence at a time: a second one would drop the stages of the
     // first that have not started yet.
     if (!m_homeStages.empty())
-        return error(proto::ErrorCode::Busy, -1, 0, "a homing sequence is still running");
+        return error(dev::proto::ErrorCode::Busy, -1, 0, "a homing sequence is still running");
     // The analyzer lifts Z clear of the plate before X and Y sweep to their switches.
     std::uint8_t zMask = 0;
     for (int i = 0; i < axisCount(); ++i)
@@ -69,9 +69,9 @@ void SimMachine::tickHoming(int i)
             s.mode = Mode::Idle;
             s.fault = true;
             s.plant->holdHere();
-            raiseEvent(proto::EventKind::Fault, i, std::string("axis ") + c.letter + " home switch not found over the whole travel",
-                       proto::reason::kHomeSwitchNotFound);
-            cancelHoming("homing cancelled: another axis failed to find its switch", proto::reason::kHomingOtherFailed);
+            raiseEvent(dev::proto::EventKind::Fault, i, std::string("axis ") + c.letter + " home switch not found over the whole travel",
+                       dev::proto::reason::kHomeSwitchNotFound);
+            cancelHoming("homing cancelled: another axis failed to find its switch", dev::proto::reason::kHomingOtherFailed);
         }
         break;
     case HomePhase::BackOff:
@@ -91,7 +91,7 @@ void SimMachine::tickHoming(int i)
             const double noise = c.switchRepeatability > 0 ? s.plant->uniform(-c.switchRepeatability, c.switchRepeatability) : 0;
             zeroCounters(i, c.homeSwitchAt - noise);
             s.mode = Mode::Idle;  // homed only once zero is reached (finishAxis, HomeDone)
-            planSegment({i}, {s.offset}, c.homeFastSpeed, -1, proto::EventKind::HomeDone, nullptr);
+            planSegment({i}, {s.offset}, c.homeFastSpeed, -1, dev::proto::EventKind::HomeDone, nullptr);
         }
         break;
     }
@@ -125,7 +125,7 @@ void SimMachine::advanceHomingStages()
     // An axis of this stage came to rest unhomed (stopped by a switch, say): the
     // later stages must not run, nor stay pending and block every later homing.
     if (!allHomed)
-        cancelHoming("homing cancelled: an axis homed before this one did not reach home", proto::reason::kHomingEarlierFailed);
+        cancelHoming("homing cancelled: an axis homed before this one did not reach home", dev::proto::reason::kHomingEarlierFailed);
     startHomingStage();
 }
 
@@ -134,8 +134,8 @@ void SimMachine::cancelHoming(const char* why, std::uint8_t code)
     // Axes still waiting for their stage never moved: tell the host they will not home.
     for (int i = 0; i < axisCount(); ++i)
         if (awaitingHoming(i))
-            raiseEvent(proto::EventKind::Stopped, i, why, code);
+            raiseEvent(dev::proto::EventKind::Stopped, i, why, code);
     m_homeStages.clear();
 }
 
-} // namespace sim
+} // namespace dev::sim

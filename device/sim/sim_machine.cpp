@@ -11,7 +11,7 @@
 #include <cstdio>
 #include <limits>
 
-namespace sim {
+namespace dev::sim {
 namespace {
 constexpr std::uint16_t kMaxEvents = 256;  // bounded: oldest events are dropped first
 }
@@ -62,13 +62,13 @@ void SimMachine::zeroCounters(int i, double logicalHere)
 
 double SimMachine::scale(int i) const
 {
-    return st(i).plant->config().unit == proto::AxisUnit::Microlitre ? 1e3 : 1e6;
+    return st(i).plant->config().unit == dev::proto::AxisUnit::Microlitre ? 1e3 : 1e6;
 }
 
 std::string SimMachine::fmt(int axis, double value) const
 {
     char buf[64];
-    const bool ul = st(axis).plant->config().unit == proto::AxisUnit::Microlitre;
+    const bool ul = st(axis).plant->config().unit == dev::proto::AxisUnit::Microlitre;
     std::snprintf(buf, sizeof buf, ul ? "%.2f µL" : "%.3f mm", value);
     return buf;
 }
@@ -84,35 +84,35 @@ std::int32_t SimMachine::wireInt32(double value)
     return static_cast<std::int32_t>(std::clamp(value, lo, hi));  // truncates, as the cast did
 }
 
-proto::ErrorReply SimMachine::error(proto::ErrorCode code, int axis, double value, const std::string& text) const
+dev::proto::ErrorReply SimMachine::error(dev::proto::ErrorCode code, int axis, double value, const std::string& text) const
 {
-    proto::ErrorReply e;
+    dev::proto::ErrorReply e;
     e.code = code;
-    e.axis = axis < 0 ? proto::kNoAxis : static_cast<std::uint8_t>(axis);
+    e.axis = axis < 0 ? dev::proto::kNoAxis : static_cast<std::uint8_t>(axis);
     e.value = wireInt32(axis < 0 ? value : std::round(value * scale(axis)));
     e.message = text;
     return e;
 }
 
-void SimMachine::raiseEvent(proto::EventKind kind, int axis, const std::string& text, std::uint8_t why, std::vector<double> values)
+void SimMachine::raiseEvent(dev::proto::EventKind kind, int axis, const std::string& text, std::uint8_t why, std::vector<double> values)
 {
-    proto::EventMsg e;
+    dev::proto::EventMsg e;
     e.kind = kind;
-    e.axis = axis < 0 ? proto::kNoAxis : static_cast<std::uint8_t>(axis);
+    e.axis = axis < 0 ? dev::proto::kNoAxis : static_cast<std::uint8_t>(axis);
     e.deviceTimeUs = timeUs();
     if (axis >= 0)
         e.position = wireInt32(std::round(measuredLogical(axis) * scale(axis)));
     e.text = text;
     if (why != 0)
-        e.reason = proto::EventReason{why, std::move(values)};
+        e.reason = dev::proto::EventReason{why, std::move(values)};
     if (m_events.size() >= kMaxEvents)
         m_events.erase(m_events.begin());
     m_events.push_back(std::move(e));
 }
 
-std::vector<proto::EventMsg> SimMachine::takeEvents()
+std::vector<dev::proto::EventMsg> SimMachine::takeEvents()
 {
-    std::vector<proto::EventMsg> out;
+    std::vector<dev::proto::EventMsg> out;
     out.swap(m_events);
     return out;
 }
@@ -122,21 +122,21 @@ std::vector<proto::EventMsg> SimMachine::takeEvents()
 SimMachine::Result SimMachine::checkAxes(std::uint8_t mask, bool mustBeIdle) const
 {
     if (m_estop)
-        return error(proto::ErrorCode::EStopActive, -1, 0, "E-stop is active: send reset before moving");
+        return error(dev::proto::ErrorCode::EStopActive, -1, 0, "E-stop is active: send reset before moving");
     for (int b = 0; b < 8; ++b) {
         if (!(mask & (1u << b)))
             continue;
         if (b >= axisCount())
-            return error(proto::ErrorCode::BadAxis, -1, b, "axis index " + std::to_string(b) + " does not exist");
+            return error(dev::proto::ErrorCode::BadAxis, -1, b, "axis index " + std::to_string(b) + " does not exist");
         if (mustBeIdle && (st(b).mode != Mode::Idle || awaitingHoming(b)))
-            return error(proto::ErrorCode::Busy, b, 0,
+            return error(dev::proto::ErrorCode::Busy, b, 0,
                          std::string("axis ") + st(b).plant->config().letter + " is still moving");
     }
     return std::nullopt;
 }
 
 SimMachine::Result SimMachine::planSegment(const std::vector<int>& axes, const std::vector<double>& targets,
-                                           double speed, int after, proto::EventKind doneEvent, int* idOut)
+                                           double speed, int after, dev::proto::EventKind doneEvent, int* idOut)
 {
     Segment seg;
     seg.id = m_nextSegmentId++;
@@ -156,7 +156,7 @@ SimMachine::Result SimMachine::planSegment(const std::vector<int>& axes, const s
     const double len = std::sqrt(len2);
     if (len < 1e-9) {
         for (int i : axes)
-            raiseEvent(doneEvent, i, "already there", proto::reason::kAlreadyThere);
+            raiseEvent(doneEvent, i, "already there", dev::proto::reason::kAlreadyThere);
         if (idOut)
             *idOut = -1;
         return std::nullopt;
@@ -179,12 +179,12 @@ SimMachine::Result SimMachine::planSegment(const std::vector<int>& axes, const s
         accelTime = std::max(accelTime, 1.5 * vPath / aPath);
         auto p = motion::SeedSCurve::plan(len, vPath, accelTime);
         if (!p)
-            return error(proto::ErrorCode::OutOfRange, -1, 0, "cannot plan an S-curve for this move");
+            return error(dev::proto::ErrorCode::OutOfRange, -1, 0, "cannot plan an S-curve for this move");
         seg.profile = std::make_shared<motion::SeedSCurve>(*p);
     } else {
         auto p = motion::JerkLimitedProfile::plan(len, motion::JerkLimits{vPath, aPath, jPath});
         if (!p)
-            return error(proto::ErrorCode::OutOfRange, -1, 0, "cannot plan a jerk-limited move");
+            return error(dev::proto::ErrorCode::OutOfRange, -1, 0, "cannot plan a jerk-limited move");
         seg.profile = std::make_shared<motion::JerkLimitedProfile>(*p);
     }
     for (int i : axes) {
@@ -215,18 +215,18 @@ SimMachine::Result SimMachine::planSegment(const std::vector<int>& axes, const s
     return std::nullopt;
 }
 
-SimMachine::Result SimMachine::move(const proto::MoveRequest& r)
+SimMachine::Result SimMachine::move(const dev::proto::MoveRequest& r)
 {
     // The decoder guarantees one target per axis; a caller in-process may not.
-    if (r.axisMask == 0 || r.targets.size() != static_cast<std::size_t>(proto::popcount8(r.axisMask)))
-        return error(proto::ErrorCode::BadPayload, -1, static_cast<double>(r.targets.size()),
+    if (r.axisMask == 0 || r.targets.size() != static_cast<std::size_t>(dev::proto::popcount8(r.axisMask)))
+        return error(dev::proto::ErrorCode::BadPayload, -1, static_cast<double>(r.targets.size()),
                      "a move needs at least one axis and exactly one target per axis in its mask");
     if (auto e = checkAxes(r.axisMask, true))
         return e;
     std::vector<int> axes;
     std::vector<double> targets, speeds;
     std::size_t k = 0;
-    proto::AxisUnit speedUnit = proto::AxisUnit::Millimetre;
+    dev::proto::AxisUnit speedUnit = dev::proto::AxisUnit::Millimetre;
     for (int b = axisCount() - 1; b >= 0; --b)
         if (r.axisMask & (1u << b))
             speedUnit = st(b).plant->config().unit;
@@ -237,7 +237,7 @@ SimMachine::Result SimMachine::move(const proto::MoveRequest& r)
         const auto& c = s.plant->config();
         const double value = r.targets[k++] / scale(b);
         if (!r.relative && !s.homed)
-            return error(proto::ErrorCode::NotHomed, b, value,
+            return error(dev::proto::ErrorCode::NotHomed, b, value,
                          std::string("axis ") + c.letter + " is not homed: home it before an absolute move");
         const double logicalNow = commandedLogical(b);
         const double targetLogical = r.relative ? logicalNow + value : value;
@@ -245,7 +245,7 @@ SimMachine::Result SimMachine::move(const proto::MoveRequest& r)
         if (s.homed && (targetMachine < softMinMachine(b) - 1e-9 || targetMachine > softMaxMachine(b) + 1e-9)) {
             const bool low = targetMachine < softMinMachine(b);
             const double lim = (low ? softMinMachine(b) : softMaxMachine(b)) - s.offset;
-            return error(proto::ErrorCode::SoftLimit, b, lim,
+            return error(dev::proto::ErrorCode::SoftLimit, b, lim,
                          std::string("axis ") + c.letter + " target " + fmt(b, targetLogical) + " is beyond the "
                              + (low ? "lower" : "upper") + " soft limit " + fmt(b, lim));
         }
@@ -255,7 +255,7 @@ SimMachine::Result SimMachine::move(const proto::MoveRequest& r)
         if (r.speed != 0 && c.unit == speedUnit) {
             const double v = r.speed / scale(b);
             if (v > c.maxSpeed + 1e-9)
-                return error(proto::ErrorCode::OutOfRange, b, v,
+                return error(dev::proto::ErrorCode::OutOfRange, b, v,
                              std::string("speed ") + fmt(b, v) + "/s is above axis " + c.letter + "'s maximum "
                                  + fmt(b, c.maxSpeed) + "/s");
             speeds.push_back(v);
@@ -290,22 +290,22 @@ SimMachine::Result SimMachine::move(const proto::MoveRequest& r)
     }
     int xyId = -1;
     if (!xy.empty())
-        if (auto e = planSegment(xy, txy, vXy, -1, proto::EventKind::MotionDone, &xyId))
+        if (auto e = planSegment(xy, txy, vXy, -1, dev::proto::EventKind::MotionDone, &xyId))
             return e;
     if (!z.empty())
-        if (auto e = planSegment(z, tz, vZ, xyId, proto::EventKind::MotionDone, nullptr))
+        if (auto e = planSegment(z, tz, vZ, xyId, dev::proto::EventKind::MotionDone, nullptr))
             return e;
     for (std::size_t n = 0; n < other.size(); ++n)
-        if (auto e = planSegment({other[n]}, {tother[n]}, sother[n], -1, proto::EventKind::MotionDone, nullptr))
+        if (auto e = planSegment({other[n]}, {tother[n]}, sother[n], -1, dev::proto::EventKind::MotionDone, nullptr))
             return e;
     return std::nullopt;
 }
 
-SimMachine::Result SimMachine::jogStep(const proto::JogStepRequest& r)
+SimMachine::Result SimMachine::jogStep(const dev::proto::JogStepRequest& r)
 {
     if (r.axis >= axisCount())
-        return error(proto::ErrorCode::BadAxis, -1, r.axis, "axis index " + std::to_string(r.axis) + " does not exist");
-    proto::MoveRequest m;
+        return error(dev::proto::ErrorCode::BadAxis, -1, r.axis, "axis index " + std::to_string(r.axis) + " does not exist");
+    dev::proto::MoveRequest m;
     m.relative = true;
     m.speed = r.speed;
     m.axisMask = static_cast<std::uint8_t>(1u << r.axis);
@@ -313,10 +313,10 @@ SimMachine::Result SimMachine::jogStep(const proto::JogStepRequest& r)
     return move(m);
 }
 
-SimMachine::Result SimMachine::jogVelocity(const proto::JogVelocityRequest& r)
+SimMachine::Result SimMachine::jogVelocity(const dev::proto::JogVelocityRequest& r)
 {
-    if (r.axisMask == 0 || r.velocities.size() != static_cast<std::size_t>(proto::popcount8(r.axisMask)))
-        return error(proto::ErrorCode::BadPayload, -1, static_cast<double>(r.velocities.size()),
+    if (r.axisMask == 0 || r.velocities.size() != static_cast<std::size_t>(dev::proto::popcount8(r.axisMask)))
+        return error(dev::proto::ErrorCode::BadPayload, -1, static_cast<double>(r.velocities.size()),
                      "a jog needs at least one axis and exactly one velocity per axis in its mask");
     if (auto e = checkAxes(r.axisMask, false))
         return e;
@@ -328,9 +328,9 @@ SimMachine::Result SimMachine::jogVelocity(const proto::JogVelocityRequest& r)
         const AxisState& s = st(b);
         const auto& c = s.plant->config();
         if ((s.mode != Mode::Idle && s.mode != Mode::Jog && s.mode != Mode::Settling) || awaitingHoming(b))
-            return error(proto::ErrorCode::Busy, b, 0, std::string("axis ") + c.letter + " is busy with a move or homing");
+            return error(dev::proto::ErrorCode::Busy, b, 0, std::string("axis ") + c.letter + " is busy with a move or homing");
         if (std::abs(v) > c.maxSpeed + 1e-9)
-            return error(proto::ErrorCode::OutOfRange, b, v,
+            return error(dev::proto::ErrorCode::OutOfRange, b, v,
                          std::string("jog speed ") + fmt(b, v) + "/s is above axis " + c.letter + "'s maximum "
                              + fmt(b, c.maxSpeed) + "/s");
     }
@@ -392,7 +392,7 @@ SimMachine::Result SimMachine::stop(std::uint8_t mask)
         }
     }
     if (homingStopped)
-        cancelHoming("homing stopped before this axis' turn", proto::reason::kHomingStopped);
+        cancelHoming("homing stopped before this axis' turn", dev::proto::reason::kHomingStopped);
     // Axes of one segment slow down together, so a coupled XY move stops on its
     // line. A segment that has not started yet stops at once (v = 0).
     for (int id : segIds) {
@@ -418,7 +418,7 @@ SimMachine::Result SimMachine::stop(std::uint8_t mask)
         }
         m_segments.erase(it);
         // Z waited for this XY move to arrive; it never will.
-        cancelSegmentsAfter(id, "cancelled: the move it waited for was stopped", proto::reason::kWaitedMoveStopped);
+        cancelSegmentsAfter(id, "cancelled: the move it waited for was stopped", dev::proto::reason::kWaitedMoveStopped);
     }
     return std::nullopt;
 }
@@ -434,7 +434,7 @@ void SimMachine::cancelSegmentsAfter(int id, const char* why, std::uint8_t code)
                 continue;
             st(a).mode = Mode::Idle;
             st(a).segment = -1;
-            raiseEvent(proto::EventKind::Stopped, a, why, code);
+            raiseEvent(dev::proto::EventKind::Stopped, a, why, code);
         }
     }
     m_segments.erase(std::remove_if(m_segments.begin(), m_segments.end(), waiting), m_segments.end());
@@ -444,7 +444,7 @@ SimMachine::Result SimMachine::estop()
 {
     m_tuning->abort(0xFF, motion::control::EndReason::EStop);
     m_estop = true;
-    m_path->abortNow(proto::PathReason::EStop, "E-stop");
+    m_path->abortNow(dev::proto::PathReason::EStop, "E-stop");
     m_segments.clear();
     m_homeStages.clear();
     for (int i = 0; i < axisCount(); ++i) {
@@ -454,7 +454,7 @@ SimMachine::Result SimMachine::estop()
         s.segment = -1;
         s.v = s.vTarget = 0;
     }
-    raiseEvent(proto::EventKind::EStop, -1, "emergency stop: all motion halted", proto::reason::kAllHalted);
+    raiseEvent(dev::proto::EventKind::EStop, -1, "emergency stop: all motion halted", dev::proto::reason::kAllHalted);
     return std::nullopt;
 }
 
@@ -467,7 +467,7 @@ SimMachine::Result SimMachine::reset()
     }
     for (int i = 0; i < axisCount(); ++i)
         st(i).fault = false;
-    raiseEvent(proto::EventKind::Reset, -1, "E-stop and faults cleared", proto::reason::kCleared);
+    raiseEvent(dev::proto::EventKind::Reset, -1, "E-stop and faults cleared", dev::proto::reason::kCleared);
     return std::nullopt;
 }
 
@@ -483,27 +483,27 @@ SimMachine::Result SimMachine::setZero(std::uint8_t mask)
     return std::nullopt;
 }
 
-SimMachine::Result SimMachine::setLimits(const proto::SetLimitsRequest& r)
+SimMachine::Result SimMachine::setLimits(const dev::proto::SetLimitsRequest& r)
 {
     if (r.axis >= axisCount())
-        return error(proto::ErrorCode::BadAxis, -1, r.axis, "axis index " + std::to_string(r.axis) + " does not exist");
+        return error(dev::proto::ErrorCode::BadAxis, -1, r.axis, "axis index " + std::to_string(r.axis) + " does not exist");
     AxisState& s = st(r.axis);
     const auto& c = s.plant->config();
     // Limits live in home coordinates; before homing the axis' coordinates are
     // wherever it was powered up, so a limit given in them would land anywhere.
     if (!s.homed)
-        return error(proto::ErrorCode::NotHomed, r.axis, r.limits.min / scale(r.axis),
+        return error(dev::proto::ErrorCode::NotHomed, r.axis, r.limits.min / scale(r.axis),
                      std::string("axis ") + c.letter + " is not homed: soft limits are set in homed coordinates");
     // Requests are logical; the limits are kept in home coordinates.
     const double toHome = s.offset - s.homeOffset;
     const double minLogical = r.limits.min / scale(r.axis), maxLogical = r.limits.max / scale(r.axis);
     const double lo = minLogical + toHome, hi = maxLogical + toHome;
     if (!(lo < hi))
-        return error(proto::ErrorCode::OutOfRange, r.axis, minLogical,
+        return error(dev::proto::ErrorCode::OutOfRange, r.axis, minLogical,
                      std::string("axis ") + c.letter + " lower soft limit " + fmt(r.axis, minLogical)
                          + " must be below the upper one " + fmt(r.axis, maxLogical));
     if (lo < -1e-9 || hi > c.travel + 1e-9)
-        return error(proto::ErrorCode::OutOfRange, r.axis, lo < -1e-9 ? minLogical : maxLogical,
+        return error(dev::proto::ErrorCode::OutOfRange, r.axis, lo < -1e-9 ? minLogical : maxLogical,
                      std::string("axis ") + c.letter + " soft limits must lie inside the travel " + fmt(r.axis, -toHome)
                          + " … " + fmt(r.axis, c.travel - toHome));
     s.softMin = lo;
@@ -511,9 +511,9 @@ SimMachine::Result SimMachine::setLimits(const proto::SetLimitsRequest& r)
     return std::nullopt;
 }
 
-proto::LimitsReply SimMachine::limits() const
+dev::proto::LimitsReply SimMachine::limits() const
 {
-    proto::LimitsReply r;
+    dev::proto::LimitsReply r;
     for (int i = 0; i < axisCount(); ++i) {
         const AxisState& s = st(i);
         // Unhomed, the firmware cannot place its limits in the power-up coordinates:
@@ -527,4 +527,4 @@ proto::LimitsReply SimMachine::limits() const
 
 
 
-} // namespace sim
+} // namespace dev::sim

@@ -16,7 +16,7 @@ namespace motion {
 class Profile;
 }
 
-namespace sim {
+namespace dev::sim {
 
 class SimTuning;
 class PathQueue;
@@ -41,10 +41,10 @@ public:
     /// every 50 ms of its time could never hold a jog above 4x.
     void setJogWatchdogTripS(double seconds) { m_jogWatchdogTripS = seconds; }
     double jogWatchdogTripS() const { return m_jogWatchdogTripS; }
-    proto::HelloReply hello(std::uint32_t linkBaud) const;
+    dev::proto::HelloReply hello(std::uint32_t linkBaud) const;
     /// The planner's limits as HELLO's extension block states them: the numbers
     /// planSegment() works to, so a host times a move the way it will run.
-    proto::MotionLimits motionLimits() const;
+    dev::proto::MotionLimits motionLimits() const;
     int axisCount() const { return static_cast<int>(m_axes.size()); }
     double timeS() const { return static_cast<double>(m_ticks) * kTickS; }
     std::uint64_t timeUs() const { return m_ticks * 100; }
@@ -52,24 +52,24 @@ public:
     /// Runs exactly one tick.
     void tick();
 
-    using Result = std::optional<proto::ErrorReply>;  ///< nullopt = accepted
+    using Result = std::optional<dev::proto::ErrorReply>;  ///< nullopt = accepted
     Result home(std::uint8_t axisMask);
-    Result move(const proto::MoveRequest& request);
-    Result jogStep(const proto::JogStepRequest& request);
-    Result jogVelocity(const proto::JogVelocityRequest& request);
+    Result move(const dev::proto::MoveRequest& request);
+    Result jogStep(const dev::proto::JogStepRequest& request);
+    Result jogVelocity(const dev::proto::JogVelocityRequest& request);
     Result stop(std::uint8_t axisMask);
     Result estop();
     Result reset();
     Result setZero(std::uint8_t axisMask);
-    Result setLimits(const proto::SetLimitsRequest& request);
-    proto::LimitsReply limits() const;
-    proto::StatusReply status() const;
+    Result setLimits(const dev::proto::SetLimitsRequest& request);
+    dev::proto::LimitsReply limits() const;
+    dev::proto::StatusReply status() const;
 
     /// Value of a telemetry channel now, in wire units.
-    std::int32_t channelValue(const proto::ChannelRef& channel) const;
-    bool channelExists(const proto::ChannelRef& channel) const;
+    std::int32_t channelValue(const dev::proto::ChannelRef& channel) const;
+    bool channelExists(const dev::proto::ChannelRef& channel) const;
 
-    std::vector<proto::EventMsg> takeEvents();
+    std::vector<dev::proto::EventMsg> takeEvents();
 
     // Test and fault-injection hooks: what a bench technician could do to the plant.
     SimAxis& axis(int i) { return *m_axes[static_cast<std::size_t>(i)].plant; }
@@ -128,7 +128,7 @@ private:
         double homeOffset = 0;    ///< machine reference where home coordinates are 0
         double settledS = 0;
         double settleStartS = 0;
-        proto::EventKind doneEvent = proto::EventKind::MotionDone;
+        dev::proto::EventKind doneEvent = dev::proto::EventKind::MotionDone;
         int segment = -1;         ///< id of the segment this axis follows
         bool lostReported = false;
     };
@@ -140,7 +140,7 @@ private:
         std::vector<int> axes;
         std::vector<double> start, dir;  ///< machine coordinates, unit direction
         std::shared_ptr<const motion::Profile> profile;
-        proto::EventKind doneEvent = proto::EventKind::MotionDone;
+        dev::proto::EventKind doneEvent = dev::proto::EventKind::MotionDone;
     };
 
     AxisState& st(int i) { return m_axes[static_cast<std::size_t>(i)]; }
@@ -148,7 +148,7 @@ private:
     double scale(int i) const;  ///< wire units per axis unit
     /// A value in wire units as the wire's int32: truncated, saturated, NaN → 0.
     static std::int32_t wireInt32(double value);
-    proto::ErrorReply error(proto::ErrorCode code, int axis, double value, const std::string& text) const;
+    dev::proto::ErrorReply error(dev::proto::ErrorCode code, int axis, double value, const std::string& text) const;
     std::string fmt(int axis, double value) const;
     Result checkAxes(std::uint8_t mask, bool mustBeIdle) const;
     bool awaitingHoming(int i) const;  ///< in a homing stage that has not started yet
@@ -156,8 +156,8 @@ private:
     double softMaxMachine(int i) const { return st(i).homeOffset + st(i).softMax; }
     void zeroCounters(int i, double logicalHere);
     Result planSegment(const std::vector<int>& axes, const std::vector<double>& targetsMachine, double speed,
-                       int after, proto::EventKind doneEvent, int* idOut);
-    void finishAxis(int i, proto::EventKind kind, const std::string& text = {}, std::uint8_t why = 0);
+                       int after, dev::proto::EventKind doneEvent, int* idOut);
+    void finishAxis(int i, dev::proto::EventKind kind, const std::string& text = {}, std::uint8_t why = 0);
     void stopAxisHard(int i);
     void cancelSegmentsAfter(int id, const char* why, std::uint8_t code);
     void advanceHomingStages();
@@ -168,8 +168,8 @@ private:
     void tickHoming(int i);
     void tickSettling(int i);
     void checkSwitches(int i);
-    /// `text` for people; `why` and `values` for a host that words it (proto::reason, 0: none).
-    void raiseEvent(proto::EventKind kind, int axis, const std::string& text = {}, std::uint8_t why = 0,
+    /// `text` for people; `why` and `values` for a host that words it (dev::proto::reason, 0: none).
+    void raiseEvent(dev::proto::EventKind kind, int axis, const std::string& text = {}, std::uint8_t why = 0,
                     std::vector<double> values = {});
     double contourErrorMm() const;
 
@@ -178,7 +178,7 @@ private:
     std::vector<AxisState> m_axes;
     std::vector<Segment> m_segments;
     std::vector<std::uint8_t> m_homeStages;  ///< masks still to home, in order
-    std::vector<proto::EventMsg> m_events;
+    std::vector<dev::proto::EventMsg> m_events;
     std::uint64_t m_ticks = 0;
     int m_nextSegmentId = 1;
     int m_ticksPerControl = 10;
@@ -190,4 +190,4 @@ private:
     std::unique_ptr<SimCompensation> m_comp;
 };
 
-} // namespace sim
+} // namespace dev::sim

@@ -12,15 +12,15 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sim {
+namespace dev::sim {
 
-void SimMachine::finishAxis(int i, proto::EventKind kind, const std::string& text, std::uint8_t why)
+void SimMachine::finishAxis(int i, dev::proto::EventKind kind, const std::string& text, std::uint8_t why)
 {
     AxisState& s = st(i);
     s.mode = Mode::Idle;
     s.segment = -1;
     s.v = s.vTarget = 0;
-    if (kind == proto::EventKind::HomeDone) {
+    if (kind == dev::proto::EventKind::HomeDone) {
         zeroCounters(i, commandedLogical(i));  // the encoder agrees with the step counter at home
         s.homeOffset = s.offset;               // soft limits are relative to home
         s.homed = true;
@@ -30,9 +30,9 @@ void SimMachine::finishAxis(int i, proto::EventKind kind, const std::string& tex
         const double err = measuredLogical(i) - commandedLogical(i);
         if (std::abs(err) > m_cfg.lostStepTolerance) {
             s.lostReported = true;
-            raiseEvent(proto::EventKind::LostSteps, i,
+            raiseEvent(dev::proto::EventKind::LostSteps, i,
                        std::string("axis ") + s.plant->config().letter + " encoder is " + fmt(i, err) + " off the command",
-                       proto::reason::kOffCommand, {err});
+                       dev::proto::reason::kOffCommand, {err});
         }
     }
 }
@@ -43,7 +43,7 @@ void SimMachine::stopAxisHard(int i)
     s.plant->holdHere();
     s.v = s.vTarget = 0;
     if (s.mode == Mode::Path)
-        m_path->abortNow(proto::PathReason::LimitSwitch, std::string("axis ") + s.plant->config().letter + " hit a switch");
+        m_path->abortNow(dev::proto::PathReason::LimitSwitch, std::string("axis ") + s.plant->config().letter + " hit a switch");
     if (s.mode == Mode::Segment) {
         // The whole coupled segment halts so the other axes do not run on alone.
         const int id = s.segment;
@@ -52,14 +52,14 @@ void SimMachine::stopAxisHard(int i)
             for (int a : it->axes)
                 if (a != i) {
                     st(a).plant->holdHere();
-                    finishAxis(a, proto::EventKind::Stopped, "stopped with its coupled axis", proto::reason::kWithCoupledAxis);
+                    finishAxis(a, dev::proto::EventKind::Stopped, "stopped with its coupled axis", dev::proto::reason::kWithCoupledAxis);
                 }
             m_segments.erase(it);
         }
         s.mode = Mode::Idle;
         s.segment = -1;
         // A Z that waited for this XY move to arrive must not start, nor stay busy.
-        cancelSegmentsAfter(id, "cancelled: the move it waited for was stopped by a switch", proto::reason::kWaitedMoveHitSwitch);
+        cancelSegmentsAfter(id, "cancelled: the move it waited for was stopped by a switch", dev::proto::reason::kWaitedMoveHitSwitch);
     }
     s.mode = Mode::Idle;
     s.segment = -1;
@@ -74,10 +74,10 @@ void SimMachine::checkSwitches(int i)
     const auto& c = s.plant->config();
     if (s.plant->homeSwitch() && v < 0) {
         stopAxisHard(i);
-        raiseEvent(proto::EventKind::LimitHit, i, std::string("axis ") + c.letter + " hit its home switch", proto::reason::kHomeSwitch);
+        raiseEvent(dev::proto::EventKind::LimitHit, i, std::string("axis ") + c.letter + " hit its home switch", dev::proto::reason::kHomeSwitch);
     } else if (s.plant->limitSwitch() && v > 0) {
         stopAxisHard(i);
-        raiseEvent(proto::EventKind::LimitHit, i, std::string("axis ") + c.letter + " hit its limit switch", proto::reason::kLimitSwitch);
+        raiseEvent(dev::proto::EventKind::LimitHit, i, std::string("axis ") + c.letter + " hit its limit switch", dev::proto::reason::kLimitSwitch);
     }
 }
 
@@ -131,7 +131,7 @@ void SimMachine::tickVelocityModes()
             s.expired = true;
             s.vTarget = 0;
             s.accel = std::max(c.maxAccel, std::abs(s.v) / kJogStopBudgetS);
-            raiseEvent(proto::EventKind::JogExpired, i, std::string("axis ") + c.letter + " jog not refreshed: stopped", proto::reason::kNotRefreshed,
+            raiseEvent(dev::proto::EventKind::JogExpired, i, std::string("axis ") + c.letter + " jog not refreshed: stopped", dev::proto::reason::kNotRefreshed,
                        {m_jogWatchdogTripS});
         }
         double target = s.vTarget;
@@ -169,15 +169,15 @@ void SimMachine::tickVelocityModes()
         }
         if (s.v == 0 && s.vTarget == 0) {
             if (m_cfg.closedLoop) {
-                s.doneEvent = s.mode == Mode::Decel ? proto::EventKind::Stopped : proto::EventKind::MotionDone;
+                s.doneEvent = s.mode == Mode::Decel ? dev::proto::EventKind::Stopped : dev::proto::EventKind::MotionDone;
                 s.mode = Mode::Settling;
                 s.settleStartS = timeS();
                 s.settledS = 0;
             } else {
                 if (s.mode == Mode::Decel)
-                    finishAxis(i, proto::EventKind::Stopped, {}, proto::reason::kStopRequest);
+                    finishAxis(i, dev::proto::EventKind::Stopped, {}, dev::proto::reason::kStopRequest);
                 else
-                    finishAxis(i, proto::EventKind::MotionDone);
+                    finishAxis(i, dev::proto::EventKind::MotionDone);
             }
         }
     }
@@ -191,9 +191,9 @@ void SimMachine::tickSettling(int i)
     else
         s.settledS = 0;
     if (s.settledS >= m_cfg.settleTimeS) {
-        finishAxis(i, s.doneEvent, {}, s.doneEvent == proto::EventKind::Stopped ? proto::reason::kStopRequest : 0);
+        finishAxis(i, s.doneEvent, {}, s.doneEvent == dev::proto::EventKind::Stopped ? dev::proto::reason::kStopRequest : 0);
     } else if (timeS() - s.settleStartS > 2.0) {
-        finishAxis(i, s.doneEvent, "arrived outside the in-position window", proto::reason::kOutsideWindow);
+        finishAxis(i, s.doneEvent, "arrived outside the in-position window", dev::proto::reason::kOutsideWindow);
     }
 }
 
@@ -217,4 +217,4 @@ void SimMachine::tick()
     m_tuning->tick();
 }
 
-} // namespace sim
+} // namespace dev::sim

@@ -9,31 +9,31 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sim {
+namespace dev::sim {
 
-proto::HelloReply SimMachine::hello(std::uint32_t linkBaud) const
+dev::proto::HelloReply SimMachine::hello(std::uint32_t linkBaud) const
 {
-    proto::HelloReply h;
+    dev::proto::HelloReply h;
     h.kind = m_cfg.kind;
-    h.capabilities = proto::CapHoming | proto::CapTelemetry | proto::CapJogVelocity | proto::CapPathQueue | proto::CapCompensation;
+    h.capabilities = dev::proto::CapHoming | dev::proto::CapTelemetry | dev::proto::CapJogVelocity | dev::proto::CapPathQueue | dev::proto::CapCompensation;
     if (m_cfg.closedLoop)
-        h.capabilities |= proto::CapGrating | proto::CapClosedLoopPid | proto::CapGains | proto::CapExperiments;
+        h.capabilities |= dev::proto::CapGrating | dev::proto::CapClosedLoopPid | dev::proto::CapGains | dev::proto::CapExperiments;
     else
-        h.capabilities |= proto::CapEncoder;
+        h.capabilities |= dev::proto::CapEncoder;
     if (m_cfg.zAfterXy)
-        h.capabilities |= proto::CapCoupledXyThenZ | proto::CapPathZFollow;
+        h.capabilities |= dev::proto::CapCoupledXyThenZ | dev::proto::CapPathZFollow;
     for (const auto& a : m_cfg.axes)
-        if (a.unit == proto::AxisUnit::Microlitre)
-            h.capabilities |= proto::CapPump;
+        if (a.unit == dev::proto::AxisUnit::Microlitre)
+            h.capabilities |= dev::proto::CapPump;
     h.controlPeriodUs = static_cast<std::uint32_t>(std::lround(m_cfg.controlPeriodS * 1e6));
     h.maxTelemetryRateHz = static_cast<std::uint32_t>(std::lround(1.0 / kTickS));
-    h.jogWatchdogMs = proto::kJogWatchdogMs;
+    h.jogWatchdogMs = dev::proto::kJogWatchdogMs;
     h.linkBaud = linkBaud;
     h.model = m_cfg.model;
     h.firmware = "benchpilot-sim 1.0";
     for (int i = 0; i < axisCount(); ++i) {
         const auto& c = st(i).plant->config();
-        proto::AxisInfo a;
+        dev::proto::AxisInfo a;
         a.letter = c.letter;
         a.unit = c.unit;
         a.travelMin = 0;
@@ -45,15 +45,15 @@ proto::HelloReply SimMachine::hello(std::uint32_t linkBaud) const
     return h;
 }
 
-proto::MotionLimits SimMachine::motionLimits() const
+dev::proto::MotionLimits SimMachine::motionLimits() const
 {
-    proto::MotionLimits l;
+    dev::proto::MotionLimits l;
     const bool seed = m_cfg.profile == ProfileKind::SeedSCurve;
-    l.profile = seed ? proto::MotionProfile::SeedSCurve : proto::MotionProfile::JerkLimited;
+    l.profile = seed ? dev::proto::MotionProfile::SeedSCurve : dev::proto::MotionProfile::JerkLimited;
     auto u32 = [](double v) { return static_cast<std::uint32_t>(std::clamp(std::llround(v), 0LL, 4294967295LL)); };
     for (int i = 0; i < axisCount(); ++i) {
         const AxisConfig& c = st(i).plant->config();
-        proto::AxisMotionLimits a;
+        dev::proto::AxisMotionLimits a;
         // Thousandths of the axis unit: µm/s² (nL/s² on the pump).
         a.maxAccel = u32(c.maxAccel * 1e3);
         if (seed) {
@@ -73,32 +73,32 @@ proto::MotionLimits SimMachine::motionLimits() const
     return l;
 }
 
-proto::StatusReply SimMachine::status() const
+dev::proto::StatusReply SimMachine::status() const
 {
-    proto::StatusReply r;
-    r.deviceFlags = static_cast<std::uint8_t>((m_estop ? proto::DeviceEStop : 0));
+    dev::proto::StatusReply r;
+    r.deviceFlags = static_cast<std::uint8_t>((m_estop ? dev::proto::DeviceEStop : 0));
     r.deviceTimeUs = timeUs();
     for (int i = 0; i < axisCount(); ++i) {
         const AxisState& s = st(i);
-        proto::AxisStatus a;
+        dev::proto::AxisStatus a;
         a.commanded = static_cast<std::int32_t>(std::lround(commandedLogical(i) * scale(i)));
         a.measured = static_cast<std::int32_t>(std::lround(measuredLogical(i) * scale(i)));
         std::uint16_t f = 0;
         if (s.homed)
-            f |= proto::AxisHomed;
+            f |= dev::proto::AxisHomed;
         if (s.mode != Mode::Idle && (s.mode != Mode::Path || m_path->moving()))
-            f |= proto::AxisMoving;  // a queued path at rest reserves its axes but moves nothing
+            f |= dev::proto::AxisMoving;  // a queued path at rest reserves its axes but moves nothing
         if (s.mode == Mode::Homing || (!m_homeStages.empty() && !s.homed && (m_homeStages.front() & (1u << i))))
-            f |= proto::AxisHoming;
+            f |= dev::proto::AxisHoming;
         if (s.mode == Mode::Jog)
-            f |= proto::AxisJogging;
+            f |= dev::proto::AxisJogging;
         if (s.plant->homeSwitch())
-            f |= proto::AxisHomeSwitch;
+            f |= dev::proto::AxisHomeSwitch;
         if (s.plant->limitSwitch())
-            f |= proto::AxisLimitSwitch;
+            f |= dev::proto::AxisLimitSwitch;
         if (s.fault) {
-            f |= proto::AxisFault;
-            r.deviceFlags |= proto::DeviceFault;
+            f |= dev::proto::AxisFault;
+            r.deviceFlags |= dev::proto::DeviceFault;
         }
         a.flags = f;
         r.axes.push_back(a);
@@ -107,7 +107,7 @@ proto::StatusReply SimMachine::status() const
     for (std::size_t n = 1; n < m_homeStages.size(); ++n)
         for (int i = 0; i < axisCount(); ++i)
             if (m_homeStages[n] & (1u << i))
-                r.axes[static_cast<std::size_t>(i)].flags |= proto::AxisHoming | proto::AxisMoving;
+                r.axes[static_cast<std::size_t>(i)].flags |= dev::proto::AxisHoming | dev::proto::AxisMoving;
     return r;
 }
 
@@ -127,34 +127,34 @@ double SimMachine::contourErrorMm() const
     return std::hypot(mx - st(0).plant->reference(), my - st(1).plant->reference());
 }
 
-bool SimMachine::channelExists(const proto::ChannelRef& c) const
+bool SimMachine::channelExists(const dev::proto::ChannelRef& c) const
 {
-    if (c.kind == proto::ChannelKind::ContourError)
-        return c.axis == proto::kNoAxis && m_cfg.closedLoop;
-    if (c.kind == proto::ChannelKind::ControllerU)
+    if (c.kind == dev::proto::ChannelKind::ContourError)
+        return c.axis == dev::proto::kNoAxis && m_cfg.closedLoop;
+    if (c.kind == dev::proto::ChannelKind::ControllerU)
         return c.axis < axisCount() && m_cfg.closedLoop;
     return c.axis < axisCount();
 }
 
-std::int32_t SimMachine::channelValue(const proto::ChannelRef& c) const
+std::int32_t SimMachine::channelValue(const dev::proto::ChannelRef& c) const
 {
-    if (c.kind == proto::ChannelKind::ContourError)
+    if (c.kind == dev::proto::ChannelKind::ContourError)
         return static_cast<std::int32_t>(std::lround(contourErrorMm() * 1e6));
     const AxisState& s = st(c.axis);
     const SimAxis& p = *s.plant;
     const double k = scale(c.axis);
     double v = 0;
     switch (c.kind) {
-    case proto::ChannelKind::Commanded: v = commandedLogical(c.axis) * k; break;
-    case proto::ChannelKind::Measured: v = measuredLogical(c.axis) * k; break;
-    case proto::ChannelKind::Velocity: v = p.measuredVelocity() * k; break;
-    case proto::ChannelKind::FollowingError: v = (measuredLogical(c.axis) - commandedLogical(c.axis)) * k; break;
-    case proto::ChannelKind::ControllerOutput: v = p.controllerOutputStepsS(); break;
-    case proto::ChannelKind::Switches: v = (p.homeSwitch() ? 1 : 0) | (p.limitSwitch() ? 2 : 0); break;
-    case proto::ChannelKind::ContourError: break;
-    case proto::ChannelKind::ControllerU: v = p.controllerU() * k; break;
+    case dev::proto::ChannelKind::Commanded: v = commandedLogical(c.axis) * k; break;
+    case dev::proto::ChannelKind::Measured: v = measuredLogical(c.axis) * k; break;
+    case dev::proto::ChannelKind::Velocity: v = p.measuredVelocity() * k; break;
+    case dev::proto::ChannelKind::FollowingError: v = (measuredLogical(c.axis) - commandedLogical(c.axis)) * k; break;
+    case dev::proto::ChannelKind::ControllerOutput: v = p.controllerOutputStepsS(); break;
+    case dev::proto::ChannelKind::Switches: v = (p.homeSwitch() ? 1 : 0) | (p.limitSwitch() ? 2 : 0); break;
+    case dev::proto::ChannelKind::ContourError: break;
+    case dev::proto::ChannelKind::ControllerU: v = p.controllerU() * k; break;
     }
     return static_cast<std::int32_t>(std::clamp(std::lround(v), -2147483647L, 2147483647L));
 }
 
-} // namespace sim
+} // namespace dev::sim

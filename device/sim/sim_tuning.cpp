@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace sim {
+namespace dev::sim {
 
 using motion::control::EndReason;
 using motion::control::Experiment;
@@ -26,8 +26,8 @@ std::string join(const std::vector<std::string>& v)
         s += (s.empty() ? "" : "; ") + x;
     return s;
 }
-motion::control::DiscreteGains toDouble(const proto::WireGains& g) { return {g.kp, g.ki, g.kd}; }
-proto::WireGains toWire(const PidGains& g)
+motion::control::DiscreteGains toDouble(const dev::proto::WireGains& g) { return {g.kp, g.ki, g.kd}; }
+dev::proto::WireGains toWire(const PidGains& g)
 {
     return {static_cast<float>(g.kp), static_cast<float>(g.ki), static_cast<float>(g.kd)};
 }
@@ -55,39 +55,39 @@ bool SimTuning::testRunning(int axis) const
 
 void SimTuning::hostHeard() { m_lastHeardS = m_m.timeS(); }
 
-SimTuning::Result SimTuning::getGains(std::uint8_t axis, proto::GainsReply& out) const
+SimTuning::Result SimTuning::getGains(std::uint8_t axis, dev::proto::GainsReply& out) const
 {
     if (axis >= m_m.axisCount())
-        return m_m.error(proto::ErrorCode::BadAxis, -1, axis, "axis index " + std::to_string(axis) + " does not exist");
+        return m_m.error(dev::proto::ErrorCode::BadAxis, -1, axis, "axis index " + std::to_string(axis) + " does not exist");
     if (!m_m.config().closedLoop)
-        return m_m.error(proto::kErrNotClosedLoop, axis, 0,
+        return m_m.error(dev::proto::kErrNotClosedLoop, axis, 0,
                          std::string("axis ") + m_m.st(axis).plant->config().letter + " runs open loop: it has no PID gains");
     const Axis& a = m_axes[axis];
     out.axis = axis;
     out.controlPeriodUs = static_cast<std::uint32_t>(std::lround(m_m.config().controlPeriodS * 1e6));
     out.gains = toWire(a.gains);
     out.saved = toWire(a.saved);
-    out.flags = a.test ? proto::kGainsTestRunning : 0;
+    out.flags = a.test ? dev::proto::kGainsTestRunning : 0;
     const motion::control::GainLimits lim;
     out.limits = {static_cast<float>(lim.kpMax), static_cast<float>(lim.kiMax), static_cast<float>(lim.kdMax)};
     return std::nullopt;
 }
 
-SimTuning::Result SimTuning::setGains(const proto::SetGainsRequest& r)
+SimTuning::Result SimTuning::setGains(const dev::proto::SetGainsRequest& r)
 {
-    proto::GainsReply unused;
+    dev::proto::GainsReply unused;
     if (auto e = getGains(r.axis, unused))
         return e;
     const char letter = m_m.st(r.axis).plant->config().letter;
     if (m_axes[r.axis].test)
-        return m_m.error(proto::kErrTestActive, r.axis, 0,
+        return m_m.error(dev::proto::kErrTestActive, r.axis, 0,
                          std::string("axis ") + letter + " is running a test: its gains change once the test has ended");
     const auto problems = motion::control::checkGains(toDouble(r.gains));
     if (!problems.empty()) {
         std::vector<std::string> msgs;
         for (const auto& p : problems)
             msgs.push_back(motion::control::wireText(p));
-        proto::ErrorReply e = m_m.error(proto::kErrBadGains, -1, problems.front().index,
+        dev::proto::ErrorReply e = m_m.error(dev::proto::kErrBadGains, -1, problems.front().index,
                                         std::string("axis ") + letter + " gains refused, the previous ones stay: " + join(msgs));
         e.axis = r.axis;
         return e;
@@ -99,46 +99,46 @@ SimTuning::Result SimTuning::setGains(const proto::SetGainsRequest& r)
     if (!(wanted.kp == a.gains.kp && wanted.ki == a.gains.ki && wanted.kd == a.gains.kd))
         a.previous = a.gains;
     a.gains = wanted;
-    if (r.flags & proto::kSetGainsSave)
+    if (r.flags & dev::proto::kSetGainsSave)
         a.saved = a.gains;
-    m_m.raiseEvent(proto::kEvGainsChanged, r.axis,
+    m_m.raiseEvent(dev::proto::kEvGainsChanged, r.axis,
                    fmt("gains per control period: kp %.6g, ki %.6g, kd %.6g", a.gains.kp, a.gains.ki, a.gains.kd)
-                       + ((r.flags & proto::kSetGainsSave) ? " (kept as power-up gains)" : ""),
-                   proto::reason::kGainsSet, {a.gains.kp, a.gains.ki, a.gains.kd, (r.flags & proto::kSetGainsSave) ? 1.0 : 0.0});
+                       + ((r.flags & dev::proto::kSetGainsSave) ? " (kept as power-up gains)" : ""),
+                   dev::proto::reason::kGainsSet, {a.gains.kp, a.gains.ki, a.gains.kd, (r.flags & dev::proto::kSetGainsSave) ? 1.0 : 0.0});
     return std::nullopt;
 }
 
 SimTuning::Result SimTuning::checkTestable(std::uint8_t axis, bool homedNeeded) const
 {
     if (m_m.estopActive())
-        return m_m.error(proto::ErrorCode::EStopActive, -1, 0, "E-stop is active: send reset before a test");
-    proto::GainsReply unused;
+        return m_m.error(dev::proto::ErrorCode::EStopActive, -1, 0, "E-stop is active: send reset before a test");
+    dev::proto::GainsReply unused;
     if (auto e = getGains(axis, unused))
         return e;
     const auto& s = m_m.st(axis);
     const char letter = s.plant->config().letter;
     if (m_axes[axis].test)
-        return m_m.error(proto::kErrTestActive, axis, 0, std::string("axis ") + letter + " is already running a test");
+        return m_m.error(dev::proto::kErrTestActive, axis, 0, std::string("axis ") + letter + " is already running a test");
     if (homedNeeded && !s.homed)
-        return m_m.error(proto::ErrorCode::NotHomed, axis, 0,
+        return m_m.error(dev::proto::ErrorCode::NotHomed, axis, 0,
                          std::string("axis ") + letter + " is not homed: a test's envelope is checked against the soft limits");
     if (s.mode != SimMachine::Mode::Idle || m_m.awaitingHoming(axis))
-        return m_m.error(proto::ErrorCode::Busy, axis, 0, std::string("axis ") + letter + " is still moving");
+        return m_m.error(dev::proto::ErrorCode::Busy, axis, 0, std::string("axis ") + letter + " is still moving");
     return std::nullopt;
 }
 
-SimTuning::Result SimTuning::checkEnvelope(int axis, const proto::WireEnvelope& e, double) const
+SimTuning::Result SimTuning::checkEnvelope(int axis, const dev::proto::WireEnvelope& e, double) const
 {
     const char letter = m_m.st(axis).plant->config().letter;
     if (e.maxDurationMs > kMaxTestS * 1000)
-        return m_m.error(proto::ErrorCode::OutOfRange, -1, e.maxDurationMs,
+        return m_m.error(dev::proto::ErrorCode::OutOfRange, -1, e.maxDurationMs,
                          fmt("a test may last at most %.0f s (max duration %.3f s asked)", kMaxTestS, e.maxDurationMs / 1000.0));
     const auto& s = m_m.st(axis);
     const double here = s.plant->reference(), excursion = e.maxExcursion / kNmPerMm;
     if (here - excursion < m_m.softMinMachine(axis) - 1e-9 || here + excursion > m_m.softMaxMachine(axis) + 1e-9) {
         const bool low = here - excursion < m_m.softMinMachine(axis) - 1e-9;
         const double lim = (low ? m_m.softMinMachine(axis) : m_m.softMaxMachine(axis)) - s.offset;
-        return m_m.error(proto::ErrorCode::SoftLimit, axis, lim,
+        return m_m.error(dev::proto::ErrorCode::SoftLimit, axis, lim,
                          std::string("axis ") + letter + ": the envelope ±" + fmt("%.4g mm", excursion) + " around "
                              + fmt("%.4f mm", here - s.offset) + " crosses the " + (low ? "lower" : "upper")
                              + fmt(" soft limit %.4f mm", lim));
@@ -146,7 +146,7 @@ SimTuning::Result SimTuning::checkEnvelope(int axis, const proto::WireEnvelope& 
     return std::nullopt;
 }
 
-SimTuning::Result SimTuning::stepTest(const proto::StepTestRequest& r)
+SimTuning::Result SimTuning::stepTest(const dev::proto::StepTestRequest& r)
 {
     if (auto e = checkTestable(r.axis, true))
         return e;
@@ -161,7 +161,7 @@ SimTuning::Result SimTuning::stepTest(const proto::StepTestRequest& r)
             std::vector<std::string> msgs;
             for (const auto& p : problems)
                 msgs.push_back(motion::control::wireText(p));
-            proto::ErrorReply e = m_m.error(proto::kErrBadGains, -1, problems.front().index,
+            dev::proto::ErrorReply e = m_m.error(dev::proto::kErrBadGains, -1, problems.front().index,
                                             std::string("axis ") + letter + " trial gains refused: " + join(msgs));
             e.axis = r.axis;
             return e;
@@ -173,7 +173,7 @@ SimTuning::Result SimTuning::stepTest(const proto::StepTestRequest& r)
     spec.envelope = {r.envelope.maxExcursion / kNmPerMm, r.envelope.maxFollowingError / kNmPerMm, r.envelope.maxDurationMs / 1000.0};
     const auto problems = motion::control::checkStepSpec(spec);
     if (!problems.empty())
-        return m_m.error(proto::ErrorCode::OutOfRange, r.axis, spec.step, std::string("axis ") + letter + " step test: " + join(problems));
+        return m_m.error(dev::proto::ErrorCode::OutOfRange, r.axis, spec.step, std::string("axis ") + letter + " step test: " + join(problems));
     if (auto e = checkEnvelope(r.axis, r.envelope, spec.step))
         return e;
     const auto& s = m_m.st(r.axis);
@@ -185,7 +185,7 @@ SimTuning::Result SimTuning::stepTest(const proto::StepTestRequest& r)
     return std::nullopt;
 }
 
-SimTuning::Result SimTuning::relayTest(const proto::RelayTestRequest& r)
+SimTuning::Result SimTuning::relayTest(const dev::proto::RelayTestRequest& r)
 {
     if (auto e = checkTestable(r.axis, true))
         return e;
@@ -198,14 +198,14 @@ SimTuning::Result SimTuning::relayTest(const proto::RelayTestRequest& r)
     spec.envelope = {r.envelope.maxExcursion / kNmPerMm, r.envelope.maxFollowingError / kNmPerMm, r.envelope.maxDurationMs / 1000.0};
     const auto problems = motion::control::checkRelaySpec(spec);
     if (!problems.empty())
-        return m_m.error(proto::ErrorCode::OutOfRange, r.axis, spec.amplitude, std::string("axis ") + letter + " relay test: " + join(problems));
+        return m_m.error(dev::proto::ErrorCode::OutOfRange, r.axis, spec.amplitude, std::string("axis ") + letter + " relay test: " + join(problems));
     if (auto e = checkEnvelope(r.axis, r.envelope, 0))
         return e;
     start(r.axis, Experiment::relay(spec, m_m.st(r.axis).plant->reference(), 0, m_m.config().controlPeriodS), 2, {});
     return std::nullopt;
 }
 
-void SimTuning::start(int axis, Experiment x, std::uint8_t kind, const proto::WireGains& gains)
+void SimTuning::start(int axis, Experiment x, std::uint8_t kind, const dev::proto::WireGains& gains)
 {
     Axis& a = m_axes[static_cast<std::size_t>(axis)];
     auto& s = m_m.st(axis);
@@ -284,10 +284,10 @@ void SimTuning::end(int axis)
     if (fallBack) {
         // The operator's set is what diverged: hold under the one before it.
         std::swap(a.gains, a.previous);
-        m_m.raiseEvent(proto::kEvGainsChanged, axis,
+        m_m.raiseEvent(dev::proto::kEvGainsChanged, axis,
                        fmt("gains per control period: kp %.6g, ki %.6g, kd %.6g", a.gains.kp, a.gains.ki, a.gains.kd)
                            + " (the set in force before the one that tripped the test)",
-                       proto::reason::kGainsFellBack, {a.gains.kp, a.gains.ki, a.gains.kd});
+                       dev::proto::reason::kGainsFellBack, {a.gains.kp, a.gains.ki, a.gains.kd});
     }
     // Trial gains never replaced the operator's; the axis stops where it is
     // (or stays on the step it settled on) under them.
@@ -298,45 +298,45 @@ void SimTuning::end(int axis)
     if (s.mode == SimMachine::Mode::Tuning)
         s.mode = SimMachine::Mode::Idle;
     const char* what = x.kind() == Experiment::Kind::Step ? "step test" : "relay test";
-    const double test = x.kind() == Experiment::Kind::Step ? proto::reason::kStepTest : proto::reason::kRelayTest;
+    const double test = x.kind() == Experiment::Kind::Step ? dev::proto::reason::kStepTest : dev::proto::reason::kRelayTest;
     const std::string axisName = std::string("axis ") + letter + " " + what;
     const double t = x.elapsedS();
     const double at = s.plant->reportedMeasured() - s.measuredOffset;
     const std::string stoppedAt = fmt("; axis stopped at %.4f mm", at);
-    namespace why = proto::reason;
+    namespace why = dev::proto::reason;
     switch (x.reason()) {
     case EndReason::Settled:
-        m_m.raiseEvent(proto::kEvTestEnded, axis, axisName + fmt(" settled after %.3f s", t), why::kSettled, {test, t});
+        m_m.raiseEvent(dev::proto::kEvTestEnded, axis, axisName + fmt(" settled after %.3f s", t), why::kSettled, {test, t});
         break;
     case EndReason::Completed:
-        m_m.raiseEvent(proto::kEvTestEnded, axis, axisName + fmt(" completed in %.3f s", t), why::kCompleted, {test, t});
+        m_m.raiseEvent(dev::proto::kEvTestEnded, axis, axisName + fmt(" completed in %.3f s", t), why::kCompleted, {test, t});
         break;
     case EndReason::Excursion:
-        m_m.raiseEvent(proto::kEvTestTripped, axis,
+        m_m.raiseEvent(dev::proto::kEvTestTripped, axis,
                        axisName + fmt(" stopped: max excursion %.4f mm crossed (%.4f mm) after %.3f s", x.tripLimit(), x.tripValue(), t)
                            + stoppedAt,
                        why::kExcursion, {test, x.tripLimit(), x.tripValue(), t, at});
         break;
     case EndReason::FollowingError:
-        m_m.raiseEvent(proto::kEvTestTripped, axis,
+        m_m.raiseEvent(dev::proto::kEvTestTripped, axis,
                        axisName + fmt(" stopped: max following error %.4f mm crossed (%.4f mm) after %.3f s", x.tripLimit(), x.tripValue(), t)
                            + stoppedAt,
                        why::kFollowingError, {test, x.tripLimit(), x.tripValue(), t, at});
         break;
     case EndReason::Duration:
-        m_m.raiseEvent(proto::kEvTestTripped, axis, axisName + fmt(" stopped: max duration %.3f s reached", x.tripLimit()) + stoppedAt,
+        m_m.raiseEvent(dev::proto::kEvTestTripped, axis, axisName + fmt(" stopped: max duration %.3f s reached", x.tripLimit()) + stoppedAt,
                        why::kDuration, {test, x.tripLimit(), at});
         break;
     case EndReason::Stopped:
-        m_m.raiseEvent(proto::kEvTestAborted, axis, axisName + " stopped on request", why::kOnRequest, {test});
+        m_m.raiseEvent(dev::proto::kEvTestAborted, axis, axisName + " stopped on request", why::kOnRequest, {test});
         break;
-    case EndReason::EStop: m_m.raiseEvent(proto::kEvTestAborted, axis, axisName + " ended by E-stop", why::kByEStop, {test}); break;
+    case EndReason::EStop: m_m.raiseEvent(dev::proto::kEvTestAborted, axis, axisName + " ended by E-stop", why::kByEStop, {test}); break;
     case EndReason::HostSilent:
-        m_m.raiseEvent(proto::kEvTestAborted, axis, axisName + fmt(" ended: no frame from the host for %.1f s; axis stopped", kHostSilenceS),
+        m_m.raiseEvent(dev::proto::kEvTestAborted, axis, axisName + fmt(" ended: no frame from the host for %.1f s; axis stopped", kHostSilenceS),
                        why::kHostSilent, {test, kHostSilenceS});
         break;
     case EndReason::Fault:
-    case EndReason::Running: m_m.raiseEvent(proto::kEvTestAborted, axis, axisName + " ended by a fault", why::kByFault, {test}); break;
+    case EndReason::Running: m_m.raiseEvent(dev::proto::kEvTestAborted, axis, axisName + " ended by a fault", why::kByFault, {test}); break;
     }
 }
 
@@ -362,15 +362,15 @@ void SimTuning::tick()
         abort(0xFF, EndReason::HostSilent);
 }
 
-SimTuning::Result SimTuning::capture(const proto::CaptureRequest& r, proto::CaptureReply& out) const
+SimTuning::Result SimTuning::capture(const dev::proto::CaptureRequest& r, dev::proto::CaptureReply& out) const
 {
-    proto::GainsReply unused;
+    dev::proto::GainsReply unused;
     if (auto e = getGains(r.axis, unused))
         return e;
     const Axis& a = m_axes[r.axis];
     const Capture& c = a.capture;
     if (c.kind == 0 || r.first > c.samples.size())
-        return m_m.error(proto::kErrNoCapture, -1, static_cast<double>(c.samples.size()),
+        return m_m.error(dev::proto::kErrNoCapture, -1, static_cast<double>(c.samples.size()),
                          c.kind == 0 ? std::string("no test has run on this axis yet")
                                      : "sample " + std::to_string(r.first) + " is past the " + std::to_string(c.samples.size())
                                          + " captured");
@@ -387,10 +387,10 @@ SimTuning::Result SimTuning::capture(const proto::CaptureRequest& r, proto::Capt
     out.tripLimit = a.test ? 0 : static_cast<std::uint32_t>(std::lround(a.tripLimit * scale));
     out.gains = c.gains;
     out.first = r.first;
-    const std::size_t n = std::min<std::size_t>({r.maxCount, proto::kMaxCaptureSamplesPerReply, c.samples.size() - r.first});
+    const std::size_t n = std::min<std::size_t>({r.maxCount, dev::proto::kMaxCaptureSamplesPerReply, c.samples.size() - r.first});
     out.samples.assign(c.samples.begin() + static_cast<std::ptrdiff_t>(r.first),
                        c.samples.begin() + static_cast<std::ptrdiff_t>(r.first + n));
     return std::nullopt;
 }
 
-} // namespace sim
+} // namespace dev::sim

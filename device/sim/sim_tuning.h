@@ -20,7 +20,7 @@
 #include <optional>
 #include <vector>
 
-namespace sim {
+namespace dev::sim {
 
 class SimMachine;
 
@@ -35,12 +35,12 @@ public:
 
     explicit SimTuning(SimMachine& machine);
 
-    using Result = std::optional<proto::ErrorReply>;
-    Result getGains(std::uint8_t axis, proto::GainsReply& out) const;
-    Result setGains(const proto::SetGainsRequest& r);
-    Result stepTest(const proto::StepTestRequest& r);
-    Result relayTest(const proto::RelayTestRequest& r);
-    Result capture(const proto::CaptureRequest& r, proto::CaptureReply& out) const;
+    using Result = std::optional<dev::proto::ErrorReply>;
+    Result getGains(std::uint8_t axis, dev::proto::GainsReply& out) const;
+    Result setGains(const dev::proto::SetGainsRequest& r);
+    Result stepTest(const dev::proto::StepTestRequest& r);
+    Result relayTest(const dev::proto::RelayTestRequest& r);
+    Result capture(const dev::proto::CaptureRequest& r, dev::proto::CaptureReply& out) const;
     /// TEST_ABORT (never refused); also what STOP does to a test.
     Result abort(std::uint8_t axisMask, motion::control::EndReason why);
 
@@ -64,8 +64,8 @@ private:
         int stride = 1;            ///< record every stride-th period
         int phase = 0;
         std::int32_t startPosition = 0;
-        proto::WireGains gains;
-        std::vector<proto::CaptureSample> samples;
+        dev::proto::WireGains gains;
+        std::vector<dev::proto::CaptureSample> samples;
     };
     struct Axis {
         PidGains gains;            ///< the operator's: in force whenever no test runs
@@ -80,8 +80,8 @@ private:
     };
 
     Result checkTestable(std::uint8_t axis, bool homedNeeded) const;
-    Result checkEnvelope(int axis, const proto::WireEnvelope& e, double stepMm) const;
-    void start(int axis, motion::control::Experiment x, std::uint8_t kind, const proto::WireGains& gains);
+    Result checkEnvelope(int axis, const dev::proto::WireEnvelope& e, double stepMm) const;
+    void start(int axis, motion::control::Experiment x, std::uint8_t kind, const dev::proto::WireGains& gains);
     void end(int axis);
     void record(int axis);
 
@@ -91,4 +91,4 @@ private:
     std::uint32_t m_nextTestId = 1;
 };
 
-} // namespace sim
+} // namespace dev::sim

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace tele {
+namespace dev::tele {
 namespace {
 /// A sample (or run) continues the last run when its time is within this fraction
 /// of a period of where the run expects it; it is then stored at the expected time.
@@ -413,4 +413,4 @@ void ChannelStore::decimate(double t0S, double t1S, int columns, MinMax* out) co
     }
 }
 
-} // namespace tele
+} // namespace dev::tele

@@ -14,7 +14,7 @@
 #include <optional>
 #include <vector>
 
-namespace tele {
+namespace dev::tele {
 
 struct MinMax {
     float min = std::numeric_limits<float>::quiet_NaN();  ///< NaN when no sample fell in the column
@@ -129,4 +129,4 @@ private:
     std::uint64_t m_outOfOrder = 0;
 };
 
-} // namespace tele
+} // namespace dev::tele

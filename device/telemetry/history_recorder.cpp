@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace tele {
+namespace dev::tele {
 
 std::size_t HistoryBudget::capacity() const
 {
@@ -13,10 +13,10 @@ std::size_t HistoryBudget::capacity() const
 
 HistoryRecorder::HistoryRecorder(const HistoryBudget& budget) : m_budget(budget) {}
 
-const std::vector<proto::ChannelKind>& HistoryRecorder::recordedKinds()
+const std::vector<dev::proto::ChannelKind>& HistoryRecorder::recordedKinds()
 {
-    static const std::vector<proto::ChannelKind> kinds{proto::ChannelKind::Commanded, proto::ChannelKind::Measured,
-                                                       proto::ChannelKind::FollowingError};
+    static const std::vector<dev::proto::ChannelKind> kinds{dev::proto::ChannelKind::Commanded, dev::proto::ChannelKind::Measured,
+                                                       dev::proto::ChannelKind::FollowingError};
     return kinds;
 }
 
@@ -30,7 +30,7 @@ std::size_t HistoryRecorder::strideFor(double periodS) const
     return k < 1 ? 1 : static_cast<std::size_t>(k);
 }
 
-void HistoryRecorder::record(int instrument, const proto::ChannelRef& ref, std::uint32_t firstIndex, double t0S,
+void HistoryRecorder::record(int instrument, const dev::proto::ChannelRef& ref, std::uint32_t firstIndex, double t0S,
                              double periodS, const float* values, std::size_t n)
 {
     if (n == 0 || values == nullptr)
@@ -48,7 +48,7 @@ void HistoryRecorder::record(int instrument, const proto::ChannelRef& ref, std::
     slot->appendRun(t0S + static_cast<double>(first) * periodS, periodS * static_cast<double>(k), values + first, kept, k);
 }
 
-const ChannelStore* HistoryRecorder::store(int instrument, const proto::ChannelRef& ref) const
+const ChannelStore* HistoryRecorder::store(int instrument, const dev::proto::ChannelRef& ref) const
 {
     const auto in = m_instruments.find(instrument);
     if (in == m_instruments.end())
@@ -57,9 +57,9 @@ const ChannelStore* HistoryRecorder::store(int instrument, const proto::ChannelR
     return it == in->second.end() ? nullptr : it->second.get();
 }
 
-std::vector<proto::ChannelRef> HistoryRecorder::channels(int instrument) const
+std::vector<dev::proto::ChannelRef> HistoryRecorder::channels(int instrument) const
 {
-    std::vector<proto::ChannelRef> out;
+    std::vector<dev::proto::ChannelRef> out;
     const auto in = m_instruments.find(instrument);
     if (in != m_instruments.end())
         for (const auto& [ref, store] : in->second)
@@ -106,4 +106,4 @@ std::size_t HistoryRecorder::memoryBytes() const
 
 void HistoryRecorder::forget(int instrument) { m_instruments.erase(instrument); }
 
-} // namespace tele
+} // namespace dev::tele

@@ -25,7 +25,7 @@
 #include <memory>
 #include <vector>
 
-namespace tele {
+namespace dev::tele {
 
 struct HistoryBudget {
     double seconds = 300;  ///< the span every channel keeps at least
@@ -41,18 +41,18 @@ public:
     const HistoryBudget& budget() const { return m_budget; }
     /// What is recorded of every instrument: per axis these kinds (the telemetry's
     /// positions and error; velocity is their derivative, switches are in the event log).
-    static const std::vector<proto::ChannelKind>& recordedKinds();
+    static const std::vector<dev::proto::ChannelKind>& recordedKinds();
 
     /// Keeps every k-th sample (k from the batch period, see above) of `values`
     /// (n samples at t0S, t0S + periodS, …; the device's sample index of the first is
     /// firstIndex). The store is made on the channel's first samples.
-    void record(int instrument, const proto::ChannelRef& ref, std::uint32_t firstIndex, double t0S, double periodS,
+    void record(int instrument, const dev::proto::ChannelRef& ref, std::uint32_t firstIndex, double t0S, double periodS,
                 const float* values, std::size_t n);
 
     /// nullptr before the channel's first samples.
-    const ChannelStore* store(int instrument, const proto::ChannelRef& ref) const;
+    const ChannelStore* store(int instrument, const dev::proto::ChannelRef& ref) const;
     /// Recorded channels of an instrument (axis, then kind).
-    std::vector<proto::ChannelRef> channels(int instrument) const;
+    std::vector<dev::proto::ChannelRef> channels(int instrument) const;
     /// Newest minus oldest time held by the instrument's channels (0 when empty).
     double spanS(int instrument) const;
     /// Newest time held for the instrument (NaN when empty).
@@ -66,14 +66,14 @@ public:
 
 private:
     struct RefLess {
-        bool operator()(const proto::ChannelRef& a, const proto::ChannelRef& b) const
+        bool operator()(const dev::proto::ChannelRef& a, const dev::proto::ChannelRef& b) const
         {
             return a.axis != b.axis ? a.axis < b.axis : a.kind < b.kind;
         }
     };
-    using Channels = std::map<proto::ChannelRef, std::unique_ptr<ChannelStore>, RefLess>;
+    using Channels = std::map<dev::proto::ChannelRef, std::unique_ptr<ChannelStore>, RefLess>;
     HistoryBudget m_budget;
     std::map<int, Channels> m_instruments;
 };
 
-} // namespace tele
+} // namespace dev::tele

@@ -8,19 +8,19 @@
 
 #include "device/protocol/messages_tuning.h"
 
-namespace tele {
+namespace dev::tele {
 namespace {
-QString kindWord(proto::ChannelKind k)
+QString kindWord(dev::proto::ChannelKind k)
 {
     switch (k) {
-    case proto::ChannelKind::Commanded: return TelemetryHub::tr("commanded");
-    case proto::ChannelKind::Measured: return TelemetryHub::tr("measured");
-    case proto::ChannelKind::Velocity: return TelemetryHub::tr("velocity");
-    case proto::ChannelKind::FollowingError: return TelemetryHub::tr("following error");
-    case proto::ChannelKind::ControllerOutput: return TelemetryHub::tr("controller output");
-    case proto::ChannelKind::Switches: return TelemetryHub::tr("switches");
-    case proto::ChannelKind::ContourError: return TelemetryHub::tr("contour error");
-    case proto::ChannelKind::ControllerU: return TelemetryHub::tr("controller output u");
+    case dev::proto::ChannelKind::Commanded: return TelemetryHub::tr("commanded");
+    case dev::proto::ChannelKind::Measured: return TelemetryHub::tr("measured");
+    case dev::proto::ChannelKind::Velocity: return TelemetryHub::tr("velocity");
+    case dev::proto::ChannelKind::FollowingError: return TelemetryHub::tr("following error");
+    case dev::proto::ChannelKind::ControllerOutput: return TelemetryHub::tr("controller output");
+    case dev::proto::ChannelKind::Switches: return TelemetryHub::tr("switches");
+    case dev::proto::ChannelKind::ContourError: return TelemetryHub::tr("contour error");
+    case dev::proto::ChannelKind::ControllerU: return TelemetryHub::tr("controller output u");
     }
     return {};
 }
@@ -37,7 +37,7 @@ TelemetryHub::Instrument::Instrument() : latestS(kNaN), pausedAtS(kNaN) {}
 
 TelemetryHub::TelemetryHub(QObject* parent) : QObject(parent)
 {
-    qRegisterMetaType<tele::ChannelKey>();
+    qRegisterMetaType<dev::tele::ChannelKey>();
     m_flushTimer.setInterval(kRecordFlushMs);
     connect(&m_flushTimer, &QTimer::timeout, this, &TelemetryHub::flushRecording);
 }
@@ -80,7 +80,7 @@ void TelemetryHub::addInstrument(int index, const QString& name, dev::Instrument
         in.connections << connect(client, &dev::Instrument::stateChanged, this,
                                   [this, index](dev::LinkState s) { onStateChanged(index, s); });
         in.connections << connect(client, &dev::Instrument::telemetryReceived, this,
-                                  [this, index](const proto::TelemetryBatch& b) { onBatch(index, b); });
+                                  [this, index](const dev::proto::TelemetryBatch& b) { onBatch(index, b); });
         in.connections << connect(client, &QObject::destroyed, this, [this, index] {
             if (Instrument* i = instrument(index))
                 i->subscribeInFlight = false;
@@ -123,7 +123,7 @@ QVector<ChannelKey> TelemetryHub::availableChannels(int index) const
     const dev::DeviceIdentity& id = in->client->identity();
     const dev::Capabilities can = in->client->capabilities();
     const bool pid = can.testFlag(dev::Capability::ClosedLoop);
-    using K = proto::ChannelKind;
+    using K = dev::proto::ChannelKind;
     for (int a = 0; a < id.axes.size(); ++a) {
         const auto axis = static_cast<std::uint8_t>(a);
         for (K k : {K::Commanded, K::Measured, K::Velocity, K::FollowingError, K::ControllerOutput, K::Switches}) {
@@ -135,7 +135,7 @@ QVector<ChannelKey> TelemetryHub::availableChannels(int index) const
             out.push_back(ChannelKey{index, {axis, K::ControllerU}});
     }
     if (pid)
-        out.push_back(ChannelKey{index, {proto::kNoAxis, K::ContourError}});
+        out.push_back(ChannelKey{index, {dev::proto::kNoAxis, K::ContourError}});
     return out;
 }
 
@@ -143,7 +143,7 @@ QString TelemetryHub::channelName(const ChannelKey& key) const
 {
     const Instrument* in = instrument(key.instrument);
     const QString who = in ? in->name : tr("Instrument %1").arg(key.instrument);
-    if (key.ref.kind == proto::ChannelKind::ContourError)
+    if (key.ref.kind == dev::proto::ChannelKind::ContourError)
         return tr("%1 %2").arg(who, kindWord(key.ref.kind));
     QString axis = QString::number(key.ref.axis);
     if (in && in->client && key.ref.axis < in->client->identity().axes.size())
@@ -156,16 +156,16 @@ QString TelemetryHub::channelUnit(const ChannelKey& key) const
     const Instrument* in = instrument(key.instrument);
     bool microlitre = false;
     if (in && in->client && key.ref.axis < in->client->identity().axes.size())
-        microlitre = in->client->identity().axes[key.ref.axis].unit == proto::AxisUnit::Microlitre;
+        microlitre = in->client->identity().axes[key.ref.axis].unit == dev::proto::AxisUnit::Microlitre;
     switch (key.ref.kind) {
-    case proto::ChannelKind::Commanded:
-    case proto::ChannelKind::Measured: return microlitre ? QStringLiteral("µL") : QStringLiteral("mm");
-    case proto::ChannelKind::Velocity: return microlitre ? QStringLiteral("µL/s") : QStringLiteral("mm/s");
-    case proto::ChannelKind::FollowingError: return microlitre ? QStringLiteral("nL") : QStringLiteral("µm");
-    case proto::ChannelKind::ControllerOutput: return QStringLiteral("steps/s");
-    case proto::ChannelKind::Switches: return QString();
-    case proto::ChannelKind::ContourError:
-    case proto::ChannelKind::ControllerU: return QStringLiteral("µm");
+    case dev::proto::ChannelKind::Commanded:
+    case dev::proto::ChannelKind::Measured: return microlitre ? QStringLiteral("µL") : QStringLiteral("mm");
+    case dev::proto::ChannelKind::Velocity: return microlitre ? QStringLiteral("µL/s") : QStringLiteral("mm/s");
+    case dev::proto::ChannelKind::FollowingError: return microlitre ? QStringLiteral("nL") : QStringLiteral("µm");
+    case dev::proto::ChannelKind::ControllerOutput: return QStringLiteral("steps/s");
+    case dev::proto::ChannelKind::Switches: return QString();
+    case dev::proto::ChannelKind::ContourError:
+    case dev::proto::ChannelKind::ControllerU: return QStringLiteral("µm");
     }
     return {};
 }
@@ -174,11 +174,11 @@ double TelemetryHub::unitFactor(const ChannelKey& key) const
 {
     // toAxisUnits() gives mm (µL); errors are a thousand times smaller than travel.
     switch (key.ref.kind) {
-    case proto::ChannelKind::FollowingError:
-    case proto::ChannelKind::ContourError:
-    case proto::ChannelKind::ControllerU: return 1000.0;
+    case dev::proto::ChannelKind::FollowingError:
+    case dev::proto::ChannelKind::ContourError:
+    case dev::proto::ChannelKind::ControllerU: return 1000.0;
     default: return 1.0;
     }
 }
 
-} // namespace tele
+} // namespace dev::tele

@@ -24,11 +24,11 @@
 #include <map>
 #include <memory>
 
-namespace tele {
+namespace dev::tele {
 
 struct ChannelKey {
     int instrument = 0;  ///< the index given to addInstrument (by convention 0 analyzer, 1 stage)
-    proto::ChannelRef ref;
+    dev::proto::ChannelRef ref;
     bool operator==(const ChannelKey& o) const { return instrument == o.instrument && ref == o.ref; }
     bool operator!=(const ChannelKey& o) const { return !(*this == o); }
     /// Instrument, then axis, then kind: the order of availableChannels() and of CSV columns.
@@ -66,7 +66,7 @@ public:
 
     /// From the client's identity (empty until identified): per axis Commanded,
     /// Measured, Velocity, FollowingError, [ControllerOutput with CapClosedLoopPid],
-    /// Switches; then ContourError (axis proto::kNoAxis) with CapClosedLoopPid.
+    /// Switches; then ContourError (axis dev::proto::kNoAxis) with CapClosedLoopPid.
     QVector<ChannelKey> availableChannels(int instrument) const;
     QString channelName(const ChannelKey& key) const;  ///< "Stage X measured", "Stage contour error"
     /// Unit of the values in the store: positions in the axis unit (mm, µL),
@@ -118,7 +118,7 @@ public:
     /// collected for as long as the recording runs (at the rate others want, or
     /// kDefaultRateHz). Returns false with a sentence in *error if the file cannot
     /// be written, nothing is to be recorded, or a recording already runs.
-    bool startRecording(const QString& csvPath, const QVector<ChannelKey>& channels, msg::Message* error);
+    bool startRecording(const QString& csvPath, const QVector<ChannelKey>& channels, motion::msg::Message* error);
     void stopRecording();
     bool recording() const { return m_record != nullptr; }
     QString recordingPath() const;
@@ -151,7 +151,7 @@ public:
     /// Writes every recorded channel's last spanS seconds (≤ 0: all) to a CSV file
     /// (atomically), the recording's format: `time_s,instrument,<name> [<unit>],…`, one
     /// row per kept sample time of one instrument; time_s is the instrument's time line.
-    bool exportHistory(const QString& csvPath, double spanS, msg::Message* error, quint64* rows = nullptr) const;
+    bool exportHistory(const QString& csvPath, double spanS, motion::msg::Message* error, quint64* rows = nullptr) const;
 
 signals:
     /// New samples for the instrument: at most once per event-loop turn.
@@ -159,13 +159,13 @@ signals:
     /// The device now streams at rateHz (0: off). note says why the rate is lower
     /// than wanted, e.g. "rate limited to 588 Hz by the 115200-baud link (it carries
     /// at most 588 Hz with 4 channels)"; empty when the wanted rate was granted.
-    void subscriptionChanged(int instrument, int rateHz, const msg::Message& note);
+    void subscriptionChanged(int instrument, int rateHz, const motion::msg::Message& note);
     /// A sentence for the status bar or event log.
-    void problem(const msg::Message& message);
+    void problem(const motion::msg::Message& message);
 
 private:
     struct ChannelRefLess {
-        bool operator()(const proto::ChannelRef& a, const proto::ChannelRef& b) const
+        bool operator()(const dev::proto::ChannelRef& a, const dev::proto::ChannelRef& b) const
         {
             return a.axis != b.axis ? a.axis < b.axis : a.kind < b.kind;
         }
@@ -178,13 +178,13 @@ private:
         QString name;
         QPointer<dev::Instrument> client;
         QList<QMetaObject::Connection> connections;
-        std::map<proto::ChannelRef, Collected, ChannelRefLess> stores;
+        std::map<dev::proto::ChannelRef, Collected, ChannelRefLess> stores;
         /// Channels someone wants now (sorted); batches' other channels are ignored.
-        QVector<proto::ChannelRef> collected;
+        QVector<dev::proto::ChannelRef> collected;
         // Subscription: what the device streams, what was last asked for.
-        QVector<proto::ChannelRef> subscribed;
+        QVector<dev::proto::ChannelRef> subscribed;
         int subscribedRateHz = 0;
-        QVector<proto::ChannelRef> desired;  ///< the union last applied (sorted)
+        QVector<dev::proto::ChannelRef> desired;  ///< the union last applied (sorted)
         int desiredRateHz = -1;              ///< -1: nothing applied since Ready
         bool subscribeInFlight = false;
         bool reapplyAfterReply = false;
@@ -212,28 +212,28 @@ private:
     Instrument* instrument(int index);
     const Instrument* instrument(int index) const;
     void onStateChanged(int index, dev::LinkState state);
-    void onBatch(int index, const proto::TelemetryBatch& batch);
+    void onBatch(int index, const dev::proto::TelemetryBatch& batch);
     void scheduleApply();
     void applyWants();
     /// Union of wanted channels of one instrument (sorted, only available ones) and the highest wanted rate.
-    void unionFor(int index, QVector<proto::ChannelRef>& channels, int& rateHz) const;
+    void unionFor(int index, QVector<dev::proto::ChannelRef>& channels, int& rateHz) const;
     void recomputeCollected();
     /// What held a subscription's rate below the wanted one.
     enum class Limit { None, Link, SampleClock };
-    void subscribe(int index, const QVector<proto::ChannelRef>& channels, int rateHz, int wantedHz, int attempt,
+    void subscribe(int index, const QVector<dev::proto::ChannelRef>& channels, int rateHz, int wantedHz, int attempt,
                    Limit limit, int statedHz);
     /// Channels only the history wants (not a consumer, not the recording), sorted.
-    QVector<proto::ChannelRef> historyOnly(int index, const QVector<proto::ChannelRef>& channels) const;
-    bool recordsKind(proto::ChannelKind kind) const;
+    QVector<dev::proto::ChannelRef> historyOnly(int index, const QVector<dev::proto::ChannelRef>& channels) const;
+    bool recordsKind(dev::proto::ChannelKind kind) const;
     void dropUnwantedStores(int index);
     std::size_t capacityFor(double periodS) const;
-    ChannelStore* storeFor(Instrument& in, const proto::ChannelRef& ref, double periodS);
+    ChannelStore* storeFor(Instrument& in, const dev::proto::ChannelRef& ref, double periodS);
     /// Replaces the store by one of `capacity` holding its newest samples.
     void reallocate(Collected& c, std::size_t capacity);
     void resizeStores();
     void trim(Instrument& in);
     double unitFactor(const ChannelKey& key) const;  ///< store unit per toAxisUnits() unit
-    void writeRecordRows(int index, const proto::TelemetryBatch& batch);
+    void writeRecordRows(int index, const dev::proto::TelemetryBatch& batch);
     void flushRecording();
     void failRecording(const QString& why);
     void emitDirty();
@@ -250,6 +250,6 @@ private:
     QTimer m_flushTimer;
 };
 
-} // namespace tele
+} // namespace dev::tele
 
-Q_DECLARE_METATYPE(tele::ChannelKey)
+Q_DECLARE_METATYPE(dev::tele::ChannelKey)

@@ -10,7 +10,7 @@
 #include <charconv>
 #include <limits>
 
-namespace tele {
+namespace dev::tele {
 inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// The recorder's consumer name: not a name a widget would pick.
 inline const QString kRecordingConsumer = QStringLiteral("\x01recording");
@@ -42,4 +42,4 @@ struct TelemetryHub::Recording {
     quint64 rows = 0;
 };
 
-} // namespace tele
+} // namespace dev::tele

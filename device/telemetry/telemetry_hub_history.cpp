@@ -11,7 +11,7 @@
 #include <cmath>
 #include <vector>
 
-namespace tele {
+namespace dev::tele {
 namespace {
 /// A live store "covers the window" when its oldest sample is at most this much
 /// younger than the window's start: one batch late (≤ 105 ms) is still covering.
@@ -65,9 +65,9 @@ QVector<ChannelKey> TelemetryHub::historyChannels() const
 
 double TelemetryHub::historySpanS(int index) const { return m_history ? m_history->spanS(index) : 0.0; }
 
-bool TelemetryHub::exportHistory(const QString& csvPath, double spanS, msg::Message* error, quint64* rows) const
+bool TelemetryHub::exportHistory(const QString& csvPath, double spanS, motion::msg::Message* error, quint64* rows) const
 {
-    auto fail = [error](const msg::Message& why) {
+    auto fail = [error](const motion::msg::Message& why) {
         if (error)
             *error = why;
         return false;
@@ -80,11 +80,11 @@ bool TelemetryHub::exportHistory(const QString& csvPath, double spanS, msg::Mess
             cols.push_back(HistoryColumn{k, s, 0});
     }
     if (cols.empty())
-        return fail(msg::make("telemetry.history_empty"));
+        return fail(motion::msg::make("telemetry.history_empty"));
     QSaveFile file(csvPath);
     const auto cannotWrite = [&] {
-        return msg::make("file.cannot_write", {msg::verbatim("file", QDir::toNativeSeparators(csvPath).toStdString()),
-                                               msg::verbatim("detail", file.errorString().toStdString())});
+        return motion::msg::make("file.cannot_write", {motion::msg::verbatim("file", QDir::toNativeSeparators(csvPath).toStdString()),
+                                               motion::msg::verbatim("detail", file.errorString().toStdString())});
     };
     if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
         return fail(cannotWrite());
@@ -141,4 +141,4 @@ bool TelemetryHub::exportHistory(const QString& csvPath, double spanS, msg::Mess
     return true;
 }
 
-} // namespace tele
+} // namespace dev::tele

@@ -8,7 +8,7 @@
 
 #include <charconv>
 
-namespace tele {
+namespace dev::tele {
 namespace {
 /// Device microseconds as seconds with six decimals, exactly.
 void appendTimeUs(QByteArray& out, std::uint64_t us)
@@ -25,26 +25,26 @@ void appendTimeUs(QByteArray& out, std::uint64_t us)
 
 // ---- recording ------------------------------------------------------------------
 
-bool TelemetryHub::startRecording(const QString& csvPath, const QVector<ChannelKey>& channels, msg::Message* error)
+bool TelemetryHub::startRecording(const QString& csvPath, const QVector<ChannelKey>& channels, motion::msg::Message* error)
 {
-    auto fail = [error](const msg::Message& why) {
+    auto fail = [error](const motion::msg::Message& why) {
         if (error)
             *error = why;
         return false;
     };
     if (m_record)
-        return fail(msg::make("telemetry.already_recording", {msg::verbatim("file", QDir::toNativeSeparators(m_record->file.fileName()).toStdString())}));
+        return fail(motion::msg::make("telemetry.already_recording", {motion::msg::verbatim("file", QDir::toNativeSeparators(m_record->file.fileName()).toStdString())}));
     QVector<ChannelKey> columns;
     for (const auto& k : channels)
         if (instrument(k.instrument) && !columns.contains(k))
             columns.push_back(k);
     if (columns.isEmpty())
-        return fail(msg::make("telemetry.nothing_to_record"));
+        return fail(motion::msg::make("telemetry.nothing_to_record"));
     auto rec = std::make_unique<Recording>();
     rec->file.setFileName(csvPath);
     const auto cannotWrite = [&] {
-        return msg::make("file.cannot_write", {msg::verbatim("file", QDir::toNativeSeparators(csvPath).toStdString()),
-                                               msg::verbatim("detail", rec->file.errorString().toStdString())});
+        return motion::msg::make("file.cannot_write", {motion::msg::verbatim("file", QDir::toNativeSeparators(csvPath).toStdString()),
+                                               motion::msg::verbatim("detail", rec->file.errorString().toStdString())});
     };
     if (!rec->file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text))
         return fail(cannotWrite());
@@ -87,7 +87,7 @@ void TelemetryHub::stopRecording()
 QString TelemetryHub::recordingPath() const { return m_record ? m_record->file.fileName() : QString(); }
 quint64 TelemetryHub::recordedRows() const { return m_record ? m_record->rows : 0; }
 
-void TelemetryHub::writeRecordRows(int index, const proto::TelemetryBatch& batch)
+void TelemetryHub::writeRecordRows(int index, const dev::proto::TelemetryBatch& batch)
 {
     Recording& r = *m_record;
     const std::size_t nc = batch.channels.size();
@@ -117,7 +117,7 @@ void TelemetryHub::writeRecordRows(int index, const proto::TelemetryBatch& batch
             r.buffer += ',';
             if (pos[col] < 0)
                 continue;
-            const proto::ChannelRef ref = r.columns[col].ref;
+            const dev::proto::ChannelRef ref = r.columns[col].ref;
             const std::int32_t raw = batch.values[k * nc + static_cast<std::size_t>(pos[col])];
             const double v = client ? client->toAxisUnits(ref, raw) : double(raw);
             appendShortest(r.buffer, v * unitFactor(r.columns[col]));
@@ -151,7 +151,7 @@ void TelemetryHub::failRecording(const QString& why)
     m_wants.remove(kRecordingConsumer);
     recomputeCollected();
     scheduleApply();
-    emit problem(msg::make("telemetry.recording_stopped", {msg::verbatim("file", path.toStdString()), msg::verbatim("detail", why.toStdString())}));
+    emit problem(motion::msg::make("telemetry.recording_stopped", {motion::msg::verbatim("file", path.toStdString()), motion::msg::verbatim("detail", why.toStdString())}));
 }
 
-} // namespace tele
+} // namespace dev::tele

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace tele {
+namespace dev::tele {
 namespace {
 /// Slack on top of kPauseWindows × window × rate: a whole batch always fits.
 constexpr std::size_t kStoreHeadroom = 1024;
@@ -29,7 +29,7 @@ void TelemetryHub::reallocate(Collected& c, std::size_t capacity)
     c.store = c.store ? std::make_unique<ChannelStore>(*c.store, capacity) : std::make_unique<ChannelStore>(capacity);
 }
 
-ChannelStore* TelemetryHub::storeFor(Instrument& in, const proto::ChannelRef& ref, double periodS)
+ChannelStore* TelemetryHub::storeFor(Instrument& in, const dev::proto::ChannelRef& ref, double periodS)
 {
     Collected& c = in.stores[ref];
     if (periodS > 0 && (!c.store || periodS < c.periodS))
@@ -133,7 +133,7 @@ quint64 TelemetryHub::heldBackSamples(int index) const
 
 // ---- ingest ---------------------------------------------------------------------
 
-void TelemetryHub::onBatch(int index, const proto::TelemetryBatch& batch)
+void TelemetryHub::onBatch(int index, const dev::proto::TelemetryBatch& batch)
 {
     Instrument* inp = instrument(index);
     if (!inp)
@@ -163,7 +163,7 @@ void TelemetryHub::onBatch(int index, const proto::TelemetryBatch& batch)
         const double gapS = in.sinceBatch.isValid() ? static_cast<double>(in.sinceBatch.elapsed()) * 1e-3 : 0.0;
         in.offsetS = in.latestS + std::max({period, gapS, 1e-6}) - deviceT0;
         t0 = deviceT0 + in.offsetS;
-        emit problem(msg::make("telemetry.clock_restarted", {msg::verbatim("instrument", in.name.toStdString())}));
+        emit problem(motion::msg::make("telemetry.clock_restarted", {motion::msg::verbatim("instrument", in.name.toStdString())}));
     }
     in.sinceBatch.start();
     const double tLast = t0 + static_cast<double>(n - 1) * period;
@@ -177,7 +177,7 @@ void TelemetryHub::onBatch(int index, const proto::TelemetryBatch& batch)
     std::size_t heldBack = 0;
     m_scratch.resize(n);
     for (std::size_t c = 0; c < nc; ++c) {
-        const proto::ChannelRef ref = batch.channels[c];
+        const dev::proto::ChannelRef ref = batch.channels[c];
         const bool live = std::find(in.collected.begin(), in.collected.end(), ref) != in.collected.end();
         const bool keep = recordsKind(ref.kind);
         if (!live && !keep)
@@ -231,4 +231,4 @@ void TelemetryHub::emitDirty()
         Qt::QueuedConnection);
 }
 
-} // namespace tele
+} // namespace dev::tele

@@ -7,12 +7,12 @@
 
 #include <algorithm>
 
-namespace tele {
+namespace dev::tele {
 namespace {
 /// Attempts at a lower rate after the device refused one as over capacity.
 constexpr int kMaxFallbacks = 4;
 
-bool refLess(const proto::ChannelRef& a, const proto::ChannelRef& b)
+bool refLess(const dev::proto::ChannelRef& a, const dev::proto::ChannelRef& b)
 {
     return a.axis != b.axis ? a.axis < b.axis : a.kind < b.kind;
 }
@@ -45,7 +45,7 @@ int TelemetryHub::subscribedRateHz(int index) const
 void TelemetryHub::recomputeCollected()
 {
     for (auto& [index, in] : m_instruments) {
-        QVector<proto::ChannelRef> refs;
+        QVector<dev::proto::ChannelRef> refs;
         auto add = [&refs, idx = index](const QVector<ChannelKey>& keys) {
             for (const auto& k : keys)
                 if (k.instrument == idx && std::find(refs.begin(), refs.end(), k.ref) == refs.end())
@@ -60,7 +60,7 @@ void TelemetryHub::recomputeCollected()
     }
 }
 
-void TelemetryHub::unionFor(int index, QVector<proto::ChannelRef>& channels, int& rateHz) const
+void TelemetryHub::unionFor(int index, QVector<dev::proto::ChannelRef>& channels, int& rateHz) const
 {
     const Instrument* in = instrument(index);
     channels.clear();
@@ -111,7 +111,7 @@ void TelemetryHub::applyWants()
             in.reapplyAfterReply = true;
             continue;
         }
-        QVector<proto::ChannelRef> channels;
+        QVector<dev::proto::ChannelRef> channels;
         int rateHz = 0;
         unionFor(index, channels, rateHz);
         if (channels == in.desired && rateHz == in.desiredRateHz)
@@ -129,7 +129,7 @@ void TelemetryHub::applyWants()
     }
 }
 
-void TelemetryHub::subscribe(int index, const QVector<proto::ChannelRef>& channels, int rateHz, int wantedHz, int attempt,
+void TelemetryHub::subscribe(int index, const QVector<dev::proto::ChannelRef>& channels, int rateHz, int wantedHz, int attempt,
                              Limit limit, int statedHz)
 {
     Instrument* in = instrument(index);
@@ -138,7 +138,7 @@ void TelemetryHub::subscribe(int index, const QVector<proto::ChannelRef>& channe
     in->subscribeInFlight = true;
     QPointer<TelemetryHub> self(this);
     in->client->subscribe(channels, rateHz, [self, index, channels, rateHz, wantedHz, attempt, limit, statedHz](
-                                                const std::optional<dev::RequestError>& err, const proto::SubscribeReply& reply) {
+                                                const std::optional<dev::RequestError>& err, const dev::proto::SubscribeReply& reply) {
         if (!self)
             return;
         Instrument* i = self->instrument(index);
@@ -153,14 +153,14 @@ void TelemetryHub::subscribe(int index, const QVector<proto::ChannelRef>& channe
         };
         if (err) {
             const bool overCapacity = err->kind == dev::RequestError::Kind::Device
-                && (err->code == proto::ErrorCode::OverCapacity || err->code == proto::ErrorCode::OutOfRange);
+                && (err->code == dev::proto::ErrorCode::OverCapacity || err->code == dev::proto::ErrorCode::OutOfRange);
             const int stated = static_cast<int>(err->value);
-            if (err->kind == dev::RequestError::Kind::Device && err->code == proto::ErrorCode::OverCapacity) {
+            if (err->kind == dev::RequestError::Kind::Device && err->code == dev::proto::ErrorCode::OverCapacity) {
                 // History never costs a screen its rate: first leave out what only the
                 // history wants (its channels get a gap until the wants change again).
-                const QVector<proto::ChannelRef> shed = self->historyOnly(index, channels);
+                const QVector<dev::proto::ChannelRef> shed = self->historyOnly(index, channels);
                 if (!shed.isEmpty() && shed.size() < channels.size()) {
-                    QVector<proto::ChannelRef> rest;
+                    QVector<dev::proto::ChannelRef> rest;
                     for (const auto& ref : channels)
                         if (!shed.contains(ref))
                             rest.push_back(ref);
@@ -186,33 +186,33 @@ void TelemetryHub::subscribe(int index, const QVector<proto::ChannelRef>& channe
                     next = attempt == 0 ? stated : rateHz - 1;
                 next = std::max(1, std::min(next, rateHz - 1));
                 self->subscribe(index, channels, next, wantedHz, attempt + 1,
-                                err->code == proto::ErrorCode::OverCapacity ? Limit::Link : Limit::SampleClock, stated);
+                                err->code == dev::proto::ErrorCode::OverCapacity ? Limit::Link : Limit::SampleClock, stated);
                 return;
             }
             if (err->kind != dev::RequestError::Kind::LinkDown)
-                emit self->problem(msg::make("telemetry.not_subscribed", {msg::verbatim("instrument", i->name.toStdString()), msg::nested("cause", err->message)}));
+                emit self->problem(motion::msg::make("telemetry.not_subscribed", {motion::msg::verbatim("instrument", i->name.toStdString()), motion::msg::nested("cause", err->message)}));
             // Left as is until the wants change or the link comes back.
             reapply();
             return;
         }
-        i->subscribed = reply.rateHz ? channels : QVector<proto::ChannelRef>{};
+        i->subscribed = reply.rateHz ? channels : QVector<dev::proto::ChannelRef>{};
         i->historyShed = !self->historyOnly(index, i->desired).isEmpty()
             && self->historyOnly(index, channels).size() < self->historyOnly(index, i->desired).size();
         i->subscribedRateHz = static_cast<int>(reply.rateHz);
         i->haveSampleIndex = false;  // a new subscription restarts the device's sample counter
-        msg::Message note;
+        motion::msg::Message note;
         const int got = static_cast<int>(reply.rateHz);
         if (got > 0 && got < wantedHz) {
             if (limit == Limit::Link)
-                note = msg::make("telemetry.rate_link_limited",
-                                 {msg::integer("rate", got, msg::Unit::Hz),
-                                  msg::integer("baud", i->client ? i->client->identity().linkBaud : 0, msg::Unit::Baud),
-                                  msg::integer("max", statedHz, msg::Unit::Hz), msg::integer("channels", channels.size())});
+                note = motion::msg::make("telemetry.rate_link_limited",
+                                 {motion::msg::integer("rate", got, motion::msg::Unit::Hz),
+                                  motion::msg::integer("baud", i->client ? i->client->identity().linkBaud : 0, motion::msg::Unit::Baud),
+                                  motion::msg::integer("max", statedHz, motion::msg::Unit::Hz), motion::msg::integer("channels", channels.size())});
             else if (limit == Limit::SampleClock)
-                note = msg::make("telemetry.rate_clock_limited", {msg::integer("rate", got, msg::Unit::Hz), msg::integer("clock", statedHz, msg::Unit::Hz)});
+                note = motion::msg::make("telemetry.rate_clock_limited", {motion::msg::integer("rate", got, motion::msg::Unit::Hz), motion::msg::integer("clock", statedHz, motion::msg::Unit::Hz)});
         }
         if (got > 0 && note.empty() && got != wantedHz)
-            note = msg::make("telemetry.rate_nearest", {msg::integer("rate", got, msg::Unit::Hz)});
+            note = motion::msg::make("telemetry.rate_nearest", {motion::msg::integer("rate", got, motion::msg::Unit::Hz)});
         emit self->subscriptionChanged(index, got, note);
         reapply();
     });
@@ -232,10 +232,10 @@ void TelemetryHub::onStateChanged(int index, dev::LinkState state)
     if (state == dev::LinkState::Ready)
         scheduleApply();
     else if (wasStreaming)
-        emit subscriptionChanged(index, 0, msg::make("telemetry.link_state", {msg::term("state", dev::linkStateTerm(state))}));
+        emit subscriptionChanged(index, 0, motion::msg::make("telemetry.link_state", {motion::msg::term("state", dev::linkStateTerm(state))}));
 }
 
-bool TelemetryHub::recordsKind(proto::ChannelKind kind) const
+bool TelemetryHub::recordsKind(dev::proto::ChannelKind kind) const
 {
     if (!m_history)
         return false;
@@ -243,9 +243,9 @@ bool TelemetryHub::recordsKind(proto::ChannelKind kind) const
     return std::find(kinds.begin(), kinds.end(), kind) != kinds.end();
 }
 
-QVector<proto::ChannelRef> TelemetryHub::historyOnly(int index, const QVector<proto::ChannelRef>& channels) const
+QVector<dev::proto::ChannelRef> TelemetryHub::historyOnly(int index, const QVector<dev::proto::ChannelRef>& channels) const
 {
-    QVector<proto::ChannelRef> out;
+    QVector<dev::proto::ChannelRef> out;
     const Instrument* in = instrument(index);
     for (const auto& ref : channels)
         if (recordsKind(ref.kind) && (!in || !in->collected.contains(ref)))
@@ -272,4 +272,4 @@ void TelemetryHub::dropUnwantedStores(int index)
     }
 }
 
-} // namespace tele
+} // namespace dev::tele

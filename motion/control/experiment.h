@@ -38,7 +38,7 @@ enum class EndReason : std::uint8_t {
 };
 constexpr std::uint8_t kMaxEndReason = 9;
 const char* endReasonName(EndReason r);  ///< the key in files and JSON: "settled", "max excursion crossed"
-const char* endReasonTerm(EndReason r);  ///< for people (words::term): "tuning.end.settled"
+const char* endReasonTerm(EndReason r);  ///< for people (ui::words::term): "tuning.end.settled"
 inline bool isEnvelopeTrip(EndReason r) { return r == EndReason::Excursion || r == EndReason::FollowingError || r == EndReason::Duration; }
 /// Settled or completed: the experiment did what it was asked.
 inline bool endedNormally(EndReason r) { return r == EndReason::Settled || r == EndReason::Completed; }

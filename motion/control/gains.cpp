@@ -41,7 +41,7 @@ std::vector<GainProblem> checkGains(const DiscreteGains& g, const GainLimits& li
         else
             continue;
         out.push_back({i, names[i], v, maxima[i],
-                       msg::make(id, {msg::verbatim("gain", names[i]), msg::real("value", v), msg::real("max", maxima[i])})});
+                       motion::msg::make(id, {motion::msg::verbatim("gain", names[i]), motion::msg::real("value", v), motion::msg::real("max", maxima[i])})});
     }
     return out;
 }

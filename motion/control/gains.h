@@ -52,7 +52,7 @@ struct GainProblem {
     std::string field;       ///< "kp", "ki", "kd"
     double value = 0;
     double limit = 0;        ///< the largest accepted, for gain_above_limit
-    msg::Message message;    ///< tuning.gain_not_finite / gain_negative / gain_above_limit {gain, value, max}
+    motion::msg::Message message;    ///< tuning.gain_not_finite / gain_negative / gain_above_limit {gain, value, max}
 };
 
 /// The refusal as the reference firmware words it on the wire ("kd = -0.1 must not be

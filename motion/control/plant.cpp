@@ -40,9 +40,9 @@ std::string PlantSpec::text() const
     return s;
 }
 
-msg::Checked<PlantSpec> parsePlant(std::string_view text)
+motion::msg::Checked<PlantSpec> parsePlant(std::string_view text)
 {
-    using R = msg::Checked<PlantSpec>;
+    using R = motion::msg::Checked<PlantSpec>;
     const std::string all = trim(text);
     const auto colon = all.find(':');
     const std::string kind = trim(std::string_view(all).substr(0, colon == std::string::npos ? all.size() : colon));
@@ -55,13 +55,13 @@ msg::Checked<PlantSpec> parsePlant(std::string_view text)
         p.kind = PlantSpec::Kind::Lag;
         fields = {"K", "tau", "n", "Ts"};
     } else {
-        return R::fail(msg::make("tuning.plant.unknown_kind", {msg::verbatim("kind", kind)}));
+        return R::fail(motion::msg::make("tuning.plant.unknown_kind", {motion::msg::verbatim("kind", kind)}));
     }
     const std::string list = "K, tau, " + fields[2] + ", Ts";
-    const msg::Arg kindArg = msg::verbatim("kind", kind), listArg = msg::verbatim("fields", list);
-    auto fieldArg = [](const std::string& name) { return msg::verbatim("field", name); };
+    const motion::msg::Arg kindArg = motion::msg::verbatim("kind", kind), listArg = motion::msg::verbatim("fields", list);
+    auto fieldArg = [](const std::string& name) { return motion::msg::verbatim("field", name); };
     if (colon == std::string::npos)
-        return R::fail(msg::make("tuning.plant.no_fields", {kindArg, listArg}));
+        return R::fail(motion::msg::make("tuning.plant.no_fields", {kindArg, listArg}));
     std::vector<bool> seen(fields.size(), false);
     double values[4] = {1, 1, 0, PlantSpec{}.periodS};
     std::string rest = all.substr(colon + 1);
@@ -71,56 +71,56 @@ msg::Checked<PlantSpec> parsePlant(std::string_view text)
         const std::string item = trim(std::string_view(rest).substr(at, comma - at));
         at = comma + 1;
         if (item.empty())
-            return R::fail(msg::make("tuning.plant.empty_field", {kindArg, listArg}));
+            return R::fail(motion::msg::make("tuning.plant.empty_field", {kindArg, listArg}));
         const auto eq = item.find('=');
         const std::string name = trim(std::string_view(item).substr(0, eq == std::string::npos ? item.size() : eq));
         const auto it = std::find(fields.begin(), fields.end(), name);
         if (it == fields.end())
-            return R::fail(msg::make("tuning.plant.unknown_field", {kindArg, fieldArg(name), listArg}));
+            return R::fail(motion::msg::make("tuning.plant.unknown_field", {kindArg, fieldArg(name), listArg}));
         const std::size_t idx = static_cast<std::size_t>(it - fields.begin());
         if (eq == std::string::npos)
-            return R::fail(msg::make("tuning.plant.no_value", {kindArg, fieldArg(name)}));
+            return R::fail(motion::msg::make("tuning.plant.no_value", {kindArg, fieldArg(name)}));
         if (seen[idx])
-            return R::fail(msg::make("tuning.plant.field_twice", {kindArg, fieldArg(name)}));
+            return R::fail(motion::msg::make("tuning.plant.field_twice", {kindArg, fieldArg(name)}));
         seen[idx] = true;
         const std::string valueText = trim(std::string_view(item).substr(eq + 1));
         char* end = nullptr;
         const double v = std::strtod(valueText.c_str(), &end);
         if (valueText.empty() || end != valueText.c_str() + valueText.size() || !std::isfinite(v))
-            return R::fail(msg::make("tuning.plant.not_a_number", {kindArg, fieldArg(name), msg::verbatim("text", valueText.substr(0, 40))}));
+            return R::fail(motion::msg::make("tuning.plant.not_a_number", {kindArg, fieldArg(name), motion::msg::verbatim("text", valueText.substr(0, 40))}));
         values[idx] = v;
     }
     for (std::size_t i = 0; i < 3; ++i)
         if (!seen[i])
-            return R::fail(msg::make("tuning.plant.field_missing", {kindArg, fieldArg(fields[i]), listArg}));
+            return R::fail(motion::msg::make("tuning.plant.field_missing", {kindArg, fieldArg(fields[i]), listArg}));
     p.gain = values[0];
     p.tauS = values[1];
     p.periodS = values[3];
     if (!(p.gain > 0))
-        return R::fail(msg::make("tuning.plant.not_positive", {kindArg, fieldArg("K"), msg::real("value", p.gain)}));
+        return R::fail(motion::msg::make("tuning.plant.not_positive", {kindArg, fieldArg("K"), motion::msg::real("value", p.gain)}));
     if (!(p.periodS > 0) || p.periodS > 0.1)
-        return R::fail(msg::make("tuning.plant.period_out_of_range", {kindArg, msg::real("value", p.periodS, msg::Unit::S), msg::real("max", 0.1, msg::Unit::S)}));
+        return R::fail(motion::msg::make("tuning.plant.period_out_of_range", {kindArg, motion::msg::real("value", p.periodS, motion::msg::Unit::S), motion::msg::real("max", 0.1, motion::msg::Unit::S)}));
     if (p.kind == PlantSpec::Kind::Fopdt) {
         p.delayS = values[2];
         p.order = 1;
         if (p.tauS < 0)
-            return R::fail(msg::make("tuning.plant.negative", {kindArg, fieldArg("tau"), msg::real("value", p.tauS)}));
+            return R::fail(motion::msg::make("tuning.plant.negative", {kindArg, fieldArg("tau"), motion::msg::real("value", p.tauS)}));
         if (p.delayS < 0)
-            return R::fail(msg::make("tuning.plant.negative", {kindArg, fieldArg("L"), msg::real("value", p.delayS)}));
+            return R::fail(motion::msg::make("tuning.plant.negative", {kindArg, fieldArg("L"), motion::msg::real("value", p.delayS)}));
         if (p.tauS == 0 && p.delayS == 0)
-            return R::fail(msg::make("tuning.plant.pure_gain", {kindArg}));
+            return R::fail(motion::msg::make("tuning.plant.pure_gain", {kindArg}));
         if (p.tauS == 0)
             p.order = 0;  // a pure dead time
         if (p.delayS > 1e5 * p.periodS)
-            return R::fail(msg::make("tuning.plant.delay_too_long", {kindArg, msg::real("delay", p.delayS, msg::Unit::S),
-                                                                     msg::real("period", p.periodS, msg::Unit::S)}));
+            return R::fail(motion::msg::make("tuning.plant.delay_too_long", {kindArg, motion::msg::real("delay", p.delayS, motion::msg::Unit::S),
+                                                                     motion::msg::real("period", p.periodS, motion::msg::Unit::S)}));
     } else {
         const double n = values[2];
         if (!(n >= 1 && n <= 12 && n == std::floor(n)))
-            return R::fail(msg::make("tuning.plant.order_invalid", {kindArg, msg::real("value", n)}));
+            return R::fail(motion::msg::make("tuning.plant.order_invalid", {kindArg, motion::msg::real("value", n)}));
         p.order = static_cast<int>(n);
         if (!(p.tauS > 0))
-            return R::fail(msg::make("tuning.plant.not_positive", {kindArg, fieldArg("tau"), msg::real("value", p.tauS)}));
+            return R::fail(motion::msg::make("tuning.plant.not_positive", {kindArg, fieldArg("tau"), motion::msg::real("value", p.tauS)}));
     }
     return R::ok(p);
 }
@@ -131,13 +131,13 @@ std::complex<double> frequencyResponse(const PlantSpec& p, double w)
     return p.gain * std::exp(std::complex<double>(0, -w * p.delayS)) / std::pow(lag, p.order);
 }
 
-msg::Message whyNoUltimateGain(const PlantSpec& p)
+motion::msg::Message whyNoUltimateGain(const PlantSpec& p)
 {
     if (p.delayS > 0 || p.order >= 3)
         return {};
     if (p.kind == PlantSpec::Kind::Fopdt)
-        return msg::make("tuning.plant.first_order_no_ku");
-    return msg::make("tuning.plant.lag_no_ku", {msg::integer("order", p.order, msg::Unit::None), msg::integer("phase", 90 * p.order, msg::Unit::Deg)});
+        return motion::msg::make("tuning.plant.first_order_no_ku");
+    return motion::msg::make("tuning.plant.lag_no_ku", {motion::msg::integer("order", p.order, motion::msg::Unit::None), motion::msg::integer("phase", 90 * p.order, motion::msg::Unit::Deg)});
 }
 
 std::optional<UltimatePoint> ultimatePoint(const PlantSpec& p)

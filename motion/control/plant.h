@@ -29,7 +29,7 @@ struct PlantSpec {
 
 /// Parses a plant spec. Errors name the field at fault: "lag: n must be a whole
 /// number from 1 to 12 (got 2.5)", "fopdt: unknown field 'Tau' (fields: K, tau, L, Ts)".
-msg::Checked<PlantSpec> parsePlant(std::string_view text);
+motion::msg::Checked<PlantSpec> parsePlant(std::string_view text);
 
 /// G(jω).
 std::complex<double> frequencyResponse(const PlantSpec& p, double omegaRadS);
@@ -44,7 +44,7 @@ struct UltimatePoint {
 /// such a loop has no finite ultimate gain.
 std::optional<UltimatePoint> ultimatePoint(const PlantSpec& p);
 /// A sentence saying why a plant has no finite ultimate gain (empty if it has one).
-msg::Message whyNoUltimateGain(const PlantSpec& p);
+motion::msg::Message whyNoUltimateGain(const PlantSpec& p);
 
 /// Fixed-step, exact simulation of the plant for an input held constant over
 /// each control period (zero-order hold). Sample convention: y_k is the output

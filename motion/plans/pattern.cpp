@@ -12,30 +12,30 @@ using motion::path::Segment;
 
 namespace {
 
-using msg::Unit;
+using motion::msg::Unit;
 
 struct Checker {
-    msg::Problems& out;
+    motion::msg::Problems& out;
     void finite(const char* field, double v)
     {
         if (!std::isfinite(v))
-            out.push_back(msg::error(field, msg::make("pattern.not_a_number")));
+            out.push_back(motion::msg::error(field, motion::msg::make("pattern.not_a_number")));
     }
     void point(const char* field, Vec2 v)
     {
         if (!std::isfinite(v.x) || !std::isfinite(v.y))
-            out.push_back(msg::error(field, msg::make("pattern.not_a_point")));
+            out.push_back(motion::msg::error(field, motion::msg::make("pattern.not_a_point")));
     }
     void above(const char* field, double v, double lo, Unit unit)
     {
         if (!std::isfinite(v) || !(v > lo))
-            out.push_back(msg::error(field, msg::make("pattern.not_above", {msg::real("value", v, unit), msg::real("min", lo, unit)})));
+            out.push_back(motion::msg::error(field, motion::msg::make("pattern.not_above", {motion::msg::real("value", v, unit), motion::msg::real("min", lo, unit)})));
     }
     void within(const char* field, double v, double lo, double hi, Unit unit)
     {
         if (!std::isfinite(v) || v < lo || v > hi)
-            out.push_back(msg::error(field, msg::make("pattern.out_of_range",
-                                            {msg::real("value", v, unit), msg::real("min", lo, unit), msg::real("max", hi, unit)})));
+            out.push_back(motion::msg::error(field, motion::msg::make("pattern.out_of_range",
+                                            {motion::msg::real("value", v, unit), motion::msg::real("min", lo, unit), motion::msg::real("max", hi, unit)})));
     }
 };
 
@@ -74,9 +74,9 @@ std::optional<PatternShape> shapeFromName(std::string_view name)
     return std::nullopt;
 }
 
-msg::Problems validate(const Pattern& p)
+motion::msg::Problems validate(const Pattern& p)
 {
-    msg::Problems out;
+    motion::msg::Problems out;
     Checker c{out};
     c.within("feed_mm_s", p.feedMmS, 1e-3, 1000, Unit::MmPerS);
     if (p.zMm)
@@ -86,7 +86,7 @@ msg::Problems validate(const Pattern& p)
         c.point("start_mm", p.line.startMm);
         c.point("end_mm", p.line.endMm);
         if (motion::path::norm(p.line.endMm - p.line.startMm) < 1e-6)
-            out.push_back(msg::error("end_mm", msg::make("pattern.line_has_no_length")));
+            out.push_back(motion::msg::error("end_mm", motion::msg::make("pattern.line_has_no_length")));
         break;
     case PatternShape::Rectangle:
         c.point("corner_mm", p.rectangle.cornerMm);
@@ -118,9 +118,9 @@ msg::Problems validate(const Pattern& p)
             const double k = 2 * 3.14159265358979323846 / w.wavelengthMm;
             const double h = std::sqrt(8 * w.toleranceMm / (w.amplitudeMm * k * k));
             if (w.lengthMm / h > static_cast<double>(kMaxSegments))
-                out.push_back(msg::error("tolerance_mm", msg::make("pattern.too_many_chords",
-                                                          {msg::real("count", std::ceil(w.lengthMm / h), Unit::Count),
-                                                           msg::integer("max", static_cast<long long>(kMaxSegments))})));
+                out.push_back(motion::msg::error("tolerance_mm", motion::msg::make("pattern.too_many_chords",
+                                                          {motion::msg::real("count", std::ceil(w.lengthMm / h), Unit::Count),
+                                                           motion::msg::integer("max", static_cast<long long>(kMaxSegments))})));
         }
         break;
     }
@@ -132,7 +132,7 @@ msg::Problems validate(const Pattern& p)
         c.within("turns", s.turns, 0.5, 1000, Unit::None);
         c.finite("start_deg", s.startDeg);
         if (std::isfinite(s.turns) && std::fabs(s.turns * 2 - std::round(s.turns * 2)) > 1e-9)
-            out.push_back(msg::error("turns", msg::make("pattern.not_half_turns", {msg::real("value", s.turns)})));
+            out.push_back(motion::msg::error("turns", motion::msg::make("pattern.not_half_turns", {motion::msg::real("value", s.turns)})));
         break;
     }
     case PatternShape::Raster: {
@@ -145,8 +145,8 @@ msg::Problems validate(const Pattern& p)
             const double across = r.alongY ? r.widthMm : r.heightMm;
             const double passes = std::floor(across / r.spacingMm + 1e-9) + 1;
             if (2 * passes - 1 > static_cast<double>(kMaxSegments))
-                out.push_back(msg::error("spacing_mm", msg::make("pattern.too_many_passes", {msg::real("count", passes, Unit::Count),
-                                                                                 msg::integer("max", static_cast<long long>(kMaxSegments / 2))})));
+                out.push_back(motion::msg::error("spacing_mm", motion::msg::make("pattern.too_many_passes", {motion::msg::real("count", passes, Unit::Count),
+                                                                                 motion::msg::integer("max", static_cast<long long>(kMaxSegments / 2))})));
         }
         break;
     }
@@ -192,10 +192,10 @@ std::optional<LimitViolation> outsideLimits(const std::vector<Segment>& path, co
             v.reachesMm = c.reaches;
             v.limitMm = c.limit;
             v.upper = c.upper;
-            v.message = msg::make(c.upper ? "pattern.segment_above_limit" : "pattern.segment_below_limit",
-                                  {msg::integer("segment", static_cast<long long>(k), Unit::None),
-                                   msg::term("kind", segmentKindTerm(path[k].kind)), msg::verbatim("axis", c.axis == 0 ? "X" : "Y"),
-                                   msg::real("value", c.reaches, Unit::Mm), msg::real("limit", c.limit, Unit::Mm)});
+            v.message = motion::msg::make(c.upper ? "pattern.segment_above_limit" : "pattern.segment_below_limit",
+                                  {motion::msg::integer("segment", static_cast<long long>(k), Unit::None),
+                                   motion::msg::term("kind", segmentKindTerm(path[k].kind)), motion::msg::verbatim("axis", c.axis == 0 ? "X" : "Y"),
+                                   motion::msg::real("value", c.reaches, Unit::Mm), motion::msg::real("limit", c.limit, Unit::Mm)});
             return v;
         }
     }

@@ -100,7 +100,7 @@ struct Pattern {
 /// Every problem of the pattern's own numbers (not the instrument's limits: see
 /// outsideLimits), each at its field ("radius_mm", "feed_mm_s") with pattern.not_above
 /// {value, min}, … (docs/patterns.md, "Messages").
-msg::Problems validate(const Pattern& p);
+motion::msg::Problems validate(const Pattern& p);
 /// The segments, in order; empty if the pattern is not valid. Arcs are split into pieces of at
 /// most 90° so every piece has one unambiguous sweep.
 std::vector<motion::path::Segment> plan(const Pattern& p);
@@ -115,7 +115,7 @@ struct LimitViolation {
     double reachesMm = 0;                ///< the coordinate it reaches
     double limitMm = 0;                  ///< the limit it crosses
     bool upper = false;
-    msg::Message message;                ///< pattern.segment_above_limit / _below_limit {segment, kind, axis, value, limit}
+    motion::msg::Message message;                ///< pattern.segment_above_limit / _below_limit {segment, kind, axis, value, limit}
 };
 std::optional<LimitViolation> outsideLimits(const std::vector<motion::path::Segment>& path, const motion::path::Box& limits);
 

@@ -32,7 +32,7 @@
     </message>
 </context>
 <context>
-    <name>words::EventWords</name>
+    <name>ui::words::EventWords</name>
     <message numerus="yes">
         <source>axis %1: a compensation table of %Ln points installed, not yet enabled</source>
         <comment>device.why.comp_installed_table</comment>
@@ -51,7 +51,7 @@
     </message>
 </context>
 <context>
-    <name>words::RecipeWords</name>
+    <name>ui::words::RecipeWords</name>
     <message numerus="yes">
         <source>running %1: %Ln operations, about %2; log %3</source>
         <comment>recipe.run.started</comment>
@@ -70,7 +70,7 @@
     </message>
 </context>
 <context>
-    <name>words::ScanWords</name>
+    <name>ui::words::ScanWords</name>
     <message numerus="yes">
         <source>a polygon needs at least 3 vertices (got %Ln)</source>
         <comment>scan.region.too_few_vertices</comment>
@@ -81,7 +81,7 @@
     </message>
 </context>
 <context>
-    <name>words::TuningWords</name>
+    <name>ui::words::TuningWords</name>
     <message numerus="yes">
         <source>no Kp with a sustained oscillation after %Ln trials</source>
         <comment>tuning.ultimate.no_sustained</comment>

@@ -108,7 +108,7 @@ Skip counts the well as done; Do again repeats it in full.</source>
     </message>
 </context>
 <context>
-    <name>api</name>
+    <name>app::api</name>
     <message>
         <source>expected an array of numbers, got %1</source>
         <translation>应为数字数组，收到 %1</translation>
@@ -311,7 +311,7 @@ Skip counts the well as done; Do again repeats it in full.</source>
     </message>
 </context>
 <context>
-    <name>api::ApiClient</name>
+    <name>app::api::ApiClient</name>
     <message>
         <source>pid %1</source>
         <translation>进程号 %1</translation>
@@ -338,7 +338,7 @@ Skip counts the well as done; Do again repeats it in full.</source>
     </message>
 </context>
 <context>
-    <name>api::ApiServer</name>
+    <name>app::api::ApiServer</name>
     <message>
         <source>cannot make the folder %1 for the API socket</source>
         <translation>无法为接口套接字创建文件夹 %1</translation>
@@ -469,7 +469,7 @@ Skip counts the well as done; Do again repeats it in full.</source>
     </message>
 </context>
 <context>
-    <name>api::CommandCall</name>
+    <name>app::api::CommandCall</name>
     <message>
         <source>%1: done</source>
         <translation>%1：完成</translation>
@@ -500,7 +500,7 @@ Skip counts the well as done; Do again repeats it in full.</source>
     </message>
 </context>
 <context>
-    <name>api::Subscriptions</name>
+    <name>app::api::Subscriptions</name>
     <message>
         <source>unknown parameter (parameters: topics)</source>
         <translation>未知参数（参数有：topics）</translation>
@@ -547,7 +547,7 @@ Skip counts the well as done; Do again repeats it in full.</source>
     </message>
 </context>
 <context>
-    <name>api::WebSocketEndpoint</name>
+    <name>app::api::WebSocketEndpoint</name>
     <message>
         <source>the token file %1 can be read by others (chmod 600 it)</source>
         <translation>令牌文件 %1 可被其他用户读取（请对其执行 chmod 600）</translation>
@@ -1061,7 +1061,7 @@ Take control back? The script&apos;s next call is refused and its jogs stop; a j
     </message>
 </context>
 <context>
-    <name>cli</name>
+    <name>app::cli</name>
     <message>
         <source>show this help</source>
         <translation>显示本帮助</translation>
@@ -2610,7 +2610,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     </message>
 </context>
 <context>
-    <name>cli::CliSession</name>
+    <name>app::cli::CliSession</name>
     <message>
         <source>--profile: %1</source>
         <translation>--profile：%1</translation>
@@ -3235,7 +3235,7 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     </message>
 </context>
 <context>
-    <name>report</name>
+    <name>ui::report</name>
     <message>
         <source>Instrument: %1</source>
         <translation>仪器：%1</translation>
@@ -3603,7 +3603,7 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
     </message>
 </context>
 <context>
-    <name>simapp::PtyTransport</name>
+    <name>app::sim::PtyTransport</name>
     <message>
         <source>cannot create a pseudo-terminal: %1</source>
         <translation>无法创建伪终端：%1</translation>
@@ -3614,7 +3614,7 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
     </message>
 </context>
 <context>
-    <name>tele::TelemetryHub</name>
+    <name>dev::tele::TelemetryHub</name>
     <message>
         <source>commanded</source>
         <translation>指令位置</translation>
@@ -8497,7 +8497,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::AccuracyBenchWords</name>
+    <name>ui::words::AccuracyBenchWords</name>
     <message>
         <source>must be a number (not NaN or infinite)</source>
         <translation>必须是数字（不能是 NaN 或无穷大）</translation>
@@ -9060,7 +9060,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::AccuracyWords</name>
+    <name>ui::words::AccuracyWords</name>
     <message>
         <source>must be a number (not NaN or infinite)</source>
         <comment>accuracy.value_not_finite</comment>
@@ -9398,7 +9398,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::CameraWords</name>
+    <name>ui::words::CameraWords</name>
     <message>
         <source>no camera is chosen</source>
         <comment>camera.none</comment>
@@ -9466,7 +9466,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::CapabilityWords</name>
+    <name>ui::words::CapabilityWords</name>
     <message>
         <source>homing switches</source>
         <translation>零位开关</translation>
@@ -9581,7 +9581,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::DeviceWords</name>
+    <name>ui::words::DeviceWords</name>
     <message>
         <source>%1 not sent: the instrument is not connected</source>
         <comment>request.not_sent</comment>
@@ -10284,7 +10284,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::Durations</name>
+    <name>ui::words::Durations</name>
     <message>
         <source>%1 s</source>
         <translation>%1 s</translation>
@@ -10299,7 +10299,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::EventWords</name>
+    <name>ui::words::EventWords</name>
     <message>
         <source>already there: nothing moved</source>
         <comment>device.why.already_there</comment>
@@ -10496,7 +10496,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::FileWords</name>
+    <name>ui::words::FileWords</name>
     <message>
         <source>warning: %1</source>
         <translation>警告：%1</translation>
@@ -10903,7 +10903,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::GrblBackendWords</name>
+    <name>ui::words::GrblBackendWords</name>
     <message>
         <source>no answer from %1 within %2: check power, cable and baud rate (GRBL boards usually run at 115200 Bd)</source>
         <comment>grbl.connect.no_answer</comment>
@@ -11246,7 +11246,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::GrblWords</name>
+    <name>ui::words::GrblWords</name>
     <message>
         <source>error %1: %2 (answering &quot;%3&quot;)</source>
         <comment>grbl.error.worded</comment>
@@ -11409,7 +11409,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::IdentityWords</name>
+    <name>ui::words::IdentityWords</name>
     <message>
         <source>BenchPilot analyzer manipulator (simulated)</source>
         <translation>BenchPilot 分析仪机械手（模拟）</translation>
@@ -11420,7 +11420,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::PatternWords</name>
+    <name>ui::words::PatternWords</name>
     <message>
         <source>must be a number</source>
         <comment>pattern.not_a_number</comment>
@@ -11628,7 +11628,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::PlateWords</name>
+    <name>ui::words::PlateWords</name>
     <message>
         <source>must not be empty</source>
         <comment>plate.empty</comment>
@@ -11876,7 +11876,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::ProfileWords</name>
+    <name>ui::words::ProfileWords</name>
     <message>
         <source>%1 = %2 must be finite</source>
         <comment>profile.not_finite</comment>
@@ -11954,7 +11954,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::RecipeWords</name>
+    <name>ui::words::RecipeWords</name>
     <message>
         <source>a recipe has at most %1 steps (got %2)</source>
         <comment>recipe.too_many_steps</comment>
@@ -12566,7 +12566,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::RefusalWords</name>
+    <name>ui::words::RefusalWords</name>
     <message>
         <source>the device does not know this request (type %1)</source>
         <comment>device.refused.unknown_command</comment>
@@ -12684,7 +12684,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::ScanWords</name>
+    <name>ui::words::ScanWords</name>
     <message>
         <source>must be from %1 to %2 (got %3)</source>
         <comment>scan.out_of_range</comment>
@@ -13019,7 +13019,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::ShippedNames</name>
+    <name>ui::words::ShippedNames</name>
     <message>
         <source>back</source>
         <translation>后侧</translation>
@@ -13062,7 +13062,7 @@ A loop this different may oscillate or run away. Apply them?</source>
     </message>
 </context>
 <context>
-    <name>words::TuningWords</name>
+    <name>ui::words::TuningWords</name>
     <message>
         <source>%1 is %2: a gain must be a finite number</source>
         <comment>tuning.gain_not_finite</comment>

@@ -106,11 +106,11 @@ BENCHMARK(BM_FitOrders1To5At41Points)->Unit(benchmark::kMicrosecond);
 
 void BM_ReadAndAnalyzeReadingsCsv(benchmark::State& state)
 {
-    const std::string csv = accuracyfiles::readingsToCsv(readings());
+    const std::string csv = dev::files::accuracy::readingsToCsv(readings());
     double cpuMs = 0;
     for (auto _ : state) {
         const double c0 = threadCpuMs();
-        const auto a = accuracyfiles::analyzeReadingsCsv(csv, "bench.csv");
+        const auto a = dev::files::accuracy::analyzeReadingsCsv(csv, "bench.csv");
         cpuMs += threadCpuMs() - c0;
         benchmark::DoNotOptimize(a.evaluation.figures.aMm);
     }

@@ -68,7 +68,7 @@ double threadCpuMs()
 /// The GUI's side: both simulated instruments behind proxies, the hub, the API server.
 struct Bench {
     explicit Bench(const QString& socketPath)
-        : analyzerLink(proto::DeviceKind::Analyzer, 115200), stageLink(proto::DeviceKind::Stage, 115200)
+        : analyzerLink(dev::proto::DeviceKind::Analyzer, 115200), stageLink(dev::proto::DeviceKind::Stage, 115200)
     {
         analyzer = new dev::BenchPilotClient;
         analyzerProxy.setBackend(analyzer);
@@ -78,8 +78,8 @@ struct Bench {
         stage->setTransport(stageLink.hostEnd());
         hub.addInstrument(0, QStringLiteral("Analyzer"), &analyzerProxy);
         hub.addInstrument(1, QStringLiteral("Stage"), &stageProxy);
-        server = std::make_unique<api::ApiServer>(
-            QVector<api::ServedInstrument>{{QStringLiteral("analyzer"), &analyzerProxy, 0}, {QStringLiteral("stage"), &stageProxy, 1}}, &hub);
+        server = std::make_unique<app::api::ApiServer>(
+            QVector<app::api::ServedInstrument>{{QStringLiteral("analyzer"), &analyzerProxy, 0}, {QStringLiteral("stage"), &stageProxy, 1}}, &hub);
         QString error;
         if (!server->listen(socketPath, &error))
             qFatal("bench_api: %s", qPrintable(error));
@@ -100,8 +100,8 @@ struct Bench {
     dev::InstrumentProxy analyzerProxy, stageProxy;
     dev::BenchPilotClient* analyzer;
     dev::BenchPilotClient* stage;
-    tele::TelemetryHub hub;
-    std::unique_ptr<api::ApiServer> server;
+    dev::tele::TelemetryHub hub;
+    std::unique_ptr<app::api::ApiServer> server;
 };
 
 /// A client on a plain Unix socket (no Qt): what a script's process does.
@@ -218,7 +218,7 @@ constexpr int kChannels = 8;
 
 /// The Plots screen's stack over 8 stores of a 10 s window at 10 kHz (as bench_plots, short).
 struct Plots {
-    std::vector<std::unique_ptr<tele::ChannelStore>> stores;
+    std::vector<std::unique_ptr<dev::tele::ChannelStore>> stores;
     ui::StorePlotSource source;
     std::unique_ptr<ui::PlotStack> stack;
     double nowS = 0;
@@ -227,17 +227,17 @@ struct Plots {
     {
         const double windowS = 10, period = 1.0 / kRateHz;
         const auto n = static_cast<std::size_t>(windowS * kRateHz);
-        const proto::ChannelKind kinds[4] = {proto::ChannelKind::Commanded, proto::ChannelKind::Measured,
-                                             proto::ChannelKind::FollowingError, proto::ChannelKind::ControllerOutput};
+        const dev::proto::ChannelKind kinds[4] = {dev::proto::ChannelKind::Commanded, dev::proto::ChannelKind::Measured,
+                                             dev::proto::ChannelKind::FollowingError, dev::proto::ChannelKind::ControllerOutput};
         std::mt19937 rng(4242);
         std::normal_distribution<float> noise(0.f, 1.f);
         std::vector<float> values(n);
         for (int c = 0; c < kChannels; ++c) {
-            auto store = std::make_unique<tele::ChannelStore>(2 * n);
+            auto store = std::make_unique<dev::tele::ChannelStore>(2 * n);
             for (std::size_t i = 0; i < n; ++i)
                 values[i] = float(40 * std::sin(double(i) * period * 0.7 * (c + 1)) + noise(rng));
             store->appendRun(0, period, values.data(), n);
-            const tele::ChannelKey key{1, proto::ChannelRef{std::uint8_t(c % 2), kinds[c / 2]}};
+            const dev::tele::ChannelKey key{1, dev::proto::ChannelRef{std::uint8_t(c % 2), kinds[c / 2]}};
             source.add(key, store.get(), QStringLiteral("Stage %1").arg(c), QStringLiteral("mm"));
             stores.push_back(std::move(store));
         }
@@ -246,7 +246,7 @@ struct Plots {
         for (int p = 1; p < kChannels / 2; ++p)
             stack->addPanel();
         for (int c = 0; c < kChannels; ++c)
-            stack->addChannel(c / 2, tele::ChannelKey{1, proto::ChannelRef{std::uint8_t(c % 2), kinds[c / 2]}});
+            stack->addChannel(c / 2, dev::tele::ChannelKey{1, dev::proto::ChannelRef{std::uint8_t(c % 2), kinds[c / 2]}});
         stack->resize(1600, 900);
         stack->show();
         QApplication::processEvents();

@@ -62,7 +62,7 @@ void tileBeyondMoveAndSettle(benchmark::State& state)
     for (auto _ : state) {
         const cam::Frame f = cam::renderSimFrame(specimen(cam::SpecimenKind::Slide), cam::CameraGeometry{}, cam::SimOptics{}, x, 40, 10, 1);
         std::string sha;
-        msg::Message error;
+        motion::msg::Message error;
         if (!cam::writeTileTiff(path, f, {}, &sha, &error))
             state.SkipWithError("cannot write the tile");
         x += 1.1;

@@ -40,26 +40,26 @@ struct RunResult {
     bool done = false;
 };
 
-void runTicks(sim::SimMachine& m, double seconds)
+void runTicks(dev::sim::SimMachine& m, double seconds)
 {
-    for (long k = 0, n = std::lround(seconds / sim::SimMachine::kTickS); k < n; ++k) {
+    for (long k = 0, n = std::lround(seconds / dev::sim::SimMachine::kTickS); k < n; ++k) {
         m.tick();
         m.takeEvents();
     }
 }
 
-std::unique_ptr<sim::SimMachine> homed(const sim::MachineConfig& cfg)
+std::unique_ptr<dev::sim::SimMachine> homed(const dev::sim::MachineConfig& cfg)
 {
-    auto m = std::make_unique<sim::SimMachine>(cfg);
+    auto m = std::make_unique<dev::sim::SimMachine>(cfg);
     m->home(0);
     runTicks(*m, 40);  // every axis homed and settled
     return m;
 }
 
 /// Moves to the path's start, then streams it through the queue and judges the measured XY.
-RunResult runPath(sim::SimMachine& m, const std::vector<Segment>& path)
+RunResult runPath(dev::sim::SimMachine& m, const std::vector<Segment>& path)
 {
-    proto::MoveRequest mv;
+    dev::proto::MoveRequest mv;
     mv.axisMask = 0b11;
     mv.targets = {static_cast<std::int32_t>(std::lround(path.front().start.x * 1e6)),
                   static_cast<std::int32_t>(std::lround(path.front().start.y * 1e6))};
@@ -76,9 +76,9 @@ RunResult runPath(sim::SimMachine& m, const std::vector<Segment>& path)
             const auto st = m.paths().status();
             const std::size_t n = std::min<std::size_t>(st.freeSlots, path.size() - sent);
             if (n > 0) {
-                proto::PathAppendRequest a;
+                dev::proto::PathAppendRequest a;
                 a.firstIndex = static_cast<std::uint32_t>(sent);
-                a.flags = static_cast<std::uint8_t>(proto::PathAppendStart | (sent + n == path.size() ? proto::PathAppendLast : 0));
+                a.flags = static_cast<std::uint8_t>(dev::proto::PathAppendStart | (sent + n == path.size() ? dev::proto::PathAppendLast : 0));
                 for (std::size_t k = sent; k < sent + n; ++k)
                     a.segments.push_back(dev::toWire(path[k]));
                 if (!m.paths().append(a))
@@ -87,17 +87,17 @@ RunResult runPath(sim::SimMachine& m, const std::vector<Segment>& path)
         }
         m.tick();
         for (const auto& e : m.takeEvents())
-            out.underruns += e.kind == proto::EventKind::PathUnderrun;
+            out.underruns += e.kind == dev::proto::EventKind::PathUnderrun;
         const Vec2 meas{m.measuredLogical(0), m.measuredLogical(1)};
         every.add(meas);
         if (tick % 40 == 0)
             sampled.add(meas);
         const auto st = m.paths().status();
-        if (st.executingIndex >= 1 && st.executingIndex + 1 < path.size() && st.state == proto::PathState::Running)
+        if (st.executingIndex >= 1 && st.executingIndex + 1 < path.size() && st.state == dev::proto::PathState::Running)
             out.minSpeedInsideMmS = std::min(out.minSpeedInsideMmS, m.paths().speedMmS());
         ++tick;
-        if (st.state == proto::PathState::Done || st.state == proto::PathState::Aborted) {
-            out.done = st.state == proto::PathState::Done;
+        if (st.state == dev::proto::PathState::Done || st.state == dev::proto::PathState::Aborted) {
+            out.done = st.state == dev::proto::PathState::Done;
             break;
         }
     }
@@ -108,8 +108,8 @@ RunResult runPath(sim::SimMachine& m, const std::vector<Segment>& path)
 }
 
 /// Runs `path` once per iteration on a freshly homed machine (homing not timed); `tweak` sees the machine first.
-RunResult runHomed(benchmark::State& state, const sim::MachineConfig& cfg, const std::vector<Segment>& path,
-                   const std::function<void(sim::SimMachine&)>& tweak = {})
+RunResult runHomed(benchmark::State& state, const dev::sim::MachineConfig& cfg, const std::vector<Segment>& path,
+                   const std::function<void(dev::sim::SimMachine&)>& tweak = {})
 {
     RunResult r;
     for (auto _ : state) {
@@ -139,7 +139,7 @@ void BM_StageCircle10mmAt2mmS(benchmark::State& state)
     motion::plans::Pattern p;  // the defaults: a 10 mm circle at 2 mm/s round (50, 50)
     p.shape = motion::plans::PatternShape::Circle;
     p.feedMmS = 2;
-    const RunResult r = runHomed(state, sim::stageConfig(), motion::plans::plan(p));
+    const RunResult r = runHomed(state, dev::sim::stageConfig(), motion::plans::plan(p));
     report(state, r, 1e3, "um");
 }
 BENCHMARK(BM_StageCircle10mmAt2mmS)->Unit(benchmark::kMillisecond)->Iterations(1);
@@ -153,7 +153,7 @@ void BM_AnalyzerLineSeed000_50mm(benchmark::State& state)
     p.feedMmS = 50;
     const auto path = motion::plans::plan(p);
     const bool coupled = state.range(0) != 0;
-    const RunResult r = runHomed(state, sim::analyzerConfig(), path, [&](sim::SimMachine& m) {
+    const RunResult r = runHomed(state, dev::sim::analyzerConfig(), path, [&](dev::sim::SimMachine& m) {
         if (!coupled)
             m.paths().setCrossCouplingGain(0);
     });
@@ -176,7 +176,7 @@ void BM_ShallowJunctionsNeverStop(benchmark::State& state)
     for (std::size_t k = 1; k < path.size(); ++k)
         maxDeflectionDeg = std::max(maxDeflectionDeg, motion::path::deflectionRad(motion::path::endTangent(path[k - 1]),
                                                                                    motion::path::startTangent(path[k])) * 180 / 3.14159265358979);
-    const RunResult r = runHomed(state, sim::stageConfig(), path);
+    const RunResult r = runHomed(state, dev::sim::stageConfig(), path);
     report(state, r, 1e3, "um");
     state.counters["segments"] = static_cast<double>(path.size());
     state.counters["largest_junction_deg"] = maxDeflectionDeg;

@@ -40,41 +40,41 @@ void cpuPerIteration(benchmark::State& state, const char* name, double startMs)
     state.counters[name] = state.iterations() ? (threadCpuMs() - startMs) / static_cast<double>(state.iterations()) : 0.0;
 }
 
-plates::PlanContext context()
+motion::plates::PlanContext context()
 {
-    plates::PlanContext c;
-    c.deck = platefiles::builtinDeck();
-    for (auto& lw : plates::builtinLabware())
+    motion::plates::PlanContext c;
+    c.deck = dev::files::plates::builtinDeck();
+    for (auto& lw : motion::plates::builtinLabware())
         c.labware[lw.id] = lw;
     return c;
 }
 
 /// Wash, fill all 384 wells from a reservoir well (eight rounds of 48 through the
 /// 1000 µL syringe), mix each, wash, then sample each: 1 160 ops.
-plates::Recipe recipe384()
+motion::plates::Recipe recipe384()
 {
-    plates::Recipe r;
+    motion::plates::Recipe r;
     r.name = "384 fill, mix and sample";
     r.plates = {{"assay", "1", "sbs-384", 55, 70}, {"reagents", "2", "sbs-12", 50, 70}};
-    plates::Step wash;
-    wash.type = plates::StepType::Wash;
+    motion::plates::Step wash;
+    wash.type = motion::plates::StepType::Wash;
     wash.station = "wash";
     wash.volumeUl = 200;
     wash.cycles = 2;
-    plates::Step fill;
-    fill.type = plates::StepType::Dispense;
+    motion::plates::Step fill;
+    fill.type = motion::plates::StepType::Dispense;
     fill.plate = "assay";
     fill.wells = {"all"};
     fill.volumeUl = 20;
     fill.source = {"reagents", "A1", ""};
-    plates::Step mix;
-    mix.type = plates::StepType::Mix;
+    motion::plates::Step mix;
+    mix.type = motion::plates::StepType::Mix;
     mix.plate = "assay";
     mix.wells = {"A1:P24"};
     mix.volumeUl = 10;
     mix.cycles = 3;
-    plates::Step sample;
-    sample.type = plates::StepType::Aspirate;
+    motion::plates::Step sample;
+    sample.type = motion::plates::StepType::Aspirate;
     sample.plate = "assay";
     sample.wells = {"A1:P24"};
     sample.volumeUl = 2;
@@ -84,15 +84,15 @@ plates::Recipe recipe384()
 
 void BM_PlanRecipe384(benchmark::State& state)
 {
-    const plates::PlanContext c = context();
-    const plates::Recipe r = recipe384();
+    const motion::plates::PlanContext c = context();
+    const motion::plates::Recipe r = recipe384();
     std::size_t ops = 0;
     const double t0 = threadCpuMs();
     for (auto _ : state) {
-        const plates::RecipePlan p = plates::planRecipe(r, c);
+        const motion::plates::RecipePlan p = motion::plates::planRecipe(r, c);
         ops = p.ops.size();
         if (!p.ok())
-            state.SkipWithError(msg::debugString(p.problems.front().message).c_str());
+            state.SkipWithError(motion::msg::debugString(p.problems.front().message).c_str());
         benchmark::DoNotOptimize(p.totalTimeS);
     }
     state.counters["ops"] = static_cast<double>(ops);
@@ -103,13 +103,13 @@ BENCHMARK(BM_PlanRecipe384)->Unit(benchmark::kMillisecond);
 
 void BM_ReadAndValidateRecipe384(benchmark::State& state)
 {
-    const plates::PlanContext c = context();
-    const std::string text = platefiles::writeRecipe(recipe384());
+    const motion::plates::PlanContext c = context();
+    const std::string text = dev::files::plates::writeRecipe(recipe384());
     const double t0 = threadCpuMs();
     for (auto _ : state) {
-        platefiles::RecipeRead r = platefiles::parseRecipe(text);
-        const plates::RecipePlan p = plates::planRecipe(*r.recipe, c);
-        platefiles::placeProblems(r, p.problems);
+        dev::files::plates::RecipeRead r = dev::files::plates::parseRecipe(text);
+        const motion::plates::RecipePlan p = motion::plates::planRecipe(*r.recipe, c);
+        dev::files::plates::placeProblems(r, p.problems);
         benchmark::DoNotOptimize(r.problems.size());
     }
     state.counters["bytes"] = static_cast<double>(text.size());
@@ -130,7 +130,7 @@ void BM_ReadRunLog(benchmark::State& state)
         text += R"({"event":"done","op":)" + op + R"(,"p_ul":0,"time":"2025-01-14T09:12:02.000Z"})" "\n";
     }
     for (auto _ : state) {
-        const platefiles::RunLogState st = platefiles::readRunLog(text);
+        const dev::files::plates::RunLogState st = dev::files::plates::readRunLog(text);
         if (st.doneCount() != ops)
             state.SkipWithError("the log did not read back");
         benchmark::DoNotOptimize(st.firstOpenOp());
@@ -141,16 +141,16 @@ BENCHMARK(BM_ReadRunLog)->Arg(96)->Arg(1160)->Unit(benchmark::kMicrosecond);
 
 void BM_CalibrationFit(benchmark::State& state)
 {
-    const auto model = state.range(0) ? plates::FitModel::ScaledAxes : plates::FitModel::Similarity;
-    auto pts = plates::teachWells(*plates::findBuiltinLabware("sbs-96"));
-    const plates::PlateTransform truth = plates::PlateTransform::make(8.3, 7.9, 0.4, 1.0003, 0.9998);
+    const auto model = state.range(0) ? motion::plates::FitModel::ScaledAxes : motion::plates::FitModel::Similarity;
+    auto pts = motion::plates::teachWells(*motion::plates::findBuiltinLabware("sbs-96"));
+    const motion::plates::PlateTransform truth = motion::plates::PlateTransform::make(8.3, 7.9, 0.4, 1.0003, 0.9998);
     for (auto& p : pts)
         p.machineMm = truth.apply(p.plateMm);
     pts[1].machineMm.x += 0.03;
-    msg::Message error;
+    motion::msg::Message error;
     for (auto _ : state)
-        benchmark::DoNotOptimize(plates::fitCalibration(pts, model, &error));
-    state.SetLabel(plates::fitModelName(model));
+        benchmark::DoNotOptimize(motion::plates::fitCalibration(pts, model, &error));
+    state.SetLabel(motion::plates::fitModelName(model));
     state.counters["fits_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_CalibrationFit)->Arg(0)->Arg(1);
@@ -160,11 +160,11 @@ void BM_PaintPlateMap384(benchmark::State& state)
 {
     ui::PlateMap map;
     map.resize(900, 620);
-    map.setLabware(*plates::findBuiltinLabware("sbs-384"), QStringLiteral("assay in slot 1"));
+    map.setLabware(*motion::plates::findBuiltinLabware("sbs-384"), QStringLiteral("assay in slot 1"));
     QMap<QString, ui::PlateMap::WellState> states;
     int k = 0;
     for (const auto& w : map.labware().wells)
-        states[QString::fromStdString(plates::wellName(w.id))] = static_cast<ui::PlateMap::WellState>(1 + (k++ % 4));
+        states[QString::fromStdString(motion::plates::wellName(w.id))] = static_cast<ui::PlateMap::WellState>(1 + (k++ % 4));
     map.setWellStates(states);
     QImage img(map.size(), QImage::Format_ARGB32_Premultiplied);
     const double t0 = threadCpuMs();

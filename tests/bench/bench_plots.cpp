@@ -45,7 +45,7 @@ double windowS() { return shortMode() ? 10.0 : 600.0; }
 
 /// The stores and the stack, built once (filling 48 M samples takes a few seconds).
 struct Scene {
-    std::vector<std::unique_ptr<tele::ChannelStore>> stores;
+    std::vector<std::unique_ptr<dev::tele::ChannelStore>> stores;
     ui::StorePlotSource source;
     std::unique_ptr<ui::PlotStack> stack;
     double nowS = 0;
@@ -57,30 +57,30 @@ struct Scene {
         const double period = 1.0 / kRateHz;
         // Stage X/Y commanded, measured, following error, controller output: moves
         // (slow ramps), a servo's noise, and a fast ripple, so every column differs.
-        const proto::ChannelKind kinds[4] = {proto::ChannelKind::Commanded, proto::ChannelKind::Measured,
-                                             proto::ChannelKind::FollowingError, proto::ChannelKind::ControllerOutput};
+        const dev::proto::ChannelKind kinds[4] = {dev::proto::ChannelKind::Commanded, dev::proto::ChannelKind::Measured,
+                                             dev::proto::ChannelKind::FollowingError, dev::proto::ChannelKind::ControllerOutput};
         std::normal_distribution<float> noise(0.f, 1.f);
         std::vector<float> values(65536);
         for (int c = 0; c < kChannels; ++c) {
-            auto store = std::make_unique<tele::ChannelStore>(n);
+            auto store = std::make_unique<dev::tele::ChannelStore>(n);
             const int axis = c % 2;
-            const proto::ChannelKind kind = kinds[c / 2];
+            const dev::proto::ChannelKind kind = kinds[c / 2];
             for (std::size_t done = 0; done < n;) {
                 const std::size_t chunk = std::min(values.size(), n - done);
                 for (std::size_t i = 0; i < chunk; ++i) {
                     const double t = double(done + i) * period;
                     const double path = 40 * std::sin(t * 0.05 * (axis + 1)) + 10 * std::sin(t * 0.7);
                     switch (kind) {
-                    case proto::ChannelKind::Commanded: values[i] = float(path); break;
-                    case proto::ChannelKind::Measured: values[i] = float(path + 0.001 * noise(rng)); break;
-                    case proto::ChannelKind::FollowingError: values[i] = float(2 * std::sin(t * 31) + 0.3 * noise(rng)); break;
+                    case dev::proto::ChannelKind::Commanded: values[i] = float(path); break;
+                    case dev::proto::ChannelKind::Measured: values[i] = float(path + 0.001 * noise(rng)); break;
+                    case dev::proto::ChannelKind::FollowingError: values[i] = float(2 * std::sin(t * 31) + 0.3 * noise(rng)); break;
                     default: values[i] = float(800 * std::cos(t * 0.7) + 50 * noise(rng)); break;
                     }
                 }
                 store->appendRun(double(done) * period, period, values.data(), chunk);
                 done += chunk;
             }
-            const tele::ChannelKey key{1, proto::ChannelRef{std::uint8_t(axis), kind}};
+            const dev::tele::ChannelKey key{1, dev::proto::ChannelRef{std::uint8_t(axis), kind}};
             source.add(key, store.get(), QStringLiteral("Stage %1 %2").arg(QChar(axis ? 'Y' : 'X')).arg(int(kind)), QStringLiteral("mm"));
             stores.push_back(std::move(store));
         }
@@ -89,7 +89,7 @@ struct Scene {
         for (int p = 1; p < kChannels / 2; ++p)
             stack->addPanel();
         for (int c = 0; c < kChannels; ++c)
-            stack->addChannel(c / 2, tele::ChannelKey{1, proto::ChannelRef{std::uint8_t(c % 2), kinds[c / 2]}});
+            stack->addChannel(c / 2, dev::tele::ChannelKey{1, dev::proto::ChannelRef{std::uint8_t(c % 2), kinds[c / 2]}});
         stack->resize(kWidth, kHeight);
         stack->show();
         QApplication::processEvents();
@@ -193,7 +193,7 @@ void BM_DecimateOnly(benchmark::State& state)
 {
     Scene& s = scene();
     const int columns = s.stack->columns();
-    std::vector<tele::MinMax> out(static_cast<std::size_t>(columns));
+    std::vector<dev::tele::MinMax> out(static_cast<std::size_t>(columns));
     std::vector<double> ms;
     QElapsedTimer t;
     double cpu = 0;

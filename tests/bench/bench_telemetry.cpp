@@ -74,9 +74,9 @@ void spin(int ms)
         QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
 }
 
-using proto::ChannelKind;
-using proto::ChannelRef;
-using tele::ChannelKey;
+using dev::proto::ChannelKind;
+using dev::proto::ChannelRef;
+using dev::tele::ChannelKey;
 
 /// The XY plot's channels: commanded and measured of both stage axes.
 const std::vector<ChannelRef> kXy{{0, ChannelKind::Commanded}, {0, ChannelKind::Measured},
@@ -94,17 +94,17 @@ QVector<ChannelKey> keys(int instrument, const std::vector<ChannelRef>& refs)
 /// wall time (the simulator then runs in real time); unpaced: bytes arrive at once and
 /// the device's clock moves only by advance(), so minutes take seconds.
 struct Rig {
-    Rig(qint32 baud, bool paced) : link(proto::DeviceKind::Stage, paced ? baud : 0)
+    Rig(qint32 baud, bool paced) : link(dev::proto::DeviceKind::Stage, paced ? baud : 0)
     {
         link.host().firmware().setLinkBaud(static_cast<std::uint32_t>(baud));
         if (!paced)
             link.host().setManualClock(true);
         client.setTransport(link.hostEnd());
         hub.addInstrument(1, QStringLiteral("Stage"), &client);
-        QObject::connect(&hub, &tele::TelemetryHub::subscriptionChanged, &hub,
-                         [this](int, int rate, const msg::Message& n) {
+        QObject::connect(&hub, &dev::tele::TelemetryHub::subscriptionChanged, &hub,
+                         [this](int, int rate, const motion::msg::Message& n) {
                              rateHz = rate;
-                             note = QString::fromStdString(msg::debugString(n));
+                             note = QString::fromStdString(motion::msg::debugString(n));
                          });
     }
     ~Rig() { client.setTransport(nullptr); }
@@ -121,7 +121,7 @@ struct Rig {
     }
     dev::SimulatedLink link;
     dev::BenchPilotClient client;
-    tele::TelemetryHub hub;
+    dev::tele::TelemetryHub hub;
     int rateHz = 0;
     QString note;
 };
@@ -139,7 +139,7 @@ struct BatchMaker {
         for (auto& v : b.values)
             v = d(rng);
     }
-    const proto::TelemetryBatch& next()
+    const dev::proto::TelemetryBatch& next()
     {
         b.firstSampleIndex = index;
         b.firstSampleTimeUs = timeUs;
@@ -148,7 +148,7 @@ struct BatchMaker {
         return b;
     }
     std::size_t valuesPerBatch() const { return b.values.size(); }
-    proto::TelemetryBatch b;
+    dev::proto::TelemetryBatch b;
     std::uint32_t index = 0;
     std::uint64_t timeUs = 1'000'000;
 };
@@ -159,7 +159,7 @@ struct BatchMaker {
 void BM_StoreIngest(benchmark::State& state)
 {
     const std::size_t capacity = shortMode() ? 200'000 : 12'000'000;
-    tele::ChannelStore store(capacity);
+    dev::tele::ChannelStore store(capacity);
     std::vector<float> batch(124 * 4);
     for (std::size_t i = 0; i < batch.size(); ++i)
         batch[i] = std::sin(float(i) * 0.01f);
@@ -270,9 +270,9 @@ void BM_HubMemoryOneHour(benchmark::State& state)
         rig.hub.setWindowS(windowS);
         rig.hub.setWanted(QStringLiteral("bench"), keys(1, kXy), 100);
         if (record) {
-            msg::Message error;
+            motion::msg::Message error;
             if (!rig.hub.startRecording(QStringLiteral("/dev/null"), keys(1, kXy), &error)) {
-                state.SkipWithError(msg::debugString(error).c_str());
+                state.SkipWithError(motion::msg::debugString(error).c_str());
                 return;
             }
         }
@@ -317,11 +317,11 @@ BENCHMARK(BM_HubMemoryOneHour)->Arg(0)->Arg(1)->Iterations(1)->Unit(benchmark::k
 
 /// A 10-minute window at 10 kHz (6 M points; short mode 600 k) written past the
 /// ring's end once, so the range crosses the seam like a live store's does.
-const tele::ChannelStore& bigStore()
+const dev::tele::ChannelStore& bigStore()
 {
-    static const std::unique_ptr<tele::ChannelStore> store = [] {
+    static const std::unique_ptr<dev::tele::ChannelStore> store = [] {
         const std::size_t n = shortMode() ? 600'000 : 6'000'000;
-        auto s = std::make_unique<tele::ChannelStore>(n);
+        auto s = std::make_unique<dev::tele::ChannelStore>(n);
         std::mt19937 rng(11);
         std::normal_distribution<float> noise(0, 0.002f);
         std::vector<float> batch(1000);
@@ -341,9 +341,9 @@ const tele::ChannelStore& bigStore()
 
 void BM_Decimate(benchmark::State& state)
 {
-    const tele::ChannelStore& s = bigStore();
+    const dev::tele::ChannelStore& s = bigStore();
     const int columns = 1600;
-    std::vector<tele::MinMax> out(columns);
+    std::vector<dev::tele::MinMax> out(columns);
     const double first = s.firstTime(), last = s.lastTime();
     const bool zoom = state.range(0) != 0;
     std::mt19937 rng(3);
@@ -389,7 +389,7 @@ void BM_LinkPayloadShare(benchmark::State& state)
         QObject::connect(rig.link.hostEnd(), &dev::Transport::bytesReceived, &rig.hub,
                          [&wire](const QByteArray& b) { wire += b.size(); });
         QObject::connect(&rig.client, &dev::BenchPilotClient::telemetryReceived, &rig.hub,
-                         [&payload](const proto::TelemetryBatch& b) { payload += qint64(b.values.size()) * 4; });
+                         [&payload](const dev::proto::TelemetryBatch& b) { payload += qint64(b.values.size()) * 4; });
         const qint64 carried0 = rig.link.pair().bytesCarried(dev::LoopbackPair::B);
         QElapsedTimer t;
         t.start();

@@ -25,7 +25,7 @@
 #include <set>
 
 using namespace itest;
-using jobs::ScanRunner;
+using dev::jobs::ScanRunner;
 using motion::scan::ScanPlan;
 namespace cam = dev::camera;
 
@@ -53,9 +53,9 @@ ScanPlan twelveTiles()
 }
 
 struct CameraScan {
-    CameraScan() : session(proto::DeviceKind::Stage, kUnpaced)
+    CameraScan() : session(dev::proto::DeviceKind::Stage, kUnpaced)
     {
-        sim::SimMachine* m = &session.link.machine();
+        dev::sim::SimMachine* m = &session.link.machine();
         cam::SimCameraSettings s;
         s.seed = 11;
         simCamera = std::make_unique<cam::SimCamera>(
@@ -91,15 +91,15 @@ bool waitState(ScanRunner& r, ScanRunner::State s, int ms = 60000)
 
 struct LoggedTile {
     motion::PositionRecord record;
-    scanfile::TileImageRef image;
+    dev::files::scan::TileImageRef image;
 };
 
 std::vector<LoggedTile> readLog(const QString& path)
 {
     std::string text;
-    msg::Message error;
-    EXPECT_TRUE(files::readText(path, &text, &error)) << error;
-    const auto log = scanfile::parseRunLog(text);
+    motion::msg::Message error;
+    EXPECT_TRUE(dev::files::readText(path, &text, &error)) << error;
+    const auto log = dev::files::scan::parseRunLog(text);
     EXPECT_TRUE(log.log);
     std::vector<LoggedTile> out;
     if (log.log)
@@ -111,7 +111,7 @@ std::vector<LoggedTile> readLog(const QString& path)
 cam::Frame readFrame(const QString& folder, const std::string& file)
 {
     cam::Frame f;
-    msg::Message error;
+    motion::msg::Message error;
     EXPECT_TRUE(cam::readTiff(QDir(folder).filePath(QString::fromStdString(file)).toStdString(), &f, nullptr, &error)) << error;
     return f;
 }
@@ -157,14 +157,14 @@ TEST(CameraScan, TwelveTilesAgreeWithTheirMeasuredPositionsAndAWrongGeometryShow
     ASSERT_TRUE(s.ready()) << s.session.linkErrors.join(QLatin1Char(' ')).toStdString();
     auto r = s.runner();
     const ScanPlan plan = twelveTiles();
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(r->prepare(plan, s.dir.path(), false, &error)) << error;
     ASSERT_EQ(r->totalTiles(), 12);
-    std::vector<msg::Message> problems;
-    QObject::connect(r.get(), &ScanRunner::problem, [&](const msg::Message& m) { problems.push_back(m); });
+    std::vector<motion::msg::Message> problems;
+    QObject::connect(r.get(), &ScanRunner::problem, [&](const motion::msg::Message& m) { problems.push_back(m); });
     ASSERT_TRUE(r->start(&error)) << error;
-    ASSERT_TRUE(waitState(*r, ScanRunner::State::Finished)) << (problems.empty() ? msg::Message{} : problems.back());
-    for (const msg::Message& m : problems)
+    ASSERT_TRUE(waitState(*r, ScanRunner::State::Finished)) << (problems.empty() ? motion::msg::Message{} : problems.back());
+    for (const motion::msg::Message& m : problems)
         ADD_FAILURE() << "problem: " << m;
 
     // Every tile has its image, logged with the checksum of the file that is there.
@@ -207,7 +207,7 @@ TEST(CameraScan, ImagesFollowTheTrueWorkPointNotTheGrating)
     // Far from home the simulated stage's pitch error puts the work point tens of µm off the reading.
     ASSERT_FALSE(s.session.call([&](auto cb) { s.session.client.move({{0, 80.0}, {1, 85.0}}, false, 20, cb); }, 30000));
     ASSERT_TRUE(s.session.waitStill(30000));
-    sim::SimMachine& m = s.session.link.machine();
+    dev::sim::SimMachine& m = s.session.link.machine();
     const double workX = m.workPointLogical(0), workY = m.workPointLogical(1);
     const double readX = m.measuredLogical(0), readY = m.measuredLogical(1);
     const double offUm = std::hypot(workX - readX, workY - readY) * 1e3;
@@ -241,7 +241,7 @@ TEST(CameraScan, AKilledRunResumesWithEveryImageWholeAndNoneTakenTwice)
 {
     CameraScan s;
     ASSERT_TRUE(s.ready());
-    msg::Message error;
+    motion::msg::Message error;
     {
         auto first = s.runner();
         ASSERT_TRUE(first->prepare(twelveTiles(), s.dir.path(), false, &error)) << error;
@@ -251,7 +251,7 @@ TEST(CameraScan, AKilledRunResumesWithEveryImageWholeAndNoneTakenTwice)
     }
     s.session.client.stop(0);
     ASSERT_TRUE(s.session.waitStill());
-    const auto before = readLog(QDir(s.dir.path()).filePath(QLatin1String(scanfile::kRunLogFile)));
+    const auto before = readLog(QDir(s.dir.path()).filePath(QLatin1String(dev::files::scan::kRunLogFile)));
     ASSERT_GE(before.size(), 5u);
     // By hand: one image deleted, one cut short.
     const QString deleted = QDir(s.dir.path()).filePath(QString::fromStdString(before[1].image.file));
@@ -307,9 +307,9 @@ public:
     {
         QTimer::singleShot(0, this, [this, r] {
             if (fail || r.tile >= failFrom) {
-                emit failed(r.id, msg::Problem("", msg::make("camera.command.failed", {msg::verbatim("command", "fake-capture"),
-                                                                                    msg::integer("code", 1, msg::Unit::None),
-                                                                                    msg::verbatim("stderr", "no camera found")})));
+                emit failed(r.id, motion::msg::Problem("", motion::msg::make("camera.command.failed", {motion::msg::verbatim("command", "fake-capture"),
+                                                                                    motion::msg::integer("code", 1, motion::msg::Unit::None),
+                                                                                    motion::msg::verbatim("stderr", "no camera found")})));
                 return;
             }
             cam::Frame f;
@@ -336,15 +336,15 @@ TEST(CameraScan, AFailingCameraStopsTheRunAndKeepsEveryTileTaken)
     FakeCamera fake;
     fake.failFrom = 4;
     auto r = s.runner(&fake);
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(r->prepare(twelveTiles(), s.dir.path(), false, &error)) << error;
-    std::vector<msg::Message> problems;
-    QObject::connect(r.get(), &ScanRunner::problem, [&](const msg::Message& m) { problems.push_back(m); });
+    std::vector<motion::msg::Message> problems;
+    QObject::connect(r.get(), &ScanRunner::problem, [&](const motion::msg::Message& m) { problems.push_back(m); });
     ASSERT_TRUE(r->start(&error)) << error;
     ASSERT_TRUE(waitState(*r, ScanRunner::State::Stopped));
     ASSERT_FALSE(problems.empty());
     EXPECT_EQ(problems.back().id, "scan.run.camera_failed");
-    EXPECT_NE(msg::debugString(problems.back()).find("no camera found"), std::string::npos) << "the command's own words";
+    EXPECT_NE(motion::msg::debugString(problems.back()).find("no camera found"), std::string::npos) << "the command's own words";
     ASSERT_TRUE(waitFor([&] { return s.scanCamera->pendingWrites() == 0; }, 10000));
     EXPECT_EQ(r->takenTiles(), 4);
     EXPECT_EQ(readLog(r->logPath()).size(), 4u) << "the tiles before it are kept";
@@ -359,14 +359,14 @@ TEST(CameraScan, ACameraWhoseSensorIsNotThePlansIsRefusedAtTheFirstTile)
     fake.width = 640;
     fake.height = 480;
     auto r = s.runner(&fake);
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(r->prepare(twelveTiles(), s.dir.path(), false, &error)) << error;
-    std::vector<msg::Message> problems;
-    QObject::connect(r.get(), &ScanRunner::problem, [&](const msg::Message& m) { problems.push_back(m); });
+    std::vector<motion::msg::Message> problems;
+    QObject::connect(r.get(), &ScanRunner::problem, [&](const motion::msg::Message& m) { problems.push_back(m); });
     ASSERT_TRUE(r->start(&error)) << error;
     ASSERT_TRUE(waitState(*r, ScanRunner::State::Stopped));
     ASSERT_FALSE(problems.empty());
-    const std::string text = msg::debugString(problems.back());
+    const std::string text = motion::msg::debugString(problems.back());
     EXPECT_NE(text.find("camera.sensor_mismatch"), std::string::npos) << text;
     EXPECT_NE(text.find("640"), std::string::npos) << text;
     EXPECT_EQ(r->takenTiles(), 0);

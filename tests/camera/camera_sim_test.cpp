@@ -119,7 +119,7 @@ TEST(TileTiff, ATileRoundTripsWithItsPositionAndPixelSize)
     meta.source = "sim";
     const std::string path = QDir(dir.path()).filePath(QStringLiteral("tile_005.tif")).toStdString();
     std::string sha;
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(writeTileTiff(path, f, meta, &sha, &error)) << error;
     EXPECT_EQ(sha, fileSha256(path).value_or(""));
     EXPECT_EQ(sha.size(), 64u);
@@ -152,7 +152,7 @@ TEST(TileTiff, RgbFramesAreWrittenAsRgb)
     f.bitDepth = 8;
     f.pixels = {255, 0, 0, 0, 255, 0, 0, 0, 255, 1, 2, 3, 4, 5, 6, 7, 8, 9};
     const std::string path = QDir(dir.path()).filePath(QStringLiteral("rgb.tif")).toStdString();
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(writeTileTiff(path, f, {}, nullptr, &error)) << error;
     Frame back;
     ASSERT_TRUE(readTiff(path, &back, nullptr, &error)) << error;
@@ -191,8 +191,8 @@ TEST(ScanRunLogImages, ATilesImageAndChecksumRoundTripAndBadOnesAreRefused)
     r.label = "tile_003.tif";
     r.plannedMm = r.commandedMm = r.measuredMm = {1, 2};
     const std::string sha(64, 'a');
-    const std::string text = scanfile::runLogHeader("p", 1, 4) + scanfile::runLogLine(r, {"tile_003.tif", sha});
-    const auto log = scanfile::parseRunLog(text);
+    const std::string text = dev::files::scan::runLogHeader("p", 1, 4) + dev::files::scan::runLogLine(r, {"tile_003.tif", sha});
+    const auto log = dev::files::scan::parseRunLog(text);
     ASSERT_TRUE(log.log);
     ASSERT_EQ(log.log->images.size(), 1u);
     EXPECT_EQ(log.log->images[0].file, "tile_003.tif");
@@ -200,7 +200,7 @@ TEST(ScanRunLogImages, ATilesImageAndChecksumRoundTripAndBadOnesAreRefused)
     auto bad = [&](const std::string& from, const std::string& to) {
         std::string t = text;
         t.replace(t.find(from), from.size(), to);
-        return !scanfile::parseRunLog(t).log;
+        return !dev::files::scan::parseRunLog(t).log;
     };
     EXPECT_TRUE(bad(sha, "abc")) << "a checksum that is not one";
     EXPECT_TRUE(bad("\"image\":\"tile_003.tif\"", "\"image\":\"../x.tif\"")) << "a file outside the folder";

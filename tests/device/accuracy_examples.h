@@ -34,15 +34,15 @@ inline std::string read(const std::string& name)
 
 inline const char* kReadings = "stage-x-interferometer.readings.csv";
 
-inline accuracyfiles::AnalyzedReadings interferometerRun()
+inline dev::files::accuracy::AnalyzedReadings interferometerRun()
 {
-    return accuracyfiles::analyzeReadingsCsv(read(kReadings), kReadings);
+    return dev::files::accuracy::analyzeReadingsCsv(read(kReadings), kReadings);
 }
 
 /// File name → the text BenchPilot's writers make of the readings example.
 inline std::map<std::string, std::string> derivedExamples()
 {
-    using namespace accuracyfiles;
+    using namespace dev::files::accuracy;
     using namespace motion::metrology;
     const AnalyzedReadings a = interferometerRun();
     std::map<std::string, std::string> out;

@@ -15,15 +15,15 @@
 
 #include <cmath>
 
-using namespace accuracyfiles;
+using namespace dev::files::accuracy;
 using namespace motion::metrology;
 using accuracyexamples::read;
 
 namespace {
 
-std::optional<msg::Problem> find(const msg::Problems& ps, const std::string& id)
+std::optional<motion::msg::Problem> find(const motion::msg::Problems& ps, const std::string& id)
 {
-    for (const msg::Problem& p : ps)
+    for (const motion::msg::Problem& p : ps)
         if (p.message.id == id)
             return p;
     return std::nullopt;
@@ -152,7 +152,7 @@ TEST(AccuracyFiles, ReadingsInOtherUnitsOrderAndWithQuotesReadTheSame)
 
 TEST(AccuracyFiles, ReadingsProblemsNameLineAndColumn)
 {
-    msg::Problems ps = readingsFromCsv("target_mm,direction,cycle,measured_furlong\n10,up,1,10\n", "u.csv").problems;
+    motion::msg::Problems ps = readingsFromCsv("target_mm,direction,cycle,measured_furlong\n10,up,1,10\n", "u.csv").problems;
     auto unit = find(ps, "accuracy.csv.unknown_unit");
     ASSERT_TRUE(unit);
     EXPECT_EQ(unit->line, 1);
@@ -219,7 +219,7 @@ TEST(AccuracyFiles, ResultExampleIsWhatTheWriterMakesAndReadsBack)
     const auto a = accuracyexamples::interferometerRun();
     EXPECT_EQ(*r.result->evaluation.figures.aMm, *a.evaluation.figures.aMm);
     // The keys scripts rely on, in mm under "figures".
-    const jsonio::Value doc = *jsonio::parse(text).value;
+    const dev::files::json::Value doc = *dev::files::json::parse(text).value;
     for (const char* key : {"A", "A_up", "A_down", "E", "E_up", "E_down", "M", "R", "R_up", "R_down", "B", "B_mean"})
         EXPECT_TRUE(doc.find("figures")->find(key)->isNumber()) << key;
     EXPECT_EQ(doc.find("targets")->items().size(), 11u);
@@ -248,7 +248,7 @@ TEST(AccuracyFiles, UnidirectionalResultWritesNullForWhatItDoesNotHave)
     res.evaluation = a.evaluation;
     res.tolerances = analyzerTolerances('X');
     const std::string text = accuracyResultToJson(res);
-    const jsonio::Value doc = *jsonio::parse(text).value;
+    const dev::files::json::Value doc = *dev::files::json::parse(text).value;
     EXPECT_TRUE(doc.find("figures")->find("A")->isNull());
     EXPECT_TRUE(doc.find("figures")->find("B_mean")->isNull());
     EXPECT_TRUE(doc.find("figures")->find("R_up")->isNumber());
@@ -262,9 +262,9 @@ TEST(AccuracyFiles, WritersLeaveNothingHalfWritten)
 {
     QTemporaryDir dir;
     const QString good = dir.filePath(QStringLiteral("r.csv"));
-    msg::Message error;
+    motion::msg::Message error;
     const auto a = analyzeReadingsCsv(read("analyzer-x-seed000.readings.csv"), "seed.csv");
-    ASSERT_TRUE(saveReadingsCsv(good, a.read.readings, &error)) << msg::debugString(error);
+    ASSERT_TRUE(saveReadingsCsv(good, a.read.readings, &error)) << motion::msg::debugString(error);
     const ReadingsRead back = loadReadingsCsv(good);
     ASSERT_TRUE(back.ok());
     EXPECT_EQ(back.readings.size(), 25u);

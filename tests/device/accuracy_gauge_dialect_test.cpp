@@ -7,12 +7,12 @@
 
 namespace {
 
-using gaugewire::parseAnswer;
+using dev::gaugewire::parseAnswer;
 
 double value(const std::string& line)
 {
     const auto a = parseAnswer(line, "/dev/ttyUSB1");
-    EXPECT_TRUE(a.valueMm.has_value()) << line << ": " << msg::debugString(a.problem);
+    EXPECT_TRUE(a.valueMm.has_value()) << line << ": " << motion::msg::debugString(a.problem);
     return a.valueMm.value_or(-999);
 }
 
@@ -52,9 +52,9 @@ TEST(AccuracyGaugeDialect, AReadingWithoutAUnitOrInAnotherIsRefused)
 
 TEST(AccuracyGaugeDialect, ControlBytesAreShownEscaped)
 {
-    EXPECT_EQ(gaugewire::printable(std::string("\x01+1\tmm\xFF", 7)), "\\x01+1\\tmm\\xFF");
-    EXPECT_EQ(gaugewire::printable("5 \xC2\xB5m"), "5 \xC2\xB5m") << "UTF-8 stays";
-    EXPECT_EQ(gaugewire::printable(std::string(100, 'x')).size(), 80u + 3u) << "cut at 80 with an ellipsis";
+    EXPECT_EQ(dev::gaugewire::printable(std::string("\x01+1\tmm\xFF", 7)), "\\x01+1\\tmm\\xFF");
+    EXPECT_EQ(dev::gaugewire::printable("5 \xC2\xB5m"), "5 \xC2\xB5m") << "UTF-8 stays";
+    EXPECT_EQ(dev::gaugewire::printable(std::string(100, 'x')).size(), 80u + 3u) << "cut at 80 with an ellipsis";
 }
 
 } // namespace

@@ -21,8 +21,8 @@ constexpr int kX = 0;
 
 double seedXErrorUm(double x) { return 1.563 + 0.9473 * x - 0.0006 * x * x; }
 
-using StageHomed = HomedMachine<sim::stageConfig>;
-using AnalyzerHomed = HomedMachine<sim::analyzerConfig>;
+using StageHomed = HomedMachine<dev::sim::stageConfig>;
+using AnalyzerHomed = HomedMachine<dev::sim::analyzerConfig>;
 
 TEST_F(StageHomed, TheGratingReadsNoErrorWhileTheWorkPointCarriesTheSystematicOne)
 {
@@ -83,12 +83,12 @@ TEST_F(AnalyzerHomed, LostStepsPutTheWorkPointShortAndTheEncoderSaysSo)
     EXPECT_LT(m.workPointLogical(kX), 119) << "steps lost, the carriage stopped short";
     EXPECT_NEAR(measuredMm(m, kX), m.workPointLogical(kX), 0.002);
     EXPECT_NEAR(commandedMm(m, kX), 120, 1e-6) << "the step counter still says 120";
-    EXPECT_NE(r.find(proto::EventKind::LostSteps, kX), nullptr);
+    EXPECT_NE(r.find(dev::proto::EventKind::LostSteps, kX), nullptr);
 }
 
 // ---- the simulated gauge ---------------------------------------------------------------
 
-std::string ask(sim::SimGauge& g, const std::string& bytes)
+std::string ask(dev::sim::SimGauge& g, const std::string& bytes)
 {
     g.receive(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
     std::vector<std::uint8_t> out;
@@ -99,24 +99,24 @@ std::string ask(sim::SimGauge& g, const std::string& bytes)
 TEST(SimGauge, AnswersAQuestionMarkWithASignedReadingAndItsUnit)
 {
     double position = 12.34561;
-    sim::GaugeConfig c;
+    dev::sim::GaugeConfig c;
     c.noiseMm = 0;
-    sim::SimGauge g([&] { return position; }, c);
+    dev::sim::SimGauge g([&] { return position; }, c);
     EXPECT_EQ(ask(g, "?\r"), "+012.3456 mm\r\n");
     position = -3.2;
     EXPECT_EQ(ask(g, "?"), "") << "nothing until the CR";
     EXPECT_EQ(ask(g, "\r"), "-003.2000 mm\r\n");
     position = -0.00001;
     EXPECT_EQ(ask(g, "?\r\n"), "+000.0000 mm\r\n") << "a reading that rounds to zero has no minus; the LF ends an empty line";
-    EXPECT_EQ(sim::SimGauge::format(1.23456, 0.001), "+001.235 mm");
-    EXPECT_EQ(sim::SimGauge::format(123.5, 0.0001), "+123.5000 mm");
+    EXPECT_EQ(dev::sim::SimGauge::format(1.23456, 0.001), "+001.235 mm");
+    EXPECT_EQ(dev::sim::SimGauge::format(123.5, 0.0001), "+123.5000 mm");
 }
 
 TEST(SimGauge, IgnoresWhatIsNotARequest)
 {
-    sim::GaugeConfig c;
+    dev::sim::GaugeConfig c;
     c.noiseMm = 0;
-    sim::SimGauge g([] { return 1.0; }, c);
+    dev::sim::SimGauge g([] { return 1.0; }, c);
     EXPECT_EQ(ask(g, "hello\r"), "");
     EXPECT_EQ(ask(g, std::string(200, '?') + "\r"), "") << "an overlong line is dropped whole";
     EXPECT_EQ(ask(g, " ? \r"), "+001.0000 mm\r\n");
@@ -125,10 +125,10 @@ TEST(SimGauge, IgnoresWhatIsNotARequest)
 
 TEST(SimGauge, NoiseHasTheGivenSpreadAndReadingsTheGivenResolution)
 {
-    sim::GaugeConfig c;
+    dev::sim::GaugeConfig c;
     c.noiseMm = 0.0005;
     c.resolutionMm = 0.0001;
-    sim::SimGauge g([] { return 50.0; }, c);
+    dev::sim::SimGauge g([] { return 50.0; }, c);
     double sum = 0, sum2 = 0;
     const int n = 400;
     for (int i = 0; i < n; ++i) {
@@ -145,10 +145,10 @@ TEST(SimGauge, NoiseHasTheGivenSpreadAndReadingsTheGivenResolution)
 
 TEST(SimGauge, FaultsAnswerGarbageOrNothing)
 {
-    sim::SimGauge g([] { return 1.0; }, {});
-    g.setFault(sim::SimGauge::Fault::Garbage);
+    dev::sim::SimGauge g([] { return 1.0; }, {});
+    g.setFault(dev::sim::SimGauge::Fault::Garbage);
     EXPECT_EQ(ask(g, "?\r"), "Err 7\r\n");
-    g.setFault(sim::SimGauge::Fault::Silent);
+    g.setFault(dev::sim::SimGauge::Fault::Silent);
     EXPECT_EQ(ask(g, "?\r"), "");
 }
 

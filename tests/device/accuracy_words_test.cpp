@@ -29,14 +29,14 @@ std::string readAll(const fs::path& p)
     return s.str();
 }
 
-/// Ids emitted by msg::make("…") in the accuracy bench's sources.
+/// Ids emitted by motion::msg::make("…") in the accuracy bench's sources.
 std::set<std::string> emittedIds()
 {
     const fs::path root(BP_SOURCE_DIR);
     std::set<std::string> out;
     // Qt's expressions, not std::regex: GCC 12 warns falsely inside libstdc++'s regex
     // compiler in the sanitizer build.
-    static const QRegularExpression make(QStringLiteral(R"re(msg::make\("((accuracy|compensation|file|gauge)\.[a-z_.0-9]+)")re"));
+    static const QRegularExpression make(QStringLiteral(R"re(motion::msg::make\("((accuracy|compensation|file|gauge)\.[a-z_.0-9]+)")re"));
     for (const char* dir : {"motion/metrology", "device/files/accuracy", "device/jobs/accuracy", "device/link", "app/cli"})
         for (const auto& e : fs::recursive_directory_iterator(root / dir)) {
             if (!e.is_regular_file() || (e.path().extension() != ".cpp" && e.path().extension() != ".h"))
@@ -84,12 +84,12 @@ TEST(AccuracyWords, EveryIdEmittedIsInTheAppendixAndWorded)
         EXPECT_NE(row, table.end()) << id << " is not in docs/accuracy.md's appendix";
         if (row == table.end())
             continue;
-        std::vector<msg::Arg> args;
+        std::vector<motion::msg::Arg> args;
         for (const std::string& a : row->second)
-            args.push_back(msg::verbatim(a, "<" + a + ">"));
-        const msg::Message m = msg::make(id, args);
-        const QString text = words::text(m);
-        EXPECT_NE(text.toStdString(), msg::debugString(m)) << id << " has no words";
+            args.push_back(motion::msg::verbatim(a, "<" + a + ">"));
+        const motion::msg::Message m = motion::msg::make(id, args);
+        const QString text = ui::words::text(m);
+        EXPECT_NE(text.toStdString(), motion::msg::debugString(m)) << id << " has no words";
         EXPECT_FALSE(text.isEmpty()) << id;
         // Every argument the id documents appears in its sentence (file.json_field is its detail).
         for (const std::string& a : row->second)
@@ -99,8 +99,8 @@ TEST(AccuracyWords, EveryIdEmittedIsInTheAppendixAndWorded)
 
 TEST(AccuracyWords, TermsAreWorded)
 {
-    EXPECT_EQ(words::term("direction.up"), QStringLiteral("up"));
-    EXPECT_EQ(words::term("rotation.ccw"), QStringLiteral("counter-clockwise"));
+    EXPECT_EQ(ui::words::term("direction.up"), QStringLiteral("up"));
+    EXPECT_EQ(ui::words::term("rotation.ccw"), QStringLiteral("counter-clockwise"));
 }
 
 } // namespace

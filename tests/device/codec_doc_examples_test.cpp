@@ -26,7 +26,7 @@
 
 namespace {
 
-using namespace proto;
+using namespace dev::proto;
 
 struct Example {
     std::string name;

@@ -15,7 +15,7 @@
 
 namespace {
 
-using namespace proto;
+using namespace dev::proto;
 
 /// Decoding `valid` succeeds; every strict prefix and `valid` + one byte fail.
 template <typename T>

@@ -16,21 +16,21 @@
 namespace {
 
 using Bytes = std::vector<std::uint8_t>;
-using proto::DecoderStats;
-using proto::Frame;
-using proto::FrameDecoder;
+using dev::proto::DecoderStats;
+using dev::proto::Frame;
+using dev::proto::FrameDecoder;
 
 Bytes cobs(const Bytes& in)
 {
     Bytes out;
-    proto::cobsEncode(in.data(), in.size(), out);
+    dev::proto::cobsEncode(in.data(), in.size(), out);
     return out;
 }
 
 Bytes frameBytes(std::uint8_t type, std::uint16_t seq, const Bytes& payload)
 {
     Bytes out;
-    EXPECT_TRUE(proto::encodeFrame(type, seq, payload.data(), payload.size(), out));
+    EXPECT_TRUE(dev::proto::encodeFrame(type, seq, payload.data(), payload.size(), out));
     return out;
 }
 
@@ -46,7 +46,7 @@ Bytes concat(const std::vector<Bytes>& parts)
 Bytes handFrame(const Bytes& body)
 {
     Bytes out{0x00};
-    proto::cobsEncode(body.data(), body.size(), out);
+    dev::proto::cobsEncode(body.data(), body.size(), out);
     out.push_back(0x00);
     return out;
 }
@@ -62,7 +62,7 @@ Bytes bodyWithCrc(std::uint8_t type, std::uint16_t seq, const Bytes& payload)
     body[1] = static_cast<std::uint8_t>(seq & 0xFF);
     body[2] = static_cast<std::uint8_t>(seq >> 8);
     std::copy(payload.begin(), payload.end(), body.begin() + 3);
-    const std::uint16_t crc = proto::crc16Ccitt(body.data(), n);
+    const std::uint16_t crc = dev::proto::crc16Ccitt(body.data(), n);
     body[n] = static_cast<std::uint8_t>(crc & 0xFF);
     body[n + 1] = static_cast<std::uint8_t>(crc >> 8);
     return body;
@@ -112,8 +112,8 @@ std::vector<Frame> sampleFrames()
     f.push_back({0x82, 9, Bytes(254, 0x55)});
     f.push_back({0x83, 10, Bytes(255, 0x11)});
     f.push_back({0x84, 11, Bytes(508, 0x7F)});
-    f.push_back({0xE1, 12, Bytes(proto::kMaxPayloadBytes, 0xFF)});  // cap, no zero at all
-    f.push_back({0xE0, 13, Bytes(proto::kMaxPayloadBytes, 0x00)});  // cap, all zeros
+    f.push_back({0xE1, 12, Bytes(dev::proto::kMaxPayloadBytes, 0xFF)});  // cap, no zero at all
+    f.push_back({0xE0, 13, Bytes(dev::proto::kMaxPayloadBytes, 0x00)});  // cap, all zeros
     for (int i = 0; i < 20; ++i) {
         std::uniform_int_distribution<int> len(0, 300);
         f.push_back({static_cast<std::uint8_t>(rng()), static_cast<std::uint16_t>(rng()),
@@ -126,7 +126,7 @@ Bytes encodeAll(const std::vector<Frame>& frames)
 {
     Bytes wire;
     for (const auto& f : frames)
-        EXPECT_TRUE(proto::encodeFrame(f, wire));
+        EXPECT_TRUE(dev::proto::encodeFrame(f, wire));
     return wire;
 }
 
@@ -135,20 +135,20 @@ Bytes encodeAll(const std::vector<Frame>& frames)
 TEST(CodecCrc, CheckValue)
 {
     const std::string s = "123456789";
-    EXPECT_EQ(proto::crc16Ccitt(reinterpret_cast<const std::uint8_t*>(s.data()), s.size()), 0x29B1);
+    EXPECT_EQ(dev::proto::crc16Ccitt(reinterpret_cast<const std::uint8_t*>(s.data()), s.size()), 0x29B1);
 }
 
 TEST(CodecCrc, EmptyIsInitAndChainingMatchesOneShot)
 {
-    EXPECT_EQ(proto::crc16Ccitt(nullptr, 0), 0xFFFF);
+    EXPECT_EQ(dev::proto::crc16Ccitt(nullptr, 0), 0xFFFF);
     const std::string s = "123456789";
     const auto* p = reinterpret_cast<const std::uint8_t*>(s.data());
-    const std::uint16_t first = proto::crc16Ccitt(p, 4);
-    EXPECT_EQ(proto::crc16Ccitt(p + 4, 5, first), 0x29B1);
+    const std::uint16_t first = dev::proto::crc16Ccitt(p, 4);
+    EXPECT_EQ(dev::proto::crc16Ccitt(p + 4, 5, first), 0x29B1);
     // Known values of CRC-16/CCITT-FALSE for short inputs.
     const std::uint8_t zero = 0x00, a = 'A';
-    EXPECT_EQ(proto::crc16Ccitt(&zero, 1), 0xE1F0);
-    EXPECT_EQ(proto::crc16Ccitt(&a, 1), 0xB915);
+    EXPECT_EQ(dev::proto::crc16Ccitt(&zero, 1), 0xE1F0);
+    EXPECT_EQ(dev::proto::crc16Ccitt(&a, 1), 0xB915);
 }
 
 // ---- COBS -----------------------------------------------------------------------
@@ -211,31 +211,31 @@ TEST(CodecCobs, RoundTripsEdgeCases)
     for (const auto& in : inputs) {
         const Bytes enc = cobs(in);
         EXPECT_EQ(std::count(enc.begin(), enc.end(), 0), 0) << "size " << in.size();
-        EXPECT_LE(enc.size(), proto::cobsMaxEncodedSize(in.size()));
-        const auto dec = proto::cobsDecode(enc.data(), enc.size());
+        EXPECT_LE(enc.size(), dev::proto::cobsMaxEncodedSize(in.size()));
+        const auto dec = dev::proto::cobsDecode(enc.data(), enc.size());
         ASSERT_TRUE(dec.has_value()) << "size " << in.size();
         EXPECT_EQ(*dec, in);
     }
     // All-zero input costs exactly one byte of overhead.
     EXPECT_EQ(cobs(Bytes(1000, 0x00)).size(), 1001u);
     // Worst case is reached by non-zero input.
-    EXPECT_EQ(cobs(Bytes(1024, 0x07)).size(), proto::cobsMaxEncodedSize(1024));
+    EXPECT_EQ(cobs(Bytes(1024, 0x07)).size(), dev::proto::cobsMaxEncodedSize(1024));
 }
 
 TEST(CodecCobs, DecodeRejectsMalformedBlocks)
 {
     const Bytes zeroInside{0x03, 0x11, 0x00};
-    EXPECT_FALSE(proto::cobsDecode(zeroInside.data(), zeroInside.size()).has_value());
+    EXPECT_FALSE(dev::proto::cobsDecode(zeroInside.data(), zeroInside.size()).has_value());
     const Bytes codeZero{0x00};
-    EXPECT_FALSE(proto::cobsDecode(codeZero.data(), codeZero.size()).has_value());
+    EXPECT_FALSE(dev::proto::cobsDecode(codeZero.data(), codeZero.size()).has_value());
     const Bytes pastEnd{0x05, 0x11, 0x22};
-    EXPECT_FALSE(proto::cobsDecode(pastEnd.data(), pastEnd.size()).has_value());
+    EXPECT_FALSE(dev::proto::cobsDecode(pastEnd.data(), pastEnd.size()).has_value());
     const Bytes fullBlockShort{0xFF, 0x01};
-    EXPECT_FALSE(proto::cobsDecode(fullBlockShort.data(), fullBlockShort.size()).has_value());
+    EXPECT_FALSE(dev::proto::cobsDecode(fullBlockShort.data(), fullBlockShort.size()).has_value());
     // A full block without the closing 0x01 still decodes (other encoders omit it).
     Bytes noClose{0xFF};
     noClose.insert(noClose.end(), 254, 0x33);
-    const auto dec = proto::cobsDecode(noClose.data(), noClose.size());
+    const auto dec = dev::proto::cobsDecode(noClose.data(), noClose.size());
     ASSERT_TRUE(dec.has_value());
     EXPECT_EQ(*dec, Bytes(254, 0x33));
 }
@@ -250,13 +250,13 @@ TEST(CodecFrame, LayoutIsDelimitedCobsOfHeaderPayloadCrc)
     EXPECT_EQ(wire.front(), 0x00);
     EXPECT_EQ(wire.back(), 0x00);
     EXPECT_EQ(std::count(wire.begin() + 1, wire.end() - 1, 0), 0);
-    const auto body = proto::cobsDecode(wire.data() + 1, wire.size() - 2);
+    const auto body = dev::proto::cobsDecode(wire.data() + 1, wire.size() - 2);
     ASSERT_TRUE(body.has_value());
     // type, seq LE, payload, CRC LE over everything before it
     const Bytes want{0x04, 0x34, 0x12, 0x10, 0x00, 0x20};
     ASSERT_EQ(body->size(), want.size() + 2);
     EXPECT_TRUE(std::equal(want.begin(), want.end(), body->begin()));
-    const std::uint16_t crc = proto::crc16Ccitt(want.data(), want.size());
+    const std::uint16_t crc = dev::proto::crc16Ccitt(want.data(), want.size());
     EXPECT_EQ((*body)[6], crc & 0xFF);
     EXPECT_EQ((*body)[7], crc >> 8);
     // Exact bytes: body 04 34 12 10 00 20 + CRC.
@@ -266,16 +266,16 @@ TEST(CodecFrame, LayoutIsDelimitedCobsOfHeaderPayloadCrc)
 TEST(CodecFrame, PayloadCapIsEnforced)
 {
     Bytes out{0xAB};  // existing content must survive a refusal untouched
-    const Bytes atCap(proto::kMaxPayloadBytes, 0x01);
-    const Bytes overCap(proto::kMaxPayloadBytes + 1, 0x01);
-    EXPECT_EQ(proto::kMaxPayloadBytes, 1019u);
-    EXPECT_FALSE(proto::encodeFrame(0x01, 1, overCap.data(), overCap.size(), out));
+    const Bytes atCap(dev::proto::kMaxPayloadBytes, 0x01);
+    const Bytes overCap(dev::proto::kMaxPayloadBytes + 1, 0x01);
+    EXPECT_EQ(dev::proto::kMaxPayloadBytes, 1019u);
+    EXPECT_FALSE(dev::proto::encodeFrame(0x01, 1, overCap.data(), overCap.size(), out));
     EXPECT_EQ(out, Bytes{0xAB});
-    EXPECT_FALSE(proto::encodeFrame(0x01, 1, overCap.data(), 60000, out));
+    EXPECT_FALSE(dev::proto::encodeFrame(0x01, 1, overCap.data(), 60000, out));
     EXPECT_EQ(out, Bytes{0xAB});
-    EXPECT_TRUE(proto::encodeFrame(0x01, 1, atCap.data(), atCap.size(), out));
+    EXPECT_TRUE(dev::proto::encodeFrame(0x01, 1, atCap.data(), atCap.size(), out));
     // Worst case: no zero anywhere in type, seq, payload or CRC.
-    EXPECT_LE(out.size() - 1, proto::wireBytesForPayload(atCap.size()));
+    EXPECT_LE(out.size() - 1, dev::proto::wireBytesForPayload(atCap.size()));
 }
 
 TEST(CodecFrame, WireBytesForPayloadIsAnUpperBound)
@@ -286,12 +286,12 @@ TEST(CodecFrame, WireBytesForPayloadIsAnUpperBound)
         for (int k = 0; k < 20; ++k) {
             const Bytes p = randomBytes(rng, n, k % 2 == 0);
             const Bytes wire = frameBytes(static_cast<std::uint8_t>(0x81 + k), static_cast<std::uint16_t>(0x0101 * (k + 1)), p);
-            EXPECT_LE(wire.size(), proto::wireBytesForPayload(n)) << n;
+            EXPECT_LE(wire.size(), dev::proto::wireBytesForPayload(n)) << n;
             EXPECT_GE(wire.size(), n + 2 + 5 + 1) << n;
         }
     }
-    EXPECT_EQ(proto::wireBytesForPayload(0), 2u + 5 + 1);
-    EXPECT_EQ(proto::wireBytesForPayload(1019), 2u + 1024 + 4 + 1);
+    EXPECT_EQ(dev::proto::wireBytesForPayload(0), 2u + 5 + 1);
+    EXPECT_EQ(dev::proto::wireBytesForPayload(1019), 2u + 1024 + 4 + 1);
 }
 
 // ---- FrameDecoder: chunking --------------------------------------------------
@@ -434,9 +434,9 @@ TEST(CodecDecoder, OversizeIsCountedAndDecoderRecoversAtNextDelimiter)
 TEST(CodecDecoder, LargestBodyIsAcceptedOneMoreIsOversize)
 {
     // 1024-byte body without zeros: the worst-case encoded block of 1029 bytes.
-    const Bytes maxPayload(proto::kMaxPayloadBytes, 0xEE);
+    const Bytes maxPayload(dev::proto::kMaxPayloadBytes, 0xEE);
     const Bytes wire = frameBytes(0xE1, 0xEEEE, maxPayload);
-    ASSERT_EQ(wire.size(), proto::cobsMaxEncodedSize(proto::kMaxBodyBytes) + 2);
+    ASSERT_EQ(wire.size(), dev::proto::cobsMaxEncodedSize(dev::proto::kMaxBodyBytes) + 2);
     FrameDecoder d;
     std::vector<Frame> got;
     d.feed(wire.data(), wire.size(), got);
@@ -450,14 +450,14 @@ TEST(CodecDecoder, BodyOverTheCapIsRejectedEvenWhenItsBlockFits)
     // A body with zeros in it encodes to size + 1, so a 1028-byte body fits in
     // the 1029-byte block limit. The decoder must still refuse it: the cap is on
     // the body, and encodeFrame could never have produced it.
-    for (std::size_t bodySize : {proto::kMaxBodyBytes + 1, proto::kMaxBodyBytes + 4}) {
+    for (std::size_t bodySize : {dev::proto::kMaxBodyBytes + 1, dev::proto::kMaxBodyBytes + 4}) {
         Bytes payload(bodySize - 5, 0x00);
         for (std::size_t i = 0; i < payload.size(); i += 2)
             payload[i] = 0x5A;
         const Bytes body = bodyWithCrc(0x81, 1, payload);
         ASSERT_EQ(body.size(), bodySize);
         const Bytes bad = handFrame(body);
-        ASSERT_LE(bad.size() - 2, proto::cobsMaxEncodedSize(proto::kMaxBodyBytes));
+        ASSERT_LE(bad.size() - 2, dev::proto::cobsMaxEncodedSize(dev::proto::kMaxBodyBytes));
         const Bytes good = frameBytes(0x82, 2, {});
         const Bytes wire = concat({bad, good});
         FrameDecoder d;
@@ -522,7 +522,7 @@ TEST(CodecDecoder, GarbageBetweenFramesIsCountedAndFramesStayIntact)
         const Bytes g = randomBytes(rng, rng() % 200, true);
         garbageNonZero += static_cast<std::uint64_t>(std::count_if(g.begin(), g.end(), [](std::uint8_t b) { return b != 0; }));
         wire.insert(wire.end(), g.begin(), g.end());
-        ASSERT_TRUE(proto::encodeFrame(f, wire));
+        ASSERT_TRUE(dev::proto::encodeFrame(f, wire));
     }
     for (int mode = 0; mode < 3; ++mode) {
         FrameDecoder d;

@@ -9,7 +9,7 @@
 
 namespace {
 
-using namespace proto;
+using namespace dev::proto;
 
 TEST(CompensationCodec, APolynomialRoundTripsBitForBit)
 {

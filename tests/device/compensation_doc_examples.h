@@ -10,9 +10,9 @@
 namespace compensationdoc {
 
 /// (name, type, seq, payload) of every compensation example in the document.
-inline std::vector<std::tuple<std::string, std::uint8_t, std::uint16_t, proto::Bytes>> examples()
+inline std::vector<std::tuple<std::string, std::uint8_t, std::uint16_t, dev::proto::Bytes>> examples()
 {
-    using namespace proto;
+    using namespace dev::proto;
     auto t = [](MsgType m) { return static_cast<std::uint8_t>(m); };
     auto reply = [](MsgType m) { return replyTypeOf(m); };
     std::vector<std::tuple<std::string, std::uint8_t, std::uint16_t, Bytes>> ex;

@@ -9,15 +9,15 @@
 #include <cmath>
 #include <cstdio>
 
-using namespace accuracyfiles;
+using namespace dev::files::accuracy;
 using namespace motion::metrology;
 using accuracyexamples::read;
 
 namespace {
 
-std::optional<msg::Problem> find(const msg::Problems& ps, const std::string& id)
+std::optional<motion::msg::Problem> find(const motion::msg::Problems& ps, const std::string& id)
 {
-    for (const msg::Problem& p : ps)
+    for (const motion::msg::Problem& p : ps)
         if (p.message.id == id)
             return p;
     return std::nullopt;
@@ -184,10 +184,10 @@ TEST(CompensationFiles, ErrorCurveCsvFeedsTheFit)
 TEST(CompensationFiles, SavedFilesReadBack)
 {
     QTemporaryDir dir;
-    msg::Message error;
+    motion::msg::Message error;
     const CompensationModel m = tableExample();
     const QString json = dir.filePath(QStringLiteral("x.compensation.json")), comp = dir.filePath(QStringLiteral("x.comp"));
-    ASSERT_TRUE(saveCompensationFile(json, {m, std::nullopt, ""}, &error)) << msg::debugString(error);
+    ASSERT_TRUE(saveCompensationFile(json, {m, std::nullopt, ""}, &error)) << motion::msg::debugString(error);
     ASSERT_TRUE(saveLinuxcncCompensation(comp, m, LinuxcncCompType::ActualPositions, &error));
     ASSERT_TRUE(saveCompensationCsv(dir.filePath(QStringLiteral("x.csv")), m, &error));
     const CompensationRead r = loadCompensationFile(json);

@@ -13,13 +13,13 @@
 namespace {
 
 using namespace simtest;
-using proto::CompKind;
+using dev::proto::CompKind;
 
 constexpr int kX = 0, kY = 1;
 
-proto::CompUploadRequest polynomial(int axis, std::vector<double> coefficientsUm, double backlashUm = 0)
+dev::proto::CompUploadRequest polynomial(int axis, std::vector<double> coefficientsUm, double backlashUm = 0)
 {
-    proto::CompUploadRequest r;
+    dev::proto::CompUploadRequest r;
     r.axis = static_cast<std::uint8_t>(axis);
     r.kind = CompKind::Polynomial;
     r.backlash = static_cast<std::int32_t>(std::lround(backlashUm * 1e3));
@@ -30,15 +30,15 @@ proto::CompUploadRequest polynomial(int axis, std::vector<double> coefficientsUm
     return r;
 }
 
-proto::CompEnableRequest enableAxis(int axis, bool on, bool save = false)
+dev::proto::CompEnableRequest enableAxis(int axis, bool on, bool save = false)
 {
-    return {bit(axis), static_cast<std::uint8_t>((on ? proto::CompEnableOn : 0) | (save ? proto::CompEnableSave : 0))};
+    return {bit(axis), static_cast<std::uint8_t>((on ? dev::proto::CompEnableOn : 0) | (save ? dev::proto::CompEnableSave : 0))};
 }
 
-using StageHomed = HomedMachine<sim::stageConfig>;
-using AnalyzerHomed = HomedMachine<sim::analyzerConfig>;
+using StageHomed = HomedMachine<dev::sim::stageConfig>;
+using AnalyzerHomed = HomedMachine<dev::sim::analyzerConfig>;
 
-double gaugeErrorUm(sim::SimMachine& m, Runner& r, int axis, double target)
+double gaugeErrorUm(dev::sim::SimMachine& m, Runner& r, int axis, double target)
 {
     EXPECT_FALSE(m.move(absMove(bit(axis), {target})));
     EXPECT_TRUE(r.runUntilIdle(30));
@@ -50,7 +50,7 @@ TEST_F(StageHomed, SeedTwosCurveUploadedAndEnabledPutsTheWorkPointOnTheTarget)
 {
     const double before = gaugeErrorUm(m, r, kY, 60);
     EXPECT_GT(before, 60) << "seed 002's Y curve at 60 mm";
-    proto::CompUploadReply reply;
+    dev::proto::CompUploadReply reply;
     ASSERT_FALSE(m.compensation().upload(polynomial(kY, {1.021, 0.6397, 0.0168}), reply));
     EXPECT_EQ(reply.installed, 1);
     EXPECT_FALSE(m.compensation().enabled(kY)) << "installed disabled";
@@ -62,14 +62,14 @@ TEST_F(StageHomed, SeedTwosCurveUploadedAndEnabledPutsTheWorkPointOnTheTarget)
         EXPECT_LT(std::fabs(gaugeErrorUm(m, r, kY, target)), 1.5) << "at " << target;
         EXPECT_NEAR(measuredMm(m, kY), target, 0.0006) << "the readback is reported at the nominal target";
     }
-    EXPECT_NE(r.find(proto::kEvCompChanged, kY), nullptr);
+    EXPECT_NE(r.find(dev::proto::kEvCompChanged, kY), nullptr);
 }
 
 TEST_F(StageHomed, EnablingAndDisablingNeverMoveTheAxis)
 {
     ASSERT_FALSE(m.move(absMove(bit(kX), {70})));
     ASSERT_TRUE(r.runUntilIdle(30));
-    proto::CompUploadReply reply;
+    dev::proto::CompUploadReply reply;
     ASSERT_FALSE(m.compensation().upload(polynomial(kX, {1.563, 0.9473, -0.0006}), reply));
     const double carriage = m.axis(kX).carriage();
     ASSERT_FALSE(m.compensation().enable(enableAxis(kX, true)));
@@ -101,7 +101,7 @@ TEST_F(AnalyzerHomed, APolynomialWithBacklashLandsTheOpenLoopAxisFromBothSides)
     const double backlash = ((down20 - up20) + (down150 - up150)) / 2;
     auto req = polynomial(kX, {e20 - slope * 20, slope}, backlash);
     req.validTo = nm(200);
-    proto::CompUploadReply reply;
+    dev::proto::CompUploadReply reply;
     ASSERT_FALSE(m.compensation().upload(req, reply));
     ASSERT_FALSE(m.compensation().enable(enableAxis(kX, true)));
     const double up = side(150, 140), down = side(150, 160);
@@ -111,11 +111,11 @@ TEST_F(AnalyzerHomed, APolynomialWithBacklashLandsTheOpenLoopAxisFromBothSides)
 
 TEST_F(StageHomed, APartOutOfOrderOrAModelADeviceCannotApplyIsRefusedAndChangesNothing)
 {
-    proto::CompUploadReply reply;
+    dev::proto::CompUploadReply reply;
     ASSERT_FALSE(m.compensation().upload(polynomial(kX, {1.563, 0.9473, -0.0006}), reply));
     ASSERT_FALSE(m.compensation().enable(enableAxis(kX, true)));
     // A table of five points sent in parts, the second starting at the wrong entry.
-    proto::CompUploadRequest part;
+    dev::proto::CompUploadRequest part;
     part.axis = kX;
     part.kind = CompKind::Table;
     part.total = 5;
@@ -126,18 +126,18 @@ TEST_F(StageHomed, APartOutOfOrderOrAModelADeviceCannotApplyIsRefusedAndChangesN
     part.first = 2;
     auto e = m.compensation().upload(part, reply);
     ASSERT_TRUE(e);
-    EXPECT_EQ(e->code, proto::kErrCompSequence);
+    EXPECT_EQ(e->code, dev::proto::kErrCompSequence);
     EXPECT_EQ(e->value, 3) << "the entry the device expects";
     // Too steep: 200 µm/mm is not a positioning error.
     e = m.compensation().upload(polynomial(kX, {0, 200}), reply);
     ASSERT_TRUE(e);
-    EXPECT_EQ(e->code, proto::kErrCompInvalid);
+    EXPECT_EQ(e->code, dev::proto::kErrCompInvalid);
     // 300 points is more than a device keeps.
     part.first = 0;
     part.total = 300;
     e = m.compensation().upload(part, reply);
     ASSERT_TRUE(e);
-    EXPECT_EQ(e->code, proto::kErrCompInvalid);
+    EXPECT_EQ(e->code, dev::proto::kErrCompInvalid);
     // The polynomial uploaded first is still there, enabled.
     ASSERT_TRUE(m.compensation().model(kX));
     EXPECT_EQ(m.compensation().model(kX)->kind, motion::metrology::CompensationModel::Kind::Polynomial);
@@ -148,46 +148,46 @@ TEST_F(StageHomed, NothingChangesUnderAMovingAxisAndNothingIsEnabledThatIsNotThe
 {
     auto e = m.compensation().enable(enableAxis(kY, true));
     ASSERT_TRUE(e);
-    EXPECT_EQ(e->code, proto::kErrCompMissing);
+    EXPECT_EQ(e->code, dev::proto::kErrCompMissing);
     ASSERT_FALSE(m.move(absMove(bit(kX), {90})));
     r.run(0.05);
-    proto::CompUploadReply reply;
+    dev::proto::CompUploadReply reply;
     e = m.compensation().upload(polynomial(kX, {1, 1}), reply);
     ASSERT_TRUE(e);
-    EXPECT_EQ(e->code, proto::ErrorCode::Busy);
+    EXPECT_EQ(e->code, dev::proto::ErrorCode::Busy);
 }
 
 TEST(CompensationSim, OnlyASavedCompensationSurvivesAPowerCycle)
 {
-    sim::SimMachine m(sim::stageConfig());
-    proto::CompUploadReply reply;
+    dev::sim::SimMachine m(dev::sim::stageConfig());
+    dev::proto::CompUploadReply reply;
     ASSERT_FALSE(m.compensation().upload(polynomial(kX, {1.563, 0.9473, -0.0006}), reply));
     ASSERT_FALSE(m.compensation().upload(polynomial(kY, {1.021, 0.6397, 0.0168}), reply));
     ASSERT_FALSE(m.compensation().enable(enableAxis(kX, true, true)));
     ASSERT_FALSE(m.compensation().enable(enableAxis(kY, true)));
     EXPECT_FALSE(m.compensation().applied(kX)) << "positions are home coordinates: nothing applies before homing";
 
-    sim::SimMachine after(sim::stageConfig(), m.compensation().flash());
+    dev::sim::SimMachine after(dev::sim::stageConfig(), m.compensation().flash());
     ASSERT_TRUE(after.compensation().model(kX));
     EXPECT_TRUE(after.compensation().enabled(kX));
     EXPECT_FALSE(after.compensation().model(kY)) << "Y was never saved";
-    proto::CompGetReply got;
+    dev::proto::CompGetReply got;
     ASSERT_FALSE(after.compensation().get({kX, 0, 80}, got));
     EXPECT_EQ(got.kind, CompKind::Polynomial);
     EXPECT_EQ(got.coefficients, (std::vector<double>{1.563, 0.9473, -0.0006}));
-    EXPECT_EQ(got.flags & proto::CompSaved, proto::CompSaved);
-    EXPECT_EQ(got.flags & proto::CompApplied, 0);
+    EXPECT_EQ(got.flags & dev::proto::CompSaved, dev::proto::CompSaved);
+    EXPECT_EQ(got.flags & dev::proto::CompApplied, 0);
 }
 
 TEST(CompensationSim, ATableIsReadBackInFramesOfEightyPoints)
 {
-    sim::SimMachine m(sim::stageConfig());
-    std::vector<proto::CompPoint> points;
+    dev::sim::SimMachine m(dev::sim::stageConfig());
+    std::vector<dev::proto::CompPoint> points;
     for (int k = 0; k < 200; ++k)
         points.push_back({nm(0.5 * k), -10 * k, -10 * k - 4});
-    proto::CompUploadReply reply;
+    dev::proto::CompUploadReply reply;
     for (std::size_t first = 0; first < points.size(); first += 80) {
-        proto::CompUploadRequest part;
+        dev::proto::CompUploadRequest part;
         part.axis = kY;
         part.kind = CompKind::TablePerDirection;
         part.total = 200;
@@ -196,9 +196,9 @@ TEST(CompensationSim, ATableIsReadBackInFramesOfEightyPoints)
         ASSERT_FALSE(m.compensation().upload(part, reply)) << first;
     }
     EXPECT_EQ(reply.installed, 1);
-    std::vector<proto::CompPoint> back;
+    std::vector<dev::proto::CompPoint> back;
     for (std::uint16_t first = 0; first < 200;) {
-        proto::CompGetReply got;
+        dev::proto::CompGetReply got;
         ASSERT_FALSE(m.compensation().get({kY, first, 80}, got));
         EXPECT_EQ(got.kind, CompKind::TablePerDirection);
         EXPECT_EQ(got.total, 200);

@@ -1,7 +1,7 @@
 #pragma once
 // Tests that read what a person reads, in English: a message or a file's problems
-// worded by the wording layer as words::englishText does (English whatever
-// translators are installed), in the shape jsonio::Problems::format used to have.
+// worded by the wording layer as ui::words::englishText does (English whatever
+// translators are installed), in the shape dev::files::json::Problems::format used to have.
 #include "device/files/json_fields.h"
 #include "widgets/wording/translators.h"
 #include "motion/message_print.h"
@@ -12,26 +12,26 @@
 
 namespace i18ntest {
 
-inline std::string english(const msg::Message& m) { return words::englishText(m).toStdString(); }
+inline std::string english(const motion::msg::Message& m) { return ui::words::englishText(m).toStdString(); }
 
 /// "FILE:LINE:COLUMN: PATH: sentence", one a line, in the order found.
-inline std::string englishFormat(const jsonio::Problems& problems, std::string_view file)
+inline std::string englishFormat(const dev::files::json::Problems& problems, std::string_view file)
 {
-    const words::EnglishScope inEnglish;
+    const ui::words::EnglishScope inEnglish;
     std::string out;
-    for (msg::Problem p : problems.list()) {
+    for (motion::msg::Problem p : problems.list()) {
         p.file = std::string(file);
-        out += words::problem(p).toStdString() + "\n";
+        out += ui::words::problem(p).toStdString() + "\n";
     }
     return out;
 }
 
-inline std::string englishFormat(const msg::Problems& problems)
+inline std::string englishFormat(const motion::msg::Problems& problems)
 {
-    const words::EnglishScope inEnglish;
+    const ui::words::EnglishScope inEnglish;
     std::string out;
-    for (const msg::Problem& p : problems)
-        out += words::problem(p).toStdString() + "\n";
+    for (const motion::msg::Problem& p : problems)
+        out += ui::words::problem(p).toStdString() + "\n";
     return out;
 }
 

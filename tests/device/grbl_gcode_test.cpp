@@ -7,7 +7,7 @@
 
 namespace {
 
-using namespace grbl;
+using namespace dev::grbl;
 
 TEST(GrblGcode, NumbersArePlainDecimalsWithoutNoise)
 {

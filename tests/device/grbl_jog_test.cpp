@@ -9,7 +9,7 @@
 
 namespace {
 
-using namespace grbl;
+using namespace dev::grbl;
 
 TEST(GrblJog, AFastStiffAxisJogsAtFullSpeedWithinBothBudgets)
 {

@@ -8,7 +8,7 @@
 
 namespace {
 
-using namespace grbl;
+using namespace dev::grbl;
 
 TEST(GrblLines, SplitsCrLfLinesAcrossChunksAndKeepsTheHalfLine)
 {
@@ -215,7 +215,7 @@ TEST(GrblCodes, EveryDocumentedCodeHasAMeaning)
 
 TEST(GrblCodes, AnErrorMessageNamesCodeAndLine)
 {
-    const msg::Message m = errorMessage(22, "G1 X10");
+    const motion::msg::Message m = errorMessage(22, "G1 X10");
     EXPECT_EQ(m.id, "grbl.error");
     EXPECT_EQ(m.integer("code"), 22);
     EXPECT_EQ(m.text("line"), "G1 X10");
@@ -227,7 +227,7 @@ TEST(GrblCodes, AnErrorMessageNamesCodeAndLine)
 namespace {
 TEST(GrblLines, ABannerAfterACutReportIsStillABanner)
 {
-    EXPECT_EQ(grbl::classifyLine("<Run|MPos:1.0Grbl 1.1h ['$' for help]").kind, grbl::LineKind::Banner);
-    EXPECT_EQ(grbl::classifyLine("[MSG:ResGrblHAL 1.1f ['$' or '$HELP' for help]").kind, grbl::LineKind::Banner);
+    EXPECT_EQ(dev::grbl::classifyLine("<Run|MPos:1.0Grbl 1.1h ['$' for help]").kind, dev::grbl::LineKind::Banner);
+    EXPECT_EQ(dev::grbl::classifyLine("[MSG:ResGrblHAL 1.1f ['$' or '$HELP' for help]").kind, dev::grbl::LineKind::Banner);
 }
 } // namespace

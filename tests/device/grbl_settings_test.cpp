@@ -8,7 +8,7 @@
 
 namespace {
 
-using namespace grbl;
+using namespace dev::grbl;
 
 /// The $$ printout of the GRBL 1.1 settings document's example machine, with homing on.
 const char* kStockDump = "$0=10\n$1=25\n$2=0\n$3=2\n$4=0\n$5=0\n$6=0\n$10=1\n$11=0.010\n$12=0.002\n$13=0\n$20=1\n$21=1\n$22=1\n"
@@ -32,7 +32,7 @@ TEST(GrblSettings, StockDumpGivesPerAxisLimitsInMmAndSeconds)
     const Settings s = read(kStockDump);
     EXPECT_EQ(s.size(), 34u);
     const LimitsRead r = machineLimits(s);
-    ASSERT_TRUE(r.limits) << (r.problems.empty() ? "" : msg::debugString(r.problems[0]));
+    ASSERT_TRUE(r.limits) << (r.problems.empty() ? "" : motion::msg::debugString(r.problems[0]));
     const MachineLimits& m = *r.limits;
     ASSERT_EQ(m.axes.size(), 3u);
     EXPECT_DOUBLE_EQ(m.axes[0].maxRateMmS, 500.0 / 60);  // mm/min → mm/s

@@ -7,14 +7,14 @@
 
 namespace {
 
-using namespace grbl;
+using namespace dev::grbl;
 
 StatusReport parsed(std::string_view line)
 {
     const Line l = classifyLine(line);
     EXPECT_EQ(l.kind, LineKind::Status) << line;
     StatusParse p = parseStatusReport(l.payload);
-    EXPECT_TRUE(p.report) << line << " " << msg::debugString(p.problem);
+    EXPECT_TRUE(p.report) << line << " " << motion::msg::debugString(p.problem);
     return p.report ? *p.report : StatusReport{};
 }
 

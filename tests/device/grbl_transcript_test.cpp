@@ -10,12 +10,12 @@
 
 namespace {
 
-using namespace grbl;
+using namespace dev::grbl;
 
 struct Client {
     Streamer streamer;
     StatusTracker tracker;
-    std::vector<msg::Message> shown;  ///< what a person would be told
+    std::vector<motion::msg::Message> shown;  ///< what a person would be told
     std::vector<std::string> lost;    ///< lines a reset swallowed
     int unknown = 0, banners = 0;
 

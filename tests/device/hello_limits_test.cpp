@@ -16,7 +16,7 @@
 
 namespace {
 
-using namespace proto;
+using namespace dev::proto;
 
 /// What the firmware answers to one HELLO with this payload.
 struct Answer {
@@ -24,7 +24,7 @@ struct Answer {
     Bytes payload;
 };
 
-Answer helloTo(sim::Firmware& fw, const Bytes& payload, std::uint16_t seq)
+Answer helloTo(dev::sim::Firmware& fw, const Bytes& payload, std::uint16_t seq)
 {
     std::vector<std::uint8_t> wire;
     EXPECT_TRUE(encodeFrame(static_cast<std::uint8_t>(MsgType::Hello), seq, payload.data(), payload.size(), wire));
@@ -47,7 +47,7 @@ std::size_t v10Size(const HelloReply& h) { return 23 + h.model.size() + h.firmwa
 
 TEST(HelloLimits, AnEmptyHelloIsAnsweredExactlyAsProtocol10Did)
 {
-    sim::Firmware fw(sim::stageConfig(), 115200);
+    dev::sim::Firmware fw(dev::sim::stageConfig(), 115200);
     const Answer a = helloTo(fw, {}, 1);
     ASSERT_EQ(a.type, replyTypeOf(MsgType::Hello));
     const auto h = decodeHelloReply(a.payload);
@@ -61,7 +61,7 @@ TEST(HelloLimits, AnEmptyHelloIsAnsweredExactlyAsProtocol10Did)
 
 TEST(HelloLimits, AHostThatAsksGetsThePlannersLimits)
 {
-    sim::Firmware fw(sim::stageConfig(), 115200);
+    dev::sim::Firmware fw(dev::sim::stageConfig(), 115200);
     const Answer a = helloTo(fw, encode(HelloRequest{HelloReadsExtensions}), 1);
     ASSERT_EQ(a.type, replyTypeOf(MsgType::Hello));
     const auto h = decodeHelloReply(a.payload);
@@ -72,7 +72,7 @@ TEST(HelloLimits, AHostThatAsksGetsThePlannersLimits)
     const MotionLimits& l = *h->motionLimits;
     EXPECT_EQ(l.profile, MotionProfile::JerkLimited);
     ASSERT_EQ(l.axes.size(), 2u);
-    const auto cfg = sim::stageConfig();
+    const auto cfg = dev::sim::stageConfig();
     for (std::size_t i = 0; i < 2; ++i) {
         EXPECT_EQ(l.axes[i].maxAccel, u32(cfg.axes[i].maxAccel * 1e3)) << "µm/s²";
         EXPECT_EQ(l.axes[i].maxJerk, u32(cfg.axes[i].maxJerk * 1e3)) << "µm/s³";
@@ -83,7 +83,7 @@ TEST(HelloLimits, AHostThatAsksGetsThePlannersLimits)
 
 TEST(HelloLimits, TheAnalyzerStatesItsSeedSCurve)
 {
-    sim::Firmware fw(sim::analyzerConfig(), 115200);
+    dev::sim::Firmware fw(dev::sim::analyzerConfig(), 115200);
     const auto h = decodeHelloReply(helloTo(fw, encode(HelloRequest{HelloReadsExtensions}), 1).payload);
     ASSERT_TRUE(h && h->motionLimits);
     const MotionLimits& l = *h->motionLimits;
@@ -102,7 +102,7 @@ TEST(HelloLimits, TheAnalyzerStatesItsSeedSCurve)
 
 TEST(HelloLimits, AnOlderDeviceRefusesThePayloadAndAnswersTheEmptyHello)
 {
-    sim::Firmware fw(sim::stageConfig(), 115200);
+    dev::sim::Firmware fw(dev::sim::stageConfig(), 115200);
     fw.setHelloExtensions(false);  // as protocol 1.0 firmware
     const Answer refused = helloTo(fw, encode(HelloRequest{HelloReadsExtensions}), 1);
     ASSERT_EQ(refused.type, static_cast<std::uint8_t>(MsgType::Error));
@@ -119,7 +119,7 @@ TEST(HelloLimits, AnOlderDeviceRefusesThePayloadAndAnswersTheEmptyHello)
 
 TEST(HelloLimits, AHelloPayloadOfMoreThanItsFlagsIsRefused)
 {
-    sim::Firmware fw(sim::stageConfig(), 115200);
+    dev::sim::Firmware fw(dev::sim::stageConfig(), 115200);
     const Answer a = helloTo(fw, {1, 0}, 1);
     EXPECT_EQ(a.type, static_cast<std::uint8_t>(MsgType::Error));
 }

@@ -11,10 +11,10 @@
 
 namespace {
 
-dev::DeviceIdentity stage(double accel, double jerk, proto::MotionProfile profile)
+dev::DeviceIdentity stage(double accel, double jerk, dev::proto::MotionProfile profile)
 {
     dev::DeviceIdentity id;
-    id.kind = proto::DeviceKind::Stage;
+    id.kind = dev::proto::DeviceKind::Stage;
     id.motionProfile = profile;
     for (char c : {'X', 'Y'}) {
         dev::AxisDescriptor a;
@@ -32,7 +32,7 @@ dev::DeviceIdentity stage(double accel, double jerk, proto::MotionProfile profil
 
 TEST(IfaceMachineModel, TheStageModelIsTheOneTheDeviceReported)
 {
-    const auto m = jobs::stageModelOf(stage(50, 700, proto::MotionProfile::JerkLimited), {});
+    const auto m = dev::jobs::stageModelOf(stage(50, 700, dev::proto::MotionProfile::JerkLimited), {});
     EXPECT_DOUBLE_EQ(m.maxSpeedMmS[0], 25);
     EXPECT_DOUBLE_EQ(m.maxAccelMmS2[1], 50);
     EXPECT_DOUBLE_EQ(m.maxJerkMmS3[0], 700);
@@ -43,7 +43,7 @@ TEST(IfaceMachineModel, TheStageModelIsTheOneTheDeviceReported)
 
 TEST(IfaceMachineModel, ADeviceThatReportedNothingIsTheReferenceStage)
 {
-    const auto m = jobs::stageModelOf(stage(0, 0, proto::MotionProfile::Unstated), {{10, 90}, {5, 95}});
+    const auto m = dev::jobs::stageModelOf(stage(0, 0, dev::proto::MotionProfile::Unstated), {{10, 90}, {5, 95}});
     const motion::scan::StageModel reference;
     EXPECT_DOUBLE_EQ(m.maxAccelMmS2[0], reference.maxAccelMmS2[0]);
     EXPECT_DOUBLE_EQ(m.maxJerkMmS3[1], reference.maxJerkMmS3[1]);
@@ -55,17 +55,17 @@ TEST(IfaceMachineModel, ADeviceThatReportedNothingIsTheReferenceStage)
 
 TEST(IfaceMachineModel, APlannerWithoutAJerkLimitIsTimedAsATrapezoid)
 {
-    const auto m = jobs::stageModelOf(stage(200, 0, proto::MotionProfile::Trapezoid), {});
-    EXPECT_DOUBLE_EQ(m.maxJerkMmS3[0], jobs::kUnlimitedJerkMmS3);
+    const auto m = dev::jobs::stageModelOf(stage(200, 0, dev::proto::MotionProfile::Trapezoid), {});
+    EXPECT_DOUBLE_EQ(m.maxJerkMmS3[0], dev::jobs::kUnlimitedJerkMmS3);
     // 10 mm at 20 mm/s and 200 mm/s²: 0.1 s up, 0.4 s cruise, 0.1 s down.
     EXPECT_NEAR(motion::scan::moveTimeS({0, 0}, {10, 0}, 20, m), 0.6, 1e-3);
 }
 
 TEST(IfaceMachineModel, TheDeckTakesTheAnalyzersReportedMotion)
 {
-    const plates::Deck file = platefiles::builtinDeck();
+    const motion::plates::Deck file = dev::files::plates::builtinDeck();
     dev::DeviceIdentity id;
-    id.motionProfile = proto::MotionProfile::SeedSCurve;
+    id.motionProfile = dev::proto::MotionProfile::SeedSCurve;
     for (char c : {'X', 'Y', 'Z', 'P'}) {
         dev::AxisDescriptor a;
         a.letter = QLatin1Char(c);
@@ -75,20 +75,20 @@ TEST(IfaceMachineModel, TheDeckTakesTheAnalyzersReportedMotion)
         a.minAccelTimeS = 0.2;
         id.axes.push_back(a);
     }
-    const plates::Deck d = jobs::deckWithDeviceMotion(file, id);
+    const motion::plates::Deck d = dev::jobs::deckWithDeviceMotion(file, id);
     EXPECT_DOUBLE_EQ(d.x.maxSpeed, 80);
     EXPECT_DOUBLE_EQ(d.y.maxAccel, 400);
     EXPECT_DOUBLE_EQ(d.z.defaultSpeed, 30);
     EXPECT_DOUBLE_EQ(d.p.accelTimeS, 0.2);
     EXPECT_EQ(d.plateSlots.size(), file.plateSlots.size());  // the rest is the file's
-    EXPECT_GT(plates::moveTimeS({{&d.x, 50}}, 0), plates::moveTimeS({{&file.x, 50}}, 0));
+    EXPECT_GT(motion::plates::moveTimeS({{&d.x, 50}}, 0), motion::plates::moveTimeS({{&file.x, 50}}, 0));
 
     // Not connected (no axes): the file as it is.
-    const plates::Deck same = jobs::deckWithDeviceMotion(file, {});
+    const motion::plates::Deck same = dev::jobs::deckWithDeviceMotion(file, {});
     EXPECT_DOUBLE_EQ(same.x.maxAccel, file.x.maxAccel);
     // Reported axes but no planner limits (protocol 1.0): only the top speed is the device's.
-    id.motionProfile = proto::MotionProfile::Unstated;
-    const plates::Deck old = jobs::deckWithDeviceMotion(file, id);
+    id.motionProfile = dev::proto::MotionProfile::Unstated;
+    const motion::plates::Deck old = dev::jobs::deckWithDeviceMotion(file, id);
     EXPECT_DOUBLE_EQ(old.x.maxSpeed, 80);
     EXPECT_DOUBLE_EQ(old.x.maxAccel, file.x.maxAccel);
     EXPECT_DOUBLE_EQ(old.x.accelTimeS, file.x.accelTimeS);

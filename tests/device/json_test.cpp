@@ -9,7 +9,7 @@
 #include <cmath>
 #include <random>
 
-using namespace jsonio;
+using namespace dev::files::json;
 
 namespace {
 ParseError errorOf(std::string_view text)

@@ -12,17 +12,17 @@
 
 namespace {
 
-using files::MachineProfile;
+using dev::files::MachineProfile;
 
-jsonio::Problems problemsOf(std::string_view text)
+dev::files::json::Problems problemsOf(std::string_view text)
 {
-    const auto r = files::parseMachineProfile(text);
+    const auto r = dev::files::parseMachineProfile(text);
     EXPECT_FALSE(r.profile.has_value());
     return r.problems;
 }
 
 /// The problem at `path` with message `id`, or nullopt (the failure prints them all).
-std::optional<msg::Problem> find(const jsonio::Problems& problems, const std::string& path, const std::string& id)
+std::optional<motion::msg::Problem> find(const dev::files::json::Problems& problems, const std::string& path, const std::string& id)
 {
     for (const auto& p : problems.list())
         if (p.path == path && p.message.id == id)
@@ -44,18 +44,18 @@ TEST(MachineProfileFile, TheExamplesLoadAndSayWhatTheyWire)
     ASSERT_GE(names.size(), 3);
     for (const QString& n : names) {
         MachineProfile p;
-        jsonio::Problems problems;
-        ASSERT_TRUE(files::loadMachineProfileFile(dir.filePath(n), &p, &problems)) << problems.format(n.toStdString());
-        EXPECT_TRUE(files::validate(p).empty()) << n.toStdString();
+        dev::files::json::Problems problems;
+        ASSERT_TRUE(dev::files::loadMachineProfileFile(dir.filePath(n), &p, &problems)) << problems.format(n.toStdString());
+        EXPECT_TRUE(dev::files::validate(p).empty()) << n.toStdString();
     }
     MachineProfile sim;
-    ASSERT_TRUE(files::loadMachineProfileFile(dir.filePath(QStringLiteral("analyzer-grbl-sim.machine.json")), &sim, nullptr));
-    EXPECT_EQ(sim.instrument, proto::DeviceKind::Analyzer);
+    ASSERT_TRUE(dev::files::loadMachineProfileFile(dir.filePath(QStringLiteral("analyzer-grbl-sim.machine.json")), &sim, nullptr));
+    EXPECT_EQ(sim.instrument, dev::proto::DeviceKind::Analyzer);
     EXPECT_EQ(sim.protocol, MachineProfile::Protocol::Grbl);
     EXPECT_EQ(sim.grblAxisOf('P'), 'A');
     EXPECT_DOUBLE_EQ(sim.pump->ulPerMm, 1.0);
     MachineProfile uno;
-    ASSERT_TRUE(files::loadMachineProfileFile(dir.filePath(QStringLiteral("stage-grbl-uno.machine.json")), &uno, nullptr));
+    ASSERT_TRUE(dev::files::loadMachineProfileFile(dir.filePath(QStringLiteral("stage-grbl-uno.machine.json")), &uno, nullptr));
     ASSERT_TRUE(uno.trigger.has_value());
     EXPECT_EQ(uno.trigger->output, MachineProfile::TriggerOutput::CoolantFlood);
     EXPECT_DOUBLE_EQ(uno.statusPollHz, 5);
@@ -63,7 +63,7 @@ TEST(MachineProfileFile, TheExamplesLoadAndSayWhatTheyWire)
 
 TEST(MachineProfileFile, AProfileRoundTripsThroughItsFile)
 {
-    MachineProfile p = files::defaultProfile(proto::DeviceKind::Analyzer);
+    MachineProfile p = dev::files::defaultProfile(dev::proto::DeviceKind::Analyzer);
     p.name = "bench 3";
     p.pump->ulPerMm = 12.5;
     p.trigger = MachineProfile::Trigger{MachineProfile::TriggerOutput::GrblHalDigital, 3};
@@ -71,12 +71,12 @@ TEST(MachineProfileFile, AProfileRoundTripsThroughItsFile)
     p.jog.refreshS = 0.04;
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("bench.machine.json"));
-    msg::Message error;
-    ASSERT_TRUE(files::saveMachineProfileFile(path, p, &error)) << msg::debugString(error);
+    motion::msg::Message error;
+    ASSERT_TRUE(dev::files::saveMachineProfileFile(path, p, &error)) << motion::msg::debugString(error);
     MachineProfile back;
-    jsonio::Problems problems;
-    ASSERT_TRUE(files::loadMachineProfileFile(path, &back, &problems)) << problems.format("bench.machine.json");
-    EXPECT_EQ(files::writeMachineProfile(back), files::writeMachineProfile(p));
+    dev::files::json::Problems problems;
+    ASSERT_TRUE(dev::files::loadMachineProfileFile(path, &back, &problems)) << problems.format("bench.machine.json");
+    EXPECT_EQ(dev::files::writeMachineProfile(back), dev::files::writeMachineProfile(p));
     EXPECT_EQ(back.trigger->port, 3);
     EXPECT_DOUBLE_EQ(back.pump->ulPerMm, 12.5);
 }
@@ -126,7 +126,7 @@ TEST(MachineProfileFile, MistakesAreReportedWithTheirPlaceAndField)
         EXPECT_EQ(p->message.text("suggestion"), "status_poll_hz");
     }
     // The place: line and column.
-    const jsonio::Problems mill =
+    const dev::files::json::Problems mill =
         problemsOf("{\n  \"schema\": \"benchpilot.machine-profile\",\n  \"version\": 1,\n  \"instrument\": \"mill\",\n  \"axes\": []\n}");
     if (const auto p = find(mill, "instrument", "file.json.not_one_of")) {
         EXPECT_EQ(p->line, 4);
@@ -141,8 +141,8 @@ TEST(MachineProfileFile, MistakesAreReportedWithTheirPlaceAndField)
 
 TEST(MachineProfileFile, AFileThatCannotBeReadSaysSo)
 {
-    jsonio::Problems problems;
-    EXPECT_FALSE(files::loadMachineProfileFile(QStringLiteral("/nonexistent/x.machine.json"), nullptr, &problems));
+    dev::files::json::Problems problems;
+    EXPECT_FALSE(dev::files::loadMachineProfileFile(QStringLiteral("/nonexistent/x.machine.json"), nullptr, &problems));
     ASSERT_EQ(problems.size(), 1u);
     EXPECT_EQ(problems.list().front().line, 0);  // the file as a whole
     EXPECT_FALSE(problems.list().front().message.empty());
@@ -150,11 +150,11 @@ TEST(MachineProfileFile, AFileThatCannotBeReadSaysSo)
 
 TEST(MachineProfileFile, TheDefaultWiringIsValidAndSaysWhere)
 {
-    for (const auto kind : {proto::DeviceKind::Analyzer, proto::DeviceKind::Stage}) {
-        const MachineProfile p = files::defaultProfile(kind);
-        EXPECT_TRUE(files::validate(p).empty());
+    for (const auto kind : {dev::proto::DeviceKind::Analyzer, dev::proto::DeviceKind::Stage}) {
+        const MachineProfile p = dev::files::defaultProfile(kind);
+        EXPECT_TRUE(dev::files::validate(p).empty());
         EXPECT_EQ(p.grblAxisOf('X'), 'X');
-        EXPECT_EQ(p.grblAxisOf('P'), kind == proto::DeviceKind::Analyzer ? 'A' : 0);
+        EXPECT_EQ(p.grblAxisOf('P'), kind == dev::proto::DeviceKind::Analyzer ? 'A' : 0);
         EXPECT_FALSE(p.trigger.has_value());
         EXPECT_DOUBLE_EQ(p.statusPollHz, 10);
     }

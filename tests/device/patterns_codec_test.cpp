@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-using namespace proto;
+using namespace dev::proto;
 
 namespace {
 Bytes with(Bytes b, std::size_t at, std::uint8_t v)

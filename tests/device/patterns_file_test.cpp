@@ -30,7 +30,7 @@ std::string slurp(const std::string& path)
 
 std::string problemsOf(std::string_view text)
 {
-    return i18ntest::englishFormat(files::parsePattern(text).problems, "p.pattern.json");
+    return i18ntest::englishFormat(dev::files::parsePattern(text).problems, "p.pattern.json");
 }
 
 }  // namespace
@@ -42,10 +42,10 @@ TEST(PatternsFile, EveryExampleLoadsPlansAndIsWrittenExactlyAsStored)
     ASSERT_GE(names.size(), 6);
     for (const QString& n : names) {
         const std::string text = slurp(examplesDir() + n.toStdString());
-        const auto r = files::parsePattern(text);
+        const auto r = dev::files::parsePattern(text);
         ASSERT_TRUE(r.pattern) << n.toStdString() << "\n" << i18ntest::englishFormat(r.problems, n.toStdString());
         EXPECT_FALSE(motion::plans::plan(*r.pattern).empty()) << n.toStdString();
-        EXPECT_EQ(files::writePattern(*r.pattern), text) << n.toStdString() << " is not in the writer's form";
+        EXPECT_EQ(dev::files::writePattern(*r.pattern), text) << n.toStdString() << " is not in the writer's form";
     }
 }
 
@@ -60,10 +60,10 @@ TEST(PatternsFile, EveryShapeRoundTrips)
         p.rectangle.clockwise = true;
         p.raster.alongY = true;
         p.wave.angleDeg = 12.5;
-        const std::string text = files::writePattern(p);
-        const auto r = files::parsePattern(text);
+        const std::string text = dev::files::writePattern(p);
+        const auto r = dev::files::parsePattern(text);
         ASSERT_TRUE(r.pattern) << text << i18ntest::englishFormat(r.problems, "x");
-        EXPECT_EQ(files::writePattern(*r.pattern), text);
+        EXPECT_EQ(dev::files::writePattern(*r.pattern), text);
         EXPECT_EQ(motion::plans::plan(*r.pattern).size(), motion::plans::plan(p).size());
     }
 }
@@ -114,17 +114,17 @@ TEST(PatternsFile, SaveIsAtomicAndLoadNamesTheFile)
     const QString path = tmp.filePath(QStringLiteral("c.pattern.json"));
     Pattern p;
     p.name = "c";
-    msg::Message error;
-    ASSERT_TRUE(files::savePatternFile(path, p, &error)) << error;
+    motion::msg::Message error;
+    ASSERT_TRUE(dev::files::savePatternFile(path, p, &error)) << error;
     Pattern back;
-    jsonio::Problems problems;
-    ASSERT_TRUE(files::loadPatternFile(path, &back, &problems)) << i18ntest::englishFormat(problems, "c.pattern.json");
+    dev::files::json::Problems problems;
+    ASSERT_TRUE(dev::files::loadPatternFile(path, &back, &problems)) << i18ntest::englishFormat(problems, "c.pattern.json");
     EXPECT_EQ(back.name, "c");
     EXPECT_EQ(back.circle.radiusMm, p.circle.radiusMm);
     std::ofstream(tmp.filePath(QStringLiteral("bad.pattern.json")).toStdString()) << "{\"schema\": \"benchpilot.pattern\"}";
-    EXPECT_FALSE(files::loadPatternFile(tmp.filePath(QStringLiteral("bad.pattern.json")), &back, &problems));
+    EXPECT_FALSE(dev::files::loadPatternFile(tmp.filePath(QStringLiteral("bad.pattern.json")), &back, &problems));
     EXPECT_EQ(i18ntest::englishFormat(problems, "bad.pattern.json").rfind("bad.pattern.json:1:", 0), 0u) << i18ntest::englishFormat(problems, "bad.pattern.json");
-    jsonio::Problems none;
-    EXPECT_FALSE(files::loadPatternFile(tmp.filePath(QStringLiteral("none.pattern.json")), &back, &none));
+    dev::files::json::Problems none;
+    EXPECT_FALSE(dev::files::loadPatternFile(tmp.filePath(QStringLiteral("none.pattern.json")), &back, &none));
     EXPECT_NE(i18ntest::englishFormat(none, "x").find("none.pattern.json"), std::string::npos);
 }

@@ -10,19 +10,19 @@
 
 namespace {
 
-using proto::MsgType;
+using dev::proto::MsgType;
 
 struct Wire {
-    sim::Firmware fw{sim::stageConfig(), 115200};
+    dev::sim::Firmware fw{dev::sim::stageConfig(), 115200};
     std::uint16_t seq = 1;
-    proto::FrameDecoder decoder;
-    std::vector<proto::Frame> replies;
-    std::vector<proto::EventMsg> events;
+    dev::proto::FrameDecoder decoder;
+    std::vector<dev::proto::Frame> replies;
+    std::vector<dev::proto::EventMsg> events;
 
-    std::uint16_t send(MsgType type, const proto::Bytes& payload = {})
+    std::uint16_t send(MsgType type, const dev::proto::Bytes& payload = {})
     {
         std::vector<std::uint8_t> wire;
-        proto::encodeFrame(static_cast<std::uint8_t>(type), seq, payload.data(), payload.size(), wire);
+        dev::proto::encodeFrame(static_cast<std::uint8_t>(type), seq, payload.data(), payload.size(), wire);
         fw.receive(wire.data(), wire.size());
         pump();
         return seq++;
@@ -31,11 +31,11 @@ struct Wire {
     {
         std::vector<std::uint8_t> out;
         fw.drainOutput(out);
-        std::vector<proto::Frame> frames;
+        std::vector<dev::proto::Frame> frames;
         decoder.feed(out.data(), out.size(), frames);
         for (auto& f : frames) {
             if (f.type == static_cast<std::uint8_t>(MsgType::Event))
-                events.push_back(*proto::decodeEvent(f.payload));
+                events.push_back(*dev::proto::decodeEvent(f.payload));
             else if (f.type != static_cast<std::uint8_t>(MsgType::TelemetryBatch))
                 replies.push_back(f);
         }
@@ -50,23 +50,23 @@ struct Wire {
                 send(MsgType::Status);
         }
     }
-    const proto::Frame& reply(std::uint16_t s) const
+    const dev::proto::Frame& reply(std::uint16_t s) const
     {
         for (auto it = replies.rbegin(); it != replies.rend(); ++it)
             if (it->seq == s)
                 return *it;
-        static proto::Frame none;
+        static dev::proto::Frame none;
         ADD_FAILURE() << "no reply to seq " << s;
         return none;
     }
-    proto::PathStatusReply pathStatus(std::uint16_t s) const
+    dev::proto::PathStatusReply pathStatus(std::uint16_t s) const
     {
         const auto& f = reply(s);
-        auto d = proto::decodePathStatusReply(f.payload);
+        auto d = dev::proto::decodePathStatusReply(f.payload);
         EXPECT_TRUE(d) << "type 0x" << std::hex << int(f.type);
-        return d ? *d : proto::PathStatusReply{};
+        return d ? *d : dev::proto::PathStatusReply{};
     }
-    int count(proto::EventKind k) const
+    int count(dev::proto::EventKind k) const
     {
         int n = 0;
         for (const auto& e : events)
@@ -76,22 +76,22 @@ struct Wire {
     void homeAndBegin()
     {
         send(MsgType::Hello);
-        send(MsgType::Home, proto::encode(proto::HomeRequest{0}));
+        send(MsgType::Home, dev::proto::encode(dev::proto::HomeRequest{0}));
         advance(30, true);
         ASSERT_TRUE(fw.machine().homed(0) && fw.machine().homed(1));
-        const auto b = send(MsgType::PathBegin, proto::encode(proto::PathBeginRequest{}));
+        const auto b = send(MsgType::PathBegin, dev::proto::encode(dev::proto::PathBeginRequest{}));
         ASSERT_EQ(reply(b).type, 0x90);
     }
     std::uint16_t appendLine(std::uint32_t index, double x, double y, std::uint8_t flags, double feed = 10)
     {
-        proto::PathAppendRequest a;
+        dev::proto::PathAppendRequest a;
         a.firstIndex = index;
         a.flags = flags;
         motion::path::Segment s;
         s.end = {x, y};
         s.feedMmS = feed;
         a.segments = {dev::toWire(s)};
-        return send(MsgType::PathAppend, proto::encode(a));
+        return send(MsgType::PathAppend, dev::proto::encode(a));
     }
 };
 
@@ -104,7 +104,7 @@ TEST(PatternsFirmwarePath, AppendRepliesWithTheFillState)
     const auto s = w.appendLine(0, 30, 0, 0);
     const auto st = w.pathStatus(s);
     EXPECT_EQ(w.reply(s).type, 0x91);
-    EXPECT_EQ(st.state, proto::PathState::Filling);
+    EXPECT_EQ(st.state, dev::proto::PathState::Filling);
     EXPECT_EQ(st.capacity, 32);
     EXPECT_EQ(st.freeSlots, 31);
     EXPECT_EQ(st.nextIndex, 1u);
@@ -112,12 +112,12 @@ TEST(PatternsFirmwarePath, AppendRepliesWithTheFillState)
     EXPECT_EQ(w.reply(q).type, 0x92);
     EXPECT_EQ(w.pathStatus(q).nextIndex, 1u);
     // A retransmitted append (same seq and bytes) is answered from the cache, not queued twice.
-    proto::PathAppendRequest a;
+    dev::proto::PathAppendRequest a;
     a.firstIndex = 1;
     a.segments = {dev::toWire(motion::path::Segment{motion::path::SegmentKind::Line, {30, 0}, {30, 20}, {}, 10, {}})};
-    const auto payload = proto::encode(a);
+    const auto payload = dev::proto::encode(a);
     std::vector<std::uint8_t> wire;
-    proto::encodeFrame(0x11, 500, payload.data(), payload.size(), wire);
+    dev::proto::encodeFrame(0x11, 500, payload.data(), payload.size(), wire);
     w.fw.receive(wire.data(), wire.size());
     w.fw.receive(wire.data(), wire.size());
     w.pump();
@@ -129,22 +129,22 @@ TEST(PatternsFirmwarePath, ASilentHostGetsAFeedHoldOnThePath)
 {
     Wire w;
     w.homeAndBegin();
-    w.appendLine(0, 90, 0, proto::PathAppendStart | proto::PathAppendLast);
+    w.appendLine(0, 90, 0, dev::proto::PathAppendStart | dev::proto::PathAppendLast);
     w.advance(0.5, true);
     ASSERT_TRUE(w.fw.machine().paths().moving());
     w.advance(0.9, false);  // quiet, but not for long enough
-    EXPECT_EQ(w.fw.machine().paths().state(), proto::PathState::Running);
+    EXPECT_EQ(w.fw.machine().paths().state(), dev::proto::PathState::Running);
     w.advance(1.0, false);
-    EXPECT_EQ(w.fw.machine().paths().state(), proto::PathState::Held);
-    EXPECT_EQ(w.fw.machine().paths().status().reason, proto::PathReason::HostSilent);
-    EXPECT_EQ(w.count(proto::EventKind::PathHeld), 1);
+    EXPECT_EQ(w.fw.machine().paths().state(), dev::proto::PathState::Held);
+    EXPECT_EQ(w.fw.machine().paths().status().reason, dev::proto::PathReason::HostSilent);
+    EXPECT_EQ(w.count(dev::proto::EventKind::PathHeld), 1);
     const double x = w.fw.machine().commandedLogical(0);
     EXPECT_LT(x, 90);
     w.advance(1.0, false);
     EXPECT_EQ(w.fw.machine().commandedLogical(0), x);  // at rest, waiting
     w.send(MsgType::PathResume);                       // the host is back (same session)
     w.advance(12, true);
-    EXPECT_EQ(w.fw.machine().paths().state(), proto::PathState::Done);
+    EXPECT_EQ(w.fw.machine().paths().state(), dev::proto::PathState::Done);
     EXPECT_NEAR(w.fw.machine().commandedLogical(0), 90, 1e-3);
 }
 
@@ -152,16 +152,16 @@ TEST(PatternsFirmwarePath, ANewSessionEndsThePathItDidNotQueue)
 {
     Wire w;
     w.homeAndBegin();
-    w.appendLine(0, 90, 0, proto::PathAppendStart | proto::PathAppendLast);
+    w.appendLine(0, 90, 0, dev::proto::PathAppendStart | dev::proto::PathAppendLast);
     w.advance(0.5, true);
     w.seq = 1;  // a restarted host numbers afresh and opens with HELLO
     w.send(MsgType::Hello);
     w.advance(2.0, true);
     const auto st = w.fw.machine().paths().status();
-    EXPECT_EQ(st.state, proto::PathState::Aborted);
-    EXPECT_EQ(st.reason, proto::PathReason::NewSession);
+    EXPECT_EQ(st.state, dev::proto::PathState::Aborted);
+    EXPECT_EQ(st.reason, dev::proto::PathReason::NewSession);
     EXPECT_EQ(st.executingIndex, 0u);  // segment 0 was not completed: a restart begins there
-    EXPECT_EQ(w.count(proto::EventKind::PathAborted), 1);
+    EXPECT_EQ(w.count(dev::proto::EventKind::PathAborted), 1);
     EXPECT_LT(w.fw.machine().commandedLogical(0), 90);
 }
 
@@ -169,19 +169,19 @@ TEST(PatternsFirmwarePath, ClearOvertakesQueuedRequestsAndStopsOnThePath)
 {
     Wire w;
     w.homeAndBegin();
-    w.appendLine(0, 60, 60, proto::PathAppendStart | proto::PathAppendLast);
+    w.appendLine(0, 60, 60, dev::proto::PathAppendStart | dev::proto::PathAppendLast);
     w.advance(1.0, true);
     // CLEAR and a STATUS in one read: the realtime request is acted on first.
     std::vector<std::uint8_t> wire;
-    proto::encodeFrame(0x12, 900, nullptr, 0, wire);
-    proto::encodeFrame(0x26, 901, nullptr, 0, wire);
+    dev::proto::encodeFrame(0x12, 900, nullptr, 0, wire);
+    dev::proto::encodeFrame(0x26, 901, nullptr, 0, wire);
     w.fw.receive(wire.data(), wire.size());
     w.pump();
     ASSERT_GE(w.replies.size(), 2u);
     EXPECT_EQ(w.replies[w.replies.size() - 2].seq, 901);
-    EXPECT_EQ(w.pathStatus(900).state, proto::PathState::Holding);
+    EXPECT_EQ(w.pathStatus(900).state, dev::proto::PathState::Holding);
     w.advance(1.0, true);
-    EXPECT_EQ(w.fw.machine().paths().status().reason, proto::PathReason::Cleared);
+    EXPECT_EQ(w.fw.machine().paths().status().reason, dev::proto::PathReason::Cleared);
     const double x = w.fw.machine().commandedLogical(0), y = w.fw.machine().commandedLogical(1);
     EXPECT_NEAR(x, y, 1e-3);  // stopped on the diagonal it was running along
     const auto again = w.appendLine(1, 10, 10, 0);
@@ -195,10 +195,10 @@ TEST(PatternsFirmwarePath, ASpedUpSimulatorJudgesHostSilenceOnTheHostsClock)
     Wire w;
     w.fw.setHostSilenceLimitS(10.0);
     w.homeAndBegin();
-    w.appendLine(0, 90, 0, proto::PathAppendStart | proto::PathAppendLast, 5);
+    w.appendLine(0, 90, 0, dev::proto::PathAppendStart | dev::proto::PathAppendLast, 5);
     w.advance(0.5, true);
     w.advance(5.0, false);
-    EXPECT_EQ(w.fw.machine().paths().state(), proto::PathState::Running);
+    EXPECT_EQ(w.fw.machine().paths().state(), dev::proto::PathState::Running);
     w.advance(6.0, false);
-    EXPECT_EQ(w.fw.machine().paths().state(), proto::PathState::Held);
+    EXPECT_EQ(w.fw.machine().paths().state(), dev::proto::PathState::Held);
 }

@@ -45,10 +45,10 @@ inline std::vector<Segment> circle(Vec2 c, double r, bool ccw, double feed)
     return out;
 }
 
-inline proto::PathAppendRequest appendOf(const std::vector<Segment>& path, std::size_t from, std::size_t count,
+inline dev::proto::PathAppendRequest appendOf(const std::vector<Segment>& path, std::size_t from, std::size_t count,
                                          std::uint32_t firstIndex, std::uint8_t flags)
 {
-    proto::PathAppendRequest r;
+    dev::proto::PathAppendRequest r;
     r.firstIndex = firstIndex;
     r.flags = flags;
     for (std::size_t k = from; k < from + count && k < path.size(); ++k)
@@ -59,19 +59,19 @@ inline proto::PathAppendRequest appendOf(const std::vector<Segment>& path, std::
 /// Streams a path into a machine's queue the way a host does: fill what is free, then top up
 /// as segments complete; runs until the path ends. `eachTick` sees every tick.
 struct PathRun {
-    sim::SimMachine& m;
+    dev::sim::SimMachine& m;
     simtest::Runner& r;
     std::vector<Segment> path;
     std::size_t sent = 0;
     double maxSpeedSeen = 0;
 
-    std::optional<proto::ErrorReply> begin(std::uint32_t firstIndex = 0)
+    std::optional<dev::proto::ErrorReply> begin(std::uint32_t firstIndex = 0)
     {
-        proto::PathBeginRequest b;
+        dev::proto::PathBeginRequest b;
         b.firstIndex = firstIndex;
         return m.paths().begin(b);
     }
-    std::optional<proto::ErrorReply> topUp(std::uint32_t firstIndex = 0)
+    std::optional<dev::proto::ErrorReply> topUp(std::uint32_t firstIndex = 0)
     {
         const auto st = m.paths().status();
         const std::size_t n = std::min<std::size_t>(st.freeSlots, path.size() - sent);
@@ -79,7 +79,7 @@ struct PathRun {
             return std::nullopt;
         const bool last = sent + n == path.size();
         auto e = m.paths().append(appendOf(path, sent, n, firstIndex + static_cast<std::uint32_t>(sent),
-                                           static_cast<std::uint8_t>(proto::PathAppendStart | (last ? proto::PathAppendLast : 0))));
+                                           static_cast<std::uint8_t>(dev::proto::PathAppendStart | (last ? dev::proto::PathAppendLast : 0))));
         if (!e)
             sent += n;
         return e;
@@ -87,7 +87,7 @@ struct PathRun {
     /// Runs until the path is done or aborted (or timeoutS); tops the queue up every 10 ms.
     bool run(double timeoutS, const std::function<void()>& eachTick = {})
     {
-        const auto ticks = static_cast<long>(timeoutS / sim::SimMachine::kTickS);
+        const auto ticks = static_cast<long>(timeoutS / dev::sim::SimMachine::kTickS);
         for (long k = 0; k < ticks; ++k) {
             if (k % 100 == 0 && sent < path.size())
                 topUp();
@@ -97,14 +97,14 @@ struct PathRun {
                 eachTick();
             r.take();
             const auto s = m.paths().state();
-            if (s == proto::PathState::Done || s == proto::PathState::Aborted)
-                return s == proto::PathState::Done;
+            if (s == dev::proto::PathState::Done || s == dev::proto::PathState::Aborted)
+                return s == dev::proto::PathState::Done;
         }
         return false;
     }
 };
 
 /// Measured XY (host coordinates, mm).
-inline Vec2 measuredXy(const sim::SimMachine& m) { return {m.measuredLogical(0), m.measuredLogical(1)}; }
+inline Vec2 measuredXy(const dev::sim::SimMachine& m) { return {m.measuredLogical(0), m.measuredLogical(1)}; }
 
 } // namespace pathtest

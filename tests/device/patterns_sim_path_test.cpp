@@ -10,8 +10,8 @@ using simtest::HomedMachine;
 
 namespace {
 
-using StagePath = HomedMachine<sim::stageConfig>;
-using AnalyzerPath = HomedMachine<sim::analyzerConfig>;
+using StagePath = HomedMachine<dev::sim::stageConfig>;
+using AnalyzerPath = HomedMachine<dev::sim::analyzerConfig>;
 
 }  // namespace
 
@@ -30,8 +30,8 @@ TEST_F(StagePath, TenMillimetreCircleAtTwoMmSIsFollowedWithinTwoMicrometres)
     EXPECT_GT(s.samples, 150000u);  // 31.4 mm at 2 mm/s, every 100 µs tick
     EXPECT_LT(s.maxAbsMm, 0.002) << "max contour error " << s.maxAbsMm * 1e3 << " µm at " << s.atPathMm << " mm of " << tracker.totalMm();
     EXPECT_NEAR(run.maxSpeedSeen, 2.0, 1e-9);
-    EXPECT_EQ(r.count(proto::EventKind::PathSegmentDone), 4);
-    EXPECT_EQ(r.count(proto::EventKind::PathDone), 1);
+    EXPECT_EQ(r.count(dev::proto::EventKind::PathSegmentDone), 4);
+    EXPECT_EQ(r.count(dev::proto::EventKind::PathDone), 1);
     EXPECT_NEAR(m.commandedLogical(0), 55, 1e-3);
     EXPECT_NEAR(m.commandedLogical(1), 50, 1e-3);
 }
@@ -74,7 +74,7 @@ TEST_F(StagePath, ShallowJunctionsAreRunWithoutStopping)
         lastIndex = st.executingIndex;
     }));
     EXPECT_GT(minInside, 4.0) << "the path slowed to " << minInside << " mm/s at a 6° junction";
-    EXPECT_EQ(r.count(proto::EventKind::PathUnderrun), 0);
+    EXPECT_EQ(r.count(dev::proto::EventKind::PathUnderrun), 0);
 }
 
 TEST_F(StagePath, AReversalStopsButAShallowBendDoesNot)
@@ -99,15 +99,15 @@ TEST_F(StagePath, ASegmentBeyondTheSoftLimitsIsRefusedByNameAndNothingIsQueued)
                                  arc({20, 60}, {20, 40}, {20, 50}, true, 10),   // bulges to x = 10: fine
                                  line({20, 40}, {101, 40}, 10)};                // X beyond 100
     ASSERT_FALSE(m.paths().begin({}));
-    const auto e = m.paths().append(appendOf(path, 0, path.size(), 0, proto::PathAppendStart));
+    const auto e = m.paths().append(appendOf(path, 0, path.size(), 0, dev::proto::PathAppendStart));
     ASSERT_TRUE(e);
-    EXPECT_EQ(e->code, proto::ErrorCode::SoftLimit);
+    EXPECT_EQ(e->code, dev::proto::ErrorCode::SoftLimit);
     EXPECT_EQ(e->axis, 0);
     EXPECT_EQ(e->value, 100000000);
     EXPECT_NE(e->message.find("segment 4 (LINE)"), std::string::npos) << e->message;
-    EXPECT_EQ(m.paths().status().freeSlots, sim::PathQueue::kCapacity);
+    EXPECT_EQ(m.paths().status().freeSlots, dev::sim::PathQueue::kCapacity);
     EXPECT_EQ(m.paths().status().nextIndex, 0u);
-    EXPECT_EQ(m.paths().status().state, proto::PathState::Filling);
+    EXPECT_EQ(m.paths().status().state, dev::proto::PathState::Filling);
 }
 
 TEST_F(StagePath, AnArcWhoseBulgeAloneLeavesTheLimitsIsRefused)
@@ -116,9 +116,9 @@ TEST_F(StagePath, AnArcWhoseBulgeAloneLeavesTheLimitsIsRefused)
     const Vec2 here{m.commandedLogical(0), m.commandedLogical(1)};
     std::vector<Segment> path = {line(here, {5, 60}, 10), arc({5, 60}, {5, 40}, {5, 50}, true, 10)};
     ASSERT_FALSE(m.paths().begin({}));
-    const auto e = m.paths().append(appendOf(path, 0, 2, 0, proto::PathAppendStart));
+    const auto e = m.paths().append(appendOf(path, 0, 2, 0, dev::proto::PathAppendStart));
     ASSERT_TRUE(e);
-    EXPECT_EQ(e->code, proto::ErrorCode::SoftLimit);
+    EXPECT_EQ(e->code, dev::proto::ErrorCode::SoftLimit);
     EXPECT_EQ(e->value, 0);
     EXPECT_NE(e->message.find("segment 1 (ARC CCW) reaches X = -5.000 mm"), std::string::npos) << e->message;
 }
@@ -131,23 +131,23 @@ TEST_F(StagePath, FlowControlRefusesWhatDoesNotFitOrComesOutOfSequence)
         path.push_back(line({here.x + k * 0.1, here.y}, {here.x + (k + 1) * 0.1, here.y}, 5));
     ASSERT_FALSE(m.paths().begin({}));
     auto st = m.paths().status();
-    EXPECT_EQ(st.state, proto::PathState::Filling);
-    EXPECT_EQ(st.capacity, sim::PathQueue::kCapacity);
+    EXPECT_EQ(st.state, dev::proto::PathState::Filling);
+    EXPECT_EQ(st.capacity, dev::sim::PathQueue::kCapacity);
     ASSERT_FALSE(m.paths().append(appendOf(path, 0, 30, 0, 0)));
     st = m.paths().status();
     EXPECT_EQ(st.freeSlots, 2);
     EXPECT_EQ(st.nextIndex, 30u);
-    EXPECT_EQ(st.state, proto::PathState::Filling);  // not started: waits for START, LAST or a full queue
+    EXPECT_EQ(st.state, dev::proto::PathState::Filling);  // not started: waits for START, LAST or a full queue
     auto e = m.paths().append(appendOf(path, 30, 3, 30, 0));
     ASSERT_TRUE(e);
-    EXPECT_EQ(e->code, proto::ErrorCode::PathQueueFull);
+    EXPECT_EQ(e->code, dev::proto::ErrorCode::PathQueueFull);
     EXPECT_EQ(e->value, 2);
     e = m.paths().append(appendOf(path, 28, 2, 28, 0));  // a repeat of what was already queued
     ASSERT_TRUE(e);
-    EXPECT_EQ(e->code, proto::ErrorCode::PathSequence);
+    EXPECT_EQ(e->code, dev::proto::ErrorCode::PathSequence);
     EXPECT_EQ(e->value, 30);
     ASSERT_FALSE(m.paths().append(appendOf(path, 30, 2, 30, 0)));
-    EXPECT_EQ(m.paths().status().state, proto::PathState::Running);  // the full queue started it
+    EXPECT_EQ(m.paths().status().state, dev::proto::PathState::Running);  // the full queue started it
 }
 
 TEST_F(StagePath, RunningDryStopsAtRestAndMoreSegmentsCarryOn)
@@ -155,14 +155,14 @@ TEST_F(StagePath, RunningDryStopsAtRestAndMoreSegmentsCarryOn)
     const Vec2 here{m.commandedLogical(0), m.commandedLogical(1)};
     std::vector<Segment> path = {line(here, {here.x + 2, here.y}, 5), line({here.x + 2, here.y}, {here.x + 4, here.y}, 5)};
     ASSERT_FALSE(m.paths().begin({}));
-    ASSERT_FALSE(m.paths().append(appendOf(path, 0, 1, 0, proto::PathAppendStart)));
+    ASSERT_FALSE(m.paths().append(appendOf(path, 0, 1, 0, dev::proto::PathAppendStart)));
     r.run(2);
-    EXPECT_EQ(m.paths().status().state, proto::PathState::Starved);
-    EXPECT_EQ(r.count(proto::EventKind::PathUnderrun), 1);
+    EXPECT_EQ(m.paths().status().state, dev::proto::PathState::Starved);
+    EXPECT_EQ(r.count(dev::proto::EventKind::PathUnderrun), 1);
     EXPECT_EQ(m.paths().status().underruns, 1);
-    ASSERT_FALSE(m.paths().append(appendOf(path, 1, 1, 1, proto::PathAppendLast)));
+    ASSERT_FALSE(m.paths().append(appendOf(path, 1, 1, 1, dev::proto::PathAppendLast)));
     r.run(2);
-    EXPECT_EQ(m.paths().status().state, proto::PathState::Done);
+    EXPECT_EQ(m.paths().status().state, dev::proto::PathState::Done);
     EXPECT_NEAR(m.commandedLogical(0), here.x + 4, 1e-3);
 }
 
@@ -177,8 +177,8 @@ TEST_F(StagePath, HoldStopsOnThePathAndResumeFinishesIt)
     r.run(0.5, [&] { tracker.add(measuredXy(m)); });
     ASSERT_FALSE(m.paths().hold());
     r.run(0.5, [&] { tracker.add(measuredXy(m)); });
-    EXPECT_EQ(m.paths().status().state, proto::PathState::Held);
-    EXPECT_EQ(r.count(proto::EventKind::PathHeld), 1);
+    EXPECT_EQ(m.paths().status().state, dev::proto::PathState::Held);
+    EXPECT_EQ(r.count(dev::proto::EventKind::PathHeld), 1);
     const double heldAt = m.commandedLogical(0);
     r.run(0.5);
     EXPECT_EQ(m.commandedLogical(0), heldAt);
@@ -203,10 +203,10 @@ TEST_F(StagePath, StopSlowsDownAlongThePathThenEndsIt)
     EXPECT_TRUE(m.paths().moving());  // slowing, not frozen
     r.run(1.0, [&] { tracker.add(measuredXy(m)); });
     const auto st = m.paths().status();
-    EXPECT_EQ(st.state, proto::PathState::Aborted);
-    EXPECT_EQ(st.reason, proto::PathReason::Stop);
+    EXPECT_EQ(st.state, dev::proto::PathState::Aborted);
+    EXPECT_EQ(st.reason, dev::proto::PathReason::Stop);
     EXPECT_EQ(st.executingIndex, 0u);
-    EXPECT_EQ(r.count(proto::EventKind::PathAborted), 1);
+    EXPECT_EQ(r.count(dev::proto::EventKind::PathAborted), 1);
     EXPECT_LT(tracker.summary().maxAbsMm, 0.002);  // it stayed on the line while braking
     EXPECT_TRUE(m.paths().append(appendOf(path, 0, 1, 0, 0)));  // PathState: begin again
 }
@@ -219,20 +219,20 @@ TEST_F(StagePath, EStopEndsThePathAtOnce)
     ASSERT_FALSE(run.topUp());
     r.run(0.5);
     ASSERT_FALSE(m.estop());
-    EXPECT_EQ(m.paths().status().state, proto::PathState::Aborted);
-    EXPECT_EQ(m.paths().status().reason, proto::PathReason::EStop);
+    EXPECT_EQ(m.paths().status().state, dev::proto::PathState::Aborted);
+    EXPECT_EQ(m.paths().status().reason, dev::proto::PathReason::EStop);
     const double x = m.commandedLogical(0);
     r.run(0.2);
     EXPECT_EQ(m.commandedLogical(0), x);
-    EXPECT_EQ(m.paths().begin({})->code, proto::ErrorCode::EStopActive);
+    EXPECT_EQ(m.paths().begin({})->code, dev::proto::ErrorCode::EStopActive);
 }
 
 TEST(PatternsSimPath, BeginNeedsHomedIdleAxes)
 {
-    sim::SimMachine m(sim::stageConfig());
+    dev::sim::SimMachine m(dev::sim::stageConfig());
     const auto e = m.paths().begin({});
     ASSERT_TRUE(e);
-    EXPECT_EQ(e->code, proto::ErrorCode::NotHomed);
+    EXPECT_EQ(e->code, dev::proto::ErrorCode::NotHomed);
 }
 
 TEST_F(AnalyzerPath, ZFollowsXyAndTheSpeedIsZeroOnlyThere)
@@ -264,7 +264,7 @@ TEST_F(AnalyzerPath, CrossCouplingFromTheEncodersTakesOutTheScrewsLeadError)
     // screws' lead errors (X +150 ppm, Y −100 ppm) put the carriage ~10 µm off the line by its
     // end; the encoders see that and the correction steers both motors back across the line.
     auto runLine = [&](double gain) {
-        sim::SimMachine mm(sim::analyzerConfig());
+        dev::sim::SimMachine mm(dev::sim::analyzerConfig());
         simtest::Runner rr{mm, {}};
         EXPECT_FALSE(mm.home(0));
         EXPECT_TRUE(rr.runUntilIdle(60));
@@ -278,7 +278,7 @@ TEST_F(AnalyzerPath, CrossCouplingFromTheEncodersTakesOutTheScrewsLeadError)
         return tracker.summary();
     };
     const auto without = runLine(0);
-    const auto with = runLine(sim::PathQueue::kDefaultCrossCouplingGain);
+    const auto with = runLine(dev::sim::PathQueue::kDefaultCrossCouplingGain);
     EXPECT_GT(without.maxAbsMm, 0.008);
     EXPECT_LT(with.maxAbsMm, 0.006);
     EXPECT_LT(with.rmsMm, 0.5 * without.rmsMm);
@@ -294,7 +294,7 @@ TEST_F(AnalyzerPath, ARectangleRoundAPlateWithTheCorrectionStaysStableAtItsCorne
     motion::path::ContourTracker tracker(path, 1);
     ASSERT_TRUE(run.run(30, [&] { tracker.add(measuredXy(m)); }));
     EXPECT_LT(tracker.summary().maxAbsMm, 0.05);  // play reverses at every corner
-    EXPECT_EQ(r.count(proto::EventKind::LostSteps), 0);
+    EXPECT_EQ(r.count(dev::proto::EventKind::LostSteps), 0);
 }
 
 TEST_F(StagePath, AHostThatKeepsTheQueueToppedUpNeverLetsItRunDry)
@@ -310,6 +310,6 @@ TEST_F(StagePath, AHostThatKeepsTheQueueToppedUpNeverLetsItRunDry)
     ASSERT_TRUE(r.runUntilIdle(30));
     ASSERT_FALSE(run.begin());
     ASSERT_TRUE(run.run(120));
-    EXPECT_EQ(r.count(proto::EventKind::PathUnderrun), 0);
-    EXPECT_EQ(r.count(proto::EventKind::PathSegmentDone), 41);
+    EXPECT_EQ(r.count(dev::proto::EventKind::PathUnderrun), 0);
+    EXPECT_EQ(r.count(dev::proto::EventKind::PathSegmentDone), 41);
 }

@@ -11,18 +11,18 @@
 
 #include <gtest/gtest.h>
 
-using namespace platefiles;
+using namespace dev::files::plates;
 using platestest::examplePath;
 using platestest::readExample;
 using platestest::text;
 
 namespace {
 
-plates::PlanContext builtinContext()
+motion::plates::PlanContext builtinContext()
 {
-    plates::PlanContext c;
+    motion::plates::PlanContext c;
     c.deck = builtinDeck();
-    for (auto& lw : plates::builtinLabware())
+    for (auto& lw : motion::plates::builtinLabware())
         c.labware[lw.id] = lw;
     return c;
 }
@@ -32,7 +32,7 @@ std::string validate(const std::string& recipe)
 {
     RecipeRead r = parseRecipe(recipe);
     if (r.recipe)
-        placeProblems(r, plates::planRecipe(*r.recipe, builtinContext()).problems);
+        placeProblems(r, motion::plates::planRecipe(*r.recipe, builtinContext()).problems);
     return i18ntest::englishFormat(r.problems, "plate.recipe.json");
 }
 
@@ -45,7 +45,7 @@ TEST(PlateFiles, TheBuiltInDeckReadsAndMatchesTheSimulatedAnalyzer)
 {
     const DeckRead r = parseDeck(builtinDeckText());
     ASSERT_TRUE(r.deck) << text(r.problems);
-    const plates::Deck& d = *r.deck;
+    const motion::plates::Deck& d = *r.deck;
     EXPECT_EQ(d.plateSlots.size(), 2u);
     ASSERT_TRUE(d.station("wash"));
     EXPECT_DOUBLE_EQ(d.syringeUl, 1000);
@@ -114,7 +114,7 @@ TEST(PlateFiles, FormProblemsOfStepsAreNamed)
 
 TEST(PlateFiles, TheExamplesLoadAndValidate)
 {
-    const plates::Deck deck = builtinDeck();
+    const motion::plates::Deck deck = builtinDeck();
     for (const char* name : {"sampling-96.recipe.json", "reagent-transfer.recipe.json"}) {
         const LoadedRecipe l = loadRecipe(examplePath(name), deck, {});
         EXPECT_TRUE(l.ok()) << name << ": " << i18ntest::englishFormat(l.problems);
@@ -129,7 +129,7 @@ TEST(PlateFiles, TheExamplesLoadAndValidate)
     EXPECT_EQ(t.context.labware.at("reservoir-12.labware.json").wells.size(), 12u);
     int rounds150 = 0;
     for (const auto& op : t.plan.ops)
-        rounds150 += op.type == plates::StepType::Aspirate && op.step == 2;
+        rounds150 += op.type == motion::plates::StepType::Aspirate && op.step == 2;
     EXPECT_EQ(rounds150, 3) << "16 wells × 150 µL through a 1000 µL syringe";
     // Written back: the same recipe.
     const std::string once = writeRecipe(t.recipe);
@@ -158,19 +158,19 @@ TEST(PlateFiles, AnOpentronsDefinitionTurnsIntoOurFrame)
     const LabwareRead r = parseLabware(readExample("deep-well-24.opentrons-labware.json"));
     ASSERT_TRUE(r.labware) << text(r.problems);
     EXPECT_TRUE(r.opentrons);
-    const plates::Labware& lw = *r.labware;
+    const motion::plates::Labware& lw = *r.labware;
     EXPECT_EQ(lw.id, "benchpilot_24_deepwell_10ml");
     EXPECT_EQ(lw.rows, 4);
     EXPECT_EQ(lw.columns, 6);
     ASSERT_EQ(lw.wells.size(), 24u);
     // Opentrons: origin front-left, y to the back (A1 at y 72.24 of 85.48).
     // Ours: origin back-left, y to the front: A1 is 13.24 mm from the back edge.
-    const plates::Well* a1 = lw.wellNamed("A1");
+    const motion::plates::Well* a1 = lw.wellNamed("A1");
     EXPECT_DOUBLE_EQ(a1->xMm, 13.88);
     EXPECT_NEAR(a1->yMm, 85.48 - 72.24, 1e-12);
     EXPECT_NEAR(lw.wellNamed("D1")->yMm, 85.48 - 12.24, 1e-12);
     EXPECT_GT(lw.wellNamed("D1")->yMm, a1->yMm) << "row D is in front of row A";
-    EXPECT_EQ(a1->shape, plates::WellShape::Rectangular);
+    EXPECT_EQ(a1->shape, motion::plates::WellShape::Rectangular);
     EXPECT_DOUBLE_EQ(a1->sizeXMm, 17);
     EXPECT_DOUBLE_EQ(a1->bottomZMm, 4);
     EXPECT_DOUBLE_EQ(a1->volumeUl, 10000);
@@ -212,7 +212,7 @@ TEST(PlateFiles, OurLabwareFormatReadsBothGridAndWellLists)
     EXPECT_EQ(r.labware->wells.size(), 12u);
     EXPECT_NEAR(r.labware->wellNamed("A12")->xMm, 13.94 + 99, 1e-9);
     // An irregular plate is written well by well.
-    plates::Labware odd = *r.labware;
+    motion::plates::Labware odd = *r.labware;
     odd.wells.erase(odd.wells.begin() + 3);
     const std::string text2 = writeLabware(odd);
     EXPECT_NE(text2.find("\"wells\""), std::string::npos);
@@ -221,7 +221,7 @@ TEST(PlateFiles, OurLabwareFormatReadsBothGridAndWellLists)
     EXPECT_EQ(back.labware->wells.size(), 11u);
     EXPECT_FALSE(back.labware->wellNamed("A4"));
     // Built-ins export and read back the same.
-    for (const auto& lw : plates::builtinLabware()) {
+    for (const auto& lw : motion::plates::builtinLabware()) {
         const LabwareRead b = parseLabware(writeLabware(lw));
         ASSERT_TRUE(b.labware) << lw.id << text(b.problems);
         EXPECT_EQ(writeLabware(*b.labware), writeLabware(lw)) << lw.id;
@@ -244,7 +244,7 @@ TEST(PlateFiles, EveryLabwareExampleLoadsAndTheFormatKeepsIt)
     const LabwareRead pcr = parseLabware(readExample("pcr-plate-96.labware.json"));
     ASSERT_TRUE(pcr.labware) << text(pcr.problems);
     EXPECT_EQ(pcr.labware->wells.size(), 96u);
-    const plates::Well* h12 = pcr.labware->wellNamed("H12");
+    const motion::plates::Well* h12 = pcr.labware->wellNamed("H12");
     ASSERT_TRUE(h12);
     EXPECT_NEAR(h12->xMm, 14.38 + 11 * 9, 1e-9);
     EXPECT_NEAR(h12->yMm, 11.24 + 7 * 9, 1e-9);
@@ -258,7 +258,7 @@ TEST(PlateFiles, CalibrationIsKeptPerSlotAndRefittedOnReading)
     ASSERT_EQ(r.calibrations.size(), 1u);
     const auto& c = r.calibrations[0];
     EXPECT_EQ(c.slot, "1");
-    EXPECT_LT(c.fit.maxResidualMm, plates::kResidualWarnMm);
+    EXPECT_LT(c.fit.maxResidualMm, motion::plates::kResidualWarnMm);
     EXPECT_NEAR(c.fit.rotationDeg, 0.27, 0.02);
     const std::string written = writeCalibration(r.deck, r.calibrations);
     const CalibrationRead again = parseCalibration(written);

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-using namespace platefiles;
+using namespace dev::files::plates;
 
 namespace {
 const char* kHeader = R"({"schema":"benchpilot.run-log","version":1,"event":"run","recipe":"r","fingerprint":"00ff","ops":4,"time":"t"})";
@@ -116,27 +116,27 @@ TEST(PlateRunLog, TheWriterAppendsSyncedLinesAndNeverOverwrites)
     const QString path = dir.filePath(QStringLiteral("run.jsonl"));
     {
         RunLogWriter w;
-        msg::Message error;
+        motion::msg::Message error;
         ASSERT_TRUE(w.create(path, &error)) << error;
-        jsonio::Value head = jsonio::schemaObject(kRunLogSchema, kRunLogVersion);
+        dev::files::json::Value head = dev::files::json::schemaObject(kRunLogSchema, kRunLogVersion);
         head.set("event", "run");
         head.set("fingerprint", "ab");
         head.set("ops", 2);
         ASSERT_TRUE(w.write(head));
-        jsonio::Value start = jsonio::Value::object();
+        dev::files::json::Value start = dev::files::json::Value::object();
         start.set("event", "start");
         start.set("op", 0);
         ASSERT_TRUE(w.write(start));
     }
     RunLogWriter again;
-    msg::Message error;
+    motion::msg::Message error;
     EXPECT_FALSE(again.create(path, &error)) << "a log is a record: never overwritten";
     ASSERT_TRUE(again.append(path, &error));
-    jsonio::Value resume = jsonio::Value::object();
+    dev::files::json::Value resume = dev::files::json::Value::object();
     resume.set("event", "resume");
     ASSERT_TRUE(again.write(resume));
     std::string text;
-    ASSERT_TRUE(files::readText(path, &text, &error));
+    ASSERT_TRUE(dev::files::readText(path, &text, &error));
     const RunLogState st = readRunLog(text);
     EXPECT_TRUE(st.problems.empty()) << i18ntest::englishFormat(st.problems, "run.jsonl");
     EXPECT_EQ(st.ops[0].state, OpState::Started);

@@ -21,6 +21,6 @@ inline std::string readExample(const char* name)
 }
 
 /// Messages of a problem list, one per line, for assertions.
-inline std::string text(const jsonio::Problems& p) { return i18ntest::englishFormat(p, "f.json"); }
+inline std::string text(const dev::files::json::Problems& p) { return i18ntest::englishFormat(p, "f.json"); }
 
 } // namespace platestest

@@ -66,7 +66,7 @@ std::string accessAs(const QString& path, uid_t uid, gid_t gid)
     return got;
 }
 
-std::string argOf(const msg::Message& m, const char* name) { return m.text(name); }
+std::string argOf(const motion::msg::Message& m, const char* name) { return m.text(name); }
 
 TEST(PortAccess, APtyWhoseModeShutsTheUserOutGivesTheGroupToJoin)
 {
@@ -104,7 +104,7 @@ TEST(PortAccess, QSerialPortsPermissionErrorIsWordedByWhatTheFileSystemSays)
     groupOnly.denied = true;
     groupOnly.group = QStringLiteral("dialout");
     groupOnly.mode = QStringLiteral("crw-rw----");
-    const msg::Message join = dev::permissionProblem(QStringLiteral("/dev/ttyUSB0"), groupOnly, QStringLiteral("Permission denied"));
+    const motion::msg::Message join = dev::permissionProblem(QStringLiteral("/dev/ttyUSB0"), groupOnly, QStringLiteral("Permission denied"));
     EXPECT_EQ(join.id, "link.port_group");
     EXPECT_EQ(argOf(join, "port"), "/dev/ttyUSB0");
     EXPECT_EQ(argOf(join, "group"), "dialout");
@@ -112,11 +112,11 @@ TEST(PortAccess, QSerialPortsPermissionErrorIsWordedByWhatTheFileSystemSays)
     dev::PortAccess noGroup = groupOnly;
     noGroup.group.clear();
     noGroup.mode = QStringLiteral("crw-------");
-    const msg::Message denied = dev::permissionProblem(QStringLiteral("/dev/ttyUSB0"), noGroup, QStringLiteral("Permission denied"));
+    const motion::msg::Message denied = dev::permissionProblem(QStringLiteral("/dev/ttyUSB0"), noGroup, QStringLiteral("Permission denied"));
     EXPECT_EQ(denied.id, "link.port_denied");
     EXPECT_EQ(argOf(denied, "mode"), "crw-------");
 
-    const msg::Message busy = dev::permissionProblem(QStringLiteral("/dev/ttyUSB0"), dev::PortAccess{}, QStringLiteral("locked"));
+    const motion::msg::Message busy = dev::permissionProblem(QStringLiteral("/dev/ttyUSB0"), dev::PortAccess{}, QStringLiteral("locked"));
     EXPECT_EQ(busy.id, "link.port_busy");
     EXPECT_EQ(argOf(busy, "detail"), "locked");
 }

@@ -40,8 +40,8 @@ TEST(ScanExports, TileConfigurationParsesByFijisRules)
     const ScanLayout l = layoutScan(p);
     ASSERT_EQ(l.grid.columns, 3);
     ASSERT_EQ(l.grid.rows, 2);
-    const auto records = scanfile::plannedRecords(p, l);
-    const auto fiji = scanread::readTileConfiguration(scanfile::tileConfiguration(p, records));
+    const auto records = dev::files::scan::plannedRecords(p, l);
+    const auto fiji = scanread::readTileConfiguration(dev::files::scan::tileConfiguration(p, records));
     ASSERT_TRUE(fiji.error.empty()) << fiji.error;
     EXPECT_EQ(fiji.dim, 2);
     ASSERT_EQ(fiji.tiles.size(), 6u);
@@ -65,11 +65,11 @@ TEST(ScanExports, TileConfigurationUsesMeasuredPositionsAndTheCameraRotation)
     ScanPlan p = plan3x2();
     p.camera.rotationDeg = 90;  // image x along stage +Y, image y (down) along stage +X
     const ScanLayout l = layoutScan(p);
-    auto records = scanfile::plannedRecords(p, l);
+    auto records = dev::files::scan::plannedRecords(p, l);
     for (auto& r : records)
         r.measuredMm = {r.plannedMm[0] + 0.00065, r.plannedMm[1]};  // one pixel off in X
     records[1].measuredMm[0] += 0.0065;                               // ten more for tile 2
-    const auto fiji = scanread::readTileConfiguration(scanfile::tileConfiguration(p, records));
+    const auto fiji = scanread::readTileConfiguration(dev::files::scan::tileConfiguration(p, records));
     ASSERT_TRUE(fiji.error.empty()) << fiji.error;
     // Tile 1 → tile 2 is +1.04 mm in X plus the extra 6.5 µm: 1610 px down the image, nothing across.
     EXPECT_NEAR(fiji.tiles[1].coords[1] - fiji.tiles[0].coords[1], 1610, 1e-3);
@@ -83,7 +83,7 @@ TEST(ScanExports, TileConfigurationNamesWithCommasAndRowsSurvive)
     ScanPlan p = plan3x2();
     p.naming.filePattern = "scan, r{row}c{col}.tif";
     const ScanLayout l = layoutScan(p);
-    const auto fiji = scanread::readTileConfiguration(scanfile::tileConfiguration(p, scanfile::plannedRecords(p, l)));
+    const auto fiji = scanread::readTileConfiguration(dev::files::scan::tileConfiguration(p, dev::files::scan::plannedRecords(p, l)));
     ASSERT_TRUE(fiji.error.empty()) << fiji.error;
     EXPECT_EQ(fiji.tiles[3].file, "scan, r1c2.tif");
 }
@@ -107,7 +107,7 @@ TEST(ScanExports, PositionListParsesByMicroManagersRules)
 {
     const ScanPlan p = plan3x2();
     const ScanLayout l = layoutScan(p);
-    const auto mm = scanread::readMicroManagerPositions(scanfile::microManagerPositions(p, l));
+    const auto mm = scanread::readMicroManagerPositions(dev::files::scan::microManagerPositions(p, l));
     ASSERT_TRUE(mm.error.empty()) << mm.error;
     ASSERT_EQ(mm.positions.size(), l.tiles.size());
     std::map<std::string, int> labels;
@@ -129,7 +129,7 @@ TEST(ScanExports, PositionListParsesByMicroManagersRules)
 
 TEST(ScanExports, MicroManagerRulesRefuseWhatMicroManagerRefuses)
 {
-    const std::string good = scanfile::microManagerPositions(plan3x2(), layoutScan(plan3x2()));
+    const std::string good = dev::files::scan::microManagerPositions(plan3x2(), layoutScan(plan3x2()));
     auto replaced = [&](const std::string& from, const std::string& to) {
         std::string s = good;
         s.replace(s.find(from), from.size(), to);
@@ -147,11 +147,11 @@ TEST(ScanExports, CsvHasPlannedAndMeasuredPositions)
     ScanPlan p = plan3x2();
     p.compensation.enabled = true;
     const ScanLayout l = layoutScan(p);
-    auto records = scanfile::plannedRecords(p, l);
+    auto records = dev::files::scan::plannedRecords(p, l);
     records[0].measuredMm = {records[0].commandedMm[0] + 0.0005, records[0].commandedMm[1] - 0.001};
     records[0].deviceTimeUs = 123456789;
     records[0].settleS = 0.031;
-    const auto rows = scanread::readCsv(scanfile::scanCsv(p, l, records));
+    const auto rows = scanread::readCsv(dev::files::scan::scanCsv(p, l, records));
     ASSERT_EQ(rows.size(), 7u);
     const auto& h = rows[0];
     auto col = [&](const char* name) {
@@ -180,8 +180,8 @@ TEST(ScanExports, WritesAllThreeFiles)
     const ScanPlan p = plan3x2();
     const ScanLayout l = layoutScan(p);
     QStringList written;
-    msg::Message error;
-    ASSERT_TRUE(scanfile::writeExports(dir.filePath(QStringLiteral("out")), p, l, scanfile::plannedRecords(p, l), &written, &error))
+    motion::msg::Message error;
+    ASSERT_TRUE(dev::files::scan::writeExports(dir.filePath(QStringLiteral("out")), p, l, dev::files::scan::plannedRecords(p, l), &written, &error))
         << error;
     ASSERT_EQ(written.size(), 3);
     for (const QString& f : written) {

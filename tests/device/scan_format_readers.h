@@ -162,9 +162,9 @@ struct MmPositionList {
     std::string error;
 };
 
-inline bool mmTypedValue(const jsonio::Value& v, std::string* error);
+inline bool mmTypedValue(const dev::files::json::Value& v, std::string* error);
 
-inline bool mmMap(const jsonio::Value& map, std::string* error)
+inline bool mmMap(const dev::files::json::Value& map, std::string* error)
 {
     if (!map.isObject()) {
         *error = "a property map must be a JSON object";
@@ -179,20 +179,20 @@ inline bool mmMap(const jsonio::Value& map, std::string* error)
 }
 
 /// {"type": T, "scalar": v} or {"type": T, "array": [...]}, T one of the serializer's value types.
-inline bool mmTypedValue(const jsonio::Value& v, std::string* error)
+inline bool mmTypedValue(const dev::files::json::Value& v, std::string* error)
 {
     static const std::set<std::string> types = {"BOOLEAN", "BYTE", "SHORT", "INTEGER", "LONG", "FLOAT", "DOUBLE", "STRING",
                                                 "UUID", "COLOR", "AFFINE_TRANSFORM", "PROPERTY_MAP", "RECTANGLE", "DIMENSION",
                                                 "POINT"};
-    const jsonio::Value* type = v.find("type");
+    const dev::files::json::Value* type = v.find("type");
     if (!v.isObject() || !type || !type->isString() || !types.count(type->asString())) {
         *error = "a value must be {\"type\": T, ...} with a known type";
         return false;
     }
     const std::string t = type->asString();
-    const jsonio::Value* scalar = v.find("scalar");
-    const jsonio::Value* array = v.find("array");
-    auto one = [&](const jsonio::Value& x) {
+    const dev::files::json::Value* scalar = v.find("scalar");
+    const dev::files::json::Value* array = v.find("array");
+    auto one = [&](const dev::files::json::Value& x) {
         if (t == "PROPERTY_MAP")
             return mmMap(x, error);
         if (t == "STRING" || t == "UUID")
@@ -220,12 +220,12 @@ inline bool mmTypedValue(const jsonio::Value& v, std::string* error)
 inline MmPositionList readMicroManagerPositions(const std::string& text)
 {
     MmPositionList out;
-    const auto parsed = jsonio::parse(text);
+    const auto parsed = dev::files::json::parse(text);
     if (!parsed) {
         out.error = "not JSON: " + i18ntest::english(parsed.error.message);
         return out;
     }
-    const jsonio::Value& doc = *parsed.value;
+    const dev::files::json::Value& doc = *parsed.value;
     const auto* enc = doc.find("encoding");
     const auto* fmt = doc.find("format");
     const auto* major = doc.find("major_version");
@@ -252,7 +252,7 @@ inline MmPositionList readMicroManagerPositions(const std::string& text)
     }
     for (const auto& msp : list->find("array")->items()) {
         MmPosition p;
-        auto scalar = [&](const char* key) -> const jsonio::Value* {
+        auto scalar = [&](const char* key) -> const dev::files::json::Value* {
             const auto* v = msp.find(key);
             return v ? v->find("scalar") : nullptr;
         };

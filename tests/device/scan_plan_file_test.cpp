@@ -23,7 +23,7 @@ QString examplesDir()
 
 std::string errors(std::string_view text)
 {
-    return i18ntest::englishFormat(scanfile::parsePlan(text).problems, "plan.scan.json");
+    return i18ntest::englishFormat(dev::files::scan::parsePlan(text).problems, "plan.scan.json");
 }
 
 ScanPlan unusualPlan()
@@ -58,10 +58,10 @@ ScanPlan unusualPlan()
 TEST(ScanPlanFile, EveryFieldRoundTrips)
 {
     const ScanPlan p = unusualPlan();
-    const std::string text = scanfile::writePlan(p);
-    const auto r = scanfile::parsePlan(text);
+    const std::string text = dev::files::scan::writePlan(p);
+    const auto r = dev::files::scan::parsePlan(text);
     ASSERT_TRUE(r.plan) << i18ntest::englishFormat(r.problems, "x");
-    EXPECT_EQ(scanfile::writePlan(*r.plan), text);
+    EXPECT_EQ(dev::files::scan::writePlan(*r.plan), text);
     EXPECT_EQ(r.plan->name, p.name);
     EXPECT_EQ(r.plan->region.vertices.size(), 3u);
     EXPECT_EQ(r.plan->region.vertices[2].yMm, 29.0625);
@@ -79,8 +79,8 @@ TEST(ScanPlanFile, ExamplesLoadAndPlan)
     ASSERT_GE(names.size(), 3) << examplesDir().toStdString();
     for (const QString& name : names) {
         ScanPlan p;
-        jsonio::Problems problems;
-        ASSERT_TRUE(scanfile::loadPlan(QDir(examplesDir()).filePath(name), &p, &problems)) << i18ntest::englishFormat(problems, name.toStdString());
+        dev::files::json::Problems problems;
+        ASSERT_TRUE(dev::files::scan::loadPlan(QDir(examplesDir()).filePath(name), &p, &problems)) << i18ntest::englishFormat(problems, name.toStdString());
         EXPECT_TRUE(validate(p, StageModel{}).empty()) << name.toStdString() << " does not fit the stage";
         EXPECT_GT(layoutScan(p).tiles.size(), 10u) << name.toStdString();
     }
@@ -88,7 +88,7 @@ TEST(ScanPlanFile, ExamplesLoadAndPlan)
 
 TEST(ScanPlanFile, ShortFilesTakeTheDefaults)
 {
-    const auto r = scanfile::parsePlan(R"({"schema": "benchpilot.scan-plan", "version": 1,
+    const auto r = dev::files::scan::parsePlan(R"({"schema": "benchpilot.scan-plan", "version": 1,
         "region": {"kind": "centre-size", "centre_mm": [50, 50], "size_mm": [5, 4]},
         "camera": {"fov_from": "field", "field_mm": [1, 1]}, "overlap": 0.25})");
     ASSERT_TRUE(r.plan) << i18ntest::englishFormat(r.problems, "x");
@@ -145,17 +145,17 @@ TEST(ScanPlanFile, SavesAtomicallyAndLoadsBack)
 {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("p.scan.json"));
-    msg::Message error;
-    ASSERT_TRUE(scanfile::savePlan(path, unusualPlan(), &error)) << error;
+    motion::msg::Message error;
+    ASSERT_TRUE(dev::files::scan::savePlan(path, unusualPlan(), &error)) << error;
     ScanPlan back;
-    jsonio::Problems problems;
-    ASSERT_TRUE(scanfile::loadPlan(path, &back, &problems)) << i18ntest::englishFormat(problems, "p.scan.json");
-    EXPECT_EQ(scanfile::writePlan(back), scanfile::writePlan(unusualPlan()));
+    dev::files::json::Problems problems;
+    ASSERT_TRUE(dev::files::scan::loadPlan(path, &back, &problems)) << i18ntest::englishFormat(problems, "p.scan.json");
+    EXPECT_EQ(dev::files::scan::writePlan(back), dev::files::scan::writePlan(unusualPlan()));
     QFile f(path);
     ASSERT_TRUE(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
     f.write("{\"schema\": \"benchpilot.scan-plan\", \"version\": 1, \"region\": {}}");
     f.close();
-    EXPECT_FALSE(scanfile::loadPlan(path, &back, &problems));
+    EXPECT_FALSE(dev::files::scan::loadPlan(path, &back, &problems));
     EXPECT_EQ(i18ntest::englishFormat(problems, "p.scan.json").rfind("p.scan.json:1:", 0), 0u) << i18ntest::englishFormat(problems, "p.scan.json");
 }
 
@@ -179,13 +179,13 @@ TEST(ScanPlanFile, SeedTwosCurvesInAnOlderPlanAreReadAndNoLongerUsed)
     // compensation); such a file still opens, and the plan asks for the device's compensation.
     ScanPlan p;
     p.compensation.enabled = true;
-    std::string text = scanfile::writePlan(p);
+    std::string text = dev::files::scan::writePlan(p);
     const std::string key = "\"enabled\": true";
     const auto at = text.find(key);
     ASSERT_NE(at, std::string::npos) << text;
     text.insert(at + key.size(), ",\n    \"x_error_poly_um\": [1.563, 0.9473, -0.0006],\n    \"y_error_poly_um\": [1.021, 0.6397, 0.0168]");
-    const auto r = scanfile::parsePlan(text);
+    const auto r = dev::files::scan::parsePlan(text);
     ASSERT_TRUE(r.plan) << r.problems.format("old.scan.json");
     EXPECT_TRUE(r.plan->compensation.enabled);
-    EXPECT_EQ(scanfile::writePlan(*r.plan).find("error_poly"), std::string::npos) << "written without them";
+    EXPECT_EQ(dev::files::scan::writePlan(*r.plan).find("error_poly"), std::string::npos) << "written without them";
 }

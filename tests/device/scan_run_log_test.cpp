@@ -24,10 +24,10 @@ motion::PositionRecord record(int tile)
 
 TEST(ScanRunLog, RecordsReadBackExactly)
 {
-    std::string text = scanfile::runLogHeader("Slide \"A\"", 0x0123456789abcdefull, 12);
+    std::string text = dev::files::scan::runLogHeader("Slide \"A\"", 0x0123456789abcdefull, 12);
     for (int t : {0, 1, 2, 5})
-        text += scanfile::runLogLine(record(t));
-    const auto r = scanfile::parseRunLog(text);
+        text += dev::files::scan::runLogLine(record(t));
+    const auto r = dev::files::scan::parseRunLog(text);
     ASSERT_TRUE(r.log) << i18ntest::englishFormat(r.problems, "run.jsonl");
     EXPECT_EQ(r.log->planName, "Slide \"A\"");
     EXPECT_EQ(r.log->fingerprint, 0x0123456789abcdefull);
@@ -46,10 +46,10 @@ TEST(ScanRunLog, RecordsReadBackExactly)
 
 TEST(ScanRunLog, ALineTornByACrashIsDropped)
 {
-    std::string text = scanfile::runLogHeader("p", 1, 4) + scanfile::runLogLine(record(0));
-    const std::string next = scanfile::runLogLine(record(1));
+    std::string text = dev::files::scan::runLogHeader("p", 1, 4) + dev::files::scan::runLogLine(record(0));
+    const std::string next = dev::files::scan::runLogLine(record(1));
     text += next.substr(0, next.size() / 2);  // the process died mid-write
-    const auto r = scanfile::parseRunLog(text);
+    const auto r = dev::files::scan::parseRunLog(text);
     ASSERT_TRUE(r.log) << i18ntest::englishFormat(r.problems, "run.jsonl");
     EXPECT_EQ(r.log->records.size(), 1u);
     EXPECT_TRUE(r.log->tornTail);
@@ -57,13 +57,13 @@ TEST(ScanRunLog, ALineTornByACrashIsDropped)
 
 TEST(ScanRunLog, DamageInsideTheLogIsAnError)
 {
-    std::string text = scanfile::runLogHeader("p", 1, 4) + scanfile::runLogLine(record(0));
-    text += "{\"tile\": 9, \"label\": \"x\"}\n" + scanfile::runLogLine(record(1));
-    const auto r = scanfile::parseRunLog(text);
+    std::string text = dev::files::scan::runLogHeader("p", 1, 4) + dev::files::scan::runLogLine(record(0));
+    text += "{\"tile\": 9, \"label\": \"x\"}\n" + dev::files::scan::runLogLine(record(1));
+    const auto r = dev::files::scan::parseRunLog(text);
     EXPECT_FALSE(r.log);
     const std::string e = i18ntest::englishFormat(r.problems, "run.jsonl");
     EXPECT_NE(e.find("run.jsonl:3:10: tile: must be from 0 to 3 (got 9)"), std::string::npos) << e;
     EXPECT_NE(e.find("run.jsonl:3:1: planned_mm: is missing"), std::string::npos) << e;
-    EXPECT_FALSE(scanfile::parseRunLog("").log);
-    EXPECT_FALSE(scanfile::parseRunLog("{\"schema\": \"benchpilot.scan-plan\", \"version\": 1}\n").log);
+    EXPECT_FALSE(dev::files::scan::parseRunLog("").log);
+    EXPECT_FALSE(dev::files::scan::parseRunLog("{\"schema\": \"benchpilot.scan-plan\", \"version\": 1}\n").log);
 }

@@ -7,7 +7,7 @@
 
 TEST(ScanStageModel, MatchesTheSimulatedStage)
 {
-    const sim::MachineConfig stage = sim::stageConfig();
+    const dev::sim::MachineConfig stage = dev::sim::stageConfig();
     const motion::scan::StageModel model;
     ASSERT_EQ(stage.axes.size(), 2u);
     for (int i = 0; i < 2; ++i) {

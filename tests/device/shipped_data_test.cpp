@@ -25,9 +25,9 @@ struct ShippedFolder {
         QDir(dir.path()).mkpath(QStringLiteral("machines"));
         QFile::copy(kExamples + QStringLiteral("/reservoir-12.labware.json"), dir.filePath(QStringLiteral("labware/reservoir-12.labware.json")));
         QFile::copy(kExamples + QStringLiteral("/stage-grbl-uno.machine.json"), dir.filePath(QStringLiteral("machines/stage-grbl-uno.machine.json")));
-        files::setShippedDataDirectory(dir.path());
+        dev::files::setShippedDataDirectory(dir.path());
     }
-    ~ShippedFolder() { files::setShippedDataDirectory({}); }
+    ~ShippedFolder() { dev::files::setShippedDataDirectory({}); }
 };
 
 TEST(ShippedData, ARecipeCopiedOutOfTheExamplesFindsTheShippedLabware)
@@ -37,14 +37,14 @@ TEST(ShippedData, ARecipeCopiedOutOfTheExamplesFindsTheShippedLabware)
     ASSERT_TRUE(QFile::copy(kExamples + QStringLiteral("/reagent-transfer.recipe.json"), recipe));
     {
         ShippedFolder shipped;
-        const platefiles::LoadedRecipe r = platefiles::loadRecipe(recipe, platefiles::builtinDeck(), {});
+        const dev::files::plates::LoadedRecipe r = dev::files::plates::loadRecipe(recipe, dev::files::plates::builtinDeck(), {});
         EXPECT_TRUE(r.ok()) << r.errorCount;
         EXPECT_EQ(r.context.labware.count("reservoir-12.labware.json"), 1u);
     }
     // With nothing shipped, the same recipe cannot read the labware it names.
-    files::setShippedDataDirectory(work.filePath(QStringLiteral("nothing-here")));
-    const platefiles::LoadedRecipe alone = platefiles::loadRecipe(recipe, platefiles::builtinDeck(), {});
-    files::setShippedDataDirectory({});
+    dev::files::setShippedDataDirectory(work.filePath(QStringLiteral("nothing-here")));
+    const dev::files::plates::LoadedRecipe alone = dev::files::plates::loadRecipe(recipe, dev::files::plates::builtinDeck(), {});
+    dev::files::setShippedDataDirectory({});
     EXPECT_FALSE(alone.ok());
 }
 
@@ -52,11 +52,11 @@ TEST(ShippedData, AMachineProfileIsFoundByItsName)
 {
     ShippedFolder shipped;
     const QString expected = shipped.dir.filePath(QStringLiteral("machines/stage-grbl-uno.machine.json"));
-    EXPECT_EQ(files::resolveMachineProfile(QStringLiteral("stage-grbl-uno")), expected);
-    EXPECT_EQ(files::resolveMachineProfile(QStringLiteral("stage-grbl-uno.machine.json")), expected);
+    EXPECT_EQ(dev::files::resolveMachineProfile(QStringLiteral("stage-grbl-uno")), expected);
+    EXPECT_EQ(dev::files::resolveMachineProfile(QStringLiteral("stage-grbl-uno.machine.json")), expected);
     // Not shipped, or a path: as typed, so opening it names what the user typed.
-    EXPECT_EQ(files::resolveMachineProfile(QStringLiteral("my-stage")), QStringLiteral("my-stage"));
-    EXPECT_EQ(files::resolveMachineProfile(QStringLiteral("profiles/stage-grbl-uno")), QStringLiteral("profiles/stage-grbl-uno"));
+    EXPECT_EQ(dev::files::resolveMachineProfile(QStringLiteral("my-stage")), QStringLiteral("my-stage"));
+    EXPECT_EQ(dev::files::resolveMachineProfile(QStringLiteral("profiles/stage-grbl-uno")), QStringLiteral("profiles/stage-grbl-uno"));
     // A file of that name in the working directory is the user's, and comes first.
     QTemporaryDir work;
     const QString here = QDir::currentPath();
@@ -64,15 +64,15 @@ TEST(ShippedData, AMachineProfileIsFoundByItsName)
     QFile own(QStringLiteral("stage-grbl-uno"));
     ASSERT_TRUE(own.open(QIODevice::WriteOnly));
     own.close();
-    EXPECT_EQ(files::resolveMachineProfile(QStringLiteral("stage-grbl-uno")), QStringLiteral("stage-grbl-uno"));
+    EXPECT_EQ(dev::files::resolveMachineProfile(QStringLiteral("stage-grbl-uno")), QStringLiteral("stage-grbl-uno"));
     QDir::setCurrent(here);
 }
 
 TEST(ShippedData, TheFolderIsFoundBesideTheProgramNotInTheSource)
 {
     // The generated path is relative: bin/ to share/benchpilot/ as installed.
-    EXPECT_FALSE(QDir::isAbsolutePath(QString::fromUtf8(files::shippedDataFromProgram())));
-    EXPECT_EQ(QString::fromUtf8(files::shippedDataFromProgram()), QStringLiteral("../share/benchpilot"));
+    EXPECT_FALSE(QDir::isAbsolutePath(QString::fromUtf8(dev::files::shippedDataFromProgram())));
+    EXPECT_EQ(QString::fromUtf8(dev::files::shippedDataFromProgram()), QStringLiteral("../share/benchpilot"));
 }
 
 } // namespace

@@ -1,5 +1,5 @@
 // The simulated analyzer's faults and stops, driven directly through
-// sim::SimMachine: limit and home switches, lost steps under overload,
+// dev::sim::SimMachine: limit and home switches, lost steps under overload,
 // backlash on reversal, E-stop, and stop of a coupled move.
 #include "sim_test_support.h"
 
@@ -13,21 +13,21 @@ namespace {
 
 using namespace simtest;
 
-using proto::ErrorCode;
-using proto::EventKind;
+using dev::proto::ErrorCode;
+using dev::proto::EventKind;
 
 constexpr int kX = 0, kY = 1, kZ = 2, kP = 3;
 
 
 
 /// An analyzer that has been homed (all axes), with its events discarded.
-struct SimAnalyzerHomedFaults : HomedMachine<sim::analyzerConfig> {};
+struct SimAnalyzerHomedFaults : HomedMachine<dev::sim::analyzerConfig> {};
 
 } // namespace
 
 TEST(SimAnalyzerFaults, MoveIntoLimitSwitchStopsTheAxisWithLimitHit)
 {
-    sim::SimMachine m(sim::analyzerConfig());
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
     Runner r{m, {}};
     // Unhomed, a relative move may run past the travel: the switch must stop it.
     ASSERT_FALSE(m.move(relMove(bit(kX), {300})));
@@ -35,7 +35,7 @@ TEST(SimAnalyzerFaults, MoveIntoLimitSwitchStopsTheAxisWithLimitHit)
     const auto* hit = r.find(EventKind::LimitHit, kX);
     ASSERT_TRUE(hit);
     EXPECT_NE(hit->text.find("limit switch"), std::string::npos) << hit->text;
-    EXPECT_TRUE(m.status().axes[kX].flags & proto::AxisLimitSwitch);
+    EXPECT_TRUE(m.status().axes[kX].flags & dev::proto::AxisLimitSwitch);
     // Stopped at the switch (200.5 machine), well short of the hard stop.
     EXPECT_LT(m.axis(kX).carriage(), 200.5 + 0.5);
     EXPECT_EQ(m.axis(kX).lostSteps(), 0);
@@ -43,25 +43,25 @@ TEST(SimAnalyzerFaults, MoveIntoLimitSwitchStopsTheAxisWithLimitHit)
     // The axis can back off the switch.
     ASSERT_FALSE(m.move(relMove(bit(kX), {-5})));
     ASSERT_TRUE(r.runUntilIdle(5));
-    EXPECT_FALSE(m.status().axes[kX].flags & proto::AxisLimitSwitch);
+    EXPECT_FALSE(m.status().axes[kX].flags & dev::proto::AxisLimitSwitch);
 }
 
 TEST(SimAnalyzerFaults, MoveIntoHomeSwitchStopsTheAxisWithLimitHit)
 {
-    sim::SimMachine m(sim::analyzerConfig());
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
     Runner r{m, {}};
     ASSERT_FALSE(m.move(relMove(bit(kY), {-300})));
     ASSERT_TRUE(r.runUntilIdle(20));
     const auto* hit = r.find(EventKind::LimitHit, kY);
     ASSERT_TRUE(hit);
     EXPECT_NE(hit->text.find("home switch"), std::string::npos) << hit->text;
-    EXPECT_TRUE(m.status().axes[kY].flags & proto::AxisHomeSwitch);
+    EXPECT_TRUE(m.status().axes[kY].flags & dev::proto::AxisHomeSwitch);
     EXPECT_GT(m.axis(kY).carriage(), -0.5 - 0.5);
 }
 
 TEST(SimAnalyzerFaults, LimitHitOnXyCancelsTheZThatWaitedForIt)
 {
-    sim::SimMachine m(sim::analyzerConfig());
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
     Runner r{m, {}};
     ASSERT_FALSE(m.move(relMove(bit(kX) | bit(kZ), {300, 5})));
     ASSERT_TRUE(r.runUntilIdle(20)) << "Z must not stay busy after its XY move was cut short";
@@ -73,7 +73,7 @@ TEST(SimAnalyzerFaults, LimitHitOnXyCancelsTheZThatWaitedForIt)
 
 TEST(SimAnalyzerFaults, OverloadLosesStepsAndReportsThem)
 {
-    sim::SimMachine m(sim::analyzerConfig());
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
     Runner r{m, {}};
     m.axis(kX).setLoadFactor(2);
     ASSERT_FALSE(m.move(relMove(bit(kX), {20})));
@@ -88,7 +88,7 @@ TEST(SimAnalyzerFaults, OverloadLosesStepsAndReportsThem)
 
 TEST(SimAnalyzerFaults, ReversalTakesUpBacklashWithoutJumpingBackwards)
 {
-    sim::SimMachine m(sim::analyzerConfig());
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
     Runner r{m, {}};
     ASSERT_FALSE(m.move(relMove(bit(kX), {10})));
     ASSERT_TRUE(r.runUntilIdle(5));
@@ -100,7 +100,7 @@ TEST(SimAnalyzerFaults, ReversalTakesUpBacklashWithoutJumpingBackwards)
     // move against the commanded direction.
     EXPECT_LE(maxCarriage, before + 1e-9);
     // After the play is taken up the carriage is short of the screw by the backlash.
-    const double backlashMm = sim::analyzerConfig().axes[kX].backlash;
+    const double backlashMm = dev::sim::analyzerConfig().axes[kX].backlash;
     EXPECT_NEAR(before - m.axis(kX).carriage(), 5 * (1 + 1.5e-4) - backlashMm, 0.003);
 }
 
@@ -113,7 +113,7 @@ TEST_F(SimAnalyzerHomedFaults, EStopHaltsAtOnceAndLatchesUntilReset)
     const double xAt = m.axis(kX).reference(), yAt = m.axis(kY).reference();
     const double carriageAt = m.axis(kX).carriage();
     EXPECT_TRUE(m.estopActive());
-    EXPECT_TRUE(m.status().deviceFlags & proto::DeviceEStop);
+    EXPECT_TRUE(m.status().deviceFlags & dev::proto::DeviceEStop);
     r.take();
     EXPECT_TRUE(r.find(EventKind::EStop, -1));
     r.run(0.5);
@@ -127,7 +127,7 @@ TEST_F(SimAnalyzerHomedFaults, EStopHaltsAtOnceAndLatchesUntilReset)
         ASSERT_TRUE(res);
         EXPECT_EQ(res->code, ErrorCode::EStopActive);
     }
-    proto::JogVelocityRequest j;
+    dev::proto::JogVelocityRequest j;
     j.axisMask = bit(kX);
     j.velocities = {nm(5)};
     const auto ej = m.jogVelocity(j);
@@ -185,9 +185,9 @@ TEST(SimAnalyzerFaults, RunsAreDeterministicForAFixedSeed)
     // Slip and switch repeatability are random, but a fixed seed replays exactly:
     // a failing test or a user's bug report can be reproduced.
     auto runOnce = [](std::uint64_t seed) {
-        auto cfg = sim::analyzerConfig();
+        auto cfg = dev::sim::analyzerConfig();
         cfg.seed = seed;
-        sim::SimMachine m(cfg);
+        dev::sim::SimMachine m(cfg);
         Runner r{m, {}};
         EXPECT_FALSE(m.home(0));
         EXPECT_TRUE(r.runUntilIdle(60));
@@ -209,8 +209,8 @@ TEST(SimAnalyzerFaults, RunsAreDeterministicForAFixedSeed)
 TEST(SimAnalyzerFaults, InProcessCallersCannotReadPastTheTargets)
 {
     // SimMachine is called directly by in-process hosts, without the decoder's checks.
-    sim::SimMachine m(sim::analyzerConfig());
-    proto::MoveRequest mv;
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
+    dev::proto::MoveRequest mv;
     mv.relative = true;
     mv.axisMask = bit(kX) | bit(kY);
     mv.targets = {nm(1)};
@@ -220,7 +220,7 @@ TEST(SimAnalyzerFaults, InProcessCallersCannotReadPastTheTargets)
     mv.axisMask = 0;
     mv.targets = {};
     EXPECT_TRUE(m.move(mv));
-    proto::JogVelocityRequest j;
+    dev::proto::JogVelocityRequest j;
     j.axisMask = bit(kZ);
     e = m.jogVelocity(j);
     ASSERT_TRUE(e);
@@ -232,7 +232,7 @@ TEST(SimAnalyzerFaults, AStalledAxisThatNeverFindsItsSwitchFaultsAndEndsTheHomin
     // Z stalls (nearly every step slips): it cannot reach its home switch. The
     // homing must end with a fault naming Z, X/Y/P must not start, and a later
     // homing must not be refused as "still running".
-    sim::SimMachine m(sim::analyzerConfig());
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
     Runner r{m, {}};
     m.axis(kZ).setLoadFactor(1000);
     ASSERT_FALSE(m.home(0));
@@ -240,8 +240,8 @@ TEST(SimAnalyzerFaults, AStalledAxisThatNeverFindsItsSwitchFaultsAndEndsTheHomin
     const auto* fault = r.find(EventKind::Fault, kZ);
     ASSERT_TRUE(fault);
     EXPECT_NE(fault->text.find("axis Z"), std::string::npos) << fault->text;
-    EXPECT_TRUE(m.status().axes[kZ].flags & proto::AxisFault);
-    EXPECT_TRUE(m.status().deviceFlags & proto::DeviceFault);
+    EXPECT_TRUE(m.status().axes[kZ].flags & dev::proto::AxisFault);
+    EXPECT_TRUE(m.status().deviceFlags & dev::proto::DeviceFault);
     for (int i : {kX, kY, kP}) {
         EXPECT_FALSE(m.homed(i));
         EXPECT_EQ(commandedMm(m, i), 0) << "axis " << i << " moved although Z never homed";
@@ -249,7 +249,7 @@ TEST(SimAnalyzerFaults, AStalledAxisThatNeverFindsItsSwitchFaultsAndEndsTheHomin
     }
     m.axis(kZ).setLoadFactor(1);
     ASSERT_FALSE(m.reset());
-    EXPECT_FALSE(m.status().deviceFlags & proto::DeviceFault);
+    EXPECT_FALSE(m.status().deviceFlags & dev::proto::DeviceFault);
     ASSERT_FALSE(m.home(0));
     ASSERT_TRUE(r.runUntilIdle(60));
     for (int i = 0; i < 4; ++i)

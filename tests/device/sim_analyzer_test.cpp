@@ -1,5 +1,5 @@
 // The simulated analyzer (reference firmware, motion side) driven directly through
-// sim::SimMachine: power-up, homing order, accuracy, soft limits, the coupled XY
+// dev::sim::SimMachine: power-up, homing order, accuracy, soft limits, the coupled XY
 // line with Z following, set zero. Faults and stops: sim_analyzer_faults_test.cpp.
 #include "sim_test_support.h"
 
@@ -13,28 +13,28 @@ namespace {
 
 using namespace simtest;
 
-using proto::ErrorCode;
-using proto::EventKind;
+using dev::proto::ErrorCode;
+using dev::proto::EventKind;
 
 constexpr int kX = 0, kY = 1, kZ = 2, kP = 3;
 
-double measuredUl(const sim::SimMachine& m) { return m.status().axes[kP].measured / 1e3; }
+double measuredUl(const dev::sim::SimMachine& m) { return m.status().axes[kP].measured / 1e3; }
 
 
 
 /// An analyzer that has been homed (all axes), with its events discarded.
-struct SimAnalyzerHomed : HomedMachine<sim::analyzerConfig> {};
+struct SimAnalyzerHomed : HomedMachine<dev::sim::analyzerConfig> {};
 
 } // namespace
 
 TEST(SimAnalyzer, PowersUpUnhomedWithCountersAtZero)
 {
-    sim::SimMachine m(sim::analyzerConfig());
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
     const auto s = m.status();
     ASSERT_EQ(s.axes.size(), 4u);
     for (std::size_t i = 0; i < s.axes.size(); ++i) {
-        EXPECT_FALSE(s.axes[i].flags & proto::AxisHomed) << i;
-        EXPECT_FALSE(s.axes[i].flags & proto::AxisMoving) << i;
+        EXPECT_FALSE(s.axes[i].flags & dev::proto::AxisHomed) << i;
+        EXPECT_FALSE(s.axes[i].flags & dev::proto::AxisMoving) << i;
         // The step counter reads zero wherever the axis happens to be.
         EXPECT_EQ(s.axes[i].commanded, 0) << i;
         // The encoder differs from the step count only by screw lead error and a count.
@@ -45,7 +45,7 @@ TEST(SimAnalyzer, PowersUpUnhomedWithCountersAtZero)
 
 TEST(SimAnalyzer, AbsoluteMoveUnhomedIsRefusedNamingTheAxis)
 {
-    sim::SimMachine m(sim::analyzerConfig());
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
     const auto e = m.move(absMove(bit(kY), {10}));
     ASSERT_TRUE(e);
     EXPECT_EQ(e->code, ErrorCode::NotHomed);
@@ -60,7 +60,7 @@ TEST(SimAnalyzer, AbsoluteMoveUnhomedIsRefusedNamingTheAxis)
 
 TEST(SimAnalyzer, RelativeMoveIsAllowedUnhomed)
 {
-    sim::SimMachine m(sim::analyzerConfig());
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
     Runner r{m, {}};
     ASSERT_FALSE(m.move(relMove(bit(kX), {5})));
     EXPECT_TRUE(moving(m, kX));
@@ -72,7 +72,7 @@ TEST(SimAnalyzer, RelativeMoveIsAllowedUnhomed)
 
 TEST(SimAnalyzer, HomingEndsHomedAtZeroOnEveryAxis)
 {
-    sim::SimMachine m(sim::analyzerConfig());
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
     Runner r{m, {}};
     ASSERT_FALSE(m.home(0));
     ASSERT_TRUE(r.runUntilIdle(60));
@@ -80,8 +80,8 @@ TEST(SimAnalyzer, HomingEndsHomedAtZeroOnEveryAxis)
     for (int i = 0; i < m.axisCount(); ++i) {
         const auto& a = s.axes[static_cast<std::size_t>(i)];
         const double resolution = m.hello(0).axes[static_cast<std::size_t>(i)].resolution;
-        EXPECT_TRUE(a.flags & proto::AxisHomed) << i;
-        EXPECT_FALSE(a.flags & (proto::AxisMoving | proto::AxisHoming)) << i;
+        EXPECT_TRUE(a.flags & dev::proto::AxisHomed) << i;
+        EXPECT_FALSE(a.flags & (dev::proto::AxisMoving | dev::proto::AxisHoming)) << i;
         EXPECT_EQ(a.commanded, 0) << i;
         EXPECT_LE(std::abs(a.measured), 3 * resolution) << "axis " << i << " measured " << a.measured;
         EXPECT_TRUE(r.find(EventKind::HomeDone, i)) << i;
@@ -90,13 +90,13 @@ TEST(SimAnalyzer, HomingEndsHomedAtZeroOnEveryAxis)
 
 TEST(SimAnalyzer, HomesZBeforeXAndY)
 {
-    sim::SimMachine m(sim::analyzerConfig());
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
     Runner r{m, {}};
     const double x0 = commandedMm(m, kX), y0 = commandedMm(m, kY);
     double xFirstMovedS = -1, yFirstMovedS = -1;
     ASSERT_FALSE(m.home(0));
     // While Z homes, X and Y report that they take part in the homing…
-    EXPECT_TRUE(m.status().axes[kX].flags & proto::AxisHoming);
+    EXPECT_TRUE(m.status().axes[kX].flags & dev::proto::AxisHoming);
     ASSERT_TRUE(r.runUntilIdle(60, [&] {
         if (xFirstMovedS < 0 && commandedMm(m, kX) != x0)
             xFirstMovedS = m.timeS();
@@ -118,7 +118,7 @@ TEST(SimAnalyzer, HomesZBeforeXAndY)
 
 TEST(SimAnalyzer, ASecondHomingDoesNotDropTheFirstOnesWaitingAxes)
 {
-    sim::SimMachine m(sim::analyzerConfig());
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
     Runner r{m, {}};
     ASSERT_FALSE(m.home(bit(kX) | bit(kZ)));  // Z now, X after it
     r.run(0.05);
@@ -134,18 +134,18 @@ TEST(SimAnalyzer, ASecondHomingDoesNotDropTheFirstOnesWaitingAxes)
 TEST(SimAnalyzer, ReportsHomedOnlyOnceHomeIsReached)
 {
     // The homed lamp must not light while the axis is still travelling to zero.
-    sim::SimMachine m(sim::analyzerConfig());
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
     Runner r{m, {}};
     ASSERT_FALSE(m.home(bit(kZ)));
     bool homedWhileMoving = false;
     ASSERT_TRUE(r.runUntilIdle(30, [&] {
         const auto f = m.status().axes[kZ].flags;
-        if ((f & proto::AxisHomed) && (f & proto::AxisMoving))
+        if ((f & dev::proto::AxisHomed) && (f & dev::proto::AxisMoving))
             homedWhileMoving = true;
-        if (f & proto::AxisHomed)
+        if (f & dev::proto::AxisHomed)
             EXPECT_TRUE(r.find(EventKind::HomeDone, kZ) || (r.take(), r.find(EventKind::HomeDone, kZ)));
         else
-            EXPECT_TRUE(f & proto::AxisHoming);
+            EXPECT_TRUE(f & dev::proto::AxisHoming);
     }));
     EXPECT_FALSE(homedWhileMoving);
     EXPECT_TRUE(m.homed(kZ));
@@ -153,7 +153,7 @@ TEST(SimAnalyzer, ReportsHomedOnlyOnceHomeIsReached)
 
 TEST(SimAnalyzer, AxesWaitingForTheirHomingStageAreBusy)
 {
-    sim::SimMachine m(sim::analyzerConfig());
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
     Runner r{m, {}};
     ASSERT_FALSE(m.home(0));
     r.run(0.05);
@@ -161,7 +161,7 @@ TEST(SimAnalyzer, AxesWaitingForTheirHomingStageAreBusy)
     const auto e = m.move(relMove(bit(kX), {1}));
     ASSERT_TRUE(e);
     EXPECT_EQ(e->code, ErrorCode::Busy);
-    proto::JogVelocityRequest j;
+    dev::proto::JogVelocityRequest j;
     j.axisMask = bit(kY);
     j.velocities = {nm(5)};
     const auto ej = m.jogVelocity(j);
@@ -191,7 +191,7 @@ TEST_F(SimAnalyzerHomed, HealthyMechanicsNeverRaiseLostSteps)
     // not lost steps and must not be reported as such.
     double worstMm = 0;
     for (int axis : {kX, kY, kZ}) {
-        const double travel = sim::analyzerConfig().axes[static_cast<std::size_t>(axis)].travel;
+        const double travel = dev::sim::analyzerConfig().axes[static_cast<std::size_t>(axis)].travel;
         for (double target : {travel, travel - 1, travel - 0.5, travel, 1.0, 0.0, travel - 0.02}) {
             ASSERT_FALSE(m.move(absMove(bit(axis), {target})));
             ASSERT_TRUE(r.runUntilIdle(20));
@@ -205,7 +205,7 @@ TEST_F(SimAnalyzerHomed, HealthyMechanicsNeverRaiseLostSteps)
 
 TEST_F(SimAnalyzerHomed, PumpMovesInMicrolitres)
 {
-    proto::MoveRequest mv;
+    dev::proto::MoveRequest mv;
     mv.axisMask = bit(kP);
     mv.targets = {500000};  // nL
     ASSERT_FALSE(m.move(mv));
@@ -295,7 +295,7 @@ TEST_F(SimAnalyzerHomed, XyRunsAtItsOwnSpeedWhenZIsInTheSameRequest)
     ASSERT_TRUE(r.runUntilIdle(20, [&] {
         peakXyMmS = std::max(peakXyMmS, std::hypot(m.axis(kX).referenceVelocity(), m.axis(kY).referenceVelocity()));
     }));
-    EXPECT_NEAR(peakXyMmS, sim::analyzerConfig().axes[kX].defaultSpeed, 0.5);
+    EXPECT_NEAR(peakXyMmS, dev::sim::analyzerConfig().axes[kX].defaultSpeed, 0.5);
 }
 
 TEST_F(SimAnalyzerHomed, SetZeroMakesTheCurrentPositionZero)
@@ -320,7 +320,7 @@ TEST_F(SimAnalyzerHomed, SetZeroMakesTheCurrentPositionZero)
 TEST(SimAnalyzer, SetZeroWithEmptyMaskZeroesEveryAxis)
 {
     // AxisMaskRequest: 0 = all axes.
-    sim::SimMachine m(sim::analyzerConfig());
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
     Runner r{m, {}};
     ASSERT_FALSE(m.move(relMove(bit(kX) | bit(kY), {3, 4})));
     ASSERT_TRUE(r.runUntilIdle(5));
@@ -331,7 +331,7 @@ TEST(SimAnalyzer, SetZeroWithEmptyMaskZeroesEveryAxis)
 
 TEST_F(SimAnalyzerHomed, SetAndGetLimitsValidates)
 {
-    proto::SetLimitsRequest q;
+    dev::proto::SetLimitsRequest q;
     q.axis = kY;
     q.limits = {nm(10), nm(150)};
     ASSERT_FALSE(m.setLimits(q));
@@ -377,13 +377,13 @@ TEST(SimAnalyzer, SoftLimitsBeforeHomingAreTheConfiguredOnesAndCannotBeSet)
 {
     // Unhomed coordinates are wherever the axis was at power-up: limits given or
     // shown in them would mean nothing.
-    sim::SimMachine m(sim::analyzerConfig());
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
     const auto l = m.limits();
     ASSERT_EQ(l.axes.size(), 4u);
     EXPECT_EQ(l.axes[kX].min, 0);
     EXPECT_EQ(l.axes[kX].max, nm(200));
     EXPECT_EQ(l.axes[kZ].max, nm(100));
-    proto::SetLimitsRequest q;
+    dev::proto::SetLimitsRequest q;
     q.axis = kZ;
     q.limits = {nm(5), nm(50)};
     const auto e = m.setLimits(q);
@@ -417,7 +417,7 @@ TEST_F(SimAnalyzerHomed, SecondMoveOnABusyAxisIsRefused)
     ASSERT_TRUE(e);
     EXPECT_EQ(e->code, ErrorCode::Busy);
     // Another axis is free.
-    proto::MoveRequest pump;
+    dev::proto::MoveRequest pump;
     pump.axisMask = bit(kP);
     pump.targets = {10000};  // nL
     const auto ep = m.move(pump);

@@ -14,12 +14,12 @@ using simtest::bit;
 
 TEST(SimGratingCounts, HomedReadingsAreWholeCounts)
 {
-    sim::SimMachine m(sim::stageConfig());
+    dev::sim::SimMachine m(dev::sim::stageConfig());
     ASSERT_FALSE(m.home(0).has_value());
     for (long k = 0; k < 600000 && (k < 10 || anyMoving(m)); ++k)
         m.tick();
     ASSERT_FALSE(anyMoving(m));
-    proto::MoveRequest r;
+    dev::proto::MoveRequest r;
     r.axisMask = 0b11;
     r.targets = {12'345'600, 7'000'250};
     ASSERT_FALSE(m.move(r).has_value());

@@ -11,16 +11,16 @@
 namespace {
 
 using grbltest::Host;
-using State = sim::GrblFirmware::State;
+using State = dev::sim::GrblFirmware::State;
 
 /// Feeds answers back to the streamer and writes what it lets out. Returns the errors seen.
-std::vector<grbl::Streamer::Ack> serviceStreamer(Host& h, grbl::Streamer& s)
+std::vector<dev::grbl::Streamer::Ack> serviceStreamer(Host& h, dev::grbl::Streamer& s)
 {
-    std::vector<grbl::Streamer::Ack> errors;
+    std::vector<dev::grbl::Streamer::Ack> errors;
     for (const auto& l : h.fresh()) {
-        const grbl::Line c = grbl::classifyLine(l);
-        if (c.kind == grbl::LineKind::Ok || c.kind == grbl::LineKind::Error) {
-            const auto ack = s.acknowledge(c.kind == grbl::LineKind::Ok, c.code);
+        const dev::grbl::Line c = dev::grbl::classifyLine(l);
+        if (c.kind == dev::grbl::LineKind::Ok || c.kind == dev::grbl::LineKind::Error) {
+            const auto ack = s.acknowledge(c.kind == dev::grbl::LineKind::Ok, c.code);
             if (ack && !ack->ok)
                 errors.push_back(*ack);
         }
@@ -31,14 +31,14 @@ std::vector<grbl::Streamer::Ack> serviceStreamer(Host& h, grbl::Streamer& s)
     return errors;
 }
 
-grbl::JogPlan analyzerXJogPlan(double refreshS)
+dev::grbl::JogPlan analyzerXJogPlan(double refreshS)
 {
-    grbl::JogPlanInput in;
+    dev::grbl::JogPlanInput in;
     in.speedMmS = 100;
     in.maxRateMmS = 100;   // $110 = 6000 mm/min
     in.accelMmS2 = 1500;   // $120
     in.refreshPeriodS = refreshS;
-    return grbl::planContinuousJog(in);
+    return dev::grbl::planContinuousJog(in);
 }
 
 /// Jogs +X from X = 50 for `holdS`, then either releases (0x85) or goes silent. Returns the
@@ -55,10 +55,10 @@ JogOutcome jogAndLetGo(bool release)
     h.home();
     EXPECT_EQ(h.command("G90 G0 X50"), "ok");
     EXPECT_TRUE(h.runUntil([&] { return h.fw.state() == State::Idle; }, 5));
-    const grbl::JogPlan plan = analyzerXJogPlan(0.1);
+    const dev::grbl::JogPlan plan = analyzerXJogPlan(0.1);
     EXPECT_TRUE(plan.feasible);
-    grbl::Streamer s(h.fw.rxBufferBytes());
-    grbl::ContinuousJog jog(plan, "X", {1});
+    dev::grbl::Streamer s(h.fw.rxBufferBytes());
+    dev::grbl::ContinuousJog jog(plan, "X", {1});
     h.fresh();
     for (const auto& l : jog.start(h.now()))
         s.enqueue(l);
@@ -101,7 +101,7 @@ JogOutcome jogAndLetGo(bool release)
                 o.firstRestS = h.now() - t0;
             if (cancelAgain && s.inFlightLines() == 0) {
                 cancelAgain = false;
-                s.enqueueRealtime(grbl::rt::kJogCancel);
+                s.enqueueRealtime(dev::grbl::rt::kJogCancel);
                 serviceStreamer(h, s);
             }
             return !cancelAgain && h.fw.machine().axis(0).referenceVelocity() == 0 && h.fw.state() == State::Idle;
@@ -124,14 +124,14 @@ TEST(SimGrblMotion, ContinuousJogReachesFullSpeedAndStopsWithin250msOfRelease)
     EXPECT_NEAR(o.firstRestS, 100.0 / 1500, 0.005);    // the cancel: v/a, no link latency in-process
     EXPECT_LE(o.stopS, 0.25);                          // with the segments read after it, cancelled again
     // v²/2a = 3.3 mm, plus at most the segments that were in GRBL's buffer at the release.
-    const grbl::JogPlan plan = analyzerXJogPlan(0.1);
+    const dev::grbl::JogPlan plan = analyzerXJogPlan(0.1);
     EXPECT_GE(o.overrunMm, 100.0 * 100 / 3000 - 0.2);
     EXPECT_LE(o.overrunMm, 100.0 * 100 / 3000 + 0.2 + o.inFlightAtRelease * plan.segmentMm);
 }
 
 TEST(SimGrblMotion, ALostHostOverrunsNoMoreThanThePlanSays)
 {
-    const grbl::JogPlan plan = analyzerXJogPlan(0.1);
+    const dev::grbl::JogPlan plan = analyzerXJogPlan(0.1);
     const JogOutcome o = jogAndLetGo(false);
     EXPECT_LE(o.stopS, plan.lostLinkOverrunS + 0.002);
     EXPECT_LE(o.stopS, 0.25);
@@ -144,7 +144,7 @@ TEST(SimGrblMotion, AJogBeyondTheTravelIsRefusedWithoutAnAlarm)
     h.home();
     EXPECT_EQ(h.command("$J=G91 G21 X-5 F600"), "error:15");
     EXPECT_EQ(h.command("$J=G53 X250 F600"), "error:15");  // X travel is 200 mm
-    EXPECT_EQ(h.status().state, grbl::MachineState::Idle);
+    EXPECT_EQ(h.status().state, dev::grbl::MachineState::Idle);
     EXPECT_EQ(h.command("$J=G91 G21 X5 F600"), "ok");
 }
 
@@ -166,7 +166,7 @@ TEST(SimGrblMotion, AMoveBeyondTheTravelAlarmsAndWaitsForAReset)
     h.write("\x18");
     h.run(0.01);
     EXPECT_TRUE(h.received("Grbl 1.1h ['$' for help]"));
-    EXPECT_EQ(h.status().state, grbl::MachineState::Alarm);
+    EXPECT_EQ(h.status().state, dev::grbl::MachineState::Alarm);
     EXPECT_EQ(h.command("$X"), "ok");  // the position was kept: an unlock is enough
     EXPECT_NEAR(h.status().position[0], 0, 1e-3);
 }
@@ -183,10 +183,10 @@ TEST(SimGrblMotion, AResetWhileMovingLosesThePositionAndSaysSo)
     const auto after = h.fresh();
     ASSERT_GE(after.size(), 4u);
     EXPECT_EQ(after[0], "ALARM:3");
-    EXPECT_EQ(grbl::classifyLine(after[2]).kind, grbl::LineKind::Banner);
+    EXPECT_EQ(dev::grbl::classifyLine(after[2]).kind, dev::grbl::LineKind::Banner);
     EXPECT_EQ(after[3], "[MSG:'$H'|'$X' to unlock]");
-    const grbl::StatusReport r = h.status();
-    EXPECT_EQ(r.state, grbl::MachineState::Alarm);
+    const dev::grbl::StatusReport r = h.status();
+    EXPECT_EQ(r.state, dev::grbl::MachineState::Alarm);
     EXPECT_GT(r.position[0], 5);
     EXPECT_LT(r.position[0], 150);
     EXPECT_EQ(h.command("G0 X0"), "error:9");
@@ -196,8 +196,8 @@ TEST(SimGrblMotion, AResetWhileMovingLosesThePositionAndSaysSo)
     h.write("\x18");
     h.run(0.01);
     for (const auto& l : h.fresh())
-        EXPECT_NE(grbl::classifyLine(l).kind, grbl::LineKind::Alarm) << l;
-    EXPECT_EQ(h.status().state, grbl::MachineState::Idle);
+        EXPECT_NE(dev::grbl::classifyLine(l).kind, dev::grbl::LineKind::Alarm) << l;
+    EXPECT_EQ(h.status().state, dev::grbl::MachineState::Idle);
 }
 
 TEST(SimGrblMotion, ALimitSwitchIsAHardLimitAlarm)
@@ -225,8 +225,8 @@ TEST(SimGrblMotion, FeedHoldStopsOnThePathAndResumeFinishesTheMove)
     h.run(0.005);
     EXPECT_EQ(h.status().subState, 1);  // Hold:1, slowing down
     EXPECT_TRUE(h.runUntil([&] { return h.fw.machine().axis(0).referenceVelocity() == 0; }, 1));
-    const grbl::StatusReport held = h.status();
-    EXPECT_EQ(held.state, grbl::MachineState::Hold);
+    const dev::grbl::StatusReport held = h.status();
+    EXPECT_EQ(held.state, dev::grbl::MachineState::Hold);
     EXPECT_EQ(held.subState, 0);
     h.run(0.5);
     EXPECT_DOUBLE_EQ(h.status().position[0], held.position[0]);
@@ -259,7 +259,7 @@ TEST(SimGrblMotion, BytesBeyondTheReceiveBufferAreLostUnlessTheHostCounts)
         Host h;
         h.command("$X");
         h.fresh();
-        grbl::Streamer s(h.fw.rxBufferBytes());
+        dev::grbl::Streamer s(h.fw.rxBufferBytes());
         for (const auto& l : lines)
             s.enqueue(l);
         serviceStreamer(h, s);
@@ -272,15 +272,15 @@ TEST(SimGrblMotion, BytesBeyondTheReceiveBufferAreLostUnlessTheHostCounts)
 
 TEST(SimGrblMotion, ATenMillimetreCircleStreamedAsArcsEndsWhereItBegan)
 {
-    for (const auto dialect : {sim::GrblFirmware::Dialect::Grbl, sim::GrblFirmware::Dialect::GrblHal}) {
-        Host h(sim::stageConfig(), dialect);
+    for (const auto dialect : {dev::sim::GrblFirmware::Dialect::Grbl, dev::sim::GrblFirmware::Dialect::GrblHal}) {
+        Host h(dev::sim::stageConfig(), dialect);
         h.home();
         // A circle of 10 mm diameter around (45, 50), clockwise from (50, 50), at 10 mm/s.
         EXPECT_EQ(h.command("G90 G0 X50 Y50"), "ok");
         EXPECT_TRUE(h.runUntil([&] { return h.fw.state() == State::Idle; }, 10));
-        grbl::Streamer s(h.fw.rxBufferBytes());
-        for (const auto& l : grbl::circleLines(45, 50, 5, grbl::ArcDirection::Clockwise, 600))
-            ASSERT_EQ(s.enqueue(l.text), grbl::Streamer::Queued::Ok);
+        dev::grbl::Streamer s(h.fw.rxBufferBytes());
+        for (const auto& l : dev::grbl::circleLines(45, 50, 5, dev::grbl::ArcDirection::Clockwise, 600))
+            ASSERT_EQ(s.enqueue(l.text), dev::grbl::Streamer::Queued::Ok);
         h.fresh();
         double worstRadiusErrMm = 0, t0 = h.now();
         std::size_t maxInFlight = 0;

@@ -7,31 +7,31 @@
 namespace {
 
 using grbltest::Host;
-using State = sim::GrblFirmware::State;
+using State = dev::sim::GrblFirmware::State;
 
 TEST(SimGrblProtocol, PowerUpGreetsAndLocksUntilHomedOrUnlocked)
 {
     Host h;
     ASSERT_GE(h.lines.size(), 3u);
     EXPECT_EQ(h.lines[0], "");  // GRBL starts its banner with a line end
-    EXPECT_EQ(grbl::classifyLine(h.lines[1]).kind, grbl::LineKind::Banner);
-    EXPECT_EQ(grbl::parseBanner(h.lines[1])->firmware, grbl::Firmware::Grbl);
+    EXPECT_EQ(dev::grbl::classifyLine(h.lines[1]).kind, dev::grbl::LineKind::Banner);
+    EXPECT_EQ(dev::grbl::parseBanner(h.lines[1])->firmware, dev::grbl::Firmware::Grbl);
     EXPECT_EQ(h.lines[2], "[MSG:'$H'|'$X' to unlock]");
-    EXPECT_EQ(h.status().state, grbl::MachineState::Alarm);
+    EXPECT_EQ(h.status().state, dev::grbl::MachineState::Alarm);
     EXPECT_EQ(h.command("G0 X1"), "error:9");  // G-code locked out in alarm
     EXPECT_EQ(h.command("$X"), "ok");
     EXPECT_TRUE(h.received("[MSG:Caution: Unlocked]"));
-    EXPECT_EQ(h.status().state, grbl::MachineState::Idle);
+    EXPECT_EQ(h.status().state, dev::grbl::MachineState::Idle);
 }
 
 TEST(SimGrblProtocol, TheFirstReportAfterAResetCarriesTheOffsetAndTheSecondTheOverrides)
 {
     Host h;
-    const grbl::StatusReport first = h.status();
+    const dev::grbl::StatusReport first = h.status();
     ASSERT_TRUE(first.workOffset);
     EXPECT_EQ(first.position.size(), 4u);  // the analyzer: X Y Z and the pump as A
     EXPECT_TRUE(first.positionIsMachine);
-    const grbl::StatusReport second = h.status();
+    const dev::grbl::StatusReport second = h.status();
     EXPECT_FALSE(second.workOffset);
     EXPECT_TRUE(second.overridesPercent);
 }
@@ -40,13 +40,13 @@ TEST(SimGrblProtocol, SettingsReadBackAsTheMachinesLimits)
 {
     Host h;
     EXPECT_EQ(h.command("$$"), "ok");
-    grbl::Settings s;
+    dev::grbl::Settings s;
     for (const auto& l : h.lines)
-        if (const auto sl = grbl::parseSettingLine(l))
+        if (const auto sl = dev::grbl::parseSettingLine(l))
             s.add(*sl);
-    const grbl::LimitsRead r = grbl::machineLimits(s, h.fw.axisLetters());
+    const dev::grbl::LimitsRead r = dev::grbl::machineLimits(s, h.fw.axisLetters());
     ASSERT_TRUE(r.limits);
-    const sim::MachineConfig c = sim::analyzerConfig();
+    const dev::sim::MachineConfig c = dev::sim::analyzerConfig();
     for (std::size_t i = 0; i < c.axes.size(); ++i) {
         EXPECT_NEAR(r.limits->axes[i].maxRateMmS, c.axes[i].maxSpeed, 1e-3) << i;
         EXPECT_NEAR(r.limits->axes[i].accelMmS2, c.axes[i].maxAccel, 1e-3) << i;
@@ -67,7 +67,7 @@ TEST(SimGrblProtocol, SettingsChangesTakeEffect)
     EXPECT_EQ(h.command("$110=abc"), "error:2");
     EXPECT_EQ(h.command("$X"), "ok");
     EXPECT_EQ(h.command("$10=2"), "ok");  // WPos and buffer fields
-    const grbl::StatusReport r = h.status();
+    const dev::grbl::StatusReport r = h.status();
     EXPECT_FALSE(r.positionIsMachine);
     ASSERT_TRUE(r.plannerBlocksFree);
     EXPECT_EQ(*r.plannerBlocksFree, 15);
@@ -75,26 +75,26 @@ TEST(SimGrblProtocol, SettingsChangesTakeEffect)
     EXPECT_EQ(h.command("$13=1"), "ok");  // report inches
     EXPECT_EQ(h.command("G91 G1 X25.4 F1200"), "ok");
     h.run(2.0);
-    const grbl::StatusReport in = h.status();
+    const dev::grbl::StatusReport in = h.status();
     EXPECT_NEAR(in.position[0], 1.0, 1e-4);  // 25.4 mm reported as 1 inch
 }
 
 TEST(SimGrblProtocol, BuildInfoOfBothDialects)
 {
-    for (const auto d : {sim::GrblFirmware::Dialect::Grbl, sim::GrblFirmware::Dialect::GrblHal}) {
-        Host h(sim::stageConfig(), d);
-        const bool hal = d == sim::GrblFirmware::Dialect::GrblHal;
-        EXPECT_EQ(grbl::parseBanner(h.lines[1])->firmware, hal ? grbl::Firmware::GrblHal : grbl::Firmware::Grbl);
+    for (const auto d : {dev::sim::GrblFirmware::Dialect::Grbl, dev::sim::GrblFirmware::Dialect::GrblHal}) {
+        Host h(dev::sim::stageConfig(), d);
+        const bool hal = d == dev::sim::GrblFirmware::Dialect::GrblHal;
+        EXPECT_EQ(dev::grbl::parseBanner(h.lines[1])->firmware, hal ? dev::grbl::Firmware::GrblHal : dev::grbl::Firmware::Grbl);
         h.fresh();
         EXPECT_EQ(h.command("$I"), "ok");
-        grbl::BuildInfo info;
+        dev::grbl::BuildInfo info;
         for (const auto& l : h.lines)
-            grbl::addBuildInfoLine(info, grbl::classifyLine(l));
+            dev::grbl::addBuildInfoLine(info, dev::grbl::classifyLine(l));
         EXPECT_EQ(info.plannerBlocks, hal ? 35 : 15);
         EXPECT_EQ(info.rxBufferBytes, hal ? 1024 : 128);
         EXPECT_TRUE(info.hasOption('Z'));
         if (hal) {
-            EXPECT_EQ(info.firmware, grbl::Firmware::GrblHal);
+            EXPECT_EQ(info.firmware, dev::grbl::Firmware::GrblHal);
             EXPECT_EQ(info.axisLetters, "XYZ");  // the stage's XY and the Z every GRBL has
         }
     }
@@ -104,8 +104,8 @@ TEST(SimGrblProtocol, HomingAnswersWhenDoneAtMachineZero)
 {
     Host h;
     EXPECT_EQ(h.command("$H"), "ok");
-    const grbl::StatusReport r = h.status();
-    EXPECT_EQ(r.state, grbl::MachineState::Idle);
+    const dev::grbl::StatusReport r = h.status();
+    EXPECT_EQ(r.state, dev::grbl::MachineState::Idle);
     for (const double p : r.position)
         EXPECT_NEAR(p, 0, 1e-3);
     EXPECT_TRUE(h.fw.machine().homed(0));
@@ -168,7 +168,7 @@ TEST(SimGrblProtocol, CoolantSwitchesWhenTheMotionBeforeItIsDone)
 
 TEST(SimGrblProtocol, GrblHalDigitalOutputsAtOnceOrWithTheMotion)
 {
-    Host h(sim::stageConfig(), sim::GrblFirmware::Dialect::GrblHal);
+    Host h(dev::sim::stageConfig(), dev::sim::GrblFirmware::Dialect::GrblHal);
     h.home();
     EXPECT_EQ(h.command("M64 P1"), "ok");
     ASSERT_EQ(h.fw.outputEvents().size(), 1u);

@@ -1,5 +1,5 @@
 #pragma once
-// What the GRBL simulator tests share: a host that talks to sim::GrblFirmware in-process the
+// What the GRBL simulator tests share: a host that talks to dev::sim::GrblFirmware in-process the
 // way a serial host would (bytes in, lines out), on the firmware's virtual clock.
 #include "device/backends/grbl/grbl_lines.h"
 #include "device/backends/grbl/grbl_status.h"
@@ -14,13 +14,13 @@
 namespace grbltest {
 
 struct Host {
-    sim::GrblFirmware fw;
-    grbl::LineReader reader;
+    dev::sim::GrblFirmware fw;
+    dev::grbl::LineReader reader;
     std::vector<std::string> lines;  ///< every line received, in order
     std::size_t seen = 0;            ///< lines already handed out by fresh()
 
-    explicit Host(const sim::MachineConfig& c = sim::analyzerConfig(),
-                  sim::GrblFirmware::Dialect d = sim::GrblFirmware::Dialect::Grbl)
+    explicit Host(const dev::sim::MachineConfig& c = dev::sim::analyzerConfig(),
+                  dev::sim::GrblFirmware::Dialect d = dev::sim::GrblFirmware::Dialect::Grbl)
         : fw(c, d)
     {
         pump();
@@ -34,7 +34,7 @@ struct Host {
     {
         std::vector<std::uint8_t> out;
         fw.drainOutput(out);
-        std::vector<grbl::LineReader::Line> got;
+        std::vector<dev::grbl::LineReader::Line> got;
         reader.feed(std::string_view(reinterpret_cast<const char*>(out.data()), out.size()), got);
         for (auto& l : got)
             lines.push_back(std::move(l.text));
@@ -77,8 +77,8 @@ struct Host {
         runUntil(
             [&] {
                 for (std::size_t i = seen; i < lines.size(); ++i) {
-                    const auto k = grbl::classifyLine(lines[i]).kind;
-                    if (k == grbl::LineKind::Ok || k == grbl::LineKind::Error) {
+                    const auto k = dev::grbl::classifyLine(lines[i]).kind;
+                    if (k == dev::grbl::LineKind::Ok || k == dev::grbl::LineKind::Error) {
                         answer = lines[i];
                         return true;
                     }
@@ -89,15 +89,15 @@ struct Host {
         return answer;
     }
     /// Asks for a status report and parses it.
-    grbl::StatusReport status()
+    dev::grbl::StatusReport status()
     {
         const std::size_t before = lines.size();
         write("?");
         run(0.001);
         for (std::size_t i = lines.size(); i-- > before;) {
-            const grbl::Line l = grbl::classifyLine(lines[i]);
-            if (l.kind == grbl::LineKind::Status) {
-                const auto p = grbl::parseStatusReport(l.payload);
+            const dev::grbl::Line l = dev::grbl::classifyLine(lines[i]);
+            if (l.kind == dev::grbl::LineKind::Status) {
+                const auto p = dev::grbl::parseStatusReport(l.payload);
                 EXPECT_TRUE(p.report) << lines[i];
                 if (p.report)
                     return *p.report;
@@ -116,7 +116,7 @@ struct Host {
     void home()
     {
         ASSERT_EQ(command("$H"), "ok");
-        ASSERT_EQ(fw.state(), sim::GrblFirmware::State::Idle);
+        ASSERT_EQ(fw.state(), dev::sim::GrblFirmware::State::Idle);
     }
 };
 

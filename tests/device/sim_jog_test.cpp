@@ -17,23 +17,23 @@ namespace {
 using simtest::anyMoving;
 using simtest::bit;
 
-using proto::ErrorCode;
-using proto::EventKind;
+using dev::proto::ErrorCode;
+using dev::proto::EventKind;
 
-long ticksFor(double s) { return static_cast<long>(std::lround(s / sim::SimMachine::kTickS)); }
+long ticksFor(double s) { return static_cast<long>(std::lround(s / dev::sim::SimMachine::kTickS)); }
 
-proto::JogVelocityRequest jog(int axis, double velocityPerS, double wireScale = 1e6)
+dev::proto::JogVelocityRequest jog(int axis, double velocityPerS, double wireScale = 1e6)
 {
-    proto::JogVelocityRequest r;
+    dev::proto::JogVelocityRequest r;
     r.axisMask = bit(axis);
     r.velocities = {static_cast<std::int32_t>(std::lround(velocityPerS * wireScale))};
     return r;
 }
 
 
-std::vector<proto::EventMsg> runCollect(sim::SimMachine& m, double seconds)
+std::vector<dev::proto::EventMsg> runCollect(dev::sim::SimMachine& m, double seconds)
 {
-    std::vector<proto::EventMsg> out;
+    std::vector<dev::proto::EventMsg> out;
     for (long k = 0; k < ticksFor(seconds); ++k) {
         m.tick();
         auto e = m.takeEvents();
@@ -42,7 +42,7 @@ std::vector<proto::EventMsg> runCollect(sim::SimMachine& m, double seconds)
     return out;
 }
 
-bool runUntilIdle(sim::SimMachine& m, double timeoutS)
+bool runUntilIdle(dev::sim::SimMachine& m, double timeoutS)
 {
     for (long k = 0; k < ticksFor(timeoutS); ++k) {
         m.tick();
@@ -65,10 +65,10 @@ struct StopMeasurement {
 
 /// Jogs `axis` at `velocity` (axis units/s) refreshed every `refreshS` for `holdS`,
 /// then stops refreshing, as a frozen GUI or a pulled cable would.
-StopMeasurement jogThenGoQuiet(sim::SimMachine& m, int axis, double velocity, double holdS, double refreshS = 0.05)
+StopMeasurement jogThenGoQuiet(dev::sim::SimMachine& m, int axis, double velocity, double holdS, double refreshS = 0.05)
 {
     StopMeasurement out;
-    const double wire = m.config().axes[static_cast<std::size_t>(axis)].unit == proto::AxisUnit::Microlitre ? 1e3 : 1e6;
+    const double wire = m.config().axes[static_cast<std::size_t>(axis)].unit == dev::proto::AxisUnit::Microlitre ? 1e3 : 1e6;
     double lastRefreshS = 0;
     for (double t = 0; t < holdS; t += refreshS) {
         EXPECT_FALSE(m.jogVelocity(jog(axis, velocity, wire)));
@@ -89,7 +89,7 @@ StopMeasurement jogThenGoQuiet(sim::SimMachine& m, int axis, double velocity, do
         trace.emplace_back(since, m.axis(axis).carriage());
         if (out.referenceStopS < 0 && m.axis(axis).referenceVelocity() == 0 && since > 0.01)
             out.referenceStopS = since;
-        if (out.statusIdleS < 0 && !(m.status().axes[static_cast<std::size_t>(axis)].flags & proto::AxisMoving))
+        if (out.statusIdleS < 0 && !(m.status().axes[static_cast<std::size_t>(axis)].flags & dev::proto::AxisMoving))
             out.statusIdleS = since;
     }
     const double finalPos = trace.back().second;
@@ -115,7 +115,7 @@ class SimJogWatchdog : public ::testing::TestWithParam<JogCase> {};
 TEST_P(SimJogWatchdog, AtRestWithin250msOfTheLastRefresh)
 {
     const JogCase c = GetParam();
-    sim::SimMachine m(c.stage ? sim::stageConfig() : sim::analyzerConfig());
+    dev::sim::SimMachine m(c.stage ? dev::sim::stageConfig() : dev::sim::analyzerConfig());
     const auto& ac = m.config().axes[static_cast<std::size_t>(c.axis)];
     // Worst case: full speed, toward the middle of the travel so no switch interferes.
     const double direction = ac.startPosition < ac.travel / 2 ? 1.0 : -1.0;
@@ -145,14 +145,14 @@ TEST(SimJog, WatchdogStopStaysWithinWhatTheMotorsCanDo)
 {
     // The watchdog's ramp is steeper than a normal stop; it must still be one the
     // motor can follow without losing steps, from every axis' top speed.
-    for (const auto& cfg : {sim::analyzerConfig(), sim::stageConfig()})
+    for (const auto& cfg : {dev::sim::analyzerConfig(), dev::sim::stageConfig()})
         for (const auto& a : cfg.axes)
-            EXPECT_LE(a.maxSpeed / sim::SimMachine::kJogStopBudgetS, a.physicalMaxAccel) << cfg.model << " " << a.letter;
+            EXPECT_LE(a.maxSpeed / dev::sim::SimMachine::kJogStopBudgetS, a.physicalMaxAccel) << cfg.model << " " << a.letter;
 }
 
 TEST(SimJog, KeepsRunningWhileRefreshed)
 {
-    sim::SimMachine m(sim::analyzerConfig());
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
     const double x0 = m.axis(0).carriage();
     for (int n = 0; n < 20; ++n) {  // 2 s of refreshes every 100 ms
         ASSERT_FALSE(m.jogVelocity(jog(0, 20)));
@@ -161,7 +161,7 @@ TEST(SimJog, KeepsRunningWhileRefreshed)
             EXPECT_NE(e.kind, EventKind::JogExpired);
     }
     EXPECT_NEAR(m.axis(0).carriage() - x0, 40, 0.5);
-    EXPECT_TRUE(m.status().axes[0].flags & proto::AxisJogging);
+    EXPECT_TRUE(m.status().axes[0].flags & dev::proto::AxisJogging);
 }
 
 TEST(SimJog, ALongerTripHoldsAJogRefreshedOnASlowerClock)
@@ -169,8 +169,8 @@ TEST(SimJog, ALongerTripHoldsAJogRefreshedOnASlowerClock)
     // At time scale K a host refreshing every 50 ms of its own time refreshes every
     // K x 50 ms of the device's: with the trip scaled by K (SimulatorHost::setTimeScale)
     // the jog runs on; with the trip as built it expires between refreshes.
-    for (const double tripS : {sim::SimMachine::kJogWatchdogTripS, sim::SimMachine::kJogWatchdogTripS * 10}) {
-        sim::SimMachine m(sim::analyzerConfig());
+    for (const double tripS : {dev::sim::SimMachine::kJogWatchdogTripS, dev::sim::SimMachine::kJogWatchdogTripS * 10}) {
+        dev::sim::SimMachine m(dev::sim::analyzerConfig());
         m.setJogWatchdogTripS(tripS);
         int expired = 0;
         for (int n = 0; n < 4; ++n) {  // refreshes every 0.5 s: a 50 ms host at 10x
@@ -184,17 +184,17 @@ TEST(SimJog, ALongerTripHoldsAJogRefreshedOnASlowerClock)
 
 TEST(SimJog, SimulatorHostScalesTheTripWithItsClock)
 {
-    dev::SimulatedLink link(proto::DeviceKind::Stage, 0);
-    EXPECT_DOUBLE_EQ(link.machine().jogWatchdogTripS(), sim::SimMachine::kJogWatchdogTripS);
+    dev::SimulatedLink link(dev::proto::DeviceKind::Stage, 0);
+    EXPECT_DOUBLE_EQ(link.machine().jogWatchdogTripS(), dev::sim::SimMachine::kJogWatchdogTripS);
     link.host().setTimeScale(100);
-    EXPECT_DOUBLE_EQ(link.machine().jogWatchdogTripS(), sim::SimMachine::kJogWatchdogTripS * 100);
+    EXPECT_DOUBLE_EQ(link.machine().jogWatchdogTripS(), dev::sim::SimMachine::kJogWatchdogTripS * 100);
     link.host().setTimeScale(0.5);  // a slower clock never shortens the host's allowance
-    EXPECT_DOUBLE_EQ(link.machine().jogWatchdogTripS(), sim::SimMachine::kJogWatchdogTripS);
+    EXPECT_DOUBLE_EQ(link.machine().jogWatchdogTripS(), dev::sim::SimMachine::kJogWatchdogTripS);
 }
 
 TEST(SimJog, ZeroVelocityStopsAndReportsDone)
 {
-    sim::SimMachine m(sim::analyzerConfig());
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
     ASSERT_FALSE(m.jogVelocity(jog(1, -30)));
     runCollect(m, 0.15);  // inside the watchdog's 200 ms
     ASSERT_FALSE(m.jogVelocity(jog(1, 0)));  // key released
@@ -211,7 +211,7 @@ TEST(SimJog, ZeroVelocityStopsAndReportsDone)
 TEST(SimJog, StopsAtTheSoftLimitWhenHomed)
 {
     for (bool stage : {false, true}) {
-        sim::SimMachine m(stage ? sim::stageConfig() : sim::analyzerConfig());
+        dev::sim::SimMachine m(stage ? dev::sim::stageConfig() : dev::sim::analyzerConfig());
         ASSERT_FALSE(m.home(0));
         ASSERT_TRUE(runUntilIdle(m, 60));
         const double travel = m.config().axes[0].travel;
@@ -238,10 +238,10 @@ TEST(SimJog, StopsAtTheSoftLimitWhenHomed)
 
 TEST(SimJog, FromOutsideNarrowedLimitsDrivesBackInWithoutJumping)
 {
-    sim::SimMachine m(sim::analyzerConfig());
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
     ASSERT_FALSE(m.home(bit(0)));
     ASSERT_TRUE(runUntilIdle(m, 30));
-    proto::SetLimitsRequest q;
+    dev::proto::SetLimitsRequest q;
     q.axis = 0;
     q.limits = {10000000, 150000000};  // X stands at 0, below the new lower limit
     ASSERT_FALSE(m.setLimits(q));
@@ -255,7 +255,7 @@ TEST(SimJog, FromOutsideNarrowedLimitsDrivesBackInWithoutJumping)
             prev = m.axis(0).reference();
         }
     }
-    EXPECT_LE(maxStepMm, 20 * sim::SimMachine::kTickS + 1e-9) << "the reference jumped";
+    EXPECT_LE(maxStepMm, 20 * dev::sim::SimMachine::kTickS + 1e-9) << "the reference jumped";
     EXPECT_NEAR(m.status().axes[0].commanded / 1e6, 10.0, 0.5);
     // Inside now, it cannot jog back out.
     ASSERT_FALSE(m.jogVelocity(jog(0, -5)));
@@ -265,7 +265,7 @@ TEST(SimJog, FromOutsideNarrowedLimitsDrivesBackInWithoutJumping)
 
 TEST(SimJog, RunsIntoTheSwitchWhenUnhomed)
 {
-    sim::SimMachine m(sim::analyzerConfig());
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
     bool limitHit = false;
     for (int n = 0; n < 30 && !limitHit; ++n) {
         ASSERT_FALSE(m.jogVelocity(jog(2, -40)));  // Z starts at 33 mm
@@ -273,13 +273,13 @@ TEST(SimJog, RunsIntoTheSwitchWhenUnhomed)
             limitHit |= e.kind == EventKind::LimitHit && e.axis == 2;
     }
     EXPECT_TRUE(limitHit);
-    EXPECT_TRUE(m.status().axes[2].flags & proto::AxisHomeSwitch);
+    EXPECT_TRUE(m.status().axes[2].flags & dev::proto::AxisHomeSwitch);
     EXPECT_FALSE(anyMoving(m));
 }
 
 TEST(SimJog, SpeedAboveMaximumIsRefused)
 {
-    sim::SimMachine m(sim::stageConfig());
+    dev::sim::SimMachine m(dev::sim::stageConfig());
     const auto e = m.jogVelocity(jog(1, 25));
     ASSERT_TRUE(e);
     EXPECT_EQ(e->code, ErrorCode::OutOfRange);
@@ -292,7 +292,7 @@ TEST(SimJog, StageAcceptsANewPressWhileSettling)
 {
     // Hold-to-jog: press, release, press again at once. The stage is still
     // settling from the release; the second press must not be refused.
-    sim::SimMachine m(sim::stageConfig());
+    dev::sim::SimMachine m(dev::sim::stageConfig());
     ASSERT_FALSE(m.jogVelocity(jog(0, 5)));
     runCollect(m, 0.2);
     ASSERT_FALSE(m.jogVelocity(jog(0, 0)));
@@ -303,8 +303,8 @@ TEST(SimJog, StageAcceptsANewPressWhileSettling)
 
 TEST(SimJog, MovingAxisRefusesAJog)
 {
-    sim::SimMachine m(sim::analyzerConfig());
-    proto::MoveRequest mv;
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
+    dev::proto::MoveRequest mv;
     mv.relative = true;
     mv.axisMask = bit(0);
     mv.targets = {10000000};
@@ -316,7 +316,7 @@ TEST(SimJog, MovingAxisRefusesAJog)
 
 TEST(SimJog, StopRampsAJogDown)
 {
-    sim::SimMachine m(sim::analyzerConfig());
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
     ASSERT_FALSE(m.jogVelocity(jog(0, 50)));
     runCollect(m, 0.15);
     ASSERT_FALSE(m.stop(bit(0)));

@@ -12,9 +12,9 @@ using simtest::anyMoving;
 using simtest::bit;
 
 
-void runUntilIdle(sim::SimMachine& m, double timeoutS)
+void runUntilIdle(dev::sim::SimMachine& m, double timeoutS)
 {
-    const auto ticks = static_cast<long>(timeoutS / sim::SimMachine::kTickS);
+    const auto ticks = static_cast<long>(timeoutS / dev::sim::SimMachine::kTickS);
     for (long k = 0; k < ticks; ++k) {
         m.tick();
         if (k > 10 && !anyMoving(m))
@@ -25,8 +25,8 @@ void runUntilIdle(sim::SimMachine& m, double timeoutS)
 
 TEST(SimMoveSpeed, SpeedIsInTheFirstAxisUnitAndThePumpKeepsItsDefault)
 {
-    sim::SimMachine m(sim::analyzerConfig());
-    proto::MoveRequest r;
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
+    dev::proto::MoveRequest r;
     r.relative = true;
     r.speed = 50'000'000;  // 50 mm/s in nm/s
     r.axisMask = 0b1001;   // X and P
@@ -37,7 +37,7 @@ TEST(SimMoveSpeed, SpeedIsInTheFirstAxisUnitAndThePumpKeepsItsDefault)
     for (long k = 0; k < 200000 && (xDoneS < 0 || pDoneS < 0); ++k) {
         m.tick();
         for (const auto& e : m.takeEvents()) {
-            if (e.kind != proto::EventKind::MotionDone)
+            if (e.kind != dev::proto::EventKind::MotionDone)
                 continue;
             (e.axis == 0 ? xDoneS : pDoneS) = m.timeS();
         }
@@ -54,15 +54,15 @@ TEST(SimMoveSpeed, SpeedIsInTheFirstAxisUnitAndThePumpKeepsItsDefault)
 
 TEST(SimMoveSpeed, SpeedAboveAnAxisMaximumIsRefusedNamingTheAxis)
 {
-    sim::SimMachine m(sim::analyzerConfig());
-    proto::MoveRequest r;
+    dev::sim::SimMachine m(dev::sim::analyzerConfig());
+    dev::proto::MoveRequest r;
     r.relative = true;
     r.speed = 80'000'000;  // 80 mm/s: fine for X (100), too fast for Z (50)
     r.axisMask = 0b0101;
     r.targets = {5'000'000, 5'000'000};
     const auto refused = m.move(r);
     ASSERT_TRUE(refused.has_value());
-    EXPECT_EQ(refused->code, proto::ErrorCode::OutOfRange);
+    EXPECT_EQ(refused->code, dev::proto::ErrorCode::OutOfRange);
     EXPECT_NE(refused->message.find("axis Z"), std::string::npos) << refused->message;
 }
 

@@ -1,4 +1,4 @@
-// The simulated microscope stage driven directly through sim::SimMachine:
+// The simulated microscope stage driven directly through dev::sim::SimMachine:
 // grating feedback with seed 002's incremental PID, homing, accuracy after
 // settling, the uncompensated work-point error of seed 002's fit, switches.
 #include "sim_test_support.h"
@@ -14,8 +14,8 @@ namespace {
 
 using namespace simtest;
 
-using proto::ErrorCode;
-using proto::EventKind;
+using dev::proto::ErrorCode;
+using dev::proto::EventKind;
 
 constexpr int kX = 0, kY = 1;
 constexpr double kGratingMm = 0.0005;
@@ -24,13 +24,13 @@ constexpr double kGratingMm = 0.0005;
 /// Seed 002's fitted error of the X axis, µm at x mm.
 double seedXErrorUm(double xMm) { return -0.0006 * xMm * xMm + 0.9473 * xMm + 1.563; }
 
-struct SimStageHomed : HomedMachine<sim::stageConfig> {};
+struct SimStageHomed : HomedMachine<dev::sim::stageConfig> {};
 
 } // namespace
 
 TEST(SimStage, ConfigCarriesSeedTwoPolynomialAndGains)
 {
-    const auto c = sim::stageConfig();
+    const auto c = dev::sim::stageConfig();
     ASSERT_EQ(c.axes.size(), 2u);
     EXPECT_TRUE(c.closedLoop);
     EXPECT_DOUBLE_EQ(c.axes[kX].resolution, kGratingMm);
@@ -47,9 +47,9 @@ TEST(SimStage, ConfigCarriesSeedTwoPolynomialAndGains)
 
 TEST(SimStage, PowersUpUnhomedAndRefusesAbsoluteMoves)
 {
-    sim::SimMachine m(sim::stageConfig());
+    dev::sim::SimMachine m(dev::sim::stageConfig());
     for (const auto& a : m.status().axes) {
-        EXPECT_FALSE(a.flags & proto::AxisHomed);
+        EXPECT_FALSE(a.flags & dev::proto::AxisHomed);
         EXPECT_EQ(a.commanded, 0);
         EXPECT_LE(std::abs(a.measured), 500);  // one grating count
     }
@@ -61,7 +61,7 @@ TEST(SimStage, PowersUpUnhomedAndRefusesAbsoluteMoves)
 
 TEST(SimStage, HomingEndsAtZeroWithinAFewGratingCounts)
 {
-    sim::SimMachine m(sim::stageConfig());
+    dev::sim::SimMachine m(dev::sim::stageConfig());
     Runner r{m, {}};
     ASSERT_FALSE(m.home(0));
     ASSERT_TRUE(r.runUntilIdle(60));
@@ -76,7 +76,7 @@ TEST(SimStage, HomingEndsAtZeroWithinAFewGratingCounts)
 TEST(SimStage, BothAxesHomeAtOnce)
 {
     // The stage has no Z to lift first: X and Y seek their switches together.
-    sim::SimMachine m(sim::stageConfig());
+    dev::sim::SimMachine m(dev::sim::stageConfig());
     Runner r{m, {}};
     ASSERT_FALSE(m.home(0));
     r.run(0.05);
@@ -144,9 +144,9 @@ TEST_F(SimStageHomed, PidFollowsAStepResponseWithoutRunningAway)
 
 namespace {
 /// Grating counts the reading wanders over during `seconds` after a settled move.
-double wanderAfterMoveUm(sim::MachineConfig cfg, double seconds, double targetMm = 35.25)
+double wanderAfterMoveUm(dev::sim::MachineConfig cfg, double seconds, double targetMm = 35.25)
 {
-    sim::SimMachine m(cfg);
+    dev::sim::SimMachine m(cfg);
     Runner r{m, {}};
     EXPECT_FALSE(m.home(0));
     EXPECT_TRUE(r.runUntilIdle(60));
@@ -168,18 +168,18 @@ double wanderAfterMoveUm(sim::MachineConfig cfg, double seconds, double targetMm
 TEST(SimStage, HoldsStillOnceSettled)
 {
     // A stage that hunts by a count blurs every image taken at rest.
-    EXPECT_EQ(wanderAfterMoveUm(sim::stageConfig(), 2.0), 0.0);
+    EXPECT_EQ(wanderAfterMoveUm(dev::sim::stageConfig(), 2.0), 0.0);
 }
 
 TEST(SimStage, WithoutTheDeadbandTheIntegratorHuntsThroughTheBacklash)
 {
     // Why ClosedLoopTuning::deadbandCounts exists: the seed's gains with a
     // quantized grating and 4 µm of backlash settle into a limit cycle.
-    auto cfg = sim::stageConfig();
+    auto cfg = dev::sim::stageConfig();
     cfg.loop.deadbandCounts = 0;
     // A target between two grating counts: the loop can never null the error.
     EXPECT_GE(wanderAfterMoveUm(cfg, 2.0, 35.25025), 0.5);
-    EXPECT_EQ(wanderAfterMoveUm(sim::stageConfig(), 2.0, 35.25025), 0.0);
+    EXPECT_EQ(wanderAfterMoveUm(dev::sim::stageConfig(), 2.0, 35.25025), 0.0);
 }
 
 TEST_F(SimStageHomed, WorkPointShowsSeedTwoUncompensatedErrorAt90mm)
@@ -216,16 +216,16 @@ TEST_F(SimStageHomed, ClosedLoopMakesUpForSlippedSteps)
 
 TEST(SimStage, MoveIntoLimitSwitchRaisesLimitHit)
 {
-    sim::SimMachine m(sim::stageConfig());
+    dev::sim::SimMachine m(dev::sim::stageConfig());
     Runner r{m, {}};
-    proto::MoveRequest mv;
+    dev::proto::MoveRequest mv;
     mv.relative = true;
     mv.axisMask = bit(kX);
     mv.targets = {nm(80)};  // from 41.7 mm: past the 100.5 mm switch
     ASSERT_FALSE(m.move(mv));
     ASSERT_TRUE(r.runUntilIdle(30));
     ASSERT_TRUE(r.find(EventKind::LimitHit, kX));
-    EXPECT_TRUE(m.status().axes[kX].flags & proto::AxisLimitSwitch);
+    EXPECT_TRUE(m.status().axes[kX].flags & dev::proto::AxisLimitSwitch);
     EXPECT_LT(m.axis(kX).carriage(), 100.5 + 0.1);
     // It holds where it stopped.
     const double at = m.axis(kX).carriage();
@@ -238,7 +238,7 @@ TEST_F(SimStageHomed, CoupledXyLineStaysOnTheLine)
     // Stage: a diagonal move is one coupled segment; the grating stays near the line.
     ASSERT_FALSE(m.move(absMove(bit(kX) | bit(kY), {30, 40})));
     double maxOffLineUm = 0;
-    proto::ChannelRef contour{proto::kNoAxis, proto::ChannelKind::ContourError};
+    dev::proto::ChannelRef contour{dev::proto::kNoAxis, dev::proto::ChannelKind::ContourError};
     double maxContourNm = 0;
     ASSERT_TRUE(r.runUntilIdle(30, [&] {
         const double mx = measuredMm(m, kX), my = measuredMm(m, kY);
@@ -259,7 +259,7 @@ TEST_F(SimStageHomed, GainsAreSettableAndUsed)
     ASSERT_TRUE(r.runUntilIdle(30));
     const double openLoopErrUm = std::abs(measuredMm(m, kX) - 80) * 1e3;
     EXPECT_GT(openLoopErrUm, 5) << "lead error 3e-4 over 80 mm is 24 µm";
-    m.setGains(sim::PidGains{});
+    m.setGains(dev::sim::PidGains{});
     r.run(0.5);
     EXPECT_LE(std::abs(measuredMm(m, kX) - 80) * 1e3, 1.0);
 }

@@ -14,29 +14,29 @@ namespace simtest {
 
 constexpr double kNmPerMm = 1e6;
 
-inline proto::WireUnits nm(double mm) { return static_cast<proto::WireUnits>(std::lround(mm * kNmPerMm)); }
+inline dev::proto::WireUnits nm(double mm) { return static_cast<dev::proto::WireUnits>(std::lround(mm * kNmPerMm)); }
 constexpr std::uint8_t bit(int i) { return static_cast<std::uint8_t>(1u << i); }
 
 /// Logical positions the host sees, in mm.
-inline double measuredMm(const sim::SimMachine& m, int i) { return m.status().axes[static_cast<std::size_t>(i)].measured / 1e6; }
-inline double commandedMm(const sim::SimMachine& m, int i) { return m.status().axes[static_cast<std::size_t>(i)].commanded / 1e6; }
-inline bool moving(const sim::SimMachine& m, int i) { return m.status().axes[static_cast<std::size_t>(i)].flags & proto::AxisMoving; }
-inline bool anyMoving(const sim::SimMachine& m)
+inline double measuredMm(const dev::sim::SimMachine& m, int i) { return m.status().axes[static_cast<std::size_t>(i)].measured / 1e6; }
+inline double commandedMm(const dev::sim::SimMachine& m, int i) { return m.status().axes[static_cast<std::size_t>(i)].commanded / 1e6; }
+inline bool moving(const dev::sim::SimMachine& m, int i) { return m.status().axes[static_cast<std::size_t>(i)].flags & dev::proto::AxisMoving; }
+inline bool anyMoving(const dev::sim::SimMachine& m)
 {
     for (const auto& a : m.status().axes)
-        if (a.flags & proto::AxisMoving)
+        if (a.flags & dev::proto::AxisMoving)
             return true;
     return false;
 }
 
 /// Collects every event the machine emits while the test runs it.
 struct Runner {
-    sim::SimMachine& m;
-    std::vector<proto::EventMsg> events;
+    dev::sim::SimMachine& m;
+    std::vector<dev::proto::EventMsg> events;
 
     void run(double seconds, const std::function<void()>& eachTick = {})
     {
-        const auto ticks = static_cast<long>(std::lround(seconds / sim::SimMachine::kTickS));
+        const auto ticks = static_cast<long>(std::lround(seconds / dev::sim::SimMachine::kTickS));
         for (long k = 0; k < ticks; ++k) {
             m.tick();
             if (eachTick)
@@ -47,7 +47,7 @@ struct Runner {
     /// Runs until nothing moves; false if that takes longer than `timeoutS`.
     bool runUntilIdle(double timeoutS, const std::function<void()>& eachTick = {})
     {
-        const auto ticks = static_cast<long>(std::lround(timeoutS / sim::SimMachine::kTickS));
+        const auto ticks = static_cast<long>(std::lround(timeoutS / dev::sim::SimMachine::kTickS));
         for (long k = 0; k < ticks; ++k) {
             m.tick();
             if (eachTick)
@@ -63,24 +63,24 @@ struct Runner {
         auto e = m.takeEvents();
         events.insert(events.end(), e.begin(), e.end());
     }
-    const proto::EventMsg* find(proto::EventKind kind, int axis) const
+    const dev::proto::EventMsg* find(dev::proto::EventKind kind, int axis) const
     {
         for (const auto& e : events)
             if (e.kind == kind && (axis < 0 || e.axis == axis))
                 return &e;
         return nullptr;
     }
-    int count(proto::EventKind kind, int axis = -1) const
+    int count(dev::proto::EventKind kind, int axis = -1) const
     {
-        return static_cast<int>(std::count_if(events.begin(), events.end(), [&](const proto::EventMsg& e) {
+        return static_cast<int>(std::count_if(events.begin(), events.end(), [&](const dev::proto::EventMsg& e) {
             return e.kind == kind && (axis < 0 || e.axis == axis);
         }));
     }
 };
 
-inline proto::MoveRequest absMove(std::uint8_t mask, std::vector<double> targetsMm, double speedMmS = 0)
+inline dev::proto::MoveRequest absMove(std::uint8_t mask, std::vector<double> targetsMm, double speedMmS = 0)
 {
-    proto::MoveRequest r;
+    dev::proto::MoveRequest r;
     r.relative = false;
     r.axisMask = mask;
     r.speed = static_cast<std::uint32_t>(std::lround(speedMmS * kNmPerMm));
@@ -88,7 +88,7 @@ inline proto::MoveRequest absMove(std::uint8_t mask, std::vector<double> targets
         r.targets.push_back(nm(t));
     return r;
 }
-inline proto::MoveRequest relMove(std::uint8_t mask, std::vector<double> deltasMm, double speedMmS = 0)
+inline dev::proto::MoveRequest relMove(std::uint8_t mask, std::vector<double> deltasMm, double speedMmS = 0)
 {
     auto r = absMove(mask, std::move(deltasMm), speedMmS);
     r.relative = true;
@@ -96,9 +96,9 @@ inline proto::MoveRequest relMove(std::uint8_t mask, std::vector<double> deltasM
 }
 
 /// A machine homed on every axis, its events discarded: where most tests start.
-template <sim::MachineConfig (*Config)()>
+template <dev::sim::MachineConfig (*Config)()>
 struct HomedMachine : ::testing::Test {
-    sim::SimMachine m{Config()};
+    dev::sim::SimMachine m{Config()};
     Runner r{m, {}};
     void SetUp() override
     {

@@ -24,12 +24,12 @@
 
 namespace {
 
-using proto::ChannelKind;
-using proto::ChannelRef;
-using tele::ChannelKey;
-using tele::HistoryBudget;
-using tele::HistoryRecorder;
-using tele::TelemetryHub;
+using dev::proto::ChannelKind;
+using dev::proto::ChannelRef;
+using dev::tele::ChannelKey;
+using dev::tele::HistoryBudget;
+using dev::tele::HistoryRecorder;
+using dev::tele::TelemetryHub;
 
 using devtest::ensureApp;
 using devtest::waitFor;
@@ -37,10 +37,10 @@ using devtest::waitFor;
 ChannelRef href(int axis, ChannelKind k) { return ChannelRef{static_cast<std::uint8_t>(axis), k}; }
 
 /// `n` samples of `channels` from sample index `first`; value = sample index × 10 + channel.
-proto::TelemetryBatch historyBatch(std::uint32_t first, std::uint64_t t0Us, std::uint32_t periodUs,
+dev::proto::TelemetryBatch historyBatch(std::uint32_t first, std::uint64_t t0Us, std::uint32_t periodUs,
                                    const std::vector<ChannelRef>& channels, int n)
 {
-    proto::TelemetryBatch b;
+    dev::proto::TelemetryBatch b;
     b.firstSampleIndex = first;
     b.firstSampleTimeUs = t0Us;
     b.periodUs = periodUs;
@@ -77,7 +77,7 @@ TEST_F(TelemetryHistoryTest, RingKeepsTheNewestSamplesInOrderAndItsMemoryStaysWh
     // Exactly the capacity: nothing dropped yet.
     for (std::uint32_t b = 0; b < 10; ++b)
         recordRamp(r, x, b * 100, b * 1.0, 100);
-    const tele::ChannelStore* s = r.store(1, x);
+    const dev::tele::ChannelStore* s = r.store(1, x);
     ASSERT_NE(s, nullptr);
     EXPECT_EQ(s->size(), 1000u);
     const std::size_t full = r.memoryBytes();
@@ -116,7 +116,7 @@ TEST_F(TelemetryHistoryTest, AFasterStreamIsThinnedSoTheRingStillSpansTheBudgets
         recordRamp(r, fe, index, index * 0.001, n, 0.001);
         index += static_cast<std::uint32_t>(n);
     }
-    const tele::ChannelStore* s = r.store(1, fe);
+    const dev::tele::ChannelStore* s = r.store(1, fe);
     ASSERT_NE(s, nullptr);
     EXPECT_EQ(s->size(), 1000u);
     EXPECT_NEAR(r.spanS(1), 9.99, 1e-6);
@@ -136,7 +136,7 @@ struct HistoryRig {
         hub.enableHistory(HistoryBudget{20, 100});
         hub.addInstrument(0, QStringLiteral("Analyzer"), &analyzer);
         hub.addInstrument(1, QStringLiteral("Stage"), &stage);
-        QObject::connect(&hub, &TelemetryHub::problem, &hub, [this](const msg::Message& m) { problems << QString::fromStdString(m.id); });
+        QObject::connect(&hub, &TelemetryHub::problem, &hub, [this](const motion::msg::Message& m) { problems << QString::fromStdString(m.id); });
     }
     /// `seconds` at 100 Hz from device time `fromS` in 10-sample batches of X and Y commanded,
     /// measured, following error and velocity (velocity is not a recorded kind).
@@ -167,13 +167,13 @@ TEST_F(TelemetryHistoryTest, EveryInstrumentsPositionsAndErrorsAreKeptThoughNobo
     const ChannelKey stageYError{1, href(1, ChannelKind::FollowingError)};
     const ChannelKey analyzerZ{0, href(2, ChannelKind::Measured)};
     EXPECT_EQ(rig.hub.store(stageYError), nullptr) << "no screen wants it: no live store";
-    const tele::ChannelStore* y = rig.hub.historyStore(stageYError);
+    const dev::tele::ChannelStore* y = rig.hub.historyStore(stageYError);
     ASSERT_NE(y, nullptr);
     EXPECT_EQ(y->size(), 200u);
     EXPECT_DOUBLE_EQ(y->firstTime(), 7.0);
     EXPECT_EQ(y->at(0).value, 6.0f * 1000) << "following error in µm, like the live stores (Y's is the batch's 7th channel)";
     EXPECT_EQ(rig.hub.viewStore(stageYError), y) << "a plot of it shows the history";
-    const tele::ChannelStore* z = rig.hub.historyStore(analyzerZ);
+    const dev::tele::ChannelStore* z = rig.hub.historyStore(analyzerZ);
     ASSERT_NE(z, nullptr);
     EXPECT_EQ(z->size(), 300u);
     EXPECT_DOUBLE_EQ(z->lastTime(), 52.99);
@@ -206,7 +206,7 @@ TEST_F(TelemetryHistoryTest, AReconnectLeavesAGapAndKeepsEverythingBeforeIt)
     emit rig.stage.stateChanged(dev::LinkState::Ready);
     rig.stageIndex = 0;  // a new subscription counts from zero
     rig.feed(rig.stage, rig.stageIndex, 14.0, 1.0);  // the device's clock ran on meanwhile
-    const tele::ChannelStore* s = rig.hub.historyStore(ChannelKey{1, href(0, ChannelKind::Commanded)});
+    const dev::tele::ChannelStore* s = rig.hub.historyStore(ChannelKey{1, href(0, ChannelKind::Commanded)});
     ASSERT_NE(s, nullptr);
     EXPECT_EQ(s->size(), 200u) << "nothing wiped";
     EXPECT_DOUBLE_EQ(s->firstTime(), 10.0);
@@ -214,7 +214,7 @@ TEST_F(TelemetryHistoryTest, AReconnectLeavesAGapAndKeepsEverythingBeforeIt)
     EXPECT_EQ(s->lowerBound(11.0), 100u);
     EXPECT_DOUBLE_EQ(s->at(100).tS, 14.0) << "nothing invented in the gap";
     // Drawn, the gap is empty columns.
-    std::vector<tele::MinMax> columns(50);
+    std::vector<dev::tele::MinMax> columns(50);
     s->decimate(10.0, 15.0, 50, columns.data());
     EXPECT_FALSE(columns[5].empty());
     for (int c = 11; c < 39; ++c)
@@ -231,7 +231,7 @@ TEST_F(TelemetryHistoryTest, ADeviceClockThatStartsAgainContinuesTheTimeLineAfte
     rig.stageIndex = 0;
     rig.feed(rig.stage, rig.stageIndex, 0.5, 0.5);  // power-cycled: its clock is back near zero
     ASSERT_EQ(rig.problems, QStringList{QStringLiteral("telemetry.clock_restarted")});
-    for (const tele::ChannelStore* s : {rig.hub.historyStore(x), rig.hub.store(x)}) {
+    for (const dev::tele::ChannelStore* s : {rig.hub.historyStore(x), rig.hub.store(x)}) {
         ASSERT_NE(s, nullptr);
         EXPECT_EQ(s->size(), 150u) << "what came before the restart is kept";
         EXPECT_DOUBLE_EQ(s->at(99).tS, 100.99);
@@ -262,7 +262,7 @@ TEST_F(TelemetryHistoryTest, ExportHoldsEveryRecordedChannelWithDataForTheChosen
 {
     HistoryRig rig;
     QTemporaryDir dir;
-    msg::Message error;
+    motion::msg::Message error;
     EXPECT_FALSE(rig.hub.exportHistory(dir.filePath(QStringLiteral("none.csv")), 0, &error));
     EXPECT_EQ(error.id, "telemetry.history_empty");
 
@@ -270,7 +270,7 @@ TEST_F(TelemetryHistoryTest, ExportHoldsEveryRecordedChannelWithDataForTheChosen
     rig.feed(rig.stage, rig.stageIndex, 7.0, 4.0, 2);
     const QString path = dir.filePath(QStringLiteral("history.csv"));
     quint64 rows = 0;
-    ASSERT_TRUE(rig.hub.exportHistory(path, 1.0, &error, &rows)) << msg::debugString(error);
+    ASSERT_TRUE(rig.hub.exportHistory(path, 1.0, &error, &rows)) << motion::msg::debugString(error);
     const auto csv = historyCsv(path);
     ASSERT_FALSE(csv.empty());
     EXPECT_EQ(csv[0], (QList<QByteArray>{"time_s", "instrument", "Analyzer 0 commanded [mm]", "Analyzer 0 measured [mm]",
@@ -296,7 +296,7 @@ TEST_F(TelemetryHistoryTest, ExportHoldsEveryRecordedChannelWithDataForTheChosen
     EXPECT_EQ(csv[102][3 + 3].toDouble(), (299 * 10 + 1));
     EXPECT_EQ(csv[102][3 + 4].toDouble(), (299 * 10 + 2) * 1000.0);
 
-    ASSERT_TRUE(rig.hub.exportHistory(path, 0, &error, &rows)) << msg::debugString(error);
+    ASSERT_TRUE(rig.hub.exportHistory(path, 0, &error, &rows)) << motion::msg::debugString(error);
     EXPECT_EQ(rows, 300u + 400u) << "0: everything recorded";
 }
 
@@ -304,7 +304,7 @@ TEST_F(TelemetryHistoryTest, ExportHoldsEveryRecordedChannelWithDataForTheChosen
 
 TEST_F(TelemetryHistoryTest, AnInstrumentNobodyWatchesStreamsItsHistoryChannelsAtTheDefaultRate)
 {
-    dev::SimulatedLink link(proto::DeviceKind::Analyzer, 0);
+    dev::SimulatedLink link(dev::proto::DeviceKind::Analyzer, 0);
     link.host().setManualClock(true);
     link.host().firmware().setLinkBaud(921600);
     dev::BenchPilotClient client;
@@ -336,7 +336,7 @@ TEST_F(TelemetryHistoryTest, AnInstrumentNobodyWatchesStreamsItsHistoryChannelsA
 
 TEST_F(TelemetryHistoryTest, HistoryNeverCostsAScreenItsRateOnASlowLink)
 {
-    dev::SimulatedLink link(proto::DeviceKind::Analyzer, 0);
+    dev::SimulatedLink link(dev::proto::DeviceKind::Analyzer, 0);
     link.host().setManualClock(true);
     link.host().firmware().setLinkBaud(115200);
     dev::BenchPilotClient client;

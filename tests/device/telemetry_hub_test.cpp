@@ -1,4 +1,4 @@
-// tele::TelemetryHub: what the plots and the recorder get from the instruments.
+// dev::tele::TelemetryHub: what the plots and the recorder get from the instruments.
 // Against the in-process simulator on a manual clock (deterministic, fast): batches
 // land in the stores at the device's times and in the units the axes show, a rate
 // the link cannot carry falls back to the capacity the device states, the union of
@@ -26,10 +26,10 @@
 
 namespace {
 
-using proto::ChannelKind;
-using proto::ChannelRef;
-using tele::ChannelKey;
-using tele::TelemetryHub;
+using dev::proto::ChannelKind;
+using dev::proto::ChannelRef;
+using dev::tele::ChannelKey;
+using dev::tele::TelemetryHub;
 
 using devtest::ensureApp;
 using devtest::waitFor;
@@ -40,7 +40,7 @@ ChannelRef ref(int axis, ChannelKind k) { return ChannelRef{static_cast<std::uin
 
 /// A client on the simulator over an unpaced loopback; the device's clock moves only in run().
 struct SimRig {
-    explicit SimRig(proto::DeviceKind kind, std::uint32_t deviceBaud = 921600, int instrument = 1,
+    explicit SimRig(dev::proto::DeviceKind kind, std::uint32_t deviceBaud = 921600, int instrument = 1,
                     const QString& name = QStringLiteral("Stage"))
         : link(kind, 0), index(instrument)
     {
@@ -48,14 +48,14 @@ struct SimRig {
         link.host().firmware().setLinkBaud(deviceBaud);
         client.setTransport(link.hostEnd());
         QObject::connect(&client, &dev::BenchPilotClient::telemetryReceived, &client,
-                         [this](const proto::TelemetryBatch& b) { batches.push_back(b); });
+                         [this](const dev::proto::TelemetryBatch& b) { batches.push_back(b); });
         QObject::connect(&client, &dev::BenchPilotClient::requestFailed, &client,
                          [this](const dev::RequestError& e) { failures.push_back(e); });
-        QObject::connect(&hub, &TelemetryHub::subscriptionChanged, &hub, [this](int i, int rate, const msg::Message& message) {
-            const QString note = QString::fromStdString(message.empty() ? std::string() : msg::debugString(message));
+        QObject::connect(&hub, &TelemetryHub::subscriptionChanged, &hub, [this](int i, int rate, const motion::msg::Message& message) {
+            const QString note = QString::fromStdString(message.empty() ? std::string() : motion::msg::debugString(message));
             changes.push_back({i, rate, note, message});
         });
-        QObject::connect(&hub, &TelemetryHub::problem, &hub, [this](const msg::Message& m) { problems << QString::fromStdString(msg::debugString(m)); });
+        QObject::connect(&hub, &TelemetryHub::problem, &hub, [this](const motion::msg::Message& m) { problems << QString::fromStdString(motion::msg::debugString(m)); });
         hub.addInstrument(index, name, &client);
     }
     ~SimRig() { client.setTransport(nullptr); }
@@ -84,13 +84,13 @@ struct SimRig {
     struct Change {
         int instrument, rate;
         QString note;
-        msg::Message message;
+        motion::msg::Message message;
     };
     dev::SimulatedLink link;
     dev::BenchPilotClient client;
     TelemetryHub hub;
     int index;
-    std::vector<proto::TelemetryBatch> batches;
+    std::vector<dev::proto::TelemetryBatch> batches;
     std::vector<dev::RequestError> failures;
     std::vector<Change> changes;
     QStringList problems;
@@ -103,14 +103,14 @@ struct FakeRig {
         hub.addInstrument(0, QStringLiteral("Analyzer"), &analyzer);
         hub.addInstrument(1, QStringLiteral("Stage"), &stage);
         QObject::connect(&hub, &TelemetryHub::dataArrived, &hub, [this](int i) { arrived.push_back(i); });
-        QObject::connect(&hub, &TelemetryHub::problem, &hub, [this](const msg::Message& m) { problems << QString::fromStdString(msg::debugString(m)); });
+        QObject::connect(&hub, &TelemetryHub::problem, &hub, [this](const motion::msg::Message& m) { problems << QString::fromStdString(motion::msg::debugString(m)); });
     }
     /// n samples of `channels` from sample index `first`, value = f(sample index, channel).
-    static proto::TelemetryBatch batch(std::uint32_t first, std::uint64_t t0Us, std::uint32_t periodUs,
+    static dev::proto::TelemetryBatch batch(std::uint32_t first, std::uint64_t t0Us, std::uint32_t periodUs,
                                        const std::vector<ChannelRef>& channels, int n,
                                        const std::function<std::int32_t(std::uint32_t, std::size_t)>& f)
     {
-        proto::TelemetryBatch b;
+        dev::proto::TelemetryBatch b;
         b.firstSampleIndex = first;
         b.firstSampleTimeUs = t0Us;
         b.periodUs = periodUs;
@@ -166,11 +166,11 @@ std::vector<QList<QByteArray>> readCsv(const QString& path)
 
 TEST_F(TelemetryHubTest, StoresHoldTheDevicesSamplesAtItsTimesInAxisUnits)
 {
-    SimRig s(proto::DeviceKind::Stage);
+    SimRig s(dev::proto::DeviceKind::Stage);
     ASSERT_TRUE(s.connect());
     const int x = s.client.identity().axisIndex(QLatin1Char('X'));
     const ChannelKey measured = s.key(x, ChannelKind::Measured), error = s.key(x, ChannelKind::FollowingError);
-    const ChannelKey contour{s.index, ref(proto::kNoAxis, ChannelKind::ContourError)};
+    const ChannelKey contour{s.index, ref(dev::proto::kNoAxis, ChannelKind::ContourError)};
     EXPECT_EQ(s.hub.channelName(measured), QStringLiteral("Stage X measured"));
     EXPECT_EQ(s.hub.channelUnit(measured), QStringLiteral("mm"));
     EXPECT_EQ(s.hub.channelUnit(error), QStringLiteral("µm"));
@@ -197,7 +197,7 @@ TEST_F(TelemetryHubTest, StoresHoldTheDevicesSamplesAtItsTimesInAxisUnits)
         ASSERT_EQ(b.channels.size(), 3u);
         for (std::size_t c = 0; c < 3; ++c) {
             const ChannelKey key{s.index, b.channels[c]};
-            const tele::ChannelStore* store = s.hub.store(key);
+            const dev::tele::ChannelStore* store = s.hub.store(key);
             ASSERT_NE(store, nullptr);
             const double factor = key == measured ? 1.0 : 1000.0;  // mm; µm
             for (std::size_t k = 0; k < b.sampleCount; ++k) {
@@ -212,7 +212,7 @@ TEST_F(TelemetryHubTest, StoresHoldTheDevicesSamplesAtItsTimesInAxisUnits)
         }
     }
     EXPECT_GE(checked, 3u * 450);
-    const tele::ChannelStore* m = s.hub.store(measured);
+    const dev::tele::ChannelStore* m = s.hub.store(measured);
     EXPECT_GT(m->at(m->size() - 1).value - m->at(0).value, 1.0f) << "the jog step shows in the measured position";
     const auto& last = s.batches.back();
     EXPECT_DOUBLE_EQ(s.hub.latestTimeS(s.index), double(last.firstSampleTimeUs + (last.sampleCount - 1u) * last.periodUs) * 1e-6);
@@ -223,7 +223,7 @@ TEST_F(TelemetryHubTest, StoresHoldTheDevicesSamplesAtItsTimesInAxisUnits)
 
 TEST_F(TelemetryHubTest, AnalyzerOffersNoPidChannelsAndPumpUnits)
 {
-    SimRig s(proto::DeviceKind::Analyzer, 921600, 0, QStringLiteral("Analyzer"));
+    SimRig s(dev::proto::DeviceKind::Analyzer, 921600, 0, QStringLiteral("Analyzer"));
     ASSERT_TRUE(s.connect());
     const auto available = s.hub.availableChannels(0);
     EXPECT_EQ(available.size(), 4 * 5);
@@ -240,7 +240,7 @@ TEST_F(TelemetryHubTest, AnalyzerOffersNoPidChannelsAndPumpUnits)
 
 TEST_F(TelemetryHubTest, RateAboveTheLinksCapacityFallsBackToTheCapacityTheDeviceStates)
 {
-    SimRig s(proto::DeviceKind::Stage, 115200);
+    SimRig s(dev::proto::DeviceKind::Stage, 115200);
     ASSERT_TRUE(s.connect());
     const QVector<ChannelKey> xy{s.key(0, ChannelKind::Commanded), s.key(0, ChannelKind::Measured),
                                  s.key(1, ChannelKind::Commanded), s.key(1, ChannelKind::Measured)};
@@ -256,8 +256,8 @@ TEST_F(TelemetryHubTest, RateAboveTheLinksCapacityFallsBackToTheCapacityTheDevic
     // fallback); the hub's note carries the capacity the device stated.
     int stated = 0;
     for (const auto& f : s.failures)
-        EXPECT_NE(f.code, proto::ErrorCode::OverCapacity) << "a handled fallback was reported as a failure";
-    const msg::Message& why = s.changes.back().message;
+        EXPECT_NE(f.code, dev::proto::ErrorCode::OverCapacity) << "a handled fallback was reported as a failure";
+    const motion::msg::Message& why = s.changes.back().message;
     EXPECT_EQ(why.id, "telemetry.rate_link_limited") << s.changes.back().note.toStdString();
     stated = static_cast<int>(why.number("max"));
     ASSERT_GT(stated, 0) << "the device refused 10 kHz and stated its capacity";
@@ -280,7 +280,7 @@ TEST_F(TelemetryHubTest, RateAboveTheLinksCapacityFallsBackToTheCapacityTheDevic
 
 TEST_F(TelemetryHubTest, SubscribesTheUnionOfAllConsumersAtTheHighestRate)
 {
-    SimRig s(proto::DeviceKind::Stage);
+    SimRig s(dev::proto::DeviceKind::Stage);
     ASSERT_TRUE(s.connect());
     // Nobody wants anything yet: the hub switched the client's default stream off.
     ASSERT_TRUE(waitFor([&] { return s.client.subscribedRateHz() == 0; }));
@@ -304,7 +304,7 @@ TEST_F(TelemetryHubTest, SubscribesTheUnionOfAllConsumersAtTheHighestRate)
 
 TEST_F(TelemetryHubTest, ResubscribesAfterTheLinkComesBack)
 {
-    SimRig s(proto::DeviceKind::Stage);
+    SimRig s(dev::proto::DeviceKind::Stage);
     ASSERT_TRUE(s.connect());
     s.hub.setWanted(QStringLiteral("plot"), {s.key(0, ChannelKind::Measured), s.key(0, ChannelKind::FollowingError)}, 2000);
     ASSERT_TRUE(waitFor([&] { return s.client.subscribedRateHz() == 2000; }));
@@ -325,13 +325,13 @@ TEST_F(TelemetryHubTest, ResubscribesAfterTheLinkComesBack)
 
 TEST_F(TelemetryHubTest, RecordsTheDevicesSamplesToCsvAndReadsBack)
 {
-    SimRig s(proto::DeviceKind::Stage);
+    SimRig s(dev::proto::DeviceKind::Stage);
     ASSERT_TRUE(s.connect());
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("x.csv"));
     const QVector<ChannelKey> columns{s.key(0, ChannelKind::Measured), s.key(0, ChannelKind::FollowingError),
                                       s.key(0, ChannelKind::Switches)};
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(s.hub.startRecording(path, columns, &error)) << error;
     EXPECT_TRUE(s.hub.recording());
     EXPECT_EQ(s.hub.recordingPath(), path);
@@ -383,7 +383,7 @@ TEST_F(TelemetryHubTest, GapsInTheSampleCounterAreCountedAsLost)
     EXPECT_EQ(f.hub.lostSamples(1), 5u);
     EXPECT_EQ(f.hub.samplesReceived(1), 40u);
     EXPECT_EQ(f.hub.lostSamples(0), 0u);
-    const tele::ChannelStore* st = f.hub.store(f.stageX);
+    const dev::tele::ChannelStore* st = f.hub.store(f.stageX);
     ASSERT_NE(st, nullptr);
     EXPECT_EQ(st->size(), 40u);
     // The hole stays a hole: nothing is invented between 1.019 s and 1.025 s.
@@ -408,7 +408,7 @@ TEST_F(TelemetryHubTest, WindowKeepsTheNewestWindowOnly)
     f.hub.setWindowS(1.0);
     f.hub.setWanted(QStringLiteral("plot"), {f.stageX}, 1000);
     f.feedStage(10, 3.0);
-    const tele::ChannelStore* st = f.hub.store(f.stageX);
+    const dev::tele::ChannelStore* st = f.hub.store(f.stageX);
     ASSERT_NE(st, nullptr);
     EXPECT_DOUBLE_EQ(f.hub.latestTimeS(1), 12.999);
     EXPECT_NEAR(st->firstTime(), 11.999, 1e-9);
@@ -431,7 +431,7 @@ TEST_F(TelemetryHubTest, PauseFreezesTheViewWhileCollectionAndRecordingGoOn)
 {
     FakeRig f;
     QTemporaryDir dir;
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(f.hub.startRecording(dir.filePath(QStringLiteral("p.csv")), {f.stageX}, &error)) << error;
     f.hub.setWindowS(1.0);
     f.hub.setWanted(QStringLiteral("plot"), {f.stageX}, 1000);
@@ -441,7 +441,7 @@ TEST_F(TelemetryHubTest, PauseFreezesTheViewWhileCollectionAndRecordingGoOn)
     const double pausedAt = f.hub.pausedAtS(1);
     EXPECT_DOUBLE_EQ(pausedAt, 1.999);
     auto frozenSamples = [&] {
-        const tele::ChannelStore* st = f.hub.store(f.stageX);
+        const dev::tele::ChannelStore* st = f.hub.store(f.stageX);
         return st->lowerBound(pausedAt + 1e-9) - st->lowerBound(pausedAt - 1.0 - 1e-9);
     };
     EXPECT_EQ(frozenSamples(), 1001u);
@@ -456,7 +456,7 @@ TEST_F(TelemetryHubTest, PauseFreezesTheViewWhileCollectionAndRecordingGoOn)
 
     // Much longer: the frozen range is untouched, memory stays bounded, the rest is held back.
     f.feedStage(2.8, 10.0);
-    const tele::ChannelStore* st = f.hub.store(f.stageX);
+    const dev::tele::ChannelStore* st = f.hub.store(f.stageX);
     EXPECT_EQ(frozenSamples(), 1001u);
     EXPECT_NEAR(st->firstTime(), pausedAt - 1.0, 1e-9);
     EXPECT_EQ(st->size(), st->capacity());
@@ -493,7 +493,7 @@ TEST_F(TelemetryHubTest, ADeviceClockThatStartsAgainContinuesThatInstrumentsTime
     f.feedStage(0.5, 0.2);  // power-cycled device: its clock is back near zero
     // Nothing before the restart is thrown away (the history must tell what happened): the new samples
     // follow the old ones after the gap the host saw.
-    const tele::ChannelStore* st = f.hub.store(f.stageX);
+    const dev::tele::ChannelStore* st = f.hub.store(f.stageX);
     EXPECT_EQ(st->size(), 1200u);
     EXPECT_DOUBLE_EQ(st->at(999).tS, 100.999);
     EXPECT_GT(st->at(1000).tS, 100.999);
@@ -509,7 +509,7 @@ TEST_F(TelemetryHubTest, RecordingSpansInstrumentsWithOneRowPerDeviceSample)
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("both.csv"));
     const ChannelKey analyzerZ{0, ref(2, ChannelKind::Commanded)};
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(f.hub.startRecording(path, {f.stageX, analyzerZ}, &error)) << error;
     const std::vector<ChannelRef> z{ref(2, ChannelKind::Commanded)};
     emit f.analyzer.telemetryReceived(FakeRig::batch(0, 5'000'000, 10'000, z, 2, [](std::uint32_t i, std::size_t) {
@@ -529,7 +529,7 @@ TEST_F(TelemetryHubTest, RecordingSpansInstrumentsWithOneRowPerDeviceSample)
 TEST_F(TelemetryHubTest, RecordingRefusesWhatItCannotDoWithAReason)
 {
     FakeRig f;
-    msg::Message error;
+    motion::msg::Message error;
     EXPECT_FALSE(f.hub.startRecording(QStringLiteral("/nonexistent-dir/x.csv"), {f.stageX}, &error));
     EXPECT_TRUE(QString::fromStdString(i18ntest::english(error)).contains(QStringLiteral("/nonexistent-dir/x.csv"))) << error;
     EXPECT_FALSE(f.hub.recording());
@@ -549,7 +549,7 @@ TEST_F(TelemetryHubTest, RecordingRefusesWhatItCannotDoWithAReason)
 // before the reconnect still came in after it (here, the paced wire's queue).
 TEST_F(TelemetryHubTest, SamplesTheDeviceTookWhileDisconnectedAreNotCountedAsLost)
 {
-    dev::SimulatedLink link(proto::DeviceKind::Stage, 115200);  // paced, as the GUI's simulator
+    dev::SimulatedLink link(dev::proto::DeviceKind::Stage, 115200);  // paced, as the GUI's simulator
     dev::BenchPilotClient client;
     client.setTransport(link.hostEnd());
     client.connectLink();

@@ -1,4 +1,4 @@
-// tele::ChannelStore: the rolling window a plot reads. What a user would notice:
+// dev::tele::ChannelStore: the rolling window a plot reads. What a user would notice:
 // the window slides without losing anything newer than its start, late samples
 // never scramble the trace, gaps stay gaps, and the min/max columns a plot draws
 // never hide a spike (every sample lies inside its column's range).
@@ -14,9 +14,9 @@
 
 namespace {
 
-using tele::ChannelStore;
-using tele::MinMax;
-using tele::Sample;
+using dev::tele::ChannelStore;
+using dev::tele::MinMax;
+using dev::tele::Sample;
 
 std::vector<float> ramp(std::size_t n, float from = 0)
 {

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <limits>
 
-using namespace proto;
+using namespace dev::proto;
 
 namespace {
 Bytes with(Bytes b, std::size_t at, std::uint8_t v)

@@ -56,10 +56,10 @@ std::string sourceDir() { return std::string(BP_SOURCE_DIR) + "/"; }
 TEST(TuningFile, WritesAndReadsBackTheSameDocument)
 {
     const TuningResult r = relayResult();
-    const std::string text = files::tuningToJson(r);
+    const std::string text = dev::files::tuningToJson(r);
     EXPECT_NE(text.find("\"schema\": \"benchpilot.tuning\""), std::string::npos);
     EXPECT_NE(text.find("\"zn-pid\""), std::string::npos);  // the rules table, for readers
-    const auto back = files::tuningFromJson(text);
+    const auto back = dev::files::tuningFromJson(text);
     ASSERT_TRUE(back.result) << i18ntest::englishFormat(back.problems, "x.tuning.json");
     EXPECT_EQ(back.result->target, "Stage X");
     EXPECT_DOUBLE_EQ(back.result->ku, 4.27);
@@ -69,7 +69,7 @@ TEST(TuningFile, WritesAndReadsBackTheSameDocument)
     ASSERT_TRUE(back.result->verification);
     EXPECT_TRUE(std::isnan(back.result->verification->metrics.settlingTimeS));
     EXPECT_DOUBLE_EQ(back.result->verification->gains.kd, 1.66);
-    EXPECT_EQ(files::tuningToJson(*back.result), text);
+    EXPECT_EQ(dev::files::tuningToJson(*back.result), text);
 
     TuningResult ug;
     ug.target = "fopdt:K=2,tau=0.5,L=0.1";
@@ -80,10 +80,10 @@ TEST(TuningFile, WritesAndReadsBackTheSameDocument)
     ug.step = 1;
     ug.envelope = {3, 3, 600};
     ug.trials = {{0.1, 0, 0, "no oscillation"}, {8.2, 0.73, 1.29, "decays"}, {9.1, 0.99, 1.3, "sustained"}};
-    const auto ugBack = files::tuningFromJson(files::tuningToJson(ug));
+    const auto ugBack = dev::files::tuningFromJson(dev::files::tuningToJson(ug));
     ASSERT_TRUE(ugBack.result) << i18ntest::englishFormat(ugBack.problems, "m.tuning.json");
     EXPECT_EQ(ugBack.result->trials.size(), 3u);
-    EXPECT_EQ(files::tuningToJson(*ugBack.result), files::tuningToJson(ug));
+    EXPECT_EQ(dev::files::tuningToJson(*ugBack.result), dev::files::tuningToJson(ug));
 }
 
 TEST(TuningFile, ABadFileIsRefusedWithEveryProblemAndWhereItIs)
@@ -102,7 +102,7 @@ TEST(TuningFile, ABadFileIsRefusedWithEveryProblemAndWhereItIs)
   "kuu": 1
 }
 )";
-    const auto r = files::tuningFromJson(text);
+    const auto r = dev::files::tuningFromJson(text);
     EXPECT_FALSE(r.result);
     const std::string p = i18ntest::englishFormat(r.problems, "bad.tuning.json");
     EXPECT_NE(p.find("bad.tuning.json:7:9: ku: must be"), std::string::npos) << p;
@@ -114,11 +114,11 @@ TEST(TuningFile, ABadFileIsRefusedWithEveryProblemAndWhereItIs)
     EXPECT_NE(p.find("kuu"), std::string::npos) << p;
     EXPECT_GE(std::count(p.begin(), p.end(), '\n'), 7);
 
-    const std::string newer = i18ntest::englishFormat(files::tuningFromJson(R"({"schema": "benchpilot.tuning", "version": 2})").problems, "n.json");
+    const std::string newer = i18ntest::englishFormat(dev::files::tuningFromJson(R"({"schema": "benchpilot.tuning", "version": 2})").problems, "n.json");
     EXPECT_NE(newer.find("written by a newer BenchPilot"), std::string::npos) << newer;
-    const std::string other = i18ntest::englishFormat(files::tuningFromJson(R"({"schema": "benchpilot.recipe", "version": 1})").problems, "o.json");
+    const std::string other = i18ntest::englishFormat(dev::files::tuningFromJson(R"({"schema": "benchpilot.recipe", "version": 1})").problems, "o.json");
     EXPECT_NE(other.find("expected \"benchpilot.tuning\""), std::string::npos) << other;
-    const std::string broken = i18ntest::englishFormat(files::tuningFromJson("{\"schema\": ").problems, "b.json");
+    const std::string broken = i18ntest::englishFormat(dev::files::tuningFromJson("{\"schema\": ").problems, "b.json");
     EXPECT_NE(broken.find("b.json:1:"), std::string::npos) << broken;
 }
 
@@ -128,8 +128,8 @@ TEST(TuningFile, TheExamplesLoad)
     const QStringList names = dir.entryList({QStringLiteral("*.tuning.json")}, QDir::Files);
     ASSERT_GE(names.size(), 2) << "resources/examples should hold real tuning results";
     for (const QString& n : names) {
-        jsonio::Problems problems;
-        const auto r = files::loadTuningFile(dir.filePath(n), &problems);
+        dev::files::json::Problems problems;
+        const auto r = dev::files::loadTuningFile(dir.filePath(n), &problems);
         ASSERT_TRUE(r) << i18ntest::englishFormat(problems, n.toStdString());
         EXPECT_GT(r->ku, 0);
         EXPECT_GT(r->tuS, 0);
@@ -141,15 +141,15 @@ TEST(TuningFile, SavesAtomicallyAndLoadsBack)
     QTemporaryDir tmp;
     ASSERT_TRUE(tmp.isValid());
     const QString path = tmp.filePath(QStringLiteral("stage.tuning.json"));
-    msg::Message error;
-    ASSERT_TRUE(files::saveTuningFile(path, relayResult(), &error)) << error;
-    jsonio::Problems problems;
-    const auto r = files::loadTuningFile(path, &problems);
+    motion::msg::Message error;
+    ASSERT_TRUE(dev::files::saveTuningFile(path, relayResult(), &error)) << error;
+    dev::files::json::Problems problems;
+    const auto r = dev::files::loadTuningFile(path, &problems);
     ASSERT_TRUE(r) << i18ntest::englishFormat(problems, "stage.tuning.json");
     EXPECT_EQ(r->method, "relay");
-    EXPECT_FALSE(files::saveTuningFile(tmp.filePath(QStringLiteral("no/such/dir/x.json")), relayResult(), &error));
+    EXPECT_FALSE(dev::files::saveTuningFile(tmp.filePath(QStringLiteral("no/such/dir/x.json")), relayResult(), &error));
     EXPECT_EQ(error.id, "file.cannot_write");
-    EXPECT_FALSE(files::loadTuningFile(tmp.filePath(QStringLiteral("missing.json")), &problems));
+    EXPECT_FALSE(dev::files::loadTuningFile(tmp.filePath(QStringLiteral("missing.json")), &problems));
     EXPECT_NE(i18ntest::englishFormat(problems, "x").find("missing.json"), std::string::npos) << i18ntest::englishFormat(problems, "x");
 }
 
@@ -160,9 +160,9 @@ TEST(TuningFile, AVerificationKeepsItsVerdictAndItsLimitCycle)
     TuningResult r = relayResult();
     r.verification->metrics.outcome = motion::control::StepOutcome::LimitCycle;
     r.verification->limitCycle = {true, 0.0025, 0.04, 4, 0.001};
-    const std::string text = files::tuningToJson(r);
+    const std::string text = dev::files::tuningToJson(r);
     EXPECT_NE(text.find("\"verdict\": \"limit cycle\""), std::string::npos) << text;
-    const auto back = files::tuningFromJson(text);
+    const auto back = dev::files::tuningFromJson(text);
     ASSERT_TRUE(back.result) << i18ntest::englishFormat(back.problems, "x.tuning.json");
     ASSERT_TRUE(back.result->verification);
     const auto& v = *back.result->verification;
@@ -171,16 +171,16 @@ TEST(TuningFile, AVerificationKeepsItsVerdictAndItsLimitCycle)
     EXPECT_DOUBLE_EQ(v.limitCycle.amplitude, 0.0025);
     EXPECT_DOUBLE_EQ(v.limitCycle.periodS, 0.04);
     EXPECT_EQ(v.limitCycle.cycles, 4);
-    EXPECT_EQ(files::tuningToJson(*back.result), text);
+    EXPECT_EQ(dev::files::tuningToJson(*back.result), text);
 
-    std::string old = files::tuningToJson(relayResult());
+    std::string old = dev::files::tuningToJson(relayResult());
     const std::string verdict = "\"verdict\": \"settled\"";
     const auto key = old.find(verdict);
     ASSERT_NE(key, std::string::npos) << old;
     const auto comma = old.rfind(',', key);
     old.erase(comma, key + verdict.size() - comma);
     ASSERT_EQ(old.find("verdict"), std::string::npos) << old;
-    const auto read = files::tuningFromJson(old);
+    const auto read = dev::files::tuningFromJson(old);
     ASSERT_TRUE(read.result) << i18ntest::englishFormat(read.problems, "old.tuning.json");
     EXPECT_EQ(read.result->verification->metrics.outcome, motion::control::StepOutcome::DidNotSettle);
 }

@@ -19,7 +19,7 @@ using motion::control::EndReason;
 
 constexpr int kX = 0;
 
-struct TuningStage : HomedMachine<sim::stageConfig> {
+struct TuningStage : HomedMachine<dev::sim::stageConfig> {
     void SetUp() override
     {
         HomedMachine::SetUp();
@@ -27,7 +27,7 @@ struct TuningStage : HomedMachine<sim::stageConfig> {
         ASSERT_TRUE(r.runUntilIdle(20));
         r.events.clear();
     }
-    sim::SimTuning& t() { return m.tuning(); }
+    dev::sim::SimTuning& t() { return m.tuning(); }
     /// Runs with a host that keeps talking (the client's 50 ms polls).
     void run(double s, const std::function<void()>& each = {})
     {
@@ -37,22 +37,22 @@ struct TuningStage : HomedMachine<sim::stageConfig> {
                 each();
         });
     }
-    proto::GainsReply gains()
+    dev::proto::GainsReply gains()
     {
-        proto::GainsReply g;
+        dev::proto::GainsReply g;
         EXPECT_FALSE(t().getGains(kX, g));
         return g;
     }
-    proto::CaptureReply capture(std::uint32_t first = 0)
+    dev::proto::CaptureReply capture(std::uint32_t first = 0)
     {
-        proto::CaptureReply c;
-        const auto e = t().capture({kX, first, proto::kMaxCaptureSamplesPerReply}, c);
+        dev::proto::CaptureReply c;
+        const auto e = t().capture({kX, first, dev::proto::kMaxCaptureSamplesPerReply}, c);
         EXPECT_FALSE(e) << (e ? e->message : "");
         return c;
     }
-    static proto::StepTestRequest step(double mm, std::optional<proto::WireGains> trial = {})
+    static dev::proto::StepTestRequest step(double mm, std::optional<dev::proto::WireGains> trial = {})
     {
-        proto::StepTestRequest s;
+        dev::proto::StepTestRequest s;
         s.axis = kX;
         s.step = nm(mm);
         s.settleBand = nm(0.001);  // two grating counts: the loop's deadband is one
@@ -61,9 +61,9 @@ struct TuningStage : HomedMachine<sim::stageConfig> {
         s.trialGains = trial;
         return s;
     }
-    static proto::RelayTestRequest relay(double dMm, int cycles)
+    static dev::proto::RelayTestRequest relay(double dMm, int cycles)
     {
-        proto::RelayTestRequest q;
+        dev::proto::RelayTestRequest q;
         q.axis = kX;
         q.amplitude = static_cast<std::uint32_t>(nm(dMm));
         q.hysteresis = static_cast<std::uint32_t>(nm(0.001));
@@ -90,24 +90,24 @@ TEST_F(TuningStage, GainsAreTheSeedsAndTheControlPeriodIsReported)
 TEST_F(TuningStage, BadGainsAreRefusedWithAReasonAndThePreviousOnesStay)
 {
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
-    const proto::WireGains before = gains().gains;
-    for (const proto::WireGains& bad : {proto::WireGains{nan, 0.5f, 0.03f}, proto::WireGains{0.25f, -1.0f, 0.03f},
-                                        proto::WireGains{0.25f, 0.5f, inf}, proto::WireGains{1e9f, 0.5f, 0.03f}}) {
+    const dev::proto::WireGains before = gains().gains;
+    for (const dev::proto::WireGains& bad : {dev::proto::WireGains{nan, 0.5f, 0.03f}, dev::proto::WireGains{0.25f, -1.0f, 0.03f},
+                                        dev::proto::WireGains{0.25f, 0.5f, inf}, dev::proto::WireGains{1e9f, 0.5f, 0.03f}}) {
         const auto e = t().setGains({kX, 0, bad});
         ASSERT_TRUE(e);
-        EXPECT_EQ(e->code, proto::kErrBadGains);
+        EXPECT_EQ(e->code, dev::proto::kErrBadGains);
         EXPECT_NE(e->message.find("the previous ones stay"), std::string::npos) << e->message;
         EXPECT_EQ(gains().gains, before);
     }
-    EXPECT_EQ(r.count(proto::kEvGainsChanged), 0);
+    EXPECT_EQ(r.count(dev::proto::kEvGainsChanged), 0);
     // A good set takes effect, is announced, and is kept for power-up only when asked.
     ASSERT_FALSE(t().setGains({kX, 0, {0.3f, 0.4f, 0.02f}}));
     r.take();
-    EXPECT_EQ(r.count(proto::kEvGainsChanged, kX), 1);
-    EXPECT_EQ(gains().gains, (proto::WireGains{0.3f, 0.4f, 0.02f}));
+    EXPECT_EQ(r.count(dev::proto::kEvGainsChanged, kX), 1);
+    EXPECT_EQ(gains().gains, (dev::proto::WireGains{0.3f, 0.4f, 0.02f}));
     EXPECT_EQ(gains().saved, before);
-    ASSERT_FALSE(t().setGains({kX, proto::kSetGainsSave, {0.3f, 0.4f, 0.02f}}));
-    EXPECT_EQ(gains().saved, (proto::WireGains{0.3f, 0.4f, 0.02f}));
+    ASSERT_FALSE(t().setGains({kX, dev::proto::kSetGainsSave, {0.3f, 0.4f, 0.02f}}));
+    EXPECT_EQ(gains().saved, (dev::proto::WireGains{0.3f, 0.4f, 0.02f}));
 }
 
 TEST_F(TuningStage, StepTestSettlesUnderTheOperatorsGainsAndIsCaptured)
@@ -117,13 +117,13 @@ TEST_F(TuningStage, StepTestSettlesUnderTheOperatorsGainsAndIsCaptured)
     EXPECT_TRUE(t().setGains({kX, 0, {1, 1, 1}}));  // refused while it runs
     run(1.0);
     EXPECT_FALSE(moving(m, kX));
-    const auto* ended = r.find(proto::kEvTestEnded, kX);
+    const auto* ended = r.find(dev::proto::kEvTestEnded, kX);
     ASSERT_NE(ended, nullptr);
     EXPECT_NE(ended->text.find("settled"), std::string::npos) << ended->text;
     ASSERT_TRUE(ended->reason);
-    EXPECT_EQ(ended->reason->code, proto::reason::kSettled);
+    EXPECT_EQ(ended->reason->code, dev::proto::reason::kSettled);
     ASSERT_EQ(ended->reason->values.size(), 2u);
-    EXPECT_EQ(ended->reason->values[0], proto::reason::kStepTest);
+    EXPECT_EQ(ended->reason->values[0], dev::proto::reason::kStepTest);
     EXPECT_GT(ended->reason->values[1], 0.0) << "how long it ran";
     EXPECT_NEAR(measuredMm(m, kX), 50.02, 0.001);
     EXPECT_NEAR(commandedMm(m, kX), 50.02, 1e-9);  // it stays on the step it settled on
@@ -132,7 +132,7 @@ TEST_F(TuningStage, StepTestSettlesUnderTheOperatorsGainsAndIsCaptured)
     EXPECT_EQ(c.reason, static_cast<std::uint8_t>(EndReason::Settled));
     EXPECT_EQ(c.periodUs, 1000u);
     EXPECT_EQ(c.startPosition, nm(50));
-    EXPECT_EQ(c.gains, (proto::WireGains{0.25f, 0.5f, 0.03f}));
+    EXPECT_EQ(c.gains, (dev::proto::WireGains{0.25f, 0.5f, 0.03f}));
     ASSERT_GT(c.total, 20u);
     EXPECT_EQ(c.samples.front().setpoint, nm(50.02));
     EXPECT_NEAR(c.samples.back().measured, nm(50.02), 1000);
@@ -141,20 +141,20 @@ TEST_F(TuningStage, StepTestSettlesUnderTheOperatorsGainsAndIsCaptured)
 TEST_F(TuningStage, TrialGainsAreUsedForTheTestOnlyAndTheEnvelopeStopsTheAxis)
 {
     // P-only far above the loop's ultimate gain: it grows until the envelope trips.
-    auto s = step(0.01, proto::WireGains{12, 0, 0});
+    auto s = step(0.01, dev::proto::WireGains{12, 0, 0});
     s.envelope.maxFollowingError = static_cast<std::uint32_t>(nm(0.05));  // the excursion limit is the one to trip
     ASSERT_FALSE(t().stepTest(s));
-    EXPECT_EQ(gains().gains, (proto::WireGains{0.25f, 0.5f, 0.03f}));  // the operator's set, untouched
-    EXPECT_EQ(gains().flags, proto::kGainsTestRunning);
+    EXPECT_EQ(gains().gains, (dev::proto::WireGains{0.25f, 0.5f, 0.03f}));  // the operator's set, untouched
+    EXPECT_EQ(gains().flags, dev::proto::kGainsTestRunning);
     double worst = 0;
     run(1.0, [&] { worst = std::max(worst, std::abs(m.measuredLogical(kX) - 50)); });
-    const auto* tripped = r.find(proto::kEvTestTripped, kX);
+    const auto* tripped = r.find(dev::proto::kEvTestTripped, kX);
     ASSERT_NE(tripped, nullptr);
     EXPECT_NE(tripped->text.find("max excursion 0.0300 mm crossed"), std::string::npos) << tripped->text;
     ASSERT_TRUE(tripped->reason);
-    EXPECT_EQ(tripped->reason->code, proto::reason::kExcursion);
+    EXPECT_EQ(tripped->reason->code, dev::proto::reason::kExcursion);
     ASSERT_EQ(tripped->reason->values.size(), 5u) << "test, limit, value, seconds, where it stopped";
-    EXPECT_EQ(tripped->reason->values[0], proto::reason::kStepTest);
+    EXPECT_EQ(tripped->reason->values[0], dev::proto::reason::kStepTest);
     EXPECT_DOUBLE_EQ(tripped->reason->values[1], 0.03);
     EXPECT_GT(tripped->reason->values[2], 0.03);
     EXPECT_FALSE(moving(m, kX));
@@ -177,7 +177,7 @@ TEST_F(TuningStage, RelayOscillatesAroundWhereItStarted)
 {
     ASSERT_FALSE(t().relayTest(relay(0.01, 20)));
     run(1.0);
-    const auto* ended = r.find(proto::kEvTestEnded, kX);
+    const auto* ended = r.find(dev::proto::kEvTestEnded, kX);
     ASSERT_NE(ended, nullptr);
     const auto c = capture();
     EXPECT_EQ(c.kind, 2);
@@ -199,11 +199,11 @@ TEST_F(TuningStage, EStopMidOscillationEndsTheTestAndKeepsTheGains)
     ASSERT_TRUE(t().testRunning(kX));
     ASSERT_FALSE(m.estop());
     r.take();
-    const auto* aborted = r.find(proto::kEvTestAborted, kX);
+    const auto* aborted = r.find(dev::proto::kEvTestAborted, kX);
     ASSERT_NE(aborted, nullptr);
     EXPECT_NE(aborted->text.find("E-stop"), std::string::npos);
     ASSERT_TRUE(aborted->reason);
-    EXPECT_EQ(*aborted->reason, (proto::EventReason{proto::reason::kByEStop, {proto::reason::kRelayTest}}));
+    EXPECT_EQ(*aborted->reason, (dev::proto::EventReason{dev::proto::reason::kByEStop, {dev::proto::reason::kRelayTest}}));
     EXPECT_FALSE(t().testRunning(kX));
     EXPECT_EQ(capture().reason, static_cast<std::uint8_t>(EndReason::EStop));
     const double here = m.measuredLogical(kX);
@@ -214,7 +214,7 @@ TEST_F(TuningStage, EStopMidOscillationEndsTheTestAndKeepsTheGains)
     ASSERT_FALSE(m.reset());
     run(0.3);
     EXPECT_FALSE(moving(m, kX));
-    EXPECT_EQ(gains().gains, (proto::WireGains{0.25f, 0.5f, 0.03f}));
+    EXPECT_EQ(gains().gains, (dev::proto::WireGains{0.25f, 0.5f, 0.03f}));
 }
 
 TEST_F(TuningStage, ATestEndsByItselfWhenTheHostGoesSilent)
@@ -224,7 +224,7 @@ TEST_F(TuningStage, ATestEndsByItselfWhenTheHostGoesSilent)
     EXPECT_TRUE(t().testRunning(kX));
     r.run(0.05);
     EXPECT_FALSE(t().testRunning(kX));
-    const auto* aborted = r.find(proto::kEvTestAborted, kX);
+    const auto* aborted = r.find(dev::proto::kEvTestAborted, kX);
     ASSERT_NE(aborted, nullptr);
     EXPECT_NE(aborted->text.find("no frame from the host"), std::string::npos) << aborted->text;
     EXPECT_EQ(capture().reason, static_cast<std::uint8_t>(EndReason::HostSilent));
@@ -238,7 +238,7 @@ TEST_F(TuningStage, StopAndTestAbortEndATestAndTheAxisHolds)
     run(0.1);
     ASSERT_FALSE(m.stop(0));
     r.take();
-    ASSERT_NE(r.find(proto::kEvTestAborted, kX), nullptr);
+    ASSERT_NE(r.find(dev::proto::kEvTestAborted, kX), nullptr);
     EXPECT_EQ(capture().reason, static_cast<std::uint8_t>(EndReason::Stopped));
     ASSERT_FALSE(t().relayTest(relay(0.01, 1000)));
     run(0.1);
@@ -249,30 +249,30 @@ TEST_F(TuningStage, StopAndTestAbortEndATestAndTheAxisHolds)
 
 TEST_F(TuningStage, TestsAreRefusedWhereTheyCannotRunSafely)
 {
-    auto code = [](const sim::SimTuning::Result& e) { return e ? e->code : proto::ErrorCode{}; };
+    auto code = [](const dev::sim::SimTuning::Result& e) { return e ? e->code : dev::proto::ErrorCode{}; };
     auto far = step(0.01);
     far.envelope.maxExcursion = static_cast<std::uint32_t>(nm(60));  // 50 ± 60 mm crosses both soft limits
-    EXPECT_EQ(code(t().stepTest(far)), proto::ErrorCode::SoftLimit);
+    EXPECT_EQ(code(t().stepTest(far)), dev::proto::ErrorCode::SoftLimit);
     auto tight = step(0.01);
     tight.envelope.maxFollowingError = static_cast<std::uint32_t>(nm(0.005));  // below the step itself
     const auto e = t().stepTest(tight);
-    EXPECT_EQ(code(e), proto::ErrorCode::OutOfRange);
+    EXPECT_EQ(code(e), dev::proto::ErrorCode::OutOfRange);
     EXPECT_NE(e->message.find("max following error must be above the step size"), std::string::npos) << e->message;
-    EXPECT_EQ(code(t().stepTest(step(0.01, proto::WireGains{-1, 0, 0}))), proto::kErrBadGains);
+    EXPECT_EQ(code(t().stepTest(step(0.01, dev::proto::WireGains{-1, 0, 0}))), dev::proto::kErrBadGains);
     ASSERT_FALSE(t().stepTest(step(0.01)));
-    EXPECT_EQ(code(t().relayTest(relay(0.01, 10))), proto::kErrTestActive);
-    EXPECT_EQ(code(m.move(relMove(bit(kX), {1}))), proto::ErrorCode::Busy);
+    EXPECT_EQ(code(t().relayTest(relay(0.01, 10))), dev::proto::kErrTestActive);
+    EXPECT_EQ(code(m.move(relMove(bit(kX), {1}))), dev::proto::ErrorCode::Busy);
     run(1.0);
     ASSERT_FALSE(m.estop());
-    EXPECT_EQ(code(t().stepTest(step(0.01))), proto::ErrorCode::EStopActive);
+    EXPECT_EQ(code(t().stepTest(step(0.01))), dev::proto::ErrorCode::EStopActive);
 
-    sim::SimMachine analyzer(sim::analyzerConfig());
-    proto::GainsReply g;
-    EXPECT_EQ(code(analyzer.tuning().getGains(0, g)), proto::kErrNotClosedLoop);
-    sim::SimMachine unhomed(sim::stageConfig());
-    EXPECT_EQ(code(unhomed.tuning().stepTest(step(0.01))), proto::ErrorCode::NotHomed);
-    proto::CaptureReply c;
-    EXPECT_EQ(code(unhomed.tuning().capture({0, 0, 10}, c)), proto::kErrNoCapture);
+    dev::sim::SimMachine analyzer(dev::sim::analyzerConfig());
+    dev::proto::GainsReply g;
+    EXPECT_EQ(code(analyzer.tuning().getGains(0, g)), dev::proto::kErrNotClosedLoop);
+    dev::sim::SimMachine unhomed(dev::sim::stageConfig());
+    EXPECT_EQ(code(unhomed.tuning().stepTest(step(0.01))), dev::proto::ErrorCode::NotHomed);
+    dev::proto::CaptureReply c;
+    EXPECT_EQ(code(unhomed.tuning().capture({0, 0, 10}, c)), dev::proto::kErrNoCapture);
 }
 
 // Found by libFuzzer (tests/fuzz/corpus/codec/regress-test-duration-over-int32, replayed by
@@ -284,7 +284,7 @@ TEST_F(TuningStage, ADurationBeyondTheWiresInt32IsRefusedNamingTheLargestValue)
     s.envelope.maxDurationMs = 3'000'000'000u;
     const auto e = t().stepTest(s);
     ASSERT_TRUE(e);
-    EXPECT_EQ(e->code, proto::ErrorCode::OutOfRange);
+    EXPECT_EQ(e->code, dev::proto::ErrorCode::OutOfRange);
     EXPECT_EQ(e->value, std::numeric_limits<std::int32_t>::max());
     EXPECT_NE(e->message.find("at most"), std::string::npos) << e->message;
 }
@@ -323,14 +323,14 @@ TEST_F(TuningStage, NewGainsTakeOverBetweenTwoPeriodsWithoutABump)
 // run on under the set that just diverged, and the trip says where it stopped.
 TEST_F(TuningStage, AfterATripUnderTheOperatorsGainsTheAxisRestsUnderThePreviousSet)
 {
-    const proto::WireGains before = gains().gains;
+    const dev::proto::WireGains before = gains().gains;
     ASSERT_FALSE(t().setGains({kX, 0, {5.0f, before.ki, before.kd}}));
     auto s = step(0.05);
     s.envelope.maxExcursion = static_cast<std::uint32_t>(nm(0.15));
     s.envelope.maxFollowingError = static_cast<std::uint32_t>(nm(0.1));
     ASSERT_FALSE(t().stepTest(s));
     run(2.0);
-    const auto* tripped = r.find(proto::kEvTestTripped, kX);
+    const auto* tripped = r.find(dev::proto::kEvTestTripped, kX);
     ASSERT_NE(tripped, nullptr) << "Kp 5 should diverge";
     const double atTrip = measuredMm(m, kX);
     double worst = 0;

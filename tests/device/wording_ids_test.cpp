@@ -1,5 +1,5 @@
 // Every message id and term id that motion/, device/ and the screens can hand to
-// a person is worded: none reaches a person as msg::debugString. The ids are read
+// a person is worded: none reaches a person as motion::msg::debugString. The ids are read
 // from the sources themselves (string literals with an area's prefix), so an id
 // added without its words fails here, in whatever file it was added.
 #include "widgets/wording/wording.h"
@@ -74,9 +74,9 @@ TEST(WordingIds, EveryIdInTheSourcesIsWorded)
         if (kNotIds.contains(id))
             continue;
         const std::string s = id.toStdString();
-        const msg::Message m = msg::make(s);
-        const bool sentence = words::text(m) != QString::fromStdString(msg::debugString(m));
-        const bool term = words::term(s) != id;
+        const motion::msg::Message m = motion::msg::make(s);
+        const bool sentence = ui::words::text(m) != QString::fromStdString(motion::msg::debugString(m));
+        const bool term = ui::words::term(s) != id;
         if (!sentence && !term)
             unworded << id;
     }
@@ -92,7 +92,7 @@ TEST(WordingIds, APatternsProblemsAreSentencesWithTheirNumbers)
     p.spiral.turns = 2.3;
     QStringList lines;
     for (const auto& q : motion::plans::validate(p))
-        lines << QString::fromStdString(q.path) + QStringLiteral(": ") + words::englishText(q.message);
+        lines << QString::fromStdString(q.path) + QStringLiteral(": ") + ui::words::englishText(q.message);
     const QStringList expected{QStringLiteral("feed_mm_s: must be from 0.001 mm/s to 1000.00 mm/s (got 0.00 mm/s)"),
                                   QStringLiteral("pitch_mm: must be above 0.000 mm (got -1.000 mm)"),
                                   QStringLiteral("turns: must be a whole or half number of turns (got 2.3)")};
@@ -102,27 +102,27 @@ TEST(WordingIds, APatternsProblemsAreSentencesWithTheirNumbers)
 TEST(WordingIds, EveryProblemOfABadRecipeAndScanPlanIsWorded)
 {
     // The validators' own output, not just their ids: arguments fill every placeholder.
-    plates::Recipe r;
+    motion::plates::Recipe r;
     r.plates = {{"samples", "nowhere", "no-such-labware", -1, 5}};
-    plates::Step s;
-    s.type = plates::StepType::Dispense;
+    motion::plates::Step s;
+    s.type = motion::plates::StepType::Dispense;
     s.volumeUl = -3;
     r.steps = {s};
-    plates::PlanContext c;
-    const auto plan = plates::planRecipe(r, c);
+    motion::plates::PlanContext c;
+    const auto plan = motion::plates::planRecipe(r, c);
     ASSERT_FALSE(plan.problems.empty());
     for (const auto& problem : plan.problems) {
-        const QString t = words::englishText(problem.message);
+        const QString t = ui::words::englishText(problem.message);
         EXPECT_FALSE(t.contains(QLatin1Char('{')) || t.contains(QRegularExpression(QStringLiteral("%[0-9]")))) << t.toStdString();
-        EXPECT_NE(t, QString::fromStdString(msg::debugString(problem.message)));
+        EXPECT_NE(t, QString::fromStdString(motion::msg::debugString(problem.message)));
     }
     motion::scan::ScanPlan bad;
     bad.overlapX = 2;
     bad.speedMmS = -1;
     bad.naming.filePattern = "{x}";
     for (const auto& problem : motion::scan::validate(bad)) {
-        const QString t = words::englishText(problem.message);
-        EXPECT_NE(t, QString::fromStdString(msg::debugString(problem.message))) << problem.path;
+        const QString t = ui::words::englishText(problem.message);
+        EXPECT_NE(t, QString::fromStdString(motion::msg::debugString(problem.message))) << problem.path;
     }
 }
 

@@ -56,7 +56,7 @@ TEST(AboutBox, IsInChineseWhenTheScreensAre)
     help->aboutAction()->trigger();
     auto* box = window.findChild<app::AboutDialog*>();
     ASSERT_NE(box, nullptr);
-    words::Translators translators;
+    ui::words::Translators translators;
     ASSERT_TRUE(translators.setLanguage(QStringLiteral("zh_CN")));
     QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
     EXPECT_EQ(help->title(), QStringLiteral("帮助(&H)"));

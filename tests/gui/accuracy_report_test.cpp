@@ -53,23 +53,23 @@ TEST(AccuracyReport, APdfOfTwoA4PagesWithTheFiguresAndPlots)
 {
     if (QStandardPaths::findExecutable(QStringLiteral("pdftoppm")).isEmpty())
         GTEST_FAIL() << "pdftoppm is missing: ./scripts/setup installs poppler-utils";
-    const auto result = accuracyfiles::loadAccuracyResultFile(example("stage-x-interferometer.accuracy-result.json"));
-    ASSERT_TRUE(result.result) << msg::debugFormat(result.problems);
-    const auto readings = accuracyfiles::loadReadingsCsv(example("stage-x-interferometer.readings.csv"));
+    const auto result = dev::files::accuracy::loadAccuracyResultFile(example("stage-x-interferometer.accuracy-result.json"));
+    ASSERT_TRUE(result.result) << motion::msg::debugFormat(result.problems);
+    const auto readings = dev::files::accuracy::loadReadingsCsv(example("stage-x-interferometer.readings.csv"));
     ASSERT_TRUE(readings.ok());
-    report::AxisReportInput in;
+    ui::report::AxisReportInput in;
     in.title = QStringLiteral("Positioning accuracy of axis X");
     in.instrument = QStringLiteral("BenchPilot microscope stage (simulated)");
-    in.source = msg::make("accuracy.source.interferometer");
+    in.source = motion::msg::make("accuracy.source.interferometer");
     in.result = *result.result;
     in.readings = readings.readings;
-    in.fit = motion::metrology::fitPolynomials(accuracyfiles::fitPointsOf(in.result.evaluation));
+    in.fit = motion::metrology::fitPolynomials(dev::files::accuracy::fitPointsOf(in.result.evaluation));
     in.before = in.result;  // itself as "before": the comparison is drawn, 1.0× throughout
     in.created = QStringLiteral("2025-01-01T12:00:00");
     QTemporaryDir dir;
     const QString pdf = dir.filePath(QStringLiteral("x.report.pdf"));
     QString error;
-    ASSERT_TRUE(report::writeAxisReport(pdf, in, &error)) << error.toStdString();
+    ASSERT_TRUE(ui::report::writeAxisReport(pdf, in, &error)) << error.toStdString();
     EXPECT_FALSE(QFile::exists(pdf + QStringLiteral(".part")));
     const auto pages = render(pdf, dir);
     ASSERT_EQ(pages.size(), 2);
@@ -95,7 +95,7 @@ TEST(AccuracyReport, ACircleReportAndNothingHalfWritten)
         }
         runs.push_back(run);
     }
-    report::CircleReportInput in;
+    ui::report::CircleReportInput in;
     in.title = QStringLiteral("Circular test");
     in.test = t;
     in.evaluation = motion::metrology::evaluate(t, runs);
@@ -103,13 +103,13 @@ TEST(AccuracyReport, ACircleReportAndNothingHalfWritten)
     QTemporaryDir dir;
     QString error;
     const QString pdf = dir.filePath(QStringLiteral("c.report.pdf"));
-    ASSERT_TRUE(report::writeCircleReport(pdf, in, &error)) << error.toStdString();
+    ASSERT_TRUE(ui::report::writeCircleReport(pdf, in, &error)) << error.toStdString();
     const auto pages = render(pdf, dir);
     ASSERT_EQ(pages.size(), 1);
     EXPECT_GT(inked(pages[0], 0.35, 0.9), 0.01) << "the polar plot";
     // A folder that does not exist: refused, nothing left behind.
     const QString nowhere = dir.filePath(QStringLiteral("missing/c.report.pdf"));
-    EXPECT_FALSE(report::writeCircleReport(nowhere, in, &error));
+    EXPECT_FALSE(ui::report::writeCircleReport(nowhere, in, &error));
     EXPECT_FALSE(error.isEmpty());
     EXPECT_FALSE(QFile::exists(nowhere));
     EXPECT_FALSE(QFile::exists(nowhere + QStringLiteral(".part")));

@@ -17,7 +17,7 @@
 
 namespace {
 
-const api::Job* calibrationJob(app::MainWindow& w)
+const app::api::Job* calibrationJob(app::MainWindow& w)
 {
     for (const auto& j : w.api()->server()->jobs().all())
         if (j.kind == QLatin1String("calibration screen"))
@@ -64,10 +64,10 @@ TEST(ApiCalibrationBusy, AScriptIsRefusedWhileTheOperatorsAccuracyRunRunsOrWaits
     guitest::Script script(options.api.socketPath);
     const auto client = QJsonObject{{QStringLiteral("client"), QStringLiteral("notebook")}};
     QJsonObject answer = script.call(QStringLiteral("control.acquire"), client);
-    EXPECT_EQ(guitest::errorCode(answer), api::code::kBusy) << QJsonDocument(answer).toJson().toStdString();
+    EXPECT_EQ(guitest::errorCode(answer), app::api::code::kBusy) << QJsonDocument(answer).toJson().toStdString();
     EXPECT_TRUE(answer.value(QStringLiteral("error")).toObject().value(QStringLiteral("message")).toString().contains(
         QStringLiteral("Calibration screen")));
-    const api::Job* job = calibrationJob(w);
+    const app::api::Job* job = calibrationJob(w);
     ASSERT_NE(job, nullptr) << "the operator's run is on the job board";
     EXPECT_EQ(job->instrument, QStringLiteral("stage"));
     EXPECT_EQ(job->state, QStringLiteral("running"));
@@ -76,9 +76,9 @@ TEST(ApiCalibrationBusy, AScriptIsRefusedWhileTheOperatorsAccuracyRunRunsOrWaits
 
     // Paused part-way the bench is still the operator's.
     screen->pause();
-    ASSERT_TRUE(guitest::waitFor([&] { return screen->runner()->state() == jobs::AccuracyRunner::State::Paused; }, 10000));
+    ASSERT_TRUE(guitest::waitFor([&] { return screen->runner()->state() == dev::jobs::AccuracyRunner::State::Paused; }, 10000));
     answer = script.call(QStringLiteral("control.acquire"), client);
-    EXPECT_EQ(guitest::errorCode(answer), api::code::kBusy);
+    EXPECT_EQ(guitest::errorCode(answer), app::api::code::kBusy);
 
     // Aborted, the board says so and a script may take the bench.
     screen->abort();

@@ -90,7 +90,7 @@ TEST(ApiTakeBack, TheWindowSaysWhoHasControlAndTakeBackStopsTheScriptWithinOneCa
     ASSERT_TRUE(answered);
     ASSERT_TRUE(refused.has_value()) << "the operator's controls ask first while a script has control";
     EXPECT_EQ(refused->message.id, "request.bench_held");
-    EXPECT_EQ(refused->message.text("holder").find("plate-then-image") != std::string::npos, true) << msg::debugString(refused->message);
+    EXPECT_EQ(refused->message.text("holder").find("plate-then-image") != std::string::npos, true) << motion::msg::debugString(refused->message);
     ASSERT_TRUE(guitest::waitFor([&] { return w.stage()->instrument()->status().axes.value(0).moving; }, 5000));
 
     // Take back: the jog stops at once, the script's next call is refused.
@@ -101,7 +101,7 @@ TEST(ApiTakeBack, TheWindowSaysWhoHasControlAndTakeBackStopsTheScriptWithinOneCa
                                                                                     {QStringLiteral("axis"), QStringLiteral("X")},
                                                                                     {QStringLiteral("velocity"), 2},
                                                                                     {QStringLiteral("lease"), lease}});
-    EXPECT_EQ(errorCode(next), api::code::kNotInControl);
+    EXPECT_EQ(errorCode(next), app::api::code::kNotInControl);
     EXPECT_TRUE(guitest::waitFor([&] { return !w.stage()->instrument()->status().axes.value(0).moving; }, 5000));
     // And the operator's controls act again.
     answered = false;
@@ -111,7 +111,7 @@ TEST(ApiTakeBack, TheWindowSaysWhoHasControlAndTakeBackStopsTheScriptWithinOneCa
         answered = true;
     });
     EXPECT_TRUE(guitest::waitFor([&] { return answered; }, 5000));
-    EXPECT_FALSE(refused.has_value()) << (refused ? msg::debugString(refused->message) : std::string());
+    EXPECT_FALSE(refused.has_value()) << (refused ? motion::msg::debugString(refused->message) : std::string());
     // The event log has the script's calls with its name.
     bool logged = false;
     for (int r = 0; r < w.eventLog()->rowCount(); ++r)

@@ -48,9 +48,9 @@ protected:
     static motion::metrology::AxisTest xl80Test()
     {
         std::string text;
-        msg::Message error;
-        EXPECT_TRUE(files::readText(example("stage-x-xl80.accuracy-test.json"), &text, &error));
-        const auto read = accuracyfiles::accuracyTestFromJson(text, "stage-x-xl80.accuracy-test.json");
+        motion::msg::Message error;
+        EXPECT_TRUE(dev::files::readText(example("stage-x-xl80.accuracy-test.json"), &text, &error));
+        const auto read = dev::files::accuracy::accuracyTestFromJson(text, "stage-x-xl80.accuracy-test.json");
         EXPECT_TRUE(read.test);
         auto t = read.test ? std::get<motion::metrology::AxisTest>(*read.test) : motion::metrology::AxisTest{};
         t.tolerances.aMm = 0.001;
@@ -85,8 +85,8 @@ TEST_F(CalibrationImport, TheButtonAsksForTheSequenceAndTheExportAndShowsTheFigu
     EXPECT_EQ(screen->latest()->axis, "X");
     EXPECT_EQ(screen->latest()->tolerances.aMm, 0.001);
     // The figures are the capture's: evaluated here from the same files, they agree.
-    const auto stops = accuracyfiles::loadTargetSequence(sequence);
-    const auto readings = accuracyfiles::loadInterferometerExport(capture, stops.stops);
+    const auto stops = dev::files::accuracy::loadTargetSequence(sequence);
+    const auto readings = dev::files::accuracy::loadInterferometerExport(capture, stops.stops);
     ASSERT_TRUE(readings.ok());
     const auto expected = motion::metrology::evaluate(readings.readings);
     EXPECT_NEAR(*screen->latest()->evaluation.figures.aMm, *expected.figures.aMm, 1e-9);
@@ -100,8 +100,8 @@ TEST_F(CalibrationImport, TheButtonAsksForTheSequenceAndTheExportAndShowsTheFigu
 TEST_F(CalibrationImport, AnExportThatDoesNotMatchTheStopsIsRefusedAndNothingIsWritten)
 {
     std::string text;
-    msg::Message error;
-    ASSERT_TRUE(files::readText(capture, &text, &error));
+    motion::msg::Message error;
+    ASSERT_TRUE(dev::files::readText(capture, &text, &error));
     text = text.substr(0, text.rfind('\n', text.size() - 2) + 1);  // the last reading is missing
     QFile f(capture);
     ASSERT_TRUE(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
@@ -155,12 +155,12 @@ TEST_F(CalibrationImport, ReadingsAlreadyBesideTheSequenceAreReplacedOnlyWhenThe
     ASSERT_EQ(questions.size(), 1);
     EXPECT_TRUE(questions[0].contains(readings)) << questions[0].toStdString();
     std::string text;
-    msg::Message error;
-    ASSERT_TRUE(files::readText(readings, &text, &error));
+    motion::msg::Message error;
+    ASSERT_TRUE(dev::files::readText(readings, &text, &error));
     EXPECT_EQ(text, "kept\n");
     answer = true;
     EXPECT_TRUE(screen->importCapture(sequence, capture)) << problems.join(QLatin1Char('\n')).toStdString();
-    ASSERT_TRUE(files::readText(readings, &text, &error));
+    ASSERT_TRUE(dev::files::readText(readings, &text, &error));
     EXPECT_NE(text, "kept\n");
 }
 

@@ -89,7 +89,7 @@ protected:
     void keepPicture(const char* name) { guitest::keepPicture(w.get(), QLatin1String(name)); }
     bool waitFinished()
     {
-        return waitFor([&] { return screen->runner() && screen->runner()->state() == jobs::AccuracyRunner::State::Finished; }, 60000);
+        return waitFor([&] { return screen->runner() && screen->runner()->state() == dev::jobs::AccuracyRunner::State::Finished; }, 60000);
     }
 
     QTemporaryDir dir;
@@ -200,7 +200,7 @@ TEST_F(CalibrationScreenTest, RunOnAFinishedTestOffersANewRunBesideItAndCompares
     });
     ASSERT_TRUE(screen->run());
     ASSERT_TRUE(waitFor([&] { return screen->runner() && QDir(screen->runner()->folder()) == QDir(second)
-                                     && screen->runner()->state() == jobs::AccuracyRunner::State::Finished; },
+                                     && screen->runner()->state() == dev::jobs::AccuracyRunner::State::Finished; },
                         60000))
         << asked.join(QLatin1Char('\n')).toStdString();
     pump(100);
@@ -316,9 +316,9 @@ TEST_F(CalibrationScreenTest, ACircularTestIsSampledFromTheStagesTelemetry)
             return screen->circleRunner() && !screen->circleRunner()->isActive();
         },
         60000));
-    ASSERT_EQ(screen->circleRunner()->state(), jobs::CircleRunner::State::Finished);
-    EXPECT_EQ(runRate, jobs::kCircleSampleRateHz) << "history streams at " << historyRate << " Hz";
-    EXPECT_LT(historyRate, jobs::kCircleSampleRateHz);
+    ASSERT_EQ(screen->circleRunner()->state(), dev::jobs::CircleRunner::State::Finished);
+    EXPECT_EQ(runRate, dev::jobs::kCircleSampleRateHz) << "history streams at " << historyRate << " Hz";
+    EXPECT_LT(historyRate, dev::jobs::kCircleSampleRateHz);
     EXPECT_TRUE(waitFor([&] { return stage->subscribedRateHz() == historyRate; }, 5000)) << "the run's rate outlived it";
     ASSERT_EQ(screen->circleRunner()->runs().size(), 2u);
     for (const auto& run : screen->circleRunner()->runs())
@@ -349,7 +349,7 @@ TEST_F(CalibrationScreenTest, DuringARunTheLivePlotKeepsTheTestsSpanAndAStopCoun
     EXPECT_GT(plot->xAxis->range().upper, 80) << "the frame shrank to the first reading";
     auto* link = qobject_cast<dev::SimulatedLink*>(w->stage()->link());
     link->pair().unplug();
-    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::AccuracyRunner::State::Stopped; }, 5000));
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == dev::jobs::AccuracyRunner::State::Stopped; }, 5000));
     pump(20);
     const int taken = screen->runner()->readingsTaken();
     const QString state = child<QLabel>("calibrationState")->text();

@@ -198,7 +198,7 @@ TEST(CameraLiveView, ASnapIsWrittenWithItsOwnBitDepth)
     ASSERT_TRUE(waitFor([&] { return !written.isEmpty(); }, 5000));
     dev::camera::Frame back;
     std::string description;
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(dev::camera::readTiff(path.toStdString(), &back, &description, &error)) << error.id;
     EXPECT_EQ(back.width, 64);
     EXPECT_EQ(back.height, 32);
@@ -250,7 +250,7 @@ protected:
         QApplication::processEvents();
     }
 
-    words::Translators translators;
+    ui::words::Translators translators;
     std::unique_ptr<app::MainWindow> w;
 };
 
@@ -469,7 +469,7 @@ TEST_F(SimulatedCameraScreens, AScanFromTheScreenWritesAnImageForEachTile)
     ASSERT_GE(tiles, 2);
     ASSERT_TRUE(scan->run());
     EXPECT_TRUE(w->cameraSession()->inUse()) << "the camera could be closed under the run";
-    ASSERT_TRUE(waitFor([&] { return scan->runner()->state() == jobs::ScanRunner::State::Finished; }, 120000));
+    ASSERT_TRUE(waitFor([&] { return scan->runner()->state() == dev::jobs::ScanRunner::State::Finished; }, 120000));
     for (int t = 0; t < tiles; ++t) {
         const auto& image = scan->runner()->image(t);
         ASSERT_FALSE(image.file.empty()) << "tile " << t << " has no image";

@@ -41,19 +41,19 @@ TEST(EventKindWords, EveryEventKindTheProtocolDefinesHasANameInEnglishAndInChine
     const auto kinds = documentedEventKinds();
     ASSERT_GE(kinds.size(), 20) << "the Events table of docs/protocol.md was not found";
     static const QRegularExpression han(QStringLiteral("\\p{Han}"));
-    words::Translators translators;
+    ui::words::Translators translators;
     for (const auto& [code, name] : kinds) {
-        const auto kind = static_cast<proto::EventKind>(code);
-        const std::string term = proto::eventKindTerm(kind);
+        const auto kind = static_cast<dev::proto::EventKind>(code);
+        const std::string term = dev::proto::eventKindTerm(kind);
         const std::string what = std::to_string(code) + " " + name.toStdString();
         EXPECT_NE(term, "device.event.unknown") << what;
-        EXPECT_STRNE(proto::eventKindName(kind), "unknown event") << what << ": the API's journal keys on this name";
+        EXPECT_STRNE(dev::proto::eventKindName(kind), "unknown event") << what << ": the API's journal keys on this name";
         ASSERT_TRUE(translators.setLanguage(QStringLiteral("en")));
-        const QString en = words::term(term);
+        const QString en = ui::words::term(term);
         EXPECT_NE(en.toStdString(), term) << what << ": no English words";
         EXPECT_FALSE(en.contains(han)) << what;
         ASSERT_TRUE(translators.setLanguage(QStringLiteral("zh_CN")));
-        const QString zh = words::term(term);
+        const QString zh = ui::words::term(term);
         EXPECT_TRUE(zh.contains(han)) << what << ": " << zh.toStdString();
         EXPECT_TRUE(i18ntest::untranslated(zh).isEmpty()) << what << ": " << zh.toStdString();
     }

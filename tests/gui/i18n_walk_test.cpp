@@ -42,7 +42,7 @@ using InstrumentSessionPtr = app::InstrumentSession*;
 /// Text shown verbatim in every language: the simulator's firmware name, the protocol's
 /// name, serial-port paths, the deck's station ids, a recipe problem's field path and a
 /// model plant's spec. The shipped deck's slot names ("back"), the new recipe's plate
-/// name and the simulator's model are worded (words::shippedName, words::modelName), so
+/// name and the simulator's model are worded (ui::words::shippedName, ui::words::modelName), so
 /// they are not listed.
 QString withoutData(QString text)
 {
@@ -108,7 +108,7 @@ TEST(I18nWalk, InChineseNoScreenShowsAnEnglishWord)
     // The pseudo-translation answers every context; the real catalogue answers only the
     // context lupdate filed a string under, so a tr() whose runtime context differs
     // (a class without Q_OBJECT) shows English here and nowhere else.
-    words::Translators translators;
+    ui::words::Translators translators;
     ASSERT_TRUE(translators.setLanguage(QStringLiteral("zh_CN")));
     app::MainWindow w(guitest::testWindowOptions());
     w.resize(1366, 768);
@@ -151,7 +151,7 @@ void chooseLanguage(app::MainWindow& w, const QString& code)
 
 TEST(I18nWalk, SwitchingLanguageRewordsEveryOpenScreenWithoutARestart)
 {
-    words::Translators translators;
+    ui::words::Translators translators;
     ASSERT_TRUE(translators.setLanguage(QStringLiteral("en")));
     app::MainWindowOptions options = guitest::testWindowOptions();
     options.translators = &translators;
@@ -184,7 +184,7 @@ TEST(I18nWalk, SwitchingLanguageRewordsEveryOpenScreenWithoutARestart)
 
 /// A window ready on both simulators at 1366 × 768, in Chinese; its Language menu switches
 /// `translators`.
-std::unique_ptr<app::MainWindow> openInChinese(words::Translators& translators)
+std::unique_ptr<app::MainWindow> openInChinese(ui::words::Translators& translators)
 {
     if (!translators.setLanguage(QStringLiteral("zh_CN")))
         return nullptr;
@@ -195,7 +195,7 @@ std::unique_ptr<app::MainWindow> openInChinese(words::Translators& translators)
 
 TEST(I18nWalk, TheEventLogSaysWhatTheDeviceDidInTheLanguageOnScreen)
 {
-    words::Translators translators;
+    ui::words::Translators translators;
     auto w = openInChinese(translators);
     ASSERT_TRUE(w);
     dev::Instrument* stage = w->stage()->instrument();
@@ -221,11 +221,11 @@ TEST(I18nWalk, TheEventLogSaysWhatTheDeviceDidInTheLanguageOnScreen)
 // bars, the run's message lines and the banner in Chinese; each was worded once, when it came.
 TEST(I18nWalk, LinesAlreadyShownAreRewordedOnASwitch)
 {
-    words::Translators translators;
+    ui::words::Translators translators;
     auto w = openInChinese(translators);
     ASSERT_TRUE(w);
     ASSERT_TRUE(w->showScreen(QStringLiteral("plates")));
-    emit w->platesScreen()->runner()->message(msg::make("recipe.run.aborted"), false);
+    emit w->platesScreen()->runner()->message(motion::msg::make("recipe.run.aborted"), false);
     QApplication::processEvents();
     auto* lines = w->platesScreen()->runPanel()->findChild<QListWidget*>(QStringLiteral("runMessages"));
     ASSERT_NE(lines, nullptr);
@@ -268,15 +268,15 @@ TEST(I18nWalk, TheShippedDecksAndLabwaresNamesAreWordedAndALabsOwnNamesAreNot)
 {
     // "1 (back)" and "96-well plate, 360 µL" stayed English in Chinese: they come from the
     // files BenchPilot ships. Only those exact names are worded, for display.
-    words::Translators translators;
+    ui::words::Translators translators;
     ASSERT_TRUE(translators.setLanguage(QStringLiteral("zh_CN")));
-    EXPECT_EQ(words::shippedName("back"), QStringLiteral("后侧"));
-    EXPECT_EQ(words::shippedName("wash trough"), QStringLiteral("清洗槽"));
-    EXPECT_EQ(words::shippedName("96-well plate, 360 µL"), QStringLiteral("96 孔板，360 µL"));
-    EXPECT_EQ(words::shippedName("back bench"), QStringLiteral("back bench")) << "a lab's own name";
-    EXPECT_EQ(words::shippedName("wash"), QStringLiteral("wash")) << "a station's id, which recipes refer to";
+    EXPECT_EQ(ui::words::shippedName("back"), QStringLiteral("后侧"));
+    EXPECT_EQ(ui::words::shippedName("wash trough"), QStringLiteral("清洗槽"));
+    EXPECT_EQ(ui::words::shippedName("96-well plate, 360 µL"), QStringLiteral("96 孔板，360 µL"));
+    EXPECT_EQ(ui::words::shippedName("back bench"), QStringLiteral("back bench")) << "a lab's own name";
+    EXPECT_EQ(ui::words::shippedName("wash"), QStringLiteral("wash")) << "a station's id, which recipes refer to";
     ASSERT_TRUE(translators.setLanguage(QStringLiteral("en")));
-    EXPECT_EQ(words::shippedName("back"), QStringLiteral("back"));
+    EXPECT_EQ(ui::words::shippedName("back"), QStringLiteral("back"));
 }
 
 TEST(I18nWalk, TheWalkFindsATextThatDidNotGoThroughTranslation)
@@ -334,7 +334,7 @@ QStringList englishOnScreen(app::MainWindow& w, const QString& where)
 // and the words custom widgets paint. Only names, units, keys and file names stay Latin.
 TEST(I18nWalk, InChineseEveryTextOfEveryScreenIsChineseForBothInstruments)
 {
-    words::Translators translators;
+    ui::words::Translators translators;
     auto w = openInChinese(translators);
     ASSERT_TRUE(w);
     exerciseBoth(*w);
@@ -376,7 +376,7 @@ QStringList walkBothInstruments(app::MainWindow& w)
 // and shown in English, plots already drawn.
 TEST(I18nWalk, AfterASwitchToChineseEveryTextOfEveryScreenIsChinese)
 {
-    words::Translators translators;
+    ui::words::Translators translators;
     ASSERT_TRUE(translators.setLanguage(QStringLiteral("en")));
     app::MainWindowOptions options = guitest::testWindowOptions();
     options.translators = &translators;
@@ -401,7 +401,7 @@ TEST(I18nWalk, AfterASwitchToChineseEveryTextOfEveryScreenIsChinese)
 
 TEST(I18nWalk, TheJogButtonsReadHomeAndGoAgainAfterChineseAndBack)
 {
-    words::Translators translators;
+    ui::words::Translators translators;
     auto w = openInChinese(translators);
     ASSERT_TRUE(w);
     chooseLanguage(*w, QStringLiteral("en"));

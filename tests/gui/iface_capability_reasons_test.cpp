@@ -87,7 +87,7 @@ TEST(IfaceCapabilityReasons, RunIsDisabledWithTheReasonOnABackendWithoutAPathQue
     auto* proxy = dynamic_cast<dev::InstrumentProxy*>(w->stage()->instrument());
     ASSERT_NE(proxy, nullptr) << "the session hands out its proxy";
     w->stage()->disconnectLink();
-    auto* link = new dev::SimulatedLink(proto::DeviceKind::Stage, 0, proxy);
+    auto* link = new dev::SimulatedLink(dev::proto::DeviceKind::Stage, 0, proxy);
     auto* backend = new NoPathQueue;
     proxy->setBackend(backend);
     backend->setTransport(link->hostEnd());

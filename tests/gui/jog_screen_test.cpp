@@ -120,7 +120,7 @@ TEST_F(JogScreenTest, EscapeIsEStopFromAnyScreenAndResetClearsIt)
     std::optional<dev::RequestError> refusal;
     analyzer()->jogStep(0, 1.0, 0, [&](const auto& e) { refusal = e; });
     ASSERT_TRUE(waitFor([&] { return refusal.has_value(); }, 2000));
-    EXPECT_EQ(refusal->code, proto::ErrorCode::EStopActive);
+    EXPECT_EQ(refusal->code, dev::proto::ErrorCode::EStopActive);
 
     QPushButton* reset = pushButton(w.get(), QObject::tr("Reset E-stop"));
     ASSERT_NE(reset, nullptr);

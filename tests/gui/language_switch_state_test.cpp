@@ -187,7 +187,7 @@ void sendMouse(QWidget* w, QEvent::Type type, const QPointF& at, Qt::MouseButton
 }
 
 /// Presses beside the first well, drags past the last and lets go, as a hand would.
-void dragWells(ui::PlateMap* map, const plates::WellId& from, const plates::WellId& to)
+void dragWells(ui::PlateMap* map, const motion::plates::WellId& from, const motion::plates::WellId& to)
 {
     const QPointF a = map->wellCenter(from) - QPointF(4, 4), b = map->wellCenter(to) + QPointF(4, 4);
     sendMouse(map, QEvent::MouseButtonPress, a, Qt::LeftButton);
@@ -263,9 +263,9 @@ protected:
         ASSERT_TRUE(QFile::copy(example("stage-x-xl80.targets.csv"), sequence));
         ASSERT_TRUE(QFile::copy(example("stage-x-xl80.interferometer.csv"), capture));
         std::string text;
-        msg::Message error;
-        ASSERT_TRUE(files::readText(example("stage-x-xl80.accuracy-test.json"), &text, &error));
-        const auto read = accuracyfiles::accuracyTestFromJson(text, "stage-x-xl80.accuracy-test.json");
+        motion::msg::Message error;
+        ASSERT_TRUE(dev::files::readText(example("stage-x-xl80.accuracy-test.json"), &text, &error));
+        const auto read = dev::files::accuracy::accuracyTestFromJson(text, "stage-x-xl80.accuracy-test.json");
         ASSERT_TRUE(read.test);
         c->form()->setTest(std::get<motion::metrology::AxisTest>(*read.test));
         pump(20);
@@ -341,7 +341,7 @@ protected:
         return ok;
     }
 
-    words::Translators translators;
+    ui::words::Translators translators;
     std::unique_ptr<app::MainWindow> w;
     QTemporaryDir dir;
 };
@@ -453,8 +453,8 @@ TEST_F(LanguageSwitchState, APausedPlateRunKeepsItsProgressTableAndMap)
     QTest::mouseClick(guitest::button(screen->runPanel(), QStringLiteral("Run")), Qt::LeftButton);
     ASSERT_TRUE(waitFor([&] { return screen->runner()->progress().opsDone >= 2; }, 30000));
     QTest::mouseClick(guitest::button(screen->runPanel(), QStringLiteral("Pause")), Qt::LeftButton);
-    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Paused; }, 30000))
-        << jobs::runStateTerm(screen->runner()->state());
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == dev::jobs::RunState::Paused; }, 30000))
+        << dev::jobs::runStateTerm(screen->runner()->state());
     ASSERT_TRUE(waitFor([&] { return !analyzer->status().anyMoving(); }, 5000));
     pump(300);
     const int done = screen->runner()->progress().opsDone;
@@ -464,13 +464,13 @@ TEST_F(LanguageSwitchState, APausedPlateRunKeepsItsProgressTableAndMap)
     const SwitchOutcome o = switchToChineseAndBack(screen);
     EXPECT_TRUE(o.held.isEmpty()) << "changed by the switch to Chinese:\n" << o.held.join(QLatin1Char('\n')).toStdString();
     EXPECT_TRUE(o.lost.isEmpty()) << "not as before after Chinese and back:\n" << o.lost.join(QLatin1Char('\n')).toStdString();
-    EXPECT_EQ(screen->runner()->state(), jobs::RunState::Paused);
+    EXPECT_EQ(screen->runner()->state(), dev::jobs::RunState::Paused);
     EXPECT_EQ(screen->runner()->progress().opsDone, done);
     EXPECT_EQ(map->grab().toImage(), mapBefore) << "the map's wells are not drawn as they were";
 
     QTest::mouseClick(guitest::button(screen->runPanel(), QStringLiteral("Resume")), Qt::LeftButton);
-    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Finished; }, 30000))
-        << jobs::runStateTerm(screen->runner()->state());
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == dev::jobs::RunState::Finished; }, 30000))
+        << dev::jobs::runStateTerm(screen->runner()->state());
     EXPECT_EQ(screen->runner()->progress().opsDone, screen->runner()->progress().opsTotal);
 }
 
@@ -489,7 +489,7 @@ TEST_F(LanguageSwitchState, APatternThatRanKeepsItsMeasuredPathAndFigures)
     p->setPattern(pat);
     pump(100);
     ASSERT_TRUE(p->run()) << p->statusText().toStdString();
-    ASSERT_TRUE(waitFor([&] { return p->runner()->state() == jobs::PatternRunner::State::Done; }, 15000)) << p->statusText().toStdString();
+    ASSERT_TRUE(waitFor([&] { return p->runner()->state() == dev::jobs::PatternRunner::State::Done; }, 15000)) << p->statusText().toStdString();
     pump(300);
     const std::size_t samples = p->runner()->samples().size();
     ASSERT_GT(samples, 0U);
@@ -500,7 +500,7 @@ TEST_F(LanguageSwitchState, APatternThatRanKeepsItsMeasuredPathAndFigures)
     const SwitchOutcome o = switchToChineseAndBack(p);
     EXPECT_TRUE(o.held.isEmpty()) << "changed by the switch to Chinese:\n" << o.held.join(QLatin1Char('\n')).toStdString();
     EXPECT_TRUE(o.lost.isEmpty()) << "not as before after Chinese and back:\n" << o.lost.join(QLatin1Char('\n')).toStdString();
-    EXPECT_EQ(p->runner()->state(), jobs::PatternRunner::State::Done);
+    EXPECT_EQ(p->runner()->state(), dev::jobs::PatternRunner::State::Done);
     EXPECT_EQ(p->runner()->samples().size(), samples);
     EXPECT_EQ(p->summaryText(), summary);
     EXPECT_EQ(p->contour()->grab().toImage(), contourBefore) << "the measured path is not drawn as it was";

@@ -28,7 +28,7 @@ class MainWindowSize : public ::testing::TestWithParam<const char*> {
 protected:
     void SetUp() override { ASSERT_TRUE(translators.setLanguage(QString::fromLatin1(GetParam()))); }
     void TearDown() override { translators.setLanguage(QStringLiteral("en")); }
-    words::Translators translators;
+    ui::words::Translators translators;
 };
 
 TEST_P(MainWindowSize, EveryScreenFitsA1366x768Display)

@@ -60,7 +60,7 @@ protected:
     bool machineMoving(int i)
     {
         const auto st = stageLink()->machine().status();
-        return (st.axes[static_cast<std::size_t>(i)].flags & (proto::AxisMoving | proto::AxisJogging)) != 0;
+        return (st.axes[static_cast<std::size_t>(i)].flags & (dev::proto::AxisMoving | dev::proto::AxisJogging)) != 0;
     }
     /// Homes the stage with its clock sped up, then puts the clock back to real time.
     bool homeStage()

@@ -15,7 +15,7 @@
 using guitest::MotionScreensTest;
 using guitest::pump;
 using guitest::waitFor;
-using State = jobs::PatternRunner::State;
+using State = dev::jobs::PatternRunner::State;
 
 namespace {
 
@@ -50,7 +50,7 @@ protected:
         EXPECT_FALSE(pauseButton->isEnabled());
         EXPECT_FALSE(abortButton->isEnabled());
     }
-    jobs::PatternRunner* runner() { return p->runner(); }
+    dev::jobs::PatternRunner* runner() { return p->runner(); }
     motion::path::Vec2 measured()
     {
         const auto& a = stage()->status().axes;

@@ -30,7 +30,7 @@ QCPCurve* curveNamed(QCustomPlot* plot, const QString& prefix)
 struct SparseCircle {
     std::vector<motion::path::Segment> path;
     std::vector<double> along, times;
-    jobs::PatternRunSummary summary;
+    dev::jobs::PatternRunSummary summary;
     SparseCircle()
     {
         motion::path::Segment s;
@@ -83,7 +83,7 @@ TEST(PatternSamples, TheSummarySaysTheRateAndWhenTheFigureRestsOnTooFewSamples)
         along.push_back(2 * motion::kPi * 3 * k / 999);
         times.push_back(k / 250.0);
     }
-    jobs::PatternRunSummary dense = run.summary;
+    dev::jobs::PatternRunSummary dense = run.summary;
     dense.samples = 1000;
     const QString fine = ui::PatternScreen::runSummaryText(dense, motion::path::judgeSampleDensity(run.path, along, times, dense.maxContourMm));
     EXPECT_TRUE(fine.contains(QStringLiteral("1000 samples at 250 Hz"))) << fine.toStdString();

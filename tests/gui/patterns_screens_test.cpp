@@ -175,7 +175,7 @@ TEST_F(MotionScreensTest, ARunFromTheScreenEndsWithItsContourSummaryAndExportsCs
     p->setPattern(pat);
     pump(300);
     ASSERT_TRUE(p->run()) << p->statusText().toStdString();
-    ASSERT_TRUE(waitFor([&] { return p->runner()->state() == jobs::PatternRunner::State::Done; }, 15000)) << p->statusText().toStdString();
+    ASSERT_TRUE(waitFor([&] { return p->runner()->state() == dev::jobs::PatternRunner::State::Done; }, 15000)) << p->statusText().toStdString();
     pump(200);
     EXPECT_TRUE(p->summaryText().contains(QStringLiteral("Contour error"))) << p->summaryText().toStdString();
     EXPECT_TRUE(p->summaryText().contains(QStringLiteral(" Hz"))) << "the sample rate is said: " << p->summaryText().toStdString();
@@ -203,7 +203,7 @@ TEST(PlotPanelLegend, RemovingAChannelTakesItOutOfThePanelsOwnLegend)
     QCustomPlot plot;
     auto* margins = new QCPMarginGroup(&plot);
     ui::PlotPanel panel(&plot, margins);
-    const tele::ChannelKey a{0, {0, proto::ChannelKind::Measured}}, b{0, {1, proto::ChannelKind::Measured}};
+    const dev::tele::ChannelKey a{0, {0, dev::proto::ChannelKind::Measured}}, b{0, {1, dev::proto::ChannelKind::Measured}};
     ASSERT_TRUE(panel.addChannel(a, QStringLiteral("A"), QStringLiteral("mm")));
     ASSERT_TRUE(panel.addChannel(b, QStringLiteral("B"), QStringLiteral("mm")));
     EXPECT_EQ(panel.legend()->itemCount(), 2);

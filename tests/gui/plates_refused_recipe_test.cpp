@@ -89,7 +89,7 @@ TEST(PlatesRefusedRecipe, EveryErrorIsListedWithItsPlaceAndTheBannerPointsThere)
     EXPECT_TRUE(banner.contains(QObject::tr("Problems"))) << banner.toStdString();
 
     // An edit of the recipe on screen shows its own verdict again.
-    editor->edit(QStringLiteral("rename"), [](plates::Recipe& r) { r.name = "renamed"; });
+    editor->edit(QStringLiteral("rename"), [](motion::plates::Recipe& r) { r.name = "renamed"; });
     pump(50);
     EXPECT_EQ(problemRows(editor), verdictBefore);
 }
@@ -115,7 +115,7 @@ TEST(PlatesRefusedRecipe, AnOpenedRecipesProblemsCarryTheirPlaceUntilItIsEdited)
     QString all = problemRows(editor).join(QLatin1Char('\n'));
     EXPECT_TRUE(all.contains(QStringLiteral("bad-slot.recipe.json:6:31: plates[0].slot: "))) << all.toStdString();
 
-    editor->edit(QStringLiteral("rename"), [](plates::Recipe& r) { r.name = "renamed"; });
+    editor->edit(QStringLiteral("rename"), [](motion::plates::Recipe& r) { r.name = "renamed"; });
     pump(50);
     all = problemRows(editor).join(QLatin1Char('\n'));
     EXPECT_TRUE(all.startsWith(QStringLiteral("plates[0].slot: "))) << "an edited recipe's lines are no longer the file's: " << all.toStdString();

@@ -46,7 +46,7 @@ void mouse(QWidget* w, QEvent::Type type, const QPointF& at, Qt::MouseButtons he
 }
 
 /// Presses beside the first well, drags past the last and lets go.
-void dragAcross(ui::PlateMap* map, const plates::WellId& from, const plates::WellId& to)
+void dragAcross(ui::PlateMap* map, const motion::plates::WellId& from, const motion::plates::WellId& to)
 {
     const QPointF a = map->wellCenter(from) - QPointF(4, 4), b = map->wellCenter(to) + QPointF(4, 4);
     mouse(map, QEvent::MouseButtonPress, a, Qt::LeftButton);
@@ -88,7 +88,7 @@ protected:
     }
 
     /// The operator's jogging, done as a move: the tip over `m` and still.
-    bool moveTo(const plates::PointMm& m)
+    bool moveTo(const motion::plates::PointMm& m)
     {
         analyzer()->move({{0, m.x}, {1, m.y}}, false);
         return waitFor(
@@ -117,7 +117,7 @@ TEST_F(PlatesScreenTest, ADragFromInsideOneWellToInsideAnotherTakesBothAndTheBlo
     mouse(map, QEvent::MouseButtonPress, a, Qt::LeftButton);
     mouse(map, QEvent::MouseMove, (a + b) / 2, Qt::LeftButton);  // the last move reported: about D2
     mouse(map, QEvent::MouseButtonRelease, b, Qt::NoButton);
-    std::set<plates::WellId> want;
+    std::set<motion::plates::WellId> want;
     for (int row = 0; row < 8; ++row)
         for (int col = 0; col < 3; ++col)
             want.insert({row, col});
@@ -129,15 +129,15 @@ TEST_F(PlatesScreenTest, DragSelectsWellsAndTheirStepRunsOnTheSimulator)
     fastHomedAnalyzer();
     ui::PlateMap* map = screen->plateMap();
     dragAcross(map, {0, 0}, {1, 2});  // A1 … B3
-    std::set<plates::WellId> want = {{0, 0}, {0, 1}, {0, 2}, {1, 0}, {1, 1}, {1, 2}};
+    std::set<motion::plates::WellId> want = {{0, 0}, {0, 1}, {0, 2}, {1, 0}, {1, 1}, {1, 2}};
     EXPECT_EQ(map->selection(), want);
     QPushButton* aspirate = button(screen, QObject::tr("Aspirate from these"));
     ASSERT_NE(aspirate, nullptr);
     ASSERT_TRUE(aspirate->isEnabled());
     QTest::mouseClick(aspirate, Qt::LeftButton);
-    const plates::Recipe& r = screen->recipeEditor()->recipe();
+    const motion::plates::Recipe& r = screen->recipeEditor()->recipe();
     ASSERT_EQ(r.steps.size(), 1u);
-    EXPECT_EQ(r.steps[0].type, plates::StepType::Aspirate);
+    EXPECT_EQ(r.steps[0].type, motion::plates::StepType::Aspirate);
     EXPECT_EQ(r.steps[0].wells, (std::vector<std::string>{"A1:B3"}));
     EXPECT_TRUE(screen->plan().ok());
     EXPECT_EQ(screen->plan().ops.size(), 6u);
@@ -146,17 +146,17 @@ TEST_F(PlatesScreenTest, DragSelectsWellsAndTheirStepRunsOnTheSimulator)
     ASSERT_NE(run, nullptr);
     ASSERT_TRUE(run->isEnabled());
     QTest::mouseClick(run, Qt::LeftButton);
-    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Finished; }, 30000))
-        << jobs::runStateTerm(screen->runner()->state());
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == dev::jobs::RunState::Finished; }, 30000))
+        << dev::jobs::runStateTerm(screen->runner()->state());
     ASSERT_TRUE(waitFor([&] { return !analyzer()->status().anyMoving(); }, 5000));
     pump(200);
     EXPECT_NEAR(analyzer()->status().axes[3].commanded, 60, 1e-6) << "six wells of 10 µL";
     // The map shows every selected well done, and the rest unused.
     map->clearSelection();
     const QImage img = map->grab().toImage();
-    auto colorAt = [&](const plates::WellId& id) { return QColor(img.pixel(map->wellCenter(id).toPoint())); };
+    auto colorAt = [&](const motion::plates::WellId& id) { return QColor(img.pixel(map->wellCenter(id).toPoint())); };
     for (const auto& id : want)
-        EXPECT_EQ(colorAt(id), ui::PlateMap::colorOf(ui::PlateMap::WellState::Done)) << plates::wellName(id);
+        EXPECT_EQ(colorAt(id), ui::PlateMap::colorOf(ui::PlateMap::WellState::Done)) << motion::plates::wellName(id);
     EXPECT_EQ(colorAt({7, 11}), ui::PlateMap::colorOf(ui::PlateMap::WellState::Unused));
     // The run log is where the screen said.
     EXPECT_FALSE(screen->runner()->logPath().isEmpty());
@@ -191,7 +191,7 @@ TEST_F(PlatesScreenTest, ClickAndCtrlClickAndHoverShowCoordinatesAndVolume)
     const QPointF b3 = map->wellCenter({1, 2});
     mouse(map, QEvent::MouseButtonPress, b3, Qt::LeftButton);
     mouse(map, QEvent::MouseButtonRelease, b3, Qt::NoButton);
-    EXPECT_EQ(map->selection(), (std::set<plates::WellId>{{1, 2}}));
+    EXPECT_EQ(map->selection(), (std::set<motion::plates::WellId>{{1, 2}}));
     QTest::mouseClick(button(screen, QObject::tr("Dispense into these")), Qt::LeftButton);
     mouse(map, QEvent::MouseMove, b3, Qt::NoButton);
     const QString text = map->hoverText();
@@ -260,8 +260,8 @@ TEST_F(PlatesScreenTest, StepEditsUndoRedoSaveAndOpen)
     EXPECT_FALSE(ed->isModified());
     std::string text;
     QString error;
-    ASSERT_TRUE(files::readText(path, &text, &error));
-    const auto read = platefiles::parseRecipe(text);
+    ASSERT_TRUE(dev::files::readText(path, &text, &error));
+    const auto read = dev::files::plates::parseRecipe(text);
     ASSERT_TRUE(read.wellFormed);
     EXPECT_DOUBLE_EQ(read.recipe->steps[0].volumeUl, 30);
     screen->newRecipe();
@@ -281,16 +281,16 @@ TEST_F(PlatesScreenTest, TheCalibrationWizardTeachesASlotAndItIsKept)
     cal->setSlot(QStringLiteral("1"));
     // The plate sits 0.6 mm right and 0.4 mm back of nominal, turned 0.3°: the
     // operator jogs the tip over each teach well and records it.
-    const plates::PlateTransform truth = plates::PlateTransform::make(8.6, 7.6, 0.3);
-    const plates::Labware lw = *plates::findBuiltinLabware("sbs-96");
-    const auto pts = plates::teachWells(lw);
+    const motion::plates::PlateTransform truth = motion::plates::PlateTransform::make(8.6, 7.6, 0.3);
+    const motion::plates::Labware lw = *motion::plates::findBuiltinLabware("sbs-96");
+    const auto pts = motion::plates::teachWells(lw);
     for (int i = 0; i < 3; ++i) {
         ASSERT_TRUE(moveTo(truth.apply(pts[static_cast<std::size_t>(i)].plateMm)));
         cal->recordPoint(i);
     }
     ASSERT_TRUE(cal->fit());
     // Editing the recipe meanwhile does not throw the taught points away.
-    screen->recipeEditor()->edit(QStringLiteral("rename"), [](plates::Recipe& r) { r.name = "renamed"; });
+    screen->recipeEditor()->edit(QStringLiteral("rename"), [](motion::plates::Recipe& r) { r.name = "renamed"; });
     ASSERT_TRUE(cal->fit());
     EXPECT_NEAR(cal->fit()->rotationDeg, 0.3, 0.01);
     EXPECT_LT(cal->fit()->maxResidualMm, 0.01);
@@ -302,7 +302,7 @@ TEST_F(PlatesScreenTest, TheCalibrationWizardTeachesASlotAndItIsKept)
     dragAcross(screen->plateMap(), {0, 0}, {0, 0});
     QTest::mouseClick(button(screen, QObject::tr("Aspirate from these")), Qt::LeftButton);
     ASSERT_FALSE(screen->plan().ops.empty());
-    const plates::PointMm a1 = truth.apply(pts[0].plateMm);
+    const motion::plates::PointMm a1 = truth.apply(pts[0].plateMm);
     EXPECT_NEAR(screen->plan().ops[0].at.x, a1.x, 0.01);
     EXPECT_NEAR(screen->plan().ops[0].at.y, a1.y, 0.01);
     // A fresh screen (the next session) reads it back.
@@ -313,14 +313,14 @@ TEST_F(PlatesScreenTest, TheCalibrationWizardTeachesASlotAndItIsKept)
     // A well taught a millimetre off: the residual shows it and a warning says so.
     cal->setSlot(QStringLiteral("2"));
     for (int i = 0; i < 3; ++i) {
-        plates::PointMm m = plates::PlateTransform::make(8, 106, 0).apply(pts[static_cast<std::size_t>(i)].plateMm);
+        motion::plates::PointMm m = motion::plates::PlateTransform::make(8, 106, 0).apply(pts[static_cast<std::size_t>(i)].plateMm);
         if (i == 1)
             m.x += 1.0;
         ASSERT_TRUE(moveTo(m));
         cal->recordPoint(i);
     }
     ASSERT_TRUE(cal->fit());
-    EXPECT_GT(cal->fit()->maxResidualMm, plates::kResidualWarnMm);
+    EXPECT_GT(cal->fit()->maxResidualMm, motion::plates::kResidualWarnMm);
     ASSERT_FALSE(cal->fit()->warnings.empty());
 }
 
@@ -332,13 +332,13 @@ TEST_F(PlatesScreenTest, StepTypesAndPlannedOpsShowReadableNamesNotFileIds)
     // The step form's type list: "Air gap", not the file's "air_gap"; the id is the item's data.
     QComboBox* type = nullptr;
     for (auto* c : screen->recipeEditor()->findChildren<QComboBox*>())
-        if (c->count() == plates::kStepTypeCount)
+        if (c->count() == motion::plates::kStepTypeCount)
             type = c;
     ASSERT_NE(type, nullptr);
-    const int airGap = type->findData(static_cast<int>(plates::StepType::AirGap));
+    const int airGap = type->findData(static_cast<int>(motion::plates::StepType::AirGap));
     ASSERT_GE(airGap, 0);
     EXPECT_EQ(type->itemText(airGap), QStringLiteral("Air gap"));
-    EXPECT_EQ(type->itemText(type->findData(static_cast<int>(plates::StepType::TouchOff))), QStringLiteral("Touch off"));
+    EXPECT_EQ(type->itemText(type->findData(static_cast<int>(motion::plates::StepType::TouchOff))), QStringLiteral("Touch off"));
     EXPECT_EQ(type->currentText(), QStringLiteral("Aspirate"));
     for (int i = 0; i < type->count(); ++i)
         EXPECT_FALSE(type->itemText(i).contains(QLatin1Char('_'))) << type->itemText(i).toStdString();
@@ -360,7 +360,7 @@ TEST_F(PlatesScreenTest, ARunCountsOperationsAndSaysOverHowManyWells)
 {
     ASSERT_TRUE(screen->openRecipe(QStringLiteral(BP_SOURCE_DIR "/resources/examples/reagent-transfer.recipe.json")));
     pump(50);
-    const plates::RecipePlan& plan = screen->plan();
+    const motion::plates::RecipePlan& plan = screen->plan();
     ASSERT_TRUE(plan.ok());
     const int ops = static_cast<int>(plan.ops.size()), wells = plan.wellsVisited();
     ASSERT_GT(ops, wells) << "a recipe whose ops are its wells tells nothing";
@@ -395,8 +395,8 @@ TEST_F(PlatesScreenTest, PausedBetweenWellsNothingIsCurrent)
     QPushButton* pause = button(screen->runPanel(), QObject::tr("Pause"));
     ASSERT_NE(pause, nullptr);
     QTest::mouseClick(pause, Qt::LeftButton);
-    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Paused; }, 30000))
-        << jobs::runStateTerm(screen->runner()->state());
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == dev::jobs::RunState::Paused; }, 30000))
+        << dev::jobs::runStateTerm(screen->runner()->state());
     pump(100);
     const int next = screen->runner()->progress().opsDone;
     const QString nextWell = QString::fromStdString(screen->plan().ops[static_cast<std::size_t>(next)].well);
@@ -409,11 +409,11 @@ TEST_F(PlatesScreenTest, PausedBetweenWellsNothingIsCurrent)
     EXPECT_TRUE(all.contains(nextWell)) << nextWell.toStdString() << " in " << all.toStdString();
     // On the map the next well is not drawn as under way.
     const QImage img = map->grab().toImage();
-    const plates::WellId id{0, next};
+    const motion::plates::WellId id{0, next};
     EXPECT_NE(QColor(img.pixel(map->wellCenter(id).toPoint())), ui::PlateMap::colorOf(ui::PlateMap::WellState::Current))
         << nextWell.toStdString();
     QPushButton* resume = button(screen->runPanel(), QObject::tr("Resume"));
     ASSERT_NE(resume, nullptr);
     QTest::mouseClick(resume, Qt::LeftButton);
-    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Finished; }, 30000));
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == dev::jobs::RunState::Finished; }, 30000));
 }

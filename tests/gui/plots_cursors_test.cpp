@@ -17,11 +17,11 @@
 
 namespace {
 
-using proto::ChannelKind;
+using dev::proto::ChannelKind;
 
-tele::ChannelKey key(int instrument, int axis, ChannelKind kind)
+dev::tele::ChannelKey key(int instrument, int axis, ChannelKind kind)
 {
-    return tele::ChannelKey{instrument, proto::ChannelRef{static_cast<std::uint8_t>(axis), kind}};
+    return dev::tele::ChannelKey{instrument, dev::proto::ChannelRef{static_cast<std::uint8_t>(axis), kind}};
 }
 
 constexpr double kStageT0 = 100.0;     ///< the stage's device clock at its first sample
@@ -62,11 +62,11 @@ protected:
     /// Index of the stored sample nearest device time t of a 1 kHz run starting at t0.
     static int sampleAt(double t0, double t) { return static_cast<int>(std::lround((t - t0) / kPeriod)); }
 
-    tele::ChannelStore stageStore{kSamples};
-    tele::ChannelStore analyzerStore{kSamples};
+    dev::tele::ChannelStore stageStore{kSamples};
+    dev::tele::ChannelStore analyzerStore{kSamples};
     ui::StorePlotSource source;
-    tele::ChannelKey stageX = key(1, 0, ChannelKind::Measured);
-    tele::ChannelKey analyzerZ = key(0, 2, ChannelKind::Measured);
+    dev::tele::ChannelKey stageX = key(1, 0, ChannelKind::Measured);
+    dev::tele::ChannelKey analyzerZ = key(0, 2, ChannelKind::Measured);
     std::unique_ptr<ui::PlotStack> stack;
     ui::PlotCursors* cursors = nullptr;  // owned by the stack
 };
@@ -156,7 +156,7 @@ TEST_F(PlotCursorsTest, CursorsFollowPlotsAddedAndRemoved)
 TEST(PlotReduction, ASingleSampleSpikeSurvivesAndPointsFollowTheScreen)
 {
     constexpr int n = 200000;
-    tele::ChannelStore store(n);
+    dev::tele::ChannelStore store(n);
     std::vector<float> v(n, 0.f);
     v[54321] = 100.f;
     v[177777] = -50.f;
@@ -192,7 +192,7 @@ TEST(PlotReduction, ASingleSampleSpikeSurvivesAndPointsFollowTheScreen)
 
 TEST(PlotReduction, FewSamplesAreHandedOverRaw)
 {
-    tele::ChannelStore store(1000);
+    dev::tele::ChannelStore store(1000);
     std::vector<float> v(100);
     for (int i = 0; i < 100; ++i)
         v[std::size_t(i)] = float(i * i);

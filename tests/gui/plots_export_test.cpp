@@ -17,7 +17,7 @@
 
 namespace {
 
-using proto::ChannelKind;
+using dev::proto::ChannelKind;
 
 struct Csv {
     QList<QByteArray> comments;
@@ -72,10 +72,10 @@ protected:
         plots->redraw();
     }
 
-    tele::ChannelStore stage{10000};
-    tele::ChannelStore analyzer{5000};
-    tele::ChannelKey stageKey{1, proto::ChannelRef{0, ChannelKind::Measured}};
-    tele::ChannelKey analyzerKey{0, proto::ChannelRef{3, ChannelKind::Measured}};
+    dev::tele::ChannelStore stage{10000};
+    dev::tele::ChannelStore analyzer{5000};
+    dev::tele::ChannelKey stageKey{1, dev::proto::ChannelRef{0, ChannelKind::Measured}};
+    dev::tele::ChannelKey analyzerKey{0, dev::proto::ChannelRef{3, ChannelKind::Measured}};
     ui::StorePlotSource source;
     std::unique_ptr<ui::PlotStack> plots;
     QTemporaryDir dir;
@@ -107,13 +107,13 @@ TEST_F(PlotExportTest, CsvHoldsTheRawSamplesOfTheVisibleRangeOfBothInstruments)
         EXPECT_GE(t, lastTime) << "rows in time order";
         lastTime = t;
         if (row[1] == "Stage") {
-            const tele::Sample s = stage.at(nextStage++);
+            const dev::tele::Sample s = stage.at(nextStage++);
             EXPECT_NEAR(t, s.tS - stage.lastTime(), 1e-6);
             EXPECT_EQ(row[2].toFloat(), s.value) << "exact stored value";
             EXPECT_TRUE(row[3].isEmpty());
         } else {
             ASSERT_EQ(row[1], "Analyzer");
-            const tele::Sample s = analyzer.at(nextAnalyzer++);
+            const dev::tele::Sample s = analyzer.at(nextAnalyzer++);
             EXPECT_NEAR(t, s.tS - analyzer.lastTime(), 1e-6);
             EXPECT_TRUE(row[2].isEmpty());
             EXPECT_EQ(row[3].toFloat(), s.value);

@@ -24,11 +24,11 @@ using guitest::waitFor;
 
 namespace {
 
-using proto::ChannelKind;
+using dev::proto::ChannelKind;
 
-tele::ChannelKey historyKey(int instrument, int axis, ChannelKind kind)
+dev::tele::ChannelKey historyKey(int instrument, int axis, ChannelKind kind)
 {
-    return tele::ChannelKey{instrument, proto::ChannelRef{static_cast<std::uint8_t>(axis), kind}};
+    return dev::tele::ChannelKey{instrument, dev::proto::ChannelRef{static_cast<std::uint8_t>(axis), kind}};
 }
 
 /// The oldest time (x, s before the anchor) and the spread of values a graph draws.
@@ -83,9 +83,9 @@ protected:
 
     std::unique_ptr<app::MainWindow> w;
     ui::PlotsScreen* screen = nullptr;
-    tele::TelemetryHub* hub = nullptr;
-    const tele::ChannelKey stageXError = historyKey(1, 0, ChannelKind::FollowingError);
-    const tele::ChannelKey stageXMeasured = historyKey(1, 0, ChannelKind::Measured);
+    dev::tele::TelemetryHub* hub = nullptr;
+    const dev::tele::ChannelKey stageXError = historyKey(1, 0, ChannelKind::FollowingError);
+    const dev::tele::ChannelKey stageXMeasured = historyKey(1, 0, ChannelKind::Measured);
 };
 
 TEST_F(PlotsHistoryTest, AChannelTickedAfterTheMotionShowsTheSamplesFromBefore)
@@ -125,7 +125,7 @@ TEST_F(PlotsHistoryTest, OpeningThePlotsAfterAnIncidentShowsWhatHappenedWhileAno
         return g && drawn(g).spread > 2.0;
     }, 3000);
     ASSERT_NE(g, nullptr);
-    const tele::ChannelStore* kept = hub->historyStore(stageXMeasured);
+    const dev::tele::ChannelStore* kept = hub->historyStore(stageXMeasured);
     ASSERT_NE(kept, nullptr);
     EXPECT_GT(kept->at(kept->size() - 1).value - kept->at(0).value, 2.0f) << "recorded while no plot was shown";
     EXPECT_GT(drawn(g).spread, 2.0) << "the 5 mm step is on the plot though no plot was shown while it ran: "

@@ -19,11 +19,11 @@ using guitest::waitFor;
 
 namespace {
 
-using proto::ChannelKind;
+using dev::proto::ChannelKind;
 
-tele::ChannelKey key(int instrument, int axis, ChannelKind kind)
+dev::tele::ChannelKey key(int instrument, int axis, ChannelKind kind)
 {
-    return tele::ChannelKey{instrument, proto::ChannelRef{static_cast<std::uint8_t>(axis), kind}};
+    return dev::tele::ChannelKey{instrument, dev::proto::ChannelRef{static_cast<std::uint8_t>(axis), kind}};
 }
 
 TEST(PlotsLiveStrip, ShowsTheAxisLastJoggedWhileTheJogScreenIsShown)

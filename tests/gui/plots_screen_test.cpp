@@ -29,11 +29,11 @@ using guitest::button;
 
 namespace {
 
-using proto::ChannelKind;
+using dev::proto::ChannelKind;
 
-tele::ChannelKey key(int instrument, int axis, ChannelKind kind)
+dev::tele::ChannelKey key(int instrument, int axis, ChannelKind kind)
 {
-    return tele::ChannelKey{instrument, proto::ChannelRef{static_cast<std::uint8_t>(axis), kind}};
+    return dev::tele::ChannelKey{instrument, dev::proto::ChannelRef{static_cast<std::uint8_t>(axis), kind}};
 }
 
 struct GraphSnapshot {
@@ -90,8 +90,8 @@ protected:
 
     std::unique_ptr<app::MainWindow> w;
     ui::PlotsScreen* screen = nullptr;
-    tele::TelemetryHub* hub = nullptr;
-    tele::ChannelKey stageXMeasured = key(1, 0, ChannelKind::Measured);
+    dev::tele::TelemetryHub* hub = nullptr;
+    dev::tele::ChannelKey stageXMeasured = key(1, 0, ChannelKind::Measured);
 };
 
 TEST_F(PlotsScreenTest, StartsWithTheStagesPositionsAndFollowingErrorsAndStreams)
@@ -124,8 +124,8 @@ TEST_F(PlotsScreenTest, StartsWithTheStagesPositionsAndFollowingErrorsAndStreams
 TEST_F(PlotsScreenTest, TickingAndUntickingChannelsAddsAndRemovesThemAndTheirSubscription)
 {
     ui::ChannelPicker* picker = screen->picker();
-    const tele::ChannelKey velocity = key(1, 0, ChannelKind::Velocity);
-    const tele::ChannelKey analyzerX = key(0, 0, ChannelKind::Measured);
+    const dev::tele::ChannelKey velocity = key(1, 0, ChannelKind::Velocity);
+    const dev::tele::ChannelKey analyzerX = key(0, 0, ChannelKind::Measured);
     ASSERT_TRUE(waitFor([&] { return picker->channelCount(0) > 0 && picker->channelCount(1) > 0; }, 3000));
     ASSERT_EQ(picker->currentPlot(), 0);
 
@@ -219,7 +219,7 @@ TEST_F(PlotsScreenTest, ZoomingTheTimeAxisWithTheWheelPausesTheView)
 
 TEST_F(PlotsScreenTest, HiddenPlotsLetGoOfTheLinkUnlessPaused)
 {
-    const tele::ChannelKey following = key(1, 0, ChannelKind::FollowingError);  // only the plots want it
+    const dev::tele::ChannelKey following = key(1, 0, ChannelKind::FollowingError);  // only the plots want it
     ASSERT_TRUE(waitFor([&] { return hub->store(following) != nullptr; }, 3000));
     w->showScreen(QStringLiteral("profiles"));
     EXPECT_TRUE(waitFor([&] { return hub->store(following) == nullptr; }, 3000)) << "nobody looks: not collected";

@@ -1,4 +1,4 @@
-// The Scan screen asks what jobs::ScanLaunch decides, nothing of its own: the question
+// The Scan screen asks what dev::jobs::ScanLaunch decides, nothing of its own: the question
 // before a fresh run far from the stage names the tile count and the first tile from the
 // launch's outlook (the data the CLI's `scan run` reads too), and the same run, declined,
 // reads the same outlook from a launch over the screen's runner without any widget.
@@ -57,9 +57,9 @@ TEST(ScanLaunchScreen, TheQuestionBeforeAFarRunIsWordedFromTheLaunchsOutlook)
     EXPECT_FALSE(screen->run());
     ASSERT_EQ(asked.size(), 1);
 
-    jobs::ScanLaunch launch(screen->runner());
-    const jobs::ScanDecision d = launch.prepare(p, dir.path());
-    ASSERT_EQ(d.kind, jobs::ScanDecision::Kind::Ready);
+    dev::jobs::ScanLaunch launch(screen->runner());
+    const dev::jobs::ScanDecision d = launch.prepare(p, dir.path());
+    ASSERT_EQ(d.kind, dev::jobs::ScanDecision::Kind::Ready);
     EXPECT_TRUE(d.outlook.longApproach);
     EXPECT_FALSE(d.outlook.longRun);
     EXPECT_FALSE(d.outlook.resume);

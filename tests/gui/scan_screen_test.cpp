@@ -176,7 +176,7 @@ TEST_F(ScanScreenTest, RunsOnTheStageWithProgressAndExports)
     stage->home(0, [&](const std::optional<dev::RequestError>& e) { homeError = e; });
     ASSERT_TRUE(waitFor([&] { return stage->status().axes.size() >= 2 && stage->status().axes[0].homed && stage->status().axes[1].homed
                                      && !stage->status().anyMoving(); }, 30000))
-        << (homeError ? msg::debugString(homeError->message) : std::string("home not refused")) << "; X homed "
+        << (homeError ? motion::msg::debugString(homeError->message) : std::string("home not refused")) << "; X homed "
         << stage->status().axes.value(0).homed << " moving " << stage->status().axes.value(0).moving << ", Y homed "
         << stage->status().axes.value(1).homed << " moving " << stage->status().axes.value(1).moving;
     link->host().setTimeScale(1);
@@ -199,12 +199,12 @@ TEST_F(ScanScreenTest, RunsOnTheStageWithProgressAndExports)
             EXPECT_FALSE(b->isEnabled()) << "no other plan opens over a running one";
         }
     }
-    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::ScanRunner::State::Finished; }, 30000));
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == dev::jobs::ScanRunner::State::Finished; }, 30000));
     auto* progress = child<QProgressBar>("scanProgress");
     EXPECT_EQ(progress->value(), 12);
     EXPECT_EQ(progress->maximum(), 12);
     EXPECT_EQ(asked, 0) << "a run of a few seconds goes without asking";
-    for (const char* f : {scanfile::kTileConfigFile, scanfile::kPositionsFile, scanfile::kCsvFile})
+    for (const char* f : {dev::files::scan::kTileConfigFile, dev::files::scan::kPositionsFile, dev::files::scan::kCsvFile})
         EXPECT_TRUE(QFile::exists(QDir(dir.path()).filePath(QLatin1String(f)))) << f;
     EXPECT_TRUE(screen->form()->isEnabled());
 }
@@ -232,7 +232,7 @@ TEST_F(ScanScreenTest, AnotherPlansRunLogOffersAFreshStartInAnyLanguage)
     ASSERT_EQ(logs(), 1);
 
     // Another plan, same folder, the runner's messages translated.
-    const i18ntest::PseudoTranslation translated({QStringLiteral("words::ScanWords")});
+    const i18ntest::PseudoTranslation translated({QStringLiteral("ui::words::ScanWords")});
     p.overlapX = 0.3;
     screen->setPlan(p);
     settle();

@@ -70,7 +70,7 @@ protected:
     {
         answer = true;
         QTest::mouseClick(button(screen->runPanel(), QObject::tr("Run")), Qt::LeftButton);
-        ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Running; }, 5000));
+        ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == dev::jobs::RunState::Running; }, 5000));
         questions.clear();
         answer = false;
     }
@@ -91,10 +91,10 @@ TEST_F(TrustConfirmTest, PlateAbortAsksFirst)
     ASSERT_EQ(questions.size(), 1);
     EXPECT_TRUE(questions[0].startsWith(QStringLiteral("Abort"))) << questions[0].toStdString();
     pump(100);
-    EXPECT_EQ(screen->runner()->state(), jobs::RunState::Running) << "aborted although the operator said no";
+    EXPECT_EQ(screen->runner()->state(), dev::jobs::RunState::Running) << "aborted although the operator said no";
     answer = true;
     QTest::mouseClick(button(screen->runPanel(), QObject::tr("Abort")), Qt::LeftButton);
-    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Stopped; }, 10000));
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == dev::jobs::RunState::Stopped; }, 10000));
 }
 
 TEST_F(TrustConfirmTest, DisconnectDuringARunAsksFirst)
@@ -151,7 +151,7 @@ TEST_F(TrustConfirmTest, HomingAPlungerThatHoldsLiquidSaysHowMuchWouldBePushedOu
     QString refused;
     a->move({{p, 220}}, false, 0, [&](const std::optional<dev::RequestError>& e) {
         if (e)
-            refused = words::text(e->message);
+            refused = ui::words::text(e->message);
     });
     ASSERT_TRUE(waitFor([&] { return std::abs(a->status().axes[p].commanded - 220) < 0.01 && !a->status().anyMoving(); }, 20000))
         << "P at " << a->status().axes[p].commanded << " homed " << a->status().axes[p].homed << " " << refused.toStdString();

@@ -113,7 +113,7 @@ TEST(TrustLayout, TheConnectionBarsIdentityIsElidedWithItsWholeTextInTheTooltip)
 
 TEST(TrustLayout, TheRecipeEditorIsWholeAtLaptopAndDesktopSizesInEnglishAndChinese)
 {
-    words::Translators translators;
+    ui::words::Translators translators;
     QStringList failures;
     for (const QString& lang : {QStringLiteral("en"), QStringLiteral("zh_CN")}) {
         ASSERT_TRUE(translators.setLanguage(lang));

@@ -120,7 +120,7 @@ TEST_F(TrustLongMoveTest, ScanAsksBeforeALongApproachAndNoLeavesTheStageWhereItI
     EXPECT_FALSE(stage()->status().anyMoving()) << "the stage moved although the operator said no";
     EXPECT_EQ(stage()->status().axes[0].commanded, x);
     EXPECT_EQ(stage()->status().axes[1].commanded, y);
-    EXPECT_NE(w->scanScreen()->runner()->state(), jobs::ScanRunner::State::Running);
+    EXPECT_NE(w->scanScreen()->runner()->state(), dev::jobs::ScanRunner::State::Running);
 }
 
 TEST_F(TrustLongMoveTest, DontAskAgainWithYesLetsTheNextLongMoveOfTheSessionGoWithoutAsking)
@@ -133,7 +133,7 @@ TEST_F(TrustLongMoveTest, DontAskAgainWithYesLetsTheNextLongMoveOfTheSessionGoWi
     ASSERT_TRUE(w->scanScreen()->run());
     ASSERT_EQ(op.seen.size(), 1u) << "the long approach was not asked";
     EXPECT_TRUE(op.seen[0].offersWaiver) << "a long move offers \"Don't ask again this session\"";
-    ASSERT_TRUE(waitFor([&] { return w->scanScreen()->runner()->state() == jobs::ScanRunner::State::Finished; }, 60000));
+    ASSERT_TRUE(waitFor([&] { return w->scanScreen()->runner()->state() == dev::jobs::ScanRunner::State::Finished; }, 60000));
     ASSERT_TRUE(waitFor([&] { return !stage()->status().anyMoving(); }, 5000));
 
     // Another screen, another long move: not asked again this session.

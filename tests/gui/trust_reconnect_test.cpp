@@ -94,17 +94,17 @@ TEST_F(TrustReconnectTest, APlateRunInterruptedByDisconnectResumesWithEveryWellD
     QTest::mouseClick(aspirate, Qt::LeftButton);
     ASSERT_EQ(screen->plan().ops.size(), 6u);
     int decisions = 0;
-    screen->setInterruptedDecider([&](const jobs::InterruptedOp&) {
+    screen->setInterruptedDecider([&](const dev::jobs::InterruptedOp&) {
         ++decisions;
-        return jobs::InterruptedChoice::Redo;
+        return dev::jobs::InterruptedChoice::Redo;
     });
     std::vector<int> finished;
-    QObject::connect(screen->runner(), &jobs::RecipeRunner::opFinished, screen, [&](int op) { finished.push_back(op); });
+    QObject::connect(screen->runner(), &dev::jobs::RecipeRunner::opFinished, screen, [&](int op) { finished.push_back(op); });
     QTest::mouseClick(button(screen->runPanel(), QObject::tr("Run")), Qt::LeftButton);
-    ASSERT_TRUE(waitFor([&] { return finished.size() >= 2; }, 30000)) << jobs::runStateTerm(screen->runner()->state());
+    ASSERT_TRUE(waitFor([&] { return finished.size() >= 2; }, 30000)) << dev::jobs::runStateTerm(screen->runner()->state());
     reconnect();
-    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Stopped; }, 5000))
-        << jobs::runStateTerm(screen->runner()->state());
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == dev::jobs::RunState::Stopped; }, 5000))
+        << dev::jobs::runStateTerm(screen->runner()->state());
     EXPECT_TRUE(allHomedAndStill());
     QPushButton* resume = button(screen->runPanel(), QObject::tr("Resume"));
     ASSERT_NE(resume, nullptr);
@@ -114,8 +114,8 @@ TEST_F(TrustReconnectTest, APlateRunInterruptedByDisconnectResumesWithEveryWellD
     QTest::mouseClick(resume, Qt::LeftButton);
     EXPECT_TRUE(notes.join(QLatin1Char('\n')).contains(QStringLiteral("found the same instrument")))
         << "the resume does not say what it found: " << notes.join(QLatin1Char('\n')).toStdString();
-    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Finished; }, 30000))
-        << jobs::runStateTerm(screen->runner()->state()) << " after " << decisions << " decisions";
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == dev::jobs::RunState::Finished; }, 30000))
+        << dev::jobs::runStateTerm(screen->runner()->state()) << " after " << decisions << " decisions";
     ASSERT_TRUE(waitFor([&] { return !analyzer()->status().anyMoving(); }, 5000));
     std::vector<int> sorted = finished;
     std::sort(sorted.begin(), sorted.end());
@@ -135,7 +135,7 @@ TEST_F(TrustReconnectTest, OpenDuringAPlateRunKeepsTheRecipeThatRuns)
     QString said;
     QObject::connect(screen, &ui::PlatesScreen::problem, screen, [&](const QString& m) { said = m; });
     QTest::mouseClick(button(screen->runPanel(), QObject::tr("Run")), Qt::LeftButton);
-    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Running; }, 5000));
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == dev::jobs::RunState::Running; }, 5000));
     QToolButton* open = nullptr;
     for (auto* b : screen->recipeEditor()->findChildren<QToolButton*>())
         if (b->text() == QObject::tr("Open…"))
@@ -146,7 +146,7 @@ TEST_F(TrustReconnectTest, OpenDuringAPlateRunKeepsTheRecipeThatRuns)
     EXPECT_FALSE(said.isEmpty()) << "refused without a word";
     EXPECT_EQ(screen->plan().ops.size(), 6u) << "the plan on screen is no longer the one that runs";
     EXPECT_EQ(screen->recipeEditor()->recipe().steps.size(), 1u);
-    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == jobs::RunState::Finished; }, 30000));
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->state() == dev::jobs::RunState::Finished; }, 30000));
     EXPECT_TRUE(open->isEnabled());
     EXPECT_TRUE(screen->openRecipe(other));
 }
@@ -193,7 +193,7 @@ TEST_F(TrustReconnectTest, AResumeOnAnInstrumentWhosePlungerDiffersIsRefusedSayi
     screen->plateMap()->setSelection({{0, 0}, {0, 1}, {0, 2}, {1, 0}, {1, 1}, {1, 2}});
     QTest::mouseClick(button(screen, QObject::tr("Aspirate from these")), Qt::LeftButton);
     int finished = 0;
-    QObject::connect(screen->runner(), &jobs::RecipeRunner::opFinished, screen, [&] { ++finished; });
+    QObject::connect(screen->runner(), &dev::jobs::RecipeRunner::opFinished, screen, [&] { ++finished; });
     QTest::mouseClick(button(screen->runPanel(), QObject::tr("Run")), Qt::LeftButton);
     ASSERT_TRUE(waitFor([&] { return finished >= 2; }, 30000));
     w->analyzer()->disconnectLink();
@@ -204,11 +204,11 @@ TEST_F(TrustReconnectTest, AResumeOnAnInstrumentWhosePlungerDiffersIsRefusedSayi
     ASSERT_TRUE(waitFor([&] { return analyzer()->isReady() && analyzer()->status().axes.size() == 4; }, 5000));
     analyzer()->home(0);
     ASSERT_TRUE(waitFor([&] { return allHomedAndStill(); }, 60000));
-    ASSERT_EQ(screen->runner()->state(), jobs::RunState::Stopped);
+    ASSERT_EQ(screen->runner()->state(), dev::jobs::RunState::Stopped);
     QString said;
     QObject::connect(screen->runPanel(), &ui::RunPanel::problem, screen, [&](const QString& m) { said = m; });
     QTest::mouseClick(button(screen->runPanel(), QObject::tr("Resume")), Qt::LeftButton);
     pump(200);
-    EXPECT_EQ(screen->runner()->state(), jobs::RunState::Stopped) << "resumed with an empty syringe";
+    EXPECT_EQ(screen->runner()->state(), dev::jobs::RunState::Stopped) << "resumed with an empty syringe";
     EXPECT_TRUE(said.contains(QStringLiteral("plunger"))) << said.toStdString();
 }

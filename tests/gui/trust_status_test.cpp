@@ -32,7 +32,7 @@ TEST_F(MotionScreensTest, TheStatusBarSaysEStopWhileItIsLatched)
 
 TEST_F(MotionScreensTest, ADeviceClockThatStartedAgainIsNewsNotAFault)
 {
-    emit w->telemetry()->problem(msg::make("telemetry.clock_restarted", {msg::verbatim("instrument", "Stage")}));
+    emit w->telemetry()->problem(motion::msg::make("telemetry.clock_restarted", {motion::msg::verbatim("instrument", "Stage")}));
     EXPECT_TRUE(w->plotsScreen()->lastMessage().contains(QStringLiteral("clock"))) << w->plotsScreen()->lastMessage().toStdString();
     EXPECT_FALSE(w->plotsScreen()->messageIsProblem()) << "shown in red, as if something had failed";
 }

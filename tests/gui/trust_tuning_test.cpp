@@ -46,7 +46,7 @@ protected:
         ASSERT_TRUE(t->selectTarget(QStringLiteral("Stage X")));
         ASSERT_TRUE(waitFor([&] { return !t->gains()->history().isEmpty(); }, 3000)) << t->statusText().toStdString();
     }
-    sim::SimMachine& stage() { return qobject_cast<dev::SimulatedLink*>(w->stage()->link())->machine(); }
+    dev::sim::SimMachine& stage() { return qobject_cast<dev::SimulatedLink*>(w->stage()->link())->machine(); }
     ui::NumberField* field(const char* name) { return t->gains()->findChild<ui::NumberField*>(QLatin1String(name)); }
     QPushButton* apply()
     {

@@ -37,7 +37,7 @@ class TrustWords : public ::testing::TestWithParam<const char*> {
 protected:
     void SetUp() override { ASSERT_TRUE(translators.setLanguage(QString::fromLatin1(GetParam()))); }
     void TearDown() override { translators.setLanguage(QStringLiteral("en")); }
-    words::Translators translators;
+    ui::words::Translators translators;
 };
 
 TEST_P(TrustWords, TheScriptingStripSaysItsWholeSentenceAt1366x768)

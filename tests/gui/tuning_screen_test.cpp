@@ -36,7 +36,7 @@ protected:
         t = w->tuningScreen();
         ASSERT_NE(t, nullptr);
     }
-    sim::SimMachine& stage() { return qobject_cast<dev::SimulatedLink*>(w->stage()->link())->machine(); }
+    dev::sim::SimMachine& stage() { return qobject_cast<dev::SimulatedLink*>(w->stage()->link())->machine(); }
     QPushButton* button(QWidget* root, const QString& text)
     {
         for (auto* b : root->findChildren<QPushButton*>())

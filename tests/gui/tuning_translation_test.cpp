@@ -21,12 +21,12 @@ using motion::control::TuningResult;
 
 TEST(TuningTranslation, OutcomesAndEndReasonsAreTranslatedByKey)
 {
-    const i18ntest::PseudoTranslation translated({QStringLiteral("words::TuningWords")});
-    EXPECT_EQ(words::tuningOutcome("decays"), QStringLiteral("décáys"));
-    EXPECT_EQ(words::tuningOutcome("sustained"), QStringLiteral("sústáínéd"));
-    EXPECT_EQ(words::tuningOutcome("hit the envelope"), QStringLiteral("hít thé énvélópé"));
-    EXPECT_EQ(words::term(motion::control::endReasonTerm(EndReason::Excursion)), QStringLiteral("máx éxcúrsíón crósséd"));
-    EXPECT_EQ(words::tuningOutcome(motion::control::endReasonName(EndReason::Settled)), QStringLiteral("séttléd"))
+    const i18ntest::PseudoTranslation translated({QStringLiteral("ui::words::TuningWords")});
+    EXPECT_EQ(ui::words::tuningOutcome("decays"), QStringLiteral("décáys"));
+    EXPECT_EQ(ui::words::tuningOutcome("sustained"), QStringLiteral("sústáínéd"));
+    EXPECT_EQ(ui::words::tuningOutcome("hit the envelope"), QStringLiteral("hít thé énvélópé"));
+    EXPECT_EQ(ui::words::term(motion::control::endReasonTerm(EndReason::Excursion)), QStringLiteral("máx éxcúrsíón crósséd"));
+    EXPECT_EQ(ui::words::tuningOutcome(motion::control::endReasonName(EndReason::Settled)), QStringLiteral("séttléd"))
         << "a verification stores its end reason's name";
 }
 
@@ -51,7 +51,7 @@ TEST(TuningTranslation, TheZnPanelShowsTheVerificationAndTheRuleSourcesTranslate
 {
     const TuningResult r = relayResult(EndReason::Settled);
 
-    const i18ntest::PseudoTranslation translated({QStringLiteral("words::TuningWords"), QStringLiteral("ui::ZnPanel")});
+    const i18ntest::PseudoTranslation translated({QStringLiteral("ui::words::TuningWords"), QStringLiteral("ui::ZnPanel")});
     ui::ZnPanel panel;
     panel.showResult(r);
     const QString text = panel.resultText();

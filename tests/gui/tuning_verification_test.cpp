@@ -57,12 +57,12 @@ struct TuningJob {
 
     bool tune(dev::TuningTarget& target)
     {
-        QObject::connect(&runner, &dev::TuningRunner::finished, &runner, [this](bool good, const msg::Message&) {
+        QObject::connect(&runner, &dev::TuningRunner::finished, &runner, [this](bool good, const motion::msg::Message&) {
             finished = true;
             ok = good;
         });
         QObject::connect(&runner, &dev::TuningRunner::stepTestDone, &runner,
-                         [this](const motion::control::Record& r, const motion::control::StepVerdict& v, const msg::Message&) {
+                         [this](const motion::control::Record& r, const motion::control::StepVerdict& v, const motion::msg::Message&) {
                              stepRecord = r;
                              stepVerdict = v;
                          });

@@ -25,27 +25,27 @@ TEST(AccuracyCircle, BothDirectionsAreSampledAndEvaluated)
     t.feedMmS = 10;
     t.leadArcDeg = 30;
     t.samplesPerRevolution = 90;
-    jobs::CircleRunner r(&s.session.client);
-    msg::Problems problems;
+    dev::jobs::CircleRunner r(&s.session.client);
+    motion::msg::Problems problems;
     ASSERT_TRUE(r.prepare(t, &problems)) << describe(problems);
-    std::vector<msg::Message> said;
-    QObject::connect(&r, &jobs::CircleRunner::problem, [&](const msg::Message& m) { said.push_back(m); });
+    std::vector<motion::msg::Message> said;
+    QObject::connect(&r, &dev::jobs::CircleRunner::problem, [&](const motion::msg::Message& m) { said.push_back(m); });
     int samples = 0;
-    QObject::connect(&r, &jobs::CircleRunner::sampled, [&] { ++samples; });
+    QObject::connect(&r, &dev::jobs::CircleRunner::sampled, [&] { ++samples; });
     // Fed no telemetry, the runner samples the path by polling status on the host's clock, so a sped-up
     // device clock on a loaded machine leaves gaps. The device's clock is stepped by hand
     // instead: 50 ms of device time (0.5 mm, under 3° of this circle) at a time, each step
     // waiting for the runner's next sample while the path runs.
     s.session.link.host().setManualClock(true);
     ASSERT_TRUE(r.start());
-    auto over = [&] { return r.state() == jobs::CircleRunner::State::Finished || r.state() == jobs::CircleRunner::State::Stopped; };
+    auto over = [&] { return r.state() == dev::jobs::CircleRunner::State::Finished || r.state() == dev::jobs::CircleRunner::State::Stopped; };
     for (int step = 0; step < 5000 && !over(); ++step) {
         const int before = samples;
         s.session.link.host().advance(0.05);
         waitFor([&] { return samples > before || over(); }, 15);
     }
     s.session.link.host().setManualClock(false);
-    ASSERT_EQ(r.state(), jobs::CircleRunner::State::Finished) << (said.empty() ? "" : msg::debugString(said.back()));
+    ASSERT_EQ(r.state(), dev::jobs::CircleRunner::State::Finished) << (said.empty() ? "" : motion::msg::debugString(said.back()));
     ASSERT_EQ(r.runs().size(), 2u);
     for (const auto& run : r.runs())
         EXPECT_GE(run.samplesMm.size(), 24u) << "one sample per 4° bin at most, enough to leave no 30° gap";
@@ -70,15 +70,15 @@ TEST(AccuracyCircle, TelemetrySamplesEveryDegreeOfTheRevolutionOnASpedUpClock)
     t.radiusMm = 10;
     t.feedMmS = 10;
     t.samplesPerRevolution = 360;
-    jobs::CircleRunner r(&s.session.client);
-    msg::Problems problems;
+    dev::jobs::CircleRunner r(&s.session.client);
+    motion::msg::Problems problems;
     ASSERT_TRUE(r.prepare(t, &problems)) << describe(problems);
     QObject::connect(&s.session.client, &dev::Instrument::telemetryReceived, &r,
-                     [&](const proto::TelemetryBatch& b) { jobs::feedCircleBatch(r, s.session.client, b); });
-    ASSERT_FALSE(s.session.call([&](auto cb) { s.session.client.subscribe(jobs::circleChannels(r), 250, [cb](const auto& e, const auto&) { cb(e); }); }));
+                     [&](const dev::proto::TelemetryBatch& b) { dev::jobs::feedCircleBatch(r, s.session.client, b); });
+    ASSERT_FALSE(s.session.call([&](auto cb) { s.session.client.subscribe(dev::jobs::circleChannels(r), 250, [cb](const auto& e, const auto&) { cb(e); }); }));
     ASSERT_TRUE(r.start());
     ASSERT_TRUE(waitFor([&] { return !r.isActive(); }, 30000));
-    ASSERT_EQ(r.state(), jobs::CircleRunner::State::Finished);
+    ASSERT_EQ(r.state(), dev::jobs::CircleRunner::State::Finished);
     ASSERT_EQ(r.runs().size(), 2u);
     for (const auto& run : r.runs())
         EXPECT_EQ(run.samplesMm.size(), 360u) << "a sample in every degree";
@@ -96,11 +96,11 @@ TEST(AccuracyCircle, AMotionDoneLostOnTheWayToTheStartIsMadeGoodByTheStatus)
     t.centreMm = {50, 50};
     t.radiusMm = 10;
     t.feedMmS = 10;
-    jobs::CircleRunner r(&s.session.client);
-    msg::Problems problems;
+    dev::jobs::CircleRunner r(&s.session.client);
+    motion::msg::Problems problems;
     ASSERT_TRUE(r.prepare(t, &problems)) << describe(problems);
     int samples = 0;
-    QObject::connect(&r, &jobs::CircleRunner::sampled, [&] { ++samples; });
+    QObject::connect(&r, &dev::jobs::CircleRunner::sampled, [&] { ++samples; });
     int dropped = 0;
     loseFirstMotionDone(s.session, s.session.axis('Y'), dropped);
     ASSERT_TRUE(r.start());

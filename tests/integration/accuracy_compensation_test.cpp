@@ -16,23 +16,23 @@
 #include <gtest/gtest.h>
 
 using namespace itest;
-using jobs::AccuracyRunner;
+using dev::jobs::AccuracyRunner;
 
 namespace {
 
 /// Five targets over 10–90 mm, three cycles both ways: what CI can afford.
-accuracyfiles::AccuracyTest stageTest()
+dev::files::accuracy::AccuracyTest stageTest()
 {
     auto t = smallTest({10, 30, 50, 70, 90}, 3);
     std::get<motion::metrology::AxisTest>(t).name = "stage-x";
     return t;
 }
 
-motion::metrology::Evaluation runTest(AccuracyStage& s, jobs::ReadingSource& source, const QString& folder,
-                                      const accuracyfiles::AccuracyTest& test = stageTest(), int timeoutMs = 120000)
+motion::metrology::Evaluation runTest(AccuracyStage& s, dev::jobs::ReadingSource& source, const QString& folder,
+                                      const dev::files::accuracy::AccuracyTest& test = stageTest(), int timeoutMs = 120000)
 {
     AccuracyRunner r(&s.session.client);
-    msg::Problems problems;
+    motion::msg::Problems problems;
     EXPECT_TRUE(r.prepare(test, &source, folder, false, &problems)) << describe(problems);
     EXPECT_TRUE(r.start());
     EXPECT_TRUE(waitRunner(r, AccuracyRunner::State::Finished, timeoutMs)) << AccuracyRunner::stateName(r.state());
@@ -48,7 +48,7 @@ bool call(const std::function<void(dev::Instrument::Callback)>& send)
         done = true;
     });
     waitFor([&] { return done; }, 10000);
-    EXPECT_FALSE(error) << (error ? msg::debugString(error->message) : "");
+    EXPECT_FALSE(error) << (error ? motion::msg::debugString(error->message) : "");
     return done && !error;
 }
 
@@ -57,9 +57,9 @@ TEST(AccuracyCompensation, TheGaugeSeesWhatTheGratingCannotAndCompensationCutsAF
     AccuracyStage s;
     ASSERT_TRUE(s.ready());
     dev::SimulatedGauge gauge(s.session.link.machine(), 0);
-    jobs::GaugeSource gaugeSource(gauge.hostEnd(), QStringLiteral("simulated gauge"));
+    dev::jobs::GaugeSource gaugeSource(gauge.hostEnd(), QStringLiteral("simulated gauge"));
     ASSERT_TRUE(openSource(gaugeSource));
-    jobs::ReadbackSource grating(&s.session.client);
+    dev::jobs::ReadbackSource grating(&s.session.client);
 
     const auto before = runTest(s, gaugeSource, QDir(s.dir.path()).filePath(QStringLiteral("gauge-before")));
     ASSERT_TRUE(before.ok());
@@ -71,7 +71,7 @@ TEST(AccuracyCompensation, TheGaugeSeesWhatTheGratingCannotAndCompensationCutsAF
     EXPECT_LT(aGrating, aBefore / 10) << "the grating reads the loop's own target, whatever the work point does";
 
     // Fit the gauge's mean deviations (seed 002's method), upload, enable.
-    const auto points = accuracyfiles::fitPointsOf(before);
+    const auto points = dev::files::accuracy::fitPointsOf(before);
     const auto fit = motion::metrology::fitPolynomials(points);
     ASSERT_TRUE(fit.chosen());
     const auto model = motion::metrology::polynomialModel("X", fit.chosen()->polynomial, 10, 90, motion::metrology::backlashUmFrom(before));
@@ -107,7 +107,7 @@ TEST(AccuracyLong, AFullSizeIsoTestOfTheStageBeforeAndAfter)
     AccuracyStage s;
     ASSERT_TRUE(s.ready(50));
     dev::SimulatedGauge gauge(s.session.link.machine(), 0);
-    jobs::GaugeSource source(gauge.hostEnd(), QStringLiteral("simulated gauge"));
+    dev::jobs::GaugeSource source(gauge.hostEnd(), QStringLiteral("simulated gauge"));
     ASSERT_TRUE(openSource(source));
     motion::metrology::AxisTest t;
     t.name = "stage-x-full";
@@ -119,7 +119,7 @@ TEST(AccuracyLong, AFullSizeIsoTestOfTheStageBeforeAndAfter)
     t.settle = {1.0, 0.1, 2.0};
     const auto before = runTest(s, source, QDir(s.dir.path()).filePath(QStringLiteral("before")), t, 900000);
     ASSERT_TRUE(before.ok());
-    const auto fit = motion::metrology::fitPolynomials(accuracyfiles::fitPointsOf(before));
+    const auto fit = motion::metrology::fitPolynomials(dev::files::accuracy::fitPointsOf(before));
     ASSERT_TRUE(fit.chosen());
     dev::CompensationClient* comp = s.session.client.compensation();
     ASSERT_TRUE(call([&](auto cb) {
@@ -155,7 +155,7 @@ TEST(AccuracyCompensation, TheDeviceKeepsItAcrossAReconnect)
         done = true;
     }, [&](int sent, int) { lastProgress = sent; });
     ASSERT_TRUE(waitFor([&] { return done; }, 10000));
-    ASSERT_FALSE(error) << msg::debugString(error->message);
+    ASSERT_FALSE(error) << motion::msg::debugString(error->message);
     EXPECT_EQ(lastProgress, 101);
     ASSERT_TRUE(call([&](auto cb) { comp->setEnabled(1, true, false, cb); }));
     // A new session: the client disconnects and connects again (a new HELLO).

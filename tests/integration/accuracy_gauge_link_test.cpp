@@ -14,9 +14,9 @@ namespace {
 struct GaugeBench {
     GaugeBench()
     {
-        sim::GaugeConfig c;
+        dev::sim::GaugeConfig c;
         c.noiseMm = 0;
-        auto g = std::make_unique<sim::SimGauge>([this] { return position; }, c);
+        auto g = std::make_unique<dev::sim::SimGauge>([this] { return position; }, c);
         gauge = g.get();
         host = std::make_unique<dev::SimulatorHost>(std::move(g), pair.end(dev::LoopbackPair::B));
         host->setManualClock(true);
@@ -26,12 +26,12 @@ struct GaugeBench {
     struct Result {
         bool done = false;
         std::optional<double> value;
-        msg::Message problem;
+        motion::msg::Message problem;
     };
     Result read()
     {
         Result r;
-        link.read([&r](std::optional<double> v, const msg::Message& p) {
+        link.read([&r](std::optional<double> v, const motion::msg::Message& p) {
             r.done = true;
             r.value = v;
             r.problem = p;
@@ -41,7 +41,7 @@ struct GaugeBench {
     }
     double position = 12.3456;
     dev::LoopbackPair pair{0};
-    sim::SimGauge* gauge = nullptr;
+    dev::sim::SimGauge* gauge = nullptr;
     std::unique_ptr<dev::SimulatorHost> host;
     dev::GaugeLink link{pair.end(dev::LoopbackPair::A), QStringLiteral("/dev/ttyGAUGE")};
 };
@@ -49,8 +49,8 @@ struct GaugeBench {
 bool open(dev::GaugeLink& link)
 {
     bool done = false;
-    msg::Message problem;
-    link.open([&](const msg::Message& p) {
+    motion::msg::Message problem;
+    link.open([&](const motion::msg::Message& p) {
         problem = p;
         done = true;
     });
@@ -64,7 +64,7 @@ TEST(AccuracyGaugeLink, ReadsOneValueARequest)
     ASSERT_TRUE(open(b.link));
     auto r = b.read();
     ASSERT_TRUE(r.done);
-    ASSERT_TRUE(r.value) << msg::debugString(r.problem);
+    ASSERT_TRUE(r.value) << motion::msg::debugString(r.problem);
     EXPECT_DOUBLE_EQ(*r.value, 12.3456);
     b.position = -0.25;
     r = b.read();
@@ -76,7 +76,7 @@ TEST(AccuracyGaugeLink, GarbageIsReportedWithThePortAndWhatWasSent)
 {
     GaugeBench b;
     ASSERT_TRUE(open(b.link));
-    b.gauge->setFault(sim::SimGauge::Fault::Garbage);
+    b.gauge->setFault(dev::sim::SimGauge::Fault::Garbage);
     const auto r = b.read();
     ASSERT_TRUE(r.done);
     EXPECT_FALSE(r.value);
@@ -89,7 +89,7 @@ TEST(AccuracyGaugeLink, ASilentGaugeIsAskedTwiceThenReported)
 {
     GaugeBench b;
     ASSERT_TRUE(open(b.link));
-    b.gauge->setFault(sim::SimGauge::Fault::Silent);
+    b.gauge->setFault(dev::sim::SimGauge::Fault::Silent);
     const auto r = b.read();
     ASSERT_TRUE(r.done);
     EXPECT_EQ(r.problem.id, "gauge.no_answer");
@@ -107,10 +107,10 @@ TEST(AccuracyGaugeLink, ALineWithoutItsEndAndUnaskedLinesAreNotReadings)
     auto r = b.read();
     EXPECT_DOUBLE_EQ(r.value.value_or(0), 12.3456) << "the answer to the request, not the stale line";
     // ...and bytes that never end their line are what the gauge said when time is up.
-    b.gauge->setFault(sim::SimGauge::Fault::Silent);
+    b.gauge->setFault(dev::sim::SimGauge::Fault::Silent);
     bool done = false;
-    msg::Message problem;
-    b.link.read([&](std::optional<double>, const msg::Message& p) {
+    motion::msg::Message problem;
+    b.link.read([&](std::optional<double>, const motion::msg::Message& p) {
         problem = p;
         done = true;
     });

@@ -14,7 +14,7 @@
 #include <gtest/gtest.h>
 
 using namespace itest;
-using jobs::AccuracyRunner;
+using dev::jobs::AccuracyRunner;
 
 namespace {
 
@@ -22,9 +22,9 @@ TEST(AccuracyRunner, RunsTheStandardLinearCycleAndWritesItsResults)
 {
     AccuracyStage s;
     ASSERT_TRUE(s.ready());
-    jobs::ReadbackSource source(&s.session.client);
+    dev::jobs::ReadbackSource source(&s.session.client);
     AccuracyRunner r(&s.session.client);
-    msg::Problems problems;
+    motion::msg::Problems problems;
     const auto test = smallTest();
     ASSERT_TRUE(r.prepare(test, &source, s.dir.path(), false, &problems)) << describe(problems);
     EXPECT_EQ(r.totalReadings(), 3 * 2 * 2);
@@ -48,11 +48,11 @@ TEST(AccuracyRunner, RunsTheStandardLinearCycleAndWritesItsResults)
     EXPECT_LT(*eval.figures.aMm, 0.003) << "the grating reads the loop's own target";
     // The results beside the log, readable by the file readers.
     ASSERT_TRUE(QFileInfo::exists(r.basePath() + QStringLiteral(".readings.csv")));
-    const auto back = accuracyfiles::loadReadingsCsv(r.basePath() + QStringLiteral(".readings.csv"));
+    const auto back = dev::files::accuracy::loadReadingsCsv(r.basePath() + QStringLiteral(".readings.csv"));
     ASSERT_TRUE(back.ok());
     EXPECT_EQ(back.readings.size(), 12u);
-    const auto result = accuracyfiles::loadAccuracyResultFile(r.basePath() + QStringLiteral(".accuracy-result.json"));
-    ASSERT_TRUE(result.result) << msg::debugFormat(result.problems);
+    const auto result = dev::files::accuracy::loadAccuracyResultFile(r.basePath() + QStringLiteral(".accuracy-result.json"));
+    ASSERT_TRUE(result.result) << motion::msg::debugFormat(result.problems);
     EXPECT_EQ(result.result->reference, "readback");
 }
 
@@ -60,9 +60,9 @@ TEST(AccuracyRunner, AnAbortAndAPulledCableContinueAtTheNextReadingNeverReadingA
 {
     AccuracyStage s;
     ASSERT_TRUE(s.ready());
-    jobs::ReadbackSource source(&s.session.client);
+    dev::jobs::ReadbackSource source(&s.session.client);
     auto r = std::make_unique<AccuracyRunner>(&s.session.client);
-    msg::Problems problems;
+    motion::msg::Problems problems;
     ASSERT_TRUE(r->prepare(smallTest(), &source, s.dir.path(), false, &problems)) << describe(problems);
     ASSERT_TRUE(r->start());
     ASSERT_TRUE(waitFor([&] { return r->readingsTaken() >= 3; }, 30000));
@@ -75,7 +75,7 @@ TEST(AccuracyRunner, AnAbortAndAPulledCableContinueAtTheNextReadingNeverReadingA
     // The cable comes out with a MOVE on the wire.
     bool pulled = false;
     s.session.tap.afterWrite = [&](const QByteArray& bytes) {
-        if (!pulled && containsFrame(bytes, proto::MsgType::Move)) {
+        if (!pulled && containsFrame(bytes, dev::proto::MsgType::Move)) {
             pulled = true;
             QTimer::singleShot(0, [&] { s.session.link.pair().unplug(); });
         }
@@ -95,8 +95,8 @@ TEST(AccuracyRunner, AnAbortAndAPulledCableContinueAtTheNextReadingNeverReadingA
     // The log has each stop once, in order: the parser refuses anything else.
     std::string text;
     QString error;
-    ASSERT_TRUE(files::readText(r->logPath(), &text, &error));
-    const auto log = accuracyfiles::parseRunLog(text);
+    ASSERT_TRUE(dev::files::readText(r->logPath(), &text, &error));
+    const auto log = dev::files::accuracy::parseRunLog(text);
     ASSERT_TRUE(log.log);
     EXPECT_EQ(log.log->entries.size(), 12u);
     EXPECT_TRUE(r->evaluation().ok()) << "every target and direction read exactly once per cycle";
@@ -106,9 +106,9 @@ TEST(AccuracyRunner, AMotionDoneLostOnTheLineIsMadeGoodByTheStatus)
 {
     AccuracyStage s;
     ASSERT_TRUE(s.ready());
-    jobs::ReadbackSource source(&s.session.client);
+    dev::jobs::ReadbackSource source(&s.session.client);
     AccuracyRunner r(&s.session.client);
-    msg::Problems problems;
+    motion::msg::Problems problems;
     ASSERT_TRUE(r.prepare(smallTest({20, 40}, 2), &source, s.dir.path(), false, &problems)) << describe(problems);
     int dropped = 0;
     loseFirstMotionDone(s.session, s.session.axis('X'), dropped);
@@ -123,17 +123,17 @@ TEST(AccuracyRunner, AGaugeThatAnswersGarbageStopsTheRunNamingItsPortAndWhatItSe
     AccuracyStage s;
     ASSERT_TRUE(s.ready());
     dev::SimulatedGauge gauge(s.session.link.machine(), 0);
-    jobs::GaugeSource source(gauge.hostEnd(), QStringLiteral("simulated gauge"));
+    dev::jobs::GaugeSource source(gauge.hostEnd(), QStringLiteral("simulated gauge"));
     source.link().setTimeoutMs(200);
     ASSERT_TRUE(openSource(source));
     AccuracyRunner r(&s.session.client);
-    msg::Problems problems;
+    motion::msg::Problems problems;
     ASSERT_TRUE(r.prepare(smallTest(), &source, s.dir.path(), false, &problems)) << describe(problems);
-    std::vector<msg::Message> said;
-    QObject::connect(&r, &AccuracyRunner::problem, [&](const msg::Message& m) { said.push_back(m); });
+    std::vector<motion::msg::Message> said;
+    QObject::connect(&r, &AccuracyRunner::problem, [&](const motion::msg::Message& m) { said.push_back(m); });
     ASSERT_TRUE(r.start());
     ASSERT_TRUE(waitFor([&] { return r.readingsTaken() >= 2; }, 30000));
-    gauge.gauge().setFault(sim::SimGauge::Fault::Garbage);
+    gauge.gauge().setFault(dev::sim::SimGauge::Fault::Garbage);
     ASSERT_TRUE(waitRunner(r, AccuracyRunner::State::Stopped, 30000));
     ASSERT_FALSE(said.empty());
     EXPECT_EQ(said.back().id, "gauge.not_a_reading");
@@ -141,12 +141,12 @@ TEST(AccuracyRunner, AGaugeThatAnswersGarbageStopsTheRunNamingItsPortAndWhatItSe
     EXPECT_EQ(said.back().text("text"), "Err 7");
     const int taken = r.readingsTaken();
     // Nothing was logged for the stop the gauge garbled; once it answers, the same stop is read.
-    gauge.gauge().setFault(sim::SimGauge::Fault::Silent);
+    gauge.gauge().setFault(dev::sim::SimGauge::Fault::Silent);
     ASSERT_TRUE(r.start());
     ASSERT_TRUE(waitRunner(r, AccuracyRunner::State::Stopped, 30000));
     EXPECT_EQ(said.back().id, "gauge.no_answer");
     EXPECT_EQ(r.readingsTaken(), taken);
-    gauge.gauge().setFault(sim::SimGauge::Fault::None);
+    gauge.gauge().setFault(dev::sim::SimGauge::Fault::None);
     ASSERT_TRUE(r.start());
     ASSERT_TRUE(waitRunner(r, AccuracyRunner::State::Finished));
     EXPECT_EQ(r.readingsTaken(), 12);
@@ -156,17 +156,17 @@ TEST(AccuracyRunner, TargetsOutsideTheSoftLimitsAreRefusedBeforeAnythingMoves)
 {
     AccuracyStage s;
     ASSERT_TRUE(s.ready());
-    jobs::ReadbackSource source(&s.session.client);
+    dev::jobs::ReadbackSource source(&s.session.client);
     AccuracyRunner r(&s.session.client);
     auto test = smallTest();
-    auto firstError = [](const msg::Problems& ps) {
+    auto firstError = [](const motion::msg::Problems& ps) {
         for (const auto& p : ps)
             if (p.isError())
                 return p;
-        return msg::Problem{};
+        return motion::msg::Problem{};
     };
     std::get<motion::metrology::AxisTest>(test).targetsMm = {20, 60, 99.8};  // the overrun goes to 100.3
-    msg::Problems problems;
+    motion::msg::Problems problems;
     EXPECT_FALSE(r.prepare(test, &source, s.dir.path(), false, &problems));
     EXPECT_EQ(firstError(problems).message.id, "accuracy.overrun_above_limit") << describe(problems);
     EXPECT_EQ(firstError(problems).path, "overrun_mm");

@@ -15,7 +15,7 @@ namespace itest {
 
 /// The simulated stage, connected, homed, its clock `timeScale` times the wall's.
 struct AccuracyStage {
-    AccuracyStage() : session(proto::DeviceKind::Stage, kUnpaced) {}
+    AccuracyStage() : session(dev::proto::DeviceKind::Stage, kUnpaced) {}
     bool ready(double timeScale = 25)
     {
         if (!session.connect() || !session.homeAll())
@@ -28,7 +28,7 @@ struct AccuracyStage {
 };
 
 /// X at 20, 40 and 60 mm, two cycles both ways: twelve readings, a few device seconds each.
-inline accuracyfiles::AccuracyTest smallTest(std::vector<double> targets = {20, 40, 60}, int cycles = 2)
+inline dev::files::accuracy::AccuracyTest smallTest(std::vector<double> targets = {20, 40, 60}, int cycles = 2)
 {
     motion::metrology::AxisTest t;
     t.name = "small";
@@ -42,38 +42,38 @@ inline accuracyfiles::AccuracyTest smallTest(std::vector<double> targets = {20, 
     return t;
 }
 
-inline bool waitRunner(jobs::AccuracyRunner& r, jobs::AccuracyRunner::State s, int ms = 60000)
+inline bool waitRunner(dev::jobs::AccuracyRunner& r, dev::jobs::AccuracyRunner::State s, int ms = 60000)
 {
     return waitFor([&] { return r.state() == s; }, ms);
 }
 
-inline std::string describe(const msg::Problems& problems)
+inline std::string describe(const motion::msg::Problems& problems)
 {
     std::ostringstream o;
     for (const auto& p : problems)
-        o << p.path << ": " << msg::debugString(p.message) << "\n";
+        o << p.path << ": " << motion::msg::debugString(p.message) << "\n";
     return o.str();
 }
 
 /// From now on the first MotionDone of `axis` is lost on the line; `dropped` counts it.
 inline void loseFirstMotionDone(SimSession& s, int axis, int& dropped)
 {
-    s.tap.dropReceived = [axis, &dropped](const proto::Frame& f) {
-        if (dropped > 0 || f.type != static_cast<std::uint8_t>(proto::MsgType::Event))
+    s.tap.dropReceived = [axis, &dropped](const dev::proto::Frame& f) {
+        if (dropped > 0 || f.type != static_cast<std::uint8_t>(dev::proto::MsgType::Event))
             return false;
-        const auto e = proto::decodeEvent(f.payload);
-        if (!e || e->kind != proto::EventKind::MotionDone || e->axis != axis)
+        const auto e = dev::proto::decodeEvent(f.payload);
+        if (!e || e->kind != dev::proto::EventKind::MotionDone || e->axis != axis)
             return false;
         ++dropped;
         return true;
     };
 }
 
-inline bool openSource(jobs::ReadingSource& source)
+inline bool openSource(dev::jobs::ReadingSource& source)
 {
     bool done = false;
-    msg::Message problem;
-    source.open([&](const msg::Message& p) {
+    motion::msg::Message problem;
+    source.open([&](const motion::msg::Message& p) {
         problem = p;
         done = true;
     });

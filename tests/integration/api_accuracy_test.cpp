@@ -46,13 +46,13 @@ TEST(ApiAccuracy, ManualReadingsAndTheClisOwnSimulatorAreRefusedWithTheReason)
     QJsonObject p = base;
     p.insert(QStringLiteral("source"), QStringLiteral("manual"));
     QJsonObject a = c.call(QStringLiteral("accuracy.run"), p);
-    EXPECT_EQ(ApiTestClient::errorCode(a), api::code::kInvalidParams);
+    EXPECT_EQ(ApiTestClient::errorCode(a), app::api::code::kInvalidParams);
     EXPECT_TRUE(ApiTestClient::errorMessage(a).contains(QStringLiteral("Calibration screen"))) << ApiTestClient::errorMessage(a).toStdString();
 
     p = base;
     p.insert(QStringLiteral("source"), QStringLiteral("gauge:sim"));
     a = c.call(QStringLiteral("accuracy.run"), p);
-    EXPECT_EQ(ApiTestClient::errorCode(a), api::code::kInvalidParams);
+    EXPECT_EQ(ApiTestClient::errorCode(a), app::api::code::kInvalidParams);
     EXPECT_TRUE(ApiTestClient::errorMessage(a).contains(QStringLiteral("Calibration screen"))) << ApiTestClient::errorMessage(a).toStdString();
 
     for (const char* method : {"accuracy.run", "accuracy.circle"}) {
@@ -60,7 +60,7 @@ TEST(ApiAccuracy, ManualReadingsAndTheClisOwnSimulatorAreRefusedWithTheReason)
                                                                         : QJsonObject{{QStringLiteral("radius"), 2}, {QStringLiteral("lease"), token}};
         p.insert(QStringLiteral("time_scale"), 20);
         a = c.call(QString::fromLatin1(method), p);
-        EXPECT_EQ(ApiTestClient::errorCode(a), api::code::kInvalidParams) << method;
+        EXPECT_EQ(ApiTestClient::errorCode(a), app::api::code::kInvalidParams) << method;
         EXPECT_EQ(a.value(QStringLiteral("error")).toObject().value(QStringLiteral("data")).toObject().value(QStringLiteral("field")).toString(),
                   QStringLiteral("time_scale"))
             << method << ": the GUI's simulator keeps its pace";

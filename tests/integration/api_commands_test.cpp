@@ -22,7 +22,7 @@ TEST(ApiCommands, EveryOfferedCommandIsAMethodAndDiscoverListsItWithItsParameter
     QStringList listed;
     for (const QJsonValue& m : doc.value(QStringLiteral("methods")).toArray())
         listed << m.toObject().value(QStringLiteral("name")).toString();
-    for (const auto& m : api::commandMethods())
+    for (const auto& m : app::api::commandMethods())
         EXPECT_TRUE(listed.contains(m.method)) << m.method.toStdString();
     for (const char* builtin : {"rpc.discover", "control.acquire", "control.release", "control.heartbeat", "subscribe", "cli.run"})
         EXPECT_TRUE(listed.contains(QString::fromLatin1(builtin))) << builtin;
@@ -99,7 +99,7 @@ TEST(ApiCommands, ARecipeThatDoesNotValidateIsInvalidParamsWithEveryProblem)
     bad.close();
     const QJsonObject a = c.call(QStringLiteral("recipe.plan"), QJsonObject{{QStringLiteral("file"), bad.fileName()},
                                                                            {QStringLiteral("calibration"), QStringLiteral("none")}});
-    EXPECT_EQ(ApiTestClient::errorCode(a), api::code::kInvalidParams);
+    EXPECT_EQ(ApiTestClient::errorCode(a), app::api::code::kInvalidParams);
     EXPECT_FALSE(ApiTestClient::errorMessage(a).isEmpty());
 }
 
@@ -108,12 +108,12 @@ TEST(ApiCommands, WithBothInstrumentsConnectedTheCallMustSayWhich)
     ApiFixture f(true);
     ApiTestClient c(f.path);
     QJsonObject a = c.call(QStringLiteral("device.status"));
-    EXPECT_EQ(ApiTestClient::errorCode(a), api::code::kInvalidParams);
+    EXPECT_EQ(ApiTestClient::errorCode(a), app::api::code::kInvalidParams);
     EXPECT_TRUE(ApiTestClient::errorMessage(a).contains(QStringLiteral("instrument analyzer|stage"))) << ApiTestClient::errorMessage(a).toStdString();
     a = c.call(QStringLiteral("device.status"), QJsonObject{{QStringLiteral("instrument"), QStringLiteral("analyzer")}});
     EXPECT_EQ(ApiTestClient::result(a).value(QStringLiteral("instrument")).toString(), QStringLiteral("analyzer"));
     a = c.call(QStringLiteral("device.status"), QJsonObject{{QStringLiteral("instrument"), QStringLiteral("laser")}});
-    EXPECT_EQ(ApiTestClient::errorCode(a), api::code::kInvalidParams);
+    EXPECT_EQ(ApiTestClient::errorCode(a), app::api::code::kInvalidParams);
 }
 
 TEST(ApiCommands, AWaitingCallLetsTheServerAnswerOthersMeanwhile)

@@ -43,13 +43,13 @@ TEST(ApiControl, ChangingNeedsTheLeaseReadingDoesNot)
     ApiFixture f(false);
     ApiTestClient c(f.path);
     QJsonObject a = c.call(QStringLiteral("device.jog"), QJsonObject{{QStringLiteral("axis"), QStringLiteral("X")}, {QStringLiteral("velocity"), 1}});
-    EXPECT_EQ(ApiTestClient::errorCode(a), api::code::kNotInControl);
+    EXPECT_EQ(ApiTestClient::errorCode(a), app::api::code::kNotInControl);
     EXPECT_TRUE(ApiTestClient::errorMessage(a).contains(QStringLiteral("control.acquire")));
     EXPECT_FALSE(f.stage.proxy.isJogging(0));
     EXPECT_TRUE(c.call(QStringLiteral("device.status")).contains(QStringLiteral("result")));
     EXPECT_TRUE(c.call(QStringLiteral("device.limits")).contains(QStringLiteral("result"))) << "showing the limits reads";
     a = c.call(QStringLiteral("device.limits"), QJsonObject{{QStringLiteral("limits"), QJsonObject{{QStringLiteral("X"), QJsonArray{5, 95}}}}});
-    EXPECT_EQ(ApiTestClient::errorCode(a), api::code::kNotInControl) << "setting them changes";
+    EXPECT_EQ(ApiTestClient::errorCode(a), app::api::code::kNotInControl) << "setting them changes";
 }
 
 TEST(ApiControl, OneHolderAtATimeAndAStaleLeaseIsRefused)
@@ -59,15 +59,15 @@ TEST(ApiControl, OneHolderAtATimeAndAStaleLeaseIsRefused)
     const QString lease = acquire(first, "first");
     ASSERT_FALSE(lease.isEmpty());
     const QJsonObject refused = second.call(QStringLiteral("control.acquire"), QJsonObject{{QStringLiteral("client"), QStringLiteral("second")}});
-    EXPECT_EQ(ApiTestClient::errorCode(refused), api::code::kNotInControl);
+    EXPECT_EQ(ApiTestClient::errorCode(refused), app::api::code::kNotInControl);
     EXPECT_TRUE(ApiTestClient::errorMessage(refused).contains(QStringLiteral("first"))) << "names who has it";
     // The lease is the first client's: the second cannot use it.
     const QJsonObject stolen = second.call(QStringLiteral("device.jog"), jogParams(lease, 1));
-    EXPECT_EQ(ApiTestClient::errorCode(stolen), api::code::kNotInControl);
+    EXPECT_EQ(ApiTestClient::errorCode(stolen), app::api::code::kNotInControl);
     EXPECT_TRUE(first.call(QStringLiteral("control.release"), QJsonObject{{QStringLiteral("lease"), lease}}).contains(QStringLiteral("result")));
     EXPECT_FALSE(acquire(second, "second").isEmpty());
     const QJsonObject old = first.call(QStringLiteral("device.jog"), jogParams(lease, 1));
-    EXPECT_EQ(ApiTestClient::errorCode(old), api::code::kNotInControl) << "a released lease is dead";
+    EXPECT_EQ(ApiTestClient::errorCode(old), app::api::code::kNotInControl) << "a released lease is dead";
 }
 
 TEST(ApiControl, TakeBackStopsTheScriptsJogAtOnceAndItsNextCallIsRefused)
@@ -86,7 +86,7 @@ TEST(ApiControl, TakeBackStopsTheScriptsJogAtOnceAndItsNextCallIsRefused)
     const QJsonObject lost = script.waitNotification(QStringLiteral("control.lost"));
     EXPECT_EQ(lost.value(QStringLiteral("reason")).toString(), QStringLiteral("taken_back"));
     const QJsonObject next = script.call(QStringLiteral("device.jog"), jogParams(lease, 2));
-    EXPECT_EQ(ApiTestClient::errorCode(next), api::code::kNotInControl);
+    EXPECT_EQ(ApiTestClient::errorCode(next), app::api::code::kNotInControl);
     EXPECT_NE(restTimeUs(f, 5000), 0u);
     bool logged = false;
     for (const auto& e : f.server->journal().entries())
@@ -147,9 +147,9 @@ TEST(ApiControl, AClosedConnectionEndsTheLeaseAtOnceEvenDuringItsCall)
     ApiFixture f(false);
     auto script = std::make_unique<ApiTestClient>(f.path);
     const QString lease = acquire(*script, "doomed mid-call");
-    std::optional<api::ControlLease::EndReason> why;
-    QObject::connect(&f.server->lease(), &api::ControlLease::ended, &f.server->lease(),
-                     [&why](const api::ControlLease::Holder&, api::ControlLease::EndReason r) { why = r; });
+    std::optional<app::api::ControlLease::EndReason> why;
+    QObject::connect(&f.server->lease(), &app::api::ControlLease::ended, &f.server->lease(),
+                     [&why](const app::api::ControlLease::Holder&, app::api::ControlLease::EndReason r) { why = r; });
     script->send(QStringLiteral("device.jog"),
                  QJsonObject{{QStringLiteral("axis"), QStringLiteral("X")}, {QStringLiteral("velocity"), 2},
                              {QStringLiteral("seconds"), 60}, {QStringLiteral("lease"), lease}},
@@ -157,7 +157,7 @@ TEST(ApiControl, AClosedConnectionEndsTheLeaseAtOnceEvenDuringItsCall)
     ASSERT_TRUE(itest::waitFor([&] { return f.stage.proxy.status().axes.value(0).moving; }, 5000));
     script->socket.abort();
     ASSERT_TRUE(itest::waitFor([&] { return why.has_value(); }, 5000));
-    EXPECT_EQ(*why, api::ControlLease::EndReason::ConnectionClosed) << "not left to a heartbeat timeout";
+    EXPECT_EQ(*why, app::api::ControlLease::EndReason::ConnectionClosed) << "not left to a heartbeat timeout";
     EXPECT_NE(restTimeUs(f, 5000), 0u) << "its jog stops with the lease, long before its 60 s";
 }
 
@@ -178,7 +178,7 @@ TEST(ApiControl, EStopFromAnotherClientLatchesAtOnceWhileTheFirstHoldsTheLease)
     const QJsonObject refused = holder.call(QStringLiteral("device.jog"),
                                             QJsonObject{{QStringLiteral("axis"), QStringLiteral("X")}, {QStringLiteral("velocity"), 1},
                                                         {QStringLiteral("seconds"), 0.2}, {QStringLiteral("lease"), lease}});
-    EXPECT_EQ(ApiTestClient::errorCode(refused), api::code::kEStopLatched) << QJsonDocument(refused).toJson().toStdString();
+    EXPECT_EQ(ApiTestClient::errorCode(refused), app::api::code::kEStopLatched) << QJsonDocument(refused).toJson().toStdString();
 }
 
 TEST(ApiControl, AttachedCliRunTakesAFreeLeaseForOneCallAndIsRefusedWhileAScriptHoldsIt)

@@ -64,9 +64,9 @@ QString shape(const QJsonValue& v)
     }
 }
 
-QString typeText(cli::ParamType t)
+QString typeText(app::cli::ParamType t)
 {
-    using T = cli::ParamType;
+    using T = app::cli::ParamType;
     switch (t) {
     case T::Text: return QStringLiteral("string");
     case T::Number: return QStringLiteral("number");
@@ -111,26 +111,26 @@ QVector<Section> generate()
     beat.start(100);
 
     QVector<Section> out;
-    for (const api::CommandMethod& m : api::commandMethods()) {
-        const cli::ApiSpec& spec = m.command->api;
+    for (const app::api::CommandMethod& m : app::api::commandMethods()) {
+        const app::cli::ApiSpec& spec = m.command->api;
         Section s;
         s.method = m.method;
         QString h = QStringLiteral("### `%1`\n\n%2 — `benchpilot-cli %3` · %4\n\n")
-                        .arg(m.method, m.command->summary, m.path, api::accessName(spec.access, spec.readsWithoutArguments));
+                        .arg(m.method, m.command->summary, m.path, app::api::accessName(spec.access, spec.readsWithoutArguments));
         if (!m.command->description.isEmpty())
-            h += api::apiWording(m, m.command->description) + QStringLiteral("\n\n");
+            h += app::api::apiWording(m, m.command->description) + QStringLiteral("\n\n");
         h += QStringLiteral("| param | type | | description |\n|---|---|---|---|\n");
-        for (const api::MethodParam& p : api::methodParams(m)) {
+        for (const app::api::MethodParam& p : app::api::methodParams(m)) {
             QString type = typeText(p.type);
             if (!p.choices.isEmpty())
                 type = p.choices.join(QStringLiteral(" \\| "));
             QString note = p.required ? QStringLiteral("required") : QString();
             if (!p.defaultValue.isEmpty())
                 note = QStringLiteral("default %1").arg(p.defaultValue);
-            h += QStringLiteral("| `%1` | %2 | %3 | %4 |\n").arg(p.name, type, note, cell(api::apiWording(m, p.description)));
+            h += QStringLiteral("| `%1` | %2 | %3 | %4 |\n").arg(p.name, type, note, cell(app::api::apiWording(m, p.description)));
         }
         QJsonObject params = spec.example;
-        if (spec.access == cli::Access::Control)
+        if (spec.access == app::cli::Access::Control)
             params.insert(QStringLiteral("lease"), QStringLiteral("…"));
         h += QStringLiteral("\n```\n→ %1\n")
                  .arg(QString::fromUtf8(QJsonDocument(QJsonObject{{QStringLiteral("jsonrpc"), QStringLiteral("2.0")}, {QStringLiteral("id"), 1},
@@ -139,14 +139,14 @@ QVector<Section> generate()
         s.head = h;
         f.stage.link.host().setTimeScale(20);
         f.analyzer->link.host().setTimeScale(20);
-        if (spec.access == cli::Access::Control) {
+        if (spec.access == app::cli::Access::Control) {
             // The test's heartbeats share the server's thread: a long computation in an
             // earlier example (a model plant's tuning) can starve them. Take the lease anew.
             lease = ApiTestClient::result(c.call(QStringLiteral("control.acquire"))).value(QStringLiteral("lease")).toString();
             params.insert(QStringLiteral("lease"), lease);
         }
         const bool onStage = m.method.startsWith(QLatin1String("accuracy.")) || m.method.startsWith(QLatin1String("compensation."));
-        if (m.method == QLatin1String("pattern.run") || m.method == QLatin1String("scan.run") || (onStage && spec.access != cli::Access::Compute)) {
+        if (m.method == QLatin1String("pattern.run") || m.method == QLatin1String("scan.run") || (onStage && spec.access != app::cli::Access::Compute)) {
             // Their examples run on a homed stage (the page says so): home it first, quietly.
             c.call(QStringLiteral("device.home"), QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")}, {QStringLiteral("lease"), lease}},
                    120000);
@@ -232,11 +232,11 @@ TEST(ApiDocs, EveryMethodIsOnThePageWithItsParamsAnExampleAndAResponseOfTheRight
 
 TEST(ApiDocs, DiscoverCarriesTheSameExamplesAsThePage)
 {
-    const QJsonObject doc = api::openRpcDocument(api::commandMethods());
+    const QJsonObject doc = app::api::openRpcDocument(app::api::commandMethods());
     int withExample = 0;
     for (const QJsonValue& m : doc.value(QStringLiteral("methods")).toArray())
         withExample += m.toObject().contains(QStringLiteral("examples"));
-    EXPECT_EQ(withExample, api::commandMethods().size()) << "every command method has an example in its ApiSpec";
+    EXPECT_EQ(withExample, app::api::commandMethods().size()) << "every command method has an example in its ApiSpec";
 }
 
 } // namespace

@@ -115,7 +115,7 @@ TEST(ApiHalt, AReadNamingNoInstrumentIsStillAskedWhichAndSaysHow)
     ApiFixture f;
     ApiTestClient c(f.path);
     const QJsonObject a = c.call(QStringLiteral("device.status"));
-    EXPECT_EQ(ApiTestClient::errorCode(a), api::code::kInvalidParams);
+    EXPECT_EQ(ApiTestClient::errorCode(a), app::api::code::kInvalidParams);
     EXPECT_TRUE(ApiTestClient::errorMessage(a).contains(QStringLiteral("instrument analyzer|stage"))) << ApiTestClient::errorMessage(a).toStdString();
     EXPECT_FALSE(ApiTestClient::errorMessage(a).contains(QStringLiteral("--sim"))) << "the API's own word for it";
 }

@@ -1,5 +1,5 @@
 // Where the GUI's API socket is when nobody says (docs/api.md): one rule,
-// cli::defaultApiSocketPath(), for the GUI and benchpilot-cli --attach, and the Python
+// app::cli::defaultApiSocketPath(), for the GUI and benchpilot-cli --attach, and the Python
 // client's default_socket_path() spelling the same rule. The programs are run as a user
 // runs them, with XDG_RUNTIME_DIR set and without it (under sudo, cron or ssh it is
 // often missing): all three must name the same place.
@@ -58,7 +58,7 @@ TEST(ApiSocketPath, ThePythonClientTheCliAndTheGuiAgreeWithAndWithoutXdgRuntimeD
     for (const QString& dir : {unset, runtime.path(), runtime.path() + QLatin1Char('/')}) {
         const QProcessEnvironment env = environment(dir);
         const QString python = pythonsPath(env);
-        const QString gui = cli::apiSocketPathFor(dir, ::getuid());  // what the GUI's own process computes there
+        const QString gui = app::cli::apiSocketPathFor(dir, ::getuid());  // what the GUI's own process computes there
         SCOPED_TRACE(dir.isNull() ? std::string("XDG_RUNTIME_DIR unset") : dir.toStdString());
         EXPECT_EQ(clisPath(env).toStdString(), python.toStdString());
         EXPECT_EQ(gui.toStdString(), python.toStdString());
@@ -72,9 +72,9 @@ TEST(ApiSocketPath, AttachFindsTheGuiAtThePythonClientsDefault)
     // A GUI (the server in this process) at the default path of an XDG_RUNTIME_DIR, and
     // benchpilot-cli --attach with no --api-socket in that environment.
     QTemporaryDir runtime;
-    const QString path = cli::apiSocketPathFor(runtime.path(), ::getuid());
-    itest::ServedSim stage(proto::DeviceKind::Stage);
-    api::ApiServer server({{QStringLiteral("stage"), &stage.proxy, -1}}, nullptr);
+    const QString path = app::cli::apiSocketPathFor(runtime.path(), ::getuid());
+    itest::ServedSim stage(dev::proto::DeviceKind::Stage);
+    app::api::ApiServer server({{QStringLiteral("stage"), &stage.proxy, -1}}, nullptr);
     QString error;
     ASSERT_TRUE(server.listen(path, &error)) << error.toStdString();
     ASSERT_TRUE(itest::waitFor([&] { return stage.proxy.isReady(); }, 10000));

@@ -114,12 +114,12 @@ TEST(ApiSubscriptions, TelemetryComesInBatchesWithChannelsUnitsAndTheDevicesSamp
     EXPECT_EQ(data.value(QStringLiteral("samples")).toArray().at(0).toArray().size(), 2);
     EXPECT_EQ(batch.value(QStringLiteral("seq")).toInteger(), data.value(QStringLiteral("first_sample")).toInteger());
     const QJsonObject bad = c.call(QStringLiteral("subscribe"), QJsonObject{{QStringLiteral("topics"), topic("telemetry", {{QStringLiteral("channels"), QJsonArray{QStringLiteral("Q.measured")}}})}});
-    EXPECT_EQ(ApiTestClient::errorCode(bad), api::code::kInvalidParams);
+    EXPECT_EQ(ApiTestClient::errorCode(bad), app::api::code::kInvalidParams);
     EXPECT_TRUE(ApiTestClient::errorMessage(bad).startsWith(QStringLiteral("topics.telemetry.channels"))) << ApiTestClient::errorMessage(bad).toStdString();
 }
 
 /// A channel whose reader is as far behind as the test says.
-class SlowChannel final : public api::Channel {
+class SlowChannel final : public app::api::Channel {
 public:
     void write(const QByteArray& line) override { lines << line; }
     qint64 pendingBytes() const override { return behindBytes; }
@@ -133,13 +133,13 @@ TEST(ApiSubscriptions, ASlowClientGetsTheLatestValuesNeverAQueue)
 {
     ApiFixture f(false);
     auto* channel = new SlowChannel;
-    api::ApiClient slow(999, channel);
-    api::ParamProblem problem;
+    app::api::ApiClient slow(999, channel);
+    app::api::ParamProblem problem;
     const QJsonObject r = f.server->subscriptions().subscribe(&slow, QJsonObject{{QStringLiteral("topics"), topic("positions", {{QStringLiteral("max_hz"), 1000}})}}, &problem);
     ASSERT_FALSE(r.isEmpty()) << problem.message.toStdString();
     ASSERT_TRUE(itest::waitFor([&] { return channel->lines.size() == 1; }, 5000)) << "the snapshot";
     // Behind: nothing more is written however much changes.
-    channel->behindBytes = 10 * api::ApiClient::kUpdateBackpressureBytes;
+    channel->behindBytes = 10 * app::api::ApiClient::kUpdateBackpressureBytes;
     ApiTestClient mover(f.path);
     const QString lease = acquire(mover);
     mover.call(QStringLiteral("device.jog"), QJsonObject{{QStringLiteral("axis"), QStringLiteral("X")}, {QStringLiteral("velocity"), 2},

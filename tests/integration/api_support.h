@@ -24,7 +24,7 @@ namespace itest {
 
 /// One simulated instrument behind a proxy, as app/gui/instrument_session holds it.
 struct ServedSim {
-    explicit ServedSim(proto::DeviceKind kind, qint32 baud = 115200) : link(kind, baud)
+    explicit ServedSim(dev::proto::DeviceKind kind, qint32 baud = 115200) : link(kind, baud)
     {
         backend = new dev::BenchPilotClient;
         proxy.setBackend(backend);
@@ -44,18 +44,18 @@ class ApiFixture {
 public:
     /// `baud` 0: links without pacing, for a simulator whose clock is sped up.
     explicit ApiFixture(bool withAnalyzer = true, qint32 baud = 115200)
-        : stage(proto::DeviceKind::Stage, baud)
+        : stage(dev::proto::DeviceKind::Stage, baud)
     {
         if (withAnalyzer)
-            analyzer = std::make_unique<ServedSim>(proto::DeviceKind::Analyzer, baud);
-        QVector<api::ServedInstrument> served;
+            analyzer = std::make_unique<ServedSim>(dev::proto::DeviceKind::Analyzer, baud);
+        QVector<app::api::ServedInstrument> served;
         if (analyzer) {
             hub.addInstrument(0, QStringLiteral("Analyzer"), &analyzer->proxy);
             served.push_back({QStringLiteral("analyzer"), &analyzer->proxy, 0});
         }
         hub.addInstrument(1, QStringLiteral("Stage"), &stage.proxy);
         served.push_back({QStringLiteral("stage"), &stage.proxy, 1});
-        server = std::make_unique<api::ApiServer>(served, &hub);
+        server = std::make_unique<app::api::ApiServer>(served, &hub);
         path = dir.filePath(QStringLiteral("api.sock"));
         QString error;
         listening = server->listen(path, &error);
@@ -65,10 +65,10 @@ public:
     ~ApiFixture() { server.reset(); }
 
     QTemporaryDir dir;
-    tele::TelemetryHub hub;
+    dev::tele::TelemetryHub hub;
     std::unique_ptr<ServedSim> analyzer;
     ServedSim stage;
-    std::unique_ptr<api::ApiServer> server;
+    std::unique_ptr<app::api::ApiServer> server;
     QString path;
     bool listening = false;
 };

@@ -69,7 +69,7 @@ TEST(ApiWebSocket, ATokenFileOthersCanReadIsRefused)
     f.close();
     ::chmod(QFile::encodeName(tokenFile).constData(), 0644);
     QString error;
-    EXPECT_TRUE(api::WebSocketEndpoint::loadOrCreateToken(tokenFile, &error).isEmpty());
+    EXPECT_TRUE(app::api::WebSocketEndpoint::loadOrCreateToken(tokenFile, &error).isEmpty());
     EXPECT_TRUE(error.contains(QStringLiteral("chmod 600"))) << error.toStdString();
 }
 

@@ -19,7 +19,7 @@ inline CliResult runCliInProcess(const QStringList& args)
 {
     CliResult r;
     QTextStream out(&r.out), err(&r.err);
-    r.code = cli::runCli(args, out, err);
+    r.code = app::cli::runCli(args, out, err);
     out.flush();
     err.flush();
     return r;

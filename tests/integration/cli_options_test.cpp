@@ -24,7 +24,7 @@ CliRun runCli(const QStringList& args)
 {
     CliRun r;
     QTextStream out(&r.out), err(&r.err);
-    r.code = cli::runCli(args, out, err);
+    r.code = app::cli::runCli(args, out, err);
     out.flush();
     err.flush();
     return r;
@@ -33,7 +33,7 @@ CliRun runCli(const QStringList& args)
 QStringList words(const char* text) { return QString::fromUtf8(text).split(QLatin1Char(' '), Qt::SkipEmptyParts); }
 
 /// Every command path ("move", "recipe validate", …) with its command.
-void allPaths(const std::vector<cli::Command>& list, const QStringList& prefix, std::vector<std::pair<QStringList, const cli::Command*>>& out)
+void allPaths(const std::vector<app::cli::Command>& list, const QStringList& prefix, std::vector<std::pair<QStringList, const app::cli::Command*>>& out)
 {
     for (const auto& c : list) {
         out.push_back({prefix + QStringList{c.name}, &c});
@@ -48,7 +48,7 @@ TEST(CliOptions, TopHelpListsEveryCommandWithOneLine)
     const CliRun r = runCli({QStringLiteral("--help")});
     EXPECT_EQ(r.code, 0);
     EXPECT_TRUE(r.err.isEmpty());
-    for (const auto& c : cli::commands()) {
+    for (const auto& c : app::cli::commands()) {
         ASSERT_FALSE(c.summary.isEmpty()) << c.name.toStdString();
         EXPECT_FALSE(c.summary.contains(QLatin1Char('\n'))) << c.name.toStdString();
         EXPECT_TRUE(r.out.contains(QStringLiteral("  %1  ").arg(c.name))) << c.name.toStdString();
@@ -59,8 +59,8 @@ TEST(CliOptions, TopHelpListsEveryCommandWithOneLine)
 
 TEST(CliOptions, EveryCommandAndSubcommandPrintsItsUsageWithHelp)
 {
-    std::vector<std::pair<QStringList, const cli::Command*>> paths;
-    allPaths(cli::commands(), {}, paths);
+    std::vector<std::pair<QStringList, const app::cli::Command*>> paths;
+    allPaths(app::cli::commands(), {}, paths);
     ASSERT_GE(paths.size(), 15u);
     for (const auto& [path, command] : paths) {
         for (const char* flag : {"--help", "-h"}) {
@@ -203,6 +203,6 @@ TEST(CliOptions, BashCompletionCompletesCommandsSubcommandsAndOptions)
     EXPECT_TRUE(complete(QStringLiteral("benchpilot-cli profile --v")).contains(QStringLiteral("--vmax")));
     EXPECT_TRUE(complete(QStringLiteral("benchpilot-cli --sim stage move --")).contains(QStringLiteral("--relative")));
     EXPECT_EQ(complete(QStringLiteral("benchpilot-cli --sim st")), QStringList{QStringLiteral("stage")});
-    for (const auto& c : cli::commands())
+    for (const auto& c : app::cli::commands())
         EXPECT_TRUE(complete(QStringLiteral("benchpilot-cli ")).contains(c.name)) << c.name.toStdString();
 }

@@ -10,7 +10,7 @@
 #include <cmath>
 
 using namespace itest;
-using K = proto::EventKind;
+using K = dev::proto::EventKind;
 using dev::LinkState;
 using dev::RequestError;
 
@@ -29,18 +29,18 @@ std::string text(const QStringList& l) { return l.join(QStringLiteral(" | ")).to
 /// The device's own refusal inside a client's "ACTION refused: CAUSE": the
 /// device.refused message with its code's term, the axis letter and the
 /// firmware's words ("detail"); empty when the error is not shaped so.
-msg::Message deviceRefusal(const RequestError& e)
+motion::msg::Message deviceRefusal(const RequestError& e)
 {
     if (e.message.id != "request.refused")
         return {};
-    return msg::nested(e.message, "cause");
+    return motion::msg::nested(e.message, "cause");
 }
 
 } // namespace
 
 TEST(ClientOverLoopback, AnalyzerConnectsThroughIdentifiedToReadyWithItsIdentity)
 {
-    SimSession s(proto::DeviceKind::Analyzer);
+    SimSession s(dev::proto::DeviceKind::Analyzer);
     QSignalSpy states(&s.client, &dev::BenchPilotClient::stateChanged);
     QSignalSpy identified(&s.client, &dev::BenchPilotClient::identified);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
@@ -52,19 +52,19 @@ TEST(ClientOverLoopback, AnalyzerConnectsThroughIdentifiedToReadyWithItsIdentity
     EXPECT_EQ(identified.count(), 1);
 
     const auto& id = s.client.identity();
-    EXPECT_EQ(id.kind, proto::DeviceKind::Analyzer);
-    EXPECT_EQ(id.protocolVersion, proto::kProtocolVersion);
+    EXPECT_EQ(id.kind, dev::proto::DeviceKind::Analyzer);
+    EXPECT_EQ(id.protocolVersion, dev::proto::kProtocolVersion);
     EXPECT_FALSE(id.model.isEmpty());
     EXPECT_EQ(letters(id), QStringLiteral("XYZP"));
     EXPECT_EQ(id.jogWatchdogMs, 250);
-    EXPECT_TRUE(id.protocolCapabilities & proto::CapEncoder);
-    EXPECT_TRUE(id.protocolCapabilities & proto::CapPump);
+    EXPECT_TRUE(id.protocolCapabilities & dev::proto::CapEncoder);
+    EXPECT_TRUE(id.protocolCapabilities & dev::proto::CapPump);
     EXPECT_TRUE(s.client.capabilities().testFlag(dev::Capability::MeasuredPosition));
     EXPECT_TRUE(s.client.capabilities().testFlag(dev::Capability::Pump));
     EXPECT_FALSE(s.client.capabilities().testFlag(dev::Capability::PidGains));
     EXPECT_DOUBLE_EQ(id.axes[0].travelMax, 200.0);
     EXPECT_DOUBLE_EQ(id.axes[2].travelMax, 100.0);
-    EXPECT_EQ(id.axes[3].unit, proto::AxisUnit::Microlitre);
+    EXPECT_EQ(id.axes[3].unit, dev::proto::AxisUnit::Microlitre);
     EXPECT_DOUBLE_EQ(id.axes[3].travelMax, 1000.0);
 
     // Ready means limits, a first status and telemetry are in hand. Until homing,
@@ -81,12 +81,12 @@ TEST(ClientOverLoopback, AnalyzerConnectsThroughIdentifiedToReadyWithItsIdentity
 
 TEST(ClientOverLoopback, StageIdentifiesWithGratingAxesXY)
 {
-    SimSession s(proto::DeviceKind::Stage);
+    SimSession s(dev::proto::DeviceKind::Stage);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
     const auto& id = s.client.identity();
-    EXPECT_EQ(id.kind, proto::DeviceKind::Stage);
+    EXPECT_EQ(id.kind, dev::proto::DeviceKind::Stage);
     EXPECT_EQ(letters(id), QStringLiteral("XY"));
-    EXPECT_TRUE(id.protocolCapabilities & proto::CapGrating);
+    EXPECT_TRUE(id.protocolCapabilities & dev::proto::CapGrating);
     EXPECT_TRUE(s.client.capabilities().testFlag(dev::Capability::PidGains));
     EXPECT_DOUBLE_EQ(id.axes[0].travelMax, 100.0);
     EXPECT_NEAR(id.axes[0].resolution, 0.0005, 1e-9);
@@ -94,7 +94,7 @@ TEST(ClientOverLoopback, StageIdentifiesWithGratingAxesXY)
 
 TEST(ClientOverLoopback, AnalyzerHomesZFirstThenMovesOnTargetWithinEncoderTolerance)
 {
-    SimSession s(proto::DeviceKind::Analyzer, kUnpaced);
+    SimSession s(dev::proto::DeviceKind::Analyzer, kUnpaced);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
     ASSERT_TRUE(s.homeAll()) << text(s.linkErrors);
 
@@ -117,7 +117,7 @@ TEST(ClientOverLoopback, AnalyzerHomesZFirstThenMovesOnTargetWithinEncoderTolera
     const std::size_t mark = s.events.size();
     s.link.host().setTimeScale(5);
     const auto err = s.call([&](auto cb) { s.client.move({{x, 120.5}, {y, 80.25}, {z, 40.0}, {p, 500.0}}, false, 0, cb); });
-    ASSERT_FALSE(err) << msg::debugString(err->message);
+    ASSERT_FALSE(err) << motion::msg::debugString(err->message);
     for (int i : {x, y, z, p})
         ASSERT_TRUE(s.waitEvent(K::MotionDone, i, mark)) << "no MotionDone on axis " << i;
     s.link.host().setTimeScale(1);
@@ -142,7 +142,7 @@ TEST(ClientOverLoopback, AnalyzerHomesZFirstThenMovesOnTargetWithinEncoderTolera
 
 TEST(ClientOverLoopback, StageMovesOnTargetWithinTwoMicronsOfTheGrating)
 {
-    SimSession s(proto::DeviceKind::Stage, kUnpaced);
+    SimSession s(dev::proto::DeviceKind::Stage, kUnpaced);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
     ASSERT_TRUE(s.homeAll()) << text(s.linkErrors);
     const int x = s.axis('X'), y = s.axis('Y');
@@ -152,7 +152,7 @@ TEST(ClientOverLoopback, StageMovesOnTargetWithinTwoMicronsOfTheGrating)
         const std::size_t mark = s.events.size();
         s.link.host().setTimeScale(10);
         const auto err = s.call([&](auto cb) { s.client.move({{x, t.x}, {y, t.y}}, false, 20.0, cb); });
-        ASSERT_FALSE(err) << msg::debugString(err->message);
+        ASSERT_FALSE(err) << motion::msg::debugString(err->message);
         ASSERT_TRUE(s.waitEvent(K::MotionDone, x, mark));
         ASSERT_TRUE(s.waitEvent(K::MotionDone, y, mark));
         s.link.host().setTimeScale(1);
@@ -169,7 +169,7 @@ TEST(ClientOverLoopback, StageMovesOnTargetWithinTwoMicronsOfTheGrating)
 
 TEST(ClientOverLoopback, AbsoluteMoveOnUnhomedAxisIsRefusedNamingTheAxis)
 {
-    SimSession s(proto::DeviceKind::Analyzer);
+    SimSession s(dev::proto::DeviceKind::Analyzer);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
     const int y = s.axis('Y');
     const double before = s.readout('Y').commanded;
@@ -177,9 +177,9 @@ TEST(ClientOverLoopback, AbsoluteMoveOnUnhomedAxisIsRefusedNamingTheAxis)
     const auto err = s.call([&](auto cb) { s.client.move({{y, 50.0}}, false, 0, cb); });
     ASSERT_TRUE(err);
     EXPECT_EQ(err->kind, RequestError::Kind::Device);
-    EXPECT_EQ(err->code, proto::ErrorCode::NotHomed);
+    EXPECT_EQ(err->code, dev::proto::ErrorCode::NotHomed);
     EXPECT_EQ(err->axis, y);
-    const msg::Message why = deviceRefusal(*err);
+    const motion::msg::Message why = deviceRefusal(*err);
     EXPECT_EQ(why.id, "device.refused") << err->message;
     EXPECT_EQ(why.text("code"), "device.error.not_homed") << err->message;
     EXPECT_EQ(why.text("axis"), "Y") << err->message;
@@ -187,7 +187,7 @@ TEST(ClientOverLoopback, AbsoluteMoveOnUnhomedAxisIsRefusedNamingTheAxis)
     EXPECT_NE(why.text("detail").find("not homed"), std::string::npos) << err->message;
     // A status bar listening to requestFailed hears the same reason.
     ASSERT_FALSE(s.failures.empty());
-    EXPECT_EQ(s.failures.back().code, proto::ErrorCode::NotHomed);
+    EXPECT_EQ(s.failures.back().code, dev::proto::ErrorCode::NotHomed);
 
     spin(200);
     ASSERT_TRUE(s.waitStill());
@@ -202,7 +202,7 @@ TEST(ClientOverLoopback, AbsoluteMoveOnUnhomedAxisIsRefusedNamingTheAxis)
 
 TEST(ClientOverLoopback, MoveBeyondSoftLimitIsRefusedWithReasonAndLimit)
 {
-    SimSession s(proto::DeviceKind::Stage, kUnpaced);
+    SimSession s(dev::proto::DeviceKind::Stage, kUnpaced);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
     ASSERT_TRUE(s.homeAll()) << text(s.linkErrors);
     const int x = s.axis('X'), y = s.axis('Y');
@@ -213,7 +213,7 @@ TEST(ClientOverLoopback, MoveBeyondSoftLimitIsRefusedWithReasonAndLimit)
 
     auto err = s.call([&](auto cb) { s.client.move({{x, 75.0}}, false, 0, cb); });
     ASSERT_TRUE(err);
-    EXPECT_EQ(err->code, proto::ErrorCode::SoftLimit);
+    EXPECT_EQ(err->code, dev::proto::ErrorCode::SoftLimit);
     EXPECT_EQ(err->axis, x);
     EXPECT_NEAR(err->value, 60.0, 1e-6);
     EXPECT_EQ(deviceRefusal(*err).text("code"), "device.error.soft_limit") << err->message;
@@ -223,19 +223,19 @@ TEST(ClientOverLoopback, MoveBeyondSoftLimitIsRefusedWithReasonAndLimit)
 
     err = s.call([&](auto cb) { s.client.move({{x, 2.0}}, false, 0, cb); });
     ASSERT_TRUE(err);
-    EXPECT_EQ(err->code, proto::ErrorCode::SoftLimit);
+    EXPECT_EQ(err->code, dev::proto::ErrorCode::SoftLimit);
     EXPECT_NEAR(err->value, 5.0, 1e-6);
     EXPECT_NE(deviceRefusal(*err).text("detail").find("lower soft limit"), std::string::npos) << err->message;
 
     // Relative moves are checked against the same limits.
     err = s.call([&](auto cb) { s.client.move({{x, 61.0}}, true, 0, cb); });
     ASSERT_TRUE(err);
-    EXPECT_EQ(err->code, proto::ErrorCode::SoftLimit);
+    EXPECT_EQ(err->code, dev::proto::ErrorCode::SoftLimit);
 
     // The default limits are the travel.
     err = s.call([&](auto cb) { s.client.move({{y, 100.5}}, false, 0, cb); });
     ASSERT_TRUE(err);
-    EXPECT_EQ(err->code, proto::ErrorCode::SoftLimit);
+    EXPECT_EQ(err->code, dev::proto::ErrorCode::SoftLimit);
     EXPECT_EQ(err->axis, y);
     EXPECT_NEAR(err->value, 100.0, 1e-6);
 
@@ -258,13 +258,13 @@ TEST(ClientOverLoopback, MoveBeyondSoftLimitIsRefusedWithReasonAndLimit)
     EXPECT_NEAR(s.client.softLimits()[x].min, -54.5, 1e-6);
     err = s.call([&](auto cb) { s.client.move({{x, 1.0}}, false, 0, cb); });
     ASSERT_TRUE(err);
-    EXPECT_EQ(err->code, proto::ErrorCode::SoftLimit);
+    EXPECT_EQ(err->code, dev::proto::ErrorCode::SoftLimit);
     EXPECT_NEAR(err->value, 0.5, 1e-6);
 }
 
 TEST(ClientOverLoopback, HoldToJogMovesWhileHeldAndStopsOnRelease)
 {
-    SimSession s(proto::DeviceKind::Analyzer);
+    SimSession s(dev::proto::DeviceKind::Analyzer);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
     const int x = s.axis('X');
     const double start = s.readout('X').commanded;
@@ -303,14 +303,14 @@ TEST(ClientOverLoopback, HoldToJogMovesWhileHeldAndStopsOnRelease)
 
 TEST(ClientOverLoopback, UnhomedRelativeMoveIntoTheLimitSwitchStopsWithLimitHit)
 {
-    SimSession s(proto::DeviceKind::Analyzer, kUnpaced);
+    SimSession s(dev::proto::DeviceKind::Analyzer, kUnpaced);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
     const int x = s.axis('X');
     const double start = s.readout('X').commanded;
 
     s.link.host().setTimeScale(10);
     const auto err = s.call([&](auto cb) { s.client.move({{x, 250.0}}, true, 0, cb); });
-    ASSERT_FALSE(err) << msg::debugString(err->message);
+    ASSERT_FALSE(err) << motion::msg::debugString(err->message);
     ASSERT_TRUE(s.waitEvent(K::LimitHit, x)) << "no LimitHit on X";
     s.link.host().setTimeScale(1);
     const auto& hit = s.events[std::size_t(s.findEvent(K::LimitHit, x))];
@@ -333,7 +333,7 @@ TEST(ClientOverLoopback, UnhomedRelativeMoveIntoTheLimitSwitchStopsWithLimitHit)
 
 TEST(ClientOverLoopback, EStopDuringMoveHaltsAndRefusesMovesUntilReset)
 {
-    SimSession s(proto::DeviceKind::Analyzer);
+    SimSession s(dev::proto::DeviceKind::Analyzer);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
     const int x = s.axis('X');
     const double start = s.readout('X').commanded;
@@ -342,7 +342,7 @@ TEST(ClientOverLoopback, EStopDuringMoveHaltsAndRefusesMovesUntilReset)
     ASSERT_TRUE(waitFor([&] { return s.link.machine().commandedLogical(x) > start + 5.0; }, 5000));
     const std::size_t mark = s.events.size();
     const auto err = s.call([&](auto cb) { s.client.estop(cb); });
-    ASSERT_FALSE(err) << msg::debugString(err->message);
+    ASSERT_FALSE(err) << motion::msg::debugString(err->message);
     ASSERT_TRUE(s.waitEvent(K::EStop, -1, mark));
     ASSERT_TRUE(waitFor([&] { return s.client.status().estop && !s.readout('X').moving; }, 3000));
 
@@ -355,16 +355,16 @@ TEST(ClientOverLoopback, EStopDuringMoveHaltsAndRefusesMovesUntilReset)
 
     auto refused = s.call([&](auto cb) { s.client.move({{x, 1.0}}, true, 0, cb); });
     ASSERT_TRUE(refused);
-    EXPECT_EQ(refused->code, proto::ErrorCode::EStopActive);
+    EXPECT_EQ(refused->code, dev::proto::ErrorCode::EStopActive);
     EXPECT_EQ(deviceRefusal(*refused).text("code"), "device.error.estop_active") << refused->message;
     refused = s.call([&](auto cb) { s.client.home(0, cb); });
     ASSERT_TRUE(refused);
-    EXPECT_EQ(refused->code, proto::ErrorCode::EStopActive);
+    EXPECT_EQ(refused->code, dev::proto::ErrorCode::EStopActive);
     // A jog press is refused too, and the client stops refreshing it.
     const std::size_t failuresBefore = s.failures.size();
     s.client.startJog(x, 10.0);
     ASSERT_TRUE(waitFor([&] { return s.failures.size() > failuresBefore; }, 3000));
-    EXPECT_EQ(s.failures.back().code, proto::ErrorCode::EStopActive);
+    EXPECT_EQ(s.failures.back().code, dev::proto::ErrorCode::EStopActive);
     EXPECT_FALSE(s.client.isJogging(x));
     EXPECT_DOUBLE_EQ(s.link.machine().commandedLogical(x), halted);
 

@@ -19,7 +19,7 @@ using itest::waitFor;
 namespace {
 
 struct Rig {
-    explicit Rig(bool reasonsKnown) : link(sim::stageConfig(), 0)
+    explicit Rig(bool reasonsKnown) : link(dev::sim::stageConfig(), 0)
     {
         link.host().firmware().setHelloExtensions(reasonsKnown);  // off: a protocol 1.0 device
         QObject::connect(&client, &dev::BenchPilotClient::eventReceived, &client,
@@ -48,13 +48,13 @@ TEST(EventReasonsLink, EventsArriveWordedInTheOperatorsLanguage)
 {
     Rig r(true);
     r.estopAndReset();
-    ASSERT_EQ(r.events[0].kind, proto::EventKind::EStop);
+    ASSERT_EQ(r.events[0].kind, dev::proto::EventKind::EStop);
     EXPECT_TRUE(r.events[0].worded);
     EXPECT_EQ(r.events[0].detail.id, "device.why.all_halted");
     EXPECT_EQ(r.events[1].detail.id, "device.why.cleared");
-    words::Translators translators;
+    ui::words::Translators translators;
     ASSERT_TRUE(translators.setLanguage(QStringLiteral("zh_CN")));
-    const QString zh = words::text(r.events[0].detail);
+    const QString zh = ui::words::text(r.events[0].detail);
     EXPECT_FALSE(zh.contains(QLatin1String("halted"))) << zh.toStdString();
     EXPECT_FALSE(zh.isEmpty());
     translators.setLanguage(QStringLiteral("en"));
@@ -65,10 +65,10 @@ TEST(EventReasonsLink, ADeviceThatSendsNoReasonsIsShownInItsOwnWords)
 {
     Rig r(false);
     r.estopAndReset();
-    ASSERT_EQ(r.events[0].kind, proto::EventKind::EStop);
+    ASSERT_EQ(r.events[0].kind, dev::proto::EventKind::EStop);
     EXPECT_FALSE(r.events[0].worded);
     EXPECT_TRUE(r.events[0].detail.empty());
     EXPECT_EQ(r.events[0].text, QStringLiteral("emergency stop: all motion halted"));
-    const msg::Arg shown = dev::eventDetail(r.events[0]);
-    EXPECT_EQ(std::get<msg::Verbatim>(shown.value).text, "emergency stop: all motion halted");
+    const motion::msg::Arg shown = dev::eventDetail(r.events[0]);
+    EXPECT_EQ(std::get<motion::msg::Verbatim>(shown.value).text, "emergency stop: all motion halted");
 }

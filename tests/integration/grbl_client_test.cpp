@@ -33,13 +33,13 @@ TEST(GrblClient, IdentifiesTheFirmwareAndReadsItsLimitsFromSettings)
         const auto& id = s.client.identity();
         EXPECT_EQ(id.family, hal ? QStringLiteral("grblHAL 1.1f") : QStringLiteral("Grbl 1.1h"));
         EXPECT_TRUE(id.firmware.startsWith(hal ? QStringLiteral("1.1f") : QStringLiteral("1.1h"))) << id.firmware.toStdString();
-        EXPECT_EQ(id.kind, proto::DeviceKind::Stage);
+        EXPECT_EQ(id.kind, dev::proto::DeviceKind::Stage);
         ASSERT_EQ(id.axes.size(), 2);
         // $110 = 20 mm/s × 60, $120 = 200 mm/s², $130 = 100 mm: the stage's own limits.
         EXPECT_NEAR(id.axes[0].maxSpeed, 20, 1e-9);
         EXPECT_NEAR(id.axes[0].maxAccel, 200, 1e-9);
         EXPECT_EQ(id.axes[0].maxJerk, 0);
-        EXPECT_EQ(id.motionProfile, proto::MotionProfile::Trapezoid);
+        EXPECT_EQ(id.motionProfile, dev::proto::MotionProfile::Trapezoid);
         EXPECT_NEAR(s.client.softLimits()[0].max - s.client.softLimits()[0].min, 100, 1e-9);
         EXPECT_EQ(s.client.buildInfo().rxBufferBytes, hal ? 1024 : 128);
         // What GRBL cannot do, said with a reason.
@@ -63,14 +63,14 @@ TEST(GrblClient, HomesThenMovesAndReportsMotionDoneForEachAxis)
     // Not homed: an absolute move is refused by the host before anything is sent.
     const auto before = s.call([&](auto cb) { s.client.move({{0, 10}}, false, 10, cb); });
     ASSERT_TRUE(before);
-    EXPECT_EQ(before->code, proto::ErrorCode::NotHomed);
+    EXPECT_EQ(before->code, dev::proto::ErrorCode::NotHomed);
     ASSERT_TRUE(s.homeAll());
     EXPECT_TRUE(s.readout('X').homed);
     EXPECT_FALSE(s.client.status().positionLost);
     const std::size_t from = s.events.size();
     ASSERT_FALSE(s.call([&](auto cb) { s.client.move({{0, 12}, {1, 7.5}}, false, 20, cb); }));
-    ASSERT_TRUE(s.waitEvent(proto::EventKind::MotionDone, 0, from));
-    ASSERT_TRUE(s.waitEvent(proto::EventKind::MotionDone, 1, from));
+    ASSERT_TRUE(s.waitEvent(dev::proto::EventKind::MotionDone, 0, from));
+    ASSERT_TRUE(s.waitEvent(dev::proto::EventKind::MotionDone, 1, from));
     EXPECT_NEAR(s.readout('X').commanded, 12, 1e-3);
     EXPECT_NEAR(s.readout('Y').commanded, 7.5, 1e-3);
     EXPECT_NEAR(s.firmware().machinePositionMm()[0], 12, 1e-6);
@@ -85,14 +85,14 @@ TEST(GrblClient, ASoftLimitIsRefusedClearlyByTheHostAndByGrbl)
     // A G-code move beyond the travel: refused before sending (GRBL would stop with ALARM:2).
     const auto far = s.call([&](auto cb) { s.client.move({{0, 150}}, false, 10, cb); });
     ASSERT_TRUE(far);
-    EXPECT_EQ(far->code, proto::ErrorCode::SoftLimit);
+    EXPECT_EQ(far->code, dev::proto::ErrorCode::SoftLimit);
     EXPECT_EQ(far->message.id, "grbl.beyond_travel") << far->message;
     EXPECT_EQ(far->message.text("axis"), "X");
     EXPECT_DOUBLE_EQ(far->message.number("target"), 150);
     EXPECT_LT(far->message.number("max"), 150);
     EXPECT_EQ(far->message.integer("setting"), 130);
     ASSERT_NE(far->message.arg("target"), nullptr);
-    EXPECT_EQ(far->message.arg("target")->unit, msg::Unit::Mm);
+    EXPECT_EQ(far->message.arg("target")->unit, motion::msg::Unit::Mm);
     EXPECT_FALSE(s.client.status().positionLost);
     // A jog step beyond it goes to GRBL, which answers error:15: shown with its meaning and line.
     const auto jog = s.call([&](auto cb) { s.client.jogStep(0, 500, 10, cb); });
@@ -125,12 +125,12 @@ TEST(GrblClient, WithHomingDisabledSetHomeHereAllowsAbsoluteMoves)
     ASSERT_TRUE(s.waitStill());
     const auto abs = s.call([&](auto cb) { s.client.move({{0, 1}}, false, 10, cb); });
     ASSERT_TRUE(abs);
-    EXPECT_EQ(abs->code, proto::ErrorCode::NotHomed);
+    EXPECT_EQ(abs->code, dev::proto::ErrorCode::NotHomed);
     ASSERT_FALSE(s.call([&](auto cb) { s.client.setZero(0, cb); }));
     ASSERT_TRUE(waitFor([&] { return s.readout('X').homed && std::fabs(s.readout('X').commanded) < 1e-6; }, 5000));
     const std::size_t from = s.events.size();
     ASSERT_FALSE(s.call([&](auto cb) { s.client.move({{0, 3}}, false, 10, cb); }));
-    ASSERT_TRUE(s.waitEvent(proto::EventKind::MotionDone, 0, from));
+    ASSERT_TRUE(s.waitEvent(dev::proto::EventKind::MotionDone, 0, from));
     EXPECT_NEAR(s.readout('X').commanded, 3, 1e-3);
     // GRBL's work offset (G54) carries the home: machine position = work + offset.
     EXPECT_NEAR(s.firmware().machinePositionMm()[0] - s.firmware().workOffsetMm()[0], 3, 1e-6);
@@ -143,7 +143,7 @@ TEST(GrblClient, AContinuousJogStopsWithinTheBudgetOfItsReleaseOnTheSimulatorsCl
     ASSERT_TRUE(s.homeAll());
     ASSERT_FALSE(s.call([&](auto cb) { s.client.move({{0, 20}}, false, 20, cb); }));
     ASSERT_TRUE(s.waitStill());
-    const grbl::JogPlan plan = s.client.jogPlan(0, 20);
+    const dev::grbl::JogPlan plan = s.client.jogPlan(0, 20);
     ASSERT_TRUE(plan.feasible);
     s.client.startJog(0, 20);
     ASSERT_TRUE(waitFor([&] { return s.firmware().machinePositionMm()[0] > 25; }, 10000));
@@ -160,7 +160,7 @@ TEST(GrblClient, AContinuousJogStopsWithinTheBudgetOfItsReleaseOnTheSimulatorsCl
     // Release → rest on the simulator's clock, plus the link latency the plan allows for.
     EXPECT_LE(stoppedAt - releasedAt + plan.linkLatencyS, 0.25) << "released at " << releasedAt << ", at rest at " << stoppedAt;
     EXPECT_FALSE(s.client.isJogging(0));
-    EXPECT_EQ(s.firmware().state(), sim::GrblFirmware::State::Idle);
+    EXPECT_EQ(s.firmware().state(), dev::sim::GrblFirmware::State::Idle);
 }
 
 TEST(GrblClient, EStopLosesThePositionOfAMovingMachineAndRecoveryNeedsItBack)
@@ -172,14 +172,14 @@ TEST(GrblClient, EStopLosesThePositionOfAMovingMachineAndRecoveryNeedsItBack)
     ASSERT_TRUE(waitFor([&] { return s.firmware().machinePositionMm()[0] > 30; }, 10000));
     const std::size_t from = s.events.size();
     ASSERT_FALSE(s.call([&](auto cb) { s.client.estop(cb); }));
-    const int estop = s.findEvent(proto::EventKind::EStop, -1, from);
+    const int estop = s.findEvent(dev::proto::EventKind::EStop, -1, from);
     ASSERT_GE(estop, 0);
     EXPECT_EQ(s.events[static_cast<std::size_t>(estop)].detail.id, "grbl.event.estop");
     // ALARM:3: reset while moving; the position is lost.
-    ASSERT_TRUE(waitFor([&] { return s.client.status().positionLost && s.client.alarmCode() == grbl::alarm::kAbortCycle; }, 5000));
+    ASSERT_TRUE(waitFor([&] { return s.client.status().positionLost && s.client.alarmCode() == dev::grbl::alarm::kAbortCycle; }, 5000));
     EXPECT_TRUE(s.client.status().estop);
     EXPECT_FALSE(s.readout('X').homed);
-    const int alarm = s.findEvent(proto::EventKind::Fault, -1, from);
+    const int alarm = s.findEvent(dev::proto::EventKind::Fault, -1, from);
     ASSERT_GE(alarm, 0);
     EXPECT_EQ(s.events[static_cast<std::size_t>(alarm)].detail.id, "grbl.alarm");
     EXPECT_EQ(s.events[static_cast<std::size_t>(alarm)].detail.integer("code"), 3);
@@ -189,14 +189,14 @@ TEST(GrblClient, EStopLosesThePositionOfAMovingMachineAndRecoveryNeedsItBack)
     EXPECT_FALSE(s.client.status().estop);
     const auto refused = s.call([&](auto cb) { s.client.move({{0, 10}}, false, 10, cb); });
     ASSERT_TRUE(refused);
-    EXPECT_EQ(refused->code, proto::ErrorCode::NotHomed);
+    EXPECT_EQ(refused->code, dev::proto::ErrorCode::NotHomed);
     EXPECT_EQ(refused->message.id, "grbl.move_in_alarm") << refused->message;
     // Recovery: unlock on the operator's word (or home).
     ASSERT_FALSE(s.call([&](auto cb) { s.client.unlock(cb); }));
     ASSERT_TRUE(waitFor([&] { return !s.client.status().positionLost && s.readout('X').homed; }, 5000));
     const std::size_t later = s.events.size();
     ASSERT_FALSE(s.call([&](auto cb) { s.client.move({{0, 10}}, false, 20, cb); }));
-    ASSERT_TRUE(s.waitEvent(proto::EventKind::MotionDone, 0, later));
+    ASSERT_TRUE(s.waitEvent(dev::proto::EventKind::MotionDone, 0, later));
     EXPECT_NEAR(s.readout('X').commanded, 10, 1e-3);
 }
 
@@ -209,7 +209,7 @@ TEST(GrblClient, AStopHoldsThenFlushesAndKeepsThePosition)
     ASSERT_TRUE(waitFor([&] { return s.firmware().machinePositionMm()[0] > 20; }, 10000));
     const std::size_t from = s.events.size();
     ASSERT_FALSE(s.call([&](auto cb) { s.client.stop(0, cb); }));
-    EXPECT_GE(s.findEvent(proto::EventKind::Stopped, 0, from), 0);
+    EXPECT_GE(s.findEvent(dev::proto::EventKind::Stopped, 0, from), 0);
     ASSERT_TRUE(s.waitStill());
     EXPECT_FALSE(s.client.status().positionLost);
     EXPECT_TRUE(s.readout('X').homed);

@@ -18,13 +18,13 @@ TEST(GrblEventCoordinates, HomeDoneSaysWhereHomingLeftTheAxisInWorkAndMachineCoo
     // A work offset: home set 5 mm into the travel, then a move to work X = 3 (machine X = 8).
     std::size_t from = s.events.size();
     ASSERT_FALSE(s.call([&](auto cb) { s.client.move({{0, 5}}, false, 20, cb); }));
-    ASSERT_TRUE(s.waitEvent(proto::EventKind::MotionDone, 0, from));
+    ASSERT_TRUE(s.waitEvent(dev::proto::EventKind::MotionDone, 0, from));
     ASSERT_TRUE(s.waitStill());
     ASSERT_FALSE(s.call([&](auto cb) { s.client.setZero(1u << 0, cb); }));
     from = s.events.size();
     ASSERT_FALSE(s.call([&](auto cb) { s.client.move({{0, 3}}, false, 20, cb); }));
-    ASSERT_TRUE(s.waitEvent(proto::EventKind::MotionDone, 0, from));
-    const dev::DeviceEvent moved = s.events[static_cast<std::size_t>(s.findEvent(proto::EventKind::MotionDone, 0, from))];
+    ASSERT_TRUE(s.waitEvent(dev::proto::EventKind::MotionDone, 0, from));
+    const dev::DeviceEvent moved = s.events[static_cast<std::size_t>(s.findEvent(dev::proto::EventKind::MotionDone, 0, from))];
     EXPECT_NEAR(moved.position, 3, 1e-3);
     ASSERT_EQ(moved.detail.id, "grbl.event.position") << moved.detail;
     EXPECT_NEAR(moved.detail.number("work"), 3, 1e-3);
@@ -34,7 +34,7 @@ TEST(GrblEventCoordinates, HomeDoneSaysWhereHomingLeftTheAxisInWorkAndMachineCoo
     // Homing takes X back to machine 0, which is work -5: the event says so, not the 3 it left.
     from = s.events.size();
     ASSERT_TRUE(s.homeAll());
-    const int at = s.findEvent(proto::EventKind::HomeDone, 0, from);
+    const int at = s.findEvent(dev::proto::EventKind::HomeDone, 0, from);
     ASSERT_GE(at, 0);
     const dev::DeviceEvent homed = s.events[static_cast<std::size_t>(at)];
     EXPECT_NEAR(homed.position, -5, 1e-3);

@@ -49,7 +49,7 @@ struct HomeRig {
     {
         const std::size_t from = s.events.size();
         auto e = s.call([&](auto cb) { s.client.move({{0, x}}, false, 10, cb); });
-        if (!e && !s.waitEvent(proto::EventKind::MotionDone, 0, from))
+        if (!e && !s.waitEvent(dev::proto::EventKind::MotionDone, 0, from))
             ADD_FAILURE() << "no MotionDone";
         return e;
     }
@@ -59,7 +59,7 @@ struct HomeRig {
         if (dx != 0) {
             const std::size_t from = s.events.size();
             ASSERT_FALSE(s.call([&](auto cb) { s.client.move({{0, dx}}, true, 10, cb); }));
-            ASSERT_TRUE(s.waitEvent(proto::EventKind::MotionDone, 0, from));
+            ASSERT_TRUE(s.waitEvent(dev::proto::EventKind::MotionDone, 0, from));
             ASSERT_TRUE(s.waitStill());
         }
         ASSERT_FALSE(s.call([&](auto cb) { s.client.setZero(0, cb); }));

@@ -71,9 +71,9 @@ TEST(GrblPtyClient, DetectsIdentifiesHomesMovesAndStreamsACircleOverARealPort)
         dev::ProtocolProbe probe(&port);
         probe.start();
         ASSERT_TRUE(waitFor([&] { return probe.done(); }, 8000));
-        ASSERT_EQ(probe.result().protocol, dev::ProbeResult::Protocol::Grbl) << msg::debugString(probe.result().error);
+        ASSERT_EQ(probe.result().protocol, dev::ProbeResult::Protocol::Grbl) << motion::msg::debugString(probe.result().error);
 
-        dev::GrblClient client(files::defaultProfile(proto::DeviceKind::Stage), true);
+        dev::GrblClient client(dev::files::defaultProfile(dev::proto::DeviceKind::Stage), true);
         client.setTransport(&port);  // the probe left it open
         client.connectLink();
         ASSERT_TRUE(waitFor([&] { return client.isReady() || client.state() == dev::LinkState::Disconnected; }, 10000));
@@ -83,15 +83,15 @@ TEST(GrblPtyClient, DetectsIdentifiesHomesMovesAndStreamsACircleOverARealPort)
         client.home(0, [&](const auto& e) { homed = !e; });
         ASSERT_TRUE(waitFor([&] { return homed && client.status().axes[0].homed && !client.status().anyMoving(); }, 30000));
 
-        jobs::PatternRunner runner(&client);
+        dev::jobs::PatternRunner runner(&client);
         QObject::connect(&client, &dev::Instrument::telemetryReceived, &runner,
-                         [&](const proto::TelemetryBatch& b) { jobs::feedBatch(runner, client, b); });
-        client.subscribe(jobs::patternChannels(), 250);
+                         [&](const dev::proto::TelemetryBatch& b) { dev::jobs::feedBatch(runner, client, b); });
+        client.subscribe(dev::jobs::patternChannels(), 250);
         motion::plans::Pattern circle;
         circle.shape = motion::plans::PatternShape::Circle;  // 10 mm at 2 mm/s
         ASSERT_TRUE(runner.start(motion::plans::plan(circle), {}));
         ASSERT_TRUE(waitFor([&] { return !runner.busy(); }, 60000));
-        EXPECT_EQ(runner.state(), jobs::PatternRunner::State::Done);
+        EXPECT_EQ(runner.state(), dev::jobs::PatternRunner::State::Done);
         EXPECT_LT(runner.summary().maxContourMm, 0.005);
         client.disconnectLink();
         const BufferAccounting b = stopAndReadAccounting(sim);

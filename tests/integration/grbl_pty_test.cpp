@@ -38,7 +38,7 @@ public:
     /// Lines until one equals `last` (or starts with it, with `prefix`), included, or `limitMs` passes.
     std::vector<std::string> readUntil(const std::string& last, int limitMs = 5000, bool prefix = false)
     {
-        std::vector<grbl::LineReader::Line> got;
+        std::vector<dev::grbl::LineReader::Line> got;
         QElapsedTimer t;
         t.start();
         while (t.elapsed() < limitMs) {
@@ -62,7 +62,7 @@ public:
 
 private:
     int m_fd;
-    grbl::LineReader m_reader;
+    dev::grbl::LineReader m_reader;
 };
 
 TEST(GrblPty, BenchpilotSimSpeaksGrblOnAPty)
@@ -75,11 +75,11 @@ TEST(GrblPty, BenchpilotSimSpeaksGrblOnAPty)
     port.write("\x18");  // the banner came before we listened: a reset says it again
     const auto hello = port.readUntil("[MSG:'$H'|'$X' to unlock]");
     ASSERT_GE(hello.size(), 2u);
-    EXPECT_EQ(grbl::parseBanner(hello[hello.size() - 2])->firmware, grbl::Firmware::Grbl);
+    EXPECT_EQ(dev::grbl::parseBanner(hello[hello.size() - 2])->firmware, dev::grbl::Firmware::Grbl);
     port.write("$I\n");
-    grbl::BuildInfo info;
+    dev::grbl::BuildInfo info;
     for (const auto& l : port.readUntil("ok"))
-        grbl::addBuildInfoLine(info, grbl::classifyLine(l));
+        dev::grbl::addBuildInfoLine(info, dev::grbl::classifyLine(l));
     EXPECT_EQ(info.plannerBlocks, 15);
     EXPECT_EQ(info.rxBufferBytes, 128);
     port.write("$X\nG91 G1 X0.5 F600\nG4 P0.01\n");
@@ -91,9 +91,9 @@ TEST(GrblPty, BenchpilotSimSpeaksGrblOnAPty)
     port.write("?");
     const auto lines = port.readUntil("<", 5000, true);
     ASSERT_FALSE(lines.empty());
-    const auto report = grbl::parseStatusReport(grbl::classifyLine(lines.back()).payload).report;
+    const auto report = dev::grbl::parseStatusReport(dev::grbl::classifyLine(lines.back()).payload).report;
     ASSERT_TRUE(report) << lines.back();
-    EXPECT_EQ(report->state, grbl::MachineState::Idle);
+    EXPECT_EQ(report->state, dev::grbl::MachineState::Idle);
     ASSERT_EQ(report->position.size(), 3u);  // the stage's X and Y, and the Z every GRBL has
     EXPECT_DOUBLE_EQ(report->position[0], 0.5);
 }

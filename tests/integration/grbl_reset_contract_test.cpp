@@ -35,7 +35,7 @@ bool endsTheLink(ResetPath p) { return p == ResetPath::Disconnect || p == ResetP
 
 struct ContractRig {
     ScriptedGrbl port;
-    dev::GrblClient client{files::defaultProfile(proto::DeviceKind::Stage), true};
+    dev::GrblClient client{dev::files::defaultProfile(dev::proto::DeviceKind::Stage), true};
     std::vector<dev::DeviceEvent> events;
 
     ContractRig()
@@ -61,7 +61,7 @@ struct ContractRig {
     {
         int n = 0;
         for (std::size_t i = from; i < events.size(); ++i)
-            n += events[i].kind == proto::EventKind::MotionDone;
+            n += events[i].kind == dev::proto::EventKind::MotionDone;
         return n;
     }
 };
@@ -111,11 +111,11 @@ TEST(GrblResetContract, EveryResetPathAnswersEveryCommandOnceAndLeavesNothingRun
         int resetAnswers = 0;
         auto countReset = [&](const std::optional<dev::RequestError>& e) {
             ++resetAnswers;
-            EXPECT_FALSE(e.has_value()) << msg::debugString(e->message);
+            EXPECT_FALSE(e.has_value()) << motion::msg::debugString(e->message);
         };
         switch (path) {
         case ResetPath::Disconnect: r.client.disconnectLink(); break;
-        case ResetPath::LinkLost: emit r.port.lost(msg::make("link.unplugged")); break;
+        case ResetPath::LinkLost: emit r.port.lost(motion::msg::make("link.unplugged")); break;
         case ResetPath::ControllerReset:
             r.port.hold = {};  // what it held is gone with the reset; what comes after, it answers
             r.port.push("Grbl 1.1h ['$' for help]");
@@ -172,6 +172,6 @@ TEST(GrblResetContract, EveryResetPathAnswersEveryCommandOnceAndLeavesNothingRun
         std::optional<std::optional<dev::RequestError>> next;
         r.client.move({{0, 1}}, true, 5, [&](const std::optional<dev::RequestError>& e) { next = e; });
         ASSERT_TRUE(waitFor([&] { return next.has_value(); }, 3000));
-        EXPECT_FALSE(next->has_value()) << (next->has_value() ? msg::debugString((*next)->message) : std::string());
+        EXPECT_FALSE(next->has_value()) << (next->has_value() ? motion::msg::debugString((*next)->message) : std::string());
     }
 }

@@ -28,29 +28,29 @@ namespace {
 /// The runner fed from the client's own telemetry (status reports), as the CLI does.
 struct PatternRig {
     GrblSession s;
-    jobs::PatternRunner runner{&s.client};
-    std::vector<msg::Message> messages;
+    dev::jobs::PatternRunner runner{&s.client};
+    std::vector<motion::msg::Message> messages;
 
     std::string all() const
     {
         std::string out;
-        for (const msg::Message& m : messages)
-            out += msg::debugString(m) + "\n";
+        for (const motion::msg::Message& m : messages)
+            out += motion::msg::debugString(m) + "\n";
         return out;
     }
 
     explicit PatternRig(const GrblSessionOptions& o) : s(o)
     {
         QObject::connect(&s.client, &dev::Instrument::telemetryReceived, &runner,
-                         [this](const proto::TelemetryBatch& b) { jobs::feedBatch(runner, s.client, b); });
-        QObject::connect(&runner, &jobs::PatternRunner::message, &runner, [this](const msg::Message& m, bool) { messages.push_back(m); });
+                         [this](const dev::proto::TelemetryBatch& b) { dev::jobs::feedBatch(runner, s.client, b); });
+        QObject::connect(&runner, &dev::jobs::PatternRunner::message, &runner, [this](const motion::msg::Message& m, bool) { messages.push_back(m); });
     }
     bool ready()
     {
         if (!s.connect() || !s.homeAll())
             return false;
         bool subscribed = false;
-        s.client.subscribe(jobs::patternChannels(), 250, [&](const auto& e, const auto&) { subscribed = !e; });
+        s.client.subscribe(dev::jobs::patternChannels(), 250, [&](const auto& e, const auto&) { subscribed = !e; });
         return subscribed;
     }
 };
@@ -72,9 +72,9 @@ TEST(GrblRunners, TheTenMillimetreCircleRunsWithoutOverflowingTheReceiveBuffer)
         const auto path = planOf(p);
         ASSERT_TRUE(r.runner.start(path, {})) << r.all();
         r.s.link.host().setTimeScale(8);
-        ASSERT_TRUE(waitFor([&] { return !r.runner.busy(); }, 60000)) << jobs::PatternRunner::stateTerm(r.runner.state());
+        ASSERT_TRUE(waitFor([&] { return !r.runner.busy(); }, 60000)) << dev::jobs::PatternRunner::stateTerm(r.runner.state());
         r.s.link.host().setTimeScale(1);
-        ASSERT_EQ(r.runner.state(), jobs::PatternRunner::State::Done) << r.all();
+        ASSERT_EQ(r.runner.state(), dev::jobs::PatternRunner::State::Done) << r.all();
         const auto sum = r.runner.summary();
         EXPECT_TRUE(sum.complete);
         EXPECT_GE(sum.samples, 5u);
@@ -105,7 +105,7 @@ TEST(GrblRunners, ARasterLongerThanThePathWindowIsStreamedWithFlowControl)
     r.s.link.host().setTimeScale(8);
     ASSERT_TRUE(waitFor([&] { return !r.runner.busy(); }, 90000));
     r.s.link.host().setTimeScale(1);
-    ASSERT_EQ(r.runner.state(), jobs::PatternRunner::State::Done) << r.all();
+    ASSERT_EQ(r.runner.state(), dev::jobs::PatternRunner::State::Done) << r.all();
     EXPECT_EQ(r.runner.segmentsDone(), path.size());
     EXPECT_EQ(r.s.firmware().lostRxBytes(), 0u);
 }
@@ -121,7 +121,7 @@ TEST(GrblRunners, APatternOutsideTheTravelIsRefusedBeforeAnythingMoves)
     const double x0 = r.s.readout('X').commanded;
     EXPECT_FALSE(r.runner.start(planOf(p), {}));
     // Beyond GRBL's machine travel, which are the instrument's soft limits here.
-    const auto beyond = std::find_if(r.messages.begin(), r.messages.end(), [](const msg::Message& m) { return m.id == "pattern.segment_above_limit"; });
+    const auto beyond = std::find_if(r.messages.begin(), r.messages.end(), [](const motion::msg::Message& m) { return m.id == "pattern.segment_above_limit"; });
     ASSERT_NE(beyond, r.messages.end()) << r.all();
     EXPECT_EQ(beyond->text("axis"), "X") << r.all();
     itest::spin(200);
@@ -132,8 +132,8 @@ TEST(GrblRunners, AScanTriggersTheProfilesOutputOncePerTile)
 {
     GrblSessionOptions o;
     o.grblHal = true;
-    files::MachineProfile profile = files::defaultProfile(proto::DeviceKind::Stage);
-    profile.trigger = files::MachineProfile::Trigger{files::MachineProfile::TriggerOutput::GrblHalDigital, 2};
+    dev::files::MachineProfile profile = dev::files::defaultProfile(dev::proto::DeviceKind::Stage);
+    profile.trigger = dev::files::MachineProfile::Trigger{dev::files::MachineProfile::TriggerOutput::GrblHalDigital, 2};
     o.profile = profile;
     GrblSession s(o);
     ASSERT_TRUE(s.connect());
@@ -149,16 +149,16 @@ TEST(GrblRunners, AScanTriggersTheProfilesOutputOncePerTile)
     plan.speedMmS = 10;
     plan.exposureS = 0.02;
     QTemporaryDir dir;
-    jobs::ScanRunner runner(&s.client);
-    msg::Message error;
-    ASSERT_TRUE(runner.prepare(plan, dir.path(), false, &error)) << msg::debugString(error);
+    dev::jobs::ScanRunner runner(&s.client);
+    motion::msg::Message error;
+    ASSERT_TRUE(runner.prepare(plan, dir.path(), false, &error)) << motion::msg::debugString(error);
     ASSERT_EQ(runner.totalTiles(), 4);
     s.link.host().setTimeScale(4);
-    ASSERT_TRUE(runner.start(&error)) << msg::debugString(error);
-    ASSERT_TRUE(waitFor([&] { return runner.state() == jobs::ScanRunner::State::Finished || runner.state() == jobs::ScanRunner::State::Stopped; },
+    ASSERT_TRUE(runner.start(&error)) << motion::msg::debugString(error);
+    ASSERT_TRUE(waitFor([&] { return runner.state() == dev::jobs::ScanRunner::State::Finished || runner.state() == dev::jobs::ScanRunner::State::Stopped; },
                         60000));
     s.link.host().setTimeScale(1);
-    ASSERT_EQ(runner.state(), jobs::ScanRunner::State::Finished);
+    ASSERT_EQ(runner.state(), dev::jobs::ScanRunner::State::Finished);
     for (int t = 0; t < 4; ++t) {
         const auto& rec = runner.records()[static_cast<std::size_t>(t)];
         ASSERT_EQ(rec.measuredMm.size(), 2u);
@@ -180,31 +180,31 @@ TEST(GrblRunners, AScanTriggersTheProfilesOutputOncePerTile)
 TEST(GrblRunners, ARecipeMovesThePlungerOnTheProfilesAxis)
 {
     GrblSessionOptions o;
-    o.kind = proto::DeviceKind::Analyzer;
+    o.kind = dev::proto::DeviceKind::Analyzer;
     GrblSession s(o);
     ASSERT_TRUE(s.connect());
     ASSERT_TRUE(s.client.can(dev::Capability::Pump));
     ASSERT_TRUE(s.client.can(dev::Capability::CoupledXyThenZ));
     ASSERT_TRUE(s.homeAll());
     const auto& a = s.client.status().axes;
-    plates::StartState start{a[0].commanded, a[1].commanded, a[2].commanded, a[3].commanded};
-    const plates::RecipePlan plan = plates::planRecipe(platestest::samplingRecipe("A1:A4", 10), platestest::builtinContext(), start);
+    motion::plates::StartState start{a[0].commanded, a[1].commanded, a[2].commanded, a[3].commanded};
+    const motion::plates::RecipePlan plan = motion::plates::planRecipe(platestest::samplingRecipe("A1:A4", 10), platestest::builtinContext(), start);
     ASSERT_TRUE(plan.ok());
-    jobs::RecipeRunner runner(&s.client);
+    dev::jobs::RecipeRunner runner(&s.client);
     std::string problems;
-    QObject::connect(&runner, &jobs::RecipeRunner::message, &runner, [&](const msg::Message& m, bool problem) {
+    QObject::connect(&runner, &dev::jobs::RecipeRunner::message, &runner, [&](const motion::msg::Message& m, bool problem) {
         if (problem)
-            problems += msg::debugString(m) + "\n";
+            problems += motion::msg::debugString(m) + "\n";
     });
     QTemporaryDir dir;
-    msg::Message error;
-    ASSERT_TRUE(runner.setPlan(plan, QStringLiteral("sampling"), &error)) << msg::debugString(error);
+    motion::msg::Message error;
+    ASSERT_TRUE(runner.setPlan(plan, QStringLiteral("sampling"), &error)) << motion::msg::debugString(error);
     const double p0 = s.readout('P').commanded;
     s.link.host().setTimeScale(platestest::kRunTimeScale);
-    ASSERT_TRUE(runner.start(dir.filePath(QStringLiteral("run.jsonl")), &error)) << msg::debugString(error);
+    ASSERT_TRUE(runner.start(dir.filePath(QStringLiteral("run.jsonl")), &error)) << motion::msg::debugString(error);
     ASSERT_TRUE(platestest::waitSettled(runner, 120000));
     s.link.host().setTimeScale(1);
-    ASSERT_EQ(runner.state(), jobs::RunState::Finished) << problems;
+    ASSERT_EQ(runner.state(), dev::jobs::RunState::Finished) << problems;
     const auto counts = platestest::countLog(dir.filePath(QStringLiteral("run.jsonl")));
     ASSERT_EQ(counts.dones.size(), 4u);
     for (const auto& [op, n] : counts.dones)
@@ -246,13 +246,13 @@ TEST(GrblRunners, ABoardResetMidJobInterruptsThePatternAndSaysWhatWasLost)
     motion::plans::Pattern p;
     p.shape = motion::plans::PatternShape::Circle;
     ASSERT_TRUE(r.runner.start(planOf(p), {}));
-    ASSERT_TRUE(waitFor([&] { return r.runner.state() == jobs::PatternRunner::State::Running && r.s.firmware().machinePositionMm()[1] > 50.5; },
+    ASSERT_TRUE(waitFor([&] { return r.runner.state() == dev::jobs::PatternRunner::State::Running && r.s.firmware().machinePositionMm()[1] > 50.5; },
                         20000));
     // The board resets by itself (a brown-out, a watchdog): nobody here sent the 0x18.
-    const std::uint8_t reset = grbl::rt::kSoftReset;
+    const std::uint8_t reset = dev::grbl::rt::kSoftReset;
     r.s.firmware().receive(&reset, 1);
-    ASSERT_TRUE(waitFor([&] { return !r.runner.busy(); }, 10000)) << jobs::PatternRunner::stateTerm(r.runner.state());
-    EXPECT_EQ(r.runner.state(), jobs::PatternRunner::State::Interrupted);
+    ASSERT_TRUE(waitFor([&] { return !r.runner.busy(); }, 10000)) << dev::jobs::PatternRunner::stateTerm(r.runner.state());
+    EXPECT_EQ(r.runner.state(), dev::jobs::PatternRunner::State::Interrupted);
     EXPECT_FALSE(r.runner.summary().complete);
     // Said, and the position is no longer trusted: the controller reports ALARM:3.
     ASSERT_TRUE(waitFor([&] { return r.s.client.status().positionLost; }, 5000));

@@ -18,33 +18,33 @@
 namespace itest {
 
 struct GrblSessionOptions {
-    proto::DeviceKind kind = proto::DeviceKind::Stage;
+    dev::proto::DeviceKind kind = dev::proto::DeviceKind::Stage;
     bool grblHal = false;
-    std::optional<files::MachineProfile> profile;  ///< the default wiring when empty
+    std::optional<dev::files::MachineProfile> profile;  ///< the default wiring when empty
     qint32 baud = 0;                               ///< 0: unpaced
 };
 
 class GrblSession {
 public:
     explicit GrblSession(const GrblSessionOptions& o = {})
-        : link(std::make_unique<sim::GrblFirmware>(o.kind == proto::DeviceKind::Stage ? sim::stageConfig() : sim::analyzerConfig(),
-                                                    o.grblHal ? sim::GrblFirmware::Dialect::GrblHal : sim::GrblFirmware::Dialect::Grbl),
+        : link(std::make_unique<dev::sim::GrblFirmware>(o.kind == dev::proto::DeviceKind::Stage ? dev::sim::stageConfig() : dev::sim::analyzerConfig(),
+                                                    o.grblHal ? dev::sim::GrblFirmware::Dialect::GrblHal : dev::sim::GrblFirmware::Dialect::Grbl),
                o.baud),
-          client(o.profile ? *o.profile : files::defaultProfile(o.kind), !o.profile.has_value())
+          client(o.profile ? *o.profile : dev::files::defaultProfile(o.kind), !o.profile.has_value())
     {
         QObject::connect(&client, &dev::Instrument::eventReceived, &client, [this](const dev::DeviceEvent& e) { events.push_back(e); });
-        QObject::connect(&client, &dev::Instrument::linkError, &client, [this](const msg::Message& m) {
+        QObject::connect(&client, &dev::Instrument::linkError, &client, [this](const motion::msg::Message& m) {
             linkMessages.push_back(m);
-            linkErrors << QString::fromStdString(msg::debugString(m));
+            linkErrors << QString::fromStdString(motion::msg::debugString(m));
         });
         QObject::connect(&client, &dev::Instrument::requestFailed, &client, [this](const dev::RequestError& e) { failures.push_back(e); });
-        QObject::connect(&client, &dev::Instrument::noted, &client, [this](const msg::Message& m) { notes.push_back(m); });
+        QObject::connect(&client, &dev::Instrument::noted, &client, [this](const motion::msg::Message& m) { notes.push_back(m); });
         QObject::connect(&client, &dev::Instrument::statusChanged, &client, [this] { ++statusCount; });
         client.setTransport(link.hostEnd());
     }
     ~GrblSession() { client.setTransport(nullptr); }
 
-    sim::GrblFirmware& firmware() { return static_cast<sim::GrblFirmware&>(link.host().device()); }
+    dev::sim::GrblFirmware& firmware() { return static_cast<dev::sim::GrblFirmware&>(link.host().device()); }
     double simTimeS() { return firmware().machine().timeS(); }
 
     bool connect(int timeoutMs = 8000)
@@ -81,14 +81,14 @@ public:
         return waitFor([this, from] { return client.isReady() && statusCount >= from + 2 && !client.status().anyMoving(); }, timeoutMs);
     }
 
-    int findEvent(proto::EventKind kind, int axisIndex = -2, std::size_t from = 0) const
+    int findEvent(dev::proto::EventKind kind, int axisIndex = -2, std::size_t from = 0) const
     {
         for (std::size_t i = from; i < events.size(); ++i)
             if (events[i].kind == kind && (axisIndex < -1 || events[i].axis == axisIndex))
                 return static_cast<int>(i);
         return -1;
     }
-    bool waitEvent(proto::EventKind kind, int axisIndex = -2, std::size_t from = 0, int timeoutMs = 10000)
+    bool waitEvent(dev::proto::EventKind kind, int axisIndex = -2, std::size_t from = 0, int timeoutMs = 10000)
     {
         return waitFor([&] { return findEvent(kind, axisIndex, from) >= 0; }, timeoutMs);
     }
@@ -100,11 +100,11 @@ public:
         const std::size_t from = events.size();
         const auto err = call([this](auto cb) { client.home(0, cb); });
         if (err) {
-            ADD_FAILURE() << "home refused: " << msg::debugString(err->message);
+            ADD_FAILURE() << "home refused: " << motion::msg::debugString(err->message);
             link.host().setTimeScale(1);
             return false;
         }
-        const bool ok = waitEvent(proto::EventKind::HomeDone, -2, from, 30000);
+        const bool ok = waitEvent(dev::proto::EventKind::HomeDone, -2, from, 30000);
         link.host().setTimeScale(1);
         return ok && waitStill();
     }
@@ -112,10 +112,10 @@ public:
     dev::SimulatedLink link;
     dev::GrblClient client;
     std::vector<dev::DeviceEvent> events;
-    std::vector<msg::Message> linkMessages;  ///< every linkError, in order
+    std::vector<motion::msg::Message> linkMessages;  ///< every linkError, in order
     QStringList linkErrors;                  ///< the same as debug strings, for failure output
     std::vector<dev::RequestError> failures;
-    std::vector<msg::Message> notes;
+    std::vector<motion::msg::Message> notes;
     int statusCount = 0;
 };
 

@@ -23,15 +23,15 @@ struct Rig {
     dev::GrblClient client;
     std::vector<dev::DeviceEvent> events;
     std::vector<dev::RequestError> failures;
-    std::vector<msg::Message> notes;
-    std::vector<msg::Message> linkErrors;
+    std::vector<motion::msg::Message> notes;
+    std::vector<motion::msg::Message> linkErrors;
 
-    explicit Rig(files::MachineProfile profile = files::defaultProfile(proto::DeviceKind::Stage)) : client(profile, true)
+    explicit Rig(dev::files::MachineProfile profile = dev::files::defaultProfile(dev::proto::DeviceKind::Stage)) : client(profile, true)
     {
         QObject::connect(&client, &dev::Instrument::eventReceived, &client, [this](const dev::DeviceEvent& e) { events.push_back(e); });
         QObject::connect(&client, &dev::Instrument::requestFailed, &client, [this](const dev::RequestError& e) { failures.push_back(e); });
-        QObject::connect(&client, &dev::Instrument::noted, &client, [this](const msg::Message& m) { notes.push_back(m); });
-        QObject::connect(&client, &dev::Instrument::linkError, &client, [this](const msg::Message& m) { linkErrors.push_back(m); });
+        QObject::connect(&client, &dev::Instrument::noted, &client, [this](const motion::msg::Message& m) { notes.push_back(m); });
+        QObject::connect(&client, &dev::Instrument::linkError, &client, [this](const motion::msg::Message& m) { linkErrors.push_back(m); });
         client.setTransport(&port);
     }
     ~Rig() { client.setTransport(nullptr); }
@@ -63,7 +63,7 @@ struct Rig {
 TEST(GrblTranscriptClient, AReportWithEveryFieldAndUnknownOnesIsRead)
 {
     Rig r;
-    ASSERT_TRUE(r.connect()) << (r.linkErrors.empty() ? msg::Message{} : r.linkErrors.front());
+    ASSERT_TRUE(r.connect()) << (r.linkErrors.empty() ? motion::msg::Message{} : r.linkErrors.front());
     // grblHAL-style extra fields (H:, FW:, WCS:) among the documented ones, in no particular order.
     ASSERT_TRUE(r.report("<Hold:1|WPos:1.000,2.000,0.000|Bf:15,128|Ln:99|FS:600,0|Pn:XZ|WCO:0.500,-1.000,0.000|Ov:100,100,100|"
                          "A:SF|H:0,0|FW:grblHAL|WCS:G54>"));
@@ -72,7 +72,7 @@ TEST(GrblTranscriptClient, AReportWithEveryFieldAndUnknownOnesIsRead)
     EXPECT_NEAR(st.axes[1].commanded, 2.0, 1e-9);
     EXPECT_TRUE(st.axes[0].limitSwitch);           // Pn:X
     EXPECT_FALSE(st.axes[1].limitSwitch);
-    EXPECT_EQ(r.client.machineState(), grbl::MachineState::Hold);
+    EXPECT_EQ(r.client.machineState(), dev::grbl::MachineState::Hold);
     EXPECT_FALSE(r.hasNote("grbl.status.malformed"));
     // Then MPos with the remembered WCO: work = machine − offset.
     ASSERT_TRUE(r.report("<Idle|MPos:10.500,4.000,0.000|FS:0,0>"));
@@ -143,7 +143,7 @@ TEST(GrblTranscriptClient, ABannerInTheMiddleOfAStreamIsAResetThatLosesTheLinesI
     ASSERT_TRUE(result->has_value());
     EXPECT_EQ((*result)->message.id, "request.abandoned") << (*result)->message;
     EXPECT_EQ((*result)->message.text("request"), "request.move");
-    EXPECT_EQ(msg::nested((*result)->message, "cause").id, "grbl.reset_by_itself") << (*result)->message;
+    EXPECT_EQ(motion::msg::nested((*result)->message, "cause").id, "grbl.reset_by_itself") << (*result)->message;
     const auto it = std::find_if(r.events.begin(), r.events.end(), [](const auto& e) { return e.detail.id == "grbl.controller_reset"; });
     ASSERT_NE(it, r.events.end());
     EXPECT_EQ(it->detail.integer("lost"), 1);
@@ -184,8 +184,8 @@ TEST(GrblTranscriptClient, InchReportsAreConvertedOrRefusedNeverMisread)
         EXPECT_NEAR(r.client.identity().axes[0].maxSpeed, 20, 1e-9);
     }
     {
-        files::MachineProfile p = files::defaultProfile(proto::DeviceKind::Stage);
-        p.inchReports = files::MachineProfile::InchReports::Refuse;
+        dev::files::MachineProfile p = dev::files::defaultProfile(dev::proto::DeviceKind::Stage);
+        p.inchReports = dev::files::MachineProfile::InchReports::Refuse;
         Rig r(p);
         r.port.settings.replace(r.port.settings.find("$13=0"), 5, "$13=1");
         EXPECT_FALSE(r.connect());
@@ -200,12 +200,12 @@ TEST(GrblTranscriptClient, SettingsWithoutTheLimitsRefuseTheConnectionSayingWhic
     r.port.settings.replace(r.port.settings.find("$110=1200.000\r\n"), 15, "");
     EXPECT_FALSE(r.connect());
     ASSERT_FALSE(r.linkErrors.empty());
-    const msg::Message& why = r.linkErrors.front();
+    const motion::msg::Message& why = r.linkErrors.front();
     EXPECT_EQ(why.id, "grbl.identify.no_limits") << why;
     EXPECT_EQ(why.integer("count"), 1);
-    EXPECT_EQ(msg::nested(why, "problem").id, "grbl.settings.missing") << why;
-    EXPECT_EQ(msg::nested(why, "problem").integer("setting"), 110);
-    EXPECT_EQ(msg::nested(why, "problem").text("axis"), "X");
+    EXPECT_EQ(motion::msg::nested(why, "problem").id, "grbl.settings.missing") << why;
+    EXPECT_EQ(motion::msg::nested(why, "problem").integer("setting"), 110);
+    EXPECT_EQ(motion::msg::nested(why, "problem").text("axis"), "X");
     EXPECT_TRUE(r.hasNote("grbl.settings.missing"));  // every problem is in the event log
 }
 
@@ -226,7 +226,7 @@ TEST(GrblTranscriptClient, ABoardThatNeverAnswersOrAnswersNoiseIsToldWithinSecon
         }
         ASSERT_TRUE(waitFor([&] { return r.client.state() == dev::LinkState::Disconnected; }, 15000));
         ASSERT_EQ(r.linkErrors.size(), 1u);
-        const msg::Message& why = r.linkErrors.front();
+        const motion::msg::Message& why = r.linkErrors.front();
         EXPECT_EQ(why.id, noise ? "grbl.connect.no_grbl_line" : "grbl.connect.no_answer") << why;
         EXPECT_EQ(why.text("link"), r.client.linkDescription().toStdString());
         EXPECT_GT(why.number("seconds"), 0);
@@ -245,10 +245,10 @@ TEST(GrblTranscriptClient, AControllerThatFallsSilentIsALostLink)
     r.port.silent = true;
     ASSERT_TRUE(waitFor([&] { return r.client.state() == dev::LinkState::Lost; }, 10000));
     ASSERT_FALSE(r.linkErrors.empty());
-    const msg::Message& why = r.linkErrors.back();
+    const motion::msg::Message& why = r.linkErrors.back();
     EXPECT_EQ(why.id, "link.lost") << why;
-    EXPECT_EQ(msg::nested(why, "cause").id, "grbl.silent") << why;
-    EXPECT_DOUBLE_EQ(msg::nested(why, "cause").number("seconds"), dev::GrblClient::kSilenceMs / 1000.0);
+    EXPECT_EQ(motion::msg::nested(why, "cause").id, "grbl.silent") << why;
+    EXPECT_DOUBLE_EQ(motion::msg::nested(why, "cause").number("seconds"), dev::GrblClient::kSilenceMs / 1000.0);
 }
 
 } // namespace

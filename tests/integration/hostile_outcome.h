@@ -17,7 +17,7 @@
 
 namespace hostile {
 
-using Journal = std::vector<sim::Firmware::JournalEntry>;
+using Journal = std::vector<dev::sim::Firmware::JournalEntry>;
 
 /// What one run did and whether the lab's invariants held.
 struct Outcome {
@@ -68,9 +68,9 @@ inline PlungerTally plungerByWell(const Journal& j, std::size_t from, const std:
 {
     PlungerTally t;
     for (std::size_t k = from; k < j.size(); ++k) {
-        if (j[k].type != static_cast<std::uint8_t>(proto::MsgType::Move))
+        if (j[k].type != static_cast<std::uint8_t>(dev::proto::MsgType::Move))
             continue;
-        const auto m = proto::decodeMoveRequest(j[k].payload);
+        const auto m = dev::proto::decodeMoveRequest(j[k].payload);
         if (!m || !(m->axisMask & (1u << ip)))
             continue;
         std::size_t slot = 0;
@@ -115,9 +115,9 @@ inline std::set<std::pair<long, long>> xyMovesUm(const Journal& j)
 {
     std::set<std::pair<long, long>> moves;
     for (const auto& e : j) {
-        if (e.type != static_cast<std::uint8_t>(proto::MsgType::Move))
+        if (e.type != static_cast<std::uint8_t>(dev::proto::MsgType::Move))
             continue;
-        if (const auto m = proto::decodeMoveRequest(e.payload); m && !m->relative && m->axisMask == 0b11)
+        if (const auto m = dev::proto::decodeMoveRequest(e.payload); m && !m->relative && m->axisMask == 0b11)
             moves.insert({std::lround(m->targets[0] / 1e3), std::lround(m->targets[1] / 1e3)});  // nm → µm
     }
     return moves;
@@ -163,12 +163,12 @@ inline void judgeCoast(Outcome& o, const Journal& j, const std::vector<int>& axe
     double lastRefreshS = -1;
     std::map<int, double> restS;
     for (const auto& e : j) {
-        if (e.type == static_cast<std::uint8_t>(proto::MsgType::JogVelocity)) {
+        if (e.type == static_cast<std::uint8_t>(dev::proto::MsgType::JogVelocity)) {
             lastRefreshS = e.timeS;
             restS.clear();
-        } else if (e.type == static_cast<std::uint8_t>(proto::MsgType::Event)) {
-            const auto ev = proto::decodeEvent(e.payload);
-            if (ev && (ev->kind == proto::EventKind::MotionDone || ev->kind == proto::EventKind::Stopped) && !restS.count(ev->axis))
+        } else if (e.type == static_cast<std::uint8_t>(dev::proto::MsgType::Event)) {
+            const auto ev = dev::proto::decodeEvent(e.payload);
+            if (ev && (ev->kind == dev::proto::EventKind::MotionDone || ev->kind == dev::proto::EventKind::Stopped) && !restS.count(ev->axis))
                 restS[ev->axis] = e.timeS;
         }
     }

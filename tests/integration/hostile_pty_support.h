@@ -106,7 +106,7 @@ public:
                 o->duplicatesAnswered = static_cast<quint64>(line.value(QStringLiteral("duplicates_answered")).toDouble());
                 continue;
             }
-            sim::Firmware::JournalEntry e;
+            dev::sim::Firmware::JournalEntry e;
             e.timeS = line.value(QStringLiteral("t")).toDouble();
             e.type = static_cast<std::uint8_t>(line.value(QStringLiteral("type")).toInt());
             e.seq = static_cast<std::uint16_t>(line.value(QStringLiteral("seq")).toInt());
@@ -305,11 +305,11 @@ inline Outcome ptyRecipe(double rate, std::uint64_t seed, const std::string& wel
         return o;
     }
     // The device's record. The plunger's account opens at the first MOVE (after homing).
-    const sim::MachineConfig machine = sim::analyzerConfig();
+    const dev::sim::MachineConfig machine = dev::sim::analyzerConfig();
     std::vector<double> wireScale;
     int ix = 0, iy = 1, ip = 3;
     for (std::size_t a = 0; a < machine.axes.size(); ++a) {
-        wireScale.push_back(machine.axes[a].unit == proto::AxisUnit::Microlitre ? 1e3 : 1e6);
+        wireScale.push_back(machine.axes[a].unit == dev::proto::AxisUnit::Microlitre ? 1e3 : 1e6);
         const char l = machine.axes[a].letter;
         if (l == 'X')
             ix = static_cast<int>(a);
@@ -319,7 +319,7 @@ inline Outcome ptyRecipe(double rate, std::uint64_t seed, const std::string& wel
             ip = static_cast<int>(a);
     }
     std::size_t from = 0;
-    while (from < j.size() && j[from].type != static_cast<std::uint8_t>(proto::MsgType::Move))
+    while (from < j.size() && j[from].type != static_cast<std::uint8_t>(dev::proto::MsgType::Move))
         ++from;
     const double p0 = from < j.size() ? j[from].commanded[static_cast<std::size_t>(ip)] : end[static_cast<std::size_t>(ip)];
     const PlungerTally t = plungerByWell(j, from, wireScale, ix, iy, ip);
@@ -348,17 +348,17 @@ inline Outcome ptyScan(double rate, std::uint64_t seed, double sideMm, const Cut
                                          QStringLiteral("40,60,%1,%2").arg(40 + sideMm).arg(60 + sideMm), QStringLiteral("--fov"), QStringLiteral("1,1"),
                                          QStringLiteral("--pixel-um"), QStringLiteral("0.5"), QStringLiteral("--exposure"), QStringLiteral("0.02")});
     QString error;
-    if (made.exitCode != 0 || !files::writeAtomically(plan, made.out.toStdString(), &error)) {
+    if (made.exitCode != 0 || !dev::files::writeAtomically(plan, made.out.toStdString(), &error)) {
         o.fail("no plan: " + made.describe());
         return o;
     }
-    const QString runLog = QDir(out).filePath(QLatin1String(scanfile::kRunLogFile));
-    auto logged = [&]() -> std::optional<scanfile::RunLog> {
+    const QString runLog = QDir(out).filePath(QLatin1String(dev::files::scan::kRunLogFile));
+    auto logged = [&]() -> std::optional<dev::files::scan::RunLog> {
         std::string text;
         QString e;
-        if (!files::readText(runLog, &text, &e))
+        if (!dev::files::readText(runLog, &text, &e))
             return std::nullopt;
-        return scanfile::parseRunLog(text).log;
+        return dev::files::scan::parseRunLog(text).log;
     };
     std::map<int, int> printed;  // tile → times a CLI said it took it
     auto count = [&](const itest::ProgramRun& r) {
@@ -472,7 +472,7 @@ inline Outcome ptyPattern(double rate, std::uint64_t seed, bool unplug)
     }
     bool pathBegun = false;
     for (const auto& e : j)
-        pathBegun = pathBegun || e.type == static_cast<std::uint8_t>(proto::MsgType::PathBegin);
+        pathBegun = pathBegun || e.type == static_cast<std::uint8_t>(dev::proto::MsgType::PathBegin);
     if (unplug && !pathBegun && !finished) {
         o.end = "cut-before-the-run";  // nothing to judge: the cable went before the path did
         return o;
@@ -635,12 +635,12 @@ inline Outcome ptyJog(double rate, std::uint64_t seed)
     }
     bool jogged = false;
     for (const auto& e : j)
-        jogged = jogged || e.type == static_cast<std::uint8_t>(proto::MsgType::JogVelocity);
+        jogged = jogged || e.type == static_cast<std::uint8_t>(dev::proto::MsgType::JogVelocity);
     if (!jogged) {
         o.end = "cut-before-the-jog";  // the connect through the damage took the 2 s: nothing to judge
         return o;
     }
-    judgeCoast(o, j, {0}, proto::kJogWatchdogMs / 1000.0);
+    judgeCoast(o, j, {0}, dev::proto::kJogWatchdogMs / 1000.0);
     return o;
 }
 

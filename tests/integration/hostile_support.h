@@ -3,7 +3,7 @@
 // joystick — on the in-process simulator over a loopback whose bytes are dropped,
 // corrupted, duplicated and delayed (dev::LinkFaults, seeded), with unplugs where the
 // job has a way back, and judges the invariants a lab relies on by the SIMULATOR's own
-// record (sim::Firmware::journal(), the machine's state), not by what the client says.
+// record (dev::sim::Firmware::journal(), the machine's state), not by what the client says.
 // The quick set (integration) and the campaign (tests/hostile/, label hostile) share it.
 #include "device/client/joystick_driver.h"
 #include "device/client/tuning_client.h"
@@ -85,7 +85,7 @@ inline Outcome recipe(double rate, std::uint64_t seed, const std::string& wells,
 {
     using namespace platestest;
     Outcome o{"recipe", rate, seed};
-    itest::SimSession s(proto::DeviceKind::Analyzer, itest::kUnpaced);
+    itest::SimSession s(dev::proto::DeviceKind::Analyzer, itest::kUnpaced);
     s.link.host().firmware().setJournal(true);
     spoil(s, rate, seed);
     if (!homeAll(s, o)) {
@@ -101,23 +101,23 @@ inline Outcome recipe(double rate, std::uint64_t seed, const std::string& wells,
 
     QTemporaryDir dir;
     const QString log = dir.filePath(QStringLiteral("run.jsonl"));
-    const plates::Recipe r = samplingRecipe(wells, volumeUl);
-    jobs::RecipeRunner runner(&s.client);
-    msg::Message error;
+    const motion::plates::Recipe r = samplingRecipe(wells, volumeUl);
+    dev::jobs::RecipeRunner runner(&s.client);
+    motion::msg::Message error;
     if (!runner.setPlan(planFor(r, s.client), QStringLiteral("hostile"), &error) || !runner.start(log, &error)) {
         o.end = "refused";
-        o.fail("refused: " + msg::debugString(error));
+        o.fail("refused: " + motion::msg::debugString(error));
         tally(s, o);
         return o;
     }
-    QObject::connect(&runner, &jobs::RecipeRunner::message, &runner, [&](const msg::Message& m, bool problem) {
+    QObject::connect(&runner, &dev::jobs::RecipeRunner::message, &runner, [&](const motion::msg::Message& m, bool problem) {
         if (problem)
             o.why += (o.why.empty() ? "" : ",") + m.id;
     });
     int skipped = 0;
     for (int round = 0; round < 8; ++round) {
         waitSettled(runner, 300000);
-        if (runner.state() != jobs::RunState::Stopped)
+        if (runner.state() != dev::jobs::RunState::Stopped)
             break;
         ++o.stops;
         if (!connect(s, o))
@@ -125,12 +125,12 @@ inline Outcome recipe(double rate, std::uint64_t seed, const std::string& wells,
         itest::spin(200);
         // The operator's choice for a well cut in the middle: skip it (a well done
         // twice is what the lab must never see).
-        runner.resume([&](const jobs::InterruptedOp&) {
+        runner.resume([&](const dev::jobs::InterruptedOp&) {
             ++skipped;
-            return jobs::InterruptedChoice::Skip;
+            return dev::jobs::InterruptedChoice::Skip;
         }, &error);
     }
-    o.end = runner.state() == jobs::RunState::Finished ? "finished" : "stopped";
+    o.end = runner.state() == dev::jobs::RunState::Finished ? "finished" : "stopped";
     if (o.end != "finished")
         o.fail("the run did not finish");
     s.waitStill();
@@ -151,7 +151,7 @@ inline Outcome recipe(double rate, std::uint64_t seed, const std::string& wells,
 inline Outcome scan(double rate, std::uint64_t seed, double sideMm, bool unplugOnce)
 {
     Outcome o{"scan", rate, seed};
-    itest::SimSession s(proto::DeviceKind::Stage, itest::kUnpaced);
+    itest::SimSession s(dev::proto::DeviceKind::Stage, itest::kUnpaced);
     s.link.host().firmware().setJournal(true);
     spoil(s, rate, seed);
     if (!homeAll(s, o)) {
@@ -173,32 +173,32 @@ inline Outcome scan(double rate, std::uint64_t seed, double sideMm, bool unplugO
     p.settleS = 0.03;
     p.exposureS = 0.02;
     QTemporaryDir dir;
-    jobs::ScanRunner runner(&s.client);
+    dev::jobs::ScanRunner runner(&s.client);
     std::map<int, int> triggers;
-    QObject::connect(&runner, &jobs::ScanRunner::triggered, &runner, [&](int tile, quint64) {
+    QObject::connect(&runner, &dev::jobs::ScanRunner::triggered, &runner, [&](int tile, quint64) {
         ++triggers[tile];
     });
     // The cable is pulled once, right after the third tile is taken (on the way to the
     // fourth), and put back 300 ms later. A tile cut in the middle of its exposure is
     // taken again, and is no tile taken twice: it was never taken.
     bool pulled = false;
-    QObject::connect(&runner, &jobs::ScanRunner::tileTaken, &runner, [&](int) {
+    QObject::connect(&runner, &dev::jobs::ScanRunner::tileTaken, &runner, [&](int) {
         if (!unplugOnce || pulled || runner.takenTiles() < 3)
             return;
         pulled = true;
         s.link.pair().unplug();
         QTimer::singleShot(300, &runner, [&] { s.link.pair().replug(); });
     });
-    msg::Message error;
+    motion::msg::Message error;
     if (!runner.prepare(p, dir.path(), false, &error) || !runner.start(&error)) {
         o.end = "refused";
-        o.fail("refused: " + msg::debugString(error));
+        o.fail("refused: " + motion::msg::debugString(error));
         tally(s, o);
         return o;
     }
     for (int round = 0; round < 8; ++round) {
         itest::waitFor([&] { return !runner.isActive(); }, 120000);
-        if (runner.state() == jobs::ScanRunner::State::Finished)
+        if (runner.state() == dev::jobs::ScanRunner::State::Finished)
             break;
         ++o.stops;
         itest::spin(400);
@@ -208,7 +208,7 @@ inline Outcome scan(double rate, std::uint64_t seed, double sideMm, bool unplugO
         if (!runner.start(&error))
             break;
     }
-    o.end = runner.state() == jobs::ScanRunner::State::Finished ? "finished" : "stopped";
+    o.end = runner.state() == dev::jobs::ScanRunner::State::Finished ? "finished" : "stopped";
     if (o.end != "finished")
         o.fail("the scan did not finish");
     judgeTiles(o, runner.records(), runner.totalTiles(), triggers, p.toleranceUm, xyMovesUm(s.link.host().firmware().journal()));
@@ -221,12 +221,12 @@ inline Outcome scan(double rate, std::uint64_t seed, double sideMm, bool unplugO
 inline Outcome pattern(double rate, std::uint64_t seed)
 {
     Outcome o{"pattern", rate, seed};
-    itest::SimSession s(proto::DeviceKind::Stage, itest::kUnpaced);
+    itest::SimSession s(dev::proto::DeviceKind::Stage, itest::kUnpaced);
     s.link.host().firmware().setJournal(true);
     spoil(s, rate, seed);
-    jobs::PatternRunner runner(&s.client);
+    dev::jobs::PatternRunner runner(&s.client);
     QObject::connect(&s.client, &dev::BenchPilotClient::telemetryReceived, &runner,
-                     [&](const proto::TelemetryBatch& b) { jobs::feedBatch(runner, s.client, b); });
+                     [&](const dev::proto::TelemetryBatch& b) { dev::jobs::feedBatch(runner, s.client, b); });
     if (!homeAll(s, o)) {
         o.end = "no-connection";
         o.fail("could not connect and home");
@@ -249,15 +249,15 @@ inline Outcome pattern(double rate, std::uint64_t seed)
     }
     for (int round = 0; round < 8; ++round) {
         itest::waitFor([&] { return !runner.busy(); }, 120000);
-        if (runner.state() != jobs::PatternRunner::State::Interrupted)
+        if (runner.state() != dev::jobs::PatternRunner::State::Interrupted)
             break;
         ++o.stops;
         if (!connect(s, o))
             break;
         runner.resume();
-        itest::waitFor([&] { return runner.state() != jobs::PatternRunner::State::Interrupted; }, 5000);
+        itest::waitFor([&] { return runner.state() != dev::jobs::PatternRunner::State::Interrupted; }, 5000);
     }
-    o.end = runner.state() == jobs::PatternRunner::State::Done ? "finished" : "stopped";
+    o.end = runner.state() == dev::jobs::PatternRunner::State::Done ? "finished" : "stopped";
     if (o.end != "finished")
         o.fail("the pattern did not finish");
     if (runner.segmentsDone() != path.size())
@@ -280,7 +280,7 @@ inline Outcome pattern(double rate, std::uint64_t seed)
 inline Outcome tuningCut(double rate, std::uint64_t seed)
 {
     Outcome o{"tuning", rate, seed};
-    itest::SimSession s(proto::DeviceKind::Stage, itest::kUnpaced);
+    itest::SimSession s(dev::proto::DeviceKind::Stage, itest::kUnpaced);
     spoil(s, rate, seed);
     if (!homeAll(s, o)) {
         o.end = "no-connection";
@@ -291,7 +291,7 @@ inline Outcome tuningCut(double rate, std::uint64_t seed)
     const int x = s.axis('X');
     s.call([&](auto cb) { s.client.move({{x, 50.0}}, false, 0, cb); }, 10000);
     s.waitStill();
-    const sim::PidGains before = s.link.machine().tuning().gains(x);
+    const dev::sim::PidGains before = s.link.machine().tuning().gains(x);
     dev::InstrumentTarget target(s.client.tuning(), x, QStringLiteral("Stage"));
     dev::TuningRunner runner;
     dev::TuningRunner::ZnOptions opt;
@@ -320,10 +320,10 @@ inline Outcome tuningCut(double rate, std::uint64_t seed)
     o.end = s.link.machine().tuning().testRunning(x) ? "still-testing" : "cut";
     if (o.end != "cut")
         o.fail("the device went on testing after the cut");
-    const sim::PidGains after = s.link.machine().tuning().gains(x);
+    const dev::sim::PidGains after = s.link.machine().tuning().gains(x);
     if (after.kp != before.kp || after.ki != before.ki || after.kd != before.kd)
         o.fail("gains not back to what they were");
-    if (s.link.machine().status().axes[static_cast<std::size_t>(x)].flags & proto::AxisMoving)
+    if (s.link.machine().status().axes[static_cast<std::size_t>(x)].flags & dev::proto::AxisMoving)
         o.fail("the axis still moves after the cut");
     tally(s, o);
     return o;
@@ -334,7 +334,7 @@ inline Outcome tuningCut(double rate, std::uint64_t seed)
 inline Outcome joystick(double rate, std::uint64_t seed, int holdMs)
 {
     Outcome o{"joystick", rate, seed};
-    itest::SimSession s(proto::DeviceKind::Stage, itest::kUnpaced);  // homing runs on a sped-up clock
+    itest::SimSession s(dev::proto::DeviceKind::Stage, itest::kUnpaced);  // homing runs on a sped-up clock
     spoil(s, rate, seed);
     if (!homeAll(s, o)) {
         o.end = "no-connection";
@@ -348,7 +348,7 @@ inline Outcome joystick(double rate, std::uint64_t seed, int holdMs)
     itest::spin(holdMs);
     auto moving = [&] {
         const auto st = s.link.machine().status();
-        return (st.axes[0].flags & proto::AxisMoving) || (st.axes[1].flags & proto::AxisMoving);
+        return (st.axes[0].flags & dev::proto::AxisMoving) || (st.axes[1].flags & dev::proto::AxisMoving);
     };
     if (!moving())
         o.fail("the stick did not move the stage");

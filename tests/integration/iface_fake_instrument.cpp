@@ -18,11 +18,11 @@ dev::Capabilities FakeInstrument::defaultCapabilities()
 FakeInstrument::FakeInstrument(double accelMmS2, double jerkMmS3, dev::Capabilities capabilities, QObject* parent)
     : dev::Instrument(parent), m_caps(capabilities)
 {
-    m_identity.kind = proto::DeviceKind::Stage;
+    m_identity.kind = dev::proto::DeviceKind::Stage;
     m_identity.family = QStringLiteral("Fake 0.1");
     m_identity.model = QStringLiteral("in-memory stage");
     m_identity.firmware = QStringLiteral("none");
-    m_identity.motionProfile = jerkMmS3 > 0 ? proto::MotionProfile::JerkLimited : proto::MotionProfile::Trapezoid;
+    m_identity.motionProfile = jerkMmS3 > 0 ? dev::proto::MotionProfile::JerkLimited : dev::proto::MotionProfile::Trapezoid;
     for (const char letter : {'X', 'Y'}) {
         dev::AxisDescriptor a;
         a.letter = QLatin1Char(letter);
@@ -66,14 +66,14 @@ void FakeInstrument::disconnectLink()
     emit stateChanged(m_state);
 }
 
-msg::Message FakeInstrument::missingReason(dev::Capability c) const
+motion::msg::Message FakeInstrument::missingReason(dev::Capability c) const
 {
-    msg::Message m = Instrument::missingReason(c);
-    m.args.push_back(msg::term("because", "capability.because.fake"));
+    motion::msg::Message m = Instrument::missingReason(c);
+    m.args.push_back(motion::msg::term("because", "capability.because.fake"));
     return m;
 }
 
-void FakeInstrument::arrive(const std::vector<int>& axes, double seconds, proto::EventKind kind)
+void FakeInstrument::arrive(const std::vector<int>& axes, double seconds, dev::proto::EventKind kind)
 {
     later([this, axes, seconds, kind] {
         m_status.deviceTimeUs += static_cast<quint64>(std::llround(seconds * 1e6)) + 1000;
@@ -93,7 +93,7 @@ void FakeInstrument::arrive(const std::vector<int>& axes, double seconds, proto:
 void FakeInstrument::home(quint8 axisMask, Callback done)
 {
     if (!isReady())
-        return refuse(done, dev::RequestError::Kind::LinkDown, msg::make("request.instrument_not_connected"));
+        return refuse(done, dev::RequestError::Kind::LinkDown, motion::msg::make("request.instrument_not_connected"));
     std::vector<int> axes;
     for (int a = 0; a < m_status.axes.size(); ++a)
         if (axisMask == 0 || (axisMask & (1u << a))) {
@@ -105,19 +105,19 @@ void FakeInstrument::home(quint8 axisMask, Callback done)
         if (done)
             done(std::nullopt);
     });
-    arrive(axes, 0.5, proto::EventKind::HomeDone);
+    arrive(axes, 0.5, dev::proto::EventKind::HomeDone);
 }
 
 void FakeInstrument::move(const QVector<QPair<int, double>>& targets, bool relative, double speed, Callback done)
 {
     if (!isReady())
-        return refuse(done, dev::RequestError::Kind::LinkDown, msg::make("request.instrument_not_connected"));
+        return refuse(done, dev::RequestError::Kind::LinkDown, motion::msg::make("request.instrument_not_connected"));
     moves.push_back(targets);
     std::vector<int> axes;
     double lengthMm = 0;
     for (const auto& [axis, value] : targets) {
         if (axis < 0 || axis >= m_status.axes.size())
-            return refuse(done, dev::RequestError::Kind::Invalid, msg::make("request.move_no_such_axis", {msg::integer("index", axis, msg::Unit::None)}));
+            return refuse(done, dev::RequestError::Kind::Invalid, motion::msg::make("request.move_no_such_axis", {motion::msg::integer("index", axis, motion::msg::Unit::None)}));
         auto& r = m_status.axes[axis];
         const double to = relative ? r.commanded + value : value;
         lengthMm = std::hypot(lengthMm, to - r.commanded);
@@ -132,7 +132,7 @@ void FakeInstrument::move(const QVector<QPair<int, double>>& targets, bool relat
         if (done)
             done(std::nullopt);
     });
-    arrive(axes, profile ? profile->duration() : 0.0, proto::EventKind::MotionDone);
+    arrive(axes, profile ? profile->duration() : 0.0, dev::proto::EventKind::MotionDone);
 }
 
 void FakeInstrument::jogStep(int axis, double delta, double speed, Callback done) { move({{axis, delta}}, true, speed, std::move(done)); }
@@ -214,7 +214,7 @@ void FakeInstrument::dwell(double seconds, Callback done)
 void FakeInstrument::pulseTrigger(double widthS, Callback done)
 {
     if (!m_caps.testFlag(dev::Capability::TriggerOutput))
-        return refuse(done, dev::RequestError::Kind::Invalid, msg::make("request.no_trigger_output"));
+        return refuse(done, dev::RequestError::Kind::Invalid, motion::msg::make("request.no_trigger_output"));
     triggerWidthsS.push_back(widthS);
     later([done] {
         if (done)
@@ -222,7 +222,7 @@ void FakeInstrument::pulseTrigger(double widthS, Callback done)
     });
 }
 
-void FakeInstrument::subscribe(const QVector<proto::ChannelRef>&, int, SubscribeCallback done)
+void FakeInstrument::subscribe(const QVector<dev::proto::ChannelRef>&, int, SubscribeCallback done)
 {
     later([done] {
         if (done)

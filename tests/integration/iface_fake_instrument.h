@@ -51,10 +51,10 @@ public:
     void readStatus(StatusCallback done) override;
     void dwell(double seconds, Callback done) override;
     void pulseTrigger(double widthS, Callback done = {}) override;
-    void subscribe(const QVector<proto::ChannelRef>&, int, SubscribeCallback done = {}) override;
-    const QVector<proto::ChannelRef>& subscribedChannels() const override { return m_channels; }
+    void subscribe(const QVector<dev::proto::ChannelRef>&, int, SubscribeCallback done = {}) override;
+    const QVector<dev::proto::ChannelRef>& subscribedChannels() const override { return m_channels; }
     int subscribedRateHz() const override { return 0; }
-    double toAxisUnits(const proto::ChannelRef&, std::int32_t value) const override { return value / 1e6; }
+    double toAxisUnits(const dev::proto::ChannelRef&, std::int32_t value) const override { return value / 1e6; }
     dev::PathClient* paths() override { return nullptr; }
     dev::TuningClient* tuning() override { return nullptr; }
 
@@ -64,19 +64,19 @@ public:
     std::vector<std::map<int, double>> jogs;
 
 protected:
-    msg::Message missingReason(dev::Capability c) const override;
+    motion::msg::Message missingReason(dev::Capability c) const override;
 
 private:
     /// Answers on the next turn of the event loop, as a real link would.
     void later(std::function<void()> f);
-    void arrive(const std::vector<int>& axes, double seconds, proto::EventKind kind);
+    void arrive(const std::vector<int>& axes, double seconds, dev::proto::EventKind kind);
 
     dev::LinkState m_state = dev::LinkState::Disconnected;
     dev::DeviceIdentity m_identity;
     dev::InstrumentStatus m_status;
     QVector<dev::SoftLimits> m_limits;
     dev::Capabilities m_caps;
-    QVector<proto::ChannelRef> m_channels;
+    QVector<dev::proto::ChannelRef> m_channels;
 };
 
 } // namespace itest

@@ -25,7 +25,7 @@ using itest::waitFor;
 namespace {
 
 struct Rig {
-    explicit Rig(const sim::MachineConfig& cfg, bool helloExtensions = true) : link(cfg, 0)
+    explicit Rig(const dev::sim::MachineConfig& cfg, bool helloExtensions = true) : link(cfg, 0)
     {
         link.host().firmware().setHelloExtensions(helloExtensions);
         client.setTransport(link.hostEnd());
@@ -45,10 +45,10 @@ struct Rig {
 
 TEST(IfaceHelloLimits, TheIdentityCarriesTheSimulatorsPlannerLimits)
 {
-    Rig r(sim::stageConfig());
+    Rig r(dev::sim::stageConfig());
     ASSERT_TRUE(r.connect());
     const dev::DeviceIdentity& id = r.client.identity();
-    EXPECT_EQ(id.motionProfile, proto::MotionProfile::JerkLimited);
+    EXPECT_EQ(id.motionProfile, dev::proto::MotionProfile::JerkLimited);
     ASSERT_EQ(id.axes.size(), 2);
     EXPECT_DOUBLE_EQ(id.axes[0].maxAccel, 200);
     EXPECT_DOUBLE_EQ(id.axes[0].maxJerk, 4000);
@@ -58,10 +58,10 @@ TEST(IfaceHelloLimits, TheIdentityCarriesTheSimulatorsPlannerLimits)
 
 TEST(IfaceHelloLimits, TheAnalyzersSCurveArrivesWithItsAccelerationPhase)
 {
-    Rig r(sim::analyzerConfig());
+    Rig r(dev::sim::analyzerConfig());
     ASSERT_TRUE(r.connect());
     const dev::DeviceIdentity& id = r.client.identity();
-    EXPECT_EQ(id.motionProfile, proto::MotionProfile::SeedSCurve);
+    EXPECT_EQ(id.motionProfile, dev::proto::MotionProfile::SeedSCurve);
     EXPECT_DOUBLE_EQ(id.axes[0].minAccelTimeS, 0.1);
     EXPECT_DOUBLE_EQ(id.axes[1].maxAccel, 2000);
     EXPECT_DOUBLE_EQ(id.axes[3].maxAccel, 5000);  // µL/s² on the pump
@@ -69,18 +69,18 @@ TEST(IfaceHelloLimits, TheAnalyzersSCurveArrivesWithItsAccelerationPhase)
 
 TEST(IfaceHelloLimits, AProtocol10DeviceStillConnectsWithoutThem)
 {
-    Rig r(sim::stageConfig(), false);
+    Rig r(dev::sim::stageConfig(), false);
     ASSERT_TRUE(r.connect());
     const dev::DeviceIdentity& id = r.client.identity();
     EXPECT_FALSE(id.reportsMotionLimits());
     EXPECT_DOUBLE_EQ(id.axes[0].maxAccel, 0);
     EXPECT_DOUBLE_EQ(id.axes[0].maxSpeed, 20);  // what protocol 1.0 did carry
     EXPECT_FALSE(r.client.capabilities().testFlag(dev::Capability::MachineLimits));
-    const msg::Message why = r.client.whyNot(dev::Capability::MachineLimits);
+    const motion::msg::Message why = r.client.whyNot(dev::Capability::MachineLimits);
     EXPECT_EQ(why.id, "capability.no_machine_limits");
     EXPECT_EQ(why.text("because"), "capability.because.older_firmware");
     // Estimates fall back to the reference stage's planner, as before the limits existed.
-    const auto m = jobs::stageModelOf(id, r.client.softLimits());
+    const auto m = dev::jobs::stageModelOf(id, r.client.softLimits());
     EXPECT_DOUBLE_EQ(m.maxAccelMmS2[0], motion::scan::StageModel{}.maxAccelMmS2[0]);
     // The refused HELLO cost nothing else: the link works.
     bool moved = false;
@@ -90,7 +90,7 @@ TEST(IfaceHelloLimits, AProtocol10DeviceStillConnectsWithoutThem)
 
 TEST(IfaceHelloLimits, AStageThatReportsOtherLimitsGetsOtherScanEstimates)
 {
-    auto estimate = [](const sim::MachineConfig& cfg) {
+    auto estimate = [](const dev::sim::MachineConfig& cfg) {
         Rig r(cfg);
         EXPECT_TRUE(r.connect());
         motion::scan::ScanPlan p;
@@ -99,17 +99,17 @@ TEST(IfaceHelloLimits, AStageThatReportsOtherLimitsGetsOtherScanEstimates)
         p.camera.source = motion::scan::FieldSource::Direct;
         p.camera.fieldWidthMm = p.camera.fieldHeightMm = 1.0;
         QTemporaryDir dir;
-        jobs::ScanRunner runner(&r.client);
-        msg::Message error;
+        dev::jobs::ScanRunner runner(&r.client);
+        motion::msg::Message error;
         EXPECT_TRUE(runner.prepare(p, dir.path(), false, &error)) << error;
         return runner.estimate().moveS;
     };
-    sim::MachineConfig slow = sim::stageConfig();
+    dev::sim::MachineConfig slow = dev::sim::stageConfig();
     for (auto& a : slow.axes) {
         a.maxAccel = 50;
         a.maxJerk = 500;
     }
-    const double reference = estimate(sim::stageConfig());
+    const double reference = estimate(dev::sim::stageConfig());
     const double slower = estimate(slow);
     EXPECT_GT(reference, 0);
     EXPECT_GT(slower, 1.3 * reference);
@@ -118,23 +118,23 @@ TEST(IfaceHelloLimits, AStageThatReportsOtherLimitsGetsOtherScanEstimates)
 namespace {
 
 /// Seconds from a MOVE until every axis in it reported MotionDone, on a bare simulated machine.
-double simulatedSeconds(sim::SimMachine& m, const proto::MoveRequest& r)
+double simulatedSeconds(dev::sim::SimMachine& m, const dev::proto::MoveRequest& r)
 {
     m.takeEvents();
     const double t0 = m.timeS();
     EXPECT_FALSE(m.move(r).has_value());
-    int pending = proto::popcount8(r.axisMask);
+    int pending = dev::proto::popcount8(r.axisMask);
     for (int tick = 0; tick < 400000 && pending > 0; ++tick) {
         m.tick();
         for (const auto& e : m.takeEvents())
-            if (e.kind == proto::EventKind::MotionDone)
+            if (e.kind == dev::proto::EventKind::MotionDone)
                 --pending;
     }
     EXPECT_EQ(pending, 0);
     return m.timeS() - t0;
 }
 
-void homeAll(sim::SimMachine& m)
+void homeAll(dev::sim::SimMachine& m)
 {
     ASSERT_FALSE(m.home(0).has_value());
     for (int tick = 0; tick < 3000000; ++tick) {
@@ -155,32 +155,32 @@ void homeAll(sim::SimMachine& m)
 TEST(IfaceHelloLimits, AnAnalyzerWithOtherLimitsIsTimedAsItRuns)
 {
     // Not the machine the deck file describes: gentler XY, a longer S-curve phase, a slower default.
-    sim::MachineConfig cfg = sim::analyzerConfig();
+    dev::sim::MachineConfig cfg = dev::sim::analyzerConfig();
     cfg.axes[0].maxAccel = 300;
     cfg.axes[1].maxAccel = 400;
     cfg.axes[0].accelTimeS = cfg.axes[1].accelTimeS = 0.15;
     cfg.axes[0].defaultSpeed = cfg.axes[1].defaultSpeed = 40;
     Rig r(cfg);
     ASSERT_TRUE(r.connect());
-    const plates::Deck file = platefiles::builtinDeck();
-    const plates::Deck device = jobs::deckWithDeviceMotion(file, r.client.identity());
+    const motion::plates::Deck file = dev::files::plates::builtinDeck();
+    const motion::plates::Deck device = dev::jobs::deckWithDeviceMotion(file, r.client.identity());
 
-    sim::SimMachine m(cfg);
+    dev::sim::SimMachine m(cfg);
     homeAll(m);
     const double fromX = m.commandedLogical(0), fromY = m.commandedLogical(1);
     for (const double speed : {0.0, 100.0}) {
         SCOPED_TRACE(speed);
-        proto::MoveRequest req;
+        dev::proto::MoveRequest req;
         req.axisMask = 0b0011;
         req.speed = static_cast<std::uint32_t>(std::lround(speed * 1e6));
         const double toX = speed > 0 ? fromX : 120.0, toY = speed > 0 ? fromY : 150.0;  // there and back
         req.targets = {static_cast<std::int32_t>(std::lround(toX * 1e6)), static_cast<std::int32_t>(std::lround(toY * 1e6))};
         const double dx = toX - m.commandedLogical(0), dy = toY - m.commandedLogical(1);
-        const double byDevice = plates::moveTimeS({{&device.x, dx}, {&device.y, dy}}, speed);
-        const double byFile = plates::moveTimeS({{&file.x, dx}, {&file.y, dy}}, speed);
+        const double byDevice = motion::plates::moveTimeS({{&device.x, dx}, {&device.y, dy}}, speed);
+        const double byFile = motion::plates::moveTimeS({{&file.x, dx}, {&file.y, dy}}, speed);
         const double simulated = simulatedSeconds(m, req);
         // The firmware ends a segment on the first 100 µs tick at or past its duration.
-        EXPECT_NEAR(simulated, byDevice, 2 * sim::SimMachine::kTickS);
+        EXPECT_NEAR(simulated, byDevice, 2 * dev::sim::SimMachine::kTickS);
         EXPECT_GT(std::abs(simulated - byFile), 0.05) << "the deck file's numbers would have missed it";
     }
 }

@@ -92,7 +92,7 @@ TEST(IfaceProxy, ReasonsAreTheBackendsOwn)
     dev::InstrumentProxy proxy;
     proxy.setBackend(new FakeInstrument(200, 4000, dev::Capability::Homing));
     proxy.connectLink();
-    const msg::Message why = proxy.whyNot(dev::Capability::PidGains);
+    const motion::msg::Message why = proxy.whyNot(dev::Capability::PidGains);
     EXPECT_EQ(why.id, "capability.no_pid_gains");
     EXPECT_EQ(why.text("instrument"), "instrument.stage");
     EXPECT_EQ(why.text("family"), "Fake 0.1");
@@ -102,7 +102,7 @@ TEST(IfaceProxy, ReasonsAreTheBackendsOwn)
 
 TEST(IfaceProxy, TheBenchPilotBackendBehindAProxyRunsTheSimulator)
 {
-    dev::SimulatedLink link(proto::DeviceKind::Stage, 0);
+    dev::SimulatedLink link(dev::proto::DeviceKind::Stage, 0);
     dev::InstrumentProxy proxy;
     auto* client = new dev::BenchPilotClient;
     proxy.setBackend(client);
@@ -116,7 +116,7 @@ TEST(IfaceProxy, TheBenchPilotBackendBehindAProxyRunsTheSimulator)
     EXPECT_TRUE(proxy.can(dev::Capability::PathQueue));
     EXPECT_TRUE(proxy.can(dev::Capability::StopsOnHostLoss));
     // The protocol has no trigger output; the reason says so.
-    const msg::Message why = proxy.whyNot(dev::Capability::TriggerOutput);
+    const motion::msg::Message why = proxy.whyNot(dev::Capability::TriggerOutput);
     EXPECT_EQ(why.id, "capability.no_trigger_output");
     EXPECT_EQ(why.text("because"), "capability.because.not_in_protocol");
     bool refused = false;

@@ -16,7 +16,7 @@
 
 using itest::FakeInstrument;
 using itest::waitFor;
-using jobs::ScanRunner;
+using dev::jobs::ScanRunner;
 
 namespace {
 
@@ -51,7 +51,7 @@ TEST(IfaceRunnerOnFake, AScanRunsToTheEndOnABackendWithoutAProtocol)
     ASSERT_TRUE(connectAndHome(fake));
     QTemporaryDir dir;
     ScanRunner runner(&fake);
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(runner.prepare(fourTiles(), dir.path(), false, &error)) << error;
     ASSERT_EQ(runner.totalTiles(), 4);
     ASSERT_TRUE(runner.start(&error)) << error;
@@ -79,7 +79,7 @@ TEST(IfaceRunnerOnFake, WithoutATriggerOutputNoPulseIsAskedFor)
     ASSERT_TRUE(connectAndHome(fake));
     QTemporaryDir dir;
     ScanRunner runner(&fake);
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(runner.prepare(fourTiles(), dir.path(), false, &error));
     ASSERT_TRUE(runner.start(&error));
     ASSERT_TRUE(waitFor([&] { return runner.state() == ScanRunner::State::Finished; }, 10000));
@@ -95,7 +95,7 @@ TEST(IfaceRunnerOnFake, TheScanEstimateFollowsTheLimitsTheDeviceReports)
         EXPECT_TRUE(connectAndHome(fake));
         QTemporaryDir dir;
         ScanRunner runner(&fake);
-        msg::Message error;
+        motion::msg::Message error;
         EXPECT_TRUE(runner.prepare(fourTiles(), dir.path(), false, &error)) << error;
         return runner.estimate().moveS;
     };

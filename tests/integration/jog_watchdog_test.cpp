@@ -11,7 +11,7 @@
 #include <functional>
 
 using namespace itest;
-using K = proto::EventKind;
+using K = dev::proto::EventKind;
 using dev::LinkFaults;
 using dev::LoopbackPair;
 
@@ -25,7 +25,7 @@ struct Sample {
 };
 
 struct WatchdogCase {
-    proto::DeviceKind kind;
+    dev::proto::DeviceKind kind;
     const char* name;
     double jogSpeed;  ///< axis units per second
 };
@@ -42,16 +42,16 @@ TEST_P(JogWatchdog, JogWhoseRefreshesStopIsAtRestWithin250msOfTheLastRefresh)
     const int x = s.axis('X');
 
     // Fine-grained position telemetry of X, with the device's own timestamps.
-    const QVector<proto::ChannelRef> channels{{static_cast<std::uint8_t>(x), proto::ChannelKind::Commanded},
-                                              {static_cast<std::uint8_t>(x), proto::ChannelKind::Measured}};
+    const QVector<dev::proto::ChannelRef> channels{{static_cast<std::uint8_t>(x), dev::proto::ChannelKind::Commanded},
+                                              {static_cast<std::uint8_t>(x), dev::proto::ChannelKind::Measured}};
     bool subscribed = false;
     s.client.subscribe(channels, 1000, [&](const auto& e, const auto&) {
-        EXPECT_FALSE(e) << msg::debugString(e->message);
+        EXPECT_FALSE(e) << motion::msg::debugString(e->message);
         subscribed = true;
     });
     ASSERT_TRUE(waitFor([&] { return subscribed; }, 3000));
     std::vector<Sample> samples;
-    QObject::connect(&s.client, &dev::BenchPilotClient::telemetryReceived, &s.client, [&](const proto::TelemetryBatch& b) {
+    QObject::connect(&s.client, &dev::BenchPilotClient::telemetryReceived, &s.client, [&](const dev::proto::TelemetryBatch& b) {
         const std::size_t n = b.channels.size();
         if (n != 2)
             return;
@@ -64,16 +64,16 @@ TEST_P(JogWatchdog, JogWhoseRefreshesStopIsAtRestWithin250msOfTheLastRefresh)
     // after the simulator has taken the bytes in, so the clock is the receive time.
     std::uint64_t lastRefreshUs = 0;
     int refreshes = 0;
-    proto::FrameDecoder deviceSide;
+    dev::proto::FrameDecoder deviceSide;
     QObject::connect(s.link.pair().end(LoopbackPair::B), &dev::Transport::bytesReceived, &s.client,
                      [&](const QByteArray& bytes) {
-                         std::vector<proto::Frame> frames;
+                         std::vector<dev::proto::Frame> frames;
                          deviceSide.feed(reinterpret_cast<const std::uint8_t*>(bytes.constData()),
                                          static_cast<std::size_t>(bytes.size()), frames);
                          for (const auto& f : frames) {
-                             if (f.type != static_cast<std::uint8_t>(proto::MsgType::JogVelocity))
+                             if (f.type != static_cast<std::uint8_t>(dev::proto::MsgType::JogVelocity))
                                  continue;
-                             const auto r = proto::decodeJogVelocityRequest(f.payload);
+                             const auto r = dev::proto::decodeJogVelocityRequest(f.payload);
                              if (r && !r->velocities.empty() && r->velocities[0] != 0) {
                                  lastRefreshUs = s.link.machine().timeUs();
                                  ++refreshes;
@@ -135,7 +135,7 @@ TEST_P(JogWatchdog, JogWhoseRefreshesStopIsAtRestWithin250msOfTheLastRefresh)
     std::printf("[ info ] %s jog at %.1f mm/s, refreshes cut: watchdog tripped %.1f ms after the last refresh; "
                 "commanded still at %.1f ms, %s still at %.1f ms, rest event at %.1f ms (device clock)\n",
                 c.name, c.jogSpeed, tripMs, commandedStillMs,
-                c.kind == proto::DeviceKind::Stage ? "grating" : "encoder", measuredStillMs, restEventMs);
+                c.kind == dev::proto::DeviceKind::Stage ? "grating" : "encoder", measuredStillMs, restEventMs);
     std::fflush(stdout);
 
     ASSERT_GT(commandedStillUs, 0u) << "the axis never moved in the recorded window";
@@ -152,6 +152,6 @@ TEST_P(JogWatchdog, JogWhoseRefreshesStopIsAtRestWithin250msOfTheLastRefresh)
 }
 
 INSTANTIATE_TEST_SUITE_P(BothInstruments, JogWatchdog,
-                         ::testing::Values(WatchdogCase{proto::DeviceKind::Analyzer, "analyzer", 50.0},
-                                           WatchdogCase{proto::DeviceKind::Stage, "stage", 20.0}),
+                         ::testing::Values(WatchdogCase{dev::proto::DeviceKind::Analyzer, "analyzer", 50.0},
+                                           WatchdogCase{dev::proto::DeviceKind::Stage, "stage", 20.0}),
                          [](const auto& p) { return std::string(p.param.name); });

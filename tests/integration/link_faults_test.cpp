@@ -17,7 +17,7 @@
 #include <thread>
 
 using namespace itest;
-using K = proto::EventKind;
+using K = dev::proto::EventKind;
 using dev::LinkFaults;
 using dev::LinkState;
 using dev::LoopbackPair;
@@ -59,7 +59,7 @@ LinkFaults dropEverything()
 
 TEST(LinkFaults, GarbageFromTheDeviceIsCountedAndSkippedWithoutReconnecting)
 {
-    SimSession s(proto::DeviceKind::Analyzer);
+    SimSession s(dev::proto::DeviceKind::Analyzer);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
     QSignalSpy states(&s.client, &dev::BenchPilotClient::stateChanged);
     const dev::LinkStats before = s.client.stats();
@@ -96,16 +96,16 @@ TEST(LinkFaults, GarbageFromTheDeviceIsCountedAndSkippedWithoutReconnecting)
     const double start = s.link.machine().commandedLogical(x);
     const std::size_t mark = s.events.size();
     const auto err = s.call([&](auto cb) { s.client.move({{x, 1.5}}, true, 0, cb); });
-    ASSERT_FALSE(err) << msg::debugString(err->message);
+    ASSERT_FALSE(err) << motion::msg::debugString(err->message);
     ASSERT_TRUE(s.waitEvent(K::MotionDone, x, mark));
     EXPECT_NEAR(s.link.machine().commandedLogical(x), start + 1.5, 1e-6);
 }
 
 TEST(LinkFaults, GarbageToTheDeviceIsCountedThereAndRequestsStillWork)
 {
-    SimSession s(proto::DeviceKind::Stage);
+    SimSession s(dev::proto::DeviceKind::Stage);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
-    const proto::DecoderStats before = s.link.host().firmware().decoderStats();
+    const dev::proto::DecoderStats before = s.link.host().firmware().decoderStats();
     const auto executedBefore = s.link.host().firmware().executedRequests();
 
     std::mt19937 rng(99);
@@ -118,7 +118,7 @@ TEST(LinkFaults, GarbageToTheDeviceIsCountedThereAndRequestsStillWork)
     }
     EXPECT_TRUE(waitFor([&] { return s.link.host().firmware().decoderStats().droppedBytes - before.droppedBytes >= std::uint64_t(injected); }, 5000));
     spin(100);
-    const proto::DecoderStats after = s.link.host().firmware().decoderStats();
+    const dev::proto::DecoderStats after = s.link.host().firmware().decoderStats();
     EXPECT_EQ(after.droppedBytes - before.droppedBytes, std::uint64_t(injected));
     EXPECT_GT(after.malformed + after.crcErrors - before.malformed - before.crcErrors, 0u);
     EXPECT_GT(s.link.host().firmware().executedRequests(), executedBefore) << "status polls kept being served";
@@ -134,7 +134,7 @@ TEST(LinkFaults, GarbageToTheDeviceIsCountedThereAndRequestsStillWork)
 
 TEST(LinkFaults, CorruptedRequestIsNeverExecutedAndItsRetransmissionRunsOnce)
 {
-    SimSession s(proto::DeviceKind::Analyzer);
+    SimSession s(dev::proto::DeviceKind::Analyzer);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
     const int x = s.axis('X');
     auto& fw = s.link.host().firmware();
@@ -143,7 +143,7 @@ TEST(LinkFaults, CorruptedRequestIsNeverExecutedAndItsRetransmissionRunsOnce)
     // the line is clean again for everything after it, retransmissions included.
     int moveWrites = 0;
     s.tap.beforeWrite = [&](const QByteArray& bytes) {
-        if (containsFrame(bytes, proto::MsgType::Move) && moveWrites++ == 0)
+        if (containsFrame(bytes, dev::proto::MsgType::Move) && moveWrites++ == 0)
             s.link.pair().setFaults(LoopbackPair::A, corruptEveryByte());
     };
     s.tap.afterWrite = [&](const QByteArray&) { s.link.pair().setFaults(LoopbackPair::A, LinkFaults{}); };
@@ -155,7 +155,7 @@ TEST(LinkFaults, CorruptedRequestIsNeverExecutedAndItsRetransmissionRunsOnce)
     const std::size_t mark = s.events.size();
 
     const auto err = s.call([&](auto cb) { s.client.move({{x, 5.0}}, true, 0, cb); });
-    ASSERT_FALSE(err) << msg::debugString(err->message);
+    ASSERT_FALSE(err) << motion::msg::debugString(err->message);
     EXPECT_GE(moveWrites, 2) << "the client must have sent the move again";
     EXPECT_GE(s.client.stats().retransmits - retransmitsBefore, 1u);
     EXPECT_GT(fw.decoderStats().crcErrors + fw.decoderStats().malformed, crcBefore) << "the device saw the damaged frame";
@@ -171,7 +171,7 @@ TEST(LinkFaults, CorruptedRequestIsNeverExecutedAndItsRetransmissionRunsOnce)
 
 TEST(LinkFaults, RequestWhoseReplyIsLostIsRetransmittedAndExecutedOnce)
 {
-    SimSession s(proto::DeviceKind::Analyzer);
+    SimSession s(dev::proto::DeviceKind::Analyzer);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
     const int x = s.axis('X');
     auto& fw = s.link.host().firmware();
@@ -180,20 +180,20 @@ TEST(LinkFaults, RequestWhoseReplyIsLostIsRetransmittedAndExecutedOnce)
     // everything the device sends is lost: its reply never reaches the client.
     bool armed = true, replyDropped = false;
     s.tap.beforeWrite = [&](const QByteArray& bytes) {
-        if (armed && containsFrame(bytes, proto::MsgType::Move)) {
+        if (armed && containsFrame(bytes, dev::proto::MsgType::Move)) {
             armed = false;
             s.link.pair().setFaults(LoopbackPair::B, dropEverything());
         }
     };
-    proto::FrameDecoder deviceSide;
+    dev::proto::FrameDecoder deviceSide;
     QObject::connect(s.link.pair().end(LoopbackPair::B), &dev::Transport::bytesReceived, &s.client,
                      [&](const QByteArray& bytes) {
                          // Runs after the simulator has read these bytes and written its answer.
-                         std::vector<proto::Frame> frames;
+                         std::vector<dev::proto::Frame> frames;
                          deviceSide.feed(reinterpret_cast<const std::uint8_t*>(bytes.constData()),
                                          static_cast<std::size_t>(bytes.size()), frames);
                          for (const auto& f : frames)
-                             if (f.type == static_cast<std::uint8_t>(proto::MsgType::Move) && !replyDropped) {
+                             if (f.type == static_cast<std::uint8_t>(dev::proto::MsgType::Move) && !replyDropped) {
                                  replyDropped = true;
                                  s.link.pair().setFaults(LoopbackPair::B, LinkFaults{});
                              }
@@ -206,7 +206,7 @@ TEST(LinkFaults, RequestWhoseReplyIsLostIsRetransmittedAndExecutedOnce)
     const std::size_t mark = s.events.size();
 
     const auto err = s.call([&](auto cb) { s.client.move({{x, 5.0}}, true, 0, cb); });
-    ASSERT_FALSE(err) << msg::debugString(err->message);
+    ASSERT_FALSE(err) << motion::msg::debugString(err->message);
     EXPECT_TRUE(replyDropped);
     EXPECT_GE(s.client.stats().retransmits - retransmitsBefore, 1u);
     EXPECT_GE(fw.duplicateRequests() - dupBefore, 1u) << "the device recognised the repeat";
@@ -225,7 +225,7 @@ TEST(LinkFaults, DeviceThatNeverAnswersGivesALinkErrorAfterTwoSecondsOfSilence)
     pair.end(LoopbackPair::B)->open();  // a device is there, powered, and mute
     dev::BenchPilotClient client;
     QStringList errors;
-    QObject::connect(&client, &dev::BenchPilotClient::linkError, &client, [&](const msg::Message& m) { errors << QString::fromStdString(msg::debugString(m)); });
+    QObject::connect(&client, &dev::BenchPilotClient::linkError, &client, [&](const motion::msg::Message& m) { errors << QString::fromStdString(motion::msg::debugString(m)); });
     client.setTransport(pair.end(LoopbackPair::A));
 
     QElapsedTimer wall;
@@ -245,7 +245,7 @@ TEST(LinkFaults, DeviceThatNeverAnswersGivesALinkErrorAfterTwoSecondsOfSilence)
 
 TEST(LinkFaults, DeviceThatFallsSilentWhileReadyIsReportedLostAfterTwoSeconds)
 {
-    SimSession s(proto::DeviceKind::Stage);
+    SimSession s(dev::proto::DeviceKind::Stage);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
     const auto timeoutsBefore = s.client.stats().timeouts;
     QElapsedTimer wall;
@@ -262,7 +262,7 @@ TEST(LinkFaults, DeviceThatFallsSilentWhileReadyIsReportedLostAfterTwoSeconds)
     EXPECT_EQ(s.client.stats().timeouts - timeoutsBefore, 1u);
     ASSERT_FALSE(s.linkErrors.isEmpty());
     EXPECT_EQ(s.linkMessages.back().id, "link.lost") << text(s.linkErrors);
-    EXPECT_EQ(msg::nested(s.linkMessages.back(), "cause").id, "link.stopped_answering") << text(s.linkErrors);
+    EXPECT_EQ(motion::msg::nested(s.linkMessages.back(), "cause").id, "link.stopped_answering") << text(s.linkErrors);
 
     // The line comes back: reconnecting works without restarting anything.
     s.link.pair().setFaults(LoopbackPair::B, LinkFaults{});
@@ -271,7 +271,7 @@ TEST(LinkFaults, DeviceThatFallsSilentWhileReadyIsReportedLostAfterTwoSeconds)
 
 TEST(LinkFaults, OneUnansweredRequestFromADeviceThatIsStillTalkingIsNotLinkLoss)
 {
-    SimSession s(proto::DeviceKind::Analyzer);
+    SimSession s(dev::proto::DeviceKind::Analyzer);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
     // One STATUS request vanishes on the way out, every attempt of it; telemetry
     // keeps arriving meanwhile, so after 5 s the request alone is given up and
@@ -279,7 +279,7 @@ TEST(LinkFaults, OneUnansweredRequestFromADeviceThatIsStillTalkingIsNotLinkLoss)
     int lostSeq = -1;
     s.tap.beforeWrite = [&](const QByteArray& bytes) {
         for (const auto& f : framesIn(bytes))
-            if (f.type == static_cast<std::uint8_t>(proto::MsgType::Status) && (lostSeq < 0 || lostSeq == f.seq)) {
+            if (f.type == static_cast<std::uint8_t>(dev::proto::MsgType::Status) && (lostSeq < 0 || lostSeq == f.seq)) {
                 lostSeq = f.seq;
                 s.link.pair().setFaults(LoopbackPair::A, dropEverything());
             }
@@ -296,7 +296,7 @@ TEST(LinkFaults, OneUnansweredRequestFromADeviceThatIsStillTalkingIsNotLinkLoss)
 
 TEST(LinkFaults, UnplugDuringMoveIsLinkLostAndReplugReconnects)
 {
-    SimSession s(proto::DeviceKind::Analyzer);
+    SimSession s(dev::proto::DeviceKind::Analyzer);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
     const int x = s.axis('X');
     const double start = s.link.machine().commandedLogical(x);
@@ -308,7 +308,7 @@ TEST(LinkFaults, UnplugDuringMoveIsLinkLostAndReplugReconnects)
     ASSERT_TRUE(waitFor([&] { return s.client.state() == LinkState::Lost; }, 2000));
     ASSERT_FALSE(s.linkErrors.isEmpty());
     EXPECT_EQ(s.linkMessages.back().id, "link.lost") << text(s.linkErrors);
-    EXPECT_EQ(msg::nested(s.linkMessages.back(), "cause").id, "link.cable_pulled") << text(s.linkErrors);
+    EXPECT_EQ(motion::msg::nested(s.linkMessages.back(), "cause").id, "link.cable_pulled") << text(s.linkErrors);
     // Requests while lost fail at once with a reason instead of hanging.
     const auto refused = s.call([&](auto cb) { s.client.move({{x, 1.0}}, true, 0, cb); }, 1000);
     ASSERT_TRUE(refused);
@@ -339,7 +339,7 @@ TEST(LinkFaults, SerialPortThatDoesNotExistFailsAtOnceWithAClearMessage)
     dev::SerialTransport port(QStringLiteral("/dev/ttyBP_nonexistent"), 115200);
     dev::BenchPilotClient client;
     QStringList errors;
-    QObject::connect(&client, &dev::BenchPilotClient::linkError, &client, [&](const msg::Message& m) { errors << QString::fromStdString(msg::debugString(m)); });
+    QObject::connect(&client, &dev::BenchPilotClient::linkError, &client, [&](const motion::msg::Message& m) { errors << QString::fromStdString(motion::msg::debugString(m)); });
     QSignalSpy failed(&port, &dev::Transport::failed);
     client.setTransport(&port);
 
@@ -360,7 +360,7 @@ TEST(LinkFaults, ASecondSessionSeesTheDeviceAsItIsNotAsTheLastSessionLeftIt)
 {
     // Two sessions one after the other on the same device (a CLI run, then the
     // GUI): the second's first status must show where the machine is now.
-    SimSession s(proto::DeviceKind::Analyzer);
+    SimSession s(dev::proto::DeviceKind::Analyzer);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
     const int x = s.axis('X');
     const double start = s.readout('X').commanded;
@@ -387,7 +387,7 @@ TEST(LinkFaults, AnEventLoopHeldUpResendsNothingAndKeepsTheLink)
     // Unpaced: on a paced loopback the in-process device, held up with the host, sends the
     // telemetry of the held-up time only afterwards and its reply queues behind it, where
     // a real device's would have been in the port's buffer already.
-    SimSession s(proto::DeviceKind::Analyzer, kUnpaced);
+    SimSession s(dev::proto::DeviceKind::Analyzer, kUnpaced);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
     waitFor([] { return false; }, 300);  // the round trip measured, the timeout near its floor
     const auto before = s.client.stats();
@@ -398,7 +398,7 @@ TEST(LinkFaults, AnEventLoopHeldUpResendsNothingAndKeepsTheLink)
         int again = 0;
         s.tap.afterWrite = [&](const QByteArray& bytes) {
             for (const auto& f : framesIn(bytes)) {
-                if (f.type != static_cast<std::uint8_t>(proto::MsgType::Status))
+                if (f.type != static_cast<std::uint8_t>(dev::proto::MsgType::Status))
                     continue;
                 if (!heldSeq) {
                     heldSeq = f.seq;

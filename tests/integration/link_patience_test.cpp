@@ -21,7 +21,7 @@ using namespace itest;
 using dev::LinkFaults;
 using dev::LinkState;
 using dev::LoopbackPair;
-using K = proto::EventKind;
+using K = dev::proto::EventKind;
 
 namespace {
 
@@ -38,7 +38,7 @@ QByteArray withoutEvents(const QByteArray& bytes)
         const QByteArray frame = bytes.mid(start, i - start + 1);
         start = i + 1;
         const auto fs = framesIn(frame);
-        if (fs.size() == 1 && fs.front().type == static_cast<std::uint8_t>(proto::MsgType::Event))
+        if (fs.size() == 1 && fs.front().type == static_cast<std::uint8_t>(dev::proto::MsgType::Event))
             continue;
         out += frame;
     }
@@ -46,10 +46,10 @@ QByteArray withoutEvents(const QByteArray& bytes)
     return out;
 }
 
-bool machineMoving(const sim::SimMachine& m)
+bool machineMoving(const dev::sim::SimMachine& m)
 {
     for (const auto& a : m.status().axes)
-        if (a.flags & proto::AxisMoving)
+        if (a.flags & dev::proto::AxisMoving)
             return true;
     return false;
 }
@@ -62,7 +62,7 @@ bool machineMoving(const sim::SimMachine& m)
 // to keep trying for 10 s while damaged frames show a device answering.
 TEST(LinkPatience, AHandshakeKeepsTryingPastFiveSecondsWhileDamagedRepliesShowTheDeviceAnswering)
 {
-    SimSession s(proto::DeviceKind::Analyzer);
+    SimSession s(dev::proto::DeviceKind::Analyzer);
     s.link.pair().setFaults(LoopbackPair::B, LinkFaults::bytes(0.05, 17));  // a HELLO reply never arrives whole
     QTimer::singleShot(6000, Qt::PreciseTimer, &s.client, [&] { s.link.pair().setFaults(LoopbackPair::B, LinkFaults{}); });
     QElapsedTimer took;
@@ -78,7 +78,7 @@ TEST(LinkPatience, AHandshakeKeepsTryingPastFiveSecondsWhileDamagedRepliesShowTh
 // to the power switch instead of the cable (the hostile campaign's dead-line hunt).
 TEST(LinkPatience, AConnectWhoseEveryAnswerArrivesDamagedSaysSoWhenItGivesUp)
 {
-    SimSession s(proto::DeviceKind::Analyzer);
+    SimSession s(dev::proto::DeviceKind::Analyzer);
     s.link.pair().setFaults(LoopbackPair::B, LinkFaults::bytes(0.05, 17));  // a HELLO reply never arrives whole
     ASSERT_FALSE(s.connect(dev::BenchPilotClient::kConnectGiveUpMs + 3000));
     ASSERT_EQ(s.linkErrors.size(), 1) << text(s.linkErrors);
@@ -88,7 +88,7 @@ TEST(LinkPatience, AConnectWhoseEveryAnswerArrivesDamagedSaysSoWhenItGivesUp)
 
 TEST(LinkPatience, ADeviceThatGoesSilentMidConnectIsToldFromOneThatNeverAnswered)
 {
-    SimSession s(proto::DeviceKind::Analyzer);
+    SimSession s(dev::proto::DeviceKind::Analyzer);
     s.link.pair().setFaults(LoopbackPair::B, LinkFaults::bytes(0.05, 17));
     QTimer::singleShot(1000, &s.client, [&] {
         LinkFaults mute;
@@ -111,7 +111,7 @@ TEST(LinkPatience, ADeviceThatGoesSilentMidConnectIsToldFromOneThatNeverAnswered
 // first reply lost or damaged then cost as long as the cable had been out.
 TEST(LinkPatience, AReconnectRetriesAtOnceHoweverLongTheLinkWasDown)
 {
-    SimSession s(proto::DeviceKind::Analyzer);
+    SimSession s(dev::proto::DeviceKind::Analyzer);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
     s.client.disconnectLink();
     QElapsedTimer down;
@@ -123,7 +123,7 @@ TEST(LinkPatience, AReconnectRetriesAtOnceHoweverLongTheLinkWasDown)
     f.filter = [&lostOne](const QByteArray& bytes) {
         if (!lostOne) {
             for (const auto& fr : framesIn(bytes))
-                if (fr.type == proto::replyTypeOf(proto::MsgType::Hello)) {
+                if (fr.type == dev::proto::replyTypeOf(dev::proto::MsgType::Hello)) {
                     lostOne = true;
                     return QByteArray();
                 }
@@ -147,7 +147,7 @@ TEST(LinkPatience, HandshakeAndRequestsRideThroughOnePercentByteFaults)
     // 1 % only one time in four to seven, so connects failed with link.no_answer.
     for (std::uint64_t seed : {1u, 2u}) {
         SCOPED_TRACE(seed);
-        SimSession s(proto::DeviceKind::Analyzer);
+        SimSession s(dev::proto::DeviceKind::Analyzer);
         s.link.pair().setFaults(LoopbackPair::A, LinkFaults::bytes(0.01, seed));
         s.link.pair().setFaults(LoopbackPair::B, LinkFaults::bytes(0.01, seed + 100));
         for (int attempt = 0; attempt < 3; ++attempt) {
@@ -163,7 +163,7 @@ TEST(LinkPatience, HandshakeAndRequestsRideThroughOnePercentByteFaults)
         const double start = s.link.machine().commandedLogical(x);
         for (int i = 0; i < 4; ++i) {
             const auto err = s.call([&](auto cb) { s.client.jogStep(x, 0.5, 0, cb); }, 8000);
-            ASSERT_FALSE(err) << i << ": " << msg::debugString(err->message);
+            ASSERT_FALSE(err) << i << ": " << motion::msg::debugString(err->message);
             ASSERT_TRUE(waitFor([&] { return !machineMoving(s.link.machine()); }, 5000));
         }
         // The simulator's record: four steps of 0.5 mm, each executed once.
@@ -181,7 +181,7 @@ TEST(LinkPatience, HandshakeAndRequestsRideThroughOnePercentByteFaults)
 
 TEST(LinkPatience, TheReplyTimeoutFollowsTheMeasuredRoundTrip)
 {
-    SimSession s(proto::DeviceKind::Stage);
+    SimSession s(dev::proto::DeviceKind::Stage);
     EXPECT_EQ(s.client.replyTimeoutMs(), dev::BenchPilotClient::kInitialReplyTimeoutMs);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
     spin(300);
@@ -200,7 +200,7 @@ TEST(LinkPatience, TheReplyTimeoutFollowsTheMeasuredRoundTrip)
 
 TEST(LinkPatience, ADuplicatedEventIsOneEvent)
 {
-    SimSession s(proto::DeviceKind::Analyzer);
+    SimSession s(dev::proto::DeviceKind::Analyzer);
     ASSERT_TRUE(s.connect()) << text(s.linkErrors);
     LinkFaults twice;
     twice.duplicateChunkProbability = 1.0;  // every write of the device arrives twice
@@ -219,7 +219,7 @@ TEST(LinkPatience, ADuplicatedEventIsOneEvent)
 
 TEST(LinkPatience, AScanWhoseMotionDoneEventsAreAllLostStillTakesEveryTile)
 {
-    SimSession s(proto::DeviceKind::Stage, kUnpaced);
+    SimSession s(dev::proto::DeviceKind::Stage, kUnpaced);
     ASSERT_TRUE(s.connect() && s.homeAll()) << text(s.linkErrors);
     s.link.host().setTimeScale(10);
     LinkFaults noEvents;
@@ -238,14 +238,14 @@ TEST(LinkPatience, AScanWhoseMotionDoneEventsAreAllLostStillTakesEveryTile)
     p.settleS = 0.03;
     p.exposureS = 0.02;
     QTemporaryDir dir;
-    jobs::ScanRunner runner(&s.client);
+    dev::jobs::ScanRunner runner(&s.client);
     std::vector<int> triggered;
-    QObject::connect(&runner, &jobs::ScanRunner::triggered, &runner, [&](int tile, quint64) { triggered.push_back(tile); });
-    msg::Message error;
+    QObject::connect(&runner, &dev::jobs::ScanRunner::triggered, &runner, [&](int tile, quint64) { triggered.push_back(tile); });
+    motion::msg::Message error;
     ASSERT_TRUE(runner.prepare(p, dir.path(), false, &error)) << error;
     ASSERT_TRUE(runner.start(&error)) << error;
     ASSERT_TRUE(waitFor([&] { return !runner.isActive(); }, 30000));
-    EXPECT_EQ(runner.state(), jobs::ScanRunner::State::Finished);
+    EXPECT_EQ(runner.state(), dev::jobs::ScanRunner::State::Finished);
     for (const auto& rec : runner.records())
         EXPECT_TRUE(rec.measured()) << rec.label;
     EXPECT_EQ(s.countEvents(K::MotionDone, SimSession::kAnyAxis), 0) << "the filter let events through: no test";
@@ -258,10 +258,10 @@ TEST(LinkPatience, AScanWhoseMotionDoneEventsAreAllLostStillTakesEveryTile)
 
 TEST(LinkPatience, AStoppedPatternRunReportsHowLongItRan)
 {
-    SimSession s(proto::DeviceKind::Stage, kUnpaced);
-    jobs::PatternRunner runner(&s.client);
+    SimSession s(dev::proto::DeviceKind::Stage, kUnpaced);
+    dev::jobs::PatternRunner runner(&s.client);
     QObject::connect(&s.client, &dev::BenchPilotClient::telemetryReceived, &runner,
-                     [&](const proto::TelemetryBatch& b) { jobs::feedBatch(runner, s.client, b); });
+                     [&](const dev::proto::TelemetryBatch& b) { dev::jobs::feedBatch(runner, s.client, b); });
     ASSERT_TRUE(s.connect() && s.homeAll()) << text(s.linkErrors);
     s.link.host().setTimeScale(4);
     bool limits = false;
@@ -271,11 +271,11 @@ TEST(LinkPatience, AStoppedPatternRunReportsHowLongItRan)
     pat.shape = motion::plans::PatternShape::Spiral;
     pat.feedMmS = 4;
     ASSERT_TRUE(runner.start(motion::plans::plan(pat), {}));
-    ASSERT_TRUE(waitFor([&] { return runner.state() == jobs::PatternRunner::State::Running && runner.segmentsDone() >= 3; }, 20000));
+    ASSERT_TRUE(waitFor([&] { return runner.state() == dev::jobs::PatternRunner::State::Running && runner.segmentsDone() >= 3; }, 20000));
     const double runningFromS = s.link.machine().timeS();
     spin(300);
     s.link.pair().unplug();
-    ASSERT_TRUE(waitFor([&] { return runner.state() == jobs::PatternRunner::State::Interrupted; }, 5000));
+    ASSERT_TRUE(waitFor([&] { return runner.state() == dev::jobs::PatternRunner::State::Interrupted; }, 5000));
     const auto sum = runner.summary();
     EXPECT_FALSE(sum.complete);
     // It ran at least from three segments in to the cable pull (300 ms of wall time at 4×).

@@ -21,7 +21,7 @@ Run run(const QString& command, const QStringList& args)
 {
     Run r;
     QTextStream out(&r.out), err(&r.err);
-    r.code = cli::runCli(QStringList{command} + args, out, err);
+    r.code = app::cli::runCli(QStringList{command} + args, out, err);
     out.flush();
     err.flush();
     return r;

@@ -22,7 +22,7 @@ CliResult cliRun(const QString& words)
 {
     CliResult r;
     QTextStream out(&r.out), err(&r.err);
-    r.code = cli::runCli(words.split(QLatin1Char(' '), Qt::SkipEmptyParts), out, err);
+    r.code = app::cli::runCli(words.split(QLatin1Char(' '), Qt::SkipEmptyParts), out, err);
     out.flush();
     err.flush();
     return r;

@@ -16,14 +16,14 @@ using itest::waitFor;
 namespace {
 
 struct Rig {
-    SimSession s{proto::DeviceKind::Stage};
+    SimSession s{dev::proto::DeviceKind::Stage};
     dev::JoystickDriver stick{&s.client};
     int jogFrames = 0;
     qint64 jogBytes = 0;
     Rig()
     {
         s.tap.afterWrite = [this](const QByteArray& bytes) {
-            if (itest::containsFrame(bytes, proto::MsgType::JogVelocity)) {
+            if (itest::containsFrame(bytes, dev::proto::MsgType::JogVelocity)) {
                 ++jogFrames;
                 jogBytes += bytes.size();
             }
@@ -82,7 +82,7 @@ TEST(PatternsJoystickDriver, HoldingStillOnlyKeepsTheWatchdogFed)
     const int keepAlive = r.jogFrames - before;
     EXPECT_LE(keepAlive, 1000 / dev::BenchPilotClient::kJogRefreshMs + 2);
     EXPECT_GE(keepAlive, 5);
-    EXPECT_TRUE(r.s.link.machine().status().axes[0].flags & proto::AxisJogging);
+    EXPECT_TRUE(r.s.link.machine().status().axes[0].flags & dev::proto::AxisJogging);
     r.stick.stop();
 }
 

@@ -15,7 +15,7 @@
 
 using itest::SimSession;
 using itest::waitFor;
-using jobs::PatternRunner;
+using dev::jobs::PatternRunner;
 using motion::plans::Pattern;
 using motion::plans::PatternShape;
 
@@ -27,21 +27,21 @@ struct RunnerRig {
     SimSession s;
     dev::PathClient& paths = *s.client.paths();
     PatternRunner runner{&s.client};
-    std::vector<msg::Message> messages;
+    std::vector<motion::msg::Message> messages;
 
     std::string all() const
     {
         std::string out;
-        for (const msg::Message& m : messages)
-            out += msg::debugString(m) + "\n";
+        for (const motion::msg::Message& m : messages)
+            out += motion::msg::debugString(m) + "\n";
         return out;
     }
 
-    explicit RunnerRig(proto::DeviceKind kind, double timeScale = 8) : s(kind, itest::kUnpaced)
+    explicit RunnerRig(dev::proto::DeviceKind kind, double timeScale = 8) : s(kind, itest::kUnpaced)
     {
         QObject::connect(&s.client, &dev::BenchPilotClient::telemetryReceived, &runner,
-                         [this](const proto::TelemetryBatch& b) { jobs::feedBatch(runner, s.client, b); });
-        QObject::connect(&runner, &PatternRunner::message, &runner, [this](const msg::Message& m, bool) { messages.push_back(m); });
+                         [this](const dev::proto::TelemetryBatch& b) { dev::jobs::feedBatch(runner, s.client, b); });
+        QObject::connect(&runner, &PatternRunner::message, &runner, [this](const motion::msg::Message& m, bool) { messages.push_back(m); });
         EXPECT_TRUE(s.connect());
         EXPECT_TRUE(s.homeAll());
         s.link.host().setTimeScale(timeScale);
@@ -67,9 +67,9 @@ std::vector<motion::path::Segment> planOf(PatternShape shape, double feed)
 
 TEST(PatternsRunner, StageCircleRunsToTheEndWithItsContourMeasured)
 {
-    RunnerRig rig(proto::DeviceKind::Stage);
+    RunnerRig rig(dev::proto::DeviceKind::Stage);
     const auto path = planOf(PatternShape::Circle, 2.0);
-    for (const msg::Message& problem : rig.runner.preflight(path, {}))
+    for (const motion::msg::Message& problem : rig.runner.preflight(path, {}))
         ADD_FAILURE() << "preflight: " << problem;
     EXPECT_NEAR(rig.runner.estimatedS(path), 31.416 / 2 + 0.02, 0.01);
     QSignalSpy finished(&rig.runner, &PatternRunner::finished);
@@ -85,7 +85,7 @@ TEST(PatternsRunner, StageCircleRunsToTheEndWithItsContourMeasured)
     EXPECT_EQ(sum.underruns, 0);
     EXPECT_EQ(rig.runner.segmentsDone(), 4u);
     // The run exports as CSV, one row per judged sample.
-    const std::string csv = files::patternRunCsv(rig.runner.samples());
+    const std::string csv = dev::files::patternRunCsv(rig.runner.samples());
     EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), static_cast<long>(rig.runner.samples().size()) + 1);
     EXPECT_EQ(csv.rfind("time_s,commanded_x_mm", 0), 0u);
 }
@@ -94,7 +94,7 @@ TEST(PatternsRunner, ARasterLongerThanTheQueueIsStreamedWithFlowControl)
 {
     // Time scale 10: the client's 50 ms status polls are then 0.5 s of device time, inside the
     // device's 1 s host-silence hold.
-    RunnerRig rig(proto::DeviceKind::Stage, 10);
+    RunnerRig rig(dev::proto::DeviceKind::Stage, 10);
     Pattern p;
     p.shape = PatternShape::Raster;
     p.feedMmS = 20;
@@ -118,7 +118,7 @@ TEST(PatternsRunner, ARunnerGoneWithItsApproachMoveInFlightIsNeverCalledBack)
 {
     // A screen closed right after Run: the device's answer to the move towards the
     // pattern's start must not reach the runner that sent it.
-    RunnerRig rig(proto::DeviceKind::Stage);
+    RunnerRig rig(dev::proto::DeviceKind::Stage);
     {
         PatternRunner gone(&rig.s.client);
         ASSERT_TRUE(gone.start(planOf(PatternShape::Circle, 2.0), {}));
@@ -129,7 +129,7 @@ TEST(PatternsRunner, ARunnerGoneWithItsApproachMoveInFlightIsNeverCalledBack)
 
 TEST(PatternsRunner, APatternOutsideTheSoftLimitsIsRefusedBeforeAnythingMoves)
 {
-    RunnerRig rig(proto::DeviceKind::Stage);
+    RunnerRig rig(dev::proto::DeviceKind::Stage);
     Pattern p;
     p.shape = PatternShape::Circle;
     p.circle.centerMm = {97, 50};  // radius 5: its second quarter… no, its first reaches x = 102
@@ -138,7 +138,7 @@ TEST(PatternsRunner, APatternOutsideTheSoftLimitsIsRefusedBeforeAnythingMoves)
     EXPECT_FALSE(rig.runner.start(path, {}));
     EXPECT_EQ(rig.runner.state(), PatternRunner::State::Failed);
     ASSERT_FALSE(rig.messages.empty());
-    const msg::Message& why = rig.messages.back();
+    const motion::msg::Message& why = rig.messages.back();
     EXPECT_EQ(why.id, "pattern.segment_above_limit") << rig.all();
     EXPECT_EQ(why.integer("segment", -1), 0) << why;
     EXPECT_EQ(why.text("kind"), "segment.arc_ccw") << why;
@@ -150,7 +150,7 @@ TEST(PatternsRunner, APatternOutsideTheSoftLimitsIsRefusedBeforeAnythingMoves)
 
 TEST(PatternsRunner, PauseHoldsOnThePathAndResumeFinishes)
 {
-    RunnerRig rig(proto::DeviceKind::Stage, 4);
+    RunnerRig rig(dev::proto::DeviceKind::Stage, 4);
     const auto path = planOf(PatternShape::Rectangle, 10);
     ASSERT_TRUE(rig.runner.start(path, {}));
     ASSERT_TRUE(waitFor([&] { return rig.runner.segmentsDone() >= 1; }, 20000));
@@ -168,19 +168,19 @@ TEST(PatternsRunner, PauseHoldsOnThePathAndResumeFinishes)
 
 TEST(PatternsRunner, AbortStopsAndForgetsThePath)
 {
-    RunnerRig rig(proto::DeviceKind::Stage, 4);
+    RunnerRig rig(dev::proto::DeviceKind::Stage, 4);
     ASSERT_TRUE(rig.runner.start(planOf(PatternShape::Spiral, 4), {}));
     ASSERT_TRUE(waitFor([&] { return rig.runner.state() == PatternRunner::State::Running && rig.runner.segmentsDone() >= 2; }, 20000));
     rig.runner.abort();
     ASSERT_TRUE(rig.runToEnd(5000));
     EXPECT_EQ(rig.runner.state(), PatternRunner::State::Aborted);
-    EXPECT_EQ(rig.s.link.machine().paths().state(), proto::PathState::Aborted);
+    EXPECT_EQ(rig.s.link.machine().paths().state(), dev::proto::PathState::Aborted);
     EXPECT_FALSE(rig.s.link.machine().paths().active());  // the axes are free again
 }
 
 TEST(PatternsRunner, APulledCableInterruptsAndResumeContinuesFromTheSegmentReached)
 {
-    RunnerRig rig(proto::DeviceKind::Stage, 2);
+    RunnerRig rig(dev::proto::DeviceKind::Stage, 2);
     Pattern p;
     p.shape = PatternShape::Sine;
     p.feedMmS = 4;

@@ -20,10 +20,10 @@
 
 using namespace itest;
 using namespace platestest;
-using jobs::InterruptedChoice;
-using jobs::InterruptedOp;
-using jobs::RecipeRunner;
-using jobs::RunState;
+using dev::jobs::InterruptedChoice;
+using dev::jobs::InterruptedOp;
+using dev::jobs::RecipeRunner;
+using dev::jobs::RunState;
 
 namespace {
 
@@ -42,7 +42,7 @@ class PlateDispense : public ::testing::Test {
 protected:
     void SetUp() override
     {
-        loaded = platefiles::loadRecipe(examplePath(), platefiles::builtinDeck(), {});
+        loaded = dev::files::plates::loadRecipe(examplePath(), dev::files::plates::builtinDeck(), {});
         ASSERT_TRUE(loaded.ok()) << i18ntest::englishFormat(loaded.problems);
         ASSERT_TRUE(s.connect()) << s.linkErrors.join(QLatin1Char(' ')).toStdString();
         ASSERT_TRUE(s.homeAll());
@@ -50,8 +50,8 @@ protected:
         logPath = dir.filePath(QStringLiteral("transfer.run.jsonl"));
         s.tap.beforeWrite = [this](const QByteArray& bytes) {
             for (const auto& f : framesIn(bytes))
-                if (f.type == static_cast<std::uint8_t>(proto::MsgType::Move))
-                    if (const auto m = proto::decodeMoveRequest(f.payload)) {
+                if (f.type == static_cast<std::uint8_t>(dev::proto::MsgType::Move))
+                    if (const auto m = dev::proto::decodeMoveRequest(f.payload)) {
                         SentMove x{m->axisMask, m->relative, {}};
                         // Each axis in its own unit (mm, µL) from the wire's.
                         std::size_t k = 0;
@@ -66,31 +66,31 @@ protected:
     }
     void TearDown() override { s.tap.beforeWrite = nullptr; }
 
-    plates::RecipePlan plan() const
+    motion::plates::RecipePlan plan() const
     {
         const auto& a = s.client.status().axes;
-        plates::StartState st;
+        motion::plates::StartState st;
         if (a.size() >= 4)
             st = {a[0].commanded, a[1].commanded, a[2].commanded, a[3].commanded};
-        return plates::planRecipe(loaded.recipe, loaded.context, st);
+        return motion::plates::planRecipe(loaded.recipe, loaded.context, st);
     }
-    plates::RecipePlan resumePlan() const
+    motion::plates::RecipePlan resumePlan() const
     {
-        return plates::planRecipe(loaded.recipe, loaded.context, RecipeRunner::resumeStart(logPath, s.client));
+        return motion::plates::planRecipe(loaded.recipe, loaded.context, RecipeRunner::resumeStart(logPath, s.client));
     }
     /// A generous wall-clock bound for `p` at the sped-up clock.
-    static int timeoutMs(const plates::RecipePlan& p) { return static_cast<int>(p.totalTimeS / kRunTimeScale * 4000) + 30000; }
+    static int timeoutMs(const motion::plates::RecipePlan& p) { return static_cast<int>(p.totalTimeS / kRunTimeScale * 4000) + 30000; }
     double p() const { return s.readout('P').commanded; }
 
     /// Every dispense op of the plan sent its plunger move once and was closed
     /// once; it was begun once, or twice when in `restarted` (begun again after
     /// an abort that came before any liquid moved).
-    void expectEachDispenseOnce(const plates::RecipePlan& pl, const std::set<int>& restarted = {}) const
+    void expectEachDispenseOnce(const motion::plates::RecipePlan& pl, const std::set<int>& restarted = {}) const
     {
         const LogCounts c = countLog(logPath);
         int dispenses = 0;
         for (const auto& op : pl.ops) {
-            if (op.type != plates::StepType::Dispense)
+            if (op.type != motion::plates::StepType::Dispense)
                 continue;
             ++dispenses;
             SCOPED_TRACE(op.label());
@@ -101,8 +101,8 @@ protected:
         EXPECT_EQ(dispenses, 28) << "row A (12), A1:H1 and B2:H2 (15), B5";
     }
 
-    platefiles::LoadedRecipe loaded;
-    SimSession s{proto::DeviceKind::Analyzer, kUnpaced};
+    dev::files::plates::LoadedRecipe loaded;
+    SimSession s{dev::proto::DeviceKind::Analyzer, kUnpaced};
     QTemporaryDir dir;
     QString logPath;
     std::vector<SentMove> sent;
@@ -110,18 +110,18 @@ protected:
 };
 
 /// The first dispense of the 150 µL transfer's second round: part-way through the step.
-int secondRoundOp(const plates::RecipePlan& pl, int nth)
+int secondRoundOp(const motion::plates::RecipePlan& pl, int nth)
 {
     int seen = 0;
     for (const auto& op : pl.ops)
-        if (op.step == 2 && op.type == plates::StepType::Dispense && op.round == 2 && seen++ == nth)
+        if (op.step == 2 && op.type == motion::plates::StepType::Dispense && op.round == 2 && seen++ == nth)
             return op.index;
     return -1;
 }
 
 /// An operator who reads the evidence (and `asked` records what was asked):
 /// the liquid went in, so the well counts as done; anything else, no decision.
-jobs::InterruptedDecider skipWhenMovedInFull(std::vector<InterruptedOp>* asked)
+dev::jobs::InterruptedDecider skipWhenMovedInFull(std::vector<InterruptedOp>* asked)
 {
     return [asked](const InterruptedOp& q) {
         asked->push_back(q);
@@ -133,13 +133,13 @@ jobs::InterruptedDecider skipWhenMovedInFull(std::vector<InterruptedOp>* asked)
 
 TEST_F(PlateDispense, TheReagentTransferExampleRunsToTheEndWithTheTipUpWheneverItTravels)
 {
-    const plates::RecipePlan pl = plan();
+    const motion::plates::RecipePlan pl = plan();
     ASSERT_TRUE(pl.ok());
     // What the example promises: 150 µL into 15 wells from a 1000 µL syringe
     // is three rounds (6, 6 and 3 wells), each drawn from reagents A2 first.
     std::vector<int> rounds;
     for (const auto& op : pl.ops)
-        if (op.step == 2 && op.type == plates::StepType::Aspirate) {
+        if (op.step == 2 && op.type == motion::plates::StepType::Aspirate) {
             EXPECT_EQ(op.well, "A2");
             rounds.push_back(op.round);
         }
@@ -147,11 +147,11 @@ TEST_F(PlateDispense, TheReagentTransferExampleRunsToTheEndWithTheTipUpWheneverI
 
     RecipeRunner runner(&s.client);
     std::string problems;
-    QObject::connect(&runner, &RecipeRunner::message, &runner, [&](const msg::Message& m, bool bad) {
+    QObject::connect(&runner, &RecipeRunner::message, &runner, [&](const motion::msg::Message& m, bool bad) {
         if (bad)
-            problems += msg::debugString(m) + "\n";
+            problems += motion::msg::debugString(m) + "\n";
     });
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(runner.setPlan(pl, QStringLiteral("transfer"), &error)) << error;
     const double p0 = p();
     const auto& axes = s.client.status().axes;
@@ -174,7 +174,7 @@ TEST_F(PlateDispense, TheReagentTransferExampleRunsToTheEndWithTheTipUpWheneverI
     EXPECT_TRUE(st.problems.empty()) << i18ntest::englishFormat(st.problems, "log");
     std::multiset<std::string> dispensed;
     for (std::size_t i = 0; i < st.ops.size(); ++i)
-        if (pl.ops[i].type == plates::StepType::Dispense)
+        if (pl.ops[i].type == motion::plates::StepType::Dispense)
             dispensed.insert(st.ops[i].plate + " " + st.ops[i].well);
     for (const char* w : {"A1", "B1", "C1", "D1", "E1", "F1", "G1", "H1", "B2", "C2", "D2", "E2", "F2", "G2", "H2", "B5"})
         EXPECT_EQ(dispensed.count(std::string("assay ") + w), std::string(w) == "A1" ? 2u : 1u) << w << " (A1 is in row A and A1:H1)";
@@ -248,10 +248,10 @@ TEST_F(PlateDispense, TheReagentTransferExampleRunsToTheEndWithTheTipUpWheneverI
 
 TEST_F(PlateDispense, AbortedPartWayThroughAMultiWellDispenseTheResumedRunFillsTheRestAndNoWellTwice)
 {
-    const plates::RecipePlan pl = plan();
+    const motion::plates::RecipePlan pl = plan();
     const int target = secondRoundOp(pl, 1);  // the second well of round two
     ASSERT_GT(target, 0);
-    const plates::PlanOp& op = pl.ops[static_cast<std::size_t>(target)];
+    const motion::plates::PlanOp& op = pl.ops[static_cast<std::size_t>(target)];
     RecipeRunner runner(&s.client);
     int current = -1;
     QObject::connect(&runner, &RecipeRunner::opStarted, &runner, [&](int i) { current = i; });
@@ -264,7 +264,7 @@ TEST_F(PlateDispense, AbortedPartWayThroughAMultiWellDispenseTheResumedRunFillsT
             QTimer::singleShot(0, &runner, [&] { runner.abort(); });
         }
     };
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(runner.setPlan(pl, QStringLiteral("transfer"), &error));
     ASSERT_TRUE(runner.start(logPath, &error)) << error;
     ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Stopped || runner.state() == RunState::Finished; }, timeoutMs(pl)));
@@ -275,7 +275,7 @@ TEST_F(PlateDispense, AbortedPartWayThroughAMultiWellDispenseTheResumedRunFillsT
     const auto st = readLog(logPath);
     EXPECT_EQ(st.lastStop, "recipe.run.aborted");
     EXPECT_EQ(st.doneCount(), target) << "every op before it, none after";
-    ASSERT_EQ(st.ops[static_cast<std::size_t>(target)].state, platefiles::OpState::Started) << "no liquid had moved into " << op.well;
+    ASSERT_EQ(st.ops[static_cast<std::size_t>(target)].state, dev::files::plates::OpState::Started) << "no liquid had moved into " << op.well;
     const double pAtStop = p();
     // Round two drew 900 µL, and the first of its six wells took 150.
     EXPECT_NEAR(pAtStop, 750, 1e-6);
@@ -303,7 +303,7 @@ TEST_F(PlateDispense, AbortedPartWayThroughAMultiWellDispenseTheResumedRunFillsT
 
 TEST_F(PlateDispense, KilledWhileThePlungerDispensesTheOperatorCountsTheWellAndItIsNotFilledAgain)
 {
-    const plates::RecipePlan pl = plan();
+    const motion::plates::RecipePlan pl = plan();
     const int target = secondRoundOp(pl, 2);
     ASSERT_GT(target, 0);
     auto first = std::make_unique<RecipeRunner>(&s.client);
@@ -318,14 +318,14 @@ TEST_F(PlateDispense, KilledWhileThePlungerDispensesTheOperatorCountsTheWellAndI
             QTimer::singleShot(0, [&] { first.reset(); });
         }
     };
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(first->setPlan(pl, QStringLiteral("transfer"), &error));
     ASSERT_TRUE(first->start(logPath, &error)) << error;
     ASSERT_TRUE(waitFor([&] { return !first; }, timeoutMs(pl)));
     onMove = nullptr;
     ASSERT_TRUE(s.waitStill());
     const auto st = readLog(logPath);
-    ASSERT_EQ(st.ops[static_cast<std::size_t>(target)].state, platefiles::OpState::Interrupted);
+    ASSERT_EQ(st.ops[static_cast<std::size_t>(target)].state, dev::files::plates::OpState::Interrupted);
     ASSERT_EQ(st.doneCount(), target);
 
     RecipeRunner second(&s.client);
@@ -346,7 +346,7 @@ TEST_F(PlateDispense, KilledWhileThePlungerDispensesTheOperatorCountsTheWellAndI
 
 TEST_F(PlateDispense, ACablePulledMidDispenseResumesInTheSameRunWithoutFillingTheWellAgain)
 {
-    const plates::RecipePlan pl = plan();
+    const motion::plates::RecipePlan pl = plan();
     const int target = secondRoundOp(pl, 3);
     ASSERT_GT(target, 0);
     RecipeRunner runner(&s.client);
@@ -361,7 +361,7 @@ TEST_F(PlateDispense, ACablePulledMidDispenseResumesInTheSameRunWithoutFillingTh
     });
     bool pumpSent = false;
     onMove = [&](const SentMove& m) { pumpSent = pumpSent || (current == target && m.mask == kP && m.targets[0] < 0); };
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(runner.setPlan(pl, QStringLiteral("transfer"), &error));
     ASSERT_TRUE(runner.start(logPath, &error)) << error;
     ASSERT_TRUE(waitFor([&] { return (pumpSent && s.readout('P').moving) || runner.state() != RunState::Running; }, timeoutMs(pl)));

@@ -13,15 +13,15 @@
 
 using namespace itest;
 using namespace platestest;
-using jobs::InterruptedChoice;
-using jobs::InterruptedOp;
-using jobs::RecipeRunner;
-using jobs::RunState;
+using dev::jobs::InterruptedChoice;
+using dev::jobs::InterruptedOp;
+using dev::jobs::RecipeRunner;
+using dev::jobs::RunState;
 
 namespace {
 
 /// 10 µL a well at 5 µL/s: each aspirate takes two seconds, time to die in.
-plates::Recipe slowRecipe() { return samplingRecipe("A1:A6", 10, 5.0); }
+motion::plates::Recipe slowRecipe() { return samplingRecipe("A1:A6", 10, 5.0); }
 
 class PlateResume : public ::testing::Test {
 protected:
@@ -37,7 +37,7 @@ protected:
     void dieMidAspirate()
     {
         auto first = std::make_unique<RecipeRunner>(&s.client);
-        msg::Message error;
+        motion::msg::Message error;
         ASSERT_TRUE(first->setPlan(planFor(slowRecipe(), s.client), QStringLiteral("slow"), &error));
         ASSERT_TRUE(first->start(logPath, &error)) << error;
         ASSERT_TRUE(waitFor(
@@ -49,13 +49,13 @@ protected:
         first.reset();  // as if the program died: no stop line, the analyzer finishes its move
         ASSERT_TRUE(s.waitStill());
         const auto st = readLog(logPath);
-        ASSERT_EQ(st.ops[2].state, platefiles::OpState::Interrupted);
+        ASSERT_EQ(st.ops[2].state, dev::files::plates::OpState::Interrupted);
         ASSERT_EQ(st.doneCount(), 2);
     }
 
     double p() const { return s.readout('P').commanded; }
 
-    SimSession s{proto::DeviceKind::Analyzer, kUnpaced};
+    SimSession s{dev::proto::DeviceKind::Analyzer, kUnpaced};
     QTemporaryDir dir;
     QString logPath;
 };
@@ -66,7 +66,7 @@ TEST_F(PlateResume, TheOperatorSkipsAWellInterruptedMidAspirateAndNoWellIsDoneTw
 {
     dieMidAspirate();
     RecipeRunner second(&s.client);
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(second.setPlan(planForResume(slowRecipe(), s.client, logPath), QStringLiteral("slow"), &error));
     std::vector<InterruptedOp> asked;
     ASSERT_TRUE(second.resumeFromLog(
@@ -99,7 +99,7 @@ TEST_F(PlateResume, RedoDoesTheInterruptedWellAgain)
 {
     dieMidAspirate();
     RecipeRunner second(&s.client);
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(second.setPlan(planForResume(slowRecipe(), s.client, logPath), QStringLiteral("slow"), &error));
     ASSERT_TRUE(second.resumeFromLog(logPath, [](const InterruptedOp&) { return InterruptedChoice::Redo; }, &error))
         << error;
@@ -116,11 +116,11 @@ TEST_F(PlateResume, WithoutADecisionNothingResumesAndTheLogIsUntouched)
     dieMidAspirate();
     const LogCounts before = countLog(logPath);
     RecipeRunner second(&s.client);
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(second.setPlan(planForResume(slowRecipe(), s.client, logPath), QStringLiteral("slow"), &error));
     EXPECT_FALSE(second.resumeFromLog(logPath, {}, &error));
     EXPECT_EQ(error.id, "recipe.run.interrupted_needs_decision") << error;
-    EXPECT_EQ(i18ntest::english(msg::nested(error, "op")), "aspirate 10.0 µL from samples A3") << error;
+    EXPECT_EQ(i18ntest::english(motion::msg::nested(error, "op")), "aspirate 10.0 µL from samples A3") << error;
     EXPECT_FALSE(second.resumeFromLog(logPath, [](const InterruptedOp&) { return InterruptedChoice::Cancel; }, &error));
     EXPECT_EQ(second.state(), RunState::Idle);
     const LogCounts after = countLog(logPath);
@@ -130,7 +130,7 @@ TEST_F(PlateResume, WithoutADecisionNothingResumesAndTheLogIsUntouched)
 
 TEST_F(PlateResume, ALogThatDoesNotFitIsRefused)
 {
-    msg::Message error;
+    motion::msg::Message error;
     {
         RecipeRunner first(&s.client);
         ASSERT_TRUE(first.setPlan(planFor(samplingRecipe("A1:A3"), s.client), QStringLiteral("short"), &error));
@@ -168,7 +168,7 @@ TEST_F(PlateResume, ALogThatDoesNotFitIsRefused)
 /// its clock at the runs' time scale.
 struct TappedAnalyzer {
     dev::LoopbackPair pair{0};
-    dev::SimulatorHost host{sim::analyzerConfig(), 0, pair.end(dev::LoopbackPair::B)};
+    dev::SimulatorHost host{dev::sim::analyzerConfig(), 0, pair.end(dev::LoopbackPair::B)};
     TapTransport hostEnd{pair.end(dev::LoopbackPair::A)};
     dev::BenchPilotClient client;
     ~TappedAnalyzer() { client.setTransport(nullptr); }
@@ -200,34 +200,34 @@ TEST(PlateRunLink, AMotionDoneLostOnTheLinkIsMadeGoodByTheStatus)
     TapTransport& hostEnd = rig.hostEnd;
     // From now on the first MotionDone of Z never arrives.
     int dropped = 0;
-    hostEnd.dropReceived = [&](const proto::Frame& f) {
-        if (f.type != static_cast<std::uint8_t>(proto::MsgType::Event) || dropped > 0)
+    hostEnd.dropReceived = [&](const dev::proto::Frame& f) {
+        if (f.type != static_cast<std::uint8_t>(dev::proto::MsgType::Event) || dropped > 0)
             return false;
-        const auto e = proto::decodeEvent(f.payload);
-        if (e && e->kind == proto::EventKind::MotionDone && e->axis == 2) {
+        const auto e = dev::proto::decodeEvent(f.payload);
+        if (e && e->kind == dev::proto::EventKind::MotionDone && e->axis == 2) {
             ++dropped;
             return true;
         }
         return false;
     };
     RecipeRunner runner(&client);
-    std::vector<msg::Message> notes;
-    QObject::connect(&runner, &RecipeRunner::message, &runner, [&](const msg::Message& m, bool) { notes.push_back(m); });
+    std::vector<motion::msg::Message> notes;
+    QObject::connect(&runner, &RecipeRunner::message, &runner, [&](const motion::msg::Message& m, bool) { notes.push_back(m); });
     auto allNotes = [&] {
         std::string out;
-        for (const msg::Message& m : notes)
-            out += msg::debugString(m) + "\n";
+        for (const motion::msg::Message& m : notes)
+            out += motion::msg::debugString(m) + "\n";
         return out;
     };
     QTemporaryDir dir;
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(runner.setPlan(planFor(samplingRecipe("A1:A2"), client), QStringLiteral("two"), &error));
     ASSERT_TRUE(runner.start(dir.filePath(QStringLiteral("run.jsonl")), &error)) << error;
     ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Finished || runner.state() == RunState::Stopped; },
                         RecipeRunner::kMoveGraceMs + 20000));
     EXPECT_EQ(dropped, 1);
     EXPECT_EQ(runner.state(), RunState::Finished) << allNotes();
-    EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const msg::Message& m) { return m.id == "recipe.run.motion_done_lost"; }))
+    EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const motion::msg::Message& m) { return m.id == "recipe.run.motion_done_lost"; }))
         << allNotes();
 }
 
@@ -241,11 +241,11 @@ TEST(PlateRunLink, AMoveThatNeverArrivesStopsWithTheDevicesLastWordsInTheLog)
     dev::BenchPilotClient& client = rig.client;
     TapTransport& hostEnd = rig.hostEnd;
     bool stopped = false;
-    hostEnd.dropReceived = [&](const proto::Frame& f) {
-        if (!stopped || f.type != static_cast<std::uint8_t>(proto::MsgType::Event))
+    hostEnd.dropReceived = [&](const dev::proto::Frame& f) {
+        if (!stopped || f.type != static_cast<std::uint8_t>(dev::proto::MsgType::Event))
             return false;
-        const auto e = proto::decodeEvent(f.payload);
-        return e && (e->kind == proto::EventKind::MotionDone || e->kind == proto::EventKind::Stopped);
+        const auto e = dev::proto::decodeEvent(f.payload);
+        return e && (e->kind == dev::proto::EventKind::MotionDone || e->kind == dev::proto::EventKind::Stopped);
     };
     RecipeRunner runner(&client);
     QObject::connect(&client, &dev::Instrument::statusChanged, &runner, [&](const dev::InstrumentStatus& st) {
@@ -254,14 +254,14 @@ TEST(PlateRunLink, AMoveThatNeverArrivesStopsWithTheDevicesLastWordsInTheLog)
             client.stop(0);
         }
     });
-    std::vector<msg::Message> problems;
-    QObject::connect(&runner, &RecipeRunner::message, &runner, [&](const msg::Message& m, bool problem) {
+    std::vector<motion::msg::Message> problems;
+    QObject::connect(&runner, &RecipeRunner::message, &runner, [&](const motion::msg::Message& m, bool problem) {
         if (problem)
             problems.push_back(m);
     });
     QTemporaryDir dir;
     const QString logPath = dir.filePath(QStringLiteral("run.jsonl"));
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(runner.setPlan(planFor(samplingRecipe("A1:A2"), client), QStringLiteral("two"), &error));
     ASSERT_TRUE(runner.start(logPath, &error)) << error;
     ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Finished || runner.state() == RunState::Stopped; },
@@ -274,23 +274,23 @@ TEST(PlateRunLink, AMoveThatNeverArrivesStopsWithTheDevicesLastWordsInTheLog)
     QFile f(logPath);
     ASSERT_TRUE(f.open(QIODevice::ReadOnly));
     const QByteArray text = f.readAll();
-    const auto state = platefiles::readRunLog(text.toStdString());
+    const auto state = dev::files::plates::readRunLog(text.toStdString());
     EXPECT_TRUE(state.problems.empty()) << text.toStdString();
     EXPECT_EQ(state.lastStop, "recipe.run.move_timeout");
     const QList<QByteArray> lines = text.trimmed().split('\n');
-    const auto last = jsonio::parse(lines.back().toStdString());
+    const auto last = dev::files::json::parse(lines.back().toStdString());
     ASSERT_TRUE(last);
-    const jsonio::Value* device = last.value->find("device");
+    const dev::files::json::Value* device = last.value->find("device");
     ASSERT_TRUE(device && device->isObject()) << lines.back().toStdString();
     EXPECT_TRUE(device->find("replied")->asBool());
     EXPECT_GE(device->find("device_s_since_answer")->asNumber(), device->find("budget_s")->asNumber());
     // The device's word against the plan's: the stopped axis short of its target.
-    const jsonio::Value* expected = device->find("expected");
-    const jsonio::Value* axes = device->find("axes");
+    const dev::files::json::Value* expected = device->find("expected");
+    const dev::files::json::Value* axes = device->find("axes");
     ASSERT_TRUE(expected && axes && !expected->members().empty());
     bool short_ = false;
     for (const auto& m : expected->members()) {
-        const jsonio::Value* a = axes->find(m.key);
+        const dev::files::json::Value* a = axes->find(m.key);
         ASSERT_TRUE(a) << m.key;
         EXPECT_FALSE(a->find("moving")->asBool());
         short_ = short_ || std::abs(a->find("commanded")->asNumber() - m.value.asNumber()) > 1e-3;

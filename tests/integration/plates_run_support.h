@@ -22,13 +22,13 @@ constexpr double kRunTimeScale = 5;
 constexpr double kRunTimeScale = 20;
 #endif
 
-inline plates::Recipe samplingRecipe(const std::string& wells, double volumeUl = 10, std::optional<double> speedUlS = {})
+inline motion::plates::Recipe samplingRecipe(const std::string& wells, double volumeUl = 10, std::optional<double> speedUlS = {})
 {
-    plates::Recipe r;
+    motion::plates::Recipe r;
     r.name = "sampling";
     r.plates = {{"samples", "1", "sbs-96", 55, 70}};
-    plates::Step s;
-    s.type = plates::StepType::Aspirate;
+    motion::plates::Step s;
+    s.type = motion::plates::StepType::Aspirate;
     s.wells = {wells};
     s.volumeUl = volumeUl;
     s.speedUlS = speedUlS;
@@ -36,29 +36,29 @@ inline plates::Recipe samplingRecipe(const std::string& wells, double volumeUl =
     return r;
 }
 
-inline plates::PlanContext builtinContext()
+inline motion::plates::PlanContext builtinContext()
 {
-    plates::PlanContext c;
-    c.deck = platefiles::builtinDeck();
-    for (auto& lw : plates::builtinLabware())
+    motion::plates::PlanContext c;
+    c.deck = dev::files::plates::builtinDeck();
+    for (auto& lw : motion::plates::builtinLabware())
         c.labware[lw.id] = lw;
     return c;
 }
 
-inline plates::RecipePlan planFor(const plates::Recipe& r, const dev::BenchPilotClient& client)
+inline motion::plates::RecipePlan planFor(const motion::plates::Recipe& r, const dev::BenchPilotClient& client)
 {
-    plates::StartState s;
+    motion::plates::StartState s;
     const auto& a = client.status().axes;
     if (a.size() >= 4)
         s = {a[0].commanded, a[1].commanded, a[2].commanded, a[3].commanded};
-    return plates::planRecipe(r, builtinContext(), s);
+    return motion::plates::planRecipe(r, builtinContext(), s);
 }
 
 /// A resumed run's plan: from where the logged run began (its plunger), so the
 /// syringe's accounting is the original run's.
-inline plates::RecipePlan planForResume(const plates::Recipe& r, const dev::BenchPilotClient& client, const QString& log)
+inline motion::plates::RecipePlan planForResume(const motion::plates::Recipe& r, const dev::BenchPilotClient& client, const QString& log)
 {
-    return plates::planRecipe(r, builtinContext(), jobs::RecipeRunner::resumeStart(log, client));
+    return motion::plates::planRecipe(r, builtinContext(), dev::jobs::RecipeRunner::resumeStart(log, client));
 }
 
 /// Per op: how many "start" and "done" lines the log has.
@@ -72,14 +72,14 @@ inline LogCounts countLog(const QString& path)
     LogCounts c;
     std::string text;
     QString error;
-    if (!files::readText(path, &text, &error))
+    if (!dev::files::readText(path, &text, &error))
         return c;
     std::size_t from = 0;
     while (from < text.size()) {
         std::size_t end = text.find('\n', from);
         if (end == std::string::npos)
             end = text.size();
-        const auto parsed = jsonio::parse(std::string_view(text).substr(from, end - from));
+        const auto parsed = dev::files::json::parse(std::string_view(text).substr(from, end - from));
         from = end + 1;
         if (!parsed)
             continue;
@@ -105,21 +105,21 @@ inline LogCounts countLog(const QString& path)
     return c;
 }
 
-inline platefiles::RunLogState readLog(const QString& path)
+inline dev::files::plates::RunLogState readLog(const QString& path)
 {
     std::string text;
     QString error;
-    files::readText(path, &text, &error);
-    return platefiles::readRunLog(text);
+    dev::files::readText(path, &text, &error);
+    return dev::files::plates::readRunLog(text);
 }
 
 /// Waits for the runner to leave its running states.
-inline bool waitSettled(const jobs::RecipeRunner& r, int timeoutMs)
+inline bool waitSettled(const dev::jobs::RecipeRunner& r, int timeoutMs)
 {
     return itest::waitFor(
         [&] {
             const auto s = r.state();
-            return s == jobs::RunState::Finished || s == jobs::RunState::Stopped || s == jobs::RunState::Paused;
+            return s == dev::jobs::RunState::Finished || s == dev::jobs::RunState::Stopped || s == dev::jobs::RunState::Paused;
         },
         timeoutMs);
 }

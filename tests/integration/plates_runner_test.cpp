@@ -8,8 +8,8 @@
 
 using namespace itest;
 using namespace platestest;
-using jobs::RecipeRunner;
-using jobs::RunState;
+using dev::jobs::RecipeRunner;
+using dev::jobs::RunState;
 
 namespace {
 
@@ -21,24 +21,24 @@ protected:
         ASSERT_TRUE(s.homeAll());
         s.link.host().setTimeScale(kRunTimeScale);
         logPath = dir.filePath(QStringLiteral("run.jsonl"));
-        QObject::connect(&runner, &RecipeRunner::message, &runner, [this](const msg::Message& m, bool problem) {
+        QObject::connect(&runner, &RecipeRunner::message, &runner, [this](const motion::msg::Message& m, bool problem) {
             (problem ? problems : notes).push_back(m);
         });
     }
     double p() const { return s.readout('P').commanded; }
     double z() const { return s.readout('Z').commanded; }
 
-    SimSession s{proto::DeviceKind::Analyzer, kUnpaced};
+    SimSession s{dev::proto::DeviceKind::Analyzer, kUnpaced};
     RecipeRunner runner{&s.client};
     QTemporaryDir dir;
     QString logPath;
-    std::vector<msg::Message> problems, notes;
+    std::vector<motion::msg::Message> problems, notes;
 
     std::string problemText() const
     {
         std::string out;
-        for (const msg::Message& m : problems)
-            out += msg::debugString(m) + "\n";
+        for (const motion::msg::Message& m : problems)
+            out += motion::msg::debugString(m) + "\n";
         return out;
     }
 };
@@ -47,10 +47,10 @@ protected:
 
 TEST_F(PlateRun, A96WellRecipeRunsToTheEndWithEachWellLoggedOnceAndThePumpAtTheSum)
 {
-    const plates::RecipePlan plan = planFor(samplingRecipe("A1:H12", 10), s.client);
+    const motion::plates::RecipePlan plan = planFor(samplingRecipe("A1:H12", 10), s.client);
     ASSERT_TRUE(plan.ok());
     ASSERT_EQ(plan.ops.size(), 96u);
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(runner.setPlan(plan, QStringLiteral("sampling"), &error)) << error;
     const double p0 = p();
     const quint64 t0 = s.client.status().deviceTimeUs;
@@ -101,7 +101,7 @@ TEST_F(PlateRun, A96WellRecipeRunsToTheEndWithEachWellLoggedOnceAndThePumpAtTheS
     double profileS = 0;
     for (const auto& op : plan.ops)
         for (const auto& m : op.moves)
-            profileS += m.durationS > 0 ? m.durationS - platefiles::builtinDeck().moveOverheadS : 0;
+            profileS += m.durationS > 0 ? m.durationS - dev::files::plates::builtinDeck().moveOverheadS : 0;
     EXPECT_GT(virtualS, profileS * 0.99);
     RecordProperty("planned_s", std::to_string(plan.totalTimeS));
     RecordProperty("virtual_s", std::to_string(virtualS));
@@ -111,11 +111,11 @@ TEST_F(PlateRun, A96WellRecipeRunsToTheEndWithEachWellLoggedOnceAndThePumpAtTheS
 
 TEST_F(PlateRun, NothingMovesUntilTheRecipeValidatesAndTheMachineIsReady)
 {
-    plates::Recipe bad = samplingRecipe("I13", 10);
-    msg::Message error;
+    motion::plates::Recipe bad = samplingRecipe("I13", 10);
+    motion::msg::Message error;
     EXPECT_FALSE(runner.setPlan(planFor(bad, s.client), QStringLiteral("bad"), &error));
     EXPECT_EQ(error.id, "recipe.run.does_not_validate") << error;
-    const msg::Message cause = msg::nested(error, "cause");
+    const motion::msg::Message cause = motion::msg::nested(error, "cause");
     EXPECT_EQ(cause.id, "plate.unknown_well") << error;
     EXPECT_EQ(cause.text("well"), "\"I13\"") << error;
     EXPECT_EQ(cause.integer("wells"), 96) << error;
@@ -150,15 +150,15 @@ TEST_F(PlateRun, TheTipIsNeverLoweredBeforeItIsOverItsWell)
     std::vector<Sent> sent;
     s.tap.beforeWrite = [&](const QByteArray& bytes) {
         for (const auto& f : framesIn(bytes))
-            if (f.type == static_cast<std::uint8_t>(proto::MsgType::Move))
-                if (const auto m = proto::decodeMoveRequest(f.payload)) {
+            if (f.type == static_cast<std::uint8_t>(dev::proto::MsgType::Move))
+                if (const auto m = dev::proto::decodeMoveRequest(f.payload)) {
                     Sent x{m->axisMask, {}};
                     for (auto t : m->targets)
                         x.targets.push_back(t / 1e6);
                     sent.push_back(x);
                 }
     };
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(runner.setPlan(planFor(samplingRecipe("A1"), s.client), QStringLiteral("one"), &error));
     ASSERT_TRUE(runner.start(logPath, &error)) << error;
     ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Finished; }, 20000));
@@ -177,7 +177,7 @@ TEST_F(PlateRun, TheTipIsNeverLoweredBeforeItIsOverItsWell)
 
 TEST_F(PlateRun, PauseWaitsForTheWellUnderWayThenResumeFinishes)
 {
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(runner.setPlan(planFor(samplingRecipe("A1:A8"), s.client), QStringLiteral("row"), &error));
     ASSERT_TRUE(runner.start(logPath, &error)) << error;
     ASSERT_TRUE(waitFor([&] { return runner.progress().opsDone >= 2 && runner.state() == RunState::Running; }, 20000));
@@ -206,7 +206,7 @@ TEST_F(PlateRun, PauseWaitsForTheWellUnderWayThenResumeFinishes)
 // (it jumped from 2:42 to 4:28 when the pace was judged afresh from nothing).
 TEST_F(PlateRun, PausedNothingIsCurrentAndResumeKeepsTheEta)
 {
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(runner.setPlan(planFor(samplingRecipe("A1:A12"), s.client), QStringLiteral("row"), &error));
     ASSERT_TRUE(runner.start(logPath, &error)) << error;
     // Enough done for the pace to count (the runner judges it after 2 s of planned time).
@@ -215,11 +215,11 @@ TEST_F(PlateRun, PausedNothingIsCurrentAndResumeKeepsTheEta)
     runner.pause();
     ASSERT_TRUE(waitSettled(runner, 20000));
     ASSERT_EQ(runner.state(), RunState::Paused) << problemText();
-    const jobs::RunProgress paused = runner.progress();
+    const dev::jobs::RunProgress paused = runner.progress();
     ASSERT_LT(paused.opsDone, paused.opsTotal);
     EXPECT_EQ(paused.currentOp, -1) << "paused between wells, op " << paused.currentOp << " is shown as under way";
     EXPECT_EQ(paused.nextOp, paused.opsDone) << "the op Resume begins with";
-    EXPECT_EQ(msg::debugString(paused.nextLabel), msg::debugString(runner.plan().ops[static_cast<std::size_t>(paused.opsDone)].label()));
+    EXPECT_EQ(motion::msg::debugString(paused.nextLabel), motion::msg::debugString(runner.plan().ops[static_cast<std::size_t>(paused.opsDone)].label()));
     double remainingPlannedS = 0;
     for (int i = paused.opsDone; i < paused.opsTotal; ++i)
         remainingPlannedS += runner.plan().ops[static_cast<std::size_t>(i)].durationS;
@@ -228,7 +228,7 @@ TEST_F(PlateRun, PausedNothingIsCurrentAndResumeKeepsTheEta)
     spin(300);  // a pause of any length
     EXPECT_DOUBLE_EQ(runner.progress().etaS, paused.etaS) << "the ETA moves while nothing runs";
     ASSERT_TRUE(runner.resume({}, &error)) << error;
-    const jobs::RunProgress resumed = runner.progress();
+    const dev::jobs::RunProgress resumed = runner.progress();
     EXPECT_NEAR(resumed.etaS, paused.etaS, 0.05 * paused.etaS) << "the ETA jumped on Resume";
     EXPECT_EQ(resumed.nextOp, -1);
     ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Finished; }, 30000)) << problemText();
@@ -236,8 +236,8 @@ TEST_F(PlateRun, PausedNothingIsCurrentAndResumeKeepsTheEta)
 
 TEST_F(PlateRun, AbortStopsAtOnceThenLiftsTheTipAndTheLogResumes)
 {
-    msg::Message error;
-    const plates::RecipePlan plan = planFor(samplingRecipe("A1:A6"), s.client);
+    motion::msg::Message error;
+    const motion::plates::RecipePlan plan = planFor(samplingRecipe("A1:A6"), s.client);
     ASSERT_TRUE(runner.setPlan(plan, QStringLiteral("row"), &error));
     s.link.host().setTimeScale(1);  // so the status shows the tip going down
     ASSERT_TRUE(runner.start(logPath, &error));
@@ -248,18 +248,18 @@ TEST_F(PlateRun, AbortStopsAtOnceThenLiftsTheTipAndTheLogResumes)
     ASSERT_TRUE(waitFor([&] { return runner.state() == RunState::Stopped; }, 10000));
     ASSERT_TRUE(s.waitStill());
     EXPECT_LE(z(), 55 + 1e-6) << "Z went up to the safe height once everything was still";
-    EXPECT_GE(s.countEvents(proto::EventKind::Stopped, s.axis('Z')), 1) << "the move was stopped, not finished";
+    EXPECT_GE(s.countEvents(dev::proto::EventKind::Stopped, s.axis('Z')), 1) << "the move was stopped, not finished";
     const auto st = readLog(logPath);
     EXPECT_EQ(st.lastStop, "recipe.run.aborted");
     EXPECT_EQ(st.doneCount(), 2);
-    EXPECT_EQ(st.ops[2].state, platefiles::OpState::Started) << "no liquid had moved in the third well";
+    EXPECT_EQ(st.ops[2].state, dev::files::plates::OpState::Started) << "no liquid had moved in the third well";
     s.link.host().setTimeScale(kRunTimeScale);
 
     // A later run continues from the log: the third well begins again, the first two are not touched.
     RecipeRunner again(&s.client);
     ASSERT_TRUE(again.setPlan(planForResume(samplingRecipe("A1:A6"), s.client, logPath), QStringLiteral("row"), &error));
     bool asked = false;
-    ASSERT_TRUE(again.resumeFromLog(logPath, [&](const jobs::InterruptedOp&) { asked = true; return jobs::InterruptedChoice::Skip; }, &error))
+    ASSERT_TRUE(again.resumeFromLog(logPath, [&](const dev::jobs::InterruptedOp&) { asked = true; return dev::jobs::InterruptedChoice::Skip; }, &error))
         << error;
     EXPECT_FALSE(asked) << "nothing to ask: no liquid had moved";
     ASSERT_TRUE(waitFor([&] { return again.state() == RunState::Finished; }, 30000));
@@ -275,7 +275,7 @@ TEST_F(PlateRun, AbortStopsAtOnceThenLiftsTheTipAndTheLogResumes)
 
 TEST_F(PlateRun, APulledCableStopsTheRunWhichResumesAfterReconnecting)
 {
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(runner.setPlan(planFor(samplingRecipe("A1:A8"), s.client), QStringLiteral("row"), &error));
     ASSERT_TRUE(runner.start(logPath, &error));
     ASSERT_TRUE(waitFor([&] { return runner.progress().opsDone >= 3; }, 20000));
@@ -288,16 +288,16 @@ TEST_F(PlateRun, APulledCableStopsTheRunWhichResumesAfterReconnecting)
     s.link.pair().replug();
     ASSERT_TRUE(s.connect());
     ASSERT_TRUE(s.waitStill());
-    jobs::InterruptedOp seen;
+    dev::jobs::InterruptedOp seen;
     bool asked = false;
     ASSERT_TRUE(runner.resume(
-                    [&](const jobs::InterruptedOp& op) {
+                    [&](const dev::jobs::InterruptedOp& op) {
                         // As an operator would: the evidence says whether the
                         // plunger move left before the cable went.
                         asked = true;
                         seen = op;
-                        return op.evidence.id == "recipe.evidence.nothing_moved" ? jobs::InterruptedChoice::Redo
-                                                                                        : jobs::InterruptedChoice::Skip;
+                        return op.evidence.id == "recipe.evidence.nothing_moved" ? dev::jobs::InterruptedChoice::Redo
+                                                                                        : dev::jobs::InterruptedChoice::Skip;
                     },
                     &error))
         << error;
@@ -309,5 +309,5 @@ TEST_F(PlateRun, APulledCableStopsTheRunWhichResumesAfterReconnecting)
     EXPECT_EQ(c.stops, 1);
     EXPECT_EQ(c.resumes, 1);
     // Whether the cable went mid-aspirate or not, the plunger holds 10 µL per well.
-    EXPECT_NEAR(p(), 80, 1e-6) << (asked ? msg::debugString(seen.evidence) : std::string("no op was mid-aspirate"));
+    EXPECT_NEAR(p(), 80, 1e-6) << (asked ? motion::msg::debugString(seen.evidence) : std::string("no op was mid-aspirate"));
 }

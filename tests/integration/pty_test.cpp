@@ -176,16 +176,16 @@ TEST(PtySerial, SimulatorTerminatedDuringMoveIsLinkLostAndItsSymlinkIsGone)
     dev::SerialTransport port(sim.link(), 115200);
     dev::BenchPilotClient client;
     QStringList errors;
-    QObject::connect(&client, &dev::BenchPilotClient::linkError, &client, [&](const msg::Message& m) { errors << QString::fromStdString(msg::debugString(m)); });
+    QObject::connect(&client, &dev::BenchPilotClient::linkError, &client, [&](const motion::msg::Message& m) { errors << QString::fromStdString(motion::msg::debugString(m)); });
     client.setTransport(&port);
     client.connectLink();
     ASSERT_TRUE(waitFor([&] { return client.state() == LinkState::Ready || client.state() == LinkState::Disconnected; }, 5000));
     ASSERT_EQ(client.state(), LinkState::Ready) << errors.join(QStringLiteral(" | ")).toStdString();
-    EXPECT_EQ(client.identity().kind, proto::DeviceKind::Stage);
+    EXPECT_EQ(client.identity().kind, dev::proto::DeviceKind::Stage);
 
     bool accepted = false;
     client.move({{0, 30.0}}, true, 0, [&](const auto& e) {
-        EXPECT_FALSE(e) << msg::debugString(e->message);
+        EXPECT_FALSE(e) << motion::msg::debugString(e->message);
         accepted = true;
     });
     ASSERT_TRUE(waitFor([&] { return accepted && client.status().axes[0].moving; }, 5000));

@@ -34,7 +34,7 @@ CliOutput scanCli(const QString& line)
 {
     CliOutput r;
     QTextStream out(&r.out), err(&r.err);
-    r.code = cli::runCli(line.split(QLatin1Char(' '), Qt::SkipEmptyParts), out, err);
+    r.code = app::cli::runCli(line.split(QLatin1Char(' '), Qt::SkipEmptyParts), out, err);
     out.flush();
     err.flush();
     return r;
@@ -44,7 +44,7 @@ std::string readFile(const QString& path)
 {
     std::string text;
     QString error;
-    files::readText(path, &text, &error);
+    dev::files::readText(path, &text, &error);
     return text;
 }
 
@@ -54,7 +54,7 @@ TEST(ScanCli, PlanPrintsAPlanFileThatRunsAsIs)
 {
     const CliOutput r = scanCli(QStringLiteral("scan plan --roi 10,10,20,15 --fov 1.2,1 --overlap 0.2,0.1 --order snake-cols --start bottom-right"));
     ASSERT_EQ(r.code, 0) << r.err.toStdString();
-    const auto plan = scanfile::parsePlan(r.out.toStdString());
+    const auto plan = dev::files::scan::parsePlan(r.out.toStdString());
     ASSERT_TRUE(plan.plan) << i18ntest::englishFormat(plan.problems, "stdout");
     EXPECT_EQ(plan.plan->order, motion::scan::ScanOrder::SnakeColumns);
     EXPECT_EQ(plan.plan->start, motion::scan::StartCorner::BottomRight);
@@ -64,7 +64,7 @@ TEST(ScanCli, PlanPrintsAPlanFileThatRunsAsIs)
     QTemporaryDir dir;
     const QString file = dir.filePath(QStringLiteral("p.scan.json"));
     QString error;
-    ASSERT_TRUE(files::writeAtomically(file, r.out.toStdString(), &error));
+    ASSERT_TRUE(dev::files::writeAtomically(file, r.out.toStdString(), &error));
     const CliOutput again = scanCli(QStringLiteral("scan plan %1 --format tileconfig --pixel-um 0.5").arg(file));
     ASSERT_EQ(again.code, 0) << again.err.toStdString();
     const auto fiji = scanread::readTileConfiguration(again.out.toStdString());
@@ -143,7 +143,7 @@ TEST(ScanCli, RunRefusesTheAnalyzerAndAnUnhomedStage)
     const CliOutput p = scanCli(QStringLiteral("scan plan --roi 40,60,42,62 --fov 1,1"));
     ASSERT_EQ(p.code, 0);
     QString error;
-    ASSERT_TRUE(files::writeAtomically(plan, p.out.toStdString(), &error));
+    ASSERT_TRUE(dev::files::writeAtomically(plan, p.out.toStdString(), &error));
     const CliOutput analyzer = scanCli(QStringLiteral("--sim analyzer scan run %1 --out %2").arg(plan, dir.filePath(QStringLiteral("a"))));
     EXPECT_EQ(analyzer.code, 2);
     EXPECT_TRUE(analyzer.err.contains(QStringLiteral("scans run on the microscope stage"))) << analyzer.err.toStdString();
@@ -164,14 +164,14 @@ TEST(ScanCli, AnotherPlansRunLogAsksForRestartInAnyLanguage)
     const CliOutput b = scanCli(QStringLiteral("scan plan --roi 40,60,42,62 --fov 1,1 --overlap 0.3"));
     ASSERT_EQ(a.code, 0);
     ASSERT_EQ(b.code, 0);
-    ASSERT_TRUE(files::writeAtomically(planA, a.out.toStdString(), &error));
-    ASSERT_TRUE(files::writeAtomically(planB, b.out.toStdString(), &error));
+    ASSERT_TRUE(dev::files::writeAtomically(planA, a.out.toStdString(), &error));
+    ASSERT_TRUE(dev::files::writeAtomically(planB, b.out.toStdString(), &error));
     // Plan A's run log goes into the folder (the unhomed stage then refuses to move).
     EXPECT_EQ(scanCli(QStringLiteral("--sim stage scan run %1 --out %2").arg(planA, out)).code, 2);
-    ASSERT_TRUE(QFile::exists(QDir(out).filePath(QLatin1String(scanfile::kRunLogFile))));
+    ASSERT_TRUE(QFile::exists(QDir(out).filePath(QLatin1String(dev::files::scan::kRunLogFile))));
 
     // The runner's messages translated: the hint must not depend on their English words.
-    const i18ntest::PseudoTranslation translated({QStringLiteral("words::ScanWords")});
+    const i18ntest::PseudoTranslation translated({QStringLiteral("ui::words::ScanWords")});
     const CliOutput other = scanCli(QStringLiteral("--sim stage scan run %1 --out %2").arg(planB, out));
     EXPECT_EQ(other.code, 1) << "a usage problem: the command line decides";
     EXPECT_TRUE(other.err.contains(QStringLiteral("--restart starts over"))) << other.err.toStdString();
@@ -195,7 +195,7 @@ TEST(ScanCli, RunWritesTheExportsWithMeasuredPositionsAndContinuesAfterACrash)
                                                             QStringLiteral("--exposure"), QStringLiteral("0.01")});
     ASSERT_EQ(made.exitCode, 0) << made.describe();
     QString error;
-    ASSERT_TRUE(files::writeAtomically(plan, made.out.toStdString(), &error));
+    ASSERT_TRUE(dev::files::writeAtomically(plan, made.out.toStdString(), &error));
     const QStringList runArgs = {QStringLiteral("--port"), sim.link(), QStringLiteral("scan"), QStringLiteral("run"), plan,
                                  QStringLiteral("--out"), out, QStringLiteral("--home")};
     const auto first = runProgram(binary("benchpilot-cli"), runArgs, 90000);
@@ -213,18 +213,18 @@ TEST(ScanCli, RunWritesTheExportsWithMeasuredPositionsAndContinuesAfterACrash)
     EXPECT_TRUE(scanread::readMicroManagerPositions(readFile(QDir(out).filePath(QStringLiteral("positions.pos")))).error.empty());
 
     // A crash after tile 4: the run log keeps four tiles (and half a line). Run again: it continues at tile 5.
-    const QString logPath = QDir(out).filePath(QLatin1String(scanfile::kRunLogFile));
+    const QString logPath = QDir(out).filePath(QLatin1String(dev::files::scan::kRunLogFile));
     const std::string log = readFile(logPath);
     std::size_t cut = 0;
     for (int line = 0; line < 5; ++line)
         cut = log.find('\n', cut) + 1;
-    ASSERT_TRUE(files::writeAtomically(logPath, log.substr(0, cut) + log.substr(cut, 40), &error));
+    ASSERT_TRUE(dev::files::writeAtomically(logPath, log.substr(0, cut) + log.substr(cut, 40), &error));
     const auto again = runProgram(binary("benchpilot-cli"), QStringList(runArgs.mid(0, 7)), 90000);
     ASSERT_EQ(again.exitCode, 0) << again.describe();
     EXPECT_TRUE(again.out.contains(QStringLiteral("Continuing at tile 5 of 9"))) << again.out.toStdString();
     EXPECT_FALSE(again.out.contains(QStringLiteral("tile 4/9"))) << "tiles already taken are not taken again";
     EXPECT_TRUE(again.out.contains(QStringLiteral("tile 9/9"))) << again.out.toStdString();
-    const auto parsed = scanfile::parseRunLog(readFile(logPath));
+    const auto parsed = dev::files::scan::parseRunLog(readFile(logPath));
     ASSERT_TRUE(parsed.log) << i18ntest::englishFormat(parsed.problems, "log");
     EXPECT_EQ(parsed.log->records.size(), 9u);
 }

@@ -1,4 +1,4 @@
-// The way from "Run" to a running scan (jobs::ScanLaunch), below any widget: the
+// The way from "Run" to a running scan (dev::jobs::ScanLaunch), below any widget: the
 // Scan screen and the CLI's `scan run` both take their decisions from it, so what it
 // says here is what both front ends do — a fresh run's first move and whether it is
 // long, a resume at the next tile with no question about the approach, another plan's
@@ -16,10 +16,10 @@
 #include <memory>
 
 using namespace itest;
-using jobs::ScanDecision;
-using jobs::ScanLaunch;
-using jobs::ScanRunner;
-using Kind = jobs::ScanDecision::Kind;
+using dev::jobs::ScanDecision;
+using dev::jobs::ScanLaunch;
+using dev::jobs::ScanRunner;
+using Kind = dev::jobs::ScanDecision::Kind;
 
 namespace {
 
@@ -41,7 +41,7 @@ motion::scan::ScanPlan launchPlan()
 }
 
 struct LaunchStage {
-    LaunchStage() : session(proto::DeviceKind::Stage, kUnpaced) {}
+    LaunchStage() : session(dev::proto::DeviceKind::Stage, kUnpaced) {}
     bool ready()
     {
         if (!session.connect() || !session.homeAll())
@@ -104,7 +104,7 @@ TEST(ScanLaunch, AStoppedRunResumesAtItsNextTileWithoutAskingAboutTheApproach)
     ASSERT_TRUE(s.ready());
     auto screen = s.frontEnd();
     ASSERT_EQ(screen->launch.prepare(launchPlan(), s.dir.path()).kind, Kind::Ready);
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(screen->launch.start(&error)) << error;
     ASSERT_TRUE(waitFor([&] { return screen->runner.takenTiles() >= 3; }, 20000));
     screen->runner.abort();
@@ -161,7 +161,7 @@ TEST(ScanLaunch, ACompleteRunAsksBeforeTakingItAgain)
     ASSERT_TRUE(s.ready());
     auto f = s.frontEnd();
     ASSERT_EQ(f->launch.prepare(launchPlan(), s.dir.path()).kind, Kind::Ready);
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(f->launch.start(&error)) << error;
     ASSERT_TRUE(waitFor([&] { return f->runner.state() == ScanRunner::State::Finished; }, 30000));
 
@@ -185,7 +185,7 @@ TEST(ScanLaunch, SoftLimitsSetAfterPreparingStillKeepThePlanFromStarting)
     const ScanDecision d = f->launch.prepare(launchPlan(), s.dir.path());
     ASSERT_EQ(d.kind, Kind::Blocked) << launchText(d);
     EXPECT_EQ(d.blockers.front().id, "scan.run.plan_problem");
-    msg::Message error;
+    motion::msg::Message error;
     EXPECT_FALSE(f->launch.start(&error));
     EXPECT_EQ(error.id, "scan.run.plan_problem") << error;
 }

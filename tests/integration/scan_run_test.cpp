@@ -20,7 +20,7 @@
 #include <memory>
 
 using namespace itest;
-using jobs::ScanRunner;
+using dev::jobs::ScanRunner;
 using motion::scan::ScanPlan;
 
 namespace {
@@ -43,7 +43,7 @@ ScanPlan smallPlan()
 }
 
 struct StageScan {
-    StageScan() : session(proto::DeviceKind::Stage, kUnpaced) {}
+    StageScan() : session(dev::proto::DeviceKind::Stage, kUnpaced) {}
     /// Connected, homed, and the simulator's clock sped up: the first move crosses
     /// half the stage at 10 mm/s. Everything the runner checks runs on device time.
     bool ready()
@@ -66,8 +66,8 @@ bool waitState(ScanRunner& r, ScanRunner::State s, int ms = 30000)
 int logLines(const QString& path)
 {
     std::string text;
-    msg::Message error;
-    if (!files::readText(path, &text, &error))
+    motion::msg::Message error;
+    if (!dev::files::readText(path, &text, &error))
         return -1;
     return static_cast<int>(std::count(text.begin(), text.end(), '\n')) - 1;  // less the header
 }
@@ -79,18 +79,18 @@ TEST(ScanRun, EveryTileIsTakenWithinTheToleranceAndExported)
     StageScan s;
     ASSERT_TRUE(s.ready()) << s.session.linkErrors.join(QLatin1Char(' ')).toStdString();
     auto r = s.runner();
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error;
     ASSERT_EQ(r->totalTiles(), 9);
-    std::vector<msg::Message> problems;
+    std::vector<motion::msg::Message> problems;
     QStringList exports;
     std::vector<int> triggered;
-    QObject::connect(r.get(), &ScanRunner::problem, [&](const msg::Message& m) { problems.push_back(m); });
+    QObject::connect(r.get(), &ScanRunner::problem, [&](const motion::msg::Message& m) { problems.push_back(m); });
     QObject::connect(r.get(), &ScanRunner::triggered, [&](int tile, quint64) { triggered.push_back(tile); });
     QObject::connect(r.get(), &ScanRunner::finished, [&](const QStringList& e) { exports = e; });
     ASSERT_TRUE(r->start(&error)) << error;
-    ASSERT_TRUE(waitState(*r, ScanRunner::State::Finished)) << (problems.empty() ? msg::Message{} : problems.back());
-    for (const msg::Message& m : problems)
+    ASSERT_TRUE(waitState(*r, ScanRunner::State::Finished)) << (problems.empty() ? motion::msg::Message{} : problems.back());
+    for (const motion::msg::Message& m : problems)
         ADD_FAILURE() << "problem: " << m;
     EXPECT_EQ(triggered, (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7, 8}));
     quint64 lastUs = 0;
@@ -110,7 +110,7 @@ TEST(ScanRun, EveryTileIsTakenWithinTheToleranceAndExported)
     EXPECT_EQ(logLines(r->logPath()), 9);
     ASSERT_EQ(exports.size(), 3);
     std::string text;
-    ASSERT_TRUE(files::readText(QDir(s.dir.path()).filePath(QLatin1String(scanfile::kTileConfigFile)), &text, &error));
+    ASSERT_TRUE(dev::files::readText(QDir(s.dir.path()).filePath(QLatin1String(dev::files::scan::kTileConfigFile)), &text, &error));
     const auto fiji = scanread::readTileConfiguration(text);
     ASSERT_TRUE(fiji.error.empty()) << fiji.error;
     ASSERT_EQ(fiji.tiles.size(), 9u);
@@ -123,7 +123,7 @@ TEST(ScanRun, NothingMovesBeforeHoming)
     StageScan s;
     ASSERT_TRUE(s.session.connect());
     auto r = s.runner();
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error;
     const double before = s.session.link.machine().commandedLogical(0);
     EXPECT_FALSE(r->start(&error));
@@ -140,12 +140,12 @@ TEST(ScanRun, TheWholePlanIsCheckedAgainstTheSoftLimitsFirst)
     ASSERT_FALSE(s.session.call([&](auto cb) { s.session.client.setSoftLimits(1, 0, 62, cb); }));
     ASSERT_TRUE(waitFor([&] { return s.session.client.softLimits().size() >= 2 && s.session.client.softLimits()[1].max < 62.5; }, 3000));
     auto r = s.runner();
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error;
     const double before = s.session.link.machine().commandedLogical(1);
     EXPECT_FALSE(r->start(&error));
     EXPECT_EQ(error.id, "scan.run.plan_problem") << error;
-    const msg::Message cause = msg::nested(error, "cause");
+    const motion::msg::Message cause = motion::msg::nested(error, "cause");
     EXPECT_EQ(cause.id, "scan.region_beyond_travel") << error;
     EXPECT_EQ(cause.number("ty0", -1), 0.0) << error;
     EXPECT_NEAR(cause.number("ty1"), 62.0, 1e-9) << error;
@@ -158,7 +158,7 @@ TEST(ScanRun, AbortStopsTheStageAndResumeContinuesAtTheNextTile)
     StageScan s;
     ASSERT_TRUE(s.ready());
     auto r = s.runner();
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error;
     std::vector<int> taken;
     QObject::connect(r.get(), &ScanRunner::tileTaken, [&](int t) { taken.push_back(t); });
@@ -181,7 +181,7 @@ TEST(ScanRun, PauseWaitsForTheTileInProgress)
     StageScan s;
     ASSERT_TRUE(s.ready());
     auto r = s.runner();
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error;
     ASSERT_TRUE(r->start(&error)) << error;
     ASSERT_TRUE(waitFor([&] { return r->takenTiles() >= 1; }, 20000));
@@ -200,17 +200,17 @@ TEST(ScanRun, ALostLinkStopsTheRunAndItContinuesAfterReconnecting)
     StageScan s;
     ASSERT_TRUE(s.ready());
     auto r = s.runner();
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error;
-    std::vector<msg::Message> problems;
-    QObject::connect(r.get(), &ScanRunner::problem, [&](const msg::Message& m) { problems.push_back(m); });
+    std::vector<motion::msg::Message> problems;
+    QObject::connect(r.get(), &ScanRunner::problem, [&](const motion::msg::Message& m) { problems.push_back(m); });
     ASSERT_TRUE(r->start(&error)) << error;
     ASSERT_TRUE(waitFor([&] { return r->takenTiles() >= 2; }, 20000));
     // The cable comes out with a MOVE on the wire: the request is lost with the link,
     // and the run says so (not "refused") whichever the client reports first.
     bool pulled = false;
     s.session.tap.afterWrite = [&](const QByteArray& bytes) {
-        if (!pulled && containsFrame(bytes, proto::MsgType::Move)) {
+        if (!pulled && containsFrame(bytes, dev::proto::MsgType::Move)) {
             pulled = true;
             QTimer::singleShot(0, [&] { s.session.link.pair().unplug(); });
         }
@@ -238,7 +238,7 @@ TEST(ScanRun, ARunnerGoneWithItsFirstMoveInFlightIsNeverCalledBack)
     // (under the sanitizers this was a use after free).
     StageScan s;
     ASSERT_TRUE(s.ready());
-    msg::Message error;
+    motion::msg::Message error;
     {
         auto r = s.runner();
         ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error;
@@ -252,7 +252,7 @@ TEST(ScanRun, ARunLogOutlivesTheProgram)
 {
     StageScan s;
     ASSERT_TRUE(s.ready());
-    msg::Message error;
+    motion::msg::Message error;
     {
         auto first = s.runner();
         ASSERT_TRUE(first->prepare(smallPlan(), s.dir.path(), false, &error)) << error;
@@ -281,7 +281,7 @@ TEST(ScanRun, TimeLeftFallsTileByTileAndKeepsToThePlansEstimate)
     StageScan s;
     ASSERT_TRUE(s.ready()) << s.session.linkErrors.join(QLatin1Char(' ')).toStdString();
     auto r = s.runner();
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error;
     EXPECT_DOUBLE_EQ(r->etaS(), r->estimate().totalS) << "before the start: the whole plan";
     // The device's clock is stepped by hand: 10 ms a step while the stage moves and
@@ -337,7 +337,7 @@ TEST(ScanRun, AnotherPlansLogIsNeverOverwritten)
 {
     StageScan s;
     ASSERT_TRUE(s.session.connect());
-    msg::Message error;
+    motion::msg::Message error;
     auto r = s.runner();
     ASSERT_TRUE(r->prepare(smallPlan(), s.dir.path(), false, &error)) << error;
     ScanPlan other = smallPlan();
@@ -366,10 +366,10 @@ TEST(ScanRun, TheStagesOwnCompensationPutsTheWorkPointOnThePlan)
         p.compensation.enabled = compensate;
         QTemporaryDir dir;
         auto r = s.runner();
-        msg::Message error;
+        motion::msg::Message error;
         EXPECT_TRUE(r->prepare(p, dir.path(), false, &error)) << error;
         EXPECT_TRUE(waitFor([&] { return r->preflight().empty(); }, 5000))
-            << (r->preflight().empty() ? std::string() : msg::debugString(r->preflight().front()));
+            << (r->preflight().empty() ? std::string() : motion::msg::debugString(r->preflight().front()));
         double worstUm = 0;
         QObject::connect(r.get(), &ScanRunner::triggered, [&](int tile, quint64) {
             const auto& planned = r->layout().tiles[static_cast<std::size_t>(tile)].centre;
@@ -390,10 +390,10 @@ TEST(ScanRun, TheStagesOwnCompensationPutsTheWorkPointOnThePlan)
     {
         QTemporaryDir dir;
         auto r = s.runner();
-        msg::Message error;
+        motion::msg::Message error;
         ASSERT_TRUE(r->prepare(p, dir.path(), false, &error)) << error;
         const auto has = [&](const char* id) {
-            for (const msg::Message& m : r->preflight())
+            for (const motion::msg::Message& m : r->preflight())
                 if (m.id == id)
                     return true;
             return false;
@@ -433,7 +433,7 @@ TEST(ScanRun, TheEstimateMatchesTheRunOnTheDevicesClock)
     ASSERT_TRUE(s.session.waitStill());
     s.session.link.host().setTimeScale(1);
     auto r = s.runner();
-    msg::Message error;
+    motion::msg::Message error;
     ASSERT_TRUE(r->prepare(p, s.dir.path(), false, &error)) << error;
     ASSERT_EQ(r->totalTiles(), 10);
     ASSERT_TRUE(r->start(&error)) << error;

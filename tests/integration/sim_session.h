@@ -24,15 +24,15 @@ constexpr qint32 kUnpaced = 0;
 
 class SimSession {
 public:
-    explicit SimSession(proto::DeviceKind kind, qint32 baud = kLinkBaud)
+    explicit SimSession(dev::proto::DeviceKind kind, qint32 baud = kLinkBaud)
         : link(kind, baud), tap(link.hostEnd())
     {
         QObject::connect(&client, &dev::BenchPilotClient::eventReceived, &client,
                          [this](const dev::DeviceEvent& e) { events.push_back(e); });
         QObject::connect(&client, &dev::BenchPilotClient::linkError, &client,
-                         [this](const msg::Message& m) {
+                         [this](const motion::msg::Message& m) {
                              linkMessages.push_back(m);
-                             linkErrors << QString::fromStdString(msg::debugString(m));
+                             linkErrors << QString::fromStdString(motion::msg::debugString(m));
                          });
         QObject::connect(&client, &dev::BenchPilotClient::requestFailed, &client,
                          [this](const dev::RequestError& e) { failures.push_back(e); });
@@ -68,8 +68,8 @@ public:
             ADD_FAILURE() << "the client never completed the request";
             dev::RequestError e;
             e.kind = dev::RequestError::Kind::Timeout;
-            e.message = msg::make("request.no_reply", {msg::verbatim("request", "the test's request"), msg::integer("attempts", 1),
-                                                       msg::real("seconds", timeoutMs / 1000.0, msg::Unit::S)});
+            e.message = motion::msg::make("request.no_reply", {motion::msg::verbatim("request", "the test's request"), motion::msg::integer("attempts", 1),
+                                                       motion::msg::real("seconds", timeoutMs / 1000.0, motion::msg::Unit::S)});
             return e;
         }
         return result;
@@ -90,18 +90,18 @@ public:
     static constexpr int kAnyAxis = -2;
 
     /// Index in `events` of the first event of `kind` on `axisIndex` at or after `from`; −1 if none.
-    int findEvent(proto::EventKind kind, int axisIndex, std::size_t from = 0) const
+    int findEvent(dev::proto::EventKind kind, int axisIndex, std::size_t from = 0) const
     {
         for (std::size_t i = from; i < events.size(); ++i)
             if (events[i].kind == kind && (axisIndex < -1 || events[i].axis == axisIndex))
                 return static_cast<int>(i);
         return -1;
     }
-    bool waitEvent(proto::EventKind kind, int axisIndex, std::size_t from = 0, int timeoutMs = 10000)
+    bool waitEvent(dev::proto::EventKind kind, int axisIndex, std::size_t from = 0, int timeoutMs = 10000)
     {
         return waitFor([&] { return findEvent(kind, axisIndex, from) >= 0; }, timeoutMs);
     }
-    int countEvents(proto::EventKind kind, int axisIndex, std::size_t from = 0) const
+    int countEvents(dev::proto::EventKind kind, int axisIndex, std::size_t from = 0) const
     {
         int n = 0;
         for (std::size_t i = from; i < events.size(); ++i)
@@ -117,7 +117,7 @@ public:
         link.host().setTimeScale(timeScale);
         const auto err = call([this](auto cb) { client.home(0, cb); });
         if (err) {
-            ADD_FAILURE() << "home refused: " << msg::debugString(err->message);
+            ADD_FAILURE() << "home refused: " << motion::msg::debugString(err->message);
             link.host().setTimeScale(1);
             return false;
         }
@@ -139,7 +139,7 @@ public:
     TapTransport tap;
     dev::BenchPilotClient client;
     std::vector<dev::DeviceEvent> events;
-    std::vector<msg::Message> linkMessages;  ///< every linkError, in order
+    std::vector<motion::msg::Message> linkMessages;  ///< every linkError, in order
     QStringList linkErrors;                  ///< the same as debug strings, for failure output
     std::vector<dev::RequestError> failures;
     int statusCount = 0;

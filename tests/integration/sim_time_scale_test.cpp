@@ -8,8 +8,8 @@ namespace {
 
 TEST(SimTimeScale, ASpedUpSimulatorOnAPacedLinkAnswersWhileItStreamsEveryHistoryChannel)
 {
-    itest::SimSession s(proto::DeviceKind::Analyzer, itest::kLinkBaud);
-    tele::TelemetryHub hub;
+    itest::SimSession s(dev::proto::DeviceKind::Analyzer, itest::kLinkBaud);
+    dev::tele::TelemetryHub hub;
     hub.enableHistory();  // what the application does: every axis's history channels from connection on
     hub.addInstrument(0, QStringLiteral("Analyzer"), &s.client);
     ASSERT_TRUE(s.connect());
@@ -20,7 +20,7 @@ TEST(SimTimeScale, ASpedUpSimulatorOnAPacedLinkAnswersWhileItStreamsEveryHistory
     // Ten round trips, each while 10 device seconds of samples a wall second cross the wire.
     for (int k = 0; k < 10; ++k) {
         const auto err = s.call([&](auto cb) { s.client.stop(0, cb); }, 3000);
-        ASSERT_FALSE(err) << k << ": " << msg::debugString(err->message);
+        ASSERT_FALSE(err) << k << ": " << motion::msg::debugString(err->message);
     }
     EXPECT_EQ(s.client.stats().retransmits, 0u) << "a reply queued behind samples is retried";
     EXPECT_EQ(hub.lostSamples(0), 0u);

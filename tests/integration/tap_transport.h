@@ -12,15 +12,15 @@
 namespace itest {
 
 /// Frame types found in a chunk of wire bytes (whole frames, as the client writes them).
-inline std::vector<proto::Frame> framesIn(const QByteArray& bytes)
+inline std::vector<dev::proto::Frame> framesIn(const QByteArray& bytes)
 {
-    proto::FrameDecoder d;
-    std::vector<proto::Frame> out;
+    dev::proto::FrameDecoder d;
+    std::vector<dev::proto::Frame> out;
     d.feed(reinterpret_cast<const std::uint8_t*>(bytes.constData()), static_cast<std::size_t>(bytes.size()), out);
     return out;
 }
 
-inline bool containsFrame(const QByteArray& bytes, proto::MsgType type)
+inline bool containsFrame(const QByteArray& bytes, dev::proto::MsgType type)
 {
     for (const auto& f : framesIn(bytes))
         if (f.type == static_cast<std::uint8_t>(type))
@@ -55,7 +55,7 @@ public:
     std::function<void(const QByteArray&)> beforeWrite, afterWrite;
     /// When set, each whole frame from the device is offered to it first and is lost
     /// on the line when it answers true (a frame cut by a read boundary waits for its end).
-    std::function<bool(const proto::Frame&)> dropReceived;
+    std::function<bool(const dev::proto::Frame&)> dropReceived;
 
 private:
     void received(const QByteArray& bytes)
@@ -64,18 +64,18 @@ private:
             emit bytesReceived(bytes);
             return;
         }
-        std::vector<proto::Frame> frames;
+        std::vector<dev::proto::Frame> frames;
         m_decoder.feed(reinterpret_cast<const std::uint8_t*>(bytes.constData()), static_cast<std::size_t>(bytes.size()), frames);
         std::vector<std::uint8_t> out;
         for (const auto& f : frames)
             if (!dropReceived(f))
-                proto::encodeFrame(f, out);
+                dev::proto::encodeFrame(f, out);
         if (!out.empty())
             emit bytesReceived(QByteArray(reinterpret_cast<const char*>(out.data()), static_cast<int>(out.size())));
     }
 
     dev::Transport* m_inner;
-    proto::FrameDecoder m_decoder;
+    dev::proto::FrameDecoder m_decoder;
 };
 
 } // namespace itest

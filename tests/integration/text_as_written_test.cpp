@@ -57,10 +57,10 @@ QString mojibake(const QString& text)
 }
 
 /// Every command's path ("recipe run"), groups included, as the help walks them.
-QStringList commandPaths(const std::vector<cli::Command>& list, const QString& above = {})
+QStringList commandPaths(const std::vector<app::cli::Command>& list, const QString& above = {})
 {
     QStringList out;
-    for (const cli::Command& c : list) {
+    for (const app::cli::Command& c : list) {
         const QString path = above.isEmpty() ? c.name : above + QLatin1Char(' ') + c.name;
         out << path << commandPaths(c.subcommands, path);
     }
@@ -100,7 +100,7 @@ TEST(TextAsWritten, TheCheckFindsMojibakeAndPassesTextAsWritten)
 
 TEST(TextAsWritten, EveryCommandsHelpInEnglishAndChinese)
 {
-    const QStringList paths = commandPaths(cli::commands());
+    const QStringList paths = commandPaths(app::cli::commands());
     ASSERT_GT(paths.size(), 20);
     for (const char* language : {"en", "zh_CN"}) {
         const QStringList lang{QStringLiteral("--lang"), QString::fromLatin1(language)};
@@ -132,7 +132,7 @@ TEST(TextAsWritten, TheApisMethodListAndOpenRpcDocument)
     });
     EXPECT_GT(strings, 500) << "every method, parameter and description was read";
     // The methods as the server holds them, option value names included (they are not all in the document).
-    for (const api::CommandMethod& m : api::commandMethods())
+    for (const app::api::CommandMethod& m : app::api::commandMethods())
         for (const QCommandLineOption& o : m.command->options)
             for (const QString& text : {o.valueName(), o.description(), o.defaultValues().join(QLatin1Char(','))})
                 EXPECT_EQ(mojibake(text).toStdString(), "") << m.method.toStdString() << " --" << o.names().constLast().toStdString();

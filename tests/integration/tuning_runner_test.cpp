@@ -23,15 +23,15 @@ using motion::control::TuningMethod;
 namespace {
 
 struct StageTuning {
-    SimSession s{proto::DeviceKind::Stage, kUnpaced};  // homing runs on a sped-up clock
+    SimSession s{dev::proto::DeviceKind::Stage, kUnpaced};  // homing runs on a sped-up clock
     dev::TuningClient& tuning = *s.client.tuning();
     int x = 0;
     std::unique_ptr<dev::InstrumentTarget> target;
     TuningRunner runner;
     std::vector<motion::control::Record> records;
-    std::vector<msg::Message> messages;
+    std::vector<motion::msg::Message> messages;
     bool finished = false, ok = false;
-    msg::Message finalMessage;
+    motion::msg::Message finalMessage;
 
     bool setUp()
     {
@@ -43,7 +43,7 @@ struct StageTuning {
             return false;
         x = s.axis('X');
         if (const auto e = s.call([&](auto cb) { s.client.move({{x, 50.0}}, false, 0, cb); })) {
-            ADD_FAILURE() << "move refused: " << msg::debugString(e->message);
+            ADD_FAILURE() << "move refused: " << motion::msg::debugString(e->message);
             return false;
         }
         if (!s.waitStill()) {
@@ -52,9 +52,9 @@ struct StageTuning {
         }
         target = std::make_unique<dev::InstrumentTarget>(&tuning, x, QStringLiteral("Stage"));
         QObject::connect(&runner, &TuningRunner::recordArrived, &runner,
-                         [this](const motion::control::Record& r, const msg::Message&, int) { records.push_back(r); });
-        QObject::connect(&runner, &TuningRunner::message, &runner, [this](const msg::Message& m) { messages.push_back(m); });
-        QObject::connect(&runner, &TuningRunner::finished, &runner, [this](bool good, const msg::Message& m) {
+                         [this](const motion::control::Record& r, const motion::msg::Message&, int) { records.push_back(r); });
+        QObject::connect(&runner, &TuningRunner::message, &runner, [this](const motion::msg::Message& m) { messages.push_back(m); });
+        QObject::connect(&runner, &TuningRunner::finished, &runner, [this](bool good, const motion::msg::Message& m) {
             finished = true;
             ok = good;
             finalMessage = m;
@@ -75,10 +75,10 @@ struct StageTuning {
         o.verifyStep = 0.02;
         return o;
     }
-    sim::PidGains deviceGains() { return s.link.machine().tuning().gains(x); }
+    dev::sim::PidGains deviceGains() { return s.link.machine().tuning().gains(x); }
 };
 
-bool sameGains(const sim::PidGains& a, const sim::PidGains& b) { return a.kp == b.kp && a.ki == b.ki && a.kd == b.kd; }
+bool sameGains(const dev::sim::PidGains& a, const dev::sim::PidGains& b) { return a.kp == b.kp && a.ki == b.ki && a.kd == b.kd; }
 
 } // namespace
 
@@ -88,7 +88,7 @@ TEST_P(TuningOnStage, ZieglerNicholsPidSettlesInsideTheSeedsBandAndTrialsStayInT
 {
     StageTuning t;
     ASSERT_TRUE(t.setUp()) << t.s.linkErrors.join(QStringLiteral("; ")).toStdString();
-    const sim::PidGains before = t.deviceGains();
+    const dev::sim::PidGains before = t.deviceGains();
     const auto o = t.options(GetParam());
     ASSERT_TRUE(t.runner.startZn(t.target.get(), o));
     ASSERT_TRUE(waitFor([&] { return t.finished; }, 60000)) << "the job did not end";
@@ -137,7 +137,7 @@ TEST(TuningFaults, LinkLostMidTestInterruptsTheJobAndTheDeviceHoldsUnderItsGains
 {
     StageTuning t;
     ASSERT_TRUE(t.setUp());
-    const sim::PidGains before = t.deviceGains();
+    const dev::sim::PidGains before = t.deviceGains();
     auto o = t.options(TuningMethod::Relay);
     o.relayCycles = 2000;  // long enough to pull the cable in the middle
     o.envelope.maxDurationS = 20;
@@ -151,7 +151,7 @@ TEST(TuningFaults, LinkLostMidTestInterruptsTheJobAndTheDeviceHoldsUnderItsGains
     // The device, on its own, ends the test within 0.5 s of the silence and stops the axis.
     ASSERT_TRUE(waitFor([&] { return !t.s.link.machine().tuning().testRunning(t.x); }, 1500));
     spin(300);
-    EXPECT_FALSE(t.s.link.machine().status().axes[std::size_t(t.x)].flags & proto::AxisMoving);
+    EXPECT_FALSE(t.s.link.machine().status().axes[std::size_t(t.x)].flags & dev::proto::AxisMoving);
     EXPECT_TRUE(sameGains(t.deviceGains(), before));
     // Cable back, reconnect, resume: the job goes on from the interrupted run.
     t.s.link.pair().replug();
@@ -170,7 +170,7 @@ TEST(TuningFaults, EStopMidOscillationEndsTheJobAndLeavesTheGains)
 {
     StageTuning t;
     ASSERT_TRUE(t.setUp());
-    const sim::PidGains before = t.deviceGains();
+    const dev::sim::PidGains before = t.deviceGains();
     auto o = t.options(TuningMethod::Relay);
     o.relayCycles = 2000;
     o.envelope.maxDurationS = 20;
@@ -185,7 +185,7 @@ TEST(TuningFaults, EStopMidOscillationEndsTheJobAndLeavesTheGains)
     EXPECT_EQ(t.finalMessage.id, "tuning.run.estop") << t.finalMessage;
     EXPECT_FALSE(t.s.link.machine().tuning().testRunning(t.x));
     EXPECT_TRUE(sameGains(t.deviceGains(), before));
-    EXPECT_GE(t.s.findEvent(proto::kEvTestAborted, t.x), 0);
+    EXPECT_GE(t.s.findEvent(dev::proto::kEvTestAborted, t.x), 0);
 }
 
 TEST(TuningFaults, BadGainsAreRefusedAndThePreviousOnesStay)
@@ -197,11 +197,11 @@ TEST(TuningFaults, BadGainsAreRefusedAndThePreviousOnesStay)
                                                       motion::control::DiscreteGains{1e7, 0.5, 0.03}}) {
         const auto e = t.s.call([&](auto cb) { t.tuning.setGains(t.x, bad, false, cb); });
         ASSERT_TRUE(e);
-        EXPECT_EQ(e->code, proto::kErrBadGains);
+        EXPECT_EQ(e->code, dev::proto::kErrBadGains);
         // "set gains refused: gains refused: axis X gains refused, the previous ones stay: …"
         EXPECT_EQ(e->message.id, "request.refused") << e->message;
         EXPECT_EQ(e->message.text("action"), "request.set_gains") << e->message;
-        const msg::Message cause = msg::nested(e->message, "cause");
+        const motion::msg::Message cause = motion::msg::nested(e->message, "cause");
         EXPECT_EQ(cause.text("code"), "device.error.bad_gains") << e->message;
         EXPECT_NE(cause.text("detail").find("the previous ones stay"), std::string::npos) << e->message;
     }
@@ -217,7 +217,7 @@ TEST(TuningFaults, BadGainsAreRefusedAndThePreviousOnesStay)
     ASSERT_TRUE(waitFor([&] { return read; }, 3000));
     // Good gains are applied and announced.
     ASSERT_FALSE(t.s.call([&](auto cb) { t.tuning.setGains(t.x, {0.3, 0.4, 0.02}, false, cb); }));
-    EXPECT_TRUE(t.s.waitEvent(proto::kEvGainsChanged, t.x));
+    EXPECT_TRUE(t.s.waitEvent(dev::proto::kEvGainsChanged, t.x));
     EXPECT_NEAR(t.deviceGains().kp, 0.3, 1e-6);
 }
 
@@ -226,12 +226,12 @@ TEST(TuningModel, TheRunnerTunesAModelPlantLikeTheModelTuner)
     dev::ModelTarget target(*motion::control::parsePlant("fopdt:K=2,tau=0.5,L=0.1"));
     TuningRunner runner;
     bool done = false, ok = false;
-    QObject::connect(&runner, &TuningRunner::finished, &runner, [&](bool good, const msg::Message&) {
+    QObject::connect(&runner, &TuningRunner::finished, &runner, [&](bool good, const motion::msg::Message&) {
         done = true;
         ok = good;
     });
     double lastFraction = 0;
-    QObject::connect(&runner, &TuningRunner::progress, &runner, [&](double f, const msg::Message&) { lastFraction = f; });
+    QObject::connect(&runner, &TuningRunner::progress, &runner, [&](double f, const motion::msg::Message&) { lastFraction = f; });
     TuningRunner::ZnOptions o;
     o.method = TuningMethod::Relay;
     o.envelope = {3, 3, 600};

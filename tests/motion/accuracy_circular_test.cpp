@@ -37,9 +37,9 @@ CircularTest tenMm()
     return t;
 }
 
-bool has(const msg::Problems& ps, const std::string& id)
+bool has(const motion::msg::Problems& ps, const std::string& id)
 {
-    return std::any_of(ps.begin(), ps.end(), [&](const msg::Problem& p) { return p.message.id == id; });
+    return std::any_of(ps.begin(), ps.end(), [&](const motion::msg::Problem& p) { return p.message.id == id; });
 }
 
 } // namespace
@@ -129,12 +129,12 @@ TEST(CircularTest, RefusesShortRunsGapsAndBadDefinitions)
     bad.clockwise = bad.counterClockwise = false;
     bad.axes = "XX";
     bad.feedMmS = 2000;
-    const msg::Problems ps = validate(bad);
+    const motion::msg::Problems ps = validate(bad);
     for (const char* id : {"accuracy.value_not_positive", "accuracy.circle.no_direction", "accuracy.circle.axes_invalid", "accuracy.value_above"})
         EXPECT_TRUE(has(ps, id)) << id;
     XyLimits limits;
     limits.x.maxMm = 55;
-    const msg::Problems out = validate(tenMm(), limits);
+    const motion::msg::Problems out = validate(tenMm(), limits);
     ASSERT_TRUE(has(out, "accuracy.circle.above_limit"));
     EXPECT_EQ(out[0].message.number("value"), 60);
     EXPECT_FALSE(hasErrors(validate(tenMm())));

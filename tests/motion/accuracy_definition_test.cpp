@@ -16,9 +16,9 @@ using namespace motion::metrology;
 namespace {
 
 /// A copy, so a problem of a temporary list can be kept.
-std::optional<msg::Problem> find(const msg::Problems& ps, const std::string& id, const std::string& path = {})
+std::optional<motion::msg::Problem> find(const motion::msg::Problems& ps, const std::string& id, const std::string& path = {})
 {
-    for (const msg::Problem& p : ps)
+    for (const motion::msg::Problem& p : ps)
         if (p.message.id == id && (path.empty() || p.path == path))
             return p;
     return std::nullopt;
@@ -73,9 +73,9 @@ TEST(AccuracyDefinition, IrregularSpacingSamplesAScrewPitchAtScatteredPhases)
 TEST(AccuracyDefinition, RefusesTooFewTargetsOrCyclesAndWarnsBelowIso)
 {
     AxisTest t = threeTargets();
-    msg::Problems ps = validate(t);
+    motion::msg::Problems ps = validate(t);
     EXPECT_FALSE(hasErrors(ps));
-    const std::optional<msg::Problem> w = find(ps, "accuracy.fewer_cycles_than_iso", "cycles");
+    const std::optional<motion::msg::Problem> w = find(ps, "accuracy.fewer_cycles_than_iso", "cycles");
     ASSERT_NE(w, std::nullopt);
     EXPECT_TRUE(w->isWarning());
     EXPECT_EQ(w->message.integer("recommended"), 5);
@@ -85,7 +85,7 @@ TEST(AccuracyDefinition, RefusesTooFewTargetsOrCyclesAndWarnsBelowIso)
     t.targetsMm = {10};
     ps = validate(t);
     EXPECT_TRUE(hasErrors(ps));
-    const std::optional<msg::Problem> c = find(ps, "accuracy.too_few_cycles", "cycles");
+    const std::optional<motion::msg::Problem> c = find(ps, "accuracy.too_few_cycles", "cycles");
     ASSERT_NE(c, std::nullopt);
     EXPECT_FALSE(c->isWarning());
     EXPECT_EQ(c->message.integer("count"), 1);
@@ -101,23 +101,23 @@ TEST(AccuracyDefinition, RefusesTargetsOutOfOrderNaNAndOutsideTheSoftLimits)
     AxisLimits limits;
     limits.minMm = 0;
     limits.maxMm = 90;
-    msg::Problems ps = validate(t, limits);
-    const std::optional<msg::Problem> order = find(ps, "accuracy.targets_not_increasing", "targets_mm[2]");
+    motion::msg::Problems ps = validate(t, limits);
+    const std::optional<motion::msg::Problem> order = find(ps, "accuracy.targets_not_increasing", "targets_mm[2]");
     ASSERT_NE(order, std::nullopt);
     EXPECT_EQ(order->message.number("previous"), 30);
     EXPECT_NE(find(ps, "accuracy.value_not_finite", "targets_mm[3]"), std::nullopt);
 
     t.targetsMm = {10, 50, 95};
     ps = validate(t, limits);
-    const std::optional<msg::Problem> above = find(ps, "accuracy.target_above_limit", "targets_mm[2]");
+    const std::optional<motion::msg::Problem> above = find(ps, "accuracy.target_above_limit", "targets_mm[2]");
     ASSERT_NE(above, std::nullopt);
     EXPECT_EQ(above->message.number("limit"), 90);
-    EXPECT_EQ(above->message.arg("value")->unit, msg::Unit::Mm);
+    EXPECT_EQ(above->message.arg("value")->unit, motion::msg::Unit::Mm);
 
     // The overrun goes below the first target: 1 mm − 2 mm is outside a 0 mm limit.
     t.targetsMm = {1, 50, 80};
     ps = validate(t, limits);
-    const std::optional<msg::Problem> overrun = find(ps, "accuracy.overrun_below_limit", "overrun_mm");
+    const std::optional<motion::msg::Problem> overrun = find(ps, "accuracy.overrun_below_limit", "overrun_mm");
     ASSERT_NE(overrun, std::nullopt);
     EXPECT_EQ(overrun->message.number("position"), -1);
 }
@@ -128,7 +128,7 @@ TEST(AccuracyDefinition, RefusesAbsurdFeedsAndContradictorySettling)
     t.feedMmS = 0;
     EXPECT_NE(find(validate(t), "accuracy.value_not_positive", "feed_mm_s"), std::nullopt);
     t.feedMmS = 5000;
-    const std::optional<msg::Problem> p = find(validate(t), "accuracy.value_above", "feed_mm_s");
+    const std::optional<motion::msg::Problem> p = find(validate(t), "accuracy.value_above", "feed_mm_s");
     ASSERT_NE(p, std::nullopt);
     EXPECT_EQ(p->message.number("max"), kMaxFeedMmS);
     AxisLimits limits;
@@ -167,9 +167,9 @@ TEST(AccuracyDefinition, EveryProblemIsReportedAtOnce)
     t.feedMmS = -1;
     t.dwellS = -1;
     t.settle.toleranceUm = 0;
-    const msg::Problems ps = validate(t);
+    const motion::msg::Problems ps = validate(t);
     for (const char* path : {"axis", "targets_mm[1]", "cycles", "feed_mm_s", "dwell_s", "settle.tolerance_um"})
-        EXPECT_TRUE(std::any_of(ps.begin(), ps.end(), [&](const msg::Problem& p) { return p.path == path && !p.isWarning(); })) << path;
+        EXPECT_TRUE(std::any_of(ps.begin(), ps.end(), [&](const motion::msg::Problem& p) { return p.path == path && !p.isWarning(); })) << path;
 }
 
 TEST(AccuracyDefinition, StandardCycleApproachesEachTargetFromItsSideWithOverrun)
@@ -225,12 +225,12 @@ TEST(AccuracyDefinition, ReadingsAreCheckedAgainstThePlan)
     EXPECT_TRUE(checkAgainstPlan(t, r).empty());
 
     std::vector<Reading> shortRun(r.begin(), r.end() - 1);
-    msg::Problems ps = checkAgainstPlan(t, shortRun);
-    const std::optional<msg::Problem> count = find(ps, "accuracy.reading_count_wrong", "readings");
+    motion::msg::Problems ps = checkAgainstPlan(t, shortRun);
+    const std::optional<motion::msg::Problem> count = find(ps, "accuracy.reading_count_wrong", "readings");
     ASSERT_NE(count, std::nullopt);
     EXPECT_EQ(count->message.integer("count"), 11);
     EXPECT_EQ(count->message.integer("expected"), 12);
-    const std::optional<msg::Problem> missing = find(ps, "accuracy.reading_missing");
+    const std::optional<motion::msg::Problem> missing = find(ps, "accuracy.reading_missing");
     ASSERT_NE(missing, std::nullopt);
     EXPECT_EQ(missing->message.number("target"), 10);
     EXPECT_EQ(missing->message.integer("cycle"), 2);
@@ -247,7 +247,7 @@ TEST(AccuracyDefinition, XyLineTargetsMustLieOnTheLine)
     EXPECT_FALSE(hasErrors(validate(t)));
     EXPECT_NEAR(lineAngleRad(t.pointsMm), std::atan2(4.0, 3.0), 1e-12);
     t.pointsMm[2].yMm += 0.01;
-    const std::optional<msg::Problem> off = find(validate(t), "accuracy.xy.point_off_line", "points_mm[2]");
+    const std::optional<motion::msg::Problem> off = find(validate(t), "accuracy.xy.point_off_line", "points_mm[2]");
     ASSERT_NE(off, std::nullopt);
     EXPECT_NEAR(off->message.number("distance"), 0.006, 1e-9);
 

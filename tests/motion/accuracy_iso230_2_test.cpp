@@ -47,7 +47,7 @@ const std::vector<Row> kWorked = {
 
 bool hasProblem(const Evaluation& e, const std::string& id, const std::string& path = {})
 {
-    for (const msg::Problem& p : e.problems)
+    for (const motion::msg::Problem& p : e.problems)
         if (p.message.id == id && (path.empty() || p.path == path))
             return true;
     return false;
@@ -204,7 +204,7 @@ TEST(Iso230_2, RefusesFewerThanTwoCyclesOrTargets)
     Evaluation e = evaluate(readingsOf(one));
     EXPECT_FALSE(e.ok());
     EXPECT_TRUE(hasProblem(e, "accuracy.too_few_cycles"));
-    for (const msg::Problem& p : e.problems)
+    for (const motion::msg::Problem& p : e.problems)
         if (p.message.id == "accuracy.too_few_cycles") {
             EXPECT_EQ(p.message.integer("count"), 1);
             EXPECT_EQ(p.message.integer("min"), 2);

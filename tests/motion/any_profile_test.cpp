@@ -17,12 +17,12 @@ TEST(AnyProfile, KindsByNameAndMissingFieldsNamed)
     r.kind = ProfileKind::JerkLimited;
     r.vMaxMmS = 100;
     r.aMaxMmS2 = 1000;
-    EXPECT_EQ(msg::debugString(planProfile(10, r).error()), "profile.not_positive{field=\"jMaxMmS3\", value=0, kind=\"jerk-limited\"}");
+    EXPECT_EQ(motion::msg::debugString(planProfile(10, r).error()), "profile.not_positive{field=\"jMaxMmS3\", value=0, kind=\"jerk-limited\"}");
     r.kind = ProfileKind::SeedSCurve;
-    EXPECT_EQ(msg::debugString(planProfile(10, r).error()), "profile.not_positive{field=\"accelTimeS\", value=0, kind=\"seed-scurve\"}");
+    EXPECT_EQ(motion::msg::debugString(planProfile(10, r).error()), "profile.not_positive{field=\"accelTimeS\", value=0, kind=\"seed-scurve\"}");
     r.kind = ProfileKind::Trapezoid;
     r.plateauMm = 1;
-    EXPECT_EQ(msg::debugString(planProfile(10, r).error()),
+    EXPECT_EQ(motion::msg::debugString(planProfile(10, r).error()),
               "profile.start_speed_for_plateau{field=\"startSpeedMmS\", value=0, kind=\"trapezoid\"}");
 }
 

@@ -67,12 +67,12 @@ TEST(Blocks, EveryShapeOfTheSeed)
 TEST(Blocks, ValidationNamesJointBlockFieldAndValue)
 {
     auto r = planJointBlocks({{10, 100, 0}}, 30000, 2);
-    EXPECT_EQ(msg::debugString(r.error()), "profile.block_zero_duration{joint=2, block=0}");
+    EXPECT_EQ(motion::msg::debugString(r.error()), "profile.block_zero_duration{joint=2, block=0}");
     r = planJointBlocks({{10, 100, 100}, {10, 32000, 100}}, 30000, 2);
-    EXPECT_EQ(msg::debugString(r.error()), "profile.block_too_fast{joint=2, block=1, v2=32000, max=30000}");
+    EXPECT_EQ(motion::msg::debugString(r.error()), "profile.block_too_fast{joint=2, block=1, v2=32000, max=30000}");
     r = planJointBlocks({{100, 0, 500}}, 30000, 0);  // rest to rest cannot move in the seed's plan
     EXPECT_FALSE(r);
-    EXPECT_NE(msg::debugString(r.error()).find("profile.block_unreachable{joint=0, block=0, steps=100,"), std::string::npos) << r.error();
+    EXPECT_NE(motion::msg::debugString(r.error()).find("profile.block_unreachable{joint=0, block=0, steps=100,"), std::string::npos) << r.error();
     r = planJointBlocks({{-50, 1000, 500}}, 30000, 0);  // speed forward, S backward
     EXPECT_FALSE(r);
 }

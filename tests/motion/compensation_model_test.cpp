@@ -36,9 +36,9 @@ std::vector<Reading> measure(const Axis& axis, const std::vector<double>& target
     return out;
 }
 
-bool has(const msg::Problems& ps, const std::string& id, const std::string& path)
+bool has(const motion::msg::Problems& ps, const std::string& id, const std::string& path)
 {
-    for (const msg::Problem& p : ps)
+    for (const motion::msg::Problem& p : ps)
         if (p.message.id == id && p.path == path)
             return true;
     return false;
@@ -115,7 +115,7 @@ TEST(CompensationModel, SampledTableReproducesThePolynomial)
 TEST(CompensationModel, RefusesWhatADeviceCouldNotApply)
 {
     CompensationModel m = polynomialModel("X", motion::ErrorPolynomial{{1, 2, 3, 4, 5, 6, 7}}, 10, 10, 0);
-    msg::Problems ps = validate(m);
+    motion::msg::Problems ps = validate(m);
     EXPECT_TRUE(has(ps, "compensation.too_many_coefficients", "polynomial.coefficients_um"));
     EXPECT_TRUE(has(ps, "compensation.range_too_short", "polynomial.valid_to_mm"));
     // Finite coefficients, but a curve no device could follow (found by fuzzing the file reader).

@@ -113,7 +113,7 @@ TEST(JerkLimited, ZeroDistanceTakesNoTimeAndBadLimitsAreRejected)
     EXPECT_FALSE(JerkLimitedProfile::plan(INFINITY, {1, 1, 1}));
     const auto problem = motion::validateJerkLimits({1, -3, 1}, 1);
     ASSERT_TRUE(problem);
-    EXPECT_EQ(msg::debugString(*problem), "profile.axis_not_positive{field=\"aMaxMmS2\", value=-3, axis=1}");
+    EXPECT_EQ(motion::msg::debugString(*problem), "profile.axis_not_positive{field=\"aMaxMmS2\", value=-3, axis=1}");
     EXPECT_FALSE(motion::validateJerkLimits({1, 2, 3}));
 }
 

@@ -104,10 +104,10 @@ TEST(LinearMove, ErrorsNameAxisFieldAndValue)
     const JerkLimits limits[] = {{1, 1, 1}, {1, 0, 1}};
     const auto bad = planLinearJerkLimited(target, limits, 2);
     EXPECT_FALSE(bad);
-    EXPECT_EQ(msg::debugString(bad.error()), "profile.axis_not_positive{field=\"aMaxMmS2\", value=0, axis=1}");
+    EXPECT_EQ(motion::msg::debugString(bad.error()), "profile.axis_not_positive{field=\"aMaxMmS2\", value=0, axis=1}");
     const double nanTarget[] = {1, NAN};
-    EXPECT_EQ(msg::debugString(planLinearJerkLimited(nanTarget, limits, 2).error()), "profile.axis_not_finite{field=\"distanceMm\", value=nan, axis=1}");
-    EXPECT_EQ(msg::debugString(planLinearJerkLimited(target, limits, 0).error()), "profile.axis_count{count=0, max=6}");
+    EXPECT_EQ(motion::msg::debugString(planLinearJerkLimited(nanTarget, limits, 2).error()), "profile.axis_not_finite{field=\"distanceMm\", value=nan, axis=1}");
+    EXPECT_EQ(motion::msg::debugString(planLinearJerkLimited(target, limits, 0).error()), "profile.axis_count{count=0, max=6}");
     const double zero[] = {0, 0};
     const JerkLimits good[] = {{1, 1, 1}, {1, 1, 1}};
     const auto none = planLinearJerkLimited(zero, good, 2);

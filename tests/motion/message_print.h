@@ -1,5 +1,5 @@
 #pragma once
-// gtest prints a msg::Message in a failure as its debugString; tests read a nested
+// gtest prints a motion::msg::Message in a failure as its debugString; tests read a nested
 // message (a refusal's cause) with nested().
 #include "motion/message.h"
 
@@ -7,7 +7,7 @@
 #include <ostream>
 #include <variant>
 
-namespace msg {
+namespace motion::msg {
 inline std::ostream& operator<<(std::ostream& os, const Message& m) { return os << debugString(m); }
 
 /// The message in argument `name` of `m`, or an empty message when there is none
@@ -19,4 +19,4 @@ inline Message nested(const Message& m, const std::string& name)
             return **inner;
     return {};
 }
-} // namespace msg
+} // namespace motion::msg

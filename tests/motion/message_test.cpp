@@ -6,9 +6,9 @@ namespace {
 
 TEST(Message, ArgumentsAreFoundByNameWithTheirTypes)
 {
-    const msg::Message m = msg::make("pattern.value_above",
-                                     {msg::real("min", 0, msg::Unit::Mm), msg::real("value", -2.5, msg::Unit::Mm),
-                                      msg::verbatim("field", "radius_mm"), msg::integer("segment", 3)});
+    const motion::msg::Message m = motion::msg::make("pattern.value_above",
+                                     {motion::msg::real("min", 0, motion::msg::Unit::Mm), motion::msg::real("value", -2.5, motion::msg::Unit::Mm),
+                                      motion::msg::verbatim("field", "radius_mm"), motion::msg::integer("segment", 3)});
     EXPECT_EQ(m.number("value"), -2.5);
     EXPECT_EQ(m.integer("segment"), 3);
     EXPECT_EQ(m.number("segment"), 3.0);  // a whole number reads as a number too
@@ -20,20 +20,20 @@ TEST(Message, ArgumentsAreFoundByNameWithTheirTypes)
 
 TEST(Message, DebugStringNamesTheIdAndEveryArgumentWithItsUnit)
 {
-    const msg::Message inner = msg::make("device.not_homed", {msg::verbatim("axis", "X")});
-    const msg::Message m = msg::make("request.refused", {msg::term("what", "request.move"), msg::nested("reason", inner),
-                                                         msg::real("value", 12.5, msg::Unit::Um)});
-    EXPECT_EQ(msg::debugString(m),
+    const motion::msg::Message inner = motion::msg::make("device.not_homed", {motion::msg::verbatim("axis", "X")});
+    const motion::msg::Message m = motion::msg::make("request.refused", {motion::msg::term("what", "request.move"), motion::msg::nested("reason", inner),
+                                                         motion::msg::real("value", 12.5, motion::msg::Unit::Um)});
+    EXPECT_EQ(motion::msg::debugString(m),
               "request.refused{what=term:request.move, reason=device.not_homed{axis=\"X\"}, value=12.5 µm}");
 }
 
 TEST(Message, EqualityComparesIdsArgumentsUnitsAndNestedMessages)
 {
-    const auto a = msg::make("x", {msg::real("v", 1, msg::Unit::Mm), msg::nested("why", msg::make("y"))});
-    EXPECT_EQ(a, msg::make("x", {msg::real("v", 1, msg::Unit::Mm), msg::nested("why", msg::make("y"))}));
-    EXPECT_NE(a, msg::make("x", {msg::real("v", 1, msg::Unit::Um), msg::nested("why", msg::make("y"))}));
-    EXPECT_NE(a, msg::make("x", {msg::real("v", 1, msg::Unit::Mm), msg::nested("why", msg::make("z"))}));
-    EXPECT_NE(a, msg::make("x", {msg::integer("v", 1, msg::Unit::Mm), msg::nested("why", msg::make("y"))}));
+    const auto a = motion::msg::make("x", {motion::msg::real("v", 1, motion::msg::Unit::Mm), motion::msg::nested("why", motion::msg::make("y"))});
+    EXPECT_EQ(a, motion::msg::make("x", {motion::msg::real("v", 1, motion::msg::Unit::Mm), motion::msg::nested("why", motion::msg::make("y"))}));
+    EXPECT_NE(a, motion::msg::make("x", {motion::msg::real("v", 1, motion::msg::Unit::Um), motion::msg::nested("why", motion::msg::make("y"))}));
+    EXPECT_NE(a, motion::msg::make("x", {motion::msg::real("v", 1, motion::msg::Unit::Mm), motion::msg::nested("why", motion::msg::make("z"))}));
+    EXPECT_NE(a, motion::msg::make("x", {motion::msg::integer("v", 1, motion::msg::Unit::Mm), motion::msg::nested("why", motion::msg::make("y"))}));
 }
 
 } // namespace

@@ -176,7 +176,7 @@ TEST(PatternsPlans, ValidationReportsEveryProblemByField)
     for (const auto& q : problems)
         fields.push_back(q.path);
     EXPECT_EQ(fields, (std::vector<std::string>{"feed_mm_s", "start_radius_mm", "pitch_mm", "turns"}));
-    EXPECT_EQ(msg::debugString(problems[2].message), "pattern.not_above{value=-1 mm, min=0 mm}");
+    EXPECT_EQ(motion::msg::debugString(problems[2].message), "pattern.not_above{value=-1 mm, min=0 mm}");
     EXPECT_TRUE(plan(p).empty());
 
     Pattern w = of(PatternShape::Sine);
@@ -201,7 +201,7 @@ TEST(PatternsPlans, APatternLeavingTheSoftLimitsNamesTheSegment)
     EXPECT_EQ(v->segment, 0u);
     EXPECT_EQ(v->axis, 0);
     EXPECT_TRUE(v->upper);
-    EXPECT_EQ(msg::debugString(v->message),
+    EXPECT_EQ(motion::msg::debugString(v->message),
               "pattern.segment_above_limit{segment=0, kind=term:segment.line, axis=\"X\", value=110 mm, limit=100 mm}");
     // A circle touching nothing with its ends, only with its bulge.
     Pattern c = of(PatternShape::Circle);

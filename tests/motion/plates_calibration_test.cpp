@@ -8,7 +8,7 @@
 #include <cmath>
 #include <random>
 
-using namespace plates;
+using namespace motion::plates;
 
 namespace {
 
@@ -46,7 +46,7 @@ TEST(PlateCalibration, RecoversOffsetRotationAndScaleExactly)
 {
     const Labware lw = *findBuiltinLabware("sbs-96");
     const PlateTransform truth = PlateTransform::make(9.3, 7.1, 0.8, 1.0004, 1.0004);
-    msg::Message error;
+    motion::msg::Message error;
     const auto fit = fitCalibration(taught(truth, lw), FitModel::Similarity, &error);
     ASSERT_TRUE(fit) << error;
     EXPECT_NEAR(fit->rotationDeg, 0.8, 1e-9);
@@ -66,7 +66,7 @@ TEST(PlateCalibration, ScaledAxesRecoversTwoScales)
 {
     const Labware lw = *findBuiltinLabware("sbs-96");
     const PlateTransform truth = PlateTransform::make(12, 110, -1.5, 1.002, 0.997);
-    msg::Message error;
+    motion::msg::Message error;
     const auto fit = fitCalibration(taught(truth, lw), FitModel::ScaledAxes, &error);
     ASSERT_TRUE(fit) << error;
     EXPECT_NEAR(fit->scaleX, 1.002, 1e-9);
@@ -85,11 +85,11 @@ TEST(PlateCalibration, TeachingNoiseWithinRepeatabilityGivesNoWarning)
     const Labware lw = *findBuiltinLabware("sbs-96");
     const PlateTransform truth = PlateTransform::make(8.2, 8.4, 0.3);
     for (unsigned seed = 1; seed <= 20; ++seed) {
-        msg::Message error;
+        motion::msg::Message error;
         const auto fit = fitCalibration(taught(truth, lw, 0.02, seed), FitModel::Similarity, &error);
         ASSERT_TRUE(fit) << error;
         EXPECT_LT(fit->maxResidualMm, kResidualWarnMm) << "seed " << seed;
-        EXPECT_TRUE(fit->warnings.empty()) << msg::debugString(fit->warnings.front());
+        EXPECT_TRUE(fit->warnings.empty()) << motion::msg::debugString(fit->warnings.front());
         EXPECT_NEAR(fit->rotationDeg, 0.3, 0.05);
     }
 }
@@ -99,7 +99,7 @@ TEST(PlateCalibration, AWellTaughtOffCentreShowsInItsResidual)
     const Labware lw = *findBuiltinLabware("sbs-96");
     auto pts = taught(PlateTransform::make(8, 8, 0), lw);
     pts[2].machineMm.y += 1.2;  // H1 taught 1.2 mm toward the front
-    msg::Message error;
+    motion::msg::Message error;
     const auto fit = fitCalibration(pts, FitModel::Similarity, &error);
     ASSERT_TRUE(fit) << error;
     ASSERT_EQ(fit->residualMm.size(), 3u);
@@ -109,9 +109,9 @@ TEST(PlateCalibration, AWellTaughtOffCentreShowsInItsResidual)
     for (double r : fit->residualMm)
         EXPECT_GT(r, 0.05);
     ASSERT_FALSE(fit->warnings.empty());
-    EXPECT_NE(msg::debugString(fit->warnings.front()).find("plate.calibration.large_residual{max=0.51 mm, list=\"A1 0.51, A12 0.27, H1 0.43"),
+    EXPECT_NE(motion::msg::debugString(fit->warnings.front()).find("plate.calibration.large_residual{max=0.51 mm, list=\"A1 0.51, A12 0.27, H1 0.43"),
               std::string::npos)
-        << msg::debugString(fit->warnings.front());
+        << motion::msg::debugString(fit->warnings.front());
 }
 
 TEST(PlateCalibration, AFullAffineThroughThreePointsWouldHideThatMistake)
@@ -137,7 +137,7 @@ TEST(PlateCalibration, AFullAffineThroughThreePointsWouldHideThatMistake)
         const PointMm m = affine.apply(p.plateMm);
         EXPECT_NEAR(std::hypot(m.x - p.machineMm.x, m.y - p.machineMm.y), 0.0, 1e-9);
     }
-    msg::Message error;
+    motion::msg::Message error;
     EXPECT_GT(fitCalibration(pts, FitModel::Similarity, &error)->maxResidualMm, kResidualWarnMm);
     // With a scale per axis, a point off along its column is taken up by the Y
     // scale: no residual either. That is why Similarity is the default.
@@ -156,7 +156,7 @@ TEST(PlateCalibration, WarnsAboutTheWrongLabwareAndAPlateNotSeated)
     const auto real = teachWells(lw384);
     for (std::size_t i = 0; i < pts.size(); ++i)
         pts[i].machineMm = {8 + real[i].plateMm.x, 8 + real[i].plateMm.y};
-    msg::Message error;
+    motion::msg::Message error;
     auto fit = fitCalibration(pts, FitModel::Similarity, &error);
     ASSERT_TRUE(fit);
     bool scaleWarned = false;
@@ -167,7 +167,7 @@ TEST(PlateCalibration, WarnsAboutTheWrongLabwareAndAPlateNotSeated)
     fit = fitCalibration(taught(PlateTransform::make(20, 5, 6), lw96), FitModel::Similarity, &error);
     ASSERT_TRUE(fit);
     ASSERT_EQ(fit->warnings.size(), 1u);
-    EXPECT_EQ(msg::debugString(fit->warnings[0]), "plate.calibration.turned{angle=6°}");
+    EXPECT_EQ(motion::msg::debugString(fit->warnings[0]), "plate.calibration.turned{angle=6°}");
     // Relative to a slot built turned, not to the machine.
     fit = fitCalibration(taught(PlateTransform::make(150, 5, 90), lw96), FitModel::Similarity, &error, 90);
     EXPECT_TRUE(fit->warnings.empty());
@@ -175,7 +175,7 @@ TEST(PlateCalibration, WarnsAboutTheWrongLabwareAndAPlateNotSeated)
 
 TEST(PlateCalibration, RefusesPointsThatCannotFixAFit)
 {
-    msg::Message error;
+    motion::msg::Message error;
     EXPECT_FALSE(fitCalibration({}, FitModel::Similarity, &error));
     std::vector<TeachPoint> same = {{"A1", {14.38, 11.24}, {20, 20}}, {"A12", {113.38, 11.24}, {20.2, 20}}};
     EXPECT_FALSE(fitCalibration(same, FitModel::Similarity, &error));

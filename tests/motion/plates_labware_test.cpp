@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-using namespace plates;
+using namespace motion::plates;
 
 TEST(PlateLabware, The96WellPlateFollowsAnsiSlas4)
 {
@@ -49,7 +49,7 @@ TEST(PlateLabware, EveryBuiltInIsValidAndHoldsNoMoreThanItsWells)
         const Labware& lw = all[i];
         EXPECT_EQ(lw.id, expected[i].first);
         EXPECT_EQ(static_cast<int>(lw.wells.size()), expected[i].second);
-        EXPECT_TRUE(validateLabware(lw).empty()) << lw.id << ": " << msg::debugString(validateLabware(lw).front().message);
+        EXPECT_TRUE(validateLabware(lw).empty()) << lw.id << ": " << motion::msg::debugString(validateLabware(lw).front().message);
         const Well& first = lw.wells.front();
         // A well holds at most its cylinder.
         const double cylinderUl = 3.14159265 * first.diameterMm * first.diameterMm / 4 * first.depthMm;
@@ -63,10 +63,10 @@ TEST(PlateLabware, ValidationNamesTheWellAtFault)
     lw.wells[5].xMm = 130;  // past the 127.76 mm edge
     lw.wells[7].volumeUl = 0;
     lw.wells[9].id = lw.wells[8].id;
-    const msg::Problems p = validateLabware(lw);
+    const motion::msg::Problems p = validateLabware(lw);
     ASSERT_EQ(p.size(), 3u);
     EXPECT_EQ(p[0].path, "wells[5]");
-    EXPECT_NE(msg::debugString(p[0].message).find("length=127.76 mm, width=85.48 mm"), std::string::npos) << msg::debugString(p[0].message);
+    EXPECT_NE(motion::msg::debugString(p[0].message).find("length=127.76 mm, width=85.48 mm"), std::string::npos) << motion::msg::debugString(p[0].message);
     EXPECT_EQ(p[0].message.id, "plate.labware.well_off_footprint");
     EXPECT_EQ(p[1].path, "wells[7]");
     EXPECT_EQ(p[2].path, "wells[9]");

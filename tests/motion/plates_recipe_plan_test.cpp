@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-using namespace plates;
+using namespace motion::plates;
 using platestest::context;
 using platestest::oneStep;
 using platestest::problemAt;
@@ -89,13 +89,13 @@ TEST(PlateRecipePlan, UnknownWellOnA96Plate)
     Recipe r = oneStep(StepType::Dispense, {"I13"}, 10);
     const RecipePlan plan = planRecipe(r, context());
     EXPECT_FALSE(plan.ok());
-    EXPECT_EQ(msg::debugString(problemAt(plan, "steps[0].wells").message), "plate.unknown_well{well=\"\"I13\"\", wells=96}");
+    EXPECT_EQ(motion::msg::debugString(problemAt(plan, "steps[0].wells").message), "plate.unknown_well{well=\"\"I13\"\", wells=96}");
 }
 
 TEST(PlateRecipePlan, VolumeOverCapacityIsRefused)
 {
     const RecipePlan plan = planRecipe(oneStep(StepType::Aspirate, {"A1"}, 1200), context());
-    EXPECT_EQ(msg::debugString(problemAt(plan, "steps[0].volume_ul").message),
+    EXPECT_EQ(motion::msg::debugString(problemAt(plan, "steps[0].volume_ul").message),
               "recipe.volume_over_capacity{volume=1200 µL, capacity=1000 µL}");
     // Well by well, the syringe fills: the eleventh 100 µL would not fit.
     Recipe r = oneStep(StepType::Aspirate, {"A1:A11"}, 100);
@@ -104,9 +104,9 @@ TEST(PlateRecipePlan, VolumeOverCapacityIsRefused)
     r.steps[0].wells = {"A1:B3"};
     r.steps[0].volumeUl = 200;
     const RecipePlan fill = planRecipe(r, context());
-    EXPECT_NE(msg::debugString(problemAt(fill, "steps[0].volume_ul").message).find("volume=1200 µL, capacity=1000 µL"),
+    EXPECT_NE(motion::msg::debugString(problemAt(fill, "steps[0].volume_ul").message).find("volume=1200 µL, capacity=1000 µL"),
               std::string::npos)
-        << msg::debugString(problemAt(fill, "steps[0].volume_ul").message);
+        << motion::msg::debugString(problemAt(fill, "steps[0].volume_ul").message);
 }
 
 TEST(PlateRecipePlan, NegativeAndZeroVolumesAreRefused)
@@ -114,7 +114,7 @@ TEST(PlateRecipePlan, NegativeAndZeroVolumesAreRefused)
     for (double v : {-5.0, 0.0, std::nan("")}) {
         const RecipePlan plan = planRecipe(oneStep(StepType::Aspirate, {"A1"}, v), context());
         EXPECT_FALSE(plan.ok());
-        EXPECT_NE(msg::debugString(problemAt(plan, "steps[0].volume_ul").message).find("plate.not_positive"), std::string::npos) << v;
+        EXPECT_NE(motion::msg::debugString(problemAt(plan, "steps[0].volume_ul").message).find("plate.not_positive"), std::string::npos) << v;
         EXPECT_TRUE(plan.ops.empty()) << "nothing is planned for a step that cannot run";
     }
 }
@@ -124,10 +124,10 @@ TEST(PlateRecipePlan, MissingAndUnknownPlates)
     Recipe r = oneStep(StepType::Aspirate, {"A1"}, 10);
     r.plates.push_back({"reservoir", "2", "sbs-12", 50, 70});
     RecipePlan plan = planRecipe(r, context());
-    EXPECT_EQ(msg::debugString(problemAt(plan, "steps[0].plate").message), "recipe.plate_ambiguous{count=2, plates=\"samples, reservoir\"}");
+    EXPECT_EQ(motion::msg::debugString(problemAt(plan, "steps[0].plate").message), "recipe.plate_ambiguous{count=2, plates=\"samples, reservoir\"}");
     r.steps[0].plate = "reagents";
     plan = planRecipe(r, context());
-    EXPECT_EQ(msg::debugString(problemAt(plan, "steps[0].plate").message),
+    EXPECT_EQ(motion::msg::debugString(problemAt(plan, "steps[0].plate").message),
               "recipe.unknown_plate{plate=\"reagents\", plates=\"\"samples\", \"reservoir\"\"}");
     r.plates.clear();
     r.steps[0].plate.clear();
@@ -154,10 +154,10 @@ TEST(PlateRecipePlan, EveryErrorAtOnce)
     m.cycles = 0;
     r.steps.push_back(m);
     const RecipePlan plan = planRecipe(r, context());
-    EXPECT_EQ(msg::debugString(problemAt(plan, "plates[0].slot").message), "recipe.unknown_slot{slot=\"7\", slots=\"1, 2\"}");
-    EXPECT_NE(msg::debugString(problemAt(plan, "plates[1].labware").message).find("recipe.unknown_labware{labware=\"sbs-97\""), std::string::npos);
+    EXPECT_EQ(motion::msg::debugString(problemAt(plan, "plates[0].slot").message), "recipe.unknown_slot{slot=\"7\", slots=\"1, 2\"}");
+    EXPECT_NE(motion::msg::debugString(problemAt(plan, "plates[1].labware").message).find("recipe.unknown_labware{labware=\"sbs-97\""), std::string::npos);
     EXPECT_NE(problemAt(plan, "steps[1].volume_ul").message.id.find("plate.not_positive"), std::string::npos);
-    EXPECT_NE(msg::debugString(problemAt(plan, "steps[2].cycles").message).find("min=1, max=100"), std::string::npos);
+    EXPECT_NE(motion::msg::debugString(problemAt(plan, "steps[2].cycles").message).find("min=1, max=100"), std::string::npos);
     EXPECT_GE(countErrors(plan), 4);
 }
 
@@ -196,7 +196,7 @@ TEST(PlateRecipePlan, ATransferBiggerThanTheSyringeSplitsIntoRounds)
 TEST(PlateRecipePlan, DispensingNeedsLiquidInTheSyringe)
 {
     const RecipePlan plan = planRecipe(oneStep(StepType::Dispense, {"A1:A3"}, 10), context());
-    EXPECT_NE(msg::debugString(problemAt(plan, "steps[0]").message).find("recipe.dispense_without_liquid{"), std::string::npos);
+    EXPECT_NE(motion::msg::debugString(problemAt(plan, "steps[0]").message).find("recipe.dispense_without_liquid{"), std::string::npos);
 }
 
 TEST(PlateRecipePlan, AnAirGapLeavesWithTheNextDispense)
@@ -257,7 +257,7 @@ TEST(PlateRecipePlan, MixWashWaitAndTouchOff)
     EXPECT_NE(problemAt(planRecipe(r, context()), "steps[3].offset_mm").message.id.find("recipe.offset_past_wall"), std::string::npos);
     // An unknown station.
     r.steps[1].station = "sink";
-    EXPECT_EQ(msg::debugString(problemAt(planRecipe(r, context()), "steps[1].station").message),
+    EXPECT_EQ(motion::msg::debugString(problemAt(planRecipe(r, context()), "steps[1].station").message),
               "recipe.unknown_station{station=\"sink\", stations=\"wash, waste\"}");
 }
 

@@ -5,9 +5,9 @@
 
 namespace platestest {
 
-inline plates::Deck analyzerDeck()
+inline motion::plates::Deck analyzerDeck()
 {
-    plates::Deck d;
+    motion::plates::Deck d;
     d.travelXMm = d.travelYMm = 200;
     d.travelZMm = 100;
     d.tableZMm = 75;
@@ -22,21 +22,21 @@ inline plates::Deck analyzerDeck()
     return d;
 }
 
-inline plates::PlanContext context()
+inline motion::plates::PlanContext context()
 {
-    plates::PlanContext c;
+    motion::plates::PlanContext c;
     c.deck = analyzerDeck();
-    for (auto& lw : plates::builtinLabware())
+    for (auto& lw : motion::plates::builtinLabware())
         c.labware[lw.id] = lw;
     return c;
 }
 
-inline plates::Recipe oneStep(plates::StepType type, std::vector<std::string> wells, double volumeUl)
+inline motion::plates::Recipe oneStep(motion::plates::StepType type, std::vector<std::string> wells, double volumeUl)
 {
-    plates::Recipe r;
+    motion::plates::Recipe r;
     r.name = "test";
     r.plates = {{"samples", "1", "sbs-96", 55, 70}};
-    plates::Step s;
+    motion::plates::Step s;
     s.type = type;
     s.wells = std::move(wells);
     s.volumeUl = volumeUl;
@@ -45,7 +45,7 @@ inline plates::Recipe oneStep(plates::StepType type, std::vector<std::string> we
 }
 
 /// The problem at `path`, or an empty one.
-inline msg::Problem problemAt(const plates::RecipePlan& plan, const std::string& path)
+inline motion::msg::Problem problemAt(const motion::plates::RecipePlan& plan, const std::string& path)
 {
     for (const auto& p : plan.problems)
         if (p.path == path)

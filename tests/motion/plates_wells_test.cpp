@@ -6,7 +6,7 @@
 
 #include <random>
 
-using namespace plates;
+using namespace motion::plates;
 
 namespace {
 Labware plate96() { return *findBuiltinLabware("sbs-96"); }
@@ -59,15 +59,15 @@ TEST(PlateWells, UnknownWellIsNamedWithThePlate)
     const WellSet s = expandWells({"I13"}, plate96(), "steps[4].wells");
     ASSERT_EQ(s.problems.size(), 1u);
     EXPECT_EQ(s.problems[0].path, "steps[4].wells");
-    EXPECT_EQ(msg::debugString(s.problems[0].message), "plate.unknown_well{well=\"\"I13\"\", wells=96}");
+    EXPECT_EQ(motion::msg::debugString(s.problems[0].message), "plate.unknown_well{well=\"\"I13\"\", wells=96}");
     // In a list, the spec's own index.
     const WellSet l = expandWells({"A1", "A1:I1"}, plate96(), "steps[0].wells");
     ASSERT_EQ(l.problems.size(), 1u);
     EXPECT_EQ(l.problems[0].path, "steps[0].wells[1]");
-    EXPECT_EQ(msg::debugString(l.problems[0].message), "plate.unknown_well{well=\"\"I1\"\", wells=96}");
-    EXPECT_EQ(msg::debugString(expandWells({"row J"}, plate96(), "w").problems.at(0).message),
+    EXPECT_EQ(motion::msg::debugString(l.problems[0].message), "plate.unknown_well{well=\"\"I1\"\", wells=96}");
+    EXPECT_EQ(motion::msg::debugString(expandWells({"row J"}, plate96(), "w").problems.at(0).message),
               "plate.wells.unknown_row{row=\"\"J\"\", wells=96, last=\"H\"}");
-    EXPECT_EQ(msg::debugString(expandWells({"column 13"}, plate96(), "w").problems.at(0).message),
+    EXPECT_EQ(motion::msg::debugString(expandWells({"column 13"}, plate96(), "w").problems.at(0).message),
               "plate.wells.unknown_column{column=\"\"13\"\", wells=96, last=12}");
     EXPECT_NE(expandWells({"wells A to H"}, plate96(), "w").problems.at(0).message.id.find("plate.wells.not_a_well_set"), std::string::npos);
     // I13 is a well on a 384-well plate.
@@ -79,7 +79,7 @@ TEST(PlateWells, AWellNamedTwiceIsAnError)
     const WellSet s = expandWells({"A1:A12", "A5"}, plate96(), "w");
     ASSERT_EQ(s.problems.size(), 1u);
     EXPECT_EQ(s.problems[0].path, "w[1]");
-    EXPECT_EQ(msg::debugString(s.problems[0].message), "plate.wells.named_twice{well=\"A5\"}");
+    EXPECT_EQ(motion::msg::debugString(s.problems[0].message), "plate.wells.named_twice{well=\"A5\"}");
     EXPECT_EQ(s.wells.size(), 12u);
 }
 

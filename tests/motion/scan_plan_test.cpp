@@ -13,19 +13,19 @@ using namespace motion::scan;
 namespace {
 
 /// The message for `field`, or "" when there is none.
-std::string problemAt(const msg::Problems& problems, const std::string& field)
+std::string problemAt(const motion::msg::Problems& problems, const std::string& field)
 {
     for (const auto& p : problems)
         if (p.path == field)
-            return msg::debugString(p.message);
+            return motion::msg::debugString(p.message);
     return {};
 }
 
-std::string all(const msg::Problems& problems)
+std::string all(const motion::msg::Problems& problems)
 {
     std::string s;
     for (const auto& p : problems)
-        s += p.path + ": " + msg::debugString(p.message) + "\n";
+        s += p.path + ": " + motion::msg::debugString(p.message) + "\n";
     return s;
 }
 
@@ -171,7 +171,7 @@ TEST(ScanNaming, PatternsFijiCouldNotReadAreRefused)
     EXPECT_TRUE(checkFilePattern(""));
     EXPECT_FALSE(checkFilePattern("tile_{row}_{col}.tif"));
     const auto m = checkFilePattern("tile_{x}.tif");
-    EXPECT_EQ(msg::debugString(*m), "scan.naming.unknown_placeholder{placeholder=\"{x}\"}");
+    EXPECT_EQ(motion::msg::debugString(*m), "scan.naming.unknown_placeholder{placeholder=\"{x}\"}");
 }
 
 TEST(ScanPlan, NamesOfOrdersAndCornersRoundTrip)

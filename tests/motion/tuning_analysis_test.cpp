@@ -183,7 +183,7 @@ TEST(TuningModel, UltimateGainSearchGivesUpAtKpMaxOnALoopThatNeverOscillates)
         ASSERT_LT(++trials, 40) << "the search loops";
     }
     EXPECT_FALSE(search.result());
-    EXPECT_EQ(msg::debugString(search.failure()), "tuning.ultimate.decays_up_to{kp=50}") << search.failure();
+    EXPECT_EQ(motion::msg::debugString(search.failure()), "tuning.ultimate.decays_up_to{kp=50}") << search.failure();
 }
 
 TEST(TuningModel, RelayReportsTheClassicEstimateBesideTheRefinedOne)

@@ -24,7 +24,7 @@ std::string parseError(const char* text)
 {
     const auto p = parsePlant(text);
     EXPECT_FALSE(p) << text << " was accepted";
-    return msg::debugString(p.error());
+    return motion::msg::debugString(p.error());
 }
 } // namespace
 
@@ -127,6 +127,6 @@ TEST(TuningPlant, PlantsThatNeverLag180DegreesHaveNoUltimateGain)
     EXPECT_FALSE(ultimatePoint(parseOk("lag:K=1,tau=1,n=2")));
     EXPECT_FALSE(ultimatePoint(parseOk("lag:K=1,tau=1,n=1")));
     EXPECT_FALSE(ultimatePoint(parseOk("fopdt:K=1,tau=1,L=0")));
-    EXPECT_EQ(msg::debugString(whyNoUltimateGain(parseOk("lag:K=1,tau=1,n=2"))), "tuning.plant.lag_no_ku{order=2, phase=180°}");
+    EXPECT_EQ(motion::msg::debugString(whyNoUltimateGain(parseOk("lag:K=1,tau=1,n=2"))), "tuning.plant.lag_no_ku{order=2, phase=180°}");
     EXPECT_TRUE(whyNoUltimateGain(parseOk("lag:K=1,tau=1,n=3")).empty());
 }

@@ -20,11 +20,11 @@ constexpr std::size_t kKeptFailures = 12;
 /// A jog that moved its axes less than this did not run.
 constexpr double kMovedMm = 0.05;
 
-std::string ids(const std::vector<msg::Message>& messages)
+std::string ids(const std::vector<motion::msg::Message>& messages)
 {
     std::string out;
     for (const auto& m : messages)
-        out += (out.empty() ? "" : ", ") + msg::debugString(m);
+        out += (out.empty() ? "" : ", ") + motion::msg::debugString(m);
     return out;
 }
 } // namespace
@@ -128,37 +128,37 @@ void AnalyzerWork::startPlate()
 {
     dev::Instrument& c = m_station.client;
     const QString file = m_recipes[(m_round / 2) % m_recipes.size()];
-    const platefiles::LoadedRecipe l = platefiles::loadRecipe(file, platefiles::builtinDeck(), {});
+    const dev::files::plates::LoadedRecipe l = dev::files::plates::loadRecipe(file, dev::files::plates::builtinDeck(), {});
     if (!l.ok()) {
         m_tally.fail("plate", file.toStdString() + " does not load");
         next();
         return;
     }
     // As `recipe run` plans it: from where the machine stands, with its own motion limits.
-    plates::StartState start;
+    motion::plates::StartState start;
     const auto& axes = c.status().axes;
     if (axes.size() >= 4)
         start = {axes[0].commanded, axes[1].commanded, axes[2].commanded, axes[3].commanded};
-    plates::PlanContext context = l.context;
-    context.deck = jobs::deckWithDeviceMotion(context.deck, c.identity());
-    const plates::RecipePlan plan = plates::planRecipe(l.recipe, context, start);
-    m_runner = std::make_unique<jobs::RecipeRunner>(&c);
+    motion::plates::PlanContext context = l.context;
+    context.deck = dev::jobs::deckWithDeviceMotion(context.deck, c.identity());
+    const motion::plates::RecipePlan plan = motion::plates::planRecipe(l.recipe, context, start);
+    m_runner = std::make_unique<dev::jobs::RecipeRunner>(&c);
     m_problems.clear();
-    connect(m_runner.get(), &jobs::RecipeRunner::message, this, [this](const msg::Message& m, bool problem) {
+    connect(m_runner.get(), &dev::jobs::RecipeRunner::message, this, [this](const motion::msg::Message& m, bool problem) {
         if (problem)
-            m_problems += (m_problems.empty() ? "" : ", ") + msg::debugString(m);
+            m_problems += (m_problems.empty() ? "" : ", ") + motion::msg::debugString(m);
     });
     if (m_tally.verbose)
-        connect(m_runner.get(), &jobs::RecipeRunner::opFinished, this, [](int op) { std::printf("    plate op %d done\n", op); });
-    connect(m_runner.get(), &jobs::RecipeRunner::finished, this, [this](bool completed) {
+        connect(m_runner.get(), &dev::jobs::RecipeRunner::opFinished, this, [](int op) { std::printf("    plate op %d done\n", op); });
+    connect(m_runner.get(), &dev::jobs::RecipeRunner::finished, this, [this](bool completed) {
         QTimer::singleShot(0, this, [this, completed] { plateEnded(completed); });
     });
     const QString log = QStringLiteral("%1/plate-%2.run.jsonl").arg(m_tempDir).arg(m_round);
-    msg::Message error;
+    motion::msg::Message error;
     if (!m_runner->setPlan(plan, QString::fromStdString(l.recipe.name), &error) || !m_runner->start(log, &error)) {
         m_runner.reset();
         QFile::remove(log);
-        m_tally.fail("plate", "refused: " + msg::debugString(error));
+        m_tally.fail("plate", "refused: " + motion::msg::debugString(error));
         next();
     }
 }
@@ -167,7 +167,7 @@ void AnalyzerWork::plateEnded(bool completed)
 {
     if (!m_runner)
         return;
-    const jobs::RunProgress p = m_runner->progress();
+    const dev::jobs::RunProgress p = m_runner->progress();
     const QString log = m_runner->logPath();
     m_runner.reset();
     QFile::remove(log);  // the soak keeps no files: only its own figures may grow
@@ -194,7 +194,7 @@ void AnalyzerWork::emptyPlunger()
         }
         m_station.client.move({{p, 0.0}}, false, 0, [this](const std::optional<dev::RequestError>& e) {
             if (e) {
-                m_tally.fail("plate", "emptying the plunger refused: " + msg::debugString(e->message));
+                m_tally.fail("plate", "emptying the plunger refused: " + motion::msg::debugString(e->message));
                 next();
                 return;
             }
@@ -257,23 +257,23 @@ void StageWork::startScan()
     // A new folder each time: one holding a finished log of the same tiles would be continued.
     m_scanFolder = QStringLiteral("%1/scan-%2").arg(m_tempDir).arg(m_round);
     QDir().mkpath(m_scanFolder);
-    m_scan = std::make_unique<jobs::ScanRunner>(&m_station.client);
+    m_scan = std::make_unique<dev::jobs::ScanRunner>(&m_station.client);
     m_problems.clear();
-    connect(m_scan.get(), &jobs::ScanRunner::problem, this, [this](const msg::Message& m) {
-        m_problems += (m_problems.empty() ? "" : ", ") + msg::debugString(m);
+    connect(m_scan.get(), &dev::jobs::ScanRunner::problem, this, [this](const motion::msg::Message& m) {
+        m_problems += (m_problems.empty() ? "" : ", ") + motion::msg::debugString(m);
     });
     if (m_tally.verbose)
-        connect(m_scan.get(), &jobs::ScanRunner::tileTaken, this, [](int tile) { std::printf("    tile %d taken\n", tile); });
-    connect(m_scan.get(), &jobs::ScanRunner::finished, this, [this] {
+        connect(m_scan.get(), &dev::jobs::ScanRunner::tileTaken, this, [](int tile) { std::printf("    tile %d taken\n", tile); });
+    connect(m_scan.get(), &dev::jobs::ScanRunner::finished, this, [this] {
         QTimer::singleShot(0, this, [this] { scanEnded(true, {}); });
     });
-    connect(m_scan.get(), &jobs::ScanRunner::stateChanged, this, [this](jobs::ScanRunner::State s) {
-        if (s == jobs::ScanRunner::State::Stopped)
+    connect(m_scan.get(), &dev::jobs::ScanRunner::stateChanged, this, [this](dev::jobs::ScanRunner::State s) {
+        if (s == dev::jobs::ScanRunner::State::Stopped)
             QTimer::singleShot(0, this, [this] { scanEnded(false, m_problems); });
     });
-    msg::Message error;
+    motion::msg::Message error;
     if (!m_scan->prepare(m_scanPlan, m_scanFolder, true, &error) || !m_scan->start(&error))
-        QTimer::singleShot(0, this, [this, error] { scanEnded(false, "refused: " + msg::debugString(error)); });
+        QTimer::singleShot(0, this, [this, error] { scanEnded(false, "refused: " + motion::msg::debugString(error)); });
 }
 
 void StageWork::scanEnded(bool ok, const std::string& why)
@@ -293,19 +293,19 @@ void StageWork::scanEnded(bool ok, const std::string& why)
 void StageWork::startPattern(const std::string& kind, std::vector<motion::path::Segment> path)
 {
     dev::Instrument& c = m_station.client;
-    m_pattern = std::make_unique<jobs::PatternRunner>(&c);
+    m_pattern = std::make_unique<dev::jobs::PatternRunner>(&c);
     m_problems.clear();
     // Fed as the CLI feeds it, from the batches the hub's subscription brings (the plots'
     // wish covers X and Y commanded and measured).
-    connect(&c, &dev::Instrument::telemetryReceived, m_pattern.get(), [this](const proto::TelemetryBatch& b) {
-        jobs::feedBatch(*m_pattern, m_station.client, b);
+    connect(&c, &dev::Instrument::telemetryReceived, m_pattern.get(), [this](const dev::proto::TelemetryBatch& b) {
+        dev::jobs::feedBatch(*m_pattern, m_station.client, b);
     });
-    connect(m_pattern.get(), &jobs::PatternRunner::message, this, [this](const msg::Message& m, bool problem) {
+    connect(m_pattern.get(), &dev::jobs::PatternRunner::message, this, [this](const motion::msg::Message& m, bool problem) {
         if (problem)
-            m_problems += (m_problems.empty() ? "" : ", ") + msg::debugString(m);
+            m_problems += (m_problems.empty() ? "" : ", ") + motion::msg::debugString(m);
     });
-    connect(m_pattern.get(), &jobs::PatternRunner::stateChanged, this, [this, kind](jobs::PatternRunner::State s) {
-        using S = jobs::PatternRunner::State;
+    connect(m_pattern.get(), &dev::jobs::PatternRunner::stateChanged, this, [this, kind](dev::jobs::PatternRunner::State s) {
+        using S = dev::jobs::PatternRunner::State;
         if (s == S::Done || s == S::Failed || s == S::Aborted || s == S::Interrupted)
             QTimer::singleShot(0, this, [this, kind, s] { patternEnded(kind, s); });
     });
@@ -317,18 +317,18 @@ void StageWork::startPattern(const std::string& kind, std::vector<motion::path::
     }
 }
 
-void StageWork::patternEnded(const std::string& kind, jobs::PatternRunner::State s)
+void StageWork::patternEnded(const std::string& kind, dev::jobs::PatternRunner::State s)
 {
     if (!m_pattern)
         return;
-    const jobs::PatternRunSummary summary = m_pattern->summary();
+    const dev::jobs::PatternRunSummary summary = m_pattern->summary();
     m_pattern.reset();
     m_tally.patternUnderruns += static_cast<quint64>(summary.underruns);
     m_tally.maxContourUm = std::max(m_tally.maxContourUm, summary.maxContourMm * 1e3);
-    if (s == jobs::PatternRunner::State::Done && summary.complete)
+    if (s == dev::jobs::PatternRunner::State::Done && summary.complete)
         m_tally.pass(kind);
     else
-        m_tally.fail(kind, std::string("ended ") + jobs::PatternRunner::stateTerm(s) + ": " + m_problems);
+        m_tally.fail(kind, std::string("ended ") + dev::jobs::PatternRunner::stateTerm(s) + ": " + m_problems);
     whenStill(&m_station.client, this, [this](bool) { next(); });
 }
 

@@ -88,7 +88,7 @@ private:
 
     QStringList m_recipes;
     QString m_tempDir;
-    std::unique_ptr<jobs::RecipeRunner> m_runner;
+    std::unique_ptr<dev::jobs::RecipeRunner> m_runner;
     std::string m_problems;  ///< what the plate run said went wrong
 };
 
@@ -104,7 +104,7 @@ private:
     void startScan();
     void scanEnded(bool ok, const std::string& why);
     void startPattern(const std::string& kind, std::vector<motion::path::Segment> path);
-    void patternEnded(const std::string& kind, jobs::PatternRunner::State s);
+    void patternEnded(const std::string& kind, dev::jobs::PatternRunner::State s);
     void joystick();
     void keyJog();
     std::vector<motion::path::Segment> line();
@@ -113,9 +113,9 @@ private:
     motion::scan::ScanPlan m_scanPlan;
     std::vector<motion::path::Segment> m_sine;
     QString m_tempDir;
-    std::unique_ptr<jobs::ScanRunner> m_scan;
+    std::unique_ptr<dev::jobs::ScanRunner> m_scan;
     QString m_scanFolder;
-    std::unique_ptr<jobs::PatternRunner> m_pattern;
+    std::unique_ptr<dev::jobs::PatternRunner> m_pattern;
     std::string m_problems;
     dev::JoystickDriver m_stick;
 };

@@ -80,20 +80,20 @@ int main(int argc, char** argv)
     // What it runs: the examples a user starts from.
     const QString dir = p.value(examples);
     motion::scan::ScanPlan scanPlan;
-    jsonio::Problems problems;
-    if (!scanfile::loadPlan(dir + QStringLiteral("/well-centre.scan.json"), &scanPlan, &problems))
+    dev::files::json::Problems problems;
+    if (!dev::files::scan::loadPlan(dir + QStringLiteral("/well-centre.scan.json"), &scanPlan, &problems))
         return setupFailed("cannot read well-centre.scan.json in " + dir.toStdString());
     motion::plans::Pattern sinePattern;
-    if (!files::loadPatternFile(dir + QStringLiteral("/stage-sine-chords.pattern.json"), &sinePattern, &problems))
+    if (!dev::files::loadPatternFile(dir + QStringLiteral("/stage-sine-chords.pattern.json"), &sinePattern, &problems))
         return setupFailed("cannot read stage-sine-chords.pattern.json in " + dir.toStdString());
     const QStringList recipes{dir + QStringLiteral("/sampling-96.recipe.json"), dir + QStringLiteral("/reagent-transfer.recipe.json")};
     QTemporaryDir temp;
     if (!temp.isValid())
         return setupFailed("no temporary folder");
 
-    soak::Station analyzer(proto::DeviceKind::Analyzer, timeScale);
-    soak::Station stage(proto::DeviceKind::Stage, timeScale);
-    tele::TelemetryHub hub;
+    soak::Station analyzer(dev::proto::DeviceKind::Analyzer, timeScale);
+    soak::Station stage(dev::proto::DeviceKind::Stage, timeScale);
+    dev::tele::TelemetryHub hub;
     hub.addInstrument(0, QStringLiteral("Analyzer"), &analyzer.client);
     hub.addInstrument(1, QStringLiteral("Stage"), &stage.client);
     soak::PlotConsumer plots(hub, p.value(rate).toInt());

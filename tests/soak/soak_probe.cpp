@@ -57,7 +57,7 @@ qint64 heapKb()
 #endif
 }
 
-Probe::Probe(std::vector<Station*> stations, tele::TelemetryHub& hub, PlotConsumer& plots, Tally& tally)
+Probe::Probe(std::vector<Station*> stations, dev::tele::TelemetryHub& hub, PlotConsumer& plots, Tally& tally)
     : m_stations(std::move(stations)), m_hub(hub), m_plots(plots), m_tally(tally)
 {
     m_timer.setTimerType(Qt::PreciseTimer);
@@ -101,7 +101,7 @@ void Probe::tick()
 quint64 Probe::linkErrors(Station& s)
 {
     const dev::LinkStats c = s.client.stats();
-    const proto::DecoderStats& d = s.link.host().firmware().decoderStats();
+    const dev::proto::DecoderStats& d = s.link.host().firmware().decoderStats();
     return c.crcErrors + c.malformed + c.oversize + c.droppedBytes + c.timeouts + d.crcErrors + d.malformed + d.oversize
         + s.trouble.linkErrorSignals + s.trouble.refusals + s.trouble.linkDrops;
 }

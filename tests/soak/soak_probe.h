@@ -50,7 +50,7 @@ class Probe : public QObject {
 public:
     static constexpr int kProbeMs = 10;
 
-    Probe(std::vector<Station*> stations, tele::TelemetryHub& hub, PlotConsumer& plots, Tally& tally);
+    Probe(std::vector<Station*> stations, dev::tele::TelemetryHub& hub, PlotConsumer& plots, Tally& tally);
     void start();
     /// Device seconds since start() (the slower of the two clocks).
     double simS();
@@ -77,7 +77,7 @@ private:
     void tick();
 
     std::vector<Station*> m_stations;
-    tele::TelemetryHub& m_hub;
+    dev::tele::TelemetryHub& m_hub;
     PlotConsumer& m_plots;
     Tally& m_tally;
     std::vector<double> m_sim0;

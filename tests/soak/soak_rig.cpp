@@ -11,23 +11,23 @@ namespace {
 constexpr std::size_t kKeptMessages = 8;
 } // namespace
 
-Station::Station(proto::DeviceKind kind, double timeScale)
-    : link(kind, 0), name(kind == proto::DeviceKind::Stage ? "stage" : "analyzer")
+Station::Station(dev::proto::DeviceKind kind, double timeScale)
+    : link(kind, 0), name(kind == dev::proto::DeviceKind::Stage ? "stage" : "analyzer")
 {
     // Unpaced: the firmware budgets telemetry per virtual second of its link, so a paced
     // UART under a sped-up clock would carry K times its rate (SimulatorHost::setTimeScale).
     link.host().setTimeScale(timeScale);
-    connect(&client, &dev::Instrument::linkError, this, [this](const msg::Message& m) {
+    connect(&client, &dev::Instrument::linkError, this, [this](const motion::msg::Message& m) {
         ++trouble.linkErrorSignals;
-        note("link error: " + msg::debugString(m));
+        note("link error: " + motion::msg::debugString(m));
     });
     connect(&client, &dev::Instrument::requestFailed, this, [this](const dev::RequestError& e) {
         ++trouble.refusals;
-        note("request failed: " + msg::debugString(e.message));
+        note("request failed: " + motion::msg::debugString(e.message));
     });
     connect(&client, &dev::Instrument::eventReceived, this, [this](const dev::DeviceEvent& e) {
         // Counted, not quoted: a fault only in sum (the simulator scales its trip with its clock).
-        if (e.kind == proto::EventKind::JogExpired)
+        if (e.kind == dev::proto::EventKind::JogExpired)
             ++trouble.jogExpired;
     });
     connect(&client, &dev::Instrument::stateChanged, this, [this](dev::LinkState s) {
@@ -78,7 +78,7 @@ bool Station::connectAndHome(int timeoutMs, std::string* why)
         h->answered = true;
         h->refused = e.has_value();
         if (e)
-            h->why = "refused to home: " + msg::debugString(e->message);
+            h->why = "refused to home: " + motion::msg::debugString(e->message);
     });
     // Homed: every axis says so and none moves, on a reading asked for after the reply.
     QTimer poll;
@@ -126,13 +126,13 @@ void whenStill(dev::Instrument* client, QObject* context, std::function<void(boo
     });
 }
 
-PlotConsumer::PlotConsumer(tele::TelemetryHub& hub, int rateHz) : m_hub(hub), m_rateHz(rateHz), m_columns(kColumns)
+PlotConsumer::PlotConsumer(dev::tele::TelemetryHub& hub, int rateHz) : m_hub(hub), m_rateHz(rateHz), m_columns(kColumns)
 {
     m_frame.setSingleShot(true);
     m_frame.setInterval(kFrameMs);
     connect(&m_frame, &QTimer::timeout, this, &PlotConsumer::redraw);
     // Never a redraw per batch: at most one frame per kFrameMs (PlotsScreen::scheduleRedraw).
-    connect(&m_hub, &tele::TelemetryHub::dataArrived, this, [this] {
+    connect(&m_hub, &dev::tele::TelemetryHub::dataArrived, this, [this] {
         if (!m_frame.isActive())
             m_frame.start();
     });
@@ -150,7 +150,7 @@ std::size_t PlotConsumer::storeBytes() const
 {
     std::size_t bytes = 0;
     for (const auto& key : m_keys)
-        if (const tele::ChannelStore* s = m_hub.store(key))
+        if (const dev::tele::ChannelStore* s = m_hub.store(key))
             bytes += s->memoryBytes();
     return bytes;
 }
@@ -161,8 +161,8 @@ void PlotConsumer::redraw()
     if (m_keys.isEmpty())
         return;
     for (int k = 0; k < kShownChannels; ++k) {
-        const tele::ChannelKey& key = m_keys[(m_firstShown + k) % m_keys.size()];
-        const tele::ChannelStore* s = m_hub.store(key);
+        const dev::tele::ChannelKey& key = m_keys[(m_firstShown + k) % m_keys.size()];
+        const dev::tele::ChannelStore* s = m_hub.store(key);
         if (!s || s->empty()) {
             ++m_emptyReads;
             continue;

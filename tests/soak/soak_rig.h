@@ -30,7 +30,7 @@ struct LinkTrouble {
 class Station : public QObject {
     Q_OBJECT
 public:
-    Station(proto::DeviceKind kind, double timeScale);
+    Station(dev::proto::DeviceKind kind, double timeScale);
     ~Station() override;
 
     /// Connects and homes every axis; false (with why) if it cannot.
@@ -66,7 +66,7 @@ public:
     static constexpr int kColumns = 1200; ///< a wide plot's pixel columns
     static constexpr int kShownChannels = 6;
 
-    PlotConsumer(tele::TelemetryHub& hub, int rateHz);
+    PlotConsumer(dev::tele::TelemetryHub& hub, int rateHz);
     /// Says what it wants (once both instruments are identified).
     void want();
     quint64 frames() const { return m_frames; }
@@ -78,11 +78,11 @@ public:
 private:
     void redraw();
 
-    tele::TelemetryHub& m_hub;
+    dev::tele::TelemetryHub& m_hub;
     int m_rateHz;
-    QVector<tele::ChannelKey> m_keys;
+    QVector<dev::tele::ChannelKey> m_keys;
     QTimer m_frame;
-    std::vector<tele::MinMax> m_columns;
+    std::vector<dev::tele::MinMax> m_columns;
     quint64 m_frames = 0, m_emptyReads = 0;
     int m_firstShown = 0;
 };

@@ -1,7 +1,7 @@
 // An interferometer's capture imported on the Calibration screen. The run wrote its
 // target sequence; the operator captured with the interferometer's own software and
 // exported CSV; the export is matched to the sequence stop by stop, all or nothing
-// (accuracyfiles::importInterferometerCsv), and evaluated like any axis run. The
+// (dev::files::accuracy::importInterferometerCsv), and evaluated like any axis run. The
 // readings, result and report go beside the sequence, as the CLI's `accuracy import`
 // writes them.
 #include "widgets/calibration/calibration_screen.h"
@@ -19,12 +19,12 @@
 
 namespace ui {
 
-QString CalibrationScreen::fileProblemLines(const msg::Problems& problems)
+QString CalibrationScreen::fileProblemLines(const motion::msg::Problems& problems)
 {
     QStringList lines;
     for (const auto& p : problems)
         if (p.isError())
-            lines << words::problem(p);
+            lines << ui::words::problem(p);
     return lines.join(QLatin1Char('\n'));
 }
 
@@ -47,31 +47,31 @@ bool CalibrationScreen::importCapture(const QString& sequencePath, const QString
     // The sequence holds targets and directions only; the axis and its tolerances are
     // the test's, so the test the capture belongs to must be the one on screen: its
     // stops are compared with the sequence's before anything is read or written.
-    const accuracyfiles::AccuracyTest onScreen = m_form->test();
+    const dev::files::accuracy::AccuracyTest onScreen = m_form->test();
     const auto* test = std::get_if<motion::metrology::AxisTest>(&onScreen);
     if (!test) {
         emit problem(tr("Only an axis test's capture can be imported: show the axis test it belongs to."));
         return false;
     }
-    const auto sequence = accuracyfiles::loadTargetSequence(sequencePath);
+    const auto sequence = dev::files::accuracy::loadTargetSequence(sequencePath);
     if (!sequence.ok()) {
         emit problem(tr("The target sequence cannot be read:\n%1").arg(fileProblemLines(sequence.problems)));
         return false;
     }
-    if (const auto mismatch = accuracyfiles::sequenceMismatch(sequence.stops, *test)) {
+    if (const auto mismatch = dev::files::accuracy::sequenceMismatch(sequence.stops, *test)) {
         emit problem(tr("%1 is not the run of the axis test on screen, so nothing was imported: %2. Open the test the capture "
                         "belongs to, then import again.")
-                         .arg(QFileInfo(sequencePath).fileName(), words::text(*mismatch)));
+                         .arg(QFileInfo(sequencePath).fileName(), ui::words::text(*mismatch)));
         return false;
     }
-    const auto imported = accuracyfiles::loadInterferometerExport(capturePath, sequence.stops);
+    const auto imported = dev::files::accuracy::loadInterferometerExport(capturePath, sequence.stops);
     if (!imported.ok()) {
         emit problem(tr("The capture does not match the run's stops, so nothing was imported:\n%1").arg(fileProblemLines(imported.problems)));
         return false;
     }
     const auto evaluation = motion::metrology::evaluate(imported.readings);
     if (!evaluation.ok()) {
-        emit problem(tr("The imported readings cannot be evaluated:\n%1").arg(words::problems(evaluation.problems).join(QLatin1Char('\n'))));
+        emit problem(tr("The imported readings cannot be evaluated:\n%1").arg(ui::words::problems(evaluation.problems).join(QLatin1Char('\n'))));
         return false;
     }
     QString base = sequencePath;
@@ -83,23 +83,23 @@ bool CalibrationScreen::importCapture(const QString& sequencePath, const QString
     if (QFileInfo::exists(readingsPath)
         && !confirm(tr("%1 exists already. Replace it with the readings of this capture?").arg(readingsPath)))
         return false;
-    msg::Message error;
-    if (!accuracyfiles::saveReadingsCsv(readingsPath, imported.readings, &error)) {
-        emit problem(words::text(error));
+    motion::msg::Message error;
+    if (!dev::files::accuracy::saveReadingsCsv(readingsPath, imported.readings, &error)) {
+        emit problem(ui::words::text(error));
         return false;
     }
-    accuracyfiles::AccuracyResult r;
+    dev::files::accuracy::AccuracyResult r;
     r.axis = test->axis;
     r.evaluation = evaluation;
     r.tolerances = test->tolerances;
     r.reference = "interferometer";
     r.readingsFile = QFileInfo(readingsPath).fileName().toStdString();
     r.createdUtc = QDateTime::currentDateTimeUtc().toString(Qt::ISODate).toStdString();
-    if (!accuracyfiles::saveAccuracyResultFile(base + QStringLiteral(".accuracy-result.json"), r, &error)) {
-        emit problem(words::text(error));
+    if (!dev::files::accuracy::saveAccuracyResultFile(base + QStringLiteral(".accuracy-result.json"), r, &error)) {
+        emit problem(ui::words::text(error));
         return false;
     }
-    adoptAxisResult(r, *test, imported.readings, base, msg::make("accuracy.source.interferometer"));
+    adoptAxisResult(r, *test, imported.readings, base, motion::msg::make("accuracy.source.interferometer"));
     emit notice(tr("Imported %n reading(s) from %1: results in %2.", "", static_cast<int>(imported.readings.size()))
                     .arg(QFileInfo(capturePath).fileName(), QFileInfo(readingsPath).absolutePath()));
     updateRunUi();

@@ -35,7 +35,7 @@
 
 namespace ui {
 
-using words::duration;
+using ui::words::duration;
 
 using motion::metrology::AxisTest;
 using motion::metrology::CircularTest;
@@ -68,18 +68,18 @@ void setRows(QTableWidget* t, const std::vector<QStringList>& rows)
 
 } // namespace
 
-std::unique_ptr<jobs::ReadingSource> CalibrationScreen::makeSource(int axis, QString* error)
+std::unique_ptr<dev::jobs::ReadingSource> CalibrationScreen::makeSource(int axis, QString* error)
 {
     const QString kind = m_sourceBox->currentData().toString();
     if (kind == QLatin1String("readback"))
-        return std::make_unique<jobs::ReadbackSource>(cur());
+        return std::make_unique<dev::jobs::ReadbackSource>(cur());
     if (kind == QLatin1String("interferometer"))
-        return std::make_unique<jobs::InterferometerSource>();
+        return std::make_unique<dev::jobs::InterferometerSource>();
     if (kind == QLatin1String("manual")) {
-        auto m = std::make_unique<jobs::ManualSource>();
+        auto m = std::make_unique<dev::jobs::ManualSource>();
         m_manual = m.get();
-        connect(m.get(), &jobs::ManualSource::entryWanted, this, &CalibrationScreen::onManualWanted);
-        connect(m.get(), &jobs::ManualSource::entryDone, this, [this] { m_manualRow->hide(); });
+        connect(m.get(), &dev::jobs::ManualSource::entryWanted, this, &CalibrationScreen::onManualWanted);
+        connect(m.get(), &dev::jobs::ManualSource::entryDone, this, [this] { m_manualRow->hide(); });
         return m;
     }
     const QString port = m_port->text().trimmed();
@@ -93,7 +93,7 @@ std::unique_ptr<jobs::ReadingSource> CalibrationScreen::makeSource(int axis, QSt
             *error = tr("There is no way to open a gauge here.");
         return nullptr;
     }
-    auto source = std::make_unique<jobs::GaugeSource>(t, port == QLatin1String("sim") ? tr("simulated gauge") : port);
+    auto source = std::make_unique<dev::jobs::GaugeSource>(t, port == QLatin1String("sim") ? tr("simulated gauge") : port);
     // Whatever the factory made for the transport (a serial port, or a simulated gauge with
     // its loopback pair) goes with the source: the object the factory hung on this screen.
     QObject* top = t;
@@ -109,12 +109,12 @@ bool CalibrationScreen::run()
     m_lastProblem = {};
     if (m_opening || (m_runner && m_runner->isActive()) || (m_circle && m_circle->isActive()))
         return false;  // one run at a time (Run is disabled meanwhile and says why)
-    if (m_runner && (m_runner->state() == jobs::AccuracyRunner::State::Paused || m_runner->state() == jobs::AccuracyRunner::State::Stopped)
+    if (m_runner && (m_runner->state() == dev::jobs::AccuracyRunner::State::Paused || m_runner->state() == dev::jobs::AccuracyRunner::State::Stopped)
         && m_runOn == m_current && m_form->kind() != AccuracyTestForm::Kind::Circle) {
         // Go on with the run in progress (after a pause, an abort or a lost link).
-        msg::Message why;
+        motion::msg::Message why;
         if (!m_runner->start(&why)) {
-            emit problem(words::text(why));
+            emit problem(ui::words::text(why));
             return false;
         }
         updateRunUi();
@@ -125,7 +125,7 @@ bool CalibrationScreen::run()
 
 bool CalibrationScreen::runAxis()
 {
-    const accuracyfiles::AccuracyTest test = m_form->test();
+    const dev::files::accuracy::AccuracyTest test = m_form->test();
     dev::Instrument* inst = cur();
     int axis = 0;
     if (const auto* a = std::get_if<AxisTest>(&test))
@@ -144,13 +144,13 @@ bool CalibrationScreen::runAxis()
     // answers later (a serial port opens on the event loop): the run starts from there.
     m_opening = true;
     updateRunUi();
-    jobs::ReadingSource* source = m_source.get();
-    source->open([this, source, test](const msg::Message& openProblem) {
+    dev::jobs::ReadingSource* source = m_source.get();
+    source->open([this, source, test](const motion::msg::Message& openProblem) {
         if (m_source.get() != source || !m_opening)
             return;  // replaced or given up on meanwhile
         m_opening = false;
         if (!openProblem.empty()) {
-            emit problem(words::text(openProblem));
+            emit problem(ui::words::text(openProblem));
             updateRunUi();
             return;
         }
@@ -163,27 +163,27 @@ bool CalibrationScreen::runAxis()
 
 bool CalibrationScreen::busy() const
 {
-    using A = jobs::AccuracyRunner::State;
-    using C = jobs::CircleRunner::State;
+    using A = dev::jobs::AccuracyRunner::State;
+    using C = dev::jobs::CircleRunner::State;
     return (m_runner && (m_runner->isActive() || m_runner->state() == A::Paused))
         || (m_circle && (m_circle->isActive() || m_circle->state() == C::Paused));
 }
 
-bool CalibrationScreen::startAxis(const accuracyfiles::AccuracyTest& test, const QString& into)
+bool CalibrationScreen::startAxis(const dev::files::accuracy::AccuracyTest& test, const QString& into)
 {
     dev::Instrument* inst = cur();
     const std::string name = std::visit([](const auto& t) { return t.name; }, test);
     const QString base = QDir(m_folder->text()).filePath(QString::fromStdString(name));
     // The newest run of this test: a stopped one goes on there, a finished one is offered a
     // run beside it (accuracy_run_folders.h).
-    const QString folder = into.isEmpty() ? accuracyfiles::latestRunFolder(base) : into;
-    m_runner = std::make_unique<jobs::AccuracyRunner>(inst);
-    msg::Problems problems;
+    const QString folder = into.isEmpty() ? dev::files::accuracy::latestRunFolder(base) : into;
+    m_runner = std::make_unique<dev::jobs::AccuracyRunner>(inst);
+    motion::msg::Problems problems;
     if (!m_runner->prepare(test, m_source.get(), folder, false, &problems)) {
         QStringList lines;
         for (const auto& p : problems)
             if (p.isError())
-                lines << words::problem(p);
+                lines << ui::words::problem(p);
         const bool otherLog = !problems.empty() && problems.back().message.id == "accuracy.run.other_log";
         if (otherLog && confirm(tr("%1\n\nKeep that log aside and start this test afresh?").arg(lines.join(QLatin1Char('\n'))))) {
             if (!m_runner->prepare(test, m_source.get(), folder, true, &problems)) {
@@ -208,15 +208,15 @@ bool CalibrationScreen::startAxis(const accuracyfiles::AccuracyTest& test, const
         updateRunUi();
         return false;
     }
-    connect(m_runner.get(), &jobs::AccuracyRunner::readingTaken, this, &CalibrationScreen::onReading);
-    connect(m_runner.get(), &jobs::AccuracyRunner::progress, this, &CalibrationScreen::updateRunUi);
-    connect(m_runner.get(), &jobs::AccuracyRunner::stateChanged, this, &CalibrationScreen::updateRunUi);
-    connect(m_runner.get(), &jobs::AccuracyRunner::problem, this, [this](const msg::Message& m) {
+    connect(m_runner.get(), &dev::jobs::AccuracyRunner::readingTaken, this, &CalibrationScreen::onReading);
+    connect(m_runner.get(), &dev::jobs::AccuracyRunner::progress, this, &CalibrationScreen::updateRunUi);
+    connect(m_runner.get(), &dev::jobs::AccuracyRunner::stateChanged, this, &CalibrationScreen::updateRunUi);
+    connect(m_runner.get(), &dev::jobs::AccuracyRunner::problem, this, [this](const motion::msg::Message& m) {
         m_lastProblem = m;
-        emit problem(words::text(m));
+        emit problem(ui::words::text(m));
         updateRunUi();
     });
-    connect(m_runner.get(), &jobs::AccuracyRunner::finished, this, &CalibrationScreen::onAxisFinished);
+    connect(m_runner.get(), &dev::jobs::AccuracyRunner::finished, this, &CalibrationScreen::onAxisFinished);
     m_runOn = m_current;
     m_live->show();
     m_livePolar->hide();
@@ -226,13 +226,13 @@ bool CalibrationScreen::startAxis(const accuracyfiles::AccuracyTest& test, const
     const auto* axisTest = std::get_if<motion::metrology::AxisTest>(&test);
     m_live->showTargets(axisTest ? motion::metrology::targetsOf(*axisTest) : std::vector<double>{});
     m_tabs->setCurrentIndex(0);
-    if (m_runner->state() == jobs::AccuracyRunner::State::Finished) {
+    if (m_runner->state() == dev::jobs::AccuracyRunner::State::Finished) {
         onAxisFinished();  // its results on screen: the "before" of a run after it
-        if (!into.isEmpty() || m_source->kind() == jobs::ReadingKind::Interferometer)
+        if (!into.isEmpty() || m_source->kind() == dev::jobs::ReadingKind::Interferometer)
             return true;
         // The operator ran it to measure again (after compensation): a new run beside the
         // finished one, which stays as it is for the before/after comparison.
-        const QString next = accuracyfiles::nextRunFolder(base);
+        const QString next = dev::files::accuracy::nextRunFolder(base);
         if (!confirm(tr("%1 holds a finished run of this test. Run the test again into %2? Both runs are kept, and "
                         "Before / after compares the new one with this one.")
                          .arg(QDir::toNativeSeparators(folder), QDir::toNativeSeparators(next))))
@@ -241,9 +241,9 @@ bool CalibrationScreen::startAxis(const accuracyfiles::AccuracyTest& test, const
     }
     onReading();
     emit accuracyRunStarting(m_runner.get(), m_runOn);
-    msg::Message why;
+    motion::msg::Message why;
     if (!m_runner->start(&why)) {
-        emit problem(words::text(why));
+        emit problem(ui::words::text(why));
         updateRunUi();
         return false;
     }
@@ -257,32 +257,32 @@ bool CalibrationScreen::runCircle()
     const auto* c = std::get_if<CircularTest>(&test);
     if (!c)
         return false;
-    m_circle = std::make_unique<jobs::CircleRunner>(cur());
-    msg::Problems problems;
+    m_circle = std::make_unique<dev::jobs::CircleRunner>(cur());
+    motion::msg::Problems problems;
     if (!m_circle->prepare(*c, &problems)) {
         QStringList lines;
         for (const auto& p : problems)
             if (p.isError())
-                lines << words::problem(p);
+                lines << ui::words::problem(p);
         emit problem(lines.join(QLatin1Char('\n')));
         return false;
     }
-    connect(m_circle.get(), &jobs::CircleRunner::stateChanged, this, &CalibrationScreen::updateRunUi);
-    connect(m_circle.get(), &jobs::CircleRunner::progress, this, &CalibrationScreen::updateRunUi);
-    connect(m_circle.get(), &jobs::CircleRunner::sampled, this, [this] {
+    connect(m_circle.get(), &dev::jobs::CircleRunner::stateChanged, this, &CalibrationScreen::updateRunUi);
+    connect(m_circle.get(), &dev::jobs::CircleRunner::progress, this, &CalibrationScreen::updateRunUi);
+    connect(m_circle.get(), &dev::jobs::CircleRunner::sampled, this, [this] {
         const auto& t = m_circle->test();
         m_livePolar->showLive(m_circle->current().samplesMm, t.centreMm, t.radiusMm);
     });
-    connect(m_circle.get(), &jobs::CircleRunner::problem, this, [this](const msg::Message& m) {
+    connect(m_circle.get(), &dev::jobs::CircleRunner::problem, this, [this](const motion::msg::Message& m) {
         m_lastProblem = m;
-        emit problem(words::text(m));
+        emit problem(ui::words::text(m));
     });
-    connect(m_circle.get(), &jobs::CircleRunner::finished, this, &CalibrationScreen::onCircleFinished);
+    connect(m_circle.get(), &dev::jobs::CircleRunner::finished, this, &CalibrationScreen::onCircleFinished);
     // Sampled on the device's clock from the measured positions every instrument streams
     // for the telemetry history; status readings stand in if the link sheds them.
     dev::Instrument* inst = cur();
-    connect(inst, &dev::Instrument::telemetryReceived, m_circle.get(), [runner = m_circle.get(), inst](const proto::TelemetryBatch& b) {
-        jobs::feedCircleBatch(*runner, *inst, b);
+    connect(inst, &dev::Instrument::telemetryReceived, m_circle.get(), [runner = m_circle.get(), inst](const dev::proto::TelemetryBatch& b) {
+        dev::jobs::feedCircleBatch(*runner, *inst, b);
     });
     m_runOn = m_current;
     m_live->hide();
@@ -290,9 +290,9 @@ bool CalibrationScreen::runCircle()
     m_livePolar->clearAll();
     m_tabs->setCurrentIndex(0);
     emit circleRunStarting(m_circle.get(), m_runOn);
-    msg::Message why;
+    motion::msg::Message why;
     if (!m_circle->start(&why)) {
-        emit problem(words::text(why));
+        emit problem(ui::words::text(why));
         return false;
     }
     updateRunUi();
@@ -319,15 +319,15 @@ void CalibrationScreen::abort()
     updateRunUi();
 }
 
-void CalibrationScreen::onManualWanted(const jobs::StopContext& stop)
+void CalibrationScreen::onManualWanted(const dev::jobs::StopContext& stop)
 {
     QString where;
     for (std::size_t n = 0; n < stop.letters.size(); ++n)
-        where += QStringLiteral("%1 %2  ").arg(stop.letters[n]).arg(words::number(stop.targetsMm[n], msg::Unit::Mm));
+        where += QStringLiteral("%1 %2  ").arg(stop.letters[n]).arg(ui::words::number(stop.targetsMm[n], motion::msg::Unit::Mm));
     m_manualPrompt->setText(tr("Reading %1 of %2: %3%4, cycle %5. What does the indicator show?")
                                 .arg(stop.index + 1)
                                 .arg(stop.total)
-                                .arg(where, words::term(motion::metrology::directionTermId(stop.direction)))
+                                .arg(where, ui::words::term(motion::metrology::directionTermId(stop.direction)))
                                 .arg(stop.cycle));
     m_manualValue->clear();
     m_manualRow->show();
@@ -375,7 +375,7 @@ void CalibrationScreen::onAxisFinished()
 {
     m_manualRow->hide();
     const auto* a = std::get_if<AxisTest>(&m_runner->test());
-    if (m_source && m_source->kind() == jobs::ReadingKind::Interferometer) {
+    if (m_source && m_source->kind() == dev::jobs::ReadingKind::Interferometer) {
         emit notice(tr("Every stop is visited. Capture with the interferometer, then import its export against %1 "
                        "(Import capture…).")
                         .arg(m_runner->basePath() + QStringLiteral(".targets.csv")));
@@ -383,15 +383,15 @@ void CalibrationScreen::onAxisFinished()
         return;
     }
     if (a) {
-        accuracyfiles::AccuracyResult r;
+        dev::files::accuracy::AccuracyResult r;
         r.axis = a->axis;
         r.evaluation = m_runner->evaluation();
         r.tolerances = a->tolerances;
-        r.reference = m_source ? jobs::readingKindName(m_source->kind()) : "";
+        r.reference = m_source ? dev::jobs::readingKindName(m_source->kind()) : "";
         r.readingsFile = QFileInfo(m_runner->basePath() + QStringLiteral(".readings.csv")).fileName().toStdString();
         r.createdUtc = QDateTime::currentDateTimeUtc().toString(Qt::ISODate).toStdString();
         adoptAxisResult(r, *a, m_runner->readings(), m_runner->basePath(),
-                        m_source ? m_source->describe() : msg::make("accuracy.source.recorded", {msg::verbatim("reference", r.reference)}));
+                        m_source ? m_source->describe() : motion::msg::make("accuracy.source.recorded", {motion::msg::verbatim("reference", r.reference)}));
     } else {
         const auto e = m_runner->xyEvaluation();
         m_verdict->setText(tr("Linked XY line: contour error A↑ %1 µm, R↑ %2 µm (%3 readings).")
@@ -403,9 +403,9 @@ void CalibrationScreen::onAxisFinished()
     updateRunUi();
 }
 
-void CalibrationScreen::adoptAxisResult(const accuracyfiles::AccuracyResult& r, const AxisTest& test,
+void CalibrationScreen::adoptAxisResult(const dev::files::accuracy::AccuracyResult& r, const AxisTest& test,
                                         const std::vector<motion::metrology::Reading>& readings, const QString& basePath,
-                                        const msg::Message& source)
+                                        const motion::msg::Message& source)
 {
     // The same run shown again (Run on its finished folder) is not its own "before".
     if (m_latest && m_latest->axis == r.axis && m_latestBasePath != basePath)
@@ -429,7 +429,7 @@ void CalibrationScreen::onCircleFinished()
     m_polar->setEvaluation(e, m_circle->test().radiusMm);
     std::vector<QStringList> rows;
     for (const auto& run : e.runs) {
-        const QString dir = words::term(motion::metrology::rotationTermId(run.rotation));
+        const QString dir = ui::words::term(motion::metrology::rotationTermId(run.rotation));
         rows.push_back({tr("G, %1").arg(dir), um(run.circularDeviationMm)});
         rows.push_back({tr("radial deviation, %1").arg(dir), QStringLiteral("%1 … %2").arg(um(run.radialDeviationMinMm), um(run.radialDeviationMaxMm))});
     }
@@ -439,9 +439,9 @@ void CalibrationScreen::onCircleFinished()
         rows.push_back({tr("H hysteresis"), um(*e.hysteresisMm)});
     setRows(m_circleFigures, rows);
     m_tabs->setCurrentIndex(4);
-    if (report::canRender()) {
-        report::CircleReportInput in;
-        in.title = tr("Circular test, radius %1").arg(words::number(m_circle->test().radiusMm, msg::Unit::Mm));
+    if (ui::report::canRender()) {
+        ui::report::CircleReportInput in;
+        in.title = tr("Circular test, radius %1").arg(ui::words::number(m_circle->test().radiusMm, motion::msg::Unit::Mm));
         in.instrument = cur() ? QStringLiteral("%1 (%2)").arg(cur()->identity().model, cur()->identity().family) : QString();
         in.test = m_circle->test();
         in.evaluation = e;
@@ -449,7 +449,7 @@ void CalibrationScreen::onCircleFinished()
         QDir().mkpath(m_folder->text());
         QString error;
         const QString pdf = QDir(m_folder->text()).filePath(QString::fromStdString(m_circle->test().name) + QStringLiteral(".report.pdf"));
-        if (report::writeCircleReport(pdf, in, &error))
+        if (ui::report::writeCircleReport(pdf, in, &error))
             emit notice(tr("The circular test is done: report %1.").arg(pdf));
         else
             emit problem(error);
@@ -473,7 +473,7 @@ void CalibrationScreen::showResult()
     const auto verdicts = motion::metrology::judge(r.evaluation, r.tolerances);
     std::vector<QStringList> rows;
     for (const char* key : kFigureKeys) {
-        const auto v = accuracyfiles::figureByKey(r.evaluation.figures, key);
+        const auto v = dev::files::accuracy::figureByKey(r.evaluation.figures, key);
         if (!v)
             continue;
         QString limit = QStringLiteral("—"), verdict;
@@ -492,7 +492,7 @@ void CalibrationScreen::showResult()
     m_resultPlot->setData(m_latestReadings, r.evaluation);
     m_saveComp->setEnabled(m_fit->model().has_value());
     m_saveComp->setToolTip(tr("Writes the fitted compensation as a file (*.compensation.json)"));
-    m_reportButton->setEnabled(report::canRender());
+    m_reportButton->setEnabled(ui::report::canRender());
     m_reportButton->setToolTip(tr("The report of the latest run, written into its folder"));
 }
 
@@ -506,8 +506,8 @@ void CalibrationScreen::showBeforeAfter()
     }
     std::vector<QStringList> rows;
     for (const char* key : kFigureKeys) {
-        const auto b = accuracyfiles::figureByKey(m_previous->evaluation.figures, key);
-        const auto a = accuracyfiles::figureByKey(m_latest->evaluation.figures, key);
+        const auto b = dev::files::accuracy::figureByKey(m_previous->evaluation.figures, key);
+        const auto a = dev::files::accuracy::figureByKey(m_latest->evaluation.figures, key);
         if (!a && !b)
             continue;
         QString gain = QStringLiteral("—");
@@ -527,9 +527,9 @@ void CalibrationScreen::showBeforeAfter()
 
 void CalibrationScreen::writeReport()
 {
-    if (!m_latest || m_latestBasePath.isEmpty() || !report::canRender())
+    if (!m_latest || m_latestBasePath.isEmpty() || !ui::report::canRender())
         return;
-    report::AxisReportInput in;
+    ui::report::AxisReportInput in;
     in.title = tr("Positioning accuracy of axis %1").arg(QString::fromStdString(m_latest->axis));
     in.instrument = cur() ? QStringLiteral("%1 (%2)").arg(cur()->identity().model, cur()->identity().family) : QString();
     in.source = m_latestSource;
@@ -541,7 +541,7 @@ void CalibrationScreen::writeReport()
     in.created = QDateTime::currentDateTime().toString(Qt::ISODate);
     const QString pdf = m_latestBasePath + QStringLiteral(".report.pdf");
     QString error;
-    if (report::writeAxisReport(pdf, in, &error))
+    if (ui::report::writeAxisReport(pdf, in, &error))
         emit notice(tr("Report written: %1").arg(pdf));
     else
         emit problem(error);
@@ -582,7 +582,7 @@ void CalibrationScreen::updateRunUi()
     QString formError = m_form->entryProblem();  // a field's own reason before what its NaN breaks
     for (const auto& p : problems)
         if (p.isError() && formError.isEmpty()) {
-            formError = words::problem(p);
+            formError = ui::words::problem(p);
             break;
         }
     m_formProblems->setText(formError);
@@ -601,14 +601,14 @@ void CalibrationScreen::updateRunUi()
                                 : tr("The readback is what the position loop closes on: it cannot see the work point's error. "
                                      "A gauge or an interferometer at the work point can."));
     const bool resumable = m_runner && m_runOn == m_current
-        && (m_runner->state() == jobs::AccuracyRunner::State::Paused || m_runner->state() == jobs::AccuracyRunner::State::Stopped);
+        && (m_runner->state() == dev::jobs::AccuracyRunner::State::Paused || m_runner->state() == dev::jobs::AccuracyRunner::State::Stopped);
     QString why;
     if (active)
         why = tr("A test is running.");
     else if (m_opening)
         why = tr("Opening the gauge's port…");
     else if (!inst || !inst->isReady())
-        why = inst ? words::text(inst->whyNot(dev::Capability::Homing)) : tr("No instrument.");
+        why = inst ? ui::words::text(inst->whyNot(dev::Capability::Homing)) : tr("No instrument.");
     else if (!formError.isEmpty())
         why = formError;
     m_runButton->setEnabled(why.isEmpty());
@@ -616,7 +616,7 @@ void CalibrationScreen::updateRunUi()
     m_runButton->setToolTip(why.isEmpty() ? tr("Run the test, or go on from where it stopped (Ctrl+R)") : why);
     m_pauseButton->setEnabled(active);
     m_pauseButton->setToolTip(active ? tr("Stop after the reading in progress (Ctrl+P)") : tr("Nothing is running."));
-    m_abortButton->setEnabled(active || (m_runner && m_runner->state() == jobs::AccuracyRunner::State::Paused));
+    m_abortButton->setEnabled(active || (m_runner && m_runner->state() == dev::jobs::AccuracyRunner::State::Paused));
     m_abortButton->setToolTip(m_abortButton->isEnabled() ? tr("Stop the axes now; Run goes on at the next reading later (Ctrl+.)")
                                                          : tr("Nothing is running."));
     const bool axisOnScreen = m_form->kind() == AccuracyTestForm::Kind::Axis;
@@ -632,11 +632,11 @@ void CalibrationScreen::updateRunUi()
         m_progress->setRange(0, std::max(1, total));
         m_progress->setValue(done);
         state = circleActive ? tr("Circle %1 of %2, about %3 left.").arg(std::min(done + 1, total)).arg(total).arg(duration(m_circle->etaS()))
-                             : (m_circle->state() == jobs::CircleRunner::State::Finished ? tr("The circular test is done.") : QString());
+                             : (m_circle->state() == dev::jobs::CircleRunner::State::Finished ? tr("The circular test is done.") : QString());
     } else if (m_runner) {
         m_progress->setRange(0, std::max(1, m_runner->totalReadings()));
         m_progress->setValue(m_runner->readingsTaken());
-        using S = jobs::AccuracyRunner::State;
+        using S = dev::jobs::AccuracyRunner::State;
         switch (m_runner->state()) {
         case S::Running:
         case S::Pausing:
@@ -652,7 +652,7 @@ void CalibrationScreen::updateRunUi()
             state = tr("Stopped after %1 of %2 readings: %3")
                         .arg(m_runner->readingsTaken())
                         .arg(m_runner->totalReadings())
-                        .arg(m_lastProblem.empty() ? QString() : words::text(m_lastProblem));
+                        .arg(m_lastProblem.empty() ? QString() : ui::words::text(m_lastProblem));
             break;
         case S::Finished: state = tr("Done: %1 readings.").arg(m_runner->totalReadings()); break;
         case S::Idle: break;

@@ -382,7 +382,7 @@ void CalibrationScreen::setInstrument(int index)
     QStringList letters;
     if (dev::Instrument* i = cur())
         for (const auto& a : i->identity().axes)
-            if (a.unit == proto::AxisUnit::Millimetre)
+            if (a.unit == dev::proto::AxisUnit::Millimetre)
                 letters << QString(a.letter);
     if (letters.isEmpty())
         letters = {QStringLiteral("X"), QStringLiteral("Y")};
@@ -409,7 +409,7 @@ bool CalibrationScreen::openTest(const QString& path)
         emit problem(tr("A test is running: the test on screen stays until it has finished or been aborted."));
         return false;
     }
-    const auto read = accuracyfiles::loadAccuracyTestFile(path);
+    const auto read = dev::files::accuracy::loadAccuracyTestFile(path);
     if (!read.test) {
         emit problem(tr("The test cannot be opened:\n%1").arg(fileProblemLines(read.problems)));
         return false;
@@ -425,9 +425,9 @@ bool CalibrationScreen::saveTest(const QString& path)
         emit problem(tr("The test is not saved: %1").arg(typed));  // a file never gets a number nobody typed
         return false;
     }
-    msg::Message error;
-    if (!accuracyfiles::saveAccuracyTestFile(path, m_form->test(), &error)) {
-        emit problem(words::text(error));
+    motion::msg::Message error;
+    if (!dev::files::accuracy::saveAccuracyTestFile(path, m_form->test(), &error)) {
+        emit problem(ui::words::text(error));
         return false;
     }
     emit notice(tr("Saved %1.").arg(path));
@@ -442,14 +442,14 @@ void CalibrationScreen::saveCompensation()
     const QString path = choose(FileAction::SaveCompensation, tr("Save the compensation"), tr("Compensations (*.compensation.json)"));
     if (path.isEmpty())
         return;
-    accuracyfiles::CompensationFile file;
+    dev::files::accuracy::CompensationFile file;
     file.model = *model;
     if (const auto* c = m_fit->fit().chosen())
-        file.fit = accuracyfiles::FitRecord{c->order, c->sseUm2, c->r2, c->adjustedR2, static_cast<int>(c->points), m_fit->fit().chosenByOperator};
+        file.fit = dev::files::accuracy::FitRecord{c->order, c->sseUm2, c->r2, c->adjustedR2, static_cast<int>(c->points), m_fit->fit().chosenByOperator};
     file.source = m_latest ? m_latest->readingsFile : std::string();
-    msg::Message error;
-    if (!accuracyfiles::saveCompensationFile(path, file, &error))
-        emit problem(words::text(error));
+    motion::msg::Message error;
+    if (!dev::files::accuracy::saveCompensationFile(path, file, &error))
+        emit problem(ui::words::text(error));
     else
         emit notice(tr("Saved %1.").arg(path));
 }

@@ -32,11 +32,11 @@ class QTableWidget;
 namespace dev {
 class Transport;
 }
-namespace jobs {
+namespace dev::jobs {
 class ReadingSource;
 class ManualSource;
 struct StopContext;
-} // namespace jobs
+} // namespace dev::jobs
 
 namespace ui {
 
@@ -71,8 +71,8 @@ public:
     DeviationPlot* livePlot() const { return m_live; }
     PolarPlot* polarPlot() const { return m_polar; }
     QTabWidget* tabs() const { return m_tabs; }
-    jobs::AccuracyRunner* runner() const { return m_runner.get(); }
-    jobs::CircleRunner* circleRunner() const { return m_circle.get(); }
+    dev::jobs::AccuracyRunner* runner() const { return m_runner.get(); }
+    dev::jobs::CircleRunner* circleRunner() const { return m_circle.get(); }
     /// "readback", "gauge", "manual", "interferometer".
     void setSource(const QString& kind, const QString& port = {});
     QString outputFolder() const;
@@ -92,8 +92,8 @@ public:
     bool enterManual(const QString& text);
 
     /// The latest finished axis test and the one before it (for before/after).
-    const std::optional<accuracyfiles::AccuracyResult>& latest() const { return m_latest; }
-    const std::optional<accuracyfiles::AccuracyResult>& previous() const { return m_previous; }
+    const std::optional<dev::files::accuracy::AccuracyResult>& latest() const { return m_latest; }
+    const std::optional<dev::files::accuracy::AccuracyResult>& previous() const { return m_previous; }
     QString stateText() const;
     QString figuresText() const;  ///< the results table as text (for tests and the clipboard)
 
@@ -105,8 +105,8 @@ signals:
     void notice(const QString& message);
     /// A runner made for a run, about to start on instrument `instrument` (0 analyzer,
     /// 1 stage); it lives until the next run or the screen goes (the API's job board).
-    void accuracyRunStarting(jobs::AccuracyRunner* runner, int instrument);
-    void circleRunStarting(jobs::CircleRunner* runner, int instrument);
+    void accuracyRunStarting(dev::jobs::AccuracyRunner* runner, int instrument);
+    void circleRunStarting(dev::jobs::CircleRunner* runner, int instrument);
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -118,22 +118,22 @@ private:
     QWidget* buildBeforeAfter();
     QWidget* buildCircle();
     dev::Instrument* cur() const;
-    std::unique_ptr<jobs::ReadingSource> makeSource(int axis, QString* error);
+    std::unique_ptr<dev::jobs::ReadingSource> makeSource(int axis, QString* error);
     bool runAxis();
     /// Runs `test` in its newest run folder (going on with a stopped run there), or in `into`.
     /// A finished run there shows its results and offers a new run beside it.
-    bool startAxis(const accuracyfiles::AccuracyTest& test, const QString& into = {});
+    bool startAxis(const dev::files::accuracy::AccuracyTest& test, const QString& into = {});
     bool runCircle();
     void onReading();
     void onAxisFinished();
     void onCircleFinished();
     void chooseAndImportCapture();
-    void adoptAxisResult(const accuracyfiles::AccuracyResult& r, const motion::metrology::AxisTest& test,
-                         const std::vector<motion::metrology::Reading>& readings, const QString& basePath, const msg::Message& source);
-    static QString fileProblemLines(const msg::Problems& problems);
+    void adoptAxisResult(const dev::files::accuracy::AccuracyResult& r, const motion::metrology::AxisTest& test,
+                         const std::vector<motion::metrology::Reading>& readings, const QString& basePath, const motion::msg::Message& source);
+    static QString fileProblemLines(const motion::msg::Problems& problems);
     void showResult();
     void showBeforeAfter();
-    void onManualWanted(const jobs::StopContext& stop);
+    void onManualWanted(const dev::jobs::StopContext& stop);
     void updateRunUi();
     /// Between runs the live plot spans the axis test on screen (found in an Xvfb session:
     /// it showed 0 … 5 mm for a test of 10 … 90 mm until the first reading).
@@ -147,21 +147,21 @@ private:
     QStringList m_names;
     int m_current = 0;
     int m_runOn = -1;
-    std::unique_ptr<jobs::AccuracyRunner> m_runner;
-    std::unique_ptr<jobs::CircleRunner> m_circle;
-    std::unique_ptr<jobs::ReadingSource> m_source;
-    QPointer<jobs::ManualSource> m_manual;
-    std::optional<accuracyfiles::AccuracyResult> m_latest, m_previous;
+    std::unique_ptr<dev::jobs::AccuracyRunner> m_runner;
+    std::unique_ptr<dev::jobs::CircleRunner> m_circle;
+    std::unique_ptr<dev::jobs::ReadingSource> m_source;
+    QPointer<dev::jobs::ManualSource> m_manual;
+    std::optional<dev::files::accuracy::AccuracyResult> m_latest, m_previous;
     std::optional<motion::metrology::AxisTest> m_latestTest;
     std::vector<motion::metrology::Reading> m_latestReadings;
     QString m_latestBasePath;  ///< the latest axis run's files without their endings
-    msg::Message m_latestSource;  ///< how its readings were taken, for its report
+    motion::msg::Message m_latestSource;  ///< how its readings were taken, for its report
     bool m_opening = false;    ///< a run waits for its source (a gauge's port) to open
     std::optional<motion::metrology::CircularEvaluation> m_circleResult;
     FileChooser m_chooser;
     Confirm m_confirm;
     GaugeFactory m_gaugeFactory;
-    msg::Message m_lastProblem;
+    motion::msg::Message m_lastProblem;
 
     QComboBox* m_instrumentBox;
     AccuracyTestForm* m_form;

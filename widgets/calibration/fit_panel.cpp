@@ -145,7 +145,7 @@ void FitPanel::refit()
     std::optional<int> order;
     if (m_order->currentIndex() > 0)
         order = m_order->currentIndex();
-    m_fit = motion::metrology::fitPolynomials(accuracyfiles::fitPointsOf(*m_evaluation), order);
+    m_fit = motion::metrology::fitPolynomials(dev::files::accuracy::fitPointsOf(*m_evaluation), order);
     for (const auto& f : m_fit.orders) {
         const int r = f.order - 1;
         if (r < 0 || r >= 5)
@@ -165,7 +165,7 @@ void FitPanel::refit()
     }
     const auto* chosen = m_fit.chosen();
     if (!chosen) {
-        m_curve->setText(words::problems(m_fit.problems).join(QLatin1Char('\n')));
+        m_curve->setText(ui::words::problems(m_fit.problems).join(QLatin1Char('\n')));
     } else {
         QStringList terms;
         for (std::size_t k = 0; k < chosen->polynomial.coefficientsUm.size(); ++k)
@@ -175,7 +175,7 @@ void FitPanel::refit()
                              .arg(chosen->order)
                              .arg(m_fit.chosenByOperator ? tr(" (your choice)") : tr(" (adjusted R²)"))
                              .arg(terms.join(QStringLiteral(" + ")))
-                             .arg(words::number(motion::metrology::backlashUmFrom(*m_evaluation), msg::Unit::Um)));
+                             .arg(ui::words::number(motion::metrology::backlashUmFrom(*m_evaluation), motion::msg::Unit::Um)));
         double lo = 0, hi = 0;
         for (const auto& t : m_evaluation->targets) {
             const double res = t.meanMm * 1e3 - chosen->polynomial.errorUm(t.targetMm);
@@ -235,7 +235,7 @@ void FitPanel::updateButtons()
 {
     const bool can = m_instrument && m_instrument->can(dev::Capability::Compensation) && m_instrument->compensation() && axisIndex() >= 0;
     const QString why = !m_instrument ? tr("No instrument.")
-        : !m_instrument->can(dev::Capability::Compensation) ? words::text(m_instrument->whyNot(dev::Capability::Compensation))
+        : !m_instrument->can(dev::Capability::Compensation) ? ui::words::text(m_instrument->whyNot(dev::Capability::Compensation))
         : axisIndex() < 0 ? tr("The instrument has no axis %1.").arg(QString::fromStdString(m_axis))
                           : QString();
     QString state;
@@ -277,7 +277,7 @@ void FitPanel::upload()
             return;
         self->m_busy = false;
         if (e)
-            emit self->problem(tr("The instrument refused the compensation: %1").arg(words::text(e->message)));
+            emit self->problem(tr("The instrument refused the compensation: %1").arg(ui::words::text(e->message)));
         else
             emit self->notice(tr("Compensation of %1 uploaded (disabled until you enable it).").arg(QString::fromStdString(self->m_axis)));
         self->refreshDevice();
@@ -297,7 +297,7 @@ void FitPanel::setEnabledOnDevice(bool on)
             return;
         self->m_busy = false;
         if (e)
-            emit self->problem(tr("The instrument refused: %1").arg(words::text(e->message)));
+            emit self->problem(tr("The instrument refused: %1").arg(ui::words::text(e->message)));
         self->refreshDevice();
         emit self->deviceChanged();
     });

@@ -257,7 +257,7 @@ void AccuracyTestForm::setAxes(const QStringList& letters)
     m_axis->setCurrentIndex(i >= 0 ? i : 0);
 }
 
-accuracyfiles::AccuracyTest AccuracyTestForm::test() const
+dev::files::accuracy::AccuracyTest AccuracyTestForm::test() const
 {
     switch (kind()) {
     case Kind::Axis: {
@@ -311,7 +311,7 @@ accuracyfiles::AccuracyTest AccuracyTestForm::test() const
     return t;
 }
 
-void AccuracyTestForm::setTest(const accuracyfiles::AccuracyTest& test)
+void AccuracyTestForm::setTest(const dev::files::accuracy::AccuracyTest& test)
 {
     {
         // One changed() for the whole definition, not one a field (and none mid-way).
@@ -321,7 +321,7 @@ void AccuracyTestForm::setTest(const accuracyfiles::AccuracyTest& test)
     emit changed();
 }
 
-void AccuracyTestForm::fill(const accuracyfiles::AccuracyTest& test)
+void AccuracyTestForm::fill(const dev::files::accuracy::AccuracyTest& test)
 {
     m_name = std::visit([](const auto& t) { return t.name; }, test);
     if (const auto* a = std::get_if<AxisTest>(&test)) {
@@ -380,7 +380,7 @@ void AccuracyTestForm::fill(const accuracyfiles::AccuracyTest& test)
 
 QString AccuracyTestForm::entryProblem() const { return NumberField::firstProblemUnder(m_pages->currentWidget()); }
 
-msg::Problems AccuracyTestForm::problems() const
+motion::msg::Problems AccuracyTestForm::problems() const
 {
     return std::visit([](const auto& t) { return motion::metrology::validate(t); }, test());
 }

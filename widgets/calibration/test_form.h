@@ -30,11 +30,11 @@ public:
     explicit AccuracyTestForm(QWidget* parent = nullptr);
 
     Kind kind() const;
-    accuracyfiles::AccuracyTest test() const;
-    void setTest(const accuracyfiles::AccuracyTest& test);
+    dev::files::accuracy::AccuracyTest test() const;
+    void setTest(const dev::files::accuracy::AccuracyTest& test);
     /// Axis letters the instrument has (the axis combo offers these).
     void setAxes(const QStringList& letters);
-    msg::Problems problems() const;
+    motion::msg::Problems problems() const;
     /// The first typed number that is not valid ("Feed (mm/s) must be at least 0.01, not -5"),
     /// empty when every shown field holds a number: the run waits for it.
     QString entryProblem() const;
@@ -49,7 +49,7 @@ protected:
 
 private:
     void retranslateUi();
-    void fill(const accuracyfiles::AccuracyTest& test);
+    void fill(const dev::files::accuracy::AccuracyTest& test);
     QWidget* buildAxisPage();
     QWidget* buildXyPage();
     QWidget* buildCirclePage();

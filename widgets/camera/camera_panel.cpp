@@ -185,11 +185,11 @@ bool CameraPanel::snapTo(const QString& path)
     disconnect(m_snapCaptured);
     disconnect(m_snapFailed);
     m_snapCaptured = connect(cam, &dev::camera::Camera::captured, this, &CameraPanel::onCaptured);
-    m_snapFailed = connect(cam, &dev::camera::Camera::failed, this, [this](std::uint64_t id, const msg::Problem& p) {
+    m_snapFailed = connect(cam, &dev::camera::Camera::failed, this, [this](std::uint64_t id, const motion::msg::Problem& p) {
         if (id == 0 || id != m_snapId)
             return;
         m_snapId = 0;
-        emit problem(tr("The snap was not taken: %1").arg(words::problem(p)));
+        emit problem(tr("The snap was not taken: %1").arg(ui::words::problem(p)));
         updateUi();
     });
     dev::camera::CaptureRequest request;
@@ -219,10 +219,10 @@ void CameraPanel::onCaptured(std::uint64_t id, const dev::camera::Frame& frame)
     QPointer<CameraPanel> self(this);
     // Encoding a large image takes long enough to stutter the screen: a worker writes it.
     QThreadPool::globalInstance()->start([self, frame, path, meta] {
-        msg::Message problem;
+        motion::msg::Message problem;
         const bool ok = dev::camera::writeTileTiff(path.toStdString(), frame, meta, nullptr, &problem);
         QMetaObject::invokeMethod(qApp, [self, path, ok, problem] {
-            const QString error = ok ? QString() : words::text(problem);
+            const QString error = ok ? QString() : ui::words::text(problem);
             if (!self)
                 return;
             if (!error.isEmpty()) {

@@ -23,8 +23,8 @@ QStringList CameraSession::availableSources() const
 QString CameraSession::sourceProblem(const QString& source)
 {
     dev::camera::SourceSpec spec;
-    msg::Message error;
-    return dev::camera::parseSource(source.trimmed().toStdString(), &spec, &error) ? QString() : words::text(error);
+    motion::msg::Message error;
+    return dev::camera::parseSource(source.trimmed().toStdString(), &spec, &error) ? QString() : ui::words::text(error);
 }
 
 bool CameraSession::open(const QString& source)
@@ -61,12 +61,12 @@ bool CameraSession::open(const QString& source)
     });
     connect(cam, &dev::camera::Camera::closed, this, [this] { emit stateChanged(); });
     connect(cam, &dev::camera::Camera::liveFrame, this, &CameraSession::liveFrame);
-    connect(cam, &dev::camera::Camera::failed, this, [this, cam](std::uint64_t requestId, const msg::Problem& p) {
+    connect(cam, &dev::camera::Camera::failed, this, [this, cam](std::uint64_t requestId, const motion::msg::Problem& p) {
         if (requestId != 0)
             return;  // a capture's failure is its asker's to tell
         const bool wasOpening = m_opening;
         m_opening = false;
-        emit problem(tr("Camera %1: %2").arg(cam->source(), words::problem(p)));
+        emit problem(tr("Camera %1: %2").arg(cam->source(), ui::words::problem(p)));
         if (wasOpening)
             emit stateChanged();
     });

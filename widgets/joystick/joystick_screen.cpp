@@ -124,7 +124,7 @@ JoystickScreen::JoystickScreen(dev::Instrument* client, QWidget* parent)
     connect(m_client, &dev::Instrument::limitsChanged, this, &JoystickScreen::refresh);
     connect(m_client, &dev::Instrument::eventReceived, this, [this](const dev::DeviceEvent& e) {
         // Homing sets the coordinates' origin: a trail drawn in the old ones means nothing now.
-        if (e.kind == proto::EventKind::HomeDone)
+        if (e.kind == dev::proto::EventKind::HomeDone)
             m_travel->clearTrail();
     });
     connect(m_client, &dev::Instrument::stateChanged, this, [this](dev::LinkState s) {
@@ -161,7 +161,7 @@ void JoystickScreen::rebuild()
 {
     stopAll();
     const auto& id = m_client->identity();
-    m_title->setText(id.axes.isEmpty() ? tr("No instrument") : tr("%1 — joystick").arg(words::modelName(id)));
+    m_title->setText(id.axes.isEmpty() ? tr("No instrument") : tr("%1 — joystick").arg(ui::words::modelName(id)));
     m_zAxis = id.axisIndex(QLatin1Char('Z'));
     m_z->setVisible(m_zAxis >= 0);
     m_zLabel->setVisible(m_zAxis >= 0);
@@ -185,7 +185,7 @@ void JoystickScreen::refresh()
     const bool ready = m_client->isReady();
     const auto& st = m_client->status();
     const auto& id = m_client->identity();
-    QString state = words::term(dev::linkStateTerm(m_client->state()));
+    QString state = ui::words::term(dev::linkStateTerm(m_client->state()));
     if (ready && st.estop)
         state = tr("E-STOP active — press Reset E-stop to clear");
     m_state->setText(state);
@@ -203,7 +203,7 @@ void JoystickScreen::refresh()
         return;
     QString rows;
     for (int i = 0; i < id.axes.size() && i < st.axes.size(); ++i) {
-        if (id.axes[i].unit != proto::AxisUnit::Millimetre)
+        if (id.axes[i].unit != dev::proto::AxisUnit::Millimetre)
             continue;
         rows += tr("<tr><td><b>%1</b></td><td align=right>%2</td><td align=right>%3</td><td>%4</td></tr>")
                     .arg(id.axes[i].letter)
@@ -211,7 +211,7 @@ void JoystickScreen::refresh()
                     .arg(!ready ? QString() : st.axes[i].homed ? QString() : tr("not homed"));
     }
     m_readout->setText(tr("<table cellspacing=6><tr><td></td><td>commanded</td><td>%1</td><td></td></tr>%2</table>")
-                           .arg(id.kind == proto::DeviceKind::Stage ? tr("grating") : tr("encoder"), rows));
+                           .arg(id.kind == dev::proto::DeviceKind::Stage ? tr("grating") : tr("encoder"), rows));
     // Without a live link the positions are the last ones read: greyed and said so.
     m_readout->setStyleSheet(ready ? QString() : QStringLiteral("color:#9e9e9e;"));
     m_readout->setToolTip(ready ? QString() : tr("The last positions read before the link went down, not where the axes are now"));

@@ -338,7 +338,7 @@ void PatternForm::showProblems()
     QStringList lines;
     if (const QString typed = entryProblem(); !typed.isEmpty())
         lines << typed;
-    lines << words::problems(motion::plans::validate(pattern()));
+    lines << ui::words::problems(motion::plans::validate(pattern()));
     m_problems->setText(lines.join(QLatin1Char('\n')));
 }
 

@@ -28,11 +28,11 @@
 
 namespace ui {
 
-using jobs::PatternRunner;
+using dev::jobs::PatternRunner;
 
-using words::duration;
+using ui::words::duration;
 
-PatternScreen::PatternScreen(QVector<PatternInstrument> instruments, tele::TelemetryHub* hub, QWidget* parent)
+PatternScreen::PatternScreen(QVector<PatternInstrument> instruments, dev::tele::TelemetryHub* hub, QWidget* parent)
     : QWidget(parent), m_instruments(std::move(instruments)), m_hub(hub)
 {
     auto* h = new QHBoxLayout(this);
@@ -213,22 +213,22 @@ PatternScreen::PatternScreen(QVector<PatternInstrument> instruments, tele::Telem
             if (i == m_runOn)
                 onProgress(d, t);
         });
-        connect(r, &PatternRunner::message, this, [this, i](const msg::Message& m, bool isProblem) {
+        connect(r, &PatternRunner::message, this, [this, i](const motion::msg::Message& m, bool isProblem) {
             if (i != m_runOn)
                 return;
-            const QString text = words::text(m);
+            const QString text = ui::words::text(m);
             m_status->setText(text);
             if (isProblem)
                 emit problem(QStringLiteral("%1: %2").arg(m_instruments[i].name, text));
         });
-        connect(r, &PatternRunner::sampleAdded, this, [this, i](const jobs::PatternRunSample& s) {
+        connect(r, &PatternRunner::sampleAdded, this, [this, i](const dev::jobs::PatternRunSample& s) {
             if (i != m_runOn)
                 return;
             m_preview->addRunPoint(s.commanded, s.measured);
             m_contour->addSample(s.pathMm, s.contourMm);
             showRunning();
         });
-        connect(r, &PatternRunner::finished, this, [this, i](const jobs::PatternRunSummary& s) {
+        connect(r, &PatternRunner::finished, this, [this, i](const dev::jobs::PatternRunSummary& s) {
             if (i != m_runOn)
                 return;
             m_summary->setText(runSummaryText(s, densityOf(*m_instruments[i].runner)));
@@ -239,7 +239,7 @@ PatternScreen::PatternScreen(QVector<PatternInstrument> instruments, tele::Telem
         });
     }
     if (m_hub)
-        connect(m_hub, &tele::TelemetryHub::dataArrived, this, &PatternScreen::onData);
+        connect(m_hub, &dev::tele::TelemetryHub::dataArrived, this, &PatternScreen::onData);
     setInstrument(0);
     m_form->setPattern(motion::plans::Pattern{});
     replan();
@@ -252,23 +252,23 @@ PatternScreen::~PatternScreen()
         m_hub->setWanted(QStringLiteral("patterns"), {}, 0);
 }
 
-jobs::PatternRunner* PatternScreen::runner() const { return cur().runner; }
+dev::jobs::PatternRunner* PatternScreen::runner() const { return cur().runner; }
 QString PatternScreen::statusText() const { return m_status->text(); }
 QString PatternScreen::summaryText() const { return m_summary->text(); }
 
-motion::path::SampleDensity PatternScreen::densityOf(const jobs::PatternRunner& runner)
+motion::path::SampleDensity PatternScreen::densityOf(const dev::jobs::PatternRunner& runner)
 {
     std::vector<double> along, times;
     along.reserve(runner.samples().size());
     times.reserve(runner.samples().size());
-    for (const jobs::PatternRunSample& s : runner.samples()) {
+    for (const dev::jobs::PatternRunSample& s : runner.samples()) {
         along.push_back(s.pathMm);
         times.push_back(s.tS);
     }
     return motion::path::judgeSampleDensity(runner.path(), along, times, runner.summary().maxContourMm);
 }
 
-QString PatternScreen::runSummaryText(const jobs::PatternRunSummary& s, const motion::path::SampleDensity& d)
+QString PatternScreen::runSummaryText(const dev::jobs::PatternRunSummary& s, const motion::path::SampleDensity& d)
 {
     QString text = tr("<b>Contour error</b> max %1 µm (at %2 mm), RMS %3 µm · <b>time</b> %4 · %5 samples at %6 Hz%7")
                        .arg(s.maxContourMm * 1e3, 0, 'f', 2)
@@ -358,7 +358,7 @@ void PatternScreen::replan()
     if (lim.size() >= 2) {
         if (auto v = motion::plans::outsideLimits(m_path, {lim[0].min, lim[1].min, lim[0].max, lim[1].max}))
             text += QStringLiteral("<br><span style='color:#b71c1c'>%1</span>")
-                        .arg(tr("Leaves the soft limits: %1").arg(words::text(v->message)));
+                        .arg(tr("Leaves the soft limits: %1").arg(ui::words::text(v->message)));
     }
     m_estimate->setText(text);
     updateButtons();
@@ -372,11 +372,11 @@ void PatternScreen::updateButtons()
     const bool busy = r->busy();
     // Disabled with its reason when the instrument cannot run paths at all (not connected,
     // or a device without a path queue).
-    const msg::Message why = cur().client->whyNot(dev::Capability::PathQueue);
+    const motion::msg::Message why = cur().client->whyNot(dev::Capability::PathQueue);
     const dev::PathClient* paths = cur().client->paths();
     const bool canRun = why.empty() && paths && paths->available();
     m_run->setEnabled(!busy && !m_path.empty() && canRun && !cur().client->status().estop);
-    m_run->setToolTip(why.empty() ? tr("Move to the pattern's start, then run it (F5)") : words::text(why));
+    m_run->setToolTip(why.empty() ? tr("Move to the pattern's start, then run it (F5)") : ui::words::text(why));
     m_pause->setEnabled(mine && (st == PatternRunner::State::Running || st == PatternRunner::State::Paused
                                  || st == PatternRunner::State::Interrupted || st == PatternRunner::State::Approaching));
     const QString pauseText = mine && (st == PatternRunner::State::Paused || st == PatternRunner::State::Interrupted)
@@ -402,11 +402,11 @@ bool PatternScreen::run()
     PatternRunner* r = cur().runner;
     if (r->busy() || m_path.empty())
         return false;
-    jobs::PatternRunner::Options o;
+    dev::jobs::PatternRunner::Options o;
     o.zMm = m_form->pattern().zMm;
     QStringList problems;
-    for (const msg::Message& m : r->preflight(m_path, o))
-        problems << words::text(m);
+    for (const motion::msg::Message& m : r->preflight(m_path, o))
+        problems << ui::words::text(m);
     if (!problems.isEmpty()) {
         m_status->setText(problems.join(QLatin1Char('\n')));
         emit problem(QStringLiteral("%1: %2").arg(cur().name, problems.join(QLatin1Char(' '))));
@@ -466,7 +466,7 @@ void PatternScreen::abort()
 
 void PatternScreen::onRunnerState(PatternRunner::State s)
 {
-    QString text = words::term(PatternRunner::stateTerm(s));
+    QString text = ui::words::term(PatternRunner::stateTerm(s));
     if (s == PatternRunner::State::Approaching)
         text = tr("Moving to the start…");
     if (s != PatternRunner::State::Interrupted && s != PatternRunner::State::Failed)
@@ -505,10 +505,10 @@ void PatternScreen::wantTelemetry(bool want)
         return;
     }
     const int i = m_instruments[m_runOn].hubIndex;
-    QVector<tele::ChannelKey> keys;
+    QVector<dev::tele::ChannelKey> keys;
     for (std::uint8_t axis : {std::uint8_t(0), std::uint8_t(1)})
-        for (auto kind : {proto::ChannelKind::Commanded, proto::ChannelKind::Measured})
-            keys << tele::ChannelKey{i, {axis, kind}};
+        for (auto kind : {dev::proto::ChannelKind::Commanded, dev::proto::ChannelKind::Measured})
+            keys << dev::tele::ChannelKey{i, {axis, kind}};
     m_hub->setWanted(QStringLiteral("patterns"), keys, kTelemetryHz);
 }
 
@@ -516,17 +516,17 @@ void PatternScreen::onData(int hubIndex)
 {
     if (m_runOn < 0 || !m_hub || hubIndex != m_instruments[m_runOn].hubIndex)
         return;
-    auto store = [&](std::uint8_t axis, proto::ChannelKind k) { return m_hub->store({hubIndex, {axis, k}}); };
-    const tele::ChannelStore* xm = store(0, proto::ChannelKind::Measured);
-    const tele::ChannelStore* ym = store(1, proto::ChannelKind::Measured);
-    const tele::ChannelStore* xc = store(0, proto::ChannelKind::Commanded);
-    const tele::ChannelStore* yc = store(1, proto::ChannelKind::Commanded);
+    auto store = [&](std::uint8_t axis, dev::proto::ChannelKind k) { return m_hub->store({hubIndex, {axis, k}}); };
+    const dev::tele::ChannelStore* xm = store(0, dev::proto::ChannelKind::Measured);
+    const dev::tele::ChannelStore* ym = store(1, dev::proto::ChannelKind::Measured);
+    const dev::tele::ChannelStore* xc = store(0, dev::proto::ChannelKind::Commanded);
+    const dev::tele::ChannelStore* yc = store(1, dev::proto::ChannelKind::Commanded);
     if (!xm || !ym || !xc || !yc || xm->empty())
         return;
     PatternRunner* r = m_instruments[m_runOn].runner;
     // Every sample newer than the last one handed on; the four channels share their sample times.
     for (std::size_t k = m_lastSampleS < 0 ? 0 : xm->lowerBound(m_lastSampleS + 1e-7); k < xm->size(); ++k) {
-        const tele::Sample x = xm->at(k);
+        const dev::tele::Sample x = xm->at(k);
         const auto y = ym->nearest(x.tS), cx = xc->nearest(x.tS), cy = yc->nearest(x.tS);
         if (!y || !cx || !cy)
             continue;
@@ -542,11 +542,11 @@ bool PatternScreen::exportRun(const QString& path, QString* error)
             *error = tr("There is no run to export yet.");
         return false;
     }
-    msg::Message why;
-    if (files::savePatternRunCsv(path, m_instruments[m_runOn].runner->samples(), &why))
+    motion::msg::Message why;
+    if (dev::files::savePatternRunCsv(path, m_instruments[m_runOn].runner->samples(), &why))
         return true;
     if (error)
-        *error = words::text(why);
+        *error = ui::words::text(why);
     return false;
 }
 
@@ -557,11 +557,11 @@ bool PatternScreen::savePattern(const QString& path, QString* error)
             *error = typed;  // a file never gets a number nobody typed
         return false;
     }
-    msg::Message why;
-    if (files::savePatternFile(path, m_form->pattern(), &why))
+    motion::msg::Message why;
+    if (dev::files::savePatternFile(path, m_form->pattern(), &why))
         return true;
     if (error)
-        *error = words::text(why);
+        *error = ui::words::text(why);
     return false;
 }
 
@@ -574,10 +574,10 @@ bool PatternScreen::loadPattern(const QString& path, QString* error)
         return false;
     }
     motion::plans::Pattern p;
-    jsonio::Problems problems;
-    if (!files::loadPatternFile(path, &p, &problems)) {
+    dev::files::json::Problems problems;
+    if (!dev::files::loadPatternFile(path, &p, &problems)) {
         if (error)
-            *error = words::fileProblems(problems, QFileInfo(path).fileName()).join(QLatin1Char('\n'));
+            *error = ui::words::fileProblems(problems, QFileInfo(path).fileName()).join(QLatin1Char('\n'));
         return false;
     }
     setPattern(p);

@@ -24,7 +24,7 @@ class QLabel;
 class QProgressBar;
 class QPushButton;
 
-namespace tele {
+namespace dev::tele {
 class TelemetryHub;
 }
 
@@ -38,7 +38,7 @@ class PatternPreview;
 struct PatternInstrument {
     QString name;
     dev::Instrument* client = nullptr;  ///< its paths() run the patterns
-    jobs::PatternRunner* runner = nullptr;
+    dev::jobs::PatternRunner* runner = nullptr;
     int hubIndex = 0;  ///< the instrument's index in the telemetry hub
 };
 
@@ -51,13 +51,13 @@ public:
     static constexpr double kFarMoveShare = 0.25;  ///< an approach longer than this share of the travel asks first
     static constexpr int kTelemetryHz = 250;
 
-    PatternScreen(QVector<PatternInstrument> instruments, tele::TelemetryHub* hub, QWidget* parent = nullptr);
+    PatternScreen(QVector<PatternInstrument> instruments, dev::tele::TelemetryHub* hub, QWidget* parent = nullptr);
     /// The run's figures as the screen words them: the contour error, how many samples it
     /// rests on and at what rate, and a warning when they are too few for the figure
     /// (motion/path/sample_density.h).
-    static QString runSummaryText(const jobs::PatternRunSummary& summary, const motion::path::SampleDensity& density);
+    static QString runSummaryText(const dev::jobs::PatternRunSummary& summary, const motion::path::SampleDensity& density);
     /// How densely a runner's samples cover its path.
-    static motion::path::SampleDensity densityOf(const jobs::PatternRunner& runner);
+    static motion::path::SampleDensity densityOf(const dev::jobs::PatternRunner& runner);
     ~PatternScreen() override;
     void setConfirm(Confirm c) { m_confirm = std::move(c); }
     /// Asked before the long approach instead of Confirm (app/ offers "don't ask again this
@@ -83,7 +83,7 @@ public:
     PatternForm* form() const { return m_form; }
     PatternPreview* preview() const { return m_preview; }
     ContourPlot* contour() const { return m_contour; }
-    jobs::PatternRunner* runner() const;
+    dev::jobs::PatternRunner* runner() const;
     QString statusText() const;
     QString summaryText() const;
 
@@ -99,7 +99,7 @@ private:
     void replan();
     void refreshLimits();
     void updateButtons();
-    void onRunnerState(jobs::PatternRunner::State s);
+    void onRunnerState(dev::jobs::PatternRunner::State s);
     void showRunning();
     void onProgress(std::size_t done, std::size_t total);
     void onData(int hubIndex);
@@ -107,7 +107,7 @@ private:
     bool confirm(const QString& q) const { return !m_confirm || m_confirm(q); }
 
     QVector<PatternInstrument> m_instruments;
-    QPointer<tele::TelemetryHub> m_hub;
+    QPointer<dev::tele::TelemetryHub> m_hub;
     int m_current = 0;
     int m_runOn = -1;              ///< instrument the last run was started on
     Confirm m_confirm;

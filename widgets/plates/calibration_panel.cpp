@@ -37,8 +37,8 @@ CalibrationPanel::CalibrationPanel(dev::Instrument* client, QWidget* parent) : Q
     top->addSpacing(12);
     top->addWidget(new QLabel(tr("Fit"), this));
     m_model = new QComboBox(this);
-    m_model->addItem(tr("offset, rotation, scale"), static_cast<int>(plates::FitModel::Similarity));
-    m_model->addItem(tr("offset, rotation, scale per axis"), static_cast<int>(plates::FitModel::ScaledAxes));
+    m_model->addItem(tr("offset, rotation, scale"), static_cast<int>(motion::plates::FitModel::Similarity));
+    m_model->addItem(tr("offset, rotation, scale per axis"), static_cast<int>(motion::plates::FitModel::ScaledAxes));
     m_model->setToolTip(tr("Three points fit any affine map exactly, so a restricted model is fitted by least squares: its residual "
                            "shows a well taught off centre. One scale (the default) leaves two checks; a scale per axis leaves one."));
     top->addWidget(m_model);
@@ -113,20 +113,20 @@ void CalibrationPanel::changeEvent(QEvent* event)
     for (int i = 0; i < m_slot->count(); ++i)
         for (const auto& s : m_deck.plateSlots)
             if (m_slot->itemData(i).toString() == QString::fromStdString(s.id))
-                m_slot->setItemText(i, QStringLiteral("%1 (%2)").arg(QString::fromStdString(s.id), words::shippedName(s.name)));
+                m_slot->setItemText(i, QStringLiteral("%1 (%2)").arg(QString::fromStdString(s.id), ui::words::shippedName(s.name)));
 }
 
-void CalibrationPanel::setDeck(const plates::Deck& deck)
+void CalibrationPanel::setDeck(const motion::plates::Deck& deck)
 {
     m_deck = deck;
     const QString keep = slotId();
     m_slot->clear();
     for (const auto& s : deck.plateSlots)
-        m_slot->addItem(QStringLiteral("%1 (%2)").arg(QString::fromStdString(s.id), words::shippedName(s.name)), QString::fromStdString(s.id));
+        m_slot->addItem(QStringLiteral("%1 (%2)").arg(QString::fromStdString(s.id), ui::words::shippedName(s.name)), QString::fromStdString(s.id));
     setSlot(keep);
 }
 
-void CalibrationPanel::setSlotLabware(const std::map<std::string, plates::Labware>& bySlot, const std::map<std::string, double>& safeZBySlot)
+void CalibrationPanel::setSlotLabware(const std::map<std::string, motion::plates::Labware>& bySlot, const std::map<std::string, double>& safeZBySlot)
 {
     // Every edit of the recipe comes here: keep the points taught so far unless
     // what stands in the slot being taught has changed.
@@ -141,7 +141,7 @@ void CalibrationPanel::setSlotLabware(const std::map<std::string, plates::Labwar
         rebuild();
 }
 
-void CalibrationPanel::setCalibrations(const std::vector<plates::SlotCalibration>& calibrations)
+void CalibrationPanel::setCalibrations(const std::vector<motion::plates::SlotCalibration>& calibrations)
 {
     m_calibrations = calibrations;
     rebuild();
@@ -156,29 +156,29 @@ void CalibrationPanel::setSlot(const QString& id)
     rebuild();
 }
 
-const plates::Labware* CalibrationPanel::labware() const
+const motion::plates::Labware* CalibrationPanel::labware() const
 {
-    static const plates::Labware fallback = *plates::findBuiltinLabware("sbs-96");
+    static const motion::plates::Labware fallback = *motion::plates::findBuiltinLabware("sbs-96");
     const auto it = m_bySlot.find(slotId().toStdString());
     return it != m_bySlot.end() ? &it->second : &fallback;
 }
 
-plates::PlateTransform CalibrationPanel::currentTransform() const
+motion::plates::PlateTransform CalibrationPanel::currentTransform() const
 {
     for (const auto& c : m_calibrations)
         if (c.slot == slotId().toStdString())
             return c.fit.transform;
-    const plates::Slot* s = m_deck.slot(slotId().toStdString());
-    return s ? s->nominal() : plates::PlateTransform{};
+    const motion::plates::Slot* s = m_deck.slot(slotId().toStdString());
+    return s ? s->nominal() : motion::plates::PlateTransform{};
 }
 
 void CalibrationPanel::rebuild()
 {
-    const plates::Labware* lw = labware();
-    m_points = plates::teachWells(*lw);
+    const motion::plates::Labware* lw = labware();
+    m_points = motion::plates::teachWells(*lw);
     m_recorded.assign(m_points.size(), false);
     m_fit.reset();
-    const plates::SlotCalibration* kept = nullptr;
+    const motion::plates::SlotCalibration* kept = nullptr;
     for (const auto& c : m_calibrations)
         if (c.slot == slotId().toStdString())
             kept = &c;
@@ -188,10 +188,10 @@ void CalibrationPanel::rebuild()
                            : tr("Slot %1 is not calibrated: recipes use its nominal place. Teach it on a %2.")
                                  .arg(slotId(), QString::fromStdString(lw->describe())));
     m_table->setRowCount(static_cast<int>(m_points.size()));
-    const plates::PlateTransform t = currentTransform();
+    const motion::plates::PlateTransform t = currentTransform();
     for (int r = 0; r < static_cast<int>(m_points.size()); ++r) {
         const auto& p = m_points[static_cast<std::size_t>(r)];
-        const plates::PointMm e = t.apply(p.plateMm);
+        const motion::plates::PointMm e = t.apply(p.plateMm);
         m_table->setItem(r, 0, new QTableWidgetItem(QString::fromStdString(p.well)));
         m_table->setItem(r, 1, new QTableWidgetItem(QStringLiteral("%1, %2").arg(mm(e.x), mm(e.y))));
         m_table->setItem(r, 2, new QTableWidgetItem(tr("—")));
@@ -226,7 +226,7 @@ void CalibrationPanel::goTo(int index)
         emit problem(tr("home the analyzer before teaching: the wells' places are absolute"));
         return;
     }
-    const plates::PointMm at = currentTransform().apply(m_points[static_cast<std::size_t>(index)].plateMm);
+    const motion::plates::PointMm at = currentTransform().apply(m_points[static_cast<std::size_t>(index)].plateMm);
     const auto safe = m_safeZ.find(slotId().toStdString());
     const double z = std::min(st.axes[iz].commanded, safe != m_safeZ.end() ? safe->second : 0.0);
     const double far = std::hypot(at.x - st.axes[ix].commanded, at.y - st.axes[iy].commanded);
@@ -241,7 +241,7 @@ void CalibrationPanel::goTo(int index)
         if (e.axis != iz)
             return;
         disconnect(*conn);
-        if (e.kind == proto::EventKind::MotionDone)
+        if (e.kind == dev::proto::EventKind::MotionDone)
             m_client->move({{ix, at.x}, {iy, at.y}}, false);
     });
     m_client->move({{iz, z}}, false, 0, [conn](const std::optional<dev::RequestError>& err) {
@@ -280,18 +280,18 @@ void CalibrationPanel::refit()
             return;
     if (m_points.empty())
         return;
-    msg::Message error;
-    const plates::Slot* slot = m_deck.slot(slotId().toStdString());
-    const auto model = static_cast<plates::FitModel>(m_model->currentData().toInt());
-    m_fit = plates::fitCalibration(m_points, model, &error, slot ? slot->rotationDeg : 0);
+    motion::msg::Message error;
+    const motion::plates::Slot* slot = m_deck.slot(slotId().toStdString());
+    const auto model = static_cast<motion::plates::FitModel>(m_model->currentData().toInt());
+    m_fit = motion::plates::fitCalibration(m_points, model, &error, slot ? slot->rotationDeg : 0);
     if (!m_fit) {
-        m_result->setText(tr("No fit: %1").arg(words::text(error)));
+        m_result->setText(tr("No fit: %1").arg(ui::words::text(error)));
         return;
     }
     for (int r = 0; r < static_cast<int>(m_points.size()); ++r) {
         const double res = m_fit->residualMm[static_cast<std::size_t>(r)];
         m_table->item(r, 3)->setText(mm(res));
-        m_table->item(r, 3)->setForeground(res > plates::kResidualWarnMm ? QColor(0xc6, 0x28, 0x28) : QColor(0x2e, 0x7d, 0x32));
+        m_table->item(r, 3)->setForeground(res > motion::plates::kResidualWarnMm ? QColor(0xc6, 0x28, 0x28) : QColor(0x2e, 0x7d, 0x32));
     }
     m_result->setText(tr("Offset (%1, %2) mm, rotation %3°, scale %4 × %5; residual largest %6 mm, rms %7 mm (warning above %8 mm).")
                           .arg(mm(m_fit->transform.txMm), mm(m_fit->transform.tyMm))
@@ -300,10 +300,10 @@ void CalibrationPanel::refit()
                           .arg(m_fit->scaleY, 0, 'f', 5)
                           .arg(m_fit->maxResidualMm, 0, 'f', 3)
                           .arg(m_fit->rmsResidualMm, 0, 'f', 3)
-                          .arg(plates::kResidualWarnMm));
+                          .arg(motion::plates::kResidualWarnMm));
     QStringList w;
     for (const auto& s : m_fit->warnings)
-        w << words::text(s);
+        w << ui::words::text(s);
     m_warnings->setText(w.join(QLatin1Char('\n')));
     m_save->setEnabled(true);
 }
@@ -312,7 +312,7 @@ bool CalibrationPanel::saveSlot()
 {
     if (!m_fit)
         return false;
-    plates::SlotCalibration c;
+    motion::plates::SlotCalibration c;
     c.slot = slotId().toStdString();
     c.labware = labware()->id;
     c.model = m_fit->model;

@@ -29,18 +29,18 @@ public:
 
     explicit CalibrationPanel(dev::Instrument* client, QWidget* parent = nullptr);
     void setConfirm(Confirm confirm) { m_confirm = std::move(confirm); }
-    void setDeck(const plates::Deck& deck);
+    void setDeck(const motion::plates::Deck& deck);
     /// What sits in each slot (from the recipe) and the Z to travel at there.
-    void setSlotLabware(const std::map<std::string, plates::Labware>& bySlot, const std::map<std::string, double>& safeZBySlot);
-    void setCalibrations(const std::vector<plates::SlotCalibration>& calibrations);
-    const std::vector<plates::SlotCalibration>& calibrations() const { return m_calibrations; }
+    void setSlotLabware(const std::map<std::string, motion::plates::Labware>& bySlot, const std::map<std::string, double>& safeZBySlot);
+    void setCalibrations(const std::vector<motion::plates::SlotCalibration>& calibrations);
+    const std::vector<motion::plates::SlotCalibration>& calibrations() const { return m_calibrations; }
 
     QString slotId() const;
     void setSlot(const QString& id);
     /// Records the tip's position as teach point `index` (0–2), as the button does.
     void recordPoint(int index);
     /// The fit of the points taught so far (empty before three).
-    const std::optional<plates::CalibrationFit>& fit() const { return m_fit; }
+    const std::optional<motion::plates::CalibrationFit>& fit() const { return m_fit; }
     /// Keeps the fit for the slot (as "Save calibration" does); false without a fit.
     bool saveSlot();
 
@@ -49,25 +49,25 @@ signals:
     void problem(const QString& message);
 
 protected:
-    /// The shipped deck's slot names are worded per language (words::shippedName).
+    /// The shipped deck's slot names are worded per language (ui::words::shippedName).
     void changeEvent(QEvent* event) override;
 
 private:
     void rebuild();
     void refit();
     void goTo(int index);
-    const plates::Labware* labware() const;
-    plates::PlateTransform currentTransform() const;
+    const motion::plates::Labware* labware() const;
+    motion::plates::PlateTransform currentTransform() const;
 
     dev::Instrument* m_client;
     Confirm m_confirm;
-    plates::Deck m_deck;
-    std::map<std::string, plates::Labware> m_bySlot;
+    motion::plates::Deck m_deck;
+    std::map<std::string, motion::plates::Labware> m_bySlot;
     std::map<std::string, double> m_safeZ;
-    std::vector<plates::SlotCalibration> m_calibrations;
-    std::vector<plates::TeachPoint> m_points;
+    std::vector<motion::plates::SlotCalibration> m_calibrations;
+    std::vector<motion::plates::TeachPoint> m_points;
     std::vector<bool> m_recorded;
-    std::optional<plates::CalibrationFit> m_fit;
+    std::optional<motion::plates::CalibrationFit> m_fit;
     QComboBox* m_slot;
     QComboBox* m_model;
     QLabel* m_status;

@@ -33,7 +33,7 @@ QColor PlateMap::colorOf(WellState s)
     return Qt::white;
 }
 
-void PlateMap::setLabware(const plates::Labware& labware, const QString& title)
+void PlateMap::setLabware(const motion::plates::Labware& labware, const QString& title)
 {
     m_labware = labware;
     m_title = title;
@@ -52,7 +52,7 @@ void PlateMap::setTitle(const QString& title)
     update();
 }
 
-void PlateMap::setTransform(const plates::PlateTransform& t, bool calibrated)
+void PlateMap::setTransform(const motion::plates::PlateTransform& t, bool calibrated)
 {
     m_transform = t;
     m_calibrated = calibrated;
@@ -69,9 +69,9 @@ void PlateMap::setVolumes(const QMap<QString, double>& volumesUl)
     m_volumes = volumesUl;
 }
 
-void PlateMap::setSelection(const std::set<plates::WellId>& wells)
+void PlateMap::setSelection(const std::set<motion::plates::WellId>& wells)
 {
-    std::set<plates::WellId> valid;
+    std::set<motion::plates::WellId> valid;
     for (const auto& w : wells)
         if (m_labware.well(w))
             valid.insert(w);
@@ -103,18 +103,18 @@ QPointF PlateMap::toWidget(double xMm, double yMm) const
 
 QPointF PlateMap::toPlate(const QPointF& p) const { return (p - origin()) / scale(); }
 
-QPointF PlateMap::wellCenter(const plates::WellId& w) const
+QPointF PlateMap::wellCenter(const motion::plates::WellId& w) const
 {
-    const plates::Well* well = m_labware.well(w);
+    const motion::plates::Well* well = m_labware.well(w);
     return well ? toWidget(well->xMm, well->yMm) : QPointF();
 }
 
-std::optional<plates::WellId> PlateMap::wellAt(const QPointF& pos) const
+std::optional<motion::plates::WellId> PlateMap::wellAt(const QPointF& pos) const
 {
     const QPointF mm = toPlate(pos);
-    for (const plates::Well& w : m_labware.wells) {
+    for (const motion::plates::Well& w : m_labware.wells) {
         const double dx = mm.x() - w.xMm, dy = mm.y() - w.yMm;
-        const bool inside = w.shape == plates::WellShape::Circular ? std::hypot(dx, dy) <= w.diameterMm / 2
+        const bool inside = w.shape == motion::plates::WellShape::Circular ? std::hypot(dx, dy) <= w.diameterMm / 2
                                                                      : std::abs(dx) <= w.sizeXMm / 2 && std::abs(dy) <= w.sizeYMm / 2;
         if (inside)
             return w.id;
@@ -122,16 +122,16 @@ std::optional<plates::WellId> PlateMap::wellAt(const QPointF& pos) const
     return std::nullopt;
 }
 
-std::set<plates::WellId> PlateMap::wellsIn(const QRectF& r) const
+std::set<motion::plates::WellId> PlateMap::wellsIn(const QRectF& r) const
 {
     // Every well the rectangle touches: a drag from inside one well to inside another
     // takes both and the block between, wherever in them the pointer was pressed and let go.
-    std::set<plates::WellId> out;
+    std::set<motion::plates::WellId> out;
     const QRectF n(toPlate(r.normalized().topLeft()), toPlate(r.normalized().bottomRight()));
-    for (const plates::Well& w : m_labware.wells) {
+    for (const motion::plates::Well& w : m_labware.wells) {
         const double dx = std::max({n.left() - w.xMm, 0.0, w.xMm - n.right()});
         const double dy = std::max({n.top() - w.yMm, 0.0, w.yMm - n.bottom()});
-        const bool touched = w.shape == plates::WellShape::Circular ? std::hypot(dx, dy) <= w.diameterMm / 2
+        const bool touched = w.shape == motion::plates::WellShape::Circular ? std::hypot(dx, dy) <= w.diameterMm / 2
                                                                       : dx <= w.sizeXMm / 2 && dy <= w.sizeYMm / 2;
         if (touched)
             out.insert(w.id);
@@ -139,13 +139,13 @@ std::set<plates::WellId> PlateMap::wellsIn(const QRectF& r) const
     return out;
 }
 
-QString PlateMap::describeWell(const plates::WellId& id) const
+QString PlateMap::describeWell(const motion::plates::WellId& id) const
 {
-    const plates::Well* w = m_labware.well(id);
+    const motion::plates::Well* w = m_labware.well(id);
     if (!w)
         return {};
-    const QString name = QString::fromStdString(plates::wellName(id));
-    const plates::PointMm m = m_transform.apply({w->xMm, w->yMm});
+    const QString name = QString::fromStdString(motion::plates::wellName(id));
+    const motion::plates::PointMm m = m_transform.apply({w->xMm, w->yMm});
     QString text = tr("%1 · plate (%2, %3) mm · machine (%4, %5) mm%6")
                        .arg(name)
                        .arg(w->xMm, 0, 'f', 2)
@@ -190,28 +190,28 @@ void PlateMap::paintEvent(QPaintEvent*)
     p.setFont(f);
     p.setPen(QColor(0x44, 0x44, 0x44));
     for (int r = 0; r < m_labware.rows; ++r) {
-        const plates::Well* w = m_labware.well({r, 0});
+        const motion::plates::Well* w = m_labware.well({r, 0});
         if (!w)
             continue;
         const QPointF c = toWidget(0, w->yMm);
         p.drawText(QRectF(c.x() - kMarginPx, c.y() - 10, kMarginPx - 4, 20), Qt::AlignRight | Qt::AlignVCenter,
-                   QString::fromStdString(plates::rowName(r)));
+                   QString::fromStdString(motion::plates::rowName(r)));
     }
     for (int c = 0; c < m_labware.columns; ++c) {
-        const plates::Well* w = m_labware.well({0, c});
+        const motion::plates::Well* w = m_labware.well({0, c});
         if (!w)
             continue;
         const QPointF at = toWidget(w->xMm, 0);
         p.drawText(QRectF(at.x() - 15, at.y() - kMarginPx, 30, kMarginPx - 3), Qt::AlignHCenter | Qt::AlignBottom, QString::number(c + 1));
     }
-    for (const plates::Well& w : m_labware.wells) {
-        const QString name = QString::fromStdString(plates::wellName(w.id));
+    for (const motion::plates::Well& w : m_labware.wells) {
+        const QString name = QString::fromStdString(motion::plates::wellName(w.id));
         const WellState st = m_states.value(name, WellState::Unused);
         const bool selected = m_selection.count(w.id) > 0;
         p.setBrush(colorOf(st));
         p.setPen(selected ? QPen(QColor(0x1a, 0x23, 0x7e), std::max(2.0, s * 0.5)) : QPen(QColor(0x75, 0x75, 0x75), 1));
         const QPointF c = toWidget(w.xMm, w.yMm);
-        if (w.shape == plates::WellShape::Circular) {
+        if (w.shape == motion::plates::WellShape::Circular) {
             const double r = w.diameterMm / 2 * s;
             p.drawEllipse(c, r, r);
         } else {
@@ -235,7 +235,7 @@ void PlateMap::mousePressEvent(QMouseEvent* e)
     m_pressAt = e->position();
     m_dragTo = e->position();
     m_dragging = false;
-    m_dragBase = (e->modifiers() & Qt::ControlModifier) ? m_selection : std::set<plates::WellId>{};
+    m_dragBase = (e->modifiers() & Qt::ControlModifier) ? m_selection : std::set<motion::plates::WellId>{};
 }
 
 void PlateMap::mouseMoveEvent(QMouseEvent* e)
@@ -258,7 +258,7 @@ void PlateMap::mouseMoveEvent(QMouseEvent* e)
 
 void PlateMap::selectDragged()
 {
-    std::set<plates::WellId> sel = m_dragBase;
+    std::set<motion::plates::WellId> sel = m_dragBase;
     for (const auto& id : wellsIn(QRectF(*m_pressAt, m_dragTo)))
         sel.insert(id);
     setSelection(sel);
@@ -275,7 +275,7 @@ void PlateMap::mouseReleaseEvent(QMouseEvent* e)
     }
     if (!m_dragging) {
         const auto w = wellAt(e->position());
-        std::set<plates::WellId> sel = (e->modifiers() & Qt::ControlModifier) ? m_selection : std::set<plates::WellId>{};
+        std::set<motion::plates::WellId> sel = (e->modifiers() & Qt::ControlModifier) ? m_selection : std::set<motion::plates::WellId>{};
         if (w) {
             if (sel.count(*w))
                 sel.erase(*w);

@@ -23,26 +23,26 @@ public:
     explicit PlateMap(QWidget* parent = nullptr);
 
     /// The plate to draw (copied); an empty labware draws nothing.
-    void setLabware(const plates::Labware& labware, const QString& title);
-    const plates::Labware& labware() const { return m_labware; }
+    void setLabware(const motion::plates::Labware& labware, const QString& title);
+    const motion::plates::Labware& labware() const { return m_labware; }
     /// The line under the plate ("assay in slot 1: 96-well plate, 360 µL").
     void setTitle(const QString& title);
     QString title() const { return m_title; }
     /// Plate frame → machine XY, for the hover text.
-    void setTransform(const plates::PlateTransform& t, bool calibrated);
+    void setTransform(const motion::plates::PlateTransform& t, bool calibrated);
     /// States and the recipe's volumes per well (µL: + dispensed, − aspirated).
     void setWellStates(const QMap<QString, WellState>& states);
     void setVolumes(const QMap<QString, double>& volumesUl);
 
-    const std::set<plates::WellId>& selection() const { return m_selection; }
-    void setSelection(const std::set<plates::WellId>& wells);
+    const std::set<motion::plates::WellId>& selection() const { return m_selection; }
+    void setSelection(const std::set<motion::plates::WellId>& wells);
     void clearSelection() { setSelection({}); }
 
     /// Where a well's centre is drawn (widget pixels), for tests and tooltips.
-    QPointF wellCenter(const plates::WellId& w) const;
-    std::optional<plates::WellId> wellAt(const QPointF& pos) const;
+    QPointF wellCenter(const motion::plates::WellId& w) const;
+    std::optional<motion::plates::WellId> wellAt(const QPointF& pos) const;
     /// "B3 · plate (23.38, 20.24) mm · machine (31.38, 28.24) mm · 10 µL dispensed"
-    QString describeWell(const plates::WellId& w) const;
+    QString describeWell(const motion::plates::WellId& w) const;
     /// The text of the well under the mouse ("" when none).
     QString hoverText() const { return m_hoverText; }
 
@@ -69,17 +69,17 @@ private:
     QPointF toWidget(double xMm, double yMm) const;
     QPointF toPlate(const QPointF& p) const;
     void selectDragged();  ///< the drag's rectangle, with the wells held by Ctrl
-    std::set<plates::WellId> wellsIn(const QRectF& widgetRect) const;
+    std::set<motion::plates::WellId> wellsIn(const QRectF& widgetRect) const;
     void setHover(const QString& text);
 
-    plates::Labware m_labware;
+    motion::plates::Labware m_labware;
     QString m_title;
-    plates::PlateTransform m_transform;
+    motion::plates::PlateTransform m_transform;
     bool m_calibrated = false;
     QMap<QString, WellState> m_states;
     QMap<QString, double> m_volumes;
-    std::set<plates::WellId> m_selection;
-    std::set<plates::WellId> m_dragBase;  ///< what was selected when a Ctrl-drag began
+    std::set<motion::plates::WellId> m_selection;
+    std::set<motion::plates::WellId> m_dragBase;  ///< what was selected when a Ctrl-drag began
     std::optional<QPointF> m_pressAt;
     QPointF m_dragTo;
     bool m_dragging = false;

@@ -42,7 +42,7 @@ QLabel* legendChip(PlateMap::WellState s, const QString& text, QWidget* parent)
 } // namespace
 
 PlatesScreen::PlatesScreen(dev::Instrument* analyzer, QWidget* parent)
-    : QWidget(parent), m_client(analyzer), m_runner(new jobs::RecipeRunner(analyzer, this)), m_deck(platefiles::builtinDeck())
+    : QWidget(parent), m_client(analyzer), m_runner(new dev::jobs::RecipeRunner(analyzer, this)), m_deck(dev::files::plates::builtinDeck())
 {
     auto* split = new QSplitter(Qt::Horizontal, this);
     auto* left = new QWidget(split);
@@ -113,7 +113,7 @@ PlatesScreen::PlatesScreen(dev::Instrument* analyzer, QWidget* parent)
     connect(m_plate, qOverload<int>(&QComboBox::activated), this, [this] { refreshMap(); });
     connect(m_map, &PlateMap::hovered, this, [this](const QString& t) { m_hover->setText(t); });
     connect(m_map, &PlateMap::selectionChanged, this, [this] {
-        const auto specs = plates::describeWells(std::vector<plates::WellId>(m_map->selection().begin(), m_map->selection().end()));
+        const auto specs = motion::plates::describeWells(std::vector<motion::plates::WellId>(m_map->selection().begin(), m_map->selection().end()));
         QStringList parts;
         for (const auto& s : specs)
             parts << QString::fromStdString(s);
@@ -165,23 +165,23 @@ PlatesScreen::PlatesScreen(dev::Instrument* analyzer, QWidget* parent)
         revalidate();
     });
     connect(m_calibration, &CalibrationPanel::problem, this, &PlatesScreen::problem);
-    // The plan's times follow the analyzer's reported limits (jobs::deckWithDeviceMotion).
+    // The plan's times follow the analyzer's reported limits (dev::jobs::deckWithDeviceMotion).
     connect(m_client, &dev::Instrument::identified, this, [this] {
-        if (m_runner->state() == jobs::RunState::Idle || m_runner->state() == jobs::RunState::Finished)
+        if (m_runner->state() == dev::jobs::RunState::Idle || m_runner->state() == dev::jobs::RunState::Finished)
             revalidate();
     });
     connect(m_run, &RunPanel::runRequested, this, [this] { runRecipe(); });
     connect(m_run, &RunPanel::resumeFromLogRequested, this, &PlatesScreen::resumeFromLog);
     connect(m_run, &RunPanel::problem, this, &PlatesScreen::problem);
-    connect(m_runner, &jobs::RecipeRunner::progressChanged, this, &PlatesScreen::refreshMap);
-    connect(m_runner, &jobs::RecipeRunner::stateChanged, this, [this] {
+    connect(m_runner, &dev::jobs::RecipeRunner::progressChanged, this, &PlatesScreen::refreshMap);
+    connect(m_runner, &dev::jobs::RecipeRunner::stateChanged, this, [this] {
         m_editor->setFilesHeld(runHoldsFiles(), tr("Held while a run is under way: the recipe that runs stays the recipe on screen"));
     });
-    connect(m_runner, &jobs::RecipeRunner::message, this, [this](const msg::Message& m, bool isProblem) {
+    connect(m_runner, &dev::jobs::RecipeRunner::message, this, [this](const motion::msg::Message& m, bool isProblem) {
         if (isProblem)
-            emit problem(words::text(m));
+            emit problem(ui::words::text(m));
         else
-            emit note(words::text(m));
+            emit note(ui::words::text(m));
     });
     m_logDir = QDir::tempPath();
     newRecipe();
@@ -194,7 +194,7 @@ void PlatesScreen::setConfirm(Confirm c)
     m_calibration->setConfirm(std::move(c));
 }
 
-void PlatesScreen::setInterruptedDecider(jobs::InterruptedDecider d)
+void PlatesScreen::setInterruptedDecider(dev::jobs::InterruptedDecider d)
 {
     m_decide = d;
     m_run->setInterruptedDecider(std::move(d));
@@ -205,15 +205,15 @@ void PlatesScreen::setCalibrationFile(const QString& path)
     m_calibrationFile = path;
     m_calibrations.clear();
     std::string text;
-    msg::Message error;
+    motion::msg::Message error;
     if (QFileInfo::exists(path)) {
-        if (!files::readText(path, &text, &error)) {
-            emit problem(words::text(error));
+        if (!dev::files::readText(path, &text, &error)) {
+            emit problem(ui::words::text(error));
         } else {
-            const platefiles::CalibrationRead r = platefiles::parseCalibration(text);
+            const dev::files::plates::CalibrationRead r = dev::files::plates::parseCalibration(text);
             if (!r.ok())
                 emit problem(tr("the slot calibration %1 cannot be read; the slots use their nominal places:\n%2")
-                                 .arg(path, words::fileProblems(r.problems, QFileInfo(path).fileName()).join(QLatin1Char('\n'))));
+                                 .arg(path, ui::words::fileProblems(r.problems, QFileInfo(path).fileName()).join(QLatin1Char('\n'))));
             else
                 m_calibrations = r.calibrations;
         }
@@ -227,16 +227,16 @@ void PlatesScreen::saveCalibrations()
     if (m_calibrationFile.isEmpty())
         return;
     QDir().mkpath(QFileInfo(m_calibrationFile).absolutePath());
-    msg::Message error;
-    if (!files::writeAtomically(m_calibrationFile, platefiles::writeCalibration(m_deck.id, m_calibrations), &error))
-        emit problem(words::text(error));
+    motion::msg::Message error;
+    if (!dev::files::writeAtomically(m_calibrationFile, dev::files::plates::writeCalibration(m_deck.id, m_calibrations), &error))
+        emit problem(ui::words::text(error));
     else
         emit note(tr("slot calibration saved to %1").arg(m_calibrationFile));
 }
 
 void PlatesScreen::newRecipe()
 {
-    plates::Recipe r;
+    motion::plates::Recipe r;
     r.name = tr("new recipe").toStdString();
     r.plates = {{tr("samples", "the name of a new recipe's plate").toStdString(), m_deck.plateSlots.empty() ? "1" : m_deck.plateSlots.front().id, "sbs-96", 55, 70}};
     m_filePlaces.clear();
@@ -253,8 +253,8 @@ QString PlatesScreen::baseDir() const
 
 bool PlatesScreen::runHoldsFiles() const
 {
-    const jobs::RunState s = m_runner->state();
-    return s == jobs::RunState::Running || s == jobs::RunState::Pausing || s == jobs::RunState::Paused || s == jobs::RunState::Aborting;
+    const dev::jobs::RunState s = m_runner->state();
+    return s == dev::jobs::RunState::Running || s == dev::jobs::RunState::Pausing || s == dev::jobs::RunState::Paused || s == dev::jobs::RunState::Aborting;
 }
 
 bool PlatesScreen::heldForRun()
@@ -270,7 +270,7 @@ bool PlatesScreen::openRecipe(const QString& path)
 {
     if (heldForRun())
         return false;
-    const platefiles::LoadedRecipe l = platefiles::loadRecipe(path, m_deck, m_calibrations);
+    const dev::files::plates::LoadedRecipe l = dev::files::plates::loadRecipe(path, m_deck, m_calibrations);
     if (!l.readable) {
         // Every problem goes to the Problems pane with its line and column; the banner
         // only says so, as a banner cuts a list of them after its first line.
@@ -280,7 +280,7 @@ bool PlatesScreen::openRecipe(const QString& path)
         return false;
     }
     m_filePlaces = l.problems;
-    m_fileRecipe = platefiles::writeRecipe(l.recipe);
+    m_fileRecipe = dev::files::plates::writeRecipe(l.recipe);
     m_editor->setRecipe(l.recipe, path);
     refreshPlateChoices();
     emit note(tr("opened %1").arg(path));
@@ -290,9 +290,9 @@ bool PlatesScreen::openRecipe(const QString& path)
 
 bool PlatesScreen::saveRecipe(const QString& path)
 {
-    msg::Message error;
-    if (!files::writeAtomically(path, platefiles::writeRecipe(m_editor->recipe()), &error)) {
-        emit problem(words::text(error));
+    motion::msg::Message error;
+    if (!dev::files::writeAtomically(path, dev::files::plates::writeRecipe(m_editor->recipe()), &error)) {
+        emit problem(ui::words::text(error));
         return false;
     }
     m_filePlaces.clear();  // written anew: its lines are not the ones read
@@ -302,14 +302,14 @@ bool PlatesScreen::saveRecipe(const QString& path)
     return true;
 }
 
-plates::PlanContext PlatesScreen::context(msg::Problems* problems) const
+motion::plates::PlanContext PlatesScreen::context(motion::msg::Problems* problems) const
 {
-    msg::Problems found;
-    plates::PlanContext c;
+    motion::msg::Problems found;
+    motion::plates::PlanContext c;
     // Times follow the analyzer's own planner limits once it has reported them.
-    c.deck = jobs::deckWithDeviceMotion(m_deck, m_client->identity());
-    c.calibration = platefiles::calibrationTransforms(m_calibrations);
-    platefiles::resolveLabware(m_editor->recipe(), baseDir(), c, &found);
+    c.deck = dev::jobs::deckWithDeviceMotion(m_deck, m_client->identity());
+    c.calibration = dev::files::plates::calibrationTransforms(m_calibrations);
+    dev::files::plates::resolveLabware(m_editor->recipe(), baseDir(), c, &found);
     if (problems)
         problems->insert(problems->end(), found.begin(), found.end());
     return c;
@@ -317,16 +317,16 @@ plates::PlanContext PlatesScreen::context(msg::Problems* problems) const
 
 void PlatesScreen::revalidate()
 {
-    msg::Problems problems;
+    motion::msg::Problems problems;
     m_context = context(&problems);
-    const plates::PlanContext& c = m_context;
-    m_plan = plates::planRecipe(m_editor->recipe(), c);
+    const motion::plates::PlanContext& c = m_context;
+    m_plan = motion::plates::planRecipe(m_editor->recipe(), c);
     // The file's lines and columns hold while the recipe on screen is still the file (an
     // edit reaches here before the undo stack counts it, so the recipe itself is compared).
-    const bool asRead = !m_filePlaces.empty() && platefiles::writeRecipe(m_editor->recipe()) == m_fileRecipe;
-    for (msg::Problem p : m_plan.problems) {
+    const bool asRead = !m_filePlaces.empty() && dev::files::plates::writeRecipe(m_editor->recipe()) == m_fileRecipe;
+    for (motion::msg::Problem p : m_plan.problems) {
         if (asRead)
-            for (const msg::Problem& placed : m_filePlaces)
+            for (const motion::msg::Problem& placed : m_filePlaces)
                 if (placed.path == p.path && placed.message == p.message) {
                     p.file = placed.file;
                     p.line = placed.line;
@@ -337,15 +337,15 @@ void PlatesScreen::revalidate()
     }
     m_editor->showProblems(problems);
     QStringList errors;
-    for (const msg::Problem& p : problems)
+    for (const motion::msg::Problem& p : problems)
         if (p.isError())
-            errors << words::problem(p);
+            errors << ui::words::problem(p);
     m_planOk = errors.isEmpty() && m_plan.ok() && !m_plan.ops.empty();
     m_run->setPlan(m_plan, m_planOk, errors.isEmpty() ? (m_plan.ops.empty() ? tr("the recipe has no steps") : QString()) : errors.first());
     refreshPlateChoices();
 
     // The calibration wizard teaches on what the recipe puts in each slot.
-    std::map<std::string, plates::Labware> bySlot;
+    std::map<std::string, motion::plates::Labware> bySlot;
     std::map<std::string, double> safeZ;
     for (const auto& p : m_editor->recipe().plates) {
         const auto lw = c.labware.find(p.labware);
@@ -394,8 +394,8 @@ void PlatesScreen::changeEvent(QEvent* event)
 void PlatesScreen::refreshMap()
 {
     const std::string name = m_plate->currentText().toStdString();
-    const plates::RecipePlate* p = m_editor->recipe().plate(name);
-    const plates::PlanContext& c = m_context;
+    const motion::plates::RecipePlate* p = m_editor->recipe().plate(name);
+    const motion::plates::PlanContext& c = m_context;
     const auto lw = p ? c.labware.find(p->labware) : c.labware.end();
     if (!p || lw == c.labware.end()) {
         if (!m_map->labware().wells.empty())
@@ -403,7 +403,7 @@ void PlatesScreen::refreshMap()
         return;
     }
     const QString title = tr("%1 in slot %2: %3")
-                              .arg(QString::fromStdString(p->name), QString::fromStdString(p->slot), words::shippedName(lw->second.displayName));
+                              .arg(QString::fromStdString(p->name), QString::fromStdString(p->slot), ui::words::shippedName(lw->second.displayName));
     if (m_map->labware().id != lw->second.id || m_map->labware().wells.size() != lw->second.wells.size())
         m_map->setLabware(lw->second, title);
     m_map->setTitle(title);
@@ -415,7 +415,7 @@ void PlatesScreen::refreshMap()
             volumes[QString::fromStdString(w.well)] = w.dispensedUl - w.aspiratedUl;
     const auto& opStates = m_runner->opStates();
     const bool sameRun = opStates.size() == m_plan.ops.size() && m_runner->plan().fingerprint == m_plan.fingerprint;
-    const jobs::RunProgress pr = m_runner->progress();
+    const dev::jobs::RunProgress pr = m_runner->progress();
     for (const auto& op : m_plan.ops) {
         if (op.plate != name || op.well.empty())
             continue;
@@ -423,10 +423,10 @@ void PlatesScreen::refreshMap()
         PlateMap::WellState st = PlateMap::WellState::Planned;
         if (sameRun) {
             const auto s = opStates[static_cast<std::size_t>(op.index)];
-            if (s == platefiles::OpState::Done || s == platefiles::OpState::Skipped)
+            if (s == dev::files::plates::OpState::Done || s == dev::files::plates::OpState::Skipped)
                 st = PlateMap::WellState::Done;
-            if (op.index == pr.currentOp && m_runner->state() != jobs::RunState::Idle && m_runner->state() != jobs::RunState::Finished)
-                st = m_runner->state() == jobs::RunState::Stopped ? PlateMap::WellState::Error : PlateMap::WellState::Current;
+            if (op.index == pr.currentOp && m_runner->state() != dev::jobs::RunState::Idle && m_runner->state() != dev::jobs::RunState::Finished)
+                st = m_runner->state() == dev::jobs::RunState::Stopped ? PlateMap::WellState::Error : PlateMap::WellState::Current;
         }
         // A well visited several times shows its least finished visit.
         const auto prev = states.constFind(well);
@@ -439,12 +439,12 @@ void PlatesScreen::refreshMap()
 
 void PlatesScreen::selectionToStep(int mode)
 {
-    std::vector<plates::WellId> wells(m_map->selection().begin(), m_map->selection().end());
+    std::vector<motion::plates::WellId> wells(m_map->selection().begin(), m_map->selection().end());
     if (wells.empty())
         return;
     const std::vector<std::string> specs = {[&] {
         std::string joined;
-        for (const auto& s : plates::describeWells(wells))
+        for (const auto& s : motion::plates::describeWells(wells))
             joined += (joined.empty() ? "" : ", ") + s;
         return joined;
     }()};
@@ -453,7 +453,7 @@ void PlatesScreen::selectionToStep(int mode)
         const int i = m_editor->currentStep();
         if (i < 0)
             return;
-        m_editor->edit(tr("use the selection in step %1").arg(i + 1), [i, specs, plate](plates::Recipe& r) {
+        m_editor->edit(tr("use the selection in step %1").arg(i + 1), [i, specs, plate](motion::plates::Recipe& r) {
             auto& s = r.steps[static_cast<std::size_t>(i)];
             s.wells = specs;
             s.station.clear();
@@ -462,13 +462,13 @@ void PlatesScreen::selectionToStep(int mode)
         });
         return;
     }
-    plates::Step s;
-    s.type = mode == 1 ? plates::StepType::Aspirate : plates::StepType::Dispense;
+    motion::plates::Step s;
+    s.type = mode == 1 ? motion::plates::StepType::Aspirate : motion::plates::StepType::Dispense;
     s.wells = specs;
     s.plate = plate;
     s.volumeUl = 10;
     const int at = m_editor->currentStep() + 1;
-    m_editor->edit(mode == 1 ? tr("aspirate from the selection") : tr("dispense into the selection"), [at, s](plates::Recipe& r) {
+    m_editor->edit(mode == 1 ? tr("aspirate from the selection") : tr("dispense into the selection"), [at, s](motion::plates::Recipe& r) {
         r.steps.insert(r.steps.begin() + std::min<std::size_t>(static_cast<std::size_t>(at), r.steps.size()), s);
     });
     m_editor->setCurrentStep(at);
@@ -481,14 +481,14 @@ bool PlatesScreen::runRecipe()
         return false;
     }
     const auto& st = m_client->status();
-    plates::StartState start;
+    motion::plates::StartState start;
     if (st.axes.size() >= 4)
         start = {st.axes[0].commanded, st.axes[1].commanded, st.axes[2].commanded, st.axes[3].commanded};
-    const plates::RecipePlan plan = plates::planRecipe(m_editor->recipe(), m_context, start);
-    msg::Message error;
+    const motion::plates::RecipePlan plan = motion::plates::planRecipe(m_editor->recipe(), m_context, start);
+    motion::msg::Message error;
     const QString name = QString::fromStdString(m_editor->recipe().name.empty() ? "recipe" : m_editor->recipe().name);
     if (!m_runner->setPlan(plan, name, &error)) {
-        emit problem(words::text(error));
+        emit problem(ui::words::text(error));
         return false;
     }
     double deepest = 0;
@@ -502,13 +502,13 @@ bool PlatesScreen::runRecipe()
                           .arg(name)
                           .arg(plan.ops.size())
                           .arg(plan.wellsVisited())
-                          .arg(words::duration(plan.totalTimeS))
+                          .arg(ui::words::duration(plan.totalTimeS))
                           .arg(deepest)))
         return false;
     QDir().mkpath(m_logDir);
     const QString log = QDir(m_logDir).filePath(runLogName(name, QDateTime::currentDateTime()));
     if (!m_runner->start(log, &error)) {
-        emit problem(words::text(error));
+        emit problem(ui::words::text(error));
         return false;
     }
     showTab(QStringLiteral("run"));
@@ -520,10 +520,10 @@ void PlatesScreen::resumeFromLog()
     const QString path = m_choose ? m_choose(tr("Resume from run log"), tr("Run logs (*.run.jsonl *.jsonl)"), false) : QString();
     if (path.isEmpty())
         return;
-    const plates::RecipePlan plan = plates::planRecipe(m_editor->recipe(), m_context, jobs::RecipeRunner::resumeStart(path, *m_client));
-    msg::Message error;
+    const motion::plates::RecipePlan plan = motion::plates::planRecipe(m_editor->recipe(), m_context, dev::jobs::RecipeRunner::resumeStart(path, *m_client));
+    motion::msg::Message error;
     if (!m_runner->setPlan(plan, QString::fromStdString(m_editor->recipe().name), &error) || !m_runner->resumeFromLog(path, m_decide, &error)) {
-        emit problem(words::text(error));
+        emit problem(ui::words::text(error));
         return;
     }
     showTab(QStringLiteral("run"));
@@ -537,25 +537,25 @@ void PlatesScreen::importLabware()
     if (from.isEmpty())
         return;
     std::string text;
-    msg::Message error;
-    if (!files::readText(from, &text, &error)) {
-        emit problem(words::text(error));
+    motion::msg::Message error;
+    if (!dev::files::readText(from, &text, &error)) {
+        emit problem(ui::words::text(error));
         return;
     }
-    const platefiles::LabwareRead r = platefiles::parseLabware(text);
+    const dev::files::plates::LabwareRead r = dev::files::plates::parseLabware(text);
     if (!r.labware) {
         emit problem(tr("%1 is not a plate definition BenchPilot can use:\n%2")
-                         .arg(QFileInfo(from).fileName(), words::fileProblems(r.problems, QFileInfo(from).fileName()).join(QLatin1Char('\n'))));
+                         .arg(QFileInfo(from).fileName(), ui::words::fileProblems(r.problems, QFileInfo(from).fileName()).join(QLatin1Char('\n'))));
         return;
     }
     const QString to = QDir(baseDir()).filePath(QString::fromStdString(r.labware->id) + QStringLiteral(".labware.json"));
-    if (!files::writeAtomically(to, platefiles::writeLabware(*r.labware), &error)) {
-        emit problem(words::text(error));
+    if (!dev::files::writeAtomically(to, dev::files::plates::writeLabware(*r.labware), &error)) {
+        emit problem(ui::words::text(error));
         return;
     }
     const std::string ref = m_editor->path().isEmpty() ? to.toStdString() : QFileInfo(to).fileName().toStdString();
     const std::string plate = m_plate->currentText().toStdString();
-    m_editor->edit(tr("use imported labware %1").arg(QString::fromStdString(r.labware->id)), [plate, ref](plates::Recipe& rec) {
+    m_editor->edit(tr("use imported labware %1").arg(QString::fromStdString(r.labware->id)), [plate, ref](motion::plates::Recipe& rec) {
         for (auto& p : rec.plates)
             if (p.name == plate)
                 p.labware = ref;

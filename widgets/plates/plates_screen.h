@@ -36,7 +36,7 @@ public:
 
     void setConfirm(Confirm c);
     void setFileChooser(FileChooser f) { m_choose = std::move(f); }
-    void setInterruptedDecider(jobs::InterruptedDecider d);
+    void setInterruptedDecider(dev::jobs::InterruptedDecider d);
     /// Where the slots' calibration is kept between runs (read now, written on every change).
     void setCalibrationFile(const QString& path);
     /// Where run logs go.
@@ -51,12 +51,12 @@ public:
     /// Starts a run of the recipe as it is (asks first when a confirm is set); false with a message.
     bool runRecipe();
 
-    const plates::RecipePlan& plan() const { return m_plan; }
+    const motion::plates::RecipePlan& plan() const { return m_plan; }
     PlateMap* plateMap() const { return m_map; }
     RecipeEditor* recipeEditor() const { return m_editor; }
     CalibrationPanel* calibrationPanel() const { return m_calibration; }
     RunPanel* runPanel() const { return m_run; }
-    jobs::RecipeRunner* runner() const { return m_runner; }
+    dev::jobs::RecipeRunner* runner() const { return m_runner; }
     void showPlate(const QString& plateName);
     /// The tab to show: "recipe", "calibrate", "run".
     void showTab(const QString& name);
@@ -84,23 +84,23 @@ private:
     void importLabware();
     void resumeFromLog();
     void saveCalibrations();
-    plates::PlanContext context(msg::Problems* problems) const;
+    motion::plates::PlanContext context(motion::msg::Problems* problems) const;
     QString baseDir() const;
 
     dev::Instrument* m_client;
-    jobs::RecipeRunner* m_runner;
+    dev::jobs::RecipeRunner* m_runner;
     Confirm m_confirm;
     FileChooser m_choose;
-    jobs::InterruptedDecider m_decide;
-    plates::Deck m_deck;
-    std::vector<plates::SlotCalibration> m_calibrations;
+    dev::jobs::InterruptedDecider m_decide;
+    motion::plates::Deck m_deck;
+    std::vector<motion::plates::SlotCalibration> m_calibrations;
     QString m_calibrationFile, m_logDir;
-    plates::RecipePlan m_plan;
-    plates::PlanContext m_context;  ///< of the last validation: labware files are read once per change, not per well
+    motion::plates::RecipePlan m_plan;
+    motion::plates::PlanContext m_context;  ///< of the last validation: labware files are read once per change, not per well
     bool m_planOk = false;
     /// The opened file's problems with their lines and columns, lent to the plan's own
     /// while the recipe on screen is still exactly that file.
-    msg::Problems m_filePlaces;
+    motion::msg::Problems m_filePlaces;
     std::string m_fileRecipe;  ///< that file's recipe as writeRecipe writes it
     PlateMap* m_map;
     QComboBox* m_plate;

@@ -34,7 +34,7 @@ namespace {
 /// are small, and a snapshot can never be undone wrongly.
 class RecipeCommand : public QUndoCommand {
 public:
-    RecipeCommand(RecipeEditor* editor, plates::Recipe before, plates::Recipe after, const QString& text, int mergeId)
+    RecipeCommand(RecipeEditor* editor, motion::plates::Recipe before, motion::plates::Recipe after, const QString& text, int mergeId)
         : QUndoCommand(text), m_editor(editor), m_before(std::move(before)), m_after(std::move(after)), m_id(mergeId)
     {
     }
@@ -49,7 +49,7 @@ public:
 
 private:
     RecipeEditor* m_editor;
-    plates::Recipe m_before, m_after;
+    motion::plates::Recipe m_before, m_after;
     int m_id;
 };
 
@@ -144,8 +144,8 @@ RecipeEditor::RecipeEditor(QWidget* parent) : QWidget(parent), m_undo(new QUndoS
     add->setText(tr("Add step"));
     add->setPopupMode(QToolButton::InstantPopup);
     auto* menu = new QMenu(add);
-    for (int i = 0; i < plates::kStepTypeCount; ++i) {
-        const auto t = static_cast<plates::StepType>(i);
+    for (int i = 0; i < motion::plates::kStepTypeCount; ++i) {
+        const auto t = static_cast<motion::plates::StepType>(i);
         menu->addAction(stepTypeTitle(t), this, [this, t] { addStep(t); });
     }
     add->setMenu(menu);
@@ -193,10 +193,10 @@ RecipeEditor::RecipeEditor(QWidget* parent) : QWidget(parent), m_undo(new QUndoS
     connect(m_name, &QLineEdit::editingFinished, this, [this] {
         const std::string n = m_name->text().toStdString();
         if (n != m_recipe.name)
-            edit(tr("rename the recipe"), [n](plates::Recipe& r) { r.name = n; });
+            edit(tr("rename the recipe"), [n](motion::plates::Recipe& r) { r.name = n; });
     });
     connect(addPlate, &QPushButton::clicked, this, [this] {
-        edit(tr("add a plate"), [this](plates::Recipe& r) {
+        edit(tr("add a plate"), [this](motion::plates::Recipe& r) {
             std::string slot = m_deck.plateSlots.empty() ? "1" : m_deck.plateSlots.back().id;
             for (const auto& s : m_deck.plateSlots) {
                 bool used = false;
@@ -215,29 +215,29 @@ RecipeEditor::RecipeEditor(QWidget* parent) : QWidget(parent), m_undo(new QUndoS
         if (row < 0 || row >= static_cast<int>(m_recipe.plates.size()))
             return;
         edit(tr("remove plate %1").arg(QString::fromStdString(m_recipe.plates[static_cast<std::size_t>(row)].name)),
-             [row](plates::Recipe& r) { r.plates.erase(r.plates.begin() + row); });
+             [row](motion::plates::Recipe& r) { r.plates.erase(r.plates.begin() + row); });
     });
     connect(m_steps, &QListWidget::currentRowChanged, this, [this](int row) {
         if (m_updating)
             return;
-        m_form->setStep(row >= 0 && row < static_cast<int>(m_recipe.steps.size()) ? m_recipe.steps[static_cast<std::size_t>(row)] : plates::Step{},
+        m_form->setStep(row >= 0 && row < static_cast<int>(m_recipe.steps.size()) ? m_recipe.steps[static_cast<std::size_t>(row)] : motion::plates::Step{},
                         row);
         emit currentStepChanged(row);
     });
-    connect(m_form, &StepForm::edited, this, [this](const plates::Step& s, const QString& field) {
+    connect(m_form, &StepForm::edited, this, [this](const motion::plates::Step& s, const QString& field) {
         const int i = currentStep();
         if (i < 0)
             return;
         const bool typing = field == QLatin1String("volume") || field == QLatin1String("speed") || field == QLatin1String("cycles")
             || field == QLatin1String("seconds") || field == QLatin1String("offset");
-        edit(tr("change %1 of step %2").arg(field).arg(i + 1), [i, s](plates::Recipe& r) { r.steps[static_cast<std::size_t>(i)] = s; },
+        edit(tr("change %1 of step %2").arg(field).arg(i + 1), [i, s](motion::plates::Recipe& r) { r.steps[static_cast<std::size_t>(i)] = s; },
              typing ? mergeIdFor(1, i, field) : -1);
     });
     connect(dup, &QPushButton::clicked, this, [this] {
         const int i = currentStep();
         if (i < 0)
             return;
-        edit(tr("duplicate step %1").arg(i + 1), [i](plates::Recipe& r) {
+        edit(tr("duplicate step %1").arg(i + 1), [i](motion::plates::Recipe& r) {
             r.steps.insert(r.steps.begin() + i + 1, r.steps[static_cast<std::size_t>(i)]);
         });
         setCurrentStep(i + 1);
@@ -246,7 +246,7 @@ RecipeEditor::RecipeEditor(QWidget* parent) : QWidget(parent), m_undo(new QUndoS
         const int i = currentStep();
         if (i < 0)
             return;
-        edit(tr("remove step %1").arg(i + 1), [i](plates::Recipe& r) { r.steps.erase(r.steps.begin() + i); });
+        edit(tr("remove step %1").arg(i + 1), [i](motion::plates::Recipe& r) { r.steps.erase(r.steps.begin() + i); });
         setCurrentStep(std::min(i, static_cast<int>(m_recipe.steps.size()) - 1));
     });
     connect(up, &QToolButton::clicked, this, [this] { moveStep(-1); });
@@ -257,14 +257,14 @@ RecipeEditor::RecipeEditor(QWidget* parent) : QWidget(parent), m_undo(new QUndoS
     });
 }
 
-void RecipeEditor::setDeck(const plates::Deck& deck)
+void RecipeEditor::setDeck(const motion::plates::Deck& deck)
 {
     m_deck = deck;
     refreshPlates();
     refreshSteps();
 }
 
-void RecipeEditor::setRecipe(const plates::Recipe& recipe, const QString& path)
+void RecipeEditor::setRecipe(const motion::plates::Recipe& recipe, const QString& path)
 {
     m_path = path;
     m_undo->clear();
@@ -287,18 +287,18 @@ void RecipeEditor::setCurrentStep(int index)
 {
     m_steps->setCurrentRow(index);
     m_form->setStep(index >= 0 && index < static_cast<int>(m_recipe.steps.size()) ? m_recipe.steps[static_cast<std::size_t>(index)]
-                                                                                  : plates::Step{},
+                                                                                  : motion::plates::Step{},
                     index < static_cast<int>(m_recipe.steps.size()) ? index : -1);
 }
 
-void RecipeEditor::edit(const QString& text, const std::function<void(plates::Recipe&)>& change, int mergeId)
+void RecipeEditor::edit(const QString& text, const std::function<void(motion::plates::Recipe&)>& change, int mergeId)
 {
-    plates::Recipe after = m_recipe;
+    motion::plates::Recipe after = m_recipe;
     change(after);
     m_undo->push(new RecipeCommand(this, m_recipe, std::move(after), text, mergeId));
 }
 
-void RecipeEditor::apply(const plates::Recipe& r)
+void RecipeEditor::apply(const motion::plates::Recipe& r)
 {
     m_recipe = r;
     m_updating = true;
@@ -307,12 +307,12 @@ void RecipeEditor::apply(const plates::Recipe& r)
     refreshSteps();
     m_updating = false;
     const int i = currentStep();
-    m_form->setStep(i >= 0 && i < static_cast<int>(r.steps.size()) ? r.steps[static_cast<std::size_t>(i)] : plates::Step{},
+    m_form->setStep(i >= 0 && i < static_cast<int>(r.steps.size()) ? r.steps[static_cast<std::size_t>(i)] : motion::plates::Step{},
                     i < static_cast<int>(r.steps.size()) ? i : -1);
     emit recipeChanged();
 }
 
-QString RecipeEditor::stepSummary(const plates::Step& s, int index)
+QString RecipeEditor::stepSummary(const motion::plates::Step& s, int index)
 {
     QString where;
     if (!s.station.empty())
@@ -321,10 +321,10 @@ QString RecipeEditor::stepSummary(const plates::Step& s, int index)
         where = (s.plate.empty() ? QString() : QString::fromStdString(s.plate) + QLatin1Char(' ')) + StepForm::wellsText(s.wells);
     QString text = QStringLiteral("%1. %2").arg(index + 1).arg(stepTypeTitle(s.type));
     switch (s.type) {
-    case plates::StepType::Wait: text += tr(" %1 s").arg(s.seconds); break;
-    case plates::StepType::TouchOff: text += tr(" %1 mm").arg(s.offsetMm); break;
-    case plates::StepType::Mix:
-    case plates::StepType::Wash: text += tr(" %1 µL × %2").arg(s.volumeUl).arg(s.cycles); break;
+    case motion::plates::StepType::Wait: text += tr(" %1 s").arg(s.seconds); break;
+    case motion::plates::StepType::TouchOff: text += tr(" %1 mm").arg(s.offsetMm); break;
+    case motion::plates::StepType::Mix:
+    case motion::plates::StepType::Wash: text += tr(" %1 µL × %2").arg(s.volumeUl).arg(s.cycles); break;
     default: text += tr(" %1 µL").arg(s.volumeUl); break;
     }
     if (!where.isEmpty())
@@ -376,9 +376,9 @@ void RecipeEditor::showSlot(QComboBox* slot, const std::string& id)
     slot->setToolTip(why);
 }
 
-QString RecipeEditor::slotTitle(const plates::Slot& slot)
+QString RecipeEditor::slotTitle(const motion::plates::Slot& slot)
 {
-    return QStringLiteral("%1 (%2)").arg(QString::fromStdString(slot.id), words::shippedName(slot.name));
+    return QStringLiteral("%1 (%2)").arg(QString::fromStdString(slot.id), ui::words::shippedName(slot.name));
 }
 
 void RecipeEditor::showLabware(QComboBox* labware, const std::string& id)
@@ -407,7 +407,7 @@ void RecipeEditor::refreshPlates()
         // Same rows: update the values in place, so the field being typed into
         // keeps its focus (and is not deleted under its own signal).
         for (int row = 0; row < n; ++row) {
-            const plates::RecipePlate& p = m_recipe.plates[static_cast<std::size_t>(row)];
+            const motion::plates::RecipePlate& p = m_recipe.plates[static_cast<std::size_t>(row)];
             auto* name = qobject_cast<QLineEdit*>(m_plates->cellWidget(row, 0));
             auto* slot = qobject_cast<QComboBox*>(m_plates->cellWidget(row, 1));
             auto* lw = qobject_cast<QComboBox*>(m_plates->cellWidget(row, 2));
@@ -432,12 +432,12 @@ void RecipeEditor::refreshPlates()
     }
     m_plates->setRowCount(n);
     for (int row = 0; row < static_cast<int>(m_recipe.plates.size()); ++row) {
-        const plates::RecipePlate& p = m_recipe.plates[static_cast<std::size_t>(row)];
+        const motion::plates::RecipePlate& p = m_recipe.plates[static_cast<std::size_t>(row)];
         auto* name = new QLineEdit(QString::fromStdString(p.name));
         connect(name, &QLineEdit::editingFinished, this, [this, row, name] {
             const std::string newName = name->text().trimmed().toStdString();
             if (row < static_cast<int>(m_recipe.plates.size()) && newName != m_recipe.plates[static_cast<std::size_t>(row)].name)
-                edit(tr("rename a plate"), [row, n = newName](plates::Recipe& r) {
+                edit(tr("rename a plate"), [row, n = newName](motion::plates::Recipe& r) {
                     // Steps that named the plate follow it.
                     const std::string old = r.plates[static_cast<std::size_t>(row)].name;
                     for (auto& s : r.steps) {
@@ -459,18 +459,18 @@ void RecipeEditor::refreshPlates()
             if (!slot->currentData(kUnknownSlotRole).isNull())
                 return;  // the file's own slot, kept as it is until another is chosen
             edit(tr("move a plate to slot %1").arg(QString::fromStdString(id)),
-                 [row, id](plates::Recipe& r) { r.plates[static_cast<std::size_t>(row)].slot = id; });
+                 [row, id](motion::plates::Recipe& r) { r.plates[static_cast<std::size_t>(row)].slot = id; });
         });
         m_plates->setCellWidget(row, 1, slot);
         auto* lw = new QComboBox;
         lw->setEditable(true);
-        for (const auto& l : plates::builtinLabware())
+        for (const auto& l : motion::plates::builtinLabware())
             lw->addItem(QString::fromStdString(l.id));
         showLabware(lw, p.labware);
         connect(lw, &QComboBox::textActivated, this, [this, row](const QString& text) {
             const std::string id = text.trimmed().toStdString();
             if (row < static_cast<int>(m_recipe.plates.size()) && id != m_recipe.plates[static_cast<std::size_t>(row)].labware)
-                edit(tr("change a plate's labware"), [row, id](plates::Recipe& r) { r.plates[static_cast<std::size_t>(row)].labware = id; });
+                edit(tr("change a plate's labware"), [row, id](motion::plates::Recipe& r) { r.plates[static_cast<std::size_t>(row)].labware = id; });
         });
         m_plates->setCellWidget(row, 2, lw);
         for (int col : {3, 4}) {
@@ -492,7 +492,7 @@ void RecipeEditor::refreshPlates()
                 if (v == (col == 3 ? now.safeZMm : now.depthZMm))
                     return;
                 edit(col == 3 ? tr("change a safe height") : tr("change a depth"),
-                     [row, col, v](plates::Recipe& r) {
+                     [row, col, v](motion::plates::Recipe& r) {
                          auto& pl = r.plates[static_cast<std::size_t>(row)];
                          (col == 3 ? pl.safeZMm : pl.depthZMm) = v;
                      },
@@ -504,26 +504,26 @@ void RecipeEditor::refreshPlates()
     m_updating = was;
 }
 
-void RecipeEditor::addStep(plates::StepType type)
+void RecipeEditor::addStep(motion::plates::StepType type)
 {
     const int at = currentStep() + 1;
-    plates::Step s;
+    motion::plates::Step s;
     s.type = type;
     switch (type) {
-    case plates::StepType::Aspirate:
-    case plates::StepType::Dispense: s.volumeUl = 10; s.wells = {"A1"}; break;
-    case plates::StepType::Mix: s.volumeUl = 50; s.cycles = 3; s.wells = {"A1"}; break;
-    case plates::StepType::Wash:
+    case motion::plates::StepType::Aspirate:
+    case motion::plates::StepType::Dispense: s.volumeUl = 10; s.wells = {"A1"}; break;
+    case motion::plates::StepType::Mix: s.volumeUl = 50; s.cycles = 3; s.wells = {"A1"}; break;
+    case motion::plates::StepType::Wash:
         s.volumeUl = 200;
         s.cycles = 2;
         s.station = m_deck.stations.empty() ? "" : m_deck.stations.front().id;
         break;
-    case plates::StepType::AirGap: s.volumeUl = 5; break;
-    case plates::StepType::Wait: s.seconds = 5; break;
-    case plates::StepType::TouchOff: s.offsetMm = 1.5; s.wells = {"A1"}; break;
+    case motion::plates::StepType::AirGap: s.volumeUl = 5; break;
+    case motion::plates::StepType::Wait: s.seconds = 5; break;
+    case motion::plates::StepType::TouchOff: s.offsetMm = 1.5; s.wells = {"A1"}; break;
     }
     edit(tr("add step: %1").arg(stepTypeTitle(type)),
-         [at, s](plates::Recipe& r) { r.steps.insert(r.steps.begin() + std::min<std::size_t>(static_cast<std::size_t>(at), r.steps.size()), s); });
+         [at, s](motion::plates::Recipe& r) { r.steps.insert(r.steps.begin() + std::min<std::size_t>(static_cast<std::size_t>(at), r.steps.size()), s); });
     setCurrentStep(at);
 }
 
@@ -532,11 +532,11 @@ void RecipeEditor::moveStep(int delta)
     const int i = currentStep(), j = i + delta;
     if (i < 0 || j < 0 || j >= static_cast<int>(m_recipe.steps.size()))
         return;
-    edit(tr("move step %1").arg(i + 1), [i, j](plates::Recipe& r) { std::swap(r.steps[static_cast<std::size_t>(i)], r.steps[static_cast<std::size_t>(j)]); });
+    edit(tr("move step %1").arg(i + 1), [i, j](motion::plates::Recipe& r) { std::swap(r.steps[static_cast<std::size_t>(i)], r.steps[static_cast<std::size_t>(j)]); });
     setCurrentStep(j);
 }
 
-void RecipeEditor::showProblems(const msg::Problems& problems, const QString& refusedFile)
+void RecipeEditor::showProblems(const motion::msg::Problems& problems, const QString& refusedFile)
 {
     m_problems->clear();
     m_problemSteps.clear();
@@ -548,15 +548,15 @@ void RecipeEditor::showProblems(const msg::Problems& problems, const QString& re
     };
     if (!refusedFile.isEmpty())
         row(tr("%1 was not opened (the recipe on screen is unchanged):").arg(refusedFile), QColor(0xc6, 0x28, 0x28), -1);
-    for (const msg::Severity severity : {msg::Severity::Error, msg::Severity::Warning})
-        for (const msg::Problem& p : problems) {
+    for (const motion::msg::Severity severity : {motion::msg::Severity::Error, motion::msg::Severity::Warning})
+        for (const motion::msg::Problem& p : problems) {
             if (p.severity != severity)
                 continue;
             // Only a problem of the recipe on screen points at one of its steps.
             int step = -1;
             if (refusedFile.isEmpty() && p.file.empty() && p.path.rfind("steps[", 0) == 0)
                 step = QString::fromStdString(p.path.substr(6)).section(QLatin1Char(']'), 0, 0).toInt();
-            row(words::problem(p), p.isError() ? QColor(0xc6, 0x28, 0x28) : QColor(0xb2, 0x6a, 0x00), step);
+            row(ui::words::problem(p), p.isError() ? QColor(0xc6, 0x28, 0x28) : QColor(0xb2, 0x6a, 0x00), step);
         }
     if (problems.empty() && refusedFile.isEmpty())
         row(tr("The recipe validates."), QColor(), -1);

@@ -21,11 +21,11 @@
 
 namespace ui {
 
-using jobs::RunState;
+using dev::jobs::RunState;
 
-using words::duration;
+using ui::words::duration;
 
-RunPanel::RunPanel(jobs::RecipeRunner* runner, QWidget* parent) : QWidget(parent), m_runner(runner)
+RunPanel::RunPanel(dev::jobs::RecipeRunner* runner, QWidget* parent) : QWidget(parent), m_runner(runner)
 {
     auto* v = new QVBoxLayout(this);
     auto* controls = new QHBoxLayout;
@@ -85,7 +85,7 @@ RunPanel::RunPanel(jobs::RecipeRunner* runner, QWidget* parent) : QWidget(parent
 
     connect(m_run, &QPushButton::clicked, this, &RunPanel::runRequested);
     connect(m_fromLog, &QPushButton::clicked, this, &RunPanel::resumeFromLogRequested);
-    connect(m_pause, &QPushButton::clicked, m_runner, &jobs::RecipeRunner::pause);
+    connect(m_pause, &QPushButton::clicked, m_runner, &dev::jobs::RecipeRunner::pause);
     connect(m_abort, &QPushButton::clicked, this, [this] {
         if (m_confirm && !m_confirm(tr("Abort the run? The analyzer stops at once and raises the tip; the wells not done yet "
                                        "stay undone (the run log can resume them later).")))
@@ -93,13 +93,13 @@ RunPanel::RunPanel(jobs::RecipeRunner* runner, QWidget* parent) : QWidget(parent
         m_runner->abort();
     });
     connect(m_resume, &QPushButton::clicked, this, [this] {
-        msg::Message error;
+        motion::msg::Message error;
         if (!m_runner->resume(m_decide, &error))
-            emit problem(words::text(error));
+            emit problem(ui::words::text(error));
     });
-    connect(m_runner, &jobs::RecipeRunner::stateChanged, this, &RunPanel::refresh);
-    connect(m_runner, &jobs::RecipeRunner::progressChanged, this, &RunPanel::refresh);
-    connect(m_runner, &jobs::RecipeRunner::message, this, [this](const msg::Message& m, bool problemText) {
+    connect(m_runner, &dev::jobs::RecipeRunner::stateChanged, this, &RunPanel::refresh);
+    connect(m_runner, &dev::jobs::RecipeRunner::progressChanged, this, &RunPanel::refresh);
+    connect(m_runner, &dev::jobs::RecipeRunner::message, this, [this](const motion::msg::Message& m, bool problemText) {
         auto* item = new QListWidgetItem(m_messages);
         item->setData(Qt::UserRole, QTime::currentTime().toString(QStringLiteral("HH:mm:ss")));
         item->setData(Qt::UserRole + 1, QVariant::fromValue(m));
@@ -121,7 +121,7 @@ RunPanel::RunPanel(jobs::RecipeRunner* runner, QWidget* parent) : QWidget(parent
     refresh();
 }
 
-void RunPanel::setPlan(const plates::RecipePlan& plan, bool runnable, const QString& why)
+void RunPanel::setPlan(const motion::plates::RecipePlan& plan, bool runnable, const QString& why)
 {
     m_runnable = runnable;
     m_planOps = runnable ? static_cast<int>(plan.ops.size()) : 0;
@@ -138,11 +138,11 @@ void RunPanel::setPlan(const plates::RecipePlan& plan, bool runnable, const QStr
     m_table->setUpdatesEnabled(false);
     m_table->setRowCount(rows);
     for (int r = 0; r < rows; ++r) {
-        const plates::PlanOp& op = plan.ops[static_cast<std::size_t>(r)];
+        const motion::plates::PlanOp& op = plan.ops[static_cast<std::size_t>(r)];
         const QStringList cells = {QString::number(op.index + 1),
                                    QString::number(op.step + 1),
                                    opTitle(op),
-                                   words::text(op.where()),
+                                   ui::words::text(op.where()),
                                    QString::number(op.at.x, 'f', 2),
                                    QString::number(op.at.y, 'f', 2),
                                    op.pumpNetUl == 0 ? QStringLiteral("0") : QString::number(op.pumpNetUl, 'f', 2),
@@ -161,7 +161,7 @@ void RunPanel::setPlan(const plates::RecipePlan& plan, bool runnable, const QStr
 void RunPanel::refresh()
 {
     const RunState s = m_runner->state();
-    const jobs::RunProgress p = m_runner->progress();
+    const dev::jobs::RunProgress p = m_runner->progress();
     const bool busy = s == RunState::Running || s == RunState::Pausing || s == RunState::Aborting;
     m_run->setEnabled(m_runnable && !busy && s != RunState::Paused);
     m_fromLog->setEnabled(m_runnable && !busy && s != RunState::Paused);
@@ -170,10 +170,10 @@ void RunPanel::refresh()
     m_abort->setEnabled(s == RunState::Running || s == RunState::Pausing || s == RunState::Paused);
     m_progress->setValue(static_cast<int>(std::lround(p.fraction * 1000)));
     m_progress->setFormat(tr("%1 of %2 operations").arg(p.opsDone).arg(s == RunState::Idle ? m_planOps : p.opsTotal));
-    m_state->setText(tr("State: %1").arg(words::term(jobs::runStateTerm(s))));
+    m_state->setText(tr("State: %1").arg(ui::words::term(dev::jobs::runStateTerm(s))));
     // Paused between two ops nothing is under way: the op Resume begins with is "next".
-    m_current->setText(p.currentOp >= 0 && s != RunState::Idle ? tr("Current: %1").arg(words::text(p.currentLabel))
-                       : p.nextOp >= 0                          ? tr("Next: %1").arg(words::text(p.nextLabel))
+    m_current->setText(p.currentOp >= 0 && s != RunState::Idle ? tr("Current: %1").arg(ui::words::text(p.currentLabel))
+                       : p.nextOp >= 0                          ? tr("Next: %1").arg(ui::words::text(p.nextLabel))
                                                                 : tr("Current: —"));
     m_times->setText(s == RunState::Idle ? QString()
                                          : tr("Elapsed %1 · ETA %2").arg(duration(p.elapsedS), s == RunState::Finished ? tr("done") : duration(p.etaS)));
@@ -183,8 +183,8 @@ void RunPanel::refresh()
 
 void RunPanel::wordLine(QListWidgetItem* item)
 {
-    const auto m = item->data(Qt::UserRole + 1).value<msg::Message>();
-    item->setText(QStringLiteral("%1  %2").arg(item->data(Qt::UserRole).toString(), words::sentence(words::text(m))));
+    const auto m = item->data(Qt::UserRole + 1).value<motion::msg::Message>();
+    item->setText(QStringLiteral("%1  %2").arg(item->data(Qt::UserRole).toString(), ui::words::sentence(ui::words::text(m))));
     item->setToolTip(item->text());  // a line cut with "…" (a long log name) is whole here
 }
 

@@ -20,12 +20,12 @@ namespace ui {
 class RunPanel : public QWidget {
     Q_OBJECT
 public:
-    explicit RunPanel(jobs::RecipeRunner* runner, QWidget* parent = nullptr);
-    void setInterruptedDecider(jobs::InterruptedDecider decide) { m_decide = std::move(decide); }
+    explicit RunPanel(dev::jobs::RecipeRunner* runner, QWidget* parent = nullptr);
+    void setInterruptedDecider(dev::jobs::InterruptedDecider decide) { m_decide = std::move(decide); }
     /// Asked before Abort (a destructive action, widgets/common/confirmation.h); none: Abort at once.
     void setConfirm(std::function<bool(const QString&)> confirm) { m_confirm = std::move(confirm); }
     /// The plan to show; `runnable` false (with `why`) disables Run.
-    void setPlan(const plates::RecipePlan& plan, bool runnable, const QString& why);
+    void setPlan(const motion::plates::RecipePlan& plan, bool runnable, const QString& why);
 
     /// "2 min 53 s", "48 s", "1 h 05 min".
     /// Rows of the plan table at most (the totals cover every well).
@@ -44,8 +44,8 @@ private:
     /// Words a message line from what it keeps (its time and message), in the language shown.
     static void wordLine(QListWidgetItem* item);
 
-    jobs::RecipeRunner* m_runner;
-    jobs::InterruptedDecider m_decide;
+    dev::jobs::RecipeRunner* m_runner;
+    dev::jobs::InterruptedDecider m_decide;
     std::function<bool(const QString&)> m_confirm;
     bool m_runnable = false;
     QLabel* m_summary;

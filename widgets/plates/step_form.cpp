@@ -14,7 +14,7 @@
 
 namespace ui {
 
-using plates::StepType;
+using motion::plates::StepType;
 
 namespace {
 bool takes(StepType t, const char* field)
@@ -66,7 +66,7 @@ void StepForm::build()
     // puts its field on the next line rather than pushing the form wider than the tab.
     m_form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     m_type = new QComboBox(this);
-    for (int i = 0; i < plates::kStepTypeCount; ++i)
+    for (int i = 0; i < motion::plates::kStepTypeCount; ++i)
         m_type->addItem(stepTypeTitle(static_cast<StepType>(i)), i);  // the id is the item data
     m_plate = new QComboBox(this);
     m_wells = new QLineEdit(this);
@@ -87,11 +87,11 @@ void StepForm::build()
     sr->addWidget(speedHost, 1);
     m_cycles = new NumberField(this);
     m_cycles->setInteger(true);
-    m_cycles->setRange(1, plates::kMaxCycles);
+    m_cycles->setRange(1, motion::plates::kMaxCycles);
     m_cycles->setFieldName(tr("Cycles"));
     m_cycles->setMaximumWidth(120);
     m_secondsRow = new QWidget(this);
-    m_seconds = stepNumber(m_secondsRow, 0, plates::kMaxWaitS, tr("Wait"), tr(" s").trimmed());
+    m_seconds = stepNumber(m_secondsRow, 0, motion::plates::kMaxWaitS, tr("Wait"), tr(" s").trimmed());
     m_offsetRow = new QWidget(this);
     m_offset = stepNumber(m_offsetRow, 0, 50, tr("Touch-off"), tr(" mm").trimmed());
     m_offset->setHelp(tr("Touch-off: how far from the well's centre toward its +x wall the tip goes"));
@@ -222,7 +222,7 @@ std::vector<std::string> StepForm::wellsFromText(const QString& text)
     return {t.toStdString()};
 }
 
-void StepForm::setStep(const plates::Step& step, int index)
+void StepForm::setStep(const motion::plates::Step& step, int index)
 {
     m_step = step;
     m_index = index;

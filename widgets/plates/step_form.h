@@ -24,23 +24,23 @@ public:
     void setChoices(const QStringList& plates, const QStringList& stations);
     /// Shows `step` (index for the title); index −1 empties and disables the form.
     /// Values out of their field's range are shown as they are, marked invalid.
-    void setStep(const plates::Step& step, int index);
-    const plates::Step& step() const { return m_step; }
+    void setStep(const motion::plates::Step& step, int index);
+    const motion::plates::Step& step() const { return m_step; }
 
     /// Text for the wells field from a step's specs, and back.
     static QString wellsText(const std::vector<std::string>& specs);
     static std::vector<std::string> wellsFromText(const QString& text);
 
 signals:
-    void edited(const plates::Step& step, const QString& field);
+    void edited(const motion::plates::Step& step, const QString& field);
 
 private:
     void build();
-    void showFieldsOf(plates::StepType t);
+    void showFieldsOf(motion::plates::StepType t);
     void load();
     void changed(const QString& field);
 
-    plates::Step m_step;
+    motion::plates::Step m_step;
     int m_index = -1;
     bool m_loading = false;
     QFormLayout* m_form;

@@ -14,9 +14,9 @@ struct StepTexts {
 QString number(double v) { return QString::number(v, 'g', 10); }
 } // namespace
 
-QString stepTypeTitle(plates::StepType type)
+QString stepTypeTitle(motion::plates::StepType type)
 {
-    using plates::StepType;
+    using motion::plates::StepType;
     switch (type) {
     case StepType::Aspirate: return StepTexts::tr("Aspirate");
     case StepType::Dispense: return StepTexts::tr("Dispense");
@@ -26,12 +26,12 @@ QString stepTypeTitle(plates::StepType type)
     case StepType::Wait: return StepTexts::tr("Wait");
     case StepType::TouchOff: return StepTexts::tr("Touch off");
     }
-    return QString::fromLatin1(plates::stepTypeName(type));
+    return QString::fromLatin1(motion::plates::stepTypeName(type));
 }
 
-QString opTitle(const plates::PlanOp& op)
+QString opTitle(const motion::plates::PlanOp& op)
 {
-    using plates::StepType;
+    using motion::plates::StepType;
     const QString where = !op.station.empty() ? StepTexts::tr("station %1").arg(QString::fromStdString(op.station))
                                               : QString::fromStdString(op.plate) + QLatin1Char(' ') + QString::fromStdString(op.well);
     const QString v = number(op.volumeUl);
@@ -44,7 +44,7 @@ QString opTitle(const plates::PlanOp& op)
     case StepType::Wait: return StepTexts::tr("Wait %1 s").arg(number(op.moves.empty() ? 0 : op.moves.front().seconds));
     case StepType::TouchOff: return StepTexts::tr("Touch off in %1").arg(where);
     }
-    return words::text(op.label());
+    return ui::words::text(op.label());
 }
 
 } // namespace ui

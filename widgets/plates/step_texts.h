@@ -10,9 +10,9 @@
 namespace ui {
 
 /// "Aspirate", "Dispense", "Mix", "Wash", "Air gap", "Wait", "Touch off".
-QString stepTypeTitle(plates::StepType type);
+QString stepTypeTitle(motion::plates::StepType type);
 
 /// One op for the plan table: "Dispense 10 µL into assay B3", "Wash 200 µL at station wash".
-QString opTitle(const plates::PlanOp& op);
+QString opTitle(const motion::plates::PlanOp& op);
 
 } // namespace ui

@@ -11,7 +11,7 @@
 #include <cmath>
 #include <map>
 
-namespace report {
+namespace ui::report {
 
 using motion::metrology::Direction;
 using motion::metrology::Evaluation;
@@ -19,7 +19,7 @@ using motion::metrology::Figures;
 
 namespace {
 
-QString tr(const char* text) { return QCoreApplication::translate("report", text); }
+QString tr(const char* text) { return QCoreApplication::translate("ui::report", text); }
 
 QString um(std::optional<double> mm, int decimals = 2)
 {
@@ -47,7 +47,7 @@ QString setUpText(const AxisReportInput& in)
 {
     QStringList lines;
     lines << tr("Instrument: %1").arg(in.instrument);
-    lines << tr("Reference: %1").arg(words::text(in.source));
+    lines << tr("Reference: %1").arg(ui::words::text(in.source));
     const Evaluation& e = in.result.evaluation;
     QStringList targets;
     for (const auto& t : e.targets)
@@ -61,9 +61,9 @@ QString setUpText(const AxisReportInput& in)
     if (in.test) {
         const auto& t = *in.test;
         lines << tr("Feed %1, overrun %2, dwell %3; settled within %4 for %5 (timeout %6)")
-                     .arg(words::number(t.feedMmS, msg::Unit::MmPerS), words::number(t.overrunMm, msg::Unit::Mm),
-                          words::number(t.dwellS, msg::Unit::S), words::number(t.settle.toleranceUm, msg::Unit::Um),
-                          words::number(t.settle.windowS, msg::Unit::S), words::number(t.settle.timeoutS, msg::Unit::S));
+                     .arg(ui::words::number(t.feedMmS, motion::msg::Unit::MmPerS), ui::words::number(t.overrunMm, motion::msg::Unit::Mm),
+                          ui::words::number(t.dwellS, motion::msg::Unit::S), ui::words::number(t.settle.toleranceUm, motion::msg::Unit::Um),
+                          ui::words::number(t.settle.windowS, motion::msg::Unit::S), ui::words::number(t.settle.timeoutS, motion::msg::Unit::S));
     }
     if (!in.result.readingsFile.empty())
         lines << tr("Readings: %1").arg(QString::fromStdString(in.result.readingsFile));
@@ -80,11 +80,11 @@ std::vector<QStringList> figuresTable(const AccuracyReportFigures& after, const 
     else
         rows.push_back({tr("Figure"), tr("Value (µm)"), tr("Limit (µm)"), tr("Verdict")});
     for (const FigureRow& r : kFigureRows) {
-        const auto value = accuracyfiles::figureByKey(after.figures, r.key);
-        if (!value && !(before && accuracyfiles::figureByKey(before->figures, r.key)))
+        const auto value = dev::files::accuracy::figureByKey(after.figures, r.key);
+        if (!value && !(before && dev::files::accuracy::figureByKey(before->figures, r.key)))
             continue;
         if (before) {
-            const auto b = accuracyfiles::figureByKey(before->figures, r.key);
+            const auto b = dev::files::accuracy::figureByKey(before->figures, r.key);
             QString gain = QStringLiteral("—");
             if (b && value && std::fabs(*value) > 1e-9 && std::string(r.key) != "B_mean")
                 gain = QStringLiteral("%1×").arg(QLocale().toString(std::fabs(*b) / std::fabs(*value), 'f', 1));
@@ -263,4 +263,4 @@ bool writeAxisReport(const QString& pdfPath, const AxisReportInput& in, QString*
     return writeAtomically(pdfPath, [&](const QString& temp) { return renderAxis(temp, in); }, error);
 }
 
-} // namespace report
+} // namespace ui::report

@@ -19,16 +19,16 @@
 #include <optional>
 #include <vector>
 
-namespace report {
+namespace ui::report {
 
 struct AxisReportInput {
     QString title;                                   ///< "Positioning accuracy, stage X"
     QString instrument;                              ///< model, family
-    msg::Message source;                             ///< where the readings came from (accuracy.source.*)
+    motion::msg::Message source;                             ///< where the readings came from (accuracy.source.*)
     std::optional<motion::metrology::AxisTest> test; ///< the set-up, when known
-    accuracyfiles::AccuracyResult result;
+    dev::files::accuracy::AccuracyResult result;
     std::vector<motion::metrology::Reading> readings;
-    std::optional<accuracyfiles::AccuracyResult> before;  ///< the same test without compensation
+    std::optional<dev::files::accuracy::AccuracyResult> before;  ///< the same test without compensation
     std::optional<motion::metrology::FitTable> fit;       ///< the compensation fitted to these readings
     QString created;                                 ///< date and time, as the reader's locale writes them
 };
@@ -47,4 +47,4 @@ bool canRender();
 bool writeAxisReport(const QString& pdfPath, const AxisReportInput& in, QString* error);
 bool writeCircleReport(const QString& pdfPath, const CircleReportInput& in, QString* error);
 
-} // namespace report
+} // namespace ui::report

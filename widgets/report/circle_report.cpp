@@ -10,10 +10,10 @@
 
 #include <cmath>
 
-namespace report {
+namespace ui::report {
 namespace {
 
-QString tr(const char* text) { return QCoreApplication::translate("report", text); }
+QString tr(const char* text) { return QCoreApplication::translate("ui::report", text); }
 QString um(double mm) { return QLocale().toString(mm * 1e3, 'f', 2); }
 
 void drawPolar(QPainter& p, const QRectF& rect, const CircleReportInput& in, double magnification)
@@ -48,7 +48,7 @@ void drawPolar(QPainter& p, const QRectF& rect, const CircleReportInput& in, dou
     p.setPen(Qt::black);
     p.drawText(QRectF(rect.left(), rect.bottom() - 4, rect.width(), 4), Qt::AlignLeft | Qt::AlignVCenter,
                tr("radius %1, deviation from the least-squares circle magnified %2×; dashed: the nominal circle")
-                   .arg(words::number(R, msg::Unit::Mm))
+                   .arg(ui::words::number(R, motion::msg::Unit::Mm))
                    .arg(magnification, 0, 'g', 6));
 }
 
@@ -62,9 +62,9 @@ bool renderCircle(const QString& path, const CircleReportInput& in)
     page.title(in.title);
     const auto& t = in.test;
     page.paragraph(tr("Instrument: %1\nPlane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolution")
-                       .arg(in.instrument, QString::fromStdString(t.axes), words::number(t.centreMm.xMm, msg::Unit::Mm),
-                            words::number(t.centreMm.yMm, msg::Unit::Mm), words::number(t.radiusMm, msg::Unit::Mm),
-                            words::number(t.feedMmS, msg::Unit::MmPerS), words::number(t.leadArcDeg, msg::Unit::Deg))
+                       .arg(in.instrument, QString::fromStdString(t.axes), ui::words::number(t.centreMm.xMm, motion::msg::Unit::Mm),
+                            ui::words::number(t.centreMm.yMm, motion::msg::Unit::Mm), ui::words::number(t.radiusMm, motion::msg::Unit::Mm),
+                            ui::words::number(t.feedMmS, motion::msg::Unit::MmPerS), ui::words::number(t.leadArcDeg, motion::msg::Unit::Deg))
                        .arg(t.samplesPerRevolution),
                    8.5);
     page.heading(tr("Figures (ISO 230-4, µm)"));
@@ -104,4 +104,4 @@ bool writeCircleReport(const QString& pdfPath, const CircleReportInput& in, QStr
     return writeAtomically(pdfPath, [&](const QString& temp) { return renderCircle(temp, in); }, error);
 }
 
-} // namespace report
+} // namespace ui::report

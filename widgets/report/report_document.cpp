@@ -5,7 +5,7 @@
 #include <QPageLayout>
 #include <QPageSize>
 
-namespace report {
+namespace ui::report {
 
 Document::Document(const QString& path) : m_writer(path)
 {
@@ -31,7 +31,7 @@ bool writeAtomically(const QString& pdfPath, const std::function<bool(const QStr
     auto fail = [&] {
         QFile::remove(temp);
         if (error)
-            *error = QCoreApplication::translate("report", "cannot write %1").arg(pdfPath);
+            *error = QCoreApplication::translate("ui::report", "cannot write %1").arg(pdfPath);
         return false;
     };
     if (!render(temp))
@@ -42,4 +42,4 @@ bool writeAtomically(const QString& pdfPath, const std::function<bool(const QStr
     return true;
 }
 
-} // namespace report
+} // namespace ui::report

@@ -7,7 +7,7 @@
 
 #include <functional>
 
-namespace report {
+namespace ui::report {
 
 class Document {
 public:
@@ -30,4 +30,4 @@ private:
 /// failure leaves no half-written report. False with a sentence in `error`.
 bool writeAtomically(const QString& pdfPath, const std::function<bool(const QString& tempPath)>& render, QString* error);
 
-} // namespace report
+} // namespace ui::report

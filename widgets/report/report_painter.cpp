@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace report {
+namespace ui::report {
 
 Page::Page(QPainter& p) : m_p(p) {}
 
@@ -199,4 +199,4 @@ void drawPlot(QPainter& p, const QRectF& rect, const PlotSpec& spec)
     }
 }
 
-} // namespace report
+} // namespace ui::report

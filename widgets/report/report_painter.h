@@ -11,7 +11,7 @@
 #include <optional>
 #include <vector>
 
-namespace report {
+namespace ui::report {
 
 /// A painter whose unit is the millimetre, with a cursor that moves down the page.
 class Page {
@@ -69,4 +69,4 @@ QFont pageFont(const QPainter& p, double pointSize, bool bold);
 /// A "nice" tick step (1, 2 or 5 × 10^k) for a span and about `count` ticks.
 double niceStep(double span, int count);
 
-} // namespace report
+} // namespace ui::report

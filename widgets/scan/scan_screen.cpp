@@ -36,13 +36,13 @@
 
 namespace ui {
 
-using words::duration;
+using ui::words::duration;
 
 using namespace motion::scan;
-using jobs::ScanRunner;
+using dev::jobs::ScanRunner;
 
 ScanScreen::ScanScreen(dev::Instrument* stage, QWidget* parent)
-    : QWidget(parent), m_stage(stage), m_runner(new ScanRunner(stage, this)), m_launch(std::make_unique<jobs::ScanLaunch>(m_runner))
+    : QWidget(parent), m_stage(stage), m_runner(new ScanRunner(stage, this)), m_launch(std::make_unique<dev::jobs::ScanLaunch>(m_runner))
 {
     auto* v = new QVBoxLayout(this);
     m_summary = new QLabel;
@@ -145,7 +145,7 @@ ScanScreen::ScanScreen(dev::Instrument* stage, QWidget* parent)
         m_map->setProgress(m_taken, m_runner->isActive() ? m_runner->currentTile() : -1);
     });
     connect(m_runner, &ScanRunner::triggered, this, [this](int tile, quint64) { m_map->setProgress(m_taken, tile); });
-    connect(m_runner, &ScanRunner::problem, this, [this](const msg::Message& m) { emit problem(words::text(m)); });
+    connect(m_runner, &ScanRunner::problem, this, [this](const motion::msg::Message& m) { emit problem(ui::words::text(m)); });
     connect(m_runner, &ScanRunner::finished, this, [this](const QStringList& exports) {
         emit notice(tr("Scan finished: %1 tiles taken. Exports written to %2.").arg(m_runner->totalTiles()).arg(m_runner->folder()));
         (void)exports;
@@ -257,11 +257,11 @@ QWidget* ScanScreen::buildRunPanel()
 }
 
 ScanPlan ScanScreen::plan() const { return m_form->plan(); }
-QString ScanScreen::planText() const { return QString::fromStdString(scanfile::writePlan(plan())); }
+QString ScanScreen::planText() const { return QString::fromStdString(dev::files::scan::writePlan(plan())); }
 
 bool ScanScreen::setPlanText(const QString& text, QString* error)
 {
-    const auto r = scanfile::parsePlan(text.toStdString());
+    const auto r = dev::files::scan::parsePlan(text.toStdString());
     if (!r.plan) {
         *error = QString::fromStdString(r.problems.format("plan")).trimmed();
         return false;
@@ -309,9 +309,9 @@ void ScanScreen::showTab(int index) { m_leftTabs->setCurrentIndex(std::clamp(ind
 bool ScanScreen::openPlan(const QString& path)
 {
     ScanPlan p;
-    jsonio::Problems problems;
-    if (!scanfile::loadPlan(path, &p, &problems)) {
-        emit problem(tr("Cannot open the plan:\n%1").arg(words::fileProblems(problems, QFileInfo(path).fileName()).join(QLatin1Char('\n'))));
+    dev::files::json::Problems problems;
+    if (!dev::files::scan::loadPlan(path, &p, &problems)) {
+        emit problem(tr("Cannot open the plan:\n%1").arg(ui::words::fileProblems(problems, QFileInfo(path).fileName()).join(QLatin1Char('\n'))));
         return false;
     }
     setPlan(p);
@@ -328,9 +328,9 @@ bool ScanScreen::savePlan(const QString& path)
         emit problem(tr("The plan is not saved: %1").arg(typed));  // a file never gets a number nobody typed
         return false;
     }
-    msg::Message error;
-    if (!scanfile::savePlan(path, plan(), &error)) {
-        emit problem(words::text(error));
+    motion::msg::Message error;
+    if (!dev::files::scan::savePlan(path, plan(), &error)) {
+        emit problem(ui::words::text(error));
         return false;
     }
     emit notice(tr("Saved the plan to %1.").arg(path));
@@ -339,14 +339,14 @@ bool ScanScreen::savePlan(const QString& path)
 
 StageModel ScanScreen::stageModel() const
 {
-    if (m_stage->isReady() && m_stage->identity().kind == proto::DeviceKind::Stage)
-        return jobs::stageModelOf(m_stage->identity(), m_stage->softLimits());
+    if (m_stage->isReady() && m_stage->identity().kind == dev::proto::DeviceKind::Stage)
+        return dev::jobs::stageModelOf(m_stage->identity(), m_stage->softLimits());
     return StageModel{};
 }
 
 void ScanScreen::onStageIdentity()
 {
-    if (!m_stage->isReady() || m_stage->identity().kind != proto::DeviceKind::Stage)
+    if (!m_stage->isReady() || m_stage->identity().kind != dev::proto::DeviceKind::Stage)
         return;
     const auto& a = m_stage->identity().axes;
     if (a.size() >= 2)
@@ -375,7 +375,7 @@ void ScanScreen::replan()
         lines << typed;
     if (!m_form->polygonError().isEmpty())
         lines << tr("Polygon: %1").arg(m_form->polygonError());
-    lines << words::problems(problems);
+    lines << ui::words::problems(problems);
     m_valid = lines.isEmpty();
     m_layout = m_valid ? layoutScan(p) : ScanLayout{};
     m_estimate = m_valid ? estimateScan(p, m_layout, stageModel()) : ScanEstimate{};
@@ -446,12 +446,12 @@ void ScanScreen::updateRunUi()
         text = tr("Ready. The run log and exports go to the output folder.");
     else if (active)
         text = tr("%1 · tile %2 of %3 · about %4 left")
-                   .arg(words::term(ScanRunner::stateTerm(st)))
+                   .arg(ui::words::term(ScanRunner::stateTerm(st)))
                    .arg(m_runner->currentTile() + 1)
                    .arg(m_runner->totalTiles())
                    .arg(duration(m_runner->etaS()));
     else
-        text = tr("%1 · %2 of %3 tiles taken").arg(words::term(ScanRunner::stateTerm(st))).arg(m_runner->takenTiles()).arg(m_runner->totalTiles());
+        text = tr("%1 · %2 of %3 tiles taken").arg(ui::words::term(ScanRunner::stateTerm(st))).arg(m_runner->takenTiles()).arg(m_runner->totalTiles());
     m_runState->setText(text);
 }
 
@@ -490,11 +490,11 @@ bool ScanScreen::run()
         return false;
     }
     handCameraToRunner();
-    using Kind = jobs::ScanDecision::Kind;
-    jobs::ScanDecision d = m_launch->prepare(plan(), folder);
+    using Kind = dev::jobs::ScanDecision::Kind;
+    dev::jobs::ScanDecision d = m_launch->prepare(plan(), folder);
     if (d.kind == Kind::OtherScansLog) {
-        if (!confirm(tr("%1\n\nStart this scan anew in that folder? The old run log is kept under another name.").arg(words::text(d.error)))) {
-            emit problem(words::text(d.error));
+        if (!confirm(tr("%1\n\nStart this scan anew in that folder? The old run log is kept under another name.").arg(ui::words::text(d.error)))) {
+            emit problem(ui::words::text(d.error));
             return false;
         }
         d = m_launch->beginAnew();
@@ -506,18 +506,18 @@ bool ScanScreen::run()
         d = m_launch->beginAnew();
     }
     if (d.kind != Kind::Blocked && d.kind != Kind::Ready) {
-        emit problem(words::text(d.error));
+        emit problem(ui::words::text(d.error));
         return false;
     }
     replan();  // the run's taken tiles on the map
     if (d.kind == Kind::Blocked) {
         QStringList blockers;
-        for (const msg::Message& m : d.blockers)
-            blockers << words::text(m);
+        for (const motion::msg::Message& m : d.blockers)
+            blockers << ui::words::text(m);
         emit problem(tr("The scan cannot start: %1").arg(blockers.join(QStringLiteral("; "))));
         return false;
     }
-    const jobs::ScanOutlook& o = d.outlook;
+    const dev::jobs::ScanOutlook& o = d.outlook;
     // Only the move is news when the scan is short: that question may be waived for the session.
     const Confirm ask = o.longApproach && !o.longRun && m_confirmLongMove ? m_confirmLongMove
                                                                           : Confirm([this](const QString& q) { return confirm(q); });
@@ -529,9 +529,9 @@ bool ScanScreen::run()
                                .arg(o.firstTileMm.xMm, 0, 'f', 2)
                                .arg(o.firstTileMm.yMm, 0, 'f', 2)))
         return false;
-    msg::Message error;
+    motion::msg::Message error;
     if (!m_launch->start(&error)) {
-        emit problem(words::text(error));
+        emit problem(ui::words::text(error));
         return false;
     }
     if (o.resume)
@@ -566,14 +566,14 @@ bool ScanScreen::exportFiles()
     }
     const ScanPlan p = plan();
     QStringList written;
-    msg::Message error;
+    motion::msg::Message error;
     // The run's measured positions when this plan ran into this folder, else the planned ones.
     const QString folder = outputFolder();
     const bool measured = m_launch->holds(layoutFingerprint(p, m_layout), &folder) && m_runner->takenTiles() > 0;
     const bool ok = measured ? m_runner->writeExports(&written, &error)
-                             : scanfile::writeExports(outputFolder(), p, m_layout, scanfile::plannedRecords(p, m_layout), &written, &error);
+                             : dev::files::scan::writeExports(outputFolder(), p, m_layout, dev::files::scan::plannedRecords(p, m_layout), &written, &error);
     if (!ok) {
-        emit problem(tr("Export failed: %1").arg(words::text(error)));
+        emit problem(tr("Export failed: %1").arg(ui::words::text(error)));
         return false;
     }
     emit notice(measured ? tr("Exported %1 tiles with the positions measured so far to %2.").arg(m_layout.tiles.size()).arg(outputFolder())

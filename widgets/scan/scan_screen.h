@@ -19,7 +19,7 @@ class QProgressBar;
 class QPushButton;
 class QTimer;
 
-namespace jobs {
+namespace dev::jobs {
 class ScanLaunch;
 class ScanRunner;
 }
@@ -42,7 +42,7 @@ public:
     enum class FileAction { Open, Save, Folder };
     /// Asks for a file or folder; "" = cancelled. The composition root supplies dialogs.
     using FileChooser = std::function<QString(FileAction action, const QString& title, const QString& filter)>;
-    /// Asked before a long run (jobs::ScanLaunch says which) or before setting an old run
+    /// Asked before a long run (dev::jobs::ScanLaunch says which) or before setting an old run
     /// aside; true = go ahead.
     using Confirm = std::function<bool(const QString& question)>;
 
@@ -82,7 +82,7 @@ public:
     void abort();
     bool exportFiles();
 
-    jobs::ScanRunner* runner() const { return m_runner; }
+    dev::jobs::ScanRunner* runner() const { return m_runner; }
     ScanStageMap* map() const { return m_map; }
     ScanPlanForm* form() const { return m_form; }
     const motion::scan::ScanLayout& layout() const { return m_layout; }
@@ -112,8 +112,8 @@ private:
     QString choose(FileAction action, const QString& title, const QString& filter);
 
     dev::Instrument* m_stage;
-    jobs::ScanRunner* m_runner;
-    std::unique_ptr<jobs::ScanLaunch> m_launch;  ///< what Run does, shared with the CLI
+    dev::jobs::ScanRunner* m_runner;
+    std::unique_ptr<dev::jobs::ScanLaunch> m_launch;  ///< what Run does, shared with the CLI
     ScanStageMap* m_map;
     ScanPlanForm* m_form;
     QTabWidget* m_leftTabs;

@@ -144,7 +144,7 @@ void StepTestPanel::addResult(const motion::control::Record& r, const motion::co
                               metricText(m.iae * k),
                               metricText(m.ise * k * k),
                               metricText(m.peakOutput * k),
-                              mm ? (std::isnan(in5) ? tr("never") : metricText(in5 * 1000)) : words::term(motion::control::endReasonTerm(r.reason)),
+                              mm ? (std::isnan(in5) ? tr("never") : metricText(in5 * 1000)) : ui::words::term(motion::control::endReasonTerm(r.reason)),
                               cycle};
     for (int row = 0; row < 9; ++row) {
         auto* item = new QTableWidgetItem(cells[row]);

@@ -55,7 +55,7 @@ QStringList farTerms(const DiscreteGains& next, const DiscreteGains& now, double
 }
 } // namespace
 
-TuningScreen::TuningScreen(tele::TelemetryHub* hub, QWidget* parent) : QWidget(parent), m_hub(hub)
+TuningScreen::TuningScreen(dev::tele::TelemetryHub* hub, QWidget* parent) : QWidget(parent), m_hub(hub)
 {
     auto* v = new QVBoxLayout(this);
     auto* top = new QHBoxLayout;
@@ -121,20 +121,20 @@ TuningScreen::TuningScreen(tele::TelemetryHub* hub, QWidget* parent) : QWidget(p
 
     m_runner = new dev::TuningRunner(this);
     connect(m_runner, &dev::TuningRunner::stateChanged, this, &TuningScreen::onRunnerState);
-    connect(m_runner, &dev::TuningRunner::progress, this, [this](double f, const msg::Message& text) {
+    connect(m_runner, &dev::TuningRunner::progress, this, [this](double f, const motion::msg::Message& text) {
         m_progress->setValue(static_cast<int>(std::lround(1000 * f)));
-        say(words::text(text));
+        say(ui::words::text(text));
     });
-    connect(m_runner, &dev::TuningRunner::message, this, [this](const msg::Message& m) { say(words::text(m), true); });
-    connect(m_runner, &dev::TuningRunner::finished, this, [this](bool ok, const msg::Message& m) { onFinished(ok, words::text(m)); });
-    connect(m_runner, &dev::TuningRunner::recordArrived, this, [this](const Record& r, const msg::Message& label, int kind) {
+    connect(m_runner, &dev::TuningRunner::message, this, [this](const motion::msg::Message& m) { say(ui::words::text(m), true); });
+    connect(m_runner, &dev::TuningRunner::finished, this, [this](bool ok, const motion::msg::Message& m) { onFinished(ok, ui::words::text(m)); });
+    connect(m_runner, &dev::TuningRunner::recordArrived, this, [this](const Record& r, const motion::msg::Message& label, int kind) {
         // The trials and the relay's own cycle; forced runs are points on a frequency
         // response, not something to watch.
         if (kind < 2)
-            m_zn->showRun(r, words::text(label));
+            m_zn->showRun(r, ui::words::text(label));
     });
-    connect(m_runner, &dev::TuningRunner::stepTestDone, this, [this](const Record& r, const StepVerdict& m, const msg::Message& label) {
-        m_steps->addResult(r, m, QStringLiteral("%1 (%2)").arg(words::text(label), describeGains(m_runGains, m_gains->periodS())));
+    connect(m_runner, &dev::TuningRunner::stepTestDone, this, [this](const Record& r, const StepVerdict& m, const motion::msg::Message& label) {
+        m_steps->addResult(r, m, QStringLiteral("%1 (%2)").arg(ui::words::text(label), describeGains(m_runGains, m_gains->periodS())));
     });
     connect(m_runner, &dev::TuningRunner::ultimateFound, this, [this](double, double) {
         m_lastResult = m_runner->result();
@@ -178,8 +178,8 @@ TuningScreen::TuningScreen(tele::TelemetryHub* hub, QWidget* parent) : QWidget(p
     m_liveTimer.setInterval(100);
     connect(&m_liveTimer, &QTimer::timeout, this, &TuningScreen::drawLive);
     if (m_hub)
-        connect(m_hub, &tele::TelemetryHub::subscriptionChanged, this, [this](int instrument, int rateHz, const msg::Message& m) {
-            const QString note = words::text(m);
+        connect(m_hub, &dev::tele::TelemetryHub::subscriptionChanged, this, [this](int instrument, int rateHz, const motion::msg::Message& m) {
+            const QString note = ui::words::text(m);
             const Choice* c = choice();
             if (!c || c->instrument < 0 || m_instruments[c->instrument].index != instrument || !m_liveTimer.isActive())
                 return;
@@ -202,9 +202,9 @@ bool TuningScreen::setModelPlant(const QString& spec, QString* error)
 {
     const auto p = parsePlant(spec.toStdString());
     if (!p) {
-        m_plantError->setText(words::text(p.error()));
+        m_plantError->setText(ui::words::text(p.error()));
         if (error)
-            *error = words::text(p.error());
+            *error = ui::words::text(p.error());
         return false;
     }
     m_plantError->clear();
@@ -235,13 +235,13 @@ void TuningScreen::onTargetChosen()
         m_steps->setUnit(QString());
         m_zn->setUnit(QString());
         m_gains->setTarget(QString::fromStdString(m_plantSpec.text()), m_plantSpec.periodS, false, m_modelGains, tr("model defaults"));
-        const msg::Message why = whyNoUltimateGain(m_plantSpec);
+        const motion::msg::Message why = whyNoUltimateGain(m_plantSpec);
         if (!why.empty())
-            m_zn->clearResult(tr("This plant cannot be tuned by Ziegler–Nichols: %1.").arg(words::text(why)));
+            m_zn->clearResult(tr("This plant cannot be tuned by Ziegler–Nichols: %1.").arg(ui::words::text(why)));
     } else {
         Instrument* in = instrumentOf(*c);
         auto target = std::make_unique<dev::InstrumentTarget>(in->tuning, c->axis, in->name);
-        connect(target.get(), &dev::TuningTarget::runProgress, this, [this](double, const msg::Message& what) { say(words::text(what)); });
+        connect(target.get(), &dev::TuningTarget::runProgress, this, [this](double, const motion::msg::Message& what) { say(ui::words::text(what)); });
         connect(target.get(), &dev::TuningTarget::testRunning, this, [this](bool running) {
             m_deviceTestRunning = running;
             updateLiveWant();
@@ -272,7 +272,7 @@ void TuningScreen::readGains()
             return;  // another target was chosen meanwhile (a new name for the same one is no other)
         const QString name = now->name;
         if (e) {
-            self->m_gains->clearTarget(words::text(e->message));
+            self->m_gains->clearTarget(ui::words::text(e->message));
             return;
         }
         if (auto* t = dynamic_cast<dev::InstrumentTarget*>(self->m_targetObj.get()))
@@ -313,7 +313,7 @@ void TuningScreen::applyGains(const DiscreteGains& g, bool save, const QString& 
         if (e) {
             --self->m_ownGainChanges;  // refused: no announcement will come
             // The device's own reason ("… the previous ones stay"); the editors keep the rejected set to fix.
-            self->say(words::text(e->message), true);
+            self->say(ui::words::text(e->message), true);
             return;
         }
         if (const Choice* now = self->choice(); now && now->instrument == instrument && now->axis == axis)
@@ -343,7 +343,7 @@ bool TuningScreen::runStepTest()
         s.runS = std::min(env.maxDurationS * 0.99, m_haveResult ? 30 * m_lastResult.tuS : 20.0);
     }
     m_runGains = s.gains;
-    return m_runner->startStepTest(m_targetObj.get(), s, msg::make("tuning.label.step", {msg::integer("step", m_steps->runs() + 1, msg::Unit::None)}));
+    return m_runner->startStepTest(m_targetObj.get(), s, motion::msg::make("tuning.label.step", {motion::msg::integer("step", m_steps->runs() + 1, motion::msg::Unit::None)}));
 }
 
 bool TuningScreen::startAssistant()
@@ -435,8 +435,8 @@ void TuningScreen::updateLiveWant()
     const int index = m_instruments[c->instrument].index;
     const auto axis = static_cast<std::uint8_t>(c->axis);
     m_hub->setWanted(QLatin1String(kLiveConsumer),
-                     {tele::ChannelKey{index, {axis, proto::ChannelKind::Commanded}}, tele::ChannelKey{index, {axis, proto::ChannelKind::Measured}},
-                      tele::ChannelKey{index, {axis, proto::ChannelKind::ControllerU}}},
+                     {dev::tele::ChannelKey{index, {axis, dev::proto::ChannelKind::Commanded}}, dev::tele::ChannelKey{index, {axis, dev::proto::ChannelKind::Measured}},
+                      dev::tele::ChannelKey{index, {axis, dev::proto::ChannelKind::ControllerU}}},
                      1000);
     m_liveStartS = m_hub->latestTimeS(index);
     m_liveTimer.start();
@@ -449,8 +449,8 @@ void TuningScreen::drawLive()
         return;
     const int index = m_instruments[c->instrument].index;
     const auto axis = static_cast<std::uint8_t>(c->axis);
-    const tele::ChannelStore* y = m_hub->store(tele::ChannelKey{index, {axis, proto::ChannelKind::Measured}});
-    const tele::ChannelStore* u = m_hub->store(tele::ChannelKey{index, {axis, proto::ChannelKind::ControllerU}});
+    const dev::tele::ChannelStore* y = m_hub->store(dev::tele::ChannelKey{index, {axis, dev::proto::ChannelKind::Measured}});
+    const dev::tele::ChannelStore* u = m_hub->store(dev::tele::ChannelKey{index, {axis, dev::proto::ChannelKind::ControllerU}});
     if (!y || !u || y->empty() || u->empty())
         return;
     const double newest = y->lastTime();
@@ -477,9 +477,9 @@ bool TuningScreen::saveResults(const QString& given)
         path = m_chooser(tr("Save tuning results"), tr("Tuning results (*.tuning.json)"), true);
     if (path.isEmpty())
         return false;
-    msg::Message error;
-    if (!files::saveTuningFile(path, m_lastResult, &error)) {
-        say(words::text(error), true);
+    motion::msg::Message error;
+    if (!dev::files::saveTuningFile(path, m_lastResult, &error)) {
+        say(ui::words::text(error), true);
         return false;
     }
     say(tr("tuning results saved to %1").arg(QDir::toNativeSeparators(path)));
@@ -498,10 +498,10 @@ bool TuningScreen::loadResults(const QString& given)
         path = m_chooser(tr("Open tuning results"), tr("Tuning results (*.tuning.json)"), false);
     if (path.isEmpty())
         return false;
-    jsonio::Problems problems;
-    const auto r = files::loadTuningFile(path, &problems);
+    dev::files::json::Problems problems;
+    const auto r = dev::files::loadTuningFile(path, &problems);
     if (!r) {
-        say(words::fileProblems(problems, QFileInfo(path).fileName()).join(QLatin1Char('\n')), true);
+        say(ui::words::fileProblems(problems, QFileInfo(path).fileName()).join(QLatin1Char('\n')), true);
         return false;
     }
     m_lastResult = *r;

@@ -23,7 +23,7 @@ class QProgressBar;
 class QPushButton;
 class QTabWidget;
 
-namespace tele {
+namespace dev::tele {
 class TelemetryHub;
 }
 
@@ -42,7 +42,7 @@ public:
     using Confirm = std::function<bool(const QString& question)>;
     static constexpr const char* kModelTarget = "model";
 
-    explicit TuningScreen(tele::TelemetryHub* hub, QWidget* parent = nullptr);
+    explicit TuningScreen(dev::tele::TelemetryHub* hub, QWidget* parent = nullptr);
     ~TuningScreen() override;
     /// Its closed-loop axes become targets through its tuning(); an instrument without
     /// gains to tune says why under the target list.
@@ -122,7 +122,7 @@ private:
     const Choice* choice() const;
     Instrument* instrumentOf(const Choice& c);
 
-    QPointer<tele::TelemetryHub> m_hub;  ///< the main window's: it may go before this screen does
+    QPointer<dev::tele::TelemetryHub> m_hub;  ///< the main window's: it may go before this screen does
     QList<Instrument> m_instruments;
     QList<Choice> m_choices;
     QComboBox* m_target;

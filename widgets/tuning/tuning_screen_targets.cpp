@@ -91,7 +91,7 @@ void TuningScreen::rebuildTargets()
         if (!in.client || in.client->identity().axes.isEmpty())
             continue;
         if (!in.client->capabilities().testFlag(dev::Capability::PidGains))
-            unavailable << QStringLiteral("%1: %2").arg(in.name, words::text(in.client->whyNot(dev::Capability::PidGains)));
+            unavailable << QStringLiteral("%1: %2").arg(in.name, ui::words::text(in.client->whyNot(dev::Capability::PidGains)));
         if (!in.tuning)
             continue;
         for (int axis : in.tuning->tunableAxes())

@@ -114,7 +114,7 @@ ZnPanel::ZnPanel(QWidget* parent) : QWidget(parent)
     m_verify->setObjectName(QStringLiteral("verifyRule"));
     m_verify->addItem(tr("no verification"), QString());
     for (const auto& r : motion::control::tuningRules())
-        m_verify->addItem(words::term(std::string("tuning.rule.") + r.id), QString::fromLatin1(r.id));
+        m_verify->addItem(ui::words::term(std::string("tuning.rule.") + r.id), QString::fromLatin1(r.id));
     m_verify->setCurrentIndex(m_verify->findData(QStringLiteral("zn-pid")));
     verifyForm->addRow(tr("Verify with"), m_verify);
     left->addLayout(verifyForm);
@@ -254,7 +254,7 @@ QString ZnPanel::verificationText(const motion::control::TuningResult& r)
     using motion::control::StepOutcome;
     const auto& v = *r.verification;
     const auto* rule = motion::control::findRule(v.rule);
-    const QString name = rule ? words::term(std::string("tuning.rule.") + rule->id) : QString::fromStdString(v.rule);
+    const QString name = rule ? ui::words::term(std::string("tuning.rule.") + rule->id) : QString::fromStdString(v.rule);
     const bool mm = r.unit == "mm";
     // A metric the response did not give (a run cut short) is said so, never "nan %".
     const QString overshoot = std::isfinite(v.metrics.overshootPct) ? tr("%1 %").arg(ruleNumber(v.metrics.overshootPct)) : tr("not measured");
@@ -262,7 +262,7 @@ QString ZnPanel::verificationText(const motion::control::TuningResult& r)
     // band may still never have come to rest, and that is said first.
     switch (v.metrics.outcome) {
     case StepOutcome::Unstable:
-        return tr("<br>Verification with %1: <b>unstable</b> (%2)").arg(name, words::tuningOutcome(v.outcome));
+        return tr("<br>Verification with %1: <b>unstable</b> (%2)").arg(name, ui::words::tuningOutcome(v.outcome));
     case StepOutcome::LimitCycle: {
         const auto& lc = v.limitCycle;
         if (mm)
@@ -276,7 +276,7 @@ QString ZnPanel::verificationText(const motion::control::TuningResult& r)
     case StepOutcome::Settled: break;
     }
     QString text = v.metrics.outcome == StepOutcome::Settled
-        ? tr("<br>Verification with %1: overshoot %2, %3").arg(name, overshoot, words::tuningOutcome(v.outcome))
+        ? tr("<br>Verification with %1: overshoot %2, %3").arg(name, overshoot, ui::words::tuningOutcome(v.outcome))
         : tr("<br>Verification with %1: <b>did not settle</b> within 2 % of its step; overshoot %2").arg(name, overshoot);
     if (mm)
         text += v.settledInside5umS >= 0 ? tr(", inside ±5 µm of the target from %1 ms").arg(ruleNumber(v.settledInside5umS * 1000))
@@ -306,14 +306,14 @@ void ZnPanel::showResult(const motion::control::TuningResult& r)
         const auto d = motion::control::toDiscrete(c, r.controlPeriodS);
         const int row = m_rules->rowCount();
         m_rules->insertRow(row);
-        const QString cells[7] = {words::term(std::string("tuning.rule.") + rule.id), ruleNumber(c.kp), ruleNumber(c.kiPerS), ruleNumber(c.kdS), ruleNumber(d.kp), ruleNumber(d.ki), ruleNumber(d.kd)};
+        const QString cells[7] = {ui::words::term(std::string("tuning.rule.") + rule.id), ruleNumber(c.kp), ruleNumber(c.kiPerS), ruleNumber(c.kdS), ruleNumber(d.kp), ruleNumber(d.ki), ruleNumber(d.kd)};
         for (int col = 0; col < 7; ++col)
             m_rules->setItem(row, col, new QTableWidgetItem(cells[col]));
         m_rules->item(row, 0)->setToolTip(tr("Source: %1").arg(tr(rule.source)));
         auto* use = new QPushButton(tr("Use these"), m_rules);
         use->setObjectName(QStringLiteral("use_%1").arg(QLatin1String(rule.id)));
         const QString id = QString::fromLatin1(rule.id);
-        const QString source = tr("Z-N %1: %2").arg(r.method == "relay" ? tr("relay") : tr("ultimate gain"), words::term(std::string("tuning.rule.") + rule.id));
+        const QString source = tr("Z-N %1: %2").arg(r.method == "relay" ? tr("relay") : tr("ultimate gain"), ui::words::term(std::string("tuning.rule.") + rule.id));
         connect(use, &QPushButton::clicked, this, [this, id, d, source] { emit useRule(id, d, source); });
         use->setMaximumHeight(m_rules->verticalHeader()->defaultSectionSize() - 2);
         m_rules->setCellWidget(row, 7, use);

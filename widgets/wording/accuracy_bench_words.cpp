@@ -1,30 +1,30 @@
 // Words for the accuracy bench's runs that the table in accuracy_words.cpp does
-// not word: ids accuracy.*, compensation.*, file.* and gauge.* (context words::AccuracyBenchWords),
+// not word: ids accuracy.*, compensation.*, file.* and gauge.* (context ui::words::AccuracyBenchWords),
 // and the terms direction.* and rotation.* (docs/accuracy.md, appendix).
 #include "widgets/wording/areas.h"
 #include "widgets/wording/wording.h"
 
 #include <QCoreApplication>
 
-namespace words::areas {
+namespace ui::words::areas {
 namespace {
 
 class AccuracyBenchWords {
-    Q_DECLARE_TR_FUNCTIONS(words::AccuracyBenchWords)
+    Q_DECLARE_TR_FUNCTIONS(ui::words::AccuracyBenchWords)
 public:
-    static QString accuracy(const msg::Message& m);
-    static QString run(const msg::Message& m);
-    static QString files(const msg::Message& m);
-    static QString compensation(const msg::Message& m);
-    static QString gauge(const msg::Message& m);
-    static QString source(const msg::Message& m);
+    static QString accuracy(const motion::msg::Message& m);
+    static QString run(const motion::msg::Message& m);
+    static QString files(const motion::msg::Message& m);
+    static QString compensation(const motion::msg::Message& m);
+    static QString gauge(const motion::msg::Message& m);
+    static QString source(const motion::msg::Message& m);
     static QString term(const std::string& id);
 };
 
-QString benchArg(const msg::Message& m, const char* name) { return words::arg(m, name); }
-bool benchHas(const msg::Message& m, const char* name) { return m.arg(name) != nullptr; }
+QString benchArg(const motion::msg::Message& m, const char* name) { return ui::words::arg(m, name); }
+bool benchHas(const motion::msg::Message& m, const char* name) { return m.arg(name) != nullptr; }
 
-QString AccuracyBenchWords::accuracy(const msg::Message& m)
+QString AccuracyBenchWords::accuracy(const motion::msg::Message& m)
 {
     const std::string& id = m.id;
     if (id.rfind("accuracy.run.", 0) == 0)
@@ -121,7 +121,7 @@ QString AccuracyBenchWords::accuracy(const msg::Message& m)
     return {};
 }
 
-QString AccuracyBenchWords::run(const msg::Message& m)
+QString AccuracyBenchWords::run(const motion::msg::Message& m)
 {
     const std::string& id = m.id;
     if (id == "accuracy.run.busy")
@@ -183,7 +183,7 @@ QString AccuracyBenchWords::run(const msg::Message& m)
     return {};
 }
 
-QString AccuracyBenchWords::files(const msg::Message& m)
+QString AccuracyBenchWords::files(const motion::msg::Message& m)
 {
     const std::string& id = m.id;
     if (id == "accuracy.csv.missing_column")
@@ -242,7 +242,7 @@ QString AccuracyBenchWords::files(const msg::Message& m)
     return {};
 }
 
-QString AccuracyBenchWords::compensation(const msg::Message& m)
+QString AccuracyBenchWords::compensation(const motion::msg::Message& m)
 {
     const std::string& id = m.id;
     if (id == "compensation.too_few_points")
@@ -293,7 +293,7 @@ QString AccuracyBenchWords::compensation(const msg::Message& m)
     return {};
 }
 
-QString AccuracyBenchWords::gauge(const msg::Message& m)
+QString AccuracyBenchWords::gauge(const motion::msg::Message& m)
 {
     const std::string& id = m.id;
     if (id == "gauge.not_a_reading")
@@ -317,7 +317,7 @@ QString AccuracyBenchWords::gauge(const msg::Message& m)
     return {};
 }
 
-QString AccuracyBenchWords::source(const msg::Message& m)
+QString AccuracyBenchWords::source(const motion::msg::Message& m)
 {
     const std::string& id = m.id;
     if (id == "accuracy.source.readback")
@@ -362,9 +362,9 @@ QString AccuracyBenchWords::term(const std::string& id)
 
 } // namespace
 
-QString accuracyBench(const msg::Message& m) { return AccuracyBenchWords::accuracy(m); }
-QString compensationBench(const msg::Message& m) { return AccuracyBenchWords::compensation(m); }
-QString gauge(const msg::Message& m) { return AccuracyBenchWords::gauge(m); }
+QString accuracyBench(const motion::msg::Message& m) { return AccuracyBenchWords::accuracy(m); }
+QString compensationBench(const motion::msg::Message& m) { return AccuracyBenchWords::compensation(m); }
+QString gauge(const motion::msg::Message& m) { return AccuracyBenchWords::gauge(m); }
 QString accuracyBenchTerm(const std::string& id) { return AccuracyBenchWords::term(id); }
 
-} // namespace words::areas
+} // namespace ui::words::areas

@@ -5,29 +5,29 @@
 
 #include <QCoreApplication>
 
-namespace words::areas {
+namespace ui::words::areas {
 namespace {
 
 // clang-format off
 const Row kRows[] = {
-    {"camera.none", QT_TRANSLATE_NOOP3("words::CameraWords", "no camera is chosen", "camera.none")},
-    {"camera.not_open", QT_TRANSLATE_NOOP3("words::CameraWords", "the camera %1 is not open", "camera.not_open"), "source"},
-    {"camera.closed_during_capture", QT_TRANSLATE_NOOP3("words::CameraWords", "the camera %1 was closed while it took an image", "camera.closed_during_capture"), "source"},
-    {"camera.sim.no_stage", QT_TRANSLATE_NOOP3("words::CameraWords", "the simulated camera has no simulated stage to look at (is the simulator connected?)", "camera.sim.no_stage")},
-    {"camera.sim.needs_simulator", QT_TRANSLATE_NOOP3("words::CameraWords", "the simulated camera 'sim' looks at the in-process simulator's stage: use it with --sim stage (benchpilot-sim's camera is sim:PATH)", "camera.sim.needs_simulator")},
-    {"camera.source.unknown", QT_TRANSLATE_NOOP3("words::CameraWords", "'%1' is not a camera: give sim, sim:PATH, uvc[:NAME], command:CMD or folder:DIR", "camera.source.unknown"), "source"},
-    {"camera.source.needs_argument", QT_TRANSLATE_NOOP3("words::CameraWords", "'%1': %2: needs what follows the colon (%2:…)", "camera.source.needs_argument"), "source,kind"},
-    {"camera.source.not_available", QT_TRANSLATE_NOOP3("words::CameraWords", "the camera source '%1' is not in this build of BenchPilot yet; 'camera list' shows what is", "camera.source.not_available"), "source"},
-    {"camera.sensor_mismatch", QT_TRANSLATE_NOOP3("words::CameraWords", "the camera %1 gives images of %2 × %3 px, but the plan's camera has %4 × %5 px: correct the plan's sensor (or the camera's resolution), or every tile lands in the wrong place", "camera.sensor_mismatch"), "camera,width,height,plan_width,plan_height"},
-    {"camera.tiff.cannot_write", QT_TRANSLATE_NOOP3("words::CameraWords", "cannot write the image %1: %2", "camera.tiff.cannot_write"), "file,detail"},
-    {"camera.tiff.cannot_read", QT_TRANSLATE_NOOP3("words::CameraWords", "cannot read the image %1: %2", "camera.tiff.cannot_read"), "file,detail"},
-    {"camera.tiff.unsupported", QT_TRANSLATE_NOOP3("words::CameraWords", "the image %1 is %2 a pixel; BenchPilot reads 8- or 16-bit grey and 8-bit RGB", "camera.tiff.unsupported"), "file,detail"},
-    {"camera.tiff.empty_frame", QT_TRANSLATE_NOOP3("words::CameraWords", "the camera gave an empty image; nothing was written to %1", "camera.tiff.empty_frame"), "file,detail"},
+    {"camera.none", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "no camera is chosen", "camera.none")},
+    {"camera.not_open", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "the camera %1 is not open", "camera.not_open"), "source"},
+    {"camera.closed_during_capture", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "the camera %1 was closed while it took an image", "camera.closed_during_capture"), "source"},
+    {"camera.sim.no_stage", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "the simulated camera has no simulated stage to look at (is the simulator connected?)", "camera.sim.no_stage")},
+    {"camera.sim.needs_simulator", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "the simulated camera 'sim' looks at the in-process simulator's stage: use it with --sim stage (benchpilot-sim's camera is sim:PATH)", "camera.sim.needs_simulator")},
+    {"camera.source.unknown", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "'%1' is not a camera: give sim, sim:PATH, uvc[:NAME], command:CMD or folder:DIR", "camera.source.unknown"), "source"},
+    {"camera.source.needs_argument", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "'%1': %2: needs what follows the colon (%2:…)", "camera.source.needs_argument"), "source,kind"},
+    {"camera.source.not_available", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "the camera source '%1' is not in this build of BenchPilot yet; 'camera list' shows what is", "camera.source.not_available"), "source"},
+    {"camera.sensor_mismatch", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "the camera %1 gives images of %2 × %3 px, but the plan's camera has %4 × %5 px: correct the plan's sensor (or the camera's resolution), or every tile lands in the wrong place", "camera.sensor_mismatch"), "camera,width,height,plan_width,plan_height"},
+    {"camera.tiff.cannot_write", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "cannot write the image %1: %2", "camera.tiff.cannot_write"), "file,detail"},
+    {"camera.tiff.cannot_read", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "cannot read the image %1: %2", "camera.tiff.cannot_read"), "file,detail"},
+    {"camera.tiff.unsupported", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "the image %1 is %2 a pixel; BenchPilot reads 8- or 16-bit grey and 8-bit RGB", "camera.tiff.unsupported"), "file,detail"},
+    {"camera.tiff.empty_frame", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "the camera gave an empty image; nothing was written to %1", "camera.tiff.empty_frame"), "file,detail"},
 };
 // clang-format on
 
 } // namespace
 
-QString camera(const msg::Message& m) { return fromRows("words::CameraWords", kRows, m); }
+QString camera(const motion::msg::Message& m) { return fromRows("ui::words::CameraWords", kRows, m); }
 
-} // namespace words::areas
+} // namespace ui::words::areas

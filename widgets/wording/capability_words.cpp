@@ -7,16 +7,16 @@
 
 #include <QCoreApplication>
 
-namespace words::areas {
+namespace ui::words::areas {
 namespace {
 
 /// The words, with tr() in one translation context (lupdate reads Class::tr calls).
 class CapabilityWords {
-    Q_DECLARE_TR_FUNCTIONS(words::CapabilityWords)
+    Q_DECLARE_TR_FUNCTIONS(ui::words::CapabilityWords)
 public:
     static QString lacking(dev::Capability c);
     static QString term(const std::string& id);
-    static QString text(const msg::Message& reason);
+    static QString text(const motion::msg::Message& reason);
 };
 
 /// What the instrument lacks, as the object of "has no …".
@@ -60,27 +60,27 @@ QString CapabilityWords::term(const std::string& id)
     return {};
 }
 
-QString CapabilityWords::text(const msg::Message& reason)
+QString CapabilityWords::text(const motion::msg::Message& reason)
 {
-    const QString instrument = words::arg(reason, "instrument");
+    const QString instrument = ui::words::arg(reason, "instrument");
     if (reason.id == dev::kNotConnectedId)
         return instrument.isEmpty() ? tr("The instrument is not connected.")
                                     : tr("The %1 is not connected.").arg(instrument);
     for (dev::Capability c : dev::allCapabilities()) {
         if (reason.id != dev::missingId(c))
             continue;
-        const QString family = words::arg(reason, "family");
+        const QString family = ui::words::arg(reason, "family");
         const QString who = family.isEmpty() ? tr("The %1").arg(instrument) : tr("The %1 (%2)").arg(instrument, family);
         if (!reason.arg("because"))
             return tr("%1 has no %2.").arg(who, lacking(c));
-        return tr("%1 has no %2: %3.").arg(who, lacking(c), words::arg(reason, "because"));
+        return tr("%1 has no %2: %3.").arg(who, lacking(c), ui::words::arg(reason, "because"));
     }
     return {};
 }
 
 } // namespace
 
-QString capability(const msg::Message& m) { return CapabilityWords::text(m); }
+QString capability(const motion::msg::Message& m) { return CapabilityWords::text(m); }
 QString capabilityTerm(const std::string& id) { return CapabilityWords::term(id); }
 
-} // namespace words::areas
+} // namespace ui::words::areas

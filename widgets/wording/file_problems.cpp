@@ -9,13 +9,13 @@
 
 #include <algorithm>
 
-namespace words {
+namespace ui::words {
 namespace {
 
 class ProblemWords {
-    Q_DECLARE_TR_FUNCTIONS(words::FileWords)
+    Q_DECLARE_TR_FUNCTIONS(ui::words::FileWords)
 public:
-    static QString line(const msg::Problem& p)
+    static QString line(const motion::msg::Problem& p)
     {
         QString out = p.isWarning() ? tr("warning: %1").arg(text(p.message)) : text(p.message);
         if (!p.path.empty())
@@ -29,21 +29,21 @@ public:
 
 } // namespace
 
-QString problem(const msg::Problem& p) { return ProblemWords::line(p); }
+QString problem(const motion::msg::Problem& p) { return ProblemWords::line(p); }
 
-QStringList problems(const msg::Problems& list)
+QStringList problems(const motion::msg::Problems& list)
 {
     QStringList out;
-    for (const msg::Problem& p : list)
+    for (const motion::msg::Problem& p : list)
         out << problem(p);
     return out;
 }
 
-QStringList fileProblems(const jsonio::Problems& problems, const QString& file)
+QStringList fileProblems(const dev::files::json::Problems& problems, const QString& file)
 {
-    msg::Problems sorted;
-    jsonio::appendSorted(sorted, problems, file.toStdString());
-    return words::problems(sorted);
+    motion::msg::Problems sorted;
+    dev::files::json::appendSorted(sorted, problems, file.toStdString());
+    return ui::words::problems(sorted);
 }
 
 QString tuningOutcome(const std::string& key)
@@ -66,4 +66,4 @@ QString tuningOutcome(const std::string& key)
     return QString::fromStdString(key);
 }
 
-} // namespace words
+} // namespace ui::words

@@ -8,19 +8,19 @@
 
 #include <QCoreApplication>
 
-namespace words {
+namespace ui::words {
 
 QString modelName(const dev::DeviceIdentity& id)
 {
     if (!id.firmware.startsWith(QLatin1String("benchpilot-sim")))
         return id.model;
     switch (id.kind) {
-    case proto::DeviceKind::Analyzer:
-        return QCoreApplication::translate("words::IdentityWords", "BenchPilot analyzer manipulator (simulated)");
-    case proto::DeviceKind::Stage:
-        return QCoreApplication::translate("words::IdentityWords", "BenchPilot microscope stage (simulated)");
+    case dev::proto::DeviceKind::Analyzer:
+        return QCoreApplication::translate("ui::words::IdentityWords", "BenchPilot analyzer manipulator (simulated)");
+    case dev::proto::DeviceKind::Stage:
+        return QCoreApplication::translate("ui::words::IdentityWords", "BenchPilot microscope stage (simulated)");
     }
     return id.model;
 }
 
-} // namespace words
+} // namespace ui::words

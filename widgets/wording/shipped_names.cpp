@@ -7,21 +7,21 @@
 
 #include <cstring>
 
-namespace words {
+namespace ui::words {
 namespace {
 
 // clang-format off
 const char* const kShippedNames[] = {
-    QT_TRANSLATE_NOOP("words::ShippedNames", "back"),
-    QT_TRANSLATE_NOOP("words::ShippedNames", "front"),
-    QT_TRANSLATE_NOOP("words::ShippedNames", "wash trough"),
-    QT_TRANSLATE_NOOP("words::ShippedNames", "waste trough"),
-    QT_TRANSLATE_NOOP("words::ShippedNames", "6-well plate, 16.8 mL"),
-    QT_TRANSLATE_NOOP("words::ShippedNames", "12-well plate, 6.9 mL"),
-    QT_TRANSLATE_NOOP("words::ShippedNames", "24-well plate, 3.4 mL"),
-    QT_TRANSLATE_NOOP("words::ShippedNames", "48-well plate, 1.6 mL"),
-    QT_TRANSLATE_NOOP("words::ShippedNames", "96-well plate, 360 µL"),
-    QT_TRANSLATE_NOOP("words::ShippedNames", "384-well plate, 112 µL"),
+    QT_TRANSLATE_NOOP("ui::words::ShippedNames", "back"),
+    QT_TRANSLATE_NOOP("ui::words::ShippedNames", "front"),
+    QT_TRANSLATE_NOOP("ui::words::ShippedNames", "wash trough"),
+    QT_TRANSLATE_NOOP("ui::words::ShippedNames", "waste trough"),
+    QT_TRANSLATE_NOOP("ui::words::ShippedNames", "6-well plate, 16.8 mL"),
+    QT_TRANSLATE_NOOP("ui::words::ShippedNames", "12-well plate, 6.9 mL"),
+    QT_TRANSLATE_NOOP("ui::words::ShippedNames", "24-well plate, 3.4 mL"),
+    QT_TRANSLATE_NOOP("ui::words::ShippedNames", "48-well plate, 1.6 mL"),
+    QT_TRANSLATE_NOOP("ui::words::ShippedNames", "96-well plate, 360 µL"),
+    QT_TRANSLATE_NOOP("ui::words::ShippedNames", "384-well plate, 112 µL"),
 };
 // clang-format on
 
@@ -31,8 +31,8 @@ QString shippedName(const std::string& name)
 {
     for (const char* shipped : kShippedNames)
         if (name == shipped)
-            return QCoreApplication::translate("words::ShippedNames", shipped);
+            return QCoreApplication::translate("ui::words::ShippedNames", shipped);
     return QString::fromStdString(name);
 }
 
-} // namespace words
+} // namespace ui::words

@@ -3,7 +3,7 @@
 #include <QCoreApplication>
 #include <QLibraryInfo>
 
-namespace words {
+namespace ui::words {
 namespace {
 // Per thread: the GUI thread's JSON export must not silence another thread's
 // wording, and no lock is needed on the hot path of every tr().
@@ -84,4 +84,4 @@ bool Translators::setLanguage(const QString& requested)
     return true;
 }
 
-} // namespace words
+} // namespace ui::words

@@ -7,7 +7,7 @@
 //
 // A translator installed here can step aside without being removed: while an
 // EnglishScope lives on the calling thread it answers nothing, so tr() falls
-// back to the English source. words::englishText uses that to put English in
+// back to the English source. ui::words::englishText uses that to put English in
 // JSON while the screens show Chinese; removing the translators instead would
 // send LanguageChange to every widget each time a message is logged.
 #include <QLocale>
@@ -19,7 +19,7 @@
 #include <memory>
 #include <vector>
 
-namespace words {
+namespace ui::words {
 
 /// While one lives, the translators of this thread's Translators answer nothing.
 class EnglishScope {
@@ -29,7 +29,7 @@ public:
     EnglishScope(const EnglishScope&) = delete;
     EnglishScope& operator=(const EnglishScope&) = delete;
 };
-/// True inside an EnglishScope (words::number then writes C-locale digits too).
+/// True inside an EnglishScope (ui::words::number then writes C-locale digits too).
 bool englishOnly();
 
 /// A QTranslator that answers nothing inside an EnglishScope.
@@ -64,4 +64,4 @@ private:
     QString m_language = QStringLiteral("en");
 };
 
-} // namespace words
+} // namespace ui::words

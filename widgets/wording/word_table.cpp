@@ -5,7 +5,7 @@
 #include <QCoreApplication>
 #include <QStringList>
 
-namespace words {
+namespace ui::words {
 
 QString fill(const QString& pattern, const QStringList& values)
 {
@@ -31,7 +31,7 @@ QString fill(const QString& pattern, const QStringList& values)
     return out;
 }
 
-QString fromRows(const char* context, const Row* rows, std::size_t count, const msg::Message& m)
+QString fromRows(const char* context, const Row* rows, std::size_t count, const motion::msg::Message& m)
 {
     for (std::size_t r = 0; r < count; ++r) {
         const Row& row = rows[r];
@@ -43,7 +43,7 @@ QString fromRows(const char* context, const Row* rows, std::size_t count, const 
         const QString names = QString::fromLatin1(row.args);
         if (!names.isEmpty())
             for (const QString& name : names.split(QLatin1Char(',')))
-                values << words::arg(m, name.trimmed().toStdString());
+                values << ui::words::arg(m, name.trimmed().toStdString());
         return fill(pattern, values);
     }
     return {};
@@ -57,4 +57,4 @@ QString fromTerms(const char* context, const TermRow* rows, std::size_t count, c
     return {};
 }
 
-} // namespace words
+} // namespace ui::words

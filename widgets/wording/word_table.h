@@ -5,8 +5,8 @@
 // depends on a count names that argument as its numerus: the source then has
 // "%Ln" for it (tr's plural forms: "1 well", "2 wells"; Chinese has one form).
 //
-//   const words::Row kRows[] = {
-//       {"pattern.not_above", QT_TRANSLATE_NOOP3("words::PatternWords", "must be above %1 (got %2)", "pattern.not_above"),
+//   const ui::words::Row kRows[] = {
+//       {"pattern.not_above", QT_TRANSLATE_NOOP3("ui::words::PatternWords", "must be above %1 (got %2)", "pattern.not_above"),
 //        "min,value"},
 //   };
 //
@@ -20,7 +20,7 @@
 #include <cstddef>
 #include <string>
 
-namespace words {
+namespace ui::words {
 
 /// What QT_TRANSLATE_NOOP3 expands to: {source, disambiguation}.
 struct Source {
@@ -42,9 +42,9 @@ struct TermRow {
 
 /// The sentence for `m` from `rows` in the current language, or a null QString
 /// when no row has its id. `context` is the rows' translation context.
-QString fromRows(const char* context, const Row* rows, std::size_t count, const msg::Message& m);
+QString fromRows(const char* context, const Row* rows, std::size_t count, const motion::msg::Message& m);
 template <std::size_t N>
-QString fromRows(const char* context, const Row (&rows)[N], const msg::Message& m)
+QString fromRows(const char* context, const Row (&rows)[N], const motion::msg::Message& m)
 {
     return fromRows(context, rows, N, m);
 }
@@ -71,4 +71,4 @@ bool hasRow(const Row (&rows)[N], const std::string& id)
 /// itself holds "%1", such as a file name, is left as it is).
 QString fill(const QString& pattern, const QStringList& values);
 
-} // namespace words
+} // namespace ui::words

@@ -11,10 +11,10 @@
 #include <cmath>
 #include <utility>
 
-namespace words {
+namespace ui::words {
 namespace {
 
-using SentenceFn = QString (*)(const msg::Message&);
+using SentenceFn = QString (*)(const motion::msg::Message&);
 using TermFn = QString (*)(const std::string&);
 
 /// Which area words which ids. Longest prefix first where prefixes nest.
@@ -59,9 +59,9 @@ bool startsWith(const std::string& s, const char* prefix)
 
 /// Digits after the decimal point that suit a unit: what an operator reads on the
 /// instrument (µm on a stage, 0.001 mm on the analyzer), not what a double holds.
-int decimalsOf(msg::Unit u)
+int decimalsOf(motion::msg::Unit u)
 {
-    using U = msg::Unit;
+    using U = motion::msg::Unit;
     switch (u) {
     case U::Count: return 0;
     case U::Mm: return 3;
@@ -91,9 +91,9 @@ int decimalsOf(msg::Unit u)
 
 } // namespace
 
-QString unitSymbol(msg::Unit unit)
+QString unitSymbol(motion::msg::Unit unit)
 {
-    using U = msg::Unit;
+    using U = motion::msg::Unit;
     switch (unit) {
     case U::None:
     case U::Count: return {};
@@ -127,19 +127,19 @@ QString duration(double seconds)
     const QLocale locale = englishOnly() ? QLocale::c() : QLocale();
     const long long s = std::llround(seconds);
     if (seconds < 10)
-        return QCoreApplication::translate("words::Durations", "%1 s").arg(locale.toString(seconds, 'f', 1));
+        return QCoreApplication::translate("ui::words::Durations", "%1 s").arg(locale.toString(seconds, 'f', 1));
     if (s < 60)
-        return QCoreApplication::translate("words::Durations", "%1 s").arg(locale.toString(s));
+        return QCoreApplication::translate("ui::words::Durations", "%1 s").arg(locale.toString(s));
     if (s < 3600)
-        return QCoreApplication::translate("words::Durations", "%1 min %2 s").arg(locale.toString(s / 60)).arg(s % 60, 2, 10, QLatin1Char('0'));
-    return QCoreApplication::translate("words::Durations", "%1 h %2 min").arg(locale.toString(s / 3600)).arg((s % 3600) / 60, 2, 10, QLatin1Char('0'));
+        return QCoreApplication::translate("ui::words::Durations", "%1 min %2 s").arg(locale.toString(s / 60)).arg(s % 60, 2, 10, QLatin1Char('0'));
+    return QCoreApplication::translate("ui::words::Durations", "%1 h %2 min").arg(locale.toString(s / 3600)).arg((s % 3600) / 60, 2, 10, QLatin1Char('0'));
 }
 
-QString number(double v, msg::Unit unit)
+QString number(double v, motion::msg::Unit unit)
 {
     if (!std::isfinite(v))
         return QString::number(v) + unitSymbol(unit);
-    if (unit == msg::Unit::S && v >= 60)
+    if (unit == motion::msg::Unit::S && v >= 60)
         return duration(v);
     const QLocale locale = englishOnly() ? QLocale::c() : QLocale();
     const int decimals = decimalsOf(unit);
@@ -155,23 +155,23 @@ QString number(double v, msg::Unit unit)
     return digits + unitSymbol(unit);
 }
 
-QString value(const msg::Arg& a)
+QString value(const motion::msg::Arg& a)
 {
     struct Visit {
-        const msg::Arg& arg;
+        const motion::msg::Arg& arg;
         QString operator()(std::monostate) const { return {}; }
         QString operator()(long long v) const { return (englishOnly() ? QLocale::c() : QLocale()).toString(v) + unitSymbol(arg.unit); }
         QString operator()(double v) const { return number(v, arg.unit); }
-        QString operator()(const msg::Verbatim& v) const { return QString::fromStdString(v.text); }
-        QString operator()(const msg::Term& t) const { return term(t.id); }
-        QString operator()(const std::shared_ptr<const msg::Message>& m) const { return m ? text(*m) : QString(); }
+        QString operator()(const motion::msg::Verbatim& v) const { return QString::fromStdString(v.text); }
+        QString operator()(const motion::msg::Term& t) const { return term(t.id); }
+        QString operator()(const std::shared_ptr<const motion::msg::Message>& m) const { return m ? text(*m) : QString(); }
     };
     return std::visit(Visit{a}, a.value);
 }
 
-QString arg(const msg::Message& m, const std::string& name)
+QString arg(const motion::msg::Message& m, const std::string& name)
 {
-    const msg::Arg* a = m.arg(name);
+    const motion::msg::Arg* a = m.arg(name);
     return a ? value(*a) : QString();
 }
 
@@ -208,7 +208,7 @@ QString eventDetail(const dev::DeviceEvent& e)
     return value(dev::eventDetail(e));  // one rule for which to show: dev::eventDetail's
 }
 
-QString text(const msg::Message& m)
+QString text(const motion::msg::Message& m)
 {
     if (m.empty())
         return {};
@@ -219,7 +219,7 @@ QString text(const msg::Message& m)
         if (!t.isNull())
             return t;
     }
-    return QString::fromStdString(msg::debugString(m));
+    return QString::fromStdString(motion::msg::debugString(m));
 }
 
-} // namespace words
+} // namespace ui::words

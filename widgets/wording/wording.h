@@ -19,12 +19,12 @@ struct DeviceEvent;
 struct DeviceIdentity;
 }
 
-namespace words {
+namespace ui::words {
 
 /// The sentence for `m` in the current language (the translators installed in
-/// QCoreApplication). An id no area knows comes back as msg::debugString, so
+/// QCoreApplication). An id no area knows comes back as motion::msg::debugString, so
 /// nothing is lost; tests/gui's pseudo-translation check and the id tests catch it.
-QString text(const msg::Message& m);
+QString text(const motion::msg::Message& m);
 /// What a device event says beyond its kind: the backend's worded form (an event
 /// reason, a GRBL alarm), or the device's own text where it has none.
 QString eventDetail(const dev::DeviceEvent& e);
@@ -36,8 +36,8 @@ QString sentence(const QString& text);
 /// One argument as text: a number in the current locale with its unit symbol (the
 /// unit's precision), a Verbatim as it is, a Term worded by term(), a nested
 /// message worded by text(). An absent argument gives an empty string.
-QString arg(const msg::Message& m, const std::string& name);
-QString value(const msg::Arg& a);
+QString arg(const motion::msg::Message& m, const std::string& name);
+QString value(const motion::msg::Arg& a);
 
 /// A span of time as people read it: "8.5 s", "42 s", "2 min 53 s", "1 h 05 min"; "—"
 /// when unknown (negative or not finite). Seconds from a minute on are read as minutes,
@@ -45,9 +45,9 @@ QString value(const msg::Arg& a);
 QString duration(double seconds);
 
 /// A number as the locale writes it, with the unit's symbol and precision.
-QString number(double v, msg::Unit unit);
+QString number(double v, motion::msg::Unit unit);
 /// " mm", " µm", "°", "": the SI symbol with its leading space (none for degrees).
-QString unitSymbol(msg::Unit unit);
+QString unitSymbol(motion::msg::Unit unit);
 
 /// A short term ("direction.up", "instrument.stage") in the current language; an
 /// unknown term id comes back as it is.
@@ -62,25 +62,25 @@ QString shippedName(const std::string& name);
 /// language from the kind it simulates; any other device's model as it gives it.
 QString modelName(const dev::DeviceIdentity& id);
 
-} // namespace words
+} // namespace ui::words
 
-namespace jsonio {
+namespace dev::files::json {
 class Problems;
-} // namespace jsonio
+} // namespace dev::files::json
 
-namespace words {
+namespace ui::words {
 
 /// Every problem a reader found in `file`, in the order of the file, worded by problem().
-QStringList fileProblems(const jsonio::Problems& problems, const QString& file);
+QStringList fileProblems(const dev::files::json::Problems& problems, const QString& file);
 
 /// A problem for a person, the one way the CLI, the API and the screens say it:
 /// "FILE:LINE:COLUMN: PATH: sentence", each part only where known ("FILE: sentence" for
 /// a file as a whole, "PATH: sentence" for a form), "warning: " before a warning's
 /// sentence. A caller that knows the field by another name (a CLI option) puts that
 /// name in `path` first.
-QString problem(const msg::Problem& p);
+QString problem(const motion::msg::Problem& p);
 /// problem() of each, in the order given, one line each.
-QStringList problems(const msg::Problems& list);
+QStringList problems(const motion::msg::Problems& list);
 
 /// How a tuning result stores a trial's or a verification's outcome ("decays",
 /// "hit the envelope", an end reason's name such as "settled"), for a person; a
@@ -91,11 +91,11 @@ QString tuningOutcome(const std::string& key);
 /// language from the kind it simulates; any other device's model as it gives it.
 QString modelName(const dev::DeviceIdentity& id);
 
-} // namespace words
+} // namespace ui::words
 
 class QJsonObject;
 
-namespace words {
+namespace ui::words {
 
 /// A message as JSON for the CLI's --json output and the scripting API, the same
 /// in every language: {"id": "...", "args": {"value": 2.5, "axis": "X", "reason":
@@ -103,22 +103,22 @@ namespace words {
 /// "message": "the English sentence"}. "units" holds only arguments that have one;
 /// a Term argument is its id. "message" is English whatever language is shown
 /// (englishText()), so scripts can log it and key on "id".
-QJsonObject toJson(const msg::Message& m);
+QJsonObject toJson(const motion::msg::Message& m);
 /// A problem: toJson of its message with "file", "line", "column" and "field" beside it
 /// where known, and "warning": true for a warning.
-QJsonObject toJson(const msg::Problem& p);
+QJsonObject toJson(const motion::msg::Problem& p);
 
 /// The sentence in English (the source text, C-locale numbers) even while a
 /// translation is shown.
-QString englishText(const msg::Message& m);
+QString englishText(const motion::msg::Message& m);
 /// A term in English, for JSON values that are words ("state": "running").
 QString englishTerm(const std::string& id);
 
 /// The unit's symbol for JSON, without the leading space: "mm", "µm", "" for none.
-QString unitKey(msg::Unit unit);
+QString unitKey(motion::msg::Unit unit);
 
 /// The instrument's model for people: BenchPilot's own simulator named in the current
 /// language from the kind it simulates; any other device's model as it gives it.
 QString modelName(const dev::DeviceIdentity& id);
 
-} // namespace words
+} // namespace ui::words

@@ -6,11 +6,11 @@
 #include <QJsonObject>
 #include <QJsonValue>
 
-namespace words {
+namespace ui::words {
 
-QString unitKey(msg::Unit unit) { return unitSymbol(unit).trimmed(); }
+QString unitKey(motion::msg::Unit unit) { return unitSymbol(unit).trimmed(); }
 
-QString englishText(const msg::Message& m)
+QString englishText(const motion::msg::Message& m)
 {
     // The translators step aside (translators.h) rather than being removed, so
     // the screens showing Chinese get no LanguageChange for every JSON line.
@@ -24,21 +24,21 @@ QString englishTerm(const std::string& id)
     return term(id);
 }
 
-QJsonObject toJson(const msg::Message& m)
+QJsonObject toJson(const motion::msg::Message& m)
 {
     QJsonObject args, units;
-    for (const msg::Arg& a : m.args) {
+    for (const motion::msg::Arg& a : m.args) {
         const QString name = QString::fromStdString(a.name);
         QJsonValue v;
         if (auto* i = std::get_if<long long>(&a.value))
             v = static_cast<qint64>(*i);
         else if (auto* d = std::get_if<double>(&a.value))
             v = *d;
-        else if (auto* s = std::get_if<msg::Verbatim>(&a.value))
+        else if (auto* s = std::get_if<motion::msg::Verbatim>(&a.value))
             v = QString::fromStdString(s->text);
-        else if (auto* t = std::get_if<msg::Term>(&a.value))
+        else if (auto* t = std::get_if<motion::msg::Term>(&a.value))
             v = QString::fromStdString(t->id);
-        else if (auto* n = std::get_if<std::shared_ptr<const msg::Message>>(&a.value); n && *n)
+        else if (auto* n = std::get_if<std::shared_ptr<const motion::msg::Message>>(&a.value); n && *n)
             v = toJson(**n);
         args.insert(name, v);
         if (!unitKey(a.unit).isEmpty())
@@ -51,7 +51,7 @@ QJsonObject toJson(const msg::Message& m)
     return o;
 }
 
-QJsonObject toJson(const msg::Problem& p)
+QJsonObject toJson(const motion::msg::Problem& p)
 {
     QJsonObject o = toJson(p.message);
     if (!p.file.empty())
@@ -67,4 +67,4 @@ QJsonObject toJson(const msg::Problem& p)
     return o;
 }
 
-} // namespace words
+} // namespace ui::words

@@ -65,13 +65,13 @@ void BenchPilotClient::setTransport(Transport* transport)
         m_timeoutTimer.start();
         sayHello(true);
     });
-    m_transportConnections << connect(transport, &Transport::failed, this, [this](const msg::Message& why) {
+    m_transportConnections << connect(transport, &Transport::failed, this, [this](const motion::msg::Message& why) {
         if (m_state != LinkState::Connecting)
             return;
         emit linkError(why);
         setState(LinkState::Disconnected);
     });
-    m_transportConnections << connect(transport, &Transport::lost, this, [this](const msg::Message& why) { linkGone(why); });
+    m_transportConnections << connect(transport, &Transport::lost, this, [this](const motion::msg::Message& why) { linkGone(why); });
 }
 
 QString BenchPilotClient::linkDescription() const { return m_transport ? m_transport->describe() : tr("no link"); }
@@ -91,7 +91,7 @@ void BenchPilotClient::setState(LinkState s)
 void BenchPilotClient::connectLink()
 {
     if (!m_transport) {
-        emit linkError(msg::make("link.no_connection_chosen"));
+        emit linkError(motion::msg::make("link.no_connection_chosen"));
         return;
     }
     if (m_state == LinkState::Connecting || m_state == LinkState::Identified || m_state == LinkState::Ready)
@@ -112,7 +112,7 @@ void BenchPilotClient::connectLink()
 void BenchPilotClient::disconnectLink()
 {
     stopAllJogs();
-    failAll(RequestError::Kind::LinkDown, msg::make("link.disconnected"));
+    failAll(RequestError::Kind::LinkDown, motion::msg::make("link.disconnected"));
     m_timeoutTimer.stop();
     m_jogTimer.stop();
     if (m_transport)
@@ -120,7 +120,7 @@ void BenchPilotClient::disconnectLink()
     setState(LinkState::Disconnected);
 }
 
-void BenchPilotClient::linkGone(const msg::Message& why)
+void BenchPilotClient::linkGone(const motion::msg::Message& why)
 {
     if (m_state == LinkState::Disconnected || m_state == LinkState::Lost)
         return;
@@ -130,7 +130,7 @@ void BenchPilotClient::linkGone(const msg::Message& why)
     m_timeoutTimer.stop();
     if (m_transport)
         m_transport->close();
-    emit linkError(msg::make("link.lost", {msg::nested("cause", why)}));
+    emit linkError(motion::msg::make("link.lost", {motion::msg::nested("cause", why)}));
     setState(LinkState::Lost);
 }
 
@@ -151,9 +151,9 @@ LinkStats BenchPilotClient::stats() const
 void BenchPilotClient::sayHello(bool readsExtensions)
 {
     // A device that knows no event reasons ignores that bit and sends its text alone.
-    const proto::Bytes payload =
-        readsExtensions ? proto::encode(proto::HelloRequest{proto::HelloReadsExtensions | proto::HelloReadsEventReasons}) : proto::Bytes{};
-    send(proto::MsgType::Hello, payload,
+    const dev::proto::Bytes payload =
+        readsExtensions ? dev::proto::encode(dev::proto::HelloRequest{dev::proto::HelloReadsExtensions | dev::proto::HelloReadsEventReasons}) : dev::proto::Bytes{};
+    send(dev::proto::MsgType::Hello, payload,
          [this, readsExtensions](const auto& err, const auto& reply) { onHello(err, reply, readsExtensions); });
 }
 
@@ -161,34 +161,34 @@ void BenchPilotClient::sayHello(bool readsExtensions)
 /// cable, port), frames that all arrived damaged until the handshake's patience ran out (a
 /// noisy line or a wrong baud rate), or damaged frames and then silence (the device went
 /// away mid-connect). One "no answer" for all three sent the operator to the wrong cause.
-msg::Message BenchPilotClient::connectUnanswered() const
+motion::msg::Message BenchPilotClient::connectUnanswered() const
 {
-    const msg::Arg link = msg::verbatim("link", linkDescription().toStdString());
+    const motion::msg::Arg link = motion::msg::verbatim("link", linkDescription().toStdString());
     const auto& ds = m_decoder.stats();
     const quint64 all = ds.crcErrors + ds.malformed;
     const quint64 damaged = all > m_damagedAtConnect ? all - m_damagedAtConnect : 0;
     if (damaged == 0)
-        return msg::make("link.no_answer", {link});
+        return motion::msg::make("link.no_answer", {link});
     const qint64 now = nowMs();
-    const msg::Arg frames = msg::integer("damaged", static_cast<long long>(damaged));
+    const motion::msg::Arg frames = motion::msg::integer("damaged", static_cast<long long>(damaged));
     if (now - m_connectStartedMs >= kConnectGiveUpMs)
-        return msg::make("link.only_damaged", {link, msg::real("seconds", (now - m_connectStartedMs) / 1000.0, msg::Unit::S), frames});
-    return msg::make("link.went_silent",
-                     {link, frames, msg::real("seconds", (now - std::max(m_lastDamagedFrameMs, m_lastFrameMs)) / 1000.0, msg::Unit::S)});
+        return motion::msg::make("link.only_damaged", {link, motion::msg::real("seconds", (now - m_connectStartedMs) / 1000.0, motion::msg::Unit::S), frames});
+    return motion::msg::make("link.went_silent",
+                     {link, frames, motion::msg::real("seconds", (now - std::max(m_lastDamagedFrameMs, m_lastFrameMs)) / 1000.0, motion::msg::Unit::S)});
 }
 
-void BenchPilotClient::onHello(const std::optional<RequestError>& err, const proto::Bytes& payload, bool askedExtensions)
+void BenchPilotClient::onHello(const std::optional<RequestError>& err, const dev::proto::Bytes& payload, bool askedExtensions)
 {
     if (m_state != LinkState::Connecting)
         return;
-    auto fail = [this](const msg::Message& why) {
+    auto fail = [this](const motion::msg::Message& why) {
         emit linkError(why);
         m_timeoutTimer.stop();
         if (m_transport)
             m_transport->close();
         setState(LinkState::Disconnected);
     };
-    if (err && askedExtensions && err->kind == RequestError::Kind::Device && err->code == proto::ErrorCode::BadPayload) {
+    if (err && askedExtensions && err->kind == RequestError::Kind::Device && err->code == dev::proto::ErrorCode::BadPayload) {
         // Protocol 1.0 firmware knows no HELLO payload: ask it the way it understands,
         // and time moves without its limits (docs/protocol.md, "HELLO").
         sayHello(false);
@@ -198,14 +198,14 @@ void BenchPilotClient::onHello(const std::optional<RequestError>& err, const pro
         fail(err->kind == RequestError::Kind::Timeout ? connectUnanswered() : err->message);
         return;
     }
-    const auto h = proto::decodeHelloReply(payload);
+    const auto h = dev::proto::decodeHelloReply(payload);
     if (!h) {
-        fail(msg::make("link.not_benchpilot", {msg::verbatim("link", linkDescription().toStdString())}));
+        fail(motion::msg::make("link.not_benchpilot", {motion::msg::verbatim("link", linkDescription().toStdString())}));
         return;
     }
-    if (h->protocolVersion != proto::kProtocolVersion) {
-        fail(msg::make("link.protocol_version", {msg::integer("device", h->protocolVersion, msg::Unit::None),
-                                                 msg::integer("host", proto::kProtocolVersion, msg::Unit::None)}));
+    if (h->protocolVersion != dev::proto::kProtocolVersion) {
+        fail(motion::msg::make("link.protocol_version", {motion::msg::integer("device", h->protocolVersion, motion::msg::Unit::None),
+                                                 motion::msg::integer("host", dev::proto::kProtocolVersion, motion::msg::Unit::None)}));
         return;
     }
     DeviceIdentity id;
@@ -255,16 +255,16 @@ void BenchPilotClient::onHello(const std::optional<RequestError>& err, const pro
     };
     refreshLimits(oneDone);
     m_statusPending = true;
-    send(proto::MsgType::Status, {}, [this, oneDone](const auto& e, const auto& p) {
+    send(dev::proto::MsgType::Status, {}, [this, oneDone](const auto& e, const auto& p) {
         m_statusPending = false;
         if (!e)
             applyStatus(p);
         oneDone();
     });
-    QVector<proto::ChannelRef> channels;
+    QVector<dev::proto::ChannelRef> channels;
     for (int i = 0; i < m_identity.axes.size(); ++i) {
-        channels.push_back({static_cast<std::uint8_t>(i), proto::ChannelKind::Commanded});
-        channels.push_back({static_cast<std::uint8_t>(i), proto::ChannelKind::Measured});
+        channels.push_back({static_cast<std::uint8_t>(i), dev::proto::ChannelKind::Commanded});
+        channels.push_back({static_cast<std::uint8_t>(i), dev::proto::ChannelKind::Measured});
     }
     subscribe(channels, kDefaultTelemetryHz, [oneDone](const auto&, const auto&) { oneDone(); });
 }

@@ -91,10 +91,10 @@ public:
     void readStatus(StatusCallback done) override;
     void dwell(double seconds, Callback done) override;
     void pulseTrigger(double widthS, Callback done = {}) override;
-    void subscribe(const QVector<proto::ChannelRef>& channels, int rateHz, SubscribeCallback done = {}) override;
-    const QVector<proto::ChannelRef>& subscribedChannels() const override { return m_channels; }
+    void subscribe(const QVector<dev::proto::ChannelRef>& channels, int rateHz, SubscribeCallback done = {}) override;
+    const QVector<dev::proto::ChannelRef>& subscribedChannels() const override { return m_channels; }
     int subscribedRateHz() const override { return m_rateHz; }
-    double toAxisUnits(const proto::ChannelRef& channel, std::int32_t value) const override;
+    double toAxisUnits(const dev::proto::ChannelRef& channel, std::int32_t value) const override;
     PathClient* paths() override;
     TuningClient* tuning() override;
     CompensationClient* compensation() override;
@@ -103,18 +103,18 @@ public:
     /// (tuning, paths) talk to the device without this class growing a method per message.
     /// A device refusal is also emitted as requestFailed, its message prefixed with `what`
     /// ("set gains refused: …") when `what` is given.
-    using ReplyCallback = std::function<void(const std::optional<RequestError>&, const proto::Bytes& payload)>;
-    void request(proto::MsgType type, const proto::Bytes& payload, ReplyCallback done, const std::string& what = {});
+    using ReplyCallback = std::function<void(const std::optional<RequestError>&, const dev::proto::Bytes& payload)>;
+    void request(dev::proto::MsgType type, const dev::proto::Bytes& payload, ReplyCallback done, const std::string& what = {});
     /// The HELLO capability bits (docs/protocol.md), for the parts.
     bool hasProtocolCapability(std::uint32_t bits) const { return (m_identity.protocolCapabilities & bits) == bits; }
 
 protected:
-    msg::Message missingReason(Capability c) const override;
+    motion::msg::Message missingReason(Capability c) const override;
 
 private:
-    using RawDone = std::function<void(const std::optional<RequestError>&, const proto::Bytes& payload)>;
+    using RawDone = std::function<void(const std::optional<RequestError>&, const dev::proto::Bytes& payload)>;
     struct Request {
-        proto::MsgType type;
+        dev::proto::MsgType type;
         std::uint16_t seq = 0;
         QByteArray wire;
         int attempts = 0;
@@ -126,29 +126,29 @@ private:
     };
 
     void setState(LinkState s);
-    void send(proto::MsgType type, const proto::Bytes& payload, RawDone done);
+    void send(dev::proto::MsgType type, const dev::proto::Bytes& payload, RawDone done);
     void transmit(Request& r);
     void pumpQueue();
     void onBytes(const QByteArray& bytes);
-    void onFrame(const proto::Frame& f);
-    void complete(Request r, const std::optional<RequestError>& err, const proto::Bytes& payload);
+    void onFrame(const dev::proto::Frame& f);
+    void complete(Request r, const std::optional<RequestError>& err, const dev::proto::Bytes& payload);
     void checkTimeouts();
-    void failAll(RequestError::Kind kind, const msg::Message& why);
+    void failAll(RequestError::Kind kind, const motion::msg::Message& why);
     /// Superseded velocity commands stop being retried: a late copy must not undo a newer one.
     void dropSupersededJogs(std::uint16_t newerSeq);
     bool seenEvent(std::uint16_t seq);
     void addRttSample(double ms);
     void sayHello(bool readsExtensions);
-    void onHello(const std::optional<RequestError>& err, const proto::Bytes& payload, bool askedExtensions);
-    msg::Message connectUnanswered() const;
+    void onHello(const std::optional<RequestError>& err, const dev::proto::Bytes& payload, bool askedExtensions);
+    motion::msg::Message connectUnanswered() const;
     void pollStatus();
-    void applyStatus(const proto::Bytes& payload);
+    void applyStatus(const dev::proto::Bytes& payload);
     void refreshLimits(std::function<void()> then = {});
     void refreshJogs();
     /// Calls `then` once a status reading shows every axis at rest (polling until it does).
     void whenStill(Callback then);
-    void linkGone(const msg::Message& why);
-    RequestError deviceError(const proto::ErrorReply& e) const;
+    void linkGone(const motion::msg::Message& why);
+    RequestError deviceError(const dev::proto::ErrorReply& e) const;
     RawDone wrap(Callback done, const std::string& what);
     qint64 nowMs() const;
 
@@ -158,8 +158,8 @@ private:
     DeviceIdentity m_identity;
     InstrumentStatus m_status;
     QVector<SoftLimits> m_limits;
-    proto::FrameDecoder m_decoder;
-    std::vector<proto::Frame> m_frames;
+    dev::proto::FrameDecoder m_decoder;
+    std::vector<dev::proto::Frame> m_frames;
     std::uint16_t m_nextSeq = 1;
     std::deque<Request> m_queue;          ///< queued requests, front is in flight when m_inFlight
     bool m_inFlight = false;
@@ -185,7 +185,7 @@ private:
     qint64 m_connectStartedMs = 0;        ///< when the transport opened and HELLO went out
     quint64 m_damagedAtConnect = 0;       ///< the decoder's damaged frames when this connect began
     QHash<int, double> m_jogs;            ///< axis → velocity (axis units/s) while held
-    QVector<proto::ChannelRef> m_channels;
+    QVector<dev::proto::ChannelRef> m_channels;
     int m_rateHz = 0;
     std::uint32_t m_nextSampleIndex = 0;
     bool m_haveSampleIndex = false;

@@ -12,7 +12,7 @@ std::int32_t toWire(double v, double scale) { return static_cast<std::int32_t>(s
 
 // ---- commands -------------------------------------------------------------------
 
-static std::optional<RequestError> invalid(const msg::Message& why)
+static std::optional<RequestError> invalid(const motion::msg::Message& why)
 {
     RequestError e;
     e.kind = RequestError::Kind::Invalid;
@@ -22,56 +22,56 @@ static std::optional<RequestError> invalid(const msg::Message& why)
 
 void BenchPilotClient::home(quint8 axisMask, Callback done)
 {
-    send(proto::MsgType::Home, proto::encode(proto::HomeRequest{axisMask}), wrap(std::move(done), "request.home"));
+    send(dev::proto::MsgType::Home, dev::proto::encode(dev::proto::HomeRequest{axisMask}), wrap(std::move(done), "request.home"));
 }
 
 void BenchPilotClient::move(const QVector<QPair<int, double>>& targets, bool relative, double speed, Callback done)
 {
-    auto refuse = [&](const msg::Message& why) {
+    auto refuse = [&](const motion::msg::Message& why) {
         const auto e = invalid(why);
         emit requestFailed(*e);
         if (done)
             done(e);
     };
     if (targets.isEmpty())
-        return refuse(msg::make("request.move_no_axis"));
-    proto::MoveRequest m;
+        return refuse(motion::msg::make("request.move_no_axis"));
+    dev::proto::MoveRequest m;
     m.relative = relative;
     QMap<int, double> byAxis;
     for (const auto& [axis, value] : targets) {
         if (axis < 0 || axis >= m_identity.axes.size())
-            return refuse(msg::make("request.move_no_such_axis", {msg::integer("index", axis, msg::Unit::None)}));
+            return refuse(motion::msg::make("request.move_no_such_axis", {motion::msg::integer("index", axis, motion::msg::Unit::None)}));
         if (!std::isfinite(value))
-            return refuse(msg::make("request.move_target_not_number", {msg::verbatim("axis", QString(m_identity.axes[axis].letter).toStdString())}));
+            return refuse(motion::msg::make("request.move_target_not_number", {motion::msg::verbatim("axis", QString(m_identity.axes[axis].letter).toStdString())}));
         if (byAxis.contains(axis))
-            return refuse(msg::make("request.move_axis_twice", {msg::verbatim("axis", QString(m_identity.axes[axis].letter).toStdString())}));
+            return refuse(motion::msg::make("request.move_axis_twice", {motion::msg::verbatim("axis", QString(m_identity.axes[axis].letter).toStdString())}));
         byAxis[axis] = value;
     }
     if (!std::isfinite(speed) || speed < 0)
-        return refuse(msg::make("request.move_bad_speed"));
+        return refuse(motion::msg::make("request.move_bad_speed"));
     for (auto it = byAxis.cbegin(); it != byAxis.cend(); ++it) {
         m.axisMask = static_cast<std::uint8_t>(m.axisMask | (1u << it.key()));
         m.targets.push_back(toWire(it.value(), m_identity.axes[it.key()].wireScale()));
     }
     m.speed = static_cast<std::uint32_t>(std::llround(speed * m_identity.axes[byAxis.firstKey()].wireScale()));
-    send(proto::MsgType::Move, proto::encode(m), wrap(std::move(done), "request.move"));
+    send(dev::proto::MsgType::Move, dev::proto::encode(m), wrap(std::move(done), "request.move"));
 }
 
 void BenchPilotClient::jogStep(int axis, double delta, double speed, Callback done)
 {
     if (axis < 0 || axis >= m_identity.axes.size() || !std::isfinite(delta) || !std::isfinite(speed) || speed < 0) {
-        const auto e = invalid(msg::make("request.jog_step_invalid"));
+        const auto e = invalid(motion::msg::make("request.jog_step_invalid"));
         emit requestFailed(*e);
         if (done)
             done(e);
         return;
     }
     const double k = m_identity.axes[axis].wireScale();
-    proto::JogStepRequest r;
+    dev::proto::JogStepRequest r;
     r.axis = static_cast<std::uint8_t>(axis);
     r.delta = toWire(delta, k);
     r.speed = static_cast<std::uint32_t>(std::llround(speed * k));
-    send(proto::MsgType::JogStep, proto::encode(r), wrap(std::move(done), "request.jog_step"));
+    send(dev::proto::MsgType::JogStep, dev::proto::encode(r), wrap(std::move(done), "request.jog_step"));
 }
 
 void BenchPilotClient::startJog(int axis, double velocity)
@@ -93,10 +93,10 @@ void BenchPilotClient::stopJog(int axis)
         m_jogTimer.stop();
     if (axis < 0 || axis >= m_identity.axes.size())
         return;
-    proto::JogVelocityRequest r;
+    dev::proto::JogVelocityRequest r;
     r.axisMask = static_cast<std::uint8_t>(1u << axis);
     r.velocities = {0};
-    send(proto::MsgType::JogVelocity, proto::encode(r), wrap({}, "request.jog"));
+    send(dev::proto::MsgType::JogVelocity, dev::proto::encode(r), wrap({}, "request.jog"));
 }
 
 void BenchPilotClient::stopAllJogs()
@@ -110,14 +110,14 @@ void BenchPilotClient::refreshJogs()
 {
     if (m_jogs.isEmpty() || m_state != LinkState::Ready)
         return;
-    proto::JogVelocityRequest r;
+    dev::proto::JogVelocityRequest r;
     for (int axis = 0; axis < m_identity.axes.size(); ++axis) {
         if (!m_jogs.contains(axis))
             continue;
         r.axisMask = static_cast<std::uint8_t>(r.axisMask | (1u << axis));
         r.velocities.push_back(toWire(m_jogs[axis], m_identity.axes[axis].wireScale()));
     }
-    send(proto::MsgType::JogVelocity, proto::encode(r), [this, mask = r.axisMask](const auto& e, const auto&) {
+    send(dev::proto::MsgType::JogVelocity, dev::proto::encode(r), [this, mask = r.axisMask](const auto& e, const auto&) {
         if (!e || e->kind != RequestError::Kind::Device)
             return;
         // A refused jog (busy, E-stop, too fast) ends the hold: say so once.
@@ -127,17 +127,17 @@ void BenchPilotClient::refreshJogs()
         if (m_jogs.isEmpty())
             m_jogTimer.stop();
         RequestError err = *e;
-        err.message = msg::make("request.refused", {msg::term("action", "request.jog"), msg::nested("cause", err.message)});
+        err.message = motion::msg::make("request.refused", {motion::msg::term("action", "request.jog"), motion::msg::nested("cause", err.message)});
         emit requestFailed(err);
     });
 }
 
 void BenchPilotClient::setJogVelocities(const std::map<int, double>& velocities, Callback done)
 {
-    proto::JogVelocityRequest r;
+    dev::proto::JogVelocityRequest r;
     for (const auto& [axis, v] : velocities) {  // ascending axes: the order the mask lists them in
         if (axis < 0 || axis >= m_identity.axes.size() || !std::isfinite(v)) {
-            refuse(done, RequestError::Kind::Invalid, msg::make("request.jog_invalid"));
+            refuse(done, RequestError::Kind::Invalid, motion::msg::make("request.jog_invalid"));
             return;
         }
         r.axisMask = static_cast<std::uint8_t>(r.axisMask | (1u << axis));
@@ -148,7 +148,7 @@ void BenchPilotClient::setJogVelocities(const std::map<int, double>& velocities,
             done(std::nullopt);
         return;
     }
-    send(proto::MsgType::JogVelocity, proto::encode(r), wrap(std::move(done), "request.jog"));
+    send(dev::proto::MsgType::JogVelocity, dev::proto::encode(r), wrap(std::move(done), "request.jog"));
 }
 
 void BenchPilotClient::stop(quint8 axisMask, Callback done)
@@ -158,25 +158,25 @@ void BenchPilotClient::stop(quint8 axisMask, Callback done)
             m_jogs.remove(a);
     if (m_jogs.isEmpty())
         m_jogTimer.stop();
-    send(proto::MsgType::Stop, proto::encode(proto::AxisMaskRequest{axisMask}), wrap(std::move(done), "request.stop"));
+    send(dev::proto::MsgType::Stop, dev::proto::encode(dev::proto::AxisMaskRequest{axisMask}), wrap(std::move(done), "request.stop"));
 }
 
 void BenchPilotClient::estop(Callback done)
 {
     m_jogs.clear();
     m_jogTimer.stop();
-    send(proto::MsgType::EStop, {}, wrap(std::move(done), "request.estop"));
+    send(dev::proto::MsgType::EStop, {}, wrap(std::move(done), "request.estop"));
 }
 
 void BenchPilotClient::reset(Callback done)
 {
-    send(proto::MsgType::Reset, {}, wrap(std::move(done), "request.reset"));
+    send(dev::proto::MsgType::Reset, {}, wrap(std::move(done), "request.reset"));
 }
 
 void BenchPilotClient::setZero(quint8 axisMask, Callback done)
 {
     auto inner = wrap(std::move(done), "request.set_zero");
-    send(proto::MsgType::SetZero, proto::encode(proto::AxisMaskRequest{axisMask}), [this, inner](const auto& e, const auto& p) {
+    send(dev::proto::MsgType::SetZero, dev::proto::encode(dev::proto::AxisMaskRequest{axisMask}), [this, inner](const auto& e, const auto& p) {
         if (!e)
             refreshLimits();
         inner(e, p);
@@ -186,18 +186,18 @@ void BenchPilotClient::setZero(quint8 axisMask, Callback done)
 void BenchPilotClient::setSoftLimits(int axis, double min, double max, Callback done)
 {
     if (axis < 0 || axis >= m_identity.axes.size() || !std::isfinite(min) || !std::isfinite(max)) {
-        const auto e = invalid(msg::make("request.soft_limits_invalid"));
+        const auto e = invalid(motion::msg::make("request.soft_limits_invalid"));
         emit requestFailed(*e);
         if (done)
             done(e);
         return;
     }
     const double k = m_identity.axes[axis].wireScale();
-    proto::SetLimitsRequest r;
+    dev::proto::SetLimitsRequest r;
     r.axis = static_cast<std::uint8_t>(axis);
     r.limits = {toWire(min, k), toWire(max, k)};
     auto inner = wrap(std::move(done), "request.soft_limits");
-    send(proto::MsgType::SetLimits, proto::encode(r), [this, axis, min, max, inner](const auto& e, const auto& p) {
+    send(dev::proto::MsgType::SetLimits, dev::proto::encode(r), [this, axis, min, max, inner](const auto& e, const auto& p) {
         if (!e && axis < m_limits.size()) {
             m_limits[axis] = {min, max};
             emit limitsChanged();

@@ -25,41 +25,41 @@ Capabilities BenchPilotClient::capabilities() const
         std::uint32_t bits;
         Capability capability;
     } map[] = {
-        {proto::CapHoming, Capability::Homing},
-        {proto::CapEncoder, Capability::MeasuredPosition},
-        {proto::CapGrating, Capability::MeasuredPosition},
-        {proto::CapClosedLoopPid, Capability::ClosedLoop},
-        {proto::CapTelemetry, Capability::Telemetry},
-        {proto::CapJogVelocity, Capability::VelocityJog},
-        {proto::CapPathQueue, Capability::PathQueue},
-        {proto::CapPathZFollow, Capability::PathZFollow},
-        {proto::CapCoupledXyThenZ, Capability::CoupledXyThenZ},
-        {proto::CapGains, Capability::PidGains},
-        {proto::CapExperiments, Capability::TuningTests},
-        {proto::CapPump, Capability::Pump},
-        {proto::CapCompensation, Capability::Compensation},
+        {dev::proto::CapHoming, Capability::Homing},
+        {dev::proto::CapEncoder, Capability::MeasuredPosition},
+        {dev::proto::CapGrating, Capability::MeasuredPosition},
+        {dev::proto::CapClosedLoopPid, Capability::ClosedLoop},
+        {dev::proto::CapTelemetry, Capability::Telemetry},
+        {dev::proto::CapJogVelocity, Capability::VelocityJog},
+        {dev::proto::CapPathQueue, Capability::PathQueue},
+        {dev::proto::CapPathZFollow, Capability::PathZFollow},
+        {dev::proto::CapCoupledXyThenZ, Capability::CoupledXyThenZ},
+        {dev::proto::CapGains, Capability::PidGains},
+        {dev::proto::CapExperiments, Capability::TuningTests},
+        {dev::proto::CapPump, Capability::Pump},
+        {dev::proto::CapCompensation, Capability::Compensation},
     };
     for (const auto& m : map)
         if (hasProtocolCapability(m.bits))
             c |= m.capability;
     // The jog watchdog stops a velocity move the host no longer renews, and the path
     // queue holds when the host goes quiet (docs/protocol.md).
-    if (hasProtocolCapability(proto::CapJogVelocity) && m_identity.jogWatchdogMs > 0)
+    if (hasProtocolCapability(dev::proto::CapJogVelocity) && m_identity.jogWatchdogMs > 0)
         c |= Capability::StopsOnHostLoss;
     if (m_identity.reportsMotionLimits())
         c |= Capability::MachineLimits;
     return c;
 }
 
-msg::Message BenchPilotClient::missingReason(Capability c) const
+motion::msg::Message BenchPilotClient::missingReason(Capability c) const
 {
-    msg::Message m = Instrument::missingReason(c);
+    motion::msg::Message m = Instrument::missingReason(c);
     const char* because = nullptr;
     switch (c) {
     case Capability::PidGains:
     case Capability::TuningTests:
     case Capability::ClosedLoop:
-        if (!hasProtocolCapability(proto::CapClosedLoopPid))
+        if (!hasProtocolCapability(dev::proto::CapClosedLoopPid))
             because = "capability.because.open_loop";  // steppers without a position loop: nothing to tune
         break;
     case Capability::MachineLimits:
@@ -72,14 +72,14 @@ msg::Message BenchPilotClient::missingReason(Capability c) const
     default: break;
     }
     if (because)
-        m.args.push_back(msg::term("because", because));
+        m.args.push_back(motion::msg::term("because", because));
     return m;
 }
 
 void BenchPilotClient::readStatus(StatusCallback done)
 {
     const QPointer<BenchPilotClient> self(this);
-    send(proto::MsgType::Status, {}, [self, done = std::move(done)](const std::optional<RequestError>& e, const proto::Bytes& p) {
+    send(dev::proto::MsgType::Status, {}, [self, done = std::move(done)](const std::optional<RequestError>& e, const dev::proto::Bytes& p) {
         if (!self)
             return;
         if (!e)
@@ -106,7 +106,7 @@ void BenchPilotClient::whenStill(Callback then)
 void BenchPilotClient::dwell(double seconds, Callback done)
 {
     if (!std::isfinite(seconds) || seconds < 0) {
-        refuse(done, RequestError::Kind::Invalid, msg::make("request.dwell_invalid", {msg::real("seconds", seconds, msg::Unit::S)}));
+        refuse(done, RequestError::Kind::Invalid, motion::msg::make("request.dwell_invalid", {motion::msg::real("seconds", seconds, motion::msg::Unit::S)}));
         return;
     }
     // Protocol 1 has no dwell of its own: the host waits for the motion to end, then the time.
@@ -124,7 +124,7 @@ void BenchPilotClient::dwell(double seconds, Callback done)
                 return done(std::nullopt);
             RequestError lost;
             lost.kind = RequestError::Kind::LinkDown;
-            lost.message = msg::make("request.dwell_link_down");
+            lost.message = motion::msg::make("request.dwell_link_down");
             done(lost);
         });
     });
@@ -132,7 +132,7 @@ void BenchPilotClient::dwell(double seconds, Callback done)
 
 void BenchPilotClient::pulseTrigger(double, Callback done)
 {
-    refuse(done, RequestError::Kind::Invalid, msg::make("request.no_trigger_output"));
+    refuse(done, RequestError::Kind::Invalid, motion::msg::make("request.no_trigger_output"));
 }
 
 PathClient* BenchPilotClient::paths() { return m_paths; }

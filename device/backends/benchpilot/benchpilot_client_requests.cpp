@@ -13,28 +13,28 @@
 
 namespace dev {
 namespace {
-QString typeName(proto::MsgType t)
+QString typeName(dev::proto::MsgType t)
 {
     switch (t) {
-    case proto::MsgType::Hello: return QStringLiteral("HELLO");
-    case proto::MsgType::Status: return QStringLiteral("STATUS");
-    case proto::MsgType::Home: return QStringLiteral("HOME");
-    case proto::MsgType::Move: return QStringLiteral("MOVE");
-    case proto::MsgType::JogStep: return QStringLiteral("JOG_STEP");
-    case proto::MsgType::SetZero: return QStringLiteral("SET_ZERO");
-    case proto::MsgType::GetLimits: return QStringLiteral("GET_LIMITS");
-    case proto::MsgType::SetLimits: return QStringLiteral("SET_LIMITS");
-    case proto::MsgType::Subscribe: return QStringLiteral("SUBSCRIBE");
-    case proto::MsgType::Reset: return QStringLiteral("RESET");
-    case proto::MsgType::JogVelocity: return QStringLiteral("JOG_VELOCITY");
-    case proto::MsgType::Stop: return QStringLiteral("STOP");
-    case proto::MsgType::EStop: return QStringLiteral("ESTOP");
-    case proto::MsgType::PathBegin: return QStringLiteral("PATH_BEGIN");
-    case proto::MsgType::PathAppend: return QStringLiteral("PATH_APPEND");
-    case proto::MsgType::PathStatus: return QStringLiteral("PATH_STATUS");
-    case proto::MsgType::PathHold: return QStringLiteral("PATH_HOLD");
-    case proto::MsgType::PathResume: return QStringLiteral("PATH_RESUME");
-    case proto::MsgType::PathClear: return QStringLiteral("PATH_CLEAR");
+    case dev::proto::MsgType::Hello: return QStringLiteral("HELLO");
+    case dev::proto::MsgType::Status: return QStringLiteral("STATUS");
+    case dev::proto::MsgType::Home: return QStringLiteral("HOME");
+    case dev::proto::MsgType::Move: return QStringLiteral("MOVE");
+    case dev::proto::MsgType::JogStep: return QStringLiteral("JOG_STEP");
+    case dev::proto::MsgType::SetZero: return QStringLiteral("SET_ZERO");
+    case dev::proto::MsgType::GetLimits: return QStringLiteral("GET_LIMITS");
+    case dev::proto::MsgType::SetLimits: return QStringLiteral("SET_LIMITS");
+    case dev::proto::MsgType::Subscribe: return QStringLiteral("SUBSCRIBE");
+    case dev::proto::MsgType::Reset: return QStringLiteral("RESET");
+    case dev::proto::MsgType::JogVelocity: return QStringLiteral("JOG_VELOCITY");
+    case dev::proto::MsgType::Stop: return QStringLiteral("STOP");
+    case dev::proto::MsgType::EStop: return QStringLiteral("ESTOP");
+    case dev::proto::MsgType::PathBegin: return QStringLiteral("PATH_BEGIN");
+    case dev::proto::MsgType::PathAppend: return QStringLiteral("PATH_APPEND");
+    case dev::proto::MsgType::PathStatus: return QStringLiteral("PATH_STATUS");
+    case dev::proto::MsgType::PathHold: return QStringLiteral("PATH_HOLD");
+    case dev::proto::MsgType::PathResume: return QStringLiteral("PATH_RESUME");
+    case dev::proto::MsgType::PathClear: return QStringLiteral("PATH_CLEAR");
     default: break;
     }
     // The tuning and compensation requests are numbered in their own headers.
@@ -55,16 +55,16 @@ QString typeName(proto::MsgType t)
 
 // ---- requests -------------------------------------------------------------------
 
-void BenchPilotClient::send(proto::MsgType type, const proto::Bytes& payload, RawDone done)
+void BenchPilotClient::send(dev::proto::MsgType type, const dev::proto::Bytes& payload, RawDone done)
 {
     Request r;
     r.type = type;
-    r.realtime = proto::isRealtimeType(static_cast<std::uint8_t>(type));
+    r.realtime = dev::proto::isRealtimeType(static_cast<std::uint8_t>(type));
     r.done = std::move(done);
     if (!m_transport || !m_transport->isOpen()) {
         RequestError e;
         e.kind = RequestError::Kind::LinkDown;
-        e.message = msg::make("request.not_sent", {msg::verbatim("request", typeName(type).toStdString())});
+        e.message = motion::msg::make("request.not_sent", {motion::msg::verbatim("request", typeName(type).toStdString())});
         if (r.done)
             r.done(e, {});
         return;
@@ -73,14 +73,14 @@ void BenchPilotClient::send(proto::MsgType type, const proto::Bytes& payload, Ra
     if (m_nextSeq == 0)
         m_nextSeq = 1;
     std::vector<std::uint8_t> wire;
-    proto::encodeFrame(static_cast<std::uint8_t>(type), r.seq, payload.data(), payload.size(), wire);
+    dev::proto::encodeFrame(static_cast<std::uint8_t>(type), r.seq, payload.data(), payload.size(), wire);
     r.wire = QByteArray(reinterpret_cast<const char*>(wire.data()), static_cast<qsizetype>(wire.size()));
     if (r.realtime) {
         // Realtime requests overtake anything queued: they go out at once.
         const std::uint16_t seq = r.seq;
         transmit(r);
         m_realtime.emplace(seq, std::move(r));
-        if (type == proto::MsgType::JogVelocity || type == proto::MsgType::Stop || type == proto::MsgType::EStop)
+        if (type == dev::proto::MsgType::JogVelocity || type == dev::proto::MsgType::Stop || type == dev::proto::MsgType::EStop)
             dropSupersededJogs(seq);
         return;
     }
@@ -129,7 +129,7 @@ void BenchPilotClient::pumpQueue()
     transmit(m_queue.front());
 }
 
-void BenchPilotClient::complete(Request r, const std::optional<RequestError>& err, const proto::Bytes& payload)
+void BenchPilotClient::complete(Request r, const std::optional<RequestError>& err, const dev::proto::Bytes& payload)
 {
     if (r.done)
         r.done(err, payload);
@@ -143,7 +143,7 @@ void BenchPilotClient::dropSupersededJogs(std::uint16_t newerSeq)
     // asked for was replaced by what came after.
     std::vector<Request> superseded;
     for (auto it = m_realtime.begin(); it != m_realtime.end();) {
-        if (it->second.type == proto::MsgType::JogVelocity && it->first != newerSeq) {
+        if (it->second.type == dev::proto::MsgType::JogVelocity && it->first != newerSeq) {
             superseded.push_back(std::move(it->second));
             it = m_realtime.erase(it);
         } else {
@@ -202,15 +202,15 @@ void BenchPilotClient::checkTimeouts()
     }
     if (silent && (m_state == LinkState::Ready || m_state == LinkState::Identified)) {
         ++m_stats.timeouts;
-        linkGone(msg::make("link.stopped_answering"));
+        linkGone(motion::msg::make("link.stopped_answering"));
         return;
     }
     auto timeoutError = [now](const Request& r) {
         RequestError e;
         e.kind = RequestError::Kind::Timeout;
-        e.message = msg::make("request.no_reply", {msg::verbatim("request", typeName(r.type).toStdString()),
-                                                   msg::integer("attempts", r.attempts),
-                                                   msg::real("seconds", (now - r.firstSentMs) / 1000.0, msg::Unit::S)});
+        e.message = motion::msg::make("request.no_reply", {motion::msg::verbatim("request", typeName(r.type).toStdString()),
+                                                   motion::msg::integer("attempts", r.attempts),
+                                                   motion::msg::real("seconds", (now - r.firstSentMs) / 1000.0, motion::msg::Unit::S)});
         return e;
     };
     // Given up: everything while connecting to a silent device; otherwise a request the
@@ -249,7 +249,7 @@ void BenchPilotClient::checkTimeouts()
     pumpQueue();
 }
 
-void BenchPilotClient::failAll(RequestError::Kind kind, const msg::Message& why)
+void BenchPilotClient::failAll(RequestError::Kind kind, const motion::msg::Message& why)
 {
     std::deque<Request> queue;
     queue.swap(m_queue);
@@ -260,12 +260,12 @@ void BenchPilotClient::failAll(RequestError::Kind kind, const msg::Message& why)
     RequestError e;
     e.kind = kind;
     for (auto& r : queue) {
-        e.message = msg::make("request.abandoned", {msg::verbatim("request", typeName(r.type).toStdString()), msg::nested("cause", why)});
+        e.message = motion::msg::make("request.abandoned", {motion::msg::verbatim("request", typeName(r.type).toStdString()), motion::msg::nested("cause", why)});
         if (r.done)
             r.done(e, {});
     }
     for (auto& [seq, r] : rt) {
-        e.message = msg::make("request.abandoned", {msg::verbatim("request", typeName(r.type).toStdString()), msg::nested("cause", why)});
+        e.message = motion::msg::make("request.abandoned", {motion::msg::verbatim("request", typeName(r.type).toStdString()), motion::msg::nested("cause", why)});
         if (r.done)
             r.done(e, {});
     }
@@ -287,38 +287,38 @@ void BenchPilotClient::onBytes(const QByteArray& bytes)
         onFrame(f);
 }
 
-RequestError BenchPilotClient::deviceError(const proto::ErrorReply& e) const
+RequestError BenchPilotClient::deviceError(const dev::proto::ErrorReply& e) const
 {
     RequestError r;
     r.kind = RequestError::Kind::Device;
     r.code = e.code;
-    r.axis = e.axis == proto::kNoAxis ? -1 : e.axis;
+    r.axis = e.axis == dev::proto::kNoAxis ? -1 : e.axis;
     r.value = (r.axis >= 0 && r.axis < m_identity.axes.size()) ? e.value / m_identity.axes[r.axis].wireScale() : e.value;
     // The device's own words (firmware text, English) stay beside the code, which is
     // what the wording layer words.
-    std::vector<msg::Arg> args{msg::term("code", proto::errorCodeTerm(e.code)), msg::verbatim("detail", e.message)};
+    std::vector<motion::msg::Arg> args{motion::msg::term("code", dev::proto::errorCodeTerm(e.code)), motion::msg::verbatim("detail", e.message)};
     const bool onAxis = r.axis >= 0 && r.axis < m_identity.axes.size();
     if (onAxis)
-        args.push_back(msg::verbatim("axis", QString(m_identity.axes[r.axis].letter).toStdString()));
+        args.push_back(motion::msg::verbatim("axis", QString(m_identity.axes[r.axis].letter).toStdString()));
     if (auto v = refusalValue(e, onAxis ? &m_identity.axes[r.axis] : nullptr))
         args.push_back(std::move(*v));
-    r.message = msg::make("device.refused", std::move(args));
+    r.message = motion::msg::make("device.refused", std::move(args));
     return r;
 }
 
-void BenchPilotClient::onFrame(const proto::Frame& f)
+void BenchPilotClient::onFrame(const dev::proto::Frame& f)
 {
-    if (f.type == static_cast<std::uint8_t>(proto::MsgType::Event)) {
+    if (f.type == static_cast<std::uint8_t>(dev::proto::MsgType::Event)) {
         // A frame repeated on the line is one event, not two (a MotionDone counted twice
         // would finish the next move early).
         if (seenEvent(f.seq)) {
             ++m_duplicateFrames;
             return;
         }
-        if (auto e = proto::decodeEvent(f.payload)) {
+        if (auto e = dev::proto::decodeEvent(f.payload)) {
             DeviceEvent ev;
             ev.kind = e->kind;
-            ev.axis = e->axis == proto::kNoAxis ? -1 : e->axis;
+            ev.axis = e->axis == dev::proto::kNoAxis ? -1 : e->axis;
             // Instrument-wide events keep the number as sent (path events carry a segment index there).
             ev.position = (ev.axis >= 0 && ev.axis < m_identity.axes.size()) ? e->position / m_identity.axes[ev.axis].wireScale()
                                                                               : e->position;
@@ -328,21 +328,21 @@ void BenchPilotClient::onFrame(const proto::Frame& f)
             if (e->reason) {
                 const bool onAxis = ev.axis >= 0 && ev.axis < m_identity.axes.size();
                 const std::string letter = onAxis ? QString(m_identity.axes[ev.axis].letter).toStdString() : std::string();
-                const auto unit = onAxis ? m_identity.axes[ev.axis].unit : proto::AxisUnit::Millimetre;
+                const auto unit = onAxis ? m_identity.axes[ev.axis].unit : dev::proto::AxisUnit::Millimetre;
                 if (auto m = eventReasonMessage(ev.kind, *e->reason, letter, unit)) {
                     ev.detail = std::move(*m);
                     ev.worded = true;
                 }
             }
             // Homing moves the coordinate origin, and with it the limits' numbers.
-            if (ev.kind == proto::EventKind::HomeDone)
+            if (ev.kind == dev::proto::EventKind::HomeDone)
                 refreshLimits();
             emit eventReceived(ev);
         }
         return;
     }
-    if (f.type == static_cast<std::uint8_t>(proto::MsgType::TelemetryBatch)) {
-        auto b = proto::decodeTelemetryBatch(f.payload);
+    if (f.type == static_cast<std::uint8_t>(dev::proto::MsgType::TelemetryBatch)) {
+        auto b = dev::proto::decodeTelemetryBatch(f.payload);
         if (!b)
             return;
         // A batch from before the next expected sample is a repeat of one already had.
@@ -365,11 +365,11 @@ void BenchPilotClient::onFrame(const proto::Frame& f)
         emit telemetryReceived(*b);
         return;
     }
-    const bool isError = f.type == static_cast<std::uint8_t>(proto::MsgType::Error);
-    if (!isError && !proto::isReplyType(f.type))
+    const bool isError = f.type == static_cast<std::uint8_t>(dev::proto::MsgType::Error);
+    if (!isError && !dev::proto::isReplyType(f.type))
         return;
     auto matches = [&](const Request& r) {
-        return r.seq == f.seq && (isError || f.type == proto::replyTypeOf(r.type));
+        return r.seq == f.seq && (isError || f.type == dev::proto::replyTypeOf(r.type));
     };
     Request r;
     if (m_inFlight && !m_queue.empty() && matches(m_queue.front())) {
@@ -402,13 +402,13 @@ void BenchPilotClient::onFrame(const proto::Frame& f)
             m_retried.pop_front();
     }
     if (isError) {
-        const auto e = proto::decodeErrorReply(f.payload);
+        const auto e = dev::proto::decodeErrorReply(f.payload);
         RequestError err;
         if (e) {
             err = deviceError(*e);
         } else {
             err.kind = RequestError::Kind::Device;
-            err.message = msg::make("request.unreadable_error", {msg::verbatim("request", typeName(r.type).toStdString())});
+            err.message = motion::msg::make("request.unreadable_error", {motion::msg::verbatim("request", typeName(r.type).toStdString())});
         }
         complete(std::move(r), err, {});
     } else {
@@ -433,11 +433,11 @@ bool BenchPilotClient::seenEvent(std::uint16_t seq)
 
 BenchPilotClient::RawDone BenchPilotClient::wrap(Callback done, const std::string& what)
 {
-    return [this, done = std::move(done), what](const std::optional<RequestError>& e, const proto::Bytes&) {
+    return [this, done = std::move(done), what](const std::optional<RequestError>& e, const dev::proto::Bytes&) {
         if (e) {
             RequestError err = *e;
             if (!what.empty() && err.kind == RequestError::Kind::Device)
-                err.message = msg::make("request.refused", {msg::term("action", what), msg::nested("cause", err.message)});
+                err.message = motion::msg::make("request.refused", {motion::msg::term("action", what), motion::msg::nested("cause", err.message)});
             emit requestFailed(err);
             if (done)
                 done(err);
@@ -447,13 +447,13 @@ BenchPilotClient::RawDone BenchPilotClient::wrap(Callback done, const std::strin
     };
 }
 
-void BenchPilotClient::request(proto::MsgType type, const proto::Bytes& payload, ReplyCallback done, const std::string& what)
+void BenchPilotClient::request(dev::proto::MsgType type, const dev::proto::Bytes& payload, ReplyCallback done, const std::string& what)
 {
-    send(type, payload, [this, done = std::move(done), what](const std::optional<RequestError>& e, const proto::Bytes& reply) {
+    send(type, payload, [this, done = std::move(done), what](const std::optional<RequestError>& e, const dev::proto::Bytes& reply) {
         if (e) {
             RequestError err = *e;
             if (!what.empty() && err.kind == RequestError::Kind::Device)
-                err.message = msg::make("request.refused", {msg::term("action", what), msg::nested("cause", err.message)});
+                err.message = motion::msg::make("request.refused", {motion::msg::term("action", what), motion::msg::nested("cause", err.message)});
             emit requestFailed(err);
             if (done)
                 done(err, reply);

@@ -5,13 +5,13 @@
 
 namespace dev {
 
-void BenchPilotClient::applyStatus(const proto::Bytes& payload)
+void BenchPilotClient::applyStatus(const dev::proto::Bytes& payload)
 {
-    const auto s = proto::decodeStatusReply(payload);
+    const auto s = dev::proto::decodeStatusReply(payload);
     if (!s || int(s->axes.size()) != m_identity.axes.size())
         return;
-    m_status.estop = s->deviceFlags & proto::DeviceEStop;
-    m_status.fault = s->deviceFlags & proto::DeviceFault;
+    m_status.estop = s->deviceFlags & dev::proto::DeviceEStop;
+    m_status.fault = s->deviceFlags & dev::proto::DeviceFault;
     m_status.deviceTimeUs = s->deviceTimeUs;
     for (int i = 0; i < m_status.axes.size(); ++i) {
         const auto& a = s->axes[size_t(i)];
@@ -19,22 +19,22 @@ void BenchPilotClient::applyStatus(const proto::Bytes& payload)
         auto& r = m_status.axes[i];
         r.commanded = a.commanded / k;
         r.measured = a.measured / k;
-        r.homed = a.flags & proto::AxisHomed;
-        r.moving = a.flags & proto::AxisMoving;
-        r.homing = a.flags & proto::AxisHoming;
-        r.jogging = a.flags & proto::AxisJogging;
-        r.homeSwitch = a.flags & proto::AxisHomeSwitch;
-        r.limitSwitch = a.flags & proto::AxisLimitSwitch;
-        r.fault = a.flags & proto::AxisFault;
+        r.homed = a.flags & dev::proto::AxisHomed;
+        r.moving = a.flags & dev::proto::AxisMoving;
+        r.homing = a.flags & dev::proto::AxisHoming;
+        r.jogging = a.flags & dev::proto::AxisJogging;
+        r.homeSwitch = a.flags & dev::proto::AxisHomeSwitch;
+        r.limitSwitch = a.flags & dev::proto::AxisLimitSwitch;
+        r.fault = a.flags & dev::proto::AxisFault;
     }
     emit statusChanged(m_status);
 }
 
 void BenchPilotClient::refreshLimits(std::function<void()> then)
 {
-    send(proto::MsgType::GetLimits, {}, [this, then](const auto& e, const auto& p) {
+    send(dev::proto::MsgType::GetLimits, {}, [this, then](const auto& e, const auto& p) {
         if (!e)
-            if (auto l = proto::decodeLimitsReply(p)) {
+            if (auto l = dev::proto::decodeLimitsReply(p)) {
                 for (int i = 0; i < m_limits.size() && i < int(l->axes.size()); ++i) {
                     const double k = m_identity.axes[i].wireScale();
                     m_limits[i] = {l->axes[size_t(i)].min / k, l->axes[size_t(i)].max / k};
@@ -51,32 +51,32 @@ void BenchPilotClient::pollStatus()
     if (m_statusPending || m_state != LinkState::Ready)
         return;
     m_statusPending = true;
-    send(proto::MsgType::Status, {}, [this](const auto& e, const auto& p) {
+    send(dev::proto::MsgType::Status, {}, [this](const auto& e, const auto& p) {
         m_statusPending = false;
         if (!e)
             applyStatus(p);
     });
 }
 
-void BenchPilotClient::subscribe(const QVector<proto::ChannelRef>& channels, int rateHz,
+void BenchPilotClient::subscribe(const QVector<dev::proto::ChannelRef>& channels, int rateHz,
                                  SubscribeCallback done)
 {
-    proto::SubscribeRequest r;
+    dev::proto::SubscribeRequest r;
     r.rateHz = static_cast<std::uint32_t>(std::max(0, rateHz));
     r.channels.assign(channels.begin(), channels.end());
-    send(proto::MsgType::Subscribe, proto::encode(r), [this, channels, done](const auto& e, const auto& p) {
-        proto::SubscribeReply reply;
+    send(dev::proto::MsgType::Subscribe, dev::proto::encode(r), [this, channels, done](const auto& e, const auto& p) {
+        dev::proto::SubscribeReply reply;
         if (!e) {
-            if (auto d = proto::decodeSubscribeReply(p))
+            if (auto d = dev::proto::decodeSubscribeReply(p))
                 reply = *d;
-            m_channels = reply.rateHz ? channels : QVector<proto::ChannelRef>{};
+            m_channels = reply.rateHz ? channels : QVector<dev::proto::ChannelRef>{};
             m_rateHz = static_cast<int>(reply.rateHz);
             m_haveSampleIndex = false;  // a new subscription restarts the device's sample counter
         } else if (!done) {
             // A caller with its own handler (the telemetry hub falls back to the
             // stated capacity) decides whether a person needs to hear about it.
             RequestError err = *e;
-            err.message = msg::make("request.telemetry_refused", {msg::nested("cause", err.message)});
+            err.message = motion::msg::make("request.telemetry_refused", {motion::msg::nested("cause", err.message)});
             emit requestFailed(err);
         }
         if (done)
@@ -84,13 +84,13 @@ void BenchPilotClient::subscribe(const QVector<proto::ChannelRef>& channels, int
     });
 }
 
-double BenchPilotClient::toAxisUnits(const proto::ChannelRef& c, std::int32_t value) const
+double BenchPilotClient::toAxisUnits(const dev::proto::ChannelRef& c, std::int32_t value) const
 {
     switch (c.kind) {
-    case proto::ChannelKind::Switches:
-    case proto::ChannelKind::ControllerOutput:
+    case dev::proto::ChannelKind::Switches:
+    case dev::proto::ChannelKind::ControllerOutput:
         return value;
-    case proto::ChannelKind::ContourError:
+    case dev::proto::ChannelKind::ContourError:
         return value / 1e6;
     default:
         if (c.axis < m_identity.axes.size())

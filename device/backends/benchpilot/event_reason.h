@@ -14,7 +14,7 @@ namespace dev {
 /// instrument-wide event), whose positions are in `unit`: nullopt for a code this host
 /// does not know (the device's text is shown instead), an empty message when the
 /// reason adds nothing to the kind (a path that started or finished as planned).
-std::optional<msg::Message> eventReasonMessage(proto::EventKind kind, const proto::EventReason& why, const std::string& letter,
-                                               proto::AxisUnit unit);
+std::optional<motion::msg::Message> eventReasonMessage(dev::proto::EventKind kind, const dev::proto::EventReason& why, const std::string& letter,
+                                               dev::proto::AxisUnit unit);
 
 } // namespace dev

@@ -5,16 +5,16 @@
 namespace dev {
 
 namespace {
-proto::WireUnits nm(double mm) { return static_cast<proto::WireUnits>(std::llround(mm * 1e6)); }
+dev::proto::WireUnits nm(double mm) { return static_cast<dev::proto::WireUnits>(std::llround(mm * 1e6)); }
 }
 
-proto::PathSegmentWire toWire(const motion::path::Segment& s)
+dev::proto::PathSegmentWire toWire(const motion::path::Segment& s)
 {
-    proto::PathSegmentWire w;
+    dev::proto::PathSegmentWire w;
     switch (s.kind) {
-    case motion::path::SegmentKind::Line: w.kind = proto::PathSegmentKind::Line; break;
-    case motion::path::SegmentKind::ArcCw: w.kind = proto::PathSegmentKind::ArcCw; break;
-    case motion::path::SegmentKind::ArcCcw: w.kind = proto::PathSegmentKind::ArcCcw; break;
+    case motion::path::SegmentKind::Line: w.kind = dev::proto::PathSegmentKind::Line; break;
+    case motion::path::SegmentKind::ArcCw: w.kind = dev::proto::PathSegmentKind::ArcCw; break;
+    case motion::path::SegmentKind::ArcCcw: w.kind = dev::proto::PathSegmentKind::ArcCcw; break;
     }
     w.feed = static_cast<std::uint32_t>(std::llround(std::max(0.0, s.feedMmS) * 1e6));
     w.x = nm(s.end.x);
@@ -30,20 +30,20 @@ proto::PathSegmentWire toWire(const motion::path::Segment& s)
     return w;
 }
 
-std::vector<proto::PathSegmentWire> toWire(const std::vector<motion::path::Segment>& path)
+std::vector<dev::proto::PathSegmentWire> toWire(const std::vector<motion::path::Segment>& path)
 {
-    std::vector<proto::PathSegmentWire> out;
+    std::vector<dev::proto::PathSegmentWire> out;
     out.reserve(path.size());
     for (const auto& s : path)
         out.push_back(toWire(s));
     return out;
 }
 
-motion::path::Segment fromWire(const proto::PathSegmentWire& w, motion::path::Vec2 startMm)
+motion::path::Segment fromWire(const dev::proto::PathSegmentWire& w, motion::path::Vec2 startMm)
 {
     motion::path::Segment s;
-    s.kind = w.kind == proto::PathSegmentKind::Line    ? motion::path::SegmentKind::Line
-             : w.kind == proto::PathSegmentKind::ArcCw ? motion::path::SegmentKind::ArcCw
+    s.kind = w.kind == dev::proto::PathSegmentKind::Line    ? motion::path::SegmentKind::Line
+             : w.kind == dev::proto::PathSegmentKind::ArcCw ? motion::path::SegmentKind::ArcCw
                                                        : motion::path::SegmentKind::ArcCcw;
     s.start = startMm;
     s.end = {w.x / 1e6, w.y / 1e6};

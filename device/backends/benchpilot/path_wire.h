@@ -9,10 +9,10 @@
 namespace dev {
 
 /// One segment as PATH_APPEND carries it (its start is implicit: where the previous one ended).
-proto::PathSegmentWire toWire(const motion::path::Segment& s);
+dev::proto::PathSegmentWire toWire(const motion::path::Segment& s);
 /// The wire segments of a path, in order.
-std::vector<proto::PathSegmentWire> toWire(const std::vector<motion::path::Segment>& path);
+std::vector<dev::proto::PathSegmentWire> toWire(const std::vector<motion::path::Segment>& path);
 /// Back to millimetres, given where the segment starts.
-motion::path::Segment fromWire(const proto::PathSegmentWire& w, motion::path::Vec2 startMm);
+motion::path::Segment fromWire(const dev::proto::PathSegmentWire& w, motion::path::Vec2 startMm);
 
 } // namespace dev

@@ -11,7 +11,7 @@ using motion::metrology::CompensationModel;
 
 namespace {
 
-RequestError compensationInvalid(const msg::Message& why)
+RequestError compensationInvalid(const motion::msg::Message& why)
 {
     RequestError e;
     e.kind = RequestError::Kind::Invalid;
@@ -27,8 +27,8 @@ std::int32_t nmFromUm(double um) { return static_cast<std::int32_t>(std::llround
 /// An upload in progress: the parts still to send.
 struct ProtocolCompensationClient::Upload {
     int axis = 0;
-    proto::CompUploadRequest header;
-    std::vector<proto::CompPoint> points;
+    dev::proto::CompUploadRequest header;
+    std::vector<dev::proto::CompPoint> points;
     std::size_t next = 0;
     Callback done;
     Progress progress;
@@ -38,7 +38,7 @@ ProtocolCompensationClient::ProtocolCompensationClient(BenchPilotClient* client,
     : CompensationClient(client, parent), m_client(client)
 {
     connect(client, &BenchPilotClient::eventReceived, this, [this](const DeviceEvent& e) {
-        if (e.kind == proto::kEvCompChanged)
+        if (e.kind == dev::proto::kEvCompChanged)
             emit changed(e.axis, e.text);
     });
 }
@@ -46,11 +46,11 @@ ProtocolCompensationClient::ProtocolCompensationClient(BenchPilotClient* client,
 QVector<int> ProtocolCompensationClient::compensableAxes() const
 {
     QVector<int> out;
-    if (!m_client || !m_client->hasProtocolCapability(proto::CapCompensation))
+    if (!m_client || !m_client->hasProtocolCapability(dev::proto::CapCompensation))
         return out;
     const auto& axes = m_client->identity().axes;
     for (int i = 0; i < axes.size(); ++i)
-        if (axes[i].unit == proto::AxisUnit::Millimetre)
+        if (axes[i].unit == dev::proto::AxisUnit::Millimetre)
             out.push_back(i);
     return out;
 }
@@ -60,9 +60,9 @@ bool ProtocolCompensationClient::checkAxis(int axis, const Callback& done)
     if (m_client && compensableAxes().contains(axis))
         return true;
     if (done)
-        done(compensationInvalid(m_client && m_client->hasProtocolCapability(proto::CapCompensation)
-                                     ? msg::make("compensation.axis_not_compensable", {msg::integer("axis", axis, msg::Unit::None)})
-                                     : msg::make("compensation.not_supported")));
+        done(compensationInvalid(m_client && m_client->hasProtocolCapability(dev::proto::CapCompensation)
+                                     ? motion::msg::make("compensation.axis_not_compensable", {motion::msg::integer("axis", axis, motion::msg::Unit::None)})
+                                     : motion::msg::make("compensation.not_supported")));
     return false;
 }
 
@@ -75,24 +75,24 @@ void ProtocolCompensationClient::upload(int axis, const CompensationModel& model
     for (const auto& p : motion::metrology::validate(m))
         if (p.isError()) {
             if (done)
-                done(compensationInvalid(msg::make("compensation.model_invalid", {msg::verbatim("field", p.path), msg::nested("detail", p.message)})));
+                done(compensationInvalid(motion::msg::make("compensation.model_invalid", {motion::msg::verbatim("field", p.path), motion::msg::nested("detail", p.message)})));
             return;
         }
     auto u = std::make_shared<Upload>();
     u->axis = axis;
     u->done = std::move(done);
     u->progress = std::move(progress);
-    proto::CompUploadRequest& h = u->header;
+    dev::proto::CompUploadRequest& h = u->header;
     h.axis = static_cast<std::uint8_t>(axis);
     h.backlash = m.perDirection ? 0 : nmFromUm(m.backlashUm);
     if (m.kind == CompensationModel::Kind::Polynomial) {
-        h.kind = proto::CompKind::Polynomial;
+        h.kind = dev::proto::CompKind::Polynomial;
         h.coefficients = m.polynomial.coefficientsUm;
         h.total = static_cast<std::uint16_t>(h.coefficients.size());
         h.validFrom = compNm(m.validFromMm);
         h.validTo = compNm(m.validToMm);
     } else {
-        h.kind = m.perDirection ? proto::CompKind::TablePerDirection : proto::CompKind::Table;
+        h.kind = m.perDirection ? dev::proto::CompKind::TablePerDirection : dev::proto::CompKind::Table;
         for (const auto& p : m.table)
             u->points.push_back({compNm(p.nominalMm), nmFromUm(p.correctionUpUm), nmFromUm(m.perDirection ? p.correctionDownUm : p.correctionUpUm)});
         h.total = static_cast<std::uint16_t>(u->points.size());
@@ -102,17 +102,17 @@ void ProtocolCompensationClient::upload(int axis, const CompensationModel& model
 
 void ProtocolCompensationClient::sendPart(std::shared_ptr<Upload> u)
 {
-    proto::CompUploadRequest r = u->header;
+    dev::proto::CompUploadRequest r = u->header;
     r.first = static_cast<std::uint16_t>(u->next);
-    if (r.kind != proto::CompKind::Polynomial) {
-        const std::size_t count = std::min<std::size_t>(proto::kMaxCompPointsPerFrame, u->points.size() - u->next);
+    if (r.kind != dev::proto::CompKind::Polynomial) {
+        const std::size_t count = std::min<std::size_t>(dev::proto::kMaxCompPointsPerFrame, u->points.size() - u->next);
         r.points.assign(u->points.begin() + static_cast<std::ptrdiff_t>(u->next),
                         u->points.begin() + static_cast<std::ptrdiff_t>(u->next + count));
     }
     const QPointer<ProtocolCompensationClient> self(this);
     m_client->request(
-        proto::kCompUpload, proto::encode(r),
-        [self, u](const std::optional<RequestError>& e, const proto::Bytes& payload) {
+        dev::proto::kCompUpload, dev::proto::encode(r),
+        [self, u](const std::optional<RequestError>& e, const dev::proto::Bytes& payload) {
             if (!self)
                 return;
             if (e) {
@@ -120,10 +120,10 @@ void ProtocolCompensationClient::sendPart(std::shared_ptr<Upload> u)
                     u->done(e);
                 return;
             }
-            const auto reply = proto::decodeCompUploadReply(payload);
+            const auto reply = dev::proto::decodeCompUploadReply(payload);
             if (!reply) {
                 if (u->done)
-                    u->done(compensationInvalid(msg::make("compensation.upload_unreadable")));
+                    u->done(compensationInvalid(motion::msg::make("compensation.upload_unreadable")));
                 return;
             }
             u->next = reply->received;
@@ -134,9 +134,9 @@ void ProtocolCompensationClient::sendPart(std::shared_ptr<Upload> u)
                     u->done(std::nullopt);
                 return;
             }
-            if (u->header.kind == proto::CompKind::Polynomial || u->next >= u->points.size()) {
+            if (u->header.kind == dev::proto::CompKind::Polynomial || u->next >= u->points.size()) {
                 if (u->done)
-                    u->done(compensationInvalid(msg::make("compensation.not_installed")));
+                    u->done(compensationInvalid(motion::msg::make("compensation.not_installed")));
                 return;
             }
             self->sendPart(u);
@@ -160,22 +160,22 @@ void ProtocolCompensationClient::read(int axis, ReadDone done)
 void ProtocolCompensationClient::readPart(std::shared_ptr<AxisCompensation> into, int first, ReadDone done)
 {
     const int axis = into->axis;
-    const proto::CompGetRequest q{static_cast<std::uint8_t>(axis), static_cast<std::uint16_t>(first), proto::kMaxCompPointsPerFrame};
+    const dev::proto::CompGetRequest q{static_cast<std::uint8_t>(axis), static_cast<std::uint16_t>(first), dev::proto::kMaxCompPointsPerFrame};
     const QPointer<ProtocolCompensationClient> self(this);
     m_client->request(
-        proto::kCompGet, proto::encode(q),
-        [self, into, first, done](const std::optional<RequestError>& e, const proto::Bytes& payload) {
+        dev::proto::kCompGet, dev::proto::encode(q),
+        [self, into, first, done](const std::optional<RequestError>& e, const dev::proto::Bytes& payload) {
             if (!self)
                 return;
             if (e)
                 return done(e, *into);
-            const auto r = proto::decodeCompGetReply(payload);
+            const auto r = dev::proto::decodeCompGetReply(payload);
             if (!r || r->axis != into->axis)
-                return done(compensationInvalid(msg::make("compensation.read_unreadable")), *into);
-            into->enabled = r->flags & proto::CompEnabled;
-            into->applied = r->flags & proto::CompApplied;
-            into->saved = r->flags & proto::CompSaved;
-            if (r->kind == proto::CompKind::None) {
+                return done(compensationInvalid(motion::msg::make("compensation.read_unreadable")), *into);
+            into->enabled = r->flags & dev::proto::CompEnabled;
+            into->applied = r->flags & dev::proto::CompApplied;
+            into->saved = r->flags & dev::proto::CompSaved;
+            if (r->kind == dev::proto::CompKind::None) {
                 into->model.reset();
                 return done(std::nullopt, *into);
             }
@@ -183,18 +183,18 @@ void ProtocolCompensationClient::readPart(std::shared_ptr<AxisCompensation> into
                 CompensationModel m;
                 m.axis = QString(self->m_client->identity().axes[into->axis].letter).toStdString();
                 m.backlashUm = r->backlash / 1e3;
-                if (r->kind == proto::CompKind::Polynomial) {
+                if (r->kind == dev::proto::CompKind::Polynomial) {
                     m.kind = CompensationModel::Kind::Polynomial;
                     m.polynomial.coefficientsUm = r->coefficients;
                     m.validFromMm = r->validFrom / 1e6;
                     m.validToMm = r->validTo / 1e6;
                 } else {
                     m.kind = CompensationModel::Kind::Table;
-                    m.perDirection = r->kind == proto::CompKind::TablePerDirection;
+                    m.perDirection = r->kind == dev::proto::CompKind::TablePerDirection;
                 }
                 into->model = m;
             }
-            if (r->kind == proto::CompKind::Polynomial)
+            if (r->kind == dev::proto::CompKind::Polynomial)
                 return done(std::nullopt, *into);
             for (const auto& p : r->points)
                 into->model->table.push_back({p.nominal / 1e6, p.correctionUp / 1e3, p.correctionDown / 1e3});
@@ -210,12 +210,12 @@ void ProtocolCompensationClient::setEnabled(int axis, bool enabled, bool keepFor
 {
     if (!checkAxis(axis, done))
         return;
-    proto::CompEnableRequest r;
+    dev::proto::CompEnableRequest r;
     r.axisMask = static_cast<std::uint8_t>(1u << axis);
-    r.flags = static_cast<std::uint8_t>((enabled ? proto::CompEnableOn : 0) | (keepForPowerUp ? proto::CompEnableSave : 0));
+    r.flags = static_cast<std::uint8_t>((enabled ? dev::proto::CompEnableOn : 0) | (keepForPowerUp ? dev::proto::CompEnableSave : 0));
     m_client->request(
-        proto::kCompEnable, proto::encode(r),
-        [done](const std::optional<RequestError>& e, const proto::Bytes&) {
+        dev::proto::kCompEnable, dev::proto::encode(r),
+        [done](const std::optional<RequestError>& e, const dev::proto::Bytes&) {
             if (done)
                 done(e);
         },

@@ -17,7 +17,7 @@ ProtocolPathClient::ProtocolPathClient(BenchPilotClient* client, QObject* parent
 
 bool ProtocolPathClient::available() const
 {
-    return m_client && m_client->isReady() && m_client->hasProtocolCapability(proto::CapPathQueue);
+    return m_client && m_client->isReady() && m_client->hasProtocolCapability(dev::proto::CapPathQueue);
 }
 
 motion::path::PathLimits ProtocolPathClient::limits() const
@@ -40,7 +40,7 @@ void ProtocolPathClient::refreshLimits(Callback done)
     });
 }
 
-PathQueueState ProtocolPathClient::fromWire(const proto::PathStatusReply& s)
+PathQueueState ProtocolPathClient::fromWire(const dev::proto::PathStatusReply& s)
 {
     PathQueueState q;
     q.state = s.state;
@@ -60,7 +60,7 @@ BenchPilotClient::ReplyCallback ProtocolPathClient::statusReply(Reply done)
 {
     // The reply may come after this client is gone (a run dropped mid-request).
     const QPointer<ProtocolPathClient> self(this);
-    return [this, self, done = std::move(done)](const std::optional<RequestError>& e, const proto::Bytes& payload) {
+    return [this, self, done = std::move(done)](const std::optional<RequestError>& e, const dev::proto::Bytes& payload) {
         if (!self)
             return;
         if (e) {
@@ -68,11 +68,11 @@ BenchPilotClient::ReplyCallback ProtocolPathClient::statusReply(Reply done)
                 done(e, m_last);
             return;
         }
-        const auto s = proto::decodePathStatusReply(payload);
+        const auto s = dev::proto::decodePathStatusReply(payload);
         if (!s) {
             RequestError err;
             err.kind = RequestError::Kind::Device;
-            err.message = msg::make("request.path_unreadable");
+            err.message = motion::msg::make("request.path_unreadable");
             if (done)
                 done(err, m_last);
             return;
@@ -89,7 +89,7 @@ std::optional<RequestError> notConnected()
 {
     RequestError e;
     e.kind = RequestError::Kind::LinkDown;
-    e.message = msg::make("request.instrument_not_connected");
+    e.message = motion::msg::make("request.instrument_not_connected");
     return e;
 }
 } // namespace
@@ -98,9 +98,9 @@ void ProtocolPathClient::begin(quint32 firstIndex, Reply done)
 {
     if (!m_client)
         return done(notConnected(), m_last);
-    proto::PathBeginRequest r;
+    dev::proto::PathBeginRequest r;
     r.firstIndex = firstIndex;
-    m_client->request(proto::MsgType::PathBegin, proto::encode(r), statusReply(std::move(done)), "request.path");
+    m_client->request(dev::proto::MsgType::PathBegin, dev::proto::encode(r), statusReply(std::move(done)), "request.path");
 }
 
 void ProtocolPathClient::append(quint32 firstIndex, const std::vector<motion::path::Segment>& segments, bool start,
@@ -108,11 +108,11 @@ void ProtocolPathClient::append(quint32 firstIndex, const std::vector<motion::pa
 {
     if (!m_client)
         return done(notConnected(), m_last);
-    proto::PathAppendRequest r;
+    dev::proto::PathAppendRequest r;
     r.firstIndex = firstIndex;
-    r.flags = static_cast<std::uint8_t>((start ? proto::PathAppendStart : 0) | (last ? proto::PathAppendLast : 0));
+    r.flags = static_cast<std::uint8_t>((start ? dev::proto::PathAppendStart : 0) | (last ? dev::proto::PathAppendLast : 0));
     r.segments = toWire(segments);
-    m_client->request(proto::MsgType::PathAppend, proto::encode(r), statusReply(std::move(done)), "request.path_segments");
+    m_client->request(dev::proto::MsgType::PathAppend, dev::proto::encode(r), statusReply(std::move(done)), "request.path_segments");
 }
 
 void ProtocolPathClient::queryStatus(Reply done)
@@ -120,28 +120,28 @@ void ProtocolPathClient::queryStatus(Reply done)
     if (!m_client)
         return done(notConnected(), m_last);
     // No `what`: a status query that fails is the caller's business, not a banner.
-    m_client->request(proto::MsgType::PathStatus, {}, statusReply(std::move(done)));
+    m_client->request(dev::proto::MsgType::PathStatus, {}, statusReply(std::move(done)));
 }
 
 void ProtocolPathClient::hold(Callback done)
 {
     if (!m_client)
         return done ? done(notConnected()) : void();
-    m_client->request(proto::MsgType::PathHold, {}, [done](const auto& e, const auto&) { if (done) done(e); }, "request.pause");
+    m_client->request(dev::proto::MsgType::PathHold, {}, [done](const auto& e, const auto&) { if (done) done(e); }, "request.pause");
 }
 
 void ProtocolPathClient::resume(Callback done)
 {
     if (!m_client)
         return done ? done(notConnected()) : void();
-    m_client->request(proto::MsgType::PathResume, {}, [done](const auto& e, const auto&) { if (done) done(e); }, "request.resume");
+    m_client->request(dev::proto::MsgType::PathResume, {}, [done](const auto& e, const auto&) { if (done) done(e); }, "request.resume");
 }
 
 void ProtocolPathClient::clear(Callback done)
 {
     if (!m_client)
         return done ? done(notConnected()) : void();
-    m_client->request(proto::MsgType::PathClear, {}, [done](const auto& e, const auto&) { if (done) done(e); }, "request.abort");
+    m_client->request(dev::proto::MsgType::PathClear, {}, [done](const auto& e, const auto&) { if (done) done(e); }, "request.abort");
 }
 
 void ProtocolPathClient::onEvent(const DeviceEvent& e)
@@ -150,15 +150,15 @@ void ProtocolPathClient::onEvent(const DeviceEvent& e)
         return;
     const auto index = static_cast<quint32>(std::max(0.0, e.position));
     switch (e.kind) {
-    case proto::EventKind::PathStarted:
+    case dev::proto::EventKind::PathStarted:
         emit startedAt(e.deviceTimeUs);
         emit started(index);
         break;
-    case proto::EventKind::PathSegmentDone: emit segmentDone(index); break;
-    case proto::EventKind::PathUnderrun: emit underrun(index); break;
-    case proto::EventKind::PathDone: emit finished(index, e.deviceTimeUs); break;
-    case proto::EventKind::PathHeld: emit held(index, e.text); break;
-    case proto::EventKind::PathAborted: emit aborted(index, e.text); break;
+    case dev::proto::EventKind::PathSegmentDone: emit segmentDone(index); break;
+    case dev::proto::EventKind::PathUnderrun: emit underrun(index); break;
+    case dev::proto::EventKind::PathDone: emit finished(index, e.deviceTimeUs); break;
+    case dev::proto::EventKind::PathHeld: emit held(index, e.text); break;
+    case dev::proto::EventKind::PathAborted: emit aborted(index, e.text); break;
     default: break;
     }
 }

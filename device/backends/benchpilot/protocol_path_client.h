@@ -17,7 +17,7 @@ public:
     explicit ProtocolPathClient(BenchPilotClient* client, QObject* parent = nullptr);
 
     bool available() const override;
-    int maxSegmentsPerAppend() const override { return proto::kMaxPathSegmentsPerAppend; }
+    int maxSegmentsPerAppend() const override { return dev::proto::kMaxPathSegmentsPerAppend; }
     motion::path::PathLimits limits() const override;
     void refreshLimits(Callback done = {}) override;
     void begin(quint32 firstIndex, Reply done) override;
@@ -30,8 +30,8 @@ public:
 
 private:
     void onEvent(const DeviceEvent& e);
-    std::function<void(const std::optional<RequestError>&, const proto::Bytes&)> statusReply(Reply done);
-    static PathQueueState fromWire(const proto::PathStatusReply& s);
+    std::function<void(const std::optional<RequestError>&, const dev::proto::Bytes&)> statusReply(Reply done);
+    static PathQueueState fromWire(const dev::proto::PathStatusReply& s);
 
     QPointer<BenchPilotClient> m_client;
     PathQueueState m_last;

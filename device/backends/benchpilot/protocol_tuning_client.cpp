@@ -11,11 +11,11 @@ namespace dev {
 namespace {
 using motion::control::DiscreteGains;
 
-proto::WireGains toWire(const DiscreteGains& g)
+dev::proto::WireGains toWire(const DiscreteGains& g)
 {
     return {static_cast<float>(g.kp), static_cast<float>(g.ki), static_cast<float>(g.kd)};
 }
-DiscreteGains fromWire(const proto::WireGains& g) { return {g.kp, g.ki, g.kd}; }
+DiscreteGains fromWire(const dev::proto::WireGains& g) { return {g.kp, g.ki, g.kd}; }
 
 std::uint32_t toU32(double v)
 {
@@ -24,12 +24,12 @@ std::uint32_t toU32(double v)
     return v >= 4294967295.0 ? 4294967295u : static_cast<std::uint32_t>(std::llround(v));
 }
 
-proto::WireEnvelope toWire(const motion::control::Envelope& e, double scale)
+dev::proto::WireEnvelope toWire(const motion::control::Envelope& e, double scale)
 {
     return {toU32(e.maxExcursion * scale), toU32(e.maxFollowingError * scale), toU32(e.maxDurationS * 1000)};
 }
 
-RequestError tuningInvalid(const msg::Message& why)
+RequestError tuningInvalid(const motion::msg::Message& why)
 {
     RequestError e;
     e.kind = RequestError::Kind::Invalid;
@@ -41,20 +41,20 @@ RequestError tuningInvalid(const msg::Message& why)
 ProtocolTuningClient::ProtocolTuningClient(BenchPilotClient* client, QObject* parent) : TuningClient(client, parent), m_client(client)
 {
     connect(client, &BenchPilotClient::eventReceived, this, [this](const DeviceEvent& e) {
-        if (e.kind == proto::kEvTestEnded || e.kind == proto::kEvTestTripped || e.kind == proto::kEvTestAborted)
+        if (e.kind == dev::proto::kEvTestEnded || e.kind == dev::proto::kEvTestTripped || e.kind == dev::proto::kEvTestAborted)
             emit testEnded(e.axis, e.kind, e.text);
-        else if (e.kind == proto::kEvGainsChanged)
+        else if (e.kind == dev::proto::kEvGainsChanged)
             emit gainsChanged(e.axis, e.text);
     });
 }
 
-bool ProtocolTuningClient::hasGains() const { return m_client && m_client->hasProtocolCapability(proto::CapGains); }
-bool ProtocolTuningClient::hasTests() const { return m_client && m_client->hasProtocolCapability(proto::CapExperiments); }
+bool ProtocolTuningClient::hasGains() const { return m_client && m_client->hasProtocolCapability(dev::proto::CapGains); }
+bool ProtocolTuningClient::hasTests() const { return m_client && m_client->hasProtocolCapability(dev::proto::CapExperiments); }
 
 QVector<int> ProtocolTuningClient::tunableAxes() const
 {
     QVector<int> out;
-    if (!hasGains() || !m_client->hasProtocolCapability(proto::CapClosedLoopPid))
+    if (!hasGains() || !m_client->hasProtocolCapability(dev::proto::CapClosedLoopPid))
         return out;
     for (int i = 0; i < m_client->identity().axes.size(); ++i)
         out.push_back(i);
@@ -70,20 +70,20 @@ double ProtocolTuningClient::scale(int axis) const
 void ProtocolTuningClient::getGains(int axis, GainsDone done)
 {
     m_client->request(
-        proto::kGetGains, proto::encode(proto::AxisRequest{static_cast<std::uint8_t>(axis)}),
-        [done](const std::optional<RequestError>& e, const proto::Bytes& payload) {
+        dev::proto::kGetGains, dev::proto::encode(dev::proto::AxisRequest{static_cast<std::uint8_t>(axis)}),
+        [done](const std::optional<RequestError>& e, const dev::proto::Bytes& payload) {
             AxisGains g;
             if (e)
                 return done(e, g);
-            const auto r = proto::decodeGainsReply(payload);
+            const auto r = dev::proto::decodeGainsReply(payload);
             if (!r)
-                return done(tuningInvalid(msg::make("request.gains_unreadable")), g);
+                return done(tuningInvalid(motion::msg::make("request.gains_unreadable")), g);
             g.axis = r->axis;
             g.controlPeriodS = r->controlPeriodUs * 1e-6;
             g.gains = fromWire(r->gains);
             g.saved = fromWire(r->saved);
             g.limits = fromWire(r->limits);
-            g.testRunning = r->flags & proto::kGainsTestRunning;
+            g.testRunning = r->flags & dev::proto::kGainsTestRunning;
             done(std::nullopt, g);
         },
         "request.get_gains");
@@ -91,19 +91,19 @@ void ProtocolTuningClient::getGains(int axis, GainsDone done)
 
 void ProtocolTuningClient::setGains(int axis, const DiscreteGains& gains, bool keep, Callback done)
 {
-    proto::SetGainsRequest r{static_cast<std::uint8_t>(axis), static_cast<std::uint8_t>(keep ? proto::kSetGainsSave : 0), toWire(gains)};
-    send(proto::kSetGains, proto::encode(r), std::move(done), "request.set_gains");
+    dev::proto::SetGainsRequest r{static_cast<std::uint8_t>(axis), static_cast<std::uint8_t>(keep ? dev::proto::kSetGainsSave : 0), toWire(gains)};
+    send(dev::proto::kSetGains, dev::proto::encode(r), std::move(done), "request.set_gains");
 }
 
 void ProtocolTuningClient::startStepTest(const StepTestParams& p, Callback done)
 {
     const double k = scale(p.axis);
-    proto::StepTestRequest r;
+    dev::proto::StepTestRequest r;
     r.axis = static_cast<std::uint8_t>(p.axis);
     const double step = std::llround(p.stepMm * k);
     if (!std::isfinite(p.stepMm) || std::abs(step) > 2147483647.0) {
         if (done)
-            done(tuningInvalid(msg::make("request.step_size_invalid", {msg::real("step", p.stepMm, msg::Unit::Mm)})));
+            done(tuningInvalid(motion::msg::make("request.step_size_invalid", {motion::msg::real("step", p.stepMm, motion::msg::Unit::Mm)})));
         return;
     }
     r.step = static_cast<std::int32_t>(step);
@@ -113,32 +113,32 @@ void ProtocolTuningClient::startStepTest(const StepTestParams& p, Callback done)
     r.envelope = toWire(p.envelope, k);
     if (p.trialGains)
         r.trialGains = toWire(*p.trialGains);
-    send(proto::kStepTest, proto::encode(r), std::move(done), "request.step_test");
+    send(dev::proto::kStepTest, dev::proto::encode(r), std::move(done), "request.step_test");
 }
 
 void ProtocolTuningClient::startRelayTest(const RelayTestParams& p, Callback done)
 {
     const double k = scale(p.axis);
-    proto::RelayTestRequest r;
+    dev::proto::RelayTestRequest r;
     r.axis = static_cast<std::uint8_t>(p.axis);
     r.amplitude = toU32(p.amplitudeMm * k);
     r.hysteresis = toU32(p.hysteresisMm * k);
     r.forcedPeriodUs = toU32(p.forcedPeriodS * 1e6);
     r.cycles = static_cast<std::uint16_t>(std::clamp(p.cycles, 0, 65535));
     r.envelope = toWire(p.envelope, k);
-    send(proto::kRelayTest, proto::encode(r), std::move(done), "request.relay_test");
+    send(dev::proto::kRelayTest, dev::proto::encode(r), std::move(done), "request.relay_test");
 }
 
 void ProtocolTuningClient::abortTests(quint8 axisMask, Callback done)
 {
-    send(proto::kTestAbort, proto::encode(proto::AbortRequest{axisMask}), std::move(done), "request.abort_test");
+    send(dev::proto::kTestAbort, dev::proto::encode(dev::proto::AbortRequest{axisMask}), std::move(done), "request.abort_test");
 }
 
-void ProtocolTuningClient::send(proto::MsgType type, const proto::Bytes& payload, Callback done, const std::string& what)
+void ProtocolTuningClient::send(dev::proto::MsgType type, const dev::proto::Bytes& payload, Callback done, const std::string& what)
 {
     m_client->request(
         type, payload,
-        [done](const std::optional<RequestError>& e, const proto::Bytes&) {
+        [done](const std::optional<RequestError>& e, const dev::proto::Bytes&) {
             if (done)
                 done(e);
         },
@@ -154,20 +154,20 @@ void ProtocolTuningClient::fetchCapture(int axis, CaptureDone done, Progress pro
 
 void ProtocolTuningClient::fetchChunk(int axis, std::shared_ptr<TestCapture> into, quint32 first, CaptureDone done, Progress progress)
 {
-    const proto::CaptureRequest q{static_cast<std::uint8_t>(axis), first, proto::kMaxCaptureSamplesPerReply};
+    const dev::proto::CaptureRequest q{static_cast<std::uint8_t>(axis), first, dev::proto::kMaxCaptureSamplesPerReply};
     QPointer<ProtocolTuningClient> self(this);
     m_client->request(
-        proto::kGetCapture, proto::encode(q),
-        [self, axis, into, first, done, progress](const std::optional<RequestError>& e, const proto::Bytes& payload) {
+        dev::proto::kGetCapture, dev::proto::encode(q),
+        [self, axis, into, first, done, progress](const std::optional<RequestError>& e, const dev::proto::Bytes& payload) {
             if (!self)
                 return;
             if (e)
                 return done(e, *into);
-            const auto c = proto::decodeCaptureReply(payload);
+            const auto c = dev::proto::decodeCaptureReply(payload);
             if (!c)
-                return done(tuningInvalid(msg::make("request.capture_unreadable")), *into);
+                return done(tuningInvalid(motion::msg::make("request.capture_unreadable")), *into);
             if (first > 0 && c->testId != into->testId)
-                return done(tuningInvalid(msg::make("request.capture_replaced")), *into);
+                return done(tuningInvalid(motion::msg::make("request.capture_replaced")), *into);
             const double k = self->scale(axis);
             auto& r = into->record;
             if (first == 0) {

@@ -32,7 +32,7 @@ public:
 private:
     void fetchChunk(int axis, std::shared_ptr<TestCapture> into, quint32 first, CaptureDone done, Progress progress);
     /// A request whose reply has no payload.
-    void send(proto::MsgType type, const proto::Bytes& payload, Callback done, const std::string& what);
+    void send(dev::proto::MsgType type, const dev::proto::Bytes& payload, Callback done, const std::string& what);
     double scale(int axis) const;
 
     QPointer<BenchPilotClient> m_client;

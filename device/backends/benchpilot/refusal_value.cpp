@@ -5,29 +5,29 @@
 
 namespace dev {
 
-std::optional<msg::Arg> refusalValue(const proto::ErrorReply& e, const AxisDescriptor* axis)
+std::optional<motion::msg::Arg> refusalValue(const dev::proto::ErrorReply& e, const AxisDescriptor* axis)
 {
-    using proto::ErrorCode;
+    using dev::proto::ErrorCode;
     const auto code = e.code;
     // NotHomed's value is a target only for a move (0 for a test or a path): the sentence needs none.
     if (code == ErrorCode::SoftLimit) {
         if (!axis)
             return std::nullopt;
-        const msg::Unit unit = axis->unit == proto::AxisUnit::Microlitre ? msg::Unit::Ul : msg::Unit::Mm;
-        return msg::real("value", e.value / axis->wireScale(), unit);
+        const motion::msg::Unit unit = axis->unit == dev::proto::AxisUnit::Microlitre ? motion::msg::Unit::Ul : motion::msg::Unit::Mm;
+        return motion::msg::real("value", e.value / axis->wireScale(), unit);
     }
     if (code == ErrorCode::OverCapacity)
-        return msg::real("value", e.value, msg::Unit::Hz);
-    if (code == proto::kErrBadGains) {
+        return motion::msg::real("value", e.value, motion::msg::Unit::Hz);
+    if (code == dev::proto::kErrBadGains) {
         static const char* const names[] = {"kp", "ki", "kd"};
-        return e.value >= 0 && e.value <= 2 ? std::optional<msg::Arg>(msg::verbatim("value", names[e.value])) : std::nullopt;
+        return e.value >= 0 && e.value <= 2 ? std::optional<motion::msg::Arg>(motion::msg::verbatim("value", names[e.value])) : std::nullopt;
     }
-    if (code == ErrorCode::UnknownCommand || code == ErrorCode::BadAxis || code == proto::kErrNoCapture
+    if (code == ErrorCode::UnknownCommand || code == ErrorCode::BadAxis || code == dev::proto::kErrNoCapture
         || code == ErrorCode::PathQueueFull || code == ErrorCode::PathSequence || code == ErrorCode::PathGeometry
-        || code == proto::kErrCompSequence)
-        return msg::integer("value", e.value);
-    if (code == proto::kErrCompInvalid && e.value >= 0)
-        return msg::integer("value", e.value);
+        || code == dev::proto::kErrCompSequence)
+        return motion::msg::integer("value", e.value);
+    if (code == dev::proto::kErrCompInvalid && e.value >= 0)
+        return motion::msg::integer("value", e.value);
     return std::nullopt;
 }
 

@@ -15,6 +15,6 @@ namespace dev {
 /// gains and compensation codes; nullopt where the code's value says nothing to a
 /// person (0, device-specific, or a value of unknown unit). `axis`: the axis at
 /// fault, or nullptr.
-std::optional<msg::Arg> refusalValue(const proto::ErrorReply& e, const AxisDescriptor* axis);
+std::optional<motion::msg::Arg> refusalValue(const dev::proto::ErrorReply& e, const AxisDescriptor* axis);
 
 } // namespace dev

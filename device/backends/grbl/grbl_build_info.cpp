@@ -1,6 +1,6 @@
 #include "device/backends/grbl/grbl_build_info.h"
 
-namespace grbl {
+namespace dev::grbl {
 
 std::size_t BuildInfo::rxBufferOrDefault(Firmware family) const
 {
@@ -90,4 +90,4 @@ bool addBuildInfoLine(BuildInfo& info, const Line& line)
     }
 }
 
-} // namespace grbl
+} // namespace dev::grbl

@@ -18,7 +18,7 @@
 #include <utility>
 #include <vector>
 
-namespace grbl {
+namespace dev::grbl {
 
 struct BuildInfo {
     std::string version;        ///< "1.1h.20190830"
@@ -41,4 +41,4 @@ struct BuildInfo {
 /// (the caller then handles it as any other line).
 bool addBuildInfoLine(BuildInfo& info, const Line& line);
 
-} // namespace grbl
+} // namespace dev::grbl

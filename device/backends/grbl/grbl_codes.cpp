@@ -11,7 +11,7 @@
 #define QT_TRANSLATE_NOOP(scope, x) x
 #endif
 
-namespace grbl {
+namespace dev::grbl {
 namespace {
 
 const CodeMeaning kErrors[] = {
@@ -144,11 +144,11 @@ const CodeMeaning* alarmTable(std::size_t* count)
     return kAlarms;
 }
 
-msg::Message errorMessage(int code, std::string_view line)
+motion::msg::Message errorMessage(int code, std::string_view line)
 {
-    return msg::make("grbl.error", {msg::integer("code", code, msg::Unit::None), msg::verbatim("line", std::string(line))});
+    return motion::msg::make("grbl.error", {motion::msg::integer("code", code, motion::msg::Unit::None), motion::msg::verbatim("line", std::string(line))});
 }
 
-msg::Message alarmMessage(int code) { return msg::make("grbl.alarm", {msg::integer("code", code, msg::Unit::None)}); }
+motion::msg::Message alarmMessage(int code) { return motion::msg::make("grbl.alarm", {motion::msg::integer("code", code, motion::msg::Unit::None)}); }
 
-} // namespace grbl
+} // namespace dev::grbl

@@ -4,7 +4,7 @@
 // for Qt's lupdate with the context "grbl" so the wording layer translates them; this
 // header and the table stay plain C++.
 //
-// A line from the device becomes a msg::Message here, never a sentence:
+// A line from the device becomes a motion::msg::Message here, never a sentence:
 //   grbl.error{code, line}    an error:N answering `line` (the line the streamer sent)
 //   grbl.alarm{code}          an ALARM:N
 // The wording layer finds the meaning with errorMeaning()/alarmMeaning(code) and
@@ -15,7 +15,7 @@
 #include <cstddef>
 #include <string_view>
 
-namespace grbl {
+namespace dev::grbl {
 
 struct CodeMeaning {
     int code = 0;
@@ -33,8 +33,8 @@ const CodeMeaning* alarmTable(std::size_t* count);
 
 /// grbl.error{code, line}: `line` is the command that the error answers (may be empty
 /// when the host no longer knows it, e.g. after a reset).
-msg::Message errorMessage(int code, std::string_view line);
+motion::msg::Message errorMessage(int code, std::string_view line);
 /// grbl.alarm{code}.
-msg::Message alarmMessage(int code);
+motion::msg::Message alarmMessage(int code);
 
-} // namespace grbl
+} // namespace dev::grbl

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace grbl {
+namespace dev::grbl {
 
 std::string formatNumber(double value, int decimals)
 {
@@ -34,7 +34,7 @@ constexpr double kMaxAbsMm = 1e6;        ///< 1 km: anything larger is a unit mi
 constexpr double kMaxFeedMmMin = 1e6;
 using motion::kPi;
 
-GcodeLine refuse(msg::Message why)
+GcodeLine refuse(motion::msg::Message why)
 {
     GcodeLine l;
     l.problem = std::move(why);
@@ -44,8 +44,8 @@ GcodeLine refuse(msg::Message why)
 GcodeLine finish(std::string text)
 {
     if (text.size() > kMaxLineChars)
-        return refuse(msg::make("grbl.gcode.too_long", {msg::verbatim("line", text),
-                                                        msg::integer("limit", static_cast<long long>(kMaxLineChars), msg::Unit::Byte)}));
+        return refuse(motion::msg::make("grbl.gcode.too_long", {motion::msg::verbatim("line", text),
+                                                        motion::msg::integer("limit", static_cast<long long>(kMaxLineChars), motion::msg::Unit::Byte)}));
     GcodeLine l;
     l.text = std::move(text);
     return l;
@@ -55,7 +55,7 @@ bool finiteWord(char letter, double v, double limit, GcodeLine& fail)
 {
     if (std::isfinite(v) && std::fabs(v) <= limit)
         return true;
-    fail = refuse(msg::make("grbl.gcode.not_finite", {msg::verbatim("word", std::string(1, letter))}));
+    fail = refuse(motion::msg::make("grbl.gcode.not_finite", {motion::msg::verbatim("word", std::string(1, letter))}));
     return false;
 }
 
@@ -63,7 +63,7 @@ bool feedOk(double feed, GcodeLine& fail)
 {
     if (std::isfinite(feed) && feed > 0 && feed <= kMaxFeedMmMin)
         return true;
-    fail = refuse(msg::make("grbl.gcode.bad_feed", {msg::real("feed", std::isfinite(feed) ? feed : 0, msg::Unit::MmPerMin)}));
+    fail = refuse(motion::msg::make("grbl.gcode.bad_feed", {motion::msg::real("feed", std::isfinite(feed) ? feed : 0, motion::msg::Unit::MmPerMin)}));
     return false;
 }
 
@@ -73,12 +73,12 @@ bool axisLetterOk(char c) { return c == 'X' || c == 'Y' || c == 'Z' || c == 'A' 
 bool axisWords(const std::vector<AxisValue>& axes, std::string& out, GcodeLine& fail)
 {
     if (axes.empty()) {
-        fail = refuse(msg::make("grbl.gcode.no_axes"));
+        fail = refuse(motion::msg::make("grbl.gcode.no_axes"));
         return false;
     }
     for (const auto& a : axes) {
         if (!axisLetterOk(a.letter)) {
-            fail = refuse(msg::make("grbl.gcode.bad_axis", {msg::verbatim("axis", std::string(1, a.letter))}));
+            fail = refuse(motion::msg::make("grbl.gcode.bad_axis", {motion::msg::verbatim("axis", std::string(1, a.letter))}));
             return false;
         }
         if (!finiteWord(a.letter, a.mm, kMaxAbsMm, fail))
@@ -142,7 +142,7 @@ GcodeLine dwellLine(double seconds)
 {
     // GRBL 1.1 requires P > 0 (the interface document's G4 P0.01 example); 3 decimals = 1 ms.
     if (!std::isfinite(seconds) || seconds < 0.001 || seconds > 1e5)
-        return refuse(msg::make("grbl.gcode.bad_dwell", {msg::real("seconds", std::isfinite(seconds) ? seconds : 0, msg::Unit::S)}));
+        return refuse(motion::msg::make("grbl.gcode.bad_dwell", {motion::msg::real("seconds", std::isfinite(seconds) ? seconds : 0, motion::msg::Unit::S)}));
     return finish("G4 P" + formatNumber(seconds, 3));
 }
 
@@ -163,7 +163,7 @@ GcodeLine outputLine(TriggerOutput kind, bool on, int port, bool synchronized)
     if (kind == TriggerOutput::Coolant)
         return finish(on ? "M8" : "M9");
     if (port < 0 || port > 255)
-        return refuse(msg::make("grbl.gcode.bad_port", {msg::integer("port", port, msg::Unit::None)}));
+        return refuse(motion::msg::make("grbl.gcode.bad_port", {motion::msg::integer("port", port, motion::msg::Unit::None)}));
     const char* m = synchronized ? (on ? "M62" : "M63") : (on ? "M64" : "M65");
     return finish(std::string(m) + " P" + std::to_string(port));
 }
@@ -172,10 +172,10 @@ GcodeLine settingWriteLine(int id, double value)
 {
     GcodeLine fail;
     if (id < 0 || id > 9999)
-        return refuse(msg::make("grbl.gcode.bad_setting", {msg::integer("setting", id, msg::Unit::None)}));
+        return refuse(motion::msg::make("grbl.gcode.bad_setting", {motion::msg::integer("setting", id, motion::msg::Unit::None)}));
     if (!finiteWord('$', value, 1e9, fail))
         return fail;
     return finish("$" + std::to_string(id) + "=" + formatNumber(value, 4));
 }
 
-} // namespace grbl
+} // namespace dev::grbl

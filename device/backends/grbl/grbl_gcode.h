@@ -16,14 +16,14 @@
 #include <string>
 #include <vector>
 
-namespace grbl {
+namespace dev::grbl {
 
 /// "12.5", "-0.0001", "100" ("-0" never): fixed point with at most `decimals` decimals.
 std::string formatNumber(double value, int decimals = 4);
 
 struct GcodeLine {
     std::string text;       ///< without '\n'; empty when refused
-    msg::Message problem;   ///< grbl.gcode.not_finite{word}, grbl.gcode.bad_feed{feed}, grbl.gcode.too_long{line, limit}
+    motion::msg::Message problem;   ///< grbl.gcode.not_finite{word}, grbl.gcode.bad_feed{feed}, grbl.gcode.too_long{line, limit}
     bool ok() const { return !text.empty(); }
 };
 
@@ -75,4 +75,4 @@ inline std::string parserStateLine() { return "$G"; }
 /// document forbids streaming settings with character counting).
 GcodeLine settingWriteLine(int id, double value);
 
-} // namespace grbl
+} // namespace dev::grbl

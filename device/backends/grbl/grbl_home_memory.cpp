@@ -101,7 +101,7 @@ std::vector<GrblHome> GrblHomeMemory::readAll() const
         return {};
     std::string text;
     QString error;
-    if (!files::readText(m_path, &text, &error, 1024 * 1024))
+    if (!dev::files::readText(m_path, &text, &error, 1024 * 1024))
         return {};
     return parse(text);
 }
@@ -112,7 +112,7 @@ bool GrblHomeMemory::writeAll(const std::vector<GrblHome>& homes) const
         return false;
     QDir().mkpath(QFileInfo(m_path).absolutePath());
     QString error;
-    return files::writeAtomically(m_path, serialize(homes), &error);
+    return dev::files::writeAtomically(m_path, serialize(homes), &error);
 }
 
 std::optional<GrblHome> GrblHomeMemory::recall(const std::string& controller) const

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace grbl {
+namespace dev::grbl {
 
 namespace {
 
@@ -35,9 +35,9 @@ JogPlan planContinuousJog(const JogPlanInput& in)
                       && in.plannerBlocks >= 3 && in.refreshPeriodS >= 0 && in.linkLatencyS >= 0 && in.stopBudgetS > 0;
     // Even a creeping jog needs L + C + dt: a host that refreshes too rarely cannot promise the budget.
     if (!sane || overrunS(in, 0) >= in.stopBudgetS) {
-        p.problem = msg::make("grbl.jog.budget_too_small", {msg::real("budget", in.stopBudgetS, msg::Unit::S),
-                                                             msg::real("latency", in.linkLatencyS, msg::Unit::S),
-                                                             msg::real("refresh", in.refreshPeriodS, msg::Unit::S)});
+        p.problem = motion::msg::make("grbl.jog.budget_too_small", {motion::msg::real("budget", in.stopBudgetS, motion::msg::Unit::S),
+                                                             motion::msg::real("latency", in.linkLatencyS, motion::msg::Unit::S),
+                                                             motion::msg::real("refresh", in.refreshPeriodS, motion::msg::Unit::S)});
         return p;
     }
     double v = wanted;
@@ -145,4 +145,4 @@ std::uint8_t ContinuousJog::stop()
     return rt::kJogCancel;
 }
 
-} // namespace grbl
+} // namespace dev::grbl

@@ -26,7 +26,7 @@
 #include <utility>
 #include <vector>
 
-namespace grbl {
+namespace dev::grbl {
 
 struct JogPlanInput {
     double speedMmS = 10;            ///< asked for
@@ -41,7 +41,7 @@ struct JogPlanInput {
 
 struct JogPlan {
     bool feasible = false;
-    msg::Message problem;            ///< grbl.jog.budget_too_small{budget, latency, refresh} when not feasible
+    motion::msg::Message problem;            ///< grbl.jog.budget_too_small{budget, latency, refresh} when not feasible
     double speedMmS = 0;             ///< what the jog runs at (≤ asked; lowered to keep the promises)
     bool speedLimited = false;       ///< lowered below min(asked, maxRate) for the stop budget
     double feedMmMin = 0;
@@ -99,4 +99,4 @@ private:
     std::uint64_t m_sent = 0;
 };
 
-} // namespace grbl
+} // namespace dev::grbl

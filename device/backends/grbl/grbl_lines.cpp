@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 
-namespace grbl {
+namespace dev::grbl {
 
 // ---- LineReader -------------------------------------------------------------------------
 
@@ -238,4 +238,4 @@ std::optional<ProbeLine> parseProbeLine(std::string_view payload)
     return ProbeLine{std::move(*pos), flag == "1"};
 }
 
-} // namespace grbl
+} // namespace dev::grbl

@@ -14,7 +14,7 @@
 #include <string_view>
 #include <vector>
 
-namespace grbl {
+namespace dev::grbl {
 
 /// Splits bytes into lines at '\n'; a '\r' before it is dropped (GRBL ends lines with
 /// "\r\n"). A line longer than kMaxLineBytes is cut there and marked truncated: the rest
@@ -99,4 +99,4 @@ std::optional<std::vector<double>> parseNumberList(std::string_view text, std::s
 /// A whole string as a finite number ("-12.5", "3", ".5"); nullopt otherwise.
 std::optional<double> parseNumber(std::string_view text);
 
-} // namespace grbl
+} // namespace dev::grbl

@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace grbl {
+namespace dev::grbl {
 
 /// Which firmware family answered. grblHAL in its default compatibility level announces
 /// itself as "GrblHAL"; built for level 1 or 2 it says "Grbl" and is told apart by $I.
@@ -126,4 +126,4 @@ constexpr int kAccelMmS2X = 120;       ///< +axis index
 constexpr int kMaxTravelMmX = 130;     ///< +axis index
 } // namespace setting
 
-} // namespace grbl
+} // namespace dev::grbl

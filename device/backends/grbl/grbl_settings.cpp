@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace grbl {
+namespace dev::grbl {
 
 void Settings::add(const SettingLine& s)
 {
@@ -64,14 +64,14 @@ LimitsRead machineLimits(const Settings& s, std::string_view axisLetters)
         auto required = [&](int id, double& field, double scale) {
             const auto v = s.value(id);
             if (!v) {
-                out.problems.push_back(msg::make("grbl.settings.missing",
-                                                 {msg::integer("setting", id, msg::Unit::None), msg::verbatim("axis", std::string(1, a.letter))}));
+                out.problems.push_back(motion::msg::make("grbl.settings.missing",
+                                                 {motion::msg::integer("setting", id, motion::msg::Unit::None), motion::msg::verbatim("axis", std::string(1, a.letter))}));
                 return;
             }
             if (!(*v > 0) || !std::isfinite(*v)) {
-                out.problems.push_back(msg::make("grbl.settings.invalid", {msg::integer("setting", id, msg::Unit::None),
-                                                                          msg::verbatim("axis", std::string(1, a.letter)),
-                                                                          msg::real("value", *v)}));
+                out.problems.push_back(motion::msg::make("grbl.settings.invalid", {motion::msg::integer("setting", id, motion::msg::Unit::None),
+                                                                          motion::msg::verbatim("axis", std::string(1, a.letter)),
+                                                                          motion::msg::real("value", *v)}));
                 return;
             }
             field = *v * scale;
@@ -82,12 +82,12 @@ LimitsRead machineLimits(const Settings& s, std::string_view axisLetters)
         m.axes.push_back(a);
     }
     if (m.reportInches)
-        out.warnings.push_back(msg::make("grbl.settings.report_inches"));
+        out.warnings.push_back(motion::msg::make("grbl.settings.report_inches"));
     if (m.softLimits && !m.homingEnabled)
-        out.warnings.push_back(msg::make("grbl.settings.soft_limits_without_homing"));
+        out.warnings.push_back(motion::msg::make("grbl.settings.soft_limits_without_homing"));
     if (out.problems.empty())
         out.limits = std::move(m);
     return out;
 }
 
-} // namespace grbl
+} // namespace dev::grbl

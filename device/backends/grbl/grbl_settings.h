@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-namespace grbl {
+namespace dev::grbl {
 
 /// Every $N=V line of a $$ answer, by number.
 class Settings {
@@ -64,12 +64,12 @@ struct LimitsRead {
     std::optional<MachineLimits> limits;  ///< absent when a required setting is missing or invalid
     /// Refusals (grbl.settings.missing{setting}, grbl.settings.invalid{setting, value}) and
     /// warnings (grbl.settings.report_inches, grbl.settings.soft_limits_without_homing).
-    std::vector<msg::Message> problems;
-    std::vector<msg::Message> warnings;
+    std::vector<motion::msg::Message> problems;
+    std::vector<motion::msg::Message> warnings;
 };
 
 /// Limits of the axes named by `axisLetters` ("XYZ", or grblHAL's [AXS:] letters), in the
 /// firmware's order. Rate, acceleration and travel of each are required and must be > 0.
 LimitsRead machineLimits(const Settings& s, std::string_view axisLetters = "XYZ");
 
-} // namespace grbl
+} // namespace dev::grbl

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-namespace grbl {
+namespace dev::grbl {
 
 namespace {
 
@@ -18,8 +18,8 @@ constexpr std::pair<const char*, MachineState> kStates[] = {
 StatusParse refuse(std::string_view payload, const char* reason)
 {
     StatusParse p;
-    p.problem = msg::make("grbl.status.malformed",
-                          {msg::verbatim("line", "<" + std::string(payload.substr(0, 200)) + ">"), msg::term("reason", reason)});
+    p.problem = motion::msg::make("grbl.status.malformed",
+                          {motion::msg::verbatim("line", "<" + std::string(payload.substr(0, 200)) + ">"), motion::msg::term("reason", reason)});
     return p;
 }
 
@@ -208,4 +208,4 @@ bool StatusTracker::update(const StatusReport& r)
     return true;
 }
 
-} // namespace grbl
+} // namespace dev::grbl

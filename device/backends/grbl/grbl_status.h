@@ -22,7 +22,7 @@
 #include <utility>
 #include <vector>
 
-namespace grbl {
+namespace dev::grbl {
 
 enum class MachineState { Unknown, Idle, Run, Hold, Jog, Alarm, Door, Check, Home, Sleep, Tool };
 
@@ -57,7 +57,7 @@ struct StatusReport {
 
 struct StatusParse {
     std::optional<StatusReport> report;
-    msg::Message problem;  ///< grbl.status.malformed{line, reason} when report is empty
+    motion::msg::Message problem;  ///< grbl.status.malformed{line, reason} when report is empty
 };
 
 /// `payload` is the text between '<' and '>' (Line::payload of a LineKind::Status line).
@@ -101,4 +101,4 @@ private:
     std::string m_acc;
 };
 
-} // namespace grbl
+} // namespace dev::grbl

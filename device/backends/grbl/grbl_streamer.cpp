@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace grbl {
+namespace dev::grbl {
 
 namespace {
 /// The device's ring buffer keeps one slot empty, so a 128-byte buffer holds 127 (the
@@ -97,4 +97,4 @@ std::vector<Streamer::Ack> Streamer::softReset(bool dropQueue)
     return lost;
 }
 
-} // namespace grbl
+} // namespace dev::grbl

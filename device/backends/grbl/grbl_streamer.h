@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-namespace grbl {
+namespace dev::grbl {
 
 class Streamer {
 public:
@@ -90,4 +90,4 @@ private:
     std::uint64_t m_linesSent = 0;
 };
 
-} // namespace grbl
+} // namespace dev::grbl

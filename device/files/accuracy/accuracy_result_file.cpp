@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
-using jsonio::ObjectReader;
-using jsonio::Value;
+using dev::files::json::ObjectReader;
+using dev::files::json::Value;
 using namespace motion::metrology;
 
 namespace {
@@ -60,7 +60,7 @@ std::optional<double> figureByKey(const Figures& f, const std::string& key)
 std::string accuracyResultToJson(const AccuracyResult& r)
 {
     const Evaluation& e = r.evaluation;
-    Value root = jsonio::schemaObject(kAccuracyResultSchema, kAccuracyResultVersion);
+    Value root = dev::files::json::schemaObject(kAccuracyResultSchema, kAccuracyResultVersion);
     root.set("axis", r.axis);
     root.set("standard", "ISO 230-2:2014");
     root.set("bidirectional", e.bidirectional);
@@ -116,20 +116,20 @@ std::string accuracyResultToJson(const AccuracyResult& r)
         root.set("readings_file", r.readingsFile);
     if (!r.createdUtc.empty())
         root.set("created_utc", r.createdUtc);
-    return jsonio::write(root);
+    return dev::files::json::write(root);
 }
 
 AccuracyResultRead accuracyResultFromJson(std::string_view text, std::string_view fileName)
 {
     AccuracyResultRead out;
-    const jsonio::ParseResult parsed = jsonio::parse(text);
+    const dev::files::json::ParseResult parsed = dev::files::json::parse(text);
     if (!parsed) {
         out.problems.push_back(fromParseError(parsed.error, fileName));
         return out;
     }
     const Value& root = *parsed.value;
-    jsonio::Problems p;
-    if (!jsonio::checkSchema(root, kAccuracyResultSchema, kAccuracyResultVersion, p)) {
+    dev::files::json::Problems p;
+    if (!dev::files::json::checkSchema(root, kAccuracyResultSchema, kAccuracyResultVersion, p)) {
         addJsonProblems(p, fileName, out.problems);
         return out;
     }
@@ -143,7 +143,7 @@ AccuracyResultRead accuracyResultFromJson(std::string_view text, std::string_vie
     std::vector<TargetStatistics> table;
     if (const Value* list = o.get("targets", Value::Type::Array, true)) {
         for (std::size_t i = 0; i < list->items().size(); ++i) {
-            ObjectReader to(list->items()[i], jsonio::childPath("targets", i), p);
+            ObjectReader to(list->items()[i], dev::files::json::childPath("targets", i), p);
             TargetStatistics t;
             const auto target = to.number("target_mm", true, -kResultAny, kResultAny);
             const auto nUp = to.integer("n_up", true, 0, 1000000);
@@ -164,7 +164,7 @@ AccuracyResultRead accuracyResultFromJson(std::string_view text, std::string_vie
             to.refuseUnknown({"target_mm", "n_up", "n_down", "mean_up_mm", "s_up_mm", "mean_down_mm", "s_down_mm", "mean_mm", "reversal_mm", "r_up_mm",
                               "r_down_mm", "r_mm"});
             if (bidirectional && (!t.meanDownMm || !t.sDownMm))
-                p.add(list->items()[i], jsonio::childPath("targets", i), msg::make("accuracy.result.needs_down_statistics"));
+                p.add(list->items()[i], dev::files::json::childPath("targets", i), motion::msg::make("accuracy.result.needs_down_statistics"));
             if (target && nUp && meanUp && sUp) {
                 t.targetMm = *target;
                 t.nUp = static_cast<int>(*nUp);
@@ -199,30 +199,30 @@ AccuracyResultRead accuracyResultFromJson(std::string_view text, std::string_vie
         return out;
 
     r.evaluation = summarize(table, bidirectional);
-    msg::Problems model = r.evaluation.problems;
+    motion::msg::Problems model = r.evaluation.problems;
     validateTolerances(r.tolerances, "tolerances", model);
     addModelProblems(model, root, fileName, out.problems);
     if (hasErrors(out.problems))
         return out;
 
     // The figures written must be the ones the table gives.
-    jsonio::Problems figureProblems;
+    dev::files::json::Problems figureProblems;
     ObjectReader fo(*figures, "figures", figureProblems);
     for (const std::string& key : figureKeys()) {
         const std::optional<double> computed = figureByKey(r.evaluation.figures, key);
         const Value* v = figures->find(key);
-        const jsonio::Position at = v ? v->position() : figures->position();
+        const dev::files::json::Position at = v ? v->position() : figures->position();
         const bool written = v && v->isNumber();
         if (v && !v->isNumber() && !v->isNull()) {
             out.problems.push_back({std::string(fileName), at.line, at.column, "figures." + key,
-                                    msg::make("file.json_field", {msg::nested("detail", msg::make("file.json.number_or_null", {msg::term("actual", jsonio::typeTerm(v->type()))}))})});
+                                    motion::msg::make("file.json_field", {motion::msg::nested("detail", motion::msg::make("file.json.number_or_null", {motion::msg::term("actual", dev::files::json::typeTerm(v->type()))}))})});
             continue;
         }
         if (written != computed.has_value() || (written && std::fabs(v->asNumber() - *computed) > kFigureAgreementMm))
             out.problems.push_back({std::string(fileName), at.line, at.column, "figures." + key,
-                                    msg::make("accuracy.result.figure_disagrees",
-                                              {msg::verbatim("figure", key), computed ? msg::real("computed", *computed, msg::Unit::Mm) : msg::verbatim("computed", "null"),
-                                               written ? msg::real("value", v->asNumber(), msg::Unit::Mm) : msg::verbatim("value", "null")})});
+                                    motion::msg::make("accuracy.result.figure_disagrees",
+                                              {motion::msg::verbatim("figure", key), computed ? motion::msg::real("computed", *computed, motion::msg::Unit::Mm) : motion::msg::verbatim("computed", "null"),
+                                               written ? motion::msg::real("value", v->asNumber(), motion::msg::Unit::Mm) : motion::msg::verbatim("value", "null")})});
     }
     std::vector<std::string_view> known(figureKeys().begin(), figureKeys().end());
     fo.refuseUnknown(known);
@@ -240,9 +240,9 @@ AccuracyResultRead loadAccuracyResultFile(const QString& path)
     return text ? accuracyResultFromJson(*text, name) : out;
 }
 
-bool saveAccuracyResultFile(const QString& path, const AccuracyResult& result, msg::Message* error)
+bool saveAccuracyResultFile(const QString& path, const AccuracyResult& result, motion::msg::Message* error)
 {
-    return files::writeAtomically(path, accuracyResultToJson(result), error);
+    return dev::files::writeAtomically(path, accuracyResultToJson(result), error);
 }
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

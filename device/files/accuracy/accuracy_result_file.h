@@ -19,7 +19,7 @@
 #include <string>
 #include <string_view>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
 constexpr const char* kAccuracyResultSchema = "benchpilot.accuracy-result";
 constexpr int kAccuracyResultVersion = 1;
@@ -44,12 +44,12 @@ std::string accuracyResultToJson(const AccuracyResult& result);
 
 struct AccuracyResultRead {
     std::optional<AccuracyResult> result;
-    msg::Problems problems;
+    motion::msg::Problems problems;
 };
 /// Plain C++: what the fuzzer drives.
 AccuracyResultRead accuracyResultFromJson(std::string_view text, std::string_view fileName);
 
 AccuracyResultRead loadAccuracyResultFile(const QString& path);
-bool saveAccuracyResultFile(const QString& path, const AccuracyResult& result, msg::Message* error);
+bool saveAccuracyResultFile(const QString& path, const AccuracyResult& result, motion::msg::Message* error);
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

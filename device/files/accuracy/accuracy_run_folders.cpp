@@ -3,7 +3,7 @@
 #include <QDir>
 #include <QFileInfo>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
 namespace {
 
@@ -31,4 +31,4 @@ QString latestRunFolder(const QString& base)
 
 QString nextRunFolder(const QString& base) { return numbered(base, static_cast<int>(runFolders(base).size()) + 1); }
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

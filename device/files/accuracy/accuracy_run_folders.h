@@ -7,7 +7,7 @@
 #include <QString>
 #include <QStringList>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
 /// The run folders of `base` that exist, in order: `base`, "<base>-2", "<base>-3", … up to
 /// the first number missing.
@@ -17,4 +17,4 @@ QString latestRunFolder(const QString& base);
 /// Where a new run beside the others goes: the first of `base`, "<base>-2", … not there yet.
 QString nextRunFolder(const QString& base);
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

@@ -4,10 +4,10 @@
 #include <cstdio>
 #include <cstdlib>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
-using jsonio::ObjectReader;
-using jsonio::Value;
+using dev::files::json::ObjectReader;
+using dev::files::json::Value;
 
 namespace {
 
@@ -33,22 +33,22 @@ std::optional<std::vector<double>> readPositions(ObjectReader& o, std::string_vi
     std::vector<double> out;
     for (const Value& item : v->items()) {
         if (!item.isNumber()) {
-            o.problems().add(item, o.pathOf(key), msg::make("accuracy.log.positions_not_numbers"));
+            o.problems().add(item, o.pathOf(key), motion::msg::make("accuracy.log.positions_not_numbers"));
             return std::nullopt;
         }
         out.push_back(item.asNumber());
     }
     if (out.empty() || out.size() > 2) {
-        o.problems().add(*v, o.pathOf(key), msg::make("accuracy.log.positions_count"));
+        o.problems().add(*v, o.pathOf(key), motion::msg::make("accuracy.log.positions_count"));
         return std::nullopt;
     }
     return out;
 }
 
-void addShifted(jsonio::Problems& into, const jsonio::Problems& line, int lineNo)
+void addShifted(dev::files::json::Problems& into, const dev::files::json::Problems& line, int lineNo)
 {
     for (const auto& p : line.list())
-        into.add(jsonio::Position{lineNo, p.column}, p.path, p.message);
+        into.add(dev::files::json::Position{lineNo, p.column}, p.path, p.message);
 }
 
 } // namespace
@@ -72,13 +72,13 @@ std::string fingerprintText(std::uint64_t fingerprint)
 
 std::string runLogHeader(const RunLogHeader& h)
 {
-    Value v = jsonio::schemaObject(kRunLogSchema, kRunLogVersion);
+    Value v = dev::files::json::schemaObject(kRunLogSchema, kRunLogVersion);
     v.set("test", Value(h.test));
     v.set("kind", Value(h.kind));
     v.set("fingerprint", Value(fingerprintText(h.fingerprint)));
     v.set("stops", Value(h.stops));
     v.set("source", Value(h.source));
-    return jsonio::write(v, false) + "\n";
+    return dev::files::json::write(v, false) + "\n";
 }
 
 std::string runLogLine(const RunLogEntry& e)
@@ -92,7 +92,7 @@ std::string runLogLine(const RunLogEntry& e)
     v.set("settled", Value(e.settled));
     v.set("device_time_us", Value(static_cast<double>(e.deviceTimeUs)));
     v.set("time_s", Value(e.timeS));
-    return jsonio::write(v, false) + "\n";
+    return dev::files::json::write(v, false) + "\n";
 }
 
 RunLogRead parseRunLog(std::string_view text)
@@ -110,18 +110,18 @@ RunLogRead parseRunLog(std::string_view text)
         ++lineNo;
         if (line.find_first_not_of(" \t\r") == std::string_view::npos)
             continue;
-        const jsonio::ParseResult parsed = jsonio::parse(line);
+        const dev::files::json::ParseResult parsed = dev::files::json::parse(line);
         if (!parsed) {
             if (!complete && header) {
                 log.tornTail = true;  // the write a crash interrupted: that stop is simply not read
                 break;
             }
-            out.problems.add(jsonio::Position{lineNo, parsed.error.position.column}, "", parsed.error.message);
+            out.problems.add(dev::files::json::Position{lineNo, parsed.error.position.column}, "", parsed.error.message);
             break;
         }
-        jsonio::Problems lp;
+        dev::files::json::Problems lp;
         if (!header) {
-            if (jsonio::checkSchema(*parsed.value, kRunLogSchema, kRunLogVersion, lp)) {
+            if (dev::files::json::checkSchema(*parsed.value, kRunLogSchema, kRunLogVersion, lp)) {
                 ObjectReader o(*parsed.value, "", lp);
                 o.refuseUnknown({"schema", "version", "test", "kind", "fingerprint", "stops", "source"});
                 const auto name = o.string("test", true);
@@ -130,7 +130,7 @@ RunLogRead parseRunLog(std::string_view text)
                 const auto stops = o.integer("stops", true, 1, 1000000);
                 const auto source = o.string("source", true);
                 if (fp && (fp->size() != 16 || fp->find_first_not_of("0123456789abcdef") != std::string::npos))
-                    lp.add(*parsed.value->find("fingerprint"), "fingerprint", msg::make("file.log.bad_fingerprint"));
+                    lp.add(*parsed.value->find("fingerprint"), "fingerprint", motion::msg::make("file.log.bad_fingerprint"));
                 else if (name && kind && fp && stops && source) {
                     log.header.test = *name;
                     log.header.kind = *kind;
@@ -160,10 +160,10 @@ RunLogRead parseRunLog(std::string_view text)
         if (stop && cycle && direction && target && measured && settled && time && seconds) {
             if (*stop != static_cast<long long>(log.entries.size()))
                 lp.add(*parsed.value->find("stop"), "stop",
-                       msg::make("accuracy.log.stop_out_of_order",
-                                 {msg::integer("stop", *stop), msg::integer("expected", static_cast<long long>(log.entries.size()))}));
+                       motion::msg::make("accuracy.log.stop_out_of_order",
+                                 {motion::msg::integer("stop", *stop), motion::msg::integer("expected", static_cast<long long>(log.entries.size()))}));
             else if (!measuredNull && measured->size() != target->size())
-                lp.add(*parsed.value->find("measured_mm"), "measured_mm", msg::make("accuracy.log.measured_count"));
+                lp.add(*parsed.value->find("measured_mm"), "measured_mm", motion::msg::make("accuracy.log.measured_count"));
             else {
                 e.stop = static_cast<int>(*stop);
                 e.cycle = static_cast<int>(*cycle);
@@ -182,10 +182,10 @@ RunLogRead parseRunLog(std::string_view text)
             return out;
     }
     if (!header && out.problems.empty())
-        out.problems.add(jsonio::Position{1, 1}, "", msg::make("file.log.empty"));
+        out.problems.add(dev::files::json::Position{1, 1}, "", motion::msg::make("file.log.empty"));
     if (out.problems.empty())
         out.log = std::move(log);
     return out;
 }
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

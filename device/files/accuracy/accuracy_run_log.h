@@ -22,7 +22,7 @@
 #include <string_view>
 #include <vector>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
 constexpr const char* kRunLogSchema = "benchpilot.accuracy-run";
 constexpr int kRunLogVersion = 1;
@@ -55,7 +55,7 @@ struct RunLog {
 
 struct RunLogRead {
     std::optional<RunLog> log;
-    jsonio::Problems problems;
+    dev::files::json::Problems problems;
 };
 
 std::string runLogHeader(const RunLogHeader& h);
@@ -68,4 +68,4 @@ RunLogRead parseRunLog(std::string_view text);
 std::uint64_t fingerprintOf(std::string_view text);
 std::string fingerprintText(std::uint64_t fingerprint);  ///< 16 hex digits
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

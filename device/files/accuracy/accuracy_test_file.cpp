@@ -3,10 +3,10 @@
 #include "device/files/accuracy/load_text.h"
 #include "device/files/text_file.h"
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
-using jsonio::ObjectReader;
-using jsonio::Value;
+using dev::files::json::ObjectReader;
+using dev::files::json::Value;
 using namespace motion::metrology;
 
 namespace {
@@ -42,7 +42,7 @@ Value tolerancesValue(const AxisTolerances& t)
     return v;
 }
 
-std::optional<XyPoint> readPoint(const Value& v, const std::string& path, jsonio::Problems& p)
+std::optional<XyPoint> readPoint(const Value& v, const std::string& path, dev::files::json::Problems& p)
 {
     ObjectReader o(v, path, p);
     const auto x = o.number("x_mm", true, -kTestAny, kTestAny), y = o.number("y_mm", true, -kTestAny, kTestAny);
@@ -106,7 +106,7 @@ AxisTest readAxis(ObjectReader& o)
             if (item.isNumber())
                 t.targetsMm.push_back(item.asNumber());
             else
-                o.problems().add(item, jsonio::childPath("targets_mm", i), jsonio::wrongType(Value::Type::Number, item.type()));
+                o.problems().add(item, dev::files::json::childPath("targets_mm", i), dev::files::json::wrongType(Value::Type::Number, item.type()));
         }
     }
     if (const Value* g = o.get("grid", Value::Type::Object, false)) {
@@ -137,7 +137,7 @@ XyLineTest readXy(ObjectReader& o)
     XyLineTest t;
     if (const Value* list = o.get("points_mm", Value::Type::Array, false))
         for (std::size_t i = 0; i < list->items().size(); ++i)
-            if (auto p = readPoint(list->items()[i], jsonio::childPath("points_mm", i), o.problems()))
+            if (auto p = readPoint(list->items()[i], dev::files::json::childPath("points_mm", i), o.problems()))
                 t.pointsMm.push_back(*p);
     if (const Value* v = o.get("from_mm", Value::Type::Object, false))
         t.fromMm = readPoint(*v, "from_mm", o.problems());
@@ -173,7 +173,7 @@ CircularTest readCircle(ObjectReader& o)
             else if (item.isString() && item.asString() == "ccw")
                 t.counterClockwise = true;
             else
-                o.problems().add(item, jsonio::childPath("directions", i), msg::make("file.json.not_one_of", {msg::verbatim("value", item.isString() ? item.asString().substr(0, 60) : std::string()), msg::verbatim("allowed", "\"cw\", \"ccw\"")}));
+                o.problems().add(item, dev::files::json::childPath("directions", i), motion::msg::make("file.json.not_one_of", {motion::msg::verbatim("value", item.isString() ? item.asString().substr(0, 60) : std::string()), motion::msg::verbatim("allowed", "\"cw\", \"ccw\"")}));
         }
     }
     if (auto x = o.number("lead_arc_deg", false, -kTestAny, kTestAny))
@@ -195,7 +195,7 @@ CircularTest readCircle(ObjectReader& o)
 
 std::string accuracyTestToJson(const AccuracyTest& test)
 {
-    Value root = jsonio::schemaObject(kAccuracyTestSchema, kAccuracyTestVersion);
+    Value root = dev::files::json::schemaObject(kAccuracyTestSchema, kAccuracyTestVersion);
     auto motionFields = [&](const auto& t) {
         root.set("cycles", t.cycles);
         root.set("overrun_mm", t.overrunMm);
@@ -265,20 +265,20 @@ std::string accuracyTestToJson(const AccuracyTest& test)
             root.set("tolerances", t);
         }
     }
-    return jsonio::write(root);
+    return dev::files::json::write(root);
 }
 
 AccuracyTestRead accuracyTestFromJson(std::string_view text, std::string_view fileName)
 {
     AccuracyTestRead out;
-    const jsonio::ParseResult parsed = jsonio::parse(text);
+    const dev::files::json::ParseResult parsed = dev::files::json::parse(text);
     if (!parsed) {
         out.problems.push_back(fromParseError(parsed.error, fileName));
         return out;
     }
     const Value& root = *parsed.value;
-    jsonio::Problems p;
-    if (!jsonio::checkSchema(root, kAccuracyTestSchema, kAccuracyTestVersion, p)) {
+    dev::files::json::Problems p;
+    if (!dev::files::json::checkSchema(root, kAccuracyTestSchema, kAccuracyTestVersion, p)) {
         addJsonProblems(p, fileName, out.problems);
         return out;
     }
@@ -290,7 +290,7 @@ AccuracyTestRead accuracyTestFromJson(std::string_view text, std::string_view fi
         return out;
     }
     AccuracyTest test;
-    msg::Problems model;
+    motion::msg::Problems model;
     if (*kind == "axis") {
         AxisTest t = readAxis(o);
         t.name = name;
@@ -324,9 +324,9 @@ AccuracyTestRead loadAccuracyTestFile(const QString& path)
     return text ? accuracyTestFromJson(*text, name) : out;
 }
 
-bool saveAccuracyTestFile(const QString& path, const AccuracyTest& test, msg::Message* error)
+bool saveAccuracyTestFile(const QString& path, const AccuracyTest& test, motion::msg::Message* error)
 {
-    return files::writeAtomically(path, accuracyTestToJson(test), error);
+    return dev::files::writeAtomically(path, accuracyTestToJson(test), error);
 }
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

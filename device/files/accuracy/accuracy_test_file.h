@@ -18,7 +18,7 @@
 #include <string_view>
 #include <variant>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
 constexpr const char* kAccuracyTestSchema = "benchpilot.accuracy-test";
 constexpr int kAccuracyTestVersion = 1;
@@ -29,12 +29,12 @@ std::string accuracyTestToJson(const AccuracyTest& test);
 
 struct AccuracyTestRead {
     std::optional<AccuracyTest> test;   ///< empty when there are errors
-    msg::Problems problems;              ///< errors, or warnings beside a test
+    motion::msg::Problems problems;              ///< errors, or warnings beside a test
 };
 /// Plain C++: what the fuzzer drives.
 AccuracyTestRead accuracyTestFromJson(std::string_view text, std::string_view fileName);
 
 AccuracyTestRead loadAccuracyTestFile(const QString& path);
-bool saveAccuracyTestFile(const QString& path, const AccuracyTest& test, msg::Message* error);
+bool saveAccuracyTestFile(const QString& path, const AccuracyTest& test, motion::msg::Message* error);
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

@@ -4,7 +4,7 @@
 #include <charconv>
 #include <cstdio>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
 namespace {
 
@@ -95,7 +95,7 @@ CsvTable parseCsv(std::string_view text, std::string_view file)
                     advance();
                 }
                 if (!closed) {
-                    out.problems.push_back({std::string(file), openLine, openColumn, "", msg::make("file.csv.unterminated_quote")});
+                    out.problems.push_back({std::string(file), openLine, openColumn, "", motion::msg::make("file.csv.unterminated_quote")});
                     return out;
                 }
                 std::size_t after = i;
@@ -104,7 +104,7 @@ CsvTable parseCsv(std::string_view text, std::string_view file)
                 if (after < text.size() && text[after] != ',' && text[after] != '\n') {
                     while (i < after)
                         advance();
-                    out.problems.push_back({std::string(file), line, column, "", msg::make("file.csv.text_after_quote")});
+                    out.problems.push_back({std::string(file), line, column, "", motion::msg::make("file.csv.text_after_quote")});
                     // Skip to the end of the line and go on, so later lines are still checked.
                     while (i < text.size() && text[i] != '\n')
                         advance();
@@ -175,7 +175,7 @@ bool looksSemicolonSeparated(const CsvRow& header)
     return header.cells.size() == 1 && header.cells[0].text.find(';') != std::string::npos;
 }
 
-LengthColumn findLengthColumn(const CsvRow& header, const std::string& stem, const std::string& usualName, std::string_view file, msg::Problems& out)
+LengthColumn findLengthColumn(const CsvRow& header, const std::string& stem, const std::string& usualName, std::string_view file, motion::msg::Problems& out)
 {
     LengthColumn found;
     for (std::size_t c = 0; c < header.cells.size(); ++c) {
@@ -185,27 +185,27 @@ LengthColumn findLengthColumn(const CsvRow& header, const std::string& stem, con
         const auto unit = unitToMm(std::string_view(name).substr(stem.size() + 1));
         if (!unit) {
             out.push_back({std::string(file), header.line, header.cells[c].column, header.cells[c].text,
-                           msg::make("accuracy.csv.unknown_unit", {msg::verbatim("column", header.cells[c].text), msg::verbatim("units", "mm, um, nm, m, in")})});
+                           motion::msg::make("accuracy.csv.unknown_unit", {motion::msg::verbatim("column", header.cells[c].text), motion::msg::verbatim("units", "mm, um, nm, m, in")})});
             return {-2, 1};
         }
         if (found.index >= 0) {
             out.push_back({std::string(file), header.line, header.cells[c].column, header.cells[c].text,
-                           msg::make("accuracy.csv.duplicate_column", {msg::verbatim("column", header.cells[c].text)})});
+                           motion::msg::make("accuracy.csv.duplicate_column", {motion::msg::verbatim("column", header.cells[c].text)})});
             return {-2, 1};
         }
         found = {static_cast<int>(c), *unit};
     }
     if (found.index == -1)
         out.push_back({std::string(file), header.line, 1, "",
-                       msg::make("accuracy.csv.missing_column", {msg::verbatim("column", usualName)})});
+                       motion::msg::make("accuracy.csv.missing_column", {motion::msg::verbatim("column", usualName)})});
     return found;
 }
 
-int findRequiredColumn(const CsvRow& header, const char* name, std::string_view file, msg::Problems& out)
+int findRequiredColumn(const CsvRow& header, const char* name, std::string_view file, motion::msg::Problems& out)
 {
     const int c = findColumn(header, name);
     if (c < 0)
-        out.push_back({std::string(file), header.line, 1, "", msg::make("accuracy.csv.missing_column", {msg::verbatim("column", name)})});
+        out.push_back({std::string(file), header.line, 1, "", motion::msg::make("accuracy.csv.missing_column", {motion::msg::verbatim("column", name)})});
     return c;
 }
 
@@ -229,4 +229,4 @@ std::string csvNumber(double v)
     return std::string(buf, r.ptr);
 }
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
 struct CsvCell {
     std::string text;   ///< unquoted; an unquoted cell is trimmed of spaces and tabs
@@ -24,7 +24,7 @@ struct CsvRow {
 
 struct CsvTable {
     std::vector<CsvRow> rows;   ///< blank lines left out
-    msg::Problems problems;      ///< file.csv.unterminated_quote, file.csv.text_after_quote
+    motion::msg::Problems problems;      ///< file.csv.unterminated_quote, file.csv.text_after_quote
 };
 
 /// A UTF-8 byte-order mark at the start is skipped (spreadsheets write one).
@@ -49,10 +49,10 @@ struct LengthColumn {
     int index = -1;
     double toMm = 1;
 };
-LengthColumn findLengthColumn(const CsvRow& header, const std::string& stem, const std::string& usualName, std::string_view file, msg::Problems& out);
+LengthColumn findLengthColumn(const CsvRow& header, const std::string& stem, const std::string& usualName, std::string_view file, motion::msg::Problems& out);
 
 /// The column of that name, or −1 with accuracy.csv.missing_column.
-int findRequiredColumn(const CsvRow& header, const char* name, std::string_view file, msg::Problems& out);
+int findRequiredColumn(const CsvRow& header, const char* name, std::string_view file, motion::msg::Problems& out);
 
 /// A header written for semicolons (a spreadsheet in a decimal-comma locale): one
 /// cell that contains ';'. Readers refuse it with file.csv.semicolons.
@@ -64,4 +64,4 @@ std::string csvField(const std::string& text);
 /// A number for a writer: the shortest text that reads back to the same double.
 std::string csvNumber(double v);
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

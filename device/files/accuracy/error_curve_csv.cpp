@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
 using motion::metrology::FitPoint;
 
@@ -17,12 +17,12 @@ ErrorCurveRead errorCurveFromCsv(std::string_view text, std::string_view fileNam
     if (hasErrors(out.problems))
         return out;
     if (table.rows.size() < 2) {
-        out.problems.push_back({file, table.rows.empty() ? 0 : table.rows[0].line, table.rows.empty() ? 0 : 1, "", msg::make("accuracy.csv.no_readings")});
+        out.problems.push_back({file, table.rows.empty() ? 0 : table.rows[0].line, table.rows.empty() ? 0 : 1, "", motion::msg::make("accuracy.csv.no_readings")});
         return out;
     }
     const CsvRow& header = table.rows.front();
     if (looksSemicolonSeparated(header)) {
-        out.problems.push_back({file, header.line, 1, "", msg::make("file.csv.semicolons")});
+        out.problems.push_back({file, header.line, 1, "", motion::msg::make("file.csv.semicolons")});
         return out;
     }
     const LengthColumn position = findLengthColumn(header, "position", "position_mm", fileName, out.problems);
@@ -38,8 +38,8 @@ ErrorCurveRead errorCurveFromCsv(std::string_view text, std::string_view fileNam
         const CsvRow& row = table.rows[r];
         if (row.cells.size() != header.cells.size()) {
             out.problems.push_back({file, row.line, 1, "",
-                                    msg::make("accuracy.csv.wrong_cell_count", {msg::integer("count", static_cast<long long>(row.cells.size())),
-                                                                                msg::integer("expected", static_cast<long long>(header.cells.size()))})});
+                                    motion::msg::make("accuracy.csv.wrong_cell_count", {motion::msg::integer("count", static_cast<long long>(row.cells.size())),
+                                                                                motion::msg::integer("expected", static_cast<long long>(header.cells.size()))})});
             continue;
         }
         double v[2] = {0, 0};
@@ -50,10 +50,10 @@ ErrorCurveRead errorCurveFromCsv(std::string_view text, std::string_view fileNam
             const std::string& name = header.cells[static_cast<std::size_t>(cols[k].index)].text;
             const auto n = parseNumber(cell.text);
             if (!n) {
-                out.problems.push_back({file, row.line, cell.column, name, msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", cell.text)})});
+                out.problems.push_back({file, row.line, cell.column, name, motion::msg::make("accuracy.csv.not_a_number", {motion::msg::verbatim("text", cell.text)})});
                 good = false;
             } else if (!std::isfinite(*n * cols[k].toMm * (k == 1 ? 1e3 : 1))) {  // finite in mm and µm too
-                out.problems.push_back({file, row.line, cell.column, name, msg::make("accuracy.value_not_finite")});
+                out.problems.push_back({file, row.line, cell.column, name, motion::msg::make("accuracy.value_not_finite")});
                 good = false;
             } else {
                 v[k] = *n * cols[k].toMm;
@@ -82,4 +82,4 @@ std::vector<FitPoint> fitPointsOf(const motion::metrology::Evaluation& e)
     return out;
 }
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

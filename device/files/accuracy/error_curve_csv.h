@@ -12,11 +12,11 @@
 #include <string_view>
 #include <vector>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
 struct ErrorCurveRead {
     std::vector<motion::metrology::FitPoint> points;
-    msg::Problems problems;
+    motion::msg::Problems problems;
     bool ok() const { return !hasErrors(problems); }
 };
 /// Plain C++: what the fuzzer drives.
@@ -28,4 +28,4 @@ std::string errorCurveCsv(const motion::metrology::Evaluation& e);
 /// The points a fit uses from an evaluation: each target's x̄i in µm.
 std::vector<motion::metrology::FitPoint> fitPointsOf(const motion::metrology::Evaluation& e);
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

@@ -2,25 +2,25 @@
 
 #include "device/files/plates/json_path.h"
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
-msg::Problem fromParseError(const jsonio::ParseError& e, std::string_view file)
+motion::msg::Problem fromParseError(const dev::files::json::ParseError& e, std::string_view file)
 {
-    return {std::string(file), e.position.line, e.position.column, "", msg::make("file.json_syntax", {msg::nested("detail", e.message)})};
+    return {std::string(file), e.position.line, e.position.column, "", motion::msg::make("file.json_syntax", {motion::msg::nested("detail", e.message)})};
 }
 
-void addJsonProblems(const jsonio::Problems& found, std::string_view file, msg::Problems& out)
+void addJsonProblems(const dev::files::json::Problems& found, std::string_view file, motion::msg::Problems& out)
 {
-    for (const msg::Problem& p : found.list())
-        out.push_back({std::string(file), p.line, p.column, p.path, msg::make("file.json_field", {msg::nested("detail", p.message)})});
+    for (const motion::msg::Problem& p : found.list())
+        out.push_back({std::string(file), p.line, p.column, p.path, motion::msg::make("file.json_field", {motion::msg::nested("detail", p.message)})});
 }
 
-void addModelProblems(const msg::Problems& found, const jsonio::Value& root, std::string_view file, msg::Problems& out)
+void addModelProblems(const motion::msg::Problems& found, const dev::files::json::Value& root, std::string_view file, motion::msg::Problems& out)
 {
-    for (const msg::Problem& p : found) {
-        const jsonio::Position at = platefiles::positionOfPath(root, p.path);
+    for (const motion::msg::Problem& p : found) {
+        const dev::files::json::Position at = dev::files::plates::positionOfPath(root, p.path);
         out.push_back({std::string(file), at.line, at.column, p.path, p.message, p.severity});
     }
 }
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

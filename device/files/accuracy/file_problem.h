@@ -1,5 +1,5 @@
 #pragma once
-// What the accuracy-bench file readers report: every problem at once as msg::Problems,
+// What the accuracy-bench file readers report: every problem at once as motion::msg::Problems,
 // each with the file, line and column, the field (a JSON path or a CSV column name)
 // and a message for a person (an id plus typed arguments; worded in widgets/ or app/).
 //
@@ -15,14 +15,14 @@
 #include <string_view>
 #include <vector>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
 /// A JSON syntax error, or ObjectReader's structural problems, as messages.
-msg::Problem fromParseError(const jsonio::ParseError& e, std::string_view file);
-void addJsonProblems(const jsonio::Problems& found, std::string_view file, msg::Problems& out);
+motion::msg::Problem fromParseError(const dev::files::json::ParseError& e, std::string_view file);
+void addJsonProblems(const dev::files::json::Problems& found, std::string_view file, motion::msg::Problems& out);
 
 /// A data model's problems (paths only) placed at the value their path names in
 /// the parsed document, or at the nearest enclosing value that exists.
-void addModelProblems(const msg::Problems& found, const jsonio::Value& root, std::string_view file, msg::Problems& out);
+void addModelProblems(const motion::msg::Problems& found, const dev::files::json::Value& root, std::string_view file, motion::msg::Problems& out);
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

@@ -8,7 +8,7 @@
 #include <charconv>
 #include <cmath>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
 using motion::metrology::Direction;
 using motion::metrology::Reading;
@@ -29,9 +29,9 @@ std::optional<int> wholeNumber(const std::string& text)
 }
 
 /// A length column that may be absent: its index (−1 none), or −2 after a problem.
-LengthColumn optionalLength(const CsvRow& header, const std::string& stem, std::string_view file, msg::Problems& out)
+LengthColumn optionalLength(const CsvRow& header, const std::string& stem, std::string_view file, motion::msg::Problems& out)
 {
-    msg::Problems scratch;
+    motion::msg::Problems scratch;
     const LengthColumn c = findLengthColumn(header, stem, stem + "_mm", file, scratch);
     if (c.index == -2)
         out.insert(out.end(), scratch.begin(), scratch.end());
@@ -48,7 +48,7 @@ std::optional<Direction> exportDirection(const std::string& text)
     return std::nullopt;
 }
 
-msg::Arg directionArg(const char* name, Direction d) { return msg::term(name, motion::metrology::directionTermId(d)); }
+motion::msg::Arg directionArg(const char* name, Direction d) { return motion::msg::term(name, motion::metrology::directionTermId(d)); }
 
 } // namespace
 
@@ -70,12 +70,12 @@ SequenceRead targetSequenceFromCsv(std::string_view text, std::string_view fileN
     if (hasErrors(out.problems))
         return out;
     if (table.rows.size() < 2) {
-        out.problems.push_back({file, table.rows.empty() ? 0 : table.rows.front().line, 0, "", msg::make("accuracy.csv.no_readings")});
+        out.problems.push_back({file, table.rows.empty() ? 0 : table.rows.front().line, 0, "", motion::msg::make("accuracy.csv.no_readings")});
         return out;
     }
     const CsvRow& header = table.rows.front();
     if (looksSemicolonSeparated(header)) {
-        out.problems.push_back({file, header.line, 1, "", msg::make("file.csv.semicolons")});
+        out.problems.push_back({file, header.line, 1, "", motion::msg::make("file.csv.semicolons")});
         return out;
     }
     const int index = findRequiredColumn(header, "index", fileName, out.problems);
@@ -90,8 +90,8 @@ SequenceRead targetSequenceFromCsv(std::string_view text, std::string_view fileN
         const CsvRow& row = table.rows[r];
         if (row.cells.size() != header.cells.size()) {
             out.problems.push_back({file, row.line, 1, "",
-                                    msg::make("accuracy.csv.wrong_cell_count", {msg::integer("count", static_cast<long long>(row.cells.size())),
-                                                                                msg::integer("expected", static_cast<long long>(header.cells.size()))})});
+                                    motion::msg::make("accuracy.csv.wrong_cell_count", {motion::msg::integer("count", static_cast<long long>(row.cells.size())),
+                                                                                motion::msg::integer("expected", static_cast<long long>(header.cells.size()))})});
             continue;
         }
         SequenceStop s;
@@ -99,7 +99,7 @@ SequenceRead targetSequenceFromCsv(std::string_view text, std::string_view fileN
         const auto n = wholeNumber(ic.text);
         if (!n || *n != static_cast<int>(r)) {
             out.problems.push_back({file, row.line, ic.column, "index",
-                                    msg::make("accuracy.import.index_out_of_order", {msg::verbatim("text", ic.text), msg::integer("expected", static_cast<long long>(r))})});
+                                    motion::msg::make("accuracy.import.index_out_of_order", {motion::msg::verbatim("text", ic.text), motion::msg::integer("expected", static_cast<long long>(r))})});
             continue;
         }
         s.index = *n;
@@ -107,21 +107,21 @@ SequenceRead targetSequenceFromCsv(std::string_view text, std::string_view fileN
         const auto t = parseNumber(tc.text);
         if (!t || !std::isfinite(*t * target.toMm)) {
             out.problems.push_back({file, row.line, tc.column, header.cells[static_cast<std::size_t>(target.index)].text,
-                                    t ? msg::make("accuracy.value_not_finite") : msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", tc.text)})});
+                                    t ? motion::msg::make("accuracy.value_not_finite") : motion::msg::make("accuracy.csv.not_a_number", {motion::msg::verbatim("text", tc.text)})});
             continue;
         }
         s.targetMm = *t * target.toMm;
         const CsvCell& dc = row.cells[static_cast<std::size_t>(direction)];
         const auto d = motion::metrology::directionFromName(asciiLower(dc.text));
         if (!d) {
-            out.problems.push_back({file, row.line, dc.column, "direction", msg::make("accuracy.csv.unknown_direction", {msg::verbatim("text", dc.text)})});
+            out.problems.push_back({file, row.line, dc.column, "direction", motion::msg::make("accuracy.csv.unknown_direction", {motion::msg::verbatim("text", dc.text)})});
             continue;
         }
         s.direction = *d;
         const CsvCell& cc = row.cells[static_cast<std::size_t>(cycle)];
         const auto c = wholeNumber(cc.text);
         if (!c || *c < 1) {
-            out.problems.push_back({file, row.line, cc.column, "cycle", msg::make("accuracy.csv.not_a_cycle", {msg::verbatim("text", cc.text)})});
+            out.problems.push_back({file, row.line, cc.column, "cycle", motion::msg::make("accuracy.csv.not_a_cycle", {motion::msg::verbatim("text", cc.text)})});
             continue;
         }
         s.cycle = *c;
@@ -129,12 +129,12 @@ SequenceRead targetSequenceFromCsv(std::string_view text, std::string_view fileN
             const CsvCell& timeCell = row.cells[static_cast<std::size_t>(time)];
             const auto v = parseNumber(timeCell.text);
             if (!v) {
-                out.problems.push_back({file, row.line, timeCell.column, "time_s", msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", timeCell.text)})});
+                out.problems.push_back({file, row.line, timeCell.column, "time_s", motion::msg::make("accuracy.csv.not_a_number", {motion::msg::verbatim("text", timeCell.text)})});
                 continue;
             }
             // Device seconds since the run began: a run of 30 years is a typo.
-            msg::Problems range;
-            if (!motion::metrology::checkRange(range, "time_s", *v, 0, 1e9, msg::Unit::S)) {
+            motion::msg::Problems range;
+            if (!motion::metrology::checkRange(range, "time_s", *v, 0, 1e9, motion::msg::Unit::S)) {
                 out.problems.push_back({file, row.line, timeCell.column, "time_s", range.front().message});
                 continue;
             }
@@ -158,12 +158,12 @@ InterferometerImport importInterferometerCsv(std::string_view exportText, std::s
     if (hasErrors(out.problems))
         return out;
     if (table.rows.empty()) {
-        out.problems.push_back({file, 0, 0, "", msg::make("accuracy.csv.no_readings")});
+        out.problems.push_back({file, 0, 0, "", motion::msg::make("accuracy.csv.no_readings")});
         return out;
     }
     const CsvRow& header = table.rows.front();
     if (looksSemicolonSeparated(header)) {
-        out.problems.push_back({file, header.line, 1, "", msg::make("file.csv.semicolons")});
+        out.problems.push_back({file, header.line, 1, "", motion::msg::make("file.csv.semicolons")});
         return out;
     }
     // The value: a position or a deviation, exactly one of them.
@@ -179,7 +179,7 @@ InterferometerImport importInterferometerCsv(std::string_view exportText, std::s
         if (value.index >= 0) {
             out.problems.push_back({file, header.line, header.cells[static_cast<std::size_t>(c.index)].column,
                                     header.cells[static_cast<std::size_t>(c.index)].text,
-                                    msg::make("accuracy.csv.duplicate_column", {msg::verbatim("column", header.cells[static_cast<std::size_t>(c.index)].text)})});
+                                    motion::msg::make("accuracy.csv.duplicate_column", {motion::msg::verbatim("column", header.cells[static_cast<std::size_t>(c.index)].text)})});
             return out;
         }
         value = c;
@@ -187,7 +187,7 @@ InterferometerImport importInterferometerCsv(std::string_view exportText, std::s
         isDeviation = std::string(stem) == "deviation" || std::string(stem) == "error";
     }
     if (value.index < 0) {
-        out.problems.push_back({file, header.line, 1, "", msg::make("accuracy.csv.missing_column", {msg::verbatim("column", "measured_mm")})});
+        out.problems.push_back({file, header.line, 1, "", motion::msg::make("accuracy.csv.missing_column", {motion::msg::verbatim("column", "measured_mm")})});
         return out;
     }
     const LengthColumn target = optionalLength(header, "target", fileName, out.problems);
@@ -199,8 +199,8 @@ InterferometerImport importInterferometerCsv(std::string_view exportText, std::s
     if (rows != sequence.size()) {
         const int line = rows == 0 ? header.line : table.rows.back().line;
         out.problems.push_back({file, line, 1, "",
-                                msg::make("accuracy.import.count_differs", {msg::integer("count", static_cast<long long>(rows)),
-                                                                            msg::integer("expected", static_cast<long long>(sequence.size()))})});
+                                motion::msg::make("accuracy.import.count_differs", {motion::msg::integer("count", static_cast<long long>(rows)),
+                                                                            motion::msg::integer("expected", static_cast<long long>(sequence.size()))})});
         return out;
     }
     for (std::size_t k = 0; k < rows; ++k) {
@@ -208,32 +208,32 @@ InterferometerImport importInterferometerCsv(std::string_view exportText, std::s
         const SequenceStop& stop = sequence[k];
         if (row.cells.size() != header.cells.size()) {
             out.problems.push_back({file, row.line, 1, "",
-                                    msg::make("accuracy.csv.wrong_cell_count", {msg::integer("count", static_cast<long long>(row.cells.size())),
-                                                                                msg::integer("expected", static_cast<long long>(header.cells.size()))})});
+                                    motion::msg::make("accuracy.csv.wrong_cell_count", {motion::msg::integer("count", static_cast<long long>(row.cells.size())),
+                                                                                motion::msg::integer("expected", static_cast<long long>(header.cells.size()))})});
             continue;
         }
         const CsvCell& vc = row.cells[static_cast<std::size_t>(value.index)];
         const auto v = parseNumber(vc.text);
         if (!v) {
-            out.problems.push_back({file, row.line, vc.column, valueName, msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", vc.text)})});
+            out.problems.push_back({file, row.line, vc.column, valueName, motion::msg::make("accuracy.csv.not_a_number", {motion::msg::verbatim("text", vc.text)})});
             continue;
         }
         if (!std::isfinite(*v * value.toMm)) {
-            out.problems.push_back({file, row.line, vc.column, valueName, msg::make("accuracy.value_not_finite")});
+            out.problems.push_back({file, row.line, vc.column, valueName, motion::msg::make("accuracy.value_not_finite")});
             continue;
         }
         if (direction >= 0) {
             const CsvCell& dc = row.cells[static_cast<std::size_t>(direction)];
             const auto d = exportDirection(dc.text);
             if (!d) {
-                out.problems.push_back({file, row.line, dc.column, "direction", msg::make("accuracy.csv.unknown_direction", {msg::verbatim("text", dc.text)})});
+                out.problems.push_back({file, row.line, dc.column, "direction", motion::msg::make("accuracy.csv.unknown_direction", {motion::msg::verbatim("text", dc.text)})});
                 continue;
             }
             if (*d != stop.direction) {
                 out.problems.push_back({file, row.line, dc.column, "direction",
-                                        msg::make("accuracy.import.direction_differs",
-                                                  {msg::integer("index", stop.index), directionArg("direction", *d),
-                                                   directionArg("expected", stop.direction), msg::real("target", stop.targetMm, msg::Unit::Mm)})});
+                                        motion::msg::make("accuracy.import.direction_differs",
+                                                  {motion::msg::integer("index", stop.index), directionArg("direction", *d),
+                                                   directionArg("expected", stop.direction), motion::msg::real("target", stop.targetMm, motion::msg::Unit::Mm)})});
                 continue;
             }
         }
@@ -242,14 +242,14 @@ InterferometerImport importInterferometerCsv(std::string_view exportText, std::s
             const auto t = parseNumber(tc.text);
             if (!t || !std::isfinite(*t * target.toMm)) {
                 out.problems.push_back({file, row.line, tc.column, header.cells[static_cast<std::size_t>(target.index)].text,
-                                        t ? msg::make("accuracy.value_not_finite") : msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", tc.text)})});
+                                        t ? motion::msg::make("accuracy.value_not_finite") : motion::msg::make("accuracy.csv.not_a_number", {motion::msg::verbatim("text", tc.text)})});
                 continue;
             }
             if (std::fabs(*t * target.toMm - stop.targetMm) > kTargetMatchMm) {
                 out.problems.push_back({file, row.line, tc.column, header.cells[static_cast<std::size_t>(target.index)].text,
-                                        msg::make("accuracy.import.target_differs",
-                                                  {msg::integer("index", stop.index), msg::real("target", *t * target.toMm, msg::Unit::Mm),
-                                                   msg::real("expected", stop.targetMm, msg::Unit::Mm)})});
+                                        motion::msg::make("accuracy.import.target_differs",
+                                                  {motion::msg::integer("index", stop.index), motion::msg::real("target", *t * target.toMm, motion::msg::Unit::Mm),
+                                                   motion::msg::real("expected", stop.targetMm, motion::msg::Unit::Mm)})});
                 continue;
             }
         }
@@ -273,9 +273,9 @@ SequenceRead loadTargetSequence(const QString& path)
     return text ? targetSequenceFromCsv(*text, name) : out;
 }
 
-bool saveTargetSequence(const QString& path, const std::vector<SequenceStop>& stops, msg::Message* error)
+bool saveTargetSequence(const QString& path, const std::vector<SequenceStop>& stops, motion::msg::Message* error)
 {
-    return files::writeAtomically(path, targetSequenceCsv(stops), error);
+    return dev::files::writeAtomically(path, targetSequenceCsv(stops), error);
 }
 
 InterferometerImport loadInterferometerExport(const QString& path, const std::vector<SequenceStop>& sequence)
@@ -286,24 +286,24 @@ InterferometerImport loadInterferometerExport(const QString& path, const std::ve
     return text ? importInterferometerCsv(*text, name, sequence) : out;
 }
 
-std::optional<msg::Message> sequenceMismatch(const std::vector<SequenceStop>& sequence, const motion::metrology::AxisTest& test)
+std::optional<motion::msg::Message> sequenceMismatch(const std::vector<SequenceStop>& sequence, const motion::metrology::AxisTest& test)
 {
     const std::vector<motion::metrology::Stop> planned = motion::metrology::runSequence(test);
     if (sequence.size() != planned.size())
-        return msg::make("accuracy.import.not_this_test_count", {msg::integer("count", static_cast<long long>(sequence.size())),
-                                                                 msg::integer("expected", static_cast<long long>(planned.size())),
-                                                                 msg::verbatim("test", test.name)});
+        return motion::msg::make("accuracy.import.not_this_test_count", {motion::msg::integer("count", static_cast<long long>(sequence.size())),
+                                                                 motion::msg::integer("expected", static_cast<long long>(planned.size())),
+                                                                 motion::msg::verbatim("test", test.name)});
     for (std::size_t k = 0; k < planned.size(); ++k) {
         const SequenceStop& s = sequence[k];
         const motion::metrology::Stop& p = planned[k];
         if (std::fabs(s.targetMm - p.targetMm) > kTargetMatchMm || s.direction != p.direction || s.cycle != p.cycle)
-            return msg::make("accuracy.import.not_this_test_stop",
-                             {msg::integer("stop", static_cast<long long>(k + 1)), msg::real("target", s.targetMm, msg::Unit::Mm),
-                              directionArg("direction", s.direction), msg::integer("cycle", s.cycle),
-                              msg::real("expected", p.targetMm, msg::Unit::Mm), directionArg("expected_direction", p.direction),
-                              msg::integer("expected_cycle", p.cycle), msg::verbatim("test", test.name)});
+            return motion::msg::make("accuracy.import.not_this_test_stop",
+                             {motion::msg::integer("stop", static_cast<long long>(k + 1)), motion::msg::real("target", s.targetMm, motion::msg::Unit::Mm),
+                              directionArg("direction", s.direction), motion::msg::integer("cycle", s.cycle),
+                              motion::msg::real("expected", p.targetMm, motion::msg::Unit::Mm), directionArg("expected_direction", p.direction),
+                              motion::msg::integer("expected_cycle", p.cycle), motion::msg::verbatim("test", test.name)});
     }
     return std::nullopt;
 }
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

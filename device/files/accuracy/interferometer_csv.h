@@ -32,7 +32,7 @@
 #include <string_view>
 #include <vector>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
 /// One stop of a run, as the target sequence keeps it.
 struct SequenceStop {
@@ -48,14 +48,14 @@ std::string targetSequenceCsv(const std::vector<SequenceStop>& stops);
 
 struct SequenceRead {
     std::vector<SequenceStop> stops;
-    msg::Problems problems;
+    motion::msg::Problems problems;
     bool ok() const { return !hasErrors(problems); }
 };
 SequenceRead targetSequenceFromCsv(std::string_view text, std::string_view fileName);
 
 struct InterferometerImport {
     std::vector<motion::metrology::Reading> readings;  ///< one per stop, in the sequence's order
-    msg::Problems problems;
+    motion::msg::Problems problems;
     bool ok() const { return !hasErrors(problems); }
 };
 /// The export matched to the sequence, all or nothing.
@@ -67,10 +67,10 @@ InterferometerImport importInterferometerCsv(std::string_view exportText, std::s
 /// else why not (accuracy.import.not_this_test_count / not_this_test_stop, the first
 /// stop that differs). A capture evaluated against another test would be filed
 /// under that test's axis and tolerances.
-std::optional<msg::Message> sequenceMismatch(const std::vector<SequenceStop>& sequence, const motion::metrology::AxisTest& test);
+std::optional<motion::msg::Message> sequenceMismatch(const std::vector<SequenceStop>& sequence, const motion::metrology::AxisTest& test);
 
 SequenceRead loadTargetSequence(const QString& path);
-bool saveTargetSequence(const QString& path, const std::vector<SequenceStop>& stops, msg::Message* error);
+bool saveTargetSequence(const QString& path, const std::vector<SequenceStop>& stops, motion::msg::Message* error);
 InterferometerImport loadInterferometerExport(const QString& path, const std::vector<SequenceStop>& sequence);
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

@@ -9,8 +9,8 @@
 #include <optional>
 #include <string>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
-std::optional<std::string> loadText(const QString& path, std::string& fileName, msg::Problems& out);
+std::optional<std::string> loadText(const QString& path, std::string& fileName, motion::msg::Problems& out);
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

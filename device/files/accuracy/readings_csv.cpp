@@ -7,7 +7,7 @@
 #include <charconv>
 #include <cmath>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
 using motion::metrology::Direction;
 using motion::metrology::Reading;
@@ -21,12 +21,12 @@ ReadingsRead readingsFromCsv(std::string_view text, std::string_view fileName)
     if (hasErrors(out.problems))
         return out;
     if (table.rows.empty()) {
-        out.problems.push_back({file, 0, 0, "", msg::make("accuracy.csv.no_readings")});
+        out.problems.push_back({file, 0, 0, "", motion::msg::make("accuracy.csv.no_readings")});
         return out;
     }
     const CsvRow& header = table.rows.front();
     if (looksSemicolonSeparated(header)) {
-        out.problems.push_back({file, header.line, 1, "", msg::make("file.csv.semicolons")});
+        out.problems.push_back({file, header.line, 1, "", motion::msg::make("file.csv.semicolons")});
         return out;
     }
     const LengthColumn target = findLengthColumn(header, "target", "target_mm", fileName, out.problems);
@@ -36,7 +36,7 @@ ReadingsRead readingsFromCsv(std::string_view text, std::string_view fileName)
     if (hasErrors(out.problems))
         return out;
     if (table.rows.size() == 1) {
-        out.problems.push_back({file, header.line, 1, "", msg::make("accuracy.csv.no_readings")});
+        out.problems.push_back({file, header.line, 1, "", motion::msg::make("accuracy.csv.no_readings")});
         return out;
     }
 
@@ -44,8 +44,8 @@ ReadingsRead readingsFromCsv(std::string_view text, std::string_view fileName)
         const CsvRow& row = table.rows[r];
         if (row.cells.size() != header.cells.size()) {
             out.problems.push_back({file, row.line, 1, "",
-                                    msg::make("accuracy.csv.wrong_cell_count", {msg::integer("count", static_cast<long long>(row.cells.size())),
-                                                                                msg::integer("expected", static_cast<long long>(header.cells.size()))})});
+                                    motion::msg::make("accuracy.csv.wrong_cell_count", {motion::msg::integer("count", static_cast<long long>(row.cells.size())),
+                                                                                motion::msg::integer("expected", static_cast<long long>(header.cells.size()))})});
             continue;
         }
         bool good = true;
@@ -54,10 +54,10 @@ ReadingsRead readingsFromCsv(std::string_view text, std::string_view fileName)
             const std::string& name = header.cells[static_cast<std::size_t>(col.index)].text;
             const auto v = parseNumber(cell.text);
             if (!v) {
-                out.problems.push_back({file, row.line, cell.column, name, msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", cell.text)})});
+                out.problems.push_back({file, row.line, cell.column, name, motion::msg::make("accuracy.csv.not_a_number", {motion::msg::verbatim("text", cell.text)})});
                 good = false;
             } else if (!std::isfinite(*v * col.toMm)) {  // 1e308 m is not finite in mm
-                out.problems.push_back({file, row.line, cell.column, name, msg::make("accuracy.value_not_finite")});
+                out.problems.push_back({file, row.line, cell.column, name, motion::msg::make("accuracy.value_not_finite")});
                 good = false;
             } else {
                 into = *v * col.toMm;
@@ -70,14 +70,14 @@ ReadingsRead readingsFromCsv(std::string_view text, std::string_view fileName)
         if (const auto dir = motion::metrology::directionFromName(asciiLower(d.text)))
             reading.direction = *dir;
         else {
-            out.problems.push_back({file, row.line, d.column, "direction", msg::make("accuracy.csv.unknown_direction", {msg::verbatim("text", d.text)})});
+            out.problems.push_back({file, row.line, d.column, "direction", motion::msg::make("accuracy.csv.unknown_direction", {motion::msg::verbatim("text", d.text)})});
             good = false;
         }
         const CsvCell& c = row.cells[static_cast<std::size_t>(cycle)];
         int n = 0;
         const auto parsed = std::from_chars(c.text.data(), c.text.data() + c.text.size(), n);
         if (c.text.empty() || parsed.ec != std::errc() || parsed.ptr != c.text.data() + c.text.size() || n < 1) {
-            out.problems.push_back({file, row.line, c.column, "cycle", msg::make("accuracy.csv.not_a_cycle", {msg::verbatim("text", c.text)})});
+            out.problems.push_back({file, row.line, c.column, "cycle", motion::msg::make("accuracy.csv.not_a_cycle", {motion::msg::verbatim("text", c.text)})});
             good = false;
         } else {
             reading.cycle = n;
@@ -90,10 +90,10 @@ ReadingsRead readingsFromCsv(std::string_view text, std::string_view fileName)
     return out;
 }
 
-msg::Problems placeReadingProblems(const msg::Problems& found, const ReadingsRead& read, std::string_view fileName)
+motion::msg::Problems placeReadingProblems(const motion::msg::Problems& found, const ReadingsRead& read, std::string_view fileName)
 {
-    msg::Problems out;
-    for (const msg::Problem& p : found) {
+    motion::msg::Problems out;
+    for (const motion::msg::Problem& p : found) {
         int line = 0;
         std::string field;
         // "readings[12]" or "readings[12].measured_mm": the reading's line.
@@ -120,7 +120,7 @@ AnalyzedReadings analyzeReadingsCsv(std::string_view text, std::string_view file
     if (!out.read.ok())
         return out;
     out.evaluation = motion::metrology::evaluate(out.read.readings);
-    const msg::Problems placed = placeReadingProblems(out.evaluation.problems, out.read, fileName);
+    const motion::msg::Problems placed = placeReadingProblems(out.evaluation.problems, out.read, fileName);
     out.problems.insert(out.problems.end(), placed.begin(), placed.end());
     return out;
 }
@@ -142,9 +142,9 @@ ReadingsRead loadReadingsCsv(const QString& path)
     return text ? readingsFromCsv(*text, name) : out;
 }
 
-bool saveReadingsCsv(const QString& path, const std::vector<Reading>& readings, msg::Message* error)
+bool saveReadingsCsv(const QString& path, const std::vector<Reading>& readings, motion::msg::Message* error)
 {
-    return files::writeAtomically(path, readingsToCsv(readings), error);
+    return dev::files::writeAtomically(path, readingsToCsv(readings), error);
 }
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

@@ -20,12 +20,12 @@
 #include <string_view>
 #include <vector>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
 struct ReadingsRead {
     std::vector<motion::metrology::Reading> readings;
     std::vector<int> lines;   ///< the line of each reading, for placing later problems
-    msg::Problems problems;
+    motion::msg::Problems problems;
     bool ok() const { return !hasErrors(problems); }
 };
 
@@ -37,13 +37,13 @@ ReadingsRead readingsFromCsv(std::string_view text, std::string_view fileName);
 
 /// The evaluation's own problems (paths "readings[k]…") placed at the line and
 /// column of the reading they name: too few cycles, a duplicate, a missing direction.
-msg::Problems placeReadingProblems(const msg::Problems& found, const ReadingsRead& read, std::string_view fileName);
+motion::msg::Problems placeReadingProblems(const motion::msg::Problems& found, const ReadingsRead& read, std::string_view fileName);
 
 /// Read and evaluate in one: what `benchpilot-cli accuracy analyze` does.
 struct AnalyzedReadings {
     ReadingsRead read;
     motion::metrology::Evaluation evaluation;
-    msg::Problems problems;   ///< the reader's and the evaluation's, placed
+    motion::msg::Problems problems;   ///< the reader's and the evaluation's, placed
     bool ok() const { return !hasErrors(problems); }
 };
 AnalyzedReadings analyzeReadingsCsv(std::string_view text, std::string_view fileName);
@@ -54,6 +54,6 @@ std::string readingsToCsv(const std::vector<motion::metrology::Reading>& reading
 
 /// Whole files: read with the file's name in every problem; written all or nothing.
 ReadingsRead loadReadingsCsv(const QString& path);
-bool saveReadingsCsv(const QString& path, const std::vector<motion::metrology::Reading>& readings, msg::Message* error);
+bool saveReadingsCsv(const QString& path, const std::vector<motion::metrology::Reading>& readings, motion::msg::Message* error);
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

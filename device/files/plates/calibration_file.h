@@ -10,22 +10,22 @@
 #include <string_view>
 #include <vector>
 
-namespace platefiles {
+namespace dev::files::plates {
 
 constexpr const char* kCalibrationSchema = "benchpilot.calibration";
 constexpr int kCalibrationVersion = 1;
 
 struct CalibrationRead {
     std::string deck;                              ///< the deck id it was taught on
-    std::vector<plates::SlotCalibration> calibrations;
-    jsonio::Problems problems;
+    std::vector<motion::plates::SlotCalibration> calibrations;
+    dev::files::json::Problems problems;
     bool ok() const { return problems.empty(); }
 };
 
 CalibrationRead parseCalibration(std::string_view text);
-std::string writeCalibration(const std::string& deckId, const std::vector<plates::SlotCalibration>& calibrations);
+std::string writeCalibration(const std::string& deckId, const std::vector<motion::plates::SlotCalibration>& calibrations);
 
 /// The transforms a plan uses, by slot id.
-std::map<std::string, plates::PlateTransform> calibrationTransforms(const std::vector<plates::SlotCalibration>& calibrations);
+std::map<std::string, motion::plates::PlateTransform> calibrationTransforms(const std::vector<motion::plates::SlotCalibration>& calibrations);
 
-} // namespace platefiles
+} // namespace dev::files::plates

@@ -2,22 +2,22 @@
 
 #include "device/files/plates/json_path.h"
 
-namespace platefiles {
+namespace dev::files::plates {
 
-using jsonio::ObjectReader;
-using jsonio::Value;
+using dev::files::json::ObjectReader;
+using dev::files::json::Value;
 
 namespace {
 constexpr double kDeckBig = 1e6;
 
-void readAxis(const Value& axes, const char* letter, plates::AxisMotion& a, jsonio::Problems& problems)
+void readAxis(const Value& axes, const char* letter, motion::plates::AxisMotion& a, dev::files::json::Problems& problems)
 {
     const Value* v = axes.find(letter);
     if (!v) {
-        problems.add(axes, jsonio::childPath("axes", letter), msg::make("file.json.missing"));
+        problems.add(axes, dev::files::json::childPath("axes", letter), motion::msg::make("file.json.missing"));
         return;
     }
-    ObjectReader o(*v, jsonio::childPath("axes", letter), problems);
+    ObjectReader o(*v, dev::files::json::childPath("axes", letter), problems);
     o.refuseUnknown({"max_speed", "default_speed", "accel_time_s", "max_accel"});
     a.maxSpeed = o.number("max_speed", true, 0, kDeckBig).value_or(0);
     a.defaultSpeed = o.number("default_speed", true, 0, kDeckBig).value_or(0);
@@ -25,7 +25,7 @@ void readAxis(const Value& axes, const char* letter, plates::AxisMotion& a, json
     a.maxAccel = o.number("max_accel", true, 0, 1e9).value_or(0);
 }
 
-Value axisJson(const plates::AxisMotion& a)
+Value axisJson(const motion::plates::AxisMotion& a)
 {
     Value v = Value::object();
     v.set("max_speed", a.maxSpeed);
@@ -43,12 +43,12 @@ DeckRead parseDeck(std::string_view text)
     if (!parsed)
         return r;
     const Value& root = *parsed;
-    if (!jsonio::checkSchema(root, kDeckSchema, kDeckVersion, r.problems))
+    if (!dev::files::json::checkSchema(root, kDeckSchema, kDeckVersion, r.problems))
         return r;
     ObjectReader o(root, "", r.problems);
     o.refuseUnknown({"schema", "version", "id", "name", "travel_x_mm", "travel_y_mm", "travel_z_mm", "table_z_mm", "syringe_ul",
                      "move_overhead_s", "axes", "slots", "stations"});
-    plates::Deck d;
+    motion::plates::Deck d;
     d.id = o.string("id", true).value_or("");
     d.name = o.string("name", false).value_or("");
     d.travelXMm = o.number("travel_x_mm", true, 0, kDeckBig).value_or(0);
@@ -67,9 +67,9 @@ DeckRead parseDeck(std::string_view text)
     }
     if (const Value* list = o.get("slots", Value::Type::Array, true)) {
         for (std::size_t k = 0; k < list->items().size() && k < 64; ++k) {
-            ObjectReader s(list->items()[k], jsonio::childPath("slots", k), r.problems);
+            ObjectReader s(list->items()[k], dev::files::json::childPath("slots", k), r.problems);
             s.refuseUnknown({"id", "name", "origin_x_mm", "origin_y_mm", "rotation_deg"});
-            plates::Slot slot;
+            motion::plates::Slot slot;
             slot.id = s.string("id", true).value_or("");
             slot.name = s.string("name", false).value_or("");
             slot.originXMm = s.number("origin_x_mm", true, -kDeckBig, kDeckBig).value_or(0);
@@ -78,13 +78,13 @@ DeckRead parseDeck(std::string_view text)
             d.plateSlots.push_back(slot);
         }
         if (list->items().empty())
-            r.problems.add(*list, "slots", msg::make("plate.deck.no_slots"));
+            r.problems.add(*list, "slots", motion::msg::make("plate.deck.no_slots"));
     }
     if (const Value* stations = o.get("stations", Value::Type::Array, false)) {
         for (std::size_t k = 0; k < stations->items().size() && k < 64; ++k) {
-            ObjectReader s(stations->items()[k], jsonio::childPath("stations", k), r.problems);
+            ObjectReader s(stations->items()[k], dev::files::json::childPath("stations", k), r.problems);
             s.refuseUnknown({"id", "name", "x_mm", "y_mm", "safe_z_mm", "depth_z_mm"});
-            plates::Station st;
+            motion::plates::Station st;
             st.id = s.string("id", true).value_or("");
             st.name = s.string("name", false).value_or("");
             st.xMm = s.number("x_mm", true, -kDeckBig, kDeckBig).value_or(0);
@@ -96,16 +96,16 @@ DeckRead parseDeck(std::string_view text)
     }
     if (!r.problems.empty())
         return r;
-    for (const msg::Problem& p : plates::validateDeck(d))
+    for (const motion::msg::Problem& p : motion::plates::validateDeck(d))
         r.problems.add(positionOfPath(root, p.path), p.path, p.message);
     if (r.problems.empty())
         r.deck = std::move(d);
     return r;
 }
 
-std::string writeDeck(const plates::Deck& d)
+std::string writeDeck(const motion::plates::Deck& d)
 {
-    Value v = jsonio::schemaObject(kDeckSchema, kDeckVersion);
+    Value v = dev::files::json::schemaObject(kDeckSchema, kDeckVersion);
     v.set("id", d.id);
     v.set("name", d.name);
     v.set("travel_x_mm", d.travelXMm);
@@ -121,7 +121,7 @@ std::string writeDeck(const plates::Deck& d)
     axes.set("P", axisJson(d.p));
     v.set("axes", std::move(axes));
     Value slotList = Value::array();
-    for (const plates::Slot& s : d.plateSlots) {
+    for (const motion::plates::Slot& s : d.plateSlots) {
         Value x = Value::object();
         x.set("id", s.id);
         x.set("name", s.name);
@@ -132,7 +132,7 @@ std::string writeDeck(const plates::Deck& d)
     }
     v.set("slots", std::move(slotList));
     Value stations = Value::array();
-    for (const plates::Station& s : d.stations) {
+    for (const motion::plates::Station& s : d.stations) {
         Value x = Value::object();
         x.set("id", s.id);
         x.set("name", s.name);
@@ -143,13 +143,13 @@ std::string writeDeck(const plates::Deck& d)
         stations.push(std::move(x));
     }
     v.set("stations", std::move(stations));
-    return jsonio::write(v);
+    return dev::files::json::write(v);
 }
 
-plates::Deck builtinDeck()
+motion::plates::Deck builtinDeck()
 {
     DeckRead r = parseDeck(builtinDeckText());
-    return r.deck ? *r.deck : plates::Deck{};
+    return r.deck ? *r.deck : motion::plates::Deck{};
 }
 
-} // namespace platefiles
+} // namespace dev::files::plates

@@ -10,22 +10,22 @@
 #include <string>
 #include <string_view>
 
-namespace platefiles {
+namespace dev::files::plates {
 
 constexpr const char* kDeckSchema = "benchpilot.deck";
 constexpr int kDeckVersion = 1;
 
 struct DeckRead {
-    std::optional<plates::Deck> deck;  ///< only when there are no problems
-    jsonio::Problems problems;
+    std::optional<motion::plates::Deck> deck;  ///< only when there are no problems
+    dev::files::json::Problems problems;
 };
 
 DeckRead parseDeck(std::string_view text);
-std::string writeDeck(const plates::Deck& deck);
+std::string writeDeck(const motion::plates::Deck& deck);
 
 /// resources/machines/analyzer.deck.json as built into the program.
 std::string builtinDeckText();
 /// The built-in deck, read (it is checked by a test, so this cannot fail in a release).
-plates::Deck builtinDeck();
+motion::plates::Deck builtinDeck();
 
-} // namespace platefiles
+} // namespace dev::files::plates

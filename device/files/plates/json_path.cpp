@@ -3,19 +3,19 @@
 #include <cctype>
 #include <string>
 
-namespace platefiles {
+namespace dev::files::plates {
 
-std::optional<jsonio::Value> parseOrReport(std::string_view text, jsonio::Problems& problems)
+std::optional<dev::files::json::Value> parseOrReport(std::string_view text, dev::files::json::Problems& problems)
 {
-    jsonio::ParseResult parsed = jsonio::parse(text);
+    dev::files::json::ParseResult parsed = dev::files::json::parse(text);
     if (!parsed)
         problems.add(parsed.error.position, "", parsed.error.message);
     return std::move(parsed.value);
 }
 
-jsonio::Position positionOfPath(const jsonio::Value& root, std::string_view path)
+dev::files::json::Position positionOfPath(const dev::files::json::Value& root, std::string_view path)
 {
-    const jsonio::Value* at = &root;
+    const dev::files::json::Value* at = &root;
     std::size_t i = 0;
     while (i < path.size()) {
         if (path[i] == '.') {
@@ -41,7 +41,7 @@ jsonio::Position positionOfPath(const jsonio::Value& root, std::string_view path
         std::size_t j = i;
         while (j < path.size() && path[j] != '.' && path[j] != '[')
             ++j;
-        const jsonio::Value* next = at->find(path.substr(i, j - i));
+        const dev::files::json::Value* next = at->find(path.substr(i, j - i));
         if (!next)
             break;
         at = next;
@@ -50,4 +50,4 @@ jsonio::Position positionOfPath(const jsonio::Value& root, std::string_view path
     return at->position();
 }
 
-} // namespace platefiles
+} // namespace dev::files::plates

@@ -10,13 +10,13 @@
 #include <optional>
 #include <string_view>
 
-namespace platefiles {
+namespace dev::files::plates {
 
 /// Parses `text`; when it is not JSON, the reason goes to `problems` with its position.
-std::optional<jsonio::Value> parseOrReport(std::string_view text, jsonio::Problems& problems);
+std::optional<dev::files::json::Value> parseOrReport(std::string_view text, dev::files::json::Problems& problems);
 
 /// The position of the deepest value along `path` that exists (the document's
 /// start when none does).
-jsonio::Position positionOfPath(const jsonio::Value& root, std::string_view path);
+dev::files::json::Position positionOfPath(const dev::files::json::Value& root, std::string_view path);
 
-} // namespace platefiles
+} // namespace dev::files::plates

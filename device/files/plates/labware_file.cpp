@@ -4,22 +4,22 @@
 
 #include <cmath>
 
-namespace platefiles {
+namespace dev::files::plates {
 
-using jsonio::ObjectReader;
-using jsonio::Value;
-using plates::Labware;
-using plates::Well;
-using plates::WellShape;
+using dev::files::json::ObjectReader;
+using dev::files::json::Value;
+using motion::plates::Labware;
+using motion::plates::Well;
+using motion::plates::WellShape;
 
 namespace {
 
 constexpr double kLabwareBig = 1e6;
 
 /// The model validator's problems, placed in the document.
-void addModelProblems(const Value& root, const msg::Problems& found, jsonio::Problems& out)
+void addModelProblems(const Value& root, const motion::msg::Problems& found, dev::files::json::Problems& out)
 {
-    for (const msg::Problem& p : found)
+    for (const motion::msg::Problem& p : found)
         out.add(positionOfPath(root, p.path), p.path, p.message, p.severity);
 }
 
@@ -57,7 +57,7 @@ bool readWellSize(ObjectReader& o, Well& w)
     return ok;
 }
 
-std::optional<Labware> readOurs(const Value& root, jsonio::Problems& problems)
+std::optional<Labware> readOurs(const Value& root, dev::files::json::Problems& problems)
 {
     const std::size_t before = problems.size();
     ObjectReader o(root, "", problems);
@@ -66,22 +66,22 @@ std::optional<Labware> readOurs(const Value& root, jsonio::Problems& problems)
     lw.id = o.string("id", true).value_or("");
     lw.displayName = o.string("name", false).value_or(lw.id);
     lw.brand = o.string("brand", false).value_or("");
-    lw.lengthMm = o.number("length_mm", false, 0, kLabwareBig).value_or(plates::kSbsLengthMm);
-    lw.widthMm = o.number("width_mm", false, 0, kLabwareBig).value_or(plates::kSbsWidthMm);
+    lw.lengthMm = o.number("length_mm", false, 0, kLabwareBig).value_or(motion::plates::kSbsLengthMm);
+    lw.widthMm = o.number("width_mm", false, 0, kLabwareBig).value_or(motion::plates::kSbsWidthMm);
     lw.heightMm = o.number("height_mm", true, 0, kLabwareBig).value_or(0);
-    lw.rows = static_cast<int>(o.integer("rows", true, 1, plates::kMaxRows).value_or(0));
-    lw.columns = static_cast<int>(o.integer("columns", true, 1, plates::kMaxColumns).value_or(0));
+    lw.rows = static_cast<int>(o.integer("rows", true, 1, motion::plates::kMaxRows).value_or(0));
+    lw.columns = static_cast<int>(o.integer("columns", true, 1, motion::plates::kMaxColumns).value_or(0));
     const Value* grid = o.get("grid", Value::Type::Object, false);
     const Value* wells = o.get("wells", Value::Type::Array, false);
     if (grid && wells)
-        problems.add(*wells, "wells", msg::make("plate.file.grid_and_wells"));
+        problems.add(*wells, "wells", motion::msg::make("plate.file.grid_and_wells"));
     else if (!grid && !wells && o.valid())
-        problems.add(root, "grid", msg::make("plate.file.no_grid"));
+        problems.add(root, "grid", motion::msg::make("plate.file.no_grid"));
     if (grid) {
         ObjectReader g(*grid, "grid", problems);
         g.refuseUnknown({"a1_x_mm", "a1_y_mm", "pitch_x_mm", "pitch_y_mm", "shape", "diameter_mm", "size_x_mm", "size_y_mm",
                          "depth_mm", "bottom_z_mm", "volume_ul"});
-        plates::GridSpec s;
+        motion::plates::GridSpec s;
         s.a1XMm = g.number("a1_x_mm", true, -kLabwareBig, kLabwareBig).value_or(0);
         s.a1YMm = g.number("a1_y_mm", true, -kLabwareBig, kLabwareBig).value_or(0);
         s.pitchXMm = g.number("pitch_x_mm", lw.columns > 1, 0, kLabwareBig).value_or(0);
@@ -97,18 +97,18 @@ std::optional<Labware> readOurs(const Value& root, jsonio::Problems& problems)
             s.depthMm = w.depthMm;
             s.bottomZMm = w.bottomZMm;
             s.volumeUl = w.volumeUl;
-            lw.wells = plates::gridLabware(s).wells;
+            lw.wells = motion::plates::gridLabware(s).wells;
         }
     }
     if (wells) {
         for (std::size_t k = 0; k < wells->items().size() && k < 4096; ++k) {
-            ObjectReader wr(wells->items()[k], jsonio::childPath("wells", k), problems);
+            ObjectReader wr(wells->items()[k], dev::files::json::childPath("wells", k), problems);
             wr.refuseUnknown({"well", "x_mm", "y_mm", "shape", "diameter_mm", "size_x_mm", "size_y_mm", "depth_mm", "bottom_z_mm", "volume_ul"});
             Well w;
             const auto name = wr.string("well", true);
-            const auto id = name ? plates::parseWellName(*name) : std::nullopt;
+            const auto id = name ? motion::plates::parseWellName(*name) : std::nullopt;
             if (name && !id)
-                problems.add(*wells->items()[k].find("well"), wr.pathOf("well"), msg::make("plate.file.not_a_well_name", {msg::verbatim("text", name->substr(0, 20))}));
+                problems.add(*wells->items()[k].find("well"), wr.pathOf("well"), motion::msg::make("plate.file.not_a_well_name", {motion::msg::verbatim("text", name->substr(0, 20))}));
             const auto x = wr.number("x_mm", true, -kLabwareBig, kLabwareBig), y = wr.number("y_mm", true, -kLabwareBig, kLabwareBig);
             if (readWellSize(wr, w) && id && x && y) {
                 w.id = *id;
@@ -118,7 +118,7 @@ std::optional<Labware> readOurs(const Value& root, jsonio::Problems& problems)
             }
         }
         if (wells->items().size() > 4096)
-            problems.add(*wells, "wells", msg::make("plate.file.too_many_wells", {msg::integer("max", 4096)}));
+            problems.add(*wells, "wells", motion::msg::make("plate.file.too_many_wells", {motion::msg::integer("max", 4096)}));
     }
     if (problems.size() != before)
         return std::nullopt;
@@ -128,7 +128,7 @@ std::optional<Labware> readOurs(const Value& root, jsonio::Problems& problems)
 
 } // namespace
 
-std::optional<Labware> readOpentronsLabware(const Value& root, jsonio::Problems& problems)
+std::optional<Labware> readOpentronsLabware(const Value& root, dev::files::json::Problems& problems)
 {
     const std::size_t before = problems.size();
     ObjectReader o(root, "", problems);
@@ -136,13 +136,13 @@ std::optional<Labware> readOpentronsLabware(const Value& root, jsonio::Problems&
         return std::nullopt;
     const auto schemaVersion = o.integer("schemaVersion", true, 0, 1000);
     if (schemaVersion && *schemaVersion != 2)
-        problems.add(*root.find("schemaVersion"), "schemaVersion", msg::make("plate.file.opentrons_schema", {msg::integer("value", *schemaVersion, msg::Unit::None)}));
+        problems.add(*root.find("schemaVersion"), "schemaVersion", motion::msg::make("plate.file.opentrons_schema", {motion::msg::integer("value", *schemaVersion, motion::msg::Unit::None)}));
     Labware lw;
     if (const Value* params = o.get("parameters", Value::Type::Object, true)) {
         ObjectReader p(*params, "parameters", problems);
         lw.id = p.string("loadName", true).value_or("");
         if (p.boolean("isTiprack", false).value_or(false))
-            problems.add(*params->find("isTiprack"), "parameters.isTiprack", msg::make("plate.file.tip_rack"));
+            problems.add(*params->find("isTiprack"), "parameters.isTiprack", motion::msg::make("plate.file.tip_rack"));
     }
     if (const Value* meta = o.get("metadata", Value::Type::Object, false)) {
         ObjectReader m(*meta, "metadata", problems);
@@ -168,26 +168,26 @@ std::optional<Labware> readOpentronsLabware(const Value& root, jsonio::Problems&
         for (std::size_t c = 0; c < ordering->items().size(); ++c) {
             const Value& col = ordering->items()[c];
             if (!col.isArray()) {
-                problems.add(col, jsonio::childPath("ordering", c), msg::make("plate.file.ordering_not_names"));
+                problems.add(col, dev::files::json::childPath("ordering", c), motion::msg::make("plate.file.ordering_not_names"));
                 continue;
             }
             lw.rows = std::max(lw.rows, static_cast<int>(col.items().size()));
         }
-        if (lw.columns > plates::kMaxColumns || lw.rows > plates::kMaxRows)
-            problems.add(*ordering, "ordering", msg::make("plate.labware.grid_size", {msg::integer("max_rows", plates::kMaxRows),
-                                                                                   msg::integer("max_columns", plates::kMaxColumns),
-                                                                                   msg::integer("rows", lw.rows), msg::integer("columns", lw.columns)}));
+        if (lw.columns > motion::plates::kMaxColumns || lw.rows > motion::plates::kMaxRows)
+            problems.add(*ordering, "ordering", motion::msg::make("plate.labware.grid_size", {motion::msg::integer("max_rows", motion::plates::kMaxRows),
+                                                                                   motion::msg::integer("max_columns", motion::plates::kMaxColumns),
+                                                                                   motion::msg::integer("rows", lw.rows), motion::msg::integer("columns", lw.columns)}));
     }
     if (const Value* wells = o.get("wells", Value::Type::Object, true)) {
-        for (const jsonio::Member& m : wells->members()) {
+        for (const dev::files::json::Member& m : wells->members()) {
             if (lw.wells.size() >= 4096) {
-                problems.add(*wells, "wells", msg::make("plate.file.too_many_wells", {msg::integer("max", 4096)}));
+                problems.add(*wells, "wells", motion::msg::make("plate.file.too_many_wells", {motion::msg::integer("max", 4096)}));
                 break;
             }
-            const std::string path = jsonio::childPath("wells", m.key);
-            const auto id = plates::parseWellName(m.key);
+            const std::string path = dev::files::json::childPath("wells", m.key);
+            const auto id = motion::plates::parseWellName(m.key);
             if (!id) {
-                problems.add(m.keyPosition, path, msg::make("plate.file.not_a_well_name", {msg::verbatim("text", m.key.substr(0, 20))}));
+                problems.add(m.keyPosition, path, motion::msg::make("plate.file.not_a_well_name", {motion::msg::verbatim("text", m.key.substr(0, 20))}));
                 continue;
             }
             ObjectReader w(m.value, path, problems);
@@ -231,14 +231,14 @@ LabwareRead parseLabware(std::string_view text)
     if (root.isObject() && root.find("schemaVersion") && !root.find("schema")) {
         r.opentrons = true;
         lw = readOpentronsLabware(root, r.problems);
-    } else if (jsonio::checkSchema(root, kLabwareSchema, kLabwareVersion, r.problems)) {
+    } else if (dev::files::json::checkSchema(root, kLabwareSchema, kLabwareVersion, r.problems)) {
         lw = readOurs(root, r.problems);
     }
     if (!lw)
         return r;
-    msg::Problems found = plates::validateLabware(*lw);
+    motion::msg::Problems found = motion::plates::validateLabware(*lw);
     if (r.opentrons)
-        for (msg::Problem& p : found)
+        for (motion::msg::Problem& p : found)
             p.path = "wells";  // Opentrons keys wells by name; the message names the well
     addModelProblems(root, found, r.problems);
     if (r.problems.empty())
@@ -247,7 +247,7 @@ LabwareRead parseLabware(std::string_view text)
 }
 
 namespace {
-bool isRegularGrid(const Labware& lw, plates::GridSpec* spec)
+bool isRegularGrid(const Labware& lw, motion::plates::GridSpec* spec)
 {
     if (lw.wells.size() != static_cast<std::size_t>(lw.rows) * static_cast<std::size_t>(lw.columns) || lw.wells.empty())
         return false;
@@ -265,7 +265,7 @@ bool isRegularGrid(const Labware& lw, plates::GridSpec* spec)
     spec->depthMm = a1.depthMm;
     spec->bottomZMm = a1.bottomZMm;
     spec->volumeUl = a1.volumeUl;
-    const Labware regular = plates::gridLabware(*spec);
+    const Labware regular = motion::plates::gridLabware(*spec);
     for (std::size_t k = 0; k < lw.wells.size(); ++k) {
         const Well& a = lw.wells[k];
         const Well& b = regular.wells[k];
@@ -280,7 +280,7 @@ bool isRegularGrid(const Labware& lw, plates::GridSpec* spec)
 
 void writeSize(Value& v, const Well& w)
 {
-    v.set("shape", plates::wellShapeName(w.shape));
+    v.set("shape", motion::plates::wellShapeName(w.shape));
     if (w.shape == WellShape::Circular) {
         v.set("diameter_mm", w.diameterMm);
     } else {
@@ -295,7 +295,7 @@ void writeSize(Value& v, const Well& w)
 
 std::string writeLabware(const Labware& lw)
 {
-    Value v = jsonio::schemaObject(kLabwareSchema, kLabwareVersion);
+    Value v = dev::files::json::schemaObject(kLabwareSchema, kLabwareVersion);
     v.set("id", lw.id);
     v.set("name", lw.displayName);
     if (!lw.brand.empty())
@@ -305,7 +305,7 @@ std::string writeLabware(const Labware& lw)
     v.set("height_mm", lw.heightMm);
     v.set("rows", lw.rows);
     v.set("columns", lw.columns);
-    plates::GridSpec spec;
+    motion::plates::GridSpec spec;
     if (isRegularGrid(lw, &spec)) {
         Value g = Value::object();
         g.set("a1_x_mm", spec.a1XMm);
@@ -320,7 +320,7 @@ std::string writeLabware(const Labware& lw)
         Value wells = Value::array();
         for (const Well& w : lw.wells) {
             Value x = Value::object();
-            x.set("well", plates::wellName(w.id));
+            x.set("well", motion::plates::wellName(w.id));
             x.set("x_mm", w.xMm);
             x.set("y_mm", w.yMm);
             writeSize(x, w);
@@ -328,7 +328,7 @@ std::string writeLabware(const Labware& lw)
         }
         v.set("wells", std::move(wells));
     }
-    return jsonio::write(v);
+    return dev::files::json::write(v);
 }
 
-} // namespace platefiles
+} // namespace dev::files::plates

@@ -10,14 +10,14 @@
 #include <string>
 #include <string_view>
 
-namespace platefiles {
+namespace dev::files::plates {
 
 constexpr const char* kLabwareSchema = "benchpilot.labware";
 constexpr int kLabwareVersion = 1;
 
 struct LabwareRead {
-    std::optional<plates::Labware> labware;  ///< only when there are no problems
-    jsonio::Problems problems;
+    std::optional<motion::plates::Labware> labware;  ///< only when there are no problems
+    dev::files::json::Problems problems;
     bool opentrons = false;                  ///< the text was an Opentrons definition
 };
 
@@ -27,13 +27,13 @@ LabwareRead parseLabware(std::string_view text);
 
 /// Our format. A regular grid is written as its A1 position and pitch, anything
 /// else well by well; both read back to the same wells.
-std::string writeLabware(const plates::Labware& labware);
+std::string writeLabware(const motion::plates::Labware& labware);
 
 /// An Opentrons labware definition (schema 2) from its parsed JSON. Its frame
 /// has the origin at the front-left corner with y toward the back; ours has it
 /// at the back-left with y toward the front, so y_ours = yDimension − y. Fields
 /// we do not use (brand ids, groups, stacking offsets, …) are passed over, as
 /// the format grows; what we use is checked strictly.
-std::optional<plates::Labware> readOpentronsLabware(const jsonio::Value& root, jsonio::Problems& problems);
+std::optional<motion::plates::Labware> readOpentronsLabware(const dev::files::json::Value& root, dev::files::json::Problems& problems);
 
-} // namespace platefiles
+} // namespace dev::files::plates

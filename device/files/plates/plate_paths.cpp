@@ -3,7 +3,7 @@
 #include <QDir>
 #include <QStandardPaths>
 
-namespace platefiles {
+namespace dev::files::plates {
 
 namespace {
 QString base() { return QDir(QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation)).filePath(QStringLiteral("BenchPilot")); }
@@ -13,4 +13,4 @@ QString defaultCalibrationPath() { return QDir(base()).filePath(QStringLiteral("
 
 QString defaultRunLogDirectory() { return QDir(base()).filePath(QStringLiteral("runs")); }
 
-} // namespace platefiles
+} // namespace dev::files::plates

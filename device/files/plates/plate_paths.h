@@ -4,11 +4,11 @@
 // directory (XDG_DATA_HOME, ~/.local/share on Linux), in BenchPilot/.
 #include <QString>
 
-namespace platefiles {
+namespace dev::files::plates {
 
 /// The analyzer's slot calibration, kept between runs.
 QString defaultCalibrationPath();
 /// Where run logs go when the user names none.
 QString defaultRunLogDirectory();
 
-} // namespace platefiles
+} // namespace dev::files::plates

@@ -4,11 +4,11 @@
 
 #include <vector>
 
-namespace platefiles {
+namespace dev::files::plates {
 
-using jsonio::ObjectReader;
-using jsonio::Value;
-using plates::StepType;
+using dev::files::json::ObjectReader;
+using dev::files::json::Value;
+using motion::plates::StepType;
 
 namespace {
 
@@ -37,7 +37,7 @@ bool takes(StepType t, std::string_view field)
     return false;
 }
 
-void readWells(ObjectReader& o, const Value& step, plates::Step& s, jsonio::Problems& problems)
+void readWells(ObjectReader& o, const Value& step, motion::plates::Step& s, dev::files::json::Problems& problems)
 {
     const Value* w = step.find("wells");
     if (!w)
@@ -48,29 +48,29 @@ void readWells(ObjectReader& o, const Value& step, plates::Step& s, jsonio::Prob
         for (std::size_t k = 0; k < w->items().size(); ++k) {
             const Value& item = w->items()[k];
             if (!item.isString()) {
-                problems.add(item, jsonio::childPath(o.pathOf("wells"), k), msg::make("recipe.file.well_not_string", {msg::term("actual", jsonio::typeTerm(item.type()))}));
+                problems.add(item, dev::files::json::childPath(o.pathOf("wells"), k), motion::msg::make("recipe.file.well_not_string", {motion::msg::term("actual", dev::files::json::typeTerm(item.type()))}));
                 continue;
             }
             s.wells.push_back(item.asString());
         }
         if (w->items().empty())
-            problems.add(*w, o.pathOf("wells"), msg::make("plate.wells.none"));
+            problems.add(*w, o.pathOf("wells"), motion::msg::make("plate.wells.none"));
     } else {
-        problems.add(*w, o.pathOf("wells"), msg::make("recipe.file.wells_wrong_type", {msg::term("actual", jsonio::typeTerm(w->type()))}));
+        problems.add(*w, o.pathOf("wells"), motion::msg::make("recipe.file.wells_wrong_type", {motion::msg::term("actual", dev::files::json::typeTerm(w->type()))}));
     }
 }
 
-plates::Step readStep(const Value& v, const std::string& path, jsonio::Problems& problems)
+motion::plates::Step readStep(const Value& v, const std::string& path, dev::files::json::Problems& problems)
 {
-    plates::Step s;
+    motion::plates::Step s;
     ObjectReader o(v, path, problems);
     if (!o.valid())
         return s;
     const auto type = o.string("type", true);
-    const auto t = type ? plates::stepTypeFromName(*type) : std::nullopt;
+    const auto t = type ? motion::plates::stepTypeFromName(*type) : std::nullopt;
     if (type && !t) {
-        problems.add(*v.find("type"), o.pathOf("type"), msg::make("recipe.file.unknown_step_type", {msg::verbatim("type", type->substr(0, 40)),
-                                                                                                   msg::verbatim("types", plates::stepTypeList())}));
+        problems.add(*v.find("type"), o.pathOf("type"), motion::msg::make("recipe.file.unknown_step_type", {motion::msg::verbatim("type", type->substr(0, 40)),
+                                                                                                   motion::msg::verbatim("types", motion::plates::stepTypeList())}));
         s.type = StepType::Wait;  // a harmless stand-in keeps the later steps' indices
         s.seconds = 0;
         return s;
@@ -84,12 +84,12 @@ plates::Step readStep(const Value& v, const std::string& path, jsonio::Problems&
     known.push_back("type");
     known.push_back("note");
     // A field of another step type gets a sentence of its own, not a spelling hint.
-    for (const jsonio::Member& m : v.members()) {
+    for (const dev::files::json::Member& m : v.members()) {
         if (m.key == "type" || m.key == "note" || takes(*t, m.key))
             continue;
-        for (int k = 0; k < plates::kStepTypeCount; ++k)
+        for (int k = 0; k < motion::plates::kStepTypeCount; ++k)
             if (takes(static_cast<StepType>(k), m.key)) {
-                problems.add(m.keyPosition, o.pathOf(m.key), msg::make("recipe.file.field_of_other_step", {msg::verbatim("type", *type), msg::verbatim("field", m.key)}));
+                problems.add(m.keyPosition, o.pathOf(m.key), motion::msg::make("recipe.file.field_of_other_step", {motion::msg::verbatim("type", *type), motion::msg::verbatim("field", m.key)}));
                 known.push_back(m.key);
                 break;
             }
@@ -122,7 +122,7 @@ plates::Step readStep(const Value& v, const std::string& path, jsonio::Problems&
             s.source.well = so.string("well", false).value_or("");
             s.source.station = so.string("station", false).value_or("");
             if (s.source.empty())
-                problems.add(*src, o.pathOf("source"), msg::make("recipe.file.source_empty"));
+                problems.add(*src, o.pathOf("source"), motion::msg::make("recipe.file.source_empty"));
         }
     return s;
 }
@@ -148,11 +148,11 @@ RecipeRead parseRecipe(std::string_view text)
     if (!r.root)
         return r;
     const Value& root = *r.root;
-    if (!jsonio::checkSchema(root, kRecipeSchema, kRecipeVersion, r.problems))
+    if (!dev::files::json::checkSchema(root, kRecipeSchema, kRecipeVersion, r.problems))
         return r;
     ObjectReader o(root, "", r.problems);
     o.refuseUnknown({"schema", "version", "name", "description", "travel_speed_mm_s", "z_speed_mm_s", "plates", "steps"});
-    plates::Recipe rec;
+    motion::plates::Recipe rec;
     rec.name = o.string("name", false).value_or("");
     rec.description = o.string("description", false).value_or("");
     if (root.find("travel_speed_mm_s"))
@@ -161,9 +161,9 @@ RecipeRead parseRecipe(std::string_view text)
         rec.zSpeedMmS = o.number("z_speed_mm_s", false, -kRecipeBig, kRecipeBig);
     if (const Value* plates = o.get("plates", Value::Type::Array, true)) {
         for (std::size_t k = 0; k < plates->items().size() && k < 64; ++k) {
-            ObjectReader p(plates->items()[k], jsonio::childPath("plates", k), r.problems);
+            ObjectReader p(plates->items()[k], dev::files::json::childPath("plates", k), r.problems);
             p.refuseUnknown({"name", "slot", "labware", "safe_z_mm", "depth_z_mm"});
-            plates::RecipePlate rp;
+            motion::plates::RecipePlate rp;
             rp.name = p.string("name", true).value_or("");
             rp.slot = p.string("slot", true).value_or("");
             rp.labware = p.string("labware", true).value_or("");
@@ -172,28 +172,28 @@ RecipeRead parseRecipe(std::string_view text)
             rec.plates.push_back(rp);
         }
         if (plates->items().size() > 64)
-            r.problems.add(*plates, "plates", msg::make("recipe.file.too_many_plates", {msg::integer("max", 64)}));
+            r.problems.add(*plates, "plates", motion::msg::make("recipe.file.too_many_plates", {motion::msg::integer("max", 64)}));
     }
     if (const Value* steps = o.get("steps", Value::Type::Array, true)) {
-        const std::size_t n = std::min(steps->items().size(), plates::kMaxSteps + 1);
+        const std::size_t n = std::min(steps->items().size(), motion::plates::kMaxSteps + 1);
         for (std::size_t k = 0; k < n; ++k)
-            rec.steps.push_back(readStep(steps->items()[k], jsonio::childPath("steps", k), r.problems));
+            rec.steps.push_back(readStep(steps->items()[k], dev::files::json::childPath("steps", k), r.problems));
     }
     r.wellFormed = r.problems.empty();
     r.recipe = std::move(rec);
     return r;
 }
 
-void placeProblems(RecipeRead& read, const msg::Problems& problems)
+void placeProblems(RecipeRead& read, const motion::msg::Problems& problems)
 {
-    const std::vector<msg::Problem> before = read.problems.list();
-    for (const msg::Problem& p : problems) {
+    const std::vector<motion::msg::Problem> before = read.problems.list();
+    for (const motion::msg::Problem& p : problems) {
         bool dup = false;
-        for (const msg::Problem& q : before)
+        for (const motion::msg::Problem& q : before)
             dup = dup || covers(q.path, p.path);
         if (dup)
             continue;
-        const jsonio::Position at = read.root ? positionOfPath(*read.root, p.path) : jsonio::Position{};
+        const dev::files::json::Position at = read.root ? positionOfPath(*read.root, p.path) : dev::files::json::Position{};
         read.problems.add(at, p.path, p.message, p.severity);
     }
 }
@@ -210,9 +210,9 @@ Value wellsJson(const std::vector<std::string>& wells)
 }
 } // namespace
 
-std::string writeRecipe(const plates::Recipe& rec)
+std::string writeRecipe(const motion::plates::Recipe& rec)
 {
-    Value v = jsonio::schemaObject(kRecipeSchema, kRecipeVersion);
+    Value v = dev::files::json::schemaObject(kRecipeSchema, kRecipeVersion);
     v.set("name", rec.name);
     if (!rec.description.empty())
         v.set("description", rec.description);
@@ -221,7 +221,7 @@ std::string writeRecipe(const plates::Recipe& rec)
     if (rec.zSpeedMmS)
         v.set("z_speed_mm_s", *rec.zSpeedMmS);
     Value plates = Value::array();
-    for (const plates::RecipePlate& p : rec.plates) {
+    for (const motion::plates::RecipePlate& p : rec.plates) {
         Value x = Value::object();
         x.set("name", p.name);
         x.set("slot", p.slot);
@@ -232,9 +232,9 @@ std::string writeRecipe(const plates::Recipe& rec)
     }
     v.set("plates", std::move(plates));
     Value steps = Value::array();
-    for (const plates::Step& s : rec.steps) {
+    for (const motion::plates::Step& s : rec.steps) {
         Value x = Value::object();
-        x.set("type", plates::stepTypeName(s.type));
+        x.set("type", motion::plates::stepTypeName(s.type));
         if (takes(s.type, "plate") && !s.plate.empty())
             x.set("plate", s.plate);
         if (takes(s.type, "wells") && !s.wells.empty())
@@ -269,7 +269,7 @@ std::string writeRecipe(const plates::Recipe& rec)
         steps.push(std::move(x));
     }
     v.set("steps", std::move(steps));
-    return jsonio::write(v);
+    return dev::files::json::write(v);
 }
 
-} // namespace platefiles
+} // namespace dev::files::plates

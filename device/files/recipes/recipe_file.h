@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-namespace platefiles {
+namespace dev::files::plates {
 
 constexpr const char* kRecipeSchema = "benchpilot.recipe";
 constexpr int kRecipeVersion = 1;
@@ -21,20 +21,20 @@ struct RecipeRead {
     /// As much of the recipe as could be read, whenever the document is a
     /// recipe: planning it finds the meaning's problems beside the form's. An
     /// unreadable step stands in as a zero-second wait, so indices stay right.
-    std::optional<plates::Recipe> recipe;
+    std::optional<motion::plates::Recipe> recipe;
     bool wellFormed = false;               ///< the form had no problem: `recipe` is exactly the file
-    jsonio::Problems problems;             ///< the form's problems (and, after placeProblems, the plan's)
-    std::optional<jsonio::Value> root;     ///< the parsed document, for placing later problems
+    dev::files::json::Problems problems;             ///< the form's problems (and, after placeProblems, the plan's)
+    std::optional<dev::files::json::Value> root;     ///< the parsed document, for placing later problems
 };
 
 RecipeRead parseRecipe(std::string_view text);
-std::string writeRecipe(const plates::Recipe& recipe);
+std::string writeRecipe(const motion::plates::Recipe& recipe);
 
 /// The plan's problems added to `read.problems` at their positions, except
 /// where the reader already reported that field. Warnings say "warning: ".
-void placeProblems(RecipeRead& read, const msg::Problems& problems);
+void placeProblems(RecipeRead& read, const motion::msg::Problems& problems);
 
 /// A labware reference that names a file (ends in ".json") rather than a built-in id.
 bool isLabwareFile(const std::string& reference);
 
-} // namespace platefiles
+} // namespace dev::files::plates

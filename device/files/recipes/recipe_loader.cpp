@@ -9,23 +9,23 @@
 
 #include <algorithm>
 
-namespace platefiles {
+namespace dev::files::plates {
 
 namespace {
 /// A file that cannot be read, as a problem of that file.
-msg::Problem unreadable(const QString& file, const msg::Message& why)
+motion::msg::Problem unreadable(const QString& file, const motion::msg::Message& why)
 {
-    return msg::Problem(QFileInfo(file).fileName().toStdString(), 0, 0, "", why);
+    return motion::msg::Problem(QFileInfo(file).fileName().toStdString(), 0, 0, "", why);
 }
 } // namespace
 
-int resolveLabware(const plates::Recipe& recipe, const QString& baseDir, plates::PlanContext& context, msg::Problems* problems)
+int resolveLabware(const motion::plates::Recipe& recipe, const QString& baseDir, motion::plates::PlanContext& context, motion::msg::Problems* problems)
 {
     int errors = 0;
-    for (const plates::RecipePlate& p : recipe.plates) {
+    for (const motion::plates::RecipePlate& p : recipe.plates) {
         if (context.labware.count(p.labware))
             continue;
-        if (auto lw = plates::findBuiltinLabware(p.labware)) {
+        if (auto lw = motion::plates::findBuiltinLabware(p.labware)) {
             context.labware[p.labware] = std::move(*lw);
             continue;
         }
@@ -34,20 +34,20 @@ int resolveLabware(const plates::Recipe& recipe, const QString& baseDir, plates:
         QString file = QDir(baseDir).filePath(QString::fromStdString(p.labware));
         // A recipe copied out of the examples still finds the labware shipped with them.
         if (!QFileInfo::exists(file))
-            if (const QString shipped = files::shippedLabwareFile(QString::fromStdString(p.labware)); !shipped.isEmpty())
+            if (const QString shipped = dev::files::shippedLabwareFile(QString::fromStdString(p.labware)); !shipped.isEmpty())
                 file = shipped;
         std::string text;
-        msg::Message error;
-        if (!files::readText(file, &text, &error)) {
+        motion::msg::Message error;
+        if (!dev::files::readText(file, &text, &error)) {
             if (problems)
                 problems->push_back(unreadable(file, error));
             ++errors;
             continue;
         }
         const LabwareRead lr = parseLabware(text);
-        msg::Problems found;
-        jsonio::appendSorted(found, lr.problems, QFileInfo(file).fileName().toStdString());
-        errors += msg::errorCount(found);
+        motion::msg::Problems found;
+        dev::files::json::appendSorted(found, lr.problems, QFileInfo(file).fileName().toStdString());
+        errors += motion::msg::errorCount(found);
         if (problems)
             problems->insert(problems->end(), found.begin(), found.end());
         if (lr.labware)
@@ -56,7 +56,7 @@ int resolveLabware(const plates::Recipe& recipe, const QString& baseDir, plates:
     return errors;
 }
 
-LoadedRecipe loadRecipe(const QString& path, const plates::Deck& deck, const std::vector<plates::SlotCalibration>& calibration)
+LoadedRecipe loadRecipe(const QString& path, const motion::plates::Deck& deck, const std::vector<motion::plates::SlotCalibration>& calibration)
 {
     LoadedRecipe out;
     out.path = path;
@@ -65,8 +65,8 @@ LoadedRecipe loadRecipe(const QString& path, const plates::Deck& deck, const std
         if (deck.slot(c.slot))
             out.context.calibration[c.slot] = c.fit.transform;
     std::string text;
-    msg::Message error;
-    if (!files::readText(path, &text, &error)) {
+    motion::msg::Message error;
+    if (!dev::files::readText(path, &text, &error)) {
         out.problems.push_back(unreadable(path, error));
         out.errorCount = 1;
         return out;
@@ -74,21 +74,21 @@ LoadedRecipe loadRecipe(const QString& path, const plates::Deck& deck, const std
     RecipeRead read = parseRecipe(text);
     const std::string name = QFileInfo(path).fileName().toStdString();
     if (!read.recipe) {
-        jsonio::appendSorted(out.problems, read.problems, name);
-        out.errorCount = msg::errorCount(out.problems);
+        dev::files::json::appendSorted(out.problems, read.problems, name);
+        out.errorCount = motion::msg::errorCount(out.problems);
         return out;
     }
     out.readable = read.wellFormed;
     out.recipe = *read.recipe;
-    msg::Problems labwareProblems;
+    motion::msg::Problems labwareProblems;
     const int labwareErrors = resolveLabware(out.recipe, QFileInfo(path).absolutePath(), out.context, &labwareProblems);
-    out.plan = plates::planRecipe(out.recipe, out.context);
+    out.plan = motion::plates::planRecipe(out.recipe, out.context);
     placeProblems(read, out.plan.problems);
-    jsonio::appendSorted(out.problems, read.problems, name);
-    out.errorCount = msg::errorCount(out.problems);
+    dev::files::json::appendSorted(out.problems, read.problems, name);
+    out.errorCount = motion::msg::errorCount(out.problems);
     out.problems.insert(out.problems.end(), labwareProblems.begin(), labwareProblems.end());
     out.errorCount += labwareErrors;
     return out;
 }
 
-} // namespace platefiles
+} // namespace dev::files::plates

@@ -10,14 +10,14 @@
 
 #include <vector>
 
-namespace platefiles {
+namespace dev::files::plates {
 
 struct LoadedRecipe {
     QString path;
-    plates::Recipe recipe;
-    plates::PlanContext context;
-    plates::RecipePlan plan;      ///< from the machine's start (0, 0, 0, 0) unless re-planned
-    msg::Problems problems; ///< errors and warnings, files in order (words::fileProblems words them)
+    motion::plates::Recipe recipe;
+    motion::plates::PlanContext context;
+    motion::plates::RecipePlan plan;      ///< from the machine's start (0, 0, 0, 0) unless re-planned
+    motion::msg::Problems problems; ///< errors and warnings, files in order (ui::words::fileProblems words them)
     bool readable = false;        ///< the recipe's form was right: `recipe` is the file
     int errorCount = 0;
     bool ok() const { return readable && errorCount == 0; }
@@ -26,11 +26,11 @@ struct LoadedRecipe {
 /// Reads `path`, the labware files it names, and plans it on `deck` with the
 /// `calibration` it finds for its slots. Never throws; everything wrong is in
 /// `problems` (a file that cannot be read included).
-LoadedRecipe loadRecipe(const QString& path, const plates::Deck& deck, const std::vector<plates::SlotCalibration>& calibration);
+LoadedRecipe loadRecipe(const QString& path, const motion::plates::Deck& deck, const std::vector<motion::plates::SlotCalibration>& calibration);
 
 /// Fills `context.labware` for the plates of `recipe`: built-in ids, and labware
 /// files (ours or Opentrons) relative to `baseDir`. Problems go to `problems`;
 /// returns how many errors.
-int resolveLabware(const plates::Recipe& recipe, const QString& baseDir, plates::PlanContext& context, msg::Problems* problems);
+int resolveLabware(const motion::plates::Recipe& recipe, const QString& baseDir, motion::plates::PlanContext& context, motion::msg::Problems* problems);
 
-} // namespace platefiles
+} // namespace dev::files::plates

@@ -1,9 +1,9 @@
 #include "device/files/recipes/run_log.h"
 
-namespace platefiles {
+namespace dev::files::plates {
 
-using jsonio::ObjectReader;
-using jsonio::Value;
+using dev::files::json::ObjectReader;
+using dev::files::json::Value;
 
 int RunLogState::doneCount() const
 {
@@ -37,8 +37,8 @@ RunLogState readRunLog(std::string_view text)
         ++lineNo;
         if (line.empty())
             continue;
-        auto at = [&](const jsonio::Position& p) { return jsonio::Position{lineNo, p.column}; };
-        jsonio::ParseResult parsed = jsonio::parse(line);
+        auto at = [&](const dev::files::json::Position& p) { return dev::files::json::Position{lineNo, p.column}; };
+        dev::files::json::ParseResult parsed = dev::files::json::parse(line);
         if (!parsed) {
             if (last) {
                 st.tornTail = true;  // written up to a crash: the line never completed
@@ -48,13 +48,13 @@ RunLogState readRunLog(std::string_view text)
             continue;
         }
         const Value& v = *parsed.value;
-        jsonio::Problems local;
+        dev::files::json::Problems local;
         ObjectReader o(v, "", local);
         const auto event = o.oneOf("event", true, {"run", "resume", "start", "pump", "done", "skip", "redo", "stop", "finished"});
         if (event && *event == "run") {
             if (header)
-                local.add(v, "event", msg::make("file.log.second_header"));
-            jsonio::checkSchema(v, kRunLogSchema, kRunLogVersion, local);
+                local.add(v, "event", motion::msg::make("file.log.second_header"));
+            dev::files::json::checkSchema(v, kRunLogSchema, kRunLogVersion, local);
             o.refuseUnknown({"schema", "version", "event", "recipe", "fingerprint", "ops", "p_ul", "time"});
             st.startPumpUl = o.number("p_ul", false, -1e9, 1e9);
             st.recipe = o.string("recipe", false).value_or("");
@@ -64,7 +64,7 @@ RunLogState readRunLog(std::string_view text)
             header = true;
             ++st.runs;
         } else if (event && !header) {
-            local.add(v, "event", msg::make("file.log.no_header_first"));
+            local.add(v, "event", motion::msg::make("file.log.no_header_first"));
         } else if (event) {
             o.refuseUnknown({"event", "op", "time", "kind", "step", "plate", "well", "station", "volume_ul", "p_ul", "reason", "device"});
             o.string("time", false);
@@ -73,12 +73,12 @@ RunLogState readRunLog(std::string_view text)
             if (perOp) {
                 opIndex = o.integer("op", true, 0, 1000000).value_or(-1);
                 if (opIndex >= 0 && static_cast<std::size_t>(opIndex) >= st.ops.size()) {
-                    local.add(*v.find("op"), "op", msg::make("file.log.op_beyond", {msg::integer("op", opIndex, msg::Unit::None),
-                                                                                    msg::integer("count", static_cast<long long>(st.ops.size()))}));
+                    local.add(*v.find("op"), "op", motion::msg::make("file.log.op_beyond", {motion::msg::integer("op", opIndex, motion::msg::Unit::None),
+                                                                                    motion::msg::integer("count", static_cast<long long>(st.ops.size()))}));
                     opIndex = -1;
                 }
             }
-            const msg::Arg opArg = msg::integer("op", opIndex, msg::Unit::None);
+            const motion::msg::Arg opArg = motion::msg::integer("op", opIndex, motion::msg::Unit::None);
             const auto pUl = o.number("p_ul", false, -1e9, 1e9);
             if (*event == "resume") {
                 ++st.runs;
@@ -92,7 +92,7 @@ RunLogState readRunLog(std::string_view text)
                 const bool closed = r.state == OpState::Done || r.state == OpState::Skipped;
                 if (*event == "start") {
                     if (closed)
-                        local.add(v, "op", msg::make("file.log.op_restarted", {opArg}));
+                        local.add(v, "op", motion::msg::make("file.log.op_restarted", {opArg}));
                     r.state = OpState::Started;
                     r.kind = o.string("kind", false).value_or("");
                     r.plate = o.string("plate", false).value_or("");
@@ -105,19 +105,19 @@ RunLogState readRunLog(std::string_view text)
                     ++r.starts;
                 } else if (*event == "pump") {
                     if (r.state != OpState::Started)
-                        local.add(v, "op", msg::make("file.log.pump_before_start", {opArg}));
+                        local.add(v, "op", motion::msg::make("file.log.pump_before_start", {opArg}));
                     r.state = OpState::Interrupted;
                     r.pumpStartUl = pUl;
                 } else if (*event == "done") {
                     if (r.state != OpState::Started && r.state != OpState::Interrupted)
-                        local.add(v, "op", msg::make("file.log.done_not_started", {opArg}));
+                        local.add(v, "op", motion::msg::make("file.log.done_not_started", {opArg}));
                     r.state = OpState::Done;
                     r.pumpEndUl = pUl;
                     if (pUl)
                         st.lastPumpUl = pUl;
                 } else if (*event == "skip") {
                     if (r.state != OpState::Interrupted)
-                        local.add(v, "op", msg::make("file.log.skip_not_interrupted", {opArg}));
+                        local.add(v, "op", motion::msg::make("file.log.skip_not_interrupted", {opArg}));
                     r.state = OpState::Skipped;
                     o.string("reason", false);
                     if (pUl)
@@ -128,14 +128,14 @@ RunLogState readRunLog(std::string_view text)
                 r.line = lineNo;
             }
         }
-        for (const msg::Problem& p : local.list())
-            st.problems.add(at(jsonio::Position{p.line, p.column}), p.path, p.message);
+        for (const motion::msg::Problem& p : local.list())
+            st.problems.add(at(dev::files::json::Position{p.line, p.column}), p.path, p.message);
         if (st.problems.size() > 100)
             break;
     }
     if (!header && st.problems.empty())
-        st.problems.add(jsonio::Position{1, 1}, "", msg::make(text.empty() ? "file.log.empty" : "file.log.no_header"));
+        st.problems.add(dev::files::json::Position{1, 1}, "", motion::msg::make(text.empty() ? "file.log.empty" : "file.log.no_header"));
     return st;
 }
 
-} // namespace platefiles
+} // namespace dev::files::plates

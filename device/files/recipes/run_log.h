@@ -22,7 +22,7 @@
 #include <string_view>
 #include <vector>
 
-namespace platefiles {
+namespace dev::files::plates {
 
 constexpr const char* kRunLogSchema = "benchpilot.run-log";
 constexpr int kRunLogVersion = 1;
@@ -53,11 +53,11 @@ struct RunLogState {
     std::string lastStop;          ///< reason of the last "stop" line
     std::optional<double> lastPumpUl;  ///< plunger after the last op that completed
     bool tornTail = false;         ///< the last line was cut short (crash mid-write): ignored
-    jsonio::Problems problems;     ///< a log with problems is not resumed
+    dev::files::json::Problems problems;     ///< a log with problems is not resumed
     int doneCount() const;         ///< Done or Skipped
     int firstOpenOp() const;       ///< first op not Done/Skipped; opCount when none
 };
 
 RunLogState readRunLog(std::string_view text);
 
-} // namespace platefiles
+} // namespace dev::files::plates

@@ -8,23 +8,23 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-namespace platefiles {
+namespace dev::files::plates {
 
 RunLogWriter::~RunLogWriter() { close(); }
 
-msg::Message RunLogWriter::problem(const char* id) const
+motion::msg::Message RunLogWriter::problem(const char* id) const
 {
     // strerror: the system's words for what the disk said (English on most systems).
-    return msg::make(id, {msg::verbatim("file", m_path.toStdString()), msg::verbatim("detail", std::strerror(errno))});
+    return motion::msg::make(id, {motion::msg::verbatim("file", m_path.toStdString()), motion::msg::verbatim("detail", std::strerror(errno))});
 }
 
-bool RunLogWriter::open(const QString& path, int flags, msg::Message* error)
+bool RunLogWriter::open(const QString& path, int flags, motion::msg::Message* error)
 {
     close();
     const QByteArray name = QFile::encodeName(path);
     m_fd = ::open(name.constData(), flags | O_WRONLY | O_APPEND | O_CLOEXEC, 0644);
     if (m_fd < 0) {
-        m_error = msg::make("file.log.cannot_open", {msg::verbatim("file", path.toStdString()), msg::verbatim("detail", std::strerror(errno))});
+        m_error = motion::msg::make("file.log.cannot_open", {motion::msg::verbatim("file", path.toStdString()), motion::msg::verbatim("detail", std::strerror(errno))});
         if (error)
             *error = m_error;
         return false;
@@ -33,9 +33,9 @@ bool RunLogWriter::open(const QString& path, int flags, msg::Message* error)
     return true;
 }
 
-bool RunLogWriter::create(const QString& path, msg::Message* error) { return open(path, O_CREAT | O_EXCL, error); }
+bool RunLogWriter::create(const QString& path, motion::msg::Message* error) { return open(path, O_CREAT | O_EXCL, error); }
 
-bool RunLogWriter::append(const QString& path, msg::Message* error) { return open(path, 0, error); }
+bool RunLogWriter::append(const QString& path, motion::msg::Message* error) { return open(path, 0, error); }
 
 void RunLogWriter::close()
 {
@@ -44,14 +44,14 @@ void RunLogWriter::close()
     m_fd = -1;
 }
 
-bool RunLogWriter::write(jsonio::Value line)
+bool RunLogWriter::write(dev::files::json::Value line)
 {
     if (m_fd < 0) {
-        m_error = msg::make("file.log.not_open");
+        m_error = motion::msg::make("file.log.not_open");
         return false;
     }
     line.set("time", QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs).toStdString());
-    const std::string text = jsonio::write(line, false) + "\n";
+    const std::string text = dev::files::json::write(line, false) + "\n";
     std::size_t done = 0;
     while (done < text.size()) {
         const ssize_t n = ::write(m_fd, text.data() + done, text.size() - done);
@@ -70,4 +70,4 @@ bool RunLogWriter::write(jsonio::Value line)
     return true;
 }
 
-} // namespace platefiles
+} // namespace dev::files::plates

@@ -9,7 +9,7 @@
 
 #include <QString>
 
-namespace platefiles {
+namespace dev::files::plates {
 
 class RunLogWriter {
 public:
@@ -19,25 +19,25 @@ public:
     RunLogWriter& operator=(const RunLogWriter&) = delete;
 
     /// A new log: refuses to overwrite an existing file (a log is a record).
-    bool create(const QString& path, msg::Message* error);
+    bool create(const QString& path, motion::msg::Message* error);
     /// An existing log, to continue it.
-    bool append(const QString& path, msg::Message* error);
+    bool append(const QString& path, motion::msg::Message* error);
     void close();
     bool isOpen() const { return m_fd >= 0; }
     QString path() const { return m_path; }
     /// file.log.cannot_open / cannot_write / cannot_sync / not_open {file, detail}.
-    msg::Message lastError() const { return m_error; }
+    motion::msg::Message lastError() const { return m_error; }
 
     /// One JSON object as one line; the time ("time") is added here. False (and
     /// lastError()) when the disk refused: a run must stop then.
-    bool write(jsonio::Value line);
+    bool write(dev::files::json::Value line);
 
 private:
-    bool open(const QString& path, int flags, msg::Message* error);
-    msg::Message problem(const char* id) const;
+    bool open(const QString& path, int flags, motion::msg::Message* error);
+    motion::msg::Message problem(const char* id) const;
     int m_fd = -1;
     QString m_path;
-    msg::Message m_error;
+    motion::msg::Message m_error;
 };
 
-} // namespace platefiles
+} // namespace dev::files::plates

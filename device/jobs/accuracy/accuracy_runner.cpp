@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace jobs {
+namespace dev::jobs {
 
 using motion::metrology::Direction;
 
@@ -14,19 +14,19 @@ namespace {
 /// device clock moves K times this much between them.
 constexpr int kPollMs = 10;
 
-const motion::metrology::SettleRule& settleOf(const accuracyfiles::AccuracyTest& t)
+const motion::metrology::SettleRule& settleOf(const dev::files::accuracy::AccuracyTest& t)
 {
     if (const auto* a = std::get_if<motion::metrology::AxisTest>(&t))
         return a->settle;
     return std::get<motion::metrology::XyLineTest>(t).settle;
 }
-double feedOf(const accuracyfiles::AccuracyTest& t)
+double feedOf(const dev::files::accuracy::AccuracyTest& t)
 {
     if (const auto* a = std::get_if<motion::metrology::AxisTest>(&t))
         return a->feedMmS;
     return std::get<motion::metrology::XyLineTest>(t).feedMmS;
 }
-double dwellOf(const accuracyfiles::AccuracyTest& t)
+double dwellOf(const dev::files::accuracy::AccuracyTest& t)
 {
     if (const auto* a = std::get_if<motion::metrology::AxisTest>(&t))
         return a->dwellS;
@@ -36,7 +36,7 @@ double dwellOf(const accuracyfiles::AccuracyTest& t)
 
 AccuracyRunner::AccuracyRunner(dev::Instrument* instrument, QObject* parent) : QObject(parent), m_instrument(instrument)
 {
-    qRegisterMetaType<jobs::AccuracyRunner::State>();
+    qRegisterMetaType<dev::jobs::AccuracyRunner::State>();
     m_poll.setSingleShot(true);
     connect(&m_poll, &QTimer::timeout, this, &AccuracyRunner::pollSettle);
     if (!instrument)
@@ -44,7 +44,7 @@ AccuracyRunner::AccuracyRunner(dev::Instrument* instrument, QObject* parent) : Q
     m_connections << connect(instrument, &dev::Instrument::eventReceived, this, &AccuracyRunner::onEvent);
     m_connections << connect(instrument, &dev::Instrument::stateChanged, this, [this](dev::LinkState s) {
         if (isActive() && s != dev::LinkState::Ready)
-            stopWith(msg::make("accuracy.run.link_lost"), false);
+            stopWith(motion::msg::make("accuracy.run.link_lost"), false);
     });
     m_connections << connect(instrument, &dev::Instrument::statusChanged, this, [this](const dev::InstrumentStatus& s) {
         const bool moving = m_phase == Phase::Overrun || m_phase == Phase::Approach || m_phase == Phase::Target;
@@ -107,29 +107,29 @@ QString AccuracyRunner::axisNames() const
     return out;
 }
 
-bool AccuracyRunner::start(msg::Message* why)
+bool AccuracyRunner::start(motion::msg::Message* why)
 {
-    auto refuse = [&](msg::Message m) {
+    auto refuse = [&](motion::msg::Message m) {
         if (why)
             *why = m;
         emit problem(m);
         return false;
     };
     if (!m_prepared)
-        return refuse(msg::make("accuracy.run.not_prepared"));
+        return refuse(motion::msg::make("accuracy.run.not_prepared"));
     if (isActive())
-        return refuse(msg::make("accuracy.run.busy"));
+        return refuse(motion::msg::make("accuracy.run.busy"));
     if (m_state == State::Finished || m_entries.size() >= m_stops.size())
-        return refuse(msg::make("accuracy.run.finished_already"));
+        return refuse(motion::msg::make("accuracy.run.finished_already"));
     if (!m_instrument || !m_instrument->isReady())
-        return refuse(msg::make("accuracy.run.not_connected"));
+        return refuse(motion::msg::make("accuracy.run.not_connected"));
     const dev::InstrumentStatus& st = m_instrument->status();
     if (st.estop)
-        return refuse(msg::make("accuracy.run.estop"));
+        return refuse(motion::msg::make("accuracy.run.estop"));
     for (int a : m_axes)
         if (a >= st.axes.size() || !st.axes[a].homed)
-            return refuse(msg::make("accuracy.run.not_homed",
-                                    {msg::verbatim("axis", QString(m_instrument->identity().axes[a].letter).toStdString())}));
+            return refuse(motion::msg::make("accuracy.run.not_homed",
+                                    {motion::msg::verbatim("axis", QString(m_instrument->identity().axes[a].letter).toStdString())}));
     ++m_generation;
     m_firstOfSession = true;
     m_haveSessionStart = false;
@@ -150,12 +150,12 @@ void AccuracyRunner::pause()
 void AccuracyRunner::abort()
 {
     if (isActive())
-        stopWith(msg::make("accuracy.run.aborted"), true);
+        stopWith(motion::msg::make("accuracy.run.aborted"), true);
     else if (m_state == State::Paused)
-        stopWith(msg::make("accuracy.run.aborted"), false);
+        stopWith(motion::msg::make("accuracy.run.aborted"), false);
 }
 
-void AccuracyRunner::stopWith(const msg::Message& why, bool stopAxes)
+void AccuracyRunner::stopWith(const motion::msg::Message& why, bool stopAxes)
 {
     ++m_generation;  // every callback in flight is now stale
     m_poll.stop();
@@ -224,7 +224,7 @@ void AccuracyRunner::onMoveAccepted(const std::optional<dev::RequestError>& erro
     if (generation != m_generation || !isActive())
         return;
     if (error) {
-        stopWith(msg::make("accuracy.run.move_refused", {msg::nested("detail", error->message)}), false);
+        stopWith(motion::msg::make("accuracy.run.move_refused", {motion::msg::nested("detail", error->message)}), false);
         return;
     }
     m_moveAccepted = true;
@@ -236,26 +236,26 @@ void AccuracyRunner::onEvent(const dev::DeviceEvent& e)
 {
     if (!isActive())
         return;
-    if (e.kind == proto::EventKind::EStop) {
-        stopWith(msg::make("accuracy.run.estop"), false);
+    if (e.kind == dev::proto::EventKind::EStop) {
+        stopWith(motion::msg::make("accuracy.run.estop"), false);
         return;
     }
     const bool ours = e.axis >= 0 && (axisMask() & (1u << e.axis));
     if (!ours || m_phase == Phase::None || m_phase == Phase::Settling || m_phase == Phase::Reading)
         return;
-    if (e.kind == proto::EventKind::MotionDone) {
+    if (e.kind == dev::proto::EventKind::MotionDone) {
         m_waitingAxes &= ~(1u << e.axis);
         m_motionDoneUs = std::max<quint64>(m_motionDoneUs, e.deviceTimeUs);
         if (m_waitingAxes == 0 && m_moveAccepted)
             onMoveDone();
         return;
     }
-    if (e.kind == proto::EventKind::Stopped || e.kind == proto::EventKind::LimitHit || e.kind == proto::EventKind::Fault
-        || e.kind == proto::EventKind::LostSteps) {
+    if (e.kind == dev::proto::EventKind::Stopped || e.kind == dev::proto::EventKind::LimitHit || e.kind == dev::proto::EventKind::Fault
+        || e.kind == dev::proto::EventKind::LostSteps) {
         const QString letter = e.axis < m_instrument->identity().axes.size() ? QString(m_instrument->identity().axes[e.axis].letter) : QString();
-        stopWith(msg::make("accuracy.run.axis_stopped", {msg::verbatim("axis", letter.toStdString()),
-                                                         msg::term("event", proto::eventKindTerm(e.kind)), dev::eventDetail(e)}),
-                 e.kind == proto::EventKind::LostSteps);
+        stopWith(motion::msg::make("accuracy.run.axis_stopped", {motion::msg::verbatim("axis", letter.toStdString()),
+                                                         motion::msg::term("event", dev::proto::eventKindTerm(e.kind)), dev::eventDetail(e)}),
+                 e.kind == dev::proto::EventKind::LostSteps);
     }
 }
 
@@ -283,7 +283,7 @@ void AccuracyRunner::pollSettle()
         if (!self || generation != self->m_generation || !self->isActive())
             return;
         if (e) {
-            self->stopWith(msg::make("accuracy.run.status_failed", {msg::nested("detail", e->message)}), false);
+            self->stopWith(motion::msg::make("accuracy.run.status_failed", {motion::msg::nested("detail", e->message)}), false);
             return;
         }
         self->onStatus(s);
@@ -299,7 +299,7 @@ void AccuracyRunner::onStatus(const dev::InstrumentStatus& s)
         m_haveSessionStart = true;
     }
     if (s.estop) {
-        stopWith(msg::make("accuracy.run.estop"), false);
+        stopWith(motion::msg::make("accuracy.run.estop"), false);
         return;
     }
     const motion::metrology::SettleRule& rule = settleOf(m_test);
@@ -376,15 +376,15 @@ void AccuracyRunner::onReading(const TakeResult& r, bool settled, quint64 device
     }
     const std::size_t k = m_entries.size();
     const PlannedStop& s = m_stops[k];
-    accuracyfiles::RunLogEntry e;
+    dev::files::accuracy::RunLogEntry e;
     e.stop = static_cast<int>(k);
     e.cycle = s.cycle;
     e.direction = s.direction;
     e.targetMm = s.targetMm;
     if (!r.deferred) {
         if (r.valuesMm.size() != s.targetMm.size()) {
-            stopWith(msg::make("accuracy.run.reading_incomplete", {msg::integer("count", static_cast<long long>(r.valuesMm.size())),
-                                                                   msg::integer("expected", static_cast<long long>(s.targetMm.size()))}),
+            stopWith(motion::msg::make("accuracy.run.reading_incomplete", {motion::msg::integer("count", static_cast<long long>(r.valuesMm.size())),
+                                                                   motion::msg::integer("expected", static_cast<long long>(s.targetMm.size()))}),
                      false);
             return;
         }
@@ -450,4 +450,4 @@ double AccuracyRunner::etaS() const
     return left;
 }
 
-} // namespace jobs
+} // namespace dev::jobs

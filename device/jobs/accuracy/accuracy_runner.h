@@ -12,7 +12,7 @@
 // log; an interferometer's run writes its target sequence for the import instead.
 //
 // Like the scan runner it needs nothing but moves, events and status readings, so it
-// runs on any dev::Instrument. Everything it has to tell a person is a msg::Message
+// runs on any dev::Instrument. Everything it has to tell a person is a motion::msg::Message
 // (ids accuracy.run.*, docs/accuracy.md).
 #include "device/client/instrument.h"
 #include "device/files/accuracy/accuracy_run_log.h"
@@ -31,7 +31,7 @@
 #include <optional>
 #include <vector>
 
-namespace jobs {
+namespace dev::jobs {
 
 /// One stop as the runner visits it.
 struct PlannedStop {
@@ -57,11 +57,11 @@ public:
     /// speed) and the source against the test. A run log in the folder of the same test
     /// and source is continued; another's is refused unless `restart`, which keeps it
     /// aside under another name. Problems: paths of the test's fields, or "" for the run.
-    bool prepare(const accuracyfiles::AccuracyTest& test, ReadingSource* source, const QString& folder, bool restart,
-                 msg::Problems* problems);
+    bool prepare(const dev::files::accuracy::AccuracyTest& test, ReadingSource* source, const QString& folder, bool restart,
+                 motion::msg::Problems* problems);
     /// Starts, or continues after a pause or a stop, at the first stop not yet read.
     /// Refused (why) when not prepared, not connected, an axis not homed, E-stop.
-    bool start(msg::Message* why = nullptr);
+    bool start(motion::msg::Message* why = nullptr);
     void pause();
     void abort();
 
@@ -70,7 +70,7 @@ public:
     bool isXy() const { return m_xy; }
     QString axisNames() const;                    ///< "X", or "XY"
     const std::vector<PlannedStop>& stops() const { return m_stops; }
-    const std::vector<accuracyfiles::RunLogEntry>& entries() const { return m_entries; }
+    const std::vector<dev::files::accuracy::RunLogEntry>& entries() const { return m_entries; }
     int readingsTaken() const { return static_cast<int>(m_entries.size()); }
     int totalReadings() const { return static_cast<int>(m_stops.size()); }
     /// The stop being worked on, or −1.
@@ -78,7 +78,7 @@ public:
     /// Device seconds left: the estimate of the stops not read, at this run's pace.
     double etaS() const;
     ReadingSource* source() const { return m_source; }
-    const accuracyfiles::AccuracyTest& test() const { return m_test; }
+    const dev::files::accuracy::AccuracyTest& test() const { return m_test; }
 
     /// The axis test's readings so far (an interferometer's: none until the import).
     std::vector<motion::metrology::Reading> readings() const;
@@ -88,7 +88,7 @@ public:
     motion::metrology::Evaluation evaluation() const;
     motion::metrology::XyEvaluation xyEvaluation() const;
     /// The run's stops with the times they were read, as the interferometer import needs them.
-    std::vector<accuracyfiles::SequenceStop> sequence() const;
+    std::vector<dev::files::accuracy::SequenceStop> sequence() const;
 
     QString folder() const { return m_folder; }
     QString logPath() const;
@@ -101,13 +101,13 @@ public:
     static const char* stateName(State s);
 
 signals:
-    void stateChanged(jobs::AccuracyRunner::State state);
+    void stateChanged(dev::jobs::AccuracyRunner::State state);
     void progress(int taken, int total, double etaS);
     /// The axes are on their way to (or settling at) a stop.
     void stopStarted(int stop);
     void readingTaken(int stop);
     /// Why the run stopped or would not start.
-    void problem(const msg::Message& message);
+    void problem(const motion::msg::Message& message);
     /// Every stop read; `files` are the results written.
     void finished(const QStringList& files);
 
@@ -124,24 +124,24 @@ private:
     void onStatus(const dev::InstrumentStatus& s);
     void takeReading(bool settled);
     void onReading(const TakeResult& r, bool settled, quint64 deviceTimeUs);
-    void stopWith(const msg::Message& why, bool stopAxes);
-    bool openLog(bool restart, msg::Problems* problems);
-    bool appendLog(const accuracyfiles::RunLogEntry& e);
+    void stopWith(const motion::msg::Message& why, bool stopAxes);
+    bool openLog(bool restart, motion::msg::Problems* problems);
+    bool appendLog(const dev::files::accuracy::RunLogEntry& e);
     void finish();
     void writeResults();
     double estimateStopS(std::size_t k, bool fromHere) const;
     quint8 axisMask() const;
 
     QPointer<dev::Instrument> m_instrument;
-    accuracyfiles::AccuracyTest m_test;
+    dev::files::accuracy::AccuracyTest m_test;
     bool m_xy = false;
     std::vector<int> m_axes;                  ///< instrument axis indices read
     std::vector<PlannedStop> m_stops;
-    std::vector<accuracyfiles::RunLogEntry> m_entries;
+    std::vector<dev::files::accuracy::RunLogEntry> m_entries;
     QPointer<ReadingSource> m_source;
     QString m_folder;
     QFile m_log;
-    accuracyfiles::RunLogHeader m_header;
+    dev::files::accuracy::RunLogHeader m_header;
     bool m_prepared = false;
     QStringList m_results;
 
@@ -170,6 +170,6 @@ private:
     QList<QMetaObject::Connection> m_connections;
 };
 
-} // namespace jobs
+} // namespace dev::jobs
 
-Q_DECLARE_METATYPE(jobs::AccuracyRunner::State)
+Q_DECLARE_METATYPE(dev::jobs::AccuracyRunner::State)

@@ -14,16 +14,16 @@
 
 #include <cmath>
 
-namespace jobs {
+namespace dev::jobs {
 
 using motion::metrology::AxisTest;
 using motion::metrology::Direction;
-using msg::Problems;
+using motion::msg::Problems;
 using motion::metrology::XyLineTest;
 
 namespace {
 
-void add(Problems* out, msg::Message m, std::string path = {})
+void add(Problems* out, motion::msg::Message m, std::string path = {})
 {
     if (out)
         out->push_back({std::move(path), std::move(m)});
@@ -54,18 +54,18 @@ motion::metrology::AxisLimits limitsOf(const dev::Instrument& inst, int axis)
 
 } // namespace
 
-bool AccuracyRunner::prepare(const accuracyfiles::AccuracyTest& test, ReadingSource* source, const QString& folder, bool restart,
+bool AccuracyRunner::prepare(const dev::files::accuracy::AccuracyTest& test, ReadingSource* source, const QString& folder, bool restart,
                              Problems* problems)
 {
     if (problems)
         problems->clear();
     if (isActive()) {
-        add(problems, msg::make("accuracy.run.busy"));
+        add(problems, motion::msg::make("accuracy.run.busy"));
         return false;
     }
     m_prepared = false;
     if (!m_instrument || !m_instrument->isReady()) {
-        add(problems, msg::make("accuracy.run.not_connected"));
+        add(problems, motion::msg::make("accuracy.run.not_connected"));
         return false;
     }
     const dev::DeviceIdentity& id = m_instrument->identity();
@@ -78,12 +78,12 @@ bool AccuracyRunner::prepare(const accuracyfiles::AccuracyTest& test, ReadingSou
     if (const auto* a = std::get_if<AxisTest>(&test)) {
         const int i = axisOf(a->axis);
         if (i < 0) {
-            add(problems, msg::make("accuracy.run.no_such_axis", {msg::verbatim("axis", a->axis)}), "axis");
+            add(problems, motion::msg::make("accuracy.run.no_such_axis", {motion::msg::verbatim("axis", a->axis)}), "axis");
             return false;
         }
         axes = {i};
         found = motion::metrology::validate(*a, limitsOf(*m_instrument, i));
-        if (!msg::hasErrors(found))
+        if (!motion::msg::hasErrors(found))
             for (const auto& s : motion::metrology::runSequence(*a)) {
                 PlannedStop p;
                 p.cycle = s.cycle;
@@ -99,7 +99,7 @@ bool AccuracyRunner::prepare(const accuracyfiles::AccuracyTest& test, ReadingSou
     } else if (const auto* x = std::get_if<XyLineTest>(&test)) {
         const int ix = axisOf("X"), iy = axisOf("Y");
         if (ix < 0 || iy < 0) {
-            add(problems, msg::make("accuracy.run.no_such_axis", {msg::verbatim("axis", ix < 0 ? "X" : "Y")}));
+            add(problems, motion::msg::make("accuracy.run.no_such_axis", {motion::msg::verbatim("axis", ix < 0 ? "X" : "Y")}));
             return false;
         }
         axes = {ix, iy};
@@ -109,7 +109,7 @@ bool AccuracyRunner::prepare(const accuracyfiles::AccuracyTest& test, ReadingSou
         if (lim.x.maxFeedMmS && lim.y.maxFeedMmS)
             lim.maxFeedMmS = std::min(*lim.x.maxFeedMmS, *lim.y.maxFeedMmS);
         found = motion::metrology::validate(*x, lim);
-        if (!msg::hasErrors(found)) {
+        if (!motion::msg::hasErrors(found)) {
             std::vector<double> previous;
             for (const auto& s : motion::metrology::runSequence(*x)) {
                 PlannedStop p;
@@ -127,25 +127,25 @@ bool AccuracyRunner::prepare(const accuracyfiles::AccuracyTest& test, ReadingSou
         }
         m_xy = true;
     } else {
-        add(problems, msg::make("accuracy.run.circle_elsewhere"));
+        add(problems, motion::msg::make("accuracy.run.circle_elsewhere"));
         return false;
     }
     if (problems)
         problems->insert(problems->end(), found.begin(), found.end());
-    if (msg::hasErrors(found) || stops.empty())
+    if (motion::msg::hasErrors(found) || stops.empty())
         return false;
     if (!source) {
-        add(problems, msg::make("accuracy.run.no_source"));
+        add(problems, motion::msg::make("accuracy.run.no_source"));
         return false;
     }
     if (source->maxAxes() < static_cast<int>(axes.size())) {
-        add(problems, msg::make("accuracy.run.source_axes", {msg::term("source", readingKindTerm(source->kind())),
-                                                             msg::integer("count", static_cast<long long>(axes.size())),
-                                                             msg::integer("max", source->maxAxes())}));
+        add(problems, motion::msg::make("accuracy.run.source_axes", {motion::msg::term("source", readingKindTerm(source->kind())),
+                                                             motion::msg::integer("count", static_cast<long long>(axes.size())),
+                                                             motion::msg::integer("max", source->maxAxes())}));
         return false;
     }
     if (!QDir().mkpath(folder)) {
-        add(problems, msg::make("accuracy.run.folder_failed", {msg::verbatim("folder", folder.toStdString())}));
+        add(problems, motion::msg::make("accuracy.run.folder_failed", {motion::msg::verbatim("folder", folder.toStdString())}));
         return false;
     }
     m_test = test;
@@ -154,11 +154,11 @@ bool AccuracyRunner::prepare(const accuracyfiles::AccuracyTest& test, ReadingSou
     m_source = source;
     m_folder = folder;
     m_results.clear();
-    const std::string json = accuracyfiles::accuracyTestToJson(test);
+    const std::string json = dev::files::accuracy::accuracyTestToJson(test);
     m_header = {};
     m_header.test = std::visit([](const auto& t) { return t.name; }, test);
     m_header.kind = m_xy ? "xy-line" : "axis";
-    m_header.fingerprint = accuracyfiles::fingerprintOf(json + "\nsource=" + readingKindName(source->kind()));
+    m_header.fingerprint = dev::files::accuracy::fingerprintOf(json + "\nsource=" + readingKindName(source->kind()));
     m_header.stops = static_cast<int>(m_stops.size());
     m_header.source = readingKindName(source->kind());
     if (!openLog(restart, problems))
@@ -169,7 +169,7 @@ bool AccuracyRunner::prepare(const accuracyfiles::AccuracyTest& test, ReadingSou
     return true;
 }
 
-QString AccuracyRunner::logPath() const { return QDir(m_folder).filePath(QLatin1String(accuracyfiles::kRunLogFile)); }
+QString AccuracyRunner::logPath() const { return QDir(m_folder).filePath(QLatin1String(dev::files::accuracy::kRunLogFile)); }
 
 QString AccuracyRunner::basePath() const
 {
@@ -184,23 +184,23 @@ bool AccuracyRunner::openLog(bool restart, Problems* problems)
     const QString path = logPath();
     if (QFileInfo::exists(path)) {
         std::string text;
-        msg::Message error;
-        if (!files::readText(path, &text, &error)) {
-            add(problems, msg::make("accuracy.run.log_unreadable", {msg::verbatim("file", path.toStdString()), msg::integer("line", 0),
-                                                                    msg::nested("detail", error)}));
+        motion::msg::Message error;
+        if (!dev::files::readText(path, &text, &error)) {
+            add(problems, motion::msg::make("accuracy.run.log_unreadable", {motion::msg::verbatim("file", path.toStdString()), motion::msg::integer("line", 0),
+                                                                    motion::msg::nested("detail", error)}));
             return false;
         }
-        const auto read = accuracyfiles::parseRunLog(text);
+        const auto read = dev::files::accuracy::parseRunLog(text);
         const bool same = read.log && read.log->header.fingerprint == m_header.fingerprint && read.log->header.stops == m_header.stops;
         if (!same && !restart) {
             if (!read.log) {
                 const auto& p = read.problems.list().front();
-                add(problems, msg::make("accuracy.run.log_unreadable", {msg::verbatim("file", path.toStdString()),
-                                                                        msg::integer("line", p.line),
-                                                                        msg::nested("detail", p.message)}));
+                add(problems, motion::msg::make("accuracy.run.log_unreadable", {motion::msg::verbatim("file", path.toStdString()),
+                                                                        motion::msg::integer("line", p.line),
+                                                                        motion::msg::nested("detail", p.message)}));
             } else {
-                add(problems, msg::make("accuracy.run.other_log", {msg::verbatim("file", path.toStdString()),
-                                                                   msg::verbatim("test", read.log->header.test)}));
+                add(problems, motion::msg::make("accuracy.run.other_log", {motion::msg::verbatim("file", path.toStdString()),
+                                                                   motion::msg::verbatim("test", read.log->header.test)}));
             }
             return false;
         }
@@ -213,8 +213,8 @@ bool AccuracyRunner::openLog(bool restart, Problems* problems)
                 if (QFileInfo::exists(aside))
                     continue;
                 if (!QFile::rename(path, aside)) {
-                    add(problems, msg::make("accuracy.run.log_not_kept_aside", {msg::verbatim("file", path.toStdString()),
-                                                                                msg::verbatim("aside", aside.toStdString())}));
+                    add(problems, motion::msg::make("accuracy.run.log_not_kept_aside", {motion::msg::verbatim("file", path.toStdString()),
+                                                                                motion::msg::verbatim("aside", aside.toStdString())}));
                     return false;
                 }
                 break;
@@ -224,15 +224,15 @@ bool AccuracyRunner::openLog(bool restart, Problems* problems)
     m_log.setFileName(path);
     const bool fresh = !QFileInfo::exists(path);
     if (!m_log.open(QIODevice::Append | QIODevice::WriteOnly)) {
-        add(problems, msg::make("accuracy.run.log_write_failed", {msg::verbatim("file", path.toStdString()),
-                                                                  msg::verbatim("detail", m_log.errorString().toStdString())}));
+        add(problems, motion::msg::make("accuracy.run.log_write_failed", {motion::msg::verbatim("file", path.toStdString()),
+                                                                  motion::msg::verbatim("detail", m_log.errorString().toStdString())}));
         return false;
     }
     if (fresh) {
-        const std::string h = accuracyfiles::runLogHeader(m_header);
+        const std::string h = dev::files::accuracy::runLogHeader(m_header);
         if (m_log.write(h.data(), static_cast<qint64>(h.size())) != static_cast<qint64>(h.size()) || !m_log.flush()) {
-            add(problems, msg::make("accuracy.run.log_write_failed", {msg::verbatim("file", path.toStdString()),
-                                                                      msg::verbatim("detail", m_log.errorString().toStdString())}));
+            add(problems, motion::msg::make("accuracy.run.log_write_failed", {motion::msg::verbatim("file", path.toStdString()),
+                                                                      motion::msg::verbatim("detail", m_log.errorString().toStdString())}));
             return false;
         }
     } else if (!m_entries.empty()) {
@@ -245,12 +245,12 @@ bool AccuracyRunner::openLog(bool restart, Problems* problems)
     return true;
 }
 
-bool AccuracyRunner::appendLog(const accuracyfiles::RunLogEntry& e)
+bool AccuracyRunner::appendLog(const dev::files::accuracy::RunLogEntry& e)
 {
-    const std::string line = accuracyfiles::runLogLine(e);
+    const std::string line = dev::files::accuracy::runLogLine(e);
     if (m_log.write(line.data(), static_cast<qint64>(line.size())) != static_cast<qint64>(line.size()) || !m_log.flush()) {
-        stopWith(msg::make("accuracy.run.log_write_failed", {msg::verbatim("file", logPath().toStdString()),
-                                                             msg::verbatim("detail", m_log.errorString().toStdString())}),
+        stopWith(motion::msg::make("accuracy.run.log_write_failed", {motion::msg::verbatim("file", logPath().toStdString()),
+                                                             motion::msg::verbatim("detail", m_log.errorString().toStdString())}),
                  false);
         return false;
     }
@@ -295,11 +295,11 @@ motion::metrology::XyEvaluation AccuracyRunner::xyEvaluation() const
     return motion::metrology::evaluate(motion::metrology::pointsOf(*x), xyReadings());
 }
 
-std::vector<accuracyfiles::SequenceStop> AccuracyRunner::sequence() const
+std::vector<dev::files::accuracy::SequenceStop> AccuracyRunner::sequence() const
 {
-    std::vector<accuracyfiles::SequenceStop> out;
+    std::vector<dev::files::accuracy::SequenceStop> out;
     for (const auto& e : m_entries) {
-        accuracyfiles::SequenceStop s;
+        dev::files::accuracy::SequenceStop s;
         s.index = e.stop + 1;
         s.targetMm = e.targetMm.empty() ? 0 : e.targetMm[0];
         s.direction = e.direction;
@@ -324,9 +324,9 @@ void AccuracyRunner::writeResults()
 {
     m_results.clear();
     const QString base = basePath();
-    msg::Message error;
+    motion::msg::Message error;
     auto failed = [&](const QString& file) {
-        emit problem(msg::make("accuracy.run.results_failed", {msg::verbatim("file", file.toStdString()), msg::nested("detail", error)}));
+        emit problem(motion::msg::make("accuracy.run.results_failed", {motion::msg::verbatim("file", file.toStdString()), motion::msg::nested("detail", error)}));
     };
     const QString created = QDateTime::currentDateTimeUtc().toString(Qt::ISODate);
     const std::string reference = m_source ? readingKindName(m_source->kind()) : "";
@@ -334,7 +334,7 @@ void AccuracyRunner::writeResults()
     // and a record of when each stop was read for the others.
     const QString targets = base + QStringLiteral(".targets.csv");
     if (!m_xy) {
-        if (accuracyfiles::saveTargetSequence(targets, sequence(), &error))
+        if (dev::files::accuracy::saveTargetSequence(targets, sequence(), &error))
             m_results << targets;
         else
             failed(targets);
@@ -345,13 +345,13 @@ void AccuracyRunner::writeResults()
                          const motion::metrology::Evaluation& evaluation, const std::string& axis,
                          const motion::metrology::AxisTolerances& tolerances) {
         const QString csv = stem + QStringLiteral(".readings.csv");
-        if (accuracyfiles::saveReadingsCsv(csv, readings, &error))
+        if (dev::files::accuracy::saveReadingsCsv(csv, readings, &error))
             m_results << csv;
         else
             failed(csv);
         if (!evaluation.ok())
             return;
-        accuracyfiles::AccuracyResult r;
+        dev::files::accuracy::AccuracyResult r;
         r.axis = axis;
         r.evaluation = evaluation;
         r.tolerances = tolerances;
@@ -359,7 +359,7 @@ void AccuracyRunner::writeResults()
         r.readingsFile = QFileInfo(csv).fileName().toStdString();
         r.createdUtc = created.toStdString();
         const QString json = stem + QStringLiteral(".accuracy-result.json");
-        if (accuracyfiles::saveAccuracyResultFile(json, r, &error))
+        if (dev::files::accuracy::saveAccuracyResultFile(json, r, &error))
             m_results << json;
         else
             failed(json);
@@ -386,4 +386,4 @@ void AccuracyRunner::writeResults()
     writeAxis(base + QStringLiteral("-contour"), rc, e.contour, "C", x->contourTolerances);
 }
 
-} // namespace jobs
+} // namespace dev::jobs

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace jobs {
+namespace dev::jobs {
 
 using motion::metrology::Rotation;
 using motion::path::Segment;
@@ -25,7 +25,7 @@ double wrap(double a)
 
 CircleRunner::CircleRunner(dev::Instrument* instrument, QObject* parent) : QObject(parent), m_instrument(instrument)
 {
-    qRegisterMetaType<jobs::CircleRunner::State>();
+    qRegisterMetaType<dev::jobs::CircleRunner::State>();
     m_poll.setSingleShot(true);
     connect(&m_poll, &QTimer::timeout, this, &CircleRunner::poll);
     if (!instrument)
@@ -33,24 +33,24 @@ CircleRunner::CircleRunner(dev::Instrument* instrument, QObject* parent) : QObje
     m_connections << connect(instrument, &dev::Instrument::eventReceived, this, [this](const dev::DeviceEvent& e) {
         if (!isActive())
             return;
-        if (e.kind == proto::EventKind::EStop) {
-            stopWith(msg::make("accuracy.run.estop"));
+        if (e.kind == dev::proto::EventKind::EStop) {
+            stopWith(motion::msg::make("accuracy.run.estop"));
             return;
         }
         if (m_phase != Phase::ToStart || (e.axis != m_axisX && e.axis != m_axisY))
             return;
-        if (e.kind == proto::EventKind::MotionDone) {
+        if (e.kind == dev::proto::EventKind::MotionDone) {
             m_waitingAxes &= ~(1u << e.axis);
             if (m_waitingAxes == 0 && m_moveAccepted)
                 nextRun();
-        } else if (e.kind == proto::EventKind::Stopped || e.kind == proto::EventKind::LimitHit || e.kind == proto::EventKind::Fault) {
-            stopWith(msg::make("accuracy.run.axis_stopped", {msg::verbatim("axis", e.axis == m_axisX ? "X" : "Y"),
-                                                             msg::term("event", proto::eventKindTerm(e.kind)), dev::eventDetail(e)}));
+        } else if (e.kind == dev::proto::EventKind::Stopped || e.kind == dev::proto::EventKind::LimitHit || e.kind == dev::proto::EventKind::Fault) {
+            stopWith(motion::msg::make("accuracy.run.axis_stopped", {motion::msg::verbatim("axis", e.axis == m_axisX ? "X" : "Y"),
+                                                             motion::msg::term("event", dev::proto::eventKindTerm(e.kind)), dev::eventDetail(e)}));
         }
     });
     m_connections << connect(instrument, &dev::Instrument::stateChanged, this, [this](dev::LinkState s) {
         if (isActive() && s != dev::LinkState::Ready)
-            stopWith(msg::make("accuracy.run.link_lost"));
+            stopWith(motion::msg::make("accuracy.run.link_lost"));
     });
     m_connections << connect(instrument, &dev::Instrument::statusChanged, this, [this](const dev::InstrumentStatus& s) {
         if (!isActive() || m_phase != Phase::ToStart || !m_moveAccepted || m_waitingAxes == 0 || !m_arrival.feed(s))
@@ -76,28 +76,28 @@ void CircleRunner::setState(State s)
     emit stateChanged(s);
 }
 
-bool CircleRunner::prepare(const motion::metrology::CircularTest& test, msg::Problems* problems)
+bool CircleRunner::prepare(const motion::metrology::CircularTest& test, motion::msg::Problems* problems)
 {
     if (problems)
         problems->clear();
-    auto refuse = [&](msg::Message m) {
+    auto refuse = [&](motion::msg::Message m) {
         if (problems)
             problems->push_back({"", std::move(m)});
         return false;
     };
     if (isActive())
-        return refuse(msg::make("accuracy.run.busy"));
+        return refuse(motion::msg::make("accuracy.run.busy"));
     m_prepared = false;
     if (!m_instrument || !m_instrument->isReady())
-        return refuse(msg::make("accuracy.run.not_connected"));
+        return refuse(motion::msg::make("accuracy.run.not_connected"));
     if (!m_instrument->can(dev::Capability::PathQueue))
         return refuse(m_instrument->whyNot(dev::Capability::PathQueue));
     const auto& id = m_instrument->identity();
     if (test.axes.size() != 2)
-        return refuse(msg::make("accuracy.circle.axes_invalid", {msg::verbatim("axes", test.axes)}));
+        return refuse(motion::msg::make("accuracy.circle.axes_invalid", {motion::msg::verbatim("axes", test.axes)}));
     const int ax = id.axisIndex(QChar::fromLatin1(test.axes[0])), ay = id.axisIndex(QChar::fromLatin1(test.axes[1]));
     if (ax < 0 || ay < 0 || test.axes != "XY")
-        return refuse(msg::make("accuracy.run.no_such_axis", {msg::verbatim("axis", test.axes)}));
+        return refuse(motion::msg::make("accuracy.run.no_such_axis", {motion::msg::verbatim("axis", test.axes)}));
     motion::metrology::XyLimits lim;
     auto limitsOf = [&](int i) {
         motion::metrology::AxisLimits l;
@@ -115,7 +115,7 @@ bool CircleRunner::prepare(const motion::metrology::CircularTest& test, msg::Pro
     const auto found = motion::metrology::validate(test, lim);
     if (problems)
         problems->insert(problems->end(), found.begin(), found.end());
-    if (msg::hasErrors(found))
+    if (motion::msg::hasErrors(found))
         return false;
     m_test = test;
     m_axisX = ax;
@@ -132,28 +132,28 @@ bool CircleRunner::prepare(const motion::metrology::CircularTest& test, msg::Pro
     return true;
 }
 
-bool CircleRunner::start(msg::Message* why)
+bool CircleRunner::start(motion::msg::Message* why)
 {
-    auto refuse = [&](msg::Message m) {
+    auto refuse = [&](motion::msg::Message m) {
         if (why)
             *why = m;
         emit problem(m);
         return false;
     };
     if (!m_prepared)
-        return refuse(msg::make("accuracy.run.not_prepared"));
+        return refuse(motion::msg::make("accuracy.run.not_prepared"));
     if (isActive())
-        return refuse(msg::make("accuracy.run.busy"));
+        return refuse(motion::msg::make("accuracy.run.busy"));
     if (m_runs.size() >= m_rotations.size())
-        return refuse(msg::make("accuracy.run.finished_already"));
+        return refuse(motion::msg::make("accuracy.run.finished_already"));
     if (!m_instrument || !m_instrument->isReady())
-        return refuse(msg::make("accuracy.run.not_connected"));
+        return refuse(motion::msg::make("accuracy.run.not_connected"));
     const auto& st = m_instrument->status();
     if (st.estop)
-        return refuse(msg::make("accuracy.run.estop"));
+        return refuse(motion::msg::make("accuracy.run.estop"));
     for (int a : {m_axisX, m_axisY})
         if (a >= st.axes.size() || !st.axes[a].homed)
-            return refuse(msg::make("accuracy.run.not_homed", {msg::verbatim("axis", a == m_axisX ? "X" : "Y")}));
+            return refuse(motion::msg::make("accuracy.run.not_homed", {motion::msg::verbatim("axis", a == m_axisX ? "X" : "Y")}));
     m_paths = m_instrument->paths();  // fetched now: a backend switch replaces the part
     if (!m_paths)
         return refuse(m_instrument->whyNot(dev::Capability::PathQueue));
@@ -166,7 +166,7 @@ bool CircleRunner::start(msg::Message* why)
     });
     m_pathConnections << connect(m_paths, &dev::PathClient::aborted, this, [this](quint32, const QString& reason) {
         if (isActive() && m_phase == Phase::Path)
-            stopWith(msg::make("accuracy.run.path_aborted", {msg::verbatim("detail", reason.toStdString())}));
+            stopWith(motion::msg::make("accuracy.run.path_aborted", {motion::msg::verbatim("detail", reason.toStdString())}));
     });
     ++m_generation;
     setState(State::Running);
@@ -191,7 +191,7 @@ void CircleRunner::beginDirection()
                            if (!self || generation != self->m_generation || !self->isActive())
                                return;
                            if (e) {
-                               self->stopWith(msg::make("accuracy.run.move_refused", {msg::nested("detail", e->message)}));
+                               self->stopWith(motion::msg::make("accuracy.run.move_refused", {motion::msg::nested("detail", e->message)}));
                                return;
                            }
                            self->m_moveAccepted = true;
@@ -249,7 +249,7 @@ void CircleRunner::nextRun()
         if (!self || generation != self->m_generation || !self->isActive())
             return;
         if (e) {
-            self->stopWith(msg::make("accuracy.run.move_refused", {msg::nested("detail", e->message)}));
+            self->stopWith(motion::msg::make("accuracy.run.move_refused", {motion::msg::nested("detail", e->message)}));
             return;
         }
         self->m_paths->append(0, path, true, true, [self, generation](const std::optional<dev::RequestError>& e2, const dev::PathQueueState&) {
@@ -264,7 +264,7 @@ void CircleRunner::onPathAppended(const std::optional<dev::RequestError>& e, qui
     if (generation != m_generation || !isActive())
         return;
     if (e) {
-        stopWith(msg::make("accuracy.run.move_refused", {msg::nested("detail", e->message)}));
+        stopWith(motion::msg::make("accuracy.run.move_refused", {motion::msg::nested("detail", e->message)}));
         return;
     }
     poll();
@@ -280,7 +280,7 @@ void CircleRunner::poll()
         if (!self || generation != self->m_generation || !self->isActive())
             return;
         if (e) {
-            self->stopWith(msg::make("accuracy.run.status_failed", {msg::nested("detail", e->message)}));
+            self->stopWith(motion::msg::make("accuracy.run.status_failed", {motion::msg::nested("detail", e->message)}));
             return;
         }
         const bool telemetry = self->telemetryComing();
@@ -364,7 +364,7 @@ void CircleRunner::abort()
     if (!isActive() && m_state != State::Paused)
         return;
     const bool moving = isActive();
-    stopWith(msg::make("accuracy.run.aborted"));
+    stopWith(motion::msg::make("accuracy.run.aborted"));
     if (moving && m_instrument && m_instrument->isReady()) {
         if (m_paths)
             m_paths->clear();
@@ -372,7 +372,7 @@ void CircleRunner::abort()
     }
 }
 
-void CircleRunner::stopWith(const msg::Message& why)
+void CircleRunner::stopWith(const motion::msg::Message& why)
 {
     ++m_generation;
     m_poll.stop();
@@ -396,4 +396,4 @@ double CircleRunner::etaS() const
     return left * (revolutionS() + 1.0);
 }
 
-} // namespace jobs
+} // namespace dev::jobs

@@ -25,7 +25,7 @@
 #include <optional>
 #include <vector>
 
-namespace jobs {
+namespace dev::jobs {
 
 class CircleRunner : public QObject {
     Q_OBJECT
@@ -37,9 +37,9 @@ public:
 
     /// Checks the test against the instrument: X and Y, the soft limits, the feed, a path
     /// queue (Capability::PathQueue, with its reason when missing).
-    bool prepare(const motion::metrology::CircularTest& test, msg::Problems* problems);
+    bool prepare(const motion::metrology::CircularTest& test, motion::msg::Problems* problems);
     /// Starts, or after a pause or stop runs the directions not yet done.
-    bool start(msg::Message* why = nullptr);
+    bool start(motion::msg::Message* why = nullptr);
     void pause();
     void abort();
 
@@ -70,12 +70,12 @@ public:
     static constexpr int kTelemetryStaleMs = 150;
 
 signals:
-    void stateChanged(jobs::CircleRunner::State state);
+    void stateChanged(dev::jobs::CircleRunner::State state);
     /// `fraction`: of the whole test.
     void progress(double fraction, double etaS);
     void sampled(double xMm, double yMm);
     void runDone(int index);
-    void problem(const msg::Message& message);
+    void problem(const motion::msg::Message& message);
     void finished();
 
 private:
@@ -89,7 +89,7 @@ private:
     void takeSample(double xMm, double yMm);
     bool telemetryComing() const;
     void endRun();
-    void stopWith(const msg::Message& why);
+    void stopWith(const motion::msg::Message& why);
     std::vector<motion::path::Segment> pathFor(motion::metrology::Rotation r) const;
     motion::path::Vec2 pointAt(double angleRad) const;
     double revolutionS() const;
@@ -120,6 +120,6 @@ private:
     QList<QMetaObject::Connection> m_pathConnections;
 };
 
-} // namespace jobs
+} // namespace dev::jobs
 
-Q_DECLARE_METATYPE(jobs::CircleRunner::State)
+Q_DECLARE_METATYPE(dev::jobs::CircleRunner::State)

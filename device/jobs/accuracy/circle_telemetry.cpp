@@ -1,14 +1,14 @@
 #include "device/jobs/accuracy/circle_telemetry.h"
 
-namespace jobs {
+namespace dev::jobs {
 
-QVector<proto::ChannelRef> circleChannels(const CircleRunner& runner)
+QVector<dev::proto::ChannelRef> circleChannels(const CircleRunner& runner)
 {
-    return {{static_cast<std::uint8_t>(runner.axisX()), proto::ChannelKind::Measured},
-            {static_cast<std::uint8_t>(runner.axisY()), proto::ChannelKind::Measured}};
+    return {{static_cast<std::uint8_t>(runner.axisX()), dev::proto::ChannelKind::Measured},
+            {static_cast<std::uint8_t>(runner.axisY()), dev::proto::ChannelKind::Measured}};
 }
 
-int feedCircleBatch(CircleRunner& runner, const dev::Instrument& client, const proto::TelemetryBatch& batch)
+int feedCircleBatch(CircleRunner& runner, const dev::Instrument& client, const dev::proto::TelemetryBatch& batch)
 {
     const auto wanted = circleChannels(runner);
     int column[2] = {-1, -1};
@@ -25,4 +25,4 @@ int feedCircleBatch(CircleRunner& runner, const dev::Instrument& client, const p
     return static_cast<int>(batch.sampleCount);
 }
 
-} // namespace jobs
+} // namespace dev::jobs

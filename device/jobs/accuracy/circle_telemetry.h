@@ -4,15 +4,15 @@
 #include "device/client/instrument.h"
 #include "device/jobs/accuracy/circle_runner.h"
 
-namespace jobs {
+namespace dev::jobs {
 
 /// What a circular test asks of the telemetry (the CLI and the GUI alike): the history's
 /// 100 Hz puts some 40 samples on a 10 mm circle at 5 mm/s; a ballbar takes hundreds.
 constexpr int kCircleSampleRateHz = 250;
 
 /// The channels a circular test samples: measured X and Y of the runner's axes.
-QVector<proto::ChannelRef> circleChannels(const CircleRunner& runner);
+QVector<dev::proto::ChannelRef> circleChannels(const CircleRunner& runner);
 /// Hands every sample of the batch that carries both channels to the runner; returns how many.
-int feedCircleBatch(CircleRunner& runner, const dev::Instrument& client, const proto::TelemetryBatch& batch);
+int feedCircleBatch(CircleRunner& runner, const dev::Instrument& client, const dev::proto::TelemetryBatch& batch);
 
-} // namespace jobs
+} // namespace dev::jobs

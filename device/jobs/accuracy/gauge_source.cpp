@@ -1,13 +1,13 @@
 #include "device/jobs/accuracy/gauge_source.h"
 
-namespace jobs {
+namespace dev::jobs {
 
 GaugeSource::GaugeSource(dev::Transport* transport, const QString& port, QObject* parent)
     : ReadingSource(parent), m_transport(transport), m_link(new dev::GaugeLink(transport, port, this))
 {
 }
 
-msg::Message GaugeSource::describe() const { return msg::make("accuracy.source.gauge", {msg::verbatim("port", m_link->port().toStdString())}); }
+motion::msg::Message GaugeSource::describe() const { return motion::msg::make("accuracy.source.gauge", {motion::msg::verbatim("port", m_link->port().toStdString())}); }
 
 void GaugeSource::open(OpenDone done) { m_link->open(std::move(done)); }
 
@@ -16,10 +16,10 @@ void GaugeSource::close() { m_link->close(); }
 void GaugeSource::take(const StopContext& stop, TakeDone done)
 {
     if (stop.axes.size() != 1) {
-        done({{}, false, msg::make("accuracy.run.gauge_one_axis", {msg::verbatim("port", m_link->port().toStdString())})});
+        done({{}, false, motion::msg::make("accuracy.run.gauge_one_axis", {motion::msg::verbatim("port", m_link->port().toStdString())})});
         return;
     }
-    m_link->read([done](std::optional<double> valueMm, const msg::Message& problem) {
+    m_link->read([done](std::optional<double> valueMm, const motion::msg::Message& problem) {
         TakeResult r;
         if (valueMm)
             r.valuesMm.push_back(*valueMm);
@@ -31,4 +31,4 @@ void GaugeSource::take(const StopContext& stop, TakeDone done)
 
 void GaugeSource::cancel() { m_link->cancel(); }
 
-} // namespace jobs
+} // namespace dev::jobs

@@ -6,7 +6,7 @@
 #include "device/jobs/accuracy/reading_source.h"
 #include "device/link/gauge_link.h"
 
-namespace jobs {
+namespace dev::jobs {
 
 class GaugeSource : public ReadingSource {
     Q_OBJECT
@@ -16,7 +16,7 @@ public:
     GaugeSource(dev::Transport* transport, const QString& port, QObject* parent = nullptr);
 
     ReadingKind kind() const override { return ReadingKind::Gauge; }
-    msg::Message describe() const override;
+    motion::msg::Message describe() const override;
     void open(OpenDone done) override;
     void close() override;
     void take(const StopContext& stop, TakeDone done) override;
@@ -29,4 +29,4 @@ private:
     dev::GaugeLink* m_link;
 };
 
-} // namespace jobs
+} // namespace dev::jobs

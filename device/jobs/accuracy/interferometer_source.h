@@ -6,7 +6,7 @@
 // sequence for the operator to capture against.
 #include "device/jobs/accuracy/reading_source.h"
 
-namespace jobs {
+namespace dev::jobs {
 
 class InterferometerSource : public ReadingSource {
     Q_OBJECT
@@ -14,7 +14,7 @@ public:
     using ReadingSource::ReadingSource;
 
     ReadingKind kind() const override { return ReadingKind::Interferometer; }
-    msg::Message describe() const override { return msg::make("accuracy.source.interferometer"); }
+    motion::msg::Message describe() const override { return motion::msg::make("accuracy.source.interferometer"); }
     void take(const StopContext& stop, TakeDone done) override
     {
         (void)stop;
@@ -24,4 +24,4 @@ public:
     }
 };
 
-} // namespace jobs
+} // namespace dev::jobs

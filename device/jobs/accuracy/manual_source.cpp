@@ -3,7 +3,7 @@
 #include <cmath>
 #include <utility>
 
-namespace jobs {
+namespace dev::jobs {
 
 void ManualSource::take(const StopContext& stop, TakeDone done)
 {
@@ -38,4 +38,4 @@ bool ManualSource::provide(const std::vector<double>& valuesMm)
     return true;
 }
 
-} // namespace jobs
+} // namespace dev::jobs

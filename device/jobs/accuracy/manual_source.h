@@ -7,7 +7,7 @@
 
 #include <optional>
 
-namespace jobs {
+namespace dev::jobs {
 
 class ManualSource : public ReadingSource {
     Q_OBJECT
@@ -15,7 +15,7 @@ public:
     using ReadingSource::ReadingSource;
 
     ReadingKind kind() const override { return ReadingKind::Manual; }
-    msg::Message describe() const override { return msg::make("accuracy.source.manual"); }
+    motion::msg::Message describe() const override { return motion::msg::make("accuracy.source.manual"); }
     int maxAxes() const override { return 2; }
     void take(const StopContext& stop, TakeDone done) override;
     void cancel() override;
@@ -28,7 +28,7 @@ public:
 
 signals:
     /// A stop waits for its reading.
-    void entryWanted(const jobs::StopContext& stop);
+    void entryWanted(const dev::jobs::StopContext& stop);
     /// The wait ended (provided or cancelled).
     void entryDone();
 
@@ -37,4 +37,4 @@ private:
     TakeDone m_done;
 };
 
-} // namespace jobs
+} // namespace dev::jobs

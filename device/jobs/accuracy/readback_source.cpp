@@ -1,21 +1,21 @@
 #include "device/jobs/accuracy/readback_source.h"
 
-namespace jobs {
+namespace dev::jobs {
 
 ReadbackSource::ReadbackSource(dev::Instrument* instrument, QObject* parent) : ReadingSource(parent), m_instrument(instrument) {}
 
-msg::Message ReadbackSource::describe() const
+motion::msg::Message ReadbackSource::describe() const
 {
     if (!m_instrument)
-        return msg::make("accuracy.source.readback");
-    return msg::make(m_instrument->identity().kind == proto::DeviceKind::Stage ? "accuracy.source.stage_grating"
+        return motion::msg::make("accuracy.source.readback");
+    return motion::msg::make(m_instrument->identity().kind == dev::proto::DeviceKind::Stage ? "accuracy.source.stage_grating"
                                                                                : "accuracy.source.analyzer_encoder");
 }
 
 void ReadbackSource::take(const StopContext& stop, TakeDone done)
 {
     if (!m_instrument) {
-        done({{}, false, msg::make("accuracy.run.not_connected")});
+        done({{}, false, motion::msg::make("accuracy.run.not_connected")});
         return;
     }
     const quint64 generation = ++m_generation;
@@ -25,14 +25,14 @@ void ReadbackSource::take(const StopContext& stop, TakeDone done)
             return;
         TakeResult r;
         if (e) {
-            r.problem = msg::make("accuracy.run.status_failed", {msg::nested("detail", e->message)});
+            r.problem = motion::msg::make("accuracy.run.status_failed", {motion::msg::nested("detail", e->message)});
             return done(r);
         }
         for (std::size_t n = 0; n < stop.axes.size(); ++n) {
             const int axis = stop.axes[n];
             if (axis < 0 || axis >= s.axes.size()) {
                 const std::string letter = n < stop.letters.size() ? QString(stop.letters[n]).toStdString() : std::to_string(axis);
-                r.problem = msg::make("accuracy.run.status_no_axis", {msg::verbatim("axis", letter)});
+                r.problem = motion::msg::make("accuracy.run.status_no_axis", {motion::msg::verbatim("axis", letter)});
                 r.valuesMm.clear();
                 return done(r);
             }
@@ -42,4 +42,4 @@ void ReadbackSource::take(const StopContext& stop, TakeDone done)
     });
 }
 
-} // namespace jobs
+} // namespace dev::jobs

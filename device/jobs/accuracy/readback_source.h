@@ -9,7 +9,7 @@
 
 #include <QPointer>
 
-namespace jobs {
+namespace dev::jobs {
 
 class ReadbackSource : public ReadingSource {
     Q_OBJECT
@@ -17,7 +17,7 @@ public:
     explicit ReadbackSource(dev::Instrument* instrument, QObject* parent = nullptr);
 
     ReadingKind kind() const override { return ReadingKind::Readback; }
-    msg::Message describe() const override;
+    motion::msg::Message describe() const override;
     int maxAxes() const override { return 8; }
     void take(const StopContext& stop, TakeDone done) override;
     void cancel() override { ++m_generation; }
@@ -27,4 +27,4 @@ private:
     quint64 m_generation = 0;  ///< a cancelled take's answer is dropped
 };
 
-} // namespace jobs
+} // namespace dev::jobs

@@ -2,7 +2,7 @@
 
 #include "device/client/instrument_types.h"
 
-namespace jobs {
+namespace dev::jobs {
 
 const char* readingKindName(ReadingKind k)
 {
@@ -26,4 +26,4 @@ const char* readingKindTerm(ReadingKind k)
     return "accuracy.source_kind.readback";
 }
 
-} // namespace jobs
+} // namespace dev::jobs

@@ -24,12 +24,12 @@ namespace dev {
 struct DeviceEvent;
 }
 
-namespace jobs {
+namespace dev::jobs {
 
 enum class ReadingKind { Readback, Gauge, Interferometer, Manual };
 /// "readback", "gauge", "interferometer", "manual": the result file's "reference".
 const char* readingKindName(ReadingKind k);
-/// The term that names the kind for a person: accuracy.source_kind.* (words::term).
+/// The term that names the kind for a person: accuracy.source_kind.* (ui::words::term).
 const char* readingKindTerm(ReadingKind k);
 
 /// One stop of a run, as a source needs to know it.
@@ -48,7 +48,7 @@ struct StopContext {
 struct TakeResult {
     std::vector<double> valuesMm;        ///< one per axis; empty when deferred or failed
     bool deferred = false;               ///< the reading comes later (an interferometer's import)
-    msg::Message problem;                ///< the reading failed: which port, what was sent
+    motion::msg::Message problem;                ///< the reading failed: which port, what was sent
 };
 
 class ReadingSource : public QObject {
@@ -60,11 +60,11 @@ public:
     virtual ReadingKind kind() const = 0;
     /// For a person and the report (accuracy.source.*): "gauge on /dev/ttyUSB1",
     /// "the stage's grating (readback)".
-    virtual msg::Message describe() const = 0;
+    virtual motion::msg::Message describe() const = 0;
     /// How many axes one reading can cover (a gauge reads one).
     virtual int maxAxes() const { return 1; }
 
-    using OpenDone = std::function<void(const msg::Message& problem)>;  ///< empty: ready
+    using OpenDone = std::function<void(const motion::msg::Message& problem)>;  ///< empty: ready
     /// Makes the source ready before the first stop (opens a port).
     virtual void open(OpenDone done) { done({}); }
     virtual void close() {}
@@ -76,6 +76,6 @@ public:
     virtual void cancel() {}
 };
 
-} // namespace jobs
+} // namespace dev::jobs
 
-Q_DECLARE_METATYPE(jobs::StopContext)
+Q_DECLARE_METATYPE(dev::jobs::StopContext)

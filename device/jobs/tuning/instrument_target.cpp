@@ -19,7 +19,7 @@ InstrumentTarget::InstrumentTarget(TuningClient* tuning, int axis, const QString
         emit testRunning(false);
         fetch();
     });
-    connect(tuning, &TuningClient::testEnded, this, [this](int endedAxis, proto::EventKind, const QString&) {
+    connect(tuning, &TuningClient::testEnded, this, [this](int endedAxis, dev::proto::EventKind, const QString&) {
         if (endedAxis != m_axis || !m_running)
             return;
         m_running = false;
@@ -35,7 +35,7 @@ InstrumentTarget::InstrumentTarget(TuningClient* tuning, int axis, const QString
             return;
         RunOutcome out;
         out.linkLost = true;
-        out.error = msg::make("tuning.target.link_lost", {msg::verbatim("target", m_name.toStdString())});
+        out.error = motion::msg::make("tuning.target.link_lost", {motion::msg::verbatim("target", m_name.toStdString())});
         if (m_running)
             emit testRunning(false);
         m_running = false;
@@ -117,7 +117,7 @@ void InstrumentTarget::abort()
 void InstrumentTarget::fetch()
 {
     QPointer<InstrumentTarget> self(this);
-    emit runProgress(0, msg::make("tuning.target.reading_capture"));
+    emit runProgress(0, motion::msg::make("tuning.target.reading_capture"));
     m_tuning->fetchCapture(
         m_axis,
         [self](const std::optional<RequestError>& e, const TestCapture& c) {
@@ -135,8 +135,8 @@ void InstrumentTarget::fetch()
         },
         [self](int received, int total) {
             if (self && total > 0)
-                emit self->runProgress(double(received) / total, msg::make("tuning.target.reading_capture_of", {msg::integer("received", received),
-                                                                                                                msg::integer("total", total)}));
+                emit self->runProgress(double(received) / total, motion::msg::make("tuning.target.reading_capture_of", {motion::msg::integer("received", received),
+                                                                                                                motion::msg::integer("total", total)}));
         });
 }
 

@@ -13,10 +13,10 @@ ModelTarget::ModelTarget(const PlantSpec& plant, QObject* parent) : TuningTarget
 
 QString ModelTarget::describe() const { return QString::fromStdString(m_spec.text()); }
 
-msg::Message ModelTarget::cannotTune() const
+motion::msg::Message ModelTarget::cannotTune() const
 {
-    const msg::Message why = whyNoUltimateGain(m_spec);
-    return why.empty() ? msg::Message() : msg::make("tuning.model.no_ultimate_gain", {msg::verbatim("plant", m_spec.text()), msg::nested("cause", why)});
+    const motion::msg::Message why = whyNoUltimateGain(m_spec);
+    return why.empty() ? motion::msg::Message() : motion::msg::make("tuning.model.no_ultimate_gain", {motion::msg::verbatim("plant", m_spec.text()), motion::msg::nested("cause", why)});
 }
 
 void ModelTarget::runStep(const StepSpec& spec, bool trial, double swing, Done done)
@@ -40,7 +40,7 @@ void ModelTarget::deliver(Experiment x, bool fromRest, EarlyStop stop, Done done
             return;
         RunOutcome out;
         if (self->m_aborted) {
-            out.error = msg::make("tuning.target.aborted");
+            out.error = motion::msg::make("tuning.target.aborted");
             return done(out);
         }
         if (fromRest || !self->m_sim)

@@ -21,7 +21,7 @@ public:
     motion::control::InputModel inputModel() const override { return motion::control::InputModel::Held; }
     double noiseFloor() const override { return 0; }
     bool ready() const override { return true; }
-    msg::Message cannotTune() const override;
+    motion::msg::Message cannotTune() const override;
     void runStep(const motion::control::StepSpec& spec, bool trial, double swing, Done done) override;
     void runRelay(const motion::control::RelaySpec& spec, bool continueRun, Done done) override;
     void abort() override { m_aborted = true; }

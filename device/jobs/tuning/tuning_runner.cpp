@@ -13,7 +13,7 @@ using namespace motion::control;
 
 namespace {
 using motion::kPi;
-msg::Arg labelArg(const msg::Message& label) { return msg::nested("run", label); }
+motion::msg::Arg labelArg(const motion::msg::Message& label) { return motion::msg::nested("run", label); }
 } // namespace
 
 const char* stateTerm(TuningRunner::State s)
@@ -58,18 +58,18 @@ bool TuningRunner::startZn(TuningTarget* target, const ZnOptions& o)
 {
     if (busy())
         return false;
-    msg::Message problem;
+    motion::msg::Message problem;
     if (!target || !target->ready())
-        problem = msg::make("tuning.run.target_not_ready");
+        problem = motion::msg::make("tuning.run.target_not_ready");
     else if (!target->cannotTune().empty())
         problem = target->cannotTune();
     else if (!(o.envelope.maxExcursion > 0 && o.envelope.maxFollowingError > 0 && o.envelope.maxDurationS > 0))
-        problem = msg::make("tuning.run.envelope_not_positive");
+        problem = motion::msg::make("tuning.run.envelope_not_positive");
     else if (o.method == TuningMethod::UltimateGain && !(std::abs(o.step) > 0 && std::abs(o.step) < o.trialShare * o.envelope.maxExcursion
                                                            && std::abs(o.step) < o.trialShare * o.envelope.maxFollowingError))
-        problem = msg::make("tuning.run.trial_step_invalid", {msg::real("share", 100 * o.trialShare, msg::Unit::Percent)});
+        problem = motion::msg::make("tuning.run.trial_step_invalid", {motion::msg::real("share", 100 * o.trialShare, motion::msg::Unit::Percent)});
     else if (o.method == TuningMethod::Relay && !(o.relayAmplitude > 0 && o.hysteresis >= 0))
-        problem = msg::make("tuning.run.relay_invalid");
+        problem = motion::msg::make("tuning.run.relay_invalid");
     if (!problem.empty()) {
         emit finished(false, problem);
         return false;
@@ -121,10 +121,10 @@ bool TuningRunner::startZn(TuningTarget* target, const ZnOptions& o)
     return true;
 }
 
-bool TuningRunner::startStepTest(TuningTarget* target, const StepSpec& spec, const msg::Message& label)
+bool TuningRunner::startStepTest(TuningTarget* target, const StepSpec& spec, const motion::msg::Message& label)
 {
     if (busy() || !target || !target->ready()) {
-        emit finished(false, msg::make(busy() ? "tuning.run.step_busy" : "tuning.run.step_not_ready"));
+        emit finished(false, motion::msg::make(busy() ? "tuning.run.step_busy" : "tuning.run.step_not_ready"));
         return false;
     }
     // The firmware's own check, in its words (the reference device says the same).
@@ -133,7 +133,7 @@ bool TuningRunner::startStepTest(TuningTarget* target, const StepSpec& spec, con
         std::string joined;
         for (const auto& p : problems)
             joined += (joined.empty() ? "" : "; ") + p;
-        emit finished(false, msg::make("tuning.run.step_refused", {msg::verbatim("detail", joined)}));
+        emit finished(false, motion::msg::make("tuning.run.step_refused", {motion::msg::verbatim("detail", joined)}));
         return false;
     }
     m_target = target;
@@ -156,7 +156,7 @@ void TuningRunner::abort()
 {
     if (m_state == State::Interrupted) {
         setState(State::Aborted);
-        emit finished(false, msg::make("tuning.run.aborted_while_interrupted"));
+        emit finished(false, motion::msg::make("tuning.run.aborted_while_interrupted"));
         return;
     }
     if (!busy())
@@ -172,7 +172,7 @@ bool TuningRunner::resume()
         return false;
     m_abortRequested = false;
     setState(State::Running);
-    emit message(msg::make("tuning.run.resumed"));
+    emit message(motion::msg::make("tuning.run.resumed"));
     m_pending();
     return true;
 }
@@ -191,13 +191,13 @@ int TuningRunner::remainingRunsEstimate() const
     return 1;
 }
 
-void TuningRunner::reportProgress(const msg::Message& what)
+void TuningRunner::reportProgress(const motion::msg::Message& what)
 {
     const int left = remainingRunsEstimate();
     const double fraction = double(m_runsDone) / double(m_runsDone + left);
     if (m_runsDone > 0) {
         const double eta = m_runSeconds / m_runsDone * left;
-        emit progress(fraction, msg::make("tuning.progress.with_eta", {labelArg(what), msg::real("eta", std::max(1L, std::lround(eta)), msg::Unit::S)}));
+        emit progress(fraction, motion::msg::make("tuning.progress.with_eta", {labelArg(what), motion::msg::real("eta", std::max(1L, std::lround(eta)), motion::msg::Unit::S)}));
         return;
     }
     emit progress(fraction, what);
@@ -234,7 +234,7 @@ void TuningRunner::runTrial(double kp)
     s.envelope = trialEnvelope(m_options.envelope, m_options.trialShare);
     s.envelope.maxDurationS = device ? m_options.trialS + 0.2 : m_options.envelope.maxDurationS * 1.01;
     const int n = static_cast<int>(m_search->trials().size()) + 1;
-    const msg::Message label = msg::make("tuning.label.trial", {msg::integer("trial", n, msg::Unit::None), msg::real("kp", kp)});
+    const motion::msg::Message label = motion::msg::make("tuning.label.trial", {motion::msg::integer("trial", n, motion::msg::Unit::None), motion::msg::real("kp", kp)});
     const double swing = m_swing * m_search->stepScale();
     m_currentKp = kp;
     m_pending = [this, s, label, swing] {
@@ -253,8 +253,8 @@ void TuningRunner::runRelay(const RelaySpec& spec0)
     // Long enough for the cycles asked, with room to settle; the relay's own period is not known yet.
     s.envelope.maxDurationS = forced ? std::min(m_options.envelope.maxDurationS, s.forcedPeriodS * (s.cycles + 2) * 1.5 + 0.2)
                                      : m_options.envelope.maxDurationS;
-    const msg::Message label = forced ? msg::make("tuning.label.forced_run", {msg::real("period", s.forcedPeriodS, msg::Unit::S)})
-                                      : msg::make("tuning.label.relay_run");
+    const motion::msg::Message label = forced ? motion::msg::make("tuning.label.forced_run", {motion::msg::real("period", s.forcedPeriodS, motion::msg::Unit::S)})
+                                      : motion::msg::make("tuning.label.relay_run");
     const bool continueRun = forced;
     m_pending = [this, s, label, continueRun, forced] {
         reportProgress(label);
@@ -264,32 +264,32 @@ void TuningRunner::runRelay(const RelaySpec& spec0)
     m_pending();
 }
 
-bool TuningRunner::endedBadly(const Record& r, const msg::Message& label)
+bool TuningRunner::endedBadly(const Record& r, const motion::msg::Message& label)
 {
     switch (r.reason) {
     case EndReason::EStop:
-        fail(msg::make("tuning.run.estop", {labelArg(label)}));
+        fail(motion::msg::make("tuning.run.estop", {labelArg(label)}));
         return true;
     case EndReason::HostSilent:
         setState(State::Interrupted);
-        emit message(msg::make("tuning.run.host_silent", {labelArg(label)}));
+        emit message(motion::msg::make("tuning.run.host_silent", {labelArg(label)}));
         return true;
     case EndReason::Fault:
-        fail(msg::make("tuning.run.fault", {labelArg(label)}));
+        fail(motion::msg::make("tuning.run.fault", {labelArg(label)}));
         return true;
     case EndReason::Stopped:
         if (m_abortRequested) {
             setState(State::Aborted);
-            emit finished(false, msg::make("tuning.run.aborted_during", {labelArg(label)}));
+            emit finished(false, motion::msg::make("tuning.run.aborted_during", {labelArg(label)}));
         } else {
-            fail(msg::make("tuning.run.stopped_elsewhere", {labelArg(label)}));
+            fail(motion::msg::make("tuning.run.stopped_elsewhere", {labelArg(label)}));
         }
         return true;
     default: return false;
     }
 }
 
-void TuningRunner::onRun(const RunOutcome& out, int kind, const msg::Message& label)
+void TuningRunner::onRun(const RunOutcome& out, int kind, const motion::msg::Message& label)
 {
     if (m_state != State::Running)
         return;
@@ -297,12 +297,12 @@ void TuningRunner::onRun(const RunOutcome& out, int kind, const msg::Message& la
     if (!out.ok) {
         if (m_abortRequested) {
             setState(State::Aborted);
-            emit finished(false, msg::make("tuning.run.aborted_during", {labelArg(label)}));
+            emit finished(false, motion::msg::make("tuning.run.aborted_during", {labelArg(label)}));
         } else if (out.linkLost) {
             setState(State::Interrupted);
-            emit message(msg::make("tuning.run.interrupted", {labelArg(label), msg::nested("cause", out.error)}));
+            emit message(motion::msg::make("tuning.run.interrupted", {labelArg(label), motion::msg::nested("cause", out.error)}));
         } else {
-            fail(msg::make("tuning.run.failed", {labelArg(label), msg::nested("cause", out.error)}));
+            fail(motion::msg::make("tuning.run.failed", {labelArg(label), motion::msg::nested("cause", out.error)}));
         }
         return;
     }
@@ -324,30 +324,30 @@ void TuningRunner::onRun(const RunOutcome& out, int kind, const msg::Message& la
             m_result.verification = v;
         }
         setState(State::Done);
-        emit progress(1, msg::make(m_verifying ? "tuning.progress.verified" : "tuning.progress.step_done"));
-        const msg::Arg reason = msg::term("reason", endReasonTerm(out.record.reason));
-        emit finished(true, m_verifying ? msg::make("tuning.run.verified", {msg::real("ku", m_result.ku), msg::real("tu", m_result.tuS, msg::Unit::S),
-                                                                            msg::term("rule", "tuning.rule." + m_options.verifyRule), reason})
-                                        : msg::make("tuning.run.step_done", {labelArg(label), reason}));
+        emit progress(1, motion::msg::make(m_verifying ? "tuning.progress.verified" : "tuning.progress.step_done"));
+        const motion::msg::Arg reason = motion::msg::term("reason", endReasonTerm(out.record.reason));
+        emit finished(true, m_verifying ? motion::msg::make("tuning.run.verified", {motion::msg::real("ku", m_result.ku), motion::msg::real("tu", m_result.tuS, motion::msg::Unit::S),
+                                                                            motion::msg::term("rule", "tuning.rule." + m_options.verifyRule), reason})
+                                        : motion::msg::make("tuning.run.step_done", {labelArg(label), reason}));
         return;
     }
     if (m_abortRequested) {
         setState(State::Aborted);
-        emit finished(false, msg::make("tuning.run.aborted_after", {labelArg(label)}));
+        emit finished(false, motion::msg::make("tuning.run.aborted_after", {labelArg(label)}));
         return;
     }
     if (m_search) {
         m_search->report(m_currentKp, out.record);
         const UltimateTrial& t = m_search->trials().back();
         if (t.inconclusive)
-            emit message(msg::make("tuning.run.repeat_half_step", {labelArg(label)}));
+            emit message(motion::msg::make("tuning.run.repeat_half_step", {labelArg(label)}));
     } else if (m_relay) {
         m_relay->report(out.record);
     }
     next();
 }
 
-void TuningRunner::fail(const msg::Message& why)
+void TuningRunner::fail(const motion::msg::Message& why)
 {
     setState(State::Failed);
     emit finished(false, why);
@@ -374,14 +374,14 @@ void TuningRunner::concludeSearch()
             m_result.trials.push_back(tr);
         }
         if (!m_search->result()) {
-            fail(msg::make("tuning.run.ultimate_failed", {msg::nested("cause", m_search->failure())}));
+            fail(motion::msg::make("tuning.run.ultimate_failed", {motion::msg::nested("cause", m_search->failure())}));
             return;
         }
         m_result.ku = m_search->result()->ku;
         m_result.tuS = m_search->result()->tuS;
     } else if (m_relay) {
         if (!m_relay->result()) {
-            fail(msg::make("tuning.run.relay_failed", {msg::nested("cause", m_relay->failure())}));
+            fail(motion::msg::make("tuning.run.relay_failed", {motion::msg::nested("cause", m_relay->failure())}));
             return;
         }
         const RelayResult& r = *m_relay->result();
@@ -398,8 +398,8 @@ void TuningRunner::concludeSearch()
     emit ultimateFound(m_result.ku, m_result.tuS);
     if (m_options.verifyRule.empty() || !findRule(m_options.verifyRule)) {
         setState(State::Done);
-        emit progress(1, msg::make("tuning.progress.done"));
-        emit finished(true, msg::make("tuning.run.found", {msg::real("ku", m_result.ku), msg::real("tu", m_result.tuS, msg::Unit::S)}));
+        emit progress(1, motion::msg::make("tuning.progress.done"));
+        emit finished(true, motion::msg::make("tuning.run.found", {motion::msg::real("ku", m_result.ku), motion::msg::real("tu", m_result.tuS, motion::msg::Unit::S)}));
         return;
     }
     runVerification();
@@ -421,7 +421,7 @@ void TuningRunner::runVerification()
     }
     s.envelope = m_options.envelope;
     s.envelope.maxFollowingError = std::max(s.envelope.maxFollowingError, 1.5 * std::abs(s.step));
-    const msg::Message label = msg::make("tuning.label.verification", {msg::term("rule", "tuning.rule." + m_options.verifyRule)});
+    const motion::msg::Message label = motion::msg::make("tuning.label.verification", {motion::msg::term("rule", "tuning.rule." + m_options.verifyRule)});
     m_pending = [this, s, label] {
         reportProgress(label);
         m_runClock.start();

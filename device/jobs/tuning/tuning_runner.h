@@ -46,7 +46,7 @@ public:
     /// Starts the assistant; false (with a message) if it cannot start.
     bool startZn(TuningTarget* target, const ZnOptions& options);
     /// A single step test with the gains in `spec` (trial gains: the operator's stay).
-    bool startStepTest(TuningTarget* target, const motion::control::StepSpec& spec, const msg::Message& label);
+    bool startStepTest(TuningTarget* target, const motion::control::StepSpec& spec, const motion::msg::Message& label);
     void abort();
     /// After Interrupted: runs the interrupted experiment again. False if it cannot yet.
     bool resume();
@@ -65,16 +65,16 @@ public:
 signals:
     void stateChanged(dev::TuningRunner::State state);
     /// fraction 0–1 of the job (an estimate while the search runs), and what it does now with an ETA.
-    void progress(double fraction, const msg::Message& text);
+    void progress(double fraction, const motion::msg::Message& text);
     /// Every experiment's record: kind 0 trial, 1 relay, 2 forced run, 3 step test / verification.
-    void recordArrived(const motion::control::Record& record, const msg::Message& label, int kind);
+    void recordArrived(const motion::control::Record& record, const motion::msg::Message& label, int kind);
     void ultimateFound(double ku, double tuS);
     /// A step test or the verification, judged by motion::control::judgeStep (the same rules for both).
-    void stepTestDone(const motion::control::Record& record, const motion::control::StepVerdict& verdict, const msg::Message& label);
+    void stepTestDone(const motion::control::Record& record, const motion::control::StepVerdict& verdict, const motion::msg::Message& label);
     /// The job ended: ok, and a message for the operator (tuning.run.*; labels are tuning.label.*).
-    void finished(bool ok, const msg::Message& message);
+    void finished(bool ok, const motion::msg::Message& message);
     /// Something the operator should read now (link lost, E-stop, …).
-    void message(const msg::Message& text);
+    void message(const motion::msg::Message& text);
 
 private:
     void setState(State s);
@@ -82,11 +82,11 @@ private:
     void runTrial(double kp);
     void runRelay(const motion::control::RelaySpec& spec);
     void runVerification();
-    void onRun(const RunOutcome& out, int kind, const msg::Message& label);
-    bool endedBadly(const motion::control::Record& r, const msg::Message& label);
+    void onRun(const RunOutcome& out, int kind, const motion::msg::Message& label);
+    bool endedBadly(const motion::control::Record& r, const motion::msg::Message& label);
     void concludeSearch();
-    void fail(const msg::Message& why);
-    void reportProgress(const msg::Message& what);
+    void fail(const motion::msg::Message& why);
+    void reportProgress(const motion::msg::Message& what);
     int remainingRunsEstimate() const;
 
     QPointer<TuningTarget> m_target;
@@ -107,7 +107,7 @@ private:
     QElapsedTimer m_runClock;
 };
 
-/// The state's term for people ("tuning.state.running"), worded by words::term.
+/// The state's term for people ("tuning.state.running"), worded by ui::words::term.
 const char* stateTerm(TuningRunner::State s);
 
 } // namespace dev

@@ -14,7 +14,7 @@ namespace dev {
 
 struct RunOutcome {
     bool ok = false;                   ///< a record came back (whatever ended the run)
-    msg::Message error;                ///< why not (tuning.target.*, request.*)
+    motion::msg::Message error;                ///< why not (tuning.target.*, request.*)
     bool linkLost = false;             ///< the link went away: resumable once it is back
     motion::control::Record record;
 };
@@ -33,7 +33,7 @@ public:
     virtual bool ready() const = 0;                ///< can run now
     /// Why the Z-N methods cannot work on this target at all (a model plant whose
     /// phase never reaches −180°); empty when they can.
-    virtual msg::Message cannotTune() const { return {}; }
+    virtual motion::msg::Message cannotTune() const { return {}; }
     /// A step test; a model starts it from rest, a device from where the axis stands.
     /// `trial`: a P-only trial of the ultimate-gain search, which a target may end
     /// as soon as it has shown enough cycles (`swing`: its noise floor for extrema).
@@ -45,7 +45,7 @@ public:
 
 signals:
     /// Progress inside one run (a device's capture being read), 0–1.
-    void runProgress(double fraction, const msg::Message& what);
+    void runProgress(double fraction, const motion::msg::Message& what);
     /// A device test started / ended on the device (live telemetry is worth having
     /// only in between; after it the link is better left to reading the capture).
     void testRunning(bool running);

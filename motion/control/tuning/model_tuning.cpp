@@ -86,9 +86,9 @@ Envelope trialEnvelope(const Envelope& e, double share)
 ModelTuning tuneModel(const PlantSpec& plant, const ModelTuningOptions& o, const TuningProgress& progress)
 {
     ModelTuning out;
-    const msg::Message why = whyNoUltimateGain(plant);
+    const motion::msg::Message why = whyNoUltimateGain(plant);
     if (!why.empty()) {
-        out.error = msg::make("tuning.model.no_ultimate_gain", {msg::verbatim("plant", plant.text()), msg::nested("cause", why)});
+        out.error = motion::msg::make("tuning.model.no_ultimate_gain", {motion::msg::verbatim("plant", plant.text()), motion::msg::nested("cause", why)});
         return out;
     }
     const Envelope trialEnv = trialEnvelope(o.envelope, o.trialShare);
@@ -113,8 +113,8 @@ ModelTuning tuneModel(const PlantSpec& plant, const ModelTuningOptions& o, const
             if (progress) {
                 const auto& t = search.trials().back();
                 progress(static_cast<int>(out.runs.size()),
-                         t.oscillation.oscillating ? msg::make("tuning.progress.trial", {msg::real("kp", *kp), msg::real("ratio", t.oscillation.ratio)})
-                                                   : msg::make("tuning.progress.trial_no_oscillation", {msg::real("kp", *kp)}));
+                         t.oscillation.oscillating ? motion::msg::make("tuning.progress.trial", {motion::msg::real("kp", *kp), motion::msg::real("ratio", t.oscillation.ratio)})
+                                                   : motion::msg::make("tuning.progress.trial_no_oscillation", {motion::msg::real("kp", *kp)}));
             }
         }
         out.trials = search.trials();
@@ -145,8 +145,8 @@ ModelTuning tuneModel(const PlantSpec& plant, const ModelTuningOptions& o, const
         out.runs.push_back(std::move(r));
         if (progress)
             progress(static_cast<int>(out.runs.size()), s.forcedPeriodS > 0
-                                                            ? msg::make("tuning.progress.forced_run", {msg::real("period", s.forcedPeriodS, msg::Unit::S)})
-                                                            : msg::make("tuning.progress.relay_run"));
+                                                            ? motion::msg::make("tuning.progress.forced_run", {motion::msg::real("period", s.forcedPeriodS, motion::msg::Unit::S)})
+                                                            : motion::msg::make("tuning.progress.relay_run"));
     }
     if (!tuner.result()) {
         out.error = tuner.failure();

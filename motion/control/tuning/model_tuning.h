@@ -30,7 +30,7 @@ struct ModelTuningOptions {
 
 struct ModelTuning {
     bool ok = false;
-    msg::Message error;            ///< why not (or a note beside a classic-only relay result): tuning.*
+    motion::msg::Message error;            ///< why not (or a note beside a classic-only relay result): tuning.*
     double ku = 0, tuS = 0;
     std::optional<UltimateResult> ultimate;
     std::optional<RelayResult> relay;
@@ -40,7 +40,7 @@ struct ModelTuning {
 };
 
 /// Progress: (runs done, a short description of the last one).
-using TuningProgress = std::function<void(int runs, const msg::Message& what)>;
+using TuningProgress = std::function<void(int runs, const motion::msg::Message& what)>;
 
 /// Tunes `plant` with `options`. A plant with no finite ultimate gain is
 /// refused up front, with the reason.

@@ -232,7 +232,7 @@ RelayAnalysis analyzeRelay(const Record& r, double d, double eps, InputModel inp
     RelayAnalysis a;
     const std::size_t n = r.size();
     if (n < 16) {
-        a.problem = msg::make("tuning.relay.record_too_short");
+        a.problem = motion::msg::make("tuning.relay.record_too_short");
         return a;
     }
     // Zero crossings of the output around the mean of its second half.
@@ -242,7 +242,7 @@ RelayAnalysis analyzeRelay(const Record& r, double d, double eps, InputModel inp
     mean /= static_cast<double>(n - n / 2);
     const auto t = risingCrossings(r.measured, mean, 0, n);
     if (t.size() < 4) {
-        a.problem = msg::make("tuning.relay.no_oscillation");
+        a.problem = motion::msg::make("tuning.relay.no_oscillation");
         return a;
     }
     // The last cycles whose periods agree with the last one within 2 %: stable.
@@ -251,7 +251,7 @@ RelayAnalysis analyzeRelay(const Record& r, double d, double eps, InputModel inp
         periods.push_back(t[i] - t[i - 1]);
     const double lastP = periods.back();
     if (lastP <= 2.5) {
-        a.problem = msg::make("tuning.relay.chatter");
+        a.problem = motion::msg::make("tuning.relay.chatter");
         return a;
     }
     // The relay switches only at a sample, so a limit cycle that is not a whole number
@@ -266,7 +266,7 @@ RelayAnalysis analyzeRelay(const Record& r, double d, double eps, InputModel inp
         ++firstStable;
     const std::size_t cycles = periods.size() - firstStable;
     if (cycles < 2) {
-        a.problem = msg::make("tuning.relay.unsettled");
+        a.problem = motion::msg::make("tuning.relay.unsettled");
         return a;
     }
     double sumP = 0;
@@ -288,7 +288,7 @@ RelayAnalysis analyzeRelay(const Record& r, double d, double eps, InputModel inp
     }
     a.amplitude = amp / static_cast<double>(cycles);
     if (a.amplitude <= eps) {
-        a.problem = msg::make("tuning.relay.below_hysteresis");
+        a.problem = motion::msg::make("tuning.relay.below_hysteresis");
         return a;
     }
     a.kuDescribing = 4 * d / (kPi * std::sqrt(a.amplitude * a.amplitude - eps * eps));

@@ -66,7 +66,7 @@ FrequencyPoint fourierPoint(const Record& r, std::size_t first, std::size_t samp
 /// describing-function estimate and the exact first (and third) harmonic point.
 struct RelayAnalysis {
     bool ok = false;
-    msg::Message problem;       ///< why not, when !ok (tuning.relay.*)
+    motion::msg::Message problem;       ///< why not, when !ok (tuning.relay.*)
     double periodS = 0;         ///< Tu estimate
     double amplitude = 0;       ///< a: half the output's peak-to-peak
     double kuDescribing = 0;    ///< 4d / (π·sqrt(a² − ε²))

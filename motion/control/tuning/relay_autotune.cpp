@@ -38,7 +38,7 @@ void RelayAutotune::report(const Record& run)
         if (!a.ok) {
             m_failure = endedNormally(run.reason)
                 ? a.problem
-                : msg::make("tuning.relay.failed_run_ended", {msg::nested("cause", a.problem), msg::term("reason", endReasonTerm(run.reason))});
+                : motion::msg::make("tuning.relay.failed_run_ended", {motion::msg::nested("cause", a.problem), motion::msg::term("reason", endReasonTerm(run.reason))});
             m_next.reset();
             return;
         }
@@ -64,7 +64,7 @@ void RelayAutotune::report(const Record& run)
         return;
     }
     if (!endedNormally(run.reason)) {
-        m_failure = msg::make("tuning.relay.refinement_ended", {msg::term("reason", endReasonTerm(run.reason))});
+        m_failure = motion::msg::make("tuning.relay.refinement_ended", {motion::msg::term("reason", endReasonTerm(run.reason))});
         m_result = m_work;
         m_next.reset();
         return;
@@ -145,8 +145,8 @@ void RelayAutotune::planForced()
         }
     }
     if (forcedRuns >= m_options.maxForcedRuns) {
-        m_failure = msg::make(less ? "tuning.relay.no_point_lagging_more" : "tuning.relay.no_point_lagging_less",
-                              {msg::real("from", m_minOmega), msg::real("to", m_maxOmega)});
+        m_failure = motion::msg::make(less ? "tuning.relay.no_point_lagging_more" : "tuning.relay.no_point_lagging_less",
+                              {motion::msg::real("from", m_minOmega), motion::msg::real("to", m_maxOmega)});
         m_result = m_work;
         m_next.reset();
         return;
@@ -184,7 +184,7 @@ void RelayAutotune::planForced()
             if (less && more)
                 finishWith(*less, more);
             else {
-                m_failure = msg::make("tuning.relay.nyquist");
+                m_failure = motion::msg::make("tuning.relay.nyquist");
                 m_result = m_work;
                 m_next.reset();
             }

@@ -60,7 +60,7 @@ public:
     bool finished() const { return !m_next.has_value(); }
     const std::optional<RelayResult>& result() const { return m_result; }
     /// Why it failed; may be set beside a result (classic values only, refinement failed).
-    const msg::Message& failure() const { return m_failure; }  ///< tuning.relay.*
+    const motion::msg::Message& failure() const { return m_failure; }  ///< tuning.relay.*
     const RelayAutotuneOptions& options() const { return m_options; }
     /// A forced run's period in control periods (0 for the relay run).
     long forcedPeriodSamples() const { return m_forcedSamples; }
@@ -79,7 +79,7 @@ private:
     RelayAutotuneOptions m_options;
     std::optional<RelaySpec> m_next;
     std::optional<RelayResult> m_result;
-    msg::Message m_failure;
+    motion::msg::Message m_failure;
     RelayResult m_work;
     Point m_relayPoint;
     std::vector<Point> m_forced;           ///< forced-run points

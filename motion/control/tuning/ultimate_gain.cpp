@@ -17,7 +17,7 @@ UltimateGainSearch::UltimateGainSearch(const UltimateGainOptions& options) : m_o
     if (std::isfinite(options.startKp) && options.startKp > 0 && options.startKp <= options.kpMax)
         m_next = options.startKp;
     else
-        m_failure = msg::make("tuning.ultimate.bad_start_kp", {msg::real("value", options.startKp), msg::real("max", options.kpMax)});
+        m_failure = motion::msg::make("tuning.ultimate.bad_start_kp", {motion::msg::real("value", options.startKp), motion::msg::real("max", options.kpMax)});
 }
 
 UltimateTrial UltimateGainSearch::analyzeTrial(double kp, const Record& trial, double swing)
@@ -48,7 +48,7 @@ void UltimateGainSearch::report(double kp, const Record& trial)
         t.inconclusive = true;
         m_trials.push_back(t);
         if (static_cast<int>(m_trials.size()) >= m_options.maxTrials) {
-            m_failure = msg::make("tuning.ultimate.envelope_hits");
+            m_failure = motion::msg::make("tuning.ultimate.envelope_hits");
             m_next.reset();
             return;
         }
@@ -114,10 +114,10 @@ void UltimateGainSearch::decide()
         return;
     }
     if (static_cast<int>(m_trials.size()) >= m_options.maxTrials) {
-        const msg::Arg trials = msg::integer("trials", static_cast<long long>(m_trials.size()));
-        m_failure = nearest ? msg::make("tuning.ultimate.no_sustained_nearest",
-                                        {trials, msg::real("kp", nearest->kp), msg::real("ratio", nearest->oscillation.ratio)})
-                            : msg::make("tuning.ultimate.no_sustained", {trials});
+        const motion::msg::Arg trials = motion::msg::integer("trials", static_cast<long long>(m_trials.size()));
+        m_failure = nearest ? motion::msg::make("tuning.ultimate.no_sustained_nearest",
+                                        {trials, motion::msg::real("kp", nearest->kp), motion::msg::real("ratio", nearest->oscillation.ratio)})
+                            : motion::msg::make("tuning.ultimate.no_sustained", {trials});
         m_next.reset();
         return;
     }
@@ -155,7 +155,7 @@ void UltimateGainSearch::decide()
     (void)last;
     if (next > m_options.kpMax) {
         if (!above) {
-            m_failure = msg::make("tuning.ultimate.decays_up_to", {msg::real("kp", m_options.kpMax)});
+            m_failure = motion::msg::make("tuning.ultimate.decays_up_to", {motion::msg::real("kp", m_options.kpMax)});
             m_next.reset();
             return;
         }
@@ -163,7 +163,7 @@ void UltimateGainSearch::decide()
     }
     for (const auto& t : m_trials)
         if (!t.inconclusive && std::abs(t.kp - next) <= 1e-9 * next) {
-            m_failure = msg::make("tuning.ultimate.stalled", {msg::real("kp", next)});
+            m_failure = motion::msg::make("tuning.ultimate.stalled", {motion::msg::real("kp", next)});
             m_next.reset();
             return;
         }

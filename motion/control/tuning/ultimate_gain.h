@@ -64,7 +64,7 @@ public:
     void report(double kp, const Record& trial);
     bool finished() const { return !m_next.has_value(); }
     const std::optional<UltimateResult>& result() const { return m_result; }
-    const msg::Message& failure() const { return m_failure; }  ///< tuning.ultimate.*
+    const motion::msg::Message& failure() const { return m_failure; }  ///< tuning.ultimate.*
     const std::vector<UltimateTrial>& trials() const { return m_trials; }
     const UltimateGainOptions& options() const { return m_options; }
 
@@ -79,7 +79,7 @@ private:
     std::optional<double> m_next;
     double m_stepScale = 1;
     std::optional<UltimateResult> m_result;
-    msg::Message m_failure;
+    motion::msg::Message m_failure;
 };
 
 } // namespace motion::control

@@ -101,43 +101,43 @@ double CompensationModel::correctionUm(double targetMm, Direction approach) cons
     return (commandMm(targetMm, approach) - targetMm) * 1e3;
 }
 
-msg::Problems validate(const CompensationModel& m)
+motion::msg::Problems validate(const CompensationModel& m)
 {
-    msg::Problems out;
+    motion::msg::Problems out;
     if (m.axis.size() != 1 || m.axis[0] < 'A' || m.axis[0] > 'Z')
-        out.push_back({"axis", msg::make("accuracy.axis_name_invalid", {msg::verbatim("axis", m.axis)})});
+        out.push_back({"axis", motion::msg::make("accuracy.axis_name_invalid", {motion::msg::verbatim("axis", m.axis)})});
     if (m.kind == CompensationModel::Kind::Polynomial) {
         const auto& c = m.polynomial.coefficientsUm;
         if (c.empty())
-            out.push_back({"polynomial.coefficients_um", msg::make("compensation.no_coefficients")});
+            out.push_back({"polynomial.coefficients_um", motion::msg::make("compensation.no_coefficients")});
         if (c.size() > 6)
             out.push_back({"polynomial.coefficients_um",
-                           msg::make("compensation.too_many_coefficients",
-                                     {msg::integer("count", static_cast<long long>(c.size())), msg::integer("max", 6)})});
+                           motion::msg::make("compensation.too_many_coefficients",
+                                     {motion::msg::integer("count", static_cast<long long>(c.size())), motion::msg::integer("max", 6)})});
         for (std::size_t i = 0; i < c.size(); ++i)
             if (!std::isfinite(c[i]))
-                out.push_back({indexPath("polynomial.coefficients_um", i), msg::make("accuracy.value_not_finite")});
-        const bool from = checkRange(out, "polynomial.valid_from_mm", m.validFromMm, -1e6, 1e6, msg::Unit::Mm);
-        const bool to = checkRange(out, "polynomial.valid_to_mm", m.validToMm, -1e6, 1e6, msg::Unit::Mm);
+                out.push_back({indexPath("polynomial.coefficients_um", i), motion::msg::make("accuracy.value_not_finite")});
+        const bool from = checkRange(out, "polynomial.valid_from_mm", m.validFromMm, -1e6, 1e6, motion::msg::Unit::Mm);
+        const bool to = checkRange(out, "polynomial.valid_to_mm", m.validToMm, -1e6, 1e6, motion::msg::Unit::Mm);
         if (from && to && !(m.validToMm - m.validFromMm >= 2 * kMinTableSpacingMm))
-            out.push_back({"polynomial.valid_to_mm", msg::make("compensation.range_too_short",
-                                                               {msg::real("from", m.validFromMm, msg::Unit::Mm), msg::real("to", m.validToMm, msg::Unit::Mm),
-                                                                msg::real("min", 2 * kMinTableSpacingMm, msg::Unit::Mm)})});
+            out.push_back({"polynomial.valid_to_mm", motion::msg::make("compensation.range_too_short",
+                                                               {motion::msg::real("from", m.validFromMm, motion::msg::Unit::Mm), motion::msg::real("to", m.validToMm, motion::msg::Unit::Mm),
+                                                                motion::msg::real("min", 2 * kMinTableSpacingMm, motion::msg::Unit::Mm)})});
         else if (from && to && !hasErrors(out)) {
             // A curve a device can apply: bounded and gentle over the range it is used on.
             for (int i = 0; i <= 100; ++i) {
                 const double x = m.validFromMm + (m.validToMm - m.validFromMm) * i / 100;
                 const double e = m.polynomial.errorUm(x), slope = m.polynomial.slopeUmPerMm(x);
                 if (!(std::fabs(e) <= kMaxCorrectionUm)) {
-                    out.push_back({"polynomial.coefficients_um", msg::make("compensation.curve_too_large",
-                                                                           {msg::real("position", x, msg::Unit::Mm), msg::real("value", e, msg::Unit::Um),
-                                                                            msg::real("max", kMaxCorrectionUm, msg::Unit::Um)})});
+                    out.push_back({"polynomial.coefficients_um", motion::msg::make("compensation.curve_too_large",
+                                                                           {motion::msg::real("position", x, motion::msg::Unit::Mm), motion::msg::real("value", e, motion::msg::Unit::Um),
+                                                                            motion::msg::real("max", kMaxCorrectionUm, motion::msg::Unit::Um)})});
                     break;
                 }
                 if (!(std::fabs(slope) <= kMaxSlopeUmPerMm)) {
-                    out.push_back({"polynomial.coefficients_um", msg::make("compensation.curve_too_steep",
-                                                                           {msg::real("position", x, msg::Unit::Mm), msg::real("value", slope),
-                                                                            msg::real("max", kMaxSlopeUmPerMm)})});
+                    out.push_back({"polynomial.coefficients_um", motion::msg::make("compensation.curve_too_steep",
+                                                                           {motion::msg::real("position", x, motion::msg::Unit::Mm), motion::msg::real("value", slope),
+                                                                            motion::msg::real("max", kMaxSlopeUmPerMm)})});
                     break;
                 }
             }
@@ -145,35 +145,35 @@ msg::Problems validate(const CompensationModel& m)
     } else {
         const auto n = static_cast<long long>(m.table.size());
         if (n < 2)
-            out.push_back({"table.points", msg::make("compensation.too_few_table_points", {msg::integer("count", n), msg::integer("min", 2)})});
+            out.push_back({"table.points", motion::msg::make("compensation.too_few_table_points", {motion::msg::integer("count", n), motion::msg::integer("min", 2)})});
         if (m.table.size() > kMaxTablePoints)
-            out.push_back({"table.points", msg::make("compensation.too_many_table_points",
-                                                     {msg::integer("count", n), msg::integer("max", static_cast<long long>(kMaxTablePoints))})});
+            out.push_back({"table.points", motion::msg::make("compensation.too_many_table_points",
+                                                     {motion::msg::integer("count", n), motion::msg::integer("max", static_cast<long long>(kMaxTablePoints))})});
         for (std::size_t i = 0; i < m.table.size(); ++i) {
             const std::string path = indexPath("table.points", i);
             const TablePoint& p = m.table[i];
-            if (checkRange(out, fieldPath(path, "nominal_mm"), p.nominalMm, -1e6, 1e6, msg::Unit::Mm) && i > 0
+            if (checkRange(out, fieldPath(path, "nominal_mm"), p.nominalMm, -1e6, 1e6, motion::msg::Unit::Mm) && i > 0
                 && std::isfinite(m.table[i - 1].nominalMm)) {
                 const double previous = m.table[i - 1].nominalMm;
                 if (!(p.nominalMm > previous))
                     out.push_back({fieldPath(path, "nominal_mm"),
-                                   msg::make("compensation.nominals_not_increasing",
-                                             {msg::real("value", p.nominalMm, msg::Unit::Mm), msg::real("previous", previous, msg::Unit::Mm)})});
+                                   motion::msg::make("compensation.nominals_not_increasing",
+                                             {motion::msg::real("value", p.nominalMm, motion::msg::Unit::Mm), motion::msg::real("previous", previous, motion::msg::Unit::Mm)})});
                 else if (p.nominalMm - previous < kMinTableSpacingMm * (1 - 1e-9))
                     out.push_back({fieldPath(path, "nominal_mm"),
-                                   msg::make("compensation.nominals_too_close",
-                                             {msg::real("value", p.nominalMm, msg::Unit::Mm), msg::real("previous", previous, msg::Unit::Mm),
-                                              msg::real("min", kMinTableSpacingMm, msg::Unit::Mm)})});
+                                   motion::msg::make("compensation.nominals_too_close",
+                                             {motion::msg::real("value", p.nominalMm, motion::msg::Unit::Mm), motion::msg::real("previous", previous, motion::msg::Unit::Mm),
+                                              motion::msg::real("min", kMinTableSpacingMm, motion::msg::Unit::Mm)})});
             }
             checkRange(out, fieldPath(path, m.perDirection ? "correction_up_um" : "correction_um"), p.correctionUpUm, -kMaxCorrectionUm,
-                       kMaxCorrectionUm, msg::Unit::Um);
+                       kMaxCorrectionUm, motion::msg::Unit::Um);
             if (m.perDirection)
-                checkRange(out, fieldPath(path, "correction_down_um"), p.correctionDownUm, -kMaxCorrectionUm, kMaxCorrectionUm, msg::Unit::Um);
+                checkRange(out, fieldPath(path, "correction_down_um"), p.correctionDownUm, -kMaxCorrectionUm, kMaxCorrectionUm, motion::msg::Unit::Um);
         }
         if (m.perDirection && m.backlashUm != 0)
-            out.push_back({"backlash_um", msg::make("compensation.backlash_with_directions", {msg::real("value", m.backlashUm, msg::Unit::Um)})});
+            out.push_back({"backlash_um", motion::msg::make("compensation.backlash_with_directions", {motion::msg::real("value", m.backlashUm, motion::msg::Unit::Um)})});
     }
-    checkRange(out, "backlash_um", m.backlashUm, -kMaxCorrectionUm, kMaxCorrectionUm, msg::Unit::Um);
+    checkRange(out, "backlash_um", m.backlashUm, -kMaxCorrectionUm, kMaxCorrectionUm, motion::msg::Unit::Um);
     return out;
 }
 

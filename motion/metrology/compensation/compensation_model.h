@@ -72,7 +72,7 @@ constexpr double kMinTableSpacingMm = 0.001;
 /// at 101 points), a table of 2–256 points with nominals increasing by 1 µm or more,
 /// corrections and backlash finite and within ±10 mm, no backlash beside
 /// per-direction columns.
-msg::Problems validate(const CompensationModel& m);
+motion::msg::Problems validate(const CompensationModel& m);
 
 /// b = −B̄ in µm (0 for a unidirectional evaluation, which has no reversal).
 double backlashUmFrom(const Evaluation& e);

@@ -125,16 +125,16 @@ FitTable fitPolynomials(const std::vector<FitPoint>& points, std::optional<int> 
     FitTable out;
     for (std::size_t i = 0; i < points.size(); ++i) {
         if (!std::isfinite(points[i].positionMm))
-            out.problems.push_back({fieldPath(indexPath("points", i), "position_mm"), msg::make("accuracy.value_not_finite")});
+            out.problems.push_back({fieldPath(indexPath("points", i), "position_mm"), motion::msg::make("accuracy.value_not_finite")});
         if (!std::isfinite(points[i].errorUm))
-            out.problems.push_back({fieldPath(indexPath("points", i), "error_um"), msg::make("accuracy.value_not_finite")});
+            out.problems.push_back({fieldPath(indexPath("points", i), "error_um"), motion::msg::make("accuracy.value_not_finite")});
     }
     if (operatorOrder && (*operatorOrder < 1 || *operatorOrder > kMaxFitOrder))
-        out.problems.push_back({"order", msg::make("compensation.order_out_of_range",
-                                                   {msg::integer("order", *operatorOrder), msg::integer("min", 1), msg::integer("max", kMaxFitOrder)})});
+        out.problems.push_back({"order", motion::msg::make("compensation.order_out_of_range",
+                                                   {motion::msg::integer("order", *operatorOrder), motion::msg::integer("min", 1), motion::msg::integer("max", kMaxFitOrder)})});
     if (points.size() < 3)
-        out.problems.push_back({"points", msg::make("compensation.too_few_points",
-                                                    {msg::integer("count", static_cast<long long>(points.size())), msg::integer("min", 3)})});
+        out.problems.push_back({"points", motion::msg::make("compensation.too_few_points",
+                                                    {motion::msg::integer("count", static_cast<long long>(points.size())), motion::msg::integer("min", 3)})});
     if (hasErrors(out.problems))
         return out;
 
@@ -144,10 +144,10 @@ FitTable fitPolynomials(const std::vector<FitPoint>& points, std::optional<int> 
     if (operatorOrder) {
         const PolynomialFit& f = out.orders[static_cast<std::size_t>(*operatorOrder - 1)];
         if (!f.available) {
-            out.problems.push_back({"order", msg::make("compensation.order_needs_more_points",
-                                                       {msg::integer("order", *operatorOrder),
-                                                        msg::integer("count", static_cast<long long>(points.size())),
-                                                        msg::integer("min", *operatorOrder + 2)})});
+            out.problems.push_back({"order", motion::msg::make("compensation.order_needs_more_points",
+                                                       {motion::msg::integer("order", *operatorOrder),
+                                                        motion::msg::integer("count", static_cast<long long>(points.size())),
+                                                        motion::msg::integer("min", *operatorOrder + 2)})});
             return out;
         }
         out.chosenOrder = *operatorOrder;
@@ -165,8 +165,8 @@ FitTable fitPolynomials(const std::vector<FitPoint>& points, std::optional<int> 
             best = &f;
     }
     if (!best) {
-        out.problems.push_back({"points", msg::make("compensation.too_few_points",
-                                                    {msg::integer("count", static_cast<long long>(distinctPositions(points))), msg::integer("min", 3)})});
+        out.problems.push_back({"points", motion::msg::make("compensation.too_few_points",
+                                                    {motion::msg::integer("count", static_cast<long long>(distinctPositions(points))), motion::msg::integer("min", 3)})});
         return out;
     }
     out.chosenOrder = best->order;

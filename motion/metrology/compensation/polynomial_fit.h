@@ -37,7 +37,7 @@ struct FitTable {
     std::vector<PolynomialFit> orders;    ///< orders[k] has order k + 1
     int chosenOrder = 0;                  ///< 0 when nothing could be fitted
     bool chosenByOperator = false;
-    msg::Problems problems;
+    motion::msg::Problems problems;
 
     const PolynomialFit* chosen() const;
 };
@@ -59,7 +59,7 @@ PolynomialFit fitPolynomial(const std::vector<FitPoint>& points, int order);
 /// the order k chosen so far (F > 1 is exactly "adjusted R² is higher", so the order
 /// chosen always has a higher adjusted R² than every order it replaced). Residuals at
 /// rounding level count as none, so exact data picks the lowest exact order.
-/// msg::Problems: fewer than 3 points, a value that is not finite, an operator's order
+/// motion::msg::Problems: fewer than 3 points, a value that is not finite, an operator's order
 /// outside 1–5 or without enough points.
 FitTable fitPolynomials(const std::vector<FitPoint>& points, std::optional<int> operatorOrder = std::nullopt);
 

@@ -61,14 +61,14 @@ struct PolarPath {
     }
 };
 
-void checkPlane(msg::Problems& out, double centre, double radius, const AxisLimits& l, const std::string& axis)
+void checkPlane(motion::msg::Problems& out, double centre, double radius, const AxisLimits& l, const std::string& axis)
 {
     if (l.minMm && centre - radius < *l.minMm)
-        out.push_back({"radius_mm", msg::make("accuracy.circle.below_limit", {msg::verbatim("axis", axis), msg::real("value", centre - radius, msg::Unit::Mm),
-                                                                              msg::real("limit", *l.minMm, msg::Unit::Mm)})});
+        out.push_back({"radius_mm", motion::msg::make("accuracy.circle.below_limit", {motion::msg::verbatim("axis", axis), motion::msg::real("value", centre - radius, motion::msg::Unit::Mm),
+                                                                              motion::msg::real("limit", *l.minMm, motion::msg::Unit::Mm)})});
     if (l.maxMm && centre + radius > *l.maxMm)
-        out.push_back({"radius_mm", msg::make("accuracy.circle.above_limit", {msg::verbatim("axis", axis), msg::real("value", centre + radius, msg::Unit::Mm),
-                                                                              msg::real("limit", *l.maxMm, msg::Unit::Mm)})});
+        out.push_back({"radius_mm", motion::msg::make("accuracy.circle.above_limit", {motion::msg::verbatim("axis", axis), motion::msg::real("value", centre + radius, motion::msg::Unit::Mm),
+                                                                              motion::msg::real("limit", *l.maxMm, motion::msg::Unit::Mm)})});
 }
 
 } // namespace
@@ -83,37 +83,37 @@ const char* rotationTermId(Rotation r)
     return r == Rotation::Cw ? "rotation.cw" : "rotation.ccw";
 }
 
-msg::Problems validate(const CircularTest& t, const XyLimits& limits)
+motion::msg::Problems validate(const CircularTest& t, const XyLimits& limits)
 {
-    msg::Problems out;
+    motion::msg::Problems out;
     auto letter = [](char c) { return c >= 'A' && c <= 'Z'; };
     if (t.axes.size() != 2 || !letter(t.axes[0]) || !letter(t.axes[1]) || t.axes[0] == t.axes[1])
-        out.push_back({"axes", msg::make("accuracy.circle.axes_invalid", {msg::verbatim("axes", t.axes)})});
-    const bool cx = checkRange(out, "centre_mm.x_mm", t.centreMm.xMm, -1e6, 1e6, msg::Unit::Mm);
-    const bool cy = checkRange(out, "centre_mm.y_mm", t.centreMm.yMm, -1e6, 1e6, msg::Unit::Mm);
-    if (checkRange(out, "radius_mm", t.radiusMm, -INFINITY, 10000, msg::Unit::Mm)) {
+        out.push_back({"axes", motion::msg::make("accuracy.circle.axes_invalid", {motion::msg::verbatim("axes", t.axes)})});
+    const bool cx = checkRange(out, "centre_mm.x_mm", t.centreMm.xMm, -1e6, 1e6, motion::msg::Unit::Mm);
+    const bool cy = checkRange(out, "centre_mm.y_mm", t.centreMm.yMm, -1e6, 1e6, motion::msg::Unit::Mm);
+    if (checkRange(out, "radius_mm", t.radiusMm, -INFINITY, 10000, motion::msg::Unit::Mm)) {
         if (!(t.radiusMm > 0))
-            out.push_back({"radius_mm", msg::make("accuracy.value_not_positive", {msg::real("value", t.radiusMm, msg::Unit::Mm)})});
+            out.push_back({"radius_mm", motion::msg::make("accuracy.value_not_positive", {motion::msg::real("value", t.radiusMm, motion::msg::Unit::Mm)})});
         else if (cx && cy) {
             checkPlane(out, t.centreMm.xMm, t.radiusMm, limits.x, t.axes.substr(0, 1));
             checkPlane(out, t.centreMm.yMm, t.radiusMm, limits.y, t.axes.size() > 1 ? t.axes.substr(1, 1) : t.axes);
         }
     }
     const double maxFeed = std::min(kMaxFeedMmS, limits.maxFeedMmS.value_or(kMaxFeedMmS));
-    if (checkRange(out, "feed_mm_s", t.feedMmS, -INFINITY, maxFeed, msg::Unit::MmPerS) && !(t.feedMmS > 0))
-        out.push_back({"feed_mm_s", msg::make("accuracy.value_not_positive", {msg::real("value", t.feedMmS, msg::Unit::MmPerS)})});
+    if (checkRange(out, "feed_mm_s", t.feedMmS, -INFINITY, maxFeed, motion::msg::Unit::MmPerS) && !(t.feedMmS > 0))
+        out.push_back({"feed_mm_s", motion::msg::make("accuracy.value_not_positive", {motion::msg::real("value", t.feedMmS, motion::msg::Unit::MmPerS)})});
     if (!t.clockwise && !t.counterClockwise)
-        out.push_back({"directions", msg::make("accuracy.circle.no_direction")});
-    checkRange(out, "lead_arc_deg", t.leadArcDeg, 0, 180, msg::Unit::Deg);
+        out.push_back({"directions", motion::msg::make("accuracy.circle.no_direction")});
+    checkRange(out, "lead_arc_deg", t.leadArcDeg, 0, 180, motion::msg::Unit::Deg);
     if (t.samplesPerRevolution < static_cast<int>(kMinSamples) || t.samplesPerRevolution > 100000)
         out.push_back({"samples_per_revolution",
-                       msg::make(t.samplesPerRevolution < static_cast<int>(kMinSamples) ? "accuracy.value_below" : "accuracy.value_above",
-                                 {msg::integer("value", t.samplesPerRevolution),
-                                  t.samplesPerRevolution < static_cast<int>(kMinSamples) ? msg::integer("min", static_cast<long long>(kMinSamples))
-                                                                                         : msg::integer("max", 100000)})});
+                       motion::msg::make(t.samplesPerRevolution < static_cast<int>(kMinSamples) ? "accuracy.value_below" : "accuracy.value_above",
+                                 {motion::msg::integer("value", t.samplesPerRevolution),
+                                  t.samplesPerRevolution < static_cast<int>(kMinSamples) ? motion::msg::integer("min", static_cast<long long>(kMinSamples))
+                                                                                         : motion::msg::integer("max", 100000)})});
     for (const auto& [key, v] : {std::pair{"max_g_mm", t.maxGMm}, std::pair{"max_h_mm", t.maxHMm}})
-        if (v && checkRange(out, key, *v, -INFINITY, 1000, msg::Unit::Mm) && !(*v > 0))
-            out.push_back({key, msg::make("accuracy.value_not_positive", {msg::real("value", *v, msg::Unit::Mm)})});
+        if (v && checkRange(out, key, *v, -INFINITY, 1000, motion::msg::Unit::Mm) && !(*v > 0))
+            out.push_back({key, motion::msg::make("accuracy.value_not_positive", {motion::msg::real("value", *v, motion::msg::Unit::Mm)})});
     return out;
 }
 
@@ -180,29 +180,29 @@ CircularEvaluation evaluate(const CircularTest& t, const std::vector<CircularRun
         const std::string path = indexPath("runs", k);
         auto& already = seen[run.rotation == Rotation::Cw ? 0 : 1];
         if (already)
-            out.problems.push_back({path, msg::make("accuracy.circle.direction_twice", {msg::term("rotation", rotationTermId(run.rotation))})});
+            out.problems.push_back({path, motion::msg::make("accuracy.circle.direction_twice", {motion::msg::term("rotation", rotationTermId(run.rotation))})});
         already = true;
         if (run.samplesMm.size() < kMinSamples) {
-            out.problems.push_back({path, msg::make("accuracy.circle.too_few_samples",
-                                                    {msg::integer("count", static_cast<long long>(run.samplesMm.size())),
-                                                     msg::integer("min", static_cast<long long>(kMinSamples))})});
+            out.problems.push_back({path, motion::msg::make("accuracy.circle.too_few_samples",
+                                                    {motion::msg::integer("count", static_cast<long long>(run.samplesMm.size())),
+                                                     motion::msg::integer("min", static_cast<long long>(kMinSamples))})});
             continue;
         }
         bool finite = true;
         for (std::size_t i = 0; i < run.samplesMm.size() && finite; ++i)
             if (!std::isfinite(run.samplesMm[i].xMm) || !std::isfinite(run.samplesMm[i].yMm)) {
-                out.problems.push_back({indexPath(path + ".samples", i), msg::make("accuracy.value_not_finite")});
+                out.problems.push_back({indexPath(path + ".samples", i), motion::msg::make("accuracy.value_not_finite")});
                 finite = false;
             }
         if (!finite)
             continue;
         const double gapDeg = PolarPath(run.samplesMm, t.centreMm).largestGapRad() * 180 / kPi;
         if (gapDeg > kMaxSampleGapDeg)
-            out.problems.push_back({path, msg::make("accuracy.circle.incomplete_revolution",
-                                                    {msg::real("gap", gapDeg, msg::Unit::Deg), msg::real("max", kMaxSampleGapDeg, msg::Unit::Deg)})});
+            out.problems.push_back({path, motion::msg::make("accuracy.circle.incomplete_revolution",
+                                                    {motion::msg::real("gap", gapDeg, motion::msg::Unit::Deg), motion::msg::real("max", kMaxSampleGapDeg, motion::msg::Unit::Deg)})});
     }
     if (runs.empty())
-        out.problems.push_back({"runs", msg::make("accuracy.circle.no_runs")});
+        out.problems.push_back({"runs", motion::msg::make("accuracy.circle.no_runs")});
     if (hasErrors(out.problems))
         return out;
 
@@ -210,7 +210,7 @@ CircularEvaluation evaluate(const CircularTest& t, const std::vector<CircularRun
     for (const CircularRun& run : runs) {
         const auto fit = fitCircle(run.samplesMm);
         if (!fit) {
-            out.problems.push_back({"runs", msg::make("accuracy.circle.no_circle", {msg::term("rotation", rotationTermId(run.rotation))})});
+            out.problems.push_back({"runs", motion::msg::make("accuracy.circle.no_circle", {motion::msg::term("rotation", rotationTermId(run.rotation))})});
             return out;
         }
         RunResult r;
@@ -238,7 +238,7 @@ CircularEvaluation evaluate(const CircularTest& t, const std::vector<CircularRun
     if (runs.size() == 2) {
         const auto common = fitCircle(all);
         if (!common) {
-            out.problems.push_back({"runs", msg::make("accuracy.circle.no_circle", {msg::term("rotation", rotationTermId(runs[0].rotation))})});
+            out.problems.push_back({"runs", motion::msg::make("accuracy.circle.no_circle", {motion::msg::term("rotation", rotationTermId(runs[0].rotation))})});
             return out;
         }
         double lo = INFINITY, hi = -INFINITY;

@@ -44,7 +44,7 @@ struct CircularTest {
 
 /// Radius above 0, the circle inside the soft limits, a feed above 0 and within the
 /// instrument's, at least one direction, a lead arc of 0–180°, 8 samples or more.
-msg::Problems validate(const CircularTest& t, const XyLimits& limits = {});
+motion::msg::Problems validate(const CircularTest& t, const XyLimits& limits = {});
 
 struct CircleFit {
     XyPoint centreMm;
@@ -79,7 +79,7 @@ struct CircularEvaluation {
     std::vector<RunResult> runs;
     std::optional<double> bidirectionalDeviationMm;  ///< G(b), with both directions
     std::optional<double> hysteresisMm;              ///< H, with both directions
-    msg::Problems problems;
+    motion::msg::Problems problems;
     bool ok() const { return !hasErrors(problems); }
 };
 

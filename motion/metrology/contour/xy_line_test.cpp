@@ -23,13 +23,13 @@ bool finite(const XyPoint& p)
 
 /// `what` names the number as the axis test's messages do: "value" for a target,
 /// "position" for an overrun point.
-void checkInside(msg::Problems& out, const std::string& path, double v, const AxisLimits& l, const char* axis, const char* below, const char* above,
+void checkInside(motion::msg::Problems& out, const std::string& path, double v, const AxisLimits& l, const char* axis, const char* below, const char* above,
                  const char* what)
 {
     if (l.minMm && v < *l.minMm)
-        out.push_back({path, msg::make(below, {msg::real(what, v, msg::Unit::Mm), msg::real("limit", *l.minMm, msg::Unit::Mm), msg::verbatim("axis", axis)})});
+        out.push_back({path, motion::msg::make(below, {motion::msg::real(what, v, motion::msg::Unit::Mm), motion::msg::real("limit", *l.minMm, motion::msg::Unit::Mm), motion::msg::verbatim("axis", axis)})});
     if (l.maxMm && v > *l.maxMm)
-        out.push_back({path, msg::make(above, {msg::real(what, v, msg::Unit::Mm), msg::real("limit", *l.maxMm, msg::Unit::Mm), msg::verbatim("axis", axis)})});
+        out.push_back({path, motion::msg::make(above, {motion::msg::real(what, v, motion::msg::Unit::Mm), motion::msg::real("limit", *l.maxMm, motion::msg::Unit::Mm), motion::msg::verbatim("axis", axis)})});
 }
 
 } // namespace
@@ -64,33 +64,33 @@ double lineAngleRad(const std::vector<XyPoint>& p)
     return std::atan2(p.back().yMm - p.front().yMm, p.back().xMm - p.front().xMm);
 }
 
-msg::Problems validate(const XyLineTest& t, const XyLimits& limits)
+motion::msg::Problems validate(const XyLineTest& t, const XyLimits& limits)
 {
-    msg::Problems out;
+    motion::msg::Problems out;
     const bool line = t.fromMm || t.toMm;
     if (!t.pointsMm.empty() && line)
-        out.push_back({"points_mm", msg::make("accuracy.targets_and_grid")});
+        out.push_back({"points_mm", motion::msg::make("accuracy.targets_and_grid")});
     else if (t.pointsMm.empty() && !line)
-        out.push_back({"points_mm", msg::make("accuracy.no_targets")});
+        out.push_back({"points_mm", motion::msg::make("accuracy.no_targets")});
     else if (line && !(t.fromMm && t.toMm))
-        out.push_back({t.fromMm ? "to_mm" : "from_mm", msg::make("accuracy.no_targets")});
+        out.push_back({t.fromMm ? "to_mm" : "from_mm", motion::msg::make("accuracy.no_targets")});
 
     const std::vector<XyPoint> points = pointsOf(t);
     const std::string listPath = t.pointsMm.empty() ? "count" : "points_mm";
     const auto n = static_cast<long long>(line ? t.count : static_cast<int>(points.size()));
     if (!hasErrors(out)) {
         if (n < 2)
-            out.push_back({listPath, msg::make("accuracy.too_few_targets", {msg::integer("count", n), msg::integer("min", 2)})});
+            out.push_back({listPath, motion::msg::make("accuracy.too_few_targets", {motion::msg::integer("count", n), motion::msg::integer("min", 2)})});
         else if (n > kMaxTargets)
-            out.push_back({listPath, msg::make("accuracy.value_above", {msg::integer("value", n), msg::integer("max", kMaxTargets)})});
+            out.push_back({listPath, motion::msg::make("accuracy.value_above", {motion::msg::integer("value", n), motion::msg::integer("max", kMaxTargets)})});
         else if (n < kIsoTargets)
-            out.push_back({listPath, msg::make("accuracy.fewer_targets_than_iso", {msg::integer("count", n), msg::integer("recommended", kIsoTargets)}),
-                           msg::Severity::Warning});
+            out.push_back({listPath, motion::msg::make("accuracy.fewer_targets_than_iso", {motion::msg::integer("count", n), motion::msg::integer("recommended", kIsoTargets)}),
+                           motion::msg::Severity::Warning});
     }
     bool allFinite = !points.empty();
     for (std::size_t i = 0; i < points.size(); ++i)
         if (!finite(points[i])) {
-            out.push_back({line ? std::string("from_mm") : indexPath("points_mm", i), msg::make("accuracy.value_not_finite")});
+            out.push_back({line ? std::string("from_mm") : indexPath("points_mm", i), motion::msg::make("accuracy.value_not_finite")});
             allFinite = false;
         }
     if (allFinite && points.size() >= 2 && !hasErrors(out)) {
@@ -100,16 +100,16 @@ msg::Problems validate(const XyLineTest& t, const XyLimits& limits)
             const std::string path = line ? std::string("count") : indexPath("points_mm", i);
             const double off = std::fabs(across(o, theta, points[i]));
             if (off > kMaxOffLineMm)
-                out.push_back({path, msg::make("accuracy.xy.point_off_line",
-                                               {msg::real("distance", off, msg::Unit::Mm), msg::real("max", kMaxOffLineMm, msg::Unit::Mm)})});
+                out.push_back({path, motion::msg::make("accuracy.xy.point_off_line",
+                                               {motion::msg::real("distance", off, motion::msg::Unit::Mm), motion::msg::real("max", kMaxOffLineMm, motion::msg::Unit::Mm)})});
             if (i > 0 && !(along(o, theta, points[i]) > along(o, theta, points[i - 1]) + 1e-6))
-                out.push_back({path, msg::make("accuracy.targets_not_increasing",
-                                               {msg::real("value", along(o, theta, points[i]), msg::Unit::Mm),
-                                                msg::real("previous", along(o, theta, points[i - 1]), msg::Unit::Mm)})});
+                out.push_back({path, motion::msg::make("accuracy.targets_not_increasing",
+                                               {motion::msg::real("value", along(o, theta, points[i]), motion::msg::Unit::Mm),
+                                                motion::msg::real("previous", along(o, theta, points[i - 1]), motion::msg::Unit::Mm)})});
             checkInside(out, fieldPath(path, "x_mm"), points[i].xMm, limits.x, "X", "accuracy.target_below_limit", "accuracy.target_above_limit", "value");
             checkInside(out, fieldPath(path, "y_mm"), points[i].yMm, limits.y, "Y", "accuracy.target_below_limit", "accuracy.target_above_limit", "value");
         }
-        if (checkRange(out, "overrun_mm", t.overrunMm, 0, 1000, msg::Unit::Mm)) {
+        if (checkRange(out, "overrun_mm", t.overrunMm, 0, 1000, motion::msg::Unit::Mm)) {
             const XyPoint before{o.xMm - t.overrunMm * std::cos(theta), o.yMm - t.overrunMm * std::sin(theta)};
             checkInside(out, "overrun_mm", before.xMm, limits.x, "X", "accuracy.overrun_below_limit", "accuracy.overrun_above_limit", "position");
             checkInside(out, "overrun_mm", before.yMm, limits.y, "Y", "accuracy.overrun_below_limit", "accuracy.overrun_above_limit", "position");
@@ -117,16 +117,16 @@ msg::Problems validate(const XyLineTest& t, const XyLimits& limits)
     }
 
     if (t.cycles < 2)
-        out.push_back({"cycles", msg::make("accuracy.too_few_cycles", {msg::integer("count", t.cycles), msg::integer("min", 2)})});
+        out.push_back({"cycles", motion::msg::make("accuracy.too_few_cycles", {motion::msg::integer("count", t.cycles), motion::msg::integer("min", 2)})});
     else if (t.cycles > kMaxCycles)
-        out.push_back({"cycles", msg::make("accuracy.value_above", {msg::integer("value", t.cycles), msg::integer("max", kMaxCycles)})});
+        out.push_back({"cycles", motion::msg::make("accuracy.value_above", {motion::msg::integer("value", t.cycles), motion::msg::integer("max", kMaxCycles)})});
     else if (t.cycles < kIsoCycles)
-        out.push_back({"cycles", msg::make("accuracy.fewer_cycles_than_iso", {msg::integer("count", t.cycles), msg::integer("recommended", kIsoCycles)}),
-                       msg::Severity::Warning});
+        out.push_back({"cycles", motion::msg::make("accuracy.fewer_cycles_than_iso", {motion::msg::integer("count", t.cycles), motion::msg::integer("recommended", kIsoCycles)}),
+                       motion::msg::Severity::Warning});
     const double maxFeed = std::min(kMaxFeedMmS, limits.maxFeedMmS.value_or(kMaxFeedMmS));
-    if (checkRange(out, "feed_mm_s", t.feedMmS, -INFINITY, maxFeed, msg::Unit::MmPerS) && !(t.feedMmS > 0))
-        out.push_back({"feed_mm_s", msg::make("accuracy.value_not_positive", {msg::real("value", t.feedMmS, msg::Unit::MmPerS)})});
-    checkRange(out, "dwell_s", t.dwellS, 0, 3600, msg::Unit::S);
+    if (checkRange(out, "feed_mm_s", t.feedMmS, -INFINITY, maxFeed, motion::msg::Unit::MmPerS) && !(t.feedMmS > 0))
+        out.push_back({"feed_mm_s", motion::msg::make("accuracy.value_not_positive", {motion::msg::real("value", t.feedMmS, motion::msg::Unit::MmPerS)})});
+    checkRange(out, "dwell_s", t.dwellS, 0, 3600, motion::msg::Unit::S);
     validateSettle(t.settle, out);
     validateTolerances(t.contourTolerances, "contour_tolerances", out);
     return out;
@@ -159,8 +159,8 @@ XyEvaluation evaluate(const std::vector<XyPoint>& targets, const std::vector<XyR
         const XyReading& r = readings[k];
         if (r.pointIndex >= targets.size()) {
             out.problems.push_back({indexPath("readings", k),
-                                    msg::make("accuracy.xy.no_such_point", {msg::integer("index", static_cast<long long>(r.pointIndex)),
-                                                                            msg::integer("count", static_cast<long long>(targets.size()))})});
+                                    motion::msg::make("accuracy.xy.no_such_point", {motion::msg::integer("index", static_cast<long long>(r.pointIndex)),
+                                                                            motion::msg::integer("count", static_cast<long long>(targets.size()))})});
             continue;
         }
         const XyPoint& p = targets[r.pointIndex];
@@ -186,11 +186,11 @@ XyEvaluation evaluate(const std::vector<XyPoint>& targets, const std::vector<XyR
     if (axisMoves(true))
         out.x = evaluate(x);
     else
-        out.problems.push_back({"", msg::make("accuracy.xy.axis_does_not_move", {msg::verbatim("axis", "X")}), msg::Severity::Warning});
+        out.problems.push_back({"", motion::msg::make("accuracy.xy.axis_does_not_move", {motion::msg::verbatim("axis", "X")}), motion::msg::Severity::Warning});
     if (axisMoves(false))
         out.y = evaluate(y);
     else
-        out.problems.push_back({"", msg::make("accuracy.xy.axis_does_not_move", {msg::verbatim("axis", "Y")}), msg::Severity::Warning});
+        out.problems.push_back({"", motion::msg::make("accuracy.xy.axis_does_not_move", {motion::msg::verbatim("axis", "Y")}), motion::msg::Severity::Warning});
     out.contour = evaluate(contour);
     return out;
 }

@@ -56,7 +56,7 @@ double lineAngleRad(const std::vector<XyPoint>& points);
 double contourErrorMm(double thetaRad, double exMm, double eyMm);   ///< −sinθ·e_x + cosθ·e_y
 double alongLineErrorMm(double thetaRad, double exMm, double eyMm); ///< cosθ·e_x + sinθ·e_y
 
-msg::Problems validate(const XyLineTest& t, const XyLimits& limits = {});
+motion::msg::Problems validate(const XyLineTest& t, const XyLimits& limits = {});
 
 struct XyStop {
     int cycle = 1;
@@ -84,7 +84,7 @@ struct XyEvaluation {
     Evaluation y;
     Evaluation contour;
     std::vector<double> contourMm;
-    msg::Problems problems;   ///< about the readings themselves (a point index that does not exist)
+    motion::msg::Problems problems;   ///< about the readings themselves (a point index that does not exist)
 };
 XyEvaluation evaluate(const std::vector<XyPoint>& targets, const std::vector<XyReading>& readings);
 

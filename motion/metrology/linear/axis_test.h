@@ -78,10 +78,10 @@ std::vector<double> targetsOf(const AxisTest& t);
 /// (warnings), targets not increasing or not finite, targets or overrun points
 /// outside the soft limits, a feed that is not above 0 or above the instrument's
 /// (or 1000 mm/s), settle times that contradict each other.
-msg::Problems validate(const AxisTest& t, const AxisLimits& limits = {});
+motion::msg::Problems validate(const AxisTest& t, const AxisLimits& limits = {});
 
 /// The settle rule's checks alone (paths "settle.tolerance_um", …), shared by the
 /// XY and circular tests.
-void validateSettle(const SettleRule& s, msg::Problems& out);
+void validateSettle(const SettleRule& s, motion::msg::Problems& out);
 
 } // namespace motion::metrology

@@ -42,9 +42,9 @@ std::pair<double, double> meanAndS(const std::vector<double>& v)
     return {mean, std::sqrt(ss / static_cast<double>(v.size() - 1))};
 }
 
-msg::Arg targetArg(double mm)
+motion::msg::Arg targetArg(double mm)
 {
-    return msg::real("target", mm, msg::Unit::Mm);
+    return motion::msg::real("target", mm, motion::msg::Unit::Mm);
 }
 
 std::string readingPath(std::size_t k)
@@ -63,16 +63,16 @@ Evaluation evaluate(const std::vector<Reading>& readings, const EvaluationOption
         const Reading& r = readings[k];
         bool good = true;
         if (!std::isfinite(r.targetMm)) {
-            out.problems.push_back({fieldPath(readingPath(k), "target_mm"), msg::make("accuracy.value_not_finite")});
+            out.problems.push_back({fieldPath(readingPath(k), "target_mm"), motion::msg::make("accuracy.value_not_finite")});
             good = false;
         }
         if (!std::isfinite(r.measuredMm)) {
-            out.problems.push_back({fieldPath(readingPath(k), "measured_mm"), msg::make("accuracy.value_not_finite")});
+            out.problems.push_back({fieldPath(readingPath(k), "measured_mm"), motion::msg::make("accuracy.value_not_finite")});
             good = false;
         }
         if (r.cycle < 1) {
             out.problems.push_back({fieldPath(readingPath(k), "cycle"),
-                                    msg::make("accuracy.value_below", {msg::integer("value", r.cycle), msg::integer("min", 1)})});
+                                    motion::msg::make("accuracy.value_below", {motion::msg::integer("value", r.cycle), motion::msg::integer("min", 1)})});
             good = false;
         }
         if (!good)
@@ -81,9 +81,9 @@ Evaluation evaluate(const std::vector<Reading>& readings, const EvaluationOption
         const auto id = std::make_tuple(key, static_cast<int>(r.direction), r.cycle);
         if (auto it = seen.find(id); it != seen.end()) {
             out.problems.push_back({readingPath(k),
-                                    msg::make("accuracy.duplicate_reading",
-                                              {targetArg(r.targetMm), msg::term("direction", directionTermId(r.direction)),
-                                               msg::integer("cycle", r.cycle), msg::integer("first", static_cast<long long>(it->second))})});
+                                    motion::msg::make("accuracy.duplicate_reading",
+                                              {targetArg(r.targetMm), motion::msg::term("direction", directionTermId(r.direction)),
+                                               motion::msg::integer("cycle", r.cycle), motion::msg::integer("first", static_cast<long long>(it->second))})});
             continue;
         }
         seen.emplace(id, k);
@@ -98,8 +98,8 @@ Evaluation evaluate(const std::vector<Reading>& readings, const EvaluationOption
     if (hasErrors(out.problems))
         return out;
     if (groups.size() < static_cast<std::size_t>(kMinTargets)) {
-        out.problems.push_back({"readings", msg::make("accuracy.too_few_targets",
-                                                      {msg::integer("count", static_cast<long long>(groups.size())), msg::integer("min", kMinTargets)})});
+        out.problems.push_back({"readings", motion::msg::make("accuracy.too_few_targets",
+                                                      {motion::msg::integer("count", static_cast<long long>(groups.size())), motion::msg::integer("min", kMinTargets)})});
         return out;
     }
 
@@ -114,24 +114,24 @@ Evaluation evaluate(const std::vector<Reading>& readings, const EvaluationOption
     auto checkSample = [&](const Group& g, const Sample& s, const Sample& other, Direction d) {
         if (s.deviationsMm.empty()) {
             out.problems.push_back({readingPath(other.firstReading),
-                                    msg::make("accuracy.direction_missing",
-                                              {targetArg(g.targetMm), msg::term("direction", directionTermId(d))})});
+                                    motion::msg::make("accuracy.direction_missing",
+                                              {targetArg(g.targetMm), motion::msg::term("direction", directionTermId(d))})});
             return;
         }
         const auto n = static_cast<long long>(s.deviationsMm.size());
         if (n < kMinCycles) {
             out.problems.push_back({readingPath(s.firstReading),
-                                    msg::make("accuracy.too_few_cycles",
-                                              {msg::integer("count", n), msg::integer("min", kMinCycles), targetArg(g.targetMm),
-                                               msg::term("direction", directionTermId(d))})});
+                                    motion::msg::make("accuracy.too_few_cycles",
+                                              {motion::msg::integer("count", n), motion::msg::integer("min", kMinCycles), targetArg(g.targetMm),
+                                               motion::msg::term("direction", directionTermId(d))})});
             return;
         }
         if (s.deviationsMm.size() != expected)
             out.problems.push_back({readingPath(s.firstReading),
-                                    msg::make("accuracy.cycle_counts_differ",
-                                              {targetArg(g.targetMm), msg::term("direction", directionTermId(d)), msg::integer("count", n),
-                                               msg::integer("expected", static_cast<long long>(expected))}),
-                                    options.allowUnequalCycles ? msg::Severity::Warning : msg::Severity::Error});
+                                    motion::msg::make("accuracy.cycle_counts_differ",
+                                              {targetArg(g.targetMm), motion::msg::term("direction", directionTermId(d)), motion::msg::integer("count", n),
+                                               motion::msg::integer("expected", static_cast<long long>(expected))}),
+                                    options.allowUnequalCycles ? motion::msg::Severity::Warning : motion::msg::Severity::Error});
     };
     for (const auto& [key, g] : groups) {
         checkSample(g, g.up, g.down, Direction::Up);
@@ -166,8 +166,8 @@ Evaluation summarize(std::vector<TargetStatistics> targets, bool bidirectional)
     Evaluation out;
     out.bidirectional = bidirectional;
     if (targets.size() < static_cast<std::size_t>(kMinTargets)) {
-        out.problems.push_back({"targets", msg::make("accuracy.too_few_targets",
-                                                     {msg::integer("count", static_cast<long long>(targets.size())), msg::integer("min", kMinTargets)})});
+        out.problems.push_back({"targets", motion::msg::make("accuracy.too_few_targets",
+                                                     {motion::msg::integer("count", static_cast<long long>(targets.size())), motion::msg::integer("min", kMinTargets)})});
         return out;
     }
     for (std::size_t i = 0; i < targets.size(); ++i) {
@@ -175,12 +175,12 @@ Evaluation summarize(std::vector<TargetStatistics> targets, bool bidirectional)
         const std::string path = indexPath("targets", i);
         if (i > 0 && !(t.targetMm > targets[i - 1].targetMm))
             out.problems.push_back({fieldPath(path, "target_mm"),
-                                    msg::make("accuracy.targets_not_increasing",
-                                              {msg::real("value", t.targetMm, msg::Unit::Mm), msg::real("previous", targets[i - 1].targetMm, msg::Unit::Mm)})});
+                                    motion::msg::make("accuracy.targets_not_increasing",
+                                              {motion::msg::real("value", t.targetMm, motion::msg::Unit::Mm), motion::msg::real("previous", targets[i - 1].targetMm, motion::msg::Unit::Mm)})});
         const bool finite = std::isfinite(t.targetMm) && std::isfinite(t.meanUpMm) && std::isfinite(t.sUpMm) && t.sUpMm >= 0
             && (!bidirectional || (t.meanDownMm && t.sDownMm && std::isfinite(*t.meanDownMm) && std::isfinite(*t.sDownMm) && *t.sDownMm >= 0));
         if (!finite)
-            out.problems.push_back({path, msg::make("accuracy.statistics_incomplete", {targetArg(t.targetMm)})});
+            out.problems.push_back({path, motion::msg::make("accuracy.statistics_incomplete", {targetArg(t.targetMm)})});
     }
     if (hasErrors(out.problems))
         return out;

@@ -55,7 +55,7 @@ struct Evaluation {
     int cycles = 0;                        ///< the largest n of any target and direction
     std::vector<TargetStatistics> targets; ///< ascending target
     Figures figures;
-    msg::Problems problems;                     ///< paths "readings[k]" name the offending reading
+    motion::msg::Problems problems;                     ///< paths "readings[k]" name the offending reading
 
     /// Figures and targets are meaningful only without errors.
     bool ok() const { return !hasErrors(problems); }

@@ -41,15 +41,15 @@ std::size_t readingCount(const AxisTest& t)
 
 namespace motion::metrology {
 
-msg::Problems checkAgainstPlan(const AxisTest& t, const std::vector<Reading>& readings)
+motion::msg::Problems checkAgainstPlan(const AxisTest& t, const std::vector<Reading>& readings)
 {
-    msg::Problems out;
+    motion::msg::Problems out;
     const std::vector<Stop> plan = runSequence(t);
     if (plan.empty())
         return validate(t);
     if (readings.size() != plan.size())
-        out.push_back({"readings", msg::make("accuracy.reading_count_wrong", {msg::integer("count", static_cast<long long>(readings.size())),
-                                                                              msg::integer("expected", static_cast<long long>(plan.size()))})});
+        out.push_back({"readings", motion::msg::make("accuracy.reading_count_wrong", {motion::msg::integer("count", static_cast<long long>(readings.size())),
+                                                                              motion::msg::integer("expected", static_cast<long long>(plan.size()))})});
     auto key = [](double targetMm, Direction d, int cycle) {
         return std::to_string(std::llround(targetMm * 1e6)) + (d == Direction::Up ? "u" : "d") + std::to_string(cycle);
     };
@@ -62,16 +62,16 @@ msg::Problems checkAgainstPlan(const AxisTest& t, const std::vector<Reading>& re
         const auto it = planned.find(key(r.targetMm, r.direction, r.cycle));
         if (it == planned.end())
             out.push_back({indexPath("readings", k),
-                           msg::make("accuracy.reading_not_in_plan", {msg::real("target", r.targetMm, msg::Unit::Mm),
-                                                                      msg::term("direction", directionTermId(r.direction)), msg::integer("cycle", r.cycle)})});
+                           motion::msg::make("accuracy.reading_not_in_plan", {motion::msg::real("target", r.targetMm, motion::msg::Unit::Mm),
+                                                                      motion::msg::term("direction", directionTermId(r.direction)), motion::msg::integer("cycle", r.cycle)})});
         else
             read[it->second] = true;
     }
     for (std::size_t i = 0; i < plan.size(); ++i)
         if (!read[i]) {
-            out.push_back({"readings", msg::make("accuracy.reading_missing", {msg::real("target", plan[i].targetMm, msg::Unit::Mm),
-                                                                              msg::term("direction", directionTermId(plan[i].direction)),
-                                                                              msg::integer("cycle", plan[i].cycle)})});
+            out.push_back({"readings", motion::msg::make("accuracy.reading_missing", {motion::msg::real("target", plan[i].targetMm, motion::msg::Unit::Mm),
+                                                                              motion::msg::term("direction", directionTermId(plan[i].direction)),
+                                                                              motion::msg::integer("cycle", plan[i].cycle)})});
             break;
         }
     return out;

@@ -42,6 +42,6 @@ namespace motion::metrology {
 /// (else accuracy.reading_not_in_plan at "readings[k]": a target, direction or cycle
 /// the test does not have) and every stop read (else accuracy.reading_missing for
 /// the first missing one).
-msg::Problems checkAgainstPlan(const AxisTest& t, const std::vector<Reading>& readings);
+motion::msg::Problems checkAgainstPlan(const AxisTest& t, const std::vector<Reading>& readings);
 
 } // namespace motion::metrology

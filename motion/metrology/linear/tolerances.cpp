@@ -49,14 +49,14 @@ bool allPass(const std::vector<Verdict>& verdicts)
     return true;
 }
 
-void validateTolerances(const AxisTolerances& t, const std::string& path, msg::Problems& out)
+void validateTolerances(const AxisTolerances& t, const std::string& path, motion::msg::Problems& out)
 {
     auto check = [&](const char* key, const std::optional<double>& v) {
         if (!v)
             return;
         const std::string p = fieldPath(path, key);
-        if (checkRange(out, p, *v, -INFINITY, 1000, msg::Unit::Mm) && !(*v > 0))
-            out.push_back({p, msg::make("accuracy.value_not_positive", {msg::real("value", *v, msg::Unit::Mm)})});
+        if (checkRange(out, p, *v, -INFINITY, 1000, motion::msg::Unit::Mm) && !(*v > 0))
+            out.push_back({p, motion::msg::make("accuracy.value_not_positive", {motion::msg::real("value", *v, motion::msg::Unit::Mm)})});
     };
     check("a_mm", t.aMm);
     check("r_mm", t.rMm);

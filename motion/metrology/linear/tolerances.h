@@ -39,6 +39,6 @@ std::vector<Verdict> judge(const Evaluation& e, const AxisTolerances& t);
 bool allPass(const std::vector<Verdict>& verdicts);
 
 /// Each limit present must be a finite number above 0 (path "tolerances.a_mm", …).
-void validateTolerances(const AxisTolerances& t, const std::string& path, msg::Problems& out);
+void validateTolerances(const AxisTolerances& t, const std::string& path, motion::msg::Problems& out);
 
 } // namespace motion::metrology

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace plates {
+namespace motion::plates {
 namespace {
 using motion::kPi;
 }
@@ -93,19 +93,19 @@ PlateTransform scaledAxesFit(const std::vector<TeachPoint>& pts, const PlateTran
 
 } // namespace
 
-std::optional<CalibrationFit> fitCalibration(const std::vector<TeachPoint>& pts, FitModel model, msg::Message* error,
+std::optional<CalibrationFit> fitCalibration(const std::vector<TeachPoint>& pts, FitModel model, motion::msg::Message* error,
                                              double slotRotationDeg)
 {
-    auto fail = [&](const msg::Message& m) {
+    auto fail = [&](const motion::msg::Message& m) {
         if (error)
             *error = m;
         return std::nullopt;
     };
     if (pts.size() < 2)
-        return fail(msg::make("plate.calibration.too_few_wells"));
+        return fail(motion::msg::make("plate.calibration.too_few_wells"));
     for (const auto& t : pts)
         if (!std::isfinite(t.plateMm.x + t.plateMm.y + t.machineMm.x + t.machineMm.y))
-            return fail(msg::make("plate.calibration.no_position", {textArg("well", t.well)}));
+            return fail(motion::msg::make("plate.calibration.no_position", {textArg("well", t.well)}));
     double spreadPlate = 0, spreadMachine = 0;
     for (std::size_t i = 0; i < pts.size(); ++i)
         for (std::size_t j = 0; j < i; ++j) {
@@ -114,9 +114,9 @@ std::optional<CalibrationFit> fitCalibration(const std::vector<TeachPoint>& pts,
                                      std::hypot(pts[i].machineMm.x - pts[j].machineMm.x, pts[i].machineMm.y - pts[j].machineMm.y));
         }
     if (spreadPlate < 1 || spreadMachine < 1)
-        return fail(msg::make("plate.calibration.too_close"));
+        return fail(motion::msg::make("plate.calibration.too_close"));
     if (model == FitModel::ScaledAxes && pts.size() < 3)
-        return fail(msg::make("plate.calibration.scaled_needs_three"));
+        return fail(motion::msg::make("plate.calibration.scaled_needs_three"));
 
     CalibrationFit fit;
     fit.model = model;
@@ -129,7 +129,7 @@ std::optional<CalibrationFit> fitCalibration(const std::vector<TeachPoint>& pts,
             area = std::max(area, std::abs((pts[i].plateMm.x - a.x) * (pts[i + 1].plateMm.y - a.y)
                                            - (pts[i].plateMm.y - a.y) * (pts[i + 1].plateMm.x - a.x)));
         if (area < 1)
-            return fail(msg::make("plate.calibration.on_one_line"));
+            return fail(motion::msg::make("plate.calibration.on_one_line"));
         fit.transform = scaledAxesFit(pts, fit.transform);
     }
     const PlateTransform& t = fit.transform;
@@ -153,19 +153,19 @@ std::optional<CalibrationFit> fitCalibration(const std::vector<TeachPoint>& pts,
         std::string list;
         for (std::size_t i = 0; i < pts.size(); ++i)
             list += (i ? ", " : "") + pts[i].well + " " + formatMm(std::round(fit.residualMm[i] * 100) / 100);
-        fit.warnings.push_back(msg::make("plate.calibration.large_residual",
+        fit.warnings.push_back(motion::msg::make("plate.calibration.large_residual",
                                          {mmArg("max", std::round(fit.maxResidualMm * 100) / 100), textArg("list", list),
                                           mmArg("limit", kResidualWarnMm)}));
     }
     for (double s : {fit.scaleX, fit.scaleY})
         if (std::abs(s - 1) > kScaleWarn) {
-            fit.warnings.push_back(msg::make("plate.calibration.scale_off", {msg::real("scale", s)}));
+            fit.warnings.push_back(motion::msg::make("plate.calibration.scale_off", {motion::msg::real("scale", s)}));
             break;
         }
     const double turn = std::remainder(fit.rotationDeg - slotRotationDeg, 360.0);
     if (std::abs(turn) > kRotationWarnDeg)
-        fit.warnings.push_back(msg::make("plate.calibration.turned", {msg::real("angle", std::round(turn * 100) / 100, msg::Unit::Deg)}));
+        fit.warnings.push_back(motion::msg::make("plate.calibration.turned", {motion::msg::real("angle", std::round(turn * 100) / 100, motion::msg::Unit::Deg)}));
     return fit;
 }
 
-} // namespace plates
+} // namespace motion::plates

@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-namespace plates {
+namespace motion::plates {
 
 constexpr double kResidualWarnMm = 0.2;
 /// A scale further than this from 1 means the wrong labware or wrong wells.
@@ -57,7 +57,7 @@ struct CalibrationFit {
     std::vector<double> residualMm;    ///< per teach point, in their order
     double maxResidualMm = 0;
     double rmsResidualMm = 0;
-    std::vector<msg::Message> warnings; ///< plate.calibration.* for the operator
+    std::vector<motion::msg::Message> warnings; ///< plate.calibration.* for the operator
 };
 
 /// One slot's calibration as it is kept between runs.
@@ -73,7 +73,7 @@ struct SlotCalibration {
 /// Least-squares fit; nullopt with `error` when the points cannot fix the model
 /// (fewer than 2, taught wells on top of each other, non-finite numbers).
 /// `slotRotationDeg` is the slot's nominal turn: the warning is about departing from it.
-std::optional<CalibrationFit> fitCalibration(const std::vector<TeachPoint>& points, FitModel model, msg::Message* error,
+std::optional<CalibrationFit> fitCalibration(const std::vector<TeachPoint>& points, FitModel model, motion::msg::Message* error,
                                              double slotRotationDeg = 0);
 
-} // namespace plates
+} // namespace motion::plates

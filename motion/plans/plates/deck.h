@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace plates {
+namespace motion::plates {
 
 /// How one axis moves, as the firmware plans it: seed 000's S-curve with the
 /// acceleration phase stretched until every axis stays under its maxAccel.
@@ -63,6 +63,6 @@ struct Deck {
 
 /// Ids unique and present, speeds and accelerations positive, slots and
 /// stations inside the travel, a plate in one slot not overlapping another's.
-msg::Problems validateDeck(const Deck& deck);
+motion::msg::Problems validateDeck(const Deck& deck);
 
-} // namespace plates
+} // namespace motion::plates

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <set>
 
-namespace plates {
+namespace motion::plates {
 
 const char* wellShapeName(WellShape s) { return s == WellShape::Circular ? "circular" : "rectangular"; }
 
@@ -112,51 +112,51 @@ std::optional<Labware> findBuiltinLabware(const std::string& id)
     return std::nullopt;
 }
 
-msg::Problems validateLabware(const Labware& lw)
+motion::msg::Problems validateLabware(const Labware& lw)
 {
-    msg::Problems out;
+    motion::msg::Problems out;
     auto bad = [](double v) { return !std::isfinite(v) || v <= 0; };
     if (lw.id.empty())
-        out.push_back({"id", msg::make("plate.empty")});
+        out.push_back({"id", motion::msg::make("plate.empty")});
     if (bad(lw.lengthMm) || lw.lengthMm > 500)
-        out.push_back({"length_mm", msg::make("plate.size_out_of_range", {mmArg("value", lw.lengthMm), mmArg("max", 500)})});
+        out.push_back({"length_mm", motion::msg::make("plate.size_out_of_range", {mmArg("value", lw.lengthMm), mmArg("max", 500)})});
     if (bad(lw.widthMm) || lw.widthMm > 500)
-        out.push_back({"width_mm", msg::make("plate.size_out_of_range", {mmArg("value", lw.widthMm), mmArg("max", 500)})});
+        out.push_back({"width_mm", motion::msg::make("plate.size_out_of_range", {mmArg("value", lw.widthMm), mmArg("max", 500)})});
     if (bad(lw.heightMm) || lw.heightMm > 200)
-        out.push_back({"height_mm", msg::make("plate.size_out_of_range", {mmArg("value", lw.heightMm), mmArg("max", 200)})});
+        out.push_back({"height_mm", motion::msg::make("plate.size_out_of_range", {mmArg("value", lw.heightMm), mmArg("max", 200)})});
     if (lw.rows < 1 || lw.rows > kMaxRows || lw.columns < 1 || lw.columns > kMaxColumns)
-        out.push_back({"wells", msg::make("plate.labware.grid_size", {msg::integer("max_rows", kMaxRows), msg::integer("max_columns", kMaxColumns),
-                                                                      msg::integer("rows", lw.rows), msg::integer("columns", lw.columns)})});
+        out.push_back({"wells", motion::msg::make("plate.labware.grid_size", {motion::msg::integer("max_rows", kMaxRows), motion::msg::integer("max_columns", kMaxColumns),
+                                                                      motion::msg::integer("rows", lw.rows), motion::msg::integer("columns", lw.columns)})});
     if (lw.wells.empty())
-        out.push_back({"wells", msg::make("plate.labware.no_wells")});
+        out.push_back({"wells", motion::msg::make("plate.labware.no_wells")});
     std::set<WellId> seen;
     for (std::size_t k = 0; k < lw.wells.size(); ++k) {
         const Well& w = lw.wells[k];
         const std::string at = indexPath("wells", k);
         const std::string name = wellName(w.id);
         if (w.id.row >= lw.rows || w.id.column >= lw.columns || w.id.row < 0 || w.id.column < 0)
-            out.push_back({at, msg::make("plate.labware.well_outside_grid", {textArg("well", name), msg::integer("rows", lw.rows), msg::integer("columns", lw.columns)})});
+            out.push_back({at, motion::msg::make("plate.labware.well_outside_grid", {textArg("well", name), motion::msg::integer("rows", lw.rows), motion::msg::integer("columns", lw.columns)})});
         if (!seen.insert(w.id).second)
-            out.push_back({at, msg::make("plate.labware.well_twice", {textArg("well", name)})});
+            out.push_back({at, motion::msg::make("plate.labware.well_twice", {textArg("well", name)})});
         const double rx = w.shape == WellShape::Circular ? w.diameterMm / 2 : w.sizeXMm / 2;
         const double ry = w.shape == WellShape::Circular ? w.diameterMm / 2 : w.sizeYMm / 2;
         if (w.shape == WellShape::Circular ? bad(w.diameterMm) : (bad(w.sizeXMm) || bad(w.sizeYMm)))
-            out.push_back({at, msg::make("plate.labware.well_no_size", {textArg("well", name)})});
+            out.push_back({at, motion::msg::make("plate.labware.well_no_size", {textArg("well", name)})});
         if (bad(w.depthMm) || !std::isfinite(w.bottomZMm) || w.bottomZMm < 0 || w.bottomZMm + w.depthMm > lw.heightMm + 1e-6)
-            out.push_back({at, msg::make("plate.labware.well_depth", {textArg("well", name), mmArg("bottom", w.bottomZMm), mmArg("depth", w.depthMm),
+            out.push_back({at, motion::msg::make("plate.labware.well_depth", {textArg("well", name), mmArg("bottom", w.bottomZMm), mmArg("depth", w.depthMm),
                                                                       mmArg("height", lw.heightMm)})});
         if (bad(w.volumeUl))
-            out.push_back({at, msg::make("plate.labware.well_no_volume", {textArg("well", name)})});
+            out.push_back({at, motion::msg::make("plate.labware.well_no_volume", {textArg("well", name)})});
         if (!std::isfinite(w.xMm) || !std::isfinite(w.yMm) || w.xMm - rx < -1e-9 || w.yMm - ry < -1e-9
             || w.xMm + rx > lw.lengthMm + 1e-9 || w.yMm + ry > lw.widthMm + 1e-9)
-            out.push_back({at, msg::make("plate.labware.well_off_footprint", {textArg("well", name), mmArg("x", w.xMm), mmArg("y", w.yMm),
+            out.push_back({at, motion::msg::make("plate.labware.well_off_footprint", {textArg("well", name), mmArg("x", w.xMm), mmArg("y", w.yMm),
                                                                               mmArg("length", lw.lengthMm), mmArg("width", lw.widthMm)})});
         if (out.size() > 50) {
-            out.push_back({"wells", msg::make("plate.more_not_shown")});
+            out.push_back({"wells", motion::msg::make("plate.more_not_shown")});
             break;
         }
     }
     return out;
 }
 
-} // namespace plates
+} // namespace motion::plates

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace plates {
+namespace motion::plates {
 
 /// SBS/ANSI footprint (ANSI/SLAS 1-2004), mm.
 constexpr double kSbsLengthMm = 127.76;
@@ -78,6 +78,6 @@ std::optional<Labware> findBuiltinLabware(const std::string& id);
 
 /// Every problem of a definition: grid, names, wells off the footprint,
 /// non-positive sizes, a well deeper than the plate.
-msg::Problems validateLabware(const Labware& labware);
+motion::msg::Problems validateLabware(const Labware& labware);
 
-} // namespace plates
+} // namespace motion::plates

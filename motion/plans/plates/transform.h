@@ -4,7 +4,7 @@
 // taught offset). See calibration.h for how M is fitted.
 #include <cmath>
 
-namespace plates {
+namespace motion::plates {
 
 struct PointMm {
     double x = 0, y = 0;
@@ -34,4 +34,4 @@ struct PlateTransform {
     }
 };
 
-} // namespace plates
+} // namespace motion::plates

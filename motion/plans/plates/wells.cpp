@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <set>
 
-namespace plates {
+namespace motion::plates {
 
 std::string formatMm(double v)
 {
@@ -89,11 +89,11 @@ std::string quoted(const std::string& s)
 }
 
 /// One spec (no commas) → wells, or a problem message.
-bool expandOne(const std::string& spec, const Labware& lw, std::vector<WellId>& out, msg::Message* error)
+bool expandOne(const std::string& spec, const Labware& lw, std::vector<WellId>& out, motion::msg::Message* error)
 {
-    const msg::Arg plateWells = msg::integer("wells", static_cast<long long>(lw.wells.size()));
+    const motion::msg::Arg plateWells = motion::msg::integer("wells", static_cast<long long>(lw.wells.size()));
     auto unknown = [&](const std::string& name) {
-        *error = msg::make("plate.unknown_well", {textArg("well", quoted(name)), plateWells});
+        *error = motion::msg::make("plate.unknown_well", {textArg("well", quoted(name)), plateWells});
         return false;
     };
     auto known = [&](const std::string& name, WellId* w) {
@@ -112,11 +112,11 @@ bool expandOne(const std::string& spec, const Labware& lw, std::vector<WellId>& 
     if (startsWithWord(spec, "row", &rest)) {
         WellId w;
         if (!known(rest + "1", &w) || rest.empty() || !std::isalpha(static_cast<unsigned char>(rest.back()))) {
-            *error = msg::make("plate.wells.row_needs_letter", {textArg("text", quoted("row " + rest))});
+            *error = motion::msg::make("plate.wells.row_needs_letter", {textArg("text", quoted("row " + rest))});
             return false;
         }
         if (w.row >= lw.rows) {
-            *error = msg::make("plate.wells.unknown_row", {textArg("row", quoted(rest)), plateWells, textArg("last", rowName(lw.rows - 1))});
+            *error = motion::msg::make("plate.wells.unknown_row", {textArg("row", quoted(rest)), plateWells, textArg("last", rowName(lw.rows - 1))});
             return false;
         }
         for (int c = 0; c < lw.columns; ++c)
@@ -127,11 +127,11 @@ bool expandOne(const std::string& spec, const Labware& lw, std::vector<WellId>& 
     if (startsWithWord(spec, "column", &rest)) {
         WellId w;
         if (!known("A" + rest, &w) || rest.empty() || !std::isdigit(static_cast<unsigned char>(rest[0]))) {
-            *error = msg::make("plate.wells.column_needs_number", {textArg("text", quoted("column " + rest))});
+            *error = motion::msg::make("plate.wells.column_needs_number", {textArg("text", quoted("column " + rest))});
             return false;
         }
         if (w.column >= lw.columns) {
-            *error = msg::make("plate.wells.unknown_column", {textArg("column", quoted(rest)), plateWells, msg::integer("last", lw.columns, msg::Unit::None)});
+            *error = motion::msg::make("plate.wells.unknown_column", {textArg("column", quoted(rest)), plateWells, motion::msg::integer("last", lw.columns, motion::msg::Unit::None)});
             return false;
         }
         for (int r = 0; r < lw.rows; ++r)
@@ -145,7 +145,7 @@ bool expandOne(const std::string& spec, const Labware& lw, std::vector<WellId>& 
         const std::string b = trim(std::string_view(spec).substr(colon + 1));
         WellId wa, wb;
         if (!known(a, &wa) || !known(b, &wb)) {
-            *error = msg::make("plate.wells.bad_range", {textArg("text", quoted(spec))});
+            *error = motion::msg::make("plate.wells.bad_range", {textArg("text", quoted(spec))});
             return false;
         }
         if (!lw.well(wa))
@@ -167,7 +167,7 @@ bool expandOne(const std::string& spec, const Labware& lw, std::vector<WellId>& 
     }
     WellId w;
     if (!known(spec, &w)) {
-        *error = msg::make("plate.wells.not_a_well_set", {textArg("text", quoted(spec))});
+        *error = motion::msg::make("plate.wells.not_a_well_set", {textArg("text", quoted(spec))});
         return false;
     }
     if (!lw.well(w))
@@ -183,7 +183,7 @@ WellSet expandWells(const std::vector<std::string>& specs, const Labware& labwar
     WellSet set;
     std::set<WellId> seen;
     if (specs.empty()) {
-        set.problems.push_back({path, msg::make("plate.wells.none")});
+        set.problems.push_back({path, motion::msg::make("plate.wells.none")});
         return set;
     }
     for (std::size_t k = 0; k < specs.size(); ++k) {
@@ -201,21 +201,21 @@ WellSet expandWells(const std::vector<std::string>& specs, const Labware& labwar
                 continue;
             any = true;
             std::vector<WellId> wells;
-            msg::Message error;
+            motion::msg::Message error;
             if (!expandOne(part, labware, wells, &error)) {
                 set.problems.push_back({at, error});
                 continue;
             }
             for (const WellId& w : wells) {
                 if (!seen.insert(w).second) {
-                    set.problems.push_back({at, msg::make("plate.wells.named_twice", {textArg("well", wellName(w))})});
+                    set.problems.push_back({at, motion::msg::make("plate.wells.named_twice", {textArg("well", wellName(w))})});
                     continue;
                 }
                 set.wells.push_back(w);
             }
         }
         if (!any)
-            set.problems.push_back({at, msg::make("plate.wells.none")});
+            set.problems.push_back({at, motion::msg::make("plate.wells.none")});
     }
     return set;
 }
@@ -248,4 +248,4 @@ std::vector<std::string> describeWells(std::vector<WellId> wells)
     return out;
 }
 
-} // namespace plates
+} // namespace motion::plates

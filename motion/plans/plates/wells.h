@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-namespace plates {
+namespace motion::plates {
 
 class Labware;
 
@@ -34,7 +34,7 @@ std::optional<WellId> parseWellName(std::string_view text);
 
 struct WellSet {
     std::vector<WellId> wells;  ///< in the order written; a range runs row by row from its first corner
-    msg::Problems problems;          ///< at `path`, or `path[k]` for the k-th spec of a list
+    motion::msg::Problems problems;          ///< at `path`, or `path[k]` for the k-th spec of a list
 };
 
 /// Expands well specs against `labware`. `path` names the field for messages
@@ -47,4 +47,4 @@ WellSet expandWells(const std::vector<std::string>& specs, const Labware& labwar
 /// GUI turns a selection into a step; expandWells() gives the same wells back.
 std::vector<std::string> describeWells(std::vector<WellId> wells);
 
-} // namespace plates
+} // namespace motion::plates

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace plates {
+namespace motion::plates {
 
 double moveTimeS(const std::vector<AxisDelta>& axes, double speed)
 {
@@ -31,4 +31,4 @@ double moveTimeS(const std::vector<AxisDelta>& axes, double speed)
     return p ? p->duration() : 0;
 }
 
-} // namespace plates
+} // namespace motion::plates

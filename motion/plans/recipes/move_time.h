@@ -9,7 +9,7 @@
 
 #include <vector>
 
-namespace plates {
+namespace motion::plates {
 
 struct AxisDelta {
     const AxisMotion* axis = nullptr;
@@ -21,4 +21,4 @@ struct AxisDelta {
 /// rule for a MOVE without a speed). 0 for a move of zero length.
 double moveTimeS(const std::vector<AxisDelta>& axes, double speed);
 
-} // namespace plates
+} // namespace motion::plates

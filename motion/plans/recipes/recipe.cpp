@@ -1,6 +1,6 @@
 #include "motion/plans/recipes/recipe.h"
 
-namespace plates {
+namespace motion::plates {
 namespace {
 const char* const kNames[kStepTypeCount] = {"aspirate", "dispense", "mix", "wash", "air_gap", "wait", "touch_off"};
 }
@@ -31,4 +31,4 @@ const RecipePlate* Recipe::plate(const std::string& plateName) const
     return nullptr;
 }
 
-} // namespace plates
+} // namespace motion::plates

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace plates {
+namespace motion::plates {
 
 enum class StepType { Aspirate, Dispense, Mix, Wash, AirGap, Wait, TouchOff };
 constexpr int kStepTypeCount = 7;
@@ -67,4 +67,4 @@ constexpr std::size_t kMaxSteps = 10000;
 /// Wells a recipe may visit in all (a 1536-well plate dosed a few times over).
 constexpr std::size_t kMaxPlannedOps = 20000;
 
-} // namespace plates
+} // namespace motion::plates

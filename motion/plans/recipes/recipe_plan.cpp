@@ -9,7 +9,7 @@
 #include <limits>
 #include <set>
 
-namespace plates {
+namespace motion::plates {
 
 PlateTransform PlanContext::transform(const std::string& slotId) const
 {
@@ -38,26 +38,26 @@ bool PlanOp::pumps() const
     return std::any_of(moves.begin(), moves.end(), [](const MachineMove& m) { return m.kind == MoveKind::Pump; });
 }
 
-msg::Message PlanOp::where() const
+motion::msg::Message PlanOp::where() const
 {
     if (!station.empty())
-        return msg::make("recipe.where.station", {textArg("station", station)});
+        return motion::msg::make("recipe.where.station", {textArg("station", station)});
     if (!well.empty())
-        return msg::make("recipe.where.well", {textArg("plate", plate), textArg("well", well)});
+        return motion::msg::make("recipe.where.well", {textArg("plate", plate), textArg("well", well)});
     return {};
 }
 
-msg::Message PlanOp::label() const
+motion::msg::Message PlanOp::label() const
 {
-    const msg::Arg v = ulArg("volume", volumeUl);
+    const motion::msg::Arg v = ulArg("volume", volumeUl);
     switch (type) {
-    case StepType::Aspirate: return msg::make("recipe.op.aspirate", {v, msg::nested("where", where())});
-    case StepType::Dispense: return msg::make("recipe.op.dispense", {v, msg::nested("where", where())});
-    case StepType::Mix: return msg::make("recipe.op.mix", {v, msg::nested("where", where())});
-    case StepType::Wash: return msg::make("recipe.op.wash", {v, msg::nested("where", where())});
-    case StepType::AirGap: return msg::make("recipe.op.air_gap", {v});
-    case StepType::Wait: return msg::make("recipe.op.wait", {msg::real("seconds", moves.empty() ? 0 : moves.front().seconds, msg::Unit::S)});
-    case StepType::TouchOff: return msg::make("recipe.op.touch_off", {msg::nested("where", where())});
+    case StepType::Aspirate: return motion::msg::make("recipe.op.aspirate", {v, motion::msg::nested("where", where())});
+    case StepType::Dispense: return motion::msg::make("recipe.op.dispense", {v, motion::msg::nested("where", where())});
+    case StepType::Mix: return motion::msg::make("recipe.op.mix", {v, motion::msg::nested("where", where())});
+    case StepType::Wash: return motion::msg::make("recipe.op.wash", {v, motion::msg::nested("where", where())});
+    case StepType::AirGap: return motion::msg::make("recipe.op.air_gap", {v});
+    case StepType::Wait: return motion::msg::make("recipe.op.wait", {motion::msg::real("seconds", moves.empty() ? 0 : moves.front().seconds, motion::msg::Unit::S)});
+    case StepType::TouchOff: return motion::msg::make("recipe.op.touch_off", {motion::msg::nested("where", where())});
     }
     return {};
 }
@@ -100,8 +100,8 @@ RecipePlan Planner::run()
 {
     checkRecipe();
     if (m_r.steps.size() > kMaxSteps) {
-        error("steps", msg::make("recipe.too_many_steps", {msg::integer("max", static_cast<long long>(kMaxSteps)),
-                                                          msg::integer("count", static_cast<long long>(m_r.steps.size()))}));
+        error("steps", motion::msg::make("recipe.too_many_steps", {motion::msg::integer("max", static_cast<long long>(kMaxSteps)),
+                                                          motion::msg::integer("count", static_cast<long long>(m_r.steps.size()))}));
         return std::move(m_plan);
     }
     for (std::size_t i = 0; i < m_r.steps.size() && !m_tooMany; ++i)
@@ -118,56 +118,56 @@ void Planner::checkRecipe()
         const RecipePlate& p = m_r.plates[k];
         const std::string at = indexPath("plates", k);
         if (p.name.empty())
-            error(fieldPath(at, "name"), msg::make("plate.empty"));
+            error(fieldPath(at, "name"), motion::msg::make("plate.empty"));
         else if (!names.insert(p.name).second)
-            error(fieldPath(at, "name"), msg::make("recipe.plate_named_twice", {textArg("plate", p.name)}));
+            error(fieldPath(at, "name"), motion::msg::make("recipe.plate_named_twice", {textArg("plate", p.name)}));
         if (!d.slot(p.slot)) {
             std::string list;
             for (const Slot& s : d.plateSlots)
                 list += (list.empty() ? "" : ", ") + s.id;
-            error(fieldPath(at, "slot"), msg::make("recipe.unknown_slot", {textArg("slot", p.slot), textArg("slots", list)}));
+            error(fieldPath(at, "slot"), motion::msg::make("recipe.unknown_slot", {textArg("slot", p.slot), textArg("slots", list)}));
         } else if (!usedSlots.insert(p.slot).second) {
-            error(fieldPath(at, "slot"), msg::make("recipe.slot_taken", {textArg("slot", p.slot)}));
+            error(fieldPath(at, "slot"), motion::msg::make("recipe.slot_taken", {textArg("slot", p.slot)}));
         }
         if (!m_c.labware.count(p.labware)) {
             std::string list;
             for (const Labware& lw : builtinLabware())
                 list += (list.empty() ? "" : ", ") + lw.id;
-            error(fieldPath(at, "labware"), msg::make("recipe.unknown_labware", {textArg("labware", p.labware), textArg("builtin", list)}));
+            error(fieldPath(at, "labware"), motion::msg::make("recipe.unknown_labware", {textArg("labware", p.labware), textArg("builtin", list)}));
         }
         if (!std::isfinite(p.safeZMm) || p.safeZMm < 0 || p.safeZMm > d.travelZMm)
-            error(fieldPath(at, "safe_z_mm"), msg::make("plate.out_of_range", {mmArg("value", p.safeZMm), mmArg("min", 0), mmArg("max", d.travelZMm)}));
+            error(fieldPath(at, "safe_z_mm"), motion::msg::make("plate.out_of_range", {mmArg("value", p.safeZMm), mmArg("min", 0), mmArg("max", d.travelZMm)}));
         else if (!std::isfinite(p.depthZMm) || p.depthZMm <= p.safeZMm || p.depthZMm > d.travelZMm)
-            error(fieldPath(at, "depth_z_mm"), msg::make("recipe.depth_not_below_safe", {mmArg("value", p.depthZMm), mmArg("safe", p.safeZMm),
+            error(fieldPath(at, "depth_z_mm"), motion::msg::make("recipe.depth_not_below_safe", {mmArg("value", p.depthZMm), mmArg("safe", p.safeZMm),
                                                                                        mmArg("max", d.travelZMm)}));
         else if (const auto lw = m_c.labware.find(p.labware); lw != m_c.labware.end())
             checkHeights(p, lw->second, at);
     }
     if (m_r.steps.empty())
-        error("steps", msg::make("recipe.no_steps"));
+        error("steps", motion::msg::make("recipe.no_steps"));
     if (m_r.travelSpeedMmS) {
         const double vmax = std::min(d.x.maxSpeed, d.y.maxSpeed);
         if (!(*m_r.travelSpeedMmS >= kMinSpeed) || *m_r.travelSpeedMmS > vmax)
-            error("travel_speed_mm_s", msg::make("plate.out_of_range", {msg::real("value", *m_r.travelSpeedMmS, msg::Unit::MmPerS),
-                                                                        msg::real("min", kMinSpeed, msg::Unit::MmPerS),
-                                                                        msg::real("max", vmax, msg::Unit::MmPerS)}));
+            error("travel_speed_mm_s", motion::msg::make("plate.out_of_range", {motion::msg::real("value", *m_r.travelSpeedMmS, motion::msg::Unit::MmPerS),
+                                                                        motion::msg::real("min", kMinSpeed, motion::msg::Unit::MmPerS),
+                                                                        motion::msg::real("max", vmax, motion::msg::Unit::MmPerS)}));
     }
     if (m_r.zSpeedMmS && (!(*m_r.zSpeedMmS >= kMinSpeed) || *m_r.zSpeedMmS > d.z.maxSpeed))
-        error("z_speed_mm_s", msg::make("plate.out_of_range", {msg::real("value", *m_r.zSpeedMmS, msg::Unit::MmPerS),
-                                                               msg::real("min", kMinSpeed, msg::Unit::MmPerS),
-                                                               msg::real("max", d.z.maxSpeed, msg::Unit::MmPerS)}));
+        error("z_speed_mm_s", motion::msg::make("plate.out_of_range", {motion::msg::real("value", *m_r.zSpeedMmS, motion::msg::Unit::MmPerS),
+                                                               motion::msg::real("min", kMinSpeed, motion::msg::Unit::MmPerS),
+                                                               motion::msg::real("max", d.z.maxSpeed, motion::msg::Unit::MmPerS)}));
 }
 
 void Planner::checkHeights(const RecipePlate& p, const Labware& lw, const std::string& at)
 {
     const double top = m_c.deck.tableZMm - lw.heightMm;
     if (p.safeZMm > top - 1e-9)
-        error(fieldPath(at, "safe_z_mm"), msg::make("recipe.safe_not_above_plate", {mmArg("value", p.safeZMm), mmArg("top", top)}));
+        error(fieldPath(at, "safe_z_mm"), motion::msg::make("recipe.safe_not_above_plate", {mmArg("value", p.safeZMm), mmArg("top", top)}));
     double bottom = m_c.deck.tableZMm;
     for (const Well& w : lw.wells)
         bottom = std::min(bottom, m_c.deck.tableZMm - w.bottomZMm);
     if (p.depthZMm > bottom + 1e-9)
-        error(fieldPath(at, "depth_z_mm"), msg::make("recipe.depth_below_bottom", {mmArg("value", p.depthZMm), mmArg("bottom", bottom)}));
+        error(fieldPath(at, "depth_z_mm"), motion::msg::make("recipe.depth_below_bottom", {mmArg("value", p.depthZMm), mmArg("bottom", bottom)}));
 }
 
 const RecipePlate* Planner::resolvePlate(const std::string& name, const std::string& path)
@@ -184,12 +184,12 @@ const RecipePlate* Planner::findPlate(const std::string& name, const std::string
         if (m_r.plates.size() == 1)
             return &m_r.plates.front();
         if (m_r.plates.empty()) {
-            error(path, msg::make("recipe.no_plates"));
+            error(path, motion::msg::make("recipe.no_plates"));
         } else {
             std::string list;
             for (const auto& p : m_r.plates)
                 list += (list.empty() ? "" : ", ") + p.name;
-            error(path, msg::make("recipe.plate_ambiguous", {msg::integer("count", static_cast<long long>(m_r.plates.size())), textArg("plates", list)}));
+            error(path, motion::msg::make("recipe.plate_ambiguous", {motion::msg::integer("count", static_cast<long long>(m_r.plates.size())), textArg("plates", list)}));
         }
         return nullptr;
     }
@@ -198,8 +198,8 @@ const RecipePlate* Planner::findPlate(const std::string& name, const std::string
         std::string list;
         for (const auto& q : m_r.plates)
             list += (list.empty() ? "" : ", ") + std::string("\"") + q.name + "\"";
-        error(path, list.empty() ? msg::make("recipe.unknown_plate_none", {textArg("plate", name)})
-                                 : msg::make("recipe.unknown_plate", {textArg("plate", name), textArg("plates", list)}));
+        error(path, list.empty() ? motion::msg::make("recipe.unknown_plate_none", {textArg("plate", name)})
+                                 : motion::msg::make("recipe.unknown_plate", {textArg("plate", name), textArg("plates", list)}));
     }
     return p;
 }
@@ -239,7 +239,7 @@ std::vector<Place> Planner::wellPlaces(const Step& s, const std::string& stepPat
         Place pl = wellPlace(*p, *lw.well(id));
         if (!reachable(pl.at) && !outside) {
             outside = true;
-            error(wellsPath, msg::make("recipe.well_outside_travel", {textArg("well", pl.well), textArg("plate", p->name), mmArg("x", pl.at.x),
+            error(wellsPath, motion::msg::make("recipe.well_outside_travel", {textArg("well", pl.well), textArg("plate", p->name), mmArg("x", pl.at.x),
                                                                       mmArg("y", pl.at.y), mmArg("travel_x", m_c.deck.travelXMm),
                                                                       mmArg("travel_y", m_c.deck.travelYMm)}));
         }
@@ -255,8 +255,8 @@ bool Planner::stationPlace(const std::string& id, const std::string& path, Place
         std::string list;
         for (const Station& s : m_c.deck.stations)
             list += (list.empty() ? "" : ", ") + s.id;
-        error(path, list.empty() ? msg::make("recipe.unknown_station_none", {textArg("station", id)})
-                                 : msg::make("recipe.unknown_station", {textArg("station", id), textArg("stations", list)}));
+        error(path, list.empty() ? motion::msg::make("recipe.unknown_station_none", {textArg("station", id)})
+                                 : motion::msg::make("recipe.unknown_station", {textArg("station", id), textArg("stations", list)}));
         return false;
     }
     pl->station = st->id;
@@ -342,7 +342,7 @@ PlanOp& Planner::newOp(int step, StepType type, const Place* pl, double volume)
     m_plan.ops.push_back(std::move(op));
     if (m_plan.ops.size() > kMaxPlannedOps && !m_tooMany) {
         m_tooMany = true;
-        error("steps", msg::make("recipe.too_many_ops", {msg::integer("max", static_cast<long long>(kMaxPlannedOps))}));
+        error("steps", motion::msg::make("recipe.too_many_ops", {motion::msg::integer("max", static_cast<long long>(kMaxPlannedOps))}));
     }
     return m_plan.ops.back();
 }
@@ -390,7 +390,7 @@ void Planner::finish()
         const auto lw = p ? m_c.labware.find(p->labware) : m_c.labware.end();
         const Well* well = lw != m_c.labware.end() ? lw->second.wellNamed(w.well) : nullptr;
         if (well && w.dispensedUl - w.aspiratedUl > well->volumeUl + kEps)
-            warning("steps", msg::make("recipe.well_overfilled", {textArg("well", w.well), textArg("plate", w.plate),
+            warning("steps", motion::msg::make("recipe.well_overfilled", {textArg("well", w.well), textArg("plate", w.plate),
                                                                   volume("volume", w.dispensedUl - w.aspiratedUl), volume("capacity", well->volumeUl)}));
     }
 }
@@ -402,4 +402,4 @@ RecipePlan planRecipe(const Recipe& recipe, const PlanContext& context, const St
     return planning::Planner(recipe, context, start).run();
 }
 
-} // namespace plates
+} // namespace motion::plates

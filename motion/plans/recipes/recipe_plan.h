@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-namespace plates {
+namespace motion::plates {
 
 struct PlanContext {
     Deck deck;
@@ -63,8 +63,8 @@ struct PlanOp {
     double durationS = 0;
     double startS = 0;         ///< planned start, from the run's start
     bool pumps() const;        ///< has a plunger move (liquid may have moved once it started)
-    msg::Message where() const; ///< recipe.where.well {plate, well} "samples B3", recipe.where.station; empty (air gap, wait)
-    msg::Message label() const; ///< recipe.op.dispense {volume, where}: "dispense 10 µL into samples B3"
+    motion::msg::Message where() const; ///< recipe.where.well {plate, well} "samples B3", recipe.where.station; empty (air gap, wait)
+    motion::msg::Message label() const; ///< recipe.op.dispense {volume, where}: "dispense 10 µL into samples B3"
 };
 
 struct WellTotal {
@@ -75,7 +75,7 @@ struct WellTotal {
 
 struct RecipePlan {
     std::vector<PlanOp> ops;
-    msg::Problems problems;
+    motion::msg::Problems problems;
     double totalTimeS = 0;
     double pumpStartUl = 0, pumpEndUl = 0;
     double totalDispensedUl = 0, totalAspiratedUl = 0;
@@ -104,4 +104,4 @@ std::string fingerprintHex(std::uint64_t fingerprint);
 /// Seconds of the ops from `fromOp` on (for an ETA).
 double remainingTimeS(const RecipePlan& plan, int fromOp);
 
-} // namespace plates
+} // namespace motion::plates

@@ -5,16 +5,16 @@
 #include <algorithm>
 #include <cmath>
 
-namespace plates::planning {
+namespace motion::plates::planning {
 
 bool Planner::checkVolume(const Step& s, const std::string& path, bool capacityBound)
 {
     if (!std::isfinite(s.volumeUl) || s.volumeUl <= 0) {
-        error(fieldPath(path, "volume_ul"), msg::make("plate.not_positive", {ulArg("value", s.volumeUl)}));
+        error(fieldPath(path, "volume_ul"), motion::msg::make("plate.not_positive", {ulArg("value", s.volumeUl)}));
         return false;
     }
     if (capacityBound && s.volumeUl > m_cap + kEps) {
-        error(fieldPath(path, "volume_ul"), msg::make("recipe.volume_over_capacity", {volume("volume", s.volumeUl), volume("capacity", m_cap)}));
+        error(fieldPath(path, "volume_ul"), motion::msg::make("recipe.volume_over_capacity", {volume("volume", s.volumeUl), volume("capacity", m_cap)}));
         return false;
     }
     return true;
@@ -25,9 +25,9 @@ double Planner::pumpSpeed(const Step& s, const std::string& path)
     if (!s.speedUlS)
         return 0;
     if (!(*s.speedUlS >= kMinSpeed) || *s.speedUlS > m_c.deck.p.maxSpeed) {
-        error(fieldPath(path, "speed_ul_s"), msg::make("plate.out_of_range", {msg::real("value", *s.speedUlS, msg::Unit::UlPerS),
-                                                                              msg::real("min", kMinSpeed, msg::Unit::UlPerS),
-                                                                              msg::real("max", m_c.deck.p.maxSpeed, msg::Unit::UlPerS)}));
+        error(fieldPath(path, "speed_ul_s"), motion::msg::make("plate.out_of_range", {motion::msg::real("value", *s.speedUlS, motion::msg::Unit::UlPerS),
+                                                                              motion::msg::real("min", kMinSpeed, motion::msg::Unit::UlPerS),
+                                                                              motion::msg::real("max", m_c.deck.p.maxSpeed, motion::msg::Unit::UlPerS)}));
         return 0;
     }
     return *s.speedUlS;
@@ -41,10 +41,10 @@ bool Planner::roomFor(double delta, const std::string& path, bool* reported)
     if (!*reported) {
         *reported = true;
         if (after > m_cap)
-            error(path, m_p > 1e-6 ? msg::make("recipe.syringe_overfull_holding", {volume("volume", after), volume("capacity", m_cap), volume("holding", m_p)})
-                                   : msg::make("recipe.syringe_overfull", {volume("volume", after), volume("capacity", m_cap)}));
+            error(path, m_p > 1e-6 ? motion::msg::make("recipe.syringe_overfull_holding", {volume("volume", after), volume("capacity", m_cap), volume("holding", m_p)})
+                                   : motion::msg::make("recipe.syringe_overfull", {volume("volume", after), volume("capacity", m_cap)}));
         else
-            error(path, msg::make("recipe.plunger_past_empty", {volume("volume", after)}));
+            error(path, motion::msg::make("recipe.plunger_past_empty", {volume("volume", after)}));
     }
     return false;
 }
@@ -98,11 +98,11 @@ void Planner::planStep(int i)
     case StepType::Dispense: {
         const bool asp = s.type == StepType::Aspirate;
         if (!s.station.empty() && !s.wells.empty()) {
-            error(fieldPath(path, "station"), msg::make("recipe.wells_and_station"));
+            error(fieldPath(path, "station"), motion::msg::make("recipe.wells_and_station"));
             return;
         }
         if (s.station.empty() && s.wells.empty()) {
-            error(fieldPath(path, "wells"), msg::make(asp ? "recipe.wells_missing_aspirate" : "recipe.wells_missing_dispense"));
+            error(fieldPath(path, "wells"), motion::msg::make(asp ? "recipe.wells_missing_aspirate" : "recipe.wells_missing_dispense"));
             return;
         }
         const bool volOk = checkVolume(s, path, true);
@@ -118,22 +118,22 @@ void Planner::planStep(int i)
             return;
         for (const Place& pl : places)
             if (pl.w && s.volumeUl > pl.w->volumeUl + kEps) {
-                error(fieldPath(path, "volume_ul"), msg::make(asp ? "recipe.aspirate_over_well" : "recipe.dispense_over_well",
+                error(fieldPath(path, "volume_ul"), motion::msg::make(asp ? "recipe.aspirate_over_well" : "recipe.dispense_over_well",
                                                               {volume("volume", s.volumeUl), volume("capacity", pl.w->volumeUl), textArg("plate", pl.plate)}));
                 return;
             }
         if (asp) {
             if (!s.source.empty())
-                error(fieldPath(path, "source"), msg::make("recipe.source_only_dispense"));
+                error(fieldPath(path, "source"), motion::msg::make("recipe.source_only_dispense"));
             for (const Place& pl : places)
                 aspirateAt(i, pl, s.volumeUl, speed, fieldPath(path, "volume_ul"), &reported);
             return;
         }
         if (s.offsetMm < 0 || !std::isfinite(s.offsetMm))
-            error(fieldPath(path, "touch_off_mm"), msg::make("plate.negative", {mmArg("value", s.offsetMm)}));
+            error(fieldPath(path, "touch_off_mm"), motion::msg::make("plate.negative", {mmArg("value", s.offsetMm)}));
         for (const Place& pl : places)
             if (pl.w && s.offsetMm > pl.w->innerRadiusMm() + kEps) {
-                error(fieldPath(path, "touch_off_mm"), msg::make("recipe.offset_past_wall", {mmArg("value", s.offsetMm), mmArg("width", 2 * pl.w->innerRadiusMm())}));
+                error(fieldPath(path, "touch_off_mm"), motion::msg::make("recipe.offset_past_wall", {mmArg("value", s.offsetMm), mmArg("width", 2 * pl.w->innerRadiusMm())}));
                 break;
             }
         if (!s.source.empty())
@@ -142,7 +142,7 @@ void Planner::planStep(int i)
             for (const Place& pl : places) {
                 if (m_liquid < s.volumeUl - 1e-6 && !reported) {
                     reported = true;
-                    error(path, msg::make("recipe.dispense_without_liquid", {volume("volume", s.volumeUl), volume("holding", std::max(0.0, m_liquid))}));
+                    error(path, motion::msg::make("recipe.dispense_without_liquid", {volume("volume", s.volumeUl), volume("holding", std::max(0.0, m_liquid))}));
                 }
                 dispenseAt(i, pl, s.volumeUl, speed, std::max(0.0, s.offsetMm));
             }
@@ -157,7 +157,7 @@ void Planner::planStep(int i)
         roomFor(s.volumeUl, fieldPath(path, "volume_ul"), &reported);
         for (const Place& pl : places) {
             if (pl.w && s.volumeUl > pl.w->volumeUl + kEps) {
-                error(fieldPath(path, "volume_ul"), msg::make("recipe.mix_over_well", {volume("volume", s.volumeUl), volume("capacity", pl.w->volumeUl)}));
+                error(fieldPath(path, "volume_ul"), motion::msg::make("recipe.mix_over_well", {volume("volume", s.volumeUl), volume("capacity", pl.w->volumeUl)}));
                 return;
             }
             PlanOp& op = newOp(i, StepType::Mix, &pl, s.volumeUl);
@@ -176,7 +176,7 @@ void Planner::planStep(int i)
         const bool ok = checkVolume(s, path, true);
         Place pl;
         if (s.station.empty()) {
-            error(fieldPath(path, "station"), msg::make("recipe.wash_station_missing"));
+            error(fieldPath(path, "station"), motion::msg::make("recipe.wash_station_missing"));
             return;
         }
         if (!stationPlace(s.station, fieldPath(path, "station"), &pl) || !ok)
@@ -204,8 +204,8 @@ void Planner::planStep(int i)
     }
     case StepType::Wait: {
         if (!std::isfinite(s.seconds) || s.seconds < 0 || s.seconds > kMaxWaitS) {
-            error(fieldPath(path, "seconds"), msg::make("plate.out_of_range", {msg::real("value", s.seconds, msg::Unit::S), msg::real("min", 0, msg::Unit::S),
-                                                                           msg::real("max", kMaxWaitS, msg::Unit::S)}));
+            error(fieldPath(path, "seconds"), motion::msg::make("plate.out_of_range", {motion::msg::real("value", s.seconds, motion::msg::Unit::S), motion::msg::real("min", 0, motion::msg::Unit::S),
+                                                                           motion::msg::real("max", kMaxWaitS, motion::msg::Unit::S)}));
             return;
         }
         PlanOp& op = newOp(i, StepType::Wait, nullptr, 0);
@@ -219,12 +219,12 @@ void Planner::planStep(int i)
     case StepType::TouchOff: {
         const std::vector<Place> places = wellPlaces(s, path);
         if (!(s.offsetMm > 0) || !std::isfinite(s.offsetMm)) {
-            error(fieldPath(path, "offset_mm"), msg::make("plate.not_positive", {mmArg("value", s.offsetMm)}));
+            error(fieldPath(path, "offset_mm"), motion::msg::make("plate.not_positive", {mmArg("value", s.offsetMm)}));
             return;
         }
         for (const Place& pl : places) {
             if (pl.w && s.offsetMm > pl.w->innerRadiusMm() + kEps) {
-                error(fieldPath(path, "offset_mm"), msg::make("recipe.offset_past_wall", {mmArg("value", s.offsetMm), mmArg("width", 2 * pl.w->innerRadiusMm())}));
+                error(fieldPath(path, "offset_mm"), motion::msg::make("recipe.offset_past_wall", {mmArg("value", s.offsetMm), mmArg("width", 2 * pl.w->innerRadiusMm())}));
                 return;
             }
             PlanOp& op = newOp(i, StepType::TouchOff, &pl, 0);
@@ -242,7 +242,7 @@ void Planner::planStep(int i)
 void Planner::checkCycles(const Step& s, const std::string& path)
 {
     if (s.cycles < 1 || s.cycles > kMaxCycles)
-        error(fieldPath(path, "cycles"), msg::make("plate.out_of_range", {msg::integer("value", s.cycles), msg::integer("min", 1), msg::integer("max", kMaxCycles)}));
+        error(fieldPath(path, "cycles"), motion::msg::make("plate.out_of_range", {motion::msg::integer("value", s.cycles), motion::msg::integer("min", 1), motion::msg::integer("max", kMaxCycles)}));
 }
 
 void Planner::planTransfer(int i, const Step& s, const std::string& path, const std::vector<Place>& targets, double speed)
@@ -251,7 +251,7 @@ void Planner::planTransfer(int i, const Step& s, const std::string& path, const 
     Place src;
     if (!s.source.station.empty()) {
         if (!s.source.well.empty()) {
-            error(srcPath, msg::make("recipe.source_well_and_station"));
+            error(srcPath, motion::msg::make("recipe.source_well_and_station"));
             return;
         }
         if (!stationPlace(s.source.station, fieldPath(srcPath, "station"), &src))
@@ -263,20 +263,20 @@ void Planner::planTransfer(int i, const Step& s, const std::string& path, const 
         const Labware& lw = m_c.labware.at(p->labware);
         const Well* w = lw.wellNamed(s.source.well);
         if (!w) {
-            error(fieldPath(srcPath, "well"), msg::make("plate.unknown_well", {textArg("well", "\"" + s.source.well + "\""),
-                                                                                 msg::integer("wells", static_cast<long long>(lw.wells.size()))}));
+            error(fieldPath(srcPath, "well"), motion::msg::make("plate.unknown_well", {textArg("well", "\"" + s.source.well + "\""),
+                                                                                 motion::msg::integer("wells", static_cast<long long>(lw.wells.size()))}));
             return;
         }
         src = wellPlace(*p, *w);
         if (!reachable(src.at)) {
-            error(fieldPath(srcPath, "well"), msg::make("recipe.source_outside_travel"));
+            error(fieldPath(srcPath, "well"), motion::msg::make("recipe.source_outside_travel"));
             return;
         }
     }
     const double room = m_cap - m_p - m_air;
     const int perRound = static_cast<int>(std::floor((room + 1e-6) / s.volumeUl));
     if (perRound < 1) {
-        error(fieldPath(path, "volume_ul"), msg::make("recipe.transfer_no_room", {volume("volume", s.volumeUl), volume("room", std::max(0.0, room)),
+        error(fieldPath(path, "volume_ul"), motion::msg::make("recipe.transfer_no_room", {volume("volume", s.volumeUl), volume("room", std::max(0.0, room)),
                                                                                   volume("capacity", m_cap)}));
         return;
     }
@@ -287,7 +287,7 @@ void Planner::planTransfer(int i, const Step& s, const std::string& path, const 
         const int round = static_cast<int>(k / static_cast<std::size_t>(perRound)) + 1;
         if (src.w && vol > src.w->volumeUl + kEps && !reported) {
             reported = true;
-            warning(srcPath, msg::make("recipe.round_over_source", {volume("volume", vol), volume("capacity", src.w->volumeUl)}));
+            warning(srcPath, motion::msg::make("recipe.round_over_source", {volume("volume", vol), volume("capacity", src.w->volumeUl)}));
         }
         aspirateAt(i, src, vol, speed, fieldPath(path, "volume_ul"), &reported);
         m_plan.ops.back().round = round;
@@ -298,4 +298,4 @@ void Planner::planTransfer(int i, const Step& s, const std::string& path, const 
     }
 }
 
-} // namespace plates::planning
+} // namespace motion::plates::planning

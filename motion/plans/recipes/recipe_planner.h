@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace plates::planning {
+namespace motion::plates::planning {
 
 constexpr double kEps = 1e-9;
 /// Slowest speed a recipe may ask for (mm/s or µL/s): slower is a typo, and the
@@ -34,10 +34,10 @@ public:
     RecipePlan run();
 
 private:
-    void error(const std::string& path, msg::Message message) { m_plan.problems.push_back(msg::error(path, std::move(message))); }
-    void warning(const std::string& path, msg::Message message) { m_plan.problems.push_back(msg::warning(path, std::move(message))); }
+    void error(const std::string& path, motion::msg::Message message) { m_plan.problems.push_back(motion::msg::error(path, std::move(message))); }
+    void warning(const std::string& path, motion::msg::Message message) { m_plan.problems.push_back(motion::msg::warning(path, std::move(message))); }
 
-    static msg::Arg volume(std::string name, double v) { return ulArg(std::move(name), std::round(v * 1000) / 1000); }
+    static motion::msg::Arg volume(std::string name, double v) { return ulArg(std::move(name), std::round(v * 1000) / 1000); }
 
     // ---- recipe-level checks ---------------------------------------------------
 
@@ -114,4 +114,4 @@ private:
     bool m_tooMany = false;
 };
 
-} // namespace plates::planning
+} // namespace motion::plates::planning

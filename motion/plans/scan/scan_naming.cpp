@@ -12,11 +12,11 @@ struct Placeholder {
 };
 
 /// Parses "{name}" or "{name:0N}" starting at `open`; returns the position after '}'.
-std::optional<std::size_t> parsePlaceholder(const std::string& s, std::size_t open, Placeholder* out, msg::Message* error)
+std::optional<std::size_t> parsePlaceholder(const std::string& s, std::size_t open, Placeholder* out, motion::msg::Message* error)
 {
     const std::size_t close = s.find('}', open);
     if (close == std::string::npos) {
-        *error = msg::make("scan.naming.unclosed_brace", {msg::integer("position", static_cast<long long>(open + 1), msg::Unit::None)});
+        *error = motion::msg::make("scan.naming.unclosed_brace", {motion::msg::integer("position", static_cast<long long>(open + 1), motion::msg::Unit::None)});
         return std::nullopt;
     }
     const std::string body = s.substr(open + 1, close - open - 1);
@@ -29,14 +29,14 @@ std::optional<std::size_t> parsePlaceholder(const std::string& s, std::size_t op
     else if (name == "col")
         out->kind = Placeholder::Col;
     else {
-        *error = msg::make("scan.naming.unknown_placeholder", {msg::verbatim("placeholder", "{" + body + "}")});
+        *error = motion::msg::make("scan.naming.unknown_placeholder", {motion::msg::verbatim("placeholder", "{" + body + "}")});
         return std::nullopt;
     }
     out->width = 0;
     if (colon != std::string::npos) {
         const std::string spec = body.substr(colon + 1);
         if (spec.size() != 2 || spec[0] != '0' || spec[1] < '1' || spec[1] > '9') {
-            *error = msg::make("scan.naming.bad_width", {msg::verbatim("placeholder", "{" + body + "}")});
+            *error = motion::msg::make("scan.naming.bad_width", {motion::msg::verbatim("placeholder", "{" + body + "}")});
             return std::nullopt;
         }
         out->width = spec[1] - '0';
@@ -46,31 +46,31 @@ std::optional<std::size_t> parsePlaceholder(const std::string& s, std::size_t op
 
 } // namespace
 
-std::optional<msg::Message> checkFilePattern(const std::string& pattern)
+std::optional<motion::msg::Message> checkFilePattern(const std::string& pattern)
 {
     if (pattern.empty())
-        return msg::make("scan.naming.empty");
+        return motion::msg::make("scan.naming.empty");
     if (pattern.front() == ' ' || pattern.back() == ' ' || pattern.front() == '\t' || pattern.back() == '\t')
-        return msg::make("scan.naming.edge_space");
+        return motion::msg::make("scan.naming.edge_space");
     if (pattern.front() == '#')
-        return msg::make("scan.naming.starts_with_hash");
+        return motion::msg::make("scan.naming.starts_with_hash");
     bool index = false, row = false, col = false;
     for (std::size_t i = 0; i < pattern.size();) {
         const char ch = pattern[i];
         if (ch == ';')
-            return msg::make("scan.naming.semicolon");
+            return motion::msg::make("scan.naming.semicolon");
         if (ch == '/' || ch == '\\')
-            return msg::make("scan.naming.folder");
+            return motion::msg::make("scan.naming.folder");
         if (static_cast<unsigned char>(ch) < 0x20)
-            return msg::make("scan.naming.control_character");
+            return motion::msg::make("scan.naming.control_character");
         if (ch == '}')
-            return msg::make("scan.naming.unopened_brace", {msg::integer("position", static_cast<long long>(i + 1), msg::Unit::None)});
+            return motion::msg::make("scan.naming.unopened_brace", {motion::msg::integer("position", static_cast<long long>(i + 1), motion::msg::Unit::None)});
         if (ch != '{') {
             ++i;
             continue;
         }
         Placeholder p;
-        msg::Message error;
+        motion::msg::Message error;
         const auto next = parsePlaceholder(pattern, i, &p, &error);
         if (!next)
             return error;
@@ -80,7 +80,7 @@ std::optional<msg::Message> checkFilePattern(const std::string& pattern)
         i = *next;
     }
     if (!index && !(row && col))
-        return msg::make("scan.naming.no_index");
+        return motion::msg::make("scan.naming.no_index");
     return std::nullopt;
 }
 
@@ -95,7 +95,7 @@ std::string tileFileName(const ExportNaming& naming, int index, int row, int col
             continue;
         }
         Placeholder p;
-        msg::Message error;
+        motion::msg::Message error;
         const auto next = parsePlaceholder(s, i, &p, &error);
         if (!next) {  // not checked: keep the text as it is rather than guess
             out += s.substr(i);

@@ -14,7 +14,7 @@ namespace motion::scan {
 struct Tile;
 
 /// nullopt when the pattern is usable, else why not (scan.naming.*: "unknown placeholder {x}").
-std::optional<msg::Message> checkFilePattern(const std::string& pattern);
+std::optional<motion::msg::Message> checkFilePattern(const std::string& pattern);
 
 /// The file name of a tile. The pattern must have passed checkFilePattern.
 std::string tileFileName(const ExportNaming& naming, int index, int row, int col);

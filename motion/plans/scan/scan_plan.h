@@ -116,10 +116,10 @@ constexpr long kMaxTiles = 250000;  ///< 500 × 500: far beyond any slide, well 
 /// problem's path is the member's path in the plan file ("camera.overlap",
 /// "region.vertices_mm[3]"), so the file reader can point at it and the CLI can name
 /// its option; its message is scan.* (docs/scan.md, "Messages").
-msg::Problems validate(const ScanPlan& plan);
+motion::msg::Problems validate(const ScanPlan& plan);
 /// …and against a stage: the region inside its travel, the field no larger than
 /// it, the speed within its limits.
-msg::Problems validate(const ScanPlan& plan, const StageModel& stage);
+motion::msg::Problems validate(const ScanPlan& plan, const StageModel& stage);
 
 /// The position to command for a planned one: the planned position itself. With the
 /// device's compensation the device moves it by the correction; the host never does.

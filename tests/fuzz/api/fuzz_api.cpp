@@ -77,22 +77,22 @@ struct Coverage {
             fail(__VA_ARGS__); \
     } while (0)
 
-const QVector<api::CommandMethod>& methods()
+const QVector<app::api::CommandMethod>& methods()
 {
-    static const QVector<api::CommandMethod> m = api::commandMethods();
+    static const QVector<app::api::CommandMethod> m = app::api::commandMethods();
     return m;
 }
 
 QList<QByteArray> split(const QByteArray& bytes, const std::vector<int>& chunks, int* overlong)
 {
-    api::LineSplitter s;
+    app::api::LineSplitter s;
     QList<QByteArray> lines;
     int from = 0;
     std::size_t k = 0;
     while (from < bytes.size()) {
         const int n = chunks.empty() ? static_cast<int>(bytes.size()) : std::max(1, chunks[k++ % chunks.size()]);
         s.feed(bytes.mid(from, n), [&](const QByteArray& l) { lines << l; }, [&] { ++*overlong; });
-        CHECK(s.pending() <= api::kMaxLineBytes, "the splitter holds %d bytes", s.pending());
+        CHECK(s.pending() <= app::api::kMaxLineBytes, "the splitter holds %d bytes", s.pending());
         from += n;
     }
     return lines;
@@ -101,36 +101,36 @@ QList<QByteArray> split(const QByteArray& bytes, const std::vector<int>& chunks,
 void checkLine(const QByteArray& line)
 {
     ++g_cov.lines;
-    CHECK(line.size() <= api::kMaxLineBytes, "a line of %d bytes came through", static_cast<int>(line.size()));
-    const api::Request r = api::readRequest(line);
-    const api::Request again = api::readRequest(line);
+    CHECK(line.size() <= app::api::kMaxLineBytes, "a line of %d bytes came through", static_cast<int>(line.size()));
+    const app::api::Request r = app::api::readRequest(line);
+    const app::api::Request again = app::api::readRequest(line);
     CHECK(r.kind == again.kind && r.errorCode == again.errorCode && r.method == again.method && r.id == again.id && r.params == again.params,
           "reading the same line twice gave two answers");
     QByteArray answer;
     switch (r.kind) {
-    case api::Request::Kind::Invalid:
+    case app::api::Request::Kind::Invalid:
         ++g_cov.invalid;
-        CHECK(r.errorCode == api::code::kParseError || r.errorCode == api::code::kInvalidRequest || r.errorCode == api::code::kInvalidParams,
+        CHECK(r.errorCode == app::api::code::kParseError || r.errorCode == app::api::code::kInvalidRequest || r.errorCode == app::api::code::kInvalidParams,
               "error code %d", r.errorCode);
         CHECK(!r.errorMessage.isEmpty(), "an error without a message");
         CHECK(r.id.isNull() || r.id.isString() || r.id.isDouble(), "an invalid request answered with an id of another type");
-        answer = api::errorLine(r.id, r.errorCode, r.errorMessage);
+        answer = app::api::errorLine(r.id, r.errorCode, r.errorMessage);
         break;
-    case api::Request::Kind::Call:
+    case app::api::Request::Kind::Call:
         ++g_cov.calls;
         CHECK(r.id.isNull() || r.id.isString() || r.id.isDouble(), "a call's id is neither number, string nor null");
         [[fallthrough]];
-    case api::Request::Kind::Notification:
-        if (r.kind == api::Request::Kind::Notification)
+    case app::api::Request::Kind::Notification:
+        if (r.kind == app::api::Request::Kind::Notification)
             ++g_cov.notifications;
         CHECK(!r.method.isEmpty(), "a request without a method");
-        answer = api::resultLine(r.id, QJsonObject{});
-        if (const api::CommandMethod* m = api::findMethod(methods(), r.method)) {
+        answer = app::api::resultLine(r.id, QJsonObject{});
+        if (const app::api::CommandMethod* m = app::api::findMethod(methods(), r.method)) {
             QStringList words, again2;
             bool positional = false, positional2 = false;
-            api::ParamProblem problem, problem2;
-            const bool ok = api::toWords(*m, r.params, &words, &positional, &problem);
-            const bool ok2 = api::toWords(*m, r.params, &again2, &positional2, &problem2);
+            app::api::ParamProblem problem, problem2;
+            const bool ok = app::api::toWords(*m, r.params, &words, &positional, &problem);
+            const bool ok2 = app::api::toWords(*m, r.params, &again2, &positional2, &problem2);
             CHECK(ok == ok2 && words == again2 && problem.field == problem2.field, "converting the same params twice differs");
             if (ok) {
                 ++g_cov.converted;
@@ -230,7 +230,7 @@ QByteArray makeInput(std::mt19937_64& rng, std::uint64_t i)
     const int lines = static_cast<int>(rng() % 6) + 1;
     for (int l = 0; l < lines; ++l) {
         if (i % 500 == 499 && l == 0)
-            out += QByteArray(api::kMaxLineBytes + static_cast<int>(rng() % 100), 'x');  // an overlong line now and then
+            out += QByteArray(app::api::kMaxLineBytes + static_cast<int>(rng() % 100), 'x');  // an overlong line now and then
         else if (rng() % 8 == 0)
             out += QByteArray(static_cast<int>(rng() % 300), static_cast<char>(rng() % 256));
         else

@@ -121,7 +121,7 @@ struct RefResult {
 
 RefResult referenceDecode(const Bytes& s)
 {
-    constexpr std::size_t kMaxBlock = proto::kMaxBodyBytes + proto::kMaxBodyBytes / 254 + 1;
+    constexpr std::size_t kMaxBlock = dev::proto::kMaxBodyBytes + dev::proto::kMaxBodyBytes / 254 + 1;
     RefResult r;
     auto classify = [&](std::size_t from, std::size_t to, bool terminated) {
         const std::size_t len = to - from;
@@ -135,14 +135,14 @@ RefResult referenceDecode(const Bytes& s)
         if (!terminated)
             return;  // still waiting for its delimiter
         const auto body = refCobsDecode(s.data() + from, len);
-        if (body && body->size() > proto::kMaxBodyBytes) {
+        if (body && body->size() > dev::proto::kMaxBodyBytes) {
             ++r.stats.oversize;
         } else if (!body || body->size() < 5) {
             ++r.stats.malformed;
         } else {
             const std::size_t n = body->size();
             const unsigned want = (*body)[n - 2] | ((*body)[n - 1] << 8);
-            if (proto::crc16Ccitt(body->data(), n - 2) != want) {
+            if (dev::proto::crc16Ccitt(body->data(), n - 2) != want) {
                 ++r.stats.crcErrors;
             } else {
                 Frame f;
@@ -176,51 +176,51 @@ void checkDecoder(const Bytes& p, std::optional<T> (*decode)(const Bytes&), cons
     if (!d)
         return;
     ++g_cov.payloadsAccepted;
-    const Bytes again = proto::encode(*d);
+    const Bytes again = dev::proto::encode(*d);
     CHECK(again == p, "%s accepted a %zu-byte payload that re-encodes to %zu different bytes", name, p.size(), again.size());
 }
 
 void checkAllDecoders(const Bytes& p)
 {
-    checkDecoder(p, &proto::decodeHelloReply, "decodeHelloReply");
-    checkDecoder(p, &proto::decodeStatusReply, "decodeStatusReply");
-    checkDecoder(p, &proto::decodeHomeRequest, "decodeHomeRequest");
-    checkDecoder(p, &proto::decodeMoveRequest, "decodeMoveRequest");
-    checkDecoder(p, &proto::decodeJogStepRequest, "decodeJogStepRequest");
-    checkDecoder(p, &proto::decodeAxisMaskRequest, "decodeAxisMaskRequest");
-    checkDecoder(p, &proto::decodeLimitsReply, "decodeLimitsReply");
-    checkDecoder(p, &proto::decodeSetLimitsRequest, "decodeSetLimitsRequest");
-    checkDecoder(p, &proto::decodeJogVelocityRequest, "decodeJogVelocityRequest");
-    checkDecoder(p, &proto::decodeSubscribeRequest, "decodeSubscribeRequest");
-    checkDecoder(p, &proto::decodeSubscribeReply, "decodeSubscribeReply");
-    checkDecoder(p, &proto::decodeTelemetryBatch, "decodeTelemetryBatch");
-    checkDecoder(p, &proto::decodeEvent, "decodeEvent");
-    checkDecoder(p, &proto::decodeErrorReply, "decodeErrorReply");
-    checkDecoder(p, &proto::decodeAxisRequest, "decodeAxisRequest");
-    checkDecoder(p, &proto::decodeGainsReply, "decodeGainsReply");
-    checkDecoder(p, &proto::decodeSetGainsRequest, "decodeSetGainsRequest");
-    checkDecoder(p, &proto::decodeStepTestRequest, "decodeStepTestRequest");
-    checkDecoder(p, &proto::decodeRelayTestRequest, "decodeRelayTestRequest");
-    checkDecoder(p, &proto::decodeCaptureRequest, "decodeCaptureRequest");
-    checkDecoder(p, &proto::decodeCaptureReply, "decodeCaptureReply");
-    checkDecoder(p, &proto::decodeAbortRequest, "decodeAbortRequest");
-    checkDecoder(p, &proto::decodePathBeginRequest, "decodePathBeginRequest");
-    checkDecoder(p, &proto::decodePathAppendRequest, "decodePathAppendRequest");
-    checkDecoder(p, &proto::decodePathStatusReply, "decodePathStatusReply");
-    checkDecoder(p, &proto::decodeCompUploadRequest, "decodeCompUploadRequest");
-    checkDecoder(p, &proto::decodeCompUploadReply, "decodeCompUploadReply");
-    checkDecoder(p, &proto::decodeCompGetRequest, "decodeCompGetRequest");
-    checkDecoder(p, &proto::decodeCompGetReply, "decodeCompGetReply");
-    checkDecoder(p, &proto::decodeCompEnableRequest, "decodeCompEnableRequest");
-    if (const auto a = proto::decodePathAppendRequest(p))
-        CHECK(!a->segments.empty() && a->segments.size() <= std::size_t(proto::kMaxPathSegmentsPerAppend), "PATH_APPEND segment count");
-    const auto move = proto::decodeMoveRequest(p);
+    checkDecoder(p, &dev::proto::decodeHelloReply, "decodeHelloReply");
+    checkDecoder(p, &dev::proto::decodeStatusReply, "decodeStatusReply");
+    checkDecoder(p, &dev::proto::decodeHomeRequest, "decodeHomeRequest");
+    checkDecoder(p, &dev::proto::decodeMoveRequest, "decodeMoveRequest");
+    checkDecoder(p, &dev::proto::decodeJogStepRequest, "decodeJogStepRequest");
+    checkDecoder(p, &dev::proto::decodeAxisMaskRequest, "decodeAxisMaskRequest");
+    checkDecoder(p, &dev::proto::decodeLimitsReply, "decodeLimitsReply");
+    checkDecoder(p, &dev::proto::decodeSetLimitsRequest, "decodeSetLimitsRequest");
+    checkDecoder(p, &dev::proto::decodeJogVelocityRequest, "decodeJogVelocityRequest");
+    checkDecoder(p, &dev::proto::decodeSubscribeRequest, "decodeSubscribeRequest");
+    checkDecoder(p, &dev::proto::decodeSubscribeReply, "decodeSubscribeReply");
+    checkDecoder(p, &dev::proto::decodeTelemetryBatch, "decodeTelemetryBatch");
+    checkDecoder(p, &dev::proto::decodeEvent, "decodeEvent");
+    checkDecoder(p, &dev::proto::decodeErrorReply, "decodeErrorReply");
+    checkDecoder(p, &dev::proto::decodeAxisRequest, "decodeAxisRequest");
+    checkDecoder(p, &dev::proto::decodeGainsReply, "decodeGainsReply");
+    checkDecoder(p, &dev::proto::decodeSetGainsRequest, "decodeSetGainsRequest");
+    checkDecoder(p, &dev::proto::decodeStepTestRequest, "decodeStepTestRequest");
+    checkDecoder(p, &dev::proto::decodeRelayTestRequest, "decodeRelayTestRequest");
+    checkDecoder(p, &dev::proto::decodeCaptureRequest, "decodeCaptureRequest");
+    checkDecoder(p, &dev::proto::decodeCaptureReply, "decodeCaptureReply");
+    checkDecoder(p, &dev::proto::decodeAbortRequest, "decodeAbortRequest");
+    checkDecoder(p, &dev::proto::decodePathBeginRequest, "decodePathBeginRequest");
+    checkDecoder(p, &dev::proto::decodePathAppendRequest, "decodePathAppendRequest");
+    checkDecoder(p, &dev::proto::decodePathStatusReply, "decodePathStatusReply");
+    checkDecoder(p, &dev::proto::decodeCompUploadRequest, "decodeCompUploadRequest");
+    checkDecoder(p, &dev::proto::decodeCompUploadReply, "decodeCompUploadReply");
+    checkDecoder(p, &dev::proto::decodeCompGetRequest, "decodeCompGetRequest");
+    checkDecoder(p, &dev::proto::decodeCompGetReply, "decodeCompGetReply");
+    checkDecoder(p, &dev::proto::decodeCompEnableRequest, "decodeCompEnableRequest");
+    if (const auto a = dev::proto::decodePathAppendRequest(p))
+        CHECK(!a->segments.empty() && a->segments.size() <= std::size_t(dev::proto::kMaxPathSegmentsPerAppend), "PATH_APPEND segment count");
+    const auto move = dev::proto::decodeMoveRequest(p);
     if (move)
-        CHECK(static_cast<int>(move->targets.size()) == proto::popcount8(move->axisMask), "MOVE target count != axes");
-    const auto jog = proto::decodeJogVelocityRequest(p);
+        CHECK(static_cast<int>(move->targets.size()) == dev::proto::popcount8(move->axisMask), "MOVE target count != axes");
+    const auto jog = dev::proto::decodeJogVelocityRequest(p);
     if (jog)
-        CHECK(static_cast<int>(jog->velocities.size()) == proto::popcount8(jog->axisMask), "JOG_VELOCITY count != axes");
-    const auto batch = proto::decodeTelemetryBatch(p);
+        CHECK(static_cast<int>(jog->velocities.size()) == dev::proto::popcount8(jog->axisMask), "JOG_VELOCITY count != axes");
+    const auto batch = dev::proto::decodeTelemetryBatch(p);
     if (batch)
         CHECK(batch->values.size() == std::size_t{batch->sampleCount} * batch->channels.size(), "batch value count");
 }
@@ -306,12 +306,12 @@ void checkFrameDecoder(const Bytes& input, Rng& rng)
     CHECK(s.droppedBytes >= s.malformed + 6 * s.crcErrors + 1026 * s.oversize, "error counted without its bytes");
 
     for (const auto& f : frames) {
-        CHECK(f.payload.size() <= proto::kMaxPayloadBytes, "decoded payload of %zu bytes is over the cap", f.payload.size());
+        CHECK(f.payload.size() <= dev::proto::kMaxPayloadBytes, "decoded payload of %zu bytes is over the cap", f.payload.size());
         Bytes wire;
-        CHECK(proto::encodeFrame(f, wire), "a decoded frame does not re-encode");
+        CHECK(dev::proto::encodeFrame(f, wire), "a decoded frame does not re-encode");
         CHECK(wire.size() >= 2 && wire.front() == 0 && wire.back() == 0, "re-encoded frame is not delimited");
         CHECK(std::count(wire.begin() + 1, wire.end() - 1, 0) == 0, "re-encoded frame has a zero inside");
-        CHECK(wire.size() <= proto::wireBytesForPayload(f.payload.size()), "re-encoded frame longer than wireBytesForPayload");
+        CHECK(wire.size() <= dev::proto::wireBytesForPayload(f.payload.size()), "re-encoded frame longer than wireBytesForPayload");
         FrameDecoder again;
         std::vector<Frame> back;
         again.feed(wire.data(), wire.size(), back);
@@ -358,14 +358,14 @@ private:
 
 bool knownRequest(std::uint8_t t)
 {
-    return (t >= 0x01 && t <= 0x0A) || (t >= 0x20 && t <= 0x22) || proto::tuningTypeName(t) != nullptr
-        || (t >= 0x10 && t <= 0x12) || (t >= 0x24 && t <= 0x26) || proto::compensationTypeName(t) != nullptr;
+    return (t >= 0x01 && t <= 0x0A) || (t >= 0x20 && t <= 0x22) || dev::proto::tuningTypeName(t) != nullptr
+        || (t >= 0x10 && t <= 0x12) || (t >= 0x24 && t <= 0x26) || dev::proto::compensationTypeName(t) != nullptr;
 }
 
 struct FirmwareChecker {
-    sim::Firmware& fw;
+    dev::sim::Firmware& fw;
     int axes;
-    proto::DeviceKind kind;
+    dev::proto::DeviceKind kind;
     FrameDecoder outDecoder;
     std::uint16_t nextDeviceSeq = 0;
     std::uint64_t executed = 0, duplicates = 0;
@@ -381,13 +381,13 @@ struct FirmwareChecker {
         ++nextDeviceSeq;
         if (f.type == static_cast<std::uint8_t>(MsgType::Event)) {
             ++g_cov.events;
-            const auto e = proto::decodeEvent(f.payload);
+            const auto e = dev::proto::decodeEvent(f.payload);
             CHECK(e.has_value(), "EVENT payload does not decode");
-            CHECK(e->axis == proto::kNoAxis || e->axis < axes, "event on axis %u", unsigned{e->axis});
+            CHECK(e->axis == dev::proto::kNoAxis || e->axis < axes, "event on axis %u", unsigned{e->axis});
             ++g_cov.eventByKind[static_cast<std::size_t>(e->kind) & 15];
         } else {
             ++g_cov.batches;
-            const auto b = proto::decodeTelemetryBatch(f.payload);
+            const auto b = dev::proto::decodeTelemetryBatch(f.payload);
             CHECK(b.has_value(), "TELEMETRY payload does not decode");
             CHECK(b->sampleCount >= 1 && !b->channels.empty(), "empty telemetry batch");
         }
@@ -409,35 +409,35 @@ struct FirmwareChecker {
     void checkReplyPayload(const Frame& req, const Frame& rep)
     {
         if (rep.type == static_cast<std::uint8_t>(MsgType::Error)) {
-            const auto e = proto::decodeErrorReply(rep.payload);
+            const auto e = dev::proto::decodeErrorReply(rep.payload);
             CHECK(e.has_value(), "ERROR reply to 0x%02X does not decode", unsigned{req.type});
             ++g_cov.errorByCode[static_cast<std::size_t>(e->code) & 15];
             if (!knownRequest(req.type))
-                CHECK(e->code == proto::ErrorCode::UnknownCommand && e->value == req.type,
+                CHECK(e->code == dev::proto::ErrorCode::UnknownCommand && e->value == req.type,
                       "unknown request 0x%02X answered with error %d", unsigned{req.type}, int(e->code));
             return;
         }
         CHECK(knownRequest(req.type), "unknown request 0x%02X got a success reply", unsigned{req.type});
-        CHECK(rep.type == (req.type | proto::kReplyFlag), "reply type 0x%02X to request 0x%02X", unsigned{rep.type},
+        CHECK(rep.type == (req.type | dev::proto::kReplyFlag), "reply type 0x%02X to request 0x%02X", unsigned{rep.type},
               unsigned{req.type});
         switch (static_cast<MsgType>(req.type)) {
         case MsgType::Hello: {
-            const auto h = proto::decodeHelloReply(rep.payload);
+            const auto h = dev::proto::decodeHelloReply(rep.payload);
             CHECK(h && h->kind == kind && static_cast<int>(h->axes.size()) == axes
-                      && h->protocolVersion == proto::kProtocolVersion,
+                      && h->protocolVersion == dev::proto::kProtocolVersion,
                   "HELLO reply wrong");
             CHECK(req.payload.size() <= 1, "HELLO with a payload of more than its flags byte was accepted");
-            CHECK(h->motionLimits.has_value() == (req.payload.size() == 1 && (req.payload[0] & proto::HelloReadsExtensions)),
+            CHECK(h->motionLimits.has_value() == (req.payload.size() == 1 && (req.payload[0] & dev::proto::HelloReadsExtensions)),
                   "HELLO's extension blocks do not follow the request's flags");
             break;
         }
         case MsgType::Status: {
-            const auto st = proto::decodeStatusReply(rep.payload);
+            const auto st = dev::proto::decodeStatusReply(rep.payload);
             CHECK(st && static_cast<int>(st->axes.size()) == axes, "STATUS reply wrong");
             break;
         }
         case MsgType::GetLimits: {
-            const auto l = proto::decodeLimitsReply(rep.payload);
+            const auto l = dev::proto::decodeLimitsReply(rep.payload);
             CHECK(l && static_cast<int>(l->axes.size()) == axes, "GET_LIMITS reply wrong");
             for (const auto& a : l->axes)
                 CHECK(a.min < a.max, "soft limits out of order");
@@ -446,28 +446,28 @@ struct FirmwareChecker {
         case MsgType::PathBegin:
         case MsgType::PathAppend:
         case MsgType::PathStatus: {
-            const auto st = proto::decodePathStatusReply(rep.payload);
+            const auto st = dev::proto::decodePathStatusReply(rep.payload);
             CHECK(st.has_value(), "path reply to 0x%02X does not decode", unsigned{req.type});
             CHECK(st->freeSlots <= st->capacity && st->executingIndex <= st->nextIndex, "path status inconsistent");
             break;
         }
         case MsgType::Subscribe: {
-            const auto r = proto::decodeSubscribeReply(rep.payload);
+            const auto r = dev::proto::decodeSubscribeReply(rep.payload);
             CHECK(r.has_value(), "SUBSCRIBE reply does not decode");
             CHECK((r->rateHz == 0) == (r->samplesPerBatch == 0), "SUBSCRIBE reply rate/batch inconsistent");
             break;
         }
         default:
-            if (req.type == static_cast<std::uint8_t>(proto::kGetGains)) {
-                const auto g = proto::decodeGainsReply(rep.payload);
+            if (req.type == static_cast<std::uint8_t>(dev::proto::kGetGains)) {
+                const auto g = dev::proto::decodeGainsReply(rep.payload);
                 CHECK(g && g->axis < axes && g->controlPeriodUs > 0, "GET_GAINS reply wrong");
                 CHECK(std::isfinite(g->gains.kp) && g->gains.kp >= 0 && std::isfinite(g->gains.ki) && g->gains.ki >= 0
                           && std::isfinite(g->gains.kd) && g->gains.kd >= 0,
                       "the device holds gains it should have refused");
                 break;
             }
-            if (req.type == static_cast<std::uint8_t>(proto::kGetCapture)) {
-                const auto c = proto::decodeCaptureReply(rep.payload);
+            if (req.type == static_cast<std::uint8_t>(dev::proto::kGetCapture)) {
+                const auto c = dev::proto::decodeCaptureReply(rep.payload);
                 CHECK(c && c->axis < axes && c->first + c->samples.size() <= c->total, "GET_CAPTURE reply wrong");
                 break;
             }
@@ -483,10 +483,10 @@ struct FirmwareChecker {
     {
         std::vector<const Frame*> order;
         for (const auto& f : chunkFrames)
-            if (proto::isRealtimeType(f.type))
+            if (dev::proto::isRealtimeType(f.type))
                 order.push_back(&f);
         for (const auto& f : chunkFrames)
-            if (f.type < 0x80 && !proto::isRealtimeType(f.type))
+            if (f.type < 0x80 && !dev::proto::isRealtimeType(f.type))
                 order.push_back(&f);
 
         fw.receive(data, size);
@@ -516,7 +516,7 @@ struct FirmwareChecker {
                       unsigned{req.type}, unsigned{req.seq});
             } else if (velocity && haveMotionSeq && static_cast<std::int16_t>(req.seq - lastMotionSeq) < 0) {
                 // A late velocity command (docs/protocol.md): answered, never acted on, not cached.
-                CHECK(rep.type == proto::replyTypeOf(MsgType::JogVelocity) && rep.payload.empty(),
+                CHECK(rep.type == dev::proto::replyTypeOf(MsgType::JogVelocity) && rep.payload.empty(),
                       "a late JOG_VELOCITY seq %u got 0x%02X", unsigned{req.seq}, unsigned{rep.type});
             } else {
                 if (velocity || req.type == static_cast<std::uint8_t>(MsgType::Stop) || req.type == static_cast<std::uint8_t>(MsgType::EStop)) {
@@ -527,7 +527,7 @@ struct FirmwareChecker {
                 ++g_cov.executed;
                 g_cov.errorReplies += rep.type == static_cast<std::uint8_t>(MsgType::Error);
                 cache.insert(req).reply = rep;
-                if (!proto::isRealtimeType(req.type))
+                if (!dev::proto::isRealtimeType(req.type))
                     lastQueued = req;
                 checkReplyPayload(req, rep);
             }
@@ -554,8 +554,8 @@ void checkFirmware(const Bytes& input, Rng& rng)
 {
     static const std::uint32_t kBauds[] = {9600, 115200, 115200, 921600};
     const bool stage = (rng.next() & 1) != 0;
-    const sim::MachineConfig cfg = stage ? sim::stageConfig() : sim::analyzerConfig();
-    sim::Firmware fw(cfg, kBauds[rng.below(4)]);
+    const dev::sim::MachineConfig cfg = stage ? dev::sim::stageConfig() : dev::sim::analyzerConfig();
+    dev::sim::Firmware fw(cfg, kBauds[rng.below(4)]);
     FirmwareChecker c{fw, static_cast<int>(cfg.axes.size()), cfg.kind, {}, 0, 0, 0, false, 0, {}, {}};
 
     // The mirror decoder sees the same chunks as the firmware, so it knows which
@@ -570,7 +570,7 @@ void checkFirmware(const Bytes& input, Rng& rng)
     // limit switches are reachable (homing takes 10–15 s of virtual time).
     if (rng.below(200) == 0) {
         Bytes home;
-        proto::encodeFrame(static_cast<std::uint8_t>(MsgType::Home), 0xFFFE, proto::encode(proto::HomeRequest{0}).data(), 1, home);
+        dev::proto::encodeFrame(static_cast<std::uint8_t>(MsgType::Home), 0xFFFE, dev::proto::encode(dev::proto::HomeRequest{0}).data(), 1, home);
         feed(home.data(), home.size());
         auto allHomed = [&] {
             for (int i = 0; i < fw.machine().axisCount(); ++i)
@@ -611,7 +611,7 @@ void checkFirmware(const Bytes& input, Rng& rng)
     if (const CachedModel* newest = c.cache.newest()) {
         Bytes wire;
         const Frame f{newest->type, newest->seq, newest->payload};
-        CHECK(proto::encodeFrame(f, wire), "cannot re-encode a cached request");
+        CHECK(dev::proto::encodeFrame(f, wire), "cannot re-encode a cached request");
         const std::uint64_t dupsBefore = fw.duplicateRequests();
         feed(wire.data(), wire.size());
         CHECK(fw.duplicateRequests() > dupsBefore, "a retransmitted request was executed again");

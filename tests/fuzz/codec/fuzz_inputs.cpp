@@ -63,17 +63,17 @@ std::string randText(Rng& r)
     return s;
 }
 
-std::vector<proto::ChannelRef> randChannels(Rng& r)
+std::vector<dev::proto::ChannelRef> randChannels(Rng& r)
 {
-    std::vector<proto::ChannelRef> ch(r.below(r.chance(5) ? 200 : 6));
+    std::vector<dev::proto::ChannelRef> ch(r.below(r.chance(5) ? 200 : 6));
     for (auto& c : ch) {
-        c.axis = r.chance(10) ? proto::kNoAxis : static_cast<std::uint8_t>(r.below(r.chance(90) ? 4 : 256));
-        c.kind = static_cast<proto::ChannelKind>(r.below(7));
+        c.axis = r.chance(10) ? dev::proto::kNoAxis : static_cast<std::uint8_t>(r.below(r.chance(90) ? 4 : 256));
+        c.kind = static_cast<dev::proto::ChannelKind>(r.below(7));
     }
     return ch;
 }
 
-proto::WireGains randGains(Rng& r)
+dev::proto::WireGains randGains(Rng& r)
 {
     auto one = [&]() -> float {
         switch (r.below(8)) {
@@ -87,7 +87,7 @@ proto::WireGains randGains(Rng& r)
     return {one(), one(), one()};
 }
 
-proto::WireEnvelope randEnvelope(Rng& r)
+dev::proto::WireEnvelope randEnvelope(Rng& r)
 {
     auto lim = [&]() { return static_cast<std::uint32_t>(r.chance(80) ? r.range(0, 200000) : r.next()); };
     return {lim(), lim(), static_cast<std::uint32_t>(r.chance(80) ? r.range(0, 3000) : r.next())};
@@ -95,9 +95,9 @@ proto::WireEnvelope randEnvelope(Rng& r)
 
 /// Segments near the machine's start positions (so some are accepted once homed), some arcs
 /// with ends on their circle, some nonsense.
-proto::PathAppendRequest randPathAppend(Rng& r)
+dev::proto::PathAppendRequest randPathAppend(Rng& r)
 {
-    using namespace proto;
+    using namespace dev::proto;
     PathAppendRequest a;
     a.firstIndex = r.chance(80) ? static_cast<std::uint32_t>(r.below(40)) : static_cast<std::uint32_t>(r.next());
     a.flags = static_cast<std::uint8_t>(r.below(4));
@@ -120,7 +120,7 @@ proto::PathAppendRequest randPathAppend(Rng& r)
 
 Bytes validPayload(Rng& r, std::uint8_t type)
 {
-    using namespace proto;
+    using namespace dev::proto;
     switch (type) {
     // HELLO: as a 1.0 host (empty), or with flags, so sessions that read extension blocks
     // and event reasons (bit 1) are driven too.
@@ -384,15 +384,15 @@ Bytes validStream(Rng& r)
         f.payload = validPayload(r, f.type);
         if (r.chance(25))
             mutatePayload(r, f.payload);
-        if (f.payload.size() > proto::kMaxPayloadBytes)
-            f.payload.resize(proto::kMaxPayloadBytes);
+        if (f.payload.size() > dev::proto::kMaxPayloadBytes)
+            f.payload.resize(dev::proto::kMaxPayloadBytes);
         frames.push_back(std::move(f));
     }
     Bytes wire;
     for (const auto& f : frames) {
         if (r.chance(10))
             wire.insert(wire.end(), r.below(4), 0x00);  // idle fill
-        proto::encodeFrame(f, wire);
+        dev::proto::encodeFrame(f, wire);
     }
     return wire;
 }
@@ -458,14 +458,14 @@ void mutateStream(Rng& r, Bytes& s)
                     s[at] = s[at] == 0 ? static_cast<std::uint8_t>(1 + r.below(255)) : 0;
                 }
             } else {  // a frame at or just over the size cap, valid CRC
-                Bytes body(proto::kMaxBodyBytes - 6 + r.below(10));
+                Bytes body(dev::proto::kMaxBodyBytes - 6 + r.below(10));
                 for (auto& b : body)
                     b = r.chance(30) ? 0 : r.byte();
-                const std::uint16_t crc = proto::crc16Ccitt(body.data(), body.size() - 2);
+                const std::uint16_t crc = dev::proto::crc16Ccitt(body.data(), body.size() - 2);
                 body[body.size() - 2] = static_cast<std::uint8_t>(crc & 0xFF);
                 body[body.size() - 1] = static_cast<std::uint8_t>(crc >> 8);
                 Bytes wire{0};
-                proto::cobsEncode(body.data(), body.size(), wire);
+                dev::proto::cobsEncode(body.data(), body.size(), wire);
                 wire.push_back(0);
                 s.insert(s.begin() + static_cast<std::ptrdiff_t>(r.below(s.size() + 1)), wire.begin(), wire.end());
             }

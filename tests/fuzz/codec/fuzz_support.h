@@ -15,10 +15,10 @@
 namespace fuzz {
 
 using Bytes = std::vector<std::uint8_t>;
-using proto::DecoderStats;
-using proto::Frame;
-using proto::FrameDecoder;
-using proto::MsgType;
+using dev::proto::DecoderStats;
+using dev::proto::Frame;
+using dev::proto::FrameDecoder;
+using dev::proto::MsgType;
 
 
 

@@ -15,9 +15,9 @@ std::vector<std::string> seeds()
 
 void check(std::string_view input)
 {
-    using namespace accuracyfiles;
+    using namespace dev::files::accuracy;
     const AnalyzedReadings a = analyzeReadingsCsv(input, "fuzz.csv");
-    for (const msg::Problem& p : a.problems)
+    for (const motion::msg::Problem& p : a.problems)
         if (p.file != "fuzz.csv" || p.message.id.empty())
             fuzzfiles::fail("a problem that does not say where or what: " + debugFormat(a.problems));
     if (!a.read.ok())

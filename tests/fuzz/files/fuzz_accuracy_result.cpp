@@ -13,22 +13,22 @@ std::vector<std::string> seeds()
     std::vector<std::string> s = fuzzfiles::exampleFiles(".accuracy-result.json");
     // A unidirectional one too: its nulls are a case of their own.
     for (const std::string& csv : fuzzfiles::exampleFiles(".readings.csv")) {
-        const auto a = accuracyfiles::analyzeReadingsCsv(csv, "seed.csv");
+        const auto a = dev::files::accuracy::analyzeReadingsCsv(csv, "seed.csv");
         if (!a.ok())
             continue;
-        accuracyfiles::AccuracyResult r;
+        dev::files::accuracy::AccuracyResult r;
         r.evaluation = a.evaluation;
         r.tolerances = motion::metrology::analyzerTolerances('X');
-        s.push_back(accuracyfiles::accuracyResultToJson(r));
+        s.push_back(dev::files::accuracy::accuracyResultToJson(r));
     }
     return s;
 }
 
 void check(std::string_view input)
 {
-    using namespace accuracyfiles;
+    using namespace dev::files::accuracy;
     const AccuracyResultRead r = accuracyResultFromJson(input, "fuzz.json");
-    for (const msg::Problem& p : r.problems)
+    for (const motion::msg::Problem& p : r.problems)
         if (p.file != "fuzz.json" || p.line < 1 || p.message.id.empty())
             fuzzfiles::fail("a problem that does not say where or what: " + debugFormat(r.problems));
     if (!r.result) {

@@ -12,15 +12,15 @@ namespace {
 
 std::string seedLog()
 {
-    accuracyfiles::RunLogHeader h;
+    dev::files::accuracy::RunLogHeader h;
     h.test = "stage-x";
     h.kind = "axis";
     h.fingerprint = 0x0123456789abcdefull;
     h.stops = 4;
     h.source = "gauge";
-    std::string text = accuracyfiles::runLogHeader(h);
+    std::string text = dev::files::accuracy::runLogHeader(h);
     for (int k = 0; k < 3; ++k) {
-        accuracyfiles::RunLogEntry e;
+        dev::files::accuracy::RunLogEntry e;
         e.stop = k;
         e.cycle = 1;
         e.direction = k < 2 ? motion::metrology::Direction::Up : motion::metrology::Direction::Down;
@@ -29,43 +29,43 @@ std::string seedLog()
             e.measuredMm = std::vector<double>{10.0 * (k + 1) + 0.001};
         e.deviceTimeUs = 1000000u * static_cast<unsigned>(k + 1);
         e.timeS = k + 1;
-        text += accuracyfiles::runLogLine(e);
+        text += dev::files::accuracy::runLogLine(e);
     }
     return text;
 }
 
 void checkLog(std::string_view input)
 {
-    const auto r = accuracyfiles::parseRunLog(input);
+    const auto r = dev::files::accuracy::parseRunLog(input);
     if (!r.log)
         return;
-    std::string again = accuracyfiles::runLogHeader(r.log->header);
+    std::string again = dev::files::accuracy::runLogHeader(r.log->header);
     for (std::size_t k = 0; k < r.log->entries.size(); ++k) {
         const auto& e = r.log->entries[k];
         if (e.stop != static_cast<int>(k))
             fuzzfiles::fail("a log accepted with a stop out of order or twice");
         if (e.measuredMm && e.measuredMm->size() != e.targetMm.size())
             fuzzfiles::fail("a reading without a value per axis");
-        again += accuracyfiles::runLogLine(e);
+        again += dev::files::accuracy::runLogLine(e);
     }
-    const auto back = accuracyfiles::parseRunLog(again);
+    const auto back = dev::files::accuracy::parseRunLog(again);
     if (!back.log || back.log->entries.size() != r.log->entries.size())
         fuzzfiles::fail("a log that does not read back as written");
-    std::string twice = accuracyfiles::runLogHeader(back.log->header);
+    std::string twice = dev::files::accuracy::runLogHeader(back.log->header);
     for (const auto& e : back.log->entries)
-        twice += accuracyfiles::runLogLine(e);
+        twice += dev::files::accuracy::runLogLine(e);
     if (twice != again)
         fuzzfiles::fail("a log that does not write back the same");
 }
 
 void checkGauge(std::string_view input)
 {
-    const auto a = gaugewire::parseAnswer(input, "fuzz");
+    const auto a = dev::gaugewire::parseAnswer(input, "fuzz");
     if (a.valueMm && !std::isfinite(*a.valueMm))
         fuzzfiles::fail("a gauge value that is not finite");
     if (!a.valueMm && a.problem.id.empty())
         fuzzfiles::fail("a refused answer without a reason");
-    if (gaugewire::printable(input).size() > 80 * 4 + 3)
+    if (dev::gaugewire::printable(input).size() > 80 * 4 + 3)
         fuzzfiles::fail("printable() longer than its cut");
 }
 

@@ -16,9 +16,9 @@ std::vector<std::string> seeds()
 
 void check(std::string_view input)
 {
-    using namespace accuracyfiles;
+    using namespace dev::files::accuracy;
     const AccuracyTestRead r = accuracyTestFromJson(input, "fuzz.accuracy-test.json");
-    for (const msg::Problem& p : r.problems)
+    for (const motion::msg::Problem& p : r.problems)
         if (p.file != "fuzz.accuracy-test.json" || p.line < 1 || p.message.id.empty())
             fuzzfiles::fail("a problem that does not say where or what: " + debugFormat(r.problems));
     if (!r.test) {

@@ -16,9 +16,9 @@ std::vector<std::string> seeds()
 
 void check(std::string_view input)
 {
-    using namespace accuracyfiles;
+    using namespace dev::files::accuracy;
     const CompensationRead r = compensationFromJson(input, "fuzz.json");
-    for (const msg::Problem& p : r.problems)
+    for (const motion::msg::Problem& p : r.problems)
         if (p.file != "fuzz.json" || p.line < 1 || p.message.id.empty())
             fuzzfiles::fail("a problem that does not say where or what: " + debugFormat(r.problems));
     if (!r.compensation) {
@@ -36,7 +36,7 @@ void check(std::string_view input)
     const LinuxcncRead lc = linuxcncFromText(linuxcncCompensation(m, LinuxcncCompType::Corrections), "x.comp", LinuxcncCompType::Corrections, m.axis);
     // Corrections beyond ±10 mm are refused by the reader (a typo, not a compensation):
     // a polynomial far outside that is a valid file whose export a device would refuse too.
-    for (const msg::Problem& p : lc.problems)
+    for (const motion::msg::Problem& p : lc.problems)
         if (p.isError() && p.message.id != "accuracy.value_above" && p.message.id != "accuracy.value_below")
             fuzzfiles::fail("its LinuxCNC export does not read back: " + debugFormat(lc.problems));
 }

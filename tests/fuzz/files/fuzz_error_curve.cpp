@@ -14,9 +14,9 @@ std::vector<std::string> seeds()
 
 void check(std::string_view input)
 {
-    using namespace accuracyfiles;
+    using namespace dev::files::accuracy;
     const ErrorCurveRead r = errorCurveFromCsv(input, "fuzz.csv");
-    for (const msg::Problem& p : r.problems)
+    for (const motion::msg::Problem& p : r.problems)
         if (p.file != "fuzz.csv" || p.message.id.empty())
             fuzzfiles::fail("a problem that does not say where or what: " + debugFormat(r.problems));
     if (!r.ok())

@@ -33,21 +33,21 @@ std::vector<std::string> seeds()
     };
 }
 
-void checkLine(const std::string& text, grbl::StatusTracker& tracker, grbl::BuildInfo& info, grbl::Settings& settings)
+void checkLine(const std::string& text, dev::grbl::StatusTracker& tracker, dev::grbl::BuildInfo& info, dev::grbl::Settings& settings)
 {
-    const grbl::Line l = grbl::classifyLine(text);
-    if ((l.kind == grbl::LineKind::Error || l.kind == grbl::LineKind::Alarm) && (l.code < 0 || l.code > 999))
+    const dev::grbl::Line l = dev::grbl::classifyLine(text);
+    if ((l.kind == dev::grbl::LineKind::Error || l.kind == dev::grbl::LineKind::Alarm) && (l.code < 0 || l.code > 999))
         fuzzfiles::fail("a code out of range: " + text);
-    if (l.kind == grbl::LineKind::Status) {
-        const grbl::StatusParse p = grbl::parseStatusReport(l.payload);
+    if (l.kind == dev::grbl::LineKind::Status) {
+        const dev::grbl::StatusParse p = dev::grbl::parseStatusReport(l.payload);
         if (!p.report) {
             if (p.problem.id != "grbl.status.malformed")
                 fuzzfiles::fail("a refused report without its reason");
             return;
         }
         const auto& r = *p.report;
-        if (r.position.size() < grbl::kMinStatusAxes || r.position.size() > grbl::kMaxStatusAxes
-            || r.state == grbl::MachineState::Unknown)
+        if (r.position.size() < dev::grbl::kMinStatusAxes || r.position.size() > dev::grbl::kMaxStatusAxes
+            || r.state == dev::grbl::MachineState::Unknown)
             fuzzfiles::fail("an accepted report with a bad shape: " + text);
         for (const double v : r.position)
             if (!std::isfinite(v))
@@ -59,27 +59,27 @@ void checkLine(const std::string& text, grbl::StatusTracker& tracker, grbl::Buil
                 fuzzfiles::fail("a work offset of another axis count was kept");
         }
     }
-    grbl::addBuildInfoLine(info, l);
+    dev::grbl::addBuildInfoLine(info, l);
     if (info.rxBufferBytes == 0 || info.rxBufferBytes > 65536 || info.plannerBlocks == 0)
         fuzzfiles::fail("an absurd buffer size was believed: " + text);
-    if (l.kind == grbl::LineKind::Setting)
-        if (const auto s = grbl::parseSettingLine(text))
+    if (l.kind == dev::grbl::LineKind::Setting)
+        if (const auto s = dev::grbl::parseSettingLine(text))
             settings.add(*s);
-    if (l.kind == grbl::LineKind::Probe)
-        grbl::parseProbeLine(l.payload);
-    grbl::parseBanner(text);
+    if (l.kind == dev::grbl::LineKind::Probe)
+        dev::grbl::parseProbeLine(l.payload);
+    dev::grbl::parseBanner(text);
 }
 
 void check(std::string_view input)
 {
     // Whole, then in chunks of every size from 1 to 7: the same lines either way.
-    grbl::LineReader whole;
-    std::vector<grbl::LineReader::Line> a;
+    dev::grbl::LineReader whole;
+    std::vector<dev::grbl::LineReader::Line> a;
     whole.feed(input, a);
-    if (whole.partial().size() > grbl::LineReader::kMaxLineBytes)
+    if (whole.partial().size() > dev::grbl::LineReader::kMaxLineBytes)
         fuzzfiles::fail("the line reader grew past its bound");
-    grbl::LineReader chunked;
-    std::vector<grbl::LineReader::Line> b;
+    dev::grbl::LineReader chunked;
+    std::vector<dev::grbl::LineReader::Line> b;
     const std::size_t step = 1 + input.size() % 7;
     for (std::size_t i = 0; i < input.size(); i += step)
         chunked.feed(input.substr(i, step), b);
@@ -89,15 +89,15 @@ void check(std::string_view input)
         if (a[i].text != b[i].text || a[i].truncated != b[i].truncated)
             fuzzfiles::fail("chunking changed a line");
 
-    grbl::StatusTracker tracker;
-    grbl::BuildInfo info;
-    grbl::Settings settings;
+    dev::grbl::StatusTracker tracker;
+    dev::grbl::BuildInfo info;
+    dev::grbl::Settings settings;
     for (const auto& line : a) {
-        if (line.text.size() > grbl::LineReader::kMaxLineBytes)
+        if (line.text.size() > dev::grbl::LineReader::kMaxLineBytes)
             fuzzfiles::fail("a line longer than the reader's bound");
         checkLine(line.text, tracker, info, settings);
     }
-    const grbl::LimitsRead limits = grbl::machineLimits(settings, info.axisLetters);
+    const dev::grbl::LimitsRead limits = dev::grbl::machineLimits(settings, info.axisLetters);
     if (limits.limits)
         for (const auto& ax : limits.limits->axes)
             if (!(ax.maxRateMmS > 0) || !(ax.accelMmS2 > 0) || !(ax.maxTravelMm > 0))

@@ -12,31 +12,31 @@ const std::string kSequence = "index,target_mm,direction,cycle,time_s,settled\r\
                               "1,10,up,1,1.5,yes\r\n2,20,up,1,3,yes\r\n3,20,down,1,4.5,yes\r\n4,10,down,1,6,no\r\n"
                               "5,10,up,2,7.5,yes\r\n6,20,up,2,9,yes\r\n7,20,down,2,10.5,yes\r\n8,10,down,2,12,yes\r\n";
 
-std::vector<accuracyfiles::SequenceStop> sequence() { return accuracyfiles::targetSequenceFromCsv(kSequence, "seq.csv").stops; }
+std::vector<dev::files::accuracy::SequenceStop> sequence() { return dev::files::accuracy::targetSequenceFromCsv(kSequence, "seq.csv").stops; }
 
-void checkProblems(const msg::Problems& problems, const char* file)
+void checkProblems(const motion::msg::Problems& problems, const char* file)
 {
     for (const auto& p : problems)
         if (p.file != file || p.message.id.empty())
-            fuzzfiles::fail("a problem that does not say where or what: " + msg::debugFormat(problems));
+            fuzzfiles::fail("a problem that does not say where or what: " + motion::msg::debugFormat(problems));
 }
 
 void checkSequence(std::string_view input)
 {
-    const auto r = accuracyfiles::targetSequenceFromCsv(input, "fuzz.csv");
+    const auto r = dev::files::accuracy::targetSequenceFromCsv(input, "fuzz.csv");
     checkProblems(r.problems, "fuzz.csv");
     if (!r.ok())
         return;
-    const std::string again = accuracyfiles::targetSequenceCsv(r.stops);
-    const auto back = accuracyfiles::targetSequenceFromCsv(again, "again.csv");
-    if (!back.ok() || accuracyfiles::targetSequenceCsv(back.stops) != again)
+    const std::string again = dev::files::accuracy::targetSequenceCsv(r.stops);
+    const auto back = dev::files::accuracy::targetSequenceFromCsv(again, "again.csv");
+    if (!back.ok() || dev::files::accuracy::targetSequenceCsv(back.stops) != again)
         fuzzfiles::fail("a sequence that does not read back as written");
 }
 
 void checkImport(std::string_view input)
 {
     const auto stops = sequence();
-    const auto r = accuracyfiles::importInterferometerCsv(input, "fuzz.csv", stops);
+    const auto r = dev::files::accuracy::importInterferometerCsv(input, "fuzz.csv", stops);
     checkProblems(r.problems, "fuzz.csv");
     if (!r.ok())
         return;

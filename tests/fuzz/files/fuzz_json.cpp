@@ -24,29 +24,29 @@ std::vector<std::string> seeds()
     return s;
 }
 
-void walk(const jsonio::Value& v, const std::string& path, jsonio::Problems& p, int depth)
+void walk(const dev::files::json::Value& v, const std::string& path, dev::files::json::Problems& p, int depth)
 {
-    if (depth > jsonio::kMaxDepth + 1)
+    if (depth > dev::files::json::kMaxDepth + 1)
         fuzzfiles::fail("a parsed document is deeper than the reader allows");
     if (v.isObject()) {
-        jsonio::ObjectReader o(v, path, p);
+        dev::files::json::ObjectReader o(v, path, p);
         for (const auto& m : v.members()) {
             o.number(m.key, false, -1e6, 1e6);
             o.integer(m.key, false, -1000, 1000);
             o.string(m.key, false);
             o.oneOf(m.key, false, {"a", "b"});
-            walk(m.value, jsonio::childPath(path, m.key), p, depth + 1);
+            walk(m.value, dev::files::json::childPath(path, m.key), p, depth + 1);
         }
         o.refuseUnknown({"schema", "version", "name", "type"});
     } else if (v.isArray()) {
         for (std::size_t k = 0; k < v.items().size(); ++k)
-            walk(v.items()[k], jsonio::childPath(path, k), p, depth + 1);
+            walk(v.items()[k], dev::files::json::childPath(path, k), p, depth + 1);
     }
 }
 
 void check(std::string_view input)
 {
-    const jsonio::ParseResult r = jsonio::parse(input);
+    const dev::files::json::ParseResult r = dev::files::json::parse(input);
     if (!r) {
         if (r.error.message.empty())
             fuzzfiles::fail("a refusal without a message");
@@ -55,17 +55,17 @@ void check(std::string_view input)
             fuzzfiles::fail("error position outside the text: line " + std::to_string(r.error.position.line));
         return;
     }
-    const std::string once = jsonio::write(*r.value);
-    const jsonio::ParseResult again = jsonio::parse(once);
+    const std::string once = dev::files::json::write(*r.value);
+    const dev::files::json::ParseResult again = dev::files::json::parse(once);
     if (!again)
-        fuzzfiles::fail("written text does not read back: " + msg::debugString(again.error.message));
-    if (jsonio::write(*again.value) != once)
+        fuzzfiles::fail("written text does not read back: " + motion::msg::debugString(again.error.message));
+    if (dev::files::json::write(*again.value) != once)
         fuzzfiles::fail("write → read → write changed the text");
-    if (jsonio::write(*again.value, false) != jsonio::write(*r.value, false))
+    if (dev::files::json::write(*again.value, false) != dev::files::json::write(*r.value, false))
         fuzzfiles::fail("compact and pretty writing disagree");
-    jsonio::Problems p;
+    dev::files::json::Problems p;
     walk(*r.value, "", p, 0);
-    jsonio::checkSchema(*r.value, "benchpilot.example", 1, p);
+    dev::files::json::checkSchema(*r.value, "benchpilot.example", 1, p);
     (void)p.format("fuzz.json");
 }
 

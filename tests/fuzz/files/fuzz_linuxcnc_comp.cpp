@@ -17,10 +17,10 @@ std::vector<std::string> seeds()
 
 void check(std::string_view input)
 {
-    using namespace accuracyfiles;
+    using namespace dev::files::accuracy;
     for (auto type : {LinuxcncCompType::ActualPositions, LinuxcncCompType::Corrections}) {
         const LinuxcncRead r = linuxcncFromText(input, "fuzz.comp", type);
-        for (const msg::Problem& p : r.problems)
+        for (const motion::msg::Problem& p : r.problems)
             if (p.file != "fuzz.comp" || p.message.id.empty())
                 fuzzfiles::fail("a problem that does not say where or what: " + debugFormat(r.problems));
         if (!r.model)

@@ -16,30 +16,30 @@ std::vector<std::string> seeds()
         motion::plans::Pattern p;
         p.shape = shape;
         p.zMm = 3;
-        s.push_back(files::writePattern(p));
+        s.push_back(dev::files::writePattern(p));
     }
     return s;
 }
 
 void check(std::string_view input)
 {
-    const auto r = files::parsePattern(input);
+    const auto r = dev::files::parsePattern(input);
     if (!r.pattern) {
         if (r.problems.empty())
             fuzzfiles::fail("a refusal without a problem");
         const long lines = 1 + std::count(input.begin(), input.end(), '\n');
         for (const auto& p : r.problems.list())
             if (p.line < 1 || p.line > lines || p.message.empty())
-                fuzzfiles::fail("a problem outside the text or without a message: " + msg::debugString(p.message));
+                fuzzfiles::fail("a problem outside the text or without a message: " + motion::msg::debugString(p.message));
         return;
     }
     if (motion::plans::plan(*r.pattern).empty())
         fuzzfiles::fail("an accepted pattern plans no segments");
-    const std::string once = files::writePattern(*r.pattern);
-    const auto again = files::parsePattern(once);
+    const std::string once = dev::files::writePattern(*r.pattern);
+    const auto again = dev::files::parsePattern(once);
     if (!again.pattern)
         fuzzfiles::fail("a written pattern does not read back: " + again.problems.format("w"));
-    if (files::writePattern(*again.pattern) != once)
+    if (dev::files::writePattern(*again.pattern) != once)
         fuzzfiles::fail("write → read → write changed the pattern");
 }
 

@@ -17,12 +17,12 @@ namespace {
 
 using fuzzfiles::fail;
 
-plates::PlanContext context()
+motion::plates::PlanContext context()
 {
-    static const plates::PlanContext c = [] {
-        plates::PlanContext x;
-        x.deck = platefiles::builtinDeck();
-        for (auto& lw : plates::builtinLabware())
+    static const motion::plates::PlanContext c = [] {
+        motion::plates::PlanContext x;
+        x.deck = dev::files::plates::builtinDeck();
+        for (auto& lw : motion::plates::builtinLabware())
             x.labware[lw.id] = lw;
         return x;
     }();
@@ -44,25 +44,25 @@ std::vector<std::string> recipeSeeds()
 
 void checkRecipe(std::string_view input)
 {
-    platefiles::RecipeRead r = platefiles::parseRecipe(input);
+    dev::files::plates::RecipeRead r = dev::files::plates::parseRecipe(input);
     if (!r.recipe)
         return;
-    const plates::PlanContext c = context();
-    const plates::RecipePlan plan = plates::planRecipe(*r.recipe, c);
-    platefiles::placeProblems(r, plan.problems);
+    const motion::plates::PlanContext c = context();
+    const motion::plates::RecipePlan plan = motion::plates::planRecipe(*r.recipe, c);
+    dev::files::plates::placeProblems(r, plan.problems);
     (void)r.problems.format("fuzz.recipe.json");
     if (plan.ok() && r.wellFormed) {
         double p = plan.pumpStartUl;
         for (const auto& op : plan.ops)
             for (const auto& m : op.moves) {
-                if ((m.kind == plates::MoveKind::Travel || m.kind == plates::MoveKind::Touch)
+                if ((m.kind == motion::plates::MoveKind::Travel || m.kind == motion::plates::MoveKind::Touch)
                     && (!(m.xMm >= -1e-6) || !(m.yMm >= -1e-6) || m.xMm > c.deck.travelXMm + 1e-6 || m.yMm > c.deck.travelYMm + 1e-6)) {
                     // A touch-off may reach past a well at the edge only within the well: still inside the travel.
                     fail("an accepted recipe moves to (" + std::to_string(m.xMm) + ", " + std::to_string(m.yMm) + ")");
                 }
-                if ((m.kind == plates::MoveKind::Raise || m.kind == plates::MoveKind::Lower) && (m.zMm < 0 || m.zMm > c.deck.travelZMm))
+                if ((m.kind == motion::plates::MoveKind::Raise || m.kind == motion::plates::MoveKind::Lower) && (m.zMm < 0 || m.zMm > c.deck.travelZMm))
                     fail("an accepted recipe moves Z to " + std::to_string(m.zMm));
-                if (m.kind == plates::MoveKind::Pump) {
+                if (m.kind == motion::plates::MoveKind::Pump) {
                     p += m.pumpDeltaUl;
                     if (p < -1e-6 || p > c.deck.syringeUl + 1e-6)
                         fail("an accepted recipe takes the plunger to " + std::to_string(p) + " µL");
@@ -72,11 +72,11 @@ void checkRecipe(std::string_view input)
             }
     }
     if (r.wellFormed) {
-        const std::string once = platefiles::writeRecipe(*r.recipe);
-        const platefiles::RecipeRead again = platefiles::parseRecipe(once);
+        const std::string once = dev::files::plates::writeRecipe(*r.recipe);
+        const dev::files::plates::RecipeRead again = dev::files::plates::parseRecipe(once);
         if (!again.wellFormed)
             fail("a written recipe does not read back: " + again.problems.format("written"));
-        if (platefiles::writeRecipe(*again.recipe) != once)
+        if (dev::files::plates::writeRecipe(*again.recipe) != once)
             fail("recipe write → read → write changed the text");
     }
 }
@@ -86,21 +86,21 @@ std::vector<std::string> labwareSeeds()
     std::vector<std::string> s = fuzzfiles::exampleFiles(".labware.json");
     for (auto& t : fuzzfiles::exampleFiles(".opentrons-labware.json"))
         s.push_back(std::move(t));
-    for (const auto& lw : plates::builtinLabware())
-        s.push_back(platefiles::writeLabware(lw));
+    for (const auto& lw : motion::plates::builtinLabware())
+        s.push_back(dev::files::plates::writeLabware(lw));
     return s;
 }
 
 void checkLabware(std::string_view input)
 {
-    const platefiles::LabwareRead r = platefiles::parseLabware(input);
+    const dev::files::plates::LabwareRead r = dev::files::plates::parseLabware(input);
     (void)r.problems.format("fuzz.labware.json");
     if (!r.labware)
         return;
-    if (!plates::validateLabware(*r.labware).empty())
+    if (!motion::plates::validateLabware(*r.labware).empty())
         fail("accepted labware does not validate");
-    const std::string once = platefiles::writeLabware(*r.labware);
-    const platefiles::LabwareRead again = platefiles::parseLabware(once);
+    const std::string once = dev::files::plates::writeLabware(*r.labware);
+    const dev::files::plates::LabwareRead again = dev::files::plates::parseLabware(once);
     if (!again.labware)
         fail("written labware does not read back: " + again.problems.format("written"));
     if (again.labware->wells.size() != r.labware->wells.size())
@@ -108,22 +108,22 @@ void checkLabware(std::string_view input)
     for (std::size_t i = 0; i < r.labware->wells.size(); ++i)
         if (std::abs(again.labware->wells[i].xMm - r.labware->wells[i].xMm) > 1e-6
             || std::abs(again.labware->wells[i].yMm - r.labware->wells[i].yMm) > 1e-6 || !(again.labware->wells[i].id == r.labware->wells[i].id))
-            fail("written labware moved well " + plates::wellName(r.labware->wells[i].id));
+            fail("written labware moved well " + motion::plates::wellName(r.labware->wells[i].id));
 }
 
-std::vector<std::string> deckSeeds() { return {platefiles::builtinDeckText()}; }
+std::vector<std::string> deckSeeds() { return {dev::files::plates::builtinDeckText()}; }
 
 void checkDeck(std::string_view input)
 {
-    const platefiles::DeckRead r = platefiles::parseDeck(input);
+    const dev::files::plates::DeckRead r = dev::files::plates::parseDeck(input);
     (void)r.problems.format("fuzz.deck.json");
     if (!r.deck)
         return;
-    if (!plates::validateDeck(*r.deck).empty())
+    if (!motion::plates::validateDeck(*r.deck).empty())
         fail("an accepted deck does not validate");
-    const std::string once = platefiles::writeDeck(*r.deck);
-    const platefiles::DeckRead again = platefiles::parseDeck(once);
-    if (!again.deck || platefiles::writeDeck(*again.deck) != once)
+    const std::string once = dev::files::plates::writeDeck(*r.deck);
+    const dev::files::plates::DeckRead again = dev::files::plates::parseDeck(once);
+    if (!again.deck || dev::files::plates::writeDeck(*again.deck) != once)
         fail("deck write → read → write changed it");
 }
 
@@ -131,15 +131,15 @@ std::vector<std::string> calibrationSeeds() { return fuzzfiles::exampleFiles(".c
 
 void checkCalibration(std::string_view input)
 {
-    const platefiles::CalibrationRead r = platefiles::parseCalibration(input);
+    const dev::files::plates::CalibrationRead r = dev::files::plates::parseCalibration(input);
     (void)r.problems.format("fuzz.calibration.json");
     if (!r.ok())
         return;
     for (const auto& c : r.calibrations)
         if (!std::isfinite(c.fit.maxResidualMm) || !std::isfinite(c.fit.transform.txMm))
             fail("an accepted calibration has a non-finite fit");
-    const std::string once = platefiles::writeCalibration(r.deck, r.calibrations);
-    const platefiles::CalibrationRead again = platefiles::parseCalibration(once);
+    const std::string once = dev::files::plates::writeCalibration(r.deck, r.calibrations);
+    const dev::files::plates::CalibrationRead again = dev::files::plates::parseCalibration(once);
     if (!again.ok() || again.calibrations.size() != r.calibrations.size())
         fail("calibration write → read lost slots: " + again.problems.format("written"));
 }
@@ -159,7 +159,7 @@ std::vector<std::string> runLogSeeds()
 
 void checkRunLog(std::string_view input)
 {
-    const platefiles::RunLogState st = platefiles::readRunLog(input);
+    const dev::files::plates::RunLogState st = dev::files::plates::readRunLog(input);
     (void)st.problems.format("fuzz.run.jsonl");
     if (static_cast<int>(st.ops.size()) != st.opCount)
         fail("the op table does not match the header's count");

@@ -16,13 +16,13 @@ namespace {
 std::vector<std::string> planSeeds()
 {
     std::vector<std::string> s = fuzzfiles::exampleFiles(".scan.json");
-    s.push_back(scanfile::writePlan(motion::scan::ScanPlan{}));
+    s.push_back(dev::files::scan::writePlan(motion::scan::ScanPlan{}));
     return s;
 }
 
 void checkPlan(std::string_view input)
 {
-    const auto r = scanfile::parsePlan(input);
+    const auto r = dev::files::scan::parsePlan(input);
     if (!r.plan) {
         if (r.problems.empty())
             fuzzfiles::fail("a refused plan without a problem");
@@ -33,11 +33,11 @@ void checkPlan(std::string_view input)
     }
     if (!motion::scan::validate(*r.plan).empty())
         fuzzfiles::fail("an accepted plan does not validate");
-    const std::string once = scanfile::writePlan(*r.plan);
-    const auto again = scanfile::parsePlan(once);
+    const std::string once = dev::files::scan::writePlan(*r.plan);
+    const auto again = dev::files::scan::parsePlan(once);
     if (!again.plan)
         fuzzfiles::fail("a written plan does not read back: " + again.problems.format("plan"));
-    if (scanfile::writePlan(*again.plan) != once)
+    if (dev::files::scan::writePlan(*again.plan) != once)
         fuzzfiles::fail("write → read → write changed the plan");
     // Lay out only grids a fuzz loop can afford; the planner's own bound is far larger.
     const auto g = motion::scan::gridSize(*r.plan);
@@ -70,22 +70,22 @@ std::vector<std::string> logSeeds()
     r.measuredMm = {9.9905, 19.9795};
     r.deviceTimeUs = 987654321;
     r.settleS = 0.04;
-    const std::string head = scanfile::runLogHeader("plan", 0xfeedfacecafebeefull, 6);
-    return {head, head + scanfile::runLogLine(r), head + scanfile::runLogLine(r) + "{\"tile\": 2, \"la"};
+    const std::string head = dev::files::scan::runLogHeader("plan", 0xfeedfacecafebeefull, 6);
+    return {head, head + dev::files::scan::runLogLine(r), head + dev::files::scan::runLogLine(r) + "{\"tile\": 2, \"la"};
 }
 
 void checkLog(std::string_view input)
 {
-    const auto r = scanfile::parseRunLog(input);
+    const auto r = dev::files::scan::parseRunLog(input);
     if (!r.log) {
         if (r.problems.empty())
             fuzzfiles::fail("a refused run log without a problem");
         return;
     }
-    std::string again = scanfile::runLogHeader(r.log->planName, r.log->fingerprint, r.log->tiles);
+    std::string again = dev::files::scan::runLogHeader(r.log->planName, r.log->fingerprint, r.log->tiles);
     for (const auto& rec : r.log->records)
-        again += scanfile::runLogLine(rec);
-    const auto back = scanfile::parseRunLog(again);
+        again += dev::files::scan::runLogLine(rec);
+    const auto back = dev::files::scan::parseRunLog(again);
     if (!back.log || back.log->records.size() != r.log->records.size() || back.log->tornTail)
         fuzzfiles::fail("an accepted run log does not write back");
 }

@@ -21,13 +21,13 @@ std::vector<std::string> seeds()
     r.step = 1;
     r.envelope = {3, 3, 600};
     r.trials = {{0.1, 0, 0, "no oscillation"}, {16, 1.0, 0.38, "sustained"}};
-    s.push_back(files::tuningToJson(r));
+    s.push_back(dev::files::tuningToJson(r));
     return s;
 }
 
 void check(std::string_view input)
 {
-    const files::TuningRead r = files::tuningFromJson(input);
+    const dev::files::TuningRead r = dev::files::tuningFromJson(input);
     if (!r.result) {
         if (r.problems.empty())
             fuzzfiles::fail("a refusal without a problem");
@@ -37,11 +37,11 @@ void check(std::string_view input)
                 fuzzfiles::fail("a problem outside the text or without a message: " + r.problems.format("fuzz.tuning.json"));
         return;
     }
-    const std::string once = files::tuningToJson(*r.result);
-    const files::TuningRead again = files::tuningFromJson(once);
+    const std::string once = dev::files::tuningToJson(*r.result);
+    const dev::files::TuningRead again = dev::files::tuningFromJson(once);
     if (!again.result)
         fuzzfiles::fail("a written document does not read back: " + again.problems.format("again.json"));
-    if (files::tuningToJson(*again.result) != once)
+    if (dev::files::tuningToJson(*again.result) != once)
         fuzzfiles::fail("write → read → write changed the document");
 }
 

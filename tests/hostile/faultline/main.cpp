@@ -139,7 +139,7 @@ public:
                 return QStringLiteral("%1 exists and is not a symlink: refusing to replace it").arg(m_listenPath);
             ::unlink(qPrintable(m_listenPath));
         }
-        auto pty = std::make_unique<simapp::PtyTransport>();
+        auto pty = std::make_unique<app::sim::PtyTransport>();
         if (!pty->create())
             return pty->error();
         connect(pty.get(), &dev::Transport::bytesReceived, this, [this](const QByteArray& b) { send(kToDevice, b); });
@@ -279,7 +279,7 @@ private:
     QSocketNotifier* m_deviceRead = nullptr;
     QSocketNotifier* m_deviceWrite = nullptr;
     QByteArray m_toDevice;  ///< what the simulator's pty could not take yet
-    std::unique_ptr<simapp::PtyTransport> m_host;
+    std::unique_ptr<app::sim::PtyTransport> m_host;
     Direction m_dir[2];
     QElapsedTimer m_clock;
     QTimer m_timer;

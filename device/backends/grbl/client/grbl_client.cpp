@@ -21,7 +21,7 @@ constexpr quint64 kUnknownNotedFirst = 3;
 constexpr quint64 kUnknownNoteEvery = 100;
 } // namespace
 
-GrblClient::GrblClient(const files::MachineProfile& profile, bool lenient, QObject* parent)
+GrblClient::GrblClient(const dev::files::MachineProfile& profile, bool lenient, QObject* parent)
     : Instrument(parent), m_profile(profile), m_lenient(lenient), m_paths(new GrblPathClient(this, this))
 {
     m_clock.start();
@@ -67,12 +67,12 @@ void GrblClient::setTransport(Transport* transport)
         if (m_state == LinkState::Connecting && m_phase == Phase::Closed)
             onOpened();
     });
-    m_transportConnections << connect(transport, &Transport::failed, this, [this](const msg::Message& why) {
+    m_transportConnections << connect(transport, &Transport::failed, this, [this](const motion::msg::Message& why) {
         if (m_state != LinkState::Connecting)
             return;
         failConnect(why);
     });
-    m_transportConnections << connect(transport, &Transport::lost, this, [this](const msg::Message& why) { linkGone(why); });
+    m_transportConnections << connect(transport, &Transport::lost, this, [this](const motion::msg::Message& why) { linkGone(why); });
 }
 
 QString GrblClient::linkDescription() const { return m_transport ? m_transport->describe() : tr("no link"); }
@@ -98,14 +98,14 @@ void GrblClient::setState(LinkState s)
     emit stateChanged(s);
 }
 
-void GrblClient::note(msg::Message m) { emit noted(m); }
+void GrblClient::note(motion::msg::Message m) { emit noted(m); }
 
 // ---- connecting ---------------------------------------------------------------------------
 
 void GrblClient::connectLink()
 {
     if (!m_transport) {
-        emit linkError(msg::make("link.no_connection_chosen"));
+        emit linkError(motion::msg::make("link.no_connection_chosen"));
         return;
     }
     if (m_state == LinkState::Connecting || m_state == LinkState::Identified || m_state == LinkState::Ready)
@@ -119,7 +119,7 @@ void GrblClient::connectLink()
     m_phase = Phase::Closed;
     m_wire = Wire{};
     m_wire.restartHeard = std::exchange(m_restartHeardBeforeConnect, false);
-    dropLines(msg::make("link.disconnected"));
+    dropLines(motion::msg::make("link.disconnected"));
     m_controller = Controller{};
     m_reports = Reports{};
     m_machine = Machine{};
@@ -156,7 +156,7 @@ void GrblClient::writeSync()
     m_transport->write(QByteArray("\n$G\n?", 5));
 }
 
-void GrblClient::failConnect(const msg::Message& why)
+void GrblClient::failConnect(const motion::msg::Message& why)
 {
     endLink(why);
     emit linkError(why);
@@ -167,22 +167,22 @@ void GrblClient::disconnectLink()
 {
     if (m_state == LinkState::Ready && (m_jogs.run || m_jogs.cancelling) && m_transport) {
         // A jog queued ahead would run out by itself; cancel it rather than leave it to do so.
-        m_transport->write(QByteArray(1, static_cast<char>(grbl::rt::kJogCancel)));
+        m_transport->write(QByteArray(1, static_cast<char>(dev::grbl::rt::kJogCancel)));
     }
-    endLink(msg::make("link.disconnected"));
+    endLink(motion::msg::make("link.disconnected"));
     setState(LinkState::Disconnected);
 }
 
-void GrblClient::linkGone(const msg::Message& why)
+void GrblClient::linkGone(const motion::msg::Message& why)
 {
     if (m_state == LinkState::Disconnected || m_state == LinkState::Lost)
         return;
     endLink(why);
-    emit linkError(msg::make("link.lost", {msg::nested("cause", why)}));
+    emit linkError(motion::msg::make("link.lost", {motion::msg::nested("cause", why)}));
     setState(LinkState::Lost);
 }
 
-void GrblClient::endLink(const msg::Message& why)
+void GrblClient::endLink(const motion::msg::Message& why)
 {
     // Nothing more will be answered: every line and every waiter is answered now with `why`,
     // and nothing is owed any more — no motion, no stop, no jog (a jog GRBL still runs ends
@@ -219,7 +219,7 @@ void GrblClient::endLink(const msg::Message& why)
         m_transport->close();
 }
 
-GrblClient::LostLines GrblClient::dropLines(const msg::Message& why, std::vector<std::string>* inFlight)
+GrblClient::LostLines GrblClient::dropLines(const motion::msg::Message& why, std::vector<std::string>* inFlight)
 {
     auto [acks, waiting] = m_lines.reset(why);
     if (inFlight)
@@ -252,37 +252,37 @@ void GrblClient::checkLink()
             writeSync();
         }
         if (now - m_wire.connectStartMs > m_connectTimeoutMs) {
-            const msg::Arg link = msg::verbatim("link", linkDescription().toStdString());
-            const msg::Arg seconds = msg::real("seconds", m_connectTimeoutMs / 1000.0, msg::Unit::S);
+            const motion::msg::Arg link = motion::msg::verbatim("link", linkDescription().toStdString());
+            const motion::msg::Arg seconds = motion::msg::real("seconds", m_connectTimeoutMs / 1000.0, motion::msg::Unit::S);
             if (m_wire.bytesIn == 0)
-                failConnect(msg::make("grbl.connect.no_answer", {link, seconds}));
+                failConnect(motion::msg::make("grbl.connect.no_answer", {link, seconds}));
             else if (!m_wire.sawGrblLine)
-                failConnect(msg::make("grbl.connect.no_grbl_line",
-                                      {link, msg::integer("bytes", static_cast<long long>(m_wire.bytesIn)), seconds}));
+                failConnect(motion::msg::make("grbl.connect.no_grbl_line",
+                                      {link, motion::msg::integer("bytes", static_cast<long long>(m_wire.bytesIn)), seconds}));
             else
-                failConnect(msg::make("grbl.connect.never_acknowledged", {link, seconds}));
+                failConnect(motion::msg::make("grbl.connect.never_acknowledged", {link, seconds}));
         }
         return;
     }
     if (m_phase == Phase::Identifying) {
         if (now - m_wire.lastRxMs > m_connectTimeoutMs)
-            failConnect(msg::make("grbl.connect.identify_silent", {msg::verbatim("link", linkDescription().toStdString())}));
+            failConnect(motion::msg::make("grbl.connect.identify_silent", {motion::msg::verbatim("link", linkDescription().toStdString())}));
         return;
     }
     if (m_phase != Phase::Ready)
         return;
     // GRBL 1.1 does not answer '?' while homing, nor in a critical alarm: silence is expected then.
     if (!m_machine.homing && !m_machine.critical && now - m_wire.lastRxMs > kSilenceMs) {
-        const msg::Arg seconds = msg::real("seconds", kSilenceMs / 1000.0, msg::Unit::S);
+        const motion::msg::Arg seconds = motion::msg::real("seconds", kSilenceMs / 1000.0, motion::msg::Unit::S);
         linkGone(m_wire.unknownLines > 0
-                     ? msg::make("grbl.silent_with_noise", {seconds, msg::integer("count", static_cast<long long>(m_wire.unknownLines))})
-                     : msg::make("grbl.silent", {seconds}));
+                     ? motion::msg::make("grbl.silent_with_noise", {seconds, motion::msg::integer("count", static_cast<long long>(m_wire.unknownLines))})
+                     : motion::msg::make("grbl.silent", {seconds}));
         return;
     }
     if (m_stop.active && now - m_stop.startMs > kStopMs) {
         RequestError e;
         e.kind = RequestError::Kind::Timeout;
-        e.message = msg::make("grbl.stop_timeout", {msg::real("seconds", kStopMs / 1000.0, msg::Unit::S)});
+        e.message = motion::msg::make("grbl.stop_timeout", {motion::msg::real("seconds", kStopMs / 1000.0, motion::msg::Unit::S)});
         finishStop(e);
     }
     if (!m_jogs.stick.empty() && now > m_jogs.stickDeadlineMs) {
@@ -296,15 +296,15 @@ void GrblClient::startIdentify()
 {
     m_phase = Phase::Identifying;
     const QPointer<GrblClient> self(this);
-    auto fail = [self](const std::string& command, const std::optional<grbl::Streamer::Ack>& a) {
+    auto fail = [self](const std::string& command, const std::optional<dev::grbl::Streamer::Ack>& a) {
         if (!self || self->m_phase != Phase::Identifying)
             return;
         if (!a) {
-            self->failConnect(msg::make("grbl.identify.not_answered",
-                                        {msg::verbatim("command", command), msg::nested("cause", self->m_lines.lostReason)}));
+            self->failConnect(motion::msg::make("grbl.identify.not_answered",
+                                        {motion::msg::verbatim("command", command), motion::msg::nested("cause", self->m_lines.lostReason)}));
             return;
         }
-        self->failConnect(msg::make("grbl.identify.refused", {msg::verbatim("command", command), msg::integer("code", a->errorCode, msg::Unit::None)}));
+        self->failConnect(motion::msg::make("grbl.identify.refused", {motion::msg::verbatim("command", command), motion::msg::integer("code", a->errorCode, motion::msg::Unit::None)}));
     };
     queueLine("$I", [fail](const auto& a) {
         if (!a || !a->ok)
@@ -326,7 +326,7 @@ void GrblClient::startIdentify()
 
 void GrblClient::finishIdentify()
 {
-    msg::Message why;
+    motion::msg::Message why;
     if (!buildIdentity(&why)) {
         failConnect(why);
         return;
@@ -346,7 +346,7 @@ void GrblClient::onBytes(const QByteArray& bytes)
     if (m_phase == Phase::Closed)
         return;
     m_wire.bytesIn += static_cast<quint64>(bytes.size());
-    std::vector<grbl::LineReader::Line> lines;
+    std::vector<dev::grbl::LineReader::Line> lines;
     m_wire.reader.feed(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())), lines);
     for (const auto& l : lines) {
         onLine(l);
@@ -355,40 +355,40 @@ void GrblClient::onBytes(const QByteArray& bytes)
     }
 }
 
-void GrblClient::onLine(const grbl::LineReader::Line& raw)
+void GrblClient::onLine(const dev::grbl::LineReader::Line& raw)
 {
     if (raw.truncated) {
         ++m_wire.garbageLines;
         if (m_wire.garbageLines == 1)
-            note(msg::make("grbl.line_too_long", {msg::integer("limit", static_cast<long long>(grbl::LineReader::kMaxLineBytes),
-                                                                msg::Unit::Byte)}));
+            note(motion::msg::make("grbl.line_too_long", {motion::msg::integer("limit", static_cast<long long>(dev::grbl::LineReader::kMaxLineBytes),
+                                                                motion::msg::Unit::Byte)}));
         return;
     }
-    const grbl::Line l = grbl::classifyLine(raw.text);
-    if (l.kind == grbl::LineKind::Unknown) {
+    const dev::grbl::Line l = dev::grbl::classifyLine(raw.text);
+    if (l.kind == dev::grbl::LineKind::Unknown) {
         ++m_wire.unknownLines;
         if (m_wire.unknownLines <= kUnknownNotedFirst || m_wire.unknownLines % kUnknownNoteEvery == 0)
-            note(msg::make("grbl.unknown_line", {msg::verbatim("line", raw.text.substr(0, 120)),
-                                                 msg::integer("count", static_cast<long long>(m_wire.unknownLines))}));
+            note(motion::msg::make("grbl.unknown_line", {motion::msg::verbatim("line", raw.text.substr(0, 120)),
+                                                 motion::msg::integer("count", static_cast<long long>(m_wire.unknownLines))}));
         return;
     }
-    if (l.kind == grbl::LineKind::Empty)
+    if (l.kind == dev::grbl::LineKind::Empty)
         return;
     m_wire.sawGrblLine = true;
     m_wire.lastRxMs = m_clock.elapsed();
     switch (l.kind) {
-    case grbl::LineKind::Ok:
-    case grbl::LineKind::Error:
+    case dev::grbl::LineKind::Ok:
+    case dev::grbl::LineKind::Error:
         if (m_phase == Phase::Syncing) {
             if (m_wire.syncSawParserState)
                 startIdentify();  // $G's answer: from here on, answers pair with lines
             return;
         }
-        onAck(l.kind == grbl::LineKind::Ok, l.code);
+        onAck(l.kind == dev::grbl::LineKind::Ok, l.code);
         return;
-    case grbl::LineKind::Alarm: onAlarm(l.code); return;
-    case grbl::LineKind::Status: {
-        const grbl::StatusParse p = grbl::parseStatusReport(l.payload);
+    case dev::grbl::LineKind::Alarm: onAlarm(l.code); return;
+    case dev::grbl::LineKind::Status: {
+        const dev::grbl::StatusParse p = dev::grbl::parseStatusReport(l.payload);
         if (!p.report) {
             note(p.problem);
             return;
@@ -397,29 +397,29 @@ void GrblClient::onLine(const grbl::LineReader::Line& raw)
             onStatusReport(*p.report);
         return;
     }
-    case grbl::LineKind::Banner:
-        if (const auto b = grbl::parseBanner(raw.text))
+    case dev::grbl::LineKind::Banner:
+        if (const auto b = dev::grbl::parseBanner(raw.text))
             onBanner(*b);
         return;
-    case grbl::LineKind::Message: onDeviceMessage(std::string(l.payload)); return;
-    case grbl::LineKind::Version:
-    case grbl::LineKind::Options: grbl::addBuildInfoLine(m_controller.build, l); return;
-    case grbl::LineKind::Bracketed:
-        if (!grbl::addBuildInfoLine(m_controller.build, l))
+    case dev::grbl::LineKind::Message: onDeviceMessage(std::string(l.payload)); return;
+    case dev::grbl::LineKind::Version:
+    case dev::grbl::LineKind::Options: dev::grbl::addBuildInfoLine(m_controller.build, l); return;
+    case dev::grbl::LineKind::Bracketed:
+        if (!dev::grbl::addBuildInfoLine(m_controller.build, l))
             applyParameters(l);
         return;
-    case grbl::LineKind::Setting:
-        if (const auto s = grbl::parseSettingLine(raw.text))
+    case dev::grbl::LineKind::Setting:
+        if (const auto s = dev::grbl::parseSettingLine(raw.text))
             m_controller.settings.add(*s);
         return;
-    case grbl::LineKind::ParserState:
+    case dev::grbl::LineKind::ParserState:
         if (m_phase == Phase::Syncing) {
             m_wire.syncSawParserState = true;
             return;
         }
-        note(msg::make("grbl.device_line", {msg::verbatim("line", raw.text.substr(0, 120))}));
+        note(motion::msg::make("grbl.device_line", {motion::msg::verbatim("line", raw.text.substr(0, 120))}));
         return;
-    case grbl::LineKind::Probe:
+    case dev::grbl::LineKind::Probe:
         return;  // the last line of every $# answer; this host does not probe
     default:
         return;  // help, echo, startup blocks: nothing to act on
@@ -450,9 +450,9 @@ void GrblClient::onAck(bool ok, int code)
     pump();
 }
 
-void GrblClient::onBanner(const grbl::Banner& banner)
+void GrblClient::onBanner(const dev::grbl::Banner& banner)
 {
-    if (m_controller.firmware == grbl::Firmware::Unknown || banner.firmware == grbl::Firmware::GrblHal)
+    if (m_controller.firmware == dev::grbl::Firmware::Unknown || banner.firmware == dev::grbl::Firmware::GrblHal)
         m_controller.firmware = banner.firmware;
     m_controller.bannerVersion = banner.version;
     m_wire.sawGrblLine = true;
@@ -474,14 +474,14 @@ void GrblClient::onBanner(const grbl::Banner& banner)
         // Nobody here asked for it: a power glitch, another program, a watchdog. Everything in
         // flight is gone, nothing moves, and no position can be trusted any more.
         std::vector<std::string> lost;
-        LostLines waiting = dropLines(msg::make("grbl.reset_by_itself"), &lost);
+        LostLines waiting = dropLines(motion::msg::make("grbl.reset_by_itself"), &lost);
         loseEstablished();
         m_motion = Motion{};
         m_jogs.forget();
-        const msg::Message detail = msg::make(
-            "grbl.controller_reset", {msg::integer("lost", static_cast<long long>(lost.size())),
-                                      msg::verbatim("first", lost.empty() ? std::string() : lost.front())});
-        emitEvent(proto::EventKind::Fault, -1, 0, detail);
+        const motion::msg::Message detail = motion::msg::make(
+            "grbl.controller_reset", {motion::msg::integer("lost", static_cast<long long>(lost.size())),
+                                      motion::msg::verbatim("first", lost.empty() ? std::string() : lost.front())});
+        emitEvent(dev::proto::EventKind::Fault, -1, 0, detail);
         answerLost(waiting);
     }
     // Any reset: GRBL tells its state and offsets afresh, and no longer homes or holds a limit alarm.
@@ -511,7 +511,7 @@ void GrblClient::onDeviceMessage(const std::string& text)
 {
     if (text == "Reset to continue")
         m_machine.critical = true;  // GRBL now hears nothing but 0x18
-    note(msg::make("grbl.device_message", {msg::verbatim("text", text.substr(0, 200))}));
+    note(motion::msg::make("grbl.device_message", {motion::msg::verbatim("text", text.substr(0, 200))}));
 }
 
 } // namespace dev

@@ -69,7 +69,7 @@ public:
 
     /// `profile`: the wiring (docs/grbl.md). `lenient`: the profile is the default one, so a
     /// pump axis the controller lacks is dropped rather than refused.
-    explicit GrblClient(const files::MachineProfile& profile, bool lenient = false, QObject* parent = nullptr);
+    explicit GrblClient(const dev::files::MachineProfile& profile, bool lenient = false, QObject* parent = nullptr);
     ~GrblClient() override;
 
     /// How long a connection may take before it is refused (kConnectMs unless a test is in a hurry).
@@ -93,19 +93,19 @@ public:
     /// already open (a protocol probe opened it) is used as it is: no second open.
     void setTransport(Transport* transport);
     Transport* transport() const { return m_transport; }
-    const files::MachineProfile& profile() const { return m_profile; }
+    const dev::files::MachineProfile& profile() const { return m_profile; }
 
     // What the controller said about itself.
-    grbl::Firmware firmware() const { return m_controller.firmware; }
-    const grbl::BuildInfo& buildInfo() const { return m_controller.build; }
-    const grbl::Settings& settings() const { return m_controller.settings; }
-    const grbl::MachineLimits& machineLimits() const { return m_controller.limits; }
-    grbl::MachineState machineState() const { return m_reports.tracker.state(); }
+    dev::grbl::Firmware firmware() const { return m_controller.firmware; }
+    const dev::grbl::BuildInfo& buildInfo() const { return m_controller.build; }
+    const dev::grbl::Settings& settings() const { return m_controller.settings; }
+    const dev::grbl::MachineLimits& machineLimits() const { return m_controller.limits; }
+    dev::grbl::MachineState machineState() const { return m_reports.tracker.state(); }
     int alarmCode() const { return m_machine.alarm; }
     double pollHz() const { return m_profile.statusPollHz; }
     /// The jog plan for a continuous jog of one axis at `speed` (axis units/s): what the GUI
     /// quotes for the release stop and the overrun of a lost host.
-    grbl::JogPlan jogPlan(int axis, double speed) const;
+    dev::grbl::JogPlan jogPlan(int axis, double speed) const;
 
     // dev::Instrument
     void connectLink() override;
@@ -135,17 +135,17 @@ public:
     void readStatus(StatusCallback done) override;
     void dwell(double seconds, Callback done) override;
     void pulseTrigger(double widthS, Callback done = {}) override;
-    void subscribe(const QVector<proto::ChannelRef>& channels, int rateHz, SubscribeCallback done = {}) override;
-    const QVector<proto::ChannelRef>& subscribedChannels() const override { return m_channels; }
+    void subscribe(const QVector<dev::proto::ChannelRef>& channels, int rateHz, SubscribeCallback done = {}) override;
+    const QVector<dev::proto::ChannelRef>& subscribedChannels() const override { return m_channels; }
     int subscribedRateHz() const override { return m_rateHz; }
-    double toAxisUnits(const proto::ChannelRef& channel, std::int32_t value) const override;
+    double toAxisUnits(const dev::proto::ChannelRef& channel, std::int32_t value) const override;
     PathClient* paths() override;
     TuningClient* tuning() override { return nullptr; }
 
     // ---- for the parts (GrblPathClient) ----------------------------------------------------
     /// What became of one line: acknowledged (ack->ok, or error:N), or lost (nullopt) to a
     /// reset or a dropped link.
-    using LineDone = std::function<void(const std::optional<grbl::Streamer::Ack>& ack)>;
+    using LineDone = std::function<void(const std::optional<dev::grbl::Streamer::Ack>& ack)>;
     /// Queues a line; false (and nothing queued) when the streamer refuses it (too long, a
     /// control byte) or the link is not ready.
     bool sendLine(const std::string& line, LineDone done);
@@ -167,7 +167,7 @@ public:
     /// of the command it refused ("request.home").
     static RequestError errorOf(int code, const std::string& line, const std::string& request);
     /// The unit an instrument axis' values carry in messages (mm, or µL for the pump).
-    msg::Unit unitOf(int axis) const;
+    motion::msg::Unit unitOf(int axis) const;
 
 signals:
     /// A status report was applied (after statusChanged): for the parts.
@@ -178,7 +178,7 @@ signals:
     void alarmRaised(int code);
 
 protected:
-    msg::Message missingReason(Capability c) const override;
+    motion::msg::Message missingReason(Capability c) const override;
 
 private:
     enum class Phase { Closed, Syncing, Identifying, Ready };
@@ -192,42 +192,42 @@ private:
     void onOpened();
     void writeSync();
     void onBytes(const QByteArray& bytes);
-    void onLine(const grbl::LineReader::Line& line);
+    void onLine(const dev::grbl::LineReader::Line& line);
     void onAck(bool ok, int code);
-    void onBanner(const grbl::Banner& banner);
+    void onBanner(const dev::grbl::Banner& banner);
     void onAlarm(int code);
     void onDeviceMessage(const std::string& text);
     void checkLink();
     void startIdentify();
     void finishIdentify();
-    void failConnect(const msg::Message& why);
-    void linkGone(const msg::Message& why);
+    void failConnect(const motion::msg::Message& why);
+    void linkGone(const motion::msg::Message& why);
     /// The link ended (closed, lost, or a connection that failed): the reset path they share.
-    void endLink(const msg::Message& why);
+    void endLink(const motion::msg::Message& why);
     using LostLines = std::map<std::uint64_t, PendingLine>;
     /// Empties the line queue and the counts of the lines motion and jogs own; the waiters are
     /// returned for the caller to answer (answerLost) once its own state is consistent.
-    LostLines dropLines(const msg::Message& why, std::vector<std::string>* inFlight = nullptr);
+    LostLines dropLines(const motion::msg::Message& why, std::vector<std::string>* inFlight = nullptr);
     static void answerLost(LostLines& waiting);
     /// The line's tag, or 0 when it cannot be sent.
     std::uint64_t queueLine(const std::string& line, LineDone done, bool alone = false);
     void pump();
     void softReset(bool expected);
-    void note(msg::Message m);
+    void note(motion::msg::Message m);
     // grbl_client_identity.cpp: identity, capabilities, coordinates.
-    bool buildIdentity(msg::Message* why);
+    bool buildIdentity(motion::msg::Message* why);
     void updateTravel();
     std::string axisLettersOfController() const;
     double scaleOf(int axis) const;
     // grbl_client_status.cpp: polling, status, events, telemetry.
     void poll();
     void sendQuery();
-    void onStatusReport(const grbl::StatusReport& r);
-    void applyParameters(const grbl::Line& l);
+    void onStatusReport(const dev::grbl::StatusReport& r);
+    void applyParameters(const dev::grbl::Line& l);
     /// `detail`: what happened (grbl.*, or empty when the kind says it all); `text`: the line the
     /// controller sent, where it sent one ("ALARM:1").
-    void emitEvent(proto::EventKind kind, int axis, double position, msg::Message detail = {}, const QString& text = {});
-    void settleMotion(quint64 askedUs, grbl::MachineState state);
+    void emitEvent(dev::proto::EventKind kind, int axis, double position, motion::msg::Message detail = {}, const QString& text = {});
+    void settleMotion(quint64 askedUs, dev::grbl::MachineState state);
     void emitTelemetry(const std::vector<double>& workMm);
     // grbl_client_commands.cpp: helpers.
     void sendMotionLines(const std::vector<std::string>& lines, quint8 axes, const std::string& request, Callback done);
@@ -238,7 +238,7 @@ private:
     std::string controllerKey() const;
     /// At the first report of a connection to a controller without homing: the axes whose home,
     /// set here before, still holds.
-    quint32 recallHome(grbl::MachineState state);
+    quint32 recallHome(dev::grbl::MachineState state);
     void rememberHome();
     /// When the link ends: where the machine was last seen, for the next connection to compare.
     void keepHomeOnLeave();
@@ -251,7 +251,7 @@ private:
     void sendJogLines(const std::vector<std::string>& lines);
     std::map<int, double> wantedJogVelocities() const;
 
-    files::MachineProfile m_profile;
+    dev::files::MachineProfile m_profile;
     bool m_lenient;
     QPointer<Transport> m_transport;
     QList<QMetaObject::Connection> m_transportConnections;
@@ -280,7 +280,7 @@ private:
 
     /// This connection's conversation: reading bytes into lines, the sync, what came in.
     struct Wire {
-        grbl::LineReader reader;
+        dev::grbl::LineReader reader;
         quint64 bytesIn = 0, garbageLines = 0, unknownLines = 0, resets = 0;
         qint64 lastRxMs = -1, connectStartMs = 0, syncSentMs = 0;
         int syncAttempts = 0;
@@ -294,14 +294,14 @@ private:
     /// the controller forgets its buffers or the link ends they are all lost at once
     /// (dropLines(): every waiter answered with nullopt).
     struct Lines {
-        grbl::Streamer streamer;  ///< its receive-buffer size ($I) outlives the resets
+        dev::grbl::Streamer streamer;  ///< its receive-buffer size ($I) outlives the resets
         std::deque<std::pair<std::string, std::uint64_t>> backlog;  ///< waiting for the streamer (behind an EEPROM line)
         std::map<std::uint64_t, PendingLine> pending;               ///< by streamer tag
         bool aloneInFlight = false;
         bool modalReady = false;  ///< "G54 G17 G94" sent since the last reset
-        msg::Message lostReason;  ///< why lines in flight were lost, for the commands that owned them
+        motion::msg::Message lostReason;  ///< why lines in flight were lost, for the commands that owned them
         /// Empties the queue; the lines in flight (for the message) and the waiters (to answer).
-        std::pair<std::vector<grbl::Streamer::Ack>, std::map<std::uint64_t, PendingLine>> reset(const msg::Message& why)
+        std::pair<std::vector<dev::grbl::Streamer::Ack>, std::map<std::uint64_t, PendingLine>> reset(const motion::msg::Message& why)
         {
             auto lost = streamer.softReset(true);
             backlog.clear();
@@ -316,11 +316,11 @@ private:
 
     /// What the controller said it is: read afresh at every connection.
     struct Controller {
-        grbl::Firmware firmware = grbl::Firmware::Unknown;
+        dev::grbl::Firmware firmware = dev::grbl::Firmware::Unknown;
         std::string bannerVersion;
-        grbl::BuildInfo build;
-        grbl::Settings settings;
-        grbl::MachineLimits limits;
+        dev::grbl::BuildInfo build;
+        dev::grbl::Settings settings;
+        dev::grbl::MachineLimits limits;
         std::vector<double> g54Mm, g92Mm;  ///< $#
         double tloMm = 0;
         bool haveParameters = false;
@@ -338,7 +338,7 @@ private:
 
     /// What the status reports said, and the queries that ask for them.
     struct Reports {
-        grbl::StatusTracker tracker;
+        dev::grbl::StatusTracker tracker;
         std::vector<double> machineMm, workMm, wcoMm;
         std::vector<double> lastWorkMm;  ///< the report before, for motion and velocity
         quint64 lastUs = 0;
@@ -414,7 +414,7 @@ private:
         QHash<int, double> held;        ///< startJog: axis → velocity
         std::map<int, double> stick;    ///< setJogVelocities: axis → velocity
         qint64 stickDeadlineMs = 0;
-        std::optional<grbl::ContinuousJog> run;
+        std::optional<dev::grbl::ContinuousJog> run;
         std::vector<double> velocityMmS;  ///< per GRBL axis, the vector `run` runs
         bool cancelling = false;
         int linesAtCancel = 0;            ///< jog lines unacknowledged when 0x85 went out
@@ -430,7 +430,7 @@ private:
     } m_jogs;
 
     // Telemetry from status reports: the subscription outlives the link.
-    QVector<proto::ChannelRef> m_channels;
+    QVector<dev::proto::ChannelRef> m_channels;
     int m_rateHz = 0;
     std::uint32_t m_sampleIndex = 0;
 

@@ -19,7 +19,7 @@ constexpr double kTravelToleranceMm = 1e-4;
 /// before it reports the homing as accepted: GRBL answers $H only when homing ends.
 constexpr int kHomeAcceptMs = 500;
 
-RequestError refusal(RequestError::Kind kind, msg::Message message, proto::ErrorCode code = proto::ErrorCode::BadPayload)
+RequestError refusal(RequestError::Kind kind, motion::msg::Message message, dev::proto::ErrorCode code = dev::proto::ErrorCode::BadPayload)
 {
     RequestError e;
     e.kind = kind;
@@ -31,25 +31,25 @@ RequestError refusal(RequestError::Kind kind, msg::Message message, proto::Error
 /// request.not_sent{request}: the link is not up.
 RequestError notSent(const char* request)
 {
-    return refusal(RequestError::Kind::LinkDown, msg::make("request.not_sent", {msg::term("request", request)}));
+    return refusal(RequestError::Kind::LinkDown, motion::msg::make("request.not_sent", {motion::msg::term("request", request)}));
 }
 
 /// request.abandoned{request, cause}: its lines were lost (a reset, a dropped link).
-msg::Message abandoned(const std::string& request, const msg::Message& cause)
+motion::msg::Message abandoned(const std::string& request, const motion::msg::Message& cause)
 {
-    return msg::make("request.abandoned", {msg::term("request", request), msg::nested("cause", cause)});
+    return motion::msg::make("request.abandoned", {motion::msg::term("request", request), motion::msg::nested("cause", cause)});
 }
 
 /// grbl.estop_latched{request}.
 RequestError estopLatched(const char* request)
 {
-    return refusal(RequestError::Kind::Device, msg::make("grbl.estop_latched", {msg::term("request", request)}), proto::ErrorCode::EStopActive);
+    return refusal(RequestError::Kind::Device, motion::msg::make("grbl.estop_latched", {motion::msg::term("request", request)}), dev::proto::ErrorCode::EStopActive);
 }
 
 /// A line GRBL would not take (grbl.gcode.*), with the request it was for.
-RequestError notGcode(msg::Message problem, const char* request)
+RequestError notGcode(motion::msg::Message problem, const char* request)
 {
-    problem.args.push_back(msg::term("request", request));
+    problem.args.push_back(motion::msg::term("request", request));
     return refusal(RequestError::Kind::Invalid, std::move(problem));
 }
 
@@ -74,13 +74,13 @@ std::optional<RequestError> GrblClient::checkTarget(int axis, double target) con
     if (target >= s.min - tol && target <= s.max + tol)
         return std::nullopt;
     const auto g = grblIndexOf(axis);
-    const msg::Unit unit = unitOf(axis);
+    const motion::msg::Unit unit = unitOf(axis);
     RequestError e = refusal(RequestError::Kind::Device,
-                             msg::make("grbl.beyond_travel", {msg::verbatim("axis", QString(m_identity.axes[axis].letter).toStdString()),
-                                                              msg::real("target", target, unit), msg::real("min", s.min, unit),
-                                                              msg::real("max", s.max, unit),
-                                                              msg::integer("setting", grbl::setting::kMaxTravelMmX + g, msg::Unit::None)}),
-                             proto::ErrorCode::SoftLimit);
+                             motion::msg::make("grbl.beyond_travel", {motion::msg::verbatim("axis", QString(m_identity.axes[axis].letter).toStdString()),
+                                                              motion::msg::real("target", target, unit), motion::msg::real("min", s.min, unit),
+                                                              motion::msg::real("max", s.max, unit),
+                                                              motion::msg::integer("setting", dev::grbl::setting::kMaxTravelMmX + g, motion::msg::Unit::None)}),
+                             dev::proto::ErrorCode::SoftLimit);
     e.axis = axis;
     e.value = target;
     return e;
@@ -97,7 +97,7 @@ void GrblClient::sendMotionLines(const std::vector<std::string>& lines, quint8 a
     m_motion.axes |= axes;
     for (const std::string& line : lines) {
         ++m_motion.linesOpen;
-        const bool queued = queueLine(line, [self, progress, request, done](const std::optional<grbl::Streamer::Ack>& a) {
+        const bool queued = queueLine(line, [self, progress, request, done](const std::optional<dev::grbl::Streamer::Ack>& a) {
             if (!self)
                 return;
             self->m_motion.linesOpen = std::max(0, self->m_motion.linesOpen - 1);
@@ -124,7 +124,7 @@ void GrblClient::sendMotionLines(const std::vector<std::string>& lines, quint8 a
             --m_motion.linesOpen;
             if (!progress->finished) {
                 progress->finished = true;
-                GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("grbl.line_not_sent", {msg::term("request", request), msg::verbatim("line", line)})));
+                GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, motion::msg::make("grbl.line_not_sent", {motion::msg::term("request", request), motion::msg::verbatim("line", line)})));
             }
             return;
         }
@@ -147,7 +147,7 @@ void GrblClient::home(quint8 axisMask, Callback done)
             if ((axisMask >> i) & 1u)
                 line.push_back(grblLetterOf(i));
         if (line.size() != 3)
-            GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("grbl.home_one_or_all", {msg::verbatim("axes", line.substr(2))})));
+            GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, motion::msg::make("grbl.home_one_or_all", {motion::msg::verbatim("axes", line.substr(2))})));
     }
     struct Answer {
         bool replied = false;
@@ -163,7 +163,7 @@ void GrblClient::home(quint8 axisMask, Callback done)
     m_machine.homing = true;
     const QPointer<GrblClient> self(this);
     const quint32 homedMask = axisMask == 0 ? all : (axisMask & all);
-    const bool queued = queueLine(line, [self, reply, homedMask, line](const std::optional<grbl::Streamer::Ack>& a) {
+    const bool queued = queueLine(line, [self, reply, homedMask, line](const std::optional<dev::grbl::Streamer::Ack>& a) {
         if (!self)
             return;
         self->m_machine.homing = false;
@@ -196,7 +196,7 @@ void GrblClient::unlock(Callback done)
     auto sendUnlock = [self, done] {
         if (!self)
             return;
-        const bool queued = self->queueLine("$X", [self, done](const std::optional<grbl::Streamer::Ack>& a) {
+        const bool queued = self->queueLine("$X", [self, done](const std::optional<dev::grbl::Streamer::Ack>& a) {
             if (!self)
                 return;
             if (!a || !a->ok) {
@@ -237,11 +237,11 @@ void GrblClient::setZero(quint8 axisMask, Callback done)
     if (!isReady())
         GRBL_REFUSE(done, notSent("request.set_zero"));
     if (m_status.anyMoving() || !linesIdle())
-        GRBL_REFUSE(done, refusal(RequestError::Kind::Device, msg::make("grbl.set_zero_while_moving"), proto::ErrorCode::Busy));
+        GRBL_REFUSE(done, refusal(RequestError::Kind::Device, motion::msg::make("grbl.set_zero_while_moving"), dev::proto::ErrorCode::Busy));
     const quint32 all = (1u << m_map.size()) - 1;
     const quint32 mask = axisMask == 0 ? all : (axisMask & all);
     if (mask == 0)
-        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("grbl.set_zero_no_axis")));
+        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, motion::msg::make("grbl.set_zero_no_axis")));
     // G10 L20 P1: the G54 offset that makes the present position read 0 (written to EEPROM:
     // the line goes alone).
     std::string line = "G10 L20 P1";
@@ -251,7 +251,7 @@ void GrblClient::setZero(quint8 axisMask, Callback done)
     const QPointer<GrblClient> self(this);
     const bool queued = queueLine(
         line,
-        [self, done, mask](const std::optional<grbl::Streamer::Ack>& a) {
+        [self, done, mask](const std::optional<dev::grbl::Streamer::Ack>& a) {
             if (!self)
                 return;
             if (!a || !a->ok) {
@@ -266,7 +266,7 @@ void GrblClient::setZero(quint8 axisMask, Callback done)
             self->sendQuery();
             // The new offset, for the travel and for the next connection to recognise; done once
             // it is read, so a script that disconnects at once leaves it remembered.
-            const bool asked = self->queueLine("$#", [self, done](const std::optional<grbl::Streamer::Ack>& offsets) {
+            const bool asked = self->queueLine("$#", [self, done](const std::optional<dev::grbl::Streamer::Ack>& offsets) {
                 if (self && offsets && offsets->ok)
                     self->rememberHome();
                 if (done)
@@ -282,7 +282,7 @@ void GrblClient::setZero(quint8 axisMask, Callback done)
 
 void GrblClient::setSoftLimits(int, double, double, Callback done)
 {
-    GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("grbl.soft_limits_fixed")));
+    GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, motion::msg::make("grbl.soft_limits_fixed")));
 }
 
 // ---- moves -----------------------------------------------------------------------------------
@@ -290,38 +290,38 @@ void GrblClient::setSoftLimits(int, double, double, Callback done)
 void GrblClient::move(const QVector<QPair<int, double>>& targets, bool relative, double speed, Callback done)
 {
     if (targets.isEmpty())
-        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("request.move_no_axis")));
+        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, motion::msg::make("request.move_no_axis")));
     QMap<int, double> byAxis;
     for (const auto& [axis, value] : targets) {
         if (axis < 0 || axis >= m_identity.axes.size())
-            GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("request.move_no_such_axis", {msg::integer("index", axis, msg::Unit::None)})));
-        const msg::Arg letter = msg::verbatim("axis", QString(m_identity.axes[axis].letter).toStdString());
+            GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, motion::msg::make("request.move_no_such_axis", {motion::msg::integer("index", axis, motion::msg::Unit::None)})));
+        const motion::msg::Arg letter = motion::msg::verbatim("axis", QString(m_identity.axes[axis].letter).toStdString());
         if (!std::isfinite(value))
-            GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("request.move_target_not_number", {letter})));
+            GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, motion::msg::make("request.move_target_not_number", {letter})));
         if (byAxis.contains(axis))
-            GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("request.move_axis_twice", {letter})));
+            GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, motion::msg::make("request.move_axis_twice", {letter})));
         byAxis[axis] = value;
     }
     if (!std::isfinite(speed) || speed < 0)
-        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("request.move_bad_speed")));
+        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, motion::msg::make("request.move_bad_speed")));
     if (!isReady())
         GRBL_REFUSE(done, notSent("request.move"));
     if (m_estopLatched)
         GRBL_REFUSE(done, estopLatched("request.move"));
     if (m_status.positionLost)
-        GRBL_REFUSE(done, refusal(RequestError::Kind::Device, msg::make("grbl.move_in_alarm"), proto::ErrorCode::NotHomed));
-    std::vector<grbl::AxisValue> xy, z;
+        GRBL_REFUSE(done, refusal(RequestError::Kind::Device, motion::msg::make("grbl.move_in_alarm"), dev::proto::ErrorCode::NotHomed));
+    std::vector<dev::grbl::AxisValue> xy, z;
     quint8 axes = 0;
     for (auto it = byAxis.cbegin(); it != byAxis.cend(); ++it) {
         const int axis = it.key();
         if (!relative && !established(axis))
             GRBL_REFUSE(done, refusal(RequestError::Kind::Device,
-                                      msg::make("grbl.move_not_established", {msg::verbatim("axis", QString(m_identity.axes[axis].letter).toStdString())}),
-                                      proto::ErrorCode::NotHomed));
+                                      motion::msg::make("grbl.move_not_established", {motion::msg::verbatim("axis", QString(m_identity.axes[axis].letter).toStdString())}),
+                                      dev::proto::ErrorCode::NotHomed));
         const double target = relative ? m_status.axes[axis].commanded + it.value() : it.value();
         if (auto e = checkTarget(axis, target))
             GRBL_REFUSE(done, *e);
-        const grbl::AxisValue v{grblLetterOf(axis), it.value() / scaleOf(axis)};
+        const dev::grbl::AxisValue v{grblLetterOf(axis), it.value() / scaleOf(axis)};
         // The analyzer moves Z once X and Y have arrived (seed 000): a line of its own, after.
         if (m_identity.axes[axis].letter == QLatin1Char('Z') && capabilities().testFlag(Capability::CoupledXyThenZ))
             z.push_back(v);
@@ -334,7 +334,7 @@ void GrblClient::move(const QVector<QPair<int, double>>& targets, bool relative,
     for (const auto* group : {&xy, &z}) {
         if (group->empty())
             continue;
-        const grbl::GcodeLine l = grbl::moveLine(speed > 0 ? grbl::Motion::Feed : grbl::Motion::Rapid, relative, *group, feedMmMin);
+        const dev::grbl::GcodeLine l = dev::grbl::moveLine(speed > 0 ? dev::grbl::Motion::Feed : dev::grbl::Motion::Rapid, relative, *group, feedMmMin);
         if (!l.ok())
             GRBL_REFUSE(done, notGcode(l.problem, "request.move"));
         lines.push_back(l.text);
@@ -345,14 +345,14 @@ void GrblClient::move(const QVector<QPair<int, double>>& targets, bool relative,
 void GrblClient::jogStep(int axis, double delta, double speed, Callback done)
 {
     if (axis < 0 || axis >= m_identity.axes.size() || !std::isfinite(delta) || !std::isfinite(speed) || speed < 0)
-        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("request.jog_step_invalid")));
+        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, motion::msg::make("request.jog_step_invalid")));
     if (!isReady())
         GRBL_REFUSE(done, notSent("request.jog_step"));
     if (m_estopLatched)
         GRBL_REFUSE(done, estopLatched("request.jog_step"));
     // A step jog's target is left to GRBL: beyond the travel it answers error:15, harmlessly.
     const double v = speed > 0 ? speed : m_identity.axes[axis].maxSpeed / 4;
-    const grbl::GcodeLine l = grbl::jogLine({{grblLetterOf(axis), delta / scaleOf(axis)}}, v / scaleOf(axis) * 60);
+    const dev::grbl::GcodeLine l = dev::grbl::jogLine({{grblLetterOf(axis), delta / scaleOf(axis)}}, v / scaleOf(axis) * 60);
     if (!l.ok())
         GRBL_REFUSE(done, notGcode(l.problem, "request.jog_step"));
     sendMotionLines({l.text}, static_cast<quint8>(1u << axis), "request.jog_step", std::move(done));
@@ -366,13 +366,13 @@ void GrblClient::stop(quint8, Callback done)
         GRBL_REFUSE(done, notSent("request.stop"));
     // GRBL stops all its axes or none.
     const bool jogging = m_jogs.run.has_value() || m_jogs.cancelling || !m_jogs.held.isEmpty() || !m_jogs.stick.empty()
-                         || m_reports.tracker.state() == grbl::MachineState::Jog;
+                         || m_reports.tracker.state() == dev::grbl::MachineState::Jog;
     m_jogs.held.clear();
     m_jogs.stick.clear();
     if (jogging)
         cancelJog();
-    const bool gcodeMotion = m_motion.axes || !linesIdle() || m_reports.tracker.state() == grbl::MachineState::Run
-                             || m_reports.tracker.state() == grbl::MachineState::Hold;
+    const bool gcodeMotion = m_motion.axes || !linesIdle() || m_reports.tracker.state() == dev::grbl::MachineState::Run
+                             || m_reports.tracker.state() == dev::grbl::MachineState::Hold;
     if (!gcodeMotion || m_machine.critical) {
         if (done)
             done(std::nullopt);
@@ -387,7 +387,7 @@ void GrblClient::stop(quint8, Callback done)
     m_stop.resetSent = false;
     m_stop.startMs = m_clock.elapsed();
     m_stop.askedUs = nowUs();
-    sendRealtime(grbl::rt::kFeedHold);
+    sendRealtime(dev::grbl::rt::kFeedHold);
     sendQuery();
 }
 
@@ -395,7 +395,7 @@ void GrblClient::holdThenFlush(Callback done)
 {
     if (!isReady()) {
         if (done)
-            done(refusal(RequestError::Kind::LinkDown, msg::make("request.instrument_not_connected")));
+            done(refusal(RequestError::Kind::LinkDown, motion::msg::make("request.instrument_not_connected")));
         return;
     }
     m_waiters.stop.push_back(std::move(done));
@@ -405,7 +405,7 @@ void GrblClient::holdThenFlush(Callback done)
     m_stop.resetSent = false;
     m_stop.startMs = m_clock.elapsed();
     m_stop.askedUs = nowUs();
-    sendRealtime(grbl::rt::kFeedHold);
+    sendRealtime(dev::grbl::rt::kFeedHold);
     sendQuery();
 }
 
@@ -418,7 +418,7 @@ void GrblClient::finishStop(const std::optional<RequestError>& e)
     if (!e)
         for (int i = 0; i < m_status.axes.size(); ++i)
             if ((axes >> i) & 1u)
-                emitEvent(proto::EventKind::Stopped, i, m_status.axes[i].commanded);
+                emitEvent(dev::proto::EventKind::Stopped, i, m_status.axes[i].commanded);
     auto waiting = std::move(m_waiters.stop);
     m_waiters.stop.clear();
     for (auto& d : waiting)
@@ -437,13 +437,13 @@ void GrblClient::estop(Callback done)
     m_jogTimer.stop();
     m_estopLatched = true;
     m_motion.axes = 0;
-    sendRealtime(grbl::rt::kFeedHold);
+    sendRealtime(dev::grbl::rt::kFeedHold);
     if (m_stop.active)
-        finishStop(refusal(RequestError::Kind::Device, msg::make("grbl.stop_overtaken_by_estop"), proto::ErrorCode::EStopActive));
+        finishStop(refusal(RequestError::Kind::Device, motion::msg::make("grbl.stop_overtaken_by_estop"), dev::proto::ErrorCode::EStopActive));
     m_waiters.reset.push_back(std::move(done));
     softReset(true);
     m_status.estop = true;
-    emitEvent(proto::EventKind::EStop, -1, 0, msg::make("grbl.event.estop"));
+    emitEvent(dev::proto::EventKind::EStop, -1, 0, motion::msg::make("grbl.event.estop"));
     emit statusChanged(m_status);
 }
 
@@ -455,7 +455,7 @@ void GrblClient::reset(Callback done)
     m_estopLatched = false;
     m_status.estop = false;
     if (wasLatched)
-        emitEvent(proto::EventKind::Reset, -1, 0, msg::make("grbl.event.estop_cleared"));
+        emitEvent(dev::proto::EventKind::Reset, -1, 0, motion::msg::make("grbl.event.estop_cleared"));
     emit statusChanged(m_status);
     if (m_machine.critical) {
         // A limit alarm waits for a soft reset; the position lock (Alarm) stays until home or unlock.
@@ -472,11 +472,11 @@ void GrblClient::reset(Callback done)
 void GrblClient::dwell(double seconds, Callback done)
 {
     if (!std::isfinite(seconds) || seconds < 0)
-        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("request.dwell_invalid", {msg::real("seconds", seconds, msg::Unit::S)})));
+        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, motion::msg::make("request.dwell_invalid", {motion::msg::real("seconds", seconds, motion::msg::Unit::S)})));
     // G4's ok comes after the motion before it has finished and the time has passed.
-    const grbl::GcodeLine l = grbl::dwellLine(std::max(seconds, 0.001));
+    const dev::grbl::GcodeLine l = dev::grbl::dwellLine(std::max(seconds, 0.001));
     const QPointer<GrblClient> self(this);
-    const bool queued = queueLine(l.text, [self, done](const std::optional<grbl::Streamer::Ack>& a) {
+    const bool queued = queueLine(l.text, [self, done](const std::optional<dev::grbl::Streamer::Ack>& a) {
         if (!self || !done)
             return;
         if (!a)
@@ -491,23 +491,23 @@ void GrblClient::dwell(double seconds, Callback done)
 void GrblClient::pulseTrigger(double widthS, Callback done)
 {
     if (!m_profile.trigger)
-        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("grbl.no_trigger_output")));
+        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, motion::msg::make("grbl.no_trigger_output")));
     if (!std::isfinite(widthS) || widthS < 0)
-        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, msg::make("grbl.trigger_bad_width", {msg::real("width", widthS, msg::Unit::S)})));
+        GRBL_REFUSE(done, refusal(RequestError::Kind::Invalid, motion::msg::make("grbl.trigger_bad_width", {motion::msg::real("width", widthS, motion::msg::Unit::S)})));
     if (!isReady())
         GRBL_REFUSE(done, notSent("grbl.request.trigger"));
     // Wait for the motion before to end (G4), switch on, hold for the width, switch off. grblHAL's
     // M64/M65 act when read, and GRBL reads the next line only once a G4 is over.
-    const bool coolant = m_profile.trigger->output == files::MachineProfile::TriggerOutput::CoolantFlood;
-    const auto kind = coolant ? grbl::TriggerOutput::Coolant : grbl::TriggerOutput::GrblHalDigital;
+    const bool coolant = m_profile.trigger->output == dev::files::MachineProfile::TriggerOutput::CoolantFlood;
+    const auto kind = coolant ? dev::grbl::TriggerOutput::Coolant : dev::grbl::TriggerOutput::GrblHalDigital;
     const int port = m_profile.trigger->port;
-    std::vector<std::string> lines = {grbl::dwellLine(0.001).text, grbl::outputLine(kind, true, port, false).text,
-                                      grbl::dwellLine(std::max(widthS, 0.001)).text, grbl::outputLine(kind, false, port, false).text};
+    std::vector<std::string> lines = {dev::grbl::dwellLine(0.001).text, dev::grbl::outputLine(kind, true, port, false).text,
+                                      dev::grbl::dwellLine(std::max(widthS, 0.001)).text, dev::grbl::outputLine(kind, false, port, false).text};
     auto left = std::make_shared<std::size_t>(lines.size());
     auto failed = std::make_shared<bool>(false);
     const QPointer<GrblClient> self(this);
     for (const auto& line : lines) {
-        const bool queued = queueLine(line, [self, left, failed, done](const std::optional<grbl::Streamer::Ack>& a) {
+        const bool queued = queueLine(line, [self, left, failed, done](const std::optional<dev::grbl::Streamer::Ack>& a) {
             if (!self || *failed)
                 return;
             if (!a || !a->ok) {

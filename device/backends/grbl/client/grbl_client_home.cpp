@@ -38,7 +38,7 @@ std::string GrblClient::controllerKey() const
         .toStdString();
 }
 
-quint32 GrblClient::recallHome(grbl::MachineState state)
+quint32 GrblClient::recallHome(dev::grbl::MachineState state)
 {
     if (m_homeFile.isEmpty())
         return 0;
@@ -54,15 +54,15 @@ quint32 GrblClient::recallHome(grbl::MachineState state)
             mask |= 1u << i;
             letters.push_back(static_cast<char>(m_identity.axes[i].letter.toLatin1()));
         }
-    const bool stillSo = !m_wire.restartHeard && state != grbl::MachineState::Alarm && m_controller.haveParameters
+    const bool stillSo = !m_wire.restartHeard && state != dev::grbl::MachineState::Alarm && m_controller.haveParameters
                          && homeSameMm(home->g54Mm, m_controller.g54Mm) && homeSameMm(home->machineMm, m_reports.machineMm);
     if (!stillSo || mask == 0) {
         memory.forget(key);
         if (mask)
-            note(msg::make(m_wire.restartHeard ? "grbl.home_lost_restart" : "grbl.home_lost_changed", {msg::verbatim("axes", letters)}));
+            note(motion::msg::make(m_wire.restartHeard ? "grbl.home_lost_restart" : "grbl.home_lost_changed", {motion::msg::verbatim("axes", letters)}));
         return 0;
     }
-    note(msg::make("grbl.home_kept", {msg::verbatim("axes", letters)}));
+    note(motion::msg::make("grbl.home_kept", {motion::msg::verbatim("axes", letters)}));
     return mask;
 }
 
@@ -80,7 +80,7 @@ void GrblClient::rememberHome()
     if (home.axes.empty())
         return;
     if (!GrblHomeMemory(m_homeFile).remember(home))
-        note(msg::make("grbl.home_not_saved", {msg::verbatim("file", m_homeFile.toStdString())}));
+        note(motion::msg::make("grbl.home_not_saved", {motion::msg::verbatim("file", m_homeFile.toStdString())}));
 }
 
 void GrblClient::keepHomeOnLeave()
@@ -92,7 +92,7 @@ void GrblClient::keepHomeOnLeave()
     auto home = memory.recall(key);
     if (!home)
         return;
-    if (m_positions.established == 0 || m_reports.tracker.state() == grbl::MachineState::Alarm
+    if (m_positions.established == 0 || m_reports.tracker.state() == dev::grbl::MachineState::Alarm
         || m_reports.machineMm.size() != home->machineMm.size()) {
         memory.forget(key);
         return;

@@ -16,40 +16,40 @@ std::string GrblClient::axisLettersOfController() const
     // Stock GRBL has X, Y and Z; a four- to six-axis build has the settings of its extra axes.
     std::string letters = "XYZ";
     for (int k = 3; k < 6; ++k)
-        if (m_controller.settings.has(grbl::setting::kMaxRateMmMinX + k))
+        if (m_controller.settings.has(dev::grbl::setting::kMaxRateMmMinX + k))
             letters.push_back("XYZABC"[k]);
         else
             break;
     return letters;
 }
 
-bool GrblClient::buildIdentity(msg::Message* why)
+bool GrblClient::buildIdentity(motion::msg::Message* why)
 {
     const std::string letters = axisLettersOfController();
-    grbl::LimitsRead read = grbl::machineLimits(m_controller.settings, letters);
+    dev::grbl::LimitsRead read = dev::grbl::machineLimits(m_controller.settings, letters);
     if (!read.limits) {
         // The refusal names the first problem and how many there are; each one is noted.
         for (const auto& p : read.problems)
             note(p);
-        *why = msg::make("grbl.identify.no_limits",
-                         {msg::nested("problem", read.problems.front()),  // machineLimits() has no limits only with problems
-                          msg::integer("count", static_cast<long long>(read.problems.size()))});
+        *why = motion::msg::make("grbl.identify.no_limits",
+                         {motion::msg::nested("problem", read.problems.front()),  // machineLimits() has no limits only with problems
+                          motion::msg::integer("count", static_cast<long long>(read.problems.size()))});
         return false;
     }
     m_controller.limits = *read.limits;
     if (m_controller.limits.reportInches) {
-        if (m_profile.inchReports == files::MachineProfile::InchReports::Refuse) {
-            *why = msg::make("grbl.identify.inches_refused");
+        if (m_profile.inchReports == dev::files::MachineProfile::InchReports::Refuse) {
+            *why = motion::msg::make("grbl.identify.inches_refused");
             return false;
         }
         m_reports.tracker.setReportInches(true);
     }
     for (const auto& w : read.warnings)
         note(w);
-    if (m_controller.build.firmware == grbl::Firmware::GrblHal)
-        m_controller.firmware = grbl::Firmware::GrblHal;
-    if (m_controller.firmware == grbl::Firmware::Unknown)
-        m_controller.firmware = grbl::Firmware::Grbl;
+    if (m_controller.build.firmware == dev::grbl::Firmware::GrblHal)
+        m_controller.firmware = dev::grbl::Firmware::GrblHal;
+    if (m_controller.firmware == dev::grbl::Firmware::Unknown)
+        m_controller.firmware = dev::grbl::Firmware::Grbl;
 
     // The wiring: every axis the profile names must exist on this controller.
     QVector<AxisMap> map;
@@ -61,9 +61,9 @@ bool GrblClient::buildIdentity(msg::Message* why)
     for (const auto& a : m_profile.axes) {
         const int g = indexOf(a.grblAxis);
         if (g < 0) {
-            *why = msg::make("grbl.identify.axis_missing", {msg::verbatim("axis", std::string(1, a.axis)),
-                                                             msg::verbatim("grbl_axis", std::string(1, a.grblAxis)),
-                                                             msg::verbatim("axes", letters)});
+            *why = motion::msg::make("grbl.identify.axis_missing", {motion::msg::verbatim("axis", std::string(1, a.axis)),
+                                                             motion::msg::verbatim("grbl_axis", std::string(1, a.grblAxis)),
+                                                             motion::msg::verbatim("axes", letters)});
             return false;
         }
         map.push_back({g, 1.0});
@@ -75,8 +75,8 @@ bool GrblClient::buildIdentity(msg::Message* why)
             map.push_back({g, m_profile.pump->ulPerMm});
             instrumentLetters.push_back('P');
         } else if (!m_lenient) {
-            *why = msg::make("grbl.identify.pump_axis_missing", {msg::verbatim("grbl_axis", std::string(1, m_profile.pump->grblAxis)),
-                                                                  msg::verbatim("axes", letters)});
+            *why = motion::msg::make("grbl.identify.pump_axis_missing", {motion::msg::verbatim("grbl_axis", std::string(1, m_profile.pump->grblAxis)),
+                                                                  motion::msg::verbatim("axes", letters)});
             return false;
         } else {
             m_profile.pump.reset();  // the default wiring: no fourth axis, no pump
@@ -90,19 +90,19 @@ bool GrblClient::buildIdentity(msg::Message* why)
     std::string version = m_controller.bannerVersion;
     if (version.empty())
         version = m_controller.build.version.substr(0, m_controller.build.version.find('.', m_controller.build.version.find('.') + 1));
-    id.family = QStringLiteral("%1 %2").arg(m_controller.firmware == grbl::Firmware::GrblHal ? QStringLiteral("grblHAL") : QStringLiteral("Grbl"),
+    id.family = QStringLiteral("%1 %2").arg(m_controller.firmware == dev::grbl::Firmware::GrblHal ? QStringLiteral("grblHAL") : QStringLiteral("Grbl"),
                                             QString::fromStdString(version));
     id.model = m_profile.name.empty() ? tr("GRBL controller") : QString::fromStdString(m_profile.name);
     id.firmware = QString::fromStdString(m_controller.build.version.empty() ? version : m_controller.build.version);
     id.protocolVersion = 0;
-    id.motionProfile = proto::MotionProfile::Trapezoid;  // GRBL plans trapezoids: no jerk limit
+    id.motionProfile = dev::proto::MotionProfile::Trapezoid;  // GRBL plans trapezoids: no jerk limit
     id.maxTelemetryRateHz = static_cast<std::uint32_t>(std::lround(m_profile.statusPollHz));
     id.jogWatchdogMs = 0;  // nothing on the controller stops a jog the host stops renewing
     for (int i = 0; i < map.size(); ++i) {
-        const grbl::AxisLimits& l = m_controller.limits.axes[static_cast<std::size_t>(map[i].grbl)];
+        const dev::grbl::AxisLimits& l = m_controller.limits.axes[static_cast<std::size_t>(map[i].grbl)];
         AxisDescriptor d;
         d.letter = QChar::fromLatin1(instrumentLetters[static_cast<std::size_t>(i)]);
-        d.unit = d.letter == QLatin1Char('P') ? proto::AxisUnit::Microlitre : proto::AxisUnit::Millimetre;
+        d.unit = d.letter == QLatin1Char('P') ? dev::proto::AxisUnit::Microlitre : dev::proto::AxisUnit::Millimetre;
         const double k = map[i].scale;
         d.maxSpeed = l.maxRateMmS * k;
         d.maxAccel = l.accelMmS2 * k;
@@ -126,8 +126,8 @@ void GrblClient::updateTravel()
     // nothing anchors it: the travel is taken from the point set as home towards +.
     const bool homing = m_controller.limits.homingEnabled;
     const bool forceOrigin = m_controller.build.hasOption('Z')
-                             || (m_controller.firmware == grbl::Firmware::GrblHal
-                                 && ((static_cast<unsigned>(m_controller.settings.value(grbl::setting::kHomingCycle).value_or(0)) >> 3) & 1u));
+                             || (m_controller.firmware == dev::grbl::Firmware::GrblHal
+                                 && ((static_cast<unsigned>(m_controller.settings.value(dev::grbl::setting::kHomingCycle).value_or(0)) >> 3) & 1u));
     // Until the controller of this connection is identified the wiring is the last one's and the
     // limits are not read yet: nothing to anchor (buildIdentity calls this once they are).
     if (m_map.isEmpty() || m_controller.limits.axes.empty())
@@ -137,7 +137,7 @@ void GrblClient::updateTravel()
         const auto g = static_cast<std::size_t>(m_map[i].grbl);
         if (g >= m_controller.limits.axes.size())
             continue;
-        const grbl::AxisLimits& l = m_controller.limits.axes[g];
+        const dev::grbl::AxisLimits& l = m_controller.limits.axes[g];
         const double wco = g < m_reports.wcoMm.size() ? m_reports.wcoMm[g] : 0.0;
         double lo = 0, hi = l.maxTravelMm;  // work coordinates
         if (homing) {
@@ -160,11 +160,11 @@ void GrblClient::updateTravel()
 
 double GrblClient::scaleOf(int axis) const { return axis >= 0 && axis < m_map.size() ? m_map[axis].scale : 1.0; }
 
-msg::Unit GrblClient::unitOf(int axis) const
+motion::msg::Unit GrblClient::unitOf(int axis) const
 {
-    if (axis >= 0 && axis < m_identity.axes.size() && m_identity.axes[axis].unit == proto::AxisUnit::Microlitre)
-        return msg::Unit::Ul;
-    return msg::Unit::Mm;
+    if (axis >= 0 && axis < m_identity.axes.size() && m_identity.axes[axis].unit == dev::proto::AxisUnit::Microlitre)
+        return motion::msg::Unit::Ul;
+    return motion::msg::Unit::Mm;
 }
 
 char GrblClient::grblLetterOf(int axis) const
@@ -183,9 +183,9 @@ double GrblClient::instrumentValue(int axis, const std::vector<double>& workMm) 
     return g >= 0 && g < static_cast<int>(workMm.size()) ? workMm[static_cast<std::size_t>(g)] * scaleOf(axis) : 0.0;
 }
 
-grbl::JogPlan GrblClient::jogPlan(int axis, double speed) const
+dev::grbl::JogPlan GrblClient::jogPlan(int axis, double speed) const
 {
-    grbl::JogPlanInput in;
+    dev::grbl::JogPlanInput in;
     const int g = grblIndexOf(axis);
     if (g < 0 || g >= static_cast<int>(m_controller.limits.axes.size()))
         return {};
@@ -197,7 +197,7 @@ grbl::JogPlan GrblClient::jogPlan(int axis, double speed) const
     in.refreshPeriodS = m_profile.jog.refreshS;
     in.linkLatencyS = m_profile.jog.linkLatencyS;
     in.stopBudgetS = m_profile.jog.stopBudgetS;
-    return grbl::planContinuousJog(in);
+    return dev::grbl::planContinuousJog(in);
 }
 
 Capabilities GrblClient::capabilities() const
@@ -210,7 +210,7 @@ Capabilities GrblClient::capabilities() const
         c |= Capability::PathQueue;
     if (m_controller.limits.homingEnabled)
         c |= Capability::Homing;
-    if (m_identity.kind == proto::DeviceKind::Analyzer && m_identity.axisIndex(QLatin1Char('Z')) >= 0)
+    if (m_identity.kind == dev::proto::DeviceKind::Analyzer && m_identity.axisIndex(QLatin1Char('Z')) >= 0)
         c |= Capability::CoupledXyThenZ;  // moves are sent as XY, then Z
     if (m_identity.axisIndex(QLatin1Char('P')) >= 0)
         c |= Capability::Pump;
@@ -219,9 +219,9 @@ Capabilities GrblClient::capabilities() const
     return c;
 }
 
-msg::Message GrblClient::missingReason(Capability c) const
+motion::msg::Message GrblClient::missingReason(Capability c) const
 {
-    msg::Message m = Instrument::missingReason(c);
+    motion::msg::Message m = Instrument::missingReason(c);
     const char* because = nullptr;
     switch (c) {
     case Capability::Homing: because = "capability.because.grbl_homing_disabled"; break;
@@ -238,16 +238,16 @@ msg::Message GrblClient::missingReason(Capability c) const
     default: break;
     }
     if (because)
-        m.args.push_back(msg::term("because", because));
+        m.args.push_back(motion::msg::term("because", because));
     return m;
 }
 
-double GrblClient::toAxisUnits(const proto::ChannelRef& c, std::int32_t value) const
+double GrblClient::toAxisUnits(const dev::proto::ChannelRef& c, std::int32_t value) const
 {
     switch (c.kind) {
-    case proto::ChannelKind::Switches:
-    case proto::ChannelKind::ControllerOutput: return value;
-    case proto::ChannelKind::ContourError: return value / 1e6;
+    case dev::proto::ChannelKind::Switches:
+    case dev::proto::ChannelKind::ControllerOutput: return value;
+    case dev::proto::ChannelKind::ContourError: return value / 1e6;
     default:
         if (c.axis < m_identity.axes.size())
             return value / m_identity.axes[c.axis].wireScale();

@@ -62,11 +62,11 @@ void GrblClient::setJogVelocities(const std::map<int, double>& velocities, Callb
 {
     for (const auto& [axis, v] : velocities)
         if (axis < 0 || axis >= m_identity.axes.size() || !std::isfinite(v)) {
-            refuse(done, RequestError::Kind::Invalid, msg::make("request.jog_invalid"));
+            refuse(done, RequestError::Kind::Invalid, motion::msg::make("request.jog_invalid"));
             return;
         }
     if (!isReady()) {
-        refuse(done, RequestError::Kind::LinkDown, msg::make("request.not_sent", {msg::term("request", "request.jog")}));
+        refuse(done, RequestError::Kind::LinkDown, motion::msg::make("request.not_sent", {motion::msg::term("request", "request.jog")}));
         return;
     }
     for (const auto& [axis, v] : velocities) {
@@ -123,8 +123,8 @@ void GrblClient::updateJog()
         rates.push_back(l.maxRateMmS);
         accels.push_back(l.accelMmS2);
     }
-    const auto [vmax, amax] = grbl::jogLimitsAlong(vMmS, rates, accels);
-    grbl::JogPlanInput in;
+    const auto [vmax, amax] = dev::grbl::jogLimitsAlong(vMmS, rates, accels);
+    dev::grbl::JogPlanInput in;
     in.speedMmS = speed;
     in.maxRateMmS = vmax;
     in.accelMmS2 = amax;
@@ -132,14 +132,14 @@ void GrblClient::updateJog()
     in.refreshPeriodS = m_profile.jog.refreshS;
     in.linkLatencyS = m_profile.jog.linkLatencyS;
     in.stopBudgetS = m_profile.jog.stopBudgetS;
-    const grbl::JogPlan plan = grbl::planContinuousJog(in);
+    const dev::grbl::JogPlan plan = dev::grbl::planContinuousJog(in);
     if (!plan.feasible) {
         m_jogs.held.clear();
         m_jogs.stick.clear();
         RequestError e;
         e.kind = RequestError::Kind::Invalid;
         e.message = plan.problem;  // grbl.jog.budget_too_small{budget, latency, refresh}
-        e.message.args.push_back(msg::term("request", "request.jog"));
+        e.message.args.push_back(motion::msg::term("request", "request.jog"));
         emit requestFailed(e);
         return;
     }
@@ -148,8 +148,8 @@ void GrblClient::updateJog()
         u /= speed;
     const std::string letters = axisLettersOfController();
     if (plan.speedLimited)
-        note(msg::make("grbl.jog.speed_limited", {msg::real("asked", speed, msg::Unit::MmPerS), msg::real("speed", plan.speedMmS, msg::Unit::MmPerS),
-                                                  msg::real("budget", in.stopBudgetS, msg::Unit::S)}));
+        note(motion::msg::make("grbl.jog.speed_limited", {motion::msg::real("asked", speed, motion::msg::Unit::MmPerS), motion::msg::real("speed", plan.speedMmS, motion::msg::Unit::MmPerS),
+                                                  motion::msg::real("budget", in.stopBudgetS, motion::msg::Unit::S)}));
     m_jogs.velocityMmS = vMmS;
     if (m_jogs.run && m_jogs.run->active()) {
         m_jogs.run->retarget(plan, letters, unit);
@@ -179,7 +179,7 @@ void GrblClient::sendJogLines(const std::vector<std::string>& lines)
     for (const auto& line : lines) {
         ++m_jogs.lines.open;
         auto tagHolder = std::make_shared<std::uint64_t>(0);
-        const std::uint64_t tag = queueLine(line, [self, tagHolder](const std::optional<grbl::Streamer::Ack>& a) {
+        const std::uint64_t tag = queueLine(line, [self, tagHolder](const std::optional<dev::grbl::Streamer::Ack>& a) {
             if (!self)
                 return;
             self->m_jogs.lines.tags.erase(*tagHolder);
@@ -202,7 +202,7 @@ void GrblClient::sendJogLines(const std::vector<std::string>& lines)
                 if (self->m_jogs.linesAtCancel > 0 && self->m_jogs.lines.open == 0) {
                     self->m_jogs.linesAtCancel = 0;
                     self->m_jogs.cancelSentUs = self->nowUs();
-                    self->sendRealtime(grbl::rt::kJogCancel);
+                    self->sendRealtime(dev::grbl::rt::kJogCancel);
                     self->sendQuery();
                 }
                 return;
@@ -244,7 +244,7 @@ void GrblClient::cancelJog()
     m_jogs.cancelling = true;
     m_jogs.linesAtCancel = m_jogs.lines.open;
     m_jogs.cancelSentUs = nowUs();
-    sendRealtime(grbl::rt::kJogCancel);
+    sendRealtime(dev::grbl::rt::kJogCancel);
     sendQuery();
 }
 

@@ -34,7 +34,7 @@ void GrblClient::sendQuery()
     if (m_reports.querySent.size() >= kMaxQueriesOutstanding)
         m_reports.querySent.pop_front();
     m_reports.querySent.push_back(nowUs());
-    sendRealtime(grbl::rt::kStatusQuery);
+    sendRealtime(dev::grbl::rt::kStatusQuery);
 }
 
 void GrblClient::readStatus(StatusCallback done)
@@ -42,7 +42,7 @@ void GrblClient::readStatus(StatusCallback done)
     if (m_phase != Phase::Ready) {
         RequestError e;
         e.kind = RequestError::Kind::LinkDown;
-        e.message = msg::make("request.not_sent", {msg::term("request", "grbl.request.status")});
+        e.message = motion::msg::make("request.not_sent", {motion::msg::term("request", "grbl.request.status")});
         if (done)
             done(e, m_status);
         return;
@@ -55,12 +55,12 @@ void GrblClient::readStatus(StatusCallback done)
         m_reports.queryAgain = true;  // the query in flight was asked before this call: ask once more
 }
 
-void GrblClient::applyParameters(const grbl::Line& l)
+void GrblClient::applyParameters(const dev::grbl::Line& l)
 {
     // $# answers: [G54:x,y,z] … [G92:x,y,z] [TLO:z] (report units: inches with $13=1).
-    const double k = m_reports.tracker.reportInches() ? grbl::kMmPerInch : 1.0;
+    const double k = m_reports.tracker.reportInches() ? dev::grbl::kMmPerInch : 1.0;
     auto vec = [&](std::vector<double>& into) {
-        if (const auto v = grbl::parseNumberList(l.payload, grbl::kMaxStatusAxes)) {
+        if (const auto v = dev::grbl::parseNumberList(l.payload, dev::grbl::kMaxStatusAxes)) {
             into = *v;
             for (double& x : into)
                 x *= k;
@@ -71,7 +71,7 @@ void GrblClient::applyParameters(const grbl::Line& l)
     else if (l.tag == "G92")
         vec(m_controller.g92Mm);
     else if (l.tag == "TLO") {
-        if (const auto v = grbl::parseNumber(l.payload))
+        if (const auto v = dev::grbl::parseNumber(l.payload))
             m_controller.tloMm = *v * k;
         // TLO is the last line of the offsets: the work offset is known now.
         m_controller.haveParameters = true;
@@ -87,16 +87,16 @@ void GrblClient::applyParameters(const grbl::Line& l)
     }
 }
 
-void GrblClient::emitEvent(proto::EventKind kind, int axis, double position, msg::Message detail, const QString& text)
+void GrblClient::emitEvent(dev::proto::EventKind kind, int axis, double position, motion::msg::Message detail, const QString& text)
 {
     // Where an axis arrived, stopped or was homed: the event's position is in work coordinates
     // (G54, as the screens show), and GRBL's machine coordinates differ by the work offset, so
     // the detail says both.
-    const bool where = kind == proto::EventKind::HomeDone || kind == proto::EventKind::MotionDone || kind == proto::EventKind::Stopped;
+    const bool where = kind == dev::proto::EventKind::HomeDone || kind == dev::proto::EventKind::MotionDone || kind == dev::proto::EventKind::Stopped;
     if (where && detail.id.empty() && axis >= 0 && axis < m_identity.axes.size()) {
-        const msg::Unit unit = unitOf(axis);
-        detail = msg::make("grbl.event.position", {msg::real("work", position, unit),
-                                                   msg::real("machine", instrumentValue(axis, m_reports.machineMm), unit)});
+        const motion::msg::Unit unit = unitOf(axis);
+        detail = motion::msg::make("grbl.event.position", {motion::msg::real("work", position, unit),
+                                                   motion::msg::real("machine", instrumentValue(axis, m_reports.machineMm), unit)});
     }
     DeviceEvent e;
     e.kind = kind;
@@ -109,7 +109,7 @@ void GrblClient::emitEvent(proto::EventKind kind, int axis, double position, msg
     emit eventReceived(e);
 }
 
-void GrblClient::onStatusReport(const grbl::StatusReport& r)
+void GrblClient::onStatusReport(const dev::grbl::StatusReport& r)
 {
     const quint64 askedUs = m_reports.querySent.empty() ? 0 : m_reports.querySent.front();
     if (!m_reports.querySent.empty())
@@ -120,7 +120,7 @@ void GrblClient::onStatusReport(const grbl::StatusReport& r)
     if (m_reports.tracker.haveWorkOffset())
         m_reports.wcoMm = m_reports.tracker.workOffsetMm();
     std::vector<double> pos = r.position;
-    const double k = m_reports.tracker.reportInches() ? grbl::kMmPerInch : 1.0;
+    const double k = m_reports.tracker.reportInches() ? dev::grbl::kMmPerInch : 1.0;
     for (double& x : pos)
         x *= k;
     m_reports.wcoMm.resize(pos.size(), 0.0);
@@ -132,26 +132,26 @@ void GrblClient::onStatusReport(const grbl::StatusReport& r)
         else
             m_reports.machineMm[i] = pos[i] + m_reports.wcoMm[i];
     }
-    const grbl::MachineState st = r.state;
+    const dev::grbl::MachineState st = r.state;
     if (m_reports.first) {
         // What can be trusted at connection: a controller with homing that is not in alarm was
         // homed (or unlocked) before; without homing, only a home set here that provably still holds.
         m_reports.first = false;
         if (m_controller.limits.homingEnabled)
-            m_positions.established = st != grbl::MachineState::Alarm ? (1u << m_map.size()) - 1 : 0;
+            m_positions.established = st != dev::grbl::MachineState::Alarm ? (1u << m_map.size()) - 1 : 0;
         else
             m_positions.established = recallHome(st);
         updateTravel();
     }
-    if (st != grbl::MachineState::Alarm)
+    if (st != dev::grbl::MachineState::Alarm)
         m_machine.critical = false;
-    const bool active = st == grbl::MachineState::Run || st == grbl::MachineState::Jog || st == grbl::MachineState::Home
-                        || (st == grbl::MachineState::Hold && r.subState != 0);
+    const bool active = st == dev::grbl::MachineState::Run || st == dev::grbl::MachineState::Jog || st == dev::grbl::MachineState::Home
+                        || (st == dev::grbl::MachineState::Hold && r.subState != 0);
     const quint64 now = nowUs();
     m_status.deviceTimeUs = now;
     m_status.estop = m_estopLatched;
-    m_status.positionLost = st == grbl::MachineState::Alarm;
-    m_status.fault = st == grbl::MachineState::Alarm;
+    m_status.positionLost = st == dev::grbl::MachineState::Alarm;
+    m_status.fault = st == dev::grbl::MachineState::Alarm;
     const std::string letters = axisLettersOfController();
     for (int i = 0; i < m_status.axes.size(); ++i) {
         AxisReadout& a = m_status.axes[i];
@@ -161,13 +161,13 @@ void GrblClient::onStatusReport(const grbl::StatusReport& r)
                              && std::fabs(m_reports.lastWorkMm[static_cast<std::size_t>(g)] - m_reports.workMm[static_cast<std::size_t>(g)]) > 1e-6;
         a.commanded = v;
         a.measured = v;  // GRBL reports its step count: there is no separate measurement
-        a.homed = established(i) && st != grbl::MachineState::Alarm;
-        a.homing = st == grbl::MachineState::Home;
-        a.moving = active && (changed || (m_motion.axes >> i) & 1u || isJogging(i) || st == grbl::MachineState::Home);
-        a.jogging = st == grbl::MachineState::Jog && (changed || isJogging(i));
+        a.homed = established(i) && st != dev::grbl::MachineState::Alarm;
+        a.homing = st == dev::grbl::MachineState::Home;
+        a.moving = active && (changed || (m_motion.axes >> i) & 1u || isJogging(i) || st == dev::grbl::MachineState::Home);
+        a.jogging = st == dev::grbl::MachineState::Jog && (changed || isJogging(i));
         a.limitSwitch = g >= 0 && g < static_cast<int>(letters.size()) && r.pinTriggered(letters[static_cast<std::size_t>(g)]);
         a.homeSwitch = false;  // GRBL has one limit pin per axis: it cannot tell home from limit
-        a.fault = st == grbl::MachineState::Alarm;
+        a.fault = st == dev::grbl::MachineState::Alarm;
     }
     if (m_state == LinkState::Identified)
         setState(LinkState::Ready);
@@ -175,7 +175,7 @@ void GrblClient::onStatusReport(const grbl::StatusReport& r)
 
     // A stop waits for the hold to reach rest, then flushes the queue with a reset.
     if (m_stop.active && !m_stop.resetSent && askedUs >= m_stop.askedUs
-        && ((st == grbl::MachineState::Hold && r.subState == 0) || st == grbl::MachineState::Idle)) {
+        && ((st == dev::grbl::MachineState::Hold && r.subState == 0) || st == dev::grbl::MachineState::Idle)) {
         m_stop.resetSent = true;
         softReset(true);
     }
@@ -184,9 +184,9 @@ void GrblClient::onStatusReport(const grbl::StatusReport& r)
         const quint32 homed = std::exchange(m_motion.homedAxes, 0u);
         for (int i = 0; i < m_status.axes.size(); ++i)
             if ((homed >> i) & 1u)
-                emitEvent(proto::EventKind::HomeDone, i, m_status.axes[i].commanded);
+                emitEvent(dev::proto::EventKind::HomeDone, i, m_status.axes[i].commanded);
     }
-    if (m_jogs.cancelling && m_jogs.lines.open == 0 && askedUs > m_jogs.cancelSentUs && st != grbl::MachineState::Jog) {
+    if (m_jogs.cancelling && m_jogs.lines.open == 0 && askedUs > m_jogs.cancelSentUs && st != dev::grbl::MachineState::Jog) {
         m_jogs.cancelling = false;
         updateJog();  // a jog asked for while the cancel ran starts now
     }
@@ -211,18 +211,18 @@ void GrblClient::onStatusReport(const grbl::StatusReport& r)
     }
 }
 
-void GrblClient::settleMotion(quint64 askedUs, grbl::MachineState st)
+void GrblClient::settleMotion(quint64 askedUs, dev::grbl::MachineState st)
 {
     // GRBL says nothing when a move ends. A report asked for after the last line of the move was
     // acknowledged (so GRBL had started the cycle: it auto-starts once its serial buffer is empty)
     // that shows Idle means every axis of it has arrived.
-    if (!m_motion.axes || m_motion.linesOpen > 0 || m_stop.active || askedUs <= m_motion.ackUs || st != grbl::MachineState::Idle)
+    if (!m_motion.axes || m_motion.linesOpen > 0 || m_stop.active || askedUs <= m_motion.ackUs || st != dev::grbl::MachineState::Idle)
         return;
     const quint32 axes = m_motion.axes;
     m_motion.axes = 0;
     for (int i = 0; i < m_status.axes.size(); ++i)
         if ((axes >> i) & 1u)
-            emitEvent(proto::EventKind::MotionDone, i, m_status.axes[i].commanded);
+            emitEvent(dev::proto::EventKind::MotionDone, i, m_status.axes[i].commanded);
 }
 
 void GrblClient::onAlarm(int code)
@@ -230,19 +230,19 @@ void GrblClient::onAlarm(int code)
     m_machine.alarm = code;
     // Positions survive a soft-limit alarm and a failed probe; every other alarm (a hard limit, a
     // reset in motion, a failed homing, grblHAL's E-stop) leaves them untrusted.
-    if (code != grbl::alarm::kSoftLimit && code != grbl::alarm::kProbeFailInitial && code != grbl::alarm::kProbeFailContact)
+    if (code != dev::grbl::alarm::kSoftLimit && code != dev::grbl::alarm::kProbeFailInitial && code != dev::grbl::alarm::kProbeFailContact)
         loseEstablished();
-    if (code == grbl::alarm::kHardLimit || code == grbl::alarm::kSoftLimit)
+    if (code == dev::grbl::alarm::kHardLimit || code == dev::grbl::alarm::kSoftLimit)
         m_machine.critical = true;
     m_machine.homing = false;
-    proto::EventKind kind = proto::EventKind::Fault;
-    if (code == grbl::alarm::kHardLimit || code == grbl::alarm::kSoftLimit)
-        kind = proto::EventKind::LimitHit;
-    else if (code == grbl::alarm::kGrblHalEStop)
-        kind = proto::EventKind::EStop;
+    dev::proto::EventKind kind = dev::proto::EventKind::Fault;
+    if (code == dev::grbl::alarm::kHardLimit || code == dev::grbl::alarm::kSoftLimit)
+        kind = dev::proto::EventKind::LimitHit;
+    else if (code == dev::grbl::alarm::kGrblHalEStop)
+        kind = dev::proto::EventKind::EStop;
     // A hard limit names its axis by the pin that tripped, when the last report showed one.
     int axis = -1;
-    if (kind == proto::EventKind::LimitHit)
+    if (kind == dev::proto::EventKind::LimitHit)
         for (int i = 0; i < m_status.axes.size() && axis < 0; ++i)
             if (m_status.axes[i].limitSwitch)
                 axis = i;
@@ -251,25 +251,25 @@ void GrblClient::onAlarm(int code)
     m_motion.axes = 0;
     m_jogs.forget();
     // The event's text is what the controller said; its detail, grbl.alarm{code}, is worded with the meaning.
-    emitEvent(kind, axis, axis >= 0 ? m_status.axes[axis].commanded : 0, grbl::alarmMessage(code), QStringLiteral("ALARM:%1").arg(code));
+    emitEvent(kind, axis, axis >= 0 ? m_status.axes[axis].commanded : 0, dev::grbl::alarmMessage(code), QStringLiteral("ALARM:%1").arg(code));
     emit alarmRaised(code);
     sendQuery();
 }
 
-void GrblClient::subscribe(const QVector<proto::ChannelRef>& channels, int rateHz, SubscribeCallback done)
+void GrblClient::subscribe(const QVector<dev::proto::ChannelRef>& channels, int rateHz, SubscribeCallback done)
 {
     // Telemetry is the status reports: one sample each, at the poll rate at most.
-    proto::SubscribeReply reply;
+    dev::proto::SubscribeReply reply;
     if (m_phase != Phase::Ready) {
         RequestError e;
         e.kind = RequestError::Kind::LinkDown;
-        e.message = msg::make("request.telemetry_refused", {msg::nested("cause", msg::make("request.instrument_not_connected"))});
+        e.message = motion::msg::make("request.telemetry_refused", {motion::msg::nested("cause", motion::msg::make("request.instrument_not_connected"))});
         if (done)
             done(e, reply);
         return;
     }
     m_rateHz = rateHz <= 0 ? 0 : static_cast<int>(std::lround(std::min<double>(rateHz, m_profile.statusPollHz)));
-    m_channels = m_rateHz ? channels : QVector<proto::ChannelRef>{};
+    m_channels = m_rateHz ? channels : QVector<dev::proto::ChannelRef>{};
     reply.rateHz = static_cast<std::uint32_t>(m_rateHz);
     reply.samplesPerBatch = 1;
     if (done)
@@ -280,7 +280,7 @@ void GrblClient::emitTelemetry(const std::vector<double>& workMm)
 {
     if (!m_rateHz || m_channels.isEmpty())
         return;
-    proto::TelemetryBatch b;
+    dev::proto::TelemetryBatch b;
     b.firstSampleIndex = m_sampleIndex++;
     b.firstSampleTimeUs = m_status.deviceTimeUs;
     b.periodUs = static_cast<std::uint32_t>(std::lround(1e6 / m_profile.statusPollHz));
@@ -293,12 +293,12 @@ void GrblClient::emitTelemetry(const std::vector<double>& workMm)
         const double k = m_identity.axes[i].wireScale();
         double v = 0;
         switch (c.kind) {
-        case proto::ChannelKind::Commanded:
-        case proto::ChannelKind::Measured: v = instrumentValue(i, workMm) * k; break;
-        case proto::ChannelKind::Velocity:
+        case dev::proto::ChannelKind::Commanded:
+        case dev::proto::ChannelKind::Measured: v = instrumentValue(i, workMm) * k; break;
+        case dev::proto::ChannelKind::Velocity:
             v = dtS > 0 ? (instrumentValue(i, workMm) - instrumentValue(i, m_reports.lastWorkMm)) / dtS * k : 0;
             break;
-        case proto::ChannelKind::Switches: v = m_status.axes[i].limitSwitch ? 2 : 0; break;
+        case dev::proto::ChannelKind::Switches: v = m_status.axes[i].limitSwitch ? 2 : 0; break;
         default: continue;  // no following error, controller output or contour on GRBL: left out, not faked
         }
         b.channels.push_back(c);

@@ -15,11 +15,11 @@ std::uint64_t GrblClient::queueLine(const std::string& line, LineDone done, bool
 {
     if (!m_transport || !m_transport->isOpen() || m_phase == Phase::Closed)
         return 0;
-    if (line.empty() || line.size() > grbl::kMaxLineChars || line.size() + 1 > m_lines.streamer.capacityBytes())
+    if (line.empty() || line.size() > dev::grbl::kMaxLineChars || line.size() + 1 > m_lines.streamer.capacityBytes())
         return 0;
     for (const char c : line) {
         const auto b = static_cast<std::uint8_t>(c);
-        if (b < 0x20 || grbl::rt::isRealtime(b))
+        if (b < 0x20 || dev::grbl::rt::isRealtime(b))
             return 0;
     }
     // Motion lines rely on the modal state this host set (G54 work coordinates, XY plane, feed
@@ -28,7 +28,7 @@ std::uint64_t GrblClient::queueLine(const std::string& line, LineDone done, bool
         m_lines.modalReady = true;
         const std::uint64_t tag = m_nextTag++;
         m_lines.backlog.emplace_back("G54 G17 G94", tag);
-        m_lines.pending[tag] = PendingLine{[this](const std::optional<grbl::Streamer::Ack>& a) {
+        m_lines.pending[tag] = PendingLine{[this](const std::optional<dev::grbl::Streamer::Ack>& a) {
                                          if (!a || !a->ok)
                                              m_lines.modalReady = false;
                                      },
@@ -83,13 +83,13 @@ void GrblClient::softReset(bool expected)
         return;
     // Realtime bytes still waiting (a feed hold) go first, then the reset itself.
     std::string out = m_lines.streamer.takeOutput();
-    out.push_back(static_cast<char>(grbl::rt::kSoftReset));
+    out.push_back(static_cast<char>(dev::grbl::rt::kSoftReset));
     m_transport->write(QByteArray(out.data(), static_cast<qsizetype>(out.size())));
     // GRBL forgets every line it holds, and half a line it was sending is garbage now.
     if (expected)
         ++m_wire.expectedBanners;
     m_wire.reader.clear();
-    LostLines lost = dropLines(msg::make("grbl.reset_flushed"));
+    LostLines lost = dropLines(motion::msg::make("grbl.reset_flushed"));
     answerLost(lost);
 }
 
@@ -100,14 +100,14 @@ RequestError GrblClient::errorOf(int code, const std::string& line, const std::s
     RequestError e;
     e.kind = RequestError::Kind::Device;
     switch (code) {
-    case grbl::err::kTravelExceeded: e.code = proto::ErrorCode::SoftLimit; break;
-    case grbl::err::kIdleError:
-    case grbl::err::kSystemGcLock: e.code = proto::ErrorCode::Busy; break;
-    case grbl::err::kHomingDisabled: e.code = proto::ErrorCode::UnknownCommand; break;
-    default: e.code = proto::ErrorCode::BadPayload; break;
+    case dev::grbl::err::kTravelExceeded: e.code = dev::proto::ErrorCode::SoftLimit; break;
+    case dev::grbl::err::kIdleError:
+    case dev::grbl::err::kSystemGcLock: e.code = dev::proto::ErrorCode::Busy; break;
+    case dev::grbl::err::kHomingDisabled: e.code = dev::proto::ErrorCode::UnknownCommand; break;
+    default: e.code = dev::proto::ErrorCode::BadPayload; break;
     }
-    e.message = grbl::errorMessage(code, line);
-    e.message.args.push_back(msg::term("request", request));
+    e.message = dev::grbl::errorMessage(code, line);
+    e.message.args.push_back(motion::msg::term("request", request));
     return e;
 }
 

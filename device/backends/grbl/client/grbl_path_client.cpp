@@ -12,7 +12,7 @@ using motion::path::Vec2;
 
 namespace {
 
-std::optional<RequestError> pathError(proto::ErrorCode code, double value, msg::Message message)
+std::optional<RequestError> pathError(dev::proto::ErrorCode code, double value, motion::msg::Message message)
 {
     RequestError e;
     e.kind = RequestError::Kind::Device;
@@ -31,7 +31,7 @@ GrblPathClient::GrblPathClient(GrblClient* client, QObject* parent) : PathClient
     connect(client, &GrblClient::alarmRaised, this, &GrblPathClient::onAlarm);
     connect(client, &Instrument::stateChanged, this, [this](LinkState s) {
         if (s != LinkState::Ready && active())
-            abortWith(proto::PathReason::NewSession);
+            abortWith(dev::proto::PathReason::NewSession);
     });
 }
 
@@ -39,7 +39,7 @@ bool GrblPathClient::available() const { return m_client && m_client->can(Capabi
 
 bool GrblPathClient::active() const
 {
-    using S = proto::PathState;
+    using S = dev::proto::PathState;
     return m_state == S::Filling || m_state == S::Running || m_state == S::Starved || m_state == S::Holding || m_state == S::Held;
 }
 
@@ -85,11 +85,11 @@ PathQueueState GrblPathClient::snapshot() const
 void GrblPathClient::begin(quint32 firstIndex, Reply done)
 {
     if (!available())
-        return done(pathError(proto::ErrorCode::PathState, 0, msg::make("request.instrument_not_connected")), snapshot());
+        return done(pathError(dev::proto::ErrorCode::PathState, 0, motion::msg::make("request.instrument_not_connected")), snapshot());
     if (active())
-        return done(pathError(proto::ErrorCode::PathState, m_next, msg::make("grbl.path.already_running")), snapshot());
-    m_state = proto::PathState::Filling;
-    m_reason = proto::PathReason::None;
+        return done(pathError(dev::proto::ErrorCode::PathState, m_next, motion::msg::make("grbl.path.already_running")), snapshot());
+    m_state = dev::proto::PathState::Filling;
+    m_reason = dev::proto::PathReason::None;
     m_segments.clear();
     m_first = m_next = m_executing = firstIndex;
     m_haveLast = false;
@@ -104,33 +104,33 @@ void GrblPathClient::begin(quint32 firstIndex, Reply done)
 void GrblPathClient::append(quint32 firstIndex, const std::vector<Segment>& segments, bool start, bool last, Reply done)
 {
     if (!active() || !m_client)
-        return done(pathError(proto::ErrorCode::PathState, m_next, msg::make("grbl.path.not_begun")), snapshot());
+        return done(pathError(dev::proto::ErrorCode::PathState, m_next, motion::msg::make("grbl.path.not_begun")), snapshot());
     if (firstIndex != m_next)
-        return done(pathError(proto::ErrorCode::PathSequence, m_next,
-                              msg::make("grbl.path.out_of_sequence", {msg::integer("expected", m_next, msg::Unit::None),
-                                                                      msg::integer("sent", firstIndex, msg::Unit::None)})),
+        return done(pathError(dev::proto::ErrorCode::PathSequence, m_next,
+                              motion::msg::make("grbl.path.out_of_sequence", {motion::msg::integer("expected", m_next, motion::msg::Unit::None),
+                                                                      motion::msg::integer("sent", firstIndex, motion::msg::Unit::None)})),
                     snapshot());
     const int free = kCapacity - static_cast<int>(m_next - m_executing);
     if (static_cast<int>(segments.size()) > free)
-        return done(pathError(proto::ErrorCode::PathQueueFull, free, msg::make("grbl.path.window_full", {msg::integer("free", free)})), snapshot());
+        return done(pathError(dev::proto::ErrorCode::PathQueueFull, free, motion::msg::make("grbl.path.window_full", {motion::msg::integer("free", free)})), snapshot());
     // Paths need the instrument's X and Y on GRBL's X and Y (its XY plane, G17): capabilities()
     // says so, and available() is false otherwise.
     std::vector<std::string> lines;
     for (std::size_t k = 0; k < segments.size(); ++k) {
         const Segment& s = segments[k];
         if (s.zMm)
-            return done(pathError(proto::ErrorCode::PathGeometry, firstIndex + k,
-                                  msg::make("grbl.path.z_in_path", {msg::integer("segment", static_cast<long long>(firstIndex + k), msg::Unit::None)})),
+            return done(pathError(dev::proto::ErrorCode::PathGeometry, firstIndex + k,
+                                  motion::msg::make("grbl.path.z_in_path", {motion::msg::integer("segment", static_cast<long long>(firstIndex + k), motion::msg::Unit::None)})),
                         snapshot());
         const double feed = s.feedMmS * 60;
-        const grbl::GcodeLine l = s.isArc()
-                                      ? grbl::arcLine(s.ccw() ? grbl::ArcDirection::CounterClockwise : grbl::ArcDirection::Clockwise, s.end.x,
+        const dev::grbl::GcodeLine l = s.isArc()
+                                      ? dev::grbl::arcLine(s.ccw() ? dev::grbl::ArcDirection::CounterClockwise : dev::grbl::ArcDirection::Clockwise, s.end.x,
                                                       s.end.y, s.center.x - s.start.x, s.center.y - s.start.y, feed)
-                                      : grbl::moveLine(grbl::Motion::Feed, false, {{'X', s.end.x}, {'Y', s.end.y}}, feed);
+                                      : dev::grbl::moveLine(dev::grbl::Motion::Feed, false, {{'X', s.end.x}, {'Y', s.end.y}}, feed);
         if (!l.ok()) {
-            msg::Message problem = l.problem;  // grbl.gcode.*, with the segment it was for
-            problem.args.push_back(msg::integer("segment", static_cast<long long>(firstIndex + k), msg::Unit::None));
-            return done(pathError(proto::ErrorCode::PathGeometry, firstIndex + k, std::move(problem)), snapshot());
+            motion::msg::Message problem = l.problem;  // grbl.gcode.*, with the segment it was for
+            problem.args.push_back(motion::msg::integer("segment", static_cast<long long>(firstIndex + k), motion::msg::Unit::None));
+            return done(pathError(dev::proto::ErrorCode::PathGeometry, firstIndex + k, std::move(problem)), snapshot());
         }
         lines.push_back(l.text);
     }
@@ -138,7 +138,7 @@ void GrblPathClient::append(quint32 firstIndex, const std::vector<Segment>& segm
     for (std::size_t k = 0; k < lines.size(); ++k) {
         const quint32 index = firstIndex + static_cast<quint32>(k);
         ++m_linesOpen;
-        const bool queued = m_client->sendLine(lines[k], [self, index](const std::optional<grbl::Streamer::Ack>& a) {
+        const bool queued = m_client->sendLine(lines[k], [self, index](const std::optional<dev::grbl::Streamer::Ack>& a) {
             if (!self || !self->m_client)
                 return;
             self->m_linesOpen = std::max(0, self->m_linesOpen - 1);
@@ -146,16 +146,16 @@ void GrblPathClient::append(quint32 firstIndex, const std::vector<Segment>& segm
             if (!self->active())
                 return;
             if (!a) {
-                self->abortWith(proto::PathReason::NewSession);
+                self->abortWith(dev::proto::PathReason::NewSession);
                 return;
             }
             if (!a->ok) {
                 // An error mid-job stops the job: what GRBL already holds is flushed, and the line is named.
                 RequestError e = GrblClient::errorOf(a->errorCode, a->line, "request.path_segments");
-                e.message.args.push_back(msg::integer("segment", index, msg::Unit::None));
+                e.message.args.push_back(motion::msg::integer("segment", index, motion::msg::Unit::None));
                 e.value = index;
                 emit self->m_client->requestFailed(e);
-                self->abortWith(proto::PathReason::Stop, QStringLiteral("error:%1").arg(a->errorCode));
+                self->abortWith(dev::proto::PathReason::Stop, QStringLiteral("error:%1").arg(a->errorCode));
                 self->m_client->holdThenFlush({});
                 return;
             }
@@ -167,8 +167,8 @@ void GrblPathClient::append(quint32 firstIndex, const std::vector<Segment>& segm
         });
         if (!queued) {
             --m_linesOpen;
-            abortWith(proto::PathReason::NewSession);
-            return done(pathError(proto::ErrorCode::PathState, index, msg::make("request.instrument_not_connected")), snapshot());
+            abortWith(dev::proto::PathReason::NewSession);
+            return done(pathError(dev::proto::ErrorCode::PathState, index, motion::msg::make("request.instrument_not_connected")), snapshot());
         }
         m_segments[index] = segments[k];
     }
@@ -178,8 +178,8 @@ void GrblPathClient::append(quint32 firstIndex, const std::vector<Segment>& segm
         m_lastIndex = m_next - 1;
     }
     m_underrunSaid = false;
-    if (start && (m_state == proto::PathState::Filling || m_state == proto::PathState::Starved))
-        m_state = proto::PathState::Running;
+    if (start && (m_state == dev::proto::PathState::Filling || m_state == dev::proto::PathState::Starved))
+        m_state = dev::proto::PathState::Running;
     done(std::nullopt, snapshot());
 }
 
@@ -187,11 +187,11 @@ void GrblPathClient::queryStatus(Reply done) { done(std::nullopt, snapshot()); }
 
 void GrblPathClient::hold(Callback done)
 {
-    if (active() && m_state != proto::PathState::Held && m_client) {
+    if (active() && m_state != dev::proto::PathState::Held && m_client) {
         m_holdAsked = true;
-        m_state = proto::PathState::Holding;
-        m_reason = proto::PathReason::HostHold;
-        m_client->sendRealtime(grbl::rt::kFeedHold);
+        m_state = dev::proto::PathState::Holding;
+        m_reason = dev::proto::PathReason::HostHold;
+        m_client->sendRealtime(dev::grbl::rt::kFeedHold);
     }
     if (done)
         done(std::nullopt);
@@ -199,10 +199,10 @@ void GrblPathClient::hold(Callback done)
 
 void GrblPathClient::resume(Callback done)
 {
-    if ((m_state == proto::PathState::Holding || m_state == proto::PathState::Held) && m_client) {
-        m_client->sendRealtime(grbl::rt::kCycleStart);
-        m_state = proto::PathState::Running;
-        m_reason = proto::PathReason::None;
+    if ((m_state == dev::proto::PathState::Holding || m_state == dev::proto::PathState::Held) && m_client) {
+        m_client->sendRealtime(dev::grbl::rt::kCycleStart);
+        m_state = dev::proto::PathState::Running;
+        m_reason = dev::proto::PathReason::None;
         m_holdAsked = false;
     }
     if (done)
@@ -220,7 +220,7 @@ void GrblPathClient::clear(Callback done)
     const QPointer<GrblPathClient> self(this);
     m_client->holdThenFlush([self, done](const std::optional<RequestError>& e) {
         if (self && self->active())
-            self->abortWith(proto::PathReason::Cleared);
+            self->abortWith(dev::proto::PathReason::Cleared);
         if (done)
             done(e);
     });
@@ -241,7 +241,7 @@ void GrblPathClient::onReport(quint64 askedUs)
         return;
     const auto& work = m_client->workPositionMm();
     const Vec2 p{m_client->instrumentValue(0, work), m_client->instrumentValue(1, work)};
-    const grbl::MachineState st = m_client->machineState();
+    const dev::grbl::MachineState st = m_client->machineState();
     m_speedMmS = m_client->feedMmMin().value_or(0) / 60;
     // Which sent segment the machine is on: the first (from the one executing) that the position
     // lies inside. GRBL follows the G-code's geometry, so a position is on its segment.
@@ -261,28 +261,28 @@ void GrblPathClient::onReport(quint64 askedUs)
             atEnd = true;
         }
     }
-    const bool settled = m_linesOpen == 0 && askedUs > m_lastAckUs && st == grbl::MachineState::Idle;
-    if (m_state == proto::PathState::Holding && st == grbl::MachineState::Hold && m_client->status().axes.size() >= 2
+    const bool settled = m_linesOpen == 0 && askedUs > m_lastAckUs && st == dev::grbl::MachineState::Idle;
+    if (m_state == dev::proto::PathState::Holding && st == dev::grbl::MachineState::Hold && m_client->status().axes.size() >= 2
         && !m_client->status().axes[0].moving && !m_client->status().axes[1].moving) {
-        m_state = proto::PathState::Held;
+        m_state = dev::proto::PathState::Held;
         emit held(m_executing, QString());
         return;
     }
-    if (!settled || m_state == proto::PathState::Holding || m_state == proto::PathState::Held)
+    if (!settled || m_state == dev::proto::PathState::Holding || m_state == dev::proto::PathState::Held)
         return;
     if (m_haveLast && m_executing >= m_lastIndex && atEnd) {
         advanceTo(m_lastIndex);
         m_segments.clear();
         emit segmentDone(m_lastIndex);
         m_executing = m_lastIndex + 1;
-        m_state = proto::PathState::Done;
+        m_state = dev::proto::PathState::Done;
         emit finished(m_lastIndex, m_client->nowUs());
         return;
     }
     if (atEnd && !m_haveLast && !m_underrunSaid) {
         // GRBL plans to rest at the end of what it holds: it ran dry before the path's end.
         m_underrunSaid = true;
-        m_state = proto::PathState::Starved;
+        m_state = dev::proto::PathState::Starved;
         emit underrun(m_next - 1);
     }
 }
@@ -292,22 +292,22 @@ void GrblPathClient::onReset(bool expected)
     if (!active() || m_clearAsked)
         return;
     const bool estop = m_client && m_client->status().estop;
-    abortWith(estop ? proto::PathReason::EStop : expected ? proto::PathReason::Stop : proto::PathReason::NewSession);
+    abortWith(estop ? dev::proto::PathReason::EStop : expected ? dev::proto::PathReason::Stop : dev::proto::PathReason::NewSession);
 }
 
 void GrblPathClient::onAlarm(int code)
 {
     if (!active())
         return;
-    abortWith(code == grbl::alarm::kHardLimit || code == grbl::alarm::kSoftLimit ? proto::PathReason::LimitSwitch : proto::PathReason::Stop,
+    abortWith(code == dev::grbl::alarm::kHardLimit || code == dev::grbl::alarm::kSoftLimit ? dev::proto::PathReason::LimitSwitch : dev::proto::PathReason::Stop,
               QStringLiteral("ALARM:%1").arg(code));
 }
 
-void GrblPathClient::abortWith(proto::PathReason reason, const QString& controllerSaid)
+void GrblPathClient::abortWith(dev::proto::PathReason reason, const QString& controllerSaid)
 {
     if (!active())
         return;
-    m_state = proto::PathState::Aborted;
+    m_state = dev::proto::PathState::Aborted;
     m_reason = reason;
     m_segments.clear();
     emit aborted(m_executing, controllerSaid);

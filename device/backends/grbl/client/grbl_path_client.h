@@ -48,12 +48,12 @@ private:
     void onAlarm(int code);
     /// Why is the reason (snapshot().reason, a path.reason.* term); `controllerSaid` what the
     /// controller sent, where it caused the abort ("ALARM:1", "error:15"), carried by aborted().
-    void abortWith(proto::PathReason reason, const QString& controllerSaid = {});
+    void abortWith(dev::proto::PathReason reason, const QString& controllerSaid = {});
     void advanceTo(quint32 index);
 
     QPointer<GrblClient> m_client;
-    proto::PathState m_state = proto::PathState::Idle;
-    proto::PathReason m_reason = proto::PathReason::None;
+    dev::proto::PathState m_state = dev::proto::PathState::Idle;
+    dev::proto::PathReason m_reason = dev::proto::PathReason::None;
     std::map<quint32, motion::path::Segment> m_segments;  ///< sent, not yet completed
     quint32 m_first = 0, m_next = 0, m_executing = 0;
     bool m_haveLast = false;

@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <cstdio>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
 using motion::metrology::CompensationModel;
 using motion::metrology::TablePoint;
@@ -123,7 +123,7 @@ LinuxcncRead linuxcncFromText(std::string_view text, std::string_view fileName, 
         }
         if (fields.size() != 3) {
             out.problems.push_back({file, line, 1, "",
-                                    msg::make("compensation.linuxcnc.not_a_triplet", {msg::integer("count", static_cast<long long>(fields.size()))})});
+                                    motion::msg::make("compensation.linuxcnc.not_a_triplet", {motion::msg::integer("count", static_cast<long long>(fields.size()))})});
             continue;
         }
         double v[3] = {0, 0, 0};
@@ -134,7 +134,7 @@ LinuxcncRead linuxcncFromText(std::string_view text, std::string_view fileName, 
             const auto n = parseNumber(fields[static_cast<std::size_t>(k)]);
             if (!n || !std::isfinite(*n)) {
                 out.problems.push_back({file, line, static_cast<int>(column), "",
-                                        msg::make("accuracy.csv.not_a_number", {msg::verbatim("text", fields[static_cast<std::size_t>(k)])})});
+                                        motion::msg::make("accuracy.csv.not_a_number", {motion::msg::verbatim("text", fields[static_cast<std::size_t>(k)])})});
                 good = false;
                 break;
             }
@@ -152,7 +152,7 @@ LinuxcncRead linuxcncFromText(std::string_view text, std::string_view fileName, 
     if (hasErrors(out.problems))
         return out;
     // The table's own checks, placed on the line of the point they name.
-    for (const msg::Problem& p : motion::metrology::validate(m)) {
+    for (const motion::msg::Problem& p : motion::metrology::validate(m)) {
         int at = 0;
         if (p.path.rfind("table.points[", 0) == 0) {
             const auto k = static_cast<std::size_t>(std::atoi(p.path.c_str() + 13));
@@ -165,14 +165,14 @@ LinuxcncRead linuxcncFromText(std::string_view text, std::string_view fileName, 
     return out;
 }
 
-bool saveLinuxcncCompensation(const QString& path, const CompensationModel& m, LinuxcncCompType type, msg::Message* error)
+bool saveLinuxcncCompensation(const QString& path, const CompensationModel& m, LinuxcncCompType type, motion::msg::Message* error)
 {
-    return files::writeAtomically(path, linuxcncCompensation(m, type), error);
+    return dev::files::writeAtomically(path, linuxcncCompensation(m, type), error);
 }
 
-bool saveCompensationCsv(const QString& path, const CompensationModel& m, msg::Message* error)
+bool saveCompensationCsv(const QString& path, const CompensationModel& m, motion::msg::Message* error)
 {
-    return files::writeAtomically(path, compensationCsv(m), error);
+    return dev::files::writeAtomically(path, compensationCsv(m), error);
 }
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

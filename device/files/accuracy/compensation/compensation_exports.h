@@ -26,7 +26,7 @@
 #include <string_view>
 #include <vector>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
 /// The table's own points, or 41 evenly spaced over a polynomial's valid range
 /// (fewer on a range shorter than 80 µm, to keep them 2 µm apart).
@@ -41,7 +41,7 @@ std::string linuxcncCompensation(const motion::metrology::CompensationModel& m, 
 
 struct LinuxcncRead {
     std::optional<motion::metrology::CompensationModel> model;  ///< a per-direction table
-    msg::Problems problems;
+    motion::msg::Problems problems;
 };
 /// A LinuxCNC compensation file of the given type, back to a per-direction table.
 /// Stricter than LinuxCNC: a line that is not three numbers is an error here (there
@@ -49,7 +49,7 @@ struct LinuxcncRead {
 LinuxcncRead linuxcncFromText(std::string_view text, std::string_view fileName, LinuxcncCompType type, const std::string& axis = "X");
 
 /// Written all or nothing.
-bool saveLinuxcncCompensation(const QString& path, const motion::metrology::CompensationModel& m, LinuxcncCompType type, msg::Message* error);
-bool saveCompensationCsv(const QString& path, const motion::metrology::CompensationModel& m, msg::Message* error);
+bool saveLinuxcncCompensation(const QString& path, const motion::metrology::CompensationModel& m, LinuxcncCompType type, motion::msg::Message* error);
+bool saveCompensationCsv(const QString& path, const motion::metrology::CompensationModel& m, motion::msg::Message* error);
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

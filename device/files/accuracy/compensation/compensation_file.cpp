@@ -3,10 +3,10 @@
 #include "device/files/accuracy/load_text.h"
 #include "device/files/text_file.h"
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
-using jsonio::ObjectReader;
-using jsonio::Value;
+using dev::files::json::ObjectReader;
+using dev::files::json::Value;
 using motion::metrology::CompensationModel;
 using motion::metrology::TablePoint;
 
@@ -17,7 +17,7 @@ constexpr double kCompensationAny = 1e12;
 std::string compensationToJson(const CompensationFile& c)
 {
     const CompensationModel& m = c.model;
-    Value root = jsonio::schemaObject(kCompensationSchema, kCompensationVersion);
+    Value root = dev::files::json::schemaObject(kCompensationSchema, kCompensationVersion);
     root.set("axis", m.axis);
     if (m.kind == CompensationModel::Kind::Polynomial) {
         root.set("kind", "polynomial");
@@ -61,20 +61,20 @@ std::string compensationToJson(const CompensationFile& c)
     }
     if (!c.source.empty())
         root.set("source", c.source);
-    return jsonio::write(root);
+    return dev::files::json::write(root);
 }
 
 CompensationRead compensationFromJson(std::string_view text, std::string_view fileName)
 {
     CompensationRead out;
-    const jsonio::ParseResult parsed = jsonio::parse(text);
+    const dev::files::json::ParseResult parsed = dev::files::json::parse(text);
     if (!parsed) {
         out.problems.push_back(fromParseError(parsed.error, fileName));
         return out;
     }
     const Value& root = *parsed.value;
-    jsonio::Problems p;
-    if (!jsonio::checkSchema(root, kCompensationSchema, kCompensationVersion, p)) {
+    dev::files::json::Problems p;
+    if (!dev::files::json::checkSchema(root, kCompensationSchema, kCompensationVersion, p)) {
         addJsonProblems(p, fileName, out.problems);
         return out;
     }
@@ -94,7 +94,7 @@ CompensationRead compensationFromJson(std::string_view text, std::string_view fi
                     if (k.isNumber())
                         m.polynomial.coefficientsUm.push_back(k.asNumber());
                     else
-                        p.add(k, jsonio::childPath("polynomial.coefficients_um", i), jsonio::wrongType(Value::Type::Number, k.type()));
+                        p.add(k, dev::files::json::childPath("polynomial.coefficients_um", i), dev::files::json::wrongType(Value::Type::Number, k.type()));
                 }
             if (auto v = po.number("valid_from_mm", true, -kCompensationAny, kCompensationAny))
                 m.validFromMm = *v;
@@ -109,7 +109,7 @@ CompensationRead compensationFromJson(std::string_view text, std::string_view fi
             m.perDirection = to.boolean("per_direction", false).value_or(false);
             if (const Value* list = to.get("points", Value::Type::Array, true))
                 for (std::size_t i = 0; i < list->items().size(); ++i) {
-                    ObjectReader po(list->items()[i], jsonio::childPath("table.points", i), p);
+                    ObjectReader po(list->items()[i], dev::files::json::childPath("table.points", i), p);
                     TablePoint tp;
                     const auto nominal = po.number("nominal_mm", true, -kCompensationAny, kCompensationAny);
                     std::optional<double> up, down;
@@ -162,9 +162,9 @@ CompensationRead loadCompensationFile(const QString& path)
     return text ? compensationFromJson(*text, name) : out;
 }
 
-bool saveCompensationFile(const QString& path, const CompensationFile& c, msg::Message* error)
+bool saveCompensationFile(const QString& path, const CompensationFile& c, motion::msg::Message* error)
 {
-    return files::writeAtomically(path, compensationToJson(c), error);
+    return dev::files::writeAtomically(path, compensationToJson(c), error);
 }
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy

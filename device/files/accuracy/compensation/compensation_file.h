@@ -15,7 +15,7 @@
 #include <string>
 #include <string_view>
 
-namespace accuracyfiles {
+namespace dev::files::accuracy {
 
 constexpr const char* kCompensationSchema = "benchpilot.compensation";
 constexpr int kCompensationVersion = 1;
@@ -40,12 +40,12 @@ std::string compensationToJson(const CompensationFile& c);
 
 struct CompensationRead {
     std::optional<CompensationFile> compensation;
-    msg::Problems problems;
+    motion::msg::Problems problems;
 };
 /// Plain C++: what the fuzzer drives.
 CompensationRead compensationFromJson(std::string_view text, std::string_view fileName);
 
 CompensationRead loadCompensationFile(const QString& path);
-bool saveCompensationFile(const QString& path, const CompensationFile& c, msg::Message* error);
+bool saveCompensationFile(const QString& path, const CompensationFile& c, motion::msg::Message* error);
 
-} // namespace accuracyfiles
+} // namespace dev::files::accuracy
