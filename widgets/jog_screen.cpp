@@ -20,6 +20,7 @@
 #include <QTextEdit>
 #include <QPushButton>
 #include <QSlider>
+#include <QSplitter>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -367,6 +368,22 @@ static bool typingFocus()
     if (auto* t = qobject_cast<QTextEdit*>(f))
         return !t->isReadOnly();
     return qobject_cast<QLineEdit*>(f) || qobject_cast<QAbstractSpinBox*>(f) || listFocus();
+}
+
+void JogScreen::addPanel(QWidget* panel)
+{
+    // Beside the live strip, not under it: on a 768-pixel display the rows under the axes
+    // are all the height there is, and a picture a few rows high is no picture.
+    auto* top = static_cast<QVBoxLayout*>(layout());
+    const int at = top->indexOf(m_strip);
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    split->setChildrenCollapsible(false);
+    top->removeWidget(m_strip);
+    split->addWidget(m_strip);
+    split->addWidget(panel);
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 1);
+    top->insertWidget(at, split, 6);
 }
 
 bool JogScreen::typing() const { return isVisible() && typingFocus(); }

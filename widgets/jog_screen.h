@@ -44,6 +44,8 @@ public:
     /// `mine` says so (the window's screen shown leaves the arrow keys to jogging and is
     /// about this instrument); a text field being edited keeps them all the same.
     void setKeysFromOtherScreens(std::function<bool()> mine) { m_keysElsewhere = std::move(mine); }
+    /// Puts `panel` (the stage's camera) under the axes, taking the room left.
+    void addPanel(QWidget* panel);
     /// Ends every hold of a key or button (the window changed screens under a held key).
     void endHolds() { endAllHolds(); }
 

@@ -27,6 +27,9 @@
 #include "widgets/tuning/tuning_screen.h"
 #include "widgets/scan/scan_screen.h"
 #include "calibration_wiring.h"
+#include "camera_wiring.h"
+#include "widgets/camera/camera_panel.h"
+#include "widgets/camera/camera_session.h"
 #include "widgets/calibration/calibration_screen.h"
 #include "widgets/wording/wording.h"
 
@@ -167,6 +170,15 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     v->addLayout(body, 1);
     setCentralWidget(central);
 
+    m_camera = new ui::CameraSession(this);
+    m_camera->setFactory(m_options.cameraFactory ? m_options.cameraFactory : ui::CameraSession::Factory([this](const QString& source, QString* error) {
+        return makeCamera(source, m_instruments[1].session, error);
+    }));
+    m_camera->setLister(&listCameras);
+    connect(m_camera, &ui::CameraSession::problem, this, &MainWindow::warn);
+    const auto chooseSnapFile = [this](const QString& title, const QString& filter) {
+        return QFileDialog::getSaveFileName(this, title, QStandardPaths::writableLocation(QStandardPaths::PicturesLocation), filter);
+    };
     m_jogTabs = new QTabWidget;
     for (int i = 0; i < kInstrumentCount; ++i) {
         auto* jog = m_instruments[i].jog = new ui::JogScreen(m_api->screenInstrument(i));
@@ -176,6 +188,14 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
         }
         connect(jog, &ui::JogScreen::problem, this, &MainWindow::warn);
         jog->setTelemetry(m_hub, i);
+        if (i == 1) {  // the stage is where the microscope's camera looks
+            m_jogCamera = new ui::CameraPanel(m_camera, m_api->screenInstrument(i));
+            m_jogCamera->setObjectName(QStringLiteral("jogCamera"));
+            m_jogCamera->setFileChooser(chooseSnapFile);
+            connect(m_jogCamera, &ui::CameraPanel::problem, this, &MainWindow::warn);
+            connect(m_jogCamera, &ui::CameraPanel::notice, this, &MainWindow::inform);
+            jog->addPanel(m_jogCamera);
+        }
         m_jogTabs->addTab(jog, m_instruments[i].session->name());
     }
     connect(m_jogTabs, &QTabWidget::currentChanged, this, [this](int i) { m_instruments[i].jog->setFocus(); });
@@ -235,6 +255,8 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
         m_scan->setConfirm([this](const QString& q) { return confirm(q); });
         m_scan->setConfirmLongMove([this](const QString& q) { return m_longMoves->ask(q); });
     }
+    m_scan->setCameraSession(m_camera);
+    m_scan->cameraPanel()->setFileChooser(chooseSnapFile);
     connect(m_scan, &ui::ScanScreen::problem, this, &MainWindow::warn);
     connect(m_scan, &ui::ScanScreen::notice, this, &MainWindow::inform);
     addScreen(QStringLiteral("scan"), tr("Scan"), m_scan);
@@ -721,6 +743,11 @@ void MainWindow::loadSettings()
         m_log->addNote(tr("Scan"), tr("settings"), tr("the last scan plan did not load: %1").arg(scanError), true);
     if (st.contains(QStringLiteral("scan/folder")))
         m_scan->setOutputFolder(st.value(QStringLiteral("scan/folder")).toString());
+    m_camera->setRecentSources(st.value(QStringLiteral("camera/recent")).toStringList());
+    m_camera->setSource(st.value(QStringLiteral("camera/source"), QStringLiteral("sim")).toString());
+    m_camera->setExposureMs(st.value(QStringLiteral("camera/exposure_ms"), 10.0).toDouble());
+    m_camera->setAutoContrast(st.value(QStringLiteral("camera/auto_contrast"), true).toBool());
+    m_scan->setTakesImages(st.value(QStringLiteral("scan/take_images"), false).toBool());
     m_jogTabs->setCurrentIndex(std::clamp(st.value(QStringLiteral("window/instrument"), 0).toInt(), 0, 1));
     m_tuning->restoreState(st.value(QStringLiteral("tuning/state")).toMap());
 }
@@ -736,6 +763,11 @@ void MainWindow::saveSettings()
     m_motion->save(st);
     st.setValue(QStringLiteral("scan/plan"), m_scan->planText());
     st.setValue(QStringLiteral("scan/folder"), m_scan->outputFolder());
+    st.setValue(QStringLiteral("scan/take_images"), m_scan->takesImages());
+    st.setValue(QStringLiteral("camera/source"), m_camera->source());
+    st.setValue(QStringLiteral("camera/recent"), m_camera->recentSources());
+    st.setValue(QStringLiteral("camera/exposure_ms"), m_camera->exposureMs());
+    st.setValue(QStringLiteral("camera/auto_contrast"), m_camera->autoContrast());
     for (int i = 0; i < kInstrumentCount; ++i) {
         const ui::ConnectionChoice c = m_instruments[i].session->choice();
         st.beginGroup(QStringLiteral("connection/%1").arg(QLatin1String(kSettingsKeys[i])));

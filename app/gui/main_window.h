@@ -2,12 +2,14 @@
 // The composition root's window: both instruments' connections, the screens,
 // E-stop on every screen, banner, event log and status bar, and the scripting API.
 #include "api_wiring.h"
+#include "device/camera/camera.h"
 #include "widgets/connection_bar.h"
 
 #include <QMainWindow>
 
 #include <array>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -23,6 +25,8 @@ class TelemetryHub;
 }
 
 namespace ui {
+class CameraPanel;
+class CameraSession;
 class EventLog;
 class JogScreen;
 class MessageBanner;
@@ -59,6 +63,8 @@ struct MainWindowOptions {
     /// The program's translators (main.cpp owns them); the Language menu switches
     /// them. nullptr: the window has no Language menu (tests that do not switch).
     ui::words::Translators* translators = nullptr;
+    /// Makes the GUI's camera from a source string; unset: camera_wiring.h's. Tests give a fake.
+    std::function<std::unique_ptr<dev::camera::Camera>(const QString& source, QString* error)> cameraFactory;
 };
 
 class MainWindow : public QMainWindow {
@@ -80,6 +86,9 @@ public:
     MotionScreens* motionScreens() { return m_motion; }
     ui::PlatesScreen* platesScreen() { return m_plates; }
     ui::ScanScreen* scanScreen() { return m_scan; }
+    /// The camera the Scan screen and the stage's Jog screen share, and the Jog screen's panel.
+    ui::CameraSession* cameraSession() { return m_camera; }
+    ui::CameraPanel* jogCameraPanel() { return m_jogCamera; }
     ui::CalibrationScreen* calibrationScreen() { return m_calibration; }
     dev::tele::TelemetryHub* telemetry() { return m_hub; }
     ui::MessageBanner* banner() { return m_banner; }
@@ -146,6 +155,8 @@ private:
     ui::TuningScreen* m_tuning;
     ui::PlatesScreen* m_plates;
     ui::ScanScreen* m_scan;
+    ui::CameraSession* m_camera = nullptr;
+    ui::CameraPanel* m_jogCamera = nullptr;
     ui::CalibrationScreen* m_calibration;
     QTabWidget* m_jogTabs;
     MotionScreens* m_motion;

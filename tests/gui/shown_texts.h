@@ -182,6 +182,8 @@ inline QStringList englishWords(const QString& text)
         QStringLiteral("Manager"), QStringLiteral("Opentrons"), QStringLiteral("LinuxCNC"), QStringLiteral("Ziegler"),
         QStringLiteral("Nichols"), QStringLiteral("Tyreus"), QStringLiteral("Luyben"), QStringLiteral("Pessen"),
         QStringLiteral("TileConfiguration"), QStringLiteral("Python"), QStringLiteral("Qt"),
+        // a camera source's forms, typed as they are in any language (sim, uvc:NAME, command:CMD, folder:DIR)
+        QStringLiteral("sim"), QStringLiteral("uvc"), QStringLiteral("command"), QStringLiteral("folder"),
         // keys
         QStringLiteral("Esc"), QStringLiteral("Ctrl"), QStringLiteral("Shift"), QStringLiteral("PgUp"), QStringLiteral("PgDn"),
         QStringLiteral("Enter"), QStringLiteral("Tab"), QStringLiteral("Alt"),

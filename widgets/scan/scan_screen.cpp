@@ -1,16 +1,22 @@
 #include "widgets/scan/scan_screen.h"
 
+#include "device/camera/scan_camera.h"
 #include "device/files/scan_exports.h"
 #include "device/files/scan_plan_file.h"
 #include "device/jobs/machine_model.h"
 #include "device/jobs/scan_launch.h"
 #include "device/jobs/scan_runner.h"
+#include "widgets/camera/camera_panel.h"
+#include "widgets/camera/camera_session.h"
+#include "widgets/camera/live_view.h"
 #include "widgets/scan/scan_plan_form.h"
 #include "widgets/scan/scan_stage_map.h"
 
 #include "widgets/wording/wording.h"
 
+#include <QCheckBox>
 #include <QDir>
+#include <QEvent>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -20,6 +26,8 @@
 #include <QScrollArea>
 #include <QSplitter>
 #include <QStandardPaths>
+#include <QTabBar>
+#include <QTabWidget>
 #include <QTimer>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -71,7 +79,12 @@ ScanScreen::ScanScreen(dev::Instrument* stage, QWidget* parent)
     mapBar->addWidget(fitPlan);
     mapBar->addWidget(m_pointer, 1);
     lv->addLayout(mapBar);
-    split->addWidget(left);
+    // The camera goes in a tab beside the map (setCameraSession): the live view needs the room.
+    m_leftTabs = new QTabWidget;
+    m_leftTabs->setObjectName(QStringLiteral("scanLeftTabs"));
+    m_leftTabs->addTab(left, tr("Stage map"));
+    m_leftTabs->tabBar()->setVisible(false);
+    split->addWidget(m_leftTabs);
 
     auto* right = new QWidget;
     auto* rv = new QVBoxLayout(right);
@@ -206,6 +219,13 @@ QWidget* ScanScreen::buildRunPanel()
     folderRow->addWidget(m_folder, 1);
     folderRow->addWidget(browse);
     v->addLayout(folderRow);
+    m_useCamera = new QCheckBox(tr("Take an image at each tile"));
+    m_useCamera->setObjectName(QStringLiteral("scanUseCamera"));
+    m_useCamera->setToolTip(tr("The camera open on the Camera tab takes each tile once it has settled; the images go to the "
+                               "output folder"));
+    m_useCamera->setVisible(false);  // until there is a camera to take them
+    connect(m_useCamera, &QCheckBox::toggled, this, &ScanScreen::updateRunUi);
+    v->addWidget(m_useCamera);
     auto* buttons = new QHBoxLayout;
     m_runButton = new QPushButton(tr("Run"));
     m_runButton->setObjectName(QStringLiteral("scanRun"));
@@ -259,6 +279,32 @@ void ScanScreen::setPlan(const ScanPlan& p)
 
 QString ScanScreen::outputFolder() const { return m_folder->text(); }
 void ScanScreen::setOutputFolder(const QString& folder) { m_folder->setText(folder); }
+
+void ScanScreen::setCameraSession(CameraSession* session)
+{
+    if (m_camera || !session)
+        return;
+    m_camera = session;
+    m_cameraPanel = new CameraPanel(session, m_stage);
+    m_cameraPanel->setObjectName(QStringLiteral("scanCamera"));
+    m_leftTabs->addTab(m_cameraPanel, tr("Camera"));
+    m_leftTabs->tabBar()->setVisible(true);
+    connect(m_cameraPanel, &CameraPanel::problem, this, &ScanScreen::problem);
+    connect(m_cameraPanel, &CameraPanel::notice, this, &ScanScreen::notice);
+    connect(session, &CameraSession::stateChanged, this, &ScanScreen::updateRunUi);
+    m_useCamera->setVisible(true);
+    replan();
+}
+
+bool ScanScreen::takesImages() const { return m_useCamera->isChecked(); }
+void ScanScreen::setTakesImages(bool on) { m_useCamera->setChecked(on); }
+
+dev::camera::Camera* ScanScreen::runCamera() const
+{
+    return m_camera && m_useCamera->isChecked() ? m_camera->camera() : nullptr;
+}
+
+void ScanScreen::showTab(int index) { m_leftTabs->setCurrentIndex(std::clamp(index, 0, m_leftTabs->count() - 1)); }
 
 bool ScanScreen::openPlan(const QString& path)
 {
@@ -336,6 +382,8 @@ void ScanScreen::replan()
     m_problems->setText(lines.join(QLatin1Char('\n')));
     m_problems->setVisible(!lines.isEmpty());
     m_map->setPlan(p, m_layout);
+    if (m_cameraPanel)  // the plan's camera says the pixel size where the frames do not
+        m_cameraPanel->liveView()->setFallbackPixelUm(pixelAtSampleUm(p.camera));
     // A run of this very plan keeps showing its progress.
     m_taken.assign(m_layout.tiles.size(), 0);
     if (m_valid && m_launch->holds(layoutFingerprint(p, m_layout)))
@@ -376,11 +424,18 @@ void ScanScreen::updateRunUi()
     m_folder->setEnabled(!active);
     m_map->setDrawingEnabled(!active);
     m_runButton->setText(resumable && m_runner->takenTiles() > 0 ? tr("Resume") : tr("Run"));
+    // A button's setText() resets its shortcut (to the text's mnemonic): set the keys again.
+    m_runButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    m_pauseButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
+    m_abortButton->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_A));
     m_runButton->setToolTip(tr("Run the scan on the stage, or continue it at the next tile (Ctrl+R)"));
     m_runButton->setEnabled(!active && m_valid && m_stage->isReady());
     m_pauseButton->setEnabled(st == ScanRunner::State::Running);
     m_abortButton->setEnabled(active);
     m_exportButton->setEnabled(m_valid && !active);
+    m_useCamera->setEnabled(!active);
+    if (m_camera)
+        m_camera->setInUse(active && m_useCamera->isChecked());
     const int total = m_runner->totalTiles() > 0 ? m_runner->totalTiles() : static_cast<int>(m_layout.tiles.size());
     m_progress->setRange(0, std::max(1, total));
     m_progress->setValue(m_runner->totalTiles() > 0 ? m_runner->takenTiles() : 0);
@@ -398,6 +453,15 @@ void ScanScreen::updateRunUi()
     else
         text = tr("%1 · %2 of %3 tiles taken").arg(ui::words::term(ScanRunner::stateTerm(st))).arg(m_runner->takenTiles()).arg(m_runner->totalTiles());
     m_runState->setText(text);
+}
+
+void ScanScreen::changeEvent(QEvent* event)
+{
+    // The window rewords the buttons after this event (ui::Retranslator), which drops their
+    // keys: they are set again once it has.
+    if (event->type() == QEvent::LanguageChange)
+        QTimer::singleShot(0, this, &ScanScreen::updateRunUi);
+    QWidget::changeEvent(event);
 }
 
 bool ScanScreen::confirm(const QString& question) { return !m_confirm || m_confirm(question); }
@@ -421,6 +485,11 @@ bool ScanScreen::run()
         emit problem(tr("Choose an output folder for the run log and the exports."));
         return false;
     }
+    if (m_useCamera->isChecked() && !runCamera()) {
+        emit problem(tr("Open a camera on the Camera tab first, or clear “Take an image at each tile”."));
+        return false;
+    }
+    handCameraToRunner();
     using Kind = dev::jobs::ScanDecision::Kind;
     dev::jobs::ScanDecision d = m_launch->prepare(plan(), folder);
     if (d.kind == Kind::OtherScansLog) {
@@ -468,6 +537,21 @@ bool ScanScreen::run()
     if (o.resume)
         emit notice(tr("Continuing at tile %1 of %2 (the run log has the first %3).").arg(o.takenTiles + 1).arg(o.totalTiles).arg(o.takenTiles));
     return true;
+}
+
+void ScanScreen::handCameraToRunner()
+{
+    // Set before the run is prepared: resuming checks the images taken, and the estimate
+    // counts the camera's time. A camera swapped since the last run gets a new wrapper.
+    dev::camera::Camera* cam = runCamera();
+    if (!cam) {
+        m_runner->setCamera(nullptr);
+        m_scanCamera.reset();
+        return;
+    }
+    if (!m_scanCamera || m_scanCamera->camera() != cam)
+        m_scanCamera = std::make_unique<dev::camera::ScanCamera>(cam);
+    m_runner->setCamera(m_scanCamera.get());
 }
 
 void ScanScreen::pause() { m_runner->pause(); }

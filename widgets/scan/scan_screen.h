@@ -11,8 +11,10 @@
 #include <functional>
 #include <memory>
 
+class QCheckBox;
 class QLabel;
 class QLineEdit;
+class QTabWidget;
 class QProgressBar;
 class QPushButton;
 class QTimer;
@@ -22,8 +24,15 @@ class ScanLaunch;
 class ScanRunner;
 }
 
+namespace dev::camera {
+class Camera;
+class ScanCamera;
+}
+
 namespace ui {
 
+class CameraPanel;
+class CameraSession;
 class ScanPlanForm;
 class ScanStageMap;
 
@@ -53,6 +62,18 @@ public:
     QString outputFolder() const;
     void setOutputFolder(const QString& folder);
 
+    /// Gives the screen the GUI's camera: a Camera tab beside the stage map with the live
+    /// view, and the run's "take an image at each tile" option.
+    void setCameraSession(CameraSession* session);
+    CameraPanel* cameraPanel() const { return m_cameraPanel; }
+    /// Whether a run takes an image at each tile (kept between runs by the app).
+    bool takesImages() const;
+    void setTakesImages(bool on);
+    /// The camera a run is handed: the open one when images are asked for, else nullptr.
+    dev::camera::Camera* runCamera() const;
+    /// Shows the stage map (0) or the camera (1).
+    void showTab(int index);
+
     bool openPlan(const QString& path);
     bool savePlan(const QString& path);
     /// Runs, or resumes, the scan; false (with a problem signal) when it cannot start.
@@ -74,6 +95,9 @@ signals:
     void problem(const QString& message);
     void notice(const QString& message);
 
+protected:
+    void changeEvent(QEvent* event) override;
+
 private:
     QWidget* buildRunPanel();
     QWidget* buildFileRow();  ///< New, Open, Save: held back while a scan runs
@@ -84,6 +108,7 @@ private:
     void onStageIdentity();
     motion::scan::StageModel stageModel() const;
     bool confirm(const QString& question);
+    void handCameraToRunner();  ///< the runner takes the tiles with runCamera(), or with none
     QString choose(FileAction action, const QString& title, const QString& filter);
 
     dev::Instrument* m_stage;
@@ -91,6 +116,11 @@ private:
     std::unique_ptr<dev::jobs::ScanLaunch> m_launch;  ///< what Run does, shared with the CLI
     ScanStageMap* m_map;
     ScanPlanForm* m_form;
+    QTabWidget* m_leftTabs;
+    CameraSession* m_camera = nullptr;
+    CameraPanel* m_cameraPanel = nullptr;
+    std::unique_ptr<dev::camera::ScanCamera> m_scanCamera;  ///< the run's side of the camera, made for runCamera()
+    QCheckBox* m_useCamera;
     QLabel* m_summary;
     QLabel* m_problems;
     QLabel* m_pointer;

@@ -1,0 +1,22 @@
+#pragma once
+// The GUI's cameras: how a source string becomes a camera, and which sources can be
+// listed (a USB camera is found; a command or a folder is whatever the operator types).
+#include "device/camera/camera.h"
+
+#include <QString>
+#include <QStringList>
+
+#include <memory>
+
+namespace app {
+
+class InstrumentSession;
+
+/// The camera for `source` ("sim", "uvc:NAME", "command:CMD", "folder:DIR"), not yet
+/// opened; nullptr with `error` worded when this build cannot make it. The simulated
+/// camera looks at `stage`'s in-process simulator.
+std::unique_ptr<dev::camera::Camera> makeCamera(const QString& source, InstrumentSession* stage, QString* error);
+/// The sources known to exist now.
+QStringList listCameras();
+
+} // namespace app
