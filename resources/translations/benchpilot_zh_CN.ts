@@ -4501,6 +4501,120 @@ Keep that log aside and start this test afresh?</source>
     </message>
 </context>
 <context>
+    <name>ui::CameraPanel</name>
+    <message>
+        <source>Save the snapped image</source>
+        <translation>保存拍摄的图像</translation>
+    </message>
+    <message>
+        <source>Open a camera before snapping.</source>
+        <translation>拍摄前请先打开相机。</translation>
+    </message>
+    <message>
+        <source>A snap is still being taken.</source>
+        <translation>上一张图像仍在拍摄中。</translation>
+    </message>
+    <message>
+        <source>The snap was not taken: %1</source>
+        <translation>未拍摄图像：%1</translation>
+    </message>
+    <message>
+        <source>The snap was not saved to %1: %2</source>
+        <translation>图像未保存到 %1：%2</translation>
+    </message>
+    <message>
+        <source>Snapped %1.</source>
+        <translation>已拍摄 %1。</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>打开</translation>
+    </message>
+    <message>
+        <source>Open: %1</source>
+        <translation>已打开：%1</translation>
+    </message>
+    <message>
+        <source>Opening %1…</source>
+        <translation>正在打开 %1…</translation>
+    </message>
+    <message>
+        <source>Closed</source>
+        <translation>已关闭</translation>
+    </message>
+    <message>
+        <source>Opening the camera…</source>
+        <translation>正在打开相机…</translation>
+    </message>
+    <message>
+        <source>No picture: open a camera.</source>
+        <translation>无图像：请打开相机。</translation>
+    </message>
+    <message>
+        <source>This source gives no live picture: each snap is shown here.</source>
+        <translation>此来源没有实时图像：每次拍摄的图像显示在这里。</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>相机</translation>
+    </message>
+    <message>
+        <source>sim: the simulated camera; uvc:NAME: a USB camera; command:CMD: runs CMD for each image ({file} is where it writes); folder:DIR: takes the next new file in DIR</source>
+        <translation>sim：模拟相机；uvc:NAME：USB 相机；command:CMD：每张图像运行一次 CMD（{file} 是它写入的位置）；folder:DIR：取 DIR 中的下一个新文件</translation>
+    </message>
+    <message>
+        <source>List the cameras again</source>
+        <translation>重新列出相机</translation>
+    </message>
+    <message>
+        <source>Exposure</source>
+        <translation>曝光</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>Exposure time, where the camera lets it be set</source>
+        <translation>曝光时间（相机允许设置时）</translation>
+    </message>
+    <message>
+        <source>Snap</source>
+        <translation>拍摄</translation>
+    </message>
+    <message>
+        <source>TIFF images (*.tif *.tiff)</source>
+        <translation>TIFF 图像 (*.tif *.tiff)</translation>
+    </message>
+    <message>
+        <source>Take one image and save it as a TIFF with the stage position in it (16-bit grey stays 16-bit) (%1)</source>
+        <translation>拍摄一张图像并保存为含载物台位置的 TIFF（16 位灰度保持 16 位）（%1）</translation>
+    </message>
+</context>
+<context>
+    <name>ui::CameraSession</name>
+    <message>
+        <source>The camera is taking a scan&apos;s tiles: pause or abort the scan before changing it.</source>
+        <translation>相机正在拍摄扫描的图块：请先暂停或中止扫描再更换相机。</translation>
+    </message>
+    <message>
+        <source>Camera %1: this build cannot open it.</source>
+        <translation>相机 %1：此版本无法打开它。</translation>
+    </message>
+    <message>
+        <source>Camera %1: %2</source>
+        <translation>相机 %1：%2</translation>
+    </message>
+    <message>
+        <source>The camera is taking a scan&apos;s tiles: pause or abort the scan before closing it.</source>
+        <translation>相机正在拍摄扫描的图块：请先暂停或中止扫描再关闭相机。</translation>
+    </message>
+</context>
+<context>
     <name>ui::ChannelPicker</name>
     <message>
         <source>Channels of</source>
@@ -4805,123 +4919,6 @@ Keep that log aside and start this test afresh?</source>
         <source>No instrument.</source>
         <translation>没有仪器。</translation>
     </message>
-</context>
-<context>
-    <name>ui::CameraPanel</name>
-    <message>
-        <source>Save the snapped image</source>
-        <translation>保存拍摄的图像</translation>
-    </message>
-    <message>
-        <source>Open a camera before snapping.</source>
-        <translation>拍摄前请先打开相机。</translation>
-    </message>
-    <message>
-        <source>A snap is still being taken.</source>
-        <translation>上一张图像仍在拍摄中。</translation>
-    </message>
-    <message>
-        <source>The snap was not taken: %1</source>
-        <translation>未拍摄图像：%1</translation>
-    </message>
-    <message>
-        <source>The snap was not saved to %1: %2</source>
-        <translation>图像未保存到 %1：%2</translation>
-    </message>
-    <message>
-        <source>Snapped %1.</source>
-        <translation>已拍摄 %1。</translation>
-    </message>
-    <message>
-        <source>Close</source>
-        <translation>关闭</translation>
-    </message>
-    <message>
-        <source>Open</source>
-        <translation>打开</translation>
-    </message>
-    <message>
-        <source>Open: %1</source>
-        <translation>已打开：%1</translation>
-    </message>
-    <message>
-        <source>Opening %1…</source>
-        <translation>正在打开 %1…</translation>
-    </message>
-    <message>
-        <source>Closed</source>
-        <translation>已关闭</translation>
-    </message>
-    <message>
-        <source>Opening the camera…</source>
-        <translation>正在打开相机…</translation>
-    </message>
-    <message>
-        <source>No picture: open a camera.</source>
-        <translation>无图像：请打开相机。</translation>
-    </message>
-    <message>
-        <source>This source gives no live picture: each snap is shown here.</source>
-        <translation>此来源没有实时图像：每次拍摄的图像显示在这里。</translation>
-    </message>
-    <message>
-        <source>Camera</source>
-        <translation>相机</translation>
-    </message>
-    <message>
-        <source>sim: the simulated camera; uvc:NAME: a USB camera; command:CMD: runs CMD for each image ({file} is where it writes); folder:DIR: takes the next new file in DIR</source>
-        <translation>sim：模拟相机；uvc:NAME：USB 相机；command:CMD：每张图像运行一次 CMD（{file} 是它写入的位置）；folder:DIR：取 DIR 中的下一个新文件</translation>
-    </message>
-    <message>
-        <source>List the cameras again</source>
-        <translation>重新列出相机</translation>
-    </message>
-    <message>
-        <source>Exposure</source>
-        <translation>曝光</translation>
-    </message>
-    <message>
-        <source> ms</source>
-        <translation> ms</translation>
-    </message>
-    <message>
-        <source>Exposure time, where the camera lets it be set</source>
-        <translation>曝光时间（相机允许设置时）</translation>
-    </message>
-    <message>
-        <source>Snap</source>
-        <translation>拍摄</translation>
-    </message>
-    <message>
-        <source>TIFF images (*.tif *.tiff)</source>
-        <translation>TIFF 图像 (*.tif *.tiff)</translation>
-    </message>
-    <message>
-        <source>Take one image and save it as a TIFF with the stage position in it (16-bit grey stays 16-bit) (%1)</source>
-        <translation>拍摄一张图像并保存为含载物台位置的 TIFF（16 位灰度保持 16 位）（%1）</translation>
-    </message>
-</context>
-<context>
-    <name>ui::CameraSession</name>
-    <message>
-        <source>The camera is taking a scan&apos;s tiles: pause or abort the scan before changing it.</source>
-        <translation>相机正在拍摄扫描的图块：请先暂停或中止扫描再更换相机。</translation>
-    </message>
-    <message>
-        <source>Camera %1: this build cannot open it.</source>
-        <translation>相机 %1：此版本无法打开它。</translation>
-    </message>
-    <message>
-        <source>Camera %1: %2</source>
-        <translation>相机 %1：%2</translation>
-    </message>
-    <message>
-        <source>The camera is taking a scan&apos;s tiles: pause or abort the scan before closing it.</source>
-        <translation>相机正在拍摄扫描的图块：请先暂停或中止扫描再关闭相机。</translation>
-    </message>
-</context>
-<context>
-    <name>ui::ChannelPicker</name>
     <message>
         <source>The instrument has no axis %1.</source>
         <translation>仪器没有 %1 轴。</translation>
@@ -5497,6 +5494,69 @@ Keep that log aside and start this test afresh?</source>
     </message>
 </context>
 <context>
+    <name>ui::LiveView</name>
+    <message>
+        <source>No picture: open a camera.</source>
+        <translation>无图像：请打开相机。</translation>
+    </message>
+    <message>
+        <source>%1 µm</source>
+        <translation>%1 µm</translation>
+    </message>
+    <message>
+        <source>Pixel size not known: no scale bar</source>
+        <translation>像元尺寸未知：无比例尺</translation>
+    </message>
+    <message>
+        <source>X %1  Y %2 mm</source>
+        <translation>X %1  Y %2 mm</translation>
+    </message>
+    <message>
+        <source>Stage position not known</source>
+        <translation>载物台位置未知</translation>
+    </message>
+    <message>
+        <source>%1 × %2 px · %3-bit · frame %4</source>
+        <translation>%1 × %2 px · %3 位 · 第 %4 帧</translation>
+    </message>
+    <message>
+        <source>Focus: —</source>
+        <translation>对焦：—</translation>
+    </message>
+    <message>
+        <source>Focus: %1</source>
+        <translation>对焦：%1</translation>
+    </message>
+    <message>
+        <source>Variance of the Laplacian (× 10⁴) of a downscaled copy: higher is sharper. Turn the focus until it peaks.</source>
+        <translation>缩小副本的拉普拉斯方差（× 10⁴）：越高越清晰。调焦直到它达到峰值。</translation>
+    </message>
+    <message>
+        <source>Levels %1–%2 of %3</source>
+        <translation>灰度 %1–%2（共 %3）</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>继续</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <source>Hold the picture still, or take frames again</source>
+        <translation>定住画面，或重新接收帧</translation>
+    </message>
+    <message>
+        <source>Auto contrast</source>
+        <translation>自动对比度</translation>
+    </message>
+    <message>
+        <source>Stretch the levels so the darkest and brightest 0.1 % of the pixels clip; off, the full bit depth maps black to white</source>
+        <translation>拉伸灰度，使最暗和最亮的 0.1% 像素截断；关闭时，整个位深从黑映射到白</translation>
+    </message>
+</context>
+<context>
     <name>ui::MessageBanner</name>
     <message>
         <source>Dismiss</source>
@@ -5801,72 +5861,10 @@ Keep that log aside and start this test afresh?</source>
         <source>start</source>
         <translation>起点</translation>
     </message>
-</context>
-<context>
-    <name>ui::LiveView</name>
     <message>
-        <source>No picture: open a camera.</source>
-        <translation>无图像：请打开相机。</translation>
+        <source>measured (samples)</source>
+        <translation>实测（采样点）</translation>
     </message>
-    <message>
-        <source>%1 µm</source>
-        <translation>%1 µm</translation>
-    </message>
-    <message>
-        <source>Pixel size not known: no scale bar</source>
-        <translation>像元尺寸未知：无比例尺</translation>
-    </message>
-    <message>
-        <source>X %1  Y %2 mm</source>
-        <translation>X %1  Y %2 mm</translation>
-    </message>
-    <message>
-        <source>Stage position not known</source>
-        <translation>载物台位置未知</translation>
-    </message>
-    <message>
-        <source>%1 × %2 px · %3-bit · frame %4</source>
-        <translation>%1 × %2 px · %3 位 · 第 %4 帧</translation>
-    </message>
-    <message>
-        <source>Focus: —</source>
-        <translation>对焦：—</translation>
-    </message>
-    <message>
-        <source>Focus: %1</source>
-        <translation>对焦：%1</translation>
-    </message>
-    <message>
-        <source>Variance of the Laplacian (× 10⁴) of a downscaled copy: higher is sharper. Turn the focus until it peaks.</source>
-        <translation>缩小副本的拉普拉斯方差（× 10⁴）：越高越清晰。调焦直到它达到峰值。</translation>
-    </message>
-    <message>
-        <source>Levels %1–%2 of %3</source>
-        <translation>灰度 %1–%2（共 %3）</translation>
-    </message>
-    <message>
-        <source>Resume</source>
-        <translation>继续</translation>
-    </message>
-    <message>
-        <source>Pause</source>
-        <translation>暂停</translation>
-    </message>
-    <message>
-        <source>Hold the picture still, or take frames again</source>
-        <translation>定住画面，或重新接收帧</translation>
-    </message>
-    <message>
-        <source>Auto contrast</source>
-        <translation>自动对比度</translation>
-    </message>
-    <message>
-        <source>Stretch the levels so the darkest and brightest 0.1 % of the pixels clip; off, the full bit depth maps black to white</source>
-        <translation>拉伸灰度，使最暗和最亮的 0.1% 像素截断；关闭时，整个位深从黑映射到白</translation>
-    </message>
-</context>
-<context>
-    <name>ui::MessageBanner</name>
     <message>
         <source>machine</source>
         <translation>机器位置</translation>
@@ -5878,10 +5876,6 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Y (mm)</source>
         <translation>Y (mm)</translation>
-    </message>
-    <message>
-        <source>measured (samples)</source>
-        <translation>实测（采样点）</translation>
     </message>
 </context>
 <context>
@@ -7794,6 +7788,26 @@ Start this scan anew in that folder? The old run log is kept under another name.
         <source>The plan is not saved: %1</source>
         <translation>计划未保存：%1</translation>
     </message>
+    <message>
+        <source>Stage map</source>
+        <translation>载物台地图</translation>
+    </message>
+    <message>
+        <source>Take an image at each tile</source>
+        <translation>在每个图块拍摄图像</translation>
+    </message>
+    <message>
+        <source>The camera open on the Camera tab takes each tile once it has settled; the images go to the output folder</source>
+        <translation>“相机”页中打开的相机在每个图块稳定后拍摄；图像保存到输出文件夹</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>相机</translation>
+    </message>
+    <message>
+        <source>Open a camera on the Camera tab first, or clear “Take an image at each tile”.</source>
+        <translation>请先在“相机”页打开相机，或取消“在每个图块拍摄图像”。</translation>
+    </message>
 </context>
 <context>
     <name>ui::ScanStageMap</name>
@@ -8076,28 +8090,21 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
         <translation>中止</translation>
     </message>
     <message>
-        <source>Stage map</source>
-        <translation>载物台地图</translation>
+        <source>Kp</source>
+        <translation>Kp</translation>
     </message>
     <message>
-        <source>Take an image at each tile</source>
-        <translation>在每个图块拍摄图像</translation>
+        <source>Ki</source>
+        <translation>Ki</translation>
     </message>
     <message>
-        <source>The camera open on the Camera tab takes each tile once it has settled; the images go to the output folder</source>
-        <translation>“相机”页中打开的相机在每个图块稳定后拍摄；图像保存到输出文件夹</translation>
+        <source>Kd</source>
+        <translation>Kd</translation>
     </message>
     <message>
-        <source>Camera</source>
-        <translation>相机</translation>
+        <source>%1 %2 → %3 (%4×)</source>
+        <translation>%1 %2 → %3（%4 倍）</translation>
     </message>
-    <message>
-        <source>Open a camera on the Camera tab first, or clear “Take an image at each tile”.</source>
-        <translation>请先在“相机”页打开相机，或取消“在每个图块拍摄图像”。</translation>
-    </message>
-</context>
-<context>
-    <name>ui::ScanStageMap</name>
     <message>
         <source>Resume</source>
         <translation>继续</translation>
@@ -8141,6 +8148,14 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
         <translation>从设备读取</translation>
     </message>
     <message>
+        <source>These gains are far from the ones %1 runs now:
+%2
+A loop this different may oscillate or run away. Apply them?</source>
+        <translation>这些增益与 %1 当前运行的增益相差很大：
+%2
+差别这么大的回路可能振荡或失控。仍要应用吗？</translation>
+    </message>
+    <message>
         <source>%1: gains applied (%2)</source>
         <translation>%1：已应用增益（%2）</translation>
     </message>
@@ -8169,6 +8184,10 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
         <translation>整定结果已保存到 %1</translation>
     </message>
     <message>
+        <source>A tuning run is under way: results can be opened once it has ended.</source>
+        <translation>整定正在进行：结束后才能打开结果。</translation>
+    </message>
+    <message>
         <source>Open tuning results</source>
         <translation>打开整定结果</translation>
     </message>
@@ -8183,34 +8202,6 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     <message>
         <source>Model plant</source>
         <translation>模型对象</translation>
-    </message>
-    <message>
-        <source>Kp</source>
-        <translation>Kp</translation>
-    </message>
-    <message>
-        <source>Ki</source>
-        <translation>Ki</translation>
-    </message>
-    <message>
-        <source>Kd</source>
-        <translation>Kd</translation>
-    </message>
-    <message>
-        <source>%1 %2 → %3 (%4×)</source>
-        <translation>%1 %2 → %3（%4 倍）</translation>
-    </message>
-    <message>
-        <source>These gains are far from the ones %1 runs now:
-%2
-A loop this different may oscillate or run away. Apply them?</source>
-        <translation>这些增益与 %1 当前运行的增益相差很大：
-%2
-差别这么大的回路可能振荡或失控。仍要应用吗？</translation>
-    </message>
-    <message>
-        <source>A tuning run is under way: results can be opened once it has ended.</source>
-        <translation>整定正在进行：结束后才能打开结果。</translation>
     </message>
 </context>
 <context>
