@@ -412,7 +412,7 @@ void addScanCommands(std::vector<Command>& list)
     run.api.params = {{QStringLiteral("plan"), ParamType::File, tr("the scan plan file"), true, {}, {}}, optionParam("out", ParamType::File),
                       optionParam("camera", ParamType::Text), optionParam("specimen", ParamType::Text), optionParam("camera-seed", ParamType::Number)};
     run.api.example = QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")}, {QStringLiteral("plan"), QStringLiteral("slide.scan.json")},
-                                  {QStringLiteral("out"), QStringLiteral("slide-run")}};
+                                  {QStringLiteral("out"), QStringLiteral("slide-run")}, {QStringLiteral("camera"), QStringLiteral("sim")}};
     list.push_back({QStringLiteral("scan"), tr("stitching scans on the stage: plan, run"), {},
                     tr("See docs/scan.md for the grid rule, the plan file and the exports."), {}, {}, {plan, run}});
 }

@@ -2,6 +2,7 @@
 // OME-TIFF mosaic, Fiji's registered TileConfiguration and a JSON report
 // (docs/stitching.md). The positions come from the scan's run log (mm, turned into
 // pixels by the camera's geometry) or from a TileConfiguration (pixels).
+#include "cli_session.h"
 #include "command.h"
 
 #include "device/files/scan_plan_file.h"
@@ -21,7 +22,10 @@
 #include <QSaveFile>
 #include <QSet>
 
+#include <chrono>
 #include <cmath>
+#include <future>
+#include <limits>
 
 namespace app::cli {
 namespace {
@@ -196,7 +200,12 @@ int stitchRun(Invocation& inv)
     so.mosaic.pixelSizeUm = geo.pixelUm;
     so.mosaic.imageName = QDir(dir).dirName().toStdString();
     so.mosaicPath = inv.isSet(QStringLiteral("no-mosaic")) ? std::string() : outPath.toStdString();
-    auto result = imaging::stitch(tiles, so);
+    // Registration and fusion take seconds on a real folder. They run beside the command,
+    // which waits as every command does (spinUntil): inside the GUI the API runs commands
+    // on its own thread, and the screens and other clients' calls go on meanwhile.
+    auto job = std::async(std::launch::async, [&tiles, &so] { return imaging::stitch(tiles, so); });
+    spinUntil([&job] { return job.wait_for(std::chrono::seconds(0)) == std::future_status::ready; }, std::numeric_limits<int>::max());
+    auto result = job.get();  // at once, unless the wait was cut short (the server shutting down)
     if (!result)
         return inv.usage(ui::words::problems(result.problems()).join(QLatin1Char('\n')));
 
@@ -264,10 +273,6 @@ void addStitchCommands(std::vector<Command>& list)
                     option("no-mosaic", "register and place only: the TileConfiguration and the report")},
                    stitchRun,
                    {}};
-    // Not yet a scripting-API method: the API's page runs every method's example, and
-    // this one needs a folder of images that no earlier example makes (the simulated
-    // camera's scan will). Its JSON is already the shape the method will return.
-    stitch.api.offered = false;
     stitch.api.access = Access::Compute;
     stitch.api.params = {{QStringLiteral("dir"), ParamType::File, tr("the folder of tiles"), true, {}, {}},
                          optionParam("positions", ParamType::File),
@@ -277,6 +282,9 @@ void addStitchCommands(std::vector<Command>& list)
                          optionParam("max-shift-px", ParamType::Number),
                          optionParam("repeatability-um", ParamType::Number),
                          optionParam("out", ParamType::File)};
+    // The API's page runs this on the folder scan.run's example fills with the simulated
+    // camera's images (scan.run comes first in the method list).
+    stitch.api.example = QJsonObject{{QStringLiteral("dir"), QStringLiteral("slide-run")}, {QStringLiteral("plan"), QStringLiteral("slide.scan.json")}};
     list.push_back(stitch);
 }
 
