@@ -104,9 +104,9 @@ bool readLinkOptions(const QCommandLineParser& p, LinkOptions& link, QTextStream
         if (link.sim != QLatin1String("stage"))
             return fail(tr("--stage-errors is for the simulated stage: give --sim stage"));
         const auto read = dev::files::accuracy::loadStageErrorsFile(unmarkNegative(p.value(QStringLiteral("stage-errors"))));
-        if (!read.errors)
-            return fail(tr("--stage-errors: %1").arg(ui::words::problems(read.problems).join(QLatin1Char('\n'))));
-        link.stageErrors = read.errors;
+        if (!read.ok())
+            return fail(tr("--stage-errors: %1").arg(ui::words::problems(read.problems()).join(QLatin1Char('\n'))));
+        link.stageErrors = *read;
     }
     if (p.isSet(QStringLiteral("port"))) {
         link.port = unmarkNegative(p.value(QStringLiteral("port")));

@@ -91,9 +91,9 @@ int fit2d(Invocation& inv)
         return inv.usage(tr("give the table file to write: --out FILE"));
     const QString input = inv.path(inv.arguments().front());
     const auto read = dev::files::accuracy::loadGridMapResultFile(input);
-    if (reportProblems(inv, read.problems) || !read.file)
+    if (reportProblems(inv, read.problems()) || !read.ok())
         return Usage;
-    const auto table = motion::metrology::compensationFromMap(read.file->result);
+    const auto table = motion::metrology::compensationFromMap(read->result);
     if (!table)
         return reportFailure(inv, motion::msg::make("compensation2d.map_not_a_grid", {motion::msg::verbatim("file", QFileInfo(input).fileName().toStdString())}), Usage);
     motion::msg::Problems problems;
@@ -133,14 +133,14 @@ int upload2d(Invocation& inv)
     if (inv.arguments().size() != 1)
         return inv.usage(tr("give one 2D compensation table file"));
     const auto read = dev::files::accuracy::loadCompensation2DFile(inv.path(inv.arguments().front()));
-    if (reportProblems(inv, read.problems) || !read.file)
+    if (reportProblems(inv, read.problems()) || !read.ok())
         return Usage;
     dev::Compensation2dClient* c = device2d(inv);
     if (!c)
         return inv.session() ? Refused : LinkTrouble;
     bool done = false;
     std::optional<dev::RequestError> error;
-    c->upload(read.file->table, [&](const std::optional<dev::RequestError>& e) {
+    c->upload(read->table, [&](const std::optional<dev::RequestError>& e) {
         error = e;
         done = true;
     });
@@ -186,9 +186,9 @@ int export2d(Invocation& inv)
     if (inv.arguments().size() != 1)
         return inv.usage(tr("give one 2D compensation table file"));
     const auto read = dev::files::accuracy::loadCompensation2DFile(inv.path(inv.arguments().front()));
-    if (reportProblems(inv, read.problems) || !read.file)
+    if (reportProblems(inv, read.problems()) || !read.ok())
         return Usage;
-    const std::string text = dev::files::accuracy::compensation2DToCsv(read.file->table);
+    const std::string text = dev::files::accuracy::compensation2DToCsv(read->table);
     if (inv.isSet(QStringLiteral("out"))) {
         motion::msg::Message error;
         const QString out = inv.path(inv.value(QStringLiteral("out")));

@@ -207,9 +207,9 @@ int main(int argc, char** argv)
             if (*k != dev::proto::DeviceKind::Stage)
                 return fail(QApplication::translate("main", "--stage-errors is for the simulated stage: give --sim stage"));
             const auto read = dev::files::accuracy::loadStageErrorsFile(p.value(stageErrors));
-            if (!read.errors)
-                return fail(QApplication::translate("main", "--stage-errors: %1").arg(ui::words::problems(read.problems).join(QLatin1Char('\n'))));
-            c.stageErrors = read.errors;
+            if (!read.ok())
+                return fail(QApplication::translate("main", "--stage-errors: %1").arg(ui::words::problems(read.problems()).join(QLatin1Char('\n'))));
+            c.stageErrors = *read;
         }
         options.connection[kindIndex(*k)] = c;
         options.showInstrument = kindIndex(*k);

@@ -127,9 +127,9 @@ int main(int argc, char** argv)
         if (kind != QLatin1String("stage"))
             return fail(QCoreApplication::translate("sim", "--stage-errors is for the simulated stage (--instrument stage)"));
         const auto read = dev::files::accuracy::loadStageErrorsFile(p.value(stageErrors));
-        if (!read.errors)
-            return fail(ui::words::problems(read.problems).join(QLatin1Char('\n')));
-        dev::sim::applyStageErrors(machine, *read.errors);
+        if (!read.ok())
+            return fail(ui::words::problems(read.problems()).join(QLatin1Char('\n')));
+        dev::sim::applyStageErrors(machine, *read);
     }
     const QString gaugeLink = p.value(gaugePath);
     int gaugeAxisIndex = -1;

@@ -72,10 +72,10 @@ struct PitchedStage {
     static dev::sim::MachineConfig config()
     {
         const auto read = dev::files::accuracy::stageErrorsFromJson(kPitchErrors, "pitch.stage-errors.json");
-        EXPECT_TRUE(read.errors.has_value());
+        EXPECT_TRUE(read.ok());
         dev::sim::MachineConfig c = dev::sim::stageConfig();
-        if (read.errors)
-            dev::sim::applyStageErrors(c, *read.errors);
+        if (read.ok())
+            dev::sim::applyStageErrors(c, *read);
         return c;
     }
 

@@ -41,11 +41,11 @@ GridMapResultFile exampleMap()
     }
     for (double y : in.yMm)
         for (double x : in.xMm) {
-            const auto v = stageErrorUm(*e.errors, x, y, Direction::Up, Direction::Up);
+            const auto v = stageErrorUm(*e, x, y, Direction::Up, Direction::Up);
             in.exUm.push_back(v.xUm + 12 - 150e-3 * y);
             in.eyUm.push_back(v.yUm + 150e-3 * x);
             // The reverse pass, approached from above.
-            const auto w = stageErrorUm(*e.errors, x, y, Direction::Down, Direction::Down);
+            const auto w = stageErrorUm(*e, x, y, Direction::Down, Direction::Down);
             in.reverseExUm.push_back(w.xUm + 12 - 150e-3 * y);
             in.reverseEyUm.push_back(w.yUm + 150e-3 * x);
         }
@@ -66,23 +66,23 @@ std::map<std::string, std::string> derived()
 TEST(GridFiles, TheStageErrorExampleIsTheFileOfTheDocs)
 {
     const auto r = stageErrorsFromJson(readExample("stage-example.stage-errors.json"), "stage-example.stage-errors.json");
-    ASSERT_TRUE(r.errors) << motion::msg::debugFormat(r.problems);
-    EXPECT_EQ(r.errors->x.pitchPolyUm, (std::vector<double>{0, 0.5, -0.004}));
-    EXPECT_EQ(r.errors->y.straightnessPolyUm, (std::vector<double>{0, 0, -0.003}));
-    EXPECT_EQ(r.errors->squarenessUrad, 40);
-    EXPECT_EQ(r.errors->backlashYUm, 2.0);
+    ASSERT_TRUE(r.ok()) << motion::msg::debugFormat(r.problems());
+    EXPECT_EQ(r->x.pitchPolyUm, (std::vector<double>{0, 0.5, -0.004}));
+    EXPECT_EQ(r->y.straightnessPolyUm, (std::vector<double>{0, 0, -0.003}));
+    EXPECT_EQ(r->squarenessUrad, 40);
+    EXPECT_EQ(r->backlashYUm, 2.0);
     // Written and read again: the same errors.
-    const auto again = stageErrorsFromJson(stageErrorsToJson(*r.errors), "again.json");
-    ASSERT_TRUE(again.errors);
-    EXPECT_EQ(again.errors->x.straightnessPolyUm, r.errors->x.straightnessPolyUm);
+    const auto again = stageErrorsFromJson(stageErrorsToJson(*r), "again.json");
+    ASSERT_TRUE(again.ok());
+    EXPECT_EQ(again->x.straightnessPolyUm, r->x.straightnessPolyUm);
 }
 
 TEST(GridFiles, AStageErrorFileLeavingMembersOutKeepsTheBuiltInStage)
 {
     const auto r = stageErrorsFromJson(R"({"schema": "benchpilot.stage-errors", "version": 1, "squareness_urad": -25})", "s.json");
-    ASSERT_TRUE(r.errors) << motion::msg::debugFormat(r.problems);
-    EXPECT_EQ(r.errors->x.pitchPolyUm, builtInStageErrors().x.pitchPolyUm);
-    EXPECT_EQ(r.errors->squarenessUrad, -25);
+    ASSERT_TRUE(r.ok()) << motion::msg::debugFormat(r.problems());
+    EXPECT_EQ(r->x.pitchPolyUm, builtInStageErrors().x.pitchPolyUm);
+    EXPECT_EQ(r->squarenessUrad, -25);
 }
 
 TEST(GridFiles, AStageErrorFileWithEveryProblemAtOnceNamesLineAndColumn)
@@ -93,21 +93,21 @@ TEST(GridFiles, AStageErrorFileWithEveryProblemAtOnceNamesLineAndColumn)
                              " \"squareness_urad\": 1e9,\n"
                              " \"backlash_um\": {\"x\": -1}}";
     const auto r = stageErrorsFromJson(text, "bad.stage-errors.json");
-    EXPECT_FALSE(r.errors);
-    ASSERT_EQ(r.problems.size(), 5u) << motion::msg::debugFormat(r.problems);
-    for (const auto& p : r.problems)
+    EXPECT_FALSE(r.ok());
+    ASSERT_EQ(r.problems().size(), 5u) << motion::msg::debugFormat(r.problems());
+    for (const auto& p : r.problems())
         EXPECT_EQ(p.file, "bad.stage-errors.json");
-    EXPECT_EQ(r.problems[0].path, "x.pitch_poly_um[1]");
-    EXPECT_EQ(r.problems[0].line, 2);
-    EXPECT_EQ(r.problems[0].column, 29);
-    EXPECT_EQ(r.problems[1].path, "x.straightnes_poly_um");  // unknown, with the nearest name suggested
-    EXPECT_EQ(r.problems[2].path, "y.pitch_poly_um");
-    EXPECT_EQ(r.problems[2].message.id, "stage_errors.too_many_coefficients");
-    EXPECT_EQ(r.problems[2].line, 3);
-    EXPECT_EQ(r.problems[3].path, "squareness_urad");
-    EXPECT_EQ(r.problems[3].line, 4);
-    EXPECT_EQ(r.problems[4].path, "backlash_um.x");
-    EXPECT_EQ(r.problems[4].line, 5);
+    EXPECT_EQ(r.problems()[0].path, "x.pitch_poly_um[1]");
+    EXPECT_EQ(r.problems()[0].line, 2);
+    EXPECT_EQ(r.problems()[0].column, 29);
+    EXPECT_EQ(r.problems()[1].path, "x.straightnes_poly_um");  // unknown, with the nearest name suggested
+    EXPECT_EQ(r.problems()[2].path, "y.pitch_poly_um");
+    EXPECT_EQ(r.problems()[2].message.id, "stage_errors.too_many_coefficients");
+    EXPECT_EQ(r.problems()[2].line, 3);
+    EXPECT_EQ(r.problems()[3].path, "squareness_urad");
+    EXPECT_EQ(r.problems()[3].line, 4);
+    EXPECT_EQ(r.problems()[4].path, "backlash_um.x");
+    EXPECT_EQ(r.problems()[4].line, 5);
 }
 
 TEST(GridFiles, DerivedExamplesAreWhatTheWritersMake)
@@ -124,19 +124,19 @@ TEST(GridFiles, DerivedExamplesAreWhatTheWritersMake)
 TEST(GridFiles, TheExampleResultAndTableReadBackAsWritten)
 {
     const auto map = gridMapResultFromJson(readExample("stage-example.grid-map-result.json"), "stage-example.grid-map-result.json");
-    ASSERT_TRUE(map.file) << motion::msg::debugFormat(map.problems);
-    EXPECT_EQ(map.file->result.nodes.size(), 49u);
-    ASSERT_TRUE(map.file->result.figures.maxReversalUm);
-    EXPECT_NEAR(*map.file->result.figures.maxReversalUm, 2.5, 1e-9);  // √(1.5² + 2²)
+    ASSERT_TRUE(map.ok()) << motion::msg::debugFormat(map.problems());
+    EXPECT_EQ(map->result.nodes.size(), 49u);
+    ASSERT_TRUE(map->result.figures.maxReversalUm);
+    EXPECT_NEAR(*map->result.figures.maxReversalUm, 2.5, 1e-9);  // √(1.5² + 2²)
     const auto table = compensation2DFromJson(readExample("stage-example.compensation-2d.json"), "stage-example.compensation-2d.json");
-    ASSERT_TRUE(table.file) << motion::msg::debugFormat(table.problems);
-    EXPECT_EQ(table.file->table.columns, 7);
-    EXPECT_NEAR(table.file->table.pitchXMm, 10, 1e-12);
+    ASSERT_TRUE(table.ok()) << motion::msg::debugFormat(table.problems());
+    EXPECT_EQ(table->table.columns, 7);
+    EXPECT_NEAR(table->table.pitchXMm, 10, 1e-12);
     // The table the example map gives is the example table.
-    const auto fitted = compensationFromMap(map.file->result);
+    const auto fitted = compensationFromMap(map->result);
     ASSERT_TRUE(fitted);
     for (std::size_t k = 0; k < fitted->correctionXUm.size(); ++k)
-        EXPECT_NEAR(fitted->correctionXUm[k], table.file->table.correctionXUm[k], 1e-6);
+        EXPECT_NEAR(fitted->correctionXUm[k], table->table.correctionXUm[k], 1e-6);
 }
 
 TEST(GridFiles, AResultWhoseNodesLeaveTheGridIsRefusedAtTheNode)
@@ -147,11 +147,11 @@ TEST(GridFiles, AResultWhoseNodesLeaveTheGridIsRefusedAtTheNode)
     ASSERT_NE(at, std::string::npos);
     text.replace(at, node.size(), "\"x_mm\": 41,");
     const auto r = gridMapResultFromJson(text, "moved.json");
-    EXPECT_FALSE(r.file);
-    ASSERT_EQ(r.problems.size(), 1u) << motion::msg::debugFormat(r.problems);
-    EXPECT_EQ(r.problems[0].message.id, "grid.node_off_grid");
-    EXPECT_EQ(r.problems[0].path, "nodes[2]");
-    EXPECT_GT(r.problems[0].line, 1);
+    EXPECT_FALSE(r.ok());
+    ASSERT_EQ(r.problems().size(), 1u) << motion::msg::debugFormat(r.problems());
+    EXPECT_EQ(r.problems()[0].message.id, "grid.node_off_grid");
+    EXPECT_EQ(r.problems()[0].path, "nodes[2]");
+    EXPECT_GT(r.problems()[0].line, 1);
 }
 
 TEST(GridFiles, ATableFileWithEveryProblemAtOnce)
@@ -163,10 +163,10 @@ TEST(GridFiles, ATableFileWithEveryProblemAtOnce)
                              "  {\"x_mm\": 0, \"y_mm\": 5, \"correction_x_um\": 1, \"correction_y_um\": 2},\n"
                              "  {\"x_mm\": 0.01, \"y_mm\": 5, \"correction_x_um\": 1, \"correction_y_um\": 2}]}";
     const auto r = compensation2DFromJson(text, "t.compensation-2d.json");
-    EXPECT_FALSE(r.file);
-    ASSERT_EQ(r.problems.size(), 2u) << motion::msg::debugFormat(r.problems);
-    EXPECT_EQ(r.problems[0].path, "grid.pitch_x_mm");
-    EXPECT_EQ(r.problems[0].line, 2);
-    EXPECT_EQ(r.problems[1].path, "nodes[1].correction_x_um");
-    EXPECT_EQ(r.problems[1].line, 4);
+    EXPECT_FALSE(r.ok());
+    ASSERT_EQ(r.problems().size(), 2u) << motion::msg::debugFormat(r.problems());
+    EXPECT_EQ(r.problems()[0].path, "grid.pitch_x_mm");
+    EXPECT_EQ(r.problems()[0].line, 2);
+    EXPECT_EQ(r.problems()[1].path, "nodes[1].correction_x_um");
+    EXPECT_EQ(r.problems()[1].line, 4);
 }

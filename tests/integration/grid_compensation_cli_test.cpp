@@ -28,9 +28,9 @@ TEST(GridCompensationCli, FitTwoDMakesTheExampleTableFromTheExampleMap)
     EXPECT_EQ(r.json().value(QStringLiteral("columns")).toInt(), 7);
     const auto made = dev::files::accuracy::loadCompensation2DFile(out);
     const auto example = dev::files::accuracy::loadCompensation2DFile(gridExample("stage-example.compensation-2d.json"));
-    ASSERT_TRUE(made.file && example.file);
-    EXPECT_EQ(made.file->table.correctionXUm, example.file->table.correctionXUm);
-    EXPECT_EQ(made.file->table.correctionYUm, example.file->table.correctionYUm);
+    ASSERT_TRUE(made.ok() && example.ok());
+    EXPECT_EQ(made->table.correctionXUm, example->table.correctionXUm);
+    EXPECT_EQ(made->table.correctionYUm, example->table.correctionYUm);
     // Without --out nothing is written and the command says what is missing.
     const auto noOut = runCliInProcess({QStringLiteral("compensation"), QStringLiteral("fit-2d"), gridExample("stage-example.grid-map-result.json")});
     EXPECT_EQ(noOut.code, 1);

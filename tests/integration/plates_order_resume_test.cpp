@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 using namespace itest;
 using namespace platestest;
 
@@ -64,13 +66,21 @@ TEST_P(PlateOrderResume, KilledAtAWellAndResumedEveryWellIsDoneOnce)
     const QStringList resume = port + QStringList{QStringLiteral("recipe"), QStringLiteral("run"), recipe, QStringLiteral("--resume"), log,
                                                   QStringLiteral("--json"), QStringLiteral("--calibration=none")};
     ProgramRun r = orderCli(resume, 120000);
-    int interruptedOp = -1;
-    if (r.exitCode == 1) {
-        for (const auto& [op, n] : before.pumps)
-            if (!before.dones.count(op))
-                interruptedOp = op;
-        const bool moved = r.err.contains(QStringLiteral("moved in full"));
-        r = orderCli(resume + QStringList{moved ? QStringLiteral("--interrupted=skip") : QStringLiteral("--interrupted=redo")}, 120000);
+    // A run that stops again (an interrupted operation to decide, or, on a loaded machine,
+    // a link given up for lost) is taken up again as an operator would: every well must
+    // still be closed exactly once however many times the run resumes.
+    std::set<int> interruptedOps;
+    for (int again = 0; again < 4 && r.exitCode != 0; ++again) {
+        const LogCounts now = countLog(log);
+        for (const auto& [op, n] : now.pumps)
+            if (!now.dones.count(op) && !now.skips.count(op))
+                interruptedOps.insert(op);
+        QStringList args = resume;
+        if (r.exitCode == 1) {
+            const bool moved = r.err.contains(QStringLiteral("moved in full"));
+            args << (moved ? QStringLiteral("--interrupted=skip") : QStringLiteral("--interrupted=redo"));
+        }
+        r = orderCli(args, 120000);
     }
     ASSERT_EQ(r.exitCode, 0) << r.describe();
 
@@ -78,7 +88,7 @@ TEST_P(PlateOrderResume, KilledAtAWellAndResumedEveryWellIsDoneOnce)
     for (int i = 0; i < 48; ++i) {
         SCOPED_TRACE("op " + std::to_string(i));
         EXPECT_EQ(after.dones.count(i) + after.skips.count(i), 1u) << "closed exactly once";
-        if (i != interruptedOp) {
+        if (!interruptedOps.count(i)) {
             EXPECT_EQ(after.pumps.count(i) ? after.pumps.at(i) : 0, 1) << "one plunger move: never twice";
         }
     }

@@ -24,14 +24,14 @@ void checkStageErrors(std::string_view input)
 {
     using namespace dev::files::accuracy;
     const StageErrorsRead r = stageErrorsFromJson(input, "fuzz.json");
-    checkProblemsSayWhere(r.problems, r.errors.has_value());
-    if (!r.errors)
+    checkProblemsSayWhere(r.problems(), r.ok());
+    if (!r.ok())
         return;
-    const std::string once = stageErrorsToJson(*r.errors);
+    const std::string once = stageErrorsToJson(*r);
     const StageErrorsRead again = stageErrorsFromJson(once, "again.json");
-    if (!again.errors)
-        fuzzfiles::fail("written stage errors do not read back: " + motion::msg::debugFormat(again.problems));
-    if (stageErrorsToJson(*again.errors) != once)
+    if (!again.ok())
+        fuzzfiles::fail("written stage errors do not read back: " + motion::msg::debugFormat(again.problems()));
+    if (stageErrorsToJson(*again) != once)
         fuzzfiles::fail("write → read → write changed the stage errors");
 }
 
@@ -39,32 +39,32 @@ void checkGridMapResult(std::string_view input)
 {
     using namespace dev::files::accuracy;
     const GridMapResultRead r = gridMapResultFromJson(input, "fuzz.json");
-    checkProblemsSayWhere(r.problems, r.file.has_value());
-    if (!r.file)
+    checkProblemsSayWhere(r.problems(), r.ok());
+    if (!r.ok())
         return;
-    const std::string once = gridMapResultToJson(*r.file);
+    const std::string once = gridMapResultToJson(*r);
     const GridMapResultRead again = gridMapResultFromJson(once, "again.json");
-    if (!again.file)
-        fuzzfiles::fail("a written map does not read back: " + motion::msg::debugFormat(again.problems));
-    if (gridMapResultToJson(*again.file) != once)
+    if (!again.ok())
+        fuzzfiles::fail("a written map does not read back: " + motion::msg::debugFormat(again.problems()));
+    if (gridMapResultToJson(*again) != once)
         fuzzfiles::fail("write → read → write changed the map");
-    (void)motion::metrology::compensationFromMap(r.file->result);
+    (void)motion::metrology::compensationFromMap(r->result);
 }
 
 void checkCompensation2D(std::string_view input)
 {
     using namespace dev::files::accuracy;
     const Compensation2DRead r = compensation2DFromJson(input, "fuzz.json");
-    checkProblemsSayWhere(r.problems, r.file.has_value());
-    if (!r.file)
+    checkProblemsSayWhere(r.problems(), r.ok());
+    if (!r.ok())
         return;
-    const std::string once = compensation2DToJson(*r.file);
+    const std::string once = compensation2DToJson(*r);
     const Compensation2DRead again = compensation2DFromJson(once, "again.json");
-    if (!again.file)
-        fuzzfiles::fail("a written table does not read back: " + motion::msg::debugFormat(again.problems));
-    if (compensation2DToJson(*again.file) != once)
+    if (!again.ok())
+        fuzzfiles::fail("a written table does not read back: " + motion::msg::debugFormat(again.problems()));
+    if (compensation2DToJson(*again) != once)
         fuzzfiles::fail("write → read → write changed the table");
-    (void)compensation2DToCsv(r.file->table);
+    (void)compensation2DToCsv(r->table);
 }
 
 } // namespace

@@ -48,17 +48,17 @@ std::string compensation2DToJson(const Compensation2DFile& f)
 
 Compensation2DRead compensation2DFromJson(std::string_view text, std::string_view fileName)
 {
-    Compensation2DRead out;
+    motion::msg::Problems problems;
     const dev::files::json::ParseResult parsed = dev::files::json::parse(text);
     if (!parsed) {
-        out.problems.push_back(fromParseError(parsed.error, fileName));
-        return out;
+        problems.push_back(fromParseError(parsed.error, fileName));
+        return Compensation2DRead::refused(std::move(problems));
     }
     const Value& root = *parsed.value;
     dev::files::json::Problems p;
     if (!dev::files::json::checkSchema(root, kCompensation2DSchema, kCompensation2DVersion, p)) {
-        addJsonProblems(p, fileName, out.problems);
-        return out;
+        addJsonProblems(p, fileName, problems);
+        return Compensation2DRead::refused(std::move(problems));
     }
     Compensation2DFile f;
     CompensationTable2D& t = f.table;
@@ -110,21 +110,19 @@ Compensation2DRead compensation2DFromJson(std::string_view text, std::string_vie
     if (auto s = o.string("source", false))
         f.source = *s;
     o.refuseUnknown({"schema", "version", "grid", "nodes", "source"});
-    addJsonProblems(p, fileName, out.problems);
-    if (hasErrors(out.problems))
-        return out;
-    addModelProblems(motion::metrology::validate(t), root, fileName, out.problems);
-    if (!hasErrors(out.problems))
-        out.file = f;
-    return out;
+    addJsonProblems(p, fileName, problems);
+    if (hasErrors(problems))
+        return Compensation2DRead::refused(std::move(problems));
+    addModelProblems(motion::metrology::validate(t), root, fileName, problems);
+    return Compensation2DRead::from(f, std::move(problems));
 }
 
 Compensation2DRead loadCompensation2DFile(const QString& path)
 {
-    Compensation2DRead out;
+    motion::msg::Problems problems;
     std::string name;
-    const auto text = loadText(path, name, out.problems);
-    return text ? compensation2DFromJson(*text, name) : out;
+    const auto text = loadText(path, name, problems);
+    return text ? compensation2DFromJson(*text, name) : Compensation2DRead::refused(std::move(problems));
 }
 
 bool saveCompensation2DFile(const QString& path, const Compensation2DFile& f, motion::msg::Message* error)

@@ -3,6 +3,7 @@
 // "benchpilot.compensation-2d", version 1 (docs/accuracy.md, "2D compensation
 // table"), and its CSV export. The model is motion/metrology/grid/compensation_table_2d.h;
 // the reader checks it as a device would.
+#include "motion/checked.h"
 #include "device/files/accuracy/file_problem.h"
 #include "motion/metrology/grid/compensation_table_2d.h"
 
@@ -24,10 +25,8 @@ struct Compensation2DFile {
 
 std::string compensation2DToJson(const Compensation2DFile& f);
 
-struct Compensation2DRead {
-    std::optional<Compensation2DFile> file;
-    motion::msg::Problems problems;
-};
+/// The value, or every problem why not (motion/checked.h).
+using Compensation2DRead = motion::msg::Checked<Compensation2DFile>;
 /// Plain C++: what the fuzzer drives.
 Compensation2DRead compensation2DFromJson(std::string_view text, std::string_view fileName);
 Compensation2DRead loadCompensation2DFile(const QString& path);

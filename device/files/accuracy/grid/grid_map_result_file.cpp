@@ -70,17 +70,17 @@ std::string gridMapResultToJson(const GridMapResultFile& f)
 
 GridMapResultRead gridMapResultFromJson(std::string_view text, std::string_view fileName)
 {
-    GridMapResultRead out;
+    motion::msg::Problems problems;
     const dev::files::json::ParseResult parsed = dev::files::json::parse(text);
     if (!parsed) {
-        out.problems.push_back(fromParseError(parsed.error, fileName));
-        return out;
+        problems.push_back(fromParseError(parsed.error, fileName));
+        return GridMapResultRead::refused(std::move(problems));
     }
     const Value& root = *parsed.value;
     dev::files::json::Problems p;
     if (!dev::files::json::checkSchema(root, kGridMapResultSchema, kGridMapResultVersion, p)) {
-        addJsonProblems(p, fileName, out.problems);
-        return out;
+        addJsonProblems(p, fileName, problems);
+        return GridMapResultRead::refused(std::move(problems));
     }
     GridMapResultFile f;
     auto& r = f.result;
@@ -135,27 +135,27 @@ GridMapResultRead gridMapResultFromJson(std::string_view text, std::string_view 
     if (auto s = o.string("source", false))
         f.source = *s;
     o.refuseUnknown({"schema", "version", "standard", "placement", "figures", "nodes", "source"});
-    addJsonProblems(p, fileName, out.problems);
-    if (hasErrors(out.problems))
-        return out;
+    addJsonProblems(p, fileName, problems);
+    if (hasErrors(problems))
+        return GridMapResultRead::refused(std::move(problems));
     // The nodes: one regular grid, row by row, as a map is visited and a 2D table kept.
     std::size_t nx = 0;
     while (nx < r.nodes.size() && r.nodes[nx].yMm == r.nodes.front().yMm)
         ++nx;
     const std::size_t n = r.nodes.size();
     if (nx < 2 || n / nx < 2) {
-        out.problems.emplace_back(std::string(fileName), root.position().line, root.position().column, "nodes",
+        problems.emplace_back(std::string(fileName), root.position().line, root.position().column, "nodes",
                                   motion::msg::make("grid.too_few_nodes", {motion::msg::integer("columns", static_cast<long long>(nx)),
                                                                    motion::msg::integer("rows", static_cast<long long>(nx ? n / nx : 0)),
                                                                    motion::msg::integer("min", 2)}));
-        return out;
+        return GridMapResultRead::refused(std::move(problems));
     }
     if (n % nx != 0) {
         const auto pos = nodeValues.back()->position();
-        out.problems.emplace_back(std::string(fileName), pos.line, pos.column, dev::files::json::childPath("nodes", n - 1),
+        problems.emplace_back(std::string(fileName), pos.line, pos.column, dev::files::json::childPath("nodes", n - 1),
                                   motion::msg::make("grid.node_count_wrong", {motion::msg::integer("count", static_cast<long long>(n)),
                                                                       motion::msg::integer("expected", static_cast<long long>((n / nx + 1) * nx))}));
-        return out;
+        return GridMapResultRead::refused(std::move(problems));
     }
     const double x0 = r.nodes.front().xMm, y0 = r.nodes.front().yMm;
     const double px = (r.nodes[nx - 1].xMm - x0) / static_cast<double>(nx - 1);
@@ -165,24 +165,23 @@ GridMapResultRead gridMapResultFromJson(std::string_view text, std::string_view 
         if (!(px > 0) || !(py > 0) || std::abs(r.nodes[k].xMm - gx) > kGridOnGridMm
             || std::abs(r.nodes[k].yMm - gy) > kGridOnGridMm) {
             const auto pos = nodeValues[k]->position();
-            out.problems.emplace_back(std::string(fileName), pos.line, pos.column, dev::files::json::childPath("nodes", k),
+            problems.emplace_back(std::string(fileName), pos.line, pos.column, dev::files::json::childPath("nodes", k),
                                       motion::msg::make("grid.node_off_grid", {motion::msg::real("x", r.nodes[k].xMm, motion::msg::Unit::Mm),
                                                                        motion::msg::real("y", r.nodes[k].yMm, motion::msg::Unit::Mm),
                                                                        motion::msg::real("expected_x", gx, motion::msg::Unit::Mm),
                                                                        motion::msg::real("expected_y", gy, motion::msg::Unit::Mm)}));
-            return out;
+            return GridMapResultRead::refused(std::move(problems));
         }
     }
-    out.file = f;
-    return out;
+    return GridMapResultRead::from(f, std::move(problems));
 }
 
 GridMapResultRead loadGridMapResultFile(const QString& path)
 {
-    GridMapResultRead out;
+    motion::msg::Problems problems;
     std::string name;
-    const auto text = loadText(path, name, out.problems);
-    return text ? gridMapResultFromJson(*text, name) : out;
+    const auto text = loadText(path, name, problems);
+    return text ? gridMapResultFromJson(*text, name) : GridMapResultRead::refused(std::move(problems));
 }
 
 bool saveGridMapResultFile(const QString& path, const GridMapResultFile& f, motion::msg::Message* error)

@@ -4,6 +4,7 @@
 // the decomposition and a row per node (its nominal stage position, its error once
 // the placement is removed, the residual and, for a map read both ways, the
 // reversal). What `compensation fit-2d` reads.
+#include "motion/checked.h"
 #include "device/files/accuracy/file_problem.h"
 #include "motion/metrology/grid/grid_map.h"
 
@@ -25,10 +26,8 @@ struct GridMapResultFile {
 
 std::string gridMapResultToJson(const GridMapResultFile& f);
 
-struct GridMapResultRead {
-    std::optional<GridMapResultFile> file;
-    motion::msg::Problems problems;
-};
+/// The value, or every problem why not (motion/checked.h).
+using GridMapResultRead = motion::msg::Checked<GridMapResultFile>;
 /// Plain C++: what the fuzzer drives. The nodes must lie on one regular grid, row
 /// by row (grid.node_off_grid names the first that does not).
 GridMapResultRead gridMapResultFromJson(std::string_view text, std::string_view fileName);

@@ -76,17 +76,17 @@ std::string stageErrorsToJson(const StageErrors& e)
 
 StageErrorsRead stageErrorsFromJson(std::string_view text, std::string_view fileName)
 {
-    StageErrorsRead out;
+    motion::msg::Problems problems;
     const dev::files::json::ParseResult parsed = dev::files::json::parse(text);
     if (!parsed) {
-        out.problems.push_back(fromParseError(parsed.error, fileName));
-        return out;
+        problems.push_back(fromParseError(parsed.error, fileName));
+        return StageErrorsRead::refused(std::move(problems));
     }
     const Value& root = *parsed.value;
     dev::files::json::Problems p;
     if (!dev::files::json::checkSchema(root, kStageErrorsSchema, kStageErrorsVersion, p)) {
-        addJsonProblems(p, fileName, out.problems);
-        return out;
+        addJsonProblems(p, fileName, problems);
+        return StageErrorsRead::refused(std::move(problems));
     }
     StageErrors e = motion::metrology::builtInStageErrors();
     ObjectReader o(root, "", p);
@@ -106,19 +106,17 @@ StageErrorsRead stageErrorsFromJson(std::string_view text, std::string_view file
     }
     (void)o.string("note", false);  // free text for the record
     o.refuseUnknown({"schema", "version", "x", "y", "squareness_urad", "backlash_um", "note"});
-    addJsonProblems(p, fileName, out.problems);
-    addModelProblems(motion::metrology::validate(e), root, fileName, out.problems);
-    if (!hasErrors(out.problems))
-        out.errors = e;
-    return out;
+    addJsonProblems(p, fileName, problems);
+    addModelProblems(motion::metrology::validate(e), root, fileName, problems);
+    return StageErrorsRead::from(e, std::move(problems));
 }
 
 StageErrorsRead loadStageErrorsFile(const QString& path)
 {
-    StageErrorsRead out;
+    motion::msg::Problems problems;
     std::string name;
-    const auto text = loadText(path, name, out.problems);
-    return text ? stageErrorsFromJson(*text, name) : out;
+    const auto text = loadText(path, name, problems);
+    return text ? stageErrorsFromJson(*text, name) : StageErrorsRead::refused(std::move(problems));
 }
 
 bool saveStageErrorsFile(const QString& path, const StageErrors& e, motion::msg::Message* error)

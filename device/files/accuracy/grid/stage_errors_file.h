@@ -4,6 +4,7 @@
 // What benchpilot-sim --stage-errors FILE and --stage-errors beside --sim read; the
 // model is motion/metrology/grid/stage_errors.h. Members left out keep the
 // built-in stage's errors (builtInStageErrors()).
+#include "motion/checked.h"
 #include "device/files/accuracy/file_problem.h"
 #include "motion/metrology/grid/stage_errors.h"
 
@@ -18,10 +19,8 @@ namespace dev::files::accuracy {
 constexpr const char* kStageErrorsSchema = "benchpilot.stage-errors";
 constexpr int kStageErrorsVersion = 1;
 
-struct StageErrorsRead {
-    std::optional<motion::metrology::StageErrors> errors;
-    motion::msg::Problems problems;
-};
+/// The value, or every problem why not (motion/checked.h).
+using StageErrorsRead = motion::msg::Checked<motion::metrology::StageErrors>;
 
 std::string stageErrorsToJson(const motion::metrology::StageErrors& e);
 /// Plain C++: what the fuzzer drives.
