@@ -48,12 +48,13 @@ struct FoundLine {
 };
 
 /// The line nearest the centre, or why not: imaging.line.image_too_small,
-/// imaging.line.not_found (blank glass, out of focus), imaging.line.ambiguous,
-/// imaging.line.fit_failed.
+/// imaging.line.not_found (blank glass, out of focus, a smudge wider than
+/// maxSigmaPx), imaging.line.ambiguous.
 motion::msg::Checked<FoundLine> findLine(const ImageF& image, const LineFinderOptions& options = {});
 motion::msg::Checked<FoundLine> findLine(const ImageU16& image, const LineFinderOptions& options = {});
 
-/// The same on a profile already averaged along the line (centre at (n − 1) / 2).
+/// The same on a profile already averaged along the line (centre at (n − 1) / 2);
+/// imaging.line.too_short below 16 samples.
 motion::msg::Checked<FoundLine> findLineInProfile(const std::vector<double>& profile, const LineFinderOptions& options = {});
 
 } // namespace imaging
