@@ -27,19 +27,22 @@ ImageF binned(const Plane<T>& im, int bin)
     const int bw = im.width / bin, bh = im.height / bin;
     ImageF out(bw, bh, 0.0f);
     const float norm = 1.0f / static_cast<float>(bin * bin);
+    // Rows summed first (vectorised, in memory order), then their columns in groups.
+    std::vector<float> acc(static_cast<std::size_t>(bw * bin));
     for (int by = 0; by < bh; ++by) {
-        float* o = out.row(by);
+        std::fill(acc.begin(), acc.end(), 0.0f);
         for (int k = 0; k < bin; ++k) {
             const T* row = im.row(by * bin + k);
-            for (int bx = 0; bx < bw; ++bx) {
-                float acc = 0;
-                for (int j = 0; j < bin; ++j)
-                    acc += static_cast<float>(row[bx * bin + j]);
-                o[bx] += acc;
-            }
+            for (std::size_t x = 0; x < acc.size(); ++x)
+                acc[x] += static_cast<float>(row[x]);
         }
-        for (int bx = 0; bx < bw; ++bx)
-            o[bx] *= norm;
+        float* o = out.row(by);
+        for (int bx = 0; bx < bw; ++bx) {
+            float v = 0;
+            for (int j = 0; j < bin; ++j)
+                v += acc[static_cast<std::size_t>(bx * bin + j)];
+            o[bx] = v * norm;
+        }
     }
     return out;
 }
@@ -218,7 +221,9 @@ Checked<FoundDot> findDotIn(const Plane<T>& im, const DotFinderOptions& o)
     };
     std::vector<Measured> dots;
     for (const Region& r : regions) {
-        if (dots.size() >= 2 && dist(r) > dots[1].distance + 2 * bin + 2)
+        // Another dot is measured only when its coarse centre (within a binned pixel
+        // or two) could make it as near as the nearest one.
+        if (!dots.empty() && dist(r) > dots[0].distance + o.ambiguousPx + 2 * bin + 2)
             break;
         const double radius = std::sqrt(r.area * bin * bin / M_PI);
         Refined d = refineDot(im, fullX(r), fullY(r), radius, sign);
