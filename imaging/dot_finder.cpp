@@ -100,9 +100,9 @@ struct Refined {
     double x = 0, y = 0, mass = 0, depth = 0, background = 0;
 };
 
-// Centroid of the background-subtracted intensity in a window around (x, y): the
-// background is a plane fitted to the window's two-pixel border; the window is
-// re-centred on each answer until it stops moving.
+// Centroid of the depth below (or height above) the background, as a share of it, in
+// a window around (x, y): the background is a quadratic surface fitted to the window's
+// two-pixel border; the window is re-centred on each answer until it stops moving.
 template <class T>
 Refined refineDot(const Plane<T>& im, double x, double y, double radiusPx, double sign)
 {
@@ -117,26 +117,40 @@ Refined refineDot(const Plane<T>& im, double x, double y, double radiusPx, doubl
             r.status = Refined::AtEdge;
             return r;
         }
-        Eigen::Matrix3d n = Eigen::Matrix3d::Zero();
-        Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+        // The background: a quadratic surface through the border (vignetting is
+        // curved; a plane would pull the centre towards the image's middle).
+        const double sc = 1.0 / half;
+        const auto basis = [&](int xx, int yy) {
+            const double u = (xx - cx) * sc, v = (yy - cy) * sc;
+            Eigen::Matrix<double, 6, 1> a;
+            a << 1, u, v, u * u, u * v, v * v;
+            return a;
+        };
+        Eigen::Matrix<double, 6, 6> n = Eigen::Matrix<double, 6, 6>::Zero();
+        Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
         for (int yy = y0; yy <= y1; ++yy) {
             const bool rowBorder = yy < y0 + 2 || yy > y1 - 2;
             const T* row = im.row(yy);
             for (int xx = x0; xx <= x1; ++xx) {
                 if (!rowBorder && xx >= x0 + 2 && xx <= x1 - 2)
                     continue;
-                const Eigen::Vector3d a(1, xx - cx, yy - cy);
-                n += a * a.transpose();
+                const Eigen::Matrix<double, 6, 1> a = basis(xx, yy);
+                n.noalias() += a * a.transpose();
                 rhs += a * static_cast<double>(row[xx]);
             }
         }
-        const Eigen::Vector3d plane = n.ldlt().solve(rhs);
+        const Eigen::Matrix<double, 6, 1> bgq = n.ldlt().solve(rhs);
+        // Weights relative to the background, so a dot dimmed on one side by vignetting
+        // weighs the same all over.
         double sum = 0, sx = 0, sy = 0;
         for (int yy = y0; yy <= y1; ++yy) {
             const T* row = im.row(yy);
-            const double base = plane(0) + plane(2) * (yy - cy);
+            const double v = (yy - cy) * sc;
+            const double c0 = bgq(0) + bgq(2) * v + bgq(5) * v * v, c1 = bgq(1) + bgq(4) * v;
             for (int xx = x0; xx <= x1; ++xx) {
-                const double w = sign * (static_cast<double>(row[xx]) - base - plane(1) * (xx - cx));
+                const double u = (xx - cx) * sc;
+                const double base = c0 + c1 * u + bgq(3) * u * u;
+                const double w = sign * (static_cast<double>(row[xx]) - base) / std::max(std::abs(base), 1e-9);
                 sum += w;
                 sx += w * xx;
                 sy += w * yy;
@@ -149,7 +163,7 @@ Refined refineDot(const Plane<T>& im, double x, double y, double radiusPx, doubl
         r.x = nx;
         r.y = ny;
         r.mass = sum;
-        r.background = plane(0);
+        r.background = bgq(0);
         if (moved < 1e-4 && iter > 0)
             break;
     }
@@ -159,7 +173,7 @@ Refined refineDot(const Plane<T>& im, double x, double y, double radiusPx, doubl
     for (int yy = cy - 1; yy <= cy + 1; ++yy)
         for (int xx = cx - 1; xx <= cx + 1; ++xx)
             d += sign * (static_cast<double>(im.at(xx, yy)) - r.background);
-    r.depth = d / 9;
+    r.depth = d / 9 / std::max(std::abs(r.background), 1e-9);  // as a share of the background
     return r;
 }
 
@@ -240,7 +254,7 @@ Checked<FoundDot> findDotIn(const Plane<T>& im, const DotFinderOptions& o)
     FoundDot out;
     out.xPx = m.dot.x - cx;
     out.yPx = m.dot.y - cy;
-    out.contrast = m.dot.depth / std::max(std::abs(m.dot.background), 1e-12);
+    out.contrast = m.dot.depth;
     out.diameterPx = m.dot.depth > 0 ? 2 * std::sqrt(m.dot.mass / (m.dot.depth * M_PI)) : 0;
     out.dark = sign < 0;
     return Checked<FoundDot>::ok(out);

@@ -4,9 +4,9 @@
 // Method: the image is binned 4 × 4 and its dots found as connected regions deeper
 // (or brighter) than half the strongest one and than the contrast and noise floors;
 // the region nearest the centre is measured at full resolution in a square window
-// around it: a plane fitted to the window's border is taken as the background, and
-// the centre is the centroid of the background-subtracted intensity, re-centred on
-// the window until it stops moving.
+// around it: a quadratic surface fitted to the window's border is taken as the
+// background (vignetting is curved), and the centre is the centroid of the depth below
+// it as a share of it, the window re-centred on each answer until it stops moving.
 //
 // Pixel (i, j) has its centre at (i, j); the image centre is ((w − 1) / 2, (h − 1) / 2).
 // Plain C++ (no Qt).
