@@ -95,7 +95,7 @@ std::vector<Region> regionsAbove(const ImageF& b, double bg, double sign, double
     return out;
 }
 
-struct Refined {
+struct RefinedDot {
     enum { Ok, AtEdge } status = Ok;
     double x = 0, y = 0, mass = 0, depth = 0, background = 0;
 };
@@ -104,17 +104,17 @@ struct Refined {
 // a window around (x, y): the background is a quadratic surface fitted to the window's
 // two-pixel border; the window is re-centred on each answer until it stops moving.
 template <class T>
-Refined refineDot(const Plane<T>& im, double x, double y, double radiusPx, double sign)
+RefinedDot refineDot(const Plane<T>& im, double x, double y, double radiusPx, double sign)
 {
     const int half = static_cast<int>(std::ceil(radiusPx + std::max(4.0, 0.5 * radiusPx) + 2));
-    Refined r;
+    RefinedDot r;
     r.x = x;
     r.y = y;
     for (int iter = 0; iter < 12; ++iter) {
         const int cx = static_cast<int>(std::lround(r.x)), cy = static_cast<int>(std::lround(r.y));
         const int x0 = cx - half, x1 = cx + half, y0 = cy - half, y1 = cy + half;
         if (x0 < 0 || y0 < 0 || x1 >= im.width || y1 >= im.height) {
-            r.status = Refined::AtEdge;
+            r.status = RefinedDot::AtEdge;
             return r;
         }
         // The background: a quadratic surface through the border (vignetting is
@@ -229,7 +229,7 @@ Checked<FoundDot> findDotIn(const Plane<T>& im, const DotFinderOptions& o)
     std::sort(regions.begin(), regions.end(), [&](const Region& a, const Region& c) { return dist(a) < dist(c); });
 
     struct Measured {
-        Refined dot;
+        RefinedDot dot;
         double distance;
         bool cutByFrame;
     };
@@ -240,8 +240,8 @@ Checked<FoundDot> findDotIn(const Plane<T>& im, const DotFinderOptions& o)
         if (!dots.empty() && dist(r) > dots[0].distance + o.ambiguousPx + 2 * bin + 2)
             break;
         const double radius = std::sqrt(r.area * bin * bin / M_PI);
-        Refined d = refineDot(im, fullX(r), fullY(r), radius, sign);
-        const bool cut = r.touchesEdge || d.status == Refined::AtEdge;
+        RefinedDot d = refineDot(im, fullX(r), fullY(r), radius, sign);
+        const bool cut = r.touchesEdge || d.status == RefinedDot::AtEdge;
         dots.push_back({d, std::hypot(d.x - cx, d.y - cy), cut});
         std::sort(dots.begin(), dots.end(), [](const Measured& a, const Measured& c) { return a.distance < c.distance; });
     }

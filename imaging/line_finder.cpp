@@ -119,16 +119,16 @@ LineFit fitLineGaussian(const std::vector<double>& p, int lo, int hi, double mu0
     return f;
 }
 
-struct Candidate {
+struct LineCandidate {
     int peak = 0;
     double strength = 0;  // smoothed depth or height against the median, profile units
     double sign = -1;     // −1 dark, +1 bright
 };
 
 // Local maxima of sign·(s − bg) above `floor`, closer ones merged into the stronger.
-std::vector<Candidate> peaksOf(const std::vector<double>& s, double bg, double sign, double floor, int mergePx)
+std::vector<LineCandidate> peaksOf(const std::vector<double>& s, double bg, double sign, double floor, int mergePx)
 {
-    std::vector<Candidate> out;
+    std::vector<LineCandidate> out;
     const int n = static_cast<int>(s.size());
     for (int i = 1; i + 1 < n; ++i) {
         const double v = sign * (s[static_cast<std::size_t>(i)] - bg);
@@ -146,7 +146,7 @@ std::vector<Candidate> peaksOf(const std::vector<double>& s, double bg, double s
 
 // The candidate fitted where it stands: its window spans the line and some background
 // each side, re-centred once on the first answer.
-LineFit fitCandidate(const std::vector<double>& p, const std::vector<double>& smooth, double bg, const Candidate& c,
+LineFit fitCandidate(const std::vector<double>& p, const std::vector<double>& smooth, double bg, const LineCandidate& c,
                      double smoothSigma)
 {
     const int n = static_cast<int>(p.size());
@@ -190,19 +190,19 @@ Checked<FoundLine> findLineInProfile(const std::vector<double>& p, const LineFin
     const double floor = std::max(o.minContrast * scale, o.minSnr * noise);
     const int mergePx = static_cast<int>(std::ceil(2 * o.smoothSigmaPx + 2));
 
-    std::vector<Candidate> cands;
+    std::vector<LineCandidate> cands;
     double best = 0;  // the deepest smoothed deviation, for the failure's contrast
     for (double sign : {-1.0, 1.0}) {
         if ((o.polarity == Polarity::Dark && sign > 0) || (o.polarity == Polarity::Bright && sign < 0))
             continue;
         for (double v : s)
             best = std::max(best, sign * (v - bg));
-        std::vector<Candidate> c = peaksOf(s, bg, sign, floor, mergePx);
+        std::vector<LineCandidate> c = peaksOf(s, bg, sign, floor, mergePx);
         if (o.polarity == Polarity::Either && !cands.empty() && !c.empty()) {
             // Either: the polarity whose strongest candidate is stronger.
-            auto strongest = [](const std::vector<Candidate>& v) {
+            auto strongest = [](const std::vector<LineCandidate>& v) {
                 double m = 0;
-                for (const Candidate& k : v)
+                for (const LineCandidate& k : v)
                     m = std::max(m, k.strength);
                 return m;
             };
@@ -213,14 +213,14 @@ Checked<FoundLine> findLineInProfile(const std::vector<double>& p, const LineFin
         if (cands.empty())
             cands = std::move(c);
     }
-    std::sort(cands.begin(), cands.end(), [&](const Candidate& a, const Candidate& b) { return std::abs(a.peak - centre) < std::abs(b.peak - centre); });
+    std::sort(cands.begin(), cands.end(), [&](const LineCandidate& a, const LineCandidate& b) { return std::abs(a.peak - centre) < std::abs(b.peak - centre); });
 
     struct Fitted {
         LineFit fit;
         double distance;
     };
     std::vector<Fitted> lines;
-    for (const Candidate& c : cands) {
+    for (const LineCandidate& c : cands) {
         // Fitted until two are known and the next cannot come nearer than the second.
         if (lines.size() >= 2 && std::abs(c.peak - centre) > lines[1].distance + 2)
             break;
