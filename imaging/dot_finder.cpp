@@ -96,7 +96,7 @@ std::vector<Region> regionsAbove(const ImageF& b, double bg, double sign, double
 }
 
 struct RefinedDot {
-    enum { Ok, AtEdge } status = Ok;
+    enum { Ok, AtEdge, Lost } status = Ok;
     double x = 0, y = 0, mass = 0, depth = 0, background = 0;
 };
 
@@ -156,8 +156,12 @@ RefinedDot refineDot(const Plane<T>& im, double x, double y, double radiusPx, do
                 sy += w * yy;
             }
         }
-        if (!(sum > 0))
-            break;
+        if (!(sum > 0)) {
+            // Nothing darker (or brighter) than the background in the window: noise
+            // that passed the coarse search, not a dot.
+            r.status = RefinedDot::Lost;
+            return r;
+        }
         const double nx = sx / sum, ny = sy / sum;
         const double moved = std::hypot(nx - r.x, ny - r.y);
         r.x = nx;
@@ -241,10 +245,14 @@ Checked<FoundDot> findDotIn(const Plane<T>& im, const DotFinderOptions& o)
             break;
         const double radius = std::sqrt(r.area * bin * bin / M_PI);
         RefinedDot d = refineDot(im, fullX(r), fullY(r), radius, sign);
+        if (d.status == RefinedDot::Lost)
+            continue;
         const bool cut = r.touchesEdge || d.status == RefinedDot::AtEdge;
         dots.push_back({d, std::hypot(d.x - cx, d.y - cy), cut});
         std::sort(dots.begin(), dots.end(), [](const Measured& a, const Measured& c) { return a.distance < c.distance; });
     }
+    if (dots.empty())
+        return notFound(peak / scale);
     const Measured& m = dots[0];
     if (dots.size() >= 2 && dots[1].distance - m.distance < o.ambiguousPx) {
         return Checked<FoundDot>::fail(motion::msg::make("imaging.dot.ambiguous", {motion::msg::real("first", m.distance), motion::msg::real("second", dots[1].distance)}));
