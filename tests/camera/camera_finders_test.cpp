@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 using namespace dev::camera;
@@ -56,6 +57,7 @@ TEST(CameraFinders, FindTheSimulatedScalesGraduationsWhereTheyAre)
         ASSERT_TRUE(found.ok()) << found.error().id;
         double u = 0, v = 0;
         imageOffsetOf(g, 12.3, wy, wx, wy, &u, &v);
+        std::printf("X scale: line at %.4f px, truth %.4f px\n", found->offsetPx, u);
         EXPECT_NEAR(found->offsetPx, u, 0.1);
         EXPECT_TRUE(found->dark);
     }
@@ -66,6 +68,7 @@ TEST(CameraFinders, FindTheSimulatedScalesGraduationsWhereTheyAre)
         ASSERT_TRUE(found.ok()) << found.error().id;
         double u = 0, v = 0;
         imageOffsetOf(g, wx, 37.4, wx, wy, &u, &v);
+        std::printf("Y scale: line at %.4f px, truth %.4f px\n", found->offsetPx, v);
         EXPECT_NEAR(found->offsetPx, v, 0.1);
     }
 }
@@ -83,6 +86,7 @@ TEST(CameraFinders, FindTheSimulatedGridPlatesDotWhereItIs)
     ASSERT_TRUE(found.ok()) << found.error().id;
     double u = 0, v = 0;
     imageOffsetOf(g, dx, dy, wx, wy, &u, &v);
+    std::printf("grid plate: dot at (%.4f, %.4f) px, truth (%.4f, %.4f) px\n", found->xPx, found->yPx, u, v);
     EXPECT_NEAR(found->xPx, u, 0.1);
     EXPECT_NEAR(found->yPx, v, 0.1);
     EXPECT_NEAR(found->diameterPx, kGridPlateDotDiameterMm * 1000 / g.pixelUm, 5);
