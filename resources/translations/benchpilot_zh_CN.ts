@@ -11875,6 +11875,46 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <comment>imaging.positions.no_tiles</comment>
         <translation>%1 中尚无已拍摄的图块</translation>
     </message>
+    <message>
+        <source>the image is %1 × %2 pixels: finding a line needs at least %3 pixels each way</source>
+        <comment>imaging.line.image_too_small</comment>
+        <translation>图像为 %1 × %2 像素：寻找刻线要求每个方向至少 %3 像素</translation>
+    </message>
+    <message>
+        <source>the profile has %1 samples: finding a line needs at least %2</source>
+        <comment>imaging.line.too_short</comment>
+        <translation>轮廓只有 %1 个采样点：寻找刻线至少需要 %2 个</translation>
+    </message>
+    <message>
+        <source>no graduation line found: the strongest mark stands out by %1 and a line needs %2 (blank glass, or out of focus)</source>
+        <comment>imaging.line.not_found</comment>
+        <translation>未找到刻线：最明显的标记对比度为 %1，而刻线需要 %2（空白玻璃，或未对焦）</translation>
+    </message>
+    <message>
+        <source>two lines are equally near the image centre (at %1 px and %2 px from it): which one to read cannot be told</source>
+        <comment>imaging.line.ambiguous</comment>
+        <translation>两条刻线离图像中心一样近（距中心 %1 px 和 %2 px）：无法判断读哪一条</translation>
+    </message>
+    <message>
+        <source>the image is %1 × %2 pixels: finding a dot needs at least %3 pixels each way</source>
+        <comment>imaging.dot.image_too_small</comment>
+        <translation>图像为 %1 × %2 像素：寻找圆点要求每个方向至少 %3 像素</translation>
+    </message>
+    <message>
+        <source>no dot found: the strongest mark stands out by %1 and a dot needs %2 (blank glass, or out of focus)</source>
+        <comment>imaging.dot.not_found</comment>
+        <translation>未找到圆点：最明显的标记对比度为 %1，而圆点需要 %2（空白玻璃，或未对焦）</translation>
+    </message>
+    <message>
+        <source>two dots are equally near the image centre (%1 px and %2 px from it): which one to read cannot be told</source>
+        <comment>imaging.dot.ambiguous</comment>
+        <translation>两个圆点离图像中心一样近（距中心 %1 px 和 %2 px）：无法判断读哪一个</translation>
+    </message>
+    <message>
+        <source>the dot nearest the centre (%1 px, %2 px from it) is cut by the edge of the image: its centre cannot be measured</source>
+        <comment>imaging.dot.at_edge</comment>
+        <translation>离中心最近的圆点（距中心 %1 px，%2 px）被图像边缘截断：无法测量其中心</translation>
+    </message>
 </context>
 <context>
     <name>ui::words::PatternWords</name>

@@ -2,12 +2,18 @@
 // Goals (docs/stitching.md, "Speed"): one 2048 × 2048 pair registered in ≤ 60 ms on
 // one core; a 10 × 10 grid of 2048² 16-bit tiles with 10 % overlap registered, placed
 // and fused into a pyramidal OME-TIFF in ≤ 20 s on two cores with a peak memory
-// ≤ 1.5 GB; global placement after the last tile (the live delay) ≤ 2 s.
+// ≤ 1.5 GB; global placement after the last tile (the live delay) ≤ 2 s; the line or
+// the dot nearest the centre of a 2048² image found in ≤ 5 ms each.
 // Counters (the pair's time is the Time column): registration_s, placement_ms, fusion_s, peak_rss_mb, rms_error_px.
-// BP_BENCH_SHORT=1 (CTest's short run) uses a 4 × 4 grid of 512² tiles instead.
+// BP_BENCH_SHORT=1 (CTest's short run) uses a 4 × 4 grid of 512² tiles instead, and
+// finds the line and the dot in 512² images.
+#include "imaging/dot_finder.h"
+#include "imaging/line_finder.h"
 #include "imaging/registration.h"
 #include "imaging/stitch.h"
 #include "imaging/tiff_write.h"
+
+#include "tests/imaging/marks.h"
 
 #include <benchmark/benchmark.h>
 
@@ -88,6 +94,52 @@ void BM_RegisterPair2048(benchmark::State& state)
     state.counters["ncc"] = r.ncc;
 }
 BENCHMARK(BM_RegisterPair2048)->Unit(benchmark::kMillisecond);
+
+// A glass scale under the camera: lines 6 px wide every 150 px, blurred, 1 % noise.
+void BM_FindLine2048(benchmark::State& state)
+{
+    static const int size = shortRun() ? 512 : 2048;
+    const double truth = 4.37;
+    static const imaging::ImageU16 im = [&] {
+        std::vector<imagingtest::LineMark> lines;
+        for (int k = -size / 300; k <= size / 300; ++k)
+            lines.push_back({0.5 * (size - 1) + truth + 150 * k, 6});
+        return imagingtest::renderLines(size, size, true, lines, 1.5, 200, 21);
+    }();
+    imaging::LineFinderOptions o;
+    o.direction = imaging::LineDirection::Vertical;
+    double offset = 0;
+    for (auto _ : state) {
+        const auto found = imaging::findLine(im, o);
+        offset = found.ok() ? found->offsetPx : NAN;
+        benchmark::DoNotOptimize(offset);
+    }
+    state.counters["error_px"] = std::abs(offset - truth);
+}
+BENCHMARK(BM_FindLine2048)->Unit(benchmark::kMillisecond);
+
+// A grid plate under the camera: dots 60 px across every 400 px, blurred, 1 % noise.
+void BM_FindDot2048(benchmark::State& state)
+{
+    static const int size = shortRun() ? 512 : 2048;
+    const double tx = -3.21, ty = 6.58;
+    static const imaging::ImageU16 im = [&] {
+        std::vector<imagingtest::DotMark> dots;
+        for (int j = -size / 1000; j <= size / 1000; ++j)
+            for (int i = -size / 1000; i <= size / 1000; ++i)
+                dots.push_back({0.5 * (size - 1) + tx + 400 * i, 0.5 * (size - 1) + ty + 400 * j, 30});
+        return imagingtest::renderDots(size, size, dots, 1.5, 200, 22);
+    }();
+    double ex = 0, ey = 0;
+    for (auto _ : state) {
+        const auto found = imaging::findDot(im);
+        ex = found.ok() ? found->xPx - tx : NAN;
+        ey = found.ok() ? found->yPx - ty : NAN;
+        benchmark::DoNotOptimize(ex);
+    }
+    state.counters["error_px"] = std::hypot(ex, ey);
+}
+BENCHMARK(BM_FindDot2048)->Unit(benchmark::kMillisecond);
 
 void BM_StitchGrid10x10(benchmark::State& state)
 {

@@ -1,5 +1,5 @@
 // Words for the imaging.* ids (docs/stitching.md, "Messages"): tile files, the
-// mosaic, TileConfiguration and run-log positions. One row per id, the English
+// mosaic, TileConfiguration and run-log positions, and the line and dot finders. One row per id, the English
 // source with %1, %2 … for the arguments named beside it (word_table.h).
 #include "widgets/wording/areas.h"
 #include "widgets/wording/word_table.h"
@@ -31,6 +31,14 @@ const Row kRows[] = {
     {"imaging.positions.bad_image_name", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "'%1' is not a file name in the folder (empty, or with a folder in it)", "imaging.positions.bad_image_name"), "file"},
     {"imaging.positions.duplicate", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "%1 (or its tile number) is taken twice in the log", "imaging.positions.duplicate"), "file"},
     {"imaging.positions.no_tiles", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "%1 records no tile taken yet", "imaging.positions.no_tiles"), "file"},
+    {"imaging.line.image_too_small", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the image is %1 × %2 pixels: finding a line needs at least %3 pixels each way", "imaging.line.image_too_small"), "width,height,minimum"},
+    {"imaging.line.too_short", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the profile has %1 samples: finding a line needs at least %2", "imaging.line.too_short"), "length,minimum"},
+    {"imaging.line.not_found", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "no graduation line found: the strongest mark stands out by %1 and a line needs %2 (blank glass, or out of focus)", "imaging.line.not_found"), "contrast,minimum"},
+    {"imaging.line.ambiguous", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "two lines are equally near the image centre (at %1 px and %2 px from it): which one to read cannot be told", "imaging.line.ambiguous"), "first,second"},
+    {"imaging.dot.image_too_small", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the image is %1 × %2 pixels: finding a dot needs at least %3 pixels each way", "imaging.dot.image_too_small"), "width,height,minimum"},
+    {"imaging.dot.not_found", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "no dot found: the strongest mark stands out by %1 and a dot needs %2 (blank glass, or out of focus)", "imaging.dot.not_found"), "contrast,minimum"},
+    {"imaging.dot.ambiguous", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "two dots are equally near the image centre (%1 px and %2 px from it): which one to read cannot be told", "imaging.dot.ambiguous"), "first,second"},
+    {"imaging.dot.at_edge", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the dot nearest the centre (%1 px, %2 px from it) is cut by the edge of the image: its centre cannot be measured", "imaging.dot.at_edge"), "x,y"},
 };
 // clang-format on
 
