@@ -61,7 +61,6 @@
 namespace app {
 namespace {
 /// Each instrument's group in the settings, in instrument order (0 analyzer, 1 stage).
-constexpr const char* kSettingsKeys[] = {"analyzer", "stage"};
 
 /// A screen's scroll area: it asks for all its screen needs up to what a 1366 × 768 laptop
 /// leaves a screen beside the navigation, the connections, the event log and the status bar
@@ -111,7 +110,6 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     setWindowTitle(tr("BenchPilot"));
     m_longMoves = new LongMoveQuestion(this, m_options.answer);
     ui::InputPolicy::install();  // the wheel turns only a focused spin box or combo, on every screen
-    static_assert(std::size(kSettingsKeys) == kInstrumentCount, "a settings group per instrument");
     const dev::proto::DeviceKind kinds[kInstrumentCount] = {dev::proto::DeviceKind::Analyzer, dev::proto::DeviceKind::Stage};
     for (int i = 0; i < kInstrumentCount; ++i)
         m_instruments[i].session = new InstrumentSession(kinds[i], instrumentTitle(i), this);
@@ -621,165 +619,6 @@ void MainWindow::resetEStop()
             slot.session->instrument()->reset();
     m_banner->withdraw(QStringLiteral("estop"));
     m_banner->show(ui::MessageBanner::Level::Info, [] { return tr("E-stop cleared. Re-home the axes if anything was moved by hand."); });
-}
-
-void MainWindow::buildLanguageMenu()
-{
-    m_settingsMenu = menuBar()->addMenu(QString());
-    m_languageMenu = m_settingsMenu->addMenu(QString());
-    m_languages = new QActionGroup(this);
-    // The languages are named in their own words, so a person who cannot read the
-    // current one still finds theirs.
-    const std::pair<QString, QString> entries[] = {{QStringLiteral("system"), QString()},
-                                                   {QStringLiteral("en"), QStringLiteral("English")},
-                                                   {QStringLiteral("zh_CN"), QStringLiteral("简体中文")}};
-    for (const auto& [code, name] : entries) {
-        QAction* a = m_languageMenu->addAction(name);
-        a->setData(code);
-        a->setCheckable(true);
-        m_languages->addAction(a);
-        connect(a, &QAction::triggered, this, [this, code = code] { setLanguage(code); });
-    }
-    QSettings st;
-    m_languageSetting = m_options.persistSettings ? st.value(QStringLiteral("language"), QStringLiteral("system")).toString()
-                                                  : m_options.translators->language();
-    menuBar()->addMenu(new HelpMenu(this));
-}
-
-void MainWindow::setLanguage(const QString& language)
-{
-    m_languageSetting = language;
-    if (m_options.persistSettings)
-        QSettings().setValue(QStringLiteral("language"), language);
-    if (m_options.translators) {
-        const QString before = m_options.translators->language();
-        m_options.translators->setLanguage(language);  // LanguageChange reaches every widget
-        // Texts the screens set once with tr() are reworded here, after the widgets that
-        // word themselves on LanguageChange have done so (what they keep from before, a
-        // device's description say, is reworded with the rest); the texts screens build
-        // as things change come in the new language by themselves.
-        QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
-        ui::Retranslator::retranslate(QApplication::topLevelWidgets(), before, m_options.translators->language());
-    }
-    retranslateUi();
-}
-
-void MainWindow::retranslateUi()
-{
-    setWindowTitle(tr("BenchPilot"));
-    for (const auto& reword : m_connectionTexts)
-        reword();
-    const std::pair<const char*, QString> titles[] = {
-        {"jog", tr("Jog")},         {"plots", tr("Plots")},         {"profiles", tr("Profiles")},
-        {"tuning", tr("Tuning")},   {"joystick", tr("Joystick")},   {"patterns", tr("Patterns")},
-        {"plates", tr("Plates")},   {"scan", tr("Scan")},
-    };
-    for (int i = 0; i < m_screenNames.size() && i < m_nav->count(); ++i)
-        for (const auto& [name, title] : titles)
-            if (m_screenNames[i] == QLatin1String(name))
-                m_nav->item(i)->setText(title);
-    for (int i = 0; i < kInstrumentCount; ++i) {
-        m_instruments[i].bar->setTitle(instrumentTitle(i));
-        if (m_hub)
-            m_hub->setInstrumentName(i, m_instruments[i].session->name());
-        if (m_tuning)
-            m_tuning->renameInstrument(i, m_instruments[i].session->name());
-        if (m_jogTabs && m_jogTabs->count() >= kInstrumentCount)
-            m_jogTabs->setTabText(i, instrumentTitle(i));
-    }
-    m_reset->setText(tr("Reset E-stop"));
-    m_reset->setToolTip(tr("Clear the E-stop latch on both instruments (axes stay where they are)"));
-    m_estop->setText(tr("E-STOP\n(Esc)"));
-    m_estop->setToolTip(tr("Stop all motion on both instruments at once (Esc, from any screen)"));
-    if (m_logDock)
-        m_logDock->setWindowTitle(tr("Event log"));
-    if (m_settingsMenu) {
-        m_settingsMenu->setTitle(tr("&Settings"));
-        m_languageMenu->setTitle(tr("&Language"));
-        for (QAction* a : m_languages->actions()) {
-            if (a->data().toString() == QLatin1String("system"))
-                a->setText(tr("System default"));
-            a->setChecked(a->data().toString() == m_languageSetting);
-        }
-    }
-    updateStatusBar();
-}
-
-void MainWindow::changeEvent(QEvent* event)
-{
-    if (event->type() == QEvent::LanguageChange)
-        retranslateUi();
-    // A hold whose key-up went to another application must not keep the machine moving.
-    if (event->type() == QEvent::ActivationChange && !isActiveWindow())
-        for (const auto& slot : m_instruments)
-            slot.session->instrument()->stopAllJogs();
-    QMainWindow::changeEvent(event);
-}
-
-void MainWindow::loadSettings()
-{
-    QSettings st;
-    restoreGeometry(st.value(QStringLiteral("window/geometry")).toByteArray());
-    restoreState(st.value(QStringLiteral("window/state")).toByteArray());
-    for (int i = 0; i < kInstrumentCount; ++i) {
-        st.beginGroup(QStringLiteral("connection/%1").arg(QLatin1String(kSettingsKeys[i])));
-        ui::ConnectionChoice c;
-        c.simulator = st.value(QStringLiteral("simulator"), true).toBool();
-        c.port = st.value(QStringLiteral("port")).toString();
-        c.serialNumber = st.value(QStringLiteral("serial_number")).toString();
-        c.baud = st.value(QStringLiteral("baud"), 115200).toInt();
-        c.profile = st.value(QStringLiteral("profile")).toString();
-        for (const QString& path : st.value(QStringLiteral("profiles")).toStringList())
-            m_instruments[i].bar->addProfile(path, false);
-        st.endGroup();
-        m_instruments[i].bar->setChoice(c);
-        m_instruments[i].jog->setSpeedFraction(st.value(QStringLiteral("jog/%1/speed").arg(QLatin1String(kSettingsKeys[i])), 0.2).toDouble());
-    }
-    m_motion->load(st);
-    m_nav->setCurrentRow(std::clamp(st.value(QStringLiteral("window/screen"), 0).toInt(), 0, m_nav->count() - 1));
-    QString scanError;
-    const QString scanPlan = st.value(QStringLiteral("scan/plan")).toString();
-    if (!scanPlan.isEmpty() && !m_scan->setPlanText(scanPlan, &scanError))
-        m_log->addNote(tr("Scan"), tr("settings"), tr("the last scan plan did not load: %1").arg(scanError), true);
-    if (st.contains(QStringLiteral("scan/folder")))
-        m_scan->setOutputFolder(st.value(QStringLiteral("scan/folder")).toString());
-    m_camera->setRecentSources(st.value(QStringLiteral("camera/recent")).toStringList());
-    m_camera->setSource(st.value(QStringLiteral("camera/source"), QStringLiteral("sim")).toString());
-    m_camera->setExposureMs(st.value(QStringLiteral("camera/exposure_ms"), 10.0).toDouble());
-    m_camera->setAutoContrast(st.value(QStringLiteral("camera/auto_contrast"), true).toBool());
-    m_scan->setTakesImages(st.value(QStringLiteral("scan/take_images"), false).toBool());
-    m_jogTabs->setCurrentIndex(std::clamp(st.value(QStringLiteral("window/instrument"), 0).toInt(), 0, 1));
-    m_tuning->restoreState(st.value(QStringLiteral("tuning/state")).toMap());
-}
-
-void MainWindow::saveSettings()
-{
-    QSettings st;
-    st.setValue(QStringLiteral("window/geometry"), saveGeometry());
-    st.setValue(QStringLiteral("window/state"), saveState());
-    st.setValue(QStringLiteral("window/screen"), m_nav->currentRow());
-    st.setValue(QStringLiteral("window/instrument"), m_jogTabs->currentIndex());
-    st.setValue(QStringLiteral("tuning/state"), m_tuning->saveState());
-    m_motion->save(st);
-    st.setValue(QStringLiteral("scan/plan"), m_scan->planText());
-    st.setValue(QStringLiteral("scan/folder"), m_scan->outputFolder());
-    st.setValue(QStringLiteral("scan/take_images"), m_scan->takesImages());
-    st.setValue(QStringLiteral("camera/source"), m_camera->source());
-    st.setValue(QStringLiteral("camera/recent"), m_camera->recentSources());
-    st.setValue(QStringLiteral("camera/exposure_ms"), m_camera->exposureMs());
-    st.setValue(QStringLiteral("camera/auto_contrast"), m_camera->autoContrast());
-    for (int i = 0; i < kInstrumentCount; ++i) {
-        const ui::ConnectionChoice c = m_instruments[i].session->choice();
-        st.beginGroup(QStringLiteral("connection/%1").arg(QLatin1String(kSettingsKeys[i])));
-        st.setValue(QStringLiteral("simulator"), c.simulator);
-        st.setValue(QStringLiteral("port"), c.port);
-        st.setValue(QStringLiteral("serial_number"), c.serialNumber);
-        st.setValue(QStringLiteral("baud"), c.baud);
-        st.setValue(QStringLiteral("profile"), c.profile);
-        st.setValue(QStringLiteral("profiles"), m_instruments[i].bar->profiles());
-        st.endGroup();
-        st.setValue(QStringLiteral("jog/%1/speed").arg(QLatin1String(kSettingsKeys[i])), m_instruments[i].jog->speedFraction());
-    }
 }
 
 QStringList MainWindow::runningJobs(int index) const
