@@ -494,17 +494,27 @@ void RecipeRunner::checkDwell(bool begin)
         }
         if (st.deviceTimeUs > m_deviceLastUs)
             m_deviceLastUs = st.deviceTimeUs;
-        if (begin)
+        if (begin) {
             m_dwellStartUs = st.deviceTimeUs;
-        const double leftS = m_inFlight->seconds - static_cast<double>(st.deviceTimeUs - std::min(m_dwellStartUs, st.deviceTimeUs)) / 1e6;
+            m_dwellWall.start();
+        }
+        const double doneS = static_cast<double>(st.deviceTimeUs - std::min(m_dwellStartUs, st.deviceTimeUs)) / 1e6;
+        const double leftS = m_inFlight->seconds - doneS;
         if (leftS <= 0) {
             moveArrived();
             return;
         }
-        // Half of what seems left, then look again: a rate misjudged either way never
-        // makes the wait run long by more than a status's round trip.
+        // Half of what seems left at the device's rate, then look again. The rate is the
+        // faster of the run's and the wait's own: a wait runs faster than the moves
+        // before it on a simulator stepped by a loop with nothing else to do, and half
+        // a wait misjudged by more than twice would overshoot it. The first look comes
+        // at once, to learn the wait's own rate.
         // (At most kMoveCheckMs at a time: before the rate is known it is taken as 1.)
-        m_dwellTimer.start(std::clamp(static_cast<int>(std::lround(0.5 * leftS / deviceRate() * 1000)), 1, kMoveCheckMs));
+        const double wallS = m_dwellWall.nsecsElapsed() / 1e9;
+        const double waitRate = wallS > 0 && doneS > 0 ? doneS / wallS : 0.0;
+        const double rate = std::max(deviceRate(), waitRate);
+        const int sleepMs = begin ? 1 : static_cast<int>(std::lround(0.5 * leftS / rate * 1000));
+        m_dwellTimer.start(std::clamp(sleepMs, 1, kMoveCheckMs));
     });
 }
 

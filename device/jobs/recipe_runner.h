@@ -180,6 +180,7 @@ private:
     quint64 m_deviceStartUs = 0;    ///< device clock when this stretch began
     quint64 m_deviceLastUs = 0;     ///< device clock of the latest event or status of this stretch
     quint64 m_dwellStartUs = 0;     ///< device clock the wait counts from
+    QElapsedTimer m_dwellWall;      ///< wall clock since the wait began: the device's rate during it
     /// The pace of this session: planned time of the ops it closed against the running time
     /// it took. A pause does not end a session (the pause is not running time, and the pace
     /// before it still holds); a resume after a stop or from a log starts a new one.
