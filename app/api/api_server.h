@@ -42,6 +42,9 @@ struct ServedInstrument {
     QString key;                            ///< "analyzer", "stage": what `instrument` names
     QPointer<dev::Instrument> instrument;   ///< the GUI's proxy (not owned)
     int hubIndex = -1;                      ///< its index in the telemetry hub, −1 if not there
+    /// The in-process simulator's link behind the instrument now (it changes on a
+    /// reconnect), or nullptr: a simulated camera looks at its true work point.
+    std::function<QObject*()> simulator;
 };
 
 class ApiServer : public QObject {

@@ -255,6 +255,8 @@ std::unique_ptr<app::cli::CliSession> CommandCall::sessionOn(app::cli::Invocatio
     auto session = std::make_unique<app::cli::CliSession>(inv, served.instrument.data());
     const QString consumer = QStringLiteral("api call %1 of client %2 on %3").arg(reinterpret_cast<quintptr>(this)).arg(m_clientId).arg(served.key);
     const ServedInstrument copy = served;
+    if (served.simulator)
+        session->setSimulatorLookup(served.simulator);
     session->setTelemetryWish([this, consumer, copy](const QVector<dev::proto::ChannelRef>& channels, int rateHz) {
         m_server.wantTelemetry(consumer, copy, channels, rateHz);
     });

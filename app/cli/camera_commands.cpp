@@ -164,16 +164,19 @@ std::unique_ptr<dev::camera::Camera> cameraFor(Invocation& inv, CliSession* sess
         return nullptr;
     }
     sim.settings.seed = static_cast<std::uint64_t>(seed);
-    if (auto* link = session ? qobject_cast<dev::SimulatedLink*>(session->link()) : nullptr) {
-        dev::sim::SimMachine* m = &link->machine();
-        if (m->axisCount() >= 2)
-            sim.workPoint = [m]() -> std::optional<cam::WorkPoint> {
-                return cam::WorkPoint{m->workPointLogical(0), m->workPointLogical(1), m->timeUs()};
-            };
+    if (auto* link = session ? qobject_cast<dev::SimulatedLink*>(session->simulator()) : nullptr) {
+        // Guarded: the GUI's link goes away on a reconnect, perhaps while its camera lives.
+        QPointer<dev::SimulatedLink> guarded(link);
+        sim.workPoint = [guarded]() -> std::optional<cam::WorkPoint> {
+            if (!guarded || guarded->machine().axisCount() < 2)
+                return std::nullopt;
+            const dev::sim::SimMachine& m = guarded->machine();
+            return cam::WorkPoint{m.workPointLogical(0), m.workPointLogical(1), m.timeUs()};
+        };
     } else if (session && session->instrument()) {
-        // No simulator in this process (benchpilot-sim's pty, a real stage, the GUI's API):
-        // the simulated camera looks where the stage says it is; only the in-process
-        // simulator knows the true work point apart from the reading.
+        // No simulator in this process (benchpilot-sim's pty, a real stage): the simulated
+        // camera looks where the stage says it is; only the in-process simulator knows
+        // the true work point apart from the reading.
         QPointer<dev::Instrument> instrument = session->instrument();
         sim.workPoint = [instrument]() -> std::optional<cam::WorkPoint> {
             if (!instrument || instrument->status().axes.size() < 2)

@@ -40,6 +40,12 @@ public:
     /// The in-process simulator's link when that is what is connected, else nullptr
     /// (always nullptr for an instrument the GUI holds: its clock is not ours to change).
     QObject* link() const { return m_link; }
+    /// Where a simulated camera looks: the in-process simulator's link behind the
+    /// instrument, ours or (for the GUI's) the one its holder names; nullptr if none.
+    /// Only for reading the simulated machine, never for changing its clock.
+    using SimulatorLookup = std::function<QObject*()>;
+    void setSimulatorLookup(SimulatorLookup lookup) { m_simulatorLookup = std::move(lookup); }
+    QObject* simulator() const { return m_link ? m_link : m_simulatorLookup ? m_simulatorLookup() : nullptr; }
 
     /// Sends one request and waits for its answer; prints a refusal. Returns an exit code.
     int request(const std::function<void(dev::Instrument::Callback)>& send, const QString& what);
@@ -93,6 +99,7 @@ private:
     QStringList m_motionErrors;   ///< limit hits and faults seen while waiting
     std::optional<dev::RequestError> m_lastRefusal;
     TelemetryWish m_telemetryWish;
+    SimulatorLookup m_simulatorLookup;
     bool m_wantedTelemetry = false;
 };
 

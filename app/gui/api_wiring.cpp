@@ -5,6 +5,7 @@
 #include "instrument_session.h"
 #include "app/api/api_server.h"
 #include "device/jobs/pattern_runner.h"
+#include "device/link/simulated_link.h"
 #include "device/jobs/recipe_runner.h"
 #include "device/jobs/scan_runner.h"
 #include "device/jobs/tuning/tuning_runner.h"
@@ -23,8 +24,12 @@ ApiWiring::ApiWiring(InstrumentSession* const sessions[2], dev::tele::TelemetryH
         m_gated[i] = new GatedInstrument(sessions[i]->instrument(), [this] { return blockedBy(); }, [this] { askTakeBack(); }, sessions[i]);
     if (options.socketPath.isEmpty())
         return;
-    QVector<app::api::ServedInstrument> served{{QStringLiteral("analyzer"), sessions[0]->instrument(), 0},
-                                          {QStringLiteral("stage"), sessions[1]->instrument(), 1}};
+    QVector<app::api::ServedInstrument> served{{QStringLiteral("analyzer"), sessions[0]->instrument(), 0, {}},
+                                          {QStringLiteral("stage"), sessions[1]->instrument(), 1, {}}};
+    for (int i = 0; i < 2; ++i) {
+        QPointer<InstrumentSession> session(sessions[i]);
+        served[i].simulator = [session]() -> QObject* { return session ? qobject_cast<dev::SimulatedLink*>(session->link()) : nullptr; };
+    }
     m_server = std::make_unique<app::api::ApiServer>(served, hub);
     QString error;
     if (!m_server->listen(options.socketPath, &error)) {

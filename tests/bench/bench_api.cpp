@@ -79,7 +79,7 @@ struct Bench {
         hub.addInstrument(0, QStringLiteral("Analyzer"), &analyzerProxy);
         hub.addInstrument(1, QStringLiteral("Stage"), &stageProxy);
         server = std::make_unique<app::api::ApiServer>(
-            QVector<app::api::ServedInstrument>{{QStringLiteral("analyzer"), &analyzerProxy, 0}, {QStringLiteral("stage"), &stageProxy, 1}}, &hub);
+            QVector<app::api::ServedInstrument>{{QStringLiteral("analyzer"), &analyzerProxy, 0, {}}, {QStringLiteral("stage"), &stageProxy, 1, {}}}, &hub);
         QString error;
         if (!server->listen(socketPath, &error))
             qFatal("bench_api: %s", qPrintable(error));

@@ -74,7 +74,7 @@ TEST(ApiSocketPath, AttachFindsTheGuiAtThePythonClientsDefault)
     QTemporaryDir runtime;
     const QString path = app::cli::apiSocketPathFor(runtime.path(), ::getuid());
     itest::ServedSim stage(dev::proto::DeviceKind::Stage);
-    app::api::ApiServer server({{QStringLiteral("stage"), &stage.proxy, -1}}, nullptr);
+    app::api::ApiServer server({{QStringLiteral("stage"), &stage.proxy, -1, {}}}, nullptr);
     QString error;
     ASSERT_TRUE(server.listen(path, &error)) << error.toStdString();
     ASSERT_TRUE(itest::waitFor([&] { return stage.proxy.isReady(); }, 10000));

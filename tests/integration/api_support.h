@@ -51,10 +51,10 @@ public:
         QVector<app::api::ServedInstrument> served;
         if (analyzer) {
             hub.addInstrument(0, QStringLiteral("Analyzer"), &analyzer->proxy);
-            served.push_back({QStringLiteral("analyzer"), &analyzer->proxy, 0});
+            served.push_back({QStringLiteral("analyzer"), &analyzer->proxy, 0, [this] { return &analyzer->link; }});
         }
         hub.addInstrument(1, QStringLiteral("Stage"), &stage.proxy);
-        served.push_back({QStringLiteral("stage"), &stage.proxy, 1});
+        served.push_back({QStringLiteral("stage"), &stage.proxy, 1, [this] { return &stage.link; }});
         server = std::make_unique<app::api::ApiServer>(served, &hub);
         path = dir.filePath(QStringLiteral("api.sock"));
         QString error;
