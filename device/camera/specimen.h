@@ -71,6 +71,7 @@ private:
     std::uint64_t m_seed;
     double m_blurUm;
     std::vector<float> m_fine;    ///< kFineSize², periodic; texel kFineTexelUm
+    std::vector<float> m_fineT;   ///< m_fine transposed: the second layer's rows walk along memory
     std::vector<float> m_coarse;  ///< kCoarseSize², periodic; texel kCoarseTexelUm
 };
 
