@@ -1,4 +1,5 @@
 #include "widgets/jog_screen.h"
+#include "widgets/common/button_key.h"
 
 #include "widgets/axis_row.h"
 #include "widgets/input_policy.h"
@@ -45,7 +46,7 @@ JogScreen::JogScreen(dev::Instrument* client, QWidget* parent) : QWidget(parent)
     m_homeAll->setToolTip(tr("Home every axis (the analyzer lifts Z first, then X and Y)"));
     m_stop = new QPushButton(tr("Stop"), this);
     m_stop->setToolTip(tr("Decelerate every axis to rest (Space)"));
-    m_stop->setShortcut(QKeySequence(Qt::Key_Space));
+    setButtonKey(m_stop, QKeySequence(Qt::Key_Space));
     // Where homing is not possible (a GRBL controller with $22=0) the operator may take the present
     // position as home; after an alarm that lost the position, unlock on the operator's word.
     m_setHome = new QPushButton(tr("Set home here…"), this);

@@ -15,6 +15,7 @@
 #include "gui_window.h"
 #include "widgets/calibration/calibration_screen.h"
 #include "widgets/calibration/test_form.h"
+#include "widgets/common/button_key.h"
 #include "widgets/common/number_field.h"
 #include "widgets/patterns/contour_plot.h"
 #include "widgets/patterns/pattern_screen.h"
@@ -114,6 +115,9 @@ QMap<QString, QString> stateOf(QWidget* root)
             put("value", s->property("value").toString());
         if (auto* b = qobject_cast<QAbstractButton*>(w)) {
             put("button", b->text());
+            // A button's key (F5, Ctrl+R): QAbstractButton::setText() puts the text's
+            // mnemonic in its place, so rewording a button can take its key away.
+            put("key", ui::buttonKey(b).toString());
             if (b->isCheckable())
                 put("checked", b->isChecked() ? QStringLiteral("yes") : QStringLiteral("no"));
         }
@@ -414,7 +418,7 @@ TEST_F(LanguageSwitchState, EveryScreenHoldsWhatItHeldAcrossASwitchAndBack)
         if (live.contains(k))
             continue;
         const bool wording = k.endsWith(QLatin1String(" text")) || k.endsWith(QLatin1String(" button")) || k.contains(QLatin1String(" cell "))
-            || k.endsWith(QLatin1String(" chosen"));
+            || k.endsWith(QLatin1String(" chosen")) || k.endsWith(QLatin1String(" key"));  // a mnemonic is the language's
         if (!wording && inChinese.value(k) != it.value())
             held << QStringLiteral("%1: “%2” → “%3”").arg(k, it.value(), inChinese.value(k));
     }

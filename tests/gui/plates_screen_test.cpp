@@ -8,6 +8,7 @@
 #include "device/link/simulated_link.h"
 #include "gui_wait.h"
 #include "gui_window.h"
+#include "widgets/common/button_key.h"
 #include "widgets/common/number_field.h"
 #include "widgets/plates/calibration_panel.h"
 #include "widgets/plates/plate_map.h"
@@ -254,7 +255,7 @@ TEST_F(PlatesScreenTest, StepEditsUndoRedoSaveAndOpen)
         if (b->text() == QObject::tr("Save"))
             save = b;
     ASSERT_NE(save, nullptr);
-    EXPECT_EQ(save->shortcut(), QKeySequence(QKeySequence::Save));
+    EXPECT_EQ(ui::buttonKey(save), QKeySequence(QKeySequence::Save));
     QTest::mouseClick(save, Qt::LeftButton);
     ASSERT_TRUE(QFileInfo::exists(path));
     EXPECT_FALSE(ed->isModified());

@@ -1,6 +1,7 @@
 // The Calibration screen's layout, wording and files; running and results are in
 // calibration_run.cpp.
 #include "widgets/calibration/calibration_screen.h"
+#include "widgets/common/button_key.h"
 
 #include "device/files/accuracy/compensation/compensation_file.h"
 #include "device/jobs/accuracy/accuracy_runner.h"
@@ -165,13 +166,13 @@ QWidget* CalibrationScreen::buildLeft()
     auto* buttons = new QHBoxLayout;
     m_runButton = new QPushButton;
     m_runButton->setObjectName(QStringLiteral("calibrationRun"));
-    m_runButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    setButtonKey(m_runButton, QKeySequence(Qt::CTRL | Qt::Key_R));
     m_pauseButton = new QPushButton;
     m_pauseButton->setObjectName(QStringLiteral("calibrationPause"));
-    m_pauseButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
+    setButtonKey(m_pauseButton, QKeySequence(Qt::CTRL | Qt::Key_P));
     m_abortButton = new QPushButton;
     m_abortButton->setObjectName(QStringLiteral("calibrationAbort"));
-    m_abortButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Period));
+    setButtonKey(m_abortButton, QKeySequence(Qt::CTRL | Qt::Key_Period));
     connect(m_runButton, &QPushButton::clicked, this, [this] { run(); });
     connect(m_pauseButton, &QPushButton::clicked, this, &CalibrationScreen::pause);
     connect(m_abortButton, &QPushButton::clicked, this, &CalibrationScreen::abort);

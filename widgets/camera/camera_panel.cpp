@@ -1,4 +1,5 @@
 #include "widgets/camera/camera_panel.h"
+#include "widgets/common/button_key.h"
 
 #include "device/client/instrument.h"
 #include "device/camera/tile_tiff.h"
@@ -93,6 +94,7 @@ CameraPanel::CameraPanel(CameraSession* session, dev::Instrument* stage, QWidget
     m_exposure->setValue(m_session->exposureMs());
     m_snap = new QPushButton;
     m_snap->setObjectName(QStringLiteral("cameraSnap"));
+    setButtonKey(m_snap, QKeySequence(kSnapKey));
     m_state = new QLabel;
     m_state->setObjectName(QStringLiteral("cameraState"));
     sourceRow->addWidget(m_state);
@@ -270,7 +272,6 @@ void CameraPanel::retranslateUi()
     m_exposure->setFieldName(tr("Exposure"));
     m_exposure->setHelp(tr("Exposure time, where the camera lets it be set"));
     m_snap->setText(tr("Snap"));
-    m_snap->setShortcut(QKeySequence(kSnapKey));  // after the text: a button's setText() resets its shortcut
     m_snap->setToolTip(tr("Take one image and save it as a TIFF with the stage position in it (16-bit grey stays 16-bit) (%1)")
                            .arg(QKeySequence(kSnapKey).toString(QKeySequence::NativeText)));
     updateUi();

@@ -1,4 +1,5 @@
 #include "widgets/patterns/pattern_screen.h"
+#include "widgets/common/button_key.h"
 
 #include "widgets/common/number_field.h"
 #include "widgets/wording/wording.h"
@@ -55,13 +56,13 @@ PatternScreen::PatternScreen(QVector<PatternInstrument> instruments, dev::tele::
     auto* buttons = new QHBoxLayout;
     m_run = new QPushButton(tr("Run"), leftHost);
     m_run->setToolTip(tr("Move to the pattern's start, then run it (F5)"));
-    m_run->setShortcut(QKeySequence(Qt::Key_F5));
+    setButtonKey(m_run, QKeySequence(Qt::Key_F5));
     m_pause = new QPushButton(tr("Pause"), leftHost);
     m_pause->setToolTip(tr("Slow down along the path and hold; press again to go on (F6)"));
-    m_pause->setShortcut(QKeySequence(Qt::Key_F6));
+    setButtonKey(m_pause, QKeySequence(Qt::Key_F6));
     m_abort = new QPushButton(tr("Abort"), leftHost);
     m_abort->setToolTip(tr("Slow down along the path and give the rest up (F8)"));
-    m_abort->setShortcut(QKeySequence(Qt::Key_F8));
+    setButtonKey(m_abort, QKeySequence(Qt::Key_F8));
     for (QPushButton* b : {m_run, m_pause, m_abort}) {
         b->setMinimumHeight(34);
         buttons->addWidget(b);
@@ -382,12 +383,8 @@ void PatternScreen::updateButtons()
     const QString pauseText = mine && (st == PatternRunner::State::Paused || st == PatternRunner::State::Interrupted)
                                   ? tr("Resume")  // the word the run's messages use ("reconnect, then press Resume")
                                   : tr("Pause");
-    if (m_pause->text() != pauseText) {
+    if (m_pause->text() != pauseText)
         m_pause->setText(pauseText);
-        // QAbstractButton::setText() replaces the shortcut with the new text's mnemonic (none):
-        // without this F6 died at the first pause and could neither resume nor pause again.
-        m_pause->setShortcut(QKeySequence(Qt::Key_F6));
-    }
     m_abort->setEnabled(mine && (busy || st == PatternRunner::State::Interrupted));
     m_export->setEnabled(m_runOn >= 0 && !m_instruments[m_runOn].runner->samples().empty());
     m_instrumentBox->setEnabled(!busy);

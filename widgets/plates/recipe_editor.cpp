@@ -1,4 +1,5 @@
 #include "widgets/plates/recipe_editor.h"
+#include "widgets/common/button_key.h"
 #include "widgets/plates/step_texts.h"
 
 #include "widgets/plates/step_form.h"
@@ -77,10 +78,10 @@ RecipeEditor::RecipeEditor(QWidget* parent) : QWidget(parent), m_undo(new QUndoS
     auto* saveAsB = toolButton(tr("Save as…"), tr("Save the recipe under another name"), this);
     auto* undoB = toolButton(tr("Undo"), tr("Undo the last change (Ctrl+Z)"), this);
     auto* redoB = toolButton(tr("Redo"), tr("Redo (Ctrl+Shift+Z)"), this);
-    openB->setShortcut(QKeySequence::Open);
-    saveB->setShortcut(QKeySequence::Save);
-    undoB->setShortcut(QKeySequence::Undo);
-    redoB->setShortcut(QKeySequence::Redo);
+    setButtonKey(openB, QKeySequence::Open);
+    setButtonKey(saveB, QKeySequence::Save);
+    setButtonKey(undoB, QKeySequence::Undo);
+    setButtonKey(redoB, QKeySequence::Redo);
     // Two rows, so the panel fits the narrow tab it gets at 1366 px in every language:
     // the file and undo buttons, then the name with the whole width to show it.
     for (auto* b : {newB, openB, saveB, saveAsB})

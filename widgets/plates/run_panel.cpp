@@ -1,4 +1,5 @@
 #include "widgets/plates/run_panel.h"
+#include "widgets/common/button_key.h"
 #include "widgets/plates/step_texts.h"
 
 #include "device/client/request_error.h"
@@ -31,7 +32,7 @@ RunPanel::RunPanel(dev::jobs::RecipeRunner* runner, QWidget* parent) : QWidget(p
     auto* controls = new QHBoxLayout;
     m_run = new QPushButton(tr("Run"), this);
     m_run->setToolTip(tr("Run the recipe from its first well, logging every well (F5)"));
-    m_run->setShortcut(QKeySequence(Qt::Key_F5));
+    setButtonKey(m_run, QKeySequence(Qt::Key_F5));
     m_pause = new QPushButton(tr("Pause"), this);
     m_pause->setToolTip(tr("Stop after the well under way, with the tip up"));
     m_resume = new QPushButton(tr("Resume"), this);

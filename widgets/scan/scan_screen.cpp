@@ -1,4 +1,5 @@
 #include "widgets/scan/scan_screen.h"
+#include "widgets/common/button_key.h"
 
 #include "device/camera/scan_camera.h"
 #include "device/files/scan_exports.h"
@@ -176,10 +177,10 @@ QWidget* ScanScreen::buildFileRow()
     auto* fresh = new QPushButton(tr("New"));
     fresh->setToolTip(tr("Start from the default plan"));
     auto* open = new QPushButton(tr("Open plan…"));
-    open->setShortcut(QKeySequence::Open);
+    setButtonKey(open, QKeySequence::Open);
     open->setToolTip(tr("Open a scan plan file (%1)").arg(QKeySequence(QKeySequence::Open).toString()));
     auto* save = new QPushButton(tr("Save plan…"));
-    save->setShortcut(QKeySequence::Save);
+    setButtonKey(save, QKeySequence::Save);
     save->setToolTip(tr("Save this plan as a file (%1)").arg(QKeySequence(QKeySequence::Save).toString()));
     connect(fresh, &QPushButton::clicked, this, [this] { m_form->setPlan(ScanPlan{}); });
     connect(open, &QPushButton::clicked, this, [this] {
@@ -229,12 +230,12 @@ QWidget* ScanScreen::buildRunPanel()
     auto* buttons = new QHBoxLayout;
     m_runButton = new QPushButton(tr("Run"));
     m_runButton->setObjectName(QStringLiteral("scanRun"));
-    m_runButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    setButtonKey(m_runButton, QKeySequence(Qt::CTRL | Qt::Key_R));
     m_pauseButton = new QPushButton(tr("Pause"));
-    m_pauseButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
+    setButtonKey(m_pauseButton, QKeySequence(Qt::CTRL | Qt::Key_P));
     m_pauseButton->setToolTip(tr("Stop after the tile in progress (Ctrl+P)"));
     m_abortButton = new QPushButton(tr("Abort"));
-    m_abortButton->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_A));
+    setButtonKey(m_abortButton, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_A));
     m_abortButton->setToolTip(tr("Stop the stage now; the tiles taken are kept and Resume continues (Ctrl+Shift+A)"));
     m_exportButton = new QPushButton(tr("Export"));
     m_exportButton->setToolTip(tr("Write TileConfiguration.txt (Fiji), positions.pos (Micro-Manager) and scan.csv to the output folder"));
@@ -424,10 +425,6 @@ void ScanScreen::updateRunUi()
     m_folder->setEnabled(!active);
     m_map->setDrawingEnabled(!active);
     m_runButton->setText(resumable && m_runner->takenTiles() > 0 ? tr("Resume") : tr("Run"));
-    // A button's setText() resets its shortcut (to the text's mnemonic): set the keys again.
-    m_runButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
-    m_pauseButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
-    m_abortButton->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_A));
     m_runButton->setToolTip(tr("Run the scan on the stage, or continue it at the next tile (Ctrl+R)"));
     m_runButton->setEnabled(!active && m_valid && m_stage->isReady());
     m_pauseButton->setEnabled(st == ScanRunner::State::Running);
