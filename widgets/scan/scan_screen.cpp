@@ -12,6 +12,7 @@
 #include "widgets/camera/live_view.h"
 #include "widgets/scan/scan_plan_form.h"
 #include "widgets/scan/scan_stage_map.h"
+#include "widgets/scan/stitch_panel.h"
 
 #include "widgets/wording/wording.h"
 
@@ -293,6 +294,16 @@ void ScanScreen::setCameraSession(CameraSession* session)
     connect(m_cameraPanel, &CameraPanel::problem, this, &ScanScreen::problem);
     connect(m_cameraPanel, &CameraPanel::notice, this, &ScanScreen::notice);
     connect(session, &CameraSession::stateChanged, this, &ScanScreen::updateRunUi);
+    m_stitchPanel = new StitchPanel([this] {
+        dev::jobs::StitchRequest r;
+        r.folder = outputFolder().trimmed();
+        r.plan = plan();
+        return r;
+    });
+    m_stitchPanel->setObjectName(QStringLiteral("scanMosaic"));
+    m_leftTabs->addTab(m_stitchPanel, tr("Mosaic"));
+    connect(m_stitchPanel, &StitchPanel::problem, this, &ScanScreen::problem);
+    connect(m_stitchPanel, &StitchPanel::notice, this, &ScanScreen::notice);
     m_useCamera->setVisible(true);
     replan();
 }
@@ -424,6 +435,8 @@ void ScanScreen::updateRunUi()
     m_fileRow->setEnabled(!active);  // the plan that runs stays the plan on screen
     m_folder->setEnabled(!active);
     m_map->setDrawingEnabled(!active);
+    if (m_stitchPanel)
+        m_stitchPanel->setScanRunning(active);
     m_runButton->setText(resumable && m_runner->takenTiles() > 0 ? tr("Resume") : tr("Run"));
     m_runButton->setToolTip(tr("Run the scan on the stage, or continue it at the next tile (Ctrl+R)"));
     m_runButton->setEnabled(!active && m_valid && m_stage->isReady());

@@ -35,6 +35,7 @@ class CameraPanel;
 class CameraSession;
 class ScanPlanForm;
 class ScanStageMap;
+class StitchPanel;
 
 class ScanScreen : public QWidget {
     Q_OBJECT
@@ -66,12 +67,14 @@ public:
     /// view, and the run's "take an image at each tile" option.
     void setCameraSession(CameraSession* session);
     CameraPanel* cameraPanel() const { return m_cameraPanel; }
+    /// The Mosaic tab (with a camera): stitches the output folder's images.
+    StitchPanel* stitchPanel() const { return m_stitchPanel; }
     /// Whether a run takes an image at each tile (kept between runs by the app).
     bool takesImages() const;
     void setTakesImages(bool on);
     /// The camera a run is handed: the open one when images are asked for, else nullptr.
     dev::camera::Camera* runCamera() const;
-    /// Shows the stage map (0) or the camera (1).
+    /// Shows the stage map (0), the camera (1) or the mosaic (2).
     void showTab(int index);
 
     bool openPlan(const QString& path);
@@ -119,6 +122,7 @@ private:
     QTabWidget* m_leftTabs;
     CameraSession* m_camera = nullptr;
     CameraPanel* m_cameraPanel = nullptr;
+    StitchPanel* m_stitchPanel = nullptr;
     std::unique_ptr<dev::camera::ScanCamera> m_scanCamera;  ///< the run's side of the camera, made for runCamera()
     QCheckBox* m_useCamera;
     QLabel* m_summary;

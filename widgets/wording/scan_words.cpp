@@ -10,6 +10,11 @@ namespace {
 
 // clang-format off
 const Row kRows[] = {
+    {"scan.stitch.running", QT_TRANSLATE_NOOP3("ui::words::ScanWords", "a stitch is already running", "scan.stitch.running")},
+    {"scan.stitch.no_run_log", QT_TRANSLATE_NOOP3("ui::words::ScanWords", "%1 holds no scan run log: run a scan with images into it first", "scan.stitch.no_run_log"), "folder"},
+    {"scan.stitch.no_images", QT_TRANSLATE_NOOP3("ui::words::ScanWords", "the scan in %1 took no images to stitch (was “Take an image at each tile” on?)", "scan.stitch.no_images"), "folder"},
+    {"scan.stitch.image_missing", QT_TRANSLATE_NOOP3("ui::words::ScanWords", "the image of tile %2 (%1) is not in the folder", "scan.stitch.image_missing"), "file,tile"},
+    {"scan.stitch.cannot_write", QT_TRANSLATE_NOOP3("ui::words::ScanWords", "cannot write %1: %2", "scan.stitch.cannot_write"), "file,detail"},
     {"scan.out_of_range", QT_TRANSLATE_NOOP3("ui::words::ScanWords", "must be from %1 to %2 (got %3)", "scan.out_of_range"), "min,max,value"},
     {"scan.not_positive_or_above", QT_TRANSLATE_NOOP3("ui::words::ScanWords", "must be above 0 and at most %1 (got %2)", "scan.not_positive_or_above"), "max,value"},
     {"scan.not_a_position", QT_TRANSLATE_NOOP3("ui::words::ScanWords", "must be a finite position in mm", "scan.not_a_position")},
@@ -73,6 +78,12 @@ const Row kRows[] = {
 };
 
 const TermRow kTerms[] = {
+    {"scan.pair.accepted", QT_TRANSLATE_NOOP3("ui::words::ScanWords", "trusted", "scan.pair.accepted")},
+    {"scan.pair.low_score", QT_TRANSLATE_NOOP3("ui::words::ScanWords", "not trusted: score too low (blank, dark or out of focus)", "scan.pair.low_score")},
+    {"scan.pair.ambiguous", QT_TRANSLATE_NOOP3("ui::words::ScanWords", "not trusted: two offsets score alike (a repetitive pattern)", "scan.pair.ambiguous")},
+    {"scan.pair.at_bound", QT_TRANSLATE_NOOP3("ui::words::ScanWords", "not trusted: the best offset lies on the search bound", "scan.pair.at_bound")},
+    {"scan.pair.no_overlap", QT_TRANSLATE_NOOP3("ui::words::ScanWords", "not trusted: too little overlap", "scan.pair.no_overlap")},
+    {"scan.pair.outlier", QT_TRANSLATE_NOOP3("ui::words::ScanWords", "rejected: disagrees with the other pairs", "scan.pair.outlier")},
     {"scan.state.idle", QT_TRANSLATE_NOOP3("ui::words::ScanWords", "ready", "scan.state.idle")},
     {"scan.state.running", QT_TRANSLATE_NOOP3("ui::words::ScanWords", "running", "scan.state.running")},
     {"scan.state.pausing", QT_TRANSLATE_NOOP3("ui::words::ScanWords", "pausing after this tile", "scan.state.pausing")},

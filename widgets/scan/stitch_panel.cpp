@@ -1,0 +1,211 @@
+#include "widgets/scan/stitch_panel.h"
+
+#include "widgets/common/button_key.h"
+#include "widgets/scan/stitch_quality_map.h"
+#include "widgets/wording/wording.h"
+
+#include <QDir>
+#include <QEvent>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSaveFile>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace ui {
+
+namespace {
+constexpr const char* kQualityMapFile = "quality-map.png";
+const QSize kQualityMapPng(1400, 1100);
+} // namespace
+
+StitchPanel::StitchPanel(Source source, QWidget* parent) : QWidget(parent), m_source(std::move(source)), m_job(new dev::jobs::StitchJob(this))
+{
+    auto* layout = new QVBoxLayout(this);
+    auto* row = new QHBoxLayout;
+    m_stitch = new QPushButton;
+    m_stitch->setObjectName(QStringLiteral("stitchButton"));
+    setButtonKey(m_stitch, QKeySequence(Qt::CTRL | Qt::Key_T));
+    row->addWidget(m_stitch);
+    m_busy = new QProgressBar;
+    m_busy->setRange(0, 0);  // how long registration takes is not known ahead
+    m_busy->setMaximumWidth(160);
+    m_busy->setVisible(false);
+    row->addWidget(m_busy);
+    m_state = new QLabel;
+    m_state->setObjectName(QStringLiteral("stitchState"));
+    m_state->setWordWrap(true);
+    row->addWidget(m_state, 1);
+    layout->addLayout(row);
+    m_summary = new QLabel;
+    m_summary->setObjectName(QStringLiteral("stitchSummary"));
+    m_summary->setWordWrap(true);
+    m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(m_summary);
+    m_map = new StitchQualityMap;
+    layout->addWidget(m_map, 1);
+    m_tile = new QLabel;
+    m_tile->setObjectName(QStringLiteral("stitchTile"));
+    m_tile->setWordWrap(true);
+    m_tile->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(m_tile);
+
+    connect(m_stitch, &QPushButton::clicked, this, [this] { stitch(); });
+    connect(m_job, &dev::jobs::StitchJob::finished, this, &StitchPanel::onFinished);
+    connect(m_job, &dev::jobs::StitchJob::failed, this, [this](const motion::msg::Problems& problems) {
+        updateUi();
+        m_state->setText(tr("Stitching failed."));
+        emit problem(tr("Stitching %1 failed: %2").arg(QDir::toNativeSeparators(m_folder), words::problems(problems).join(QLatin1Char(' '))));
+    });
+    connect(m_map, &StitchQualityMap::tileClicked, this, &StitchPanel::showTile);
+    retranslateUi();
+    updateUi();
+}
+
+bool StitchPanel::stitch()
+{
+    if (m_job->isRunning() || m_scanRunning)
+        return false;
+    const dev::jobs::StitchRequest request = m_source();
+    motion::msg::Message error;
+    if (!m_job->start(request, &error)) {
+        emit problem(words::text(error));
+        return false;
+    }
+    m_folder = request.folder;
+    m_map->clear();
+    m_summary->clear();
+    m_tile->clear();
+    updateUi();
+    return true;
+}
+
+void StitchPanel::setScanRunning(bool running)
+{
+    m_scanRunning = running;
+    updateUi();
+}
+
+QStringList StitchPanel::summaryLines() const
+{
+    const auto& r = m_job->result();
+    if (!r)
+        return {};
+    int accepted = 0, byStage = 0;
+    for (const imaging::TilePair& pair : r->pairs)
+        accepted += pair.reg.accepted();
+    for (bool s : r->placement.placedByStage)
+        byStage += s;
+    const int pairs = static_cast<int>(r->pairs.size());
+    const int notTrusted = pairs - accepted - r->placement.rejectedPairs;
+    const double um = m_job->pixelUm();
+    QStringList lines;
+    lines << tr("%1 tiles, %2 pairs: %3 trusted, %4 rejected as outliers, %5 not trusted; %6 tiles placed by the stage (hatched)")
+                 .arg(r->tiles.size())
+                 .arg(pairs)
+                 .arg(accepted)
+                 .arg(r->placement.rejectedPairs)
+                 .arg(notTrusted)
+                 .arg(byStage);
+    lines << tr("Correction from the stage: RMS %1 px (%2 µm), worst %3 px (%4 µm); arrows drawn ×%5")
+                 .arg(r->placement.rmsCorrectionPx, 0, 'f', 2)
+                 .arg(r->placement.rmsCorrectionPx * um, 0, 'f', 2)
+                 .arg(r->placement.worstCorrectionPx, 0, 'f', 2)
+                 .arg(r->placement.worstCorrectionPx * um, 0, 'f', 2)
+                 .arg(m_map->magnification(), 0, 'f', 0);
+    lines << tr("Mosaic %1 × %2 px in %3 s").arg(r->frame.width).arg(r->frame.height).arg(m_job->seconds(), 0, 'f', 1);
+    return lines;
+}
+
+QString StitchPanel::summaryText() const { return m_summary->text(); }
+QString StitchPanel::tileText() const { return m_tile->text(); }
+
+void StitchPanel::onFinished()
+{
+    const auto& r = m_job->result();
+    if (!r)
+        return;
+    m_map->setResult(*r);
+    const QStringList lines = summaryLines();
+    m_summary->setText(lines.join(QLatin1Char('\n')));
+    QStringList written = m_job->written();
+    const QString png = QDir(m_folder).filePath(QLatin1String(kQualityMapFile));
+    QSaveFile file(png);
+    const QImage image = m_map->render(kQualityMapPng, lines);
+    if (file.open(QIODevice::WriteOnly) && image.save(&file, "PNG") && file.commit())
+        written << png;
+    else
+        emit problem(tr("The quality map could not be written to %1: %2").arg(QDir::toNativeSeparators(png), file.errorString()));
+    QStringList names;
+    for (const QString& f : written)
+        names << QFileInfo(f).fileName();
+    m_state->setText(tr("Stitched into %1: %2").arg(QDir::toNativeSeparators(m_folder), names.join(QStringLiteral(", "))));
+    updateUi();
+    emit notice(m_state->text());
+    emit finished();
+}
+
+void StitchPanel::showTile(int index)
+{
+    const auto& r = m_job->result();
+    if (!r || index < 0 || static_cast<std::size_t>(index) >= r->tiles.size())
+        return;
+    const Eigen::Vector2d d = r->placement.positionsPx[static_cast<std::size_t>(index)] - r->tiles[static_cast<std::size_t>(index)].stagePx;
+    QStringList lines;
+    lines << tr("Tile %1 (%2): moved %3, %4 px from where the stage put it%5")
+                 .arg(index + 1)
+                 .arg(QString::fromStdString(r->tiles[static_cast<std::size_t>(index)].file))
+                 .arg(d.x(), 0, 'f', 2)
+                 .arg(d.y(), 0, 'f', 2)
+                 .arg(r->placement.placedByStage[static_cast<std::size_t>(index)] ? tr("; no trusted pair: placed by the stage") : QString());
+    for (const imaging::TilePair& p : r->pairs) {
+        if (p.a != index && p.b != index)
+            continue;
+        const int other = p.a == index ? p.b : p.a;
+        lines << tr("with tile %1: shift %2, %3 px, score %4, %5")
+                     .arg(other + 1)
+                     .arg(p.reg.shiftPx.x(), 0, 'f', 2)
+                     .arg(p.reg.shiftPx.y(), 0, 'f', 2)
+                     .arg(p.reg.ncc, 0, 'f', 3)
+                     .arg(words::term(std::string("scan.pair.") + imaging::pairStatusName(p.reg.status)));
+    }
+    m_tile->setText(lines.join(QLatin1Char('\n')));
+}
+
+void StitchPanel::updateUi()
+{
+    const bool running = m_job->isRunning();
+    m_stitch->setEnabled(!running && !m_scanRunning);
+    m_busy->setVisible(running);
+    if (running)
+        m_state->setText(tr("Stitching %1 tiles in %2…").arg(m_job->tileCount()).arg(QDir::toNativeSeparators(m_folder)));
+    else if (m_scanRunning)
+        m_state->setText(tr("A scan is running into the folder: stitch it when it has finished."));
+}
+
+void StitchPanel::retranslateUi()
+{
+    m_stitch->setText(tr("Stitch"));
+    m_stitch->setToolTip(tr("Stitch the images of the scan in the output folder into a mosaic (Ctrl+T)"));
+    if (m_job->result() && !m_job->isRunning()) {
+        m_summary->setText(summaryLines().join(QLatin1Char('\n')));
+        if (m_map->selectedTile() >= 0)
+            showTile(m_map->selectedTile());
+    } else if (!m_job->isRunning() && m_state->text().isEmpty()) {
+        m_state->setText(QString());
+    }
+    updateUi();
+}
+
+void StitchPanel::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
+    QWidget::changeEvent(event);
+}
+
+} // namespace ui
