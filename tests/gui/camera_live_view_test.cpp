@@ -15,6 +15,8 @@
 #include "widgets/common/number_field.h"
 #include "widgets/jog_screen.h"
 #include "widgets/scan/scan_screen.h"
+#include "widgets/scan/stitch_panel.h"
+#include "widgets/scan/stitch_quality_map.h"
 #include "widgets/wording/translators.h"
 
 #include <QAction>
@@ -477,6 +479,50 @@ TEST_F(SimulatedCameraScreens, AScanFromTheScreenWritesAnImageForEachTile)
         EXPECT_TRUE(QFileInfo::exists(QDir(dir.filePath(QStringLiteral("run"))).filePath(QString::fromStdString(image.file))));
     }
     EXPECT_FALSE(w->cameraSession()->inUse());
+
+    // The Mosaic tab stitches what the run took.
+    scan->showTab(2);
+    ui::StitchPanel* mosaic = scan->stitchPanel();
+    ASSERT_TRUE(mosaic);
+    QTest::keyClick(w.get(), Qt::Key_T, Qt::ControlModifier);
+    ASSERT_TRUE(waitFor([&] { return !mosaic->summaryText().isEmpty(); }, 60000)) << "Ctrl+T did not stitch";
+    EXPECT_TRUE(mosaic->summaryText().startsWith(QStringLiteral("%1 tiles, %2 pairs: %2 trusted").arg(tiles).arg(tiles - 1)))
+        << mosaic->summaryText().toStdString();
+    EXPECT_TRUE(QFileInfo::exists(QDir(dir.filePath(QStringLiteral("run"))).filePath(QStringLiteral("quality-map.png"))));
+}
+
+// The picture in docs/stitching.md: BP_GUI_SHOTS=DIR keeps DIR/scan-mosaic.png, the Mosaic
+// tab after a 3 × 3 camera scan of the slide, with a tile clicked.
+TEST_F(SimulatedCameraScreens, MosaicPictureForTheDocs)
+{
+    if (qEnvironmentVariable("BP_GUI_SHOTS").isEmpty())
+        GTEST_SKIP() << "only with BP_GUI_SHOTS=DIR";
+    dev::Instrument* stage = w->stage()->instrument();
+    stage->home(0);
+    ASSERT_TRUE(waitFor([&] { return !stage->status().axes.isEmpty() && stage->status().axes[0].homed && stage->status().axes[1].homed
+                                  && !stage->status().anyMoving(); }, 60000));
+    ASSERT_TRUE(w->showScreen(QStringLiteral("scan")));
+    ui::ScanScreen* scan = w->scanScreen();
+    motion::scan::ScanPlan p;
+    p.region.kind = motion::scan::RegionKind::CentreSize;
+    p.region.centre = {42, 31};
+    p.region.widthMm = p.region.heightMm = 3.4;
+    scan->setPlan(p);
+    QTemporaryDir dir;
+    scan->setOutputFolder(dir.filePath(QStringLiteral("run")));
+    w->cameraSession()->open(QStringLiteral("sim"));
+    ASSERT_TRUE(waitFor([&] { return w->cameraSession()->isOpen(); }, 5000));
+    scan->setTakesImages(true);
+    ASSERT_TRUE(scan->run());
+    ASSERT_TRUE(waitFor([&] { return scan->runner()->state() == dev::jobs::ScanRunner::State::Finished; }, 300000));
+    scan->showTab(2);
+    ASSERT_TRUE(scan->stitchPanel()->stitch());
+    ASSERT_TRUE(waitFor([&] { return !scan->stitchPanel()->summaryText().isEmpty(); }, 120000));
+    ui::StitchQualityMap* map = scan->stitchPanel()->map();
+    map->selectTile(4);
+    emit map->tileClicked(4);
+    guitest::pump(200);
+    guitest::keepPicture(w.get(), QStringLiteral("scan-mosaic.png"));
 }
 
 // The picture in docs/camera.md: BP_GUI_SHOTS=DIR keeps it as DIR/camera-live-view.png

@@ -129,11 +129,6 @@ void StitchQualityMap::draw(QPainter& p, const QSizeF& size) const
             p.setBrush(Qt::NoBrush);
             p.drawRect(r);
         }
-        if (static_cast<int>(i) == m_selected) {
-            p.setPen(QPen(palette().highlight().color(), 3));
-            p.setBrush(Qt::NoBrush);
-            p.drawRect(r.adjusted(-2, -2, 2, 2));
-        }
     }
     // Pairs between neighbours' centres.
     for (const Pair& pair : m_pairs) {
@@ -165,6 +160,12 @@ void StitchQualityMap::draw(QPainter& p, const QSizeF& size) const
         arrow.lineTo(to - u * head - n * head / 2);
         arrow.closeSubpath();
         p.drawPath(arrow);
+    }
+    // The selected tile last, over its neighbours' outlines and the pairs.
+    if (m_selected >= 0 && m_selected < tileCount()) {
+        p.setPen(QPen(QColor(0, 120, 215), 3));
+        p.setBrush(Qt::NoBrush);
+        p.drawRect(t.mapRect(QRectF(m_tiles[static_cast<std::size_t>(m_selected)].stagePx, m_tileSize)));
     }
 }
 
