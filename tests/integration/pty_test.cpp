@@ -94,11 +94,20 @@ TEST(PtyCli, JogRunsForItsSecondsThenStopsAndWaits)
 {
     // Real time: at --time-scale K the CLI's 50 ms refreshes are 50·K ms apart on
     // the device's clock, and from K = 4 on they no longer beat its 200 ms watchdog.
-    PtySimulator sim;
-    ASSERT_TRUE(sim.start(QStringLiteral("stage"), 1)) << sim.error().toStdString();
-    const CliRun r = runCli({QStringLiteral("--port"), sim.link(), QStringLiteral("--json"), QStringLiteral("jog"),
-                             QStringLiteral("X"), QStringLiteral("4"), QStringLiteral("1")});
-    ASSERT_TRUE(r.finished);
+    // On a machine loaded by the rest of the suite a process can be held off the CPU for
+    // 200 ms: the device then stops the jog as it must, and says so. That case (and only
+    // that one) gets a second try, on a fresh simulator.
+    CliRun r;
+    for (int attempt = 0; attempt < 2; ++attempt) {
+        PtySimulator sim;
+        ASSERT_TRUE(sim.start(QStringLiteral("stage"), 1)) << sim.error().toStdString();
+        r = runCli({QStringLiteral("--port"), sim.link(), QStringLiteral("--json"), QStringLiteral("jog"), QStringLiteral("X"),
+                    QStringLiteral("4"), QStringLiteral("1")});
+        ASSERT_TRUE(r.finished);
+        if (r.exitCode == 0 || !r.err.contains(QLatin1String("heard no jog")))
+            break;
+        std::printf("the device's jog watchdog stopped the jog (the machine is busy): trying once more\n%s\n", qPrintable(r.err));
+    }
     ASSERT_EQ(r.exitCode, 0) << r.describe();
     const QJsonObject x = lastJson(r.out).value(QStringLiteral("axes")).toObject().value(QStringLiteral("X")).toObject();
     // 1 s at 4 mm/s, give or take the start-up and the ramps.
