@@ -4,9 +4,11 @@
 // written into --out. Runs continue from their log in --out after any stop.
 #include "accuracy_cli.h"
 #include "accuracy_sources.h"
+#include "camera_cli.h"
 #include "cli_session.h"
 #include "command.h"
 
+#include "device/camera/scale_reading_source.h"
 #include "device/files/accuracy/accuracy_run_folders.h"
 #include "device/files/accuracy/accuracy_test_file.h"
 #include "device/jobs/accuracy/accuracy_runner.h"
@@ -151,16 +153,29 @@ int runAccuracy(Invocation& inv)
     dev::Instrument* instrument = session->instrument();
     if (auto* link = qobject_cast<dev::SimulatedLink*>(session->link()))
         link->host().setTimeScale(timeScale);
+    // Where the other axes stand for the test (the glass scale under the camera, the
+    // gauge's anvil): there before the first stop, as a person would jog them.
+    QVector<QPair<int, double>> at;
+    if (inv.isSet(QStringLiteral("at")) && !session->parseTargets(inv.value(QStringLiteral("at")).split(QLatin1Char(','), Qt::SkipEmptyParts), &at))
+        return Usage;
     if (inv.isSet(QStringLiteral("home"))) {
         quint8 mask = 0;
         if (const auto* a = std::get_if<motion::metrology::AxisTest>(&test))
             session->parseAxes(QString::fromStdString(a->axis), &mask);
         else
             session->parseAxes(QStringLiteral("XY"), &mask);
+        for (const auto& t : at)
+            mask = static_cast<quint8>(mask | (1u << t.first));
         if (int rc = session->request([&](auto cb) { instrument->home(mask, cb); }, tr("home")))
             return rc;
         if (!session->waitUntilHomed(mask))
             return reportFailure(inv, motion::msg::make("accuracy.run.not_homed", {motion::msg::verbatim("axis", "")}), Refused);
+    }
+    if (!at.isEmpty()) {
+        if (int rc = session->request([&](auto cb) { instrument->move(at, false, 0, cb); }, tr("move")))
+            return rc;
+        if (int rc = session->waitUntilStill(tr("move"), false))
+            return rc;
     }
     int axisIndex = 0;
     if (const auto* a = std::get_if<motion::metrology::AxisTest>(&test))
@@ -216,6 +231,8 @@ int runAccuracy(Invocation& inv)
         inv.err() << tr("\r%1 of %2 readings, about %3 s left   ").arg(taken).arg(total).arg(std::lround(eta));
         inv.err().flush();
     });
+    if (auto* camera = qobject_cast<dev::camera::ScaleReadingSource*>(source))
+        camera->setFailedImagesFolder(folder);  // a reading that finds no line keeps its image there
     if (runner.state() != dev::jobs::AccuracyRunner::State::Finished) {
         motion::msg::Message why;
         if (!runner.start(&why))
@@ -310,14 +327,16 @@ QList<QCommandLineOption> accuracyRunOptions()
             option("dwell", "wait after arriving before the settle rule, in s", "s", "0.5"),
             option("overrun", "past the end targets so each approach comes from its side, in mm", "mm", "1"),
             option("test", "a test definition file (*.accuracy-test.json) instead of the options above", "file"),
-            option("source", "readback, gauge:PATH (gauge:sim with --sim), manual or interferometer", "source", "readback"),
+            option("source", "readback, gauge:PATH (gauge:sim with --sim), manual, interferometer or camera[:SOURCE] (a glass scale read by the camera; camera is camera:sim)", "source", "readback"),
             option("gauge-baud", "the gauge port's baud rate", "n", "9600"),
             option("gauge-timeout", "how long the gauge may take to answer, in s", "s", "1"),
             option("out", "folder for the run log, readings CSV, result JSON and PDF report", "dir"),
             option("restart", "keep another test's run log in --out aside and start afresh"),
             option("new-run", "when --out holds a finished run of this test, run it again beside it (into OUT-2, OUT-3, …), keeping both; a stopped newest run goes on"),
             option("home", "home the test's axes first"),
-            option("time-scale", "with --sim: run the simulator's clock this many times faster", "k", "1")};
+            option("at", "move other axes here first (--home homes them too), e.g. Y=50.075: where the scale or the gauge is", "AXIS=MM[,AXIS=MM]"),
+            option("time-scale", "with --sim: run the simulator's clock this many times faster", "k", "1"),
+            cameraOptions("line-scales")[0], cameraOptions("line-scales")[1]};
 }
 
 } // namespace app::cli

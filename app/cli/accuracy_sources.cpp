@@ -1,6 +1,8 @@
 #include "accuracy_sources.h"
 
+#include "camera_cli.h"
 #include "cli_session.h"
+#include "device/camera/scale_reading_source.h"
 #include "device/jobs/accuracy/gauge_source.h"
 #include "device/jobs/accuracy/interferometer_source.h"
 #include "device/jobs/accuracy/manual_source.h"
@@ -54,8 +56,16 @@ ReadingSource* makeSource(Invocation& inv, CliSession& session, const QString& s
     }
     if (spec == QLatin1String("interferometer"))
         return new dev::jobs::InterferometerSource(owner);
+    if (spec == QLatin1String("camera") || spec.startsWith(QLatin1String("camera:"))) {
+        // The glass line scales are what the simulated camera looks at unless --specimen says otherwise.
+        auto camera = cameraFor(inv, &session, spec.size() > 7 ? spec.mid(7) : QStringLiteral("sim"), "line-scales");
+        if (!camera)
+            return nullptr;
+        camera->setParent(owner);
+        return new dev::camera::ScaleReadingSource(camera.release(), dev::camera::ScaleReadingOptions{}, owner);
+    }
     if (!spec.startsWith(QLatin1String("gauge:")) || spec.size() <= 6) {
-        inv.usage(tr("--source '%1': readback, gauge:PATH, manual or interferometer").arg(spec));
+        inv.usage(tr("--source '%1': readback, gauge:PATH, manual, interferometer or camera[:SOURCE]").arg(spec));
         return nullptr;
     }
     const QString port = spec.mid(6);

@@ -5,6 +5,7 @@
 //                      gauge:sim is the in-process simulator's own gauge (with --sim)
 //   manual             a person types each reading on stdin (prompts on stderr)
 //   interferometer     readings imported afterwards (accuracy import)
+//   camera[:SOURCE]    the camera reads a glass line scale (camera_cli.h; camera is camera:sim)
 #include "command.h"
 #include "device/jobs/accuracy/reading_source.h"
 

@@ -12,10 +12,12 @@ namespace app::cli {
 
 class CliSession;
 
-/// nullptr after a usage message naming what was wrong with --camera.
-std::unique_ptr<dev::camera::Camera> cameraFor(Invocation& inv, CliSession* session, const QString& source);
+/// nullptr after a usage message naming what was wrong with --camera. `defaultSpecimen`
+/// is what the simulated camera looks at without --specimen.
+std::unique_ptr<dev::camera::Camera> cameraFor(Invocation& inv, CliSession* session, const QString& source,
+                                               const char* defaultSpecimen = "slide");
 
 /// The options that go with --camera (specimen, seed), for a command's option list.
-QList<QCommandLineOption> cameraOptions();
+QList<QCommandLineOption> cameraOptions(const char* defaultSpecimen = "slide");
 
 } // namespace app::cli

@@ -140,16 +140,16 @@ int cameraSnap(Invocation& inv)
 
 } // namespace
 
-QList<QCommandLineOption> cameraOptions()
+QList<QCommandLineOption> cameraOptions(const char* defaultSpecimen)
 {
-    return {option("specimen", "with --camera sim: what lies on the simulated stage: slide, grid-plate or line-scales", "NAME", "slide"),
+    return {option("specimen", "with --camera sim: what lies on the simulated stage: slide, grid-plate or line-scales", "NAME", defaultSpecimen),
             option("camera-seed", "with --camera sim: the simulated specimen's and noise's seed", "N", "1")};
 }
 
-std::unique_ptr<dev::camera::Camera> cameraFor(Invocation& inv, CliSession* session, const QString& source)
+std::unique_ptr<dev::camera::Camera> cameraFor(Invocation& inv, CliSession* session, const QString& source, const char* defaultSpecimen)
 {
     cam::SimContext sim;
-    const QString specimen = inv.isSet(QStringLiteral("specimen")) ? inv.value(QStringLiteral("specimen")) : QStringLiteral("slide");
+    const QString specimen = inv.isSet(QStringLiteral("specimen")) ? inv.value(QStringLiteral("specimen")) : QLatin1String(defaultSpecimen);
     const auto kind = cam::specimenFromName(specimen.toStdString());
     if (!kind) {
         inv.usage(tr("--specimen '%1' is not one of slide, grid-plate, line-scales").arg(specimen));

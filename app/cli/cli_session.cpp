@@ -178,6 +178,31 @@ bool CliSession::parseAxes(const QString& text, quint8* mask)
     return true;
 }
 
+bool CliSession::parseTargets(const QStringList& words, QVector<QPair<int, double>>* targets)
+{
+    const auto& id = m_client->identity();
+    targets->clear();
+    for (const QString& a : words) {
+        if (a.indexOf(QLatin1Char('=')) != 1) {
+            report(QCoreApplication::translate("app::cli", "expected AXIS=VALUE, got '%1'").arg(a));
+            return false;
+        }
+        const int axis = id.axisIndex(a[0]);
+        if (axis < 0) {
+            report(QCoreApplication::translate("app::cli", "axis '%1' does not exist on the %2").arg(a[0]).arg(ui::words::term(dev::instrumentTerm(id.kind))));
+            return false;
+        }
+        bool ok = false;
+        const double v = a.mid(2).toDouble(&ok);
+        if (!ok || !std::isfinite(v)) {
+            report(QCoreApplication::translate("app::cli", "'%1' is not a number for axis %2").arg(a.mid(2)).arg(a[0]));
+            return false;
+        }
+        targets->push_back({axis, v});
+    }
+    return true;
+}
+
 int CliSession::request(const std::function<void(dev::Instrument::Callback)>& send, const QString& what)
 {
     return awaitAnswer(sendRequest(send), what);

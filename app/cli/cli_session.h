@@ -66,6 +66,8 @@ public:
     bool waitUntilHomed(quint8 mask);
     /// Axis letters ("XY", "X,Z") to a mask; false after a usage message.
     bool parseAxes(const QString& text, quint8* mask);
+    /// "X=12.5", "Y=-3" (one a word) to axis indices and values; false after a usage message.
+    bool parseTargets(const QStringList& words, QVector<QPair<int, double>>* targets);
     void printStatus();
     /// The status as `--json` prints it.
     QJsonObject statusJson() const;

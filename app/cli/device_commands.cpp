@@ -139,18 +139,9 @@ int move(Invocation& inv)
     CliSession* s = inv.session();
     if (!s)
         return LinkTrouble;
-    const auto& id = s->instrument()->identity();
     QVector<QPair<int, double>> targets;
-    for (const QString& a : words) {
-        const int axis = id.axisIndex(a[0]);
-        if (axis < 0)
-            return inv.usage(tr("axis '%1' does not exist on the %2").arg(a[0]).arg(::ui::words::term(dev::instrumentTerm(id.kind))));
-        bool ok = false;
-        const double v = a.mid(2).toDouble(&ok);
-        if (!ok || !std::isfinite(v))
-            return inv.usage(tr("'%1' is not a number for axis %2").arg(a.mid(2)).arg(a[0]));
-        targets.push_back({axis, v});
-    }
+    if (!s->parseTargets(words, &targets))
+        return Usage;
     const bool relative = inv.isSet(QStringLiteral("relative"));
     if (int rc = s->request([&](auto cb) { s->instrument()->move(targets, relative, speed, cb); }, tr("move")))
         return rc;

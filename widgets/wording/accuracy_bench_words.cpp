@@ -334,6 +334,8 @@ QString AccuracyBenchWords::source(const motion::msg::Message& m)
         return tr("as recorded: %1").arg(benchArg(m, "reference"));
     if (id == "accuracy.source.interferometer")
         return tr("laser interferometer (imported after the run)");
+    if (id == "accuracy.source.camera_scale")
+        return tr("camera %1 reading the glass scale along %2").arg(benchArg(m, "camera"), benchArg(m, "axis"));
     return {};
 }
 
@@ -348,6 +350,8 @@ QString AccuracyBenchWords::term(const std::string& id)
         return tr("interferometer");
     if (id == "accuracy.source_kind.manual")
         return tr("manual entry");
+    if (id == "accuracy.source_kind.camera")
+        return tr("camera");
     // The compensation requests, where a request error names them ("no reply to upload compensation …").
     if (id == "compensation.request.upload")
         return tr("upload compensation");

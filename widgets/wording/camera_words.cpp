@@ -11,6 +11,9 @@ namespace {
 // clang-format off
 const Row kRows[] = {
     {"camera.none", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "no camera is chosen", "camera.none")},
+    {"camera.reading.silent", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "the camera %1 gave no image in %2", "camera.reading.silent"), "camera,seconds"},
+    {"camera.reading.one_axis", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "the camera %1 reads a glass scale along one axis, X or Y, at a time", "camera.reading.one_axis"), "camera"},
+    {"camera.reading.no_line", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "%1; the image is kept as %2", "camera.reading.no_line"), "cause,file"},
     {"camera.not_open", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "the camera %1 is not open", "camera.not_open"), "source"},
     {"camera.closed_during_capture", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "the camera %1 was closed while it took an image", "camera.closed_during_capture"), "source"},
     {"camera.sim.no_stage", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "the simulated camera has no simulated stage to look at (is the simulator connected?)", "camera.sim.no_stage")},

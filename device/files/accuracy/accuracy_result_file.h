@@ -30,7 +30,7 @@ struct AccuracyResult {
     std::string axis = "X";
     motion::metrology::Evaluation evaluation;     ///< must be ok() to be written
     motion::metrology::AxisTolerances tolerances;
-    std::string reference;     ///< where the readings came from: "readback", "gauge", "interferometer", "manual"; "" unknown
+    std::string reference;     ///< where the readings came from: "readback", "gauge", "interferometer", "manual", "camera"; "" unknown
     std::string readingsFile;  ///< the readings CSV it was evaluated from, if any
     std::string createdUtc;    ///< ISO 8601, if known
 };

@@ -11,6 +11,7 @@ const char* readingKindName(ReadingKind k)
     case ReadingKind::Gauge: return "gauge";
     case ReadingKind::Interferometer: return "interferometer";
     case ReadingKind::Manual: return "manual";
+    case ReadingKind::Camera: return "camera";
     }
     return "readback";
 }
@@ -22,6 +23,7 @@ const char* readingKindTerm(ReadingKind k)
     case ReadingKind::Gauge: return "accuracy.source_kind.gauge";
     case ReadingKind::Interferometer: return "accuracy.source_kind.interferometer";
     case ReadingKind::Manual: return "accuracy.source_kind.manual";
+    case ReadingKind::Camera: return "accuracy.source_kind.camera";
     }
     return "accuracy.source_kind.readback";
 }

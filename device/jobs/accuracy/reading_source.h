@@ -6,7 +6,8 @@
 //  - a laser interferometer whose own capture is imported after the run
 //    (interferometer_source.h: the run notes each stop's time; the readings arrive
 //    with the import),
-//  - a person typing what a dial indicator shows (manual_source.h).
+//  - a person typing what a dial indicator shows (manual_source.h),
+//  - the microscope's camera reading a glass line scale (device/camera/scale_reading_source.h).
 //
 // The runner moves the axis, waits for it to settle, and then asks the source for
 // the reading at that stop. A source answers every take() exactly once, unless
@@ -26,8 +27,8 @@ struct DeviceEvent;
 
 namespace dev::jobs {
 
-enum class ReadingKind { Readback, Gauge, Interferometer, Manual };
-/// "readback", "gauge", "interferometer", "manual": the result file's "reference".
+enum class ReadingKind { Readback, Gauge, Interferometer, Manual, Camera };
+/// "readback", "gauge", "interferometer", "manual", "camera": the result file's "reference".
 const char* readingKindName(ReadingKind k);
 /// The term that names the kind for a person: accuracy.source_kind.* (ui::words::term).
 const char* readingKindTerm(ReadingKind k);
