@@ -259,6 +259,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     connect(m_scan, &ui::ScanScreen::notice, this, &MainWindow::inform);
     addScreen(QStringLiteral("scan"), tr("Scan"), m_scan);
     m_calibration = makeCalibrationScreen(sessions().data(), this, m_banner, m_hub, m_options);
+    m_calibration->setCameraSession(m_camera);
     addScreen(QStringLiteral("calibration"), tr("Calibration"), m_calibration);
     connect(m_nav, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
     // The jog keys work on every screen: a screen about one instrument jogs that one, any

@@ -2,6 +2,7 @@
 // progress and time left, manual entry, results, before/after and the report.
 #include "widgets/calibration/calibration_screen.h"
 
+#include "device/camera/scale_reading_source.h"
 #include "device/files/accuracy/accuracy_run_folders.h"
 #include "device/files/accuracy/error_curve_csv.h"
 #include "device/jobs/accuracy/circle_telemetry.h"
@@ -11,6 +12,7 @@
 #include "device/jobs/accuracy/interferometer_source.h"
 #include "device/jobs/accuracy/manual_source.h"
 #include "device/jobs/accuracy/readback_source.h"
+#include "widgets/camera/camera_session.h"
 #include "device/link/transport.h"
 #include "widgets/calibration/deviation_plot.h"
 #include "widgets/calibration/fit_panel.h"
@@ -75,6 +77,17 @@ std::unique_ptr<dev::jobs::ReadingSource> CalibrationScreen::makeSource(int axis
         return std::make_unique<dev::jobs::ReadbackSource>(cur());
     if (kind == QLatin1String("interferometer"))
         return std::make_unique<dev::jobs::InterferometerSource>();
+    if (kind == QLatin1String("camera")) {
+        dev::camera::Camera* camera = m_cameraSession ? m_cameraSession->camera() : nullptr;
+        if (!camera) {
+            *error = tr("Open a camera first, on the Scan or Jog screen's Camera tab, with the glass scale under it "
+                        "(on the simulator: the sim camera, started with --specimen line-scales).");
+            return nullptr;
+        }
+        dev::camera::ScaleReadingOptions o;
+        o.failedImagesFolder = m_folder->text().trimmed();
+        return std::make_unique<dev::camera::ScaleReadingSource>(camera, o);
+    }
     if (kind == QLatin1String("manual")) {
         auto m = std::make_unique<dev::jobs::ManualSource>();
         m_manual = m.get();

@@ -138,7 +138,7 @@ QWidget* CalibrationScreen::buildLeft()
     m_sourceBox = new QComboBox;
     m_sourceBox->setObjectName(QStringLiteral("calibrationSource"));
     WheelGuard::guard(m_sourceBox);
-    for (const char* key : {"readback", "gauge", "manual", "interferometer"})
+    for (const char* key : {"readback", "gauge", "manual", "interferometer", "camera"})
         m_sourceBox->addItem(QString(), QString::fromLatin1(key));
     rf->addRow(worded(QT_TR_NOOP("From")), m_sourceBox);
     m_port = new QLineEdit;
@@ -324,6 +324,7 @@ void CalibrationScreen::retranslateUi()
     m_sourceBox->setItemText(1, tr("a gauge on a serial port"));
     m_sourceBox->setItemText(2, tr("typed at each stop (dial indicator)"));
     m_sourceBox->setItemText(3, tr("laser interferometer (import afterwards)"));
+    m_sourceBox->setItemText(4, tr("the camera reading a glass scale"));
     m_sourceBox->setToolTip(tr("The readback is what the position loop closes on: it cannot see the work point's error. "
                                "A gauge or an interferometer at the work point can."));
     m_port->setPlaceholderText(tr("/dev/ttyUSB1, or sim for the simulator's gauge"));

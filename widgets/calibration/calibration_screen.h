@@ -40,6 +40,7 @@ struct StopContext;
 
 namespace ui {
 
+class CameraSession;
 class AccuracyTestForm;
 class DeviationPlot;
 class FitPanel;
@@ -63,6 +64,8 @@ public:
     void setFileChooser(FileChooser chooser) { m_chooser = std::move(chooser); }
     void setConfirm(Confirm confirm) { m_confirm = std::move(confirm); }
     void setGaugeFactory(GaugeFactory factory) { m_gaugeFactory = std::move(factory); }
+    /// The GUI's camera, for the "camera reading a glass scale" source.
+    void setCameraSession(CameraSession* session) { m_cameraSession = session; }
 
     void setInstrument(int index);
     int instrument() const { return m_current; }
@@ -161,6 +164,7 @@ private:
     FileChooser m_chooser;
     Confirm m_confirm;
     GaugeFactory m_gaugeFactory;
+    CameraSession* m_cameraSession = nullptr;
     motion::msg::Message m_lastProblem;
 
     QComboBox* m_instrumentBox;
