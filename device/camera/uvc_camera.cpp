@@ -337,7 +337,8 @@ void UvcCamera::takeLatest()
     }
     if (!frame.isValid() || !m_open)
         return;
-    const std::int64_t startedUs = m_clock.exposureStartHostUs(frame.startTime(), frame.endTime(), arrivedUs, framePeriodUs());
+    const std::int64_t exposureUs = static_cast<std::int64_t>(std::max(0.0, exposureMs()) * 1000.0);
+    const std::int64_t startedUs = m_clock.exposureStartHostUs(frame.startTime(), frame.endTime(), arrivedUs, framePeriodUs(), exposureUs);
     const bool forCapture = m_waiting && !m_captureConverting && startedUs >= m_requestHostUs;
     const bool forLive = m_live && !m_liveInFlight;
     if (forCapture || forLive)
