@@ -92,7 +92,7 @@ int cameraList(Invocation& inv)
     };
     add(QStringLiteral("sim"), tr("the simulated camera on the in-process simulator's stage (--sim stage)"), true);
     add(QStringLiteral("sim:PATH"), tr("the simulated camera benchpilot-sim serves on a socket (--camera-socket)"), false);
-    add(QStringLiteral("uvc[:NAME]"), tr("a USB camera through Qt Multimedia (NAME: one of the cameras below; @WIDTHxHEIGHT picks a resolution)"), BP_WITH_UVC != 0);
+    add(QStringLiteral("uvc[:NAME]"), tr("a USB camera through Qt Multimedia: NAME as camera list names it, NAME@WIDTHxHEIGHT for a resolution"), BP_WITH_UVC != 0);
     add(QStringLiteral("command:CMD"), tr("your capture program, run for each image with {file} {tile} {x_mm} {y_mm}"), true);
     add(QStringLiteral("folder:DIR"), tr("the next complete new image a camera's own software saves in DIR"), true);
     QJsonArray specimens;
