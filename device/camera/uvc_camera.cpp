@@ -9,17 +9,11 @@
 #include <QVideoSink>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 namespace dev::camera {
 
 namespace {
-
-std::int64_t uvcHostNowUs()
-{
-    return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 motion::msg::Problem uvcProblem(const motion::msg::Message& m) { return motion::msg::Problem("", m); }
 
@@ -36,26 +30,27 @@ void deleteSoon(std::unique_ptr<T>& p)
 
 UvcCamera::UvcCamera(const QString& name, QObject* parent) : Camera(parent), m_name(name.trimmed())
 {
-    m_pool.setMaxThreadCount(1);
+    m_feed.setSourceName(sourceText());
     m_openTimer.setSingleShot(true);
-    m_captureTimer.setSingleShot(true);
     connect(&m_openTimer, &QTimer::timeout, this, [this] {
         failAll(motion::msg::make("camera.uvc.open_timeout", {motion::msg::verbatim("source", sourceText()),
                                                               motion::msg::real("seconds", kOpenTimeoutMs / 1000.0, motion::msg::Unit::S)}));
     });
-    connect(&m_captureTimer, &QTimer::timeout, this, [this] {
-        failCapture(motion::msg::make("camera.uvc.timeout", {motion::msg::verbatim("source", sourceText()),
-                                                             motion::msg::real("seconds", m_captureTimer.interval() / 1000.0, motion::msg::Unit::S)}));
+    connect(&m_feed, &UvcFrameFeed::liveFrame, this, [this](const Frame& f) {
+        if (m_open)
+            emit liveFrame(f);
     });
+    connect(&m_feed, &UvcFrameFeed::captured, this, &Camera::captured);
+    connect(&m_feed, &UvcFrameFeed::captureFailed, this, [this](std::uint64_t id, const motion::msg::Message& why) { emit failed(id, uvcProblem(why)); });
+    connect(&m_feed, &UvcFrameFeed::liveFailed, this, [this](const motion::msg::Message& why) { emit failed(0, uvcProblem(why)); });
 }
 
 UvcCamera::~UvcCamera()
 {
     if (m_camera)
-        m_camera->stop();  // the streaming thread stops with it: no frame arrives after this
+        m_camera->stop();  // the streaming thread stops with it: no frame is offered after this
     if (m_sink)
         QObject::disconnect(m_sink.get(), nullptr, this, nullptr);
-    m_pool.waitForDone();
     m_session.reset();  // first: it holds the camera and the sink
     m_camera.reset();
     m_sink.reset();
@@ -108,24 +103,32 @@ void UvcCamera::open()
         return;
     }
     m_camera = std::make_unique<QCamera>(m_device);
-    m_camera->setCameraFormat(format);
     m_sink = std::make_unique<QVideoSink>();
     m_session = std::make_unique<QMediaCaptureSession>();
     m_session->setCamera(m_camera.get());
     m_session->setVideoSink(m_sink.get());
-    // Direct: frames come on Qt Multimedia's thread and are only parked there (onVideoFrame).
-    connect(m_sink.get(), &QVideoSink::videoFrameChanged, this, [this](const QVideoFrame& f) { onVideoFrame(f); }, Qt::DirectConnection);
+    applyFormat(format);
+    // Direct: frames come on Qt Multimedia's thread; the feed only parks them there.
+    UvcFrameFeed* feed = &m_feed;
+    connect(m_sink.get(), &QVideoSink::videoFrameChanged, this, [feed](const QVideoFrame& f) { feed->offer(f); }, Qt::DirectConnection);
     connect(m_camera.get(), &QCamera::activeChanged, this, &UvcCamera::onActiveChanged);
     connect(m_camera.get(), &QCamera::errorOccurred, this, [this](QCamera::Error error, const QString& detail) {
         if (error != QCamera::NoError)
-            onCameraError(detail);
+            failAll(motion::msg::make("camera.uvc.error", {motion::msg::verbatim("source", sourceText()), motion::msg::verbatim("detail", detail.toStdString())}));
     });
     m_devices = std::make_unique<QMediaDevices>();
     connect(m_devices.get(), &QMediaDevices::videoInputsChanged, this, &UvcCamera::onDevicesChanged);
     m_opening = true;
-    m_clock.reset();
+    m_feed.clear();
     m_openTimer.start(kOpenTimeoutMs);
     m_camera->start();
+}
+
+void UvcCamera::applyFormat(const QCameraFormat& format)
+{
+    m_camera->setCameraFormat(format);
+    m_feed.setFramePeriodUs(format.maxFrameRate() > 0 ? static_cast<std::int64_t>(1e6 / format.maxFrameRate()) : 0);
+    m_feed.restartStream();
 }
 
 void UvcCamera::onActiveChanged(bool active)
@@ -141,13 +144,8 @@ void UvcCamera::onActiveChanged(bool active)
         setGain(m_gain);
     emit opened();
     // A capture asked while the camera was starting: its size is checked now that the camera is there.
-    if (m_waiting)
+    if (m_feed.waiting())
         useFormatFor(m_request);
-}
-
-void UvcCamera::onCameraError(const QString& detail)
-{
-    failAll(motion::msg::make("camera.uvc.error", {motion::msg::verbatim("source", sourceText()), motion::msg::verbatim("detail", detail.toStdString())}));
 }
 
 void UvcCamera::onDevicesChanged()
@@ -162,11 +160,11 @@ void UvcCamera::onDevicesChanged()
 
 void UvcCamera::failCapture(const motion::msg::Message& why)
 {
-    if (!m_waiting)
+    if (!m_feed.waiting())
         return;
-    m_waiting = false;
-    m_captureTimer.stop();
-    emit failed(m_request.id, uvcProblem(why));
+    const std::uint64_t id = m_feed.waitingFor();
+    m_feed.cancel();
+    emit failed(id, uvcProblem(why));
 }
 
 void UvcCamera::failAll(const motion::msg::Message& why)
@@ -184,7 +182,6 @@ void UvcCamera::failAll(const motion::msg::Message& why)
 void UvcCamera::teardown()
 {
     m_openTimer.stop();
-    m_captureTimer.stop();
     if (m_camera) {
         QObject::disconnect(m_camera.get(), nullptr, this, nullptr);
         m_camera->stop();
@@ -197,13 +194,9 @@ void UvcCamera::teardown()
     deleteSoon(m_camera);
     deleteSoon(m_sink);
     deleteSoon(m_devices);
-    {
-        std::lock_guard<std::mutex> lock(m_latestMutex);
-        m_latest = QVideoFrame();
-    }
+    m_feed.clear();
     m_opening = false;
     m_open = false;
-    m_liveInFlight = false;
 }
 
 void UvcCamera::close()
@@ -219,15 +212,15 @@ void UvcCamera::startLive()
 {
     if (!m_open && !m_opening)
         open();
-    m_live = true;
-    m_liveProblemSaid = false;
+    m_feed.setLive(true);
 }
 
-void UvcCamera::stopLive() { m_live = false; }
+void UvcCamera::stopLive() { m_feed.setLive(false); }
 
 void UvcCamera::setExposureMs(double ms)
 {
     m_exposureMs = std::max(0.0, ms);
+    m_feed.setExposureMs(m_exposureMs);
     if (!m_camera || !m_camera->supportedFeatures().testFlag(QCamera::Feature::ManualExposureTime))
         return;
     if (m_exposureMs > 0) {
@@ -249,6 +242,7 @@ double UvcCamera::exposureMs() const
 void UvcCamera::setGain(double gain)
 {
     m_gain = std::max(0.0, gain);
+    m_feed.setGain(m_gain);
     if (!m_camera || !m_camera->supportedFeatures().testFlag(QCamera::Feature::IsoSensitivity))
         return;
     if (m_gain > 0) {
@@ -257,12 +251,6 @@ void UvcCamera::setGain(double gain)
     } else {
         m_camera->setAutoIsoSensitivity();
     }
-}
-
-std::int64_t UvcCamera::framePeriodUs() const
-{
-    const float fps = m_camera ? m_camera->cameraFormat().maxFrameRate() : 0.f;
-    return fps > 0 ? static_cast<std::int64_t>(1e6 / fps) : 0;
 }
 
 bool UvcCamera::useFormatFor(const CaptureRequest& request)
@@ -284,9 +272,7 @@ bool UvcCamera::useFormatFor(const CaptureRequest& request)
         return false;
     }
     // The stream starts again at the new size: only frames begun after this are the tile's.
-    m_camera->setCameraFormat(format);
-    m_clock.reset();
-    m_requestHostUs = uvcHostNowUs();
+    applyFormat(format);
     return true;
 }
 
@@ -296,101 +282,15 @@ void UvcCamera::capture(const CaptureRequest& request)
         emit failed(request.id, uvcProblem(m_openProblem.value_or(motion::msg::make("camera.not_open", {motion::msg::verbatim("source", sourceText())}))));
         return;
     }
-    if (m_waiting) {
+    if (m_feed.waiting()) {
         emit failed(request.id, uvcProblem(motion::msg::make("camera.uvc.busy", {motion::msg::verbatim("source", sourceText())})));
         return;
     }
     m_request = request;
-    m_requestHostUs = uvcHostNowUs();
-    m_waiting = true;
-    const double exposureMsNow = std::max(exposureMs(), 0.0);
-    m_captureTimer.start(kCaptureTimeoutMs + static_cast<int>(2 * std::min(exposureMsNow, 60000.0)) + (m_opening ? kOpenTimeoutMs : 0));
+    const double exposure = std::clamp(exposureMs(), 0.0, 60000.0);
+    m_feed.waitForFrame(request.id, kCaptureTimeoutMs + static_cast<int>(2 * exposure) + (m_opening ? kOpenTimeoutMs : 0));
     if (m_open)
         useFormatFor(request);
-}
-
-void UvcCamera::onVideoFrame(const QVideoFrame& frame)
-{
-    const std::int64_t now = uvcHostNowUs();
-    std::lock_guard<std::mutex> lock(m_latestMutex);
-    m_latest = frame;  // an older frame not yet picked up is dropped here
-    m_latestArrivedUs = now;
-    ++m_arrived;
-    if (!m_pickUpQueued) {
-        m_pickUpQueued = true;
-        QMetaObject::invokeMethod(this, &UvcCamera::takeLatest, Qt::QueuedConnection);
-    }
-}
-
-void UvcCamera::takeLatest()
-{
-    QVideoFrame frame;
-    std::int64_t arrivedUs = 0;
-    std::uint64_t sequence = 0;
-    {
-        std::lock_guard<std::mutex> lock(m_latestMutex);
-        frame = m_latest;
-        m_latest = QVideoFrame();
-        arrivedUs = m_latestArrivedUs;
-        sequence = m_arrived;
-        m_pickUpQueued = false;
-    }
-    if (!frame.isValid() || !m_open)
-        return;
-    const std::int64_t exposureUs = static_cast<std::int64_t>(std::max(0.0, exposureMs()) * 1000.0);
-    const std::int64_t startedUs = m_clock.exposureStartHostUs(frame.startTime(), frame.endTime(), arrivedUs, framePeriodUs(), exposureUs);
-    const bool forCapture = m_waiting && !m_captureConverting && startedUs >= m_requestHostUs;
-    const bool forLive = m_live && !m_liveInFlight;
-    if (forCapture || forLive)
-        convert(frame, sequence, startedUs, forCapture, forLive);
-}
-
-void UvcCamera::convert(const QVideoFrame& frame, std::uint64_t sequence, std::int64_t startedUs, bool forCapture, bool forLive)
-{
-    if (forCapture)
-        m_captureConverting = true;
-    if (forLive)
-        m_liveInFlight = true;
-    const std::uint64_t requestId = forCapture ? m_request.id : 0;
-    const double exposure = exposureMs();
-    const double gain = m_camera && m_camera->isoSensitivity() > 0 ? m_camera->isoSensitivity() : 0;
-    m_pool.start([this, frame, sequence, startedUs, requestId, forCapture, forLive, exposure, gain] {
-        auto converted = frameFromVideo(frame);
-        if (converted) {
-            converted->startedHostUs = startedUs;
-            converted->sequence = sequence;
-            converted->exposureMs = exposure;
-            converted->gain = gain;
-        }
-        // Back on the camera's thread; the destructor waits for this task.
-        QMetaObject::invokeMethod(this, [this, converted, requestId, forCapture, forLive]() mutable {
-            if (forCapture)
-                m_captureConverting = false;
-            deliver(std::move(converted), forCapture && m_waiting && m_request.id == requestId, forLive);
-        }, Qt::QueuedConnection);
-    });
-}
-
-void UvcCamera::deliver(motion::msg::Checked<Frame> frame, bool forCapture, bool forLive)
-{
-    if (forLive) {
-        m_liveInFlight = false;
-        if (frame && m_live && m_open) {
-            emit liveFrame(*frame);
-        } else if (!frame && !m_liveProblemSaid) {
-            m_liveProblemSaid = true;  // once: every frame of this format would say the same
-            emit failed(0, uvcProblem(frame.error()));
-        }
-    }
-    if (!forCapture)
-        return;
-    if (!frame) {
-        failCapture(frame.error());
-        return;
-    }
-    m_waiting = false;
-    m_captureTimer.stop();
-    emit captured(m_request.id, *frame);
 }
 
 } // namespace dev::camera
