@@ -147,22 +147,15 @@ int cameraSnap(Invocation& inv)
     std::unique_ptr<cam::Camera> camera = cameraFor(inv, s, inv.value(QStringLiteral("camera")));
     if (!camera)
         return Usage;
+    if (const int rc = openCamera(inv, camera.get()); rc != Ok)
+        return rc;
     std::optional<cam::Frame> frame;
     std::optional<motion::msg::Message> failure;
     QObject::connect(camera.get(), &cam::Camera::captured, [&](std::uint64_t, const cam::Frame& f) { frame = f; });
-    // Connected before open(): a camera that is not there says so at once.
     QObject::connect(camera.get(), &cam::Camera::failed, [&](std::uint64_t, const motion::msg::Problem& p) {
         if (!failure)
             failure = p.message;
     });
-    bool opened = false;
-    QObject::connect(camera.get(), &cam::Camera::opened, [&] { opened = true; });
-    camera->open();
-    // A USB camera starts asynchronously: its exposure can be set once it is there.
-    if (!failure && !camera->isOpen() && !spinUntil([&] { return opened || failure; }, kSnapGraceMs))
-        return inv.refused(tr("the camera %1 did not open within %2 s").arg(camera->source()).arg(kSnapGraceMs / 1000));
-    if (failure)
-        return inv.refused(problemText(*failure));
     if (camera->capabilities().exposure)
         camera->setExposureMs(exposureMs);
     const auto& st = s->instrument()->status();
@@ -213,6 +206,27 @@ int cameraSnap(Invocation& inv)
 }
 
 } // namespace
+
+int openCamera(Invocation& inv, dev::camera::Camera* camera)
+{
+    std::optional<motion::msg::Message> failure;
+    bool opened = false;
+    // Connected before open(): a camera that is not there says so at once, from open() itself.
+    const auto failedLink = QObject::connect(camera, &cam::Camera::failed, [&](std::uint64_t id, const motion::msg::Problem& p) {
+        if (id == 0 && !failure)
+            failure = p.message;
+    });
+    const auto openedLink = QObject::connect(camera, &cam::Camera::opened, [&] { opened = true; });
+    camera->open();
+    const bool settled = camera->isOpen() || failure || spinUntil([&] { return opened || failure; }, kSnapGraceMs);
+    QObject::disconnect(failedLink);
+    QObject::disconnect(openedLink);
+    if (failure)
+        return inv.refused(problemText(*failure));
+    if (!settled || !camera->isOpen())
+        return inv.refused(tr("the camera %1 did not open within %2 s").arg(camera->source()).arg(kSnapGraceMs / 1000));
+    return Ok;
+}
 
 QList<QCommandLineOption> cameraOptions()
 {

@@ -6,6 +6,7 @@
 #include "integration/programs.h"
 
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -54,6 +55,30 @@ TEST(UvcCli, ASnapFromACameraThatIsNotThereFailsAtOnceAndWritesNothing)
     EXPECT_TRUE(r.err.contains(source)) << "the message names the camera asked for: " << r.describe();
     EXPECT_TRUE(r.err.contains(QStringLiteral("no USB camera")) || r.err.contains(QStringLiteral("the cameras found are"))) << r.describe();
     EXPECT_FALSE(QFile::exists(file));
+}
+
+TEST(UvcCli, AScanWithACameraThatIsNotThereStopsBeforeItStartsAndWritesNothing)
+{
+    QTemporaryDir dir;
+    const auto plan = runProgram(binary("benchpilot-cli"), {QStringLiteral("scan"), QStringLiteral("plan"), QStringLiteral("--roi"),
+                                                            QStringLiteral("20,20,20.7,20.5"), QStringLiteral("--sensor"), QStringLiteral("256,256"),
+                                                            QStringLiteral("--sensor-um"), QStringLiteral("10"), QStringLiteral("--mag"), QStringLiteral("10")});
+    ASSERT_EQ(plan.exitCode, 0) << plan.describe();
+    const QString planFile = dir.filePath(QStringLiteral("p.scan.json"));
+    {
+        QFile f(planFile);
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+        f.write(plan.out.toUtf8());
+    }
+    const QString out = dir.filePath(QStringLiteral("run"));
+    const QString source = QStringLiteral("uvc:BenchPilot test camera that is not there");
+    const auto r = runProgram(binary("benchpilot-cli"), {QStringLiteral("--sim"), QStringLiteral("stage"), QStringLiteral("scan"), QStringLiteral("run"), planFile,
+                                                         QStringLiteral("--out"), out, QStringLiteral("--home"), QStringLiteral("--camera"), source},
+                              30000);
+    ASSERT_TRUE(r.finished) << r.describe();
+    EXPECT_EQ(r.exitCode, 2) << r.describe();
+    EXPECT_TRUE(r.err.contains(source)) << r.describe();
+    EXPECT_FALSE(QFileInfo::exists(out)) << "no run folder, no run log: the run never started";
 }
 
 #endif // BP_WITH_UVC
