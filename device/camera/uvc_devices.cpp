@@ -22,19 +22,20 @@ UvcName parseUvcName(const QString& text)
     return out;
 }
 
+std::vector<UvcFormat> uvcFormatsOf(const QCameraDevice& device)
+{
+    std::vector<UvcFormat> out;
+    for (const QCameraFormat& f : device.videoFormats())
+        out.push_back({f.resolution(), f.pixelFormat(), f.minFrameRate(), f.maxFrameRate(), isAcceptedVideoFormat(f.pixelFormat())});
+    return out;
+}
+
 std::vector<UvcDevice> listUvcCameras()
 {
     std::vector<UvcDevice> out;
     const auto found = QMediaDevices::videoInputs();
-    for (const QCameraDevice& d : found) {
-        UvcDevice u;
-        u.name = d.description();
-        u.id = QString::fromUtf8(d.id());
-        u.isDefault = d.isDefault();
-        for (const QCameraFormat& f : d.videoFormats())
-            u.formats.push_back({f.resolution(), f.pixelFormat(), f.minFrameRate(), f.maxFrameRate(), isAcceptedVideoFormat(f.pixelFormat())});
-        out.push_back(std::move(u));
-    }
+    for (const QCameraDevice& d : found)
+        out.push_back({d.description(), QString::fromUtf8(d.id()), d.isDefault(), uvcFormatsOf(d)});
     return out;
 }
 
@@ -60,41 +61,48 @@ motion::msg::Checked<QCameraDevice> findUvcCamera(const QString& name, const QLi
                                                                    motion::msg::verbatim("found", names.join(QStringLiteral(", ")).toStdString())}));
 }
 
-QCameraFormat chooseUvcFormat(const QCameraDevice& device, std::optional<QSize> size)
+int chooseUvcFormat(const std::vector<UvcFormat>& formats, std::optional<QSize> size)
 {
-    QCameraFormat best;
     auto area = [](const QSize& s) { return static_cast<qint64>(s.width()) * s.height(); };
-    auto better = [&](const QCameraFormat& a, const QCameraFormat& b) {
-        if (b.isNull())
-            return true;
-        if (area(a.resolution()) != area(b.resolution()))
-            return area(a.resolution()) > area(b.resolution());
-        const bool aJpeg = a.pixelFormat() == QVideoFrameFormat::Format_Jpeg, bJpeg = b.pixelFormat() == QVideoFrameFormat::Format_Jpeg;
+    auto better = [&](const UvcFormat& a, const UvcFormat& b) {
+        if (area(a.size) != area(b.size))
+            return area(a.size) > area(b.size);
+        const bool aJpeg = a.pixelFormat == QVideoFrameFormat::Format_Jpeg, bJpeg = b.pixelFormat == QVideoFrameFormat::Format_Jpeg;
         if (aJpeg != bJpeg)
             return !aJpeg;
-        return a.maxFrameRate() > b.maxFrameRate();
+        return a.maxFps > b.maxFps;
     };
-    for (const QCameraFormat& f : device.videoFormats()) {
-        if (!isAcceptedVideoFormat(f.pixelFormat()) || (size && f.resolution() != *size))
+    int best = -1;
+    for (int i = 0; i < static_cast<int>(formats.size()); ++i) {
+        const UvcFormat& f = formats[static_cast<std::size_t>(i)];
+        if (!isAcceptedVideoFormat(f.pixelFormat) || (size && f.size != *size))
             continue;
-        if (better(f, best))
-            best = f;
+        if (best < 0 || better(f, formats[static_cast<std::size_t>(best)]))
+            best = i;
     }
     return best;
 }
 
-std::string uvcSizesText(const QCameraDevice& device)
+QCameraFormat chooseUvcFormat(const QCameraDevice& device, std::optional<QSize> size)
 {
-    auto key = [](const QSize& s) { return std::make_pair(-static_cast<qint64>(s.width()) * s.height(), s.width()); };
+    const int i = chooseUvcFormat(uvcFormatsOf(device), size);
+    return i < 0 ? QCameraFormat() : device.videoFormats().at(i);
+}
+
+std::string uvcSizesText(const std::vector<UvcFormat>& formats)
+{
     std::vector<QSize> sizes;
-    for (const QCameraFormat& f : device.videoFormats())
-        if (isAcceptedVideoFormat(f.pixelFormat()) && std::find(sizes.begin(), sizes.end(), f.resolution()) == sizes.end())
-            sizes.push_back(f.resolution());
-    std::sort(sizes.begin(), sizes.end(), [&](const QSize& a, const QSize& b) { return key(a) < key(b); });
+    for (const UvcFormat& f : formats)
+        if (isAcceptedVideoFormat(f.pixelFormat) && std::find(sizes.begin(), sizes.end(), f.size) == sizes.end())
+            sizes.push_back(f.size);
+    auto area = [](const QSize& s) { return static_cast<qint64>(s.width()) * s.height(); };
+    std::stable_sort(sizes.begin(), sizes.end(), [&](const QSize& a, const QSize& b) { return area(a) > area(b); });
     QStringList parts;
     for (const QSize& s : sizes)
         parts << QStringLiteral("%1×%2").arg(s.width()).arg(s.height());
     return parts.join(QStringLiteral(", ")).toStdString();
 }
+
+std::string uvcSizesText(const QCameraDevice& device) { return uvcSizesText(uvcFormatsOf(device)); }
 
 } // namespace dev::camera

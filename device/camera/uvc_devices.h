@@ -47,11 +47,16 @@ std::vector<UvcDevice> listUvcCameras();
 /// camera.uvc.none_found or camera.uvc.not_found, which name what was asked and what is there.
 motion::msg::Checked<QCameraDevice> findUvcCamera(const QString& name, const QList<QCameraDevice>& found);
 
-/// The format to open `device` with: of the formats BenchPilot takes, the one of `size`
-/// (any size when not given: the largest, as a microscope wants the whole sensor), an
-/// uncompressed one before Motion-JPEG, then the fastest. Null when none fits.
+/// The format to open a camera with, of `formats`: of those BenchPilot takes, the one of
+/// `size` (any size when not given: the largest, as a microscope wants the whole sensor),
+/// an uncompressed one before Motion-JPEG, then the fastest. −1 when none fits.
+int chooseUvcFormat(const std::vector<UvcFormat>& formats, std::optional<QSize> size);
+/// The same for a camera found: a null format when none fits.
 QCameraFormat chooseUvcFormat(const QCameraDevice& device, std::optional<QSize> size);
-/// "1920×1080, 1280×720": the sizes `device` offers in formats BenchPilot takes.
+/// "1920×1080, 1280×720": the sizes of `formats` BenchPilot takes, largest first.
+std::string uvcSizesText(const std::vector<UvcFormat>& formats);
 std::string uvcSizesText(const QCameraDevice& device);
+/// A camera's formats as BenchPilot lists them.
+std::vector<UvcFormat> uvcFormatsOf(const QCameraDevice& device);
 
 } // namespace dev::camera

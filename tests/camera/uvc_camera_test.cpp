@@ -89,6 +89,25 @@ TEST(UvcSource, ANameMayCarryAResolution)
     EXPECT_TRUE(n.camera.isEmpty());
 }
 
+TEST(UvcSource, TheFormatChosenIsTheWholeSensorUncompressedOrThePlansSize)
+{
+    using PF = QVideoFrameFormat::PixelFormat;
+    // A webcam as GStreamer lists one: Motion-JPEG at every size, YUYV up to 1280 × 720,
+    // and a format BenchPilot does not read at the largest size.
+    const std::vector<cam::UvcFormat> formats = {
+        {QSize(640, 480), PF::Format_YUYV, 5, 30, true},     {QSize(1280, 720), PF::Format_YUYV, 5, 10, true},
+        {QSize(1280, 720), PF::Format_Jpeg, 5, 30, true},    {QSize(1920, 1080), PF::Format_Jpeg, 5, 30, true},
+        {QSize(1920, 1080), PF::Format_Jpeg, 5, 60, true},   {QSize(2592, 1944), PF::Format_P010, 5, 5, false},
+    };
+    EXPECT_EQ(cam::chooseUvcFormat(formats, std::nullopt), 4) << "the largest it can read, the faster of two alike";
+    EXPECT_EQ(cam::chooseUvcFormat(formats, QSize(1280, 720)), 1) << "uncompressed before Motion-JPEG at the same size";
+    EXPECT_EQ(cam::chooseUvcFormat(formats, QSize(640, 480)), 0);
+    EXPECT_EQ(cam::chooseUvcFormat(formats, QSize(2592, 1944)), -1) << "a size only in a format it cannot read";
+    EXPECT_EQ(cam::chooseUvcFormat(formats, QSize(2048, 2048)), -1) << "a plan's sensor the camera does not have";
+    EXPECT_EQ(cam::chooseUvcFormat(std::vector<cam::UvcFormat>{}, std::nullopt), -1);
+    EXPECT_EQ(cam::uvcSizesText(formats), "1920×1080, 1280×720, 640×480");
+}
+
 TEST(UvcSource, NoCameraAttachedIsSaidNamingWhatWasAsked)
 {
     const auto none = cam::findUvcCamera(QStringLiteral("Logitech BRIO"), {});
