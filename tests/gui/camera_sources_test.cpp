@@ -1,6 +1,7 @@
 // The camera choice offers the USB cameras found, and finding them (which asks the system's
 // multimedia backend, a fraction of a second on a machine's first run) happens only when the
 // operator opens the choice: never while the window is built.
+#include "app/gui/camera_wiring.h"
 #include "fake_camera.h"
 #include "gui_window.h"
 #include "widgets/camera/camera_panel.h"
@@ -62,4 +63,21 @@ TEST(CameraSources, TheMainWindowStartsWithoutLookingForCameras)
     auto w = guitest::openReadyWindow({1366, 768}, options);
     ASSERT_TRUE(w) << "the simulated instruments did not become ready";
     EXPECT_EQ(asked, 0);
+}
+
+TEST(CameraSources, AUsbCameraThatIsNotThereIsSaidAtOnceAndNothingStaysOpening)
+{
+    // The GUI's own factory: no camera is attached here, so a name none has is refused as
+    // the operator would see it, naming what was typed; the panel is not left "opening".
+    ui::CameraSession session;
+    session.setFactory([](const QString& source, QString* error) { return app::makeCamera(source, nullptr, error); });
+    QStringList said;
+    QObject::connect(&session, &ui::CameraSession::problem, [&](const QString& m) { said << m; });
+    const QString source = QStringLiteral("uvc:BenchPilot test camera that is not there");
+    EXPECT_TRUE(session.open(source));
+    QApplication::processEvents();
+    ASSERT_EQ(said.size(), 1) << said.join(QLatin1Char('\n')).toStdString();
+    EXPECT_TRUE(said[0].contains(source)) << said[0].toStdString();
+    EXPECT_FALSE(session.isOpen());
+    EXPECT_FALSE(session.isOpening());
 }
