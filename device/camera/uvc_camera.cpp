@@ -170,8 +170,7 @@ void UvcCamera::failCapture(const motion::msg::Message& why)
 void UvcCamera::failAll(const motion::msg::Message& why)
 {
     const bool wasOpen = m_open;
-    if (m_opening)
-        m_openProblem = why;
+    m_openProblem = why;  // a capture asked after this says why, not just "not open"
     failCapture(why);
     teardown();
     emit failed(0, uvcProblem(why));

@@ -72,7 +72,7 @@ private:
     std::unique_ptr<QCamera> m_camera;
     std::unique_ptr<QVideoSink> m_sink;
     UvcFrameFeed m_feed;
-    std::optional<motion::msg::Message> m_openProblem;  ///< why the last open failed: a capture after it says so
+    std::optional<motion::msg::Message> m_openProblem;  ///< why the camera failed to open or was lost: a capture after it says so
     bool m_opening = false;
     bool m_open = false;
     double m_exposureMs = 0;  ///< as set; 0 = the camera's own automatic exposure
