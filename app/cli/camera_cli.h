@@ -17,6 +17,10 @@ class CliSession;
 std::unique_ptr<dev::camera::Camera> cameraFor(Invocation& inv, CliSession* session, const QString& source,
                                                const char* defaultSpecimen = "slide");
 
+/// Opens `camera` and waits until it is open (a USB camera starts asynchronously, and
+/// its exposure can be set only once it is there): Ok, or Refused with the reason printed.
+int openCamera(Invocation& inv, dev::camera::Camera* camera);
+
 /// The options that go with --camera (specimen, seed), for a command's option list.
 QList<QCommandLineOption> cameraOptions(const char* defaultSpecimen = "slide");
 

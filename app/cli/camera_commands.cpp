@@ -8,6 +8,10 @@
 
 #include "device/camera/camera_source.h"
 #include "device/camera/tile_tiff.h"
+#if BP_WITH_UVC
+#include "device/camera/uvc_devices.h"
+#include "device/camera/video_frame_convert.h"
+#endif
 #include "device/link/simulated_link.h"
 #include "widgets/wording/wording.h"
 
@@ -31,6 +35,51 @@ constexpr int kSnapGraceMs = 30000;
 
 QString problemText(const motion::msg::Message& m) { return ui::words::text(m); }
 
+/// The USB cameras found now, each with the formats it offers; asks the multimedia backend
+/// (see uvc_devices.h for what that costs), so only `camera list` calls it.
+QJsonArray usbCameras()
+{
+    QJsonArray out;
+#if BP_WITH_UVC
+    for (const cam::UvcDevice& d : cam::listUvcCameras()) {
+        QJsonArray formats;
+        for (const cam::UvcFormat& f : d.formats)
+            formats.append(QJsonObject{{QStringLiteral("width"), f.size.width()},
+                                       {QStringLiteral("height"), f.size.height()},
+                                       {QStringLiteral("pixel_format"), QString::fromStdString(cam::videoFormatName(f.pixelFormat))},
+                                       {QStringLiteral("min_fps"), static_cast<double>(f.minFps)},
+                                       {QStringLiteral("max_fps"), static_cast<double>(f.maxFps)},
+                                       {QStringLiteral("accepted"), f.accepted}});
+        out.append(QJsonObject{{QStringLiteral("source"), QStringLiteral("uvc:") + d.name},
+                               {QStringLiteral("name"), d.name},
+                               {QStringLiteral("id"), d.id},
+                               {QStringLiteral("default"), d.isDefault},
+                               {QStringLiteral("formats"), formats}});
+    }
+#endif
+    return out;
+}
+
+/// "1920×1080, 1280×720": the sizes of a listed camera's formats BenchPilot reads, largest first.
+QString acceptedSizes(const QJsonObject& camera)
+{
+    QStringList sizes;
+    QList<QPair<qint64, QString>> sorted;
+    for (const auto& v : camera.value(QStringLiteral("formats")).toArray()) {
+        const QJsonObject f = v.toObject();
+        const QString size = QStringLiteral("%1×%2").arg(f.value(QStringLiteral("width")).toInt()).arg(f.value(QStringLiteral("height")).toInt());
+        if (!f.value(QStringLiteral("accepted")).toBool() || sizes.contains(size))
+            continue;
+        sizes << size;
+        sorted.append({-static_cast<qint64>(f.value(QStringLiteral("width")).toInt()) * f.value(QStringLiteral("height")).toInt(), size});
+    }
+    std::stable_sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    QStringList out;
+    for (const auto& s : sorted)
+        out << s.second;
+    return out.join(QStringLiteral(", "));
+}
+
 int cameraList(Invocation& inv)
 {
     QJsonArray sources;
@@ -43,14 +92,15 @@ int cameraList(Invocation& inv)
     };
     add(QStringLiteral("sim"), tr("the simulated camera on the in-process simulator's stage (--sim stage)"), true);
     add(QStringLiteral("sim:PATH"), tr("the simulated camera benchpilot-sim serves on a socket (--camera-socket)"), false);
-    add(QStringLiteral("uvc[:NAME]"), tr("a USB camera through Qt Multimedia"), false);
+    add(QStringLiteral("uvc[:NAME]"), tr("a USB camera through Qt Multimedia: NAME as camera list names it, NAME@WIDTHxHEIGHT for a resolution"), BP_WITH_UVC != 0);
     add(QStringLiteral("command:CMD"), tr("your capture program, run for each image with {file} {tile} {x_mm} {y_mm}"), true);
     add(QStringLiteral("folder:DIR"), tr("the next complete new image a camera's own software saves in DIR"), true);
     QJsonArray specimens;
     for (const std::string& s : cam::specimenNames())
         specimens.append(QString::fromStdString(s));
+    const QJsonArray cameras = usbCameras();
     if (inv.json()) {
-        inv.printJson(QJsonObject{{QStringLiteral("sources"), sources}, {QStringLiteral("specimens"), specimens}});
+        inv.printJson(QJsonObject{{QStringLiteral("sources"), sources}, {QStringLiteral("cameras"), cameras}, {QStringLiteral("specimens"), specimens}});
         return Ok;
     }
     QTextStream& out = inv.out();
@@ -58,6 +108,19 @@ int cameraList(Invocation& inv)
         const QJsonObject o = v.toObject();
         out << o.value(QStringLiteral("source")).toString().leftJustified(14) << ' ' << o.value(QStringLiteral("description")).toString()
             << (o.value(QStringLiteral("available")).toBool() ? QString() : tr(" (not in this build yet)")) << '\n';
+    }
+    if (BP_WITH_UVC) {
+        if (cameras.isEmpty())
+            out << tr("USB cameras: none found") << '\n';
+        else
+            out << tr("USB cameras:") << '\n';
+        for (const auto& v : cameras) {
+            const QJsonObject c = v.toObject();
+            out << "  " << c.value(QStringLiteral("source")).toString() << "  (" << c.value(QStringLiteral("id")).toString() << ')'
+                << (c.value(QStringLiteral("default")).toBool() ? tr(", the default") : QString()) << '\n';
+            const QString sizes = acceptedSizes(c);
+            out << "    " << (sizes.isEmpty() ? tr("no format BenchPilot can read") : sizes) << '\n';
+        }
     }
     out << tr("Simulated specimens (--specimen): %1\n").arg(QStringLiteral("slide, grid-plate, line-scales"));
     out.flush();
@@ -84,13 +147,17 @@ int cameraSnap(Invocation& inv)
     std::unique_ptr<cam::Camera> camera = cameraFor(inv, s, inv.value(QStringLiteral("camera")));
     if (!camera)
         return Usage;
-    camera->open();
-    if (camera->capabilities().exposure)
-        camera->setExposureMs(exposureMs);
+    if (const int rc = openCamera(inv, camera.get()); rc != Ok)
+        return rc;
     std::optional<cam::Frame> frame;
     std::optional<motion::msg::Message> failure;
     QObject::connect(camera.get(), &cam::Camera::captured, [&](std::uint64_t, const cam::Frame& f) { frame = f; });
-    QObject::connect(camera.get(), &cam::Camera::failed, [&](std::uint64_t, const motion::msg::Problem& p) { failure = p.message; });
+    QObject::connect(camera.get(), &cam::Camera::failed, [&](std::uint64_t, const motion::msg::Problem& p) {
+        if (!failure)
+            failure = p.message;
+    });
+    if (camera->capabilities().exposure)
+        camera->setExposureMs(exposureMs);
     const auto& st = s->instrument()->status();
     cam::CaptureRequest req;
     req.id = 1;
@@ -139,6 +206,27 @@ int cameraSnap(Invocation& inv)
 }
 
 } // namespace
+
+int openCamera(Invocation& inv, dev::camera::Camera* camera)
+{
+    std::optional<motion::msg::Message> failure;
+    bool opened = false;
+    // Connected before open(): a camera that is not there says so at once, from open() itself.
+    const auto failedLink = QObject::connect(camera, &cam::Camera::failed, [&](std::uint64_t id, const motion::msg::Problem& p) {
+        if (id == 0 && !failure)
+            failure = p.message;
+    });
+    const auto openedLink = QObject::connect(camera, &cam::Camera::opened, [&] { opened = true; });
+    camera->open();
+    const bool settled = camera->isOpen() || failure || spinUntil([&] { return opened || failure; }, kSnapGraceMs);
+    QObject::disconnect(failedLink);
+    QObject::disconnect(openedLink);
+    if (failure)
+        return inv.refused(problemText(*failure));
+    if (!settled || !camera->isOpen())
+        return inv.refused(tr("the camera %1 did not open within %2 s").arg(camera->source()).arg(kSnapGraceMs / 1000));
+    return Ok;
+}
 
 QList<QCommandLineOption> cameraOptions(const char* defaultSpecimen)
 {

@@ -267,21 +267,24 @@ int scanRun(Invocation& inv)
     dev::Instrument* client = s->instrument();
     if (client->identity().kind != dev::proto::DeviceKind::Stage)
         return inv.refused(tr("scans run on the microscope stage; this is the %1 (use --sim stage or --port)").arg(ui::words::term(dev::instrumentTerm(client->identity().kind))));
-    if (inv.isSet(QStringLiteral("home"))) {
-        if (const int rc = s->request([&](auto cb) { client->home(0, cb); }, tr("home")))
-            return rc;
-        if (!s->waitUntilHomed(0b11))
-            return inv.refused(tr("homing did not finish"));
-    }
     // With --camera the camera takes each tile; it is made before prepare(), which checks
-    // the images of a run it continues.
+    // the images of a run it continues, and opened before the stage homes, so a camera
+    // that is not there stops the run before anything moves.
     std::unique_ptr<dev::camera::Camera> camera;
     std::unique_ptr<dev::camera::ScanCamera> scanCamera;
     if (inv.isSet(QStringLiteral("camera"))) {
         camera = cameraFor(inv, s, inv.value(QStringLiteral("camera")));
         if (!camera)
             return Usage;
+        if (const int rc = openCamera(inv, camera.get()); rc != Ok)
+            return rc;
         scanCamera = std::make_unique<dev::camera::ScanCamera>(camera.get());
+    }
+    if (inv.isSet(QStringLiteral("home"))) {
+        if (const int rc = s->request([&](auto cb) { client->home(0, cb); }, tr("home")))
+            return rc;
+        if (!s->waitUntilHomed(0b11))
+            return inv.refused(tr("homing did not finish"));
     }
     ScanRunner runner(client);
     runner.setCamera(scanCamera.get());

@@ -2,6 +2,9 @@
 
 #include "app/gui/instrument_session.h"
 #include "device/camera/camera_source.h"
+#if BP_WITH_UVC
+#include "device/camera/uvc_devices.h"
+#endif
 #include "device/link/simulated_link.h"
 #include "widgets/wording/wording.h"
 
@@ -29,6 +32,14 @@ std::unique_ptr<dev::camera::Camera> makeCamera(const QString& source, Instrumen
     return camera;
 }
 
-QStringList listCameras() { return {QStringLiteral("sim")}; }
+QStringList listCameras()
+{
+    QStringList out{QStringLiteral("sim")};
+#if BP_WITH_UVC
+    for (const dev::camera::UvcDevice& d : dev::camera::listUvcCameras())
+        out << QStringLiteral("uvc:") + d.name;
+#endif
+    return out;
+}
 
 } // namespace app

@@ -16,7 +16,8 @@ class InstrumentSession;
 /// opened; nullptr with `error` worded when this build cannot make it. The simulated
 /// camera looks at `stage`'s in-process simulator.
 std::unique_ptr<dev::camera::Camera> makeCamera(const QString& source, InstrumentSession* stage, QString* error);
-/// The sources known to exist now.
+/// The sources known to exist now: "sim" and "uvc:NAME" for each USB camera found. Asks
+/// the multimedia backend (tens to hundreds of ms): call it when the choice is opened.
 QStringList listCameras();
 
 } // namespace app

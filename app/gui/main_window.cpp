@@ -172,7 +172,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     m_camera->setFactory(m_options.cameraFactory ? m_options.cameraFactory : ui::CameraSession::Factory([this](const QString& source, QString* error) {
         return makeCamera(source, m_instruments[1].session, error);
     }));
-    m_camera->setLister(&listCameras);
+    m_camera->setLister(m_options.cameraLister ? m_options.cameraLister : ui::CameraSession::Lister(&listCameras));
     connect(m_camera, &ui::CameraSession::problem, this, &MainWindow::warn);
     const auto chooseSnapFile = [this](const QString& title, const QString& filter) {
         return QFileDialog::getSaveFileName(this, title, QStandardPaths::writableLocation(QStandardPaths::PicturesLocation), filter);

@@ -6,6 +6,7 @@
 #include "widgets/connection_bar.h"
 
 #include <QMainWindow>
+#include <QStringList>
 
 #include <array>
 #include <functional>
@@ -65,6 +66,8 @@ struct MainWindowOptions {
     ui::words::Translators* translators = nullptr;
     /// Makes the GUI's camera from a source string; unset: camera_wiring.h's. Tests give a fake.
     std::function<std::unique_ptr<dev::camera::Camera>(const QString& source, QString* error)> cameraFactory;
+    /// Lists the cameras there are ("sim", "uvc:NAME" …); unset: camera_wiring.h's. Tests count its calls.
+    std::function<QStringList()> cameraLister;
 };
 
 class MainWindow : public QMainWindow {

@@ -2,6 +2,9 @@
 
 #include "device/camera/command_camera.h"
 #include "device/camera/folder_camera.h"
+#if BP_WITH_UVC
+#include "device/camera/uvc_camera.h"
+#endif
 
 namespace dev::camera {
 
@@ -41,6 +44,10 @@ std::unique_ptr<Camera> makeCamera(const std::string& text, const SimContext& si
     SourceSpec spec;
     if (!parseSource(text, &spec, error))
         return nullptr;
+#if BP_WITH_UVC
+    if (spec.kind == SourceKind::Uvc)
+        return std::make_unique<UvcCamera>(QString::fromStdString(spec.argument), parent);
+#endif
     switch (spec.kind) {
     case SourceKind::Sim:
         if (!sim.workPoint) {

@@ -2591,10 +2591,6 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>benchpilot-sim 在套接字上提供的模拟相机（--camera-socket）</translation>
     </message>
     <message>
-        <source>a USB camera through Qt Multimedia</source>
-        <translation>经 Qt Multimedia 的 USB 相机</translation>
-    </message>
-    <message>
         <source>your capture program, run for each image with {file} {tile} {x_mm} {y_mm}</source>
         <translation>您自己的采集程序，每张图像运行一次，填入 {file} {tile} {x_mm} {y_mm}</translation>
     </message>
@@ -2825,6 +2821,30 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>the folder of tiles</source>
         <translation>图块所在的文件夹</translation>
+    </message>
+    <message>
+        <source>a USB camera through Qt Multimedia: NAME as camera list names it, NAME@WIDTHxHEIGHT for a resolution</source>
+        <translation>经 Qt Multimedia 的 USB 相机：NAME 为 camera list 列出的名称，NAME@WIDTHxHEIGHT 指定分辨率</translation>
+    </message>
+    <message>
+        <source>USB cameras: none found</source>
+        <translation>USB 相机：未找到</translation>
+    </message>
+    <message>
+        <source>USB cameras:</source>
+        <translation>USB 相机：</translation>
+    </message>
+    <message>
+        <source>, the default</source>
+        <translation>，默认相机</translation>
+    </message>
+    <message>
+        <source>no format BenchPilot can read</source>
+        <translation>没有 BenchPilot 能读取的格式</translation>
+    </message>
+    <message>
+        <source>the camera %1 did not open within %2 s</source>
+        <translation>相机 %1 未在 %2 秒内打开</translation>
     </message>
 </context>
 <context>
@@ -9754,6 +9774,76 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <source>still waiting for the previous image in %1</source>
         <comment>camera.folder.busy</comment>
         <translation>仍在等待 %1 中的上一张图像</translation>
+    </message>
+    <message>
+        <source>no USB camera is attached (Qt Multimedia finds none), so &apos;%1&apos; cannot be opened</source>
+        <comment>camera.uvc.none_found</comment>
+        <translation>未连接 USB 相机（Qt Multimedia 一个也没找到），因此无法打开“%1”</translation>
+    </message>
+    <message>
+        <source>there is no USB camera &apos;%1&apos;; the cameras found are: %2 (give uvc:NAME with a name or an id from &apos;camera list&apos;)</source>
+        <comment>camera.uvc.not_found</comment>
+        <translation>没有 USB 相机“%1”；找到的相机为：%2（请用“camera list”中的名称或 id 写成 uvc:NAME）</translation>
+    </message>
+    <message>
+        <source>the camera %1 has no %2 × %3 px format that BenchPilot can read; it offers %4</source>
+        <comment>camera.uvc.no_such_resolution</comment>
+        <translation>相机 %1 没有 BenchPilot 能读取的 %2 × %3 像素格式；它提供 %4</translation>
+    </message>
+    <message>
+        <source>the camera %1 sends none of the pixel formats BenchPilot reads (it offers %2)</source>
+        <comment>camera.uvc.no_format</comment>
+        <translation>相机 %1 发送的像素格式 BenchPilot 都无法读取（它提供 %2）</translation>
+    </message>
+    <message>
+        <source>the camera %1 gives %2 × %3 px, and has no format of the plan&apos;s sensor, %4 × %5 px (it offers %6): correct the plan&apos;s sensor, or every tile lands in the wrong place</source>
+        <comment>camera.uvc.sensor_mismatch</comment>
+        <translation>相机 %1 给出 %2 × %3 像素，且没有计划中传感器的 %4 × %5 像素格式（它提供 %6）：请更正计划的传感器，否则每个图块都会放错位置</translation>
+    </message>
+    <message>
+        <source>the camera %1 did not start within %2: is another program using it?</source>
+        <comment>camera.uvc.open_timeout</comment>
+        <translation>相机 %1 未在 %2 内启动：是否有其他程序正在使用它？</translation>
+    </message>
+    <message>
+        <source>the camera %1 gave no new frame within %2</source>
+        <comment>camera.uvc.timeout</comment>
+        <translation>相机 %1 在 %2 内没有给出新的帧</translation>
+    </message>
+    <message>
+        <source>the camera %1 failed: %2</source>
+        <comment>camera.uvc.error</comment>
+        <translation>相机 %1 出错：%2</translation>
+    </message>
+    <message>
+        <source>the camera %1 was unplugged (it is no longer in the system&apos;s list of cameras)</source>
+        <comment>camera.uvc.unplugged</comment>
+        <translation>相机 %1 已被拔出（它已不在系统的相机列表中）</translation>
+    </message>
+    <message>
+        <source>the camera %1 is still taking the previous image</source>
+        <comment>camera.uvc.busy</comment>
+        <translation>相机 %1 仍在拍摄上一张图像</translation>
+    </message>
+    <message>
+        <source>the camera sends %1 frames (%2 × %3 px), which BenchPilot cannot read: choose one of its other formats (see docs/camera.md)</source>
+        <comment>camera.uvc.format_unsupported</comment>
+        <translation>相机发送的是 %1 帧（%2 × %3 像素），BenchPilot 无法读取：请选择它的其他格式（见 docs/camera.md）</translation>
+    </message>
+    <message>
+        <source>a %1 frame of %2 × %3 px from the camera could not be read from its buffer</source>
+        <comment>camera.uvc.cannot_map</comment>
+        <translation>无法从缓冲区读取相机的一帧 %1（%2 × %3 像素）</translation>
+    </message>
+    <message>
+        <source>a %1 frame from the camera holds fewer bytes than %2 × %3 px need</source>
+        <comment>camera.uvc.short_frame</comment>
+        <translation>相机的一帧 %1 所含字节少于 %2 × %3 像素所需</translation>
+    </message>
+    <message>
+        <source>a %1 (Motion-JPEG) frame from the camera, %2 × %3 px, could not be decoded</source>
+        <comment>camera.uvc.jpeg_unreadable</comment>
+        <translation>无法解码相机的一帧 %1（Motion-JPEG），%2 × %3 像素</translation>
     </message>
 </context>
 <context>

@@ -58,6 +58,22 @@ std::optional<QPointF> positionOf(const dev::Instrument* stage)
     return QPointF(axes[0].measured, axes[1].measured);
 }
 
+/// The source choice: its list is filled just before it drops down, so the system is asked
+/// for its USB cameras only when someone looks at them.
+class SourceCombo : public QComboBox {
+public:
+    explicit SourceCombo(std::function<void()> beforePopup) : m_beforePopup(std::move(beforePopup)) {}
+    void showPopup() override
+    {
+        if (m_beforePopup)
+            m_beforePopup();
+        QComboBox::showPopup();
+    }
+
+private:
+    std::function<void()> m_beforePopup;
+};
+
 } // namespace
 
 CameraPanel::CameraPanel(CameraSession* session, dev::Instrument* stage, QWidget* parent)
@@ -67,7 +83,7 @@ CameraPanel::CameraPanel(CameraSession* session, dev::Instrument* stage, QWidget
     v->setContentsMargins(0, 0, 0, 0);
     auto* sourceRow = new QHBoxLayout;
     m_sourceLabel = new QLabel;
-    m_source = new QComboBox;
+    m_source = new SourceCombo([this] { refreshSources(); });
     m_source->setObjectName(QStringLiteral("cameraSource"));
     m_source->setEditable(true);
     m_source->setInsertPolicy(QComboBox::NoInsert);
@@ -140,7 +156,9 @@ CameraPanel::CameraPanel(CameraSession* session, dev::Instrument* stage, QWidget
     connect(m_view, &LiveView::autoContrastChanged, m_session, &CameraSession::setAutoContrast);
     if (m_stage)
         connect(m_stage, &dev::Instrument::statusChanged, this, [this] { m_view->setStagePosition(positionOf(m_stage)); });
-    refreshSources();
+    // Only what is known without asking the system for its cameras: the list of USB
+    // cameras is asked for when the operator opens the choice (or presses Refresh).
+    fillSources(m_session->knownSources());
     retranslateUi();
 }
 
@@ -151,11 +169,13 @@ void CameraPanel::openTyped()
     m_session->open(sourceText());
 }
 
-void CameraPanel::refreshSources()
+void CameraPanel::refreshSources() { fillSources(m_session->availableSources()); }
+
+void CameraPanel::fillSources(const QStringList& sources)
 {
     const QString typed = m_session->source().isEmpty() ? sourceText() : m_session->source();
     m_source->clear();
-    m_source->addItems(m_session->availableSources());
+    m_source->addItems(sources);
     m_source->setCurrentText(typed.isEmpty() ? QStringLiteral("sim") : typed);
 }
 

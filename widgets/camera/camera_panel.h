@@ -57,7 +57,9 @@ protected:
     void showEvent(QShowEvent* event) override;
 
 private:
+    /// Asks the session for every source, the USB cameras found now among them.
     void refreshSources();
+    void fillSources(const QStringList& sources);
     void updateUi();
     void retranslateUi();
     void onCaptured(std::uint64_t id, const dev::camera::Frame& frame);

@@ -20,6 +20,15 @@ QStringList CameraSession::availableSources() const
     return out;
 }
 
+QStringList CameraSession::knownSources() const
+{
+    QStringList out{QStringLiteral("sim")};
+    for (const QString& s : m_recent)
+        if (!out.contains(s))
+            out << s;
+    return out;
+}
+
 QString CameraSession::sourceProblem(const QString& source)
 {
     dev::camera::SourceSpec spec;

@@ -30,7 +30,11 @@ public:
     void setLister(Lister lister) { m_lister = std::move(lister); }
 
     /// The lister's sources, then the ones opened lately (most recent first), each once.
+    /// The lister may ask the system for its USB cameras (a fraction of a second): called
+    /// when the operator opens the choice, never while a window is built.
     QStringList availableSources() const;
+    /// "sim" and the sources opened lately, without asking the lister.
+    QStringList knownSources() const;
     /// Sources opened lately, most recent first (kept between runs by the app).
     QStringList recentSources() const { return m_recent; }
     void setRecentSources(const QStringList& sources) { m_recent = sources.mid(0, kRecent); }
