@@ -3,6 +3,8 @@
 //                  [--time-scale K] [--baud N]
 //                  [--gauge PATH --gauge-axis X [--gauge-resolution MM] [--gauge-noise MM]]
 //                  [--journal FILE] [--no-homing] [--stage-errors FILE]
+//                  [--camera-socket PATH [--specimen NAME] [--camera-seed N]
+//                                        [--camera-sensor W,H] [--camera-pixel-um UM]]
 // --protocol chooses what the firmware speaks over the same machine model: the BenchPilot
 // protocol, or the GRBL 1.1 / grblHAL personality (docs/grbl.md).
 // The GRBL board runs on when a host opens the port, as most grblHAL boards do (a board that
@@ -13,10 +15,14 @@
 // instrument's own encoder or grating does not see.
 // --stage-errors gives the stage the errors of a benchpilot.stage-errors file (pitch,
 // straightness, squareness, lost motion at the work point; docs/accuracy.md).
+// --camera-socket serves the simulated camera on a local socket beside the pty: it renders the
+// specimen at the stage's TRUE work point, which only this process knows, for the camera
+// sim:PATH of benchpilot-cli or the GUI (docs/camera.md). The socket is removed on exit.
 #include "device/link/simulated_link.h"
 #include "device/sim/grbl_firmware.h"
 #include "app/common/version_text.h"
 #include "device/files/accuracy/grid/stage_errors_file.h"
+#include "device/camera/sim_camera_server.h"
 #include "device/sim/sim_gauge.h"
 #include "widgets/wording/wording.h"
 #include "journal_file.h"
@@ -88,8 +94,23 @@ int main(int argc, char** argv)
     QCommandLineOption stageErrors(QStringLiteral("stage-errors"),
                                    QCoreApplication::translate("sim", "the stage's errors from a benchpilot.stage-errors file"),
                                    QStringLiteral("file"));
+    QCommandLineOption cameraSocket(QStringLiteral("camera-socket"),
+                                    QCoreApplication::translate("sim", "serve the simulated camera on a local socket here (the camera sim:PATH)"),
+                                    QStringLiteral("path"));
+    QCommandLineOption specimen(QStringLiteral("specimen"),
+                                QCoreApplication::translate("sim", "with --camera-socket: what lies on the stage: slide, grid-plate or line-scales"),
+                                QStringLiteral("name"), QStringLiteral("slide"));
+    QCommandLineOption cameraSeed(QStringLiteral("camera-seed"),
+                                  QCoreApplication::translate("sim", "with --camera-socket: the specimen's and the noise's seed"),
+                                  QStringLiteral("n"), QStringLiteral("1"));
+    QCommandLineOption cameraSensor(QStringLiteral("camera-sensor"),
+                                    QCoreApplication::translate("sim", "with --camera-socket: the sensor in pixels when a request gives no camera"),
+                                    QStringLiteral("w,h"), QStringLiteral("2048,2048"));
+    QCommandLineOption cameraPixel(QStringLiteral("camera-pixel-um"),
+                                   QCoreApplication::translate("sim", "with --camera-socket: a pixel at the sample in µm when a request gives no camera"),
+                                   QStringLiteral("um"), QStringLiteral("0.65"));
     p.addOptions({instrument, ptyPath, protocol, timeScale, baud, gaugePath, gaugeAxis, gaugeResolution, gaugeNoise, journal, noHoming,
-                  stageErrors});
+                  stageErrors, cameraSocket, specimen, cameraSeed, cameraSensor, cameraPixel});
     // --version gives the licence too (app/common/version_text.h), not Qt's bare line.
     for (const QString& a : QCoreApplication::arguments().mid(1)) {
         if (a == QLatin1String("--"))
@@ -152,6 +173,39 @@ int main(int argc, char** argv)
             return fail(QCoreApplication::translate("sim", "--gauge needs a path of its own, not the instrument's"));
     }
 
+    dev::camera::SimCameraSettings cameraSettings;
+    const QString cameraPath = p.value(cameraSocket);
+    if (!p.isSet(cameraSocket) && (p.isSet(specimen) || p.isSet(cameraSeed) || p.isSet(cameraSensor) || p.isSet(cameraPixel)))
+        return fail(QCoreApplication::translate("sim", "--specimen, --camera-seed, --camera-sensor and --camera-pixel-um are for the camera socket (--camera-socket PATH)"));
+    if (p.isSet(cameraSocket)) {
+        if (kind != QLatin1String("stage"))
+            return fail(QCoreApplication::translate("sim", "--camera-socket is for the simulated stage (--instrument stage)"));
+        const auto chosen = dev::camera::specimenFromName(p.value(specimen).toStdString());
+        if (!chosen)
+            return fail(QCoreApplication::translate("sim", "--specimen must be slide, grid-plate or line-scales (got '%1')").arg(p.value(specimen)));
+        cameraSettings.specimen = *chosen;
+        const qulonglong seedValue = p.value(cameraSeed).toULongLong(&ok);
+        if (!ok || seedValue > 9007199254740991ULL)
+            return fail(QCoreApplication::translate("sim", "--camera-seed must be a whole number from 0 (got '%1')").arg(p.value(cameraSeed)));
+        cameraSettings.seed = seedValue;
+        const QStringList sensor = p.value(cameraSensor).split(QLatin1Char(','));
+        bool okW = false, okH = false;
+        const int w = sensor.size() == 2 ? sensor[0].trimmed().toInt(&okW) : 0;
+        const int h = sensor.size() == 2 ? sensor[1].trimmed().toInt(&okH) : 0;
+        if (!okW || !okH || w < 1 || h < 1 || w > dev::camera::kSimWireMaxSidePx || h > dev::camera::kSimWireMaxSidePx)
+            return fail(QCoreApplication::translate("sim", "--camera-sensor must be W,H in pixels, each from 1 to %1 (got '%2')")
+                            .arg(dev::camera::kSimWireMaxSidePx).arg(p.value(cameraSensor)));
+        cameraSettings.geometry.sensorWidthPx = w;
+        cameraSettings.geometry.sensorHeightPx = h;
+        const double pixelUm = p.value(cameraPixel).toDouble(&ok);
+        if (!ok || !(pixelUm > 0 && pixelUm <= dev::camera::kSimWireMaxPixelUm))
+            return fail(QCoreApplication::translate("sim", "--camera-pixel-um must be above 0 and at most %1 (got '%2')")
+                            .arg(dev::camera::kSimWireMaxPixelUm).arg(p.value(cameraPixel)));
+        cameraSettings.geometry.pixelUm = pixelUm;
+        if (cameraPath == p.value(ptyPath) || cameraPath == gaugeLink)
+            return fail(QCoreApplication::translate("sim", "--camera-socket needs a path of its own, not the pty's"));
+    }
+
     auto claimLink = [](const QString& path) -> QString {
         const QFileInfo existing(path);
         if (existing.exists() || existing.isSymLink()) {
@@ -188,6 +242,21 @@ int main(int argc, char** argv)
         host = std::make_unique<dev::SimulatorHost>(std::move(fw), &pty);
     }
     host->setTimeScale(scale);
+    // The camera reads the machine on this thread, where the firmware runs, when a request arrives.
+    std::unique_ptr<dev::camera::SimCameraServer> camera;
+    if (p.isSet(cameraSocket)) {
+        camera = std::make_unique<dev::camera::SimCameraServer>(
+            [simMachine]() -> std::optional<dev::camera::WorkPoint> {
+                const auto at = simMachine->trueWorkPoint();
+                return dev::camera::WorkPoint{at.xMm, at.yMm, simMachine->timeUs()};
+            },
+            cameraSettings);
+        motion::msg::Message why;
+        if (!camera->listen(cameraPath, &why)) {
+            ::unlink(qPrintable(link));
+            return fail(ui::words::text(why));
+        }
+    }
     if (p.isSet(journal))
         host->firmware().setJournal(true);
     host->start();
@@ -224,8 +293,13 @@ int main(int argc, char** argv)
         std::printf("gauge %s -> %s (axis %c, resolution %g mm, noise %g mm)\n", qPrintable(gaugeLink),
                     qPrintable(gaugePty.slavePath()), machine.axes[static_cast<std::size_t>(gaugeAxisIndex)].letter,
                     gaugeConfig.resolutionMm, gaugeConfig.noiseMm);
+    if (camera)
+        std::printf("camera %s (%s, seed %llu)\n", qPrintable(cameraPath), dev::camera::specimenName(cameraSettings.specimen),
+                    static_cast<unsigned long long>(cameraSettings.seed));
     std::fflush(stdout);
     const int rc = app.exec();
+    if (camera)
+        camera->close();  // removes the socket, as the pty's symlink below
     if (grbl) {
         // The receive buffer's accounting, for the host that streamed to it (and its tests): a host
         // that counts characters never has a byte dropped.
