@@ -86,8 +86,10 @@ public:
     Result next(SimWireMessage* out, motion::msg::Message* error);
 
     bool broken() const { return !m_error.empty(); }
-    /// Bytes held that are not yet a message (never more than a header's bound beyond a frame).
-    std::size_t buffered() const { return m_buf.size() - m_pos + (m_pending ? m_pending->frame.pixels.size() : 0); }
+    /// Bytes held that are not yet a message: a frame's pixels as they arrive, and what follows.
+    std::size_t buffered() const { return unreadBytes() + (m_pending ? m_pending->frame.pixels.size() : 0); }
+    /// Bytes not yet taken into a message; after NeedMore, fewer than kSimWireMaxHeaderBytes.
+    std::size_t unreadBytes() const { return m_buf.size() - m_pos; }
 
 private:
     Result breakWith(motion::msg::Message why, motion::msg::Message* error);
