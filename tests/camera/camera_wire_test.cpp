@@ -70,7 +70,8 @@ TEST(SimWire, TheExamplesReadAsDocumented)
     EXPECT_FALSE(first.geometry);
     const auto& second = std::get<cam::SimWireCapture>(requests[1]);
     ASSERT_TRUE(second.geometry);
-    EXPECT_EQ(second.geometry->sensorWidthPx, 256);
+    EXPECT_EQ(second.geometry->sensorWidthPx, 4);
+    EXPECT_EQ(second.geometry->sensorHeightPx, 2);
     EXPECT_EQ(second.geometry->pixelUm, 1);
     EXPECT_TRUE(second.geometry->imageYAlongMinusY);
 
