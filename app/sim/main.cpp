@@ -25,6 +25,7 @@
 #include "device/camera/sim_camera_server.h"
 #include "device/sim/sim_gauge.h"
 #include "widgets/wording/wording.h"
+#include "camera_options.h"
 #include "journal_file.h"
 #include "pty_transport.h"
 
@@ -94,23 +95,10 @@ int main(int argc, char** argv)
     QCommandLineOption stageErrors(QStringLiteral("stage-errors"),
                                    QCoreApplication::translate("sim", "the stage's errors from a benchpilot.stage-errors file"),
                                    QStringLiteral("file"));
-    QCommandLineOption cameraSocket(QStringLiteral("camera-socket"),
-                                    QCoreApplication::translate("sim", "serve the simulated camera on a local socket here (the camera sim:PATH)"),
-                                    QStringLiteral("path"));
-    QCommandLineOption specimen(QStringLiteral("specimen"),
-                                QCoreApplication::translate("sim", "with --camera-socket: what lies on the stage: slide, grid-plate or line-scales"),
-                                QStringLiteral("name"), QStringLiteral("slide"));
-    QCommandLineOption cameraSeed(QStringLiteral("camera-seed"),
-                                  QCoreApplication::translate("sim", "with --camera-socket: the specimen's and the noise's seed"),
-                                  QStringLiteral("n"), QStringLiteral("1"));
-    QCommandLineOption cameraSensor(QStringLiteral("camera-sensor"),
-                                    QCoreApplication::translate("sim", "with --camera-socket: the sensor in pixels when a request gives no camera"),
-                                    QStringLiteral("w,h"), QStringLiteral("2048,2048"));
-    QCommandLineOption cameraPixel(QStringLiteral("camera-pixel-um"),
-                                   QCoreApplication::translate("sim", "with --camera-socket: a pixel at the sample in µm when a request gives no camera"),
-                                   QStringLiteral("um"), QStringLiteral("0.65"));
     p.addOptions({instrument, ptyPath, protocol, timeScale, baud, gaugePath, gaugeAxis, gaugeResolution, gaugeNoise, journal, noHoming,
-                  stageErrors, cameraSocket, specimen, cameraSeed, cameraSensor, cameraPixel});
+                  stageErrors});
+    const app::sim::CameraOptions cameraOptions;
+    cameraOptions.addTo(p);
     // --version gives the licence too (app/common/version_text.h), not Qt's bare line.
     for (const QString& a : QCoreApplication::arguments().mid(1)) {
         if (a == QLatin1String("--"))
@@ -173,38 +161,9 @@ int main(int argc, char** argv)
             return fail(QCoreApplication::translate("sim", "--gauge needs a path of its own, not the instrument's"));
     }
 
-    dev::camera::SimCameraSettings cameraSettings;
-    const QString cameraPath = p.value(cameraSocket);
-    if (!p.isSet(cameraSocket) && (p.isSet(specimen) || p.isSet(cameraSeed) || p.isSet(cameraSensor) || p.isSet(cameraPixel)))
-        return fail(QCoreApplication::translate("sim", "--specimen, --camera-seed, --camera-sensor and --camera-pixel-um are for the camera socket (--camera-socket PATH)"));
-    if (p.isSet(cameraSocket)) {
-        if (kind != QLatin1String("stage"))
-            return fail(QCoreApplication::translate("sim", "--camera-socket is for the simulated stage (--instrument stage)"));
-        const auto chosen = dev::camera::specimenFromName(p.value(specimen).toStdString());
-        if (!chosen)
-            return fail(QCoreApplication::translate("sim", "--specimen must be slide, grid-plate or line-scales (got '%1')").arg(p.value(specimen)));
-        cameraSettings.specimen = *chosen;
-        const qulonglong seedValue = p.value(cameraSeed).toULongLong(&ok);
-        if (!ok || seedValue > 9007199254740991ULL)
-            return fail(QCoreApplication::translate("sim", "--camera-seed must be a whole number from 0 (got '%1')").arg(p.value(cameraSeed)));
-        cameraSettings.seed = seedValue;
-        const QStringList sensor = p.value(cameraSensor).split(QLatin1Char(','));
-        bool okW = false, okH = false;
-        const int w = sensor.size() == 2 ? sensor[0].trimmed().toInt(&okW) : 0;
-        const int h = sensor.size() == 2 ? sensor[1].trimmed().toInt(&okH) : 0;
-        if (!okW || !okH || w < 1 || h < 1 || w > dev::camera::kSimWireMaxSidePx || h > dev::camera::kSimWireMaxSidePx)
-            return fail(QCoreApplication::translate("sim", "--camera-sensor must be W,H in pixels, each from 1 to %1 (got '%2')")
-                            .arg(dev::camera::kSimWireMaxSidePx).arg(p.value(cameraSensor)));
-        cameraSettings.geometry.sensorWidthPx = w;
-        cameraSettings.geometry.sensorHeightPx = h;
-        const double pixelUm = p.value(cameraPixel).toDouble(&ok);
-        if (!ok || !(pixelUm > 0 && pixelUm <= dev::camera::kSimWireMaxPixelUm))
-            return fail(QCoreApplication::translate("sim", "--camera-pixel-um must be above 0 and at most %1 (got '%2')")
-                            .arg(dev::camera::kSimWireMaxPixelUm).arg(p.value(cameraPixel)));
-        cameraSettings.geometry.pixelUm = pixelUm;
-        if (cameraPath == p.value(ptyPath) || cameraPath == gaugeLink)
-            return fail(QCoreApplication::translate("sim", "--camera-socket needs a path of its own, not the pty's"));
-    }
+    app::sim::CameraChoice camera;
+    if (QString why; !cameraOptions.read(p, kind, {p.value(ptyPath), gaugeLink}, &camera, &why))
+        return fail(why);
 
     auto claimLink = [](const QString& path) -> QString {
         const QFileInfo existing(path);
@@ -243,16 +202,16 @@ int main(int argc, char** argv)
     }
     host->setTimeScale(scale);
     // The camera reads the machine on this thread, where the firmware runs, when a request arrives.
-    std::unique_ptr<dev::camera::SimCameraServer> camera;
-    if (p.isSet(cameraSocket)) {
-        camera = std::make_unique<dev::camera::SimCameraServer>(
+    std::unique_ptr<dev::camera::SimCameraServer> cameraServer;
+    if (camera.serve) {
+        cameraServer = std::make_unique<dev::camera::SimCameraServer>(
             [simMachine]() -> std::optional<dev::camera::WorkPoint> {
                 const auto at = simMachine->trueWorkPoint();
                 return dev::camera::WorkPoint{at.xMm, at.yMm, simMachine->timeUs()};
             },
-            cameraSettings);
+            camera.settings);
         motion::msg::Message why;
-        if (!camera->listen(cameraPath, &why)) {
+        if (!cameraServer->listen(camera.path, &why)) {
             ::unlink(qPrintable(link));
             return fail(ui::words::text(why));
         }
@@ -293,13 +252,13 @@ int main(int argc, char** argv)
         std::printf("gauge %s -> %s (axis %c, resolution %g mm, noise %g mm)\n", qPrintable(gaugeLink),
                     qPrintable(gaugePty.slavePath()), machine.axes[static_cast<std::size_t>(gaugeAxisIndex)].letter,
                     gaugeConfig.resolutionMm, gaugeConfig.noiseMm);
-    if (camera)
-        std::printf("camera %s (%s, seed %llu)\n", qPrintable(cameraPath), dev::camera::specimenName(cameraSettings.specimen),
-                    static_cast<unsigned long long>(cameraSettings.seed));
+    if (cameraServer)
+        std::printf("camera %s (%s, seed %llu)\n", qPrintable(camera.path), dev::camera::specimenName(camera.settings.specimen),
+                    static_cast<unsigned long long>(camera.settings.seed));
     std::fflush(stdout);
     const int rc = app.exec();
-    if (camera)
-        camera->close();  // removes the socket, as the pty's symlink below
+    if (cameraServer)
+        cameraServer->close();  // removes the socket, as the pty's symlink below
     if (grbl) {
         // The receive buffer's accounting, for the host that streamed to it (and its tests): a host
         // that counts characters never has a byte dropped.

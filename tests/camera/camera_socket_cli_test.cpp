@@ -187,6 +187,9 @@ TEST(CameraSocketCli, ACameraThatIsNotThereIsNamedAndNothingIsWritten)
                                                                 QStringLiteral("grid-plate"), QStringLiteral("--out"), file});
     EXPECT_EQ(specimen.exitCode, 1) << specimen.describe();
     EXPECT_TRUE(specimen.err.contains(QStringLiteral("--specimen"))) << specimen.describe();
+    const auto list = runProgram(binary("benchpilot-cli"), {QStringLiteral("--json"), QStringLiteral("camera"), QStringLiteral("list"), QStringLiteral("--available")});
+    ASSERT_EQ(list.exitCode, 0) << list.describe();
+    EXPECT_TRUE(list.out.contains(QStringLiteral("\"source\":\"sim:PATH\""))) << "offered: " << list.out.toStdString();
     // The simulator refuses a camera socket on a path that is a file, and leaves the file.
     QFile plain(dir.filePath(QStringLiteral("notes")));
     ASSERT_TRUE(plain.open(QIODevice::WriteOnly));
