@@ -33,7 +33,7 @@ const Row kRows[] = {
     {"camera.wire.version", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "a message of version %1; this BenchPilot reads version %2", "camera.wire.version"), "version,supported"},
     {"camera.wire.field", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "the field '%1' is missing or out of range", "camera.wire.field"), "field"},
     {"camera.wire.unexpected", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "a '%1' message where none belongs", "camera.wire.unexpected"), "type"},
-    {"camera.wire.size", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "a frame of %3 × %4 px announces %1 of pixels where it has %2", "camera.wire.size"), "bytes,expected,width,height"},
+    {"camera.wire.size", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "a frame of %3 × %4 px announces %1 of pixels where it needs %2", "camera.wire.size"), "bytes,expected,width,height"},
     {"camera.sensor_mismatch", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "the camera %1 gives images of %2 × %3 px, but the plan's camera has %4 × %5 px: correct the plan's sensor (or the camera's resolution), or every tile lands in the wrong place", "camera.sensor_mismatch"), "camera,width,height,plan_width,plan_height"},
     {"camera.command.failed", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "the capture command '%1' failed (exit code %2): %3", "camera.command.failed"), "command,code,stderr"},
     {"camera.command.timeout", QT_TRANSLATE_NOOP3("ui::words::CameraWords", "the capture command '%1' did not finish within %2 and was stopped: %3", "camera.command.timeout"), "command,seconds,stderr"},
