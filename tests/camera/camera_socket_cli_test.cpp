@@ -227,6 +227,7 @@ TEST(CameraSocketCli, AScanWhoseCameraGoesStopsWithTheReasonKeepsEveryTileAndRes
         90000))
         << seen.toStdString();
     camera.reset();  // SIGTERM: the camera's simulator stops, the stage's does not
+    EXPECT_FALSE(QFile::exists(socket)) << "the simulator removes its socket when it stops";
     const ProgramRun stopped = collectRun(p, p.waitForFinished(60000));
     EXPECT_NE(stopped.exitCode, 0) << stopped.describe();
     EXPECT_TRUE(stopped.err.contains(QStringLiteral("the simulated camera at ") + socket)) << stopped.describe();
