@@ -149,11 +149,6 @@ QList<QCommandLineOption> cameraOptions()
 std::unique_ptr<dev::camera::Camera> cameraFor(Invocation& inv, CliSession* session, const QString& source)
 {
     cam::SimContext sim;
-    // benchpilot-sim chose its camera's specimen and seed when it started: one asked here would be ignored.
-    if (source.startsWith(QLatin1String("sim:")) && (inv.isSet(QStringLiteral("specimen")) || inv.isSet(QStringLiteral("camera-seed")))) {
-        inv.usage(tr("--camera %1: the specimen and its seed are benchpilot-sim's own (its --specimen and --camera-seed)").arg(source));
-        return nullptr;
-    }
     const QString specimen = inv.isSet(QStringLiteral("specimen")) ? inv.value(QStringLiteral("specimen")) : QStringLiteral("slide");
     const auto kind = cam::specimenFromName(specimen.toStdString());
     if (!kind) {
@@ -161,6 +156,11 @@ std::unique_ptr<dev::camera::Camera> cameraFor(Invocation& inv, CliSession* sess
         return nullptr;
     }
     sim.settings.specimen = *kind;
+    // benchpilot-sim chose its camera's specimen and seed when it started: one asked here would be ignored.
+    if (source.startsWith(QLatin1String("sim:")) && (inv.isSet(QStringLiteral("specimen")) || inv.isSet(QStringLiteral("camera-seed")))) {
+        inv.usage(tr("--camera %1: the specimen and its seed are benchpilot-sim's own (its --specimen and --camera-seed)").arg(source));
+        return nullptr;
+    }
     double seed = 1;
     if (!inv.number(QStringLiteral("camera-seed"), seed, 1.0))
         return nullptr;
