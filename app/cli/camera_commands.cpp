@@ -91,7 +91,7 @@ int cameraList(Invocation& inv)
                                    {QStringLiteral("available"), available}});
     };
     add(QStringLiteral("sim"), tr("the simulated camera on the in-process simulator's stage (--sim stage)"), true);
-    add(QStringLiteral("sim:PATH"), tr("the simulated camera benchpilot-sim serves on a socket (--camera-socket)"), false);
+    add(QStringLiteral("sim:PATH"), tr("the simulated camera benchpilot-sim serves on a socket (--camera-socket)"), true);
     add(QStringLiteral("uvc[:NAME]"), tr("a USB camera through Qt Multimedia: NAME as camera list names it, NAME@WIDTHxHEIGHT for a resolution"), BP_WITH_UVC != 0);
     add(QStringLiteral("command:CMD"), tr("your capture program, run for each image with {file} {tile} {x_mm} {y_mm}"), true);
     add(QStringLiteral("folder:DIR"), tr("the next complete new image a camera's own software saves in DIR"), true);
@@ -130,7 +130,7 @@ int cameraList(Invocation& inv)
 int cameraSnap(Invocation& inv)
 {
     if (!inv.isSet(QStringLiteral("camera")))
-        return inv.usage(tr("needs --camera SOURCE (sim, uvc[:NAME], command:CMD or folder:DIR; see camera list)"));
+        return inv.usage(tr("needs --camera SOURCE (sim, sim:PATH, uvc[:NAME], command:CMD or folder:DIR; see camera list)"));
     if (!inv.isSet(QStringLiteral("out")))
         return inv.usage(tr("needs --out FILE.tif"));
     const QString file = inv.path(inv.value(QStringLiteral("out")));
@@ -244,6 +244,11 @@ std::unique_ptr<dev::camera::Camera> cameraFor(Invocation& inv, CliSession* sess
         return nullptr;
     }
     sim.settings.specimen = *kind;
+    // benchpilot-sim chose its camera's specimen and seed when it started: one asked here would be ignored.
+    if (source.startsWith(QLatin1String("sim:")) && (inv.isSet(QStringLiteral("specimen")) || inv.isSet(QStringLiteral("camera-seed")))) {
+        inv.usage(tr("--camera %1: the specimen and its seed are benchpilot-sim's own (its --specimen and --camera-seed)").arg(source));
+        return nullptr;
+    }
     double seed = 1;
     if (!inv.number(QStringLiteral("camera-seed"), seed, 1.0))
         return nullptr;
@@ -287,13 +292,14 @@ void addCameraCommands(std::vector<Command>& list)
     listCmd.api.access = Access::Compute;
     listCmd.api.params = {optionParam("available", ParamType::Boolean)};
     listCmd.api.example = QJsonObject{{QStringLiteral("available"), true}};
-    QList<QCommandLineOption> snapOptions{option("camera", "sim, uvc[:NAME], command:CMD or folder:DIR (see camera list)", "SOURCE"),
+    QList<QCommandLineOption> snapOptions{option("camera", "sim, sim:PATH, uvc[:NAME], command:CMD or folder:DIR (see camera list)", "SOURCE"),
                                           option("out", "the image file to write (TIFF)", "FILE.tif"),
                                           option("exposure-ms", "exposure, ms, where the camera lets it be set", "N", "10")};
     snapOptions << cameraOptions();
     Command snap{QStringLiteral("snap"), tr("take one image and write it as a TIFF with where the stage stood"), {},
                  tr("With --sim stage and --camera sim the simulated camera renders the specimen at the stage's true "
-                    "position (see docs/camera.md)."),
+                    "position; on benchpilot-sim's pty, --camera sim:PATH takes it from the socket that benchpilot-sim "
+                    "serves with --camera-socket PATH (see docs/camera.md)."),
                  snapOptions, cameraSnap, {}};
     snap.api.access = Access::Control;
     snap.api.params = {optionParam("camera", ParamType::Text, true), optionParam("out", ParamType::File, true),

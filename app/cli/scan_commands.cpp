@@ -408,7 +408,7 @@ void addScanCommands(std::vector<Command>& list)
                 {option("out", "folder for the run log and the exports (default: PLAN-run)", "DIR"),
                  option("home", "home the stage first"), option("restart", "start over even if the folder holds a run (kept aside)"),
                  option("yes", "run a scan that takes longer than a minute without asking"),
-                 option("camera", "take an image at every tile: sim, uvc[:NAME], command:CMD or folder:DIR (see camera list)", "SOURCE"),
+                 option("camera", "take an image at every tile: sim, sim:PATH, uvc[:NAME], command:CMD or folder:DIR (see camera list)", "SOURCE"),
                  cameraOptions()[0], cameraOptions()[1]},
                 scanRun, {}};
     run.api.access = Access::Control;

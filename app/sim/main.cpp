@@ -3,6 +3,8 @@
 //                  [--time-scale K] [--baud N]
 //                  [--gauge PATH --gauge-axis X [--gauge-resolution MM] [--gauge-noise MM]]
 //                  [--journal FILE] [--no-homing] [--stage-errors FILE]
+//                  [--camera-socket PATH [--specimen NAME] [--camera-seed N]
+//                                        [--camera-sensor W,H] [--camera-pixel-um UM]]
 // --protocol chooses what the firmware speaks over the same machine model: the BenchPilot
 // protocol, or the GRBL 1.1 / grblHAL personality (docs/grbl.md).
 // The GRBL board runs on when a host opens the port, as most grblHAL boards do (a board that
@@ -13,12 +15,17 @@
 // instrument's own encoder or grating does not see.
 // --stage-errors gives the stage the errors of a benchpilot.stage-errors file (pitch,
 // straightness, squareness, lost motion at the work point; docs/accuracy.md).
+// --camera-socket serves the simulated camera on a local socket beside the pty: it renders the
+// specimen at the stage's TRUE work point, which only this process knows, for the camera
+// sim:PATH of benchpilot-cli or the GUI (docs/camera.md). The socket is removed on exit.
 #include "device/link/simulated_link.h"
 #include "device/sim/grbl_firmware.h"
 #include "app/common/version_text.h"
 #include "device/files/accuracy/grid/stage_errors_file.h"
+#include "device/camera/sim_camera_server.h"
 #include "device/sim/sim_gauge.h"
 #include "widgets/wording/wording.h"
+#include "camera_options.h"
 #include "journal_file.h"
 #include "pty_transport.h"
 
@@ -90,6 +97,8 @@ int main(int argc, char** argv)
                                    QStringLiteral("file"));
     p.addOptions({instrument, ptyPath, protocol, timeScale, baud, gaugePath, gaugeAxis, gaugeResolution, gaugeNoise, journal, noHoming,
                   stageErrors});
+    const app::sim::CameraOptions cameraOptions;
+    cameraOptions.addTo(p);
     // --version gives the licence too (app/common/version_text.h), not Qt's bare line.
     for (const QString& a : QCoreApplication::arguments().mid(1)) {
         if (a == QLatin1String("--"))
@@ -152,6 +161,10 @@ int main(int argc, char** argv)
             return fail(QCoreApplication::translate("sim", "--gauge needs a path of its own, not the instrument's"));
     }
 
+    app::sim::CameraChoice camera;
+    if (QString why; !cameraOptions.read(p, kind, {p.value(ptyPath), gaugeLink}, &camera, &why))
+        return fail(why);
+
     auto claimLink = [](const QString& path) -> QString {
         const QFileInfo existing(path);
         if (existing.exists() || existing.isSymLink()) {
@@ -188,6 +201,21 @@ int main(int argc, char** argv)
         host = std::make_unique<dev::SimulatorHost>(std::move(fw), &pty);
     }
     host->setTimeScale(scale);
+    // The camera reads the machine on this thread, where the firmware runs, when a request arrives.
+    std::unique_ptr<dev::camera::SimCameraServer> cameraServer;
+    if (camera.serve) {
+        cameraServer = std::make_unique<dev::camera::SimCameraServer>(
+            [simMachine]() -> std::optional<dev::camera::WorkPoint> {
+                const auto at = simMachine->trueWorkPoint();
+                return dev::camera::WorkPoint{at.xMm, at.yMm, simMachine->timeUs()};
+            },
+            camera.settings);
+        motion::msg::Message why;
+        if (!cameraServer->listen(camera.path, &why)) {
+            ::unlink(qPrintable(link));
+            return fail(ui::words::text(why));
+        }
+    }
     if (p.isSet(journal))
         host->firmware().setJournal(true);
     host->start();
@@ -224,8 +252,13 @@ int main(int argc, char** argv)
         std::printf("gauge %s -> %s (axis %c, resolution %g mm, noise %g mm)\n", qPrintable(gaugeLink),
                     qPrintable(gaugePty.slavePath()), machine.axes[static_cast<std::size_t>(gaugeAxisIndex)].letter,
                     gaugeConfig.resolutionMm, gaugeConfig.noiseMm);
+    if (cameraServer)
+        std::printf("camera %s (%s, seed %llu)\n", qPrintable(camera.path), dev::camera::specimenName(camera.settings.specimen),
+                    static_cast<unsigned long long>(camera.settings.seed));
     std::fflush(stdout);
     const int rc = app.exec();
+    if (cameraServer)
+        cameraServer->close();  // removes the socket, as the pty's symlink below
     if (grbl) {
         // The receive buffer's accounting, for the host that streamed to it (and its tests): a host
         // that counts characters never has a byte dropped.

@@ -2,6 +2,7 @@
 
 #include "device/camera/command_camera.h"
 #include "device/camera/folder_camera.h"
+#include "device/camera/sim_socket_camera.h"
 #if BP_WITH_UVC
 #include "device/camera/uvc_camera.h"
 #endif
@@ -60,6 +61,7 @@ std::unique_ptr<Camera> makeCamera(const std::string& text, const SimContext& si
     case SourceKind::Folder:
         return std::make_unique<FolderCamera>(QString::fromStdString(spec.argument), parent);
     case SourceKind::SimSocket:
+        return std::make_unique<SimSocketCamera>(QString::fromStdString(spec.argument), parent);
     case SourceKind::Uvc:
         break;
     }

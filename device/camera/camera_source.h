@@ -1,7 +1,7 @@
 #pragma once
 // A camera as the operator names it, and the camera made from that name:
 //   sim               the simulated camera on the in-process simulator's stage
-//   sim:PATH          the simulated camera benchpilot-sim serves on a local socket (not yet)
+//   sim:PATH          the simulated camera benchpilot-sim serves on a local socket (sim_socket_camera.h)
 //   uvc[:NAME]        a USB camera through Qt Multimedia (uvc_camera.h; not in a build without it)
 //   command:CMD       the operator's capture program, run per image (command_camera.h)
 //   folder:DIR        the next complete new file a camera's own software saves in DIR (folder_camera.h)

@@ -2609,10 +2609,6 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
 </translation>
     </message>
     <message>
-        <source>needs --camera SOURCE (sim, uvc[:NAME], command:CMD or folder:DIR; see camera list)</source>
-        <translation>需要 --camera SOURCE（sim、uvc[:NAME]、command:CMD 或 folder:DIR；见 camera list）</translation>
-    </message>
-    <message>
         <source>needs --out FILE.tif</source>
         <translation>需要 --out FILE.tif</translation>
     </message>
@@ -2651,10 +2647,6 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>take one image and write it as a TIFF with where the stage stood</source>
         <translation>拍摄一张图像，连同载物台所在位置写成 TIFF 文件</translation>
-    </message>
-    <message>
-        <source>With --sim stage and --camera sim the simulated camera renders the specimen at the stage&apos;s true position (see docs/camera.md).</source>
-        <translation>使用 --sim stage 和 --camera sim 时，模拟相机按载物台的真实位置渲染样品（见 docs/camera.md）。</translation>
     </message>
     <message>
         <source>cameras: list the sources, take an image</source>
@@ -2845,6 +2837,16 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>the camera %1 did not open within %2 s</source>
         <translation>相机 %1 未在 %2 秒内打开</translation>
+        <source>needs --camera SOURCE (sim, sim:PATH, uvc[:NAME], command:CMD or folder:DIR; see camera list)</source>
+        <translation>需要 --camera SOURCE（sim、sim:PATH、uvc[:NAME]、command:CMD 或 folder:DIR；见 camera list）</translation>
+    </message>
+    <message>
+        <source>--camera %1: the specimen and its seed are benchpilot-sim&apos;s own (its --specimen and --camera-seed)</source>
+        <translation>--camera %1：样品及其种子由 benchpilot-sim 自己决定（其 --specimen 和 --camera-seed）</translation>
+    </message>
+    <message>
+        <source>With --sim stage and --camera sim the simulated camera renders the specimen at the stage&apos;s true position; on benchpilot-sim&apos;s pty, --camera sim:PATH takes it from the socket that benchpilot-sim serves with --camera-socket PATH (see docs/camera.md).</source>
+        <translation>使用 --sim stage 和 --camera sim 时，模拟相机按载物台的真实位置渲染样品；使用 benchpilot-sim 的 pty 时，--camera sim:PATH 从 benchpilot-sim 以 --camera-socket PATH 提供的套接字取得图像（见 docs/camera.md）。</translation>
     </message>
 </context>
 <context>
@@ -3628,6 +3630,58 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>--stage-errors is for the simulated stage (--instrument stage)</source>
         <translation>--stage-errors 只用于仿真载物台（--instrument stage）</translation>
+    </message>
+    <message>
+        <source>serve the simulated camera on a local socket here (the camera sim:PATH)</source>
+        <translation>在此本地套接字上提供模拟相机（即相机 sim:PATH）</translation>
+    </message>
+    <message>
+        <source>with --camera-socket: what lies on the stage: slide, grid-plate or line-scales</source>
+        <translation>与 --camera-socket 一起：载物台上放的样品：slide、grid-plate 或 line-scales</translation>
+    </message>
+    <message>
+        <source>with --camera-socket: the specimen&apos;s and the noise&apos;s seed</source>
+        <translation>与 --camera-socket 一起：样品和噪声的种子</translation>
+    </message>
+    <message>
+        <source>with --camera-socket: the sensor in pixels when a request gives no camera</source>
+        <translation>与 --camera-socket 一起：请求未给出相机时传感器的像素数</translation>
+    </message>
+    <message>
+        <source>with --camera-socket: a pixel at the sample in µm when a request gives no camera</source>
+        <translation>与 --camera-socket 一起：请求未给出相机时一个像素在样品上的大小（µm）</translation>
+    </message>
+    <message>
+        <source>--specimen, --camera-seed, --camera-sensor and --camera-pixel-um are for the camera socket (--camera-socket PATH)</source>
+        <translation>--specimen、--camera-seed、--camera-sensor 和 --camera-pixel-um 用于相机套接字（--camera-socket PATH）</translation>
+    </message>
+    <message>
+        <source>--camera-socket is for the simulated stage (--instrument stage)</source>
+        <translation>--camera-socket 用于模拟载物台（--instrument stage）</translation>
+    </message>
+    <message>
+        <source>--camera-socket needs a path</source>
+        <translation>--camera-socket 需要一个路径</translation>
+    </message>
+    <message>
+        <source>--camera-socket needs a path of its own, not the pty&apos;s</source>
+        <translation>--camera-socket 需要自己的路径，不能与 pty 的相同</translation>
+    </message>
+    <message>
+        <source>--specimen must be slide, grid-plate or line-scales (got &apos;%1&apos;)</source>
+        <translation>--specimen 必须为 slide、grid-plate 或 line-scales（收到 &apos;%1&apos;）</translation>
+    </message>
+    <message>
+        <source>--camera-seed must be a whole number from 0 (got &apos;%1&apos;)</source>
+        <translation>--camera-seed 必须为从 0 开始的整数（收到 &apos;%1&apos;）</translation>
+    </message>
+    <message>
+        <source>--camera-sensor must be W,H in pixels, each from 1 to %1 (got &apos;%2&apos;)</source>
+        <translation>--camera-sensor 必须为以像素计的 W,H，每个从 1 到 %1（收到 &apos;%2&apos;）</translation>
+    </message>
+    <message>
+        <source>--camera-pixel-um must be above 0 and at most %1 (got &apos;%2&apos;)</source>
+        <translation>--camera-pixel-um 必须大于 0 且不超过 %1（收到 &apos;%2&apos;）</translation>
     </message>
 </context>
 <context>
@@ -4583,10 +4637,6 @@ Keep that log aside and start this test afresh?</source>
         <translation>相机</translation>
     </message>
     <message>
-        <source>sim: the simulated camera; uvc:NAME: a USB camera; command:CMD: runs CMD for each image ({file} is where it writes); folder:DIR: takes the next new file in DIR</source>
-        <translation>sim：模拟相机；uvc:NAME：USB 相机；command:CMD：每张图像运行一次 CMD（{file} 是它写入的位置）；folder:DIR：取 DIR 中的下一个新文件</translation>
-    </message>
-    <message>
         <source>List the cameras again</source>
         <translation>重新列出相机</translation>
     </message>
@@ -4613,6 +4663,10 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Take one image and save it as a TIFF with the stage position in it (16-bit grey stays 16-bit) (%1)</source>
         <translation>拍摄一张图像并保存为含载物台位置的 TIFF（16 位灰度保持 16 位）（%1）</translation>
+    </message>
+    <message>
+        <source>sim: the simulated camera; sim:PATH: the one benchpilot-sim serves at PATH (--camera-socket); uvc:NAME: a USB camera; command:CMD: runs CMD for each image ({file} is where it writes); folder:DIR: takes the next new file in DIR</source>
+        <translation>sim：模拟相机；sim:PATH：benchpilot-sim 在 PATH 提供的模拟相机（--camera-socket）；uvc:NAME：USB 相机；command:CMD：每张图像运行一次 CMD（{file} 是它写入的位置）；folder:DIR：取 DIR 中的下一个新文件</translation>
     </message>
 </context>
 <context>
@@ -9844,6 +9898,84 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <source>a %1 (Motion-JPEG) frame from the camera, %2 × %3 px, could not be decoded</source>
         <comment>camera.uvc.jpeg_unreadable</comment>
         <translation>无法解码相机的一帧 %1（Motion-JPEG），%2 × %3 像素</translation>
+        <source>no simulated camera is served at %1: start benchpilot-sim with --camera-socket %1</source>
+        <comment>camera.socket.no_server</comment>
+        <translation>%1 上没有提供模拟相机：请以 --camera-socket %1 启动 benchpilot-sim</translation>
+    </message>
+    <message>
+        <source>the simulated camera at %1 went away (has benchpilot-sim stopped?)</source>
+        <comment>camera.socket.lost</comment>
+        <translation>%1 上的模拟相机已断开（benchpilot-sim 已停止？）</translation>
+    </message>
+    <message>
+        <source>the simulated camera at %1 did not answer within %2</source>
+        <comment>camera.socket.timeout</comment>
+        <translation>%1 上的模拟相机在 %2 内没有应答</translation>
+    </message>
+    <message>
+        <source>the simulated camera at %1 sent what cannot be read: %2</source>
+        <comment>camera.socket.garbled</comment>
+        <translation>%1 上的模拟相机发来了无法读取的内容：%2</translation>
+    </message>
+    <message>
+        <source>the simulated camera at %1 refused the request: %2 (%3)</source>
+        <comment>camera.socket.server_error</comment>
+        <translation>%1 上的模拟相机拒绝了请求：%2（%3）</translation>
+    </message>
+    <message>
+        <source>the socket path %1 is empty or too long (a local socket&apos;s path has at most %2)</source>
+        <comment>camera.socket.path_too_long</comment>
+        <translation>套接字路径 %1 为空或太长（本地套接字的路径最多 %2）</translation>
+    </message>
+    <message>
+        <source>%1 exists and is not a socket: refusing to replace it</source>
+        <comment>camera.socket.not_a_socket</comment>
+        <translation>%1 已存在且不是套接字：拒绝替换它</translation>
+    </message>
+    <message>
+        <source>a simulated camera is already served at %1 (another benchpilot-sim?): stop it or give another path</source>
+        <comment>camera.socket.in_use</comment>
+        <translation>%1 上已有模拟相机在提供服务（另一个 benchpilot-sim？）：请停止它或换一个路径</translation>
+    </message>
+    <message>
+        <source>cannot serve the simulated camera at %1: %2</source>
+        <comment>camera.socket.cannot_listen</comment>
+        <translation>无法在 %1 上提供模拟相机：%2</translation>
+    </message>
+    <message>
+        <source>a header line longer than %1</source>
+        <comment>camera.wire.header_too_long</comment>
+        <translation>头部行长于 %1</translation>
+    </message>
+    <message>
+        <source>a header that is not a JSON object (%1)</source>
+        <comment>camera.wire.not_json</comment>
+        <translation>头部不是 JSON 对象（%1）</translation>
+    </message>
+    <message>
+        <source>a message of schema &apos;%1&apos;, not benchpilot.sim-camera</source>
+        <comment>camera.wire.schema</comment>
+        <translation>消息的 schema 为 &apos;%1&apos;，而不是 benchpilot.sim-camera</translation>
+    </message>
+    <message>
+        <source>a message of version %1; this BenchPilot reads version %2</source>
+        <comment>camera.wire.version</comment>
+        <translation>消息版本为 %1；本 BenchPilot 读取版本 %2</translation>
+    </message>
+    <message>
+        <source>the field &apos;%1&apos; is missing or out of range</source>
+        <comment>camera.wire.field</comment>
+        <translation>字段 &apos;%1&apos; 缺失或超出范围</translation>
+    </message>
+    <message>
+        <source>a &apos;%1&apos; message where none belongs</source>
+        <comment>camera.wire.unexpected</comment>
+        <translation>此处不应出现 &apos;%1&apos; 消息</translation>
+    </message>
+    <message>
+        <source>a frame of %3 × %4 px announces %1 of pixels where it needs %2</source>
+        <comment>camera.wire.size</comment>
+        <translation>%3 × %4 像素的帧声明了 %1 的像素数据，而应为 %2</translation>
     </message>
 </context>
 <context>

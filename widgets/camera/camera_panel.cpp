@@ -284,7 +284,8 @@ void CameraPanel::updateUi()
 void CameraPanel::retranslateUi()
 {
     m_sourceLabel->setText(tr("Camera"));
-    m_source->setToolTip(tr("sim: the simulated camera; uvc:NAME: a USB camera; command:CMD: runs CMD for each image "
+    m_source->setToolTip(tr("sim: the simulated camera; sim:PATH: the one benchpilot-sim serves at PATH (--camera-socket); "
+                            "uvc:NAME: a USB camera; command:CMD: runs CMD for each image "
                             "({file} is where it writes); folder:DIR: takes the next new file in DIR"));
     m_refresh->setToolTip(tr("List the cameras again"));
     m_exposureLabel->setText(tr("Exposure"));
