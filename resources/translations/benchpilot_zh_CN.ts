@@ -2563,10 +2563,6 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>--source manual 读取操作员在 benchpilot-cli 中输入的读数；在图形界面中请使用“校准”界面</translation>
     </message>
     <message>
-        <source>--source &apos;%1&apos;: readback, gauge:PATH, manual or interferometer</source>
-        <translation>--source &apos;%1&apos;：可选 readback、gauge:PATH、manual 或 interferometer</translation>
-    </message>
-    <message>
         <source>--gauge-timeout must be from 0 to 60 s</source>
         <translation>--gauge-timeout 必须在 0 到 60 s 之间</translation>
     </message>
@@ -2835,8 +2831,6 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>没有 BenchPilot 能读取的格式</translation>
     </message>
     <message>
-        <source>the camera %1 did not open within %2 s</source>
-        <translation>相机 %1 未在 %2 秒内打开</translation>
         <source>needs --camera SOURCE (sim, sim:PATH, uvc[:NAME], command:CMD or folder:DIR; see camera list)</source>
         <translation>需要 --camera SOURCE（sim、sim:PATH、uvc[:NAME]、command:CMD 或 folder:DIR；见 camera list）</translation>
     </message>
@@ -2847,6 +2841,14 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>With --sim stage and --camera sim the simulated camera renders the specimen at the stage&apos;s true position; on benchpilot-sim&apos;s pty, --camera sim:PATH takes it from the socket that benchpilot-sim serves with --camera-socket PATH (see docs/camera.md).</source>
         <translation>使用 --sim stage 和 --camera sim 时，模拟相机按载物台的真实位置渲染样品；使用 benchpilot-sim 的 pty 时，--camera sim:PATH 从 benchpilot-sim 以 --camera-socket PATH 提供的套接字取得图像（见 docs/camera.md）。</translation>
+    </message>
+    <message>
+        <source>--source &apos;%1&apos;: readback, gauge:PATH, manual, interferometer or camera[:SOURCE]</source>
+        <translation>--source &apos;%1&apos;：应为 readback、gauge:PATH、manual、interferometer 或 camera[:SOURCE]</translation>
+    </message>
+    <message>
+        <source>the camera %1 did not open within %2 s</source>
+        <translation>相机 %1 未在 %2 秒内打开</translation>
     </message>
 </context>
 <context>
@@ -4572,6 +4574,14 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>%1 holds a finished run of this test. Run the test again into %2? Both runs are kept, and Before / after compares the new one with this one.</source>
         <translation>%1 中已有此测试完成的一次运行。要在 %2 中再运行一次此测试吗？两次运行都会保留，“补偿前后”会把新的一次与这一次比较。</translation>
+    </message>
+    <message>
+        <source>Open a camera first, on the Scan or Jog screen&apos;s Camera tab, with the glass scale under it (on the simulator: the sim camera, started with --specimen line-scales).</source>
+        <translation>请先在扫描或点动页的“相机”选项卡中打开相机，并把玻璃线纹尺放在其下（模拟器：sim 相机，启动时加 --specimen line-scales）。</translation>
+    </message>
+    <message>
+        <source>the camera reading a glass scale</source>
+        <translation>相机读取玻璃线纹尺</translation>
     </message>
 </context>
 <context>
@@ -7882,6 +7892,10 @@ Start this scan anew in that folder? The old run log is kept under another name.
         <source>Open a camera on the Camera tab first, or clear “Take an image at each tile”.</source>
         <translation>请先在“相机”页打开相机，或取消“在每个图块拍摄图像”。</translation>
     </message>
+    <message>
+        <source>Mosaic</source>
+        <translation>拼接图</translation>
+    </message>
 </context>
 <context>
     <name>ui::ScanStageMap</name>
@@ -8112,6 +8126,65 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     <message>
         <source>never: limit cycle</source>
         <translation>从未稳定：极限环</translation>
+    </message>
+</context>
+<context>
+    <name>ui::StitchPanel</name>
+    <message>
+        <source>Stitching failed.</source>
+        <translation>拼接失败。</translation>
+    </message>
+    <message>
+        <source>Stitching %1 failed: %2</source>
+        <translation>拼接 %1 失败：%2</translation>
+    </message>
+    <message>
+        <source>%1 tiles, %2 pairs: %3 trusted, %4 rejected as outliers, %5 not trusted; %6 tiles placed by the stage (hatched)</source>
+        <translation>%1 个图块，%2 对：%3 对可信，%4 对作为离群值剔除，%5 对不可信；%6 个图块按载物台位置放置（斜线）</translation>
+    </message>
+    <message>
+        <source>Correction from the stage: RMS %1 px (%2 µm), worst %3 px (%4 µm); arrows drawn ×%5</source>
+        <translation>相对载物台位置的修正：均方根 %1 像素（%2 µm），最大 %3 像素（%4 µm）；箭头放大 %5 倍</translation>
+    </message>
+    <message>
+        <source>Mosaic %1 × %2 px in %3 s</source>
+        <translation>拼接图 %1 × %2 像素，用时 %3 秒</translation>
+    </message>
+    <message>
+        <source>The quality map could not be written to %1: %2</source>
+        <translation>无法把质量图写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>Stitched into %1: %2</source>
+        <translation>已拼接到 %1：%2</translation>
+    </message>
+    <message>
+        <source>Tile %1 (%2): moved %3, %4 px from where the stage put it%5</source>
+        <translation>图块 %1（%2）：相对载物台位置移动了 %3, %4 像素%5</translation>
+    </message>
+    <message>
+        <source>; no trusted pair: placed by the stage</source>
+        <translation>；没有可信的图块对：按载物台位置放置</translation>
+    </message>
+    <message>
+        <source>with tile %1: shift %2, %3 px, score %4, %5</source>
+        <translation>与图块 %1：位移 %2, %3 像素，得分 %4，%5</translation>
+    </message>
+    <message>
+        <source>Stitching %1 tiles in %2…</source>
+        <translation>正在拼接 %2 中的 %1 个图块…</translation>
+    </message>
+    <message>
+        <source>A scan is running into the folder: stitch it when it has finished.</source>
+        <translation>扫描正在写入该文件夹：请在扫描结束后再拼接。</translation>
+    </message>
+    <message>
+        <source>Stitch</source>
+        <translation>拼接</translation>
+    </message>
+    <message>
+        <source>Stitch the images of the scan in the output folder into a mosaic (Ctrl+T)</source>
+        <translation>把输出文件夹中扫描的图像拼接成拼接图（Ctrl+T）</translation>
     </message>
 </context>
 <context>
@@ -9383,6 +9456,14 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <source>the sequence&apos;s stop %1 is at %2, approached %3 in cycle %4, where the test &quot;%8&quot; goes to %5, approached %6 in cycle %7: it is the run of another test</source>
         <translation>序列的第 %1 个测点位于 %2，在第 %4 个循环中%3趋近，而测试“%8”在第 %7 个循环中%6趋近 %5：这是另一项测试的运行序列</translation>
     </message>
+    <message>
+        <source>camera %1 reading the glass scale along %2</source>
+        <translation>相机 %1 读取沿 %2 轴的玻璃线纹尺</translation>
+    </message>
+    <message>
+        <source>camera</source>
+        <translation>相机</translation>
+    </message>
 </context>
 <context>
     <name>ui::words::AccuracyWords</name>
@@ -9895,9 +9976,6 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <translation>相机的一帧 %1 所含字节少于 %2 × %3 像素所需</translation>
     </message>
     <message>
-        <source>a %1 (Motion-JPEG) frame from the camera, %2 × %3 px, could not be decoded</source>
-        <comment>camera.uvc.jpeg_unreadable</comment>
-        <translation>无法解码相机的一帧 %1（Motion-JPEG），%2 × %3 像素</translation>
         <source>no simulated camera is served at %1: start benchpilot-sim with --camera-socket %1</source>
         <comment>camera.socket.no_server</comment>
         <translation>%1 上没有提供模拟相机：请以 --camera-socket %1 启动 benchpilot-sim</translation>
@@ -9976,6 +10054,26 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <source>a frame of %3 × %4 px announces %1 of pixels where it needs %2</source>
         <comment>camera.wire.size</comment>
         <translation>%3 × %4 像素的帧声明了 %1 的像素数据，而应为 %2</translation>
+    </message>
+    <message>
+        <source>the camera %1 gave no image in %2</source>
+        <comment>camera.reading.silent</comment>
+        <translation>相机 %1 在 %2 内没有给出图像</translation>
+    </message>
+    <message>
+        <source>the camera %1 reads a glass scale along one axis, X or Y, at a time</source>
+        <comment>camera.reading.one_axis</comment>
+        <translation>相机 %1 一次只读取沿一个轴（X 或 Y）的玻璃线纹尺</translation>
+    </message>
+    <message>
+        <source>%1; the image is kept as %2</source>
+        <comment>camera.reading.no_line</comment>
+        <translation>%1；图像已保存为 %2</translation>
+    </message>
+    <message>
+        <source>a %1 (Motion-JPEG) frame from the camera, %2 × %3 px, could not be decoded</source>
+        <comment>camera.uvc.jpeg_unreadable</comment>
+        <translation>无法解码相机的一帧 %1（Motion-JPEG），%2 × %3 像素</translation>
     </message>
 </context>
 <context>
@@ -13775,6 +13873,61 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <source>the camera %1 gave no image within %2 after the exposure</source>
         <comment>scan.run.camera_silent</comment>
         <translation>相机 %1 在曝光结束后 %2 内没有给出图像</translation>
+    </message>
+    <message>
+        <source>a stitch is already running</source>
+        <comment>scan.stitch.running</comment>
+        <translation>已有一个拼接正在进行</translation>
+    </message>
+    <message>
+        <source>%1 holds no scan run log: run a scan with images into it first</source>
+        <comment>scan.stitch.no_run_log</comment>
+        <translation>%1 中没有扫描运行日志：请先把一次带图像的扫描运行到该文件夹</translation>
+    </message>
+    <message>
+        <source>the scan in %1 took no images to stitch (was “Take an image at each tile” on?)</source>
+        <comment>scan.stitch.no_images</comment>
+        <translation>%1 中的扫描没有拍摄可拼接的图像（是否勾选了“在每个图块拍摄图像”？）</translation>
+    </message>
+    <message>
+        <source>the image of tile %2 (%1) is not in the folder</source>
+        <comment>scan.stitch.image_missing</comment>
+        <translation>图块 %2 的图像（%1）不在该文件夹中</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <comment>scan.stitch.cannot_write</comment>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>trusted</source>
+        <comment>scan.pair.accepted</comment>
+        <translation>可信</translation>
+    </message>
+    <message>
+        <source>not trusted: score too low (blank, dark or out of focus)</source>
+        <comment>scan.pair.low_score</comment>
+        <translation>不可信：得分太低（空白、太暗或失焦）</translation>
+    </message>
+    <message>
+        <source>not trusted: two offsets score alike (a repetitive pattern)</source>
+        <comment>scan.pair.ambiguous</comment>
+        <translation>不可信：两个偏移得分相近（重复图案）</translation>
+    </message>
+    <message>
+        <source>not trusted: the best offset lies on the search bound</source>
+        <comment>scan.pair.at_bound</comment>
+        <translation>不可信：最佳偏移位于搜索边界上</translation>
+    </message>
+    <message>
+        <source>not trusted: too little overlap</source>
+        <comment>scan.pair.no_overlap</comment>
+        <translation>不可信：重叠太少</translation>
+    </message>
+    <message>
+        <source>rejected: disagrees with the other pairs</source>
+        <comment>scan.pair.outlier</comment>
+        <translation>已剔除：与其他图块对不一致</translation>
     </message>
 </context>
 <context>
