@@ -336,7 +336,8 @@ QList<QCommandLineOption> accuracyRunOptions()
             option("home", "home the test's axes first"),
             option("at", "move other axes here first (--home homes them too), e.g. Y=50.075: where the scale or the gauge is", "AXIS=MM[,AXIS=MM]"),
             option("time-scale", "with --sim: run the simulator's clock this many times faster", "k", "1"),
-            cameraOptions("line-scales")[0], cameraOptions("line-scales")[1]};
+            option("specimen", "with --source camera on the simulator: what the camera looks at: line-scales, grid-plate or slide", "NAME", "line-scales"),
+            option("camera-seed", "with --source camera on the simulator: the specimen's and noise's seed", "N", "1")};
 }
 
 } // namespace app::cli

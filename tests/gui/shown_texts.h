@@ -196,7 +196,8 @@ inline QStringList englishWords(const QString& text)
         QStringLiteral("Ti"), QStringLiteral("Td"), QStringLiteral("kp"), QStringLiteral("ki"), QStringLiteral("kd"),
         QStringLiteral("Xc"), QStringLiteral("Yc"), QStringLiteral("sin"), QStringLiteral("cos"), QStringLiteral("adj"),
     };
-    static const QRegularExpression markup(QStringLiteral("<[^>]*>|&[a-z]+;|&#\\d+;"));
+    // Markup, and command-line options (--camera-socket): those are typed as they are in any language.
+    static const QRegularExpression markup(QStringLiteral("<[^>]*>|&[a-z]+;|&#\\d+;|--[a-z][a-z0-9-]*"));
     static const QRegularExpression word(QStringLiteral("[A-Za-z]{2,}"));
     QString t = text;
     t.remove(markup);
