@@ -20,6 +20,20 @@ namespace ui {
 
 namespace {
 constexpr const char* kQualityMapFile = "quality-map.png";
+
+/// The verdict on a pair, as a term (scan.pair.*).
+const char* pairTerm(imaging::PairStatus status)
+{
+    switch (status) {
+    case imaging::PairStatus::Accepted: return "scan.pair.accepted";
+    case imaging::PairStatus::LowScore: return "scan.pair.low_score";
+    case imaging::PairStatus::Ambiguous: return "scan.pair.ambiguous";
+    case imaging::PairStatus::AtBound: return "scan.pair.at_bound";
+    case imaging::PairStatus::NoOverlap: return "scan.pair.no_overlap";
+    case imaging::PairStatus::Outlier: return "scan.pair.outlier";
+    }
+    return "scan.pair.no_overlap";
+}
 const QSize kQualityMapPng(1400, 1100);
 } // namespace
 
@@ -171,7 +185,7 @@ void StitchPanel::showTile(int index)
                      .arg(p.reg.shiftPx.x(), 0, 'f', 2)
                      .arg(p.reg.shiftPx.y(), 0, 'f', 2)
                      .arg(p.reg.ncc, 0, 'f', 3)
-                     .arg(words::term(std::string("scan.pair.") + imaging::pairStatusName(p.reg.status)));
+                     .arg(words::term(pairTerm(p.reg.status)));
     }
     m_tile->setText(lines.join(QLatin1Char('\n')));
 }
