@@ -123,17 +123,20 @@ void SimCamera::renderAsync(const WorkPoint& at, const CameraGeometry& geometry,
         f.sequence = sequence;
         // Back on the camera's thread; the destructor waits for this task, and a queued
         // call to a deleted object is dropped with it.
-        QMetaObject::invokeMethod(this, [this, f = std::move(f), requestId, live, startedUs]() mutable {
+        // Shared, not copied, on its way to the signal: a 2048² frame is 8 MB.
+        auto shared = std::make_shared<const Frame>(std::move(f));
+        QMetaObject::invokeMethod(this, [this, shared, requestId, live, startedUs] {
             // The frame is handed over no earlier than its exposure would have ended.
-            const auto leftMs = static_cast<int>(std::ceil(f.exposureMs - static_cast<double>(hostNowUs() - startedUs) / 1000.0));
-            auto deliver = [this, f, requestId, live] {
+            const auto leftMs = static_cast<int>(std::ceil(shared->exposureMs - static_cast<double>(hostNowUs() - startedUs) / 1000.0));
+            auto deliver = [this, shared, requestId, live] {
+                const Frame& frame = *shared;
                 if (live) {
                     m_liveInFlight = false;
                     if (m_live && m_open)
-                        emit liveFrame(f);
+                        emit liveFrame(frame);
                     scheduleLive();
                 } else if (m_open) {
-                    emit captured(requestId, f);
+                    emit captured(requestId, frame);
                 } else {
                     emit failed(requestId, motion::msg::Problem("", motion::msg::make("camera.closed_during_capture", {motion::msg::verbatim("source", source().toStdString())})));
                 }

@@ -98,6 +98,19 @@ double runScan(bool withCamera, int* tiles, std::string* why)
     dev::jobs::ScanRunner runner(&client);
     if (withCamera) {
         camera.open();
+        // One shot first: the specimen's tables are built once when the camera opens,
+        // which is not a tile's cost.
+        bool warm = false;
+        const auto warming = QObject::connect(&camera, &cam::Camera::captured, [&warm](std::uint64_t, const cam::Frame&) { warm = true; });
+        cam::CaptureRequest first;
+        first.id = 1000000;
+        camera.capture(first);
+        const bool warmed = spinUntil([&] { return warm; }, 30000);
+        QObject::disconnect(warming);
+        if (!warmed) {
+            *why = "the simulated camera gave no first frame";
+            return -1;
+        }
         runner.setCamera(&scanCamera);
     }
     QTemporaryDir dir;
