@@ -12,9 +12,11 @@
 
 namespace app {
 
-std::unique_ptr<dev::camera::Camera> makeCamera(const QString& source, InstrumentSession* stage, QString* error)
+std::unique_ptr<dev::camera::Camera> makeCamera(const QString& source, InstrumentSession* stage, QString* error,
+                                                dev::camera::SpecimenKind specimen)
 {
     dev::camera::SimContext sim;
+    sim.settings.specimen = specimen;
     // The true work point, read on the GUI thread where the simulator runs; none while the
     // stage is not on the in-process simulator (the camera says so when asked for a frame).
     QPointer<InstrumentSession> session(stage);

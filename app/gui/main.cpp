@@ -1,5 +1,5 @@
 // benchpilot: the operator and test-bench GUI.
-//   benchpilot [--lang system|en|zh_CN] [--sim analyzer|stage [--stage-errors FILE]] [--port PATH [--instrument analyzer|stage] [--profile FILE] [--baud N]]
+//   benchpilot [--lang system|en|zh_CN] [--sim analyzer|stage [--stage-errors FILE] [--specimen NAME]] [--port PATH [--instrument analyzer|stage] [--profile FILE] [--baud N]]
 //   benchpilot [--api-socket PATH | --no-api] [--api-websocket PORT [--api-token-file FILE] [--api-allow-origin URL]...]
 //   benchpilot [--lang …] --screenshot FILE --screen NAME [--size WxH] [--sim analyzer|stage] [--settle-ms N] [--home-first] [--exercise] [--tune] [--recipe FILE]
 #include "main_window.h"
@@ -7,6 +7,7 @@
 #include "app/cli/command.h"
 
 #include "device/backends/protocol_probe.h"
+#include "device/camera/specimen.h"
 #include "app/common/version_text.h"
 #include "device/files/accuracy/grid/stage_errors_file.h"
 #include "device/files/machine_profile_file.h"
@@ -73,6 +74,10 @@ int main(int argc, char** argv)
                                    QApplication::translate("main", "with --sim stage: the simulated stage's errors from a "
                                                                    "benchpilot.stage-errors file"),
                                    QStringLiteral("file"));
+    QCommandLineOption specimen(QStringLiteral("specimen"),
+                                QApplication::translate("main", "with --sim stage: what the simulated camera sees on the stage: slide, "
+                                                                "grid-plate or line-scales"),
+                                QStringLiteral("name"), QStringLiteral("slide"));
     QCommandLineOption port(QStringLiteral("port"),
                             QApplication::translate("main", "connect to this serial port or path (e.g. benchpilot-sim's pty); the "
                                                             "protocol is detected: BenchPilot or GRBL"),
@@ -118,7 +123,7 @@ int main(int argc, char** argv)
     QCommandLineOption lang(QStringLiteral("lang"),
                             QApplication::translate("main", "language of the screens: system, en or zh_CN (default: the Language menu's choice)"),
                             QStringLiteral("language"));
-    p.addOptions({sim, stageErrors, port, instrument, profile, baud, shot, screen, size, settle, script, exercise, tune, recipe, lang,
+    p.addOptions({sim, stageErrors, specimen, port, instrument, profile, baud, shot, screen, size, settle, script, exercise, tune, recipe, lang,
                   apiSocket, noApi, apiWebSocket, apiToken, apiOrigin});
     QCoreApplication::setOrganizationName(QStringLiteral("BenchPilot"));
     QCoreApplication::setApplicationName(QStringLiteral("benchpilot"));
@@ -215,6 +220,12 @@ int main(int argc, char** argv)
         options.showInstrument = kindIndex(*k);
     } else if (p.isSet(stageErrors)) {
         return fail(QApplication::translate("main", "--stage-errors is for the simulated stage: give --sim stage"));
+    }
+    if (p.isSet(specimen)) {
+        const auto kind = dev::camera::specimenFromName(p.value(specimen).toStdString());
+        if (!kind)
+            return fail(QApplication::translate("main", "--specimen must be slide, grid-plate or line-scales (got '%1')").arg(p.value(specimen)));
+        options.specimen = *kind;
     }
     if (p.isSet(port)) {
         bool ok = false;

@@ -170,7 +170,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
 
     m_camera = new ui::CameraSession(this);
     m_camera->setFactory(m_options.cameraFactory ? m_options.cameraFactory : ui::CameraSession::Factory([this](const QString& source, QString* error) {
-        return makeCamera(source, m_instruments[1].session, error);
+        return makeCamera(source, m_instruments[1].session, error, m_options.specimen);
     }));
     m_camera->setLister(m_options.cameraLister ? m_options.cameraLister : ui::CameraSession::Lister(&listCameras));
     connect(m_camera, &ui::CameraSession::problem, this, &MainWindow::warn);

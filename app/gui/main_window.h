@@ -3,6 +3,7 @@
 // E-stop on every screen, banner, event log and status bar, and the scripting API.
 #include "api_wiring.h"
 #include "device/camera/camera.h"
+#include "device/camera/specimen.h"
 #include "widgets/connection_bar.h"
 
 #include <QMainWindow>
@@ -68,6 +69,8 @@ struct MainWindowOptions {
     std::function<std::unique_ptr<dev::camera::Camera>(const QString& source, QString* error)> cameraFactory;
     /// Lists the cameras there are ("sim", "uvc:NAME" …); unset: camera_wiring.h's. Tests count its calls.
     std::function<QStringList()> cameraLister;
+    /// What the simulated camera looks at on the in-process simulated stage (--specimen).
+    dev::camera::SpecimenKind specimen = dev::camera::SpecimenKind::Slide;
 };
 
 class MainWindow : public QMainWindow {

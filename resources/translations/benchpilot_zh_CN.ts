@@ -3522,6 +3522,14 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <source>--stage-errors: %1</source>
         <translation>--stage-errors：%1</translation>
     </message>
+    <message>
+        <source>with --sim stage: what the simulated camera sees on the stage: slide, grid-plate or line-scales</source>
+        <translation>与 --sim stage 一起：模拟相机在载物台上看到的样品：slide、grid-plate 或 line-scales</translation>
+    </message>
+    <message>
+        <source>--specimen must be slide, grid-plate or line-scales (got &apos;%1&apos;)</source>
+        <translation>--specimen 必须为 slide、grid-plate 或 line-scales（收到 &apos;%1&apos;）</translation>
+    </message>
 </context>
 <context>
     <name>sim</name>
@@ -4576,12 +4584,12 @@ Keep that log aside and start this test afresh?</source>
         <translation>%1 中已有此测试完成的一次运行。要在 %2 中再运行一次此测试吗？两次运行都会保留，“补偿前后”会把新的一次与这一次比较。</translation>
     </message>
     <message>
-        <source>Open a camera first, on the Scan or Jog screen&apos;s Camera tab, with the glass scale under it (on the simulator: the sim camera, started with --specimen line-scales).</source>
-        <translation>请先在扫描或点动页的“相机”选项卡中打开相机，并把玻璃线纹尺放在其下（模拟器：sim 相机，启动时加 --specimen line-scales）。</translation>
-    </message>
-    <message>
         <source>the camera reading a glass scale</source>
         <translation>相机读取玻璃线纹尺</translation>
+    </message>
+    <message>
+        <source>Open a camera first, on the Scan or Jog screen&apos;s Camera tab, with the glass scale under it (on the simulator: the sim camera, with benchpilot started with --specimen line-scales).</source>
+        <translation>请先在扫描或点动页的“相机”选项卡中打开相机，并把玻璃线纹尺放在其下（模拟器：sim 相机，启动 benchpilot 时加 --specimen line-scales）。</translation>
     </message>
 </context>
 <context>

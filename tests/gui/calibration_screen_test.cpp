@@ -13,6 +13,7 @@
 #include "widgets/calibration/deviation_plot.h"
 #include "widgets/calibration/fit_panel.h"
 #include "widgets/calibration/test_form.h"
+#include "widgets/camera/camera_session.h"
 
 #include <QDir>
 
@@ -355,4 +356,54 @@ TEST_F(CalibrationScreenTest, DuringARunTheLivePlotKeepsTheTestsSpanAndAStopCoun
     const QString state = child<QLabel>("calibrationState")->text();
     EXPECT_TRUE(state.startsWith(QStringLiteral("Stopped after %1 of %2 readings").arg(taken).arg(screen->runner()->totalReadings())))
         << state.toStdString();
+}
+
+// The camera reading a glass scale, from the Calibration screen: refused with what to do
+// while no camera is open, then a run on the simulated stage's X scale (benchpilot
+// --specimen line-scales) read by the GUI's camera.
+TEST(CalibrationCamera, TheGuisCameraReadsTheGlassScaleOnceOneIsOpen)
+{
+    app::MainWindowOptions options = guitest::testWindowOptions();
+    options.specimen = dev::camera::SpecimenKind::LineScales;
+    auto w = guitest::openReadyWindow(QSize(1366, 768), options);
+    ASSERT_NE(w, nullptr);
+    ASSERT_TRUE(w->showScreen(QStringLiteral("calibration")));
+    ui::CalibrationScreen* screen = w->calibrationScreen();
+    QTemporaryDir dir;
+    screen->setInstrument(1);
+    screen->setOutputFolder(dir.path());
+    motion::metrology::AxisTest t;
+    t.name = "gui-camera";
+    t.axis = "X";
+    t.targetsMm = {20, 50, 80};
+    t.cycles = 2;
+    t.feedMmS = 15;
+    t.overrunMm = 0.5;
+    t.dwellS = 0.05;
+    t.settle = {1, 0.05, 2};
+    screen->form()->setTest(t);
+    screen->setSource(QStringLiteral("camera"));
+    QStringList said;
+    QObject::connect(screen, &ui::CalibrationScreen::problem, [&](const QString& m) { said << m; });
+    EXPECT_FALSE(screen->run());
+    ASSERT_FALSE(said.isEmpty());
+    EXPECT_TRUE(said.back().contains(QLatin1String("Open a camera first"))) << said.back().toStdString();
+
+    dev::Instrument* stage = w->stage()->instrument();
+    auto* link = qobject_cast<dev::SimulatedLink*>(w->stage()->link());
+    ASSERT_TRUE(link);
+    link->host().setTimeScale(20);
+    stage->home(0);
+    ASSERT_TRUE(waitFor([&] { return stage->status().axes.size() >= 2 && stage->status().axes[0].homed && stage->status().axes[1].homed
+                                  && !stage->status().anyMoving(); }, 30000));
+    stage->move({{1, 50.075}}, false);  // the X scale's lines run from Y 50 to 50.15 mm
+    ASSERT_TRUE(waitFor([&] { return !stage->status().anyMoving() && std::abs(stage->status().axes[1].measured - 50.075) < 0.01; }, 30000));
+    link->host().setTimeScale(25);
+    w->cameraSession()->open(QStringLiteral("sim"));
+    ASSERT_TRUE(waitFor([&] { return w->cameraSession()->isOpen(); }, 5000));
+    ASSERT_TRUE(screen->run()) << said.join(QLatin1Char('\n')).toStdString();
+    ASSERT_TRUE(waitFor([&] { return screen->runner() && screen->runner()->state() == dev::jobs::AccuracyRunner::State::Finished; }, 60000))
+        << said.join(QLatin1Char('\n')).toStdString();
+    ASSERT_TRUE(screen->latest());
+    EXPECT_GT(*screen->latest()->evaluation.figures.aMm, 0.04) << "the camera sees the work point's error, as the gauge does";
 }

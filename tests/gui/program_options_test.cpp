@@ -34,7 +34,7 @@ TEST(ProgramOptions, HelpAndVersionNeedNoDisplay)
     QString out;
     EXPECT_EQ(runHeadless({QStringLiteral("--help")}, &out), 0);
     EXPECT_TRUE(out.startsWith(QStringLiteral("Usage: benchpilot [options]"))) << out.toStdString();
-    for (const char* o : {"--screenshot", "--screen", "--sim", "--port", "--instrument", "--profile", "--baud", "--version"})
+    for (const char* o : {"--screenshot", "--screen", "--sim", "--specimen", "--port", "--instrument", "--profile", "--baud", "--version"})
         EXPECT_TRUE(out.contains(QLatin1String(o))) << o;
     EXPECT_EQ(runHeadless({QStringLiteral("-h")}, &out), 0);
     EXPECT_EQ(runHeadless({QStringLiteral("--version")}, &out), 0);

@@ -81,7 +81,7 @@ std::unique_ptr<dev::jobs::ReadingSource> CalibrationScreen::makeSource(int axis
         dev::camera::Camera* camera = m_cameraSession ? m_cameraSession->camera() : nullptr;
         if (!camera) {
             *error = tr("Open a camera first, on the Scan or Jog screen's Camera tab, with the glass scale under it "
-                        "(on the simulator: the sim camera, started with --specimen line-scales).");
+                        "(on the simulator: the sim camera, with benchpilot started with --specimen line-scales).");
             return nullptr;
         }
         dev::camera::ScaleReadingOptions o;
