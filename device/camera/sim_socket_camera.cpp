@@ -116,8 +116,18 @@ void SimSocketCamera::close()
 {
     const bool was = m_open || m_opening;
     stopLive();
+    dropAll(m::make("camera.closed_during_capture", {m::verbatim("source", source().toStdString())}), false);
+    if (was)
+        emit closed();
+}
+
+void SimSocketCamera::dropAll(const m::Message& why, bool toRequestZero)
+{
     m_open = false;
     m_opening = false;
+    m_liveInFlight = false;
+    m_liveTimer.stop();
+    m_deadline.stop();
     if (m_socket) {
         m_socket->disconnect(this);
         m_socket->abort();
@@ -128,16 +138,13 @@ void SimSocketCamera::close()
     const auto waiting = std::move(m_waiting);
     m_asked.clear();
     m_waiting.clear();
-    m_liveInFlight = false;
-    m_deadline.stop();
-    const auto closedDuring = m::make("camera.closed_during_capture", {m::verbatim("source", source().toStdString())});
+    if (toRequestZero)
+        emit failed(0, m::Problem("", why));
     for (const auto& [wire, a] : asked)
         if (!a.live)
-            emit failed(a.requestId, m::Problem("", closedDuring));
+            emit failed(a.requestId, m::Problem("", why));
     for (const CaptureRequest& r : waiting)
-        emit failed(r.id, m::Problem("", closedDuring));
-    if (was)
-        emit closed();
+        emit failed(r.id, m::Problem("", why));
 }
 
 void SimSocketCamera::startLive()
@@ -286,28 +293,8 @@ void SimSocketCamera::goDead(const m::Message& why)
 {
     m_dead = why;
     const bool wasOpen = m_open;
-    m_open = false;
-    m_opening = false;
-    m_liveInFlight = false;
-    m_liveTimer.stop();
-    m_deadline.stop();
-    if (m_socket) {
-        m_socket->disconnect(this);
-        m_socket->abort();
-        m_socket->deleteLater();
-        m_socket = nullptr;
-    }
-    const auto asked = std::move(m_asked);
-    const auto waiting = std::move(m_waiting);
-    m_asked.clear();
-    m_waiting.clear();
     // The live view and the one who opened hear it once, on request 0; each capture on its own id.
-    emit failed(0, m::Problem("", why));
-    for (const auto& [wire, a] : asked)
-        if (!a.live)
-            emit failed(a.requestId, m::Problem("", why));
-    for (const CaptureRequest& r : waiting)
-        emit failed(r.id, m::Problem("", why));
+    dropAll(why, true);
     if (wasOpen)
         emit closed();
 }

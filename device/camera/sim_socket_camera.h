@@ -52,6 +52,9 @@ public:
     const SimWireHello& hello() const { return m_hello; }
 
 private:
+    /// Drops the socket and every capture asked, each failed with `why` (and request 0
+    /// first when `toRequestZero`: the live view and whoever opened).
+    void dropAll(const motion::msg::Message& why, bool toRequestZero);
     struct Asked {
         std::uint64_t requestId = 0;
         bool live = false;

@@ -34,6 +34,21 @@ using guitest::waitFor;
 
 namespace {
 
+/// X at 20, 50 and 80 mm, two cycles both ways, fast stops.
+motion::metrology::AxisTest smallXTest(const char* name = "gui-x")
+{
+    motion::metrology::AxisTest t;
+    t.name = name;
+    t.axis = "X";
+    t.targetsMm = {20, 50, 80};
+    t.cycles = 2;
+    t.feedMmS = 15;
+    t.overrunMm = 0.5;
+    t.dwellS = 0.05;
+    t.settle = {1, 0.05, 2};
+    return t;
+}
+
 class CalibrationScreenTest : public ::testing::Test {
 protected:
     void SetUp() override
@@ -64,19 +79,7 @@ protected:
         link->host().setTimeScale(25);
         return ok;
     }
-    static motion::metrology::AxisTest smallTest()
-    {
-        motion::metrology::AxisTest t;
-        t.name = "gui-x";
-        t.axis = "X";
-        t.targetsMm = {20, 50, 80};
-        t.cycles = 2;
-        t.feedMmS = 15;
-        t.overrunMm = 0.5;
-        t.dwellS = 0.05;
-        t.settle = {1, 0.05, 2};
-        return t;
-    }
+    static motion::metrology::AxisTest smallTest() { return smallXTest(); }
     template <class T>
     T* child(const char* name) { return screen->findChild<T*>(QLatin1String(name)); }
     /// Shown and not clipped away by a scroll area or the window's edge.
@@ -372,16 +375,7 @@ TEST(CalibrationCamera, TheGuisCameraReadsTheGlassScaleOnceOneIsOpen)
     QTemporaryDir dir;
     screen->setInstrument(1);
     screen->setOutputFolder(dir.path());
-    motion::metrology::AxisTest t;
-    t.name = "gui-camera";
-    t.axis = "X";
-    t.targetsMm = {20, 50, 80};
-    t.cycles = 2;
-    t.feedMmS = 15;
-    t.overrunMm = 0.5;
-    t.dwellS = 0.05;
-    t.settle = {1, 0.05, 2};
-    screen->form()->setTest(t);
+    screen->form()->setTest(smallXTest("gui-camera"));
     screen->setSource(QStringLiteral("camera"));
     QStringList said;
     QObject::connect(screen, &ui::CalibrationScreen::problem, [&](const QString& m) { said << m; });

@@ -261,6 +261,30 @@ protected:
 class SimulatedCameraScreens : public CameraScreens {
 protected:
     bool fakeCamera() const override { return false; }
+    /// The stage homed, the Scan screen showing a centre-and-size plan into `folder`, the
+    /// simulated camera open and asked for at each tile; nullptr if any of it failed.
+    ui::ScanScreen* cameraScan(motion::scan::Point2 centre, double widthMm, double heightMm, const QString& folder)
+    {
+        dev::Instrument* stage = w->stage()->instrument();
+        stage->home(0);
+        if (!waitFor([&] { return !stage->status().axes.isEmpty() && stage->status().axes[0].homed && stage->status().axes[1].homed
+                                  && !stage->status().anyMoving(); }, 60000)
+            || !w->showScreen(QStringLiteral("scan")))
+            return nullptr;
+        ui::ScanScreen* scan = w->scanScreen();
+        motion::scan::ScanPlan p;
+        p.region.kind = motion::scan::RegionKind::CentreSize;
+        p.region.centre = centre;
+        p.region.widthMm = widthMm;
+        p.region.heightMm = heightMm;
+        scan->setPlan(p);
+        scan->setOutputFolder(folder);
+        w->cameraSession()->open(QStringLiteral("sim"));
+        if (!waitFor([&] { return w->cameraSession()->isOpen(); }, 5000))
+            return nullptr;
+        scan->setTakesImages(true);
+        return scan;
+    }
 };
 
 } // namespace
@@ -451,23 +475,9 @@ TEST_F(SimulatedCameraScreens, TheSimulatedCameraShowsWhatIsUnderTheObjective)
 
 TEST_F(SimulatedCameraScreens, AScanFromTheScreenWritesAnImageForEachTile)
 {
-    dev::Instrument* stage = w->stage()->instrument();
-    stage->home(0);
-    ASSERT_TRUE(waitFor([&] { return !stage->status().axes.isEmpty() && stage->status().axes[0].homed && stage->status().axes[1].homed
-                                  && !stage->status().anyMoving(); }, 60000));
-    ASSERT_TRUE(w->showScreen(QStringLiteral("scan")));
-    ui::ScanScreen* scan = w->scanScreen();
-    motion::scan::ScanPlan p;
-    p.region.kind = motion::scan::RegionKind::CentreSize;
-    p.region.centre = {40, 40};
-    p.region.widthMm = 2.4;  // two 1.33 mm fields across, one down
-    p.region.heightMm = 1.0;
-    scan->setPlan(p);
     QTemporaryDir dir;
-    scan->setOutputFolder(dir.filePath(QStringLiteral("run")));
-    w->cameraSession()->open(QStringLiteral("sim"));
-    ASSERT_TRUE(waitFor([&] { return w->cameraSession()->isOpen(); }, 5000));
-    scan->setTakesImages(true);
+    ui::ScanScreen* scan = cameraScan({40, 40}, 2.4, 1.0, dir.filePath(QStringLiteral("run")));  // two 1.33 mm fields across, one down
+    ASSERT_TRUE(scan);
     const int tiles = int(scan->layout().tiles.size());
     ASSERT_GE(tiles, 2);
     ASSERT_TRUE(scan->run());
@@ -497,22 +507,9 @@ TEST_F(SimulatedCameraScreens, MosaicPictureForTheDocs)
 {
     if (qEnvironmentVariable("BP_GUI_SHOTS").isEmpty())
         GTEST_SKIP() << "only with BP_GUI_SHOTS=DIR";
-    dev::Instrument* stage = w->stage()->instrument();
-    stage->home(0);
-    ASSERT_TRUE(waitFor([&] { return !stage->status().axes.isEmpty() && stage->status().axes[0].homed && stage->status().axes[1].homed
-                                  && !stage->status().anyMoving(); }, 60000));
-    ASSERT_TRUE(w->showScreen(QStringLiteral("scan")));
-    ui::ScanScreen* scan = w->scanScreen();
-    motion::scan::ScanPlan p;
-    p.region.kind = motion::scan::RegionKind::CentreSize;
-    p.region.centre = {42, 31};
-    p.region.widthMm = p.region.heightMm = 3.4;
-    scan->setPlan(p);
     QTemporaryDir dir;
-    scan->setOutputFolder(dir.filePath(QStringLiteral("run")));
-    w->cameraSession()->open(QStringLiteral("sim"));
-    ASSERT_TRUE(waitFor([&] { return w->cameraSession()->isOpen(); }, 5000));
-    scan->setTakesImages(true);
+    ui::ScanScreen* scan = cameraScan({42, 31}, 3.4, 3.4, dir.filePath(QStringLiteral("run")));
+    ASSERT_TRUE(scan);
     ASSERT_TRUE(scan->run());
     ASSERT_TRUE(waitFor([&] { return scan->runner()->state() == dev::jobs::ScanRunner::State::Finished; }, 300000));
     scan->showTab(2);
