@@ -97,6 +97,29 @@ inline float bilinear(const float* t, int mask, int shift, std::int64_t u, std::
     return a + (b - a) * fv;
 }
 
+struct RowPair {
+    const float* r0;
+    const float* r1;
+};
+
+/// The two table rows a bilinear look-up at `v` reads.
+inline RowPair rowPair(const float* t, int mask, int shift, std::int64_t v)
+{
+    const int y0 = static_cast<int>(v >> kFixBits) & mask;
+    return {t + (static_cast<std::ptrdiff_t>(y0) << shift), t + (static_cast<std::ptrdiff_t>((y0 + 1) & mask) << shift)};
+}
+
+/// bilinear() with its rows and v weight found already: the same arithmetic, so the same value.
+inline float bilinearAlongRow(const RowPair& rows, float fv, int mask, std::int64_t u)
+{
+    const int x0 = static_cast<int>(u >> kFixBits) & mask;
+    const float fu = static_cast<float>(u & 0xFFFF) * kFixInv;
+    const int x1 = (x0 + 1) & mask;
+    const float a = rows.r0[x0] + (rows.r0[x1] - rows.r0[x0]) * fu;
+    const float b = rows.r1[x0] + (rows.r1[x1] - rows.r1[x0]) * fu;
+    return a + (b - a) * fv;
+}
+
 /// 0 inside, 1 outside, a linear ramp `width` wide centred on the edge at distance `edge`.
 inline float ramp(double distance, double edge, double width)
 {
@@ -218,6 +241,11 @@ void Specimen::slideRow(float* out, int n, double x0, double y0, double dx, doub
     const float* coarse = m_coarse.data();
     constexpr int kFineShift = 10, kCoarseShift = 8;
     static_assert((1 << kFineShift) == kFineSize && (1 << kCoarseShift) == kCoarseSize, "shift matches the table size");
+    // A row along the table's rows (no camera rotation, the usual case) reads the same
+    // two table rows throughout: their pointers and the v weight are found once.
+    const bool alongRow1 = dv1 == 0 && dv2 == 0;
+    const RowPair row1 = rowPair(fine, kFineSize - 1, kFineShift, v1), row2 = rowPair(fineT, kFineSize - 1, kFineShift, v2);
+    const float fv1 = static_cast<float>(v1 & 0xFFFF) * kFixInv, fv2 = static_cast<float>(v2 & 0xFFFF) * kFixInv;
     float densityA = bilinear(coarse, kCoarseSize - 1, kCoarseShift, uc, vc);
     for (int k0 = 0; k0 < n; k0 += kCoarseEvery) {
         uc += duc, vc += dvc;
@@ -226,7 +254,8 @@ void Specimen::slideRow(float* out, int n, double x0, double y0, double dx, doub
         const int end = std::min(n, k0 + kCoarseEvery);
         float density = densityA;
         for (int k = k0; k < end; ++k) {
-            const float a = 0.5f * (bilinear(fine, kFineSize - 1, kFineShift, u1, v1) + bilinear(fineT, kFineSize - 1, kFineShift, u2, v2));
+            const float a = 0.5f * (alongRow1 ? bilinearAlongRow(row1, fv1, kFineSize - 1, u1) + bilinearAlongRow(row2, fv2, kFineSize - 1, u2)
+                                              : bilinear(fine, kFineSize - 1, kFineShift, u1, v1) + bilinear(fineT, kFineSize - 1, kFineShift, u2, v2));
             float d = density;
             if (glassNear) {
                 const double r = std::hypot(x0 + dx * k - kSlideGlassCentreXMm, y0 + dy * k - kSlideGlassCentreYMm);
