@@ -133,7 +133,9 @@ TEST_F(CalibrationImport, ACaptureOfAnotherTestIsRefusedNamingWhereItDiffers)
     screen->form()->setTest(other);
     pump(20);
     EXPECT_FALSE(screen->importCapture(sequence, capture));
-    EXPECT_TRUE(problems.last().contains(QStringLiteral("stop 2 is at 20.590 mm, approached up in cycle 1"))) << problems.last().toStdString();
+    // The sequence's second stop is the one named: where it is and how it was approached.
+    EXPECT_TRUE(problems.last().contains(QStringLiteral("the sequence's stop %1 is at 20.590 mm, approached up in cycle 1").arg(2)))
+        << problems.last().toStdString();
     EXPECT_FALSE(screen->latest());
     EXPECT_FALSE(QFileInfo::exists(dir.filePath(QStringLiteral("stage-x.readings.csv"))));
 }

@@ -243,6 +243,19 @@ protected:
         translators.setLanguage(QStringLiteral("en"));
     }
     virtual bool fakeCamera() const { return true; }
+    /// The Scan screen's Camera tab with "sim" typed and opened, as an operator would;
+    /// nullptr if it did not open within `ms`.
+    ui::CameraPanel* openTypedSimOnScan(int ms)
+    {
+        if (!w->showScreen(QStringLiteral("scan")))
+            return nullptr;
+        ui::ScanScreen* scan = w->scanScreen();
+        scan->showTab(1);
+        ui::CameraPanel* panel = scan->cameraPanel();
+        panel->sourceField()->setCurrentText(QStringLiteral("sim"));
+        panel->openTyped();
+        return waitFor([&] { return w->cameraSession()->isOpen(); }, ms) ? panel : nullptr;
+    }
     void chooseLanguage(const QString& code)
     {
         for (QAction* a : w->findChildren<QAction*>())
@@ -408,13 +421,9 @@ TEST_F(CameraScreens, TheScanScreensKeysSurviveALanguageSwitch)
 
 TEST_F(CameraScreens, TheCameraKeepsItsStateAcrossALanguageSwitch)
 {
-    ASSERT_TRUE(w->showScreen(QStringLiteral("scan")));
+    ui::CameraPanel* panel = openTypedSimOnScan(2000);
+    ASSERT_TRUE(panel);
     ui::ScanScreen* scan = w->scanScreen();
-    scan->showTab(1);
-    ui::CameraPanel* panel = scan->cameraPanel();
-    panel->sourceField()->setCurrentText(QStringLiteral("sim"));
-    panel->openTyped();
-    ASSERT_TRUE(waitFor([&] { return w->cameraSession()->isOpen(); }, 2000));
     auto* cam = static_cast<FakeCamera*>(w->cameraSession()->camera());
     cam->push(guitest::texture(640, 480, 0, 3));
     ASSERT_TRUE(waitFor([&] { return panel->liveView()->hasPicture(); }, 5000));
@@ -455,13 +464,8 @@ TEST_F(CameraScreens, TheCameraKeepsItsStateAcrossALanguageSwitch)
 
 TEST_F(SimulatedCameraScreens, TheSimulatedCameraShowsWhatIsUnderTheObjective)
 {
-    ASSERT_TRUE(w->showScreen(QStringLiteral("scan")));
-    ui::ScanScreen* scan = w->scanScreen();
-    scan->showTab(1);
-    ui::CameraPanel* panel = scan->cameraPanel();
-    panel->sourceField()->setCurrentText(QStringLiteral("sim"));
-    panel->openTyped();
-    ASSERT_TRUE(waitFor([&] { return w->cameraSession()->isOpen(); }, 5000));
+    ui::CameraPanel* panel = openTypedSimOnScan(5000);
+    ASSERT_TRUE(panel);
     ASSERT_TRUE(waitFor([&] { return panel->liveView()->hasPicture(); }, 20000)) << "no live frame from the simulated camera";
     const ui::ProcessedFrame& f = panel->liveView()->shown();
     EXPECT_EQ(f.frameSize, QSize(2048, 2048));
@@ -535,13 +539,8 @@ TEST_F(SimulatedCameraScreens, PictureForTheDocs)
                                   && !stage->status().anyMoving(); }, 60000));
     stage->move({{0, 42.5}, {1, 31.25}}, false);
     ASSERT_TRUE(waitFor([&] { return !stage->status().anyMoving() && std::abs(stage->status().axes[0].measured - 42.5) < 0.01; }, 30000));
-    ASSERT_TRUE(w->showScreen(QStringLiteral("scan")));
-    ui::ScanScreen* scan = w->scanScreen();
-    scan->showTab(1);
-    ui::CameraPanel* panel = scan->cameraPanel();
-    panel->sourceField()->setCurrentText(QStringLiteral("sim"));
-    panel->openTyped();
-    ASSERT_TRUE(waitFor([&] { return w->cameraSession()->isOpen(); }, 5000));
+    ui::CameraPanel* panel = openTypedSimOnScan(5000);
+    ASSERT_TRUE(panel);
     ASSERT_TRUE(waitFor([&] { return panel->liveView()->focusHistory().size() >= 20; }, 60000));
     guitest::pump(200);
     guitest::keepPicture(w.get(), QStringLiteral("camera-live-view.png"));
