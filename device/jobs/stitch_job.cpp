@@ -98,10 +98,20 @@ bool StitchJob::start(const StitchRequest& request, motion::msg::Message* error)
     const QString mosaic = QString::fromStdString(so.mosaicPath);
     // A thread of its own, detached: the job object may go (its window closed) while a
     // folder stitches; the result is then dropped, and the files are whole either way.
-    std::thread([shared, tiles = std::move(tiles), so = std::move(so), folder, mosaic] {
+    const QString flatPath = request.flatPath;
+    const double dark = request.darkLevel;
+    std::thread([shared, tiles = std::move(tiles), so = std::move(so), folder, mosaic, flatPath, dark]() mutable {
         QElapsedTimer clock;
         clock.start();
-        auto result = imaging::stitch(tiles, so);
+        auto result = [&]() -> motion::msg::Checked<imaging::StitchResult> {
+            if (!flatPath.isEmpty()) {
+                auto flat = imaging::FlatField::fromFile(flatPath.toStdString(), dark, QFileInfo(flatPath).fileName().toStdString());
+                if (!flat)
+                    return motion::msg::Checked<imaging::StitchResult>::refused(flat.problems());
+                so.flatField = std::make_shared<const imaging::FlatField>(flat.take());
+            }
+            return imaging::stitch(tiles, so);
+        }();
         QStringList written;
         motion::msg::Problems problems = result.problems();
         if (result) {
