@@ -1,6 +1,7 @@
 #include "widgets/scan/stitch_panel.h"
 
 #include "widgets/common/button_key.h"
+#include "widgets/scan/mosaic_viewer.h"
 #include "widgets/scan/stitch_quality_map.h"
 #include "widgets/wording/wording.h"
 
@@ -12,6 +13,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSaveFile>
+#include <QSplitter>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -61,7 +63,14 @@ StitchPanel::StitchPanel(Source source, QWidget* parent) : QWidget(parent), m_so
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addWidget(m_summary);
     m_map = new StitchQualityMap;
-    layout->addWidget(m_map, 1);
+    m_viewer = new MosaicViewer;
+    m_viewer->setObjectName(QStringLiteral("mosaicViewer"));
+    auto* views = new QSplitter(Qt::Vertical);
+    views->addWidget(m_viewer);
+    views->addWidget(m_map);
+    views->setStretchFactor(0, 3);
+    views->setStretchFactor(1, 1);
+    layout->addWidget(views, 1);
     m_tile = new QLabel;
     m_tile->setObjectName(QStringLiteral("stitchTile"));
     m_tile->setWordWrap(true);
@@ -76,6 +85,8 @@ StitchPanel::StitchPanel(Source source, QWidget* parent) : QWidget(parent), m_so
         emit problem(tr("Stitching %1 failed: %2").arg(QDir::toNativeSeparators(m_folder), words::problems(problems).join(QLatin1Char(' '))));
     });
     connect(m_map, &StitchQualityMap::tileClicked, this, &StitchPanel::showTile);
+    connect(m_viewer, &MosaicViewer::problem, this, &StitchPanel::problem);
+    connect(m_viewer, &MosaicViewer::notice, this, &StitchPanel::notice);
     retranslateUi();
     updateUi();
 }
@@ -91,7 +102,9 @@ bool StitchPanel::stitch()
         return false;
     }
     m_folder = request.folder;
+    m_camera = request.plan.camera;
     m_map->clear();
+    m_viewer->clear();
     m_summary->clear();
     m_tile->clear();
     updateUi();
@@ -101,6 +114,7 @@ bool StitchPanel::stitch()
 void StitchPanel::setScanRunning(bool running)
 {
     m_scanRunning = running;
+    m_viewer->setScanRunning(running);
     updateUi();
 }
 
@@ -144,6 +158,8 @@ void StitchPanel::onFinished()
     if (!r)
         return;
     m_map->setResult(*r);
+    if (!m_job->written().isEmpty())
+        m_viewer->showStitch(*r, m_camera, m_job->written().front());
     const QStringList lines = summaryLines();
     m_summary->setText(lines.join(QLatin1Char('\n')));
     QStringList written = m_job->written();
