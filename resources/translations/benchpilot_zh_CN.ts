@@ -5683,6 +5683,45 @@ Keep that log aside and start this test afresh?</source>
     </message>
 </context>
 <context>
+    <name>ui::MosaicFolder</name>
+    <message>
+        <source>%1 holds no stitched mosaic (no .stitch.json report): stitch it first.</source>
+        <translation>%1 中没有拼接好的拼接图（没有 .stitch.json 报告）：请先拼接。</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1, line %2, column %3: %4</source>
+        <translation>%1，第 %2 行，第 %3 列：%4</translation>
+    </message>
+    <message>
+        <source>%1 is not a stitch report BenchPilot can show: %2</source>
+        <translation>%1 不是 BenchPilot 能显示的拼接报告：%2</translation>
+    </message>
+    <message>
+        <source>it names no mosaic file in the folder</source>
+        <translation>报告未指明文件夹中的拼接图文件</translation>
+    </message>
+    <message>
+        <source>its mosaic does not say where its top-left pixel was on the stage</source>
+        <translation>其拼接图未记录左上角像素在载物台上的位置</translation>
+    </message>
+    <message>
+        <source>it lists no tiles</source>
+        <translation>报告中没有图块</translation>
+    </message>
+    <message>
+        <source>tile %1 has no file, stage_px or registered_px</source>
+        <translation>图块 %1 缺少 file、stage_px 或 registered_px</translation>
+    </message>
+    <message>
+        <source>The tile size comes from the tiles: %1</source>
+        <translation>图块尺寸取自图块文件：%1</translation>
+    </message>
+</context>
+<context>
     <name>ui::MosaicViewer</name>
     <message>
         <source>The mosaic %1 cannot be shown: %2</source>
@@ -5767,6 +5806,14 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Drag or use the arrow keys to pan; double-click to move the stage to that point</source>
         <translation>拖动或用方向键平移；双击将载物台移到该点</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>打开</translation>
+    </message>
+    <message>
+        <source>Show the mosaic stitched earlier in the output folder: its .stitch.json report and the mosaic it names (O)</source>
+        <translation>显示输出文件夹中先前拼接的拼接图：其 .stitch.json 报告及报告所指的拼接图（O）</translation>
     </message>
 </context>
 <context>

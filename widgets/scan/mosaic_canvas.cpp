@@ -18,6 +18,7 @@ namespace {
 // About 32 MB of 8-bit blocks of 256 × 256: a full-screen view at any level is a few
 // dozen, so panning back and forth over a field or two reads nothing again.
 constexpr int kCacheBlocks = 512;
+constexpr double kMaxArrowScale = 100;
 constexpr double kMaxZoom = 16;  ///< screen pixels per mosaic pixel, at most
 constexpr int kFitMarginPx = 8;
 /// The cache's unit, in pixels of a level: the writer's TIFF tile, so one block is one read.
@@ -65,12 +66,14 @@ void MosaicCanvas::setMosaic(std::shared_ptr<imaging::PyramidReader> reader, con
             m_high = std::max<quint16>(v[hi], quint16(m_low + 1));
         }
     }
-    // The arrows: the longest correction drawn half a tile long (as on the quality map).
+    // The arrows: the longest correction drawn half a tile long (as on the quality map),
+    // but magnified at most kMaxArrowScale times, so corrections of a hundredth of a pixel
+    // do not look like a badly placed mosaic over the picture itself.
     double longest = 0;
     for (const auto& t : m_frame.tiles())
         longest = std::max(longest, t.correctionPx.norm());
     const double halfTile = 0.5 * std::min(m_frame.tileWidthPx(), m_frame.tileHeightPx());
-    m_arrowScale = longest > 1e-6 ? halfTile / longest : 1;
+    m_arrowScale = longest > 1e-6 ? std::min(kMaxArrowScale, halfTile / longest) : 1;
     fit();
 }
 

@@ -3,7 +3,8 @@
 // the part in view from the pyramid level that matches the zoom (the coarsest whose
 // pixel is no larger than a screen pixel), in blocks kept in a bounded cache; over it
 // the tiles' outlines, the quality overlay (each tile's correction from its stage
-// position as an arrow, magnified so the longest is half a tile; tiles placed by the
+// position as an arrow, magnified so the longest is half a tile but never more than
+// 100 times; tiles placed by the
 // stage hatched orange), the stage's field of view where the stage is now, and a scale
 // bar. Wheel zooms about the cursor, a drag pans, the arrow keys pan by a tenth of the
 // view, a double-click asks to go there (doubleClicked). Reads run on the GUI thread:

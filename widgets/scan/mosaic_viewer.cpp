@@ -38,6 +38,7 @@ MosaicViewer::MosaicViewer(QWidget* parent) : QWidget(parent), m_canvas(new Mosa
         addAction(a);
         return a;
     };
+    m_open = makeAction({QKeySequence(Qt::Key_O)}, false);
     m_fit = makeAction({QKeySequence(Qt::Key_F), QKeySequence(Qt::Key_Home)}, false);
     m_zoomIn = makeAction({QKeySequence(Qt::Key_Plus), QKeySequence(Qt::Key_Equal)}, false);
     m_zoomOut = makeAction({QKeySequence(Qt::Key_Minus)}, false);
@@ -51,6 +52,7 @@ MosaicViewer::MosaicViewer(QWidget* parent) : QWidget(parent), m_canvas(new Mosa
         bar->addWidget(b);
         return b;
     };
+    m_openButton = button(m_open, "mosaicOpen");
     m_fitButton = button(m_fit, "mosaicFit");
     m_inButton = button(m_zoomIn, "mosaicZoomIn");
     m_outButton = button(m_zoomOut, "mosaicZoomOut");
@@ -63,6 +65,7 @@ MosaicViewer::MosaicViewer(QWidget* parent) : QWidget(parent), m_canvas(new Mosa
     layout->addLayout(bar);
     layout->addWidget(m_canvas, 1);
 
+    connect(m_open, &QAction::triggered, this, &MosaicViewer::openRequested);
     connect(m_fit, &QAction::triggered, m_canvas, &MosaicCanvas::fit);
     connect(m_zoomIn, &QAction::triggered, m_canvas, [this] { m_canvas->zoomBy(1.5); });
     connect(m_zoomOut, &QAction::triggered, m_canvas, [this] { m_canvas->zoomBy(1 / 1.5); });
@@ -195,6 +198,8 @@ void MosaicViewer::updateStatus()
 
 void MosaicViewer::retranslateUi()
 {
+    m_open->setText(tr("Open"));
+    m_open->setToolTip(tr("Show the mosaic stitched earlier in the output folder: its .stitch.json report and the mosaic it names (O)"));
     m_fit->setText(tr("Fit"));
     m_fit->setToolTip(tr("Show the whole mosaic (F)"));
     m_zoomIn->setText(tr("+"));

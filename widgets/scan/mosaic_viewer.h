@@ -54,6 +54,8 @@ public:
     QString statusText() const;
 
 signals:
+    /// Open (O): show the mosaic already stitched in the output folder.
+    void openRequested();
     void problem(const QString& message);
     void notice(const QString& message);
 
@@ -66,8 +68,8 @@ private:
     void updateStage();
 
     MosaicCanvas* m_canvas;
-    QAction *m_fit, *m_zoomIn, *m_zoomOut, *m_tiles, *m_quality;
-    QToolButton *m_fitButton, *m_inButton, *m_outButton, *m_tilesButton, *m_qualityButton;
+    QAction *m_open, *m_fit, *m_zoomIn, *m_zoomOut, *m_tiles, *m_quality;
+    QToolButton *m_openButton, *m_fitButton, *m_inButton, *m_outButton, *m_tilesButton, *m_qualityButton;
     QLabel* m_status;
     dev::Instrument* m_stage = nullptr;
     Confirm m_confirm;

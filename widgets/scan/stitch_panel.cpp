@@ -1,6 +1,7 @@
 #include "widgets/scan/stitch_panel.h"
 
 #include "widgets/common/button_key.h"
+#include "widgets/scan/mosaic_folder.h"
 #include "widgets/scan/mosaic_viewer.h"
 #include "widgets/scan/stitch_quality_map.h"
 #include "widgets/wording/wording.h"
@@ -65,7 +66,7 @@ StitchPanel::StitchPanel(Source source, QWidget* parent) : QWidget(parent), m_so
     m_map = new StitchQualityMap;
     m_viewer = new MosaicViewer;
     m_viewer->setObjectName(QStringLiteral("mosaicViewer"));
-    auto* views = new QSplitter(Qt::Vertical);
+    auto* views = new QSplitter(Qt::Horizontal);  // the tab is wider than it is tall
     views->addWidget(m_viewer);
     views->addWidget(m_map);
     views->setStretchFactor(0, 3);
@@ -87,6 +88,18 @@ StitchPanel::StitchPanel(Source source, QWidget* parent) : QWidget(parent), m_so
     connect(m_map, &StitchQualityMap::tileClicked, this, &StitchPanel::showTile);
     connect(m_viewer, &MosaicViewer::problem, this, &StitchPanel::problem);
     connect(m_viewer, &MosaicViewer::notice, this, &StitchPanel::notice);
+    connect(m_viewer, &MosaicViewer::openRequested, this, [this] {
+        const dev::jobs::StitchRequest request = m_source();
+        QString error;
+        const auto shown = loadStitchedFolder(request.folder, request.plan.camera, &error);
+        if (!shown) {
+            emit problem(error);
+            return;
+        }
+        m_camera = request.plan.camera;
+        m_map->setResult(shown->result);
+        m_viewer->showStitch(shown->result, m_camera, shown->mosaicPath);
+    });
     retranslateUi();
     updateUi();
 }
