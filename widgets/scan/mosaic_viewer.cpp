@@ -61,9 +61,13 @@ MosaicViewer::MosaicViewer(QWidget* parent) : QWidget(parent), m_canvas(new Mosa
     m_status = new QLabel;
     m_status->setObjectName(QStringLiteral("mosaicStatus"));
     m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    bar->addWidget(m_status, 1);
+    // Its text changes as the mouse moves: it must never widen the screen.
+    m_status->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_status->setMinimumWidth(0);
+    bar->addStretch(1);
     layout->addLayout(bar);
     layout->addWidget(m_canvas, 1);
+    layout->addWidget(m_status);
 
     connect(m_open, &QAction::triggered, this, &MosaicViewer::openRequested);
     connect(m_fit, &QAction::triggered, m_canvas, &MosaicCanvas::fit);
