@@ -69,6 +69,11 @@ void MosaicCanvas::setMosaic(std::shared_ptr<imaging::PyramidReader> reader, con
             m_high = std::max<quint16>(v[hi], quint16(m_low + 1));
         }
     }
+    // Samples to grey once per mosaic, not once per pixel.
+    m_lut.resize(65536);
+    const double span = double(m_high - m_low);
+    for (std::size_t v = 0; v < m_lut.size(); ++v)
+        m_lut[v] = static_cast<uchar>(std::clamp((double(v) - m_low) * 255.0 / span + 0.5, 0.0, 255.0));
     // The arrows: the longest correction drawn half a tile long (as on the quality map),
     // but magnified at most kMaxArrowScale times, so corrections of a hundredth of a pixel
     // do not look like a badly placed mosaic over the picture itself.
@@ -194,12 +199,11 @@ const QImage* MosaicCanvas::block(int level, int bx, int by)
         return nullptr;
     }
     auto* image = new QImage(px->width, px->height, QImage::Format_Grayscale8);
-    const double span = double(m_high - m_low);
     for (int y = 0; y < px->height; ++y) {
         const std::uint16_t* src = px->row(y);
         uchar* dst = image->scanLine(y);
         for (int x = 0; x < px->width; ++x)
-            dst[x] = static_cast<uchar>(std::clamp((double(src[x]) - m_low) * 255.0 / span + 0.5, 0.0, 255.0));
+            dst[x] = m_lut[src[x]];
     }
     m_cache.insert(key, image, 1);
     return m_cache.object(key);

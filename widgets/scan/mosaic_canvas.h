@@ -20,6 +20,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace ui {
 
@@ -100,6 +101,7 @@ private:
     std::optional<QPoint> m_dragFrom;
     long m_blocksRead = 0;
     quint16 m_low = 0, m_high = 65535;  ///< the display stretch, from the smallest level
+    std::vector<uchar> m_lut;           ///< sample → grey for that stretch
     double m_arrowScale = 1;
 };
 
