@@ -166,8 +166,13 @@ bool MosaicViewer::goTo(const QPointF& mosaicPx)
         return axis < limits.size() && limits[axis].max > limits[axis].min && (v < limits[axis].min || v > limits[axis].max);
     };
     if (outside(ix, target.x()) || outside(iy, target.y())) {
+        // An axis the device gave no limits for is shown with its travel.
+        auto range = [&](int axis) {
+            const auto& d = m_stage->identity().axes[axis];
+            return axis < limits.size() ? std::pair(limits[axis].min, limits[axis].max) : std::pair(d.travelMin, d.travelMax);
+        };
         emit problem(tr("%1 is outside the stage's soft limits (X %2 to %3 mm, Y %4 to %5 mm): the stage stays where it is.")
-                         .arg(where, mm3(limits[ix].min), mm3(limits[ix].max), mm3(limits[iy].min), mm3(limits[iy].max)));
+                         .arg(where, mm3(range(ix).first), mm3(range(ix).second), mm3(range(iy).first), mm3(range(iy).second)));
         return false;
     }
     const double far = std::hypot(target.x() - axes[ix].commanded, target.y() - axes[iy].commanded);
