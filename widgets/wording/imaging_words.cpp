@@ -15,6 +15,8 @@ const Row kRows[] = {
     {"imaging.tiff.damaged", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the image is damaged or cut short (%1)", "imaging.tiff.damaged"), "reason"},
     {"imaging.tiff.bad_size", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the image is %1 × %2 pixels: a tile must be from 1 to 65536 pixels each way", "imaging.tiff.bad_size"), "width,height"},
     {"imaging.tiff.unsupported", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the image has %2 samples of %1 bits a pixel: tiles must be 8- or 16-bit grey, or 8-bit RGB", "imaging.tiff.unsupported"), "bits,samples"},
+    {"imaging.pyramid.unsupported", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the mosaic has %2 samples of %1 bits a pixel: a mosaic to view must be 8- or 16-bit grey", "imaging.pyramid.unsupported"), "bits,samples"},
+    {"imaging.pyramid.bad_level", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "level %1 of the mosaic's pyramid cannot be read (%2)", "imaging.pyramid.bad_level"), "level,reason"},
     {"imaging.tiles.none", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "there are no tiles to stitch", "imaging.tiles.none")},
     {"imaging.tiles.mixed_size", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "this tile is %1 × %2 pixels but %3 is %4 × %5: every tile of a mosaic must be the same size", "imaging.tiles.mixed_size"), "width,height,first,first_width,first_height"},
     {"imaging.tiles.mixed_kind", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "this tile is %1 but %2 is %3: every tile of a mosaic must be of one kind (grey8, grey16 or rgb8)", "imaging.tiles.mixed_kind"), "kind,first,first_kind"},
