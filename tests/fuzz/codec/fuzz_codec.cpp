@@ -33,6 +33,7 @@
 #include "device/protocol/cobs.h"
 #include "device/protocol/crc16.h"
 #include "device/protocol/frame_codec.h"
+#include "device/protocol/messages_arch.h"
 #include "device/protocol/messages.h"
 #include "device/protocol/messages_compensation.h"
 #include "device/protocol/messages_compensation_2d.h"
@@ -187,6 +188,7 @@ void checkAllDecoders(const Bytes& p)
     checkDecoder(p, &dev::proto::decodeStatusReply, "decodeStatusReply");
     checkDecoder(p, &dev::proto::decodeHomeRequest, "decodeHomeRequest");
     checkDecoder(p, &dev::proto::decodeMoveRequest, "decodeMoveRequest");
+    checkDecoder(p, &dev::proto::decodeArchMoveRequest, "decodeArchMoveRequest");
     checkDecoder(p, &dev::proto::decodeJogStepRequest, "decodeJogStepRequest");
     checkDecoder(p, &dev::proto::decodeAxisMaskRequest, "decodeAxisMaskRequest");
     checkDecoder(p, &dev::proto::decodeLimitsReply, "decodeLimitsReply");
