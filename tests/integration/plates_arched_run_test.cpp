@@ -146,6 +146,8 @@ TEST(PlateArchedRun, DistributingInSnakeRowsWithArchesAgainstTodaysRounds)
     EXPECT_EQ(q.wellsDone, 96);
     EXPECT_NEAR(t.plungerEndUl, 0, 1e-6);
     EXPECT_NEAR(q.plungerEndUl, 0, 1e-6) << "each round's disposal volume went back: nothing left in the syringe";
+    const TipRun l = runStepped(quick, true);
+    std::printf("the same distributed in arched legs: %.1f s (planned %.1f)\n", l.deviceS, l.plannedS);
     const double saved = 1 - q.deviceS / t.deviceS;
     std::printf("96 x 50 uL from a trough on the machine's clock: rounds as written straight %.1f s (planned %.1f, bound %.1f); "
                 "distribute, snake rows, arched %.1f s (planned %.1f, bound %.1f; %.1f %% less; run/bound %.2f)\n",
@@ -153,6 +155,9 @@ TEST(PlateArchedRun, DistributingInSnakeRowsWithArchesAgainstTodaysRounds)
     RecordProperty("today_s", std::to_string(t.deviceS));
     RecordProperty("distribute_s", std::to_string(q.deviceS));
     // Today's transfer already draws once per round: distributing adds the disposal volume's
-    // round and returns, so what is saved comes from the order and the arches.
-    EXPECT_GT(saved, 0.0);
+    // round and returns, so what is saved comes from the order and the blended arches. With
+    // the same ops (every dispense at the well's depth, the plunger never moving with the
+    // tip) even the bound is only 29 % under today's time.
+    EXPECT_GT(saved, 0.10);
+    EXPECT_NEAR(q.deviceS, q.plannedS, 0.02 * q.plannedS) << "the plan times the blended arches as the machine runs them";
 }

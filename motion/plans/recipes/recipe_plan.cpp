@@ -445,6 +445,8 @@ void Planner::goIntoBlended(PlanOp& op, const Place& pl)
     const auto down = moveProfile({{&m_c.deck.z, pl.depthZMm - top}}, m.zSpeed);
     const motion::ArchTiming t = motion::archTiming(rise ? &*rise : nullptr, xy ? &*xy : nullptr, down ? &*down : nullptr, depart, into);
     m.durationS = overheadFor(t.durationS);
+    if (depart > 0 && std::hypot(pl.at.x - m_x, pl.at.y - m_y) < kEps && std::abs(pl.depthZMm - m_z) < kEps)
+        m.durationS = 0;  // back into the well the tip is still down in (a disposal returned, then drawn): it stays
     m_x = pl.at.x;
     m_y = pl.at.y;
     m_z = pl.depthZMm;
