@@ -368,7 +368,7 @@ private:
 bool knownRequest(std::uint8_t t)
 {
     return (t >= 0x01 && t <= 0x0A) || (t >= 0x20 && t <= 0x22) || dev::proto::tuningTypeName(t) != nullptr
-        || (t >= 0x10 && t <= 0x12) || (t >= 0x24 && t <= 0x26) || dev::proto::compensationTypeName(t) != nullptr
+        || (t >= 0x10 && t <= 0x13) || (t >= 0x24 && t <= 0x26) || dev::proto::compensationTypeName(t) != nullptr
         || dev::proto::compensation2dTypeName(t) != nullptr;
 }
 
