@@ -10,6 +10,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
+#include <string>
 
 using namespace itest;
 using namespace platestest;
@@ -27,6 +29,9 @@ struct TipRun {
     bool finished = false;
     double plungerEndUl = 0;
     int wellsDone = 0;  ///< "done" lines of the run log for plate wells
+    /// The plunger's travel out (µL) while the tip's true point was down inside each well of
+    /// the plate (its opening, below its top): what each well received, from the machine.
+    std::map<std::string, double> pushedIntoUl;
 };
 
 /// Runs `recipe` with the simulator's clock stepped 2 ms at a time, sampling the tip's
@@ -63,11 +68,19 @@ TipRun runStepped(const motion::plates::Recipe& recipe, bool legs = false)
         ADD_FAILURE() << error;
         return out;
     }
+    const double topZ = 75 - lw.heightMm;
+    double plungerBefore = m.workPointLogical(3);
     for (int step = 0; step < 200000; ++step) {
         host.advance(0.002);
         for (int k = 0; k < 3; ++k)
             QCoreApplication::processEvents();
         const double x = m.workPointLogical(0), y = m.workPointLogical(1), z = m.workPointLogical(2);
+        const double plunger = m.workPointLogical(3);
+        if (plunger < plungerBefore && z > topZ)
+            for (const motion::plates::Well& w : lw.wells)
+                if (std::hypot(x - ox - w.xMm, y - oy - w.yMm) < w.diameterMm / 2)
+                    out.pushedIntoUl[motion::plates::wellName(w.id)] += plungerBefore - plunger;
+        plungerBefore = plunger;
         ++out.samples;
         const double px = x - ox, py = y - oy;
         if (px >= 0 && py >= 0 && px <= lw.lengthMm && py <= lw.widthMm) {
@@ -146,6 +159,12 @@ TEST(PlateArchedRun, DistributingInSnakeRowsWithArchesAgainstTodaysRounds)
     EXPECT_EQ(q.wellsDone, 96);
     EXPECT_NEAR(t.plungerEndUl, 0, 1e-6);
     EXPECT_NEAR(q.plungerEndUl, 0, 1e-6) << "each round's disposal volume went back: nothing left in the syringe";
+    // What the plunger pushed out while the tip was in each well: 50 µL, either way.
+    for (const TipRun* run : {&t, &q}) {
+        EXPECT_EQ(run->pushedIntoUl.size(), 96u);
+        for (const auto& [well, ul] : run->pushedIntoUl)
+            EXPECT_NEAR(ul, 50, 0.01) << well;
+    }
     const TipRun l = runStepped(quick, true);
     std::printf("the same distributed in arched legs: %.1f s (planned %.1f)\n", l.deviceS, l.plannedS);
     const double saved = 1 - q.deviceS / t.deviceS;
