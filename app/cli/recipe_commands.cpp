@@ -41,12 +41,19 @@ QJsonObject moveJson(const motion::plates::MachineMove& m)
         o.insert(QStringLiteral("y_mm"), r6(m.yMm));
         if (m.withZ)
             o.insert(QStringLiteral("z_mm"), r6(m.zMm));  // arched: Z moves there at the same time
+        if (m.arch) {  // one blended move: up to the clearance, across, down
+            o.insert(QStringLiteral("clear_z_mm"), r6(m.clearZMm));
+            o.insert(QStringLiteral("depart_mm"), r6(m.departMm));
+            o.insert(QStringLiteral("approach_mm"), r6(m.approachMm));
+        }
         break;
     case motion::plates::MoveKind::Pump: o.insert(QStringLiteral("pump_ul"), r6(m.pumpDeltaUl)); break;
     case motion::plates::MoveKind::Dwell: o.insert(QStringLiteral("seconds"), m.seconds); break;
     }
     if (m.speed > 0)
         o.insert(QStringLiteral("speed"), m.speed);
+    if (m.deferred)
+        o.insert(QStringLiteral("deferred"), true);  // the next op's arched move takes the tip up
     o.insert(QStringLiteral("duration_s"), r6(m.durationS));
     return o;
 }

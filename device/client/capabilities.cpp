@@ -2,14 +2,14 @@
 
 namespace dev {
 
-const std::array<Capability, 17>& allCapabilities()
+const std::array<Capability, 18>& allCapabilities()
 {
-    static const std::array<Capability, 17> all = {
+    static const std::array<Capability, 18> all = {
         Capability::Homing,        Capability::SetZero,       Capability::MeasuredPosition, Capability::ClosedLoop,
         Capability::Telemetry,     Capability::VelocityJog,   Capability::StopsOnHostLoss,  Capability::PathQueue,
         Capability::PathZFollow,   Capability::CoupledXyThenZ, Capability::SoftLimits,      Capability::PidGains,
         Capability::TuningTests,   Capability::Pump,          Capability::TriggerOutput,    Capability::MachineLimits,
-        Capability::Compensation,
+        Capability::Compensation,  Capability::ArchedMove,
     };
     return all;
 }
@@ -34,6 +34,7 @@ std::string capabilityKey(Capability c)
     case Capability::TriggerOutput: return "trigger_output";
     case Capability::MachineLimits: return "machine_limits";
     case Capability::Compensation: return "compensation";
+    case Capability::ArchedMove: return "arched_move";
     }
     return "unknown";
 }

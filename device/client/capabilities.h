@@ -30,11 +30,12 @@ enum class Capability : quint32 {
     TriggerOutput = 1u << 14,    ///< Instrument::pulseTrigger(): an output a camera is wired to
     MachineLimits = 1u << 15,    ///< the device reported its planner's acceleration and jerk
     Compensation = 1u << 16,     ///< Instrument::compensation(): axis error compensation kept and applied on the device
+    ArchedMove = 1u << 17,       ///< Instrument::archMove(): Z up, XY across, Z down blended into one move
 };
 Q_DECLARE_FLAGS(Capabilities, Capability)
 
 /// Every capability, in a fixed order (for listings).
-const std::array<Capability, 17>& allCapabilities();
+const std::array<Capability, 18>& allCapabilities();
 /// Stable lower-case key: "pid_gains". JSON output and message ids use it.
 std::string capabilityKey(Capability c);
 

@@ -42,6 +42,11 @@ void Instrument::unlock(Callback done)
     refuse(done, RequestError::Kind::Invalid, motion::msg::make("request.no_alarm_lock"));
 }
 
+void Instrument::archMove(const ArchMove&, Callback done)
+{
+    refuse(done, RequestError::Kind::Invalid, whyNot(Capability::ArchedMove));
+}
+
 void Instrument::refuse(const Callback& done, RequestError::Kind kind, const motion::msg::Message& message)
 {
     RequestError e;

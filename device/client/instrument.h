@@ -76,6 +76,17 @@ public:
     /// Absolute or relative straight move of several axes (axis index → target in axis
     /// units). speed: axis units per second along the path, 0 = the device's default.
     virtual void move(const QVector<QPair<int, double>>& targets, bool relative, double speed = 0, Callback done = {}) = 0;
+    /// Arched travel (Capability::ArchedMove; refused without it): Z up to `clearZMm`
+    /// (unless above it already; Z counts down from home), X and Y to the target, Z down
+    /// to `zMm`, blended by the device: XY starts while Z still rises as long as it is
+    /// within `departMm` of its start when Z gets there, and Z starts down once XY is
+    /// within `approachMm` of its target. Speeds in mm/s, 0 = the axes' default. X, Y and
+    /// Z each end with MotionDone (Z once, at the bottom).
+    struct ArchMove {
+        double xMm = 0, yMm = 0, clearZMm = 0, zMm = 0, departMm = 0, approachMm = 0;
+        double xySpeed = 0, zSpeed = 0;
+    };
+    virtual void archMove(const ArchMove& move, Callback done = {});
     virtual void jogStep(int axis, double delta, double speed = 0, Callback done = {}) = 0;
     /// Hold-to-jog of one axis (keys, buttons): the backend renews it until stopJog().
     virtual void startJog(int axis, double velocity) = 0;

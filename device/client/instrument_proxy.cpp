@@ -94,6 +94,12 @@ void InstrumentProxy::move(const QVector<QPair<int, double>>& targets, bool rela
         m_backend->move(targets, relative, speed, std::move(done));
 }
 
+void InstrumentProxy::archMove(const ArchMove& move, Callback done)
+{
+    if (!noBackend(done))
+        m_backend->archMove(move, std::move(done));
+}
+
 void InstrumentProxy::jogStep(int axis, double delta, double speed, Callback done)
 {
     if (!noBackend(done))

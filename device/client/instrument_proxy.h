@@ -60,6 +60,7 @@ public:
     void reset(Callback done = {}) override;
     void setZero(quint8 axisMask, Callback done = {}) override;
     void unlock(Callback done = {}) override;
+    void archMove(const ArchMove& move, Callback done = {}) override;
     void setSoftLimits(int axis, double min, double max, Callback done = {}) override;
     void readStatus(StatusCallback done) override;
     void dwell(double seconds, Callback done) override;

@@ -1,5 +1,7 @@
 #include "device/jobs/machine_model.h"
 
+#include "device/protocol/messages_arch.h"
+
 #include <algorithm>
 
 namespace dev::jobs {
@@ -29,6 +31,10 @@ motion::scan::StageModel stageModelOf(const dev::DeviceIdentity& identity, const
 
 motion::plates::Deck deckWithDeviceMotion(motion::plates::Deck deck, const dev::DeviceIdentity& identity)
 {
+    // An identified device blends arched travel only when its HELLO says so (a GRBL
+    // controller, an older firmware: in legs); not connected, the reference firmware's.
+    if (!identity.axes.isEmpty())
+        deck.archedMoves = (identity.protocolCapabilities & dev::proto::kCapArchMove) != 0;
     const std::pair<char, motion::plates::AxisMotion*> axes[] = {{'X', &deck.x}, {'Y', &deck.y}, {'Z', &deck.z}, {'P', &deck.p}};
     for (const auto& [letter, motion] : axes) {
         const int i = identity.axisIndex(QLatin1Char(letter));

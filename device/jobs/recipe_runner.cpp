@@ -287,6 +287,7 @@ bool RecipeRunner::start(const QString& logPath, motion::msg::Message* error)
     m_move = 0;
     m_pumpLogged = false;
     m_knowXy = m_knowZ = false;
+    m_deferredFrom = -1;
     m_pumpUl = plungerNow();
     emit message(motion::msg::make("recipe.run.started", {motion::msg::verbatim("recipe", m_recipeName.toStdString()),
                                                   motion::msg::integer("ops", static_cast<long long>(m_plan.ops.size())),
@@ -358,13 +359,25 @@ void RecipeRunner::nextMove()
     }
     while (m_move < static_cast<int>(op.moves.size())) {
         const MachineMove& m = op.moves[static_cast<std::size_t>(m_move)];
+        if (m.arch && !m_client->can(dev::Capability::ArchedMove)) {
+            archAsLegs();
+            continue;
+        }
+        // A raise the next op's arched move makes instead, unless the run halts after this op.
+        const bool handOver = m.kind == MoveKind::Raise && m.deferred && m_state == RunState::Running && !m_pauseAsked
+            && m_client->can(dev::Capability::ArchedMove) && nextOpenOp(m_op + 1) == m_op + 1;
+        if (handOver) {
+            m_deferredFrom = m_op;
+            ++m_move;
+            continue;
+        }
         const bool skip = (m.kind == MoveKind::Raise && m_knowZ && m_z <= m.zMm + kSameMm)
             || (m.kind == MoveKind::Lower && m_knowZ && std::abs(m_z - m.zMm) < kSameMm)
             || ((m.kind == MoveKind::Travel || m.kind == MoveKind::Touch) && m_knowXy && std::abs(m_x - m.xMm) < kSameMm
                 && std::abs(m_y - m.yMm) < kSameMm && (!m.withZ || (m_knowZ && std::abs(m_z - m.zMm) < kSameMm)))
             || (m.kind == MoveKind::Dwell && m.seconds <= 0);
         if (!skip) {
-            sendMove(m);
+            sendMove(m.arch ? archAsSent(m) : m);
             return;
         }
         ++m_move;
@@ -416,6 +429,8 @@ void RecipeRunner::sendMove(const MachineMove& planned)
         break;
     case MoveKind::Travel:
     case MoveKind::Touch:
+        if (m.arch)
+            break;
         targets = {{axis('X'), m.xMm}, {axis('Y'), m.yMm}};
         // Arched travel: Z in a request of its own, so it runs with XY (in one request
         // the analyzer runs Z after XY).
@@ -430,6 +445,8 @@ void RecipeRunner::sendMove(const MachineMove& planned)
         break;
     }
     m_waitMask = 0;
+    if (m.arch)
+        targets = {{axis('X'), m.xMm}, {axis('Y'), m.yMm}, {axis('Z'), m.zMm}};  // each ends with its MotionDone
     for (const auto& t : targets + zTargets)
         m_waitMask = static_cast<quint8>(m_waitMask | (1u << t.first));
     m_repliesPending = zTargets.isEmpty() ? 1 : 2;
@@ -461,6 +478,11 @@ void RecipeRunner::sendMove(const MachineMove& planned)
         if (m_waitMask == 0)
             moveArrived();
     };
+    if (m.arch) {
+        m_deferredFrom = -1;
+        m_client->archMove({m.xMm, m.yMm, m.clearZMm, m.zMm, m.departMm, m.approachMm, m.speed, m.zSpeed}, answered);
+        return;
+    }
     m_client->move(targets, relative, m.speed, answered);
     if (!zTargets.isEmpty())
         m_client->move(zTargets, false, m.zSpeed, answered);
@@ -760,6 +782,7 @@ void RecipeRunner::abort()
             m_z = st.axes[iz].commanded;
             m_knowZ = false;
             m_knowXy = false;
+            m_deferredFrom = -1;
             if (m_z <= safe + kSameMm) {
                 setState(RunState::Stopped);
                 emit message(motion::msg::make("recipe.run.aborted_tip_up", {recipeMm("z", m_z)}), true);

@@ -124,6 +124,12 @@ private:
     void beginRunning(bool newSession = true);
     void nextMove();
     void sendMove(const motion::plates::MachineMove& planned);
+    /// The current op's arched move as legs (raise, travel, lower) on a device that does not
+    /// blend them (recipe_runner_arch.cpp).
+    void archAsLegs();
+    /// The arched move as sent: from an unknown place, or not from the well the plan
+    /// leaves, it starts from the op's safe height without leaving sideways.
+    motion::plates::MachineMove archAsSent(const motion::plates::MachineMove& planned) const;
     void moveArrived();
     /// A wait: asks the device's clock, then sleeps what is left of it (`begin`: it starts now).
     void checkDwell(bool begin);
@@ -167,6 +173,9 @@ private:
     // What we last commanded (valid once commanded since the (re)start).
     bool m_knowXy = false, m_knowZ = false;
     double m_x = 0, m_y = 0, m_z = 0;
+    /// The op whose deferred raise was left to the next op's arched move: the tip is still
+    /// down in its well (-1: none). Only then may that move leave the well sideways.
+    int m_deferredFrom = -1;
     double m_pumpUl = 0;       ///< plunger (µL), from the status at (re)start plus our moves
     double m_pumpStartUl = 0;  ///< plunger when the op's "pump" line was written
     std::string m_runInstrument;  ///< model and firmware the run was (re)started on

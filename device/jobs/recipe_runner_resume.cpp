@@ -162,6 +162,7 @@ bool RecipeRunner::resume(const InterruptedDecider& decide, motion::msg::Message
         if (!checkMachine(error) || !preflight(error))
             return false;
         m_knowXy = m_knowZ = false;
+        m_deferredFrom = -1;
         beginRunning(false);  // the pace before the pause still holds: the ETA does not jump
         return true;
     }
@@ -198,6 +199,7 @@ bool RecipeRunner::resume(const InterruptedDecider& decide, motion::msg::Message
     m_move = 0;
     m_pumpLogged = false;
     m_knowXy = m_knowZ = false;
+    m_deferredFrom = -1;
     m_pumpUl = plungerNow();
     emit progressChanged();
     beginRunning();
@@ -281,6 +283,7 @@ bool RecipeRunner::resumeFromLog(const QString& logPath, const InterruptedDecide
     m_move = 0;
     m_pumpLogged = false;
     m_knowXy = m_knowZ = false;
+    m_deferredFrom = -1;
     m_pumpUl = plungerNow();
     emit message(motion::msg::make("recipe.run.resuming", {motion::msg::verbatim("recipe", m_recipeName.toStdString()), logArg,
                                                    motion::msg::integer("done", started), motion::msg::integer("ops", static_cast<long long>(m_plan.ops.size())),

@@ -38,6 +38,7 @@ enum class MsgType : std::uint8_t {
     PathBegin = 0x10,   ///< messages_path.h
     PathAppend = 0x11,
     PathStatus = 0x12,
+    ArchMove = 0x13,    ///< messages_arch.h: Z up, XY across, Z down, blended
     JogVelocity = 0x20,
     Stop = 0x21,
     EStop = 0x22,

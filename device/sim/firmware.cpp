@@ -8,6 +8,21 @@
 #include <string>
 
 namespace dev::sim {
+
+namespace {
+
+dev::proto::ErrorReply firmwareUnknownType(std::uint8_t type)
+{
+    dev::proto::ErrorReply e;
+    e.code = dev::proto::ErrorCode::UnknownCommand;
+    e.value = type;
+    const char* hex = "0123456789ABCDEF";
+    e.message = std::string("unknown request type 0x") + hex[(type >> 4) & 15] + hex[type & 15];
+    return e;
+}
+
+} // namespace
+
 namespace {
 constexpr double kLinkHeadroom = 0.9;        // telemetry may use 90% of the wire; replies and events get the rest
 constexpr double kBatchLatencyS = 0.02;      // a batch holds at most this much time unless capacity needs more
@@ -199,6 +214,13 @@ void Firmware::execute(const dev::proto::Frame& f, std::vector<std::uint8_t>& re
         if (auto r = dev::proto::decodeMoveRequest(f.payload))
             return answer(m_machine.move(*r));
         return bad("MOVE");
+    case MsgType::ArchMove:
+        // Only a device that says so in HELLO takes it: to another it is an unknown type.
+        if (!(m_machine.hello(m_linkBaud).capabilities & dev::proto::kCapArchMove))
+            return sendError(f.seq, firmwareUnknownType(f.type), reply);
+        if (auto r = dev::proto::decodeArchMoveRequest(f.payload))
+            return answer(m_machine.archMove(*r));
+        return bad("ARCH_MOVE");
     case MsgType::JogStep:
         if (auto r = dev::proto::decodeJogStepRequest(f.payload))
             return answer(m_machine.jogStep(*r));
@@ -240,14 +262,7 @@ void Firmware::execute(const dev::proto::Frame& f, std::vector<std::uint8_t>& re
     default: {
         if (executeTuning(f, reply) || executeCompensation(f, reply))
             return;
-        dev::proto::ErrorReply e;
-        e.code = dev::proto::ErrorCode::UnknownCommand;
-        e.value = f.type;
-        e.message = "unknown request type 0x" + [](unsigned v) {
-            const char* hex = "0123456789ABCDEF";
-            return std::string{hex[(v >> 4) & 15], hex[v & 15]};
-        }(f.type);
-        sendError(f.seq, e, reply);
+        sendError(f.seq, firmwareUnknownType(f.type), reply);
     }
     }
 }

@@ -181,7 +181,8 @@ SimMachine::Result SimMachine::checkAxes(std::uint8_t mask, bool mustBeIdle) con
 }
 
 SimMachine::Result SimMachine::planSegment(const std::vector<int>& axes, const std::vector<double>& targets,
-                                           double speed, int after, dev::proto::EventKind doneEvent, int* idOut)
+                                           double speed, int after, dev::proto::EventKind doneEvent, int* idOut,
+                                           const std::vector<double>* fromMachine)
 {
     Segment seg;
     seg.id = m_nextSegmentId++;
@@ -192,7 +193,7 @@ SimMachine::Result SimMachine::planSegment(const std::vector<int>& axes, const s
         const int i = axes[k];
         // A segment that waits starts from where the earlier one leaves this axis,
         // which for disjoint axes is where it is now.
-        const double from = st(i).plant->reference();
+        const double from = fromMachine ? (*fromMachine)[k] : st(i).plant->reference();
         seg.axes.push_back(i);
         seg.start.push_back(from);
         seg.dir.push_back(targets[k] - from);
@@ -461,9 +462,11 @@ SimMachine::Result SimMachine::stop(std::uint8_t mask)
             s.accel = stopTime > 0 ? std::abs(s.v) / stopTime : 1.0;
             s.segment = -1;
         }
+        const int arch = it->arch;
         m_segments.erase(it);
         // Z waited for this XY move to arrive; it never will.
         cancelSegmentsAfter(id, "cancelled: the move it waited for was stopped", dev::proto::reason::kWaitedMoveStopped);
+        cancelArchRest(arch, "cancelled: the move it waited for was stopped", dev::proto::reason::kWaitedMoveStopped);
     }
     return std::nullopt;
 }

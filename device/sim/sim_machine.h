@@ -4,6 +4,7 @@
 // over SimAxis plants, on a virtual clock advanced in fixed ticks.
 #include "device/protocol/event_reasons.h"
 #include "device/protocol/messages.h"
+#include "device/protocol/messages_arch.h"
 #include "device/sim/machine_config.h"
 #include "device/sim/sim_axis.h"
 #include "device/sim/sim_compensation.h"
@@ -56,6 +57,8 @@ public:
     using Result = std::optional<dev::proto::ErrorReply>;  ///< nullopt = accepted
     Result home(std::uint8_t axisMask);
     Result move(const dev::proto::MoveRequest& request);
+    /// ARCH_MOVE (sim_arch_move.cpp): Z up to a clearance, XY across, Z down, blended.
+    Result archMove(const dev::proto::ArchMoveRequest& request);
     Result jogStep(const dev::proto::JogStepRequest& request);
     Result jogVelocity(const dev::proto::JogVelocityRequest& request);
     Result stop(std::uint8_t axisMask);
@@ -154,6 +157,11 @@ private:
     struct Segment {
         int id = 0;
         int after = -1;           ///< id of a segment that must finish before this starts
+        /// ≥ 0: this starts once `after` has run this long (its own clock), not when it ends.
+        double afterS = -1;
+        /// An arched move's rise: its end hands Z to the way down, with no event.
+        bool handsOver = false;
+        int arch = -1;            ///< the arched move's id its three parts share; -1: none
         bool started = false;
         double t = 0;
         std::vector<int> axes;
@@ -174,8 +182,13 @@ private:
     double softMinMachine(int i) const { return st(i).homeOffset + st(i).softMin; }
     double softMaxMachine(int i) const { return st(i).homeOffset + st(i).softMax; }
     void zeroCounters(int i, double logicalHere);
+    /// `fromMachine`: where the segment starts (one per axis) when not where the axes stand now.
     Result planSegment(const std::vector<int>& axes, const std::vector<double>& targetsMachine, double speed,
-                       int after, dev::proto::EventKind doneEvent, int* idOut);
+                       int after, dev::proto::EventKind doneEvent, int* idOut,
+                       const std::vector<double>* fromMachine = nullptr);
+    Segment* segmentById(int id);
+    /// Forgets the parts of arched move `arch` that have not started (a stop, a switch).
+    void cancelArchRest(int arch, const char* why, std::uint8_t code);
     void finishAxis(int i, dev::proto::EventKind kind, const std::string& text = {}, std::uint8_t why = 0);
     void stopAxisHard(int i);
     void cancelSegmentsAfter(int id, const char* why, std::uint8_t code);
@@ -205,6 +218,7 @@ private:
     std::vector<dev::proto::EventMsg> m_events;
     std::uint64_t m_ticks = 0;
     int m_nextSegmentId = 1;
+    int m_nextArchId = 1;
     int m_ticksPerControl = 10;
     bool m_estop = false;
     int m_lastXySegment = -1;

@@ -55,7 +55,9 @@ void SimMachine::stopAxisHard(int i)
                     st(a).plant->holdHere();
                     finishAxis(a, dev::proto::EventKind::Stopped, "stopped with its coupled axis", dev::proto::reason::kWithCoupledAxis);
                 }
+            const int arch = it->arch;
             m_segments.erase(it);
+            cancelArchRest(arch, "cancelled: the move it waited for was stopped by a switch", dev::proto::reason::kWaitedMoveHitSwitch);
         }
         s.mode = Mode::Idle;
         s.segment = -1;
@@ -87,8 +89,10 @@ void SimMachine::tickSegments()
     std::vector<int> finished;
     for (auto& g : m_segments) {
         if (!g.started) {
-            const bool waiting = g.after >= 0
-                && std::any_of(m_segments.begin(), m_segments.end(), [&](const Segment& o) { return o.id == g.after; });
+            // Waiting for the segment it hangs on to end, or (afterS ≥ 0) to have run that long.
+            const bool waiting = g.after >= 0 && std::any_of(m_segments.begin(), m_segments.end(), [&](const Segment& o) {
+                return o.id == g.after && (g.afterS < 0 || !o.started || o.t < g.afterS - 1e-12);
+            });
             if (waiting)
                 continue;
             g.started = true;
@@ -108,6 +112,16 @@ void SimMachine::tickSegments()
         m_segments.erase(it);
         for (std::size_t k = 0; k < g.axes.size(); ++k) {
             const int i = g.axes[k];
+            if (g.handsOver) {
+                // An arched move's rise: Z goes on down with the arch's next part, if it is still there.
+                const auto next = std::find_if(m_segments.begin(), m_segments.end(), [&](const Segment& o) {
+                    return o.arch == g.arch && std::find(o.axes.begin(), o.axes.end(), i) != o.axes.end();
+                });
+                if (next != m_segments.end()) {
+                    st(i).segment = next->id;
+                    continue;
+                }
+            }
             st(i).plant->setReference(g.start[k] + g.dir[k] * g.profile->distance(), 0);
             if (m_cfg.closedLoop) {
                 st(i).mode = Mode::Settling;

@@ -23,7 +23,7 @@ dev::proto::HelloReply SimMachine::hello(std::uint32_t linkBaud) const
     else
         h.capabilities |= dev::proto::CapEncoder;
     if (m_cfg.zAfterXy)
-        h.capabilities |= dev::proto::CapCoupledXyThenZ | dev::proto::CapPathZFollow;
+        h.capabilities |= dev::proto::CapCoupledXyThenZ | dev::proto::CapPathZFollow | dev::proto::kCapArchMove;
     if (m_comp2d->available())
         h.capabilities |= dev::proto::CapCompensation2d;
     for (const auto& a : m_cfg.axes)

@@ -10347,6 +10347,10 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <source>error compensation of its own</source>
         <translation>自身的误差补偿</translation>
     </message>
+    <message>
+        <source>arched move that blends Z with X and Y</source>
+        <translation>将 Z 与 X、Y 融合的拱形移动</translation>
+    </message>
 </context>
 <context>
     <name>ui::words::DeviceWords</name>

@@ -12,6 +12,7 @@
 #include "tuning_doc_examples.h"
 #include "device/protocol/messages_compensation_2d.h"
 #include "device/protocol/messages_path.h"
+#include "device/protocol/messages_arch.h"
 
 #include <gtest/gtest.h>
 
@@ -182,6 +183,17 @@ std::vector<Example> examples()
     ex.push_back({"comp2d-enable-reply", replyTypeOf(kComp2dEnable), 41,
                   encode(Comp2dEnableReply{Comp2dInstalled | Comp2dEnabled | Comp2dApplied | Comp2dSaved, 2, 2})});
     ex.push_back({"comp2d-query", static_cast<std::uint8_t>(kComp2dEnable), 42, encode(Comp2dEnableRequest{Comp2dEnableQuery})});
+    // An arched move from one well of a 96-well plate to the next: X 29 mm, Y 30 mm, up to
+    // Z 55.78 mm, down to 70 mm, each opening 2.93 mm; default speeds.
+    ArchMoveRequest a;
+    a.x = nm(29);
+    a.y = nm(30);
+    a.clearZ = nm(55.78);
+    a.z = nm(70);
+    a.departRadius = static_cast<std::uint32_t>(nm(2.93));
+    a.approachRadius = static_cast<std::uint32_t>(nm(2.93));
+    ex.push_back({"arch-move", t(MsgType::ArchMove), 43, encode(a)});
+    ex.push_back({"arch-move-reply", replyTypeOf(MsgType::ArchMove), 43, {}});
     return ex;
 }
 

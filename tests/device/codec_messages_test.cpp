@@ -1,6 +1,7 @@
 // Protocol v1 payloads: every message's encode/decode round trip, its exact byte
 // layout, and the decoders' strictness (short, long, unknown enum values).
 #include "device/protocol/bytes.h"
+#include "device/protocol/messages_arch.h"
 #include "device/protocol/messages.h"
 
 #include <gtest/gtest.h>
@@ -413,6 +414,7 @@ TEST(CodecMessages, DecodersRejectShortAndLongPayloads)
     expectStrict(encode(s), &decodeStatusReply, "STATUS reply");
     expectStrict(encode(HomeRequest{1}), &decodeHomeRequest, "HOME");
     expectStrict(encode(MoveRequest{false, 0, 0b101, {1, 2}}), &decodeMoveRequest, "MOVE");
+    expectStrict(encode(ArchMoveRequest{1, 2, 3, 4, 5, 6, 7, 8}), &decodeArchMoveRequest, "ARCH_MOVE");
     expectStrict(encode(JogStepRequest{0, 1, 2}), &decodeJogStepRequest, "JOG_STEP");
     expectStrict(encode(AxisMaskRequest{3}), &decodeAxisMaskRequest, "mask");
     expectStrict(encode(LimitsReply{{{0, 1}, {2, 3}}}), &decodeLimitsReply, "GET_LIMITS reply");

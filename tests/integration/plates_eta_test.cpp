@@ -77,7 +77,8 @@ Measured runExample(const char* name)
 
 TEST(PlateEta, BeforeRunTheEtaIsThePlanAndTheRunTakesItWithinTwoPercent)
 {
-    for (const char* name : {"sampling-96.recipe.json", "reagent-transfer.recipe.json"}) {
+    // fill-96-arched: the blended arches (ARCH_MOVE) with their deferred raises.
+    for (const char* name : {"sampling-96.recipe.json", "reagent-transfer.recipe.json", "fill-96-arched.recipe.json"}) {
         SCOPED_TRACE(name);
         const Measured m = runExample(name);
         EXPECT_DOUBLE_EQ(m.etaBeforeS, m.plannedS) << "before Run the ETA is the plan's own time";

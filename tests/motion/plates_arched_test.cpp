@@ -1,6 +1,7 @@
-// Arched travel: the tip leaves a well toward the next while it rises and enters
-// the next while it goes down, staying inside the wells' openings while below
-// the clearance; straight-up-down (and every recipe of version 1) plans as before.
+// Arched travel in legs (a device that does not blend Z with XY): the tip leaves a well
+// toward the next while it rises and enters the next while it goes down, staying inside
+// the wells' openings while below the clearance; straight-up-down (and every recipe of
+// version 1) plans as before. Blended arches: plates_arch_blend_test.cpp.
 #include "motion/message_print.h"
 #include "motion/plans/recipes/plan_bound.h"
 #include "plates_support.h"
@@ -23,6 +24,14 @@ Recipe arched(std::vector<std::string> wells)
     return r;
 }
 
+/// A deck whose device travels arches in legs.
+PlanContext legged()
+{
+    PlanContext c = context();
+    c.deck.archedMoves = false;
+    return c;
+}
+
 /// The tip's XY distance from the nearest well centre of the plan's ops.
 double fromNearestWell(const RecipePlan& p, double x, double y)
 {
@@ -36,7 +45,7 @@ double fromNearestWell(const RecipePlan& p, double x, double y)
 
 TEST(PlateArched, AHopLeavesRisingCrossesAtTheClearanceAndEntersGoingDown)
 {
-    const RecipePlan plan = planRecipe(arched({"A1:A3"}), context());
+    const RecipePlan plan = planRecipe(arched({"A1:A3"}), legged());
     ASSERT_TRUE(plan.ok()) << plan.problems.front().message;
     ASSERT_EQ(plan.ops.size(), 3u);
     const double clear = 75 - 14.22 - 5;
@@ -67,7 +76,7 @@ TEST(PlateArched, AHopLeavesRisingCrossesAtTheClearanceAndEntersGoingDown)
 
 TEST(PlateArched, BelowTheClearanceTheTipIsAlwaysInsideAWellsOpening)
 {
-    const RecipePlan plan = planRecipe(arched({"A1:H12"}), context());
+    const RecipePlan plan = planRecipe(arched({"A1:H12"}), legged());
     ASSERT_TRUE(plan.ok());
     const double clear = 75 - 14.22 - 5;
     const double opening = 6.86 / 2 - kTipWallMarginMm;
@@ -98,8 +107,8 @@ TEST(PlateArched, BelowTheClearanceTheTipIsAlwaysInsideAWellsOpening)
 TEST(PlateArched, FasterThanStraightUpDownAndEverythingElseTheSame)
 {
     Recipe straight = oneStep(StepType::Aspirate, {"A1:H12"}, 10);
-    const RecipePlan s = planRecipe(straight, context());
-    const RecipePlan a = planRecipe(arched({"A1:H12"}), context());
+    const RecipePlan s = planRecipe(straight, legged());
+    const RecipePlan a = planRecipe(arched({"A1:H12"}), legged());
     ASSERT_TRUE(a.ok());
     EXPECT_LT(a.totalTimeS, s.totalTimeS);
     EXPECT_EQ(a.fingerprint, s.fingerprint) << "the same ops: a log resumes in either mode";
@@ -148,7 +157,7 @@ TEST(PlateArched, BetweenPlatesTheTipClearsTheTallest)
     s.plate = "tall";
     r.steps[0].plate = "samples";
     r.steps.push_back(s);
-    const RecipePlan p = planRecipe(r, context());
+    const RecipePlan p = planRecipe(r, legged());
     ASSERT_TRUE(p.ok()) << p.problems.front().message;
     EXPECT_NEAR(p.ops[1].clearZMm, 75 - 14.22 - 10, 1e-9);
     EXPECT_NEAR(p.ops[0].moves.back().zMm, 75 - 14.22 - 10, 1e-9) << "A1 departs straight for the other plate's clearance";

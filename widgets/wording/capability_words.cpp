@@ -41,6 +41,7 @@ QString CapabilityWords::lacking(dev::Capability c)
     case C::TriggerOutput: return tr("trigger output for a camera");
     case C::MachineLimits: return tr("report of its acceleration and jerk limits");
     case C::Compensation: return tr("error compensation of its own");
+    case C::ArchedMove: return tr("arched move that blends Z with X and Y");
     }
     return {};
 }

@@ -77,6 +77,7 @@ public:
     Capabilities capabilities() const override;
     void home(quint8 axisMask, Callback done = {}) override;
     void move(const QVector<QPair<int, double>>& targets, bool relative, double speed = 0, Callback done = {}) override;
+    void archMove(const ArchMove& move, Callback done = {}) override;
     void jogStep(int axis, double delta, double speed = 0, Callback done = {}) override;
     void startJog(int axis, double velocity) override;
     void stopJog(int axis) override;

@@ -3,6 +3,9 @@
 // zero and soft limits. Each checks its arguments before anything is sent.
 #include "device/backends/benchpilot/benchpilot_client.h"
 
+#include "device/protocol/messages_arch.h"
+
+#include <algorithm>
 #include <cmath>
 
 namespace dev {
@@ -55,6 +58,31 @@ void BenchPilotClient::move(const QVector<QPair<int, double>>& targets, bool rel
     }
     m.speed = static_cast<std::uint32_t>(std::llround(speed * m_identity.axes[byAxis.firstKey()].wireScale()));
     send(dev::proto::MsgType::Move, dev::proto::encode(m), wrap(std::move(done), "request.move"));
+}
+
+void BenchPilotClient::archMove(const ArchMove& a, Callback done)
+{
+    const int ix = m_identity.axisIndex(QLatin1Char('X')), iy = m_identity.axisIndex(QLatin1Char('Y')),
+              iz = m_identity.axisIndex(QLatin1Char('Z'));
+    if (!capabilities().testFlag(Capability::ArchedMove) || ix < 0 || iy < 0 || iz < 0)
+        return refuse(done, RequestError::Kind::Invalid, whyNot(Capability::ArchedMove));
+    for (double v : {a.xMm, a.yMm, a.clearZMm, a.zMm, a.departMm, a.approachMm})
+        if (!std::isfinite(v))
+            return refuse(done, RequestError::Kind::Invalid, motion::msg::make("request.move_target_not_number", {motion::msg::verbatim("axis", "Z")}));
+    if (!std::isfinite(a.xySpeed) || a.xySpeed < 0 || !std::isfinite(a.zSpeed) || a.zSpeed < 0)
+        return refuse(done, RequestError::Kind::Invalid, motion::msg::make("request.move_bad_speed"));
+    const double s = m_identity.axes[ix].wireScale();  // nm per mm, like Y's and Z's
+    dev::proto::ArchMoveRequest m;
+    m.xySpeed = static_cast<std::uint32_t>(std::llround(a.xySpeed * s));
+    m.zSpeed = static_cast<std::uint32_t>(std::llround(a.zSpeed * m_identity.axes[iz].wireScale()));
+    m.x = toWire(a.xMm, s);
+    m.y = toWire(a.yMm, m_identity.axes[iy].wireScale());
+    m.clearZ = toWire(a.clearZMm, m_identity.axes[iz].wireScale());
+    m.z = toWire(a.zMm, m_identity.axes[iz].wireScale());
+    // The radii are a safety margin: rounded down, never wider than asked.
+    m.departRadius = static_cast<std::uint32_t>(std::max(0.0, std::floor(a.departMm * s)));
+    m.approachRadius = static_cast<std::uint32_t>(std::max(0.0, std::floor(a.approachMm * s)));
+    send(dev::proto::MsgType::ArchMove, dev::proto::encode(m), wrap(std::move(done), "request.move"));
 }
 
 void BenchPilotClient::jogStep(int axis, double delta, double speed, Callback done)

@@ -34,6 +34,7 @@ Capabilities BenchPilotClient::capabilities() const
         {dev::proto::CapJogVelocity, Capability::VelocityJog},
         {dev::proto::CapPathQueue, Capability::PathQueue},
         {dev::proto::CapPathZFollow, Capability::PathZFollow},
+        {dev::proto::kCapArchMove, Capability::ArchedMove},
         {dev::proto::CapCoupledXyThenZ, Capability::CoupledXyThenZ},
         {dev::proto::CapGains, Capability::PidGains},
         {dev::proto::CapExperiments, Capability::TuningTests},

@@ -32,6 +32,7 @@ QString typeName(dev::proto::MsgType t)
     case dev::proto::MsgType::PathBegin: return QStringLiteral("PATH_BEGIN");
     case dev::proto::MsgType::PathAppend: return QStringLiteral("PATH_APPEND");
     case dev::proto::MsgType::PathStatus: return QStringLiteral("PATH_STATUS");
+    case dev::proto::MsgType::ArchMove: return QStringLiteral("ARCH_MOVE");
     case dev::proto::MsgType::PathHold: return QStringLiteral("PATH_HOLD");
     case dev::proto::MsgType::PathResume: return QStringLiteral("PATH_RESUME");
     case dev::proto::MsgType::PathClear: return QStringLiteral("PATH_CLEAR");

@@ -54,6 +54,10 @@ struct Deck {
     /// Host ↔ device time per MOVE that the profiles do not show: the request's
     /// trip, the device's tick, the MotionDone event's trip (measured on the link).
     double moveOverheadS = 0.004;
+    /// The firmware blends arched travel into one move (ARCH_MOVE, docs/protocol.md): the
+    /// analyzer's reference firmware does; a device that does not say so in its HELLO
+    /// travels in legs (dev::jobs::deckWithDeviceMotion).
+    bool archedMoves = true;
     std::vector<Slot> plateSlots;  ///< not "slots": that is a Qt keyword
     std::vector<Station> stations;
 

@@ -9,6 +9,12 @@ namespace motion::plates {
 
 double moveTimeS(const std::vector<AxisDelta>& axes, double speed)
 {
+    const auto p = moveProfile(axes, speed);
+    return p ? p->duration() : 0;
+}
+
+std::optional<motion::SeedSCurve> moveProfile(const std::vector<AxisDelta>& axes, double speed)
+{
     double len2 = 0, vDefault = 1e300;
     for (const AxisDelta& a : axes) {
         len2 += a.delta * a.delta;
@@ -16,7 +22,7 @@ double moveTimeS(const std::vector<AxisDelta>& axes, double speed)
     }
     const double len = std::sqrt(len2);
     if (len < 1e-9 || axes.empty())
-        return 0;
+        return std::nullopt;
     double vPath = speed > 0 ? speed : vDefault, aPath = 1e300, accelTime = 0;
     for (const AxisDelta& a : axes) {
         const double u = std::abs(a.delta) / len;
@@ -27,8 +33,7 @@ double moveTimeS(const std::vector<AxisDelta>& axes, double speed)
         accelTime = std::max(accelTime, a.axis->accelTimeS);
     }
     accelTime = std::max(accelTime, 1.5 * vPath / aPath);
-    const auto p = motion::SeedSCurve::plan(len, vPath, accelTime);
-    return p ? p->duration() : 0;
+    return motion::SeedSCurve::plan(len, vPath, accelTime);
 }
 
 } // namespace motion::plates

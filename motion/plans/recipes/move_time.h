@@ -6,6 +6,9 @@
 // (motion/seed_scurve.h) with its acceleration phase stretched until the
 // curve's peak (1.5·v/t2) is within the path's acceleration limit.
 #include "motion/plans/plates/deck.h"
+#include "motion/seed_scurve.h"
+
+#include <optional>
 
 #include <vector>
 
@@ -20,5 +23,7 @@ struct AxisDelta {
 /// per second; 0 = the slowest default speed among the axes (the firmware's
 /// rule for a MOVE without a speed). 0 for a move of zero length.
 double moveTimeS(const std::vector<AxisDelta>& axes, double speed);
+/// The profile behind moveTimeS(); nullopt for a move of zero length.
+std::optional<motion::SeedSCurve> moveProfile(const std::vector<AxisDelta>& axes, double speed);
 
 } // namespace motion::plates

@@ -3,6 +3,8 @@
 #include "motion/plans/recipes/move_time.h"
 #include "motion/plans/recipes/plan_bound.h"
 #include "motion/plans/recipes/recipe_planner.h"
+
+#include "motion/arch_timing.h"
 #include "motion/plans/recipes/well_order.h"
 
 #include <algorithm>
@@ -409,8 +411,60 @@ MachineMove Planner::travelWithZ(const PointMm& at, double z)
     return m;
 }
 
+void Planner::goIntoBlended(PlanOp& op, const Place& pl)
+{
+    const double clear = clearanceTo(pl);
+    op.clearZMm = clear;
+    const double into = openingMm(pl);
+    double depart = 0;
+    if (m_inWellMm > 0 && m_departOp == op.index - 1 && op.index > 0) {
+        // The op before ended with the tip going straight up out of its well: this move
+        // takes it up instead, already heading here within that well's opening.
+        MachineMove& up = m_plan.ops[static_cast<std::size_t>(op.index - 1)].moves.back();
+        up.deferred = true;
+        up.durationS = 0;
+        m_z = m_departFromZ;
+        depart = m_inWellMm;
+    }
+    m_overPlate = pl.station.empty() ? pl.plate : std::string();
+    MachineMove m;
+    m.kind = MoveKind::Travel;
+    m.withZ = true;
+    m.arch = true;
+    m.xMm = pl.at.x;
+    m.yMm = pl.at.y;
+    m.zMm = pl.depthZMm;
+    m.clearZMm = clear;
+    m.departMm = depart;
+    m.approachMm = into;
+    m.speed = m_r.travelSpeedMmS.value_or(0);
+    m.zSpeed = m_r.zSpeedMmS.value_or(0);
+    const double top = std::min(m_z, clear);
+    const auto rise = moveProfile({{&m_c.deck.z, top - m_z}}, m.zSpeed);
+    const auto xy = moveProfile({{&m_c.deck.x, pl.at.x - m_x}, {&m_c.deck.y, pl.at.y - m_y}}, m.speed);
+    const auto down = moveProfile({{&m_c.deck.z, pl.depthZMm - top}}, m.zSpeed);
+    const motion::ArchTiming t = motion::archTiming(rise ? &*rise : nullptr, xy ? &*xy : nullptr, down ? &*down : nullptr, depart, into);
+    m.durationS = overheadFor(t.durationS);
+    if (depart > 0 && std::hypot(pl.at.x - m_x, pl.at.y - m_y) < kEps && std::abs(pl.depthZMm - m_z) < kEps)
+        m.durationS = 0;  // back into the well the tip is still down in (a disposal returned, then drawn): it stays
+    m_x = pl.at.x;
+    m_y = pl.at.y;
+    m_z = pl.depthZMm;
+    op.moves.push_back(m);
+    m_safeZ = pl.station.empty() ? std::max(0.0, pl.topZMm - m_r.travel.clearanceInPlateMm) : pl.topZMm;
+    m_inWellMm = into;
+    op.at = pl.at;
+    op.safeZMm = std::min(clear, m_allClearZ);
+    op.depthZMm = pl.depthZMm;
+    op.visitMoves = static_cast<int>(op.moves.size());
+}
+
 void Planner::goIntoArched(PlanOp& op, const Place& pl)
 {
+    if (m_c.deck.archedMoves) {
+        goIntoBlended(op, pl);
+        return;
+    }
     const double clear = clearanceTo(pl);
     op.clearZMm = clear;
     const double into = openingMm(pl);

@@ -46,6 +46,17 @@ struct MachineMove {
     /// or entering one while it goes down; the XY part stays within the well's opening.
     bool withZ = false;
     double zSpeed = 0;         ///< with `withZ`: Z's speed (mm/s); 0 = the device's default
+    /// Travel with `withZ` on a device that blends (Deck::archedMoves): one arched move — Z
+    /// up to `clearZMm` (from wherever it is), XY across, Z down to `zMm`; XY starts while Z
+    /// still rises as long as it is within `departMm` of its start when Z reaches the
+    /// clearance, and Z goes down once XY is within `approachMm` of its target
+    /// (motion/arch_timing.h).
+    bool arch = false;
+    double clearZMm = 0, departMm = 0, approachMm = 0;
+    /// Raise: the next op's arched move takes the tip up out of this well instead, and its
+    /// time is counted there (0 here); the runner makes this raise only when the run
+    /// pauses, stops or ends after this op.
+    bool deferred = false;
     double pumpDeltaUl = 0;    ///< Pump: + draws in, − pushes out
     double speed = 0;          ///< axis units per second; 0 = the device's default
     double seconds = 0;        ///< Dwell

@@ -89,6 +89,10 @@ private:
     /// well while going down.
     void goIntoArched(PlanOp& op, const Place& pl);
 
+    /// Arched travel on a device that blends it (Deck::archedMoves): one move from the well
+    /// the op before ended in (its raise deferred to this move) to `pl`'s depth.
+    void goIntoBlended(PlanOp& op, const Place& pl);
+
     /// The end of a visit: the tip up to the travel height; remembers the op for a depart.
     void leave(PlanOp& op);
 

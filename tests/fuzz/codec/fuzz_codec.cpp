@@ -33,6 +33,7 @@
 #include "device/protocol/cobs.h"
 #include "device/protocol/crc16.h"
 #include "device/protocol/frame_codec.h"
+#include "device/protocol/messages_arch.h"
 #include "device/protocol/messages.h"
 #include "device/protocol/messages_compensation.h"
 #include "device/protocol/messages_compensation_2d.h"
@@ -187,6 +188,7 @@ void checkAllDecoders(const Bytes& p)
     checkDecoder(p, &dev::proto::decodeStatusReply, "decodeStatusReply");
     checkDecoder(p, &dev::proto::decodeHomeRequest, "decodeHomeRequest");
     checkDecoder(p, &dev::proto::decodeMoveRequest, "decodeMoveRequest");
+    checkDecoder(p, &dev::proto::decodeArchMoveRequest, "decodeArchMoveRequest");
     checkDecoder(p, &dev::proto::decodeJogStepRequest, "decodeJogStepRequest");
     checkDecoder(p, &dev::proto::decodeAxisMaskRequest, "decodeAxisMaskRequest");
     checkDecoder(p, &dev::proto::decodeLimitsReply, "decodeLimitsReply");
@@ -366,7 +368,7 @@ private:
 bool knownRequest(std::uint8_t t)
 {
     return (t >= 0x01 && t <= 0x0A) || (t >= 0x20 && t <= 0x22) || dev::proto::tuningTypeName(t) != nullptr
-        || (t >= 0x10 && t <= 0x12) || (t >= 0x24 && t <= 0x26) || dev::proto::compensationTypeName(t) != nullptr
+        || (t >= 0x10 && t <= 0x13) || (t >= 0x24 && t <= 0x26) || dev::proto::compensationTypeName(t) != nullptr
         || dev::proto::compensation2dTypeName(t) != nullptr;
 }
 

@@ -231,7 +231,8 @@ motion::msg::Message GrblClient::missingReason(Capability c) const
     case Capability::TuningTests: because = "capability.because.grbl_open_loop"; break;
     case Capability::StopsOnHostLoss: because = "capability.because.grbl_no_watchdog"; break;
     case Capability::SoftLimits: because = "capability.because.grbl_machine_travel"; break;
-    case Capability::PathZFollow: because = "capability.because.not_in_protocol"; break;
+    case Capability::PathZFollow:
+    case Capability::ArchedMove: because = "capability.because.not_in_protocol"; break;
     case Capability::PathQueue: because = "capability.because.grbl_xy_plane"; break;
     case Capability::Pump: because = "capability.because.no_pump_in_profile"; break;
     case Capability::TriggerOutput: because = "capability.because.no_trigger_in_profile"; break;
