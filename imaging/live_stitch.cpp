@@ -237,7 +237,7 @@ void LiveStitcher::work()
             continue;
         if (m_events.tileRead && m_options.thumbnailPx > 0) {
             lock.unlock();
-            m_events.tileRead(tile, std::make_shared<const ImageU16>(thumbnail(image->grey, m_options.thumbnailPx)));
+            m_events.tileRead(tile, image->grey.width, image->grey.height, std::make_shared<const ImageU16>(thumbnail(image->grey, m_options.thumbnailPx)));
             lock.lock();
         }
         hold(tile, image);

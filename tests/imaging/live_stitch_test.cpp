@@ -137,9 +137,9 @@ TEST(LiveStitch, APairIsRegisteredAsSoonAsItsSecondTileIsThere)
         seen.emplace_back(p.a, p.b);
         cv.notify_all();
     };
-    events.tileRead = [&](int tile, std::shared_ptr<const imaging::ImageU16> t) {
+    events.tileRead = [&](int tile, int w, int, std::shared_ptr<const imaging::ImageU16> t) {
         std::lock_guard<std::mutex> lock(m);
-        if (t && t->width > 0 && t->width <= 96)
+        if (t && t->width > 0 && t->width <= 96 && w == g.tileW)
             thumbs.insert(tile);
     };
     imaging::LiveStitcher live(planned(tiles), {}, events);

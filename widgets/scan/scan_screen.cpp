@@ -301,6 +301,7 @@ void ScanScreen::setCameraSession(CameraSession* session)
         return r;
     });
     m_stitchPanel->setObjectName(QStringLiteral("scanMosaic"));
+    m_stitchPanel->followScan(m_runner);
     m_leftTabs->addTab(m_stitchPanel, tr("Mosaic"));
     connect(m_stitchPanel, &StitchPanel::problem, this, &ScanScreen::problem);
     connect(m_stitchPanel, &StitchPanel::notice, this, &ScanScreen::notice);

@@ -76,6 +76,11 @@ StitchPanel::StitchPanel(Source source, QWidget* parent) : QWidget(parent), m_so
         emit problem(tr("Stitching %1 failed: %2").arg(QDir::toNativeSeparators(m_folder), words::problems(problems).join(QLatin1Char(' '))));
     });
     connect(m_map, &StitchQualityMap::tileClicked, this, &StitchPanel::showTile);
+    connect(m_job, &dev::jobs::StitchJob::liveStarted, this, &StitchPanel::onLiveStarted);
+    connect(m_job, &dev::jobs::StitchJob::liveTile, m_map, &StitchQualityMap::setLiveTile);
+    connect(m_job, &dev::jobs::StitchJob::livePair, m_map, &StitchQualityMap::setLivePair);
+    connect(m_job, &dev::jobs::StitchJob::liveTile, this, &StitchPanel::updateUi);
+    connect(m_job, &dev::jobs::StitchJob::liveDropped, this, &StitchPanel::updateUi);
     retranslateUi();
     updateUi();
 }
@@ -101,6 +106,19 @@ bool StitchPanel::stitch()
 void StitchPanel::setScanRunning(bool running)
 {
     m_scanRunning = running;
+    updateUi();
+}
+
+void StitchPanel::followScan(dev::jobs::ScanRunner* runner) { m_job->follow(runner, m_source); }
+
+void StitchPanel::onLiveStarted()
+{
+    m_folder = m_job->folder();
+    const motion::scan::Camera camera = m_source().plan.camera;
+    const double px = 1000 / std::max(1e-9, motion::scan::pixelAtSampleUm(camera));
+    m_map->beginLive(m_job->livePlannedPx(), QSizeF(motion::scan::fieldWidthMm(camera) * px, motion::scan::fieldHeightMm(camera) * px));
+    m_summary->clear();
+    m_tile->clear();
     updateUi();
 }
 
@@ -132,6 +150,10 @@ QStringList StitchPanel::summaryLines() const
                  .arg(r->placement.worstCorrectionPx * um, 0, 'f', 2)
                  .arg(m_map->magnification(), 0, 'f', 0);
     lines << tr("Mosaic %1 × %2 px in %3 s").arg(r->frame.width).arg(r->frame.height).arg(m_job->seconds(), 0, 'f', 1);
+    if (m_job->lastWasLive())
+        lines << tr("Stitched live during the scan: placed %1 s after the last tile, the files written %2 s after it")
+                     .arg(m_job->livePlacedAfterS(), 0, 'f', 1)
+                     .arg(m_job->seconds(), 0, 'f', 1);
     return lines;
 }
 
@@ -194,8 +216,12 @@ void StitchPanel::updateUi()
 {
     const bool running = m_job->isRunning();
     m_stitch->setEnabled(!running && !m_scanRunning);
-    m_busy->setVisible(running);
-    if (running)
+    m_busy->setVisible(running || m_job->isLive());
+    m_busy->setRange(0, m_job->isLive() ? m_job->tileCount() : 0);  // registration's pace is known live only
+    m_busy->setValue(m_job->liveTilesRead());
+    if (m_job->isLive())
+        m_state->setText(tr("Stitching live as the scan takes the tiles: %1 of %2 registered").arg(m_job->liveTilesRead()).arg(m_job->tileCount()));
+    else if (running)
         m_state->setText(tr("Stitching %1 tiles in %2…").arg(m_job->tileCount()).arg(QDir::toNativeSeparators(m_folder)));
     else if (m_scanRunning)
         m_state->setText(tr("A scan is running into the folder: stitch it when it has finished."));
