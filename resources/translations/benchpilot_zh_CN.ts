@@ -8167,6 +8167,10 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
         <translation>扫描期间实时拼接：最后一个图块后 %1 秒完成全局定位，%2 秒后文件写完</translation>
     </message>
     <message>
+        <source>%v of %m tiles</source>
+        <translation>%v / %m 个图块</translation>
+    </message>
+    <message>
         <source>Stitching live as the scan takes the tiles: %1 of %2 registered</source>
         <translation>随扫描采集图块实时拼接：已配准 %1 / %2 个</translation>
     </message>

@@ -219,6 +219,7 @@ void StitchPanel::updateUi()
     m_busy->setVisible(running || m_job->isLive());
     m_busy->setRange(0, m_job->isLive() ? m_job->tileCount() : 0);  // registration's pace is known live only
     m_busy->setValue(m_job->liveTilesRead());
+    m_busy->setFormat(m_job->isLive() ? tr("%v of %m tiles") : QString());
     if (m_job->isLive())
         m_state->setText(tr("Stitching live as the scan takes the tiles: %1 of %2 registered").arg(m_job->liveTilesRead()).arg(m_job->tileCount()));
     else if (running)
