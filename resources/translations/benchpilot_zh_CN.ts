@@ -8175,6 +8175,10 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
         <translation>随扫描采集图块实时拼接：已配准 %1 / %2 个</translation>
     </message>
     <message>
+        <source>The scan stopped: nothing is written; the live mosaic begins again when the scan resumes.</source>
+        <translation>扫描已停止：未写出任何文件；扫描继续时实时拼接图重新开始。</translation>
+    </message>
+    <message>
         <source>Stitched into %1: %2</source>
         <translation>已拼接到 %1：%2</translation>
     </message>

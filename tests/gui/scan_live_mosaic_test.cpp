@@ -15,6 +15,7 @@
 #include <QDir>
 #include <QFile>
 #include <QImage>
+#include <QLabel>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -103,6 +104,8 @@ TEST_F(LiveMosaicScreen, ACameraScanGrowsTheMosaicAndWritesItAfterTheLastTileEve
     guitest::pump(300);
     EXPECT_TRUE(QDir(run).entryList({QStringLiteral("mosaic*")}, QDir::Files).isEmpty()) << "a stopped scan leaves no mosaic";
     EXPECT_FALSE(mosaic->isRunning());
+    EXPECT_EQ(mosaic->findChild<QLabel*>(QStringLiteral("stitchState"))->text(),
+              QStringLiteral("The scan stopped: nothing is written; the live mosaic begins again when the scan resumes."));
 
     // Resumed: the tiles of the first session come back from the folder.
     scan->showTab(2);

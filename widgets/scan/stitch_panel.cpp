@@ -80,7 +80,10 @@ StitchPanel::StitchPanel(Source source, QWidget* parent) : QWidget(parent), m_so
     connect(m_job, &dev::jobs::StitchJob::liveTile, m_map, &StitchQualityMap::setLiveTile);
     connect(m_job, &dev::jobs::StitchJob::livePair, m_map, &StitchQualityMap::setLivePair);
     connect(m_job, &dev::jobs::StitchJob::liveTile, this, &StitchPanel::updateUi);
-    connect(m_job, &dev::jobs::StitchJob::liveDropped, this, &StitchPanel::updateUi);
+    connect(m_job, &dev::jobs::StitchJob::liveDropped, this, [this] {
+        updateUi();
+        m_state->setText(tr("The scan stopped: nothing is written; the live mosaic begins again when the scan resumes."));
+    });
     retranslateUi();
     updateUi();
 }
@@ -188,7 +191,7 @@ void StitchPanel::onFinished()
 void StitchPanel::showTile(int index)
 {
     const auto& r = m_job->result();
-    if (!r || index < 0 || static_cast<std::size_t>(index) >= r->tiles.size())
+    if (!r || m_job->isLive() || index < 0 || static_cast<std::size_t>(index) >= r->tiles.size())  // live: no result yet
         return;
     const Eigen::Vector2d d = r->placement.positionsPx[static_cast<std::size_t>(index)] - r->tiles[static_cast<std::size_t>(index)].stagePx;
     QStringList lines;
