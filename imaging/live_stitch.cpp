@@ -235,11 +235,6 @@ void LiveStitcher::work()
         }
         if (!acceptImage(tile, *image))
             continue;
-        if (m_events.tileRead && m_options.thumbnailPx > 0) {
-            lock.unlock();
-            m_events.tileRead(tile, image->grey.width, image->grey.height, std::make_shared<const ImageU16>(thumbnail(image->grey, m_options.thumbnailPx)));
-            lock.lock();
-        }
         hold(tile, image);
         // Against every neighbour registered before it, in index order as the batch does.
         std::vector<int> ready;
@@ -274,6 +269,11 @@ void LiveStitcher::work()
         ++m_doneCount;
         releaseFinished(tile);
         trimHeld();
+        if (m_events.tileRead && m_options.thumbnailPx > 0) {  // after its pairs: "read" means registered too
+            lock.unlock();
+            m_events.tileRead(tile, image->grey.width, image->grey.height, std::make_shared<const ImageU16>(thumbnail(image->grey, m_options.thumbnailPx)));
+            lock.lock();
+        }
     }
 }
 

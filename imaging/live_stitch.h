@@ -39,8 +39,8 @@ struct LiveStitchOptions {
 
 /// What the live stitch says as it goes; each is called on the worker thread.
 struct LiveStitchEvents {
-    /// A tile read (its size in pixels), with a small copy (box-averaged) for drawing the
-    /// growing mosaic.
+    /// A tile read and registered against the neighbours present (its size in pixels), with
+    /// a small copy (box-averaged) for drawing the growing mosaic.
     std::function<void(int tile, int width, int height, std::shared_ptr<const ImageU16> thumbnail)> tileRead;
     /// A pair registered (tile indices as given to the stitcher, a < b).
     std::function<void(const TilePair& pair)> pairRegistered;

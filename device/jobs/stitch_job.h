@@ -80,8 +80,8 @@ signals:
     /// A live stitch began (livePlannedPx() holds its tiles), or was dropped by a stop.
     void liveStarted();
     void liveDropped();
-    /// A tile read (its measured top-left and size in image px, and a small copy) and a
-    /// pair registered, as they happen; then finished() or failed() once the scan is done.
+    /// A pair registered, and a tile read and registered against its neighbours present (its
+    /// measured top-left and size in image px, and a small copy), as they happen; then finished() or failed() once the scan is done.
     void liveTile(int tile, QPointF stagePx, QSize size, std::shared_ptr<const imaging::ImageU16> thumbnail);
     void livePair(const imaging::TilePair& pair);
 
