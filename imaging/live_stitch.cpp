@@ -95,6 +95,13 @@ bool LiveStitcher::acceptImage(int tile, const TileImage& image)
         m_tileW = image.grey.width;
         m_tileH = image.grey.height;
         m_kind = image.kind;
+        if (m_options.flatField) {
+            motion::msg::Problems size = m_options.flatField->checkSize(m_tileW, m_tileH, t.file);
+            if (!size.empty()) {
+                m_problems.insert(m_problems.end(), size.begin(), size.end());
+                return false;
+            }
+        }
         // Neighbours by the plan, loosely: a tile may come up to the search bound away
         // from where the plan put it, and the measured positions decide in the end.
         const double slack = m_options.registration.maxShiftPx;
@@ -184,7 +191,7 @@ std::shared_ptr<const TileImage> LiveStitcher::imageOf(int tile, std::unique_loc
         return h->second;
     const StitchTile t = m_tiles[static_cast<std::size_t>(tile)];
     lock.unlock();
-    motion::msg::Checked<TileImage> read = readTiff(t.path, t.file);
+    motion::msg::Checked<TileImage> read = readTile(t, m_options.flatField.get());
     lock.lock();
     if (!read) {
         m_problems.insert(m_problems.end(), read.problems().begin(), read.problems().end());
@@ -225,13 +232,25 @@ void LiveStitcher::work()
         if (!image) {
             const StitchTile t = m_tiles[static_cast<std::size_t>(tile)];
             lock.unlock();
-            motion::msg::Checked<TileImage> read = readTiff(t.path, t.file);
+            motion::msg::Checked<TileImage> read = readTile(t, m_options.flatField.get());
             lock.lock();
             if (!read) {
                 m_problems.insert(m_problems.end(), read.problems().begin(), read.problems().end());
                 continue;
             }
             image = std::make_shared<const TileImage>(read.take());
+        }
+        if (q.image && m_options.flatField) {  // handed in as taken: flattened here, off the scan's thread
+            TileImage flat = *q.image;
+            const StitchTile t = m_tiles[static_cast<std::size_t>(tile)];
+            lock.unlock();
+            motion::msg::Problems problems = m_options.flatField->apply(flat, t.file);
+            lock.lock();
+            if (!problems.empty()) {
+                m_problems.insert(m_problems.end(), problems.begin(), problems.end());
+                continue;
+            }
+            image = std::make_shared<const TileImage>(std::move(flat));
         }
         if (!acceptImage(tile, *image))
             continue;

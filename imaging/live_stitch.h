@@ -35,6 +35,8 @@ struct LiveStitchOptions {
     PlacementOptions placement;
     double memoryMegabytes = 512;      ///< tile images held (queued and awaiting a neighbour)
     int thumbnailPx = 96;              ///< the thumbnails' longer side; 0 = none
+    /// Each tile divided by it before registration, as the batch stitch does (null: none).
+    std::shared_ptr<const FlatField> flatField;
 };
 
 /// What the live stitch says as it goes; each is called on the worker thread.

@@ -27,7 +27,10 @@ double since(Clock::time_point t0)
 // holds what is needed without the whole set in memory. Any thread may ask.
 class TileCache {
 public:
-    TileCache(const std::vector<StitchTile>& tiles, std::size_t capacity) : m_tiles(tiles), m_capacity(std::max<std::size_t>(3, capacity)) {}
+    TileCache(const std::vector<StitchTile>& tiles, std::size_t capacity, const FlatField* flat)
+        : m_tiles(tiles), m_capacity(std::max<std::size_t>(3, capacity)), m_flat(flat)
+    {
+    }
 
     motion::msg::Checked<std::shared_ptr<const TileImage>> get(int i)
     {
@@ -41,7 +44,7 @@ public:
             }
         }
         const StitchTile& t = m_tiles[static_cast<std::size_t>(i)];
-        motion::msg::Checked<TileImage> read = readTiff(t.path, t.file);
+        motion::msg::Checked<TileImage> read = readTile(t, m_flat);
         if (!read)
             return Result::refused(read.problems());
         auto shared = std::make_shared<const TileImage>(read.take());
@@ -60,6 +63,7 @@ public:
 private:
     const std::vector<StitchTile>& m_tiles;
     std::size_t m_capacity;
+    const FlatField* m_flat;
     std::mutex m_mutex;
     std::list<int> m_order;  ///< most recently used first
     std::map<int, std::pair<std::shared_ptr<const TileImage>, std::list<int>::iterator>> m_held;
@@ -79,6 +83,18 @@ bool areNeighbours(const Eigen::Vector2d& d, int tileW, int tileH, int minOverla
         return false;
     // Side by side, not corner to corner: one way the tiles nearly coincide.
     return !(std::abs(d.x()) > tileW / 2.0 && std::abs(d.y()) > tileH / 2.0);
+}
+
+motion::msg::Checked<TileImage> readTile(const StitchTile& t, const FlatField* flat)
+{
+    motion::msg::Checked<TileImage> read = readTiff(t.path, t.file);
+    if (!read || !flat)
+        return read;
+    TileImage image = read.take();
+    motion::msg::Problems problems = flat->apply(image, t.file);
+    if (!problems.empty())
+        return motion::msg::Checked<TileImage>::refused(std::move(problems));
+    return motion::msg::Checked<TileImage>::ok(std::move(image));
 }
 
 std::vector<TilePair> neighbourPairs(const std::vector<Eigen::Vector2d>& stagePx, int tileW, int tileH, int minOverlapPx)
@@ -155,6 +171,11 @@ motion::msg::Checked<StitchResult> stitch(const std::vector<StitchTile>& tiles, 
     if (!checked)
         return checked;
     StitchResult r = checked.take();
+    if (o.flatField) {
+        motion::msg::Problems size = o.flatField->checkSize(r.tileWidth, r.tileHeight, r.tiles.front().file);
+        if (!size.empty())
+            return Result::refused(std::move(size));
+    }
     std::vector<Eigen::Vector2d> stage;
     for (const StitchTile& t : tiles)
         stage.push_back(t.stagePx);
@@ -163,7 +184,7 @@ motion::msg::Checked<StitchResult> stitch(const std::vector<StitchTile>& tiles, 
     const Clock::time_point t0 = Clock::now();
     r.pairs = neighbourPairs(stage, r.tileWidth, r.tileHeight, o.registration.minOverlapPx);
     const double tileMb = static_cast<double>(r.tileWidth) * r.tileHeight * 2 / 1e6;
-    TileCache cache(r.tiles, static_cast<std::size_t>(o.cacheMegabytes / std::max(0.001, tileMb)));
+    TileCache cache(r.tiles, static_cast<std::size_t>(o.cacheMegabytes / std::max(0.001, tileMb)), o.flatField.get());
     std::atomic<std::size_t> next{0};
     std::mutex problemMutex;
     motion::msg::Problems problems;
@@ -225,7 +246,7 @@ motion::msg::Problems writeMosaic(StitchResult& r, const StitchOptions& o)
         return writer.problems();
     motion::msg::Problems fused = fuseTiles(
         r.placement.positionsPx, r.tileWidth, r.tileHeight,
-        [&](int i) { return readTiff(r.tiles[static_cast<std::size_t>(i)].path, r.tiles[static_cast<std::size_t>(i)].file); }, **writer, o.fusion);
+        [&](int i) { return readTile(r.tiles[static_cast<std::size_t>(i)], o.flatField.get()); }, **writer, o.fusion);
     r.fusionS = since(t2);
     return fused;
 }

@@ -5,6 +5,7 @@
 // scan uses the same pieces one tile at a time (registration.h, placement.h).
 // Plain C++: the caller reads the positions (TileConfiguration, the scan's run log)
 // and words the problems.
+#include "imaging/flat_field.h"
 #include "imaging/fusion.h"
 #include "imaging/placement.h"
 #include "imaging/registration.h"
@@ -14,6 +15,7 @@
 #include <Eigen/Core>
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,6 +37,8 @@ struct StitchOptions {
     /// The stage position (mm) of a point given in the stage-pixel frame, when known:
     /// the mosaic's top-left goes into the OME-XML with it.
     std::function<std::optional<Eigen::Vector2d>(const Eigen::Vector2d& stagePx)> stageMmAt;
+    /// Divides every tile (for registration and fusion) by a blank image's shading; null = none.
+    std::shared_ptr<const FlatField> flatField;
     int threads = 0;                 ///< registration workers; 0 = one a core
     double cacheMegabytes = 512;     ///< tiles kept in memory while registering
 };
@@ -59,6 +63,9 @@ std::vector<TilePair> neighbourPairs(const std::vector<Eigen::Vector2d>& stagePx
 
 /// Every file readable, all of one size and sample kind: or every problem at once.
 motion::msg::Checked<StitchResult> checkTiles(const std::vector<StitchTile>& tiles);
+
+/// Reads tile `t`, flat-field corrected when `flat` is given.
+motion::msg::Checked<TileImage> readTile(const StitchTile& t, const FlatField* flat);
 
 /// The whole job. Refused with problems naming the file at fault; the mosaic file
 /// exists only when all went well.

@@ -94,6 +94,11 @@ std::string stitchJson(const StitchResult& r, double seconds, const std::string&
     }
     s << "],\"rms_correction_px\":" << milli(r.placement.rmsCorrectionPx) << ",\"worst_correction_px\":" << milli(r.placement.worstCorrectionPx)
       << ",\"pairs_rejected\":" << r.placement.rejectedPairs << ",\"tiles_placed_by_stage\":" << byStage;
+    const StageModel& m = r.placement.stageModel;
+    auto tenth = [](double v) { return std::round(v * 10) / 10 == 0 ? 0.0 : std::round(v * 10) / 10; };
+    s << ",\"stage_model\":{\"used\":" << (m.used ? "true" : "false") << ",\"pairs\":" << m.pairs << ",\"scale_x_ppm\":" << tenth(m.scaleXPpm())
+      << ",\"scale_y_ppm\":" << tenth(m.scaleYPpm()) << ",\"rotation_urad\":" << tenth(m.rotationUrad()) << ",\"shear_urad\":" << tenth(m.shearUrad())
+      << "},\"rms_beyond_model_px\":" << milli(r.placement.rmsBeyondModelPx) << ",\"worst_beyond_model_px\":" << milli(r.placement.worstBeyondModelPx);
     s << ",\"mosaic\":{\"file\":";
     jsonString(s, mosaicFile);
     s << ",\"width\":" << r.frame.width << ",\"height\":" << r.frame.height << "}";

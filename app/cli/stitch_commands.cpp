@@ -132,6 +132,22 @@ int stitchRun(Invocation& inv)
         return inv.usage(tr("--blend must be feather or overlay (got '%1')").arg(blend));
     so.fusion.blend = blend == QLatin1String("overlay") ? imaging::Blend::Overlay : imaging::Blend::Feather;
 
+    QString flatPath;
+    if (inv.isSet(QStringLiteral("flat"))) {
+        double dark = 0;
+        if (!inv.number(QStringLiteral("dark"), dark, 0.0))
+            return Usage;
+        if (!(dark >= 0 && dark < 65535))
+            return inv.usage(tr("--dark must be from 0 to 65535 grey levels (got %1)").arg(dark));
+        flatPath = inv.path(inv.value(QStringLiteral("flat")));
+        auto flat = imaging::FlatField::fromFile(flatPath.toStdString(), dark, QFileInfo(flatPath).fileName().toStdString());
+        if (!flat)
+            return inv.usage(ui::words::problems(flat.problems()).join(QLatin1Char('\n')));
+        so.flatField = std::make_shared<const imaging::FlatField>(flat.take());
+    } else if (inv.isSet(QStringLiteral("dark"))) {
+        return inv.usage(tr("--dark is the camera's offset under --flat: give the blank image with --flat"));
+    }
+
     // Where the positions are: --positions, else the run log, else a TileConfiguration.
     QString positions = inv.isSet(QStringLiteral("positions")) ? inv.path(inv.value(QStringLiteral("positions"))) : QString();
     if (positions.isEmpty()) {
@@ -187,7 +203,7 @@ int stitchRun(Invocation& inv)
     const QString outPath = inv.path(inv.isSet(QStringLiteral("out")) ? inv.value(QStringLiteral("out")) : dir.filePath(QStringLiteral("mosaic.ome.tif")));
     QStringList unnamed;
     for (const QString& f : dir.entryList(QDir::Files, QDir::Name))
-        if (isTileImage(f) && !named.contains(f) && dir.filePath(f) != outPath)
+        if (isTileImage(f) && !named.contains(f) && dir.filePath(f) != outPath && QFileInfo(dir.filePath(f)) != QFileInfo(flatPath))
             unnamed << f;
     if (!unnamed.isEmpty())
         return inv.usage(tr("%1 places %2 tiles, but the folder also holds tile images it does not name: %3. "
@@ -241,6 +257,15 @@ int stitchRun(Invocation& inv)
                .arg(static_cast<int>(result->pairs.size()) - accepted - p.rejectedPairs)
                .arg(byStage);
     out << tr("correction from the stage: RMS %1 px, worst %2 px\n").arg(p.rmsCorrectionPx, 0, 'f', 2).arg(p.worstCorrectionPx, 0, 'f', 2);
+    if (p.stageModel.used)
+        out << tr("stage model from %1 pairs: scale x %2 ppm, y %3 ppm, rotation %4 µrad, shear %5 µrad; beyond it RMS %6 px, worst %7 px\n")
+                   .arg(p.stageModel.pairs)
+                   .arg(p.stageModel.scaleXPpm(), 0, 'f', 0)
+                   .arg(p.stageModel.scaleYPpm(), 0, 'f', 0)
+                   .arg(p.stageModel.rotationUrad(), 0, 'f', 0)
+                   .arg(p.stageModel.shearUrad(), 0, 'f', 0)
+                   .arg(p.rmsBeyondModelPx, 0, 'f', 2)
+                   .arg(p.worstBeyondModelPx, 0, 'f', 2);
     if (!so.mosaicPath.empty())
         out << tr("wrote %1 (%2 × %3 px), %4 and %5 in %6 s\n")
                    .arg(QDir::toNativeSeparators(outPath))
@@ -269,6 +294,8 @@ void addStitchCommands(std::vector<Command>& list)
                     option("max-shift-px", "how far registration may move a tile from its stage position, px", "N", "40"),
                     option("repeatability-um", "the stage's repeatability (1σ), µm: the weight of its positions", "UM", "1"),
                     option("blend", "feather (linear in the overlaps) or overlay", "MODE", "feather"),
+                    option("flat", "a blank image taken with the same light and exposure: every tile is divided by its shading", "TIFF"),
+                    option("dark", "the camera's offset (a closed shutter's mean) under --flat, grey levels", "LEVEL", "0"),
                     option("out", "the mosaic file (default: DIR/mosaic.ome.tif)", "FILE"),
                     option("no-mosaic", "register and place only: the TileConfiguration and the report")},
                    stitchRun,
@@ -281,6 +308,8 @@ void addStitchCommands(std::vector<Command>& list)
                          optionParam("rotation", ParamType::Number),
                          optionParam("max-shift-px", ParamType::Number),
                          optionParam("repeatability-um", ParamType::Number),
+                         optionParam("flat", ParamType::File),
+                         optionParam("dark", ParamType::Number),
                          optionParam("out", ParamType::File)};
     // The API's page runs this on the folder scan.run's example fills with the simulated
     // camera's images (scan.run comes first in the method list).

@@ -12,6 +12,8 @@ namespace {
 /// The live view's fastest pace: a person sees no difference above 30 frames a second.
 constexpr int kSimLiveMinPeriodMs = 33;
 constexpr double kSimMaxExposureMs = 60000;
+/// How often a live view with no simulated stage looks again.
+constexpr int kSimLiveRetryMs = 1000;
 
 std::int64_t hostNowUs()
 {
@@ -29,9 +31,15 @@ SimCamera::SimCamera(WorkPointSource workPoint, const SimCameraSettings& setting
             return;
         const auto at = m_workPoint ? m_workPoint() : std::nullopt;
         if (!at) {
-            emit failed(0, motion::msg::Problem("", motion::msg::make("camera.sim.no_stage")));
+            // Said once, then looked for again now and then: the picture comes back by
+            // itself once a simulator is connected.
+            if (!m_liveWithoutStage)
+                emit failed(0, motion::msg::Problem("", motion::msg::make("camera.sim.no_stage")));
+            m_liveWithoutStage = true;
+            m_liveTimer.start(kSimLiveRetryMs);
             return;
         }
+        m_liveWithoutStage = false;
         renderAsync(*at, m_settings.geometry, 0, true);
     });
 }
@@ -80,6 +88,7 @@ void SimCamera::startLive()
 void SimCamera::stopLive()
 {
     m_live = false;
+    m_liveWithoutStage = false;
     m_liveTimer.stop();
 }
 

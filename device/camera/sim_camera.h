@@ -66,6 +66,7 @@ private:
     bool m_open = false;
     bool m_live = false;
     bool m_liveInFlight = false;
+    bool m_liveWithoutStage = false;  ///< the live view found no stage: said once, looked for again
     std::uint64_t m_sequence = 0;
     QTimer m_liveTimer;
 };

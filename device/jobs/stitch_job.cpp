@@ -80,16 +80,26 @@ bool StitchJob::start(const StitchRequest& request, motion::msg::Message* error)
     m_pixelUm = pixelUm;
     m_folder = request.folder;
     m_lastWasLive = false;
-    const imaging::StitchOptions so = optionsFor(request.plan, request.folder, request, pixelUm);
+    imaging::StitchOptions so = optionsFor(request.plan, request.folder, request, pixelUm);
     const std::shared_ptr<Shared> shared = m_shared;
     const QString folder = request.folder;
     const QString mosaic = QString::fromStdString(so.mosaicPath);
     // A thread of its own, detached: the job object may go (its window closed) while a
     // folder stitches; the result is then dropped, and the files are whole either way.
-    std::thread([shared, tiles = std::move(tiles), so, folder, mosaic] {
+    const QString flatPath = request.flatPath;
+    const double dark = request.darkLevel;
+    std::thread([shared, tiles = std::move(tiles), so = std::move(so), folder, mosaic, flatPath, dark]() mutable {
         QElapsedTimer clock;
         clock.start();
-        auto result = imaging::stitch(tiles, so);
+        auto result = [&]() -> motion::msg::Checked<imaging::StitchResult> {
+            if (!flatPath.isEmpty()) {
+                auto flat = imaging::FlatField::fromFile(flatPath.toStdString(), dark, QFileInfo(flatPath).fileName().toStdString());
+                if (!flat)
+                    return motion::msg::Checked<imaging::StitchResult>::refused(flat.problems());
+                so.flatField = std::make_shared<const imaging::FlatField>(flat.take());
+            }
+            return imaging::stitch(tiles, so);
+        }();
         complete(shared, std::move(result), folder, mosaic, clock, 0);
     }).detach();
     return true;

@@ -39,6 +39,8 @@ struct StitchRequest {
     motion::scan::ScanPlan plan;         ///< the camera's geometry comes from here
     double repeatabilityUm = 1.0;        ///< the stage's (1σ): the weight of its positions
     QString mosaicName = QStringLiteral("mosaic.ome.tif");
+    QString flatPath;                    ///< a blank image to divide every tile by; "" = none
+    double darkLevel = 0;                ///< the camera's offset under the blank, grey levels
 };
 
 class StitchJob : public QObject {

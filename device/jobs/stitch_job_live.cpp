@@ -9,6 +9,7 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#include <QFileInfo>
 
 #include <thread>
 
@@ -70,7 +71,15 @@ void StitchJob::onScanState()
         planned.push_back({file, dir.filePath(QString::fromStdString(file)).toStdString(), Eigen::Vector2d(px.xMm, px.yMm)});
         m_livePlannedPx.emplace_back(px.xMm, px.yMm);
     }
+    if (!request.flatPath.isEmpty()) {
+        // A flat-field that cannot be read stitches nothing live; Stitch then says why.
+        auto flat = imaging::FlatField::fromFile(request.flatPath.toStdString(), request.darkLevel, QFileInfo(request.flatPath).fileName().toStdString());
+        if (!flat)
+            return;
+        live->options.flatField = std::make_shared<const imaging::FlatField>(flat.take());
+    }
     imaging::LiveStitchOptions lo;
+    lo.flatField = live->options.flatField;
     lo.registration = live->options.registration;
     lo.placement = live->options.placement;
     lo.memoryMegabytes = live->options.cacheMegabytes;

@@ -5668,6 +5668,155 @@ Keep that log aside and start this test afresh?</source>
     </message>
 </context>
 <context>
+    <name>ui::MosaicCanvas</name>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>%1 µm</source>
+        <translation>%1 µm</translation>
+    </message>
+    <message>
+        <source>The mosaic shows here after a stitch: zoom with the wheel, drag to pan, double-click to move the stage there.</source>
+        <translation>拼接完成后拼接图显示在这里：用滚轮缩放，拖动平移，双击将载物台移到该处。</translation>
+    </message>
+</context>
+<context>
+    <name>ui::MosaicFolder</name>
+    <message>
+        <source>%1 holds no stitched mosaic (no .stitch.json report): stitch it first.</source>
+        <translation>%1 中没有拼接好的拼接图（没有 .stitch.json 报告）：请先拼接。</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1, line %2, column %3: %4</source>
+        <translation>%1，第 %2 行，第 %3 列：%4</translation>
+    </message>
+    <message>
+        <source>%1 is not a stitch report BenchPilot can show: %2</source>
+        <translation>%1 不是 BenchPilot 能显示的拼接报告：%2</translation>
+    </message>
+    <message>
+        <source>it names no mosaic file in the folder</source>
+        <translation>报告未指明文件夹中的拼接图文件</translation>
+    </message>
+    <message>
+        <source>its mosaic does not say where its top-left pixel was on the stage</source>
+        <translation>其拼接图未记录左上角像素在载物台上的位置</translation>
+    </message>
+    <message>
+        <source>it lists no tiles</source>
+        <translation>报告中没有图块</translation>
+    </message>
+    <message>
+        <source>tile %1 has no file, stage_px or registered_px</source>
+        <translation>图块 %1 缺少 file、stage_px 或 registered_px</translation>
+    </message>
+    <message>
+        <source>The tile size comes from the tiles: %1</source>
+        <translation>图块尺寸取自图块文件：%1</translation>
+    </message>
+</context>
+<context>
+    <name>ui::MosaicViewer</name>
+    <message>
+        <source>The mosaic %1 cannot be shown: %2</source>
+        <translation>无法显示拼接图 %1：%2</translation>
+    </message>
+    <message>
+        <source>(%1, %2) mm</source>
+        <translation>(%1, %2) mm</translation>
+    </message>
+    <message>
+        <source>The stage is not connected: it cannot go to %1.</source>
+        <translation>载物台未连接：无法移到 %1。</translation>
+    </message>
+    <message>
+        <source>Home the stage first: going to %1 in the mosaic is a move to an absolute position.</source>
+        <translation>请先将载物台回零：移到拼接图中的 %1 是一次绝对位置移动。</translation>
+    </message>
+    <message>
+        <source>A scan is running: the stage goes to %1 once it has finished.</source>
+        <translation>扫描正在运行：扫描结束后载物台才能移到 %1。</translation>
+    </message>
+    <message>
+        <source>%1 is outside the stage&apos;s soft limits (X %2 to %3 mm, Y %4 to %5 mm): the stage stays where it is.</source>
+        <translation>%1 超出载物台的软限位（X %2 至 %3 mm，Y %4 至 %5 mm）：载物台保持不动。</translation>
+    </message>
+    <message>
+        <source>Move the stage to %1? That is %2 mm from where it is, farther than one camera field (%3 mm).</source>
+        <translation>将载物台移到 %1？距当前位置 %2 mm，超过一个相机视场（%3 mm）。</translation>
+    </message>
+    <message>
+        <source>The stage goes to %1, the point double-clicked in the mosaic.</source>
+        <translation>载物台正移到 %1，即在拼接图中双击的点。</translation>
+    </message>
+    <message>
+        <source>X %1  Y %2 mm under the cursor</source>
+        <translation>光标处 X %1  Y %2 mm</translation>
+    </message>
+    <message>
+        <source>zoom %1 %, pyramid level %2 (1:%3)</source>
+        <translation>缩放 %1 %，金字塔层级 %2（1:%3）</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>适应窗口</translation>
+    </message>
+    <message>
+        <source>Show the whole mosaic (F)</source>
+        <translation>显示整幅拼接图（F）</translation>
+    </message>
+    <message>
+        <source>+</source>
+        <translation>+</translation>
+    </message>
+    <message>
+        <source>Zoom in (+; or the mouse wheel, about the cursor)</source>
+        <translation>放大（+；或用鼠标滚轮，以光标为中心）</translation>
+    </message>
+    <message>
+        <source>−</source>
+        <translation>−</translation>
+    </message>
+    <message>
+        <source>Zoom out (−)</source>
+        <translation>缩小（−）</translation>
+    </message>
+    <message>
+        <source>Tiles</source>
+        <translation>图块</translation>
+    </message>
+    <message>
+        <source>Show each tile&apos;s outline where registration put it (T)</source>
+        <translation>按配准后的位置显示每个图块的轮廓（T）</translation>
+    </message>
+    <message>
+        <source>Quality</source>
+        <translation>质量</translation>
+    </message>
+    <message>
+        <source>Show each tile&apos;s correction from its stage position as an arrow, and the tiles placed by the stage hatched (Q)</source>
+        <translation>以箭头显示每个图块相对其载物台位置的修正，并以斜线标出按载物台位置放置的图块（Q）</translation>
+    </message>
+    <message>
+        <source>Drag or use the arrow keys to pan; double-click to move the stage to that point</source>
+        <translation>拖动或用方向键平移；双击将载物台移到该点</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>打开</translation>
+    </message>
+    <message>
+        <source>Show the mosaic stitched earlier in the output folder: its .stitch.json report and the mosaic it names (O)</source>
+        <translation>显示输出文件夹中先前拼接的拼接图：其 .stitch.json 报告及报告所指的拼接图（O）</translation>
+    </message>
+</context>
+<context>
     <name>ui::NumberField</name>
     <message>
         <source>the value</source>
@@ -12268,6 +12417,16 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <source>the dot nearest the centre (%1 px, %2 px from it) is cut by the edge of the image: its centre cannot be measured</source>
         <comment>imaging.dot.at_edge</comment>
         <translation>离中心最近的圆点（距中心 %1 px，%2 px）被图像边缘截断：无法测量其中心</translation>
+    </message>
+    <message>
+        <source>the mosaic has %2 samples of %1 bits a pixel: a mosaic to view must be 8- or 16-bit grey</source>
+        <comment>imaging.pyramid.unsupported</comment>
+        <translation>拼接图每像素有 %2 个 %1 位采样：可查看的拼接图必须是 8 位或 16 位灰度</translation>
+    </message>
+    <message>
+        <source>level %1 of the mosaic&apos;s pyramid cannot be read (%2)</source>
+        <comment>imaging.pyramid.bad_level</comment>
+        <translation>无法读取拼接图金字塔的第 %1 层（%2）</translation>
     </message>
 </context>
 <context>

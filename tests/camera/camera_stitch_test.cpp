@@ -214,4 +214,14 @@ TEST(CameraStitch, RegisteredPositionsMatchTheTrueWorkPointsAndBeatTheGratingOnA
     EXPECT_GT(measured.rms, 1.0) << "the pitch error shows in the grating's positions";
     EXPECT_LE(registered.rms, 0.3);
     EXPECT_LT(registered.rms, measured.rms / 4) << "registration finds where the camera truly looked";
+
+    // The pitch error is the grating's scale against the camera's: the stage model finds
+    // it (+5 µm/mm in X, −4 µm/mm in Y), so the prior no longer pulls against the pairs.
+    const imaging::StageModel& model = result->placement.stageModel;
+    std::printf("stage model: used %d, scale x %.0f ppm, y %.0f ppm, rotation %.0f µrad, shear %.0f µrad\n", model.used, model.scaleXPpm(),
+                model.scaleYPpm(), model.rotationUrad(), model.shearUrad());
+    EXPECT_TRUE(model.used);
+    EXPECT_NEAR(model.scaleXPpm(), 5000, 1000);  // three rows of 256 px: a few hundred ppm of spread
+    EXPECT_NEAR(model.scaleYPpm(), -4000, 1000);
+    EXPECT_LE(registered.rms, 0.1) << "with the stage model, nothing pulls the tiles off the pairs";
 }

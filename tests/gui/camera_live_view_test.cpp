@@ -3,6 +3,7 @@
 // focus figure rises as the picture sharpens, 16-bit auto-contrast maps its
 // percentiles, the scale bar is as long as the pixel size says, and the camera's state
 // (source, exposure, paused, contrast, the scan's option) survives a language switch.
+#include "device/camera/sim_camera.h"
 #include "device/camera/tile_tiff.h"
 #include "device/jobs/scan_runner.h"
 #include "fake_camera.h"
@@ -32,6 +33,8 @@
 #include <QTest>
 
 #include <gtest/gtest.h>
+
+#include <atomic>
 
 using guitest::FakeCamera;
 using guitest::waitFor;
@@ -208,6 +211,42 @@ TEST(CameraLiveView, ASnapIsWrittenWithItsOwnBitDepth)
     EXPECT_EQ(back.format, dev::camera::PixelFormat::Grey16);
     EXPECT_EQ(back.pixels, rig.camera()->captureFrame.pixels);
     EXPECT_NE(description.find("sim"), std::string::npos) << description;
+}
+
+TEST(CameraLiveView, ACameraWithNothingToLookAtSaysSoInTheViewOnceAndRecovers)
+{
+    // The in-process simulated camera opened while no simulator is connected (the GUI on
+    // a serial port): the view used to say "Opening the camera…" for ever.
+    std::atomic<bool> stage{false};
+    ui::CameraSession session;
+    dev::camera::SimCameraSettings settings;
+    settings.geometry.sensorWidthPx = settings.geometry.sensorHeightPx = 64;
+    session.setFactory([&](const QString&, QString*) {
+        return std::make_unique<dev::camera::SimCamera>(
+            [&]() -> std::optional<dev::camera::WorkPoint> {
+                if (!stage)
+                    return std::nullopt;
+                return dev::camera::WorkPoint{10, 10, std::nullopt};
+            },
+            settings);
+    });
+    QWidget window;
+    auto* panel = new ui::CameraPanel(&session, nullptr, &window);
+    window.resize(900, 700);
+    panel->resize(900, 700);
+    window.show();
+    int said = 0;
+    QObject::connect(&session, &ui::CameraSession::problem, [&](const QString&) { ++said; });
+    session.open(QStringLiteral("sim"));
+    ASSERT_TRUE(waitFor([&] { return !session.liveProblem().isEmpty(); }, 3000));
+    const QString shown = panel->liveView()->message();
+    EXPECT_TRUE(shown.contains(QStringLiteral("no simulated stage"))) << shown.toStdString();
+    QTest::qWait(2500);  // two more looks at the stage
+    EXPECT_EQ(said, 1) << "the banner is told once, not every look";
+
+    stage = true;
+    ASSERT_TRUE(waitFor([&] { return panel->liveView()->hasPicture(); }, 5000)) << panel->liveView()->message().toStdString();
+    EXPECT_TRUE(session.liveProblem().isEmpty());
 }
 
 TEST(CameraLiveView, ASourceThatCannotBeReadIsRefusedWithTheForms)

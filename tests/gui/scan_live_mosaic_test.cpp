@@ -7,6 +7,7 @@
 #include "gui_window.h"
 #include "imaging/tile_configuration.h"
 #include "widgets/camera/camera_session.h"
+#include "widgets/scan/mosaic_viewer.h"
 #include "widgets/scan/scan_screen.h"
 #include "widgets/scan/stitch_panel.h"
 #include "widgets/scan/stitch_quality_map.h"
@@ -127,6 +128,7 @@ TEST_F(LiveMosaicScreen, ACameraScanGrowsTheMosaicAndWritesItAfterTheLastTileEve
     // The map grew: every tile has its thumbnail, every pair its colour.
     EXPECT_EQ(mosaic->map()->picturedTiles(), tiles);
     EXPECT_EQ(mosaic->map()->pairCount(), 4);
+    EXPECT_TRUE(mosaic->viewer()->hasMosaic()) << "the viewer shows the mosaic the live stitch wrote";
 
     // A Stitch of the folder afterwards places the tiles where the live stitch did.
     const auto live = registered(run);

@@ -171,6 +171,47 @@ TEST(LiveStitch, APairIsRegisteredAsSoonAsItsSecondTileIsThere)
     EXPECT_EQ(thumbs.size(), tiles.size());
 }
 
+TEST(LiveStitch, WithAFlatFieldItFlattensAsTheBatchStitchDoesAndRefusesABlankOfAnotherSize)
+{
+    const imagingtest::Texture tex(57);
+    const imagingtest::Grid g = imagingtest::makeGrid(tex);
+    const std::vector<imaging::StitchTile> tiles = writeLiveGrid(g, liveScratch("flat"));
+    // A blank brighter in the middle than at the edges, as a lamp's would be.
+    imaging::ImageU16 blank(g.tileW, g.tileH);
+    for (int y = 0; y < g.tileH; ++y)
+        for (int x = 0; x < g.tileW; ++x)
+            blank.at(x, y) = static_cast<std::uint16_t>(30000 - 40 * std::abs(x - g.tileW / 2) - 40 * std::abs(y - g.tileH / 2));
+    auto flat = imaging::FlatField::fromBlank(blank, 100, "blank.tif");
+    ASSERT_TRUE(flat.ok()) << motion::msg::debugFormat(flat.problems());
+    imaging::StitchOptions so;
+    so.flatField = std::make_shared<const imaging::FlatField>(flat.take());
+    auto b = imaging::stitch(tiles, so);
+    ASSERT_TRUE(b.ok()) << motion::msg::debugFormat(b.problems());
+    imaging::LiveStitchOptions o;
+    o.flatField = so.flatField;
+    std::vector<int> rows(tiles.size());
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        rows[i] = static_cast<int>(i);
+    // Half handed in as taken, half read from their files: both are flattened.
+    imaging::LiveStitcher live(planned(tiles), o);
+    for (int i : rows)
+        ASSERT_TRUE(live.add(i, tiles[static_cast<std::size_t>(i)].stagePx,
+                             i % 2 ? nullptr : std::make_shared<const imaging::TileImage>(imaging::TileImage{g.tiles[static_cast<std::size_t>(i)], imaging::SampleKind::Grey16})));
+    auto r = live.finish();
+    ASSERT_TRUE(r.ok()) << motion::msg::debugFormat(r.problems());
+    expectSameAsBatch(*r, *b);
+
+    auto small = imaging::FlatField::fromBlank(imaging::ImageU16(32, 32, 20000), 100, "small.tif");
+    ASSERT_TRUE(small.ok());
+    o.flatField = std::make_shared<const imaging::FlatField>(small.take());
+    imaging::LiveStitcher wrong(planned(tiles), o);
+    for (int i : rows)
+        ASSERT_TRUE(wrong.add(i, tiles[static_cast<std::size_t>(i)].stagePx));
+    auto refused = wrong.finish();
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.error().id, "imaging.flat.size");
+}
+
 TEST(LiveStitch, KeepsWithinItsMemoryByReadingTilesAgainFromTheirFiles)
 {
     const imagingtest::Texture tex(54);

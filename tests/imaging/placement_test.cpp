@@ -128,3 +128,69 @@ TEST(Placement, OneBadPairIsRejectedAndTheRowHolds)
     for (int c = 5; c < 9; ++c)
         EXPECT_NEAR(p.positionsPx[static_cast<std::size_t>(c + 1)].x() - p.positionsPx[static_cast<std::size_t>(c)].x(), 101.0, 0.1);
 }
+
+namespace {
+
+// A 6 × 4 scan whose grating reads 1.5 % long in x, 1 % short in y and leans 4 mrad:
+// the pairs see the true steps, the stage's positions drift from them across the mosaic.
+imagingtest::Grid scaledStageGrid(const imagingtest::Texture& tex, Eigen::Matrix2d* stageOfTrue)
+{
+    imagingtest::Grid g;
+    g.cols = 6;
+    g.rows = 4;
+    *stageOfTrue << 1.015, 0.004, 0.0, 0.99;
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+    for (int r = 0; r < g.rows; ++r)
+        for (int c = 0; c < g.cols; ++c) {
+            const Eigen::Vector2d truth(c * g.stepX + jitter(rng), r * g.stepY + jitter(rng));
+            g.truePx.push_back(truth);
+            g.stagePx.push_back(*stageOfTrue * truth);
+        }
+    for (std::size_t i = 0; i < g.truePx.size(); ++i)
+        g.tiles.push_back(imagingtest::cutTile(tex, 300 + g.truePx[i].x(), 200 + g.truePx[i].y(), g.tileW, g.tileH, 40, 500 + static_cast<unsigned>(i)));
+    return g;
+}
+
+} // namespace
+
+TEST(Placement, AStageScaleErrorIsFittedAndNeitherPullsTheTilesNorTripsTheBound)
+{
+    const imagingtest::Texture tex(31);
+    Eigen::Matrix2d stageOfTrue;
+    const imagingtest::Grid g = scaledStageGrid(tex, &stageOfTrue);
+    // Across 550 px the drift reaches ±4 px from the centre: more than this bound.
+    imaging::PlacementOptions o;
+    o.maxCorrectionPx = 3;
+
+    std::vector<imaging::TilePair> pairs = imagingtest::registerGrid(g);
+    const imaging::Placement p = imaging::placeTiles(g.stagePx, pairs, o);
+    ASSERT_TRUE(p.stageModel.used);
+    // The model maps the stage's positions back onto the camera's: M = stageOfTrue⁻¹.
+    EXPECT_LT((p.stageModel.m * stageOfTrue - Eigen::Matrix2d::Identity()).cwiseAbs().maxCoeff(), 1e-3) << p.stageModel.m;
+    EXPECT_NEAR(p.stageModel.scaleXPpm(), (1 / 1.015 - 1) * 1e6, 1000);
+    EXPECT_NEAR(p.stageModel.scaleYPpm(), (1 / 0.99 - 1) * 1e6, 1000);
+    EXPECT_EQ(p.rejectedPairs, 0);
+    EXPECT_LT(imagingtest::rmsRelativeError(p.positionsPx, g.truePx), 0.3);
+    EXPECT_LT(p.rmsBeyondModelPx, 0.5);
+    EXPECT_GT(p.rmsCorrectionPx, 2.0);  // against the stage as it read
+
+    // The stage's positions taken as they are: the bound rejects good pairs.
+    o.fitStageModel = false;
+    std::vector<imaging::TilePair> again = imagingtest::registerGrid(g);
+    const imaging::Placement raw = imaging::placeTiles(g.stagePx, again, o);
+    EXPECT_FALSE(raw.stageModel.used);
+    EXPECT_GT(raw.rejectedPairs, 0);
+}
+
+TEST(Placement, AStagesRandomErrorsAreNotMistakenForAStageModel)
+{
+    const imagingtest::Texture tex(32);
+    for (unsigned seed = 1; seed <= 4; ++seed) {
+        const imagingtest::Grid g = imagingtest::makeGrid(tex, 40, seed);
+        std::vector<imaging::TilePair> pairs = imagingtest::registerGrid(g);
+        const imaging::Placement p = imaging::placeTiles(g.stagePx, pairs, {});
+        EXPECT_FALSE(p.stageModel.used) << "seed " << seed << ": " << p.stageModel.m;
+        EXPECT_LT(imagingtest::rmsRelativeError(p.positionsPx, g.truePx), 0.3) << "seed " << seed;
+    }
+}

@@ -164,3 +164,33 @@ TEST(StitchCli, TheCameraGeometryTurnsTheLogsMillimetresIntoPixels)
     EXPECT_NE(wrong.out.find("\"accepted\":false"), std::string::npos);
     EXPECT_FALSE(exists(dir + "/scan/mosaic.ome.tif"));
 }
+
+TEST(StitchCli, ABlankImageInTheFolderIsTheFlatFieldNotAnUnnamedTile)
+{
+    const imagingtest::Texture tex(52);
+    const imagingtest::Grid g = imagingtest::makeGrid(tex);
+    const std::string dir = scratchDir("flat");
+    writeScan(g, dir + "/scan");
+    ASSERT_TRUE(imaging::writeTiff(dir + "/scan/blank.tif", imagingtest::blankTile(g.tileW, g.tileH, 20000, 30, 3)).empty());
+
+    // Without --flat the blank is one more image the log does not name.
+    CliRun plain = cli("stitch '" + dir + "/scan' --pixel-um 0.65 --out '" + dir + "/out/m.ome.tif'", dir);
+    EXPECT_EQ(plain.code, 1) << plain.err;
+    EXPECT_NE(plain.err.find("blank.tif"), std::string::npos) << plain.err;
+
+    CliRun ok = cli("stitch '" + dir + "/scan' --pixel-um 0.65 --flat '" + dir + "/scan/blank.tif' --dark 100 --out '" + dir + "/out/m.ome.tif'", dir);
+    EXPECT_EQ(ok.code, 0) << ok.err;
+    EXPECT_TRUE(exists(dir + "/out/m.ome.tif"));
+
+    // A blank of another size: refused before any work, naming it; no mosaic.
+    std::remove((dir + "/scan/blank.tif").c_str());
+    ASSERT_TRUE(imaging::writeTiff(dir + "/small.tif", imagingtest::blankTile(64, 64, 20000, 30, 3)).empty());
+    CliRun size = cli("stitch '" + dir + "/scan' --pixel-um 0.65 --flat '" + dir + "/small.tif' --out '" + dir + "/out/n.ome.tif'", dir);
+    EXPECT_EQ(size.code, 1) << size.err;
+    EXPECT_NE(size.err.find("small.tif"), std::string::npos) << size.err;
+    EXPECT_FALSE(exists(dir + "/out/n.ome.tif"));
+
+    CliRun darkAlone = cli("stitch '" + dir + "/scan' --pixel-um 0.65 --dark 100", dir);
+    EXPECT_EQ(darkAlone.code, 1);
+    EXPECT_NE(darkAlone.err.find("--flat"), std::string::npos) << darkAlone.err;
+}

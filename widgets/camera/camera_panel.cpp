@@ -279,6 +279,10 @@ void CameraPanel::updateUi()
         m_view->clear(opening ? tr("Opening the camera…") : tr("No picture: open a camera."));
     else if (cam && !cam->capabilities().live && !m_view->hasPicture())
         m_view->clear(tr("This source gives no live picture: each snap is shown here."));
+    else if (!m_session->liveProblem().isEmpty())
+        m_view->clear(tr("No picture: %1").arg(m_session->liveProblem()));
+    else if (!m_view->hasPicture())
+        m_view->clear(tr("Waiting for the first picture…"));
 }
 
 void CameraPanel::retranslateUi()

@@ -69,15 +69,23 @@ bool CameraSession::open(const QString& source)
         emit stateChanged();
     });
     connect(cam, &dev::camera::Camera::closed, this, [this] { emit stateChanged(); });
-    connect(cam, &dev::camera::Camera::liveFrame, this, &CameraSession::liveFrame);
+    connect(cam, &dev::camera::Camera::liveFrame, this, [this](const dev::camera::Frame& frame) {
+        const bool recovered = !m_liveProblem.isEmpty();
+        m_liveProblem.clear();
+        emit liveFrame(frame);
+        if (recovered)
+            emit stateChanged();
+    });
     connect(cam, &dev::camera::Camera::failed, this, [this, cam](std::uint64_t requestId, const motion::msg::Problem& p) {
         if (requestId != 0)
             return;  // a capture's failure is its asker's to tell
-        const bool wasOpening = m_opening;
         m_opening = false;
-        emit problem(tr("Camera %1: %2").arg(cam->source(), ui::words::problem(p)));
-        if (wasOpening)
-            emit stateChanged();
+        // Said once on the banner; the view keeps saying it until a frame comes.
+        const QString why = ui::words::problem(p);
+        if (why != m_liveProblem)
+            emit problem(tr("Camera %1: %2").arg(cam->source(), why));
+        m_liveProblem = why;
+        emit stateChanged();
     });
     m_opening = true;
     emit stateChanged();
@@ -100,6 +108,7 @@ void CameraSession::close()
 void CameraSession::drop()
 {
     m_opening = false;
+    m_liveProblem.clear();
     if (!m_camera)
         return;
     std::unique_ptr<dev::camera::Camera> cam = std::move(m_camera);

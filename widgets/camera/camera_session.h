@@ -54,6 +54,9 @@ public:
     QString source() const { return m_source; }
     void setSource(const QString& source) { m_source = source.trimmed(); }
 
+    /// Why the open camera's live picture stopped coming (worded), until the next frame; "" when it comes.
+    QString liveProblem() const { return m_liveProblem; }
+
     double exposureMs() const { return m_exposureMs; }
     void setExposureMs(double ms);
     /// While a scan takes its tiles with the camera, it is not closed or swapped under it.
@@ -75,6 +78,7 @@ private:
     Lister m_lister;
     std::unique_ptr<dev::camera::Camera> m_camera;
     QString m_source;
+    QString m_liveProblem;
     QStringList m_recent;
     double m_exposureMs = 10;
     bool m_autoContrast = true;

@@ -48,6 +48,8 @@ public:
 
     const ProcessedFrame& shown() const { return m_shown; }
     bool hasPicture() const { return !m_shown.image.isNull(); }
+    /// What the view says in place of a picture ("" while it shows one).
+    QString message() const { return hasPicture() ? QString() : m_message; }
     /// The pixel size the scale bar uses: the frame's, else the fallback; 0 = none.
     double pixelUm() const;
     /// The bar as drawn now (its length in µm and on screen).

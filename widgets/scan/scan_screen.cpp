@@ -12,6 +12,7 @@
 #include "widgets/camera/live_view.h"
 #include "widgets/scan/scan_plan_form.h"
 #include "widgets/scan/scan_stage_map.h"
+#include "widgets/scan/mosaic_viewer.h"
 #include "widgets/scan/stitch_panel.h"
 
 #include "widgets/wording/wording.h"
@@ -302,6 +303,9 @@ void ScanScreen::setCameraSession(CameraSession* session)
     });
     m_stitchPanel->setObjectName(QStringLiteral("scanMosaic"));
     m_stitchPanel->followScan(m_runner);
+    // A double-click in the mosaic is a move like any other: the long-move question when far.
+    m_stitchPanel->viewer()->setStage(m_stage);
+    m_stitchPanel->viewer()->setConfirm([this](const QString& q) { return m_confirmLongMove ? m_confirmLongMove(q) : confirm(q); });
     m_leftTabs->addTab(m_stitchPanel, tr("Mosaic"));
     connect(m_stitchPanel, &StitchPanel::problem, this, &ScanScreen::problem);
     connect(m_stitchPanel, &StitchPanel::notice, this, &ScanScreen::notice);

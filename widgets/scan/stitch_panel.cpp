@@ -1,6 +1,8 @@
 #include "widgets/scan/stitch_panel.h"
 
 #include "widgets/common/button_key.h"
+#include "widgets/scan/mosaic_folder.h"
+#include "widgets/scan/mosaic_viewer.h"
 #include "widgets/scan/stitch_quality_map.h"
 #include "widgets/wording/wording.h"
 
@@ -12,6 +14,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSaveFile>
+#include <QSplitter>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -61,7 +64,14 @@ StitchPanel::StitchPanel(Source source, QWidget* parent) : QWidget(parent), m_so
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addWidget(m_summary);
     m_map = new StitchQualityMap;
-    layout->addWidget(m_map, 1);
+    m_viewer = new MosaicViewer;
+    m_viewer->setObjectName(QStringLiteral("mosaicViewer"));
+    auto* views = new QSplitter(Qt::Horizontal);  // the tab is wider than it is tall
+    views->addWidget(m_viewer);
+    views->addWidget(m_map);
+    views->setStretchFactor(0, 3);
+    views->setStretchFactor(1, 1);
+    layout->addWidget(views, 1);
     m_tile = new QLabel;
     m_tile->setObjectName(QStringLiteral("stitchTile"));
     m_tile->setWordWrap(true);
@@ -84,6 +94,20 @@ StitchPanel::StitchPanel(Source source, QWidget* parent) : QWidget(parent), m_so
         updateUi();
         m_state->setText(tr("The scan stopped: nothing is written; the live mosaic begins again when the scan resumes."));
     });
+    connect(m_viewer, &MosaicViewer::problem, this, &StitchPanel::problem);
+    connect(m_viewer, &MosaicViewer::notice, this, &StitchPanel::notice);
+    connect(m_viewer, &MosaicViewer::openRequested, this, [this] {
+        const dev::jobs::StitchRequest request = m_source();
+        QString error;
+        const auto shown = loadStitchedFolder(request.folder, request.plan.camera, &error);
+        if (!shown) {
+            emit problem(error);
+            return;
+        }
+        m_camera = request.plan.camera;
+        m_map->setResult(shown->result);
+        m_viewer->showStitch(shown->result, m_camera, shown->mosaicPath);
+    });
     retranslateUi();
     updateUi();
 }
@@ -99,7 +123,9 @@ bool StitchPanel::stitch()
         return false;
     }
     m_folder = request.folder;
+    m_camera = request.plan.camera;
     m_map->clear();
+    m_viewer->clear();
     m_summary->clear();
     m_tile->clear();
     updateUi();
@@ -109,6 +135,7 @@ bool StitchPanel::stitch()
 void StitchPanel::setScanRunning(bool running)
 {
     m_scanRunning = running;
+    m_viewer->setScanRunning(running);
     updateUi();
 }
 
@@ -118,6 +145,7 @@ void StitchPanel::onLiveStarted()
 {
     m_folder = m_job->folder();
     const motion::scan::Camera camera = m_source().plan.camera;
+    m_camera = camera;  // the viewer shows the result with it
     const double px = 1000 / std::max(1e-9, motion::scan::pixelAtSampleUm(camera));
     m_map->beginLive(m_job->livePlannedPx(), QSizeF(motion::scan::fieldWidthMm(camera) * px, motion::scan::fieldHeightMm(camera) * px));
     m_summary->clear();
@@ -169,6 +197,8 @@ void StitchPanel::onFinished()
     if (!r)
         return;
     m_map->setResult(*r);
+    if (!m_job->written().isEmpty())
+        m_viewer->showStitch(*r, m_camera, m_job->written().front());
     const QStringList lines = summaryLines();
     m_summary->setText(lines.join(QLatin1Char('\n')));
     QStringList written = m_job->written();

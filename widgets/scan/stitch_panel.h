@@ -1,8 +1,9 @@
 #pragma once
 // The Scan screen's Mosaic tab: stitches the scan's output folder (its run log and the
 // images the camera took) into the mosaic with the plan's camera, off the GUI thread, and
-// shows the quality map with its summary; a click on a tile shows its pairs. Writes the
-// quality map as quality-map.png beside the mosaic.
+// shows the mosaic in the mosaic viewer beside the quality map with its summary; a click
+// on a tile of the map shows its pairs. Writes the quality map as quality-map.png beside
+// the mosaic.
 #include "device/jobs/stitch_job.h"
 
 #include <QWidget>
@@ -15,6 +16,7 @@ class QPushButton;
 
 namespace ui {
 
+class MosaicViewer;
 class StitchQualityMap;
 
 class StitchPanel : public QWidget {
@@ -28,6 +30,7 @@ public:
     bool stitch();
     bool isRunning() const { return m_job->isRunning(); }
     StitchQualityMap* map() const { return m_map; }
+    MosaicViewer* viewer() const { return m_viewer; }
     QString summaryText() const;
     QString tileText() const;
     /// Greyed while a scan runs: its folder is still being written.
@@ -61,6 +64,8 @@ private:
     QLabel* m_summary;
     QLabel* m_tile;
     StitchQualityMap* m_map;
+    MosaicViewer* m_viewer;
+    motion::scan::Camera m_camera;  ///< the camera of the stitch running or shown
     bool m_scanRunning = false;
     QString m_folder;
 };
