@@ -76,6 +76,15 @@ motion::msg::Problem tileProblem(const StitchTile& t, const char* id, std::vecto
 
 } // namespace
 
+bool areNeighbours(const Eigen::Vector2d& d, int tileW, int tileH, int minOverlapPx)
+{
+    const double ox = tileW - std::abs(d.x()), oy = tileH - std::abs(d.y());
+    if (ox < minOverlapPx || oy < minOverlapPx)
+        return false;
+    // Side by side, not corner to corner: one way the tiles nearly coincide.
+    return !(std::abs(d.x()) > tileW / 2.0 && std::abs(d.y()) > tileH / 2.0);
+}
+
 motion::msg::Checked<TileImage> readTile(const StitchTile& t, const FlatField* flat)
 {
     motion::msg::Checked<TileImage> read = readTiff(t.path, t.file);
@@ -102,11 +111,7 @@ std::vector<TilePair> neighbourPairs(const std::vector<Eigen::Vector2d>& stagePx
             const Eigen::Vector2d d = stagePx[static_cast<std::size_t>(b0)] - stagePx[static_cast<std::size_t>(a0)];
             if (d.x() > tileW - minOverlapPx)
                 break;
-            const double ox = tileW - std::abs(d.x()), oy = tileH - std::abs(d.y());
-            if (ox < minOverlapPx || oy < minOverlapPx)
-                continue;
-            // Side by side, not corner to corner: one way the tiles nearly coincide.
-            if (std::abs(d.x()) > tileW / 2.0 && std::abs(d.y()) > tileH / 2.0)
+            if (!areNeighbours(d, tileW, tileH, minOverlapPx))
                 continue;
             const int a = std::min(a0, b0), b = std::max(a0, b0);
             TilePair p;
@@ -218,26 +223,32 @@ motion::msg::Checked<StitchResult> stitch(const std::vector<StitchTile>& tiles, 
     r.placementS = since(t1);
 
     if (!o.mosaicPath.empty()) {
-        const Clock::time_point t2 = Clock::now();
-        OmeTiffOptions mo = o.mosaic;
-        mo.bitsPerSample = r.kind == SampleKind::Grey16 ? 16 : 8;
-        if (o.stageMmAt) {
-            if (const auto mm = o.stageMmAt(r.frame.originPx.cast<double>())) {
-                mo.stageXMm = mm->x();
-                mo.stageYMm = mm->y();
-            }
-        }
-        auto writer = OmeTiffWriter::open(o.mosaicPath, r.frame.width, r.frame.height, mo);
-        if (!writer)
-            return Result::refused(writer.problems());
-        const motion::msg::Problems fused = fuseTiles(
-            r.placement.positionsPx, r.tileWidth, r.tileHeight,
-            [&](int i) { return readTile(r.tiles[static_cast<std::size_t>(i)], o.flatField.get()); }, **writer, o.fusion);
+        motion::msg::Problems fused = writeMosaic(r, o);
         if (motion::msg::hasErrors(fused))
-            return Result::refused(fused);
-        r.fusionS = since(t2);
+            return Result::refused(std::move(fused));
     }
     return Result::ok(std::move(r));
+}
+
+motion::msg::Problems writeMosaic(StitchResult& r, const StitchOptions& o)
+{
+    const Clock::time_point t2 = Clock::now();
+    OmeTiffOptions mo = o.mosaic;
+    mo.bitsPerSample = r.kind == SampleKind::Grey16 ? 16 : 8;
+    if (o.stageMmAt) {
+        if (const auto mm = o.stageMmAt(r.frame.originPx.cast<double>())) {
+            mo.stageXMm = mm->x();
+            mo.stageYMm = mm->y();
+        }
+    }
+    auto writer = OmeTiffWriter::open(o.mosaicPath, r.frame.width, r.frame.height, mo);
+    if (!writer)
+        return writer.problems();
+    motion::msg::Problems fused = fuseTiles(
+        r.placement.positionsPx, r.tileWidth, r.tileHeight,
+        [&](int i) { return readTile(r.tiles[static_cast<std::size_t>(i)], o.flatField.get()); }, **writer, o.fusion);
+    r.fusionS = since(t2);
+    return fused;
 }
 
 } // namespace imaging

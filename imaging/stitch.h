@@ -53,8 +53,12 @@ struct StitchResult {
     double registrationS = 0, placementS = 0, fusionS = 0;
 };
 
-/// Neighbour pairs from the stage positions: tiles whose expected overlap is at
-/// least `minOverlapPx` each way and that sit side by side (not only corner to corner).
+/// Whether two tiles `dPx` apart (the second's top-left less the first's) are neighbours:
+/// they overlap by at least `minOverlapPx` each way and sit side by side (not only corner
+/// to corner). The one rule of the batch and the live stitch.
+bool areNeighbours(const Eigen::Vector2d& dPx, int tileW, int tileH, int minOverlapPx);
+
+/// Neighbour pairs from the stage positions (areNeighbours), in the order of the later tile.
 std::vector<TilePair> neighbourPairs(const std::vector<Eigen::Vector2d>& stagePx, int tileW, int tileH, int minOverlapPx);
 
 /// Every file readable, all of one size and sample kind: or every problem at once.
@@ -66,6 +70,10 @@ motion::msg::Checked<TileImage> readTile(const StitchTile& t, const FlatField* f
 /// The whole job. Refused with problems naming the file at fault; the mosaic file
 /// exists only when all went well.
 motion::msg::Checked<StitchResult> stitch(const std::vector<StitchTile>& tiles, const StitchOptions& options);
+
+/// Fuses a placed result into options.mosaicPath (the pyramidal OME-TIFF), reading each
+/// tile from its file; sets r.fusionS. The file exists only when all went well.
+motion::msg::Problems writeMosaic(StitchResult& r, const StitchOptions& options);
 
 /// Fiji's TileConfiguration of the registered positions (mosaic pixels, top-left tile near 0, 0).
 std::string registeredTileConfiguration(const StitchResult& r);

@@ -9,7 +9,6 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
-#include <QPointer>
 #include <QSaveFile>
 
 #include <thread>
@@ -32,17 +31,17 @@ bool saveText(const QString& path, const std::string& text, motion::msg::Message
 
 } // namespace
 
-struct StitchJob::Shared {
-    QPointer<StitchJob> owner;
-};
-
 StitchJob::StitchJob(QObject* parent) : QObject(parent), m_shared(std::make_shared<Shared>()) { m_shared->owner = this; }
 
-StitchJob::~StitchJob() { m_shared->owner = nullptr; }
+StitchJob::~StitchJob()
+{
+    m_shared->owner = nullptr;
+    dropLive();
+}
 
 bool StitchJob::start(const StitchRequest& request, motion::msg::Message* error)
 {
-    if (m_running) {
+    if (m_running || m_live) {
         *error = motion::msg::make("scan.stitch.running");
         return false;
     }
@@ -76,23 +75,12 @@ bool StitchJob::start(const StitchRequest& request, motion::msg::Message* error)
         tiles.push_back({t.image, path.toStdString(), Eigen::Vector2d(px.xMm, px.yMm)});  // Point2 holds pixels here
     }
 
-    imaging::StitchOptions so;
-    so.placement.stageSigmaPx = std::max(0.1, request.repeatabilityUm / pixelUm);
-    so.mosaic.pixelSizeUm = pixelUm;
-    so.mosaic.imageName = dir.dirName().toStdString();
-    so.mosaicPath = dir.filePath(request.mosaicName).toStdString();
-    const motion::scan::Camera camera = request.plan.camera;
-    so.stageMmAt = [camera, pixelUm](const Eigen::Vector2d& p) -> std::optional<Eigen::Vector2d> {
-        // The inverse of stageToPixels: its axes are orthonormal, so the transpose.
-        const motion::scan::Point2 ex = dev::files::scan::stageToPixels(camera, {1, 0});
-        const motion::scan::Point2 ey = dev::files::scan::stageToPixels(camera, {0, 1});
-        const double s = pixelUm * pixelUm / 1e6;  // each column is (1000 / pixelUm) long
-        return Eigen::Vector2d((p.x() * ex.xMm + p.y() * ex.yMm) * s, (p.x() * ey.xMm + p.y() * ey.yMm) * s);
-    };
-
     m_running = true;
     m_tileCount = static_cast<int>(tiles.size());
     m_pixelUm = pixelUm;
+    m_folder = request.folder;
+    m_lastWasLive = false;
+    imaging::StitchOptions so = optionsFor(request.plan, request.folder, request, pixelUm);
     const std::shared_ptr<Shared> shared = m_shared;
     const QString folder = request.folder;
     const QString mosaic = QString::fromStdString(so.mosaicPath);
@@ -112,41 +100,69 @@ bool StitchJob::start(const StitchRequest& request, motion::msg::Message* error)
             }
             return imaging::stitch(tiles, so);
         }();
-        QStringList written;
-        motion::msg::Problems problems = result.problems();
-        if (result) {
-            motion::msg::Message writeError;
-            const QString registered = QDir(folder).filePath(QStringLiteral("TileConfiguration.registered.txt"));
-            QString report = mosaic;
-            report.chop(mosaic.endsWith(QLatin1String(".ome.tif")) ? 8 : 0);
-            report += QStringLiteral(".stitch.json");
-            const double seconds = static_cast<double>(clock.nsecsElapsed()) / 1e9;
-            if (saveText(registered, imaging::registeredTileConfiguration(*result), &writeError)
-                && saveText(report, imaging::stitchJson(*result, seconds, QFileInfo(mosaic).fileName().toStdString()) + "\n", &writeError))
-                written = {mosaic, registered, report};
-            else
-                problems = oneProblem(writeError);
-        }
-        const double seconds = static_cast<double>(clock.nsecsElapsed()) / 1e9;
-        auto out = std::make_shared<motion::msg::Checked<imaging::StitchResult>>(std::move(result));
-        // Handed back through the application object, which outlives every job; whether
-        // the job is still there is asked on its own thread.
-        QMetaObject::invokeMethod(QCoreApplication::instance(), [shared, out, written, problems, seconds] {
-            StitchJob* job = shared->owner;
-            if (!job)
-                return;
-            job->m_running = false;
-            job->m_seconds = seconds;
-            if (*out && !written.isEmpty()) {
-                job->m_result = out->take();
-                job->m_written = written;
-                emit job->finished();
-            } else {
-                emit job->failed(problems);
-            }
-        }, Qt::QueuedConnection);
+        complete(shared, std::move(result), folder, mosaic, clock, 0);
     }).detach();
     return true;
+}
+
+imaging::StitchOptions StitchJob::optionsFor(const motion::scan::ScanPlan& plan, const QString& folder, const StitchRequest& request, double pixelUm)
+{
+    const QDir dir(folder);
+    imaging::StitchOptions so;
+    so.placement.stageSigmaPx = std::max(0.1, request.repeatabilityUm / pixelUm);
+    so.mosaic.pixelSizeUm = pixelUm;
+    so.mosaic.imageName = dir.dirName().toStdString();
+    so.mosaicPath = dir.filePath(request.mosaicName).toStdString();
+    const motion::scan::Camera camera = plan.camera;
+    so.stageMmAt = [camera, pixelUm](const Eigen::Vector2d& p) -> std::optional<Eigen::Vector2d> {
+        // The inverse of stageToPixels: its axes are orthonormal, so the transpose.
+        const motion::scan::Point2 ex = dev::files::scan::stageToPixels(camera, {1, 0});
+        const motion::scan::Point2 ey = dev::files::scan::stageToPixels(camera, {0, 1});
+        const double s = pixelUm * pixelUm / 1e6;  // each column is (1000 / pixelUm) long
+        return Eigen::Vector2d((p.x() * ex.xMm + p.y() * ex.yMm) * s, (p.x() * ey.xMm + p.y() * ey.yMm) * s);
+    };
+    return so;
+}
+
+void StitchJob::complete(const std::shared_ptr<Shared>& shared, motion::msg::Checked<imaging::StitchResult> result, const QString& folder,
+                         const QString& mosaic, const QElapsedTimer& clock, double placedS)
+{
+    // `clock` started when the work began (the live stitch: at the last tile); the
+    // report's seconds count from there.
+    QStringList written;
+    motion::msg::Problems problems = result.problems();
+    if (result) {
+        motion::msg::Message writeError;
+        const QString registered = QDir(folder).filePath(QStringLiteral("TileConfiguration.registered.txt"));
+        QString report = mosaic;
+        report.chop(mosaic.endsWith(QLatin1String(".ome.tif")) ? 8 : 0);
+        report += QStringLiteral(".stitch.json");
+        const double seconds = static_cast<double>(clock.nsecsElapsed()) / 1e9;
+        if (saveText(registered, imaging::registeredTileConfiguration(*result), &writeError)
+            && saveText(report, imaging::stitchJson(*result, seconds, QFileInfo(mosaic).fileName().toStdString()) + "\n", &writeError))
+            written = {mosaic, registered, report};
+        else
+            problems = oneProblem(writeError);
+    }
+    const double seconds = static_cast<double>(clock.nsecsElapsed()) / 1e9;
+    auto out = std::make_shared<motion::msg::Checked<imaging::StitchResult>>(std::move(result));
+    // Handed back through the application object, which outlives every job; whether
+    // the job is still there is asked on its own thread.
+    QMetaObject::invokeMethod(QCoreApplication::instance(), [shared, out, written, problems, seconds, placedS] {
+        StitchJob* job = shared->owner;
+        if (!job)
+            return;
+        job->m_running = false;
+        job->m_seconds = seconds;
+        job->m_livePlacedAfterS = placedS;
+        if (*out && !written.isEmpty()) {
+            job->m_result = out->take();
+            job->m_written = written;
+            emit job->finished();
+        } else {
+            emit job->failed(problems);
+        }
+    }, Qt::QueuedConnection);
 }
 
 } // namespace dev::jobs

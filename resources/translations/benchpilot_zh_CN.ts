@@ -8312,6 +8312,22 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
         <translation>无法把质量图写入 %1：%2</translation>
     </message>
     <message>
+        <source>Stitched live during the scan: placed %1 s after the last tile, the files written %2 s after it</source>
+        <translation>扫描期间实时拼接：最后一个图块后 %1 秒完成全局定位，%2 秒后文件写完</translation>
+    </message>
+    <message>
+        <source>%v of %m tiles</source>
+        <translation>%v / %m 个图块</translation>
+    </message>
+    <message>
+        <source>Stitching live as the scan takes the tiles: %1 of %2 registered</source>
+        <translation>随扫描采集图块实时拼接：已配准 %1 / %2 个</translation>
+    </message>
+    <message>
+        <source>The scan stopped: nothing is written; the live mosaic begins again when the scan resumes.</source>
+        <translation>扫描已停止：未写出任何文件；扫描继续时实时拼接图重新开始。</translation>
+    </message>
+    <message>
         <source>Stitched into %1: %2</source>
         <translation>已拼接到 %1：%2</translation>
     </message>
@@ -12355,6 +12371,16 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <source>%1 records no tile taken yet</source>
         <comment>imaging.positions.no_tiles</comment>
         <translation>%1 中尚无已拍摄的图块</translation>
+    </message>
+    <message>
+        <source>%1 of the %2 tiles were taken: the live mosaic is placed only when every tile is there</source>
+        <comment>imaging.live.incomplete</comment>
+        <translation>%2 个图块中只采集了 %1 个：实时全景图要等所有图块齐全后才定位</translation>
+    </message>
+    <message>
+        <source>the live stitch was stopped before it finished</source>
+        <comment>imaging.live.cancelled</comment>
+        <translation>实时拼接在完成前已停止</translation>
     </message>
     <message>
         <source>the image is %1 × %2 pixels: finding a line needs at least %3 pixels each way</source>

@@ -5,10 +5,15 @@
 // ≤ 1.5 GB; global placement after the last tile (the live delay) ≤ 2 s; the line or
 // the dot nearest the centre of a 2048² image found in ≤ 5 ms each.
 // Counters (the pair's time is the Time column): registration_s, placement_ms, fusion_s, peak_rss_mb, rms_error_px.
+// The live scan (BM_LiveStitchDelay10x10/interval_ms): the same grid fed one tile at a
+// time from its files at the scan's pace; delay_s is from the last tile to the finished
+// placement, mosaic_s to the written mosaic, behind_tiles how many tiles the worker had
+// still to register when the last came.
 // BP_BENCH_SHORT=1 (CTest's short run) uses a 4 × 4 grid of 512² tiles instead, and
 // finds the line and the dot in 512² images.
 #include "imaging/dot_finder.h"
 #include "imaging/line_finder.h"
+#include "imaging/live_stitch.h"
 #include "imaging/registration.h"
 #include "imaging/stitch.h"
 #include "imaging/tiff_write.h"
@@ -20,9 +25,11 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <chrono>
 #include <random>
 #include <string>
 #include <sys/resource.h>
+#include <thread>
 #include <unistd.h>
 #include <vector>
 
@@ -191,6 +198,74 @@ void BM_StitchGrid10x10(benchmark::State& state)
     std::system(("rm -rf " + dir).c_str());
 }
 BENCHMARK(BM_StitchGrid10x10)->Unit(benchmark::kSecond)->Iterations(1);
+
+void BM_LiveStitchDelay10x10(benchmark::State& state)
+{
+    using Clock = std::chrono::steady_clock;
+    const int n = shortRun() ? 4 : 10, size = shortRun() ? 512 : 2048;
+    const int step = size - size / 10;
+    const auto interval = std::chrono::milliseconds(shortRun() ? 50 : state.range(0));
+    const std::string dir = "/tmp/bench_imaging_live_" + std::to_string(::getpid());
+    std::system(("mkdir -p " + dir).c_str());
+    std::vector<imaging::StitchTile> tiles;
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> err(-3, 3);
+    for (int r = 0; r < n; ++r)
+        for (int c = 0; c < n; ++c) {
+            const Eigen::Vector2d stage(c * step, r * step);
+            const Eigen::Vector2i t = (stage + Eigen::Vector2d(err(rng), err(rng))).array().round().cast<int>();
+            const std::string name = "tile_" + std::to_string(1000 + r * n + c).substr(1) + ".tif";
+            imaging::writeTiff(dir + "/" + name, tileAt(t.x(), t.y(), size, static_cast<unsigned>(r * n + c)));
+            tiles.push_back({name, dir + "/" + name, stage});
+        }
+    // The scan's order: rows, every other one backwards.
+    std::vector<int> order;
+    for (int r = 0; r < n; ++r)
+        for (int c = 0; c < n; ++c)
+            order.push_back(r * n + (r % 2 ? n - 1 - c : c));
+    imaging::StitchOptions so;
+    so.mosaicPath = dir + "/mosaic.ome.tif";
+    so.mosaic.pixelSizeUm = 0.65;
+    for (auto _ : state) {
+        imaging::LiveStitchOptions o;
+        o.registration = so.registration;
+        o.placement = so.placement;
+        imaging::LiveStitcher live(tiles, o);
+        Clock::time_point next = Clock::now();
+        int behind = 0;
+        for (int i : order) {
+            std::this_thread::sleep_until(next);
+            next += interval;
+            // As the scan hands it: the tile's file is written, its position measured.
+            live.add(i, tiles[static_cast<std::size_t>(i)].stagePx);
+        }
+        const Clock::time_point last = Clock::now();
+        behind = live.tilesAdded() - live.tilesRegistered();
+        auto r = live.finish();
+        const double delay = std::chrono::duration<double>(Clock::now() - last).count();
+        if (!r) {
+            state.SkipWithError(motion::msg::debugFormat(r.problems()).c_str());
+            break;
+        }
+        const motion::msg::Problems fused = imaging::writeMosaic(*r, so);
+        if (motion::msg::hasErrors(fused)) {
+            state.SkipWithError(motion::msg::debugFormat(fused).c_str());
+            break;
+        }
+        state.counters["delay_s"] = delay;
+        state.counters["mosaic_s"] = std::chrono::duration<double>(Clock::now() - last).count();
+        state.counters["placement_ms"] = r->placementS * 1e3;
+        state.counters["registration_s"] = r->registrationS;
+        state.counters["behind_tiles"] = behind;
+        state.counters["held_mb_peak"] = live.peakHeldMegabytes();
+        state.counters["pairs"] = static_cast<double>(r->pairs.size());
+    }
+    state.counters["peak_rss_mb"] = peakRssMb();
+    std::system(("rm -rf " + dir).c_str());
+}
+// 500 ms a tile: a 1.2 mm step, the settle and a short exposure on this stage; 250 ms is
+// a fast stage, where registration (two pairs a tile) has to keep up on two cores.
+BENCHMARK(BM_LiveStitchDelay10x10)->Arg(500)->Arg(250)->ArgName("interval_ms")->Unit(benchmark::kSecond)->Iterations(1);
 
 } // namespace
 

@@ -302,6 +302,7 @@ void ScanScreen::setCameraSession(CameraSession* session)
         return r;
     });
     m_stitchPanel->setObjectName(QStringLiteral("scanMosaic"));
+    m_stitchPanel->followScan(m_runner);
     // A double-click in the mosaic is a move like any other: the long-move question when far.
     m_stitchPanel->viewer()->setStage(m_stage);
     m_stitchPanel->viewer()->setConfirm([this](const QString& q) { return m_confirmLongMove ? m_confirmLongMove(q) : confirm(q); });

@@ -86,6 +86,14 @@ StitchPanel::StitchPanel(Source source, QWidget* parent) : QWidget(parent), m_so
         emit problem(tr("Stitching %1 failed: %2").arg(QDir::toNativeSeparators(m_folder), words::problems(problems).join(QLatin1Char(' '))));
     });
     connect(m_map, &StitchQualityMap::tileClicked, this, &StitchPanel::showTile);
+    connect(m_job, &dev::jobs::StitchJob::liveStarted, this, &StitchPanel::onLiveStarted);
+    connect(m_job, &dev::jobs::StitchJob::liveTile, m_map, &StitchQualityMap::setLiveTile);
+    connect(m_job, &dev::jobs::StitchJob::livePair, m_map, &StitchQualityMap::setLivePair);
+    connect(m_job, &dev::jobs::StitchJob::liveTile, this, &StitchPanel::updateUi);
+    connect(m_job, &dev::jobs::StitchJob::liveDropped, this, [this] {
+        updateUi();
+        m_state->setText(tr("The scan stopped: nothing is written; the live mosaic begins again when the scan resumes."));
+    });
     connect(m_viewer, &MosaicViewer::problem, this, &StitchPanel::problem);
     connect(m_viewer, &MosaicViewer::notice, this, &StitchPanel::notice);
     connect(m_viewer, &MosaicViewer::openRequested, this, [this] {
@@ -131,6 +139,20 @@ void StitchPanel::setScanRunning(bool running)
     updateUi();
 }
 
+void StitchPanel::followScan(dev::jobs::ScanRunner* runner) { m_job->follow(runner, m_source); }
+
+void StitchPanel::onLiveStarted()
+{
+    m_folder = m_job->folder();
+    const motion::scan::Camera camera = m_source().plan.camera;
+    m_camera = camera;  // the viewer shows the result with it
+    const double px = 1000 / std::max(1e-9, motion::scan::pixelAtSampleUm(camera));
+    m_map->beginLive(m_job->livePlannedPx(), QSizeF(motion::scan::fieldWidthMm(camera) * px, motion::scan::fieldHeightMm(camera) * px));
+    m_summary->clear();
+    m_tile->clear();
+    updateUi();
+}
+
 QStringList StitchPanel::summaryLines() const
 {
     const auto& r = m_job->result();
@@ -159,6 +181,10 @@ QStringList StitchPanel::summaryLines() const
                  .arg(r->placement.worstCorrectionPx * um, 0, 'f', 2)
                  .arg(m_map->magnification(), 0, 'f', 0);
     lines << tr("Mosaic %1 × %2 px in %3 s").arg(r->frame.width).arg(r->frame.height).arg(m_job->seconds(), 0, 'f', 1);
+    if (m_job->lastWasLive())
+        lines << tr("Stitched live during the scan: placed %1 s after the last tile, the files written %2 s after it")
+                     .arg(m_job->livePlacedAfterS(), 0, 'f', 1)
+                     .arg(m_job->seconds(), 0, 'f', 1);
     return lines;
 }
 
@@ -195,7 +221,7 @@ void StitchPanel::onFinished()
 void StitchPanel::showTile(int index)
 {
     const auto& r = m_job->result();
-    if (!r || index < 0 || static_cast<std::size_t>(index) >= r->tiles.size())
+    if (!r || m_job->isLive() || index < 0 || static_cast<std::size_t>(index) >= r->tiles.size())  // live: no result yet
         return;
     const Eigen::Vector2d d = r->placement.positionsPx[static_cast<std::size_t>(index)] - r->tiles[static_cast<std::size_t>(index)].stagePx;
     QStringList lines;
@@ -223,8 +249,13 @@ void StitchPanel::updateUi()
 {
     const bool running = m_job->isRunning();
     m_stitch->setEnabled(!running && !m_scanRunning);
-    m_busy->setVisible(running);
-    if (running)
+    m_busy->setVisible(running || m_job->isLive());
+    m_busy->setRange(0, m_job->isLive() ? m_job->tileCount() : 0);  // registration's pace is known live only
+    m_busy->setValue(m_job->liveTilesRead());
+    m_busy->setFormat(m_job->isLive() ? tr("%v of %m tiles") : QString());
+    if (m_job->isLive())
+        m_state->setText(tr("Stitching live as the scan takes the tiles: %1 of %2 registered").arg(m_job->liveTilesRead()).arg(m_job->tileCount()));
+    else if (running)
         m_state->setText(tr("Stitching %1 tiles in %2…").arg(m_job->tileCount()).arg(QDir::toNativeSeparators(m_folder)));
     else if (m_scanRunning)
         m_state->setText(tr("A scan is running into the folder: stitch it when it has finished."));

@@ -35,6 +35,10 @@ public:
     QString tileText() const;
     /// Greyed while a scan runs: its folder is still being written.
     void setScanRunning(bool running);
+    /// Stitches `runner`'s camera scans live: the map grows as tiles come, and the files
+    /// and the summary follow the last tile (dev::jobs::StitchJob::follow).
+    void followScan(dev::jobs::ScanRunner* runner);
+    const dev::jobs::StitchJob* job() const { return m_job; }
 
 signals:
     void problem(const QString& message);
@@ -48,6 +52,7 @@ private:
     void retranslateUi();
     void updateUi();
     void onFinished();
+    void onLiveStarted();
     void showTile(int index);
     QStringList summaryLines() const;
 

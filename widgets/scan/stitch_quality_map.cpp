@@ -36,6 +36,10 @@ StitchQualityMap::StitchQualityMap(QWidget* parent) : QWidget(parent)
 
 void StitchQualityMap::setResult(const imaging::StitchResult& r)
 {
+    // The live scan's thumbnails stay with the tiles they belong to.
+    std::vector<Tile> before;
+    if (m_tiles.size() == r.tiles.size())
+        before.swap(m_tiles);
     m_tiles.clear();
     m_pairs.clear();
     m_selected = -1;
@@ -46,6 +50,10 @@ void StitchQualityMap::setResult(const imaging::StitchResult& r)
         t.stagePx = QPointF(r.tiles[i].stagePx.x(), r.tiles[i].stagePx.y());
         t.placedPx = QPointF(r.placement.positionsPx[i].x(), r.placement.positionsPx[i].y());
         t.byStage = i < r.placement.placedByStage.size() && r.placement.placedByStage[i];
+        if (i < before.size()) {
+            t.raw = before[i].raw;
+            t.picture = before[i].picture;
+        }
         m_tiles.push_back(t);
     }
     // Placement may shift the whole mosaic: corrections are drawn against the mean shift.
@@ -71,7 +79,84 @@ void StitchQualityMap::clear()
     m_tiles.clear();
     m_pairs.clear();
     m_selected = -1;
+    m_windowLow = m_windowHigh = -1;
     update();
+}
+
+void StitchQualityMap::beginLive(const std::vector<QPointF>& plannedPx, const QSizeF& tileSize)
+{
+    clear();
+    m_tileSize = tileSize;
+    m_magnification = 1;
+    for (const QPointF& p : plannedPx) {
+        Tile t;
+        t.stagePx = t.placedPx = p;
+        t.taken = false;
+        m_tiles.push_back(t);
+    }
+    update();
+}
+
+void StitchQualityMap::setLiveTile(int index, QPointF stagePx, QSize size, std::shared_ptr<const imaging::ImageU16> thumbnail)
+{
+    if (index < 0 || index >= tileCount())
+        return;
+    Tile& t = m_tiles[static_cast<std::size_t>(index)];
+    t.stagePx = t.placedPx = stagePx;
+    t.taken = true;
+    if (size.isValid())
+        m_tileSize = QSizeF(size);
+    t.raw = std::move(thumbnail);
+    if (t.raw && !t.raw->empty()) {
+        widenWindow(*t.raw);
+        t.picture = picture(*t.raw);
+    }
+    update();
+}
+
+void StitchQualityMap::setLivePair(const imaging::TilePair& pair)
+{
+    m_pairs.push_back({pair.a, pair.b, pair.reg.ncc, pair.reg.status});
+    update();
+}
+
+int StitchQualityMap::picturedTiles() const
+{
+    int n = 0;
+    for (const Tile& t : m_tiles)
+        n += !t.picture.isNull();
+    return n;
+}
+
+void StitchQualityMap::widenWindow(const imaging::ImageU16& raw)
+{
+    std::vector<std::uint16_t> v = raw.px;
+    const auto at = [&](double share) {
+        const auto k = static_cast<std::ptrdiff_t>(share * static_cast<double>(v.size() - 1));
+        std::nth_element(v.begin(), v.begin() + k, v.end());
+        return static_cast<int>(v[static_cast<std::size_t>(k)]);
+    };
+    const int low = at(0.01), high = at(0.99);
+    if (m_windowLow >= 0 && low >= m_windowLow && high <= m_windowHigh)
+        return;
+    m_windowLow = m_windowLow < 0 ? low : std::min(m_windowLow, low);
+    m_windowHigh = std::max({m_windowHigh, high, m_windowLow + 1});
+    for (Tile& t : m_tiles)
+        if (t.raw && !t.raw->empty())
+            t.picture = picture(*t.raw);
+}
+
+QImage StitchQualityMap::picture(const imaging::ImageU16& raw) const
+{
+    QImage out(raw.width, raw.height, QImage::Format_Grayscale8);
+    const double scale = 255.0 / std::max(1, m_windowHigh - m_windowLow);
+    for (int y = 0; y < raw.height; ++y) {
+        uchar* line = out.scanLine(y);
+        const std::uint16_t* in = raw.row(y);
+        for (int x = 0; x < raw.width; ++x)
+            line[x] = static_cast<uchar>(std::clamp((in[x] - m_windowLow) * scale, 0.0, 255.0));
+    }
+    return out;
 }
 
 void StitchQualityMap::selectTile(int index)
@@ -118,11 +203,24 @@ void StitchQualityMap::draw(QPainter& p, const QSizeF& size) const
     const QTransform t = fit(size);
     auto centre = [&](const Tile& tile) { return tile.stagePx + QPointF(m_tileSize.width() / 2, m_tileSize.height() / 2); };
     // Tiles where the stage put them, those placed by the stage hatched.
+    // Thumbnails first, each where the tile was placed, under every outline.
+    for (const Tile& tile : m_tiles)
+        if (!tile.picture.isNull())
+            p.drawImage(t.mapRect(QRectF(tile.placedPx, m_tileSize)), tile.picture);
     for (std::size_t i = 0; i < m_tiles.size(); ++i) {
         const Tile& tile = m_tiles[i];
         const QRectF r = t.mapRect(QRectF(tile.stagePx, m_tileSize)).adjusted(1, 1, -1, -1);
+        if (!tile.taken) {  // still to come in a live scan
+            p.setPen(QPen(QColor(170, 170, 170), 1, Qt::DotLine));
+            p.setBrush(Qt::NoBrush);
+            p.drawRect(r);
+            continue;
+        }
         p.setPen(QPen(QColor(120, 120, 120), 1));
-        p.setBrush(tile.byStage ? QBrush(QColor(240, 150, 40), Qt::BDiagPattern) : QBrush(QColor(235, 240, 248)));
+        if (tile.byStage)
+            p.setBrush(QBrush(QColor(240, 150, 40), Qt::BDiagPattern));
+        else
+            p.setBrush(tile.picture.isNull() ? QBrush(QColor(235, 240, 248)) : QBrush(Qt::NoBrush));
         p.drawRect(r);
         if (tile.byStage) {
             p.setPen(QPen(QColor(220, 120, 20), 2));
@@ -144,6 +242,8 @@ void StitchQualityMap::draw(QPainter& p, const QSizeF& size) const
     p.setPen(QPen(QColor(30, 60, 160), 2));
     p.setBrush(QColor(30, 60, 160));
     for (const Tile& tile : m_tiles) {
+        if (!tile.taken)
+            continue;
         const QPointF from = t.map(centre(tile));
         const QPointF to = t.map(centre(tile) + (tile.placedPx - tile.stagePx) * m_magnification);
         const QPointF d = to - from;

@@ -38,6 +38,8 @@ const Row kRows[] = {
     {"imaging.positions.bad_image_name", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "'%1' is not a file name in the folder (empty, or with a folder in it)", "imaging.positions.bad_image_name"), "file"},
     {"imaging.positions.duplicate", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "%1 (or its tile number) is taken twice in the log", "imaging.positions.duplicate"), "file"},
     {"imaging.positions.no_tiles", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "%1 records no tile taken yet", "imaging.positions.no_tiles"), "file"},
+    {"imaging.live.incomplete", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "%1 of the %2 tiles were taken: the live mosaic is placed only when every tile is there", "imaging.live.incomplete"), "taken,total"},
+    {"imaging.live.cancelled", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the live stitch was stopped before it finished", "imaging.live.cancelled")},
     {"imaging.line.image_too_small", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the image is %1 × %2 pixels: finding a line needs at least %3 pixels each way", "imaging.line.image_too_small"), "width,height,minimum"},
     {"imaging.line.too_short", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the profile has %1 samples: finding a line needs at least %2", "imaging.line.too_short"), "length,minimum"},
     {"imaging.line.not_found", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "no graduation line found: the strongest mark stands out by %1 and a line needs %2 (blank glass, or out of focus)", "imaging.line.not_found"), "contrast,minimum"},
