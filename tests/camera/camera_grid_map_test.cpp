@@ -8,6 +8,8 @@
 #include "device/camera/dot_reading_source.h"
 #include "device/camera/sim_camera.h"
 #include "device/client/compensation_2d_client.h"
+#include "device/files/accuracy/grid/grid_map_test_file.h"
+#include "integration/cli_in_process.h"
 #include "device/sim/machine_config.h"
 #include "device/jobs/accuracy/grid_map_runner.h"
 #include "integration/accuracy_support.h"
@@ -18,6 +20,8 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonObject>
 
 #include <gtest/gtest.h>
 
@@ -263,4 +267,58 @@ TEST(CameraGridMap, AStoppedRunContinuesFromItsLogWithoutReadingANodeTwice)
     EXPECT_NEAR(second.startXMm(), 20.1, 0.1);
     EXPECT_NEAR(second.startYMm(), 20.0, 0.1);
     EXPECT_TRUE(second.result());
+}
+
+TEST(CameraGridMapCli, BadInputIsRefusedByFileLineAndColumnAndNothingIsWritten)
+{
+    QTemporaryDir dir;
+    // The example reads as it is.
+    const auto example = dev::files::accuracy::loadGridMapTestFile(QStringLiteral(BP_SOURCE_DIR "/resources/examples/stage-grid-10mm.grid-map-test.json"));
+    ASSERT_TRUE(example.ok()) << motion::msg::debugFormat(example.problems());
+    EXPECT_EQ(example->columns, 9);
+    // From 10 mm, 12 nodes every 10 mm reach 120 mm: beyond the stage's 100 mm travel.
+    const QString bad = dir.filePath(QStringLiteral("far.grid-map-test.json"));
+    QFile f(bad);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write("{\"schema\": \"benchpilot.grid-map-test\", \"version\": 1,\n"
+            " \"pitch_mm\": {\"x\": 10, \"y\": 10},\n"
+            " \"nodes\": {\"columns\": 12, \"rows\": 3},\n"
+            " \"start_mm\": {\"x_mm\": 10, \"y_mm\": 10}}\n");
+    f.close();
+    const QString out = dir.filePath(QStringLiteral("run"));
+    const auto r = runCliInProcess({QStringLiteral("--sim"), QStringLiteral("stage"), QStringLiteral("grid-map"), QStringLiteral("run"),
+                                    QStringLiteral("--test"), bad, QStringLiteral("--out"), out});
+    EXPECT_EQ(r.code, 1) << qPrintable(r.err);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("far.grid-map-test.json:3:"))) << qPrintable(r.err);
+    EXPECT_FALSE(QFileInfo::exists(out)) << "nothing half-written";
+    // A pitch between the plate's dots.
+    const auto pitch = runCliInProcess({QStringLiteral("--sim"), QStringLiteral("stage"), QStringLiteral("grid-map"), QStringLiteral("run"),
+                                        QStringLiteral("--pitch"), QStringLiteral("2.5"), QStringLiteral("--nodes"), QStringLiteral("3,3"),
+                                        QStringLiteral("--out"), out});
+    EXPECT_EQ(pitch.code, 1);
+    EXPECT_TRUE(pitch.err.contains(QStringLiteral("--pitch"))) << qPrintable(pitch.err);
+    EXPECT_FALSE(QFileInfo::exists(out));
+}
+
+TEST(CameraGridMapCli, WritesTheReadingsAndTheResultWithFiguresAndNodes)
+{
+    QTemporaryDir dir;
+    const QString out = dir.filePath(QStringLiteral("run"));
+    const auto r = runCliInProcess({QStringLiteral("--sim"), QStringLiteral("stage"), QStringLiteral("--json"), QStringLiteral("grid-map"),
+                                    QStringLiteral("run"), QStringLiteral("--home"), QStringLiteral("--at"), QStringLiteral("X=20.1,Y=20"),
+                                    QStringLiteral("--pitch"), QStringLiteral("10"), QStringLiteral("--nodes"), QStringLiteral("3,3"),
+                                    QStringLiteral("--dwell"), QStringLiteral("0.05"), QStringLiteral("--time-scale"), QStringLiteral("20"),
+                                    QStringLiteral("--out"), out});
+    ASSERT_EQ(r.code, 0) << qPrintable(r.err);
+    const QJsonObject o = r.json();
+    const QJsonObject figures = o.value(QStringLiteral("figures")).toObject();
+    for (const char* k : {"scale_x_ppm", "scale_y_ppm", "squareness_urad", "straightness_x_um", "straightness_y_um", "rms_error_um",
+                          "max_error_um", "rms_residual_um"})
+        EXPECT_TRUE(figures.contains(QLatin1String(k))) << k;
+    const QJsonArray nodes = o.value(QStringLiteral("nodes")).toArray();
+    ASSERT_EQ(nodes.size(), 9);
+    for (const char* k : {"x_mm", "y_mm", "ex_um", "ey_um"})
+        EXPECT_TRUE(nodes.first().toObject().contains(QLatin1String(k))) << k;
+    EXPECT_TRUE(QFileInfo::exists(QDir(out).filePath(QStringLiteral("grid-map.readings.csv"))));
+    EXPECT_TRUE(QFileInfo::exists(QDir(out).filePath(QStringLiteral("grid-map.grid-map-result.json"))));
 }
