@@ -9469,6 +9469,10 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <translation>相机 %1 读取沿 %2 轴的玻璃线纹尺</translation>
     </message>
     <message>
+        <source>camera %1 reading the grid plate&apos;s dots</source>
+        <translation>相机 %1 读取网格板的圆点</translation>
+    </message>
+    <message>
         <source>camera</source>
         <translation>相机</translation>
     </message>
@@ -10077,6 +10081,26 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <source>%1; the image is kept as %2</source>
         <comment>camera.reading.no_line</comment>
         <translation>%1；图像已保存为 %2</translation>
+    </message>
+    <message>
+        <source>%1; the image is kept as %2</source>
+        <comment>camera.reading.no_dot</comment>
+        <translation>%1；图像已保存为 %2</translation>
+    </message>
+    <message>
+        <source>the camera %1 reads a grid plate&apos;s dot in X and Y at once: a reading needs both</source>
+        <comment>camera.reading.two_axes</comment>
+        <translation>相机 %1 同时读取网格板圆点的 X 和 Y：一次读数需要两者</translation>
+    </message>
+    <message>
+        <source>what the camera found is %1 across, not one of the plate&apos;s dots of %2</source>
+        <comment>camera.reading.dot_size</comment>
+        <translation>相机找到的目标直径为 %1，不是网格板上直径 %2 的圆点</translation>
+    </message>
+    <message>
+        <source>the nearest dot is %1 from the image centre, more than half the plate&apos;s pitch (%2): not this node&apos;s dot</source>
+        <comment>camera.reading.dot_far</comment>
+        <translation>最近的圆点距图像中心 %1，超过网格板间距的一半（%2）：不是此节点的圆点</translation>
     </message>
     <message>
         <source>a %1 (Motion-JPEG) frame from the camera, %2 × %3 px, could not be decoded</source>
@@ -12029,6 +12053,46 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
 </context>
 <context>
     <name>ui::words::GridWords</name>
+    <message>
+        <source>%1 × %2 nodes: a map has at most %3 a side</source>
+        <translation>%1 × %2 个节点：网格图每边最多 %3 个</translation>
+    </message>
+    <message>
+        <source>a pitch of %1 is not a whole multiple of the plate&apos;s pitch %2: a node would find another node&apos;s dot</source>
+        <translation>间距 %1 不是网格板间距 %2 的整数倍：节点会找到另一个节点的圆点</translation>
+    </message>
+    <message>
+        <source>the grid reaches %2 on %1, beyond the travel&apos;s end at %3</source>
+        <translation>网格在 %1 轴上到达 %2，超出行程终点 %3</translation>
+    </message>
+    <message>
+        <source>no dot to start from under the camera: %1</source>
+        <translation>相机下没有可作起点的圆点：%1</translation>
+    </message>
+    <message>
+        <source>from the dot found at (%1, %2) the grid leaves the travel: %3</source>
+        <translation>从 (%1, %2) 处找到的圆点出发，网格超出行程：%3</translation>
+    </message>
+    <message>
+        <source>node %1 (column %2, row %3) has no reading: %4</source>
+        <translation>节点 %1（第 %2 列，第 %3 行）没有读数：%4</translation>
+    </message>
+    <message>
+        <source>%1 of %2 nodes have no reading: no map until they are read (run again into the same folder to try them again)</source>
+        <translation>%2 个节点中有 %1 个没有读数：读完之前没有网格图（在同一文件夹中再次运行即可重试这些节点）</translation>
+    </message>
+    <message>
+        <source>a grid map needs an instrument with X and Y axes</source>
+        <translation>网格图需要带 X 和 Y 轴的仪器</translation>
+    </message>
+    <message>
+        <source>this reading source reads one axis at a time; a grid map needs X and Y in one reading (the camera on a grid plate)</source>
+        <translation>此读数来源一次只读一个轴；网格图需要一次读数同时给出 X 和 Y（相机对准网格板）</translation>
+    </message>
+    <message>
+        <source>a line that is not part of a grid map&apos;s run log</source>
+        <translation>不属于网格图运行日志的一行</translation>
+    </message>
     <message>
         <source>%1 × %2 nodes: a map needs at least %3 a side</source>
         <translation>%1 × %2 个节点：网格图每边至少需要 %3 个</translation>
