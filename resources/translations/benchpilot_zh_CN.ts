@@ -2850,6 +2850,58 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <source>the camera %1 did not open within %2 s</source>
         <translation>相机 %1 未在 %2 秒内打开</translation>
     </message>
+    <message>
+        <source>--test gives the whole test: leave out --%1</source>
+        <translation>--test 已给出整个测试：请去掉 --%1</translation>
+    </message>
+    <message>
+        <source>give --pitch MM and --nodes COLUMNS,ROWS, or --test FILE</source>
+        <translation>请给出 --pitch 毫米 和 --nodes 列数,行数，或 --test 文件</translation>
+    </message>
+    <message>
+        <source>--pitch &apos;%1&apos;: one pitch in mm, or X,Y</source>
+        <translation>--pitch“%1”：一个以毫米为单位的间距，或 X,Y</translation>
+    </message>
+    <message>
+        <source>--nodes &apos;%1&apos;: two whole numbers, COLUMNS,ROWS</source>
+        <translation>--nodes“%1”：两个整数，列数,行数</translation>
+    </message>
+    <message>
+        <source>give the folder for the run: --out DIR</source>
+        <translation>请给出运行文件夹：--out 目录</translation>
+    </message>
+    <message>
+        <source><byte value="xd"/>%1 of %2 nodes   </source>
+        <translation><byte value="xd"/>%2 个节点中的第 %1 个   </translation>
+    </message>
+    <message>
+        <source>%1 holds a finished map of this test: its results follow, nothing was moved.</source>
+        <translation>%1 中已有此测试完成的网格图：以下是其结果，未移动任何轴。</translation>
+    </message>
+    <message>
+        <source>scale X %1 ppm, scale Y %2 ppm, squareness %3 µrad</source>
+        <translation>X 比例误差 %1 ppm，Y 比例误差 %2 ppm，垂直度 %3 µrad</translation>
+    </message>
+    <message>
+        <source>straightness X %1 µm, straightness Y %2 µm</source>
+        <translation>X 直线度 %1 µm，Y 直线度 %2 µm</translation>
+    </message>
+    <message>
+        <source>error RMS %1 µm, max %2 µm; residual RMS %3 µm</source>
+        <translation>误差均方根 %1 µm，最大 %2 µm；残差均方根 %3 µm</translation>
+    </message>
+    <message>
+        <source>the XY stage mapped by the camera on a grid plate: scale, squareness, straightness</source>
+        <translation>用相机对准网格板测绘 XY 平台：比例误差、垂直度、直线度</translation>
+    </message>
+    <message>
+        <source>map the stage on a grid plate with the camera</source>
+        <translation>用相机在网格板上测绘平台</translation>
+    </message>
+    <message>
+        <source>Starts at the dot nearest the image centre where the stage stands (or --start), visits the nodes row by row, each approached from below, finds each dot to a fraction of a pixel, and writes the readings CSV and the result JSON into --out. A run that stopped continues from its log there without reading a node twice.</source>
+        <translation>从平台所在位置图像中心最近的圆点（或 --start）开始，逐行访问各节点，每个节点都从下方趋近，以亚像素精度找到每个圆点，并将读数 CSV 和结果 JSON 写入 --out。已停止的运行从该处的日志继续，不会重复读取任何节点。</translation>
+    </message>
 </context>
 <context>
     <name>app::cli::CliSession</name>
