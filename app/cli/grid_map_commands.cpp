@@ -15,9 +15,11 @@
 #include "device/files/text_file.h"
 #include "device/jobs/accuracy/grid_map_runner.h"
 #include "device/link/simulated_link.h"
+#include "widgets/report/accuracy_report.h"
 #include "widgets/wording/wording.h"
 
 #include <QCoreApplication>
+#include <QDateTime>
 #include <QDir>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -103,6 +105,14 @@ int runGridMap(Invocation& inv)
     motion::metrology::GridMapTest test;
     if (!buildGridTest(inv, test))
         return Usage;
+    // Read before anything moves: a file that cannot be read stops the run before it starts.
+    std::optional<motion::metrology::GridMapResult> before;
+    if (inv.isSet(QStringLiteral("before"))) {
+        const auto read = dev::files::accuracy::loadGridMapResultFile(inv.path(inv.value(QStringLiteral("before"))));
+        if (reportProblems(inv, read.problems()) || !read.ok())
+            return Usage;
+        before = read->result;
+    }
     double timeScale = 1;
     if (!inv.number(QStringLiteral("time-scale"), timeScale, 1.0))
         return Usage;
@@ -206,6 +216,24 @@ int runGridMap(Invocation& inv)
                                                                                              motion::msg::integer("total", runner.totalNodes())})
                                                   : stopped,
                              Refused);
+    // The report: this map, and beside it the map --before names (the same grid without
+    // compensation), with the figures of both.
+    ui::report::GridReportInput report;
+    report.title = tr("Grid map of the XY stage");
+    report.instrument = QStringLiteral("%1 (%2)").arg(instrument->identity().model, instrument->identity().family);
+    report.source = source->describe();
+    report.test = test;
+    report.result = *runner.result();
+    report.created = QDateTime::currentDateTime().toString(Qt::ISODate);
+    report.before = before;
+    if (ui::report::canRender()) {
+        const QString pdf = runner.basePath() + QStringLiteral(".report.pdf");
+        QString error;
+        if (ui::report::writeGridReport(pdf, report, &error))
+            files << pdf;
+        else
+            inv.report(error);
+    }
     const QJsonObject result = gridResultJson(resultFile);
     if (inv.json()) {
         QJsonArray list;
@@ -248,7 +276,8 @@ void addGridMapCommands(std::vector<Command>& list)
         option("dwell", "wait after arriving, in s", "s", "0.2"),
         option("approach", "the lead-in from below before each row, in mm", "mm", "0.05"),
         option("stop-on-failure", "stop the run at a dot the camera cannot find (default: it is that node's failure and the run goes on)"),
-        option("out", "folder for the run log, the readings CSV and the result JSON", "dir"),
+        option("out", "folder for the run log, the readings CSV, the result JSON and the PDF report", "dir"),
+        option("before", "a grid map result of the same grid without compensation: shown beside this one in the report", "file"),
         option("restart", "keep another test's run log in --out aside and start afresh"),
         option("home", "home X and Y first"),
         option("at", "move here first, e.g. X=20,Y=20: over the plate's first dot", "AXIS=MM[,AXIS=MM]"),
@@ -266,14 +295,12 @@ void addGridMapCommands(std::vector<Command>& list)
                       optionParam("nodes", ParamType::Numbers), optionParam("start", ParamType::Numbers),
                       optionParam("plate-pitch", ParamType::Number), optionParam("feed", ParamType::Number),
                       optionParam("dwell", ParamType::Number),  optionParam("approach", ParamType::Number),
-                      optionParam("out", ParamType::File),      optionParam("camera-seed", ParamType::Integer)};
+                      optionParam("out", ParamType::File),      optionParam("before", ParamType::File),
+                      optionParam("camera-seed", ParamType::Integer)};
     run.api.example = QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")}, {QStringLiteral("camera"), QStringLiteral("sim")},
                                   {QStringLiteral("pitch"), QJsonArray{10}},           {QStringLiteral("nodes"), QJsonArray{3, 3}},
                                   {QStringLiteral("at"), QStringLiteral("X=20,Y=20")}, {QStringLiteral("home"), true},
                                   {QStringLiteral("out"), QStringLiteral("grid-run")}};
-    // CLI only until docs/api.md carries its worked example (the API offers a method
-    // with one, checked by a test).
-    run.api.offered = false;
     grid.subcommands = {run};
     list.push_back(grid);
 }

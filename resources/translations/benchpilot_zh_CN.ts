@@ -2902,6 +2902,18 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <source>Starts at the dot nearest the image centre where the stage stands (or --start), visits the nodes row by row, each approached from below, finds each dot to a fraction of a pixel, and writes the readings CSV and the result JSON into --out. A run that stopped continues from its log there without reading a node twice.</source>
         <translation>从平台所在位置图像中心最近的圆点（或 --start）开始，逐行访问各节点，每个节点都从下方趋近，以亚像素精度找到每个圆点，并将读数 CSV 和结果 JSON 写入 --out。已停止的运行从该处的日志继续，不会重复读取任何节点。</translation>
     </message>
+    <message>
+        <source>the grid map&apos;s result file</source>
+        <translation>网格图的结果文件</translation>
+    </message>
+    <message>
+        <source>the 2D compensation table file</source>
+        <translation>二维补偿表文件</translation>
+    </message>
+    <message>
+        <source>Grid map of the XY stage</source>
+        <translation>XY 平台网格图</translation>
+    </message>
 </context>
 <context>
     <name>app::cli::CliSession</name>
@@ -8952,6 +8964,78 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
     <message>
         <source>cannot write %1</source>
         <translation>无法写入 %1</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>scale X (ppm)</source>
+        <translation>X 比例误差 (ppm)</translation>
+    </message>
+    <message>
+        <source>scale Y (ppm)</source>
+        <translation>Y 比例误差 (ppm)</translation>
+    </message>
+    <message>
+        <source>squareness (µrad)</source>
+        <translation>垂直度 (µrad)</translation>
+    </message>
+    <message>
+        <source>straightness X (µm)</source>
+        <translation>X 直线度 (µm)</translation>
+    </message>
+    <message>
+        <source>straightness Y (µm)</source>
+        <translation>Y 直线度 (µm)</translation>
+    </message>
+    <message>
+        <source>error RMS (µm)</source>
+        <translation>误差均方根 (µm)</translation>
+    </message>
+    <message>
+        <source>error max (µm)</source>
+        <translation>最大误差 (µm)</translation>
+    </message>
+    <message>
+        <source>residual RMS (µm)</source>
+        <translation>残差均方根 (µm)</translation>
+    </message>
+    <message>
+        <source>%1 × %2 nodes every %3 × %4 on a grid plate of %5 pitch, each row approached from below</source>
+        <translation>%1 × %2 个节点，间距 %3 × %4，网格板间距 %5，每行均从下方趋近</translation>
+    </message>
+    <message>
+        <source>Plate placement fitted out: offset (%1, %2) µm, rotation %3 µrad</source>
+        <translation>已拟合去除网格板摆放：偏移 (%1, %2) µm，旋转 %3 µrad</translation>
+    </message>
+    <message>
+        <source>The camera&apos;s pixel size scales only each dot&apos;s small offset from the image centre: the scales are those of the plate&apos;s certified pitch, which a pixel size calibrated on this same stage cannot reveal.</source>
+        <translation>相机像素尺寸只影响每个圆点相对图像中心的微小偏移：比例误差以网格板的认证间距为准；用同一平台标定的像素尺寸无法揭示平台自身的比例误差。</translation>
+    </message>
+    <message>
+        <source>Figures (ISO 230-1 least-squares reference lines)</source>
+        <translation>指标（ISO 230-1 最小二乘参考线）</translation>
+    </message>
+    <message>
+        <source>Error map</source>
+        <translation>误差图</translation>
+    </message>
+    <message>
+        <source>Before: compensation off</source>
+        <translation>补偿前：补偿关闭</translation>
+    </message>
+    <message>
+        <source>After: the 2D table enabled</source>
+        <translation>补偿后：已启用二维补偿表</translation>
+    </message>
+    <message>
+        <source>Arrows: each node&apos;s error with the plate&apos;s placement removed, magnified %1×; colour: the error&apos;s length, one scale for every map on the page.</source>
+        <translation>箭头：去除网格板摆放后每个节点的误差，放大 %1 倍；颜色：误差长度，本页所有图使用同一色标。</translation>
+    </message>
+    <message>
+        <source>BenchPilot grid map · %1 · %2</source>
+        <translation>BenchPilot 网格图 · %1 · %2</translation>
     </message>
 </context>
 <context>

@@ -10,6 +10,7 @@
 #include "device/client/compensation_2d_client.h"
 #include "device/files/accuracy/grid/grid_map_test_file.h"
 #include "integration/cli_in_process.h"
+#include "integration/programs.h"
 #include "device/sim/machine_config.h"
 #include "device/jobs/accuracy/grid_map_runner.h"
 #include "integration/accuracy_support.h"
@@ -321,4 +322,36 @@ TEST(CameraGridMapCli, WritesTheReadingsAndTheResultWithFiguresAndNodes)
         EXPECT_TRUE(nodes.first().toObject().contains(QLatin1String(k))) << k;
     EXPECT_TRUE(QFileInfo::exists(QDir(out).filePath(QStringLiteral("grid-map.readings.csv"))));
     EXPECT_TRUE(QFileInfo::exists(QDir(out).filePath(QStringLiteral("grid-map.grid-map-result.json"))));
+}
+
+TEST(CameraGridMapCli, TheReportShowsTheMapBeforeAndAfterSideBySide)
+{
+    QTemporaryDir dir;
+    const QString cli = binary("benchpilot-cli");
+    auto run = [&](const QString& out, const QStringList& more) {
+        return runProgram(cli,
+                          QStringList{QStringLiteral("--sim"), QStringLiteral("stage"), QStringLiteral("--json"), QStringLiteral("grid-map"),
+                                      QStringLiteral("run"), QStringLiteral("--home"), QStringLiteral("--at"), QStringLiteral("X=20.1,Y=20"),
+                                      QStringLiteral("--pitch"), QStringLiteral("10"), QStringLiteral("--nodes"), QStringLiteral("3,3"),
+                                      QStringLiteral("--dwell"), QStringLiteral("0.05"), QStringLiteral("--time-scale"), QStringLiteral("20"),
+                                      QStringLiteral("--out"), out}
+                              + more,
+                          120000);
+    };
+    const QString first = dir.filePath(QStringLiteral("first"));
+    const auto a = run(first, {});
+    ASSERT_EQ(a.exitCode, 0) << a.describe();
+    const QString second = dir.filePath(QStringLiteral("second"));
+    const auto b = run(second, {QStringLiteral("--before"), QDir(first).filePath(QStringLiteral("grid-map.grid-map-result.json"))});
+    ASSERT_EQ(b.exitCode, 0) << b.describe();
+    for (const QString& folder : {first, second}) {
+        QFile pdf(QDir(folder).filePath(QStringLiteral("grid-map.report.pdf")));
+        ASSERT_TRUE(pdf.open(QIODevice::ReadOnly)) << folder.toStdString();
+        EXPECT_TRUE(pdf.read(5).startsWith("%PDF-"));
+    }
+    // A --before that cannot be read stops the run before anything is written.
+    const QString third = dir.filePath(QStringLiteral("third"));
+    const auto c = run(third, {QStringLiteral("--before"), dir.filePath(QStringLiteral("missing.grid-map-result.json"))});
+    EXPECT_EQ(c.exitCode, 1) << c.describe();
+    EXPECT_FALSE(QFileInfo::exists(third));
 }
