@@ -9950,6 +9950,31 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <comment>rotation.ccw</comment>
         <translation>逆时针</translation>
     </message>
+    <message>
+        <source>the first line must be &apos;# %1 1&apos;: this is not a scale certificate</source>
+        <comment>accuracy.certificate.no_schema</comment>
+        <translation>第一行必须是“# %1 1”：这不是线纹尺校准证书</translation>
+    </message>
+    <message>
+        <source>a certificate of version %1; this BenchPilot reads version %2</source>
+        <comment>accuracy.certificate.version</comment>
+        <translation>证书版本为 %1；此版本 BenchPilot 读取版本 %2</translation>
+    </message>
+    <message>
+        <source>graduation %1 is outside the scale, which is graduated from 0 to %2: a certificate of another scale</source>
+        <comment>accuracy.certificate.outside_scale</comment>
+        <translation>刻线 %1 超出线纹尺范围（刻度从 0 到 %2）：这是另一把尺的证书</translation>
+    </message>
+    <message>
+        <source>graduation %1 is not on the scale&apos;s pitch of %2: a certificate of another scale</source>
+        <comment>accuracy.certificate.off_pitch</comment>
+        <translation>刻线 %1 不在线纹尺的刻线间距 %2 上：这是另一把尺的证书</translation>
+    </message>
+    <message>
+        <source>graduation %1 does not come after %2: a certificate&apos;s graduations increase</source>
+        <comment>accuracy.certificate.not_increasing</comment>
+        <translation>刻线 %1 不在 %2 之后：证书中的刻线必须递增</translation>
+    </message>
 </context>
 <context>
     <name>ui::words::CameraWords</name>
