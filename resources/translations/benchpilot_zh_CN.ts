@@ -4655,6 +4655,10 @@ Keep that log aside and start this test afresh?</source>
         <source>Open a camera first, on the Scan or Jog screen&apos;s Camera tab, with the glass scale under it (on the simulator: the sim camera, with benchpilot started with --specimen line-scales).</source>
         <translation>请先在扫描或点动页的“相机”选项卡中打开相机，并把玻璃线纹尺放在其下（模拟器：sim 相机，启动 benchpilot 时加 --specimen line-scales）。</translation>
     </message>
+    <message>
+        <source>Grid map</source>
+        <translation>网格图</translation>
+    </message>
 </context>
 <context>
     <name>ui::CameraPanel</name>
@@ -5277,6 +5281,172 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Put the gains in force back in the fields (nothing is sent)</source>
         <translation>把当前生效的增益放回输入框（不发送任何内容）</translation>
+    </message>
+</context>
+<context>
+    <name>ui::GridMapPanel</name>
+    <message>
+        <source>A grid map is running.</source>
+        <translation>网格图正在运行。</translation>
+    </message>
+    <message>
+        <source>Open a camera first, on the Scan or Jog screen&apos;s Camera tab, with the grid plate under it (on the simulator: the sim camera, with benchpilot started with --specimen grid-plate).</source>
+        <translation>请先在扫描或点动界面的相机选项卡中打开相机，并将网格板置于其下（在模拟器上：使用 sim 相机，并以 --specimen grid-plate 启动 benchpilot）。</translation>
+    </message>
+    <message>
+        <source>No instrument to map.</source>
+        <translation>没有可测绘的仪器。</translation>
+    </message>
+    <message>
+        <source>Grid map written to %1.</source>
+        <translation>网格图已写入 %1。</translation>
+    </message>
+    <message>
+        <source>Run a grid map first: the 2D table is fitted to it.</source>
+        <translation>请先运行网格图：二维补偿表据此拟合。</translation>
+    </message>
+    <message>
+        <source>This map&apos;s grid cannot be made into a 2D table the device keeps (2 to 41 nodes a side).</source>
+        <translation>此网格图的网格无法生成设备可保存的二维补偿表（每边 2 到 41 个节点）。</translation>
+    </message>
+    <message>
+        <source>The instrument went away.</source>
+        <translation>仪器已断开。</translation>
+    </message>
+    <message>
+        <source>The device did not enable the 2D table.</source>
+        <translation>设备未启用二维补偿表。</translation>
+    </message>
+    <message>
+        <source>2D table of %1 × %2 nodes uploaded and enabled: run the grid map again to see the after.</source>
+        <translation>已上传并启用 %1 × %2 个节点的二维补偿表：再次运行网格图即可查看补偿后效果。</translation>
+    </message>
+    <message>
+        <source>Uploading the 2D table…</source>
+        <translation>正在上传二维补偿表…</translation>
+    </message>
+    <message>
+        <source>2D table enabled.</source>
+        <translation>二维补偿表已启用。</translation>
+    </message>
+    <message>
+        <source>Ready.</source>
+        <translation>就绪。</translation>
+    </message>
+    <message>
+        <source>Mapping: %1 of %2 nodes</source>
+        <translation>测绘中：第 %1 / %2 个节点</translation>
+    </message>
+    <message>
+        <source>Stopped after %1 of %2 nodes.</source>
+        <translation>在 %2 个节点中的第 %1 个之后停止。</translation>
+    </message>
+    <message>
+        <source>Finished: %1 of %2 nodes without a reading.</source>
+        <translation>已完成：%2 个节点中有 %1 个没有读数。</translation>
+    </message>
+    <message>
+        <source>Finished: %1 nodes.</source>
+        <translation>已完成：%1 个节点。</translation>
+    </message>
+    <message>
+        <source>before</source>
+        <translation>补偿前</translation>
+    </message>
+    <message>
+        <source>after</source>
+        <translation>补偿后</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>Run the grid map again (after)</source>
+        <translation>再次运行网格图（补偿后）</translation>
+    </message>
+    <message>
+        <source>Run grid map</source>
+        <translation>运行网格图</translation>
+    </message>
+    <message>
+        <source>Pitch</source>
+        <translation>间距</translation>
+    </message>
+    <message>
+        <source>Nodes</source>
+        <translation>节点</translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <source>Fit, upload and enable the 2D table</source>
+        <translation>拟合、上传并启用二维补偿表</translation>
+    </message>
+    <message>
+        <source>Disable the 2D table</source>
+        <translation>停用二维补偿表</translation>
+    </message>
+    <message>
+        <source>What the camera cannot know by itself: a pixel size calibrated by moving this same stage carries the stage&apos;s scale error into the image. The scales are those of the plate&apos;s certified pitch.</source>
+        <translation>相机自身无法知道的：用同一平台移动标定的像素尺寸会把平台的比例误差带入图像。比例误差以网格板的认证间距为准。</translation>
+    </message>
+    <message>
+        <source>scale X (ppm)</source>
+        <translation>X 比例误差 (ppm)</translation>
+    </message>
+    <message>
+        <source>scale Y (ppm)</source>
+        <translation>Y 比例误差 (ppm)</translation>
+    </message>
+    <message>
+        <source>squareness (µrad)</source>
+        <translation>垂直度 (µrad)</translation>
+    </message>
+    <message>
+        <source>straightness X (µm)</source>
+        <translation>X 直线度 (µm)</translation>
+    </message>
+    <message>
+        <source>straightness Y (µm)</source>
+        <translation>Y 直线度 (µm)</translation>
+    </message>
+    <message>
+        <source>error RMS (µm)</source>
+        <translation>误差均方根 (µm)</translation>
+    </message>
+    <message>
+        <source>error max (µm)</source>
+        <translation>最大误差 (µm)</translation>
+    </message>
+    <message>
+        <source>residual RMS (µm)</source>
+        <translation>残差均方根 (µm)</translation>
+    </message>
+</context>
+<context>
+    <name>ui::GridMapView</name>
+    <message>
+        <source>No map yet: put the grid plate under the camera, a dot near the image centre, and run a grid map.</source>
+        <translation>尚无网格图：将网格板置于相机下，使一个圆点靠近图像中心，然后运行网格图。</translation>
+    </message>
+    <message>
+        <source>After: 2D table on</source>
+        <translation>补偿后：二维补偿表已启用</translation>
+    </message>
+    <message>
+        <source>Before: compensation off</source>
+        <translation>补偿前：补偿关闭</translation>
+    </message>
+    <message>
+        <source>RMS %1 µm</source>
+        <translation>均方根 %1 µm</translation>
+    </message>
+    <message>
+        <source>arrows magnified %1×; colour: the error&apos;s length</source>
+        <translation>箭头放大 %1 倍；颜色：误差长度</translation>
     </message>
 </context>
 <context>
