@@ -196,8 +196,8 @@ bool GridMapPanel::run()
     connect(m_runner.get(), &dev::jobs::GridMapRunner::nodeFailed, this,
             [this](int, const motion::msg::Message& m) { emit notice(ui::words::text(m)); });
     connect(m_runner.get(), &dev::jobs::GridMapRunner::finished, this, &GridMapPanel::onFinished);
-    bool opened = false;
-    m_source->open([&opened](const motion::msg::Message&) { opened = true; });
+    // The session's camera is open already (camera() gives only an open one).
+    m_source->open([](const motion::msg::Message&) {});
     motion::msg::Message why;
     if (!m_runner->start(&why))
         return refuse(ui::words::text(why));
