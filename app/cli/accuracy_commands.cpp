@@ -338,7 +338,8 @@ void addAccuracyCommands(std::vector<Command>& list)
                       optionParam("feed", ParamType::Number),       optionParam("dwell", ParamType::Number),
                       optionParam("overrun", ParamType::Number),    optionParam("test", ParamType::File),
                       optionParam("out", ParamType::File),          optionParam("gauge-baud", ParamType::Integer),
-                      optionParam("gauge-timeout", ParamType::Number), optionParam("camera-seed", ParamType::Integer)};
+                      optionParam("gauge-timeout", ParamType::Number), optionParam("camera-seed", ParamType::Integer),
+                      optionParam("certificate", ParamType::File),  optionParam("scale-length", ParamType::Number)};
     run.api.example = QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")}, {QStringLiteral("axis"), QStringLiteral("X")},
                                   {QStringLiteral("targets"), QStringLiteral("20:60:5")}, {QStringLiteral("irregular"), true},
                                   {QStringLiteral("cycles"), 2}, {QStringLiteral("dwell"), 0.1},

@@ -337,7 +337,9 @@ QList<QCommandLineOption> accuracyRunOptions()
             option("at", "move other axes here first (--home homes them too), e.g. Y=50.075: where the scale or the gauge is", "AXIS=MM[,AXIS=MM]"),
             option("time-scale", "with --sim: run the simulator's clock this many times faster", "k", "1"),
             option("specimen", "with --source camera on the simulator: what the camera looks at: line-scales, grid-plate or slide", "NAME", "line-scales"),
-            option("camera-seed", "with --source camera on the simulator: the specimen's and noise's seed", "N", "1")};
+            option("camera-seed", "with --source camera on the simulator: the specimen's and noise's seed", "N", "1"),
+            option("certificate", "with --source camera: the glass scale's calibration certificate (*.scale-certificate.csv), applied to every reading", "file"),
+            option("scale-length", "with --certificate: the scale's graduated length from 0, in mm (the certificate must lie within it)", "mm", "100")};
 }
 
 } // namespace app::cli

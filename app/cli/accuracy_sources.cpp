@@ -1,8 +1,10 @@
 #include "accuracy_sources.h"
 
+#include "accuracy_cli.h"
 #include "camera_cli.h"
 #include "cli_session.h"
 #include "device/camera/scale_reading_source.h"
+#include "device/files/accuracy/scale_certificate_csv.h"
 #include "device/jobs/accuracy/gauge_source.h"
 #include "device/jobs/accuracy/interferometer_source.h"
 #include "device/jobs/accuracy/manual_source.h"
@@ -62,7 +64,20 @@ ReadingSource* makeSource(Invocation& inv, CliSession& session, const QString& s
         if (!camera)
             return nullptr;
         camera->setParent(owner);
-        return new dev::camera::ScaleReadingSource(camera.release(), dev::camera::ScaleReadingOptions{}, owner);
+        dev::camera::ScaleReadingOptions options;
+        if (inv.isSet(QStringLiteral("certificate"))) {
+            // Checked against the scale it is for: its graduations on the scale's pitch,
+            // within its length.
+            dev::files::accuracy::ScaleGeometry scale;
+            scale.pitchMm = options.graduationMm;
+            if (!inv.number(QStringLiteral("scale-length"), scale.lengthMm, scale.lengthMm))
+                return nullptr;
+            const auto read = dev::files::accuracy::loadScaleCertificateFile(inv.path(inv.value(QStringLiteral("certificate"))), scale);
+            if (reportProblems(inv, read.problems()) || !read.ok())
+                return nullptr;
+            options.certificate = *read;
+        }
+        return new dev::camera::ScaleReadingSource(camera.release(), options, owner);
     }
     if (!spec.startsWith(QLatin1String("gauge:")) || spec.size() <= 6) {
         inv.usage(tr("--source '%1': readback, gauge:PATH, manual, interferometer or camera[:SOURCE]").arg(spec));

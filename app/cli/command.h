@@ -294,6 +294,8 @@ void addScanCommands(std::vector<Command>& list);
 void addStitchCommands(std::vector<Command>& list);
 void addCameraCommands(std::vector<Command>& list);
 void addAccuracyCommands(std::vector<Command>& list);
+/// grid-map run: the stage mapped by the camera on a grid plate.
+void addGridMapCommands(std::vector<Command>& list);
 void addCompensationCommands(std::vector<Command>& list);
 /// compensation fit-2d | upload-2d | show-2d | enable-2d | disable-2d | export-2d.
 void addCompensation2dSubcommands(Command& comp);

@@ -17,6 +17,7 @@ const std::vector<Command>& commands()
         addStitchCommands(l);
         addCameraCommands(l);
         addAccuracyCommands(l);
+        addGridMapCommands(l);
         addCompensationCommands(l);
         addCompletionCommand(l);  // last: it lists the others
         return l;

@@ -223,12 +223,36 @@ void addCompensation2dSubcommands(Command& comp)
         {QStringLiteral("export-2d"), tr("a 2D compensation table as CSV"), tr("FILE"), QString(),
          {option("out", "write here instead of standard output", "file")}, &export2d, {}},
     };
-    for (Command& c : more) {
-        // CLI only: the scripting API offers a method with its worked example in
-        // docs/api.md, and these have none.
-        c.api.offered = false;
-        comp.subcommands.push_back(std::move(c));
+    // The scripting API offers the same methods (compensation.fit_2d, upload_2d, show_2d,
+    // enable_2d, disable_2d, export_2d), each with its worked example in docs/api.md.
+    Command& fit = more[0];
+    fit.api.access = Access::Compute;
+    fit.api.params = {{QStringLiteral("result"), ParamType::File, tr("the grid map's result file"), true, {}, {}},
+                      optionParam("out", ParamType::File, true)};
+    fit.api.example = QJsonObject{{QStringLiteral("result"), QStringLiteral("resources/examples/stage-example.grid-map-result.json")},
+                                  {QStringLiteral("out"), QStringLiteral("stage.compensation-2d.json")}};
+    Command& upload = more[1];
+    upload.api.access = Access::Control;
+    upload.api.params = {{QStringLiteral("table"), ParamType::File, tr("the 2D compensation table file"), true, {}, {}},
+                         optionParam("enable", ParamType::Boolean), optionParam("save", ParamType::Boolean)};
+    upload.api.example = QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")},
+                                     {QStringLiteral("table"), QStringLiteral("resources/examples/stage-example.compensation-2d.json")}};
+    Command& show = more[2];
+    show.api.access = Access::Read;
+    show.api.example = QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")}};
+    for (Command* c : {&more[3], &more[4]}) {
+        c->api.access = Access::Control;
+        c->api.params = {optionParam("save", ParamType::Boolean)};
+        c->api.example = QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")}};
     }
+    Command& exportCmd = more[5];
+    exportCmd.api.access = Access::Compute;
+    exportCmd.api.params = {{QStringLiteral("table"), ParamType::File, tr("the 2D compensation table file"), true, {}, {}},
+                            optionParam("out", ParamType::File)};
+    exportCmd.api.example = QJsonObject{{QStringLiteral("table"), QStringLiteral("resources/examples/stage-example.compensation-2d.json")},
+                                        {QStringLiteral("out"), QStringLiteral("stage.compensation-2d.csv")}};
+    for (Command& c : more)
+        comp.subcommands.push_back(std::move(c));
 }
 
 } // namespace app::cli

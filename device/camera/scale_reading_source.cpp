@@ -166,7 +166,9 @@ void ScaleReadingSource::onCaptured(std::uint64_t id, const Frame& frame)
     m_lastOffsetPx = found->offsetPx;
     const double mmPerPx = acrossImageX ? alongImageX : alongImageY;
     const double lineFromCentreMm = found->offsetPx * mmPerPx;
-    const double graduationMm = graduationOf(frame, acrossImageX, found->offsetPx, mmPerPx);
+    double graduationMm = graduationOf(frame, acrossImageX, found->offsetPx, mmPerPx);
+    if (m_options.certificate)
+        graduationMm += m_options.certificate->deviationAtUm(graduationMm) * 1e-3;  // where that line truly lies
     dev::jobs::TakeResult r;
     r.valuesMm = {graduationMm - lineFromCentreMm};
     finish(r);

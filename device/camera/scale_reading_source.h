@@ -7,7 +7,8 @@
 //
 // What the camera cannot know by itself: its pixel size (from the camera profile) scales
 // only the small offset of the line from the centre, so an error in it costs a fraction
-// of a micrometre; the scale's own pitch is what the readings are measured against.
+// of a micrometre; the scale's own pitch is what the readings are measured against, and
+// its calibration certificate, when one is loaded, says where each graduation truly lies.
 //
 // A stop where no line, or two, can be told is that reading's failure, named with the
 // finder's reason; the image is kept beside the run as reading-NNN.tif so a person can
@@ -15,16 +16,21 @@
 #include "device/camera/camera.h"
 #include "device/camera/camera_geometry.h"
 #include "device/jobs/accuracy/reading_source.h"
+#include "motion/metrology/linear/scale_certificate.h"
 
 #include <QTimer>
 
 #include <cstdint>
+#include <optional>
 
 namespace dev::camera {
 
 struct ScaleReadingOptions {
     CameraGeometry geometry;          ///< the camera profile: pixel size, rotation, image y
     double graduationMm = 0.1;        ///< the scale's pitch
+    /// The scale's calibration certificate: each graduation read is taken at its
+    /// certified place (nominal + deviation) instead of its nominal one.
+    std::optional<motion::metrology::ScaleCertificate> certificate;
     QString failedImagesFolder;       ///< where a failed reading's image goes ("": not kept)
     int timeoutMs = 30000;            ///< a camera silent this long fails the reading
 };

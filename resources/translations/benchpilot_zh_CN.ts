@@ -2850,6 +2850,70 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <source>the camera %1 did not open within %2 s</source>
         <translation>相机 %1 未在 %2 秒内打开</translation>
     </message>
+    <message>
+        <source>--test gives the whole test: leave out --%1</source>
+        <translation>--test 已给出整个测试：请去掉 --%1</translation>
+    </message>
+    <message>
+        <source>give --pitch MM and --nodes COLUMNS,ROWS, or --test FILE</source>
+        <translation>请给出 --pitch 毫米 和 --nodes 列数,行数，或 --test 文件</translation>
+    </message>
+    <message>
+        <source>--pitch &apos;%1&apos;: one pitch in mm, or X,Y</source>
+        <translation>--pitch“%1”：一个以毫米为单位的间距，或 X,Y</translation>
+    </message>
+    <message>
+        <source>--nodes &apos;%1&apos;: two whole numbers, COLUMNS,ROWS</source>
+        <translation>--nodes“%1”：两个整数，列数,行数</translation>
+    </message>
+    <message>
+        <source>give the folder for the run: --out DIR</source>
+        <translation>请给出运行文件夹：--out 目录</translation>
+    </message>
+    <message>
+        <source><byte value="xd"/>%1 of %2 nodes   </source>
+        <translation><byte value="xd"/>%2 个节点中的第 %1 个   </translation>
+    </message>
+    <message>
+        <source>%1 holds a finished map of this test: its results follow, nothing was moved.</source>
+        <translation>%1 中已有此测试完成的网格图：以下是其结果，未移动任何轴。</translation>
+    </message>
+    <message>
+        <source>scale X %1 ppm, scale Y %2 ppm, squareness %3 µrad</source>
+        <translation>X 比例误差 %1 ppm，Y 比例误差 %2 ppm，垂直度 %3 µrad</translation>
+    </message>
+    <message>
+        <source>straightness X %1 µm, straightness Y %2 µm</source>
+        <translation>X 直线度 %1 µm，Y 直线度 %2 µm</translation>
+    </message>
+    <message>
+        <source>error RMS %1 µm, max %2 µm; residual RMS %3 µm</source>
+        <translation>误差均方根 %1 µm，最大 %2 µm；残差均方根 %3 µm</translation>
+    </message>
+    <message>
+        <source>the XY stage mapped by the camera on a grid plate: scale, squareness, straightness</source>
+        <translation>用相机对准网格板测绘 XY 平台：比例误差、垂直度、直线度</translation>
+    </message>
+    <message>
+        <source>map the stage on a grid plate with the camera</source>
+        <translation>用相机在网格板上测绘平台</translation>
+    </message>
+    <message>
+        <source>Starts at the dot nearest the image centre where the stage stands (or --start), visits the nodes row by row, each approached from below, finds each dot to a fraction of a pixel, and writes the readings CSV and the result JSON into --out. A run that stopped continues from its log there without reading a node twice.</source>
+        <translation>从平台所在位置图像中心最近的圆点（或 --start）开始，逐行访问各节点，每个节点都从下方趋近，以亚像素精度找到每个圆点，并将读数 CSV 和结果 JSON 写入 --out。已停止的运行从该处的日志继续，不会重复读取任何节点。</translation>
+    </message>
+    <message>
+        <source>the grid map&apos;s result file</source>
+        <translation>网格图的结果文件</translation>
+    </message>
+    <message>
+        <source>the 2D compensation table file</source>
+        <translation>二维补偿表文件</translation>
+    </message>
+    <message>
+        <source>Grid map of the XY stage</source>
+        <translation>XY 平台网格图</translation>
+    </message>
 </context>
 <context>
     <name>app::cli::CliSession</name>
@@ -4591,6 +4655,10 @@ Keep that log aside and start this test afresh?</source>
         <source>Open a camera first, on the Scan or Jog screen&apos;s Camera tab, with the glass scale under it (on the simulator: the sim camera, with benchpilot started with --specimen line-scales).</source>
         <translation>请先在扫描或点动页的“相机”选项卡中打开相机，并把玻璃线纹尺放在其下（模拟器：sim 相机，启动 benchpilot 时加 --specimen line-scales）。</translation>
     </message>
+    <message>
+        <source>Grid map</source>
+        <translation>网格图</translation>
+    </message>
 </context>
 <context>
     <name>ui::CameraPanel</name>
@@ -5213,6 +5281,172 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Put the gains in force back in the fields (nothing is sent)</source>
         <translation>把当前生效的增益放回输入框（不发送任何内容）</translation>
+    </message>
+</context>
+<context>
+    <name>ui::GridMapPanel</name>
+    <message>
+        <source>A grid map is running.</source>
+        <translation>网格图正在运行。</translation>
+    </message>
+    <message>
+        <source>Open a camera first, on the Scan or Jog screen&apos;s Camera tab, with the grid plate under it (on the simulator: the sim camera, with benchpilot started with --specimen grid-plate).</source>
+        <translation>请先在扫描或点动界面的相机选项卡中打开相机，并将网格板置于其下（在模拟器上：使用 sim 相机，并以 --specimen grid-plate 启动 benchpilot）。</translation>
+    </message>
+    <message>
+        <source>No instrument to map.</source>
+        <translation>没有可测绘的仪器。</translation>
+    </message>
+    <message>
+        <source>Grid map written to %1.</source>
+        <translation>网格图已写入 %1。</translation>
+    </message>
+    <message>
+        <source>Run a grid map first: the 2D table is fitted to it.</source>
+        <translation>请先运行网格图：二维补偿表据此拟合。</translation>
+    </message>
+    <message>
+        <source>This map&apos;s grid cannot be made into a 2D table the device keeps (2 to 41 nodes a side).</source>
+        <translation>此网格图的网格无法生成设备可保存的二维补偿表（每边 2 到 41 个节点）。</translation>
+    </message>
+    <message>
+        <source>The instrument went away.</source>
+        <translation>仪器已断开。</translation>
+    </message>
+    <message>
+        <source>The device did not enable the 2D table.</source>
+        <translation>设备未启用二维补偿表。</translation>
+    </message>
+    <message>
+        <source>2D table of %1 × %2 nodes uploaded and enabled: run the grid map again to see the after.</source>
+        <translation>已上传并启用 %1 × %2 个节点的二维补偿表：再次运行网格图即可查看补偿后效果。</translation>
+    </message>
+    <message>
+        <source>Uploading the 2D table…</source>
+        <translation>正在上传二维补偿表…</translation>
+    </message>
+    <message>
+        <source>2D table enabled.</source>
+        <translation>二维补偿表已启用。</translation>
+    </message>
+    <message>
+        <source>Ready.</source>
+        <translation>就绪。</translation>
+    </message>
+    <message>
+        <source>Mapping: %1 of %2 nodes</source>
+        <translation>测绘中：第 %1 / %2 个节点</translation>
+    </message>
+    <message>
+        <source>Stopped after %1 of %2 nodes.</source>
+        <translation>在 %2 个节点中的第 %1 个之后停止。</translation>
+    </message>
+    <message>
+        <source>Finished: %1 of %2 nodes without a reading.</source>
+        <translation>已完成：%2 个节点中有 %1 个没有读数。</translation>
+    </message>
+    <message>
+        <source>Finished: %1 nodes.</source>
+        <translation>已完成：%1 个节点。</translation>
+    </message>
+    <message>
+        <source>before</source>
+        <translation>补偿前</translation>
+    </message>
+    <message>
+        <source>after</source>
+        <translation>补偿后</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>Run the grid map again (after)</source>
+        <translation>再次运行网格图（补偿后）</translation>
+    </message>
+    <message>
+        <source>Run grid map</source>
+        <translation>运行网格图</translation>
+    </message>
+    <message>
+        <source>Pitch</source>
+        <translation>间距</translation>
+    </message>
+    <message>
+        <source>Nodes</source>
+        <translation>节点</translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <source>Fit, upload and enable the 2D table</source>
+        <translation>拟合、上传并启用二维补偿表</translation>
+    </message>
+    <message>
+        <source>Disable the 2D table</source>
+        <translation>停用二维补偿表</translation>
+    </message>
+    <message>
+        <source>What the camera cannot know by itself: a pixel size calibrated by moving this same stage carries the stage&apos;s scale error into the image. The scales are those of the plate&apos;s certified pitch.</source>
+        <translation>相机自身无法知道的：用同一平台移动标定的像素尺寸会把平台的比例误差带入图像。比例误差以网格板的认证间距为准。</translation>
+    </message>
+    <message>
+        <source>scale X (ppm)</source>
+        <translation>X 比例误差 (ppm)</translation>
+    </message>
+    <message>
+        <source>scale Y (ppm)</source>
+        <translation>Y 比例误差 (ppm)</translation>
+    </message>
+    <message>
+        <source>squareness (µrad)</source>
+        <translation>垂直度 (µrad)</translation>
+    </message>
+    <message>
+        <source>straightness X (µm)</source>
+        <translation>X 直线度 (µm)</translation>
+    </message>
+    <message>
+        <source>straightness Y (µm)</source>
+        <translation>Y 直线度 (µm)</translation>
+    </message>
+    <message>
+        <source>error RMS (µm)</source>
+        <translation>误差均方根 (µm)</translation>
+    </message>
+    <message>
+        <source>error max (µm)</source>
+        <translation>最大误差 (µm)</translation>
+    </message>
+    <message>
+        <source>residual RMS (µm)</source>
+        <translation>残差均方根 (µm)</translation>
+    </message>
+</context>
+<context>
+    <name>ui::GridMapView</name>
+    <message>
+        <source>No map yet: put the grid plate under the camera, a dot near the image centre, and run a grid map.</source>
+        <translation>尚无网格图：将网格板置于相机下，使一个圆点靠近图像中心，然后运行网格图。</translation>
+    </message>
+    <message>
+        <source>After: 2D table on</source>
+        <translation>补偿后：二维补偿表已启用</translation>
+    </message>
+    <message>
+        <source>Before: compensation off</source>
+        <translation>补偿前：补偿关闭</translation>
+    </message>
+    <message>
+        <source>RMS %1 µm</source>
+        <translation>均方根 %1 µm</translation>
+    </message>
+    <message>
+        <source>arrows magnified %1×; colour: the error&apos;s length</source>
+        <translation>箭头放大 %1 倍；颜色：误差长度</translation>
     </message>
 </context>
 <context>
@@ -9066,6 +9300,78 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <source>cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
+    <message>
+        <source>value</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>scale X (ppm)</source>
+        <translation>X 比例误差 (ppm)</translation>
+    </message>
+    <message>
+        <source>scale Y (ppm)</source>
+        <translation>Y 比例误差 (ppm)</translation>
+    </message>
+    <message>
+        <source>squareness (µrad)</source>
+        <translation>垂直度 (µrad)</translation>
+    </message>
+    <message>
+        <source>straightness X (µm)</source>
+        <translation>X 直线度 (µm)</translation>
+    </message>
+    <message>
+        <source>straightness Y (µm)</source>
+        <translation>Y 直线度 (µm)</translation>
+    </message>
+    <message>
+        <source>error RMS (µm)</source>
+        <translation>误差均方根 (µm)</translation>
+    </message>
+    <message>
+        <source>error max (µm)</source>
+        <translation>最大误差 (µm)</translation>
+    </message>
+    <message>
+        <source>residual RMS (µm)</source>
+        <translation>残差均方根 (µm)</translation>
+    </message>
+    <message>
+        <source>%1 × %2 nodes every %3 × %4 on a grid plate of %5 pitch, each row approached from below</source>
+        <translation>%1 × %2 个节点，间距 %3 × %4，网格板间距 %5，每行均从下方趋近</translation>
+    </message>
+    <message>
+        <source>Plate placement fitted out: offset (%1, %2) µm, rotation %3 µrad</source>
+        <translation>已拟合去除网格板摆放：偏移 (%1, %2) µm，旋转 %3 µrad</translation>
+    </message>
+    <message>
+        <source>The camera&apos;s pixel size scales only each dot&apos;s small offset from the image centre: the scales are those of the plate&apos;s certified pitch, which a pixel size calibrated on this same stage cannot reveal.</source>
+        <translation>相机像素尺寸只影响每个圆点相对图像中心的微小偏移：比例误差以网格板的认证间距为准；用同一平台标定的像素尺寸无法揭示平台自身的比例误差。</translation>
+    </message>
+    <message>
+        <source>Figures (ISO 230-1 least-squares reference lines)</source>
+        <translation>指标（ISO 230-1 最小二乘参考线）</translation>
+    </message>
+    <message>
+        <source>Error map</source>
+        <translation>误差图</translation>
+    </message>
+    <message>
+        <source>Before: compensation off</source>
+        <translation>补偿前：补偿关闭</translation>
+    </message>
+    <message>
+        <source>After: the 2D table enabled</source>
+        <translation>补偿后：已启用二维补偿表</translation>
+    </message>
+    <message>
+        <source>Arrows: each node&apos;s error with the plate&apos;s placement removed, magnified %1×; colour: the error&apos;s length, one scale for every map on the page.</source>
+        <translation>箭头：去除网格板摆放后每个节点的误差，放大 %1 倍；颜色：误差长度，本页所有图使用同一色标。</translation>
+    </message>
+    <message>
+        <source>BenchPilot grid map · %1 · %2</source>
+        <translation>BenchPilot 网格图 · %1 · %2</translation>
+    </message>
 </context>
 <context>
     <name>ui::words::AccuracyBenchWords</name>
@@ -9634,6 +9940,10 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <translation>相机 %1 读取沿 %2 轴的玻璃线纹尺</translation>
     </message>
     <message>
+        <source>camera %1 reading the grid plate&apos;s dots</source>
+        <translation>相机 %1 读取网格板的圆点</translation>
+    </message>
+    <message>
         <source>camera</source>
         <translation>相机</translation>
     </message>
@@ -9975,6 +10285,31 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <comment>rotation.ccw</comment>
         <translation>逆时针</translation>
     </message>
+    <message>
+        <source>the first line must be &apos;# %1 1&apos;: this is not a scale certificate</source>
+        <comment>accuracy.certificate.no_schema</comment>
+        <translation>第一行必须是“# %1 1”：这不是线纹尺校准证书</translation>
+    </message>
+    <message>
+        <source>a certificate of version %1; this BenchPilot reads version %2</source>
+        <comment>accuracy.certificate.version</comment>
+        <translation>证书版本为 %1；此版本 BenchPilot 读取版本 %2</translation>
+    </message>
+    <message>
+        <source>graduation %1 is outside the scale, which is graduated from 0 to %2: a certificate of another scale</source>
+        <comment>accuracy.certificate.outside_scale</comment>
+        <translation>刻线 %1 超出线纹尺范围（刻度从 0 到 %2）：这是另一把尺的证书</translation>
+    </message>
+    <message>
+        <source>graduation %1 is not on the scale&apos;s pitch of %2: a certificate of another scale</source>
+        <comment>accuracy.certificate.off_pitch</comment>
+        <translation>刻线 %1 不在线纹尺的刻线间距 %2 上：这是另一把尺的证书</translation>
+    </message>
+    <message>
+        <source>graduation %1 does not come after %2: a certificate&apos;s graduations increase</source>
+        <comment>accuracy.certificate.not_increasing</comment>
+        <translation>刻线 %1 不在 %2 之后：证书中的刻线必须递增</translation>
+    </message>
 </context>
 <context>
     <name>ui::words::CameraWords</name>
@@ -10242,6 +10577,26 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <source>%1; the image is kept as %2</source>
         <comment>camera.reading.no_line</comment>
         <translation>%1；图像已保存为 %2</translation>
+    </message>
+    <message>
+        <source>%1; the image is kept as %2</source>
+        <comment>camera.reading.no_dot</comment>
+        <translation>%1；图像已保存为 %2</translation>
+    </message>
+    <message>
+        <source>the camera %1 reads a grid plate&apos;s dot in X and Y at once: a reading needs both</source>
+        <comment>camera.reading.two_axes</comment>
+        <translation>相机 %1 同时读取网格板圆点的 X 和 Y：一次读数需要两者</translation>
+    </message>
+    <message>
+        <source>what the camera found is %1 across, not one of the plate&apos;s dots of %2</source>
+        <comment>camera.reading.dot_size</comment>
+        <translation>相机找到的目标直径为 %1，不是网格板上直径 %2 的圆点</translation>
+    </message>
+    <message>
+        <source>the nearest dot is %1 from the image centre, more than half the plate&apos;s pitch (%2): not this node&apos;s dot</source>
+        <comment>camera.reading.dot_far</comment>
+        <translation>最近的圆点距图像中心 %1，超过网格板间距的一半（%2）：不是此节点的圆点</translation>
     </message>
     <message>
         <source>a %1 (Motion-JPEG) frame from the camera, %2 × %3 px, could not be decoded</source>
@@ -12198,6 +12553,46 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
 </context>
 <context>
     <name>ui::words::GridWords</name>
+    <message>
+        <source>%1 × %2 nodes: a map has at most %3 a side</source>
+        <translation>%1 × %2 个节点：网格图每边最多 %3 个</translation>
+    </message>
+    <message>
+        <source>a pitch of %1 is not a whole multiple of the plate&apos;s pitch %2: a node would find another node&apos;s dot</source>
+        <translation>间距 %1 不是网格板间距 %2 的整数倍：节点会找到另一个节点的圆点</translation>
+    </message>
+    <message>
+        <source>the grid reaches %2 on %1, beyond the travel&apos;s end at %3</source>
+        <translation>网格在 %1 轴上到达 %2，超出行程终点 %3</translation>
+    </message>
+    <message>
+        <source>no dot to start from under the camera: %1</source>
+        <translation>相机下没有可作起点的圆点：%1</translation>
+    </message>
+    <message>
+        <source>from the dot found at (%1, %2) the grid leaves the travel: %3</source>
+        <translation>从 (%1, %2) 处找到的圆点出发，网格超出行程：%3</translation>
+    </message>
+    <message>
+        <source>node %1 (column %2, row %3) has no reading: %4</source>
+        <translation>节点 %1（第 %2 列，第 %3 行）没有读数：%4</translation>
+    </message>
+    <message>
+        <source>%1 of %2 nodes have no reading: no map until they are read (run again into the same folder to try them again)</source>
+        <translation>%2 个节点中有 %1 个没有读数：读完之前没有网格图（在同一文件夹中再次运行即可重试这些节点）</translation>
+    </message>
+    <message>
+        <source>a grid map needs an instrument with X and Y axes</source>
+        <translation>网格图需要带 X 和 Y 轴的仪器</translation>
+    </message>
+    <message>
+        <source>this reading source reads one axis at a time; a grid map needs X and Y in one reading (the camera on a grid plate)</source>
+        <translation>此读数来源一次只读一个轴；网格图需要一次读数同时给出 X 和 Y（相机对准网格板）</translation>
+    </message>
+    <message>
+        <source>a line that is not part of a grid map&apos;s run log</source>
+        <translation>不属于网格图运行日志的一行</translation>
+    </message>
     <message>
         <source>%1 × %2 nodes: a map needs at least %3 a side</source>
         <translation>%1 × %2 个节点：网格图每边至少需要 %3 个</translation>

@@ -27,6 +27,15 @@ public:
     explicit SimSession(dev::proto::DeviceKind kind, qint32 baud = kLinkBaud)
         : link(kind, baud), tap(link.hostEnd())
     {
+        watch();
+    }
+    /// A simulator of this machine (a stage with errors of the test's own).
+    SimSession(const dev::sim::MachineConfig& config, qint32 baud) : link(config, baud), tap(link.hostEnd()) { watch(); }
+    ~SimSession() { client.setTransport(nullptr); }
+
+private:
+    void watch()
+    {
         QObject::connect(&client, &dev::BenchPilotClient::eventReceived, &client,
                          [this](const dev::DeviceEvent& e) { events.push_back(e); });
         QObject::connect(&client, &dev::BenchPilotClient::linkError, &client,
@@ -39,8 +48,8 @@ public:
         QObject::connect(&client, &dev::BenchPilotClient::statusChanged, &client, [this] { ++statusCount; });
         client.setTransport(&tap);
     }
-    ~SimSession() { client.setTransport(nullptr); }
 
+public:
     /// connectLink() and wait until Ready (or anything final).
     bool connect(int timeoutMs = 5000)
     {

@@ -12,6 +12,7 @@
 #include "device/jobs/accuracy/interferometer_source.h"
 #include "device/jobs/accuracy/manual_source.h"
 #include "device/jobs/accuracy/readback_source.h"
+#include "widgets/calibration/grid_map_panel.h"
 #include "widgets/camera/camera_session.h"
 #include "device/link/transport.h"
 #include "widgets/calibration/deviation_plot.h"
@@ -179,7 +180,8 @@ bool CalibrationScreen::busy() const
     using A = dev::jobs::AccuracyRunner::State;
     using C = dev::jobs::CircleRunner::State;
     return (m_runner && (m_runner->isActive() || m_runner->state() == A::Paused))
-        || (m_circle && (m_circle->isActive() || m_circle->state() == C::Paused));
+        || (m_circle && (m_circle->isActive() || m_circle->state() == C::Paused))
+        || (m_gridMap && m_gridMap->runner() && m_gridMap->runner()->isActive());
 }
 
 bool CalibrationScreen::startAxis(const dev::files::accuracy::AccuracyTest& test, const QString& into)

@@ -8,6 +8,7 @@
 #include "device/jobs/accuracy/circle_runner.h"
 #include "widgets/calibration/deviation_plot.h"
 #include "widgets/calibration/fit_panel.h"
+#include "widgets/calibration/grid_map_panel.h"
 #include "widgets/calibration/polar_plot.h"
 #include "widgets/calibration/test_form.h"
 #include "widgets/calibration/wheel_guard.h"
@@ -59,6 +60,11 @@ CalibrationScreen::CalibrationScreen(QVector<dev::Instrument*> instruments, cons
     m_tabs->addTab(m_fit, QString());
     m_tabs->addTab(buildBeforeAfter(), QString());
     m_tabs->addTab(buildCircle(), QString());
+    m_gridMap = new GridMapPanel;
+    m_gridMap->setFolderSource([this] { return outputFolder(); });
+    connect(m_gridMap, &GridMapPanel::problem, this, &CalibrationScreen::problem);
+    connect(m_gridMap, &GridMapPanel::notice, this, &CalibrationScreen::notice);
+    m_tabs->addTab(m_gridMap, QString());
     split->addWidget(m_tabs);
     split->setStretchFactor(0, 0);
     split->setStretchFactor(1, 1);
@@ -80,6 +86,12 @@ CalibrationScreen::CalibrationScreen(QVector<dev::Instrument*> instruments, cons
 }
 
 CalibrationScreen::~CalibrationScreen() = default;
+
+void CalibrationScreen::setCameraSession(CameraSession* session)
+{
+    m_cameraSession = session;
+    m_gridMap->setCameraSession(session);
+}
 
 QWidget* CalibrationScreen::buildLeft()
 {
@@ -342,6 +354,7 @@ void CalibrationScreen::retranslateUi()
     m_tabs->setTabText(2, tr("Compensation"));
     m_tabs->setTabText(3, tr("Before / after"));
     m_tabs->setTabText(4, tr("Circle"));
+    m_tabs->setTabText(5, tr("Grid map"));
     m_figures->setHorizontalHeaderLabels({tr("figure"), tr("µm"), tr("limit (µm)"), tr("verdict")});
     m_beforeAfter->setHorizontalHeaderLabels({tr("figure"), tr("before (µm)"), tr("after (µm)"), tr("improvement")});
     m_circleFigures->setHorizontalHeaderLabels({tr("figure"), tr("µm")});
@@ -377,6 +390,8 @@ void CalibrationScreen::setInstrument(int index)
         return;
     }
     m_current = index;
+    if (m_gridMap)
+        m_gridMap->setInstrument(cur());
     {
         const QSignalBlocker block(m_instrumentBox);
         m_instrumentBox->setCurrentIndex(index);

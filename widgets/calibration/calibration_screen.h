@@ -44,6 +44,7 @@ class CameraSession;
 class AccuracyTestForm;
 class DeviationPlot;
 class FitPanel;
+class GridMapPanel;
 class PolarPlot;
 
 class CalibrationScreen : public QWidget {
@@ -65,7 +66,7 @@ public:
     void setConfirm(Confirm confirm) { m_confirm = std::move(confirm); }
     void setGaugeFactory(GaugeFactory factory) { m_gaugeFactory = std::move(factory); }
     /// The GUI's camera, for the "camera reading a glass scale" source.
-    void setCameraSession(CameraSession* session) { m_cameraSession = session; }
+    void setCameraSession(CameraSession* session);
 
     void setInstrument(int index);
     int instrument() const { return m_current; }
@@ -74,6 +75,8 @@ public:
     DeviationPlot* livePlot() const { return m_live; }
     PolarPlot* polarPlot() const { return m_polar; }
     QTabWidget* tabs() const { return m_tabs; }
+    /// The grid map by camera, its own tab.
+    GridMapPanel* gridMapPanel() const { return m_gridMap; }
     dev::jobs::AccuracyRunner* runner() const { return m_runner.get(); }
     dev::jobs::CircleRunner* circleRunner() const { return m_circle.get(); }
     /// "readback", "gauge", "manual", "interferometer".
@@ -165,6 +168,7 @@ private:
     Confirm m_confirm;
     GaugeFactory m_gaugeFactory;
     CameraSession* m_cameraSession = nullptr;
+    GridMapPanel* m_gridMap = nullptr;
     motion::msg::Message m_lastProblem;
 
     QComboBox* m_instrumentBox;

@@ -12,6 +12,8 @@
 #include "device/files/accuracy/accuracy_result_file.h"
 #include "motion/metrology/compensation/polynomial_fit.h"
 #include "motion/metrology/contour/circular_test.h"
+#include "motion/metrology/grid/grid_map.h"
+#include "motion/metrology/grid/grid_map_test.h"
 #include "motion/metrology/linear/axis_test.h"
 
 #include <QString>
@@ -41,10 +43,24 @@ struct CircleReportInput {
     QString created;
 };
 
+/// A grid map's report: the set-up, the figures of the decomposition (beside those of the
+/// map before compensation when there is one), and the map (before and after side by
+/// side): the error vectors magnified over a colour map of their length.
+struct GridReportInput {
+    QString title;
+    QString instrument;
+    motion::msg::Message source;                               ///< accuracy.source.camera_plate
+    std::optional<motion::metrology::GridMapTest> test;
+    motion::metrology::GridMapResult result;
+    std::optional<motion::metrology::GridMapResult> before;    ///< the same grid without compensation
+    QString created;
+};
+
 /// A QGuiApplication exists (QPainter needs one for its fonts).
 bool canRender();
 /// Written all or nothing (a temporary file renamed at the end).
 bool writeAxisReport(const QString& pdfPath, const AxisReportInput& in, QString* error);
 bool writeCircleReport(const QString& pdfPath, const CircleReportInput& in, QString* error);
+bool writeGridReport(const QString& pdfPath, const GridReportInput& in, QString* error);
 
 } // namespace ui::report

@@ -336,6 +336,8 @@ QString AccuracyBenchWords::source(const motion::msg::Message& m)
         return tr("laser interferometer (imported after the run)");
     if (id == "accuracy.source.camera_scale")
         return tr("camera %1 reading the glass scale along %2").arg(benchArg(m, "camera"), benchArg(m, "axis"));
+    if (id == "accuracy.source.camera_plate")
+        return tr("camera %1 reading the grid plate's dots").arg(benchArg(m, "camera"));
     return {};
 }
 

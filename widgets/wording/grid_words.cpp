@@ -30,6 +30,28 @@ QString GridWords::sentence(const motion::msg::Message& m)
     if (id == "grid.node_off_grid")
         return tr("the node at (%1, %2) is off the grid, whose node here is at (%3, %4)")
             .arg(gridArg(m, "x"), gridArg(m, "y"), gridArg(m, "expected_x"), gridArg(m, "expected_y"));
+    if (id == "grid.too_many_nodes")
+        return tr("%1 × %2 nodes: a map has at most %3 a side").arg(gridArg(m, "columns"), gridArg(m, "rows"), gridArg(m, "max"));
+    if (id == "grid.pitch_not_on_plate")
+        return tr("a pitch of %1 is not a whole multiple of the plate's pitch %2: a node would find another node's dot")
+            .arg(gridArg(m, "pitch"), gridArg(m, "plate_pitch"));
+    if (id == "grid.leaves_travel")
+        return tr("the grid reaches %2 on %1, beyond the travel's end at %3").arg(gridArg(m, "axis"), gridArg(m, "end"), gridArg(m, "limit"));
+    if (id == "grid.run.no_start_dot")
+        return tr("no dot to start from under the camera: %1").arg(gridArg(m, "cause"));
+    if (id == "grid.run.start_leaves_travel")
+        return tr("from the dot found at (%1, %2) the grid leaves the travel: %3").arg(gridArg(m, "x"), gridArg(m, "y"), gridArg(m, "detail"));
+    if (id == "grid.run.node_failed")
+        return tr("node %1 (column %2, row %3) has no reading: %4").arg(gridArg(m, "node"), gridArg(m, "column"), gridArg(m, "row"), gridArg(m, "cause"));
+    if (id == "grid.run.incomplete")
+        return tr("%1 of %2 nodes have no reading: no map until they are read (run again into the same folder to try them again)")
+            .arg(gridArg(m, "failed"), gridArg(m, "total"));
+    if (id == "grid.run.needs_xy")
+        return tr("a grid map needs an instrument with X and Y axes");
+    if (id == "grid.run.source_one_axis")
+        return tr("this reading source reads one axis at a time; a grid map needs X and Y in one reading (the camera on a grid plate)");
+    if (id == "grid.run.log_line")
+        return tr("a line that is not part of a grid map's run log");
     if (id == "stage_errors.too_many_coefficients")
         return tr("%1 coefficients: at most %2 (order 5)").arg(gridArg(m, "count"), gridArg(m, "max"));
     if (id == "stage_errors.curve_too_large")

@@ -1,4 +1,4 @@
-// Fuzz targets "stage-errors", "grid-map-result" and "compensation-2d": the readers of
+// Fuzz targets "stage-errors", "grid-map-result", "grid-map-test" and "compensation-2d": the readers of
 // the simulated stage's error file, a grid map's result and the 2D compensation table.
 // Invariants: no crash; a refusal says where and what; an accepted file writes out,
 // reads back and writes out the same; an accepted map's table, if it makes one,
@@ -7,6 +7,7 @@
 
 #include "device/files/accuracy/grid/compensation_2d_file.h"
 #include "device/files/accuracy/grid/grid_map_result_file.h"
+#include "device/files/accuracy/grid/grid_map_test_file.h"
 #include "device/files/accuracy/grid/stage_errors_file.h"
 
 namespace {
@@ -67,8 +68,25 @@ void checkCompensation2D(std::string_view input)
     (void)compensation2DToCsv(r->table);
 }
 
+void checkGridMapTest(std::string_view input)
+{
+    using namespace dev::files::accuracy;
+    const GridMapTestRead r = gridMapTestFromJson(input, "fuzz.json");
+    checkProblemsSayWhere(r.problems(), r.ok());
+    if (!r.ok())
+        return;
+    const std::string once = gridMapTestToJson(*r);
+    const GridMapTestRead again = gridMapTestFromJson(once, "again.json");
+    if (!again.ok())
+        fuzzfiles::fail("a written grid map test does not read back: " + motion::msg::debugFormat(again.problems()));
+    if (gridMapTestToJson(*again) != once)
+        fuzzfiles::fail("write → read → write changed the grid map test");
+    (void)motion::metrology::planGridMap(*r, 0, 0);
+}
+
 } // namespace
 
 BP_FUZZ_FILE_TARGET({"stage-errors", [] { return fuzzfiles::exampleFiles(".stage-errors.json"); }, checkStageErrors});
 BP_FUZZ_FILE_TARGET({"grid-map-result", [] { return fuzzfiles::exampleFiles(".grid-map-result.json"); }, checkGridMapResult});
 BP_FUZZ_FILE_TARGET({"compensation-2d", [] { return fuzzfiles::exampleFiles(".compensation-2d.json"); }, checkCompensation2D});
+BP_FUZZ_FILE_TARGET({"grid-map-test", [] { return fuzzfiles::exampleFiles(".grid-map-test.json"); }, checkGridMapTest});

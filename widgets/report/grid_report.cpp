@@ -1,0 +1,107 @@
+// The grid map's report page: set-up, the decomposition's figures (before and after
+// compensation when both are known) and the maps side by side, drawn as on the
+// Calibration screen.
+#include "widgets/report/accuracy_report.h"
+#include "widgets/report/grid_map_painter.h"
+#include "widgets/report/report_document.h"
+#include "widgets/report/report_painter.h"
+#include "widgets/wording/wording.h"
+
+#include <QCoreApplication>
+#include <QLocale>
+
+#include <cmath>
+
+namespace ui::report {
+namespace {
+
+QString tr(const char* text) { return QCoreApplication::translate("ui::report", text); }
+QString fixed(double v, int decimals) { return QLocale().toString(v, 'f', decimals); }
+
+std::vector<QStringList> figureRows(const GridReportInput& in)
+{
+    const bool both = in.before.has_value();
+    std::vector<QStringList> rows;
+    rows.push_back(both ? QStringList{tr("figure"), tr("before"), tr("after")} : QStringList{tr("figure"), tr("value")});
+    auto row = [&](const QString& name, double (*of)(const motion::metrology::GridMapFigures&), int decimals) {
+        QStringList r{name};
+        if (both)
+            r << fixed(of(in.before->figures), decimals);
+        r << fixed(of(in.result.figures), decimals);
+        rows.push_back(r);
+    };
+    row(tr("scale X (ppm)"), [](const motion::metrology::GridMapFigures& f) { return f.scaleXPpm; }, 2);
+    row(tr("scale Y (ppm)"), [](const motion::metrology::GridMapFigures& f) { return f.scaleYPpm; }, 2);
+    row(tr("squareness (µrad)"), [](const motion::metrology::GridMapFigures& f) { return f.squarenessUrad; }, 1);
+    row(tr("straightness X (µm)"), [](const motion::metrology::GridMapFigures& f) { return f.straightnessXUm; }, 2);
+    row(tr("straightness Y (µm)"), [](const motion::metrology::GridMapFigures& f) { return f.straightnessYUm; }, 2);
+    row(tr("error RMS (µm)"), [](const motion::metrology::GridMapFigures& f) { return f.rmsErrorUm; }, 2);
+    row(tr("error max (µm)"), [](const motion::metrology::GridMapFigures& f) { return f.maxErrorUm; }, 2);
+    row(tr("residual RMS (µm)"), [](const motion::metrology::GridMapFigures& f) { return f.rmsResidualUm; }, 2);
+    return rows;
+}
+
+bool renderGrid(const QString& path, const GridReportInput& in)
+{
+    Document doc(path);
+    if (!doc.ok())
+        return false;
+    doc.setTitle(in.title);
+    Page page(doc.painter());
+    page.title(in.title);
+    QStringList setup{tr("Instrument: %1").arg(in.instrument), tr("Reference: %1").arg(ui::words::text(in.source))};
+    if (in.test)
+        setup << tr("%1 × %2 nodes every %3 × %4 on a grid plate of %5 pitch, each row approached from below")
+                     .arg(in.test->columns)
+                     .arg(in.test->rows)
+                     .arg(ui::words::number(in.test->pitchXMm, motion::msg::Unit::Mm), ui::words::number(in.test->pitchYMm, motion::msg::Unit::Mm),
+                          ui::words::number(in.test->platePitchMm, motion::msg::Unit::Mm));
+    setup << tr("Plate placement fitted out: offset (%1, %2) µm, rotation %3 µrad")
+                 .arg(fixed(in.result.placement.offsetXUm, 2), fixed(in.result.placement.offsetYUm, 2), fixed(in.result.placement.rotationUrad, 1));
+    setup << tr("The camera's pixel size scales only each dot's small offset from the image centre: the scales are those of the plate's "
+                "certified pitch, which a pixel size calibrated on this same stage cannot reveal.");
+    page.paragraph(setup.join(QLatin1Char('\n')), 8.5);
+    page.heading(tr("Figures (ISO 230-1 least-squares reference lines)"));
+    page.table(figureRows(in), in.before ? std::vector<double>{3, 1.2, 1.2} : std::vector<double>{3, 1.2}, 8);
+    page.gap(3);
+    std::vector<const motion::metrology::GridMapResult*> maps{&in.result};
+    if (in.before)
+        maps.insert(maps.begin(), &*in.before);
+    const double mag = gridMagnification(maps);
+    const double colourMax = std::max(gridLongestErrorUm(maps), 1e-3);
+    const double width = page.contentWidth() / static_cast<double>(maps.size());
+    const double size = std::min(width - 4, page.room() - 22);
+    QPainter& p = doc.painter();
+    p.setFont(pageFont(p, 8, true));
+    p.setPen(Qt::black);
+    for (std::size_t k = 0; k < maps.size(); ++k) {
+        const QRectF cell(page.left() + k * width, page.y(), width - 4, 6);
+        p.drawText(cell, Qt::AlignLeft | Qt::AlignVCenter,
+                   maps.size() == 1 ? tr("Error map") : (k == 0 ? tr("Before: compensation off") : tr("After: the 2D table enabled")));
+        drawGridMap(p, QRectF(page.left() + k * width, page.y() + 6, width - 4, size), *maps[k], mag, colourMax);
+    }
+    page.setY(page.y() + 8 + size);
+    p.setFont(pageFont(p, 7, false));
+    drawGridColourBar(p, QRectF(page.left(), page.y(), page.contentWidth() * 0.5, 3), colourMax);
+    page.setY(page.y() + 5);
+    page.paragraph(tr("Arrows: each node's error with the plate's placement removed, magnified %1×; colour: the error's length, one scale for "
+                      "every map on the page.")
+                       .arg(fixed(mag * 1000, 0)),
+                   7.5);
+    page.footer(tr("BenchPilot grid map · %1 · %2").arg(in.title, in.created), doc.pageNumber());
+    return doc.finish();
+}
+
+} // namespace
+
+bool writeGridReport(const QString& pdfPath, const GridReportInput& in, QString* error)
+{
+    if (!canRender()) {
+        if (error)
+            *error = tr("a PDF needs a graphical application object; none exists in this program");
+        return false;
+    }
+    return writeAtomically(pdfPath, [&](const QString& temp) { return renderGrid(temp, in); }, error);
+}
+
+} // namespace ui::report
