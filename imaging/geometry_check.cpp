@@ -119,4 +119,20 @@ GeometryCheck checkGeometry(const std::vector<Eigen::Vector2d>& stagePx, const s
     return out;
 }
 
+std::vector<motion::msg::Message> geometryAdvice(const GeometryCheck& c, const PlanCameraGeometry& plan)
+{
+    namespace msg = motion::msg;
+    std::vector<msg::Message> out;
+    if (!c.measured)
+        return out;
+    const auto imageY = [](bool plusY) { return msg::verbatim("image_y", plusY ? "stage-plus-y" : "stage-minus-y"); };
+    if (c.mirrorOff)
+        out.push_back(msg::make("imaging.camera_check.mirrored", {imageY(c.fit.imageYAlongPlusY), msg::verbatim("plan_image_y", plan.imageYAlongPlusY ? "stage-plus-y" : "stage-minus-y")}));
+    if (c.rotationOff)
+        out.push_back(msg::make("imaging.camera_check.rotated", {msg::real("measured", c.fit.rotationDeg, msg::Unit::Deg), msg::real("plan", plan.rotationDeg, msg::Unit::Deg)}));
+    if (c.pixelOff)
+        out.push_back(msg::make("imaging.camera_check.pixel", {msg::real("measured", c.measuredPixelUm(), msg::Unit::Um), msg::real("plan", plan.pixelUm, msg::Unit::Um)}));
+    return out;
+}
+
 } // namespace imaging

@@ -11,6 +11,7 @@
 #include "imaging/image.h"
 #include "imaging/placement.h"
 #include "imaging/registration.h"
+#include "motion/message.h"
 
 #include <functional>
 #include <memory>
@@ -54,5 +55,9 @@ using GeometryTileLoader = std::function<std::shared_ptr<const ImageU16>(int til
 GeometryCheck checkGeometry(const std::vector<Eigen::Vector2d>& stagePx, const std::vector<TilePair>& pairs, int tileW, int tileH,
                             const PlanCameraGeometry& plan, const GeometryTileLoader& load, const RegistrationOptions& registration,
                             const GeometryCheckOptions& options = {});
+
+/// Which plan setting to change, one message each (imaging.camera_check.*), with the
+/// measured value: empty when the images agree with the plan or say too little.
+std::vector<motion::msg::Message> geometryAdvice(const GeometryCheck& check, const PlanCameraGeometry& plan);
 
 } // namespace imaging

@@ -6,6 +6,7 @@
 // Plain C++: the caller reads the positions (TileConfiguration, the scan's run log)
 // and words the problems.
 #include "imaging/fusion.h"
+#include "imaging/geometry_check.h"
 #include "imaging/placement.h"
 #include "imaging/registration.h"
 #include "imaging/tile_configuration.h"
@@ -37,6 +38,8 @@ struct StitchOptions {
     std::function<std::optional<Eigen::Vector2d>(const Eigen::Vector2d& stagePx)> stageMmAt;
     int threads = 0;                 ///< registration workers; 0 = one a core
     double cacheMegabytes = 512;     ///< tiles kept in memory while registering
+    /// The plan's camera, when known: the registered shifts are checked against it.
+    std::optional<PlanCameraGeometry> planCamera;
 };
 
 struct StitchResult {
@@ -47,6 +50,8 @@ struct StitchResult {
     SampleKind kind = SampleKind::Grey16;
     int tileWidth = 0, tileHeight = 0;
     double registrationS = 0, placementS = 0, fusionS = 0;
+    std::optional<PlanCameraGeometry> planCamera;  ///< as the options gave it
+    std::optional<GeometryCheck> cameraCheck;      ///< with planCamera (geometry_check.h)
 };
 
 /// Neighbour pairs from the stage positions: tiles whose expected overlap is at

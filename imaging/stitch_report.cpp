@@ -94,6 +94,28 @@ std::string stitchJson(const StitchResult& r, double seconds, const std::string&
     }
     s << "],\"rms_correction_px\":" << milli(r.placement.rmsCorrectionPx) << ",\"worst_correction_px\":" << milli(r.placement.worstCorrectionPx)
       << ",\"pairs_rejected\":" << r.placement.rejectedPairs << ",\"tiles_placed_by_stage\":" << byStage;
+    if (r.cameraCheck && r.planCamera) {
+        const GeometryCheck& c = *r.cameraCheck;
+        s << ",\"camera_check\":{\"measured\":" << (c.measured ? "true" : "false") << ",\"pairs\":" << c.pairsUsed;
+        if (c.measured) {
+            s << ",\"pixel_um\":[" << std::round(c.fit.pixelXUm * 1e5) / 1e5 << ',' << std::round(c.fit.pixelYUm * 1e5) / 1e5 << ']'
+              << ",\"rotation_deg\":" << milli(c.fit.rotationDeg) << ",\"image_y\":\"" << (c.fit.imageYAlongPlusY ? "stage-plus-y" : "stage-minus-y")
+              << "\",\"residual_px\":" << milli(c.fit.residualRmsPx);
+        }
+        s << ",\"change\":[";
+        const char* sep = "";
+        if (c.measured && c.mirrorOff) {
+            s << sep << "\"camera.image_y\"";
+            sep = ",";
+        }
+        if (c.measured && c.rotationOff) {
+            s << sep << "\"camera.rotation_deg\"";
+            sep = ",";
+        }
+        if (c.measured && c.pixelOff)
+            s << sep << "\"camera.pixel_um\"";
+        s << "]}";
+    }
     s << ",\"mosaic\":{\"file\":";
     jsonString(s, mosaicFile);
     s << ",\"width\":" << r.frame.width << ",\"height\":" << r.frame.height << "}";
