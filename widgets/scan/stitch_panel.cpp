@@ -132,6 +132,9 @@ QStringList StitchPanel::summaryLines() const
                  .arg(r->placement.worstCorrectionPx * um, 0, 'f', 2)
                  .arg(m_map->magnification(), 0, 'f', 0);
     lines << tr("Mosaic %1 × %2 px in %3 s").arg(r->frame.width).arg(r->frame.height).arg(m_job->seconds(), 0, 'f', 1);
+    if (r->cameraCheck && r->planCamera)
+        for (const motion::msg::Message& m : imaging::geometryAdvice(*r->cameraCheck, *r->planCamera))
+            lines << tr("Check the plan's camera: %1").arg(ui::words::text(m));
     return lines;
 }
 
