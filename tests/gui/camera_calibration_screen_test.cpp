@@ -13,6 +13,7 @@
 #include "widgets/scan/scan_screen.h"
 
 #include <QComboBox>
+#include <QDir>
 #include <QPointer>
 #include <QPushButton>
 #include <QTemporaryDir>
@@ -97,6 +98,9 @@ TEST(CameraCalibrationScreen, CalibrateCameraFindsTheTrueCameraAndSavesItsProfil
     EXPECT_NEAR(stage->status().axes[0].commanded, 40, 1e-3);
     EXPECT_NEAR(stage->status().axes[1].commanded, 40, 1e-3);
 
+    // BP_GUI_SHOTS=DIR: the Camera tab with the result, for the docs and for a person to judge.
+    if (qEnvironmentVariableIsSet("BP_GUI_SHOTS"))
+        w->grab().save(QDir(qEnvironmentVariable("BP_GUI_SHOTS")).filePath(QStringLiteral("camera-calibration.png")));
     auto* save = cal->findChild<QPushButton*>(QStringLiteral("cameraCalibrationSave"));
     ASSERT_TRUE(save && save->isVisible() && save->isEnabled());
     QTest::mouseClick(save, Qt::LeftButton);

@@ -125,7 +125,7 @@ void CameraCalibrationPanel::showResult()
                        .arg(f.imageYAlongPlusY ? tr("+Y (mirrored)") : tr("−Y"))
                        .arg(f.residualRmsPx, 0, 'f', 3)
                        .arg(f.residualMaxPx, 0, 'f', 3)
-                       .arg(m_result->returnPx, 0, 'f', 2);
+                       .arg(std::isfinite(m_result->returnPx) ? QString::number(m_result->returnPx, 'f', 2) : QStringLiteral("?"));
     text += QLatin1Char(' ') + tr("The pixel size comes from the stage's own steps: it carries the stage's scale error.");
     m_state->setText(text);
 }
