@@ -213,6 +213,14 @@ motion::msg::Checked<StitchResult> stitch(const std::vector<StitchTile>& tiles, 
         w.join();
     if (!problems.empty())
         return Result::refused(std::move(problems));
+    if (o.planCamera) {
+        r.planCamera = o.planCamera;
+        const GeometryTileLoader load = [&cache](int i) -> std::shared_ptr<const ImageU16> {
+            auto t = cache.get(i);
+            return t ? std::shared_ptr<const ImageU16>(*t, &(*t)->grey) : nullptr;
+        };
+        r.cameraCheck = checkGeometry(stage, r.pairs, r.tileWidth, r.tileHeight, *o.planCamera, load, o.registration);
+    }
     r.registrationS = since(t0);
 
     const Clock::time_point t1 = Clock::now();

@@ -7,6 +7,7 @@
 // and words the problems.
 #include "imaging/flat_field.h"
 #include "imaging/fusion.h"
+#include "imaging/geometry_check.h"
 #include "imaging/placement.h"
 #include "imaging/registration.h"
 #include "imaging/tile_configuration.h"
@@ -41,6 +42,8 @@ struct StitchOptions {
     std::shared_ptr<const FlatField> flatField;
     int threads = 0;                 ///< registration workers; 0 = one a core
     double cacheMegabytes = 512;     ///< tiles kept in memory while registering
+    /// The plan's camera, when known: the registered shifts are checked against it.
+    std::optional<PlanCameraGeometry> planCamera;
 };
 
 struct StitchResult {
@@ -51,6 +54,8 @@ struct StitchResult {
     SampleKind kind = SampleKind::Grey16;
     int tileWidth = 0, tileHeight = 0;
     double registrationS = 0, placementS = 0, fusionS = 0;
+    std::optional<PlanCameraGeometry> planCamera;  ///< as the options gave it
+    std::optional<GeometryCheck> cameraCheck;      ///< with planCamera (geometry_check.h)
 };
 
 /// Whether two tiles `dPx` apart (the second's top-left less the first's) are neighbours:

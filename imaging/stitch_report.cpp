@@ -99,6 +99,28 @@ std::string stitchJson(const StitchResult& r, double seconds, const std::string&
     s << ",\"stage_model\":{\"used\":" << (m.used ? "true" : "false") << ",\"pairs\":" << m.pairs << ",\"scale_x_ppm\":" << tenth(m.scaleXPpm())
       << ",\"scale_y_ppm\":" << tenth(m.scaleYPpm()) << ",\"rotation_urad\":" << tenth(m.rotationUrad()) << ",\"shear_urad\":" << tenth(m.shearUrad())
       << "},\"rms_beyond_model_px\":" << milli(r.placement.rmsBeyondModelPx) << ",\"worst_beyond_model_px\":" << milli(r.placement.worstBeyondModelPx);
+    if (r.cameraCheck && r.planCamera) {
+        const GeometryCheck& c = *r.cameraCheck;
+        s << ",\"camera_check\":{\"measured\":" << (c.measured ? "true" : "false") << ",\"pairs\":" << c.pairsUsed;
+        if (c.measured) {
+            s << ",\"pixel_um\":[" << std::round(c.fit.pixelXUm * 1e5) / 1e5 << ',' << std::round(c.fit.pixelYUm * 1e5) / 1e5 << ']'
+              << ",\"rotation_deg\":" << milli(c.fit.rotationDeg) << ",\"image_y\":\"" << (c.fit.imageYAlongPlusY ? "stage-plus-y" : "stage-minus-y")
+              << "\",\"residual_px\":" << milli(c.fit.residualRmsPx);
+        }
+        s << ",\"change\":[";
+        const char* sep = "";
+        if (c.measured && c.mirrorOff) {
+            s << sep << "\"camera.image_y\"";
+            sep = ",";
+        }
+        if (c.measured && c.rotationOff) {
+            s << sep << "\"camera.rotation_deg\"";
+            sep = ",";
+        }
+        if (c.measured && c.pixelOff)
+            s << sep << "\"camera.pixel_um\"";
+        s << "]}";
+    }
     s << ",\"mosaic\":{\"file\":";
     jsonString(s, mosaicFile);
     s << ",\"width\":" << r.frame.width << ",\"height\":" << r.frame.height << "}";

@@ -21,6 +21,9 @@ std::unique_ptr<dev::camera::Camera> cameraFor(Invocation& inv, CliSession* sess
 /// its exposure can be set only once it is there): Ok, or Refused with the reason printed.
 int openCamera(Invocation& inv, dev::camera::Camera* camera);
 
+/// `camera calibrate` (camera_calibrate.cpp).
+Command cameraCalibrateCommand();
+
 /// The options that go with --camera (specimen, seed), for a command's option list.
 QList<QCommandLineOption> cameraOptions(const char* defaultSpecimen = "slide");
 

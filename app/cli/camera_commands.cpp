@@ -1,7 +1,8 @@
 // benchpilot-cli's camera commands:
 //   camera list              the sources this build can take, and the simulated specimens;
 //   camera snap --camera SOURCE --out FILE.tif [--exposure-ms N]
-//                            one image, with where the stage stood, as a tile TIFF.
+//                            one image, with where the stage stood, as a tile TIFF;
+//   camera calibrate ...     the camera against the stage, into a camera profile (camera_calibrate.cpp).
 // See docs/camera.md.
 #include "camera_cli.h"
 #include "cli_session.h"
@@ -231,7 +232,8 @@ int openCamera(Invocation& inv, dev::camera::Camera* camera)
 QList<QCommandLineOption> cameraOptions(const char* defaultSpecimen)
 {
     return {option("specimen", "with --camera sim: what lies on the simulated stage: slide, grid-plate or line-scales", "NAME", defaultSpecimen),
-            option("camera-seed", "with --camera sim: the simulated specimen's and noise's seed", "N", "1")};
+            option("camera-seed", "with --camera sim: the simulated specimen's and noise's seed", "N", "1"),
+            option("camera-true", "with --camera sim: the simulated camera's true geometry where it differs from the plan's: pixel-um=X[:Y],rotation-deg=D,mirror", "SPEC")};
 }
 
 std::unique_ptr<dev::camera::Camera> cameraFor(Invocation& inv, CliSession* session, const QString& source, const char* defaultSpecimen)
@@ -245,9 +247,16 @@ std::unique_ptr<dev::camera::Camera> cameraFor(Invocation& inv, CliSession* sess
     }
     sim.settings.specimen = *kind;
     // benchpilot-sim chose its camera's specimen and seed when it started: one asked here would be ignored.
-    if (source.startsWith(QLatin1String("sim:")) && (inv.isSet(QStringLiteral("specimen")) || inv.isSet(QStringLiteral("camera-seed")))) {
-        inv.usage(tr("--camera %1: the specimen and its seed are benchpilot-sim's own (its --specimen and --camera-seed)").arg(source));
+    if (source.startsWith(QLatin1String("sim:")) && (inv.isSet(QStringLiteral("specimen")) || inv.isSet(QStringLiteral("camera-seed")) || inv.given(QStringLiteral("camera-true")))) {
+        inv.usage(tr("--camera %1: the specimen, its seed and the camera's true geometry are benchpilot-sim's own (its --specimen, --camera-seed and --camera-true)").arg(source));
         return nullptr;
+    }
+    if (inv.given(QStringLiteral("camera-true"))) {
+        std::string bad;
+        if (!cam::parseSimTrueGeometry(inv.value(QStringLiteral("camera-true")).toStdString(), &sim.settings.trueGeometry, &bad)) {
+            inv.usage(tr("--camera-true: '%1' is not pixel-um=X[:Y] (above 0), rotation-deg=D (-360 to 360) or mirror").arg(QString::fromStdString(bad)));
+            return nullptr;
+        }
     }
     double seed = 1;
     if (!inv.number(QStringLiteral("camera-seed"), seed, 1.0))
@@ -307,8 +316,8 @@ void addCameraCommands(std::vector<Command>& list)
                        optionParam("camera-seed", ParamType::Number)};
     snap.api.example = QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")}, {QStringLiteral("camera"), QStringLiteral("sim")},
                                    {QStringLiteral("out"), QStringLiteral("snap.tif")}};
-    list.push_back({QStringLiteral("camera"), tr("cameras: list the sources, take an image"), {},
-                    tr("See docs/camera.md for the sources, the image files and the simulated specimens."), {}, {}, {listCmd, snap}});
+    list.push_back({QStringLiteral("camera"), tr("cameras: list the sources, take an image, calibrate against the stage"), {},
+                    tr("See docs/camera.md for the sources, the image files and the simulated specimens."), {}, {}, {listCmd, snap, cameraCalibrateCommand()}});
 }
 
 } // namespace app::cli

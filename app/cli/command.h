@@ -190,6 +190,8 @@ public:
     InvocationHost& host() { return m_host; }
 
     bool isSet(const QString& option) const;
+    /// isSet for an option the command may not define (no warning when it does not).
+    bool given(const QString& option) const;
     QString value(const QString& option) const;        ///< "" when absent
     QStringList values(const QString& option) const;  ///< in the order given
     QStringList arguments() const;                     ///< the words that are not options

@@ -35,6 +35,7 @@ Invocation::Invocation(QString path, QCommandLineParser& parser, LinkOptions lin
 Invocation::~Invocation() = default;
 
 bool Invocation::isSet(const QString& option) const { return m_parser.isSet(option); }
+bool Invocation::given(const QString& option) const { return m_parser.optionNames().contains(option); }
 QString Invocation::value(const QString& option) const { return unmarkNegative(m_parser.value(option)); }
 
 QStringList Invocation::values(const QString& option) const

@@ -12,6 +12,7 @@
 #include "device/camera/scan_camera.h"
 
 #include "device/files/scan_exports.h"
+#include "device/files/camera/camera_profile_file.h"
 #include "device/files/scan_plan_file.h"
 #include "device/jobs/scan_launch.h"
 #include "device/jobs/scan_runner.h"
@@ -257,6 +258,14 @@ int scanRun(Invocation& inv)
     dev::files::json::Problems problems;
     if (!dev::files::scan::loadPlan(planPath, &plan, &problems))
         return inv.usage(ui::words::fileProblems(problems, QFileInfo(planPath).fileName()).join(QLatin1Char('\n')));
+    if (inv.isSet(QStringLiteral("camera-profile"))) {
+        const QString profilePath = inv.path(inv.value(QStringLiteral("camera-profile")));
+        const auto profile = dev::files::camera::loadCameraProfileFile(profilePath);
+        if (!profile.ok())
+            return inv.usage(ui::words::problems(profile.problems()).join(QLatin1Char('\n')));
+        dev::files::camera::applyCameraProfile(*profile, &plan.camera);
+        plan.camera.profile = profilePath.toStdString();
+    }
     motion::msg::Message error;
     const QString folder = inv.path(inv.isSet(QStringLiteral("out"))
         ? inv.value(QStringLiteral("out"))
@@ -409,11 +418,13 @@ void addScanCommands(std::vector<Command>& list)
                  option("home", "home the stage first"), option("restart", "start over even if the folder holds a run (kept aside)"),
                  option("yes", "run a scan that takes longer than a minute without asking"),
                  option("camera", "take an image at every tile: sim, sim:PATH, uvc[:NAME], command:CMD or folder:DIR (see camera list)", "SOURCE"),
-                 cameraOptions()[0], cameraOptions()[1]},
+                 cameraOptions()[0], cameraOptions()[1], cameraOptions()[2],
+                 option("camera-profile", "the camera's geometry from this camera profile, not the plan's (camera calibrate writes one)", "FILE")},
                 scanRun, {}};
     run.api.access = Access::Control;
     run.api.params = {{QStringLiteral("plan"), ParamType::File, tr("the scan plan file"), true, {}, {}}, optionParam("out", ParamType::File),
-                      optionParam("camera", ParamType::Text), optionParam("specimen", ParamType::Text), optionParam("camera-seed", ParamType::Number)};
+                      optionParam("camera", ParamType::Text), optionParam("specimen", ParamType::Text), optionParam("camera-seed", ParamType::Number),
+                      optionParam("camera-true", ParamType::Text), optionParam("camera-profile", ParamType::File)};
     run.api.example = QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")}, {QStringLiteral("plan"), QStringLiteral("slide.scan.json")},
                                   {QStringLiteral("out"), QStringLiteral("slide-run")}, {QStringLiteral("camera"), QStringLiteral("sim")}};
     list.push_back({QStringLiteral("scan"), tr("stitching scans on the stage: plan, run"), {},

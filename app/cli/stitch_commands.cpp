@@ -181,6 +181,8 @@ int stitchRun(Invocation& inv)
         // The log gives each field's centre: the TileConfiguration's corner is half a field
         // away, the same for every tile, so registration does not care; the OME position does.
         so.stageMmAt = [geo](const Eigen::Vector2d& px) { return std::optional<Eigen::Vector2d>(geo.toMm(px)); };
+        // The stage pixels came from this camera: the neighbours' shifts say whether it is right.
+        so.planCamera = imaging::PlanCameraGeometry{geo.pixelUm, geo.rotationDeg, !geo.imageYAlongMinusY};
     } else {
         auto entries = imaging::parseTileConfiguration(std::string_view(text.constData(), static_cast<std::size_t>(text.size())), shownPositions);
         if (!entries)
@@ -266,6 +268,9 @@ int stitchRun(Invocation& inv)
                    .arg(p.stageModel.shearUrad(), 0, 'f', 0)
                    .arg(p.rmsBeyondModelPx, 0, 'f', 2)
                    .arg(p.worstBeyondModelPx, 0, 'f', 2);
+    if (result->cameraCheck && result->planCamera)
+        for (const motion::msg::Message& m : imaging::geometryAdvice(*result->cameraCheck, *result->planCamera))
+            out << tr("warning: %1\n").arg(ui::words::text(m));
     if (!so.mosaicPath.empty())
         out << tr("wrote %1 (%2 × %3 px), %4 and %5 in %6 s\n")
                    .arg(QDir::toNativeSeparators(outPath))

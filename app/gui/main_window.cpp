@@ -190,6 +190,8 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
             m_jogCamera = new ui::CameraPanel(m_camera, m_api->screenInstrument(i));
             m_jogCamera->setObjectName(QStringLiteral("jogCamera"));
             m_jogCamera->setFileChooser(chooseSnapFile);
+            if (m_options.confirmDialogs)
+                m_jogCamera->setConfirm([this](const QString& q) { return confirm(q); });
             connect(m_jogCamera, &ui::CameraPanel::problem, this, &MainWindow::warn);
             connect(m_jogCamera, &ui::CameraPanel::notice, this, &MainWindow::inform);
             jog->addPanel(m_jogCamera);
@@ -255,6 +257,8 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
     }
     m_scan->setCameraSession(m_camera);
     m_scan->cameraPanel()->setFileChooser(chooseSnapFile);
+    if (m_options.confirmDialogs)
+        m_scan->cameraPanel()->setConfirm([this](const QString& q) { return confirm(q); });
     connect(m_scan, &ui::ScanScreen::problem, this, &MainWindow::warn);
     connect(m_scan, &ui::ScanScreen::notice, this, &MainWindow::inform);
     addScreen(QStringLiteral("scan"), tr("Scan"), m_scan);

@@ -16,19 +16,22 @@ CameraOptions::CameraOptions()
       m_sensor(QStringLiteral("camera-sensor"), QCoreApplication::translate("sim", "with --camera-socket: the sensor in pixels when a request gives no camera"),
                QStringLiteral("w,h"), QStringLiteral("2048,2048")),
       m_pixel(QStringLiteral("camera-pixel-um"), QCoreApplication::translate("sim", "with --camera-socket: a pixel at the sample in µm when a request gives no camera"),
-              QStringLiteral("um"), QStringLiteral("0.65"))
+              QStringLiteral("um"), QStringLiteral("0.65")),
+      m_true(QStringLiteral("camera-true"),
+             QCoreApplication::translate("sim", "with --camera-socket: the camera's true geometry where it differs from what it is asked: pixel-um=X[:Y],rotation-deg=D,mirror"),
+             QStringLiteral("spec"))
 {
 }
 
-void CameraOptions::addTo(QCommandLineParser& parser) const { parser.addOptions({m_socket, m_specimen, m_seed, m_sensor, m_pixel}); }
+void CameraOptions::addTo(QCommandLineParser& parser) const { parser.addOptions({m_socket, m_specimen, m_seed, m_sensor, m_pixel, m_true}); }
 
 bool CameraOptions::read(const QCommandLineParser& p, const QString& kind, const QStringList& taken, CameraChoice* choice, QString* why) const
 {
     namespace cam = dev::camera;
     choice->serve = p.isSet(m_socket);
     if (!choice->serve) {
-        if (p.isSet(m_specimen) || p.isSet(m_seed) || p.isSet(m_sensor) || p.isSet(m_pixel)) {
-            *why = QCoreApplication::translate("sim", "--specimen, --camera-seed, --camera-sensor and --camera-pixel-um are for the camera socket (--camera-socket PATH)");
+        if (p.isSet(m_specimen) || p.isSet(m_seed) || p.isSet(m_sensor) || p.isSet(m_pixel) || p.isSet(m_true)) {
+            *why = QCoreApplication::translate("sim", "--specimen, --camera-seed, --camera-sensor, --camera-pixel-um and --camera-true are for the camera socket (--camera-socket PATH)");
             return false;
         }
         return true;
@@ -76,6 +79,11 @@ bool CameraOptions::read(const QCommandLineParser& p, const QString& kind, const
         return false;
     }
     s.geometry.pixelUm = pixelUm;
+    std::string bad;
+    if (p.isSet(m_true) && !cam::parseSimTrueGeometry(p.value(m_true).toStdString(), &s.trueGeometry, &bad)) {
+        *why = QCoreApplication::translate("sim", "--camera-true: '%1' is not pixel-um=X[:Y] (above 0), rotation-deg=D (-360 to 360) or mirror").arg(QString::fromStdString(bad));
+        return false;
+    }
     return true;
 }
 

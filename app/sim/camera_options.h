@@ -1,7 +1,8 @@
 #pragma once
 // benchpilot-sim's camera options: --camera-socket PATH serves the simulated camera beside the
 // pty (dev::camera::SimCameraServer), and --specimen, --camera-seed, --camera-sensor,
-// --camera-pixel-um choose what it shows and the camera a request without one gets.
+// --camera-pixel-um choose what it shows and the camera a request without one gets;
+// --camera-true makes the camera truly other than it is asked to be (sim_true_geometry.h).
 #include "device/camera/sim_camera.h"
 
 #include <QCommandLineOption>
@@ -25,7 +26,7 @@ public:
     bool read(const QCommandLineParser& parser, const QString& kind, const QStringList& taken, CameraChoice* choice, QString* why) const;
 
 private:
-    QCommandLineOption m_socket, m_specimen, m_seed, m_sensor, m_pixel;
+    QCommandLineOption m_socket, m_specimen, m_seed, m_sensor, m_pixel, m_true;
 };
 
 } // namespace app::sim

@@ -11,8 +11,9 @@ void CameraGeometry::axes(double* exX, double* exY, double* eyX, double* eyY) co
     *exX = std::cos(th) * mmPerPx;
     *exY = std::sin(th) * mmPerPx;
     // Down the image: a quarter turn clockwise from the x axis for stage-minus-y.
-    *eyX = (imageYAlongMinusY ? std::sin(th) : -std::sin(th)) * mmPerPx;
-    *eyY = (imageYAlongMinusY ? -std::cos(th) : std::cos(th)) * mmPerPx;
+    const double mmPerPxY = (pixelYUm > 0 ? pixelYUm : pixelUm) * 1e-3;
+    *eyX = (imageYAlongMinusY ? std::sin(th) : -std::sin(th)) * mmPerPxY;
+    *eyY = (imageYAlongMinusY ? -std::cos(th) : std::cos(th)) * mmPerPxY;
 }
 
 } // namespace dev::camera

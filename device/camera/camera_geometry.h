@@ -8,6 +8,7 @@ struct CameraGeometry {
     int sensorWidthPx = 2048;
     int sensorHeightPx = 2048;
     double pixelUm = 0.65;       ///< one pixel at the sample (sensor pitch / magnification)
+    double pixelYUm = 0;         ///< a pixel's height at the sample where it is not square; 0: pixelUm
     double rotationDeg = 0;      ///< the image's x axis against stage +X, counter-clockwise
     bool imageYAlongMinusY = true;  ///< image rows (down the image) run along stage −Y
 

@@ -124,9 +124,11 @@ void SimCamera::renderAsync(const WorkPoint& at, const CameraGeometry& geometry,
     const SimOptics optics = m_settings.optics;
     const double exposureMs = m_settings.exposureMs;
     const std::uint64_t seed = m_settings.seed;
+    const SimTrueGeometry trueGeometry = m_settings.trueGeometry;
     const std::uint64_t sequence = ++m_sequence;
-    m_pool.start([this, specimen, optics, geometry, at, exposureMs, seed, sequence, startedUs, requestId, live] {
-        Frame f = renderSimFrame(*specimen.get(), geometry, optics, at.xMm, at.yMm, exposureMs, seed);
+    m_pool.start([this, specimen, optics, geometry, trueGeometry, at, exposureMs, seed, sequence, startedUs, requestId, live] {
+        Frame f = renderSimFrame(*specimen.get(), trueGeometryOf(geometry, trueGeometry), optics, at.xMm, at.yMm, exposureMs, seed);
+        f.pixelUm = geometry.pixelUm;  // the camera says what it was asked to be, as a real one would
         f.startedHostUs = startedUs;
         f.deviceTimeUs = at.deviceTimeUs;
         f.sequence = sequence;

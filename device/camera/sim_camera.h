@@ -8,6 +8,7 @@
 // the result comes back as a queued call. The destructor waits for a render in flight.
 #include "device/camera/camera.h"
 #include "device/camera/sim_render.h"
+#include "device/camera/sim_true_geometry.h"
 #include "device/camera/specimen.h"
 
 #include <QElapsedTimer>
@@ -27,6 +28,9 @@ struct SimCameraSettings {
     SimOptics optics;
     double exposureMs = 10;
     double blurUm = 0.6;          ///< σ of the optics at the sample
+    /// Where the camera truly differs from the geometry it is asked for (a plan's, or
+    /// `geometry`): images are rendered with the truth, frames still report the pixel asked.
+    SimTrueGeometry trueGeometry;
 };
 
 struct WorkPoint {

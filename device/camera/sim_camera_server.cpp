@@ -188,14 +188,16 @@ void SimCameraServer::render(QLocalSocket* socket, const SimWireCapture& capture
     const SimOptics optics = m_settings.optics;
     const CameraGeometry geometry = capture.geometry.value_or(m_settings.geometry);
     const std::uint64_t seed = m_settings.seed;
+    const SimTrueGeometry trueGeometry = m_settings.trueGeometry;
     const std::uint64_t sequence = ++m_sequence;
     const double exposureMs = capture.exposureMs;
     const std::uint64_t id = capture.id;
     QPointer<QLocalSocket> to(socket);
-    m_pool.start([this, specimen, optics, geometry, at, exposureMs, seed, sequence, startedUs, id, to] {
+    m_pool.start([this, specimen, optics, geometry, trueGeometry, at, exposureMs, seed, sequence, startedUs, id, to] {
         SimWireFrame answer;
         answer.id = id;
-        answer.frame = renderSimFrame(*specimen.get(), geometry, optics, at.xMm, at.yMm, exposureMs, seed);
+        answer.frame = renderSimFrame(*specimen.get(), trueGeometryOf(geometry, trueGeometry), optics, at.xMm, at.yMm, exposureMs, seed);
+        answer.frame.pixelUm = geometry.pixelUm;  // what it was asked to be, as a real camera says
         answer.frame.deviceTimeUs = at.deviceTimeUs;
         answer.frame.sequence = sequence;
         answer.trueXMm = at.xMm;

@@ -1,5 +1,9 @@
 #include "device/files/scan_plan_file.h"
 
+#include "device/files/camera/camera_profile_file.h"
+
+#include <QDir>
+
 #include "device/files/text_file.h"
 
 #include <QFileInfo>
@@ -126,11 +130,17 @@ void readCamera(const Value& v, ScanPlan& plan, Problems& p)
 {
     using motion::scan::FieldSource;
     ObjectReader o(v, "camera", p);
-    const auto from = o.oneOf("fov_from", true, {"sensor", "field"});
     auto& c = plan.camera;
+    // A plan naming a camera profile takes its geometry from there (loadPlan): what it
+    // says itself is the fallback a reader without the profile shows.
+    if (const auto profile = o.string("profile", false))
+        c.profile = *profile;
+    const auto from = o.oneOf("fov_from", c.profile.empty(), {"sensor", "field"});
+    if (!from && !c.profile.empty())
+        c.source = FieldSource::Direct;
     if (from && *from == "sensor") {
         c.source = FieldSource::Sensor;
-        o.refuseUnknown({"fov_from", "sensor_px", "sensor_pixel_um", "magnification", "rotation_deg", "image_y"});
+        o.refuseUnknown({"fov_from", "sensor_px", "sensor_pixel_um", "magnification", "rotation_deg", "image_y", "profile"});
         if (const auto px = pairMember(o, "sensor_px", true, true)) {
             c.sensorWidthPx = static_cast<int>(std::fmax(-1e9, std::fmin(1e9, (*px)[0])));
             c.sensorHeightPx = static_cast<int>(std::fmax(-1e9, std::fmin(1e9, (*px)[1])));
@@ -139,9 +149,9 @@ void readCamera(const Value& v, ScanPlan& plan, Problems& p)
             c.sensorPixelUm = *um;
         if (const auto m = o.number("magnification", true, -kScanAny, kScanAny))
             c.magnification = *m;
-    } else if (from) {
+    } else if (from || !c.profile.empty()) {
         c.source = FieldSource::Direct;
-        o.refuseUnknown({"fov_from", "field_mm", "pixel_um", "rotation_deg", "image_y"});
+        o.refuseUnknown({"fov_from", "field_mm", "pixel_um", "rotation_deg", "image_y", "profile"});
         if (const auto f = pairMember(o, "field_mm", true)) {
             c.fieldWidthMm = (*f)[0];
             c.fieldHeightMm = (*f)[1];
@@ -337,6 +347,8 @@ Value planToJson(const ScanPlan& plan)
     }
     camera.set("rotation_deg", Value(c.rotationDeg));
     camera.set("image_y", Value(c.imageY == motion::scan::ImageY::StagePlusY ? "stage-plus-y" : "stage-minus-y"));
+    if (!c.profile.empty())
+        camera.set("profile", Value(c.profile));
     root.set("camera", std::move(camera));
     root.set("overlap", numberPair(plan.overlapX, plan.overlapY));
     root.set("order", Value(motion::scan::orderName(plan.order)));
@@ -379,6 +391,24 @@ bool loadPlan(const QString& path, ScanPlan* plan, dev::files::json::Problems* p
     if (!r.plan) {
         *problems = std::move(r.problems);
         return false;
+    }
+    if (!r.plan->camera.profile.empty()) {
+        // The profile lies beside the plan unless the plan says where.
+        const QString named = QString::fromStdString(r.plan->camera.profile);
+        const QString profilePath = QDir(QFileInfo(path).absolutePath()).filePath(named);
+        const auto profile = dev::files::camera::loadCameraProfileFile(profilePath);
+        if (!profile.ok()) {
+            const auto parsed = dev::files::json::parse(text);
+            const dev::files::json::Position at = parsed ? locate(*parsed.value, "camera.profile") : dev::files::json::Position{};
+            for (const motion::msg::Problem& p : profile.problems())
+                problems->add(at, "camera.profile",
+                              motion::msg::make("scan.plan.camera_profile_problem",
+                                                {motion::msg::verbatim("file", p.file.empty() ? named.toStdString() : p.file),
+                                                 motion::msg::integer("line", p.line), motion::msg::integer("column", p.column),
+                                                 motion::msg::nested("cause", p.message)}));
+            return false;
+        }
+        dev::files::camera::applyCameraProfile(*profile, &r.plan->camera);
     }
     *plan = std::move(*r.plan);
     return true;

@@ -111,6 +111,7 @@ imaging::StitchOptions StitchJob::optionsFor(const motion::scan::ScanPlan& plan,
     imaging::StitchOptions so;
     so.placement.stageSigmaPx = std::max(0.1, request.repeatabilityUm / pixelUm);
     so.mosaic.pixelSizeUm = pixelUm;
+    so.planCamera = imaging::PlanCameraGeometry{pixelUm, request.plan.camera.rotationDeg, request.plan.camera.imageY == motion::scan::ImageY::StagePlusY};
     so.mosaic.imageName = dir.dirName().toStdString();
     so.mosaicPath = dir.filePath(request.mosaicName).toStdString();
     const motion::scan::Camera camera = plan.camera;

@@ -2645,10 +2645,6 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>拍摄一张图像，连同载物台所在位置写成 TIFF 文件</translation>
     </message>
     <message>
-        <source>cameras: list the sources, take an image</source>
-        <translation>相机：列出图像来源，拍摄图像</translation>
-    </message>
-    <message>
         <source>See docs/camera.md for the sources, the image files and the simulated specimens.</source>
         <translation>图像来源、图像文件和模拟样品见 docs/camera.md。</translation>
     </message>
@@ -2835,10 +2831,6 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>需要 --camera SOURCE（sim、sim:PATH、uvc[:NAME]、command:CMD 或 folder:DIR；见 camera list）</translation>
     </message>
     <message>
-        <source>--camera %1: the specimen and its seed are benchpilot-sim&apos;s own (its --specimen and --camera-seed)</source>
-        <translation>--camera %1：样品及其种子由 benchpilot-sim 自己决定（其 --specimen 和 --camera-seed）</translation>
-    </message>
-    <message>
         <source>With --sim stage and --camera sim the simulated camera renders the specimen at the stage&apos;s true position; on benchpilot-sim&apos;s pty, --camera sim:PATH takes it from the socket that benchpilot-sim serves with --camera-socket PATH (see docs/camera.md).</source>
         <translation>使用 --sim stage 和 --camera sim 时，模拟相机按载物台的真实位置渲染样品；使用 benchpilot-sim 的 pty 时，--camera sim:PATH 从 benchpilot-sim 以 --camera-socket PATH 提供的套接字取得图像（见 docs/camera.md）。</translation>
     </message>
@@ -2913,6 +2905,70 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>Grid map of the XY stage</source>
         <translation>XY 平台网格图</translation>
+        <source>needs --out PROFILE.json, the camera profile to write</source>
+        <translation>需要 --out PROFILE.json，即要写入的相机配置文件</translation>
+    </message>
+    <message>
+        <source>--step-px must be from 1 to 10000</source>
+        <translation>--step-px 必须在 1 到 10000 之间</translation>
+    </message>
+    <message>
+        <source>--steps must be a whole number from 1 to 10</source>
+        <translation>--steps 必须是 1 到 10 之间的整数</translation>
+    </message>
+    <message>
+        <source>--pixel-um must be above 0 and at most 1000</source>
+        <translation>--pixel-um 必须大于 0 且不超过 1000</translation>
+    </message>
+    <message>
+        <source>--at must be X,Y in mm (got &apos;%1&apos;)</source>
+        <translation>--at 必须是以 mm 为单位的 X,Y（收到的是 &apos;%1&apos;）</translation>
+    </message>
+    <message>
+        <source>the stage did not reach %1, %2 mm</source>
+        <translation>载物台未到达 %1, %2 mm</translation>
+    </message>
+    <message>
+        <source>image %1 of %2</source>
+        <translation>第 %1 张图像，共 %2 张</translation>
+    </message>
+    <message>
+        <source>the calibration did not finish within %1 min</source>
+        <translation>标定未在 %1 分钟内完成</translation>
+    </message>
+    <message>
+        <source>pixel %1 × %2 µm, rotation %3°, image y along stage %4; residual %5 px RMS (worst %6 px), %7 images</source>
+        <translation>像素 %1 × %2 µm，旋转 %3°，图像 y 沿载物台 %4；残差 %5 px RMS（最大 %6 px），共 %7 张图像</translation>
+    </message>
+    <message>
+        <source>The pixel size comes from the stage&apos;s own steps: it carries the stage&apos;s scale error.</source>
+        <translation>像素尺寸来自载物台自身的步距：它带有载物台的标尺误差。</translation>
+    </message>
+    <message>
+        <source>measure the camera&apos;s pixel size, rotation and mirror against the stage, and write a camera profile</source>
+        <translation>相对载物台测量相机的像素尺寸、旋转和镜像，并写入相机配置文件</translation>
+    </message>
+    <message>
+        <source>Moves the stage by ±1…±N steps along X and Y around where it stands (homed, inside its soft limits), takes an image at each, registers it against the first, returns to the start and fits the camera–stage mapping. The pixel size comes from the stage&apos;s own steps, so it carries the stage&apos;s scale error (docs/camera.md).</source>
+        <translation>在载物台当前位置周围沿 X 和 Y 移动 ±1…±N 步（须已回零，且在软限位内），每步拍摄一张图像，与第一张配准，回到起点，并拟合相机–载物台映射。像素尺寸来自载物台自身的步距，因此带有载物台的标尺误差（docs/camera.md）。</translation>
+    </message>
+    <message>
+        <source>--camera %1: the specimen, its seed and the camera&apos;s true geometry are benchpilot-sim&apos;s own (its --specimen, --camera-seed and --camera-true)</source>
+        <translation>--camera %1：样品、其种子和相机的真实几何由 benchpilot-sim 自己决定（其 --specimen、--camera-seed 和 --camera-true）</translation>
+    </message>
+    <message>
+        <source>--camera-true: &apos;%1&apos; is not pixel-um=X[:Y] (above 0), rotation-deg=D (-360 to 360) or mirror</source>
+        <translation>--camera-true：&apos;%1&apos; 不是 pixel-um=X[:Y]（大于 0）、rotation-deg=D（-360 到 360）或 mirror</translation>
+    </message>
+    <message>
+        <source>cameras: list the sources, take an image, calibrate against the stage</source>
+        <translation>相机：列出图像来源，拍摄图像，相对载物台标定</translation>
+    </message>
+    <message>
+        <source>warning: %1
+</source>
+        <translation>警告：%1
+</translation>
     </message>
 </context>
 <context>
@@ -3726,10 +3782,6 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>与 --camera-socket 一起：请求未给出相机时一个像素在样品上的大小（µm）</translation>
     </message>
     <message>
-        <source>--specimen, --camera-seed, --camera-sensor and --camera-pixel-um are for the camera socket (--camera-socket PATH)</source>
-        <translation>--specimen、--camera-seed、--camera-sensor 和 --camera-pixel-um 用于相机套接字（--camera-socket PATH）</translation>
-    </message>
-    <message>
         <source>--camera-socket is for the simulated stage (--instrument stage)</source>
         <translation>--camera-socket 用于模拟载物台（--instrument stage）</translation>
     </message>
@@ -3756,6 +3808,18 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>--camera-pixel-um must be above 0 and at most %1 (got &apos;%2&apos;)</source>
         <translation>--camera-pixel-um 必须大于 0 且不超过 %1（收到 &apos;%2&apos;）</translation>
+    </message>
+    <message>
+        <source>with --camera-socket: the camera&apos;s true geometry where it differs from what it is asked: pixel-um=X[:Y],rotation-deg=D,mirror</source>
+        <translation>与 --camera-socket 一起：相机与所要求不同的真实几何：pixel-um=X[:Y],rotation-deg=D,mirror</translation>
+    </message>
+    <message>
+        <source>--specimen, --camera-seed, --camera-sensor, --camera-pixel-um and --camera-true are for the camera socket (--camera-socket PATH)</source>
+        <translation>--specimen、--camera-seed、--camera-sensor、--camera-pixel-um 和 --camera-true 用于相机套接字（--camera-socket PATH）</translation>
+    </message>
+    <message>
+        <source>--camera-true: &apos;%1&apos; is not pixel-um=X[:Y] (above 0), rotation-deg=D (-360 to 360) or mirror</source>
+        <translation>--camera-true：&apos;%1&apos; 不是 pixel-um=X[:Y]（大于 0）、rotation-deg=D（-360 到 360）或 mirror</translation>
     </message>
 </context>
 <context>
@@ -4658,6 +4722,73 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Grid map</source>
         <translation>网格图</translation>
+    </message>
+</context>
+<context>
+    <name>ui::CameraCalibrationPanel</name>
+    <message>
+        <source>Save the camera profile</source>
+        <translation>保存相机配置文件</translation>
+    </message>
+    <message>
+        <source>Camera profiles (*.camera-profile.json);;JSON (*.json)</source>
+        <translation>相机配置文件 (*.camera-profile.json);;JSON (*.json)</translation>
+    </message>
+    <message>
+        <source>Camera calibration: %1</source>
+        <translation>相机标定：%1</translation>
+    </message>
+    <message>
+        <source>Calibrate the camera: the stage moves by steps of %1 px along X and Y around where it stands (%2 images) and comes back. Nothing may touch the stage meanwhile. Start?</source>
+        <translation>标定相机：载物台将在当前位置周围沿 X 和 Y 按 %1 px 的步距移动（%2 张图像），然后返回。期间不得触碰载物台。开始吗？</translation>
+    </message>
+    <message>
+        <source>Calibrating the camera: image %1 of %2…</source>
+        <translation>正在标定相机：第 %1 张图像，共 %2 张…</translation>
+    </message>
+    <message>
+        <source>Camera calibration stopped: %1</source>
+        <translation>相机标定已停止：%1</translation>
+    </message>
+    <message>
+        <source>Pixel %1 × %2 µm, rotation %3°, image y along stage %4; residual %5 px RMS (worst %6 px), back at the start within %7 px.</source>
+        <translation>像素 %1 × %2 µm，旋转 %3°，图像 y 沿载物台 %4；残差 %5 px RMS（最大 %6 px），返回起点误差在 %7 px 以内。</translation>
+    </message>
+    <message>
+        <source>+Y (mirrored)</source>
+        <translation>+Y（镜像）</translation>
+    </message>
+    <message>
+        <source>−Y</source>
+        <translation>−Y</translation>
+    </message>
+    <message>
+        <source>The pixel size comes from the stage&apos;s own steps: it carries the stage&apos;s scale error.</source>
+        <translation>像素尺寸来自载物台自身的步距：它带有载物台的标尺误差。</translation>
+    </message>
+    <message>
+        <source>Camera profile saved to %1</source>
+        <translation>相机配置文件已保存到 %1</translation>
+    </message>
+    <message>
+        <source>Calibrate camera…</source>
+        <translation>标定相机…</translation>
+    </message>
+    <message>
+        <source>Move the stage by known steps, register the images and measure the camera&apos;s pixel size, rotation and mirror</source>
+        <translation>按已知步距移动载物台，配准图像，测量相机的像素尺寸、旋转和镜像</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>Save as profile…</source>
+        <translation>另存为配置文件…</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
     </message>
 </context>
 <context>
@@ -8593,6 +8724,10 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
         <source>Stitch the images of the scan in the output folder into a mosaic (Ctrl+T)</source>
         <translation>把输出文件夹中扫描的图像拼接成拼接图（Ctrl+T）</translation>
     </message>
+    <message>
+        <source>Check the plan&apos;s camera: %1</source>
+        <translation>请检查计划中的相机：%1</translation>
+    </message>
 </context>
 <context>
     <name>ui::TravelView</name>
@@ -10602,6 +10737,106 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <source>a %1 (Motion-JPEG) frame from the camera, %2 × %3 px, could not be decoded</source>
         <comment>camera.uvc.jpeg_unreadable</comment>
         <translation>无法解码相机的一帧 %1（Motion-JPEG），%2 × %3 像素</translation>
+    </message>
+    <message>
+        <source>a camera calibration is already running</source>
+        <comment>camera.calibration.already_running</comment>
+        <translation>相机标定已在运行</translation>
+    </message>
+    <message>
+        <source>the stage is not connected</source>
+        <comment>camera.calibration.not_connected</comment>
+        <translation>载物台未连接</translation>
+    </message>
+    <message>
+        <source>the camera is calibrated against the microscope stage; this instrument is not one</source>
+        <comment>camera.calibration.not_a_stage</comment>
+        <translation>相机需相对显微镜载物台标定；此仪器不是载物台</translation>
+    </message>
+    <message>
+        <source>the E-stop is latched: reset it before calibrating the camera</source>
+        <comment>camera.calibration.estop_latched</comment>
+        <translation>急停已锁定：标定相机前请先复位</translation>
+    </message>
+    <message>
+        <source>the stage is not homed: home it before calibrating the camera</source>
+        <comment>camera.calibration.not_homed</comment>
+        <translation>载物台未回零：标定相机前请先回零</translation>
+    </message>
+    <message>
+        <source>the stage is moving: wait until it stands still</source>
+        <comment>camera.calibration.moving</comment>
+        <translation>载物台正在移动：请等它停稳</translation>
+    </message>
+    <message>
+        <source>a step of %1 px taken %2 times each way is not a calibration: the step must be 1 to 10000 px and the count 1 to 10</source>
+        <comment>camera.calibration.bad_steps</comment>
+        <translation>每个方向走 %2 次、每步 %1 px 无法构成标定：步距须为 1 到 10000 px，次数须为 1 到 10</translation>
+    </message>
+    <message>
+        <source>the camera %1 does not say its pixel size: give the nominal one (--pixel-um)</source>
+        <comment>camera.calibration.no_pixel_size</comment>
+        <translation>相机 %1 未给出其像素尺寸：请给出标称值（--pixel-um）</translation>
+    </message>
+    <message>
+        <source>the steps reach %1 px from the start, more than half of the %2 × %3 px image: take shorter or fewer steps</source>
+        <comment>camera.calibration.steps_too_long</comment>
+        <translation>步距离起点可达 %1 px，超过 %2 × %3 px 图像的一半：请缩短步距或减少步数</translation>
+    </message>
+    <message>
+        <source>a step would take %1 to %2, outside its soft limits %3 … %4: move the stage further in first</source>
+        <comment>camera.calibration.beyond_limits</comment>
+        <translation>某一步会使 %1 到达 %2，超出其软限位 %3 … %4：请先把载物台移到更靠内的位置</translation>
+    </message>
+    <message>
+        <source>the camera&apos;s image changed size during the calibration (%1 × %2 px, the first was %3 × %4 px)</source>
+        <comment>camera.calibration.size_changed</comment>
+        <translation>标定过程中相机图像尺寸发生了变化（%1 × %2 px，第一张为 %3 × %4 px）</translation>
+    </message>
+    <message>
+        <source>the camera calibration was stopped; the stage was stopped where it stood</source>
+        <comment>camera.calibration.stopped</comment>
+        <translation>相机标定已停止；载物台已在原处停下</translation>
+    </message>
+    <message>
+        <source>the link to the stage was lost during the camera calibration</source>
+        <comment>camera.calibration.link_lost</comment>
+        <translation>相机标定过程中与载物台的连接中断</translation>
+    </message>
+    <message>
+        <source>the camera calibration stopped: %1 %2</source>
+        <comment>camera.calibration.stage_event</comment>
+        <translation>相机标定已停止：%1 %2</translation>
+    </message>
+    <message>
+        <source>the stage refused a calibration step: %1</source>
+        <comment>camera.calibration.move_refused</comment>
+        <translation>载物台拒绝了一个标定步：%1</translation>
+    </message>
+    <message>
+        <source>a calibration step did not end within %1</source>
+        <comment>camera.calibration.move_timeout</comment>
+        <translation>一个标定步未在 %1 内完成</translation>
+    </message>
+    <message>
+        <source>the camera gave no image within %1</source>
+        <comment>camera.calibration.no_image</comment>
+        <translation>相机在 %1 内没有给出图像</translation>
+    </message>
+    <message>
+        <source>the camera failed during the calibration: %1</source>
+        <comment>camera.calibration.camera_failed</comment>
+        <translation>标定过程中相机出错：%1</translation>
+    </message>
+    <message>
+        <source>only %1 of %2 images could be registered against the first: the specimen has too little texture here, or the steps are too long</source>
+        <comment>camera.calibration.not_registered</comment>
+        <translation>%2 张图像中只有 %1 张能与第一张配准：此处样品纹理太少，或步距太长</translation>
+    </message>
+    <message>
+        <source>the registered shifts do not give a camera mapping (the steps do not span both axes)</source>
+        <comment>camera.calibration.no_fit</comment>
+        <translation>配准得到的位移无法给出相机映射（各步未覆盖两个轴）</translation>
     </message>
 </context>
 <context>
@@ -12826,6 +13061,19 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <source>level %1 of the mosaic&apos;s pyramid cannot be read (%2)</source>
         <comment>imaging.pyramid.bad_level</comment>
         <translation>无法读取拼接图金字塔的第 %1 层（%2）</translation>
+        <source>the images are mirrored against the plan&apos;s camera: set the camera&apos;s image y to %1 (the plan says %2)</source>
+        <comment>imaging.camera_check.mirrored</comment>
+        <translation>图像相对计划中的相机是镜像的：请把相机的 image y 设为 %1（计划中为 %2）</translation>
+    </message>
+    <message>
+        <source>the neighbours&apos; shifts show the camera turned %1 against the stage: set the camera&apos;s rotation to %1 (the plan says %2)</source>
+        <comment>imaging.camera_check.rotated</comment>
+        <translation>相邻图块的位移表明相机相对载物台旋转了 %1：请把相机的旋转设为 %1（计划中为 %2）</translation>
+    </message>
+    <message>
+        <source>the neighbours&apos; shifts show a pixel of %1 at the sample: set the camera&apos;s pixel size to %1 (the plan says %2), or calibrate the camera</source>
+        <comment>imaging.camera_check.pixel</comment>
+        <translation>相邻图块的位移表明样品处的像素为 %1：请把相机的像素尺寸设为 %1（计划中为 %2），或标定相机</translation>
     </message>
 </context>
 <context>
@@ -14520,6 +14768,11 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <source>rejected: disagrees with the other pairs</source>
         <comment>scan.pair.outlier</comment>
         <translation>已剔除：与其他图块对不一致</translation>
+    </message>
+    <message>
+        <source>the camera profile %1, line %2, column %3: %4</source>
+        <comment>scan.plan.camera_profile_problem</comment>
+        <translation>相机配置文件 %1，第 %2 行，第 %3 列：%4</translation>
     </message>
 </context>
 <context>

@@ -28,7 +28,7 @@ const QSet<QString> kNotIds = {
     // The scan plan's camera fields (paths in a plan file, not message ids).
     QStringLiteral("camera.field_mm"), QStringLiteral("camera.magnification"), QStringLiteral("camera.overlap"),
     QStringLiteral("camera.pixel_um"), QStringLiteral("camera.rotation_deg"), QStringLiteral("camera.sensor_pixel_um"),
-    QStringLiteral("camera.sensor_px"),
+    QStringLiteral("camera.sensor_px"), QStringLiteral("camera.profile"),
     QStringLiteral("link.state."),          // the prefix linkStateKey() strips
     // API method names the CLI's command table spells out (app/cli, docs/api.md).
     QStringLiteral("device.move"), QStringLiteral("recipe.run"), QStringLiteral("tuning.gains"),

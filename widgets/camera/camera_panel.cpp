@@ -1,4 +1,6 @@
 #include "widgets/camera/camera_panel.h"
+
+#include "widgets/camera/camera_calibration_panel.h"
 #include "widgets/common/button_key.h"
 
 #include "device/client/instrument.h"
@@ -122,7 +124,12 @@ CameraPanel::CameraPanel(CameraSession* session, dev::Instrument* stage, QWidget
     m_view->bar()->insertWidget(1, m_exposure);
     m_view->bar()->insertWidget(2, m_snap);
     m_view->bar()->insertSpacing(3, 12);
+    m_calibration = new CameraCalibrationPanel(m_session, m_stage);
+    m_view->bar()->insertWidget(4, m_calibration->calibrateButton());
     v->addWidget(m_view, 1);
+    v->addWidget(m_calibration);
+    connect(m_calibration, &CameraCalibrationPanel::problem, this, &CameraPanel::problem);
+    connect(m_calibration, &CameraCalibrationPanel::notice, this, &CameraPanel::notice);
 
     connect(m_refresh, &QPushButton::clicked, this, &CameraPanel::refreshSources);
     connect(m_open, &QPushButton::clicked, this, [this] {
@@ -308,5 +315,13 @@ void CameraPanel::changeEvent(QEvent* event)
         retranslateUi();
     QWidget::changeEvent(event);
 }
+
+void CameraPanel::setFileChooser(FileChooser chooser)
+{
+    m_chooser = chooser;
+    m_calibration->setFileChooser(std::move(chooser));
+}
+
+void CameraPanel::setConfirm(std::function<bool(const QString& question)> confirm) { m_calibration->setConfirm(std::move(confirm)); }
 
 } // namespace ui

@@ -20,6 +20,7 @@ class Instrument;
 
 namespace ui {
 
+class CameraCalibrationPanel;
 class CameraSession;
 class LiveView;
 class NumberField;
@@ -32,7 +33,10 @@ public:
 
     /// `stage` (may be null) gives the position shown and recorded with a snap.
     CameraPanel(CameraSession* session, dev::Instrument* stage, QWidget* parent = nullptr);
-    void setFileChooser(FileChooser chooser) { m_chooser = std::move(chooser); }
+    void setFileChooser(FileChooser chooser);
+    /// Asks before the stage moves for a camera calibration; unset: it moves without asking.
+    void setConfirm(std::function<bool(const QString& question)> confirm);
+    CameraCalibrationPanel* calibration() const { return m_calibration; }
 
     LiveView* liveView() const { return m_view; }
     QComboBox* sourceField() const { return m_source; }
@@ -75,6 +79,7 @@ private:
     QLabel* m_sourceLabel;
     QLabel* m_exposureLabel;
     QLabel* m_state;
+    CameraCalibrationPanel* m_calibration;
     FileChooser m_chooser;
     std::uint64_t m_snapId = 0;
     QMetaObject::Connection m_snapCaptured, m_snapFailed;

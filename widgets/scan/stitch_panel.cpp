@@ -180,11 +180,24 @@ QStringList StitchPanel::summaryLines() const
                  .arg(r->placement.worstCorrectionPx, 0, 'f', 2)
                  .arg(r->placement.worstCorrectionPx * um, 0, 'f', 2)
                  .arg(m_map->magnification(), 0, 'f', 0);
+    if (const imaging::StageModel& model = r->placement.stageModel; model.used)
+        lines << tr("Stage against camera, fitted from %1 pairs: scale x %2 ppm, y %3 ppm, shear %4 µrad; "
+                    "beyond it RMS %5 px (%6 µm), worst %7 px")
+                     .arg(model.pairs)
+                     .arg(model.scaleXPpm(), 0, 'f', 0)
+                     .arg(model.scaleYPpm(), 0, 'f', 0)
+                     .arg(model.shearUrad(), 0, 'f', 0)
+                     .arg(r->placement.rmsBeyondModelPx, 0, 'f', 2)
+                     .arg(r->placement.rmsBeyondModelPx * um, 0, 'f', 2)
+                     .arg(r->placement.worstBeyondModelPx, 0, 'f', 2);
     lines << tr("Mosaic %1 × %2 px in %3 s").arg(r->frame.width).arg(r->frame.height).arg(m_job->seconds(), 0, 'f', 1);
     if (m_job->lastWasLive())
         lines << tr("Stitched live during the scan: placed %1 s after the last tile, the files written %2 s after it")
                      .arg(m_job->livePlacedAfterS(), 0, 'f', 1)
                      .arg(m_job->seconds(), 0, 'f', 1);
+    if (r->cameraCheck && r->planCamera)
+        for (const motion::msg::Message& m : imaging::geometryAdvice(*r->cameraCheck, *r->planCamera))
+            lines << tr("Check the plan's camera: %1").arg(ui::words::text(m));
     return lines;
 }
 

@@ -11,6 +11,9 @@ namespace {
 
 // clang-format off
 const Row kRows[] = {
+    {"imaging.camera_check.mirrored", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the images are mirrored against the plan's camera: set the camera's image y to %1 (the plan says %2)", "imaging.camera_check.mirrored"), "image_y,plan_image_y"},
+    {"imaging.camera_check.rotated", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the neighbours' shifts show the camera turned %1 against the stage: set the camera's rotation to %1 (the plan says %2)", "imaging.camera_check.rotated"), "measured,plan"},
+    {"imaging.camera_check.pixel", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the neighbours' shifts show a pixel of %1 at the sample: set the camera's pixel size to %1 (the plan says %2), or calibrate the camera", "imaging.camera_check.pixel"), "measured,plan"},
     {"imaging.tiff.unreadable", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "cannot be read as a TIFF image (%1)", "imaging.tiff.unreadable"), "reason"},
     {"imaging.tiff.damaged", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the image is damaged or cut short (%1)", "imaging.tiff.damaged"), "reason"},
     {"imaging.tiff.bad_size", QT_TRANSLATE_NOOP3("ui::words::ImagingWords", "the image is %1 × %2 pixels: a tile must be from 1 to 65536 pixels each way", "imaging.tiff.bad_size"), "width,height"},

@@ -10,6 +10,7 @@ namespace {
 
 // clang-format off
 const Row kRows[] = {
+    {"scan.plan.camera_profile_problem", QT_TRANSLATE_NOOP3("ui::words::ScanWords", "the camera profile %1, line %2, column %3: %4", "scan.plan.camera_profile_problem"), "file,line,column,cause"},
     {"scan.stitch.running", QT_TRANSLATE_NOOP3("ui::words::ScanWords", "a stitch is already running", "scan.stitch.running")},
     {"scan.stitch.no_run_log", QT_TRANSLATE_NOOP3("ui::words::ScanWords", "%1 holds no scan run log: run a scan with images into it first", "scan.stitch.no_run_log"), "folder"},
     {"scan.stitch.no_images", QT_TRANSLATE_NOOP3("ui::words::ScanWords", "the scan in %1 took no images to stitch (was “Take an image at each tile” on?)", "scan.stitch.no_images"), "folder"},

@@ -41,6 +41,9 @@ struct Camera {
     double samplePixelUm = 0.65;                      ///< Direct: one pixel at the sample (exports in pixels need it)
     double rotationDeg = 0;  ///< image x axis against stage +X, counter-clockwise; a small calibration angle
     ImageY imageY = ImageY::StageMinusY;
+    /// A camera profile file (path as the plan gives it, relative to the plan's folder) the
+    /// geometry above is taken from when the plan is loaded; "": none.
+    std::string profile;
 };
 
 /// Field at the sample and one pixel at the sample, whichever way the camera is given.
