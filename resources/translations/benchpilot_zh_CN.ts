@@ -2903,8 +2903,6 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>二维补偿表文件</translation>
     </message>
     <message>
-        <source>Grid map of the XY stage</source>
-        <translation>XY 平台网格图</translation>
         <source>needs --out PROFILE.json, the camera profile to write</source>
         <translation>需要 --out PROFILE.json，即要写入的相机配置文件</translation>
     </message>
@@ -2968,6 +2966,24 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <source>warning: %1
 </source>
         <translation>警告：%1
+</translation>
+    </message>
+    <message>
+        <source>Grid map of the XY stage</source>
+        <translation>XY 平台网格图</translation>
+    </message>
+    <message>
+        <source>--dark must be from 0 to 65535 grey levels (got %1)</source>
+        <translation>--dark 必须在 0 到 65535 灰度级之间（实际为 %1）</translation>
+    </message>
+    <message>
+        <source>--dark is the camera&apos;s offset under --flat: give the blank image with --flat</source>
+        <translation>--dark 是配合 --flat 使用的相机偏置：请用 --flat 给出空白图像</translation>
+    </message>
+    <message>
+        <source>stage model from %1 pairs: scale x %2 ppm, y %3 ppm, rotation %4 µrad, shear %5 µrad; beyond it RMS %6 px, worst %7 px
+</source>
+        <translation>由 %1 对拟合的载物台模型：x 比例 %2 ppm，y 比例 %3 ppm，旋转 %4 µrad，剪切 %5 µrad；模型之外 RMS %6 px，最大 %7 px
 </translation>
     </message>
 </context>
@@ -4884,6 +4900,14 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>sim: the simulated camera; sim:PATH: the one benchpilot-sim serves at PATH (--camera-socket); uvc:NAME: a USB camera; command:CMD: runs CMD for each image ({file} is where it writes); folder:DIR: takes the next new file in DIR</source>
         <translation>sim：模拟相机；sim:PATH：benchpilot-sim 在 PATH 提供的模拟相机（--camera-socket）；uvc:NAME：USB 相机；command:CMD：每张图像运行一次 CMD（{file} 是它写入的位置）；folder:DIR：取 DIR 中的下一个新文件</translation>
+    </message>
+    <message>
+        <source>No picture: %1</source>
+        <translation>无图像：%1</translation>
+    </message>
+    <message>
+        <source>Waiting for the first picture…</source>
+        <translation>正在等待第一幅图像…</translation>
     </message>
 </context>
 <context>
@@ -8727,6 +8751,14 @@ Select wells on the plate map and press &quot;Use selection&quot; to fill this i
     <message>
         <source>Check the plan&apos;s camera: %1</source>
         <translation>请检查计划中的相机：%1</translation>
+    </message>
+    <message>
+        <source>Correction from the stage: RMS %1 px (%2 µm), worst %3 px (%4 µm)</source>
+        <translation>相对载物台位置的修正：RMS %1 px（%2 µm），最大 %3 px（%4 µm）</translation>
+    </message>
+    <message>
+        <source>Stage against camera, fitted from %1 pairs: scale x %2 ppm, y %3 ppm, shear %4 µrad; beyond it RMS %5 px (%6 µm), worst %7 px, as the arrows show ×%8</source>
+        <translation>载物台相对相机（由 %1 对拟合）：x 比例 %2 ppm，y 比例 %3 ppm，剪切 %4 µrad；模型之外 RMS %5 px（%6 µm），最大 %7 px，箭头放大 ×%8 显示</translation>
     </message>
 </context>
 <context>
@@ -13058,9 +13090,6 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <translation>拼接图每像素有 %2 个 %1 位采样：可查看的拼接图必须是 8 位或 16 位灰度</translation>
     </message>
     <message>
-        <source>level %1 of the mosaic&apos;s pyramid cannot be read (%2)</source>
-        <comment>imaging.pyramid.bad_level</comment>
-        <translation>无法读取拼接图金字塔的第 %1 层（%2）</translation>
         <source>the images are mirrored against the plan&apos;s camera: set the camera&apos;s image y to %1 (the plan says %2)</source>
         <comment>imaging.camera_check.mirrored</comment>
         <translation>图像相对计划中的相机是镜像的：请把相机的 image y 设为 %1（计划中为 %2）</translation>
@@ -13074,6 +13103,36 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
         <source>the neighbours&apos; shifts show a pixel of %1 at the sample: set the camera&apos;s pixel size to %1 (the plan says %2), or calibrate the camera</source>
         <comment>imaging.camera_check.pixel</comment>
         <translation>相邻图块的位移表明样品处的像素为 %1：请把相机的像素尺寸设为 %1（计划中为 %2），或标定相机</translation>
+    </message>
+    <message>
+        <source>level %1 of the mosaic&apos;s pyramid cannot be read (%2)</source>
+        <comment>imaging.pyramid.bad_level</comment>
+        <translation>无法读取拼接图金字塔的第 %1 层（%2）</translation>
+    </message>
+    <message>
+        <source>the blank image is empty</source>
+        <comment>imaging.flat.empty</comment>
+        <translation>空白图像为空</translation>
+    </message>
+    <message>
+        <source>the blank image averages %1 grey levels, no more than the camera&apos;s offset of %2: take it with the light on</source>
+        <comment>imaging.flat.dark</comment>
+        <translation>空白图像平均只有 %1 灰度级，不高于相机偏置 %2：请在照明打开时拍摄</translation>
+    </message>
+    <message>
+        <source>%1 % of the blank image is saturated: take it with less light or a shorter exposure</source>
+        <comment>imaging.flat.clipped</comment>
+        <translation>空白图像有 %1 % 饱和：请减弱照明或缩短曝光</translation>
+    </message>
+    <message>
+        <source>%1 % of the blank image is darker than a tenth of its mean: a blank is evenly lit bare glass, not a specimen</source>
+        <comment>imaging.flat.holes</comment>
+        <translation>空白图像有 %1 % 暗于其均值的十分之一：空白图像应是照明均匀的空玻璃，而不是样品</translation>
+    </message>
+    <message>
+        <source>this tile is %1 × %2 pixels but the blank image %3 is %4 × %5: the blank must come from the same camera and binning</source>
+        <comment>imaging.flat.size</comment>
+        <translation>该图块为 %1 × %2 像素，而空白图像 %3 为 %4 × %5：空白图像必须来自同一相机和同一像素合并设置</translation>
     </message>
 </context>
 <context>

@@ -174,22 +174,31 @@ QStringList StitchPanel::summaryLines() const
                  .arg(r->placement.rejectedPairs)
                  .arg(notTrusted)
                  .arg(byStage);
-    lines << tr("Correction from the stage: RMS %1 px (%2 µm), worst %3 px (%4 µm); arrows drawn ×%5")
-                 .arg(r->placement.rmsCorrectionPx, 0, 'f', 2)
-                 .arg(r->placement.rmsCorrectionPx * um, 0, 'f', 2)
-                 .arg(r->placement.worstCorrectionPx, 0, 'f', 2)
-                 .arg(r->placement.worstCorrectionPx * um, 0, 'f', 2)
-                 .arg(m_map->magnification(), 0, 'f', 0);
-    if (const imaging::StageModel& model = r->placement.stageModel; model.used)
+    const imaging::StageModel& model = r->placement.stageModel;
+    if (!model.used) {
+        lines << tr("Correction from the stage: RMS %1 px (%2 µm), worst %3 px (%4 µm); arrows drawn ×%5")
+                     .arg(r->placement.rmsCorrectionPx, 0, 'f', 2)
+                     .arg(r->placement.rmsCorrectionPx * um, 0, 'f', 2)
+                     .arg(r->placement.worstCorrectionPx, 0, 'f', 2)
+                     .arg(r->placement.worstCorrectionPx * um, 0, 'f', 2)
+                     .arg(m_map->magnification(), 0, 'f', 0);
+    } else {
+        lines << tr("Correction from the stage: RMS %1 px (%2 µm), worst %3 px (%4 µm)")
+                     .arg(r->placement.rmsCorrectionPx, 0, 'f', 2)
+                     .arg(r->placement.rmsCorrectionPx * um, 0, 'f', 2)
+                     .arg(r->placement.worstCorrectionPx, 0, 'f', 2)
+                     .arg(r->placement.worstCorrectionPx * um, 0, 'f', 2);
         lines << tr("Stage against camera, fitted from %1 pairs: scale x %2 ppm, y %3 ppm, shear %4 µrad; "
-                    "beyond it RMS %5 px (%6 µm), worst %7 px")
+                    "beyond it RMS %5 px (%6 µm), worst %7 px, as the arrows show ×%8")
                      .arg(model.pairs)
                      .arg(model.scaleXPpm(), 0, 'f', 0)
                      .arg(model.scaleYPpm(), 0, 'f', 0)
                      .arg(model.shearUrad(), 0, 'f', 0)
                      .arg(r->placement.rmsBeyondModelPx, 0, 'f', 2)
                      .arg(r->placement.rmsBeyondModelPx * um, 0, 'f', 2)
-                     .arg(r->placement.worstBeyondModelPx, 0, 'f', 2);
+                     .arg(r->placement.worstBeyondModelPx, 0, 'f', 2)
+                     .arg(m_map->magnification(), 0, 'f', 0);
+    }
     lines << tr("Mosaic %1 × %2 px in %3 s").arg(r->frame.width).arg(r->frame.height).arg(m_job->seconds(), 0, 'f', 1);
     if (m_job->lastWasLive())
         lines << tr("Stitched live during the scan: placed %1 s after the last tile, the files written %2 s after it")

@@ -57,15 +57,25 @@ void StitchQualityMap::setResult(const imaging::StitchResult& r)
         m_tiles.push_back(t);
     }
     // Placement may shift the whole mosaic: corrections are drawn against the mean shift.
-    QPointF mean;
-    for (const Tile& t : m_tiles)
+    // With a stage model, the arrows show what registration found beyond it: a grating
+    // scale would otherwise draw every arrow pointing out of the mosaic.
+    const imaging::StageModel& model = r.placement.stageModel;
+    QPointF mean, meanCorrection;
+    for (std::size_t i = 0; i < m_tiles.size(); ++i) {
+        Tile& t = m_tiles[i];
+        const Eigen::Vector2d reference = model.used ? model.apply(r.tiles[i].stagePx) : r.tiles[i].stagePx;
+        t.correctionPx = t.placedPx - QPointF(reference.x(), reference.y());
         mean += t.placedPx - t.stagePx;
-    if (!m_tiles.empty())
+        meanCorrection += t.correctionPx;
+    }
+    if (!m_tiles.empty()) {
         mean /= static_cast<double>(m_tiles.size());
+        meanCorrection /= static_cast<double>(m_tiles.size());
+    }
     for (Tile& t : m_tiles) {
         t.placedPx -= mean;
-        const QPointF d = t.placedPx - t.stagePx;
-        longest = std::max(longest, std::hypot(d.x(), d.y()));
+        t.correctionPx -= meanCorrection;
+        longest = std::max(longest, std::hypot(t.correctionPx.x(), t.correctionPx.y()));
     }
     for (const imaging::TilePair& p : r.pairs)
         m_pairs.push_back({p.a, p.b, p.reg.ncc, p.reg.status});
@@ -245,7 +255,7 @@ void StitchQualityMap::draw(QPainter& p, const QSizeF& size) const
         if (!tile.taken)
             continue;
         const QPointF from = t.map(centre(tile));
-        const QPointF to = t.map(centre(tile) + (tile.placedPx - tile.stagePx) * m_magnification);
+        const QPointF to = t.map(centre(tile) + tile.correctionPx * m_magnification);
         const QPointF d = to - from;
         const double len = std::hypot(d.x(), d.y());
         p.drawEllipse(from, 2.5, 2.5);

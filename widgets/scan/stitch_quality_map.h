@@ -58,6 +58,7 @@ protected:
 private:
     struct Tile {
         QPointF stagePx, placedPx;
+        QPointF correctionPx;  ///< the arrow: registered − stage (beyond the stage model when one is used), less the mean
         bool byStage = false;
         bool taken = true;                             ///< false: a live scan has not taken it yet
         std::shared_ptr<const imaging::ImageU16> raw;  ///< its thumbnail as read
