@@ -5580,6 +5580,26 @@ Keep that log aside and start this test afresh?</source>
         <source>residual RMS (µm)</source>
         <translation>残差均方根 (µm)</translation>
     </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Distance between the nodes visited, a whole multiple of the plate&apos;s dot pitch</source>
+        <translation>所访问节点之间的距离，须为网格板点距的整数倍</translation>
+    </message>
+    <message>
+        <source>Columns</source>
+        <translation>列数</translation>
+    </message>
+    <message>
+        <source>Rows</source>
+        <translation>行数</translation>
+    </message>
 </context>
 <context>
     <name>ui::GridMapView</name>

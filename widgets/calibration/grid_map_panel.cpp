@@ -5,11 +5,11 @@
 #include "device/files/accuracy/accuracy_run_folders.h"
 #include "motion/metrology/grid/compensation_table_2d.h"
 #include "widgets/camera/camera_session.h"
+#include "widgets/common/number_field.h"
 #include "widgets/report/grid_map_painter.h"
 #include "widgets/wording/wording.h"
 
 #include <QDir>
-#include <QDoubleSpinBox>
 #include <QEvent>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -18,7 +18,6 @@
 #include <QLocale>
 #include <QPainter>
 #include <QPushButton>
-#include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -74,20 +73,20 @@ GridMapPanel::GridMapPanel(QWidget* parent) : QWidget(parent)
     auto* h = new QHBoxLayout(this);
     auto* left = new QVBoxLayout;
     auto* form = new QFormLayout;
-    m_pitch = new QDoubleSpinBox;
-    m_pitch->setObjectName(QStringLiteral("gridMapPitch"));
-    m_pitch->setRange(1, 100);
-    m_pitch->setDecimals(0);
-    m_pitch->setSuffix(QStringLiteral(" mm"));
-    m_pitch->setValue(5);
-    m_columns = new QSpinBox;
-    m_columns->setObjectName(QStringLiteral("gridMapColumns"));
-    m_columns->setRange(3, 101);
-    m_columns->setValue(19);
-    m_rows = new QSpinBox;
-    m_rows->setObjectName(QStringLiteral("gridMapRows"));
-    m_rows->setRange(3, 101);
-    m_rows->setValue(19);
+    // Typed values are kept as typed and refused with their reason, never clamped.
+    auto field = [this](const char* name, double min, double max, double value, bool integer) {
+        auto* f = new NumberField;
+        f->setObjectName(QLatin1String(name));
+        f->setRange(min, max);
+        f->setInteger(integer);
+        f->setDisplay('f', 0);
+        f->setValue(value);
+        connect(f, &NumberField::entryChanged, this, [this] { updateUi(); });
+        return f;
+    };
+    m_pitch = field("gridMapPitch", 1, 100, 5, false);
+    m_columns = field("gridMapColumns", 3, 101, 19, true);
+    m_rows = field("gridMapRows", 3, 101, 19, true);
     auto* nodes = new QHBoxLayout;
     nodes->addWidget(m_columns);
     nodes->addWidget(new QLabel(QStringLiteral("×")));
@@ -175,9 +174,12 @@ bool GridMapPanel::run()
         return refuse(tr("No instrument to map."));
     motion::metrology::GridMapTest test;
     test.name = "grid-map";
-    test.pitchXMm = test.pitchYMm = m_pitch->value();
-    test.columns = m_columns->value();
-    test.rows = m_rows->value();
+    for (NumberField* f : {m_pitch, m_columns, m_rows})
+        if (!f->isValid())
+            return refuse(tr("%1: %2").arg(f->fieldName(), f->problem()));
+    test.pitchXMm = test.pitchYMm = *m_pitch->value();
+    test.columns = static_cast<int>(*m_columns->value());
+    test.rows = static_cast<int>(*m_rows->value());
     const QString base = QDir(m_folder ? m_folder() : QDir::homePath()).filePath(m_tableEnabled ? QStringLiteral("grid-map-after")
                                                                                               : QStringLiteral("grid-map"));
     const QString folder = dev::files::accuracy::nextRunFolder(base);
@@ -333,7 +335,7 @@ void GridMapPanel::updateUi()
 {
     const bool running = m_runner && m_runner->isActive();
     m_run->setText(m_tableEnabled ? tr("Run the grid map again (after)") : tr("Run grid map"));
-    m_run->setEnabled(!running && !m_busyCompensating);
+    m_run->setEnabled(!running && !m_busyCompensating && m_pitch->isValid() && m_columns->isValid() && m_rows->isValid());
     m_abort->setEnabled(running);
     m_compensate->setEnabled(!running && !m_busyCompensating && m_before && !m_tableEnabled);
     m_disable->setEnabled(!running && !m_busyCompensating && m_tableEnabled);
@@ -353,6 +355,11 @@ void GridMapPanel::retranslateUi()
 {
     m_pitchLabel->setText(tr("Pitch"));
     m_nodesLabel->setText(tr("Nodes"));
+    m_pitch->setUnit(tr(" mm"));
+    m_pitch->setFieldName(tr("Pitch"));
+    m_pitch->setHelp(tr("Distance between the nodes visited, a whole multiple of the plate's dot pitch"));
+    m_columns->setFieldName(tr("Columns"));
+    m_rows->setFieldName(tr("Rows"));
     m_abort->setText(tr("Abort"));
     m_compensate->setText(tr("Fit, upload and enable the 2D table"));
     m_disable->setText(tr("Disable the 2D table"));

@@ -17,10 +17,8 @@
 #include <memory>
 #include <optional>
 
-class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
-class QSpinBox;
 class QTableWidget;
 
 namespace dev::camera {
@@ -28,6 +26,8 @@ class DotReadingSource;
 }
 
 namespace ui {
+
+class NumberField;
 
 class CameraSession;
 
@@ -96,9 +96,9 @@ private:
 
     QLabel* m_pitchLabel = nullptr;
     QLabel* m_nodesLabel = nullptr;
-    QDoubleSpinBox* m_pitch = nullptr;
-    QSpinBox* m_columns = nullptr;
-    QSpinBox* m_rows = nullptr;
+    NumberField* m_pitch = nullptr;
+    NumberField* m_columns = nullptr;
+    NumberField* m_rows = nullptr;
     QPushButton* m_run = nullptr;
     QPushButton* m_abort = nullptr;
     QPushButton* m_compensate = nullptr;

@@ -29,7 +29,11 @@ public:
     CameraCalibrationPanel(CameraSession* session, dev::Instrument* stage, QWidget* parent = nullptr);
     ~CameraCalibrationPanel() override;
     void setConfirm(Confirm confirm) { m_confirm = std::move(confirm); }
-    void setFileChooser(FileChooser chooser) { m_chooser = std::move(chooser); }
+    void setFileChooser(FileChooser chooser)
+    {
+        m_chooser = std::move(chooser);
+        updateUi();
+    }
 
     /// The button the camera panel places in its bar.
     QPushButton* calibrateButton() const { return m_calibrate; }

@@ -31,8 +31,8 @@ std::string fingerprintOf(const motion::metrology::GridMapTest& t)
     return dev::files::accuracy::gridMapTestToJson(f);
 }
 
-struct GridLogRead {
-    bool ok = false;
+/// What a grid run's log holds; badLine is the first line that is not a log line (0: none).
+struct GridRunLog {
     int badLine = 0;
     std::string fingerprint;
     bool haveStart = false;
@@ -40,9 +40,9 @@ struct GridLogRead {
     std::vector<std::pair<int, GridNodeReading>> nodes;
 };
 
-GridLogRead parseGridLog(const std::string& text)
+GridRunLog parseGridLog(const std::string& text)
 {
-    GridLogRead out;
+    GridRunLog out;
     std::size_t at = 0;
     int lineNo = 0;
     while (at < text.size()) {
@@ -98,7 +98,6 @@ GridLogRead parseGridLog(const std::string& text)
         }
         out.nodes.emplace_back(static_cast<int>(node->asNumber()), n);
     }
-    out.ok = true;
     return out;
 }
 
@@ -110,8 +109,8 @@ bool logHasStart(const QString& folder, const motion::metrology::GridMapTest& te
     motion::msg::Message error;
     if (!dev::files::readText(QDir(folder).filePath(QStringLiteral("grid-map.run-log.jsonl")), &text, &error))
         return false;
-    const GridLogRead read = parseGridLog(text);
-    return read.ok && read.haveStart && read.fingerprint == fingerprintOf(test);
+    const GridRunLog read = parseGridLog(text);
+    return read.badLine == 0 && read.haveStart && read.fingerprint == fingerprintOf(test);
 }
 
 } // namespace
@@ -210,10 +209,10 @@ bool GridMapRunner::openLog(bool restart, motion::msg::Problems* problems)
                                                                                        motion::msg::integer("line", 0), motion::msg::nested("detail", error)}));
             return false;
         }
-        const GridLogRead read = parseGridLog(text);
-        const bool same = read.ok && read.fingerprint == fingerprint;
+        const GridRunLog read = parseGridLog(text);
+        const bool same = read.badLine == 0 && read.fingerprint == fingerprint;
         if (!same && !restart) {
-            if (!read.ok)
+            if (!read.badLine == 0)
                 addGridProblem(problems, motion::msg::make("accuracy.run.log_unreadable", {motion::msg::verbatim("file", path.toStdString()),
                                                                                            motion::msg::integer("line", read.badLine),
                                                                                            motion::msg::nested("detail", motion::msg::make("grid.run.log_line"))}));
