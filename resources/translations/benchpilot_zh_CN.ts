@@ -8213,6 +8213,10 @@ Keep that log aside and start this test afresh?</source>
         <source>Field: — (a camera value above is not a number yet)</source>
         <translation>视场：—（上方某个相机数值还不是数字）</translation>
     </message>
+    <message>
+        <source>Pixel size, rotation and image rows come from the camera profile %1 when the plan is opened</source>
+        <translation>打开此方案时，像素尺寸、旋转和图像行方向取自相机配置文件 %1</translation>
+    </message>
 </context>
 <context>
     <name>ui::ScanScreen</name>

@@ -164,6 +164,31 @@ TEST_F(ScanScreenTest, PlansAreSavedAndOpened)
     EXPECT_EQ(screen->plan().order, ScanOrder::Columns) << "a bad file leaves the plan as it was";
 }
 
+TEST_F(ScanScreenTest, APlanNamingACameraProfileKeepsTheLinkWhenSavedAgain)
+{
+    QTemporaryDir dir;
+    ASSERT_TRUE(QFile::copy(QStringLiteral(BP_SOURCE_DIR "/resources/examples/sim-stage-camera.camera-profile.json"),
+                            dir.filePath(QStringLiteral("scope.camera-profile.json"))));
+    ScanPlan named = screen->plan();
+    named.camera.profile = "scope.camera-profile.json";
+    screen->setPlan(named);
+    settle();
+    const QString path = dir.filePath(QStringLiteral("linked.scan.json"));
+    ASSERT_TRUE(screen->savePlan(path));
+    screen->setPlan(ScanPlan{});
+    EXPECT_TRUE(screen->plan().camera.profile.empty()) << "a new plan names no profile";
+    ASSERT_TRUE(screen->openPlan(path));
+    EXPECT_EQ(screen->plan().camera.profile, "scope.camera-profile.json") << "saving from the screen dropped the plan's profile";
+    EXPECT_NEAR(screen->plan().camera.rotationDeg, 0.42, 1e-9) << "the profile's rotation";
+    EXPECT_TRUE(child<QLabel>("scanCameraInfo")->text().contains(QStringLiteral("scope.camera-profile.json")))
+        << child<QLabel>("scanCameraInfo")->text().toStdString();
+    // Saved again from the screen: still linked.
+    ASSERT_TRUE(screen->savePlan(path));
+    QFile saved(path);
+    ASSERT_TRUE(saved.open(QIODevice::ReadOnly));
+    EXPECT_TRUE(saved.readAll().contains("\"profile\": \"scope.camera-profile.json\""));
+}
+
 TEST_F(ScanScreenTest, RunsOnTheStageWithProgressAndExports)
 {
     dev::Instrument* stage = w->stage()->instrument();

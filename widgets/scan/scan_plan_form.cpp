@@ -343,10 +343,15 @@ void ScanPlanForm::updateCameraInfo()
         m_cameraInfo->setText(tr("Field: — (a camera value above is not a number yet)"));
         return;
     }
-    m_cameraInfo->setText(tr("Field %1 × %2 mm, %3 µm per pixel at the sample")
-                              .arg(fieldWidthMm(p.camera), 0, 'f', 4)
-                              .arg(fieldHeightMm(p.camera), 0, 'f', 4)
-                              .arg(pixelAtSampleUm(p.camera), 0, 'g', 4));
+    QString info = tr("Field %1 × %2 mm, %3 µm per pixel at the sample")
+                       .arg(fieldWidthMm(p.camera), 0, 'f', 4)
+                       .arg(fieldHeightMm(p.camera), 0, 'f', 4)
+                       .arg(pixelAtSampleUm(p.camera), 0, 'g', 4);
+    // The profile's geometry replaces the fields above each time the plan is opened.
+    if (!m_cameraProfile.empty())
+        info += QLatin1Char('\n') + tr("Pixel size, rotation and image rows come from the camera profile %1 when the plan is opened")
+                                        .arg(QString::fromStdString(m_cameraProfile));
+    m_cameraInfo->setText(info);
 }
 
 ScanPlan ScanPlanForm::plan() const
@@ -372,6 +377,7 @@ ScanPlan ScanPlanForm::plan() const
     p.camera.samplePixelUm = m_samplePixel->valueOr(kScanFormNaN);
     p.camera.rotationDeg = m_rotation->valueOr(kScanFormNaN);
     p.camera.imageY = static_cast<ImageY>(m_imageY->currentData().toInt());
+    p.camera.profile = m_cameraProfile;
     p.overlapX = m_overlapX->valueOr(kScanFormNaN) / 100.0;
     p.overlapY = m_overlapY->valueOr(kScanFormNaN) / 100.0;
     p.order = static_cast<ScanOrder>(m_order->currentData().toInt());
@@ -416,6 +422,7 @@ void ScanPlanForm::setPlan(const ScanPlan& p)
     m_samplePixel->setValue(p.camera.samplePixelUm);
     m_rotation->setValue(p.camera.rotationDeg);
     m_imageY->setCurrentIndex(m_imageY->findData(int(p.camera.imageY)));
+    m_cameraProfile = p.camera.profile;
     m_overlapX->setValue(p.overlapX * 100);
     m_overlapY->setValue(p.overlapY * 100);
     m_order->setCurrentIndex(m_order->findData(int(p.order)));

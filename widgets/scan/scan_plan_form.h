@@ -7,6 +7,8 @@
 
 #include <QWidget>
 
+#include <string>
+
 class QCheckBox;
 class QComboBox;
 class QFormLayout;
@@ -48,6 +50,8 @@ private:
     void updateCameraInfo();
 
     bool m_loading = false;
+    /// The camera profile the plan names: kept through the form so saving keeps the link.
+    std::string m_cameraProfile;
     mutable QString m_polygonError;  ///< set by plan()
     QLineEdit* m_name;
     // Region
