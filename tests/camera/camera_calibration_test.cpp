@@ -97,7 +97,9 @@ TEST(CameraCalibration, FindsTheTruePixelRotationAndMirrorAndReturnsToTheStart)
     // What is left is the stage's own: its grating reads in 0.5 µm steps, about 0.8 px here,
     // and the images follow the true work point.
     EXPECT_LT(f.residualRmsPx, 1.0);
-    EXPECT_LT(out.result->returnPx, 1.0);
+    // Back at the start each axis rests within one count of its target: up to
+    // √2 × 0.5 µm / 0.60 µm ≈ 1.18 px apart, plus the registration's hundredths.
+    EXPECT_LT(out.result->returnPx, 1.3);
     EXPECT_EQ(out.result->steps.size(), 9u);
     ASSERT_TRUE(rig.session.waitStill());
     EXPECT_NEAR(rig.session.client.status().axes[0].commanded, 40, 1e-6);
