@@ -7,6 +7,7 @@
 #include "device/backends/benchpilot/protocol_compensation_2d_client.h"
 #include "device/backends/benchpilot/protocol_path_client.h"
 #include "device/backends/benchpilot/protocol_tuning_client.h"
+#include "device/protocol/messages_arch.h"
 #include "device/protocol/messages_compensation.h"
 #include "device/protocol/messages_tuning.h"
 
