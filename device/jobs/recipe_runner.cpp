@@ -31,10 +31,11 @@ const char* moveTerm(MoveKind k)
     return "recipe.move.travel";
 }
 
-bool active(RunState s) { return s == RunState::Running || s == RunState::Pausing || s == RunState::Aborting; }
 motion::msg::Arg recipeMm(std::string name, double v) { return motion::msg::real(std::move(name), v, motion::msg::Unit::Mm); }
 motion::msg::Arg recipeUl(std::string name, double v) { return motion::msg::real(std::move(name), v, motion::msg::Unit::Ul); }
 } // namespace
+
+bool runActive(RunState s) { return s == RunState::Running || s == RunState::Pausing || s == RunState::Aborting; }
 
 const char* runStateTerm(RunState s)
 {
@@ -71,13 +72,13 @@ RecipeRunner::RecipeRunner(dev::Instrument* client, QObject* parent) : QObject(p
     // share one ordered stream, so a MotionDone that was not lost came before them.
     auto restReadings = std::make_shared<std::pair<int, int>>(-1, 0);  // move serial, readings at rest
     connect(client, &dev::Instrument::statusChanged, this, [this, restReadings](const dev::InstrumentStatus& st) {
-        if (active(m_state) && st.deviceTimeUs > m_deviceLastUs)
+        if (runActive(m_state) && st.deviceTimeUs > m_deviceLastUs)
             m_deviceLastUs = st.deviceTimeUs;
         if (m_budgetStartPending && m_replied) {
             m_moveSentUs = st.deviceTimeUs;
             m_budgetStartPending = false;
         }
-        if (!active(m_state) || !m_inFlight || m_inFlight->kind == MoveKind::Dwell || !m_replied || m_waitMask == 0)
+        if (!runActive(m_state) || !m_inFlight || m_inFlight->kind == MoveKind::Dwell || !m_replied || m_waitMask == 0)
             return;
         if (restReadings->first != m_moveSerial)
             *restReadings = {m_moveSerial, 0};
@@ -121,7 +122,7 @@ double RecipeRunner::plungerNow() const
 
 bool RecipeRunner::setPlan(const motion::plates::RecipePlan& plan, const QString& recipeName, motion::msg::Message* error)
 {
-    if (active(m_state) || m_state == RunState::Paused) {
+    if (runActive(m_state) || m_state == RunState::Paused) {
         *error = motion::msg::make("recipe.run.busy_changing");
         return false;
     }
@@ -218,11 +219,11 @@ void RecipeRunner::setState(RunState s)
 {
     if (s == m_state)
         return;
-    if (active(m_state) && !active(s)) {
+    if (runActive(m_state) && !runActive(s)) {
         m_elapsedBeforeS += m_clock.elapsed() / 1000.0;
         m_deviceBeforeS += static_cast<double>(m_deviceLastUs - std::min(m_deviceStartUs, m_deviceLastUs)) / 1e6;
     }
-    if (!active(m_state) && active(s)) {
+    if (!runActive(m_state) && runActive(s)) {
         m_clock.restart();
         m_deviceStartUs = m_deviceLastUs = m_client->status().deviceTimeUs;
     }
@@ -251,7 +252,7 @@ int RecipeRunner::nextOpenOp(int from) const
 
 bool RecipeRunner::start(const QString& logPath, motion::msg::Message* error)
 {
-    if (active(m_state) || m_state == RunState::Paused) {
+    if (runActive(m_state) || m_state == RunState::Paused) {
         *error = motion::msg::make("recipe.run.already_running");
         return false;
     }
@@ -488,58 +489,6 @@ void RecipeRunner::sendMove(const MachineMove& planned)
         m_client->move(zTargets, false, m.zSpeed, answered);
 }
 
-double RecipeRunner::deviceRate() const
-{
-    // The device's seconds per wall second this stretch: 1 on the instrument, the time
-    // scale on a sped-up simulator.
-    const double wallS = m_clock.isValid() ? m_clock.elapsed() / 1000.0 : 0.0;
-    const double deviceS = static_cast<double>(m_deviceLastUs - std::min(m_deviceStartUs, m_deviceLastUs)) / 1e6;
-    return wallS > 0.5 && deviceS > 0 ? std::clamp(deviceS / wallS, 0.01, 1000.0) : 1.0;
-}
-
-void RecipeRunner::checkDwell(bool begin)
-{
-    // A wait lasts its seconds on the device's clock, where the plan's seconds are
-    // counted: the wall clock's timer sleeps part of what is left (at the device's
-    // rate), then a fresh status says what is left. Never short, and a sped-up
-    // simulator's wait is its plan's.
-    if (!m_inFlight || m_inFlight->kind != MoveKind::Dwell)
-        return;
-    const QPointer<RecipeRunner> self(this);
-    const int serial = m_moveSerial;
-    m_client->readStatus([this, self, serial, begin](const std::optional<dev::RequestError>& err, const dev::InstrumentStatus& st) {
-        if (!self || serial != m_moveSerial || !m_inFlight || m_inFlight->kind != MoveKind::Dwell || !active(m_state))
-            return;
-        if (err) {
-            stopRun(linkLostMessage());
-            return;
-        }
-        if (st.deviceTimeUs > m_deviceLastUs)
-            m_deviceLastUs = st.deviceTimeUs;
-        if (begin) {
-            m_dwellStartUs = st.deviceTimeUs;
-            m_dwellWall.start();
-        }
-        const double doneS = static_cast<double>(st.deviceTimeUs - std::min(m_dwellStartUs, st.deviceTimeUs)) / 1e6;
-        const double leftS = m_inFlight->seconds - doneS;
-        if (leftS <= 0) {
-            moveArrived();
-            return;
-        }
-        // Half of what seems left at the device's rate, then look again. The rate is the
-        // faster of the run's and the wait's own: a wait runs faster than the moves
-        // before it on a simulator stepped by a loop with nothing else to do, and half
-        // a wait misjudged by more than twice would overshoot it. The first look comes
-        // at once, to learn the wait's own rate.
-        // (At most kMoveCheckMs at a time: before the rate is known it is taken as 1.)
-        const double wallS = m_dwellWall.nsecsElapsed() / 1e9;
-        const double waitRate = wallS > 0 && doneS > 0 ? doneS / wallS : 0.0;
-        const double rate = std::max(deviceRate(), waitRate);
-        const int sleepMs = begin ? 1 : static_cast<int>(std::lround(0.5 * leftS / rate * 1000));
-        m_dwellTimer.start(std::clamp(sleepMs, 1, kMoveCheckMs));
-    });
-}
-
 void RecipeRunner::moveArrived()
 {
     m_moveTimer.stop();
@@ -604,7 +553,7 @@ void RecipeRunner::finishOp()
 
 void RecipeRunner::onEvent(const dev::DeviceEvent& e)
 {
-    if (!active(m_state))
+    if (!runActive(m_state))
         return;
     // Events carry the device's clock to the microsecond (a status only as often as it is polled).
     if (e.deviceTimeUs > m_deviceLastUs)
@@ -706,7 +655,7 @@ void RecipeRunner::onLinkState(dev::LinkState s)
         emit message(motion::msg::make("recipe.run.back", {opArg(m_op)}), false);
         return;
     }
-    if (s != dev::LinkState::Ready && active(m_state))
+    if (s != dev::LinkState::Ready && runActive(m_state))
         stopRun(linkLostMessage());
 }
 

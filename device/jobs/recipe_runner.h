@@ -38,6 +38,8 @@ enum class RunState {
 };
 /// The state's term for people ("recipe.state.running"), worded by ui::words::term.
 const char* runStateTerm(RunState s);
+/// Running, pausing or aborting: the run is driving the machine.
+bool runActive(RunState s);
 
 /// What the operator is asked about an op that was interrupted after its
 /// plunger move had been sent.
