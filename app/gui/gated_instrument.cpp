@@ -51,6 +51,12 @@ void GatedInstrument::move(const QVector<QPair<int, double>>& targets, bool rela
         m_inner->move(targets, relative, speed, std::move(done));
 }
 
+void GatedInstrument::archMove(const ArchMove& move, Callback done)
+{
+    if (allowed(done))
+        m_inner->archMove(move, std::move(done));
+}
+
 void GatedInstrument::jogStep(int axis, double delta, double speed, Callback done)
 {
     if (allowed(done))

@@ -36,6 +36,7 @@ public:
     dev::Capabilities capabilities() const override { return m_inner->capabilities(); }
     void home(quint8 axisMask, Callback done = {}) override;
     void move(const QVector<QPair<int, double>>& targets, bool relative, double speed = 0, Callback done = {}) override;
+    void archMove(const ArchMove& move, Callback done = {}) override;
     void jogStep(int axis, double delta, double speed = 0, Callback done = {}) override;
     void startJog(int axis, double velocity) override;
     void stopJog(int axis) override { m_inner->stopJog(axis); }

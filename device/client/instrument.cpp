@@ -44,7 +44,12 @@ void Instrument::unlock(Callback done)
 
 void Instrument::archMove(const ArchMove&, Callback done)
 {
-    refuse(done, RequestError::Kind::Invalid, whyNot(Capability::ArchedMove));
+    // A decorator that passes the capability on but not the request lands here with the
+    // capability present, where whyNot() has nothing to say: the refusal still names it.
+    motion::msg::Message why = whyNot(Capability::ArchedMove);
+    if (why.empty())
+        why = Instrument::missingReason(Capability::ArchedMove);
+    refuse(done, RequestError::Kind::Invalid, why);
 }
 
 void Instrument::refuse(const Callback& done, RequestError::Kind kind, const motion::msg::Message& message)

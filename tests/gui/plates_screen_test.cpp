@@ -448,3 +448,27 @@ TEST_F(PlatesScreenTest, ThePathTheBoundAndTheOrdersComparedBeforeRun)
     EXPECT_EQ(orders->item(2, 0)->toolTip(), QStringLiteral("snake-rows")) << "the file's word";
     EXPECT_FALSE(orders->item(4, 1)->text().isEmpty());
 }
+
+// Found driving the screen under Xvfb: the arched example, run from the Run button, stopped
+// at its first op with "the analyzer refused a move" and no reason, while the same recipe
+// ran from the CLI. The screen's run must do what the CLI's does, and a refusal say why.
+TEST_F(PlatesScreenTest, AnArchedRecipeRunsFromTheScreenAsItDoesFromTheCli)
+{
+    fastHomedAnalyzer();
+    ASSERT_TRUE(screen->openRecipe(QStringLiteral(BP_SOURCE_DIR "/resources/examples/fill-96-arched.recipe.json")));
+    pump(50);
+    ASSERT_TRUE(screen->plan().ok());
+    screen->setConfirm([](const QString&) { return true; });
+    QStringList problems;
+    QObject listening;  // the connection ends with the test, before the window's teardown speaks
+    QObject::connect(screen->runner(), &dev::jobs::RecipeRunner::message, &listening, [&](const motion::msg::Message& m, bool isProblem) {
+        if (isProblem)
+            problems << QString::fromStdString(motion::msg::debugString(m));
+    });
+    QPushButton* run = button(screen->runPanel(), QObject::tr("Run"));
+    ASSERT_NE(run, nullptr);
+    QTest::mouseClick(run, Qt::LeftButton);
+    ASSERT_TRUE(waitFor([&] { return screen->runner()->progress().opsDone >= 4 || screen->runner()->state() == dev::jobs::RunState::Stopped; }, 60000));
+    EXPECT_NE(screen->runner()->state(), dev::jobs::RunState::Stopped) << problems.join(QStringLiteral("; ")).toStdString();
+    screen->runner()->abort();
+}

@@ -100,6 +100,22 @@ TEST(IfaceProxy, ReasonsAreTheBackendsOwn)
     EXPECT_TRUE(proxy.whyNot(dev::Capability::Homing).empty());
 }
 
+// An instrument that claims the arched move but does not take it (a decorator that
+// forgot to pass it on did this to the GUI's plate runs) refused it with no reason at all.
+TEST(IfaceProxy, AnArchedMoveNotTakenIsRefusedWithAReasonEvenWhenTheCapabilityIsClaimed)
+{
+    dev::InstrumentProxy proxy;
+    proxy.setBackend(new FakeInstrument(200, 4000, dev::Capability::Homing | dev::Capability::ArchedMove));
+    proxy.connectLink();
+    ASSERT_TRUE(proxy.can(dev::Capability::ArchedMove));
+    std::optional<dev::RequestError> answer;
+    proxy.archMove({10, 10, 5, 20, 1, 1, 50, 30}, [&](const auto& e) { answer = e; });
+    ASSERT_TRUE(answer);
+    EXPECT_EQ(answer->kind, dev::RequestError::Kind::Invalid);
+    EXPECT_FALSE(answer->message.empty());
+    EXPECT_EQ(answer->message.text("family"), "Fake 0.1");
+}
+
 TEST(IfaceProxy, TheBenchPilotBackendBehindAProxyRunsTheSimulator)
 {
     dev::SimulatedLink link(dev::proto::DeviceKind::Stage, 0);
