@@ -1,6 +1,7 @@
 #include "widgets/camera/scale_bar.h"
 
 #include <cmath>
+#include <initializer_list>
 
 namespace ui {
 
