@@ -316,6 +316,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent) : QMai
         connect(sc, &QShortcut::activated, this, [this, i] { m_nav->setCurrentRow(i - 1); });
     }
 
+    buildFileMenu();
     if (m_options.translators)
         buildLanguageMenu();
     retranslateUi();

@@ -42,6 +42,7 @@ class CalibrationScreen;
 namespace ui::words {
 class Translators;
 }
+class QAction;
 class QActionGroup;
 class QDockWidget;
 class QMenu;
@@ -138,6 +139,7 @@ private:
     void retranslateUi();
     /// Installs `language` ("system", "en", "zh_CN") at once and keeps it for the next start.
     void setLanguage(const QString& language);
+    void buildFileMenu();
     void buildLanguageMenu();
     void addScreen(const QString& name, const QString& title, QWidget* screen);
     void wireApi(QDockWidget* logDock);
@@ -176,6 +178,8 @@ private:
     std::vector<std::function<void()>> m_connectionTexts;  ///< each instrument's connection bar and status text, worded anew
     bool m_latchShown = false;  ///< the status bar shows an E-stop latch
     QDockWidget* m_logDock = nullptr;
+    QMenu* m_fileMenu = nullptr;
+    QAction* m_quitAction = nullptr;
     QMenu* m_settingsMenu = nullptr;
     QMenu* m_languageMenu = nullptr;
     QActionGroup* m_languages = nullptr;

@@ -38,6 +38,7 @@
 #include "widgets/wording/translators.h"
 
 #include <QApplication>
+#include <QAction>
 #include <QActionGroup>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -49,6 +50,7 @@
 #include <QPushButton>
 #include <QScreen>
 #include <QScrollArea>
+#include <QKeySequence>
 #include <QMenu>
 #include <QMenuBar>
 #include <QSettings>
@@ -67,6 +69,17 @@ namespace {
 // One settings group per instrument, in the order of the instrument list.
 constexpr const char* kSettingsKeys[] = {"analyzer", "stage"};
 } // namespace
+
+void MainWindow::buildFileMenu()
+{
+    // Quitting goes through close(), so a running job or unsaved recipe still asks first.
+    m_fileMenu = menuBar()->addMenu(QString());
+    m_quitAction = m_fileMenu->addAction(QString());
+    m_quitAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Q));  // QKeySequence::Quit is empty on some platforms
+    m_quitAction->setMenuRole(QAction::QuitRole);
+    connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
+    addAction(m_quitAction);  // the key works while the menu is closed, whatever has focus
+}
 
 void MainWindow::buildLanguageMenu()
 {
@@ -138,6 +151,10 @@ void MainWindow::retranslateUi()
     m_estop->setToolTip(tr("Stop all motion on both instruments at once (Esc, from any screen)"));
     if (m_logDock)
         m_logDock->setWindowTitle(tr("Event log"));
+    if (m_fileMenu) {
+        m_fileMenu->setTitle(tr("&File"));
+        m_quitAction->setText(tr("&Quit"));
+    }
     if (m_settingsMenu) {
         m_settingsMenu->setTitle(tr("&Settings"));
         m_languageMenu->setTitle(tr("&Language"));

@@ -127,6 +127,22 @@ TEST_F(TrustConfirmTest, QuittingWithUnsavedEditsOrARunningJobAsksFirst)
     EXPECT_TRUE(w->close());
 }
 
+// Ctrl+Q (File > Quit) quits as closing the window does: it asks first when work would be lost.
+TEST_F(TrustConfirmTest, CtrlQQuitsAndAsksFirstWhenWorkWouldBeLost)
+{
+    ASSERT_TRUE(screen->recipeEditor()->isModified());
+    w->activateWindow();
+    QTest::keyClick(w.get(), Qt::Key_Q, Qt::ControlModifier);
+    pump(20);
+    ASSERT_EQ(questions.size(), 1) << "Ctrl+Q did not reach Quit";
+    EXPECT_TRUE(questions[0].contains(QStringLiteral("not saved"))) << questions[0].toStdString();
+    EXPECT_TRUE(w->isVisible());
+    answer = true;
+    QTest::keyClick(w.get(), Qt::Key_Q, Qt::ControlModifier);
+    pump(20);
+    EXPECT_FALSE(w->isVisible());
+}
+
 TEST_F(TrustConfirmTest, HomingAPlungerThatHoldsLiquidSaysHowMuchWouldBePushedOut)
 {
     // The failure this catches: the operator was led to home the plunger with 220 µL in the syringe.
