@@ -14,57 +14,38 @@
 // with the finder's reason, and so is one that is not the plate's (its size is not the
 // plate's dots', or it is further off the centre than half the plate's pitch); the image is
 // kept beside the run as node-NNN.tif.
-#include "device/camera/camera.h"
-#include "device/camera/camera_geometry.h"
-#include "device/jobs/accuracy/reading_source.h"
-
-#include <QTimer>
-
-#include <cstdint>
+#include "device/camera/camera_reading_source.h"
 
 namespace dev::camera {
 
-struct DotReadingOptions {
-    CameraGeometry geometry;          ///< the camera profile: pixel size, rotation, image y
-    QString failedImagesFolder;       ///< where a failed reading's image goes ("": not kept)
+struct DotReadingOptions : CameraReadingOptions {
     /// The plate's dots: what the finder finds is refused as not one of them when its
     /// diameter is more than a quarter off, or when it lies further from the centre than
     /// half the pitch (a speck of dust, the dark corner of a blank field).
     double platePitchMm = 1.0;
     double dotDiameterMm = 0.1;
-    int timeoutMs = 30000;            ///< a camera silent this long fails the reading
 };
 
-class DotReadingSource : public dev::jobs::ReadingSource {
+class DotReadingSource : public CameraReadingSource {
     Q_OBJECT
 public:
     /// `camera` is not owned.
     DotReadingSource(Camera* camera, const DotReadingOptions& options, QObject* parent = nullptr);
 
-    dev::jobs::ReadingKind kind() const override { return dev::jobs::ReadingKind::Camera; }
     motion::msg::Message describe() const override;
     int maxAxes() const override { return 2; }
-    void open(OpenDone done) override;
     /// X and Y of the work point against the dot taken to sit at the stop's targets.
     void take(const dev::jobs::StopContext& stop, TakeDone done) override;
-    void cancel() override;
 
     void setFailedImagesFolder(const QString& folder) { m_options.failedImagesFolder = folder; }
     const DotReadingOptions& options() const { return m_options; }
 
-private:
-    void onCaptured(std::uint64_t id, const Frame& frame);
-    void onFailed(std::uint64_t id, const motion::msg::Problem& problem);
-    void finish(const dev::jobs::TakeResult& result);
+protected:
+    const CameraReadingOptions& cameraOptions() const override { return m_options; }
+    dev::jobs::TakeResult readFrame(const Frame& frame) override;
 
-    Camera* m_camera;
+private:
     DotReadingOptions m_options;
-    QTimer m_timeout;
-    std::uint64_t m_nextId = 1;
-    std::uint64_t m_waitingId = 0;    ///< the capture a take waits for; 0: none
-    dev::jobs::StopContext m_stop;
-    TakeDone m_done;
-    OpenDone m_openDone;
 };
 
 } // namespace dev::camera

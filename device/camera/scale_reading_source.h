@@ -13,59 +13,42 @@
 // A stop where no line, or two, can be told is that reading's failure, named with the
 // finder's reason; the image is kept beside the run as reading-NNN.tif so a person can
 // see why. One axis a reading (X or Y).
-#include "device/camera/camera.h"
-#include "device/camera/camera_geometry.h"
-#include "device/jobs/accuracy/reading_source.h"
+#include "device/camera/camera_reading_source.h"
 #include "motion/metrology/linear/scale_certificate.h"
 
-#include <QTimer>
-
-#include <cstdint>
 #include <optional>
 
 namespace dev::camera {
 
-struct ScaleReadingOptions {
-    CameraGeometry geometry;          ///< the camera profile: pixel size, rotation, image y
+struct ScaleReadingOptions : CameraReadingOptions {
     double graduationMm = 0.1;        ///< the scale's pitch
     /// The scale's calibration certificate: each graduation read is taken at its
     /// certified place (nominal + deviation) instead of its nominal one.
     std::optional<motion::metrology::ScaleCertificate> certificate;
-    QString failedImagesFolder;       ///< where a failed reading's image goes ("": not kept)
-    int timeoutMs = 30000;            ///< a camera silent this long fails the reading
 };
 
-class ScaleReadingSource : public dev::jobs::ReadingSource {
+class ScaleReadingSource : public CameraReadingSource {
     Q_OBJECT
 public:
     /// `camera` is not owned.
     ScaleReadingSource(Camera* camera, const ScaleReadingOptions& options, QObject* parent = nullptr);
 
-    dev::jobs::ReadingKind kind() const override { return dev::jobs::ReadingKind::Camera; }
     motion::msg::Message describe() const override;
-    void open(OpenDone done) override;
     void take(const dev::jobs::StopContext& stop, TakeDone done) override;
-    void cancel() override;
 
     void setFailedImagesFolder(const QString& folder) { m_options.failedImagesFolder = folder; }
     /// Where the line the last good reading found sat, px from the centre (for tests and the screen).
     double lastOffsetPx() const { return m_lastOffsetPx; }
 
+protected:
+    const CameraReadingOptions& cameraOptions() const override { return m_options; }
+    dev::jobs::TakeResult readFrame(const Frame& frame) override;
+
 private:
-    void onCaptured(std::uint64_t id, const Frame& frame);
-    void onFailed(std::uint64_t id, const motion::msg::Problem& problem);
-    void finish(const dev::jobs::TakeResult& result);
     /// The nominal position (mm) of the graduation line found `offsetPx` from the centre.
     double graduationOf(const Frame& frame, bool vertical, double offsetPx, double mmPerPx) const;
 
-    Camera* m_camera;
     ScaleReadingOptions m_options;
-    QTimer m_timeout;
-    std::uint64_t m_nextId = 1;
-    std::uint64_t m_waitingId = 0;    ///< the capture a take waits for; 0: none
-    dev::jobs::StopContext m_stop;
-    TakeDone m_done;
-    OpenDone m_openDone;
     double m_lastOffsetPx = 0;
 };
 

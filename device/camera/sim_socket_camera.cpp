@@ -279,6 +279,11 @@ void SimSocketCamera::onServerError(const SimWireError& error)
     const Asked a = it->second;
     m_asked.erase(it);
     armDeadline();
+    failAsked(a, why);
+}
+
+void SimSocketCamera::failAsked(const Asked& a, const m::Message& why)
+{
     if (a.live) {
         // Said once; the live view stops rather than repeat it thirty times a second.
         m_liveInFlight = false;
@@ -337,13 +342,7 @@ void SimSocketCamera::onDeadline()
     for (const auto& [wire, a] : late) {
         const auto why = m::make("camera.socket.timeout", {m::verbatim("socket", m_path.toStdString()),
                                                            m::real("seconds", static_cast<double>(a.waitMs) / 1000.0, m::Unit::S)});
-        if (a.live) {
-            m_liveInFlight = false;
-            m_live = false;
-            emit failed(0, m::Problem("", why));
-        } else {
-            emit failed(a.requestId, m::Problem("", why));
-        }
+        failAsked(a, why);
     }
 }
 

@@ -68,6 +68,9 @@ private:
     void readAnswers();
     void onFrame(SimWireFrame&& frame);
     void onServerError(const SimWireError& error);
+    /// A capture asked that will not be answered: its requester hears `why` (the live
+    /// view on request 0, and it stops).
+    void failAsked(const Asked& a, const motion::msg::Message& why);
     /// The link is unusable: every waiting capture fails with `why`, and so does every later one.
     void goDead(const motion::msg::Message& why);
     void armDeadline();

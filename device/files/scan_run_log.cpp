@@ -1,5 +1,7 @@
 #include "device/files/scan_run_log.h"
 
+#include "device/files/json_lines.h"
+
 #include <cinttypes>
 #include <cstdio>
 #include <cstdlib>
@@ -55,13 +57,6 @@ std::optional<std::vector<double>> readAxes(ObjectReader& o, std::string_view ke
     return out;
 }
 
-/// Problems of one line, moved to where the line stands in the file.
-void addShifted(dev::files::json::Problems& into, const dev::files::json::Problems& line, int lineNo)
-{
-    for (const auto& p : line.list())
-        into.add(dev::files::json::Position{lineNo, p.column}, p.path, p.message);
-}
-
 } // namespace
 
 std::string runLogLine(const motion::PositionRecord& r, const TileImageRef& image)
@@ -85,24 +80,15 @@ RunLogReadResult parseRunLog(std::string_view text)
 {
     RunLogReadResult out;
     RunLog log;
-    std::size_t at = 0;
-    int lineNo = 0;
     bool header = false;
-    while (at < text.size()) {
-        const std::size_t nl = text.find('\n', at);
-        const bool complete = nl != std::string_view::npos;
-        const std::string_view line = text.substr(at, complete ? nl - at : std::string_view::npos);
-        at = complete ? nl + 1 : text.size();
-        ++lineNo;
-        if (line.find_first_not_of(" \t\r") == std::string_view::npos)
+    dev::files::json::TextLines lines(text);
+    while (const auto line = lines.next()) {
+        if (dev::files::json::isBlank(line->text))
             continue;
-        const dev::files::json::ParseResult parsed = dev::files::json::parse(line);
-        if (!parsed) {
-            if (!complete && header) {
-                log.tornTail = true;  // the write a crash interrupted: that tile is simply not taken
-                break;
-            }
-            out.problems.add(dev::files::json::Position{lineNo, parsed.error.position.column}, "", parsed.error.message);
+        const int lineNo = line->number;
+        dev::files::json::ParseResult parsed;
+        if (const auto read = dev::files::json::parseLine(*line, header, parsed, out.problems); read != dev::files::json::LineOutcome::Value) {
+            log.tornTail = read == dev::files::json::LineOutcome::Torn;  // the write a crash interrupted: that tile is simply not taken
             break;
         }
         dev::files::json::Problems lp;
@@ -121,7 +107,7 @@ RunLogReadResult parseRunLog(std::string_view text)
                     log.tiles = static_cast<int>(*tiles);
                 }
             }
-            addShifted(out.problems, lp, lineNo);
+            dev::files::json::addAtLine(out.problems, lp, lineNo);
             if (!out.problems.empty())
                 return out;
             header = true;
@@ -159,7 +145,7 @@ RunLogReadResult parseRunLog(std::string_view text)
             log.records.push_back(std::move(r));
             log.images.push_back({image.value_or(std::string()), sha.value_or(std::string())});
         }
-        addShifted(out.problems, lp, lineNo);
+        dev::files::json::addAtLine(out.problems, lp, lineNo);
     }
     if (!header && out.problems.empty())
         out.problems.add(dev::files::json::Position{1, 1}, "", motion::msg::make("file.log.empty"));

@@ -1,6 +1,7 @@
 #include "device/files/stitch_positions.h"
 
 #include "device/files/json_fields.h"
+#include "device/files/json_lines.h"
 #include "device/files/scan_run_log.h"
 
 #include <set>
@@ -17,22 +18,13 @@ motion::msg::Checked<std::vector<TakenTile>> parseTakenTiles(std::string_view te
     dev::files::json::Problems problems;
     std::set<int> seen;
     std::set<std::string> images;
-    std::size_t at = 0;
-    int lineNo = 0;
     bool header = false;
-    while (at < text.size()) {
-        const std::size_t nl = text.find('\n', at);
-        const bool complete = nl != std::string_view::npos;
-        const std::string_view line = text.substr(at, complete ? nl - at : std::string_view::npos);
-        at = complete ? nl + 1 : text.size();
-        ++lineNo;
-        dev::files::json::ParseResult parsed = dev::files::json::parse(line);
-        if (!parsed.value) {
-            if (!complete && header)
-                break;  // torn by a crash: the tile was not taken
-            problems.add(dev::files::json::Position{lineNo, parsed.error.position.column}, "", parsed.error.message);
-            break;
-        }
+    dev::files::json::TextLines lines(text);
+    while (const auto line = lines.next()) {
+        const int lineNo = line->number;
+        dev::files::json::ParseResult parsed;
+        if (dev::files::json::parseLine(*line, header, parsed, problems) != dev::files::json::LineOutcome::Value)
+            break;  // an error, or a last line torn by a crash: that tile was not taken
         dev::files::json::Problems lp;
         if (!header) {
             dev::files::json::checkSchema(*parsed.value, kRunLogSchema, kRunLogVersion, lp);
@@ -55,8 +47,7 @@ motion::msg::Checked<std::vector<TakenTile>> parseTakenTiles(std::string_view te
                     tiles.push_back({static_cast<int>(*tile), *label, measured->items()[0].asNumber(), measured->items()[1].asNumber(), lineNo});
             }
         }
-        for (const auto& p : lp.list())
-            problems.add(dev::files::json::Position{lineNo, p.column}, p.path, p.message);
+        dev::files::json::addAtLine(problems, lp, lineNo);
     }
     if (!header && problems.empty())
         problems.add(dev::files::json::Position{1, 1}, "", motion::msg::make("file.log.empty"));

@@ -1,5 +1,7 @@
 #include "widgets/report/report_document.h"
 
+#include "widgets/report/accuracy_report.h"
+
 #include <QCoreApplication>
 #include <QFile>
 #include <QPageLayout>
@@ -26,6 +28,11 @@ void Document::newPage()
 
 bool writeAtomically(const QString& pdfPath, const std::function<bool(const QString&)>& render, QString* error)
 {
+    if (!canRender()) {
+        if (error)
+            *error = QCoreApplication::translate("ui::report", "a PDF needs a graphical application object; none exists in this program");
+        return false;
+    }
     const QString temp = pdfPath + QStringLiteral(".part");
     QFile::remove(temp);
     auto fail = [&] {

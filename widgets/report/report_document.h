@@ -27,7 +27,8 @@ private:
 };
 
 /// Renders into a temporary file beside `pdfPath` and renames it over at the end, so a
-/// failure leaves no half-written report. False with a sentence in `error`.
+/// failure leaves no half-written report. False with a sentence in `error`, also when
+/// there is no graphical application to render with (canRender).
 bool writeAtomically(const QString& pdfPath, const std::function<bool(const QString& tempPath)>& render, QString* error);
 
 } // namespace ui::report

@@ -1,5 +1,7 @@
 #include "device/files/accuracy/accuracy_run_log.h"
 
+#include "device/files/json_lines.h"
+
 #include <cinttypes>
 #include <cstdio>
 #include <cstdlib>
@@ -43,12 +45,6 @@ std::optional<std::vector<double>> readPositions(ObjectReader& o, std::string_vi
         return std::nullopt;
     }
     return out;
-}
-
-void addShifted(dev::files::json::Problems& into, const dev::files::json::Problems& line, int lineNo)
-{
-    for (const auto& p : line.list())
-        into.add(dev::files::json::Position{lineNo, p.column}, p.path, p.message);
 }
 
 } // namespace
@@ -99,24 +95,15 @@ RunLogRead parseRunLog(std::string_view text)
 {
     RunLogRead out;
     RunLog log;
-    std::size_t at = 0;
-    int lineNo = 0;
     bool header = false;
-    while (at < text.size()) {
-        const std::size_t nl = text.find('\n', at);
-        const bool complete = nl != std::string_view::npos;
-        const std::string_view line = text.substr(at, complete ? nl - at : std::string_view::npos);
-        at = complete ? nl + 1 : text.size();
-        ++lineNo;
-        if (line.find_first_not_of(" \t\r") == std::string_view::npos)
+    dev::files::json::TextLines lines(text);
+    while (const auto line = lines.next()) {
+        if (dev::files::json::isBlank(line->text))
             continue;
-        const dev::files::json::ParseResult parsed = dev::files::json::parse(line);
-        if (!parsed) {
-            if (!complete && header) {
-                log.tornTail = true;  // the write a crash interrupted: that stop is simply not read
-                break;
-            }
-            out.problems.add(dev::files::json::Position{lineNo, parsed.error.position.column}, "", parsed.error.message);
+        const int lineNo = line->number;
+        dev::files::json::ParseResult parsed;
+        if (const auto read = dev::files::json::parseLine(*line, header, parsed, out.problems); read != dev::files::json::LineOutcome::Value) {
+            log.tornTail = read == dev::files::json::LineOutcome::Torn;  // the write a crash interrupted: that stop is simply not read
             break;
         }
         dev::files::json::Problems lp;
@@ -139,7 +126,7 @@ RunLogRead parseRunLog(std::string_view text)
                     log.header.source = *source;
                 }
             }
-            addShifted(out.problems, lp, lineNo);
+            dev::files::json::addAtLine(out.problems, lp, lineNo);
             if (!out.problems.empty())
                 return out;
             header = true;
@@ -177,7 +164,7 @@ RunLogRead parseRunLog(std::string_view text)
                 log.entries.push_back(std::move(e));
             }
         }
-        addShifted(out.problems, lp, lineNo);
+        dev::files::json::addAtLine(out.problems, lp, lineNo);
         if (!out.problems.empty())
             return out;
     }

@@ -1,5 +1,7 @@
 #include "device/files/recipes/run_log.h"
 
+#include "device/files/json_lines.h"
+
 namespace dev::files::plates {
 
 using dev::files::json::ObjectReader;
@@ -24,29 +26,20 @@ int RunLogState::firstOpenOp() const
 RunLogState readRunLog(std::string_view text)
 {
     RunLogState st;
-    int lineNo = 0;
-    std::size_t from = 0;
     bool header = false;
-    while (from < text.size()) {
-        std::size_t end = text.find('\n', from);
-        const bool last = end == std::string_view::npos;
-        if (last)
-            end = text.size();
-        const std::string_view line = text.substr(from, end - from);
-        from = end + 1;
-        ++lineNo;
-        if (line.empty())
+    dev::files::json::TextLines lines(text);
+    while (const auto line = lines.next()) {
+        if (line->text.empty())
             continue;
-        auto at = [&](const dev::files::json::Position& p) { return dev::files::json::Position{lineNo, p.column}; };
-        dev::files::json::ParseResult parsed = dev::files::json::parse(line);
-        if (!parsed) {
-            if (last) {
-                st.tornTail = true;  // written up to a crash: the line never completed
-                break;
-            }
-            st.problems.add(at(parsed.error.position), "", parsed.error.message);
-            continue;
+        const int lineNo = line->number;
+        dev::files::json::ParseResult parsed;
+        const auto read = dev::files::json::parseLine(*line, true, parsed, st.problems);
+        if (read == dev::files::json::LineOutcome::Torn) {
+            st.tornTail = true;  // written up to a crash: the line never completed
+            break;
         }
+        if (read == dev::files::json::LineOutcome::Error)
+            continue;
         const Value& v = *parsed.value;
         dev::files::json::Problems local;
         ObjectReader o(v, "", local);
@@ -131,8 +124,7 @@ RunLogState readRunLog(std::string_view text)
                 r.line = lineNo;
             }
         }
-        for (const motion::msg::Problem& p : local.list())
-            st.problems.add(at(dev::files::json::Position{p.line, p.column}), p.path, p.message);
+        dev::files::json::addAtLine(st.problems, local, lineNo);
         if (st.problems.size() > 100)
             break;
     }
