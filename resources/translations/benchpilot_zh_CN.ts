@@ -5644,6 +5644,18 @@ Keep that log aside and start this test afresh?</source>
         <source>mean reversal Y (µm)</source>
         <translation>Y 平均反向差 (µm)</translation>
     </message>
+    <message>
+        <source>Stopped after %1 of %2 readings (each node both ways).</source>
+        <translation>已完成 %2 次读数中的 %1 次后停止（每个节点双向各读一次）。</translation>
+    </message>
+    <message>
+        <source>Finished: %1 of %2 readings (each node both ways) failed.</source>
+        <translation>完成：%2 次读数（每个节点双向各读一次）中有 %1 次失败。</translation>
+    </message>
+    <message>
+        <source>Finished: %1 nodes, each read both ways.</source>
+        <translation>完成：%1 个节点，每个节点双向各读一次。</translation>
+    </message>
 </context>
 <context>
     <name>ui::GridMapView</name>
@@ -5680,8 +5692,8 @@ Keep that log aside and start this test afresh?</source>
         <translation>均方根 %1 µm，两个方向的平均值</translation>
     </message>
     <message>
-        <source>reversal arrows (forward − reverse) magnified %1×; colour: the reversal&apos;s length</source>
-        <translation>反向差箭头（正向 − 反向）放大 %1 倍；颜色：反向差长度</translation>
+        <source>reversals (forward − reverse) magnified %1×; colour: their length</source>
+        <translation>反向差（正向 − 反向）放大 %1 倍；颜色：其长度</translation>
     </message>
 </context>
 <context>

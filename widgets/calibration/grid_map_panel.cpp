@@ -80,7 +80,7 @@ void GridMapView::paintEvent(QPaintEvent*)
     ui::report::drawGridColourBar(p, QRectF(6, height() - 2 * line - 2, barW + 110, line * 0.5), colourMax);
     p.setPen(palette().color(QPalette::WindowText));
     p.drawText(QRectF(6, height() - line - 2, width() - 12, line), Qt::AlignLeft | Qt::AlignVCenter,
-               reversal ? tr("reversal arrows (forward − reverse) magnified %1×; colour: the reversal's length").arg(QLocale().toString(mag * 1000, 'f', 0))
+               reversal ? tr("reversals (forward − reverse) magnified %1×; colour: their length").arg(QLocale().toString(mag * 1000, 'f', 0))
                         : tr("arrows magnified %1×; colour: the error's length").arg(QLocale().toString(mag * 1000, 'f', 0)));
 }
 
@@ -345,10 +345,16 @@ QString GridMapPanel::stateText() const
             return tr("Mapping both ways: %1 of %2 readings").arg(visited).arg(m_runner->totalNodes());
         return tr("Mapping: %1 of %2 nodes").arg(visited).arg(m_runner->totalNodes());
     case dev::jobs::GridMapRunner::State::Stopped:
+        if (m_runner->test().bidirectional)
+            return tr("Stopped after %1 of %2 readings (each node both ways).").arg(visited).arg(m_runner->totalNodes());
         return tr("Stopped after %1 of %2 nodes.").arg(visited).arg(m_runner->totalNodes());
     case dev::jobs::GridMapRunner::State::Finished:
-        return m_runner->nodesFailed() > 0 ? tr("Finished: %1 of %2 nodes without a reading.").arg(m_runner->nodesFailed()).arg(m_runner->totalNodes())
-                                           : tr("Finished: %1 nodes.").arg(m_runner->totalNodes());
+        if (m_runner->nodesFailed() > 0)
+            return m_runner->test().bidirectional
+                       ? tr("Finished: %1 of %2 readings (each node both ways) failed.").arg(m_runner->nodesFailed()).arg(m_runner->totalNodes())
+                       : tr("Finished: %1 of %2 nodes without a reading.").arg(m_runner->nodesFailed()).arg(m_runner->totalNodes());
+        return m_runner->test().bidirectional ? tr("Finished: %1 nodes, each read both ways.").arg(m_runner->totalNodes() / 2)
+                                              : tr("Finished: %1 nodes.").arg(m_runner->totalNodes());
     case dev::jobs::GridMapRunner::State::Idle: break;
     }
     return tr("Ready.");
