@@ -42,7 +42,7 @@ const std::vector<std::pair<QString, QString>> kGridOptionOf = {
 bool buildGridTest(Invocation& inv, motion::metrology::GridMapTest& out)
 {
     if (inv.isSet(QStringLiteral("test"))) {
-        for (const char* o : {"pitch", "nodes", "start", "plate-pitch", "feed", "dwell", "approach"})
+        for (const char* o : {"pitch", "nodes", "start", "plate-pitch", "feed", "dwell", "approach", "bidirectional"})
             if (inv.isSet(QLatin1String(o))) {
                 inv.usage(tr("--test gives the whole test: leave out --%1").arg(QLatin1String(o)));
                 return false;
@@ -82,6 +82,7 @@ bool buildGridTest(Invocation& inv, motion::metrology::GridMapTest& out)
         if (!inv.number(QStringLiteral("plate-pitch"), t.platePitchMm, t.platePitchMm) || !inv.number(QStringLiteral("feed"), t.feedMmS, t.feedMmS)
             || !inv.number(QStringLiteral("dwell"), t.dwellS, t.dwellS) || !inv.number(QStringLiteral("approach"), t.approachMm, t.approachMm))
             return false;
+        t.bidirectional = inv.isSet(QStringLiteral("bidirectional"));
         if (reportProblems(inv, motion::metrology::validate(t), kGridOptionOf))
             return false;
         out = t;
@@ -254,6 +255,13 @@ int runGridMap(Invocation& inv)
               << tr("straightness X %1 µm, straightness Y %2 µm").arg(f.straightnessXUm, 0, 'f', 2).arg(f.straightnessYUm, 0, 'f', 2) << "\n"
               << tr("error RMS %1 µm, max %2 µm; residual RMS %3 µm").arg(f.rmsErrorUm, 0, 'f', 2).arg(f.maxErrorUm, 0, 'f', 2).arg(f.rmsResidualUm, 0, 'f', 2)
               << "\n";
+    if (f.maxReversalUm && f.meanReversalXUm && f.meanReversalYUm)
+        inv.out() << tr("both directions, the map their mean; reversal max %1 µm, mean along X %2 µm, along Y %3 µm "
+                        "(the lost motion a 2D table cannot correct)")
+                         .arg(*f.maxReversalUm, 0, 'f', 2)
+                         .arg(*f.meanReversalXUm, 0, 'f', 2)
+                         .arg(*f.meanReversalYUm, 0, 'f', 2)
+                  << "\n";
     for (const QString& file : files)
         inv.out() << tr("wrote %1").arg(file) << "\n";
     return Ok;
@@ -274,7 +282,9 @@ void addGridMapCommands(std::vector<Command>& list)
         option("plate-pitch", "the plate's certified dot pitch in mm", "mm", "1"),
         option("feed", "feed between nodes in mm/s", "mm/s", "10"),
         option("dwell", "wait after arriving, in s", "s", "0.2"),
-        option("approach", "the lead-in from below before each row, in mm", "mm", "0.05"),
+        option("approach", "the lead-in before each row (from below; from above in the reverse pass), in mm", "mm", "0.05"),
+        option("bidirectional", "read every node twice: forward from -X -Y, then in reverse order from +X +Y; the map is "
+                                "their mean and each node gets its reversal"),
         option("stop-on-failure", "stop the run at a dot the camera cannot find (default: it is that node's failure and the run goes on)"),
         option("out", "folder for the run log, the readings CSV, the result JSON and the PDF report", "dir"),
         option("before", "a grid map result of the same grid without compensation: shown beside this one in the report", "file"),
@@ -285,8 +295,9 @@ void addGridMapCommands(std::vector<Command>& list)
     options << cameraOptions("grid-plate");
     Command run{QStringLiteral("run"), tr("map the stage on a grid plate with the camera"), QString(),
                 tr("Starts at the dot nearest the image centre where the stage stands (or --start), visits the nodes row by row, "
-                   "each approached from below, finds each dot to a fraction of a pixel, and writes the readings CSV and the "
-                   "result JSON into --out. A run that stopped continues from its log there without reading a node twice."),
+                   "each approached from below (with --bidirectional, then again in reverse order from above), finds each dot to "
+                   "a fraction of a pixel, and writes the readings CSV and the result JSON into --out. A run that stopped "
+                   "continues from its log there without reading a node twice."),
                 options, &runGridMap, {}};
     run.api.method = QStringLiteral("grid_map.run");
     run.api.access = Access::Control;

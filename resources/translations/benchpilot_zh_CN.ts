@@ -2891,8 +2891,8 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
         <translation>用相机在网格板上测绘平台</translation>
     </message>
     <message>
-        <source>Starts at the dot nearest the image centre where the stage stands (or --start), visits the nodes row by row, each approached from below, finds each dot to a fraction of a pixel, and writes the readings CSV and the result JSON into --out. A run that stopped continues from its log there without reading a node twice.</source>
-        <translation>从平台所在位置图像中心最近的圆点（或 --start）开始，逐行访问各节点，每个节点都从下方趋近，以亚像素精度找到每个圆点，并将读数 CSV 和结果 JSON 写入 --out。已停止的运行从该处的日志继续，不会重复读取任何节点。</translation>
+        <source>Starts at the dot nearest the image centre where the stage stands (or --start), visits the nodes row by row, each approached from below (with --bidirectional, then again in reverse order from above), finds each dot to a fraction of a pixel, and writes the readings CSV and the result JSON into --out. A run that stopped continues from its log there without reading a node twice.</source>
+        <translation>从平台所在位置图像中心最近的圆点（或 --start）开始，逐行访问各节点，每个节点都从下方趋近（使用 --bidirectional 时，再按相反顺序从上方趋近），以亚像素精度找到每个圆点，并将读数 CSV 和结果 JSON 写入 --out。已停止的运行从该处的日志继续，不会重复读取任何节点。</translation>
     </message>
     <message>
         <source>the grid map&apos;s result file</source>
@@ -2985,6 +2985,10 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
 </source>
         <translation>由 %1 对拟合的载物台模型：x 比例 %2 ppm，y 比例 %3 ppm，旋转 %4 µrad，剪切 %5 µrad；模型之外 RMS %6 px，最大 %7 px
 </translation>
+    </message>
+    <message>
+        <source>both directions, the map their mean; reversal max %1 µm, mean along X %2 µm, along Y %3 µm (the lost motion a 2D table cannot correct)</source>
+        <translation>双向，网格图取两者的平均值；反向差最大 %1 µm，沿 X 平均 %2 µm，沿 Y 平均 %3 µm（二维补偿表无法校正的空程）</translation>
     </message>
 </context>
 <context>
@@ -5600,6 +5604,58 @@ Keep that log aside and start this test afresh?</source>
         <source>Rows</source>
         <translation>行数</translation>
     </message>
+    <message>
+        <source>Both directions</source>
+        <translation>双向</translation>
+    </message>
+    <message>
+        <source>Read every node twice: approached from −X −Y, then again in reverse order from +X +Y. The map is the mean of the two; each node gets its reversal (forward − reverse), whose mean along X and Y is the lost motion a 2D table cannot correct.</source>
+        <translation>每个节点读取两次：先从 −X −Y 方向趋近，再按相反顺序从 +X +Y 方向趋近。网格图取两者的平均值；每个节点得到其反向差（正向 − 反向），其沿 X 和 Y 的平均值即二维补偿表无法校正的空程。</translation>
+    </message>
+    <message>
+        <source>Arrows</source>
+        <translation>箭头</translation>
+    </message>
+    <message>
+        <source>errors</source>
+        <translation>误差</translation>
+    </message>
+    <message>
+        <source>reversals</source>
+        <translation>反向差</translation>
+    </message>
+    <message>
+        <source>What the map&apos;s arrows and colours show: each node&apos;s error, or its reversal (forward − reverse)</source>
+        <translation>网格图的箭头和颜色显示的内容：每个节点的误差，或其反向差（正向 − 反向）</translation>
+    </message>
+    <message>
+        <source>Mapping both ways: %1 of %2 readings</source>
+        <translation>双向测绘：%2 次读数中的第 %1 次</translation>
+    </message>
+    <message>
+        <source>reversal max (µm)</source>
+        <translation>反向差最大值 (µm)</translation>
+    </message>
+    <message>
+        <source>mean reversal X (µm)</source>
+        <translation>X 平均反向差 (µm)</translation>
+    </message>
+    <message>
+        <source>mean reversal Y (µm)</source>
+        <translation>Y 平均反向差 (µm)</translation>
+    </message>
+    <message>
+        <source>Stopped after %1 of %2 readings (each node both ways).</source>
+        <translation>已完成 %2 次读数中的 %1 次后停止（每个节点双向各读一次）。</translation>
+    </message>
+    <message>
+        <source>Finished: %1 of %2 readings (each node both ways) failed.</source>
+        <translation>完成：%2 次读数（每个节点双向各读一次）中有 %1 次失败。</translation>
+    </message>
+    <message>
+        <source>Finished: %1 nodes, each read both ways.</source>
+        <translation>完成：%1 个节点，每个节点双向各读一次。</translation>
+    </message>
 </context>
 <context>
     <name>ui::GridMapView</name>
@@ -5622,6 +5678,22 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>arrows magnified %1×; colour: the error&apos;s length</source>
         <translation>箭头放大 %1 倍；颜色：误差长度</translation>
+    </message>
+    <message>
+        <source>mean reversal X %1 µm, Y %2 µm</source>
+        <translation>平均反向差 X %1 µm，Y %2 µm</translation>
+    </message>
+    <message>
+        <source>read one way: no reversal</source>
+        <translation>单向读取：无反向差</translation>
+    </message>
+    <message>
+        <source>RMS %1 µm, mean of both directions</source>
+        <translation>均方根 %1 µm，两个方向的平均值</translation>
+    </message>
+    <message>
+        <source>reversals (forward − reverse) magnified %1×; colour: their length</source>
+        <translation>反向差（正向 − 反向）放大 %1 倍；颜色：其长度</translation>
     </message>
 </context>
 <context>
@@ -9562,6 +9634,38 @@ Plane %2, centre (%3, %4), radius %5, feed %6, lead arc %7; %8 samples a revolut
     <message>
         <source>BenchPilot grid map · %1 · %2</source>
         <translation>BenchPilot 网格图 · %1 · %2</translation>
+    </message>
+    <message>
+        <source>reversal max (µm)</source>
+        <translation>反向差最大值 (µm)</translation>
+    </message>
+    <message>
+        <source>mean reversal X (µm)</source>
+        <translation>X 平均反向差 (µm)</translation>
+    </message>
+    <message>
+        <source>mean reversal Y (µm)</source>
+        <translation>Y 平均反向差 (µm)</translation>
+    </message>
+    <message>
+        <source>%1 × %2 nodes every %3 × %4 on a grid plate of %5 pitch, read both ways: each row approached from below, then every node again in reverse order from above. The map and its figures are the mean of the two directions.</source>
+        <translation>%1 × %2 个节点，间距 %3 × %4，网格板间距 %5，双向读取：每行先从下方趋近，再按相反顺序从上方趋近每个节点。网格图及其指标为两个方向的平均值。</translation>
+    </message>
+    <message>
+        <source>Reversal map</source>
+        <translation>反向差图</translation>
+    </message>
+    <message>
+        <source>%1 · %2</source>
+        <translation>%1 · %2</translation>
+    </message>
+    <message>
+        <source>read one way: no reversal</source>
+        <translation>单向读取：无反向差</translation>
+    </message>
+    <message>
+        <source>Arrows: each node&apos;s reversal (forward − reverse), magnified %1×; colour: its length. Its mean along X and along Y is the axes&apos; lost motion, which a 2D table cannot correct.</source>
+        <translation>箭头：每个节点的反向差（正向 − 反向），放大 %1 倍；颜色：其长度。其沿 X 和沿 Y 的平均值即各轴的空程，二维补偿表无法校正。</translation>
     </message>
 </context>
 <context>

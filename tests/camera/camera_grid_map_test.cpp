@@ -22,10 +22,12 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
+#include <QJsonDocument>
 #include <QJsonObject>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace itest;
@@ -270,6 +272,213 @@ TEST(CameraGridMap, AStoppedRunContinuesFromItsLogWithoutReadingANodeTwice)
     EXPECT_TRUE(second.result());
 }
 
+/// Where the simulator's work point truly stood at each reading of `r`, by node and pass.
+struct TruthBothWays {
+    std::vector<double> ex, ey, rex, rey;
+    /// Over the nodes, the mean of (grating − target) forward less the same in reverse:
+    /// the part of the reversal the stage's own gratings show (an axis may rest a count
+    /// off a target that is not on its count).
+    double gratingReversalXUm = 0, gratingReversalYUm = 0;
+    void watch(const GridMapRunner& r, PlateBench& b, int nodes)
+    {
+        ex.assign(static_cast<std::size_t>(nodes), 0);
+        ey = rex = rey = ex;
+        QObject::connect(&r, &GridMapRunner::nodeRead, &r, [this, &r, &b](int k) {
+            const auto w = b.session.link.machine().trueWorkPoint();
+            const auto& s = r.stops()[static_cast<std::size_t>(k)];
+            const auto& axes = b.session.client.status().axes;
+            const double sign = (s.reverse ? -1.0 : 1.0) / static_cast<double>(ex.size());
+            gratingReversalXUm += sign * (axes[0].measured - s.xMm) * 1e3;
+            gratingReversalYUm += sign * (axes[1].measured - s.yMm) * 1e3;
+            const auto node = static_cast<std::size_t>(s.node(r.test().columns));
+            (s.reverse ? rex : ex)[node] = (w.xMm - s.xMm) * 1e3;
+            (s.reverse ? rey : ey)[node] = (w.yMm - s.yMm) * 1e3;
+        });
+    }
+    motion::metrology::GridMapResult map(const GridMapRunner& r) const
+    {
+        motion::metrology::GridMapInput in = r.input();
+        in.exUm = ex;
+        in.eyUm = ey;
+        in.reverseExUm = rex;
+        in.reverseEyUm = rey;
+        return *motion::metrology::analyseGridMap(in);
+    }
+};
+
+TEST(CameraGridMap, BothWaysGiveTheSetBacklashAsTheMeanReversalAndTheMeanMapStillTheStagesErrors)
+{
+    PlateBench b;
+    ASSERT_TRUE(b.ready());
+    ASSERT_TRUE(b.moveTo(10.1, 10.0));
+    // 3 × 3 nodes every 30 mm, read forward and back: 18 readings.
+    motion::metrology::GridMapTest t = smallGrid();
+    t.name = "both-ways";
+    t.columns = t.rows = 3;
+    t.pitchXMm = t.pitchYMm = 30;
+    t.bidirectional = true;
+    GridMapRunner r(&b.session.client);
+    TruthBothWays truth;
+    truth.watch(r, b, 9);
+    motion::msg::Message said;
+    b.run(r, t, b.dir.filePath(QStringLiteral("both-ways")), &said);
+    ASSERT_EQ(r.state(), GridMapRunner::State::Finished) << said;
+    ASSERT_EQ(r.totalNodes(), 18);
+    ASSERT_EQ(r.nodesRead(), 18);
+    const auto map = r.result();
+    ASSERT_TRUE(map);
+    const auto real = truth.map(r);
+    const auto& f = map->figures;
+    const auto& tf = real.figures;
+    ASSERT_TRUE(f.meanReversalXUm && f.meanReversalYUm && f.maxReversalUm && tf.meanReversalXUm && tf.meanReversalYUm);
+    const StageErrors set = errorsOfThisTest();
+    std::printf("mean reversal X %.3f um (truth %.3f, set backlash %.2f), Y %.3f um (truth %.3f, set %.2f), max %.3f um\n",
+                *f.meanReversalXUm, *tf.meanReversalXUm, set.backlashXUm, *f.meanReversalYUm, *tf.meanReversalYUm, set.backlashYUm,
+                *f.maxReversalUm);
+    std::printf("mean map: scale X %.2f (%.2f) ppm, scale Y %.2f (%.2f) ppm, squareness %.2f (%.2f) urad, straightness X %.3f (%.3f), "
+                "Y %.3f (%.3f) um\n",
+                f.scaleXPpm, tf.scaleXPpm, f.scaleYPpm, tf.scaleYPpm, f.squarenessUrad, tf.squarenessUrad, f.straightnessXUm,
+                tf.straightnessXUm, f.straightnessYUm, tf.straightnessYUm);
+    // Where each reading was taken: an axis rests where its grating reads a count near the
+    // target (the targets, from the dot found at the start, are not on the 0.5 µm counts,
+    // and the loop may settle a count off), and its carriage anywhere within half a count
+    // of that reading. So a node's reversal is −b + (grating − target, forward less
+    // reverse) + the difference of two sub-count rests: the mean over the nodes, less the
+    // gratings' part, is −b within one count whatever the rests do, plus what the camera
+    // adds (its reading against the truth's, checked first).
+    constexpr double kCountUm = 0.5;
+    constexpr double kCameraUm = 0.1;
+    std::printf("the gratings' part of the mean reversal: X %.3f um, Y %.3f um\n", truth.gratingReversalXUm, truth.gratingReversalYUm);
+    EXPECT_NEAR(*f.meanReversalXUm, *tf.meanReversalXUm, kCameraUm) << "the camera sees the reversal the work point made";
+    EXPECT_NEAR(*f.meanReversalYUm, *tf.meanReversalYUm, kCameraUm);
+    EXPECT_NEAR(-(*f.meanReversalXUm - truth.gratingReversalXUm), set.backlashXUm, kCountUm + kCameraUm) << "backlash b = −B̄";
+    EXPECT_NEAR(-(*f.meanReversalYUm - truth.gratingReversalYUm), set.backlashYUm, kCountUm + kCameraUm);
+    for (const auto& n : map->nodes)
+        ASSERT_TRUE(n.bidirectional() && n.forwardExUm && n.reverseExUm);
+    // The mean of both directions still gives the stage's errors, as one way does.
+    EXPECT_NEAR(f.scaleXPpm, tf.scaleXPpm, 2.0);
+    EXPECT_NEAR(f.scaleYPpm, tf.scaleYPpm, 2.0);
+    EXPECT_NEAR(f.squarenessUrad, tf.squarenessUrad, 5.0);
+    EXPECT_NEAR(f.straightnessXUm, tf.straightnessXUm, 0.5);
+    EXPECT_NEAR(f.straightnessYUm, tf.straightnessYUm, 0.5);
+    ASSERT_GT(std::fabs(tf.scaleXPpm), 10);
+    // The result file carries it.
+    QFile json(r.basePath() + QStringLiteral(".grid-map-result.json"));
+    ASSERT_TRUE(json.open(QIODevice::ReadOnly));
+    const QJsonObject o = QJsonDocument::fromJson(json.readAll()).object();
+    const QJsonObject figures = o.value(QStringLiteral("figures")).toObject();
+    EXPECT_NEAR(figures.value(QStringLiteral("mean_reversal_x_um")).toDouble(99), *f.meanReversalXUm, 1e-6);
+    EXPECT_TRUE(figures.value(QStringLiteral("max_reversal_um")).isDouble());
+    EXPECT_TRUE(o.value(QStringLiteral("nodes")).toArray().first().toObject().value(QStringLiteral("reversal_um")).isDouble());
+}
+
+TEST(CameraGridMap, ARunStoppedInTheReversePassContinuesWithoutReadingANodeOfEitherPassAgain)
+{
+    PlateBench b;
+    ASSERT_TRUE(b.ready());
+    ASSERT_TRUE(b.moveTo(20.1, 20.0));
+    motion::metrology::GridMapTest t = smallGrid();
+    t.columns = t.rows = 3;
+    t.pitchXMm = t.pitchYMm = 10;
+    t.bidirectional = true;
+    const QString folder = b.dir.filePath(QStringLiteral("resumed-both"));
+    double gratingReversalYUm = 0;  // the gratings' part of the mean reversal, both sessions
+    {
+        GridMapRunner first(&b.session.client);
+        TruthBothWays truth;
+        truth.watch(first, b, 9);
+        b.source->setFailedImagesFolder(folder);
+        motion::msg::Problems problems;
+        ASSERT_TRUE(first.prepare(t, b.source.get(), folder, false, &problems)) << describe(problems);
+        QObject::connect(&first, &GridMapRunner::nodeRead, &first, [&](int k) {
+            if (k == 11)  // the third reading of the reverse pass
+                first.abort();
+        });
+        ASSERT_TRUE(first.start());
+        waitFor([&] { return !first.isActive(); }, 120000);
+        ASSERT_EQ(first.state(), GridMapRunner::State::Stopped);
+        ASSERT_EQ(first.nodesRead(), 12);
+        gratingReversalYUm += truth.gratingReversalYUm;
+    }
+    // Every reading is in the log, each pass's by its node.
+    QFile log(QDir(folder).filePath(QStringLiteral("grid-map.run-log.jsonl")));
+    ASSERT_TRUE(log.open(QIODevice::ReadOnly));
+    const QByteArray lines = log.readAll();
+    EXPECT_EQ(lines.count("\"measured_x_mm\""), 12);
+    EXPECT_EQ(lines.count("\"pass\":\"reverse\""), 3) << lines.toStdString();
+    log.close();
+
+    ASSERT_TRUE(b.moveTo(50.3, 60.2));
+    GridMapRunner second(&b.session.client);
+    std::vector<int> readAgain;
+    QObject::connect(&second, &GridMapRunner::nodeRead, &second, [&](int k) { readAgain.push_back(k); });
+    TruthBothWays truth;
+    truth.watch(second, b, 9);
+    motion::msg::Message said;
+    b.run(second, t, folder, &said);
+    gratingReversalYUm += truth.gratingReversalYUm;
+    ASSERT_EQ(second.state(), GridMapRunner::State::Finished) << said;
+    EXPECT_EQ(readAgain, (std::vector<int>{12, 13, 14, 15, 16, 17}));
+    EXPECT_NEAR(second.startXMm(), 20.1, 0.1);
+    const auto map = second.result();
+    ASSERT_TRUE(map);
+    ASSERT_TRUE(map->figures.meanReversalYUm);
+    for (const auto& n : map->nodes)
+        EXPECT_TRUE(n.bidirectional()) << n.xMm << ", " << n.yMm;
+    // The readings before the stop and after it make one map: its mean reversal of Y, less
+    // the gratings' part, is the set backlash within a count and the camera (as above).
+    EXPECT_NEAR(-(*map->figures.meanReversalYUm - gratingReversalYUm), errorsOfThisTest().backlashYUm, 0.5 + 0.1);
+}
+
+TEST(CameraGridMapCli, BidirectionalIsAnOptionOrTheTestFilesPassesAndAnythingElseIsRefused)
+{
+    QTemporaryDir dir;
+    const auto example =
+        dev::files::accuracy::loadGridMapTestFile(QStringLiteral(BP_SOURCE_DIR "/resources/examples/stage-grid-bidirectional.grid-map-test.json"));
+    ASSERT_TRUE(example.ok()) << motion::msg::debugFormat(example.problems());
+    EXPECT_TRUE(example->bidirectional);
+    EXPECT_FALSE(dev::files::accuracy::loadGridMapTestFile(QStringLiteral(BP_SOURCE_DIR "/resources/examples/stage-grid-10mm.grid-map-test.json"))
+                     ->bidirectional)
+        << "a test that does not say is one way, as before";
+    // Written and read again.
+    const auto again = dev::files::accuracy::gridMapTestFromJson(dev::files::accuracy::gridMapTestToJson(*example), "again.json");
+    ASSERT_TRUE(again.ok());
+    EXPECT_TRUE(again->bidirectional);
+    // A pass that is neither, at its line and column.
+    const QString bad = dir.filePath(QStringLiteral("both.grid-map-test.json"));
+    QFile f(bad);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write("{\"schema\": \"benchpilot.grid-map-test\", \"version\": 1,\n"
+            " \"pitch_mm\": {\"x\": 10, \"y\": 10},\n"
+            " \"nodes\": {\"columns\": 3, \"rows\": 3},\n"
+            " \"passes\": \"both\"}\n");
+    f.close();
+    const QString out = dir.filePath(QStringLiteral("run"));
+    const auto r = runCliInProcess({QStringLiteral("--sim"), QStringLiteral("stage"), QStringLiteral("grid-map"), QStringLiteral("run"),
+                                    QStringLiteral("--test"), bad, QStringLiteral("--out"), out});
+    EXPECT_EQ(r.code, 1) << qPrintable(r.err);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("both.grid-map-test.json:4:"))) << qPrintable(r.err);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("bidirectional"))) << "it says what is allowed: " << qPrintable(r.err);
+    EXPECT_FALSE(QFileInfo::exists(out));
+    // The test file says the passes: --bidirectional beside it is refused.
+    const auto both = runCliInProcess({QStringLiteral("--sim"), QStringLiteral("stage"), QStringLiteral("grid-map"), QStringLiteral("run"),
+                                       QStringLiteral("--test"),
+                                       QStringLiteral(BP_SOURCE_DIR "/resources/examples/stage-grid-10mm.grid-map-test.json"),
+                                       QStringLiteral("--bidirectional"), QStringLiteral("--out"), out});
+    EXPECT_EQ(both.code, 1) << qPrintable(both.err);
+    EXPECT_TRUE(both.err.contains(QStringLiteral("--bidirectional"))) << qPrintable(both.err);
+    EXPECT_FALSE(QFileInfo::exists(out));
+    // A bidirectional grid whose reverse lead-in leaves the travel: 3 nodes every 10 mm
+    // from 80 mm end at 100 mm, and the lead-in above it at 100.05.
+    const auto far = runCliInProcess({QStringLiteral("--sim"), QStringLiteral("stage"), QStringLiteral("grid-map"), QStringLiteral("run"),
+                                      QStringLiteral("--pitch"), QStringLiteral("10"), QStringLiteral("--nodes"), QStringLiteral("3,3"),
+                                      QStringLiteral("--start"), QStringLiteral("80,10"), QStringLiteral("--bidirectional"),
+                                      QStringLiteral("--out"), out});
+    EXPECT_EQ(far.code, 1) << qPrintable(far.err);
+    EXPECT_TRUE(far.err.contains(QStringLiteral("--nodes"))) << qPrintable(far.err);
+    EXPECT_FALSE(QFileInfo::exists(out));
+}
+
 TEST(CameraGridMapCli, BadInputIsRefusedByFileLineAndColumnAndNothingIsWritten)
 {
     QTemporaryDir dir;
@@ -322,6 +531,37 @@ TEST(CameraGridMapCli, WritesTheReadingsAndTheResultWithFiguresAndNodes)
         EXPECT_TRUE(nodes.first().toObject().contains(QLatin1String(k))) << k;
     EXPECT_TRUE(QFileInfo::exists(QDir(out).filePath(QStringLiteral("grid-map.readings.csv"))));
     EXPECT_TRUE(QFileInfo::exists(QDir(out).filePath(QStringLiteral("grid-map.grid-map-result.json"))));
+}
+
+TEST(CameraGridMapCli, BidirectionalWritesEachReadingWithItsPassAndTheReversalInTheResultAndReport)
+{
+    QTemporaryDir dir;
+    const QString out = dir.filePath(QStringLiteral("both"));
+    const auto r = runProgram(binary("benchpilot-cli"),
+                              {QStringLiteral("--sim"), QStringLiteral("stage"), QStringLiteral("--json"), QStringLiteral("grid-map"),
+                               QStringLiteral("run"), QStringLiteral("--home"), QStringLiteral("--at"), QStringLiteral("X=20.1,Y=20"),
+                               QStringLiteral("--pitch"), QStringLiteral("10"), QStringLiteral("--nodes"), QStringLiteral("3,3"),
+                               QStringLiteral("--bidirectional"), QStringLiteral("--dwell"), QStringLiteral("0.05"),
+                               QStringLiteral("--time-scale"), QStringLiteral("20"), QStringLiteral("--out"), out},
+                              120000);
+    ASSERT_EQ(r.exitCode, 0) << r.describe();
+    const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+    const QJsonObject figures = o.value(QStringLiteral("figures")).toObject();
+    for (const char* k : {"max_reversal_um", "mean_reversal_x_um", "mean_reversal_y_um"})
+        EXPECT_TRUE(figures.value(QLatin1String(k)).isDouble()) << k << " in " << r.out.toStdString();
+    const QJsonArray nodes = o.value(QStringLiteral("nodes")).toArray();
+    ASSERT_EQ(nodes.size(), 9) << "one node a place, both directions in it";
+    for (const char* k : {"reversal_um", "forward_ex_um", "reverse_ey_um"})
+        EXPECT_TRUE(nodes.first().toObject().value(QLatin1String(k)).isDouble()) << k;
+    QFile csv(QDir(out).filePath(QStringLiteral("grid-map.readings.csv")));
+    ASSERT_TRUE(csv.open(QIODevice::ReadOnly));
+    const QByteArray readings = csv.readAll();
+    EXPECT_TRUE(readings.startsWith("node,pass,column,row,"));
+    EXPECT_EQ(readings.count(",forward,"), 9);
+    EXPECT_EQ(readings.count(",reverse,"), 9);
+    QFile pdf(QDir(out).filePath(QStringLiteral("grid-map.report.pdf")));
+    ASSERT_TRUE(pdf.open(QIODevice::ReadOnly));
+    EXPECT_TRUE(pdf.read(5).startsWith("%PDF-"));
 }
 
 TEST(CameraGridMapCli, TheReportShowsTheMapBeforeAndAfterSideBySide)

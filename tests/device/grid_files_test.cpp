@@ -128,6 +128,15 @@ TEST(GridFiles, TheExampleResultAndTableReadBackAsWritten)
     EXPECT_EQ(map->result.nodes.size(), 49u);
     ASSERT_TRUE(map->result.figures.maxReversalUm);
     EXPECT_NEAR(*map->result.figures.maxReversalUm, 2.5, 1e-9);  // √(1.5² + 2²)
+    // Read both ways: the mean reversal is −b per axis, and each node keeps both directions.
+    ASSERT_TRUE(map->result.figures.meanReversalXUm && map->result.figures.meanReversalYUm);
+    EXPECT_NEAR(*map->result.figures.meanReversalXUm, -1.5, 1e-9);
+    EXPECT_NEAR(*map->result.figures.meanReversalYUm, -2.0, 1e-9);
+    const auto& n = map->result.nodes.front();
+    ASSERT_TRUE(n.forwardExUm && n.reverseExUm);
+    EXPECT_NEAR(n.exUm, 0.5 * (*n.forwardExUm + *n.reverseExUm), 1e-9) << "the map is the mean of both directions";
+    // Written again, the same file.
+    EXPECT_EQ(gridMapResultToJson(*map), readExample("stage-example.grid-map-result.json"));
     const auto table = compensation2DFromJson(readExample("stage-example.compensation-2d.json"), "stage-example.compensation-2d.json");
     ASSERT_TRUE(table.ok()) << motion::msg::debugFormat(table.problems());
     EXPECT_EQ(table->table.columns, 7);

@@ -9,6 +9,8 @@
 #include "widgets/report/grid_map_painter.h"
 #include "widgets/wording/wording.h"
 
+#include <QCheckBox>
+#include <QComboBox>
 #include <QDir>
 #include <QEvent>
 #include <QFormLayout>
@@ -30,6 +32,12 @@ void GridMapView::setMaps(const std::optional<motion::metrology::GridMapResult>&
     update();
 }
 
+void GridMapView::setVectors(ui::report::GridVectors kind)
+{
+    m_kind = kind;
+    update();
+}
+
 void GridMapView::paintEvent(QPaintEvent*)
 {
     QPainter p(this);
@@ -45,8 +53,9 @@ void GridMapView::paintEvent(QPaintEvent*)
                    tr("No map yet: put the grid plate under the camera, a dot near the image centre, and run a grid map."));
         return;
     }
-    const double mag = ui::report::gridMagnification(maps);
-    const double colourMax = std::max(ui::report::gridLongestErrorUm(maps), 1e-3);
+    const bool reversal = m_kind == ui::report::GridVectors::Reversal;
+    const double mag = ui::report::gridMagnification(maps, m_kind);
+    const double colourMax = std::max(ui::report::gridLongestErrorUm(maps, m_kind), 1e-3);
     const int n = static_cast<int>(maps.size());
     const double w = width() / static_cast<double>(n);
     const int line = fontMetrics().height() + 2;
@@ -55,16 +64,24 @@ void GridMapView::paintEvent(QPaintEvent*)
         p.setPen(palette().color(QPalette::WindowText));
         p.drawText(QRectF(k * w + 6, 4, w - 12, line), Qt::AlignLeft | Qt::AlignVCenter,
                    isAfter ? tr("After: 2D table on") : tr("Before: compensation off"));
-        p.drawText(QRectF(k * w + 6, 4 + line, w - 12, line), Qt::AlignLeft | Qt::AlignVCenter,
-                   tr("RMS %1 µm").arg(QLocale().toString(maps[static_cast<std::size_t>(k)]->figures.rmsErrorUm, 'f', 2)));
+        const auto& f = maps[static_cast<std::size_t>(k)]->figures;
+        QString sub = tr("RMS %1 µm").arg(QLocale().toString(f.rmsErrorUm, 'f', 2));
+        if (reversal)
+            sub = f.meanReversalXUm && f.meanReversalYUm ? tr("mean reversal X %1 µm, Y %2 µm")
+                                                               .arg(QLocale().toString(*f.meanReversalXUm, 'f', 2), QLocale().toString(*f.meanReversalYUm, 'f', 2))
+                                                         : tr("read one way: no reversal");
+        else if (f.maxReversalUm)
+            sub = tr("RMS %1 µm, mean of both directions").arg(QLocale().toString(f.rmsErrorUm, 'f', 2));
+        p.drawText(QRectF(k * w + 6, 4 + line, w - 12, line), Qt::AlignLeft | Qt::AlignVCenter, sub);
         ui::report::drawGridMap(p, QRectF(k * w + 6, 2 * line + 8, w - 12, height() - 4 * line - 20), *maps[static_cast<std::size_t>(k)], mag,
-                                colourMax);
+                                colourMax, m_kind);
     }
     const double barW = std::min(220.0, width() * 0.45);
     ui::report::drawGridColourBar(p, QRectF(6, height() - 2 * line - 2, barW + 110, line * 0.5), colourMax);
     p.setPen(palette().color(QPalette::WindowText));
     p.drawText(QRectF(6, height() - line - 2, width() - 12, line), Qt::AlignLeft | Qt::AlignVCenter,
-               tr("arrows magnified %1×; colour: the error's length").arg(QLocale().toString(mag * 1000, 'f', 0)));
+               reversal ? tr("reversals (forward − reverse) magnified %1×; colour: their length").arg(QLocale().toString(mag * 1000, 'f', 0))
+                        : tr("arrows magnified %1×; colour: the error's length").arg(QLocale().toString(mag * 1000, 'f', 0)));
 }
 
 GridMapPanel::GridMapPanel(QWidget* parent) : QWidget(parent)
@@ -95,6 +112,15 @@ GridMapPanel::GridMapPanel(QWidget* parent) : QWidget(parent)
     m_nodesLabel = new QLabel;
     form->addRow(m_pitchLabel, m_pitch);
     form->addRow(m_nodesLabel, nodes);
+    m_bidirectional = new QCheckBox;
+    m_bidirectional->setObjectName(QStringLiteral("gridMapBidirectional"));
+    form->addRow(m_bidirectional);
+    m_show = new QComboBox;
+    m_show->setObjectName(QStringLiteral("gridMapShow"));
+    m_show->addItem(QString(), static_cast<int>(ui::report::GridVectors::Error));
+    m_show->addItem(QString(), static_cast<int>(ui::report::GridVectors::Reversal));
+    m_showLabel = new QLabel;
+    form->addRow(m_showLabel, m_show);
     left->addLayout(form);
     m_run = new QPushButton;
     m_run->setObjectName(QStringLiteral("gridMapRun"));
@@ -113,7 +139,7 @@ GridMapPanel::GridMapPanel(QWidget* parent) : QWidget(parent)
     m_cannotKnow = new QLabel;
     m_cannotKnow->setWordWrap(true);
     m_cannotKnow->setStyleSheet(QStringLiteral("color: #555"));
-    m_figures = new QTableWidget(8, 2);
+    m_figures = new QTableWidget(11, 2);
     m_figures->setObjectName(QStringLiteral("gridMapFigures"));
     m_figures->verticalHeader()->setVisible(true);
     m_figures->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -132,6 +158,8 @@ GridMapPanel::GridMapPanel(QWidget* parent) : QWidget(parent)
     connect(m_abort, &QPushButton::clicked, this, &GridMapPanel::abort);
     connect(m_compensate, &QPushButton::clicked, this, [this] { compensate(); });
     connect(m_disable, &QPushButton::clicked, this, &GridMapPanel::disableTable);
+    connect(m_show, qOverload<int>(&QComboBox::currentIndexChanged), this,
+            [this] { m_view->setVectors(static_cast<ui::report::GridVectors>(m_show->currentData().toInt())); });
     retranslateUi();
     updateUi();
 }
@@ -148,6 +176,15 @@ void GridMapPanel::setInstrument(dev::Instrument* instrument)
         return;  // the run keeps its instrument
     m_instrument = instrument;
     updateUi();
+}
+
+void GridMapPanel::setBidirectional(bool both) { m_bidirectional->setChecked(both); }
+
+void GridMapPanel::showVectors(ui::report::GridVectors kind)
+{
+    const int k = m_show->findData(static_cast<int>(kind));
+    if (k >= 0)
+        m_show->setCurrentIndex(k);
 }
 
 void GridMapPanel::setGrid(double pitchMm, int columns, int rows)
@@ -180,6 +217,7 @@ bool GridMapPanel::run()
     test.pitchXMm = test.pitchYMm = *m_pitch->value();
     test.columns = static_cast<int>(*m_columns->value());
     test.rows = static_cast<int>(*m_rows->value());
+    test.bidirectional = m_bidirectional->isChecked();
     const QString base = QDir(m_folder ? m_folder() : QDir::homePath()).filePath(m_tableEnabled ? QStringLiteral("grid-map-after")
                                                                                               : QStringLiteral("grid-map"));
     const QString folder = dev::files::accuracy::nextRunFolder(base);
@@ -303,12 +341,20 @@ QString GridMapPanel::stateText() const
     const int visited = m_runner->nodesRead() + m_runner->nodesFailed();
     switch (m_runner->state()) {
     case dev::jobs::GridMapRunner::State::Running:
+        if (m_runner->test().bidirectional)
+            return tr("Mapping both ways: %1 of %2 readings").arg(visited).arg(m_runner->totalNodes());
         return tr("Mapping: %1 of %2 nodes").arg(visited).arg(m_runner->totalNodes());
     case dev::jobs::GridMapRunner::State::Stopped:
+        if (m_runner->test().bidirectional)
+            return tr("Stopped after %1 of %2 readings (each node both ways).").arg(visited).arg(m_runner->totalNodes());
         return tr("Stopped after %1 of %2 nodes.").arg(visited).arg(m_runner->totalNodes());
     case dev::jobs::GridMapRunner::State::Finished:
-        return m_runner->nodesFailed() > 0 ? tr("Finished: %1 of %2 nodes without a reading.").arg(m_runner->nodesFailed()).arg(m_runner->totalNodes())
-                                           : tr("Finished: %1 nodes.").arg(m_runner->totalNodes());
+        if (m_runner->nodesFailed() > 0)
+            return m_runner->test().bidirectional
+                       ? tr("Finished: %1 of %2 readings (each node both ways) failed.").arg(m_runner->nodesFailed()).arg(m_runner->totalNodes())
+                       : tr("Finished: %1 of %2 nodes without a reading.").arg(m_runner->nodesFailed()).arg(m_runner->totalNodes());
+        return m_runner->test().bidirectional ? tr("Finished: %1 nodes, each read both ways.").arg(m_runner->totalNodes() / 2)
+                                              : tr("Finished: %1 nodes.").arg(m_runner->totalNodes());
     case dev::jobs::GridMapRunner::State::Idle: break;
     }
     return tr("Ready.");
@@ -324,11 +370,21 @@ void GridMapPanel::showMaps()
         const double values[] = {f.scaleXPpm, f.scaleYPpm, f.squarenessUrad, f.straightnessXUm, f.straightnessYUm, f.rmsErrorUm, f.maxErrorUm, f.rmsResidualUm};
         for (int r = 0; r < 8; ++r)
             m_figures->setItem(r, column, new QTableWidgetItem(QLocale().toString(values[r], 'f', r == 2 ? 1 : 2)));
+        const std::optional<double> reversal[] = {f.maxReversalUm, f.meanReversalXUm, f.meanReversalYUm};
+        for (int r = 0; r < 3; ++r)
+            m_figures->setItem(8 + r, column, new QTableWidgetItem(reversal[r] ? QLocale().toString(*reversal[r], 'f', 2) : QStringLiteral("—")));
     };
     if (m_before)
         fill(0, m_before->figures);
     if (m_after)
         fill(1, m_after->figures);
+    // The reversal's rows and the choice of arrows only when a map shown was read both ways.
+    const bool reversal = (m_before && m_before->figures.maxReversalUm) || (m_after && m_after->figures.maxReversalUm);
+    for (int r = 8; r < 11; ++r)
+        m_figures->setRowHidden(r, !reversal);
+    if (!reversal)
+        showVectors(ui::report::GridVectors::Error);
+    m_show->setEnabled(reversal);
 }
 
 void GridMapPanel::updateUi()
@@ -339,7 +395,8 @@ void GridMapPanel::updateUi()
     m_abort->setEnabled(running);
     m_compensate->setEnabled(!running && !m_busyCompensating && m_before && !m_tableEnabled);
     m_disable->setEnabled(!running && !m_busyCompensating && m_tableEnabled);
-    for (QWidget* w : {static_cast<QWidget*>(m_pitch), static_cast<QWidget*>(m_columns), static_cast<QWidget*>(m_rows)})
+    for (QWidget* w : {static_cast<QWidget*>(m_pitch), static_cast<QWidget*>(m_columns), static_cast<QWidget*>(m_rows),
+                       static_cast<QWidget*>(m_bidirectional)})
         w->setEnabled(!running);
     m_state->setText(stateText());
 }
@@ -360,13 +417,22 @@ void GridMapPanel::retranslateUi()
     m_pitch->setHelp(tr("Distance between the nodes visited, a whole multiple of the plate's dot pitch"));
     m_columns->setFieldName(tr("Columns"));
     m_rows->setFieldName(tr("Rows"));
+    m_bidirectional->setText(tr("Both directions"));
+    m_bidirectional->setToolTip(tr("Read every node twice: approached from −X −Y, then again in reverse order from +X +Y. The map is the "
+                                   "mean of the two; each node gets its reversal (forward − reverse), whose mean along X and Y is the "
+                                   "lost motion a 2D table cannot correct."));
+    m_showLabel->setText(tr("Arrows"));
+    m_show->setItemText(0, tr("errors"));
+    m_show->setItemText(1, tr("reversals"));
+    m_show->setToolTip(tr("What the map's arrows and colours show: each node's error, or its reversal (forward − reverse)"));
     m_abort->setText(tr("Abort"));
     m_compensate->setText(tr("Fit, upload and enable the 2D table"));
     m_disable->setText(tr("Disable the 2D table"));
     m_cannotKnow->setText(tr("What the camera cannot know by itself: a pixel size calibrated by moving this same stage carries the "
                              "stage's scale error into the image. The scales are those of the plate's certified pitch."));
     m_figures->setVerticalHeaderLabels({tr("scale X (ppm)"), tr("scale Y (ppm)"), tr("squareness (µrad)"), tr("straightness X (µm)"),
-                                        tr("straightness Y (µm)"), tr("error RMS (µm)"), tr("error max (µm)"), tr("residual RMS (µm)")});
+                                        tr("straightness Y (µm)"), tr("error RMS (µm)"), tr("error max (µm)"), tr("residual RMS (µm)"),
+                                        tr("reversal max (µm)"), tr("mean reversal X (µm)"), tr("mean reversal Y (µm)")});
     showMaps();
     updateUi();
 }

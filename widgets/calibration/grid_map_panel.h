@@ -5,10 +5,13 @@
 // of a pixel. The map is drawn as the report draws it (the error vectors magnified over
 // a colour map of their length) with its figures beside it; a 2D table fitted from it is
 // uploaded and enabled on the stage with one button, and the next map, run with the
-// table enabled, stands beside the first: before and after, on one colour scale.
+// table enabled, stands beside the first: before and after, on one colour scale. A map
+// read both ways is their mean; its reversal at each node is one choice away (the
+// arrows show the errors or the reversals) and its figures join the table.
 #include "device/client/instrument.h"
 #include "device/jobs/accuracy/grid_map_runner.h"
 #include "motion/metrology/grid/grid_map.h"
+#include "widgets/report/grid_map_painter.h"
 
 #include <QPointer>
 #include <QWidget>
@@ -17,6 +20,8 @@
 #include <memory>
 #include <optional>
 
+class QCheckBox;
+class QComboBox;
 class QLabel;
 class QPushButton;
 class QTableWidget;
@@ -37,6 +42,8 @@ class GridMapView : public QWidget {
 public:
     using QWidget::QWidget;
     void setMaps(const std::optional<motion::metrology::GridMapResult>& before, const std::optional<motion::metrology::GridMapResult>& after);
+    void setVectors(ui::report::GridVectors kind);
+    ui::report::GridVectors vectors() const { return m_kind; }
     QSize sizeHint() const override { return {520, 300}; }
 
 protected:
@@ -44,6 +51,7 @@ protected:
 
 private:
     std::optional<motion::metrology::GridMapResult> m_before, m_after;
+    ui::report::GridVectors m_kind = ui::report::GridVectors::Error;
 };
 
 class GridMapPanel : public QWidget {
@@ -57,7 +65,11 @@ public:
     /// Where the runs go: a new "grid-map", "grid-map-2", … under this folder.
     void setFolderSource(std::function<QString()> folder) { m_folder = std::move(folder); }
     void setGrid(double pitchMm, int columns, int rows);
-
+    /// Read every node both ways (forward from −X −Y, then in reverse order from +X +Y).
+    void setBidirectional(bool both);
+    /// What the map's arrows show; Reversal only when a map shown was read both ways.
+    void showVectors(ui::report::GridVectors kind);
+    GridMapView* view() const { return m_view; }
     /// Maps the stage from the dot under the camera; false (with a problem) when it cannot start.
     bool run();
     void abort();
@@ -96,6 +108,9 @@ private:
 
     QLabel* m_pitchLabel = nullptr;
     QLabel* m_nodesLabel = nullptr;
+    QLabel* m_showLabel = nullptr;
+    QCheckBox* m_bidirectional = nullptr;
+    QComboBox* m_show = nullptr;
     NumberField* m_pitch = nullptr;
     NumberField* m_columns = nullptr;
     NumberField* m_rows = nullptr;

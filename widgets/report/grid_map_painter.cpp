@@ -38,9 +38,20 @@ GridFrame frameOf(const motion::metrology::GridMapResult& map)
     return f;
 }
 
-double lengthUm(const motion::metrology::GridMapNode& n) { return std::hypot(n.exUm, n.eyUm); }
+double lengthUm(const motion::metrology::GridMapNode& n, GridVectors kind)
+{
+    const QPointF v = gridVectorUm(n, kind);
+    return std::hypot(v.x(), v.y());
+}
 
 } // namespace
+
+QPointF gridVectorUm(const motion::metrology::GridMapNode& n, GridVectors kind)
+{
+    if (kind == GridVectors::Reversal)
+        return n.bidirectional() ? QPointF(*n.reversalXUm, *n.reversalYUm) : QPointF();
+    return {n.exUm, n.eyUm};
+}
 
 QColor gridErrorColour(double lengthUm, double maxUm)
 {
@@ -54,30 +65,31 @@ QColor gridErrorColour(double lengthUm, double maxUm)
     return t < 0.5 ? mix(a, b, t * 2) : mix(b, c, (t - 0.5) * 2);
 }
 
-double gridLongestErrorUm(const std::vector<const motion::metrology::GridMapResult*>& maps)
+double gridLongestErrorUm(const std::vector<const motion::metrology::GridMapResult*>& maps, GridVectors kind)
 {
     double longest = 0;
     for (const auto* m : maps)
         if (m)
             for (const auto& n : m->nodes)
-                longest = std::max(longest, lengthUm(n));
+                longest = std::max(longest, lengthUm(n, kind));
     return longest;
 }
 
-double gridMagnification(const std::vector<const motion::metrology::GridMapResult*>& maps)
+double gridMagnification(const std::vector<const motion::metrology::GridMapResult*>& maps, GridVectors kind)
 {
     double pitch = 1e9;
     for (const auto* m : maps)
         if (m && !m->nodes.empty())
             pitch = std::min(pitch, frameOf(*m).pitchMm);
-    const double longest = gridLongestErrorUm(maps);
+    const double longest = gridLongestErrorUm(maps, kind);
     if (longest <= 0 || pitch >= 1e9)
         return 1;
     // Half a pitch (mm) for the longest error (µm): mm of drawing per µm of error.
     return 0.5 * pitch / longest;
 }
 
-void drawGridMap(QPainter& p, const QRectF& rect, const motion::metrology::GridMapResult& map, double magnification, double colourMaxUm)
+void drawGridMap(QPainter& p, const QRectF& rect, const motion::metrology::GridMapResult& map, double magnification, double colourMaxUm,
+                 GridVectors kind)
 {
     if (map.nodes.empty())
         return;
@@ -93,7 +105,7 @@ void drawGridMap(QPainter& p, const QRectF& rect, const motion::metrology::GridM
     const double half = f.pitchMm / 2 * scale;
     p.setPen(Qt::NoPen);
     for (const auto& n : map.nodes) {
-        p.setBrush(gridErrorColour(lengthUm(n), colourMaxUm));
+        p.setBrush(gridErrorColour(lengthUm(n, kind), colourMaxUm));
         const QPointF c = at(n.xMm, n.yMm);
         p.drawRect(QRectF(c.x() - half, c.y() - half, 2 * half, 2 * half));
     }
@@ -107,7 +119,8 @@ void drawGridMap(QPainter& p, const QRectF& rect, const motion::metrology::GridM
     p.setPen(QPen(QColor(20, 20, 20), lineW, Qt::SolidLine, Qt::RoundCap));
     for (const auto& n : map.nodes) {
         const QPointF a = at(n.xMm, n.yMm);
-        const QPointF b = at(n.xMm + n.exUm * magnification, n.yMm + n.eyUm * magnification);
+        const QPointF e = gridVectorUm(n, kind);
+        const QPointF b = at(n.xMm + e.x() * magnification, n.yMm + e.y() * magnification);
         const QPointF d = b - a;
         const double len = std::hypot(d.x(), d.y());
         if (len < 1e-9)

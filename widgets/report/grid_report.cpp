@@ -10,6 +10,7 @@
 #include <QCoreApplication>
 #include <QLocale>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ui::report {
@@ -38,6 +39,19 @@ std::vector<QStringList> figureRows(const GridReportInput& in)
     row(tr("error RMS (µm)"), [](const motion::metrology::GridMapFigures& f) { return f.rmsErrorUm; }, 2);
     row(tr("error max (µm)"), [](const motion::metrology::GridMapFigures& f) { return f.maxErrorUm; }, 2);
     row(tr("residual RMS (µm)"), [](const motion::metrology::GridMapFigures& f) { return f.rmsResidualUm; }, 2);
+    // The reversal, when a map on the page was read both ways; "—" for one read one way.
+    if (!in.result.figures.maxReversalUm && !(both && in.before->figures.maxReversalUm))
+        return rows;
+    auto reversal = [&](const QString& name, std::optional<double> motion::metrology::GridMapFigures::*of) {
+        QStringList r{name};
+        if (both)
+            r << (in.before->figures.*of ? fixed(*(in.before->figures.*of), 2) : QStringLiteral("—"));
+        r << (in.result.figures.*of ? fixed(*(in.result.figures.*of), 2) : QStringLiteral("—"));
+        rows.push_back(r);
+    };
+    reversal(tr("reversal max (µm)"), &motion::metrology::GridMapFigures::maxReversalUm);
+    reversal(tr("mean reversal X (µm)"), &motion::metrology::GridMapFigures::meanReversalXUm);
+    reversal(tr("mean reversal Y (µm)"), &motion::metrology::GridMapFigures::meanReversalYUm);
     return rows;
 }
 
@@ -50,7 +64,14 @@ bool renderGrid(const QString& path, const GridReportInput& in)
     Page page(doc.painter());
     page.title(in.title);
     QStringList setup{tr("Instrument: %1").arg(in.instrument), tr("Reference: %1").arg(ui::words::text(in.source))};
-    if (in.test)
+    if (in.test && in.test->bidirectional)
+        setup << tr("%1 × %2 nodes every %3 × %4 on a grid plate of %5 pitch, read both ways: each row approached from below, then "
+                    "every node again in reverse order from above. The map and its figures are the mean of the two directions.")
+                     .arg(in.test->columns)
+                     .arg(in.test->rows)
+                     .arg(ui::words::number(in.test->pitchXMm, motion::msg::Unit::Mm), ui::words::number(in.test->pitchYMm, motion::msg::Unit::Mm),
+                          ui::words::number(in.test->platePitchMm, motion::msg::Unit::Mm));
+    else if (in.test)
         setup << tr("%1 × %2 nodes every %3 × %4 on a grid plate of %5 pitch, each row approached from below")
                      .arg(in.test->columns)
                      .arg(in.test->rows)
@@ -67,27 +88,45 @@ bool renderGrid(const QString& path, const GridReportInput& in)
     std::vector<const motion::metrology::GridMapResult*> maps{&in.result};
     if (in.before)
         maps.insert(maps.begin(), &*in.before);
-    const double mag = gridMagnification(maps);
-    const double colourMax = std::max(gridLongestErrorUm(maps), 1e-3);
+    // A map read both ways gets a second row: its reversal at every node.
+    const bool reversal = std::any_of(maps.begin(), maps.end(), [](const auto* m) { return m->figures.maxReversalUm.has_value(); });
     const double width = page.contentWidth() / static_cast<double>(maps.size());
-    const double size = std::min(width - 4, page.room() - 22);
+    const double rowRoom = reversal ? (page.room() - 44) / 2 : page.room() - 22;
+    const double size = std::min(width - 4, rowRoom);
     QPainter& p = doc.painter();
-    p.setFont(pageFont(p, 8, true));
-    p.setPen(Qt::black);
-    for (std::size_t k = 0; k < maps.size(); ++k) {
-        const QRectF cell(page.left() + k * width, page.y(), width - 4, 6);
-        p.drawText(cell, Qt::AlignLeft | Qt::AlignVCenter,
-                   maps.size() == 1 ? tr("Error map") : (k == 0 ? tr("Before: compensation off") : tr("After: the 2D table enabled")));
-        drawGridMap(p, QRectF(page.left() + k * width, page.y() + 6, width - 4, size), *maps[k], mag, colourMax);
+    auto drawRow = [&](GridVectors kind) {
+        const double mag = gridMagnification(maps, kind);
+        const double colourMax = std::max(gridLongestErrorUm(maps, kind), 1e-3);
+        p.setFont(pageFont(p, 8, true));
+        p.setPen(Qt::black);
+        for (std::size_t k = 0; k < maps.size(); ++k) {
+            const QRectF cell(page.left() + k * width, page.y(), width - 4, 6);
+            const QString which = maps.size() == 1 ? QString() : (k == 0 ? tr("Before: compensation off") : tr("After: the 2D table enabled"));
+            const QString what = kind == GridVectors::Reversal ? tr("Reversal map") : tr("Error map");
+            p.drawText(cell, Qt::AlignLeft | Qt::AlignVCenter, which.isEmpty() ? what : tr("%1 · %2").arg(what, which));
+            if (kind == GridVectors::Reversal && !maps[k]->figures.maxReversalUm)
+                p.drawText(QRectF(page.left() + k * width, page.y() + 6, width - 4, size), Qt::AlignCenter, tr("read one way: no reversal"));
+            else
+                drawGridMap(p, QRectF(page.left() + k * width, page.y() + 6, width - 4, size), *maps[k], mag, colourMax, kind);
+        }
+        page.setY(page.y() + 8 + size);
+        p.setFont(pageFont(p, 7, false));
+        drawGridColourBar(p, QRectF(page.left(), page.y(), page.contentWidth() * 0.5, 3), colourMax);
+        page.setY(page.y() + 5);
+        page.paragraph(kind == GridVectors::Reversal
+                           ? tr("Arrows: each node's reversal (forward − reverse), magnified %1×; colour: its length. Its mean along X and "
+                                "along Y is the axes' lost motion, which a 2D table cannot correct.")
+                                 .arg(fixed(mag * 1000, 0))
+                           : tr("Arrows: each node's error with the plate's placement removed, magnified %1×; colour: the error's length, "
+                                "one scale for every map on the page.")
+                                 .arg(fixed(mag * 1000, 0)),
+                       7.5);
+    };
+    drawRow(GridVectors::Error);
+    if (reversal) {
+        page.gap(2);
+        drawRow(GridVectors::Reversal);
     }
-    page.setY(page.y() + 8 + size);
-    p.setFont(pageFont(p, 7, false));
-    drawGridColourBar(p, QRectF(page.left(), page.y(), page.contentWidth() * 0.5, 3), colourMax);
-    page.setY(page.y() + 5);
-    page.paragraph(tr("Arrows: each node's error with the plate's placement removed, magnified %1×; colour: the error's length, one scale for "
-                      "every map on the page.")
-                       .arg(fixed(mag * 1000, 0)),
-                   7.5);
     page.footer(tr("BenchPilot grid map · %1 · %2").arg(in.title, in.created), doc.pageNumber());
     return doc.finish();
 }

@@ -12,10 +12,14 @@ namespace {
 /// Wall-clock interval between status readings while dwelling.
 constexpr int kGridPollMs = 10;
 
-std::string nodeLine(int k, const GridNodeReading& n)
+/// The log names a reading by its node on the grid and its pass, not by the order it
+/// was taken in: a log says what it holds without the plan beside it.
+std::string nodeLine(const motion::metrology::GridMapStop& s, int columns, const GridNodeReading& n)
 {
     dev::files::json::Value v = dev::files::json::Value::object();
-    v.set("node", static_cast<double>(k));
+    v.set("node", static_cast<double>(s.node(columns)));
+    if (s.reverse)
+        v.set("pass", dev::files::json::Value(std::string("reverse")));
     if (n.read) {
         v.set("measured_x_mm", n.measuredXMm);
         v.set("measured_y_mm", n.measuredYMm);
@@ -122,7 +126,7 @@ bool GridMapRunner::start(motion::msg::Message* why)
             return refuse(motion::msg::make("accuracy.run.not_homed",
                                             {motion::msg::verbatim("axis", QString(m_instrument->identity().axes[a].letter).toStdString())}));
     ++m_generation;
-    m_firstOfSession = true;
+    m_previous = -1;
     // A new session tries again the nodes that failed in the last one.
     for (auto& n : m_nodes)
         if (!n.read)
@@ -234,12 +238,17 @@ void GridMapRunner::nextNode()
     }
     m_current = k;
     const auto& s = m_stops[static_cast<std::size_t>(k)];
-    // From below on both axes: the lost motion is then the same at every node.
-    if (s.leadIn || m_firstOfSession)
-        moveTo(s.xMm - m_test.approachMm, s.yMm - m_test.approachMm, Phase::LeadIn);
-    else
+    // From one side on both axes (below in the forward pass, above in the reverse): the
+    // lost motion is then the same at every node of a pass. Within a row only X moves,
+    // on towards the next node, so Y keeps the side of the row's lead-in. A node that
+    // does not follow the last one visited (the first of a session, one tried again
+    // after nodes already read) is led in whatever its place in the row.
+    if (s.leadIn || k != m_previous + 1) {
+        const double a = s.approachSide() * m_test.approachMm;
+        moveTo(s.xMm + a, s.yMm + a, Phase::LeadIn);
+    } else
         moveTo(s.xMm, s.yMm, Phase::Target);
-    m_firstOfSession = false;
+    m_previous = k;
 }
 
 void GridMapRunner::moveTo(double xMm, double yMm, Phase phase)
@@ -372,13 +381,13 @@ void GridMapRunner::onReading(int k, const TakeResult& r)
         n.failure = failure.id;
         n.image = failure.text("file");
     }
-    if (!appendLog(nodeLine(k, n)))
+    if (!appendLog(nodeLine(m_stops[static_cast<std::size_t>(k)], m_test.columns, n)))
         return;  // appendLog stopped the run with its reason
     m_nodes[static_cast<std::size_t>(k)] = n;
     m_phase = Phase::None;
     if (!n.read) {
         const auto& s = m_stops[static_cast<std::size_t>(k)];
-        const motion::msg::Message why = motion::msg::make("grid.run.node_failed", {motion::msg::integer("node", k + 1),
+        const motion::msg::Message why = motion::msg::make("grid.run.node_failed", {motion::msg::integer("node", s.node(m_test.columns) + 1),
                                                                                     motion::msg::integer("column", s.column + 1),
                                                                                     motion::msg::integer("row", s.row + 1),
                                                                                     motion::msg::nested("cause", failure)});

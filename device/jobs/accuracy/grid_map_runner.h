@@ -4,14 +4,16 @@
 // two-axis readings): it first finds the dot nearest the image centre where the stage
 // stands (unless the test gives the start), then visits the nodes row by row, each row
 // led in from below on both axes, waits for arrival and the dwell on the device's clock,
-// and takes a reading that says where the work point truly was against the plate.
+// and takes a reading that says where the work point truly was against the plate. A
+// bidirectional test then reads every node again in reverse order, led in from above.
 //
-// Every node read, or failed, is appended to the run log (grid-map.run-log.jsonl in the
-// run's folder) before the next. A dot the camera cannot find is that node's failure
-// (the source keeps the image): the run goes on, or stops when the test says so. A run
-// that stopped for any reason (abort, E-stop, a refused move, a lost link, a crash)
-// continues from its log with the same start and never reads a node twice; the nodes
-// that failed are tried again. When every node has a reading the map is analysed
+// Every reading of either pass, or its failure, is appended to the run log
+// (grid-map.run-log.jsonl in the run's folder) before the next node. A dot the camera
+// cannot find is that node's failure (the source keeps the image): the run goes on, or
+// stops when the test says so. A run that stopped for any reason (abort, E-stop, a
+// refused move, a lost link, a crash), in either pass, continues from its log with the
+// same start and never reads a node of either pass twice; the readings that failed are
+// tried again. When every node has a reading the map is analysed
 // (motion/metrology/grid/grid_map.h) and the readings CSV and the result JSON are written
 // beside the log.
 //
@@ -33,7 +35,7 @@
 
 namespace dev::jobs {
 
-/// One node of a run, as read (or not).
+/// One reading of a run (a node in one pass), as read (or not).
 struct GridNodeReading {
     bool read = false;
     double measuredXMm = 0, measuredYMm = 0;  ///< where the work point truly was against the plate
@@ -71,6 +73,8 @@ public:
     const std::vector<GridNodeReading>& nodes() const { return m_nodes; }
     int nodesRead() const;
     int nodesFailed() const;
+    /// Readings in the run: the nodes, twice when bidirectional. stops(), nodes(),
+    /// progress() and the node signals count in readings, in the order they are taken.
     int totalNodes() const { return static_cast<int>(m_stops.size()); }
 
     /// The map of every node read: nullopt until every node has a reading.
@@ -133,7 +137,7 @@ private:
     State m_state = State::Idle;
     Phase m_phase = Phase::None;
     int m_current = -1;                ///< the node being worked on
-    bool m_firstOfSession = true;      ///< led in whatever its place in the row
+    int m_previous = -1;               ///< the stop visited last in this session (-1: none yet)
     quint64 m_generation = 0;          ///< callbacks of an aborted step are ignored
     unsigned m_waitingAxes = 0;
     bool m_moveAccepted = false;

@@ -37,8 +37,22 @@ struct GridRunLog {
     std::string fingerprint;
     bool haveStart = false;
     double startX = 0, startY = 0;
-    std::vector<std::pair<int, GridNodeReading>> nodes;
+    struct Line {
+        int node = 0;
+        bool reverse = false;
+        GridNodeReading reading;
+    };
+    std::vector<Line> nodes;
 };
+
+/// Where a reading of `node` in its pass stands in planGridMap's order (-1: not in the plan).
+int stopIndexOf(const motion::metrology::GridMapTest& t, int node, bool reverse)
+{
+    const int n = t.columns * t.rows;
+    if (node < 0 || node >= n || (reverse && !t.bidirectional))
+        return -1;
+    return reverse ? 2 * n - 1 - node : node;
+}
 
 GridRunLog parseGridLog(const std::string& text)
 {
@@ -96,7 +110,15 @@ GridRunLog parseGridLog(const std::string& text)
             if (const auto* im = v.find("image"); im && im->isString())
                 n.image = im->asString();
         }
-        out.nodes.emplace_back(static_cast<int>(node->asNumber()), n);
+        bool reverse = false;
+        if (const auto* pass = v.find("pass")) {
+            if (!pass->isString() || (pass->asString() != "reverse" && pass->asString() != "forward")) {
+                out.badLine = lineNo;
+                return out;
+            }
+            reverse = pass->asString() == "reverse";
+        }
+        out.nodes.push_back({static_cast<int>(node->asNumber()), reverse, n});
     }
     return out;
 }
@@ -230,9 +252,11 @@ bool GridMapRunner::openLog(bool restart, motion::msg::Problems* problems)
             if (m_haveStart) {
                 m_stops = motion::metrology::planGridMap(m_test, m_startXMm, m_startYMm);
                 m_nodes.assign(m_stops.size(), {});
-                for (const auto& [k, n] : read.nodes)
+                for (const auto& line : read.nodes) {
+                    const int k = stopIndexOf(m_test, line.node, line.reverse);
                     if (k >= 0 && k < totalNodes() && !m_nodes[static_cast<std::size_t>(k)].read)
-                        m_nodes[static_cast<std::size_t>(k)] = n;  // a later reading of a failed node wins
+                        m_nodes[static_cast<std::size_t>(k)] = line.reading;  // a later reading of a failed node wins
+                }
             }
         } else {
             for (int n = 1;; ++n) {
@@ -291,10 +315,21 @@ motion::metrology::GridMapInput GridMapRunner::input() const
         in.xMm.push_back(m_startXMm + i * m_test.pitchXMm);
     for (int j = 0; j < m_test.rows; ++j)
         in.yMm.push_back(m_startYMm + j * m_test.pitchYMm);
+    const std::size_t n = in.xMm.size() * in.yMm.size();
+    in.exUm.assign(n, 0.0);
+    in.eyUm.assign(n, 0.0);
+    if (m_test.bidirectional) {
+        in.reverseExUm.assign(n, 0.0);
+        in.reverseEyUm.assign(n, 0.0);
+    }
     for (std::size_t k = 0; k < m_stops.size() && k < m_nodes.size(); ++k) {
-        const auto& n = m_nodes[k];
-        in.exUm.push_back(n.read ? (n.measuredXMm - m_stops[k].xMm) * 1e3 : 0.0);
-        in.eyUm.push_back(n.read ? (n.measuredYMm - m_stops[k].yMm) * 1e3 : 0.0);
+        const auto& s = m_stops[k];
+        const auto& r = m_nodes[k];
+        const auto node = static_cast<std::size_t>(s.node(m_test.columns));
+        if (!r.read || node >= n)
+            continue;
+        (s.reverse ? in.reverseExUm : in.exUm)[node] = (r.measuredXMm - s.xMm) * 1e3;
+        (s.reverse ? in.reverseEyUm : in.eyUm)[node] = (r.measuredYMm - s.yMm) * 1e3;
     }
     return in;
 }
@@ -328,13 +363,15 @@ void GridMapRunner::writeResults()
     };
     using dev::files::accuracy::csvField;
     using dev::files::accuracy::csvNumber;
-    // Every node, read or not: a failed one says why and where its image is.
-    std::string csv = "node,column,row,x_mm,y_mm,measured_x_mm,measured_y_mm,ex_um,ey_um,failure,image\n";
+    // Every reading, taken or not: a failed one says why and where its image is.
+    // The pass says from which side the node was approached: forward from −X −Y,
+    // reverse from +X +Y.
+    std::string csv = "node,pass,column,row,x_mm,y_mm,measured_x_mm,measured_y_mm,ex_um,ey_um,failure,image\n";
     for (std::size_t k = 0; k < m_stops.size() && k < m_nodes.size(); ++k) {
         const auto& s = m_stops[k];
         const auto& n = m_nodes[k];
-        csv += std::to_string(k + 1) + "," + std::to_string(s.column + 1) + "," + std::to_string(s.row + 1) + "," + csvNumber(s.xMm) + ","
-               + csvNumber(s.yMm) + ",";
+        csv += std::to_string(s.node(m_test.columns) + 1) + "," + (s.reverse ? "reverse" : "forward") + "," + std::to_string(s.column + 1) + ","
+               + std::to_string(s.row + 1) + "," + csvNumber(s.xMm) + "," + csvNumber(s.yMm) + ",";
         if (n.read)
             csv += csvNumber(n.measuredXMm) + "," + csvNumber(n.measuredYMm) + "," + csvNumber((n.measuredXMm - s.xMm) * 1e3) + ","
                    + csvNumber((n.measuredYMm - s.yMm) * 1e3) + ",,";

@@ -132,16 +132,25 @@ motion::msg::Problems validate(const GridMapInput& in)
     return out;
 }
 
+double GridMapNode::reversalUm() const { return bidirectional() ? std::hypot(*reversalXUm, *reversalYUm) : 0.0; }
+
 std::optional<GridMapResult> analyseGridMap(const GridMapInput& in)
 {
     if (hasErrors(validate(in)))
         return std::nullopt;
     const std::size_t nx = in.columns(), ny = in.rows(), n = nx * ny;
+    const bool reverse = !in.reverseExUm.empty();
     GridMapResult r;
-    r.placement = fitPlacement(in.xMm, in.yMm, in.exUm, in.eyUm);
+    // Both directions: the map is their mean (ISO 230-2's mean bidirectional position),
+    // so the placement and every figure are of where the stage is on average.
     std::vector<double> ex = in.exUm, ey = in.eyUm;
+    if (reverse)
+        for (std::size_t k = 0; k < n; ++k) {
+            ex[k] = 0.5 * (in.exUm[k] + in.reverseExUm[k]);
+            ey[k] = 0.5 * (in.eyUm[k] + in.reverseEyUm[k]);
+        }
+    r.placement = fitPlacement(in.xMm, in.yMm, ex, ey);
     removePlacement(in.xMm, in.yMm, r.placement, ex, ey);
-
     GridMapFigures& f = r.figures;
     double slopeExAlongX = 0, slopeEyAlongX = 0, pvEyAlongX = 0;
     for (std::size_t j = 0; j < ny; ++j) {
@@ -177,15 +186,19 @@ std::optional<GridMapResult> analyseGridMap(const GridMapInput& in)
             kCol[i] += (ey[j * nx + i] - slopeEyAlongY * (in.yMm[j] - ym)) / static_cast<double>(ny);
         }
 
-    const bool reverse = !in.reverseExUm.empty();
-    std::vector<double> rex, rey;
+    std::vector<double> fex, fey, rex, rey;
     if (reverse) {
+        // The plate stays where it lay between the passes: one placement comes off both
+        // directions, so a lost motion that is the same everywhere stays in the reversal.
+        fex = in.exUm;
+        fey = in.eyUm;
         rex = in.reverseExUm;
         rey = in.reverseEyUm;
-        // The plate stays where it lay between the passes: the forward pass's placement
-        // comes off both, so a lost motion that is the same everywhere stays in the reversal.
+        removePlacement(in.xMm, in.yMm, r.placement, fex, fey);
         removePlacement(in.xMm, in.yMm, r.placement, rex, rey);
         f.maxReversalUm = 0.0;
+        f.meanReversalXUm = 0.0;
+        f.meanReversalYUm = 0.0;
     }
     double sumE2 = 0, sumR2 = 0;
     r.nodes.reserve(n);
@@ -204,9 +217,15 @@ std::optional<GridMapResult> analyseGridMap(const GridMapInput& in)
             f.maxErrorUm = std::max(f.maxErrorUm, len);
             sumR2 += node.residualXUm * node.residualXUm + node.residualYUm * node.residualYUm;
             if (reverse) {
-                node.reversalXUm = ex[k] - rex[k];
-                node.reversalYUm = ey[k] - rey[k];
-                f.maxReversalUm = std::max(*f.maxReversalUm, std::hypot(*node.reversalXUm, *node.reversalYUm));
+                node.forwardExUm = fex[k];
+                node.forwardEyUm = fey[k];
+                node.reverseExUm = rex[k];
+                node.reverseEyUm = rey[k];
+                node.reversalXUm = fex[k] - rex[k];
+                node.reversalYUm = fey[k] - rey[k];
+                f.maxReversalUm = std::max(*f.maxReversalUm, node.reversalUm());
+                *f.meanReversalXUm += *node.reversalXUm / static_cast<double>(n);
+                *f.meanReversalYUm += *node.reversalYUm / static_cast<double>(n);
             }
             r.nodes.push_back(node);
         }

@@ -22,9 +22,15 @@
 //    across the grid) is taken off: the part of the map no per-axis line or
 //    straightness explains (a pitch error that is not straight, a twist).
 //
-// Bidirectional passes (the grid visited again in reverse) give a reversal vector
-// per node: forward − reverse, the forward pass's placement removed from both (the
-// plate does not move between them).
+// Bidirectional passes (the grid visited again in reverse order, every node approached
+// from +X and +Y instead of −X and −Y) give a reversal vector per node: forward −
+// reverse, ISO 230-2's B_i = x̄↑ − x̄↓ carried to two axes. The map itself, its placement
+// and every figure above are then of the mean of the two directions, as ISO 230-2 takes
+// the mean bidirectional position: a reversal is split evenly and no longer shifts
+// the map. The mean reversal along X and along Y over the nodes is the axes' lost
+// motion as the work point sees it (backlash b = −B̄, as the per-axis compensation
+// takes it); a 2D table holds one correction per place whatever the direction, so it
+// cannot correct that part.
 //
 // Plain C++ + Eigen; no Qt.
 #include "motion/metrology/problem.h"
@@ -63,14 +69,24 @@ struct GridMapFigures {
     double rmsErrorUm = 0;
     double maxErrorUm = 0;
     double rmsResidualUm = 0;
-    std::optional<double> maxReversalUm;  ///< bidirectional maps only
+    std::optional<double> maxReversalUm;    ///< the longest reversal vector; bidirectional maps only
+    std::optional<double> meanReversalXUm;  ///< B̄ along X over the nodes (forward − reverse)
+    std::optional<double> meanReversalYUm;
 };
 
 struct GridMapNode {
     double xMm = 0, yMm = 0;
-    double exUm = 0, eyUm = 0;                  ///< after the placement is removed
+    /// After the placement is removed; the mean of both directions in a bidirectional map.
+    double exUm = 0, eyUm = 0;
     double residualXUm = 0, residualYUm = 0;    ///< after the decomposition is removed
+    /// Bidirectional maps only: forward − reverse.
     std::optional<double> reversalXUm, reversalYUm;
+    /// Bidirectional maps only: each direction's error after the placement is removed.
+    std::optional<double> forwardExUm, forwardEyUm, reverseExUm, reverseEyUm;
+
+    bool bidirectional() const { return reversalXUm && reversalYUm; }
+    /// The reversal vector's length (0 for a one-way map).
+    double reversalUm() const;
 };
 
 struct GridMapResult {
@@ -85,7 +101,8 @@ struct GridMapResult {
 /// accuracy.value_not_finite.
 motion::msg::Problems validate(const GridMapInput& input);
 
-/// The placement fitted out and the decomposition; nullopt when validate() finds an error.
+/// The placement fitted out and the decomposition (of the mean of both directions when
+/// the reverse pass is there); nullopt when validate() finds an error.
 std::optional<GridMapResult> analyseGridMap(const GridMapInput& input);
 
 /// The least-squares placement (offset and rotation) of a set of error vectors on the

@@ -52,7 +52,7 @@ motion::msg::Problems validateTravel(const GridMapTest& t, double startX, double
 {
     motion::msg::Problems out;
     auto check = [&](const char* path, const char* axis, double first, double pitch, int count, double lo, double hi) {
-        const double low = first - t.approachMm, high = first + pitch * (count - 1);
+        const double low = first - t.approachMm, high = first + pitch * (count - 1) + (t.bidirectional ? t.approachMm : 0.0);
         constexpr double kSlackMm = 1e-6;
         if (low < lo - kSlackMm)
             out.push_back(motion::msg::error(path, motion::msg::make("grid.leaves_travel", {motion::msg::verbatim("axis", axis),
@@ -73,7 +73,11 @@ std::vector<GridMapStop> planGridMap(const GridMapTest& t, double startX, double
     std::vector<GridMapStop> out;
     for (int j = 0; j < t.rows; ++j)
         for (int i = 0; i < t.columns; ++i)
-            out.push_back({i, j, startX + i * t.pitchXMm, startY + j * t.pitchYMm, i == 0});
+            out.push_back({i, j, startX + i * t.pitchXMm, startY + j * t.pitchYMm, i == 0, false});
+    if (t.bidirectional)
+        for (int j = t.rows - 1; j >= 0; --j)
+            for (int i = t.columns - 1; i >= 0; --i)
+                out.push_back({i, j, startX + i * t.pitchXMm, startY + j * t.pitchYMm, i == t.columns - 1, true});
     return out;
 }
 

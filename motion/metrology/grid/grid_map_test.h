@@ -7,6 +7,11 @@
 // before each row and before the first node of a session), so the axes' lost motion is
 // one constant offset of the whole map, which the plate's placement takes out.
 //
+// A bidirectional test then visits the nodes again in reverse order, every node
+// approached from above on both axes (the lead-in overshoots by `approachMm` in +X and
+// +Y before each row and comes back), so each node is read once from −X −Y and once
+// from +X +Y: the difference is the reversal at that node (motion/metrology/grid/grid_map.h).
+//
 // Plain C++; no Qt.
 #include "motion/metrology/problem.h"
 
@@ -29,6 +34,7 @@ struct GridMapTest {
     double dwellS = 0.2;           ///< wait after arriving, on the device's clock
     double approachMm = 0.05;      ///< the lead-in from below before a row
     bool stopOnFailure = false;    ///< a dot not found stops the run (else it is that node's failure and the run goes on)
+    bool bidirectional = false;    ///< a reverse pass after the forward one, every node approached from +X +Y
 };
 
 /// The test alone: 3–101 nodes a side, pitches that are whole multiples of the plate's
@@ -39,17 +45,25 @@ struct GridMapTest {
 motion::msg::Problems validate(const GridMapTest& test);
 
 /// The test against the travel, from its first node (startXMm, startYMm): every node and
-/// lead-in within [min, max] per axis. Message grid.leaves_travel {axis, end, limit}
+/// lead-in (below the first node; above the last too when bidirectional) within [min, max] per axis. Message grid.leaves_travel {axis, end, limit}
 /// at "nodes.columns" (X) or "nodes.rows" (Y).
 motion::msg::Problems validateTravel(const GridMapTest& test, double startXMm, double startYMm, double minXMm, double maxXMm,
                                      double minYMm, double maxYMm);
 
-/// One node as the runner visits it: row by row, +X within a row.
+/// One node as the runner visits it: row by row, +X within a row; in the reverse pass
+/// the same nodes the other way round, −X within a row from the last row down.
 struct GridMapStop {
     int column = 0, row = 0;
     double xMm = 0, yMm = 0;
-    bool leadIn = false;  ///< the first of its row: approached from (x − a, y − a)
+    bool leadIn = false;   ///< the first of its row: approached from (x − a, y − a), reverse (x + a, y + a)
+    bool reverse = false;  ///< read in the reverse pass, approached from +X +Y
+
+    int node(int columns) const { return row * columns + column; }
+    /// The side each axis is approached from: −1 below, +1 above.
+    double approachSide() const { return reverse ? 1.0 : -1.0; }
 };
+/// Every reading of the test in the order taken: columns × rows stops, twice when bidirectional
+/// (the reverse pass's stop k is node columns·rows − 1 − k).
 std::vector<GridMapStop> planGridMap(const GridMapTest& test, double startXMm, double startYMm);
 
 } // namespace motion::metrology

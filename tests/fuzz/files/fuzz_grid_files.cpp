@@ -81,7 +81,19 @@ void checkGridMapTest(std::string_view input)
         fuzzfiles::fail("a written grid map test does not read back: " + motion::msg::debugFormat(again.problems()));
     if (gridMapTestToJson(*again) != once)
         fuzzfiles::fail("write → read → write changed the grid map test");
-    (void)motion::metrology::planGridMap(*r, 0, 0);
+    // The plan reads every node once per pass, and the reverse pass from the other side.
+    const auto plan = motion::metrology::planGridMap(*r, 0, 0);
+    const std::size_t nodes = static_cast<std::size_t>(r->columns) * static_cast<std::size_t>(r->rows);
+    if (plan.size() != nodes * (r->bidirectional ? 2 : 1))
+        fuzzfiles::fail("the plan does not read every node once per pass");
+    std::vector<int> seen(2 * nodes, 0);
+    for (const auto& s : plan) {
+        const int node = s.node(r->columns);
+        if (node < 0 || static_cast<std::size_t>(node) >= nodes || s.approachSide() != (s.reverse ? 1.0 : -1.0))
+            fuzzfiles::fail("a stop of the plan is off the grid or approached from the wrong side");
+        if (++seen[static_cast<std::size_t>(node) + (s.reverse ? nodes : 0)] != 1)
+            fuzzfiles::fail("the plan reads a node twice in one pass");
+    }
 }
 
 } // namespace

@@ -48,6 +48,8 @@ std::string gridMapResultToJson(const GridMapResultFile& f)
     fig.set("max_error_um", r.figures.maxErrorUm);
     fig.set("rms_residual_um", r.figures.rmsResidualUm);
     fig.set("max_reversal_um", gridOrNull(r.figures.maxReversalUm));
+    fig.set("mean_reversal_x_um", gridOrNull(r.figures.meanReversalXUm));
+    fig.set("mean_reversal_y_um", gridOrNull(r.figures.meanReversalYUm));
     root.set("figures", fig);
     Value nodes = Value::array();
     for (const GridMapNode& n : r.nodes) {
@@ -60,6 +62,14 @@ std::string gridMapResultToJson(const GridMapResultFile& f)
         v.set("residual_y_um", n.residualYUm);
         v.set("reversal_x_um", gridOrNull(n.reversalXUm));
         v.set("reversal_y_um", gridOrNull(n.reversalYUm));
+        // Each direction's own error, only in a bidirectional map (ex, ey are their mean).
+        if (n.bidirectional() && n.forwardExUm && n.forwardEyUm && n.reverseExUm && n.reverseEyUm) {
+            v.set("reversal_um", n.reversalUm());
+            v.set("forward_ex_um", *n.forwardExUm);
+            v.set("forward_ey_um", *n.forwardEyUm);
+            v.set("reverse_ex_um", *n.reverseExUm);
+            v.set("reverse_ey_um", *n.reverseEyUm);
+        }
         nodes.push(v);
     }
     root.set("nodes", nodes);
@@ -105,8 +115,11 @@ GridMapResultRead gridMapResultFromJson(std::string_view text, std::string_view 
         g.maxErrorUm = fo.number("max_error_um", true, 0, kGridAny).value_or(0);
         g.rmsResidualUm = fo.number("rms_residual_um", true, 0, kGridAny).value_or(0);
         g.maxReversalUm = gridNumberOrNull(fo, "max_reversal_um");
+        g.meanReversalXUm = gridNumberOrNull(fo, "mean_reversal_x_um");
+        g.meanReversalYUm = gridNumberOrNull(fo, "mean_reversal_y_um");
         fo.refuseUnknown({"scale_x_ppm", "scale_y_ppm", "squareness_urad", "straightness_x_um", "straightness_y_um",
-                          "rms_error_um", "max_error_um", "rms_residual_um", "max_reversal_um"});
+                          "rms_error_um", "max_error_um", "rms_residual_um", "max_reversal_um", "mean_reversal_x_um",
+                          "mean_reversal_y_um"});
     }
     std::vector<const Value*> nodeValues;
     if (const Value* list = o.get("nodes", Value::Type::Array, true))
@@ -121,8 +134,13 @@ GridMapResultRead gridMapResultFromJson(std::string_view text, std::string_view 
             n.residualYUm = no.number("residual_y_um", false, -kGridAny, kGridAny).value_or(0);
             n.reversalXUm = gridNumberOrNull(no, "reversal_x_um");
             n.reversalYUm = gridNumberOrNull(no, "reversal_y_um");
-            no.refuseUnknown({"x_mm", "y_mm", "ex_um", "ey_um", "residual_x_um", "residual_y_um", "reversal_x_um",
-                              "reversal_y_um"});
+            n.forwardExUm = gridNumberOrNull(no, "forward_ex_um");
+            n.forwardEyUm = gridNumberOrNull(no, "forward_ey_um");
+            n.reverseExUm = gridNumberOrNull(no, "reverse_ex_um");
+            n.reverseEyUm = gridNumberOrNull(no, "reverse_ey_um");
+            (void)gridNumberOrNull(no, "reversal_um");  // the reversal's length, for a reader without a calculator
+            no.refuseUnknown({"x_mm", "y_mm", "ex_um", "ey_um", "residual_x_um", "residual_y_um", "reversal_x_um", "reversal_y_um",
+                              "reversal_um", "forward_ex_um", "forward_ey_um", "reverse_ex_um", "reverse_ey_um"});
             if (x && y && ex && ey) {
                 n.xMm = *x;
                 n.yMm = *y;

@@ -2,8 +2,9 @@
 // A grid plate's map as a result file: schema "benchpilot.grid-map-result", version 1
 // (docs/accuracy.md, "Grid map result file"): the plate's placement, the figures of
 // the decomposition and a row per node (its nominal stage position, its error once
-// the placement is removed, the residual and, for a map read both ways, the
-// reversal). What `compensation fit-2d` reads.
+// the placement is removed, the residual and, for a map read both ways, the error of
+// each direction and the reversal, with ex and ey their mean). What `compensation
+// fit-2d` reads.
 #include "motion/checked.h"
 #include "device/files/accuracy/file_problem.h"
 #include "motion/metrology/grid/grid_map.h"

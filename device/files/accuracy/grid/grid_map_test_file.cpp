@@ -38,6 +38,10 @@ std::string gridMapTestToJson(const GridMapTest& t)
     root.set("dwell_s", t.dwellS);
     root.set("approach_mm", t.approachMm);
     root.set("on_failure", Value(std::string(t.stopOnFailure ? "stop" : "go-on")));
+    // Written only when bidirectional: a one-way test stays the file every reader of
+    // version 1 has read.
+    if (t.bidirectional)
+        root.set("passes", Value(std::string("bidirectional")));
     return dev::files::json::write(root);
 }
 
@@ -93,9 +97,11 @@ GridMapTestRead gridMapTestFromJson(std::string_view text, std::string_view file
         t.approachMm = *v;
     if (auto v = o.oneOf("on_failure", false, {"go-on", "stop"}))
         t.stopOnFailure = *v == "stop";
+    if (auto v = o.oneOf("passes", false, {"forward", "bidirectional"}))
+        t.bidirectional = *v == "bidirectional";
     (void)o.string("note", false);  // free text for the record
     o.refuseUnknown({"schema", "version", "name", "pitch_mm", "nodes", "start_mm", "plate_pitch_mm", "feed_mm_s", "dwell_s",
-                     "approach_mm", "on_failure", "note"});
+                     "approach_mm", "on_failure", "passes", "note"});
     addJsonProblems(p, fileName, problems);
     addModelProblems(motion::metrology::validate(t), root, fileName, problems);
     return GridMapTestRead::from(t, std::move(problems));

@@ -1,8 +1,9 @@
 #pragma once
 // A grid map's test as a file people keep: schema "benchpilot.grid-map-test", version 1
 // (docs/accuracy.md, "Grid map test file"): the node pitch and count, where it starts
-// (or the dot under the camera), the plate's pitch, feed, dwell, lead-in and what a dot
-// not found does. Every problem at once with file, line, column and field; what the test
+// (or the dot under the camera), the plate's pitch, feed, dwell, lead-in, what a dot
+// not found does and the passes (forward only, or bidirectional: an optional field
+// added within version 1, so every version-1 file reads as it did). Every problem at once with file, line, column and field; what the test
 // cannot know alone (the travel it will run on) is placed in the same file by
 // placeGridMapTestProblems when the instrument is known. Writing is atomic.
 #include "device/files/accuracy/file_problem.h"
