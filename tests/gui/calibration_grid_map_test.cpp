@@ -70,12 +70,22 @@ TEST(CalibrationGridMap, MapsTheStageWithTheCameraAndShowsBeforeAndAfterSideBySi
     ASSERT_TRUE(compensate->isEnabled());
     QTest::mouseClick(compensate, Qt::LeftButton);
     ASSERT_TRUE(waitFor([&] { return panel->tableEnabled(); }, 30000)) << said.join(QLatin1Char('\n')).toStdString();
-    stage->move({{0, 10.1}, {1, 10.0}}, false);
-    ASSERT_TRUE(waitFor([&] { return !stage->status().anyMoving() && std::abs(stage->status().axes[1].measured - 10.0) < 0.01; }, 30000));
+    const double beforeX = panel->runner()->startXMm(), beforeY = panel->runner()->startYMm();
+    // The operator looks elsewhere before asking for the after map (found by hand: the after
+    // map was read from wherever the stage stood, a grid the table had never seen).
+    stage->move({{0, 37.0}, {1, 33.0}}, false);
+    ASSERT_TRUE(waitFor([&] { return !stage->status().anyMoving() && std::abs(stage->status().axes[1].measured - 33.0) < 0.01; }, 30000));
+    panel->setGrid(20, 4, 3);
+    QTest::mouseClick(run, Qt::LeftButton);
+    ASSERT_FALSE(panel->runner()->isActive()) << "an after map on another grid than the before's";
+    EXPECT_TRUE(said.back().contains(QStringLiteral("3 × 3 nodes"))) << said.back().toStdString();
+    panel->setGrid(20, 3, 3);
     QTest::mouseClick(run, Qt::LeftButton);
     ASSERT_TRUE(panel->runner() && panel->runner()->isActive());
     ASSERT_TRUE(waitFor([&] { return !panel->runner()->isActive(); }, 120000));
     ASSERT_TRUE(panel->after()) << said.join(QLatin1Char('\n')).toStdString();
+    EXPECT_DOUBLE_EQ(panel->runner()->startXMm(), beforeX) << "the after map starts where the before map did";
+    EXPECT_DOUBLE_EQ(panel->runner()->startYMm(), beforeY);
     EXPECT_TRUE(panel->before()) << "the before stays beside the after";
     EXPECT_EQ(figures->columnCount(), 2);
     EXPECT_LT(panel->after()->figures.rmsErrorUm * 5, panel->before()->figures.rmsErrorUm)

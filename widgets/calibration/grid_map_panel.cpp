@@ -218,6 +218,18 @@ bool GridMapPanel::run()
     test.columns = static_cast<int>(*m_columns->value());
     test.rows = static_cast<int>(*m_rows->value());
     test.bidirectional = m_bidirectional->isChecked();
+    if (m_tableEnabled && m_beforeTest) {
+        // The after map compares node by node only on the before map's grid, from its start.
+        const motion::metrology::GridMapTest& b = *m_beforeTest;
+        if (b.pitchXMm != test.pitchXMm || b.columns != test.columns || b.rows != test.rows)
+            return refuse(tr("The after map reads the before map's grid: pitch %1 mm, %2 × %3 nodes. Set those, or disable the 2D table "
+                             "to start a new before map.")
+                              .arg(QLocale().toString(b.pitchXMm))
+                              .arg(b.columns)
+                              .arg(b.rows));
+        test.startXMm = b.startXMm;
+        test.startYMm = b.startYMm;
+    }
     const QString base = QDir(m_folder ? m_folder() : QDir::homePath()).filePath(m_tableEnabled ? QStringLiteral("grid-map-after")
                                                                                               : QStringLiteral("grid-map"));
     const QString folder = dev::files::accuracy::nextRunFolder(base);
@@ -241,6 +253,7 @@ bool GridMapPanel::run()
     motion::msg::Message why;
     if (!m_runner->start(&why))
         return refuse(ui::words::text(why));
+    m_runningTest = test;
     updateUi();
     return true;
 }
@@ -261,6 +274,9 @@ void GridMapPanel::onFinished()
         } else {
             m_before = map;
             m_after.reset();
+            m_beforeTest = m_runningTest;
+            m_beforeTest->startXMm = m_runner->startXMm();
+            m_beforeTest->startYMm = m_runner->startYMm();
         }
         emit notice(tr("Grid map written to %1.").arg(QDir::toNativeSeparators(m_runner->folder())));
     }

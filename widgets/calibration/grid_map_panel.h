@@ -103,6 +103,10 @@ private:
     std::unique_ptr<dev::camera::DotReadingSource> m_source;
     std::unique_ptr<dev::jobs::GridMapRunner> m_runner;
     std::optional<motion::metrology::GridMapResult> m_before, m_after;
+    /// The before map's grid with its start: the after map reads these same nodes,
+    /// wherever the stage stands when it is asked for.
+    std::optional<motion::metrology::GridMapTest> m_beforeTest;
+    motion::metrology::GridMapTest m_runningTest;
     bool m_tableEnabled = false;
     bool m_busyCompensating = false;
 
