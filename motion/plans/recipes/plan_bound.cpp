@@ -127,14 +127,20 @@ double planBoundS(const RecipePlan& plan, const Deck& deck, const StartState& st
                 // clearance, each stretch at no more than Z's top speed. Z's way down and
                 // back up is counted already (here and as the next visit's rise); the
                 // plunger adds what they cannot hide.
+                // A tip that stays down (for what follows in the same well) hides it behind
+                // the way down alone.
+                const bool staysDown = visit.leaveZMm >= op.depthZMm - kBoundEps;
                 const PlanOp* next = i + 1 < plan.ops.size() && plan.ops[i + 1].visitMoves > 0 ? &plan.ops[i + 1] : nullptr;
                 const double upTo = next ? std::min(visit.leaveZMm, next->clearZMm) : visit.leaveZMm;
-                const double below = moveTimeS({{&deck.p, visit.pumpDeltaUl}}, visit.pumpSpeed)
-                    + (std::max(0.0, visit.liquidZMm - op.clearZMm) + std::max(0.0, visit.liquidZMm - upTo)) / deck.z.maxSpeed;
-                const double hidden = reachS(deck.z, std::max(0.0, op.depthZMm - op.clearZMm)) + reachS(deck.z, std::max(0.0, op.depthZMm - upTo));
+                double below = moveTimeS({{&deck.p, visit.pumpDeltaUl}}, visit.pumpSpeed) + std::max(0.0, visit.liquidZMm - op.clearZMm) / deck.z.maxSpeed;
+                double hidden = reachS(deck.z, std::max(0.0, op.depthZMm - op.clearZMm));
+                if (!staysDown) {
+                    below += std::max(0.0, visit.liquidZMm - upTo) / deck.z.maxSpeed;
+                    hidden += reachS(deck.z, std::max(0.0, op.depthZMm - upTo));
+                    pendingZ = visit.leaveZMm;
+                    pending = true;
+                }
                 t += std::max(0.0, below - hidden);
-                pendingZ = visit.leaveZMm;
-                pending = true;
             }
         }
         for (std::size_t k = static_cast<std::size_t>(std::max(0, op.visitMoves)); k < op.moves.size(); ++k) {

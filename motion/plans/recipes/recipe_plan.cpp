@@ -460,18 +460,18 @@ void Planner::goIntoBlended(PlanOp& op, const Place& pl)
     op.visitMoves = static_cast<int>(op.moves.size());
 }
 
-bool Planner::pumpInsideArch(PlanOp& op, const Place& pl, double delta, double speed)
+bool Planner::pumpInsideArch(PlanOp& op, const Place& pl, double delta, double speed, bool stayDown)
 {
     if (m_r.travel.mode != TravelMode::Arched || !m_c.deck.archedMoves || !m_c.deck.archPump || !pl.w || op.moves.empty())
         return false;
     MachineMove& m = op.moves.back();
     const double liquid = pl.topZMm;  // below the rim, inside the opening: what leaves the tip lands in the well
-    const double leaveZ = m_safeZ;
+    const double leaveZ = stayDown ? pl.depthZMm : m_safeZ;
     // Not when the arch does not move (back into the well the tip is still down in).
-    if (!m.arch || m.durationS <= 0 || !m_lastArch.down || liquid < m_lastArch.topZ - kEps || liquid > pl.depthZMm + kEps || leaveZ > liquid + kEps)
+    if (!m.arch || m.durationS <= 0 || !m_lastArch.down || liquid < m_lastArch.topZ - kEps || liquid > pl.depthZMm + kEps || (!stayDown && leaveZ > liquid + kEps))
         return false;
     const auto plunger = moveProfile({{&m_c.deck.p, delta}}, speed);
-    const auto up = moveProfile({{&m_c.deck.z, leaveZ - pl.depthZMm}}, m.zSpeed);
+    const auto up = stayDown ? std::nullopt : moveProfile({{&m_c.deck.z, leaveZ - pl.depthZMm}}, m.zSpeed);
     motion::ArchPumpParts parts;
     parts.plunger = plunger ? &*plunger : nullptr;
     parts.liquidMm = liquid - m_lastArch.topZ;

@@ -70,7 +70,7 @@ void Planner::dispenseAt(int step, const Place& pl, double vol, double speed, do
     PlanOp& op = newOp(step, StepType::Dispense, &pl, vol);
     goInto(op, pl);
     // A trailing air gap sits at the tip: it leaves first, with this dispense.
-    const bool inArch = mayFold && touchMm <= 0 && pumpInsideArch(op, pl, -(vol + m_air), speed);
+    const bool inArch = touchMm <= 0 && pumpInsideArch(op, pl, -(vol + m_air), speed, !mayFold);
     if (!inArch)
         pump(op, -(vol + m_air), speed);
     m_air = 0;
@@ -79,7 +79,7 @@ void Planner::dispenseAt(int step, const Place& pl, double vol, double speed, do
         travelTo(op, {pl.at.x + dir.x, pl.at.y + dir.y}, MoveKind::Touch);
         travelTo(op, pl.at, MoveKind::Touch);
     }
-    if (!inArch)
+    if (!inArch || !mayFold)
         leave(op);
     m_liquid -= vol;
     if (!pl.well.empty()) {

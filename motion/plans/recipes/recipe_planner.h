@@ -97,9 +97,10 @@ private:
 
     /// A dispense on a device that runs the plunger inside an arched move (Deck::archPump):
     /// the op's arch into `pl`'s well also pushes `delta` out while the tip is below the
-    /// well's top and rises to the travel height after it. False (nothing changed) where
-    /// it cannot: not arched, a station, no way down.
-    bool pumpInsideArch(PlanOp& op, const Place& pl, double delta, double speed);
+    /// well's top and rises to the travel height after it (`stayDown`: the tip stays at the
+    /// depth, for what follows there). False (nothing changed) where it cannot: not
+    /// arched, a station, no way down.
+    bool pumpInsideArch(PlanOp& op, const Place& pl, double delta, double speed, bool stayDown = false);
 
     /// The end of a visit: the tip up to the travel height; remembers the op for a depart.
     void leave(PlanOp& op);
@@ -127,7 +128,7 @@ private:
     void aspirateAt(int step, const Place& pl, double vol, double speed, const std::string& volPath, bool* reported);
 
     /// `mayFold` false: the tip stays down for what follows here (a disposal volume returned
-    /// to the source the next round draws from), so the plunger does not ride the arch.
+    /// to the source the next round draws from): the plunger rides the arch's way down only.
     void dispenseAt(int step, const Place& pl, double vol, double speed, double touchMm, bool mayFold = true);
 
     void planStep(int i);
