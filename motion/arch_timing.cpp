@@ -22,7 +22,8 @@ double timeToCoverS(const Profile& p, double s)
     return hi;
 }
 
-ArchTiming archTiming(const Profile* rise, const Profile* xy, const Profile* down, double departMm, double approachMm)
+ArchTiming archTiming(const Profile* rise, const Profile* xy, const Profile* down, double departMm, double approachMm,
+                      const ArchPumpParts& pump)
 {
     ArchTiming t;
     const double riseS = rise ? rise->duration() : 0.0;
@@ -32,7 +33,17 @@ ArchTiming archTiming(const Profile* rise, const Profile* xy, const Profile* dow
     t.xyStartS = xy ? std::max(0.0, riseS - timeToCoverS(*xy, std::max(0.0, departMm))) : riseS;
     // Z leaves the clearance no earlier than XY enters the approach circle, nor before it got there.
     t.downStartS = std::max(riseS, xy ? t.xyStartS + timeToCoverS(*xy, d - std::max(0.0, approachMm)) : riseS);
-    t.durationS = std::max({riseS, t.xyStartS + xyS, t.downStartS + (down ? down->duration() : 0.0)});
+    const double downEndS = t.downStartS + (down ? down->duration() : 0.0);
+    t.durationS = std::max({riseS, t.xyStartS + xyS, downEndS});
+    t.pumpStartS = t.leaveStartS = downEndS;
+    if (pump.plunger) {
+        t.pumpStartS = t.downStartS + (down ? timeToCoverS(*down, pump.liquidMm) : 0.0);
+        const double pumpEndS = t.pumpStartS + pump.plunger->duration();
+        t.leaveStartS = std::max(downEndS, pumpEndS - (pump.leave ? timeToCoverS(*pump.leave, pump.leaveLiquidMm) : 0.0));
+        t.durationS = std::max(t.durationS, pumpEndS);
+    }
+    if (pump.leave)
+        t.durationS = std::max(t.durationS, t.leaveStartS + pump.leave->duration());
     return t;
 }
 

@@ -46,6 +46,11 @@ QJsonObject moveJson(const motion::plates::MachineMove& m)
             o.insert(QStringLiteral("depart_mm"), r6(m.departMm));
             o.insert(QStringLiteral("approach_mm"), r6(m.approachMm));
         }
+        if (m.archPump) {  // the plunger inside the well, below its rim; then up to leave_z_mm
+            o.insert(QStringLiteral("pump_ul"), r6(m.pumpDeltaUl));
+            o.insert(QStringLiteral("liquid_z_mm"), r6(m.liquidZMm));
+            o.insert(QStringLiteral("leave_z_mm"), r6(m.leaveZMm));
+        }
         break;
     case motion::plates::MoveKind::Pump: o.insert(QStringLiteral("pump_ul"), r6(m.pumpDeltaUl)); break;
     case motion::plates::MoveKind::Dwell: o.insert(QStringLiteral("seconds"), m.seconds); break;

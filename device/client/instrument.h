@@ -82,9 +82,15 @@ public:
     /// within `departMm` of its start when Z gets there, and Z starts down once XY is
     /// within `approachMm` of its target. Speeds in mm/s, 0 = the axes' default. X, Y and
     /// Z each end with MotionDone (Z once, at the bottom).
+    /// With `pump` (the device's HELLO bit kCapArchPump; refused without it): the plunger
+    /// moves `pumpUl` (relative, µL/s `pumpSpeed`, 0 = default) once the way down has
+    /// passed `liquidZMm`, and Z then rises to `leaveZMm`, passing `liquidZMm` again no
+    /// earlier than the plunger stops; P ends with MotionDone, Z at the top of that rise.
     struct ArchMove {
         double xMm = 0, yMm = 0, clearZMm = 0, zMm = 0, departMm = 0, approachMm = 0;
         double xySpeed = 0, zSpeed = 0;
+        bool pump = false;
+        double pumpUl = 0, pumpSpeed = 0, liquidZMm = 0, leaveZMm = 0;
     };
     virtual void archMove(const ArchMove& move, Callback done = {});
     virtual void jogStep(int axis, double delta, double speed = 0, Callback done = {}) = 0;

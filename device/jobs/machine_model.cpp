@@ -33,8 +33,10 @@ motion::plates::Deck deckWithDeviceMotion(motion::plates::Deck deck, const dev::
 {
     // An identified device blends arched travel only when its HELLO says so (a GRBL
     // controller, an older firmware: in legs); not connected, the reference firmware's.
-    if (!identity.axes.isEmpty())
+    if (!identity.axes.isEmpty()) {
         deck.archedMoves = (identity.protocolCapabilities & dev::proto::kCapArchMove) != 0;
+        deck.archPump = deck.archedMoves && (identity.protocolCapabilities & dev::proto::kCapArchPump) != 0;
+    }
     const std::pair<char, motion::plates::AxisMotion*> axes[] = {{'X', &deck.x}, {'Y', &deck.y}, {'Z', &deck.z}, {'P', &deck.p}};
     for (const auto& [letter, motion] : axes) {
         const int i = identity.axisIndex(QLatin1Char(letter));

@@ -92,6 +92,8 @@ RecipeRunner::RecipeRunner(dev::Instrument* client, QObject* parent) : QObject(p
             there = at('Z', m.zMm);
         else if (m.kind == MoveKind::Pump)
             there = at('P', m_pumpUl + m.pumpDeltaUl);
+        else if (m.archPump)
+            there = at('X', m.xMm) && at('Y', m.yMm) && at('Z', m.leaveZMm) && at('P', m_pumpUl + m.pumpDeltaUl);
         else
             there = at('X', m.xMm) && at('Y', m.yMm) && (!m.withZ || at('Z', m.zMm));
         if (!there || st.anyMoving()) {
@@ -200,7 +202,7 @@ bool RecipeRunner::preflight(motion::msg::Message* error) const
                 *error = motion::msg::make("recipe.run.z_beyond_limits", {what, recipeMm("z", m.zMm), recipeMm("min", limits[iz].min), recipeMm("max", limits[iz].max)});
                 return false;
             }
-            if (m.kind == MoveKind::Pump) {
+            if (m.kind == MoveKind::Pump || m.archPump) {
                 p += m.pumpDeltaUl;
                 pMin = std::min(pMin, p);
                 pMax = std::max(pMax, p);
@@ -360,6 +362,10 @@ void RecipeRunner::nextMove()
     }
     while (m_move < static_cast<int>(op.moves.size())) {
         const MachineMove& m = op.moves[static_cast<std::size_t>(m_move)];
+        if (m.archPump && !canArchPump()) {
+            archPumpApart();
+            continue;
+        }
         if (m.arch && !m_client->can(dev::Capability::ArchedMove)) {
             archAsLegs();
             continue;
@@ -375,7 +381,7 @@ void RecipeRunner::nextMove()
         const bool skip = (m.kind == MoveKind::Raise && m_knowZ && m_z <= m.zMm + kSameMm)
             || (m.kind == MoveKind::Lower && m_knowZ && std::abs(m_z - m.zMm) < kSameMm)
             || ((m.kind == MoveKind::Travel || m.kind == MoveKind::Touch) && m_knowXy && std::abs(m_x - m.xMm) < kSameMm
-                && std::abs(m_y - m.yMm) < kSameMm && (!m.withZ || (m_knowZ && std::abs(m_z - m.zMm) < kSameMm)))
+                && std::abs(m_y - m.yMm) < kSameMm && (!m.withZ || (m_knowZ && std::abs(m_z - m.zMm) < kSameMm)) && !m.archPump)
             || (m.kind == MoveKind::Dwell && m.seconds <= 0);
         if (!skip) {
             sendMove(m.arch ? archAsSent(m) : m);
@@ -402,7 +408,7 @@ void RecipeRunner::sendMove(const MachineMove& planned)
         // raise goes to the op's safe height, which clears whatever it may cross first.
         m.zMm = std::min(m.zMm, m_plan.ops[static_cast<std::size_t>(m_op)].safeZMm);
     }
-    if (m.kind == MoveKind::Pump && !m_pumpLogged) {
+    if ((m.kind == MoveKind::Pump || m.archPump) && !m_pumpLogged) {
         dev::files::json::Value v = dev::files::json::Value::object();
         v.set("event", "pump");
         v.set("op", m_op);
@@ -448,6 +454,8 @@ void RecipeRunner::sendMove(const MachineMove& planned)
     m_waitMask = 0;
     if (m.arch)
         targets = {{axis('X'), m.xMm}, {axis('Y'), m.yMm}, {axis('Z'), m.zMm}};  // each ends with its MotionDone
+    if (m.archPump)
+        targets.push_back({axis('P'), m.pumpDeltaUl});
     for (const auto& t : targets + zTargets)
         m_waitMask = static_cast<quint8>(m_waitMask | (1u << t.first));
     m_repliesPending = zTargets.isEmpty() ? 1 : 2;
@@ -481,7 +489,9 @@ void RecipeRunner::sendMove(const MachineMove& planned)
     };
     if (m.arch) {
         m_deferredFrom = -1;
-        m_client->archMove({m.xMm, m.yMm, m.clearZMm, m.zMm, m.departMm, m.approachMm, m.speed, m.zSpeed}, answered);
+        m_client->archMove({m.xMm, m.yMm, m.clearZMm, m.zMm, m.departMm, m.approachMm, m.speed, m.zSpeed, m.archPump, m.pumpDeltaUl,
+                            m.pumpSpeed, m.liquidZMm, m.leaveZMm},
+                           answered);
         return;
     }
     m_client->move(targets, relative, m.speed, answered);
@@ -507,9 +517,11 @@ void RecipeRunner::moveArrived()
         m_y = m.yMm;
         m_knowXy = true;
         if (m.withZ) {
-            m_z = m.zMm;
+            m_z = m.archPump ? m.leaveZMm : m.zMm;
             m_knowZ = true;
         }
+        if (m.archPump)
+            m_pumpUl += m.pumpDeltaUl;
         break;
     case MoveKind::Pump:
         m_pumpUl += m.pumpDeltaUl;
@@ -611,6 +623,8 @@ void RecipeRunner::onMoveTimeout()
         arrived = arrived && at('Z', m.zMm);
     else if (m.kind == MoveKind::Pump)
         arrived = arrived && at('P', m_pumpUl + m.pumpDeltaUl);
+    else if (m.archPump)
+        arrived = arrived && at('X', m.xMm) && at('Y', m.yMm) && at('Z', m.leaveZMm) && at('P', m_pumpUl + m.pumpDeltaUl);
     else
         arrived = arrived && at('X', m.xMm) && at('Y', m.yMm) && (!m.withZ || at('Z', m.zMm));
     if (arrived) {
@@ -643,7 +657,9 @@ void RecipeRunner::onMoveTimeout()
         want.set("X", m.xMm);
         want.set("Y", m.yMm);
         if (m.withZ)
-            want.set("Z", m.zMm);
+            want.set("Z", m.archPump ? m.leaveZMm : m.zMm);
+        if (m.archPump)
+            want.set("P", m_pumpUl + m.pumpDeltaUl);
     }
     seen.set("expected", std::move(want));
     stopRun(motion::msg::make("recipe.run.move_timeout", {motion::msg::term("move", moveTerm(m.kind)), opArg(m_op)}), std::move(seen));

@@ -129,6 +129,10 @@ private:
     /// The current op's arched move as legs (raise, travel, lower) on a device that does not
     /// blend them (recipe_runner_arch.cpp).
     void archAsLegs();
+    /// An arched move that runs the plunger, on a device that cannot: the arch, then the
+    /// plunger and the rise as moves of their own.
+    void archPumpApart();
+    bool canArchPump() const;
     /// The arched move as sent: from an unknown place, or not from the well the plan
     /// leaves, it starts from the op's safe height without leaving sideways.
     motion::plates::MachineMove archAsSent(const motion::plates::MachineMove& planned) const;

@@ -3,6 +3,8 @@
 // not blend Z with XY.
 #include "device/jobs/recipe_runner.h"
 
+#include "device/protocol/messages_arch.h"
+
 #include <algorithm>
 
 namespace dev::jobs {
@@ -44,6 +46,30 @@ void RecipeRunner::archAsLegs()
     auto& op = m_plan.ops[static_cast<std::size_t>(m_op)];
     if (m_move < op.visitMoves)
         op.visitMoves += 2;
+}
+
+bool RecipeRunner::canArchPump() const
+{
+    return m_client->can(dev::Capability::ArchedMove) && (m_client->identity().protocolCapabilities & dev::proto::kCapArchPump) != 0;
+}
+
+void RecipeRunner::archPumpApart()
+{
+    auto& op = m_plan.ops[static_cast<std::size_t>(m_op)];
+    const auto at = op.moves.begin() + m_move;
+    MachineMove arch = *at;
+    MachineMove pump, up;
+    pump.kind = MoveKind::Pump;
+    pump.pumpDeltaUl = arch.pumpDeltaUl;
+    pump.speed = arch.pumpSpeed;
+    up.kind = MoveKind::Raise;
+    up.zMm = arch.leaveZMm;
+    up.speed = arch.zSpeed;
+    arch.archPump = false;
+    arch.pumpDeltaUl = 0;
+    // The op's planned time stays what it was (progress and the ETA count ops, not moves).
+    *at = arch;
+    op.moves.insert(op.moves.begin() + m_move + 1, {pump, up});
 }
 
 } // namespace dev::jobs

@@ -16,6 +16,12 @@ Bytes encode(const ArchMoveRequest& m)
     w.i32(m.z);
     w.u32(m.departRadius);
     w.u32(m.approachRadius);
+    if (m.pump) {
+        w.i32(m.pump->delta);
+        w.u32(m.pump->speed);
+        w.i32(m.pump->liquidZ);
+        w.i32(m.pump->leaveZ);
+    }
     return b;
 }
 
@@ -31,6 +37,15 @@ std::optional<ArchMoveRequest> decodeArchMoveRequest(const Bytes& p)
     m.z = r.i32();
     m.departRadius = r.u32();
     m.approachRadius = r.u32();
+    // Either the 32 bytes of the plain move or those and the pump block: nothing between.
+    if (r.ok() && r.remaining() > 0) {
+        ArchPump pump;
+        pump.delta = r.i32();
+        pump.speed = r.u32();
+        pump.liquidZ = r.i32();
+        pump.leaveZ = r.i32();
+        m.pump = pump;
+    }
     return finish(r, std::move(m));
 }
 

@@ -12,6 +12,20 @@ namespace dev::proto {
 
 /// HELLO capability bit: the device takes ARCH_MOVE (an analyzer's Z and XY blended).
 constexpr std::uint32_t kCapArchMove = 1u << 16;
+/// HELLO capability bit: an ARCH_MOVE may carry a plunger move run while the tip is
+/// down inside the target well, and a rise after it (the pump block).
+constexpr std::uint32_t kCapArchPump = 1u << 17;
+
+/// The optional pump block of an ARCH_MOVE (kCapArchPump): the plunger starts once the way
+/// down has passed `liquidZ` and Z rises to `leaveZ` after it, reaching `liquidZ` again no
+/// earlier than the plunger has stopped — so everything the plunger moves, it moves with the
+/// tip below `liquidZ` (a well's rim) inside the target's opening.
+struct ArchPump {
+    std::int32_t delta = 0;      ///< plunger, relative, nL (+ draws in, − pushes out)
+    std::uint32_t speed = 0;     ///< nL/s; 0 = the plunger's default speed
+    WireUnits liquidZ = 0;       ///< nm: the plunger runs only while Z is at or below this
+    WireUnits leaveZ = 0;        ///< nm: where Z rises to after the plunger (= Z target: stays down)
+};
 
 struct ArchMoveRequest {
     std::uint32_t xySpeed = 0;   ///< XY path speed, nm/s; 0 = X's and Y's default speed
@@ -23,6 +37,7 @@ struct ArchMoveRequest {
     std::uint32_t departRadius = 0;
     /// nm: how far from its target XY must be before Z goes below the clearance again.
     std::uint32_t approachRadius = 0;
+    std::optional<ArchPump> pump;  ///< 16 more bytes when present
 };
 
 Bytes encode(const ArchMoveRequest&);

@@ -218,8 +218,11 @@ void Firmware::execute(const dev::proto::Frame& f, std::vector<std::uint8_t>& re
         // Only a device that says so in HELLO takes it: to another it is an unknown type.
         if (!(m_machine.hello(m_linkBaud).capabilities & dev::proto::kCapArchMove))
             return sendError(f.seq, firmwareUnknownType(f.type), reply);
-        if (auto r = dev::proto::decodeArchMoveRequest(f.payload))
+        if (auto r = dev::proto::decodeArchMoveRequest(f.payload)) {
+            if (r->pump && !(m_machine.hello(m_linkBaud).capabilities & dev::proto::kCapArchPump))
+                return bad("ARCH_MOVE");  // a pump block this device did not offer: a payload it cannot read
             return answer(m_machine.archMove(*r));
+        }
         return bad("ARCH_MOVE");
     case MsgType::JogStep:
         if (auto r = dev::proto::decodeJogStepRequest(f.payload))

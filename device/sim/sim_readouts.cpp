@@ -27,8 +27,11 @@ dev::proto::HelloReply SimMachine::hello(std::uint32_t linkBaud) const
     if (m_comp2d->available())
         h.capabilities |= dev::proto::CapCompensation2d;
     for (const auto& a : m_cfg.axes)
-        if (a.unit == dev::proto::AxisUnit::Microlitre)
+        if (a.unit == dev::proto::AxisUnit::Microlitre) {
             h.capabilities |= dev::proto::CapPump;
+            if (m_cfg.zAfterXy)
+                h.capabilities |= dev::proto::kCapArchPump;  // the plunger inside an arched move
+        }
     h.controlPeriodUs = static_cast<std::uint32_t>(std::lround(m_cfg.controlPeriodS * 1e6));
     h.maxTelemetryRateHz = static_cast<std::uint32_t>(std::lround(1.0 / kTickS));
     h.jogWatchdogMs = dev::proto::kJogWatchdogMs;

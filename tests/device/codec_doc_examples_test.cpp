@@ -194,6 +194,13 @@ std::vector<Example> examples()
     a.approachRadius = static_cast<std::uint32_t>(nm(2.93));
     ex.push_back({"arch-move", t(MsgType::ArchMove), 43, encode(a)});
     ex.push_back({"arch-move-reply", replyTypeOf(MsgType::ArchMove), 43, {}});
+    // The same, dispensing 50 µL below the plate's top (Z 60.78 mm), then up to the clearance.
+    ArchPump pump;
+    pump.delta = -50000;
+    pump.liquidZ = nm(60.78);
+    pump.leaveZ = nm(55.78);
+    a.pump = pump;
+    ex.push_back({"arch-move-pump", t(MsgType::ArchMove), 44, encode(a)});
     return ex;
 }
 

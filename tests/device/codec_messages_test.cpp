@@ -414,7 +414,21 @@ TEST(CodecMessages, DecodersRejectShortAndLongPayloads)
     expectStrict(encode(s), &decodeStatusReply, "STATUS reply");
     expectStrict(encode(HomeRequest{1}), &decodeHomeRequest, "HOME");
     expectStrict(encode(MoveRequest{false, 0, 0b101, {1, 2}}), &decodeMoveRequest, "MOVE");
-    expectStrict(encode(ArchMoveRequest{1, 2, 3, 4, 5, 6, 7, 8}), &decodeArchMoveRequest, "ARCH_MOVE");
+    expectStrict(encode(ArchMoveRequest{1, 2, 3, 4, 5, 6, 7, 8, std::nullopt}), &decodeArchMoveRequest, "ARCH_MOVE");
+    {
+        // Its first 32 bytes are a plain ARCH_MOVE; anything between that and the whole block is refused.
+        const Bytes withPump = encode(ArchMoveRequest{1, 2, 3, 4, 5, 6, 7, 8, ArchPump{-9, 10, 11, 12}});
+        ASSERT_EQ(withPump.size(), 48u);
+        const auto whole = decodeArchMoveRequest(withPump);
+        ASSERT_TRUE(whole && whole->pump);
+        EXPECT_EQ(whole->pump->delta, -9);
+        EXPECT_EQ(whole->pump->leaveZ, 12);
+        for (std::size_t n = 33; n < withPump.size(); ++n)
+            EXPECT_FALSE(decodeArchMoveRequest(Bytes(withPump.begin(), withPump.begin() + static_cast<std::ptrdiff_t>(n)))) << n;
+        Bytes longer = withPump;
+        longer.push_back(0);
+        EXPECT_FALSE(decodeArchMoveRequest(longer));
+    }
     expectStrict(encode(JogStepRequest{0, 1, 2}), &decodeJogStepRequest, "JOG_STEP");
     expectStrict(encode(AxisMaskRequest{3}), &decodeAxisMaskRequest, "mask");
     expectStrict(encode(LimitsReply{{{0, 1}, {2, 3}}}), &decodeLimitsReply, "GET_LIMITS reply");

@@ -137,8 +137,9 @@ TEST(PlateArchedRun, TheTipNeverCrossesARimBelowTheClearanceAndArchesAreFaster)
 
 // 96 wells × 50 µL from a trough: today one aspiration per round, the wells as written,
 // straight up and down; against distributing (one aspiration per round with a disposal
-// volume, returned), snake rows and arches. Every well gets its 50 µL either way (the syringe ends where it began
-// and each well's op is done once).
+// volume, returned), snake rows and arches, each dispense inside its arch. Every well gets
+// its 50 µL either way, pushed out while the tip was below that well's rim inside its
+// opening (the syringe ends where it began and each well's op is done once).
 TEST(PlateArchedRun, DistributingInSnakeRowsWithArchesAgainstTodaysRounds)
 {
     motion::plates::Recipe today = samplingRecipe("all", 50);
@@ -174,9 +175,9 @@ TEST(PlateArchedRun, DistributingInSnakeRowsWithArchesAgainstTodaysRounds)
     RecordProperty("today_s", std::to_string(t.deviceS));
     RecordProperty("distribute_s", std::to_string(q.deviceS));
     // Today's transfer already draws once per round: distributing adds the disposal volume's
-    // round and returns, so what is saved comes from the order and the blended arches. With
-    // the same ops (every dispense at the well's depth, the plunger never moving with the
-    // tip) even the bound is only 29 % under today's time.
-    EXPECT_GT(saved, 0.10);
+    // round and returns, so what is saved comes from the order, the blended arches and the
+    // plunger running inside each arch while the tip is below the well's rim (the per-well
+    // volumes above, from the tip's true path, show that nothing left the tip elsewhere).
+    EXPECT_GE(saved, 0.25) << "distributing, snake rows and arches save at least a quarter";
     EXPECT_NEAR(q.deviceS, q.plannedS, 0.02 * q.plannedS) << "the plan times the blended arches as the machine runs them";
 }

@@ -82,6 +82,23 @@ void BenchPilotClient::archMove(const ArchMove& a, Callback done)
     // The radii are a safety margin: rounded down, never wider than asked.
     m.departRadius = static_cast<std::uint32_t>(std::max(0.0, std::floor(a.departMm * s)));
     m.approachRadius = static_cast<std::uint32_t>(std::max(0.0, std::floor(a.approachMm * s)));
+    if (a.pump) {
+        const int ip = m_identity.axisIndex(QLatin1Char('P'));
+        if (ip < 0 || !(m_identity.protocolCapabilities & dev::proto::kCapArchPump))
+            return refuse(done, RequestError::Kind::Invalid, whyNot(Capability::ArchedMove));
+        for (double v : {a.pumpUl, a.liquidZMm, a.leaveZMm})
+            if (!std::isfinite(v))
+                return refuse(done, RequestError::Kind::Invalid, motion::msg::make("request.move_target_not_number", {motion::msg::verbatim("axis", "P")}));
+        if (!std::isfinite(a.pumpSpeed) || a.pumpSpeed < 0)
+            return refuse(done, RequestError::Kind::Invalid, motion::msg::make("request.move_bad_speed"));
+        dev::proto::ArchPump p;
+        p.delta = toWire(a.pumpUl, m_identity.axes[ip].wireScale());
+        p.speed = static_cast<std::uint32_t>(std::llround(a.pumpSpeed * m_identity.axes[ip].wireScale()));
+        // The liquid height rounded toward the bottom (a larger Z): never higher than asked.
+        p.liquidZ = static_cast<std::int32_t>(std::ceil(a.liquidZMm * m_identity.axes[iz].wireScale()));
+        p.leaveZ = toWire(a.leaveZMm, m_identity.axes[iz].wireScale());
+        m.pump = p;
+    }
     send(dev::proto::MsgType::ArchMove, dev::proto::encode(m), wrap(std::move(done), "request.move"));
 }
 

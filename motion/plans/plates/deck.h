@@ -58,6 +58,9 @@ struct Deck {
     /// analyzer's reference firmware does; a device that does not say so in its HELLO
     /// travels in legs (dev::jobs::deckWithDeviceMotion).
     bool archedMoves = true;
+    /// With archedMoves: a dispense's plunger runs inside its arched move, while the tip is
+    /// below the well's rim on its way down and back up (ARCH_MOVE's pump block, HELLO bit 17).
+    bool archPump = true;
     std::vector<Slot> plateSlots;  ///< not "slots": that is a Qt keyword
     std::vector<Station> stations;
 

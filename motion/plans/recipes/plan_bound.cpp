@@ -105,7 +105,8 @@ double planBoundS(const RecipePlan& plan, const Deck& deck, const StartState& st
         z = pendingZ;
         pending = false;
     };
-    for (const PlanOp& op : plan.ops) {
+    for (std::size_t i = 0; i < plan.ops.size(); ++i) {
+        const PlanOp& op = plan.ops[i];
         if (op.visitMoves > 0) {
             const double dx = op.at.x - x, dy = op.at.y - y;
             if (std::hypot(dx, dy) < kBoundEps) {
@@ -119,6 +120,28 @@ double planBoundS(const RecipePlan& plan, const Deck& deck, const StartState& st
             y = op.at.y;
             z = op.depthZMm;
             pending = false;
+            const MachineMove& visit = op.moves[static_cast<std::size_t>(op.visitMoves - 1)];
+            if (visit.archPump) {
+                // The plunger runs only while the tip is below the rim: from the clearance
+                // down past it and, after the plunger, back up past it to the next visit's
+                // clearance, each stretch at no more than Z's top speed. Z's way down and
+                // back up is counted already (here and as the next visit's rise); the
+                // plunger adds what they cannot hide.
+                // A tip that stays down (for what follows in the same well) hides it behind
+                // the way down alone.
+                const bool staysDown = visit.leaveZMm >= op.depthZMm - kBoundEps;
+                const PlanOp* next = i + 1 < plan.ops.size() && plan.ops[i + 1].visitMoves > 0 ? &plan.ops[i + 1] : nullptr;
+                const double upTo = next ? std::min(visit.leaveZMm, next->clearZMm) : visit.leaveZMm;
+                double below = moveTimeS({{&deck.p, visit.pumpDeltaUl}}, visit.pumpSpeed) + std::max(0.0, visit.liquidZMm - op.clearZMm) / deck.z.maxSpeed;
+                double hidden = reachS(deck.z, std::max(0.0, op.depthZMm - op.clearZMm));
+                if (!staysDown) {
+                    below += std::max(0.0, visit.liquidZMm - upTo) / deck.z.maxSpeed;
+                    hidden += reachS(deck.z, std::max(0.0, op.depthZMm - upTo));
+                    pendingZ = visit.leaveZMm;
+                    pending = true;
+                }
+                t += std::max(0.0, below - hidden);
+            }
         }
         for (std::size_t k = static_cast<std::size_t>(std::max(0, op.visitMoves)); k < op.moves.size(); ++k) {
             const MachineMove& m = op.moves[k];

@@ -39,7 +39,7 @@ const char* moveKindName(MoveKind k)
 
 bool PlanOp::pumps() const
 {
-    return std::any_of(moves.begin(), moves.end(), [](const MachineMove& m) { return m.kind == MoveKind::Pump; });
+    return std::any_of(moves.begin(), moves.end(), [](const MachineMove& m) { return m.kind == MoveKind::Pump || m.archPump; });
 }
 
 motion::msg::Message PlanOp::where() const
@@ -445,6 +445,7 @@ void Planner::goIntoBlended(PlanOp& op, const Place& pl)
     const auto down = moveProfile({{&m_c.deck.z, pl.depthZMm - top}}, m.zSpeed);
     const motion::ArchTiming t = motion::archTiming(rise ? &*rise : nullptr, xy ? &*xy : nullptr, down ? &*down : nullptr, depart, into);
     m.durationS = overheadFor(t.durationS);
+    m_lastArch = {rise, xy, down, depart, into, top};
     if (depart > 0 && std::hypot(pl.at.x - m_x, pl.at.y - m_y) < kEps && std::abs(pl.depthZMm - m_z) < kEps)
         m.durationS = 0;  // back into the well the tip is still down in (a disposal returned, then drawn): it stays
     m_x = pl.at.x;
@@ -457,6 +458,37 @@ void Planner::goIntoBlended(PlanOp& op, const Place& pl)
     op.safeZMm = std::min(clear, m_allClearZ);
     op.depthZMm = pl.depthZMm;
     op.visitMoves = static_cast<int>(op.moves.size());
+}
+
+bool Planner::pumpInsideArch(PlanOp& op, const Place& pl, double delta, double speed, bool stayDown)
+{
+    if (m_r.travel.mode != TravelMode::Arched || !m_c.deck.archedMoves || !m_c.deck.archPump || !pl.w || op.moves.empty())
+        return false;
+    MachineMove& m = op.moves.back();
+    const double liquid = pl.topZMm;  // below the rim, inside the opening: what leaves the tip lands in the well
+    const double leaveZ = stayDown ? pl.depthZMm : m_safeZ;
+    // Not when the arch does not move (back into the well the tip is still down in).
+    if (!m.arch || m.durationS <= 0 || !m_lastArch.down || liquid < m_lastArch.topZ - kEps || liquid > pl.depthZMm + kEps || (!stayDown && leaveZ > liquid + kEps))
+        return false;
+    const auto plunger = moveProfile({{&m_c.deck.p, delta}}, speed);
+    const auto up = stayDown ? std::nullopt : moveProfile({{&m_c.deck.z, leaveZ - pl.depthZMm}}, m.zSpeed);
+    motion::ArchPumpParts parts;
+    parts.plunger = plunger ? &*plunger : nullptr;
+    parts.liquidMm = liquid - m_lastArch.topZ;
+    parts.leave = up ? &*up : nullptr;
+    parts.leaveLiquidMm = pl.depthZMm - liquid;
+    const ArchParts& a = m_lastArch;
+    const motion::ArchTiming t = motion::archTiming(a.rise ? &*a.rise : nullptr, a.xy ? &*a.xy : nullptr, &*a.down, a.departMm, a.approachMm, parts);
+    m.archPump = true;
+    m.pumpDeltaUl = delta;
+    m.pumpSpeed = speed;
+    m.liquidZMm = liquid;
+    m.leaveZMm = leaveZ;
+    m.durationS = overheadFor(t.durationS);
+    m_p += delta;
+    op.pumpNetUl += delta;
+    m_z = leaveZ;
+    return true;
 }
 
 void Planner::goIntoArched(PlanOp& op, const Place& pl)

@@ -57,7 +57,13 @@ struct MachineMove {
     /// time is counted there (0 here); the runner makes this raise only when the run
     /// pauses, stops or ends after this op.
     bool deferred = false;
-    double pumpDeltaUl = 0;    ///< Pump: + draws in, − pushes out
+    /// An arched move that also runs the plunger (Deck::archPump): `pumpDeltaUl` at
+    /// `pumpSpeed` once the way down has passed `liquidZMm` (the well's rim), then Z back
+    /// up to `leaveZMm`, above `liquidZMm` only once the plunger has stopped.
+    bool archPump = false;
+    double pumpSpeed = 0;      ///< with `archPump`: µL/s; 0 = the plunger's default
+    double liquidZMm = 0, leaveZMm = 0;
+    double pumpDeltaUl = 0;    ///< Pump (and an arch with `archPump`): + draws in, − pushes out
     double speed = 0;          ///< axis units per second; 0 = the device's default
     double seconds = 0;        ///< Dwell
     double durationS = 0;      ///< planned, with the link's per-move overhead

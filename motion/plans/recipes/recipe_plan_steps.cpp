@@ -65,19 +65,22 @@ void Planner::aspirateAt(int step, const Place& pl, double vol, double speed, co
     m_plan.totalAspiratedUl += vol;
 }
 
-void Planner::dispenseAt(int step, const Place& pl, double vol, double speed, double touchMm)
+void Planner::dispenseAt(int step, const Place& pl, double vol, double speed, double touchMm, bool mayFold)
 {
     PlanOp& op = newOp(step, StepType::Dispense, &pl, vol);
     goInto(op, pl);
     // A trailing air gap sits at the tip: it leaves first, with this dispense.
-    pump(op, -(vol + m_air), speed);
+    const bool inArch = touchMm <= 0 && pumpInsideArch(op, pl, -(vol + m_air), speed, !mayFold);
+    if (!inArch)
+        pump(op, -(vol + m_air), speed);
     m_air = 0;
     if (touchMm > 0) {
         const PointMm dir = pl.transform.applyVector({touchMm, 0});
         travelTo(op, {pl.at.x + dir.x, pl.at.y + dir.y}, MoveKind::Touch);
         travelTo(op, pl.at, MoveKind::Touch);
     }
-    leave(op);
+    if (!inArch || !mayFold)
+        leave(op);
     m_liquid -= vol;
     if (!pl.well.empty()) {
         WellTotal& t = totalOf(pl);
@@ -362,7 +365,8 @@ void Planner::planDistribute(int i, const Step& s, const std::string& path, cons
             m_plan.ops.back().round = round;
         }
         if (s.disposalUl > 0) {
-            dispenseAt(i, rest, s.disposalUl, speed, 0);
+            const bool drawsHereNext = k + n < targets.size() && rest.plate == src.plate && rest.well == src.well && rest.station == src.station;
+            dispenseAt(i, rest, s.disposalUl, speed, 0, !drawsHereNext);
             m_plan.ops.back().round = round;
         }
     }

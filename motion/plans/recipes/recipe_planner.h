@@ -4,10 +4,12 @@
 // and the syringe's content. Internal to motion/plans/recipes: the recipe-level
 // checks, places and moves are in recipe_plan.cpp, the steps in
 // recipe_plan_steps.cpp.
+#include "motion/plans/recipes/move_time.h"
 #include "motion/plans/recipes/recipe_plan.h"
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -93,6 +95,13 @@ private:
     /// the op before ended in (its raise deferred to this move) to `pl`'s depth.
     void goIntoBlended(PlanOp& op, const Place& pl);
 
+    /// A dispense on a device that runs the plunger inside an arched move (Deck::archPump):
+    /// the op's arch into `pl`'s well also pushes `delta` out while the tip is below the
+    /// well's top and rises to the travel height after it (`stayDown`: the tip stays at the
+    /// depth, for what follows there). False (nothing changed) where it cannot: not
+    /// arched, a station, no way down.
+    bool pumpInsideArch(PlanOp& op, const Place& pl, double delta, double speed, bool stayDown = false);
+
     /// The end of a visit: the tip up to the travel height; remembers the op for a depart.
     void leave(PlanOp& op);
 
@@ -118,7 +127,9 @@ private:
 
     void aspirateAt(int step, const Place& pl, double vol, double speed, const std::string& volPath, bool* reported);
 
-    void dispenseAt(int step, const Place& pl, double vol, double speed, double touchMm);
+    /// `mayFold` false: the tip stays down for what follows here (a disposal volume returned
+    /// to the source the next round draws from): the plunger rides the arch's way down only.
+    void dispenseAt(int step, const Place& pl, double vol, double speed, double touchMm, bool mayFold = true);
 
     void planStep(int i);
 
@@ -149,6 +160,11 @@ private:
     double m_tallestTopZMm = std::numeric_limits<double>::infinity();  ///< the deck's tallest labware in this recipe
     double m_liquid = 0, m_air = 0;
     bool m_tooMany = false;
+    /// The last blended arch's parts, as goIntoBlended timed them (pumpInsideArch adds to them).
+    struct ArchParts {
+        std::optional<motion::SeedSCurve> rise, xy, down;
+        double departMm = 0, approachMm = 0, topZ = 0;
+    } m_lastArch;
 };
 
 } // namespace motion::plates::planning

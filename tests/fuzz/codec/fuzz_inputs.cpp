@@ -8,6 +8,7 @@
 #include "device/protocol/cobs.h"
 #include "device/protocol/crc16.h"
 #include "device/protocol/messages.h"
+#include "device/protocol/messages_arch.h"
 #include "device/protocol/messages_tuning.h"
 #include "device/protocol/messages_path.h"
 
@@ -136,6 +137,28 @@ Bytes validPayload(Rng& r, std::uint8_t type)
         for (int i = 0; i < popcount8(m.axisMask); ++i)
             m.targets.push_back(randPosition(r));
         return encode(m);
+    }
+    case 0x13: {
+        // Arched moves near the analyzer's travel, half of them with the pump block
+        // (some with its plunger past its travel or its liquid height above the clearance).
+        ArchMoveRequest a;
+        a.xySpeed = r.chance(70) ? 0 : randSpeed(r);
+        a.zSpeed = r.chance(70) ? 0 : randSpeed(r);
+        a.x = r.chance(80) ? static_cast<std::int32_t>(r.range(10000000, 190000000)) : randPosition(r);
+        a.y = r.chance(80) ? static_cast<std::int32_t>(r.range(10000000, 190000000)) : randPosition(r);
+        a.clearZ = r.chance(80) ? static_cast<std::int32_t>(r.range(20000000, 60000000)) : randPosition(r);
+        a.z = r.chance(80) ? static_cast<std::int32_t>(r.range(40000000, 90000000)) : randPosition(r);
+        a.departRadius = static_cast<std::uint32_t>(r.range(0, 4000000));
+        a.approachRadius = static_cast<std::uint32_t>(r.range(0, 4000000));
+        if (r.chance(50)) {
+            ArchPump p;
+            p.delta = r.chance(80) ? static_cast<std::int32_t>(r.range(-200000, 200000)) : randPosition(r);
+            p.speed = r.chance(70) ? 0 : randSpeed(r);
+            p.liquidZ = r.chance(80) ? static_cast<std::int32_t>(r.range(30000000, 80000000)) : randPosition(r);
+            p.leaveZ = r.chance(80) ? a.clearZ : randPosition(r);
+            a.pump = p;
+        }
+        return encode(a);
     }
     case 0x05: return encode(JogStepRequest{static_cast<std::uint8_t>(r.chance(90) ? r.below(5) : r.byte()), randPosition(r), randSpeed(r)});
     case 0x06:
@@ -348,7 +371,7 @@ std::uint8_t randType(Rng& r)
     static const std::uint8_t kRequests[] = {0x01, 0x02, 0x02, 0x03, 0x04, 0x04, 0x04, 0x05, 0x05, 0x06, 0x07,
                                              0x08, 0x08, 0x09, 0x09, 0x20, 0x20, 0x20, 0x21, 0x21,
                                              0x0B, 0x0C, 0x0C, 0x0D, 0x0D, 0x0E, 0x0E, 0x0F, 0x23,
-                                             0x10, 0x11, 0x11, 0x11, 0x12, 0x24, 0x25, 0x26};
+                                             0x10, 0x11, 0x11, 0x11, 0x12, 0x13, 0x13, 0x24, 0x25, 0x26};
     if (r.chance(2))
         return r.chance(50) ? 0x22 : 0x0A;
     static const std::uint8_t kOthers[] = {0x81, 0x82, 0x87, 0x89, 0x8B, 0x8F, 0x92, 0xA0, 0xE0, 0xE1, 0xFF, 0x1F, 0x3F, 0x40, 0x00};
