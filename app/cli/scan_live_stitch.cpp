@@ -20,8 +20,6 @@
 namespace app::cli {
 namespace {
 
-QString tr(const char* text) { return QCoreApplication::translate("app::cli", text); }
-
 QJsonArray pairOf(const Eigen::Vector2d& v) { return QJsonArray{v.x(), v.y()}; }
 
 } // namespace
@@ -66,7 +64,7 @@ void ScanLiveStitch::onPair(const imaging::TilePair& p)
                                     {QStringLiteral("pairs_registered"), m_pairs}});
         return;
     }
-    m_inv.out() << tr("pair %1 + %2 registered: shift %3, %4 px, score %5, %6\n")
+    m_inv.out() << QCoreApplication::translate("app::cli", "pair %1 + %2 registered: shift %3, %4 px, score %5, %6\n")
                        .arg(tileFile(p.a), tileFile(p.b))
                        .arg(p.reg.shiftPx.x(), 0, 'f', 2)
                        .arg(p.reg.shiftPx.y(), 0, 'f', 2)
@@ -82,7 +80,7 @@ int ScanLiveStitch::stitchFolder(const motion::scan::ScanPlan& plan, const QStri
     request.plan = plan;
     motion::msg::Message error;
     if (!m_job.start(request, &error))
-        return m_inv.refused(tr("stitching %1 failed: %2").arg(QDir::toNativeSeparators(folder), ui::words::text(error)));
+        return m_inv.refused(QCoreApplication::translate("app::cli", "stitching %1 failed: %2").arg(QDir::toNativeSeparators(folder), ui::words::text(error)));
     return finish();
 }
 
@@ -94,7 +92,7 @@ int ScanLiveStitch::finish()
         return Ok;
     spinUntil([this] { return m_done; }, std::numeric_limits<int>::max());
     if (!m_job.result() || m_job.written().isEmpty())
-        return m_inv.refused(tr("the scan is whole, but stitching it failed: %1 (benchpilot-cli stitch %2 tries again)")
+        return m_inv.refused(QCoreApplication::translate("app::cli", "the scan is whole, but stitching it failed: %1 (benchpilot-cli stitch %2 tries again)")
                                  .arg(ui::words::problems(m_problems).join(QLatin1Char(' ')), QDir::toNativeSeparators(m_job.folder())));
     const imaging::StitchResult& r = *m_job.result();
     QStringList files = m_job.written();
@@ -113,7 +111,7 @@ int ScanLiveStitch::finish()
         if (file.open(QIODevice::WriteOnly) && image.save(&file, "PNG") && file.commit())
             files << png;
         else
-            mapProblem = tr("the quality map could not be written to %1: %2").arg(QDir::toNativeSeparators(png), file.errorString());
+            mapProblem = QCoreApplication::translate("app::cli", "the quality map could not be written to %1: %2").arg(QDir::toNativeSeparators(png), file.errorString());
     }
     QStringList advice;
     if (r.cameraCheck && r.planCamera)
@@ -158,7 +156,7 @@ int ScanLiveStitch::finish()
         QStringList names;
         for (const QString& f : files)
             names << QFileInfo(f).fileName();
-        out << (m_job.lastWasLive() ? tr("stitched live into %1: %2\n") : tr("stitched %1: %2\n"))
+        out << (m_job.lastWasLive() ? QCoreApplication::translate("app::cli", "stitched live into %1: %2\n") : QCoreApplication::translate("app::cli", "stitched %1: %2\n"))
                    .arg(QDir::toNativeSeparators(m_job.folder()), names.join(QStringLiteral(", ")));
         out.flush();
     }
