@@ -350,6 +350,15 @@ motion::msg::Checked<StitchResult> LiveStitcher::finish()
             return Result::refused(m_problems);
         p = registerNow(p.a, p.b, *ia, *ib);
     }
+    if (m_options.planCamera) {
+        // As the batch stitch: the few pairs tried again are read back from their files.
+        r.planCamera = m_options.planCamera;
+        const GeometryTileLoader load = [this, &lock](int i) -> std::shared_ptr<const ImageU16> {
+            const auto t = imageOf(i, lock);
+            return t ? std::shared_ptr<const ImageU16>(t, &t->grey) : nullptr;
+        };
+        r.cameraCheck = checkGeometry(stage, r.pairs, m_tileW, m_tileH, *m_options.planCamera, load, m_options.registration);
+    }
     m_held.clear();
     r.registrationS = m_registrationS + liveSince(t0);
     const LiveClock::time_point t1 = LiveClock::now();

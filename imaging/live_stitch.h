@@ -25,6 +25,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -37,6 +38,9 @@ struct LiveStitchOptions {
     int thumbnailPx = 96;              ///< the thumbnails' longer side; 0 = none
     /// Each tile divided by it before registration, as the batch stitch does (null: none).
     std::shared_ptr<const FlatField> flatField;
+    /// The camera the stage pixels came from: finish() checks it against the registered
+    /// shifts, as the batch stitch does (geometry_check.h). Unset: no check.
+    std::optional<PlanCameraGeometry> planCamera;
 };
 
 /// What the live stitch says as it goes; each is called on the worker thread.
@@ -67,7 +71,7 @@ public:
     bool add(int tile, const Eigen::Vector2d& stagePx, std::shared_ptr<const TileImage> image = nullptr);
 
     /// Waits for the queue, registers any pair the measured positions make neighbours that
-    /// the plan's did not, and places every tile. Refused when a tile could not be read or
+    /// the plan's did not, checks the plan's camera when given, and places every tile. Refused when a tile could not be read or
     /// does not match the first, when tiles are missing (imaging.live.incomplete) or after
     /// cancel() (imaging.live.cancelled). Called once.
     motion::msg::Checked<StitchResult> finish();

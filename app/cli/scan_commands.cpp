@@ -4,10 +4,12 @@
 //              Micro-Manager or CSV read them;
 //   scan run   PLAN.json [--out DIR] on --sim stage or --port: runs the scan,
 //              continues a run stopped part-way, writes the exports with the
-//              measured positions. See docs/scan.md.
+//              measured positions; with --camera stitches the tiles as they come
+//              (scan_live_stitch.h). See docs/scan.md.
 #include "camera_cli.h"
 #include "cli_session.h"
 #include "command.h"
+#include "scan_live_stitch.h"
 
 #include "device/camera/scan_camera.h"
 
@@ -311,6 +313,10 @@ int scanRun(Invocation& inv)
             return inv.refused(ui::words::text(error));
         out << tr("Every tile of this scan is already taken in %1; exports written again. --restart takes them anew.\n").arg(folder);
         out.flush();
+        // Killed between its last tile and its mosaic: the folder is stitched now.
+        const bool stitched = QFileInfo::exists(QDir(folder).filePath(QStringLiteral("mosaic.ome.tif")));
+        if (scanCamera && !inv.isSet(QStringLiteral("no-stitch")) && !stitched)
+            return ScanLiveStitch(inv, &runner).stitchFolder(plan, folder);
         return Ok;
     }
     if (d.kind == Kind::Blocked) {
@@ -325,6 +331,10 @@ int scanRun(Invocation& inv)
     if (d.outlook.resume)
         out << tr("Continuing at tile %1 of %2 (the run log in %3 has the first %4).\n")
                    .arg(d.outlook.takenTiles + 1).arg(d.outlook.totalTiles).arg(folder).arg(d.outlook.takenTiles);
+    // With a camera the scan stitches as it goes, as the Scan screen's does (--no-stitch: not).
+    std::unique_ptr<ScanLiveStitch> stitch;
+    if (scanCamera && !inv.isSet(QStringLiteral("no-stitch")))
+        stitch = std::make_unique<ScanLiveStitch>(inv, &runner);
     QString stopReason;
     QStringList exports;
     QObject::connect(&runner, &ScanRunner::problem, [&](const motion::msg::Message& m) { stopReason = ui::words::text(m); });
@@ -362,7 +372,7 @@ int scanRun(Invocation& inv)
         return inv.refused(stopReason);
     out << tr("%1 tiles taken; wrote %2\n").arg(runner.totalTiles()).arg(exports.join(QStringLiteral(", ")));
     out.flush();
-    return Ok;
+    return stitch ? stitch->finish() : Ok;
 }
 
 } // namespace
@@ -413,18 +423,22 @@ void addScanCommands(std::vector<Command>& list)
     Command run{QStringLiteral("run"), tr("run a scan plan on the stage, continue a stopped run, write the exports"),
                 tr("PLAN.json"),
                 tr("Needs the stage (--sim stage or --port) homed (--home does it). The run log and TileConfiguration.txt, "
-                   "positions.pos and scan.csv go to --out; a run stopped part-way continues at its next tile when run again."),
+                   "positions.pos and scan.csv go to --out; a run stopped part-way continues at its next tile when run again. "
+                   "With --camera the tiles are stitched as they come: after the last, mosaic.ome.tif, "
+                   "TileConfiguration.registered.txt, mosaic.stitch.json and quality-map.png are in --out (--no-stitch: not)."),
                 {option("out", "folder for the run log and the exports (default: PLAN-run)", "DIR"),
                  option("home", "home the stage first"), option("restart", "start over even if the folder holds a run (kept aside)"),
                  option("yes", "run a scan that takes longer than a minute without asking"),
                  option("camera", "take an image at every tile: sim, sim:PATH, uvc[:NAME], command:CMD or folder:DIR (see camera list)", "SOURCE"),
                  cameraOptions()[0], cameraOptions()[1], cameraOptions()[2],
-                 option("camera-profile", "the camera's geometry from this camera profile, not the plan's (camera calibrate writes one)", "FILE")},
+                 option("camera-profile", "the camera's geometry from this camera profile, not the plan's (camera calibrate writes one)", "FILE"),
+                 option("no-stitch", "with --camera: do not stitch the tiles as they come (benchpilot-cli stitch the folder later)")},
                 scanRun, {}};
     run.api.access = Access::Control;
     run.api.params = {{QStringLiteral("plan"), ParamType::File, tr("the scan plan file"), true, {}, {}}, optionParam("out", ParamType::File),
                       optionParam("camera", ParamType::Text), optionParam("specimen", ParamType::Text), optionParam("camera-seed", ParamType::Number),
-                      optionParam("camera-true", ParamType::Text), optionParam("camera-profile", ParamType::File)};
+                      optionParam("camera-true", ParamType::Text), optionParam("camera-profile", ParamType::File),
+                      optionParam("no-stitch", ParamType::Boolean)};
     run.api.example = QJsonObject{{QStringLiteral("instrument"), QStringLiteral("stage")}, {QStringLiteral("plan"), QStringLiteral("slide.scan.json")},
                                   {QStringLiteral("out"), QStringLiteral("slide-run")}, {QStringLiteral("camera"), QStringLiteral("sim")}};
     list.push_back({QStringLiteral("scan"), tr("stitching scans on the stage: plan, run"), {},

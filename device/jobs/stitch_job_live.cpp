@@ -83,6 +83,7 @@ void StitchJob::onScanState()
     lo.registration = live->options.registration;
     lo.placement = live->options.placement;
     lo.memoryMegabytes = live->options.cacheMegabytes;
+    lo.planCamera = live->options.planCamera;  // the camera check at the end, as Stitch makes it
     // The events come on the stitcher's worker; they are handed to this thread, and let
     // be there when the live stitch they belong to was dropped meanwhile.
     const std::shared_ptr<Shared> shared = m_shared;

@@ -1755,10 +1755,6 @@ Options:
         <translation>PLAN.json</translation>
     </message>
     <message>
-        <source>Needs the stage (--sim stage or --port) homed (--home does it). The run log and TileConfiguration.txt, positions.pos and scan.csv go to --out; a run stopped part-way continues at its next tile when run again.</source>
-        <translation>需要已回零（--home 可完成）的载物台（--sim stage 或 --port）。运行日志以及 TileConfiguration.txt、positions.pos 和 scan.csv 写入 --out；中途停止的运行再次运行时会从下一个图块继续。</translation>
-    </message>
-    <message>
         <source>stitching scans on the stage: plan, run</source>
         <translation>载物台上的拼接扫描：规划、运行</translation>
     </message>
@@ -2989,6 +2985,38 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
     <message>
         <source>both directions, the map their mean; reversal max %1 µm, mean along X %2 µm, along Y %3 µm (the lost motion a 2D table cannot correct)</source>
         <translation>双向，网格图取两者的平均值；反向差最大 %1 µm，沿 X 平均 %2 µm，沿 Y 平均 %3 µm（二维补偿表无法校正的空程）</translation>
+        <source>Needs the stage (--sim stage or --port) homed (--home does it). The run log and TileConfiguration.txt, positions.pos and scan.csv go to --out; a run stopped part-way continues at its next tile when run again. With --camera the tiles are stitched as they come: after the last, mosaic.ome.tif, TileConfiguration.registered.txt, mosaic.stitch.json and quality-map.png are in --out (--no-stitch: not).</source>
+        <translation>需要已回零（--home 可完成）的载物台（--sim stage 或 --port）。运行日志以及 TileConfiguration.txt、positions.pos 和 scan.csv 写入 --out；中途停止的运行再次运行时会从下一个图块继续。使用 --camera 时，图块边采集边拼接：最后一个图块之后，mosaic.ome.tif、TileConfiguration.registered.txt、mosaic.stitch.json 和 quality-map.png 位于 --out 中（--no-stitch：不拼接）。</translation>
+    </message>
+    <message>
+        <source>pair %1 + %2 registered: shift %3, %4 px, score %5, %6
+</source>
+        <translation>图块对 %1 + %2 已配准：位移 %3, %4 px，得分 %5，%6
+</translation>
+    </message>
+    <message>
+        <source>stitching %1 failed: %2</source>
+        <translation>拼接 %1 失败：%2</translation>
+    </message>
+    <message>
+        <source>the scan is whole, but stitching it failed: %1 (benchpilot-cli stitch %2 tries again)</source>
+        <translation>扫描已完整，但拼接失败：%1（benchpilot-cli stitch %2 可重试）</translation>
+    </message>
+    <message>
+        <source>the quality map could not be written to %1: %2</source>
+        <translation>无法将质量图写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>stitched live into %1: %2
+</source>
+        <translation>已在扫描中实时拼接到 %1：%2
+</translation>
+    </message>
+    <message>
+        <source>stitched %1: %2
+</source>
+        <translation>已拼接 %1：%2
+</translation>
     </message>
 </context>
 <context>

@@ -13,7 +13,9 @@
 #include "device/link/simulated_link.h"
 #include "gui_window.h"
 #include "imaging/stitch.h"
+#include "widgets/report/stitch_quality_drawing.h"
 #include "widgets/scan/mosaic_canvas.h"
+#include "widgets/scan/mosaic_stage_frame.h"
 #include "widgets/scan/mosaic_viewer.h"
 #include "widgets/scan/scan_screen.h"
 #include "widgets/scan/stitch_panel.h"
@@ -459,4 +461,37 @@ TEST(MosaicViewer, AFolderStitchedEarlierOpensInTheViewerWithTheSameStagePlaces)
     ASSERT_EQ(problems.size(), 2);
     EXPECT_TRUE(problems[1].contains(QLatin1String("holds no stitched mosaic"))) << problems[1].toStdString();
     EXPECT_FALSE(none.viewer()->hasMosaic());
+}
+
+TEST(MosaicViewer, ItsArrowsAreTheQualityMapsBeyondTheStageModel)
+{
+    // A grating 1 % long in x and 0.5 % short in y: placement fits it as the stage model,
+    // and what registration found beyond it is a few tenths of a pixel per tile. The
+    // viewer's arrows must be those (as the quality map draws them), not the model's
+    // pixels, which point out of the mosaic and grow with the distance from its middle.
+    imaging::StitchResult r;
+    r.tileWidth = r.tileHeight = 256;
+    r.placement.stageModel.used = true;
+    r.placement.stageModel.m << 1.01, 0, 0, 0.995;
+    r.placement.stageModel.centrePx = Eigen::Vector2d(217.6, 108.8);
+    std::vector<Eigen::Vector2d> beyond;
+    for (int i = 0; i < 6; ++i) {
+        const Eigen::Vector2d stage((i % 3) * 217.6, (i / 3) * 217.6);
+        r.tiles.push_back({"tile_" + std::to_string(i) + ".tif", "", stage});
+        beyond.emplace_back(0.3 * std::sin(i + 1.0), -0.2 * std::cos(2.0 * i));
+        r.placement.positionsPx.push_back(r.placement.stageModel.apply(stage) + beyond.back());
+        r.placement.placedByStage.push_back(false);
+    }
+    r.frame = imaging::mosaicFrame(r.placement.positionsPx, r.tileWidth, r.tileHeight);
+    Eigen::Vector2d mean(0, 0);
+    for (const Eigen::Vector2d& b : beyond)
+        mean += b / 6.0;
+    const ui::MosaicStageFrame frame(r, viewerPlan(256).camera);
+    const std::vector<Eigen::Vector2d> mapArrows = ui::qualityArrowsPx(r);
+    ASSERT_EQ(frame.tiles().size(), 6u);
+    ASSERT_EQ(mapArrows.size(), 6u);
+    for (std::size_t i = 0; i < 6; ++i) {
+        EXPECT_NEAR((frame.tiles()[i].correctionPx - (beyond[i] - mean)).norm(), 0, 1e-9) << "tile " << i;
+        EXPECT_NEAR((frame.tiles()[i].correctionPx - mapArrows[i]).norm(), 0, 1e-9) << "tile " << i;
+    }
 }

@@ -8,9 +8,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <Eigen/Geometry>
+
 #include <chrono>
 #include <condition_variable>
 #include <mutex>
+#include <numeric>
 #include <set>
 #include <unistd.h>
 
@@ -282,6 +285,44 @@ TEST(LiveStitch, ATileOfAnotherSizeIsRefusedNamingItsFile)
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.problems().front().file, "tile_04.tif");
     EXPECT_EQ(r.error().id, "imaging.tiles.mixed_size");
+}
+
+TEST(LiveStitch, ChecksThePlansCameraAtTheEndAsTheBatchStitchDoes)
+{
+    // A camera whose rows run up the image where the plan says down, and one turned 3°:
+    // after the last tile the live stitch names the setting to change, as Stitch does.
+    const imagingtest::Texture tex(57);
+    const Eigen::Matrix2d mirrored = Eigen::Vector2d(1, -1).asDiagonal();
+    const Eigen::Matrix2d turned = Eigen::Rotation2Dd(3.0 * M_PI / 180).toRotationMatrix();
+    for (const auto& [truth, id] : {std::pair{mirrored, "imaging.camera_check.mirrored"}, std::pair{turned, "imaging.camera_check.rotated"}}) {
+        imagingtest::Grid g = imagingtest::makeGrid(tex);
+        for (std::size_t i = 0; i < g.stagePx.size(); ++i) {
+            g.truePx[i] = truth * g.stagePx[i];
+            g.tiles[i] = imagingtest::cutTile(tex, 600 + g.truePx[i].x(), 600 + g.truePx[i].y(), g.tileW, g.tileH, 40, 700 + static_cast<unsigned>(i));
+        }
+        const std::vector<imaging::StitchTile> tiles = writeLiveGrid(g, liveScratch(std::string("camera_") + id));
+        const imaging::PlanCameraGeometry plan{0.65, 0, false};
+        imaging::StitchOptions bo;
+        bo.threads = 2;
+        bo.planCamera = plan;
+        auto b = imaging::stitch(tiles, bo);
+        ASSERT_TRUE(b.ok()) << motion::msg::debugFormat(b.problems());
+        imaging::LiveStitchOptions lo;
+        lo.planCamera = plan;
+        lo.memoryMegabytes = 0.1;  // the pairs tried again are read back from the files
+        std::vector<int> order(tiles.size());
+        std::iota(order.begin(), order.end(), 0);
+        const imaging::StitchResult live = feed(g, tiles, order, lo);
+        ASSERT_TRUE(live.cameraCheck) << id;
+        ASSERT_TRUE(live.planCamera);
+        ASSERT_TRUE(live.cameraCheck->measured) << id;
+        EXPECT_EQ(live.cameraCheck->mirrorOff, b->cameraCheck->mirrorOff) << id;
+        EXPECT_EQ(live.cameraCheck->rotationOff, b->cameraCheck->rotationOff) << id;
+        EXPECT_NEAR(live.cameraCheck->fit.rotationDeg, b->cameraCheck->fit.rotationDeg, 0.05) << id;
+        const auto advice = imaging::geometryAdvice(*live.cameraCheck, *live.planCamera);
+        ASSERT_FALSE(advice.empty()) << id;
+        EXPECT_EQ(advice.front().id, id);
+    }
 }
 
 TEST(LiveStitch, AThumbnailAveragesBlocksDownToItsSize)

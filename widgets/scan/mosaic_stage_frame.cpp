@@ -1,6 +1,7 @@
 #include "widgets/scan/mosaic_stage_frame.h"
 
 #include "device/files/scan_exports.h"
+#include "widgets/report/stitch_quality_drawing.h"
 
 #include <Eigen/LU>
 
@@ -23,13 +24,14 @@ MosaicStageFrame::MosaicStageFrame(const imaging::StitchResult& r, const motion:
     m_pxPerMm << ex.xMm, ey.xMm, ex.yMm, ey.yMm;
     m_mmPerPx = m_pxPerMm.inverse();
     const Eigen::Vector2d origin = r.frame.originPx.cast<double>();
+    const std::vector<Eigen::Vector2d> arrows = qualityArrowsPx(r);  // the quality map's arrows
     for (std::size_t i = 0; i < r.tiles.size() && i < r.placement.positionsPx.size(); ++i) {
         const Eigen::Vector2d& placed = r.placement.positionsPx[i];
         Tile t;
         // Fusion puts each tile at its rounded position (imaging/fusion.h).
         t.topLeftPx = Eigen::Vector2d(std::round(placed.x()), std::round(placed.y())) - origin;
         t.stagePx = r.tiles[i].stagePx;
-        t.correctionPx = placed - r.tiles[i].stagePx;
+        t.correctionPx = arrows[i];
         t.placedByStage = i < r.placement.placedByStage.size() && r.placement.placedByStage[i];
         m_tiles.push_back(t);
     }

@@ -23,7 +23,7 @@ public:
     struct Tile {
         Eigen::Vector2d topLeftPx;      ///< in the mosaic as fused (whole pixels)
         Eigen::Vector2d stagePx;        ///< the tile's top-left from the stage, in the stage-pixel frame
-        Eigen::Vector2d correctionPx;   ///< registered − stage
+        Eigen::Vector2d correctionPx;   ///< the quality map's arrow: registered − stage, beyond the stage model (qualityArrowsPx)
         bool placedByStage = false;     ///< no trusted pair: flagged on the quality overlay
     };
 

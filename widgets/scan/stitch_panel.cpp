@@ -21,25 +21,6 @@
 
 namespace ui {
 
-namespace {
-constexpr const char* kQualityMapFile = "quality-map.png";
-
-/// The verdict on a pair, as a term (scan.pair.*).
-const char* pairTerm(imaging::PairStatus status)
-{
-    switch (status) {
-    case imaging::PairStatus::Accepted: return "scan.pair.accepted";
-    case imaging::PairStatus::LowScore: return "scan.pair.low_score";
-    case imaging::PairStatus::Ambiguous: return "scan.pair.ambiguous";
-    case imaging::PairStatus::AtBound: return "scan.pair.at_bound";
-    case imaging::PairStatus::NoOverlap: return "scan.pair.no_overlap";
-    case imaging::PairStatus::Outlier: return "scan.pair.outlier";
-    }
-    return "scan.pair.no_overlap";
-}
-const QSize kQualityMapPng(1400, 1100);
-} // namespace
-
 StitchPanel::StitchPanel(Source source, QWidget* parent) : QWidget(parent), m_source(std::move(source)), m_job(new dev::jobs::StitchJob(this))
 {
     auto* layout = new QVBoxLayout(this);
@@ -158,56 +139,7 @@ QStringList StitchPanel::summaryLines() const
     const auto& r = m_job->result();
     if (!r)
         return {};
-    int accepted = 0, byStage = 0;
-    for (const imaging::TilePair& pair : r->pairs)
-        accepted += pair.reg.accepted();
-    for (bool s : r->placement.placedByStage)
-        byStage += s;
-    const int pairs = static_cast<int>(r->pairs.size());
-    const int notTrusted = pairs - accepted - r->placement.rejectedPairs;
-    const double um = m_job->pixelUm();
-    QStringList lines;
-    lines << tr("%1 tiles, %2 pairs: %3 trusted, %4 rejected as outliers, %5 not trusted; %6 tiles placed by the stage (hatched)")
-                 .arg(r->tiles.size())
-                 .arg(pairs)
-                 .arg(accepted)
-                 .arg(r->placement.rejectedPairs)
-                 .arg(notTrusted)
-                 .arg(byStage);
-    const imaging::StageModel& model = r->placement.stageModel;
-    if (!model.used) {
-        lines << tr("Correction from the stage: RMS %1 px (%2 µm), worst %3 px (%4 µm); arrows drawn ×%5")
-                     .arg(r->placement.rmsCorrectionPx, 0, 'f', 2)
-                     .arg(r->placement.rmsCorrectionPx * um, 0, 'f', 2)
-                     .arg(r->placement.worstCorrectionPx, 0, 'f', 2)
-                     .arg(r->placement.worstCorrectionPx * um, 0, 'f', 2)
-                     .arg(m_map->magnification(), 0, 'f', 0);
-    } else {
-        lines << tr("Correction from the stage: RMS %1 px (%2 µm), worst %3 px (%4 µm)")
-                     .arg(r->placement.rmsCorrectionPx, 0, 'f', 2)
-                     .arg(r->placement.rmsCorrectionPx * um, 0, 'f', 2)
-                     .arg(r->placement.worstCorrectionPx, 0, 'f', 2)
-                     .arg(r->placement.worstCorrectionPx * um, 0, 'f', 2);
-        lines << tr("Stage against camera, fitted from %1 pairs: scale x %2 ppm, y %3 ppm, shear %4 µrad; "
-                    "beyond it RMS %5 px (%6 µm), worst %7 px, as the arrows show ×%8")
-                     .arg(model.pairs)
-                     .arg(model.scaleXPpm(), 0, 'f', 0)
-                     .arg(model.scaleYPpm(), 0, 'f', 0)
-                     .arg(model.shearUrad(), 0, 'f', 0)
-                     .arg(r->placement.rmsBeyondModelPx, 0, 'f', 2)
-                     .arg(r->placement.rmsBeyondModelPx * um, 0, 'f', 2)
-                     .arg(r->placement.worstBeyondModelPx, 0, 'f', 2)
-                     .arg(m_map->magnification(), 0, 'f', 0);
-    }
-    lines << tr("Mosaic %1 × %2 px in %3 s").arg(r->frame.width).arg(r->frame.height).arg(m_job->seconds(), 0, 'f', 1);
-    if (m_job->lastWasLive())
-        lines << tr("Stitched live during the scan: placed %1 s after the last tile, the files written %2 s after it")
-                     .arg(m_job->livePlacedAfterS(), 0, 'f', 1)
-                     .arg(m_job->seconds(), 0, 'f', 1);
-    if (r->cameraCheck && r->planCamera)
-        for (const motion::msg::Message& m : imaging::geometryAdvice(*r->cameraCheck, *r->planCamera))
-            lines << tr("Check the plan's camera: %1").arg(ui::words::text(m));
-    return lines;
+    return stitchSummaryLines(*r, {m_job->pixelUm(), m_map->magnification(), m_job->seconds(), m_job->lastWasLive(), m_job->livePlacedAfterS()});
 }
 
 QString StitchPanel::summaryText() const { return m_summary->text(); }
@@ -226,7 +158,7 @@ void StitchPanel::onFinished()
     QStringList written = m_job->written();
     const QString png = QDir(m_folder).filePath(QLatin1String(kQualityMapFile));
     QSaveFile file(png);
-    const QImage image = m_map->render(kQualityMapPng, lines);
+    const QImage image = m_map->render(QSize(kQualityMapWidthPx, kQualityMapHeightPx), lines);
     if (file.open(QIODevice::WriteOnly) && image.save(&file, "PNG") && file.commit())
         written << png;
     else
@@ -262,7 +194,7 @@ void StitchPanel::showTile(int index)
                      .arg(p.reg.shiftPx.x(), 0, 'f', 2)
                      .arg(p.reg.shiftPx.y(), 0, 'f', 2)
                      .arg(p.reg.ncc, 0, 'f', 3)
-                     .arg(words::term(pairTerm(p.reg.status)));
+                     .arg(words::term(pairVerdictTerm(p.reg.status)));
     }
     m_tile->setText(lines.join(QLatin1Char('\n')));
 }
