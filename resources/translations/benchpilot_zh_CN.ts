@@ -605,6 +605,14 @@ Take control back? The script&apos;s next call is refused and its jogs stop; a j
         <source>%1: E-STOP latched — press Reset E-stop to clear</source>
         <translation>%1：急停已锁定 — 按“急停复位”解除</translation>
     </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>退出(&amp;Q)</translation>
+    </message>
 </context>
 <context>
     <name>app::api</name>
@@ -2983,8 +2991,6 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
 </translation>
     </message>
     <message>
-        <source>both directions, the map their mean; reversal max %1 µm, mean along X %2 µm, along Y %3 µm (the lost motion a 2D table cannot correct)</source>
-        <translation>双向，网格图取两者的平均值；反向差最大 %1 µm，沿 X 平均 %2 µm，沿 Y 平均 %3 µm（二维补偿表无法校正的空程）</translation>
         <source>Needs the stage (--sim stage or --port) homed (--home does it). The run log and TileConfiguration.txt, positions.pos and scan.csv go to --out; a run stopped part-way continues at its next tile when run again. With --camera the tiles are stitched as they come: after the last, mosaic.ome.tif, TileConfiguration.registered.txt, mosaic.stitch.json and quality-map.png are in --out (--no-stitch: not).</source>
         <translation>需要已回零（--home 可完成）的载物台（--sim stage 或 --port）。运行日志以及 TileConfiguration.txt、positions.pos 和 scan.csv 写入 --out；中途停止的运行再次运行时会从下一个图块继续。使用 --camera 时，图块边采集边拼接：最后一个图块之后，mosaic.ome.tif、TileConfiguration.registered.txt、mosaic.stitch.json 和 quality-map.png 位于 --out 中（--no-stitch：不拼接）。</translation>
     </message>
@@ -3017,6 +3023,10 @@ Global options: --sim KIND, --port PATH, --baud N, --instrument KIND, --profile 
 </source>
         <translation>已拼接 %1：%2
 </translation>
+    </message>
+    <message>
+        <source>both directions, the map their mean; reversal max %1 µm, mean along X %2 µm, along Y %3 µm (the lost motion a 2D table cannot correct)</source>
+        <translation>双向，网格图取两者的平均值；反向差最大 %1 µm，沿 X 平均 %2 µm，沿 Y 平均 %3 µm（二维补偿表无法校正的空程）</translation>
     </message>
 </context>
 <context>
@@ -5683,6 +5693,10 @@ Keep that log aside and start this test afresh?</source>
     <message>
         <source>Finished: %1 nodes, each read both ways.</source>
         <translation>完成：%1 个节点，每个节点双向各读一次。</translation>
+    </message>
+    <message>
+        <source>The after map reads the before map&apos;s grid: pitch %1 mm, %2 × %3 nodes. Set those, or disable the 2D table to start a new before map.</source>
+        <translation>补偿后的网格图沿用补偿前网格图的网格：节距 %1 mm，%2 × %3 个节点。请改回这些设置，或禁用二维补偿表以重新测量补偿前的网格图。</translation>
     </message>
 </context>
 <context>
