@@ -72,17 +72,20 @@ constexpr const char* kSettingsKeys[] = {"analyzer", "stage"};
 
 void MainWindow::buildFileMenu()
 {
-    // Quitting goes through close(), so a running job or unsaved recipe still asks first.
-    m_fileMenu = menuBar()->addMenu(QString());
-    m_quitAction = m_fileMenu->addAction(QString());
+    // Quitting goes through close(), so a running job or unsaved recipe still asks first. The
+    // key belongs to the window, so it works while the menu is closed and in a window built
+    // without menus.
+    m_quitAction = new QAction(this);
     m_quitAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Q));  // QKeySequence::Quit is empty on some platforms
     m_quitAction->setMenuRole(QAction::QuitRole);
     connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
-    addAction(m_quitAction);  // the key works while the menu is closed, whatever has focus
+    addAction(m_quitAction);
 }
 
 void MainWindow::buildLanguageMenu()
 {
+    m_fileMenu = menuBar()->addMenu(QString());
+    m_fileMenu->addAction(m_quitAction);
     m_settingsMenu = menuBar()->addMenu(QString());
     m_languageMenu = m_settingsMenu->addMenu(QString());
     m_languages = new QActionGroup(this);
@@ -151,10 +154,9 @@ void MainWindow::retranslateUi()
     m_estop->setToolTip(tr("Stop all motion on both instruments at once (Esc, from any screen)"));
     if (m_logDock)
         m_logDock->setWindowTitle(tr("Event log"));
-    if (m_fileMenu) {
+    m_quitAction->setText(tr("&Quit"));
+    if (m_fileMenu)
         m_fileMenu->setTitle(tr("&File"));
-        m_quitAction->setText(tr("&Quit"));
-    }
     if (m_settingsMenu) {
         m_settingsMenu->setTitle(tr("&Settings"));
         m_languageMenu->setTitle(tr("&Language"));

@@ -76,7 +76,9 @@ TEST(CameraCli, AScanKilledMidRunEndsWithEveryImageWholeAndNoneTwice)
     }
     EXPECT_EQ(tiles.size(), 12u) << "each tile once";
     EXPECT_EQ(QDir(out).entryList({QStringLiteral("*.part")}, QDir::Files).size(), 0) << "no temporary file left";
-    EXPECT_EQ(QDir(out).entryList({QStringLiteral("*.tif")}, QDir::Files).size(), 12);
+    QStringList images = QDir(out).entryList({QStringLiteral("*.tif")}, QDir::Files);
+    EXPECT_TRUE(images.removeOne(QStringLiteral("mosaic.ome.tif"))) << "the scan stitches as it goes: " << images.join(QLatin1Char(' ')).toStdString();
+    EXPECT_EQ(images.size(), 12) << images.join(QLatin1Char(' ')).toStdString();
 }
 
 TEST(CameraCli, SnapWritesATileAndBadSourcesAreNamed)

@@ -69,7 +69,7 @@ void checkRecipe(std::string_view input)
                 }
                 if ((m.kind == motion::plates::MoveKind::Raise || m.kind == motion::plates::MoveKind::Lower || m.withZ) && (m.zMm < 0 || m.zMm > c.deck.travelZMm))
                     fail("an accepted recipe moves Z to " + std::to_string(m.zMm));
-                if (m.kind == motion::plates::MoveKind::Pump) {
+                if (m.kind == motion::plates::MoveKind::Pump || m.archPump) {  // an arch may carry the plunger
                     p += m.pumpDeltaUl;
                     if (p < -1e-6 || p > c.deck.syringeUl + 1e-6)
                         fail("an accepted recipe takes the plunger to " + std::to_string(p) + " µL");
